@@ -1,0 +1,47 @@
+# Set-up and checks. `make demo` and `make test` install whatever is missing
+# (Debian packages when run as root, a venv, the package with its extension).
+
+VENV      ?= .venv
+PYTHON    ?= python3
+PY        := $(VENV)/bin/python
+STAMP     := $(VENV)/.g2s-installed
+DEMO_OUT  ?= g2s-demo
+DEB_PACKAGES := librecast-dev cmake g++ make
+
+.PHONY: demo test setup system-deps benchmark clean
+
+demo: setup
+	$(VENV)/bin/g2s demo -o $(DEMO_OUT) --force
+
+test: setup
+	$(PY) -m pytest -q -n 2
+
+benchmark: setup
+	$(PY) benchmarks/pipeline.py
+
+setup: $(STAMP)
+
+system-deps:
+	@missing=""; \
+	for pkg in $(DEB_PACKAGES); do dpkg -s $$pkg >/dev/null 2>&1 || missing="$$missing $$pkg"; done; \
+	$(PYTHON) -c "import venv, ensurepip" >/dev/null 2>&1 || missing="$$missing python3-venv"; \
+	if [ -n "$$missing" ]; then \
+	  if [ "$$(id -u)" = 0 ]; then \
+	    echo "installing Debian packages:$$missing"; \
+	    apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $$missing >/dev/null; \
+	  else \
+	    echo "g2s needs the Debian packages:$$missing"; \
+	    echo "install them with: sudo apt-get install$$missing"; \
+	    exit 1; \
+	  fi; \
+	fi
+
+$(STAMP): pyproject.toml CMakeLists.txt $(wildcard src/*) | system-deps
+	test -x $(PY) || $(PYTHON) -m venv $(VENV)
+	$(PY) -m pip install -q --upgrade pip
+	$(PY) -m pip install -q scikit-build-core nanobind
+	$(PY) -m pip install -q --no-build-isolation -e '.[dev]'
+	touch $@
+
+clean:
+	rm -rf build $(DEMO_OUT)

@@ -1,0 +1,200 @@
+"""The ``g2s`` command line: run a config on a mesh, list plugins, run the demo.
+
+Exit codes: 0 success, 2 bad input or config (one line on stderr, no
+traceback), 1 internal error (``--verbose`` shows the traceback).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+import traceback
+from collections.abc import Sequence
+from pathlib import Path
+from typing import Any
+
+from rich.console import Console
+from rich.table import Table
+
+from g2s_core import pipeline, samples
+from g2s_core.config import PRESETS_DIR, load_config, parse_config, load_raw_config
+from g2s_core.errors import G2SError
+from g2s_core.hookspecs import STAGE_TITLES
+from g2s_core.mesh import load_mesh, mesh_sha256, prepare_mesh
+from g2s_core.model import RunResult
+from g2s_core.outputs import WRITERS, prepare_outdir, write_outputs
+from g2s_core.registry import Registry, plugin_parameters
+
+SAMPLE_PREFIX = "sample:"
+
+STEP_ROWS = (
+    ("graph", "Step 1", "initial graph"),
+    ("terminals", "Step 2", "terminals"),
+    ("steiner", "Step 3", "Steiner tree"),
+    ("roots", "Step 4", "rooted trees"),
+    ("simplify", "Step 5", "simplification"),
+    ("analysis", "Post-process", "analysis"),
+)
+
+
+def _parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="g2s",
+        description="Graph2Structure: extract a hierarchical structure of navigable paths from level geometry.",
+    )
+    parser.add_argument("-v", "--verbose", action="store_true", help="show tracebacks of internal errors")
+    commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
+
+    run = commands.add_parser("run", help="run a YAML config on a mesh file", description="Run a YAML config on a mesh.")
+    run.add_argument("config", type=Path, help="YAML config (see configs/ for presets)")
+    run.add_argument("mesh", help=f"mesh file (.obj .glb .gltf .ply .stl .off) or {SAMPLE_PREFIX}NAME for a built-in sample level")
+    run.add_argument("-o", "--outdir", type=Path, required=True, help="folder for the results")
+    _add_output_options(run)
+
+    plugins = commands.add_parser("plugins", help="list installed plugins and their parameters")
+    plugins.add_argument("--stage", choices=list(STAGE_TITLES), help="only this stage")
+
+    demo = commands.add_parser("demo", help="run the full pipeline on the built-in dungeon sample")
+    demo.add_argument("-o", "--outdir", type=Path, default=Path("g2s-demo"), help="folder for the results (default: g2s-demo)")
+    demo.add_argument("--rooms", type=int, default=12, help="rooms in the generated dungeon (default: 12)")
+    demo.add_argument("--seed", type=int, default=0, help="seed of the generated dungeon (default: 0)")
+    _add_output_options(demo)
+    return parser
+
+
+def _add_output_options(command: argparse.ArgumentParser) -> None:
+    command.add_argument("--format", help=f"comma-separated output formats, overriding the config ({', '.join(WRITERS)})")
+    command.add_argument("--force", action="store_true", help="replace results already in the output folder")
+    command.add_argument("-q", "--quiet", action="store_true", help="no progress or tables")
+    command.add_argument("--json", action="store_true", help="print only a JSON summary on stdout")
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    args = _parser().parse_args(argv)
+    errors = Console(stderr=True)
+    try:
+        if args.command == "run":
+            return _run(args, errors)
+        if args.command == "plugins":
+            return _plugins(args)
+        return _demo(args, errors)
+    except G2SError as exc:
+        errors.print(f"g2s: error: {exc}", markup=False, highlight=False)
+        if args.verbose:
+            traceback.print_exc()
+        return 2
+    except KeyboardInterrupt:
+        errors.print("g2s: interrupted", markup=False)
+        return 130
+    except Exception as exc:  # anything else is our bug: say so, keep the user's data
+        errors.print(f"g2s: internal error: {type(exc).__name__}: {exc}", markup=False, highlight=False)
+        if args.verbose:
+            traceback.print_exc()
+        else:
+            errors.print("(run again with --verbose for the traceback)", markup=False)
+        return 1
+
+
+def _run(args: argparse.Namespace, errors: Console) -> int:
+    config = load_config(args.config)
+    registry = Registry.from_entry_points()
+    plan = pipeline.plan(config, registry, source=str(args.config))
+    if args.mesh.startswith(SAMPLE_PREFIX):
+        name = args.mesh[len(SAMPLE_PREFIX):]
+        mesh, mesh_name, sha = _sample_mesh(name, config)
+    else:
+        mesh, info = load_mesh(args.mesh, config.mesh)
+        mesh_name, sha = info.name, info.sha256
+        if info.cleaning:
+            removed = ", ".join(f"{count} {what.replace('_', ' ')}" for what, count in info.cleaning.items())
+            _status(args, errors, f"cleaning removed {removed}")
+    return _execute(args, errors, registry, plan, mesh, mesh_name, sha)
+
+
+def _demo(args: argparse.Namespace, errors: Console) -> int:
+    raw = load_raw_config(PRESETS_DIR / "demo.yaml")
+    config = parse_config(raw, source="configs/demo.yaml")
+    registry = Registry.from_entry_points()
+    plan = pipeline.plan(config, registry, source="configs/demo.yaml")
+    level = samples.dungeon(seed=args.seed, rooms=args.rooms)
+    mesh = prepare_mesh(level.mesh, config.mesh, source=level.name)
+    return _execute(args, errors, registry, plan, mesh, f"{level.name} (seed {args.seed}, {args.rooms} rooms)", mesh_sha256(mesh))
+
+
+def _sample_mesh(name: str, config: Any) -> tuple[Any, str, str]:
+    if name not in samples.SAMPLES:
+        raise G2SError(f"unknown sample {name!r} (expected one of: {', '.join(samples.SAMPLES)})")
+    level = samples.load_sample(name)
+    mesh = prepare_mesh(level.mesh, config.mesh, source=name)
+    return mesh, name, mesh_sha256(mesh)
+
+
+def _execute(args, errors: Console, registry: Registry, plan: pipeline.Plan, mesh, mesh_name: str, sha: str) -> int:
+    formats = args.format.split(",") if args.format else list(plan.config.outputs.formats)
+    prepare_outdir(args.outdir, formats, args.force)
+    quiet = args.quiet or args.json
+    if quiet:
+        result = pipeline.run(plan, registry, mesh, mesh_name, sha)
+    else:
+        with errors.status("running") as status:
+            result = pipeline.run(plan, registry, mesh, mesh_name, sha, progress=lambda m: status.update(m))
+    written = write_outputs(result, args.outdir, formats)
+    if args.json:
+        summary = {
+            "mesh": mesh_name,
+            "stages": [vars(s) for s in result.stages],
+            "total_seconds": result.total_seconds,
+            "warnings": result.warnings,
+            "files": [str(p) for p in written],
+        }
+        print(json.dumps(summary, indent=1, sort_keys=True))
+        return 0
+    for warning in result.warnings:
+        errors.print(f"g2s: warning: {warning}", markup=False, highlight=False)
+    if not args.quiet:
+        console = Console()
+        console.print(stage_table(result, title=mesh_name))
+        for path in written:
+            console.print(f"wrote {path}", markup=False, highlight=False)
+    return 0
+
+
+def _status(args: argparse.Namespace, errors: Console, message: str) -> None:
+    if not (args.quiet or args.json):
+        errors.print(message, markup=False, highlight=False)
+
+
+def stage_table(result: RunResult, title: str = "") -> Table:
+    """The per-stage table in the paper's form: time in ms, node/edge/terminal counts."""
+    table = Table(title=title or None)
+    for column in ("step", "", "t (ms)", "#N", "#E"):
+        table.add_column(column, justify="left" if column in ("step", "") else "right")
+    for stage, step, label in STEP_ROWS:
+        stats = result.stage(stage)
+        if stats is None:
+            continue
+        nodes = stats.terminals if stage == "terminals" else stats.nodes
+        table.add_row(step, label, f"{stats.seconds * 1000:.1f}", _count(nodes), _count(stats.edges))
+    table.add_row("total", "", f"{result.total_seconds * 1000:.1f}", "", "", style="bold")
+    return table
+
+
+def _count(value: int | None) -> str:
+    return "" if value is None else str(value)
+
+
+def _plugins(args: argparse.Namespace) -> int:
+    registry = Registry.from_entry_points()
+    console = Console()
+    for info in registry.plugins(args.stage):
+        console.print(f"[bold]{STAGE_TITLES[info.stage]}[/bold] [cyan]{info.name}[/cyan]  ({info.package})")
+        if info.summary:
+            console.print(f"  {info.summary}", markup=False, highlight=False)
+        for name, accepted, default, description in plugin_parameters(info):
+            console.print(f"    {name}: {accepted}, default {default}. {description}", markup=False, highlight=False)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

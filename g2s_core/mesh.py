@@ -1,0 +1,123 @@
+"""Reading level geometry: trimesh for I/O, pymeshlab for optional cleaning."""
+
+from __future__ import annotations
+
+import hashlib
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+import trimesh
+
+from g2s_core.config import MeshConfig
+from g2s_core.errors import MeshError
+
+SUPPORTED_SUFFIXES = (".obj", ".glb", ".gltf", ".ply", ".stl", ".off")
+
+_Z_UP_TO_Y_UP = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, -1.0, 0.0]])
+"""Rotation taking a Z-up right-handed frame to a Y-up right-handed one: (x, y, z) -> (x, z, -y)."""
+
+
+@dataclass(frozen=True)
+class MeshInfo:
+    """Where a mesh came from and what cleaning removed."""
+
+    name: str
+    sha256: str
+    vertices: int
+    faces: int
+    cleaning: dict[str, int] | None = None
+
+
+def file_sha256(path: Path) -> str:
+    """Hex SHA-256 of a file's bytes."""
+    digest = hashlib.sha256()
+    with path.open("rb") as handle:
+        for block in iter(lambda: handle.read(1 << 20), b""):
+            digest.update(block)
+    return digest.hexdigest()
+
+
+def mesh_sha256(mesh: trimesh.Trimesh) -> str:
+    """Hex SHA-256 of an in-memory mesh's vertex and face arrays (float64, int64)."""
+    digest = hashlib.sha256()
+    digest.update(np.ascontiguousarray(mesh.vertices, dtype=np.float64).tobytes())
+    digest.update(np.ascontiguousarray(mesh.faces, dtype=np.int64).tobytes())
+    return digest.hexdigest()
+
+
+def load_mesh(path: str | Path, config: MeshConfig | None = None) -> tuple[trimesh.Trimesh, MeshInfo]:
+    """Read a triangle mesh file into metres, Y up.
+
+    Scenes (glTF/GLB) are flattened with their node transforms. The file is
+    only read, never written.
+
+    Returns:
+        The mesh (vertices (N, 3) float64 metres, faces (M, 3) int64) and its
+        :class:`MeshInfo`.
+
+    Raises:
+        MeshError: the file is missing, unreadable, of an unsupported type,
+            empty, not made of triangles, or has non-finite coordinates.
+    """
+    config = config or MeshConfig()
+    path = Path(path)
+    if not path.is_file():
+        raise MeshError(f"{path}: no such mesh file")
+    if path.suffix.lower() not in SUPPORTED_SUFFIXES:
+        raise MeshError(f"{path}: unsupported mesh type {path.suffix!r} (expected one of {', '.join(SUPPORTED_SUFFIXES)})")
+    try:
+        loaded = trimesh.load(path, force="mesh", process=False)
+    except Exception as exc:  # trimesh raises many exception types for bad files
+        raise MeshError(f"{path}: cannot read mesh ({type(exc).__name__}: {exc})") from None
+    mesh = prepare_mesh(loaded, config, source=str(path))
+    cleaning = None
+    if config.clean:
+        mesh, cleaning = clean_mesh(mesh)
+    info = MeshInfo(path.name, file_sha256(path), len(mesh.vertices), len(mesh.faces), cleaning)
+    return mesh, info
+
+
+def prepare_mesh(loaded: object, config: MeshConfig, source: str) -> trimesh.Trimesh:
+    """Check that ``loaded`` is a usable triangle mesh, then apply the up axis and scale."""
+    if not isinstance(loaded, trimesh.Trimesh):
+        raise MeshError(f"{source}: expected a triangle mesh, got {type(loaded).__name__} (no faces)")
+    vertices = np.asarray(loaded.vertices, dtype=np.float64)
+    faces = np.asarray(loaded.faces)
+    if len(faces) == 0 or len(vertices) == 0:
+        raise MeshError(f"{source}: the mesh is empty (no triangles)")
+    if faces.ndim != 2 or faces.shape[1] != 3:
+        raise MeshError(f"{source}: expected triangles, got faces with {faces.shape[-1]} corners")
+    if not np.isfinite(vertices).all():
+        raise MeshError(f"{source}: the mesh has NaN or infinite vertex coordinates")
+    if config.up_axis == "z":
+        vertices = vertices @ _Z_UP_TO_Y_UP.T
+    vertices = vertices * config.scale
+    return trimesh.Trimesh(vertices=vertices, faces=faces, process=True, validate=False)
+
+
+def clean_mesh(mesh: trimesh.Trimesh) -> tuple[trimesh.Trimesh, dict[str, int]]:
+    """Merge close vertices and drop duplicate and zero-area faces with pymeshlab.
+
+    Returns:
+        The cleaned mesh and the count of what each filter removed.
+    """
+    import pymeshlab  # imported here: it takes a second to load and most runs do not clean
+
+    meshset = pymeshlab.MeshSet()
+    meshset.add_mesh(pymeshlab.Mesh(vertex_matrix=mesh.vertices, face_matrix=mesh.faces.astype(np.int32)))
+    removed: dict[str, int] = {}
+    before = meshset.current_mesh().vertex_number()
+    meshset.meshing_merge_close_vertices()
+    removed["merged_vertices"] = before - meshset.current_mesh().vertex_number()
+    before = meshset.current_mesh().face_number()
+    meshset.meshing_remove_duplicate_faces()
+    removed["duplicate_faces"] = before - meshset.current_mesh().face_number()
+    before = meshset.current_mesh().face_number()
+    meshset.meshing_remove_null_faces()
+    removed["zero_area_faces"] = before - meshset.current_mesh().face_number()
+    cleaned = meshset.current_mesh()
+    result = trimesh.Trimesh(vertices=cleaned.vertex_matrix(), faces=cleaned.face_matrix(), process=True)
+    if len(result.faces) == 0:
+        raise MeshError("cleaning removed every triangle of the mesh")
+    return result, removed

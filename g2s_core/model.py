@@ -1,0 +1,140 @@
+"""The data that flows between stages, and the record of a run.
+
+Surface graph conventions (what every plugin may rely on)
+---------------------------------------------------------
+The initial graph is a :class:`networkx.Graph` with integer node ids.
+
+Node attributes:
+    ``pos``        tuple of 3 floats, metres, in the mesh frame (Y up).
+    ``normal``     tuple of 3 floats, unit surface normal.
+    ``area``       float, m², the surface the node stands for (0 for added points).
+    ``on_navmesh`` bool, whether the node lies on the walkable surface.
+    ``polygon``    int, navmesh polygon index, or -1 when the node is not a polygon.
+Edge attributes:
+    ``weight``     float, Euclidean distance between the two ``pos``, metres.
+    plus builder-specific ones (``portal``, ``width`` for the navmesh builder).
+
+Rooted forests (stage 4 and 5) are :class:`networkx.DiGraph` with edges
+parent -> child, the node attributes above plus ``depth`` (root = 0) and
+``root`` (id of the node's root); ``forest.graph["roots"]`` lists the roots.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from dataclasses import dataclass, field
+from typing import Any
+
+import networkx as nx
+import numpy as np
+
+Vec3 = tuple[float, float, float]
+
+
+def vec3(values: Any) -> Vec3:
+    """Return ``values`` (any 3-sequence) as a tuple of 3 Python floats."""
+    x, y, z = (float(v) for v in values)
+    return (x, y, z)
+
+
+@dataclass(frozen=True)
+class Opening:
+    """An entry/exit of a map piece: a segment of walkable boundary that leads outside.
+
+    Attributes:
+        position: midpoint of the opening at floor height, metres.
+        heading: unit vector pointing out of the piece.
+        width: length of the opening segment, metres.
+        p0, p1: the segment's end points, metres.
+    """
+
+    position: Vec3
+    heading: Vec3
+    width: float
+    p0: Vec3
+    p1: Vec3
+
+
+@dataclass(frozen=True)
+class Terminals:
+    """What a TerminalSelector returns.
+
+    Attributes:
+        nodes: terminal node ids, in a deterministic order. Nodes the selector
+            added to the graph are included.
+        openings: the entry/exit openings the terminals stand for, if any.
+    """
+
+    nodes: tuple[int, ...]
+    openings: tuple[Opening, ...] = ()
+
+
+@dataclass(frozen=True)
+class StageStats:
+    """Wall time and size of one stage, as in the paper's Tables 2 and 3."""
+
+    stage: str
+    seconds: float
+    nodes: int | None = None
+    edges: int | None = None
+    terminals: int | None = None
+
+
+@dataclass
+class RunContext:
+    """Shared, read-mostly state that every hook receives as ``context``.
+
+    Attributes:
+        mesh: the input triangle mesh (``trimesh.Trimesh``), in metres, Y up.
+        agent: the agent settings (:class:`g2s_core.config.AgentConfig`).
+        centre: (3,) float64, centre of the mesh's axis-aligned bounding box.
+        navmesh: the navigation mesh the graph builder made, or ``None`` when
+            the graph was built without one (see ``g2s_plugins.recast``).
+        graph: the initial surface graph, once stage 1 has run.
+        warnings: messages for the user collected during the run.
+    """
+
+    mesh: Any
+    agent: Any
+    centre: np.ndarray
+    navmesh: Any = None
+    graph: nx.Graph | None = None
+    warnings: list[str] = field(default_factory=list)
+
+    def warn(self, message: str) -> None:
+        """Record a warning for the run result and the CLI."""
+        self.warnings.append(message)
+
+
+@dataclass
+class RunResult:
+    """Everything a run produced, stage by stage; stages not run are ``None``."""
+
+    config: dict[str, Any]
+    mesh_name: str
+    mesh_sha256: str
+    context: RunContext
+    graph: nx.Graph | None = None
+    terminals: Terminals | None = None
+    steiner: nx.Graph | None = None
+    forest: nx.DiGraph | None = None
+    structure: nx.DiGraph | None = None
+    analysis: dict[str, dict[int, float]] = field(default_factory=dict)
+    stages: list[StageStats] = field(default_factory=list)
+
+    @property
+    def warnings(self) -> list[str]:
+        return self.context.warnings
+
+    @property
+    def total_seconds(self) -> float:
+        return sum(s.seconds for s in self.stages)
+
+    def stage(self, name: str) -> StageStats | None:
+        """The stats of stage ``name``, or ``None`` when it did not run."""
+        return next((s for s in self.stages if s.stage == name), None)
+
+
+def as_dict(obj: Any) -> dict[str, Any]:
+    """A dataclass as a plain dict (tuples kept)."""
+    return dataclasses.asdict(obj)

@@ -1,0 +1,34 @@
+"""What a plugin module is made of: hook markers and the parameter model base.
+
+A plugin is a small module (or any object) registered through the ``g2s``
+entry-point group. It declares
+
+* ``NAME``: its name within its stage (``str``),
+* ``Params``: a :class:`PluginParams` subclass describing its parameters
+  (types, defaults, one-line docs, ranges); omitted means "no parameters",
+* exactly one stage hook from :mod:`g2s_core.hookspecs`, marked with
+  :data:`hookimpl`.
+
+The module docstring's first line is the plugin's summary in ``g2s plugins``.
+"""
+
+from __future__ import annotations
+
+import pluggy
+from pydantic import BaseModel, ConfigDict
+
+PROJECT = "g2s"
+
+hookspec = pluggy.HookspecMarker(PROJECT)
+hookimpl = pluggy.HookimplMarker(PROJECT)
+
+
+class PluginParams(BaseModel):
+    """Base of every plugin's parameter model.
+
+    Declare each parameter once, as a field with a default and a
+    ``Field(description=...)``; the same declaration validates the YAML config
+    and produces the ``g2s plugins`` help. Unknown keys are rejected.
+    """
+
+    model_config = ConfigDict(extra="forbid", frozen=True)

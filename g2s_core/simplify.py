@@ -1,0 +1,59 @@
+"""Tree simplification (the paper's Algorithm 4).
+
+For every node A, taken from the root down, a non-leaf child B of A is removed
+when the predicate P(tree, A, B, C) holds for every child C of B; B's children
+then become children of A. A's children are examined in order, children gained
+this way go to the end of the list, and A is done when none can be removed.
+This is the paper's "restart after each removal" loop without re-testing the
+children that already failed (their answer cannot change: A, them and their
+children are unchanged).
+
+Complexity: O(n + k) predicate calls, k = number of removals, each call
+plus the predicate's own cost.
+"""
+
+from __future__ import annotations
+
+from collections import deque
+from collections.abc import Callable
+
+import networkx as nx
+import numpy as np
+
+Predicate = Callable[[nx.DiGraph, int, int, int], bool]
+
+
+def simplify_forest(forest: nx.DiGraph, predicate: Predicate) -> nx.DiGraph:
+    """A simplified copy of a rooted ``forest`` (see :mod:`g2s_core.rooted`).
+
+    New edges A -> C get ``weight`` = Euclidean distance between their ``pos``.
+    ``depth`` is recomputed; ``graph["roots"]`` is kept.
+    """
+    tree = forest.copy()
+    for root in tree.graph["roots"]:
+        _simplify_from(tree, root, predicate)
+    for root in tree.graph["roots"]:
+        tree.nodes[root]["depth"] = 0
+        for parent, child in nx.dfs_edges(tree, root):
+            tree.nodes[child]["depth"] = tree.nodes[parent]["depth"] + 1
+    return tree
+
+
+def _simplify_from(tree: nx.DiGraph, root: int, predicate: Predicate) -> None:
+    pending = [root]
+    while pending:
+        a = pending.pop()
+        queue = deque(sorted(tree.successors(a)))
+        kept: list[int] = []
+        while queue:
+            b = queue.popleft()
+            grandchildren = sorted(tree.successors(b))
+            if grandchildren and all(predicate(tree, a, b, c) for c in grandchildren):
+                tree.remove_node(b)
+                for c in grandchildren:
+                    length = float(np.linalg.norm(np.subtract(tree.nodes[a]["pos"], tree.nodes[c]["pos"])))
+                    tree.add_edge(a, c, weight=length)
+                queue.extend(grandchildren)
+            else:
+                kept.append(b)
+        pending.extend(reversed(kept))
