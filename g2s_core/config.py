@@ -215,14 +215,14 @@ _BOUNDS = (
 
 def describe_field(info: FieldInfo) -> str:
     """What a field accepts, in words: ``an integer >= 1``."""
-    words = [_describe_type(info.annotation)]
+    limits = []
     for bound in info.metadata:
         for cls, attribute, op in _BOUNDS:
             if isinstance(bound, cls):
-                words.append(f"{op} {getattr(bound, attribute)}")
+                limits.append(f"{op} {getattr(bound, attribute)}")
         if isinstance(bound, annotated_types.MinLen):
-            words.append(f"with at least {bound.min_length} items")
-    return " ".join(words)
+            limits.append(f"with at least {bound.min_length} items")
+    return " ".join([_describe_type(info.annotation), " and ".join(limits)]).strip()
 
 
 def _field_at(model: type[BaseModel], loc: tuple[Any, ...]) -> FieldInfo | None:

@@ -93,7 +93,7 @@ def prepare_mesh(loaded: object, config: MeshConfig, source: str) -> trimesh.Tri
     if config.up_axis == "z":
         vertices = vertices @ _Z_UP_TO_Y_UP.T
     vertices = vertices * config.scale
-    return trimesh.Trimesh(vertices=vertices, faces=faces, process=True, validate=False)
+    return trimesh.Trimesh(vertices=vertices, faces=faces, process=False)
 
 
 def clean_mesh(mesh: trimesh.Trimesh) -> tuple[trimesh.Trimesh, dict[str, int]]:

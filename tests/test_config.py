@@ -1,0 +1,101 @@
+"""Config reading: extends, presets, and one-line errors for every bad case."""
+
+from __future__ import annotations
+
+import textwrap
+from pathlib import Path
+
+import pytest
+
+from g2s_core.config import PRESETS_DIR, RunConfig, load_config, load_raw_config
+from g2s_core.errors import ConfigError
+
+
+def write(tmp_path: Path, name: str, text: str) -> Path:
+    path = tmp_path / name
+    path.write_text(textwrap.dedent(text))
+    return path
+
+
+def error_of(path: Path) -> str:
+    with pytest.raises(ConfigError) as caught:
+        load_config(path)
+    message = str(caught.value)
+    assert "\n" not in message
+    return message
+
+
+def test_defaults_and_stage_order(tmp_path):
+    config = load_config(write(tmp_path, "c.yaml", "graph: {plugin: navmesh}\nstop_after: graph\n"))
+    assert config.agent.radius == 0.5 and config.mesh.up_axis == "y"
+    assert config.stages_to_run() == ("graph",)
+    assert RunConfig().stages_to_run()[-1] == "analyzers"
+
+
+def test_extends_merges_mappings_and_replaces_lists(tmp_path):
+    write(tmp_path, "parent.yaml", """
+        agent: {radius: 0.3, height: 1.8}
+        graph: {plugin: navmesh, params: {cell_size: 0.2}}
+        analyzers: [{plugin: degree}, {plugin: depth}]
+    """)
+    child = write(tmp_path, "child.yaml", """
+        extends: parent.yaml
+        agent: {radius: 0.4}
+        graph: {params: {cell_height: 0.1}}
+        analyzers: [{plugin: betweenness}]
+    """)
+    config = load_config(child)
+    assert config.agent.radius == 0.4 and config.agent.height == 1.8
+    assert config.graph.plugin == "navmesh"
+    assert config.graph.params == {"cell_size": 0.2, "cell_height": 0.1}
+    assert [a.plugin for a in config.analyzers] == ["betweenness"]
+
+
+def test_extends_finds_presets_by_name(tmp_path):
+    config = load_config(write(tmp_path, "c.yaml", "extends: map_analysis\nagent: {radius: 0.6}\n"))
+    assert config.terminals.plugin == "leaves" and config.agent.radius == 0.6
+    assert (PRESETS_DIR / "map_analysis.yaml").is_file()
+
+
+def test_every_preset_validates():
+    presets = sorted(PRESETS_DIR.glob("*.yaml"))
+    assert len(presets) >= 5
+    for preset in presets:
+        load_config(preset)
+
+
+def test_extends_cycle_is_an_error(tmp_path):
+    write(tmp_path, "a.yaml", "extends: b.yaml\n")
+    b = write(tmp_path, "b.yaml", "extends: a.yaml\n")
+    assert "extends: cycle" in error_of(b)
+
+
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("agent: {radius: ten}\n", "c.yaml: agent.radius: expected a number > 0, got 'ten'"),
+        ("agent: {max_slope: 95}\n", "c.yaml: agent.max_slope: expected a number > 0 and < 90, got 95"),
+        ("agnet: {radius: 1}\n", "c.yaml: agnet: unknown key (expected one of: mesh, agent,"),
+        ("graph: {plugin: navmesh, parms: {}}\n", "c.yaml: graph.parms: unknown key (expected one of: plugin, params)"),
+        ("graph: {params: {}}\n", "c.yaml: graph.plugin: required key is missing"),
+        ("mesh: {up_axis: w}\n", "c.yaml: mesh.up_axis: expected one of 'y', 'z', got 'w'"),
+        ("mesh: {scale: 0}\n", "c.yaml: mesh.scale: expected a number > 0, got 0"),
+        ("mesh: {clean: maybe}\n", "c.yaml: mesh.clean: expected true or false, got 'maybe'"),
+        ("agent: 3\n", "c.yaml: agent: expected a mapping, got 3"),
+        ("analyzers: {plugin: degree}\n", "c.yaml: analyzers: expected a list of mappings, got a mapping"),
+        ("stop_after: never\n", "c.yaml: stop_after: expected one of 'graph',"),
+        ("- a\n- b\n", "c.yaml: expected a mapping of settings at the top level, got a list"),
+        ("agent: {radius: [1\n", "c.yaml: invalid YAML at line"),
+        ("extends: no_such_preset\n", "c.yaml: extends: no config file or preset named 'no_such_preset'"),
+    ],
+)
+def test_bad_configs_give_one_line_naming_the_key(tmp_path, text, expected):
+    assert error_of(write(tmp_path, "c.yaml", text)).startswith(f"{tmp_path}/{expected}")
+
+
+def test_missing_config_file(tmp_path):
+    assert error_of(tmp_path / "absent.yaml").endswith("absent.yaml: no such config file")
+
+
+def test_empty_config_is_all_defaults(tmp_path):
+    assert load_raw_config(write(tmp_path, "empty.yaml", "")) == {}

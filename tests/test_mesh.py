@@ -1,0 +1,83 @@
+"""Mesh input: formats, up axis, scale, cleaning, and bad files."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+import trimesh
+
+from g2s_core.config import MeshConfig
+from g2s_core.errors import MeshError
+from g2s_core.mesh import SUPPORTED_SUFFIXES, file_sha256, load_mesh
+
+
+def floor_box() -> trimesh.Trimesh:
+    return trimesh.creation.box(extents=(4.0, 0.2, 2.0))
+
+
+@pytest.mark.parametrize("suffix", [".obj", ".ply", ".stl", ".off", ".glb"])
+def test_formats_load_to_the_same_geometry(tmp_path, suffix):
+    path = tmp_path / f"floor{suffix}"
+    floor_box().export(path)
+    before = path.read_bytes()
+    mesh, info = load_mesh(path)
+    assert np.allclose(mesh.bounds, floor_box().bounds)
+    assert info.faces == 12 and info.sha256 == file_sha256(path)
+    assert path.read_bytes() == before
+
+
+def test_gltf_scene_is_flattened_with_node_transforms(tmp_path):
+    scene = trimesh.Scene()
+    scene.add_geometry(floor_box(), transform=trimesh.transformations.translation_matrix((10, 0, 0)))
+    scene.add_geometry(floor_box(), transform=trimesh.transformations.translation_matrix((-10, 0, 0)))
+    path = tmp_path / "two.glb"
+    scene.export(path)
+    mesh, info = load_mesh(path)
+    assert info.faces == 24
+    assert np.allclose(mesh.bounds[:, 0], [-12, 12])
+
+
+def test_z_up_and_scale(tmp_path):
+    tall_in_z = trimesh.creation.box(extents=(1.0, 2.0, 30.0))
+    path = tmp_path / "z.obj"
+    tall_in_z.export(path)
+    mesh, _ = load_mesh(path, MeshConfig(up_axis="z", scale=0.1))
+    assert np.allclose(mesh.extents, [0.1, 3.0, 0.2])
+
+
+def test_cleaning_reports_what_it_removed(tmp_path):
+    box = floor_box()
+    doubled = trimesh.Trimesh(np.vstack([box.vertices, box.vertices]), np.vstack([box.faces, box.faces + 8]), process=False)
+    path = tmp_path / "doubled.ply"
+    doubled.export(path)
+    mesh, info = load_mesh(path, MeshConfig(clean=True))
+    assert len(mesh.faces) == 12
+    assert info.cleaning["merged_vertices"] == 8 and info.cleaning["duplicate_faces"] == 12
+
+
+@pytest.mark.parametrize(
+    "name, content, message",
+    [
+        ("missing.obj", None, "no such mesh file"),
+        ("level.fbx", b"x", "unsupported mesh type '.fbx'"),
+        ("empty.obj", b"", "no triangles"),
+        ("points.obj", b"v 0 0 0\nv 1 0 0\nv 0 1 0\n", "no triangles"),
+        ("nan.obj", b"v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n", "NaN or infinite"),
+        ("junk.glb", b"not a glb file at all", "cannot read mesh"),
+    ],
+)
+def test_bad_meshes_are_one_line_errors(tmp_path, name, content, message):
+    path = tmp_path / name
+    if content is not None:
+        path.write_bytes(content)
+    with pytest.raises(MeshError) as caught:
+        load_mesh(path)
+    assert message in str(caught.value) and str(path) in str(caught.value)
+    assert "\n" not in str(caught.value)
+
+
+def test_supported_suffixes_are_documented_in_the_error(tmp_path):
+    path = tmp_path / "a.dae"
+    path.write_text("x")
+    with pytest.raises(MeshError, match=", ".join(SUPPORTED_SUFFIXES)):
+        load_mesh(path)

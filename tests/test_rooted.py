@@ -1,0 +1,61 @@
+"""Algorithm 3 (rooted trees) on hand-checkable forests."""
+
+from __future__ import annotations
+
+import networkx as nx
+import numpy as np
+import pytest
+
+from g2s_core.rooted import root_forest
+
+
+def path_forest(positions: dict[int, tuple[float, float, float]], edges) -> nx.Graph:
+    graph = nx.Graph()
+    for node, pos in positions.items():
+        graph.add_node(node, pos=pos)
+    graph.add_edges_from(edges, weight=1.0)
+    return graph
+
+
+def test_highest_score_is_root_and_depths_follow():
+    # path 0-1-2-3-4 with the middle node scoring highest
+    graph = path_forest({i: (float(i), 0.0, 0.0) for i in range(5)}, [(0, 1), (1, 2), (2, 3), (3, 4)])
+    rooted = root_forest(graph, {0: 0, 1: 3, 2: 4, 3: 3, 4: 0}, centre=np.zeros(3))
+    assert rooted.graph["roots"] == [2]
+    assert sorted(rooted.edges) == [(1, 0), (2, 1), (2, 3), (3, 4)]
+    assert {n: d["depth"] for n, d in rooted.nodes(data=True)} == {0: 2, 1: 1, 2: 0, 3: 1, 4: 2}
+    assert all(d["root"] == 2 for _, d in rooted.nodes(data=True))
+
+
+def test_ties_go_to_the_node_nearest_the_centre_then_lowest_id():
+    graph = path_forest({0: (0.0, 0, 0), 1: (1.0, 0, 0), 2: (2.0, 0, 0)}, [(0, 1), (1, 2)])
+    equal = {0: 1.0, 1: 1.0, 2: 1.0}
+    assert root_forest(graph, equal, centre=np.array([2.2, 0, 0])).graph["roots"] == [2]
+    assert root_forest(graph, equal, centre=np.array([1.0, 0, 0])).graph["roots"] == [1]
+    # 0 and 2 equally far from the centre: the lower id wins
+    tie = {0: 1.0, 1: 0.0, 2: 1.0}
+    assert root_forest(graph, tie, centre=np.array([1.0, 0, 0])).graph["roots"] == [0]
+    # scores equal but for floating-point noise count as ties
+    noisy = {0: 0.3, 1: 0.1 + 0.2, 2: 0.0}
+    assert root_forest(graph, noisy, centre=np.array([1.0, 0, 0])).graph["roots"] == [1]
+
+
+def test_one_tree_per_component_and_isolated_nodes():
+    graph = path_forest({i: (float(i), 0, 0) for i in range(6)}, [(0, 1), (1, 2), (3, 4)])
+    rooted = root_forest(graph, {i: float(i % 2) for i in range(6)}, centre=np.zeros(3))
+    assert rooted.graph["roots"] == [1, 3, 5]
+    assert rooted.number_of_edges() == 3
+    assert nx.is_forest(rooted.to_undirected())
+
+
+def test_missing_scores_are_an_error():
+    graph = path_forest({0: (0, 0, 0), 1: (1, 0, 0)}, [(0, 1)])
+    with pytest.raises(ValueError, match="no score"):
+        root_forest(graph, {0: 1.0}, centre=np.zeros(3))
+
+
+def test_deep_tree_does_not_recurse():
+    n = 20000
+    graph = path_forest({i: (float(i), 0, 0) for i in range(n)}, [(i, i + 1) for i in range(n - 1)])
+    rooted = root_forest(graph, {i: -i for i in range(n)}, centre=np.zeros(3))
+    assert rooted.nodes[n - 1]["depth"] == n - 1

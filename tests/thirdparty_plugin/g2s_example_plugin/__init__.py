@@ -1,0 +1,1 @@
+"""An example third-party g2s plugin package."""
