@@ -1,0 +1,1 @@
+"""GraphBuilder plugins: build the initial surface graph from a triangle mesh."""

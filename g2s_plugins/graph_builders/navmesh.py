@@ -1,0 +1,65 @@
+"""Surface graph from a Recast/Detour navmesh: one node per polygon, one edge per shared edge.
+
+Builds a solo navmesh of the mesh for the run's agent (see
+:mod:`g2s_plugins.recast`), stores it in ``context.navmesh`` and returns the
+polygon adjacency graph:
+
+* node ``i`` = polygon ``i``: ``pos`` (centroid on the detail surface),
+  ``normal``, ``area`` (m²), ``on_navmesh=True``, ``polygon=i``;
+* edge ``(a, b)``, ``a < b``, for each pair of polygons sharing an edge:
+  ``weight`` (distance between the two ``pos``), ``portal`` (the shared
+  edge's two end points) and ``width`` (its length).
+
+Nodes are inserted by polygon index and edges sorted by ``(a, b)``.
+"""
+
+from __future__ import annotations
+
+import networkx as nx
+import numpy as np
+
+from g2s_core.plugin import hookimpl
+from g2s_plugins.recast import NavMesh, RecastParams, build_navmesh
+
+NAME = "navmesh"
+
+
+class Params(RecastParams):
+    """Recast build parameters (see :class:`g2s_plugins.recast.RecastParams`)."""
+
+
+def navmesh_graph(navmesh: NavMesh) -> nx.Graph:
+    """The polygon adjacency graph of ``navmesh`` (the conventions of g2s_core.model)."""
+    centres = navmesh.centres
+    normals = navmesh.normals
+    areas = navmesh.areas
+    portals = navmesh.portals()
+    pairs = portals.pairs
+    weights = np.linalg.norm(centres[pairs[:, 1]] - centres[pairs[:, 0]], axis=1) if len(pairs) else np.zeros(0)
+
+    # Plain Python values, converted in bulk (tolist) rather than per element.
+    pos = [tuple(p) for p in centres.tolist()]
+    nrm = [tuple(n) for n in normals.tolist()]
+    area = areas.tolist()
+    graph = nx.Graph()
+    graph.add_nodes_from(
+        (i, {"pos": pos[i], "normal": nrm[i], "area": area[i], "on_navmesh": True, "polygon": i})
+        for i in range(navmesh.polygon_count)
+    )
+    ends = portals.endpoints.tolist()
+    graph.add_edges_from(
+        (a, b, {"weight": w, "portal": (tuple(e[0]), tuple(e[1])), "width": wd})
+        for (a, b), w, e, wd in zip(pairs.tolist(), weights.tolist(), ends, portals.widths.tolist())
+    )
+    return graph
+
+
+@hookimpl
+def g2s_build_graph(mesh, params, context):
+    """Build the navmesh of ``mesh`` for ``context.agent`` and return its polygon graph."""
+    params = params if params is not None else Params()
+    navmesh = build_navmesh(mesh.vertices, mesh.faces, context.agent, params)
+    context.navmesh = navmesh
+    graph = navmesh_graph(navmesh)
+    graph.graph["navmesh_stats"] = navmesh.stats()
+    return graph

@@ -1,0 +1,383 @@
+"""Recast/Detour navigation meshes: parameters, build, and Detour queries.
+
+The compiled extension :mod:`g2s_plugins.recast._recast` (nanobind, linked
+against the system's Recast/Detour, Debian ``librecast-dev``) builds a *solo*
+(single-tile) navmesh with Recast's standard pipeline and keeps the Detour
+navmesh and query object for raycasts and nearest-polygon look-ups. This
+module wraps it:
+
+* :class:`RecastParams`: every Recast build parameter, with defaults;
+* :func:`build_navmesh`: triangles + agent + params -> :class:`NavMesh`;
+* :class:`NavMesh`: the mesh arrays, per-polygon centres / normals / areas,
+  shared edges (portals) and the Detour queries.
+
+Cell size rule (when ``cell_size`` / ``cell_height`` are ``None``)::
+
+    cell_size   = clamp(agent.radius / 2, 0.05, 1.0)
+    cell_height = cell_size / 2, capped at agent.max_climb / 2 when max_climb > 0,
+                  and at least 0.01
+
+From the world-unit values the voxel configuration is derived as Recast's demo
+does: ``walkableHeight = ceil(height / ch)`` (at least 3),
+``walkableClimb = floor(max_climb / ch)``, ``walkableRadius = ceil(radius / cs)``,
+``maxEdgeLen = int(edge_max_len / cs)``, ``minRegionArea = int(region_min_size²)``,
+``mergeRegionArea = int(region_merge_size²)``,
+``detailSampleDist = 0 if detail_sample_dist < 0.9 else cs * detail_sample_dist``,
+``detailSampleMaxError = ch * detail_sample_max_error``.
+
+Coordinates are metres with Y up, as in the mesh.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+from pydantic import Field
+
+from g2s_core.plugin import PluginParams
+
+from . import _recast
+
+__all__ = ["RecastParams", "NavMesh", "Portals", "build_navmesh", "resolve_settings"]
+
+FLT_MAX = float(np.finfo(np.float32).max)
+"""Detour's ``FLT_MAX``: the raycast ``t`` when the ray reached its end point."""
+
+
+class RecastParams(PluginParams):
+    """Recast build parameters (defaults: Recast demo's, cell sizes from the agent).
+
+    Sizes are in metres unless noted; region sizes and the detail sample
+    distance are in cells, the detail error in cell heights, as in Recast's demo.
+    The agent's ``radius``, ``height``, ``max_climb`` and ``max_slope`` come
+    from the run's agent config; the ``agent_*`` fields override them.
+    """
+
+    cell_size: float | None = Field(
+        None, gt=0, description="xz voxel size, m; None: agent radius / 2 clamped to [0.05, 1]"
+    )
+    cell_height: float | None = Field(
+        None, gt=0, description="y voxel size, m; None: cell_size / 2, at most max_climb / 2, at least 0.01"
+    )
+    agent_height: float | None = Field(None, gt=0, description="override of the agent's height, m")
+    agent_radius: float | None = Field(None, ge=0, description="override of the agent's radius, m")
+    agent_max_climb: float | None = Field(None, ge=0, description="override of the agent's max step height, m")
+    agent_max_slope: float | None = Field(
+        None, ge=0, lt=90, description="override of the agent's max walkable slope, degrees"
+    )
+    region_min_size: float = Field(8.0, ge=0, description="regions smaller than this² cells are removed, cells")
+    region_merge_size: float = Field(
+        20.0, ge=0, description="regions smaller than this² cells merge into neighbours, cells"
+    )
+    edge_max_len: float = Field(12.0, ge=0, description="max contour edge length, m (0: unlimited)")
+    edge_max_error: float = Field(1.3, ge=0, description="max contour simplification error, cells")
+    verts_per_poly: int = Field(6, ge=3, le=6, description="max vertices per polygon (Detour allows 3..6)")
+    detail_sample_dist: float = Field(
+        6.0, ge=0, description="detail mesh sample spacing, cells (< 0.9: no sampling)"
+    )
+    detail_sample_max_error: float = Field(
+        1.0, ge=0, description="max detail mesh height error, cell heights"
+    )
+    max_cells: int = Field(
+        100_000_000, gt=0, description="refuse grids with more xz cells than this (memory guard)"
+    )
+
+
+def resolve_settings(agent: Any, params: RecastParams | None = None) -> dict[str, float]:
+    """The world-unit settings passed to the extension, with the cell sizes resolved.
+
+    ``agent`` has ``radius``, ``height``, ``max_climb`` (m) and ``max_slope``
+    (degrees). Returns a dict of the keyword arguments of ``_recast.build``.
+    """
+    p = params or RecastParams()
+
+    def pick(override: float | None, name: str) -> float:
+        if override is not None:
+            return float(override)
+        return float(getattr(agent, name))
+
+    height = pick(p.agent_height, "height")
+    radius = pick(p.agent_radius, "radius")
+    climb = pick(p.agent_max_climb, "max_climb")
+    slope = pick(p.agent_max_slope, "max_slope")
+    cs = p.cell_size if p.cell_size is not None else min(max(radius / 2.0, 0.05), 1.0)
+    if p.cell_height is not None:
+        ch = p.cell_height
+    else:
+        ch = cs / 2.0
+        if climb > 0:
+            ch = min(ch, climb / 2.0)
+        ch = max(ch, 0.01)
+    return dict(
+        cell_size=float(cs),
+        cell_height=float(ch),
+        agent_height=height,
+        agent_radius=radius,
+        agent_max_climb=climb,
+        agent_max_slope=slope,
+        region_min_size=float(p.region_min_size),
+        region_merge_size=float(p.region_merge_size),
+        edge_max_len=float(p.edge_max_len),
+        edge_max_error=float(p.edge_max_error),
+        verts_per_poly=int(p.verts_per_poly),
+        detail_sample_dist=float(p.detail_sample_dist),
+        detail_sample_max_error=float(p.detail_sample_max_error),
+        max_cells=int(p.max_cells),
+    )
+
+
+@dataclass(frozen=True)
+class Portals:
+    """The shared edges of a navmesh, each polygon pair once, sorted by (a, b).
+
+    Attributes:
+        pairs: (E,2) int64, polygon indices ``a < b``.
+        endpoints: (E,2,3) float64, the shared edge's end points, metres.
+        widths: (E,) float64, the shared edge's length, metres.
+    """
+
+    pairs: np.ndarray
+    endpoints: np.ndarray
+    widths: np.ndarray
+
+
+class NavMesh:
+    """A built solo navmesh (one Detour tile) and its queries.
+
+    Arrays (copies taken once from the extension, metres, Y up):
+
+    ``vertices``        (V,3) float64, polygon vertices.
+    ``polygons``        (P,nvp) int32, vertex indices, padded with -1.
+    ``neighbours``      (P,nvp) int32, polygon across edge j (vertex j -> j+1,
+                        wrapping), -1 at the boundary.
+    ``area_ids``        (P,) int32, Recast area ids (63 = walkable).
+    ``region_ids``      (P,) int32, Recast region ids.
+    ``detail_vertices`` (DV,3) float64, the height-detail mesh vertices.
+    ``detail_triangles`` (DT,3) int32, indices into ``detail_vertices``.
+    ``detail_polygon``  (DT,) int32, polygon owning each detail triangle.
+    ``centres``         (P,3) float64, polygon centroid (xz) lifted onto the
+                        polygon's detail surface.
+    ``normals``         (P,3) float64, area-weighted unit normal of the
+                        polygon's detail triangles, +Y side.
+    ``areas``           (P,) float64, m², sum of the detail triangle areas.
+
+    Polygon index ``i`` is Detour polygon ``poly_ref(i)``.
+    """
+
+    def __init__(self, core: Any, settings: dict[str, float]):
+        self.core = core
+        self.settings = dict(settings)
+        self.vertices: np.ndarray = core.vertices
+        self.polygons: np.ndarray = core.polygons
+        self.neighbours: np.ndarray = core.neighbours
+        self.area_ids: np.ndarray = core.area_ids
+        self.region_ids: np.ndarray = core.region_ids
+        self.detail_vertices: np.ndarray = core.detail_vertices
+        self.detail_triangles: np.ndarray = core.detail_triangles
+        self.detail_polygon: np.ndarray = core.detail_polygon
+        self.centres, self.normals, self.areas = _surface(
+            self.polygon_count, self.vertices, self.polygons,
+            self.detail_vertices, self.detail_triangles, self.detail_polygon,
+        )
+        self._portals: Portals | None = None
+
+    # ------------------------------------------------------------ sizes
+    @property
+    def polygon_count(self) -> int:
+        """Number of polygons P."""
+        return int(self.core.polygon_count)
+
+    @property
+    def nvp(self) -> int:
+        """Max vertices per polygon (the width of ``polygons``)."""
+        return int(self.core.nvp)
+
+    @property
+    def build_seconds(self) -> float:
+        """Wall time of the C++ build (Recast + Detour), seconds."""
+        return float(self.core.build_seconds)
+
+    def config(self) -> dict[str, Any]:
+        """Recast's resolved ``rcConfig`` (voxel units, grid size, bounds)."""
+        return dict(self.core.config())
+
+    def stats(self) -> dict[str, Any]:
+        """Sizes and timing: polygons, vertices, detail triangles, cell size/height, seconds."""
+        return {
+            "polygons": self.polygon_count,
+            "vertices": int(len(self.vertices)),
+            "detail_vertices": int(len(self.detail_vertices)),
+            "detail_triangles": int(len(self.detail_triangles)),
+            "portals": int(len(self.portals().pairs)),
+            "cell_size": self.settings["cell_size"],
+            "cell_height": self.settings["cell_height"],
+            "area_m2": float(self.areas.sum()),
+            "build_seconds": self.build_seconds,
+        }
+
+    # ------------------------------------------------------------ topology
+    def portals(self) -> Portals:
+        """The shared polygon edges (computed once, vectorised)."""
+        if self._portals is None:
+            self._portals = _portals(self.vertices, self.polygons, self.neighbours)
+        return self._portals
+
+    # ------------------------------------------------------------ queries
+    @property
+    def default_extents(self) -> tuple[float, float, float]:
+        """Half extents of the nearest-polygon search when none are given:
+        ``(max(2r, 2cs), max(h, 2ch), max(2r, 2cs))`` for agent radius r, height h."""
+        return tuple(float(v) for v in self.core.default_extents)  # type: ignore[return-value]
+
+    @property
+    def climb_tolerance(self) -> float:
+        """Vertical tolerance of the raycast end check: ``max(agent max climb, 2 cell heights)``, m."""
+        return float(self.core.climb_tolerance)
+
+    def raycast(self, a, b, extents=None) -> tuple[bool, float]:
+        """Whether the straight walk from ``a`` to ``b`` along the navmesh is clear.
+
+        Starts on the polygon nearest ``a`` (within ``extents`` half extents,
+        default :attr:`default_extents`) and runs Detour's ``raycast`` towards
+        ``b``. ``clear`` is True when the ray reaches ``b`` (``t == FLT_MAX``)
+        and the polygon it ends in has its surface at ``b``'s x,z within
+        :attr:`climb_tolerance` of ``b.y``. ``t`` is Detour's hit parameter
+        (fraction of a->b where a wall was hit, ``FLT_MAX`` when not hit; 0
+        when ``a`` is on no polygon).
+        """
+        clear, t = self.core.raycast(_vec(a), _vec(b), None if extents is None else _vec(extents))
+        return bool(clear), float(t)
+
+    def raycast_many(self, A, B, extents=None) -> np.ndarray:
+        """(N,) bool: ``raycast(A[i], B[i])[0]`` for (N,3) ``A`` and ``B``, looped in C++."""
+        A = np.ascontiguousarray(A, dtype=np.float64).reshape(-1, 3)
+        B = np.ascontiguousarray(B, dtype=np.float64).reshape(-1, 3)
+        return self.core.raycast_many(A, B, None if extents is None else _vec(extents))
+
+    def nearest_poly(self, p, extents=None) -> tuple[int, np.ndarray]:
+        """(polygon index, (3,) nearest point on it) within the half ``extents``; (-1, p) if none."""
+        idx, point = self.core.nearest_poly(_vec(p), None if extents is None else _vec(extents))
+        return int(idx), point
+
+    def poly_ref(self, index: int) -> int:
+        """Detour ``dtPolyRef`` of polygon ``index``."""
+        return int(self.core.poly_ref(int(index)))
+
+    def poly_index(self, ref: int) -> int:
+        """Polygon index of a Detour ``dtPolyRef`` (-1 for 0)."""
+        return int(self.core.poly_index(int(ref)))
+
+    def __repr__(self) -> str:
+        return f"NavMesh(polygons={self.polygon_count}, vertices={len(self.vertices)})"
+
+
+def build_navmesh(vertices, faces, agent: Any, params: RecastParams | None = None) -> NavMesh:
+    """Build a solo navmesh.
+
+    Args:
+        vertices: (N,3) float32/float64, metres, Y up.
+        faces: (M,3) integer vertex indices of triangles.
+        agent: object with ``radius``, ``height``, ``max_climb`` (m), ``max_slope`` (deg).
+        params: :class:`RecastParams`; ``None`` for the defaults.
+
+    Raises:
+        ValueError: bad input arrays or settings.
+        RuntimeError: a Recast/Detour step failed, or nothing is walkable
+            ("Recast: no walkable polygons ...").
+    """
+    settings = resolve_settings(agent, params)
+    v = np.asarray(vertices)
+    if v.dtype not in (np.float32, np.float64):
+        v = v.astype(np.float64)
+    v = np.ascontiguousarray(v)
+    f = np.asarray(faces)
+    if f.dtype not in (np.int32, np.int64):
+        if not np.issubdtype(f.dtype, np.integer):
+            raise ValueError("Recast: faces must be integer vertex indices")
+        f = f.astype(np.int64)
+    f = np.ascontiguousarray(f)
+    if v.ndim != 2 or v.shape[1] != 3 or f.ndim != 2 or f.shape[1] != 3:
+        raise ValueError(f"Recast: expected (N,3) vertices and (M,3) faces, got {v.shape} and {f.shape}")
+    core = _recast.build(v, f, **settings)
+    return NavMesh(core, settings)
+
+
+# ---------------------------------------------------------------- numpy helpers
+
+def _vec(p) -> tuple[float, float, float]:
+    x, y, z = (float(c) for c in np.asarray(p, dtype=np.float64).reshape(3))
+    return (x, y, z)
+
+
+def _surface(P, verts, polys, dverts, dtris, owner):
+    """Per-polygon centres, normals and areas from the detail triangles (vectorised)."""
+    p0, p1, p2 = dverts[dtris[:, 0]], dverts[dtris[:, 1]], dverts[dtris[:, 2]]
+    cross = np.cross(p1 - p0, p2 - p0)                 # 2 * area * normal
+    cross[cross[:, 1] < 0] *= -1.0                     # +Y side
+    tri_area = 0.5 * np.linalg.norm(cross, axis=1)
+    areas = np.bincount(owner, weights=tri_area, minlength=P)
+    nsum = np.stack([np.bincount(owner, weights=cross[:, k], minlength=P) for k in range(3)], axis=1)
+    nlen = np.linalg.norm(nsum, axis=1)
+    normals = np.tile(np.array([0.0, 1.0, 0.0]), (P, 1))
+    ok = nlen > 0
+    normals[ok] = nsum[ok] / nlen[ok, None]
+
+    # Polygon centroid in xz: projected-area-weighted triangle centroids.
+    proj = 0.5 * np.abs(cross[:, 1])
+    cen = (p0 + p1 + p2) / 3.0
+    wsum = np.bincount(owner, weights=proj, minlength=P)
+    cx = np.bincount(owner, weights=proj * cen[:, 0], minlength=P)
+    cz = np.bincount(owner, weights=proj * cen[:, 2], minlength=P)
+    valid = polys >= 0
+    cnt = np.maximum(valid.sum(axis=1), 1)
+    pv = verts[np.where(valid, polys, 0)] * valid[..., None]
+    vmean = pv.sum(axis=1) / cnt[:, None]
+    good = wsum > 0
+    centres = vmean.copy()
+    centres[good, 0] = cx[good] / wsum[good]
+    centres[good, 2] = cz[good] / wsum[good]
+
+    # Lift onto the detail triangle under/over the centroid: barycentric
+    # coordinates of the owner's centroid in every triangle, best one per polygon.
+    qx, qz = centres[owner, 0], centres[owner, 2]
+    d = (p1[:, 2] - p2[:, 2]) * (p0[:, 0] - p2[:, 0]) + (p2[:, 0] - p1[:, 0]) * (p0[:, 2] - p2[:, 2])
+    safe = np.where(np.abs(d) > 1e-12, d, 1.0)
+    l0 = ((p1[:, 2] - p2[:, 2]) * (qx - p2[:, 0]) + (p2[:, 0] - p1[:, 0]) * (qz - p2[:, 2])) / safe
+    l1 = ((p2[:, 2] - p0[:, 2]) * (qx - p2[:, 0]) + (p0[:, 0] - p2[:, 0]) * (qz - p2[:, 2])) / safe
+    lam = np.stack([l0, l1, 1.0 - l0 - l1], axis=1)
+    score = np.where(np.abs(d) > 1e-12, lam.min(axis=1), -np.inf)
+    order = np.lexsort((score, owner))
+    os_ = owner[order]
+    last = np.r_[os_[1:] != os_[:-1], True]
+    best = np.full(P, -1, dtype=np.int64)
+    best[os_[last]] = order[last]
+    has = best >= 0
+    b = best[has]
+    lb = np.clip(lam[b], 0.0, None)
+    lb /= np.maximum(lb.sum(axis=1, keepdims=True), 1e-300)
+    centres[has, 1] = lb[:, 0] * p0[b, 1] + lb[:, 1] * p1[b, 1] + lb[:, 2] * p2[b, 1]
+    return centres, normals, areas
+
+
+def _portals(verts, polys, neis) -> Portals:
+    """Shared edges from the neighbour table: each pair (a < b) once, sorted."""
+    P, nvp = polys.shape
+    i, j = np.nonzero(neis >= 0)
+    k = neis[i, j].astype(np.int64)
+    keep = i < k
+    i, j, k = i[keep].astype(np.int64), j[keep], k[keep]
+    code = i * max(P, 1) + k
+    _, first = np.unique(code, return_index=True)      # sorted by (a, b), first edge kept
+    i, j, k = i[first], j[first], k[first]
+    counts = (polys >= 0).sum(axis=1)
+    jn = (j + 1) % counts[i]
+    va, vb = polys[i, j], polys[i, jn]
+    endpoints = np.stack([verts[va], verts[vb]], axis=1)
+    widths = np.linalg.norm(endpoints[:, 1] - endpoints[:, 0], axis=1)
+    return Portals(pairs=np.stack([i, k], axis=1), endpoints=endpoints, widths=widths)
+
+
+# keep the extension's constant visible
+DT_VERTS_PER_POLYGON: int = int(_recast.DT_VERTS_PER_POLYGON)

@@ -1,0 +1,141 @@
+"""The ``navmesh`` GraphBuilder plugin (g2s_plugins.graph_builders.navmesh)."""
+
+from __future__ import annotations
+
+import math
+import time
+import types
+
+import networkx as nx
+import numpy as np
+import pluggy
+import pytest
+import trimesh
+
+from g2s_core import hookspecs
+from g2s_core.model import RunContext
+from g2s_core.plugin import PROJECT, PluginParams
+from g2s_plugins.graph_builders import navmesh as plugin
+from g2s_plugins.recast import NavMesh, RecastParams
+
+AGENT = types.SimpleNamespace(radius=0.3, height=2.0, max_climb=0.4, max_slope=45.0)
+DEMO_AGENT = types.SimpleNamespace(radius=0.6, height=2.0, max_climb=0.9, max_slope=45.0)
+
+
+def slab(extents, centre) -> trimesh.Trimesh:
+    box = trimesh.creation.box(extents=extents)
+    box.apply_translation(centre)
+    return box
+
+
+def level() -> trimesh.Trimesh:
+    """A 30 x 20 m floor with two wall boxes and a raised platform reached by a step."""
+    return trimesh.util.concatenate(
+        [
+            slab((30, 0.2, 20), (0, -0.1, 0)),
+            slab((0.5, 3, 12), (-5, 1.5, -4)),
+            slab((0.5, 3, 12), (5, 1.5, 4)),
+            slab((6, 0.3, 6), (11, 0.15, -6)),
+        ]
+    )
+
+
+def context(mesh, agent=AGENT) -> RunContext:
+    return RunContext(mesh=mesh, agent=agent, centre=np.asarray(mesh.bounds.mean(axis=0)))
+
+
+def run(mesh, params=None, agent=AGENT):
+    ctx = context(mesh, agent)
+    graph = plugin.g2s_build_graph(mesh=mesh, params=params or plugin.Params(), context=ctx)
+    return graph, ctx
+
+
+def test_plugin_contract():
+    assert plugin.NAME == "navmesh"
+    assert issubclass(plugin.Params, RecastParams) and issubclass(plugin.Params, PluginParams)
+    assert plugin.__doc__.strip().splitlines()[0]
+    pm = pluggy.PluginManager(PROJECT)
+    pm.add_hookspecs(hookspecs)
+    pm.register(plugin)
+    mesh = level()
+    ctx = context(mesh)
+    graph = pm.hook.g2s_build_graph(mesh=mesh, params=plugin.Params(), context=ctx)
+    assert isinstance(graph, nx.Graph) and graph.number_of_nodes() > 0
+    assert isinstance(ctx.navmesh, NavMesh)
+
+
+def test_graph_attributes_follow_the_model():
+    graph, ctx = run(level())
+    nm = ctx.navmesh
+    assert graph.number_of_nodes() == nm.polygon_count
+    assert list(graph.nodes) == list(range(nm.polygon_count))
+    assert graph.number_of_edges() == len(nm.portals().pairs) > 0
+    for i, data in graph.nodes(data=True):
+        assert set(data) == {"pos", "normal", "area", "on_navmesh", "polygon"}
+        assert isinstance(data["pos"], tuple) and len(data["pos"]) == 3
+        assert all(type(v) is float for v in data["pos"] + data["normal"])
+        assert type(data["area"]) is float and data["area"] > 0
+        assert data["on_navmesh"] is True and data["polygon"] == i
+        assert math.isclose(math.hypot(*data["normal"]), 1.0, rel_tol=1e-9) and data["normal"][1] > 0
+        assert np.allclose(data["pos"], nm.centres[i])
+    verts = {tuple(v) for v in nm.vertices.tolist()}
+    for a, b, data in graph.edges(data=True):
+        pa, pb = np.array(graph.nodes[a]["pos"]), np.array(graph.nodes[b]["pos"])
+        assert data["weight"] == pytest.approx(float(np.linalg.norm(pa - pb)), rel=1e-12)
+        p0, p1 = data["portal"]
+        assert isinstance(p0, tuple) and len(p0) == 3 and p0 in verts and p1 in verts
+        assert data["width"] == pytest.approx(math.dist(p0, p1), rel=1e-12) and data["width"] > 0
+        # both polygons really share the portal's two vertices
+        for poly in (a, b):
+            ring = {tuple(nm.vertices[k]) for k in nm.polygons[poly] if k >= 0}
+            assert {p0, p1} <= ring
+    # one connected floor (walls do not cut it; the 0.3 m step is climbable)
+    assert nx.is_connected(graph)
+    assert sum(d["area"] for _, d in graph.nodes(data=True)) == pytest.approx(nm.areas.sum())
+    assert graph.graph["navmesh_stats"]["polygons"] == nm.polygon_count
+
+
+def test_deterministic_order():
+    g1, _ = run(level())
+    g2, _ = run(level())
+    assert list(g1.nodes(data=True)) == list(g2.nodes(data=True))
+    assert list(g1.edges(data=True)) == list(g2.edges(data=True))
+    edges = list(g1.edges())
+    assert all(a < b for a, b in edges) and edges == sorted(edges)
+
+
+def test_params_reach_recast():
+    coarse, ctx_c = run(level(), plugin.Params(cell_size=0.3, cell_height=0.2))
+    fine, ctx_f = run(level())
+    assert ctx_c.navmesh.stats()["cell_size"] == pytest.approx(0.3)
+    assert ctx_f.navmesh.stats()["cell_size"] == pytest.approx(0.15)
+    small_polys, ctx_s = run(level(), plugin.Params(verts_per_poly=3))
+    assert ctx_s.navmesh.nvp == 3 and small_polys.number_of_nodes() > fine.number_of_nodes()
+
+
+def test_disconnected_floors_give_components():
+    mesh = trimesh.util.concatenate([slab((10, 0.2, 10), (0, -0.1, 0)), slab((10, 0.2, 10), (20, -0.1, 0))])
+    graph, _ = run(mesh)
+    assert nx.number_connected_components(graph) == 2
+
+
+def test_nav_test_level(shared_data):
+    mesh = trimesh.load(shared_data / "nav_test.obj", force="mesh")
+    t0 = time.perf_counter()
+    graph, ctx = run(mesh, plugin.Params(cell_size=0.3, cell_height=0.2), agent=DEMO_AGENT)
+    seconds = time.perf_counter() - t0
+    nm = ctx.navmesh
+    components = sorted((len(c) for c in nx.connected_components(graph)), reverse=True)
+    degree1 = sum(1 for _, d in graph.degree if d == 1)
+    # measured with librecast 1.5.1 (Debian): 153 polygons, 151 edges, 23 degree-1,
+    # 17 components: 6 areas of 6..77 polygons plus 11 single polygons (mostly the
+    # insides / tops of closed boxes, which Recast keeps as walkable islands)
+    assert 100 <= graph.number_of_nodes() <= 220
+    assert 120 <= graph.number_of_edges() <= 180
+    assert 15 <= degree1 <= 30
+    assert 3 <= len(components) <= 25
+    assert components[0] >= 50 and sum(components[:3]) >= 0.6 * graph.number_of_nodes()
+    # several floors: the surface spans more than 10 m of height
+    ys = nm.centres[:, 1]
+    assert ys.max() - ys.min() > 10.0
+    assert seconds < 5.0
