@@ -61,5 +61,4 @@ def g2s_build_graph(mesh, params, context):
     navmesh = build_navmesh(mesh.vertices, mesh.faces, context.agent, params)
     context.navmesh = navmesh
     graph = navmesh_graph(navmesh)
-    graph.graph["navmesh_stats"] = navmesh.stats()
     return graph
