@@ -1,0 +1,1 @@
+"""Analyzer plugins: a value for every node of the final structure (the paper's post-process)."""

@@ -1,0 +1,33 @@
+"""Betweenness: the share of shortest paths through each node, the paper's indicator of likely traffic.
+
+On a tree or forest (the usual structure) the exact O(n) subtree-size
+formula is used; on a graph with cycles, Brandes' algorithm (rustworkx
+unweighted; igraph, or networkx without it, weighted). See
+:mod:`g2s_plugins.centrality`.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+
+import networkx as nx
+from pydantic import Field
+
+from g2s_core.model import RunContext
+from g2s_core.plugin import PluginParams, hookimpl
+from g2s_plugins import centrality
+
+NAME = "betweenness"
+
+
+class Params(PluginParams):
+    """Path lengths and scaling."""
+
+    weighted: bool = Field(False, description="shortest paths by edge length (metres) instead of hop count; no effect on trees")
+    normalized: bool = Field(True, description="divide by (n-1)(n-2)/2, the number of pairs of other nodes")
+
+
+@hookimpl
+def g2s_analyze(structure: nx.Graph, params: Params, context: RunContext) -> Mapping[int, float]:
+    """Betweenness of every node of the structure."""
+    return centrality.betweenness(structure, weighted=params.weighted, normalized=params.normalized)

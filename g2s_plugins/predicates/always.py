@@ -1,0 +1,30 @@
+"""Always: remove every removable node, leaving each root joined directly to the leaves.
+
+Useful to see the tree's topology without its geometry, and as a bound in
+tests. Cost per call: O(1).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+import networkx as nx
+
+from g2s_core.model import RunContext
+from g2s_core.plugin import PluginParams, hookimpl
+
+NAME = "always"
+
+
+class Params(PluginParams):
+    """This plugin takes no parameters."""
+
+
+def _always(tree: nx.DiGraph, a: int, b: int, c: int) -> bool:
+    return True
+
+
+@hookimpl
+def g2s_simplify_predicate(params: Params, context: RunContext) -> Callable[[nx.DiGraph, int, int, int], bool]:
+    """A predicate that is always true."""
+    return _always

@@ -1,0 +1,25 @@
+"""Leaves: every node of degree 1 (the graph's dead ends), as in the paper's map analysis.
+
+Dead ends of a navigation graph cover the whole level, so joining them all
+gives a structure that reaches every part of the map (paper, Sec. 3.3.2).
+Complexity: O(n).
+"""
+
+from __future__ import annotations
+
+import networkx as nx
+
+from g2s_core.model import RunContext, Terminals
+from g2s_core.plugin import PluginParams, hookimpl
+
+NAME = "leaves"
+
+
+class Params(PluginParams):
+    """This plugin takes no parameters."""
+
+
+@hookimpl
+def g2s_select_terminals(graph: nx.Graph, params: Params, context: RunContext) -> Terminals:
+    """The nodes of degree 1 (networkx degree: a self-loop counts 2), by ascending id."""
+    return Terminals(nodes=tuple(sorted(node for node, degree in graph.degree() if degree == 1)))

@@ -1,0 +1,193 @@
+"""Points: user-given positions (e.g. entry/exit points) added to the graph as terminal nodes.
+
+Each point becomes a new node, joined to its ``connect`` nearest existing
+nodes (scipy ``cKDTree``) that lie within ``max_distance``; the new edges'
+``weight`` is the Euclidean distance. New ids follow the largest existing
+id, in the order the points are given, and the terminals are the new nodes
+in that order. A new node has ``pos`` = the point, ``normal`` = that of its
+nearest node, ``area`` = 0, ``polygon`` = -1 and ``on_navmesh`` true only
+when the run has a navigation mesh and a navmesh polygon lies within the
+agent radius horizontally and the agent's max climb vertically of the point
+(Detour ``findNearestPoly``); without a navmesh it is false.
+
+Points come from ``points`` (a list of [x, y, z] in metres, mesh frame, Y
+up) or from ``file``: JSON (a list of [x, y, z], or ``{"points": [...]}``)
+or text/CSV (one point per line, numbers separated by commas, semicolons or
+spaces; ``#`` starts a comment; a non-numeric first line is a header).
+A relative ``file`` is read from the working directory.
+
+Complexity: O(n log n) to build the k-d tree plus O(p (log n + k)) for p points.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import re
+from pathlib import Path
+from typing import Any
+
+import networkx as nx
+import numpy as np
+from pydantic import Field, model_validator
+from pydantic_core import PydanticCustomError
+from scipy.spatial import cKDTree
+
+from g2s_core.errors import G2SError
+from g2s_core.model import RunContext, Terminals, vec3
+from g2s_core.plugin import PluginParams, hookimpl
+
+NAME = "points"
+
+_DEFAULT_NORMAL = (0.0, 1.0, 0.0)
+
+
+class Params(PluginParams):
+    """Where the points come from (exactly one of points, file) and how they are joined."""
+
+    points: list[tuple[float, float, float]] | None = Field(
+        None, min_length=1, description="points [x, y, z] in metres, mesh frame"
+    )
+    file: str | None = Field(None, description="JSON, CSV or text file with one point [x, y, z] per entry/line")
+    connect: int = Field(1, ge=1, le=32, description="number of nearest graph nodes each point is joined to")
+    max_distance: float = Field(2.0, gt=0, description="farthest a joined node may be from its point, metres")
+
+    @model_validator(mode="after")
+    def _one_source(self) -> Params:
+        if (self.points is None) == (self.file is None):
+            got = "both" if self.points is not None else "neither"
+            raise PydanticCustomError("source", "give exactly one of points, file (got {got})", {"got": got})
+        return self
+
+
+_SEPARATORS = re.compile(r"[,;\s]+")
+
+
+def _from_json(path: Path, text: str) -> list[Any]:
+    try:
+        data = json.loads(text)
+    except json.JSONDecodeError as exc:
+        raise G2SError(f"{path}: invalid JSON at line {exc.lineno}, column {exc.colno}: {exc.msg}") from None
+    if isinstance(data, dict):
+        if "points" not in data:
+            raise G2SError(f"{path}: expected a list of [x, y, z] or a mapping with a 'points' list")
+        data = data["points"]
+    if not isinstance(data, list):
+        raise G2SError(f"{path}: expected a list of [x, y, z] points")
+    return data
+
+
+def _from_text(path: Path, text: str) -> list[Any]:
+    rows: list[Any] = []
+    first = True
+    for number, line in enumerate(text.splitlines(), start=1):
+        content = line.split("#", 1)[0].strip()
+        if not content:
+            continue
+        fields = [f for f in _SEPARATORS.split(content) if f]
+        try:
+            values = [float(f) for f in fields]
+        except ValueError:
+            if first:  # a header such as "x,y,z"
+                first = False
+                continue
+            raise G2SError(f"{path}:{number}: expected 3 numbers x, y, z, got {content!r}") from None
+        first = False
+        if len(values) != 3:
+            raise G2SError(f"{path}:{number}: expected 3 numbers x, y, z, got {len(values)}: {content!r}")
+        rows.append(values)
+    return rows
+
+
+def read_points(file: str | Path) -> np.ndarray:
+    """(p, 3) float64 points read from a JSON or text/CSV file (format in the module docs).
+
+    Raises:
+        G2SError: the file is missing, unreadable, malformed, or holds no point.
+    """
+    path = Path(file)
+    try:
+        text = path.read_text(encoding="utf-8")
+    except FileNotFoundError:
+        raise G2SError(f"{path}: no such points file") from None
+    except (OSError, UnicodeDecodeError) as exc:
+        raise G2SError(f"{path}: cannot read points file ({exc})") from None
+    stripped = text.lstrip()
+    is_json = path.suffix.lower() == ".json" or stripped.startswith(("[", "{"))
+    rows = _from_json(path, text) if is_json else _from_text(path, text)
+    points = []
+    for index, row in enumerate(rows):
+        try:
+            point = vec3(row)
+        except (TypeError, ValueError):
+            raise G2SError(f"{path}: point {index} is {row!r}, expected [x, y, z] numbers") from None
+        points.append(point)
+    if not points:
+        raise G2SError(f"{path}: the file holds no points")
+    return np.asarray(points, dtype=np.float64)
+
+
+def on_navmesh(navmesh: Any, point: np.ndarray, agent: Any) -> bool:
+    """Whether a navmesh polygon lies within the agent radius (horizontally) and max climb (vertically) of ``point``.
+
+    ``navmesh.nearest_poly(p, extents)`` returns (polygon index or -1, nearest
+    point on the navmesh); the half extents of the search box are (radius,
+    max climb, radius). False when ``navmesh`` is ``None``.
+    """
+    if navmesh is None:
+        return False
+    radius = float(getattr(agent, "radius", 0.5))
+    climb = max(float(getattr(agent, "max_climb", 0.4)), 1e-3)
+    index, nearest = navmesh.nearest_poly(np.asarray(point, dtype=np.float64), extents=(radius, climb, radius))
+    if int(index) < 0:
+        return False
+    offset = np.asarray(nearest, dtype=np.float64) - point
+    return math.hypot(offset[0], offset[2]) <= radius + 1e-9 and abs(offset[1]) <= climb + 1e-9
+
+
+@hookimpl
+def g2s_select_terminals(graph: nx.Graph, params: Params, context: RunContext) -> Terminals:
+    """Add every point to ``graph`` as a new node joined to its nearest nodes; they are the terminals.
+
+    Raises:
+        G2SError: the graph has no nodes, or a point is farther than
+            ``max_distance`` from every node (the message names the point).
+    """
+    points = np.asarray(params.points, dtype=np.float64) if params.points is not None else read_points(params.file)
+    if not np.all(np.isfinite(points)):
+        index = int(np.flatnonzero(~np.all(np.isfinite(points), axis=1))[0])
+        raise G2SError(f"point {index} {tuple(points[index].tolist())} is not finite")
+    existing = sorted(graph.nodes)
+    if not existing:
+        raise G2SError("the graph has no nodes to join the points to")
+    positions = np.asarray([graph.nodes[node]["pos"] for node in existing], dtype=np.float64)
+    k = min(params.connect, len(existing))
+    distances, indices = cKDTree(positions).query(points, k=k)
+    distances = np.asarray(distances).reshape(len(points), k)
+    indices = np.asarray(indices).reshape(len(points), k)
+    # Check every point before touching the graph.
+    for i, point in enumerate(points):
+        if distances[i, 0] > params.max_distance:
+            x, y, z = point.tolist()
+            raise G2SError(
+                f"point {i} ({x:g}, {y:g}, {z:g}) is {distances[i, 0]:.3g} m from the nearest graph node, "
+                f"farther than max_distance = {params.max_distance:g} m"
+            )
+    first_id = int(max(existing)) + 1
+    new_nodes: list[int] = []
+    for i, point in enumerate(points):
+        node = first_id + i
+        nearest = existing[int(indices[i, 0])]
+        graph.add_node(
+            node,
+            pos=vec3(point),
+            normal=vec3(graph.nodes[nearest].get("normal", _DEFAULT_NORMAL)),
+            area=0.0,
+            on_navmesh=on_navmesh(context.navmesh, point, context.agent),
+            polygon=-1,
+        )
+        for distance, index in zip(distances[i].tolist(), indices[i].tolist()):
+            if distance <= params.max_distance:
+                graph.add_edge(node, existing[int(index)], weight=float(distance))
+        new_nodes.append(node)
+    return Terminals(nodes=tuple(new_nodes))
