@@ -182,6 +182,13 @@ def _show(value: Any) -> str:
     return str(value)
 
 
+def _plural(phrase: str) -> str:
+    """``an integer`` -> ``integers``, ``a list of 3 numbers`` -> ``lists of 3 numbers``."""
+    noun = phrase.split(" ", 1)[1] if phrase.startswith(("a ", "an ")) else phrase
+    head, _, rest = noun.partition(" ")
+    return f"{head}s {rest}".strip()
+
+
 def _describe_type(annotation: Any) -> str:
     origin = get_origin(annotation)
     args = get_args(annotation)
@@ -191,8 +198,8 @@ def _describe_type(annotation: Any) -> str:
         return "one of " + ", ".join(_show(a) for a in args)
     if origin in (list, tuple, set, frozenset):
         if origin is tuple and args and args[-1] is not Ellipsis:
-            return f"a list of {len(args)} {_describe_type(args[0]).removeprefix('a ').removeprefix('an ')}s"
-        return f"a list of {_describe_type(args[0]).removeprefix('a ').removeprefix('an ')}s" if args else "a list"
+            return f"a list of {len(args)} {_plural(_describe_type(args[0]))}"
+        return f"a list of {_plural(_describe_type(args[0]))}" if args else "a list"
     if origin is dict:
         return "a mapping"
     if args and type(None) in args:

@@ -204,7 +204,9 @@ def steiner_forest(
         if len(group) == 1:
             forest.add_node(group[0])
             continue
-        tree = solve(graph.subgraph(components[index]), group)
+        whole = len(components[index]) == graph.number_of_nodes()
+        # a subgraph view is slow to iterate; pass the graph itself when it is one component
+        tree = solve(graph if whole else graph.subgraph(components[index]), group)
         _check_tree(tree, graph, group)
         forest.add_nodes_from(sorted(tree.nodes))
         forest.add_edges_from(sorted(tuple(sorted(e)) for e in tree.edges))

@@ -6,7 +6,7 @@ ascending id order so that the result is deterministic. The paper selects a
 root among the *unvisited* nodes repeatedly; since a traversal visits a whole
 component, that is one root per component, which is what is done here.
 
-Complexity: O(n log n) for n nodes (sorting the scores and neighbour lists).
+Complexity: O(n log n) for n nodes (ranking the nodes and sorting neighbours).
 """
 
 from __future__ import annotations
@@ -17,22 +17,34 @@ import networkx as nx
 import numpy as np
 
 SCORE_DIGITS = 12
-"""Scores are compared after rounding to this many significant digits, so that
-values equal but for floating-point noise count as ties."""
+"""Scores and distances are compared after rounding to this many significant
+digits, so that values equal but for floating-point noise count as ties."""
 
 
-def _rounded(score: float) -> float:
-    return float(f"{score:.{SCORE_DIGITS}g}")
+def round_significant(values: np.ndarray, digits: int = SCORE_DIGITS) -> np.ndarray:
+    """``values`` rounded to ``digits`` significant digits (zeros and non-finite values kept)."""
+    values = np.asarray(values, dtype=np.float64)
+    finite = np.isfinite(values) & (values != 0)
+    scale = np.ones_like(values)
+    scale[finite] = 10.0 ** (digits - 1 - np.floor(np.log10(np.abs(values[finite]))))
+    return np.where(finite, np.round(values * scale) / scale, values)
 
 
-def choose_root(nodes: list[int], scores: Mapping[int, float], positions: Mapping[int, tuple], centre: np.ndarray) -> int:
-    """The node with the highest score; ties go to the node nearest ``centre``, then to the lowest id."""
+def root_ranks(forest: nx.Graph, scores: Mapping[int, float], centre: np.ndarray) -> dict[int, int]:
+    """Rank of every node as a root: 0 is best.
 
-    def key(node: int) -> tuple[float, float, int]:
-        distance = float(np.linalg.norm(np.asarray(positions[node]) - centre))
-        return (-_rounded(scores[node]), _rounded(distance), node)
-
-    return min(nodes, key=key)
+    Order: highest score first; ties go to the node nearest ``centre``, then
+    to the lowest id.
+    """
+    nodes = sorted(forest)
+    missing = [n for n in nodes if n not in scores]
+    if missing:
+        raise ValueError(f"the root selector gave no score for nodes {missing[:5]}")
+    positions = np.array([forest.nodes[n]["pos"] for n in nodes], dtype=np.float64).reshape(-1, 3)
+    score = round_significant(np.array([scores[n] for n in nodes], dtype=np.float64))
+    distance = round_significant(np.linalg.norm(positions - centre, axis=1))
+    order = np.lexsort((np.asarray(nodes), distance, -score))
+    return {nodes[i]: rank for rank, i in enumerate(order.tolist())}
 
 
 def root_forest(forest: nx.Graph, scores: Mapping[int, float], centre: np.ndarray) -> nx.DiGraph:
@@ -48,25 +60,15 @@ def root_forest(forest: nx.Graph, scores: Mapping[int, float], centre: np.ndarra
         attributes copied plus ``depth`` and ``root``; ``graph["roots"]``
         lists the roots in component order (by smallest node id).
     """
-    missing = [n for n in forest.nodes if n not in scores]
-    if missing:
-        raise ValueError(f"the root selector gave no score for nodes {missing[:5]}")
-    positions = nx.get_node_attributes(forest, "pos")
-    rooted = nx.DiGraph()
-    roots: list[int] = []
-    components = sorted((sorted(c) for c in nx.connected_components(forest)), key=lambda c: c[0])
-    for component in components:
-        root = choose_root(component, scores, positions, centre)
-        roots.append(root)
+    rank = root_ranks(forest, scores, centre)
+    components = sorted((min(c), c) for c in nx.connected_components(forest))
+    roots = [min(c, key=rank.__getitem__) for _, c in components]
+    rooted = nx.DiGraph(roots=roots)
+    for root in roots:
+        depth = {root: 0}
         rooted.add_node(root, **forest.nodes[root], depth=0, root=root)
-        stack = [root]
-        while stack:
-            parent = stack.pop()
-            depth = rooted.nodes[parent]["depth"] + 1
-            children = sorted(n for n in forest.adj[parent] if n not in rooted)
-            for child in children:
-                rooted.add_node(child, **forest.nodes[child], depth=depth, root=root)
-                rooted.add_edge(parent, child, **forest.edges[parent, child])
-            stack.extend(reversed(children))
-    rooted.graph["roots"] = roots
+        for parent, child in nx.dfs_edges(forest, root, sort_neighbors=sorted):
+            depth[child] = depth[parent] + 1
+            rooted.add_node(child, **forest.nodes[child], depth=depth[child], root=root)
+            rooted.add_edge(parent, child, **forest.edges[parent, child])
     return rooted

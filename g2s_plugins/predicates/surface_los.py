@@ -33,7 +33,6 @@ import math
 from collections.abc import Callable
 
 import networkx as nx
-import numpy as np
 from pydantic import Field
 
 from g2s_core.errors import PluginError
@@ -52,13 +51,14 @@ class Params(PluginParams):
 
 
 def normals_angle_deg(a: tuple[float, float, float], b: tuple[float, float, float]) -> float:
-    """Angle between two normals in degrees; ``inf`` when either has zero length."""
-    va = np.asarray(a, dtype=np.float64)
-    vb = np.asarray(b, dtype=np.float64)
-    lengths = float(np.linalg.norm(va) * np.linalg.norm(vb))
+    """Angle between two normals in degrees; ``inf`` when either has zero length.
+
+    Plain floats rather than numpy: it runs once per predicate call, on 3-vectors.
+    """
+    lengths = math.hypot(*a) * math.hypot(*b)
     if not lengths > 0:
         return math.inf
-    cosine = float(np.dot(va, vb)) / lengths
+    cosine = (a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) / lengths
     return math.degrees(math.acos(min(1.0, max(-1.0, cosine))))
 
 
@@ -80,9 +80,7 @@ def g2s_simplify_predicate(params: Params, context: RunContext) -> Callable[[nx.
             return False
         if normals_angle_deg(tree.nodes[a]["normal"], tree.nodes[b]["normal"]) > tolerance:
             return False
-        start = np.asarray(tree.nodes[a]["pos"], dtype=np.float64)
-        end = np.asarray(node_c["pos"], dtype=np.float64)
-        clear, _t = navmesh.raycast(start, end)
-        return bool(clear)
+        clear, _t = navmesh.raycast(tree.nodes[a]["pos"], node_c["pos"])
+        return clear
 
     return predicate
