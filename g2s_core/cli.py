@@ -10,7 +10,8 @@ import argparse
 import json
 import sys
 import traceback
-from collections.abc import Sequence
+from collections.abc import Callable, Iterator, Sequence
+from contextlib import contextmanager
 from pathlib import Path
 from typing import Any
 
@@ -23,19 +24,13 @@ from g2s_core.errors import G2SError
 from g2s_core.hookspecs import STAGE_TITLES
 from g2s_core.mesh import load_mesh, mesh_sha256, prepare_mesh
 from g2s_core.model import RunResult
-from g2s_core.outputs import WRITERS, prepare_outdir, write_outputs
+from g2s_core.outputs import DEFAULT_FORMATS, WRITERS, check_outdir, parse_formats, prepare_outdir, write_outputs
+from g2s_core.outputs.common import STEP_ROWS, final_graph, roots_of, stage_rows
 from g2s_core.registry import Registry, plugin_parameters
 
 SAMPLE_PREFIX = "sample:"
 
-STEP_ROWS = (
-    ("graph", "Step 1", "initial graph"),
-    ("terminals", "Step 2", "terminals"),
-    ("steiner", "Step 3", "Steiner tree"),
-    ("roots", "Step 4", "rooted trees"),
-    ("simplify", "Step 5", "simplification"),
-    ("analysis", "Post-process", "analysis"),
-)
+__all__ = ["STEP_ROWS", "main", "stage_table"]
 
 
 def _parser() -> argparse.ArgumentParser:
@@ -64,9 +59,14 @@ def _parser() -> argparse.ArgumentParser:
 
 
 def _add_output_options(command: argparse.ArgumentParser) -> None:
-    command.add_argument("--format", help=f"comma-separated output formats, overriding the config ({', '.join(WRITERS)})")
+    command.add_argument(
+        "--format",
+        metavar="FORMATS",
+        help=f"comma-separated output formats, overriding the config's outputs.formats: {', '.join(WRITERS)} "
+        f"(default: the config's, else {','.join(DEFAULT_FORMATS)})",
+    )
     command.add_argument("--force", action="store_true", help="replace results already in the output folder")
-    command.add_argument("-q", "--quiet", action="store_true", help="no progress or tables")
+    command.add_argument("-q", "--quiet", action="store_true", help="no progress, tables or file list")
     command.add_argument("--json", action="store_true", help="print only a JSON summary on stdout")
 
 
@@ -98,6 +98,9 @@ def main(argv: Sequence[str] | None = None) -> int:
 
 def _run(args: argparse.Namespace, errors: Console) -> int:
     config = load_config(args.config)
+    formats = _formats(args, config, str(args.config))
+    protect = [] if args.mesh.startswith(SAMPLE_PREFIX) else [Path(args.mesh)]
+    check_outdir(args.outdir, formats, args.force, protect)
     registry = Registry.from_entry_points()
     plan = pipeline.plan(config, registry, source=str(args.config))
     if args.mesh.startswith(SAMPLE_PREFIX):
@@ -109,17 +112,47 @@ def _run(args: argparse.Namespace, errors: Console) -> int:
         if info.cleaning:
             removed = ", ".join(f"{count} {what.replace('_', ' ')}" for what, count in info.cleaning.items())
             _status(args, errors, f"cleaning removed {removed}")
-    return _execute(args, errors, registry, plan, mesh, mesh_name, sha)
+    return _execute(args, errors, registry, plan, mesh, mesh_name, sha, formats, protect)
 
 
 def _demo(args: argparse.Namespace, errors: Console) -> int:
     raw = load_raw_config(PRESETS_DIR / "demo.yaml")
     config = parse_config(raw, source="configs/demo.yaml")
+    formats = _formats(args, config, "configs/demo.yaml")
+    check_outdir(args.outdir, formats, args.force)
     registry = Registry.from_entry_points()
     plan = pipeline.plan(config, registry, source="configs/demo.yaml")
     level = samples.dungeon(seed=args.seed, rooms=args.rooms)
     mesh = prepare_mesh(level.mesh, config.mesh, source=level.name)
-    return _execute(args, errors, registry, plan, mesh, f"{level.name} (seed {args.seed}, {args.rooms} rooms)", mesh_sha256(mesh))
+    name = f"{level.name} (seed {args.seed}, {args.rooms} rooms)"
+    code = _execute(args, errors, registry, plan, mesh, name, mesh_sha256(mesh), formats)
+    if code == 0 and not (args.quiet or args.json):
+        Console().print(_demo_hint(args.outdir, formats), markup=False, highlight=False)
+    return code
+
+
+def _demo_hint(outdir: Path, formats: Sequence[str]) -> str:
+    lines = [f"the demo's results are in {outdir}/"]
+    if "html" in formats:
+        lines.append(f"  open {outdir / 'report.html'} in a web browser (works offline) for the interactive 3D report")
+    if "png" in formats:
+        lines.append(f"  {outdir / 'heatmap.png'}: top-down heat map of the analysis")
+    if "glb" in formats:
+        lines.append(f"  {outdir / 'structure.glb'}: level, navmesh and structure for any glTF viewer or Blender")
+    if "json" in formats:
+        lines.append(f"  {outdir / 'structure.json'}: the structure as data (see docs/outputs.md)")
+    if "graphml" in formats:
+        lines.append(f"  {outdir / 'structure.graphml'}, {outdir / 'graph.graphml'}: for networkx, Gephi, yEd")
+    return "\n".join(lines)
+
+
+def _formats(args: argparse.Namespace, config: Any, source: str) -> list[str]:
+    """--format, else the config's outputs.formats when it sets them, else the default formats."""
+    if args.format is not None:
+        return parse_formats(args.format, "--format")
+    if "formats" in config.outputs.model_fields_set:
+        return parse_formats(config.outputs.formats, f"{source}: outputs.formats")
+    return list(DEFAULT_FORMATS)
 
 
 def _sample_mesh(name: str, config: Any) -> tuple[Any, str, str]:
@@ -130,25 +163,24 @@ def _sample_mesh(name: str, config: Any) -> tuple[Any, str, str]:
     return mesh, name, mesh_sha256(mesh)
 
 
-def _execute(args, errors: Console, registry: Registry, plan: pipeline.Plan, mesh, mesh_name: str, sha: str) -> int:
-    formats = args.format.split(",") if args.format else list(plan.config.outputs.formats)
-    prepare_outdir(args.outdir, formats, args.force)
+def _execute(
+    args,
+    errors: Console,
+    registry: Registry,
+    plan: pipeline.Plan,
+    mesh,
+    mesh_name: str,
+    sha: str,
+    formats: Sequence[str],
+    protect: Sequence[Path] = (),
+) -> int:
     quiet = args.quiet or args.json
-    if quiet:
-        result = pipeline.run(plan, registry, mesh, mesh_name, sha)
-    else:
-        with errors.status("running") as status:
-            result = pipeline.run(plan, registry, mesh, mesh_name, sha, progress=lambda m: status.update(m))
-    written = write_outputs(result, args.outdir, formats)
+    with _progress(errors, quiet) as say:
+        result = pipeline.run(plan, registry, mesh, mesh_name, sha, progress=say)
+        prepare_outdir(args.outdir, formats, args.force, protect)
+        written = write_outputs(result, args.outdir, formats, replace=args.force, progress=say)
     if args.json:
-        summary = {
-            "mesh": mesh_name,
-            "stages": [vars(s) for s in result.stages],
-            "total_seconds": result.total_seconds,
-            "warnings": result.warnings,
-            "files": [str(p) for p in written],
-        }
-        print(json.dumps(summary, indent=1, sort_keys=True))
+        print(json.dumps(_summary(result, args.outdir, formats, written), indent=1, sort_keys=True))
         return 0
     for warning in result.warnings:
         errors.print(f"g2s: warning: {warning}", markup=False, highlight=False)
@@ -158,6 +190,43 @@ def _execute(args, errors: Console, registry: Registry, plan: pipeline.Plan, mes
         for path in written:
             console.print(f"wrote {path}", markup=False, highlight=False)
     return 0
+
+
+@contextmanager
+def _progress(errors: Console, quiet: bool) -> Iterator[Callable[[str], None]]:
+    """A callback showing progress on stderr as a spinner with the current step.
+
+    Nothing is shown with ``quiet`` or when stderr is not a terminal, so that
+    an error stays the one line on stderr that scripts can rely on.
+    """
+    if quiet or not errors.is_terminal:
+        yield lambda _message: None
+    else:
+        with errors.status("running") as status:
+            yield lambda message: status.update(message)
+
+
+def _summary(result: RunResult, outdir: Path, formats: Sequence[str], written: Sequence[Path]) -> dict[str, Any]:
+    """The --json summary."""
+    stage, graph = final_graph(result)
+    return {
+        "mesh": result.mesh_name,
+        "mesh_sha256": result.mesh_sha256,
+        "outdir": str(outdir),
+        "formats": list(formats),
+        "files": [str(p) for p in written],
+        "stages": [vars(s) for s in result.stages],
+        "total_seconds": result.total_seconds,
+        "final": {
+            "stage": stage,
+            "nodes": None if graph is None else graph.number_of_nodes(),
+            "edges": None if graph is None else graph.number_of_edges(),
+            "roots": roots_of(graph),
+            "terminals": None if result.terminals is None else len(result.terminals.nodes),
+            "analysis": list(result.analysis),
+        },
+        "warnings": result.warnings,
+    }
 
 
 def _status(args: argparse.Namespace, errors: Console, message: str) -> None:
@@ -170,18 +239,9 @@ def stage_table(result: RunResult, title: str = "") -> Table:
     table = Table(title=title or None)
     for column in ("step", "", "t (ms)", "#N", "#E"):
         table.add_column(column, justify="left" if column in ("step", "") else "right")
-    for stage, step, label in STEP_ROWS:
-        stats = result.stage(stage)
-        if stats is None:
-            continue
-        nodes = stats.terminals if stage == "terminals" else stats.nodes
-        table.add_row(step, label, f"{stats.seconds * 1000:.1f}", _count(nodes), _count(stats.edges))
-    table.add_row("total", "", f"{result.total_seconds * 1000:.1f}", "", "", style="bold")
+    for row in stage_rows(result.stages):
+        table.add_row(*row, style="bold" if row[0] == "total" else None)
     return table
-
-
-def _count(value: int | None) -> str:
-    return "" if value is None else str(value)
 
 
 def _plugins(args: argparse.Namespace) -> int:

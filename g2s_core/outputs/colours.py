@@ -1,0 +1,93 @@
+"""The colours every output uses, as in the paper's figures.
+
+* Tree depth: an edge takes the colour of its child's depth, red for depth 1,
+  yellow for 2, then green, cyan, blue, magenta, orange, violet, repeating.
+  Roots (depth 0) are red spheres.
+* Analysis values: green (lowest) -> yellow (middle) -> red (highest), after
+  min-max normalisation of the values shown.
+
+Colours are 8-bit RGB tuples.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Sequence
+
+import numpy as np
+
+RGB = tuple[int, int, int]
+
+DEPTH_COLOURS: tuple[RGB, ...] = (
+    (220, 30, 30),    # 1 red
+    (240, 200, 0),    # 2 yellow
+    (40, 170, 60),    # 3 green
+    (0, 180, 200),    # 4 cyan
+    (40, 80, 220),    # 5 blue
+    (190, 50, 190),   # 6 magenta
+    (245, 130, 20),   # 7 orange
+    (120, 70, 200),   # 8 violet
+)
+"""Colour of depth d >= 1 is ``DEPTH_COLOURS[(d - 1) % len(DEPTH_COLOURS)]``."""
+
+ROOT_COLOUR: RGB = (220, 30, 30)
+TERMINAL_COLOUR: RGB = (30, 110, 255)
+MESH_COLOUR: RGB = (170, 170, 170)
+NAVMESH_COLOUR: RGB = (60, 200, 90)
+NAVMESH_ALPHA = 0.35
+GRAPH_COLOUR: RGB = (90, 90, 90)
+STEINER_COLOUR: RGB = (150, 60, 200)
+
+HEAT_STOPS: tuple[tuple[float, RGB], ...] = ((0.0, (0, 160, 0)), (0.5, (250, 210, 0)), (1.0, (220, 0, 0)))
+"""The analysis scale: green at the lowest value, yellow at the middle, red at the highest."""
+
+
+def depth_colour(depth: int) -> RGB:
+    """Colour of an edge whose child has ``depth`` (>= 1); depth 0 gives the root colour."""
+    if depth <= 0:
+        return ROOT_COLOUR
+    return DEPTH_COLOURS[(depth - 1) % len(DEPTH_COLOURS)]
+
+
+def heat_colour(t: float) -> RGB:
+    """Colour of a normalised value ``t`` in [0, 1] (clipped)."""
+    t = min(max(float(t), 0.0), 1.0)
+    for (t0, c0), (t1, c1) in zip(HEAT_STOPS, HEAT_STOPS[1:]):
+        if t <= t1:
+            f = (t - t0) / (t1 - t0)
+            return tuple(int(round(a + (b - a) * f)) for a, b in zip(c0, c1))  # type: ignore[return-value]
+    return HEAT_STOPS[-1][1]
+
+
+def normalise(values: Iterable[float]) -> np.ndarray:
+    """Min-max normalised copy of ``values``; all 0 when they are all equal (or not finite)."""
+    array = np.asarray(list(values), dtype=np.float64)
+    finite = np.isfinite(array)
+    if not finite.any():
+        return np.zeros(len(array))
+    low, high = array[finite].min(), array[finite].max()
+    if high - low <= 0:
+        return np.zeros(len(array))
+    return np.where(finite, (array - low) / (high - low), 0.0)
+
+
+def css(rgb: Sequence[int], alpha: float | None = None) -> str:
+    """``rgb(r,g,b)`` or ``rgba(r,g,b,a)`` for plotly and HTML."""
+    r, g, b = (int(c) for c in rgb[:3])
+    return f"rgb({r},{g},{b})" if alpha is None else f"rgba({r},{g},{b},{alpha:g})"
+
+
+def unit(rgb: Sequence[int], alpha: float = 1.0) -> tuple[float, float, float, float]:
+    """The colour as 0..1 floats with ``alpha`` (matplotlib)."""
+    return (rgb[0] / 255.0, rgb[1] / 255.0, rgb[2] / 255.0, alpha)
+
+
+def plotly_heat_scale() -> list[list]:
+    """The analysis scale as a plotly colorscale."""
+    return [[t, css(c)] for t, c in HEAT_STOPS]
+
+
+def matplotlib_heat_cmap():  # -> matplotlib.colors.Colormap
+    """The analysis scale as a matplotlib colormap."""
+    from matplotlib.colors import LinearSegmentedColormap
+
+    return LinearSegmentedColormap.from_list("g2s_heat", [(t, unit(c)) for t, c in HEAT_STOPS])

@@ -1,0 +1,148 @@
+"""``heatmap.png``: the final structure seen from above, nodes coloured by the first analysis value.
+
+View: from above (+Y towards the viewer), X to the right and Z downwards,
+i.e. -Z up the page, which keeps the view right-handed; the axes are
+labelled in metres. Edges are grey lines, nodes are dots on the green
+(lowest) -> yellow -> red (highest) scale, roots are ringed in black. Without
+analysis values nodes and edges take their tree-depth colour (an edge its
+child's: red = depth 1, yellow = 2 ...) and, before step 4, one grey.
+
+Floors: node heights (Y) are sorted and split wherever two neighbours differ
+by more than the agent height; each floor gets its own panel (lowest first),
+with the edges that touch it (edges to another floor dashed). The colour
+scale is shared by all panels.
+
+The file is deterministic: matplotlib's Agg canvas (pyplot is not used), fixed size and DPI, no
+date or software tag in the PNG metadata.
+"""
+
+from __future__ import annotations
+
+import io
+import math
+from pathlib import Path
+
+import networkx as nx
+import numpy as np
+from matplotlib.backends.backend_agg import FigureCanvasAgg
+from matplotlib.collections import LineCollection
+from matplotlib.colors import Normalize
+from matplotlib.figure import Figure
+
+from g2s_core.model import RunResult
+from g2s_core.outputs import colours
+from g2s_core.outputs.common import agent_value, edge_list, final_graph, floors, roots_of
+from g2s_core.outputs.files import atomic_write
+
+HEATMAP_FILE = "heatmap.png"
+PANEL_INCHES = 6.0
+DPI = 110
+
+
+def write(result: RunResult, outdir: Path) -> list[Path]:
+    return [atomic_write(outdir / HEATMAP_FILE, render(result))]
+
+
+def floor_groups(graph: nx.Graph, gap: float) -> list[list[int]]:
+    """The graph's nodes grouped by floor (see the module doc), lowest floor first."""
+    nodes = sorted(graph.nodes)
+    heights = [float(graph.nodes[n]["pos"][1]) for n in nodes]
+    return [[nodes[i] for i in group] for group in floors(heights, gap)]
+
+
+def render(result: RunResult) -> bytes:
+    """The PNG's bytes."""
+    _, graph = final_graph(result)
+    keys = list(result.analysis)
+    key = keys[0] if keys else None
+    groups = floor_groups(graph, agent_value(result, "height", 2.0)) if graph is not None else []
+    count = max(len(groups), 1)
+    columns = min(count, 3)
+    rows = math.ceil(count / columns)
+    figure = Figure(figsize=(PANEL_INCHES * columns + (1.2 if key else 0.0), PANEL_INCHES * rows), dpi=DPI,
+                    layout="constrained")
+    FigureCanvasAgg(figure)  # Agg only, whatever pyplot's backend is
+    axes = figure.subplots(rows, columns, squeeze=False)
+    title = f"{result.mesh_name}: " + (f"{key}" if key else "tree depth" if graph is not None and graph.is_directed() else "structure")
+    figure.suptitle(title)
+    mappable = None
+    if graph is None:
+        axes[0][0].text(0.5, 0.5, "no graph: the run produced nothing to draw", ha="center", va="center")
+    else:
+        values = result.analysis[key] if key else {}
+        finite = [v for v in values.values() if np.isfinite(v)]
+        low, high = (min(finite), max(finite)) if finite else (0.0, 1.0)
+        norm = Normalize(vmin=low, vmax=high if high > low else low + 1.0)
+        floor_of = {n: i for i, group in enumerate(groups) for n in group}
+        roots = set(roots_of(graph))
+        for index, group in enumerate(groups):
+            ax = axes[index // columns][index % columns]
+            mappable = _panel(ax, graph, group, floor_of, index, values, norm, roots) or mappable
+            heights = [graph.nodes[n]["pos"][1] for n in group]
+            if len(groups) > 1:
+                low, high = f"{min(heights):.1f}", f"{max(heights):.1f}"
+                ax.set_title(f"floor {index + 1} of {len(groups)}: Y {low} m" if low == high else
+                             f"floor {index + 1} of {len(groups)}: Y {low} to {high} m")
+    for index in range(len(groups), rows * columns):
+        if index > 0:
+            axes[index // columns][index % columns].set_visible(False)
+    for ax_row in axes:
+        for ax in ax_row:
+            ax.set_xlabel("X (m) →")
+            ax.set_ylabel("Z (m), pointing down the page (seen from above)")
+            ax.set_aspect("equal", adjustable="datalim")
+            if not ax.yaxis_inverted():
+                ax.invert_yaxis()
+            ax.grid(True, color="#e6e6e6", linewidth=0.6)
+            ax.set_axisbelow(True)
+    if mappable is not None:
+        bar = figure.colorbar(mappable, ax=axes.ravel().tolist(), shrink=0.8)
+        bar.set_label(f"{key} (green lowest, red highest)")
+    buffer = io.BytesIO()
+    figure.savefig(buffer, format="png", dpi=DPI, metadata={"Software": None})
+    return buffer.getvalue()
+
+
+def _panel(ax, graph: nx.Graph, group: list[int], floor_of: dict[int, int], index: int,
+           values: dict[int, float], norm, roots: set[int]):
+    members = set(group)
+    by_depth = not values and graph.is_directed()
+    solid: list = []
+    dashed: list = []
+    solid_colours: list = []
+    dashed_colours: list = []
+    for u, v in edge_list(graph):
+        if u not in members and v not in members:
+            continue
+        segment = [(graph.nodes[u]["pos"][0], graph.nodes[u]["pos"][2]), (graph.nodes[v]["pos"][0], graph.nodes[v]["pos"][2])]
+        colour = colours.unit(colours.depth_colour(int(graph.nodes[v].get("depth", 1)))) if by_depth else (0.47, 0.47, 0.47, 1.0)
+        if floor_of[u] == floor_of[v]:
+            solid.append(segment)
+            solid_colours.append(colour)
+        else:
+            dashed.append(segment)
+            dashed_colours.append(colour)
+    if solid:
+        ax.add_collection(LineCollection(solid, colors=solid_colours, linewidths=2.0 if by_depth else 1.2, zorder=1))
+    if dashed:
+        ax.add_collection(LineCollection(dashed, colors=dashed_colours, linewidths=1.0, linestyles="dashed", zorder=1))
+    p = np.asarray([graph.nodes[n]["pos"] for n in group], dtype=np.float64).reshape(-1, 3)
+    mappable = None
+    if values:
+        data = np.asarray([values.get(n, np.nan) for n in group], dtype=np.float64)
+        order = np.argsort(np.nan_to_num(data, nan=-np.inf), kind="stable")  # hot nodes drawn on top
+        mappable = ax.scatter(p[order, 0], p[order, 2], c=data[order], cmap=colours.matplotlib_heat_cmap(), norm=norm,
+                              s=28, edgecolors="none", zorder=2, plotnonfinite=True)
+    elif graph.is_directed():
+        node_colours = [colours.unit(colours.depth_colour(int(graph.nodes[n].get("depth", 0)))) for n in group]
+        ax.scatter(p[:, 0], p[:, 2], c=node_colours, s=22, edgecolors="none", zorder=2)
+    else:
+        ax.scatter(p[:, 0], p[:, 2], color=colours.unit(colours.GRAPH_COLOUR), s=14, edgecolors="none", zorder=2)
+    root_nodes = [n for n in group if n in roots]
+    if root_nodes:
+        r = np.asarray([graph.nodes[n]["pos"] for n in root_nodes], dtype=np.float64)
+        ax.scatter(r[:, 0], r[:, 2], s=90, facecolors="none", edgecolors="black", linewidths=1.5, zorder=3,
+                   label="root")
+        ax.legend(loc="upper right", fontsize="small", framealpha=0.8)
+    ax.autoscale_view()
+    return mappable

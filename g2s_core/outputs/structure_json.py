@@ -1,0 +1,394 @@
+"""``structure.json`` (deterministic) and ``run.json`` (timings), and reading them back.
+
+``structure.json`` holds what a run found: the input mesh's name and SHA-256,
+the resolved config, the navmesh statistics, every node and edge of the final
+structure with its tree data and analysis values, the rooted trees, the
+terminals and openings, the sizes (and edges) of the Steiner tree and the
+rooted trees before simplification, the node/edge counts of every stage and
+the warnings. Its layout is described by ``structure.schema.json`` next to
+this module (``schema_version`` 1).
+
+Determinism rule: the same mesh and config give a byte-identical
+``structure.json``. Keys are sorted, lists are in a fixed order (nodes and
+edges by id), floats are rounded to 9 significant digits (``format(x,
+'.9g')``, ``-0.0`` written as ``0.0``, non-finite values as ``null``), and
+nothing that varies between runs is written to it: wall times (stage seconds,
+the navmesh build time) and the g2s version go to ``run.json`` instead.
+"""
+
+from __future__ import annotations
+
+import importlib.metadata
+import json
+import platform
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import networkx as nx
+import numpy as np
+
+from g2s_core.errors import G2SError
+from g2s_core.model import Opening, RunResult, StageStats, Terminals, vec3
+from g2s_core.outputs.common import edge_list, final_graph, number, roots_of, terminal_ids, vector
+from g2s_core.outputs.files import atomic_write
+
+SCHEMA_VERSION = 1
+STRUCTURE_FILE = "structure.json"
+RUN_FILE = "run.json"
+SCHEMA_PATH = Path(__file__).resolve().parent / "structure.schema.json"
+RUN_SCHEMA_PATH = Path(__file__).resolve().parent / "run.schema.json"
+
+_NODE_KEYS = ("pos", "normal", "area", "on_navmesh", "polygon", "terminal", "depth", "root")
+_EDGE_KEYS = ("weight",)
+_TIMING_WORDS = ("seconds", "time")
+
+
+# --- writing -----------------------------------------------------------------
+
+
+def write(result: RunResult, outdir: Path) -> list[Path]:
+    """Write ``structure.json`` and ``run.json`` into ``outdir``."""
+    structure = atomic_write(outdir / STRUCTURE_FILE, dumps(structure_document(result)))
+    run = atomic_write(outdir / RUN_FILE, dumps(run_document(result)))
+    return [structure, run]
+
+
+def dumps(document: dict[str, Any]) -> bytes:
+    """The fixed JSON form: sorted keys, one-space indent, UTF-8, final newline."""
+    text = json.dumps(document, sort_keys=True, indent=1, ensure_ascii=False, allow_nan=False)
+    return (text + "\n").encode("utf-8")
+
+
+def structure_document(result: RunResult) -> dict[str, Any]:
+    """The content of ``structure.json`` as plain Python data."""
+    stage, graph = final_graph(result)
+    keys = list(result.analysis)
+    terminals = set(terminal_ids(result))
+    nodes: list[dict[str, Any]] = []
+    edges: list[dict[str, Any]] = []
+    roots: list[int] = []
+    trees: list[dict[str, Any]] = []
+    if graph is not None:
+        roots = roots_of(graph)
+        for node in sorted(graph.nodes):
+            nodes.append(_node_record(graph, node, terminals, result.analysis, keys))
+        for u, v in edge_list(graph):
+            attrs = graph.edges[u, v]
+            edges.append({
+                "source": u,
+                "target": v,
+                "weight": _optional_number(attrs.get("weight")),
+                "extra": _extra(attrs, _EDGE_KEYS),
+            })
+        for root in roots:
+            members = sorted({root, *nx.descendants(graph, root)})
+            trees.append({
+                "root": root,
+                "node_ids": members,
+                "edges": len(members) - 1,
+                "max_depth": max(int(graph.nodes[n].get("depth", 0)) for n in members),
+            })
+    mesh = result.context.mesh
+    document: dict[str, Any] = {
+        "schema_version": SCHEMA_VERSION,
+        "format": "g2s-structure",
+        "units": "m",
+        "up_axis": "y",
+        "mesh": {
+            "name": result.mesh_name,
+            "sha256": result.mesh_sha256,
+            "vertices": int(len(mesh.vertices)) if mesh is not None else None,
+            "faces": int(len(mesh.faces)) if mesh is not None else None,
+            "bounds": [vector(b) for b in np.asarray(mesh.bounds)] if mesh is not None else None,
+        },
+        "config": _plain(result.config),
+        "navmesh": _navmesh_stats(result, timing=False),
+        "final_stage": stage,
+        "directed": bool(graph is not None and graph.is_directed()),
+        "roots": roots,
+        "analysis_keys": keys,
+        "nodes": nodes,
+        "edges": edges,
+        "trees": trees,
+        "terminals": None if result.terminals is None else {
+            "node_ids": terminal_ids(result),
+            "openings": [_opening(o) for o in result.terminals.openings],
+        },
+        "graphs": {
+            "graph": _size(result.graph),
+            "steiner": _with_edges(result.steiner),
+            "forest": _with_edges(result.forest),
+            "structure": _size(result.structure),
+        },
+        "stages": [
+            {"stage": s.stage, "nodes": s.nodes, "edges": s.edges, "terminals": s.terminals} for s in result.stages
+        ],
+        "warnings": list(result.warnings),
+    }
+    return document
+
+
+def run_document(result: RunResult) -> dict[str, Any]:
+    """The content of ``run.json``: what varies between runs (times, versions)."""
+    return {
+        "schema_version": SCHEMA_VERSION,
+        "format": "g2s-run",
+        "mesh": {"name": result.mesh_name, "sha256": result.mesh_sha256},
+        "stages": [
+            {"stage": s.stage, "seconds": float(s.seconds), "nodes": s.nodes, "edges": s.edges, "terminals": s.terminals}
+            for s in result.stages
+        ],
+        "total_seconds": float(result.total_seconds),
+        "navmesh": _navmesh_stats(result, timing=True),
+        "g2s_version": _version(),
+        "python": platform.python_version(),
+    }
+
+
+def _node_record(graph: nx.Graph, node: int, terminals: set[int], analysis: dict, keys: list[str]) -> dict[str, Any]:
+    attrs = graph.nodes[node]
+    parent = None
+    if graph.is_directed():
+        parents = list(graph.predecessors(node))
+        parent = int(parents[0]) if parents else None
+    return {
+        "id": int(node),
+        "position": vector(attrs["pos"]),
+        "normal": vector(attrs.get("normal")),
+        "area": _optional_number(attrs.get("area")),
+        "on_navmesh": None if attrs.get("on_navmesh") is None else bool(attrs["on_navmesh"]),
+        "polygon": None if attrs.get("polygon") is None else int(attrs["polygon"]),
+        "terminal": int(node) in terminals or bool(attrs.get("terminal", False)),
+        "root": None if attrs.get("root") is None else int(attrs["root"]),
+        "depth": None if attrs.get("depth") is None else int(attrs["depth"]),
+        "parent": parent,
+        "values": {key: number(analysis[key][node]) for key in keys if node in analysis[key]},
+        "extra": _extra(attrs, _NODE_KEYS),
+    }
+
+
+def _opening(opening: Opening) -> dict[str, Any]:
+    return {
+        "position": vector(opening.position),
+        "heading": vector(opening.heading),
+        "width": number(opening.width),
+        "p0": vector(opening.p0),
+        "p1": vector(opening.p1),
+    }
+
+
+def _size(graph: nx.Graph | None) -> dict[str, int] | None:
+    if graph is None:
+        return None
+    return {"nodes": graph.number_of_nodes(), "edges": graph.number_of_edges()}
+
+
+def _with_edges(graph: nx.Graph | None) -> dict[str, Any] | None:
+    if graph is None:
+        return None
+    data: dict[str, Any] = dict(_size(graph) or {})
+    data["node_ids"] = sorted(int(n) for n in graph.nodes)
+    data["edge_list"] = [list(e) for e in edge_list(graph)]
+    if graph.is_directed():
+        data["roots"] = roots_of(graph)
+    return data
+
+
+def _navmesh_stats(result: RunResult, timing: bool) -> dict[str, Any] | None:
+    """``navmesh.stats()`` split in its timing entries (``timing=True``) and the rest."""
+    navmesh = result.context.navmesh
+    stats = getattr(navmesh, "stats", None) if navmesh is not None else None
+    if not callable(stats):
+        return None
+    values = stats()
+    chosen = {str(k): v for k, v in values.items() if any(w in str(k) for w in _TIMING_WORDS) == timing}
+    return _plain(chosen)
+
+
+def _optional_number(value: Any) -> float | None:
+    return None if value is None else number(value)
+
+
+class _Skip:
+    """Marks a value that JSON cannot hold faithfully."""
+
+
+_SKIP = _Skip()
+
+
+def _plain(value: Any) -> Any:
+    """``value`` as JSON data with rounded floats; :data:`_SKIP` for what cannot be written."""
+    if value is None or isinstance(value, str):
+        return value
+    if isinstance(value, (bool, np.bool_)):
+        return bool(value)
+    if isinstance(value, (int, np.integer)):
+        return int(value)
+    if isinstance(value, (float, np.floating)):
+        return number(value)
+    if isinstance(value, dict):
+        items = {str(k): _plain(v) for k, v in value.items()}
+        return {k: v for k, v in items.items() if v is not _SKIP}
+    if isinstance(value, (set, frozenset)):
+        try:
+            value = sorted(value)
+        except TypeError:
+            return _SKIP
+    if isinstance(value, (list, tuple, np.ndarray)):
+        items = [_plain(v) for v in (value.tolist() if isinstance(value, np.ndarray) else value)]
+        return _SKIP if any(i is _SKIP for i in items) else items
+    return _SKIP
+
+
+def _extra(attrs: dict[str, Any], known: tuple[str, ...]) -> dict[str, Any]:
+    """Attributes beyond the documented ones that JSON can hold (plugins' own, e.g. ``width``)."""
+    return _plain({k: v for k, v in attrs.items() if k not in known})
+
+
+def _version() -> str:
+    try:
+        return importlib.metadata.version("g2s")
+    except importlib.metadata.PackageNotFoundError:
+        return "unknown"
+
+
+# --- reading -----------------------------------------------------------------
+
+
+@dataclass
+class LoadedResult:
+    """A ``structure.json`` read back, with networkx graphs.
+
+    ``structure`` is the final structure: a :class:`networkx.DiGraph` (edges
+    parent -> child, ``graph["roots"]``) when the run got to rooted trees, an
+    undirected graph otherwise. Its nodes carry the attributes of
+    :mod:`g2s_core.model` (``pos``, ``normal``, ``area``, ``on_navmesh``,
+    ``polygon``, ``depth``, ``root``), ``terminal`` (bool) and the plugins'
+    extra attributes; its edges ``weight`` and extras. ``analysis`` maps each
+    analyzer's key to its value per node. ``stages`` come with their seconds
+    when ``run.json`` of the same mesh lies beside the file, NaN otherwise.
+    """
+
+    schema_version: int
+    mesh_name: str
+    mesh_sha256: str
+    config: dict[str, Any]
+    navmesh: dict[str, Any] | None
+    final_stage: str | None
+    structure: nx.Graph
+    roots: list[int]
+    analysis: dict[str, dict[int, float | None]]
+    terminals: Terminals | None
+    steiner: nx.Graph | None
+    forest: nx.DiGraph | None
+    graph_size: tuple[int, int] | None
+    stages: list[StageStats] = field(default_factory=list)
+    warnings: list[str] = field(default_factory=list)
+    document: dict[str, Any] = field(default_factory=dict, repr=False)
+
+
+def load_result(path: str | Path) -> LoadedResult:
+    """Read a ``structure.json`` (or the folder holding one) back.
+
+    Raises:
+        G2SError: the file is missing, not JSON, not a g2s structure file, or
+            of a schema version this g2s does not read.
+    """
+    path = Path(path)
+    if path.is_dir():
+        path = path / STRUCTURE_FILE
+    try:
+        document = json.loads(path.read_text(encoding="utf-8"))
+    except FileNotFoundError:
+        raise G2SError(f"{path}: no such file") from None
+    except (OSError, UnicodeDecodeError, json.JSONDecodeError) as exc:
+        raise G2SError(f"{path}: not a readable JSON file ({exc})") from None
+    if not isinstance(document, dict) or document.get("format") != "g2s-structure":
+        raise G2SError(f"{path}: not a g2s structure.json file")
+    version = document.get("schema_version")
+    if version != SCHEMA_VERSION:
+        raise G2SError(f"{path}: schema_version {version!r} is not supported (this g2s reads {SCHEMA_VERSION})")
+    try:
+        return _loaded(document, path)
+    except (KeyError, TypeError, ValueError) as exc:
+        raise G2SError(f"{path}: malformed structure file ({type(exc).__name__}: {exc})") from None
+
+
+def _loaded(document: dict[str, Any], path: Path) -> LoadedResult:
+    directed = bool(document["directed"])
+    structure: nx.Graph = nx.DiGraph() if directed else nx.Graph()
+    analysis: dict[str, dict[int, float | None]] = {key: {} for key in document["analysis_keys"]}
+    for record in document["nodes"]:
+        node = int(record["id"])
+        attrs: dict[str, Any] = dict(record["extra"])
+        attrs["pos"] = vec3(record["position"])
+        if record["normal"] is not None:
+            attrs["normal"] = vec3(record["normal"])
+        for key in ("area", "on_navmesh", "polygon", "root", "depth"):
+            if record[key] is not None:
+                attrs[key] = record[key]
+        attrs["terminal"] = bool(record["terminal"])
+        structure.add_node(node, **attrs)
+        for key, value in record["values"].items():
+            analysis.setdefault(key, {})[node] = value
+    for record in document["edges"]:
+        attrs = dict(record["extra"])
+        if record["weight"] is not None:
+            attrs["weight"] = record["weight"]
+        structure.add_edge(int(record["source"]), int(record["target"]), **attrs)
+    roots = [int(r) for r in document["roots"]]
+    if directed:
+        structure.graph["roots"] = roots
+    terminals = None
+    if document["terminals"] is not None:
+        openings = tuple(
+            Opening(vec3(o["position"]), vec3(o["heading"]), float(o["width"]), vec3(o["p0"]), vec3(o["p1"]))
+            for o in document["terminals"]["openings"]
+        )
+        terminals = Terminals(tuple(int(t) for t in document["terminals"]["node_ids"]), openings)
+    graphs = document["graphs"]
+    size = graphs.get("graph")
+    return LoadedResult(
+        schema_version=int(document["schema_version"]),
+        mesh_name=document["mesh"]["name"],
+        mesh_sha256=document["mesh"]["sha256"],
+        config=document["config"],
+        navmesh=document["navmesh"],
+        final_stage=document["final_stage"],
+        structure=structure,
+        roots=roots,
+        analysis=analysis,
+        terminals=terminals,
+        steiner=_edges_graph(graphs.get("steiner"), directed=False),
+        forest=_edges_graph(graphs.get("forest"), directed=True),  # type: ignore[arg-type]
+        graph_size=None if size is None else (int(size["nodes"]), int(size["edges"])),
+        stages=_stages(document, path.parent / RUN_FILE),
+        warnings=list(document["warnings"]),
+        document=document,
+    )
+
+
+def _edges_graph(data: dict[str, Any] | None, directed: bool) -> nx.Graph | None:
+    if data is None:
+        return None
+    graph: nx.Graph = nx.DiGraph() if directed else nx.Graph()
+    graph.add_nodes_from(int(n) for n in data["node_ids"])
+    graph.add_edges_from((int(u), int(v)) for u, v in data["edge_list"])
+    if directed:
+        graph.graph["roots"] = [int(r) for r in data.get("roots", [])]
+    return graph
+
+
+def _stages(document: dict[str, Any], run_path: Path) -> list[StageStats]:
+    seconds: dict[str, float] = {}
+    try:
+        run = json.loads(run_path.read_text(encoding="utf-8"))
+        if run.get("mesh", {}).get("sha256") == document["mesh"]["sha256"]:
+            seconds = {s["stage"]: float(s["seconds"]) for s in run.get("stages", [])}
+    except (OSError, ValueError, TypeError, KeyError, AttributeError):
+        seconds = {}
+    return [
+        StageStats(s["stage"], seconds.get(s["stage"], float("nan")), s["nodes"], s["edges"], s["terminals"])
+        for s in document["stages"]
+    ]

@@ -1,0 +1,491 @@
+"""Result writers: structure.json (schema, round trip, byte identity), run.json, GraphML, PNG, folders, CLI.
+
+The hand-made run below uses the core's own rooting and simplification on a
+small two-floor level, so the writers can be tested without the stage plugins;
+the tests at the end run the real pipeline when its plugins are installed.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import os
+import struct
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import networkx as nx
+import numpy as np
+import pytest
+import trimesh
+
+from g2s_core.config import AgentConfig, load_config
+from g2s_core.errors import G2SError
+from g2s_core.model import Opening, RunContext, RunResult, StageStats, Terminals
+from g2s_core.outputs import (
+    DEFAULT_FORMATS,
+    RESULT_FILES,
+    WRITERS,
+    check_outdir,
+    load_result,
+    parse_formats,
+    prepare_outdir,
+    write_outputs,
+)
+from g2s_core.outputs import common, graphml, heatmap, structure_json
+from g2s_core.pipeline import steiner_forest
+from g2s_core.rooted import root_forest
+from g2s_core.simplify import simplify_forest
+from tests.conftest import PROJECT
+
+PIPELINE_PLUGINS = {("graph", "navmesh"), ("terminals", "leaves"), ("steiner", "kou"), ("roots", "betweenness"),
+                    ("simplify", "surface_los"), ("analyzers", "betweenness")}
+
+
+# --- a hand-made run ---------------------------------------------------------------
+
+
+def two_floor_mesh() -> trimesh.Trimesh:
+    """Two 10 m x 6 m slabs, floor tops at Y = 0 and Y = 4."""
+    low = trimesh.creation.box(extents=(10.0, 0.2, 6.0))
+    low.apply_translation((5.0, -0.1, 3.0))
+    high = trimesh.creation.box(extents=(6.0, 0.2, 4.0))
+    high.apply_translation((3.0, 3.9, 2.0))
+    return trimesh.util.concatenate([low, high])
+
+
+def _timed(stages: list[StageStats], stage: str, make, counts):
+    start = time.perf_counter()
+    value = make()
+    stages.append(StageStats(stage, time.perf_counter() - start, **counts(value)))
+    return value
+
+
+def make_result(navmesh=None, analysis: bool = True) -> RunResult:
+    """A complete run on :func:`two_floor_mesh`: grid graph, corner terminals, Steiner tree, rooted, simplified."""
+    mesh = two_floor_mesh()
+    stages: list[StageStats] = []
+    config = load_config(PROJECT / "configs" / "map_analysis.yaml").model_dump(mode="json")
+    context = RunContext(mesh=mesh, agent=AgentConfig(), centre=np.asarray(mesh.bounds).mean(axis=0), navmesh=navmesh)
+
+    def build_graph() -> nx.Graph:
+        graph = nx.Graph()
+        points = [(x, 0.0, z) for x in (1.0, 3.0, 5.0, 7.0, 9.0) for z in (1.0, 3.0, 5.0)]
+        points += [(x, 4.0, z) for x in (1.0, 3.0, 5.0) for z in (1.0, 3.0)]
+        for node, p in enumerate(points):
+            graph.add_node(node, pos=p, normal=(0.0, 1.0, -0.0), area=4.0, on_navmesh=True, polygon=node,
+                           region=int(p[1] > 1.0))
+        for a in graph.nodes:
+            for b in graph.nodes:
+                pa, pb = np.asarray(points[a]), np.asarray(points[b])
+                if a < b and pa[1] == pb[1] and np.isclose(np.linalg.norm(pa - pb), 2.0):
+                    graph.add_edge(a, b, weight=2.0, width=2.0)
+        # a stair from the lower floor (9, 0, 5) to the upper one (5, 4, 3)
+        graph.add_edge(14, 19, weight=float(np.linalg.norm(np.subtract(points[14], points[19]))), width=1.0)
+        return graph
+
+    graph = _timed(stages, "graph", build_graph, counts=lambda g: dict(nodes=len(g), edges=g.number_of_edges()))
+    context.graph = graph
+    opening = Opening((0.0, 0.0, 3.0), (-1.0, 0.0, 0.0), 2.0, (0.0, 0.0, 2.0), (0.0, 0.0, 4.0))
+    terminals = _timed(stages, "terminals", lambda: Terminals((0, 2, 12, 20, 15), (opening,)),
+                       counts=lambda t: dict(terminals=len(t.nodes)))
+    for t in terminals.nodes:
+        graph.nodes[t]["terminal"] = True
+
+    def solve(sub: nx.Graph, terms: list[int]) -> nx.Graph:
+        return nx.algorithms.approximation.steiner_tree(sub, terms, weight="weight", method="kou")
+
+    steiner = _timed(stages, "steiner", lambda: steiner_forest(graph, terminals.nodes, solve, context),
+                     counts=lambda s: dict(nodes=len(s), edges=s.number_of_edges()))
+    forest = _timed(stages, "roots", lambda: root_forest(steiner, nx.betweenness_centrality(steiner), context.centre),
+                    counts=lambda f: {})
+
+    def straight(tree: nx.DiGraph, a: int, b: int, c: int) -> bool:
+        pa, pb, pc = (np.asarray(tree.nodes[n]["pos"]) for n in (a, b, c))
+        return bool(np.allclose(np.cross(pb - pa, pc - pb), 0.0)) and pa[1] == pc[1]
+
+    structure = _timed(stages, "simplify", lambda: simplify_forest(forest, straight),
+                       counts=lambda s: dict(nodes=len(s), edges=s.number_of_edges()))
+    values: dict[str, dict[int, float]] = {}
+    if analysis:
+        def analyse() -> dict[str, dict[int, float]]:
+            undirected = structure.to_undirected(as_view=True)
+            return {"betweenness": dict(nx.betweenness_centrality(undirected)),
+                    "degree": {n: float(d) for n, d in undirected.degree}}
+        values = _timed(stages, "analysis", analyse, counts=lambda v: {})
+    context.warn("terminals <b>near</b> the edge & one more")
+    return RunResult(config=config, mesh_name="two floors.obj", mesh_sha256="ab" * 32, context=context, graph=graph,
+                     terminals=terminals, steiner=steiner, forest=forest, structure=structure, analysis=values,
+                     stages=stages)
+
+
+def real_navmesh(mesh: trimesh.Trimesh):
+    """The navmesh Recast builds for ``mesh``, or a skip when the extension is not built."""
+    recast = pytest.importorskip("g2s_plugins.recast", reason="the Recast extension is not built")
+    return recast.build_navmesh(mesh.vertices, mesh.faces, AgentConfig())
+
+
+@pytest.fixture(scope="module")
+def result() -> RunResult:
+    return make_result()
+
+
+def _schema(name: str) -> dict:
+    jsonschema = pytest.importorskip("jsonschema")
+    schema = json.loads((Path(structure_json.__file__).parent / name).read_text())
+    jsonschema.Draft202012Validator.check_schema(schema)
+    return schema
+
+
+def _validate(document: dict, name: str) -> None:
+    import jsonschema
+
+    jsonschema.Draft202012Validator(_schema(name)).validate(document)
+
+
+def _same(a, b) -> bool:
+    """Equal after the writers' rounding (floats to 9 significant digits, tuples as lists)."""
+    if isinstance(a, (tuple, list, np.ndarray)):
+        return isinstance(b, (tuple, list)) and len(a) == len(b) and all(_same(x, y) for x, y in zip(a, b))
+    if isinstance(a, (float, np.floating)) and not isinstance(a, bool):
+        return b == common.number(a)
+    return a == b
+
+
+# --- structure.json -----------------------------------------------------------------
+
+
+def test_structure_json_follows_the_shipped_schema(result, tmp_path):
+    written = structure_json.write(result, tmp_path)
+    assert [p.name for p in written] == ["structure.json", "run.json"]
+    document = json.loads((tmp_path / "structure.json").read_text())
+    _validate(document, "structure.schema.json")
+    _validate(json.loads((tmp_path / "run.json").read_text()), "run.schema.json")
+    assert document["schema_version"] == 1
+    assert document["mesh"] == {"name": "two floors.obj", "sha256": "ab" * 32, "vertices": 16, "faces": 24,
+                                "bounds": [[0.0, -0.2, 0.0], [10.0, 4.0, 6.0]]}
+    assert document["config"] == result.config
+    assert document["final_stage"] == "simplify" and document["directed"] is True
+    assert document["analysis_keys"] == ["betweenness", "degree"]
+    assert document["roots"] == result.structure.graph["roots"]
+    assert [n["id"] for n in document["nodes"]] == sorted(result.structure.nodes)
+    assert document["terminals"]["node_ids"] == [0, 2, 12, 20, 15]
+    assert document["terminals"]["openings"][0]["p1"] == [0.0, 0.0, 4.0]
+    assert document["graphs"]["graph"] == {"nodes": 21, "edges": result.graph.number_of_edges()}
+    assert document["graphs"]["steiner"]["edges"] == result.steiner.number_of_edges()
+    assert [s["stage"] for s in document["stages"]] == ["graph", "terminals", "steiner", "roots", "simplify", "analysis"]
+    assert document["warnings"] == ["terminals <b>near</b> the edge & one more"]
+    # the trees partition the structure, and every parent link matches an edge
+    assert sorted(n for t in document["trees"] for n in t["node_ids"]) == sorted(result.structure.nodes)
+    parents = {n["id"]: n["parent"] for n in document["nodes"]}
+    assert {(p, c) for c, p in parents.items() if p is not None} == set(result.structure.edges)
+
+
+def test_schema_rejects_what_the_writer_must_not_write(result):
+    jsonschema = pytest.importorskip("jsonschema")
+    document = structure_json.structure_document(result)
+    broken = json.loads(json.dumps(document))
+    broken["nodes"][0]["position"] = [1.0, 2.0]
+    with pytest.raises(jsonschema.ValidationError):
+        _validate(broken, "structure.schema.json")
+    broken = json.loads(json.dumps(document))
+    broken["stages"][0]["seconds"] = 0.1
+    with pytest.raises(jsonschema.ValidationError):
+        _validate(broken, "structure.schema.json")
+
+
+def test_round_trip_gives_back_the_same_structure(result, tmp_path):
+    structure_json.write(result, tmp_path)
+    loaded = load_result(tmp_path)
+    original = result.structure
+    assert isinstance(loaded.structure, nx.DiGraph)
+    assert sorted(loaded.structure.nodes) == sorted(original.nodes)
+    assert sorted(loaded.structure.edges) == sorted(original.edges)
+    assert loaded.roots == original.graph["roots"] == loaded.structure.graph["roots"]
+    terminals = set(result.terminals.nodes)
+    for node, attrs in original.nodes(data=True):
+        back = loaded.structure.nodes[node]
+        for key, value in attrs.items():
+            if key == "terminal":
+                continue
+            assert _same(value, back[key]), (node, key, value, back[key])
+        assert back["terminal"] == (node in terminals)
+        assert set(back) - set(attrs) <= {"terminal"}
+    for u, v, attrs in original.edges(data=True):
+        back = loaded.structure.edges[u, v]
+        assert set(back) == set(attrs)
+        assert all(_same(attrs[k], back[k]) for k in attrs)
+    assert set(loaded.analysis) == set(result.analysis)
+    for key, values in result.analysis.items():
+        assert set(loaded.analysis[key]) == set(values)
+        assert all(loaded.analysis[key][n] == common.number(v) for n, v in values.items())
+    assert loaded.terminals.nodes == result.terminals.nodes
+    assert loaded.terminals.openings == result.terminals.openings
+    assert sorted(loaded.steiner.edges) == sorted(tuple(sorted(e)) for e in result.steiner.edges)
+    assert sorted(loaded.forest.edges) == sorted(result.forest.edges)
+    assert loaded.graph_size == (result.graph.number_of_nodes(), result.graph.number_of_edges())
+    assert [(s.stage, s.nodes, s.edges, s.terminals) for s in loaded.stages] == \
+        [(s.stage, s.nodes, s.edges, s.terminals) for s in result.stages]
+    assert [s.seconds for s in loaded.stages] == [s.seconds for s in result.stages]  # from run.json
+    assert loaded.warnings == result.warnings and loaded.config == result.config
+    # without run.json the counts stay and the times are unknown
+    (tmp_path / "run.json").unlink()
+    assert all(math.isnan(s.seconds) for s in load_result(tmp_path / "structure.json").stages)
+
+
+def test_structure_json_is_byte_identical_for_the_same_input(tmp_path):
+    first, second = make_result(), make_result()
+    assert [s.seconds for s in first.stages] != [s.seconds for s in second.stages]  # the runs really differ in time
+    for run, name in ((first, "a"), (second, "b")):
+        (tmp_path / name).mkdir()
+        structure_json.write(run, tmp_path / name)
+    a, b = (tmp_path / "a" / "structure.json").read_bytes(), (tmp_path / "b" / "structure.json").read_bytes()
+    assert a == b
+    assert b"seconds" not in a and a.endswith(b"\n")
+    assert (tmp_path / "a" / "run.json").read_bytes() != (tmp_path / "b" / "run.json").read_bytes()
+
+
+def test_numbers_are_rounded_to_nine_significant_digits():
+    assert common.number(1 / 3) == 0.333333333
+    assert common.number(123456.7891234) == 123456.789
+    assert math.copysign(1.0, common.number(-0.0)) == 1.0
+    assert common.number(float("nan")) is None and common.number(float("inf")) is None
+    assert common.number(np.float32(0.1)) == 0.100000001
+
+
+def test_load_result_refuses_other_files(tmp_path):
+    path = tmp_path / "structure.json"
+    with pytest.raises(G2SError, match="no such file"):
+        load_result(path)
+    path.write_text("{not json")
+    with pytest.raises(G2SError, match="not a readable JSON"):
+        load_result(path)
+    path.write_text(json.dumps({"format": "g2s-structure", "schema_version": 2}))
+    with pytest.raises(G2SError, match="schema_version 2 is not supported"):
+        load_result(path)
+    path.write_text(json.dumps({"nodes": []}))
+    with pytest.raises(G2SError, match="not a g2s structure.json"):
+        load_result(path)
+
+
+def test_navmesh_statistics_without_timings(tmp_path):
+    mesh = two_floor_mesh()
+    run = make_result(navmesh=real_navmesh(mesh))
+    document = structure_json.structure_document(run)
+    stats = run.context.navmesh.stats()
+    assert document["navmesh"]["polygons"] == stats["polygons"] >= 2
+    assert "build_seconds" not in document["navmesh"]
+    assert structure_json.run_document(run)["navmesh"] == {"build_seconds": stats["build_seconds"]}
+    _validate(document, "structure.schema.json")
+
+
+def test_runs_stopped_early_still_describe_their_last_graph(result):
+    early = RunResult(config=result.config, mesh_name="m", mesh_sha256="0" * 64, context=result.context,
+                      graph=result.graph, stages=result.stages[:1])
+    document = structure_json.structure_document(early)
+    assert document["final_stage"] == "graph" and document["directed"] is False
+    assert len(document["nodes"]) == 21 and document["trees"] == [] and document["terminals"] is None
+    assert all(e["source"] < e["target"] for e in document["edges"])
+    _validate(document, "structure.schema.json")
+
+
+# --- GraphML --------------------------------------------------------------------------
+
+
+def test_graphml_flattens_attributes(result, tmp_path):
+    written = graphml.write(result, tmp_path)
+    assert [p.name for p in written] == ["structure.graphml", "graph.graphml"]
+    structure = nx.read_graphml(tmp_path / "structure.graphml", node_type=int)
+    assert structure.is_directed()
+    assert sorted(structure.nodes) == sorted(result.structure.nodes)
+    assert sorted(structure.edges) == sorted(result.structure.edges)
+    for node, attrs in result.structure.nodes(data=True):
+        back = structure.nodes[node]
+        assert (back["pos_x"], back["pos_y"], back["pos_z"]) == tuple(common.number(v) for v in attrs["pos"])
+        assert back["normal_z"] == 0.0 and back["depth"] == attrs["depth"] and back["root"] == attrs["root"]
+        assert back["value_betweenness"] == common.number(result.analysis["betweenness"][node])
+        assert back["terminal"] == (node in result.terminals.nodes)
+        parents = list(result.structure.predecessors(node))
+        assert back.get("parent") == (parents[0] if parents else None)
+    assert structure.graph["roots"] == ",".join(map(str, result.structure.graph["roots"]))
+    assert structure.graph["mesh_sha256"] == "ab" * 32
+    graph = nx.read_graphml(tmp_path / "graph.graphml", node_type=int)
+    assert not graph.is_directed()
+    assert graph.number_of_nodes() == 21 and graph.number_of_edges() == result.graph.number_of_edges()
+    assert graph.edges[14, 19]["width"] == 1.0
+
+
+def test_flatten_handles_arrays_and_none():
+    flat = graphml.flatten({"pos": np.array([1.0, 2.0, 3.0]), "portal": ((0, 0, 0), (1.5, 0, 2)), "ids": [4, 5],
+                            "gone": None, "flag": np.bool_(True), "n": np.int64(7), "name": "x"})
+    assert flat == {"pos_x": 1.0, "pos_y": 2.0, "pos_z": 3.0, "portal_0_x": 0.0, "portal_0_y": 0.0, "portal_0_z": 0.0,
+                    "portal_1_x": 1.5, "portal_1_y": 0.0, "portal_1_z": 2.0, "ids_0": 4, "ids_1": 5, "flag": True,
+                    "n": 7, "name": "x"}
+    assert all(type(v) in (bool, int, float, str) for v in flat.values())
+
+
+# --- PNG ------------------------------------------------------------------------------
+
+
+def _png_chunks(data: bytes) -> list[tuple[bytes, bytes]]:
+    assert data[:8] == b"\x89PNG\r\n\x1a\n"
+    chunks, offset = [], 8
+    while offset < len(data):
+        (length,) = struct.unpack(">I", data[offset:offset + 4])
+        chunks.append((data[offset + 4:offset + 8], data[offset + 8:offset + 8 + length]))
+        offset += 12 + length
+    return chunks
+
+
+def test_heatmap_png_has_a_panel_per_floor_and_no_metadata(result, tmp_path):
+    assert [len(g) for g in heatmap.floor_groups(result.structure, 2.0)] == [
+        sum(1 for n in result.structure if result.structure.nodes[n]["pos"][1] < 1.0),
+        sum(1 for n in result.structure if result.structure.nodes[n]["pos"][1] > 1.0)]
+    path, = heatmap.write(result, tmp_path)
+    data = path.read_bytes()
+    chunks = _png_chunks(data)
+    kinds = [kind for kind, _ in chunks]
+    assert kinds[0] == b"IHDR" and kinds[-1] == b"IEND"
+    assert not {b"tEXt", b"iTXt", b"zTXt", b"tIME"} & set(kinds), kinds
+    width, height = struct.unpack(">II", chunks[0][1][:8])
+    assert width == round((2 * heatmap.PANEL_INCHES + 1.2) * heatmap.DPI)  # two floors side by side + colour bar
+    assert height == round(heatmap.PANEL_INCHES * heatmap.DPI)
+    assert heatmap.render(result) == data  # deterministic
+    one_floor = heatmap.floor_groups(result.structure, 10.0)
+    assert len(one_floor) == 1
+
+
+def test_heatmap_colours_follow_the_values(tmp_path):
+    """The hottest node's pixels are red, the coldest's green (green -> yellow -> red)."""
+    from g2s_core.outputs import colours
+
+    assert colours.heat_colour(0.0) == (0, 160, 0) and colours.heat_colour(1.0) == (220, 0, 0)
+    assert colours.heat_colour(0.5) == (250, 210, 0)
+    assert list(colours.normalise([2.0, 4.0, 3.0])) == [0.0, 1.0, 0.5]
+    assert list(colours.normalise([5.0, 5.0])) == [0.0, 0.0]
+    assert colours.depth_colour(1) == (220, 30, 30) and colours.depth_colour(2) == (240, 200, 0)
+    assert colours.depth_colour(1 + len(colours.DEPTH_COLOURS)) == colours.depth_colour(1)
+
+
+# --- folders and formats ------------------------------------------------------------------
+
+
+def test_parse_formats():
+    assert parse_formats("json, html,json,,PNG") == ["json", "html", "png"]
+    assert parse_formats(["glb"]) == ["glb"]
+    with pytest.raises(G2SError, match="--format: unknown output format 'pdf'"):
+        parse_formats("json,pdf")
+    with pytest.raises(G2SError, match="no output format"):
+        parse_formats(" , ")
+    assert DEFAULT_FORMATS == ("json", "html")
+    assert set(WRITERS) == set(RESULT_FILES) >= {"json", "html", "glb", "graphml", "png"}
+
+
+def test_existing_results_are_refused_without_force_and_stale_ones_removed_with_it(result, tmp_path):
+    out = tmp_path / "out"
+    check_outdir(out, ["json"], force=False)
+    assert not out.exists()  # checking creates nothing
+    prepare_outdir(out, ["png"], force=False)
+    write_outputs(result, out, ["png"])
+    (out / "notes.txt").write_text("mine")
+    with pytest.raises(G2SError, match=r"already holds results \(heatmap.png\); use --force"):
+        prepare_outdir(out, ["json"], force=False)  # a result of *another* format counts too
+    prepare_outdir(out, ["json"], force=True)
+    written = write_outputs(result, out, ["json"], replace=True)
+    assert sorted(p.name for p in out.iterdir()) == ["notes.txt", "run.json", "structure.json"]
+    assert [p.name for p in written] == ["structure.json", "run.json"]
+    assert not list(out.glob(".*.tmp"))
+
+
+def test_the_input_mesh_is_never_a_result(tmp_path):
+    mesh = tmp_path / "structure.glb"
+    two_floor_mesh().export(mesh)
+    before = mesh.read_bytes()
+    for force in (False, True):
+        with pytest.raises(G2SError, match="has the name of a result file"):
+            check_outdir(tmp_path, ["json"], force=force, protect=[mesh])
+    assert mesh.read_bytes() == before
+    with pytest.raises(G2SError, match="is not a folder"):
+        check_outdir(mesh, ["json"], force=True)
+
+
+# --- the command line ---------------------------------------------------------------------
+
+
+def g2s(*args: str) -> subprocess.CompletedProcess:
+    return subprocess.run([sys.executable, "-m", "g2s_core.cli", *args], capture_output=True, text=True, cwd=PROJECT,
+                          env={**os.environ, "COLUMNS": "200"})
+
+
+def test_cli_refuses_bad_formats_and_existing_results_before_running(tmp_path):
+    proc = g2s("run", "configs/map_analysis.yaml", "sample:straight_corridor", "-o", str(tmp_path / "o"),
+               "--format", "json,pdf")
+    assert proc.returncode == 2 and proc.stderr.strip().splitlines() == [
+        "g2s: error: --format: unknown output format 'pdf' (expected some of: json, html, glb, graphml, png, graph)"]
+    assert not (tmp_path / "o").exists()
+    config = tmp_path / "c.yaml"
+    config.write_text("extends: map_analysis\noutputs: {formats: [json, gif]}\n")
+    proc = g2s("run", str(config), "sample:straight_corridor", "-o", str(tmp_path / "o"))
+    assert proc.returncode == 2 and "c.yaml: outputs.formats: unknown output format 'gif'" in proc.stderr
+    out = tmp_path / "old"
+    out.mkdir()
+    (out / "report.html").write_text("earlier")
+    proc = g2s("run", "configs/map_analysis.yaml", "sample:straight_corridor", "-o", str(out), "--format", "json")
+    assert proc.returncode == 2 and "already holds results (report.html); use --force" in proc.stderr
+    assert (out / "report.html").read_text() == "earlier"
+
+
+def _plugins_missing() -> str | None:
+    from g2s_core.registry import Registry
+
+    installed = {(p.stage, p.name) for p in Registry.from_entry_points().plugins()}
+    missing = sorted(f"{s}.{n}" for s, n in PIPELINE_PLUGINS - installed)
+    return f"stage plugins not installed yet: {', '.join(missing)}" if missing else None
+
+
+needs_plugins = pytest.mark.skipif(_plugins_missing() is not None, reason=str(_plugins_missing()))
+
+
+@needs_plugins
+def test_real_run_json_is_deterministic_and_valid(tmp_path):
+    from g2s_core import pipeline, samples
+    from g2s_core.mesh import mesh_sha256
+    from g2s_core.registry import Registry
+
+    registry = Registry.from_entry_points()
+    plan = pipeline.plan(load_config(PROJECT / "configs" / "map_analysis.yaml"), registry)
+    level = samples.cross_hub()
+    outputs = []
+    for name in ("a", "b"):
+        run = pipeline.run(plan, registry, level.mesh, level.name, mesh_sha256(level.mesh))
+        (tmp_path / name).mkdir()
+        outputs.append(write_outputs(run, tmp_path / name, ["json", "graphml", "png"]))
+    assert (tmp_path / "a" / "structure.json").read_bytes() == (tmp_path / "b" / "structure.json").read_bytes()
+    assert (tmp_path / "a" / "heatmap.png").read_bytes() == (tmp_path / "b" / "heatmap.png").read_bytes()
+    document = json.loads((tmp_path / "a" / "structure.json").read_text())
+    _validate(document, "structure.schema.json")
+    assert document["navmesh"]["polygons"] > 0 and document["final_stage"] == "simplify"
+    assert document["analysis_keys"] == ["betweenness"]
+    loaded = load_result(tmp_path / "a")
+    assert sorted(loaded.structure.edges) == sorted(run.structure.edges)
+    assert loaded.analysis["betweenness"] == {n: common.number(v) for n, v in run.analysis["betweenness"].items()}
+
+
+@needs_plugins
+def test_cli_run_writes_the_chosen_formats_and_a_json_summary(tmp_path):
+    out = tmp_path / "out"
+    proc = g2s("run", "configs/map_analysis.yaml", "sample:straight_corridor", "-o", str(out), "--json")
+    assert proc.returncode == 0, proc.stderr
+    summary = json.loads(proc.stdout)
+    assert summary["formats"] == ["json", "html"]  # base.yaml's default
+    assert sorted(Path(f).name for f in summary["files"]) == ["report.html", "run.json", "structure.json"]
+    assert summary["final"]["stage"] == "simplify" and summary["final"]["analysis"] == ["betweenness"]
+    assert proc.stderr == ""
+    quiet = g2s("run", "configs/map_analysis.yaml", "sample:straight_corridor", "-o", str(out), "--format",
+                "glb,png", "--quiet", "--force")
+    assert quiet.returncode == 0 and quiet.stdout == "" and quiet.stderr == ""
+    assert sorted(p.name for p in out.iterdir()) == ["heatmap.png", "structure.glb"]
+    loud = g2s("run", "configs/map_analysis.yaml", "sample:straight_corridor", "-o", str(out), "--force")
+    assert loud.returncode == 0 and "Step 5" in loud.stdout and f"wrote {out / 'report.html'}" in loud.stdout
