@@ -1,0 +1,297 @@
+"""Batched ray casting over a triangle mesh, and the agent walk tests built on it.
+
+Shared by the ``sampling`` graph builder and the ``mesh_los`` predicate; any
+plugin that needs many rays against the level may use it.
+
+Rays go through trimesh's Embree wrapper (:mod:`trimesh.ray.ray_pyembree`)
+when ``embreex`` imports, else through trimesh's pure-Python intersector
+(same answers, much slower). Every function here takes whole arrays of rays
+and makes one intersector call per batch, never one per ray.
+
+Conventions: metres, Y up, directions need not be unit length (they are
+normalised). A ray "hits" the first triangle along it, front or back face.
+Distances are measured along the normalised direction; "no hit" is ``inf``.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+import trimesh
+
+UP = np.array([0.0, 1.0, 0.0])
+"""The up direction of every g2s mesh."""
+
+EPSILON = 0.01
+"""Metres a ray origin is moved off the surface it starts from."""
+
+HEIGHT_TOLERANCE = 0.01
+"""Metres of head room an agent may lack and still fit (float noise, exact-height doors)."""
+
+GROUND_MARGIN = 0.1
+"""Metres the ground may lie below the straight line between two points, on top of the agent's climb."""
+
+GRAZE_NUDGE = 1e-4
+"""Metres a ray that grazes a triangle is moved aside before it is cast again."""
+
+_SKEW = np.array([0.2672612419124244, 0.5345224838248488, 0.8017837257372732])
+"""A direction no axis-aligned ray is parallel to (crossed with a ray to move it aside)."""
+
+COMPASS = np.array(
+    [[math.cos(a), 0.0, math.sin(a)] for a in np.arange(8) * (math.pi / 4)],
+    dtype=np.float64,
+)
+"""Eight horizontal unit directions, 45 degrees apart."""
+
+
+def _make_intersector(mesh: trimesh.Trimesh) -> tuple[Any, str]:
+    """The Embree intersector of ``mesh`` when embreex imports, else trimesh's Python one."""
+    try:
+        from trimesh.ray import ray_pyembree
+
+        return ray_pyembree.RayMeshIntersector(mesh), "embree"
+    except ImportError:  # embreex missing or broken: correct but slow
+        from trimesh.ray import ray_triangle
+
+        return ray_triangle.RayMeshIntersector(mesh), "python"
+
+
+@dataclass(frozen=True)
+class Hits:
+    """First hits of a batch of rays.
+
+    Attributes:
+        face: (n,) int64, index of the triangle hit, -1 for no hit.
+        distance: (n,) float64, metres along the ray, ``inf`` for no hit.
+    """
+
+    face: np.ndarray
+    distance: np.ndarray
+
+    @property
+    def hit(self) -> np.ndarray:
+        return self.face >= 0
+
+
+class RayCaster:
+    """Batched first-hit queries against one triangle mesh.
+
+    Args:
+        mesh: the triangles rays may hit (metres, Y up).
+
+    Attributes:
+        backend: ``"embree"`` or ``"python"``.
+        rays_cast: how many rays this caster has cast (for statistics).
+    """
+
+    def __init__(self, mesh: trimesh.Trimesh) -> None:
+        self.mesh = mesh
+        self.intersector, self.backend = _make_intersector(mesh)
+        triangles = np.asarray(mesh.triangles, dtype=np.float64)
+        self._plane_points = triangles[:, 0, :]
+        self._centroids = triangles.mean(axis=1)
+        self.face_normals = np.asarray(mesh.face_normals, dtype=np.float64)
+        self.rays_cast = 0
+
+    def first_hits(self, origins: np.ndarray, directions: np.ndarray) -> Hits:
+        """The first triangle each ray hits and how far along the ray.
+
+        A ray that only grazes a triangle (runs in its plane, e.g. a vertical
+        ray along a box's side) is cast again from ``GRAZE_NUDGE`` metres to
+        either side, and the farther of the two hits is kept: a ray lined up
+        with a face sees what lies on the open side of it, not the face's edge.
+
+        Args:
+            origins: (n, 3) ray starts.
+            directions: (n, 3) or (3,) directions (any non-zero length).
+        """
+        origins = np.asarray(origins, dtype=np.float64).reshape(-1, 3)
+        directions = np.broadcast_to(np.asarray(directions, dtype=np.float64), origins.shape)
+        n = len(origins)
+        if n == 0 or len(self.mesh.faces) == 0:
+            return Hits(np.full(n, -1, dtype=np.int64), np.full(n, np.inf))
+        unit = directions / np.linalg.norm(directions, axis=1, keepdims=True)
+        face, distance, grazing = self._cast(origins, unit)
+        if np.any(grazing):
+            aside = np.cross(unit[grazing], _SKEW)
+            aside /= np.linalg.norm(aside, axis=1, keepdims=True)
+            face_a, distance_a, _ = self._cast(origins[grazing] + GRAZE_NUDGE * aside, unit[grazing])
+            face_b, distance_b, _ = self._cast(origins[grazing] - GRAZE_NUDGE * aside, unit[grazing])
+            take_b = distance_b > distance_a
+            face[grazing] = np.where(take_b, face_b, face_a)
+            distance[grazing] = np.where(take_b, distance_b, distance_a)
+        return Hits(face, distance)
+
+    def _cast(self, origins: np.ndarray, unit: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """One intersector call: (face, distance, grazing) per ray; ``unit`` is normalised."""
+        n = len(origins)
+        face = np.asarray(self.intersector.intersects_first(origins, unit), dtype=np.int64).reshape(n)
+        self.rays_cast += n
+        distance = np.full(n, np.inf)
+        grazing = np.zeros(n, dtype=bool)
+        hit = face >= 0
+        if np.any(hit):
+            f, o, d = face[hit], origins[hit], unit[hit]
+            normal = self.face_normals[f]
+            denominator = np.einsum("ij,ij->i", d, normal)
+            along_plane = np.einsum("ij,ij->i", self._plane_points[f] - o, normal)
+            flat = np.abs(denominator) < 1e-9
+            t = np.where(flat, 0.0, along_plane / np.where(flat, 1.0, denominator))
+            # A ray in a triangle's plane (or a degenerate triangle) has no plane
+            # crossing: take the distance to the triangle's centroid instead.
+            t = np.where(flat, np.einsum("ij,ij->i", self._centroids[f] - o, d), t)
+            distance[hit] = np.maximum(t, 0.0)
+            grazing[hit] = flat
+        return face, distance, grazing
+
+    def segments_clear(self, starts: np.ndarray, ends: np.ndarray) -> np.ndarray:
+        """(n,) bool: the segments ``starts[i] -> ends[i]`` cross no triangle.
+
+        A segment of zero length is clear.
+        """
+        starts = np.asarray(starts, dtype=np.float64).reshape(-1, 3)
+        ends = np.asarray(ends, dtype=np.float64).reshape(-1, 3)
+        vectors = ends - starts
+        lengths = np.linalg.norm(vectors, axis=1)
+        clear = np.ones(len(starts), dtype=bool)
+        moving = lengths > 1e-9
+        if np.any(moving):
+            hits = self.first_hits(starts[moving], vectors[moving])
+            clear[moving] = hits.distance >= lengths[moving]
+        return clear
+
+    def walkable_faces(self, faces: np.ndarray, max_slope_deg: float) -> np.ndarray:
+        """(n,) bool: ``faces`` (indices, -1 = none) are at most ``max_slope_deg`` from horizontal."""
+        faces = np.asarray(faces, dtype=np.int64)
+        ok = faces >= 0
+        ok[ok] = self.face_normals[faces[ok], 1] >= math.cos(math.radians(max_slope_deg)) - 1e-9
+        return ok
+
+
+def all_hits_down(mesh: trimesh.Trimesh, xz: np.ndarray, top: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Every point where vertical lines through ``xz`` cross ``mesh``, from ``top`` down.
+
+    One batched multiple-hit query (Embree when available).
+
+    Returns:
+        ``(column, point, face)``: (m,) index into ``xz``, (m, 3) crossing
+        points, (m,) triangle indices. Order: by column, then from the top down.
+    """
+    xz = np.asarray(xz, dtype=np.float64).reshape(-1, 2)
+    if len(xz) == 0 or len(mesh.faces) == 0:
+        return np.zeros(0, dtype=np.int64), np.zeros((0, 3)), np.zeros(0, dtype=np.int64)
+    intersector, _ = _make_intersector(mesh)
+    origins = np.column_stack([xz[:, 0], np.full(len(xz), top), xz[:, 1]])
+    directions = np.broadcast_to(-UP, origins.shape)
+    locations, column, face = intersector.intersects_location(origins, directions, multiple_hits=True)
+    column = np.asarray(column, dtype=np.int64)
+    locations = np.asarray(locations, dtype=np.float64).reshape(-1, 3)
+    face = np.asarray(face, dtype=np.int64)
+    order = np.lexsort((-locations[:, 1], column))
+    return column[order], locations[order], face[order]
+
+
+@dataclass(frozen=True)
+class AgentShape:
+    """The agent settings the walk tests use (metres, degrees)."""
+
+    radius: float
+    height: float
+    max_climb: float
+    max_slope_deg: float
+
+    @classmethod
+    def from_config(cls, agent: Any) -> AgentShape:
+        """From a :class:`g2s_core.config.AgentConfig` (or anything with the same attributes)."""
+        return cls(float(agent.radius), float(agent.height), float(agent.max_climb), float(agent.max_slope))
+
+    @property
+    def tan_slope(self) -> float:
+        return math.tan(math.radians(self.max_slope_deg))
+
+    def max_rise(self, horizontal: np.ndarray | float) -> np.ndarray | float:
+        """Largest height change over ``horizontal`` metres: a step (max climb) or the steepest slope."""
+        return np.maximum(self.max_climb, self.tan_slope * np.asarray(horizontal))
+
+
+def clear_above(caster: RayCaster, origins: np.ndarray, needed: np.ndarray | float) -> np.ndarray:
+    """(n,) bool: nothing lies within ``needed`` metres straight above each origin (one upward ray each)."""
+    origins = np.asarray(origins, dtype=np.float64).reshape(-1, 3)
+    hits = caster.first_hits(origins, UP)
+    return hits.distance >= np.asarray(needed, dtype=np.float64) - HEIGHT_TOLERANCE
+
+
+def head_room(caster: RayCaster, ground: np.ndarray, agent: AgentShape) -> np.ndarray:
+    """(n,) bool: nothing lies within the agent's height above the ground points (one upward ray each)."""
+    ground = np.asarray(ground, dtype=np.float64).reshape(-1, 3)
+    return clear_above(caster, ground + EPSILON * UP, agent.height - EPSILON)
+
+
+def walk_segments(
+    caster: RayCaster,
+    starts: np.ndarray,
+    ends: np.ndarray,
+    agent: AgentShape,
+    probe_step: float,
+    margin: float = GROUND_MARGIN,
+) -> tuple[np.ndarray, np.ndarray]:
+    """Whether the agent can walk straight from ``starts[i]`` to ``ends[i]`` (ground points).
+
+    A segment is walkable when
+
+    * the segment lifted by half the agent height crosses no triangle;
+    * under evenly spaced points along it (at most ``probe_step`` apart
+      horizontally, both ends included) a short downward ray from the lifted
+      segment finds ground no more than ``max_climb + margin`` below the
+      straight line, on a triangle no steeper than the agent's max slope,
+      and an upward ray from the same point finds the agent's height of
+      head room above that ground;
+    * between neighbouring points the ground rises or falls by no more than
+      the agent's max climb (a step) or its max slope times their distance.
+
+    Returns:
+        ``(ok, rise)``: (n,) bool, and (n,) float, the largest height change
+        between neighbouring points of each segment (metres; ``inf`` where
+        ground is missing).
+    """
+    starts = np.asarray(starts, dtype=np.float64).reshape(-1, 3)
+    ends = np.asarray(ends, dtype=np.float64).reshape(-1, 3)
+    n = len(starts)
+    if n == 0:
+        return np.zeros(0, dtype=bool), np.zeros(0)
+    lift = 0.5 * agent.height
+    ok = caster.segments_clear(starts + lift * UP, ends + lift * UP)
+
+    # Probe points: k_i intervals per segment, k_i + 1 points (ends included).
+    delta = ends - starts
+    horizontal = np.hypot(delta[:, 0], delta[:, 2])
+    intervals = np.maximum(1, np.ceil(horizontal / probe_step - 1e-9).astype(np.int64))
+    counts = intervals + 1
+    segment = np.repeat(np.arange(n), counts)
+    first = np.concatenate([[0], np.cumsum(counts)[:-1]])
+    step_index = np.arange(len(segment)) - np.repeat(first, counts)
+    t = step_index / np.repeat(intervals, counts)
+    line = starts[segment] + t[:, None] * delta[segment]
+    reach = lift + agent.max_climb + margin
+    down = caster.first_hits(line + lift * UP, -UP)
+    good = (down.distance <= reach) & caster.walkable_faces(down.face, agent.max_slope_deg)
+    ground_y = np.where(good, line[:, 1] + lift - np.where(good, down.distance, 0.0), line[:, 1])
+    # Head room from the same lifted point (the downward ray found nothing between
+    # it and the ground), so both rays describe the same vertical line.
+    above = agent.height - (line[:, 1] + lift - ground_y)
+    good[good] = clear_above(caster, line[good] + lift * UP, above[good])
+    has_ground = np.logical_and.reduceat(good, first)
+    ok &= has_ground
+
+    # Height change between neighbouring probe points of the same segment.
+    same = segment[1:] == segment[:-1]
+    dy = np.where(same, np.abs(np.diff(ground_y)), 0.0)
+    dh = np.repeat(horizontal / intervals, counts)[1:]
+    steep = np.concatenate([dy > agent.max_rise(dh) + 1e-6, [False]])
+    ok &= ~np.logical_or.reduceat(steep, first)
+    rise = np.maximum.reduceat(np.concatenate([dy, [0.0]]), first)
+    rise[~has_ground] = np.inf
+    return ok, rise

@@ -1,0 +1,382 @@
+"""Sampling: surface graph from points sampled on the walkable surface, joined where the agent can walk.
+
+The paper's "initial graph from sampling" (Sec. 3.1.1), for levels without a
+navigation mesh or when a finer graph than one node per navmesh polygon is
+wanted. No Recast is involved: ``context.navmesh`` stays ``None``.
+
+1. *Walkable surface*: the triangles no steeper than the agent's max slope,
+   cleaned with pymeshlab (close vertices merged, duplicate and zero-area
+   faces dropped).
+2. *Candidates*: ``method: poisson`` draws dense random points on that
+   surface (``candidate_density`` per spacing², fixed seed); ``method: grid``
+   drops a regular XZ grid onto it (every floor a vertical line crosses gives
+   a point, so several floors give several samples per grid cell).
+3. *Agent checks*, batched upward/horizontal/downward rays per candidate:
+   head room (nothing within the agent height above it); clearance (no wall
+   within ``clearance`` metres, horizontal rays at knee, waist and head
+   height); no ledge within ``clearance`` (ground found at that distance in 8
+   directions, within a step or the max slope, with head room). This erodes
+   the walkable surface by ``clearance`` as Recast erodes it by the radius.
+4. *Samples*: for ``poisson``, a maximal Poisson-disk subset of the
+   surviving candidates (no two closer than ``spacing``, every candidate
+   within ``spacing`` of a sample), chosen by seeded dart throwing
+   (:func:`poisson_disk_subset`); for ``grid``, every surviving grid point.
+   pymeshlab's own Poisson-disk filter is not used for this step: it draws
+   from a process-wide random generator that cannot be seeded from Python,
+   so the same input gives a different sample on every call.
+5. *Edges*: pairs closer than ``connect_radius`` (scipy cKDTree) that pass
+   :func:`g2s_plugins._raycasting.walk_segments` (the segment lifted by half
+   the agent height hits nothing; the ground under evenly spaced points is
+   walkable, has head room and changes height by at most a step or the max
+   slope). Weight = length + ``slope_penalty`` × |height change|.
+
+Nodes (ids 0..n-1, ordered by x, then z, then y): ``pos`` (on the surface),
+``normal`` (of the triangle under the sample), ``area`` (the walkable surface
+the sample stands for: the candidates nearest to it for ``poisson``,
+spacing² / cos(slope) for ``grid``), ``on_navmesh=True`` ("on the walkable
+surface"), ``polygon=-1``. Connected parts whose area is below
+``min_region_area`` are dropped. ``graph.graph["sampling_stats"]`` holds
+the resolved settings and counts (candidates, samples, rays, ...). The same mesh and parameters always give the same graph.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from typing import Literal
+
+import networkx as nx
+import numpy as np
+import trimesh
+from pydantic import Field
+from scipy.spatial import cKDTree
+
+from g2s_core.errors import G2SError
+from g2s_core.plugin import PluginParams, hookimpl
+from g2s_plugins._raycasting import (
+    COMPASS,
+    EPSILON,
+    GROUND_MARGIN,
+    UP,
+    AgentShape,
+    RayCaster,
+    all_hits_down,
+    clear_above,
+    head_room,
+    walk_segments,
+)
+
+NAME = "sampling"
+
+MAX_CANDIDATES = 5_000_000
+"""More candidate points than this means the spacing is far too small for the mesh."""
+
+MAX_EDGE_BATCH = 200_000
+"""Candidate edges tested per batch of rays (bounds memory on large levels)."""
+
+
+class Params(PluginParams):
+    """Sampling method and density, edge rules and clean-up."""
+
+    method: Literal["poisson", "grid"] = Field(
+        "poisson", description="poisson: Poisson-disk samples; grid: regular XZ grid dropped on the surface"
+    )
+    spacing: float | None = Field(
+        None, gt=0, le=100, description="distance between samples, m; default 2 x agent radius"
+    )
+    connect_radius: float | None = Field(
+        None, gt=0, le=1000, description="join samples closer than this if walkable, m; default 2 x spacing"
+    )
+    clearance: float | None = Field(
+        None, ge=0, le=100, description="keep samples this far from walls and ledges, m; default agent radius; 0: off"
+    )
+    probe_step: float | None = Field(
+        None, gt=0, le=100, description="ground probes along an edge at most this far apart, m; default min(spacing, radius) / 2"
+    )
+    slope_penalty: float = Field(
+        0.0, ge=0, description="edge weight added per metre of height change (0: weight = length)"
+    )
+    min_region_area: float | None = Field(
+        None, ge=0, description="drop connected parts standing for less surface than this, m²; default 16 x radius² (Recast's)"
+    )
+    candidate_density: float = Field(
+        8.0, ge=2, le=100, description="poisson: candidate points per spacing² the Poisson-disk subset is chosen from"
+    )
+    seed: int = Field(0, ge=0, description="poisson: seed of the candidate points and of the Poisson-disk pick")
+
+
+def _resolve(params: Params, agent: AgentShape) -> tuple[float, float, float, float]:
+    """``(spacing, connect_radius, clearance, probe_step)`` with the defaults filled in."""
+    spacing = params.spacing if params.spacing is not None else 2.0 * agent.radius
+    connect = params.connect_radius if params.connect_radius is not None else 2.0 * spacing
+    clearance = params.clearance if params.clearance is not None else agent.radius
+    probe = params.probe_step if params.probe_step is not None else 0.5 * min(spacing, agent.radius)
+    return spacing, connect, clearance, probe
+
+
+# --- walkable surface -----------------------------------------------------------------
+
+
+def walkable_surface(mesh: trimesh.Trimesh, agent: AgentShape) -> trimesh.Trimesh:
+    """The triangles of ``mesh`` no steeper than the agent's max slope, cleaned with pymeshlab.
+
+    Close vertices (1e-4 m) are merged, duplicate and zero-area faces and
+    unreferenced vertices removed. Small pieces are *not* dropped here: a
+    floor made of separate small tiles is one walkable area; islands too
+    small for the agent go later (agent checks, ``min_region_area``).
+    """
+    import pymeshlab  # slow to import; only this builder needs it
+
+    cos_slope = math.cos(math.radians(agent.max_slope_deg))
+    keep = (np.asarray(mesh.face_normals)[:, 1] >= cos_slope - 1e-9) & (np.asarray(mesh.area_faces) > 1e-12)
+    if not np.any(keep):
+        return trimesh.Trimesh(vertices=np.zeros((0, 3)), faces=np.zeros((0, 3), dtype=np.int64), process=False)
+    faces = np.asarray(mesh.faces)[keep]
+    used, inverse = np.unique(faces.ravel(), return_inverse=True)
+    meshset = pymeshlab.MeshSet()
+    meshset.add_mesh(
+        pymeshlab.Mesh(
+            vertex_matrix=np.asarray(mesh.vertices, dtype=np.float64)[used],
+            face_matrix=inverse.reshape(-1, 3).astype(np.int32),
+        )
+    )
+    meshset.meshing_merge_close_vertices(threshold=pymeshlab.PureValue(1e-4))
+    meshset.meshing_remove_duplicate_faces()
+    meshset.meshing_remove_null_faces()
+    meshset.meshing_remove_unreferenced_vertices()
+    cleaned = meshset.current_mesh()
+    surface = trimesh.Trimesh(
+        vertices=cleaned.vertex_matrix().astype(np.float64),
+        faces=cleaned.face_matrix().astype(np.int64),
+        process=False,
+    )
+    # pymeshlab keeps the winding, so the normals still face up.
+    return surface
+
+
+# --- candidates and the agent checks ----------------------------------------------------
+
+
+def agent_fits(
+    caster: RayCaster, points: np.ndarray, agent: AgentShape, clearance: float
+) -> np.ndarray:
+    """(n,) bool: the agent can stand at each ground point.
+
+    Head room above the point; if ``clearance > 0``, no steep geometry within
+    ``clearance`` horizontally at knee (max climb + margin), waist (half
+    height) and head (height - margin) levels, and in 8 directions at
+    ``clearance`` metres walkable ground within a step (or the max slope)
+    of the point, with head room of its own.
+    """
+    points = np.asarray(points, dtype=np.float64).reshape(-1, 3)
+    ok = head_room(caster, points, agent)
+    if clearance <= 0 or not np.any(ok):
+        return ok
+    idx = np.nonzero(ok)[0]
+    base = points[idx]
+    m, k = len(base), len(COMPASS)
+
+    # Walls and obstacles: horizontal rays; a walkable (ramp) face hit is ground, not a wall.
+    levels = sorted(
+        {
+            round(min(agent.max_climb + GROUND_MARGIN, agent.height - EPSILON), 6),
+            round(0.5 * agent.height, 6),
+            round(agent.height - 5 * EPSILON, 6),
+        }
+    )
+    origins = (base[:, None, None, :] + np.asarray(levels)[None, :, None, None] * UP).repeat(k, axis=2)
+    directions = np.broadcast_to(COMPASS[None, None, :, :], origins.shape)
+    hits = caster.first_hits(origins.reshape(-1, 3), directions.reshape(-1, 3))
+    wall = (hits.distance < clearance) & ~caster.walkable_faces(hits.face, agent.max_slope_deg)
+    fits = ~wall.reshape(m, -1).any(axis=1)
+
+    # Ledges: ground in every direction at the clearance distance.
+    reach = float(agent.max_rise(clearance)) + GROUND_MARGIN
+    probe = (base[:, None, :] + clearance * COMPASS[None, :, :]).reshape(-1, 3)
+    down = caster.first_hits(probe + reach * UP, -UP)
+    ground = (down.distance <= 2.0 * reach) & caster.walkable_faces(down.face, agent.max_slope_deg)
+    # Head room over the landing point, from the probe's own origin (see walk_segments).
+    above = agent.height - np.where(ground, down.distance, 0.0)
+    ground[ground] = clear_above(caster, probe[ground] + reach * UP, above[ground])
+    fits &= ground.reshape(m, k).all(axis=1)
+    ok[idx] = fits
+    return ok
+
+
+def _poisson_candidates(surface: trimesh.Trimesh, spacing: float, params: Params) -> tuple[np.ndarray, np.ndarray, float]:
+    """Dense random points on ``surface``: (points, face index, area each point stands for)."""
+    area = float(surface.area)
+    count = int(math.ceil(area * params.candidate_density / spacing**2))
+    if count > MAX_CANDIDATES:
+        raise G2SError(
+            f"sampling: spacing {spacing:g} m is too small for {area:.0f} m² of walkable surface "
+            f"({count} candidate points); use a larger spacing or a smaller candidate_density"
+        )
+    points, faces = trimesh.sample.sample_surface(surface, max(count, 1), seed=params.seed)
+    return np.asarray(points, dtype=np.float64), np.asarray(faces, dtype=np.int64), area / max(count, 1)
+
+
+def _grid_candidates(surface: trimesh.Trimesh, spacing: float) -> tuple[np.ndarray, np.ndarray]:
+    """Points where a regular XZ grid of vertical lines crosses ``surface``: (points, face index)."""
+    lo, hi = np.asarray(surface.bounds)
+    nx_, nz_ = (int(math.floor((hi[i] - lo[i]) / spacing)) + 1 for i in (0, 2))
+    if nx_ * nz_ > MAX_CANDIDATES:
+        raise G2SError(f"sampling: spacing {spacing:g} m gives a {nx_} x {nz_} grid; use a larger spacing")
+    # Centre the grid on the surface's footprint.
+    x0 = lo[0] + 0.5 * ((hi[0] - lo[0]) - (nx_ - 1) * spacing)
+    z0 = lo[2] + 0.5 * ((hi[2] - lo[2]) - (nz_ - 1) * spacing)
+    gx, gz = np.meshgrid(x0 + spacing * np.arange(nx_), z0 + spacing * np.arange(nz_), indexing="ij")
+    xz = np.column_stack([gx.ravel(), gz.ravel()])
+    column, points, faces = all_hits_down(surface, xz, hi[1] + 1.0)
+    if len(points) == 0:
+        return points, faces
+    # Crossings of one line closer than a centimetre (shared triangle edges) are one point.
+    duplicate = np.zeros(len(points), dtype=bool)
+    duplicate[1:] = (column[1:] == column[:-1]) & (np.abs(np.diff(points[:, 1])) < EPSILON)
+    return points[~duplicate], faces[~duplicate]
+
+
+def poisson_disk_subset(points: np.ndarray, radius: float, seed: int = 0) -> np.ndarray:
+    """Indices (ascending) of a maximal Poisson-disk subset of ``points``.
+
+    Dart throwing over the given points: they are visited in a random order
+    fixed by ``seed``; a point is taken unless a taken point lies closer than
+    ``radius``. No two taken points are closer than ``radius`` and every
+    point lies within ``radius`` of a taken one. Neighbour lists come from
+    one scipy cKDTree query; cost O(n k) for k points per disk.
+    """
+    points = np.asarray(points, dtype=np.float64).reshape(-1, 3)
+    n = len(points)
+    if n <= 1:
+        return np.arange(n)
+    pairs = cKDTree(points).query_pairs(radius, output_type="ndarray").astype(np.int64).reshape(-1, 2)
+    heads = np.concatenate([pairs[:, 0], pairs[:, 1]])
+    tails = np.concatenate([pairs[:, 1], pairs[:, 0]])
+    order = np.argsort(heads, kind="stable")
+    neighbours = tails[order]
+    start = np.concatenate([[0], np.cumsum(np.bincount(heads, minlength=n))])
+    free = np.ones(n, dtype=bool)
+    taken: list[int] = []
+    for i in np.random.default_rng(seed).permutation(n).tolist():
+        if free[i]:
+            taken.append(i)
+            free[neighbours[start[i] : start[i + 1]]] = False
+    return np.sort(np.asarray(taken, dtype=np.int64))
+
+
+# --- the hook ---------------------------------------------------------------------------
+
+
+def build_sampled_graph(
+    mesh: trimesh.Trimesh, params: Params, agent: AgentShape, timings: dict[str, float] | None = None
+) -> nx.Graph:
+    """The sampled surface graph of ``mesh`` (see the module docstring).
+
+    ``timings``, when given, receives the seconds each step took (kept out of
+    the graph so that its JSON output stays the same from run to run).
+    """
+    spacing, connect, clearance, probe_step = _resolve(params, agent)
+    timings = timings if timings is not None else {}
+    clock = time.perf_counter()
+
+    def lap(name: str) -> None:
+        nonlocal clock
+        now = time.perf_counter()
+        timings[name] = round(now - clock, 6)
+        clock = now
+
+    caster = RayCaster(mesh)
+    surface = walkable_surface(mesh, agent)
+    lap("surface")
+    stats: dict[str, object] = {
+        "method": params.method,
+        "spacing": spacing,
+        "connect_radius": connect,
+        "clearance": clearance,
+        "ray_backend": caster.backend,
+        "surface_faces": int(len(surface.faces)),
+        "surface_area": float(surface.area) if len(surface.faces) else 0.0,
+    }
+    graph = nx.Graph()
+    graph.graph["sampling_stats"] = stats
+    if len(surface.faces) == 0:
+        stats.update(candidates=0, samples=0)
+        return graph
+
+    if params.method == "poisson":
+        candidates, faces, candidate_area = _poisson_candidates(surface, spacing, params)
+    else:
+        candidates, faces = _grid_candidates(surface, spacing)
+        candidate_area = 0.0
+    lap("candidates")
+    fits = agent_fits(caster, candidates, agent, clearance)
+    lap("agent_checks")
+    stats["candidates"] = int(len(candidates))
+    stats["candidates_fit"] = int(fits.sum())
+    kept, kept_faces = candidates[fits], faces[fits]
+    normals = np.asarray(surface.face_normals)[kept_faces]
+    if params.method == "poisson":
+        chosen = poisson_disk_subset(kept, spacing, params.seed)
+        samples, sample_normals = kept[chosen], normals[chosen]
+        owner = cKDTree(samples).query(kept)[1] if len(samples) else np.zeros(0, dtype=np.int64)
+        areas = np.bincount(owner, minlength=len(samples)) * candidate_area
+    else:
+        samples, sample_normals = kept, normals
+        areas = spacing**2 / np.maximum(sample_normals[:, 1], 1e-6)
+    lap("samples")
+
+    # Deterministic node order: by x, then z, then y.
+    order = np.lexsort((samples[:, 1], samples[:, 2], samples[:, 0]))
+    samples, sample_normals, areas = samples[order], sample_normals[order], areas[order]
+    sample_normals = sample_normals / np.linalg.norm(sample_normals, axis=1, keepdims=True)
+
+    pairs = cKDTree(samples).query_pairs(connect, output_type="ndarray") if len(samples) > 1 else np.zeros((0, 2), int)
+    pairs = np.sort(np.asarray(pairs, dtype=np.int64).reshape(-1, 2), axis=1)
+    pairs = pairs[np.lexsort((pairs[:, 1], pairs[:, 0]))]
+    keep_edge = np.zeros(len(pairs), dtype=bool)
+    for begin in range(0, len(pairs), MAX_EDGE_BATCH):
+        chunk = pairs[begin : begin + MAX_EDGE_BATCH]
+        keep_edge[begin : begin + len(chunk)] = walk_segments(
+            caster, samples[chunk[:, 0]], samples[chunk[:, 1]], agent, probe_step
+        )[0]
+    edges = pairs[keep_edge]
+    lap("edges")
+    stats["candidate_edges"] = int(len(pairs))
+
+    lengths = np.linalg.norm(samples[edges[:, 1]] - samples[edges[:, 0]], axis=1)
+    weights = lengths + params.slope_penalty * np.abs(samples[edges[:, 1], 1] - samples[edges[:, 0], 1])
+    pos = [tuple(p) for p in samples.tolist()]
+    nrm = [tuple(v) for v in sample_normals.tolist()]
+    area_list = areas.astype(np.float64).tolist()
+    graph.add_nodes_from(
+        (i, {"pos": pos[i], "normal": nrm[i], "area": area_list[i], "on_navmesh": True, "polygon": -1})
+        for i in range(len(pos))
+    )
+    graph.add_edges_from((a, b, {"weight": w}) for (a, b), w in zip(edges.tolist(), weights.tolist()))
+
+    dropped = 0
+    min_area = params.min_region_area if params.min_region_area is not None else 16.0 * agent.radius**2
+    if min_area > 0:
+        for component in list(nx.connected_components(graph)):
+            if sum(graph.nodes[n]["area"] for n in component) < min_area:
+                graph.remove_nodes_from(component)
+                dropped += 1
+        if dropped:
+            graph = nx.convert_node_labels_to_integers(graph, ordering="sorted")
+    lap("graph")
+    stats.update(
+        samples=int(len(samples)),
+        nodes=graph.number_of_nodes(),
+        edges=graph.number_of_edges(),
+        regions_dropped=dropped,
+        rays=caster.rays_cast,
+    )
+    graph.graph["sampling_stats"] = stats
+    return graph
+
+
+@hookimpl
+def g2s_build_graph(mesh, params, context):
+    """Sample the walkable surface of ``mesh`` for ``context.agent`` and join the samples the agent can walk between."""
+    params = params if params is not None else Params()
+    return build_sampled_graph(mesh, params, AgentShape.from_config(context.agent))

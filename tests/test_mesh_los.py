@@ -1,0 +1,186 @@
+"""SimplifyPredicate ``mesh_los``: line of sight over the level mesh, and Algorithm 5's rules."""
+
+from __future__ import annotations
+
+import math
+
+import networkx as nx
+import numpy as np
+import pluggy
+import pytest
+import trimesh
+from pydantic import ValidationError
+
+from g2s_core import hookspecs
+from g2s_core.config import AgentConfig
+from g2s_core.model import RunContext
+from g2s_core.plugin import PROJECT, PluginParams
+from g2s_core.simplify import simplify_forest
+from g2s_plugins.predicates import mesh_los
+
+AGENT = AgentConfig(radius=0.5, height=2.0, max_climb=0.4, max_slope=45.0)
+UP = (0.0, 1.0, 0.0)
+
+
+def box(lo, hi) -> trimesh.Trimesh:
+    lo, hi = np.asarray(lo, dtype=float), np.asarray(hi, dtype=float)
+    return trimesh.creation.box(extents=hi - lo, transform=trimesh.transformations.translation_matrix((lo + hi) / 2))
+
+
+def slab(x0, x1, z0, z1, top=0.0) -> trimesh.Trimesh:
+    return box((x0, top - 0.2, z0), (x1, top, z1))
+
+
+def level(*parts) -> trimesh.Trimesh:
+    return trimesh.util.concatenate(list(parts))
+
+
+def predicate(mesh, **params):
+    context = RunContext(mesh=mesh, agent=AGENT, centre=np.zeros(3))
+    return mesh_los.g2s_simplify_predicate(params=mesh_los.Params(**params), context=context)
+
+
+def chain(*specs) -> nx.DiGraph:
+    """A rooted chain 0 -> 1 -> 2 ...; each spec is (pos, normal, on_navmesh)."""
+    tree = nx.DiGraph()
+    for i, (pos, normal, on_surface) in enumerate(specs):
+        tree.add_node(i, pos=tuple(map(float, pos)), normal=tuple(normal), on_navmesh=on_surface, area=1.0, polygon=-1)
+        if i:
+            tree.add_edge(i - 1, i, weight=math.dist(specs[i - 1][0], pos))
+    tree.graph["roots"] = [0]
+    for depth, node in enumerate(sorted(tree)):
+        tree.nodes[node].update(depth=depth, root=0)
+    return tree
+
+
+def tilted(degrees: float) -> tuple[float, float, float]:
+    a = math.radians(degrees)
+    return (math.sin(a), math.cos(a), 0.0)
+
+
+FLOOR = slab(-10, 10, -10, 10)
+
+
+def test_plugin_contract():
+    assert mesh_los.NAME == "mesh_los"
+    assert issubclass(mesh_los.Params, PluginParams)
+    manager = pluggy.PluginManager(PROJECT)
+    manager.add_hookspecs(hookspecs)
+    manager.register(mesh_los)
+    assert [c.name for c in manager.get_hookcallers(mesh_los) if c.name.startswith("g2s_")] == ["g2s_simplify_predicate"]
+    for name, field in mesh_los.Params.model_fields.items():
+        assert field.description, name
+    with pytest.raises(ValidationError):
+        mesh_los.Params(normal_tolerance_deg=-1)
+
+
+def test_default_tolerance_is_surface_los_one():
+    surface_los = pytest.importorskip("g2s_plugins.predicates.surface_los")
+    ours = mesh_los.Params.model_fields["normal_tolerance_deg"].default
+    assert ours == surface_los.Params.model_fields["normal_tolerance_deg"].default == 10.0
+
+
+def test_clear_across_open_floor():
+    p = predicate(FLOOR)
+    tree = chain(((-8, 0, 0), UP, True), ((0, 0, 3), UP, True), ((8, 0, 0), UP, True))
+    assert p(tree, 0, 1, 2) is True
+
+
+def test_blocked_by_a_wall():
+    wall = box((-0.1, -0.2, -3.0), (0.1, 3.0, 3.0))
+    p = predicate(level(FLOOR, wall))
+    blocked = chain(((-8, 0, 0), UP, True), ((0, 0, 5), UP, True), ((8, 0, 0), UP, True))
+    assert p(blocked, 0, 1, 2) is False
+    # Past the wall's end the line is clear again.
+    around = chain(((-8, 0, 5), UP, True), ((0, 0, 6), UP, True), ((8, 0, 5), UP, True))
+    assert p(around, 0, 1, 2) is True
+
+
+def test_blocked_by_an_obstacle_lower_than_half_the_agent():
+    # 0.8 m: the lifted segment (1 m up) passes over it, the ground probes do not.
+    crate = box((-0.5, 0.0, -1.0), (0.5, 0.8, 1.0))
+    p = predicate(level(FLOOR, crate))
+    tree = chain(((-8, 0, 0), UP, True), ((0, 0, 4), UP, True), ((8, 0, 0), UP, True))
+    assert p(tree, 0, 1, 2) is False
+    # A 0.3 m step is climbed (max climb 0.4).
+    step = box((-0.5, 0.0, -1.0), (0.5, 0.3, 1.0))
+    assert predicate(level(FLOOR, step))(tree, 0, 1, 2) is True
+
+
+def test_blocked_over_a_hole_in_the_floor():
+    holed = level(slab(-10, -1, -10, 10), slab(1, 10, -10, 10))
+    p = predicate(holed)
+    across = chain(((-8, 0, 0), UP, True), ((0, 0, 12), UP, True), ((8, 0, 0), UP, True))
+    assert p(across, 0, 1, 2) is False
+    # A hole with a floor 3 m below is still a hole (deeper than a step).
+    below = slab(-10, 10, -10, 10, top=-3.0)
+    assert predicate(level(holed, below))(across, 0, 1, 2) is False
+    # Beside the hole (same side) the line is clear.
+    beside = chain(((-8, 0, 0), UP, True), ((-5, 0, 3), UP, True), ((-2, 0, 0), UP, True))
+    assert p(beside, 0, 1, 2) is True
+
+
+def test_blocked_under_a_low_ceiling():
+    ceiling = box((-1.0, 1.5, -10.0), (1.0, 1.7, 10.0))
+    tree = chain(((-8, 0, 0), UP, True), ((0, 0, 4), UP, True), ((8, 0, 0), UP, True))
+    assert predicate(level(FLOOR, ceiling))(tree, 0, 1, 2) is False
+    high = box((-1.0, 2.5, -10.0), (1.0, 2.7, 10.0))
+    assert predicate(level(FLOOR, high))(tree, 0, 1, 2) is True
+
+
+def test_normal_rule():
+    p = predicate(FLOOR)
+    bent = chain(((-8, 0, 0), UP, True), ((0, 0, 0), tilted(20.0), True), ((8, 0, 0), UP, True))
+    assert p(bent, 0, 1, 2) is False
+    slight = chain(((-8, 0, 0), UP, True), ((0, 0, 0), tilted(5.0), True), ((8, 0, 0), UP, True))
+    assert p(slight, 0, 1, 2) is True
+    # The tolerance is a parameter; a zero-length normal counts as exceeding it.
+    assert predicate(FLOOR, normal_tolerance_deg=30.0)(bent, 0, 1, 2) is True
+    flat = chain(((-8, 0, 0), UP, True), ((0, 0, 0), (0.0, 0.0, 0.0), True), ((8, 0, 0), UP, True))
+    assert p(flat, 0, 1, 2) is False
+
+
+def test_off_surface_leaf_rule():
+    p = predicate(FLOOR)
+    off_leaf = chain(((-8, 0, 0), UP, True), ((0, 0, 0), UP, True), ((8, 0, 0), UP, False))
+    assert p(off_leaf, 0, 1, 2) is False
+    # Not a leaf: the rule does not apply and the (clear) line decides.
+    not_leaf = chain(((-8, 0, 0), UP, True), ((0, 0, 0), UP, True), ((8, 0, 0), UP, False), ((9, 0, 0), UP, True))
+    assert p(not_leaf, 0, 1, 2) is True
+
+
+def test_ramp_between_floors():
+    # A 20 degree ramp from y = 0 (x = 0) to y = 2 (x = run), floors on both sides.
+    run = 2.0 / math.tan(math.radians(20.0))
+    ramp = trimesh.Trimesh(
+        vertices=[[0, 0, -2], [run, 2, -2], [run, 2, 2], [0, 0, 2]], faces=[[0, 2, 1], [0, 3, 2]], process=False
+    )
+    mesh = level(slab(-6, 0, -2, 2), ramp, slab(run, run + 6, -2, 2, top=2.0))
+    ramp_normal = tuple(ramp.face_normals[0])
+    p = predicate(mesh)
+    # Along the ramp: clear.
+    up_ramp = chain(((0.5, 0.5 * math.tan(math.radians(20)), 0), ramp_normal, True), ((run / 2, 1.0, 0.5), ramp_normal, True), ((run - 0.5, 2 - 0.5 * math.tan(math.radians(20)), 0), ramp_normal, True))
+    assert p(up_ramp, 0, 1, 2) is True
+    # From the lower floor straight to the upper floor: the ground dips below the
+    # line by more than a step at the foot of the ramp.
+    across = chain(((-5, 0, 0), UP, True), ((0, 0, 0), UP, True), ((run + 5, 2, 0), UP, True))
+    assert p(across, 0, 1, 2) is False
+
+
+def test_simplifies_a_chain_only_where_the_line_is_clear():
+    wall = box((-0.1, -0.2, -10.0), (0.1, 3.0, 2.0))
+    p = predicate(level(FLOOR, wall))
+    # A path from (-8, 0) around the wall's end at z = 2 to (8, 0), with extra nodes.
+    points = [(-8, 0), (-6, 1), (-4, 2), (-2, 3), (0, 4), (2, 3), (4, 2), (6, 1), (8, 0)]
+    tree = chain(*[((x, 0.0, z), UP, True) for x, z in points])
+    simplified = simplify_forest(tree, p)
+    path = nx.shortest_path(simplified, 0, len(points) - 1)
+    assert len(path) < len(points)
+    for a, b in zip(path, path[1:]):  # no remaining edge crosses the wall
+        pa, pb = simplified.nodes[a]["pos"], simplified.nodes[b]["pos"]
+        if (pa[0] + 0.1) * (pb[0] - 0.1) < 0 or (pa[0] - 0.1) * (pb[0] + 0.1) < 0:
+            t = -pa[0] / (pb[0] - pa[0])
+            assert pa[2] + t * (pb[2] - pa[2]) > 2.0
+    # Without the wall the whole chain collapses to one edge.
+    open_floor = simplify_forest(tree, predicate(FLOOR))
+    assert sorted(open_floor.edges) == [(0, len(points) - 1)]

@@ -1,0 +1,387 @@
+"""GraphBuilder ``sampling``: walkable surface, samples, edges; and the two routes compared end to end."""
+
+from __future__ import annotations
+
+import importlib
+import math
+import types
+from pathlib import Path
+
+import networkx as nx
+import numpy as np
+import pluggy
+import pytest
+import trimesh
+from pydantic import ValidationError
+from scipy.spatial import cKDTree
+
+from g2s_core import hookspecs, pipeline, samples
+from g2s_core.config import AgentConfig, load_config, load_raw_config, parse_config
+from g2s_core.mesh import mesh_sha256
+from g2s_core.model import RunContext
+from g2s_core.plugin import PROJECT, PluginParams
+from g2s_core.registry import Registry
+from g2s_plugins._raycasting import AgentShape, RayCaster, walk_segments
+from g2s_plugins.graph_builders import sampling
+
+AGENT = AgentConfig(radius=0.5, height=2.0, max_climb=0.4, max_slope=45.0)
+CONFIGS = Path(__file__).resolve().parents[1] / "configs"
+
+
+def box(lo, hi) -> trimesh.Trimesh:
+    """An axis-aligned box with outward faces from corner ``lo`` to corner ``hi``."""
+    lo, hi = np.asarray(lo, dtype=float), np.asarray(hi, dtype=float)
+    return trimesh.creation.box(extents=hi - lo, transform=trimesh.transformations.translation_matrix((lo + hi) / 2))
+
+
+def floor(x0=-5.0, x1=5.0, z0=-5.0, z1=5.0, top=0.0) -> trimesh.Trimesh:
+    """A 0.2 m thick slab whose top is at ``top``."""
+    return box((x0, top - 0.2, z0), (x1, top, z1))
+
+
+def level(*parts: trimesh.Trimesh) -> trimesh.Trimesh:
+    return trimesh.util.concatenate(list(parts))
+
+
+def build(mesh, agent=AGENT, **params) -> nx.Graph:
+    context = RunContext(mesh=mesh, agent=agent, centre=np.asarray(mesh.bounds).mean(axis=0))
+    graph = sampling.g2s_build_graph(mesh=mesh, params=sampling.Params(**params), context=context)
+    assert context.navmesh is None  # no Recast on this route
+    return graph
+
+
+def positions(graph: nx.Graph) -> np.ndarray:
+    return np.array([graph.nodes[n]["pos"] for n in sorted(graph)], dtype=float).reshape(-1, 3)
+
+
+def component_of(graph: nx.Graph) -> dict[int, int]:
+    return {n: i for i, c in enumerate(nx.connected_components(graph)) for n in c}
+
+
+# --- plugin contract and graph conventions ---------------------------------------------
+
+
+def test_plugin_contract():
+    assert sampling.NAME == "sampling"
+    assert issubclass(sampling.Params, PluginParams)
+    manager = pluggy.PluginManager(PROJECT)
+    manager.add_hookspecs(hookspecs)
+    manager.register(sampling)
+    hooks = [c.name for c in manager.get_hookcallers(sampling) if c.name.startswith("g2s_")]
+    assert hooks == ["g2s_build_graph"]
+    for name, field in sampling.Params.model_fields.items():
+        assert field.description, name
+    with pytest.raises(ValidationError):
+        sampling.Params(spacing=0)
+    with pytest.raises(ValidationError):
+        sampling.Params(method="hexagons")
+    with pytest.raises(ValidationError):
+        sampling.Params(unknown=1)
+
+
+def test_flat_floor_is_covered_at_the_requested_spacing():
+    spacing = 0.8
+    graph = build(floor(), spacing=spacing)
+    p = positions(graph)
+    assert nx.is_connected(graph)
+    # On the floor and eroded by the agent radius from its free edges.
+    assert np.allclose(p[:, 1], 0.0, atol=1e-6)
+    assert np.all(np.abs(p[:, [0, 2]]) <= 4.5 + 1e-6)
+    # Poisson disk: no two samples closer than the spacing, none far from the next.
+    nearest = cKDTree(p).query(p, k=2)[0][:, 1]
+    assert nearest.min() >= spacing - 1e-9
+    assert nearest.mean() < 1.6 * spacing
+    # Coverage: every point of the eroded square is within ~spacing of a sample.
+    gx, gz = np.meshgrid(np.linspace(-4.4, 4.4, 45), np.linspace(-4.4, 4.4, 45))
+    grid = np.column_stack([gx.ravel(), np.zeros(gx.size), gz.ravel()])
+    assert cKDTree(p).query(grid)[0].max() < spacing + 0.2
+    # Node attributes follow g2s_core.model; areas add up to the eroded square (9 x 9 m).
+    for node, data in graph.nodes(data=True):
+        assert data["on_navmesh"] is True and data["polygon"] == -1
+        assert np.allclose(data["normal"], (0.0, 1.0, 0.0))
+        assert len(data["pos"]) == 3 and all(isinstance(v, float) for v in data["pos"])
+    assert sum(nx.get_node_attributes(graph, "area").values()) == pytest.approx(81.0, rel=0.08)
+    for a, b, data in graph.edges(data=True):
+        assert data["weight"] == pytest.approx(math.dist(graph.nodes[a]["pos"], graph.nodes[b]["pos"]))
+        assert data["weight"] <= 2 * spacing + 1e-9
+    assert sorted(graph) == list(range(graph.number_of_nodes()))
+
+
+def test_grid_method_is_a_regular_grid():
+    spacing = 1.0
+    graph = build(floor(), method="grid", spacing=spacing)
+    p = positions(graph)
+    assert nx.is_connected(graph)
+    # Grid points differ by whole multiples of the spacing in x and z.
+    offsets = (p[:, [0, 2]] - p[0, [0, 2]]) / spacing
+    assert np.allclose(offsets, np.round(offsets), atol=1e-6)
+    assert 64 <= len(p) <= 100  # 9 x 9 m eroded square
+    assert sum(nx.get_node_attributes(graph, "area").values()) == pytest.approx(len(p) * spacing**2)
+
+
+def test_grid_gives_one_sample_per_floor_in_a_cell():
+    # A second floor 3 m up over the same footprint (on pillars): every grid
+    # line crosses both floors.
+    upper = floor(-5, 5, -5, 5, top=3.0)
+    pillars = [box((x - 0.2, 0.0, z - 0.2), (x + 0.2, 2.8, z + 0.2)) for x in (-4.8, 4.8) for z in (-4.8, 4.8)]
+    graph = build(level(floor(), upper, *pillars), method="grid", spacing=1.0)
+    p = positions(graph)
+    low, high = p[np.abs(p[:, 1]) < 1e-6], p[np.abs(p[:, 1] - 3.0) < 1e-6]
+    assert len(low) > 30 and len(high) > 30
+    shared = {tuple(np.round(q[[0, 2]], 6)) for q in low} & {tuple(np.round(q[[0, 2]], 6)) for q in high}
+    assert len(shared) >= 30
+    # The floors are 3 m apart: nothing joins them.
+    comp = component_of(graph)
+    assert not any(abs(graph.nodes[a]["pos"][1] - graph.nodes[b]["pos"][1]) > 1 for a, b in graph.edges)
+    assert {comp[n] for n in graph if graph.nodes[n]["pos"][1] < 1} .isdisjoint({comp[n] for n in graph if graph.nodes[n]["pos"][1] > 1})
+
+
+def test_deterministic():
+    mesh = samples.two_floors(ramp=True).mesh
+    first, second = build(mesh), build(mesh)
+    assert list(first.nodes(data="pos")) == list(second.nodes(data="pos"))
+    assert list(first.edges(data="weight")) == list(second.edges(data="weight"))
+    other_seed = build(mesh, seed=1)
+    assert list(other_seed.nodes(data="pos")) != list(first.nodes(data="pos"))
+
+
+# --- walls, boxes, floors, ceilings -----------------------------------------------------
+
+
+def test_wall_across_the_floor_splits_it():
+    wall = box((-0.1, -0.2, -5.0), (0.1, 3.0, 5.0))
+    graph = build(level(floor(), wall))
+    comp = component_of(graph)
+    west = {comp[n] for n in graph if graph.nodes[n]["pos"][0] < 0}
+    east = {comp[n] for n in graph if graph.nodes[n]["pos"][0] > 0}
+    assert west and east and west.isdisjoint(east)
+    assert not any(graph.nodes[a]["pos"][0] * graph.nodes[b]["pos"][0] < 0 for a, b in graph.edges)
+    # The agent keeps its radius from the wall.
+    assert np.all(np.abs(positions(graph)[:, 0]) >= 0.1 + 0.5 - 1e-6)
+
+
+def test_wall_with_a_gap_connects_only_around_its_end():
+    wall = box((-0.1, -0.2, -5.0), (0.1, 3.0, 2.5))  # leaves z in [2.5, 5] open
+    graph = build(level(floor(), wall))
+    assert nx.is_connected(graph)
+    crossing = [(a, b) for a, b in graph.edges if graph.nodes[a]["pos"][0] * graph.nodes[b]["pos"][0] < 0]
+    assert crossing
+    for a, b in crossing:
+        pa, pb = np.array(graph.nodes[a]["pos"]), np.array(graph.nodes[b]["pos"])
+        t = pa[0] / (pa[0] - pb[0])
+        assert pa[2] + t * (pb[2] - pa[2]) > 2.5  # crosses x = 0 beyond the wall's end
+
+
+def test_box_taller_than_max_climb_is_not_climbed():
+    tall = box((-1.0, 0.0, -1.0), (1.0, 1.0, 1.0))  # 1 m > max climb 0.4
+    graph = build(level(floor(-6, 6, -6, 6), tall))
+    p = positions(graph)
+    on_floor = np.abs(p[:, 1]) < 1e-6
+    assert not any(abs(graph.nodes[a]["pos"][1] - graph.nodes[b]["pos"][1]) > 0.4 for a, b in graph.edges)
+    # Its 2 x 2 m top, eroded by the radius, is too small to keep (min_region_area).
+    assert np.all(on_floor)
+    # Nothing under or beside the box: the radius is kept from its sides (rays in
+    # 8 directions: near its corners a little less).
+    x, z = np.abs(p[:, 0]), np.abs(p[:, 2])
+    assert np.all(x[z <= 1.0] >= 1.5 - 1e-6) and np.all(z[x <= 1.0] >= 1.5 - 1e-6)
+    assert np.all(np.hypot(np.maximum(x - 1.0, 0), np.maximum(z - 1.0, 0)) >= 0.35)
+    assert nx.is_connected(graph)
+
+
+def test_box_lower_than_max_climb_is_stepped_onto():
+    low = box((-1.0, 0.0, -1.0), (1.0, 0.3, 1.0))  # 0.3 m <= max climb 0.4
+    graph = build(level(floor(-6, 6, -6, 6), low))
+    on_top = [n for n in graph if abs(graph.nodes[n]["pos"][1] - 0.3) < 1e-6]
+    assert on_top
+    assert any(abs(graph.nodes[m]["pos"][1]) < 1e-6 for n in on_top for m in graph[n])
+    assert nx.is_connected(graph)
+
+
+def test_low_ceiling_removes_samples_below_it():
+    low_ceiling = box((-5.0, 1.5, -5.0), (0.0, 1.7, 5.0))  # 1.5 m < agent height, over x < 0
+    high_ceiling = box((0.0, 2.5, -5.0), (5.0, 2.7, 5.0))  # 2.5 m, over x > 0
+    graph = build(level(floor(), low_ceiling, high_ceiling))
+    p = positions(graph)
+    ground = p[np.abs(p[:, 1]) < 1e-6]
+    assert len(ground) > 10
+    assert np.all(ground[:, 0] > 0.0)  # nothing on the floor under the low ceiling
+    # ... but the floor under the high ceiling is kept, up to the radius from the low one's edge.
+    assert np.any(ground[:, 0] < 1.5)
+    # No edge sneaks under the low ceiling either.
+    assert not any(min(graph.nodes[a]["pos"][0], graph.nodes[b]["pos"][0]) < 0 and abs(graph.nodes[a]["pos"][1]) < 1e-6 for a, b in graph.edges)
+
+
+def test_hole_in_the_floor_is_not_crossed():
+    # Without erosion samples lie right at the edges of the 1.2 m wide hole, well
+    # within connect_radius (2 m) of each other across it.
+    graph = build(level(floor(-5, -0.6, -5, 5), floor(0.6, 5, -5, 5)), clearance=0.0)
+    p = positions(graph)
+    assert np.any(np.abs(p[:, 0] + 0.6) < 0.3) and np.any(np.abs(p[:, 0] - 0.6) < 0.3)
+    assert not any(graph.nodes[a]["pos"][0] * graph.nodes[b]["pos"][0] < 0 for a, b in graph.edges)
+    assert nx.number_connected_components(graph) == 2
+    # The same floor without the hole is one piece.
+    assert nx.is_connected(build(floor(), clearance=0.0))
+
+
+def test_two_floors_are_joined_by_the_ramp_only():
+    with_ramp = build(samples.two_floors(ramp=True).mesh)
+    without = build(samples.two_floors(ramp=False).mesh)
+    for graph, joined in ((with_ramp, True), (without, False)):
+        comp = component_of(graph)
+        ground = {comp[n] for n in graph if abs(graph.nodes[n]["pos"][1]) < 1e-6}
+        upper = {comp[n] for n in graph if abs(graph.nodes[n]["pos"][1] - 4.0) < 1e-6}
+        assert ground and upper
+        assert bool(ground & upper) is joined
+    assert nx.number_connected_components(with_ramp) == 1
+    assert nx.number_connected_components(without) == 2
+    # On the ramp (20 degrees) the normals tilt; wall tops (0.2 m wide) carry no sample.
+    ramp_nodes = [n for n in with_ramp if 0.05 < with_ramp.nodes[n]["pos"][1] < 3.95]
+    assert ramp_nodes
+    for n in ramp_nodes:
+        assert math.degrees(math.acos(with_ramp.nodes[n]["normal"][1])) == pytest.approx(20.0, abs=0.5)
+    assert max(p[1] for _, p in with_ramp.nodes(data="pos")) == pytest.approx(4.0)
+
+
+def test_slope_penalty_adds_weight_for_climbing():
+    mesh = samples.corridor_with_ramp().mesh
+    plain, penalised = build(mesh), build(mesh, slope_penalty=2.0)
+    assert list(plain.edges) == list(penalised.edges)
+    for a, b, w in penalised.edges(data="weight"):
+        dy = abs(penalised.nodes[a]["pos"][1] - penalised.nodes[b]["pos"][1])
+        assert w == pytest.approx(plain.edges[a, b]["weight"] + 2.0 * dy)
+
+
+def test_steep_slope_is_not_walkable():
+    # A 60 degree ramp is steeper than the agent's 45: no sample on it, floors not joined.
+    run = 2.0 / math.tan(math.radians(60))
+    ramp = trimesh.Trimesh(
+        vertices=[[0, 0, -2], [run, 2, -2], [run, 2, 2], [0, 0, 2]], faces=[[0, 2, 1], [0, 3, 2]], process=False
+    )
+    assert ramp.face_normals[0][1] > 0
+    graph = build(level(floor(-6, 0, -2, 2), ramp, floor(run, run + 6, -2, 2, top=2.0)), clearance=0.0)
+    heights = positions(graph)[:, 1]
+    assert not np.any((heights > 0.05) & (heights < 1.95))
+    assert nx.number_connected_components(graph) == 2
+
+
+def test_walk_segments_batch():
+    mesh = level(floor(), box((-0.1, -0.2, -5.0), (0.1, 3.0, 0.0)))
+    caster = RayCaster(mesh)
+    agent = AgentShape.from_config(AGENT)
+    starts = np.array([[-3.0, 0.0, 2.0], [-3.0, 0.0, -2.0], [-3.0, 0.0, 2.0]])
+    ends = np.array([[3.0, 0.0, 2.0], [3.0, 0.0, -2.0], [-3.0, 0.0, 7.0]])  # clear, wall, off the floor
+    ok, rise = walk_segments(caster, starts, ends, agent, probe_step=0.25)
+    assert ok.tolist() == [True, False, False]
+    assert rise[0] == pytest.approx(0.0, abs=1e-6) and math.isinf(rise[2])
+    hits = caster.first_hits(np.array([[0.0, 4.0, -3.0], [0.0, 1.0, 3.0], [0.0, 1.0, 9.0]]), np.array([0.0, -2.0, 0.0]))
+    assert hits.distance[0] == pytest.approx(1.0, abs=1e-5)  # down onto the wall's top (y = 3)
+    assert hits.distance[1] == pytest.approx(1.0, abs=1e-5)  # down onto the floor (y = 0)
+    assert hits.face[2] == -1 and math.isinf(hits.distance[2])  # beside the level
+    assert caster.backend in ("embree", "python")
+
+
+def test_empty_when_nothing_is_walkable():
+    wall_only = box((-0.1, 0.0, -5.0), (0.1, 3.0, 5.0))
+    upside_down = trimesh.Trimesh(vertices=[[0, 0, 0], [1, 0, 0], [0, 0, 1]], faces=[[0, 1, 2]], process=False)
+    assert upside_down.face_normals[0][1] < 0
+    assert build(upside_down).number_of_nodes() == 0
+    # A 0.2 m wide wall top is eroded away entirely.
+    assert build(wall_only).number_of_nodes() == 0
+
+
+# --- the two routes through the whole pipeline -------------------------------------------
+
+_ROUTE_MODULES = {
+    ("graph", "navmesh"): "g2s_plugins.graph_builders.navmesh",
+    ("graph", "sampling"): "g2s_plugins.graph_builders.sampling",
+    ("terminals", "points"): "g2s_plugins.terminals.points",
+    ("terminals", "metric"): "g2s_plugins.terminals.metric",
+    ("terminals", "leaves"): "g2s_plugins.terminals.leaves",
+    ("steiner", "kou"): "g2s_plugins.steiner.kou",
+    ("roots", "betweenness"): "g2s_plugins.roots.betweenness",
+    ("simplify", "surface_los"): "g2s_plugins.predicates.surface_los",
+    ("simplify", "mesh_los"): "g2s_plugins.predicates.mesh_los",
+    ("analyzers", "betweenness"): "g2s_plugins.analyzers.betweenness",
+    ("analyzers", "depth"): "g2s_plugins.analyzers.depth",
+}
+
+
+@pytest.fixture(scope="module")
+def registry() -> Registry:
+    """The installed plugins; those the lead has not registered yet are added from their modules."""
+    reg = Registry.from_entry_points()
+    for (stage, name), module in _ROUTE_MODULES.items():
+        try:
+            reg.get(stage, name)
+        except Exception:
+            reg.register(importlib.import_module(module), package="g2s-tests", entry_point=f"{stage}.{name}")
+    return reg
+
+
+def run_route(registry: Registry, preset: str, mesh, points) -> types.SimpleNamespace:
+    """Run ``preset`` with ``points`` as terminals (the same question for both routes)."""
+    raw = load_raw_config(CONFIGS / f"{preset}.yaml")
+    raw["agent"] = {"radius": 0.5, "height": 2.0, "max_climb": 0.4, "max_slope": 45.0}
+    # Replaced, not merged: the preset's terminal parameters belong to another selector.
+    raw["terminals"] = {"plugin": "points", "params": {"points": [list(map(float, p)) for p in points], "max_distance": 5.0}}
+    raw["analyzers"] = []
+    plan = pipeline.plan(parse_config(raw, source=preset), registry, source=preset)
+    result = pipeline.run(plan, registry, mesh, preset, mesh_sha256(mesh))
+    structure = result.structure.to_undirected()
+    length = sum(math.dist(structure.nodes[a]["pos"], structure.nodes[b]["pos"]) for a, b in structure.edges)
+    joined = any(set(result.terminals.nodes) <= c for c in nx.connected_components(structure))
+    return types.SimpleNamespace(result=result, length=length, joined=joined)
+
+
+def test_routes_agree_on_the_cross_hub(registry):
+    lvl = samples.cross_hub()
+    openings = [o.position for o in lvl.openings]
+    navmesh = run_route(registry, "map_piece", lvl.mesh, openings)
+    sampled = run_route(registry, "map_piece_sampling", lvl.mesh, openings)
+    assert navmesh.result.context.navmesh is not None and sampled.result.context.navmesh is None
+    # The same four openings are joined into one tree by both routes ...
+    assert navmesh.joined and sampled.joined
+    assert len(sampled.result.terminals.nodes) == 4
+    # ... with a similar total length.
+    assert sampled.length == pytest.approx(navmesh.length, rel=0.25)
+
+
+def test_routes_agree_on_two_floors(registry):
+    lvl = samples.two_floors(ramp=True)
+    upper = lvl.metadata["upper"]
+    ends = [(1.5, 0.0, 1.5), (upper["x1"] - 1.5, 4.0, (upper["z0"] + upper["z1"]) / 2)]
+    navmesh = run_route(registry, "map_piece", lvl.mesh, ends)
+    sampled = run_route(registry, "map_piece_sampling", lvl.mesh, ends)
+    # Both routes join the ground floor to the upper one, through the ramp.
+    for route in (navmesh, sampled):
+        assert route.joined
+        heights = [p[1] for _, p in route.result.structure.nodes(data="pos")]
+        assert min(heights) < 0.5 and max(heights) > 3.5
+    ramp = lvl.metadata["ramp"]
+    through_ramp = [
+        n
+        for n, p in sampled.result.steiner.nodes(data="pos")
+        if ramp["x0"] <= p[0] <= ramp["x1"] and ramp["z0"] <= p[2] <= ramp["z1"]
+    ]
+    assert through_ramp
+    assert sampled.length == pytest.approx(navmesh.length, rel=0.25)
+    # Without the ramp neither route can join them.
+    closed = samples.two_floors(ramp=False)
+    for preset in ("map_piece", "map_piece_sampling"):
+        assert not run_route(registry, preset, closed.mesh, ends).joined
+
+
+def test_sampling_presets_run(registry):
+    lvl = samples.t_hub()
+    for preset in ("map_analysis_sampling", "map_piece_sampling"):
+        config = load_config(CONFIGS / f"{preset}.yaml")
+        assert config.graph.plugin == "sampling" and config.simplify.plugin == "mesh_los"
+        plan = pipeline.plan(config, registry, source=preset)
+        result = pipeline.run(plan, registry, lvl.mesh, preset, mesh_sha256(lvl.mesh))
+        assert result.terminals.nodes, preset
+        assert result.structure is not None and result.structure.number_of_nodes() >= 2
+        assert result.analysis
+        # The structure reaches the end of every arm (the openings).
+        p = np.array([pos for _, pos in result.structure.nodes(data="pos")])
+        for opening in lvl.openings:
+            assert cKDTree(p).query(opening.position)[0] < 2.0, (preset, opening.position)
