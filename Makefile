@@ -7,14 +7,24 @@ PY        := $(VENV)/bin/python
 STAMP     := $(VENV)/.g2s-installed
 DEMO_OUT  ?= g2s-demo
 DEB_PACKAGES := librecast-dev cmake g++ make
+# chromium: the headless browser tests/test_html_report.py drives (make test only)
+TEST_DEB_PACKAGES := chromium
+README_IMAGE := docs/images/demo-heatmap.png
 
-.PHONY: demo test setup system-deps benchmark clean
+.PHONY: demo test setup system-deps benchmark clean readme-image
 
 demo: setup
 	$(VENV)/bin/g2s demo -o $(DEMO_OUT) --force
 
+test: DEB_PACKAGES += $(TEST_DEB_PACKAGES)
 test: setup
 	$(PY) -m pytest -q -n 2
+
+# The README's picture: the demo's top-down heat map.
+readme-image: setup
+	$(VENV)/bin/g2s demo -o $(DEMO_OUT) --force --format png --quiet
+	mkdir -p $(dir $(README_IMAGE))
+	cp $(DEMO_OUT)/heatmap.png $(README_IMAGE)
 
 benchmark: setup
 	$(PY) benchmarks/pipeline.py

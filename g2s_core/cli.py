@@ -80,7 +80,7 @@ def main(argv: Sequence[str] | None = None) -> int:
             return _plugins(args)
         return _demo(args, errors)
     except G2SError as exc:
-        errors.print(f"g2s: error: {exc}", markup=False, highlight=False)
+        errors.print(f"g2s: error: {exc}", markup=False, highlight=False, soft_wrap=True)
         if args.verbose:
             traceback.print_exc()
         return 2
@@ -88,7 +88,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         errors.print("g2s: interrupted", markup=False)
         return 130
     except Exception as exc:  # anything else is our bug: say so, keep the user's data
-        errors.print(f"g2s: internal error: {type(exc).__name__}: {exc}", markup=False, highlight=False)
+        errors.print(f"g2s: internal error: {type(exc).__name__}: {exc}", markup=False, highlight=False, soft_wrap=True)
         if args.verbose:
             traceback.print_exc()
         else:
@@ -127,7 +127,7 @@ def _demo(args: argparse.Namespace, errors: Console) -> int:
     name = f"{level.name} (seed {args.seed}, {args.rooms} rooms)"
     code = _execute(args, errors, registry, plan, mesh, name, mesh_sha256(mesh), formats)
     if code == 0 and not (args.quiet or args.json):
-        Console().print(_demo_hint(args.outdir, formats), markup=False, highlight=False)
+        Console().print(_demo_hint(args.outdir, formats), markup=False, highlight=False, soft_wrap=True)
     return code
 
 
@@ -183,12 +183,12 @@ def _execute(
         print(json.dumps(_summary(result, args.outdir, formats, written), indent=1, sort_keys=True))
         return 0
     for warning in result.warnings:
-        errors.print(f"g2s: warning: {warning}", markup=False, highlight=False)
+        errors.print(f"g2s: warning: {warning}", markup=False, highlight=False, soft_wrap=True)
     if not args.quiet:
         console = Console()
         console.print(stage_table(result, title=mesh_name))
         for path in written:
-            console.print(f"wrote {path}", markup=False, highlight=False)
+            console.print(f"wrote {path}", markup=False, highlight=False, soft_wrap=True)
     return 0
 
 
@@ -231,7 +231,7 @@ def _summary(result: RunResult, outdir: Path, formats: Sequence[str], written: S
 
 def _status(args: argparse.Namespace, errors: Console, message: str) -> None:
     if not (args.quiet or args.json):
-        errors.print(message, markup=False, highlight=False)
+        errors.print(message, markup=False, highlight=False, soft_wrap=True)
 
 
 def stage_table(result: RunResult, title: str = "") -> Table:

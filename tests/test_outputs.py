@@ -9,10 +9,7 @@ from __future__ import annotations
 
 import json
 import math
-import os
 import struct
-import subprocess
-import sys
 import time
 from pathlib import Path
 
@@ -355,6 +352,11 @@ def test_heatmap_png_has_a_panel_per_floor_and_no_metadata(result, tmp_path):
     assert heatmap.render(result) == data  # deterministic
     one_floor = heatmap.floor_groups(result.structure, 10.0)
     assert len(one_floor) == 1
+    # the ground under each floor: the upward faces of its slab (two triangles each), seen as X/Z
+    ground = heatmap._ground(result, result.structure, heatmap.floor_groups(result.structure, 2.0))
+    assert [g.shape for g in ground] == [(2, 3, 2), (2, 3, 2)]
+    assert np.allclose(ground[0].reshape(-1, 2).max(axis=0), [10.0, 6.0])
+    assert np.allclose(ground[1].reshape(-1, 2).max(axis=0), [6.0, 4.0])
 
 
 def test_heatmap_colours_follow_the_values(tmp_path):
@@ -414,27 +416,43 @@ def test_the_input_mesh_is_never_a_result(tmp_path):
 # --- the command line ---------------------------------------------------------------------
 
 
-def g2s(*args: str) -> subprocess.CompletedProcess:
-    return subprocess.run([sys.executable, "-m", "g2s_core.cli", *args], capture_output=True, text=True, cwd=PROJECT,
-                          env={**os.environ, "COLUMNS": "200"})
+def g2s(capsys, *args: str) -> tuple[int, str, str]:
+    """Run the CLI in this process: (exit code, stdout, stderr)."""
+    from g2s_core import cli
+
+    capsys.readouterr()
+    code = cli.main(list(args))
+    out, err = capsys.readouterr()
+    return code, out, err
 
 
-def test_cli_refuses_bad_formats_and_existing_results_before_running(tmp_path):
-    proc = g2s("run", "configs/map_analysis.yaml", "sample:straight_corridor", "-o", str(tmp_path / "o"),
-               "--format", "json,pdf")
-    assert proc.returncode == 2 and proc.stderr.strip().splitlines() == [
+def test_cli_refuses_bad_formats_and_existing_results_before_running(tmp_path, capsys):
+    code, out, err = g2s(capsys, "run", "configs/map_analysis.yaml", "sample:straight_corridor", "-o",
+                         str(tmp_path / "o"), "--format", "json,pdf")
+    assert code == 2 and out == "" and err.strip().splitlines() == [
         "g2s: error: --format: unknown output format 'pdf' (expected some of: json, html, glb, graphml, png, graph)"]
     assert not (tmp_path / "o").exists()
     config = tmp_path / "c.yaml"
     config.write_text("extends: map_analysis\noutputs: {formats: [json, gif]}\n")
-    proc = g2s("run", str(config), "sample:straight_corridor", "-o", str(tmp_path / "o"))
-    assert proc.returncode == 2 and "c.yaml: outputs.formats: unknown output format 'gif'" in proc.stderr
-    out = tmp_path / "old"
-    out.mkdir()
-    (out / "report.html").write_text("earlier")
-    proc = g2s("run", "configs/map_analysis.yaml", "sample:straight_corridor", "-o", str(out), "--format", "json")
-    assert proc.returncode == 2 and "already holds results (report.html); use --force" in proc.stderr
-    assert (out / "report.html").read_text() == "earlier"
+    code, _, err = g2s(capsys, "run", str(config), "sample:straight_corridor", "-o", str(tmp_path / "o"))
+    assert code == 2 and "c.yaml: outputs.formats: unknown output format 'gif'" in err
+    out_dir = tmp_path / "old"
+    out_dir.mkdir()
+    (out_dir / "report.html").write_text("earlier")
+    code, _, err = g2s(capsys, "run", "configs/map_analysis.yaml", "sample:straight_corridor", "-o", str(out_dir),
+                       "--format", "json")
+    assert code == 2 and "already holds results (report.html); use --force" in err
+    assert (out_dir / "report.html").read_text() == "earlier"
+
+
+def test_each_format_writes_exactly_its_result_files(result, tmp_path):
+    for fmt in WRITERS:
+        folder = tmp_path / fmt
+        folder.mkdir()
+        written = write_outputs(result, folder, [fmt])
+        assert tuple(p.name for p in written) == RESULT_FILES[fmt]
+        assert sorted(p.name for p in folder.iterdir()) == sorted(RESULT_FILES[fmt])
+        assert all(p.stat().st_mode & 0o044 == 0o044 for p in written)  # readable by others (umask 022)
 
 
 def _plugins_missing() -> str | None:
@@ -474,18 +492,19 @@ def test_real_run_json_is_deterministic_and_valid(tmp_path):
 
 
 @needs_plugins
-def test_cli_run_writes_the_chosen_formats_and_a_json_summary(tmp_path):
-    out = tmp_path / "out"
-    proc = g2s("run", "configs/map_analysis.yaml", "sample:straight_corridor", "-o", str(out), "--json")
-    assert proc.returncode == 0, proc.stderr
-    summary = json.loads(proc.stdout)
+def test_cli_run_writes_the_chosen_formats_and_a_json_summary(tmp_path, capsys):
+    out_dir = tmp_path / "out"
+    code, out, err = g2s(capsys, "run", "configs/map_analysis.yaml", "sample:cross_hub", "-o", str(out_dir), "--json")
+    assert code == 0, err
+    summary = json.loads(out)
     assert summary["formats"] == ["json", "html"]  # base.yaml's default
     assert sorted(Path(f).name for f in summary["files"]) == ["report.html", "run.json", "structure.json"]
     assert summary["final"]["stage"] == "simplify" and summary["final"]["analysis"] == ["betweenness"]
-    assert proc.stderr == ""
-    quiet = g2s("run", "configs/map_analysis.yaml", "sample:straight_corridor", "-o", str(out), "--format",
-                "glb,png", "--quiet", "--force")
-    assert quiet.returncode == 0 and quiet.stdout == "" and quiet.stderr == ""
-    assert sorted(p.name for p in out.iterdir()) == ["heatmap.png", "structure.glb"]
-    loud = g2s("run", "configs/map_analysis.yaml", "sample:straight_corridor", "-o", str(out), "--force")
-    assert loud.returncode == 0 and "Step 5" in loud.stdout and f"wrote {out / 'report.html'}" in loud.stdout
+    assert err == ""
+    code, out, err = g2s(capsys, "run", "configs/map_analysis.yaml", "sample:cross_hub", "-o", str(out_dir),
+                         "--format", "glb,png", "--quiet", "--force")
+    assert code == 0 and out == "" and err == ""
+    assert sorted(p.name for p in out_dir.iterdir()) == ["heatmap.png", "structure.glb"]  # the old json/html went
+    code, out, err = g2s(capsys, "run", "configs/map_analysis.yaml", "sample:cross_hub", "-o", str(out_dir), "--force",
+                         "--format", "graphml")
+    assert code == 0 and "Step 5" in out and f"wrote {out_dir / 'structure.graphml'}" in out

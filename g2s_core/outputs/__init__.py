@@ -20,13 +20,13 @@ See ``docs/outputs.md`` for the details of each format.
 
 from __future__ import annotations
 
+import importlib
 import os
 from collections.abc import Callable, Sequence
 from pathlib import Path
 
 from g2s_core.errors import G2SError
 from g2s_core.model import RunResult
-from g2s_core.outputs import graph_json, graphml, gltf, heatmap, html_report, structure_json
 from g2s_core.outputs.structure_json import LoadedResult, load_result
 
 Writer = Callable[[RunResult, Path], list[Path]]
@@ -36,22 +36,34 @@ __all__ = [
     "check_outdir", "load_result", "parse_formats", "prepare_outdir", "result_paths", "write_outputs",
 ]
 
+def _lazy(module: str) -> Writer:
+    """The ``write`` of ``g2s_core.outputs.<module>``, imported on first use (plotly and
+    matplotlib take a while to import, and most commands never write those formats)."""
+
+    def write(result: RunResult, outdir: Path) -> list[Path]:
+        return importlib.import_module(f"g2s_core.outputs.{module}").write(result, outdir)
+
+    write.__qualname__ = write.__name__ = f"write_{module}"
+    write.__doc__ = f"Writer of g2s_core.outputs.{module}."
+    return write
+
+
 WRITERS: dict[str, Writer] = {
-    "json": structure_json.write,
-    "html": html_report.write,
-    "glb": gltf.write,
-    "graphml": graphml.write,
-    "png": heatmap.write,
-    "graph": graph_json.write,
+    "json": _lazy("structure_json"),
+    "html": _lazy("html_report"),
+    "glb": _lazy("gltf"),
+    "graphml": _lazy("graphml"),
+    "png": _lazy("heatmap"),
+    "graph": _lazy("graph_json"),
 }
 """Format name -> writer."""
 
 RESULT_FILES: dict[str, tuple[str, ...]] = {
-    "json": (structure_json.STRUCTURE_FILE, structure_json.RUN_FILE),
-    "html": (html_report.REPORT_FILE,),
-    "glb": (gltf.GLB_FILE,),
-    "graphml": (graphml.STRUCTURE_FILE, graphml.GRAPH_FILE),
-    "png": (heatmap.HEATMAP_FILE,),
+    "json": ("structure.json", "run.json"),
+    "html": ("report.html",),
+    "glb": ("structure.glb",),
+    "graphml": ("structure.graphml", "graph.graphml"),
+    "png": ("heatmap.png",),
     "graph": ("graph.json",),
 }
 """Format name -> the file names it writes (what ``--force`` may replace)."""

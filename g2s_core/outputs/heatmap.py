@@ -2,7 +2,9 @@
 
 View: from above (+Y towards the viewer), X to the right and Z downwards,
 i.e. -Z up the page, which keeps the view right-handed; the axes are
-labelled in metres. Edges are grey lines, nodes are dots on the green
+labelled in metres. The walkable ground (navmesh triangles, else the mesh's
+faces no steeper than the agent's max slope) is light grey underneath.
+Edges are grey lines, nodes are dots on the green
 (lowest) -> yellow -> red (highest) scale, roots are ringed in black. Without
 analysis values nodes and edges take their tree-depth colour (an edge its
 child's: red = depth 1, yellow = 2 ...) and, before step 4, one grey.
@@ -25,7 +27,7 @@ from pathlib import Path
 import networkx as nx
 import numpy as np
 from matplotlib.backends.backend_agg import FigureCanvasAgg
-from matplotlib.collections import LineCollection
+from matplotlib.collections import LineCollection, PolyCollection
 from matplotlib.colors import Normalize
 from matplotlib.figure import Figure
 
@@ -35,6 +37,7 @@ from g2s_core.outputs.common import agent_value, edge_list, final_graph, floors,
 from g2s_core.outputs.files import atomic_write
 
 HEATMAP_FILE = "heatmap.png"
+GROUND_COLOUR = "#e4e4e4"
 PANEL_INCHES = 6.0
 DPI = 110
 
@@ -75,8 +78,12 @@ def render(result: RunResult) -> bytes:
         norm = Normalize(vmin=low, vmax=high if high > low else low + 1.0)
         floor_of = {n: i for i, group in enumerate(groups) for n in group}
         roots = set(roots_of(graph))
+        ground = _ground(result, graph, groups)
         for index, group in enumerate(groups):
             ax = axes[index // columns][index % columns]
+            if len(ground[index]):
+                ax.add_collection(PolyCollection(ground[index], facecolors=GROUND_COLOUR, edgecolors=GROUND_COLOUR,
+                                             linewidths=0.4, zorder=0))
             mappable = _panel(ax, graph, group, floor_of, index, values, norm, roots) or mappable
             heights = [graph.nodes[n]["pos"][1] for n in group]
             if len(groups) > 1:
@@ -101,6 +108,36 @@ def render(result: RunResult) -> bytes:
     buffer = io.BytesIO()
     figure.savefig(buffer, format="png", dpi=DPI, metadata={"Software": None})
     return buffer.getvalue()
+
+
+def _ground(result: RunResult, graph: nx.Graph, groups: list[list[int]]) -> list[np.ndarray]:
+    """Per floor, the walkable triangles under it as (T, 3, 2) X/Z outlines.
+
+    The navmesh's detail triangles when there is a navmesh, else the mesh's
+    faces no steeper than the agent's max slope. A triangle goes to the floor
+    whose node heights (widened by the agent height) hold its centre height,
+    the nearest such floor if several do, none if none does.
+    """
+    navmesh = result.context.navmesh
+    if navmesh is not None and len(getattr(navmesh, "detail_triangles", ())):
+        triangles = np.asarray(navmesh.detail_vertices, dtype=np.float64)[np.asarray(navmesh.detail_triangles)]
+    elif result.context.mesh is not None and len(result.context.mesh.faces):
+        mesh = result.context.mesh
+        slope = math.radians(agent_value(result, "max_slope", 45.0))
+        up = np.asarray(mesh.face_normals)[:, 1] >= math.cos(slope)
+        triangles = np.asarray(mesh.triangles)[up]
+    else:
+        triangles = np.zeros((0, 3, 3))
+    reach = agent_value(result, "height", 2.0)
+    heights = triangles[:, :, 1].mean(axis=1)
+    spans = [(min(graph.nodes[n]["pos"][1] for n in g), max(graph.nodes[n]["pos"][1] for n in g)) for g in groups]
+    distance = np.stack([np.maximum(np.maximum(lo - heights, heights - hi), 0.0) for lo, hi in spans], axis=1) \
+        if spans else np.zeros((len(heights), 0))
+    ground = []
+    for index in range(len(groups)):
+        chosen = (distance[:, index] <= reach) & (distance[:, index] == distance.min(axis=1))
+        ground.append(triangles[chosen][:, :, [0, 2]])
+    return ground
 
 
 def _panel(ax, graph: nx.Graph, group: list[int], floor_of: dict[int, int], index: int,
