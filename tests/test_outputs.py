@@ -508,3 +508,25 @@ def test_cli_run_writes_the_chosen_formats_and_a_json_summary(tmp_path, capsys):
     code, out, err = g2s(capsys, "run", "configs/map_analysis.yaml", "sample:cross_hub", "-o", str(out_dir), "--force",
                          "--format", "graphml")
     assert code == 0 and "Step 5" in out and f"wrote {out_dir / 'structure.graphml'}" in out
+
+
+@needs_plugins
+def test_demo_writes_all_five_formats_and_they_agree(tmp_path, capsys):
+    import trimesh as _trimesh
+
+    out_dir = tmp_path / "demo"
+    code, out, err = g2s(capsys, "demo", "-o", str(out_dir), "--rooms", "6")
+    assert code == 0, err
+    expected = sorted(name for fmt in ("json", "html", "glb", "graphml", "png") for name in RESULT_FILES[fmt])
+    assert sorted(p.name for p in out_dir.iterdir()) == expected
+    assert f"open {out_dir / 'report.html'} in a web browser" in out
+    loaded = load_result(out_dir)
+    scene = _trimesh.load(out_dir / "structure.glb")
+    names = set(scene.graph.nodes_geometry)
+    assert {"mesh", "navmesh", "structure"} <= names
+    assert {n for n in names if n.startswith("root_")} == {f"root_{r}" for r in loaded.roots}
+    assert {n for n in names if n.startswith("node_")} == {f"node_{n}" for n in loaded.structure}
+    assert {n for n in names if n.startswith("terminal_")} == {f"terminal_{t}" for t in loaded.terminals.nodes}
+    graph = nx.read_graphml(out_dir / "structure.graphml", node_type=int)
+    assert sorted(graph.edges) == sorted(loaded.structure.edges)
+    assert {n: d["value_betweenness"] for n, d in graph.nodes(data=True)} == loaded.analysis["betweenness"]
