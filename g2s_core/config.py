@@ -64,7 +64,7 @@ class AnalyzerConfig(StageConfig):
 class OutputConfig(_Section):
     """What a run writes."""
 
-    formats: list[str] = Field(default_factory=lambda: ["json"], description="output formats")
+    formats: list[str] = Field(default_factory=lambda: ["json", "html"], description="output formats")
 
 
 class RunConfig(_Section):
