@@ -1,0 +1,318 @@
+"""Navmesh boundary loops, loop sampling and batched ray casts for the ``entry_exit`` selector.
+
+Conventions: metres, Y up, right-handed. A boundary loop is oriented so that
+the walkable interior lies on the *left* of the walking direction ``t`` seen
+from above, i.e. on the side of ``up x t``; the outward side is ``t x up``.
+Outer rims therefore run counter-clockwise seen from above and the rims of
+holes clockwise.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+import trimesh
+
+UP = np.array([0.0, 1.0, 0.0])
+
+WELD = 1e-4
+"""Metres: navmesh vertices closer than this (per axis, rounded) are one vertex when chaining loops."""
+
+
+# --------------------------------------------------------------------------
+# Ray casting
+# --------------------------------------------------------------------------
+
+
+class RayCaster:
+    """First hits of batches of rays against one mesh (one intersector call per batch).
+
+    Uses :class:`trimesh.ray.ray_pyembree.RayMeshIntersector` when ``embreex``
+    imports, else trimesh's pure-Python intersector (same answers, slower).
+    A ray hits front and back faces alike.
+    """
+
+    def __init__(self, mesh: trimesh.Trimesh):
+        self.mesh = mesh
+        try:
+            from trimesh.ray import ray_pyembree
+
+            self._intersector: Any = ray_pyembree.RayMeshIntersector(mesh)
+            self.backend = "embree"
+        except ImportError:  # embreex missing: correct but slow
+            from trimesh.ray import ray_triangle
+
+            self._intersector = ray_triangle.RayMeshIntersector(mesh)
+            self.backend = "python"
+        self.face_normals = np.asarray(mesh.face_normals, dtype=np.float64)
+
+    def first_hits(self, origins: np.ndarray, directions: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Distance, hit point and triangle of the first hit of each ray.
+
+        Args:
+            origins: (N,3) ray origins.
+            directions: (N,3) directions (normalised here).
+
+        Returns:
+            ``distance`` (N,) (``inf`` when nothing is hit), ``points`` (N,3)
+            (NaN when nothing is hit) and ``triangle`` (N,) int (-1 when
+            nothing is hit).
+        """
+        origins = np.ascontiguousarray(origins, dtype=np.float64).reshape(-1, 3)
+        directions = np.asarray(directions, dtype=np.float64).reshape(-1, 3)
+        n = len(origins)
+        distance = np.full(n, np.inf)
+        points = np.full((n, 3), np.nan)
+        triangle = np.full(n, -1, dtype=np.int64)
+        if n == 0:
+            return distance, points, triangle
+        length = np.linalg.norm(directions, axis=1, keepdims=True)
+        directions = np.ascontiguousarray(directions / np.where(length > 0, length, 1.0))
+        locations, index_ray, index_tri = self._intersector.intersects_location(
+            origins, directions, multiple_hits=False
+        )
+        if len(index_ray):
+            index_ray = np.asarray(index_ray, dtype=np.int64)
+            d = np.einsum("ij,ij->i", locations - origins[index_ray], directions[index_ray])
+            # multiple_hits=False gives one hit per ray; keep the nearest if a backend gives more
+            order = np.lexsort((d, index_ray))
+            first = np.r_[True, index_ray[order][1:] != index_ray[order][:-1]]
+            keep = order[first]
+            distance[index_ray[keep]] = np.maximum(d[keep], 0.0)
+            points[index_ray[keep]] = locations[keep]
+            triangle[index_ray[keep]] = np.asarray(index_tri, dtype=np.int64)[keep]
+        return distance, points, triangle
+
+
+    def all_hits(self, origins: np.ndarray, directions: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Every hit along each ray: ``ray`` index, ``distance`` and ``triangle``, each (H,)."""
+        origins = np.ascontiguousarray(origins, dtype=np.float64).reshape(-1, 3)
+        directions = np.asarray(directions, dtype=np.float64).reshape(-1, 3)
+        if len(origins) == 0:
+            return np.zeros(0, np.int64), np.zeros(0), np.zeros(0, np.int64)
+        length = np.linalg.norm(directions, axis=1, keepdims=True)
+        directions = np.ascontiguousarray(directions / np.where(length > 0, length, 1.0))
+        locations, index_ray, index_tri = self._intersector.intersects_location(
+            origins, directions, multiple_hits=True
+        )
+        index_ray = np.asarray(index_ray, dtype=np.int64)
+        if len(index_ray) == 0:
+            return index_ray, np.zeros(0), np.zeros(0, np.int64)
+        d = np.einsum("ij,ij->i", locations - origins[index_ray], directions[index_ray])
+        return index_ray, d, np.asarray(index_tri, dtype=np.int64)
+
+
+# --------------------------------------------------------------------------
+# Boundary loops
+# --------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class BoundaryLoop:
+    """One chain of navmesh boundary edges, walkable interior on the left.
+
+    Attributes:
+        points: (n,3) vertex positions; edge ``i`` runs from ``points[i]`` to
+            ``points[i + 1]`` (wrapping when ``closed``).
+        polygons: (n,) or (n-1,) navmesh polygon owning each edge.
+        closed: whether the chain closes on itself (it does on a well-formed navmesh).
+    """
+
+    points: np.ndarray
+    polygons: np.ndarray
+    closed: bool
+
+    @property
+    def edge_count(self) -> int:
+        return len(self.polygons)
+
+
+def boundary_edges(
+    vertices: np.ndarray, polygons: np.ndarray, neighbours: np.ndarray
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The boundary edges of a polygon mesh (neighbour -1), oriented interior-left.
+
+    Returns ``start`` and ``end`` vertex indices and the owning ``polygon``, each (E,).
+    """
+    vertices = np.asarray(vertices, dtype=np.float64)
+    polygons = np.asarray(polygons)
+    neighbours = np.asarray(neighbours)
+    valid = polygons >= 0
+    counts = valid.sum(axis=1)
+    i, j = np.nonzero(valid & (neighbours < 0))
+    a = polygons[i, j].astype(np.int64)
+    b = polygons[i, (j + 1) % np.maximum(counts[i], 1)].astype(np.int64)
+    # Polygon centroid (vertex mean) decides which side is inside.
+    safe = np.where(valid, polygons, 0)
+    centre = (vertices[safe] * valid[..., None]).sum(axis=1) / np.maximum(counts, 1)[:, None]
+    d = vertices[b] - vertices[a]
+    left = np.cross(UP, d)  # up x d: the left side seen from above
+    inside = np.einsum("ij,ij->i", centre[i] - vertices[a], left)
+    flip = inside < 0
+    a, b = np.where(flip, b, a), np.where(flip, a, b)
+    keep = a != b
+    return a[keep], b[keep], i[keep].astype(np.int64)
+
+
+def _left_turn(d_in: np.ndarray, d_out: np.ndarray) -> float:
+    """Signed horizontal turn from ``d_in`` to ``d_out``, radians, positive to the left."""
+    cross = float(np.dot(np.cross(d_in, d_out), UP))
+    dot = float(d_in[0] * d_out[0] + d_in[2] * d_out[2])
+    return float(np.arctan2(cross, dot))
+
+
+def boundary_loops(vertices: np.ndarray, polygons: np.ndarray, neighbours: np.ndarray) -> list[BoundaryLoop]:
+    """Chain the boundary edges of a navmesh into loops (interior on the left).
+
+    Vertices at the same position (to :data:`WELD`) are one vertex, so loops
+    run on across the tile borders of a tiled navmesh. Every boundary vertex
+    of a well-formed navmesh has as many outgoing as
+    incoming boundary edges; the successor of an edge is the one edge leaving
+    its end vertex, found with one sorted look-up for all edges. Where several
+    edges leave one vertex (two areas touching at a point) the successor is
+    the one turning most to the left, which keeps each loop around one area.
+    Open chains (only on a malformed navmesh) come first, then closed loops in
+    the order of their lowest edge: deterministic for a given navmesh.
+    """
+    vertices = np.asarray(vertices, dtype=np.float64)
+    start, end, owner = boundary_edges(vertices, polygons, neighbours)
+    n_edges = len(start)
+    if n_edges == 0:
+        return []
+    # Chain by position, not index: tiles of a tiled navmesh repeat their border vertices.
+    _, weld = np.unique(np.round(vertices / WELD).astype(np.int64), axis=0, return_inverse=True)
+    weld = weld.reshape(-1)
+    start, end = weld[start], weld[end]
+    keep = start != end
+    start, end, owner = start[keep], end[keep], owner[keep]
+    first_of = np.zeros(int(weld.max()) + 1, dtype=np.int64)
+    first_of[weld[::-1]] = np.arange(len(weld))[::-1]  # a representative vertex per position
+    vertices = vertices[first_of]
+    n_edges = len(start)
+    if n_edges == 0:
+        return []
+    order = np.argsort(start, kind="stable")
+    sorted_start = start[order]
+    lo = np.searchsorted(sorted_start, end, side="left")
+    hi = np.searchsorted(sorted_start, end, side="right")
+    count = hi - lo
+    successor = np.where(count >= 1, order[np.minimum(lo, n_edges - 1)], -1)
+    for e in np.nonzero(count > 1)[0]:  # pinch vertices: rare, decided one by one
+        candidates = order[lo[e]:hi[e]]
+        d_in = vertices[end[e]] - vertices[start[e]]
+        turns = [
+            -np.inf if end[c] == start[e] else _left_turn(d_in, vertices[end[c]] - vertices[start[c]])
+            for c in candidates
+        ]  # going straight back is the last resort
+        successor[e] = candidates[int(np.argmax(turns))]
+
+    # Each edge is used once: walk successor chains, claiming edges.
+    used = np.zeros(n_edges, dtype=bool)
+    has_predecessor = np.zeros(n_edges, dtype=bool)
+    has_predecessor[successor[successor >= 0]] = True
+    loops: list[BoundaryLoop] = []
+    # Open chains first start where no edge leads in; then closed loops.
+    starts = list(np.nonzero(~has_predecessor)[0]) + list(range(n_edges))
+    for first in starts:
+        if used[first]:
+            continue
+        chain = []
+        e = int(first)
+        while e >= 0 and not used[e]:
+            used[e] = True
+            chain.append(e)
+            e = int(successor[e])
+        closed = e == first
+        chain_arr = np.asarray(chain, dtype=np.int64)
+        if closed:
+            pts = vertices[start[chain_arr]]
+        else:
+            pts = np.concatenate([vertices[start[chain_arr]], vertices[end[chain_arr[-1:]]]])
+        loops.append(BoundaryLoop(points=pts, polygons=owner[chain_arr], closed=closed))
+    return loops
+
+
+# --------------------------------------------------------------------------
+# Sampling
+# --------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class LoopSamples:
+    """Points taken at even spacing along boundary loops.
+
+    Attributes:
+        position: (M,3) sample points on the loop.
+        tangent: (M,3) unit direction of the edge each sample lies on.
+        polygon: (M,) navmesh polygon owning that edge.
+        loop: (M,) index of the loop the sample belongs to.
+        spacing: (L,) the spacing actually used on each loop, metres.
+        closed: (L,) bool, whether each loop is closed.
+    Samples of one loop are contiguous and in walking order.
+    """
+
+    position: np.ndarray
+    tangent: np.ndarray
+    polygon: np.ndarray
+    loop: np.ndarray
+    spacing: np.ndarray
+    closed: np.ndarray
+
+
+def sample_loops(loops: list[BoundaryLoop], step: float) -> LoopSamples:
+    """Samples every ``step`` metres (rounded so each loop is evenly divided).
+
+    Sample k of a loop of length L with n = max(1, round(L / step)) samples
+    lies at arc length (k + 1/2) L / n, so no sample sits on a corner.
+    """
+    if not loops or step <= 0:
+        z = np.zeros((0, 3))
+        none = np.zeros(0, np.int64)
+        return LoopSamples(z, z.copy(), none, none.copy(), np.zeros(len(loops)), np.zeros(len(loops), bool))
+    seg_a, seg_b, seg_poly, seg_loop = [], [], [], []
+    for index, lp in enumerate(loops):
+        pts = lp.points
+        a = pts[: lp.edge_count]
+        b = np.roll(pts, -1, axis=0)[: lp.edge_count] if lp.closed else pts[1:]
+        seg_a.append(a)
+        seg_b.append(b)
+        seg_poly.append(lp.polygons)
+        seg_loop.append(np.full(lp.edge_count, index, dtype=np.int64))
+    A = np.concatenate(seg_a)
+    B = np.concatenate(seg_b)
+    poly = np.concatenate(seg_poly)
+    loop_of_edge = np.concatenate(seg_loop)
+    length = np.linalg.norm(B - A, axis=1)
+    cum = np.concatenate([[0.0], np.cumsum(length)])  # global arc length over all loops
+    n_loops = len(loops)
+    loop_start = np.searchsorted(loop_of_edge, np.arange(n_loops), side="left")
+    loop_len = np.bincount(loop_of_edge, weights=length, minlength=n_loops)
+    n_samples = np.maximum(1, np.rint(loop_len / step)).astype(np.int64)
+    spacing = loop_len / n_samples
+    sample_loop = np.repeat(np.arange(n_loops), n_samples)
+    k = np.arange(len(sample_loop)) - np.repeat(np.cumsum(n_samples) - n_samples, n_samples)
+    s = cum[loop_start[sample_loop]] + (k + 0.5) * spacing[sample_loop]
+    edge = np.searchsorted(cum, s, side="right") - 1
+    # stay inside the sample's own loop (zero-length edges at loop ends)
+    last_edge = np.r_[loop_start[1:], len(length)] - 1
+    edge = np.clip(edge, loop_start[sample_loop], last_edge[sample_loop])
+    f = np.clip((s - cum[edge]) / np.where(length[edge] > 0, length[edge], 1.0), 0.0, 1.0)
+    position = A[edge] + f[:, None] * (B[edge] - A[edge])
+    tangent = (B[edge] - A[edge]) / np.where(length[edge] > 0, length[edge], 1.0)[:, None]
+    closed = np.array([lp.closed for lp in loops], dtype=bool)
+    return LoopSamples(position, tangent, poly[edge], sample_loop, spacing, closed)
+
+
+def polygon_components(neighbours: np.ndarray) -> np.ndarray:
+    """(P,) connected-component label of every navmesh polygon (polygons joined across shared edges)."""
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
+
+    neighbours = np.asarray(neighbours)
+    p = len(neighbours)
+    i, j = np.nonzero(neighbours >= 0)
+    k = neighbours[i, j].astype(np.int64)
+    graph = coo_matrix((np.ones(len(i)), (i, k)), shape=(p, p))
+    return connected_components(graph, directed=False)[1].astype(np.int64)
