@@ -8,6 +8,11 @@ This is the paper's "restart after each removal" loop without re-testing the
 children that already failed (their answer cannot change: A, them and their
 children are unchanged).
 
+Terminals (nodes with ``terminal=True``) are never removed: they are the
+points the structure exists to join. In the paper's two use cases terminals
+are leaves of the tree, which Algorithm 4 never removes anyway; a selector
+that picks inner nodes (e.g. by centrality) relies on this rule.
+
 Complexity: O(n + k) predicate calls, k = number of removals, each call
 plus the predicate's own cost.
 """
@@ -48,7 +53,8 @@ def _simplify_from(tree: nx.DiGraph, root: int, predicate: Predicate) -> None:
         while queue:
             b = queue.popleft()
             grandchildren = sorted(tree.successors(b))
-            if grandchildren and all(predicate(tree, a, b, c) for c in grandchildren):
+            removable = grandchildren and not tree.nodes[b].get("terminal", False)
+            if removable and all(predicate(tree, a, b, c) for c in grandchildren):
                 tree.remove_node(b)
                 for c in grandchildren:
                     length = float(np.linalg.norm(np.subtract(tree.nodes[a]["pos"], tree.nodes[c]["pos"])))

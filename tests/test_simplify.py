@@ -63,3 +63,10 @@ def test_max_length_rule_matches_a_hand_computed_result():
 def test_leaves_and_roots_are_never_removed():
     structure = simplify_forest(rooted_path(2), lambda tree, a, b, c: True)
     assert sorted(structure.nodes) == [0, 1]
+
+
+def test_terminals_are_never_removed():
+    forest = rooted_path(5)
+    forest.nodes[2]["terminal"] = True
+    structure = simplify_forest(forest, lambda tree, a, b, c: True)
+    assert sorted(structure.edges) == [(0, 2), (2, 4)]

@@ -18,6 +18,7 @@ from __future__ import annotations
 import networkx as nx
 import numpy as np
 
+from g2s_core.errors import G2SError
 from g2s_core.plugin import hookimpl
 from g2s_plugins.recast import NavMesh, RecastParams, build_navmesh
 
@@ -56,9 +57,23 @@ def navmesh_graph(navmesh: NavMesh) -> nx.Graph:
 
 @hookimpl
 def g2s_build_graph(mesh, params, context):
-    """Build the navmesh of ``mesh`` for ``context.agent`` and return its polygon graph."""
+    """Build the navmesh of ``mesh`` for ``context.agent`` and return its polygon graph.
+
+    Raises:
+        G2SError: the mesh has no surface this agent can walk (a property of
+            the input and the agent settings, not a failure of the program).
+    """
     params = params if params is not None else Params()
-    navmesh = build_navmesh(mesh.vertices, mesh.faces, context.agent, params)
+    try:
+        navmesh = build_navmesh(mesh.vertices, mesh.faces, context.agent, params)
+    except RuntimeError as exc:
+        if "no walkable" not in str(exc):
+            raise
+        agent = context.agent
+        raise G2SError(
+            f"no walkable surface for the agent (radius {agent.radius} m, height {agent.height} m, "
+            f"max climb {agent.max_climb} m, max slope {agent.max_slope} deg): {exc}; "
+            "check the agent settings and the mesh's up_axis and scale"
+        ) from exc
     context.navmesh = navmesh
-    graph = navmesh_graph(navmesh)
-    return graph
+    return navmesh_graph(navmesh)
