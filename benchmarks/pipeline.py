@@ -24,7 +24,9 @@ import time
 from collections.abc import Callable
 from typing import Any
 
+import igraph
 import networkx as nx
+import rustworkx as rx
 
 from g2s_core import pipeline, samples
 from g2s_core.config import PRESETS_DIR, load_config
@@ -37,10 +39,23 @@ from g2s_plugins.steiner.mehlhorn import mehlhorn_steiner_tree
 STAGES_2_TO_5 = ("terminals", "steiner", "roots", "simplify", "analysis")
 
 
+REPEAT_SECONDS = 2.0
+"""Calls are repeated (up to 5 times) while they have taken less than this; the best time counts."""
+
+
+def best_of(function: Callable[[], Any]) -> tuple[float, Any]:
+    """(best seconds, value) of repeated calls of ``function``."""
+    times, spent, value = [], 0.0, None
+    while len(times) < 5 and (not times or spent < REPEAT_SECONDS):
+        start = time.perf_counter()
+        value = function()
+        times.append(time.perf_counter() - start)
+        spent += times[-1]
+    return min(times), value
+
+
 def _child(queue: mp.Queue, function: Callable[[], Any]) -> None:
-    start = time.perf_counter()
-    value = function()
-    queue.put((time.perf_counter() - start, value))
+    queue.put(best_of(function))
 
 
 def timed_in_child(function: Callable[[], Any], limit: float) -> tuple[float | None, Any]:
@@ -56,12 +71,6 @@ def timed_in_child(function: Callable[[], Any], limit: float) -> tuple[float | N
     return queue.get()
 
 
-def timed(function: Callable[[], Any]) -> tuple[float, Any]:
-    start = time.perf_counter()
-    value = function()
-    return time.perf_counter() - start, value
-
-
 def tree_weight(tree: nx.Graph, graph: nx.Graph) -> float:
     return sum(graph.edges[u, v]["weight"] for u, v in tree.edges)
 
@@ -73,8 +82,6 @@ def largest_component(graph: nx.Graph, terminals: list[int]) -> tuple[nx.Graph, 
 
 
 def rustworkx_steiner(graph: nx.Graph, terminals: list[int]) -> float:
-    import rustworkx as rx
-
     order = sorted(graph)
     index = {n: i for i, n in enumerate(order)}
     rx_graph = rx.PyGraph()
@@ -85,8 +92,6 @@ def rustworkx_steiner(graph: nx.Graph, terminals: list[int]) -> float:
 
 
 def rustworkx_betweenness(tree: nx.Graph) -> int:
-    import rustworkx as rx
-
     order = sorted(tree)
     index = {n: i for i, n in enumerate(order)}
     rx_tree = rx.PyGraph()
@@ -96,8 +101,6 @@ def rustworkx_betweenness(tree: nx.Graph) -> int:
 
 
 def igraph_betweenness(tree: nx.Graph) -> int:
-    import igraph
-
     order = sorted(tree)
     index = {n: i for i, n in enumerate(order)}
     return len(igraph.Graph(n=len(order), edges=[(index[u], index[v]) for u, v in tree.edges]).betweenness())
@@ -106,14 +109,15 @@ def igraph_betweenness(tree: nx.Graph) -> int:
 def run_level(rooms: int, limit: float, registry: Registry, plan: pipeline.Plan) -> None:
     level = samples.dungeon(seed=0, rooms=rooms)
     mesh = level.mesh
-    result = pipeline.run(plan, registry, mesh, level.name, mesh_sha256(mesh))
+    runs = [pipeline.run(plan, registry, mesh, level.name, mesh_sha256(mesh)) for _ in range(3 if rooms <= 1000 else 1)]
+    result = runs[-1]
     graph, terminals = result.graph, list(result.terminals.nodes)
-    stage = {s.stage: s for s in result.stages}
+    stage = {s.stage: min((r.stage(s.stage) for r in runs), key=lambda best: best.seconds) for s in result.stages}
     ours_2_to_5 = sum(stage[s].seconds for s in STAGES_2_TO_5 if s in stage)
     print(f"\n== dungeon rooms={rooms}: {graph.number_of_nodes()} polygons, {graph.number_of_edges()} edges, "
           f"{len(terminals)} leaf terminals; structure {result.structure.number_of_nodes()} nodes")
-    for s in result.stages:
-        print(f"  g2s {s.stage:<10} {s.seconds * 1000:10.1f} ms")
+    for s in stage.values():
+        print(f"  g2s {s.stage:<10} {s.seconds * 1000:10.1f} ms   (best of {len(runs)} runs)")
     print(f"  g2s stages 2-5 + analysis {ours_2_to_5 * 1000:10.1f} ms")
 
     connected, component_terminals = largest_component(graph, terminals)
@@ -124,7 +128,7 @@ def run_level(rooms: int, limit: float, registry: Registry, plan: pipeline.Plan)
         ("g2s kou", lambda: tree_weight(kou_steiner_tree(connected, component_terminals), connected)),
         ("g2s mehlhorn", lambda: tree_weight(mehlhorn_steiner_tree(connected, component_terminals), connected)),
     ):
-        seconds, weight = timed(function)
+        seconds, weight = best_of(function)
         rows.append((name, seconds, weight))
     for name, function in (
         ("rustworkx steiner_tree", lambda: rustworkx_steiner(connected, component_terminals)),
@@ -139,9 +143,10 @@ def run_level(rooms: int, limit: float, registry: Registry, plan: pipeline.Plan)
         weight_text = f"weight {weight:.2f}" if weight is not None else ""
         print(f"  {name:<32} {shown} {ratio:>10}  {weight_text}")
 
-    ours_seconds, _ = timed(lambda: tree_betweenness(steiner_tree))
+    ours_seconds, _ = best_of(lambda: tree_betweenness(steiner_tree))
     print(f"  betweenness on the Steiner tree ({steiner_tree.number_of_nodes()} nodes):")
     print(f"  {'g2s tree formula':<32} {ours_seconds * 1000:10.2f} ms")
+    networkx_betweenness = None
     for name, function in (
         ("rustworkx betweenness", lambda: rustworkx_betweenness(steiner_tree)),
         ("igraph betweenness", lambda: igraph_betweenness(steiner_tree)),
@@ -150,9 +155,15 @@ def run_level(rooms: int, limit: float, registry: Registry, plan: pipeline.Plan)
         seconds, _ = timed_in_child(function, limit)
         shown = f"{seconds * 1000:10.2f} ms  x{seconds / ours_seconds:9.1f}" if seconds is not None else f"> {int(limit)} s"
         print(f"  {name:<32} {shown}")
-    nx_total = sum(r[1] for r in rows if r[0] == "networkx steiner_tree kou" and r[1] is not None)
-    if nx_total:
-        print(f"  stages 2-5 + analysis vs networkx kou alone: x{nx_total / ours_2_to_5:.0f}")
+        if name.startswith("networkx"):
+            networkx_betweenness = seconds
+    networkx_kou = next(r[1] for r in rows if r[0] == "networkx steiner_tree kou")
+    if networkx_kou is not None and networkx_betweenness is not None:
+        # the paper's expensive steps done with networkx: its Kou and its betweenness
+        print(f"  networkx kou + betweenness {(networkx_kou + networkx_betweenness) * 1000:.1f} ms: "
+              f"g2s stages 2-5 + analysis x{(networkx_kou + networkx_betweenness) / ours_2_to_5:.0f} faster")
+    else:
+        print(f"  networkx kou + betweenness > {int(limit)} s: g2s stages 2-5 + analysis > x{limit / ours_2_to_5:.0f} faster")
 
 
 def main() -> None:
