@@ -1,8 +1,15 @@
-// g2s_plugins.recast._recast: a solo Recast navmesh build and Detour queries.
+// g2s_plugins.recast._recast: Recast navmesh builds (solo or tiled) and Detour queries.
 //
-// The build follows Recast's standard single-tile pipeline; the mesh data
-// (polygons, neighbours, detail triangles) is copied out of the Recast
-// structures into plain vectors, and the Detour navmesh + query object are
+// A solo build runs Recast's single-tile pipeline over the whole grid. A tiled
+// build cuts the grid into square tiles of `tile_size` cells, rasterises each
+// tile (plus a border of walkableRadius + 3 cells) from the triangles whose
+// bounding boxes overlap it, builds a poly mesh + detail mesh per tile, and adds
+// every tile to one dtNavMesh. Tiles are built in parallel worker threads.
+//
+// The mesh data (polygons, detail triangles) is copied out of the Recast
+// structures into plain vectors with global indices (tiles in row-major order,
+// polygons in tile order); neighbours and portals come from Detour's links, so
+// they include tile-border adjacency. The Detour navmesh + query object are
 // kept for raycasts and nearest-polygon look-ups.
 
 #include <nanobind/nanobind.h>
@@ -20,16 +27,20 @@
 #include <DetourStatus.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cfloat>
 #include <chrono>
 #include <cmath>
-#include <cstdarg>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <thread>
+#include <unordered_map>
 #include <vector>
 
 namespace nb = nanobind;
@@ -53,10 +64,20 @@ protected:
     }
 };
 
-[[noreturn]] void fail(const std::string& step, const LogContext* ctx = nullptr) {
-    std::string msg = "Recast: " + step;
+// A solo build failed at a step limited by one tile's 16-bit indices (regions,
+// poly-mesh vertices, Detour tile data): the automatic mode retries with tiles.
+struct TooBigForSolo : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+std::string message(const std::string& step, const std::string& where, const LogContext* ctx) {
+    std::string msg = "Recast: " + step + where;
     if (ctx && !ctx->errors.empty()) msg += " (" + ctx->errors + ")";
-    throw std::runtime_error(msg);
+    return msg;
+}
+
+[[noreturn]] void fail(const std::string& step, const LogContext* ctx = nullptr, const std::string& where = "") {
+    throw std::runtime_error(message(step, where, ctx));
 }
 
 struct HeightfieldDel { void operator()(rcHeightfield* p) const { rcFreeHeightField(p); } };
@@ -66,17 +87,32 @@ struct PolyMeshDel { void operator()(rcPolyMesh* p) const { rcFreePolyMesh(p); }
 struct DetailDel { void operator()(rcPolyMeshDetail* p) const { rcFreePolyMeshDetail(p); } };
 struct NavMeshDel { void operator()(dtNavMesh* p) const { dtFreeNavMesh(p); } };
 struct QueryDel { void operator()(dtNavMeshQuery* p) const { dtFreeNavMeshQuery(p); } };
+struct DtFreeDel { void operator()(unsigned char* p) const { dtFree(p); } };
 
 template <typename T>
-nb::object to_numpy(const std::vector<T>& src, size_t rows, size_t cols) {
+nb::object to_numpy(const std::vector<T>& src, size_t rows, size_t cols, size_t depth = 0) {
     auto* copy = new std::vector<T>(src);
     if (copy->empty()) copy->resize(1);  // keep a valid data pointer for empty arrays
     nb::capsule owner(copy, [](void* p) noexcept { delete static_cast<std::vector<T>*>(p); });
+    if (depth != 0)
+        return nb::cast(nb::ndarray<nb::numpy, T>(copy->data(), {rows, cols, depth}, owner), nb::rv_policy::move);
     if (cols == 0) return nb::cast(nb::ndarray<nb::numpy, T>(copy->data(), {rows}, owner), nb::rv_policy::move);
     return nb::cast(nb::ndarray<nb::numpy, T>(copy->data(), {rows, cols}, owner), nb::rv_policy::move);
 }
 
+unsigned int bits_for(unsigned int n) {  // Detour's dtIlog2(dtNextPow2(n))
+    unsigned int p = 1, b = 0;
+    while (p < n) { p <<= 1; ++b; }
+    return b;
+}
+
 // ---------------------------------------------------------------- settings
+
+// Automatic tiling: solo when both grid sides are at most this many cells
+// (and the solo build fits one tile), otherwise tiles of AUTO_TILE_SIZE cells.
+constexpr int AUTO_SOLO_MAX_CELLS = 512;
+constexpr int AUTO_TILE_SIZE = 256;
+constexpr int MIN_TILE_SIZE = 16;
 
 struct Settings {
     double cell_size, cell_height;
@@ -86,6 +122,8 @@ struct Settings {
     int verts_per_poly;
     double detail_sample_dist, detail_sample_max_error;
     long long max_cells;
+    int tile_size;  // -1: automatic, 0: solo, > 0: tiles of this many cells
+    int threads;    // worker threads of a tiled build; 0: hardware concurrency
 };
 
 void check_settings(const Settings& s) {
@@ -112,6 +150,177 @@ void check_settings(const Settings& s) {
     non_negative(s.detail_sample_max_error, "detail_sample_max_error");
     if (s.verts_per_poly < 3 || s.verts_per_poly > DT_VERTS_PER_POLYGON)
         throw nb::value_error("Recast: verts_per_poly must be in [3, 6] (Detour's DT_VERTS_PER_POLYGON)");
+    if (s.tile_size != -1 && s.tile_size != 0 && s.tile_size < MIN_TILE_SIZE)
+        throw nb::value_error("Recast: tile_size must be None (automatic), 0 (solo) or >= 16 cells");
+    if (s.threads < 0) throw nb::value_error("Recast: threads must be >= 0");
+}
+
+// ---------------------------------------------------------------- one tile
+
+// The Recast output of one tile, copied out, plus its Detour tile data.
+struct TileMesh {
+    int tx = 0, ty = 0;
+    int nverts = 0, npolys = 0;
+    std::vector<int32_t> gverts;          // (nverts,3): global grid x cell, y cell, global grid z cell
+    std::vector<unsigned short> polys;    // (npolys,nvp) local vertex indices, RC_MESH_NULL_IDX padded
+    std::vector<unsigned char> areas;     // (npolys,)
+    std::vector<unsigned short> regs;     // (npolys,) local region ids
+    std::vector<float> dverts;            // (DV,3) world
+    std::vector<int32_t> dtris;           // (DT,3) local detail vertex indices
+    std::vector<int32_t> dpoly;           // (DT,) local polygon
+    std::unique_ptr<unsigned char, DtFreeDel> data;  // dtCreateNavMeshData output
+    int data_size = 0;
+    std::string empty_reason;             // why the tile has no polygons (npolys == 0)
+};
+
+// Input shared by every tile of a build.
+struct Input {
+    const float* verts;
+    int nv;
+    const int* tris;
+    int nt;
+};
+
+// Runs Recast's pipeline for one tile (`c` holds its grid, bounds and border)
+// over the triangles `tris` (ntris), and fills `out`. `gx0`, `gz0`: the global
+// grid cell of the tile's first (non-border) cell. `solo` marks the whole-grid
+// build, whose size-limited failures throw TooBigForSolo. `where` is appended
+// to error messages (" in tile (x, y)" for tiled builds).
+void build_tile(const Input& in, const int* tris, int ntris, const rcConfig& c, const Settings& s,
+                int gx0, int gz0, bool solo, const std::string& where, TileMesh& out) {
+    LogContext ctx;
+    auto too_big = [&](const std::string& step) {
+        if (solo) throw TooBigForSolo(message(step, where, &ctx));
+        fail(step, &ctx, where);
+    };
+
+    // 1. Rasterize the walkable triangles.
+    std::unique_ptr<rcHeightfield, HeightfieldDel> solid(rcAllocHeightfield());
+    if (!solid) fail("rcAllocHeightfield failed (out of memory)", nullptr, where);
+    if (!rcCreateHeightfield(&ctx, *solid, c.width, c.height, c.bmin, c.bmax, c.cs, c.ch))
+        fail("rcCreateHeightfield failed", &ctx, where);
+    {
+        std::vector<unsigned char> tri_areas(static_cast<size_t>(ntris), 0);
+        rcMarkWalkableTriangles(&ctx, c.walkableSlopeAngle, in.verts, in.nv, tris, ntris, tri_areas.data());
+        if (!rcRasterizeTriangles(&ctx, in.verts, in.nv, tris, tri_areas.data(), ntris, *solid, c.walkableClimb))
+            fail("rcRasterizeTriangles failed", &ctx, where);
+    }
+
+    // 2. Filter walkable surfaces.
+    rcFilterLowHangingWalkableObstacles(&ctx, c.walkableClimb, *solid);
+    rcFilterLedgeSpans(&ctx, c.walkableHeight, c.walkableClimb, *solid);
+    rcFilterWalkableLowHeightSpans(&ctx, c.walkableHeight, *solid);
+
+    // 3. Compact heightfield, erosion by the agent radius.
+    std::unique_ptr<rcCompactHeightfield, CompactDel> chf(rcAllocCompactHeightfield());
+    if (!chf) fail("rcAllocCompactHeightfield failed (out of memory)", nullptr, where);
+    if (!rcBuildCompactHeightfield(&ctx, c.walkableHeight, c.walkableClimb, *solid, *chf))
+        fail("rcBuildCompactHeightfield failed", &ctx, where);
+    solid.reset();
+    if (!rcErodeWalkableArea(&ctx, c.walkableRadius, *chf)) fail("rcErodeWalkableArea failed", &ctx, where);
+    int walkable_spans = 0;
+    for (int i = 0; i < chf->spanCount; ++i)
+        if (chf->areas[i] != RC_NULL_AREA) ++walkable_spans;
+    if (walkable_spans == 0) {
+        out.empty_reason = "no walkable surface left after filtering and erosion";
+        return;
+    }
+
+    // 4. Watershed regions.
+    if (!rcBuildDistanceField(&ctx, *chf)) fail("rcBuildDistanceField failed", &ctx, where);
+    if (!rcBuildRegions(&ctx, *chf, c.borderSize, c.minRegionArea, c.mergeRegionArea))
+        too_big("rcBuildRegions failed");
+
+    // 5. Contours, polygons, detail.
+    std::unique_ptr<rcContourSet, ContourDel> cset(rcAllocContourSet());
+    if (!cset) fail("rcAllocContourSet failed (out of memory)", nullptr, where);
+    if (!rcBuildContours(&ctx, *chf, c.maxSimplificationError, c.maxEdgeLen, *cset))
+        fail("rcBuildContours failed", &ctx, where);
+    if (cset->nconts == 0) {
+        out.empty_reason = "no contours; regions too small?";
+        return;
+    }
+    std::unique_ptr<rcPolyMesh, PolyMeshDel> pmesh(rcAllocPolyMesh());
+    if (!pmesh) fail("rcAllocPolyMesh failed (out of memory)", nullptr, where);
+    if (!rcBuildPolyMesh(&ctx, *cset, c.maxVertsPerPoly, *pmesh)) too_big("rcBuildPolyMesh failed");
+    if (pmesh->npolys == 0) return;
+    std::unique_ptr<rcPolyMeshDetail, DetailDel> dmesh(rcAllocPolyMeshDetail());
+    if (!dmesh) fail("rcAllocPolyMeshDetail failed (out of memory)", nullptr, where);
+    if (!rcBuildPolyMeshDetail(&ctx, *pmesh, *chf, c.detailSampleDist, c.detailSampleMaxError, *dmesh))
+        too_big("rcBuildPolyMeshDetail failed");
+    chf.reset();
+    cset.reset();
+
+    // 6. Copy the mesh data out (vertices in global grid cells).
+    rcPolyMesh& pm = *pmesh;
+    const int nvp = pm.nvp;
+    out.nverts = pm.nverts;
+    out.npolys = pm.npolys;
+    out.gverts.resize(static_cast<size_t>(pm.nverts) * 3);
+    for (int i = 0; i < pm.nverts; ++i) {
+        const unsigned short* v = &pm.verts[i * 3];
+        out.gverts[i * 3 + 0] = gx0 + v[0];
+        out.gverts[i * 3 + 1] = v[1];
+        out.gverts[i * 3 + 2] = gz0 + v[2];
+    }
+    out.polys.resize(static_cast<size_t>(pm.npolys) * nvp);
+    out.areas.resize(pm.npolys);
+    out.regs.resize(pm.npolys);
+    for (int i = 0; i < pm.npolys; ++i) {
+        std::copy(&pm.polys[i * 2 * nvp], &pm.polys[i * 2 * nvp] + nvp, &out.polys[static_cast<size_t>(i) * nvp]);
+        out.areas[i] = pm.areas[i];
+        out.regs[i] = pm.regs[i];
+        pm.flags[i] = 1;  // Detour's default filter needs a non-zero flag
+    }
+    const rcPolyMeshDetail& dm = *dmesh;
+    out.dverts.assign(dm.verts, dm.verts + static_cast<size_t>(dm.nverts) * 3);
+    out.dtris.reserve(static_cast<size_t>(dm.ntris) * 3);
+    out.dpoly.reserve(dm.ntris);
+    for (int i = 0; i < dm.nmeshes; ++i) {
+        const unsigned int vbase = dm.meshes[i * 4 + 0];
+        const unsigned int tbase = dm.meshes[i * 4 + 2];
+        const unsigned int tcount = dm.meshes[i * 4 + 3];
+        for (unsigned int k = 0; k < tcount; ++k) {
+            const unsigned char* t = &dm.tris[(tbase + k) * 4];
+            out.dtris.push_back(static_cast<int32_t>(vbase + t[0]));
+            out.dtris.push_back(static_cast<int32_t>(vbase + t[1]));
+            out.dtris.push_back(static_cast<int32_t>(vbase + t[2]));
+            out.dpoly.push_back(i);
+        }
+    }
+
+    // 7. Detour tile data.
+    dtNavMeshCreateParams params;
+    std::memset(&params, 0, sizeof(params));
+    params.verts = pm.verts;
+    params.vertCount = pm.nverts;
+    params.polys = pm.polys;
+    params.polyAreas = pm.areas;
+    params.polyFlags = pm.flags;
+    params.polyCount = pm.npolys;
+    params.nvp = pm.nvp;
+    params.detailMeshes = dm.meshes;
+    params.detailVerts = dm.verts;
+    params.detailVertsCount = dm.nverts;
+    params.detailTris = dm.tris;
+    params.detailTriCount = dm.ntris;
+    params.walkableHeight = static_cast<float>(s.agent_height);
+    params.walkableRadius = static_cast<float>(s.agent_radius);
+    params.walkableClimb = static_cast<float>(s.agent_max_climb);
+    params.tileX = out.tx;
+    params.tileY = out.ty;
+    params.tileLayer = 0;
+    rcVcopy(params.bmin, pm.bmin);
+    rcVcopy(params.bmax, pm.bmax);
+    params.cs = c.cs;
+    params.ch = c.ch;
+    params.buildBvTree = true;
+    unsigned char* data = nullptr;
+    int data_size = 0;
+    if (!dtCreateNavMeshData(&params, &data, &data_size))
+        too_big("dtCreateNavMeshData failed (too many vertices or polygons for one tile?)");
+    out.data.reset(data);
+    out.data_size = data_size;
 }
 
 // ---------------------------------------------------------------- navmesh
@@ -128,10 +337,16 @@ public:
     std::vector<double> dverts;         // (DV,3) world
     std::vector<int32_t> dtris;         // (DT,3) global detail vertex indices
     std::vector<int32_t> dtri_poly;     // (DT,)
+    std::vector<int64_t> portal_pairs;  // (E,2) a < b, sorted
+    std::vector<double> portal_ends;    // (E,2,3) shared segment end points, along a's edge
     int npolys = 0;
 
-    // Resolved Recast configuration.
+    // Resolved Recast configuration and tiling.
     rcConfig cfg{};
+    int tile_size = 0;                  // 0: solo
+    int tiles_x = 1, tiles_y = 1;       // tile grid
+    int border_size = 0;
+    bool auto_fallback = false;         // automatic mode: solo was too big, built with tiles
     double build_seconds = 0.0;
     float climb_tolerance = 0.0f;
     float default_ext[3] = {0, 0, 0};
@@ -139,19 +354,27 @@ public:
     std::unique_ptr<dtNavMesh, NavMeshDel> nav;
     std::unique_ptr<dtNavMeshQuery, QueryDel> query;
     dtQueryFilter filter;  // default: all areas, include all flags
-    dtPolyRef ref_base = 0;
+    // Global polygon index <-> dtPolyRef: for the k-th added tile (row-major
+    // order), its first global index and its Detour poly-ref base; and the
+    // first global index by Detour tile index.
+    std::vector<int> tile_first;
+    std::vector<dtPolyRef> tile_ref_base;
+    std::vector<int> first_by_tile_index;
     mutable std::mutex mutex;
 
     void build(const float* vin, int nv, const int* tin, int nt, const Settings& s);
 
-    // Index <-> reference for the single tile.
     int ref_to_index(dtPolyRef ref) const {
         if (ref == 0) return -1;
-        return static_cast<int>(nav->decodePolyIdPoly(ref));
+        const unsigned int it = nav->decodePolyIdTile(ref);
+        if (it >= first_by_tile_index.size() || first_by_tile_index[it] < 0) return -1;
+        return first_by_tile_index[it] + static_cast<int>(nav->decodePolyIdPoly(ref));
     }
     dtPolyRef index_to_ref(int index) const {
         if (index < 0 || index >= npolys) throw nb::index_error("polygon index out of range");
-        return ref_base | static_cast<dtPolyRef>(index);
+        const size_t k = static_cast<size_t>(
+            std::upper_bound(tile_first.begin(), tile_first.end(), index) - tile_first.begin() - 1);
+        return tile_ref_base[k] | static_cast<dtPolyRef>(index - tile_first[k]);
     }
 
     // Nearest polygon (index or -1) and nearest point.
@@ -194,11 +417,385 @@ public:
             return {ok, hit.t};
         }
     }
+
+private:
+    std::vector<std::unique_ptr<TileMesh>> build_solo(const Input& in, const Settings& s);
+    std::vector<std::unique_ptr<TileMesh>> build_tiled(const Input& in, const Settings& s, int ts);
+    void assemble(std::vector<std::unique_ptr<TileMesh>>& tiles);
+    void link_topology();
 };
+
+std::vector<std::unique_ptr<TileMesh>> NavMeshCore::build_solo(const Input& in, const Settings& s) {
+    tile_size = 0;
+    tiles_x = tiles_y = 1;
+    border_size = 0;
+    rcConfig c = cfg;
+    c.borderSize = 0;
+    c.tileSize = 0;
+    auto tile = std::make_unique<TileMesh>();
+    build_tile(in, in.tris, in.nt, c, s, 0, 0, true, "", *tile);
+    if (tile->npolys == 0) {
+        if (tile->empty_reason.empty()) fail("no walkable polygons");
+        fail("no walkable polygons (" + tile->empty_reason + ")");
+    }
+    std::vector<std::unique_ptr<TileMesh>> out;
+    out.push_back(std::move(tile));
+    return out;
+}
+
+std::vector<std::unique_ptr<TileMesh>> NavMeshCore::build_tiled(const Input& in, const Settings& s, int ts) {
+    const rcConfig& g = cfg;
+    tile_size = ts;
+    border_size = g.walkableRadius + 3;
+    tiles_x = (g.width + ts - 1) / ts;
+    tiles_y = (g.height + ts - 1) / ts;
+    const int ntiles = tiles_x * tiles_y;
+    const int border = border_size;
+    const float tw = static_cast<float>(ts) * g.cs;     // tile width, world
+    const float bw = static_cast<float>(border) * g.cs;  // border width, world
+
+    // Bin the triangles into the tiles their xz bounding box (widened by the
+    // border) overlaps: two passes over the triangles, a CSR list per tile.
+    const int nt = in.nt;
+    std::vector<int> lo_x(nt), hi_x(nt), lo_z(nt), hi_z(nt);
+    std::vector<size_t> start(static_cast<size_t>(ntiles) + 1, 0);
+    for (int t = 0; t < nt; ++t) {
+        const float* a = &in.verts[in.tris[t * 3 + 0] * 3];
+        const float* b = &in.verts[in.tris[t * 3 + 1] * 3];
+        const float* d = &in.verts[in.tris[t * 3 + 2] * 3];
+        const float minx = std::min({a[0], b[0], d[0]}), maxx = std::max({a[0], b[0], d[0]});
+        const float minz = std::min({a[2], b[2], d[2]}), maxz = std::max({a[2], b[2], d[2]});
+        // tile tx spans [orig + tx*tw - bw, orig + (tx+1)*tw + bw]; a cell of slack either side
+        const float slack = g.cs;
+        // (first tile: the one whose own span holds min - bw; last: the one holding max + bw)
+        int x0 = static_cast<int>(std::floor((minx - g.bmin[0] - bw - slack) / tw));
+        int x1 = static_cast<int>(std::floor((maxx - g.bmin[0] + bw + slack) / tw));
+        int z0 = static_cast<int>(std::floor((minz - g.bmin[2] - bw - slack) / tw));
+        int z1 = static_cast<int>(std::floor((maxz - g.bmin[2] + bw + slack) / tw));
+        x0 = std::max(x0, 0); z0 = std::max(z0, 0);
+        x1 = std::min(x1, tiles_x - 1); z1 = std::min(z1, tiles_y - 1);
+        lo_x[t] = x0; hi_x[t] = x1; lo_z[t] = z0; hi_z[t] = z1;
+        for (int tz = z0; tz <= z1; ++tz)
+            for (int tx = x0; tx <= x1; ++tx) ++start[static_cast<size_t>(tz) * tiles_x + tx + 1];
+    }
+    for (int k = 0; k < ntiles; ++k) start[k + 1] += start[k];
+    std::vector<int> members(start[ntiles]);
+    {
+        std::vector<size_t> fill(start.begin(), start.end() - 1);
+        for (int t = 0; t < nt; ++t)
+            for (int tz = lo_z[t]; tz <= hi_z[t]; ++tz)
+                for (int tx = lo_x[t]; tx <= hi_x[t]; ++tx)
+                    members[fill[static_cast<size_t>(tz) * tiles_x + tx]++] = t;
+    }
+    std::vector<int>().swap(lo_x); std::vector<int>().swap(hi_x);
+    std::vector<int>().swap(lo_z); std::vector<int>().swap(hi_z);
+
+    // Build the tiles in worker threads; results by tile (row-major).
+    std::vector<std::unique_ptr<TileMesh>> results(ntiles);
+    std::vector<std::string> errors(ntiles);
+    std::atomic<int> next{0};
+    std::atomic<bool> stop{false};
+    auto worker = [&]() {
+        std::vector<int> sub;
+        for (;;) {
+            const int k = next.fetch_add(1);
+            if (k >= ntiles || stop.load()) return;
+            const int tx = k % tiles_x, ty = k / tiles_x;
+            const size_t m0 = start[k], m1 = start[k + 1];
+            if (m0 == m1) continue;  // no triangle here: empty tile
+            try {
+                sub.resize((m1 - m0) * 3);
+                for (size_t m = m0; m < m1; ++m) {
+                    const int t = members[m];
+                    sub[(m - m0) * 3 + 0] = in.tris[t * 3 + 0];
+                    sub[(m - m0) * 3 + 1] = in.tris[t * 3 + 1];
+                    sub[(m - m0) * 3 + 2] = in.tris[t * 3 + 2];
+                }
+                rcConfig c = g;
+                c.tileSize = ts;
+                c.borderSize = border;
+                c.width = ts + 2 * border;
+                c.height = ts + 2 * border;
+                c.bmin[0] = g.bmin[0] + static_cast<float>(tx * ts - border) * g.cs;
+                c.bmin[2] = g.bmin[2] + static_cast<float>(ty * ts - border) * g.cs;
+                c.bmax[0] = g.bmin[0] + static_cast<float>((tx + 1) * ts + border) * g.cs;
+                c.bmax[2] = g.bmin[2] + static_cast<float>((ty + 1) * ts + border) * g.cs;
+                auto tile = std::make_unique<TileMesh>();
+                tile->tx = tx;
+                tile->ty = ty;
+                const std::string where = " in tile (" + std::to_string(tx) + ", " + std::to_string(ty) +
+                                          ") of " + std::to_string(tiles_x) + " x " + std::to_string(tiles_y);
+                build_tile(in, sub.data(), static_cast<int>(m1 - m0), c, s, tx * ts, ty * ts, false, where, *tile);
+                if (tile->npolys > 0) results[k] = std::move(tile);
+            } catch (const std::bad_alloc&) {
+                errors[k] = "Recast: out of memory in tile (" + std::to_string(tx) + ", " + std::to_string(ty) + ")";
+                stop.store(true);
+            } catch (const std::exception& e) {
+                errors[k] = e.what();
+                stop.store(true);
+            }
+        }
+    };
+    int nthreads = s.threads > 0 ? s.threads : static_cast<int>(std::thread::hardware_concurrency());
+    nthreads = std::max(1, std::min({nthreads, ntiles, 64}));
+    if (nthreads == 1) {
+        worker();
+    } else {
+        std::vector<std::thread> pool;
+        pool.reserve(nthreads);
+        for (int i = 0; i < nthreads; ++i) pool.emplace_back(worker);
+        for (auto& th : pool) th.join();
+    }
+    for (int k = 0; k < ntiles; ++k)
+        if (!errors[k].empty()) throw std::runtime_error(errors[k]);
+
+    std::vector<std::unique_ptr<TileMesh>> out;
+    for (auto& t : results)
+        if (t) out.push_back(std::move(t));
+    if (out.empty()) fail("no walkable polygons (no tile has any)");
+    return out;
+}
+
+void NavMeshCore::assemble(std::vector<std::unique_ptr<TileMesh>>& tiles) {
+    const rcConfig& g = cfg;
+    nvp = g.maxVertsPerPoly;
+
+    // Detour's 32-bit polygon references: salt + tile + poly bits, salt >= 10.
+    int max_polys = 0;
+    long long total = 0, total_dverts = 0, total_dtris = 0, total_verts = 0;
+    for (const auto& t : tiles) {
+        max_polys = std::max(max_polys, t->npolys);
+        total += t->npolys;
+        total_verts += t->nverts;
+        total_dverts += static_cast<long long>(t->dverts.size() / 3);
+        total_dtris += static_cast<long long>(t->dpoly.size());
+    }
+    if (total > INT32_MAX || total_dverts > INT32_MAX || total_verts > INT32_MAX)
+        fail("navmesh too large (more than 2^31 polygons or vertices)");
+    const unsigned int tile_bits = bits_for(static_cast<unsigned int>(tiles.size()));
+    const unsigned int poly_bits = bits_for(static_cast<unsigned int>(max_polys));
+    if (tile_bits + poly_bits > 22)
+        fail("dtNavMesh::init: " + std::to_string(tiles.size()) + " tiles with up to " +
+             std::to_string(max_polys) + " polygons each need " + std::to_string(tile_bits + poly_bits) +
+             " bits of Detour's 32-bit polygon reference (at most 22 besides the 10-bit salt); "
+             "use a different tile_size or a larger cell_size");
+
+    dtNavMeshParams np;
+    std::memset(&np, 0, sizeof(np));
+    rcVcopy(np.orig, g.bmin);
+    if (tile_size == 0) {  // as dtNavMesh::init(data) does for a single tile
+        np.tileWidth = g.bmax[0] - g.bmin[0];
+        np.tileHeight = g.bmax[2] - g.bmin[2];
+    } else {
+        np.tileWidth = static_cast<float>(tile_size) * g.cs;
+        np.tileHeight = static_cast<float>(tile_size) * g.cs;
+    }
+    np.maxTiles = static_cast<int>(tiles.size());
+    np.maxPolys = max_polys;
+    nav.reset(dtAllocNavMesh());
+    if (!nav) fail("dtAllocNavMesh failed (out of memory)");
+    if (dtStatusFailed(nav->init(&np))) fail("dtNavMesh::init failed");
+    first_by_tile_index.assign(static_cast<size_t>(nav->getMaxTiles()), -1);
+
+    // Copy-out buffers.
+    const bool dedup = tiles.size() > 1;
+    if (dedup && (g.width >= (1 << 24) || g.height >= (1 << 24))) fail("grid too large for vertex keys");
+    std::unordered_map<uint64_t, int32_t> vkey;
+    if (dedup) vkey.reserve(static_cast<size_t>(total_verts));
+    verts.clear();
+    verts.reserve(static_cast<size_t>(total_verts) * 3);
+    polys.assign(static_cast<size_t>(total) * nvp, -1);
+    areas.resize(static_cast<size_t>(total));
+    regions.resize(static_cast<size_t>(total));
+    dverts.clear();
+    dverts.reserve(static_cast<size_t>(total_dverts) * 3);
+    dtris.clear();
+    dtris.reserve(static_cast<size_t>(total_dtris) * 3);
+    dtri_poly.clear();
+    dtri_poly.reserve(static_cast<size_t>(total_dtris));
+    tile_first.clear();
+    tile_ref_base.clear();
+
+    int first = 0, region_offset = 0;
+    std::vector<int32_t> vmap;
+    for (auto& tp : tiles) {
+        TileMesh& t = *tp;
+        const std::string where =
+            tile_size == 0 ? std::string() : " in tile (" + std::to_string(t.tx) + ", " + std::to_string(t.ty) + ")";
+        // Detour tile.
+        dtTileRef tref = 0;
+        unsigned char* data = t.data.release();
+        if (dtStatusFailed(nav->addTile(data, t.data_size, DT_TILE_FREE_DATA, 0, &tref))) {
+            dtFree(data);
+            fail("dtNavMesh::addTile failed" + where);
+        }
+        const dtMeshTile* mt = nav->getTileByRef(tref);
+        tile_first.push_back(first);
+        tile_ref_base.push_back(nav->getPolyRefBase(mt));
+        first_by_tile_index[nav->decodePolyIdTile(static_cast<dtPolyRef>(tref))] = first;
+
+        // Vertices: world coordinates from global grid cells; tiles share equal ones.
+        vmap.resize(static_cast<size_t>(t.nverts));
+        for (int i = 0; i < t.nverts; ++i) {
+            const int32_t gx = t.gverts[i * 3 + 0], gy = t.gverts[i * 3 + 1], gz = t.gverts[i * 3 + 2];
+            if (dedup) {
+                const uint64_t key = (static_cast<uint64_t>(gx) << 40) | (static_cast<uint64_t>(gz) << 16) |
+                                     static_cast<uint64_t>(gy & 0xffff);
+                auto ins = vkey.emplace(key, static_cast<int32_t>(verts.size() / 3));
+                if (!ins.second) {
+                    vmap[i] = ins.first->second;
+                    continue;
+                }
+            }
+            vmap[i] = static_cast<int32_t>(verts.size() / 3);
+            verts.push_back(static_cast<double>(g.bmin[0] + static_cast<float>(gx) * g.cs));
+            verts.push_back(static_cast<double>(g.bmin[1] + static_cast<float>(gy) * g.ch));
+            verts.push_back(static_cast<double>(g.bmin[2] + static_cast<float>(gz) * g.cs));
+        }
+        // Polygons, areas, regions (offset so that ids stay unique across tiles).
+        int max_region = 0;
+        for (int i = 0; i < t.npolys; ++i) {
+            const unsigned short* p = &t.polys[static_cast<size_t>(i) * nvp];
+            int32_t* out = &polys[static_cast<size_t>(first + i) * nvp];
+            for (int j = 0; j < nvp; ++j) {
+                if (p[j] == RC_MESH_NULL_IDX) break;
+                out[j] = vmap[p[j]];
+            }
+            areas[first + i] = t.areas[i];
+            regions[first + i] = t.regs[i] + region_offset;
+            max_region = std::max(max_region, static_cast<int>(t.regs[i]));
+        }
+        region_offset += max_region;
+        // Detail mesh.
+        const int32_t dbase = static_cast<int32_t>(dverts.size() / 3);
+        for (float v : t.dverts) dverts.push_back(static_cast<double>(v));
+        for (int32_t v : t.dtris) dtris.push_back(v + dbase);
+        for (int32_t p : t.dpoly) dtri_poly.push_back(p + first);
+        first += t.npolys;
+        tp.reset();  // free the tile's copy as we go
+    }
+    npolys = first;
+
+    query.reset(dtAllocNavMeshQuery());
+    if (!query) fail("dtAllocNavMeshQuery failed (out of memory)");
+    if (dtStatusFailed(query->init(nav.get(), 2048))) fail("dtNavMeshQuery::init failed");
+
+    link_topology();
+}
+
+// Neighbours and portals from Detour's links (internal and tile-border alike).
+void NavMeshCore::link_topology() {
+    const dtNavMesh* cnav = nav.get();
+    neis.assign(static_cast<size_t>(npolys) * nvp, -1);
+    std::vector<double> best(static_cast<size_t>(npolys) * nvp, -1.0);
+    struct Portal {
+        int64_t a, b;
+        int edge;
+        double e[6];
+    };
+    std::vector<Portal> found;
+    found.reserve(static_cast<size_t>(npolys) * 2);
+    const double inf = std::numeric_limits<double>::infinity();
+    auto V = [&](int32_t v) { return &verts[static_cast<size_t>(v) * 3]; };
+
+    for (size_t k = 0; k < tile_first.size(); ++k) {
+        // a tile's reference is its polygon-reference base
+        const dtMeshTile* tile = cnav->getTileByRef(static_cast<dtTileRef>(tile_ref_base[k]));
+        const int count = tile->header->polyCount;
+        for (int ip = 0; ip < count; ++ip) {
+            const int gi = tile_first[k] + ip;
+            const dtPoly& p = tile->polys[ip];
+            const int nv = p.vertCount;
+            const dtPolyRef my_ref = tile_ref_base[k] | static_cast<dtPolyRef>(ip);
+            for (unsigned int l = p.firstLink; l != DT_NULL_LINK; l = tile->links[l].next) {
+                const dtLink& L = tile->links[l];
+                const int j = L.edge;
+                if (j >= nv) continue;
+                const int gk = ref_to_index(L.ref);
+                if (gk < 0 || gk == gi) continue;
+                const int32_t A = polys[static_cast<size_t>(gi) * nvp + j];
+                const int32_t B = polys[static_cast<size_t>(gi) * nvp + (j + 1) % nv];
+                double score;
+                const double* e0;
+                const double* e1;
+                double lerp[6];
+                bool reverse_found = true;
+                if (L.side == 0xff) {  // internal: the whole edge
+                    score = inf;
+                    e0 = V(A);
+                    e1 = V(B);
+                } else {
+                    // Tile border: the shared part is the overlap of this edge and
+                    // the neighbour's edge that links back (along the border line).
+                    const dtMeshTile* ntile = nullptr;
+                    const dtPoly* npoly = nullptr;
+                    cnav->getTileAndPolyByRefUnsafe(L.ref, &ntile, &npoly);
+                    int m = -1;
+                    for (unsigned int l2 = npoly->firstLink; l2 != DT_NULL_LINK; l2 = ntile->links[l2].next) {
+                        const dtLink& R = ntile->links[l2];
+                        if (R.ref == my_ref && R.side != 0xff && R.edge < npoly->vertCount) {
+                            m = R.edge;
+                            break;
+                        }
+                    }
+                    const int u = (L.side == 0 || L.side == 4) ? 2 : 0;
+                    const bool forward = V(A)[u] <= V(B)[u];
+                    if (m >= 0) {
+                        const int32_t C = polys[static_cast<size_t>(gk) * nvp + m];
+                        const int32_t D = polys[static_cast<size_t>(gk) * nvp + (m + 1) % npoly->vertCount];
+                        const int32_t alo = forward ? A : B, ahi = forward ? B : A;
+                        const int32_t clo = V(C)[u] <= V(D)[u] ? C : D, chi = V(C)[u] <= V(D)[u] ? D : C;
+                        const int32_t lo = V(alo)[u] >= V(clo)[u] ? alo : clo;  // larger start, this edge's on ties
+                        const int32_t hi = V(ahi)[u] <= V(chi)[u] ? ahi : chi;  // smaller end, this edge's on ties
+                        score = V(hi)[u] - V(lo)[u];
+                        e0 = V(forward ? lo : hi);
+                        e1 = V(forward ? hi : lo);
+                    } else {
+                        // no link back (Detour keeps at most 4 links per edge): its byte-quantised sub-edge
+                        reverse_found = false;
+                        const double t0 = L.bmin / 255.0, t1 = L.bmax / 255.0;
+                        for (int q = 0; q < 3; ++q) {
+                            lerp[q] = V(A)[q] + t0 * (V(B)[q] - V(A)[q]);
+                            lerp[3 + q] = V(A)[q] + t1 * (V(B)[q] - V(A)[q]);
+                        }
+                        e0 = lerp;
+                        e1 = lerp + 3;
+                        score = std::fabs(lerp[3 + u] - lerp[u]);
+                    }
+                }
+                const size_t slot = static_cast<size_t>(gi) * nvp + j;
+                if (score > best[slot] || (score == best[slot] && gk < neis[slot])) {
+                    best[slot] = score;
+                    neis[slot] = gk;
+                }
+                // Each pair once: from the lower index, or from the upper one when
+                // the lower one has no link back.
+                if (gi < gk || !reverse_found) {
+                    Portal P{std::min(gi, gk), std::max(gi, gk), gi < gk ? j : DT_VERTS_PER_POLYGON + j, {}};
+                    std::copy(e0, e0 + 3, P.e);
+                    std::copy(e1, e1 + 3, P.e + 3);
+                    found.push_back(P);
+                }
+            }
+        }
+    }
+    std::sort(found.begin(), found.end(), [](const Portal& x, const Portal& y) {
+        if (x.a != y.a) return x.a < y.a;
+        if (x.b != y.b) return x.b < y.b;
+        return x.edge < y.edge;
+    });
+    portal_pairs.clear();
+    portal_ends.clear();
+    for (size_t i = 0; i < found.size(); ++i) {
+        if (i > 0 && found[i].a == found[i - 1].a && found[i].b == found[i - 1].b) continue;
+        portal_pairs.push_back(found[i].a);
+        portal_pairs.push_back(found[i].b);
+        portal_ends.insert(portal_ends.end(), found[i].e, found[i].e + 6);
+    }
+}
 
 void NavMeshCore::build(const float* vin, int nv, const int* tin, int nt, const Settings& s) {
     const auto t0 = std::chrono::steady_clock::now();
-    LogContext ctx;
 
     // Configuration, derived from the world-unit settings as Recast's demo does.
     rcConfig& c = cfg;
@@ -232,145 +829,29 @@ void NavMeshCore::build(const float* vin, int nv, const int* tin, int nt, const 
     default_ext[1] = std::max(static_cast<float>(s.agent_height), 2.0f * c.ch);
     default_ext[2] = r;
 
-    // 1. Rasterize the walkable triangles.
-    std::unique_ptr<rcHeightfield, HeightfieldDel> solid(rcAllocHeightfield());
-    if (!solid) fail("rcAllocHeightfield failed (out of memory)");
-    if (!rcCreateHeightfield(&ctx, *solid, c.width, c.height, c.bmin, c.bmax, c.cs, c.ch))
-        fail("rcCreateHeightfield failed", &ctx);
-    std::vector<unsigned char> tri_areas(static_cast<size_t>(nt), 0);
-    rcMarkWalkableTriangles(&ctx, c.walkableSlopeAngle, vin, nv, tin, nt, tri_areas.data());
-    if (!rcRasterizeTriangles(&ctx, vin, nv, tin, tri_areas.data(), nt, *solid, c.walkableClimb))
-        fail("rcRasterizeTriangles failed", &ctx);
-    tri_areas.clear();
-    tri_areas.shrink_to_fit();
-
-    // 2. Filter walkable surfaces.
-    rcFilterLowHangingWalkableObstacles(&ctx, c.walkableClimb, *solid);
-    rcFilterLedgeSpans(&ctx, c.walkableHeight, c.walkableClimb, *solid);
-    rcFilterWalkableLowHeightSpans(&ctx, c.walkableHeight, *solid);
-
-    // 3. Compact heightfield, erosion by the agent radius.
-    std::unique_ptr<rcCompactHeightfield, CompactDel> chf(rcAllocCompactHeightfield());
-    if (!chf) fail("rcAllocCompactHeightfield failed (out of memory)");
-    if (!rcBuildCompactHeightfield(&ctx, c.walkableHeight, c.walkableClimb, *solid, *chf))
-        fail("rcBuildCompactHeightfield failed", &ctx);
-    solid.reset();
-    if (!rcErodeWalkableArea(&ctx, c.walkableRadius, *chf))
-        fail("rcErodeWalkableArea failed", &ctx);
-    int walkable_spans = 0;
-    for (int i = 0; i < chf->spanCount; ++i)
-        if (chf->areas[i] != RC_NULL_AREA) ++walkable_spans;
-    if (walkable_spans == 0) fail("no walkable polygons (no walkable surface left after filtering and erosion)");
-
-    // 4. Watershed regions.
-    if (!rcBuildDistanceField(&ctx, *chf)) fail("rcBuildDistanceField failed", &ctx);
-    if (!rcBuildRegions(&ctx, *chf, c.borderSize, c.minRegionArea, c.mergeRegionArea))
-        fail("rcBuildRegions failed", &ctx);
-
-    // 5. Contours, polygons, detail.
-    std::unique_ptr<rcContourSet, ContourDel> cset(rcAllocContourSet());
-    if (!cset) fail("rcAllocContourSet failed (out of memory)");
-    if (!rcBuildContours(&ctx, *chf, c.maxSimplificationError, c.maxEdgeLen, *cset))
-        fail("rcBuildContours failed", &ctx);
-    if (cset->nconts == 0) fail("no walkable polygons (no contours; regions too small?)");
-    std::unique_ptr<rcPolyMesh, PolyMeshDel> pmesh(rcAllocPolyMesh());
-    if (!pmesh) fail("rcAllocPolyMesh failed (out of memory)");
-    if (!rcBuildPolyMesh(&ctx, *cset, c.maxVertsPerPoly, *pmesh)) fail("rcBuildPolyMesh failed", &ctx);
-    if (pmesh->npolys == 0) fail("no walkable polygons");
-    std::unique_ptr<rcPolyMeshDetail, DetailDel> dmesh(rcAllocPolyMeshDetail());
-    if (!dmesh) fail("rcAllocPolyMeshDetail failed (out of memory)");
-    if (!rcBuildPolyMeshDetail(&ctx, *pmesh, *chf, c.detailSampleDist, c.detailSampleMaxError, *dmesh))
-        fail("rcBuildPolyMeshDetail failed", &ctx);
-    chf.reset();
-    cset.reset();
-
-    // 6. Copy the mesh data out.
-    const rcPolyMesh& pm = *pmesh;
-    nvp = pm.nvp;
-    npolys = pm.npolys;
-    verts.resize(static_cast<size_t>(pm.nverts) * 3);
-    for (int i = 0; i < pm.nverts; ++i) {
-        const unsigned short* v = &pm.verts[i * 3];
-        verts[i * 3 + 0] = static_cast<double>(pm.bmin[0] + v[0] * pm.cs);
-        verts[i * 3 + 1] = static_cast<double>(pm.bmin[1] + v[1] * pm.ch);
-        verts[i * 3 + 2] = static_cast<double>(pm.bmin[2] + v[2] * pm.cs);
-    }
-    polys.assign(static_cast<size_t>(npolys) * nvp, -1);
-    neis.assign(static_cast<size_t>(npolys) * nvp, -1);
-    areas.resize(npolys);
-    regions.resize(npolys);
-    for (int i = 0; i < npolys; ++i) {
-        const unsigned short* p = &pm.polys[i * 2 * nvp];
-        for (int j = 0; j < nvp; ++j) {
-            if (p[j] == RC_MESH_NULL_IDX) break;
-            polys[i * nvp + j] = p[j];
-            const unsigned short n = p[nvp + j];
-            // Solo mesh (borderSize 0): a neighbour is a polygon index, or
-            // RC_MESH_NULL_IDX; portal-flagged values (0x8000) only occur in tiles.
-            neis[i * nvp + j] = (n == RC_MESH_NULL_IDX || (n & 0x8000)) ? -1 : static_cast<int32_t>(n);
+    const Input in{vin, nv, tin, nt};
+    std::vector<std::unique_ptr<TileMesh>> tiles;
+    if (s.tile_size == 0) {
+        try {
+            tiles = build_solo(in, s);
+        } catch (const TooBigForSolo& e) {
+            throw std::runtime_error(std::string(e.what()) +
+                                     "; the level is too big for a solo navmesh: use tiles "
+                                     "(tile_size=None or > 0) or a larger cell_size");
         }
-        areas[i] = pm.areas[i];
-        regions[i] = pm.regs[i];
-        pm.flags[i] = 1;  // Detour's default filter needs a non-zero flag
-    }
-    const rcPolyMeshDetail& dm = *dmesh;
-    dverts.assign(dm.verts, dm.verts + static_cast<size_t>(dm.nverts) * 3);
-    dtris.reserve(static_cast<size_t>(dm.ntris) * 3);
-    dtri_poly.reserve(dm.ntris);
-    for (int i = 0; i < dm.nmeshes; ++i) {
-        const unsigned int vbase = dm.meshes[i * 4 + 0];
-        const unsigned int tbase = dm.meshes[i * 4 + 2];
-        const unsigned int tcount = dm.meshes[i * 4 + 3];
-        for (unsigned int k = 0; k < tcount; ++k) {
-            const unsigned char* t = &dm.tris[(tbase + k) * 4];
-            dtris.push_back(static_cast<int32_t>(vbase + t[0]));
-            dtris.push_back(static_cast<int32_t>(vbase + t[1]));
-            dtris.push_back(static_cast<int32_t>(vbase + t[2]));
-            dtri_poly.push_back(i);
+    } else if (s.tile_size > 0) {
+        tiles = build_tiled(in, s, s.tile_size);
+    } else if (c.width <= AUTO_SOLO_MAX_CELLS && c.height <= AUTO_SOLO_MAX_CELLS) {
+        try {
+            tiles = build_solo(in, s);
+        } catch (const TooBigForSolo&) {
+            auto_fallback = true;
         }
+        if (auto_fallback) tiles = build_tiled(in, s, AUTO_TILE_SIZE);
+    } else {
+        tiles = build_tiled(in, s, AUTO_TILE_SIZE);
     }
-
-    // 7. Detour navmesh and query.
-    dtNavMeshCreateParams params;
-    std::memset(&params, 0, sizeof(params));
-    params.verts = pm.verts;
-    params.vertCount = pm.nverts;
-    params.polys = pm.polys;
-    params.polyAreas = pm.areas;
-    params.polyFlags = pm.flags;
-    params.polyCount = pm.npolys;
-    params.nvp = pm.nvp;
-    params.detailMeshes = dm.meshes;
-    params.detailVerts = dm.verts;
-    params.detailVertsCount = dm.nverts;
-    params.detailTris = dm.tris;
-    params.detailTriCount = dm.ntris;
-    params.walkableHeight = static_cast<float>(s.agent_height);
-    params.walkableRadius = static_cast<float>(s.agent_radius);
-    params.walkableClimb = static_cast<float>(s.agent_max_climb);
-    rcVcopy(params.bmin, pm.bmin);
-    rcVcopy(params.bmax, pm.bmax);
-    params.cs = c.cs;
-    params.ch = c.ch;
-    params.buildBvTree = true;
-    unsigned char* data = nullptr;
-    int data_size = 0;
-    if (!dtCreateNavMeshData(&params, &data, &data_size))
-        fail("dtCreateNavMeshData failed (too many vertices or polygons for one tile?)");
-    pmesh.reset();
-    dmesh.reset();
-
-    nav.reset(dtAllocNavMesh());
-    if (!nav) { dtFree(data); fail("dtAllocNavMesh failed (out of memory)"); }
-    if (dtStatusFailed(nav->init(data, data_size, DT_TILE_FREE_DATA))) {
-        dtFree(data);
-        fail("dtNavMesh::init failed");
-    }
-    query.reset(dtAllocNavMeshQuery());
-    if (!query) fail("dtAllocNavMeshQuery failed (out of memory)");
-    if (dtStatusFailed(query->init(nav.get(), 2048))) fail("dtNavMeshQuery::init failed");
-    const dtNavMesh* cnav = nav.get();
-    ref_base = cnav->getPolyRefBase(cnav->getTile(0));
+    assemble(tiles);
 
     build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
@@ -384,10 +865,12 @@ NavMeshCore* build_navmesh(nb::ndarray<const V, nb::shape<-1, 3>, nb::c_contig, 
                            double agent_max_climb, double agent_max_slope, double region_min_size,
                            double region_merge_size, double edge_max_len, double edge_max_error,
                            int verts_per_poly, double detail_sample_dist, double detail_sample_max_error,
-                           long long max_cells) {
+                           long long max_cells, std::optional<int> tile_size, int threads) {
     Settings s{cell_size, cell_height, agent_height, agent_radius, agent_max_climb, agent_max_slope,
                region_min_size, region_merge_size, edge_max_len, edge_max_error, verts_per_poly,
-               detail_sample_dist, detail_sample_max_error, max_cells};
+               detail_sample_dist, detail_sample_max_error, max_cells,
+               tile_size ? *tile_size : -1, threads};
+    if (tile_size && *tile_size < 0) throw nb::value_error("Recast: tile_size must be None (automatic), 0 (solo) or >= 16 cells");
     check_settings(s);
     const size_t nv = vertices.shape(0), nt = faces.shape(0);
     if (nv < 3 || nt < 1) throw nb::value_error("Recast: the mesh needs at least 3 vertices and 1 face");
@@ -422,9 +905,13 @@ void def_build(nb::module_& m) {
           nb::arg("region_merge_size") = 20.0, nb::arg("edge_max_len") = 12.0,
           nb::arg("edge_max_error") = 1.3, nb::arg("verts_per_poly") = 6,
           nb::arg("detail_sample_dist") = 6.0, nb::arg("detail_sample_max_error") = 1.0,
-          nb::arg("max_cells") = 400000000LL, nb::rv_policy::take_ownership,
-          "Build a solo navmesh from (N,3) vertices and (M,3) triangle faces. World-unit settings, "
-          "derived into Recast's voxel configuration as Recast's demo does.");
+          nb::arg("max_cells") = 400000000LL, nb::arg("tile_size") = nb::none(), nb::arg("threads") = 0,
+          nb::rv_policy::take_ownership,
+          "Build a navmesh from (N,3) vertices and (M,3) triangle faces. World-unit settings, "
+          "derived into Recast's voxel configuration as Recast's demo does. tile_size: None "
+          "(automatic: solo when both grid sides are <= 512 cells and the solo mesh fits, "
+          "else tiles of 256 cells), 0 (solo) or the tile side in cells (>= 16). threads: "
+          "worker threads of a tiled build (0: hardware concurrency).");
 }
 
 using Vec3In = std::array<double, 3>;
@@ -438,10 +925,10 @@ void get3(const Vec3In& a, float* out) {
 }  // namespace
 
 NB_MODULE(_recast, m) {
-    m.doc() = "Recast/Detour (solo navmesh) bindings for g2s; see g2s_plugins.recast.";
+    m.doc() = "Recast/Detour (solo or tiled navmesh) bindings for g2s; see g2s_plugins.recast.";
 
     nb::class_<NavMeshCore>(m, "NavMeshCore",
-                            "A built solo navmesh: copied mesh arrays and Detour queries.")
+                            "A built navmesh (solo or tiled): copied mesh arrays and Detour queries.")
         .def_prop_ro("nvp", [](const NavMeshCore& n) { return n.nvp; }, "max vertices per polygon")
         .def_prop_ro("polygon_count", [](const NavMeshCore& n) { return n.npolys; })
         .def_prop_ro("vertices", [](const NavMeshCore& n) { return to_numpy(n.verts, n.verts.size() / 3, 3); },
@@ -449,11 +936,12 @@ NB_MODULE(_recast, m) {
         .def_prop_ro("polygons", [](const NavMeshCore& n) { return to_numpy(n.polys, n.npolys, n.nvp); },
                      "(P,nvp) int32 vertex indices, padded with -1")
         .def_prop_ro("neighbours", [](const NavMeshCore& n) { return to_numpy(n.neis, n.npolys, n.nvp); },
-                     "(P,nvp) int32: polygon across edge j (vertex j -> j+1, wrapping), -1 at the boundary")
+                     "(P,nvp) int32: polygon across edge j (vertex j -> j+1, wrapping), -1 at the boundary; "
+                     "on a tile border edge touching several polygons, the one sharing the longest part")
         .def_prop_ro("area_ids", [](const NavMeshCore& n) { return to_numpy(n.areas, n.npolys, 0); },
                      "(P,) int32 Recast area ids (63 = walkable)")
         .def_prop_ro("region_ids", [](const NavMeshCore& n) { return to_numpy(n.regions, n.npolys, 0); },
-                     "(P,) int32 Recast region ids")
+                     "(P,) int32 Recast region ids (offset per tile so that they are unique)")
         .def_prop_ro("detail_vertices",
                      [](const NavMeshCore& n) { return to_numpy(n.dverts, n.dverts.size() / 3, 3); },
                      "(DV,3) float64 detail mesh vertices, world coordinates")
@@ -462,6 +950,22 @@ NB_MODULE(_recast, m) {
                      "(DT,3) int32 indices into detail_vertices")
         .def_prop_ro("detail_polygon", [](const NavMeshCore& n) { return to_numpy(n.dtri_poly, n.dtri_poly.size(), 0); },
                      "(DT,) int32 polygon owning each detail triangle")
+        .def_prop_ro("portal_pairs",
+                     [](const NavMeshCore& n) { return to_numpy(n.portal_pairs, n.portal_pairs.size() / 2, 2); },
+                     "(E,2) int64: every pair of adjacent polygons a < b once, sorted")
+        .def_prop_ro("portal_endpoints",
+                     [](const NavMeshCore& n) { return to_numpy(n.portal_ends, n.portal_ends.size() / 6, 2, 3); },
+                     "(E,2,3) float64: end points of the segment the pair shares, along a's edge")
+        .def_prop_ro("tile_size", [](const NavMeshCore& n) { return n.tile_size; },
+                     "tile side in cells; 0 for a solo navmesh")
+        .def_prop_ro("tile_count", [](const NavMeshCore& n) { return static_cast<int>(n.tile_first.size()); },
+                     "number of Detour tiles (tiles with polygons)")
+        .def_prop_ro("tile_first_polygon",
+                     [](const NavMeshCore& n) {
+                         std::vector<int32_t> v(n.tile_first.begin(), n.tile_first.end());
+                         return to_numpy(v, v.size(), 0);
+                     },
+                     "(T,) int32 global index of each tile's first polygon (tiles in row-major order)")
         .def_prop_ro("build_seconds", [](const NavMeshCore& n) { return n.build_seconds; })
         .def_prop_ro("climb_tolerance", [](const NavMeshCore& n) { return n.climb_tolerance; },
                      "vertical tolerance of raycast's end check: max(agent_max_climb, 2*cell_height)")
@@ -484,9 +988,15 @@ NB_MODULE(_recast, m) {
                  d["minRegionArea"] = c.minRegionArea; d["mergeRegionArea"] = c.mergeRegionArea;
                  d["maxVertsPerPoly"] = c.maxVertsPerPoly; d["detailSampleDist"] = c.detailSampleDist;
                  d["detailSampleMaxError"] = c.detailSampleMaxError;
+                 d["tileSize"] = n.tile_size; d["borderSize"] = n.border_size;
+                 d["tileGrid"] = nb::make_tuple(n.tiles_x, n.tiles_y);
+                 d["tiles"] = static_cast<int>(n.tile_first.size());
+                 d["autoTiled"] = n.auto_fallback;
                  return d;
              },
-             "the resolved rcConfig (voxel units) as a dict")
+             "the resolved rcConfig (voxel units; width/height: the whole grid) as a dict, plus the "
+             "tiling: tileSize (0: solo), borderSize, tileGrid (x, z tile counts), tiles (non-empty), "
+             "autoTiled (automatic mode fell back to tiles because the solo build was too big)")
         .def("raycast",
              [](const NavMeshCore& n, Vec3In a, Vec3In b, ExtIn extents) {
                  float pa[3], pb[3], ext[3] = {n.default_ext[0], n.default_ext[1], n.default_ext[2]};
@@ -553,10 +1063,11 @@ NB_MODULE(_recast, m) {
         .def("poly_index",
              [](const NavMeshCore& n, uint64_t ref) {
                  if (ref == 0) return -1;
-                 if (!n.nav->isValidPolyRef(static_cast<dtPolyRef>(ref))) throw nb::value_error("invalid dtPolyRef");
+                 if (ref > std::numeric_limits<dtPolyRef>::max() || !n.nav->isValidPolyRef(static_cast<dtPolyRef>(ref)))
+                     throw nb::value_error("invalid dtPolyRef");
                  return n.ref_to_index(static_cast<dtPolyRef>(ref));
              },
-             nb::arg("ref"), "polygon index of a Detour dtPolyRef (decodePolyIdPoly); -1 for 0");
+             nb::arg("ref"), "global polygon index of a Detour dtPolyRef (tile's first index + decodePolyIdPoly); -1 for 0");
 
     def_build<float, int32_t>(m);
     def_build<double, int32_t>(m);

@@ -138,3 +138,32 @@ def test_nav_test_level(shared_data):
     ys = nm.centres[:, 1]
     assert ys.max() - ys.min() > 10.0
     assert seconds < 5.0
+
+
+def test_tiled_graph_follows_the_model():
+    """A forced tiled build: same graph conventions, connected like the solo one, deterministic."""
+    params = plugin.Params(tile_size=32)
+    graph, ctx = run(level(), params)
+    nm = ctx.navmesh
+    solo, _ = run(level(), plugin.Params(tile_size=0))
+    assert nm.tile_size == 32 and nm.tile_count > 20
+    assert graph.number_of_nodes() == nm.polygon_count > solo.number_of_nodes()
+    assert graph.number_of_edges() == len(nm.portals().pairs)
+    assert nx.is_connected(graph) and nx.is_connected(solo)
+    area = sum(d["area"] for _, d in graph.nodes(data=True))
+    assert area == pytest.approx(sum(d["area"] for _, d in solo.nodes(data=True)), rel=0.03)
+    verts = {tuple(v) for v in nm.vertices.tolist()}
+    for a, b, data in graph.edges(data=True):
+        p0, p1 = data["portal"]
+        assert p0 in verts and p1 in verts  # the ends of the shared segment are mesh vertices
+        assert data["width"] == pytest.approx(math.dist(p0, p1), rel=1e-12) and data["width"] > 0
+        for poly in (a, b):  # ... on an edge of both polygons (seen from above)
+            ring = nm.vertices[[k for k in nm.polygons[poly] if k >= 0]][:, [0, 2]]
+            for p in (p0, p1):
+                q = np.array(p)[[0, 2]]
+                d = np.roll(ring, -1, axis=0) - ring
+                t = np.clip(np.einsum("ij,ij->i", q - ring, d) / np.einsum("ij,ij->i", d, d), 0, 1)
+                assert np.min(np.linalg.norm(ring + t[:, None] * d - q, axis=1)) < 1e-4
+    again, _ = run(level(), params)  # tiles are built in threads: the result does not depend on it
+    assert list(graph.nodes(data=True)) == list(again.nodes(data=True))
+    assert list(graph.edges(data=True)) == list(again.edges(data=True))

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import time
 import types
 
 import networkx as nx
@@ -282,3 +283,256 @@ def test_centres_lie_inside_their_polygons(walled):
         assert Path(ring).contains_point(walled.centres[i, [0, 2]], radius=-1e-6) or Path(
             ring
         ).contains_point(walled.centres[i, [0, 2]], radius=1e-6)
+
+
+# ------------------------------------------------------------------ tiled builds
+
+
+def ramp_level() -> trimesh.Trimesh:
+    """30 x 20 m floor, two walls, a 0.3 m step platform and a ramp up to a 2 m high floor."""
+    run, rise = 6.0, 2.0
+    angle = math.atan2(rise, run)
+    ramp = trimesh.creation.box(extents=(math.hypot(run, rise) + 0.2, 0.2, 4.0))
+    ramp.apply_transform(trimesh.transformations.rotation_matrix(angle, (0, 0, 1)))
+    normal = np.array([-math.sin(angle), math.cos(angle), 0.0])
+    ramp.apply_translation(np.array([18.0, 1.0, 6.0]) - 0.1 * normal)  # x 15 -> 21 at z = 6
+    return trimesh.util.concatenate(
+        [
+            floor(30, 20),  # x, z in [-15, 15] x [-10, 10]
+            slab((0.5, 3, 12), (-5, 1.5, -4)),
+            slab((0.5, 3, 12), (5, 1.5, 4)),
+            slab((6, 0.3, 6), (11, 0.15, -6)),
+            ramp,
+            floor(8, 8, x=25.0, y=2.0, z=6.0),  # x in [21, 29]
+        ]
+    )
+
+
+@pytest.fixture(scope="module")
+def solo_and_tiled():
+    mesh = ramp_level()
+    return build(mesh, tile_size=0), build(mesh, tile_size=32)
+
+
+def tile_of(nm: NavMesh) -> np.ndarray:
+    """(P,) index of each polygon's tile (0 .. tile_count - 1)."""
+    return np.searchsorted(nm.tile_first_polygon, np.arange(nm.polygon_count), side="right") - 1
+
+
+def xz_distance_to_edges(nm: NavMesh, poly: int, p: np.ndarray) -> float:
+    """Smallest xz distance from ``p`` to an edge of polygon ``poly``."""
+    row = nm.polygons[poly][nm.polygons[poly] >= 0]
+    a = nm.vertices[row][:, [0, 2]]
+    b = np.roll(a, -1, axis=0)
+    d = b - a
+    t = np.clip(np.einsum("ij,ij->i", p[[0, 2]] - a, d) / np.maximum(np.einsum("ij,ij->i", d, d), 1e-300), 0, 1)
+    return float(np.min(np.linalg.norm(a + t[:, None] * d - p[[0, 2]], axis=1)))
+
+
+def test_tiling_configuration(solo_and_tiled):
+    solo, tiled = solo_and_tiled
+    assert solo.tile_size == 0 and solo.tile_count == 1 and solo.tile_first_polygon.tolist() == [0]
+    c = tiled.config()
+    assert tiled.tile_size == c["tileSize"] == 32
+    assert c["borderSize"] == c["walkableRadius"] + 3
+    assert c["tileGrid"] == (math.ceil(c["width"] / 32), math.ceil(c["height"] / 32))
+    assert tiled.tile_count == c["tiles"] > 20
+    assert (c["width"], c["height"]) == (solo.config()["width"], solo.config()["height"])
+    first = tiled.tile_first_polygon
+    assert first[0] == 0 and np.all(np.diff(first) > 0) and first[-1] < tiled.polygon_count
+    s = tiled.stats()
+    assert s["tiles"] == tiled.tile_count and s["tile_size"] == 32 and s["polygons"] == tiled.polygon_count
+
+
+def test_tiled_build_agrees_with_solo(solo_and_tiled):
+    solo, tiled = solo_and_tiled
+    assert adjacency_components(solo) == 1 and adjacency_components(tiled) == 1
+    assert tiled.areas.sum() == pytest.approx(solo.areas.sum(), rel=0.03)
+    # the upper floor is reached in both (polygons about 2 m up)
+    assert np.any(np.abs(tiled.centres[:, 1] - 2.0) < 0.3) and np.any(np.abs(solo.centres[:, 1] - 2.0) < 0.3)
+    # hand-picked rays: open floor across many tiles, a wall, the step, up the ramp
+    pairs = [
+        ((-13, 0, 3), (4, 0, 3), True),  # between the walls' ends
+        ((-13, 0, -9), (-13, 0, 9), True),
+        ((-8, 0, -4), (-2, 0, -4), False),  # through the wall at x = -5
+        ((2, 0, 4), (8, 0, 4), False),  # through the wall at x = 5
+        ((8, 0, -6), (11, 0.3, -6), True),  # onto the step
+        ((14, 0, 6), (25, 2, 6), True),  # up the ramp onto the upper floor
+        ((14, 0, 6), (25, 0, 6), False),  # under the upper floor: not on the mesh there
+    ]
+    for a, b, expected in pairs:
+        assert solo.raycast(a, b)[0] == expected, (a, b)
+        assert tiled.raycast(a, b)[0] == expected, (a, b)
+    # random rays on the ground floor: the answers agree
+    rng = np.random.default_rng(7)
+    A = np.column_stack([rng.uniform(-14, 14, 400), np.zeros(400), rng.uniform(-9, 9, 400)])
+    B = np.column_stack([rng.uniform(-14, 14, 400), np.zeros(400), rng.uniform(-9, 9, 400)])
+    s, t = solo.raycast_many(A, B), tiled.raycast_many(A, B)
+    assert 50 < s.sum() < 350 and np.mean(s == t) >= 0.97
+
+
+def test_tiled_queries_work_in_every_tile(solo_and_tiled):
+    _, nm = solo_and_tiled
+    tiles = tile_of(nm)
+    assert set(tiles.tolist()) == set(range(nm.tile_count))
+    for t in range(nm.tile_count):
+        members = np.nonzero(tiles == t)[0]
+        i = int(members[np.argmax(nm.areas[members])])
+        idx, point = nm.nearest_poly(nm.centres[i])
+        assert tiles[idx] == t, (t, i, idx)
+        assert np.allclose(point[[0, 2]], nm.centres[i, [0, 2]], atol=1e-4)
+    refs = [nm.poly_ref(i) for i in range(nm.polygon_count)]
+    assert len(set(refs)) == nm.polygon_count
+    assert [nm.poly_index(r) for r in refs] == list(range(nm.polygon_count))
+    with pytest.raises(IndexError):
+        nm.poly_ref(nm.polygon_count)
+    with pytest.raises(ValueError):
+        nm.poly_index(2**40)
+
+
+def test_tiled_neighbours_and_portals(solo_and_tiled):
+    _, nm = solo_and_tiled
+    tiles = tile_of(nm)
+    portals = nm.portals()
+    pairs = portals.pairs
+    assert pairs.dtype == np.int64 and np.all(pairs[:, 0] < pairs[:, 1])
+    assert len({tuple(p) for p in pairs.tolist()}) == len(pairs)
+    assert [tuple(p) for p in pairs.tolist()] == sorted(tuple(p) for p in pairs.tolist())
+    cross = tiles[pairs[:, 0]] != tiles[pairs[:, 1]]
+    assert cross.sum() > 20 and (~cross).sum() > 0
+    partners: dict[int, set[int]] = {}
+    for a, b in pairs.tolist():
+        partners.setdefault(a, set()).add(b)
+        partners.setdefault(b, set()).add(a)
+    # neighbours: every entry is a portal pair; symmetric, except on a tile-border
+    # edge touching several polygons, where only the longest contact is listed
+    asymmetric = 0
+    for i, j in zip(*np.nonzero(nm.neighbours >= 0)):
+        k = int(nm.neighbours[i, j])
+        assert k in partners[int(i)]
+        if i not in nm.neighbours[k]:
+            asymmetric += 1
+            assert tiles[i] != tiles[k]
+            assert len([q for q in partners[k] if tiles[q] == tiles[i]]) >= 2
+    assert asymmetric <= 0.05 * len(pairs)
+    # portal ends: mesh vertices on an edge of both polygons (xz), at the same height
+    verts = {tuple(v) for v in nm.vertices.tolist()}
+    for (a, b), ends, width, is_cross in zip(pairs.tolist(), portals.endpoints, portals.widths, cross):
+        assert width > 0 and width == pytest.approx(np.linalg.norm(ends[1] - ends[0]))
+        for p in ends:
+            assert tuple(p.tolist()) in verts
+            assert xz_distance_to_edges(nm, a, p) < 1e-6
+            assert xz_distance_to_edges(nm, b, p) < 1e-4
+        if not is_cross:  # inside a tile both polygons hold the two vertices
+            for poly in (a, b):
+                ring = {tuple(nm.vertices[v]) for v in nm.polygons[poly] if v >= 0}
+                assert {tuple(ends[0]), tuple(ends[1])} <= ring
+
+
+def test_solo_neighbours_and_portals_match_the_poly_mesh(walled):
+    """Solo: Detour's links give Recast's neighbour table, and the portals are its shared edges."""
+    nm = walled
+    P = nm.polygon_count
+    counts = (nm.polygons >= 0).sum(axis=1)
+    expected = []
+    for i in range(P):
+        for j in range(counts[i]):
+            k = int(nm.neighbours[i, j])
+            if k < 0:
+                continue
+            edge = {int(nm.polygons[i, j]), int(nm.polygons[i, (j + 1) % counts[i]])}
+            assert edge <= set(nm.polygons[k][nm.polygons[k] >= 0].tolist()) and i in nm.neighbours[k]
+            if i < k and (i, k) not in [e[0] for e in expected]:
+                va, vb = nm.polygons[i, j], nm.polygons[i, (j + 1) % counts[i]]
+                expected.append(((i, k), (nm.vertices[va], nm.vertices[vb])))
+    expected.sort(key=lambda e: e[0])  # by (a, b); the first shared edge of a kept
+    portals = nm.portals()
+    assert [tuple(p) for p in portals.pairs.tolist()] == [e[0] for e in expected]
+    assert np.array_equal(portals.endpoints, np.array([np.stack(e[1]) for e in expected]).reshape(-1, 2, 3))
+
+
+def test_automatic_tiling_rule():
+    small = build(floor(10, 10))  # 67 x 67 cells: solo
+    assert small.tile_size == 0 and small.config()["autoTiled"] is False
+    # 601 x 21 cells: longer than 512, tiles of 256 cells. (The far edges are kept off
+    # cell boundaries: a solo grid ends there, a tile goes on and may count the next cell.)
+    long = build(floor(90.1, 3.1))
+    assert long.tile_size == 256 and long.tile_count == 3 and long.config()["tileGrid"] == (3, 1)
+    assert adjacency_components(long) == 1
+    assert long.raycast((-44, 0, 0), (44, 0, 0))[0]
+    assert set(tile_of(long)[[long.nearest_poly((x, 0, 0))[0] for x in (-40, 0, 40)]]) == {0, 1, 2}
+    solo = build(floor(90.1, 3.1), tile_size=0)
+    assert solo.tile_size == 0 and solo.areas.sum() == pytest.approx(long.areas.sum(), rel=0.01)
+    assert resolve_settings(AGENT, RecastParams(tile_size=64))["tile_size"] == 64
+    assert resolve_settings(AGENT)["tile_size"] is None
+
+
+def test_tile_size_validation_and_empty_tiles():
+    with pytest.raises(pydantic.ValidationError):
+        RecastParams(tile_size=8)
+    with pytest.raises(pydantic.ValidationError):
+        RecastParams(tile_size=-1)
+    from g2s_plugins.recast import _recast
+
+    mesh = floor(10, 10)
+    with pytest.raises(ValueError, match="tile_size"):
+        _recast.build(mesh.vertices, mesh.faces, **{**resolve_settings(AGENT), "tile_size": 8})
+    wall = slab((0.1, 3.0, 5.0), (0, 1.5, 0))
+    wall.update_faces(np.abs(wall.face_normals[:, 1]) < 0.5)
+    with pytest.raises(RuntimeError, match="Recast: no walkable polygons"):
+        build(wall, tile_size=16)
+    # two floors far apart: the tiles between them hold no triangle and are skipped
+    apart = build(trimesh.util.concatenate([floor(4, 4), floor(4, 4, x=40.0)]), tile_size=16)
+    assert apart.tile_count < apart.config()["tileGrid"][0] * apart.config()["tileGrid"][1]
+    assert adjacency_components(apart) == 2
+
+
+def boxes(lo: np.ndarray, hi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Vertices (8k,3) and faces (12k,3) of k axis-aligned boxes with corners lo, hi (k,3)."""
+    corner = np.array([[x, y, z] for x in (0, 1) for y in (0, 1) for z in (0, 1)], dtype=float)
+    verts = lo[:, None, :] + corner[None] * (hi - lo)[:, None, :]
+    quads = [(0, 1, 3, 2), (4, 6, 7, 5), (0, 4, 5, 1), (2, 3, 7, 6), (0, 2, 6, 4), (1, 5, 7, 3)]
+    tri = np.array([t for a, b, c, d in quads for t in ((a, b, c), (a, c, d))])
+    faces = tri[None] + 8 * np.arange(len(lo))[:, None, None]
+    return verts.reshape(-1, 3), faces.reshape(-1, 3)
+
+
+def room_grid(n: int, pitch: float = 8.0, wall: float = 0.3, door: float = 1.6) -> tuple[np.ndarray, np.ndarray]:
+    """n x n rooms ``pitch`` m wide on one floor, a door in every inner wall, 4 pillars per room."""
+    height, pillar, offset = 3.0, 0.6, 1.8
+    size = n * pitch
+    lo, hi = [[0.0, -0.2, 0.0]], [[size, 0.0, size]]
+    for i, line in enumerate(np.arange(n + 1) * pitch):
+        for start in np.arange(n) * pitch:
+            if i in (0, n):
+                parts = [(start, start + pitch)]
+            else:
+                parts = [(start, start + (pitch - door) / 2), (start + (pitch + door) / 2, start + pitch)]
+            for a, b in parts:
+                lo += [[a, -0.2, line - wall / 2], [line - wall / 2, -0.2, a]]
+                hi += [[b, height, line + wall / 2], [line + wall / 2, height, b]]
+    centres = (np.arange(n) + 0.5) * pitch
+    x, z = (c.ravel() for c in np.meshgrid(centres, centres))
+    for dx in (-offset, offset):
+        for dz in (-offset, offset):
+            lo += np.column_stack([x + dx - pillar / 2, np.full(x.size, -0.2), z + dz - pillar / 2]).tolist()
+            hi += np.column_stack([x + dx + pillar / 2, np.full(x.size, height), z + dz + pillar / 2]).tolist()
+    return boxes(np.array(lo), np.array(hi))
+
+
+def test_level_too_big_for_solo_is_tiled_automatically(capsys):
+    vertices, faces = room_grid(44)  # 352 x 352 m, 1936 rooms, 7744 pillars
+    t0 = time.perf_counter()
+    nm = build_navmesh(vertices, faces, AGENT)
+    seconds = time.perf_counter() - t0
+    with capsys.disabled():
+        print(f"\nroom grid 44 x 44: {nm.polygon_count} polygons, {len(nm.vertices)} vertices, "
+              f"{nm.tile_count} tiles of {nm.tile_size} cells, {seconds:.2f} s")
+    assert nm.tile_size == 256 and nm.tile_count == nm.config()["tileGrid"][0] ** 2
+    assert len(nm.vertices) > 65535  # more than one Recast poly mesh can index
+    assert nm.polygon_count > 30000
+    assert adjacency_components(nm) == 1
+    # a ray along a row of doors stays clear from end to end; one into a wall is not
+    door_row = 4.0 + 8.0 * 20
+    assert nm.raycast((1.0, 0, door_row), (351.0, 0, door_row))[0]
+    assert not nm.raycast((1.0, 0, 1.0), (351.0, 0, 1.0 + 8.0))[0]

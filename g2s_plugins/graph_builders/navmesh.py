@@ -1,14 +1,15 @@
 """Surface graph from a Recast/Detour navmesh: one node per polygon, one edge per shared edge.
 
-Builds a solo navmesh of the mesh for the run's agent (see
-:mod:`g2s_plugins.recast`), stores it in ``context.navmesh`` and returns the
-polygon adjacency graph:
+Builds a navmesh of the mesh for the run's agent (solo or tiled, see
+:mod:`g2s_plugins.recast` and its ``tile_size`` parameter), stores it in
+``context.navmesh`` and returns the polygon adjacency graph:
 
 * node ``i`` = polygon ``i``: ``pos`` (centroid on the detail surface),
   ``normal``, ``area`` (m²), ``on_navmesh=True``, ``polygon=i``;
-* edge ``(a, b)``, ``a < b``, for each pair of polygons sharing an edge:
-  ``weight`` (distance between the two ``pos``), ``portal`` (the shared
-  edge's two end points) and ``width`` (its length).
+* edge ``(a, b)``, ``a < b``, for each pair of polygons sharing an edge
+  (or, across a tile border, part of one): ``weight`` (distance between the
+  two ``pos``), ``portal`` (the shared segment's two end points, mesh
+  vertices) and ``width`` (its length).
 
 Nodes are inserted by polygon index and edges sorted by ``(a, b)``.
 """

@@ -1,10 +1,11 @@
 """Recast/Detour navigation meshes: parameters, build, and Detour queries.
 
 The compiled extension :mod:`g2s_plugins.recast._recast` (nanobind, linked
-against the system's Recast/Detour, Debian ``librecast-dev``) builds a *solo*
-(single-tile) navmesh with Recast's standard pipeline and keeps the Detour
-navmesh and query object for raycasts and nearest-polygon look-ups. This
-module wraps it:
+against the system's Recast/Detour, Debian ``librecast-dev``) builds a navmesh
+with Recast's standard pipeline, *solo* (one tile) or *tiled* (square tiles
+of ``tile_size`` cells, built in parallel and joined in one Detour navmesh),
+and keeps the Detour navmesh and query object for raycasts and
+nearest-polygon look-ups. This module wraps it:
 
 * :class:`RecastParams`: every Recast build parameter, with defaults;
 * :func:`build_navmesh`: triangles + agent + params -> :class:`NavMesh`;
@@ -25,6 +26,14 @@ does: ``walkableHeight = ceil(height / ch)`` (at least 3),
 ``detailSampleDist = 0 if detail_sample_dist < 0.9 else cs * detail_sample_dist``,
 ``detailSampleMaxError = ch * detail_sample_max_error``.
 
+Tiling rule (``tile_size``): ``None`` (automatic) builds solo when both sides
+of the xz grid are at most 512 cells and the solo mesh fits one Detour tile
+(65535 poly-mesh vertices, 16-bit regions); otherwise, or when the solo build
+fails for size, tiles of 256 cells. ``0`` forces solo, ``n >= 16`` forces
+tiles of ``n`` cells. A tile is rasterised with a border of ``walkableRadius +
+3`` cells. Polygons are numbered tile by tile (tiles in row-major order, x
+fastest), in each tile in Recast's order; a solo build is one tile.
+
 Coordinates are metres with Y up, as in the mesh.
 """
 
@@ -34,7 +43,7 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
-from pydantic import Field
+from pydantic import Field, field_validator
 
 from g2s_core.plugin import PluginParams
 
@@ -44,6 +53,9 @@ __all__ = ["RecastParams", "NavMesh", "Portals", "build_navmesh", "resolve_setti
 
 FLT_MAX = float(np.finfo(np.float32).max)
 """Detour's ``FLT_MAX``: the raycast ``t`` when the ray reached its end point."""
+
+MIN_TILE_SIZE = 16
+"""Smallest tile side (cells) of a tiled build."""
 
 
 class RecastParams(PluginParams):
@@ -83,6 +95,19 @@ class RecastParams(PluginParams):
     max_cells: int = Field(
         100_000_000, gt=0, description="refuse grids with more xz cells than this (memory guard)"
     )
+    tile_size: int | None = Field(
+        None,
+        ge=0,
+        description="tile side, cells (>= 16); None: solo up to 512 x 512 cells when it fits, "
+        "else tiles of 256; 0: always solo",
+    )
+
+    @field_validator("tile_size")
+    @classmethod
+    def _tile_size_rule(cls, value: int | None) -> int | None:
+        if value is not None and 0 < value < MIN_TILE_SIZE:
+            raise ValueError(f"tile_size must be 0 (solo) or >= {MIN_TILE_SIZE} cells")
+        return value
 
 
 def resolve_settings(agent: Any, params: RecastParams | None = None) -> dict[str, float]:
@@ -125,17 +150,25 @@ def resolve_settings(agent: Any, params: RecastParams | None = None) -> dict[str
         detail_sample_dist=float(p.detail_sample_dist),
         detail_sample_max_error=float(p.detail_sample_max_error),
         max_cells=int(p.max_cells),
+        tile_size=None if p.tile_size is None else int(p.tile_size),
     )
 
 
 @dataclass(frozen=True)
 class Portals:
-    """The shared edges of a navmesh, each polygon pair once, sorted by (a, b).
+    """The shared edges of a navmesh, each adjacent polygon pair once, sorted by (a, b).
+
+    Within a tile two polygons share a whole edge: ``endpoints`` are its two
+    vertices, in the order of ``a``'s edge (the first such edge of ``a`` when
+    they share several). Across a tile border an edge of ``a`` may touch
+    several polygons of the next tile: each pair is listed with the part of
+    the border they share, whose end points are vertices of ``a`` or ``b``
+    (the overlap of their two collinear edges), in the direction of ``a``'s edge.
 
     Attributes:
         pairs: (E,2) int64, polygon indices ``a < b``.
-        endpoints: (E,2,3) float64, the shared edge's end points, metres.
-        widths: (E,) float64, the shared edge's length, metres.
+        endpoints: (E,2,3) float64, the shared segment's end points, metres.
+        widths: (E,) float64, the shared segment's length, metres.
     """
 
     pairs: np.ndarray
@@ -144,16 +177,21 @@ class Portals:
 
 
 class NavMesh:
-    """A built solo navmesh (one Detour tile) and its queries.
+    """A built navmesh (one Detour tile, or several joined) and its queries.
 
     Arrays (copies taken once from the extension, metres, Y up):
 
     ``vertices``        (V,3) float64, polygon vertices.
     ``polygons``        (P,nvp) int32, vertex indices, padded with -1.
     ``neighbours``      (P,nvp) int32, polygon across edge j (vertex j -> j+1,
-                        wrapping), -1 at the boundary.
+                        wrapping), -1 at the boundary. From Detour's links:
+                        a tile-border edge touching several polygons lists
+                        the one sharing the longest part (ties: lowest
+                        index), so there ``i`` may list ``k`` while ``k``
+                        lists another polygon; :meth:`portals` has every pair.
     ``area_ids``        (P,) int32, Recast area ids (63 = walkable).
-    ``region_ids``      (P,) int32, Recast region ids.
+    ``region_ids``      (P,) int32, Recast region ids (per tile, offset to
+                        stay unique; regions stop at tile borders).
     ``detail_vertices`` (DV,3) float64, the height-detail mesh vertices.
     ``detail_triangles`` (DT,3) int32, indices into ``detail_vertices``.
     ``detail_polygon``  (DT,) int32, polygon owning each detail triangle.
@@ -163,7 +201,8 @@ class NavMesh:
                         polygon's detail triangles, +Y side.
     ``areas``           (P,) float64, m², sum of the detail triangle areas.
 
-    Polygon index ``i`` is Detour polygon ``poly_ref(i)``.
+    Polygon index ``i`` is Detour polygon ``poly_ref(i)``. Polygons are
+    numbered tile by tile (row-major tiles); tiles share equal border vertices.
     """
 
     def __init__(self, core: Any, settings: dict[str, float]):
@@ -195,16 +234,32 @@ class NavMesh:
         return int(self.core.nvp)
 
     @property
+    def tile_size(self) -> int:
+        """Tile side in cells; 0 for a solo navmesh."""
+        return int(self.core.tile_size)
+
+    @property
+    def tile_count(self) -> int:
+        """Number of Detour tiles holding polygons (1 for a solo navmesh)."""
+        return int(self.core.tile_count)
+
+    @property
+    def tile_first_polygon(self) -> np.ndarray:
+        """(T,) int32, the index of each tile's first polygon (tiles in row-major order)."""
+        return self.core.tile_first_polygon
+
+    @property
     def build_seconds(self) -> float:
         """Wall time of the C++ build (Recast + Detour), seconds."""
         return float(self.core.build_seconds)
 
     def config(self) -> dict[str, Any]:
-        """Recast's resolved ``rcConfig`` (voxel units, grid size, bounds)."""
+        """Recast's resolved ``rcConfig`` (voxel units, whole grid size, bounds) and the
+        tiling: ``tileSize`` (0: solo), ``borderSize``, ``tileGrid``, ``tiles``, ``autoTiled``."""
         return dict(self.core.config())
 
     def stats(self) -> dict[str, Any]:
-        """Sizes and timing: polygons, vertices, detail triangles, cell size/height, seconds."""
+        """Sizes and timing: polygons, vertices, detail triangles, tiles, cell size/height, seconds."""
         return {
             "polygons": self.polygon_count,
             "vertices": int(len(self.vertices)),
@@ -213,15 +268,20 @@ class NavMesh:
             "portals": int(len(self.portals().pairs)),
             "cell_size": self.settings["cell_size"],
             "cell_height": self.settings["cell_height"],
+            "tile_size": self.tile_size,
+            "tiles": self.tile_count,
             "area_m2": float(self.areas.sum()),
             "build_seconds": self.build_seconds,
         }
 
     # ------------------------------------------------------------ topology
     def portals(self) -> Portals:
-        """The shared polygon edges (computed once, vectorised)."""
+        """The shared polygon edges, every adjacent pair once (from Detour's links, computed at build)."""
         if self._portals is None:
-            self._portals = _portals(self.vertices, self.polygons, self.neighbours)
+            pairs = np.asarray(self.core.portal_pairs, dtype=np.int64).reshape(-1, 2)
+            endpoints = np.asarray(self.core.portal_endpoints, dtype=np.float64).reshape(-1, 2, 3)
+            widths = np.linalg.norm(endpoints[:, 1] - endpoints[:, 0], axis=1)
+            self._portals = Portals(pairs=pairs, endpoints=endpoints, widths=widths)
         return self._portals
 
     # ------------------------------------------------------------ queries
@@ -274,7 +334,7 @@ class NavMesh:
 
 
 def build_navmesh(vertices, faces, agent: Any, params: RecastParams | None = None) -> NavMesh:
-    """Build a solo navmesh.
+    """Build a navmesh, solo or tiled (see the tiling rule in the module docs).
 
     Args:
         vertices: (N,3) float32/float64, metres, Y up.
@@ -284,7 +344,8 @@ def build_navmesh(vertices, faces, agent: Any, params: RecastParams | None = Non
 
     Raises:
         ValueError: bad input arrays or settings.
-        RuntimeError: a Recast/Detour step failed, or nothing is walkable
+        RuntimeError: a Recast/Detour step failed ("Recast: <step> failed
+            [in tile (x, y) of X x Z] (<Recast's log>)"), or nothing is walkable
             ("Recast: no walkable polygons ...").
     """
     settings = resolve_settings(agent, params)
@@ -359,24 +420,6 @@ def _surface(P, verts, polys, dverts, dtris, owner):
     lb /= np.maximum(lb.sum(axis=1, keepdims=True), 1e-300)
     centres[has, 1] = lb[:, 0] * p0[b, 1] + lb[:, 1] * p1[b, 1] + lb[:, 2] * p2[b, 1]
     return centres, normals, areas
-
-
-def _portals(verts, polys, neis) -> Portals:
-    """Shared edges from the neighbour table: each pair (a < b) once, sorted."""
-    P, nvp = polys.shape
-    i, j = np.nonzero(neis >= 0)
-    k = neis[i, j].astype(np.int64)
-    keep = i < k
-    i, j, k = i[keep].astype(np.int64), j[keep], k[keep]
-    code = i * max(P, 1) + k
-    _, first = np.unique(code, return_index=True)      # sorted by (a, b), first edge kept
-    i, j, k = i[first], j[first], k[first]
-    counts = (polys >= 0).sum(axis=1)
-    jn = (j + 1) % counts[i]
-    va, vb = polys[i, j], polys[i, jn]
-    endpoints = np.stack([verts[va], verts[vb]], axis=1)
-    widths = np.linalg.norm(endpoints[:, 1] - endpoints[:, 0], axis=1)
-    return Portals(pairs=np.stack([i, k], axis=1), endpoints=endpoints, widths=widths)
 
 
 # keep the extension's constant visible
