@@ -3,7 +3,8 @@ Python user would otherwise reach for.
 
 Run: ``.venv/bin/python benchmarks/pipeline.py [--rooms 120 600 2400 12000] [--timeout 120]``
 
-For each dungeon (leaf terminals, the map-analysis preset) it prints:
+For each dungeon (leaf terminals, the map-analysis preset with the ``mehlhorn``
+Steiner solver unless ``--steiner kou``) it prints:
 - g2s's time per stage (steps 1-5 and the analysis);
 - peers on the same initial graph and terminals: networkx ``steiner_tree``
   (kou, mehlhorn), rustworkx ``steiner_tree``; on the same final tree,
@@ -170,11 +171,16 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--rooms", type=int, nargs="+", default=[120, 600, 2400, 12000],
                         help="dungeon sizes (about 8.5 navmesh polygons per room)")
+    parser.add_argument("--steiner", default="mehlhorn", help="SteinerSolver of g2s's own run (default: mehlhorn)")
     parser.add_argument("--timeout", type=float, default=120.0, help="time limit per peer call, seconds")
     args = parser.parse_args()
     print(f"machine: {platform.machine()}, {mp.cpu_count()} cores, Python {platform.python_version()}")
     registry = Registry.from_entry_points()
-    plan = pipeline.plan(load_config(PRESETS_DIR / "map_analysis.yaml"), registry)
+    config = load_config(PRESETS_DIR / "map_analysis.yaml")
+    # Mehlhorn: Kou's one Dijkstra per terminal does not scale to thousands of
+    # leaves; both are timed side by side below.
+    config = config.model_copy(update={"steiner": config.steiner.model_copy(update={"plugin": args.steiner})})
+    plan = pipeline.plan(config, registry)
     for rooms in args.rooms:
         run_level(rooms, args.timeout, registry, plan)
 

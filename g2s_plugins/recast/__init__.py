@@ -368,8 +368,9 @@ def build_navmesh(vertices, faces, agent: Any, params: RecastParams | None = Non
 # ---------------------------------------------------------------- numpy helpers
 
 def _vec(p) -> tuple[float, float, float]:
-    x, y, z = (float(c) for c in np.asarray(p, dtype=np.float64).reshape(3))
-    return (x, y, z)
+    # unpacking rather than numpy: called once per raycast, on a tuple or (3,) array
+    x, y, z = p
+    return (float(x), float(y), float(z))
 
 
 def _surface(P, verts, polys, dverts, dtris, owner):
