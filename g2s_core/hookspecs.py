@@ -51,8 +51,9 @@ def g2s_steiner_tree(
 ) -> nx.Graph:
     """SteinerSolver: a tree of ``graph`` that joins all ``terminals``.
 
-    ``graph`` is connected and holds at least two terminals (the pipeline
-    splits components and handles single terminals). Return a tree whose
+    All ``terminals`` (at least two) lie in one connected component of
+    ``graph``; the graph may hold other components, which no path reaches
+    (the pipeline splits the terminals by component and handles single ones). Return a tree whose
     edges are edges of ``graph`` (attributes need not be copied). The same
     input must always give the same tree.
     """

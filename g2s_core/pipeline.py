@@ -184,7 +184,7 @@ def steiner_forest(
     """One Steiner tree per connected component of ``graph`` that holds terminals.
 
     ``solve(subgraph, terminals)`` is called for components with two or more
-    terminals; a component with one terminal gives a single-node tree. When
+    terminals (with the whole graph when all terminals share one component); a component with one terminal gives a single-node tree. When
     terminals lie in several components a warning lists the groups that could
     not be joined. The forest's nodes and edges carry the graph's attributes.
     """
@@ -204,9 +204,9 @@ def steiner_forest(
         if len(group) == 1:
             forest.add_node(group[0])
             continue
-        whole = len(components[index]) == graph.number_of_nodes()
-        # a subgraph view is slow to iterate; pass the graph itself when it is one component
-        tree = solve(graph if whole else graph.subgraph(components[index]), group)
+        # a subgraph view is slow to iterate: with a single group of terminals
+        # the solver gets the whole graph (its other components are unreachable)
+        tree = solve(graph if len(groups) == 1 else graph.subgraph(components[index]), group)
         _check_tree(tree, graph, group)
         forest.add_nodes_from(sorted(tree.nodes))
         forest.add_edges_from(sorted(tuple(sorted(e)) for e in tree.edges))
