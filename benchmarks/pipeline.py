@@ -125,19 +125,16 @@ def run_level(rooms: int, limit: float, registry: Registry, plan: pipeline.Plan)
     steiner_tree = result.steiner.subgraph(max(nx.connected_components(result.steiner), key=len)).copy()
     print(f"  Steiner on the main area: {connected.number_of_nodes()} nodes, {len(component_terminals)} terminals")
     rows: list[tuple[str, float | None, float | None]] = []
+    seconds, weight = best_of(lambda: tree_weight(mehlhorn_steiner_tree(connected, component_terminals), connected))
+    rows.append(("g2s mehlhorn", seconds, weight))
     for name, function in (
         ("g2s kou", lambda: tree_weight(kou_steiner_tree(connected, component_terminals), connected)),
-        ("g2s mehlhorn", lambda: tree_weight(mehlhorn_steiner_tree(connected, component_terminals), connected)),
-    ):
-        seconds, weight = best_of(function)
-        rows.append((name, seconds, weight))
-    for name, function in (
         ("rustworkx steiner_tree", lambda: rustworkx_steiner(connected, component_terminals)),
         ("networkx steiner_tree kou", lambda: tree_weight(nx.approximation.steiner_tree(connected, component_terminals, method="kou"), connected)),
         ("networkx steiner_tree mehlhorn", lambda: tree_weight(nx.approximation.steiner_tree(connected, component_terminals, method="mehlhorn"), connected)),
     ):
         rows.append((name, *timed_in_child(function, limit)))
-    fastest_ours = min(rows[0][1], rows[1][1])
+    fastest_ours = rows[0][1]
     for name, seconds, weight in rows:
         shown = f"{seconds * 1000:10.1f} ms" if seconds is not None else f"{'> ' + str(int(limit)) + ' s':>13}"
         ratio = f"x{seconds / fastest_ours:8.1f}" if seconds is not None else ""
