@@ -415,6 +415,13 @@ def to_networkx(
 
 
 def prepare(graph: nx.Graph, terminals: Iterable[int]) -> tuple[CSRGraph, np.ndarray]:
-    """The graph as CSR and the distinct terminals as sorted node indices."""
+    """The graph as CSR and the distinct terminals as sorted node indices.
+
+    Raises:
+        ValueError: no terminals given.
+    """
     csr = graph_to_csr(graph)
-    return csr, np.unique(csr.indices_of(terminals))
+    terms = np.unique(csr.indices_of(terminals))
+    if terms.shape[0] == 0:
+        raise ValueError("no terminals given")
+    return csr, terms
