@@ -6,15 +6,12 @@ import math
 
 import networkx as nx
 import numpy as np
-import pluggy
 import pytest
 import trimesh
 from pydantic import ValidationError
 
-from g2s_core import hookspecs
 from g2s_core.config import AgentConfig
 from g2s_core.model import RunContext
-from g2s_core.plugin import PROJECT, PluginParams
 from g2s_core.simplify import simplify_forest
 from g2s_plugins.predicates import mesh_los
 
@@ -59,19 +56,6 @@ def tilted(degrees: float) -> tuple[float, float, float]:
 
 
 FLOOR = slab(-10, 10, -10, 10)
-
-
-def test_plugin_contract():
-    assert mesh_los.NAME == "mesh_los"
-    assert issubclass(mesh_los.Params, PluginParams)
-    manager = pluggy.PluginManager(PROJECT)
-    manager.add_hookspecs(hookspecs)
-    manager.register(mesh_los)
-    assert [c.name for c in manager.get_hookcallers(mesh_los) if c.name.startswith("g2s_")] == ["g2s_simplify_predicate"]
-    for name, field in mesh_los.Params.model_fields.items():
-        assert field.description, name
-    with pytest.raises(ValidationError):
-        mesh_los.Params(normal_tolerance_deg=-1)
 
 
 def test_default_tolerance_is_surface_los_one():

@@ -131,3 +131,12 @@ def test_builtin_plugins_register_through_entry_points():
     builtin = {(p.stage, p.name) for p in registry.plugins() if p.package == "g2s"}
     assert ("graph", "navmesh") in builtin
     assert all(p.entry_point == f"{p.stage}.{p.name}" for p in registry.plugins() if p.package == "g2s")
+
+
+def test_every_builtin_parameter_is_documented():
+    registry = Registry.from_entry_points()
+    builtin = [p for p in registry.plugins() if p.package == "g2s"]
+    assert {("graph", "sampling"), ("simplify", "mesh_los")} <= {(p.stage, p.name) for p in builtin}
+    for info in builtin:
+        for name, field in info.params_model.model_fields.items():
+            assert field.description, f"{info.stage}.{info.name}: {name}"

@@ -9,17 +9,15 @@ from pathlib import Path
 
 import networkx as nx
 import numpy as np
-import pluggy
 import pytest
 import trimesh
 from pydantic import ValidationError
 from scipy.spatial import cKDTree
 
-from g2s_core import hookspecs, pipeline, samples
+from g2s_core import pipeline, samples
 from g2s_core.config import AgentConfig, load_config, load_raw_config, parse_config
 from g2s_core.mesh import mesh_sha256
 from g2s_core.model import RunContext
-from g2s_core.plugin import PROJECT, PluginParams
 from g2s_core.registry import Registry
 from g2s_plugins._raycasting import AgentShape, RayCaster, walk_segments
 from g2s_plugins.graph_builders import sampling
@@ -59,24 +57,6 @@ def component_of(graph: nx.Graph) -> dict[int, int]:
 
 
 # --- plugin contract and graph conventions ---------------------------------------------
-
-
-def test_plugin_contract():
-    assert sampling.NAME == "sampling"
-    assert issubclass(sampling.Params, PluginParams)
-    manager = pluggy.PluginManager(PROJECT)
-    manager.add_hookspecs(hookspecs)
-    manager.register(sampling)
-    hooks = [c.name for c in manager.get_hookcallers(sampling) if c.name.startswith("g2s_")]
-    assert hooks == ["g2s_build_graph"]
-    for name, field in sampling.Params.model_fields.items():
-        assert field.description, name
-    with pytest.raises(ValidationError):
-        sampling.Params(spacing=0)
-    with pytest.raises(ValidationError):
-        sampling.Params(method="hexagons")
-    with pytest.raises(ValidationError):
-        sampling.Params(unknown=1)
 
 
 def test_flat_floor_is_covered_at_the_requested_spacing():
