@@ -29,7 +29,8 @@ import igraph
 import networkx as nx
 import rustworkx as rx
 
-from g2s_core import pipeline, samples
+from g2s_core import pipeline
+from g2s_plugins.samples import levels as samples
 from g2s_core.config import PRESETS_DIR, load_config
 from g2s_core.mesh import mesh_sha256
 from g2s_core.registry import Registry

@@ -18,14 +18,15 @@ from typing import Any
 from rich.console import Console
 from rich.table import Table
 
-from g2s_core import pipeline, samples
+from g2s_core import pipeline
+from g2s_plugins.samples import levels as samples
 from g2s_core.config import PRESETS_DIR, load_config, parse_config, load_raw_config
 from g2s_core.errors import G2SError
 from g2s_core.hookspecs import STAGE_TITLES
 from g2s_core.mesh import load_mesh, mesh_sha256, prepare_mesh
 from g2s_core.model import RunResult
-from g2s_core.outputs import DEFAULT_FORMATS, WRITERS, check_outdir, parse_formats, prepare_outdir, write_outputs
-from g2s_core.outputs.common import STEP_ROWS, final_graph, roots_of, stage_rows
+from g2s_plugins.outputs import DEFAULT_FORMATS, WRITERS, check_outdir, parse_formats, prepare_outdir, write_outputs
+from g2s_plugins.outputs.common import STEP_ROWS, final_graph, roots_of, stage_rows
 from g2s_core.registry import Registry, plugin_parameters
 
 SAMPLE_PREFIX = "sample:"

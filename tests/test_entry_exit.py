@@ -1,6 +1,6 @@
 """The ``entry_exit`` TerminalSelector on generated levels with known openings.
 
-Each level is built by :mod:`g2s_core.samples`; its navmesh comes from the
+Each level is built by :mod:`g2s_plugins.samples.levels`; its navmesh comes from the
 ``navmesh`` graph builder's hook (Recast), and the selector's hook is called
 directly with a :class:`~g2s_core.model.RunContext`.
 """
@@ -16,7 +16,7 @@ import pytest
 import trimesh
 from pydantic import ValidationError
 
-from g2s_core import samples
+from g2s_plugins.samples import levels as samples
 from g2s_core.config import AgentConfig
 from g2s_core.errors import PluginError
 from g2s_core.model import Opening, RunContext, Terminals

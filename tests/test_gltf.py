@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 import trimesh
 
-from g2s_core.outputs import colours, gltf
+from g2s_plugins.outputs import colours, gltf
 from tests.test_outputs import make_result, real_navmesh, two_floor_mesh
 
 _COMPONENTS = {5121: np.uint8, 5123: np.uint16, 5125: np.uint32, 5126: np.float32}

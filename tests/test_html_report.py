@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 
-from g2s_core.outputs import colours, html_report
+from g2s_plugins.outputs import colours, html_report
 from tests.test_outputs import make_result
 
 CHROMIUM = Path("/usr/bin/chromium")

@@ -5,7 +5,8 @@ from __future__ import annotations
 import networkx as nx
 import pytest
 
-from g2s_core import pipeline, samples
+from g2s_core import pipeline
+from g2s_plugins.samples import levels as samples
 from g2s_core.config import PRESETS_DIR, load_config
 from g2s_core.mesh import load_mesh, mesh_sha256
 from g2s_core.registry import Registry

@@ -21,7 +21,7 @@ import trimesh
 from g2s_core.config import AgentConfig, load_config
 from g2s_core.errors import G2SError
 from g2s_core.model import Opening, RunContext, RunResult, StageStats, Terminals
-from g2s_core.outputs import (
+from g2s_plugins.outputs import (
     DEFAULT_FORMATS,
     RESULT_FILES,
     WRITERS,
@@ -31,7 +31,7 @@ from g2s_core.outputs import (
     prepare_outdir,
     write_outputs,
 )
-from g2s_core.outputs import common, graphml, heatmap, structure_json
+from g2s_plugins.outputs import common, graphml, heatmap, structure_json
 from g2s_core.pipeline import steiner_forest
 from g2s_core.rooted import root_forest
 from g2s_core.simplify import simplify_forest
@@ -361,7 +361,7 @@ def test_heatmap_png_has_a_panel_per_floor_and_no_metadata(result, tmp_path):
 
 def test_heatmap_colours_follow_the_values(tmp_path):
     """The hottest node's pixels are red, the coldest's green (green -> yellow -> red)."""
-    from g2s_core.outputs import colours
+    from g2s_plugins.outputs import colours
 
     assert colours.heat_colour(0.0) == (0, 160, 0) and colours.heat_colour(1.0) == (220, 0, 0)
     assert colours.heat_colour(0.5) == (250, 210, 0)
@@ -468,7 +468,8 @@ needs_plugins = pytest.mark.skipif(_plugins_missing() is not None, reason=str(_p
 
 @needs_plugins
 def test_real_run_json_is_deterministic_and_valid(tmp_path):
-    from g2s_core import pipeline, samples
+    from g2s_core import pipeline
+    from g2s_plugins.samples import levels as samples
     from g2s_core.mesh import mesh_sha256
     from g2s_core.registry import Registry
 

@@ -1,4 +1,4 @@
-"""Tests of the procedural sample levels (g2s_core.samples)."""
+"""Tests of the procedural sample levels (g2s_plugins.samples.levels)."""
 
 from __future__ import annotations
 
@@ -11,8 +11,8 @@ import pytest
 from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import connected_components
 
-from g2s_core import samples
-from g2s_core.samples import SAMPLES, SampleLevel, load_sample
+from g2s_plugins.samples import levels as samples
+from g2s_plugins.samples.levels import SAMPLES, SampleLevel, load_sample
 
 UP = np.array([0.0, 1.0, 0.0])
 DOWN = -UP

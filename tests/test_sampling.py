@@ -14,7 +14,8 @@ import trimesh
 from pydantic import ValidationError
 from scipy.spatial import cKDTree
 
-from g2s_core import pipeline, samples
+from g2s_core import pipeline
+from g2s_plugins.samples import levels as samples
 from g2s_core.config import AgentConfig, load_config, load_raw_config, parse_config
 from g2s_core.mesh import mesh_sha256
 from g2s_core.model import RunContext

@@ -43,7 +43,8 @@ def test_third_party_plugin_is_listed_and_runs(installed_plugin, tmp_path):
 def test_third_party_values_reach_the_result(installed_plugin):
     # in a fresh interpreter, so that the newly installed distribution's entry points are seen
     script = """
-from g2s_core import pipeline, samples
+from g2s_core import pipeline
+from g2s_plugins.samples import levels as samples
 from g2s_core.config import load_config
 from g2s_core.mesh import mesh_sha256
 from g2s_core.registry import Registry

@@ -40,9 +40,9 @@ import plotly.graph_objects as go
 import yaml
 
 from g2s_core.model import RunResult
-from g2s_core.outputs import colours
-from g2s_core.outputs.common import edge_list, final_graph, number, roots_of, stage_rows, terminal_ids
-from g2s_core.outputs.files import atomic_write
+from g2s_plugins.outputs import colours
+from g2s_plugins.outputs.common import edge_list, final_graph, number, roots_of, stage_rows, terminal_ids
+from g2s_plugins.outputs.files import atomic_write
 
 REPORT_FILE = "report.html"
 PLOT_ID = "g2s-plot"

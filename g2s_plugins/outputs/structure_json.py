@@ -30,8 +30,8 @@ import numpy as np
 
 from g2s_core.errors import G2SError
 from g2s_core.model import Opening, RunResult, StageStats, Terminals, vec3
-from g2s_core.outputs.common import edge_list, final_graph, number, roots_of, terminal_ids, vector
-from g2s_core.outputs.files import atomic_write
+from g2s_plugins.outputs.common import edge_list, final_graph, number, roots_of, terminal_ids, vector
+from g2s_plugins.outputs.files import atomic_write
 
 SCHEMA_VERSION = 1
 STRUCTURE_FILE = "structure.json"

@@ -41,9 +41,9 @@ from trimesh.visual.material import PBRMaterial
 from trimesh.visual.texture import TextureVisuals
 
 from g2s_core.model import RunResult
-from g2s_core.outputs import colours
-from g2s_core.outputs.common import agent_value, edge_list, final_graph, number, roots_of, terminal_ids
-from g2s_core.outputs.files import atomic_write
+from g2s_plugins.outputs import colours
+from g2s_plugins.outputs.common import agent_value, edge_list, final_graph, number, roots_of, terminal_ids
+from g2s_plugins.outputs.files import atomic_write
 
 GLB_FILE = "structure.glb"
 HEAT_LEVELS = 32

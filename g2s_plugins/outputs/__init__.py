@@ -27,7 +27,7 @@ from pathlib import Path
 
 from g2s_core.errors import G2SError
 from g2s_core.model import RunResult
-from g2s_core.outputs.structure_json import LoadedResult, load_result
+from g2s_plugins.outputs.structure_json import LoadedResult, load_result
 
 Writer = Callable[[RunResult, Path], list[Path]]
 
@@ -37,14 +37,14 @@ __all__ = [
 ]
 
 def _lazy(module: str) -> Writer:
-    """The ``write`` of ``g2s_core.outputs.<module>``, imported on first use (plotly and
+    """The ``write`` of ``g2s_plugins.outputs.<module>``, imported on first use (plotly and
     matplotlib take a while to import, and most commands never write those formats)."""
 
     def write(result: RunResult, outdir: Path) -> list[Path]:
-        return importlib.import_module(f"g2s_core.outputs.{module}").write(result, outdir)
+        return importlib.import_module(f"g2s_plugins.outputs.{module}").write(result, outdir)
 
     write.__qualname__ = write.__name__ = f"write_{module}"
-    write.__doc__ = f"Writer of g2s_core.outputs.{module}."
+    write.__doc__ = f"Writer of g2s_plugins.outputs.{module}."
     return write
 
 

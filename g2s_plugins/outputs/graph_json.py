@@ -12,7 +12,7 @@ from pathlib import Path
 import networkx as nx
 
 from g2s_core.model import RunResult
-from g2s_core.outputs.files import atomic_write
+from g2s_plugins.outputs.files import atomic_write
 
 
 def write(result: RunResult, outdir: Path) -> list[Path]:

@@ -20,8 +20,8 @@ import networkx as nx
 import numpy as np
 
 from g2s_core.model import RunResult
-from g2s_core.outputs.common import edge_list, final_graph, number, roots_of, terminal_ids
-from g2s_core.outputs.files import atomic_write
+from g2s_plugins.outputs.common import edge_list, final_graph, number, roots_of, terminal_ids
+from g2s_plugins.outputs.files import atomic_write
 
 STRUCTURE_FILE = "structure.graphml"
 GRAPH_FILE = "graph.graphml"

@@ -32,9 +32,9 @@ from matplotlib.colors import Normalize
 from matplotlib.figure import Figure
 
 from g2s_core.model import RunResult
-from g2s_core.outputs import colours
-from g2s_core.outputs.common import agent_value, edge_list, final_graph, floors, roots_of
-from g2s_core.outputs.files import atomic_write
+from g2s_plugins.outputs import colours
+from g2s_plugins.outputs.common import agent_value, edge_list, final_graph, floors, roots_of
+from g2s_plugins.outputs.files import atomic_write
 
 HEATMAP_FILE = "heatmap.png"
 GROUND_COLOUR = "#e4e4e4"

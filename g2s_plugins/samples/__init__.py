@@ -1,0 +1,1 @@
+"""Procedural sample levels with known ground truth (see ``levels``)."""
