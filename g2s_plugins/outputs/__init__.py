@@ -145,7 +145,8 @@ def write_outputs(
     folder never mixes two runs.
     """
     written: list[Path] = []
-    for fmt in parse_formats(formats):
+    result.formats = tuple(parse_formats(formats))
+    for fmt in result.formats:
         if progress is not None:
             progress(f"writing {fmt}")
         written.extend(WRITERS[fmt](result, outdir))
