@@ -524,7 +524,7 @@ def test_demo_writes_all_five_formats_and_they_agree(tmp_path, capsys):
     loaded = load_result(out_dir)
     scene = _trimesh.load(out_dir / "structure.glb")
     names = set(scene.graph.nodes_geometry)
-    assert {"mesh", "navmesh", "structure"} <= names
+    assert {"level_mesh", "navmesh_surface"} <= names and any(n.startswith("edges_value_") for n in names)
     assert {n for n in names if n.startswith("root_")} == {f"root_{r}" for r in loaded.roots}
     assert {n for n in names if n.startswith("node_")} == {f"node_{n}" for n in loaded.structure}
     assert {n for n in names if n.startswith("terminal_")} == {f"terminal_{t}" for t in loaded.terminals.nodes}
