@@ -13,8 +13,10 @@ README_IMAGE := docs/images/demo-heatmap.png
 # the Khronos glTF validator tests/test_gltf.py runs (make test only), from npm into the venv
 GLTF_VALIDATOR := $(VENV)/node/node_modules/gltf-validator
 GLTF_VALIDATOR_VERSION := 2.0.0-dev.3.10
+# three.js, which draws the GLB for docs/images/glb-threejs.png (make docs-images only)
+THREE_VERSION := 0.187.0
 
-.PHONY: demo test setup system-deps benchmark clean readme-image
+.PHONY: demo test setup system-deps benchmark clean readme-image docs-images
 
 demo: setup
 	$(VENV)/bin/g2s demo -o $(DEMO_OUT) --force
@@ -41,6 +43,13 @@ readme-image: setup
 	$(VENV)/bin/g2s demo -o $(DEMO_OUT) --force --format png --quiet
 	mkdir -p $(dir $(README_IMAGE))
 	cp $(DEMO_OUT)/heatmap.png $(README_IMAGE)
+
+# docs/outputs.md's pictures: the demo's report and GLB (three.js) in headless chromium.
+docs-images: setup
+	$(VENV)/bin/g2s demo -o $(DEMO_OUT) --force --quiet
+	npm install --no-save --no-package-lock --no-audit --no-fund --prefix $(VENV)/node \
+	  gltf-validator@$(GLTF_VALIDATOR_VERSION) three@$(THREE_VERSION)
+	$(PY) tools/screenshots.py $(DEMO_OUT) $(VENV)/node/node_modules docs/images
 
 benchmark: setup
 	$(PY) benchmarks/pipeline.py

@@ -9,7 +9,7 @@ viewers' outliners find them), each holding its objects:
     ``navmesh_surface``: the navmesh's detail triangles, translucent green
     (empty without a navmesh).
 ``structure``
-    The final structure's edges as thin tubes (radius 0.1 r, eight sides), so
+    The final structure's edges as thin tubes (radius 0.2 r, eight sides), so
     they render in every viewer and engine (glTF lines are one pixel wide and
     Blender drops loose edges). One mesh per colour, ``edges_<colour>``: the
     child's first analysis value on viridis in :data:`HEAT_LEVELS` steps
@@ -18,7 +18,7 @@ viewers' outliners find them), each holding its objects:
     repeating), else one grey (``edges``, runs stopped before step 4). Each
     mesh node's extras list its ``edges`` ``[u, v]`` in the order of its tubes
     and ``colour_by``. With analysis values, ``node_<id>`` is a sphere
-    (radius 0.3 r) on every structure node in its value's colour.
+    (radius 0.4 r) on every structure node in its value's colour.
 ``roots``
     ``root_<id>``: a black cone pointing down at each root, floating above the
     node so that the node's sphere stays visible.
@@ -29,7 +29,7 @@ viewers' outliners find them), each holding its objects:
     The structure's loop edges once the analysis adds them; empty for now.
 
 *r* is the agent radius. The ``structure``, ``roots``, ``terminals`` and
-``loops`` groups are raised by 0.3 r (a node sphere's radius) so that nothing
+``loops`` groups are raised by 0.4 r (a node sphere's radius) so that nothing
 sinks into the floor; their objects sit at the nodes' exact positions inside
 the group. Every ``node_``, ``root_`` and ``terminal_`` node's extras hold ``id``,
 ``depth``, ``root``, ``terminal`` and ``values`` (analysis key -> value).
@@ -59,10 +59,10 @@ GROUPS = ("level", "navmesh", "structure", "roots", "terminals", "loops")
 LIFTED_GROUPS = ("structure", "roots", "terminals", "loops")
 HEAT_LEVELS = 32
 """Analysis colours are quantised to this many steps so that edges and spheres share meshes."""
-TUBE_RADIUS, TUBE_SIDES = 0.1, 8
-NODE_RADIUS = 0.3
-RING_RADIUS, RING_THICKNESS = 0.5, 0.06
-CONE_RADIUS, CONE_HEIGHT, CONE_GAP = 0.35, 1.0, 0.1
+TUBE_RADIUS, TUBE_SIDES = 0.2, 8
+NODE_RADIUS = 0.4
+RING_RADIUS, RING_THICKNESS = 0.65, 0.08
+CONE_RADIUS, CONE_HEIGHT, CONE_GAP = 0.5, 1.4, 0.1
 """Sizes in agent radii."""
 
 
