@@ -159,3 +159,14 @@ def test_nav_test_report_is_small(shared_data, tmp_path):
     assert done.returncode == 0, done.stderr
     size = (out / "report.html").stat().st_size
     assert size < 3_000_000, f"report.html is {size / 1e6:.2f} MB"
+
+
+def test_hover_gives_role_position_in_metres_and_each_value_once():
+    result = make_result()
+    root = result.structure.graph["roots"][0]
+    text = html_report.hover_text(result.structure, root, result, {root})
+    x, y, z = result.structure.nodes[root]["pos"]
+    lines = text.split("<br>")
+    assert lines[0] == f"node {root} (root, terminal)"
+    assert lines[1] == f"x {x:.2f} m, y {y:.2f} m, z {z:.2f} m"
+    assert [line.split(":")[0] for line in lines[3:]] == ["betweenness", "degree"]
