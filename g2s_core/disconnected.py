@@ -64,8 +64,13 @@ def disconnected_warning(graph: nx.Graph, areas: Mapping[Any, Sequence[int]], te
                          agent: Any) -> str:
     """The warning for terminals spread over the connected ``areas`` (area id -> its nodes) of ``graph``.
 
-    ``agent`` has ``radius``, ``height``, ``max_climb`` and ``max_slope`` (metres, degrees).
+    ``agent`` has ``radius``, ``height``, ``max_climb`` and ``max_slope`` (metres, degrees); without
+    it the cause is left out, and without node positions (an abstract graph) the places too.
     """
+    if not all("pos" in graph.nodes[n] for nodes in areas.values() for n in nodes):
+        sizes = sorted((len(nodes) for nodes in areas.values()), reverse=True)
+        return (f"{terminal_count} terminals lie in {len(sizes)} disconnected areas, so they are joined by one tree "
+                f"per area (the largest have {', '.join(map(str, sizes[:LISTED_AREAS]))} nodes).")
     summaries = sorted((area_summary(graph, nodes) + (nodes,) for nodes in areas.values()),
                        key=lambda s: -s[0])
     listed = "; ".join(f"{size:.0f} m² near ({_xyz(where)})" for size, where, _ in summaries[:LISTED_AREAS])
@@ -73,7 +78,7 @@ def disconnected_warning(graph: nx.Graph, areas: Mapping[Any, Sequence[int]], te
     more = f"; {len(rest)} more with {sum(s[0] for s in rest):.0f} m² in all" if rest else ""
     message = (f"{terminal_count} terminals lie in {len(summaries)} disconnected areas, so they are joined by "
                f"one tree per area. Largest areas: {listed}{more}.")
-    if agent is None:
+    if agent is None or len(summaries) < 2:
         return message
     largest = summaries[0][2]
     gap, step, here, there = min((closest_step(graph, largest, other[2]) for other in summaries[1:1 + COMPARED_AREAS]),

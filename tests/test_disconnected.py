@@ -53,3 +53,10 @@ def test_area_summary_places_the_area_inside_it():
     graph.nodes[2]["area"] = 10.0  # most of the surface is at the last node
     total, where = area_summary(graph, nodes)
     assert total == 12.0 and tuple(where) == (2.5, 0.0, 0.5)
+
+
+def test_an_abstract_graph_gets_the_counts_only():
+    graph = nx.Graph([(0, 1), (1, 2), (7, 8)])
+    message = disconnected_warning(graph, areas(graph), 3, None)
+    assert message == ("3 terminals lie in 2 disconnected areas, so they are joined by one tree per area "
+                       "(the largest have 3, 2 nodes).")
