@@ -43,13 +43,8 @@ def vec3(values: Any) -> Vec3:
 
 
 class Portals(Protocol):
-    """The shared edges of a navmesh, each adjacent polygon pair once, sorted by (a, b).
-
-    Attributes:
-        pairs: (E,2) int64, polygon indices ``a < b``.
-        endpoints: (E,2,3) float64, the shared segment's end points, metres.
-        widths: (E,) float64, the shared segment's length, metres.
-    """
+    """Where navmesh polygons touch: for E touching pairs (a < b, sorted), ``pairs`` (E,2) int64,
+    the touching segment's ``endpoints`` (E,2,3) float64 and ``widths`` (E,) float64, metres."""
 
     pairs: np.ndarray
     endpoints: np.ndarray

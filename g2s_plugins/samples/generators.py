@@ -35,7 +35,8 @@ class SampleGenerator:
         try:
             return self.factory(**params.model_dump()).mesh
         except ValueError as exc:  # the factories check their arguments' ranges
-            raise G2SError(f"sample:{self.NAME}: {exc}") from None
+            given = ", ".join(f"{k}={v!r}" for k, v in params.model_dump(exclude_defaults=True).items())
+            raise G2SError(f"sample:{self.NAME}{f' with {given}' if given else ''}: {exc}") from None
 
     def __repr__(self) -> str:
         return f"SampleGenerator({self.NAME!r})"

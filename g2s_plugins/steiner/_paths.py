@@ -10,6 +10,18 @@ Tie-breaking rule used throughout: edges are totally ordered by
 ``(weight, lo, hi)`` where ``lo < hi`` are the endpoint indices. A minimum
 spanning tree under a strict total order is unique, so spanning trees never
 depend on how a library breaks ties.
+
+The solvers' shared contract, ``solver(graph, terminals) -> tree``:
+
+* ``graph``: undirected networkx graph with integer node ids; edge attribute
+  ``weight`` (missing means 1), finite and non-negative;
+* ``terminals``: node ids to join, in any order; duplicates are ignored;
+* the tree (``networkx.Graph``) has edges of ``graph``, each with its
+  ``weight``; it holds every terminal and has no non-terminal leaf; one
+  terminal gives a single-node graph;
+* ``ValueError``: no terminals, a terminal not in the graph, terminals in
+  different components, or a negative or non-finite weight; ``TypeError``: a
+  directed graph, or node ids that are not integers.
 """
 
 from __future__ import annotations
