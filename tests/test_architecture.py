@@ -31,3 +31,51 @@ def test_the_documented_stage_table_is_the_code_table():
     text = (PROJECT / "docs" / "architecture.md").read_text()
     rows = re.findall(r"^\| `(\w+)` \| (\w+) \| `(\w+)\(", text, flags=re.MULTILINE)
     assert rows == [(stage.key, stage.title, stage.hook) for stage in STAGES]
+
+
+def test_the_documented_example_plugins_register_and_work(tmp_path):
+    import types
+
+    from g2s_core.model import RunResult
+    from g2s_core.registry import Registry
+
+    text = (PROJECT / "docs" / "architecture.md").read_text().split("## Adding a plugin", 1)[1]
+    registry = Registry()
+    for index, code in enumerate(re.findall(r"```python\n(.*?)```", text, flags=re.DOTALL)):
+        module = types.ModuleType(f"doc_example_{index}")
+        exec(compile(code, module.__name__, "exec"), module.__dict__)
+        registry.register(module, package="docs", entry_point=f"example.{index}")
+    kinds = [(p.stage, p.name) for p in registry.plugins()]
+    assert kinds == [("graph", "triangles"), ("terminals", "above"), ("steiner", "star"), ("roots", "lowest"),
+                     ("simplify", "straight"), ("analyzers", "height"), ("outputs", "csv"), ("levels", "plaza")]
+
+    def call(stage, name, **kwargs):
+        info = registry.get(stage, name)
+        return registry.call(info, params=info.params_model(), **kwargs)
+
+    mesh = call("levels", "plaza")
+    graph = call("graph", "triangles", mesh=mesh, context=None)
+    tops = sorted(n for n, p in graph.nodes(data="pos") if p[1] > 0)
+    terminals = [tops[0], tops[-1]]
+    tree = call("steiner", "star", graph=graph, terminals=terminals, context=None)
+    for node in tree:  # as the pipeline does: the tree gets the graph's attributes
+        tree.nodes[node].update(graph.nodes[node])
+    scores = call("roots", "lowest", tree=tree, context=None)
+    assert set(scores) == set(tree)
+    assert call("terminals", "above", graph=graph, context=None).nodes == ()
+    predicate = call("simplify", "straight", context=None)
+    assert isinstance(predicate(nx_path_with_positions(), 0, 1, 2), bool)
+    values = call("analyzers", "height", structure=tree, context=None)
+    assert min(values.values()) == 0
+    result = RunResult(config={}, mesh_name="plaza", mesh_sha256="", context=None, graph=graph, steiner=tree)
+    written = call("outputs", "csv", result=result, folder=tmp_path)
+    assert [p.name for p in written] == ["nodes.csv"] and len(written[0].read_text().splitlines()) == len(tree) + 1
+
+
+def nx_path_with_positions():
+    import networkx as nx
+
+    tree = nx.DiGraph([(0, 1), (1, 2)])
+    for node in tree:
+        tree.nodes[node]["pos"] = (float(node), 0.0, 0.0)
+    return tree
