@@ -24,7 +24,7 @@ from __future__ import annotations
 import dataclasses
 from collections.abc import Mapping
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Any, Protocol
+from typing import TYPE_CHECKING, Any, Protocol, runtime_checkable
 
 import networkx as nx
 import numpy as np
@@ -51,6 +51,7 @@ class Portals(Protocol):
     widths: np.ndarray
 
 
+@runtime_checkable
 class NavMesh(Protocol):
     """What a graph builder that makes a navigation mesh puts in ``context.navmesh``.
 

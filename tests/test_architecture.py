@@ -79,3 +79,25 @@ def nx_path_with_positions():
     for node in tree:
         tree.nodes[node]["pos"] = (float(node), 0.0, 0.0)
     return tree
+
+
+def test_the_recast_navmesh_provides_the_navmesh_protocol():
+    import numpy as np
+
+    from g2s_core.config import AgentConfig
+    from g2s_core.model import NavMesh
+    from g2s_plugins.recast import build_navmesh
+    from g2s_plugins.samples.levels import straight_corridor
+
+    level = straight_corridor()
+    navmesh = build_navmesh(level.mesh.vertices, level.mesh.faces, AgentConfig())
+    assert isinstance(navmesh, NavMesh)
+    members = [name for name in NavMesh.__annotations__] + ["polygon_count"]
+    assert all(hasattr(navmesh, name) for name in members)
+    assert {"cell_size", "cell_height"} <= set(navmesh.settings)
+    portals = navmesh.portals()
+    assert portals.pairs.shape[1:] == (2,) and portals.endpoints.shape[1:] == (2, 3) and len(portals.widths) == len(portals.pairs)
+    index, point = navmesh.nearest_poly(navmesh.centres[0])
+    assert index == 0 and np.allclose(point, navmesh.centres[0], atol=0.5)
+    clear, _ = navmesh.raycast(navmesh.centres[0], navmesh.centres[0])
+    assert isinstance(clear, bool) and isinstance(navmesh.stats(), dict)
