@@ -158,17 +158,18 @@ class Registry:
 
         Raises:
             ConfigError: no such plugin is installed.
-            PluginFailure: the plugin is installed but failed to load.
+            PluginFailure: the plugin is installed but failed to load (or another
+                package provides a plugin of the same kind and name).
         """
-        info = self._plugins.get((stage, name))
-        if info is not None:
-            return info
         title = BY_KEY[stage].title
-        for broken in self.broken:
+        for broken in self.broken:  # also a second plugin of that name: which one is meant is unknown
             if broken.entry_point == f"{stage}.{name}":
                 raise PluginFailure(
                     f"{title} plugin {name!r} (package {broken.package!r}) failed to load: {broken.reason}"
                 )
+        info = self._plugins.get((stage, name))
+        if info is not None:
+            return info
         installed = ", ".join(p.name for p in self.plugins(stage)) or "none"
         broken = [f"{b.entry_point} of package {b.package!r}" for b in self.broken if b.entry_point.startswith(f"{stage}.")]
         also = f"; failed to load: {', '.join(broken)}, see `g2s plugins`" if broken else ""

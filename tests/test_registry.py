@@ -225,3 +225,21 @@ def test_a_plugin_that_fails_to_load_is_kept_aside(monkeypatch):
 
 
 FIRST_K = terminal_plugin("first_k")
+
+
+def test_two_installed_plugins_of_one_name_stop_the_runs_that_ask_for_it(monkeypatch):
+    import importlib.metadata
+
+    def entry_point(package, plugin):
+        return types.SimpleNamespace(name="terminals.first_k", value=f"{package}.first_k",
+                                     dist=types.SimpleNamespace(name=package), load=lambda: plugin)
+
+    found = [entry_point("pkg-b", OTHER_FIRST_K), entry_point("pkg-a", FIRST_K)]
+    monkeypatch.setattr(importlib.metadata, "entry_points", lambda group: found)
+    registry = Registry.from_entry_points()
+    assert [(b.package, b.entry_point) for b in registry.broken] == [("pkg-b", "terminals.first_k")]
+    with pytest.raises(PluginFailure, match=r"two plugins provide TerminalSelector 'first_k': package 'pkg-a'"):
+        registry.get("terminals", "first_k")
+
+
+OTHER_FIRST_K = terminal_plugin("first_k")
