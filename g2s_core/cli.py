@@ -44,7 +44,9 @@ def _parser() -> argparse.ArgumentParser:
     parser.add_argument("-v", "--verbose", action="store_true", help="show tracebacks of internal errors")
     commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
 
-    run = commands.add_parser("run", help="run a YAML config on a mesh file", description="Run a YAML config on a mesh.")
+    run = commands.add_parser(
+        "run", help="run a YAML config on a mesh file", description="Run a YAML config on a mesh.", epilog=EXIT_CODES
+    )
     run.add_argument("config", type=Path, help="YAML config (see configs/ for presets)")
     run.add_argument("mesh", help=f"mesh file (.obj .glb .gltf .ply .stl .off) or {SAMPLE_PREFIX}NAME[?param=value&...] "
                      "for a level from an installed level generator (see `g2s plugins --stage levels`)")
