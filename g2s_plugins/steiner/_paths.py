@@ -26,7 +26,7 @@ The solvers' shared contract, ``solver(graph, terminals) -> tree``:
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 
 import networkx as nx
@@ -437,3 +437,14 @@ def prepare(graph: nx.Graph, terminals: Iterable[int]) -> tuple[CSRGraph, np.nda
     if terms.shape[0] == 0:
         raise ValueError("no terminals given")
     return csr, terms
+
+
+def solve(
+    graph: nx.Graph, terminals: Iterable[int], algorithm: Callable[[CSRGraph, np.ndarray], nx.Graph]
+) -> nx.Graph:
+    """The solvers' shared frame (see the module doc for the contract): :func:`prepare`, a lone
+    terminal as a single-node tree, else ``algorithm(csr, terms)`` for two or more sorted terminal indices."""
+    csr, terms = prepare(graph, terminals)
+    if terms.shape[0] == 1:
+        return to_networkx(csr, terms[:0], terms[:0], np.empty(0), terms)
+    return algorithm(csr, terms)

@@ -60,11 +60,11 @@ def kou_steiner_tree(graph: nx.Graph, terminals: Iterable[int]) -> nx.Graph:
     Arguments, result and errors: the solvers' shared contract in
     :mod:`g2s_plugins.steiner._paths`.
     """
-    csr, terms = _paths.prepare(graph, terminals)
-    k = terms.shape[0]
-    if k == 1:
-        return _paths.to_networkx(csr, terms[:0], terms[:0], np.empty(0), terms)
+    return _paths.solve(graph, terminals, _kou)
 
+
+def _kou(csr: _paths.CSRGraph, terms: np.ndarray) -> nx.Graph:
+    k = terms.shape[0]
     rows_per_search = max(1, DISTANCE_BUDGET // max(csr.n, 1))
     predecessors = None
     if k <= rows_per_search:

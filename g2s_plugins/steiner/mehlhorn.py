@@ -54,11 +54,11 @@ def mehlhorn_steiner_tree(graph: nx.Graph, terminals: Iterable[int]) -> nx.Graph
     Arguments, result and errors: the solvers' shared contract in
     :mod:`g2s_plugins.steiner._paths`.
     """
-    csr, terms = _paths.prepare(graph, terminals)
-    k = terms.shape[0]
-    if k == 1:
-        return _paths.to_networkx(csr, terms[:0], terms[:0], np.empty(0), terms)
+    return _paths.solve(graph, terminals, _mehlhorn)
 
+
+def _mehlhorn(csr: _paths.CSRGraph, terms: np.ndarray) -> nx.Graph:
+    k = terms.shape[0]
     distance, predecessor, source = dijkstra(
         csr.matrix, directed=True, indices=terms, min_only=True, return_predecessors=True
     )
