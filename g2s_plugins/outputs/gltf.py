@@ -102,7 +102,7 @@ def _add_surfaces(scene: trimesh.Scene, result: RunResult) -> None:
         level.visual = _material("level_mesh", colours.MESH_COLOUR)
         _place(scene, "level", "level_mesh", level, np.zeros(3))
     navmesh = result.context.navmesh
-    if navmesh is not None and len(getattr(navmesh, "detail_triangles", ())):
+    if navmesh is not None and len(navmesh.detail_triangles):
         surface = trimesh.Trimesh(np.asarray(navmesh.detail_vertices, dtype=np.float64),
                                   np.asarray(navmesh.detail_triangles, dtype=np.int64), process=False)
         surface.visual = _material("navmesh_surface", colours.NAVMESH_COLOUR, alpha=colours.NAVMESH_ALPHA)
