@@ -92,7 +92,10 @@ def prepare_mesh(loaded: object, config: MeshConfig, source: str) -> trimesh.Tri
         raise MeshError(f"{source}: the mesh has NaN or infinite vertex coordinates")
     if config.up_axis == "z":
         vertices = vertices @ _Z_UP_TO_Y_UP.T
-    vertices = vertices * config.scale
+    with np.errstate(over="ignore"):
+        vertices = vertices * config.scale
+    if not np.isfinite(vertices).all():
+        raise MeshError(f"mesh.scale: {config.scale:g} makes {source}'s vertex coordinates overflow (infinite)")
     return trimesh.Trimesh(vertices=vertices, faces=faces, process=False)
 
 

@@ -12,7 +12,7 @@ import pydantic
 import pytest
 import trimesh
 
-from g2s_plugins.recast import FLT_MAX, NavMesh, RecastParams, build_navmesh, resolve_settings
+from g2s_plugins.recast import FLT_MAX, NavMesh, RecastParams, SettingsError, _recast, build_navmesh, resolve_settings
 
 AGENT = types.SimpleNamespace(radius=0.3, height=2.0, max_climb=0.4, max_slope=45.0)
 
@@ -167,8 +167,17 @@ def test_bad_inputs_raise_value_errors():
 
 
 def test_grid_guard_names_the_problem():
-    with pytest.raises(RuntimeError, match="Recast: grid .* exceeds max_cells"):
+    with pytest.raises(SettingsError, match="graph.params.max_cells: a tile of 256 cells .* more than "
+                       "graph.params.max_cells=100"):
         build(floor(10, 10), max_cells=100)
+    with pytest.raises(SettingsError, match="graph.params.tile_size: a solo grid of 67 x 67 cells"):
+        build(floor(10, 10), max_cells=100, tile_size=0)
+    # the automatic mode tiles a level whose solo grid exceeds the guard
+    assert build(floor(60, 60), max_cells=100_000).tile_size == 256  # 400 x 400 cells
+    # the extension refuses the same on its own, computed without int overflow
+    with pytest.raises(RuntimeError, match="Recast: grid of 67 x 67 cells exceeds max_cells=100"):
+        _recast.build(floor(10, 10).vertices, floor(10, 10).faces, **{**resolve_settings(AGENT), "max_cells": 100,
+                                                                     "tile_size": 0})
 
 
 # ------------------------------------------------------------------ parameters
@@ -472,7 +481,6 @@ def test_tile_size_validation_and_empty_tiles():
         RecastParams(tile_size=8)
     with pytest.raises(pydantic.ValidationError):
         RecastParams(tile_size=-1)
-    from g2s_plugins.recast import _recast
 
     mesh = floor(10, 10)
     with pytest.raises(ValueError, match="tile_size"):
