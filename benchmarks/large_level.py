@@ -5,8 +5,9 @@ Run: ``.venv/bin/python benchmarks/large_level.py [--copies 31] [--rooms 74] [--
 The level is ``copies x copies`` copies of ``samples.dungeon(seed=0, rooms=N)``
 side by side (2 m apart), written as a binary PLY into a temporary folder; then
 ``g2s run CONFIG LEVEL -o OUT --json`` runs in a child process. Printed: the
-level's size, the time to write it, the run's wall time and peak memory (the
-child's maximum resident set size), and the run's own stage times. Mesh loading
+level's size, the time to write it, the run's wall time, CPU time (user +
+system, all threads; less sensitive to other jobs than wall time) and peak
+memory (the child's maximum resident set size), and the run's own stage times. Mesh loading
 is timed separately in this process. This is a benchmark, not a test: nothing
 here asserts a time. Run it once or twice, not in a loop, on a shared machine.
 """
@@ -73,11 +74,13 @@ def main() -> None:
         t = time.perf_counter()
         proc = subprocess.run(command, capture_output=True, text=True, cwd=PROJECT)
         wall = time.perf_counter() - t
-        peak = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss / 2**20  # KiB -> GiB
+        usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+        peak = usage.ru_maxrss / 2**20  # KiB -> GiB
+        cpu = usage.ru_utime + usage.ru_stime
         if proc.returncode != 0:
             sys.exit(f"g2s run failed ({proc.returncode}): {proc.stderr.strip()}")
         summary = json.loads(proc.stdout)
-        print(f"g2s run {Path(args.config).name}: {wall:.1f} s wall, {peak:.2f} GiB peak RSS, "
+        print(f"g2s run {Path(args.config).name}: {wall:.1f} s wall, {cpu:.1f} s CPU, {peak:.2f} GiB peak RSS, "
               f"load average {os.getloadavg()[0]:.2f}")
         for stage in summary["stages"]:
             print(f"  {stage['stage']:<10} {stage['seconds']:8.2f} s  nodes={stage['nodes']} edges={stage['edges']}")
