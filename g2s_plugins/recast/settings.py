@@ -215,7 +215,7 @@ def resolve_settings(agent: Any, params: RecastParams | None = None) -> dict[str
 def _check_voxels(settings: dict[str, Any], keys: dict[str, str], cs_given: bool, ch_given: bool) -> None:
     voxels = voxel_config(settings)
     cs, ch = settings["cell_size"], settings["cell_height"]
-    # name: (agent value, its key, the cell key, whether the cell size was set, cell size)
+    # voxel value: (agent setting, the cell key, whether that cell size was set, the cell size)
     rows = {
         "walkableHeight": ("height", f"{_PARAMS}cell_height", ch_given, ch),
         "walkableClimb": ("max_climb", f"{_PARAMS}cell_height", ch_given, ch),
