@@ -12,7 +12,7 @@ TerminalSelector   ``g2s_select_terminals``    :class:`~g2s_core.model.Terminals
 SteinerSolver      ``g2s_steiner_tree``        a tree spanning the terminals
 RootSelector       ``g2s_root_scores``         a score per node (higher = root)
 SimplifyPredicate  ``g2s_simplify_predicate``  a predicate ``P(tree, a, b, c)``
-Analyzer           ``g2s_analyze``             a value per node of the structure
+Analyzer           ``g2s_analyze``             a value per node (or ``AnalyzerResult``)
 =================  ==========================  ====================================
 """
 
@@ -22,7 +22,7 @@ from collections.abc import Callable, Mapping, Sequence
 
 import networkx as nx
 
-from g2s_core.model import RunContext, Terminals
+from g2s_core.model import AnalyzerResult, RunContext, Terminals
 from g2s_core.plugin import PluginParams, hookspec
 
 
@@ -81,8 +81,15 @@ def g2s_simplify_predicate(
 
 
 @hookspec(firstresult=True)
-def g2s_analyze(structure: nx.Graph, params: PluginParams, context: RunContext) -> Mapping[int, float]:
-    """Analyzer: a value for every node of the final structure (undirected)."""
+def g2s_analyze(
+    structure: nx.Graph, params: PluginParams, context: RunContext
+) -> Mapping[int, float] | AnalyzerResult:
+    """Analyzer: a value for every node of the final structure (undirected).
+
+    An analyzer that also finds records (chokepoints, regions ...) returns an
+    :class:`~g2s_core.model.AnalyzerResult`; the pipeline keeps its
+    ``features`` in ``RunResult.features`` under the analyzer's key.
+    """
 
 
 STAGE_HOOKS: dict[str, str] = {

@@ -14,7 +14,7 @@ import trimesh
 
 from g2s_core.config import RunConfig
 from g2s_core.errors import ConfigError, G2SError, PluginError
-from g2s_core.model import RunContext, RunResult, StageStats, Terminals
+from g2s_core.model import AnalyzerResult, RunContext, RunResult, StageStats, Terminals
 from g2s_core.plugin import PluginParams
 from g2s_core.registry import PluginInfo, Registry
 from g2s_core.rooted import root_forest
@@ -164,6 +164,9 @@ def run(
         undirected = structure.to_undirected(as_view=True)
         for analyzer in plan_.analyzers:
             values = _call(registry, analyzer, structure=undirected, context=context)
+            if isinstance(values, AnalyzerResult):
+                result.features[analyzer.key] = dict(values.features)
+                values = values.values
             missing = [n for n in structure if n not in values]
             if missing:
                 raise PluginError(f"Analyzer {analyzer.plugin.name!r} gave no value for nodes {missing[:5]}")

@@ -1,0 +1,354 @@
+"""Regions and chokepoints of a navigation mesh: rooms, and the narrow passages that join them.
+
+The walkable surface is split where it narrows, as strategy-game map analysers
+do on their tile grids (BWEM grows areas from the points farthest from the
+walls and puts a chokepoint where two grown areas meet; Perkins 2010, BWTA,
+uses the Voronoi diagram of the walls). Here the same idea runs on the navmesh
+polygons and their shared edges (portals):
+
+1. Clearance. Every navmesh boundary edge (a polygon edge with no neighbour:
+   the walls, already eroded by the agent radius) is sampled every
+   ``cell_size``; the clearance of a point is its distance to the nearest
+   sample (scipy ``cKDTree``, heights scaled by :data:`HEIGHT_SCALE` so that
+   another floor's walls stay far). A polygon's clearance is its centre's; a
+   portal's is the largest clearance of five points along it, so a door's
+   portal measures the middle of the door. ``width = 2 x clearance`` is the
+   walkable width of a passage (add the agent's diameter for wall to wall).
+2. Merge tree (watershed by clearance). Portals are taken widest first and
+   join the groups of polygons on their two sides (union-find), except when
+   both groups are already *rooms*: they hold at least ``min_region_area`` m²
+   and their widest point is wider than the portal by the factor
+   1 / ``narrowness``. Such a portal is a chokepoint candidate and is never
+   merged: groups only grow and portals only narrow, so the two sides stay
+   apart. Small or barely wider groups (slivers, corridors, corners) merge
+   into their neighbours.
+3. Regions are the groups left (``scipy.sparse.csgraph.connected_components``
+   of the merged portals), numbered by their lowest polygon id. Candidates
+   between the same two regions closer than ``min_separation`` are one
+   chokepoint (the widest portal of them stays: a door cut by a tile border
+   is several portals).
+4. A chokepoint is an articulation of the level when it is the only
+   chokepoint between its two regions and a bridge of the region graph
+   (``networkx.bridges``): closing it disconnects the level.
+5. Traffic (:func:`score`). A structure edge whose two ends lie in different
+   regions crosses the chokepoint between them nearest to it; the
+   chokepoint's traffic is the largest edge betweenness of the structure
+   edges crossing it (:func:`g2s_plugins.centrality.edge_betweenness`: the
+   share of structure node pairs whose path uses the edge) and its score is
+   ``traffic / width``.
+
+Floors: polygons within 10 degrees of flat are grouped into height bands
+(split where sorted heights jump by more than half the agent height); a
+region's floor is the band holding most of its flat area (the nearest band
+to its mean height when it has none). Multi-floor levels need nothing else:
+the polygon graph already joins floors only where the agent can walk (ramps,
+stairs).
+
+Complexity: clearance O((B + P + E) log B) for B wall samples, P polygons,
+E portals; the merge tree sorts the portals and runs one union-find step per
+portal (a Python loop of O(E alpha(P)): a merge order is sequential by
+nature and no library offers it on a general graph); everything else is
+numpy/scipy over arrays, networkx only on the small region graph.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+import networkx as nx
+import numpy as np
+from pydantic import Field
+from scipy import sparse
+from scipy.sparse import csgraph
+from scipy.spatial import cKDTree
+
+from g2s_core.errors import PluginError
+from g2s_core.plugin import PluginParams
+from g2s_plugins import centrality
+
+HEIGHT_SCALE = 4.0
+"""Height differences count this many times in clearance distances, so a wall 2 m above is 8 m away."""
+
+FLAT_DEG = 10.0
+"""Polygons within this angle of horizontal define the floors' height bands, degrees."""
+
+PORTAL_SAMPLES = np.array([0.1, 0.3, 0.5, 0.7, 0.9])
+"""Where along a portal the clearance is measured (fractions from its first end point)."""
+
+
+class DecompositionParams(PluginParams):
+    """How the walkable surface is split into regions at chokepoints (shared by ``chokepoints`` and ``regions``)."""
+
+    narrowness: float = Field(
+        0.75, gt=0, lt=1,
+        description="a passage is a chokepoint when its width is at most this fraction of the widest "
+        "point of the rooms on both sides",
+    )
+    min_region_area: float = Field(8.0, ge=0, description="smaller areas (slivers, corners) merge into a neighbour, m²")
+    min_separation: float = Field(
+        3.0, ge=0, description="chokepoints between the same two regions closer than this are one, metres"
+    )
+
+
+@dataclass(frozen=True)
+class Decomposition:
+    """Regions and chokepoints of one navmesh.
+
+    Attributes:
+        labels: (P,) int64, the region of every navmesh polygon.
+        regions: one JSON record per region, by id (see :func:`decompose`).
+        chokepoints: one JSON record per chokepoint, by region pair (widest
+            first); :func:`score` orders them by score and numbers them.
+    """
+
+    labels: np.ndarray
+    regions: list[dict[str, Any]]
+    chokepoints: list[dict[str, Any]]
+
+
+def require_navmesh(context: Any, analyzer: str) -> Any:
+    """The run's navmesh, or a one-line error for graphs built without one."""
+    if context.navmesh is None:
+        raise PluginError(
+            f"the {analyzer} analyzer needs a navigation mesh (graph plugin 'navmesh'); "
+            "a sampled graph has no portals to measure"
+        )
+    return context.navmesh
+
+
+def wall_samples(navmesh: Any, spacing: float) -> np.ndarray:
+    """(B,3) points every ``spacing`` metres (at most) along the navmesh's boundary edges."""
+    polygons = np.asarray(navmesh.polygons, dtype=np.int64)
+    valid = polygons >= 0
+    count = valid.sum(axis=1)
+    j = np.arange(polygons.shape[1])[None, :]
+    following = np.where(j + 1 < count[:, None], j + 1, 0)
+    boundary = valid & (np.asarray(navmesh.neighbours) < 0)
+    rows, cols = np.nonzero(boundary)
+    vertices = np.asarray(navmesh.vertices, dtype=np.float64)
+    start = vertices[polygons[rows, cols]]
+    end = vertices[polygons[rows, following[rows, cols]]]
+    pieces = np.maximum(np.ceil(np.linalg.norm(end - start, axis=1) / spacing), 1).astype(np.int64)
+    edge = np.repeat(np.arange(len(rows)), pieces + 1)
+    offsets = np.arange(len(edge)) - np.repeat(np.cumsum(pieces + 1) - (pieces + 1), pieces + 1)
+    t = (offsets / pieces[edge])[:, None]
+    return start[edge] * (1.0 - t) + end[edge] * t
+
+
+def clearances(navmesh: Any, spacing: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Clearance (m) of every polygon centre (P,) and portal (E,), and each portal's widest point (E,3)."""
+    scale = np.array([1.0, HEIGHT_SCALE, 1.0])
+    walls = wall_samples(navmesh, spacing)
+    portals = navmesh.portals()
+    if len(walls) == 0:  # no boundary at all: nothing is narrow
+        inf = np.full(len(portals.pairs), np.inf)
+        return np.full(navmesh.polygon_count, np.inf), inf, portals.endpoints.mean(axis=1)
+    tree = cKDTree(walls * scale)
+    polygon_clearance = tree.query(np.asarray(navmesh.centres) * scale)[0]
+    ends = portals.endpoints
+    points = ends[:, None, 0] * (1.0 - PORTAL_SAMPLES[None, :, None]) + ends[:, None, 1] * PORTAL_SAMPLES[None, :, None]
+    along = tree.query((points * scale).reshape(-1, 3))[0].reshape(len(ends), len(PORTAL_SAMPLES))
+    widest = along.argmax(axis=1) if len(ends) else np.zeros(0, dtype=np.int64)
+    return polygon_clearance, along.max(axis=1, initial=0.0), points[np.arange(len(ends)), widest]
+
+
+def _merge_tree(pairs: np.ndarray, portal_clearance: np.ndarray, polygon_clearance: np.ndarray,
+                areas: np.ndarray, narrowness: float, min_area: float) -> tuple[np.ndarray, np.ndarray]:
+    """(merged, blocked): boolean masks over the portals (step 2 of the module doc)."""
+    n = len(polygon_clearance)
+    parent = list(range(n))
+    peak = polygon_clearance.tolist()
+    area = areas.tolist()
+    merged = np.zeros(len(pairs), dtype=bool)
+    blocked = np.zeros(len(pairs), dtype=bool)
+
+    def find(x: int) -> int:
+        while parent[x] != x:
+            parent[x] = parent[parent[x]]
+            x = parent[x]
+        return x
+
+    order = np.lexsort((np.arange(len(pairs)), -portal_clearance))
+    a_list, b_list, c_list = pairs[order, 0].tolist(), pairs[order, 1].tolist(), portal_clearance[order].tolist()
+    for e, a, b, c in zip(order.tolist(), a_list, b_list, c_list):
+        ra, rb = find(a), find(b)
+        if ra == rb:
+            continue
+        if c <= narrowness * min(peak[ra], peak[rb]) and min(area[ra], area[rb]) >= min_area:
+            blocked[e] = True
+            continue
+        if area[ra] < area[rb]:
+            ra, rb = rb, ra
+        parent[rb] = ra
+        peak[ra] = max(peak[ra], peak[rb])
+        area[ra] += area[rb]
+        merged[e] = True
+    return merged, blocked
+
+
+def floor_bands(heights: np.ndarray, normals: np.ndarray, areas: np.ndarray, gap: float) -> np.ndarray:
+    """(P,) int64: the height band of every flat polygon, -1 for sloped ones (bands lowest first)."""
+    flat = np.asarray(normals)[:, 1] >= math.cos(math.radians(FLAT_DEG))
+    band = np.full(len(heights), -1, dtype=np.int64)
+    if not flat.any():
+        return band
+    index = np.flatnonzero(flat)
+    order = index[np.argsort(heights[index], kind="stable")]
+    band[order] = np.concatenate([[0], np.cumsum(np.diff(heights[order]) > gap)])
+    return band
+
+
+def decompose(navmesh: Any, agent: Any, params: DecompositionParams) -> Decomposition:
+    """Regions and (unscored) chokepoints of ``navmesh`` for ``agent`` (see the module doc).
+
+    Region record: ``id``, ``area`` (m²), ``polygons`` (ids), ``centroid``
+    (area-weighted polygon centres, m), ``floor`` (band index, lowest 0),
+    ``height_range`` ([min, max] polygon centre heights, m) and ``neighbours``
+    (``[{"region", "chokepoints"}]``, filled in by :func:`score`).
+    Chokepoint record (before :func:`score`): ``position`` (the widest point of
+    its portal, m), ``portal`` (the portal's two end points), ``width``
+    (walkable width, m), ``regions`` ([a, b], a < b), ``polygons`` (the
+    portal's two polygons), ``floors``, ``articulation``.
+    """
+    spacing = float(navmesh.settings.get("cell_size", 0.25))
+    polygon_clearance, portal_clearance, widest = clearances(navmesh, spacing)
+    portals = navmesh.portals()
+    pairs = np.asarray(portals.pairs, dtype=np.int64).reshape(-1, 2)
+    areas = np.asarray(navmesh.areas, dtype=np.float64)
+    merged, blocked = _merge_tree(pairs, portal_clearance, polygon_clearance, areas,
+                                  params.narrowness, params.min_region_area)
+    n = navmesh.polygon_count
+    joined = sparse.coo_array((np.ones(int(merged.sum())), (pairs[merged, 0], pairs[merged, 1])), shape=(n, n))
+    count, labels = csgraph.connected_components(joined, directed=False)
+    labels = labels.astype(np.int64)
+
+    centres = np.asarray(navmesh.centres, dtype=np.float64)
+    region_area = np.bincount(labels, weights=areas, minlength=count)
+    weight = np.where(region_area > 0, region_area, 1.0)[:, None]
+    centroid = np.stack([np.bincount(labels, weights=areas * centres[:, k], minlength=count) for k in range(3)], axis=1)
+    centroid = np.where(region_area[:, None] > 0, centroid / weight, 0.0)
+    low = np.full(count, np.inf)
+    high = np.full(count, -np.inf)
+    np.minimum.at(low, labels, centres[:, 1])
+    np.maximum.at(high, labels, centres[:, 1])
+    band = floor_bands(centres[:, 1], navmesh.normals, areas, 0.5 * float(agent.height))
+    floor = _region_floors(labels, count, band, areas, centres[:, 1], centroid[:, 1])
+    members = np.split(np.argsort(labels, kind="stable"), np.cumsum(np.bincount(labels, minlength=count))[:-1])
+    regions = [
+        {"id": r, "area": float(region_area[r]), "polygons": members[r].tolist(), "centroid": centroid[r].tolist(),
+         "floor": int(floor[r]), "height_range": [float(low[r]), float(high[r])], "neighbours": []}
+        for r in range(count)
+    ]
+    chokepoints = _chokepoints(np.flatnonzero(blocked), pairs, labels, portals.endpoints, widest,
+                               2.0 * portal_clearance, floor, params.min_separation)
+    return Decomposition(labels, regions, chokepoints)
+
+
+def _region_floors(labels: np.ndarray, count: int, band: np.ndarray, areas: np.ndarray,
+                   heights: np.ndarray, mean_height: np.ndarray) -> np.ndarray:
+    bands = int(band.max()) + 1 if (band >= 0).any() else 0
+    if bands == 0:
+        return np.zeros(count, dtype=np.int64)
+    flat = band >= 0
+    table = np.bincount(labels[flat] * bands + band[flat], weights=areas[flat], minlength=count * bands)
+    table = table.reshape(count, bands)
+    band_height = np.bincount(band[flat], weights=heights[flat] * areas[flat], minlength=bands) / np.maximum(
+        np.bincount(band[flat], weights=areas[flat], minlength=bands), 1e-12)
+    nearest = np.abs(mean_height[:, None] - band_height[None, :]).argmin(axis=1)
+    return np.where(table.max(axis=1) > 0, table.argmax(axis=1), nearest).astype(np.int64)
+
+
+def _chokepoints(candidates: np.ndarray, pairs: np.ndarray, labels: np.ndarray, endpoints: np.ndarray,
+                 widest: np.ndarray, width: np.ndarray, floor: np.ndarray, separation: float) -> list[dict[str, Any]]:
+    """One record per chokepoint: candidates grouped by region pair, widest first, near ones dropped."""
+    sides = np.sort(labels[pairs[candidates]], axis=1)
+    order = np.lexsort((candidates, -width[candidates], sides[:, 1], sides[:, 0]))
+    kept: list[dict[str, Any]] = []
+    kept_at: dict[tuple[int, int], list[np.ndarray]] = {}
+    for i in order.tolist():
+        e = int(candidates[i])
+        a, b = int(sides[i, 0]), int(sides[i, 1])
+        position = widest[e]
+        others = kept_at.setdefault((a, b), [])
+        if any(np.linalg.norm(q - position) < separation for q in others):
+            continue
+        others.append(position)
+        kept.append({
+            "position": position.tolist(),
+            "portal": endpoints[e].tolist(),
+            "width": float(width[e]),
+            "regions": [a, b],
+            "polygons": [int(pairs[e, 0]), int(pairs[e, 1])],
+            "floors": [int(floor[a]), int(floor[b])],
+        })
+    region_graph = nx.MultiGraph()
+    region_graph.add_edges_from(tuple(k["regions"]) for k in kept)
+    simple = nx.Graph(region_graph)
+    bridges = {tuple(sorted(e)) for e in nx.bridges(simple)}
+    for k in kept:
+        pair = tuple(k["regions"])
+        k["articulation"] = pair in bridges and region_graph.number_of_edges(*pair) == 1
+    return kept
+
+
+def score(decomposition: Decomposition, structure: nx.Graph) -> tuple[list[dict[str, Any]], dict[int, float]]:
+    """Chokepoints with ``traffic`` and ``score``, sorted by score (ids 0, 1 ... in that order),
+    and each structure node's largest score among the chokepoints its edges cross (0 if none).
+
+    Fills in the regions' ``neighbours``. See step 5 of the module doc.
+    """
+    records = [dict(k) for k in decomposition.chokepoints]
+    labels = decomposition.labels
+    by_pair: dict[tuple[int, int], list[int]] = {}
+    for index, k in enumerate(records):
+        by_pair.setdefault(tuple(k["regions"]), []).append(index)
+    traffic = np.zeros(len(records))
+    crossing: list[tuple[int, int, int]] = []
+    edge_traffic = centrality.edge_betweenness(structure) if structure.number_of_edges() else {}
+    for (u, v), value in edge_traffic.items():
+        pu, pv = structure.nodes[u].get("polygon", -1), structure.nodes[v].get("polygon", -1)
+        if pu is None or pv is None or pu < 0 or pv < 0 or labels[pu] == labels[pv]:
+            continue
+        options = by_pair.get(tuple(sorted((int(labels[pu]), int(labels[pv])))))
+        if not options:
+            continue  # the edge skips a region: it crosses two chokepoints and is not counted
+        a, b = np.asarray(structure.nodes[u]["pos"]), np.asarray(structure.nodes[v]["pos"])
+        nearest = min(options, key=lambda i: (_segment_distance(np.asarray(records[i]["position"]), a, b), i))
+        traffic[nearest] = max(traffic[nearest], value)
+        crossing.append((nearest, u, v))
+    for index, k in enumerate(records):
+        k["traffic"] = float(traffic[index])
+        k["score"] = float(traffic[index] / max(k["width"], 1e-6))
+    order = sorted(range(len(records)), key=lambda i: (-records[i]["score"], records[i]["width"], i))
+    rank = {old: new for new, old in enumerate(order)}
+    ranked = [records[i] | {"id": rank[i]} for i in order]
+    node_score = dict.fromkeys(structure.nodes, 0.0)
+    for index, u, v in crossing:
+        for node in (u, v):
+            node_score[node] = max(node_score[node], records[index]["score"])
+    neighbours: dict[int, dict[int, list[int]]] = {}
+    for k in ranked:
+        a, b = k["regions"]
+        neighbours.setdefault(a, {}).setdefault(b, []).append(k["id"])
+        neighbours.setdefault(b, {}).setdefault(a, []).append(k["id"])
+    for region in decomposition.regions:
+        region["neighbours"] = [{"region": other, "chokepoints": sorted(ids)}
+                                for other, ids in sorted(neighbours.get(region["id"], {}).items())]
+    return ranked, node_score
+
+
+def _segment_distance(p: np.ndarray, a: np.ndarray, b: np.ndarray) -> float:
+    d = b - a
+    t = float(np.clip(np.dot(p - a, d) / max(float(np.dot(d, d)), 1e-12), 0.0, 1.0))
+    return float(np.linalg.norm(p - (a + t * d)))
+
+
+def region_values(decomposition: Decomposition, structure: nx.Graph) -> dict[int, float]:
+    """The region id of every structure node's polygon (-1 for nodes that are not polygons)."""
+    labels = decomposition.labels
+    values = {}
+    for node, polygon in structure.nodes(data="polygon", default=-1):
+        values[node] = float(labels[polygon]) if polygon is not None and 0 <= polygon < len(labels) else -1.0
+    return values
