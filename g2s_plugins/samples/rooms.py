@@ -176,6 +176,39 @@ def floors_joined_by_ramp(
                   ramp=(zc, ramp_width))
 
 
+def dungeon_shares(level: SampleLevel, chokepoints: list[dict[str, Any]], regions: list[dict[str, Any]],
+                   navmesh: Any) -> tuple[float, float]:
+    """How well chokepoints and regions found on a ``dungeon`` match its generated corridors and rooms.
+
+    Returns (share of corridors with a chokepoint in them, share of rooms whose
+    centre lies in a region no other room's centre lies in). A corridor's box
+    runs between the two rooms' facing walls, 1 m into each room (a mouth), across
+    the band both rooms cover. Chokepoints and regions are the records of the
+    ``chokepoints`` and ``regions`` analyzers; ``navmesh`` the run's navmesh.
+    """
+    labels = np.full(navmesh.polygon_count, -1)
+    for region in regions:
+        labels[region["polygons"]] = region["id"]
+    room_region = np.array([labels[navmesh.nearest_poly(c, extents=(3.0, 1.0, 3.0))[0]]
+                            for c in level.metadata["room_centres"]])
+    values, counts = np.unique(room_region, return_counts=True)
+    own = np.isin(room_region, values[(counts == 1) & (values >= 0)])
+    bounds = np.asarray(level.metadata["room_bounds"])  # x0, x1, z0, z1
+    slots = np.asarray(level.metadata["slots"])
+    found = np.asarray([c["position"] for c in chokepoints], dtype=np.float64).reshape(-1, 3)[:, [0, 2]]
+    located = 0
+    for a, b in level.metadata["corridors"]:
+        axis = 0 if slots[a, 0] != slots[b, 0] else 1  # the corridor runs along x (0) or z (1)
+        other = 1 - axis
+        first, second = sorted((a, b), key=lambda i: slots[i, axis])
+        along = (bounds[first, 2 * axis + 1] - 1.0, bounds[second, 2 * axis] + 1.0)
+        across = (max(bounds[a, 2 * other], bounds[b, 2 * other]), min(bounds[a, 2 * other + 1], bounds[b, 2 * other + 1]))
+        inside = ((found[:, axis] >= along[0]) & (found[:, axis] <= along[1])
+                  & (found[:, other] >= across[0]) & (found[:, other] <= across[1]))
+        located += bool(inside.any())
+    return located / max(len(level.metadata["corridors"]), 1), float(own.mean())
+
+
 SAMPLES: dict[str, Callable[..., SampleLevel]] = {
     "two_rooms_one_door": two_rooms_one_door,
     "room_with_two_doors": room_with_two_doors,

@@ -1,0 +1,173 @@
+"""Chokepoints and regions: generated levels with known rooms and doors, through the level_regions preset."""
+
+from __future__ import annotations
+
+import json
+from functools import cache
+
+import networkx as nx
+import numpy as np
+import pytest
+
+from g2s_core import pipeline
+from g2s_core.config import PRESETS_DIR, load_config, load_raw_config, parse_config
+from g2s_core.errors import PluginError
+from g2s_core.model import RunResult
+from g2s_core.registry import Registry
+from g2s_plugins.centrality import edge_betweenness
+from g2s_plugins.outputs import structure_json
+from g2s_plugins.samples.levels import dungeon, load_sample
+from g2s_plugins.samples.rooms import dungeon_shares
+
+PRESET = PRESETS_DIR / "level_regions.yaml"
+
+
+@cache
+def registry() -> Registry:
+    return Registry.from_entry_points()
+
+
+def run(level, config=None) -> RunResult:
+    plan = pipeline.plan(config or load_config(PRESET), registry())
+    return pipeline.run(plan, registry(), level.mesh, level.name, "0" * 64)
+
+
+@cache
+def sample_run(name: str) -> tuple:
+    level = load_sample(name)
+    return level, run(level)
+
+
+def chokepoints(result: RunResult) -> list[dict]:
+    return result.features["chokepoints"]["chokepoints"]
+
+
+def regions(result: RunResult) -> list[dict]:
+    return result.features["regions"]["regions"]
+
+
+def near(point, target, tolerance: float) -> bool:
+    return float(np.linalg.norm(np.asarray(point)[[0, 2]] - np.asarray(target)[[0, 2]])) <= tolerance
+
+
+# --- edge betweenness (hand-checkable graphs) -------------------------------------------
+
+
+def test_edge_betweenness_of_a_path_counts_the_pairs_each_edge_separates():
+    values = edge_betweenness(nx.path_graph(4), normalized=False)
+    assert values == {(0, 1): 3.0, (1, 2): 4.0, (2, 3): 3.0}  # 1 x 3, 2 x 2, 3 x 1
+
+
+@pytest.mark.parametrize("graph", [nx.random_labeled_tree(40, seed=3), nx.union(nx.star_graph(4), nx.path_graph(range(10, 14))),
+                                   nx.cycle_graph(7), nx.karate_club_graph()], ids=["tree", "forest", "cycle", "karate"])
+def test_edge_betweenness_matches_networkx(graph):
+    for normalized in (True, False):
+        ours = edge_betweenness(graph, normalized=normalized)
+        theirs = nx.edge_betweenness_centrality(graph, normalized=normalized)
+        assert set(ours) == set(graph.edges)
+        assert all(ours[e] == pytest.approx(theirs[e]) for e in graph.edges)
+
+
+# --- generated rooms with known answers ------------------------------------------------
+
+
+def test_two_rooms_one_door():
+    level, result = sample_run("two_rooms_one_door")
+    door = level.metadata["doors"][0]
+    assert len(regions(result)) == 2
+    top = chokepoints(result)[0]
+    assert len(chokepoints(result)) == 1 and top["id"] == 0 and top["articulation"] is True
+    assert near(top["position"], door["position"], 0.5)
+    # walkable width: the door less the agent's diameter, within a navmesh cell
+    assert top["width"] == pytest.approx(door["width"] - 1.0, abs=0.3)
+    assert top["regions"] == [0, 1] and top["score"] > 0
+    assert [n["region"] for n in regions(result)[0]["neighbours"]] == [1]
+    assert regions(result)[0]["neighbours"][0]["chokepoints"] == [0]
+
+
+def test_the_narrower_of_two_doors_ranks_higher():
+    level, result = sample_run("room_with_two_doors")
+    narrow, wide = level.metadata["doors"]
+    found = chokepoints(result)
+    assert len(found) == 2 and len(regions(result)) == 3
+    assert near(found[0]["position"], narrow["position"], 0.5)
+    assert near(found[1]["position"], wide["position"], 0.5)
+    assert found[0]["width"] < found[1]["width"] and found[0]["score"] > found[1]["score"]
+    assert all(c["articulation"] for c in found)
+
+
+def test_a_loop_of_four_rooms_has_no_articulation():
+    level, result = sample_run("loop_of_four_rooms")
+    found = chokepoints(result)
+    assert len(regions(result)) == 4 and len(found) == 4
+    assert not any(c["articulation"] for c in found)
+    for door in level.metadata["doors"]:
+        assert sum(near(c["position"], door["position"], 0.5) for c in found) == 1
+    assert all(len(r["neighbours"]) == 2 for r in regions(result))
+
+
+def test_a_ramp_is_the_chokepoint_between_two_floors():
+    level, result = sample_run("floors_joined_by_ramp")
+    ramp = level.metadata["ramp"]
+    rs = regions(result)
+    assert len(rs) == 2 and sorted(r["floor"] for r in rs) == [0, 1]
+    (choke,) = chokepoints(result)
+    assert sorted(choke["floors"]) == [0, 1] and choke["articulation"] is True
+    x, y, z = choke["position"]
+    assert ramp["x0"] - 0.5 <= x <= ramp["x1"] + 0.5 and ramp["z0"] <= z <= ramp["z1"]
+    assert ramp["y0"] <= y <= ramp["y1"] + 0.5
+
+
+def test_node_values_are_region_ids_and_scores_near_chokepoints():
+    _, result = sample_run("loop_of_four_rooms")
+    ids = {r["id"] for r in regions(result)}
+    labels = {p: r["id"] for r in regions(result) for p in r["polygons"]}
+    for node, value in result.analysis["regions"].items():
+        assert value in ids and value == labels[result.structure.nodes[node]["polygon"]]
+    scores = {c["score"] for c in chokepoints(result)} | {0.0}
+    assert set(result.analysis["chokepoints"].values()) <= scores
+    assert max(result.analysis["chokepoints"].values()) == chokepoints(result)[0]["score"]
+
+
+def test_top_k_and_separation_are_read_from_yaml():
+    raw = load_raw_config(PRESET)
+    raw["analyzers"][1]["params"]["top_k"] = 2
+    level = load_sample("loop_of_four_rooms")
+    found = chokepoints(run(level, parse_config(raw)))
+    assert [c["id"] for c in found] == [0, 1]
+    raw["analyzers"][1]["params"].update(top_k=None, min_separation=100.0)
+    assert len(chokepoints(run(level, parse_config(raw)))) == 4  # separation only merges within one region pair
+
+
+def test_the_sampling_route_is_refused_in_one_line():
+    raw = load_raw_config(PRESETS_DIR / "map_analysis_sampling.yaml")
+    raw["analyzers"] = [{"plugin": "chokepoints"}]
+    with pytest.raises(PluginError, match="needs a navigation mesh"):
+        run(load_sample("two_rooms_one_door"), parse_config(raw))
+
+
+def test_structure_json_carries_the_records_and_stays_byte_identical(tmp_path):
+    jsonschema = pytest.importorskip("jsonschema")
+    level, result = sample_run("floors_joined_by_ramp")
+    structure_json.write(result, tmp_path)
+    first = (tmp_path / "structure.json").read_bytes()
+    document = json.loads(first)
+    schema = json.loads(structure_json.SCHEMA_PATH.read_text())
+    jsonschema.Draft202012Validator(schema).validate(document)
+    assert document["features"]["chokepoints"]["chokepoints"][0]["articulation"] is True
+    assert len(document["features"]["regions"]["regions"]) == 2
+    assert structure_json.load_result(tmp_path).features == document["features"]
+    (tmp_path / "again").mkdir()
+    structure_json.write(run(level), tmp_path / "again")
+    assert (tmp_path / "again" / "structure.json").read_bytes() == first
+
+
+# --- dungeons: generated rooms and corridors --------------------------------------------
+
+
+@pytest.mark.parametrize("seed", [0, 1])
+def test_dungeon_doors_are_chokepoints_and_rooms_are_regions(seed):
+    level = dungeon(seed=seed, rooms=12, obstacles=0.0)
+    result = run(level)
+    doors, rooms = dungeon_shares(level, chokepoints(result), regions(result), result.context.navmesh)
+    assert doors >= 0.9 and rooms >= 0.9
