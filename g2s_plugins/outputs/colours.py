@@ -91,3 +91,17 @@ def matplotlib_heat_cmap():  # -> matplotlib.colors.Colormap
     from matplotlib.colors import LinearSegmentedColormap
 
     return LinearSegmentedColormap.from_list("g2s_heat", [(t, unit(c)) for t, c in HEAT_STOPS])
+
+
+REGION_COLOURS: tuple[RGB, ...] = (
+    (31, 119, 180), (255, 127, 14), (44, 160, 44), (214, 39, 40), (148, 103, 189), (140, 86, 75),
+    (227, 119, 194), (127, 127, 127), (188, 189, 34), (23, 190, 207), (174, 199, 232), (255, 187, 120),
+)
+"""Region ``i`` is drawn in ``REGION_COLOURS[i % len(REGION_COLOURS)]`` (a categorical palette)."""
+
+CHOKEPOINT_COLOUR: RGB = (20, 20, 20)
+
+
+def region_colour(region: int) -> RGB:
+    """Colour of region ``region`` (ids >= 0)."""
+    return REGION_COLOURS[int(region) % len(REGION_COLOURS)]

@@ -129,3 +129,32 @@ def milliseconds(seconds: float) -> str:
 
 def _count(value: int | None) -> str:
     return "" if value is None else str(value)
+
+
+def feature_records(result: RunResult, kind: str) -> list[dict[str, Any]]:
+    """The records named ``kind`` (``"chokepoints"``, ``"regions"``) that the first analyzer
+    returning them gave (``[]`` when none did)."""
+    for features in result.features.values():
+        if kind in features:
+            return list(features[kind])
+    return []
+
+
+def triangle_regions(result: RunResult) -> np.ndarray | None:
+    """(DT,) int64, the region of each navmesh detail triangle (-1 outside every region);
+    ``None`` when the run has no navmesh or no regions."""
+    navmesh = result.context.navmesh
+    records = feature_records(result, "regions")
+    if navmesh is None or not records or not len(getattr(navmesh, "detail_triangles", ())):
+        return None
+    labels = np.full(navmesh.polygon_count, -1, dtype=np.int64)
+    for record in records:
+        labels[np.asarray(record["polygons"], dtype=np.int64)] = int(record["id"])
+    return labels[np.asarray(navmesh.detail_polygon, dtype=np.int64)]
+
+
+def chokepoint_label(record: dict[str, Any]) -> str:
+    """One line describing a chokepoint: id, width, score, the regions it joins."""
+    closing = ", closing it disconnects the level" if record["articulation"] else ""
+    return (f"chokepoint {record['id']}: width {record['width']:.2f} m, score {record['score']:.3g} "
+            f"(traffic {record['traffic']:.3g}), regions {record['regions'][0]}-{record['regions'][1]}{closing}")

@@ -6,6 +6,13 @@ Scene nodes (names are stable, so scripts can find them):
     The input mesh, grey.
 ``navmesh``
     The navmesh's detail triangles, translucent green (only with a navmesh).
+``region_<id>``
+    With the ``regions`` analyzer: the navmesh triangles of each region in
+    its colour (``colours.REGION_COLOURS``), lifted 2 cm above the navmesh;
+    extras ``id``, ``area``, ``floor``, ``centroid``, ``neighbours``.
+``chokepoint_<id>``
+    With the ``chokepoints`` analyzer: a dark sphere (radius 0.5 r) at each
+    chokepoint; extras the chokepoint's record (``width``, ``score`` ...).
 ``structure``
     The final structure's edges as glTF LINES, one colour per edge: the
     colour of the child's tree depth (red = depth 1, yellow = 2, green, cyan,
@@ -42,7 +49,16 @@ from trimesh.visual.texture import TextureVisuals
 
 from g2s_core.model import RunResult
 from g2s_plugins.outputs import colours
-from g2s_plugins.outputs.common import agent_value, edge_list, final_graph, number, roots_of, terminal_ids
+from g2s_plugins.outputs.common import (
+    agent_value,
+    edge_list,
+    feature_records,
+    final_graph,
+    number,
+    roots_of,
+    terminal_ids,
+    triangle_regions,
+)
 from g2s_plugins.outputs.files import atomic_write
 
 GLB_FILE = "structure.glb"
@@ -74,6 +90,8 @@ def build_scene(result: RunResult) -> trimesh.Scene:
         )
         surface.visual = _material("navmesh", colours.NAVMESH_COLOUR, alpha=colours.NAVMESH_ALPHA)
         scene.add_geometry(surface, node_name="navmesh", geom_name="navmesh")
+    _add_regions(scene, result)
+    _add_chokepoints(scene, result)
 
     _, graph = final_graph(result)
     if graph is None:
@@ -167,3 +185,42 @@ def _lines(graph: nx.Graph, edges: list[tuple[int, int]], heat: dict[int, int]) 
         line_colours.append([*rgb, 255])
     return trimesh.path.Path3D(entities=entities, vertices=vertices,
                                colors=np.asarray(line_colours, dtype=np.uint8), process=False)
+
+
+REGION_LIFT = 0.02
+"""Region surfaces sit this far (m) above the navmesh so that both stay visible."""
+
+
+def _add_regions(scene: trimesh.Scene, result: RunResult) -> None:
+    """One node per region: its navmesh detail triangles in the region's colour."""
+    regions = triangle_regions(result)
+    if regions is None:
+        return
+    navmesh = result.context.navmesh
+    vertices = np.asarray(navmesh.detail_vertices, dtype=np.float64) + [0.0, REGION_LIFT, 0.0]
+    triangles = np.asarray(navmesh.detail_triangles, dtype=np.int64)
+    for record in feature_records(result, "regions"):
+        faces = triangles[regions == record["id"]]
+        if not len(faces):
+            continue
+        used, local = np.unique(faces, return_inverse=True)
+        part = trimesh.Trimesh(vertices[used], local.reshape(-1, 3), process=False)
+        name = f"region_{record['id']}"
+        part.visual = _material(name, colours.region_colour(record["id"]))
+        extras = {k: record[k] for k in ("id", "area", "floor", "centroid", "neighbours")}
+        scene.add_geometry(part, node_name=name, geom_name=name, metadata=extras)
+
+
+def _add_chokepoints(scene: trimesh.Scene, result: RunResult) -> None:
+    """A dark sphere on each chokepoint, its record in the node's extras."""
+    records = feature_records(result, "chokepoints")
+    if not records:
+        return
+    ball = trimesh.creation.icosphere(subdivisions=2, radius=0.5 * agent_value(result, "radius", 0.5))
+    ball.visual = _material("chokepoint", colours.CHOKEPOINT_COLOUR)
+    scene.geometry["sphere_chokepoint"] = ball
+    for record in records:
+        transform = np.eye(4)
+        transform[:3, 3] = record["position"]
+        scene.graph.update(frame_to=f"chokepoint_{record['id']}", frame_from=scene.graph.base_frame, matrix=transform,
+                           geometry="sphere_chokepoint", metadata=dict(record))

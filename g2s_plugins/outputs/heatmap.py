@@ -14,6 +14,11 @@ by more than the agent height; each floor gets its own panel (lowest first),
 with the edges that touch it (edges to another floor dashed). The colour
 scale is shared by all panels.
 
+With the ``regions`` analyzer the walkable ground is coloured by region
+(``colours.REGION_COLOURS``) instead of grey; with ``chokepoints`` each
+chokepoint is a black line across its portal and a white diamond labelled
+with its id and walkable width. Both go to the floor panel nearest their height.
+
 The file is deterministic: matplotlib's Agg canvas (pyplot is not used), fixed size and DPI, no
 date or software tag in the PNG metadata.
 """
@@ -33,7 +38,15 @@ from matplotlib.figure import Figure
 
 from g2s_core.model import RunResult
 from g2s_plugins.outputs import colours
-from g2s_plugins.outputs.common import agent_value, edge_list, final_graph, floors, roots_of
+from g2s_plugins.outputs.common import (
+    agent_value,
+    edge_list,
+    feature_records,
+    final_graph,
+    floors,
+    roots_of,
+    triangle_regions,
+)
 from g2s_plugins.outputs.files import atomic_write
 
 HEATMAP_FILE = "heatmap.png"
@@ -79,11 +92,17 @@ def render(result: RunResult) -> bytes:
         floor_of = {n: i for i, group in enumerate(groups) for n in group}
         roots = set(roots_of(graph))
         ground = _ground(result, graph, groups)
+        regions = _region_floors(result, graph, groups)
+        chokepoints = _chokepoint_floors(result, graph, groups)
         for index, group in enumerate(groups):
             ax = axes[index // columns][index % columns]
             if len(ground[index]):
                 ax.add_collection(PolyCollection(ground[index], facecolors=GROUND_COLOUR, edgecolors=GROUND_COLOUR,
                                              linewidths=0.4, zorder=0))
+            if regions is not None:
+                _draw_regions(ax, regions, index)
+            if chokepoints is not None:
+                _draw_chokepoints(ax, chokepoints, index)
             mappable = _panel(ax, graph, group, floor_of, index, values, norm, roots) or mappable
             heights = [graph.nodes[n]["pos"][1] for n in group]
             if len(groups) > 1:
@@ -128,16 +147,17 @@ def _ground(result: RunResult, graph: nx.Graph, groups: list[list[int]]) -> list
         triangles = np.asarray(mesh.triangles)[up]
     else:
         triangles = np.zeros((0, 3, 3))
+    return [triangles[chosen][:, :, [0, 2]] for chosen in _floor_masks(result, graph, groups, triangles[:, :, 1].mean(axis=1))]
+
+
+def _floor_masks(result: RunResult, graph: nx.Graph, groups: list[list[int]], heights: np.ndarray) -> list[np.ndarray]:
+    """Per floor, which of ``heights`` (N,) belong to it: those within the agent height of the
+    floor's node heights, and nearest to it if several floors are that near."""
     reach = agent_value(result, "height", 2.0)
-    heights = triangles[:, :, 1].mean(axis=1)
     spans = [(min(graph.nodes[n]["pos"][1] for n in g), max(graph.nodes[n]["pos"][1] for n in g)) for g in groups]
     distance = np.stack([np.maximum(np.maximum(lo - heights, heights - hi), 0.0) for lo, hi in spans], axis=1) \
         if spans else np.zeros((len(heights), 0))
-    ground = []
-    for index in range(len(groups)):
-        chosen = (distance[:, index] <= reach) & (distance[:, index] == distance.min(axis=1))
-        ground.append(triangles[chosen][:, :, [0, 2]])
-    return ground
+    return [(distance[:, index] <= reach) & (distance[:, index] == distance.min(axis=1)) for index in range(len(groups))]
 
 
 def _panel(ax, graph: nx.Graph, group: list[int], floor_of: dict[int, int], index: int,
@@ -183,3 +203,43 @@ def _panel(ax, graph: nx.Graph, group: list[int], floor_of: dict[int, int], inde
         ax.legend(loc="upper right", fontsize="small", framealpha=0.8)
     ax.autoscale_view()
     return mappable
+
+
+def _region_floors(result: RunResult, graph: nx.Graph, groups: list[list[int]]):
+    """Per floor, (T,3,2) X/Z outlines of the navmesh triangles that lie in a region and their region ids;
+    ``None`` without regions."""
+    regions = triangle_regions(result)
+    if regions is None:
+        return None
+    navmesh = result.context.navmesh
+    inside = regions >= 0
+    triangles = np.asarray(navmesh.detail_vertices, dtype=np.float64)[np.asarray(navmesh.detail_triangles)[inside]]
+    masks = _floor_masks(result, graph, groups, triangles[:, :, 1].mean(axis=1))
+    return [(triangles[m][:, :, [0, 2]], regions[inside][m]) for m in masks]
+
+
+def _draw_regions(ax, regions, index: int) -> None:
+    outlines, ids = regions[index]
+    if len(outlines):
+        face = [colours.unit(colours.region_colour(r), 0.55) for r in ids.tolist()]
+        ax.add_collection(PolyCollection(outlines, facecolors=face, edgecolors=face, linewidths=0.3, zorder=0.5))
+
+
+def _chokepoint_floors(result: RunResult, graph: nx.Graph, groups: list[list[int]]):
+    """Per floor, the chokepoint records drawn on it; ``None`` without chokepoints."""
+    records = feature_records(result, "chokepoints")
+    if not records:
+        return None
+    heights = np.asarray([r["position"][1] for r in records], dtype=np.float64)
+    return [[r for r, keep in zip(records, mask.tolist()) if keep]
+            for mask in _floor_masks(result, graph, groups, heights)]
+
+
+def _draw_chokepoints(ax, chokepoints, index: int) -> None:
+    for record in chokepoints[index]:
+        (x0, _, z0), (x1, _, z1) = record["portal"]
+        x, _, z = record["position"]
+        ax.plot([x0, x1], [z0, z1], color="black", linewidth=2.5, zorder=4, solid_capstyle="butt")
+        ax.scatter([x], [z], marker="D", s=40, facecolors="white", edgecolors="black", linewidths=1.0, zorder=5)
+        ax.annotate(f"{record['id']}: {record['width']:.1f} m", (x, z), xytext=(4, 4), textcoords="offset points",
+                    fontsize=7, zorder=5)

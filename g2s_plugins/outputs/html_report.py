@@ -16,11 +16,18 @@ Step 3: Steiner tree               edges, nodes                                 
 Step 4: rooted trees               edges by depth [3]_, nodes, roots            no
 Step 5: simplified structure       edges by depth [3]_, nodes, roots            [1]_
 Analysis: <key>                    edges, nodes by value (one layer per key)    [2]_
+Regions                            navmesh triangles coloured by region,        yes
+                                   centroids (hover: id, area, floor)
+Chokepoints                        portal segments, markers sized by score      yes
+                                   (hover: width, score, traffic, regions)
 =================================  ==========================================  =======
 
 .. [1] shown when the run has no analysis values.
 .. [2] the first key is shown.
 .. [3] one trace per depth colour in use (at most ``len(DEPTH_COLOURS)``).
+
+The Regions and Chokepoints layers appear when the ``regions`` and
+``chokepoints`` analyzers ran (region colours: ``colours.REGION_COLOURS``).
 
 Depth colours: red = depth 1, yellow = 2, then green, cyan, blue, magenta ...;
 roots are red. Analysis values: green (lowest) -> yellow -> red (highest).
@@ -41,7 +48,17 @@ import yaml
 
 from g2s_core.model import RunResult
 from g2s_plugins.outputs import colours
-from g2s_plugins.outputs.common import edge_list, final_graph, number, roots_of, stage_rows, terminal_ids
+from g2s_plugins.outputs.common import (
+    chokepoint_label,
+    edge_list,
+    feature_records,
+    final_graph,
+    number,
+    roots_of,
+    stage_rows,
+    terminal_ids,
+    triangle_regions,
+)
 from g2s_plugins.outputs.files import atomic_write
 
 REPORT_FILE = "report.html"
@@ -55,6 +72,8 @@ LAYER_STEINER = "Step 3: Steiner tree"
 LAYER_FOREST = "Step 4: rooted trees"
 LAYER_STRUCTURE = "Step 5: simplified structure"
 LAYER_ANALYSIS = "Analysis: {key}"
+LAYER_REGIONS = "Regions"
+LAYER_CHOKEPOINTS = "Chokepoints"
 
 
 def write(result: RunResult, outdir: Path) -> list[Path]:
@@ -174,6 +193,7 @@ def build_figure(result: RunResult) -> go.Figure:
     for index, key in enumerate(keys):
         if graph is not None:
             traces += _analysis_layer(graph, key, result, visible=index == 0)
+    traces += _region_layer(result) + _chokepoint_layer(result)
     figure = go.Figure(data=traces)
     figure.update_layout(
         margin=dict(l=0, r=0, t=30, b=0),
@@ -314,3 +334,57 @@ def _analysis_layer(graph: nx.Graph, key: str, result: RunResult, visible: bool)
     node_trace.marker.update(colorscale=colours.plotly_heat_scale(), cmin=low, cmax=high, showscale=True,
                              colorbar=dict(title=dict(text=key), x=1.0, len=0.6))
     return [edges, node_trace]
+
+
+def _region_layer(result: RunResult) -> list[Any]:
+    """The navmesh's detail triangles coloured by region, and a hover marker on each region's centroid."""
+    regions = triangle_regions(result)
+    if regions is None:
+        return []
+    navmesh = result.context.navmesh
+    inside = regions >= 0
+    v = np.round(np.asarray(navmesh.detail_vertices, dtype=np.float64), 5)
+    f = np.asarray(navmesh.detail_triangles, dtype=np.int64)[inside]
+    surface = go.Mesh3d(
+        x=v[:, 0], y=v[:, 1], z=v[:, 2], i=f[:, 0], j=f[:, 1], k=f[:, 2],
+        facecolor=[colours.css(colours.region_colour(r)) for r in regions[inside].tolist()],
+        name=LAYER_REGIONS, legendgroup=LAYER_REGIONS, showlegend=True, opacity=0.8, flatshading=True,
+        hoverinfo="skip", lighting=dict(ambient=0.8, diffuse=0.4, specular=0.0),
+    )
+    records = feature_records(result, "regions")
+    p = np.asarray([r["centroid"] for r in records], dtype=np.float64).reshape(-1, 3)
+    centres = go.Scatter3d(
+        x=p[:, 0].tolist(), y=p[:, 1].tolist(), z=p[:, 2].tolist(), mode="markers",
+        name=LAYER_REGIONS, legendgroup=LAYER_REGIONS, showlegend=False,
+        marker=dict(size=4, color=[colours.css(colours.region_colour(r["id"])) for r in records], symbol="square"),
+        text=[f"region {r['id']}: {r['area']:.1f} m², floor {r['floor']}, {len(r['polygons'])} polygons"
+              for r in records], hoverinfo="text",
+    )
+    return [surface, centres]
+
+
+def _chokepoint_layer(result: RunResult) -> list[Any]:
+    """Each chokepoint's portal as a thick line and a marker sized by score, with its width and score on hover."""
+    records = feature_records(result, "chokepoints")
+    if not records:
+        return []
+    xs: list[float | None] = []
+    ys: list[float | None] = []
+    zs: list[float | None] = []
+    for record in records:
+        (x0, y0, z0), (x1, y1, z1) = record["portal"]
+        xs += [x0, x1, None]
+        ys += [y0, y1, None]
+        zs += [z0, z1, None]
+    colour = colours.css(colours.CHOKEPOINT_COLOUR)
+    portals = go.Scatter3d(x=xs, y=ys, z=zs, mode="lines", name=LAYER_CHOKEPOINTS, legendgroup=LAYER_CHOKEPOINTS,
+                           showlegend=True, line=dict(color=colour, width=8), hoverinfo="skip")
+    p = np.asarray([r["position"] for r in records], dtype=np.float64).reshape(-1, 3)
+    top = max(max(r["score"] for r in records), 1e-12)
+    markers = go.Scatter3d(
+        x=p[:, 0].tolist(), y=(p[:, 1] + 0.3).tolist(), z=p[:, 2].tolist(), mode="markers",
+        name=LAYER_CHOKEPOINTS, legendgroup=LAYER_CHOKEPOINTS, showlegend=False,
+        marker=dict(size=[6 + 10 * r["score"] / top for r in records], color=colour, symbol="diamond"),
+        text=[chokepoint_label(r) for r in records], hoverinfo="text",
+    )
+    return [portals, markers]
