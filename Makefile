@@ -10,8 +10,9 @@ DEB_PACKAGES := librecast-dev cmake g++ make
 # chromium: the headless browser tests/test_html_report.py drives (make test only)
 TEST_DEB_PACKAGES := chromium
 README_IMAGE := docs/images/demo-heatmap.png
+REGIONS_IMAGE := docs/images/regions-dungeon.png
 
-.PHONY: demo test setup system-deps benchmark clean readme-image
+.PHONY: demo test setup system-deps benchmark clean readme-image regions-image
 
 demo: setup
 	$(VENV)/bin/g2s demo -o $(DEMO_OUT) --force
@@ -25,6 +26,12 @@ readme-image: setup
 	$(VENV)/bin/g2s demo -o $(DEMO_OUT) --force --format png --quiet
 	mkdir -p $(dir $(README_IMAGE))
 	cp $(DEMO_OUT)/heatmap.png $(README_IMAGE)
+
+# docs/plugins.md's picture: regions and chokepoints of the default dungeon sample.
+regions-image: setup
+	$(VENV)/bin/g2s run configs/level_regions.yaml sample:dungeon -o $(DEMO_OUT)-regions --force --format png --quiet
+	mkdir -p $(dir $(REGIONS_IMAGE))
+	cp $(DEMO_OUT)-regions/heatmap.png $(REGIONS_IMAGE)
 
 benchmark: setup
 	$(PY) benchmarks/pipeline.py
@@ -54,4 +61,4 @@ $(STAMP): pyproject.toml CMakeLists.txt $(wildcard src/*) | system-deps
 	touch $@
 
 clean:
-	rm -rf build $(DEMO_OUT)
+	rm -rf build $(DEMO_OUT) $(DEMO_OUT)-regions
