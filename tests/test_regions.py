@@ -2,7 +2,11 @@
 
 from __future__ import annotations
 
+import dataclasses
 import json
+import struct
+import subprocess
+import sys
 from functools import cache
 
 import networkx as nx
@@ -15,7 +19,7 @@ from g2s_core.errors import PluginError
 from g2s_core.model import RunResult
 from g2s_core.registry import Registry
 from g2s_plugins.centrality import edge_betweenness
-from g2s_plugins.outputs import structure_json
+from g2s_plugins.outputs import heatmap, structure_json
 from g2s_plugins.samples.levels import dungeon, load_sample
 from g2s_plugins.samples.rooms import dungeon_shares
 
@@ -162,6 +166,14 @@ def test_structure_json_carries_the_records_and_stays_byte_identical(tmp_path):
     assert (tmp_path / "again" / "structure.json").read_bytes() == first
 
 
+def test_the_png_draws_regions_and_chokepoints():
+    _, result = sample_run("loop_of_four_rooms")
+    plain = dataclasses.replace(result, features={})
+    assert heatmap.render(result) != heatmap.render(plain)
+    panels = heatmap._region_floors(result, result.structure, heatmap.floor_groups(result.structure, 2.0))
+    assert sorted(set(panels[0][1].tolist())) == [0, 1, 2, 3]
+
+
 # --- dungeons: generated rooms and corridors --------------------------------------------
 
 
@@ -171,3 +183,26 @@ def test_dungeon_doors_are_chokepoints_and_rooms_are_regions(seed):
     result = run(level)
     doors, rooms = dungeon_shares(level, chokepoints(result), regions(result), result.context.navmesh)
     assert doors >= 0.9 and rooms >= 0.9
+
+
+# --- the real test level, end to end -------------------------------------------------------
+
+
+def test_preset_on_the_real_level_writes_regions_and_chokepoints_in_every_format(tmp_path, shared_data):
+    out = tmp_path / "out"
+    proc = subprocess.run([sys.executable, "-m", "g2s_core.cli", "run", str(PRESET), str(shared_data / "nav_test.obj"),
+                           "-o", str(out), "--quiet"], capture_output=True, text=True)
+    assert proc.returncode == 0, proc.stderr
+    document = json.loads((out / "structure.json").read_text())
+    found = document["features"]["chokepoints"]["chokepoints"]
+    rooms = document["features"]["regions"]["regions"]
+    assert found and rooms and document["analysis_keys"] == ["betweenness", "chokepoints", "regions"]
+    assert sorted(p for r in rooms for p in r["polygons"]) == list(range(document["navmesh"]["polygons"]))
+    assert len({r["floor"] for r in rooms}) > 1  # the level has several floors
+    page = (out / "report.html").read_text()
+    assert '"name":"Regions"' in page and '"name":"Chokepoints"' in page and "chokepoint 0: width" in page
+    glb = (out / "structure.glb").read_bytes()
+    size = struct.unpack("<I", glb[12:16])[0]
+    names = {n.get("name") for n in json.loads(glb[20:20 + size])["nodes"]}
+    assert {"region_0", f"region_{len(rooms) - 1}", "chokepoint_0"} <= names
+    assert (out / "heatmap.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
