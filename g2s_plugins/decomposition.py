@@ -6,14 +6,20 @@ walls and puts a chokepoint where two grown areas meet; Perkins 2010, BWTA,
 uses the Voronoi diagram of the walls). Here the same idea runs on the navmesh
 polygons and their shared edges (portals):
 
-1. Clearance. Every navmesh boundary edge (a polygon edge with no neighbour:
-   the walls, already eroded by the agent radius) is sampled every
-   ``cell_size``; the clearance of a point is its distance to the nearest
-   sample (scipy ``cKDTree``, heights scaled by :data:`HEIGHT_SCALE` so that
-   another floor's walls stay far). A polygon's clearance is its centre's; a
-   portal's is the largest clearance of five points along it, so a door's
-   portal measures the middle of the door. ``width = 2 x clearance`` is the
-   walkable width of a passage (add the agent's diameter for wall to wall).
+1. Clearance. The navmesh's boundary edges (polygon edges with no
+   neighbour: the walls, already eroded by the agent radius) are cut into
+   pieces of at most :data:`PIECE`; the clearance of a point is its exact
+   distance to the nearest piece (scipy ``cKDTree`` over the pieces'
+   midpoints, heights scaled by :data:`HEIGHT_SCALE` so that another floor's
+   walls stay far). A polygon's clearance is its centre's; a portal's is the
+   largest clearance of five points along it, so a door's portal measures
+   the middle of the door. Small holes in the walkable surface (closed
+   boundary loops of the hole orientation enclosing less than
+   ``obstacle_area`` m²: pillars, crates) are left out of the clearances
+   that split the level, so they neither make a room as narrow as its doors
+   nor make passages of their own. ``width = 2 x clearance`` with every wall
+   counted is the walkable width reported for a chokepoint (add the agent's
+   diameter for wall to wall).
 2. Merge tree (watershed by clearance). Portals are taken widest first and
    join the groups of polygons on their two sides (union-find), except when
    both groups are already *rooms*: they hold at least ``min_region_area`` m²
@@ -27,9 +33,9 @@ polygons and their shared edges (portals):
    between the same two regions closer than ``min_separation`` are one
    chokepoint (the widest portal of them stays: a door cut by a tile border
    is several portals).
-4. A chokepoint is an articulation of the level when it is the only
-   chokepoint between its two regions and a bridge of the region graph
-   (``networkx.bridges``): closing it disconnects the level.
+4. A chokepoint is an articulation of the level when it is a bridge of the
+   region multigraph (regions joined by one edge per chokepoint;
+   ``rustworkx.bridges``): closing it disconnects the level.
 5. Traffic (:func:`score`). A structure edge whose two ends lie in different
    regions crosses the chokepoint between them nearest to it; the
    chokepoint's traffic is the largest edge betweenness of the structure
@@ -44,7 +50,7 @@ to its mean height when it has none). Multi-floor levels need nothing else:
 the polygon graph already joins floors only where the agent can walk (ramps,
 stairs).
 
-Complexity: clearance O((B + P + E) log B) for B wall samples, P polygons,
+Complexity: clearance O((B + P + E) log B) for B wall pieces, P polygons,
 E portals; the merge tree sorts the portals and runs one union-find step per
 portal (a Python loop of O(E alpha(P)): a merge order is sequential by
 nature and no library offers it on a general graph); everything else is
@@ -59,6 +65,7 @@ from typing import Any
 
 import networkx as nx
 import numpy as np
+import rustworkx as rx
 from pydantic import Field
 from scipy import sparse
 from scipy.sparse import csgraph
@@ -74,6 +81,12 @@ HEIGHT_SCALE = 4.0
 FLAT_DEG = 10.0
 """Polygons within this angle of horizontal define the floors' height bands, degrees."""
 
+PIECE = 1.0
+"""Walls are cut into pieces at most this long (m) for the nearest-wall search."""
+
+NEAREST_PIECES = 6
+"""Wall pieces whose exact distance is computed for each point (the nearest by midpoint)."""
+
 PORTAL_SAMPLES = np.array([0.1, 0.3, 0.5, 0.7, 0.9])
 """Where along a portal the clearance is measured (fractions from its first end point)."""
 
@@ -85,6 +98,10 @@ class DecompositionParams(PluginParams):
         0.75, gt=0, lt=1,
         description="a passage is a chokepoint when its width is at most this fraction of the widest "
         "point of the rooms on both sides",
+    )
+    obstacle_area: float = Field(
+        16.0, ge=0, description="holes in the walkable surface smaller than this (pillars, crates) do not "
+        "make a room narrower, m²",
     )
     min_region_area: float = Field(8.0, ge=0, description="smaller areas (slivers, corners) merge into a neighbour, m²")
     min_separation: float = Field(
@@ -118,40 +135,124 @@ def require_navmesh(context: Any, analyzer: str) -> Any:
     return context.navmesh
 
 
-def wall_samples(navmesh: Any, spacing: float) -> np.ndarray:
-    """(B,3) points every ``spacing`` metres (at most) along the navmesh's boundary edges."""
+def boundary_edges(navmesh: Any) -> tuple[np.ndarray, np.ndarray]:
+    """The navmesh's boundary edges (polygon edges with no neighbour): start and end points, (B,3) each, m."""
     polygons = np.asarray(navmesh.polygons, dtype=np.int64)
     valid = polygons >= 0
     count = valid.sum(axis=1)
     j = np.arange(polygons.shape[1])[None, :]
     following = np.where(j + 1 < count[:, None], j + 1, 0)
-    boundary = valid & (np.asarray(navmesh.neighbours) < 0)
-    rows, cols = np.nonzero(boundary)
+    rows, cols = np.nonzero(valid & (np.asarray(navmesh.neighbours) < 0))
     vertices = np.asarray(navmesh.vertices, dtype=np.float64)
-    start = vertices[polygons[rows, cols]]
-    end = vertices[polygons[rows, following[rows, cols]]]
+    return vertices[polygons[rows, cols]], vertices[polygons[rows, following[rows, cols]]]
+
+
+def obstacle_edges(start: np.ndarray, end: np.ndarray, max_area: float) -> np.ndarray:
+    """(B,) bool: boundary edges of holes smaller than ``max_area`` m² (pillars, crates).
+
+    Boundary edges are joined into loops at equal end points (vertices equal
+    to 1 cm, so loops close across tile borders; scipy connected components).
+    A loop's signed xz area (shoelace, summed per loop) has one sign for
+    outer boundaries and the other for holes; the outer sign is that of the
+    loop with the largest area.
+    """
+    if len(start) == 0:
+        return np.zeros(0, dtype=bool)
+    _, vertex = np.unique(_point_keys(np.concatenate([start, end])), return_inverse=True)
+    vertex = vertex.reshape(-1)
+    n, b = int(vertex.max()) + 1, len(start)
+    links = sparse.coo_array((np.ones(b), (vertex[:b], vertex[b:])), shape=(n, n))
+    count, loop_of_vertex = csgraph.connected_components(links, directed=False)
+    loop = loop_of_vertex[vertex[:b]]
+    signed = 0.5 * np.bincount(loop, weights=start[:, 0] * end[:, 2] - end[:, 0] * start[:, 2], minlength=count)
+    outer = np.sign(signed[np.argmax(np.abs(signed))])
+    small_hole = (np.sign(signed) == -outer) & (np.abs(signed) < max_area)
+    return small_hole[loop]
+
+
+def _point_keys(points: np.ndarray) -> np.ndarray:
+    """(N,) int64 keys equal for points equal to 1 cm (21 bits a coordinate: levels up to 20 km across)."""
+    cells = np.round(points * 100.0).astype(np.int64)
+    cells -= cells.min(axis=0, initial=0)
+    if cells.size and cells.max() >= 1 << 21:
+        raise PluginError("the level is more than 20 km across; chokepoints and regions cannot key its vertices")
+    return (cells[:, 0] << 42) | (cells[:, 1] << 21) | cells[:, 2]
+
+
+def wall_samples(start: np.ndarray, end: np.ndarray, spacing: float) -> np.ndarray:
+    """(K,3) points every ``spacing`` metres (at most) along the edges ``start`` -> ``end`` (B,3)."""
     pieces = np.maximum(np.ceil(np.linalg.norm(end - start, axis=1) / spacing), 1).astype(np.int64)
-    edge = np.repeat(np.arange(len(rows)), pieces + 1)
+    edge = np.repeat(np.arange(len(start)), pieces + 1)
     offsets = np.arange(len(edge)) - np.repeat(np.cumsum(pieces + 1) - (pieces + 1), pieces + 1)
     t = (offsets / pieces[edge])[:, None]
     return start[edge] * (1.0 - t) + end[edge] * t
 
 
-def clearances(navmesh: Any, spacing: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Clearance (m) of every polygon centre (P,) and portal (E,), and each portal's widest point (E,3)."""
+def _distance_to(points: np.ndarray, start: np.ndarray, end: np.ndarray) -> np.ndarray:
+    """Distance (m, heights scaled) from each of ``points`` (N,3) to the nearest segment ``start`` -> ``end``
+    (B,3 each; inf when there is none).
+
+    Segments are cut into pieces at most :data:`PIECE` long; a kd-tree over the
+    pieces' midpoints gives each point its :data:`NEAREST_PIECES` nearest
+    pieces, and the exact point-segment distance to those is taken.
+    """
+    if len(start) == 0:
+        return np.full(len(points), np.inf)
     scale = np.array([1.0, HEIGHT_SCALE, 1.0])
-    walls = wall_samples(navmesh, spacing)
-    portals = navmesh.portals()
-    if len(walls) == 0:  # no boundary at all: nothing is narrow
-        inf = np.full(len(portals.pairs), np.inf)
-        return np.full(navmesh.polygon_count, np.inf), inf, portals.endpoints.mean(axis=1)
-    tree = cKDTree(walls * scale)
-    polygon_clearance = tree.query(np.asarray(navmesh.centres) * scale)[0]
-    ends = portals.endpoints
+    ends = wall_samples(start * scale, end * scale, PIECE)
+    last = np.cumsum(np.maximum(np.ceil(np.linalg.norm((end - start) * scale, axis=1) / PIECE), 1).astype(np.int64) + 1)
+    is_start = np.ones(len(ends), dtype=bool)
+    is_start[last - 1] = False  # a piece runs from each sample to the next one of its edge
+    a, b = ends[is_start], ends[np.flatnonzero(is_start) + 1]
+    k = min(NEAREST_PIECES, len(a))
+    q = points * scale
+    nearest = cKDTree(0.5 * (a + b)).query(q, k=k)[1].reshape(len(q), k)
+    pa, pb = a[nearest], b[nearest]
+    d = pb - pa
+    t = np.clip(np.einsum("nkc,nkc->nk", q[:, None] - pa, d) / np.maximum(np.einsum("nkc,nkc->nk", d, d), 1e-12), 0, 1)
+    return np.linalg.norm(q[:, None] - (pa + t[..., None] * d), axis=2).min(axis=1)
+
+
+@dataclass(frozen=True)
+class Clearances:
+    """How far the navmesh's polygon centres and portals are from its walls, m.
+
+    Attributes:
+        polygons: (P,) clearance of each polygon centre, small holes ignored.
+        portals_open: (E,) clearance of each portal, small holes ignored.
+        portals: (E,) clearance of each portal, every wall counted.
+        widest: (E,3) each portal's point of largest clearance (every wall counted).
+    """
+
+    polygons: np.ndarray
+    portals_open: np.ndarray
+    portals: np.ndarray
+    widest: np.ndarray
+
+
+def clearances(navmesh: Any, obstacle_area: float) -> Clearances:
+    """The clearances of ``navmesh`` (a portal's is the largest of :data:`PORTAL_SAMPLES` points along it).
+
+    Small holes (:func:`obstacle_edges`: pillars, crates) are left out of the
+    clearances that split the level, so that they neither make a room as
+    narrow as its doors nor make passages of their own; the width reported
+    for a chokepoint counts them.
+    """
+    start, end = boundary_edges(navmesh)
+    obstacle = obstacle_edges(start, end, obstacle_area)
+    ends = navmesh.portals().endpoints
     points = ends[:, None, 0] * (1.0 - PORTAL_SAMPLES[None, :, None]) + ends[:, None, 1] * PORTAL_SAMPLES[None, :, None]
-    along = tree.query((points * scale).reshape(-1, 3))[0].reshape(len(ends), len(PORTAL_SAMPLES))
-    widest = along.argmax(axis=1) if len(ends) else np.zeros(0, dtype=np.int64)
-    return polygon_clearance, along.max(axis=1, initial=0.0), points[np.arange(len(ends)), widest]
+    points = points.reshape(-1, 3)
+    shape = (len(ends), len(PORTAL_SAMPLES))
+    walls = _distance_to(points, start[~obstacle], end[~obstacle]).reshape(shape)
+    every = np.minimum(walls, _distance_to(points, start[obstacle], end[obstacle]).reshape(shape))
+    widest = every.argmax(axis=1) if len(ends) else np.zeros(0, dtype=np.int64)
+    return Clearances(
+        polygons=_distance_to(np.asarray(navmesh.centres), start[~obstacle], end[~obstacle]),
+        portals_open=walls.max(axis=1, initial=0.0),
+        portals=every.max(axis=1, initial=0.0),
+        widest=points.reshape(*shape, 3)[np.arange(len(ends)), widest],
+    )
 
 
 def _merge_tree(pairs: np.ndarray, portal_clearance: np.ndarray, polygon_clearance: np.ndarray,
@@ -212,12 +313,11 @@ def decompose(navmesh: Any, agent: Any, params: DecompositionParams) -> Decompos
     (walkable width, m), ``regions`` ([a, b], a < b), ``polygons`` (the
     portal's two polygons), ``floors``, ``articulation``.
     """
-    spacing = float(navmesh.settings.get("cell_size", 0.25))
-    polygon_clearance, portal_clearance, widest = clearances(navmesh, spacing)
+    clearance = clearances(navmesh, params.obstacle_area)
     portals = navmesh.portals()
     pairs = np.asarray(portals.pairs, dtype=np.int64).reshape(-1, 2)
     areas = np.asarray(navmesh.areas, dtype=np.float64)
-    merged, blocked = _merge_tree(pairs, portal_clearance, polygon_clearance, areas,
+    merged, blocked = _merge_tree(pairs, clearance.portals_open, clearance.polygons, areas,
                                   params.narrowness, params.min_region_area)
     n = navmesh.polygon_count
     joined = sparse.coo_array((np.ones(int(merged.sum())), (pairs[merged, 0], pairs[merged, 1])), shape=(n, n))
@@ -241,8 +341,8 @@ def decompose(navmesh: Any, agent: Any, params: DecompositionParams) -> Decompos
          "floor": int(floor[r]), "height_range": [float(low[r]), float(high[r])], "neighbours": []}
         for r in range(count)
     ]
-    chokepoints = _chokepoints(np.flatnonzero(blocked), pairs, labels, portals.endpoints, widest,
-                               2.0 * portal_clearance, floor, params.min_separation)
+    chokepoints = _chokepoints(np.flatnonzero(blocked), pairs, labels, portals.endpoints, clearance.widest,
+                               2.0 * clearance.portals, floor, params.min_separation)
     return Decomposition(labels, regions, chokepoints)
 
 
@@ -283,13 +383,14 @@ def _chokepoints(candidates: np.ndarray, pairs: np.ndarray, labels: np.ndarray, 
             "polygons": [int(pairs[e, 0]), int(pairs[e, 1])],
             "floors": [int(floor[a]), int(floor[b])],
         })
-    region_graph = nx.MultiGraph()
-    region_graph.add_edges_from(tuple(k["regions"]) for k in kept)
-    simple = nx.Graph(region_graph)
-    bridges = {tuple(sorted(e)) for e in nx.bridges(simple)}
-    for k in kept:
-        pair = tuple(k["regions"])
-        k["articulation"] = pair in bridges and region_graph.number_of_edges(*pair) == 1
+    pairs_kept = [tuple(k["regions"]) for k in kept]
+    count = max((b for _, b in pairs_kept), default=-1) + 1
+    region_graph = rx.PyGraph(multigraph=True)
+    region_graph.add_nodes_from(range(count))
+    region_graph.add_edges_from_no_data(pairs_kept)
+    bridges = {tuple(sorted(e)) for e in rx.bridges(region_graph)}  # a doubled pair is never a bridge
+    for k, pair in zip(kept, pairs_kept):
+        k["articulation"] = pair in bridges
     return kept
 
 

@@ -18,6 +18,7 @@ from g2s_core.config import PRESETS_DIR, load_config, load_raw_config, parse_con
 from g2s_core.errors import PluginError
 from g2s_core.model import RunResult
 from g2s_core.registry import Registry
+from g2s_plugins import decomposition
 from g2s_plugins.centrality import edge_betweenness
 from g2s_plugins.outputs import heatmap, structure_json
 from g2s_plugins.samples.levels import dungeon, load_sample
@@ -70,6 +71,29 @@ def test_edge_betweenness_matches_networkx(graph):
         theirs = nx.edge_betweenness_centrality(graph, normalized=normalized)
         assert set(ours) == set(graph.edges)
         assert all(ours[e] == pytest.approx(theirs[e]) for e in graph.edges)
+
+
+def square(x0: float, z0: float, side: float, clockwise: bool) -> tuple[np.ndarray, np.ndarray]:
+    corners = np.array([[x0, 0, z0], [x0 + side, 0, z0], [x0 + side, 0, z0 + side], [x0, 0, z0 + side]], dtype=float)
+    if clockwise:
+        corners = corners[::-1]
+    return corners, np.roll(corners, -1, axis=0)
+
+
+def test_small_holes_are_obstacles_and_outer_walls_are_not():
+    outer = square(0.0, 0.0, 20.0, clockwise=False)
+    pillar = square(5.0, 5.0, 2.0, clockwise=True)  # 4 m²
+    block = square(10.0, 10.0, 5.0, clockwise=True)  # 25 m²
+    start, end = (np.concatenate(parts) for parts in zip(outer, pillar, block))
+    flags = decomposition.obstacle_edges(start, end, max_area=16.0)
+    assert flags.tolist() == [False] * 4 + [True] * 4 + [False] * 4
+    assert not decomposition.obstacle_edges(start, end, max_area=0.0).any()
+
+
+def test_distance_to_walls_is_exact_for_long_walls():
+    start, end = np.array([[0.0, 0.0, 0.0]]), np.array([[30.0, 0.0, 0.0]])
+    points = np.array([[15.2, 0.0, 2.0], [-3.0, 0.0, 4.0], [7.0, 1.0, 0.0]])
+    assert decomposition._distance_to(points, start, end) == pytest.approx([2.0, 5.0, decomposition.HEIGHT_SCALE])
 
 
 # --- generated rooms with known answers ------------------------------------------------
@@ -177,9 +201,9 @@ def test_the_png_draws_regions_and_chokepoints():
 # --- dungeons: generated rooms and corridors --------------------------------------------
 
 
-@pytest.mark.parametrize("seed", [0, 1])
-def test_dungeon_doors_are_chokepoints_and_rooms_are_regions(seed):
-    level = dungeon(seed=seed, rooms=12, obstacles=0.0)
+@pytest.mark.parametrize(("seed", "obstacles"), [(0, 0.0), (1, 0.3)], ids=["open rooms", "pillars"])
+def test_dungeon_doors_are_chokepoints_and_rooms_are_regions(seed, obstacles):
+    level = dungeon(seed=seed, rooms=12, obstacles=obstacles)
     result = run(level)
     doors, rooms = dungeon_shares(level, chokepoints(result), regions(result), result.context.navmesh)
     assert doors >= 0.9 and rooms >= 0.9
