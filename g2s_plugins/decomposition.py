@@ -100,8 +100,8 @@ class DecompositionParams(PluginParams):
         "point of the rooms on both sides",
     )
     obstacle_area: float = Field(
-        16.0, ge=0, description="holes in the walkable surface smaller than this (pillars, crates) do not "
-        "make a room narrower, m²",
+        16.0, ge=0, description="holes in the walkable surface smaller than this (pillars, crates) neither "
+        "narrow a room nor make a passage, m²",
     )
     min_region_area: float = Field(8.0, ge=0, description="smaller areas (slivers, corners) merge into a neighbour, m²")
     min_separation: float = Field(
