@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import dataclasses
 import json
-import struct
 import subprocess
 import sys
 from functools import cache
@@ -20,9 +19,10 @@ from g2s_core.model import RunResult
 from g2s_core.registry import Registry
 from g2s_plugins import decomposition
 from g2s_plugins.centrality import edge_betweenness
-from g2s_plugins.outputs import heatmap, structure_json
+from g2s_plugins.outputs import colours, heatmap, structure_json
 from g2s_plugins.samples.levels import dungeon, load_sample
 from g2s_plugins.samples.rooms import dungeon_shares
+from tests.test_gltf import _children, read_glb
 
 PRESET = PRESETS_DIR / "level_regions.yaml"
 
@@ -194,8 +194,38 @@ def test_the_png_draws_regions_and_chokepoints():
     _, result = sample_run("loop_of_four_rooms")
     plain = dataclasses.replace(result, features={})
     assert heatmap.render(result) != heatmap.render(plain)
-    panels = heatmap._region_floors(result, result.structure, heatmap.floor_groups(result.structure, 2.0))
-    assert sorted(set(panels[0][1].tolist())) == [0, 1, 2, 3]
+    groups = heatmap.floor_groups(result.structure, 2.0)
+    (outlines, region_colours), = heatmap._regions_by_floor(result, result.structure, groups)
+    palette = colours.region_colours(regions(result))
+    assert len(outlines) == len(region_colours) > 0 and set(region_colours) == set(palette.values())
+    (marked,) = heatmap._chokepoints_by_floor(result, result.structure, groups)
+    assert [c["id"] for c in marked] == [c["id"] for c in chokepoints(result)]
+    labels = [h.get_label() for h in heatmap._legend_handles(result, result.structure, groups)]
+    assert "chokepoint (id: walkable width)" in labels and any(label.startswith("regions") for label in labels)
+
+
+def test_neighbouring_regions_differ_in_colour():
+    _, result = sample_run("loop_of_four_rooms")
+    palette = colours.region_colours(regions(result))
+    assert set(palette) == {r["id"] for r in regions(result)}
+    for record in regions(result):
+        assert all(palette[record["id"]] != palette[n["region"]] for n in record["neighbours"])
+    assert len(set(palette.values())) == 4 and set(palette.values()) <= set(colours.REGION_COLOURS)
+
+
+def _records(neighbours: dict[int, list[int]]) -> list[dict]:
+    return [{"id": r, "neighbours": [{"region": n, "chokepoints": []} for n in ns]} for r, ns in neighbours.items()]
+
+
+def test_region_colours_of_hand_made_region_graphs():
+    # a corridor of twelve rooms: neighbours differ, and the rooms spread over all six colours, twice each
+    path = colours.region_colours(_records({r: [n for n in (r - 1, r + 1) if 0 <= n < 12] for r in range(12)}))
+    assert all(path[r] != path[r + 1] for r in range(11))
+    assert sorted(list(path.values()).count(c) for c in colours.REGION_COLOURS) == [2] * 6
+    # seven rooms all joined to each other need a seventh colour: exactly one pair shares one
+    clique = colours.region_colours(_records({r: [n for n in range(7) if n != r] for r in range(7)}))
+    assert len(set(clique.values())) == 6
+    assert colours.region_colours([{"id": 7, "neighbours": []}]) == {7: colours.REGION_COLOURS[0]}
 
 
 # --- dungeons: generated rooms and corridors --------------------------------------------
@@ -224,9 +254,9 @@ def test_preset_on_the_real_level_writes_regions_and_chokepoints_in_every_format
     assert sorted(p for r in rooms for p in r["polygons"]) == list(range(document["navmesh"]["polygons"]))
     assert len({r["floor"] for r in rooms}) > 1  # the level has several floors
     page = (out / "report.html").read_text()
-    assert '"name":"Regions"' in page and '"name":"Chokepoints"' in page and "chokepoint 0: width" in page
-    glb = (out / "structure.glb").read_bytes()
-    size = struct.unpack("<I", glb[12:16])[0]
-    names = {n.get("name") for n in json.loads(glb[20:20 + size])["nodes"]}
-    assert {"region_0", f"region_{len(rooms) - 1}", "chokepoint_0"} <= names
+    assert '"name":"Regions"' in page and '"name":"Chokepoints"' in page
+    assert "chokepoint 0" in page and "walkable width" in page
+    header, _ = read_glb(out / "structure.glb")
+    assert sorted(_children(header, "regions")) == sorted(f"region_{r['id']}" for r in rooms)
+    assert sorted(_children(header, "chokepoints")) == sorted(f"chokepoint_{c['id']}" for c in found)
     assert (out / "heatmap.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"

@@ -2,17 +2,27 @@
 
 * Tree depth: an edge takes the colour of its child's depth, red for depth 1,
   yellow for 2, then green, cyan, blue, magenta, orange, violet, repeating.
-  Roots (depth 0) are red spheres.
-* Analysis values: green (lowest) -> yellow (middle) -> red (highest), after
-  min-max normalisation of the values shown.
+* Roots are black and have their own marker shape in every format, so no
+  colour means both "root" and something else; terminals and openings are
+  vermilion (Okabe and Ito's colour-blind-safe palette).
+* Analysis values: matplotlib's viridis, a perceptually uniform sequential
+  scale that colour-blind readers and greyscale prints read the same way:
+  dark purple (lowest) -> teal -> yellow (highest), after min-max
+  normalisation of the values shown.
+* Regions: Okabe and Ito's other six colours (their black and vermilion
+  already mean roots and terminals), given so that regions joined by a
+  chokepoint differ (:func:`region_colours`); chokepoints are near-black and
+  have their own marker shape.
 
 Colours are 8-bit RGB tuples.
 """
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable, Mapping, Sequence
+from typing import Any
 
+import networkx as nx
 import numpy as np
 
 RGB = tuple[int, int, int]
@@ -29,16 +39,30 @@ DEPTH_COLOURS: tuple[RGB, ...] = (
 )
 """Colour of depth d >= 1 is ``DEPTH_COLOURS[(d - 1) % len(DEPTH_COLOURS)]``."""
 
-ROOT_COLOUR: RGB = (220, 30, 30)
-TERMINAL_COLOUR: RGB = (30, 110, 255)
+ROOT_COLOUR: RGB = (0, 0, 0)
+TERMINAL_COLOUR: RGB = (213, 94, 0)
 MESH_COLOUR: RGB = (170, 170, 170)
 NAVMESH_COLOUR: RGB = (60, 200, 90)
 NAVMESH_ALPHA = 0.35
 GRAPH_COLOUR: RGB = (90, 90, 90)
 STEINER_COLOUR: RGB = (150, 60, 200)
+CHOKEPOINT_COLOUR: RGB = (20, 20, 20)
 
-HEAT_STOPS: tuple[tuple[float, RGB], ...] = ((0.0, (0, 160, 0)), (0.5, (250, 210, 0)), (1.0, (220, 0, 0)))
-"""The analysis scale: green at the lowest value, yellow at the middle, red at the highest."""
+REGION_COLOURS: tuple[RGB, ...] = (
+    (230, 159, 0),    # orange
+    (86, 180, 233),   # sky blue
+    (0, 158, 115),    # bluish green
+    (240, 228, 66),   # yellow
+    (0, 114, 178),    # blue
+    (204, 121, 167),  # reddish purple
+)
+"""Okabe and Ito's colour-blind-safe palette less black and vermilion (Okabe & Ito 2008, Color Universal Design)."""
+
+VALUE_COLORMAP = "viridis"
+"""The matplotlib colormap of analysis values (low -> high)."""
+VALUE_SCALE_LABEL = "dark purple lowest, yellow highest"
+PLOTLY_STOPS = 11
+"""How many evenly spaced stops approximate the scale in plotly (the steps are invisible)."""
 
 
 def depth_colour(depth: int) -> RGB:
@@ -49,13 +73,9 @@ def depth_colour(depth: int) -> RGB:
 
 
 def heat_colour(t: float) -> RGB:
-    """Colour of a normalised value ``t`` in [0, 1] (clipped)."""
-    t = min(max(float(t), 0.0), 1.0)
-    for (t0, c0), (t1, c1) in zip(HEAT_STOPS, HEAT_STOPS[1:]):
-        if t <= t1:
-            f = (t - t0) / (t1 - t0)
-            return tuple(int(round(a + (b - a) * f)) for a, b in zip(c0, c1))  # type: ignore[return-value]
-    return HEAT_STOPS[-1][1]
+    """Colour of a normalised value ``t`` in [0, 1] (clipped) on :data:`VALUE_COLORMAP`."""
+    rgba = matplotlib_heat_cmap()(min(max(float(t), 0.0), 1.0))
+    return tuple(int(round(c * 255)) for c in rgba[:3])  # type: ignore[return-value]
 
 
 def normalise(values: Iterable[float]) -> np.ndarray:
@@ -83,25 +103,38 @@ def unit(rgb: Sequence[int], alpha: float = 1.0) -> tuple[float, float, float, f
 
 def plotly_heat_scale() -> list[list]:
     """The analysis scale as a plotly colorscale."""
-    return [[t, css(c)] for t, c in HEAT_STOPS]
+    stops = np.linspace(0.0, 1.0, PLOTLY_STOPS)
+    return [[float(t), css(heat_colour(t))] for t in stops]
 
 
 def matplotlib_heat_cmap():  # -> matplotlib.colors.Colormap
     """The analysis scale as a matplotlib colormap."""
-    from matplotlib.colors import LinearSegmentedColormap
+    from matplotlib import colormaps
 
-    return LinearSegmentedColormap.from_list("g2s_heat", [(t, unit(c)) for t, c in HEAT_STOPS])
-
-
-REGION_COLOURS: tuple[RGB, ...] = (
-    (31, 119, 180), (255, 127, 14), (44, 160, 44), (214, 39, 40), (148, 103, 189), (140, 86, 75),
-    (227, 119, 194), (127, 127, 127), (188, 189, 34), (23, 190, 207), (174, 199, 232), (255, 187, 120),
-)
-"""Region ``i`` is drawn in ``REGION_COLOURS[i % len(REGION_COLOURS)]`` (a categorical palette)."""
-
-CHOKEPOINT_COLOUR: RGB = (20, 20, 20)
+    return colormaps[VALUE_COLORMAP]
 
 
-def region_colour(region: int) -> RGB:
-    """Colour of region ``region`` (ids >= 0)."""
-    return REGION_COLOURS[int(region) % len(REGION_COLOURS)]
+def region_colours(regions: Sequence[Mapping[str, Any]]) -> dict[int, RGB]:
+    """Region id -> colour: neighbouring regions (``neighbours`` of a region record) differ, all colours in use.
+
+    Greedy colouring in smallest-last order (Matula and Beck 1983): each
+    region, when its turn comes, has at most ``degeneracy`` neighbours
+    coloured already, so :data:`REGION_COLOURS` suffices whenever the region
+    graph's degeneracy is below 6 (every planar graph: the rooms of one
+    floor). Among the colours its neighbours leave free a region takes the
+    least used so far, so that rooms far apart spread over the whole palette
+    rather than alternating two colours; with no colour free the palette
+    repeats. O(R log R + N) for R regions and N neighbour pairs.
+    """
+    graph = nx.Graph()
+    graph.add_nodes_from(sorted(int(r["id"]) for r in regions))
+    graph.add_edges_from((int(r["id"]), int(n["region"])) for r in regions for n in r.get("neighbours", ()))
+    palette = range(len(REGION_COLOURS))
+    used = [0] * len(REGION_COLOURS)
+    slot: dict[int, int] = {}
+    for region in nx.coloring.strategy_smallest_last(graph, slot):
+        taken = {slot[n] for n in graph[region] if n in slot}
+        slot[region] = min((c for c in palette if c not in taken), default=min(palette, key=used.__getitem__),
+                           key=lambda c: (used[c], c))
+        used[slot[region]] += 1
+    return {region: REGION_COLOURS[slot[region]] for region in sorted(graph)}

@@ -97,9 +97,3 @@ def triangle_regions(result: RunResult) -> np.ndarray | None:
         labels[np.asarray(record["polygons"], dtype=np.int64)] = int(record["id"])
     return labels[np.asarray(navmesh.detail_polygon, dtype=np.int64)]
 
-
-def chokepoint_label(record: dict[str, Any]) -> str:
-    """One line describing a chokepoint: id, width, score, the regions it joins."""
-    closing = ", closing it disconnects the level" if record["articulation"] else ""
-    return (f"chokepoint {record['id']}: width {record['width']:.2f} m, score {record['score']:.3g} "
-            f"(traffic {record['traffic']:.3g}), regions {record['regions'][0]}-{record['regions'][1]}{closing}")
