@@ -141,6 +141,21 @@ class StageStats:
     terminals: int | None = None
 
 
+@dataclass(frozen=True)
+class AnalyzerResult:
+    """What an Analyzer may return instead of a plain mapping: values plus records.
+
+    Attributes:
+        values: a float for every node of the structure (as a plain mapping would be).
+        features: structured findings (e.g. ``{"chokepoints": [...]}``), JSON data
+            only (dicts, lists, str, int, float, bool, None); kept on
+            ``RunResult.features[key]`` and written to the outputs.
+    """
+
+    values: Mapping[int, float]
+    features: Mapping[str, Any] = field(default_factory=dict)
+
+
 @dataclass
 class RunContext:
     """Shared, read-mostly state that every hook receives as ``context``.
@@ -181,6 +196,7 @@ class RunResult:
     forest: nx.DiGraph | None = None
     structure: nx.DiGraph | None = None
     analysis: dict[str, dict[int, float]] = field(default_factory=dict)
+    features: dict[str, dict[str, Any]] = field(default_factory=dict)
     stages: list[StageStats] = field(default_factory=list)
     formats: tuple[str, ...] = ()
     """The output formats this run's results are written in (set by the writer before writing)."""

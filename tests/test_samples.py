@@ -77,6 +77,10 @@ def test_registry_names_and_load():
         "closed_room",
         "room_with_window",
         "dungeon",
+        "two_rooms_one_door",
+        "room_with_two_doors",
+        "loop_of_four_rooms",
+        "floors_joined_by_ramp",
     }
     lvl = load_sample("straight_corridor", length=5.0)
     assert isinstance(lvl, SampleLevel) and lvl.name == "straight_corridor"

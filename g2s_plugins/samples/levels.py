@@ -886,6 +886,11 @@ SAMPLES: dict[str, Callable[..., SampleLevel]] = {
 }
 """Sample name -> factory. Every factory takes keyword arguments only."""
 
+# Rooms joined by doors (chokepoint and region ground truth) build on the helpers above.
+from g2s_plugins.samples.rooms import SAMPLES as _ROOM_SAMPLES  # noqa: E402
+
+SAMPLES.update(_ROOM_SAMPLES)
+
 
 def load_sample(name: str, **kwargs: Any) -> SampleLevel:
     """Build the sample ``name`` with ``kwargs``; ``KeyError`` lists the names when unknown."""
