@@ -263,14 +263,26 @@ def _terminal_layer(result: RunResult, terminals: list[int]) -> list[Any]:
         xs: list[float | None] = []
         ys: list[float | None] = []
         zs: list[float | None] = []
-        for o in openings:
+        texts: list[str | None] = []
+        for index, o in enumerate(openings):
             xs += [o.p0[0], o.p1[0], None]
             ys += [o.p0[1], o.p1[1], None]
             zs += [o.p0[2], o.p1[2], None]
+            text = _opening_text(index, o)
+            texts += [text, text, None]
         traces.append(go.Scatter3d(x=xs, y=ys, z=zs, mode="lines", name=LAYER_TERMINALS, legendgroup=LAYER_TERMINALS,
                                    showlegend=not traces, line=dict(color=colours.css(colours.TERMINAL_COLOUR), width=6),
-                                   hoverinfo="skip", visible="legendonly"))
+                                   text=texts, hovertemplate="%{text}<extra></extra>", visible="legendonly"))
     return traces
+
+
+def _opening_text(index: int, opening: Any) -> str:
+    """Hover text of an opening: its number, width, score and the reason it was kept."""
+    score = "not scored" if opening.score is None else f"score {opening.score:.2f}"
+    lines = [f"opening {index}: {opening.width:.2f} m wide, {score}"]
+    if opening.reason:
+        lines.append(html.escape(opening.reason))
+    return "<br>".join(lines)
 
 
 def _tree_layer(tree: nx.DiGraph, name: str, visible: bool, result: RunResult) -> list[Any]:

@@ -886,6 +886,8 @@ SAMPLES: dict[str, Callable[..., SampleLevel]] = {
 }
 """Sample name -> factory. Every factory takes keyword arguments only."""
 
+import g2s_plugins.samples.pieces  # noqa: E402, F401  (adds the map pieces to SAMPLES; they use the helpers above)
+
 
 def load_sample(name: str, **kwargs: Any) -> SampleLevel:
     """Build the sample ``name`` with ``kwargs``; ``KeyError`` lists the names when unknown."""

@@ -1,0 +1,124 @@
+"""Openings and structures of map pieces against their known or designer-placed connectors.
+
+Run: ``.venv/bin/python benchmarks/piece_quality.py [--config configs/map_piece.yaml] [--pieces DIR]``
+
+Runs the map-piece preset on every generated piece of
+:mod:`g2s_plugins.samples.pieces` (reference: the known openings) and on the
+shared pieces ``../shared/data/pieces/*.obj`` (reference: the designers'
+connectors in ``connectors.json``; the Hallway has none, so its tool
+connectors stand in, and the table says so). Per piece it prints the
+detected openings, precision (share of openings whose midpoint lies within
+1.5 m of a reference connector), recall (share of reference connectors with
+an opening that close), the number of trees of the structure, and the
+largest height between a final edge and the navmesh surface under it
+(edges made by simplification / all edges).
+docs/entry_exit.md records its output before and after changes.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from pathlib import Path
+
+import numpy as np
+
+from g2s_core import pipeline
+from g2s_core.config import load_config
+from g2s_core.mesh import load_mesh, mesh_sha256
+from g2s_core.registry import Registry
+from g2s_plugins.samples import pieces
+
+ROOT = Path(__file__).resolve().parents[1]
+SHARED_PIECES = ROOT.parent / "shared" / "data" / "pieces"
+
+
+def edge_surface_gap(result) -> tuple[float, float]:
+    """Largest height (m) between the structure's edges and the navmesh surface: (collapsed edges, all edges).
+
+    Collapsed edges are those simplification made (not in the initial graph); the others join
+    neighbouring navmesh polygons' centres.
+    """
+    from g2s_plugins._surface import edge_surface_gaps
+
+    if result.context.navmesh is None or result.structure is None:
+        return float("nan"), float("nan")
+    gaps = edge_surface_gaps(result.structure, result.context.navmesh, result.context.agent)
+    new = [g for (a, b), g in gaps.items() if not result.graph.has_edge(a, b)]
+    return max(new, default=0.0), max(gaps.values(), default=0.0)
+
+
+def trees(result) -> int:
+    """Number of trees in the final structure (0 when the run stopped before)."""
+    return 0 if result.structure is None else len(result.structure.graph["roots"])
+
+
+def measure(run, name: str, mesh, reference: np.ndarray) -> dict:
+    """One row: counts, precision, recall, trees and surface gap of ``run`` on ``mesh``."""
+    result = run(mesh, name)
+    openings = result.terminals.openings if result.terminals is not None else ()
+    found = np.array([o.position for o in openings], dtype=np.float64).reshape(-1, 3)
+    correct, recalled = pieces.match_openings(found, reference)
+    return {
+        "piece": name,
+        "openings": len(openings),
+        "reference": len(reference),
+        "correct": correct,
+        "recalled": recalled,
+        "trees": trees(result),
+        "gap": edge_surface_gap(result),
+        "scores": [getattr(o, "score", None) for o in openings],
+    }
+
+
+def shared_references(folder: Path) -> dict[str, tuple[np.ndarray, str]]:
+    """Piece name -> (reference midpoints, which connectors) for the shared pieces in ``folder``."""
+    path = folder / "connectors.json"
+    if not path.is_file():
+        return {}
+    data = json.loads(path.read_text(encoding="utf-8"))["pieces"]
+    out = {}
+    for name, entry in sorted(data.items()):
+        designer = entry.get("designer_connectors", [])
+        kind = "designer" if designer else "tool"
+        chosen = designer or entry.get("tool_connectors", [])
+        out[name] = (np.array([c["position"] for c in chosen], dtype=np.float64).reshape(-1, 3), kind)
+    return out
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--config", default=str(ROOT / "configs" / "map_piece.yaml"))
+    parser.add_argument("--pieces", default=str(SHARED_PIECES), help="folder of the shared pieces and connectors.json")
+    args = parser.parse_args(argv)
+    registry = Registry.from_entry_points()
+    plan = pipeline.plan(load_config(Path(args.config)), registry)
+
+    def run(mesh, name):
+        return pipeline.run(plan, registry, mesh, name, mesh_sha256(mesh))
+
+    rows = []
+    for name, factory in pieces.PIECES.items():
+        level = factory()
+        reference = np.array([o.position for o in level.openings], dtype=np.float64)
+        rows.append((measure(run, name, level.mesh, reference), "known"))
+    folder = Path(args.pieces)
+    for name, (reference, kind) in shared_references(folder).items():
+        mesh, _ = load_mesh(folder / f"{name}.obj")
+        rows.append((measure(run, name, mesh, reference), kind))
+
+    print(f"{'piece':20s} {'ref':8s} {'found':>5s} {'refs':>4s} {'precision':>10s} {'recall':>8s} "
+          f"{'trees':>5s} {'gap new/all m':>13s}  scores")
+    for row, kind in rows:
+        precision = row["correct"] / row["openings"] if row["openings"] else float("nan")
+        recall = row["recalled"] / row["reference"] if row["reference"] else float("nan")
+        scores = " ".join("-" if v is None else f"{v:.2f}" for v in row["scores"])
+        print(f"{row['piece']:20s} {kind:8s} {row['openings']:5d} {row['reference']:4d} "
+              f"{row['correct']:3d} {precision:6.0%} {row['recalled']:2d} {recall:5.0%} "
+              f"{row['trees']:5d} {row['gap'][0]:6.2f}/{row['gap'][1]:5.2f}  {scores}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

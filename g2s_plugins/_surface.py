@@ -1,0 +1,159 @@
+"""The walkable surface as the built-in plugins share it: on-navmesh points and Algorithm 5's collapse rule.
+
+* :func:`on_navmesh`: the one rule deciding whether a point stands on the
+  navigation mesh (terminal selectors use it to set a node's ``on_navmesh``).
+* :func:`collapse_rule`: the paper's Algorithm 5 (Sec. 3.1.5) as both line-of-
+  sight predicates (``surface_los`` over the navmesh, ``mesh_los`` over the
+  level mesh) apply it; they differ only in the line-of-sight test they pass.
+* :func:`normals_angle_deg`, :func:`chain_bend_deg`: the normal test.
+* :func:`surface_gap`: how far a straight segment strays above or below the
+  walkable surface, the check both predicates add to Algorithm 5;
+  :func:`edge_surface_gaps` measures it for every edge of a structure.
+
+Conventions: metres, degrees, Y up.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Sequence
+from typing import Any
+
+import networkx as nx
+import numpy as np
+
+Vec = Sequence[float]
+LineOfSight = Callable[[tuple[float, ...], tuple[float, ...]], bool]
+
+MAX_SURFACE_GAP = 0.4
+"""Metres a collapsed edge may pass above or below the walkable surface (default of both LoS predicates).
+
+Measured on the generated pieces (docs/entry_exit.md): a straight edge up the
+0.25 m risers of ``stair_deck`` strays at most half a riser plus Recast's height
+quantisation from the surface; an edge cutting under a ramp or over a drop
+strays by metres. 0.4 m keeps the first and stays under the 0.5 m the
+structures must never exceed.
+"""
+
+
+def on_navmesh(navmesh: Any, point: Vec, agent: Any) -> bool:
+    """Whether ``point`` stands on ``navmesh``: a polygon within one cell horizontally and the climb vertically.
+
+    One cell (the navmesh's ``cell_size``, else half the agent radius) is the
+    resolution of the navmesh: a point on its boundary is on it, a point on the
+    floor's real edge (about one agent radius outside, where Recast eroded it)
+    is not. ``False`` when ``navmesh`` is ``None``.
+    """
+    if navmesh is None:
+        return False
+    settings = getattr(navmesh, "settings", {}) or {}
+    horizontal = float(settings.get("cell_size", float(agent.radius) / 2.0))
+    vertical = max(float(agent.max_climb), 1e-3)
+    p = np.asarray(point, dtype=np.float64)
+    index, nearest = navmesh.nearest_poly(p, extents=(horizontal, vertical, horizontal))
+    if int(index) < 0:
+        return False
+    offset = np.asarray(nearest, dtype=np.float64) - p
+    return bool(math.hypot(offset[0], offset[2]) <= horizontal + 1e-9 and abs(offset[1]) <= vertical + 1e-9)
+
+
+def normals_angle_deg(a: Vec, b: Vec) -> float:
+    """Angle between two normals in degrees; ``inf`` when either has zero length.
+
+    Plain floats rather than numpy: it runs once per predicate call, on 3-vectors.
+    """
+    lengths = math.hypot(*a) * math.hypot(*b)
+    if not lengths > 0:
+        return math.inf
+    cosine = (a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) / lengths
+    return math.degrees(math.acos(min(1.0, max(-1.0, cosine))))
+
+
+def chain_bend_deg(tree: nx.DiGraph, a: int, b: int, c: int) -> float:
+    """The largest angle between the normals of the chain A -> B -> C (the pairs AB, BC and AC)."""
+    na, nb, nc = (tree.nodes[n]["normal"] for n in (a, b, c))
+    return max(normals_angle_deg(na, nb), normals_angle_deg(nb, nc), normals_angle_deg(na, nc))
+
+
+def segment_points(start: Vec, end: Vec, step: float) -> np.ndarray:
+    """(k + 1, 3) points from ``start`` to ``end`` (both included), at most ``step`` apart horizontally."""
+    a = np.asarray(start, dtype=np.float64)
+    b = np.asarray(end, dtype=np.float64)
+    horizontal = math.hypot(b[0] - a[0], b[2] - a[2])
+    k = max(1, math.ceil(horizontal / step - 1e-9))
+    t = np.arange(k + 1) / k
+    return a[None, :] + t[:, None] * (b - a)[None, :]
+
+
+def navmesh_surface_y(navmesh: Any, points: np.ndarray, extents: tuple[float, float, float]) -> np.ndarray:
+    """(n,) height of the navmesh's detail surface nearest each point (Detour's nearest polygon; NaN: none within ``extents``)."""
+    heights = np.full(len(points), np.nan)
+    for i, p in enumerate(np.asarray(points, dtype=np.float64)):
+        index, nearest = navmesh.nearest_poly(p, extents=extents)
+        if index >= 0:
+            heights[i] = float(nearest[1])
+    return heights
+
+
+def surface_gap(line_y: np.ndarray, surface_y: np.ndarray) -> float:
+    """Largest vertical distance between a segment's points and the surface under/over them (``inf`` if missing).
+
+    ``surface_y`` is NaN where no walkable surface was found near a point.
+    """
+    line_y = np.asarray(line_y, dtype=np.float64)
+    surface_y = np.asarray(surface_y, dtype=np.float64)
+    if len(line_y) == 0:
+        return 0.0
+    if np.isnan(surface_y).any():
+        return math.inf
+    return float(np.max(np.abs(line_y - surface_y)))
+
+
+def edge_surface_gaps(structure: nx.Graph, navmesh: Any, agent: Any, step: float = 0.1) -> dict[tuple[int, int], float]:
+    """How far each edge between two on-navmesh nodes strays from the navmesh surface, m (``inf``: leaves it).
+
+    Edges to a node off the navmesh (an opening on the floor's real edge) are left out: their far
+    end lies where Recast eroded the surface away.
+    """
+    cell = float(navmesh.settings.get("cell_size", step))
+    extents = (cell, 2.0 * float(agent.height), cell)
+    gaps = {}
+    for a, b in structure.edges:
+        if not (structure.nodes[a].get("on_navmesh") and structure.nodes[b].get("on_navmesh")):
+            continue
+        points = segment_points(structure.nodes[a]["pos"], structure.nodes[b]["pos"], step)
+        gaps[(a, b)] = surface_gap(points[:, 1], navmesh_surface_y(navmesh, points, extents))
+    return gaps
+
+
+def collapse_rule(tolerance_deg: float, line_of_sight: LineOfSight) -> Callable[[nx.DiGraph, int, int, int], bool]:
+    """``P(tree, A, B, C)`` of the paper's Algorithm 5: True when B may be removed.
+
+    B is kept (False) when
+
+    1. C is a leaf not on the walkable surface (``on_navmesh`` false): a line
+       of sight to a point off the surface means nothing;
+    2. the normals of the chain bend by more than ``tolerance_deg``
+       (:func:`chain_bend_deg`: the paper compares A and B only, which lets a
+       collapse cut across a change of slope at C);
+    3. ``line_of_sight(A.pos, C.pos)`` is false: the straight segment is not
+       walkable on the surface (each predicate's test, which also rejects a
+       segment straying from the surface by more than its gap tolerance).
+
+    The paper's pseudocode writes test 3 backwards (it sets ``canCollapse =
+    false`` when there *is* line of sight, and its last line sets it true
+    unconditionally); its text states the intent implemented here: collapse
+    only when A and C see each other on the surface.
+    """
+
+    def predicate(tree: nx.DiGraph, a: int, b: int, c: int) -> bool:
+        node_c = tree.nodes[c]
+        if tree.out_degree(c) == 0 and not node_c.get("on_navmesh", False):
+            return False
+        if chain_bend_deg(tree, a, b, c) > tolerance_deg:
+            return False
+        start = tuple(float(v) for v in tree.nodes[a]["pos"])
+        end = tuple(float(v) for v in node_c["pos"])
+        return line_of_sight(start, end)
+
+    return predicate
