@@ -87,10 +87,35 @@ def shared_references(folder: Path) -> dict[str, tuple[np.ndarray, str]]:
     return out
 
 
+def prior_measurements(mesh, reference: np.ndarray, agent, navmesh_params: dict) -> list[tuple]:
+    """Every candidate opening with the priors off: (known?, width m, gap to the outer extent m, on the main floor?).
+
+    What docs/entry_exit.md quotes to justify each prior's default.
+    """
+    from g2s_plugins.recast import RecastParams, build_navmesh
+    from g2s_plugins.terminals import entry_exit
+
+    navmesh = build_navmesh(mesh.vertices, mesh.faces, agent, RecastParams(**navmesh_params))
+    loose = entry_exit.Params(min_width_radii=0.0, extent_heights=None, main_floor_only=False)
+    detection = entry_exit.detect_openings(mesh, navmesh, agent, loose)
+    main = entry_exit.main_floor(navmesh)
+    vertices = np.asarray(mesh.vertices, dtype=np.float64)
+    rows = []
+    for opening, polygons in zip(detection.openings, detection.polygons):
+        position = np.asarray(opening.position)
+        known = bool(len(reference)) and bool(
+            np.min(np.linalg.norm(reference - position, axis=1)) <= pieces.MATCH_DISTANCE
+        )
+        gap = entry_exit.extent_gap(vertices, position, np.asarray(opening.heading))
+        rows.append((known, opening.width, gap, bool(main[list(polygons)].any())))
+    return rows
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--config", default=str(ROOT / "configs" / "map_piece.yaml"))
     parser.add_argument("--pieces", default=str(SHARED_PIECES), help="folder of the shared pieces and connectors.json")
+    parser.add_argument("--priors", action="store_true", help="also list the generated pieces' candidates, priors off")
     args = parser.parse_args(argv)
     registry = Registry.from_entry_points()
     plan = pipeline.plan(load_config(Path(args.config)), registry)
@@ -117,6 +142,16 @@ def main(argv: list[str] | None = None) -> int:
         print(f"{row['piece']:20s} {kind:8s} {row['openings']:5d} {row['reference']:4d} "
               f"{row['correct']:3d} {precision:6.0%} {row['recalled']:2d} {recall:5.0%} "
               f"{row['trees']:5d} {row['gap'][0]:6.2f}/{row['gap'][1]:5.2f}  {scores}")
+    if args.priors:
+        config = load_config(Path(args.config))
+        print("\ncandidates with the priors off (generated pieces): piece, known, width m, extent gap m, main floor")
+        for name, factory in pieces.PIECES.items():
+            level = factory()
+            reference = np.array([o.position for o in level.openings], dtype=np.float64)
+            for known, width, gap, on_main in prior_measurements(
+                level.mesh, reference, config.agent, dict(config.graph.params or {})
+            ):
+                print(f"  {name:20s} {'known' if known else 'other':5s} {width:6.2f} {gap:6.2f} {on_main}")
     return 0
 
 
