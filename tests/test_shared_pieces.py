@@ -12,6 +12,8 @@ prints the same figures, docs/entry_exit.md records them.
 from __future__ import annotations
 
 import json
+import subprocess
+import sys
 from pathlib import Path
 
 import numpy as np
@@ -74,3 +76,17 @@ def test_collapsed_edges_stay_on_the_surface(runs, name) -> None:
     collapsed = {edge: gap for edge, gap in gaps.items() if not result.graph.has_edge(*edge)}
     assert collapsed, "the simplification collapsed nothing"
     assert max(collapsed.values()) <= MAX_SURFACE_GAP + 0.05  # the probes' spacing adds a little
+
+
+def test_the_cli_report_shows_the_openings_with_their_scores(tmp_path) -> None:
+    out = tmp_path / "ramp"
+    command = [sys.executable, "-m", "g2s_core.cli", "run", str(PRESETS_DIR / "map_piece.yaml"),
+               str(PIECES / "Ramp.obj"), "-o", str(out), "--format", "json,html", "-q"]
+    proc = subprocess.run(command, capture_output=True, text=True, cwd=ROOT)
+    assert proc.returncode == 0, proc.stderr
+    document = json.loads((out / "structure.json").read_text(encoding="utf-8"))
+    openings = document["terminals"]["openings"]
+    assert openings and all(0.0 < o["score"] <= 1.0 and o["reason"] for o in openings)
+    report = (out / "report.html").read_text(encoding="utf-8")
+    for o in openings:
+        assert f"score {o['score']:.2f}" in report
