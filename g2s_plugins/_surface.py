@@ -21,6 +21,9 @@ from typing import Any
 
 import networkx as nx
 import numpy as np
+from pydantic import Field
+
+from g2s_core.plugin import PluginParams
 
 Vec = Sequence[float]
 LineOfSight = Callable[[tuple[float, ...], tuple[float, ...]], bool]
@@ -28,12 +31,26 @@ LineOfSight = Callable[[tuple[float, ...], tuple[float, ...]], bool]
 MAX_SURFACE_GAP = 0.4
 """Metres a collapsed edge may pass above or below the walkable surface (default of both LoS predicates).
 
-Measured on the generated pieces (docs/entry_exit.md): a straight edge up the
-0.25 m risers of ``stair_deck`` strays at most half a riser plus Recast's height
-quantisation from the surface; an edge cutting under a ramp or over a drop
-strays by metres. 0.4 m keeps the first and stays under the 0.5 m the
+Measured with ``benchmarks/piece_quality.py`` (docs/entry_exit.md): the edges
+simplification makes on the generated pieces, stairs with 0.25 m risers
+included, stay within 0.05 m of the surface; the shortcut under the shared
+Ramp's ramp strayed 2.42 m. 0.4 m lies between and under the 0.5 m the
 structures must never exceed.
 """
+
+
+class CollapseParams(PluginParams):
+    """Algorithm 5's tolerances, the same for both line-of-sight predicates."""
+
+    normal_tolerance_deg: float = Field(
+        10.0, ge=0, le=180, description="largest angle between the normals of A, B and C that still lets B go, degrees"
+    )
+    max_surface_gap: float = Field(
+        MAX_SURFACE_GAP, gt=0, description="largest height between the segment A -> C and the walkable surface, m"
+    )
+    probe_step: float | None = Field(
+        None, gt=0, le=100, description="surface probes along A -> C at most this far apart, m; default agent radius / 2"
+    )
 
 
 def on_navmesh(navmesh: Any, point: Vec, agent: Any) -> bool:

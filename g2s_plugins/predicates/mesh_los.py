@@ -39,25 +39,16 @@ import numpy as np
 from pydantic import Field
 
 from g2s_core.model import RunContext
-from g2s_core.plugin import PluginParams, hookimpl
+from g2s_core.plugin import hookimpl
 from g2s_plugins._raycasting import GROUND_MARGIN, AgentShape, RayCaster, walk_segments
-from g2s_plugins._surface import MAX_SURFACE_GAP, collapse_rule
+from g2s_plugins._surface import CollapseParams, collapse_rule
 
 NAME = "mesh_los"
 
 
-class Params(PluginParams):
-    """Normal tolerance and the resolution of the walk test."""
+class Params(CollapseParams):
+    """Algorithm 5's tolerances and the resolution of the walk test (``max_surface_gap``: to the ground under A -> C)."""
 
-    normal_tolerance_deg: float = Field(
-        10.0, ge=0, le=180, description="largest angle between the normals of A, B and C that still lets B go, degrees"
-    )
-    max_surface_gap: float = Field(
-        MAX_SURFACE_GAP, gt=0, description="largest height between the segment A -> C and the ground under it, m"
-    )
-    probe_step: float | None = Field(
-        None, gt=0, le=100, description="ground probes along A -> C at most this far apart, m; default agent radius / 2"
-    )
     margin: float = Field(
         GROUND_MARGIN, ge=0, le=10, description="ground may lie this much further below the line than the max climb, m"
     )

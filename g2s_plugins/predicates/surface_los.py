@@ -30,28 +30,17 @@ from __future__ import annotations
 from collections.abc import Callable
 
 import networkx as nx
-from pydantic import Field
 
 from g2s_core.errors import PluginError
 from g2s_core.model import RunContext
-from g2s_core.plugin import PluginParams, hookimpl
-from g2s_plugins._surface import MAX_SURFACE_GAP, collapse_rule, navmesh_surface_y, segment_points, surface_gap
+from g2s_core.plugin import hookimpl
+from g2s_plugins._surface import CollapseParams, collapse_rule, navmesh_surface_y, segment_points, surface_gap
 
 NAME = "surface_los"
 
 
-class Params(PluginParams):
-    """How much the surface may bend at a removed node, and how far a new edge may stray from it."""
-
-    normal_tolerance_deg: float = Field(
-        10.0, ge=0, le=180, description="largest angle between the normals of A, B and C that still lets B go, degrees"
-    )
-    max_surface_gap: float = Field(
-        MAX_SURFACE_GAP, gt=0, description="largest height between the segment A -> C and the navmesh surface, m"
-    )
-    probe_step: float | None = Field(
-        None, gt=0, le=100, description="surface probes along A -> C at most this far apart, m; default agent radius / 2"
-    )
+class Params(CollapseParams):
+    """How much the surface may bend at a removed node, and how far a new edge may stray from the navmesh surface."""
 
 
 @hookimpl
