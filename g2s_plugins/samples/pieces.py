@@ -139,8 +139,10 @@ def wall_tops(
     The high wall's top is walkable for Recast but unreachable from the
     floor (no opening on it). The bench is reachable (lower than the climb);
     a full-height wall stands behind it, and it stops ``thick`` short of the
-    corridor's ends, so it holds no opening either. Openings: the corridor's
-    west and east ends, ``width`` wide.
+    corridor's ends, so it holds no opening either; the floor's edge beside
+    it, between the bench and each end, is open but lies ``thick + 0.2`` m
+    inside the piece's extent. Openings: the corridor's west and east ends,
+    ``width`` wide.
     """
     _positive(length=length, width=width, high=high, low=low, thick=thick)
     if length <= 2 * thick + 2:
