@@ -111,11 +111,28 @@ def prior_measurements(mesh, reference: np.ndarray, agent, navmesh_params: dict)
     return rows
 
 
+VARIATIONS = [
+    ("doorway_room", {"wall": 0.4}), ("doorway_room", {"wall": 0.8}), ("doorway_room", {"doors": (1.2,) * 5}),
+    ("doorway_room", {"doors": (2.0,) * 5, "wall": 0.3}),
+    ("doorway_room", {"width": 8.0, "depth": 7.0, "doors": (1.4, 1.6, 1.3)}),
+    ("curb_platform", {"curb": 0.25}), ("curb_platform", {"curb": 0.35, "gap": 1.2}),
+    ("curb_platform", {"length": 20.0, "depth": 5.0}),
+    ("wall_tops", {"high": 2.5}), ("wall_tops", {"thick": 3.0, "length": 16.0}),
+    ("stair_deck", {"riser": 0.245}), ("stair_deck", {"riser": 0.2, "steps": 15, "tread": 0.28, "floor_length": 9.0}),
+    ("stair_deck", {"stair_width": 1.5}),
+    ("cross_platform", {"hub": 4.0, "arm_length": 3.0, "arm_width": 2.0}),
+    ("cross_platform", {"hub": 10.0, "arm_length": 8.0, "arm_width": 6.0}),
+    ("chamfered_platform", {"chamfer": 0.3}), ("chamfered_platform", {"length": 6.0, "width": 6.0, "chamfer": 0.4}),
+]
+"""Generated pieces with other parameters than the defaults: the rules must hold beyond the cases they were measured on."""
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--config", default=str(ROOT / "configs" / "map_piece.yaml"))
     parser.add_argument("--pieces", default=str(SHARED_PIECES), help="folder of the shared pieces and connectors.json")
     parser.add_argument("--priors", action="store_true", help="also list the generated pieces' candidates, priors off")
+    parser.add_argument("--variations", action="store_true", help="also run the generated pieces with other parameters")
     args = parser.parse_args(argv)
     registry = Registry.from_entry_points()
     plan = pipeline.plan(load_config(Path(args.config)), registry)
@@ -124,22 +141,24 @@ def main(argv: list[str] | None = None) -> int:
         return pipeline.run(plan, registry, mesh, name, mesh_sha256(mesh))
 
     rows = []
-    for name, factory in pieces.PIECES.items():
-        level = factory()
+    generated = [(name, {}) for name in pieces.PIECES] + (VARIATIONS if args.variations else [])
+    for name, kwargs in generated:
+        level = pieces.PIECES[name](**kwargs)
         reference = np.array([o.position for o in level.openings], dtype=np.float64)
-        rows.append((measure(run, name, level.mesh, reference), "known"))
+        label = name + "".join(f" {k}={v}" for k, v in kwargs.items())
+        rows.append((measure(run, label, level.mesh, reference), "known"))
     folder = Path(args.pieces)
     for name, (reference, kind) in shared_references(folder).items():
         mesh, _ = load_mesh(folder / f"{name}.obj")
         rows.append((measure(run, name, mesh, reference), kind))
 
-    print(f"{'piece':20s} {'ref':8s} {'found':>5s} {'refs':>4s} {'precision':>10s} {'recall':>8s} "
+    print(f"{'piece':58s} {'ref':8s} {'found':>5s} {'refs':>4s} {'precision':>10s} {'recall':>8s} "
           f"{'trees':>5s} {'gap new/all m':>13s}  scores")
     for row, kind in rows:
         precision = row["correct"] / row["openings"] if row["openings"] else float("nan")
         recall = row["recalled"] / row["reference"] if row["reference"] else float("nan")
         scores = " ".join("-" if v is None else f"{v:.2f}" for v in row["scores"])
-        print(f"{row['piece']:20s} {kind:8s} {row['openings']:5d} {row['reference']:4d} "
+        print(f"{row['piece']:58s} {kind:8s} {row['openings']:5d} {row['reference']:4d} "
               f"{row['correct']:3d} {precision:6.0%} {row['recalled']:2d} {recall:5.0%} "
               f"{row['trees']:5d} {row['gap'][0]:6.2f}/{row['gap'][1]:5.2f}  {scores}")
     if args.priors:
