@@ -476,7 +476,7 @@ def extent_gap(vertices: np.ndarray, point: np.ndarray, heading: np.ndarray) -> 
 
 
 def detect_openings(mesh, navmesh, agent, params: Params | None = None) -> Detection:
-    """Steps 1-6 of the method: the openings of ``mesh`` for ``agent`` on ``navmesh``, best first when ``best``.
+    """Steps 1-6 of the method: the openings of ``mesh`` for ``agent`` on ``navmesh``, in detection order.
 
     Args:
         mesh: the source ``trimesh.Trimesh`` (metres, Y up).
