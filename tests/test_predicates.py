@@ -25,6 +25,8 @@ class SquareWithWall:
     where it is stopped (``inf`` when clear)."""
 
     settings = {"cell_size": 0.25}
+    detail_vertices = np.array([[0.0, 0.0, 0.0], [10.0, 0.0, 0.0], [10.0, 0.0, 10.0], [0.0, 0.0, 10.0]])
+    detail_triangles = np.array([[0, 2, 1], [0, 3, 2]])
 
     def __init__(self):
         self.calls = []

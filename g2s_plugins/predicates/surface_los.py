@@ -9,9 +9,8 @@ sight from A to C:
 * Detour's raycast from A to C over ``context.navmesh`` reaches C; and
 * the straight segment A -> C stays within ``max_surface_gap`` of the
   navmesh's detail surface: at points at most ``probe_step`` apart along it,
-  the nearest navmesh point (Detour's nearest polygon, searched one cell
-  across and ``max(2 * gap, agent height)`` up and down) lies within the gap
-  vertically. Detour's raycast is 2D: alone, it lets an edge run metres
+  the detail surface lies within the gap above or below
+  (:class:`g2s_plugins._surface.NavmeshSurface`). Detour's raycast is 2D: alone, it lets an edge run metres
   under a ramp whose foot it crosses.
 
 Default tolerance, 10 degrees: Recast quantises heights to the cell height,
@@ -21,8 +20,8 @@ results); walkable ramps in levels are usually 15 to 45 degrees steep (the
 default agent climbs up to 45), so 10 degrees still keeps a node where one
 begins.
 
-Cost per call: one navmesh raycast, O(polygons crossed), and one nearest-
-polygon query per probe point (|AC| / probe_step + 1).
+Cost per call: one navmesh raycast, O(polygons crossed), and one numpy pass
+over the |AC| / probe_step + 1 probe points and the detail triangles under them.
 """
 
 from __future__ import annotations
@@ -30,11 +29,12 @@ from __future__ import annotations
 from collections.abc import Callable
 
 import networkx as nx
+import numpy as np
 
 from g2s_core.errors import PluginError
 from g2s_core.model import RunContext
 from g2s_core.plugin import hookimpl
-from g2s_plugins._surface import CollapseParams, collapse_rule, navmesh_surface_y, segment_points, surface_gap
+from g2s_plugins._surface import CollapseParams, NavmeshSurface, collapse_rule, segment_points
 
 NAME = "surface_los"
 
@@ -57,14 +57,15 @@ def g2s_simplify_predicate(params: Params, context: RunContext) -> Callable[[nx.
     agent = context.agent
     step = params.probe_step if params.probe_step is not None else 0.5 * float(agent.radius)
     gap = float(params.max_surface_gap)
-    cell = float(navmesh.settings.get("cell_size", step))
-    extents = (cell, max(2.0 * gap, float(agent.height)), cell)
+    surface: NavmeshSurface | None = None
 
     def line_of_sight(start: tuple[float, ...], end: tuple[float, ...]) -> bool:
+        nonlocal surface
         clear, _t = navmesh.raycast(start, end)
         if not clear:
             return False
-        points = segment_points(start, end, step)
-        return surface_gap(points[:, 1], navmesh_surface_y(navmesh, points, extents)) <= gap
+        if surface is None:  # built on first use: runs that never reach here pay nothing
+            surface = NavmeshSurface(navmesh)
+        return bool(np.all(surface.gaps(segment_points(start, end, step), gap) <= gap))
 
     return collapse_rule(params.normal_tolerance_deg, line_of_sight)
