@@ -34,7 +34,7 @@ MAX_SURFACE_GAP = 0.4
 
 Measured with ``benchmarks/piece_quality.py`` (docs/entry_exit.md): the edges
 simplification makes on the generated pieces, stairs with 0.25 m risers
-included, stay within 0.05 m of the surface; the shortcut under the shared
+included, stay within 0.01 m of the surface; the shortcut under the shared
 Ramp's ramp strayed 2.42 m. 0.4 m lies between and under the 0.5 m the
 structures must never exceed.
 """
