@@ -24,6 +24,8 @@ import networkx as nx
 import numpy as np
 from pydantic import Field
 
+from g2s_core.config import AgentConfig
+from g2s_core.model import NavMesh
 from g2s_core.plugin import PluginParams
 
 Vec = Sequence[float]
@@ -54,18 +56,16 @@ class CollapseParams(PluginParams):
     )
 
 
-def on_navmesh(navmesh: Any, point: Vec, agent: Any) -> bool:
+def on_navmesh(navmesh: NavMesh | None, point: Vec, agent: AgentConfig) -> bool:
     """Whether ``point`` stands on ``navmesh``: a polygon within one cell horizontally and the climb vertically.
 
-    One cell (the navmesh's ``cell_size``, else half the agent radius) is the
-    resolution of the navmesh: a point on its boundary is on it, a point on the
+    One cell (the navmesh's ``cell_size``) is the resolution of the navmesh: a point on its boundary is on it, a point on the
     floor's real edge (about one agent radius outside, where Recast eroded it)
     is not. ``False`` when ``navmesh`` is ``None``.
     """
     if navmesh is None:
         return False
-    settings = getattr(navmesh, "settings", {}) or {}
-    horizontal = float(settings.get("cell_size", float(agent.radius) / 2.0))
+    horizontal = float(navmesh.settings["cell_size"])
     vertical = max(float(agent.max_climb), 1e-3)
     p = np.asarray(point, dtype=np.float64)
     index, nearest = navmesh.nearest_poly(p, extents=(horizontal, vertical, horizontal))
@@ -116,9 +116,9 @@ class NavmeshSurface:
     Cost: O(T * covered buckets) to build; O(points * triangles per bucket) per query.
     """
 
-    def __init__(self, navmesh: Any, bucket: float = 1.0) -> None:
+    def __init__(self, navmesh: NavMesh, bucket: float = 1.0) -> None:
         self.navmesh = navmesh
-        self.cell = float((getattr(navmesh, "settings", {}) or {}).get("cell_size", 0.1))
+        self.cell = float(navmesh.settings["cell_size"])
         self.bucket = float(bucket)
         vertices = np.asarray(navmesh.detail_vertices, dtype=np.float64)
         tri = vertices[np.asarray(navmesh.detail_triangles, dtype=np.int64)]  # (T, 3, 3)
@@ -174,7 +174,7 @@ class NavmeshSurface:
         return np.where(gap <= reach, gap, math.inf)
 
 
-def edge_surface_gaps(structure: nx.Graph, navmesh: Any, agent: Any, step: float = 0.1) -> dict[tuple[int, int], float]:
+def edge_surface_gaps(structure: nx.Graph, navmesh: NavMesh, agent: AgentConfig, step: float = 0.1) -> dict[tuple[int, int], float]:
     """How far each edge between two on-navmesh nodes strays from the navmesh surface, m (``inf``: leaves it).
 
     Edges to a node off the navmesh (an opening on the floor's real edge) are left out: their far

@@ -81,11 +81,13 @@ from dataclasses import dataclass
 
 import networkx as nx
 import numpy as np
+import trimesh
 from pydantic import Field
 from scipy.spatial import cKDTree
 
+from g2s_core.config import AgentConfig
 from g2s_core.errors import PluginError
-from g2s_core.model import Opening, RunContext, Terminals, vec3
+from g2s_core.model import NavMesh, Opening, RunContext, Terminals, vec3
 from g2s_core.plugin import PluginParams, hookimpl
 from g2s_plugins._raycasting import UP, RayCaster
 from g2s_plugins._surface import on_navmesh
@@ -183,7 +185,7 @@ class _Settings:
     delta: float
 
 
-def _settings(params: Params, agent) -> _Settings:
+def _settings(params: Params, agent: AgentConfig) -> _Settings:
     r = float(agent.radius)
     climb = float(agent.max_climb)
     step = float(params.sample_step) if params.sample_step is not None else r / 2.0
@@ -450,7 +452,7 @@ class Detection:
     normals: tuple[tuple[float, float, float], ...]
 
 
-def main_floor(navmesh) -> np.ndarray:
+def main_floor(navmesh: NavMesh) -> np.ndarray:
     """(P,) bool: the polygons of the navmesh component with the largest area."""
     label = polygon_components(navmesh.neighbours)
     if len(label) == 0:
@@ -475,7 +477,9 @@ def extent_gap(vertices: np.ndarray, point: np.ndarray, heading: np.ndarray) -> 
     return float(np.max(vertices @ axis) - point @ axis)
 
 
-def detect_openings(mesh, navmesh, agent, params: Params | None = None) -> Detection:
+def detect_openings(
+    mesh: trimesh.Trimesh, navmesh: NavMesh, agent: AgentConfig, params: Params | None = None
+) -> Detection:
     """Steps 1-6 of the method: the openings of ``mesh`` for ``agent`` on ``navmesh``, in detection order.
 
     Args:
@@ -545,7 +549,7 @@ def detect_openings(mesh, navmesh, agent, params: Params | None = None) -> Detec
 # --------------------------------------------------------------------------
 
 
-def add_terminals(graph: nx.Graph, detection: Detection, navmesh, agent) -> Terminals:
+def add_terminals(graph: nx.Graph, detection: Detection, navmesh: NavMesh, agent: AgentConfig) -> Terminals:
     """Add one node per opening to ``graph`` (see the module doc) and return the terminals."""
     if not detection.openings:
         return Terminals(nodes=(), openings=())
