@@ -107,6 +107,9 @@ class Opening:
         heading: unit vector pointing out of the piece.
         width: length of the opening segment, metres.
         p0, p1: the segment's end points, metres.
+        score: the detector's confidence in [0, 1]; ``None`` when not detected
+            (ground truth, user input).
+        reason: why the detector kept it (the measurements behind the score).
     """
 
     position: Vec3
@@ -114,6 +117,8 @@ class Opening:
     width: float
     p0: Vec3
     p1: Vec3
+    score: float | None = None
+    reason: str | None = None
 
 
 @dataclass(frozen=True)

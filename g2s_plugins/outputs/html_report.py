@@ -384,10 +384,23 @@ def _terminal_layer(result: RunResult, terminals: list[int]) -> list[Any]:
     openings = result.terminals.openings if result.terminals is not None else ()
     if openings:
         xs, ys, zs = _segments([(o.p0, o.p1) for o in openings])
+        texts: list[str | None] = []
+        for index, o in enumerate(openings):
+            text = _opening_text(index, o)
+            texts += [text, text, None]
         traces.append(go.Scatter3d(x=xs, y=ys, z=zs, mode="lines", name=LAYER_TERMINALS, legendgroup=LAYER_TERMINALS,
                                    showlegend=not traces, line=dict(color=colour, width=8),
-                                   hoverinfo="skip", visible=True))
+                                   text=texts, hovertemplate="%{text}<extra></extra>", visible=True))
     return traces
+
+
+def _opening_text(index: int, opening: Any) -> str:
+    """Hover text of an opening: its number, width, score and the reason it was kept."""
+    score = "not scored" if opening.score is None else f"score {opening.score:.2f}"
+    lines = [f"opening {index}: {opening.width:.2f} m wide, {score}"]
+    if opening.reason:
+        lines.append(html.escape(opening.reason))
+    return "<br>".join(lines)
 
 
 def _tree_layer(tree: nx.DiGraph, name: str, visible: bool, result: RunResult) -> list[Any]:

@@ -181,6 +181,8 @@ def _opening(opening: Opening) -> dict[str, Any]:
         "width": number(opening.width),
         "p0": vector(opening.p0),
         "p1": vector(opening.p1),
+        "score": None if opening.score is None else number(opening.score),
+        "reason": opening.reason,
     }
 
 
@@ -351,7 +353,10 @@ def _loaded(document: dict[str, Any], path: Path) -> LoadedResult:
     terminals = None
     if document["terminals"] is not None:
         openings = tuple(
-            Opening(vec3(o["position"]), vec3(o["heading"]), float(o["width"]), vec3(o["p0"]), vec3(o["p1"]))
+            Opening(
+                vec3(o["position"]), vec3(o["heading"]), float(o["width"]), vec3(o["p0"]), vec3(o["p1"]),
+                None if o.get("score") is None else float(o["score"]), o.get("reason"),
+            )
             for o in document["terminals"]["openings"]
         )
         terminals = Terminals(tuple(int(t) for t in document["terminals"]["node_ids"]), openings)
