@@ -97,6 +97,10 @@ class NavMesh(Protocol):
     def nearest_poly(self, p: Any, extents: Any = None) -> tuple[int, np.ndarray]:
         """(polygon index or -1, (3,) nearest surface point) within the half ``extents`` of ``p``."""
 
+    def segment_surface_gaps(self, A: Any, B: Any, step: float, reach: float) -> np.ndarray:
+        """(S,) the largest vertical distance from the surface along each segment ``A[i] -> B[i]``,
+        probed at most ``step`` apart, m; ``inf`` where a probe has no surface within ``reach``."""
+
 
 @dataclass(frozen=True)
 class Opening:

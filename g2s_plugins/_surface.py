@@ -6,10 +6,11 @@
   sight predicates (``surface_los`` over the navmesh, ``mesh_los`` over the
   level mesh) apply it; they differ only in the line-of-sight test they pass.
 * :func:`normals_angle_deg`, :func:`chain_bend_deg`: the normal test.
-* :class:`NavmeshSurface`: how far points lie above or below the navmesh's
-  detail surface, the check ``surface_los`` adds to Algorithm 5 (``mesh_los``
-  makes it against the level mesh); :func:`edge_surface_gaps` measures it for
-  every edge of a structure.
+* :func:`edge_surface_gaps`: how far every edge of a structure strays above
+  or below the navmesh's detail surface
+  (:meth:`g2s_plugins.recast.NavMesh.segment_surface_gaps`, the check
+  ``surface_los`` adds to Algorithm 5; ``mesh_los`` makes it against the
+  level mesh).
 
 Conventions: metres, degrees, Y up.
 """
@@ -93,102 +94,20 @@ def chain_bend_deg(tree: nx.DiGraph, a: int, b: int, c: int) -> float:
     return max(normals_angle_deg(na, nb), normals_angle_deg(nb, nc), normals_angle_deg(na, nc))
 
 
-def segment_points(start: Vec, end: Vec, step: float) -> np.ndarray:
-    """(k + 1, 3) points from ``start`` to ``end`` (both included), at most ``step`` apart horizontally."""
-    a = np.asarray(start, dtype=np.float64)
-    b = np.asarray(end, dtype=np.float64)
-    horizontal = math.hypot(b[0] - a[0], b[2] - a[2])
-    k = max(1, math.ceil(horizontal / step - 1e-9))
-    t = np.arange(k + 1) / k
-    return a[None, :] + t[:, None] * (b - a)[None, :]
-
-
-class NavmeshSurface:
-    """The navmesh's detail surface (Recast's height-accurate triangles), for vertical distances to it.
-
-    The detail triangles are bucketed once on a square grid in the XZ plane
-    (``bucket`` metres); a query tests each point against the triangles of its
-    bucket (barycentric coordinates in XZ, all points of a query in one numpy
-    pass) and takes the surface nearest in height. A point over no triangle
-    (a crack between detail triangles) falls back to Detour's nearest polygon
-    within one cell horizontally.
-
-    Cost: O(T * covered buckets) to build; O(points * triangles per bucket) per query.
-    """
-
-    def __init__(self, navmesh: NavMesh, bucket: float = 1.0) -> None:
-        self.navmesh = navmesh
-        self.cell = float(navmesh.settings["cell_size"])
-        self.bucket = float(bucket)
-        vertices = np.asarray(navmesh.detail_vertices, dtype=np.float64)
-        tri = vertices[np.asarray(navmesh.detail_triangles, dtype=np.int64)]  # (T, 3, 3)
-        x, y, z = tri[:, :, 0], tri[:, :, 1], tri[:, :, 2]
-        # Per triangle: three edge functions e(x, z) = u x + v z + w, >= 0 inside (any winding),
-        # and the plane y = alpha x + beta z + gamma; vertical triangles are left out.
-        nxt = [1, 2, 0]
-        u, v = z - z[:, nxt], x[:, nxt] - x
-        w = -(u * x + v * z)
-        area = (x[:, 1] - x[:, 0]) * (z[:, 2] - z[:, 0]) - (x[:, 2] - x[:, 0]) * (z[:, 1] - z[:, 0])
-        flat = np.abs(area) > 1e-12
-        sign = np.where(area < 0, -1.0, 1.0)[:, None]
-        self.edges = (np.stack([u, v, w], axis=2) * sign[:, :, None])[flat]  # (T', 3, 3)
-        normal = np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])[flat]
-        point = tri[flat, 0]
-        alpha, beta = -normal[:, 0] / normal[:, 1], -normal[:, 2] / normal[:, 1]
-        self.plane = np.stack([alpha, beta, point[:, 1] - alpha * point[:, 0] - beta * point[:, 2]], axis=1)
-        xz = tri[flat][:, :, [0, 2]]
-        self.origin = xz.reshape(-1, 2).min(axis=0) if len(xz) else np.zeros(2)
-        lo = np.floor((xz.min(axis=1) - self.origin) / self.bucket).astype(np.int64)
-        span = np.floor((xz.max(axis=1) - self.origin) / self.bucket).astype(np.int64) - lo + 1
-        self.columns = int((lo[:, 1] + span[:, 1]).max()) if len(lo) else 1
-        # Every (triangle, bucket) its XZ box covers, enumerated without a loop.
-        count = span[:, 0] * span[:, 1]
-        owner = np.repeat(np.arange(len(lo)), count)
-        k = np.arange(len(owner)) - np.repeat(np.cumsum(count) - count, count)
-        gx = lo[owner, 0] + k // span[owner, 1]
-        gz = lo[owner, 1] + k % span[owner, 1]
-        key = gx * self.columns + gz
-        order = np.argsort(key, kind="stable")
-        self.keys, self.owners = key[order], owner[order]
-
-    def gaps(self, points: np.ndarray, reach: float) -> np.ndarray:
-        """(n,) vertical distance from each point to the surface above or below it, m (``inf``: none within ``reach``)."""
-        points = np.asarray(points, dtype=np.float64).reshape(-1, 3)
-        cell = np.floor((points[:, [0, 2]] - self.origin) / self.bucket).astype(np.int64)
-        key = cell[:, 0] * self.columns + cell[:, 1]
-        start = np.searchsorted(self.keys, key, side="left")
-        counts = np.where((cell >= 0).all(axis=1), np.searchsorted(self.keys, key, side="right") - start, 0)
-        point = np.repeat(np.arange(len(points)), counts)
-        first = np.repeat(start - (np.cumsum(counts) - counts), counts) + np.arange(len(point))
-        tri = self.owners[first]
-        p = points[point]
-        xz1 = np.stack([p[:, 0], p[:, 2], np.ones(len(p))], axis=1)
-        inside = (np.einsum("tkj,tj->tk", self.edges[tri], xz1) >= -1e-9).all(axis=1)
-        height = np.einsum("tj,tj->t", self.plane[tri], xz1)
-        gap = np.full(len(points), math.inf)
-        np.minimum.at(gap, point[inside], np.abs(height[inside] - p[inside, 1]))
-        for i in np.flatnonzero(~np.isfinite(gap)):  # a crack between detail triangles
-            index, nearest = self.navmesh.nearest_poly(points[i], extents=(self.cell, reach, self.cell))
-            if index >= 0:
-                gap[i] = abs(float(nearest[1]) - points[i, 1])
-        return np.where(gap <= reach, gap, math.inf)
-
-
 def edge_surface_gaps(structure: nx.Graph, navmesh: NavMesh, agent: AgentConfig, step: float = 0.1) -> dict[tuple[int, int], float]:
     """How far each edge between two on-navmesh nodes strays from the navmesh surface, m (``inf``: leaves it).
 
     Edges to a node off the navmesh (an opening on the floor's real edge) are left out: their far
     end lies where Recast eroded the surface away.
     """
-    surface = NavmeshSurface(navmesh)
-    reach = 2.0 * float(agent.height)
-    gaps = {}
-    for a, b in structure.edges:
-        if not (structure.nodes[a].get("on_navmesh") and structure.nodes[b].get("on_navmesh")):
-            continue
-        points = segment_points(structure.nodes[a]["pos"], structure.nodes[b]["pos"], step)
-        gaps[(a, b)] = float(np.max(surface.gaps(points, reach)))
-    return gaps
+    edges = [
+        (a, b) for a, b in structure.edges
+        if structure.nodes[a].get("on_navmesh") and structure.nodes[b].get("on_navmesh")
+    ]
+    starts = np.array([structure.nodes[a]["pos"] for a, _ in edges], dtype=np.float64).reshape(-1, 3)
+    ends = np.array([structure.nodes[b]["pos"] for _, b in edges], dtype=np.float64).reshape(-1, 3)
+    gaps = navmesh.segment_surface_gaps(starts, ends, step, 2.0 * float(agent.height))
+    return dict(zip(edges, gaps.tolist()))
 
 
 def collapse_rule(tolerance_deg: float, line_of_sight: LineOfSight) -> Callable[[nx.DiGraph, int, int, int], bool]:

@@ -431,6 +431,32 @@ public:
         }
     }
 
+    // Vertical distance from p to the walkable surface, FLT_MAX when there is none within `reach`:
+    // to the detail surface straight above or below p on the polygons p lies over (the nearest
+    // in height); over none of them (p beside a polygon's edge), to the nearest boundary point
+    // of the polygons within `horizontal` of p.
+    float surface_gap(const float* p, float horizontal, float reach) const {
+        const float ext[3] = {horizontal, reach, horizontal};
+        dtPolyRef refs[128];
+        int count = 0;
+        if (dtStatusFailed(query->queryPolygons(p, ext, &filter, refs, &count, 128))) return FLT_MAX;
+        float over_gap = FLT_MAX, beside_gap = FLT_MAX;
+        for (int i = 0; i < count; ++i) {
+            float closest[3];
+            bool over = false;
+            if (dtStatusFailed(query->closestPointOnPoly(refs[i], p, closest, &over))) continue;
+            const float gap = std::fabs(closest[1] - p[1]);
+            if (over) {
+                over_gap = std::min(over_gap, gap);
+            } else {
+                const float dx = closest[0] - p[0], dz = closest[2] - p[2];
+                if (dx * dx + dz * dz <= horizontal * horizontal) beside_gap = std::min(beside_gap, gap);
+            }
+        }
+        const float gap = over_gap != FLT_MAX ? over_gap : beside_gap;
+        return gap <= reach ? gap : FLT_MAX;
+    }
+
 private:
     std::vector<std::unique_ptr<TileMesh>> build_solo(const Input& in, const Settings& s);
     std::vector<std::unique_ptr<TileMesh>> build_tiled(const Input& in, const Settings& s, int ts);
@@ -1117,6 +1143,39 @@ NB_MODULE(_recast, m) {
              },
              nb::arg("A"), nb::arg("B"), nb::arg("extents") = nb::none(),
              "(N,) bool: raycast(A[i], B[i]).clear for every row, GIL released")
+        .def("segment_surface_gaps",
+             [](const NavMeshCore& n, PointsIn A, PointsIn B, double step, float horizontal, float reach) {
+                 if (A.shape(0) != B.shape(0)) throw nb::value_error("A and B must have the same length");
+                 if (!(step > 0)) throw nb::value_error("step must be positive");
+                 const size_t S = A.shape(0);
+                 std::vector<double> out(S, 0.0);
+                 const double* pa = A.data();
+                 const double* pb = B.data();
+                 {
+                     nb::gil_scoped_release release;
+                     std::lock_guard<std::mutex> lock(n.mutex);
+                     for (size_t s = 0; s < S; ++s) {
+                         const double* a = pa + s * 3;
+                         const double* b = pb + s * 3;
+                         const double length = std::hypot(b[0] - a[0], b[2] - a[2]);
+                         const long pieces = std::max(1L, static_cast<long>(std::ceil(length / step - 1e-9)));
+                         float worst = 0.0f;
+                         for (long i = 0; i <= pieces && worst != FLT_MAX; ++i) {
+                             const double t = static_cast<double>(i) / static_cast<double>(pieces);
+                             const float p[3] = {static_cast<float>(a[0] + t * (b[0] - a[0])),
+                                                 static_cast<float>(a[1] + t * (b[1] - a[1])),
+                                                 static_cast<float>(a[2] + t * (b[2] - a[2]))};
+                             worst = std::max(worst, n.surface_gap(p, horizontal, reach));
+                         }
+                         out[s] = worst == FLT_MAX ? std::numeric_limits<double>::infinity() : worst;
+                     }
+                 }
+                 return to_numpy(out, S, 0);
+             },
+             nb::arg("A"), nb::arg("B"), nb::arg("step"), nb::arg("horizontal"), nb::arg("reach"),
+             "(S,) float64: the largest vertical distance to the walkable surface (see surface_gap) over "
+             "points at most `step` apart horizontally along each segment A[i] -> B[i], ends included; "
+             "inf when a point has none within `reach`; GIL released")
         .def("nearest_poly",
              [](const NavMeshCore& n, Vec3In p, ExtIn extents) {
                  float pp[3], out[3], ext[3] = {n.default_ext[0], n.default_ext[1], n.default_ext[2]};

@@ -15,8 +15,10 @@ import trimesh
 from g2s_core import hookspecs
 from g2s_core.model import RunContext
 from g2s_core.plugin import PROJECT, PluginParams
+from g2s_plugins._surface import edge_surface_gaps
 from g2s_plugins.graph_builders import navmesh as plugin
 from g2s_plugins.recast import NavMesh, RecastParams
+from g2s_plugins.samples import levels
 
 AGENT = types.SimpleNamespace(radius=0.3, height=2.0, max_climb=0.4, max_slope=45.0)
 DEMO_AGENT = types.SimpleNamespace(radius=0.6, height=2.0, max_climb=0.9, max_slope=45.0)
@@ -65,7 +67,7 @@ def test_plugin_contract():
 
 
 def test_graph_attributes_follow_the_model():
-    graph, ctx = run(level())
+    graph, ctx = run(level(), plugin.Params(max_edge_gap=None))
     nm = ctx.navmesh
     assert graph.number_of_nodes() == nm.polygon_count
     assert list(graph.nodes) == list(range(nm.polygon_count))
@@ -167,3 +169,46 @@ def test_tiled_graph_follows_the_model():
     again, _ = run(level(), params)  # tiles are built in threads: the result does not depend on it
     assert list(graph.nodes(data=True)) == list(again.nodes(data=True))
     assert list(graph.edges(data=True)) == list(again.edges(data=True))
+
+
+BASE_AGENT = types.SimpleNamespace(radius=0.5, height=2.0, max_climb=0.4, max_slope=45.0)
+
+
+def test_crests_are_crossed_on_the_surface():
+    """Floors joined by a ramp: the segment from a ramp polygon's centre to the upper floor's cuts
+    under the crest; the default graph goes over it through portal nodes, ``max_edge_gap: null`` does not."""
+    mesh = levels.SAMPLES["floors_joined_by_ramp"]().mesh
+    paper, ctx = run(mesh, plugin.Params(max_edge_gap=None), agent=BASE_AGENT)
+    nm = ctx.navmesh
+    assert list(paper) == list(range(nm.polygon_count)) and paper.number_of_edges() == len(nm.portals().pairs)
+    routed, _ = run(mesh, agent=BASE_AGENT)
+    added = [n for n in routed if n >= nm.polygon_count]
+    assert added and list(routed)[: nm.polygon_count] == list(range(nm.polygon_count))
+    for node in added:
+        data = routed.nodes[node]
+        assert (data["polygon"], data["area"], data["on_navmesh"]) == (-1, 0.0, True)
+        assert routed.degree(node) == 2
+    # Contracting the portal nodes gives back the paper's adjacency.
+    contracted = routed.copy()
+    for node in added:
+        u, v = contracted.neighbors(node)
+        contracted.remove_node(node)
+        contracted.add_edge(u, v)
+    assert {tuple(sorted(e)) for e in contracted.edges} == {tuple(sorted(e)) for e in paper.edges}
+    paper_gaps = edge_surface_gaps(paper, nm, BASE_AGENT)
+    routed_gaps = edge_surface_gaps(routed, nm, BASE_AGENT)
+    assert max(paper_gaps.values()) > 0.6
+    assert max(routed_gaps.values()) <= plugin.Params().max_edge_gap + 0.05  # the probes' spacing adds a little
+
+
+def test_segment_surface_gaps_on_a_slab():
+    mesh = slab((10, 0.2, 10), (0, -0.1, 0))
+    _, ctx = run(mesh, plugin.Params(max_edge_gap=None))
+    nm = ctx.navmesh
+    A = np.array([[-2.0, 0.3, 0.0], [-2.0, 0.0, 0.0], [-2.0, 3.0, 0.0], [-2.0, 0.0, 0.0]])
+    B = np.array([[2.0, 0.3, 1.0], [2.0, 0.5, 0.0], [2.0, 3.0, 0.0], [20.0, 0.0, 0.0]])
+    gaps = nm.segment_surface_gaps(A, B, step=0.1, reach=1.0)
+    assert gaps[0] == pytest.approx(0.3, abs=nm.settings["cell_height"])  # level, 0.3 m above
+    assert gaps[1] == pytest.approx(0.5, abs=nm.settings["cell_height"])  # rising: the far end counts
+    assert gaps[2] == math.inf  # 3 m above: beyond reach
+    assert gaps[3] == math.inf  # runs off the slab

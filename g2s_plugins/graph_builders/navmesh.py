@@ -11,27 +11,55 @@ Builds a navmesh of the mesh for the run's agent (solo or tiled, see
   two ``pos``), ``portal`` (the shared segment's two end points, mesh
   vertices) and ``width`` (its length).
 
-Nodes are inserted by polygon index and edges sorted by ``(a, b)``.
+Crests and troughs: where two polygons meet at a change of slope (the top or
+the foot of a ramp) the straight segment between their centres cuts under the
+crest or over the trough. When it strays more than ``max_edge_gap`` from the
+walkable surface (:meth:`g2s_plugins.recast.NavMesh.segment_surface_gaps`,
+probes ``agent radius / 2`` apart), the pair is joined through a *portal
+node* instead: at the shared segment's midpoint on the detail surface,
+``normal`` the mean of the two polygons', ``area`` 0, ``on_navmesh=True``,
+``polygon=-1``; its two edges carry the pair's ``portal`` and ``width``.
+Portal nodes are numbered after the polygons, in the order of their pairs.
+``max_edge_gap: null`` gives the paper's graph (one edge per pair).
+
+Nodes are inserted by polygon index, then the portal nodes; edges sorted by ``(a, b)``, then
+each portal node's two.
 """
 
 from __future__ import annotations
 
+import math
+
 import networkx as nx
 import numpy as np
+from pydantic import Field
 
+from g2s_core.config import AgentConfig
 from g2s_core.errors import G2SError
 from g2s_core.plugin import hookimpl
+from g2s_plugins._surface import MAX_SURFACE_GAP
 from g2s_plugins.recast import NavMesh, RecastParams, SettingsError, build_navmesh
 
 NAME = "navmesh"
 
 
 class Params(RecastParams):
-    """Recast build parameters (see :class:`g2s_plugins.recast.RecastParams`)."""
+    """Recast build parameters (see :class:`g2s_plugins.recast.RecastParams`) and the crest rule."""
+
+    max_edge_gap: float | None = Field(
+        MAX_SURFACE_GAP, gt=0,
+        description="an edge between two polygon centres straying further than this from the walkable surface "
+        "(a crest or trough between them) goes through a node on their shared edge, m; null: never (the paper's graph)",
+    )
 
 
-def navmesh_graph(navmesh: NavMesh) -> nx.Graph:
-    """The polygon adjacency graph of ``navmesh`` (the conventions of g2s_core.model)."""
+def navmesh_graph(navmesh: NavMesh, agent: AgentConfig | None = None, max_edge_gap: float | None = None) -> nx.Graph:
+    """The polygon adjacency graph of ``navmesh`` (the conventions of g2s_core.model).
+
+    With ``max_edge_gap`` (m; needs ``agent`` for the probe spacing), pairs whose
+    centre-to-centre segment strays further from the surface are joined through
+    a portal node (see the module doc).
+    """
     centres = navmesh.centres
     normals = navmesh.normals
     areas = navmesh.areas
@@ -49,11 +77,77 @@ def navmesh_graph(navmesh: NavMesh) -> nx.Graph:
         for i in range(navmesh.polygon_count)
     )
     ends = portals.endpoints.tolist()
+    crossing = np.zeros(len(pairs), dtype=bool)
+    if max_edge_gap is not None and agent is not None and len(pairs):
+        gaps = navmesh.segment_surface_gaps(
+            centres[pairs[:, 0]], centres[pairs[:, 1]], 0.5 * float(agent.radius), 2.0 * float(agent.height)
+        )
+        crossing = gaps > max_edge_gap
     graph.add_edges_from(
         (a, b, {"weight": w, "portal": (tuple(e[0]), tuple(e[1])), "width": wd})
-        for (a, b), w, e, wd in zip(pairs.tolist(), weights.tolist(), ends, portals.widths.tolist())
+        for (a, b), w, e, wd, cross in zip(pairs.tolist(), weights.tolist(), ends, portals.widths.tolist(), crossing)
+        if not cross
     )
+    if crossing.any():
+        _add_portal_nodes(graph, navmesh, np.flatnonzero(crossing), agent, max_edge_gap)
     return graph
+
+
+REFINEMENTS = 3
+"""How many times a piece of a routed edge is split again at its worst probe (at most 2**3 pieces a side)."""
+
+
+def _add_portal_nodes(
+    graph: nx.Graph, navmesh: NavMesh, which: np.ndarray, agent: AgentConfig, max_edge_gap: float
+) -> None:
+    """Join each pair ``which`` indexes (into ``navmesh.portals()``) along the surface (see the module doc)."""
+    portals = navmesh.portals()
+    step, reach = 0.5 * float(agent.radius), 2.0 * float(agent.height)
+    cell = float(navmesh.settings["cell_size"])
+
+    def on_surface(point: np.ndarray) -> tuple[int, np.ndarray]:
+        polygon, nearest = navmesh.nearest_poly(point, extents=(cell, reach, cell))
+        return int(polygon), np.asarray(nearest, dtype=np.float64)
+
+    def between(start: np.ndarray, end: np.ndarray, depth: int) -> list[tuple[int, np.ndarray]]:
+        """Surface points strictly between ``start`` and ``end`` that bring every piece within the gap."""
+        pieces = max(1, math.ceil(math.hypot(end[0] - start[0], end[2] - start[2]) / step))
+        if depth == 0 or pieces < 2:
+            return []
+        probes = start + (np.arange(1, pieces) / pieces)[:, None] * (end - start)
+        gaps = navmesh.segment_surface_gaps(probes, probes, step, reach)
+        worst = int(np.argmax(gaps))
+        if gaps[worst] <= max_edge_gap:
+            return []
+        polygon, point = on_surface(probes[worst])
+        if polygon < 0:  # no surface there to follow
+            return []
+        return [*between(start, point, depth - 1), (polygon, point), *between(point, end, depth - 1)]
+
+    node = navmesh.polygon_count
+    for k in which.tolist():
+        a, b = (int(v) for v in portals.pairs[k])
+        polygon, middle = on_surface(portals.endpoints[k].mean(axis=0))
+        if polygon < 0:
+            polygon, middle = a, portals.endpoints[k].mean(axis=0)
+        centre_a, centre_b = (np.asarray(graph.nodes[n]["pos"], dtype=np.float64) for n in (a, b))
+        route = [
+            *between(centre_a, middle, REFINEMENTS), (polygon, middle), *between(middle, centre_b, REFINEMENTS)
+        ]
+        attributes = {"portal": tuple(tuple(float(v) for v in e) for e in portals.endpoints[k]),
+                      "width": float(portals.widths[k])}
+        previous = a
+        for polygon, point in route:
+            pos = tuple(float(v) for v in point)
+            graph.add_node(node, pos=pos, normal=tuple(float(v) for v in navmesh.normals[polygon]),
+                           area=0.0, on_navmesh=True, polygon=-1)
+            graph.add_edge(previous, node, weight=_distance(graph, previous, node), **attributes)
+            previous, node = node, node + 1
+        graph.add_edge(previous, b, weight=_distance(graph, previous, b), **attributes)
+
+
+def _distance(graph: nx.Graph, u: int, v: int) -> float:
+    return math.dist(graph.nodes[u]["pos"], graph.nodes[v]["pos"])
 
 
 @hookimpl
@@ -83,7 +177,7 @@ def g2s_build_graph(mesh, params, context):
             f"{_up_axis_hint(mesh, agent.max_slope)}"
         ) from exc
     context.navmesh = navmesh
-    return navmesh_graph(navmesh)
+    return navmesh_graph(navmesh, context.agent, params.max_edge_gap)
 
 
 def _up_axis_hint(mesh, max_slope: float) -> str:

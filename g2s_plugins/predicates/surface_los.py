@@ -10,8 +10,8 @@ sight from A to C:
 * the straight segment A -> C stays within ``max_surface_gap`` of the
   navmesh's detail surface: at points at most ``probe_step`` apart along it,
   the detail surface lies within the gap above or below
-  (:class:`g2s_plugins._surface.NavmeshSurface`). Detour's raycast is 2D: alone, it lets an edge run metres
-  under a ramp whose foot it crosses.
+  (:meth:`g2s_plugins.recast.NavMesh.segment_surface_gaps`). Detour's raycast is 2D:
+  alone, it lets an edge run metres under a ramp whose foot it crosses.
 
 Default tolerance, 10 degrees: Recast quantises heights to the cell height,
 which tilts the polygons of a flat floor by a few degrees at most, and such
@@ -20,8 +20,9 @@ results); walkable ramps in levels are usually 15 to 45 degrees steep (the
 default agent climbs up to 45), so 10 degrees still keeps a node where one
 begins.
 
-Cost per call: one navmesh raycast, O(polygons crossed), and one numpy pass
-over the |AC| / probe_step + 1 probe points and the detail triangles under them.
+Cost per call: one navmesh raycast, O(polygons crossed), and one Detour
+height query per probe point (at most |AC| / probe_step + 1 of them, in one
+C++ call that stops at the first probe out of reach).
 """
 
 from __future__ import annotations
@@ -29,12 +30,11 @@ from __future__ import annotations
 from collections.abc import Callable
 
 import networkx as nx
-import numpy as np
 
 from g2s_core.errors import PluginError
 from g2s_core.model import RunContext
 from g2s_core.plugin import hookimpl
-from g2s_plugins._surface import CollapseParams, NavmeshSurface, collapse_rule, segment_points
+from g2s_plugins._surface import CollapseParams, collapse_rule
 
 NAME = "surface_los"
 
@@ -57,15 +57,9 @@ def g2s_simplify_predicate(params: Params, context: RunContext) -> Callable[[nx.
     agent = context.agent
     step = params.probe_step if params.probe_step is not None else 0.5 * float(agent.radius)
     gap = float(params.max_surface_gap)
-    surface: NavmeshSurface | None = None
 
     def line_of_sight(start: tuple[float, ...], end: tuple[float, ...]) -> bool:
-        nonlocal surface
         clear, _t = navmesh.raycast(start, end)
-        if not clear:
-            return False
-        if surface is None:  # built on first use: runs that never reach here pay nothing
-            surface = NavmeshSurface(navmesh)
-        return bool(np.all(surface.gaps(segment_points(start, end, step), gap) <= gap))
+        return clear and bool(navmesh.segment_surface_gaps(start, end, step, gap)[0] <= gap)
 
     return collapse_rule(params.normal_tolerance_deg, line_of_sight)

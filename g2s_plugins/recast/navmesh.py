@@ -191,6 +191,24 @@ class NavMesh:
         idx, point = self.core.nearest_poly(_vec(p), None if extents is None else _vec(extents))
         return int(idx), point
 
+    def segment_surface_gaps(self, A, B, step: float, reach: float, horizontal: float | None = None) -> np.ndarray:
+        """(S,) how far each straight segment ``A[i] -> B[i]`` ((S,3) each) strays from the walkable surface, m.
+
+        Probes at most ``step`` apart horizontally along each segment, both ends
+        included; a probe's gap is its vertical distance to the surface: over a
+        polygon, to its detail surface straight above or below (Detour's
+        height-accurate triangles; the nearest in height where floors
+        overlap); over none, e.g. where Recast eroded the boundary, to the
+        nearest boundary point of a polygon within ``horizontal`` (default one
+        ``cell_size``). A segment's gap is its probes' largest, ``inf`` when a
+        probe has no surface within ``reach``. Looped in C++: O(length / step)
+        probes, each O(polygons within ``horizontal``).
+        """
+        A = np.ascontiguousarray(A, dtype=np.float64).reshape(-1, 3)
+        B = np.ascontiguousarray(B, dtype=np.float64).reshape(-1, 3)
+        horizontal = float(self.settings["cell_size"]) if horizontal is None else float(horizontal)
+        return self.core.segment_surface_gaps(A, B, float(step), horizontal, float(reach))
+
     def poly_ref(self, index: int) -> int:
         """Detour ``dtPolyRef`` of polygon ``index``."""
         return int(self.core.poly_ref(int(index)))
