@@ -6,12 +6,13 @@ PYTHON    ?= python3
 PY        := $(VENV)/bin/python
 STAMP     := $(VENV)/.g2s-installed
 DEMO_OUT  ?= g2s-demo
+WHEEL_DIR ?= dist
 DEB_PACKAGES := librecast-dev cmake g++ make
 # chromium: the headless browser tests/test_html_report.py drives (make test only)
 TEST_DEB_PACKAGES := chromium
 README_IMAGE := docs/images/demo-heatmap.png
 
-.PHONY: demo test setup system-deps benchmark clean readme-image
+.PHONY: demo test setup system-deps benchmark clean readme-image wheel
 
 demo: setup
 	$(VENV)/bin/g2s demo -o $(DEMO_OUT) --force
@@ -25,6 +26,14 @@ readme-image: setup
 	$(VENV)/bin/g2s demo -o $(DEMO_OUT) --force --format png --quiet
 	mkdir -p $(dir $(README_IMAGE))
 	cp $(DEMO_OUT)/heatmap.png $(README_IMAGE)
+
+# A self-contained wheel in dist/: built from this checkout, then repaired by
+# auditwheel, which copies libRecast/libDetour into it (graph2structure.libs/)
+# and tags it manylinux for the oldest glibc the binaries allow.
+wheel: setup
+	rm -rf build/wheel-raw
+	$(PY) -m pip wheel --no-deps --no-build-isolation -q -w build/wheel-raw .
+	PATH="$(abspath $(VENV))/bin:$$PATH" $(PY) -m auditwheel repair -w $(WHEEL_DIR) build/wheel-raw/graph2structure-*.whl
 
 benchmark: setup
 	$(PY) benchmarks/pipeline.py
@@ -50,8 +59,10 @@ $(STAMP): pyproject.toml CMakeLists.txt $(wildcard src/*) | system-deps
 	test -x $(PY) || $(PYTHON) -m venv $(VENV)
 	$(PY) -m pip install -q --upgrade pip
 	$(PY) -m pip install -q scikit-build-core nanobind
+	@# a venv made before the rename still holds the distribution "g2s", whose entry points would register twice
+	$(PY) -m pip uninstall -y -q g2s 2>/dev/null || true
 	$(PY) -m pip install -q --no-build-isolation -e '.[dev]'
 	touch $@
 
 clean:
-	rm -rf build $(DEMO_OUT)
+	rm -rf build dist $(DEMO_OUT)

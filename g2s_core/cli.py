@@ -9,6 +9,7 @@ from __future__ import annotations
 import argparse
 import json
 import sys
+import textwrap
 import traceback
 from collections.abc import Callable, Iterator, Sequence
 from contextlib import contextmanager
@@ -18,18 +19,15 @@ from typing import Any
 from rich.console import Console
 from rich.table import Table
 
-from g2s_core import pipeline
-from g2s_plugins.samples import levels as samples
-from g2s_core.config import PRESETS_DIR, load_config, parse_config, load_raw_config
+from g2s_core import api, pipeline, version
+from g2s_core.api import SAMPLE_PREFIX, MeshSource
+from g2s_core.config import STAGES, parse_assignment, presets, resolve_config
 from g2s_core.errors import G2SError
-from g2s_core.hookspecs import STAGE_TITLES
-from g2s_core.mesh import load_mesh, mesh_sha256, prepare_mesh
 from g2s_core.model import RunResult
-from g2s_plugins.outputs import DEFAULT_FORMATS, WRITERS, check_outdir, parse_formats, prepare_outdir, write_outputs
-from g2s_plugins.outputs.common import STEP_ROWS, final_graph, roots_of, stage_rows
 from g2s_core.registry import Registry, plugin_parameters
-
-SAMPLE_PREFIX = "sample:"
+from g2s_plugins.outputs import DEFAULT_FORMATS, WRITERS, check_outdir, parse_formats
+from g2s_plugins.outputs.common import STEP_ROWS, final_graph, roots_of, stage_rows
+from g2s_plugins.samples import levels as samples
 
 __all__ = ["STEP_ROWS", "main", "stage_table"]
 
@@ -40,23 +38,36 @@ def _parser() -> argparse.ArgumentParser:
         description="Graph2Structure: extract a hierarchical structure of navigable paths from level geometry.",
     )
     parser.add_argument("-v", "--verbose", action="store_true", help="show tracebacks of internal errors")
+    parser.add_argument("--version", action="version", version=f"g2s {version()}")
+    # -v is accepted after the command too; SUPPRESS keeps a -v given before it
+    common = argparse.ArgumentParser(add_help=False)
+    common.add_argument("-v", "--verbose", action="store_true", default=argparse.SUPPRESS,
+                        help="show tracebacks of internal errors")
     commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
 
-    run = commands.add_parser("run", help="run a YAML config on a mesh file", description="Run a YAML config on a mesh.")
-    run.add_argument("config", type=Path, help="YAML config (see configs/ for presets)")
+    run = commands.add_parser("run", parents=[common], help="run a config on a mesh file",
+                              description="Run a config (a preset or a YAML file) on a mesh.",
+                              epilog=_presets_epilog(), formatter_class=argparse.RawDescriptionHelpFormatter)
+    run.add_argument("config", help="preset name (see `g2s presets`) or YAML config file")
     run.add_argument("mesh", help=f"mesh file (.obj .glb .gltf .ply .stl .off) or {SAMPLE_PREFIX}NAME for a built-in sample level")
     run.add_argument("-o", "--outdir", type=Path, required=True, help="folder for the results")
     _add_output_options(run)
 
-    plugins = commands.add_parser("plugins", help="list installed plugins and their parameters")
-    plugins.add_argument("--stage", choices=list(STAGE_TITLES), help="only this stage")
+    commands.add_parser("presets", parents=[common], help="list the preset configs and what each is for")
 
-    demo = commands.add_parser("demo", help="run the full pipeline on the built-in dungeon sample")
+    plugins = commands.add_parser("plugins", parents=[common], help="list installed plugins and their parameters")
+    plugins.add_argument("--stage", choices=list(STAGES), help="only this stage (its config key)")
+
+    demo = commands.add_parser("demo", parents=[common], help="run the full pipeline on the built-in dungeon sample")
     demo.add_argument("-o", "--outdir", type=Path, default=Path("g2s-demo"), help="folder for the results (default: g2s-demo)")
     demo.add_argument("--rooms", type=int, default=12, help="rooms in the generated dungeon (default: 12)")
     demo.add_argument("--seed", type=int, default=0, help="seed of the generated dungeon (default: 0)")
     _add_output_options(demo)
     return parser
+
+
+def _presets_epilog() -> str:
+    return "presets:\n" + "\n".join(f"  {name:<24} {purpose}" for name, purpose in presets().items())
 
 
 def _add_output_options(command: argparse.ArgumentParser) -> None:
@@ -66,6 +77,9 @@ def _add_output_options(command: argparse.ArgumentParser) -> None:
         help=f"comma-separated output formats, overriding the config's outputs.formats: {', '.join(WRITERS)} "
         f"(default: the config's, else {','.join(DEFAULT_FORMATS)})",
     )
+    command.add_argument("--set", action="append", default=[], metavar="KEY=VALUE", dest="overrides",
+                         help="override a config value, e.g. --set agent.radius=0.4 --set terminals.params.k=20 "
+                         "(repeatable; the value is read as YAML)")
     command.add_argument("--force", action="store_true", help="replace results already in the output folder")
     command.add_argument("-q", "--quiet", action="store_true", help="no progress, tables or file list")
     command.add_argument("--json", action="store_true", help="print only a JSON summary on stdout")
@@ -79,6 +93,8 @@ def main(argv: Sequence[str] | None = None) -> int:
             return _run(args, errors)
         if args.command == "plugins":
             return _plugins(args)
+        if args.command == "presets":
+            return _presets()
         return _demo(args, errors)
     except G2SError as exc:
         errors.print(f"g2s: error: {exc}", markup=False, highlight=False, soft_wrap=True)
@@ -98,38 +114,35 @@ def main(argv: Sequence[str] | None = None) -> int:
 
 
 def _run(args: argparse.Namespace, errors: Console) -> int:
-    config = load_config(args.config)
-    formats = _formats(args, config, str(args.config))
+    config, source = resolve_config(args.config, _overrides(args), overrides_source="--set")
+    formats = _formats(args, config, source)
     protect = [] if args.mesh.startswith(SAMPLE_PREFIX) else [Path(args.mesh)]
     check_outdir(args.outdir, formats, args.force, protect)
     registry = Registry.from_entry_points()
-    plan = pipeline.plan(config, registry, source=str(args.config))
-    if args.mesh.startswith(SAMPLE_PREFIX):
-        name = args.mesh[len(SAMPLE_PREFIX):]
-        mesh, mesh_name, sha = _sample_mesh(name, config)
-    else:
-        mesh, info = load_mesh(args.mesh, config.mesh)
-        mesh_name, sha = info.name, info.sha256
-        if info.cleaning:
-            removed = ", ".join(f"{count} {what.replace('_', ' ')}" for what, count in info.cleaning.items())
-            _status(args, errors, f"cleaning removed {removed}")
-    return _execute(args, errors, registry, plan, mesh, mesh_name, sha, formats, protect)
+    plan = pipeline.plan(config, registry, source=source)
+    mesh = api.open_mesh(args.mesh, config)
+    if mesh.cleaning:
+        removed = ", ".join(f"{count} {what.replace('_', ' ')}" for what, count in mesh.cleaning.items())
+        _status(args, errors, f"cleaning removed {removed}")
+    return _execute(args, errors, registry, plan, mesh, formats)
 
 
 def _demo(args: argparse.Namespace, errors: Console) -> int:
-    raw = load_raw_config(PRESETS_DIR / "demo.yaml")
-    config = parse_config(raw, source="configs/demo.yaml")
-    formats = _formats(args, config, "configs/demo.yaml")
+    config, source = resolve_config("demo", _overrides(args), overrides_source="--set")
+    formats = _formats(args, config, source)
     check_outdir(args.outdir, formats, args.force)
     registry = Registry.from_entry_points()
-    plan = pipeline.plan(config, registry, source="configs/demo.yaml")
+    plan = pipeline.plan(config, registry, source=source)
     level = samples.dungeon(seed=args.seed, rooms=args.rooms)
-    mesh = prepare_mesh(level.mesh, config.mesh, source=level.name)
-    name = f"{level.name} (seed {args.seed}, {args.rooms} rooms)"
-    code = _execute(args, errors, registry, plan, mesh, name, mesh_sha256(mesh), formats)
+    mesh = api.open_mesh(level.mesh, config, name=f"{level.name} (seed {args.seed}, {args.rooms} rooms)")
+    code = _execute(args, errors, registry, plan, mesh, formats)
     if code == 0 and not (args.quiet or args.json):
         Console().print(_demo_hint(args.outdir, formats), markup=False, highlight=False, soft_wrap=True)
     return code
+
+
+def _overrides(args: argparse.Namespace) -> dict[str, Any]:
+    return dict(parse_assignment(text) for text in args.overrides)
 
 
 def _demo_hint(outdir: Path, formats: Sequence[str]) -> str:
@@ -156,30 +169,18 @@ def _formats(args: argparse.Namespace, config: Any, source: str) -> list[str]:
     return list(DEFAULT_FORMATS)
 
 
-def _sample_mesh(name: str, config: Any) -> tuple[Any, str, str]:
-    if name not in samples.SAMPLES:
-        raise G2SError(f"unknown sample {name!r} (expected one of: {', '.join(samples.SAMPLES)})")
-    level = samples.load_sample(name)
-    mesh = prepare_mesh(level.mesh, config.mesh, source=name)
-    return mesh, name, mesh_sha256(mesh)
-
-
 def _execute(
-    args,
+    args: argparse.Namespace,
     errors: Console,
     registry: Registry,
     plan: pipeline.Plan,
-    mesh,
-    mesh_name: str,
-    sha: str,
+    mesh: MeshSource,
     formats: Sequence[str],
-    protect: Sequence[Path] = (),
 ) -> int:
     quiet = args.quiet or args.json
     with _progress(errors, quiet) as say:
-        result = pipeline.run(plan, registry, mesh, mesh_name, sha, progress=say)
-        prepare_outdir(args.outdir, formats, args.force, protect)
-        written = write_outputs(result, args.outdir, formats, replace=args.force, progress=say)
+        result = api.execute(plan, registry, mesh, progress=say)
+        written = api.write_result(result, args.outdir, formats, force=args.force, progress=say)
     if args.json:
         print(json.dumps(_summary(result, args.outdir, formats, written), indent=1, sort_keys=True))
         return 0
@@ -187,7 +188,7 @@ def _execute(
         errors.print(f"g2s: warning: {warning}", markup=False, highlight=False, soft_wrap=True)
     if not args.quiet:
         console = Console()
-        console.print(stage_table(result, title=mesh_name))
+        console.print(stage_table(result, title=mesh.name))
         for path in written:
             console.print(f"wrote {path}", markup=False, highlight=False, soft_wrap=True)
     return 0
@@ -246,15 +247,40 @@ def stage_table(result: RunResult, title: str = "") -> Table:
 
 
 def _plugins(args: argparse.Namespace) -> int:
+    """Plugins under their stage's config key; parameters in two columns wrapped to the terminal."""
     registry = Registry.from_entry_points()
     console = Console()
-    for info in registry.plugins(args.stage):
-        console.print(f"[bold]{STAGE_TITLES[info.stage]}[/bold] [cyan]{info.name}[/cyan]  ({info.package})")
-        if info.summary:
-            console.print(f"  {info.summary}", markup=False, highlight=False)
-        for name, accepted, default, description in plugin_parameters(info):
-            console.print(f"    {name}: {accepted}, default {default}. {description}", markup=False, highlight=False)
+    lines = []
+    for stage in STAGES if args.stage is None else (args.stage,):
+        lines.append(stage)
+        for info in registry.plugins(stage):
+            lines.append(f"  {info.name}  ({info.package})")
+            if info.summary:
+                lines.extend(_columns([("", info.summary)], console.width, indent=4))
+            parameters = [(f"{name}:", f"{accepted}, default {default}. {description}")
+                          for name, accepted, default, description in plugin_parameters(info)]
+            lines.extend(_columns(parameters, console.width, indent=6))
+    console.print("\n".join(lines), markup=False, highlight=False, soft_wrap=True)
     return 0
+
+
+def _presets() -> int:
+    console = Console()
+    lines = _columns(list(presets().items()), console.width, indent=0)
+    console.print("\n".join(lines), markup=False, highlight=False, soft_wrap=True)
+    return 0
+
+
+def _columns(rows: Sequence[tuple[str, str]], width: int, indent: int) -> list[str]:
+    """``(term, text)`` rows as two columns, ``text`` wrapped to ``width`` under itself."""
+    left = indent + max((len(term) + 2 for term, _ in rows if term), default=0)
+    text_width = max(width - left, 30)
+    lines = []
+    for term, text in rows:
+        wrapped = textwrap.wrap(text, text_width) or [""]
+        lines.append((" " * indent + term).ljust(left) + wrapped[0])
+        lines.extend(" " * left + line for line in wrapped[1:])
+    return lines
 
 
 if __name__ == "__main__":

@@ -99,5 +99,5 @@ def test_real_level_graph(tmp_path, shared_data):
 def test_plugins_lists_stage_name_package_and_parameters():
     proc = g2s("plugins", "--stage", "graph")
     assert proc.returncode == 0, proc.stderr
-    assert "GraphBuilder navmesh" in proc.stdout and "(g2s)" in proc.stdout
+    assert proc.stdout.startswith("graph\n  navmesh  (graph2structure)\n")
     assert "cell_size:" in proc.stdout

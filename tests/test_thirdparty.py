@@ -30,8 +30,8 @@ def g2s(*args):
 def test_third_party_plugin_is_listed_and_runs(installed_plugin, tmp_path):
     listing = g2s("plugins", "--stage", "analyzers")
     assert listing.returncode == 0, listing.stderr
-    assert "Analyzer root_distance  (g2s-example-plugin)" in listing.stdout
-    assert "hops: true or false, default False" in listing.stdout
+    assert "analyzers\n" in listing.stdout and "  root_distance  (g2s-example-plugin)\n" in listing.stdout
+    assert "hops:  true or false, default False" in listing.stdout
 
     out = tmp_path / "out"
     proc = g2s("run", str(PLUGIN_DIR / "root_distance.yaml"), "sample:cross_hub", "-o", str(out), "--json")

@@ -18,7 +18,6 @@ the navmesh build time) and the g2s version go to ``run.json`` instead.
 
 from __future__ import annotations
 
-import importlib.metadata
 import json
 import platform
 from dataclasses import dataclass, field
@@ -28,6 +27,7 @@ from typing import Any
 import networkx as nx
 import numpy as np
 
+from g2s_core import version
 from g2s_core.errors import G2SError
 from g2s_core.model import Opening, RunResult, StageStats, Terminals, vec3
 from g2s_plugins.outputs.common import edge_list, final_graph, number, roots_of, terminal_ids, vector
@@ -39,7 +39,7 @@ RUN_FILE = "run.json"
 SCHEMA_PATH = Path(__file__).resolve().parent / "structure.schema.json"
 RUN_SCHEMA_PATH = Path(__file__).resolve().parent / "run.schema.json"
 
-_NODE_KEYS = ("pos", "normal", "area", "on_navmesh", "polygon", "terminal", "depth", "root")
+_NODE_KEYS = ("pos", "normal", "area", "on_navmesh", "polygon", "terminal", "depth", "root", "values")
 _EDGE_KEYS = ("weight",)
 _TIMING_WORDS = ("seconds", "time")
 
@@ -141,7 +141,7 @@ def run_document(result: RunResult) -> dict[str, Any]:
         ],
         "total_seconds": float(result.total_seconds),
         "navmesh": _navmesh_stats(result, timing=True),
-        "g2s_version": _version(),
+        "g2s_version": version(),
         "python": platform.python_version(),
     }
 
@@ -244,13 +244,6 @@ def _plain(value: Any) -> Any:
 def _extra(attrs: dict[str, Any], known: tuple[str, ...]) -> dict[str, Any]:
     """Attributes beyond the documented ones that JSON can hold (plugins' own, e.g. ``width``)."""
     return _plain({k: v for k, v in attrs.items() if k not in known})
-
-
-def _version() -> str:
-    try:
-        return importlib.metadata.version("g2s")
-    except importlib.metadata.PackageNotFoundError:
-        return "unknown"
 
 
 # --- reading -----------------------------------------------------------------
