@@ -35,10 +35,8 @@ print(len(written))
 """
 
 
-@pytest.fixture(scope="module")
-def installed(tmp_path_factory) -> Path:
-    """A venv holding only the repaired wheel and its PyPI dependencies; returns its bin folder."""
-    root = tmp_path_factory.mktemp("wheel")
+def install_wheel(root: Path) -> Path:
+    """`make wheel`, then a new venv holding only that wheel and its PyPI dependencies; its bin folder."""
     dist = root / "dist"
     build = subprocess.run(["make", "-s", "wheel", f"WHEEL_DIR={dist}"], cwd=PROJECT, capture_output=True, text=True)
     assert build.returncode == 0, build.stdout + build.stderr
@@ -59,40 +57,40 @@ def run_in(bin_dir: Path, cwd: Path, *args: str) -> subprocess.CompletedProcess:
     return subprocess.run(args, cwd=cwd, env=env, capture_output=True, text=True)
 
 
-def test_extension_loads_the_bundled_recast_libraries(installed, tmp_path):
-    proc = run_in(installed, tmp_path, "python", "-c", LOADED_LIBRARIES)
+def test_wheel_installs_and_runs_on_its_own(tmp_path):
+    # one test, so that xdist workers never build the wheel twice at once
+    bin_dir = install_wheel(tmp_path)
+    work = tmp_path / "work"  # outside the checkout: nothing of it is importable from here
+    work.mkdir()
+
+    proc = run_in(bin_dir, work, "python", "-c", LOADED_LIBRARIES)
     assert proc.returncode == 0, proc.stderr
     loaded = json.loads(proc.stdout)
-    site = installed.parent / "lib"
+    site = bin_dir.parent / "lib"
     assert Path(loaded["package"]).is_relative_to(site) and Path(loaded["extension"]).is_relative_to(site), loaded
     names = [Path(path).name for path in loaded["libraries"]]
     assert any(n.startswith("libRecast") for n in names) and any(n.startswith("libDetour") for n in names), loaded
-    for path in loaded["libraries"]:
+    for path in loaded["libraries"]:  # the wheel's copies, not /usr/lib's
         assert Path(path).parent.name == "graph2structure.libs" and Path(path).is_relative_to(site), loaded
 
-
-def test_commands_and_api_run_from_the_wheel(installed, tmp_path):
-    version = run_in(installed, tmp_path, "g2s", "--version")
+    version = run_in(bin_dir, work, "g2s", "--version")
     assert version.returncode == 0 and version.stdout.startswith("g2s 0."), version.stdout + version.stderr
 
-    demo = run_in(installed, tmp_path, "g2s", "demo")
+    demo = run_in(bin_dir, work, "g2s", "demo")
     assert demo.returncode == 0, demo.stderr
-    assert json.loads((tmp_path / "g2s-demo" / "structure.json").read_text())["nodes"]
-    assert (tmp_path / "g2s-demo" / "heatmap.png").is_file() and (tmp_path / "g2s-demo" / "report.html").is_file()
+    assert json.loads((work / "g2s-demo" / "structure.json").read_text())["nodes"]
+    assert (work / "g2s-demo" / "heatmap.png").is_file() and (work / "g2s-demo" / "report.html").is_file()
 
-    presets = run_in(installed, tmp_path, "g2s", "presets")
+    presets = run_in(bin_dir, work, "g2s", "presets")
     assert presets.returncode == 0 and "map_analysis " in presets.stdout, presets.stdout + presets.stderr
 
-    api = run_in(installed, tmp_path, "python", "-c", API)
+    level = SHARED_DATA / "nav_test.obj"
+    if level.is_file():
+        proc = run_in(bin_dir, work, "g2s", "run", "map_analysis", str(level), "-o", "out", "--json")
+        assert proc.returncode == 0, proc.stderr
+        summary = json.loads(proc.stdout)
+        assert summary["final"]["stage"] == "simplify" and summary["final"]["nodes"] > 0
+
+    api = run_in(bin_dir, work, "python", "-c", API)
     assert api.returncode == 0, api.stderr
     assert int(api.stdout) == 2
-
-
-def test_preset_run_on_a_real_level(installed, tmp_path):
-    level = SHARED_DATA / "nav_test.obj"
-    if not level.is_file():
-        pytest.skip(f"shared test data not found at {level}")
-    proc = run_in(installed, tmp_path, "g2s", "run", "map_analysis", str(level), "-o", "out", "--json")
-    assert proc.returncode == 0, proc.stderr
-    summary = json.loads(proc.stdout)
-    assert summary["final"]["stage"] == "simplify" and summary["final"]["nodes"] > 0
