@@ -67,7 +67,7 @@ def _parser() -> argparse.ArgumentParser:
 
 
 def _presets_epilog() -> str:
-    return "presets:\n" + "\n".join(f"  {name:<24} {purpose}" for name, purpose in presets().items())
+    return "presets:\n" + "\n".join(_columns(list(presets().items()), width=80, indent=2))
 
 
 def _add_output_options(command: argparse.ArgumentParser) -> None:
@@ -78,7 +78,7 @@ def _add_output_options(command: argparse.ArgumentParser) -> None:
         f"(default: the config's, else {','.join(DEFAULT_FORMATS)})",
     )
     command.add_argument("--set", action="append", default=[], metavar="KEY=VALUE", dest="overrides",
-                         help="override a config value, e.g. --set agent.radius=0.4 --set terminals.params.k=20 "
+                         help="override a config value, e.g. --set agent.radius=0.4 --set terminals.params.top_k=20 "
                          "(repeatable; the value is read as YAML)")
     command.add_argument("--force", action="store_true", help="replace results already in the output folder")
     command.add_argument("-q", "--quiet", action="store_true", help="no progress, tables or file list")
