@@ -8,14 +8,14 @@ ones), discovered through the ``g2s`` entry-point group. ``g2s_core.run`` and
 import importlib.metadata
 from typing import Any
 
-from g2s_core.model import Opening, RunContext, RunResult, StageStats, Terminals
+from g2s_core.model import NavMesh, Opening, RunContext, RunResult, StageStats, Terminals
 from g2s_core.plugin import PluginParams, hookimpl, hookspec
 
 DISTRIBUTION = "graph2structure"
 """The name g2s is published and installed under (``pip install graph2structure``)."""
 
 __all__ = [
-    "DISTRIBUTION", "Opening", "PluginParams", "RunContext", "RunResult", "StageStats", "Terminals",
+    "DISTRIBUTION", "NavMesh", "Opening", "PluginParams", "RunContext", "RunResult", "StageStats", "Terminals",
     "hookimpl", "hookspec", "load_result", "run", "version",
 ]
 

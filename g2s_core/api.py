@@ -26,21 +26,17 @@ import trimesh
 
 from g2s_core import pipeline
 from g2s_core.config import RunConfig, resolve_config
-from g2s_core.errors import G2SError
-from g2s_core.mesh import clean_mesh, load_mesh, mesh_sha256, prepare_mesh
+from g2s_core.mesh import SAMPLE_PREFIX, clean_mesh, generate_level, load_mesh, mesh_sha256, prepare_mesh
 from g2s_core.model import RunResult
-from g2s_core.registry import Registry
-from g2s_plugins.outputs import DEFAULT_FORMATS, LoadedResult, parse_formats, prepare_outdir, write_outputs
-from g2s_plugins.outputs import load_result as _load_structure
-from g2s_plugins.samples import levels as samples
-
-SAMPLE_PREFIX = "sample:"
-"""``sample:NAME`` names a built-in sample level instead of a mesh file."""
+from g2s_core.outputs import DEFAULT_FORMATS, parse_formats, prepare_outdir, write_outputs
+from g2s_core.registry import Registry, installed
+from g2s_core.results import LoadedResult
+from g2s_core.results import load_result as _load_structure
 
 MeshLike = str | Path | trimesh.Trimesh
 ConfigLike = str | Path | Mapping[str, Any] | RunConfig
 
-__all__ = ["SAMPLE_PREFIX", "MeshSource", "execute", "load_result", "open_mesh", "run", "write_result"]
+__all__ = ["MeshSource", "execute", "load_result", "open_mesh", "run", "write_result"]
 
 
 @dataclass(frozen=True)
@@ -64,19 +60,23 @@ class MeshSource:
     cleaning: dict[str, int] | None = None
 
 
-def open_mesh(mesh: MeshLike, config: RunConfig, name: str | None = None) -> MeshSource:
-    """The mesh of a run from a file path, ``"sample:NAME"`` or a ``trimesh.Trimesh``.
+def open_mesh(mesh: MeshLike, config: RunConfig, name: str | None = None, registry: Registry | None = None) -> MeshSource:
+    """The mesh of a run from a file path, ``"sample:NAME[?param=value&...]"`` or a ``trimesh.Trimesh``.
 
     Args:
         mesh: a mesh file (.obj .glb .gltf .ply .stl .off), ``sample:NAME``
-            for a built-in sample level (see ``docs/samples.md``), or a mesh
-            in the file's units and up axis.
-        config: its ``mesh`` settings (up axis, scale, cleaning) are applied.
-        name: the name recorded for an in-memory mesh (default ``"mesh"``).
+            for a level from an installed level generator (``g2s plugins
+            --stage levels``, docs/samples.md), or a mesh in the file's units
+            and up axis.
+        config: its ``mesh`` settings (up axis, scale; cleaning for files and
+            in-memory meshes) are applied.
+        name: the name recorded for the mesh (default: the file name, the
+            sample spec, or ``"mesh"``).
+        registry: the plugins that generate sample levels (default: the installed ones).
 
     Raises:
         MeshError: the file is missing or not a usable triangle mesh.
-        G2SError: the sample name is unknown.
+        ConfigError: no such level generator, or bad parameters for it.
     """
     if isinstance(mesh, trimesh.Trimesh):
         name = name or "mesh"
@@ -86,12 +86,10 @@ def open_mesh(mesh: MeshLike, config: RunConfig, name: str | None = None) -> Mes
             prepared, cleaning = clean_mesh(prepared)
         return MeshSource(prepared, name, mesh_sha256(prepared), cleaning=cleaning)
     if isinstance(mesh, str) and mesh.startswith(SAMPLE_PREFIX):
-        sample = mesh[len(SAMPLE_PREFIX):]
-        if sample not in samples.SAMPLES:
-            raise G2SError(f"unknown sample {sample!r} (expected one of: {', '.join(samples.SAMPLES)})")
-        return open_mesh(samples.load_sample(sample).mesh, config, name=name or sample)
+        generated = generate_level(mesh, config.mesh, registry)
+        return MeshSource(generated, name or mesh[len(SAMPLE_PREFIX):], mesh_sha256(generated))
     loaded, info = load_mesh(mesh, config.mesh)
-    return MeshSource(loaded, info.name, info.sha256, Path(mesh), info.cleaning)
+    return MeshSource(loaded, name or info.name, info.sha256, Path(mesh), info.cleaning)
 
 
 def execute(
@@ -154,11 +152,12 @@ def run(
 
     Raises:
         ConfigError, MeshError, G2SError: bad input (what ``g2s`` reports with exit code 2).
+        PluginFailure: a plugin failed (exit code 3).
     """
     run_config, source = resolve_config(config, overrides)
-    registry = Registry.from_entry_points()
+    registry = installed()
     plan = pipeline.plan(run_config, registry, source=source)
-    return execute(plan, registry, open_mesh(mesh, run_config, name=mesh_name), progress=progress)
+    return execute(plan, registry, open_mesh(mesh, run_config, name=mesh_name, registry=registry), progress=progress)
 
 
 def write_result(
@@ -167,6 +166,7 @@ def write_result(
     formats: str | Sequence[str] | None = None,
     force: bool = False,
     progress: Callable[[str], None] | None = None,
+    registry: Registry | None = None,
 ) -> list[Path]:
     """Write a run's result files into ``outdir`` (created if missing); the paths written.
 
@@ -179,10 +179,11 @@ def write_result(
         G2SError: unknown format, or the folder cannot take the results.
     """
     outdir = Path(outdir)
-    chosen = parse_formats(result.config.get("outputs", {}).get("formats", DEFAULT_FORMATS) if formats is None else formats)
+    default = result.config.get("outputs", {}).get("formats", DEFAULT_FORMATS)
+    chosen = parse_formats(default if formats is None else formats, registry=registry)
     protect = [] if result.mesh_path is None else [result.mesh_path]
-    prepare_outdir(outdir, chosen, force, protect)
-    return write_outputs(result, outdir, chosen, replace=force, progress=progress)
+    prepare_outdir(outdir, chosen, force, protect, registry)
+    return write_outputs(result, outdir, chosen, replace=force, progress=progress, registry=registry)
 
 
 def load_result(path: str | Path) -> LoadedResult:

@@ -1,7 +1,9 @@
 """The ``g2s`` command line: run a config on a mesh, list plugins, run the demo.
 
-Exit codes: 0 success, 2 bad input or config (one line on stderr, no
-traceback), 1 internal error (``--verbose`` shows the traceback).
+Exit codes: 0 success; 2 bad input or config (one line on stderr, no
+traceback); 3 a plugin failed: it could not be loaded, raised an exception or
+returned a wrong result (one line naming the plugin and its package); 1 internal
+error of g2s (``--verbose`` shows the traceback).
 """
 
 from __future__ import annotations
@@ -20,22 +22,26 @@ from rich.console import Console
 from rich.table import Table
 
 from g2s_core import api, pipeline, version
-from g2s_core.api import SAMPLE_PREFIX, MeshSource
-from g2s_core.config import STAGES, parse_assignment, presets, resolve_config
-from g2s_core.errors import G2SError
+from g2s_core.api import MeshSource
+from g2s_core.config import parse_assignment, presets, resolve_config
+from g2s_core.errors import G2SError, PluginFailure
+from g2s_core.mesh import SAMPLE_PREFIX
 from g2s_core.model import RunResult
-from g2s_core.registry import Registry, plugin_parameters
-from g2s_plugins.outputs import DEFAULT_FORMATS, WRITERS, check_outdir, parse_formats
-from g2s_plugins.outputs.common import STEP_ROWS, final_graph, roots_of, stage_rows
-from g2s_plugins.samples import levels as samples
+from g2s_core.outputs import DEFAULT_FORMATS, check_outdir, parse_formats, writers
+from g2s_core.registry import Registry, installed, plugin_parameters
+from g2s_core.stages import STAGES
+from g2s_core.summary import final_graph, roots_of, stage_rows
 
-__all__ = ["STEP_ROWS", "main", "stage_table"]
+EXIT_CODES = "exit codes: 0 success, 2 bad input or config, 3 a plugin failed (names it and its package), 1 internal error"
+
+__all__ = ["main", "stage_table"]
 
 
 def _parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="g2s",
         description="Graph2Structure: extract a hierarchical structure of navigable paths from level geometry.",
+        epilog=EXIT_CODES,
     )
     parser.add_argument("-v", "--verbose", action="store_true", help="show tracebacks of internal errors")
     parser.add_argument("--version", action="version", version=f"g2s {version()}")
@@ -45,18 +51,23 @@ def _parser() -> argparse.ArgumentParser:
                         help="show tracebacks of internal errors")
     commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
 
-    run = commands.add_parser("run", parents=[common], help="run a config on a mesh file",
-                              description="Run a config (a preset or a YAML file) on a mesh.",
-                              epilog=_presets_epilog(), formatter_class=argparse.RawDescriptionHelpFormatter)
+    run = commands.add_parser(
+        "run", parents=[common], help="run a config (a preset or a YAML file) on a mesh file",
+        description="Run a config (a preset or a YAML file) on a mesh.",
+        epilog=f"{EXIT_CODES}\n\npresets:\n" + "\n".join(_columns(list(presets().items()), width=80, indent=2)),
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
     run.add_argument("config", help="preset name (see `g2s presets`) or YAML config file")
-    run.add_argument("mesh", help=f"mesh file (.obj .glb .gltf .ply .stl .off) or {SAMPLE_PREFIX}NAME for a built-in sample level")
+    run.add_argument("mesh", help=f"mesh file (.obj .glb .gltf .ply .stl .off) or {SAMPLE_PREFIX}NAME[?param=value&...] "
+                     "for a level from an installed level generator (see `g2s plugins --stage levels`)")
     run.add_argument("-o", "--outdir", type=Path, required=True, help="folder for the results")
     _add_output_options(run)
 
     commands.add_parser("presets", parents=[common], help="list the preset configs and what each is for")
 
-    plugins = commands.add_parser("plugins", parents=[common], help="list installed plugins and their parameters")
-    plugins.add_argument("--stage", choices=list(STAGES), help="only this stage (its config key)")
+    plugins = commands.add_parser("plugins", parents=[common],
+                                  help="list installed plugins and their parameters, and broken ones")
+    plugins.add_argument("--stage", choices=[stage.key for stage in STAGES], help="only this stage")
 
     demo = commands.add_parser("demo", parents=[common], help="run the full pipeline on the built-in dungeon sample")
     demo.add_argument("-o", "--outdir", type=Path, default=Path("g2s-demo"), help="folder for the results (default: g2s-demo)")
@@ -66,15 +77,12 @@ def _parser() -> argparse.ArgumentParser:
     return parser
 
 
-def _presets_epilog() -> str:
-    return "presets:\n" + "\n".join(_columns(list(presets().items()), width=80, indent=2))
-
-
 def _add_output_options(command: argparse.ArgumentParser) -> None:
     command.add_argument(
         "--format",
         metavar="FORMATS",
-        help=f"comma-separated output formats, overriding the config's outputs.formats: {', '.join(WRITERS)} "
+        help=f"comma-separated output formats, overriding the config's outputs.formats: any installed writer "
+        f"({', '.join(writers())}) "
         f"(default: the config's, else {','.join(DEFAULT_FORMATS)})",
     )
     command.add_argument("--set", action="append", default=[], metavar="KEY=VALUE", dest="overrides",
@@ -101,6 +109,11 @@ def main(argv: Sequence[str] | None = None) -> int:
         if args.verbose:
             traceback.print_exc()
         return 2
+    except PluginFailure as exc:  # the plugin's authors can fix it, not the user, not us
+        errors.print(f"g2s: error: {exc}", markup=False, highlight=False, soft_wrap=True)
+        if args.verbose:
+            traceback.print_exc()
+        return 3
     except KeyboardInterrupt:
         errors.print("g2s: interrupted", markup=False)
         return 130
@@ -118,9 +131,9 @@ def _run(args: argparse.Namespace, errors: Console) -> int:
     formats = _formats(args, config, source)
     protect = [] if args.mesh.startswith(SAMPLE_PREFIX) else [Path(args.mesh)]
     check_outdir(args.outdir, formats, args.force, protect)
-    registry = Registry.from_entry_points()
+    registry = installed()
     plan = pipeline.plan(config, registry, source=source)
-    mesh = api.open_mesh(args.mesh, config)
+    mesh = api.open_mesh(args.mesh, config, registry=registry)
     if mesh.cleaning:
         removed = ", ".join(f"{count} {what.replace('_', ' ')}" for what, count in mesh.cleaning.items())
         _status(args, errors, f"cleaning removed {removed}")
@@ -131,10 +144,10 @@ def _demo(args: argparse.Namespace, errors: Console) -> int:
     config, source = resolve_config("demo", _overrides(args), overrides_source="--set")
     formats = _formats(args, config, source)
     check_outdir(args.outdir, formats, args.force)
-    registry = Registry.from_entry_points()
+    registry = installed()
     plan = pipeline.plan(config, registry, source=source)
-    level = samples.dungeon(seed=args.seed, rooms=args.rooms)
-    mesh = api.open_mesh(level.mesh, config, name=f"{level.name} (seed {args.seed}, {args.rooms} rooms)")
+    spec = f"{SAMPLE_PREFIX}dungeon?seed={args.seed}&rooms={args.rooms}"
+    mesh = api.open_mesh(spec, config, name=f"dungeon (seed {args.seed}, {args.rooms} rooms)", registry=registry)
     code = _execute(args, errors, registry, plan, mesh, formats)
     if code == 0 and not (args.quiet or args.json):
         Console().print(_demo_hint(args.outdir, formats), markup=False, highlight=False, soft_wrap=True)
@@ -180,7 +193,7 @@ def _execute(
     quiet = args.quiet or args.json
     with _progress(errors, quiet) as say:
         result = api.execute(plan, registry, mesh, progress=say)
-        written = api.write_result(result, args.outdir, formats, force=args.force, progress=say)
+        written = api.write_result(result, args.outdir, formats, force=args.force, progress=say, registry=registry)
     if args.json:
         print(json.dumps(_summary(result, args.outdir, formats, written), indent=1, sort_keys=True))
         return 0
@@ -248,12 +261,12 @@ def stage_table(result: RunResult, title: str = "") -> Table:
 
 def _plugins(args: argparse.Namespace) -> int:
     """Plugins under their stage's config key; parameters in two columns wrapped to the terminal."""
-    registry = Registry.from_entry_points()
+    registry = installed()
     console = Console()
     lines = []
-    for stage in STAGES if args.stage is None else (args.stage,):
-        lines.append(stage)
-        for info in registry.plugins(stage):
+    for stage in STAGES if args.stage is None else [s for s in STAGES if s.key == args.stage]:
+        lines.append(stage.key)
+        for info in registry.plugins(stage.key):
             lines.append(f"  {info.name}  ({info.package})")
             if info.summary:
                 lines.extend(_columns([("", info.summary)], console.width, indent=4))
@@ -261,13 +274,17 @@ def _plugins(args: argparse.Namespace) -> int:
                           for name, accepted, default, description in plugin_parameters(info)]
             lines.extend(_columns(parameters, console.width, indent=6))
     console.print("\n".join(lines), markup=False, highlight=False, soft_wrap=True)
+    for broken in registry.broken:
+        if args.stage is None or broken.entry_point.split(".")[0] == args.stage:
+            console.print(f"[bold red]broken[/bold red] {broken.entry_point}  ({broken.package})")
+            console.print(f"  {broken.target} failed to load: {broken.reason}", markup=False, highlight=False)
     return 0
 
 
 def _presets() -> int:
     console = Console()
-    lines = _columns(list(presets().items()), console.width, indent=0)
-    console.print("\n".join(lines), markup=False, highlight=False, soft_wrap=True)
+    console.print("\n".join(_columns(list(presets().items()), console.width, indent=0)),
+                  markup=False, highlight=False, soft_wrap=True)
     return 0
 
 

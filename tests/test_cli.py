@@ -11,6 +11,7 @@ from pathlib import Path
 import pytest
 
 from g2s_core.cli import main
+from g2s_core.stages import STAGES
 from tests.conftest import PROJECT
 
 G2S = [sys.executable, "-m", "g2s_core.cli"]
@@ -161,5 +162,4 @@ def test_plugins_listing_fits_80_columns():
     assert proc.returncode == 0, proc.stderr
     lines = proc.stdout.splitlines()
     assert max(len(line) for line in lines) <= 80
-    assert [line for line in lines if line and not line.startswith(" ")] == [
-        "graph", "terminals", "steiner", "roots", "simplify", "analyzers"]
+    assert [line for line in lines if line and not line.startswith(" ")] == [stage.key for stage in STAGES]
