@@ -185,6 +185,8 @@ class RunResult:
     stages: list[StageStats] = field(default_factory=list)
     mesh_path: Path | None = None
     """The mesh file the run read (never overwritten by :meth:`write`), if any."""
+    formats: tuple[str, ...] = ()
+    """The output formats this run's results are written in (set by the writer before writing)."""
 
     @property
     def warnings(self) -> list[str]:
