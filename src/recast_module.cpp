@@ -1018,6 +1018,18 @@ using Vec3In = std::array<double, 3>;
 using ExtIn = std::optional<std::array<double, 3>>;
 using PointsIn = nb::ndarray<const double, nb::shape<-1, 3>, nb::c_contig, nb::device::cpu>;
 
+// fn(a, b) for every row pair of the (N,3) A and B (float64 rows), with the GIL released
+// and the query lock held (Detour's query object is not reentrant).
+template <typename T, typename Fn>
+std::vector<T> map_row_pairs(const NavMeshCore& n, const PointsIn& A, const PointsIn& B, Fn fn) {
+    if (A.shape(0) != B.shape(0)) throw nb::value_error("A and B must have the same length");
+    std::vector<T> out(A.shape(0));
+    nb::gil_scoped_release release;
+    std::lock_guard<std::mutex> lock(n.mutex);
+    for (size_t i = 0; i < out.size(); ++i) out[i] = fn(A.data() + i * 3, B.data() + i * 3);
+    return out;
+}
+
 void get3(const Vec3In& a, float* out) {
     for (int i = 0; i < 3; ++i) out[i] = static_cast<float>(a[i]);
 }
@@ -1115,26 +1127,15 @@ NB_MODULE(_recast, m) {
              "(clear, t): Detour raycast from the polygon nearest a towards b, plus the height check at b")
         .def("raycast_many",
              [](const NavMeshCore& n, PointsIn A, PointsIn B, ExtIn extents) {
-                 if (A.shape(0) != B.shape(0)) throw nb::value_error("A and B must have the same length");
                  float ext[3] = {n.default_ext[0], n.default_ext[1], n.default_ext[2]};
                  if (extents) get3(*extents, ext);
-                 const size_t N = A.shape(0);
-                 std::vector<uint8_t> out(N, 0);
-                 const double* pa = A.data();
-                 const double* pb = B.data();
-                 {
-                     nb::gil_scoped_release release;
-                     std::lock_guard<std::mutex> lock(n.mutex);
-                     std::vector<dtPolyRef> path(256);
-                     for (size_t i = 0; i < N; ++i) {
-                         float a[3], b[3];
-                         for (int k = 0; k < 3; ++k) {
-                             a[k] = static_cast<float>(pa[i * 3 + k]);
-                             b[k] = static_cast<float>(pb[i * 3 + k]);
-                         }
-                         out[i] = n.ray(a, b, ext, path).first ? 1 : 0;
-                     }
-                 }
+                 std::vector<dtPolyRef> path(256);
+                 const std::vector<uint8_t> out = map_row_pairs<uint8_t>(n, A, B, [&](const double* pa, const double* pb) {
+                     const float a[3] = {static_cast<float>(pa[0]), static_cast<float>(pa[1]), static_cast<float>(pa[2])};
+                     const float b[3] = {static_cast<float>(pb[0]), static_cast<float>(pb[1]), static_cast<float>(pb[2])};
+                     return static_cast<uint8_t>(n.ray(a, b, ext, path).first ? 1 : 0);
+                 });
+                 const size_t N = out.size();
                  auto* buf = new uint8_t[N ? N : 1];
                  std::copy(out.begin(), out.end(), buf);
                  nb::capsule owner(buf, [](void* p) noexcept { delete[] static_cast<uint8_t*>(p); });
@@ -1145,32 +1146,21 @@ NB_MODULE(_recast, m) {
              "(N,) bool: raycast(A[i], B[i]).clear for every row, GIL released")
         .def("segment_surface_gaps",
              [](const NavMeshCore& n, PointsIn A, PointsIn B, double step, float horizontal, float reach) {
-                 if (A.shape(0) != B.shape(0)) throw nb::value_error("A and B must have the same length");
                  if (!(step > 0)) throw nb::value_error("step must be positive");
-                 const size_t S = A.shape(0);
-                 std::vector<double> out(S, 0.0);
-                 const double* pa = A.data();
-                 const double* pb = B.data();
-                 {
-                     nb::gil_scoped_release release;
-                     std::lock_guard<std::mutex> lock(n.mutex);
-                     for (size_t s = 0; s < S; ++s) {
-                         const double* a = pa + s * 3;
-                         const double* b = pb + s * 3;
-                         const double length = std::hypot(b[0] - a[0], b[2] - a[2]);
-                         const long pieces = std::max(1L, static_cast<long>(std::ceil(length / step - 1e-9)));
-                         float worst = 0.0f;
-                         for (long i = 0; i <= pieces && worst != FLT_MAX; ++i) {
-                             const double t = static_cast<double>(i) / static_cast<double>(pieces);
-                             const float p[3] = {static_cast<float>(a[0] + t * (b[0] - a[0])),
-                                                 static_cast<float>(a[1] + t * (b[1] - a[1])),
-                                                 static_cast<float>(a[2] + t * (b[2] - a[2]))};
-                             worst = std::max(worst, n.surface_gap(p, horizontal, reach));
-                         }
-                         out[s] = worst == FLT_MAX ? std::numeric_limits<double>::infinity() : worst;
+                 const std::vector<double> out = map_row_pairs<double>(n, A, B, [&](const double* a, const double* b) {
+                     const double length = std::hypot(b[0] - a[0], b[2] - a[2]);
+                     const long pieces = std::max(1L, static_cast<long>(std::ceil(length / step - 1e-9)));
+                     float worst = 0.0f;
+                     for (long i = 0; i <= pieces && worst != FLT_MAX; ++i) {
+                         const double t = static_cast<double>(i) / static_cast<double>(pieces);
+                         const float p[3] = {static_cast<float>(a[0] + t * (b[0] - a[0])),
+                                             static_cast<float>(a[1] + t * (b[1] - a[1])),
+                                             static_cast<float>(a[2] + t * (b[2] - a[2]))};
+                         worst = std::max(worst, n.surface_gap(p, horizontal, reach));
                      }
-                 }
-                 return to_numpy(out, S, 0);
+                     return worst == FLT_MAX ? std::numeric_limits<double>::infinity() : static_cast<double>(worst);
+                 });
+                 return to_numpy(out, out.size(), 0);
              },
              nb::arg("A"), nb::arg("B"), nb::arg("step"), nb::arg("horizontal"), nb::arg("reach"),
              "(S,) float64: the largest vertical distance to the walkable surface (see surface_gap) over "

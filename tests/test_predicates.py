@@ -25,18 +25,19 @@ class SquareWithWall:
     where it is stopped (``inf`` when clear)."""
 
     settings = {"cell_size": 0.25}
-    detail_vertices = np.array([[0.0, 0.0, 0.0], [10.0, 0.0, 0.0], [10.0, 0.0, 10.0], [0.0, 0.0, 10.0]])
-    detail_triangles = np.array([[0, 2, 1], [0, 3, 2]])
 
     def __init__(self):
         self.calls = []
 
-    def nearest_poly(self, p, extents):
-        """The floor point under or over ``p`` when it lies on the square within the extents."""
-        x, y, z = (float(v) for v in p)
-        if 0.0 <= x <= 10.0 and 0.0 <= z <= 10.0 and abs(y) <= extents[1]:
-            return 0, np.array([x, 0.0, z])
-        return -1, np.array([x, y, z])
+    def segment_surface_gaps(self, A, B, step, reach):
+        """Largest height above or below the floor along each segment (``inf``: off the square or beyond reach)."""
+        gaps = []
+        for a, b in zip(np.reshape(A, (-1, 3)), np.reshape(B, (-1, 3))):
+            points = a + np.linspace(0.0, 1.0, 101)[:, None] * (b - a)
+            on = ((points[:, [0, 2]] >= 0.0) & (points[:, [0, 2]] <= 10.0)).all(axis=1)
+            gap = np.abs(points[:, 1]).max()
+            gaps.append(gap if on.all() and gap <= reach else math.inf)
+        return np.array(gaps)
 
     @staticmethod
     def _inside(p):

@@ -78,7 +78,9 @@ def navmesh_graph(navmesh: NavMesh, agent: AgentConfig | None = None, max_edge_g
     )
     ends = portals.endpoints.tolist()
     crossing = np.zeros(len(pairs), dtype=bool)
-    if max_edge_gap is not None and agent is not None and len(pairs):
+    if max_edge_gap is not None and agent is None:
+        raise ValueError("max_edge_gap needs the agent (its radius spaces the probes)")
+    if max_edge_gap is not None and len(pairs):
         gaps = navmesh.segment_surface_gaps(
             centres[pairs[:, 0]], centres[pairs[:, 1]], 0.5 * float(agent.radius), 2.0 * float(agent.height)
         )
