@@ -20,12 +20,12 @@ from rich.table import Table
 
 from g2s_core import pipeline
 from g2s_plugins.samples import levels as samples
-from g2s_core.config import PRESETS_DIR, load_config, parse_config, load_raw_config
+from g2s_core.config import PRESETS_DIR, load_config, load_raw_config, named_files, parse_config
 from g2s_core.errors import G2SError
 from g2s_core.hookspecs import STAGE_TITLES
 from g2s_core.mesh import load_mesh, mesh_sha256, prepare_mesh
 from g2s_core.model import RunResult
-from g2s_plugins.outputs import DEFAULT_FORMATS, WRITERS, check_outdir, parse_formats, prepare_outdir, write_outputs
+from g2s_plugins.outputs import DEFAULT_FORMATS, WRITERS, check_outdir, parse_formats, write_outputs
 from g2s_plugins.outputs.common import STEP_ROWS, final_graph, roots_of, stage_rows
 from g2s_core.registry import Registry, plugin_parameters
 
@@ -98,9 +98,12 @@ def main(argv: Sequence[str] | None = None) -> int:
 
 
 def _run(args: argparse.Namespace, errors: Console) -> int:
-    config = load_config(args.config)
+    sources: list[Path] = []
+    config = load_config(args.config, sources)
     formats = _formats(args, config, str(args.config))
-    protect = [] if args.mesh.startswith(SAMPLE_PREFIX) else [Path(args.mesh)]
+    protect = [*sources, *named_files(config)]
+    if not args.mesh.startswith(SAMPLE_PREFIX):
+        protect.append(Path(args.mesh))
     check_outdir(args.outdir, formats, args.force, protect)
     registry = Registry.from_entry_points()
     plan = pipeline.plan(config, registry, source=str(args.config))
@@ -117,6 +120,9 @@ def _run(args: argparse.Namespace, errors: Console) -> int:
 
 
 def _demo(args: argparse.Namespace, errors: Console) -> int:
+    for option, value, least in (("--rooms", args.rooms, 1), ("--seed", args.seed, 0)):
+        if value < least:
+            raise G2SError(f"{option}: expected an integer >= {least}, got {value}")
     raw = load_raw_config(PRESETS_DIR / "demo.yaml")
     config = parse_config(raw, source="configs/demo.yaml")
     formats = _formats(args, config, "configs/demo.yaml")
@@ -178,8 +184,7 @@ def _execute(
     quiet = args.quiet or args.json
     with _progress(errors, quiet) as say:
         result = pipeline.run(plan, registry, mesh, mesh_name, sha, progress=say)
-        prepare_outdir(args.outdir, formats, args.force, protect)
-        written = write_outputs(result, args.outdir, formats, replace=args.force, progress=say)
+        written = write_outputs(result, args.outdir, formats, replace=args.force, progress=say, protect=protect)
     if args.json:
         print(json.dumps(_summary(result, args.outdir, formats, written), indent=1, sort_keys=True))
         return 0

@@ -19,6 +19,7 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationError
 from pydantic.fields import FieldInfo
 
 from g2s_core.errors import ConfigError
+from g2s_core.input_files import parse_nested, read_text
 
 PRESETS_DIR = Path(__file__).resolve().parent.parent / "configs"
 """The project's preset configs (``extends: map_analysis`` finds them here)."""
@@ -28,7 +29,7 @@ STAGES = ("graph", "terminals", "steiner", "roots", "simplify", "analyzers")
 
 
 class _Section(BaseModel):
-    model_config = ConfigDict(extra="forbid", frozen=True)
+    model_config = ConfigDict(extra="forbid", frozen=True, allow_inf_nan=False)
 
 
 class AgentConfig(_Section):
@@ -92,14 +93,9 @@ class RunConfig(_Section):
 
 
 def _read_yaml(path: Path) -> dict[str, Any]:
+    text = read_text(path, "config file", ConfigError)
     try:
-        text = path.read_text(encoding="utf-8")
-    except FileNotFoundError:
-        raise ConfigError(f"{path}: no such config file") from None
-    except OSError as exc:
-        raise ConfigError(f"{path}: cannot read config ({exc.strerror})") from None
-    try:
-        data = yaml.safe_load(text)
+        data = parse_nested(text, yaml.safe_load, str(path), ConfigError)
     except yaml.YAMLError as exc:
         mark = getattr(exc, "problem_mark", None)
         where = f" at line {mark.line + 1}, column {mark.column + 1}" if mark else ""
@@ -134,24 +130,59 @@ def _deep_merge(base: dict[str, Any], override: dict[str, Any]) -> dict[str, Any
     return merged
 
 
-def load_raw_config(path: str | Path, _chain: tuple[Path, ...] = ()) -> dict[str, Any]:
-    """Read a YAML config and everything it ``extends:``, merged, unvalidated."""
+def load_raw_config(path: str | Path, _chain: tuple[Path, ...] = (), sources: list[Path] | None = None) -> dict[str, Any]:
+    """Read a YAML config and everything it ``extends:``, merged, unvalidated.
+
+    Every file read is appended to ``sources`` when given.
+    """
     path = Path(path)
     resolved = path.resolve()
     if resolved in _chain:
         cycle = " -> ".join(p.name for p in (*_chain, resolved))
         raise ConfigError(f"{path}: extends: cycle {cycle}")
     data = _read_yaml(path)
+    if sources is not None:
+        sources.append(path)
     parent_name = data.pop("extends", None)
     if parent_name is None:
         return data
     parent_path = _resolve_extends(parent_name, resolved.parent, path)
-    return _deep_merge(load_raw_config(parent_path, (*_chain, resolved)), data)
+    return _deep_merge(load_raw_config(parent_path, (*_chain, resolved), sources), data)
 
 
-def load_config(path: str | Path) -> RunConfig:
-    """Read, merge and validate a config file (plugin parameters are validated by the registry)."""
-    return parse_config(load_raw_config(path), source=str(path))
+def load_config(path: str | Path, sources: list[Path] | None = None) -> RunConfig:
+    """Read, merge and validate a config file (plugin parameters are validated by the registry).
+
+    Every config file read (``path`` and what it extends) is appended to ``sources`` when given.
+    """
+    return parse_config(load_raw_config(path, sources=sources), source=str(path))
+
+
+def named_files(config: RunConfig) -> list[Path]:
+    """Existing files named by the stages' parameters (e.g. a points ``file``).
+
+    They are inputs of the run, which a run never overwrites; any string
+    parameter naming an existing file counts, so third-party plugins' files
+    are covered without declaring them.
+    """
+    found: list[Path] = []
+    pending: list[Any] = [s.params for s in (*(getattr(config, n) for n in STAGES[:-1]), *config.analyzers) if s]
+    while pending:
+        value = pending.pop()
+        if isinstance(value, dict):
+            pending.extend(value.values())
+        elif isinstance(value, list):
+            pending.extend(value)
+        elif isinstance(value, str) and _is_file(Path(value)):
+            found.append(Path(value))
+    return found
+
+
+def _is_file(path: Path) -> bool:
+    try:
+        return path.is_file()
+    except (OSError, ValueError):
+        return False
 
 
 def parse_config(data: dict[str, Any], source: str = "<config>") -> RunConfig:
@@ -266,6 +297,8 @@ def describe_validation_error(exc: ValidationError, model: type[BaseModel], pref
     if kind in {"model_type", "dict_type", "model_attributes_type"}:
         return f"{path}: expected a mapping, got {_show(error.get('input'))}"
     info = _field_at(model, loc)
+    if kind == "finite_number":
+        return f"{path}: expected a finite number, got {_show(error.get('input'))}"
     if info is not None:
         return f"{path}: expected {describe_field(info)}, got {_show(error.get('input'))}"
     return f"{path}: {error['msg'][0].lower()}{error['msg'][1:]}, got {_show(error.get('input'))}"

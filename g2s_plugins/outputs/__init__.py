@@ -1,8 +1,9 @@
 """Writers of a run's results, chosen by format name in the config or on the CLI.
 
 Every writer takes the :class:`~g2s_core.model.RunResult` and the output folder
-and returns the paths it wrote. Files are written atomically (temporary file in
-the same folder, then rename), so a failed run never leaves half a file.
+and returns the paths it wrote. The writers of a run write into one staging
+folder whose files then move into the output folder together
+(:mod:`g2s_core.result_folder`), so a failed run never leaves half a result.
 
 =========  ==========================================  =====================================
 format     files                                       what
@@ -21,19 +22,19 @@ See ``docs/outputs.md`` for the details of each format.
 from __future__ import annotations
 
 import importlib
-import os
 from collections.abc import Callable, Sequence
 from pathlib import Path
 
 from g2s_core.errors import G2SError
 from g2s_core.model import RunResult
+from g2s_core.result_folder import check_writable, same_file, staged
 from g2s_plugins.outputs.structure_json import LoadedResult, load_result
 
 Writer = Callable[[RunResult, Path], list[Path]]
 
 __all__ = [
     "DEFAULT_FORMATS", "RESULT_FILES", "WRITERS", "LoadedResult", "Writer",
-    "check_outdir", "load_result", "parse_formats", "prepare_outdir", "result_paths", "write_outputs",
+    "check_outdir", "load_result", "parse_formats", "result_paths", "write_outputs",
 ]
 
 def _lazy(module: str) -> Writer:
@@ -104,18 +105,19 @@ def check_outdir(outdir: Path, formats: Sequence[str], force: bool, protect: Seq
 
     Any result file of any format already in ``outdir`` counts as an earlier
     result and is refused unless ``force``. The files in ``protect`` (the
-    input mesh) are never written or removed, even with ``force``.
+    input mesh, config and points files) are never written or removed, even
+    with ``force``.
 
     Raises:
-        G2SError: unknown format, ``outdir`` is a file, results exist without
-            ``force``, or a result file would be an input file.
+        G2SError: unknown format, ``outdir`` cannot be created or written,
+            results exist without ``force``, or a result file would be an
+            input file.
     """
     parse_formats(formats)
-    if outdir.exists() and not outdir.is_dir():
-        raise G2SError(f"{outdir}: exists and is not a folder")
+    check_writable(outdir)
     for path in result_paths(outdir):
         for guarded in protect:
-            if _same_file(path, Path(guarded)):
+            if same_file(path, Path(guarded)):
                 raise G2SError(
                     f"{outdir}: the input {guarded} has the name of a result file ({path.name}); "
                     "choose another output folder"
@@ -125,40 +127,26 @@ def check_outdir(outdir: Path, formats: Sequence[str], force: bool, protect: Seq
         raise G2SError(f"{outdir}: already holds results ({', '.join(existing)}); use --force to replace them")
 
 
-def prepare_outdir(outdir: Path, formats: Sequence[str], force: bool, protect: Sequence[Path] = ()) -> None:
-    """:func:`check_outdir`, then create ``outdir`` (and its parents)."""
-    check_outdir(outdir, formats, force, protect)
-    outdir.mkdir(parents=True, exist_ok=True)
-
-
 def write_outputs(
     result: RunResult,
     outdir: Path,
     formats: Sequence[str],
     replace: bool = False,
     progress: Callable[[str], None] | None = None,
+    protect: Sequence[Path] = (),
 ) -> list[Path]:
-    """Write every requested format into ``outdir`` (prepared by :func:`prepare_outdir`).
+    """Write every requested format into ``outdir``, all files at once or none (see :mod:`g2s_core.result_folder`).
 
-    With ``replace`` (``--force``), result files of the formats not requested
-    that an earlier run left are removed once the new ones are written, so the
-    folder never mixes two runs.
+    :func:`check_outdir` is applied first. With ``replace`` (``--force``),
+    result files of the formats not requested that an earlier run left are
+    removed in the same step, so the folder never mixes two runs.
     """
-    written: list[Path] = []
-    for fmt in parse_formats(formats):
-        if progress is not None:
-            progress(f"writing {fmt}")
-        written.extend(WRITERS[fmt](result, outdir))
-    if replace:
-        keep = {p.resolve() for p in written}
-        for path in result_paths(outdir):
-            if path.exists() and path.resolve() not in keep:
-                path.unlink()
-    return written
-
-
-def _same_file(a: Path, b: Path) -> bool:
-    try:
-        return a.exists() and b.exists() and os.path.samefile(a, b)
-    except OSError:
-        return False
+    check_outdir(outdir, formats, replace, protect)
+    obsolete = [p for p in result_paths(outdir) if p.exists()] if replace else []
+    names: list[str] = []
+    with staged(outdir, obsolete, protect) as staging:
+        for fmt in parse_formats(formats):
+            if progress is not None:
+                progress(f"writing {fmt}")
+            names.extend(path.name for path in WRITERS[fmt](result, staging))
+    return [outdir / name for name in names]

@@ -18,6 +18,7 @@ the navmesh build time) and the g2s version go to ``run.json`` instead.
 
 from __future__ import annotations
 
+import functools
 import importlib.metadata
 import json
 import platform
@@ -25,10 +26,12 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+import jsonschema
 import networkx as nx
 import numpy as np
 
 from g2s_core.errors import G2SError
+from g2s_core.input_files import parse_nested, read_text
 from g2s_core.model import Opening, RunResult, StageStats, Terminals, vec3
 from g2s_plugins.outputs.common import edge_list, final_graph, number, roots_of, terminal_ids, vector
 from g2s_plugins.outputs.files import atomic_write
@@ -291,28 +294,46 @@ class LoadedResult:
 def load_result(path: str | Path) -> LoadedResult:
     """Read a ``structure.json`` (or the folder holding one) back.
 
+    The document is checked against ``structure.schema.json`` before use.
+
     Raises:
-        G2SError: the file is missing, not JSON, not a g2s structure file, or
-            of a schema version this g2s does not read.
+        G2SError: the file is missing, not a regular UTF-8 file, not JSON, not
+            a g2s structure file, of a schema version this g2s does not read,
+            or malformed (the message names the file and the field).
     """
     path = Path(path)
     if path.is_dir():
         path = path / STRUCTURE_FILE
+    text = read_text(path, "structure file")
     try:
-        document = json.loads(path.read_text(encoding="utf-8"))
-    except FileNotFoundError:
-        raise G2SError(f"{path}: no such file") from None
-    except (OSError, UnicodeDecodeError, json.JSONDecodeError) as exc:
-        raise G2SError(f"{path}: not a readable JSON file ({exc})") from None
+        document = parse_nested(text, json.loads, str(path))
+    except json.JSONDecodeError as exc:
+        raise G2SError(f"{path}: invalid JSON at line {exc.lineno}, column {exc.colno}: {exc.msg}") from None
     if not isinstance(document, dict) or document.get("format") != "g2s-structure":
         raise G2SError(f"{path}: not a g2s structure.json file")
     version = document.get("schema_version")
     if version != SCHEMA_VERSION:
         raise G2SError(f"{path}: schema_version {version!r} is not supported (this g2s reads {SCHEMA_VERSION})")
+    problem = jsonschema.exceptions.best_match(_schema_validator().iter_errors(document))
+    if problem is not None:
+        field = "".join(f"[{p}]" if isinstance(p, int) else f".{p}" for p in problem.absolute_path).lstrip(".")
+        raise G2SError(f"{path}: {field or '(top level)'}: {_shorten(problem.message)}")
     try:
         return _loaded(document, path)
-    except (KeyError, TypeError, ValueError) as exc:
+    except (KeyError, TypeError, ValueError, OverflowError) as exc:  # what the schema cannot say, e.g. a parent id
         raise G2SError(f"{path}: malformed structure file ({type(exc).__name__}: {exc})") from None
+
+
+@functools.cache
+def _schema_validator() -> jsonschema.protocols.Validator:
+    schema = json.loads(SCHEMA_PATH.read_text(encoding="utf-8"))
+    return jsonschema.validators.validator_for(schema)(schema)
+
+
+def _shorten(message: str, limit: int = 160) -> str:
+    """A validator message cut to one short line (it quotes the offending value in full)."""
+    line = " ".join(message.split())
+    return line if len(line) <= limit else line[: limit - 3] + "..."
 
 
 def _loaded(document: dict[str, Any], path: Path) -> LoadedResult:
@@ -383,10 +404,10 @@ def _edges_graph(data: dict[str, Any] | None, directed: bool) -> nx.Graph | None
 def _stages(document: dict[str, Any], run_path: Path) -> list[StageStats]:
     seconds: dict[str, float] = {}
     try:
-        run = json.loads(run_path.read_text(encoding="utf-8"))
+        run = parse_nested(read_text(run_path, "run file"), json.loads, str(run_path))
         if run.get("mesh", {}).get("sha256") == document["mesh"]["sha256"]:
             seconds = {s["stage"]: float(s["seconds"]) for s in run.get("stages", [])}
-    except (OSError, ValueError, TypeError, KeyError, AttributeError):
+    except (G2SError, ValueError, TypeError, KeyError, AttributeError):  # timings are optional: a bad run.json is ignored
         seconds = {}
     return [
         StageStats(s["stage"], seconds.get(s["stage"], float("nan")), s["nodes"], s["edges"], s["terminals"])

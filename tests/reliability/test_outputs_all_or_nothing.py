@@ -1,0 +1,219 @@
+"""The output folder: refused before any work when it cannot be written; a run's files appear
+all together or not at all; --force never replaces an input."""
+
+from __future__ import annotations
+
+import os
+import resource
+import shutil
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+
+from g2s_core.errors import G2SError
+from g2s_core.result_folder import STAGING_MARK, staged
+from g2s_plugins import outputs
+from tests.reliability.checks import CORRIDOR, assert_clean_error, run_g2s, run_g2s_process, snapshot, tree
+
+# --- an output folder that cannot be made -----------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    "where, says",
+    [
+        (lambda tmp: Path("/proc/g2s-results"), "cannot write results there"),
+        (lambda tmp: tmp / "afile" / "sub", "is a file"),
+        (lambda tmp: tmp / "afile", "exists and is not a folder"),
+        (lambda tmp: tmp / "afile" / "a" / "b", "is a file"),
+    ],
+    ids=["proc", "below-a-file", "a-file", "deep-below-a-file"],
+)
+def test_unwritable_outdir_found_before_any_work(where, says, tmp_path, quick_config, capsys):
+    (tmp_path / "afile").write_text("mine\n")
+    outdir = where(tmp_path)
+    # the mesh does not exist: a message about the folder proves it was checked first
+    outcome = run_g2s(capsys, "run", quick_config, tmp_path / "missing.obj", "-o", outdir)
+    assert_clean_error(outcome, str(outdir), says)
+    assert (tmp_path / "afile").read_text() == "mine\n"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["afile", "quick.yaml"]
+
+
+def test_unwritable_outdir_demo(tmp_path, capsys):
+    (tmp_path / "afile").write_text("")
+    assert_clean_error(run_g2s(capsys, "demo", "-o", tmp_path / "afile" / "out"), "afile", "is a file")
+
+
+# --- all or nothing --------------------------------------------------------------------------------
+
+
+def _failing_writer(result, outdir):
+    (outdir / "half.txt").write_text("half")
+    raise OSError(28, "No space left on device")
+
+
+def _interrupted_writer(result, outdir):
+    (outdir / "half.txt").write_text("half")
+    raise KeyboardInterrupt
+
+
+@pytest.mark.parametrize("existing", [False, True], ids=["new-folder", "existing-folder"])
+@pytest.mark.parametrize("writer, code", [(_failing_writer, 2), (_interrupted_writer, 130)], ids=["disk-full", "ctrl-c"])
+def test_a_failing_writer_leaves_nothing(writer, code, existing, tmp_path, quick_config, capsys, monkeypatch):
+    out = tmp_path / "deeper" / "out"
+    if existing:
+        out.mkdir(parents=True)
+        (out / "notes.txt").write_text("mine\n")
+    before = tree(tmp_path)
+    # json is written first and succeeds; the failing format comes after it
+    monkeypatch.setitem(outputs.WRITERS, "png", writer)
+    outcome = run_g2s(capsys, "run", quick_config, CORRIDOR, "-o", out, "--format", "json,png")
+    assert outcome.code == code, outcome.stderr
+    assert "Traceback" not in outcome.stderr
+    if code == 2:
+        assert_clean_error(outcome, str(out), "No space left on device", "nothing was written")
+    assert tree(tmp_path) == before  # not a file, not a staging folder, not the parent folders
+
+
+def test_forced_rerun_that_fails_keeps_the_earlier_results(tmp_path, quick_config, capsys, monkeypatch):
+    out = tmp_path / "out"
+    assert run_g2s(capsys, "run", quick_config, CORRIDOR, "-o", out, "--format", "json,graph").code == 0
+    before = snapshot(out.iterdir())
+    monkeypatch.setitem(outputs.WRITERS, "png", _failing_writer)
+    outcome = run_g2s(capsys, "run", quick_config, CORRIDOR, "-o", out, "--format", "json,png", "--force")
+    assert_clean_error(outcome, str(out))
+    assert snapshot(out.iterdir()) == before
+
+
+def test_forced_rerun_replaces_all_results_at_once(tmp_path, quick_config, capsys):
+    out = tmp_path / "out"
+    assert run_g2s(capsys, "run", quick_config, CORRIDOR, "-o", out, "--format", "json,graph").code == 0
+    (out / "notes.txt").write_text("mine\n")
+    assert run_g2s(capsys, "run", quick_config, CORRIDOR, "-o", out, "--format", "graph", "--force").code == 0
+    assert tree(out) == ["graph.json", "notes.txt"]  # the json format's files of the earlier run are gone
+
+
+def test_file_size_limit_leaves_nothing(tmp_path, quick_config, capsys):
+    """``ulimit -f``: the write of the largest file fails (EFBIG), after the others were written."""
+    sizes = tmp_path / "sizes"
+    assert run_g2s(capsys, "run", quick_config, CORRIDOR, "-o", sizes, "--format", "json,graph").code == 0
+    largest = max(p.stat().st_size for p in sizes.iterdir())
+    assert sorted(p.stat().st_size for p in sizes.iterdir())[0] < largest
+    shutil.rmtree(sizes)
+    out = tmp_path / "out"
+
+    def limit_file_size():
+        resource.setrlimit(resource.RLIMIT_FSIZE, (largest - 1, largest - 1))
+
+    outcome = run_g2s_process("run", quick_config, CORRIDOR, "-o", out, "--format", "json,graph",
+                              preexec_fn=limit_file_size)
+    assert_clean_error(outcome, str(out), "File too large", "nothing was written")
+    assert tree(tmp_path) == ["quick.yaml"]
+
+
+def test_ctrl_c_while_running_leaves_nothing(tmp_path):
+    """A real SIGINT to a real process, part way through a demo run."""
+    out = tmp_path / "out"
+    proc = subprocess.Popen([sys.executable, "-m", "g2s_core.cli", "demo", "-o", str(out), "--rooms", "300"],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    maps = Path(f"/proc/{proc.pid}/maps")
+    deadline = time.monotonic() + 120
+    # the Recast extension is loaded with the plugins, once the command runs (not while Python starts)
+    while proc.poll() is None and time.monotonic() < deadline and "recast" not in maps.read_text():
+        time.sleep(0.05)
+    time.sleep(1.0)
+    proc.send_signal(signal.SIGINT)
+    _, stderr = proc.communicate(timeout=120)
+    if proc.returncode == 0:
+        pytest.skip("the run finished before the signal came")
+    assert proc.returncode == 130, stderr
+    assert "Traceback" not in stderr
+    assert tree(tmp_path) == []
+
+
+def test_leftover_staging_folders_never_block_and_are_removed(tmp_path, quick_config, capsys):
+    out = tmp_path / "out"
+    dead = subprocess.run([sys.executable, "-c", "import os; print(os.getpid())"], capture_output=True, text=True)
+    pid = int(dead.stdout)  # a process that has ended
+    out.mkdir()
+    leftover_inside = out / f"{STAGING_MARK}{pid}-abc"
+    leftover_beside = tmp_path / f".out{STAGING_MARK}{pid}-def"
+    for folder in (leftover_inside, leftover_beside):
+        folder.mkdir()
+        (folder / "structure.json").write_text("{")
+    assert run_g2s(capsys, "run", quick_config, CORRIDOR, "-o", out).code == 0
+    assert tree(out) == ["graph.json"]  # the run into an existing folder stages inside it
+    assert leftover_beside.is_dir()
+    shutil.rmtree(out)
+    assert run_g2s(capsys, "run", quick_config, CORRIDOR, "-o", out).code == 0  # a new folder is staged beside
+    assert not leftover_beside.exists() and tree(out) == ["graph.json"]
+
+
+def test_staging_of_a_live_process_is_left_alone(tmp_path):
+    live = tmp_path / f".out{STAGING_MARK}{os.getpid()}-xyz"
+    live.mkdir()
+    with staged(tmp_path / "out") as staging:
+        (staging / "a.txt").write_text("a")
+    assert live.is_dir() and (tmp_path / "out" / "a.txt").read_text() == "a"
+
+
+def test_staged_api_error_names_the_folder(tmp_path):
+    with pytest.raises(G2SError, match="out: cannot write results"):
+        with staged(tmp_path / "out") as staging:
+            os.mkdir(staging / "x" / "y")
+    assert tree(tmp_path) == []
+
+
+# --- --force never replaces an input ------------------------------------------------------------------------
+
+
+def test_force_never_overwrites_the_config(tmp_path, capsys):
+    out = tmp_path / "out"
+    out.mkdir()
+    config = out / "graph.json"  # YAML is a superset of JSON: a config may have any name
+    config.write_text('{"extends": "graph_only"}\n')
+    before = snapshot([config])
+    outcome = run_g2s(capsys, "run", config, CORRIDOR, "-o", out, "--force")
+    assert_clean_error(outcome, str(config), "graph.json")
+    assert snapshot([config]) == before and tree(out) == ["graph.json"]
+
+
+def test_force_never_overwrites_an_extended_config(tmp_path, capsys):
+    out = tmp_path / "out"
+    out.mkdir()
+    parent = out / "run.json"
+    parent.write_text('{"extends": "graph_only"}\n')
+    child = tmp_path / "child.yaml"
+    child.write_text(f"extends: {parent}\noutputs: {{formats: [graph]}}\n")
+    before = snapshot([parent])
+    assert_clean_error(run_g2s(capsys, "run", child, CORRIDOR, "-o", out, "--force"), "run.json")
+    assert snapshot([parent]) == before
+
+
+def test_force_never_overwrites_the_points_file(tmp_path, capsys):
+    out = tmp_path / "out"
+    out.mkdir()
+    points = out / "structure.json"
+    points.write_text("[[0.5, 0.0, 0.5]]\n")
+    config = tmp_path / "points.yaml"
+    config.write_text(f"extends: graph_only\nterminals: {{plugin: points, params: {{file: '{points}'}}}}\n"
+                      "stop_after: terminals\noutputs: {formats: [json]}\n")
+    before = snapshot([points])
+    assert_clean_error(run_g2s(capsys, "run", config, CORRIDOR, "-o", out, "--force"), "structure.json")
+    assert snapshot([points]) == before
+
+
+def test_force_never_overwrites_the_mesh(tmp_path, quick_config, capsys):
+    from g2s_plugins.samples.levels import load_sample
+
+    out = tmp_path / "out"
+    out.mkdir()
+    mesh = out / "structure.glb"
+    load_sample("straight_corridor").mesh.export(mesh)
+    before = snapshot([mesh])
+    assert_clean_error(run_g2s(capsys, "run", quick_config, mesh, "-o", out, "--force", "--format", "glb"),
+                       "structure.glb")
+    assert snapshot([mesh]) == before
