@@ -11,7 +11,7 @@ DEB_PACKAGES := librecast-dev cmake g++ make
 TEST_DEB_PACKAGES := chromium
 README_IMAGE := docs/images/demo-heatmap.png
 
-.PHONY: demo test setup system-deps benchmark clean readme-image
+.PHONY: demo test setup system-deps benchmark clean readme-image fuzz
 
 demo: setup
 	$(VENV)/bin/g2s demo -o $(DEMO_OUT) --force
@@ -28,6 +28,11 @@ readme-image: setup
 
 benchmark: setup
 	$(PY) benchmarks/pipeline.py
+
+# Fuzz the mesh, config and points loaders for FUZZ_MINUTES (crashing inputs go to tests/fuzz/crashes/).
+FUZZ_MINUTES ?= 10
+fuzz: setup
+	$(PY) -m tests.fuzz.fuzz_loaders --minutes $(FUZZ_MINUTES)
 
 setup: $(STAMP)
 

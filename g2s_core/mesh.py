@@ -3,6 +3,9 @@
 from __future__ import annotations
 
 import hashlib
+import logging
+from collections.abc import Iterator
+from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -67,7 +70,8 @@ def load_mesh(path: str | Path, config: MeshConfig | None = None) -> tuple[trime
     if path.suffix.lower() not in SUPPORTED_SUFFIXES:
         raise MeshError(f"{path}: unsupported mesh type {path.suffix!r} (expected one of {', '.join(SUPPORTED_SUFFIXES)})")
     try:
-        loaded = trimesh.load(path, force="mesh", process=False)
+        with _trimesh_log_silenced():
+            loaded = trimesh.load(path, force="mesh", process=False)
     except Exception as exc:  # trimesh raises many exception types for bad files
         raise MeshError(f"{path}: cannot read mesh ({type(exc).__name__}: {exc})") from None
     mesh = prepare_mesh(loaded, config, source=str(path))
@@ -76,6 +80,19 @@ def load_mesh(path: str | Path, config: MeshConfig | None = None) -> tuple[trime
         mesh, cleaning = clean_mesh(mesh)
     info = MeshInfo(path.name, file_sha256(path), len(mesh.vertices), len(mesh.faces), cleaning)
     return mesh, info
+
+
+@contextmanager
+def _trimesh_log_silenced() -> Iterator[None]:
+    """Keep trimesh's log (tracebacks of formats it tried and gave up on) off the user's terminal:
+    a file g2s cannot read is reported once, as a MeshError."""
+    logger = logging.getLogger("trimesh")
+    level = logger.level
+    logger.setLevel(logging.CRITICAL + 1)
+    try:
+        yield
+    finally:
+        logger.setLevel(level)
 
 
 def prepare_mesh(loaded: object, config: MeshConfig, source: str) -> trimesh.Trimesh:

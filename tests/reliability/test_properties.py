@@ -52,7 +52,7 @@ def exact_steiner_weight(graph: nx.Graph, terminals: list[int]) -> float:
         for extra in itertools.combinations(others, size):
             sub = graph.subgraph([*terminals, *extra])
             if nx.is_connected(sub):
-                best = min(best, sum(w for _, _, w in nx.minimum_spanning_edges(sub, data="weight")))
+                best = min(best, nx.minimum_spanning_tree(sub).size(weight="weight"))
     return best
 
 
@@ -143,7 +143,7 @@ _DOCUMENTS = st.recursive(
 )
 
 
-@settings(max_examples=300, deadline=None)
+@settings(max_examples=150, deadline=None)
 @given(document=st.dictionaries(st.sampled_from(_KEYS), _DOCUMENTS, max_size=6))
 def test_any_document_is_a_config_or_a_clean_config_error(document):
     try:
