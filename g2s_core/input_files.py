@@ -5,6 +5,7 @@ that whatever path a user gives, the answer is one line naming the file:
 
 * a FIFO, a device (``/dev/zero``) or a folder is refused before it is read
   (the file is opened non-blocking, so opening a FIFO never waits for a writer);
+  :func:`check_regular_file` does the same for files other libraries read (meshes);
 * a file larger than :data:`MAX_TEXT_BYTES` is refused before it is read;
 * bytes that are not UTF-8 are refused with the line they are on;
 * a document nested deeper than :data:`MAX_NESTING` levels (or holding
@@ -59,9 +60,7 @@ def read_text(path: str | Path, what: str, error: type[G2SError] = G2SError) -> 
         raise error(f"{path}: cannot read {what} ({exc.strerror})") from None
     try:
         info = os.fstat(descriptor)
-        if not stat.S_ISREG(info.st_mode):
-            kind = next((name for test, name in _KINDS if test(info.st_mode)), "not a regular file")
-            raise error(f"{path}: expected a {what}, got {kind}")
+        _require_regular(path, info.st_mode, what, error)
         if info.st_size > MAX_TEXT_BYTES:
             raise error(f"{path}: {info.st_size} bytes is too large for a {what} (at most {MAX_TEXT_BYTES})")
         data = _read_all(descriptor, MAX_TEXT_BYTES + 1)
@@ -78,6 +77,27 @@ def read_text(path: str | Path, what: str, error: type[G2SError] = G2SError) -> 
         raise error(
             f"{path}: line {line}: byte 0x{data[exc.start]:02x} is not UTF-8 (save the {what} as UTF-8 text)"
         ) from None
+
+
+def check_regular_file(path: str | Path, what: str, error: type[G2SError] = G2SError) -> None:
+    """Refuse a path that is missing or not a regular file (a FIFO, a device, a folder) without opening it.
+
+    Raises:
+        error: the message starts with ``path`` and says what it is instead.
+    """
+    try:
+        mode = os.stat(path).st_mode
+    except FileNotFoundError:
+        raise error(f"{path}: no such {what}") from None
+    except (OSError, ValueError) as exc:
+        raise error(f"{path}: cannot read {what} ({getattr(exc, 'strerror', None) or exc})") from None
+    _require_regular(path, mode, what, error)
+
+
+def _require_regular(path: str | Path, mode: int, what: str, error: type[G2SError]) -> None:
+    if not stat.S_ISREG(mode):
+        kind = next((name for test, name in _KINDS if test(mode)), "not a regular file")
+        raise error(f"{path}: expected a {what}, got {kind}")
 
 
 def _read_all(descriptor: int, limit: int) -> bytes:

@@ -14,6 +14,7 @@ import trimesh
 
 from g2s_core.config import MeshConfig
 from g2s_core.errors import MeshError
+from g2s_core.input_files import check_regular_file
 
 SUPPORTED_SUFFIXES = (".obj", ".glb", ".gltf", ".ply", ".stl", ".off")
 
@@ -65,8 +66,7 @@ def load_mesh(path: str | Path, config: MeshConfig | None = None) -> tuple[trime
     """
     config = config or MeshConfig()
     path = Path(path)
-    if not path.is_file():
-        raise MeshError(f"{path}: no such mesh file")
+    check_regular_file(path, "mesh file", MeshError)
     if path.suffix.lower() not in SUPPORTED_SUFFIXES:
         raise MeshError(f"{path}: unsupported mesh type {path.suffix!r} (expected one of {', '.join(SUPPORTED_SUFFIXES)})")
     try:
