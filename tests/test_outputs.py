@@ -28,7 +28,6 @@ from g2s_plugins.outputs import (
     check_outdir,
     load_result,
     parse_formats,
-    prepare_outdir,
     write_outputs,
 )
 from g2s_plugins.outputs import common, graphml, heatmap, structure_json
@@ -389,12 +388,10 @@ def test_existing_results_are_refused_without_force_and_stale_ones_removed_with_
     out = tmp_path / "out"
     check_outdir(out, ["json"], force=False)
     assert not out.exists()  # checking creates nothing
-    prepare_outdir(out, ["png"], force=False)
     write_outputs(result, out, ["png"])
     (out / "notes.txt").write_text("mine")
     with pytest.raises(G2SError, match=r"already holds results \(heatmap.png\); use --force"):
-        prepare_outdir(out, ["json"], force=False)  # a result of *another* format counts too
-    prepare_outdir(out, ["json"], force=True)
+        write_outputs(result, out, ["json"])  # a result of *another* format counts too
     written = write_outputs(result, out, ["json"], replace=True)
     assert sorted(p.name for p in out.iterdir()) == ["notes.txt", "run.json", "structure.json"]
     assert [p.name for p in written] == ["structure.json", "run.json"]
