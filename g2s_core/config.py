@@ -19,7 +19,7 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationError
 from pydantic.fields import FieldInfo
 
 from g2s_core.errors import ConfigError
-from g2s_core.input_files import parse_nested, read_text
+from g2s_core.input_files import MAX_NESTING, parse_nested, read_text
 
 PRESETS_DIR = Path(__file__).resolve().parent.parent / "configs"
 """The project's preset configs (``extends: map_analysis`` finds them here)."""
@@ -92,10 +92,32 @@ class RunConfig(_Section):
 # --- reading -----------------------------------------------------------------
 
 
+class _Loader(yaml.SafeLoader):
+    """``yaml.SafeLoader`` that stops at :data:`MAX_NESTING` levels as soon as it scans them.
+
+    PyYAML takes seconds per thousand levels of brackets before its composer
+    gives up with a RecursionError; this stops a deep document at once.
+    """
+
+    def fetch_flow_collection_start(self, token_class: Any) -> None:
+        self._check_depth(self.flow_level)
+        super().fetch_flow_collection_start(token_class)
+
+    def add_indent(self, column: int) -> bool:
+        self._check_depth(len(self.indents))
+        return super().add_indent(column)
+
+    def _check_depth(self, depth: int) -> None:
+        if depth >= MAX_NESTING:
+            raise yaml.scanner.ScannerError(
+                None, None, f"nested deeper than {MAX_NESTING} levels of mappings and lists", self.get_mark()
+            )
+
+
 def _read_yaml(path: Path) -> dict[str, Any]:
     text = read_text(path, "config file", ConfigError)
     try:
-        data = parse_nested(text, yaml.safe_load, str(path), ConfigError)
+        data = parse_nested(text, lambda t: yaml.load(t, Loader=_Loader), str(path), ConfigError)
     except yaml.YAMLError as exc:
         mark = getattr(exc, "problem_mark", None)
         where = f" at line {mark.line + 1}, column {mark.column + 1}" if mark else ""
