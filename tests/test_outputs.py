@@ -253,10 +253,10 @@ def test_numbers_are_rounded_to_nine_significant_digits():
 
 def test_load_result_refuses_other_files(tmp_path):
     path = tmp_path / "structure.json"
-    with pytest.raises(G2SError, match="no such file"):
+    with pytest.raises(G2SError, match="no such structure file"):
         load_result(path)
     path.write_text("{not json")
-    with pytest.raises(G2SError, match="not a readable JSON"):
+    with pytest.raises(G2SError, match="invalid JSON at line 1"):
         load_result(path)
     path.write_text(json.dumps({"format": "g2s-structure", "schema_version": 2}))
     with pytest.raises(G2SError, match="schema_version 2 is not supported"):

@@ -158,6 +158,8 @@ def fuzz(minutes: float, targets: list[str]) -> int:
     tried = 0
     while time.monotonic() < end:
         for target in targets:
+            if time.monotonic() >= end:
+                break
             property_for(target, 200)()
             tried += 200
             print(f"{target}: {tried} inputs, {max(0.0, end - time.monotonic()) / 60:.1f} min left", flush=True)

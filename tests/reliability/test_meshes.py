@@ -9,7 +9,7 @@ import pytest
 
 from g2s_core.errors import MeshError
 from g2s_core.mesh import load_mesh
-from tests.reliability.checks import assert_clean_error, run_g2s, run_g2s_process, snapshot, tree
+from tests.reliability.checks import assert_clean_error, run_g2s, snapshot, tree
 
 FLOOR_OBJ = """# {comment}
 o {name}
@@ -64,8 +64,3 @@ def test_mesh_that_is_not_a_regular_file(make, says, tmp_path, quick_config, cap
     assert tree(out) == []
     with pytest.raises(MeshError, match=says):
         load_mesh(mesh)
-
-
-def test_fifo_mesh_does_not_hang_a_real_process(tmp_path, quick_config):
-    mesh = _fifo(tmp_path)
-    assert_clean_error(run_g2s_process("run", quick_config, mesh, "-o", tmp_path / "out"), str(mesh), "FIFO")

@@ -170,50 +170,50 @@ def test_staged_api_error_names_the_folder(tmp_path):
 # --- --force never replaces an input ------------------------------------------------------------------------
 
 
-def test_force_never_overwrites_the_config(tmp_path, capsys):
-    out = tmp_path / "out"
-    out.mkdir()
+def _config_named_as_a_result(tmp_path: Path, out: Path) -> tuple[Path, list]:
     config = out / "graph.json"  # YAML is a superset of JSON: a config may have any name
     config.write_text('{"extends": "graph_only"}\n')
-    before = snapshot([config])
-    outcome = run_g2s(capsys, "run", config, CORRIDOR, "-o", out, "--force")
-    assert_clean_error(outcome, str(config), "graph.json")
-    assert snapshot([config]) == before and tree(out) == ["graph.json"]
+    return config, [config, CORRIDOR]
 
 
-def test_force_never_overwrites_an_extended_config(tmp_path, capsys):
-    out = tmp_path / "out"
-    out.mkdir()
+def _extended_config_named_as_a_result(tmp_path: Path, out: Path) -> tuple[Path, list]:
     parent = out / "run.json"
     parent.write_text('{"extends": "graph_only"}\n')
     child = tmp_path / "child.yaml"
-    child.write_text(f"extends: {parent}\noutputs: {{formats: [graph]}}\n")
-    before = snapshot([parent])
-    assert_clean_error(run_g2s(capsys, "run", child, CORRIDOR, "-o", out, "--force"), "run.json")
-    assert snapshot([parent]) == before
+    child.write_text(f"extends: {parent}\noutputs: {{formats: [graph, json]}}\n")
+    return parent, [child, CORRIDOR]
 
 
-def test_force_never_overwrites_the_points_file(tmp_path, capsys):
-    out = tmp_path / "out"
-    out.mkdir()
+def _points_file_named_as_a_result(tmp_path: Path, out: Path) -> tuple[Path, list]:
     points = out / "structure.json"
     points.write_text("[[0.5, 0.0, 0.5]]\n")
     config = tmp_path / "points.yaml"
     config.write_text(f"extends: graph_only\nterminals: {{plugin: points, params: {{file: '{points}'}}}}\n"
                       "stop_after: terminals\noutputs: {formats: [json]}\n")
-    before = snapshot([points])
-    assert_clean_error(run_g2s(capsys, "run", config, CORRIDOR, "-o", out, "--force"), "structure.json")
-    assert snapshot([points]) == before
+    return points, [config, CORRIDOR]
 
 
-def test_force_never_overwrites_the_mesh(tmp_path, quick_config, capsys):
+def _mesh_named_as_a_result(tmp_path: Path, out: Path) -> tuple[Path, list]:
     from g2s_plugins.samples.levels import load_sample
 
-    out = tmp_path / "out"
-    out.mkdir()
     mesh = out / "structure.glb"
     load_sample("straight_corridor").mesh.export(mesh)
-    before = snapshot([mesh])
-    assert_clean_error(run_g2s(capsys, "run", quick_config, mesh, "-o", out, "--force", "--format", "glb"),
-                       "structure.glb")
-    assert snapshot([mesh]) == before
+    config = tmp_path / "quick.yaml"
+    config.write_text("extends: graph_only\n")
+    return mesh, [config, mesh, "--format", "glb"]
+
+
+@pytest.mark.parametrize(
+    "make",
+    [_config_named_as_a_result, _extended_config_named_as_a_result, _points_file_named_as_a_result,
+     _mesh_named_as_a_result],
+    ids=["config", "extended-config", "points-file", "mesh"],
+)
+def test_force_never_overwrites_an_input(make, tmp_path, capsys):
+    out = tmp_path / "out"
+    out.mkdir()
+    guarded, (config, mesh, *options) = make(tmp_path, out)
+    before = snapshot([guarded])
+    outcome = run_g2s(capsys, "run", config, mesh, "-o", out, "--force", *options)
+    assert_clean_error(outcome, f"the input {guarded} has the name of a result file ({guarded.name})")
+    assert snapshot([guarded]) == before and tree(out) == [guarded.name]
