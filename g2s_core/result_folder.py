@@ -46,17 +46,22 @@ def check_writable(outdir: Path) -> None:
             existing folder does not let a folder be created in it (read-only,
             no permission, ``/proc``).
     """
-    base = outdir
-    while not base.exists() and base != base.parent:
-        base = base.parent
-    if not base.is_dir():
-        if base == outdir:
-            raise G2SError(f"{outdir}: exists and is not a folder")
-        raise G2SError(f"{outdir}: cannot create the folder, {base} is a file")
     try:
+        base = outdir
+        missing = []
+        while not os.path.lexists(base) and base != base.parent:
+            missing.append(base.name)
+            base = base.parent
+        if not base.is_dir():
+            if base == outdir:
+                raise G2SError(f"{outdir}: exists and is not a folder")
+            raise G2SError(f"{outdir}: cannot create the folder, {base} is not a folder")
+        longest = max((len(os.fsencode(name)) for name in missing), default=0)
+        if longest > os.pathconf(base, "PC_NAME_MAX"):
+            raise G2SError(f"{outdir}: cannot create the folder (a name of {longest} bytes is too long)")
         os.rmdir(tempfile.mkdtemp(dir=base, prefix=f"{STAGING_MARK}{os.getpid()}-"))
-    except OSError as exc:
-        raise G2SError(f"{outdir}: cannot write results there ({exc.strerror or exc})") from None
+    except (OSError, ValueError) as exc:  # a name too long, a NUL byte, a read-only place
+        raise G2SError(f"{outdir}: cannot write results there ({getattr(exc, 'strerror', None) or exc})") from None
 
 
 @contextmanager
@@ -76,17 +81,21 @@ def staged(outdir: Path, obsolete: Sequence[Path] = (), protect: Sequence[Path] 
     """
     outdir = Path(outdir)
     check_writable(outdir)
-    created = _make_folders(outdir.parent)
-    inside = outdir.is_dir()
-    home = outdir if inside else outdir.parent
-    _remove_stale(home)
-    staging = Path(tempfile.mkdtemp(dir=home, prefix=f"{'' if inside else '.' + outdir.name}{STAGING_MARK}{os.getpid()}-"))
+    created: list[Path] = []
+    staging = None
     try:
+        _make_folders(outdir.parent, created)
+        inside = outdir.is_dir()
+        home = outdir if inside else outdir.parent
+        _remove_stale(home)
+        beside = "" if inside else f".{outdir.name[:64]}"  # short enough for any name limit
+        staging = Path(tempfile.mkdtemp(dir=home, prefix=f"{beside}{STAGING_MARK}{os.getpid()}-"))
         yield staging
         with _interrupts_held():
             _move_into_place(staging, outdir, obsolete, protect)
     except BaseException as exc:
-        shutil.rmtree(staging, ignore_errors=True)
+        if staging is not None:
+            shutil.rmtree(staging, ignore_errors=True)
         for folder in reversed(created):
             _remove_if_empty(folder)
         if isinstance(exc, OSError):
@@ -111,16 +120,15 @@ def _move_into_place(staging: Path, outdir: Path, obsolete: Sequence[Path], prot
     staging.rmdir()
 
 
-def _make_folders(folder: Path) -> list[Path]:
-    """Create ``folder`` and its missing parents; the folders created, outermost first."""
+def _make_folders(folder: Path, created: list[Path]) -> None:
+    """Create ``folder`` and its missing parents, outermost first, appending each to ``created``."""
     missing = []
     while not folder.exists() and folder != folder.parent:
         missing.append(folder)
         folder = folder.parent
-    missing.reverse()
-    for path in missing:
+    for path in reversed(missing):
         path.mkdir()
-    return missing
+        created.append(path)
 
 
 def _remove_stale(home: Path) -> None:

@@ -22,15 +22,23 @@ from tests.reliability.checks import CORRIDOR, assert_clean_error, run_g2s, run_
 # --- an output folder that cannot be made -----------------------------------------------------
 
 
+def _symlink_loop(folder: Path) -> Path:
+    (folder / "loop").symlink_to("loop")
+    return folder / "loop" / "out"
+
+
 @pytest.mark.parametrize(
     "where, says",
     [
         (lambda tmp: Path("/proc/g2s-results"), "cannot write results there"),
-        (lambda tmp: tmp / "afile" / "sub", "is a file"),
+        (lambda tmp: tmp / "afile" / "sub", "afile is not a folder"),
         (lambda tmp: tmp / "afile", "exists and is not a folder"),
-        (lambda tmp: tmp / "afile" / "a" / "b", "is a file"),
+        (lambda tmp: tmp / "afile" / "a" / "b", "afile is not a folder"),
+        (lambda tmp: tmp / ("n" * 300), "a name of 300 bytes is too long"),
+        (lambda tmp: tmp / "x" / ("é" * 200) / "y", "a name of 400 bytes is too long"),
+        (_symlink_loop, "loop is not a folder"),
     ],
-    ids=["proc", "below-a-file", "a-file", "deep-below-a-file"],
+    ids=["proc", "below-a-file", "a-file", "deep-below-a-file", "long-name", "long-inner-name", "symlink-loop"],
 )
 def test_unwritable_outdir_found_before_any_work(where, says, tmp_path, quick_config, capsys):
     (tmp_path / "afile").write_text("mine\n")
@@ -39,12 +47,12 @@ def test_unwritable_outdir_found_before_any_work(where, says, tmp_path, quick_co
     outcome = run_g2s(capsys, "run", quick_config, tmp_path / "missing.obj", "-o", outdir)
     assert_clean_error(outcome, str(outdir), says)
     assert (tmp_path / "afile").read_text() == "mine\n"
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["afile", "quick.yaml"]
+    assert not [p for p in tmp_path.iterdir() if p.name not in ("afile", "quick.yaml", "loop")]
 
 
 def test_unwritable_outdir_demo(tmp_path, capsys):
     (tmp_path / "afile").write_text("")
-    assert_clean_error(run_g2s(capsys, "demo", "-o", tmp_path / "afile" / "out"), "afile", "is a file")
+    assert_clean_error(run_g2s(capsys, "demo", "-o", tmp_path / "afile" / "out"), "afile is not a folder")
 
 
 # --- all or nothing --------------------------------------------------------------------------------
