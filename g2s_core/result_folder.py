@@ -20,6 +20,7 @@ result.
 
 from __future__ import annotations
 
+import errno
 import os
 import re
 import shutil
@@ -98,9 +99,27 @@ def staged(outdir: Path, obsolete: Sequence[Path] = (), protect: Sequence[Path] 
             shutil.rmtree(staging, ignore_errors=True)
         for folder in reversed(created):
             _remove_if_empty(folder)
-        if isinstance(exc, OSError):
-            raise G2SError(f"{outdir}: cannot write results ({exc.strerror or exc}); nothing was written") from None
+        storage = _storage_error(exc)
+        if storage is not None:
+            raise G2SError(f"{outdir}: cannot write results ({storage.strerror or storage}); nothing was written") from None
         raise
+
+
+STORAGE_ERRNOS = frozenset({errno.ENOSPC, errno.EFBIG, errno.EDQUOT, errno.EROFS, errno.EIO})
+"""Failures of the storage itself (full, file size limit, read-only, I/O), whoever was writing."""
+
+
+def _storage_error(exc: BaseException) -> OSError | None:
+    """The OSError behind ``exc`` that is the environment's fault, if any.
+
+    Our own moves fail with a plain OSError; a writer plugin's failure comes
+    wrapped (as that plugin's failure) and counts only when the storage
+    itself failed, which is no fault of the plugin.
+    """
+    if isinstance(exc, OSError):
+        return exc
+    cause = exc.__cause__
+    return cause if isinstance(cause, OSError) and cause.errno in STORAGE_ERRNOS else None
 
 
 def _move_into_place(staging: Path, outdir: Path, obsolete: Sequence[Path], protect: Sequence[Path]) -> None:

@@ -47,27 +47,18 @@ from scipy.sparse import csgraph
 from scipy.sparse.linalg import ArpackNoConvergence, eigsh, spsolve
 
 from g2s_core.errors import G2SError
+from g2s_core.ties import rank_key
 
 Metric = Literal["degree", "betweenness", "closeness", "eigenvector", "katz"]
 """The metric names accepted by :func:`compute`."""
 
 METRICS: tuple[str, ...] = ("degree", "betweenness", "closeness", "eigenvector", "katz")
 
-RANK_DIGITS = 12
-"""Values are compared after rounding to this many significant digits, so that
-values equal but for floating-point noise (e.g. Brandes on symmetric nodes)
-rank as ties, which are then broken by node id."""
-
 _DENSE_EIGEN_LIMIT = 256
 """Components up to this size use a dense symmetric eigen-solver."""
 
 _DIJKSTRA_BLOCK = 1 << 22
 """Distance-matrix entries computed at once by weighted closeness (32 MB)."""
-
-
-def rank_key(node: int, value: float) -> tuple[float, int]:
-    """Sort key that ranks higher ``value`` first and breaks (rounded) ties by lower node id."""
-    return (-float(f"{value:.{RANK_DIGITS}g}"), node)
 
 
 # --- graph as arrays ---------------------------------------------------------------
@@ -576,7 +567,6 @@ def components(graph: nx.Graph) -> list[list[Hashable]]:
 __all__ = [
     "METRICS",
     "Metric",
-    "RANK_DIGITS",
     "betweenness",
     "closeness",
     "components",
@@ -586,7 +576,6 @@ __all__ = [
     "graph_betweenness",
     "katz",
     "largest_eigenvalue",
-    "rank_key",
     "tree_betweenness",
     "tree_closeness",
 ]

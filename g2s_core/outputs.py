@@ -1,0 +1,118 @@
+"""A run's output folder: choosing formats among the installed output writers, and writing them.
+
+Output writers are plugins (see :mod:`g2s_core.hookspecs`, ``g2s_write_output``):
+each has a format ``NAME`` and declares the ``FILES`` it writes. Any installed
+writer may be named in ``--format`` or the config's ``outputs.formats``.
+The writers of a run write into one staging folder whose files then move
+into the output folder together (:mod:`g2s_core.result_folder`).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+from pathlib import Path
+
+from g2s_core.errors import G2SError
+from g2s_core.model import RunResult
+from g2s_core.registry import PluginInfo, Registry, installed
+from g2s_core.result_folder import check_writable, same_file, staged
+
+DEFAULT_FORMATS: tuple[str, ...] = ("json", "html")
+"""What a run writes when neither the config nor ``--format`` says."""
+
+
+def writers(registry: Registry | None = None) -> dict[str, PluginInfo]:
+    """Format name -> its installed writer, by name."""
+    return {info.name: info for info in (registry or installed()).plugins("outputs")}
+
+
+def result_files(registry: Registry | None = None) -> dict[str, tuple[str, ...]]:
+    """Format name -> the file names its writer declares (what ``--force`` may replace)."""
+    return {name: tuple(info.plugin.FILES) for name, info in writers(registry).items()}
+
+
+def parse_formats(formats: str | Sequence[str], source: str = "--format", registry: Registry | None = None) -> list[str]:
+    """Format names from ``"json,html"`` or a list: stripped, lower-cased, duplicates dropped, order kept.
+
+    Raises:
+        G2SError: a name is not an installed writer, or none is given; the message starts with ``source``.
+    """
+    known = writers(registry)
+    items = formats.split(",") if isinstance(formats, str) else list(formats)
+    names: list[str] = []
+    for item in items:
+        name = str(item).strip().lower()
+        if not name:
+            continue
+        if name not in known:
+            raise G2SError(f"{source}: unknown output format {name!r} (expected some of: {', '.join(known)})")
+        if name not in names:
+            names.append(name)
+    if not names:
+        raise G2SError(f"{source}: no output format given (expected some of: {', '.join(known)})")
+    return names
+
+
+def result_paths(outdir: Path, formats: Sequence[str] | None = None, registry: Registry | None = None) -> list[Path]:
+    """The result files of ``formats`` (all installed formats when ``None``) inside ``outdir``."""
+    files = result_files(registry)
+    chosen = files if formats is None else formats
+    return [outdir / name for fmt in chosen for name in files.get(fmt, ())]
+
+
+def check_outdir(
+    outdir: Path, formats: Sequence[str], force: bool, protect: Sequence[Path] = (), registry: Registry | None = None
+) -> None:
+    """Refuse an output folder that cannot take the results, without creating anything.
+
+    Any result file of any installed format already in ``outdir`` counts as an
+    earlier result and is refused unless ``force``. The files in ``protect``
+    (the input mesh, config and points files) are never written or removed,
+    even with ``force``.
+
+    Raises:
+        G2SError: unknown format, ``outdir`` cannot be created or written,
+            results exist without ``force``, or a result file would be an
+            input file.
+    """
+    parse_formats(formats, registry=registry)
+    check_writable(outdir)
+    every = result_paths(outdir, registry=registry)
+    for path in every:
+        for guarded in protect:
+            if same_file(path, Path(guarded)):
+                raise G2SError(
+                    f"{outdir}: the input {guarded} has the name of a result file ({path.name}); "
+                    "choose another output folder"
+                )
+    existing = sorted(p.name for p in every if p.exists())
+    if existing and not force:
+        raise G2SError(f"{outdir}: already holds results ({', '.join(existing)}); use --force to replace them")
+
+
+def write_outputs(
+    result: RunResult,
+    outdir: Path,
+    formats: Sequence[str],
+    replace: bool = False,
+    progress: Callable[[str], None] | None = None,
+    registry: Registry | None = None,
+    protect: Sequence[Path] = (),
+) -> list[Path]:
+    """Write every requested format into ``outdir``, all files at once or none (see :mod:`g2s_core.result_folder`).
+
+    :func:`check_outdir` is applied first. With ``replace`` (``--force``),
+    result files of the formats not requested that an earlier run left are
+    removed in the same step, so the folder never mixes two runs.
+    """
+    registry = registry or installed()
+    known = writers(registry)
+    check_outdir(outdir, formats, replace, protect, registry)
+    obsolete = [p for p in result_paths(outdir, registry=registry) if p.exists()] if replace else []
+    names: list[str] = []
+    with staged(outdir, obsolete, protect) as staging:
+        for fmt in parse_formats(formats, registry=registry):
+            if progress is not None:
+                progress(f"writing {fmt}")
+            names.extend(Path(p).name for p in registry.call(known[fmt], result=result, folder=staging))
+    return [outdir / name for name in names]
