@@ -34,7 +34,7 @@ from g2s_core.config import load_config
 from g2s_core.errors import G2SError
 from g2s_core.mesh import load_mesh
 from g2s_core.pipeline import plan
-from g2s_core.registry import Registry
+from g2s_core.registry import installed
 from g2s_plugins.terminals.points import read_points
 
 HERE = Path(__file__).resolve().parent
@@ -89,13 +89,8 @@ def _load_mesh(path: Path) -> None:
     load_mesh(path)
 
 
-_REGISTRY: list[Registry] = []
-
-
 def _load_config(path: Path) -> None:
-    if not _REGISTRY:
-        _REGISTRY.append(Registry.from_entry_points())
-    plan(load_config(path), _REGISTRY[0], source=str(path))
+    plan(load_config(path), installed(), source=str(path))
 
 
 def _read_points(path: Path) -> None:

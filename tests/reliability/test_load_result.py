@@ -111,7 +111,7 @@ _JSON_VALUES = st.recursive(
 )
 
 
-@settings(max_examples=100, deadline=None)
+@settings(max_examples=60, deadline=None)
 @given(data=st.data())
 def test_any_single_change_loads_or_is_a_clean_error(data, written, tmp_path_factory):
     places = [p for p, _ in _paths(written) if p]

@@ -17,7 +17,7 @@ from g2s_core.config import parse_config
 from g2s_core.errors import ConfigError
 from g2s_core.model import RunContext
 from g2s_core.pipeline import plan, steiner_forest
-from g2s_core.registry import Registry
+from g2s_core.registry import installed
 from g2s_core.rooted import root_forest
 from g2s_core.simplify import simplify_forest
 from g2s_plugins.steiner.kou import kou_steiner_tree
@@ -132,7 +132,7 @@ _SCALARS = st.one_of(
     st.none(), st.booleans(), st.integers(-10**30, 10**30), st.floats(), st.text(max_size=8),
     st.sampled_from(["navmesh", "kou", "betweenness", "metric", "points", "y", "z", "json", "graph", "1e999"]),
 )
-_REGISTRY = Registry.from_entry_points()
+_REGISTRY = installed()
 _DOCUMENTS = st.recursive(
     _SCALARS,
     lambda children: st.one_of(
@@ -143,7 +143,7 @@ _DOCUMENTS = st.recursive(
 )
 
 
-@settings(max_examples=150, deadline=None)
+@settings(max_examples=100, deadline=None)
 @given(document=st.dictionaries(st.sampled_from(_KEYS), _DOCUMENTS, max_size=6))
 def test_any_document_is_a_config_or_a_clean_config_error(document):
     try:
@@ -153,7 +153,7 @@ def test_any_document_is_a_config_or_a_clean_config_error(document):
         assert message.startswith("fuzz.yaml: ") and "\n" not in message
 
 
-@settings(max_examples=150, deadline=None)
+@settings(max_examples=75, deadline=None)
 @given(document=_DOCUMENTS)
 def test_any_yaml_text_is_a_config_or_a_clean_config_error(document, tmp_path_factory):
     from g2s_core.config import load_config

@@ -10,7 +10,7 @@ from pydantic import BaseModel
 
 from g2s_core.config import AgentConfig, MeshConfig, parse_config
 from g2s_core.errors import ConfigError
-from g2s_core.registry import Registry
+from g2s_core.registry import installed
 from tests.reliability.checks import CORRIDOR, assert_clean_error, run_g2s, tree
 
 NON_FINITE = {"nan": ".nan", "inf": ".inf", "-inf": "-.inf"}
@@ -26,7 +26,7 @@ def _float_fields(model: type[BaseModel]) -> list[str]:
 
 
 def _plugin_float_params() -> list[tuple[str, str, str]]:
-    registry = Registry.from_entry_points()
+    registry = installed()
     return [(info.stage, info.name, field) for info in registry.plugins() for field in _float_fields(info.params_model)]
 
 
@@ -52,7 +52,7 @@ def test_the_built_in_plugins_have_float_parameters_to_check():
 @pytest.mark.parametrize("stage, plugin, field", PLUGIN_FLOATS, ids=["/".join(p) for p in PLUGIN_FLOATS])
 @pytest.mark.parametrize("number", [float("nan"), float("inf"), float("-inf")], ids=["nan", "inf", "-inf"])
 def test_no_plugin_parameter_accepts_non_finite_numbers(stage, plugin, field, number):
-    registry = Registry.from_entry_points()
+    registry = installed()
     info = registry.get(stage, plugin)
     params = {field: _value_for(info.params_model, field, number)}
     with pytest.raises(ConfigError) as caught:
