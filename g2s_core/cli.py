@@ -30,7 +30,7 @@ from g2s_core.registry import Registry, installed, plugin_parameters
 from g2s_core.stages import BY_KEY, STAGES
 from g2s_core.summary import final_graph, roots_of, stage_rows
 
-EXIT_CODES = "exit codes: 0 success, 2 bad input or config, 3 a plugin failed (names it and its package), 1 internal error"
+EXIT_CODES = "exit codes: 0 success, 2 bad input or config, or a plugin that failed (named with its package), 1 internal error of g2s"
 
 __all__ = ["main", "stage_table"]
 
@@ -86,16 +86,11 @@ def main(argv: Sequence[str] | None = None) -> int:
         if args.command == "plugins":
             return _plugins(args)
         return _demo(args, errors)
-    except G2SError as exc:
+    except (G2SError, PluginFailure) as exc:  # the user, or the named plugin's authors, can fix it
         errors.print(f"g2s: error: {exc}", markup=False, highlight=False, soft_wrap=True)
         if args.verbose:
             traceback.print_exc()
         return 2
-    except PluginFailure as exc:  # the plugin's authors can fix it, not the user, not us
-        errors.print(f"g2s: error: {exc}", markup=False, highlight=False, soft_wrap=True)
-        if args.verbose:
-            traceback.print_exc()
-        return 3
     except KeyboardInterrupt:
         errors.print("g2s: interrupted", markup=False)
         return 130

@@ -1,7 +1,7 @@
 """Errors that reach the user as one line at the CLI.
 
 :class:`G2SError` and its subclasses are the user's bad input (exit code 2);
-:class:`PluginFailure` is a plugin's own bug (exit code 3); anything else is
+:class:`PluginFailure` is a plugin's own bug (exit code 2 too, naming the plugin); anything else is
 an internal error of g2s (exit code 1).
 """
 
@@ -31,5 +31,5 @@ class PluginFailure(Exception):
 
     Neither the user's input nor g2s is at fault, so this is not a
     :class:`G2SError`: the message names the plugin, its stage and its
-    package (whose authors can fix it); the CLI exits with code 3.
+    package (whose authors can fix it); the CLI exits with code 2.
     """

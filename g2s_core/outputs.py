@@ -109,9 +109,10 @@ def write_outputs(
     known = writers(registry)
     check_outdir(outdir, formats, replace, protect, registry)
     obsolete = [p for p in result_paths(outdir, registry=registry) if p.exists()] if replace else []
+    result.formats = tuple(parse_formats(formats, registry=registry))
     names: list[str] = []
     with staged(outdir, obsolete, protect) as staging:
-        for fmt in parse_formats(formats, registry=registry):
+        for fmt in result.formats:
             if progress is not None:
                 progress(f"writing {fmt}")
             names.extend(Path(p).name for p in registry.call(known[fmt], result=result, folder=staging))
