@@ -13,7 +13,7 @@ from hypothesis import strategies as st
 
 from g2s_core.cli import main
 from g2s_core.errors import G2SError
-from g2s_plugins.outputs import load_result
+from g2s_core.results import load_result
 
 
 @pytest.fixture(scope="module")
@@ -131,3 +131,31 @@ def _drop(document: dict, where: tuple) -> dict:
         target = target[key]
     del target[where[-1]]
     return changed
+
+
+def _version_1(document: dict) -> dict:
+    """``document`` as version 1 wrote it: no ``features``."""
+    old = {k: v for k, v in copy.deepcopy(document).items() if k != "features"}
+    old["schema_version"] = 1
+    return old
+
+
+def test_version_1_files_are_read_and_checked_as_version_2_without_features(written, tmp_path):
+    loaded = load_result(_write(tmp_path, _version_1(written)))
+    assert loaded.schema_version == 1 and loaded.features == {}
+    assert loaded.structure.number_of_nodes() == len(written["nodes"])
+    path = _write(tmp_path, _set(_version_1(written), ("nodes", 0, "position"), [1, 2]))
+    with pytest.raises(G2SError, match=r"nodes\[0\]\.position"):
+        load_result(path)
+    path = _write(tmp_path, {**_version_1(written), "features": {}})
+    with pytest.raises(G2SError, match="features: not a field of schema_version 1"):
+        load_result(path)
+
+
+@pytest.mark.parametrize("run_text", ["[]", "{", '{"stages": 5}', "[" * 5000, "\xff"])
+def test_a_damaged_run_json_only_loses_the_timings(run_text, written, tmp_path):
+    _write(tmp_path, written)
+    (tmp_path / "run.json").write_text(run_text, encoding="latin-1")
+    loaded = load_result(tmp_path)
+    assert [s.stage for s in loaded.stages] == [s["stage"] for s in written["stages"]]
+    assert all(s.seconds != s.seconds for s in loaded.stages)  # NaN: no timings

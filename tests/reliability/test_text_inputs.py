@@ -13,7 +13,7 @@ import pytest
 from g2s_core.config import load_config
 from g2s_core.errors import ConfigError, G2SError
 from g2s_core.input_files import MAX_NESTING, MAX_TEXT_BYTES, nesting_depth, read_text
-from g2s_plugins.outputs import load_result
+from g2s_core.results import load_result
 from g2s_plugins.terminals.points import read_points
 from tests.reliability.checks import CORRIDOR, assert_clean_error, run_g2s, run_g2s_process, tree
 
@@ -224,3 +224,11 @@ def test_nesting_depth_counts_shared_objects_once_per_level():
     looped.append(looped)
     assert nesting_depth(looped, limit=100) == 101
     assert nesting_depth(json.loads('{"a": [1, {"b": 2}]}'), limit=100) == 3
+
+
+def test_deeply_nested_set_value_is_refused_in_one_short_line(tmp_path, capsys):
+    value = "[" * 3000
+    outcome = run_g2s(capsys, "run", "graph_only", CORRIDOR, "-o", tmp_path / "out", "--set", f"agent={value}")
+    line = assert_clean_error(outcome, "--set agent:", "nested deeper than 100 levels")
+    assert len(line) < 200
+    assert tree(tmp_path) == []

@@ -1,0 +1,205 @@
+"""Reading a run's ``structure.json`` back (the ``json`` output writer's format, ``docs/outputs.md``).
+
+The format belongs to g2s, not to the writer plugin: its version, file names,
+JSON schemas (``structure.schema.json``, ``run.schema.json`` beside this module)
+and reader live here, and the writer (``g2s_plugins.outputs.structure_json``)
+writes what this reads. The reader trusts nothing in the file: it is read like
+every text input (:mod:`g2s_core.input_files`) and checked against the schema
+before use, so a damaged file is refused naming the file and the field.
+"""
+
+from __future__ import annotations
+
+import functools
+import json
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import jsonschema
+import networkx as nx
+
+from g2s_core.errors import G2SError
+from g2s_core.input_files import parse_nested, read_text
+from g2s_core.model import Opening, StageStats, Terminals, vec3
+
+SCHEMA_VERSION = 2
+READABLE_VERSIONS = (1, 2)
+"""structure.json versions :func:`load_result` reads (1 has no ``features``)."""
+STRUCTURE_FILE = "structure.json"
+RUN_FILE = "run.json"
+RUN_SCHEMA_VERSION = 1
+SCHEMA_PATH = Path(__file__).resolve().parent / "structure.schema.json"
+"""The layout of ``structure.json``, version :data:`SCHEMA_VERSION` (JSON Schema draft 2020-12)."""
+RUN_SCHEMA_PATH = Path(__file__).resolve().parent / "run.schema.json"
+"""The layout of ``run.json``, version :data:`RUN_SCHEMA_VERSION`."""
+
+
+@dataclass
+class LoadedResult:
+    """A ``structure.json`` read back, with networkx graphs.
+
+    ``structure`` is the final structure: a :class:`networkx.DiGraph` (edges
+    parent -> child, ``graph["roots"]``) when the run got to rooted trees, an
+    undirected graph otherwise. Its nodes carry the attributes of
+    :mod:`g2s_core.model` (``pos``, ``normal``, ``area``, ``on_navmesh``,
+    ``polygon``, ``depth``, ``root``), ``terminal`` (bool) and the plugins'
+    extra attributes; its edges ``weight`` and extras. ``analysis`` maps each
+    analyzer's key to its value per node, ``features`` to its records (empty
+    for version 1 files). ``stages`` come with their seconds
+    when ``run.json`` of the same mesh lies beside the file, NaN otherwise.
+    """
+
+    schema_version: int
+    mesh_name: str
+    mesh_sha256: str
+    config: dict[str, Any]
+    navmesh: dict[str, Any] | None
+    final_stage: str | None
+    structure: nx.Graph
+    roots: list[int]
+    analysis: dict[str, dict[int, float | None]]
+    features: dict[str, dict[str, Any]]
+    terminals: Terminals | None
+    steiner: nx.Graph | None
+    forest: nx.DiGraph | None
+    graph_size: tuple[int, int] | None
+    stages: list[StageStats] = field(default_factory=list)
+    warnings: list[str] = field(default_factory=list)
+    document: dict[str, Any] = field(default_factory=dict, repr=False)
+
+
+def load_result(path: str | Path) -> LoadedResult:
+    """Read a ``structure.json`` (or the folder holding one) back.
+
+    The document is checked against :data:`SCHEMA_PATH` before use; a
+    version 1 file is checked as version 2 without ``features``.
+
+    Raises:
+        G2SError: the file is missing, not a regular UTF-8 file, not JSON, not
+            a g2s structure file, of a schema version this g2s does not read,
+            or malformed (the message names the file and the field).
+    """
+    path = Path(path)
+    if path.is_dir():
+        path = path / STRUCTURE_FILE
+    text = read_text(path, "structure file")
+    try:
+        document = parse_nested(text, json.loads, str(path))
+    except json.JSONDecodeError as exc:
+        raise G2SError(f"{path}: invalid JSON at line {exc.lineno}, column {exc.colno}: {exc.msg}") from None
+    if not isinstance(document, dict) or document.get("format") != "g2s-structure":
+        raise G2SError(f"{path}: not a g2s structure.json file")
+    version = document.get("schema_version")
+    if version not in READABLE_VERSIONS:
+        readable = ", ".join(map(str, READABLE_VERSIONS))
+        raise G2SError(f"{path}: schema_version {version!r} is not supported (this g2s reads {readable})")
+    if version == 1:
+        if "features" in document:
+            raise G2SError(f"{path}: features: not a field of schema_version 1")
+        checked = {**document, "schema_version": SCHEMA_VERSION, "features": {}}
+    else:
+        checked = document
+    problem = jsonschema.exceptions.best_match(_schema_validator().iter_errors(checked))
+    if problem is not None:
+        where = "".join(f"[{p}]" if isinstance(p, int) else f".{p}" for p in problem.absolute_path).lstrip(".")
+        raise G2SError(f"{path}: {where or '(top level)'}: {_shorten(problem.message)}")
+    try:
+        return _loaded(document, path)
+    except (KeyError, TypeError, ValueError, OverflowError) as exc:  # what the schema cannot say, e.g. a parent id
+        raise G2SError(f"{path}: malformed structure file ({type(exc).__name__}: {exc})") from None
+
+
+@functools.cache
+def _schema_validator() -> jsonschema.protocols.Validator:
+    schema = json.loads(SCHEMA_PATH.read_text(encoding="utf-8"))
+    return jsonschema.validators.validator_for(schema)(schema)
+
+
+def _shorten(message: str, limit: int = 160) -> str:
+    """A validator message cut to one short line (it quotes the offending value in full)."""
+    line = " ".join(message.split())
+    return line if len(line) <= limit else line[: limit - 3] + "..."
+
+
+def _loaded(document: dict[str, Any], path: Path) -> LoadedResult:
+    directed = bool(document["directed"])
+    structure: nx.Graph = nx.DiGraph() if directed else nx.Graph()
+    analysis: dict[str, dict[int, float | None]] = {key: {} for key in document["analysis_keys"]}
+    for record in document["nodes"]:
+        node = int(record["id"])
+        attrs: dict[str, Any] = dict(record["extra"])
+        attrs["pos"] = vec3(record["position"])
+        if record["normal"] is not None:
+            attrs["normal"] = vec3(record["normal"])
+        for key in ("area", "on_navmesh", "polygon", "root", "depth"):
+            if record[key] is not None:
+                attrs[key] = record[key]
+        attrs["terminal"] = bool(record["terminal"])
+        structure.add_node(node, **attrs)
+        for key, value in record["values"].items():
+            analysis.setdefault(key, {})[node] = value
+    for record in document["edges"]:
+        attrs = dict(record["extra"])
+        if record["weight"] is not None:
+            attrs["weight"] = record["weight"]
+        structure.add_edge(int(record["source"]), int(record["target"]), **attrs)
+    roots = [int(r) for r in document["roots"]]
+    if directed:
+        structure.graph["roots"] = roots
+    terminals = None
+    if document["terminals"] is not None:
+        openings = tuple(
+            Opening(
+                vec3(o["position"]), vec3(o["heading"]), float(o["width"]), vec3(o["p0"]), vec3(o["p1"]),
+                None if o.get("score") is None else float(o["score"]), o.get("reason"),
+            )
+            for o in document["terminals"]["openings"]
+        )
+        terminals = Terminals(tuple(int(t) for t in document["terminals"]["node_ids"]), openings)
+    graphs = document["graphs"]
+    size = graphs.get("graph")
+    return LoadedResult(
+        schema_version=int(document["schema_version"]),
+        mesh_name=document["mesh"]["name"],
+        mesh_sha256=document["mesh"]["sha256"],
+        config=document["config"],
+        navmesh=document["navmesh"],
+        final_stage=document["final_stage"],
+        structure=structure,
+        roots=roots,
+        analysis=analysis,
+        features=dict(document.get("features", {})),
+        terminals=terminals,
+        steiner=_edges_graph(graphs.get("steiner"), directed=False),
+        forest=_edges_graph(graphs.get("forest"), directed=True),  # type: ignore[arg-type]
+        graph_size=None if size is None else (int(size["nodes"]), int(size["edges"])),
+        stages=_stages(document, path.parent / RUN_FILE),
+        warnings=list(document["warnings"]),
+        document=document,
+    )
+
+
+def _edges_graph(data: dict[str, Any] | None, directed: bool) -> nx.Graph | None:
+    if data is None:
+        return None
+    graph: nx.Graph = nx.DiGraph() if directed else nx.Graph()
+    graph.add_nodes_from(int(n) for n in data["node_ids"])
+    graph.add_edges_from((int(u), int(v)) for u, v in data["edge_list"])
+    if directed:
+        graph.graph["roots"] = [int(r) for r in data.get("roots", [])]
+    return graph
+
+
+def _stages(document: dict[str, Any], run_path: Path) -> list[StageStats]:
+    seconds: dict[str, float] = {}
+    try:
+        run = parse_nested(read_text(run_path, "run file"), json.loads, str(run_path))
+        if run.get("mesh", {}).get("sha256") == document["mesh"]["sha256"]:
+            seconds = {s["stage"]: float(s["seconds"]) for s in run.get("stages", [])}
+    except (G2SError, ValueError, TypeError, KeyError, AttributeError):  # timings are optional: a bad run.json is ignored
+        seconds = {}
+    return [
+        StageStats(s["stage"], seconds.get(s["stage"], float("nan")), s["nodes"], s["edges"], s["terminals"])
+        for s in document["stages"]
+    ]
