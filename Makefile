@@ -50,7 +50,7 @@ $(STAMP): pyproject.toml CMakeLists.txt $(wildcard src/*) | system-deps
 	test -x $(PY) || $(PYTHON) -m venv $(VENV)
 	$(PY) -m pip install -q --upgrade pip
 	$(PY) -m pip install -q scikit-build-core nanobind
-	$(PY) -m pip install -q --no-build-isolation -e '.[dev]'
+	$(PY) -m pip install -q --no-build-isolation -e '.[dev,batch]'
 	touch $@
 
 clean:

@@ -9,6 +9,7 @@ error of g2s (``--verbose`` shows the traceback).
 from __future__ import annotations
 
 import argparse
+import itertools
 import json
 import sys
 import traceback
@@ -18,14 +19,18 @@ from pathlib import Path
 from typing import Any
 
 from rich.console import Console
+from rich.progress import BarColumn, MofNCompleteColumn, TextColumn
+from rich.progress import Progress as RichProgress
 from rich.table import Table
 
 from g2s_core import pipeline
+from g2s_core.batch import EXECUTORS, missing_extra, run_batch
+from g2s_core.batch import Progress as BatchProgress
 from g2s_core.config import PRESETS_DIR, load_config, load_raw_config, parse_config
 from g2s_core.errors import G2SError, PluginFailure
-from g2s_core.mesh import SAMPLE_PREFIX, generate_level, load_mesh, mesh_sha256
+from g2s_core.mesh import SAMPLE_PREFIX, SUPPORTED_SUFFIXES, Level, generate_level, mesh_sha256, open_level
 from g2s_core.model import RunResult
-from g2s_core.outputs import DEFAULT_FORMATS, check_outdir, parse_formats, prepare_outdir, write_outputs, writers
+from g2s_core.outputs import DEFAULT_FORMATS, check_outdir, parse_formats, run_to_folder, writers
 from g2s_core.registry import Registry, installed, plugin_parameters
 from g2s_core.stages import BY_KEY, STAGES
 from g2s_core.summary import final_graph, roots_of, stage_rows
@@ -52,6 +57,35 @@ def _parser() -> argparse.ArgumentParser:
                      "for a level from an installed level generator (see `g2s plugins --stage levels`)")
     run.add_argument("-o", "--outdir", type=Path, required=True, help="folder for the results")
     _add_output_options(run)
+
+    batch = commands.add_parser(
+        "batch",
+        help="run configs over many levels on a process pool or a Dask cluster, with a summary table",
+        description="Run every config on every level: one result folder per (config, level) pair, as `g2s run` "
+        "writes it, in OUTDIR/CONFIG/LEVEL/, and OUTDIR/summary.parquet and summary.csv with one row per pair "
+        "(see docs/batch.md). A level that fails is recorded and the batch goes on; a re-run skips the pairs "
+        "already finished for the same config and mesh. Needs the 'batch' extra: "
+        "pip install 'graph2structure[batch]'.",
+        epilog="exit codes: 0 every pair ran, 4 some pairs failed (see the summary's error column), "
+        "2 bad config or input, 130 interrupted (finished pairs are kept), 1 internal error of g2s",
+    )
+    batch.add_argument("items", nargs="+", metavar="CONFIG... INPUT...",
+                       help="YAML configs (the leading .yaml/.yml arguments), then levels: mesh files, folders "
+                       f"(searched recursively for {' '.join(SUPPORTED_SUFFIXES)}), glob patterns, or "
+                       f"{SAMPLE_PREFIX}NAME[?param=value&...]")
+    batch.add_argument("-o", "--outdir", type=Path, required=True, help="folder of the batch's results")
+    batch.add_argument("--executor", choices=EXECUTORS, default="local",
+                       help="local: a process pool (default); dask: a dask.distributed cluster; serial: one by one "
+                       "in this process")
+    batch.add_argument("--workers", type=int, metavar="N",
+                       help="processes of the pool or of the Dask LocalCluster (default: the CPU count)")
+    batch.add_argument("--scheduler", metavar="ADDRESS",
+                       help="with --executor dask: the scheduler to use, e.g. tcp://host:8786 "
+                       "(default: start a LocalCluster)")
+    batch.add_argument("--format", metavar="FORMATS", help="comma-separated output formats for every pair "
+                       "(default: each config's outputs.formats)")
+    batch.add_argument("--force", action="store_true", help="recompute the pairs already finished")
+    batch.add_argument("-q", "--quiet", action="store_true", help="no progress bar or totals")
 
     plugins = commands.add_parser("plugins", help="list installed plugins and their parameters, and broken ones")
     plugins.add_argument("--stage", choices=[stage.key for stage in STAGES], help="only this stage")
@@ -85,6 +119,8 @@ def main(argv: Sequence[str] | None = None) -> int:
             return _run(args, errors)
         if args.command == "plugins":
             return _plugins(args)
+        if args.command == "batch":
+            return _batch(args, errors)
         return _demo(args, errors)
     except (G2SError, PluginFailure) as exc:  # the user, or the named plugin's authors, can fix it
         errors.print(f"g2s: error: {exc}", markup=False, highlight=False, soft_wrap=True)
@@ -110,16 +146,52 @@ def _run(args: argparse.Namespace, errors: Console) -> int:
     check_outdir(args.outdir, formats, args.force, protect)
     registry = installed()
     plan = pipeline.plan(config, registry, source=str(args.config))
-    if args.mesh.startswith(SAMPLE_PREFIX):
-        mesh = generate_level(args.mesh, config.mesh, registry)
-        mesh_name, sha = args.mesh[len(SAMPLE_PREFIX):], mesh_sha256(mesh)
-    else:
-        mesh, info = load_mesh(args.mesh, config.mesh)
-        mesh_name, sha = info.name, info.sha256
-        if info.cleaning:
-            removed = ", ".join(f"{count} {what.replace('_', ' ')}" for what, count in info.cleaning.items())
-            _status(args, errors, f"cleaning removed {removed}")
-    return _execute(args, errors, registry, plan, mesh, mesh_name, sha, formats, protect)
+    level = open_level(args.mesh, config.mesh, registry)
+    if level.cleaning:
+        removed = ", ".join(f"{count} {what.replace('_', ' ')}" for what, count in level.cleaning.items())
+        _status(args, errors, f"cleaning removed {removed}")
+    return _execute(args, errors, registry, plan, level, formats)
+
+
+def _batch(args: argparse.Namespace, errors: Console) -> int:
+    configs = list(itertools.takewhile(lambda item: Path(item).suffix.lower() in (".yaml", ".yml"), args.items))
+    inputs = args.items[len(configs):]
+    if not configs or not inputs:
+        raise G2SError("batch: expected one or more configs (.yaml) followed by one or more levels")
+    if args.workers is not None and args.workers < 1:
+        raise G2SError(f"--workers: expected an integer >= 1, got {args.workers}")
+    if args.scheduler and args.executor != "dask":
+        raise G2SError("--scheduler: only with --executor dask")
+    with missing_extra(), _batch_progress(errors, args.quiet) as show:
+        summary = run_batch(configs, inputs, args.outdir, args.executor, workers=args.workers,
+                            scheduler=args.scheduler, formats=args.format, force=args.force, progress=show)
+    failed = summary[summary["status"] != "ok"]
+    for row in failed.itertuples():
+        errors.print(f"g2s: {row.config} on {row.level} failed: {row.error}", markup=False, highlight=False, soft_wrap=True)
+    if not args.quiet:
+        reused = int(summary["reused"].sum())
+        Console().print(f"{len(summary)} pairs: {len(summary) - len(failed)} ok ({reused} already finished), "
+                        f"{len(failed)} failed; summary in {args.outdir / 'summary.csv'} and summary.parquet",
+                        markup=False, highlight=False, soft_wrap=True)
+    return 4 if len(failed) else 0
+
+
+@contextmanager
+def _batch_progress(errors: Console, quiet: bool) -> Iterator[Callable[[BatchProgress], None]]:
+    """A progress bar on stderr (done, failed, remaining, levels per minute), when stderr is a terminal."""
+    if quiet or not errors.is_terminal:
+        yield lambda _counts: None
+        return
+    columns = (TextColumn("batch"), BarColumn(), MofNCompleteColumn(), TextColumn("{task.fields[counts]}"))
+    with RichProgress(*columns, console=errors) as bar:
+        task = bar.add_task("batch", total=None, counts="starting")
+
+        def show(counts: BatchProgress) -> None:
+            bar.update(task, total=counts.total, completed=counts.done, counts=(
+                f"failed {counts.failed}, remaining {counts.total - counts.done}, "
+                f"{counts.per_minute:.1f} levels/min"))
+
+        yield show
 
 
 def _demo(args: argparse.Namespace, errors: Console) -> int:
@@ -130,8 +202,8 @@ def _demo(args: argparse.Namespace, errors: Console) -> int:
     registry = installed()
     plan = pipeline.plan(config, registry, source="configs/demo.yaml")
     mesh = generate_level(f"{SAMPLE_PREFIX}dungeon?seed={args.seed}&rooms={args.rooms}", config.mesh, registry)
-    name = f"dungeon (seed {args.seed}, {args.rooms} rooms)"
-    code = _execute(args, errors, registry, plan, mesh, name, mesh_sha256(mesh), formats)
+    level = Level(mesh, f"dungeon (seed {args.seed}, {args.rooms} rooms)", mesh_sha256(mesh))
+    code = _execute(args, errors, registry, plan, level, formats)
     if code == 0 and not (args.quiet or args.json):
         Console().print(_demo_hint(args.outdir, formats), markup=False, highlight=False, soft_wrap=True)
     return code
@@ -166,17 +238,12 @@ def _execute(
     errors: Console,
     registry: Registry,
     plan: pipeline.Plan,
-    mesh,
-    mesh_name: str,
-    sha: str,
+    level: Level,
     formats: Sequence[str],
-    protect: Sequence[Path] = (),
 ) -> int:
     quiet = args.quiet or args.json
     with _progress(errors, quiet) as say:
-        result = pipeline.run(plan, registry, mesh, mesh_name, sha, progress=say)
-        prepare_outdir(args.outdir, formats, args.force, protect)
-        written = write_outputs(result, args.outdir, formats, replace=args.force, progress=say)
+        result, written = run_to_folder(plan, registry, level, args.outdir, formats, args.force, progress=say)
     if args.json:
         print(json.dumps(_summary(result, args.outdir, formats, written), indent=1, sort_keys=True))
         return 0
@@ -184,7 +251,7 @@ def _execute(
         errors.print(f"g2s: warning: {warning}", markup=False, highlight=False, soft_wrap=True)
     if not args.quiet:
         console = Console()
-        console.print(stage_table(result, title=mesh_name))
+        console.print(stage_table(result, title=level.name))
         for path in written:
             console.print(f"wrote {path}", markup=False, highlight=False, soft_wrap=True)
     return 0

@@ -83,6 +83,38 @@ def load_mesh(path: str | Path, config: MeshConfig | None = None) -> tuple[trime
     return mesh, info
 
 
+@dataclass(frozen=True)
+class Level:
+    """The mesh of a run, opened from a file or a ``sample:`` spec.
+
+    Attributes:
+        mesh: the triangle mesh in metres, Y up.
+        name: the name the outputs record (the file name, or the spec without ``sample:``).
+        sha256: of the file's bytes; of the vertex and face arrays for a generated level.
+        protect: the input file, which no result may overwrite (empty for a generated level).
+        cleaning: what ``mesh.clean`` removed, if it ran.
+    """
+
+    mesh: trimesh.Trimesh
+    name: str
+    sha256: str
+    protect: tuple[Path, ...] = ()
+    cleaning: dict[str, int] | None = None
+
+
+def open_level(spec: str, config: MeshConfig, registry: Registry | None = None) -> Level:
+    """The level of a mesh argument: a mesh file, or ``sample:NAME?param=value&...`` (see :func:`generate_level`).
+
+    Raises:
+        MeshError, ConfigError: as :func:`load_mesh` and :func:`generate_level`.
+    """
+    if spec.startswith(SAMPLE_PREFIX):
+        mesh = generate_level(spec, config, registry)
+        return Level(mesh, spec[len(SAMPLE_PREFIX):], mesh_sha256(mesh))
+    mesh, info = load_mesh(spec, config)
+    return Level(mesh, info.name, info.sha256, (Path(spec),), info.cleaning)
+
+
 def generate_level(spec: str, config: MeshConfig | None = None, registry: Registry | None = None) -> trimesh.Trimesh:
     """The level ``sample:NAME?param=value&...`` from the installed level generator NAME.
 
