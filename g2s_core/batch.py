@@ -18,7 +18,7 @@ there (resume), unless ``force``. Interrupting a batch (Ctrl-C) lets the
 running pairs finish on the process pool, drops the pending ones and writes the
 summary of the finished pairs.
 
-Needs the ``batch`` extra (``pip install 'graph2structure[batch]'``): pandas,
+Needs the ``batch`` extra (``pip install 'g2s[batch]'``): pandas,
 pyarrow and dask.distributed.
 """
 
@@ -34,7 +34,7 @@ import signal
 import time
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
-from contextlib import contextmanager
+from contextlib import closing, contextmanager
 from dataclasses import dataclass
 from multiprocessing import get_context
 from pathlib import Path
@@ -59,7 +59,8 @@ EXECUTORS: tuple[str, ...] = ("local", "dask", "serial")
 RECORDS = ".g2s-batch"
 """The folder of ``OUTDIR`` holding one row file per finished pair."""
 
-INSTALL_HINT = "g2s batch needs the 'batch' extra: pip install 'graph2structure[batch]' (pandas, pyarrow, dask.distributed)"
+INSTALL_HINT = ("g2s batch needs the 'batch' extra: pip install 'g2s[batch]' "
+                "(pandas, pyarrow, dask.distributed; from a clone: make setup)")
 
 COLUMNS: tuple[str, ...] = (
     "config", "level", "input", "folder", "status", "error", "reused", "mesh_sha256", "config_sha256",
@@ -309,6 +310,16 @@ def _ignore_interrupt() -> None:
     signal.signal(signal.SIGINT, signal.SIG_IGN)
 
 
+@contextmanager
+def _children_ignore_interrupt() -> Iterator[None]:
+    """Processes started inside ignore Ctrl-C (the disposition is inherited), this one keeps its handler."""
+    handler = signal.signal(signal.SIGINT, signal.SIG_IGN)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGINT, handler)
+
+
 def _serial(pairs: Sequence[Pair], _workers: int | None, _scheduler: str | None) -> Iterator[dict[str, Any]]:
     for pair in pairs:
         yield run_pair(pair)
@@ -316,17 +327,15 @@ def _serial(pairs: Sequence[Pair], _workers: int | None, _scheduler: str | None)
 
 def _local(pairs: Sequence[Pair], workers: int | None, _scheduler: str | None) -> Iterator[dict[str, Any]]:
     # forkserver: workers start from a clean process, not a copy of one with a progress thread running
-    with ProcessPoolExecutor(workers or os.cpu_count(), get_context("forkserver"), _ignore_interrupt) as pool:
+    pool = ProcessPoolExecutor(workers or os.cpu_count(), get_context("forkserver"), _ignore_interrupt)
+    try:
         pending = {pool.submit(run_pair, pair) for pair in pairs}
-        try:
-            while pending:
-                finished, pending = wait(pending, return_when=FIRST_COMPLETED)
-                for future in finished:
-                    yield future.result()
-        except KeyboardInterrupt:
-            for future in pending:
-                future.cancel()
-            raise
+        while pending:
+            finished, pending = wait(pending, return_when=FIRST_COMPLETED)
+            for future in finished:
+                yield future.result()
+    finally:  # also on Ctrl-C: the running pairs finish, the others are dropped
+        pool.shutdown(wait=True, cancel_futures=True)
 
 
 def _dask(pairs: Sequence[Pair], workers: int | None, scheduler: str | None) -> Iterator[dict[str, Any]]:
@@ -338,10 +347,11 @@ def _dask(pairs: Sequence[Pair], workers: int | None, scheduler: str | None) -> 
         cluster = None
         client = Client(scheduler)
     else:
-        cluster = LocalCluster(
-            n_workers=workers or os.cpu_count(), threads_per_worker=1, processes=True,
-            dashboard_address=None, silence_logs=logging.ERROR,
-        )
+        with _children_ignore_interrupt():
+            cluster = LocalCluster(
+                n_workers=workers or os.cpu_count(), threads_per_worker=1, processes=True,
+                dashboard_address=None, silence_logs=logging.ERROR,
+            )
         client = Client(cluster)
     futures = [client.submit(run_pair, pair, key=f"g2s-{pair.config}/{pair.level}-{pair.config_sha256[:12]}", pure=False)
                for pair in pairs]
@@ -406,17 +416,29 @@ def run_batch(
     pairs = make_pairs(configs, [str(i) for i in inputs], outdir, formats, force)
     counts = Progress(len(pairs))
     rows: dict[tuple[str, str], dict[str, Any]] = {}
+    started = time.time()
     try:
-        for row in _EXECUTORS[executor](pairs, workers, scheduler):
-            rows[row["config"], row["level"]] = row
-            counts.update(row)
-            if progress is not None:
-                progress(counts)
+        with closing(_EXECUTORS[executor](pairs, workers, scheduler)) as finished:
+            for row in finished:
+                rows[row["config"], row["level"]] = row
+                counts.update(row)
+                if progress is not None:
+                    progress(counts)
     finally:
+        for pair in pairs:  # after Ctrl-C: the pairs that finished while the executor stopped
+            if (pair.config, pair.level) not in rows and _written_since(Path(pair.record), started):
+                rows[pair.config, pair.level] = json.loads(Path(pair.record).read_text(encoding="utf-8"))
         summary = _summary([rows[p.config, p.level] for p in pairs if (p.config, p.level) in rows])
         if rows:
             write_summary(summary, outdir)
     return summary
+
+
+def _written_since(path: Path, moment: float) -> bool:
+    try:
+        return path.stat().st_mtime >= moment
+    except OSError:
+        return False
 
 
 def _summary(rows: Iterable[dict[str, Any]]) -> pd.DataFrame:

@@ -65,7 +65,7 @@ def _parser() -> argparse.ArgumentParser:
         "writes it, in OUTDIR/CONFIG/LEVEL/, and OUTDIR/summary.parquet and summary.csv with one row per pair "
         "(see docs/batch.md). A level that fails is recorded and the batch goes on; a re-run skips the pairs "
         "already finished for the same config and mesh. Needs the 'batch' extra: "
-        "pip install 'graph2structure[batch]'.",
+        "pip install 'g2s[batch]'.",
         epilog="exit codes: 0 every pair ran, 4 some pairs failed (see the summary's error column), "
         "2 bad config or input, 130 interrupted (finished pairs are kept), 1 internal error of g2s",
     )

@@ -3,16 +3,21 @@
 from __future__ import annotations
 
 import json
+import os
+import signal
+import subprocess
+import sys
+import time
 from pathlib import Path
 
 import pandas as pd
 import pytest
 
 from g2s_core.batch import RECORDS, expand_inputs, run_batch
+from g2s_core.cli import main
 from g2s_core.errors import G2SError
 from g2s_plugins.samples.levels import dungeon
 from tests.conftest import PROJECT
-from tests.test_cli import assert_user_error, g2s
 
 CONFIG = str(PROJECT / "configs" / "map_analysis.yaml")
 SAMPLES = ["sample:dungeon?seed=1&rooms=12", "sample:dungeon?seed=2&rooms=14"]
@@ -32,6 +37,20 @@ def levels(tmp_path_factory) -> Path:
     return folder
 
 
+def g2s(capsys, *args: str) -> tuple[int, str, str]:
+    """``g2s ARGS`` in this process (the command's own code, without a second interpreter's start-up)."""
+    capsys.readouterr()
+    code = main(list(args))
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def assert_user_error(result: tuple[int, str, str], fragment: str) -> None:
+    code, _, err = result
+    lines = [line for line in err.splitlines() if line.strip()]
+    assert code == 2 and len(lines) == 1 and lines[0].startswith("g2s: error: ") and fragment in lines[0], err
+
+
 def comparable(summary: pd.DataFrame) -> pd.DataFrame:
     """The summary without wall times and result-folder paths, which differ between runs."""
     return summary.drop(columns=[*TIMES, "folder"]).reset_index(drop=True)
@@ -43,7 +62,7 @@ def serial(levels, tmp_path_factory) -> tuple[Path, pd.DataFrame]:
     return out, run_batch([CONFIG], [str(levels), *SAMPLES], out, "serial", formats="json")
 
 
-def test_serial_pairs_are_what_g2s_run_writes(serial, levels, tmp_path):
+def test_serial_pairs_are_what_g2s_run_writes(serial, levels, tmp_path, capsys):
     out, summary = serial
     assert list(summary["level"]) == ["broken", "more/four", "three", *[
         "dungeon_seed_1_rooms_12", "dungeon_seed_2_rooms_14"]]
@@ -51,10 +70,10 @@ def test_serial_pairs_are_what_g2s_run_writes(serial, levels, tmp_path):
     assert len(ok) == 4
     for row in ok.itertuples():
         single = tmp_path / row.level.replace("/", "_")
-        proc = g2s("run", CONFIG, row.input, "-o", str(single), "--format", "json", "--json")
-        assert proc.returncode == 0, proc.stderr
+        code, out, err = g2s(capsys, "run", CONFIG, row.input, "-o", str(single), "--format", "json", "--json")
+        assert code == 0, err
         assert (Path(row.folder) / "structure.json").read_bytes() == (single / "structure.json").read_bytes()
-        stages = {s["stage"]: s for s in json.loads(proc.stdout)["stages"]}
+        stages = {s["stage"]: s for s in json.loads(out)["stages"]}
         assert row.nodes_graph == stages["graph"]["nodes"] and row.edges_graph == stages["graph"]["edges"]
         assert row.terminals == stages["terminals"]["terminals"]
         assert row.nodes_simplify == stages["simplify"]["nodes"]
@@ -147,27 +166,72 @@ def test_inputs_files_folders_globs_and_samples(levels, tmp_path):
         expand_inputs([str(levels / "three.obj"), str(tmp_path / "three.stl")])
 
 
-def test_cli_batch_reports_failures_and_writes_the_summary(levels, tmp_path):
+def test_cli_batch_reports_failures_and_writes_the_summary(levels, tmp_path, capsys):
     out = tmp_path / "out"
-    proc = g2s("batch", CONFIG, str(levels), "sample:dungeon?rooms=4", "-o", str(out), "--workers", "2",
-               "--format", "json")
-    assert proc.returncode == 4, proc.stderr
-    assert "Traceback" not in proc.stderr
-    assert [line for line in proc.stderr.splitlines() if line.strip()] == [
-        line for line in proc.stderr.splitlines() if "map_analysis on broken failed" in line]
-    assert "4 pairs: 3 ok" in proc.stdout
+    code, stdout, stderr = g2s(capsys, "batch", CONFIG, str(levels), "sample:dungeon?rooms=4", "-o", str(out),
+                               "--workers", "2", "--format", "json")
+    assert code == 4, stderr
+    lines = [line for line in stderr.splitlines() if line.strip()]
+    assert len(lines) == 1 and lines[0].startswith("g2s: map_analysis on broken failed: ") and "NaN" in lines[0]
+    assert "4 pairs: 3 ok (0 already finished), 1 failed" in stdout
     assert (out / "summary.parquet").is_file() and (out / RECORDS).is_dir()
 
 
-def test_cli_batch_bad_input_is_one_line(levels, tmp_path):
-    assert_user_error(g2s("batch", CONFIG, str(levels / "nothing*.obj"), "-o", str(tmp_path / "a")),
+def test_cli_batch_bad_input_is_one_line(levels, tmp_path, capsys):
+    assert_user_error(g2s(capsys, "batch", CONFIG, str(levels / "nothing*.obj"), "-o", str(tmp_path / "a")),
                       "nothing*.obj: the pattern matches no files")
-    assert_user_error(g2s("batch", CONFIG, "-o", str(tmp_path / "a")), "expected one or more configs")
+    assert_user_error(g2s(capsys, "batch", CONFIG, "-o", str(tmp_path / "a")), "expected one or more configs")
     bad = tmp_path / "bad.yaml"
     bad.write_text("extends: map_analysis\nsimplify: {plugin: nope}\n")
-    assert_user_error(g2s("batch", str(bad), "sample:dungeon", "-o", str(tmp_path / "a")), "bad.yaml: simplify.plugin")
+    assert_user_error(g2s(capsys, "batch", str(bad), "sample:dungeon", "-o", str(tmp_path / "a")),
+                      "bad.yaml: simplify.plugin")
     (tmp_path / "mine").mkdir()
     (tmp_path / "mine" / "keep.txt").write_text("mine")
-    assert_user_error(g2s("batch", CONFIG, "sample:dungeon", "-o", str(tmp_path / "mine")),
+    assert_user_error(g2s(capsys, "batch", CONFIG, "sample:dungeon", "-o", str(tmp_path / "mine")),
                       "not a g2s batch's")
     assert (tmp_path / "mine" / "keep.txt").read_text() == "mine"
+
+
+def test_cli_batch_on_a_running_dask_scheduler(tmp_path, capsys):
+    from dask.distributed import LocalCluster
+
+    with LocalCluster(n_workers=1, threads_per_worker=1, processes=False, dashboard_address=None) as cluster:
+        code, stdout, stderr = g2s(capsys, "batch", CONFIG, SAMPLES[0], "-o", str(tmp_path / "out"), "--format", "json",
+                                   "--executor", "dask", "--scheduler", cluster.scheduler_address)
+    assert code == 0, stderr
+    assert pd.read_csv(tmp_path / "out" / "summary.csv")["status"].tolist() == ["ok"]
+
+
+def test_cli_batch_without_the_extra_says_how_to_install_it(monkeypatch, tmp_path, capsys):
+    monkeypatch.setitem(sys.modules, "pandas", None)
+    assert_user_error(g2s(capsys, "batch", CONFIG, SAMPLES[0], "-o", str(tmp_path / "out")),
+                      "[batch]' (pandas, pyarrow, dask.distributed")
+    assert not (tmp_path / "out").exists()
+
+
+@pytest.mark.parametrize("executor", ["local", "dask"])
+def test_ctrl_c_stops_cleanly_and_keeps_the_finished_pairs(executor, tmp_path):
+    """Ctrl-C at a terminal interrupts the whole process group: g2s and its workers."""
+    out = tmp_path / "out"
+    records = out / RECORDS / "map_analysis"
+    levels = [f"sample:dungeon?seed={seed}&rooms=60" for seed in range(30)]
+    proc = subprocess.Popen(
+        [sys.executable, "-m", "g2s_core.cli", "batch", CONFIG, *levels, "-o", str(out), "--format", "json",
+         "--executor", executor, "--workers", "2"],
+        cwd=PROJECT, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, start_new_session=True,
+        preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL),  # as from a terminal, not a background job
+    )
+    deadline = time.monotonic() + 120
+    while len(list(records.glob("*.json"))) < 2 and proc.poll() is None and time.monotonic() < deadline:
+        time.sleep(0.1)
+    os.killpg(proc.pid, signal.SIGINT)
+    _, stderr = proc.communicate(timeout=120)
+    assert proc.returncode == 130 and stderr.strip() == "g2s: interrupted", stderr
+    finished = sorted(p.stem for p in records.glob("*.json"))
+    assert 2 <= len(finished) < len(levels)
+    assert sorted(pd.read_csv(out / "summary.csv")["level"]) == finished
+    folders = sorted(p.name for p in (out / "map_analysis").iterdir())
+    # the pool lets its running pairs finish; Dask drops them with their workers (a re-run recomputes them)
+    assert folders == finished if executor == "local" else set(finished) <= set(folders)
+    resumed = run_batch([CONFIG], levels[:3], out, "serial", formats="json")
+    assert list(resumed["reused"]) == [f"dungeon_seed_{seed}_rooms_60" in finished for seed in range(3)]
