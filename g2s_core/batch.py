@@ -1,9 +1,10 @@
 """Batch runs: configs over many levels, on a process pool or a Dask cluster, with one summary table.
 
 Every (config, level) pair is run by :func:`run_pair`, the same function on
-every executor; it opens the level and writes its result folder exactly as
-``g2s run`` does (:func:`g2s_core.mesh.open_level`,
-:func:`g2s_core.outputs.run_to_folder`), then records the pair's summary row.
+every executor; it opens the level, runs it and writes its result folder with
+the functions ``g2s run`` uses (:func:`g2s_core.api.open_mesh`,
+:func:`~g2s_core.api.execute`, :func:`~g2s_core.api.write_result`), then
+records the pair's summary row.
 A pair that fails is recorded with its error and the batch goes on.
 
 Layout of ``OUTDIR``::
@@ -18,7 +19,7 @@ there (resume), unless ``force``. Interrupting a batch (Ctrl-C) lets the
 running pairs finish on the process pool, drops the pending ones and writes the
 summary of the finished pairs.
 
-Needs the ``batch`` extra (``pip install 'g2s[batch]'``): pandas,
+Needs the ``batch`` extra (``pip install 'graph2structure[batch]'``): pandas,
 pyarrow and dask.distributed.
 """
 
@@ -40,12 +41,12 @@ from multiprocessing import get_context
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Literal
 
-from g2s_core import pipeline
-from g2s_core.config import load_raw_config, parse_config
+from g2s_core import DISTRIBUTION, api, pipeline
+from g2s_core.config import find_config, load_raw_config, parse_config
 from g2s_core.errors import G2SError, PluginFailure
-from g2s_core.mesh import SAMPLE_PREFIX, SUPPORTED_SUFFIXES, open_level
+from g2s_core.mesh import SAMPLE_PREFIX, SUPPORTED_SUFFIXES
 from g2s_core.model import RunResult
-from g2s_core.outputs import DEFAULT_FORMATS, parse_formats, result_files, run_to_folder
+from g2s_core.outputs import DEFAULT_FORMATS, parse_formats, result_files
 from g2s_core.registry import installed
 from g2s_core.stages import PIPELINE
 
@@ -59,7 +60,7 @@ EXECUTORS: tuple[str, ...] = ("local", "dask", "serial")
 RECORDS = ".g2s-batch"
 """The folder of ``OUTDIR`` holding one row file per finished pair."""
 
-INSTALL_HINT = ("g2s batch needs the 'batch' extra: pip install 'g2s[batch]' "
+INSTALL_HINT = (f"g2s batch needs the 'batch' extra: pip install '{DISTRIBUTION}[batch]' "
                 "(pandas, pyarrow, dask.distributed; from a clone: make setup)")
 
 COLUMNS: tuple[str, ...] = (
@@ -68,7 +69,8 @@ COLUMNS: tuple[str, ...] = (
     *(f"{what}_{s.key}" for s in PIPELINE if s.key in ("graph", "steiner", "simplify") for what in ("nodes", "edges")),
     "terminals", "openings", "roots", "structure_length", "warnings",
 )
-"""The summary's fixed columns, in order. Then, per analyzer key K: ``K_max``, ``K_mean``, ``K_top_node``.
+"""The summary's fixed columns, in order. Then, per analyzer key K: ``K_max``, ``K_mean``, ``K_top_node``,
+and for analyzers with records (chokepoints, regions) the columns of :func:`_feature_columns`; sorted by name.
 
 ``seconds_*`` are wall seconds (``seconds_total``: the whole pair, opening to
 writing); ``nodes_*``/``edges_*`` the sizes of the initial graph, the Steiner
@@ -122,12 +124,13 @@ def run_pair(pair: Pair) -> dict[str, Any]:
         registry = installed()
         config = parse_config(pair.raw_config, source=pair.source)
         plan = pipeline.plan(config, registry, source=pair.source)
-        level = open_level(pair.spec, config.mesh, registry)
-        row.update(mesh_sha256=level.sha256, seconds_load=time.perf_counter() - start)
-        earlier = _finished_row(pair, level.sha256)
+        mesh = api.open_mesh(pair.spec, config, registry=registry)
+        row.update(mesh_sha256=mesh.sha256, seconds_load=time.perf_counter() - start)
+        earlier = _finished_row(pair, mesh.sha256)
         if earlier is not None:
             return {**earlier, "reused": True}
-        result, _ = run_to_folder(plan, registry, level, Path(pair.folder), pair.formats, force=True)
+        result = api.execute(plan, registry, mesh)
+        api.write_result(result, pair.folder, pair.formats, force=True, registry=registry)
         row.update(result_row(result))
         row["seconds_write"] = time.perf_counter() - start - row["seconds_load"] - result.total_seconds
     except (G2SError, PluginFailure) as exc:
@@ -161,6 +164,29 @@ def result_row(result: RunResult) -> dict[str, Any]:
         row[f"{key}_max"] = None if top is None else values[top]
         row[f"{key}_mean"] = math.fsum(values.values()) / len(values) if values else None
         row[f"{key}_top_node"] = top
+    for key, features in result.features.items():
+        row.update(_feature_columns(key, features))
+    return row
+
+
+def _feature_columns(key: str, features: dict[str, Any]) -> dict[str, Any]:
+    """An analyzer's records summed up (e.g. ``chokepoints``, ``regions``): for each list of records F,
+    ``K_count`` (``K_F_count`` when F is not the analyzer key K), the highest ``score`` and that record's
+    ``width`` (``..._top_score``, ``..._top_width``), the largest ``area`` (``..._largest_area``)."""
+    row: dict[str, Any] = {}
+    for name, records in features.items():
+        if not isinstance(records, list):
+            continue
+        prefix = key if name == key else f"{key}_{name}"
+        row[f"{prefix}_count"] = len(records)
+        scored = [r for r in records if isinstance(r, dict) and "score" in r]
+        if scored:
+            top = max(scored, key=lambda record: record["score"])
+            row[f"{prefix}_top_score"] = top["score"]
+            row[f"{prefix}_top_width"] = top.get("width")
+        areas = [r["area"] for r in records if isinstance(r, dict) and "area" in r]
+        if areas:
+            row[f"{prefix}_largest_area"] = max(areas)
     return row
 
 
@@ -261,7 +287,7 @@ def make_pairs(
         if name in seen:
             raise G2SError(f"{source}: config name {name!r} is also that of {seen[name]}; rename one of the files")
         seen[name] = source
-        raw = load_raw_config(config_path)
+        raw = load_raw_config(find_config(config_path))
         config = parse_config(raw, source=source)
         pipeline.plan(config, registry, source=source)
         chosen = tuple(parse_formats(
@@ -388,7 +414,7 @@ def run_batch(
     """Run every config on every level of ``inputs``; the summary, one row per pair.
 
     Args:
-        configs: YAML config files.
+        configs: preset names or YAML config files.
         inputs: mesh files, folders (searched recursively), glob patterns or
             ``sample:NAME?param=value&...`` specs.
         outdir: the batch's folder (see the module docs for its layout).
@@ -449,9 +475,10 @@ def _summary(rows: Iterable[dict[str, Any]]) -> pd.DataFrame:
     frame = frame.reindex(columns=[*COLUMNS, *extra])
     for column in frame.columns:
         if column.startswith(("nodes_", "edges_")) or column in ("terminals", "openings", "roots", "warnings") \
-                or column.endswith("_top_node"):
+                or column.endswith(("_top_node", "_count")):
             frame[column] = frame[column].astype("Int64")
-        elif column.startswith("seconds_") or column.endswith(("_max", "_mean")) or column == "structure_length":
+        elif column.startswith("seconds_") or column == "structure_length" \
+                or column.endswith(("_max", "_mean", "_top_score", "_top_width", "_largest_area")):
             frame[column] = frame[column].astype("float64")
     frame["reused"] = frame["reused"].astype(bool)
     return frame

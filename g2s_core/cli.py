@@ -1,4 +1,4 @@
-"""The ``g2s`` command line: run a config on a mesh, list plugins, run the demo.
+"""The ``g2s`` command line: run a config on a mesh, batches over many levels, list plugins, run the demo.
 
 Exit codes: 0 success; 2 bad input or config (one line on stderr, no
 traceback); 3 a plugin failed: it could not be loaded, raised an exception or
@@ -12,6 +12,7 @@ import argparse
 import itertools
 import json
 import sys
+import textwrap
 import traceback
 from collections.abc import Callable, Iterator, Sequence
 from contextlib import contextmanager
@@ -23,16 +24,17 @@ from rich.progress import BarColumn, MofNCompleteColumn, TextColumn
 from rich.progress import Progress as RichProgress
 from rich.table import Table
 
-from g2s_core import pipeline
-from g2s_core.batch import EXECUTORS, missing_extra, run_batch
+from g2s_core import api, pipeline, version
+from g2s_core.api import MeshSource
+from g2s_core.batch import EXECUTORS, INSTALL_HINT, missing_extra, run_batch
 from g2s_core.batch import Progress as BatchProgress
-from g2s_core.config import PRESETS_DIR, load_config, load_raw_config, parse_config
+from g2s_core.config import parse_assignment, presets, resolve_config
 from g2s_core.errors import G2SError, PluginFailure
-from g2s_core.mesh import SAMPLE_PREFIX, SUPPORTED_SUFFIXES, Level, generate_level, mesh_sha256, open_level
+from g2s_core.mesh import SAMPLE_PREFIX, SUPPORTED_SUFFIXES
 from g2s_core.model import RunResult
-from g2s_core.outputs import DEFAULT_FORMATS, check_outdir, parse_formats, run_to_folder, writers
+from g2s_core.outputs import DEFAULT_FORMATS, check_outdir, parse_formats, writers
 from g2s_core.registry import Registry, installed, plugin_parameters
-from g2s_core.stages import BY_KEY, STAGES
+from g2s_core.stages import STAGES
 from g2s_core.summary import final_graph, roots_of, stage_rows
 
 EXIT_CODES = "exit codes: 0 success, 2 bad input or config, or a plugin that failed (named with its package), 1 internal error of g2s"
@@ -47,30 +49,37 @@ def _parser() -> argparse.ArgumentParser:
         epilog=EXIT_CODES,
     )
     parser.add_argument("-v", "--verbose", action="store_true", help="show tracebacks of internal errors")
+    parser.add_argument("--version", action="version", version=f"g2s {version()}")
+    # -v is accepted after the command too; SUPPRESS keeps a -v given before it
+    common = argparse.ArgumentParser(add_help=False)
+    common.add_argument("-v", "--verbose", action="store_true", default=argparse.SUPPRESS,
+                        help="show tracebacks of internal errors")
     commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
 
     run = commands.add_parser(
-        "run", help="run a YAML config on a mesh file", description="Run a YAML config on a mesh.", epilog=EXIT_CODES
+        "run", parents=[common], help="run a config (a preset or a YAML file) on a mesh file",
+        description="Run a config (a preset or a YAML file) on a mesh.",
+        epilog=f"{EXIT_CODES}\n\npresets:\n" + "\n".join(_columns(list(presets().items()), width=80, indent=2)),
+        formatter_class=argparse.RawDescriptionHelpFormatter,
     )
-    run.add_argument("config", type=Path, help="YAML config (see configs/ for presets)")
+    run.add_argument("config", help="preset name (see `g2s presets`) or YAML config file")
     run.add_argument("mesh", help=f"mesh file (.obj .glb .gltf .ply .stl .off) or {SAMPLE_PREFIX}NAME[?param=value&...] "
                      "for a level from an installed level generator (see `g2s plugins --stage levels`)")
     run.add_argument("-o", "--outdir", type=Path, required=True, help="folder for the results")
     _add_output_options(run)
 
     batch = commands.add_parser(
-        "batch",
+        "batch", parents=[common],
         help="run configs over many levels on a process pool or a Dask cluster, with a summary table",
         description="Run every config on every level: one result folder per (config, level) pair, as `g2s run` "
         "writes it, in OUTDIR/CONFIG/LEVEL/, and OUTDIR/summary.parquet and summary.csv with one row per pair "
         "(see docs/batch.md). A level that fails is recorded and the batch goes on; a re-run skips the pairs "
-        "already finished for the same config and mesh. Needs the 'batch' extra: "
-        "pip install 'g2s[batch]'.",
+        f"already finished for the same config and mesh. {INSTALL_HINT}.",
         epilog="exit codes: 0 every pair ran, 4 some pairs failed (see the summary's error column), "
         "2 bad config or input, 130 interrupted (finished pairs are kept), 1 internal error of g2s",
     )
     batch.add_argument("items", nargs="+", metavar="CONFIG... INPUT...",
-                       help="YAML configs (the leading .yaml/.yml arguments), then levels: mesh files, folders "
+                       help="configs (the leading preset names and .yaml/.yml files), then levels: mesh files, folders "
                        f"(searched recursively for {' '.join(SUPPORTED_SUFFIXES)}), glob patterns, or "
                        f"{SAMPLE_PREFIX}NAME[?param=value&...]")
     batch.add_argument("-o", "--outdir", type=Path, required=True, help="folder of the batch's results")
@@ -87,10 +96,13 @@ def _parser() -> argparse.ArgumentParser:
     batch.add_argument("--force", action="store_true", help="recompute the pairs already finished")
     batch.add_argument("-q", "--quiet", action="store_true", help="no progress bar or totals")
 
-    plugins = commands.add_parser("plugins", help="list installed plugins and their parameters, and broken ones")
+    commands.add_parser("presets", parents=[common], help="list the preset configs and what each is for")
+
+    plugins = commands.add_parser("plugins", parents=[common],
+                                  help="list installed plugins and their parameters, and broken ones")
     plugins.add_argument("--stage", choices=[stage.key for stage in STAGES], help="only this stage")
 
-    demo = commands.add_parser("demo", help="run the full pipeline on the built-in dungeon sample")
+    demo = commands.add_parser("demo", parents=[common], help="run the full pipeline on the built-in dungeon sample")
     demo.add_argument("-o", "--outdir", type=Path, default=Path("g2s-demo"), help="folder for the results (default: g2s-demo)")
     demo.add_argument("--rooms", type=int, default=12, help="rooms in the generated dungeon (default: 12)")
     demo.add_argument("--seed", type=int, default=0, help="seed of the generated dungeon (default: 0)")
@@ -106,6 +118,9 @@ def _add_output_options(command: argparse.ArgumentParser) -> None:
         f"({', '.join(writers())}) "
         f"(default: the config's, else {','.join(DEFAULT_FORMATS)})",
     )
+    command.add_argument("--set", action="append", default=[], metavar="KEY=VALUE", dest="overrides",
+                         help="override a config value, e.g. --set agent.radius=0.4 --set terminals.params.top_k=20 "
+                         "(repeatable; the value is read as YAML)")
     command.add_argument("--force", action="store_true", help="replace results already in the output folder")
     command.add_argument("-q", "--quiet", action="store_true", help="no progress, tables or file list")
     command.add_argument("--json", action="store_true", help="print only a JSON summary on stdout")
@@ -119,6 +134,8 @@ def main(argv: Sequence[str] | None = None) -> int:
             return _run(args, errors)
         if args.command == "plugins":
             return _plugins(args)
+        if args.command == "presets":
+            return _presets()
         if args.command == "batch":
             return _batch(args, errors)
         return _demo(args, errors)
@@ -140,24 +157,26 @@ def main(argv: Sequence[str] | None = None) -> int:
 
 
 def _run(args: argparse.Namespace, errors: Console) -> int:
-    config = load_config(args.config)
-    formats = _formats(args, config, str(args.config))
+    config, source = resolve_config(args.config, _overrides(args), overrides_source="--set")
+    formats = _formats(args, config, source)
     protect = [] if args.mesh.startswith(SAMPLE_PREFIX) else [Path(args.mesh)]
     check_outdir(args.outdir, formats, args.force, protect)
     registry = installed()
-    plan = pipeline.plan(config, registry, source=str(args.config))
-    level = open_level(args.mesh, config.mesh, registry)
-    if level.cleaning:
-        removed = ", ".join(f"{count} {what.replace('_', ' ')}" for what, count in level.cleaning.items())
+    plan = pipeline.plan(config, registry, source=source)
+    mesh = api.open_mesh(args.mesh, config, registry=registry)
+    if mesh.cleaning:
+        removed = ", ".join(f"{count} {what.replace('_', ' ')}" for what, count in mesh.cleaning.items())
         _status(args, errors, f"cleaning removed {removed}")
-    return _execute(args, errors, registry, plan, level, formats)
+    return _execute(args, errors, registry, plan, mesh, formats)
 
 
 def _batch(args: argparse.Namespace, errors: Console) -> int:
-    configs = list(itertools.takewhile(lambda item: Path(item).suffix.lower() in (".yaml", ".yml"), args.items))
+    names = presets()
+    configs = list(itertools.takewhile(
+        lambda item: Path(item).suffix.lower() in (".yaml", ".yml") or item in names, args.items))
     inputs = args.items[len(configs):]
     if not configs or not inputs:
-        raise G2SError("batch: expected one or more configs (.yaml) followed by one or more levels")
+        raise G2SError("batch: expected one or more configs (preset names or .yaml files) followed by one or more levels")
     if args.workers is not None and args.workers < 1:
         raise G2SError(f"--workers: expected an integer >= 1, got {args.workers}")
     if args.scheduler and args.executor != "dask":
@@ -195,18 +214,21 @@ def _batch_progress(errors: Console, quiet: bool) -> Iterator[Callable[[BatchPro
 
 
 def _demo(args: argparse.Namespace, errors: Console) -> int:
-    raw = load_raw_config(PRESETS_DIR / "demo.yaml")
-    config = parse_config(raw, source="configs/demo.yaml")
-    formats = _formats(args, config, "configs/demo.yaml")
+    config, source = resolve_config("demo", _overrides(args), overrides_source="--set")
+    formats = _formats(args, config, source)
     check_outdir(args.outdir, formats, args.force)
     registry = installed()
-    plan = pipeline.plan(config, registry, source="configs/demo.yaml")
-    mesh = generate_level(f"{SAMPLE_PREFIX}dungeon?seed={args.seed}&rooms={args.rooms}", config.mesh, registry)
-    level = Level(mesh, f"dungeon (seed {args.seed}, {args.rooms} rooms)", mesh_sha256(mesh))
-    code = _execute(args, errors, registry, plan, level, formats)
+    plan = pipeline.plan(config, registry, source=source)
+    spec = f"{SAMPLE_PREFIX}dungeon?seed={args.seed}&rooms={args.rooms}"
+    mesh = api.open_mesh(spec, config, name=f"dungeon (seed {args.seed}, {args.rooms} rooms)", registry=registry)
+    code = _execute(args, errors, registry, plan, mesh, formats)
     if code == 0 and not (args.quiet or args.json):
         Console().print(_demo_hint(args.outdir, formats), markup=False, highlight=False, soft_wrap=True)
     return code
+
+
+def _overrides(args: argparse.Namespace) -> dict[str, Any]:
+    return dict(parse_assignment(text) for text in args.overrides)
 
 
 def _demo_hint(outdir: Path, formats: Sequence[str]) -> str:
@@ -234,16 +256,17 @@ def _formats(args: argparse.Namespace, config: Any, source: str) -> list[str]:
 
 
 def _execute(
-    args,
+    args: argparse.Namespace,
     errors: Console,
     registry: Registry,
     plan: pipeline.Plan,
-    level: Level,
+    mesh: MeshSource,
     formats: Sequence[str],
 ) -> int:
     quiet = args.quiet or args.json
     with _progress(errors, quiet) as say:
-        result, written = run_to_folder(plan, registry, level, args.outdir, formats, args.force, progress=say)
+        result = api.execute(plan, registry, mesh, progress=say)
+        written = api.write_result(result, args.outdir, formats, force=args.force, progress=say, registry=registry)
     if args.json:
         print(json.dumps(_summary(result, args.outdir, formats, written), indent=1, sort_keys=True))
         return 0
@@ -251,7 +274,7 @@ def _execute(
         errors.print(f"g2s: warning: {warning}", markup=False, highlight=False, soft_wrap=True)
     if not args.quiet:
         console = Console()
-        console.print(stage_table(result, title=level.name))
+        console.print(stage_table(result, title=mesh.name))
         for path in written:
             console.print(f"wrote {path}", markup=False, highlight=False, soft_wrap=True)
     return 0
@@ -310,19 +333,44 @@ def stage_table(result: RunResult, title: str = "") -> Table:
 
 
 def _plugins(args: argparse.Namespace) -> int:
+    """Plugins under their stage's config key; parameters in two columns wrapped to the terminal."""
     registry = installed()
     console = Console()
-    for info in registry.plugins(args.stage):
-        console.print(f"[bold]{BY_KEY[info.stage].title}[/bold] [cyan]{info.name}[/cyan]  ({info.package})")
-        if info.summary:
-            console.print(f"  {info.summary}", markup=False, highlight=False)
-        for name, accepted, default, description in plugin_parameters(info):
-            console.print(f"    {name}: {accepted}, default {default}. {description}", markup=False, highlight=False)
+    lines = []
+    for stage in STAGES if args.stage is None else [s for s in STAGES if s.key == args.stage]:
+        lines.append(stage.key)
+        for info in registry.plugins(stage.key):
+            lines.append(f"  {info.name}  ({info.package})")
+            if info.summary:
+                lines.extend(_columns([("", info.summary)], console.width, indent=4))
+            parameters = [(f"{name}:", f"{accepted}, default {default}. {description}")
+                          for name, accepted, default, description in plugin_parameters(info)]
+            lines.extend(_columns(parameters, console.width, indent=6))
+    console.print("\n".join(lines), markup=False, highlight=False, soft_wrap=True)
     for broken in registry.broken:
         if args.stage is None or broken.entry_point.split(".")[0] == args.stage:
             console.print(f"[bold red]broken[/bold red] {broken.entry_point}  ({broken.package})")
             console.print(f"  {broken.target} failed to load: {broken.reason}", markup=False, highlight=False)
     return 0
+
+
+def _presets() -> int:
+    console = Console()
+    console.print("\n".join(_columns(list(presets().items()), console.width, indent=0)),
+                  markup=False, highlight=False, soft_wrap=True)
+    return 0
+
+
+def _columns(rows: Sequence[tuple[str, str]], width: int, indent: int) -> list[str]:
+    """``(term, text)`` rows as two columns, ``text`` wrapped to ``width`` under itself."""
+    left = indent + max((len(term) + 2 for term, _ in rows if term), default=0)
+    text_width = max(width - left, 30)
+    lines = []
+    for term, text in rows:
+        wrapped = textwrap.wrap(text, text_width) or [""]
+        lines.append((" " * indent + term).ljust(left) + wrapped[0])
+        lines.extend(" " * left + line for line in wrapped[1:])
+    return lines
 
 
 if __name__ == "__main__":

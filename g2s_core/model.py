@@ -22,8 +22,9 @@ parent -> child, the node attributes above plus ``depth`` (root = 0) and
 from __future__ import annotations
 
 import dataclasses
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import TYPE_CHECKING, Any, Protocol, runtime_checkable
 
 import networkx as nx
@@ -107,6 +108,9 @@ class Opening:
         heading: unit vector pointing out of the piece.
         width: length of the opening segment, metres.
         p0, p1: the segment's end points, metres.
+        score: the detector's confidence in [0, 1]; ``None`` when not detected
+            (ground truth, user input).
+        reason: why the detector kept it (the measurements behind the score).
     """
 
     position: Vec3
@@ -114,6 +118,8 @@ class Opening:
     width: float
     p0: Vec3
     p1: Vec3
+    score: float | None = None
+    reason: str | None = None
 
 
 @dataclass(frozen=True)
@@ -139,6 +145,21 @@ class StageStats:
     nodes: int | None = None
     edges: int | None = None
     terminals: int | None = None
+
+
+@dataclass(frozen=True)
+class AnalyzerResult:
+    """What an Analyzer may return instead of a plain mapping: values plus records.
+
+    Attributes:
+        values: a float for every node of the structure (as a plain mapping would be).
+        features: structured findings (e.g. ``{"chokepoints": [...]}``), JSON data
+            only (dicts, lists, str, int, float, bool, None); kept on
+            ``RunResult.features[key]`` and written to the outputs.
+    """
+
+    values: Mapping[int, float]
+    features: Mapping[str, Any] = field(default_factory=dict)
 
 
 @dataclass
@@ -181,13 +202,22 @@ class RunResult:
     forest: nx.DiGraph | None = None
     structure: nx.DiGraph | None = None
     analysis: dict[str, dict[int, float]] = field(default_factory=dict)
+    features: dict[str, dict[str, Any]] = field(default_factory=dict)
     stages: list[StageStats] = field(default_factory=list)
+    mesh_path: Path | None = None
+    """The mesh file the run read (never overwritten by :meth:`write`), if any."""
     formats: tuple[str, ...] = ()
     """The output formats this run's results are written in (set by the writer before writing)."""
 
     @property
     def warnings(self) -> list[str]:
         return self.context.warnings
+
+    def write(self, outdir: str | Path, formats: str | Sequence[str] | None = None, force: bool = False) -> list[Path]:
+        """Write the result files (``g2s run``'s) into ``outdir``; see :func:`g2s_core.api.write_result`."""
+        from g2s_core.api import write_result  # the writers are plugins, which import this module
+
+        return write_result(self, outdir, formats, force=force)
 
     @property
     def total_seconds(self) -> float:

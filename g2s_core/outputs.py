@@ -11,9 +11,7 @@ import os
 from collections.abc import Callable, Sequence
 from pathlib import Path
 
-from g2s_core import pipeline
 from g2s_core.errors import G2SError
-from g2s_core.mesh import Level
 from g2s_core.model import RunResult
 from g2s_core.registry import PluginInfo, Registry, installed
 
@@ -125,26 +123,6 @@ def write_outputs(
             if path.exists() and path.resolve() not in keep:
                 path.unlink()
     return written
-
-
-def run_to_folder(
-    plan: pipeline.Plan,
-    registry: Registry,
-    level: Level,
-    outdir: Path,
-    formats: Sequence[str],
-    force: bool,
-    progress: Callable[[str], None] | None = None,
-) -> tuple[RunResult, list[Path]]:
-    """What ``g2s run`` does once its inputs are read: run the planned stages on ``level``,
-    then write ``formats`` into ``outdir`` (see :func:`prepare_outdir` and :func:`write_outputs`).
-
-    Returns:
-        The run's result and the paths written.
-    """
-    result = pipeline.run(plan, registry, level.mesh, level.name, level.sha256, progress=progress)
-    prepare_outdir(outdir, formats, force, level.protect, registry)
-    return result, write_outputs(result, outdir, formats, replace=force, progress=progress, registry=registry)
 
 
 def _same_file(a: Path, b: Path) -> bool:

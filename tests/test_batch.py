@@ -235,3 +235,16 @@ def test_ctrl_c_stops_cleanly_and_keeps_the_finished_pairs(executor, tmp_path):
     assert folders == finished if executor == "local" else set(finished) <= set(folders)
     resumed = run_batch([CONFIG], levels[:3], out, "serial", formats="json")
     assert list(resumed["reused"]) == [f"dungeon_seed_{seed}_rooms_60" in finished for seed in range(3)]
+
+
+def test_chokepoints_and_regions_are_summed_up(tmp_path):
+    summary = run_batch(["level_regions"], ["sample:dungeon?seed=1&rooms=30"], tmp_path / "out", "serial",
+                        formats="json")
+    row = summary.iloc[0]
+    assert row["status"] == "ok" and row["config"] == "level_regions"
+    features = json.loads((Path(row["folder"]) / "structure.json").read_text())["features"]
+    chokepoints, regions = features["chokepoints"]["chokepoints"], features["regions"]["regions"]
+    assert row["chokepoints_count"] == len(chokepoints) > 0 and row["regions_count"] == len(regions) > 1
+    assert row["chokepoints_top_score"] == pytest.approx(max(c["score"] for c in chokepoints))
+    assert row["chokepoints_top_score"] == pytest.approx(row["chokepoints_max"])  # the score near its nodes
+    assert row["regions_largest_area"] == pytest.approx(max(r["area"] for r in regions))

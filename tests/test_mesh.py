@@ -6,6 +6,7 @@ import numpy as np
 import pytest
 import trimesh
 
+from g2s_core import DISTRIBUTION
 from g2s_core.config import MeshConfig
 from g2s_core.errors import ConfigError, MeshError
 from g2s_core.mesh import SUPPORTED_SUFFIXES, file_sha256, generate_level, load_mesh
@@ -85,11 +86,29 @@ def test_supported_suffixes_are_documented_in_the_error(tmp_path):
         load_mesh(path)
 
 
+@pytest.mark.parametrize("suffix, encoding", [(".ply", "binary"), (".ply", "ascii"), (".stl", None), (".off", None)])
+def test_single_mesh_files_skip_the_scene_and_read_the_same_arrays(tmp_path, suffix, encoding):
+    source = trimesh.creation.icosphere(subdivisions=2)
+    path = tmp_path / f"m{suffix}"
+    source.export(path, **({"encoding": encoding} if encoding else {}))
+    mesh, info = load_mesh(path)
+    reference = trimesh.load(path, force="mesh", process=False)
+    assert np.array_equal(mesh.vertices, reference.vertices) and np.array_equal(mesh.faces, reference.faces)
+    assert info.faces == len(source.faces)
+
+
+def test_a_ply_point_cloud_is_still_refused(tmp_path):
+    path = tmp_path / "points.ply"
+    trimesh.PointCloud(np.random.default_rng(0).random((10, 3))).export(path)
+    with pytest.raises(MeshError, match="points.ply: the mesh is empty"):
+        load_mesh(path)
+
+
 # --- sample:NAME?param=value levels, from the installed level generators ---------------
 
 
 def test_sample_levels_come_from_the_level_generators_with_their_parameters():
-    builtin = {p.name for p in installed().plugins("levels") if p.package == "g2s"}
+    builtin = {p.name for p in installed().plugins("levels") if p.package == DISTRIBUTION}
     assert builtin == set(levels.SAMPLES)  # every sample level is a generator
     mesh = generate_level("sample:dungeon?rooms=3&seed=2&loops=0.5")
     expected = levels.dungeon(rooms=3, seed=2, loops=0.5).mesh
