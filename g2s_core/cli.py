@@ -70,6 +70,8 @@ def _parser() -> argparse.ArgumentParser:
 
     batch = commands.add_parser(
         "batch", parents=[common],
+        usage="g2s batch CONFIG [CONFIG ...] INPUT [INPUT ...] -o OUTDIR [--executor {local,dask,serial}] "
+        "[--workers N] [--scheduler ADDRESS] [--format FORMATS] [--force] [-q] [-v]",
         help="run configs over many levels on a process pool or a Dask cluster, with a summary table",
         description="Run every config on every level: one result folder per (config, level) pair, as `g2s run` "
         "writes it, in OUTDIR/CONFIG/LEVEL/, and OUTDIR/summary.parquet and summary.csv with one row per pair "
@@ -78,7 +80,7 @@ def _parser() -> argparse.ArgumentParser:
         epilog="exit codes: 0 every pair ran, 4 some pairs failed (see the summary's error column), "
         "2 bad config or input, 130 interrupted (finished pairs are kept), 1 internal error of g2s",
     )
-    batch.add_argument("items", nargs="+", metavar="CONFIG... INPUT...",
+    batch.add_argument("items", nargs="+", metavar="CONFIG|INPUT",
                        help="configs (the leading preset names and .yaml/.yml files), then levels: mesh files, folders "
                        f"(searched recursively for {' '.join(SUPPORTED_SUFFIXES)}), glob patterns, or "
                        f"{SAMPLE_PREFIX}NAME[?param=value&...]")
