@@ -376,7 +376,7 @@ def _dask(pairs: Sequence[Pair], workers: int | None, scheduler: str | None) -> 
         with _children_ignore_interrupt():
             cluster = LocalCluster(
                 n_workers=workers or os.cpu_count(), threads_per_worker=1, processes=True,
-                dashboard_address=None, silence_logs=logging.ERROR,
+                dashboard_address=":0", silence_logs=logging.ERROR,
             )
         client = Client(cluster)
     futures = [client.submit(run_pair, pair, key=f"g2s-{pair.config}/{pair.level}-{pair.config_sha256[:12]}", pure=False)

@@ -195,7 +195,7 @@ def test_cli_batch_bad_input_is_one_line(levels, tmp_path, capsys):
 def test_cli_batch_on_a_running_dask_scheduler(tmp_path, capsys):
     from dask.distributed import LocalCluster
 
-    with LocalCluster(n_workers=1, threads_per_worker=1, processes=False, dashboard_address=None) as cluster:
+    with LocalCluster(n_workers=1, threads_per_worker=1, processes=False, dashboard_address=":0") as cluster:
         code, stdout, stderr = g2s(capsys, "batch", CONFIG, SAMPLES[0], "-o", str(tmp_path / "out"), "--format", "json",
                                    "--executor", "dask", "--scheduler", cluster.scheduler_address)
     assert code == 0, stderr
