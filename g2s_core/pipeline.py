@@ -16,6 +16,7 @@ from g2s_core.config import RunConfig
 from g2s_core.errors import ConfigError, G2SError, PluginError
 from g2s_core.model import RunContext, RunResult, StageStats, Terminals
 from g2s_core.plugin import PluginParams
+from g2s_core.loops import add_loops
 from g2s_core.registry import PluginInfo, Registry
 from g2s_core.rooted import root_forest
 from g2s_core.simplify import simplify_forest
@@ -97,7 +98,7 @@ def run(
     say = progress or (lambda _message: None)
     bounds = np.asarray(mesh.bounds, dtype=np.float64)
     context = RunContext(mesh=mesh, agent=config.agent, centre=bounds.mean(axis=0))
-    result = RunResult(config=config.model_dump(mode="json"), mesh_name=mesh_name, mesh_sha256=mesh_sha256, context=context)
+    result = RunResult(config=config.record(), mesh_name=mesh_name, mesh_sha256=mesh_sha256, context=context)
     stages = plan_.stages
 
     say("Step 1: initial graph")
@@ -138,6 +139,10 @@ def run(
         steiner = steiner_forest(graph, terminals.nodes, lambda sub, terms: _call(
             registry, stages["steiner"], graph=sub, terminals=terms, context=context), context)
         record.update(nodes=steiner.number_of_nodes(), edges=steiner.number_of_edges())
+    if config.loops is not None:
+        with _timed(result.stages, "loops") as record:
+            steiner = add_loops(graph, steiner, config.loops.stretch, config.loops.min_gain)
+            record.update(nodes=steiner.number_of_nodes(), edges=steiner.number_of_edges())
     result.steiner = steiner
     if "roots" not in stages:
         return result

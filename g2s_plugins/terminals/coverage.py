@@ -1,0 +1,127 @@
+"""Coverage: leaves, then the farthest uncovered nodes, until every walkable node lies within ``radius`` of a terminal.
+
+The paper's leaves reach every dead end, but a room with no degree-1 polygon
+(a dead-end room split into polygons around a pillar, a ring corridor) gets
+no terminal and no structure. This selector keeps the leaves and then covers
+the rest greedily, farthest first (a farthest-point cover, as in Gonzalez's
+k-center heuristic):
+
+1. distances from the leaves along the graph (one multi-source Dijkstra);
+   an area without leaves is seeded with its node farthest from its
+   lowest-id node;
+2. the nodes farther than ``radius`` are visited farthest first; each one
+   not yet within ``radius`` of a chosen node becomes a terminal and marks
+   its ``radius`` ball (a Dijkstra bounded by ``radius`` on the uncovered
+   part of the graph) as covered.
+
+Every terminal ends up on the Steiner structure, so every node of an area
+with terminals ends up within ``radius`` of the structure along the graph.
+Areas (connected components) smaller than ``min_area`` are reported in a
+warning and get no extra terminals (their leaves stay, as with ``leaves``).
+
+Default ``radius``: 8 agent radii (4 m for the default 0.5 m agent; a
+corridor-and-door scale), but no more than a tenth of the level's horizontal
+extent so that small levels get more than one terminal. Default
+``min_area``: the area of a disc of ``radius``.
+
+Complexity: O(m + n log n) for step 1 plus, per added terminal, a Dijkstra
+bounded by ``radius`` over the uncovered nodes.
+"""
+
+from __future__ import annotations
+
+import math
+
+import networkx as nx
+import numpy as np
+from pydantic import Field
+from scipy.sparse import csgraph
+
+from g2s_core.model import RunContext, Terminals
+from g2s_core.plugin import PluginParams, hookimpl
+from g2s_plugins import traffic
+
+NAME = "coverage"
+
+AGENT_RADII = 8.0
+"""Default cover radius in agent radii."""
+
+EXTENT_SHARE = 0.1
+"""Default cover radius at most this share of the level's horizontal extent."""
+
+
+class Params(PluginParams):
+    """Cover radius and the smallest area that is forced in."""
+
+    radius: float | None = Field(None, gt=0, description="every walkable node within this many metres (along the graph) of a terminal; default 8 agent radii, at most 1/10 of the level's extent")
+    min_area: float | None = Field(None, ge=0, description="walkable areas smaller than this (m²) are reported, not covered; default pi radius²")
+
+
+def default_radius(context: RunContext) -> float:
+    """The default cover radius for the agent and level of ``context``, metres."""
+    extent = np.ptp(np.asarray(context.mesh.bounds, dtype=np.float64)[:, [0, 2]], axis=0)
+    return float(min(AGENT_RADII * context.agent.radius, EXTENT_SHARE * float(np.hypot(*extent)) or math.inf))
+
+
+@hookimpl
+def g2s_select_terminals(graph: nx.Graph, params: Params, context: RunContext) -> Terminals:
+    """Leaves plus greedy farthest-first cover terminals, by ascending id."""
+    radius = params.radius if params.radius is not None else default_radius(context)
+    min_area = params.min_area if params.min_area is not None else math.pi * radius**2
+    arrays = traffic.surface_arrays(graph)
+    adjacency = arrays.adjacency
+    degree = np.diff(adjacency.indptr)
+    count, labels = csgraph.connected_components(adjacency, directed=False)
+    component_area = np.bincount(labels, weights=arrays.area, minlength=count)
+    small = component_area < min_area
+    if small.any():
+        context.warn(
+            f"coverage: {int(small.sum())} walkable area(s) smaller than {min_area:.3g} m² "
+            f"({component_area[small].sum():.3g} m² in all) are not covered"
+        )
+    leaves = np.flatnonzero(degree == 1)
+    seeds = _seeds(adjacency, labels, count, leaves, small)
+    distance, _ = traffic.distance_to(arrays, np.concatenate([leaves, seeds]))
+    chosen = _cover(adjacency, distance, labels, small, radius)
+    rows = np.unique(np.concatenate([leaves, seeds, chosen]))
+    return Terminals(nodes=tuple(sorted(arrays.nodes[i] for i in rows.tolist())))
+
+
+def _seeds(adjacency, labels: np.ndarray, count: int, leaves: np.ndarray, small: np.ndarray) -> np.ndarray:
+    """One node per big enough area without leaves: the farthest from its lowest-id node."""
+    has_leaf = np.zeros(count, dtype=bool)
+    has_leaf[labels[leaves]] = True
+    firsts = np.unique(labels, return_index=True)[1]
+    lonely = firsts[~has_leaf & ~small]
+    if lonely.size == 0:
+        return np.zeros(0, dtype=np.int64)
+    distance = csgraph.dijkstra(adjacency, directed=False, indices=lonely, min_only=True)
+    seeds = []
+    for first in lonely.tolist():
+        members = np.flatnonzero(labels == labels[first])
+        seeds.append(int(members[np.argmax(distance[members])]))
+    return np.asarray(seeds, dtype=np.int64)
+
+
+def _cover(adjacency, distance: np.ndarray, labels: np.ndarray, small: np.ndarray, radius: float) -> np.ndarray:
+    """Greedy farthest-first cover of the nodes farther than ``radius`` from the seeds."""
+    far = np.flatnonzero((distance > radius) & ~small[labels])
+    if far.size == 0:
+        return np.zeros(0, dtype=np.int64)
+    # balls are searched on the nodes not already within radius / 2 of the seeds:
+    # a smaller graph, and distances there are >= the true ones (still a cover)
+    region = np.flatnonzero(distance > radius / 2)
+    local = np.full(len(distance), -1, dtype=np.int64)
+    local[region] = np.arange(region.size)
+    sub = adjacency[region][:, region]
+    covered = np.zeros(region.size, dtype=bool)
+    order = far[np.lexsort((far, -distance[far]))]  # farthest first, ties by row
+    chosen = []
+    for node in order.tolist():
+        at = local[node]
+        if covered[at]:
+            continue
+        chosen.append(node)
+        ball = csgraph.dijkstra(sub, directed=False, indices=at, limit=radius)
+        covered |= np.isfinite(ball)
+    return np.asarray(chosen, dtype=np.int64)
