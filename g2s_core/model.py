@@ -63,10 +63,14 @@ class Terminals:
         nodes: terminal node ids, in a deterministic order. Nodes the selector
             added to the graph are included.
         openings: the entry/exit openings the terminals stand for, if any.
+        waypoints: those of ``nodes`` that only pull the structure into an
+            area (e.g. coverage): the Steiner tree joins them, but unlike the
+            other terminals simplification may remove them.
     """
 
     nodes: tuple[int, ...]
     openings: tuple[Opening, ...] = ()
+    waypoints: tuple[int, ...] = ()
 
 
 @dataclass(frozen=True)

@@ -123,7 +123,7 @@ def run(
             raise PluginError(f"TerminalSelector {stages['terminals'].plugin.name!r} returned nodes not in the graph: {unknown[:5]}")
         record.update(terminals=len(terminals.nodes))
     result.terminals = terminals
-    for node in terminals.nodes:
+    for node in set(terminals.nodes).difference(terminals.waypoints):
         graph.nodes[node]["terminal"] = True
     if not terminals.nodes:
         context.warn(

@@ -100,6 +100,9 @@ def evaluate(
     if reference is None:
         reference = reference_flow(result)
     area = arrays.area if arrays.area.sum() > 0 else np.ones(arrays.n)
+    if result.structure is None:  # no terminals: nothing was joined
+        return Quality({r: 0.0 for r in radii}, 1.0, float("nan"), float("nan"), 0.0, arrays.n, 0,
+                       {s.stage: s.seconds for s in result.stages})
     distance, _ = traffic.distance_to(arrays, arrays.rows(sorted(result.steiner)))
     within = {r: float(area[distance <= r].sum() / area.sum()) for r in radii}
     total_flow = reference.sum()

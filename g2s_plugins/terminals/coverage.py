@@ -9,13 +9,16 @@ k-center heuristic):
 1. distances from the leaves along the graph (one multi-source Dijkstra);
    an area without leaves is seeded with its node farthest from its
    lowest-id node;
-2. the nodes farther than ``radius`` are visited farthest first; each one
-   not yet within ``radius`` of a chosen node becomes a terminal and marks
-   its ``radius`` ball (a Dijkstra bounded by ``radius`` on the uncovered
-   part of the graph) as covered.
+2. while some node is farther than ``radius`` from the set, the farthest
+   one and its shortest path back to the set join it (an incremental
+   Steiner tree grown farthest first), and the distances are updated by a
+   Dijkstra from the new path bounded by the old farthest distance.
 
-Every terminal ends up on the Steiner structure, so every node of an area
-with terminals ends up within ``radius`` of the structure along the graph.
+The nodes added in step 2 are terminals, so the Steiner structure contains
+them all and every node of an area with terminals ends up within
+``radius`` of the structure along the graph. They are *waypoints*:
+simplification may drop them like any node on a path (the structure's
+straight edges still pass there), so they do not bloat the final structure.
 Areas (connected components) smaller than ``min_area`` are reported in a
 warning and get no extra terminals (their leaves stay, as with ``leaves``).
 
@@ -24,8 +27,9 @@ corridor-and-door scale), but no more than a tenth of the level's horizontal
 extent so that small levels get more than one terminal. Default
 ``min_area``: the area of a disc of ``radius``.
 
-Complexity: O(m + n log n) for step 1 plus, per added terminal, a Dijkstra
-bounded by ``radius`` over the uncovered nodes.
+Complexity: O(m + n log n) for step 1 plus, per added path, a bounded
+Dijkstra over the part of the graph farther than ``radius / 2`` from the
+leaves (scipy: O(size of that part) each).
 """
 
 from __future__ import annotations
@@ -65,7 +69,7 @@ def default_radius(context: RunContext) -> float:
 
 @hookimpl
 def g2s_select_terminals(graph: nx.Graph, params: Params, context: RunContext) -> Terminals:
-    """Leaves plus greedy farthest-first cover terminals, by ascending id."""
+    """Leaves plus the farthest-first cover paths, by ascending id."""
     radius = params.radius if params.radius is not None else default_radius(context)
     min_area = params.min_area if params.min_area is not None else math.pi * radius**2
     arrays = traffic.surface_arrays(graph)
@@ -80,11 +84,14 @@ def g2s_select_terminals(graph: nx.Graph, params: Params, context: RunContext) -
             f"({component_area[small].sum():.3g} m² in all) are not covered"
         )
     leaves = np.flatnonzero(degree == 1)
-    seeds = _seeds(adjacency, labels, count, leaves, small)
-    distance, _ = traffic.distance_to(arrays, np.concatenate([leaves, seeds]))
-    chosen = _cover(adjacency, distance, labels, small, radius)
-    rows = np.unique(np.concatenate([leaves, seeds, chosen]))
-    return Terminals(nodes=tuple(sorted(arrays.nodes[i] for i in rows.tolist())))
+    seeds = np.concatenate([leaves, _seeds(adjacency, labels, count, leaves, small)])
+    cover = _cover(adjacency, seeds, ~small[labels], radius)
+    waypoints = np.setdiff1d(cover, leaves)
+    rows = np.union1d(leaves, waypoints)
+    return Terminals(
+        nodes=tuple(sorted(arrays.nodes[i] for i in rows.tolist())),
+        waypoints=tuple(sorted(arrays.nodes[i] for i in waypoints.tolist())),
+    )
 
 
 def _seeds(adjacency, labels: np.ndarray, count: int, leaves: np.ndarray, small: np.ndarray) -> np.ndarray:
@@ -103,25 +110,38 @@ def _seeds(adjacency, labels: np.ndarray, count: int, leaves: np.ndarray, small:
     return np.asarray(seeds, dtype=np.int64)
 
 
-def _cover(adjacency, distance: np.ndarray, labels: np.ndarray, small: np.ndarray, radius: float) -> np.ndarray:
-    """Greedy farthest-first cover of the nodes farther than ``radius`` from the seeds."""
-    far = np.flatnonzero((distance > radius) & ~small[labels])
-    if far.size == 0:
-        return np.zeros(0, dtype=np.int64)
-    # balls are searched on the nodes not already within radius / 2 of the seeds:
-    # a smaller graph, and distances there are >= the true ones (still a cover)
-    region = np.flatnonzero(distance > radius / 2)
+def _cover(adjacency, seeds: np.ndarray, eligible: np.ndarray, radius: float) -> np.ndarray:
+    """The seeds plus, farthest node first, shortest paths to the growing set until all is within ``radius``.
+
+    Distances are updated on the part of the graph farther than ``radius / 2``
+    from the seeds (the rest is covered for good); distances measured there
+    are >= the true ones, so the cover holds on the whole graph.
+    """
+    distance, predecessor, _ = csgraph.dijkstra(
+        adjacency, directed=False, indices=seeds, min_only=True, return_predecessors=True
+    )
+    predecessor = predecessor.astype(np.int64)
+    region = np.flatnonzero((distance > radius / 2) & eligible)
     local = np.full(len(distance), -1, dtype=np.int64)
     local[region] = np.arange(region.size)
     sub = adjacency[region][:, region]
-    covered = np.zeros(region.size, dtype=bool)
-    order = far[np.lexsort((far, -distance[far]))]  # farthest first, ties by row
-    chosen = []
-    for node in order.tolist():
-        at = local[node]
-        if covered[at]:
-            continue
-        chosen.append(node)
-        ball = csgraph.dijkstra(sub, directed=False, indices=at, limit=radius)
-        covered |= np.isfinite(ball)
-    return np.asarray(chosen, dtype=np.int64)
+    near = distance[region].copy()
+    chosen = [seeds]
+    while region.size:
+        at = int(np.argmax(near))
+        if not near[at] > radius:
+            break
+        path = [int(region[at])]
+        while predecessor[path[-1]] >= 0:
+            path.append(int(predecessor[path[-1]]))
+        path = np.asarray(path[:-1], dtype=np.int64)  # the last node is already in the set
+        chosen.append(path)
+        predecessor[path] = -1
+        inside = local[path][local[path] >= 0]
+        reach, via, _ = csgraph.dijkstra(
+            sub, directed=False, indices=inside, limit=float(near[at]), min_only=True, return_predecessors=True
+        )
+        better = reach < near
+        near[better] = reach[better]
+        predecessor[region[better]] = np.where(via[better] >= 0, region[np.maximum(via[better], 0)], -1)
+    return np.unique(np.concatenate(chosen))
