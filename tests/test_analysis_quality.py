@@ -88,7 +88,7 @@ def test_dead_end_room_with_a_central_pillar_is_covered(registry):
     result = run(registry, level.mesh, preset("map_analysis"))
     graph = result.graph
     assert not [n for n, d in graph.degree() if d == 1], "the room should have no leaf polygon"
-    radius = 8 * 0.5
+    radius = 12 * 0.5
     arrays = traffic.surface_arrays(graph)
     distance, _ = traffic.distance_to(arrays, arrays.rows(result.steiner))
     assert result.structure.number_of_nodes() >= 2
@@ -187,5 +187,5 @@ def test_new_preset_covers_nav_test_and_keeps_a_skeleton(registry):
     result = run(registry, mesh, preset("map_analysis"))
     quality = evaluation.evaluate(result)
     assert quality.area_within[6.0] > 0.95
-    assert quality.structure_share < 0.5
+    assert quality.structure_share < 0.7  # nav_test has big polygons: 173 for 4,265 m²
     assert -1.0 <= quality.rho <= 1.0

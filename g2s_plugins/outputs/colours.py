@@ -36,6 +36,8 @@ NAVMESH_COLOUR: RGB = (60, 200, 90)
 NAVMESH_ALPHA = 0.35
 GRAPH_COLOUR: RGB = (90, 90, 90)
 STEINER_COLOUR: RGB = (150, 60, 200)
+LOOP_COLOUR: RGB = (25, 25, 25)
+"""Loop edges (a structure with loops, see g2s_core.loops): near-black, dotted where the format allows."""
 
 HEAT_STOPS: tuple[tuple[float, RGB], ...] = ((0.0, (0, 160, 0)), (0.5, (250, 210, 0)), (1.0, (220, 0, 0)))
 """The analysis scale: green at the lowest value, yellow at the middle, red at the highest."""

@@ -21,6 +21,7 @@ STEP_ROWS = (
     ("graph", "Step 1", "initial graph"),
     ("terminals", "Step 2", "terminals"),
     ("steiner", "Step 3", "Steiner tree"),
+    ("loops", "Step 3", "loops kept"),
     ("roots", "Step 4", "rooted trees"),
     ("simplify", "Step 5", "simplification"),
     ("analysis", "Post-process", "analysis"),
@@ -90,6 +91,11 @@ def edge_list(graph: nx.Graph) -> list[tuple[int, int]]:
     if graph.is_directed():
         return sorted((int(u), int(v)) for u, v in graph.edges)
     return sorted(tuple(sorted((int(u), int(v)))) for u, v in graph.edges)  # type: ignore[misc]
+
+
+def is_loop_edge(graph: nx.Graph, u: int, v: int) -> bool:
+    """Whether (u, v) is a loop edge of a rooted structure with loops (see :mod:`g2s_core.rooted`)."""
+    return bool(graph.edges[u, v].get("loop", False))
 
 
 def floors(heights: Sequence[float], gap: float) -> list[np.ndarray]:

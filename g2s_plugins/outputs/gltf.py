@@ -12,8 +12,10 @@ Scene nodes (names are stable, so scripts can find them):
     blue, magenta, orange, violet, repeating), or, when the run has analysis
     values, the child's first analysis value on the green -> yellow -> red
     scale (min-max over the structure). Undirected graphs (runs stopped
-    before step 4) are drawn grey. Its extras list the edges ``[u, v]`` in the
-    order of the line segments and what the colours show.
+    before step 4) are drawn grey. Loop edges (structures with loops, see
+    :mod:`g2s_core.loops`) are near-black whatever the colouring. Its extras
+    list the edges ``[u, v]`` in the order of the line segments, what the
+    colours show and, when there are any, the ``loop_edges``.
 ``root_<id>``
     A red sphere on each root.
 ``terminal_<id>``
@@ -42,7 +44,7 @@ from trimesh.visual.texture import TextureVisuals
 
 from g2s_core.model import RunResult
 from g2s_plugins.outputs import colours
-from g2s_plugins.outputs.common import agent_value, edge_list, final_graph, number, roots_of, terminal_ids
+from g2s_plugins.outputs.common import agent_value, edge_list, final_graph, is_loop_edge, number, roots_of, terminal_ids
 from g2s_plugins.outputs.files import atomic_write
 
 GLB_FILE = "structure.glb"
@@ -83,9 +85,12 @@ def build_scene(result: RunResult) -> trimesh.Scene:
     heat = _heat_levels(graph, result.analysis[keys[0]]) if keys else {}
     edges = edge_list(graph)
     if edges:
-        scene.add_geometry(_lines(graph, edges, heat), node_name="structure", geom_name="structure",
-                           metadata={"edges": [list(e) for e in edges], "colour_by": keys[0] if keys else
-                                     ("depth" if graph.is_directed() else "none")})
+        metadata: dict[str, Any] = {"edges": [list(e) for e in edges], "colour_by": keys[0] if keys else
+                                    ("depth" if graph.is_directed() else "none")}
+        loops = [list(e) for e in edges if graph.is_directed() and is_loop_edge(graph, *e)]
+        if loops:
+            metadata["loop_edges"] = loops
+        scene.add_geometry(_lines(graph, edges, heat), node_name="structure", geom_name="structure", metadata=metadata)
 
     def info(node: int) -> dict[str, Any]:
         attrs = graph.nodes[node] if node in graph else {}
@@ -157,8 +162,10 @@ def _lines(graph: nx.Graph, edges: list[tuple[int, int]], heat: dict[int, int]) 
     vertices = np.asarray([graph.nodes[n]["pos"] for n in sorted(graph.nodes)], dtype=np.float64)
     entities = [Line(points=[index[u], index[v]]) for u, v in edges]
     line_colours = []
-    for _, child in edges:
-        if heat:
+    for parent, child in edges:
+        if graph.is_directed() and is_loop_edge(graph, parent, child):
+            rgb = colours.LOOP_COLOUR
+        elif heat:
             rgb = colours.heat_colour(heat[child] / (HEAT_LEVELS - 1))
         elif graph.is_directed():
             rgb = colours.depth_colour(int(graph.nodes[child].get("depth", 1)))

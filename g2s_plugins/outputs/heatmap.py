@@ -33,7 +33,7 @@ from matplotlib.figure import Figure
 
 from g2s_core.model import RunResult
 from g2s_plugins.outputs import colours
-from g2s_plugins.outputs.common import agent_value, edge_list, final_graph, floors, roots_of
+from g2s_plugins.outputs.common import agent_value, edge_list, final_graph, floors, is_loop_edge, roots_of
 from g2s_plugins.outputs.files import atomic_write
 
 HEATMAP_FILE = "heatmap.png"
@@ -148,10 +148,14 @@ def _panel(ax, graph: nx.Graph, group: list[int], floor_of: dict[int, int], inde
     dashed: list = []
     solid_colours: list = []
     dashed_colours: list = []
+    loops: list = []
     for u, v in edge_list(graph):
         if u not in members and v not in members:
             continue
         segment = [(graph.nodes[u]["pos"][0], graph.nodes[u]["pos"][2]), (graph.nodes[v]["pos"][0], graph.nodes[v]["pos"][2])]
+        if graph.is_directed() and is_loop_edge(graph, u, v):
+            loops.append(segment)
+            continue
         colour = colours.unit(colours.depth_colour(int(graph.nodes[v].get("depth", 1)))) if by_depth else (0.47, 0.47, 0.47, 1.0)
         if floor_of[u] == floor_of[v]:
             solid.append(segment)
@@ -163,6 +167,9 @@ def _panel(ax, graph: nx.Graph, group: list[int], floor_of: dict[int, int], inde
         ax.add_collection(LineCollection(solid, colors=solid_colours, linewidths=2.0 if by_depth else 1.2, zorder=1))
     if dashed:
         ax.add_collection(LineCollection(dashed, colors=dashed_colours, linewidths=1.0, linestyles="dashed", zorder=1))
+    if loops:
+        ax.add_collection(LineCollection(loops, colors=[colours.unit(colours.LOOP_COLOUR)], linewidths=1.6,
+                                         linestyles="dotted", zorder=1))
     p = np.asarray([graph.nodes[n]["pos"] for n in group], dtype=np.float64).reshape(-1, 3)
     mappable = None
     if values:

@@ -41,7 +41,7 @@ import yaml
 
 from g2s_core.model import RunResult
 from g2s_plugins.outputs import colours
-from g2s_plugins.outputs.common import edge_list, final_graph, number, roots_of, stage_rows, terminal_ids
+from g2s_plugins.outputs.common import edge_list, final_graph, is_loop_edge, number, roots_of, stage_rows, terminal_ids
 from g2s_plugins.outputs.files import atomic_write
 
 REPORT_FILE = "report.html"
@@ -276,8 +276,11 @@ def _terminal_layer(result: RunResult, terminals: list[int]) -> list[Any]:
 def _tree_layer(tree: nx.DiGraph, name: str, visible: bool, result: RunResult) -> list[Any]:
     """Edges by depth (one trace per depth colour in use, red = depth 1 first), nodes, roots."""
     edges = edge_list(tree)
+    loops = [(u, v) for u, v in edges if is_loop_edge(tree, u, v)]
     by_colour: dict[int, list[tuple[int, int]]] = {}
     for parent, child in edges:
+        if is_loop_edge(tree, parent, child):
+            continue
         depth = int(tree.nodes[child].get("depth", 1))
         by_colour.setdefault((max(depth, 1) - 1) % len(colours.DEPTH_COLOURS), []).append((parent, child))
     traces: list[Any] = []
@@ -288,12 +291,22 @@ def _tree_layer(tree: nx.DiGraph, name: str, visible: bool, result: RunResult) -
             line=dict(width=5, color=colours.css(colours.DEPTH_COLOURS[index])),
             hoverinfo="skip", visible=True if visible else "legendonly",
         ))
+    if loops:
+        traces.append(_loop_trace(tree, loops, name, visible))
     nodes = sorted(tree.nodes)
     node_colours = [colours.css(colours.depth_colour(int(tree.nodes[n].get("depth", 0)))) for n in nodes]
     traces.append(_node_trace(tree, nodes, name, result, 3, node_colours, visible, showlegend=not traces))
     roots = roots_of(tree)
     traces.append(_node_trace(tree, roots, name, result, 9, colours.css(colours.ROOT_COLOUR), visible))
     return traces
+
+
+def _loop_trace(graph: nx.Graph, loops: list[tuple[int, int]], name: str, visible: bool) -> Any:
+    """The loop edges of a structure with loops: near-black, dotted, in the layer's legend group."""
+    xs, ys, zs = _segments(graph, loops)
+    return go.Scatter3d(x=xs, y=ys, z=zs, mode="lines", name=name, legendgroup=name, showlegend=False,
+                        line=dict(width=5, color=colours.css(colours.LOOP_COLOUR), dash="dot"),
+                        hoverinfo="skip", visible=True if visible else "legendonly")
 
 
 def _analysis_layer(graph: nx.Graph, key: str, result: RunResult, visible: bool) -> list[Any]:
@@ -313,4 +326,5 @@ def _analysis_layer(graph: nx.Graph, key: str, result: RunResult, visible: bool)
     node_trace = _node_trace(graph, nodes, name, result, 6, marker_values, visible)
     node_trace.marker.update(colorscale=colours.plotly_heat_scale(), cmin=low, cmax=high, showscale=True,
                              colorbar=dict(title=dict(text=key), x=1.0, len=0.6))
-    return [edges, node_trace]
+    loops = [(u, v) for u, v in edge_list(graph) if graph.is_directed() and is_loop_edge(graph, u, v)]
+    return [edges, *([_loop_trace(graph, loops, name, visible)] if loops else []), node_trace]

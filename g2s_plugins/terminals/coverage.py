@@ -22,10 +22,13 @@ straight edges still pass there), so they do not bloat the final structure.
 Areas (connected components) smaller than ``min_area`` are reported in a
 warning and get no extra terminals (their leaves stay, as with ``leaves``).
 
-Default ``radius``: 8 agent radii (4 m for the default 0.5 m agent; a
-corridor-and-door scale), but no more than a tenth of the level's horizontal
-extent so that small levels get more than one terminal. Default
-``min_area``: the area of a disc of ``radius``.
+Default ``radius``: 12 agent radii (6 m for the default 0.5 m agent), but
+no more than a tenth of the level's horizontal extent so that small levels
+get more than one terminal. Measured on a 115-room generated dungeon
+(docs/analysis_quality.md): 4 m gives a structure of 61 % of the polygons,
+6 m 52 % and 8 m 50 %, with 100 %, 100 % and 99.8 % of the area within 6 m;
+the heat map's agreement with walking flow drops at 8 m (rho 0.76, 0.76,
+0.70). Default ``min_area``: the area of a disc of ``radius``.
 
 Complexity: O(m + n log n) for step 1 plus, per added path, a bounded
 Dijkstra over the part of the graph farther than ``radius / 2`` from the
@@ -47,7 +50,7 @@ from g2s_plugins import traffic
 
 NAME = "coverage"
 
-AGENT_RADII = 8.0
+AGENT_RADII = 12.0
 """Default cover radius in agent radii."""
 
 EXTENT_SHARE = 0.1
@@ -57,7 +60,7 @@ EXTENT_SHARE = 0.1
 class Params(PluginParams):
     """Cover radius and the smallest area that is forced in."""
 
-    radius: float | None = Field(None, gt=0, description="every walkable node within this many metres (along the graph) of a terminal; default 8 agent radii, at most 1/10 of the level's extent")
+    radius: float | None = Field(None, gt=0, description="every walkable node within this many metres (along the graph) of a terminal; default 12 agent radii, at most 1/10 of the level's extent")
     min_area: float | None = Field(None, ge=0, description="walkable areas smaller than this (m²) are reported, not covered; default pi radius²")
 
 
