@@ -70,20 +70,18 @@ def add_loops(graph: nx.Graph, structure: nx.Graph, stretch: float, min_gain: fl
     violating = np.flatnonzero(along_tree > bound)
     if violating.size == 0:
         return structure
-    edges = {tuple(sorted((arrays.index[u], arrays.index[v]))) for u, v in structure.edges}
-    matrix = None
+    matrix = _matrix(arrays.n, [(arrays.index[u], arrays.index[v], w) for u, v, w in structure.edges(data="weight")])
     added: list[list[int]] = []
     for k in violating.tolist():  # candidates are sorted by path length
         a, b, x, y = pairs[k]
         if added:
-            matrix = matrix if matrix is not None else _matrix(arrays, edges)
             reach = csgraph.dijkstra(matrix, directed=False, indices=int(a), limit=float(bound[k]))
             if np.isfinite(reach[b]):
                 continue
         path = _walk(predecessor, x)[::-1] + _walk(predecessor, y)
         added.append(path)
-        edges.update(tuple(sorted(e)) for e in zip(path, path[1:]))
-        matrix = None
+        steps = list(zip(path, path[1:]))
+        matrix = matrix.maximum(_matrix(arrays.n, [(p, q, graph.edges[arrays.nodes[p], arrays.nodes[q]]["weight"]) for p, q in steps]))  # maximum: an edge added twice keeps its length
     looped = structure.copy()
     for path in added:
         ids = [arrays.nodes[i] for i in path]
@@ -166,13 +164,12 @@ def _tree_distances(arrays: SurfaceArrays, forest: nx.Graph, pairs: np.ndarray) 
     return np.where(labels[pairs[:, 0]] == labels[pairs[:, 1]], result, np.inf)
 
 
-def _matrix(arrays: SurfaceArrays, edges: set[tuple[int, int]]) -> sp.csr_array:
-    """The structure's edges as an (n, n) symmetric matrix of lengths."""
-    pairs = np.array(sorted(edges), dtype=np.int64).reshape(-1, 2)
-    lengths = np.asarray(arrays.adjacency[pairs[:, 0], pairs[:, 1]]).ravel()
-    rows = np.concatenate([pairs[:, 0], pairs[:, 1]])
-    cols = np.concatenate([pairs[:, 1], pairs[:, 0]])
-    return sp.csr_array((np.concatenate([lengths, lengths]), (rows, cols)), shape=(arrays.n, arrays.n))
+def _matrix(n: int, edges: list[tuple[int, int, float]]) -> sp.csr_array:
+    """(n, n) symmetric matrix of the lengths of ``edges`` (row, row, metres)."""
+    rows, cols, lengths = (np.asarray(column) for column in zip(*edges)) if edges else (np.zeros(0, int),) * 2 + (np.zeros(0),)
+    return sp.csr_array(
+        (np.concatenate([lengths, lengths]), (np.concatenate([rows, cols]), np.concatenate([cols, rows]))), shape=(n, n)
+    )
 
 
 def _walk(predecessor: np.ndarray, node: int) -> list[int]:

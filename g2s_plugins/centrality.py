@@ -59,7 +59,7 @@ RANK_DIGITS = 12
 values equal but for floating-point noise (e.g. Brandes on symmetric nodes)
 rank as ties, which are then broken by node id."""
 
-WEIGHTED_PAIRS_EXACT = 2048
+WEIGHTED_PAIRS_EXACT = 256
 """Node-weighted betweenness on a graph with cycles is exact up to this many nodes, sampled above."""
 
 _DENSE_EIGEN_LIMIT = 256

@@ -120,13 +120,13 @@ def subtree_sums(parent: np.ndarray, values: np.ndarray) -> np.ndarray:
         new_jump[has] = jump[target]
         depth, jump = new_depth, new_jump
     sums = np.tile(np.asarray(values, dtype=np.float64), b)
-    order = np.argsort(depth, kind="stable")[::-1]
-    ends = np.searchsorted(-depth[order], -np.arange(int(depth.max()), 0, -1), side="right") if depth.size else []
-    start = 0
-    for end in ends:  # deepest level first, down to depth 1
-        level = order[start:end]
-        np.add.at(sums, up[level], sums[level])
-        start = end
+    order = np.lexsort((up, -depth))  # deepest level first, then by parent
+    order = order[depth[order] > 0]
+    ends = np.flatnonzero(np.diff(depth[order])) + 1
+    for level in np.split(order, ends):
+        parents = up[level]
+        starts = np.flatnonzero(np.concatenate([[True], parents[1:] != parents[:-1]]))
+        sums[parents[starts]] += np.add.reduceat(sums[level], starts)
     return sums.reshape(b, n)
 
 

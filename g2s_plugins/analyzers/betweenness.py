@@ -9,7 +9,7 @@ unweighted; igraph, or networkx without it, weighted). See
 of the walkable areas they stand for (:func:`g2s_plugins.traffic.represented_area`),
 so a big room weighs more than a corridor cut into many small polygons:
 O(n) on trees (subtree area sums), shortest-path trees from every node (or
-sampled sources above 2,048 nodes) on structures with loops.
+sampled sources above 256 nodes) on structures with loops.
 """
 
 from __future__ import annotations
