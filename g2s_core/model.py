@@ -17,6 +17,9 @@ Edge attributes:
 Rooted forests (stage 4 and 5) are :class:`networkx.DiGraph` with edges
 parent -> child, the node attributes above plus ``depth`` (root = 0) and
 ``root`` (id of the node's root); ``forest.graph["roots"]`` lists the roots.
+With ``loops:`` configured the structure may have cycles: the rooted trees
+are spanning trees and the other edges carry ``loop=True`` (see
+:mod:`g2s_core.rooted`).
 """
 
 from __future__ import annotations
