@@ -25,13 +25,14 @@ candidate pairs <= m, v candidates that violate the bound on the tree):
 O(m + n log n) for the cells, O(q log q) to sort, O((s + q) log s) for the
 tree distances of all candidates at once (lowest common ancestors by binary
 lifting), then, once a path has been added, one Dijkstra on the structure
-bounded by ``max(stretch L, L + min_gain)`` per remaining violator:
-O(v (n + s log s)) in the worst case, v being small in practice (loops of
-rooms and corridors, not of polygons).
+bounded by ``max(stretch L, L + min_gain)`` per remaining violator, which
+visits only the structure nodes within that distance: O(v b log b) for v
+violators and b nodes in such a ball, independent of the level's size.
 """
 
 from __future__ import annotations
 
+import heapq
 import math
 
 import networkx as nx
@@ -70,18 +71,18 @@ def add_loops(graph: nx.Graph, structure: nx.Graph, stretch: float, min_gain: fl
     violating = np.flatnonzero(along_tree > bound)
     if violating.size == 0:
         return structure
-    matrix = _matrix(arrays.n, [(arrays.index[u], arrays.index[v], w) for u, v, w in structure.edges(data="weight")])
+    neighbours: dict[int, list[tuple[int, float]]] = {}
+    for u, v, length in structure.edges(data="weight"):
+        _join(neighbours, arrays.index[u], arrays.index[v], length)
     added: list[list[int]] = []
     for k in violating.tolist():  # candidates are sorted by path length
         a, b, x, y = pairs[k]
-        if added:
-            reach = csgraph.dijkstra(matrix, directed=False, indices=int(a), limit=float(bound[k]))
-            if np.isfinite(reach[b]):
-                continue
+        if added and _within(neighbours, int(a), int(b), float(bound[k])):
+            continue
         path = _walk(predecessor, x)[::-1] + _walk(predecessor, y)
         added.append(path)
-        steps = list(zip(path, path[1:]))
-        matrix = matrix.maximum(_matrix(arrays.n, [(p, q, graph.edges[arrays.nodes[p], arrays.nodes[q]]["weight"]) for p, q in steps]))  # maximum: an edge added twice keeps its length
+        for p, q in zip(path, path[1:]):
+            _join(neighbours, p, q, graph.edges[arrays.nodes[p], arrays.nodes[q]]["weight"])
     looped = structure.copy()
     for path in added:
         ids = [arrays.nodes[i] for i in path]
@@ -164,12 +165,32 @@ def _tree_distances(arrays: SurfaceArrays, forest: nx.Graph, pairs: np.ndarray) 
     return np.where(labels[pairs[:, 0]] == labels[pairs[:, 1]], result, np.inf)
 
 
-def _matrix(n: int, edges: list[tuple[int, int, float]]) -> sp.csr_array:
-    """(n, n) symmetric matrix of the lengths of ``edges`` (row, row, metres)."""
-    rows, cols, lengths = (np.asarray(column) for column in zip(*edges)) if edges else (np.zeros(0, int),) * 2 + (np.zeros(0),)
-    return sp.csr_array(
-        (np.concatenate([lengths, lengths]), (np.concatenate([rows, cols]), np.concatenate([cols, rows]))), shape=(n, n)
-    )
+def _join(neighbours: dict[int, list[tuple[int, float]]], p: int, q: int, length: float) -> None:
+    """Add the edge p - q of ``length`` metres to an adjacency list."""
+    neighbours.setdefault(p, []).append((q, float(length)))
+    neighbours.setdefault(q, []).append((p, float(length)))
+
+
+def _within(neighbours: dict[int, list[tuple[int, float]]], source: int, target: int, limit: float) -> bool:
+    """Whether ``target`` is at most ``limit`` metres from ``source`` along the structure.
+
+    A Dijkstra that stops at ``limit``: it visits only the structure nodes
+    within that distance, whatever the size of the level.
+    """
+    best = {source: 0.0}
+    heap = [(0.0, source)]
+    while heap:
+        distance, node = heapq.heappop(heap)
+        if node == target:
+            return True
+        if distance > best[node]:
+            continue
+        for other, length in neighbours.get(node, ()):
+            through = distance + length
+            if through <= limit and through < best.get(other, math.inf):
+                best[other] = through
+                heapq.heappush(heap, (through, other))
+    return False
 
 
 def _walk(predecessor: np.ndarray, node: int) -> list[int]:

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 import time
 from collections.abc import Callable, Iterator, Sequence
 from contextlib import contextmanager
@@ -139,9 +140,10 @@ def run(
         steiner = steiner_forest(graph, terminals.nodes, lambda sub, terms: _call(
             registry, stages["steiner"], graph=sub, terminals=terms, context=context), context)
         record.update(nodes=steiner.number_of_nodes(), edges=steiner.number_of_edges())
+    tree = steiner
     if config.loops is not None:
         with _timed(result.stages, "loops") as record:
-            steiner = add_loops(graph, steiner, config.loops.stretch, config.loops.min_gain)
+            steiner = add_loops(graph, tree, config.loops.stretch, config.loops.min_gain)
             record.update(nodes=steiner.number_of_nodes(), edges=steiner.number_of_edges())
     result.steiner = steiner
     if "roots" not in stages:
@@ -149,7 +151,9 @@ def run(
 
     say("Step 4: rooted trees")
     with _timed(result.stages, "roots"):
-        scores = _call(registry, stages["roots"], tree=steiner, context=context)
+        # the root selector scores the Steiner tree itself (its measures are O(n) on
+        # a tree, not on a tree with loops); nodes the loops added are never roots
+        scores = {**dict.fromkeys(steiner, -math.inf), **_call(registry, stages["roots"], tree=tree, context=context)}
         forest = root_forest(steiner, scores, context.centre)
     result.forest = forest
     if "simplify" not in stages:
