@@ -11,8 +11,8 @@ k-center heuristic):
    lowest-id node;
 2. while some node is farther than ``radius`` from the set, the farthest
    one and its shortest path back to the set join it (an incremental
-   Steiner tree grown farthest first), and the distances are updated by a
-   Dijkstra from the new path bounded by the old farthest distance.
+   Steiner tree grown farthest first), and the distances are lowered by a
+   Dijkstra from the new path that follows only the nodes it brings closer.
 
 The nodes added in step 2 are terminals, so the Steiner structure contains
 them all and every node of an area with terminals ends up within
@@ -30,13 +30,13 @@ get more than one terminal. Measured on a 115-room generated dungeon
 the heat map's agreement with walking flow drops at 8 m (rho 0.76, 0.76,
 0.70). Default ``min_area``: the area of a disc of ``radius``.
 
-Complexity: O(m + n log n) for step 1 plus, per added path, a bounded
-Dijkstra over the part of the graph farther than ``radius / 2`` from the
-leaves (scipy: O(size of that part) each).
+Complexity: O(m + n log n) for step 1 plus, per added path, a Dijkstra over
+the nodes that path brings closer (in practice the area around it).
 """
 
 from __future__ import annotations
 
+import heapq
 import math
 
 import networkx as nx
@@ -116,35 +116,42 @@ def _seeds(adjacency, labels: np.ndarray, count: int, leaves: np.ndarray, small:
 def _cover(adjacency, seeds: np.ndarray, eligible: np.ndarray, radius: float) -> np.ndarray:
     """The seeds plus, farthest node first, shortest paths to the growing set until all is within ``radius``.
 
-    Distances are updated on the part of the graph farther than ``radius / 2``
-    from the seeds (the rest is covered for good); distances measured there
-    are >= the true ones, so the cover holds on the whole graph.
+    After each path the distances are lowered by a Dijkstra from the path
+    that only follows nodes it brings closer, so the work per path is the
+    area around it, not the whole level.
     """
-    distance, predecessor, _ = csgraph.dijkstra(
+    start, predecessor, _ = csgraph.dijkstra(
         adjacency, directed=False, indices=seeds, min_only=True, return_predecessors=True
     )
-    predecessor = predecessor.astype(np.int64)
-    region = np.flatnonzero((distance > radius / 2) & eligible)
-    local = np.full(len(distance), -1, dtype=np.int64)
-    local[region] = np.arange(region.size)
-    sub = adjacency[region][:, region]
-    near = distance[region].copy()
+    distance = start.tolist()
+    parent = predecessor.tolist()
+    indptr, indices, lengths = adjacency.indptr.tolist(), adjacency.indices.tolist(), adjacency.data.tolist()
+    far = np.flatnonzero((start > radius) & eligible)
+    farthest = [(-distance[node], node) for node in far.tolist()]  # a max-heap with stale entries
+    heapq.heapify(farthest)
     chosen = [seeds]
-    while region.size:
-        at = int(np.argmax(near))
-        if not near[at] > radius:
-            break
-        path = [int(region[at])]
-        while predecessor[path[-1]] >= 0:
-            path.append(int(predecessor[path[-1]]))
-        path = np.asarray(path[:-1], dtype=np.int64)  # the last node is already in the set
-        chosen.append(path)
-        predecessor[path] = -1
-        inside = local[path][local[path] >= 0]
-        reach, via, _ = csgraph.dijkstra(
-            sub, directed=False, indices=inside, limit=float(near[at]), min_only=True, return_predecessors=True
-        )
-        better = reach < near
-        near[better] = reach[better]
-        predecessor[region[better]] = np.where(via[better] >= 0, region[np.maximum(via[better], 0)], -1)
+    while farthest:
+        negative, node = heapq.heappop(farthest)
+        if distance[node] <= radius:
+            continue
+        if -negative > distance[node]:  # stale: the node came closer since
+            heapq.heappush(farthest, (-distance[node], node))
+            continue
+        path = [node]
+        while parent[path[-1]] >= 0:
+            path.append(parent[path[-1]])
+        path.pop()  # the last node is already in the set
+        chosen.append(np.asarray(path, dtype=np.int64))
+        for member in path:
+            distance[member], parent[member] = 0.0, -1
+        pending = [(0.0, member) for member in path]
+        while pending:
+            reached, here = heapq.heappop(pending)
+            if reached > distance[here]:
+                continue
+            for k in range(indptr[here], indptr[here + 1]):
+                other, through = indices[k], reached + lengths[k]
+                if through < distance[other]:
+                    distance[other], parent[other] = through, here
+                    heapq.heappush(pending, (through, other))
     return np.unique(np.concatenate(chosen))
