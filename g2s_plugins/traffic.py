@@ -123,7 +123,7 @@ def subtree_sums(parent: np.ndarray, values: np.ndarray) -> np.ndarray:
     order = np.lexsort((up, -depth))  # deepest level first, then by parent
     order = order[depth[order] > 0]
     ends = np.flatnonzero(np.diff(depth[order])) + 1
-    for level in np.split(order, ends):
+    for level in np.split(order, ends) if order.size else []:
         parents = up[level]
         starts = np.flatnonzero(np.concatenate([[True], parents[1:] != parents[:-1]]))
         sums[parents[starts]] += np.add.reduceat(sums[level], starts)

@@ -189,3 +189,11 @@ def test_new_preset_covers_nav_test_and_keeps_a_skeleton(registry):
     assert quality.area_within[6.0] > 0.95
     assert quality.structure_share < 0.7  # nav_test has big polygons: 173 for 4,265 m²
     assert -1.0 <= quality.rho <= 1.0
+
+
+def test_subtree_sums_by_hand():
+    # tree 0 -> 1 -> 2 and 0 -> 3, and a lone node: sums of 1, 2, 4, 8, 16
+    parent = np.array([[-9999, 0, 1, 0], [1, -9999, 1, 0]])
+    values = np.array([1.0, 2.0, 4.0, 8.0])
+    assert traffic.subtree_sums(parent, values).tolist() == [[15.0, 6.0, 4.0, 8.0], [9.0, 15.0, 4.0, 8.0]]
+    assert traffic.subtree_sums(np.array([[-9999]]), np.array([16.0])).tolist() == [[16.0]]
