@@ -1,7 +1,9 @@
 """The ``g2s`` command line: run a config on a mesh, list plugins, run the demo.
 
-Exit codes: 0 success, 2 bad input or config (one line on stderr, no
-traceback), 1 internal error (``--verbose`` shows the traceback).
+Exit codes: 0 success; 2 bad input or config (one line on stderr, no
+traceback); 3 a plugin failed: it could not be loaded, raised an exception or
+returned a wrong result (one line naming the plugin and its package); 1 internal
+error of g2s (``--verbose`` shows the traceback).
 """
 
 from __future__ import annotations
@@ -19,37 +21,40 @@ from rich.console import Console
 from rich.table import Table
 
 from g2s_core import pipeline
-from g2s_plugins.samples import levels as samples
-from g2s_core.config import PRESETS_DIR, load_config, parse_config, load_raw_config
-from g2s_core.errors import G2SError
-from g2s_core.hookspecs import STAGE_TITLES
-from g2s_core.mesh import load_mesh, mesh_sha256, prepare_mesh
+from g2s_core.config import PRESETS_DIR, load_config, load_raw_config, parse_config
+from g2s_core.errors import G2SError, PluginFailure
+from g2s_core.mesh import SAMPLE_PREFIX, generate_level, load_mesh, mesh_sha256
 from g2s_core.model import RunResult
-from g2s_plugins.outputs import DEFAULT_FORMATS, WRITERS, check_outdir, parse_formats, prepare_outdir, write_outputs
-from g2s_plugins.outputs.common import STEP_ROWS, final_graph, roots_of, stage_rows
-from g2s_core.registry import Registry, plugin_parameters
+from g2s_core.outputs import DEFAULT_FORMATS, check_outdir, parse_formats, prepare_outdir, write_outputs, writers
+from g2s_core.registry import Registry, installed, plugin_parameters
+from g2s_core.stages import BY_KEY, STAGES
+from g2s_core.summary import final_graph, roots_of, stage_rows
 
-SAMPLE_PREFIX = "sample:"
+EXIT_CODES = "exit codes: 0 success, 2 bad input or config, or a plugin that failed (named with its package), 1 internal error of g2s"
 
-__all__ = ["STEP_ROWS", "main", "stage_table"]
+__all__ = ["main", "stage_table"]
 
 
 def _parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="g2s",
         description="Graph2Structure: extract a hierarchical structure of navigable paths from level geometry.",
+        epilog=EXIT_CODES,
     )
     parser.add_argument("-v", "--verbose", action="store_true", help="show tracebacks of internal errors")
     commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
 
-    run = commands.add_parser("run", help="run a YAML config on a mesh file", description="Run a YAML config on a mesh.")
+    run = commands.add_parser(
+        "run", help="run a YAML config on a mesh file", description="Run a YAML config on a mesh.", epilog=EXIT_CODES
+    )
     run.add_argument("config", type=Path, help="YAML config (see configs/ for presets)")
-    run.add_argument("mesh", help=f"mesh file (.obj .glb .gltf .ply .stl .off) or {SAMPLE_PREFIX}NAME for a built-in sample level")
+    run.add_argument("mesh", help=f"mesh file (.obj .glb .gltf .ply .stl .off) or {SAMPLE_PREFIX}NAME[?param=value&...] "
+                     "for a level from an installed level generator (see `g2s plugins --stage levels`)")
     run.add_argument("-o", "--outdir", type=Path, required=True, help="folder for the results")
     _add_output_options(run)
 
-    plugins = commands.add_parser("plugins", help="list installed plugins and their parameters")
-    plugins.add_argument("--stage", choices=list(STAGE_TITLES), help="only this stage")
+    plugins = commands.add_parser("plugins", help="list installed plugins and their parameters, and broken ones")
+    plugins.add_argument("--stage", choices=[stage.key for stage in STAGES], help="only this stage")
 
     demo = commands.add_parser("demo", help="run the full pipeline on the built-in dungeon sample")
     demo.add_argument("-o", "--outdir", type=Path, default=Path("g2s-demo"), help="folder for the results (default: g2s-demo)")
@@ -63,7 +68,8 @@ def _add_output_options(command: argparse.ArgumentParser) -> None:
     command.add_argument(
         "--format",
         metavar="FORMATS",
-        help=f"comma-separated output formats, overriding the config's outputs.formats: {', '.join(WRITERS)} "
+        help=f"comma-separated output formats, overriding the config's outputs.formats: any installed writer "
+        f"({', '.join(writers())}) "
         f"(default: the config's, else {','.join(DEFAULT_FORMATS)})",
     )
     command.add_argument("--force", action="store_true", help="replace results already in the output folder")
@@ -80,7 +86,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         if args.command == "plugins":
             return _plugins(args)
         return _demo(args, errors)
-    except G2SError as exc:
+    except (G2SError, PluginFailure) as exc:  # the user, or the named plugin's authors, can fix it
         errors.print(f"g2s: error: {exc}", markup=False, highlight=False, soft_wrap=True)
         if args.verbose:
             traceback.print_exc()
@@ -102,11 +108,11 @@ def _run(args: argparse.Namespace, errors: Console) -> int:
     formats = _formats(args, config, str(args.config))
     protect = [] if args.mesh.startswith(SAMPLE_PREFIX) else [Path(args.mesh)]
     check_outdir(args.outdir, formats, args.force, protect)
-    registry = Registry.from_entry_points()
+    registry = installed()
     plan = pipeline.plan(config, registry, source=str(args.config))
     if args.mesh.startswith(SAMPLE_PREFIX):
-        name = args.mesh[len(SAMPLE_PREFIX):]
-        mesh, mesh_name, sha = _sample_mesh(name, config)
+        mesh = generate_level(args.mesh, config.mesh, registry)
+        mesh_name, sha = args.mesh[len(SAMPLE_PREFIX):], mesh_sha256(mesh)
     else:
         mesh, info = load_mesh(args.mesh, config.mesh)
         mesh_name, sha = info.name, info.sha256
@@ -121,11 +127,10 @@ def _demo(args: argparse.Namespace, errors: Console) -> int:
     config = parse_config(raw, source="configs/demo.yaml")
     formats = _formats(args, config, "configs/demo.yaml")
     check_outdir(args.outdir, formats, args.force)
-    registry = Registry.from_entry_points()
+    registry = installed()
     plan = pipeline.plan(config, registry, source="configs/demo.yaml")
-    level = samples.dungeon(seed=args.seed, rooms=args.rooms)
-    mesh = prepare_mesh(level.mesh, config.mesh, source=level.name)
-    name = f"{level.name} (seed {args.seed}, {args.rooms} rooms)"
+    mesh = generate_level(f"{SAMPLE_PREFIX}dungeon?seed={args.seed}&rooms={args.rooms}", config.mesh, registry)
+    name = f"dungeon (seed {args.seed}, {args.rooms} rooms)"
     code = _execute(args, errors, registry, plan, mesh, name, mesh_sha256(mesh), formats)
     if code == 0 and not (args.quiet or args.json):
         Console().print(_demo_hint(args.outdir, formats), markup=False, highlight=False, soft_wrap=True)
@@ -154,14 +159,6 @@ def _formats(args: argparse.Namespace, config: Any, source: str) -> list[str]:
     if "formats" in config.outputs.model_fields_set:
         return parse_formats(config.outputs.formats, f"{source}: outputs.formats")
     return list(DEFAULT_FORMATS)
-
-
-def _sample_mesh(name: str, config: Any) -> tuple[Any, str, str]:
-    if name not in samples.SAMPLES:
-        raise G2SError(f"unknown sample {name!r} (expected one of: {', '.join(samples.SAMPLES)})")
-    level = samples.load_sample(name)
-    mesh = prepare_mesh(level.mesh, config.mesh, source=name)
-    return mesh, name, mesh_sha256(mesh)
 
 
 def _execute(
@@ -246,14 +243,18 @@ def stage_table(result: RunResult, title: str = "") -> Table:
 
 
 def _plugins(args: argparse.Namespace) -> int:
-    registry = Registry.from_entry_points()
+    registry = installed()
     console = Console()
     for info in registry.plugins(args.stage):
-        console.print(f"[bold]{STAGE_TITLES[info.stage]}[/bold] [cyan]{info.name}[/cyan]  ({info.package})")
+        console.print(f"[bold]{BY_KEY[info.stage].title}[/bold] [cyan]{info.name}[/cyan]  ({info.package})")
         if info.summary:
             console.print(f"  {info.summary}", markup=False, highlight=False)
         for name, accepted, default, description in plugin_parameters(info):
             console.print(f"    {name}: {accepted}, default {default}. {description}", markup=False, highlight=False)
+    for broken in registry.broken:
+        if args.stage is None or broken.entry_point.split(".")[0] == args.stage:
+            console.print(f"[bold red]broken[/bold red] {broken.entry_point}  ({broken.package})")
+            console.print(f"  {broken.target} failed to load: {broken.reason}", markup=False, highlight=False)
     return 0
 
 

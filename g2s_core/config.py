@@ -11,20 +11,18 @@ what was expected, e.g.::
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Any, Literal, get_args, get_origin
+from typing import Any, Literal
 
-import annotated_types
 import yaml
-from pydantic import BaseModel, ConfigDict, Field, ValidationError
-from pydantic.fields import FieldInfo
+from pydantic import BaseModel, ConfigDict, Field, ValidationError, create_model
 
 from g2s_core.errors import ConfigError
+from g2s_core.messages import describe_validation_error, show
+from g2s_core.stages import PIPELINE
+
 
 PRESETS_DIR = Path(__file__).resolve().parent.parent / "configs"
 """The project's preset configs (``extends: map_analysis`` finds them here)."""
-
-STAGES = ("graph", "terminals", "steiner", "roots", "simplify", "analyzers")
-"""Config sections of the stages, in pipeline order."""
 
 
 class _Section(BaseModel):
@@ -74,30 +72,35 @@ class OutputConfig(_Section):
     formats: list[str] = Field(default_factory=lambda: ["json", "html"], description="output formats")
 
 
-class RunConfig(_Section):
-    """A whole run, as read from YAML (after ``extends:`` is resolved)."""
-
-    mesh: MeshConfig = Field(default_factory=MeshConfig)
-    agent: AgentConfig = Field(default_factory=AgentConfig)
-    graph: StageConfig | None = None
-    terminals: StageConfig | None = None
-    steiner: StageConfig | None = None
-    loops: LoopsConfig | None = Field(None, description="loops kept after the Steiner step (absent: the paper's tree)")
-    roots: StageConfig | None = None
-    simplify: StageConfig | None = None
-    analyzers: list[AnalyzerConfig] = Field(default_factory=list)
-    stop_after: Literal["graph", "terminals", "steiner", "roots", "simplify", "analyzers"] = Field(
-        "analyzers", description="last stage to run"
-    )
-    outputs: OutputConfig = Field(default_factory=OutputConfig)
-
+class _Run(_Section):
     def record(self) -> dict[str, Any]:
         """The config as plain JSON data, for the outputs (``loops`` only when set)."""
         return self.model_dump(mode="json", exclude={"loops"} if self.loops is None else None)
 
     def stages_to_run(self) -> tuple[str, ...]:
         """The stage sections that run, in order."""
-        return STAGES[: STAGES.index(self.stop_after) + 1]
+        keys = [stage.key for stage in PIPELINE]
+        return tuple(keys[: keys.index(self.stop_after) + 1])
+
+
+def _stage_field(key: str) -> tuple[Any, Any]:
+    """The config section of a stage: one plugin, or a list of them for analyzers."""
+    if key == "analyzers":
+        return list[AnalyzerConfig], Field(default_factory=list)
+    return StageConfig | None, None
+
+
+RunConfig = create_model(
+    "RunConfig",
+    __base__=_Run,
+    __doc__="A whole run, as read from YAML (after ``extends:`` is resolved): settings and one section per stage.",
+    mesh=(MeshConfig, Field(default_factory=MeshConfig)),
+    agent=(AgentConfig, Field(default_factory=AgentConfig)),
+    **{stage.key: _stage_field(stage.key) for stage in PIPELINE},
+    loops=(LoopsConfig | None, Field(None, description="loops kept after the Steiner step (absent: the paper's tree)")),
+    stop_after=(Literal[tuple(stage.key for stage in PIPELINE)], Field(PIPELINE[-1].key, description="last stage to run")),
+    outputs=(OutputConfig, Field(default_factory=OutputConfig)),
+)
 
 
 # --- reading -----------------------------------------------------------------
@@ -120,13 +123,13 @@ def _read_yaml(path: Path) -> dict[str, Any]:
     if data is None:
         return {}
     if not isinstance(data, dict):
-        raise ConfigError(f"{path}: expected a mapping of settings at the top level, got {_show(data)}")
+        raise ConfigError(f"{path}: expected a mapping of settings at the top level, got {show(data)}")
     return data
 
 
 def _resolve_extends(name: Any, base_dir: Path, source: Path) -> Path:
     if not isinstance(name, str) or not name:
-        raise ConfigError(f"{source}: extends: expected a config file or preset name, got {_show(name)}")
+        raise ConfigError(f"{source}: extends: expected a config file or preset name, got {show(name)}")
     candidates = [base_dir / name, base_dir / f"{name}.yaml", PRESETS_DIR / name, PRESETS_DIR / f"{name}.yaml"]
     for candidate in candidates:
         if candidate.is_file():
@@ -172,122 +175,3 @@ def parse_config(data: dict[str, Any], source: str = "<config>") -> RunConfig:
         return RunConfig.model_validate(data)
     except ValidationError as exc:
         raise ConfigError(f"{source}: {describe_validation_error(exc, RunConfig)}") from None
-
-
-# --- one-line error messages ---------------------------------------------------
-
-_TYPE_NAMES = {int: "an integer", float: "a number", bool: "true or false", str: "a string", dict: "a mapping"}
-
-
-def _show(value: Any) -> str:
-    """A value as the user wrote it in YAML."""
-    if value is None:
-        return "null"
-    if isinstance(value, bool):
-        return "true" if value else "false"
-    if isinstance(value, str):
-        return repr(value)
-    if isinstance(value, dict):
-        return "a mapping"
-    if isinstance(value, list):
-        return "a list"
-    return str(value)
-
-
-def _plural(phrase: str) -> str:
-    """``an integer`` -> ``integers``, ``a list of 3 numbers`` -> ``lists of 3 numbers``."""
-    noun = phrase.split(" ", 1)[1] if phrase.startswith(("a ", "an ")) else phrase
-    head, _, rest = noun.partition(" ")
-    return f"{head}s {rest}".strip()
-
-
-def _describe_type(annotation: Any) -> str:
-    origin = get_origin(annotation)
-    args = get_args(annotation)
-    if annotation in _TYPE_NAMES:
-        return _TYPE_NAMES[annotation]
-    if origin is Literal:
-        return "one of " + ", ".join(_show(a) for a in args)
-    if origin in (list, tuple, set, frozenset):
-        if origin is tuple and args and args[-1] is not Ellipsis:
-            return f"a list of {len(args)} {_plural(_describe_type(args[0]))}"
-        return f"a list of {_plural(_describe_type(args[0]))}" if args else "a list"
-    if origin is dict:
-        return "a mapping"
-    if args and type(None) in args:
-        rest = [a for a in args if a is not type(None)]
-        return " or ".join(_describe_type(a) for a in rest) + " or null"
-    if args:
-        return " or ".join(_describe_type(a) for a in args)
-    if isinstance(annotation, type) and issubclass(annotation, BaseModel):
-        return "a mapping"
-    return getattr(annotation, "__name__", str(annotation))
-
-
-_BOUNDS = (
-    (annotated_types.Ge, "ge", ">="),
-    (annotated_types.Gt, "gt", ">"),
-    (annotated_types.Le, "le", "<="),
-    (annotated_types.Lt, "lt", "<"),
-)
-
-
-def describe_field(info: FieldInfo) -> str:
-    """What a field accepts, in words: ``an integer >= 1``."""
-    limits = []
-    for bound in info.metadata:
-        for cls, attribute, op in _BOUNDS:
-            if isinstance(bound, cls):
-                limits.append(f"{op} {getattr(bound, attribute)}")
-        if isinstance(bound, annotated_types.MinLen):
-            limits.append(f"with at least {bound.min_length} items")
-    return " ".join([_describe_type(info.annotation), " and ".join(limits)]).strip()
-
-
-def _field_at(model: type[BaseModel], loc: tuple[Any, ...]) -> FieldInfo | None:
-    """The FieldInfo that ``loc`` points at inside ``model``, if it is a field."""
-    current: Any = model
-    info = None
-    for part in loc:
-        if isinstance(part, int):
-            args = [a for a in get_args(info.annotation) if a is not type(None)] if info else []
-            current = args[0] if args else None
-            continue
-        if not (isinstance(current, type) and issubclass(current, BaseModel)) or part not in current.model_fields:
-            return None
-        info = current.model_fields[part]
-        annotation = info.annotation
-        nested = [a for a in (annotation, *get_args(annotation)) if isinstance(a, type) and issubclass(a, BaseModel)]
-        current = nested[0] if nested else annotation
-    return info
-
-
-def describe_validation_error(exc: ValidationError, model: type[BaseModel], prefix: str = "") -> str:
-    """The first error of ``exc`` as ``key.path: expected ..., got ...``."""
-    error = exc.errors()[0]
-    loc = tuple(p for p in error["loc"] if not (isinstance(p, str) and ("[" in p or p in {"function-after"})))
-    path = ".".join(str(p) for p in ((prefix,) if prefix else ()) + loc) or "(top level)"
-    kind = error["type"]
-    if kind == "extra_forbidden":
-        owner = model if len(loc) == 1 else _nested_model(_field_at(model, loc[:-1]))
-        known = ", ".join(owner.model_fields) if owner else ""
-        hint = f"expected one of: {known}" if known else "no keys are accepted here"
-        return f"{path}: unknown key ({hint})"
-    if kind == "missing":
-        return f"{path}: required key is missing"
-    if kind in {"model_type", "dict_type", "model_attributes_type"}:
-        return f"{path}: expected a mapping, got {_show(error.get('input'))}"
-    info = _field_at(model, loc)
-    if info is not None:
-        return f"{path}: expected {describe_field(info)}, got {_show(error.get('input'))}"
-    return f"{path}: {error['msg'][0].lower()}{error['msg'][1:]}, got {_show(error.get('input'))}"
-
-
-def _nested_model(info: FieldInfo | None) -> type[BaseModel] | None:
-    if info is None:
-        return None
-    for candidate in (info.annotation, *get_args(info.annotation)):
-        for inner in (candidate, *get_args(candidate)):
-            if isinstance(inner, type) and issubclass(inner, BaseModel):
-                return inner
-    return None

@@ -1,4 +1,9 @@
-"""Errors that reach the user as one line at the CLI (exit code 2)."""
+"""Errors that reach the user as one line at the CLI.
+
+:class:`G2SError` and its subclasses are the user's bad input (exit code 2);
+:class:`PluginFailure` is a plugin's own bug (exit code 2 too, naming the plugin); anything else is
+an internal error of g2s (exit code 1).
+"""
 
 
 class G2SError(Exception):
@@ -19,3 +24,12 @@ class MeshError(G2SError):
 
 class PluginError(G2SError):
     """A plugin that is missing, duplicated or cannot do what was asked."""
+
+
+class PluginFailure(Exception):
+    """A plugin that failed to load, raised an exception or returned a wrong result.
+
+    Neither the user's input nor g2s is at fault, so this is not a
+    :class:`G2SError`: the message names the plugin, its stage and its
+    package (whose authors can fix it); the CLI exits with code 2.
+    """

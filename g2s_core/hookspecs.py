@@ -1,38 +1,31 @@
-"""The six stage interfaces of the pipeline, as pluggy hook specifications.
+"""Every hook a plugin may implement, as pluggy hook specifications.
 
-A plugin implements exactly one of these hooks. The pipeline calls only the
-plugin the config chose for that stage, so every hook is ``firstresult``.
-A hook implementation may take any subset of the named arguments.
-
-=================  ==========================  ====================================
-stage              hook                        returns
-=================  ==========================  ====================================
-GraphBuilder       ``g2s_build_graph``         the initial surface graph
-TerminalSelector   ``g2s_select_terminals``    :class:`~g2s_core.model.Terminals`
-SteinerSolver      ``g2s_steiner_tree``        a tree spanning the terminals
-RootSelector       ``g2s_root_scores``         a score per node (higher = root)
-SimplifyPredicate  ``g2s_simplify_predicate``  a predicate ``P(tree, a, b, c)``
-Analyzer           ``g2s_analyze``             a value per node of the structure
-=================  ==========================  ====================================
+A plugin implements exactly one of these hooks; the kind of plugin (its stage)
+is the hook it implements. :mod:`g2s_core.stages` lists them in one table with
+what each must return and how the result is checked. g2s calls only the plugin
+the config (or the command line) chose, so every hook is ``firstresult``. A
+hook implementation may take any subset of the named arguments.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping, Sequence
+from pathlib import Path
 
 import networkx as nx
+import trimesh
 
-from g2s_core.model import RunContext, Terminals
+from g2s_core.model import RunContext, RunResult, Terminals
 from g2s_core.plugin import PluginParams, hookspec
 
 
 @hookspec(firstresult=True)
-def g2s_build_graph(mesh, params: PluginParams, context: RunContext) -> nx.Graph:
+def g2s_build_graph(mesh: trimesh.Trimesh, params: PluginParams, context: RunContext) -> nx.Graph:
     """GraphBuilder: build the initial surface graph from a triangle mesh.
 
-    ``mesh`` is a ``trimesh.Trimesh`` in metres with Y up. Return a graph that
-    follows the conventions of :mod:`g2s_core.model`. A builder that makes a
-    navigation mesh stores it in ``context.navmesh``.
+    ``mesh`` is in metres with Y up. Return a graph that follows the
+    conventions of :mod:`g2s_core.model`. A builder that makes a navigation
+    mesh stores it in ``context.navmesh`` (a :class:`~g2s_core.model.NavMesh`).
     """
 
 
@@ -76,7 +69,7 @@ def g2s_simplify_predicate(
 
     For a chain a -> b -> c of the rooted ``tree`` (a DiGraph whose nodes carry
     the surface attributes), ``P`` says whether b may be removed and c joined
-    to a directly. It is asked for every child c of b.
+    to a directly. It is asked for every child c of b and must return a bool.
     """
 
 
@@ -85,21 +78,19 @@ def g2s_analyze(structure: nx.Graph, params: PluginParams, context: RunContext) 
     """Analyzer: a value for every node of the final structure (undirected)."""
 
 
-STAGE_HOOKS: dict[str, str] = {
-    "graph": "g2s_build_graph",
-    "terminals": "g2s_select_terminals",
-    "steiner": "g2s_steiner_tree",
-    "roots": "g2s_root_scores",
-    "simplify": "g2s_simplify_predicate",
-    "analyzers": "g2s_analyze",
-}
-"""Config section -> hook name, in pipeline order."""
+@hookspec(firstresult=True)
+def g2s_write_output(result: RunResult, folder: Path) -> list[Path]:
+    """OutputWriter: write the result files of one format into ``folder``; return their paths.
 
-STAGE_TITLES: dict[str, str] = {
-    "graph": "GraphBuilder",
-    "terminals": "TerminalSelector",
-    "steiner": "SteinerSolver",
-    "roots": "RootSelector",
-    "simplify": "SimplifyPredicate",
-    "analyzers": "Analyzer",
-}
+    The plugin declares ``FILES``, the names of every file it may write (what
+    ``--force`` may replace); it writes only those, and may skip ones that
+    make no sense for the run (e.g. before step 5).
+    """
+
+
+@hookspec(firstresult=True)
+def g2s_generate_level(params: PluginParams) -> trimesh.Trimesh:
+    """LevelGenerator: build a level (metres, Y up) from its declared parameters.
+
+    Used as ``sample:NAME?param=value&...`` wherever a mesh file is accepted.
+    """

@@ -1,18 +1,23 @@
-"""Reading level geometry: trimesh for I/O, pymeshlab for optional cleaning."""
+"""Reading level geometry: trimesh for I/O, pymeshlab for optional cleaning, level generators for ``sample:``."""
 
 from __future__ import annotations
 
 import hashlib
 from dataclasses import dataclass
 from pathlib import Path
+from urllib.parse import parse_qsl, urlsplit
 
 import numpy as np
 import trimesh
 
 from g2s_core.config import MeshConfig
-from g2s_core.errors import MeshError
+from g2s_core.errors import ConfigError, MeshError
+from g2s_core.registry import Registry, installed
 
 SUPPORTED_SUFFIXES = (".obj", ".glb", ".gltf", ".ply", ".stl", ".off")
+
+SAMPLE_PREFIX = "sample:"
+"""A mesh argument ``sample:NAME?param=value&...`` asks the level generator NAME for a level."""
 
 _Z_UP_TO_Y_UP = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, -1.0, 0.0]])
 """Rotation taking a Z-up right-handed frame to a Y-up right-handed one: (x, y, z) -> (x, z, -y)."""
@@ -76,6 +81,31 @@ def load_mesh(path: str | Path, config: MeshConfig | None = None) -> tuple[trime
         mesh, cleaning = clean_mesh(mesh)
     info = MeshInfo(path.name, file_sha256(path), len(mesh.vertices), len(mesh.faces), cleaning)
     return mesh, info
+
+
+def generate_level(spec: str, config: MeshConfig | None = None, registry: Registry | None = None) -> trimesh.Trimesh:
+    """The level ``sample:NAME?param=value&...`` from the installed level generator NAME.
+
+    The query's values are strings that the generator's parameter model
+    validates (and converts); the mesh then gets ``config``'s up axis and scale.
+
+    Raises:
+        ConfigError: no such generator, or a parameter is unknown or invalid;
+            the message starts with ``spec``.
+    """
+    parts = urlsplit(spec[len(SAMPLE_PREFIX):] if spec.startswith(SAMPLE_PREFIX) else spec)
+    registry = registry or installed()
+    try:
+        info = registry.get("levels", parts.path)
+    except ConfigError:
+        known = ", ".join(p.name for p in registry.plugins("levels"))
+        raise ConfigError(f"{spec}: unknown sample {parts.path!r} (expected one of: {known})") from None
+    try:
+        query = parse_qsl(parts.query, keep_blank_values=True, strict_parsing=bool(parts.query))
+    except ValueError:
+        raise ConfigError(f"{spec}: expected sample:NAME?param=value&param=value") from None
+    params = registry.validate_params(info, dict(query), key=f"{SAMPLE_PREFIX}{info.name}")
+    return prepare_mesh(registry.call(info, params=params), config or MeshConfig(), source=spec)
 
 
 def prepare_mesh(loaded: object, config: MeshConfig, source: str) -> trimesh.Trimesh:

@@ -25,11 +25,16 @@ are spanning trees and the other edges carry ``loop=True`` (see
 from __future__ import annotations
 
 import dataclasses
+from collections.abc import Mapping
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any, Protocol, runtime_checkable
 
 import networkx as nx
 import numpy as np
+import trimesh
+
+if TYPE_CHECKING:
+    from g2s_core.config import AgentConfig
 
 Vec3 = tuple[float, float, float]
 
@@ -38,6 +43,62 @@ def vec3(values: Any) -> Vec3:
     """Return ``values`` (any 3-sequence) as a tuple of 3 Python floats."""
     x, y, z = (float(v) for v in values)
     return (x, y, z)
+
+
+class Portals(Protocol):
+    """Where navmesh polygons touch: for E touching pairs (a < b, sorted), ``pairs`` (E,2) int64,
+    the touching segment's ``endpoints`` (E,2,3) float64 and ``widths`` (E,) float64, metres."""
+
+    pairs: np.ndarray
+    endpoints: np.ndarray
+    widths: np.ndarray
+
+
+@runtime_checkable
+class NavMesh(Protocol):
+    """What a graph builder that makes a navigation mesh puts in ``context.navmesh``.
+
+    Writers and plugins use only these arrays and queries (``g2s_plugins.recast``
+    provides them from Recast/Detour). Metres, Y up.
+
+    Attributes:
+        vertices: (V,3) float64, polygon vertices.
+        polygons: (P,nvp) int32, vertex indices per polygon, padded with -1.
+        neighbours: (P,nvp) int32, polygon across edge j (vertex j -> j+1), -1 at the boundary.
+        centres: (P,3) float64, a point of each polygon's surface near its centroid.
+        normals: (P,3) float64, unit surface normal of each polygon, +Y side.
+        areas: (P,) float64, m², surface area of each polygon.
+        detail_vertices: (DV,3) float64, vertices of the height-detail triangles.
+        detail_triangles: (DT,3) int32, the walkable surface as triangles of ``detail_vertices``.
+        settings: the build's world-unit settings; at least ``cell_size`` and ``cell_height``, metres.
+        polygon_count: P.
+    """
+
+    vertices: np.ndarray
+    polygons: np.ndarray
+    neighbours: np.ndarray
+    centres: np.ndarray
+    normals: np.ndarray
+    areas: np.ndarray
+    detail_vertices: np.ndarray
+    detail_triangles: np.ndarray
+    settings: Mapping[str, float]
+
+    @property
+    def polygon_count(self) -> int: ...
+
+    def portals(self) -> Portals:
+        """The shared polygon edges."""
+
+    def stats(self) -> dict[str, Any]:
+        """Sizes and timing for the run record (JSON values)."""
+
+    def raycast(self, a: Any, b: Any, extents: Any = None) -> tuple[bool, float]:
+        """Whether the straight walk from point ``a`` to point ``b`` along the surface is clear,
+        and the fraction of a->b where it was blocked."""
+
+    def nearest_poly(self, p: Any, extents: Any = None) -> tuple[int, np.ndarray]:
+        """(polygon index or -1, (3,) nearest surface point) within the half ``extents`` of ``p``."""
 
 
 @dataclass(frozen=True)
@@ -95,16 +156,16 @@ class RunContext:
         mesh: the input triangle mesh (``trimesh.Trimesh``), in metres, Y up.
         agent: the agent settings (:class:`g2s_core.config.AgentConfig`).
         centre: (3,) float64, centre of the mesh's axis-aligned bounding box.
-        navmesh: the navigation mesh the graph builder made, or ``None`` when
-            the graph was built without one (see ``g2s_plugins.recast``).
+        navmesh: the :class:`NavMesh` the graph builder made, or ``None`` when
+            the graph was built without one.
         graph: the initial surface graph, once stage 1 has run.
         warnings: messages for the user collected during the run.
     """
 
-    mesh: Any
-    agent: Any
+    mesh: trimesh.Trimesh
+    agent: AgentConfig
     centre: np.ndarray
-    navmesh: Any = None
+    navmesh: NavMesh | None = None
     graph: nx.Graph | None = None
     warnings: list[str] = field(default_factory=list)
 
@@ -115,7 +176,11 @@ class RunContext:
 
 @dataclass
 class RunResult:
-    """Everything a run produced, stage by stage; stages not run are ``None``."""
+    """Everything a run produced, stage by stage; stages not run are ``None``.
+
+    ``looped`` is the Steiner forest plus the loop paths of the ``loops:``
+    step (``None`` when it is not configured); it is what steps 4 and 5 work on.
+    """
 
     config: dict[str, Any]
     mesh_name: str
@@ -124,6 +189,7 @@ class RunResult:
     graph: nx.Graph | None = None
     terminals: Terminals | None = None
     steiner: nx.Graph | None = None
+    looped: nx.Graph | None = None
     forest: nx.DiGraph | None = None
     structure: nx.DiGraph | None = None
     analysis: dict[str, dict[int, float]] = field(default_factory=dict)

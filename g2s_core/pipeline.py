@@ -4,9 +4,8 @@ from __future__ import annotations
 
 import math
 import time
-from collections.abc import Callable, Iterator, Sequence
-from contextlib import contextmanager
-from dataclasses import dataclass
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, field
 from typing import Any
 
 import networkx as nx
@@ -14,13 +13,14 @@ import numpy as np
 import trimesh
 
 from g2s_core.config import RunConfig
-from g2s_core.errors import ConfigError, G2SError, PluginError
-from g2s_core.model import RunContext, RunResult, StageStats, Terminals
+from g2s_core.errors import ConfigError, G2SError
+from g2s_core.model import RunContext, RunResult, StageStats
 from g2s_core.plugin import PluginParams
 from g2s_core.loops import add_loops
 from g2s_core.registry import PluginInfo, Registry
 from g2s_core.rooted import root_forest
 from g2s_core.simplify import simplify_forest
+from g2s_core.stages import PIPELINE
 
 ProgressCallback = Callable[[str], None]
 
@@ -37,11 +37,17 @@ class ResolvedStage:
 
 @dataclass(frozen=True)
 class Plan:
-    """The stages a config asks for, validated against the installed plugins."""
+    """The stages a config asks for, validated against the installed plugins.
+
+    ``stages`` maps each stage that runs to its plugins (one, or the analyzers in config order).
+    """
 
     config: RunConfig
-    stages: dict[str, ResolvedStage]
-    analyzers: tuple[ResolvedStage, ...]
+    stages: dict[str, tuple[ResolvedStage, ...]]
+
+    @property
+    def analyzers(self) -> tuple[ResolvedStage, ...]:
+        return self.stages.get("analyzers", ())
 
 
 def plan(config: RunConfig, registry: Registry, source: str = "<config>") -> Plan:
@@ -50,40 +56,35 @@ def plan(config: RunConfig, registry: Registry, source: str = "<config>") -> Pla
     Raises:
         ConfigError: a stage is missing, its plugin is not installed, or its
             parameters do not validate; the message starts with ``source``.
+        PluginFailure: a chosen plugin is installed but failed to load.
     """
-    stages: dict[str, ResolvedStage] = {}
-    analyzers: list[ResolvedStage] = []
+    stages: dict[str, tuple[ResolvedStage, ...]] = {}
     try:
         for section in config.stages_to_run():
-            if section == "analyzers":
-                for index, entry in enumerate(config.analyzers):
-                    key = f"analyzers.{index}"
-                    info = registry.get("analyzers", entry.plugin, key=f"{key}.plugin")
-                    params = registry.validate_params(info, entry.params, key=f"{key}.params")
-                    analyzers.append(ResolvedStage(section, info, params, entry.key or entry.plugin))
-                continue
             entry = getattr(config, section)
+            if section == "analyzers":
+                if entry:
+                    stages[section] = tuple(_resolve(registry, section, f"analyzers.{i}", a) for i, a in enumerate(entry))
+                continue
             if entry is None:
                 raise ConfigError(
                     f"{section}: required key is missing (a plugin for this stage, or stop_after before it)"
                 )
-            info = registry.get(section, entry.plugin, key=f"{section}.plugin")
-            stages[section] = ResolvedStage(section, info, registry.validate_params(info, entry.params, f"{section}.params"))
+            stages[section] = (_resolve(registry, section, section, entry),)
     except ConfigError as exc:
         raise ConfigError(f"{source}: {exc}") from None
-    keys = [a.key for a in analyzers]
+    keys = [a.key for a in stages.get("analyzers", ())]
     duplicates = sorted({k for k in keys if keys.count(k) > 1})
     if duplicates:
         raise ConfigError(f"{source}: analyzers: two analyzers write values named {duplicates[0]!r}; give one a 'key'")
-    return Plan(config, stages, tuple(analyzers))
+    return Plan(config, stages)
 
 
-@contextmanager
-def _timed(stats: list[StageStats], stage: str, **counts: Any) -> Iterator[dict[str, Any]]:
-    record: dict[str, Any] = dict(counts)
-    start = time.perf_counter()
-    yield record
-    stats.append(StageStats(stage, time.perf_counter() - start, **record))
+def _resolve(registry: Registry, section: str, key: str, entry: Any) -> ResolvedStage:
+    info = registry.get(section, entry.plugin, key=f"{key}.plugin")
+    params = registry.validate_params(info, entry.params, f"{key}.params")
+    values_key = (entry.key or entry.plugin) if section == "analyzers" else None
+    return ResolvedStage(section, info, params, values_key)
 
 
 def run(
@@ -94,94 +95,126 @@ def run(
     mesh_sha256: str,
     progress: ProgressCallback | None = None,
 ) -> RunResult:
-    """Run the planned stages on ``mesh`` and return everything they produced."""
+    """Run the planned stages on ``mesh`` in the order of the stage table and return what they produced.
+
+    Each step stores its output in the result; a step returns ``False`` when
+    there is nothing left to do (e.g. no terminals), which ends the run early.
+    """
     config = plan_.config
     say = progress or (lambda _message: None)
     bounds = np.asarray(mesh.bounds, dtype=np.float64)
     context = RunContext(mesh=mesh, agent=config.agent, centre=bounds.mean(axis=0))
     result = RunResult(config=config.record(), mesh_name=mesh_name, mesh_sha256=mesh_sha256, context=context)
-    stages = plan_.stages
+    for stage in PIPELINE:
+        if stage.key not in plan_.stages:
+            break
+        say(f"{stage.step}: {stage.label}")
+        record: dict[str, Any] = {}
+        start = time.perf_counter()
+        step = Step(registry, plan_.stages[stage.key], result, record, config)
+        go_on = _STEPS[stage.key](step)
+        seconds = time.perf_counter() - start - sum(s.seconds for s in step.followers)
+        result.stages.append(StageStats(stage.timing, seconds, **record))
+        result.stages.extend(step.followers)
+        if not go_on:
+            break
+    return result
 
-    say("Step 1: initial graph")
-    with _timed(result.stages, "graph") as record:
-        graph = _call(registry, stages["graph"], mesh=mesh, context=context)
-        if not isinstance(graph, nx.Graph) or isinstance(graph, nx.DiGraph):
-            raise PluginError(f"GraphBuilder {stages['graph'].plugin.name!r} returned {type(graph).__name__}, not an undirected networkx.Graph")
-        if graph.number_of_nodes() == 0:
-            raise G2SError(f"{mesh_name}: no walkable surface found for the agent (the initial graph is empty)")
-        record.update(nodes=graph.number_of_nodes(), edges=graph.number_of_edges())
-    context.graph = result.graph = graph
-    if "terminals" not in stages:
-        return result
 
-    say("Step 2: terminals")
-    with _timed(result.stages, "terminals") as record:
-        terminals = _call(registry, stages["terminals"], graph=graph, context=context)
-        if not isinstance(terminals, Terminals):
-            raise PluginError(f"TerminalSelector {stages['terminals'].plugin.name!r} returned {type(terminals).__name__}, not Terminals")
-        unknown = [t for t in terminals.nodes if t not in graph]
-        if unknown:
-            raise PluginError(f"TerminalSelector {stages['terminals'].plugin.name!r} returned nodes not in the graph: {unknown[:5]}")
-        record.update(terminals=len(terminals.nodes))
+@dataclass(frozen=True)
+class Step:
+    """What one step of :func:`run` works with: the registry, its planned plugin(s), the result so far,
+    and ``record``, the counts of its :class:`~g2s_core.model.StageStats`."""
+
+    registry: Registry
+    planned: tuple[ResolvedStage, ...]
+    result: RunResult
+    record: dict[str, Any]
+    config: RunConfig
+    followers: list[StageStats] = field(default_factory=list)
+    """Stats of work done right after the stage (the ``loops:`` step), listed after its own."""
+
+    def call(self, **kwargs: Any) -> Any:
+        """The stage's single plugin, called with its parameters and the run's context."""
+        (chosen,) = self.planned
+        return self.registry.call(chosen.plugin, params=chosen.params, context=self.result.context, **kwargs)
+
+
+def _graph_step(step: Step) -> bool:
+    result = step.result
+    graph = step.call(mesh=result.context.mesh)
+    if graph.number_of_nodes() == 0:
+        raise G2SError(f"{result.mesh_name}: no walkable surface found for the agent (the initial graph is empty)")
+    step.record.update(nodes=graph.number_of_nodes(), edges=graph.number_of_edges())
+    result.context.graph = result.graph = graph
+    return True
+
+
+def _terminals_step(step: Step) -> bool:
+    result, graph = step.result, step.result.graph
+    terminals = step.call(graph=graph)
+    step.record.update(terminals=len(terminals.nodes))
     result.terminals = terminals
     for node in set(terminals.nodes).difference(terminals.waypoints):
         graph.nodes[node]["terminal"] = True
     if not terminals.nodes:
-        context.warn(
-            f"the {stages['terminals'].plugin.name!r} terminal selector found no terminals in {mesh_name}: "
+        result.context.warn(
+            f"the {step.planned[0].plugin.name!r} terminal selector found no terminals in {result.mesh_name}: "
             "there is nothing to join, so the run stops after step 2"
         )
-        return result
-    if "steiner" not in stages:
-        return result
+    return bool(terminals.nodes)
 
-    say("Step 3: Steiner tree")
-    with _timed(result.stages, "steiner") as record:
-        steiner = steiner_forest(graph, terminals.nodes, lambda sub, terms: _call(
-            registry, stages["steiner"], graph=sub, terminals=terms, context=context), context)
-        record.update(nodes=steiner.number_of_nodes(), edges=steiner.number_of_edges())
-    tree = steiner
-    if config.loops is not None:
-        with _timed(result.stages, "loops") as record:
-            steiner = add_loops(graph, tree, config.loops.stretch, config.loops.min_gain)
-            record.update(nodes=steiner.number_of_nodes(), edges=steiner.number_of_edges())
+
+def _steiner_step(step: Step) -> bool:
+    result = step.result
+    steiner = steiner_forest(result.graph, result.terminals.nodes, lambda sub, terms: step.call(
+        graph=sub, terminals=terms), result.context)
+    step.record.update(nodes=steiner.number_of_nodes(), edges=steiner.number_of_edges())
     result.steiner = steiner
-    if "roots" not in stages:
-        return result
+    if step.config.loops is not None:
+        start = time.perf_counter()
+        looped = add_loops(result.graph, steiner, step.config.loops.stretch, step.config.loops.min_gain)
+        step.followers.append(StageStats("loops", time.perf_counter() - start, looped.number_of_nodes(), looped.number_of_edges()))
+        result.looped = looped
+    return True
 
-    say("Step 4: rooted trees")
-    with _timed(result.stages, "roots"):
-        # the root selector scores the Steiner tree itself (its measures are O(n) on
-        # a tree, not on a tree with loops); nodes the loops added are never roots
-        scores = {**dict.fromkeys(steiner, -math.inf), **_call(registry, stages["roots"], tree=tree, context=context)}
-        forest = root_forest(steiner, scores, context.centre)
-    result.forest = forest
-    if "simplify" not in stages:
-        return result
 
-    say("Step 5: simplification")
-    with _timed(result.stages, "simplify") as record:
-        predicate = _call(registry, stages["simplify"], context=context)
-        structure = simplify_forest(forest, predicate)
-        record.update(nodes=structure.number_of_nodes(), edges=structure.number_of_edges())
+def _roots_step(step: Step) -> bool:
+    result = step.result
+    # the root selector scores the Steiner tree itself (its measures are O(n) on a
+    # tree, not on a tree with loops); nodes the loops added are never roots
+    structure = result.looped if result.looped is not None else result.steiner
+    scores = {**dict.fromkeys(structure, -math.inf), **step.call(tree=result.steiner)}
+    result.forest = root_forest(structure, scores, result.context.centre)
+    return True
+
+
+def _simplify_step(step: Step) -> bool:
+    result = step.result
+    structure = simplify_forest(result.forest, step.call())
+    step.record.update(nodes=structure.number_of_nodes(), edges=structure.number_of_edges())
     result.structure = structure
-    if not plan_.analyzers:
-        return result
-
-    say("Post-process: analysis")
-    with _timed(result.stages, "analysis"):
-        undirected = structure.to_undirected(as_view=True)
-        for analyzer in plan_.analyzers:
-            values = _call(registry, analyzer, structure=undirected, context=context)
-            missing = [n for n in structure if n not in values]
-            if missing:
-                raise PluginError(f"Analyzer {analyzer.plugin.name!r} gave no value for nodes {missing[:5]}")
-            result.analysis[analyzer.key] = {n: float(values[n]) for n in structure}
-    return result
+    return True
 
 
-def _call(registry: Registry, stage: ResolvedStage, **kwargs: Any) -> Any:
-    return registry.call(stage.plugin, params=stage.params, **kwargs)
+def _analyzers_step(step: Step) -> bool:
+    result = step.result
+    undirected = result.structure.to_undirected(as_view=True)
+    for analyzer in step.planned:
+        values = step.registry.call(analyzer.plugin, params=analyzer.params, structure=undirected, context=result.context)
+        result.analysis[analyzer.key] = {n: float(values[n]) for n in result.structure}
+    return True
+
+
+_STEPS: dict[str, Callable[[Step], bool]] = {
+    "graph": _graph_step,
+    "terminals": _terminals_step,
+    "steiner": _steiner_step,
+    "roots": _roots_step,
+    "simplify": _simplify_step,
+    "analyzers": _analyzers_step,
+}
+"""The step of each pipeline stage of :data:`g2s_core.stages.PIPELINE`."""
 
 
 def steiner_forest(
@@ -216,7 +249,6 @@ def steiner_forest(
         # a subgraph view is slow to iterate: with a single group of terminals
         # the solver gets the whole graph (its other components are unreachable)
         tree = solve(graph if len(groups) == 1 else graph.subgraph(components[index]), group)
-        _check_tree(tree, graph, group)
         forest.add_nodes_from(sorted(tree.nodes))
         forest.add_edges_from(sorted(tuple(sorted(e)) for e in tree.edges))
     for node in forest.nodes:
@@ -224,16 +256,3 @@ def steiner_forest(
     for u, v in forest.edges:
         forest.edges[u, v].update(graph.edges[u, v])
     return forest
-
-
-def _check_tree(tree: Any, graph: nx.Graph, terminals: list[int]) -> None:
-    if not isinstance(tree, nx.Graph):
-        raise PluginError(f"the Steiner solver returned {type(tree).__name__}, not a networkx.Graph")
-    missing = [t for t in terminals if t not in tree]
-    if missing:
-        raise PluginError(f"the Steiner solver's tree misses terminals {missing[:5]}")
-    foreign = [e for e in tree.edges if not graph.has_edge(*e)]
-    if foreign:
-        raise PluginError(f"the Steiner solver's tree has edges not in the graph: {foreign[:3]}")
-    if not nx.is_tree(tree):
-        raise PluginError("the Steiner solver returned a graph that is not a tree")

@@ -1,14 +1,21 @@
 """Plugin discovery: the ``g2s`` entry-point group, loaded into a pluggy PluginManager.
 
 Built-in plugins are found exactly as third-party ones are: through the
-entry points their distribution declares. A plugin's identity is its stage
-(the one stage hook it implements) and its ``NAME``.
+entry points their distribution declares. An entry point names a plugin (a
+module or any object) or a list of them. A plugin's identity is its stage
+(the one hook of :mod:`g2s_core.stages` it implements) and its ``NAME``.
+
+A plugin that fails to load is kept aside as broken: ``g2s plugins`` lists
+it, and only a run that asks for it (by the entry-point name
+``<stage>.<name>``) stops. A plugin that raises or returns a wrong result
+fails with :class:`~g2s_core.errors.PluginFailure` naming it and its package.
 """
 
 from __future__ import annotations
 
+import functools
 import importlib.metadata
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 from typing import Any
 
@@ -16,14 +23,12 @@ import pluggy
 from pydantic import ValidationError
 
 from g2s_core import hookspecs
-from g2s_core.config import STAGES, describe_field, describe_validation_error
-from g2s_core.errors import ConfigError, PluginError
-from g2s_core.hookspecs import STAGE_HOOKS, STAGE_TITLES
+from g2s_core.errors import ConfigError, G2SError, PluginError, PluginFailure
+from g2s_core.messages import describe_field, describe_validation_error
 from g2s_core.plugin import PROJECT, PluginParams
+from g2s_core.stages import BY_HOOK, BY_KEY, STAGES, Stage
 
 ENTRY_POINT_GROUP = "g2s"
-
-_HOOK_STAGES = {hook: stage for stage, hook in STAGE_HOOKS.items()}
 
 
 class _NoParams(PluginParams):
@@ -53,8 +58,23 @@ class PluginInfo:
     summary: str
 
     @property
-    def hook_name(self) -> str:
-        return STAGE_HOOKS[self.stage]
+    def kind(self) -> Stage:
+        """Its row of the stage table."""
+        return BY_KEY[self.stage]
+
+    def failure(self, problem: str) -> PluginFailure:
+        """The error for this plugin's own fault: ``<Title> plugin 'x' (package 'p') failed: <problem>``."""
+        return PluginFailure(f"{self.kind.title} plugin {self.name!r} (package {self.package!r}) failed: {problem}")
+
+
+@dataclass(frozen=True)
+class BrokenPlugin:
+    """An entry point that could not be loaded or registered, and why."""
+
+    package: str
+    entry_point: str
+    target: str
+    reason: str
 
 
 class Registry:
@@ -64,10 +84,11 @@ class Registry:
         self.manager = pluggy.PluginManager(PROJECT)
         self.manager.add_hookspecs(hookspecs)
         self._plugins: dict[tuple[str, str], PluginInfo] = {}
+        self.broken: list[BrokenPlugin] = []
 
     @classmethod
     def from_entry_points(cls, group: str = ENTRY_POINT_GROUP) -> Registry:
-        """Load every entry point of ``group`` (sorted by package, then name)."""
+        """Load every entry point of ``group`` (sorted by package, then name); keep the broken ones aside."""
         registry = cls()
         seen: set[tuple[str, str, str]] = set()
         entries = sorted(
@@ -80,28 +101,28 @@ class Registry:
                 continue
             seen.add((package, ep.name, ep.value))
             try:
-                plugin = ep.load()
-            except Exception as exc:  # a broken third-party plugin must name itself
-                raise PluginError(
-                    f"entry point {ep.name!r} ({ep.value}) of package {package!r} failed to load: {exc}"
-                ) from exc
-            registry.register(plugin, package=package, entry_point=ep.name)
+                loaded = ep.load()
+                for plugin in loaded if isinstance(loaded, (list, tuple)) else [loaded]:
+                    registry.register(plugin, package=package, entry_point=ep.name)
+            except Exception as exc:  # a broken third-party plugin must not stop the others
+                reason = str(exc) if isinstance(exc, PluginError) else f"{type(exc).__name__}: {exc}"
+                registry.broken.append(BrokenPlugin(package, ep.name, ep.value, reason))
         return registry
 
     def register(self, plugin: Any, package: str, entry_point: str) -> PluginInfo:
-        """Register one plugin object; its stage is the single stage hook it implements."""
+        """Register one plugin object; its stage is the single hook of the stage table it implements."""
         where = f"entry point {entry_point!r} of package {package!r}"
         try:
-            self.manager.register(plugin, name=f"{package}:{entry_point}")
+            self.manager.register(plugin, name=f"{package}:{entry_point}:{getattr(plugin, 'NAME', '')}")
             self.manager.check_pending()
         except (pluggy.PluginValidationError, ValueError) as exc:
             raise PluginError(f"{where}: {exc}") from exc
-        hooks = sorted(c.name for c in self.manager.get_hookcallers(plugin) or [] if c.name in _HOOK_STAGES)
+        hooks = sorted(c.name for c in self.manager.get_hookcallers(plugin) or [] if c.name in BY_HOOK)
         if len(hooks) != 1:
             self.manager.unregister(plugin)
             found = ", ".join(hooks) or "none"
             raise PluginError(f"{where}: a plugin implements exactly one stage hook, found {found}")
-        stage = _HOOK_STAGES[hooks[0]]
+        stage = BY_HOOK[hooks[0]]
         name = getattr(plugin, "NAME", None)
         if not isinstance(name, str) or not name:
             self.manager.unregister(plugin)
@@ -110,34 +131,50 @@ class Registry:
         if not (isinstance(params_model, type) and issubclass(params_model, PluginParams)):
             self.manager.unregister(plugin)
             raise PluginError(f"{where}: Params must be a g2s_core.plugin.PluginParams subclass")
-        existing = self._plugins.get((stage, name))
+        undeclared = [a for a in stage.declares if getattr(plugin, a, None) is None]
+        if undeclared:
+            self.manager.unregister(plugin)
+            raise PluginError(f"{where}: {stage.title} plugins declare {', '.join(undeclared)}, this one does not")
+        existing = self._plugins.get((stage.key, name))
         if existing is not None:
             self.manager.unregister(plugin)
             raise PluginError(
-                f"two plugins provide {STAGE_TITLES[stage]} {name!r}: package {existing.package!r} "
+                f"two plugins provide {stage.title} {name!r}: package {existing.package!r} "
                 f"(entry point {existing.entry_point!r}) and package {package!r} (entry point {entry_point!r})"
             )
         doc = (getattr(plugin, "__doc__", None) or "").strip()
-        info = PluginInfo(stage, name, package, entry_point, plugin, params_model, doc.splitlines()[0] if doc else "")
-        self._plugins[(stage, name)] = info
+        info = PluginInfo(stage.key, name, package, entry_point, plugin, params_model, doc.splitlines()[0] if doc else "")
+        self._plugins[(stage.key, name)] = info
         return info
 
     def plugins(self, stage: str | None = None) -> list[PluginInfo]:
         """Registered plugins in pipeline-stage order, then by name."""
-        order = {s: i for i, s in enumerate(STAGES)}
+        order = {s.key: i for i, s in enumerate(STAGES)}
         chosen = (p for p in self._plugins.values() if stage is None or p.stage == stage)
         return sorted(chosen, key=lambda p: (order[p.stage], p.name))
 
     def get(self, stage: str, name: str, key: str | None = None) -> PluginInfo:
-        """The plugin ``name`` of ``stage``; a clear error naming the config ``key`` if absent."""
+        """The plugin ``name`` of ``stage``; a clear error naming the config ``key`` if absent.
+
+        Raises:
+            ConfigError: no such plugin is installed.
+            PluginFailure: the plugin is installed but failed to load (or another
+                package provides a plugin of the same kind and name).
+        """
+        title = BY_KEY[stage].title
+        for broken in self.broken:  # also a second plugin of that name: which one is meant is unknown
+            if broken.entry_point == f"{stage}.{name}":
+                raise PluginFailure(
+                    f"{title} plugin {name!r} (package {broken.package!r}) failed to load: {broken.reason}"
+                )
         info = self._plugins.get((stage, name))
-        if info is None:
-            installed = ", ".join(p.name for p in self.plugins(stage)) or "none"
-            where = f"{key}: " if key else ""
-            raise ConfigError(
-                f"{where}{STAGE_TITLES[stage]} plugin {name!r} is not installed (installed: {installed})"
-            )
-        return info
+        if info is not None:
+            return info
+        installed = ", ".join(p.name for p in self.plugins(stage)) or "none"
+        broken = [f"{b.entry_point} of package {b.package!r}" for b in self.broken if b.entry_point.startswith(f"{stage}.")]
+        also = f"; failed to load: {', '.join(broken)}, see `g2s plugins`" if broken else ""
+        where = f"{key}: " if key else ""
+        raise ConfigError(f"{where}{title} plugin {name!r} is not installed (installed: {installed}{also})")
 
     def validate_params(self, info: PluginInfo, params: dict[str, Any], key: str) -> PluginParams:
         """The plugin's parameter model built from ``params``; one-line error at ``key``."""
@@ -147,10 +184,45 @@ class Registry:
             raise ConfigError(describe_validation_error(exc, info.params_model, prefix=key)) from None
 
     def call(self, info: PluginInfo, **kwargs: Any) -> Any:
-        """Call ``info``'s stage hook on that plugin alone."""
+        """Call ``info``'s hook on that plugin alone and check its result against the stage table.
+
+        A :class:`~g2s_core.errors.G2SError` the plugin raises (bad input it
+        found) passes through; any other exception, and a wrong result, becomes
+        ``info.failure(...)``. A returned function is wrapped so that its own
+        results and exceptions are checked the same way.
+        """
         others = [p for p in self.manager.get_plugins() if p is not info.plugin]
-        caller = self.manager.subset_hook_caller(info.hook_name, remove_plugins=others)
-        return caller(**kwargs)
+        caller = self.manager.subset_hook_caller(info.kind.hook, remove_plugins=others)
+        value = _guarded(info, caller, "raised")(**kwargs)
+        problem = info.kind.check(value, kwargs, info.plugin)
+        if problem is not None:
+            raise info.failure(f"returned {problem}")
+        each = info.kind.check_each_call
+        if each is None:
+            return value
+
+        def checked(*args: Any) -> Any:
+            answer = _guarded(info, value, "its function raised")(*args)
+            wrong = each(answer)
+            if wrong is not None:
+                raise info.failure(f"its function returned {wrong}")
+            return answer
+
+        return checked
+
+
+def _guarded(info: PluginInfo, function: Callable[..., Any], what: str) -> Callable[..., Any]:
+    """``function`` whose exceptions other than bad input become ``info``'s failure."""
+
+    def call(*args: Any, **kwargs: Any) -> Any:
+        try:
+            return function(*args, **kwargs)
+        except (G2SError, PluginFailure, KeyboardInterrupt, MemoryError):
+            raise
+        except Exception as exc:
+            raise info.failure(f"{what} {type(exc).__name__}: {exc}") from exc
+
+    return call
 
 
 def plugin_parameters(info: PluginInfo) -> Iterable[tuple[str, str, str, str]]:
@@ -158,3 +230,9 @@ def plugin_parameters(info: PluginInfo) -> Iterable[tuple[str, str, str, str]]:
     for name, field in info.params_model.model_fields.items():
         default = "required" if field.is_required() else repr(field.get_default(call_default_factory=True))
         yield name, describe_field(field), default, field.description or ""
+
+
+@functools.cache
+def installed() -> Registry:
+    """The plugins installed in this environment (entry points are read once per process)."""
+    return Registry.from_entry_points()

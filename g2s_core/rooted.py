@@ -23,33 +23,22 @@ from collections.abc import Mapping
 import networkx as nx
 import numpy as np
 
-SCORE_DIGITS = 12
-"""Scores and distances are compared after rounding to this many significant
-digits, so that values equal but for floating-point noise count as ties."""
-
-
-def round_significant(values: np.ndarray, digits: int = SCORE_DIGITS) -> np.ndarray:
-    """``values`` rounded to ``digits`` significant digits (zeros and non-finite values kept)."""
-    values = np.asarray(values, dtype=np.float64)
-    finite = np.isfinite(values) & (values != 0)
-    scale = np.ones_like(values)
-    scale[finite] = 10.0 ** (digits - 1 - np.floor(np.log10(np.abs(values[finite]))))
-    return np.where(finite, np.round(values * scale) / scale, values)
+from g2s_core.ties import tie_values
 
 
 def root_ranks(forest: nx.Graph, scores: Mapping[int, float], centre: np.ndarray) -> dict[int, int]:
     """Rank of every node as a root: 0 is best.
 
-    Order: highest score first; ties go to the node nearest ``centre``, then
-    to the lowest id.
+    Order: highest score first; ties (see :mod:`g2s_core.ties`) go to the
+    node nearest ``centre``, then to the lowest id.
     """
     nodes = sorted(forest)
     missing = [n for n in nodes if n not in scores]
     if missing:
         raise ValueError(f"the root selector gave no score for nodes {missing[:5]}")
     positions = np.array([forest.nodes[n]["pos"] for n in nodes], dtype=np.float64).reshape(-1, 3)
-    score = round_significant(np.array([scores[n] for n in nodes], dtype=np.float64))
-    distance = round_significant(np.linalg.norm(positions - centre, axis=1))
+    score = tie_values([scores[n] for n in nodes])
+    distance = tie_values(np.linalg.norm(positions - centre, axis=1))
     order = np.lexsort((np.asarray(nodes), distance, -score))
     return {nodes[i]: rank for rank, i in enumerate(order.tolist())}
 

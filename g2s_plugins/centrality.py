@@ -47,17 +47,13 @@ from scipy.sparse import csgraph
 from scipy.sparse.linalg import ArpackNoConvergence, eigsh, spsolve
 
 from g2s_core.errors import G2SError
+from g2s_core.ties import rank_key
 from g2s_plugins import traffic
 
 Metric = Literal["degree", "betweenness", "closeness", "eigenvector", "katz"]
 """The metric names accepted by :func:`compute`."""
 
 METRICS: tuple[str, ...] = ("degree", "betweenness", "closeness", "eigenvector", "katz")
-
-RANK_DIGITS = 12
-"""Values are compared after rounding to this many significant digits, so that
-values equal but for floating-point noise (e.g. Brandes on symmetric nodes)
-rank as ties, which are then broken by node id."""
 
 WEIGHTED_PAIRS_EXACT = 256
 """Node-weighted betweenness on a graph with cycles is exact up to this many nodes, sampled above."""
@@ -67,11 +63,6 @@ _DENSE_EIGEN_LIMIT = 256
 
 _DIJKSTRA_BLOCK = 1 << 22
 """Distance-matrix entries computed at once by weighted closeness (32 MB)."""
-
-
-def rank_key(node: int, value: float) -> tuple[float, int]:
-    """Sort key that ranks higher ``value`` first and breaks (rounded) ties by lower node id."""
-    return (-float(f"{value:.{RANK_DIGITS}g}"), node)
 
 
 # --- graph as arrays ---------------------------------------------------------------
@@ -612,7 +603,6 @@ def components(graph: nx.Graph) -> list[list[Hashable]]:
 __all__ = [
     "METRICS",
     "Metric",
-    "RANK_DIGITS",
     "betweenness",
     "closeness",
     "components",
@@ -622,7 +612,6 @@ __all__ = [
     "graph_betweenness",
     "katz",
     "largest_eigenvalue",
-    "rank_key",
     "tree_betweenness",
     "tree_closeness",
 ]

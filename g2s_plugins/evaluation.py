@@ -6,7 +6,8 @@ The measures (all along the initial walkable graph, distances in metres):
 ``area_within``
     share of the walkable area (sum of node ``area``) whose node lies within
     r metres of the structure, for each r of ``radii``. "The structure" is
-    every node of the Steiner stage's forest (with its loop paths): the final
+    every node of the Steiner stage's forest with its loop paths
+    (``RunResult.looped``, else ``steiner``): the final
     structure's edges stand for those chains of polygons.
 ``traffic_off``
     share of the reference flow (:func:`reference_flow`) through nodes more
@@ -103,7 +104,8 @@ def evaluate(
     if result.structure is None:  # no terminals: nothing was joined
         return Quality({r: 0.0 for r in radii}, 1.0, float("nan"), float("nan"), 0.0, arrays.n, 0,
                        {s.stage: s.seconds for s in result.stages})
-    distance, _ = traffic.distance_to(arrays, arrays.rows(sorted(result.steiner)))
+    joined = result.looped if result.looped is not None else result.steiner
+    distance, _ = traffic.distance_to(arrays, arrays.rows(sorted(joined)))
     within = {r: float(area[distance <= r].sum() / area.sum()) for r in radii}
     total_flow = reference.sum()
     off = float(reference[distance > off_distance].sum() / total_flow) if total_flow > 0 else 0.0

@@ -7,8 +7,10 @@ import pytest
 import trimesh
 
 from g2s_core.config import MeshConfig
-from g2s_core.errors import MeshError
-from g2s_core.mesh import SUPPORTED_SUFFIXES, file_sha256, load_mesh
+from g2s_core.errors import ConfigError, MeshError
+from g2s_core.mesh import SUPPORTED_SUFFIXES, file_sha256, generate_level, load_mesh
+from g2s_core.registry import installed
+from g2s_plugins.samples import levels
 
 
 def floor_box() -> trimesh.Trimesh:
@@ -81,3 +83,23 @@ def test_supported_suffixes_are_documented_in_the_error(tmp_path):
     path.write_text("x")
     with pytest.raises(MeshError, match=", ".join(SUPPORTED_SUFFIXES)):
         load_mesh(path)
+
+
+# --- sample:NAME?param=value levels, from the installed level generators ---------------
+
+
+def test_sample_levels_come_from_the_level_generators_with_their_parameters():
+    builtin = {p.name for p in installed().plugins("levels") if p.package == "g2s"}
+    assert builtin == set(levels.SAMPLES)  # every sample level is a generator
+    mesh = generate_level("sample:dungeon?rooms=3&seed=2&loops=0.5")
+    expected = levels.dungeon(rooms=3, seed=2, loops=0.5).mesh
+    assert np.array_equal(mesh.vertices, expected.vertices) and np.array_equal(mesh.faces, expected.faces)
+    for spec, message in [
+        ("sample:nope", "sample:nope: unknown sample 'nope' (expected one of: "),
+        ("sample:dungeon?rooms=many", "sample:dungeon.rooms: expected an integer, got 'many'"),
+        ("sample:cross_hub?arms=3", "sample:cross_hub.arms: unknown key (expected one of: hub_size, arm_length, arm_width)"),
+        ("sample:cross_hub?hub_size", "sample:cross_hub?hub_size: expected sample:NAME?param=value&param=value"),
+    ]:
+        with pytest.raises(ConfigError) as caught:
+            generate_level(spec)
+        assert str(caught.value).startswith(message)

@@ -21,16 +21,16 @@ import trimesh
 from g2s_core.config import AgentConfig, load_config
 from g2s_core.errors import G2SError
 from g2s_core.model import Opening, RunContext, RunResult, StageStats, Terminals
-from g2s_plugins.outputs import (
+from g2s_core.outputs import (
     DEFAULT_FORMATS,
-    RESULT_FILES,
-    WRITERS,
     check_outdir,
-    load_result,
     parse_formats,
     prepare_outdir,
+    result_files,
     write_outputs,
+    writers,
 )
+from g2s_plugins.outputs import load_result
 from g2s_plugins.outputs import common, graphml, heatmap, structure_json
 from g2s_core.pipeline import steiner_forest
 from g2s_core.rooted import root_forest
@@ -382,7 +382,7 @@ def test_parse_formats():
     with pytest.raises(G2SError, match="no output format"):
         parse_formats(" , ")
     assert DEFAULT_FORMATS == ("json", "html")
-    assert set(WRITERS) == set(RESULT_FILES) >= {"json", "html", "glb", "graphml", "png"}
+    assert set(writers()) == set(result_files()) >= {"json", "html", "glb", "graphml", "png"}
 
 
 def test_existing_results_are_refused_without_force_and_stale_ones_removed_with_it(result, tmp_path):
@@ -430,7 +430,7 @@ def test_cli_refuses_bad_formats_and_existing_results_before_running(tmp_path, c
     code, out, err = g2s(capsys, "run", "configs/map_analysis.yaml", "sample:straight_corridor", "-o",
                          str(tmp_path / "o"), "--format", "json,pdf")
     assert code == 2 and out == "" and err.strip().splitlines() == [
-        "g2s: error: --format: unknown output format 'pdf' (expected some of: json, html, glb, graphml, png, graph)"]
+        "g2s: error: --format: unknown output format 'pdf' (expected some of: glb, graph, graphml, html, json, png)"]
     assert not (tmp_path / "o").exists()
     config = tmp_path / "c.yaml"
     config.write_text("extends: map_analysis\noutputs: {formats: [json, gif]}\n")
@@ -446,12 +446,12 @@ def test_cli_refuses_bad_formats_and_existing_results_before_running(tmp_path, c
 
 
 def test_each_format_writes_exactly_its_result_files(result, tmp_path):
-    for fmt in WRITERS:
+    for fmt in writers():
         folder = tmp_path / fmt
         folder.mkdir()
         written = write_outputs(result, folder, [fmt])
-        assert tuple(p.name for p in written) == RESULT_FILES[fmt]
-        assert sorted(p.name for p in folder.iterdir()) == sorted(RESULT_FILES[fmt])
+        assert tuple(p.name for p in written) == result_files()[fmt]
+        assert sorted(p.name for p in folder.iterdir()) == sorted(result_files()[fmt])
         assert all(p.stat().st_mode & 0o044 == 0o044 for p in written)  # readable by others (umask 022)
 
 
@@ -518,7 +518,7 @@ def test_demo_writes_all_five_formats_and_they_agree(tmp_path, capsys):
     out_dir = tmp_path / "demo"
     code, out, err = g2s(capsys, "demo", "-o", str(out_dir), "--rooms", "6")
     assert code == 0, err
-    expected = sorted(name for fmt in ("json", "html", "glb", "graphml", "png") for name in RESULT_FILES[fmt])
+    expected = sorted(name for fmt in ("json", "html", "glb", "graphml", "png") for name in result_files()[fmt])
     assert sorted(p.name for p in out_dir.iterdir()) == expected
     assert f"open {out_dir / 'report.html'} in a web browser" in out
     loaded = load_result(out_dir)

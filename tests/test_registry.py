@@ -7,7 +7,7 @@ import types
 import pytest
 from pydantic import Field
 
-from g2s_core.errors import ConfigError, PluginError
+from g2s_core.errors import ConfigError, PluginError, PluginFailure
 from g2s_core.model import Terminals
 from g2s_core.plugin import PluginParams, hookimpl
 from g2s_core.registry import Registry, plugin_parameters
@@ -130,7 +130,9 @@ def test_builtin_plugins_register_through_entry_points():
     registry = Registry.from_entry_points()
     builtin = {(p.stage, p.name) for p in registry.plugins() if p.package == "g2s"}
     assert ("graph", "navmesh") in builtin
-    assert all(p.entry_point == f"{p.stage}.{p.name}" for p in registry.plugins() if p.package == "g2s")
+    for info in registry.plugins():
+        if info.package == "g2s":  # the sample levels come as one list, from entry point levels.samples
+            assert info.entry_point == (f"{info.stage}.{info.name}" if info.stage != "levels" else "levels.samples")
 
 
 def test_every_builtin_parameter_is_documented():
@@ -140,3 +142,104 @@ def test_every_builtin_parameter_is_documented():
     for info in builtin:
         for name, field in info.params_model.model_fields.items():
             assert field.description, f"{info.stage}.{info.name}: {name}"
+
+
+# --- a plugin's own failures: exceptions and wrong results name the plugin and its package ---
+
+
+def _chain_tree():
+    import networkx as nx
+
+    tree = nx.path_graph(3)
+    for node in tree:
+        tree.nodes[node]["pos"] = (float(node), 0.0, 0.0)
+    return tree
+
+
+def test_a_root_selector_that_misses_nodes_fails_as_itself():
+    @hookimpl
+    def scores(tree):
+        return {0: 1.0}
+
+    registry = Registry()
+    info = registry.register(make_plugin("partial", g2s_root_scores=scores), package="pkg-r", entry_point="roots.partial")
+    with pytest.raises(PluginFailure) as caught:
+        registry.call(info, tree=_chain_tree(), params=info.params_model(), context=None)
+    assert str(caught.value) == "RootSelector plugin 'partial' (package 'pkg-r') failed: returned no value for nodes [1, 2]"
+
+
+def test_a_predicate_that_returns_none_or_raises_fails_as_itself():
+    @hookimpl
+    def predicate():
+        return lambda tree, a, b, c: None if c == 2 else tree.nodes[b]["missing"]
+
+    registry = Registry()
+    info = registry.register(make_plugin("sloppy", g2s_simplify_predicate=predicate), package="pkg-p", entry_point="e")
+    checked = registry.call(info, params=info.params_model(), context=None)
+    with pytest.raises(PluginFailure, match=r"^SimplifyPredicate plugin 'sloppy' \(package 'pkg-p'\) failed: "
+                                            r"its function returned NoneType, not a bool$"):
+        checked(_chain_tree(), 0, 1, 2)
+    with pytest.raises(PluginFailure, match=r"failed: its function raised KeyError: 'missing'$"):
+        checked(_chain_tree(), 0, 1, 1)
+
+
+def test_bad_input_found_by_a_plugin_stays_the_users_error():
+    @hookimpl
+    def select(graph):
+        raise ConfigError("points.txt: line 3: expected 3 numbers")
+
+    registry = Registry()
+    info = registry.register(make_plugin("strict", g2s_select_terminals=select), package="p", entry_point="e")
+    with pytest.raises(ConfigError, match="points.txt"):
+        registry.call(info, graph={}, params=info.params_model(), context=None)
+
+
+def test_a_writer_declares_its_files_and_writes_only_those(tmp_path):
+    @hookimpl
+    def write(result, folder):
+        return [folder / "other.txt"]
+
+    registry = Registry()
+    with pytest.raises(PluginError, match="OutputWriter plugins declare FILES, this one does not"):
+        registry.register(make_plugin("nofiles", g2s_write_output=write), package="p", entry_point="e")
+    info = registry.register(make_plugin("txt", FILES=("notes.txt",), g2s_write_output=write), package="pkg-w", entry_point="e")
+    with pytest.raises(PluginFailure, match=r"OutputWriter plugin 'txt' \(package 'pkg-w'\) failed: returned paths it "
+                                            r"does not declare in FILES \('notes.txt',\)"):
+        registry.call(info, result=None, folder=tmp_path)
+
+
+def test_a_plugin_that_fails_to_load_is_kept_aside(monkeypatch):
+    import importlib.metadata
+
+    good = importlib.metadata.EntryPoint("terminals.first_k", "tests.test_registry:FIRST_K", "g2s")
+    bad = importlib.metadata.EntryPoint("terminals.gone", "no_such_package_g2s.plugin", "g2s")
+    monkeypatch.setattr(importlib.metadata, "entry_points", lambda group: [good, bad])
+    registry = Registry.from_entry_points()
+    assert [p.name for p in registry.plugins()] == ["first_k"]
+    assert [(b.entry_point, b.target) for b in registry.broken] == [("terminals.gone", "no_such_package_g2s.plugin")]
+    assert "No module named 'no_such_package_g2s'" in registry.broken[0].reason
+    with pytest.raises(PluginFailure, match=r"^TerminalSelector plugin 'gone' \(package '\?'\) failed to load: "):
+        registry.get("terminals", "gone")
+    with pytest.raises(ConfigError, match=r"failed to load: terminals.gone of package '\?', see `g2s plugins`"):
+        registry.get("terminals", "other")
+
+
+FIRST_K = terminal_plugin("first_k")
+
+
+def test_two_installed_plugins_of_one_name_stop_the_runs_that_ask_for_it(monkeypatch):
+    import importlib.metadata
+
+    def entry_point(package, plugin):
+        return types.SimpleNamespace(name="terminals.first_k", value=f"{package}.first_k",
+                                     dist=types.SimpleNamespace(name=package), load=lambda: plugin)
+
+    found = [entry_point("pkg-b", OTHER_FIRST_K), entry_point("pkg-a", FIRST_K)]
+    monkeypatch.setattr(importlib.metadata, "entry_points", lambda group: found)
+    registry = Registry.from_entry_points()
+    assert [(b.package, b.entry_point) for b in registry.broken] == [("pkg-b", "terminals.first_k")]
+    with pytest.raises(PluginFailure, match=r"two plugins provide TerminalSelector 'first_k': package 'pkg-a'"):
+        registry.get("terminals", "first_k")
+
+
+OTHER_FIRST_K = terminal_plugin("first_k")

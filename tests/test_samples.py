@@ -372,13 +372,11 @@ def test_dungeon_exits_lead_out_of_their_rooms():
         assert side in ("-X", "+X", "-Z", "+Z")
 
 
-def test_big_dungeon_generates_fast():
-    start = time.perf_counter()
+def test_big_dungeon_generates():
+    # its generation time is a benchmark figure (docs/performance.md), not a test
     lvl = samples.dungeon(rooms=5000)
-    seconds = time.perf_counter() - start
     assert len(lvl.metadata["room_centres"]) == 5000
     assert len(lvl.mesh.faces) > 500_000
-    assert seconds < 5.0
 
 
 # ---------------------------------------------------------------- with Recast (optional)

@@ -1,4 +1,4 @@
-"""What several writers share: the final graph of a run, numbers, floors, the stage table."""
+"""What several writers share: numbers, floors, edges; the final graph and stage table come from core."""
 
 from __future__ import annotations
 
@@ -9,25 +9,14 @@ from typing import Any
 import networkx as nx
 import numpy as np
 
-from g2s_core.model import RunResult, StageStats
+from g2s_core.model import RunResult
+from g2s_core.summary import final_graph, roots_of, stage_rows
+
+__all__ = ["agent_value", "edge_list", "final_graph", "floors", "is_loop_edge", "number", "positions", "roots_of", "stage_rows",
+           "terminal_ids", "vector"]
 
 FLOAT_DIGITS = 9
 """Floats in the written files keep this many significant digits (``format(x, '.9g')``)."""
-
-FINAL_STAGES = (("simplify", "structure"), ("roots", "forest"), ("steiner", "steiner"), ("graph", "graph"))
-"""Where the "final structure" of a run comes from: the last of these that ran."""
-
-STEP_ROWS = (
-    ("graph", "Step 1", "initial graph"),
-    ("terminals", "Step 2", "terminals"),
-    ("steiner", "Step 3", "Steiner tree"),
-    ("loops", "Step 3", "loops kept"),
-    ("roots", "Step 4", "rooted trees"),
-    ("simplify", "Step 5", "simplification"),
-    ("analysis", "Post-process", "analysis"),
-)
-"""The paper's per-stage table rows: (stage, step, label)."""
-
 
 def number(value: Any) -> float | None:
     """``value`` as a float rounded to :data:`FLOAT_DIGITS` significant digits; ``None`` if not finite.
@@ -45,25 +34,6 @@ def vector(value: Any) -> list[float | None] | None:
     if value is None:
         return None
     return [number(v) for v in np.asarray(value, dtype=np.float64).reshape(-1)]
-
-
-def final_graph(result: RunResult) -> tuple[str | None, nx.Graph | None]:
-    """``(stage, graph)`` of the most processed graph the run produced (see :data:`FINAL_STAGES`)."""
-    for stage, attribute in FINAL_STAGES:
-        graph = getattr(result, attribute)
-        if graph is not None:
-            return stage, graph
-    return None, None
-
-
-def roots_of(graph: nx.Graph | None) -> list[int]:
-    """The roots of a rooted forest (``graph.graph["roots"]``), else ``[]``."""
-    if graph is None or not graph.is_directed():
-        return []
-    roots = graph.graph.get("roots")
-    if roots is None:
-        roots = [n for n in graph.nodes if graph.in_degree(n) == 0]
-    return [int(r) for r in roots]
 
 
 def terminal_ids(result: RunResult) -> list[int]:
@@ -109,29 +79,3 @@ def floors(heights: Sequence[float], gap: float) -> list[np.ndarray]:
     order = np.argsort(heights, kind="stable")
     breaks = np.nonzero(np.diff(heights[order]) > gap)[0] + 1
     return [np.sort(part) for part in np.split(order, breaks)]
-
-
-def stage_rows(stages: Sequence[StageStats]) -> list[tuple[str, str, str, str, str]]:
-    """The per-stage table as strings: (step, label, t (ms), #N, #E), then the total row.
-
-    #N is the terminal count for step 2, the node count otherwise, as in the paper.
-    """
-    by_name = {s.stage: s for s in stages}
-    rows = []
-    for stage, step, label in STEP_ROWS:
-        stats = by_name.get(stage)
-        if stats is None:
-            continue
-        nodes = stats.terminals if stage == "terminals" else stats.nodes
-        rows.append((step, label, milliseconds(stats.seconds), _count(nodes), _count(stats.edges)))
-    total = sum(s.seconds for s in stages)
-    rows.append(("total", "", milliseconds(total), "", ""))
-    return rows
-
-
-def milliseconds(seconds: float) -> str:
-    return "" if seconds is None or not math.isfinite(seconds) else f"{seconds * 1000:.1f}"
-
-
-def _count(value: int | None) -> str:
-    return "" if value is None else str(value)

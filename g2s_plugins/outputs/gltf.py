@@ -68,7 +68,7 @@ def build_scene(result: RunResult) -> trimesh.Scene:
         level.visual = _material("mesh", colours.MESH_COLOUR)
         scene.add_geometry(level, node_name="mesh", geom_name="mesh")
     navmesh = result.context.navmesh
-    if navmesh is not None and len(getattr(navmesh, "detail_triangles", ())):
+    if navmesh is not None and len(navmesh.detail_triangles):
         surface = trimesh.Trimesh(
             np.asarray(navmesh.detail_vertices, dtype=np.float64),
             np.asarray(navmesh.detail_triangles, dtype=np.int64),

@@ -119,7 +119,7 @@ def _ground(result: RunResult, graph: nx.Graph, groups: list[list[int]]) -> list
     the nearest such floor if several do, none if none does.
     """
     navmesh = result.context.navmesh
-    if navmesh is not None and len(getattr(navmesh, "detail_triangles", ())):
+    if navmesh is not None and len(navmesh.detail_triangles):
         triangles = np.asarray(navmesh.detail_vertices, dtype=np.float64)[np.asarray(navmesh.detail_triangles)]
     elif result.context.mesh is not None and len(result.context.mesh.faces):
         mesh = result.context.mesh

@@ -155,7 +155,7 @@ def build_figure(result: RunResult) -> go.Figure:
         traces.append(_mesh_trace(np.asarray(mesh.vertices), np.asarray(mesh.faces), LAYER_MESH,
                                   colours.css(colours.MESH_COLOUR), 0.25, True))
     navmesh = result.context.navmesh
-    if navmesh is not None and len(getattr(navmesh, "detail_triangles", ())):
+    if navmesh is not None and len(navmesh.detail_triangles):
         traces.append(_mesh_trace(np.asarray(navmesh.detail_vertices), np.asarray(navmesh.detail_triangles),
                                   LAYER_NAVMESH, colours.css(colours.NAVMESH_COLOUR), 0.45, False))
     terminals = terminal_ids(result)

@@ -198,10 +198,9 @@ def _with_edges(graph: nx.Graph | None) -> dict[str, Any] | None:
 def _navmesh_stats(result: RunResult, timing: bool) -> dict[str, Any] | None:
     """``navmesh.stats()`` split in its timing entries (``timing=True``) and the rest."""
     navmesh = result.context.navmesh
-    stats = getattr(navmesh, "stats", None) if navmesh is not None else None
-    if not callable(stats):
+    if navmesh is None:
         return None
-    values = stats()
+    values = navmesh.stats()
     chosen = {str(k): v for k, v in values.items() if any(w in str(k) for w in _TIMING_WORDS) == timing}
     return _plain(chosen)
 

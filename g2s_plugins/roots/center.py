@@ -9,26 +9,16 @@ from __future__ import annotations
 from collections.abc import Mapping
 
 import networkx as nx
-import numpy as np
 
 from g2s_core.model import RunContext
 from g2s_core.plugin import PluginParams, hookimpl
+from g2s_plugins.roots._nearness import nearness
 
 NAME = "center"
 
 
 class Params(PluginParams):
     """This plugin takes no parameters."""
-
-
-def nearness(tree: nx.Graph, target: np.ndarray) -> dict[int, float]:
-    """Minus the distance from every node's ``pos`` to ``target`` (higher = nearer)."""
-    nodes = list(tree.nodes)
-    if not nodes:
-        return {}
-    positions = np.asarray([tree.nodes[node]["pos"] for node in nodes], dtype=np.float64)
-    distances = np.linalg.norm(positions - np.asarray(target, dtype=np.float64), axis=1)
-    return dict(zip(nodes, (-distances).tolist()))
 
 
 @hookimpl

@@ -13,7 +13,7 @@ from pydantic import Field
 
 from g2s_core.model import RunContext
 from g2s_core.plugin import PluginParams, hookimpl
-from g2s_plugins.roots.center import nearness
+from g2s_plugins.roots._nearness import nearness
 
 NAME = "point"
 

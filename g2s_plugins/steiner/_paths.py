@@ -10,11 +10,23 @@ Tie-breaking rule used throughout: edges are totally ordered by
 ``(weight, lo, hi)`` where ``lo < hi`` are the endpoint indices. A minimum
 spanning tree under a strict total order is unique, so spanning trees never
 depend on how a library breaks ties.
+
+The solvers' shared contract, ``solver(graph, terminals) -> tree``:
+
+* ``graph``: undirected networkx graph with integer node ids; edge attribute
+  ``weight`` (missing means 1), finite and non-negative;
+* ``terminals``: node ids to join, in any order; duplicates are ignored;
+* the tree (``networkx.Graph``) has edges of ``graph``, each with its
+  ``weight``; it holds every terminal and has no non-terminal leaf; one
+  terminal gives a single-node graph;
+* ``ValueError``: no terminals, a terminal not in the graph, terminals in
+  different components, or a negative or non-finite weight; ``TypeError``: a
+  directed graph, or node ids that are not integers.
 """
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 
 import networkx as nx
@@ -425,3 +437,14 @@ def prepare(graph: nx.Graph, terminals: Iterable[int]) -> tuple[CSRGraph, np.nda
     if terms.shape[0] == 0:
         raise ValueError("no terminals given")
     return csr, terms
+
+
+def solve(
+    graph: nx.Graph, terminals: Iterable[int], algorithm: Callable[[CSRGraph, np.ndarray], nx.Graph]
+) -> nx.Graph:
+    """The solvers' shared frame (see the module doc for the contract): :func:`prepare`, a lone
+    terminal as a single-node tree, else ``algorithm(csr, terms)`` for two or more sorted terminal indices."""
+    csr, terms = prepare(graph, terminals)
+    if terms.shape[0] == 1:
+        return to_networkx(csr, terms[:0], terms[:0], np.empty(0), terms)
+    return algorithm(csr, terms)

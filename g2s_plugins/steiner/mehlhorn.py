@@ -51,26 +51,14 @@ class Params(PluginParams):
 def mehlhorn_steiner_tree(graph: nx.Graph, terminals: Iterable[int]) -> nx.Graph:
     """An approximate minimum Steiner tree of ``graph`` joining ``terminals`` (Mehlhorn).
 
-    Args:
-        graph: undirected networkx graph with integer node ids; edge attribute
-            ``weight`` (missing means 1), finite and non-negative.
-        terminals: node ids to join, in any order; duplicates are ignored.
-
-    Returns:
-        A tree (``networkx.Graph``) whose edges are edges of ``graph``, each
-        with its ``weight``; it holds every terminal and has no non-terminal
-        leaf. One terminal gives a single-node graph.
-
-    Raises:
-        ValueError: no terminals, a terminal not in the graph, terminals in
-            different components, or a negative or non-finite weight.
-        TypeError: a directed graph, or node ids that are not integers.
+    Arguments, result and errors: the solvers' shared contract in
+    :mod:`g2s_plugins.steiner._paths`.
     """
-    csr, terms = _paths.prepare(graph, terminals)
-    k = terms.shape[0]
-    if k == 1:
-        return _paths.to_networkx(csr, terms[:0], terms[:0], np.empty(0), terms)
+    return _paths.solve(graph, terminals, _mehlhorn)
 
+
+def _mehlhorn(csr: _paths.CSRGraph, terms: np.ndarray) -> nx.Graph:
+    k = terms.shape[0]
     distance, predecessor, source = dijkstra(
         csr.matrix, directed=True, indices=terms, min_only=True, return_predecessors=True
     )

@@ -74,11 +74,13 @@ from dataclasses import dataclass
 
 import networkx as nx
 import numpy as np
+import trimesh
 from pydantic import Field
 from scipy.spatial import cKDTree
 
+from g2s_core.config import AgentConfig
 from g2s_core.errors import PluginError
-from g2s_core.model import Opening, RunContext, Terminals, vec3
+from g2s_core.model import NavMesh, Opening, RunContext, Terminals, vec3
 from g2s_core.plugin import PluginParams, hookimpl
 from g2s_plugins.terminals._boundary import (
     UP,
@@ -533,7 +535,9 @@ class Detection:
     normals: tuple[tuple[float, float, float], ...]
 
 
-def detect_openings(mesh, navmesh, agent, params: Params | None = None) -> Detection:
+def detect_openings(
+    mesh: trimesh.Trimesh, navmesh: NavMesh, agent: AgentConfig, params: Params | None = None
+) -> Detection:
     """Steps 1-5 of the method: the openings of ``mesh`` for ``agent`` on ``navmesh``.
 
     Args:
@@ -582,7 +586,7 @@ def _on_navmesh(navmesh, point: np.ndarray, tolerance: float, climb: float) -> b
     return bool(math.hypot(*(nearest[[0, 2]] - point[[0, 2]])) <= tolerance and abs(nearest[1] - point[1]) <= climb)
 
 
-def add_terminals(graph: nx.Graph, detection: Detection, navmesh, agent) -> Terminals:
+def add_terminals(graph: nx.Graph, detection: Detection, navmesh: NavMesh, agent: AgentConfig) -> Terminals:
     """Add one node per opening to ``graph`` (see the module doc) and return the terminals."""
     if not detection.openings:
         return Terminals(nodes=(), openings=())
@@ -597,7 +601,7 @@ def add_terminals(graph: nx.Graph, detection: Detection, navmesh, agent) -> Term
             positions.append(data["pos"])
     tree = cKDTree(np.asarray(positions, dtype=np.float64)) if positions else None
     next_id = max((int(n) for n in graph.nodes), default=-1) + 1
-    tolerance = float(getattr(navmesh, "settings", {}).get("cell_size", float(agent.radius) / 2.0))
+    tolerance = float(navmesh.settings["cell_size"])
     climb = max(float(agent.max_climb), 0.01)
     nodes = []
     for opening, polys, normal in zip(detection.openings, detection.polygons, detection.normals):

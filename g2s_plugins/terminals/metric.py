@@ -34,6 +34,7 @@ from pydantic_core import PydanticCustomError
 
 from g2s_core.model import RunContext, Terminals
 from g2s_core.plugin import PluginParams, hookimpl
+from g2s_core.ties import rank_key
 from g2s_plugins import centrality
 
 NAME = "metric"
@@ -100,7 +101,7 @@ def g2s_select_terminals(graph: nx.Graph, params: Params, context: RunContext) -
         if params.threshold is not None:
             chosen.extend(node for node in candidates if values[node] >= params.threshold)
             continue
-        ranked = sorted(candidates, key=lambda node: centrality.rank_key(node, values[node]))
+        ranked = sorted(candidates, key=lambda node: rank_key(node, values[node]))
         if params.top_k is not None:
             count = params.top_k
         else:

@@ -34,7 +34,8 @@ from pydantic_core import PydanticCustomError
 from scipy.spatial import cKDTree
 
 from g2s_core.errors import G2SError
-from g2s_core.model import RunContext, Terminals, vec3
+from g2s_core.config import AgentConfig
+from g2s_core.model import NavMesh, RunContext, Terminals, vec3
 from g2s_core.plugin import PluginParams, hookimpl
 
 NAME = "points"
@@ -127,7 +128,7 @@ def read_points(file: str | Path) -> np.ndarray:
     return np.asarray(points, dtype=np.float64)
 
 
-def on_navmesh(navmesh: Any, point: np.ndarray, agent: Any) -> bool:
+def on_navmesh(navmesh: NavMesh | None, point: np.ndarray, agent: AgentConfig) -> bool:
     """Whether a navmesh polygon lies within the agent radius (horizontally) and max climb (vertically) of ``point``.
 
     ``navmesh.nearest_poly(p, extents)`` returns (polygon index or -1, nearest
@@ -136,8 +137,8 @@ def on_navmesh(navmesh: Any, point: np.ndarray, agent: Any) -> bool:
     """
     if navmesh is None:
         return False
-    radius = float(getattr(agent, "radius", 0.5))
-    climb = max(float(getattr(agent, "max_climb", 0.4)), 1e-3)
+    radius = float(agent.radius)
+    climb = max(float(agent.max_climb), 1e-3)
     index, nearest = navmesh.nearest_poly(np.asarray(point, dtype=np.float64), extents=(radius, climb, radius))
     if int(index) < 0:
         return False

@@ -1,0 +1,131 @@
+"""One-line messages for values that fail validation, shared by configs and plugin parameters.
+
+A pydantic ``ValidationError`` becomes ``key.path: expected <what the field
+accepts>, got <the value as written in YAML>``; the words for a field come
+from its type and bounds (:func:`describe_field`), so a parameter declared
+once reads the same in errors and in ``g2s plugins``.
+"""
+
+from __future__ import annotations
+
+from typing import Any, Literal, get_args, get_origin
+
+import annotated_types
+from pydantic import BaseModel, ValidationError
+from pydantic.fields import FieldInfo
+
+_TYPE_NAMES = {int: "an integer", float: "a number", bool: "true or false", str: "a string", dict: "a mapping"}
+
+
+def show(value: Any) -> str:
+    """A value as the user wrote it in YAML."""
+    if value is None:
+        return "null"
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, str):
+        return repr(value)
+    if isinstance(value, dict):
+        return "a mapping"
+    if isinstance(value, list):
+        return "a list"
+    return str(value)
+
+
+def _plural(phrase: str) -> str:
+    """``an integer`` -> ``integers``, ``a list of 3 numbers`` -> ``lists of 3 numbers``."""
+    noun = phrase.split(" ", 1)[1] if phrase.startswith(("a ", "an ")) else phrase
+    head, _, rest = noun.partition(" ")
+    return f"{head}s {rest}".strip()
+
+
+def _describe_type(annotation: Any) -> str:
+    origin = get_origin(annotation)
+    args = get_args(annotation)
+    if annotation in _TYPE_NAMES:
+        return _TYPE_NAMES[annotation]
+    if origin is Literal:
+        return "one of " + ", ".join(show(a) for a in args)
+    if origin in (list, tuple, set, frozenset):
+        if origin is tuple and args and args[-1] is not Ellipsis:
+            return f"a list of {len(args)} {_plural(_describe_type(args[0]))}"
+        return f"a list of {_plural(_describe_type(args[0]))}" if args else "a list"
+    if origin is dict:
+        return "a mapping"
+    if args and type(None) in args:
+        rest = [a for a in args if a is not type(None)]
+        return " or ".join(_describe_type(a) for a in rest) + " or null"
+    if args:
+        return " or ".join(_describe_type(a) for a in args)
+    if isinstance(annotation, type) and issubclass(annotation, BaseModel):
+        return "a mapping"
+    return getattr(annotation, "__name__", str(annotation))
+
+
+_BOUNDS = (
+    (annotated_types.Ge, "ge", ">="),
+    (annotated_types.Gt, "gt", ">"),
+    (annotated_types.Le, "le", "<="),
+    (annotated_types.Lt, "lt", "<"),
+)
+
+
+def describe_field(info: FieldInfo) -> str:
+    """What a field accepts, in words: ``an integer >= 1``."""
+    limits = []
+    for bound in info.metadata:
+        for cls, attribute, op in _BOUNDS:
+            if isinstance(bound, cls):
+                limits.append(f"{op} {getattr(bound, attribute)}")
+        if isinstance(bound, annotated_types.MinLen):
+            limits.append(f"with at least {bound.min_length} items")
+    return " ".join([_describe_type(info.annotation), " and ".join(limits)]).strip()
+
+
+def _field_at(model: type[BaseModel], loc: tuple[Any, ...]) -> FieldInfo | None:
+    """The FieldInfo that ``loc`` points at inside ``model``, if it is a field."""
+    current: Any = model
+    info = None
+    for part in loc:
+        if isinstance(part, int):
+            args = [a for a in get_args(info.annotation) if a is not type(None)] if info else []
+            current = args[0] if args else None
+            continue
+        if not (isinstance(current, type) and issubclass(current, BaseModel)) or part not in current.model_fields:
+            return None
+        info = current.model_fields[part]
+        annotation = info.annotation
+        nested = [a for a in (annotation, *get_args(annotation)) if isinstance(a, type) and issubclass(a, BaseModel)]
+        current = nested[0] if nested else annotation
+    return info
+
+
+def describe_validation_error(exc: ValidationError, model: type[BaseModel], prefix: str = "") -> str:
+    """The first error of ``exc`` as ``key.path: expected ..., got ...``."""
+    error = exc.errors()[0]
+    loc = tuple(p for p in error["loc"] if not (isinstance(p, str) and ("[" in p or p in {"function-after"})))
+    path = ".".join(str(p) for p in ((prefix,) if prefix else ()) + loc) or "(top level)"
+    kind = error["type"]
+    if kind == "extra_forbidden":
+        owner = model if len(loc) == 1 else _nested_model(_field_at(model, loc[:-1]))
+        known = ", ".join(owner.model_fields) if owner else ""
+        hint = f"expected one of: {known}" if known else "no keys are accepted here"
+        return f"{path}: unknown key ({hint})"
+    if kind == "missing":
+        return f"{path}: required key is missing"
+    if kind in {"model_type", "dict_type", "model_attributes_type"}:
+        return f"{path}: expected a mapping, got {show(error.get('input'))}"
+    info = _field_at(model, loc)
+    if info is not None:
+        return f"{path}: expected {describe_field(info)}, got {show(error.get('input'))}"
+    return f"{path}: {error['msg'][0].lower()}{error['msg'][1:]}, got {show(error.get('input'))}"
+
+
+def _nested_model(info: FieldInfo | None) -> type[BaseModel] | None:
+    if info is None:
+        return None
+    for candidate in (info.annotation, *get_args(info.annotation)):
+        for inner in (candidate, *get_args(candidate)):
+            if isinstance(inner, type) and issubclass(inner, BaseModel):
+                return inner
+    return None

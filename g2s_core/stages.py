@@ -1,0 +1,176 @@
+"""The one table of plugin kinds: the six pipeline stages, output writers and level generators.
+
+Everything that lists stages reads it: the config's sections
+(:mod:`g2s_core.config`), the registry's look-ups and ``g2s plugins``
+(:mod:`g2s_core.registry`), the pipeline loop (:mod:`g2s_core.pipeline`) and
+the per-stage table of the outputs. Each kind's hook is specified in
+:mod:`g2s_core.hookspecs`; every plugin's result is checked here, the same way
+for all: a wrong result is that plugin's failure, not g2s's.
+
+===========  =================  ==========================  ==========================================
+key          title              hook                        the plugin returns
+===========  =================  ==========================  ==========================================
+graph        GraphBuilder       ``g2s_build_graph``         an undirected networkx.Graph
+terminals    TerminalSelector   ``g2s_select_terminals``    Terminals whose nodes are in the graph
+steiner      SteinerSolver      ``g2s_steiner_tree``        a tree of graph edges joining the terminals
+roots        RootSelector       ``g2s_root_scores``         a finite score for every node of the tree
+simplify     SimplifyPredicate  ``g2s_simplify_predicate``  a callable P(tree, a, b, c) -> bool
+analyzers    Analyzer           ``g2s_analyze``             a number for every node of the structure
+outputs      OutputWriter       ``g2s_write_output``        the paths written, among its FILES
+levels       LevelGenerator     ``g2s_generate_level``      a trimesh.Trimesh with triangles
+===========  =================  ==========================  ==========================================
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import networkx as nx
+import numpy as np
+import trimesh
+
+from g2s_core import hookspecs
+from g2s_core.model import Terminals
+
+Check = Callable[[Any, Mapping[str, Any], Any], "str | None"]
+"""``check(result, hook arguments, plugin object)``: what is wrong with a result, or ``None``."""
+
+
+@dataclass(frozen=True)
+class Stage:
+    """One kind of plugin.
+
+    Attributes:
+        key: config section, registry kind, entry-point name prefix and ``--stage`` value.
+        title: the kind's name in messages and ``g2s plugins``.
+        hook: the hook its plugins implement (see :mod:`g2s_core.hookspecs`).
+        returns: what the hook must return, in words.
+        check: the test of a result (see :data:`Check`).
+        check_each_call: for a hook that returns a function, the test of each
+            of that function's results (``None``: the result is not a function).
+        step, label: its row in the per-stage table (pipeline stages only).
+        result: the :class:`~g2s_core.model.RunResult` attribute holding its output.
+        timing: the :class:`~g2s_core.model.StageStats` name of its step.
+        declares: module attributes its plugins must declare besides ``NAME``.
+    """
+
+    key: str
+    title: str
+    hook: str
+    returns: str
+    check: Check
+    check_each_call: Callable[[Any], str | None] | None = None
+    step: str = ""
+    label: str = ""
+    result: str = ""
+    timing: str = ""
+    declares: tuple[str, ...] = ()
+
+    @property
+    def in_pipeline(self) -> bool:
+        return bool(self.step)
+
+
+def _graph(value: Any, kwargs: Mapping[str, Any], plugin: Any) -> str | None:
+    if not isinstance(value, nx.Graph) or isinstance(value, nx.DiGraph):
+        return f"{type(value).__name__}, not an undirected networkx.Graph"
+    return None
+
+
+def _terminals(value: Any, kwargs: Mapping[str, Any], plugin: Any) -> str | None:
+    if not isinstance(value, Terminals):
+        return f"{type(value).__name__}, not Terminals"
+    unknown = [t for t in value.nodes if t not in kwargs["graph"]]
+    return f"nodes not in the graph: {unknown[:5]}" if unknown else None
+
+
+def _tree(value: Any, kwargs: Mapping[str, Any], plugin: Any) -> str | None:
+    graph, terminals = kwargs["graph"], kwargs["terminals"]
+    if not isinstance(value, nx.Graph):
+        return f"{type(value).__name__}, not a networkx.Graph"
+    missing = [t for t in terminals if t not in value]
+    if missing:
+        return f"a tree that misses terminals {missing[:5]}"
+    foreign = [e for e in value.edges if not graph.has_edge(*e)]
+    if foreign:
+        return f"a tree with edges not in the graph: {foreign[:3]}"
+    return None if nx.is_tree(value) else "a graph that is not a tree"
+
+
+def _node_numbers(values: Any, nodes: Any, finite: bool) -> str | None:
+    if not isinstance(values, Mapping):
+        return f"{type(values).__name__}, not a mapping of node -> number"
+    missing = [n for n in nodes if n not in values]
+    if missing:
+        return f"no value for nodes {missing[:5]}"
+    for node in nodes:
+        try:
+            number = float(values[node])
+        except (TypeError, ValueError):
+            return f"{values[node]!r} for node {node}, not a number"
+        if finite and not math.isfinite(number):
+            return f"{number} for node {node}, not a finite number"
+    return None
+
+
+def _root_scores(value: Any, kwargs: Mapping[str, Any], plugin: Any) -> str | None:
+    return _node_numbers(value, sorted(kwargs["tree"]), finite=True)
+
+
+def _analysis(value: Any, kwargs: Mapping[str, Any], plugin: Any) -> str | None:
+    return _node_numbers(value, sorted(kwargs["structure"]), finite=False)
+
+
+def _predicate(value: Any, kwargs: Mapping[str, Any], plugin: Any) -> str | None:
+    return None if callable(value) else f"{type(value).__name__}, not a callable P(tree, a, b, c)"
+
+
+def _bool(value: Any) -> str | None:
+    return None if isinstance(value, (bool, np.bool_)) else f"{type(value).__name__}, not a bool"
+
+
+def _written(value: Any, kwargs: Mapping[str, Any], plugin: Any) -> str | None:
+    if not isinstance(value, list) or not all(isinstance(p, Path) for p in value):
+        return f"{type(value).__name__}, not a list of paths"
+    folder, files = Path(kwargs["folder"]), tuple(plugin.FILES)
+    stray = [str(p) for p in value if p.parent != folder or p.name not in files]
+    return f"paths it does not declare in FILES {files}: {stray[:3]}" if stray else None
+
+
+def _level(value: Any, kwargs: Mapping[str, Any], plugin: Any) -> str | None:
+    if not isinstance(value, trimesh.Trimesh) or len(value.faces) == 0:
+        return f"{type(value).__name__}, not a trimesh.Trimesh with triangles"
+    return None
+
+
+STAGES: tuple[Stage, ...] = (
+    Stage("graph", "GraphBuilder", hookspecs.g2s_build_graph.__name__, "an undirected networkx.Graph",
+          _graph, step="Step 1", label="initial graph", result="graph", timing="graph"),
+    Stage("terminals", "TerminalSelector", hookspecs.g2s_select_terminals.__name__,
+          "Terminals whose nodes are in the graph",
+          _terminals, step="Step 2", label="terminals", result="terminals", timing="terminals"),
+    Stage("steiner", "SteinerSolver", hookspecs.g2s_steiner_tree.__name__,
+          "a tree of graph edges joining the terminals",
+          _tree, step="Step 3", label="Steiner tree", result="steiner", timing="steiner"),
+    Stage("roots", "RootSelector", hookspecs.g2s_root_scores.__name__, "a finite score for every node of the tree",
+          _root_scores, step="Step 4", label="rooted trees", result="forest", timing="roots"),
+    Stage("simplify", "SimplifyPredicate", hookspecs.g2s_simplify_predicate.__name__,
+          "a callable P(tree, a, b, c) -> bool", _predicate, check_each_call=_bool,
+          step="Step 5", label="simplification", result="structure", timing="simplify"),
+    Stage("analyzers", "Analyzer", hookspecs.g2s_analyze.__name__, "a number for every node of the structure",
+          _analysis, step="Post-process", label="analysis", result="analysis", timing="analysis"),
+    Stage("outputs", "OutputWriter", hookspecs.g2s_write_output.__name__, "the paths written, among its FILES",
+          _written, declares=("FILES",)),
+    Stage("levels", "LevelGenerator", hookspecs.g2s_generate_level.__name__, "a trimesh.Trimesh with triangles",
+          _level),
+)
+
+BY_KEY: dict[str, Stage] = {stage.key: stage for stage in STAGES}
+BY_HOOK: dict[str, Stage] = {stage.hook: stage for stage in STAGES}
+PIPELINE: tuple[Stage, ...] = tuple(stage for stage in STAGES if stage.in_pipeline)
+"""The pipeline's stages, in order."""
+PIPELINE_KEYS: tuple[str, ...] = tuple(stage.key for stage in PIPELINE)

@@ -1,0 +1,68 @@
+"""Views of a run's result shared by the CLI and the output writers: its final graph and its stage table."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+
+import networkx as nx
+
+from g2s_core.model import RunResult, StageStats
+from g2s_core.stages import PIPELINE
+
+def _step_rows() -> tuple[tuple[str, str, str], ...]:
+    rows = []
+    for stage in PIPELINE:
+        rows.append((stage.timing, stage.step, stage.label))
+        if stage.key == "steiner":  # the config's ``loops:`` step runs right after it (g2s_core.loops)
+            rows.append(("loops", stage.step, "loops kept"))
+    return tuple(rows)
+
+
+STEP_ROWS: tuple[tuple[str, str, str], ...] = _step_rows()
+"""The paper's per-stage table rows: (timing name, step, label)."""
+
+
+def final_graph(result: RunResult) -> tuple[str | None, nx.Graph | None]:
+    """``(stage, graph)`` of the most processed graph the run produced (the last pipeline stage whose result is a graph)."""
+    for stage in reversed(PIPELINE):
+        graph = getattr(result, stage.result)
+        if isinstance(graph, nx.Graph):
+            return stage.key, graph
+    return None, None
+
+
+def roots_of(graph: nx.Graph | None) -> list[int]:
+    """The roots of a rooted forest (``graph.graph["roots"]``), else ``[]``."""
+    if graph is None or not graph.is_directed():
+        return []
+    roots = graph.graph.get("roots")
+    if roots is None:
+        roots = [n for n in graph.nodes if graph.in_degree(n) == 0]
+    return [int(r) for r in roots]
+
+
+def stage_rows(stages: Sequence[StageStats]) -> list[tuple[str, str, str, str, str]]:
+    """The per-stage table as strings: (step, label, t (ms), #N, #E), then the total row.
+
+    #N is the terminal count for step 2, the node count otherwise, as in the paper.
+    """
+    by_name = {s.stage: s for s in stages}
+    rows = []
+    for stage, step, label in STEP_ROWS:
+        stats = by_name.get(stage)
+        if stats is None:
+            continue
+        nodes = stats.terminals if stage == "terminals" else stats.nodes
+        rows.append((step, label, milliseconds(stats.seconds), _count(nodes), _count(stats.edges)))
+    total = sum(s.seconds for s in stages)
+    rows.append(("total", "", milliseconds(total), "", ""))
+    return rows
+
+
+def milliseconds(seconds: float) -> str:
+    return "" if seconds is None or not math.isfinite(seconds) else f"{seconds * 1000:.1f}"
+
+
+def _count(value: int | None) -> str:
+    return "" if value is None else str(value)

@@ -1,0 +1,42 @@
+"""The built-in output writers, as plugins (entry points ``outputs.<format>`` in pyproject.toml).
+
+Each writer is a small object with the plugin's ``NAME`` (the format),
+``FILES`` and summary; its module is imported when it first writes, because
+plotly and matplotlib take a while to import and most commands never write
+those formats.
+"""
+
+from __future__ import annotations
+
+import importlib
+from pathlib import Path
+
+from g2s_core.model import RunResult
+from g2s_core.plugin import hookimpl
+
+
+class LazyWriter:
+    """An output-writer plugin whose ``write(result, folder)`` lives in ``g2s_plugins.outputs.<module>``."""
+
+    def __init__(self, name: str, module: str, files: tuple[str, ...], summary: str) -> None:
+        self.NAME = name
+        self.FILES = files
+        self.__doc__ = summary
+        self.module = f"g2s_plugins.outputs.{module}"
+
+    @hookimpl
+    def g2s_write_output(self, result: RunResult, folder: Path) -> list[Path]:
+        return importlib.import_module(self.module).write(result, folder)
+
+    def __repr__(self) -> str:
+        return f"LazyWriter({self.NAME!r}, {self.module})"
+
+
+json = LazyWriter("json", "structure_json", ("structure.json", "run.json"),
+                  "The structure (deterministic) and the run's record: structure.json, run.json.")
+html = LazyWriter("html", "html_report", ("report.html",), "A self-contained interactive report: report.html.")
+glb = LazyWriter("glb", "gltf", ("structure.glb",), "Mesh, navmesh and structure as binary glTF: structure.glb.")
+graphml = LazyWriter("graphml", "graphml", ("structure.graphml", "graph.graphml"),
+                     "Final structure and initial graph for networkx, Gephi, yEd: structure.graphml, graph.graphml.")
+png = LazyWriter("png", "heatmap", ("heatmap.png",), "A top-down heat map, one panel per floor: heatmap.png.")
+graph = LazyWriter("graph", "graph_json", ("graph.json",), "The initial graph as networkx node-link JSON: graph.json.")

@@ -1,0 +1,103 @@
+"""The layering and the stage table, as docs/architecture.md states them."""
+
+from __future__ import annotations
+
+import ast
+import re
+
+from g2s_core import hookspecs
+from g2s_core.config import RunConfig
+from g2s_core.stages import PIPELINE, STAGES
+from tests.conftest import PROJECT
+
+
+def test_core_never_imports_a_plugin():
+    for path in sorted((PROJECT / "g2s_core").glob("*.py")):
+        for node in ast.walk(ast.parse(path.read_text())):
+            names = [a.name for a in node.names] if isinstance(node, ast.Import) else \
+                [node.module or ""] if isinstance(node, ast.ImportFrom) else []
+            assert not any(n.startswith("g2s_plugins") for n in names), f"{path.name} imports {names}"
+
+
+def test_every_kind_has_its_hook_and_every_stage_its_config_section():
+    specs = {name for name in dir(hookspecs) if name.startswith("g2s_")}
+    assert specs == {stage.hook for stage in STAGES}
+    sections = [name for name in RunConfig.model_fields if name in {s.key for s in PIPELINE}]
+    assert sections == [stage.key for stage in PIPELINE]
+    assert RunConfig.model_fields["stop_after"].default == PIPELINE[-1].key
+
+
+def test_the_documented_stage_table_is_the_code_table():
+    text = (PROJECT / "docs" / "architecture.md").read_text()
+    rows = re.findall(r"^\| `(\w+)` \| (\w+) \| `(\w+)\(", text, flags=re.MULTILINE)
+    assert rows == [(stage.key, stage.title, stage.hook) for stage in STAGES]
+
+
+def test_the_documented_example_plugins_register_and_work(tmp_path):
+    import types
+
+    from g2s_core.model import RunResult
+    from g2s_core.registry import Registry
+
+    text = (PROJECT / "docs" / "architecture.md").read_text().split("## Adding a plugin", 1)[1]
+    registry = Registry()
+    for index, code in enumerate(re.findall(r"```python\n(.*?)```", text, flags=re.DOTALL)):
+        module = types.ModuleType(f"doc_example_{index}")
+        exec(compile(code, module.__name__, "exec"), module.__dict__)
+        registry.register(module, package="docs", entry_point=f"example.{index}")
+    kinds = [(p.stage, p.name) for p in registry.plugins()]
+    assert kinds == [("graph", "triangles"), ("terminals", "above"), ("steiner", "star"), ("roots", "lowest"),
+                     ("simplify", "straight"), ("analyzers", "height"), ("outputs", "csv"), ("levels", "plaza")]
+
+    def call(stage, name, **kwargs):
+        info = registry.get(stage, name)
+        return registry.call(info, params=info.params_model(), **kwargs)
+
+    mesh = call("levels", "plaza")
+    graph = call("graph", "triangles", mesh=mesh, context=None)
+    tops = sorted(n for n, p in graph.nodes(data="pos") if p[1] > 0)
+    terminals = [tops[0], tops[-1]]
+    tree = call("steiner", "star", graph=graph, terminals=terminals, context=None)
+    for node in tree:  # as the pipeline does: the tree gets the graph's attributes
+        tree.nodes[node].update(graph.nodes[node])
+    scores = call("roots", "lowest", tree=tree, context=None)
+    assert set(scores) == set(tree)
+    assert call("terminals", "above", graph=graph, context=None).nodes == ()
+    predicate = call("simplify", "straight", context=None)
+    assert isinstance(predicate(nx_path_with_positions(), 0, 1, 2), bool)
+    values = call("analyzers", "height", structure=tree, context=None)
+    assert min(values.values()) == 0
+    result = RunResult(config={}, mesh_name="plaza", mesh_sha256="", context=None, graph=graph, steiner=tree)
+    written = call("outputs", "csv", result=result, folder=tmp_path)
+    assert [p.name for p in written] == ["nodes.csv"] and len(written[0].read_text().splitlines()) == len(tree) + 1
+
+
+def nx_path_with_positions():
+    import networkx as nx
+
+    tree = nx.DiGraph([(0, 1), (1, 2)])
+    for node in tree:
+        tree.nodes[node]["pos"] = (float(node), 0.0, 0.0)
+    return tree
+
+
+def test_the_recast_navmesh_provides_the_navmesh_protocol():
+    import numpy as np
+
+    from g2s_core.config import AgentConfig
+    from g2s_core.model import NavMesh
+    from g2s_plugins.recast import build_navmesh
+    from g2s_plugins.samples.levels import straight_corridor
+
+    level = straight_corridor()
+    navmesh = build_navmesh(level.mesh.vertices, level.mesh.faces, AgentConfig())
+    assert isinstance(navmesh, NavMesh)
+    members = [name for name in NavMesh.__annotations__] + ["polygon_count"]
+    assert all(hasattr(navmesh, name) for name in members)
+    assert {"cell_size", "cell_height"} <= set(navmesh.settings)
+    portals = navmesh.portals()
+    assert portals.pairs.shape[1:] == (2,) and portals.endpoints.shape[1:] == (2, 3) and len(portals.widths) == len(portals.pairs)
+    index, point = navmesh.nearest_poly(navmesh.centres[0])
+    assert index == 0 and np.allclose(point, navmesh.centres[0], atol=0.5)
+    clear, _ = navmesh.raycast(navmesh.centres[0], navmesh.centres[0])
+    assert isinstance(clear, bool) and isinstance(navmesh.stats(), dict)
