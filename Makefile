@@ -10,21 +10,46 @@ DEB_PACKAGES := librecast-dev cmake g++ make
 # chromium: the headless browser tests/test_html_report.py drives (make test only)
 TEST_DEB_PACKAGES := chromium
 README_IMAGE := docs/images/demo-heatmap.png
+# the Khronos glTF validator tests/test_gltf.py runs (make test only), from npm into the venv
+GLTF_VALIDATOR := $(VENV)/node/node_modules/gltf-validator
+GLTF_VALIDATOR_VERSION := 2.0.0-dev.3.10
+# three.js, which draws the GLB for docs/images/glb-threejs.png (make docs-images only)
+THREE_VERSION := 0.187.0
 
-.PHONY: demo test setup system-deps benchmark clean readme-image
+.PHONY: demo test setup system-deps benchmark clean readme-image docs-images
 
 demo: setup
 	$(VENV)/bin/g2s demo -o $(DEMO_OUT) --force
 
 test: DEB_PACKAGES += $(TEST_DEB_PACKAGES)
-test: setup
+test: setup $(GLTF_VALIDATOR)
 	$(PY) -m pytest -q -n 2
+
+$(GLTF_VALIDATOR): | setup
+	@if command -v npm >/dev/null 2>&1; then \
+	  npm install --no-save --no-package-lock --no-audit --no-fund --prefix $(VENV)/node \
+	    gltf-validator@$(GLTF_VALIDATOR_VERSION); \
+	elif [ "$$(id -u)" = 0 ]; then \
+	  echo "installing Debian packages: nodejs npm"; \
+	  apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq nodejs npm >/dev/null && \
+	  npm install --no-save --no-package-lock --no-audit --no-fund --prefix $(VENV)/node \
+	    gltf-validator@$(GLTF_VALIDATOR_VERSION); \
+	else \
+	  echo "npm is missing, so the glTF validator test will be skipped; install it with: sudo apt-get install nodejs npm"; \
+	fi
 
 # The README's picture: the demo's top-down heat map.
 readme-image: setup
 	$(VENV)/bin/g2s demo -o $(DEMO_OUT) --force --format png --quiet
 	mkdir -p $(dir $(README_IMAGE))
 	cp $(DEMO_OUT)/heatmap.png $(README_IMAGE)
+
+# docs/outputs.md's pictures: the demo's report and GLB (three.js) in headless chromium.
+docs-images: setup
+	$(VENV)/bin/g2s demo -o $(DEMO_OUT) --force --quiet
+	npm install --no-save --no-package-lock --no-audit --no-fund --prefix $(VENV)/node \
+	  gltf-validator@$(GLTF_VALIDATOR_VERSION) three@$(THREE_VERSION)
+	$(PY) tools/screenshots.py $(DEMO_OUT) $(VENV)/node/node_modules docs/images
 
 benchmark: setup
 	$(PY) benchmarks/pipeline.py

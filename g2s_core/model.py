@@ -194,6 +194,8 @@ class RunResult:
     structure: nx.DiGraph | None = None
     analysis: dict[str, dict[int, float]] = field(default_factory=dict)
     stages: list[StageStats] = field(default_factory=list)
+    formats: tuple[str, ...] = ()
+    """The output formats this run's results are written in (set by the writer before writing)."""
 
     @property
     def warnings(self) -> list[str]:

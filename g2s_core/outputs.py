@@ -112,7 +112,8 @@ def write_outputs(
     registry = registry or installed()
     known = writers(registry)
     written: list[Path] = []
-    for fmt in parse_formats(formats, registry=registry):
+    result.formats = tuple(parse_formats(formats, registry=registry))
+    for fmt in result.formats:
         if progress is not None:
             progress(f"writing {fmt}")
         written.extend(registry.call(known[fmt], result=result, folder=outdir))

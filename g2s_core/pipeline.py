@@ -13,6 +13,7 @@ import numpy as np
 import trimesh
 
 from g2s_core.config import RunConfig
+from g2s_core.disconnected import disconnected_warning
 from g2s_core.errors import ConfigError, G2SError
 from g2s_core.model import RunContext, RunResult, StageStats
 from g2s_core.plugin import PluginParams
@@ -227,8 +228,8 @@ def steiner_forest(
 
     ``solve(subgraph, terminals)`` is called for components with two or more
     terminals (with the whole graph when all terminals share one component); a component with one terminal gives a single-node tree. When
-    terminals lie in several components a warning lists the groups that could
-    not be joined. The forest's nodes and edges carry the graph's attributes.
+    terminals lie in several components a warning places the largest and names
+    the likely cause (:mod:`g2s_core.disconnected`). The forest's nodes and edges carry the graph's attributes.
     """
     component_of: dict[int, int] = {}
     components = sorted((sorted(c) for c in nx.connected_components(graph)), key=lambda c: c[0])
@@ -239,8 +240,8 @@ def steiner_forest(
     for terminal in sorted(set(terminals)):
         groups.setdefault(component_of[terminal], []).append(terminal)
     if len(groups) > 1:
-        listing = "; ".join(f"{{{', '.join(map(str, g[:8]))}{', ...' if len(g) > 8 else ''}}}" for g in groups.values())
-        context.warn(f"terminals lie in {len(groups)} disconnected areas and cannot all be joined; one tree per area: {listing}")
+        areas = {index: components[index] for index in groups}
+        context.warn(disconnected_warning(graph, areas, sum(map(len, groups.values())), context.agent))
     forest = nx.Graph()
     for index, group in sorted(groups.items()):
         if len(group) == 1:

@@ -3,7 +3,11 @@
 from __future__ import annotations
 
 import json
+import os
+import shutil
 import struct
+import subprocess
+import sys
 from pathlib import Path
 
 import numpy as np
@@ -11,6 +15,7 @@ import pytest
 import trimesh
 
 from g2s_plugins.outputs import colours, gltf
+from tests.conftest import PROJECT
 from tests.test_outputs import make_result, real_navmesh, two_floor_mesh
 
 _COMPONENTS = {5121: np.uint8, 5123: np.uint16, 5125: np.uint32, 5126: np.float32}
@@ -42,7 +47,7 @@ def accessor(header: dict, blob: bytes, index: int) -> np.ndarray:
 
 
 def _node_extras(scene: trimesh.Scene, name: str) -> dict:
-    return scene.graph.transforms.edge_data[(scene.graph.base_frame, name)]["metadata"]
+    return scene.graph.transforms.edge_data[(scene.graph.transforms.parents[name], name)]["metadata"]
 
 
 def _colour(scene: trimesh.Scene, name: str) -> tuple[int, ...]:
@@ -50,76 +55,94 @@ def _colour(scene: trimesh.Scene, name: str) -> tuple[int, ...]:
     return tuple(int(c) for c in scene.geometry[geometry].visual.material.baseColorFactor)
 
 
-def _line_colours(path: Path) -> tuple[np.ndarray, np.ndarray, list]:
-    """(segment end points (E, 2, 3), segment colours (E, 4), the structure node's edges) of the LINES primitive."""
-    header, blob = read_glb(path)
-    mesh = next(m for m in header["meshes"] if m["name"] == "structure")
-    primitive = mesh["primitives"][0]
-    assert primitive["mode"] == 1  # GL_LINES
-    points = accessor(header, blob, primitive["attributes"]["POSITION"]).reshape(-1, 2, 3)
-    rgba = accessor(header, blob, primitive["attributes"]["COLOR_0"]).reshape(-1, 2, 4)
-    assert (rgba[:, 0] == rgba[:, 1]).all()  # one colour per segment
-    node = next(n for n in header["nodes"] if n.get("name") == "structure")
-    return points, rgba[:, 0], node["extras"]["edges"]
+def _tube_edges(scene: trimesh.Scene) -> dict[str, list[tuple[int, int]]]:
+    """Edge mesh name -> the edges its tubes draw, in order."""
+    return {name: [tuple(e) for e in _node_extras(scene, name)["edges"]]
+            for name in scene.graph.nodes_geometry if name.startswith("edges")}
 
 
-def test_scene_nodes_colours_and_extras(tmp_path):
+def _children(header: dict, name: str) -> list[str]:
+    node = next(n for n in header["nodes"] if n.get("name") == name)
+    return [header["nodes"][i]["name"] for i in node.get("children", [])]
+
+
+def test_scene_groups_colours_and_extras(tmp_path):
     result = make_result()
     path, = gltf.write(result, tmp_path)
     assert path.name == "structure.glb"
-    scene = trimesh.load(path)
+    header, _ = read_glb(path)
+    assert [header["nodes"][i]["name"] for i in header["scenes"][0]["nodes"]] == list(gltf.GROUPS)
     structure = result.structure
     roots = structure.graph["roots"]
-    names = set(scene.graph.nodes_geometry)
-    expected = ({"mesh", "structure"} | {f"root_{r}" for r in roots} |
-                {f"terminal_{t}" for t in result.terminals.nodes} | {f"node_{n}" for n in structure.nodes})
-    assert names == expected
-    assert "navmesh" not in names  # no navmesh in this run
+    assert _children(header, "level") == ["level_mesh"]
+    assert _children(header, "navmesh") == [] and _children(header, "loops") == []  # no navmesh; a tree has no loops
+    assert sorted(_children(header, "roots")) == sorted(f"root_{r}" for r in roots)
+    assert sorted(_children(header, "terminals")) == sorted(f"terminal_{t}" for t in result.terminals.nodes)
+    assert {n for n in _children(header, "structure") if n.startswith("node_")} == {f"node_{n}" for n in structure}
 
-    level = scene.geometry[scene.graph["mesh"][1]]
+    scene = trimesh.load(path)
+    level = scene.geometry[scene.graph["level_mesh"][1]]
     assert len(level.faces) == len(result.context.mesh.faces)
-    assert _colour(scene, "mesh") == (*colours.MESH_COLOUR, 255)
+    assert _colour(scene, "level_mesh") == (*colours.MESH_COLOUR, 255)
+    lift = np.asarray([0.0, gltf.NODE_RADIUS * 0.5, 0.0])  # default agent radius 0.5 m
     for root in roots:
         transform, _ = scene.graph[f"root_{root}"]
-        assert np.allclose(transform[:3, 3], structure.nodes[root]["pos"])
+        assert np.allclose(transform[:3, 3], np.add(structure.nodes[root]["pos"], lift))
         assert _colour(scene, f"root_{root}") == (*colours.ROOT_COLOUR, 255)
         assert _node_extras(scene, f"root_{root}")["depth"] == 0
     for terminal in result.terminals.nodes:
         transform, _ = scene.graph[f"terminal_{terminal}"]
-        assert np.allclose(transform[:3, 3], result.graph.nodes[terminal]["pos"])
+        assert np.allclose(transform[:3, 3], np.add(result.graph.nodes[terminal]["pos"], lift))
         assert _colour(scene, f"terminal_{terminal}") == (*colours.TERMINAL_COLOUR, 255)
         assert _node_extras(scene, f"terminal_{terminal}")["terminal"] is True
 
     values = result.analysis["betweenness"]
     coldest, hottest = min(values, key=values.get), max(values, key=values.get)
-    assert _colour(scene, f"node_{coldest}") == (*colours.heat_colour(0.0), 255)  # green
-    assert _colour(scene, f"node_{hottest}") == (*colours.heat_colour(1.0), 255)  # red
+    assert _colour(scene, f"node_{coldest}") == (*colours.heat_colour(0.0), 255)  # viridis' dark purple
+    assert _colour(scene, f"node_{hottest}") == (*colours.heat_colour(1.0), 255)  # viridis' yellow
     extras = _node_extras(scene, f"node_{hottest}")
     assert extras["id"] == hottest and extras["depth"] == structure.nodes[hottest]["depth"]
     assert extras["values"]["betweenness"] == pytest.approx(values[hottest], rel=1e-8)
     assert extras["values"]["degree"] == result.analysis["degree"][hottest]
 
-    # the structure survives as line segments, one per edge, coloured by the child's value
-    points, rgba, edges = _line_colours(path)
-    assert sorted(map(tuple, edges)) == sorted(structure.edges) and len(points) == structure.number_of_edges()
+    # every edge is one closed tube, in the colour of its child's value
+    tubes = _tube_edges(scene)
+    assert sorted(e for edges in tubes.values() for e in edges) == sorted(structure.edges)
     low, high = min(values.values()), max(values.values())
-    for (u, v), segment, colour in zip(edges, points, rgba):
-        assert np.allclose(segment, [structure.nodes[u]["pos"], structure.nodes[v]["pos"]], atol=1e-6)
-        level_ = round((values[v] - low) / (high - low) * (gltf.HEAT_LEVELS - 1))
-        assert tuple(colour) == (*colours.heat_colour(level_ / (gltf.HEAT_LEVELS - 1)), 255)
+    for name, edges in tubes.items():
+        mesh = scene.geometry[scene.graph[name][1]]
+        assert mesh.is_watertight and len(mesh.split(only_watertight=False)) == len(edges)
+        for _, v in edges:
+            level_ = round((values[v] - low) / (high - low) * (gltf.HEAT_LEVELS - 1))
+            assert name == f"edges_value_{level_:02d}"
+            assert _colour(scene, name) == (*colours.heat_colour(level_ / (gltf.HEAT_LEVELS - 1)), 255)
 
 
-def test_without_analysis_lines_show_the_tree_depth(tmp_path):
+def test_root_and_terminal_markers_leave_the_value_spheres_visible(tmp_path):
+    result = make_result()
+    path, = gltf.write(result, tmp_path)
+    scene = trimesh.load(path)
+    root, terminal = result.structure.graph["roots"][0], result.terminals.nodes[0]
+    sphere = scene.geometry[scene.graph[f"node_{root}"][1]]
+    sphere_top = sphere.vertices[:, 1].max()
+    cone = scene.geometry[scene.graph[f"root_{root}"][1]]
+    assert cone.vertices[:, 1].min() > sphere_top  # the cone floats above the sphere
+    ring = scene.geometry[scene.graph[f"terminal_{terminal}"][1]]
+    inner = np.hypot(ring.vertices[:, 0], ring.vertices[:, 2]).min()
+    assert inner > np.hypot(sphere.vertices[:, 0], sphere.vertices[:, 2]).max()  # the sphere shows through the ring
+
+
+def test_without_analysis_edges_show_the_tree_depth(tmp_path):
     result = make_result(analysis=False)
     path, = gltf.write(result, tmp_path)
     scene = trimesh.load(path)
     assert not [n for n in scene.graph.nodes_geometry if n.startswith("node_")]
-    points, rgba, edges = _line_colours(path)
-    depths = {tuple(colour[:3]): result.structure.nodes[v]["depth"] for (_, v), colour in zip(edges, rgba)}
-    assert depths[colours.depth_colour(1)] == 1 and depths[colours.depth_colour(2)] == 2  # red = 1, yellow = 2
-    for (_, v), colour in zip(edges, rgba):
-        assert tuple(colour) == (*colours.depth_colour(result.structure.nodes[v]["depth"]), 255)
-    assert len(set(map(tuple, rgba))) == max(d for _, d in result.structure.nodes(data="depth"))
+    tubes = _tube_edges(scene)
+    for name, edges in tubes.items():
+        depths = {result.structure.nodes[v]["depth"] for _, v in edges}
+        assert len(depths) == 1 and name == f"edges_depth_{depths.pop()}"
+        assert _colour(scene, name) == (*colours.depth_colour(result.structure.nodes[edges[0][1]]["depth"]), 255)
+    assert len(tubes) == max(d for _, d in result.structure.nodes(data="depth"))
 
 
 def test_navmesh_is_a_translucent_green_layer(tmp_path):
@@ -128,11 +151,37 @@ def test_navmesh_is_a_translucent_green_layer(tmp_path):
     result = make_result(navmesh=navmesh)
     path, = gltf.write(result, tmp_path)
     scene = trimesh.load(path)
-    surface = scene.geometry[scene.graph["navmesh"][1]]
+    surface = scene.geometry[scene.graph["navmesh_surface"][1]]
     assert len(surface.faces) == len(navmesh.detail_triangles) > 0
     assert np.allclose(np.sort(surface.vertices, axis=0), np.sort(np.asarray(navmesh.detail_vertices), axis=0), atol=1e-5)
-    colour = _colour(scene, "navmesh")
+    colour = _colour(scene, "navmesh_surface")
     assert colour[:3] == colours.NAVMESH_COLOUR and colour[3] < 255
     header, _ = read_glb(path)
-    material = next(m for m in header["materials"] if m.get("name") == "navmesh")
+    material = next(m for m in header["materials"] if m.get("name") == "navmesh_surface")
     assert material["alphaMode"] == "BLEND"
+
+
+VALIDATOR_MODULES = PROJECT / ".venv" / "node" / "node_modules"
+"""Where `make test` installs the Khronos glTF validator (npm package gltf-validator)."""
+
+
+def test_demo_glb_passes_the_khronos_validator(tmp_path):
+    node = shutil.which("node")
+    if node is None or not (VALIDATOR_MODULES / "gltf-validator").is_dir():
+        pytest.skip("the Khronos glTF validator is not installed (node and npm's gltf-validator in "
+                    f"{VALIDATOR_MODULES}): `make test` installs it, or run "
+                    f"npm install --prefix {VALIDATOR_MODULES.parent} gltf-validator")
+    out = tmp_path / "demo"
+    done = subprocess.run([sys.executable, "-m", "g2s_core.cli", "demo", "-o", str(out), "--format", "glb", "--quiet"],
+                          capture_output=True, text=True, cwd=PROJECT)
+    assert done.returncode == 0, done.stderr
+    report = subprocess.run([node, str(PROJECT / "tests" / "validate_gltf.js"), str(out / "structure.glb")],
+                            capture_output=True, text=True, env={**os.environ, "NODE_PATH": str(VALIDATOR_MODULES)})
+    assert report.returncode == 0, report.stderr
+    issues = json.loads(report.stdout)["issues"]
+    serious = [m for m in issues["messages"] if m["severity"] <= 1]  # 0 error, 1 warning
+    assert issues["numErrors"] == 0 and issues["numWarnings"] == 0, serious
+    header, _ = read_glb(out / "structure.glb")
+    assert [header["nodes"][i]["name"] for i in header["scenes"][0]["nodes"]] == list(gltf.GROUPS)
+    for group in ("level", "navmesh", "structure", "roots", "terminals"):
+        assert _children(header, group), f"the demo's {group} group is empty"

@@ -1,13 +1,21 @@
-"""report.html in headless Chromium, offline: no console errors, no network, the plot drawn with all its layers."""
+"""report.html in headless Chromium, offline: no console errors, no network, the plot drawn with all its layers,
+the default view showing what matters and the whole level, above the fold."""
 
 from __future__ import annotations
 
+import base64
+import gzip
+import io
 import re
+import subprocess
+import sys
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from g2s_plugins.outputs import colours, html_report
+from tests.conftest import PROJECT
 from tests.test_outputs import make_result
 
 CHROMIUM = Path("/usr/bin/chromium")
@@ -30,50 +38,57 @@ def test_report_is_self_contained(tmp_path):
     result = make_result()
     path, = html_report.write(result, tmp_path)
     text = path.read_text(encoding="utf-8")
-    assert text.count("plotly.js v") == 1  # the library, embedded once
+    packed = re.findall(r'<script id="g2s-plotly" type="application/gzip;base64">([^<]+)</script>', text)
+    assert len(packed) == 1 and gzip.decompress(base64.b64decode(packed[0])).decode().count("plotly.js v") == 1
+    assert text.count("plotly.js v") == 0  # the library, embedded once, compressed
     assert not re.search(r"<(script|link|img)[^>]+(src|href)=", text)  # nothing loaded from elsewhere
     assert "terminals &lt;b&gt;near&lt;/b&gt; the edge &amp; one more" in text  # warnings escaped
+
+
+FOLD = {"width": 1400, "height": 1000}
+"""The window the report must fit without scrolling to see the plot."""
 
 
 def test_report_renders_offline_in_chromium(tmp_path):
     sync_api = pytest.importorskip("playwright.sync_api")
     result = make_result()
+    result.formats = ("json", "html", "glb")
     path, = html_report.write(result, tmp_path)
     forest_lines, structure_lines = _depth_classes(result.forest), _depth_classes(result.structure)
     expected_traces = (1            # level mesh
                        + 2          # step 1: edges, nodes
                        + 2          # step 2: terminals, openings
                        + 2          # step 3: edges, nodes
-                       + forest_lines + 2      # step 4: edges by depth, nodes, roots
-                       + structure_lines + 2   # step 5
+                       + forest_lines + 1      # step 4: edges by depth, nodes
+                       + structure_lines + 1   # step 5
+                       + 1          # roots
                        + 2 * 2)     # two analysis keys: edges, nodes
     layers = ["Level mesh", "Step 1: initial graph", "Step 2: terminals", "Step 3: Steiner tree",
-              "Step 4: rooted trees", "Step 5: simplified structure", "Analysis: betweenness", "Analysis: degree"]
+              "Step 4: rooted trees", "Step 5: simplified structure", "Roots", "Analysis: betweenness",
+              "Analysis: degree"]
 
     problems: list[str] = []
     outside: list[str] = []
     with sync_api.sync_playwright() as playwright:
         browser = playwright.chromium.launch(executable_path=str(CHROMIUM), args=CHROMIUM_ARGS)
         try:
-            context = browser.new_context(offline=True)
+            context = browser.new_context(offline=True, viewport=FOLD)
             page = context.new_page()
             page.on("console", lambda m: problems.append(f"console {m.type}: {m.text}") if m.type == "error" else None)
             page.on("pageerror", lambda e: problems.append(f"page error: {e}"))
             page.on("requestfailed", lambda r: problems.append(f"request failed: {r.url}"))
-            page.on("request", lambda r: outside.append(r.url) if not r.url.startswith("file://") else None)
+            page.on("request", lambda r: outside.append(r.url) if not r.url.startswith(("file://", "blob:")) else None)
             page.goto(path.as_uri(), wait_until="load")
             page.wait_for_function("() => { const p = document.querySelector('.js-plotly-plot');"
                                    " return p && p._fullLayout && p.querySelector('.gl-container canvas'); }",
-                                   timeout=30_000)
+                                   timeout=60_000)
             plot = ".js-plotly-plot"
             assert page.evaluate(f"document.querySelector('{plot}').data.length") == expected_traces
             assert page.evaluate("Array.from(document.querySelectorAll('.legendtext')).map(e => e.textContent)") == layers
             webgl = page.evaluate("(() => { const c = document.querySelector('.gl-container canvas');"
                                   " return !!(c.getContext('webgl') || c.getContext('webgl2')); })()")
             assert webgl, "the 3D scene has no WebGL context"
-            visible = page.evaluate(f"document.querySelector('{plot}').data.map(t => [t.name, t.visible])")
-            shown = {name for name, state in visible if state is True}
-            assert shown == {"Level mesh", "Analysis: betweenness"}
+            _check_default_view(page, result)
             # a click on a legend entry shows the whole layer
             page.locator(".legend .traces", has_text="Step 1: initial graph").locator(".legendtoggle").click(timeout=5_000)
             page.wait_for_function(f"document.querySelector('{plot}').data.filter("
@@ -84,9 +99,74 @@ def test_report_renders_offline_in_chromium(tmp_path):
             assert [r[0] for r in rows] == ["Step 1", "Step 2", "Step 3", "Step 4", "Step 5", "Post-process", "total"]
             assert rows[0][3:] == [str(result.graph.number_of_nodes()), str(result.graph.number_of_edges())]
             assert rows[1][3] == "5"  # terminals
-            assert "plugin: surface_los" in page.inner_text("#config")
+            config = page.inner_text("#config")
+            assert "plugin: surface_los" in config
+            assert "formats:\n  - json\n  - html\n  - glb" in config  # what was written, not the config's default
             assert page.inner_text("#warnings") == "terminals <b>near</b> the edge & one more"
+            _check_whole_level_in_view(page)  # last: it hides the other layers
         finally:
             browser.close()
     assert not problems, problems
     assert not outside, outside
+
+
+def _check_default_view(page, result) -> None:
+    """Level, structure (coloured by the first value), roots, terminals and openings are shown at first, above the fold."""
+    visible = page.evaluate("document.querySelector('.js-plotly-plot').data.map(t => [t.name, t.visible, t.mode || ''])")
+    shown = {(name, mode) for name, state, mode in visible if state is True}
+    assert shown == {("Level mesh", ""), ("Step 2: terminals", "markers"), ("Step 2: terminals", "lines"),
+                     ("Roots", "markers"), ("Analysis: betweenness", "lines"), ("Analysis: betweenness", "markers")}
+    # every structure edge is drawn in the shown layer: two points and a gap each
+    drawn = page.evaluate("(() => { const t = document.querySelector('.js-plotly-plot')._fullData.find("
+                          "t => t.name === 'Analysis: betweenness' && t.mode === 'lines');"
+                          " return Array.from(t.x).filter(v => Number.isFinite(v)).length; })()")
+    assert drawn == 2 * result.structure.number_of_edges()
+    roots = page.evaluate("document.querySelector('.js-plotly-plot')._fullData.find(t => t.name === 'Roots').x.length")
+    assert roots == len(result.structure.graph["roots"])
+    rect = page.evaluate("document.getElementById('g2s-plot').getBoundingClientRect().toJSON()")
+    assert rect["top"] >= 0 and rect["bottom"] <= FOLD["height"], rect  # the whole plot without scrolling
+    assert rect["height"] >= 0.6 * FOLD["height"], rect
+
+
+def _check_whole_level_in_view(page) -> None:
+    """Only the level mesh, opaque, no axes: its pixels stay clear of the plot's edges (nothing clipped)."""
+    page.evaluate("""(async () => {
+        const p = document.querySelector('.js-plotly-plot');
+        const level = p.data.map((t, i) => t.name === 'Level mesh' ? i : -1).filter(i => i >= 0);
+        await Plotly.restyle(p, {visible: false}, p.data.map((t, i) => i).filter(i => !level.includes(i)));
+        await Plotly.restyle(p, {opacity: 1, color: 'rgb(0,0,0)'}, level);
+        await Plotly.relayout(p, {showlegend: false, 'scene.xaxis.visible': false,
+                                  'scene.yaxis.visible': false, 'scene.zaxis.visible': false});
+    })()""")
+    page.wait_for_timeout(500)
+    from PIL import Image
+
+    canvas = page.locator(".gl-container canvas").first
+    image = np.asarray(Image.open(io.BytesIO(canvas.screenshot())).convert("L"))
+    rows, columns = np.nonzero(image < 128)
+    assert len(rows) > 0.05 * image.size, "the level is not drawn"
+    height, width = image.shape
+    margins = (rows.min(), height - 1 - rows.max(), columns.min(), width - 1 - columns.max())
+    assert min(margins) > 2, f"the level touches the plot's edge (margins top, bottom, left, right: {margins})"
+
+
+def test_nav_test_report_is_small(shared_data, tmp_path):
+    """The real level's report (plotly.js and the geometry inside) stays under 3 MB."""
+    out = tmp_path / "out"
+    command = [sys.executable, "-m", "g2s_core.cli", "run", str(PROJECT / "configs" / "map_analysis.yaml"),
+               str(shared_data / "nav_test.obj"), "-o", str(out), "--format", "html", "--quiet"]
+    done = subprocess.run(command, capture_output=True, text=True, cwd=PROJECT)
+    assert done.returncode == 0, done.stderr
+    size = (out / "report.html").stat().st_size
+    assert size < 3_000_000, f"report.html is {size / 1e6:.2f} MB"
+
+
+def test_hover_gives_role_position_in_metres_and_each_value_once():
+    result = make_result()
+    root = result.structure.graph["roots"][0]
+    text = html_report.hover_text(result.structure, root, result, {root})
+    x, y, z = result.structure.nodes[root]["pos"]
+    lines = text.split("<br>")
+    assert lines[0] == f"node {root} (root, terminal)"
+    assert lines[1] == f"x {x:.2f} m, y {y:.2f} m, z {z:.2f} m"
+    assert [line.split(":")[0] for line in lines[3:]] == ["betweenness", "degree"]

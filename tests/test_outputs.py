@@ -7,6 +7,7 @@ the tests at the end run the real pipeline when its plugins are installed.
 
 from __future__ import annotations
 
+import io
 import json
 import math
 import struct
@@ -31,7 +32,7 @@ from g2s_core.outputs import (
     writers,
 )
 from g2s_plugins.outputs import load_result
-from g2s_plugins.outputs import common, graphml, heatmap, structure_json
+from g2s_plugins.outputs import colours, common, graphml, heatmap, structure_json
 from g2s_core.pipeline import steiner_forest
 from g2s_core.rooted import root_forest
 from g2s_core.simplify import simplify_forest
@@ -360,15 +361,27 @@ def test_heatmap_png_has_a_panel_per_floor_and_no_metadata(result, tmp_path):
 
 
 def test_heatmap_colours_follow_the_values(tmp_path):
-    """The hottest node's pixels are red, the coldest's green (green -> yellow -> red)."""
-    from g2s_plugins.outputs import colours
-
-    assert colours.heat_colour(0.0) == (0, 160, 0) and colours.heat_colour(1.0) == (220, 0, 0)
-    assert colours.heat_colour(0.5) == (250, 210, 0)
+    """Values on viridis: dark purple lowest, yellow highest; depth colours as in the paper."""
+    assert colours.heat_colour(0.0) == (68, 1, 84) and colours.heat_colour(1.0) == (253, 231, 37)
+    assert colours.plotly_heat_scale()[0] == [0.0, "rgb(68,1,84)"] and colours.plotly_heat_scale()[-1][0] == 1.0
     assert list(colours.normalise([2.0, 4.0, 3.0])) == [0.0, 1.0, 0.5]
     assert list(colours.normalise([5.0, 5.0])) == [0.0, 0.0]
     assert colours.depth_colour(1) == (220, 30, 30) and colours.depth_colour(2) == (240, 200, 0)
     assert colours.depth_colour(1 + len(colours.DEPTH_COLOURS)) == colours.depth_colour(1)
+    assert colours.ROOT_COLOUR not in colours.DEPTH_COLOURS  # roots never share a colour with a depth
+
+
+def test_heatmap_marks_terminals_and_openings_and_explains_dashed_edges(result):
+    from matplotlib.image import imread
+
+    groups = heatmap.floor_groups(result.structure, 2.0)
+    labels = [h.get_label() for h in heatmap._legend_handles(result, result.structure, groups)]
+    assert labels == ["root", "terminal", "opening", "edge to another floor (stairs, ramp or drop)"]
+    points, segments = heatmap._terminals_by_floor(result, result.structure, groups)
+    assert [len(p) for p in points] == [3, 2] and [len(s) for s in segments] == [1, 0]  # the opening is downstairs
+    pixels = (imread(io.BytesIO(heatmap.render(result)))[:, :, :3] * 255).round()
+    vermilion = np.all(np.abs(pixels - colours.TERMINAL_COLOUR) <= 2, axis=-1)
+    assert vermilion.sum() > 200  # the squares and the opening's bar are drawn
 
 
 # --- folders and formats ------------------------------------------------------------------
@@ -524,7 +537,7 @@ def test_demo_writes_all_five_formats_and_they_agree(tmp_path, capsys):
     loaded = load_result(out_dir)
     scene = _trimesh.load(out_dir / "structure.glb")
     names = set(scene.graph.nodes_geometry)
-    assert {"mesh", "navmesh", "structure"} <= names
+    assert {"level_mesh", "navmesh_surface"} <= names and any(n.startswith("edges_value_") for n in names)
     assert {n for n in names if n.startswith("root_")} == {f"root_{r}" for r in loaded.roots}
     assert {n for n in names if n.startswith("node_")} == {f"node_{n}" for n in loaded.structure}
     assert {n for n in names if n.startswith("terminal_")} == {f"terminal_{t}" for t in loaded.terminals.nodes}

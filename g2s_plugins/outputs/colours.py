@@ -2,9 +2,13 @@
 
 * Tree depth: an edge takes the colour of its child's depth, red for depth 1,
   yellow for 2, then green, cyan, blue, magenta, orange, violet, repeating.
-  Roots (depth 0) are red spheres.
-* Analysis values: green (lowest) -> yellow (middle) -> red (highest), after
-  min-max normalisation of the values shown.
+* Roots are black and have their own marker shape in every format, so no
+  colour means both "root" and something else; terminals and openings are
+  vermilion (Okabe and Ito's colour-blind-safe palette).
+* Analysis values: matplotlib's viridis, a perceptually uniform sequential
+  scale that colour-blind readers and greyscale prints read the same way:
+  dark purple (lowest) -> teal -> yellow (highest), after min-max
+  normalisation of the values shown.
 
 Colours are 8-bit RGB tuples.
 """
@@ -29,8 +33,8 @@ DEPTH_COLOURS: tuple[RGB, ...] = (
 )
 """Colour of depth d >= 1 is ``DEPTH_COLOURS[(d - 1) % len(DEPTH_COLOURS)]``."""
 
-ROOT_COLOUR: RGB = (220, 30, 30)
-TERMINAL_COLOUR: RGB = (30, 110, 255)
+ROOT_COLOUR: RGB = (0, 0, 0)
+TERMINAL_COLOUR: RGB = (213, 94, 0)
 MESH_COLOUR: RGB = (170, 170, 170)
 NAVMESH_COLOUR: RGB = (60, 200, 90)
 NAVMESH_ALPHA = 0.35
@@ -39,8 +43,11 @@ STEINER_COLOUR: RGB = (150, 60, 200)
 LOOP_COLOUR: RGB = (25, 25, 25)
 """Loop edges (a structure with loops, see g2s_core.loops): near-black, dotted where the format allows."""
 
-HEAT_STOPS: tuple[tuple[float, RGB], ...] = ((0.0, (0, 160, 0)), (0.5, (250, 210, 0)), (1.0, (220, 0, 0)))
-"""The analysis scale: green at the lowest value, yellow at the middle, red at the highest."""
+VALUE_COLORMAP = "viridis"
+"""The matplotlib colormap of analysis values (low -> high)."""
+VALUE_SCALE_LABEL = "dark purple lowest, yellow highest"
+PLOTLY_STOPS = 11
+"""How many evenly spaced stops approximate the scale in plotly (the steps are invisible)."""
 
 
 def depth_colour(depth: int) -> RGB:
@@ -51,13 +58,9 @@ def depth_colour(depth: int) -> RGB:
 
 
 def heat_colour(t: float) -> RGB:
-    """Colour of a normalised value ``t`` in [0, 1] (clipped)."""
-    t = min(max(float(t), 0.0), 1.0)
-    for (t0, c0), (t1, c1) in zip(HEAT_STOPS, HEAT_STOPS[1:]):
-        if t <= t1:
-            f = (t - t0) / (t1 - t0)
-            return tuple(int(round(a + (b - a) * f)) for a, b in zip(c0, c1))  # type: ignore[return-value]
-    return HEAT_STOPS[-1][1]
+    """Colour of a normalised value ``t`` in [0, 1] (clipped) on :data:`VALUE_COLORMAP`."""
+    rgba = matplotlib_heat_cmap()(min(max(float(t), 0.0), 1.0))
+    return tuple(int(round(c * 255)) for c in rgba[:3])  # type: ignore[return-value]
 
 
 def normalise(values: Iterable[float]) -> np.ndarray:
@@ -85,11 +88,12 @@ def unit(rgb: Sequence[int], alpha: float = 1.0) -> tuple[float, float, float, f
 
 def plotly_heat_scale() -> list[list]:
     """The analysis scale as a plotly colorscale."""
-    return [[t, css(c)] for t, c in HEAT_STOPS]
+    stops = np.linspace(0.0, 1.0, PLOTLY_STOPS)
+    return [[float(t), css(heat_colour(t))] for t in stops]
 
 
 def matplotlib_heat_cmap():  # -> matplotlib.colors.Colormap
     """The analysis scale as a matplotlib colormap."""
-    from matplotlib.colors import LinearSegmentedColormap
+    from matplotlib import colormaps
 
-    return LinearSegmentedColormap.from_list("g2s_heat", [(t, unit(c)) for t, c in HEAT_STOPS])
+    return colormaps[VALUE_COLORMAP]

@@ -1,44 +1,52 @@
 """``structure.glb``: the level, its navmesh and the structure as one binary glTF scene.
 
-Scene nodes (names are stable, so scripts can find them):
+The scene is a handful of named group nodes (names are stable, so scripts and
+viewers' outliners find them), each holding its objects:
 
-``mesh``
-    The input mesh, grey.
+``level``
+    ``level_mesh``: the input mesh, grey.
 ``navmesh``
-    The navmesh's detail triangles, translucent green (only with a navmesh).
+    ``navmesh_surface``: the navmesh's detail triangles, translucent green
+    (empty without a navmesh).
 ``structure``
-    The final structure's edges as glTF LINES, one colour per edge: the
-    colour of the child's tree depth (red = depth 1, yellow = 2, green, cyan,
-    blue, magenta, orange, violet, repeating), or, when the run has analysis
-    values, the child's first analysis value on the green -> yellow -> red
-    scale (min-max over the structure). Undirected graphs (runs stopped
-    before step 4) are drawn grey. Loop edges (structures with loops, see
-    :mod:`g2s_core.loops`) are near-black whatever the colouring. Its extras
-    list the edges ``[u, v]`` in the order of the line segments, what the
-    colours show and, when there are any, the ``loop_edges``.
-``root_<id>``
-    A red sphere on each root.
-``terminal_<id>``
-    A blue sphere on each terminal (smaller than a root's).
-``node_<id>``
-    With analysis values only: a small sphere on every structure node in its
-    value's colour.
+    The final structure's edges as thin tubes (radius 0.2 r, eight sides), so
+    they render in every viewer and engine (glTF lines are one pixel wide and
+    Blender drops loose edges). One mesh per colour, ``edges_<colour>``: the
+    child's first analysis value on viridis in :data:`HEAT_LEVELS` steps
+    (``edges_value_07``), else the child's tree depth (``edges_depth_1``: red
+    = depth 1, yellow = 2, green, cyan, blue, magenta, orange, violet,
+    repeating), else one grey (``edges``, runs stopped before step 4). Each
+    mesh node's extras list its ``edges`` ``[u, v]`` in the order of its tubes
+    and ``colour_by``. With analysis values, ``node_<id>`` is a sphere
+    (radius 0.4 r) on every structure node in its value's colour.
+``roots``
+    ``root_<id>``: a black cone pointing down at each root, floating above the
+    node so that the node's sphere stays visible.
+``terminals``
+    ``terminal_<id>``: a vermilion ring lying flat around each terminal, wider
+    than the node's sphere, which shows through it.
+``loops``
+    The loop edges of a structure with loops (config ``loops:``, see
+    :mod:`g2s_core.loops`): near-black tubes, mesh ``loop_edges`` whose extras
+    list its ``edges``; empty for a tree.
 
-Every sphere node's extras hold ``id``, ``depth``, ``root``, ``terminal`` and
-``values`` (analysis key -> value). Sphere radii follow the agent radius
-(root 0.6 r, terminal 0.45 r, node 0.3 r). Coordinates are metres, Y up,
-which is glTF's convention.
+*r* is the agent radius. The ``structure``, ``roots``, ``terminals`` and
+``loops`` groups are raised by 0.4 r (a node sphere's radius) so that nothing
+sinks into the floor; their objects sit at the nodes' exact positions inside
+the group. Every ``node_``, ``root_`` and ``terminal_`` node's extras hold ``id``,
+``depth``, ``root``, ``terminal`` and ``values`` (analysis key -> value).
+Coordinates are metres, Y up, which is glTF's convention.
 """
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
 import networkx as nx
 import numpy as np
 import trimesh
-from trimesh.path.entities import Line
 from trimesh.visual.material import PBRMaterial
 from trimesh.visual.texture import TextureVisuals
 
@@ -48,8 +56,16 @@ from g2s_plugins.outputs.common import agent_value, edge_list, final_graph, is_l
 from g2s_plugins.outputs.files import atomic_write
 
 GLB_FILE = "structure.glb"
+GROUPS = ("level", "navmesh", "structure", "roots", "terminals", "loops")
+"""The scene's group nodes, in order."""
+LIFTED_GROUPS = ("structure", "roots", "terminals", "loops")
 HEAT_LEVELS = 32
-"""Analysis colours are quantised to this many steps so that node spheres share geometry."""
+"""Analysis colours are quantised to this many steps so that edges and spheres share meshes."""
+TUBE_RADIUS, TUBE_SIDES = 0.2, 8
+NODE_RADIUS = 0.4
+RING_RADIUS, RING_THICKNESS = 0.65, 0.08
+CONE_RADIUS, CONE_HEIGHT, CONE_GAP = 0.5, 1.4, 0.1
+"""Sizes in agent radii."""
 
 
 def write(result: RunResult, outdir: Path) -> list[Path]:
@@ -62,35 +78,54 @@ def build_scene(result: RunResult) -> trimesh.Scene:
     """The scene described in the module doc."""
     scene = trimesh.Scene()
     scene.metadata["g2s"] = {"mesh_name": result.mesh_name, "mesh_sha256": result.mesh_sha256}
-    mesh = result.context.mesh
-    if mesh is not None and len(mesh.faces):
-        level = trimesh.Trimesh(np.asarray(mesh.vertices), np.asarray(mesh.faces), process=False)
-        level.visual = _material("mesh", colours.MESH_COLOUR)
-        scene.add_geometry(level, node_name="mesh", geom_name="mesh")
-    navmesh = result.context.navmesh
-    if navmesh is not None and len(navmesh.detail_triangles):
-        surface = trimesh.Trimesh(
-            np.asarray(navmesh.detail_vertices, dtype=np.float64),
-            np.asarray(navmesh.detail_triangles, dtype=np.int64),
-            process=False,
-        )
-        surface.visual = _material("navmesh", colours.NAVMESH_COLOUR, alpha=colours.NAVMESH_ALPHA)
-        scene.add_geometry(surface, node_name="navmesh", geom_name="navmesh")
-
+    radius = agent_value(result, "radius", 0.5)
+    for group in GROUPS:
+        lift = NODE_RADIUS * radius if group in LIFTED_GROUPS else 0.0
+        scene.graph.update(frame_to=group, frame_from=scene.graph.base_frame, matrix=_translation((0.0, lift, 0.0)))
+    _add_surfaces(scene, result)
     _, graph = final_graph(result)
     if graph is None:
         return scene
-    radius = agent_value(result, "radius", 0.5)
     keys = list(result.analysis)
     heat = _heat_levels(graph, result.analysis[keys[0]]) if keys else {}
-    edges = edge_list(graph)
-    if edges:
-        metadata: dict[str, Any] = {"edges": [list(e) for e in edges], "colour_by": keys[0] if keys else
-                                    ("depth" if graph.is_directed() else "none")}
-        loops = [list(e) for e in edges if graph.is_directed() and is_loop_edge(graph, *e)]
-        if loops:
-            metadata["loop_edges"] = loops
-        scene.add_geometry(_lines(graph, edges, heat), node_name="structure", geom_name="structure", metadata=metadata)
+    colour_by = keys[0] if keys else ("depth" if graph.is_directed() else "none")
+    loops = [e for e in edge_list(graph) if graph.is_directed() and is_loop_edge(graph, *e)]
+    for name, (rgb, edges) in _edge_classes(graph, heat, set(loops)).items():
+        tubes = _tubes(graph, edges, TUBE_RADIUS * radius)
+        tubes.visual = _material(name, rgb)
+        _place(scene, "structure", name, tubes, np.zeros(3), {"edges": [list(e) for e in edges], "colour_by": colour_by})
+    if loops:
+        tubes = _tubes(graph, loops, TUBE_RADIUS * radius)
+        tubes.visual = _material("loop_edges", colours.LOOP_COLOUR)
+        _place(scene, "loops", "loop_edges", tubes, np.zeros(3), {"edges": [list(e) for e in loops]})
+    _add_markers(scene, result, graph, heat, radius)
+    return scene
+
+
+def _add_surfaces(scene: trimesh.Scene, result: RunResult) -> None:
+    mesh = result.context.mesh
+    if mesh is not None and len(mesh.faces):
+        level = trimesh.Trimesh(np.asarray(mesh.vertices), np.asarray(mesh.faces), process=False)
+        level.visual = _material("level_mesh", colours.MESH_COLOUR)
+        _place(scene, "level", "level_mesh", level, np.zeros(3))
+    navmesh = result.context.navmesh
+    if navmesh is not None and len(navmesh.detail_triangles):
+        surface = trimesh.Trimesh(np.asarray(navmesh.detail_vertices, dtype=np.float64),
+                                  np.asarray(navmesh.detail_triangles, dtype=np.int64), process=False)
+        surface.visual = _material("navmesh_surface", colours.NAVMESH_COLOUR, alpha=colours.NAVMESH_ALPHA)
+        _place(scene, "navmesh", "navmesh_surface", surface, np.zeros(3))
+
+
+def _add_markers(scene: trimesh.Scene, result: RunResult, graph: nx.Graph, heat: dict[int, int], radius: float) -> None:
+    """Value spheres on the structure's nodes, cones over the roots, rings around the terminals."""
+    terminals = set(terminal_ids(result))
+    shapes: dict[str, trimesh.Trimesh] = {}
+
+    def shape(name: str, make, rgb: colours.RGB) -> trimesh.Trimesh:
+        if name not in shapes:
+            shapes[name] = make()
+            shapes[name].visual = _material(name, rgb)
+        return shapes[name]
 
     def info(node: int) -> dict[str, Any]:
         attrs = graph.nodes[node] if node in graph else {}
@@ -98,43 +133,52 @@ def build_scene(result: RunResult) -> trimesh.Scene:
             "id": int(node),
             "depth": None if attrs.get("depth") is None else int(attrs["depth"]),
             "root": None if attrs.get("root") is None else int(attrs["root"]),
-            "terminal": int(node) in terminal_set,
-            "values": {k: number(result.analysis[k][node]) for k in keys if node in result.analysis[k]},
+            "terminal": int(node) in terminals,
+            "values": {k: number(v[node]) for k, v in result.analysis.items() if node in v},
         }
 
-    terminal_set = set(terminal_ids(result))
-    spheres: dict[str, trimesh.Trimesh] = {}
-
-    def sphere(kind: str, size: float, colour: colours.RGB) -> str:
-        name = f"sphere_{kind}"
-        if name not in spheres:
-            ball = trimesh.creation.icosphere(subdivisions=2, radius=size)
-            ball.visual = _material(name, colour)
-            spheres[name] = ball
-        return name
-
-    placements: list[tuple[str, str, np.ndarray, dict[str, Any]]] = []
-    if heat:
-        for node in sorted(graph.nodes):
-            level = heat[node]
-            geom = sphere(f"heat_{level:02d}", 0.3 * radius, colours.heat_colour(level / (HEAT_LEVELS - 1)))
-            placements.append((f"node_{node}", geom, np.asarray(graph.nodes[node]["pos"]), info(node)))
+    for node in sorted(graph.nodes) if heat else ():
+        level = heat[node]
+        ball = shape(f"sphere_value_{level:02d}", lambda: trimesh.creation.icosphere(2, NODE_RADIUS * radius),
+                     colours.heat_colour(level / (HEAT_LEVELS - 1)))
+        _place(scene, "structure", f"node_{node}", ball, graph.nodes[node]["pos"], info(node))
     source = result.graph if result.graph is not None else graph
-    for node in sorted(terminal_set):
-        if node in source:
-            geom = sphere("terminal", 0.45 * radius, colours.TERMINAL_COLOUR)
-            placements.append((f"terminal_{node}", geom, np.asarray(source.nodes[node]["pos"]), info(node)))
+    for node in sorted(t for t in terminals if t in source):
+        ring = shape("ring_terminal", lambda: _ring(radius), colours.TERMINAL_COLOUR)
+        _place(scene, "terminals", f"terminal_{node}", ring, source.nodes[node]["pos"], info(node))
     for node in roots_of(graph):
-        geom = sphere("root", 0.6 * radius, colours.ROOT_COLOUR)
-        placements.append((f"root_{node}", geom, np.asarray(graph.nodes[node]["pos"]), info(node)))
-    for name, ball in spheres.items():
-        scene.geometry[name] = ball
-    for node_name, geom, position, extras in placements:
-        transform = np.eye(4)
-        transform[:3, 3] = np.asarray(position, dtype=np.float64)
-        scene.graph.update(frame_to=node_name, frame_from=scene.graph.base_frame, matrix=transform,
-                           geometry=geom, metadata=extras)
-    return scene
+        cone = shape("cone_root", lambda: _cone(radius), colours.ROOT_COLOUR)
+        _place(scene, "roots", f"root_{node}", cone, graph.nodes[node]["pos"], info(node))
+
+
+def _place(scene: trimesh.Scene, group: str, name: str, geometry: trimesh.Trimesh, position: Sequence[float],
+           extras: dict[str, Any] | None = None) -> None:
+    """A node ``name`` under ``group`` at ``position`` showing ``geometry`` (shared by name)."""
+    geometry_name = geometry.visual.material.name
+    scene.geometry[geometry_name] = geometry
+    scene.graph.update(frame_to=name, frame_from=group, matrix=_translation(position), geometry=geometry_name,
+                       metadata=extras or {})
+
+
+def _translation(position: Sequence[float]) -> np.ndarray:
+    matrix = np.eye(4)
+    matrix[:3, 3] = np.asarray(position, dtype=np.float64)
+    return matrix
+
+
+def _ring(radius: float) -> trimesh.Trimesh:
+    """A torus lying flat (in the XZ plane) around the origin."""
+    lying = trimesh.transformations.rotation_matrix(np.pi / 2, (1.0, 0.0, 0.0))
+    return trimesh.creation.torus(RING_RADIUS * radius, RING_THICKNESS * radius, 24, 8, transform=lying)
+
+
+def _cone(radius: float) -> trimesh.Trimesh:
+    """A cone pointing down (-Y) whose tip floats just above a node sphere at the origin."""
+    cone = trimesh.creation.cone(CONE_RADIUS * radius, CONE_HEIGHT * radius, sections=16)
+    flip = trimesh.transformations.rotation_matrix(np.pi / 2, (1.0, 0.0, 0.0))  # +Z tip -> -Y tip
+    cone.apply_transform(flip)
+    cone.apply_translation((0.0, (CONE_HEIGHT + NODE_RADIUS + CONE_GAP) * radius, 0.0))
+    return cone
 
 
 def _material(name: str, rgb: colours.RGB, alpha: float = 1.0) -> TextureVisuals:
@@ -157,20 +201,31 @@ def _heat_levels(graph: nx.Graph, values: dict[int, float]) -> dict[int, int]:
     return {n: int(round(x * (HEAT_LEVELS - 1))) for n, x in zip(nodes, t)}
 
 
-def _lines(graph: nx.Graph, edges: list[tuple[int, int]], heat: dict[int, int]) -> trimesh.path.Path3D:
-    index = {node: i for i, node in enumerate(sorted(graph.nodes))}
-    vertices = np.asarray([graph.nodes[n]["pos"] for n in sorted(graph.nodes)], dtype=np.float64)
-    entities = [Line(points=[index[u], index[v]]) for u, v in edges]
-    line_colours = []
-    for parent, child in edges:
-        if graph.is_directed() and is_loop_edge(graph, parent, child):
-            rgb = colours.LOOP_COLOUR
-        elif heat:
-            rgb = colours.heat_colour(heat[child] / (HEAT_LEVELS - 1))
+def _edge_classes(
+    graph: nx.Graph, heat: dict[int, int], loops: set[tuple[int, int]]
+) -> dict[str, tuple[colours.RGB, list[tuple[int, int]]]]:
+    """Mesh name -> (colour, edges) of the structure's edges but ``loops``, by the child's value step, depth, or all grey."""
+    classes: dict[str, tuple[colours.RGB, list[tuple[int, int]]]] = {}
+    for edge in edge_list(graph):
+        if edge in loops:
+            continue
+        child = edge[1]
+        if heat:
+            name, rgb = f"edges_value_{heat[child]:02d}", colours.heat_colour(heat[child] / (HEAT_LEVELS - 1))
         elif graph.is_directed():
-            rgb = colours.depth_colour(int(graph.nodes[child].get("depth", 1)))
+            depth = (max(int(graph.nodes[child].get("depth", 1)), 1) - 1) % len(colours.DEPTH_COLOURS) + 1
+            name, rgb = f"edges_depth_{depth}", colours.depth_colour(depth)
         else:
-            rgb = colours.GRAPH_COLOUR
-        line_colours.append([*rgb, 255])
-    return trimesh.path.Path3D(entities=entities, vertices=vertices,
-                               colors=np.asarray(line_colours, dtype=np.uint8), process=False)
+            name, rgb = "edges", colours.GRAPH_COLOUR
+        classes.setdefault(name, (rgb, []))[1].append(edge)
+    return dict(sorted(classes.items()))
+
+
+def _tubes(graph: nx.Graph, edges: list[tuple[int, int]], radius: float) -> trimesh.Trimesh:
+    """One closed tube per edge (zero-length edges give none), as one mesh."""
+    parts = []
+    for u, v in edges:
+        segment = np.asarray([graph.nodes[u]["pos"], graph.nodes[v]["pos"]], dtype=np.float64)
+        if np.linalg.norm(segment[1] - segment[0]) > 1e-9:
+            parts.append(trimesh.creation.cylinder(radius, sections=TUBE_SIDES, segment=segment))
+    return trimesh.util.concatenate(parts) if parts else trimesh.Trimesh()

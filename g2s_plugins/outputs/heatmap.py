@@ -4,15 +4,17 @@ View: from above (+Y towards the viewer), X to the right and Z downwards,
 i.e. -Z up the page, which keeps the view right-handed; the axes are
 labelled in metres. The walkable ground (navmesh triangles, else the mesh's
 faces no steeper than the agent's max slope) is light grey underneath.
-Edges are grey lines, nodes are dots on the green
-(lowest) -> yellow -> red (highest) scale, roots are ringed in black. Without
-analysis values nodes and edges take their tree-depth colour (an edge its
-child's: red = depth 1, yellow = 2 ...) and, before step 4, one grey.
+Edges are grey lines, nodes are dots on viridis (dark purple lowest, yellow
+highest), roots are ringed in black, terminals are vermilion squares and
+openings vermilion bars. Without analysis values nodes and edges take their
+tree-depth colour (an edge its child's: red = depth 1, yellow = 2 ...) and,
+before step 4, one grey. A legend under the panels names the markers drawn.
 
 Floors: node heights (Y) are sorted and split wherever two neighbours differ
 by more than the agent height; each floor gets its own panel (lowest first),
-with the edges that touch it (edges to another floor dashed). The colour
-scale is shared by all panels.
+with the edges that touch it (edges to another floor dashed, as the legend
+says), and the terminals and openings whose height is nearest its nodes'. The
+colour scale is shared by all panels.
 
 The file is deterministic: matplotlib's Agg canvas (pyplot is not used), fixed size and DPI, no
 date or software tag in the PNG metadata.
@@ -30,10 +32,11 @@ from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.collections import LineCollection, PolyCollection
 from matplotlib.colors import Normalize
 from matplotlib.figure import Figure
+from matplotlib.lines import Line2D
 
 from g2s_core.model import RunResult
 from g2s_plugins.outputs import colours
-from g2s_plugins.outputs.common import agent_value, edge_list, final_graph, floors, is_loop_edge, roots_of
+from g2s_plugins.outputs.common import agent_value, edge_list, final_graph, floors, is_loop_edge, roots_of, terminal_ids
 from g2s_plugins.outputs.files import atomic_write
 
 HEATMAP_FILE = "heatmap.png"
@@ -79,12 +82,14 @@ def render(result: RunResult) -> bytes:
         floor_of = {n: i for i, group in enumerate(groups) for n in group}
         roots = set(roots_of(graph))
         ground = _ground(result, graph, groups)
+        terminals, openings = _terminals_by_floor(result, graph, groups)
         for index, group in enumerate(groups):
             ax = axes[index // columns][index % columns]
             if len(ground[index]):
                 ax.add_collection(PolyCollection(ground[index], facecolors=GROUND_COLOUR, edgecolors=GROUND_COLOUR,
                                              linewidths=0.4, zorder=0))
             mappable = _panel(ax, graph, group, floor_of, index, values, norm, roots) or mappable
+            _mark_terminals(ax, terminals[index], openings[index])
             heights = [graph.nodes[n]["pos"][1] for n in group]
             if len(groups) > 1:
                 low, high = f"{min(heights):.1f}", f"{max(heights):.1f}"
@@ -104,7 +109,10 @@ def render(result: RunResult) -> bytes:
             ax.set_axisbelow(True)
     if mappable is not None:
         bar = figure.colorbar(mappable, ax=axes.ravel().tolist(), shrink=0.8)
-        bar.set_label(f"{key} (green lowest, red highest)")
+        bar.set_label(f"{key} ({colours.VALUE_SCALE_LABEL})")
+    handles = _legend_handles(result, graph, groups)
+    if handles:
+        figure.legend(handles=handles, loc="outside lower center", ncols=len(handles), fontsize="small", frameon=False)
     buffer = io.BytesIO()
     figure.savefig(buffer, format="png", dpi=DPI, metadata={"Software": None})
     return buffer.getvalue()
@@ -185,8 +193,59 @@ def _panel(ax, graph: nx.Graph, group: list[int], floor_of: dict[int, int], inde
     root_nodes = [n for n in group if n in roots]
     if root_nodes:
         r = np.asarray([graph.nodes[n]["pos"] for n in root_nodes], dtype=np.float64)
-        ax.scatter(r[:, 0], r[:, 2], s=90, facecolors="none", edgecolors="black", linewidths=1.5, zorder=3,
-                   label="root")
-        ax.legend(loc="upper right", fontsize="small", framealpha=0.8)
+        ax.scatter(r[:, 0], r[:, 2], **ROOT_STYLE)
     ax.autoscale_view()
     return mappable
+
+
+ROOT_STYLE = dict(s=90, facecolors="none", edgecolors=colours.unit(colours.ROOT_COLOUR), linewidths=1.5, zorder=3)
+TERMINAL_STYLE = dict(s=60, marker="s", facecolors="none", edgecolors=colours.unit(colours.TERMINAL_COLOUR),
+                      linewidths=1.4, zorder=4)
+OPENING_STYLE = dict(colors=[colours.unit(colours.TERMINAL_COLOUR)], linewidths=4.0, zorder=4)
+
+
+def _terminals_by_floor(result: RunResult, graph: nx.Graph, groups: list[list[int]]
+                        ) -> tuple[list[np.ndarray], list[np.ndarray]]:
+    """Per floor, the terminals' (T, 3) positions and the openings' (O, 2, 3) segments nearest its height span."""
+    source = result.graph if result.graph is not None else graph
+    points = np.asarray([source.nodes[t]["pos"] for t in terminal_ids(result) if t in source],
+                        dtype=np.float64).reshape(-1, 3)
+    openings = result.terminals.openings if result.terminals is not None else ()
+    segments = np.asarray([(o.p0, o.p1) for o in openings], dtype=np.float64).reshape(-1, 2, 3)
+    spans = np.asarray([(min(graph.nodes[n]["pos"][1] for n in g), max(graph.nodes[n]["pos"][1] for n in g))
+                        for g in groups]).reshape(-1, 2)
+
+    def nearest(heights: np.ndarray) -> np.ndarray:
+        distance = np.maximum(np.maximum(spans[None, :, 0] - heights[:, None], heights[:, None] - spans[None, :, 1]), 0)
+        return distance.argmin(axis=1) if len(spans) else np.zeros(len(heights), dtype=int)
+
+    point_floor, segment_floor = nearest(points[:, 1]), nearest(segments[:, :, 1].mean(axis=1))
+    return ([points[point_floor == i] for i in range(len(groups))],
+            [segments[segment_floor == i] for i in range(len(groups))])
+
+
+def _mark_terminals(ax, points: np.ndarray, segments: np.ndarray) -> None:
+    if len(segments):
+        ax.add_collection(LineCollection(segments[:, :, [0, 2]], **OPENING_STYLE))
+    if len(points):
+        ax.scatter(points[:, 0], points[:, 2], **TERMINAL_STYLE)
+
+
+def _legend_handles(result: RunResult, graph: nx.Graph | None, groups: list[list[int]]) -> list[Line2D]:
+    """Legend entries for the markers the panels show: roots, terminals, openings, edges to another floor."""
+    if graph is None:
+        return []
+    floor_of = {n: i for i, group in enumerate(groups) for n in group}
+    handles = []
+    if roots_of(graph):
+        handles.append(Line2D([], [], linestyle="none", marker="o", markersize=9, markerfacecolor="none",
+                              markeredgecolor=colours.unit(colours.ROOT_COLOUR), label="root"))
+    if terminal_ids(result):
+        handles.append(Line2D([], [], linestyle="none", marker="s", markersize=7, markerfacecolor="none",
+                              markeredgecolor=colours.unit(colours.TERMINAL_COLOUR), label="terminal"))
+    if result.terminals is not None and result.terminals.openings:
+        handles.append(Line2D([], [], color=colours.unit(colours.TERMINAL_COLOUR), linewidth=4.0, label="opening"))
+    if any(floor_of[u] != floor_of[v] for u, v in graph.edges):
+        handles.append(Line2D([], [], color="0.47", linestyle="dashed",
+                              label="edge to another floor (stairs, ramp or drop)"))
+    return handles

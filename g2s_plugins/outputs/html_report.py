@@ -1,9 +1,13 @@
 """``report.html``: one self-contained page that works offline.
 
-The page holds plotly.js once (embedded, no network), an interactive 3D view,
-the per-stage table in the paper's form, the config used (YAML) and the
-warnings. The 3D view's legend entries are layers that a click shows or
-hides (a layer may be several plotly traces sharing a legend group):
+The page opens on the interactive 3D view (it fits a 1400 x 1000 window
+without scrolling), then the summary, the per-stage table in the paper's form,
+the warnings and the config used (YAML, with the formats actually written).
+plotly.js is embedded once, gzip-compressed (the browser unpacks it with its
+built-in ``DecompressionStream``), and the geometry travels as typed arrays
+of 32-bit floats, so a level of a few hundred polygons gives a page of about
+2 MB. The 3D view's legend entries are layers that a click shows or hides
+(a layer may be several plotly traces sharing a legend group):
 
 =================================  ==========================================  =======
 layer (legend entry)               traces                                       shown
@@ -11,25 +15,32 @@ layer (legend entry)               traces                                       
 Level mesh                         the input mesh, light grey, translucent      yes
 Navigation mesh                    detail triangles, green (with a navmesh)     no
 Step 1: initial graph              edges, nodes                                 no
-Step 2: terminals                  terminals (+ openings when there are some)   no
+Step 2: terminals                  terminals (+ openings when there are some)   yes
 Step 3: Steiner tree               edges, nodes                                 no
-Step 4: rooted trees               edges by depth [3]_, nodes, roots            no
-Step 5: simplified structure       edges by depth [3]_, nodes, roots            [1]_
-Analysis: <key>                    edges, nodes by value (one layer per key)    [2]_
+Step 4: rooted trees               edges by depth [3]_, nodes                   no
+Step 5: simplified structure       edges by depth [3]_, nodes                   [1]_
+Roots                              a black diamond on each root                 yes
+Analysis: <key>                    edges and nodes by value (one per key)       [2]_
 =================================  ==========================================  =======
 
 .. [1] shown when the run has no analysis values.
-.. [2] the first key is shown.
+.. [2] the first key is shown, with its colour bar.
 .. [3] one trace per depth colour in use (at most ``len(DEPTH_COLOURS)``).
 
 Depth colours: red = depth 1, yellow = 2, then green, cyan, blue, magenta ...;
-roots are red. Analysis values: green (lowest) -> yellow -> red (highest).
-Layers of stages that did not run are left out. Y is up.
+analysis values on viridis (dark purple lowest, yellow highest); terminals and
+openings vermilion. The initial camera looks down on the level's bounding box
+from a fixed direction, far enough that the whole box is in view. Layers of
+stages that did not run are left out. Y is up.
 """
 
 from __future__ import annotations
 
+import base64
+import gzip
 import html
+import json
+import math
 from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
@@ -38,10 +49,11 @@ import networkx as nx
 import numpy as np
 import plotly.graph_objects as go
 import yaml
+from plotly.offline import get_plotlyjs
 
 from g2s_core.model import RunResult
 from g2s_plugins.outputs import colours
-from g2s_plugins.outputs.common import edge_list, final_graph, is_loop_edge, number, roots_of, stage_rows, terminal_ids
+from g2s_plugins.outputs.common import edge_list, final_graph, is_loop_edge, roots_of, stage_rows, terminal_ids
 from g2s_plugins.outputs.files import atomic_write
 
 REPORT_FILE = "report.html"
@@ -54,7 +66,14 @@ LAYER_TERMINALS = "Step 2: terminals"
 LAYER_STEINER = "Step 3: Steiner tree"
 LAYER_FOREST = "Step 4: rooted trees"
 LAYER_STRUCTURE = "Step 5: simplified structure"
+LAYER_ROOTS = "Roots"
 LAYER_ANALYSIS = "Analysis: {key}"
+
+CAMERA_DIRECTION = (1.0, 1.4, 1.2)
+"""Where the initial camera looks from (plotly scene units, Y up): above the level, from one corner."""
+CAMERA_FOV_DEGREES = 45.0
+"""plotly's perspective field of view (vertical)."""
+PLOT_CONFIG = {"displaylogo": False, "responsive": True, "scrollZoom": True}
 
 
 def write(result: RunResult, outdir: Path) -> list[Path]:
@@ -63,34 +82,8 @@ def write(result: RunResult, outdir: Path) -> list[Path]:
 
 def render(result: RunResult) -> str:
     """The whole page as a string."""
-    figure = build_figure(result)
-    plot = figure.to_html(
-        full_html=False,
-        include_plotlyjs=True,
-        include_mathjax=False,
-        div_id=PLOT_ID,
-        default_width="100%",
-        default_height="78vh",
-        config={"displaylogo": False, "responsive": True, "scrollZoom": True},
-    )
-    stage, graph = final_graph(result)
-    summary = [
-        ("mesh", result.mesh_name),
-        ("mesh SHA-256", result.mesh_sha256),
-        ("final stage", stage or "none"),
-    ]
-    if graph is not None:
-        summary.append(("final structure", f"{graph.number_of_nodes()} nodes, {graph.number_of_edges()} edges"))
-        roots = roots_of(graph)
-        if roots:
-            summary.append(("trees", f"{len(roots)} (roots {', '.join(map(str, roots[:12]))}{' ...' if len(roots) > 12 else ''})"))
-    if result.terminals is not None:
-        summary.append(("terminals", str(len(result.terminals.nodes))))
-    if result.analysis:
-        summary.append(("analysis values", ", ".join(result.analysis)))
-    config_yaml = yaml.safe_dump(result.config, sort_keys=False, default_flow_style=False, allow_unicode=True)
-    warnings = "".join(f"<li>{html.escape(w)}</li>" for w in result.warnings) or "<li class=\"none\">none</li>"
     title = html.escape(f"g2s report: {result.mesh_name}")
+    warnings = "".join(f"<li>{html.escape(w)}</li>" for w in result.warnings) or "<li class=\"none\">none</li>"
     return f"""<!DOCTYPE html>
 <html lang="en">
 <head>
@@ -98,8 +91,8 @@ def render(result: RunResult) -> str:
 <meta name="viewport" content="width=device-width, initial-scale=1">
 <title>{title}</title>
 <style>
-body {{ font-family: system-ui, sans-serif; margin: 1.2em 2em; color: #222; }}
-h1 {{ font-size: 1.5em; margin-bottom: 0.2em; }}
+body {{ font-family: system-ui, sans-serif; margin: 0.6em 1.5em; color: #222; }}
+h1 {{ font-size: 1.2em; margin: 0 0 0.2em 0; }}
 h2 {{ font-size: 1.15em; margin-top: 1.6em; border-bottom: 1px solid #ddd; }}
 table {{ border-collapse: collapse; }}
 th, td {{ padding: 0.2em 0.8em; border-bottom: 1px solid #eee; }}
@@ -109,27 +102,90 @@ dl {{ display: grid; grid-template-columns: max-content auto; gap: 0.15em 1em; }
 dt {{ color: #666; }} dd {{ margin: 0; word-break: break-all; }}
 pre {{ background: #f6f6f6; padding: 0.8em; overflow: auto; }}
 li.none {{ color: #666; list-style: none; }}
-.hint {{ color: #666; font-size: 0.9em; }}
+.hint {{ color: #666; font-size: 0.85em; margin: 0.2em 0; }}
 #view {{ border: 1px solid #ddd; }}
+#{PLOT_ID} {{ width: 100%; height: calc(100vh - 7em); min-height: 420px; }}
 </style>
 </head>
 <body>
 <h1>{title}</h1>
-<dl id="summary">{''.join(f'<dt>{html.escape(k)}</dt><dd>{html.escape(v)}</dd>' for k, v in summary)}</dl>
-<h2>3D view</h2>
-<p class="hint">Click a legend entry to show or hide that layer, double-click to show it alone.
-Drag to rotate, scroll to zoom. Tree edges: red = depth 1, yellow = depth 2, then green, cyan, blue, magenta;
-roots are red. Analysis: green (lowest), yellow, red (highest). Y is up; lengths in metres.</p>
-<div id="view">{plot}</div>
+<p class="hint">{html.escape(_legend_hint(result))}</p>
+<div id="view"><div id="{PLOT_ID}"></div></div>
+<h2>Summary</h2>
+<dl id="summary">{''.join(f'<dt>{html.escape(k)}</dt><dd>{html.escape(v)}</dd>' for k, v in _summary(result))}</dl>
 <h2>Per-stage table</h2>
 {_stage_table(result)}
 <h2>Warnings</h2>
 <ul id="warnings">{warnings}</ul>
 <h2>Config</h2>
-<pre id="config">{html.escape(config_yaml)}</pre>
+{_config_section(result)}
+{_plot_scripts(build_figure(result))}
 </body>
 </html>
 """
+
+
+def _legend_hint(result: RunResult) -> str:
+    keys = list(result.analysis)
+    values = (f"Analysis: {keys[0]} on viridis ({colours.VALUE_SCALE_LABEL}). " if keys else "")
+    return ("Click a legend entry to show or hide that layer, double-click to show it alone; drag to rotate, "
+            f"scroll to zoom. {values}Tree edges by depth: red = 1, yellow = 2, then green, cyan, blue, magenta. "
+            "Roots: black diamonds; terminals and openings: vermilion. Y is up; lengths in metres.")
+
+
+def _summary(result: RunResult) -> list[tuple[str, str]]:
+    stage, graph = final_graph(result)
+    summary = [("mesh", result.mesh_name), ("mesh SHA-256", result.mesh_sha256), ("final stage", stage or "none")]
+    if graph is not None:
+        summary.append(("final structure", f"{graph.number_of_nodes()} nodes, {graph.number_of_edges()} edges"))
+        roots = roots_of(graph)
+        if roots:
+            summary.append(("trees", f"{len(roots)} (roots {', '.join(map(str, roots[:12]))}{' ...' if len(roots) > 12 else ''})"))
+    if result.terminals is not None:
+        summary.append(("terminals", str(len(result.terminals.nodes))))
+    if result.analysis:
+        summary.append(("analysis values", ", ".join(result.analysis)))
+    return summary
+
+
+def _config_section(result: RunResult) -> str:
+    """The config as YAML, its ``outputs.formats`` being the formats this run wrote."""
+    config = dict(result.config)
+    note = ""
+    if result.formats:
+        outputs = dict(config.get("outputs") or {})
+        if list(outputs.get("formats") or ()) != list(result.formats):
+            note = (f'<p class="hint">outputs.formats shows the formats written ({", ".join(result.formats)}), '
+                    f'chosen on the command line instead of the config\'s {outputs.get("formats")}.</p>')
+        config["outputs"] = {**outputs, "formats": list(result.formats)}
+    text = yaml.safe_dump(config, sort_keys=False, default_flow_style=False, allow_unicode=True)
+    return f'{note}<pre id="config">{html.escape(text)}</pre>'
+
+
+def _plot_scripts(figure: go.Figure) -> str:
+    """plotly.js (gzip, base64) and the figure (JSON); a small script unpacks one and draws the other."""
+    library = base64.b64encode(gzip.compress(get_plotlyjs().encode("utf-8"), 9, mtime=0)).decode("ascii")
+    data = figure.to_json().replace("</", "<\\/")
+    config = json.dumps(PLOT_CONFIG)
+    return f"""<script id="g2s-plotly" type="application/gzip;base64">{library}</script>
+<script id="g2s-figure" type="application/json">{data}</script>
+<script>
+(async () => {{
+  const plot = document.getElementById("{PLOT_ID}");
+  if (typeof DecompressionStream === "undefined") {{
+    plot.textContent = "This browser cannot unpack the embedded plotly.js (DecompressionStream is missing); " +
+      "open the report in a current Firefox, Chrome, Edge or Safari.";
+    return;
+  }}
+  const packed = Uint8Array.from(atob(document.getElementById("g2s-plotly").textContent), c => c.charCodeAt(0));
+  const stream = new Blob([packed]).stream().pipeThrough(new DecompressionStream("gzip"));
+  const library = document.createElement("script");
+  library.textContent = await new Response(stream).text();
+  document.head.appendChild(library);
+  const figure = JSON.parse(document.getElementById("g2s-figure").textContent);
+  await Plotly.newPlot(plot, figure.data, figure.layout, {config});
+}})();
+</script>"""
 
 
 def _stage_table(result: RunResult) -> str:
@@ -149,6 +205,8 @@ def _stage_table(result: RunResult) -> str:
 
 def build_figure(result: RunResult) -> go.Figure:
     """The 3D view (see the module doc for its layers)."""
+    keys = list(result.analysis)
+    _, final = final_graph(result)
     traces: list[Any] = []
     mesh = result.context.mesh
     if mesh is not None and len(mesh.faces):
@@ -158,173 +216,191 @@ def build_figure(result: RunResult) -> go.Figure:
     if navmesh is not None and len(navmesh.detail_triangles):
         traces.append(_mesh_trace(np.asarray(navmesh.detail_vertices), np.asarray(navmesh.detail_triangles),
                                   LAYER_NAVMESH, colours.css(colours.NAVMESH_COLOUR), 0.45, False))
-    terminals = terminal_ids(result)
-    keys = list(result.analysis)
     if result.graph is not None:
-        traces += _plain_layer(result.graph, LAYER_GRAPH, colours.GRAPH_COLOUR, 1.5, 2, False, result)
+        traces += _plain_layer(result.graph, LAYER_GRAPH, colours.GRAPH_COLOUR, 1.5, 2, result)
     if result.terminals is not None:
-        traces += _terminal_layer(result, terminals)
+        traces += _terminal_layer(result, terminal_ids(result))
     if result.steiner is not None:
-        traces += _plain_layer(result.steiner, LAYER_STEINER, colours.STEINER_COLOUR, 3, 3, False, result)
+        traces += _plain_layer(result.steiner, LAYER_STEINER, colours.STEINER_COLOUR, 3, 3, result)
     if result.forest is not None:
         traces += _tree_layer(result.forest, LAYER_FOREST, False, result)
     if result.structure is not None:
         traces += _tree_layer(result.structure, LAYER_STRUCTURE, not keys, result)
-    _, graph = final_graph(result)
+    if final is not None and roots_of(final):
+        traces.append(_node_trace(final, roots_of(final), LAYER_ROOTS, result, 9, colours.css(colours.ROOT_COLOUR),
+                                  True, showlegend=True, symbol="diamond"))
     for index, key in enumerate(keys):
-        if graph is not None:
-            traces += _analysis_layer(graph, key, result, visible=index == 0)
+        if final is not None:
+            traces += _analysis_layer(final, key, result, visible=index == 0)
     figure = go.Figure(data=traces)
     figure.update_layout(
-        margin=dict(l=0, r=0, t=30, b=0),
+        template="plotly_white",
+        margin=dict(l=0, r=0, t=0, b=0),
         legend=dict(groupclick="togglegroup", itemsizing="constant", x=0.0, y=1.0, bgcolor="rgba(255,255,255,0.7)"),
-        scene=dict(
-            aspectmode="data",
-            xaxis_title="X (m)",
-            yaxis_title="Y (m, up)",
-            zaxis_title="Z (m)",
-            camera=dict(up=dict(x=0, y=1, z=0), eye=dict(x=1.1, y=1.5, z=1.1)),
-        ),
+        scene=_scene(_level_bounds(result)),
         uirevision="g2s",
     )
     return figure
 
 
+def _level_bounds(result: RunResult) -> np.ndarray:
+    """(2, 3) corners of what the view must hold: the mesh, else the graph's nodes."""
+    mesh = result.context.mesh
+    if mesh is not None and len(mesh.faces):
+        return np.asarray(mesh.bounds, dtype=np.float64)
+    _, graph = final_graph(result)
+    points = np.asarray([p for _, p in graph.nodes(data="pos")] if graph is not None else [], dtype=np.float64)
+    return np.stack([points.min(axis=0), points.max(axis=0)]) if len(points) else np.asarray([[-1.0] * 3, [1.0] * 3])
+
+
+def _scene(bounds: np.ndarray) -> dict[str, Any]:
+    """Axes fixed to ``bounds`` (metres), true proportions, and a camera that sees the whole box.
+
+    plotly draws the box with half-sides ``aspectratio / 2`` around the origin
+    and looks at it from ``eye``: the eye stands on :data:`CAMERA_DIRECTION` at
+    the distance where the box's bounding sphere fills the vertical field of view.
+    """
+    extent = np.maximum(bounds[1] - bounds[0], 1e-6)
+    aspect = extent / extent.max()
+    radius = 0.5 * float(np.linalg.norm(aspect))
+    distance = radius / math.sin(math.radians(CAMERA_FOV_DEGREES / 2))
+    direction = np.asarray(CAMERA_DIRECTION) / np.linalg.norm(CAMERA_DIRECTION)
+    eye = distance * direction
+    axes = {f"{axis}axis": dict(range=[float(bounds[0][i]), float(bounds[1][i])], title=title, autorange=False)
+            for i, (axis, title) in enumerate(zip("xyz", ("X (m)", "Y (m, up)", "Z (m)")))}
+    return dict(
+        **axes,
+        aspectmode="manual",
+        aspectratio=dict(zip("xyz", map(float, aspect))),
+        camera=dict(up=dict(x=0, y=1, z=0), center=dict(x=0, y=0, z=0), eye=dict(zip("xyz", map(float, eye)))),
+    )
+
+
+def _visible(shown: bool) -> bool | str:
+    return True if shown else "legendonly"
+
+
 def _mesh_trace(vertices: np.ndarray, faces: np.ndarray, name: str, colour: str, opacity: float, visible: bool) -> go.Mesh3d:
-    v = np.round(np.asarray(vertices, dtype=np.float64), 5)
-    f = np.asarray(faces, dtype=np.int64)
+    v = np.asarray(vertices, dtype=np.float32)
+    f = np.asarray(faces, dtype=np.int32)
     return go.Mesh3d(
         x=v[:, 0], y=v[:, 1], z=v[:, 2], i=f[:, 0], j=f[:, 1], k=f[:, 2],
         name=name, legendgroup=name, showlegend=True, color=colour, opacity=opacity,
-        flatshading=True, hoverinfo="skip", visible=True if visible else "legendonly",
+        flatshading=True, hoverinfo="skip", visible=_visible(visible),
         lighting=dict(ambient=0.7, diffuse=0.5, specular=0.05),
     )
 
 
-def _segments(graph: nx.Graph, edges: Sequence[tuple[int, int]]) -> tuple[list, list, list]:
-    xs: list[float | None] = []
-    ys: list[float | None] = []
-    zs: list[float | None] = []
-    for u, v in edges:
-        pu, pv = graph.nodes[u]["pos"], graph.nodes[v]["pos"]
-        xs += [number(pu[0]), number(pv[0]), None]
-        ys += [number(pu[1]), number(pv[1]), None]
-        zs += [number(pu[2]), number(pv[2]), None]
-    return xs, ys, zs
+def _segments(points: Sequence[tuple[Any, Any]]) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """x, y, z float32 arrays of line segments ``(p, q)``, a NaN after each so plotly leaves a gap."""
+    array = np.full((len(points), 3, 3), np.nan, dtype=np.float32)
+    for index, (p, q) in enumerate(points):
+        array[index, 0], array[index, 1] = p, q
+    flat = array.reshape(-1, 3)
+    return flat[:, 0], flat[:, 1], flat[:, 2]
 
 
-def _hover(graph: nx.Graph, node: int, result: RunResult, terminals: set[int]) -> str:
+def _edge_segments(graph: nx.Graph, edges: Sequence[tuple[int, int]]) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    return _segments([(graph.nodes[u]["pos"], graph.nodes[v]["pos"]) for u, v in edges])
+
+
+def _lines(graph: nx.Graph, edges: Sequence[tuple[int, int]], name: str, visible: bool, showlegend: bool,
+           line: dict[str, Any]) -> go.Scatter3d:
+    xs, ys, zs = _edge_segments(graph, edges)
+    return go.Scatter3d(x=xs, y=ys, z=zs, mode="lines", name=name, legendgroup=name, showlegend=showlegend,
+                        line=line, hoverinfo="skip", visible=_visible(visible))
+
+
+def hover_text(graph: nx.Graph, node: int, result: RunResult, terminals: set[int]) -> str:
+    """What hovering ``node`` shows: id and role, position (m), depth and tree, each analysis value once."""
     attrs = graph.nodes[node]
-    lines = [f"node {node}"]
-    if attrs.get("depth") is not None:
-        lines.append(f"depth {attrs['depth']}, root {attrs.get('root')}")
-    if node in terminals:
-        lines.append("terminal")
-    for key, values in result.analysis.items():
-        if node in values:
-            lines.append(f"{key} {values[node]:.6g}")
+    roles = [role for role, present in (("root", attrs.get("depth") == 0), ("terminal", node in terminals)) if present]
     pos = attrs["pos"]
-    lines.append(f"({pos[0]:.2f}, {pos[1]:.2f}, {pos[2]:.2f})")
+    lines = [f"node {node}" + (f" ({', '.join(roles)})" if roles else ""),
+             f"x {pos[0]:.2f} m, y {pos[1]:.2f} m, z {pos[2]:.2f} m"]
+    if attrs.get("depth") is not None:
+        lines.append(f"depth {attrs['depth']} in the tree of root {attrs.get('root')}")
+    lines += [f"{key}: {values[node]:.4g}" for key, values in result.analysis.items() if node in values]
     return "<br>".join(lines)
 
 
 def _node_trace(graph: nx.Graph, nodes: Sequence[int], name: str, result: RunResult, size: float,
                 colour: Any, visible: bool, showlegend: bool = False, symbol: str = "circle") -> go.Scatter3d:
     terminals = set(terminal_ids(result))
-    p = np.asarray([graph.nodes[n]["pos"] for n in nodes], dtype=np.float64).reshape(-1, 3)
+    p = np.asarray([graph.nodes[n]["pos"] for n in nodes], dtype=np.float32).reshape(-1, 3)
     return go.Scatter3d(
-        x=p[:, 0].tolist(), y=p[:, 1].tolist(), z=p[:, 2].tolist(), mode="markers",
+        x=p[:, 0], y=p[:, 1], z=p[:, 2], mode="markers",
         name=name, legendgroup=name, showlegend=showlegend,
         marker=dict(size=size, color=colour, symbol=symbol, line=dict(width=0)),
-        text=[_hover(graph, n, result, terminals) for n in nodes], hoverinfo="text",
-        visible=True if visible else "legendonly",
+        text=[hover_text(graph, n, result, terminals) for n in nodes], hoverinfo="text",
+        visible=_visible(visible),
     )
 
 
-def _plain_layer(graph: nx.Graph, name: str, rgb: colours.RGB, width: float, size: float, visible: bool,
+def _plain_layer(graph: nx.Graph, name: str, rgb: colours.RGB, width: float, size: float,
                  result: RunResult) -> list[Any]:
-    xs, ys, zs = _segments(graph, edge_list(graph))
-    edges = go.Scatter3d(x=xs, y=ys, z=zs, mode="lines", name=name, legendgroup=name, showlegend=True,
-                         line=dict(color=colours.css(rgb), width=width), hoverinfo="skip",
-                         visible=True if visible else "legendonly")
-    nodes = _node_trace(graph, sorted(graph.nodes), name, result, size, colours.css(rgb), visible)
-    return [edges, nodes]
+    edges = _lines(graph, edge_list(graph), name, False, True, dict(color=colours.css(rgb), width=width))
+    return [edges, _node_trace(graph, sorted(graph.nodes), name, result, size, colours.css(rgb), False)]
 
 
 def _terminal_layer(result: RunResult, terminals: list[int]) -> list[Any]:
+    """The terminals (vermilion squares) and the openings' segments."""
     graph = result.graph
-    present = [t for t in terminals if graph is not None and t in graph]
+    colour = colours.css(colours.TERMINAL_COLOUR)
     traces: list[Any] = []
     if graph is not None:
-        traces.append(_node_trace(graph, present, LAYER_TERMINALS, result, 5, colours.css(colours.TERMINAL_COLOUR),
-                                  False, showlegend=True, symbol="diamond"))
+        present = [t for t in terminals if t in graph]
+        traces.append(_node_trace(graph, present, LAYER_TERMINALS, result, 7, colour, True, showlegend=True,
+                                  symbol="square-open"))
     openings = result.terminals.openings if result.terminals is not None else ()
     if openings:
-        xs: list[float | None] = []
-        ys: list[float | None] = []
-        zs: list[float | None] = []
-        for o in openings:
-            xs += [o.p0[0], o.p1[0], None]
-            ys += [o.p0[1], o.p1[1], None]
-            zs += [o.p0[2], o.p1[2], None]
+        xs, ys, zs = _segments([(o.p0, o.p1) for o in openings])
         traces.append(go.Scatter3d(x=xs, y=ys, z=zs, mode="lines", name=LAYER_TERMINALS, legendgroup=LAYER_TERMINALS,
-                                   showlegend=not traces, line=dict(color=colours.css(colours.TERMINAL_COLOUR), width=6),
-                                   hoverinfo="skip", visible="legendonly"))
+                                   showlegend=not traces, line=dict(color=colour, width=8),
+                                   hoverinfo="skip", visible=True))
     return traces
 
 
 def _tree_layer(tree: nx.DiGraph, name: str, visible: bool, result: RunResult) -> list[Any]:
-    """Edges by depth (one trace per depth colour in use, red = depth 1 first), nodes, roots."""
-    edges = edge_list(tree)
-    loops = [(u, v) for u, v in edges if is_loop_edge(tree, u, v)]
+    """Edges by depth (one trace per depth colour in use, red = depth 1 first), then the nodes."""
     by_colour: dict[int, list[tuple[int, int]]] = {}
-    for parent, child in edges:
+    loops = [(u, v) for u, v in edge_list(tree) if is_loop_edge(tree, u, v)]
+    for parent, child in edge_list(tree):
         if is_loop_edge(tree, parent, child):
             continue
         depth = int(tree.nodes[child].get("depth", 1))
         by_colour.setdefault((max(depth, 1) - 1) % len(colours.DEPTH_COLOURS), []).append((parent, child))
-    traces: list[Any] = []
-    for index in sorted(by_colour):
-        xs, ys, zs = _segments(tree, by_colour[index])
-        traces.append(go.Scatter3d(
-            x=xs, y=ys, z=zs, mode="lines", name=name, legendgroup=name, showlegend=not traces,
-            line=dict(width=5, color=colours.css(colours.DEPTH_COLOURS[index])),
-            hoverinfo="skip", visible=True if visible else "legendonly",
-        ))
-    if loops:
-        traces.append(_loop_trace(tree, loops, name, visible))
+    traces: list[Any] = [
+        _lines(tree, by_colour[index], name, visible, index == min(by_colour),
+               dict(width=5, color=colours.css(colours.DEPTH_COLOURS[index])))
+        for index in sorted(by_colour)
+    ]
+    if loops:  # the loop edges of a structure with loops (g2s_core.loops): near-black, dotted
+        traces.append(_lines(tree, loops, name, visible, False, dict(width=5, color=colours.css(colours.LOOP_COLOUR), dash="dot")))
     nodes = sorted(tree.nodes)
     node_colours = [colours.css(colours.depth_colour(int(tree.nodes[n].get("depth", 0)))) for n in nodes]
     traces.append(_node_trace(tree, nodes, name, result, 3, node_colours, visible, showlegend=not traces))
-    roots = roots_of(tree)
-    traces.append(_node_trace(tree, roots, name, result, 9, colours.css(colours.ROOT_COLOUR), visible))
     return traces
 
 
-def _loop_trace(graph: nx.Graph, loops: list[tuple[int, int]], name: str, visible: bool) -> Any:
-    """The loop edges of a structure with loops: near-black, dotted, in the layer's legend group."""
-    xs, ys, zs = _segments(graph, loops)
-    return go.Scatter3d(x=xs, y=ys, z=zs, mode="lines", name=name, legendgroup=name, showlegend=False,
-                        line=dict(width=5, color=colours.css(colours.LOOP_COLOUR), dash="dot"),
-                        hoverinfo="skip", visible=True if visible else "legendonly")
+def _value_range(values: Sequence[float]) -> tuple[float, float]:
+    finite = [v for v in values if np.isfinite(v)]
+    low, high = (min(finite), max(finite)) if finite else (0.0, 1.0)
+    return low, high if high > low else low + 1.0
 
 
 def _analysis_layer(graph: nx.Graph, key: str, result: RunResult, visible: bool) -> list[Any]:
+    """The structure's edges (each in its child's value colour) and nodes on the value scale, with a colour bar."""
     name = LAYER_ANALYSIS.format(key=key)
-    xs, ys, zs = _segments(graph, edge_list(graph))
-    edges = go.Scatter3d(x=xs, y=ys, z=zs, mode="lines", name=name, legendgroup=name, showlegend=True,
-                         line=dict(color="rgb(120,120,120)", width=3), hoverinfo="skip",
-                         visible=True if visible else "legendonly")
     values = result.analysis[key]
+    low, high = _value_range(list(values.values()))
+    edges = edge_list(graph)
+    # two points and a gap per segment, all in the child's colour
+    edge_values = np.repeat(np.asarray([values.get(v, low) for _, v in edges], dtype=np.float32), 3)
+    scale = dict(colorscale=colours.plotly_heat_scale(), cmin=low, cmax=high)
+    lines = _lines(graph, edges, name, visible, True, dict(color=np.nan_to_num(edge_values, nan=low), width=6, **scale))
     nodes = sorted(n for n in graph.nodes if n in values)
-    raw = [values[n] for n in nodes]
-    finite = [v for v in raw if np.isfinite(v)]
-    low, high = (min(finite), max(finite)) if finite else (0.0, 1.0)
-    if high <= low:
-        high = low + 1.0
-    marker_values = [v if np.isfinite(v) else low for v in raw]
-    node_trace = _node_trace(graph, nodes, name, result, 6, marker_values, visible)
-    node_trace.marker.update(colorscale=colours.plotly_heat_scale(), cmin=low, cmax=high, showscale=True,
-                             colorbar=dict(title=dict(text=key), x=1.0, len=0.6))
-    loops = [(u, v) for u, v in edge_list(graph) if graph.is_directed() and is_loop_edge(graph, u, v)]
-    return [edges, *([_loop_trace(graph, loops, name, visible)] if loops else []), node_trace]
+    marker_values = np.asarray([values[n] if np.isfinite(values[n]) else low for n in nodes], dtype=np.float32)
+    node_trace = _node_trace(graph, nodes, name, result, 5, marker_values, visible)
+    node_trace.marker.update(showscale=True, colorbar=dict(title=dict(text=key), x=1.0, len=0.6), **scale)
+    return [lines, node_trace]

@@ -1,0 +1,62 @@
+"""The disconnected-areas warning on hand-made graphs whose separation is known."""
+
+from __future__ import annotations
+
+import networkx as nx
+import pytest
+
+from g2s_core.config import AgentConfig
+from g2s_core.disconnected import LISTED_AREAS, area_summary, disconnected_warning
+
+
+def slab(graph: nx.Graph, x0: float, y: float, cells: int, first: int) -> list[int]:
+    """A row of ``cells`` 1 m x 1 m nodes at height ``y`` starting at ``x0``, joined in a line."""
+    nodes = list(range(first, first + cells))
+    for i, node in enumerate(nodes):
+        graph.add_node(node, pos=(x0 + i + 0.5, y, 0.5), area=1.0)
+    nx.add_path(graph, nodes)
+    return nodes
+
+
+def areas(graph: nx.Graph) -> dict[int, list[int]]:
+    return {i: sorted(c) for i, c in enumerate(nx.connected_components(graph))}
+
+
+@pytest.mark.parametrize("rise, cause", [
+    (0.6, "a step of about 0.6 m, higher than agent.max_climb (0.4 m)"),  # a step the agent cannot climb
+    (4.0, "separate floors (4.0 m apart)"),                                 # a floor above the other
+    (0.0, "a gap or passage too narrow for the agent (agent.radius 0.5 m) about 2.0 m across"),
+])
+def test_the_likely_cause_follows_the_step_between_the_closest_areas(rise, cause):
+    graph = nx.Graph()
+    slab(graph, 0.0, 0.0, 10, 0)
+    slab(graph, 11.0 if rise == 0.0 else 10.0, rise, 4, 100)
+    message = disconnected_warning(graph, areas(graph), 5, AgentConfig())
+    assert message.startswith("5 terminals lie in 2 disconnected areas")
+    assert "Largest areas: 10 m² near (4.5, 0.0, 0.5 m); 4 m²" in message
+    assert cause in message
+
+
+def test_hundreds_of_areas_give_one_short_line():
+    graph = nx.Graph()
+    for index in range(600):
+        slab(graph, 3.0 * index, 0.0, 1 + index % 3, 10 * index)
+    message = disconnected_warning(graph, areas(graph), 600, AgentConfig())
+    assert len(message) < 500 and "\n" not in message
+    assert message.count("m² near") == LISTED_AREAS
+    assert f"; {600 - LISTED_AREAS} more with" in message
+
+
+def test_area_summary_places_the_area_inside_it():
+    graph = nx.Graph()
+    nodes = slab(graph, 0.0, 0.0, 3, 0)
+    graph.nodes[2]["area"] = 10.0  # most of the surface is at the last node
+    total, where = area_summary(graph, nodes)
+    assert total == 12.0 and tuple(where) == (2.5, 0.0, 0.5)
+
+
+def test_an_abstract_graph_gets_the_counts_only():
+    graph = nx.Graph([(0, 1), (1, 2), (7, 8)])
+    message = disconnected_warning(graph, areas(graph), 3, None)
+    assert message == ("3 terminals lie in 2 disconnected areas, so they are joined by one tree per area "
+                       "(the largest have 3, 2 nodes).")
