@@ -32,6 +32,8 @@ class _Section(BaseModel):
 class AgentConfig(_Section):
     """The agent whose walkable space is extracted."""
 
+    model_config = ConfigDict(allow_inf_nan=False)
+
     radius: float = Field(0.5, gt=0, description="agent radius, metres")
     height: float = Field(2.0, gt=0, description="agent height (head room needed), metres")
     max_climb: float = Field(0.4, ge=0, description="highest step the agent climbs, metres")
@@ -40,6 +42,8 @@ class AgentConfig(_Section):
 
 class MeshConfig(_Section):
     """How the input mesh is read."""
+
+    model_config = ConfigDict(allow_inf_nan=False)
 
     up_axis: Literal["y", "z"] = Field("y", description="the file's up axis; z-up files are turned to y-up")
     scale: float = Field(1.0, gt=0, description="factor that converts the file's units to metres")

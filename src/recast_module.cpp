@@ -121,10 +121,22 @@ struct Settings {
     double edge_max_len, edge_max_error;
     int verts_per_poly;
     double detail_sample_dist, detail_sample_max_error;
-    long long max_cells;
+    long long max_cells;  // most xz cells rasterised at once (the solo grid, or one tile with its border)
     int tile_size;  // -1: automatic, 0: solo, > 0: tiles of this many cells
     int threads;    // worker threads of a tiled build; 0: hardware concurrency
+    bool filter_low_hanging_obstacles, filter_ledge_spans, filter_low_height_spans;
 };
+
+// Limits of Recast 1.5.1's voxel settings: compact spans store their height in
+// 8 bits (an agent taller than 255 cells never fits), erosion compares twice the
+// radius as an unsigned char, contour simplification squares maxEdgeLen in an
+// int, span heights have 13 bits; tiles are addressed with at most 22 bits.
+constexpr long long MAX_WALKABLE_HEIGHT = 255;
+constexpr long long MAX_WALKABLE_CLIMB = 255;
+constexpr long long MAX_WALKABLE_RADIUS = 127;
+constexpr long long MAX_EDGE_LEN_CELLS = 46340;
+constexpr long long MAX_GRID_SIDE = (1LL << 24) - 1;  // also the vertex-key limit of tiled builds
+constexpr long long MAX_TILES = 1LL << 22;
 
 void check_settings(const Settings& s) {
     auto positive = [](double v, const char* name) {
@@ -153,6 +165,7 @@ void check_settings(const Settings& s) {
     if (s.tile_size != -1 && s.tile_size != 0 && s.tile_size < MIN_TILE_SIZE)
         throw nb::value_error("Recast: tile_size must be None (automatic), 0 (solo) or >= 16 cells");
     if (s.threads < 0) throw nb::value_error("Recast: threads must be >= 0");
+    if (s.max_cells <= 0) throw nb::value_error("Recast: max_cells must be > 0");
 }
 
 // ---------------------------------------------------------------- one tile
@@ -207,9 +220,9 @@ void build_tile(const Input& in, const int* tris, int ntris, const rcConfig& c, 
     }
 
     // 2. Filter walkable surfaces.
-    rcFilterLowHangingWalkableObstacles(&ctx, c.walkableClimb, *solid);
-    rcFilterLedgeSpans(&ctx, c.walkableHeight, c.walkableClimb, *solid);
-    rcFilterWalkableLowHeightSpans(&ctx, c.walkableHeight, *solid);
+    if (s.filter_low_hanging_obstacles) rcFilterLowHangingWalkableObstacles(&ctx, c.walkableClimb, *solid);
+    if (s.filter_ledge_spans) rcFilterLedgeSpans(&ctx, c.walkableHeight, c.walkableClimb, *solid);
+    if (s.filter_low_height_spans) rcFilterWalkableLowHeightSpans(&ctx, c.walkableHeight, *solid);
 
     // 3. Compact heightfield, erosion by the agent radius.
     std::unique_ptr<rcCompactHeightfield, CompactDel> chf(rcAllocCompactHeightfield());
@@ -800,34 +813,85 @@ void NavMeshCore::build(const float* vin, int nv, const int* tin, int nt, const 
     // Configuration, derived from the world-unit settings as Recast's demo does.
     rcConfig& c = cfg;
     std::memset(&c, 0, sizeof(c));
-    c.cs = static_cast<float>(s.cell_size);
-    c.ch = static_cast<float>(s.cell_height);
+    // Single-precision arithmetic throughout, as Recast's demo computes it
+    // (e.g. floorf(0.4f / 0.05f) is 8 where floor(0.4 / 0.05f) is 7).
+    const float cs = static_cast<float>(s.cell_size), ch = static_cast<float>(s.cell_height);
+    const float cells_height = std::ceil(static_cast<float>(s.agent_height) / ch);
+    const float cells_climb = std::floor(static_cast<float>(s.agent_max_climb) / ch);
+    const float cells_radius = std::ceil(static_cast<float>(s.agent_radius) / cs);
+    const float cells_edge = static_cast<float>(s.edge_max_len) / cs;
+    const float min_area = static_cast<float>(s.region_min_size) * static_cast<float>(s.region_min_size);
+    const float merge_area = static_cast<float>(s.region_merge_size) * static_cast<float>(s.region_merge_size);
+    auto at_most = [](float v, long long limit, const char* what) {
+        if (!(v <= static_cast<float>(limit)))
+            throw nb::value_error((std::string("Recast: ") + what + " exceeds " + std::to_string(limit)).c_str());
+    };
+    at_most(cells_height, MAX_WALKABLE_HEIGHT, "agent_height / cell_height (cells)");
+    at_most(cells_climb, MAX_WALKABLE_CLIMB, "agent_max_climb / cell_height (cells)");
+    at_most(cells_radius, MAX_WALKABLE_RADIUS, "agent_radius / cell_size (cells)");
+    at_most(cells_edge, MAX_EDGE_LEN_CELLS, "edge_max_len / cell_size (cells)");
+    at_most(min_area, INT32_MAX, "region_min_size squared");
+    at_most(merge_area, INT32_MAX, "region_merge_size squared");
+    c.cs = cs;
+    c.ch = ch;
     c.walkableSlopeAngle = static_cast<float>(s.agent_max_slope);
-    c.walkableHeight = static_cast<int>(std::ceil(s.agent_height / c.ch));
-    c.walkableClimb = static_cast<int>(std::floor(s.agent_max_climb / c.ch));
-    c.walkableRadius = static_cast<int>(std::ceil(s.agent_radius / c.cs));
-    c.maxEdgeLen = static_cast<int>(s.edge_max_len / s.cell_size);
+    c.walkableHeight = static_cast<int>(cells_height);
+    c.walkableClimb = static_cast<int>(cells_climb);
+    c.walkableRadius = static_cast<int>(cells_radius);
+    c.maxEdgeLen = static_cast<int>(cells_edge);
     c.maxSimplificationError = static_cast<float>(s.edge_max_error);
-    c.minRegionArea = static_cast<int>(s.region_min_size * s.region_min_size);
-    c.mergeRegionArea = static_cast<int>(s.region_merge_size * s.region_merge_size);
+    c.minRegionArea = static_cast<int>(min_area);
+    c.mergeRegionArea = static_cast<int>(merge_area);
     c.maxVertsPerPoly = s.verts_per_poly;
-    c.detailSampleDist = s.detail_sample_dist < 0.9 ? 0.0f : static_cast<float>(s.cell_size * s.detail_sample_dist);
-    c.detailSampleMaxError = static_cast<float>(s.cell_height * s.detail_sample_max_error);
+    const float sample_dist = static_cast<float>(s.detail_sample_dist);
+    c.detailSampleDist = sample_dist < 0.9f ? 0.0f : cs * sample_dist;
+    c.detailSampleMaxError = ch * static_cast<float>(s.detail_sample_max_error);
     c.borderSize = 0;
     if (c.walkableHeight < 3) c.walkableHeight = 3;  // Recast's lower limit
     rcCalcBounds(vin, nv, c.bmin, c.bmax);
-    rcCalcGridSize(c.bmin, c.bmax, c.cs, &c.width, &c.height);
-    const long long cells = static_cast<long long>(c.width) * c.height;
-    if (c.width <= 0 || c.height <= 0) fail("empty grid (degenerate bounds)");
-    if (s.max_cells > 0 && cells > s.max_cells)
-        fail("grid of " + std::to_string(c.width) + " x " + std::to_string(c.height) +
-             " cells exceeds max_cells=" + std::to_string(s.max_cells) + "; use a larger cell_size");
+    // rcCalcGridSize's formula, in double so that no size overflows int
+    const double grid_w = std::floor(static_cast<double>(c.bmax[0] - c.bmin[0]) / cs + 0.5);
+    const double grid_h = std::floor(static_cast<double>(c.bmax[2] - c.bmin[2]) / cs + 0.5);
+    if (!(grid_w >= 1.0 && grid_h >= 1.0)) fail("empty grid (degenerate bounds)");
+    if (!(grid_w <= MAX_GRID_SIDE && grid_h <= MAX_GRID_SIDE))
+        throw nb::value_error(("Recast: grid sides exceed " + std::to_string(MAX_GRID_SIDE) + " cells").c_str());
+    if (!(static_cast<double>(c.bmax[1] - c.bmin[1]) / ch <= RC_SPAN_MAX_HEIGHT))
+        throw nb::value_error(("Recast: level height exceeds " + std::to_string(RC_SPAN_MAX_HEIGHT) +
+                               " cell heights").c_str());
+    c.width = static_cast<int>(grid_w);
+    c.height = static_cast<int>(grid_h);
 
     climb_tolerance = std::max(static_cast<float>(s.agent_max_climb), 2.0f * c.ch);
     const float r = std::max(static_cast<float>(2.0 * s.agent_radius), 2.0f * c.cs);
     default_ext[0] = r;
     default_ext[1] = std::max(static_cast<float>(s.agent_height), 2.0f * c.ch);
     default_ext[2] = r;
+
+    // max_cells bounds what one rasterisation allocates: the solo grid, or one
+    // tile with its border; a tiled build's tile grid is bounded by Detour's tile bits.
+    const long long border = c.walkableRadius + 3;
+    auto check_solo = [&]() {
+        const long long cells = static_cast<long long>(c.width) * c.height;
+        if (cells > s.max_cells)
+            fail("grid of " + std::to_string(c.width) + " x " + std::to_string(c.height) +
+                 " cells exceeds max_cells=" + std::to_string(s.max_cells) + "; use tiles or a larger cell_size");
+    };
+    auto check_tiled = [&](long long ts) {
+        const long long side = ts + 2 * border;
+        if (side * side > s.max_cells)
+            fail("tiles of " + std::to_string(side) + " x " + std::to_string(side) +
+                 " cells (with border) exceed max_cells=" + std::to_string(s.max_cells));
+        const long long count = ((c.width + ts - 1) / ts) * ((c.height + ts - 1) / ts);
+        if (count > MAX_TILES)
+            fail("grid of " + std::to_string(c.width) + " x " + std::to_string(c.height) + " cells needs " +
+                 std::to_string(count) + " tiles of " + std::to_string(ts) + " cells, more than " +
+                 std::to_string(MAX_TILES));
+    };
+    const bool auto_solo = c.width <= AUTO_SOLO_MAX_CELLS && c.height <= AUTO_SOLO_MAX_CELLS &&
+                           static_cast<long long>(c.width) * c.height <= s.max_cells;
+    if (s.tile_size == 0 || (s.tile_size < 0 && auto_solo)) check_solo();
+    if (s.tile_size > 0) check_tiled(s.tile_size);
+    if (s.tile_size < 0 && !auto_solo) check_tiled(AUTO_TILE_SIZE);
 
     const Input in{vin, nv, tin, nt};
     std::vector<std::unique_ptr<TileMesh>> tiles;
@@ -841,13 +905,16 @@ void NavMeshCore::build(const float* vin, int nv, const int* tin, int nt, const 
         }
     } else if (s.tile_size > 0) {
         tiles = build_tiled(in, s, s.tile_size);
-    } else if (c.width <= AUTO_SOLO_MAX_CELLS && c.height <= AUTO_SOLO_MAX_CELLS) {
+    } else if (auto_solo) {
         try {
             tiles = build_solo(in, s);
         } catch (const TooBigForSolo&) {
             auto_fallback = true;
         }
-        if (auto_fallback) tiles = build_tiled(in, s, AUTO_TILE_SIZE);
+        if (auto_fallback) {
+            check_tiled(AUTO_TILE_SIZE);
+            tiles = build_tiled(in, s, AUTO_TILE_SIZE);
+        }
     } else {
         tiles = build_tiled(in, s, AUTO_TILE_SIZE);
     }
@@ -865,11 +932,14 @@ NavMeshCore* build_navmesh(nb::ndarray<const V, nb::shape<-1, 3>, nb::c_contig, 
                            double agent_max_climb, double agent_max_slope, double region_min_size,
                            double region_merge_size, double edge_max_len, double edge_max_error,
                            int verts_per_poly, double detail_sample_dist, double detail_sample_max_error,
-                           long long max_cells, std::optional<int> tile_size, int threads) {
+                           long long max_cells, std::optional<int> tile_size, int threads,
+                           bool filter_low_hanging_obstacles, bool filter_ledge_spans,
+                           bool filter_low_height_spans) {
     Settings s{cell_size, cell_height, agent_height, agent_radius, agent_max_climb, agent_max_slope,
                region_min_size, region_merge_size, edge_max_len, edge_max_error, verts_per_poly,
                detail_sample_dist, detail_sample_max_error, max_cells,
-               tile_size ? *tile_size : -1, threads};
+               tile_size ? *tile_size : -1, threads,
+               filter_low_hanging_obstacles, filter_ledge_spans, filter_low_height_spans};
     if (tile_size && *tile_size < 0) throw nb::value_error("Recast: tile_size must be None (automatic), 0 (solo) or >= 16 cells");
     check_settings(s);
     const size_t nv = vertices.shape(0), nt = faces.shape(0);
@@ -905,13 +975,17 @@ void def_build(nb::module_& m) {
           nb::arg("region_merge_size") = 20.0, nb::arg("edge_max_len") = 12.0,
           nb::arg("edge_max_error") = 1.3, nb::arg("verts_per_poly") = 6,
           nb::arg("detail_sample_dist") = 6.0, nb::arg("detail_sample_max_error") = 1.0,
-          nb::arg("max_cells") = 400000000LL, nb::arg("tile_size") = nb::none(), nb::arg("threads") = 0,
+          nb::arg("max_cells") = 100000000LL, nb::arg("tile_size") = nb::none(), nb::arg("threads") = 0,
+          nb::arg("filter_low_hanging_obstacles") = true, nb::arg("filter_ledge_spans") = true,
+          nb::arg("filter_low_height_spans") = true,
           nb::rv_policy::take_ownership,
           "Build a navmesh from (N,3) vertices and (M,3) triangle faces. World-unit settings, "
           "derived into Recast's voxel configuration as Recast's demo does. tile_size: None "
           "(automatic: solo when both grid sides are <= 512 cells and the solo mesh fits, "
           "else tiles of 256 cells), 0 (solo) or the tile side in cells (>= 16). threads: "
-          "worker threads of a tiled build (0: hardware concurrency).");
+          "worker threads of a tiled build (0: hardware concurrency). max_cells: most xz cells "
+          "rasterised at once (the solo grid, or one tile with its border). filter_*: run Recast's "
+          "rcFilterLowHangingWalkableObstacles / rcFilterLedgeSpans / rcFilterWalkableLowHeightSpans.");
 }
 
 using Vec3In = std::array<double, 3>;

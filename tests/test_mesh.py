@@ -85,6 +85,24 @@ def test_supported_suffixes_are_documented_in_the_error(tmp_path):
         load_mesh(path)
 
 
+@pytest.mark.parametrize("suffix, encoding", [(".ply", "binary"), (".ply", "ascii"), (".stl", None), (".off", None)])
+def test_single_mesh_files_skip_the_scene_and_read_the_same_arrays(tmp_path, suffix, encoding):
+    source = trimesh.creation.icosphere(subdivisions=2)
+    path = tmp_path / f"m{suffix}"
+    source.export(path, **({"encoding": encoding} if encoding else {}))
+    mesh, info = load_mesh(path)
+    reference = trimesh.load(path, force="mesh", process=False)
+    assert np.array_equal(mesh.vertices, reference.vertices) and np.array_equal(mesh.faces, reference.faces)
+    assert info.faces == len(source.faces)
+
+
+def test_a_ply_point_cloud_is_still_refused(tmp_path):
+    path = tmp_path / "points.ply"
+    trimesh.PointCloud(np.random.default_rng(0).random((10, 3))).export(path)
+    with pytest.raises(MeshError, match="points.ply: the mesh is empty"):
+        load_mesh(path)
+
+
 # --- sample:NAME?param=value levels, from the installed level generators ---------------
 
 

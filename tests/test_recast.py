@@ -12,7 +12,7 @@ import pydantic
 import pytest
 import trimesh
 
-from g2s_plugins.recast import FLT_MAX, NavMesh, RecastParams, build_navmesh, resolve_settings
+from g2s_plugins.recast import FLT_MAX, NavMesh, RecastParams, SettingsError, _recast, build_navmesh, resolve_settings
 
 AGENT = types.SimpleNamespace(radius=0.3, height=2.0, max_climb=0.4, max_slope=45.0)
 
@@ -167,8 +167,17 @@ def test_bad_inputs_raise_value_errors():
 
 
 def test_grid_guard_names_the_problem():
-    with pytest.raises(RuntimeError, match="Recast: grid .* exceeds max_cells"):
+    with pytest.raises(SettingsError, match="graph.params.max_cells: a tile of 256 cells .* more than "
+                       "graph.params.max_cells=100"):
         build(floor(10, 10), max_cells=100)
+    with pytest.raises(SettingsError, match="graph.params.tile_size: a solo grid of 67 x 67 cells"):
+        build(floor(10, 10), max_cells=100, tile_size=0)
+    # the automatic mode tiles a level whose solo grid exceeds the guard
+    assert build(floor(60, 60), max_cells=100_000).tile_size == 256  # 400 x 400 cells
+    # the extension refuses the same on its own, computed without int overflow
+    with pytest.raises(RuntimeError, match="Recast: grid of 67 x 67 cells exceeds max_cells=100"):
+        _recast.build(floor(10, 10).vertices, floor(10, 10).faces, **{**resolve_settings(AGENT), "max_cells": 100,
+                                                                     "tile_size": 0})
 
 
 # ------------------------------------------------------------------ parameters
@@ -472,7 +481,6 @@ def test_tile_size_validation_and_empty_tiles():
         RecastParams(tile_size=8)
     with pytest.raises(pydantic.ValidationError):
         RecastParams(tile_size=-1)
-    from g2s_plugins.recast import _recast
 
     mesh = floor(10, 10)
     with pytest.raises(ValueError, match="tile_size"):
@@ -536,3 +544,71 @@ def test_level_too_big_for_solo_is_tiled_automatically(capsys):
     door_row = 4.0 + 8.0 * 20
     assert nm.raycast((1.0, 0, door_row), (351.0, 0, door_row))[0]
     assert not nm.raycast((1.0, 0, 1.0), (351.0, 0, 1.0 + 8.0))[0]
+
+
+# ------------------------------------------------------------------ Recast's arithmetic and filters
+
+
+@pytest.mark.parametrize("ch", [0.05, 0.1, 0.15, 0.2, 0.03])
+@pytest.mark.parametrize("cs", [0.133, 0.15, 0.3, 0.1])
+def test_voxel_values_match_recasts_single_precision(cs, ch):
+    f = np.float32
+    agent = types.SimpleNamespace(radius=0.4, height=2.0, max_climb=0.4, max_slope=45.0)
+    for climb in (0.4, 0.5, 0.3, 0.45, 0.6):
+        agent.max_climb = climb
+        params = RecastParams(cell_size=cs, cell_height=ch)
+        c = build_navmesh(floor(6, 6).vertices, floor(6, 6).faces, agent, params).config()
+        # RecastDemo's Sample_SoloMesh: every conversion in float
+        assert c["walkableClimb"] == int(np.floor(f(climb) / f(ch))), (cs, ch, climb)
+        assert c["walkableHeight"] == max(int(np.ceil(f(2.0) / f(ch))), 3)
+        assert c["walkableRadius"] == int(np.ceil(f(0.4) / f(cs)))
+        assert c["maxEdgeLen"] == int(f(12.0) / f(cs))
+        assert c["minRegionArea"] == int(f(8.0) * f(8.0)) and c["mergeRegionArea"] == int(f(20.0) * f(20.0))
+        assert c["detailSampleDist"] == pytest.approx(float(f(cs) * f(6.0)), rel=1e-7)
+        assert c["detailSampleMaxError"] == pytest.approx(float(f(ch) * f(1.0)), rel=1e-7)
+    # the cases that double arithmetic got wrong: 0.4 / 0.05 and 0.5 / 0.05
+    assert int(np.floor(f(0.4) / f(0.05))) == 8 and int(np.floor(f(0.5) / f(0.05))) == 10
+
+
+def stairs(riser: float, steps: int = 10, tread: float = 0.25, width: float = 1.6) -> tuple[trimesh.Trimesh, float, float]:
+    """A lower floor (x < 0), ``steps`` solid steps up along +x, an upper deck; (mesh, deck height, deck start x)."""
+    parts = [slab((6.0, 0.2, width), (-3.0, -0.1, width / 2))]
+    for i in range(steps):
+        top = (i + 1) * riser
+        parts.append(slab((tread, top + 0.2, width), ((i + 0.5) * tread, top / 2 - 0.1, width / 2)))
+    deck, start = steps * riser, steps * tread
+    parts.append(slab((6.0, 0.2, width), (start + 3.0, deck - 0.1, width / 2)))
+    return trimesh.util.concatenate(parts), deck, start
+
+
+def floors_joined(mesh: trimesh.Trimesh, deck: float, start: float, width: float, **params) -> bool:
+    agent = types.SimpleNamespace(radius=0.4, height=2.0, max_climb=0.4, max_slope=60.0)
+    try:
+        nm = build(mesh, agent, cell_size=0.133, cell_height=0.05, **params)
+    except RuntimeError:  # nothing walkable left
+        return False
+    g = nx.Graph()
+    g.add_nodes_from(range(nm.polygon_count))
+    g.add_edges_from(nm.portals().pairs.tolist())
+    a, b = nm.nearest_poly((-3.0, 0.0, width / 2))[0], nm.nearest_poly((start + 3.0, deck, width / 2))[0]
+    return a >= 0 and b >= 0 and nx.has_path(g, a, b)
+
+
+@pytest.mark.parametrize("riser", [0.245, 0.25])
+def test_ledge_filter_cuts_stairs_and_can_be_switched_off(riser):
+    # map-piece agent and grid (configs/map_piece.yaml); measured on 40 stair cases
+    # in docs/navmesh.md: the ledge filter cuts most narrow ones
+    mesh, deck, start = stairs(riser)
+    assert not floors_joined(mesh, deck, start, 1.6)
+    assert floors_joined(mesh, deck, start, 1.6, filter_ledge_spans=False)
+    # switching the filter off does not make a step higher than max_climb walkable
+    high, deck, start = stairs(0.45)
+    assert not floors_joined(high, deck, start, 1.6, filter_ledge_spans=False)
+
+
+def test_filter_switches_reach_recast():
+    # a floor with a 0.3 m box: the ledge filter trims the box top and the floor's rim
+    mesh = trimesh.util.concatenate([floor(10, 10), slab((3.0, 0.3, 3.0), (0.0, 0.15, 0.0))])
+    on = build(mesh)
+    off = build(mesh, filter_low_hanging_obstacles=False, filter_ledge_spans=False, filter_low_height_spans=False)
+    assert off.areas.sum() > on.areas.sum() * 1.02

@@ -21,7 +21,7 @@ import numpy as np
 
 from g2s_core.errors import G2SError
 from g2s_core.plugin import hookimpl
-from g2s_plugins.recast import NavMesh, RecastParams, build_navmesh
+from g2s_plugins.recast import NavMesh, RecastParams, SettingsError, build_navmesh
 
 NAME = "navmesh"
 
@@ -61,20 +61,40 @@ def g2s_build_graph(mesh, params, context):
     """Build the navmesh of ``mesh`` for ``context.agent`` and return its polygon graph.
 
     Raises:
-        G2SError: the mesh has no surface this agent can walk (a property of
-            the input and the agent settings, not a failure of the program).
+        G2SError: a setting or the level's size that Recast cannot handle
+            (naming the key), a Recast step that fails on this input, or no
+            surface this agent can walk: properties of the input and the
+            settings, not failures of the program.
     """
     params = params if params is not None else Params()
     try:
         navmesh = build_navmesh(mesh.vertices, mesh.faces, context.agent, params)
+    except SettingsError as exc:
+        raise G2SError(str(exc)) from exc
     except RuntimeError as exc:
         if "no walkable" not in str(exc):
-            raise
+            raise G2SError(
+                f"graph.params: {exc}; try another cell_size or tile_size (see docs/navmesh.md)"
+            ) from exc
         agent = context.agent
         raise G2SError(
             f"no walkable surface for the agent (radius {agent.radius} m, height {agent.height} m, "
             f"max climb {agent.max_climb} m, max slope {agent.max_slope} deg): {exc}; "
-            "check the agent settings and the mesh's up_axis and scale"
+            f"{_up_axis_hint(mesh, agent.max_slope)}"
         ) from exc
     context.navmesh = navmesh
     return navmesh_graph(navmesh)
+
+
+def _up_axis_hint(mesh, max_slope: float) -> str:
+    """What to check when nothing is walkable: the up axis when the faces that
+    could be floors face along z rather than y, else the agent and the scale."""
+    normals = np.asarray(mesh.face_normals)
+    areas = np.asarray(mesh.area_faces)
+    level = np.cos(np.radians(max_slope))
+    along_y = areas[np.abs(normals[:, 1]) >= level].sum()
+    along_z = areas[np.abs(normals[:, 2]) >= level].sum()
+    if along_z > along_y:
+        return ("most flat faces face along z, not y: if the file is Z-up, set `mesh: {up_axis: z}` "
+                "(or `y` if it is already z)")
+    return "check the agent settings and the mesh's up_axis and scale"

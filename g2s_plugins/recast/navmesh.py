@@ -1,0 +1,261 @@
+"""The built navmesh: its arrays, shared edges (portals) and Detour queries.
+
+:class:`NavMesh` wraps the extension's ``NavMeshCore`` (one Detour tile, or
+several joined): it copies the mesh arrays once, computes per-polygon centres,
+normals and areas with numpy, and forwards raycasts and nearest-polygon
+look-ups to Detour. Coordinates are metres with Y up, as in the mesh.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from . import _recast
+
+__all__ = ["NavMesh", "Portals", "FLT_MAX", "DT_VERTS_PER_POLYGON"]
+
+FLT_MAX = float(np.finfo(np.float32).max)
+"""Detour's ``FLT_MAX``: the raycast ``t`` when the ray reached its end point."""
+
+DT_VERTS_PER_POLYGON: int = int(_recast.DT_VERTS_PER_POLYGON)
+"""Detour's largest polygon (vertices)."""
+
+
+@dataclass(frozen=True)
+class Portals:
+    """The shared edges of a navmesh, each adjacent polygon pair once, sorted by (a, b).
+
+    Within a tile two polygons share a whole edge: ``endpoints`` are its two
+    vertices, in the order of ``a``'s edge (the first such edge of ``a`` when
+    they share several). Across a tile border an edge of ``a`` may touch
+    several polygons of the next tile: each pair is listed with the part of
+    the border they share, whose end points are vertices of ``a`` or ``b``
+    (the overlap of their two collinear edges), in the direction of ``a``'s edge.
+
+    Attributes:
+        pairs: (E,2) int64, polygon indices ``a < b``.
+        endpoints: (E,2,3) float64, the shared segment's end points, metres.
+        widths: (E,) float64, the shared segment's length, metres.
+    """
+
+    pairs: np.ndarray
+    endpoints: np.ndarray
+    widths: np.ndarray
+
+
+class NavMesh:
+    """A built navmesh (one Detour tile, or several joined) and its queries.
+
+    Arrays (copies taken once from the extension, metres, Y up):
+
+    ``vertices``        (V,3) float64, polygon vertices.
+    ``polygons``        (P,nvp) int32, vertex indices, padded with -1.
+    ``neighbours``      (P,nvp) int32, polygon across edge j (vertex j -> j+1,
+                        wrapping), -1 at the boundary. From Detour's links:
+                        a tile-border edge touching several polygons lists
+                        the one sharing the longest part (ties: lowest
+                        index), so there ``i`` may list ``k`` while ``k``
+                        lists another polygon; :meth:`portals` has every pair.
+    ``area_ids``        (P,) int32, Recast area ids (63 = walkable).
+    ``region_ids``      (P,) int32, Recast region ids (per tile, offset to
+                        stay unique; regions stop at tile borders).
+    ``detail_vertices`` (DV,3) float64, the height-detail mesh vertices.
+    ``detail_triangles`` (DT,3) int32, indices into ``detail_vertices``.
+    ``detail_polygon``  (DT,) int32, polygon owning each detail triangle.
+    ``centres``         (P,3) float64, polygon centroid (xz) lifted onto the
+                        polygon's detail surface.
+    ``normals``         (P,3) float64, area-weighted unit normal of the
+                        polygon's detail triangles, +Y side.
+    ``areas``           (P,) float64, m², sum of the detail triangle areas.
+
+    Polygon index ``i`` is Detour polygon ``poly_ref(i)``. Polygons are
+    numbered tile by tile (row-major tiles); tiles share equal border vertices.
+    """
+
+    def __init__(self, core: Any, settings: dict[str, Any]):
+        self.core = core
+        self.settings = dict(settings)
+        self.vertices: np.ndarray = core.vertices
+        self.polygons: np.ndarray = core.polygons
+        self.neighbours: np.ndarray = core.neighbours
+        self.area_ids: np.ndarray = core.area_ids
+        self.region_ids: np.ndarray = core.region_ids
+        self.detail_vertices: np.ndarray = core.detail_vertices
+        self.detail_triangles: np.ndarray = core.detail_triangles
+        self.detail_polygon: np.ndarray = core.detail_polygon
+        self.centres, self.normals, self.areas = _surface(
+            self.polygon_count, self.vertices, self.polygons,
+            self.detail_vertices, self.detail_triangles, self.detail_polygon,
+        )
+        self._portals: Portals | None = None
+
+    # ------------------------------------------------------------ sizes
+    @property
+    def polygon_count(self) -> int:
+        """Number of polygons P."""
+        return int(self.core.polygon_count)
+
+    @property
+    def nvp(self) -> int:
+        """Max vertices per polygon (the width of ``polygons``)."""
+        return int(self.core.nvp)
+
+    @property
+    def tile_size(self) -> int:
+        """Tile side in cells; 0 for a solo navmesh."""
+        return int(self.core.tile_size)
+
+    @property
+    def tile_count(self) -> int:
+        """Number of Detour tiles holding polygons (1 for a solo navmesh)."""
+        return int(self.core.tile_count)
+
+    @property
+    def tile_first_polygon(self) -> np.ndarray:
+        """(T,) int32, the index of each tile's first polygon (tiles in row-major order)."""
+        return self.core.tile_first_polygon
+
+    @property
+    def build_seconds(self) -> float:
+        """Wall time of the C++ build (Recast + Detour), seconds."""
+        return float(self.core.build_seconds)
+
+    def config(self) -> dict[str, Any]:
+        """Recast's resolved ``rcConfig`` (voxel units, whole grid size, bounds) and the
+        tiling: ``tileSize`` (0: solo), ``borderSize``, ``tileGrid``, ``tiles``, ``autoTiled``."""
+        return dict(self.core.config())
+
+    def stats(self) -> dict[str, Any]:
+        """Sizes and timing: polygons, vertices, detail triangles, tiles, cell size/height, seconds."""
+        return {
+            "polygons": self.polygon_count,
+            "vertices": int(len(self.vertices)),
+            "detail_vertices": int(len(self.detail_vertices)),
+            "detail_triangles": int(len(self.detail_triangles)),
+            "portals": int(len(self.portals().pairs)),
+            "cell_size": self.settings["cell_size"],
+            "cell_height": self.settings["cell_height"],
+            "tile_size": self.tile_size,
+            "tiles": self.tile_count,
+            "area_m2": float(self.areas.sum()),
+            "build_seconds": self.build_seconds,
+        }
+
+    # ------------------------------------------------------------ topology
+    def portals(self) -> Portals:
+        """The shared polygon edges, every adjacent pair once (from Detour's links, computed at build)."""
+        if self._portals is None:
+            pairs = np.asarray(self.core.portal_pairs, dtype=np.int64).reshape(-1, 2)
+            endpoints = np.asarray(self.core.portal_endpoints, dtype=np.float64).reshape(-1, 2, 3)
+            widths = np.linalg.norm(endpoints[:, 1] - endpoints[:, 0], axis=1)
+            self._portals = Portals(pairs=pairs, endpoints=endpoints, widths=widths)
+        return self._portals
+
+    # ------------------------------------------------------------ queries
+    @property
+    def default_extents(self) -> tuple[float, float, float]:
+        """Half extents of the nearest-polygon search when none are given:
+        ``(max(2r, 2cs), max(h, 2ch), max(2r, 2cs))`` for agent radius r, height h."""
+        return tuple(float(v) for v in self.core.default_extents)  # type: ignore[return-value]
+
+    @property
+    def climb_tolerance(self) -> float:
+        """Vertical tolerance of the raycast end check: ``max(agent max climb, 2 cell heights)``, m."""
+        return float(self.core.climb_tolerance)
+
+    def raycast(self, a, b, extents=None) -> tuple[bool, float]:
+        """Whether the straight walk from ``a`` to ``b`` along the navmesh is clear.
+
+        Starts on the polygon nearest ``a`` (within ``extents`` half extents,
+        default :attr:`default_extents`) and runs Detour's ``raycast`` towards
+        ``b``. ``clear`` is True when the ray reaches ``b`` (``t == FLT_MAX``)
+        and the polygon it ends in has its surface at ``b``'s x,z within
+        :attr:`climb_tolerance` of ``b.y``. ``t`` is Detour's hit parameter
+        (fraction of a->b where a wall was hit, ``FLT_MAX`` when not hit; 0
+        when ``a`` is on no polygon).
+        """
+        clear, t = self.core.raycast(_vec(a), _vec(b), None if extents is None else _vec(extents))
+        return bool(clear), float(t)
+
+    def raycast_many(self, A, B, extents=None) -> np.ndarray:
+        """(N,) bool: ``raycast(A[i], B[i])[0]`` for (N,3) ``A`` and ``B``, looped in C++."""
+        A = np.ascontiguousarray(A, dtype=np.float64).reshape(-1, 3)
+        B = np.ascontiguousarray(B, dtype=np.float64).reshape(-1, 3)
+        return self.core.raycast_many(A, B, None if extents is None else _vec(extents))
+
+    def nearest_poly(self, p, extents=None) -> tuple[int, np.ndarray]:
+        """(polygon index, (3,) nearest point on it) within the half ``extents``; (-1, p) if none."""
+        idx, point = self.core.nearest_poly(_vec(p), None if extents is None else _vec(extents))
+        return int(idx), point
+
+    def poly_ref(self, index: int) -> int:
+        """Detour ``dtPolyRef`` of polygon ``index``."""
+        return int(self.core.poly_ref(int(index)))
+
+    def poly_index(self, ref: int) -> int:
+        """Polygon index of a Detour ``dtPolyRef`` (-1 for 0)."""
+        return int(self.core.poly_index(int(ref)))
+
+    def __repr__(self) -> str:
+        return f"NavMesh(polygons={self.polygon_count}, vertices={len(self.vertices)})"
+
+
+# ---------------------------------------------------------------- numpy helpers
+
+def _vec(p) -> tuple[float, float, float]:
+    # unpacking rather than numpy: called once per raycast, on a tuple or (3,) array
+    x, y, z = p
+    return (float(x), float(y), float(z))
+
+
+def _surface(P, verts, polys, dverts, dtris, owner):
+    """Per-polygon centres, normals and areas from the detail triangles (vectorised)."""
+    p0, p1, p2 = dverts[dtris[:, 0]], dverts[dtris[:, 1]], dverts[dtris[:, 2]]
+    cross = np.cross(p1 - p0, p2 - p0)                 # 2 * area * normal
+    cross[cross[:, 1] < 0] *= -1.0                     # +Y side
+    tri_area = 0.5 * np.linalg.norm(cross, axis=1)
+    areas = np.bincount(owner, weights=tri_area, minlength=P)
+    nsum = np.stack([np.bincount(owner, weights=cross[:, k], minlength=P) for k in range(3)], axis=1)
+    nlen = np.linalg.norm(nsum, axis=1)
+    normals = np.tile(np.array([0.0, 1.0, 0.0]), (P, 1))
+    ok = nlen > 0
+    normals[ok] = nsum[ok] / nlen[ok, None]
+
+    # Polygon centroid in xz: projected-area-weighted triangle centroids.
+    proj = 0.5 * np.abs(cross[:, 1])
+    cen = (p0 + p1 + p2) / 3.0
+    wsum = np.bincount(owner, weights=proj, minlength=P)
+    cx = np.bincount(owner, weights=proj * cen[:, 0], minlength=P)
+    cz = np.bincount(owner, weights=proj * cen[:, 2], minlength=P)
+    valid = polys >= 0
+    cnt = np.maximum(valid.sum(axis=1), 1)
+    pv = verts[np.where(valid, polys, 0)] * valid[..., None]
+    vmean = pv.sum(axis=1) / cnt[:, None]
+    good = wsum > 0
+    centres = vmean.copy()
+    centres[good, 0] = cx[good] / wsum[good]
+    centres[good, 2] = cz[good] / wsum[good]
+
+    # Lift onto the detail triangle under/over the centroid: barycentric
+    # coordinates of the owner's centroid in every triangle, best one per polygon.
+    qx, qz = centres[owner, 0], centres[owner, 2]
+    d = (p1[:, 2] - p2[:, 2]) * (p0[:, 0] - p2[:, 0]) + (p2[:, 0] - p1[:, 0]) * (p0[:, 2] - p2[:, 2])
+    safe = np.where(np.abs(d) > 1e-12, d, 1.0)
+    l0 = ((p1[:, 2] - p2[:, 2]) * (qx - p2[:, 0]) + (p2[:, 0] - p1[:, 0]) * (qz - p2[:, 2])) / safe
+    l1 = ((p2[:, 2] - p0[:, 2]) * (qx - p2[:, 0]) + (p0[:, 0] - p2[:, 0]) * (qz - p2[:, 2])) / safe
+    lam = np.stack([l0, l1, 1.0 - l0 - l1], axis=1)
+    score = np.where(np.abs(d) > 1e-12, lam.min(axis=1), -np.inf)
+    order = np.lexsort((score, owner))
+    os_ = owner[order]
+    last = np.r_[os_[1:] != os_[:-1], True]
+    best = np.full(P, -1, dtype=np.int64)
+    best[os_[last]] = order[last]
+    has = best >= 0
+    b = best[has]
+    lb = np.clip(lam[b], 0.0, None)
+    lb /= np.maximum(lb.sum(axis=1, keepdims=True), 1e-300)
+    centres[has, 1] = lb[:, 0] * p0[b, 1] + lb[:, 1] * p1[b, 1] + lb[:, 2] * p2[b, 1]
+    return centres, normals, areas

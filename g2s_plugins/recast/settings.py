@@ -1,0 +1,241 @@
+"""Recast build parameters and the voxel settings derived from them.
+
+:class:`RecastParams` declares every build parameter (the ``navmesh`` graph
+builder's ``graph.params``). :func:`resolve_settings` turns them and the
+agent into the world-unit keyword arguments of the extension's ``build``,
+and refuses, naming the key at fault, any value Recast cannot use.
+
+Cell size rule (when ``cell_size`` / ``cell_height`` are ``None``)::
+
+    cell_size   = clamp(agent.radius / 2, 0.05, 1.0)
+    cell_height = cell_size / 2, capped at agent.max_climb / 2 when max_climb > 0,
+                  and at least 0.01
+
+Voxel values are derived in single precision exactly as Recast's demo does
+(:func:`voxel_config`): ``walkableHeight = ceilf(height / ch)`` (at least 3),
+``walkableClimb = floorf(max_climb / ch)``, ``walkableRadius = ceilf(radius / cs)``,
+``maxEdgeLen = (int)(edge_max_len / cs)``, ``minRegionArea = (int)(region_min_size²)``,
+``mergeRegionArea = (int)(region_merge_size²)``,
+``detailSampleDist = 0 if detail_sample_dist < 0.9 else cs * detail_sample_dist``,
+``detailSampleMaxError = ch * detail_sample_max_error``.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+from pydantic import ConfigDict, Field, field_validator
+
+from g2s_core.plugin import PluginParams
+
+__all__ = ["RecastParams", "SettingsError", "resolve_settings", "voxel_config", "VOXEL_LIMITS"]
+
+MIN_TILE_SIZE = 16
+"""Smallest tile side (cells) of a tiled build."""
+
+MAX_GRID_SIDE = (1 << 24) - 1
+"""Most cells along one side of the whole xz grid (the extension's vertex keys)."""
+
+MAX_TILES = 1 << 22
+"""Most tiles of a tiled build: Detour addresses tiles and polygons with 22 bits together."""
+
+MAX_SPAN_HEIGHT = (1 << 13) - 1
+"""Recast's ``RC_SPAN_MAX_HEIGHT``: the level's height in cell heights."""
+
+VOXEL_LIMITS = {"walkableHeight": 255, "walkableClimb": 255, "walkableRadius": 127, "maxEdgeLen": 46340}
+"""Largest voxel values Recast 1.5.1 handles: compact spans store heights in 8
+bits (a taller agent never fits anywhere), erosion compares twice the radius as
+an unsigned char, contour simplification squares ``maxEdgeLen`` in an int."""
+
+_MAX_REGION_SIZE = 46340  # its square still fits Recast's int region areas
+
+
+class SettingsError(ValueError):
+    """A setting Recast cannot use; the message starts with the run-config key at fault
+    (``agent.radius``, ``graph.params.cell_height``, ``mesh.scale`` ...)."""
+
+
+class RecastParams(PluginParams):
+    """Recast build parameters (defaults: Recast demo's, cell sizes from the agent).
+
+    Sizes are in metres unless noted; region sizes and the detail sample
+    distance are in cells, the detail error in cell heights, as in Recast's demo.
+    The agent's ``radius``, ``height``, ``max_climb`` and ``max_slope`` come
+    from the run's agent config; the ``agent_*`` fields override them.
+    """
+
+    model_config = ConfigDict(allow_inf_nan=False)
+
+    cell_size: float | None = Field(
+        None, gt=0, description="xz voxel size, m; None: agent radius / 2 clamped to [0.05, 1]"
+    )
+    cell_height: float | None = Field(
+        None, gt=0, description="y voxel size, m; None: cell_size / 2, at most max_climb / 2, at least 0.01"
+    )
+    agent_height: float | None = Field(None, gt=0, description="override of the agent's height, m")
+    agent_radius: float | None = Field(None, ge=0, description="override of the agent's radius, m")
+    agent_max_climb: float | None = Field(None, ge=0, description="override of the agent's max step height, m")
+    agent_max_slope: float | None = Field(
+        None, ge=0, lt=90, description="override of the agent's max walkable slope, degrees"
+    )
+    region_min_size: float = Field(
+        8.0, ge=0, le=_MAX_REGION_SIZE, description="regions smaller than this² cells are removed, cells"
+    )
+    region_merge_size: float = Field(
+        20.0, ge=0, le=_MAX_REGION_SIZE, description="regions smaller than this² cells merge into neighbours, cells"
+    )
+    edge_max_len: float = Field(12.0, ge=0, description="max contour edge length, m (0: unlimited)")
+    edge_max_error: float = Field(1.3, ge=0, description="max contour simplification error, cells")
+    verts_per_poly: int = Field(6, ge=3, le=6, description="max vertices per polygon (Detour allows 3..6)")
+    detail_sample_dist: float = Field(
+        6.0, ge=0, description="detail mesh sample spacing, cells (< 0.9: no sampling)"
+    )
+    detail_sample_max_error: float = Field(
+        1.0, ge=0, description="max detail mesh height error, cell heights"
+    )
+    filter_low_hanging_obstacles: bool = Field(
+        True, description="Recast's rcFilterLowHangingWalkableObstacles: walk onto obstacles up to max_climb high"
+    )
+    filter_ledge_spans: bool = Field(
+        True,
+        description="Recast's rcFilterLedgeSpans: drop spans next to a drop deeper than max_climb "
+        "(also removes stair treads whose risers are close to max_climb)",
+    )
+    filter_low_height_spans: bool = Field(
+        True, description="Recast's rcFilterWalkableLowHeightSpans: drop spans with less head room than the agent"
+    )
+    max_cells: int = Field(
+        100_000_000,
+        gt=0,
+        le=1 << 34,
+        description="refuse to rasterise more xz cells at once (the solo grid, or one tile with its border): "
+        "memory guard",
+    )
+    tile_size: int | None = Field(
+        None,
+        ge=0,
+        le=MAX_GRID_SIDE,
+        description="tile side, cells (>= 16); None: solo up to 512 x 512 cells when it fits, "
+        "else tiles of 256; 0: always solo",
+    )
+
+    @field_validator("tile_size")
+    @classmethod
+    def _tile_size_rule(cls, value: int | None) -> int | None:
+        if value is not None and 0 < value < MIN_TILE_SIZE:
+            raise ValueError(f"tile_size must be 0 (solo) or >= {MIN_TILE_SIZE} cells")
+        return value
+
+
+def voxel_config(settings: dict[str, Any]) -> dict[str, float]:
+    """Recast's voxel values from world-unit ``settings`` (:func:`resolve_settings`'s
+    output), in float32 arithmetic as Recast's demo computes them; not yet
+    truncated to int, so that a value too large for an int can be recognised."""
+    f = np.float32
+    cs, ch = f(settings["cell_size"]), f(settings["cell_height"])
+    with np.errstate(over="ignore"):
+        return {
+            "cs": cs,
+            "ch": ch,
+            "walkableHeight": max(np.ceil(f(settings["agent_height"]) / ch), f(3)),
+            "walkableClimb": np.floor(f(settings["agent_max_climb"]) / ch),
+            "walkableRadius": np.ceil(f(settings["agent_radius"]) / cs),
+            "maxEdgeLen": np.trunc(f(settings["edge_max_len"]) / cs),
+            "minRegionArea": np.trunc(f(settings["region_min_size"]) * f(settings["region_min_size"])),
+            "mergeRegionArea": np.trunc(f(settings["region_merge_size"]) * f(settings["region_merge_size"])),
+            "detailSampleDist": f(0) if f(settings["detail_sample_dist"]) < f(0.9)
+            else cs * f(settings["detail_sample_dist"]),
+            "detailSampleMaxError": ch * f(settings["detail_sample_max_error"]),
+        }
+
+
+_PARAMS = "graph.params."
+
+
+def resolve_settings(agent: Any, params: RecastParams | None = None) -> dict[str, Any]:
+    """The world-unit settings passed to the extension, with the cell sizes resolved.
+
+    ``agent`` has ``radius``, ``height``, ``max_climb`` (m) and ``max_slope``
+    (degrees). Returns a dict of the keyword arguments of ``_recast.build``.
+
+    Raises:
+        SettingsError: a voxel value beyond :data:`VOXEL_LIMITS` (the key blamed
+            is the cell size when it was set, else the agent's value).
+    """
+    p = params or RecastParams()
+    keys: dict[str, str] = {}
+
+    def pick(override: float | None, name: str) -> float:
+        if override is not None:
+            keys[name] = f"{_PARAMS}agent_{name}"
+            return float(override)
+        keys[name] = f"agent.{name}"
+        value = float(getattr(agent, name))
+        if not np.isfinite(value):
+            raise SettingsError(f"agent.{name}: expected a finite number, got {value}")
+        return value
+
+    height = pick(p.agent_height, "height")
+    radius = pick(p.agent_radius, "radius")
+    climb = pick(p.agent_max_climb, "max_climb")
+    slope = pick(p.agent_max_slope, "max_slope")
+    cs = p.cell_size if p.cell_size is not None else min(max(radius / 2.0, 0.05), 1.0)
+    if p.cell_height is not None:
+        ch = p.cell_height
+    else:
+        ch = cs / 2.0
+        if climb > 0:
+            ch = min(ch, climb / 2.0)
+        ch = max(ch, 0.01)
+    settings = dict(
+        cell_size=float(cs),
+        cell_height=float(ch),
+        agent_height=height,
+        agent_radius=radius,
+        agent_max_climb=climb,
+        agent_max_slope=slope,
+        region_min_size=float(p.region_min_size),
+        region_merge_size=float(p.region_merge_size),
+        edge_max_len=float(p.edge_max_len),
+        edge_max_error=float(p.edge_max_error),
+        verts_per_poly=int(p.verts_per_poly),
+        detail_sample_dist=float(p.detail_sample_dist),
+        detail_sample_max_error=float(p.detail_sample_max_error),
+        max_cells=int(p.max_cells),
+        tile_size=None if p.tile_size is None else int(p.tile_size),
+        filter_low_hanging_obstacles=bool(p.filter_low_hanging_obstacles),
+        filter_ledge_spans=bool(p.filter_ledge_spans),
+        filter_low_height_spans=bool(p.filter_low_height_spans),
+    )
+    _check_voxels(settings, keys, cs_given=p.cell_size is not None, ch_given=p.cell_height is not None)
+    return settings
+
+
+def _check_voxels(settings: dict[str, Any], keys: dict[str, str], cs_given: bool, ch_given: bool) -> None:
+    voxels = voxel_config(settings)
+    cs, ch = settings["cell_size"], settings["cell_height"]
+    # voxel value: (agent setting, the cell key, whether that cell size was set, the cell size)
+    rows = {
+        "walkableHeight": ("height", f"{_PARAMS}cell_height", ch_given, ch),
+        "walkableClimb": ("max_climb", f"{_PARAMS}cell_height", ch_given, ch),
+        "walkableRadius": ("radius", f"{_PARAMS}cell_size", cs_given, cs),
+    }
+    for name, (what, cell_key, given, cell) in rows.items():
+        cells, limit = float(voxels[name]), VOXEL_LIMITS[name]
+        if cells <= limit:
+            continue
+        value = settings[f"agent_{what}"]
+        key = cell_key if given else keys[what]
+        raise SettingsError(
+            f"{key}: the agent's {what.replace('_', ' ')} of {value:g} m is {cells:.4g} cells of {cell:g} m "
+            f"({cell_key}); Recast handles at most {limit}: use cells of at least {value / limit:.4g} m "
+            f"or a smaller agent {what.replace('_', ' ')}"
+        )
+    edge = float(voxels["maxEdgeLen"])
+    if edge > VOXEL_LIMITS["maxEdgeLen"]:
+        key = f"{_PARAMS}cell_size" if cs_given else f"{_PARAMS}edge_max_len"
+        raise SettingsError(
+            f"{key}: edge_max_len {settings['edge_max_len']:g} m is {edge:.4g} cells of {cs:g} m; Recast "
+            f"handles at most {VOXEL_LIMITS['maxEdgeLen']} (0 means unlimited)"
+        )
