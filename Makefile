@@ -10,13 +10,14 @@ DEB_PACKAGES := librecast-dev cmake g++ make
 # chromium: the headless browser tests/test_html_report.py drives (make test only)
 TEST_DEB_PACKAGES := chromium
 README_IMAGE := docs/images/demo-heatmap.png
+REGIONS_IMAGE := docs/images/regions-dungeon.png
 # the Khronos glTF validator tests/test_gltf.py runs (make test only), from npm into the venv
 GLTF_VALIDATOR := $(VENV)/node/node_modules/gltf-validator
 GLTF_VALIDATOR_VERSION := 2.0.0-dev.3.10
 # three.js, which draws the GLB for docs/images/glb-threejs.png (make docs-images only)
 THREE_VERSION := 0.187.0
 
-.PHONY: demo test setup system-deps benchmark clean readme-image docs-images
+.PHONY: demo test setup system-deps benchmark clean readme-image regions-image docs-images
 
 demo: setup
 	$(VENV)/bin/g2s demo -o $(DEMO_OUT) --force
@@ -43,6 +44,12 @@ readme-image: setup
 	$(VENV)/bin/g2s demo -o $(DEMO_OUT) --force --format png --quiet
 	mkdir -p $(dir $(README_IMAGE))
 	cp $(DEMO_OUT)/heatmap.png $(README_IMAGE)
+
+# docs/plugins.md's picture: regions and chokepoints of the default dungeon sample.
+regions-image: setup
+	$(VENV)/bin/g2s run configs/level_regions.yaml sample:dungeon -o $(DEMO_OUT)-regions --force --format png --quiet
+	mkdir -p $(dir $(REGIONS_IMAGE))
+	cp $(DEMO_OUT)-regions/heatmap.png $(REGIONS_IMAGE)
 
 # docs/outputs.md's pictures: the demo's report and GLB (three.js) in headless chromium.
 docs-images: setup
@@ -79,4 +86,4 @@ $(STAMP): pyproject.toml CMakeLists.txt $(wildcard src/*) | system-deps
 	touch $@
 
 clean:
-	rm -rf build $(DEMO_OUT)
+	rm -rf build $(DEMO_OUT) $(DEMO_OUT)-regions

@@ -69,7 +69,7 @@ def main() -> None:
         references: dict[str, tuple] = {}  # per graph builder: the flow depends only on the graph
         for preset, plan in plans.items():
             result = pipeline.run(plan, registry, mesh, name, mesh_sha256(mesh))
-            builder = plan.stages["graph"].plugin.name
+            builder = plan.stages["graph"][0].plugin.name
             if builder not in references:
                 start = time.perf_counter()
                 references[builder] = (evaluation.reference_flow(result), time.perf_counter() - start)

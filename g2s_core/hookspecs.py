@@ -15,7 +15,7 @@ from pathlib import Path
 import networkx as nx
 import trimesh
 
-from g2s_core.model import RunContext, RunResult, Terminals
+from g2s_core.model import AnalyzerResult, RunContext, RunResult, Terminals
 from g2s_core.plugin import PluginParams, hookspec
 
 
@@ -74,8 +74,15 @@ def g2s_simplify_predicate(
 
 
 @hookspec(firstresult=True)
-def g2s_analyze(structure: nx.Graph, params: PluginParams, context: RunContext) -> Mapping[int, float]:
-    """Analyzer: a value for every node of the final structure (undirected)."""
+def g2s_analyze(
+    structure: nx.Graph, params: PluginParams, context: RunContext
+) -> Mapping[int, float] | AnalyzerResult:
+    """Analyzer: a value for every node of the final structure (undirected).
+
+    An analyzer that also finds records (chokepoints, regions ...) returns an
+    :class:`~g2s_core.model.AnalyzerResult`; the pipeline keeps its
+    ``features`` in ``RunResult.features`` under the analyzer's key.
+    """
 
 
 @hookspec(firstresult=True)

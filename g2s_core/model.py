@@ -110,6 +110,9 @@ class Opening:
         heading: unit vector pointing out of the piece.
         width: length of the opening segment, metres.
         p0, p1: the segment's end points, metres.
+        score: the detector's confidence in [0, 1]; ``None`` when not detected
+            (ground truth, user input).
+        reason: why the detector kept it (the measurements behind the score).
     """
 
     position: Vec3
@@ -117,6 +120,8 @@ class Opening:
     width: float
     p0: Vec3
     p1: Vec3
+    score: float | None = None
+    reason: str | None = None
 
 
 @dataclass(frozen=True)
@@ -146,6 +151,21 @@ class StageStats:
     nodes: int | None = None
     edges: int | None = None
     terminals: int | None = None
+
+
+@dataclass(frozen=True)
+class AnalyzerResult:
+    """What an Analyzer may return instead of a plain mapping: values plus records.
+
+    Attributes:
+        values: a float for every node of the structure (as a plain mapping would be).
+        features: structured findings (e.g. ``{"chokepoints": [...]}``), JSON data
+            only (dicts, lists, str, int, float, bool, None); kept on
+            ``RunResult.features[key]`` and written to the outputs.
+    """
+
+    values: Mapping[int, float]
+    features: Mapping[str, Any] = field(default_factory=dict)
 
 
 @dataclass
@@ -193,6 +213,7 @@ class RunResult:
     forest: nx.DiGraph | None = None
     structure: nx.DiGraph | None = None
     analysis: dict[str, dict[int, float]] = field(default_factory=dict)
+    features: dict[str, dict[str, Any]] = field(default_factory=dict)
     stages: list[StageStats] = field(default_factory=list)
     formats: tuple[str, ...] = ()
     """The output formats this run's results are written in (set by the writer before writing)."""

@@ -15,7 +15,7 @@ import trimesh
 from g2s_core.config import RunConfig
 from g2s_core.disconnected import disconnected_warning
 from g2s_core.errors import ConfigError, G2SError
-from g2s_core.model import RunContext, RunResult, StageStats
+from g2s_core.model import AnalyzerResult, RunContext, RunResult, StageStats
 from g2s_core.plugin import PluginParams
 from g2s_core.loops import add_loops
 from g2s_core.registry import PluginInfo, Registry
@@ -203,6 +203,9 @@ def _analyzers_step(step: Step) -> bool:
     undirected = result.structure.to_undirected(as_view=True)
     for analyzer in step.planned:
         values = step.registry.call(analyzer.plugin, params=analyzer.params, structure=undirected, context=result.context)
+        if isinstance(values, AnalyzerResult):
+            result.features[analyzer.key] = dict(values.features)
+            values = values.values
         result.analysis[analyzer.key] = {n: float(values[n]) for n in result.structure}
     return True
 

@@ -15,10 +15,13 @@ terminals    TerminalSelector   ``g2s_select_terminals``    Terminals whose node
 steiner      SteinerSolver      ``g2s_steiner_tree``        a tree of graph edges joining the terminals
 roots        RootSelector       ``g2s_root_scores``         a finite score for every node of the tree
 simplify     SimplifyPredicate  ``g2s_simplify_predicate``  a callable P(tree, a, b, c) -> bool
-analyzers    Analyzer           ``g2s_analyze``             a number for every node of the structure
+analyzers    Analyzer           ``g2s_analyze``             a number for every node of the structure [*]_
 outputs      OutputWriter       ``g2s_write_output``        the paths written, among its FILES
 levels       LevelGenerator     ``g2s_generate_level``      a trimesh.Trimesh with triangles
 ===========  =================  ==========================  ==========================================
+
+.. [*] as a mapping, or as the ``values`` of an :class:`~g2s_core.model.AnalyzerResult`
+   whose ``features`` (a mapping of JSON records) the pipeline keeps.
 """
 
 from __future__ import annotations
@@ -34,7 +37,7 @@ import numpy as np
 import trimesh
 
 from g2s_core import hookspecs
-from g2s_core.model import Terminals
+from g2s_core.model import AnalyzerResult, Terminals
 
 Check = Callable[[Any, Mapping[str, Any], Any], "str | None"]
 """``check(result, hook arguments, plugin object)``: what is wrong with a result, or ``None``."""
@@ -122,6 +125,10 @@ def _root_scores(value: Any, kwargs: Mapping[str, Any], plugin: Any) -> str | No
 
 
 def _analysis(value: Any, kwargs: Mapping[str, Any], plugin: Any) -> str | None:
+    if isinstance(value, AnalyzerResult):
+        if not isinstance(value.features, Mapping):
+            return f"AnalyzerResult features {type(value.features).__name__}, not a mapping of name -> records"
+        value = value.values
     return _node_numbers(value, sorted(kwargs["structure"]), finite=False)
 
 

@@ -1,7 +1,8 @@
 """Batched ray casting over a triangle mesh, and the agent walk tests built on it.
 
-Shared by the ``sampling`` graph builder and the ``mesh_los`` predicate; any
-plugin that needs many rays against the level may use it.
+The one ray caster of the built-in plugins: the ``sampling`` graph builder,
+the ``entry_exit`` selector and the ``mesh_los`` predicate use it; any
+plugin that needs many rays against the level may.
 
 Rays go through trimesh's Embree wrapper (:mod:`trimesh.ray.ray_pyembree`)
 when ``embreex`` imports, else through trimesh's pure-Python intersector
@@ -66,10 +67,12 @@ class Hits:
     Attributes:
         face: (n,) int64, index of the triangle hit, -1 for no hit.
         distance: (n,) float64, metres along the ray, ``inf`` for no hit.
+        points: (n, 3) float64, where each ray hits, NaN for no hit.
     """
 
     face: np.ndarray
     distance: np.ndarray
+    points: np.ndarray
 
     @property
     def hit(self) -> np.ndarray:
@@ -112,7 +115,7 @@ class RayCaster:
         directions = np.broadcast_to(np.asarray(directions, dtype=np.float64), origins.shape)
         n = len(origins)
         if n == 0 or len(self.mesh.faces) == 0:
-            return Hits(np.full(n, -1, dtype=np.int64), np.full(n, np.inf))
+            return Hits(np.full(n, -1, dtype=np.int64), np.full(n, np.inf), np.full((n, 3), np.nan))
         unit = directions / np.linalg.norm(directions, axis=1, keepdims=True)
         face, distance, grazing = self._cast(origins, unit)
         if np.any(grazing):
@@ -123,7 +126,30 @@ class RayCaster:
             take_b = distance_b > distance_a
             face[grazing] = np.where(take_b, face_b, face_a)
             distance[grazing] = np.where(take_b, distance_b, distance_a)
-        return Hits(face, distance)
+        points = origins + unit * np.where(face >= 0, distance, np.nan)[:, None]
+        return Hits(face, distance, points)
+
+    def all_hits(
+        self, origins: np.ndarray, directions: np.ndarray
+    ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """Every crossing along each ray (one multiple-hit intersector call).
+
+        Returns:
+            ``(ray, distance, face, points)``: (m,) the ray's index, (m,)
+            metres along it, (m,) the triangle crossed, (m, 3) the crossing;
+            in the intersector's order.
+        """
+        origins = np.ascontiguousarray(origins, dtype=np.float64).reshape(-1, 3)
+        directions = np.broadcast_to(np.asarray(directions, dtype=np.float64), origins.shape)
+        if len(origins) == 0 or len(self.mesh.faces) == 0:
+            return np.zeros(0, np.int64), np.zeros(0), np.zeros(0, np.int64), np.zeros((0, 3))
+        unit = np.ascontiguousarray(directions / np.linalg.norm(directions, axis=1, keepdims=True))
+        locations, ray, face = self.intersector.intersects_location(origins, unit, multiple_hits=True)
+        self.rays_cast += len(origins)
+        ray = np.asarray(ray, dtype=np.int64)
+        locations = np.asarray(locations, dtype=np.float64).reshape(-1, 3)
+        distance = np.einsum("ij,ij->i", locations - origins[ray], unit[ray])
+        return ray, distance, np.asarray(face, dtype=np.int64), locations
 
     def _cast(self, origins: np.ndarray, unit: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """One intersector call: (face, distance, grazing) per ray; ``unit`` is normalised."""
@@ -171,8 +197,8 @@ class RayCaster:
         return ok
 
 
-def all_hits_down(mesh: trimesh.Trimesh, xz: np.ndarray, top: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Every point where vertical lines through ``xz`` cross ``mesh``, from ``top`` down.
+def all_hits_down(caster: RayCaster, xz: np.ndarray, top: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Every point where vertical lines through ``xz`` cross the caster's mesh, from ``top`` down.
 
     One batched multiple-hit query (Embree when available).
 
@@ -181,15 +207,8 @@ def all_hits_down(mesh: trimesh.Trimesh, xz: np.ndarray, top: float) -> tuple[np
         points, (m,) triangle indices. Order: by column, then from the top down.
     """
     xz = np.asarray(xz, dtype=np.float64).reshape(-1, 2)
-    if len(xz) == 0 or len(mesh.faces) == 0:
-        return np.zeros(0, dtype=np.int64), np.zeros((0, 3)), np.zeros(0, dtype=np.int64)
-    intersector, _ = _make_intersector(mesh)
     origins = np.column_stack([xz[:, 0], np.full(len(xz), top), xz[:, 1]])
-    directions = np.broadcast_to(-UP, origins.shape)
-    locations, column, face = intersector.intersects_location(origins, directions, multiple_hits=True)
-    column = np.asarray(column, dtype=np.int64)
-    locations = np.asarray(locations, dtype=np.float64).reshape(-1, 3)
-    face = np.asarray(face, dtype=np.int64)
+    column, _, face, locations = caster.all_hits(origins, -UP)
     order = np.lexsort((-locations[:, 1], column))
     return column[order], locations[order], face[order]
 
@@ -237,6 +256,7 @@ def walk_segments(
     agent: AgentShape,
     probe_step: float,
     margin: float = GROUND_MARGIN,
+    max_gap: float | None = None,
 ) -> tuple[np.ndarray, np.ndarray]:
     """Whether the agent can walk straight from ``starts[i]`` to ``ends[i]`` (ground points).
 
@@ -250,7 +270,10 @@ def walk_segments(
       and an upward ray from the same point finds the agent's height of
       head room above that ground;
     * between neighbouring points the ground rises or falls by no more than
-      the agent's max climb (a step) or its max slope times their distance.
+      the agent's max climb (a step) or its max slope times their distance;
+    * with ``max_gap``, the ground under every point lies within ``max_gap``
+      above or below the straight segment (it does not cut under a ramp or
+      over a drop).
 
     Returns:
         ``(ok, rise)``: (n,) bool, and (n,) float, the largest height change
@@ -283,6 +306,8 @@ def walk_segments(
     # it and the ground), so both rays describe the same vertical line.
     above = agent.height - (line[:, 1] + lift - ground_y)
     good[good] = clear_above(caster, line[good] + lift * UP, above[good])
+    if max_gap is not None:
+        good &= np.abs(ground_y - line[:, 1]) <= max_gap
     has_ground = np.logical_and.reduceat(good, first)
     ok &= has_ground
 

@@ -615,3 +615,32 @@ __all__ = [
     "tree_betweenness",
     "tree_closeness",
 ]
+
+
+def edge_betweenness(graph: nx.Graph, normalized: bool = True) -> dict[tuple[Hashable, Hashable], float]:
+    """Unweighted edge betweenness: the number of node pairs whose shortest paths cross each edge.
+
+    On a forest the edge from a subtree of s nodes to the rest of its tree of
+    N nodes is crossed by exactly ``s (N - s)`` pairs (one O(n) pass, the
+    subtree sizes of :func:`tree_betweenness`); on a graph with cycles,
+    Brandes' algorithm (``rustworkx.edge_betweenness_centrality``). Normalised
+    like networkx for undirected graphs: divided by n(n-1)/2. Keys are the
+    edges as ``graph.edges`` lists them.
+    """
+    arrays = _arrays(graph, weighted=False)
+    count, labels = arrays.components()
+    if arrays.is_forest(count):
+        rooted = _rooted(arrays, count, labels)
+        parent = np.asarray(rooted.parent, dtype=np.int64)
+        size = np.asarray(rooted.size, dtype=np.float64)
+        # each edge joins a child (its lower end in the hanging) to its parent
+        child = np.where(parent[arrays.v] == arrays.u, arrays.v, arrays.u)
+        values = size[child] * (rooted.component_size[child] - size[child])
+    else:
+        result = rx.edge_betweenness_centrality(_rx_graph(arrays), normalized=False)
+        values = np.array([result[i] for i in range(len(arrays.u))], dtype=np.float64)
+    n = arrays.n
+    if normalized and n > 1:
+        values = values / (n * (n - 1) / 2.0)
+    index = {(arrays.nodes[a], arrays.nodes[b]): float(x) for a, b, x in zip(arrays.u.tolist(), arrays.v.tolist(), values)}
+    return {(u, v): index[(u, v)] if (u, v) in index else index[(v, u)] for u, v in _undirected(graph).edges}

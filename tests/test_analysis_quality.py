@@ -18,6 +18,7 @@ from g2s_core.rooted import root_forest
 from g2s_core.simplify import simplify_forest
 from g2s_plugins import centrality, evaluation, traffic
 from g2s_plugins.analyzers import betweenness as betweenness_analyzer
+from g2s_plugins.outputs import gltf, heatmap, html_report
 from g2s_plugins.outputs.structure_json import dumps, structure_document
 from g2s_plugins.samples import levels as samples
 
@@ -79,6 +80,28 @@ def test_two_floors_loop_around_the_central_block_is_kept(registry):
     paper = run(registry, mesh, preset("map_analysis_paper"))
     assert nx.cycle_basis(new.structure.to_undirected())
     assert not nx.cycle_basis(paper.structure.to_undirected())
+
+
+def test_loop_edges_appear_in_every_output(registry, tmp_path):
+    from tests.test_gltf import _children, assert_khronos_valid, read_glb
+
+    result = run(registry, samples.two_floors().mesh, preset("map_analysis"))
+    loops = sorted((u, v) for u, v, loop in result.structure.edges(data="loop") if loop)
+    assert loops
+    document = structure_document(result)
+    assert sorted((e["source"], e["target"]) for e in document["edges"] if e["extra"].get("loop")) == loops
+    traces = [t for t in html_report.build_figure(result).data if t.name == html_report.LAYER_LOOPS]
+    assert len(traces) == 1 and traces[0].showlegend and traces[0].line.dash == "dot"
+    assert np.count_nonzero(np.isnan(np.asarray(traces[0].x, dtype=float))) == len(loops)  # one gap per segment
+    groups = heatmap.floor_groups(result.structure, 2.0)
+    labels = [h.get_label() for h in heatmap._legend_handles(result, result.structure, groups)]
+    assert "loop edge" in labels
+    path, = gltf.write(result, tmp_path)
+    assert_khronos_valid(path)
+    header, _ = read_glb(path)
+    assert _children(header, "loops") == ["loop_edges"]
+    extras = next(n.get("extras", {}) for n in header["nodes"] if n.get("name") == "loop_edges")
+    assert sorted(map(tuple, extras["edges"])) == loops
 
 
 def test_dead_end_room_with_a_central_pillar_is_covered(registry):

@@ -76,6 +76,7 @@ def test_scene_groups_colours_and_extras(tmp_path):
     roots = structure.graph["roots"]
     assert _children(header, "level") == ["level_mesh"]
     assert _children(header, "navmesh") == [] and _children(header, "loops") == []  # no navmesh; a tree has no loops
+    assert _children(header, "regions") == [] and _children(header, "chokepoints") == []  # their analyzers did not run
     assert sorted(_children(header, "roots")) == sorted(f"root_{r}" for r in roots)
     assert sorted(_children(header, "terminals")) == sorted(f"terminal_{t}" for t in result.terminals.nodes)
     assert {n for n in _children(header, "structure") if n.startswith("node_")} == {f"node_{n}" for n in structure}
@@ -161,27 +162,74 @@ def test_navmesh_is_a_translucent_green_layer(tmp_path):
     assert material["alphaMode"] == "BLEND"
 
 
+def test_regions_and_chokepoints_groups(tmp_path):
+    from tests.test_regions import chokepoints, regions, sample_run
+
+    _, result = sample_run("two_rooms_one_door")
+    path, = gltf.write(result, tmp_path)
+    header, _ = read_glb(path)
+    rooms, doors = regions(result), chokepoints(result)
+    assert _children(header, "regions") == [f"region_{r['id']}" for r in rooms]
+    assert _children(header, "chokepoints") == [f"chokepoint_{c['id']}" for c in doors]
+    scene = trimesh.load(path)
+    palette = colours.region_colours(rooms)
+    navmesh = result.context.navmesh
+    for record in rooms:
+        name = f"region_{record['id']}"
+        assert _colour(scene, name) == (*palette[record["id"]], 255)
+        assert _node_extras(scene, name)["area"] == pytest.approx(record["area"])
+        transform, geometry = scene.graph[name]
+        assert np.allclose(transform[:3, 3], [0.0, gltf.REGION_LIFT, 0.0])  # just above the navmesh
+        assert len(scene.geometry[geometry].faces) == int(np.isin(navmesh.detail_polygon, record["polygons"]).sum())
+    assert _colour(scene, "region_0") != _colour(scene, "region_1")  # neighbours differ
+    (door,) = doors
+    bar = scene.geometry[scene.graph["chokepoint_0"][1]]
+    transform, _ = scene.graph["chokepoint_0"]
+    lift = gltf.NODE_RADIUS * 0.5
+    assert np.allclose(transform[:3, 3], np.add(door["position"], [0.0, lift, 0.0]))
+    portal = np.asarray(door["portal"])
+    length = np.ptp(bar.vertices @ (portal[1] - portal[0]) / np.linalg.norm(portal[1] - portal[0]))
+    assert length == pytest.approx(np.linalg.norm(portal[1] - portal[0]), rel=1e-6)  # the bar spans the portal
+    assert _colour(scene, "chokepoint_0") == (*colours.CHOKEPOINT_COLOUR, 255)
+    assert _node_extras(scene, "chokepoint_0")["width"] == pytest.approx(door["width"])
+
+
 VALIDATOR_MODULES = PROJECT / ".venv" / "node" / "node_modules"
 """Where `make test` installs the Khronos glTF validator (npm package gltf-validator)."""
 
 
-def test_demo_glb_passes_the_khronos_validator(tmp_path):
+def assert_khronos_valid(path: Path) -> None:
+    """The Khronos validator finds no error and no warning in ``path`` (skips when it is not installed)."""
     node = shutil.which("node")
     if node is None or not (VALIDATOR_MODULES / "gltf-validator").is_dir():
         pytest.skip("the Khronos glTF validator is not installed (node and npm's gltf-validator in "
                     f"{VALIDATOR_MODULES}): `make test` installs it, or run "
                     f"npm install --prefix {VALIDATOR_MODULES.parent} gltf-validator")
-    out = tmp_path / "demo"
-    done = subprocess.run([sys.executable, "-m", "g2s_core.cli", "demo", "-o", str(out), "--format", "glb", "--quiet"],
-                          capture_output=True, text=True, cwd=PROJECT)
-    assert done.returncode == 0, done.stderr
-    report = subprocess.run([node, str(PROJECT / "tests" / "validate_gltf.js"), str(out / "structure.glb")],
+    report = subprocess.run([node, str(PROJECT / "tests" / "validate_gltf.js"), str(path)],
                             capture_output=True, text=True, env={**os.environ, "NODE_PATH": str(VALIDATOR_MODULES)})
     assert report.returncode == 0, report.stderr
     issues = json.loads(report.stdout)["issues"]
     serious = [m for m in issues["messages"] if m["severity"] <= 1]  # 0 error, 1 warning
     assert issues["numErrors"] == 0 and issues["numWarnings"] == 0, serious
+
+
+def test_demo_glb_passes_the_khronos_validator(tmp_path):
+    out = tmp_path / "demo"
+    done = subprocess.run([sys.executable, "-m", "g2s_core.cli", "demo", "-o", str(out), "--format", "glb", "--quiet"],
+                          capture_output=True, text=True, cwd=PROJECT)
+    assert done.returncode == 0, done.stderr
+    assert_khronos_valid(out / "structure.glb")
     header, _ = read_glb(out / "structure.glb")
     assert [header["nodes"][i]["name"] for i in header["scenes"][0]["nodes"]] == list(gltf.GROUPS)
-    for group in ("level", "navmesh", "structure", "roots", "terminals"):
+    for group in ("level", "navmesh", "structure", "roots", "terminals", "loops"):  # the demo keeps loops
         assert _children(header, group), f"the demo's {group} group is empty"
+
+
+def test_regions_glb_passes_the_khronos_validator(tmp_path):
+    from tests.test_regions import sample_run
+
+    _, result = sample_run("loop_of_four_rooms")
+    path, = gltf.write(result, tmp_path)
+    assert_khronos_valid(path)
+    header, _ = read_glb(path)
+    assert len(_children(header, "regions")) == 4 and len(_children(header, "chokepoints")) == 4

@@ -168,3 +168,21 @@ def test_simplifies_a_chain_only_where_the_line_is_clear():
     # Without the wall the whole chain collapses to one edge.
     open_floor = simplify_forest(tree, predicate(FLOOR))
     assert sorted(open_floor.edges) == [(0, len(points) - 1)]
+
+
+def test_mesh_los_keeps_b_when_a_to_c_runs_under_the_ground() -> None:
+    # A 0.9 m hump with 20-degree flanks across the floor: the straight line A -> C along the
+    # floor runs through it. The walk test alone accepts it (ground above the line, within half
+    # the agent height, slopes walkable); the surface gap rejects it.
+    from g2s_plugins.samples.levels import _hexahedra_mesh, _sloped_blocks
+
+    run = 0.9 / math.tan(math.radians(20.0))
+    hump = _hexahedra_mesh(np.concatenate([
+        _sloped_blocks(2.0, 2.0 + run, -3.0, 3.0, -0.2, 0.0, 0.9),
+        _sloped_blocks(2.0 + run, 3.0 + run, -3.0, 3.0, -0.2, 0.9, 0.9),
+        _sloped_blocks(3.0 + run, 3.0 + 2 * run, -3.0, 3.0, -0.2, 0.9, 0.0),
+    ]))
+    tree = chain(((0, 0, 0), UP, True), ((1, 0, 0), UP, True), ((9, 0, 0), UP, True))
+    mesh = level(FLOOR, hump)
+    assert predicate(mesh, max_surface_gap=1.0)(tree, 0, 1, 2) is True
+    assert predicate(mesh)(tree, 0, 1, 2) is False

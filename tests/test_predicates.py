@@ -12,6 +12,7 @@ from g2s_core.config import AgentConfig
 from g2s_core.errors import PluginError
 from g2s_core.model import RunContext
 from g2s_core.simplify import simplify_forest
+from g2s_plugins._surface import normals_angle_deg
 from g2s_plugins.predicates import always, max_length, never, surface_los
 
 UP = (0.0, 1.0, 0.0)
@@ -23,8 +24,19 @@ class SquareWithWall:
     on the square and the segment does not cross the wall; ``t`` is the fraction
     where it is stopped (``inf`` when clear)."""
 
+    settings = {"cell_size": 0.25}
+    detail_vertices = np.array([[0.0, 0.0, 0.0], [10.0, 0.0, 0.0], [10.0, 0.0, 10.0], [0.0, 0.0, 10.0]])
+    detail_triangles = np.array([[0, 2, 1], [0, 3, 2]])
+
     def __init__(self):
         self.calls = []
+
+    def nearest_poly(self, p, extents):
+        """The floor point under or over ``p`` when it lies on the square within the extents."""
+        x, y, z = (float(v) for v in p)
+        if 0.0 <= x <= 10.0 and 0.0 <= z <= 10.0 and abs(y) <= extents[1]:
+            return 0, np.array([x, 0.0, z])
+        return -1, np.array([x, y, z])
 
     @staticmethod
     def _inside(p):
@@ -101,9 +113,17 @@ def test_surface_los_keeps_b_where_the_surface_bends():
     tree = chain(((1, 0, 9), UP, True), ((2, 0, 9), tilted, True), ((3, 0, 9), UP, True))
     assert make(surface_los, SquareWithWall())(tree, 0, 1, 2) is False  # default 10 degrees
     assert make(surface_los, SquareWithWall(), normal_tolerance_deg=15.0)(tree, 0, 1, 2) is True
-    # only A and B are compared: a bend between B and C does not matter
+    # the whole chain is compared: a bend between B and C keeps B too
     tree = chain(((1, 0, 9), UP, True), ((2, 0, 9), UP, True), ((3, 0, 9), tilted, True))
-    assert make(surface_los, SquareWithWall())(tree, 0, 1, 2) is True
+    assert make(surface_los, SquareWithWall())(tree, 0, 1, 2) is False
+
+
+def test_surface_los_keeps_b_when_a_to_c_leaves_the_surface():
+    # C stands 0.45 m over the floor (the raycast accepts it): the segment A -> C ends
+    # 0.45 m from the surface, more than the 0.4 m allowed by default.
+    tree = chain(((1, 0, 9), UP, True), ((2, 0, 9), UP, True), ((3, 0.45, 9), UP, True))
+    assert make(surface_los, SquareWithWall())(tree, 0, 1, 2) is False
+    assert make(surface_los, SquareWithWall(), max_surface_gap=0.5)(tree, 0, 1, 2) is True
 
 
 def test_surface_los_zero_normal_keeps_b():
@@ -112,10 +132,10 @@ def test_surface_los_zero_normal_keeps_b():
 
 
 def test_normals_angle():
-    assert surface_los.normals_angle_deg(UP, UP) == 0.0
-    assert surface_los.normals_angle_deg(UP, (0.0, 0.0, 2.0)) == pytest.approx(90.0)
-    assert surface_los.normals_angle_deg(UP, (0.0, -1.0, 0.0)) == pytest.approx(180.0)
-    assert surface_los.normals_angle_deg(UP, (0.0, 0.0, 0.0)) == math.inf
+    assert normals_angle_deg(UP, UP) == 0.0
+    assert normals_angle_deg(UP, (0.0, 0.0, 2.0)) == pytest.approx(90.0)
+    assert normals_angle_deg(UP, (0.0, -1.0, 0.0)) == pytest.approx(180.0)
+    assert normals_angle_deg(UP, (0.0, 0.0, 0.0)) == math.inf
 
 
 def test_surface_los_without_a_navmesh_is_a_plugin_error():

@@ -77,6 +77,16 @@ def test_registry_names_and_load():
         "closed_room",
         "room_with_window",
         "dungeon",
+        "two_rooms_one_door",
+        "room_with_two_doors",
+        "loop_of_four_rooms",
+        "floors_joined_by_ramp",
+        "doorway_room",
+        "curb_platform",
+        "wall_tops",
+        "stair_deck",
+        "cross_platform",
+        "chamfered_platform",
     }
     lvl = load_sample("straight_corridor", length=5.0)
     assert isinstance(lvl, SampleLevel) and lvl.name == "straight_corridor"

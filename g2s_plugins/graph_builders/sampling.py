@@ -227,7 +227,7 @@ def _grid_candidates(surface: trimesh.Trimesh, spacing: float) -> tuple[np.ndarr
     z0 = lo[2] + 0.5 * ((hi[2] - lo[2]) - (nz_ - 1) * spacing)
     gx, gz = np.meshgrid(x0 + spacing * np.arange(nx_), z0 + spacing * np.arange(nz_), indexing="ij")
     xz = np.column_stack([gx.ravel(), gz.ravel()])
-    column, points, faces = all_hits_down(surface, xz, hi[1] + 1.0)
+    column, points, faces = all_hits_down(RayCaster(surface), xz, hi[1] + 1.0)
     if len(points) == 0:
         return points, faces
     # Crossings of one line closer than a centimetre (shared triangle edges) are one point.

@@ -9,14 +9,23 @@
   scale that colour-blind readers and greyscale prints read the same way:
   dark purple (lowest) -> teal -> yellow (highest), after min-max
   normalisation of the values shown.
+* Regions: Okabe and Ito's other six colours (their black and vermilion
+  already mean roots and terminals), given so that regions joined by a
+  chokepoint differ (:func:`region_colours`); chokepoints are near-black and
+  have their own marker shape.
+* Loop edges (a structure with loops) are near-black too but dotted in the
+  PNG and the report, and in the glTF run along paths in their own ``loops``
+  group, where a chokepoint is a short bar across a portal.
 
 Colours are 8-bit RGB tuples.
 """
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable, Mapping, Sequence
+from typing import Any
 
+import networkx as nx
 import numpy as np
 
 RGB = tuple[int, int, int]
@@ -42,6 +51,17 @@ GRAPH_COLOUR: RGB = (90, 90, 90)
 STEINER_COLOUR: RGB = (150, 60, 200)
 LOOP_COLOUR: RGB = (25, 25, 25)
 """Loop edges (a structure with loops, see g2s_core.loops): near-black, dotted where the format allows."""
+CHOKEPOINT_COLOUR: RGB = (20, 20, 20)
+
+REGION_COLOURS: tuple[RGB, ...] = (
+    (230, 159, 0),    # orange
+    (86, 180, 233),   # sky blue
+    (0, 158, 115),    # bluish green
+    (240, 228, 66),   # yellow
+    (0, 114, 178),    # blue
+    (204, 121, 167),  # reddish purple
+)
+"""Okabe and Ito's colour-blind-safe palette less black and vermilion (Okabe & Ito 2008, Color Universal Design)."""
 
 VALUE_COLORMAP = "viridis"
 """The matplotlib colormap of analysis values (low -> high)."""
@@ -97,3 +117,29 @@ def matplotlib_heat_cmap():  # -> matplotlib.colors.Colormap
     from matplotlib import colormaps
 
     return colormaps[VALUE_COLORMAP]
+
+
+def region_colours(regions: Sequence[Mapping[str, Any]]) -> dict[int, RGB]:
+    """Region id -> colour: neighbouring regions (``neighbours`` of a region record) differ, all colours in use.
+
+    Greedy colouring in smallest-last order (Matula and Beck 1983): each
+    region, when its turn comes, has at most ``degeneracy`` neighbours
+    coloured already, so :data:`REGION_COLOURS` suffices whenever the region
+    graph's degeneracy is below 6 (every planar graph: the rooms of one
+    floor). Among the colours its neighbours leave free a region takes the
+    least used so far, so that rooms far apart spread over the whole palette
+    rather than alternating two colours; with no colour free the palette
+    repeats. O(R log R + N) for R regions and N neighbour pairs.
+    """
+    graph = nx.Graph()
+    graph.add_nodes_from(sorted(int(r["id"]) for r in regions))
+    graph.add_edges_from((int(r["id"]), int(n["region"])) for r in regions for n in r.get("neighbours", ()))
+    palette = range(len(REGION_COLOURS))
+    used = [0] * len(REGION_COLOURS)
+    slot: dict[int, int] = {}
+    for region in nx.coloring.strategy_smallest_last(graph, slot):
+        taken = {slot[n] for n in graph[region] if n in slot}
+        slot[region] = min((c for c in palette if c not in taken), default=min(palette, key=used.__getitem__),
+                           key=lambda c: (used[c], c))
+        used[slot[region]] += 1
+    return {region: REGION_COLOURS[slot[region]] for region in sorted(graph)}

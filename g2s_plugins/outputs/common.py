@@ -79,3 +79,26 @@ def floors(heights: Sequence[float], gap: float) -> list[np.ndarray]:
     order = np.argsort(heights, kind="stable")
     breaks = np.nonzero(np.diff(heights[order]) > gap)[0] + 1
     return [np.sort(part) for part in np.split(order, breaks)]
+
+
+def feature_records(result: RunResult, kind: str) -> list[dict[str, Any]]:
+    """The records named ``kind`` (``"chokepoints"``, ``"regions"``) that the first analyzer
+    returning them gave (``[]`` when none did)."""
+    for features in result.features.values():
+        if kind in features:
+            return list(features[kind])
+    return []
+
+
+def triangle_regions(result: RunResult) -> np.ndarray | None:
+    """(DT,) int64, the region of each navmesh detail triangle (-1 outside every region);
+    ``None`` when the run has no navmesh or no regions."""
+    navmesh = result.context.navmesh
+    records = feature_records(result, "regions")
+    if navmesh is None or not records or not len(getattr(navmesh, "detail_triangles", ())):
+        return None
+    labels = np.full(navmesh.polygon_count, -1, dtype=np.int64)
+    for record in records:
+        labels[np.asarray(record["polygons"], dtype=np.int64)] = int(record["id"])
+    return labels[np.asarray(navmesh.detail_polygon, dtype=np.int64)]
+

@@ -8,6 +8,11 @@ viewers' outliners find them), each holding its objects:
 ``navmesh``
     ``navmesh_surface``: the navmesh's detail triangles, translucent green
     (empty without a navmesh).
+``regions``
+    With the ``regions`` analyzer, ``region_<id>``: the navmesh triangles of
+    each region in its colour (:func:`colours.region_colours`: neighbouring
+    regions differ), the group raised :data:`REGION_LIFT` above the navmesh;
+    extras ``id``, ``area``, ``floor``, ``centroid``, ``neighbours``.
 ``structure``
     The final structure's edges as thin tubes (radius 0.2 r, eight sides), so
     they render in every viewer and engine (glTF lines are one pixel wide and
@@ -25,13 +30,19 @@ viewers' outliners find them), each holding its objects:
 ``terminals``
     ``terminal_<id>``: a vermilion ring lying flat around each terminal, wider
     than the node's sphere, which shows through it.
+``chokepoints``
+    With the ``chokepoints`` analyzer, ``chokepoint_<id>``: a near-black bar
+    (radius 0.3 r) across each chokepoint's portal, placed at the
+    chokepoint's position; extras its record (``width``, ``score``,
+    ``traffic``, ``regions``, ``articulation``, ``portal`` ...).
 ``loops``
     The loop edges of a structure with loops (config ``loops:``, see
     :mod:`g2s_core.loops`): near-black tubes, mesh ``loop_edges`` whose extras
     list its ``edges``; empty for a tree.
 
-*r* is the agent radius. The ``structure``, ``roots``, ``terminals`` and
-``loops`` groups are raised by 0.4 r (a node sphere's radius) so that nothing
+Groups of analyzers that did not run are empty.
+*r* is the agent radius. The ``structure``, ``roots``, ``terminals``,
+``chokepoints`` and ``loops`` groups are raised by 0.4 r (a node sphere's radius) so that nothing
 sinks into the floor; their objects sit at the nodes' exact positions inside
 the group. Every ``node_``, ``root_`` and ``terminal_`` node's extras hold ``id``,
 ``depth``, ``root``, ``terminal`` and ``values`` (analysis key -> value).
@@ -52,18 +63,31 @@ from trimesh.visual.texture import TextureVisuals
 
 from g2s_core.model import RunResult
 from g2s_plugins.outputs import colours
-from g2s_plugins.outputs.common import agent_value, edge_list, final_graph, is_loop_edge, number, roots_of, terminal_ids
+from g2s_plugins.outputs.common import (
+    agent_value,
+    edge_list,
+    feature_records,
+    final_graph,
+    is_loop_edge,
+    number,
+    roots_of,
+    terminal_ids,
+    triangle_regions,
+)
 from g2s_plugins.outputs.files import atomic_write
 
 GLB_FILE = "structure.glb"
-GROUPS = ("level", "navmesh", "structure", "roots", "terminals", "loops")
+GROUPS = ("level", "navmesh", "regions", "structure", "roots", "terminals", "chokepoints", "loops")
 """The scene's group nodes, in order."""
-LIFTED_GROUPS = ("structure", "roots", "terminals", "loops")
+LIFTED_GROUPS = ("structure", "roots", "terminals", "chokepoints", "loops")
+REGION_LIFT = 0.02
+"""The regions group sits this far (m) above the navmesh so that both stay visible."""
 HEAT_LEVELS = 32
 """Analysis colours are quantised to this many steps so that edges and spheres share meshes."""
 TUBE_RADIUS, TUBE_SIDES = 0.2, 8
 NODE_RADIUS = 0.4
 RING_RADIUS, RING_THICKNESS = 0.65, 0.08
+BAR_RADIUS = 0.3
 CONE_RADIUS, CONE_HEIGHT, CONE_GAP = 0.5, 1.4, 0.1
 """Sizes in agent radii."""
 
@@ -80,9 +104,11 @@ def build_scene(result: RunResult) -> trimesh.Scene:
     scene.metadata["g2s"] = {"mesh_name": result.mesh_name, "mesh_sha256": result.mesh_sha256}
     radius = agent_value(result, "radius", 0.5)
     for group in GROUPS:
-        lift = NODE_RADIUS * radius if group in LIFTED_GROUPS else 0.0
+        lift = NODE_RADIUS * radius if group in LIFTED_GROUPS else REGION_LIFT if group == "regions" else 0.0
         scene.graph.update(frame_to=group, frame_from=scene.graph.base_frame, matrix=_translation((0.0, lift, 0.0)))
     _add_surfaces(scene, result)
+    _add_regions(scene, result)
+    _add_chokepoints(scene, result, radius)
     _, graph = final_graph(result)
     if graph is None:
         return scene
@@ -114,6 +140,41 @@ def _add_surfaces(scene: trimesh.Scene, result: RunResult) -> None:
                                   np.asarray(navmesh.detail_triangles, dtype=np.int64), process=False)
         surface.visual = _material("navmesh_surface", colours.NAVMESH_COLOUR, alpha=colours.NAVMESH_ALPHA)
         _place(scene, "navmesh", "navmesh_surface", surface, np.zeros(3))
+
+
+def _add_regions(scene: trimesh.Scene, result: RunResult) -> None:
+    """``region_<id>`` under ``regions``: each region's navmesh detail triangles in its colour."""
+    regions = triangle_regions(result)
+    if regions is None:
+        return
+    navmesh = result.context.navmesh
+    vertices = np.asarray(navmesh.detail_vertices, dtype=np.float64)
+    triangles = np.asarray(navmesh.detail_triangles, dtype=np.int64)
+    records = feature_records(result, "regions")
+    palette = colours.region_colours(records)
+    for record in records:
+        faces = triangles[regions == record["id"]]
+        if not len(faces):
+            continue
+        used, local = np.unique(faces, return_inverse=True)
+        part = trimesh.Trimesh(vertices[used], local.reshape(-1, 3), process=False)
+        name = f"region_{record['id']}"
+        part.visual = _material(name, palette[record["id"]])
+        extras = {k: record[k] for k in ("id", "area", "floor", "centroid", "neighbours")}
+        _place(scene, "regions", name, part, np.zeros(3), extras)
+
+
+def _add_chokepoints(scene: trimesh.Scene, result: RunResult, radius: float) -> None:
+    """``chokepoint_<id>`` under ``chokepoints``: a bar across each chokepoint's portal, its record in the extras."""
+    for record in feature_records(result, "chokepoints"):
+        position = np.asarray(record["position"], dtype=np.float64)
+        portal = np.asarray(record["portal"], dtype=np.float64) - position
+        if np.linalg.norm(portal[1] - portal[0]) <= 1e-9:  # a point portal: a short upright bar shows it
+            portal = np.asarray([[0.0, -BAR_RADIUS * radius, 0.0], [0.0, BAR_RADIUS * radius, 0.0]])
+        bar = trimesh.creation.cylinder(BAR_RADIUS * radius, sections=TUBE_SIDES, segment=portal)
+        bar.visual = _material("chokepoint", colours.CHOKEPOINT_COLOUR)
+        name = f"chokepoint_{record['id']}"
+        _place(scene, "chokepoints", name, bar, position, dict(record), geometry_name=name)
 
 
 def _add_markers(scene: trimesh.Scene, result: RunResult, graph: nx.Graph, heat: dict[int, int], radius: float) -> None:
@@ -152,9 +213,10 @@ def _add_markers(scene: trimesh.Scene, result: RunResult, graph: nx.Graph, heat:
 
 
 def _place(scene: trimesh.Scene, group: str, name: str, geometry: trimesh.Trimesh, position: Sequence[float],
-           extras: dict[str, Any] | None = None) -> None:
-    """A node ``name`` under ``group`` at ``position`` showing ``geometry`` (shared by name)."""
-    geometry_name = geometry.visual.material.name
+           extras: dict[str, Any] | None = None, geometry_name: str | None = None) -> None:
+    """A node ``name`` under ``group`` at ``position`` showing ``geometry``, shared by ``geometry_name``
+    (default: its material's name)."""
+    geometry_name = geometry_name or geometry.visual.material.name
     scene.geometry[geometry_name] = geometry
     scene.graph.update(frame_to=name, frame_from=group, matrix=_translation(position), geometry=geometry_name,
                        metadata=extras or {})

@@ -8,13 +8,21 @@ Edges are grey lines, nodes are dots on viridis (dark purple lowest, yellow
 highest), roots are ringed in black, terminals are vermilion squares and
 openings vermilion bars. Without analysis values nodes and edges take their
 tree-depth colour (an edge its child's: red = depth 1, yellow = 2 ...) and,
-before step 4, one grey. A legend under the panels names the markers drawn.
+before step 4, one grey. Loop edges (a structure with loops, config
+``loops:``) are near-black dotted lines. A legend under the panels names the
+markers drawn.
 
 Floors: node heights (Y) are sorted and split wherever two neighbours differ
 by more than the agent height; each floor gets its own panel (lowest first),
 with the edges that touch it (edges to another floor dashed, as the legend
 says), and the terminals and openings whose height is nearest its nodes'. The
 colour scale is shared by all panels.
+
+With the ``regions`` analyzer the walkable ground is coloured by region
+(:func:`colours.region_colours`: neighbouring regions differ) instead of grey;
+with ``chokepoints`` each chokepoint is a near-black bar across its portal and
+a white diamond labelled with its id and walkable width. Regions go to floors
+as the ground does, chokepoints as the terminals do; the legend names both.
 
 The file is deterministic: matplotlib's Agg canvas (pyplot is not used), fixed size and DPI, no
 date or software tag in the PNG metadata.
@@ -32,15 +40,28 @@ from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.collections import LineCollection, PolyCollection
 from matplotlib.colors import Normalize
 from matplotlib.figure import Figure
+from matplotlib.artist import Artist
 from matplotlib.lines import Line2D
+from matplotlib.patches import Patch
 
 from g2s_core.model import RunResult
 from g2s_plugins.outputs import colours
-from g2s_plugins.outputs.common import agent_value, edge_list, final_graph, floors, is_loop_edge, roots_of, terminal_ids
+from g2s_plugins.outputs.common import (
+    agent_value,
+    edge_list,
+    feature_records,
+    final_graph,
+    floors,
+    is_loop_edge,
+    roots_of,
+    terminal_ids,
+    triangle_regions,
+)
 from g2s_plugins.outputs.files import atomic_write
 
 HEATMAP_FILE = "heatmap.png"
 GROUND_COLOUR = "#e4e4e4"
+REGION_ALPHA = 0.55
 PANEL_INCHES = 6.0
 DPI = 110
 
@@ -83,13 +104,17 @@ def render(result: RunResult) -> bytes:
         roots = set(roots_of(graph))
         ground = _ground(result, graph, groups)
         terminals, openings = _terminals_by_floor(result, graph, groups)
+        regions = _regions_by_floor(result, graph, groups)
+        chokepoints = _chokepoints_by_floor(result, graph, groups)
         for index, group in enumerate(groups):
             ax = axes[index // columns][index % columns]
             if len(ground[index]):
                 ax.add_collection(PolyCollection(ground[index], facecolors=GROUND_COLOUR, edgecolors=GROUND_COLOUR,
                                              linewidths=0.4, zorder=0))
+            _draw_regions(ax, *regions[index])
             mappable = _panel(ax, graph, group, floor_of, index, values, norm, roots) or mappable
             _mark_terminals(ax, terminals[index], openings[index])
+            _mark_chokepoints(ax, chokepoints[index])
             heights = [graph.nodes[n]["pos"][1] for n in group]
             if len(groups) > 1:
                 low, high = f"{min(heights):.1f}", f"{max(heights):.1f}"
@@ -136,16 +161,28 @@ def _ground(result: RunResult, graph: nx.Graph, groups: list[list[int]]) -> list
         triangles = np.asarray(mesh.triangles)[up]
     else:
         triangles = np.zeros((0, 3, 3))
-    reach = agent_value(result, "height", 2.0)
+    return [triangles[chosen][:, :, [0, 2]] for chosen in _ground_floors(result, graph, groups, triangles)]
+
+
+def _ground_floors(result: RunResult, graph: nx.Graph, groups: list[list[int]], triangles: np.ndarray) -> list[np.ndarray]:
+    """Per floor, which of the (T, 3, 3) ``triangles`` lie under it (see :func:`_ground`), as (T,) bool masks."""
     heights = triangles[:, :, 1].mean(axis=1)
-    spans = [(min(graph.nodes[n]["pos"][1] for n in g), max(graph.nodes[n]["pos"][1] for n in g)) for g in groups]
-    distance = np.stack([np.maximum(np.maximum(lo - heights, heights - hi), 0.0) for lo, hi in spans], axis=1) \
-        if spans else np.zeros((len(heights), 0))
-    ground = []
-    for index in range(len(groups)):
-        chosen = (distance[:, index] <= reach) & (distance[:, index] == distance.min(axis=1))
-        ground.append(triangles[chosen][:, :, [0, 2]])
-    return ground
+    distance = _floor_distances(graph, groups, heights)
+    reach = agent_value(result, "height", 2.0)
+    return [(distance[:, index] <= reach) & (distance[:, index] == distance.min(axis=1)) for index in range(len(groups))]
+
+
+def _floor_distances(graph: nx.Graph, groups: list[list[int]], heights: np.ndarray) -> np.ndarray:
+    """(H, F) vertical distance (m) from each of ``heights`` to each floor's span of node heights (0 inside it)."""
+    spans = np.asarray([(min(graph.nodes[n]["pos"][1] for n in g), max(graph.nodes[n]["pos"][1] for n in g))
+                        for g in groups]).reshape(-1, 2)
+    return np.maximum(np.maximum(spans[None, :, 0] - heights[:, None], heights[:, None] - spans[None, :, 1]), 0.0)
+
+
+def _nearest_floor(graph: nx.Graph, groups: list[list[int]], heights: np.ndarray) -> np.ndarray:
+    """(H,) index of the floor whose node heights are nearest each of ``heights``."""
+    distance = _floor_distances(graph, groups, heights)
+    return distance.argmin(axis=1) if len(groups) else np.zeros(len(heights), dtype=int)
 
 
 def _panel(ax, graph: nx.Graph, group: list[int], floor_of: dict[int, int], index: int,
@@ -212,14 +249,8 @@ def _terminals_by_floor(result: RunResult, graph: nx.Graph, groups: list[list[in
                         dtype=np.float64).reshape(-1, 3)
     openings = result.terminals.openings if result.terminals is not None else ()
     segments = np.asarray([(o.p0, o.p1) for o in openings], dtype=np.float64).reshape(-1, 2, 3)
-    spans = np.asarray([(min(graph.nodes[n]["pos"][1] for n in g), max(graph.nodes[n]["pos"][1] for n in g))
-                        for g in groups]).reshape(-1, 2)
-
-    def nearest(heights: np.ndarray) -> np.ndarray:
-        distance = np.maximum(np.maximum(spans[None, :, 0] - heights[:, None], heights[:, None] - spans[None, :, 1]), 0)
-        return distance.argmin(axis=1) if len(spans) else np.zeros(len(heights), dtype=int)
-
-    point_floor, segment_floor = nearest(points[:, 1]), nearest(segments[:, :, 1].mean(axis=1))
+    point_floor = _nearest_floor(graph, groups, points[:, 1])
+    segment_floor = _nearest_floor(graph, groups, segments[:, :, 1].mean(axis=1))
     return ([points[point_floor == i] for i in range(len(groups))],
             [segments[segment_floor == i] for i in range(len(groups))])
 
@@ -231,8 +262,54 @@ def _mark_terminals(ax, points: np.ndarray, segments: np.ndarray) -> None:
         ax.scatter(points[:, 0], points[:, 2], **TERMINAL_STYLE)
 
 
-def _legend_handles(result: RunResult, graph: nx.Graph | None, groups: list[list[int]]) -> list[Line2D]:
-    """Legend entries for the markers the panels show: roots, terminals, openings, edges to another floor."""
+def _regions_by_floor(result: RunResult, graph: nx.Graph, groups: list[list[int]]
+                      ) -> list[tuple[np.ndarray, list[colours.RGB]]]:
+    """Per floor, the (T, 3, 2) X/Z outlines of the navmesh triangles in a region and their region colours
+    (none without the ``regions`` analyzer)."""
+    regions = triangle_regions(result)
+    if regions is None:
+        return [(np.zeros((0, 3, 2)), []) for _ in groups]
+    navmesh = result.context.navmesh
+    inside = regions >= 0
+    triangles = np.asarray(navmesh.detail_vertices, dtype=np.float64)[np.asarray(navmesh.detail_triangles)[inside]]
+    palette = colours.region_colours(feature_records(result, "regions"))
+    colour = [palette[r] for r in regions[inside].tolist()]
+    return [(triangles[chosen][:, :, [0, 2]], [c for c, keep in zip(colour, chosen.tolist()) if keep])
+            for chosen in _ground_floors(result, graph, groups, triangles)]
+
+
+def _draw_regions(ax, outlines: np.ndarray, region_colours: list[colours.RGB]) -> None:
+    if len(outlines):
+        face = [colours.unit(c, REGION_ALPHA) for c in region_colours]
+        ax.add_collection(PolyCollection(outlines, facecolors=face, edgecolors=face, linewidths=0.3, zorder=0.5))
+
+
+def _chokepoints_by_floor(result: RunResult, graph: nx.Graph, groups: list[list[int]]) -> list[list[dict]]:
+    """Per floor, the chokepoint records whose height is nearest its nodes' (none without the analyzer)."""
+    records = feature_records(result, "chokepoints")
+    floor = _nearest_floor(graph, groups, np.asarray([r["position"][1] for r in records], dtype=np.float64))
+    return [[r for r, f in zip(records, floor.tolist()) if f == index] for index in range(len(groups))]
+
+
+CHOKEPOINT_BAR = dict(color=colours.unit(colours.CHOKEPOINT_COLOUR), linewidth=2.5, zorder=4, solid_capstyle="butt")
+CHOKEPOINT_MARKER = dict(marker="D", s=40, facecolors="white", edgecolors=colours.unit(colours.CHOKEPOINT_COLOUR),
+                         linewidths=1.0, zorder=5)
+
+
+def _mark_chokepoints(ax, records: list[dict]) -> None:
+    """A bar across each chokepoint's portal and a diamond labelled ``id: width m`` (walkable width)."""
+    for record in records:
+        (x0, _, z0), (x1, _, z1) = record["portal"]
+        x, _, z = record["position"]
+        ax.plot([x0, x1], [z0, z1], **CHOKEPOINT_BAR)
+        ax.scatter([x], [z], **CHOKEPOINT_MARKER)
+        ax.annotate(f"{record['id']}: {record['width']:.1f} m", (x, z), xytext=(4, 4), textcoords="offset points",
+                    fontsize=7, zorder=5)
+
+
+def _legend_handles(result: RunResult, graph: nx.Graph | None, groups: list[list[int]]) -> list[Artist]:
+    """Legend entries for what the panels show: roots, terminals, openings, regions, chokepoints,
+    loop edges, edges to another floor."""
     if graph is None:
         return []
     floor_of = {n: i for i, group in enumerate(groups) for n in group}
@@ -245,6 +322,16 @@ def _legend_handles(result: RunResult, graph: nx.Graph | None, groups: list[list
                               markeredgecolor=colours.unit(colours.TERMINAL_COLOUR), label="terminal"))
     if result.terminals is not None and result.terminals.openings:
         handles.append(Line2D([], [], color=colours.unit(colours.TERMINAL_COLOUR), linewidth=4.0, label="opening"))
+    if feature_records(result, "regions"):
+        handles.append(Patch(facecolor=colours.unit(colours.REGION_COLOURS[0], REGION_ALPHA), edgecolor="none",
+                             label="regions (neighbours differ in colour)"))
+    if feature_records(result, "chokepoints"):
+        handles.append(Line2D([], [], color=CHOKEPOINT_BAR["color"], linewidth=CHOKEPOINT_BAR["linewidth"],
+                              marker="D", markersize=6, markerfacecolor="white",
+                              markeredgecolor=CHOKEPOINT_MARKER["edgecolors"], label="chokepoint (id: walkable width)"))
+    if graph.is_directed() and any(is_loop_edge(graph, u, v) for u, v in graph.edges):
+        handles.append(Line2D([], [], color=colours.unit(colours.LOOP_COLOUR), linewidth=1.6, linestyle="dotted",
+                              label="loop edge"))
     if any(floor_of[u] != floor_of[v] for u, v in graph.edges):
         handles.append(Line2D([], [], color="0.47", linestyle="dashed",
                               label="edge to another floor (stairs, ramp or drop)"))

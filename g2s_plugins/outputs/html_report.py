@@ -20,12 +20,28 @@ Step 3: Steiner tree               edges, nodes                                 
 Step 4: rooted trees               edges by depth [3]_, nodes                   no
 Step 5: simplified structure       edges by depth [3]_, nodes                   [1]_
 Roots                              a black diamond on each root                 yes
+Loop edges                         the final structure's loop edges, near-      yes
+                                   black, dotted [4]_
 Analysis: <key>                    edges and nodes by value (one per key)       [2]_
+Regions                            navmesh triangles coloured by region, a      yes
+                                   cross on each region's centroid
+Chokepoints                        a bar across each portal, an x sized by      yes
+                                   score
 =================================  ==========================================  =======
 
 .. [1] shown when the run has no analysis values.
 .. [2] the first key is shown, with its colour bar.
-.. [3] one trace per depth colour in use (at most ``len(DEPTH_COLOURS)``).
+.. [3] one trace per depth colour in use (at most ``len(DEPTH_COLOURS)``);
+   loop edges drawn dotted near-black in the same layer.
+.. [4] with loops kept (config ``loops:``, see :mod:`g2s_core.loops`); the
+   analysis layers leave loop edges to this layer.
+
+The Regions and Chokepoints layers appear when the ``regions`` and
+``chokepoints`` analyzers ran; neighbouring regions differ in colour
+(:func:`colours.region_colours`), chokepoints are near-black. Hovering a
+region's cross or a chokepoint's x shows its position in metres as a node's
+hover does, then its record: a region's area, floor and neighbours, a
+chokepoint's walkable width, score, traffic and the regions it joins.
 
 Depth colours: red = depth 1, yellow = 2, then green, cyan, blue, magenta ...;
 analysis values on viridis (dark purple lowest, yellow highest); terminals and
@@ -53,7 +69,16 @@ from plotly.offline import get_plotlyjs
 
 from g2s_core.model import RunResult
 from g2s_plugins.outputs import colours
-from g2s_plugins.outputs.common import edge_list, final_graph, is_loop_edge, roots_of, stage_rows, terminal_ids
+from g2s_plugins.outputs.common import (
+    edge_list,
+    feature_records,
+    final_graph,
+    is_loop_edge,
+    roots_of,
+    stage_rows,
+    terminal_ids,
+    triangle_regions,
+)
 from g2s_plugins.outputs.files import atomic_write
 
 REPORT_FILE = "report.html"
@@ -68,6 +93,11 @@ LAYER_FOREST = "Step 4: rooted trees"
 LAYER_STRUCTURE = "Step 5: simplified structure"
 LAYER_ROOTS = "Roots"
 LAYER_ANALYSIS = "Analysis: {key}"
+LAYER_REGIONS = "Regions"
+LAYER_CHOKEPOINTS = "Chokepoints"
+LAYER_LOOPS = "Loop edges"
+LOOP_LINE = dict(width=5, color=colours.css(colours.LOOP_COLOUR), dash="dot")
+"""How loop edges are drawn, in the tree layers and in their own layer."""
 
 CAMERA_DIRECTION = (1.0, 1.4, 1.2)
 """Where the initial camera looks from (plotly scene units, Y up): above the level, from one corner."""
@@ -232,6 +262,9 @@ def build_figure(result: RunResult) -> go.Figure:
     for index, key in enumerate(keys):
         if final is not None:
             traces += _analysis_layer(final, key, result, visible=index == 0)
+    if final is not None and final.is_directed():
+        traces += _loop_layer(final)
+    traces += _region_layer(result) + _chokepoint_layer(result)
     figure = go.Figure(data=traces)
     figure.update_layout(
         template="plotly_white",
@@ -280,12 +313,15 @@ def _visible(shown: bool) -> bool | str:
     return True if shown else "legendonly"
 
 
-def _mesh_trace(vertices: np.ndarray, faces: np.ndarray, name: str, colour: str, opacity: float, visible: bool) -> go.Mesh3d:
+def _mesh_trace(vertices: np.ndarray, faces: np.ndarray, name: str, colour: str | list[str], opacity: float,
+                visible: bool) -> go.Mesh3d:
+    """Triangles ``faces`` of ``vertices`` in one ``colour``, or one colour per face."""
     v = np.asarray(vertices, dtype=np.float32)
     f = np.asarray(faces, dtype=np.int32)
+    paint = dict(color=colour) if isinstance(colour, str) else dict(facecolor=colour)
     return go.Mesh3d(
         x=v[:, 0], y=v[:, 1], z=v[:, 2], i=f[:, 0], j=f[:, 1], k=f[:, 2],
-        name=name, legendgroup=name, showlegend=True, color=colour, opacity=opacity,
+        name=name, legendgroup=name, showlegend=True, opacity=opacity, **paint,
         flatshading=True, hoverinfo="skip", visible=_visible(visible),
         lighting=dict(ambient=0.7, diffuse=0.5, specular=0.05),
     )
@@ -315,13 +351,17 @@ def hover_text(graph: nx.Graph, node: int, result: RunResult, terminals: set[int
     """What hovering ``node`` shows: id and role, position (m), depth and tree, each analysis value once."""
     attrs = graph.nodes[node]
     roles = [role for role, present in (("root", attrs.get("depth") == 0), ("terminal", node in terminals)) if present]
-    pos = attrs["pos"]
-    lines = [f"node {node}" + (f" ({', '.join(roles)})" if roles else ""),
-             f"x {pos[0]:.2f} m, y {pos[1]:.2f} m, z {pos[2]:.2f} m"]
+    lines = []
     if attrs.get("depth") is not None:
         lines.append(f"depth {attrs['depth']} in the tree of root {attrs.get('root')}")
     lines += [f"{key}: {values[node]:.4g}" for key, values in result.analysis.items() if node in values]
-    return "<br>".join(lines)
+    return _hover(f"node {node}", roles, attrs["pos"], lines)
+
+
+def _hover(title: str, roles: Sequence[str], pos: Sequence[float], lines: Sequence[str]) -> str:
+    """A marker's hover text: title and roles, position (m), then ``lines``."""
+    head = title + (f" ({', '.join(roles)})" if roles else "")
+    return "<br>".join([head, f"x {pos[0]:.2f} m, y {pos[1]:.2f} m, z {pos[2]:.2f} m", *lines])
 
 
 def _node_trace(graph: nx.Graph, nodes: Sequence[int], name: str, result: RunResult, size: float,
@@ -355,16 +395,29 @@ def _terminal_layer(result: RunResult, terminals: list[int]) -> list[Any]:
     openings = result.terminals.openings if result.terminals is not None else ()
     if openings:
         xs, ys, zs = _segments([(o.p0, o.p1) for o in openings])
+        texts: list[str | None] = []
+        for index, o in enumerate(openings):
+            text = _opening_text(index, o)
+            texts += [text, text, None]
         traces.append(go.Scatter3d(x=xs, y=ys, z=zs, mode="lines", name=LAYER_TERMINALS, legendgroup=LAYER_TERMINALS,
                                    showlegend=not traces, line=dict(color=colour, width=8),
-                                   hoverinfo="skip", visible=True))
+                                   text=texts, hovertemplate="%{text}<extra></extra>", visible=True))
     return traces
+
+
+def _opening_text(index: int, opening: Any) -> str:
+    """Hover text of an opening: its number, width, score and the reason it was kept."""
+    score = "not scored" if opening.score is None else f"score {opening.score:.2f}"
+    lines = [f"opening {index}: {opening.width:.2f} m wide, {score}"]
+    if opening.reason:
+        lines.append(html.escape(opening.reason))
+    return "<br>".join(lines)
 
 
 def _tree_layer(tree: nx.DiGraph, name: str, visible: bool, result: RunResult) -> list[Any]:
     """Edges by depth (one trace per depth colour in use, red = depth 1 first), then the nodes."""
     by_colour: dict[int, list[tuple[int, int]]] = {}
-    loops = [(u, v) for u, v in edge_list(tree) if is_loop_edge(tree, u, v)]
+    loops = _loop_edges(tree)
     for parent, child in edge_list(tree):
         if is_loop_edge(tree, parent, child):
             continue
@@ -375,8 +428,8 @@ def _tree_layer(tree: nx.DiGraph, name: str, visible: bool, result: RunResult) -
                dict(width=5, color=colours.css(colours.DEPTH_COLOURS[index])))
         for index in sorted(by_colour)
     ]
-    if loops:  # the loop edges of a structure with loops (g2s_core.loops): near-black, dotted
-        traces.append(_lines(tree, loops, name, visible, False, dict(width=5, color=colours.css(colours.LOOP_COLOUR), dash="dot")))
+    if loops:
+        traces.append(_lines(tree, loops, name, visible, False, LOOP_LINE))
     nodes = sorted(tree.nodes)
     node_colours = [colours.css(colours.depth_colour(int(tree.nodes[n].get("depth", 0)))) for n in nodes]
     traces.append(_node_trace(tree, nodes, name, result, 3, node_colours, visible, showlegend=not traces))
@@ -394,7 +447,7 @@ def _analysis_layer(graph: nx.Graph, key: str, result: RunResult, visible: bool)
     name = LAYER_ANALYSIS.format(key=key)
     values = result.analysis[key]
     low, high = _value_range(list(values.values()))
-    edges = edge_list(graph)
+    edges = [(u, v) for u, v in edge_list(graph) if not (graph.is_directed() and is_loop_edge(graph, u, v))]
     # two points and a gap per segment, all in the child's colour
     edge_values = np.repeat(np.asarray([values.get(v, low) for _, v in edges], dtype=np.float32), 3)
     scale = dict(colorscale=colours.plotly_heat_scale(), cmin=low, cmax=high)
@@ -404,3 +457,62 @@ def _analysis_layer(graph: nx.Graph, key: str, result: RunResult, visible: bool)
     node_trace = _node_trace(graph, nodes, name, result, 5, marker_values, visible)
     node_trace.marker.update(showscale=True, colorbar=dict(title=dict(text=key), x=1.0, len=0.6), **scale)
     return [lines, node_trace]
+
+
+def _loop_layer(graph: nx.DiGraph) -> list[Any]:
+    """The loop edges of a structure with loops, near-black and dotted, with a legend entry of their own."""
+    loops = _loop_edges(graph)
+    return [_lines(graph, loops, LAYER_LOOPS, True, True, LOOP_LINE)] if loops else []
+
+
+def _loop_edges(graph: nx.DiGraph) -> list[tuple[int, int]]:
+    return [(u, v) for u, v in edge_list(graph) if is_loop_edge(graph, u, v)]
+
+
+def _record_markers(positions: Sequence[Sequence[float]], name: str, texts: list[str],
+                    marker: dict[str, Any]) -> go.Scatter3d:
+    """Markers at the (R, 3) ``positions`` (m) with hover ``texts``, in layer ``name`` (no legend entry of their own)."""
+    p = np.asarray(positions, dtype=np.float32).reshape(-1, 3)
+    return go.Scatter3d(x=p[:, 0], y=p[:, 1], z=p[:, 2], mode="markers", name=name, legendgroup=name,
+                        showlegend=False, marker=marker, text=texts, hoverinfo="text")
+
+
+def _region_layer(result: RunResult) -> list[Any]:
+    """The navmesh's detail triangles coloured by region, and a cross on each region's centroid."""
+    regions = triangle_regions(result)
+    if regions is None:
+        return []
+    navmesh = result.context.navmesh
+    records = feature_records(result, "regions")
+    palette = {r: colours.css(c) for r, c in colours.region_colours(records).items()}
+    inside = regions >= 0
+    surface = _mesh_trace(np.asarray(navmesh.detail_vertices), np.asarray(navmesh.detail_triangles)[inside],
+                          LAYER_REGIONS, [palette[r] for r in regions[inside].tolist()], 0.8, True)
+    texts = [_hover(f"region {r['id']}", [f"floor {r['floor']}"], r["centroid"],
+                    [f"area {r['area']:.1f} m², {len(r['polygons'])} polygons",
+                     "neighbours: " + (", ".join(f"{n['region']} (chokepoints {', '.join(map(str, n['chokepoints']))})"
+                                                 for n in r["neighbours"]) or "none")])
+             for r in records]
+    centres = _record_markers([r["centroid"] for r in records], LAYER_REGIONS, texts,
+                              dict(size=5, color=[palette[r["id"]] for r in records], symbol="cross"))
+    return [surface, centres]
+
+
+def _chokepoint_layer(result: RunResult) -> list[Any]:
+    """Each chokepoint's portal as a thick near-black bar and an x sized by score, its record on hover."""
+    records = feature_records(result, "chokepoints")
+    if not records:
+        return []
+    colour = colours.css(colours.CHOKEPOINT_COLOUR)
+    xs, ys, zs = _segments([tuple(r["portal"]) for r in records])
+    bars = go.Scatter3d(x=xs, y=ys, z=zs, mode="lines", name=LAYER_CHOKEPOINTS, legendgroup=LAYER_CHOKEPOINTS,
+                        showlegend=True, line=dict(color=colour, width=8), hoverinfo="skip")
+    top = max(max(r["score"] for r in records), 1e-12)
+    texts = [_hover(f"chokepoint {r['id']}", ["closing it disconnects the level"] if r["articulation"] else [],
+                    r["position"], [f"walkable width {r['width']:.2f} m",
+                                    f"score {r['score']:.3g} (traffic {r['traffic']:.3g} / width)",
+                                    f"joins regions {r['regions'][0]} and {r['regions'][1]}"])
+             for r in records]
+    markers = _record_markers([r["position"] for r in records], LAYER_CHOKEPOINTS, texts,
+                              dict(size=[6 + 10 * r["score"] / top for r in records], color=colour, symbol="x"))
+    return [bars, markers]

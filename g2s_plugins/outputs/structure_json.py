@@ -6,7 +6,9 @@ structure with its tree data and analysis values, the rooted trees, the
 terminals and openings, the sizes (and edges) of the Steiner tree and the
 rooted trees before simplification, the node/edge counts of every stage and
 the warnings. Its layout is described by ``structure.schema.json`` next to
-this module (``schema_version`` 1).
+this module (``schema_version`` 2: version 1 plus ``features``, the records
+analyzers such as ``chokepoints`` and ``regions`` return; version 1 files
+are still read).
 
 Determinism rule: the same mesh and config give a byte-identical
 ``structure.json``. Keys are sorted, lists are in a fixed order (nodes and
@@ -34,7 +36,10 @@ from g2s_core.rooted import tree_parent
 from g2s_plugins.outputs.common import edge_list, final_graph, number, roots_of, terminal_ids, vector
 from g2s_plugins.outputs.files import atomic_write
 
-SCHEMA_VERSION = 1
+SCHEMA_VERSION = 2
+READABLE_VERSIONS = (1, 2)
+"""structure.json versions :func:`load_result` reads (1 has no ``features``)."""
+RUN_SCHEMA_VERSION = 1
 STRUCTURE_FILE = "structure.json"
 RUN_FILE = "run.json"
 SCHEMA_PATH = Path(__file__).resolve().parent / "structure.schema.json"
@@ -109,6 +114,7 @@ def structure_document(result: RunResult) -> dict[str, Any]:
         "directed": bool(graph is not None and graph.is_directed()),
         "roots": roots,
         "analysis_keys": keys,
+        "features": _plain(result.features),
         "nodes": nodes,
         "edges": edges,
         "trees": trees,
@@ -133,7 +139,7 @@ def structure_document(result: RunResult) -> dict[str, Any]:
 def run_document(result: RunResult) -> dict[str, Any]:
     """The content of ``run.json``: what varies between runs (times, versions)."""
     return {
-        "schema_version": SCHEMA_VERSION,
+        "schema_version": RUN_SCHEMA_VERSION,
         "format": "g2s-run",
         "mesh": {"name": result.mesh_name, "sha256": result.mesh_sha256},
         "stages": [
@@ -175,6 +181,8 @@ def _opening(opening: Opening) -> dict[str, Any]:
         "width": number(opening.width),
         "p0": vector(opening.p0),
         "p1": vector(opening.p1),
+        "score": None if opening.score is None else number(opening.score),
+        "reason": opening.reason,
     }
 
 
@@ -265,7 +273,8 @@ class LoadedResult:
     :mod:`g2s_core.model` (``pos``, ``normal``, ``area``, ``on_navmesh``,
     ``polygon``, ``depth``, ``root``), ``terminal`` (bool) and the plugins'
     extra attributes; its edges ``weight`` and extras. ``analysis`` maps each
-    analyzer's key to its value per node. ``stages`` come with their seconds
+    analyzer's key to its value per node, ``features`` to its records (empty
+    for version 1 files). ``stages`` come with their seconds
     when ``run.json`` of the same mesh lies beside the file, NaN otherwise.
     """
 
@@ -278,6 +287,7 @@ class LoadedResult:
     structure: nx.Graph
     roots: list[int]
     analysis: dict[str, dict[int, float | None]]
+    features: dict[str, dict[str, Any]]
     terminals: Terminals | None
     steiner: nx.Graph | None
     forest: nx.DiGraph | None
@@ -306,8 +316,9 @@ def load_result(path: str | Path) -> LoadedResult:
     if not isinstance(document, dict) or document.get("format") != "g2s-structure":
         raise G2SError(f"{path}: not a g2s structure.json file")
     version = document.get("schema_version")
-    if version != SCHEMA_VERSION:
-        raise G2SError(f"{path}: schema_version {version!r} is not supported (this g2s reads {SCHEMA_VERSION})")
+    if version not in READABLE_VERSIONS:
+        readable = ", ".join(map(str, READABLE_VERSIONS))
+        raise G2SError(f"{path}: schema_version {version!r} is not supported (this g2s reads {readable})")
     try:
         return _loaded(document, path)
     except (KeyError, TypeError, ValueError) as exc:
@@ -342,7 +353,10 @@ def _loaded(document: dict[str, Any], path: Path) -> LoadedResult:
     terminals = None
     if document["terminals"] is not None:
         openings = tuple(
-            Opening(vec3(o["position"]), vec3(o["heading"]), float(o["width"]), vec3(o["p0"]), vec3(o["p1"]))
+            Opening(
+                vec3(o["position"]), vec3(o["heading"]), float(o["width"]), vec3(o["p0"]), vec3(o["p1"]),
+                None if o.get("score") is None else float(o["score"]), o.get("reason"),
+            )
             for o in document["terminals"]["openings"]
         )
         terminals = Terminals(tuple(int(t) for t in document["terminals"]["node_ids"]), openings)
@@ -358,6 +372,7 @@ def _loaded(document: dict[str, Any], path: Path) -> LoadedResult:
         structure=structure,
         roots=roots,
         analysis=analysis,
+        features=dict(document.get("features", {})),
         terminals=terminals,
         steiner=_edges_graph(graphs.get("steiner"), directed=False),
         forest=_edges_graph(graphs.get("forest"), directed=True),  # type: ignore[arg-type]

@@ -1,65 +1,46 @@
-"""Surface LoS: remove B when A sees C across the navigation mesh and the surface does not bend at B (Algorithm 5).
+"""Surface LoS: remove B when A sees C across the navigation mesh and the surface does not bend (Algorithm 5).
 
-For a chain A -> B -> C of a rooted tree, ``P(tree, A, B, C)`` keeps B
-(returns False) when
+For a chain A -> B -> C of a rooted tree the predicate is the paper's
+Algorithm 5 as :func:`g2s_plugins._surface.collapse_rule` states it (C a
+leaf off the navmesh, the chain's normals bending by more than
+``normal_tolerance_deg``, or no line of sight: B stays), with this line of
+sight from A to C:
 
-1. C is a leaf (no children) that is not on the navigation mesh: a
-   line-of-sight test on the navmesh surface means nothing for a point off
-   it (e.g. an entry/exit point added outside the mesh);
-2. the angle between the surface normals at A and B exceeds
-   ``normal_tolerance_deg``: removing B would cut across a change of slope
-   (the start of a ramp or stairs) and the structure would leave the surface;
-   a zero-length normal counts as exceeding it;
-3. the Detour raycast from A to C over ``context.navmesh`` is blocked.
-
-Otherwise it returns True (B may go). The paper's pseudocode (Algorithm 5)
-writes the third test backwards: it sets ``canCollapse = false`` when there
-*is* line of sight, and its last line sets ``canCollapse = true``
-unconditionally. Its text (Sec. 3.1.5) states the intent implemented here:
-collapse only when A and C see each other on the navmesh surface.
+* Detour's raycast from A to C over ``context.navmesh`` reaches C; and
+* the straight segment A -> C stays within ``max_surface_gap`` of the
+  navmesh's detail surface: at points at most ``probe_step`` apart along it,
+  the detail surface lies within the gap above or below
+  (:class:`g2s_plugins._surface.NavmeshSurface`). Detour's raycast is 2D: alone, it lets an edge run metres
+  under a ramp whose foot it crosses.
 
 Default tolerance, 10 degrees: Recast quantises heights to the cell height,
 which tilts the polygons of a flat floor by a few degrees at most, and such
-noise must not block a simplification (the Hub 5 artefact in the paper's results);
-walkable ramps in levels are usually 15 to 45 degrees steep (the default
-agent climbs up to 45), so 10 degrees still keeps a node where one begins.
+noise must not block a simplification (the Hub 5 artefact in the paper's
+results); walkable ramps in levels are usually 15 to 45 degrees steep (the
+default agent climbs up to 45), so 10 degrees still keeps a node where one
+begins.
 
-Cost per call: one navmesh raycast, O(polygons crossed).
+Cost per call: one navmesh raycast, O(polygons crossed), and one numpy pass
+over the |AC| / probe_step + 1 probe points and the detail triangles under them.
 """
 
 from __future__ import annotations
 
-import math
 from collections.abc import Callable
 
 import networkx as nx
-from pydantic import Field
+import numpy as np
 
 from g2s_core.errors import PluginError
 from g2s_core.model import RunContext
-from g2s_core.plugin import PluginParams, hookimpl
+from g2s_core.plugin import hookimpl
+from g2s_plugins._surface import CollapseParams, NavmeshSurface, collapse_rule, segment_points
 
 NAME = "surface_los"
 
 
-class Params(PluginParams):
-    """How much the surface may bend at a removed node."""
-
-    normal_tolerance_deg: float = Field(
-        10.0, ge=0, le=180, description="largest angle between the normals at A and B that still lets B go, degrees"
-    )
-
-
-def normals_angle_deg(a: tuple[float, float, float], b: tuple[float, float, float]) -> float:
-    """Angle between two normals in degrees; ``inf`` when either has zero length.
-
-    Plain floats rather than numpy: it runs once per predicate call, on 3-vectors.
-    """
-    lengths = math.hypot(*a) * math.hypot(*b)
-    if not lengths > 0:
-        return math.inf
-    cosine = (a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) / lengths
-    return math.degrees(math.acos(min(1.0, max(-1.0, cosine))))
+class Params(CollapseParams):
+    """How much the surface may bend at a removed node, and how far a new edge may stray from the navmesh surface."""
 
 
 @hookimpl
@@ -72,15 +53,19 @@ def g2s_simplify_predicate(params: Params, context: RunContext) -> Callable[[nx.
     navmesh = context.navmesh
     if navmesh is None:
         raise PluginError("surface_los needs a navigation mesh; use the navmesh graph builder or the mesh_los predicate")
-    tolerance = params.normal_tolerance_deg
+    params = params if params is not None else Params()
+    agent = context.agent
+    step = params.probe_step if params.probe_step is not None else 0.5 * float(agent.radius)
+    gap = float(params.max_surface_gap)
+    surface: NavmeshSurface | None = None
 
-    def predicate(tree: nx.DiGraph, a: int, b: int, c: int) -> bool:
-        node_c = tree.nodes[c]
-        if tree.out_degree(c) == 0 and not node_c.get("on_navmesh", False):
+    def line_of_sight(start: tuple[float, ...], end: tuple[float, ...]) -> bool:
+        nonlocal surface
+        clear, _t = navmesh.raycast(start, end)
+        if not clear:
             return False
-        if normals_angle_deg(tree.nodes[a]["normal"], tree.nodes[b]["normal"]) > tolerance:
-            return False
-        clear, _t = navmesh.raycast(tree.nodes[a]["pos"], node_c["pos"])
-        return clear
+        if surface is None:  # built on first use: runs that never reach here pay nothing
+            surface = NavmeshSurface(navmesh)
+        return bool(np.all(surface.gaps(segment_points(start, end, step), gap) <= gap))
 
-    return predicate
+    return collapse_rule(params.normal_tolerance_deg, line_of_sight)

@@ -47,7 +47,7 @@ def _params_model(name: str, factory: Callable[..., SampleLevel]) -> type[Plugin
     fields = {
         parameter.name: (
             hints.get(parameter.name, typing.Any),
-            Field(parameter.default, description=f"argument {parameter.name} of levels.{factory.__name__}(); see docs/samples.md"),
+            Field(parameter.default, description=f"argument {parameter.name} of {factory.__module__.rsplit('.', 1)[-1]}.{factory.__name__}(); see docs/samples.md"),
         )
         for parameter in inspect.signature(factory).parameters.values()
         if parameter.default is not inspect.Parameter.empty

@@ -1,4 +1,4 @@
-"""Navmesh boundary loops, loop sampling and batched ray casts for the ``entry_exit`` selector.
+"""Navmesh boundary loops and loop sampling for the ``entry_exit`` selector.
 
 Conventions: metres, Y up, right-handed. A boundary loop is oriented so that
 the walkable interior lies on the *left* of the walking direction ``t`` seen
@@ -10,98 +10,12 @@ holes clockwise.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any
-
 import numpy as np
-import trimesh
 
-UP = np.array([0.0, 1.0, 0.0])
+from g2s_plugins._raycasting import UP
 
 WELD = 1e-4
 """Metres: navmesh vertices closer than this (per axis, rounded) are one vertex when chaining loops."""
-
-
-# --------------------------------------------------------------------------
-# Ray casting
-# --------------------------------------------------------------------------
-
-
-class RayCaster:
-    """First hits of batches of rays against one mesh (one intersector call per batch).
-
-    Uses :class:`trimesh.ray.ray_pyembree.RayMeshIntersector` when ``embreex``
-    imports, else trimesh's pure-Python intersector (same answers, slower).
-    A ray hits front and back faces alike.
-    """
-
-    def __init__(self, mesh: trimesh.Trimesh):
-        self.mesh = mesh
-        try:
-            from trimesh.ray import ray_pyembree
-
-            self._intersector: Any = ray_pyembree.RayMeshIntersector(mesh)
-            self.backend = "embree"
-        except ImportError:  # embreex missing: correct but slow
-            from trimesh.ray import ray_triangle
-
-            self._intersector = ray_triangle.RayMeshIntersector(mesh)
-            self.backend = "python"
-        self.face_normals = np.asarray(mesh.face_normals, dtype=np.float64)
-
-    def first_hits(self, origins: np.ndarray, directions: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """Distance, hit point and triangle of the first hit of each ray.
-
-        Args:
-            origins: (N,3) ray origins.
-            directions: (N,3) directions (normalised here).
-
-        Returns:
-            ``distance`` (N,) (``inf`` when nothing is hit), ``points`` (N,3)
-            (NaN when nothing is hit) and ``triangle`` (N,) int (-1 when
-            nothing is hit).
-        """
-        origins = np.ascontiguousarray(origins, dtype=np.float64).reshape(-1, 3)
-        directions = np.asarray(directions, dtype=np.float64).reshape(-1, 3)
-        n = len(origins)
-        distance = np.full(n, np.inf)
-        points = np.full((n, 3), np.nan)
-        triangle = np.full(n, -1, dtype=np.int64)
-        if n == 0:
-            return distance, points, triangle
-        length = np.linalg.norm(directions, axis=1, keepdims=True)
-        directions = np.ascontiguousarray(directions / np.where(length > 0, length, 1.0))
-        locations, index_ray, index_tri = self._intersector.intersects_location(
-            origins, directions, multiple_hits=False
-        )
-        if len(index_ray):
-            index_ray = np.asarray(index_ray, dtype=np.int64)
-            d = np.einsum("ij,ij->i", locations - origins[index_ray], directions[index_ray])
-            # multiple_hits=False gives one hit per ray; keep the nearest if a backend gives more
-            order = np.lexsort((d, index_ray))
-            first = np.r_[True, index_ray[order][1:] != index_ray[order][:-1]]
-            keep = order[first]
-            distance[index_ray[keep]] = np.maximum(d[keep], 0.0)
-            points[index_ray[keep]] = locations[keep]
-            triangle[index_ray[keep]] = np.asarray(index_tri, dtype=np.int64)[keep]
-        return distance, points, triangle
-
-
-    def all_hits(self, origins: np.ndarray, directions: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """Every hit along each ray: ``ray`` index, ``distance`` and ``triangle``, each (H,)."""
-        origins = np.ascontiguousarray(origins, dtype=np.float64).reshape(-1, 3)
-        directions = np.asarray(directions, dtype=np.float64).reshape(-1, 3)
-        if len(origins) == 0:
-            return np.zeros(0, np.int64), np.zeros(0), np.zeros(0, np.int64)
-        length = np.linalg.norm(directions, axis=1, keepdims=True)
-        directions = np.ascontiguousarray(directions / np.where(length > 0, length, 1.0))
-        locations, index_ray, index_tri = self._intersector.intersects_location(
-            origins, directions, multiple_hits=True
-        )
-        index_ray = np.asarray(index_ray, dtype=np.int64)
-        if len(index_ray) == 0:
-            return index_ray, np.zeros(0), np.zeros(0, np.int64)
-        d = np.einsum("ij,ij->i", locations - origins[index_ray], directions[index_ray])
-        return index_ray, d, np.asarray(index_tri, dtype=np.int64)
 
 
 # --------------------------------------------------------------------------

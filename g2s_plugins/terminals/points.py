@@ -5,10 +5,9 @@ nodes (scipy ``cKDTree``) that lie within ``max_distance``; the new edges'
 ``weight`` is the Euclidean distance. New ids follow the largest existing
 id, in the order the points are given, and the terminals are the new nodes
 in that order. A new node has ``pos`` = the point, ``normal`` = that of its
-nearest node, ``area`` = 0, ``polygon`` = -1 and ``on_navmesh`` true only
-when the run has a navigation mesh and a navmesh polygon lies within the
-agent radius horizontally and the agent's max climb vertically of the point
-(Detour ``findNearestPoly``); without a navmesh it is false.
+nearest node, ``area`` = 0, ``polygon`` = -1 and ``on_navmesh`` from
+:func:`g2s_plugins._surface.on_navmesh` (a navmesh polygon within one cell
+horizontally and the agent's max climb vertically; false without a navmesh).
 
 Points come from ``points`` (a list of [x, y, z] in metres, mesh frame, Y
 up) or from ``file``: JSON (a list of [x, y, z], or ``{"points": [...]}``)
@@ -22,7 +21,6 @@ Complexity: O(n log n) to build the k-d tree plus O(p (log n + k)) for p points.
 from __future__ import annotations
 
 import json
-import math
 import re
 from pathlib import Path
 from typing import Any
@@ -34,9 +32,9 @@ from pydantic_core import PydanticCustomError
 from scipy.spatial import cKDTree
 
 from g2s_core.errors import G2SError
-from g2s_core.config import AgentConfig
-from g2s_core.model import NavMesh, RunContext, Terminals, vec3
+from g2s_core.model import RunContext, Terminals, vec3
 from g2s_core.plugin import PluginParams, hookimpl
+from g2s_plugins._surface import on_navmesh
 
 NAME = "points"
 
@@ -126,24 +124,6 @@ def read_points(file: str | Path) -> np.ndarray:
     if not points:
         raise G2SError(f"{path}: the file holds no points")
     return np.asarray(points, dtype=np.float64)
-
-
-def on_navmesh(navmesh: NavMesh | None, point: np.ndarray, agent: AgentConfig) -> bool:
-    """Whether a navmesh polygon lies within the agent radius (horizontally) and max climb (vertically) of ``point``.
-
-    ``navmesh.nearest_poly(p, extents)`` returns (polygon index or -1, nearest
-    point on the navmesh); the half extents of the search box are (radius,
-    max climb, radius). False when ``navmesh`` is ``None``.
-    """
-    if navmesh is None:
-        return False
-    radius = float(agent.radius)
-    climb = max(float(agent.max_climb), 1e-3)
-    index, nearest = navmesh.nearest_poly(np.asarray(point, dtype=np.float64), extents=(radius, climb, radius))
-    if int(index) < 0:
-        return False
-    offset = np.asarray(nearest, dtype=np.float64) - point
-    return math.hypot(offset[0], offset[2]) <= radius + 1e-9 and abs(offset[1]) <= climb + 1e-9
 
 
 @hookimpl

@@ -1,0 +1,455 @@
+"""Regions and chokepoints of a navigation mesh: rooms, and the narrow passages that join them.
+
+The walkable surface is split where it narrows, as strategy-game map analysers
+do on their tile grids (BWEM grows areas from the points farthest from the
+walls and puts a chokepoint where two grown areas meet; Perkins 2010, BWTA,
+uses the Voronoi diagram of the walls). Here the same idea runs on the navmesh
+polygons and their shared edges (portals):
+
+1. Clearance. The navmesh's boundary edges (polygon edges with no
+   neighbour: the walls, already eroded by the agent radius) are cut into
+   pieces of at most :data:`PIECE`; the clearance of a point is its exact
+   distance to the nearest piece (scipy ``cKDTree`` over the pieces'
+   midpoints, heights scaled by :data:`HEIGHT_SCALE` so that another floor's
+   walls stay far). A polygon's clearance is its centre's; a portal's is the
+   largest clearance of five points along it, so a door's portal measures
+   the middle of the door. Small holes in the walkable surface (closed
+   boundary loops of the hole orientation enclosing less than
+   ``obstacle_area`` m²: pillars, crates) are left out of the clearances
+   that split the level, so they neither make a room as narrow as its doors
+   nor make passages of their own. ``width = 2 x clearance`` with every wall
+   counted is the walkable width reported for a chokepoint (add the agent's
+   diameter for wall to wall).
+2. Merge tree (watershed by clearance). Portals are taken widest first and
+   join the groups of polygons on their two sides (union-find), except when
+   both groups are already *rooms*: they hold at least ``min_region_area`` m²
+   and their widest point is wider than the portal by the factor
+   1 / ``narrowness``. Such a portal is a chokepoint candidate and is never
+   merged: groups only grow and portals only narrow, so the two sides stay
+   apart. Small or barely wider groups (slivers, corridors, corners) merge
+   into their neighbours.
+3. Regions are the groups left (``scipy.sparse.csgraph.connected_components``
+   of the merged portals), numbered by their lowest polygon id. Candidates
+   between the same two regions closer than ``min_separation`` are one
+   chokepoint (the widest portal of them stays: a door cut by a tile border
+   is several portals).
+4. A chokepoint is an articulation of the level when it is a bridge of the
+   region multigraph (regions joined by one edge per chokepoint;
+   ``rustworkx.bridges``): closing it disconnects the level.
+5. Traffic (:func:`score`). A structure edge whose two ends lie in different
+   regions crosses the chokepoint between them nearest to it; the
+   chokepoint's traffic is the largest edge betweenness of the structure
+   edges crossing it (:func:`g2s_plugins.centrality.edge_betweenness`: the
+   share of structure node pairs whose path uses the edge) and its score is
+   ``traffic / width``.
+
+Floors: polygons within 10 degrees of flat are grouped into height bands
+(split where sorted heights jump by more than half the agent height); a
+region's floor is the band holding most of its flat area (the nearest band
+to its mean height when it has none). Multi-floor levels need nothing else:
+the polygon graph already joins floors only where the agent can walk (ramps,
+stairs).
+
+Complexity: clearance O((B + P + E) log B) for B wall pieces, P polygons,
+E portals; the merge tree sorts the portals and runs one union-find step per
+portal (a Python loop of O(E alpha(P)): a merge order is sequential by
+nature and no library offers it on a general graph); everything else is
+numpy/scipy over arrays, networkx only on the small region graph.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+import networkx as nx
+import numpy as np
+import rustworkx as rx
+from pydantic import Field
+from scipy import sparse
+from scipy.sparse import csgraph
+from scipy.spatial import cKDTree
+
+from g2s_core.errors import PluginError
+from g2s_core.plugin import PluginParams
+from g2s_plugins import centrality
+
+HEIGHT_SCALE = 4.0
+"""Height differences count this many times in clearance distances, so a wall 2 m above is 8 m away."""
+
+FLAT_DEG = 10.0
+"""Polygons within this angle of horizontal define the floors' height bands, degrees."""
+
+PIECE = 1.0
+"""Walls are cut into pieces at most this long (m) for the nearest-wall search."""
+
+NEAREST_PIECES = 6
+"""Wall pieces whose exact distance is computed for each point (the nearest by midpoint)."""
+
+PORTAL_SAMPLES = np.array([0.1, 0.3, 0.5, 0.7, 0.9])
+"""Where along a portal the clearance is measured (fractions from its first end point)."""
+
+
+class DecompositionParams(PluginParams):
+    """How the walkable surface is split into regions at chokepoints (shared by ``chokepoints`` and ``regions``)."""
+
+    narrowness: float = Field(
+        0.75, gt=0, lt=1,
+        description="a passage is a chokepoint when its width is at most this fraction of the widest "
+        "point of the rooms on both sides",
+    )
+    obstacle_area: float = Field(
+        16.0, ge=0, description="holes in the walkable surface smaller than this (pillars, crates) neither "
+        "narrow a room nor make a passage, m²",
+    )
+    min_region_area: float = Field(8.0, ge=0, description="smaller areas (slivers, corners) merge into a neighbour, m²")
+    min_separation: float = Field(
+        3.0, ge=0, description="chokepoints between the same two regions closer than this are one, metres"
+    )
+
+
+@dataclass(frozen=True)
+class Decomposition:
+    """Regions and chokepoints of one navmesh.
+
+    Attributes:
+        labels: (P,) int64, the region of every navmesh polygon.
+        regions: one JSON record per region, by id (see :func:`decompose`).
+        chokepoints: one JSON record per chokepoint, by region pair (widest
+            first); :func:`score` orders them by score and numbers them.
+    """
+
+    labels: np.ndarray
+    regions: list[dict[str, Any]]
+    chokepoints: list[dict[str, Any]]
+
+
+def require_navmesh(context: Any, analyzer: str) -> Any:
+    """The run's navmesh, or a one-line error for graphs built without one."""
+    if context.navmesh is None:
+        raise PluginError(
+            f"the {analyzer} analyzer needs a navigation mesh (graph plugin 'navmesh'); "
+            "a sampled graph has no portals to measure"
+        )
+    return context.navmesh
+
+
+def boundary_edges(navmesh: Any) -> tuple[np.ndarray, np.ndarray]:
+    """The navmesh's boundary edges (polygon edges with no neighbour): start and end points, (B,3) each, m."""
+    polygons = np.asarray(navmesh.polygons, dtype=np.int64)
+    valid = polygons >= 0
+    count = valid.sum(axis=1)
+    j = np.arange(polygons.shape[1])[None, :]
+    following = np.where(j + 1 < count[:, None], j + 1, 0)
+    rows, cols = np.nonzero(valid & (np.asarray(navmesh.neighbours) < 0))
+    vertices = np.asarray(navmesh.vertices, dtype=np.float64)
+    return vertices[polygons[rows, cols]], vertices[polygons[rows, following[rows, cols]]]
+
+
+def obstacle_edges(start: np.ndarray, end: np.ndarray, max_area: float) -> np.ndarray:
+    """(B,) bool: boundary edges of holes smaller than ``max_area`` m² (pillars, crates).
+
+    Boundary edges are joined into loops at equal end points (vertices equal
+    to 1 cm, so loops close across tile borders; scipy connected components).
+    A loop's signed xz area (shoelace, summed per loop) has one sign for
+    outer boundaries and the other for holes; the outer sign is that of the
+    loop with the largest area.
+    """
+    if len(start) == 0:
+        return np.zeros(0, dtype=bool)
+    _, vertex = np.unique(_point_keys(np.concatenate([start, end])), return_inverse=True)
+    vertex = vertex.reshape(-1)
+    n, b = int(vertex.max()) + 1, len(start)
+    links = sparse.coo_array((np.ones(b), (vertex[:b], vertex[b:])), shape=(n, n))
+    count, loop_of_vertex = csgraph.connected_components(links, directed=False)
+    loop = loop_of_vertex[vertex[:b]]
+    signed = 0.5 * np.bincount(loop, weights=start[:, 0] * end[:, 2] - end[:, 0] * start[:, 2], minlength=count)
+    outer = np.sign(signed[np.argmax(np.abs(signed))])
+    small_hole = (np.sign(signed) == -outer) & (np.abs(signed) < max_area)
+    return small_hole[loop]
+
+
+def _point_keys(points: np.ndarray) -> np.ndarray:
+    """(N,) int64 keys equal for points equal to 1 cm (21 bits a coordinate: levels up to 20 km across)."""
+    cells = np.round(points * 100.0).astype(np.int64)
+    cells -= cells.min(axis=0, initial=0)
+    if cells.size and cells.max() >= 1 << 21:
+        raise PluginError("the level is more than 20 km across; chokepoints and regions cannot key its vertices")
+    return (cells[:, 0] << 42) | (cells[:, 1] << 21) | cells[:, 2]
+
+
+def wall_samples(start: np.ndarray, end: np.ndarray, spacing: float) -> np.ndarray:
+    """(K,3) points every ``spacing`` metres (at most) along the edges ``start`` -> ``end`` (B,3)."""
+    pieces = np.maximum(np.ceil(np.linalg.norm(end - start, axis=1) / spacing), 1).astype(np.int64)
+    edge = np.repeat(np.arange(len(start)), pieces + 1)
+    offsets = np.arange(len(edge)) - np.repeat(np.cumsum(pieces + 1) - (pieces + 1), pieces + 1)
+    t = (offsets / pieces[edge])[:, None]
+    return start[edge] * (1.0 - t) + end[edge] * t
+
+
+def _distance_to(points: np.ndarray, start: np.ndarray, end: np.ndarray) -> np.ndarray:
+    """Distance (m, heights scaled) from each of ``points`` (N,3) to the nearest segment ``start`` -> ``end``
+    (B,3 each; inf when there is none).
+
+    Segments are cut into pieces at most :data:`PIECE` long; a kd-tree over the
+    pieces' midpoints gives each point its :data:`NEAREST_PIECES` nearest
+    pieces, and the exact point-segment distance to those is taken.
+    """
+    if len(start) == 0:
+        return np.full(len(points), np.inf)
+    scale = np.array([1.0, HEIGHT_SCALE, 1.0])
+    ends = wall_samples(start * scale, end * scale, PIECE)
+    last = np.cumsum(np.maximum(np.ceil(np.linalg.norm((end - start) * scale, axis=1) / PIECE), 1).astype(np.int64) + 1)
+    is_start = np.ones(len(ends), dtype=bool)
+    is_start[last - 1] = False  # a piece runs from each sample to the next one of its edge
+    a, b = ends[is_start], ends[np.flatnonzero(is_start) + 1]
+    k = min(NEAREST_PIECES, len(a))
+    q = points * scale
+    nearest = cKDTree(0.5 * (a + b)).query(q, k=k)[1].reshape(len(q), k)
+    pa, pb = a[nearest], b[nearest]
+    d = pb - pa
+    t = np.clip(np.einsum("nkc,nkc->nk", q[:, None] - pa, d) / np.maximum(np.einsum("nkc,nkc->nk", d, d), 1e-12), 0, 1)
+    return np.linalg.norm(q[:, None] - (pa + t[..., None] * d), axis=2).min(axis=1)
+
+
+@dataclass(frozen=True)
+class Clearances:
+    """How far the navmesh's polygon centres and portals are from its walls, m.
+
+    Attributes:
+        polygons: (P,) clearance of each polygon centre, small holes ignored.
+        portals_open: (E,) clearance of each portal, small holes ignored.
+        portals: (E,) clearance of each portal, every wall counted.
+        widest: (E,3) each portal's point of largest clearance (every wall counted).
+    """
+
+    polygons: np.ndarray
+    portals_open: np.ndarray
+    portals: np.ndarray
+    widest: np.ndarray
+
+
+def clearances(navmesh: Any, obstacle_area: float) -> Clearances:
+    """The clearances of ``navmesh`` (a portal's is the largest of :data:`PORTAL_SAMPLES` points along it).
+
+    Small holes (:func:`obstacle_edges`: pillars, crates) are left out of the
+    clearances that split the level, so that they neither make a room as
+    narrow as its doors nor make passages of their own; the width reported
+    for a chokepoint counts them.
+    """
+    start, end = boundary_edges(navmesh)
+    obstacle = obstacle_edges(start, end, obstacle_area)
+    ends = navmesh.portals().endpoints
+    points = ends[:, None, 0] * (1.0 - PORTAL_SAMPLES[None, :, None]) + ends[:, None, 1] * PORTAL_SAMPLES[None, :, None]
+    points = points.reshape(-1, 3)
+    shape = (len(ends), len(PORTAL_SAMPLES))
+    walls = _distance_to(points, start[~obstacle], end[~obstacle]).reshape(shape)
+    every = np.minimum(walls, _distance_to(points, start[obstacle], end[obstacle]).reshape(shape))
+    widest = every.argmax(axis=1) if len(ends) else np.zeros(0, dtype=np.int64)
+    return Clearances(
+        polygons=_distance_to(np.asarray(navmesh.centres), start[~obstacle], end[~obstacle]),
+        portals_open=walls.max(axis=1, initial=0.0),
+        portals=every.max(axis=1, initial=0.0),
+        widest=points.reshape(*shape, 3)[np.arange(len(ends)), widest],
+    )
+
+
+def _merge_tree(pairs: np.ndarray, portal_clearance: np.ndarray, polygon_clearance: np.ndarray,
+                areas: np.ndarray, narrowness: float, min_area: float) -> tuple[np.ndarray, np.ndarray]:
+    """(merged, blocked): boolean masks over the portals (step 2 of the module doc)."""
+    n = len(polygon_clearance)
+    parent = list(range(n))
+    peak = polygon_clearance.tolist()
+    area = areas.tolist()
+    merged = np.zeros(len(pairs), dtype=bool)
+    blocked = np.zeros(len(pairs), dtype=bool)
+
+    def find(x: int) -> int:
+        while parent[x] != x:
+            parent[x] = parent[parent[x]]
+            x = parent[x]
+        return x
+
+    order = np.lexsort((np.arange(len(pairs)), -portal_clearance))
+    a_list, b_list, c_list = pairs[order, 0].tolist(), pairs[order, 1].tolist(), portal_clearance[order].tolist()
+    for e, a, b, c in zip(order.tolist(), a_list, b_list, c_list):
+        ra, rb = find(a), find(b)
+        if ra == rb:
+            continue
+        if c <= narrowness * min(peak[ra], peak[rb]) and min(area[ra], area[rb]) >= min_area:
+            blocked[e] = True
+            continue
+        if area[ra] < area[rb]:
+            ra, rb = rb, ra
+        parent[rb] = ra
+        peak[ra] = max(peak[ra], peak[rb])
+        area[ra] += area[rb]
+        merged[e] = True
+    return merged, blocked
+
+
+def floor_bands(heights: np.ndarray, normals: np.ndarray, areas: np.ndarray, gap: float) -> np.ndarray:
+    """(P,) int64: the height band of every flat polygon, -1 for sloped ones (bands lowest first)."""
+    flat = np.asarray(normals)[:, 1] >= math.cos(math.radians(FLAT_DEG))
+    band = np.full(len(heights), -1, dtype=np.int64)
+    if not flat.any():
+        return band
+    index = np.flatnonzero(flat)
+    order = index[np.argsort(heights[index], kind="stable")]
+    band[order] = np.concatenate([[0], np.cumsum(np.diff(heights[order]) > gap)])
+    return band
+
+
+def decompose(navmesh: Any, agent: Any, params: DecompositionParams) -> Decomposition:
+    """Regions and (unscored) chokepoints of ``navmesh`` for ``agent`` (see the module doc).
+
+    Region record: ``id``, ``area`` (m²), ``polygons`` (ids), ``centroid``
+    (area-weighted polygon centres, m), ``floor`` (band index, lowest 0),
+    ``height_range`` ([min, max] polygon centre heights, m) and ``neighbours``
+    (``[{"region", "chokepoints"}]``, filled in by :func:`score`).
+    Chokepoint record (before :func:`score`): ``position`` (the widest point of
+    its portal, m), ``portal`` (the portal's two end points), ``width``
+    (walkable width, m), ``regions`` ([a, b], a < b), ``polygons`` (the
+    portal's two polygons), ``floors``, ``articulation``.
+    """
+    clearance = clearances(navmesh, params.obstacle_area)
+    portals = navmesh.portals()
+    pairs = np.asarray(portals.pairs, dtype=np.int64).reshape(-1, 2)
+    areas = np.asarray(navmesh.areas, dtype=np.float64)
+    merged, blocked = _merge_tree(pairs, clearance.portals_open, clearance.polygons, areas,
+                                  params.narrowness, params.min_region_area)
+    n = navmesh.polygon_count
+    joined = sparse.coo_array((np.ones(int(merged.sum())), (pairs[merged, 0], pairs[merged, 1])), shape=(n, n))
+    count, labels = csgraph.connected_components(joined, directed=False)
+    labels = labels.astype(np.int64)
+
+    centres = np.asarray(navmesh.centres, dtype=np.float64)
+    region_area = np.bincount(labels, weights=areas, minlength=count)
+    weight = np.where(region_area > 0, region_area, 1.0)[:, None]
+    centroid = np.stack([np.bincount(labels, weights=areas * centres[:, k], minlength=count) for k in range(3)], axis=1)
+    centroid = np.where(region_area[:, None] > 0, centroid / weight, 0.0)
+    low = np.full(count, np.inf)
+    high = np.full(count, -np.inf)
+    np.minimum.at(low, labels, centres[:, 1])
+    np.maximum.at(high, labels, centres[:, 1])
+    band = floor_bands(centres[:, 1], navmesh.normals, areas, 0.5 * float(agent.height))
+    floor = _region_floors(labels, count, band, areas, centres[:, 1], centroid[:, 1])
+    members = np.split(np.argsort(labels, kind="stable"), np.cumsum(np.bincount(labels, minlength=count))[:-1])
+    regions = [
+        {"id": r, "area": float(region_area[r]), "polygons": members[r].tolist(), "centroid": centroid[r].tolist(),
+         "floor": int(floor[r]), "height_range": [float(low[r]), float(high[r])], "neighbours": []}
+        for r in range(count)
+    ]
+    chokepoints = _chokepoints(np.flatnonzero(blocked), pairs, labels, portals.endpoints, clearance.widest,
+                               2.0 * clearance.portals, floor, params.min_separation)
+    return Decomposition(labels, regions, chokepoints)
+
+
+def _region_floors(labels: np.ndarray, count: int, band: np.ndarray, areas: np.ndarray,
+                   heights: np.ndarray, mean_height: np.ndarray) -> np.ndarray:
+    bands = int(band.max()) + 1 if (band >= 0).any() else 0
+    if bands == 0:
+        return np.zeros(count, dtype=np.int64)
+    flat = band >= 0
+    table = np.bincount(labels[flat] * bands + band[flat], weights=areas[flat], minlength=count * bands)
+    table = table.reshape(count, bands)
+    band_height = np.bincount(band[flat], weights=heights[flat] * areas[flat], minlength=bands) / np.maximum(
+        np.bincount(band[flat], weights=areas[flat], minlength=bands), 1e-12)
+    nearest = np.abs(mean_height[:, None] - band_height[None, :]).argmin(axis=1)
+    return np.where(table.max(axis=1) > 0, table.argmax(axis=1), nearest).astype(np.int64)
+
+
+def _chokepoints(candidates: np.ndarray, pairs: np.ndarray, labels: np.ndarray, endpoints: np.ndarray,
+                 widest: np.ndarray, width: np.ndarray, floor: np.ndarray, separation: float) -> list[dict[str, Any]]:
+    """One record per chokepoint: candidates grouped by region pair, widest first, near ones dropped."""
+    sides = np.sort(labels[pairs[candidates]], axis=1)
+    order = np.lexsort((candidates, -width[candidates], sides[:, 1], sides[:, 0]))
+    kept: list[dict[str, Any]] = []
+    kept_at: dict[tuple[int, int], list[np.ndarray]] = {}
+    for i in order.tolist():
+        e = int(candidates[i])
+        a, b = int(sides[i, 0]), int(sides[i, 1])
+        position = widest[e]
+        others = kept_at.setdefault((a, b), [])
+        if any(np.linalg.norm(q - position) < separation for q in others):
+            continue
+        others.append(position)
+        kept.append({
+            "position": position.tolist(),
+            "portal": endpoints[e].tolist(),
+            "width": float(width[e]),
+            "regions": [a, b],
+            "polygons": [int(pairs[e, 0]), int(pairs[e, 1])],
+            "floors": [int(floor[a]), int(floor[b])],
+        })
+    pairs_kept = [tuple(k["regions"]) for k in kept]
+    count = max((b for _, b in pairs_kept), default=-1) + 1
+    region_graph = rx.PyGraph(multigraph=True)
+    region_graph.add_nodes_from(range(count))
+    region_graph.add_edges_from_no_data(pairs_kept)
+    bridges = {tuple(sorted(e)) for e in rx.bridges(region_graph)}  # a doubled pair is never a bridge
+    for k, pair in zip(kept, pairs_kept):
+        k["articulation"] = pair in bridges
+    return kept
+
+
+def score(decomposition: Decomposition, structure: nx.Graph) -> tuple[list[dict[str, Any]], dict[int, float]]:
+    """Chokepoints with ``traffic`` and ``score``, sorted by score (ids 0, 1 ... in that order),
+    and each structure node's largest score among the chokepoints its edges cross (0 if none).
+
+    Fills in the regions' ``neighbours``. See step 5 of the module doc.
+    """
+    records = [dict(k) for k in decomposition.chokepoints]
+    labels = decomposition.labels
+    by_pair: dict[tuple[int, int], list[int]] = {}
+    for index, k in enumerate(records):
+        by_pair.setdefault(tuple(k["regions"]), []).append(index)
+    traffic = np.zeros(len(records))
+    crossing: list[tuple[int, int, int]] = []
+    edge_traffic = centrality.edge_betweenness(structure) if structure.number_of_edges() else {}
+    for (u, v), value in edge_traffic.items():
+        pu, pv = structure.nodes[u].get("polygon", -1), structure.nodes[v].get("polygon", -1)
+        if pu is None or pv is None or pu < 0 or pv < 0 or labels[pu] == labels[pv]:
+            continue
+        options = by_pair.get(tuple(sorted((int(labels[pu]), int(labels[pv])))))
+        if not options:
+            continue  # the edge skips a region: it crosses two chokepoints and is not counted
+        a, b = np.asarray(structure.nodes[u]["pos"]), np.asarray(structure.nodes[v]["pos"])
+        nearest = min(options, key=lambda i: (_segment_distance(np.asarray(records[i]["position"]), a, b), i))
+        traffic[nearest] = max(traffic[nearest], value)
+        crossing.append((nearest, u, v))
+    for index, k in enumerate(records):
+        k["traffic"] = float(traffic[index])
+        k["score"] = float(traffic[index] / max(k["width"], 1e-6))
+    order = sorted(range(len(records)), key=lambda i: (-records[i]["score"], records[i]["width"], i))
+    rank = {old: new for new, old in enumerate(order)}
+    ranked = [records[i] | {"id": rank[i]} for i in order]
+    node_score = dict.fromkeys(structure.nodes, 0.0)
+    for index, u, v in crossing:
+        for node in (u, v):
+            node_score[node] = max(node_score[node], records[index]["score"])
+    neighbours: dict[int, dict[int, list[int]]] = {}
+    for k in ranked:
+        a, b = k["regions"]
+        neighbours.setdefault(a, {}).setdefault(b, []).append(k["id"])
+        neighbours.setdefault(b, {}).setdefault(a, []).append(k["id"])
+    for region in decomposition.regions:
+        region["neighbours"] = [{"region": other, "chokepoints": sorted(ids)}
+                                for other, ids in sorted(neighbours.get(region["id"], {}).items())]
+    return ranked, node_score
+
+
+def _segment_distance(p: np.ndarray, a: np.ndarray, b: np.ndarray) -> float:
+    d = b - a
+    t = float(np.clip(np.dot(p - a, d) / max(float(np.dot(d, d)), 1e-12), 0.0, 1.0))
+    return float(np.linalg.norm(p - (a + t * d)))
+
+
+def region_values(decomposition: Decomposition, structure: nx.Graph) -> dict[int, float]:
+    """The region id of every structure node's polygon (-1 for nodes that are not polygons)."""
+    labels = decomposition.labels
+    values = {}
+    for node, polygon in structure.nodes(data="polygon", default=-1):
+        values[node] = float(labels[polygon]) if polygon is not None and 0 <= polygon < len(labels) else -1.0
+    return values

@@ -1,0 +1,262 @@
+"""Chokepoints and regions: generated levels with known rooms and doors, through the level_regions preset."""
+
+from __future__ import annotations
+
+import dataclasses
+import json
+import subprocess
+import sys
+from functools import cache
+
+import networkx as nx
+import numpy as np
+import pytest
+
+from g2s_core import pipeline
+from g2s_core.config import PRESETS_DIR, load_config, load_raw_config, parse_config
+from g2s_core.errors import PluginError
+from g2s_core.model import RunResult
+from g2s_core.registry import Registry
+from g2s_plugins import decomposition
+from g2s_plugins.centrality import edge_betweenness
+from g2s_plugins.outputs import colours, heatmap, structure_json
+from g2s_plugins.samples.levels import dungeon, load_sample
+from g2s_plugins.samples.rooms import dungeon_shares
+from tests.test_gltf import _children, read_glb
+
+PRESET = PRESETS_DIR / "level_regions.yaml"
+
+
+@cache
+def registry() -> Registry:
+    return Registry.from_entry_points()
+
+
+def run(level, config=None) -> RunResult:
+    plan = pipeline.plan(config or load_config(PRESET), registry())
+    return pipeline.run(plan, registry(), level.mesh, level.name, "0" * 64)
+
+
+@cache
+def sample_run(name: str) -> tuple:
+    level = load_sample(name)
+    return level, run(level)
+
+
+def chokepoints(result: RunResult) -> list[dict]:
+    return result.features["chokepoints"]["chokepoints"]
+
+
+def regions(result: RunResult) -> list[dict]:
+    return result.features["regions"]["regions"]
+
+
+def near(point, target, tolerance: float) -> bool:
+    return float(np.linalg.norm(np.asarray(point)[[0, 2]] - np.asarray(target)[[0, 2]])) <= tolerance
+
+
+# --- edge betweenness (hand-checkable graphs) -------------------------------------------
+
+
+def test_edge_betweenness_of_a_path_counts_the_pairs_each_edge_separates():
+    values = edge_betweenness(nx.path_graph(4), normalized=False)
+    assert values == {(0, 1): 3.0, (1, 2): 4.0, (2, 3): 3.0}  # 1 x 3, 2 x 2, 3 x 1
+
+
+@pytest.mark.parametrize("graph", [nx.random_labeled_tree(40, seed=3), nx.union(nx.star_graph(4), nx.path_graph(range(10, 14))),
+                                   nx.cycle_graph(7), nx.karate_club_graph()], ids=["tree", "forest", "cycle", "karate"])
+def test_edge_betweenness_matches_networkx(graph):
+    for normalized in (True, False):
+        ours = edge_betweenness(graph, normalized=normalized)
+        theirs = nx.edge_betweenness_centrality(graph, normalized=normalized)
+        assert set(ours) == set(graph.edges)
+        assert all(ours[e] == pytest.approx(theirs[e]) for e in graph.edges)
+
+
+def square(x0: float, z0: float, side: float, clockwise: bool) -> tuple[np.ndarray, np.ndarray]:
+    corners = np.array([[x0, 0, z0], [x0 + side, 0, z0], [x0 + side, 0, z0 + side], [x0, 0, z0 + side]], dtype=float)
+    if clockwise:
+        corners = corners[::-1]
+    return corners, np.roll(corners, -1, axis=0)
+
+
+def test_small_holes_are_obstacles_and_outer_walls_are_not():
+    outer = square(0.0, 0.0, 20.0, clockwise=False)
+    pillar = square(5.0, 5.0, 2.0, clockwise=True)  # 4 m²
+    block = square(10.0, 10.0, 5.0, clockwise=True)  # 25 m²
+    start, end = (np.concatenate(parts) for parts in zip(outer, pillar, block))
+    flags = decomposition.obstacle_edges(start, end, max_area=16.0)
+    assert flags.tolist() == [False] * 4 + [True] * 4 + [False] * 4
+    assert not decomposition.obstacle_edges(start, end, max_area=0.0).any()
+
+
+def test_distance_to_walls_is_exact_for_long_walls():
+    start, end = np.array([[0.0, 0.0, 0.0]]), np.array([[30.0, 0.0, 0.0]])
+    points = np.array([[15.2, 0.0, 2.0], [-3.0, 0.0, 4.0], [7.0, 1.0, 0.0]])
+    assert decomposition._distance_to(points, start, end) == pytest.approx([2.0, 5.0, decomposition.HEIGHT_SCALE])
+
+
+# --- generated rooms with known answers ------------------------------------------------
+
+
+def test_two_rooms_one_door():
+    level, result = sample_run("two_rooms_one_door")
+    door = level.metadata["doors"][0]
+    assert len(regions(result)) == 2
+    top = chokepoints(result)[0]
+    assert len(chokepoints(result)) == 1 and top["id"] == 0 and top["articulation"] is True
+    assert near(top["position"], door["position"], 0.5)
+    # walkable width: the door less the agent's diameter, within a navmesh cell
+    assert top["width"] == pytest.approx(door["width"] - 1.0, abs=0.3)
+    assert top["regions"] == [0, 1] and top["score"] > 0
+    assert [n["region"] for n in regions(result)[0]["neighbours"]] == [1]
+    assert regions(result)[0]["neighbours"][0]["chokepoints"] == [0]
+
+
+def test_the_narrower_of_two_doors_ranks_higher():
+    level, result = sample_run("room_with_two_doors")
+    narrow, wide = level.metadata["doors"]
+    found = chokepoints(result)
+    assert len(found) == 2 and len(regions(result)) == 3
+    assert near(found[0]["position"], narrow["position"], 0.5)
+    assert near(found[1]["position"], wide["position"], 0.5)
+    assert found[0]["width"] < found[1]["width"] and found[0]["score"] > found[1]["score"]
+    assert all(c["articulation"] for c in found)
+
+
+def test_a_loop_of_four_rooms_has_no_articulation():
+    level, result = sample_run("loop_of_four_rooms")
+    found = chokepoints(result)
+    assert len(regions(result)) == 4 and len(found) == 4
+    assert not any(c["articulation"] for c in found)
+    for door in level.metadata["doors"]:
+        assert sum(near(c["position"], door["position"], 0.5) for c in found) == 1
+    assert all(len(r["neighbours"]) == 2 for r in regions(result))
+
+
+def test_a_ramp_is_the_chokepoint_between_two_floors():
+    level, result = sample_run("floors_joined_by_ramp")
+    ramp = level.metadata["ramp"]
+    rs = regions(result)
+    assert len(rs) == 2 and sorted(r["floor"] for r in rs) == [0, 1]
+    (choke,) = chokepoints(result)
+    assert sorted(choke["floors"]) == [0, 1] and choke["articulation"] is True
+    x, y, z = choke["position"]
+    assert ramp["x0"] - 0.5 <= x <= ramp["x1"] + 0.5 and ramp["z0"] <= z <= ramp["z1"]
+    assert ramp["y0"] <= y <= ramp["y1"] + 0.5
+
+
+def test_node_values_are_region_ids_and_scores_near_chokepoints():
+    _, result = sample_run("loop_of_four_rooms")
+    ids = {r["id"] for r in regions(result)}
+    labels = {p: r["id"] for r in regions(result) for p in r["polygons"]}
+    for node, value in result.analysis["regions"].items():
+        assert value in ids and value == labels[result.structure.nodes[node]["polygon"]]
+    scores = {c["score"] for c in chokepoints(result)} | {0.0}
+    assert set(result.analysis["chokepoints"].values()) <= scores
+    assert max(result.analysis["chokepoints"].values()) == chokepoints(result)[0]["score"]
+
+
+def test_top_k_and_separation_are_read_from_yaml():
+    raw = load_raw_config(PRESET)
+    raw["analyzers"][1]["params"]["top_k"] = 2
+    level = load_sample("loop_of_four_rooms")
+    found = chokepoints(run(level, parse_config(raw)))
+    assert [c["id"] for c in found] == [0, 1]
+    raw["analyzers"][1]["params"].update(top_k=None, min_separation=100.0)
+    assert len(chokepoints(run(level, parse_config(raw)))) == 4  # separation only merges within one region pair
+
+
+def test_the_sampling_route_is_refused_in_one_line():
+    raw = load_raw_config(PRESETS_DIR / "map_analysis_sampling.yaml")
+    raw["analyzers"] = [{"plugin": "chokepoints"}]
+    with pytest.raises(PluginError, match="needs a navigation mesh"):
+        run(load_sample("two_rooms_one_door"), parse_config(raw))
+
+
+def test_structure_json_carries_the_records_and_stays_byte_identical(tmp_path):
+    jsonschema = pytest.importorskip("jsonschema")
+    level, result = sample_run("floors_joined_by_ramp")
+    structure_json.write(result, tmp_path)
+    first = (tmp_path / "structure.json").read_bytes()
+    document = json.loads(first)
+    schema = json.loads(structure_json.SCHEMA_PATH.read_text())
+    jsonschema.Draft202012Validator(schema).validate(document)
+    assert document["features"]["chokepoints"]["chokepoints"][0]["articulation"] is True
+    assert len(document["features"]["regions"]["regions"]) == 2
+    assert structure_json.load_result(tmp_path).features == document["features"]
+    (tmp_path / "again").mkdir()
+    structure_json.write(run(level), tmp_path / "again")
+    assert (tmp_path / "again" / "structure.json").read_bytes() == first
+
+
+def test_the_png_draws_regions_and_chokepoints():
+    _, result = sample_run("loop_of_four_rooms")
+    plain = dataclasses.replace(result, features={})
+    assert heatmap.render(result) != heatmap.render(plain)
+    groups = heatmap.floor_groups(result.structure, 2.0)
+    (outlines, region_colours), = heatmap._regions_by_floor(result, result.structure, groups)
+    palette = colours.region_colours(regions(result))
+    assert len(outlines) == len(region_colours) > 0 and set(region_colours) == set(palette.values())
+    (marked,) = heatmap._chokepoints_by_floor(result, result.structure, groups)
+    assert [c["id"] for c in marked] == [c["id"] for c in chokepoints(result)]
+    labels = [h.get_label() for h in heatmap._legend_handles(result, result.structure, groups)]
+    assert "chokepoint (id: walkable width)" in labels and any(label.startswith("regions") for label in labels)
+
+
+def test_neighbouring_regions_differ_in_colour():
+    _, result = sample_run("loop_of_four_rooms")
+    palette = colours.region_colours(regions(result))
+    assert set(palette) == {r["id"] for r in regions(result)}
+    for record in regions(result):
+        assert all(palette[record["id"]] != palette[n["region"]] for n in record["neighbours"])
+    assert len(set(palette.values())) == 4 and set(palette.values()) <= set(colours.REGION_COLOURS)
+
+
+def _records(neighbours: dict[int, list[int]]) -> list[dict]:
+    return [{"id": r, "neighbours": [{"region": n, "chokepoints": []} for n in ns]} for r, ns in neighbours.items()]
+
+
+def test_region_colours_of_hand_made_region_graphs():
+    # a corridor of twelve rooms: neighbours differ, and the rooms spread over all six colours, twice each
+    path = colours.region_colours(_records({r: [n for n in (r - 1, r + 1) if 0 <= n < 12] for r in range(12)}))
+    assert all(path[r] != path[r + 1] for r in range(11))
+    assert sorted(list(path.values()).count(c) for c in colours.REGION_COLOURS) == [2] * 6
+    # seven rooms all joined to each other need a seventh colour: exactly one pair shares one
+    clique = colours.region_colours(_records({r: [n for n in range(7) if n != r] for r in range(7)}))
+    assert len(set(clique.values())) == 6
+    assert colours.region_colours([{"id": 7, "neighbours": []}]) == {7: colours.REGION_COLOURS[0]}
+
+
+# --- dungeons: generated rooms and corridors --------------------------------------------
+
+
+@pytest.mark.parametrize(("seed", "obstacles"), [(0, 0.0), (1, 0.3)], ids=["open rooms", "pillars"])
+def test_dungeon_doors_are_chokepoints_and_rooms_are_regions(seed, obstacles):
+    level = dungeon(seed=seed, rooms=12, obstacles=obstacles)
+    result = run(level)
+    doors, rooms = dungeon_shares(level, chokepoints(result), regions(result), result.context.navmesh)
+    assert doors >= 0.9 and rooms >= 0.9
+
+
+# --- the real test level, end to end -------------------------------------------------------
+
+
+def test_preset_on_the_real_level_writes_regions_and_chokepoints_in_every_format(tmp_path, shared_data):
+    out = tmp_path / "out"
+    proc = subprocess.run([sys.executable, "-m", "g2s_core.cli", "run", str(PRESET), str(shared_data / "nav_test.obj"),
+                           "-o", str(out), "--quiet"], capture_output=True, text=True)
+    assert proc.returncode == 0, proc.stderr
+    document = json.loads((out / "structure.json").read_text())
+    found = document["features"]["chokepoints"]["chokepoints"]
+    rooms = document["features"]["regions"]["regions"]
+    assert found and rooms and document["analysis_keys"] == ["betweenness", "chokepoints", "regions"]
+    assert sorted(p for r in rooms for p in r["polygons"]) == list(range(document["navmesh"]["polygons"]))
+    assert len({r["floor"] for r in rooms}) > 1  # the level has several floors
+    page = (out / "report.html").read_text()
+    assert '"name":"Regions"' in page and '"name":"Chokepoints"' in page
+    assert "chokepoint 0" in page and "walkable width" in page
+    header, _ = read_glb(out / "structure.glb")
+    assert sorted(_children(header, "regions")) == sorted(f"region_{r['id']}" for r in rooms)
+    assert sorted(_children(header, "chokepoints")) == sorted(f"chokepoint_{c['id']}" for c in found)
+    assert (out / "heatmap.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
