@@ -11,7 +11,8 @@ sight from A to C:
   navmesh's detail surface: at points at most ``probe_step`` apart along it,
   the detail surface lies within the gap above or below
   (:class:`g2s_plugins._surface.NavmeshSurface`). Detour's raycast is 2D: alone, it lets an edge run metres
-  under a ramp whose foot it crosses.
+  under a ramp whose foot it crosses. ``max_surface_gap: null`` leaves this
+  check out, as the paper does.
 
 Default tolerance, 10 degrees: Recast quantises heights to the cell height,
 which tilts the polygons of a flat floor by a few degrees at most, and such
@@ -56,16 +57,16 @@ def g2s_simplify_predicate(params: Params, context: RunContext) -> Callable[[nx.
     params = params if params is not None else Params()
     agent = context.agent
     step = params.probe_step if params.probe_step is not None else 0.5 * float(agent.radius)
-    gap = float(params.max_surface_gap)
+    gap = params.max_surface_gap
     surface: NavmeshSurface | None = None
 
     def line_of_sight(start: tuple[float, ...], end: tuple[float, ...]) -> bool:
         nonlocal surface
         clear, _t = navmesh.raycast(start, end)
-        if not clear:
-            return False
+        if not clear or gap is None:
+            return clear
         if surface is None:  # built on first use: runs that never reach here pay nothing
             surface = NavmeshSurface(navmesh)
         return bool(np.all(surface.gaps(segment_points(start, end, step), gap) <= gap))
 
-    return collapse_rule(params.normal_tolerance_deg, line_of_sight)
+    return collapse_rule(params.normal_tolerance_deg, line_of_sight, params.whole_chain_normals)
