@@ -6,6 +6,7 @@ PYTHON    ?= python3
 PY        := $(VENV)/bin/python
 STAMP     := $(VENV)/.g2s-installed
 DEMO_OUT  ?= g2s-demo
+WHEEL_DIR ?= dist
 DEB_PACKAGES := librecast-dev cmake g++ make
 # chromium: the headless browser tests/test_html_report.py drives (make test only)
 TEST_DEB_PACKAGES := chromium
@@ -17,7 +18,7 @@ GLTF_VALIDATOR_VERSION := 2.0.0-dev.3.10
 # three.js, which draws the GLB for docs/images/glb-threejs.png (make docs-images only)
 THREE_VERSION := 0.187.0
 
-.PHONY: demo test setup system-deps benchmark clean readme-image regions-image docs-images
+.PHONY: demo test setup system-deps benchmark clean readme-image regions-image docs-images wheel
 
 demo: setup
 	$(VENV)/bin/g2s demo -o $(DEMO_OUT) --force
@@ -51,6 +52,14 @@ regions-image: setup
 	mkdir -p $(dir $(REGIONS_IMAGE))
 	cp $(DEMO_OUT)-regions/heatmap.png $(REGIONS_IMAGE)
 
+# A self-contained wheel in dist/: built from this checkout, then repaired by
+# auditwheel, which copies libRecast/libDetour into it (graph2structure.libs/)
+# and tags it manylinux for the oldest glibc the binaries allow.
+wheel: setup
+	rm -rf build/wheel-raw
+	$(PY) -m pip wheel --no-deps --no-build-isolation -q -w build/wheel-raw .
+	PATH="$(abspath $(VENV))/bin:$$PATH" $(PY) -m auditwheel repair -w $(WHEEL_DIR) build/wheel-raw/graph2structure-*.whl
+
 # docs/outputs.md's pictures: the demo's report and GLB (three.js) in headless chromium.
 docs-images: setup
 	$(VENV)/bin/g2s demo -o $(DEMO_OUT) --force --quiet
@@ -82,8 +91,10 @@ $(STAMP): pyproject.toml CMakeLists.txt $(wildcard src/*) | system-deps
 	test -x $(PY) || $(PYTHON) -m venv $(VENV)
 	$(PY) -m pip install -q --upgrade pip
 	$(PY) -m pip install -q scikit-build-core nanobind
+	@# a venv made before the rename still holds the distribution "g2s", whose entry points would register twice
+	$(PY) -m pip uninstall -y -q g2s 2>/dev/null || true
 	$(PY) -m pip install -q --no-build-isolation -e '.[dev]'
 	touch $@
 
 clean:
-	rm -rf build $(DEMO_OUT) $(DEMO_OUT)-regions
+	rm -rf build dist $(DEMO_OUT) $(DEMO_OUT)-regions

@@ -11,6 +11,7 @@ from __future__ import annotations
 import argparse
 import json
 import sys
+import textwrap
 import traceback
 from collections.abc import Callable, Iterator, Sequence
 from contextlib import contextmanager
@@ -20,14 +21,15 @@ from typing import Any
 from rich.console import Console
 from rich.table import Table
 
-from g2s_core import pipeline
-from g2s_core.config import PRESETS_DIR, load_config, load_raw_config, parse_config
+from g2s_core import api, pipeline, version
+from g2s_core.api import MeshSource
+from g2s_core.config import parse_assignment, presets, resolve_config
 from g2s_core.errors import G2SError, PluginFailure
-from g2s_core.mesh import SAMPLE_PREFIX, generate_level, load_mesh, mesh_sha256
+from g2s_core.mesh import SAMPLE_PREFIX
 from g2s_core.model import RunResult
-from g2s_core.outputs import DEFAULT_FORMATS, check_outdir, parse_formats, prepare_outdir, write_outputs, writers
+from g2s_core.outputs import DEFAULT_FORMATS, check_outdir, parse_formats, writers
 from g2s_core.registry import Registry, installed, plugin_parameters
-from g2s_core.stages import BY_KEY, STAGES
+from g2s_core.stages import STAGES
 from g2s_core.summary import final_graph, roots_of, stage_rows
 
 EXIT_CODES = "exit codes: 0 success, 2 bad input or config, or a plugin that failed (named with its package), 1 internal error of g2s"
@@ -42,21 +44,32 @@ def _parser() -> argparse.ArgumentParser:
         epilog=EXIT_CODES,
     )
     parser.add_argument("-v", "--verbose", action="store_true", help="show tracebacks of internal errors")
+    parser.add_argument("--version", action="version", version=f"g2s {version()}")
+    # -v is accepted after the command too; SUPPRESS keeps a -v given before it
+    common = argparse.ArgumentParser(add_help=False)
+    common.add_argument("-v", "--verbose", action="store_true", default=argparse.SUPPRESS,
+                        help="show tracebacks of internal errors")
     commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
 
     run = commands.add_parser(
-        "run", help="run a YAML config on a mesh file", description="Run a YAML config on a mesh.", epilog=EXIT_CODES
+        "run", parents=[common], help="run a config (a preset or a YAML file) on a mesh file",
+        description="Run a config (a preset or a YAML file) on a mesh.",
+        epilog=f"{EXIT_CODES}\n\npresets:\n" + "\n".join(_columns(list(presets().items()), width=80, indent=2)),
+        formatter_class=argparse.RawDescriptionHelpFormatter,
     )
-    run.add_argument("config", type=Path, help="YAML config (see configs/ for presets)")
+    run.add_argument("config", help="preset name (see `g2s presets`) or YAML config file")
     run.add_argument("mesh", help=f"mesh file (.obj .glb .gltf .ply .stl .off) or {SAMPLE_PREFIX}NAME[?param=value&...] "
                      "for a level from an installed level generator (see `g2s plugins --stage levels`)")
     run.add_argument("-o", "--outdir", type=Path, required=True, help="folder for the results")
     _add_output_options(run)
 
-    plugins = commands.add_parser("plugins", help="list installed plugins and their parameters, and broken ones")
+    commands.add_parser("presets", parents=[common], help="list the preset configs and what each is for")
+
+    plugins = commands.add_parser("plugins", parents=[common],
+                                  help="list installed plugins and their parameters, and broken ones")
     plugins.add_argument("--stage", choices=[stage.key for stage in STAGES], help="only this stage")
 
-    demo = commands.add_parser("demo", help="run the full pipeline on the built-in dungeon sample")
+    demo = commands.add_parser("demo", parents=[common], help="run the full pipeline on the built-in dungeon sample")
     demo.add_argument("-o", "--outdir", type=Path, default=Path("g2s-demo"), help="folder for the results (default: g2s-demo)")
     demo.add_argument("--rooms", type=int, default=12, help="rooms in the generated dungeon (default: 12)")
     demo.add_argument("--seed", type=int, default=0, help="seed of the generated dungeon (default: 0)")
@@ -72,6 +85,9 @@ def _add_output_options(command: argparse.ArgumentParser) -> None:
         f"({', '.join(writers())}) "
         f"(default: the config's, else {','.join(DEFAULT_FORMATS)})",
     )
+    command.add_argument("--set", action="append", default=[], metavar="KEY=VALUE", dest="overrides",
+                         help="override a config value, e.g. --set agent.radius=0.4 --set terminals.params.top_k=20 "
+                         "(repeatable; the value is read as YAML)")
     command.add_argument("--force", action="store_true", help="replace results already in the output folder")
     command.add_argument("-q", "--quiet", action="store_true", help="no progress, tables or file list")
     command.add_argument("--json", action="store_true", help="print only a JSON summary on stdout")
@@ -85,6 +101,8 @@ def main(argv: Sequence[str] | None = None) -> int:
             return _run(args, errors)
         if args.command == "plugins":
             return _plugins(args)
+        if args.command == "presets":
+            return _presets()
         return _demo(args, errors)
     except (G2SError, PluginFailure) as exc:  # the user, or the named plugin's authors, can fix it
         errors.print(f"g2s: error: {exc}", markup=False, highlight=False, soft_wrap=True)
@@ -104,37 +122,35 @@ def main(argv: Sequence[str] | None = None) -> int:
 
 
 def _run(args: argparse.Namespace, errors: Console) -> int:
-    config = load_config(args.config)
-    formats = _formats(args, config, str(args.config))
+    config, source = resolve_config(args.config, _overrides(args), overrides_source="--set")
+    formats = _formats(args, config, source)
     protect = [] if args.mesh.startswith(SAMPLE_PREFIX) else [Path(args.mesh)]
     check_outdir(args.outdir, formats, args.force, protect)
     registry = installed()
-    plan = pipeline.plan(config, registry, source=str(args.config))
-    if args.mesh.startswith(SAMPLE_PREFIX):
-        mesh = generate_level(args.mesh, config.mesh, registry)
-        mesh_name, sha = args.mesh[len(SAMPLE_PREFIX):], mesh_sha256(mesh)
-    else:
-        mesh, info = load_mesh(args.mesh, config.mesh)
-        mesh_name, sha = info.name, info.sha256
-        if info.cleaning:
-            removed = ", ".join(f"{count} {what.replace('_', ' ')}" for what, count in info.cleaning.items())
-            _status(args, errors, f"cleaning removed {removed}")
-    return _execute(args, errors, registry, plan, mesh, mesh_name, sha, formats, protect)
+    plan = pipeline.plan(config, registry, source=source)
+    mesh = api.open_mesh(args.mesh, config, registry=registry)
+    if mesh.cleaning:
+        removed = ", ".join(f"{count} {what.replace('_', ' ')}" for what, count in mesh.cleaning.items())
+        _status(args, errors, f"cleaning removed {removed}")
+    return _execute(args, errors, registry, plan, mesh, formats)
 
 
 def _demo(args: argparse.Namespace, errors: Console) -> int:
-    raw = load_raw_config(PRESETS_DIR / "demo.yaml")
-    config = parse_config(raw, source="configs/demo.yaml")
-    formats = _formats(args, config, "configs/demo.yaml")
+    config, source = resolve_config("demo", _overrides(args), overrides_source="--set")
+    formats = _formats(args, config, source)
     check_outdir(args.outdir, formats, args.force)
     registry = installed()
-    plan = pipeline.plan(config, registry, source="configs/demo.yaml")
-    mesh = generate_level(f"{SAMPLE_PREFIX}dungeon?seed={args.seed}&rooms={args.rooms}", config.mesh, registry)
-    name = f"dungeon (seed {args.seed}, {args.rooms} rooms)"
-    code = _execute(args, errors, registry, plan, mesh, name, mesh_sha256(mesh), formats)
+    plan = pipeline.plan(config, registry, source=source)
+    spec = f"{SAMPLE_PREFIX}dungeon?seed={args.seed}&rooms={args.rooms}"
+    mesh = api.open_mesh(spec, config, name=f"dungeon (seed {args.seed}, {args.rooms} rooms)", registry=registry)
+    code = _execute(args, errors, registry, plan, mesh, formats)
     if code == 0 and not (args.quiet or args.json):
         Console().print(_demo_hint(args.outdir, formats), markup=False, highlight=False, soft_wrap=True)
     return code
+
+
+def _overrides(args: argparse.Namespace) -> dict[str, Any]:
+    return dict(parse_assignment(text) for text in args.overrides)
 
 
 def _demo_hint(outdir: Path, formats: Sequence[str]) -> str:
@@ -162,21 +178,17 @@ def _formats(args: argparse.Namespace, config: Any, source: str) -> list[str]:
 
 
 def _execute(
-    args,
+    args: argparse.Namespace,
     errors: Console,
     registry: Registry,
     plan: pipeline.Plan,
-    mesh,
-    mesh_name: str,
-    sha: str,
+    mesh: MeshSource,
     formats: Sequence[str],
-    protect: Sequence[Path] = (),
 ) -> int:
     quiet = args.quiet or args.json
     with _progress(errors, quiet) as say:
-        result = pipeline.run(plan, registry, mesh, mesh_name, sha, progress=say)
-        prepare_outdir(args.outdir, formats, args.force, protect)
-        written = write_outputs(result, args.outdir, formats, replace=args.force, progress=say)
+        result = api.execute(plan, registry, mesh, progress=say)
+        written = api.write_result(result, args.outdir, formats, force=args.force, progress=say, registry=registry)
     if args.json:
         print(json.dumps(_summary(result, args.outdir, formats, written), indent=1, sort_keys=True))
         return 0
@@ -184,7 +196,7 @@ def _execute(
         errors.print(f"g2s: warning: {warning}", markup=False, highlight=False, soft_wrap=True)
     if not args.quiet:
         console = Console()
-        console.print(stage_table(result, title=mesh_name))
+        console.print(stage_table(result, title=mesh.name))
         for path in written:
             console.print(f"wrote {path}", markup=False, highlight=False, soft_wrap=True)
     return 0
@@ -243,19 +255,44 @@ def stage_table(result: RunResult, title: str = "") -> Table:
 
 
 def _plugins(args: argparse.Namespace) -> int:
+    """Plugins under their stage's config key; parameters in two columns wrapped to the terminal."""
     registry = installed()
     console = Console()
-    for info in registry.plugins(args.stage):
-        console.print(f"[bold]{BY_KEY[info.stage].title}[/bold] [cyan]{info.name}[/cyan]  ({info.package})")
-        if info.summary:
-            console.print(f"  {info.summary}", markup=False, highlight=False)
-        for name, accepted, default, description in plugin_parameters(info):
-            console.print(f"    {name}: {accepted}, default {default}. {description}", markup=False, highlight=False)
+    lines = []
+    for stage in STAGES if args.stage is None else [s for s in STAGES if s.key == args.stage]:
+        lines.append(stage.key)
+        for info in registry.plugins(stage.key):
+            lines.append(f"  {info.name}  ({info.package})")
+            if info.summary:
+                lines.extend(_columns([("", info.summary)], console.width, indent=4))
+            parameters = [(f"{name}:", f"{accepted}, default {default}. {description}")
+                          for name, accepted, default, description in plugin_parameters(info)]
+            lines.extend(_columns(parameters, console.width, indent=6))
+    console.print("\n".join(lines), markup=False, highlight=False, soft_wrap=True)
     for broken in registry.broken:
         if args.stage is None or broken.entry_point.split(".")[0] == args.stage:
             console.print(f"[bold red]broken[/bold red] {broken.entry_point}  ({broken.package})")
             console.print(f"  {broken.target} failed to load: {broken.reason}", markup=False, highlight=False)
     return 0
+
+
+def _presets() -> int:
+    console = Console()
+    console.print("\n".join(_columns(list(presets().items()), console.width, indent=0)),
+                  markup=False, highlight=False, soft_wrap=True)
+    return 0
+
+
+def _columns(rows: Sequence[tuple[str, str]], width: int, indent: int) -> list[str]:
+    """``(term, text)`` rows as two columns, ``text`` wrapped to ``width`` under itself."""
+    left = indent + max((len(term) + 2 for term, _ in rows if term), default=0)
+    text_width = max(width - left, 30)
+    lines = []
+    for term, text in rows:
+        wrapped = textwrap.wrap(text, text_width) or [""]
+        lines.append((" " * indent + term).ljust(left) + wrapped[0])
+        lines.extend(" " * left + line for line in wrapped[1:])
+    return lines
 
 
 if __name__ == "__main__":

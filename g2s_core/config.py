@@ -10,6 +10,8 @@ what was expected, e.g.::
 
 from __future__ import annotations
 
+import copy
+from collections.abc import Mapping
 from pathlib import Path
 from typing import Any, Literal
 
@@ -17,12 +19,18 @@ import yaml
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, create_model
 
 from g2s_core.errors import ConfigError
-from g2s_core.messages import describe_validation_error, show
+from g2s_core.messages import _field_at, _nested_model, describe_validation_error, show
 from g2s_core.stages import PIPELINE
 
 
-PRESETS_DIR = Path(__file__).resolve().parent.parent / "configs"
-"""The project's preset configs (``extends: map_analysis`` finds them here)."""
+_PACKAGE_DIR = Path(__file__).resolve().parent
+PRESETS_DIR = _PACKAGE_DIR / "presets" if (_PACKAGE_DIR / "presets").is_dir() else _PACKAGE_DIR.parent / "configs"
+"""The preset configs (``extends: map_analysis``, ``g2s run map_analysis ...``).
+
+The repository keeps them in ``configs/``; a wheel ships that folder as
+``g2s_core/presets`` (an install rule in CMakeLists.txt). A source checkout
+or an editable install has no ``g2s_core/presets`` and reads ``configs/``.
+"""
 
 
 class _Section(BaseModel):
@@ -131,15 +139,40 @@ def _read_yaml(path: Path) -> dict[str, Any]:
     return data
 
 
-def _resolve_extends(name: Any, base_dir: Path, source: Path) -> Path:
-    if not isinstance(name, str) or not name:
-        raise ConfigError(f"{source}: extends: expected a config file or preset name, got {show(name)}")
+def find_config(name: str | Path, base_dir: Path = Path()) -> Path:
+    """The config file ``name`` names: a file (relative to ``base_dir``), else a preset.
+
+    ``name`` may leave out ``.yaml``; a file of that name wins over a preset.
+
+    Raises:
+        ConfigError: neither a file nor a preset has that name.
+    """
     candidates = [base_dir / name, base_dir / f"{name}.yaml", PRESETS_DIR / name, PRESETS_DIR / f"{name}.yaml"]
     for candidate in candidates:
         if candidate.is_file():
-            return candidate.resolve()
-    presets = ", ".join(sorted(p.stem for p in PRESETS_DIR.glob("*.yaml")))
-    raise ConfigError(f"{source}: extends: no config file or preset named {name!r} (presets: {presets})")
+            return candidate
+    raise ConfigError(f"{name}: no such config file or preset (presets: {', '.join(presets())})")
+
+
+def presets() -> dict[str, str]:
+    """Preset name -> its purpose: the first comment line of the YAML file."""
+    purposes = {}
+    for path in sorted(PRESETS_DIR.glob("*.yaml")):
+        lines = path.read_text(encoding="utf-8").splitlines()
+        comment = next((line for line in lines if line.startswith("#")), "")
+        purposes[path.stem] = comment.lstrip("#").strip()
+    return purposes
+
+
+def _resolve_extends(name: Any, base_dir: Path, source: Path) -> Path:
+    if not isinstance(name, str) or not name:
+        raise ConfigError(f"{source}: extends: expected a config file or preset name, got {show(name)}")
+    try:
+        return find_config(name, base_dir).resolve()
+    except ConfigError:
+        raise ConfigError(
+            f"{source}: extends: no config file or preset named {name!r} (presets: {', '.join(presets())})"
+        ) from None
 
 
 def _deep_merge(base: dict[str, Any], override: dict[str, Any]) -> dict[str, Any]:
@@ -160,17 +193,125 @@ def load_raw_config(path: str | Path, _chain: tuple[Path, ...] = ()) -> dict[str
     if resolved in _chain:
         cycle = " -> ".join(p.name for p in (*_chain, resolved))
         raise ConfigError(f"{path}: extends: cycle {cycle}")
-    data = _read_yaml(path)
+    return _merge_extends(_read_yaml(path), resolved.parent, path, (*_chain, resolved))
+
+
+def _merge_extends(data: dict[str, Any], base_dir: Path, source: str | Path, chain: tuple[Path, ...]) -> dict[str, Any]:
+    """``data`` on top of the config its ``extends:`` names (looked up from ``base_dir``)."""
     parent_name = data.pop("extends", None)
     if parent_name is None:
         return data
-    parent_path = _resolve_extends(parent_name, resolved.parent, path)
-    return _deep_merge(load_raw_config(parent_path, (*_chain, resolved)), data)
+    parent_path = _resolve_extends(parent_name, base_dir, source)
+    return _deep_merge(load_raw_config(parent_path, chain), data)
 
 
 def load_config(path: str | Path) -> RunConfig:
     """Read, merge and validate a config file (plugin parameters are validated by the registry)."""
     return parse_config(load_raw_config(path), source=str(path))
+
+
+def resolve_config(
+    config: str | Path | Mapping[str, Any] | RunConfig,
+    overrides: Mapping[str, Any] | None = None,
+    overrides_source: str = "override",
+) -> tuple[RunConfig, str]:
+    """A validated config from a file, a preset name, a mapping or a RunConfig, with overrides.
+
+    Args:
+        config: a config file, a preset name (``map_analysis``), a mapping as
+            a YAML file would hold (``extends:`` looked up from the working
+            folder) or a :class:`RunConfig`.
+        overrides: config keys, dotted (``agent.radius``, ``terminals.params.k``,
+            ``analyzers.0.key``) or not, and the values that replace theirs
+            (mappings merge into the mappings they replace).
+        overrides_source: how error messages name an override (``--set``).
+
+    Returns:
+        The config and the name error messages use for it (the file or preset
+        name as given).
+
+    Raises:
+        ConfigError: no such file or preset, an override's key is unknown, or
+            the result does not validate.
+    """
+    if isinstance(config, RunConfig):
+        source = "RunConfig"
+        if not overrides:
+            return config, source
+        raw = config.model_dump(mode="json", exclude_unset=True)
+    elif isinstance(config, Mapping):
+        source = "config mapping"
+        raw = _merge_extends(copy.deepcopy(dict(config)), Path.cwd(), source, ())
+    else:
+        source = str(config)
+        raw = load_raw_config(find_config(config))
+    for key, value in (overrides or {}).items():
+        raw = set_key(raw, key, value, source=f"{overrides_source} {key}")
+    return parse_config(raw, source=source), source
+
+
+def parse_assignment(text: str, source: str = "--set") -> tuple[str, Any]:
+    """``"agent.radius=0.4"`` -> ``("agent.radius", 0.4)``: the value is read as YAML (``0.4``,
+    ``true``, ``null``, ``[json, glb]``, ``text``).
+
+    Raises:
+        ConfigError: no ``=``, no key, or a value that is not valid YAML.
+    """
+    key, equals, value = text.partition("=")
+    key = key.strip()
+    if not equals or not key:
+        raise ConfigError(f"{source} {text!r}: expected KEY=VALUE, e.g. agent.radius=0.4")
+    try:
+        return key, yaml.safe_load(value) if value.strip() else None
+    except yaml.YAMLError:
+        raise ConfigError(f"{source} {key}: the value {value!r} is not valid YAML") from None
+
+
+def set_key(data: dict[str, Any], key: str, value: Any, source: str) -> dict[str, Any]:
+    """A copy of the raw config ``data`` with the dotted ``key`` set to ``value``.
+
+    A mapping ``value`` merges into a mapping already there; list items are
+    addressed by index (``analyzers.0.params``). Keys are checked against
+    :class:`RunConfig` down to the plugins' ``params``, which the plugin's own
+    model checks later.
+
+    Raises:
+        ConfigError: the key is unknown, or indexes past a list's end;
+            the message starts with ``source``.
+    """
+    path = tuple(int(part) if part.isdigit() else part for part in key.split("."))
+    _check_key(path, source)
+    data = copy.deepcopy(data)
+    container: Any = data
+    for depth, part in enumerate(path):
+        last = depth == len(path) - 1
+        if isinstance(container, list):
+            if not isinstance(part, int) or part >= len(container):
+                raise ConfigError(f"{source}: {'.'.join(map(str, path[:depth]))} has no item {part!r} "
+                                  f"(it lists {len(container)})")
+        elif not isinstance(container, dict):
+            raise ConfigError(f"{source}: {'.'.join(map(str, path[:depth]))} is not a mapping")
+        else:
+            part = str(part)
+        current = container[part] if isinstance(container, list) or part in container else None
+        if last:
+            merge = isinstance(value, Mapping) and isinstance(current, dict)
+            container[part] = _deep_merge(current, dict(value)) if merge else value
+        else:
+            if not isinstance(current, (dict, list)):
+                current = container[part] = {}
+            container = current
+    return data
+
+
+def _check_key(path: tuple[str | int, ...], source: str) -> None:
+    for depth, part in enumerate(path, start=1):
+        if isinstance(part, int) or _field_at(RunConfig, path[:depth]) is not None:
+            continue
+        owner = RunConfig if depth == 1 else _nested_model(_field_at(RunConfig, path[: depth - 1]))
+        if owner is None:  # free-form mapping: a plugin's params, checked by the plugin's model
+            return
+        raise ConfigError(f"{source}: unknown key {part!r} (expected one of: {', '.join(owner.model_fields)})")
 
 
 def parse_config(data: dict[str, Any], source: str = "<config>") -> RunConfig:

@@ -25,8 +25,9 @@ are spanning trees and the other edges carry ``loop=True`` (see
 from __future__ import annotations
 
 import dataclasses
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import TYPE_CHECKING, Any, Protocol, runtime_checkable
 
 import networkx as nx
@@ -215,12 +216,20 @@ class RunResult:
     analysis: dict[str, dict[int, float]] = field(default_factory=dict)
     features: dict[str, dict[str, Any]] = field(default_factory=dict)
     stages: list[StageStats] = field(default_factory=list)
+    mesh_path: Path | None = None
+    """The mesh file the run read (never overwritten by :meth:`write`), if any."""
     formats: tuple[str, ...] = ()
     """The output formats this run's results are written in (set by the writer before writing)."""
 
     @property
     def warnings(self) -> list[str]:
         return self.context.warnings
+
+    def write(self, outdir: str | Path, formats: str | Sequence[str] | None = None, force: bool = False) -> list[Path]:
+        """Write the result files (``g2s run``'s) into ``outdir``; see :func:`g2s_core.api.write_result`."""
+        from g2s_core.api import write_result  # the writers are plugins, which import this module
+
+        return write_result(self, outdir, formats, force=force)
 
     @property
     def total_seconds(self) -> float:

@@ -96,7 +96,7 @@ def test_register_as_analyzers_and_run_through_pluggy():
 
     registry = Registry()
     for module in (betweenness, closeness, degree, depth):
-        info = registry.register(module, package="g2s", entry_point=f"analyzers.{module.NAME}")
+        info = registry.register(module, package="graph2structure", entry_point=f"analyzers.{module.NAME}")
         assert (info.stage, info.name) == ("analyzers", module.NAME)
     structure = structure_of(nx.path_graph(3)).to_undirected(as_view=True)
     info = registry.get("analyzers", "depth")

@@ -10,6 +10,8 @@ from pathlib import Path
 
 import pytest
 
+from g2s_core.cli import main
+from g2s_core.stages import STAGES
 from tests.conftest import PROJECT
 
 G2S = [sys.executable, "-m", "g2s_core.cli"]
@@ -99,5 +101,65 @@ def test_real_level_graph(tmp_path, shared_data):
 def test_plugins_lists_stage_name_package_and_parameters():
     proc = g2s("plugins", "--stage", "graph")
     assert proc.returncode == 0, proc.stderr
-    assert "GraphBuilder navmesh" in proc.stdout and "(g2s)" in proc.stdout
+    assert proc.stdout.startswith("graph\n  navmesh  (graph2structure)\n")
     assert "cell_size:" in proc.stdout
+
+
+def test_version_and_verbose_after_the_command(tmp_path):
+    version = g2s("--version")
+    assert version.returncode == 0 and version.stdout.startswith("g2s "), version.stdout + version.stderr
+    config = tmp_path / "bad.yaml"
+    config.write_text("extends: graph_only\nagent: {radius: ten}\n")
+    for args in (("-v", "run", str(config)), ("run", str(config), "--verbose"), ("run", "-v", str(config))):
+        proc = g2s(*args, "sample:straight_corridor", "-o", str(tmp_path / "out"))
+        assert proc.returncode == 2 and "Traceback" in proc.stderr and "agent.radius" in proc.stderr, (args, proc.stderr)
+
+
+def test_presets_by_name_and_listed(tmp_path):
+    listing = g2s("presets")
+    assert listing.returncode == 0, listing.stderr
+    lines = {line.split()[0]: line for line in listing.stdout.splitlines() if line and not line.startswith(" ")}
+    assert set(lines) >= {"base", "demo", "graph_only", "map_analysis", "map_piece"}
+    assert "map analysis of a whole level" in lines["map_analysis"]
+    assert "map_piece" in g2s("run", "--help").stdout
+
+    proc = g2s("run", "graph_only", "sample:straight_corridor", "-o", str(tmp_path / "out"), "--json", cwd=tmp_path)
+    assert proc.returncode == 0, proc.stderr
+    assert [s["stage"] for s in json.loads(proc.stdout)["stages"]] == ["graph"]
+    assert_user_error(g2s("run", "no_such_preset", "sample:straight_corridor", "-o", str(tmp_path / "o")),
+                      "no_such_preset: no such config file or preset (presets: base, demo,")
+
+
+def test_set_overrides_reach_the_run(tmp_path):
+    out = tmp_path / "out"
+    proc = g2s("run", "map_piece", "sample:cross_hub", "-o", str(out), "--json", "--set", "agent.radius=0.3",
+               "--set", "analyzers.0.key=hops", "--set", "stop_after=analyzers", "--set", "outputs.formats=[json]")
+    assert proc.returncode == 0, proc.stderr
+    structure = json.loads((out / "structure.json").read_text())
+    assert structure["config"]["agent"]["radius"] == 0.3 and structure["analysis_keys"] == ["hops"]
+    assert sorted(p.name for p in out.iterdir()) == ["run.json", "structure.json"]
+
+
+@pytest.mark.parametrize("setting, fragment", [
+    ("agent.radiuss=0.4", "--set agent.radiuss: unknown key 'radiuss' (expected one of: radius, height,"),
+    ("agnet.radius=0.4", "--set agnet.radius: unknown key 'agnet' (expected one of: mesh, agent,"),
+    ("agent.radius", "--set 'agent.radius': expected KEY=VALUE"),
+    ("agent.radius=[1", "--set agent.radius: the value '[1' is not valid YAML"),
+    ("agent.radius=-1", "map_piece: agent.radius: expected a number > 0, got -1"),
+    ("analyzers.3.key=x", "--set analyzers.3.key: analyzers has no item 3 (it lists 1)"),
+    ("terminals.params.nope=1", "map_piece: terminals.params.nope: unknown key"),
+])
+def test_bad_set_is_a_clean_error(tmp_path, capsys, setting, fragment):
+    # in this process: the subprocess tests above show the same path ends in one line and exit code 2
+    code = main(["run", "map_piece", "sample:cross_hub", "-o", str(tmp_path / "o"), "--set", setting])
+    err = capsys.readouterr().err
+    assert code == 2 and err.startswith("g2s: error: ") and fragment in err and err.count("\n") == 1, err
+    assert not (tmp_path / "o").exists()
+
+
+def test_plugins_listing_fits_80_columns():
+    proc = subprocess.run([*G2S, "plugins"], capture_output=True, text=True, cwd=PROJECT, env={**os.environ, "COLUMNS": "80"})
+    assert proc.returncode == 0, proc.stderr
+    lines = proc.stdout.splitlines()
+    assert max(len(line) for line in lines) <= 80
+    assert [line for line in lines if line and not line.startswith(" ")] == [stage.key for stage in STAGES]

@@ -99,3 +99,26 @@ def test_missing_config_file(tmp_path):
 
 def test_empty_config_is_all_defaults(tmp_path):
     assert load_raw_config(write(tmp_path, "empty.yaml", "")) == {}
+
+
+def test_every_preset_states_its_purpose_in_one_line():
+    from g2s_core.config import presets
+
+    purposes = presets()
+    assert set(purposes) == {p.stem for p in PRESETS_DIR.glob("*.yaml")}
+    for name, purpose in purposes.items():
+        assert purpose.endswith(".") and len(purpose) <= 90, (name, purpose)
+
+
+def test_set_key_merges_mappings_indexes_lists_and_leaves_the_input_alone():
+    from g2s_core.config import parse_assignment, set_key
+
+    raw = {"agent": {"radius": 0.5, "height": 2.0}, "analyzers": [{"plugin": "degree"}]}
+    changed = set_key(raw, *parse_assignment("agent.radius=0.25"), source="--set")
+    changed = set_key(changed, "analyzers.0.params", {"normalized": False}, source="--set")
+    changed = set_key(changed, *parse_assignment("outputs.formats=[json, glb]"), source="--set")
+    assert changed == {"agent": {"radius": 0.25, "height": 2.0}, "outputs": {"formats": ["json", "glb"]},
+                       "analyzers": [{"plugin": "degree", "params": {"normalized": False}}]}
+    assert raw == {"agent": {"radius": 0.5, "height": 2.0}, "analyzers": [{"plugin": "degree"}]}
+    assert parse_assignment("graph.plugin=navmesh") == ("graph.plugin", "navmesh")
+    assert parse_assignment("stop_after=") == ("stop_after", None)

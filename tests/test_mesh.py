@@ -6,6 +6,7 @@ import numpy as np
 import pytest
 import trimesh
 
+from g2s_core import DISTRIBUTION
 from g2s_core.config import MeshConfig
 from g2s_core.errors import ConfigError, MeshError
 from g2s_core.mesh import SUPPORTED_SUFFIXES, file_sha256, generate_level, load_mesh
@@ -107,7 +108,7 @@ def test_a_ply_point_cloud_is_still_refused(tmp_path):
 
 
 def test_sample_levels_come_from_the_level_generators_with_their_parameters():
-    builtin = {p.name for p in installed().plugins("levels") if p.package == "g2s"}
+    builtin = {p.name for p in installed().plugins("levels") if p.package == DISTRIBUTION}
     assert builtin == set(levels.SAMPLES)  # every sample level is a generator
     mesh = generate_level("sample:dungeon?rooms=3&seed=2&loops=0.5")
     expected = levels.dungeon(rooms=3, seed=2, loops=0.5).mesh

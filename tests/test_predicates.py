@@ -201,7 +201,7 @@ def test_register_as_predicates_and_run_through_pluggy():
 
     registry = Registry()
     for module in (surface_los, max_length, always, never):
-        info = registry.register(module, package="g2s", entry_point=f"simplify.{module.NAME}")
+        info = registry.register(module, package="graph2structure", entry_point=f"simplify.{module.NAME}")
         assert (info.stage, info.name) == ("simplify", module.NAME)
     predicate = registry.call(registry.get("simplify", "never"), params=never.Params(), context=context())
     assert predicate(chain(((0, 0, 0), UP, True), ((1, 0, 0), UP, True), ((2, 0, 0), UP, True)), 0, 1, 2) is False

@@ -7,6 +7,7 @@ import types
 import pytest
 from pydantic import Field
 
+from g2s_core import DISTRIBUTION
 from g2s_core.errors import ConfigError, PluginError, PluginFailure
 from g2s_core.model import Terminals
 from g2s_core.plugin import PluginParams, hookimpl
@@ -128,16 +129,16 @@ def test_parameter_help_comes_from_the_declaration():
 
 def test_builtin_plugins_register_through_entry_points():
     registry = Registry.from_entry_points()
-    builtin = {(p.stage, p.name) for p in registry.plugins() if p.package == "g2s"}
+    builtin = {(p.stage, p.name) for p in registry.plugins() if p.package == DISTRIBUTION}
     assert ("graph", "navmesh") in builtin
     for info in registry.plugins():
-        if info.package == "g2s":  # the sample levels come as one list, from entry point levels.samples
+        if info.package == DISTRIBUTION:  # the sample levels come as one list, from entry point levels.samples
             assert info.entry_point == (f"{info.stage}.{info.name}" if info.stage != "levels" else "levels.samples")
 
 
 def test_every_builtin_parameter_is_documented():
     registry = Registry.from_entry_points()
-    builtin = [p for p in registry.plugins() if p.package == "g2s"]
+    builtin = [p for p in registry.plugins() if p.package == DISTRIBUTION]
     assert {("graph", "sampling"), ("simplify", "mesh_los")} <= {(p.stage, p.name) for p in builtin}
     for info in builtin:
         for name, field in info.params_model.model_fields.items():

@@ -103,7 +103,7 @@ def test_register_as_root_selectors_and_run_through_pluggy():
 
     registry = Registry()
     for module in (betweenness, closeness, degree, center, point):
-        info = registry.register(module, package="g2s", entry_point=f"roots.{module.NAME}")
+        info = registry.register(module, package="graph2structure", entry_point=f"roots.{module.NAME}")
         assert (info.stage, info.name) == ("roots", module.NAME)
     path = forest_on_a_line([(0, 1), (1, 2)])
     info = registry.get("roots", "betweenness")

@@ -386,7 +386,7 @@ def test_plugin_module_through_registry_and_pipeline(module):
     from g2s_core.registry import Registry
 
     registry = Registry()
-    info = registry.register(module, package="g2s", entry_point=f"steiner.{module.NAME}")
+    info = registry.register(module, package="graph2structure", entry_point=f"steiner.{module.NAME}")
     assert (info.stage, info.name) == ("steiner", module.NAME)
     params = registry.validate_params(info, {}, key="steiner.params")
     with pytest.raises(Exception):

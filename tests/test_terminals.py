@@ -249,7 +249,7 @@ def test_register_as_terminal_selectors_and_run_through_pluggy():
 
     registry = Registry()
     for module in (leaves, metric, points):
-        info = registry.register(module, package="g2s", entry_point=f"terminals.{module.NAME}")
+        info = registry.register(module, package="graph2structure", entry_point=f"terminals.{module.NAME}")
         assert (info.stage, info.name) == ("terminals", module.NAME)
     info = registry.get("terminals", "metric")
     params = registry.validate_params(info, {"metric": "degree", "top_k": 1}, key="terminals.params")

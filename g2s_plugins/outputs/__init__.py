@@ -19,6 +19,6 @@ graph      graph.json                                  initial graph, networkx n
 See ``docs/outputs.md`` for the details of each format.
 """
 
-from g2s_plugins.outputs.structure_json import LoadedResult, load_result
+from g2s_core.results import LoadedResult, load_result
 
 __all__ = ["LoadedResult", "load_result"]

@@ -59,7 +59,7 @@ def _graphml_bytes(graph: nx.Graph) -> bytes:
 def _flat_graph(graph: nx.Graph, terminals: set[int], analysis: dict[str, dict[int, float]]) -> nx.Graph:
     flat: nx.Graph = nx.DiGraph() if graph.is_directed() else nx.Graph()
     for node in sorted(graph.nodes):
-        attrs = flatten(graph.nodes[node])
+        attrs = flatten({k: v for k, v in graph.nodes[node].items() if k != "values"})  # written as value_<key>
         attrs["terminal"] = int(node) in terminals or bool(graph.nodes[node].get("terminal", False))
         if graph.is_directed():
             parent = tree_parent(graph, node)

@@ -1,0 +1,200 @@
+"""The Python API: run a config on a mesh, write the results, read them back.
+
+::
+
+    import g2s_core
+
+    result = g2s_core.run("level.obj", "map_analysis", agent={"radius": 0.4})
+    result.structure.nodes[0]["values"]["betweenness"]
+    result.write("out")
+    again = g2s_core.load_result("out")
+
+The ``g2s`` command is built from the same functions (:func:`open_mesh`,
+:func:`execute`, :func:`write_result`), so a run from Python and one from the
+command line give the same files. See ``docs/python.md``.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import networkx as nx
+import trimesh
+
+from g2s_core import pipeline
+from g2s_core.config import RunConfig, resolve_config
+from g2s_core.mesh import SAMPLE_PREFIX, clean_mesh, generate_level, load_mesh, mesh_sha256, prepare_mesh
+from g2s_core.model import RunResult
+from g2s_core.outputs import DEFAULT_FORMATS, parse_formats, prepare_outdir, write_outputs
+from g2s_core.registry import Registry, installed
+from g2s_core.results import LoadedResult
+from g2s_core.results import load_result as _load_structure
+
+MeshLike = str | Path | trimesh.Trimesh
+ConfigLike = str | Path | Mapping[str, Any] | RunConfig
+
+__all__ = ["MeshSource", "execute", "load_result", "open_mesh", "run", "write_result"]
+
+
+@dataclass(frozen=True)
+class MeshSource:
+    """The mesh a run works on, ready for the pipeline.
+
+    Attributes:
+        mesh: the triangle mesh in metres, Y up (the config's ``mesh``
+            settings applied).
+        name: the file or sample name the outputs record.
+        sha256: of the file's bytes; of the vertex and face arrays otherwise.
+        path: the file read, which no result may overwrite; ``None`` when the
+            mesh did not come from a file.
+        cleaning: what ``mesh.clean`` removed (``{"duplicate_faces": 3}``), if it ran.
+    """
+
+    mesh: trimesh.Trimesh
+    name: str
+    sha256: str
+    path: Path | None = None
+    cleaning: dict[str, int] | None = None
+
+
+def open_mesh(mesh: MeshLike, config: RunConfig, name: str | None = None, registry: Registry | None = None) -> MeshSource:
+    """The mesh of a run from a file path, ``"sample:NAME[?param=value&...]"`` or a ``trimesh.Trimesh``.
+
+    Args:
+        mesh: a mesh file (.obj .glb .gltf .ply .stl .off), ``sample:NAME``
+            for a level from an installed level generator (``g2s plugins
+            --stage levels``, docs/samples.md), or a mesh in the file's units
+            and up axis.
+        config: its ``mesh`` settings (up axis, scale; cleaning for files and
+            in-memory meshes) are applied.
+        name: the name recorded for the mesh (default: the file name, the
+            sample spec, or ``"mesh"``).
+        registry: the plugins that generate sample levels (default: the installed ones).
+
+    Raises:
+        MeshError: the file is missing or not a usable triangle mesh.
+        ConfigError: no such level generator, or bad parameters for it.
+    """
+    if isinstance(mesh, trimesh.Trimesh):
+        name = name or "mesh"
+        prepared = prepare_mesh(mesh, config.mesh, source=name)
+        cleaning = None
+        if config.mesh.clean:
+            prepared, cleaning = clean_mesh(prepared)
+        return MeshSource(prepared, name, mesh_sha256(prepared), cleaning=cleaning)
+    if isinstance(mesh, str) and mesh.startswith(SAMPLE_PREFIX):
+        generated = generate_level(mesh, config.mesh, registry)
+        return MeshSource(generated, name or mesh[len(SAMPLE_PREFIX):], mesh_sha256(generated))
+    loaded, info = load_mesh(mesh, config.mesh)
+    return MeshSource(loaded, name or info.name, info.sha256, Path(mesh), info.cleaning)
+
+
+def execute(
+    plan: pipeline.Plan,
+    registry: Registry,
+    source: MeshSource,
+    progress: Callable[[str], None] | None = None,
+) -> RunResult:
+    """Run a planned config on a mesh; terminal flags and analysis values go on the graphs' nodes.
+
+    Every node of ``result.graph``, ``steiner``, ``forest`` and ``structure``
+    gets ``terminal`` (bool); every node of ``result.structure`` gets
+    ``values``, a dict of analysis key -> value (also in ``result.analysis``).
+    """
+    result = pipeline.run(plan, registry, source.mesh, source.name, source.sha256, progress=progress)
+    result.mesh_path = source.path
+    terminals = set() if result.terminals is None else set(result.terminals.nodes)
+    for graph in (result.graph, result.steiner, result.forest, result.structure):
+        if graph is not None:
+            for node, attrs in graph.nodes(data=True):
+                attrs["terminal"] = node in terminals
+    if result.structure is not None:
+        _put_values(result.structure, result.analysis)
+    return result
+
+
+def _put_values(graph: nx.Graph, analysis: Mapping[str, Mapping[int, Any]]) -> None:
+    """Each node's analysis values as its ``values`` attribute (key -> value)."""
+    for node, attrs in graph.nodes(data=True):
+        attrs["values"] = {key: values[node] for key, values in analysis.items() if node in values}
+
+
+def run(
+    mesh: MeshLike,
+    /,
+    config: ConfigLike = "map_analysis",
+    *,
+    mesh_name: str | None = None,
+    progress: Callable[[str], None] | None = None,
+    **overrides: Any,
+) -> RunResult:
+    """Run a config on a mesh and return everything the stages produced.
+
+    Args:
+        mesh: a mesh file, ``"sample:NAME"`` or a ``trimesh.Trimesh`` (see :func:`open_mesh`).
+        config: a preset name (``g2s presets`` lists them), a YAML file, a
+            mapping as a YAML file would hold, or a :class:`~g2s_core.config.RunConfig`.
+        mesh_name: the name recorded for an in-memory mesh.
+        progress: called with a short message as each stage starts.
+        **overrides: config keys and their new values, as ``g2s run --set``
+            takes them: ``agent={"radius": 0.4}`` (mappings merge) or dotted,
+            ``**{"terminals.params.k": 20}``.
+
+    Returns:
+        The :class:`~g2s_core.model.RunResult`: ``graph``, ``terminals``,
+        ``steiner``, ``forest``, ``structure`` (networkx graphs, nodes carrying
+        ``terminal`` and, on the structure, ``values``), ``analysis``,
+        ``stages`` (timings and sizes), ``warnings``; ``result.write(folder)``
+        writes the files ``g2s run`` writes.
+
+    Raises:
+        ConfigError, MeshError, G2SError: bad input (what ``g2s`` reports with exit code 2).
+        PluginFailure: a plugin failed (exit code 3).
+    """
+    run_config, source = resolve_config(config, overrides)
+    registry = installed()
+    plan = pipeline.plan(run_config, registry, source=source)
+    return execute(plan, registry, open_mesh(mesh, run_config, name=mesh_name, registry=registry), progress=progress)
+
+
+def write_result(
+    result: RunResult,
+    outdir: str | Path,
+    formats: str | Sequence[str] | None = None,
+    force: bool = False,
+    progress: Callable[[str], None] | None = None,
+    registry: Registry | None = None,
+) -> list[Path]:
+    """Write a run's result files into ``outdir`` (created if missing); the paths written.
+
+    ``formats``: names or a comma-separated string (``"json,glb"``); default:
+    the config's ``outputs.formats``. A folder already holding results is
+    refused unless ``force`` (then the results of formats not written are
+    removed); the run's input mesh file is never written or removed.
+
+    Raises:
+        G2SError: unknown format, or the folder cannot take the results.
+    """
+    outdir = Path(outdir)
+    default = result.config.get("outputs", {}).get("formats", DEFAULT_FORMATS)
+    chosen = parse_formats(default if formats is None else formats, registry=registry)
+    protect = [] if result.mesh_path is None else [result.mesh_path]
+    prepare_outdir(outdir, chosen, force, protect, registry)
+    return write_outputs(result, outdir, chosen, replace=force, progress=progress, registry=registry)
+
+
+def load_result(path: str | Path) -> LoadedResult:
+    """Read back a result folder (or its ``structure.json``).
+
+    The final structure's nodes carry ``terminal`` and ``values`` as in a
+    :class:`~g2s_core.model.RunResult` from :func:`run`.
+
+    Raises:
+        G2SError: the file is missing or not a g2s ``structure.json``.
+    """
+    loaded = _load_structure(path)
+    _put_values(loaded.structure, loaded.analysis)
+    return loaded

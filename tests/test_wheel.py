@@ -1,0 +1,96 @@
+"""The wheel as a user gets it: built by `make wheel`, installed into a new
+virtual environment with nothing else, run from outside the checkout."""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from tests.conftest import PROJECT, SHARED_DATA
+
+pytestmark = pytest.mark.wheel
+
+# Run in the new environment: where the extension's Recast/Detour libraries
+# were loaded from, read from the process's own memory map.
+LOADED_LIBRARIES = """
+import json, g2s_core, g2s_plugins.recast._recast as extension
+libraries = sorted({line.split()[-1] for line in open("/proc/self/maps") if "libRecast" in line or "libDetour" in line})
+print(json.dumps({"libraries": libraries, "package": g2s_core.__file__, "extension": extension.__file__}))
+"""
+
+API = """
+import g2s_core
+result = g2s_core.run("sample:cross_hub", "map_piece", agent={"radius": 0.4})
+assert result.structure.number_of_nodes() > 0
+assert sum(terminal for _, terminal in result.structure.nodes(data="terminal")) >= 4
+written = result.write("api-out", formats="json")
+loaded = g2s_core.load_result("api-out")
+assert sorted(loaded.structure.nodes) == sorted(result.structure.nodes)
+print(len(written))
+"""
+
+
+def install_wheel(root: Path) -> Path:
+    """`make wheel`, then a new venv holding only that wheel and its PyPI dependencies; its bin folder."""
+    dist = root / "dist"
+    build = subprocess.run(["make", "-s", "wheel", f"WHEEL_DIR={dist}"], cwd=PROJECT, capture_output=True, text=True)
+    assert build.returncode == 0, build.stdout + build.stderr
+    wheels = sorted(dist.glob("graph2structure-*.whl"))
+    assert len(wheels) == 1 and "manylinux" in wheels[0].name, wheels
+    venv = root / "venv"
+    subprocess.run([sys.executable, "-m", "venv", str(venv)], check=True)
+    # --no-compile: byte-compiling plotly's thousands of modules would double the install time
+    install = subprocess.run([str(venv / "bin" / "python"), "-m", "pip", "install", "-q", "--no-compile", str(wheels[0])],
+                             capture_output=True, text=True)
+    assert install.returncode == 0, install.stderr
+    return venv / "bin"
+
+
+def run_in(bin_dir: Path, cwd: Path, *args: str) -> subprocess.CompletedProcess:
+    env = {key: value for key, value in os.environ.items() if key not in ("PYTHONPATH", "VIRTUAL_ENV")}
+    env["PATH"] = f"{bin_dir}{os.pathsep}{env.get('PATH', '')}"
+    return subprocess.run(args, cwd=cwd, env=env, capture_output=True, text=True)
+
+
+def test_wheel_installs_and_runs_on_its_own(tmp_path):
+    # one test, so that xdist workers never build the wheel twice at once
+    bin_dir = install_wheel(tmp_path)
+    work = tmp_path / "work"  # outside the checkout: nothing of it is importable from here
+    work.mkdir()
+
+    proc = run_in(bin_dir, work, "python", "-c", LOADED_LIBRARIES)
+    assert proc.returncode == 0, proc.stderr
+    loaded = json.loads(proc.stdout)
+    site = bin_dir.parent / "lib"
+    assert Path(loaded["package"]).is_relative_to(site) and Path(loaded["extension"]).is_relative_to(site), loaded
+    names = [Path(path).name for path in loaded["libraries"]]
+    assert any(n.startswith("libRecast") for n in names) and any(n.startswith("libDetour") for n in names), loaded
+    for path in loaded["libraries"]:  # the wheel's copies, not /usr/lib's
+        assert Path(path).parent.name == "graph2structure.libs" and Path(path).is_relative_to(site), loaded
+
+    version = run_in(bin_dir, work, "g2s", "--version")
+    assert version.returncode == 0 and version.stdout.startswith("g2s 0."), version.stdout + version.stderr
+
+    demo = run_in(bin_dir, work, "g2s", "demo")
+    assert demo.returncode == 0, demo.stderr
+    assert json.loads((work / "g2s-demo" / "structure.json").read_text())["nodes"]
+    assert (work / "g2s-demo" / "heatmap.png").is_file() and (work / "g2s-demo" / "report.html").is_file()
+
+    presets = run_in(bin_dir, work, "g2s", "presets")
+    assert presets.returncode == 0 and "map_analysis " in presets.stdout, presets.stdout + presets.stderr
+
+    level = SHARED_DATA / "nav_test.obj"
+    if level.is_file():
+        proc = run_in(bin_dir, work, "g2s", "run", "map_analysis", str(level), "-o", "out", "--json")
+        assert proc.returncode == 0, proc.stderr
+        summary = json.loads(proc.stdout)
+        assert summary["final"]["stage"] == "simplify" and summary["final"]["nodes"] > 0
+
+    api = run_in(bin_dir, work, "python", "-c", API)
+    assert api.returncode == 0, api.stderr
+    assert int(api.stdout) == 2
