@@ -13,6 +13,7 @@ import numpy as np
 import pytest
 
 from g2s_core import pipeline
+from g2s_core.results import load_result
 from g2s_core.config import PRESETS_DIR, load_config, load_raw_config, parse_config
 from g2s_core.errors import PluginError
 from g2s_core.model import RunResult
@@ -184,7 +185,7 @@ def test_structure_json_carries_the_records_and_stays_byte_identical(tmp_path):
     jsonschema.Draft202012Validator(schema).validate(document)
     assert document["features"]["chokepoints"]["chokepoints"][0]["articulation"] is True
     assert len(document["features"]["regions"]["regions"]) == 2
-    assert structure_json.load_result(tmp_path).features == document["features"]
+    assert load_result(tmp_path).features == document["features"]
     (tmp_path / "again").mkdir()
     structure_json.write(run(level), tmp_path / "again")
     assert (tmp_path / "again" / "structure.json").read_bytes() == first
