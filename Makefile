@@ -18,7 +18,7 @@ GLTF_VALIDATOR_VERSION := 2.0.0-dev.3.10
 # three.js, which draws the GLB for docs/images/glb-threejs.png (make docs-images only)
 THREE_VERSION := 0.187.0
 
-.PHONY: demo test setup system-deps benchmark clean readme-image regions-image docs-images wheel
+.PHONY: demo test setup system-deps benchmark clean readme-image regions-image docs-images wheel fuzz
 
 demo: setup
 	$(VENV)/bin/g2s demo -o $(DEMO_OUT) --force
@@ -69,6 +69,11 @@ docs-images: setup
 
 benchmark: setup
 	$(PY) benchmarks/pipeline.py
+
+# Fuzz the mesh, config and points loaders for FUZZ_MINUTES (crashing inputs go to tests/fuzz/crashes/).
+FUZZ_MINUTES ?= 10
+fuzz: setup
+	$(PY) -m tests.fuzz.fuzz_loaders --minutes $(FUZZ_MINUTES)
 
 setup: $(STAMP)
 

@@ -25,10 +25,10 @@ import networkx as nx
 import trimesh
 
 from g2s_core import pipeline
-from g2s_core.config import RunConfig, resolve_config
+from g2s_core.config import RunConfig, named_files, resolve_config
 from g2s_core.mesh import SAMPLE_PREFIX, clean_mesh, generate_level, load_mesh, mesh_sha256, prepare_mesh
 from g2s_core.model import RunResult
-from g2s_core.outputs import DEFAULT_FORMATS, parse_formats, prepare_outdir, write_outputs
+from g2s_core.outputs import DEFAULT_FORMATS, parse_formats, write_outputs
 from g2s_core.registry import Registry, installed
 from g2s_core.results import LoadedResult
 from g2s_core.results import load_result as _load_structure
@@ -36,7 +36,7 @@ from g2s_core.results import load_result as _load_structure
 MeshLike = str | Path | trimesh.Trimesh
 ConfigLike = str | Path | Mapping[str, Any] | RunConfig
 
-__all__ = ["MeshSource", "execute", "load_result", "open_mesh", "run", "write_result"]
+__all__ = ["MeshSource", "execute", "input_files", "load_result", "open_mesh", "run", "write_result"]
 
 
 @dataclass(frozen=True)
@@ -92,20 +92,35 @@ def open_mesh(mesh: MeshLike, config: RunConfig, name: str | None = None, regist
     return MeshSource(loaded, name or info.name, info.sha256, Path(mesh), info.cleaning)
 
 
+def input_files(config: RunConfig, config_files: Sequence[Path] = (), mesh: MeshLike | None = None) -> tuple[Path, ...]:
+    """The files a run reads, which its results never overwrite or remove.
+
+    They are ``config_files`` (the config and what it ``extends:``), every
+    existing file a stage's parameters name (a points ``file``) and ``mesh``
+    when it is a file path.
+    """
+    mesh_file = isinstance(mesh, (str, Path)) and not str(mesh).startswith(SAMPLE_PREFIX)
+    return (*map(Path, config_files), *named_files(config), *([Path(mesh)] if mesh_file else []))
+
+
 def execute(
     plan: pipeline.Plan,
     registry: Registry,
     source: MeshSource,
     progress: Callable[[str], None] | None = None,
+    config_files: Sequence[Path] = (),
 ) -> RunResult:
     """Run a planned config on a mesh; terminal flags and analysis values go on the graphs' nodes.
 
     Every node of ``result.graph``, ``steiner``, ``forest`` and ``structure``
     gets ``terminal`` (bool); every node of ``result.structure`` gets
     ``values``, a dict of analysis key -> value (also in ``result.analysis``).
+    ``result.inputs`` lists the files the run read (:func:`input_files`;
+    ``config_files``: the config files ``plan.config`` came from).
     """
     result = pipeline.run(plan, registry, source.mesh, source.name, source.sha256, progress=progress)
     result.mesh_path = source.path
+    result.inputs = input_files(plan.config, config_files, source.path)
     terminals = set() if result.terminals is None else set(result.terminals.nodes)
     for graph in (result.graph, result.steiner, result.forest, result.structure):
         if graph is not None:
@@ -152,12 +167,14 @@ def run(
 
     Raises:
         ConfigError, MeshError, G2SError: bad input (what ``g2s`` reports with exit code 2).
-        PluginFailure: a plugin failed (exit code 3).
+        PluginFailure: a plugin failed (what ``g2s`` reports with exit code 2, naming the plugin).
     """
-    run_config, source = resolve_config(config, overrides)
+    config_files: list[Path] = []
+    run_config, source = resolve_config(config, overrides, sources=config_files)
     registry = installed()
     plan = pipeline.plan(run_config, registry, source=source)
-    return execute(plan, registry, open_mesh(mesh, run_config, name=mesh_name, registry=registry), progress=progress)
+    opened = open_mesh(mesh, run_config, name=mesh_name, registry=registry)
+    return execute(plan, registry, opened, progress=progress, config_files=config_files)
 
 
 def write_result(
@@ -173,17 +190,20 @@ def write_result(
     ``formats``: names or a comma-separated string (``"json,glb"``); default:
     the config's ``outputs.formats``. A folder already holding results is
     refused unless ``force`` (then the results of formats not written are
-    removed); the run's input mesh file is never written or removed.
+    removed). The files appear all together or not at all; the run's input
+    files (``result.inputs``: mesh, configs, points files) are never written
+    or removed.
 
     Raises:
-        G2SError: unknown format, or the folder cannot take the results.
+        G2SError: unknown format, or the folder cannot take the results
+            (checked before anything is written).
     """
     outdir = Path(outdir)
     default = result.config.get("outputs", {}).get("formats", DEFAULT_FORMATS)
     chosen = parse_formats(default if formats is None else formats, registry=registry)
-    protect = [] if result.mesh_path is None else [result.mesh_path]
-    prepare_outdir(outdir, chosen, force, protect, registry)
-    return write_outputs(result, outdir, chosen, replace=force, progress=progress, registry=registry)
+    return write_outputs(
+        result, outdir, chosen, replace=force, progress=progress, registry=registry, protect=result.inputs
+    )
 
 
 def load_result(path: str | Path) -> LoadedResult:

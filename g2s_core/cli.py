@@ -1,7 +1,7 @@
 """The ``g2s`` command line: run a config on a mesh, list plugins, run the demo.
 
 Exit codes: 0 success; 2 bad input or config (one line on stderr, no
-traceback); 3 a plugin failed: it could not be loaded, raised an exception or
+traceback), or a plugin that could not be loaded, raised an exception or
 returned a wrong result (one line naming the plugin and its package); 1 internal
 error of g2s (``--verbose`` shows the traceback).
 """
@@ -122,28 +122,33 @@ def main(argv: Sequence[str] | None = None) -> int:
 
 
 def _run(args: argparse.Namespace, errors: Console) -> int:
-    config, source = resolve_config(args.config, _overrides(args), overrides_source="--set")
+    config_files: list[Path] = []
+    config, source = resolve_config(args.config, _overrides(args), overrides_source="--set", sources=config_files)
     formats = _formats(args, config, source)
-    protect = [] if args.mesh.startswith(SAMPLE_PREFIX) else [Path(args.mesh)]
-    check_outdir(args.outdir, formats, args.force, protect)
+    inputs = api.input_files(config, config_files, args.mesh)
+    check_outdir(args.outdir, formats, args.force, inputs)
     registry = installed()
     plan = pipeline.plan(config, registry, source=source)
     mesh = api.open_mesh(args.mesh, config, registry=registry)
     if mesh.cleaning:
         removed = ", ".join(f"{count} {what.replace('_', ' ')}" for what, count in mesh.cleaning.items())
         _status(args, errors, f"cleaning removed {removed}")
-    return _execute(args, errors, registry, plan, mesh, formats)
+    return _execute(args, errors, registry, plan, mesh, formats, config_files)
 
 
 def _demo(args: argparse.Namespace, errors: Console) -> int:
-    config, source = resolve_config("demo", _overrides(args), overrides_source="--set")
+    for option, value, least in (("--rooms", args.rooms, 1), ("--seed", args.seed, 0)):
+        if value < least:
+            raise G2SError(f"{option}: expected an integer >= {least}, got {value}")
+    config_files: list[Path] = []
+    config, source = resolve_config("demo", _overrides(args), overrides_source="--set", sources=config_files)
     formats = _formats(args, config, source)
-    check_outdir(args.outdir, formats, args.force)
+    check_outdir(args.outdir, formats, args.force, api.input_files(config, config_files))
     registry = installed()
     plan = pipeline.plan(config, registry, source=source)
     spec = f"{SAMPLE_PREFIX}dungeon?seed={args.seed}&rooms={args.rooms}"
     mesh = api.open_mesh(spec, config, name=f"dungeon (seed {args.seed}, {args.rooms} rooms)", registry=registry)
-    code = _execute(args, errors, registry, plan, mesh, formats)
+    code = _execute(args, errors, registry, plan, mesh, formats, config_files)
     if code == 0 and not (args.quiet or args.json):
         Console().print(_demo_hint(args.outdir, formats), markup=False, highlight=False, soft_wrap=True)
     return code
@@ -184,10 +189,11 @@ def _execute(
     plan: pipeline.Plan,
     mesh: MeshSource,
     formats: Sequence[str],
+    config_files: Sequence[Path],
 ) -> int:
     quiet = args.quiet or args.json
     with _progress(errors, quiet) as say:
-        result = api.execute(plan, registry, mesh, progress=say)
+        result = api.execute(plan, registry, mesh, progress=say, config_files=config_files)
         written = api.write_result(result, args.outdir, formats, force=args.force, progress=say, registry=registry)
     if args.json:
         print(json.dumps(_summary(result, args.outdir, formats, written), indent=1, sort_keys=True))

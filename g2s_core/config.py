@@ -11,6 +11,7 @@ what was expected, e.g.::
 from __future__ import annotations
 
 import copy
+import os
 from collections.abc import Mapping
 from pathlib import Path
 from typing import Any, Literal
@@ -19,6 +20,7 @@ import yaml
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, create_model
 
 from g2s_core.errors import ConfigError
+from g2s_core.input_files import MAX_NESTING, nesting_depth, parse_nested, read_text
 from g2s_core.messages import _field_at, _nested_model, describe_validation_error, show
 from g2s_core.stages import PIPELINE
 
@@ -34,7 +36,7 @@ or an editable install has no ``g2s_core/presets`` and reads ``configs/``.
 
 
 class _Section(BaseModel):
-    model_config = ConfigDict(extra="forbid", frozen=True)
+    model_config = ConfigDict(extra="forbid", frozen=True, allow_inf_nan=False)
 
 
 class AgentConfig(_Section):
@@ -118,15 +120,37 @@ RunConfig = create_model(
 # --- reading -----------------------------------------------------------------
 
 
+class _Loader(yaml.SafeLoader):
+    """``yaml.SafeLoader`` that stops at :data:`MAX_NESTING` levels as soon as it scans them.
+
+    PyYAML takes seconds per thousand levels of brackets before its composer
+    gives up with a RecursionError; this stops a deep document at once.
+    """
+
+    def fetch_flow_collection_start(self, token_class: Any) -> None:
+        self._check_depth(self.flow_level)
+        super().fetch_flow_collection_start(token_class)
+
+    def add_indent(self, column: int) -> bool:
+        self._check_depth(len(self.indents))
+        return super().add_indent(column)
+
+    def _check_depth(self, depth: int) -> None:
+        if depth >= MAX_NESTING:
+            raise yaml.scanner.ScannerError(
+                None, None, f"nested deeper than {MAX_NESTING} levels of mappings and lists", self.get_mark()
+            )
+
+
+def _parse_yaml(text: str, source: str) -> Any:
+    """The YAML document ``text``, nested at most :data:`MAX_NESTING` levels (else ConfigError naming ``source``)."""
+    return parse_nested(text, lambda t: yaml.load(t, Loader=_Loader), source, ConfigError)
+
+
 def _read_yaml(path: Path) -> dict[str, Any]:
+    text = read_text(path, "config file", ConfigError)
     try:
-        text = path.read_text(encoding="utf-8")
-    except FileNotFoundError:
-        raise ConfigError(f"{path}: no such config file") from None
-    except OSError as exc:
-        raise ConfigError(f"{path}: cannot read config ({exc.strerror})") from None
-    try:
-        data = yaml.safe_load(text)
+        data = _parse_yaml(text, str(path))
     except yaml.YAMLError as exc:
         mark = getattr(exc, "problem_mark", None)
         where = f" at line {mark.line + 1}, column {mark.column + 1}" if mark else ""
@@ -143,14 +167,20 @@ def find_config(name: str | Path, base_dir: Path = Path()) -> Path:
     """The config file ``name`` names: a file (relative to ``base_dir``), else a preset.
 
     ``name`` may leave out ``.yaml``; a file of that name wins over a preset.
+    When neither matches but ``name`` is there as something other than a
+    file (a folder, a FIFO, a device), that path is returned for the reader
+    to refuse saying what it is.
 
     Raises:
         ConfigError: neither a file nor a preset has that name.
     """
-    candidates = [base_dir / name, base_dir / f"{name}.yaml", PRESETS_DIR / name, PRESETS_DIR / f"{name}.yaml"]
+    given = base_dir / name
+    candidates = [given, base_dir / f"{name}.yaml", PRESETS_DIR / name, PRESETS_DIR / f"{name}.yaml"]
     for candidate in candidates:
         if candidate.is_file():
             return candidate
+    if os.path.lexists(given):
+        return given
     raise ConfigError(f"{name}: no such config file or preset (presets: {', '.join(presets())})")
 
 
@@ -186,23 +216,35 @@ def _deep_merge(base: dict[str, Any], override: dict[str, Any]) -> dict[str, Any
     return merged
 
 
-def load_raw_config(path: str | Path, _chain: tuple[Path, ...] = ()) -> dict[str, Any]:
-    """Read a YAML config and everything it ``extends:``, merged, unvalidated."""
+def load_raw_config(path: str | Path, _chain: tuple[Path, ...] = (), sources: list[Path] | None = None) -> dict[str, Any]:
+    """Read a YAML config and everything it ``extends:``, merged, unvalidated.
+
+    Every file read is appended to ``sources`` when given.
+    """
     path = Path(path)
     resolved = path.resolve()
     if resolved in _chain:
         cycle = " -> ".join(p.name for p in (*_chain, resolved))
         raise ConfigError(f"{path}: extends: cycle {cycle}")
-    return _merge_extends(_read_yaml(path), resolved.parent, path, (*_chain, resolved))
+    data = _read_yaml(path)
+    if sources is not None:
+        sources.append(path)
+    return _merge_extends(data, resolved.parent, path, (*_chain, resolved), sources)
 
 
-def _merge_extends(data: dict[str, Any], base_dir: Path, source: str | Path, chain: tuple[Path, ...]) -> dict[str, Any]:
+def _merge_extends(
+    data: dict[str, Any],
+    base_dir: Path,
+    source: str | Path,
+    chain: tuple[Path, ...],
+    sources: list[Path] | None = None,
+) -> dict[str, Any]:
     """``data`` on top of the config its ``extends:`` names (looked up from ``base_dir``)."""
     parent_name = data.pop("extends", None)
     if parent_name is None:
         return data
     parent_path = _resolve_extends(parent_name, base_dir, source)
-    return _deep_merge(load_raw_config(parent_path, chain), data)
+    return _deep_merge(load_raw_config(parent_path, chain, sources), data)
 
 
 def load_config(path: str | Path) -> RunConfig:
@@ -210,10 +252,40 @@ def load_config(path: str | Path) -> RunConfig:
     return parse_config(load_raw_config(path), source=str(path))
 
 
+def named_files(config: RunConfig) -> list[Path]:
+    """Existing files named by the stages' parameters (e.g. a points ``file``).
+
+    They are inputs of the run, which a run never overwrites; any string
+    parameter naming an existing file counts, so third-party plugins' files
+    are covered without declaring them.
+    """
+    found: list[Path] = []
+    sections = [getattr(config, stage.key) for stage in PIPELINE]
+    entries = [e for s in sections for e in (s if isinstance(s, list) else [s]) if e is not None]
+    pending: list[Any] = [entry.params for entry in entries]
+    while pending:
+        value = pending.pop()
+        if isinstance(value, dict):
+            pending.extend(value.values())
+        elif isinstance(value, list):
+            pending.extend(value)
+        elif isinstance(value, str) and _is_file(Path(value)):
+            found.append(Path(value))
+    return found
+
+
+def _is_file(path: Path) -> bool:
+    try:
+        return path.is_file()
+    except (OSError, ValueError):
+        return False
+
+
 def resolve_config(
     config: str | Path | Mapping[str, Any] | RunConfig,
     overrides: Mapping[str, Any] | None = None,
     overrides_source: str = "override",
+    sources: list[Path] | None = None,
 ) -> tuple[RunConfig, str]:
     """A validated config from a file, a preset name, a mapping or a RunConfig, with overrides.
 
@@ -225,6 +297,8 @@ def resolve_config(
             ``analyzers.0.key``) or not, and the values that replace theirs
             (mappings merge into the mappings they replace).
         overrides_source: how error messages name an override (``--set``).
+        sources: every config file read (the file or preset and what it
+            ``extends:``) is appended to it when given: inputs a run never overwrites.
 
     Returns:
         The config and the name error messages use for it (the file or preset
@@ -241,10 +315,16 @@ def resolve_config(
         raw = config.model_dump(mode="json", exclude_unset=True)
     elif isinstance(config, Mapping):
         source = "config mapping"
-        raw = _merge_extends(copy.deepcopy(dict(config)), Path.cwd(), source, ())
-    else:
+        if nesting_depth(config, MAX_NESTING) > MAX_NESTING:
+            raise ConfigError(f"{source}: nested deeper than {MAX_NESTING} levels of mappings and lists")
+        raw = _merge_extends(copy.deepcopy(dict(config)), Path.cwd(), source, (), sources)
+    elif isinstance(config, (str, Path)):
         source = str(config)
-        raw = load_raw_config(find_config(config))
+        raw = load_raw_config(find_config(config), sources=sources)
+    else:
+        raise ConfigError(
+            f"config: expected a config file, a preset name, a mapping or a RunConfig, got {type(config).__name__}"
+        )
     for key, value in (overrides or {}).items():
         raw = set_key(raw, key, value, source=f"{overrides_source} {key}")
     return parse_config(raw, source=source), source
@@ -262,9 +342,13 @@ def parse_assignment(text: str, source: str = "--set") -> tuple[str, Any]:
     if not equals or not key:
         raise ConfigError(f"{source} {text!r}: expected KEY=VALUE, e.g. agent.radius=0.4")
     try:
-        return key, yaml.safe_load(value) if value.strip() else None
-    except yaml.YAMLError:
-        raise ConfigError(f"{source} {key}: the value {value!r} is not valid YAML") from None
+        return key, _parse_yaml(value, f"{source} {key}") if value.strip() else None
+    except yaml.YAMLError as exc:
+        shown = repr(value) if len(value) <= 60 else repr(value[:57] + "...")
+        problem = getattr(exc, "problem", None)
+        raise ConfigError(
+            f"{source} {key}: the value {shown} is not valid YAML" + (f" ({problem})" if problem else "")
+        ) from None
 
 
 def set_key(data: dict[str, Any], key: str, value: Any, source: str) -> dict[str, Any]:

@@ -3,6 +3,9 @@
 from __future__ import annotations
 
 import hashlib
+import logging
+from collections.abc import Iterator
+from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
 from urllib.parse import parse_qsl, urlsplit
@@ -12,6 +15,7 @@ import trimesh
 
 from g2s_core.config import MeshConfig
 from g2s_core.errors import ConfigError, MeshError
+from g2s_core.input_files import check_regular_file
 from g2s_core.registry import Registry, installed
 
 SUPPORTED_SUFFIXES = (".obj", ".glb", ".gltf", ".ply", ".stl", ".off")
@@ -67,12 +71,12 @@ def load_mesh(path: str | Path, config: MeshConfig | None = None) -> tuple[trime
     """
     config = config or MeshConfig()
     path = Path(path)
-    if not path.is_file():
-        raise MeshError(f"{path}: no such mesh file")
+    check_regular_file(path, "mesh file", MeshError)
     if path.suffix.lower() not in SUPPORTED_SUFFIXES:
         raise MeshError(f"{path}: unsupported mesh type {path.suffix!r} (expected one of {', '.join(SUPPORTED_SUFFIXES)})")
     try:
-        loaded = _read_single_mesh(path) or trimesh.load(path, force="mesh", process=False)
+        with _trimesh_log_silenced():
+            loaded = _read_single_mesh(path) or trimesh.load(path, force="mesh", process=False)
     except Exception as exc:  # trimesh raises many exception types for bad files
         raise MeshError(f"{path}: cannot read mesh ({type(exc).__name__}: {exc})") from None
     mesh = prepare_mesh(loaded, config, source=str(path))
@@ -81,6 +85,19 @@ def load_mesh(path: str | Path, config: MeshConfig | None = None) -> tuple[trime
         mesh, cleaning = clean_mesh(mesh)
     info = MeshInfo(path.name, file_sha256(path), len(mesh.vertices), len(mesh.faces), cleaning)
     return mesh, info
+
+
+@contextmanager
+def _trimesh_log_silenced() -> Iterator[None]:
+    """Keep trimesh's log (tracebacks of formats it tried and gave up on) off the user's terminal:
+    a file g2s cannot read is reported once, as a MeshError."""
+    logger = logging.getLogger("trimesh")
+    level = logger.level
+    logger.setLevel(logging.CRITICAL + 1)
+    try:
+        yield
+    finally:
+        logger.setLevel(level)
 
 
 _SINGLE_MESH_FORMATS = ("ply", "stl", "off")

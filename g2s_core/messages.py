@@ -115,6 +115,8 @@ def describe_validation_error(exc: ValidationError, model: type[BaseModel], pref
         return f"{path}: required key is missing"
     if kind in {"model_type", "dict_type", "model_attributes_type"}:
         return f"{path}: expected a mapping, got {show(error.get('input'))}"
+    if kind == "finite_number":
+        return f"{path}: expected a finite number, got {show(error.get('input'))}"
     info = _field_at(model, loc)
     if info is not None:
         return f"{path}: expected {describe_field(info)}, got {show(error.get('input'))}"

@@ -217,7 +217,9 @@ class RunResult:
     features: dict[str, dict[str, Any]] = field(default_factory=dict)
     stages: list[StageStats] = field(default_factory=list)
     mesh_path: Path | None = None
-    """The mesh file the run read (never overwritten by :meth:`write`), if any."""
+    """The mesh file the run read, if any."""
+    inputs: tuple[Path, ...] = ()
+    """Every file the run read (mesh, config files, points files), which :meth:`write` never overwrites."""
     formats: tuple[str, ...] = ()
     """The output formats this run's results are written in (set by the writer before writing)."""
 

@@ -3,17 +3,19 @@
 Output writers are plugins (see :mod:`g2s_core.hookspecs`, ``g2s_write_output``):
 each has a format ``NAME`` and declares the ``FILES`` it writes. Any installed
 writer may be named in ``--format`` or the config's ``outputs.formats``.
+The writers of a run write into one staging folder whose files then move
+into the output folder together (:mod:`g2s_core.result_folder`).
 """
 
 from __future__ import annotations
 
-import os
 from collections.abc import Callable, Sequence
 from pathlib import Path
 
 from g2s_core.errors import G2SError
 from g2s_core.model import RunResult
 from g2s_core.registry import PluginInfo, Registry, installed
+from g2s_core.result_folder import check_writable, same_file, staged
 
 DEFAULT_FORMATS: tuple[str, ...] = ("json", "html")
 """What a run writes when neither the config nor ``--format`` says."""
@@ -65,19 +67,20 @@ def check_outdir(
 
     Any result file of any installed format already in ``outdir`` counts as an
     earlier result and is refused unless ``force``. The files in ``protect``
-    (the input mesh) are never written or removed, even with ``force``.
+    (the input mesh, config and points files) are never written or removed,
+    even with ``force``.
 
     Raises:
-        G2SError: unknown format, ``outdir`` is a file, results exist without
-            ``force``, or a result file would be an input file.
+        G2SError: unknown format, ``outdir`` cannot be created or written,
+            results exist without ``force``, or a result file would be an
+            input file.
     """
     parse_formats(formats, registry=registry)
-    if outdir.exists() and not outdir.is_dir():
-        raise G2SError(f"{outdir}: exists and is not a folder")
+    check_writable(outdir)
     every = result_paths(outdir, registry=registry)
     for path in every:
         for guarded in protect:
-            if _same_file(path, Path(guarded)):
+            if same_file(path, Path(guarded)):
                 raise G2SError(
                     f"{outdir}: the input {guarded} has the name of a result file ({path.name}); "
                     "choose another output folder"
@@ -87,14 +90,6 @@ def check_outdir(
         raise G2SError(f"{outdir}: already holds results ({', '.join(existing)}); use --force to replace them")
 
 
-def prepare_outdir(
-    outdir: Path, formats: Sequence[str], force: bool, protect: Sequence[Path] = (), registry: Registry | None = None
-) -> None:
-    """:func:`check_outdir`, then create ``outdir`` (and its parents)."""
-    check_outdir(outdir, formats, force, protect, registry)
-    outdir.mkdir(parents=True, exist_ok=True)
-
-
 def write_outputs(
     result: RunResult,
     outdir: Path,
@@ -102,31 +97,23 @@ def write_outputs(
     replace: bool = False,
     progress: Callable[[str], None] | None = None,
     registry: Registry | None = None,
+    protect: Sequence[Path] = (),
 ) -> list[Path]:
-    """Write every requested format into ``outdir`` (prepared by :func:`prepare_outdir`).
+    """Write every requested format into ``outdir``, all files at once or none (see :mod:`g2s_core.result_folder`).
 
-    With ``replace`` (``--force``), result files of the formats not requested
-    that an earlier run left are removed once the new ones are written, so the
-    folder never mixes two runs.
+    :func:`check_outdir` is applied first. With ``replace`` (``--force``),
+    result files of the formats not requested that an earlier run left are
+    removed in the same step, so the folder never mixes two runs.
     """
     registry = registry or installed()
     known = writers(registry)
-    written: list[Path] = []
+    check_outdir(outdir, formats, replace, protect, registry)
+    obsolete = [p for p in result_paths(outdir, registry=registry) if p.exists()] if replace else []
     result.formats = tuple(parse_formats(formats, registry=registry))
-    for fmt in result.formats:
-        if progress is not None:
-            progress(f"writing {fmt}")
-        written.extend(registry.call(known[fmt], result=result, folder=outdir))
-    if replace:
-        keep = {p.resolve() for p in written}
-        for path in result_paths(outdir, registry=registry):
-            if path.exists() and path.resolve() not in keep:
-                path.unlink()
-    return written
-
-
-def _same_file(a: Path, b: Path) -> bool:
-    try:
-        return a.exists() and b.exists() and os.path.samefile(a, b)
-    except OSError:
-        return False
+    names: list[str] = []
+    with staged(outdir, obsolete, protect) as staging:
+        for fmt in result.formats:
+            if progress is not None:
+                progress(f"writing {fmt}")
+            names.extend(Path(p).name for p in registry.call(known[fmt], result=result, folder=staging))
+    return [outdir / name for name in names]

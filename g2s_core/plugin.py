@@ -28,7 +28,9 @@ class PluginParams(BaseModel):
 
     Declare each parameter once, as a field with a default and a
     ``Field(description=...)``; the same declaration validates the YAML config
-    and produces the ``g2s plugins`` help. Unknown keys are rejected.
+    and produces the ``g2s plugins`` help. Unknown keys are rejected, and so
+    are NaN and infinite numbers (a plugin that means to accept them sets
+    ``allow_inf_nan=True`` on that field and says so in its description).
     """
 
-    model_config = ConfigDict(extra="forbid", frozen=True)
+    model_config = ConfigDict(extra="forbid", frozen=True, allow_inf_nan=False)

@@ -1,20 +1,26 @@
 """Reading a run's ``structure.json`` back (the ``json`` output writer's format, ``docs/outputs.md``).
 
-The format belongs to g2s, not to the writer plugin: its version, file names and
-reader live here, and the writer (``g2s_plugins.outputs.structure_json``) writes
-what this reads.
+The format belongs to g2s, not to the writer plugin: its version, file names,
+JSON schemas (``structure.schema.json``, ``run.schema.json`` beside this module)
+and reader live here, and the writer (``g2s_plugins.outputs.structure_json``)
+writes what this reads. The reader trusts nothing in the file: it is read like
+every text input (:mod:`g2s_core.input_files`) and checked against the schema
+before use, so a damaged file is refused naming the file and the field.
 """
 
 from __future__ import annotations
 
+import functools
 import json
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+import jsonschema
 import networkx as nx
 
 from g2s_core.errors import G2SError
+from g2s_core.input_files import parse_nested, read_text
 from g2s_core.model import Opening, StageStats, Terminals, vec3
 
 SCHEMA_VERSION = 2
@@ -22,6 +28,11 @@ READABLE_VERSIONS = (1, 2)
 """structure.json versions :func:`load_result` reads (1 has no ``features``)."""
 STRUCTURE_FILE = "structure.json"
 RUN_FILE = "run.json"
+RUN_SCHEMA_VERSION = 1
+SCHEMA_PATH = Path(__file__).resolve().parent / "structure.schema.json"
+"""The layout of ``structure.json``, version :data:`SCHEMA_VERSION` (JSON Schema draft 2020-12)."""
+RUN_SCHEMA_PATH = Path(__file__).resolve().parent / "run.schema.json"
+"""The layout of ``run.json``, version :data:`RUN_SCHEMA_VERSION`."""
 
 
 @dataclass
@@ -61,29 +72,54 @@ class LoadedResult:
 def load_result(path: str | Path) -> LoadedResult:
     """Read a ``structure.json`` (or the folder holding one) back.
 
+    The document is checked against :data:`SCHEMA_PATH` before use; a
+    version 1 file is checked as version 2 without ``features``.
+
     Raises:
-        G2SError: the file is missing, not JSON, not a g2s structure file, or
-            of a schema version this g2s does not read.
+        G2SError: the file is missing, not a regular UTF-8 file, not JSON, not
+            a g2s structure file, of a schema version this g2s does not read,
+            or malformed (the message names the file and the field).
     """
     path = Path(path)
     if path.is_dir():
         path = path / STRUCTURE_FILE
+    text = read_text(path, "structure file")
     try:
-        document = json.loads(path.read_text(encoding="utf-8"))
-    except FileNotFoundError:
-        raise G2SError(f"{path}: no such file") from None
-    except (OSError, UnicodeDecodeError, json.JSONDecodeError) as exc:
-        raise G2SError(f"{path}: not a readable JSON file ({exc})") from None
+        document = parse_nested(text, json.loads, str(path))
+    except json.JSONDecodeError as exc:
+        raise G2SError(f"{path}: invalid JSON at line {exc.lineno}, column {exc.colno}: {exc.msg}") from None
     if not isinstance(document, dict) or document.get("format") != "g2s-structure":
         raise G2SError(f"{path}: not a g2s structure.json file")
     version = document.get("schema_version")
     if version not in READABLE_VERSIONS:
         readable = ", ".join(map(str, READABLE_VERSIONS))
         raise G2SError(f"{path}: schema_version {version!r} is not supported (this g2s reads {readable})")
+    if version == 1:
+        if "features" in document:
+            raise G2SError(f"{path}: features: not a field of schema_version 1")
+        checked = {**document, "schema_version": SCHEMA_VERSION, "features": {}}
+    else:
+        checked = document
+    problem = jsonschema.exceptions.best_match(_schema_validator().iter_errors(checked))
+    if problem is not None:
+        where = "".join(f"[{p}]" if isinstance(p, int) else f".{p}" for p in problem.absolute_path).lstrip(".")
+        raise G2SError(f"{path}: {where or '(top level)'}: {_shorten(problem.message)}")
     try:
         return _loaded(document, path)
-    except (KeyError, TypeError, ValueError) as exc:
+    except (KeyError, TypeError, ValueError, OverflowError) as exc:  # what the schema cannot say, e.g. a parent id
         raise G2SError(f"{path}: malformed structure file ({type(exc).__name__}: {exc})") from None
+
+
+@functools.cache
+def _schema_validator() -> jsonschema.protocols.Validator:
+    schema = json.loads(SCHEMA_PATH.read_text(encoding="utf-8"))
+    return jsonschema.validators.validator_for(schema)(schema)
+
+
+def _shorten(message: str, limit: int = 160) -> str:
+    """A validator message cut to one short line (it quotes the offending value in full)."""
+    line = " ".join(message.split())
+    return line if len(line) <= limit else line[: limit - 3] + "..."
 
 
 def _loaded(document: dict[str, Any], path: Path) -> LoadedResult:
@@ -158,10 +194,10 @@ def _edges_graph(data: dict[str, Any] | None, directed: bool) -> nx.Graph | None
 def _stages(document: dict[str, Any], run_path: Path) -> list[StageStats]:
     seconds: dict[str, float] = {}
     try:
-        run = json.loads(run_path.read_text(encoding="utf-8"))
+        run = parse_nested(read_text(run_path, "run file"), json.loads, str(run_path))
         if run.get("mesh", {}).get("sha256") == document["mesh"]["sha256"]:
             seconds = {s["stage"]: float(s["seconds"]) for s in run.get("stages", [])}
-    except (OSError, ValueError, TypeError, KeyError, AttributeError):
+    except (G2SError, ValueError, TypeError, KeyError, AttributeError):  # timings are optional: a bad run.json is ignored
         seconds = {}
     return [
         StageStats(s["stage"], seconds.get(s["stage"], float("nan")), s["nodes"], s["edges"], s["terminals"])

@@ -19,6 +19,7 @@ import numpy as np
 import pytest
 import trimesh
 
+from g2s_core import results
 from g2s_core.config import AgentConfig, load_config
 from g2s_core.errors import G2SError
 from g2s_core.model import Opening, RunContext, RunResult, StageStats, Terminals
@@ -26,7 +27,6 @@ from g2s_core.outputs import (
     DEFAULT_FORMATS,
     check_outdir,
     parse_formats,
-    prepare_outdir,
     result_files,
     write_outputs,
     writers,
@@ -132,7 +132,7 @@ def result() -> RunResult:
 
 def _schema(name: str) -> dict:
     jsonschema = pytest.importorskip("jsonschema")
-    schema = json.loads((Path(structure_json.__file__).parent / name).read_text())
+    schema = json.loads((Path(results.__file__).parent / name).read_text())
     jsonschema.Draft202012Validator.check_schema(schema)
     return schema
 
@@ -255,10 +255,10 @@ def test_numbers_are_rounded_to_nine_significant_digits():
 
 def test_load_result_refuses_other_files(tmp_path):
     path = tmp_path / "structure.json"
-    with pytest.raises(G2SError, match="no such file"):
+    with pytest.raises(G2SError, match="no such structure file"):
         load_result(path)
     path.write_text("{not json")
-    with pytest.raises(G2SError, match="not a readable JSON"):
+    with pytest.raises(G2SError, match="invalid JSON at line 1"):
         load_result(path)
     path.write_text(json.dumps({"format": "g2s-structure", "schema_version": 3}))
     with pytest.raises(G2SError, match="schema_version 3 is not supported"):
@@ -402,12 +402,10 @@ def test_existing_results_are_refused_without_force_and_stale_ones_removed_with_
     out = tmp_path / "out"
     check_outdir(out, ["json"], force=False)
     assert not out.exists()  # checking creates nothing
-    prepare_outdir(out, ["png"], force=False)
     write_outputs(result, out, ["png"])
     (out / "notes.txt").write_text("mine")
     with pytest.raises(G2SError, match=r"already holds results \(heatmap.png\); use --force"):
-        prepare_outdir(out, ["json"], force=False)  # a result of *another* format counts too
-    prepare_outdir(out, ["json"], force=True)
+        write_outputs(result, out, ["json"])  # a result of *another* format counts too
     written = write_outputs(result, out, ["json"], replace=True)
     assert sorted(p.name for p in out.iterdir()) == ["notes.txt", "run.json", "structure.json"]
     assert [p.name for p in written] == ["structure.json", "run.json"]

@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 from g2s_core import pipeline
-from g2s_core.results import load_result
+from g2s_core.results import SCHEMA_PATH, load_result
 from g2s_core.config import PRESETS_DIR, load_config, load_raw_config, parse_config
 from g2s_core.errors import PluginError
 from g2s_core.model import RunResult
@@ -181,7 +181,7 @@ def test_structure_json_carries_the_records_and_stays_byte_identical(tmp_path):
     structure_json.write(result, tmp_path)
     first = (tmp_path / "structure.json").read_bytes()
     document = json.loads(first)
-    schema = json.loads(structure_json.SCHEMA_PATH.read_text())
+    schema = json.loads(SCHEMA_PATH.read_text())
     jsonschema.Draft202012Validator(schema).validate(document)
     assert document["features"]["chokepoints"]["chokepoints"][0]["articulation"] is True
     assert len(document["features"]["regions"]["regions"]) == 2

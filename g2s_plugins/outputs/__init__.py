@@ -2,8 +2,9 @@
 name in the config or on the CLI; :mod:`g2s_core.outputs` manages the output folder.
 
 Every writer takes the :class:`~g2s_core.model.RunResult` and the output folder
-and returns the paths it wrote. Files are written atomically (temporary file in
-the same folder, then rename), so a failed run never leaves half a file.
+and returns the paths it wrote. The writers of a run write into one staging
+folder whose files then move into the output folder together
+(:mod:`g2s_core.result_folder`), so a failed run never leaves half a result.
 
 =========  ==========================================  =====================================
 format     files                                       what

@@ -32,6 +32,7 @@ from pydantic_core import PydanticCustomError
 from scipy.spatial import cKDTree
 
 from g2s_core.errors import G2SError
+from g2s_core.input_files import parse_nested, read_text
 from g2s_core.model import RunContext, Terminals, vec3
 from g2s_core.plugin import PluginParams, hookimpl
 from g2s_plugins._surface import on_navmesh
@@ -64,7 +65,7 @@ _SEPARATORS = re.compile(r"[,;\s]+")
 
 def _from_json(path: Path, text: str) -> list[Any]:
     try:
-        data = json.loads(text)
+        data = parse_nested(text, json.loads, str(path))
     except json.JSONDecodeError as exc:
         raise G2SError(f"{path}: invalid JSON at line {exc.lineno}, column {exc.colno}: {exc.msg}") from None
     if isinstance(data, dict):
@@ -105,12 +106,7 @@ def read_points(file: str | Path) -> np.ndarray:
         G2SError: the file is missing, unreadable, malformed, or holds no point.
     """
     path = Path(file)
-    try:
-        text = path.read_text(encoding="utf-8")
-    except FileNotFoundError:
-        raise G2SError(f"{path}: no such points file") from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise G2SError(f"{path}: cannot read points file ({exc})") from None
+    text = read_text(path, "points file")
     stripped = text.lstrip()
     is_json = path.suffix.lower() == ".json" or stripped.startswith(("[", "{"))
     rows = _from_json(path, text) if is_json else _from_text(path, text)

@@ -1,0 +1,200 @@
+"""A run's result files appear in the output folder all together or not at all.
+
+:func:`check_writable` refuses, before any work, an output folder that cannot
+be created or written. :func:`staged` gives the writers an empty staging
+folder on the same file system as the output folder and, once every writer
+has finished, moves the files into place:
+
+* the output folder does not exist yet: the staging folder is made beside it
+  and renamed to it (one atomic rename);
+* it exists (it may hold the user's other files, even the input mesh): the
+  staging folder is made inside it and each file is renamed into place, with
+  Ctrl-C held back until the last rename is done.
+
+When a writer fails (disk full, ``ulimit -f``, Ctrl-C) the staging folder is
+removed, together with any parent folder created for it, and the output
+folder is as it was. A staging folder that a killed process left behind is
+removed by the next run into the same output folder; it is never taken for a
+result.
+"""
+
+from __future__ import annotations
+
+import errno
+import os
+import re
+import shutil
+import signal
+import tempfile
+import threading
+from collections.abc import Iterator, Sequence
+from contextlib import contextmanager
+from pathlib import Path
+
+from g2s_core.errors import G2SError
+
+STAGING_MARK = ".g2s-staging-"
+"""Part of every staging folder's name, followed by the writing process's id."""
+
+_STAGING_NAME = re.compile(re.escape(STAGING_MARK) + r"(\d+)-")
+
+
+def check_writable(outdir: Path) -> None:
+    """Refuse an output folder that cannot be created or written, creating nothing.
+
+    Raises:
+        G2SError: ``outdir`` or one of its parents is a file, or the nearest
+            existing folder does not let a folder be created in it (read-only,
+            no permission, ``/proc``).
+    """
+    try:
+        base = outdir
+        missing = []
+        while not os.path.lexists(base) and base != base.parent:
+            missing.append(base.name)
+            base = base.parent
+        if not base.is_dir():
+            if base == outdir:
+                raise G2SError(f"{outdir}: exists and is not a folder")
+            raise G2SError(f"{outdir}: cannot create the folder, {base} is not a folder")
+        longest = max((len(os.fsencode(name)) for name in missing), default=0)
+        if longest > os.pathconf(base, "PC_NAME_MAX"):
+            raise G2SError(f"{outdir}: cannot create the folder (a name of {longest} bytes is too long)")
+        os.rmdir(tempfile.mkdtemp(dir=base, prefix=f"{STAGING_MARK}{os.getpid()}-"))
+    except (OSError, ValueError) as exc:  # a name too long, a NUL byte, a read-only place
+        raise G2SError(f"{outdir}: cannot write results there ({getattr(exc, 'strerror', None) or exc})") from None
+
+
+@contextmanager
+def staged(outdir: Path, obsolete: Sequence[Path] = (), protect: Sequence[Path] = ()) -> Iterator[Path]:
+    """An empty folder to write a run's files into; they move to ``outdir`` when the block ends.
+
+    Args:
+        outdir: the output folder (created, with its parents, if missing).
+        obsolete: files in ``outdir`` to remove in the same step (an earlier
+            run's results of formats not written this time).
+        protect: input files; the move refuses to replace or remove them.
+
+    Raises:
+        G2SError: a file could not be written or moved (disk full, file size
+            limit, permissions), or it would replace a file of ``protect``;
+            nothing of the run is left behind.
+    """
+    outdir = Path(outdir)
+    check_writable(outdir)
+    created: list[Path] = []
+    staging = None
+    try:
+        _make_folders(outdir.parent, created)
+        inside = outdir.is_dir()
+        home = outdir if inside else outdir.parent
+        _remove_stale(home)
+        beside = "" if inside else f".{outdir.name[:64]}"  # short enough for any name limit
+        staging = Path(tempfile.mkdtemp(dir=home, prefix=f"{beside}{STAGING_MARK}{os.getpid()}-"))
+        yield staging
+        with _interrupts_held():
+            _move_into_place(staging, outdir, obsolete, protect)
+    except BaseException as exc:
+        if staging is not None:
+            shutil.rmtree(staging, ignore_errors=True)
+        for folder in reversed(created):
+            _remove_if_empty(folder)
+        storage = _storage_error(exc)
+        if storage is not None:
+            raise G2SError(f"{outdir}: cannot write results ({storage.strerror or storage}); nothing was written") from None
+        raise
+
+
+STORAGE_ERRNOS = frozenset({errno.ENOSPC, errno.EFBIG, errno.EDQUOT, errno.EROFS, errno.EIO})
+"""Failures of the storage itself (full, file size limit, read-only, I/O), whoever was writing."""
+
+
+def _storage_error(exc: BaseException) -> OSError | None:
+    """The OSError behind ``exc`` that is the environment's fault, if any.
+
+    Our own moves fail with a plain OSError; a writer plugin's failure comes
+    wrapped (as that plugin's failure) and counts only when the storage
+    itself failed, which is no fault of the plugin.
+    """
+    if isinstance(exc, OSError):
+        return exc
+    cause = exc.__cause__
+    return cause if isinstance(cause, OSError) and cause.errno in STORAGE_ERRNOS else None
+
+
+def _move_into_place(staging: Path, outdir: Path, obsolete: Sequence[Path], protect: Sequence[Path]) -> None:
+    if not outdir.exists():
+        os.rename(staging, outdir)
+        return
+    names = sorted(p.name for p in staging.iterdir())
+    for path in [outdir / name for name in names] + list(obsolete):
+        for guarded in protect:
+            if same_file(path, Path(guarded)):
+                raise G2SError(f"{outdir}: the input {guarded} has the name of a result file ({path.name})")
+    for name in names:
+        os.replace(staging / name, outdir / name)
+    for path in obsolete:
+        if path.name not in names:
+            path.unlink(missing_ok=True)
+    staging.rmdir()
+
+
+def _make_folders(folder: Path, created: list[Path]) -> None:
+    """Create ``folder`` and its missing parents, outermost first, appending each to ``created``."""
+    missing = []
+    while not folder.exists() and folder != folder.parent:
+        missing.append(folder)
+        folder = folder.parent
+    for path in reversed(missing):
+        path.mkdir()
+        created.append(path)
+
+
+def _remove_stale(home: Path) -> None:
+    """Remove staging folders in ``home`` whose process no longer runs."""
+    for path in home.iterdir():
+        match = _STAGING_NAME.search(path.name)
+        if match and path.is_dir() and not _process_alive(int(match.group(1))):
+            shutil.rmtree(path, ignore_errors=True)
+
+
+def _process_alive(pid: int) -> bool:
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except (PermissionError, OverflowError, ValueError):
+        return pid != 0
+    return True
+
+
+def _remove_if_empty(folder: Path) -> None:
+    try:
+        folder.rmdir()
+    except OSError:
+        pass
+
+
+def same_file(a: Path, b: Path) -> bool:
+    """Whether ``a`` and ``b`` both exist and are the same file."""
+    try:
+        return a.exists() and b.exists() and os.path.samefile(a, b)
+    except OSError:
+        return False
+
+
+@contextmanager
+def _interrupts_held() -> Iterator[None]:
+    """Hold Ctrl-C (SIGINT) and SIGTERM back until the block ends, then act on them."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    received: list[int] = []
+    previous = {sig: signal.signal(sig, lambda number, _frame: received.append(number)) for sig in (signal.SIGINT, signal.SIGTERM)}
+    try:
+        yield
+    finally:
+        for sig, handler in previous.items():
+            signal.signal(sig, handler)
+    if received:
+        signal.raise_signal(received[0])
