@@ -98,7 +98,7 @@ $(STAMP): pyproject.toml CMakeLists.txt $(wildcard src/*) | system-deps
 	$(PY) -m pip install -q scikit-build-core nanobind
 	@# a venv made before the rename still holds the distribution "g2s", whose entry points would register twice
 	$(PY) -m pip uninstall -y -q g2s 2>/dev/null || true
-	$(PY) -m pip install -q --no-build-isolation -e '.[dev]'
+	$(PY) -m pip install -q --no-build-isolation -e '.[dev,batch]'
 	touch $@
 
 clean:

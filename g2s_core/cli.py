@@ -1,4 +1,4 @@
-"""The ``g2s`` command line: run a config on a mesh, list plugins, run the demo.
+"""The ``g2s`` command line: run a config on a mesh, batches over many levels, list plugins, run the demo.
 
 Exit codes: 0 success; 2 bad input or config (one line on stderr, no
 traceback), or a plugin that could not be loaded, raised an exception or
@@ -9,6 +9,7 @@ error of g2s (``--verbose`` shows the traceback).
 from __future__ import annotations
 
 import argparse
+import itertools
 import json
 import sys
 import textwrap
@@ -19,13 +20,17 @@ from pathlib import Path
 from typing import Any
 
 from rich.console import Console
+from rich.progress import BarColumn, MofNCompleteColumn, TextColumn
+from rich.progress import Progress as RichProgress
 from rich.table import Table
 
 from g2s_core import api, pipeline, version
 from g2s_core.api import MeshSource
+from g2s_core.batch import EXECUTORS, INSTALL_HINT, missing_extra, run_batch
+from g2s_core.batch import Progress as BatchProgress
 from g2s_core.config import parse_assignment, presets, resolve_config
 from g2s_core.errors import G2SError, PluginFailure
-from g2s_core.mesh import SAMPLE_PREFIX
+from g2s_core.mesh import SAMPLE_PREFIX, SUPPORTED_SUFFIXES
 from g2s_core.model import RunResult
 from g2s_core.outputs import DEFAULT_FORMATS, check_outdir, parse_formats, writers
 from g2s_core.registry import Registry, installed, plugin_parameters
@@ -62,6 +67,36 @@ def _parser() -> argparse.ArgumentParser:
                      "for a level from an installed level generator (see `g2s plugins --stage levels`)")
     run.add_argument("-o", "--outdir", type=Path, required=True, help="folder for the results")
     _add_output_options(run)
+
+    batch = commands.add_parser(
+        "batch", parents=[common],
+        usage="g2s batch CONFIG [CONFIG ...] INPUT [INPUT ...] -o OUTDIR [--executor {local,dask,serial}] "
+        "[--workers N] [--scheduler ADDRESS] [--format FORMATS] [--force] [-q] [-v]",
+        help="run configs over many levels on a process pool or a Dask cluster, with a summary table",
+        description="Run every config on every level: one result folder per (config, level) pair, as `g2s run` "
+        "writes it, in OUTDIR/CONFIG/LEVEL/, and OUTDIR/summary.parquet and summary.csv with one row per pair "
+        "(see docs/batch.md). A level that fails is recorded and the batch goes on; a re-run skips the pairs "
+        f"already finished for the same config and mesh. {INSTALL_HINT}.",
+        epilog="exit codes: 0 every pair ran, 4 some pairs failed (see the summary's error column), "
+        "2 bad config or input, 130 interrupted (finished pairs are kept), 1 internal error of g2s",
+    )
+    batch.add_argument("items", nargs="+", metavar="CONFIG|INPUT",
+                       help="configs (the leading preset names and .yaml/.yml files), then levels: mesh files, folders "
+                       f"(searched recursively for {' '.join(SUPPORTED_SUFFIXES)}), glob patterns, or "
+                       f"{SAMPLE_PREFIX}NAME[?param=value&...]")
+    batch.add_argument("-o", "--outdir", type=Path, required=True, help="folder of the batch's results")
+    batch.add_argument("--executor", choices=EXECUTORS, default="local",
+                       help="local: a process pool (default); dask: a dask.distributed cluster; serial: one by one "
+                       "in this process")
+    batch.add_argument("--workers", type=int, metavar="N",
+                       help="processes of the pool or of the Dask LocalCluster (default: the CPU count)")
+    batch.add_argument("--scheduler", metavar="ADDRESS",
+                       help="with --executor dask: the scheduler to use, e.g. tcp://host:8786 "
+                       "(default: start a LocalCluster)")
+    batch.add_argument("--format", metavar="FORMATS", help="comma-separated output formats for every pair "
+                       "(default: each config's outputs.formats)")
+    batch.add_argument("--force", action="store_true", help="recompute the pairs already finished")
+    batch.add_argument("-q", "--quiet", action="store_true", help="no progress bar or totals")
 
     commands.add_parser("presets", parents=[common], help="list the preset configs and what each is for")
 
@@ -103,6 +138,8 @@ def main(argv: Sequence[str] | None = None) -> int:
             return _plugins(args)
         if args.command == "presets":
             return _presets()
+        if args.command == "batch":
+            return _batch(args, errors)
         return _demo(args, errors)
     except (G2SError, PluginFailure) as exc:  # the user, or the named plugin's authors, can fix it
         errors.print(f"g2s: error: {exc}", markup=False, highlight=False, soft_wrap=True)
@@ -134,6 +171,49 @@ def _run(args: argparse.Namespace, errors: Console) -> int:
         removed = ", ".join(f"{count} {what.replace('_', ' ')}" for what, count in mesh.cleaning.items())
         _status(args, errors, f"cleaning removed {removed}")
     return _execute(args, errors, registry, plan, mesh, formats, config_files)
+
+
+def _batch(args: argparse.Namespace, errors: Console) -> int:
+    names = presets()
+    configs = list(itertools.takewhile(
+        lambda item: Path(item).suffix.lower() in (".yaml", ".yml") or item in names, args.items))
+    inputs = args.items[len(configs):]
+    if not configs or not inputs:
+        raise G2SError("batch: expected one or more configs (preset names or .yaml files) followed by one or more levels")
+    if args.workers is not None and args.workers < 1:
+        raise G2SError(f"--workers: expected an integer >= 1, got {args.workers}")
+    if args.scheduler and args.executor != "dask":
+        raise G2SError("--scheduler: only with --executor dask")
+    with missing_extra(), _batch_progress(errors, args.quiet) as show:
+        summary = run_batch(configs, inputs, args.outdir, args.executor, workers=args.workers,
+                            scheduler=args.scheduler, formats=args.format, force=args.force, progress=show)
+    failed = summary[summary["status"] != "ok"]
+    for row in failed.itertuples():
+        errors.print(f"g2s: {row.config} on {row.level} failed: {row.error}", markup=False, highlight=False, soft_wrap=True)
+    if not args.quiet:
+        reused = int(summary["reused"].sum())
+        Console().print(f"{len(summary)} pairs: {len(summary) - len(failed)} ok ({reused} already finished), "
+                        f"{len(failed)} failed; summary in {args.outdir / 'summary.csv'} and summary.parquet",
+                        markup=False, highlight=False, soft_wrap=True)
+    return 4 if len(failed) else 0
+
+
+@contextmanager
+def _batch_progress(errors: Console, quiet: bool) -> Iterator[Callable[[BatchProgress], None]]:
+    """A progress bar on stderr (done, failed, remaining, levels per minute), when stderr is a terminal."""
+    if quiet or not errors.is_terminal:
+        yield lambda _counts: None
+        return
+    columns = (TextColumn("batch"), BarColumn(), MofNCompleteColumn(), TextColumn("{task.fields[counts]}"))
+    with RichProgress(*columns, console=errors) as bar:
+        task = bar.add_task("batch", total=None, counts="starting")
+
+        def show(counts: BatchProgress) -> None:
+            bar.update(task, total=counts.total, completed=counts.done, counts=(
+                f"failed {counts.failed}, remaining {counts.total - counts.done}, "
+                f"{counts.per_minute:.1f} levels/min"))
+
+        yield show
 
 
 def _demo(args: argparse.Namespace, errors: Console) -> int:

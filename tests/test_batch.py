@@ -1,0 +1,250 @@
+"""Batch runs: the same results as `g2s run` on every executor, failures recorded, resume, one row per pair."""
+
+from __future__ import annotations
+
+import json
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pandas as pd
+import pytest
+
+from g2s_core.batch import RECORDS, expand_inputs, run_batch
+from g2s_core.cli import main
+from g2s_core.errors import G2SError
+from g2s_plugins.samples.levels import dungeon
+from tests.conftest import PROJECT
+
+CONFIG = str(PROJECT / "configs" / "map_analysis.yaml")
+SAMPLES = ["sample:dungeon?seed=1&rooms=12", "sample:dungeon?seed=2&rooms=14"]
+TIMES = [c for c in ("seconds_load", "seconds_graph", "seconds_terminals", "seconds_steiner", "seconds_roots",
+                     "seconds_simplify", "seconds_analyzers", "seconds_write", "seconds_total")]
+
+
+@pytest.fixture(scope="module")
+def levels(tmp_path_factory) -> Path:
+    """A folder of levels: a generated dungeon as OBJ, one in a subfolder as PLY, and a broken OBJ."""
+    folder = tmp_path_factory.mktemp("levels")
+    dungeon(seed=3, rooms=15).mesh.export(folder / "three.obj")
+    (folder / "more").mkdir()
+    dungeon(seed=4, rooms=10).mesh.export(folder / "more" / "four.ply")
+    (folder / "broken.obj").write_text("v 0 0 0\nv 1 0 nan\nv 0 0 1\nf 1 2 3\n")
+    (folder / "notes.txt").write_text("not a level")
+    return folder
+
+
+def g2s(capsys, *args: str) -> tuple[int, str, str]:
+    """``g2s ARGS`` in this process (the command's own code, without a second interpreter's start-up)."""
+    capsys.readouterr()
+    code = main(list(args))
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def assert_user_error(result: tuple[int, str, str], fragment: str) -> None:
+    code, _, err = result
+    lines = [line for line in err.splitlines() if line.strip()]
+    assert code == 2 and len(lines) == 1 and lines[0].startswith("g2s: error: ") and fragment in lines[0], err
+
+
+def comparable(summary: pd.DataFrame) -> pd.DataFrame:
+    """The summary without wall times and result-folder paths, which differ between runs."""
+    return summary.drop(columns=[*TIMES, "folder"]).reset_index(drop=True)
+
+
+@pytest.fixture(scope="module")
+def serial(levels, tmp_path_factory) -> tuple[Path, pd.DataFrame]:
+    out = tmp_path_factory.mktemp("serial") / "out"
+    return out, run_batch([CONFIG], [str(levels), *SAMPLES], out, "serial", formats="json")
+
+
+def test_serial_pairs_are_what_g2s_run_writes(serial, levels, tmp_path, capsys):
+    out, summary = serial
+    assert list(summary["level"]) == ["broken", "more/four", "three", *[
+        "dungeon_seed_1_rooms_12", "dungeon_seed_2_rooms_14"]]
+    ok = summary[summary["status"] == "ok"]
+    assert len(ok) == 4
+    for row in ok.itertuples():
+        single = tmp_path / row.level.replace("/", "_")
+        code, out, err = g2s(capsys, "run", CONFIG, row.input, "-o", str(single), "--format", "json", "--json")
+        assert code == 0, err
+        assert (Path(row.folder) / "structure.json").read_bytes() == (single / "structure.json").read_bytes()
+        stages = {s["stage"]: s for s in json.loads(out)["stages"]}
+        assert row.nodes_graph == stages["graph"]["nodes"] and row.edges_graph == stages["graph"]["edges"]
+        assert row.terminals == stages["terminals"]["terminals"]
+        assert row.nodes_simplify == stages["simplify"]["nodes"]
+        assert row.betweenness_max > 0 and row.structure_length > 0 and row.openings == 0
+
+
+def test_a_broken_level_is_recorded_and_the_batch_goes_on(serial):
+    out, summary = serial
+    broken = summary.set_index("level").loc["broken"]
+    assert broken["status"] == "failed" and "broken.obj" in broken["error"] and "NaN" in broken["error"]
+    assert not (out / "map_analysis" / "broken").exists()
+    on_disk = pd.read_parquet(out / "summary.parquet")
+    pd.testing.assert_frame_equal(on_disk, summary)
+    assert len(pd.read_csv(out / "summary.csv")) == len(summary)
+
+
+@pytest.mark.parametrize("executor", ["local", "dask"])
+def test_every_executor_gives_the_serial_rows(executor, serial, levels, tmp_path):
+    summary = run_batch([CONFIG], [str(levels), *SAMPLES], tmp_path / "out", executor, workers=2, formats="json")
+    pd.testing.assert_frame_equal(comparable(summary), comparable(serial[1]))
+    for level in ("three", "more/four", "dungeon_seed_1_rooms_12"):
+        made = tmp_path / "out" / "map_analysis" / level / "structure.json"
+        assert made.read_bytes() == (serial[0] / "map_analysis" / level / "structure.json").read_bytes()
+
+
+def test_resume_skips_finished_pairs_and_force_recomputes(levels, tmp_path):
+    out = tmp_path / "out"
+    first = run_batch([CONFIG], [str(levels)], out, "serial", formats="json")
+    structure = out / "map_analysis" / "three" / "structure.json"
+    written = structure.stat().st_mtime_ns
+    again = run_batch([CONFIG], [str(levels)], out, "serial", formats="json")
+    assert list(again["reused"]) == [False, True, True]  # the broken level is tried again
+    assert structure.stat().st_mtime_ns == written
+    pd.testing.assert_frame_equal(again.drop(columns="reused"), first.drop(columns="reused"), check_exact=False,
+                                  rtol=1, atol=100)  # times of the broken level's new try differ
+    other_formats = run_batch([CONFIG], [str(levels)], out, "serial", formats="json,graphml")
+    assert not other_formats["reused"].any()
+    assert (out / "map_analysis" / "three" / "structure.graphml").is_file()
+    forced = run_batch([CONFIG], [str(levels)], out, "serial", formats="json,graphml", force=True)
+    assert not forced["reused"].any() and structure.stat().st_mtime_ns != written
+
+
+def test_a_missing_result_file_makes_the_pair_run_again(levels, tmp_path):
+    out = tmp_path / "out"
+    run_batch([CONFIG], SAMPLES[:1], out, "serial", formats="json")
+    (out / "map_analysis" / "dungeon_seed_1_rooms_12" / "structure.json").unlink()
+    again = run_batch([CONFIG], SAMPLES[:1], out, "serial", formats="json")
+    assert not again["reused"].any()
+    assert (out / "map_analysis" / "dungeon_seed_1_rooms_12" / "structure.json").is_file()
+
+
+def test_two_configs_give_one_row_per_pair(levels, tmp_path):
+    predicate = tmp_path / "never.yaml"
+    predicate.write_text(f"extends: {CONFIG}\nsimplify:\n  plugin: never\n")
+    summary = run_batch([CONFIG, predicate], [str(levels / "three.obj"), *SAMPLES], tmp_path / "out", "local",
+                        workers=2, formats="json")
+    assert list(zip(summary["config"], summary["level"])) == [
+        (config, level) for config in ("map_analysis", "never")
+        for level in ("three", "dungeon_seed_1_rooms_12", "dungeon_seed_2_rooms_14")]
+    by_config = summary.set_index(["config", "level"])
+    assert (by_config.loc["never", "nodes_simplify"].to_numpy() > by_config.loc["map_analysis", "nodes_simplify"]
+            .to_numpy()).all()
+    assert (tmp_path / "out" / "never" / "three" / "structure.json").is_file()
+
+
+def test_an_interrupted_batch_keeps_its_finished_pairs(tmp_path):
+    out = tmp_path / "out"
+
+    def stop_after_first(counts) -> None:
+        if counts.done == 1:
+            raise KeyboardInterrupt
+
+    with pytest.raises(KeyboardInterrupt):
+        run_batch([CONFIG], SAMPLES, out, "serial", formats="json", progress=stop_after_first)
+    summary = pd.read_csv(out / "summary.csv")
+    assert list(summary["level"]) == ["dungeon_seed_1_rooms_12"]
+    assert not (out / "map_analysis" / "dungeon_seed_2_rooms_14").exists()
+    resumed = run_batch([CONFIG], SAMPLES, out, "serial", formats="json")
+    assert list(resumed["reused"]) == [True, False]
+
+
+def test_inputs_files_folders_globs_and_samples(levels, tmp_path):
+    expanded = expand_inputs([str(levels / "*.obj"), str(levels / "more"), "sample:dungeon?rooms=3"])
+    assert [name for name, _ in expanded] == ["broken", "three", "four", "dungeon_rooms_3"]
+    with pytest.raises(G2SError, match="matches no files"):
+        expand_inputs([str(levels / "*.gltf")])
+    assert len(expand_inputs([str(levels / "three.obj"), str(levels / "*.obj")])) == 2  # the same file once
+    (tmp_path / "three.stl").write_text("solid empty\nendsolid empty\n")
+    with pytest.raises(G2SError, match="level name 'three' is also that of"):
+        expand_inputs([str(levels / "three.obj"), str(tmp_path / "three.stl")])
+
+
+def test_cli_batch_reports_failures_and_writes_the_summary(levels, tmp_path, capsys):
+    out = tmp_path / "out"
+    code, stdout, stderr = g2s(capsys, "batch", CONFIG, str(levels), "sample:dungeon?rooms=4", "-o", str(out),
+                               "--workers", "2", "--format", "json")
+    assert code == 4, stderr
+    lines = [line for line in stderr.splitlines() if line.strip()]
+    assert len(lines) == 1 and lines[0].startswith("g2s: map_analysis on broken failed: ") and "NaN" in lines[0]
+    assert "4 pairs: 3 ok (0 already finished), 1 failed" in stdout
+    assert (out / "summary.parquet").is_file() and (out / RECORDS).is_dir()
+
+
+def test_cli_batch_bad_input_is_one_line(levels, tmp_path, capsys):
+    assert_user_error(g2s(capsys, "batch", CONFIG, str(levels / "nothing*.obj"), "-o", str(tmp_path / "a")),
+                      "nothing*.obj: the pattern matches no files")
+    assert_user_error(g2s(capsys, "batch", CONFIG, "-o", str(tmp_path / "a")), "expected one or more configs")
+    bad = tmp_path / "bad.yaml"
+    bad.write_text("extends: map_analysis\nsimplify: {plugin: nope}\n")
+    assert_user_error(g2s(capsys, "batch", str(bad), "sample:dungeon", "-o", str(tmp_path / "a")),
+                      "bad.yaml: simplify.plugin")
+    (tmp_path / "mine").mkdir()
+    (tmp_path / "mine" / "keep.txt").write_text("mine")
+    assert_user_error(g2s(capsys, "batch", CONFIG, "sample:dungeon", "-o", str(tmp_path / "mine")),
+                      "not a g2s batch's")
+    assert (tmp_path / "mine" / "keep.txt").read_text() == "mine"
+
+
+def test_cli_batch_on_a_running_dask_scheduler(tmp_path, capsys):
+    from dask.distributed import LocalCluster
+
+    with LocalCluster(n_workers=1, threads_per_worker=1, processes=False, dashboard_address=":0") as cluster:
+        code, stdout, stderr = g2s(capsys, "batch", CONFIG, SAMPLES[0], "-o", str(tmp_path / "out"), "--format", "json",
+                                   "--executor", "dask", "--scheduler", cluster.scheduler_address)
+    assert code == 0, stderr
+    assert pd.read_csv(tmp_path / "out" / "summary.csv")["status"].tolist() == ["ok"]
+
+
+def test_cli_batch_without_the_extra_says_how_to_install_it(monkeypatch, tmp_path, capsys):
+    monkeypatch.setitem(sys.modules, "pandas", None)
+    assert_user_error(g2s(capsys, "batch", CONFIG, SAMPLES[0], "-o", str(tmp_path / "out")),
+                      "[batch]' (pandas, pyarrow, dask.distributed")
+    assert not (tmp_path / "out").exists()
+
+
+@pytest.mark.parametrize("executor", ["local", "dask"])
+def test_ctrl_c_stops_cleanly_and_keeps_the_finished_pairs(executor, tmp_path):
+    """Ctrl-C at a terminal interrupts the whole process group: g2s and its workers."""
+    out = tmp_path / "out"
+    records = out / RECORDS / "map_analysis"
+    levels = [f"sample:dungeon?seed={seed}&rooms=60" for seed in range(30)]
+    proc = subprocess.Popen(
+        [sys.executable, "-m", "g2s_core.cli", "batch", CONFIG, *levels, "-o", str(out), "--format", "json",
+         "--executor", executor, "--workers", "2"],
+        cwd=PROJECT, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, start_new_session=True,
+        preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL),  # as from a terminal, not a background job
+    )
+    deadline = time.monotonic() + 120
+    while len(list(records.glob("*.json"))) < 2 and proc.poll() is None and time.monotonic() < deadline:
+        time.sleep(0.1)
+    os.killpg(proc.pid, signal.SIGINT)
+    _, stderr = proc.communicate(timeout=120)
+    assert proc.returncode == 130 and stderr.strip() == "g2s: interrupted", stderr
+    finished = sorted(p.stem for p in records.glob("*.json"))
+    assert 2 <= len(finished) < len(levels)
+    assert sorted(pd.read_csv(out / "summary.csv")["level"]) == finished
+    folders = sorted(p.name for p in (out / "map_analysis").iterdir())
+    # the pool lets its running pairs finish; Dask drops them with their workers (a re-run recomputes them)
+    assert folders == finished if executor == "local" else set(finished) <= set(folders)
+    resumed = run_batch([CONFIG], levels[:3], out, "serial", formats="json")
+    assert list(resumed["reused"]) == [f"dungeon_seed_{seed}_rooms_60" in finished for seed in range(3)]
+
+
+def test_chokepoints_and_regions_are_summed_up(tmp_path):
+    summary = run_batch(["level_regions"], ["sample:dungeon?seed=1&rooms=30"], tmp_path / "out", "serial",
+                        formats="json")
+    row = summary.iloc[0]
+    assert row["status"] == "ok" and row["config"] == "level_regions"
+    features = json.loads((Path(row["folder"]) / "structure.json").read_text())["features"]
+    chokepoints, regions = features["chokepoints"]["chokepoints"], features["regions"]["regions"]
+    assert row["chokepoints_count"] == len(chokepoints) > 0 and row["regions_count"] == len(regions) > 1
+    assert row["chokepoints_top_score"] == pytest.approx(max(c["score"] for c in chokepoints))
+    assert row["chokepoints_top_score"] == pytest.approx(row["chokepoints_max"])  # the score near its nodes
+    assert row["regions_largest_area"] == pytest.approx(max(r["area"] for r in regions))
