@@ -17,6 +17,9 @@ Edge attributes:
 Rooted forests (stage 4 and 5) are :class:`networkx.DiGraph` with edges
 parent -> child, the node attributes above plus ``depth`` (root = 0) and
 ``root`` (id of the node's root); ``forest.graph["roots"]`` lists the roots.
+With ``loops:`` configured the structure may have cycles: the rooted trees
+are spanning trees and the other edges carry ``loop=True`` (see
+:mod:`g2s_core.rooted`).
 """
 
 from __future__ import annotations
@@ -134,10 +137,14 @@ class Terminals:
         nodes: terminal node ids, in a deterministic order. Nodes the selector
             added to the graph are included.
         openings: the entry/exit openings the terminals stand for, if any.
+        waypoints: those of ``nodes`` that only pull the structure into an
+            area (e.g. coverage): the Steiner tree joins them, but unlike the
+            other terminals simplification may remove them.
     """
 
     nodes: tuple[int, ...]
     openings: tuple[Opening, ...] = ()
+    waypoints: tuple[int, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -194,7 +201,11 @@ class RunContext:
 
 @dataclass
 class RunResult:
-    """Everything a run produced, stage by stage; stages not run are ``None``."""
+    """Everything a run produced, stage by stage; stages not run are ``None``.
+
+    ``looped`` is the Steiner forest plus the loop paths of the ``loops:``
+    step (``None`` when it is not configured); it is what steps 4 and 5 work on.
+    """
 
     config: dict[str, Any]
     mesh_name: str
@@ -203,6 +214,7 @@ class RunResult:
     graph: nx.Graph | None = None
     terminals: Terminals | None = None
     steiner: nx.Graph | None = None
+    looped: nx.Graph | None = None
     forest: nx.DiGraph | None = None
     structure: nx.DiGraph | None = None
     analysis: dict[str, dict[int, float]] = field(default_factory=dict)

@@ -2,9 +2,10 @@
 
 from __future__ import annotations
 
+import math
 import time
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any
 
 import networkx as nx
@@ -16,6 +17,7 @@ from g2s_core.disconnected import disconnected_warning
 from g2s_core.errors import ConfigError, G2SError
 from g2s_core.model import AnalyzerResult, RunContext, RunResult, StageStats
 from g2s_core.plugin import PluginParams
+from g2s_core.loops import add_loops
 from g2s_core.registry import PluginInfo, Registry
 from g2s_core.rooted import root_forest
 from g2s_core.simplify import simplify_forest
@@ -103,15 +105,18 @@ def run(
     say = progress or (lambda _message: None)
     bounds = np.asarray(mesh.bounds, dtype=np.float64)
     context = RunContext(mesh=mesh, agent=config.agent, centre=bounds.mean(axis=0))
-    result = RunResult(config=config.model_dump(mode="json"), mesh_name=mesh_name, mesh_sha256=mesh_sha256, context=context)
+    result = RunResult(config=config.record(), mesh_name=mesh_name, mesh_sha256=mesh_sha256, context=context)
     for stage in PIPELINE:
         if stage.key not in plan_.stages:
             break
         say(f"{stage.step}: {stage.label}")
         record: dict[str, Any] = {}
         start = time.perf_counter()
-        go_on = _STEPS[stage.key](Step(registry, plan_.stages[stage.key], result, record))
-        result.stages.append(StageStats(stage.timing, time.perf_counter() - start, **record))
+        step = Step(registry, plan_.stages[stage.key], result, record, config)
+        go_on = _STEPS[stage.key](step)
+        seconds = time.perf_counter() - start - sum(s.seconds for s in step.followers)
+        result.stages.append(StageStats(stage.timing, seconds, **record))
+        result.stages.extend(step.followers)
         if not go_on:
             break
     return result
@@ -126,6 +131,9 @@ class Step:
     planned: tuple[ResolvedStage, ...]
     result: RunResult
     record: dict[str, Any]
+    config: RunConfig
+    followers: list[StageStats] = field(default_factory=list)
+    """Stats of work done right after the stage (the ``loops:`` step), listed after its own."""
 
     def call(self, **kwargs: Any) -> Any:
         """The stage's single plugin, called with its parameters and the run's context."""
@@ -148,7 +156,7 @@ def _terminals_step(step: Step) -> bool:
     terminals = step.call(graph=graph)
     step.record.update(terminals=len(terminals.nodes))
     result.terminals = terminals
-    for node in terminals.nodes:
+    for node in set(terminals.nodes).difference(terminals.waypoints):
         graph.nodes[node]["terminal"] = True
     if not terminals.nodes:
         result.context.warn(
@@ -164,12 +172,21 @@ def _steiner_step(step: Step) -> bool:
         graph=sub, terminals=terms), result.context)
     step.record.update(nodes=steiner.number_of_nodes(), edges=steiner.number_of_edges())
     result.steiner = steiner
+    if step.config.loops is not None:
+        start = time.perf_counter()
+        looped = add_loops(result.graph, steiner, step.config.loops.stretch, step.config.loops.min_gain)
+        step.followers.append(StageStats("loops", time.perf_counter() - start, looped.number_of_nodes(), looped.number_of_edges()))
+        result.looped = looped
     return True
 
 
 def _roots_step(step: Step) -> bool:
     result = step.result
-    result.forest = root_forest(result.steiner, step.call(tree=result.steiner), result.context.centre)
+    # the root selector scores the Steiner tree itself (its measures are O(n) on a
+    # tree, not on a tree with loops); nodes the loops added are never roots
+    structure = result.looped if result.looped is not None else result.steiner
+    scores = {**dict.fromkeys(structure, -math.inf), **step.call(tree=result.steiner)}
+    result.forest = root_forest(structure, scores, result.context.centre)
     return True
 
 

@@ -6,7 +6,14 @@ ascending id order so that the result is deterministic. The paper selects a
 root among the *unvisited* nodes repeatedly; since a traversal visits a whole
 component, that is one root per component, which is what is done here.
 
-Complexity: O(n log n) for n nodes (ranking the nodes and sorting neighbours).
+A structure with loops (see :mod:`g2s_core.loops`) is rooted the same way:
+the depth-first traversal gives a rooted spanning tree of each component,
+and every other edge is kept as a *loop edge* (``loop=True``), directed from
+its shallower end to its deeper one (equal depths: lower id first). Tree
+edges carry no ``loop`` attribute, so a forest is rooted exactly as before.
+
+Complexity: O((n + m) log n) for n nodes and m edges (ranking the nodes and
+sorting neighbours).
 """
 
 from __future__ import annotations
@@ -40,14 +47,16 @@ def root_forest(forest: nx.Graph, scores: Mapping[int, float], centre: np.ndarra
     """Orient every tree of ``forest`` away from its chosen root.
 
     Args:
-        forest: an undirected acyclic graph whose nodes carry ``pos``.
+        forest: an undirected graph whose nodes carry ``pos`` (a forest,
+            or a forest plus loop paths).
         scores: the RootSelector's score of every node (higher = better root).
         centre: (3,) geometric centre used to break ties, metres.
 
     Returns:
-        A DiGraph with edges parent -> child (edge attributes kept), node
-        attributes copied plus ``depth`` and ``root``; ``graph["roots"]``
-        lists the roots in component order (by smallest node id).
+        A DiGraph with edges parent -> child (edge attributes kept) plus the
+        loop edges (``loop=True``), node attributes copied plus ``depth`` and
+        ``root``; ``graph["roots"]`` lists the roots in component order (by
+        smallest node id).
     """
     rank = root_ranks(forest, scores, centre)
     components = sorted((min(c), c) for c in nx.connected_components(forest))
@@ -60,4 +69,27 @@ def root_forest(forest: nx.Graph, scores: Mapping[int, float], centre: np.ndarra
             depth[child] = depth[parent] + 1
             rooted.add_node(child, **forest.nodes[child], depth=depth[child], root=root)
             rooted.add_edge(parent, child, **forest.edges[parent, child])
+    loop_edges = [(u, v) for u, v in forest.edges if not rooted.has_edge(u, v) and not rooted.has_edge(v, u)]
+    for u, v in sorted(loop_edges, key=lambda e: sorted(e)):
+        first, second = sorted((u, v), key=lambda node: (rooted.nodes[node]["depth"], node))
+        rooted.add_edge(first, second, **forest.edges[u, v], loop=True)
     return rooted
+
+
+def tree_children(forest: nx.DiGraph, node: int) -> list[int]:
+    """The children of ``node`` in its rooted tree (loop edges left out), by ascending id."""
+    return sorted(child for child in forest.successors(node) if not forest.edges[node, child].get("loop", False))
+
+
+def tree_parent(forest: nx.DiGraph, node: int) -> int | None:
+    """The parent of ``node`` in its rooted tree (``None`` for a root)."""
+    edges = forest.edges
+    return next((p for p in forest.predecessors(node) if not edges[p, node].get("loop", False)), None)
+
+
+def on_loop_edge(forest: nx.DiGraph, node: int) -> bool:
+    """Whether ``node`` is an end of a loop edge."""
+    edges = forest.edges
+    return any(edges[node, c].get("loop", False) for c in forest.successors(node)) or any(
+        edges[p, node].get("loop", False) for p in forest.predecessors(node)
+    )

@@ -13,6 +13,11 @@ points the structure exists to join. In the paper's two use cases terminals
 are leaves of the tree, which Algorithm 4 never removes anyway; a selector
 that picks inner nodes (e.g. by centrality) relies on this rule.
 
+On a structure with loops (:mod:`g2s_core.rooted`) only tree edges are
+followed, and a node at the end of a loop edge is never removed, so every
+loop survives simplification (its other nodes may still be dropped: A -> C
+replaces A -> B -> C inside the loop).
+
 Complexity: O(n + k) predicate calls, k = number of removals, each call
 plus the predicate's own cost.
 """
@@ -24,6 +29,8 @@ from collections.abc import Callable
 
 import networkx as nx
 import numpy as np
+
+from g2s_core.rooted import on_loop_edge, tree_children
 
 Predicate = Callable[[nx.DiGraph, int, int, int], bool]
 
@@ -39,8 +46,12 @@ def simplify_forest(forest: nx.DiGraph, predicate: Predicate) -> nx.DiGraph:
         _simplify_from(tree, root, predicate)
     for root in tree.graph["roots"]:
         tree.nodes[root]["depth"] = 0
-        for parent, child in nx.dfs_edges(tree, root):
-            tree.nodes[child]["depth"] = tree.nodes[parent]["depth"] + 1
+        pending = [root]
+        while pending:
+            parent = pending.pop()
+            for child in tree_children(tree, parent):
+                tree.nodes[child]["depth"] = tree.nodes[parent]["depth"] + 1
+                pending.append(child)
     return tree
 
 
@@ -48,12 +59,18 @@ def _simplify_from(tree: nx.DiGraph, root: int, predicate: Predicate) -> None:
     pending = [root]
     while pending:
         a = pending.pop()
-        queue = deque(sorted(tree.successors(a)))
+        queue = deque(tree_children(tree, a))
         kept: list[int] = []
         while queue:
             b = queue.popleft()
-            grandchildren = sorted(tree.successors(b))
-            removable = grandchildren and not tree.nodes[b].get("terminal", False)
+            grandchildren = tree_children(tree, b)
+            removable = (
+                grandchildren
+                and not tree.nodes[b].get("terminal", False)
+                and not on_loop_edge(tree, b)
+                # a loop edge a - c would be merged with a -> c: the loop a, b, c would vanish
+                and not any(tree.has_edge(c, a) or tree.has_edge(a, c) for c in grandchildren)
+            )
             if removable and all(predicate(tree, a, b, c) for c in grandchildren):
                 tree.remove_node(b)
                 for c in grandchildren:

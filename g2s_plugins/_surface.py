@@ -19,7 +19,6 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Sequence
-from typing import Any
 
 import networkx as nx
 import numpy as np
@@ -44,13 +43,22 @@ structures must never exceed.
 
 
 class CollapseParams(PluginParams):
-    """Algorithm 5's tolerances, the same for both line-of-sight predicates."""
+    """Algorithm 5's tolerances, the same for both line-of-sight predicates.
+
+    ``max_surface_gap: null`` with ``whole_chain_normals: false`` is the
+    paper's Algorithm 5 exactly (configs/map_analysis_paper.yaml).
+    """
 
     normal_tolerance_deg: float = Field(
         10.0, ge=0, le=180, description="largest angle between the normals of A, B and C that still lets B go, degrees"
     )
-    max_surface_gap: float = Field(
-        MAX_SURFACE_GAP, gt=0, description="largest height between the segment A -> C and the walkable surface, m"
+    whole_chain_normals: bool = Field(
+        True, description="compare the normals of A, B and C pairwise; false: A and B only, as the paper does"
+    )
+    max_surface_gap: float | None = Field(
+        MAX_SURFACE_GAP,
+        gt=0,
+        description="largest height between the segment A -> C and the walkable surface, m; null: no such check (the paper)",
     )
     probe_step: float | None = Field(
         None, gt=0, le=100, description="surface probes along A -> C at most this far apart, m; default agent radius / 2"
@@ -110,7 +118,9 @@ def edge_surface_gaps(structure: nx.Graph, navmesh: NavMesh, agent: AgentConfig,
     return dict(zip(edges, gaps.tolist()))
 
 
-def collapse_rule(tolerance_deg: float, line_of_sight: LineOfSight) -> Callable[[nx.DiGraph, int, int, int], bool]:
+def collapse_rule(
+    tolerance_deg: float, line_of_sight: LineOfSight, whole_chain: bool = True
+) -> Callable[[nx.DiGraph, int, int, int], bool]:
     """``P(tree, A, B, C)`` of the paper's Algorithm 5: True when B may be removed.
 
     B is kept (False) when
@@ -118,8 +128,9 @@ def collapse_rule(tolerance_deg: float, line_of_sight: LineOfSight) -> Callable[
     1. C is a leaf not on the walkable surface (``on_navmesh`` false): a line
        of sight to a point off the surface means nothing;
     2. the normals of the chain bend by more than ``tolerance_deg``
-       (:func:`chain_bend_deg`: the paper compares A and B only, which lets a
-       collapse cut across a change of slope at C);
+       (:func:`chain_bend_deg`; with ``whole_chain`` false the normals of A and
+       B only, as the paper does, which lets a collapse cut across a change of
+       slope at C);
     3. ``line_of_sight(A.pos, C.pos)`` is false: the straight segment is not
        walkable on the surface (each predicate's test, which also rejects a
        segment straying from the surface by more than its gap tolerance).
@@ -134,7 +145,9 @@ def collapse_rule(tolerance_deg: float, line_of_sight: LineOfSight) -> Callable[
         node_c = tree.nodes[c]
         if tree.out_degree(c) == 0 and not node_c.get("on_navmesh", False):
             return False
-        if chain_bend_deg(tree, a, b, c) > tolerance_deg:
+        nodes = tree.nodes
+        bend = chain_bend_deg(tree, a, b, c) if whole_chain else normals_angle_deg(nodes[a]["normal"], nodes[b]["normal"])
+        if bend > tolerance_deg:
             return False
         start = tuple(float(v) for v in tree.nodes[a]["pos"])
         end = tuple(float(v) for v in node_c["pos"])

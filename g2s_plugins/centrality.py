@@ -35,7 +35,7 @@ for the whole graph and is scaled to unit norm over the whole graph.
 
 from __future__ import annotations
 
-from collections.abc import Hashable
+from collections.abc import Hashable, Mapping
 from dataclasses import dataclass
 from typing import Literal
 
@@ -48,11 +48,15 @@ from scipy.sparse.linalg import ArpackNoConvergence, eigsh, spsolve
 
 from g2s_core.errors import G2SError
 from g2s_core.ties import rank_key
+from g2s_plugins import traffic
 
 Metric = Literal["degree", "betweenness", "closeness", "eigenvector", "katz"]
 """The metric names accepted by :func:`compute`."""
 
 METRICS: tuple[str, ...] = ("degree", "betweenness", "closeness", "eigenvector", "katz")
+
+WEIGHTED_PAIRS_EXACT = 256
+"""Node-weighted betweenness on a graph with cycles is exact up to this many nodes, sampled above."""
 
 _DENSE_EIGEN_LIMIT = 256
 """Components up to this size use a dense symmetric eigen-solver."""
@@ -182,7 +186,8 @@ class _Rooted:
     component_size: np.ndarray
 
 
-def _rooted(arrays: _Arrays, count: int, labels: np.ndarray) -> _Rooted:
+def _rooted(arrays: _Arrays, count: int, labels: np.ndarray, weights: np.ndarray | None = None) -> _Rooted:
+    """``size`` sums ``weights`` (default 1 per node) over each subtree."""
     n = arrays.n
     # One breadth-first traversal from a virtual node n joined to the first node
     # of every component visits the whole forest in a single library call.
@@ -195,12 +200,12 @@ def _rooted(arrays: _Arrays, count: int, labels: np.ndarray) -> _Rooted:
     parent_array[parent_array == n] = -1
     order = order_array[1:].tolist()
     parent = parent_array.tolist()
-    size = [1] * n
+    size = [1] * n if weights is None else weights.tolist()
     for node in reversed(order):  # children before parents
         p = parent[node]
         if p >= 0:
             size[p] += size[node]
-    component_size = np.bincount(labels, minlength=count)[labels]
+    component_size = np.bincount(labels, weights=weights, minlength=count)[labels]
     return _Rooted(order, parent, size, component_size)
 
 
@@ -214,11 +219,13 @@ def _require_forest(arrays: _Arrays) -> tuple[int, np.ndarray]:
     return count, labels
 
 
-def _tree_betweenness(arrays: _Arrays, count: int, labels: np.ndarray, normalized: bool) -> np.ndarray:
+def _tree_betweenness(
+    arrays: _Arrays, count: int, labels: np.ndarray, normalized: bool, node_weight: np.ndarray | None = None
+) -> np.ndarray:
     n = arrays.n
     if n == 0:
         return np.zeros(0)
-    rooted = _rooted(arrays, count, labels)
+    rooted = _rooted(arrays, count, labels, node_weight)
     size = np.asarray(rooted.size, dtype=np.float64)
     parent = np.asarray(rooted.parent, dtype=np.int64)
     has_parent = parent >= 0
@@ -226,10 +233,20 @@ def _tree_betweenness(arrays: _Arrays, count: int, labels: np.ndarray, normalize
     child_squares = np.bincount(parent[has_parent], weights=size[has_parent] ** 2, minlength=n)
     total = rooted.component_size.astype(np.float64)
     above = total - size  # the branch through the parent (0 at a tree's first node)
-    values = ((total - 1.0) ** 2 - child_squares - above**2) / 2.0
-    if normalized and n > 2:
+    own = 1.0 if node_weight is None else node_weight
+    values = ((total - own) ** 2 - child_squares - above**2) / 2.0
+    if node_weight is not None:
+        if normalized:
+            values /= _pair_weight(node_weight)
+    elif normalized and n > 2:
         values /= (n - 1) * (n - 2) / 2.0
     return values
+
+
+def _pair_weight(node_weight: np.ndarray) -> float:
+    """Total weight of the unordered node pairs, sum_{s<t} w_s w_t (1 when there is none)."""
+    total = (node_weight.sum() ** 2 - (node_weight**2).sum()) / 2.0
+    return float(total) if total > 0 else 1.0
 
 
 def tree_betweenness(tree: nx.Graph, normalized: bool = True) -> dict[Hashable, float]:
@@ -363,17 +380,36 @@ def _graph_betweenness(arrays: _Arrays, weighted: bool, normalized: bool) -> np.
     return values
 
 
-def betweenness(graph: nx.Graph, weighted: bool = False, normalized: bool = True) -> dict[Hashable, float]:
+def betweenness(
+    graph: nx.Graph,
+    weighted: bool = False,
+    normalized: bool = True,
+    node_weight: Mapping[Hashable, float] | None = None,
+) -> dict[Hashable, float]:
     """Betweenness centrality: the O(n) tree formula on a forest, Brandes otherwise.
 
     See :func:`tree_betweenness` and :func:`graph_betweenness`; on a forest
     ``weighted`` makes no difference.
+
+    With ``node_weight`` (e.g. the area each node stands for) the pair (s, t)
+    counts w_s w_t instead of 1: on a forest the subtree formula with
+    weighted branch sizes, ``((W - w_v)^2 - sum W_i^2) / 2``, O(n); on a
+    graph with cycles, shortest-path trees from every node
+    (:func:`g2s_plugins.traffic.od_flow`; equal-length paths are not split),
+    exact up to :data:`WEIGHTED_PAIRS_EXACT` nodes and from that many
+    weight-sampled sources above (error bound in :mod:`g2s_plugins.traffic`).
+    Normalised by the total pair weight ``sum_{s<t} w_s w_t``.
     """
     arrays = _arrays(graph, weighted=weighted)
     count, labels = arrays.components()
+    weights = None if node_weight is None else np.array([node_weight[node] for node in arrays.nodes], dtype=np.float64)
     if arrays.is_forest(count):
-        return arrays.dict(_tree_betweenness(arrays, count, labels, normalized))
-    return arrays.dict(_graph_betweenness(arrays, weighted, normalized))
+        return arrays.dict(_tree_betweenness(arrays, count, labels, normalized, weights))
+    if weights is None:
+        return arrays.dict(_graph_betweenness(arrays, weighted, normalized))
+    flow, _ = traffic.od_flow(arrays.adjacency(), weights, max_sources=WEIGHTED_PAIRS_EXACT)
+    values = flow / 2.0  # od_flow counts ordered pairs
+    return arrays.dict(values / _pair_weight(weights) if normalized else values)
 
 
 def closeness(graph: nx.Graph, weighted: bool = False) -> dict[Hashable, float]:

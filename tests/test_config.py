@@ -53,7 +53,7 @@ def test_extends_merges_mappings_and_replaces_lists(tmp_path):
 
 def test_extends_finds_presets_by_name(tmp_path):
     config = load_config(write(tmp_path, "c.yaml", "extends: map_analysis\nagent: {radius: 0.6}\n"))
-    assert config.terminals.plugin == "leaves" and config.agent.radius == 0.6
+    assert config.terminals.plugin == "coverage" and config.agent.radius == 0.6
     assert (PRESETS_DIR / "map_analysis.yaml").is_file()
 
 

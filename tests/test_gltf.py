@@ -75,7 +75,7 @@ def test_scene_groups_colours_and_extras(tmp_path):
     structure = result.structure
     roots = structure.graph["roots"]
     assert _children(header, "level") == ["level_mesh"]
-    assert _children(header, "navmesh") == [] and _children(header, "loops") == []  # no navmesh, no loops yet
+    assert _children(header, "navmesh") == [] and _children(header, "loops") == []  # no navmesh; a tree has no loops
     assert _children(header, "regions") == [] and _children(header, "chokepoints") == []  # their analyzers did not run
     assert sorted(_children(header, "roots")) == sorted(f"root_{r}" for r in roots)
     assert sorted(_children(header, "terminals")) == sorted(f"terminal_{t}" for t in result.terminals.nodes)
@@ -221,7 +221,7 @@ def test_demo_glb_passes_the_khronos_validator(tmp_path):
     assert_khronos_valid(out / "structure.glb")
     header, _ = read_glb(out / "structure.glb")
     assert [header["nodes"][i]["name"] for i in header["scenes"][0]["nodes"]] == list(gltf.GROUPS)
-    for group in ("level", "navmesh", "structure", "roots", "terminals"):
+    for group in ("level", "navmesh", "structure", "roots", "terminals", "loops"):  # the demo keeps loops
         assert _children(header, group), f"the demo's {group} group is empty"
 
 

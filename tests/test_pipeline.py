@@ -21,7 +21,7 @@ def registry() -> Registry:
     return Registry.from_entry_points()
 
 
-def run(registry: Registry, mesh, preset: str = "map_analysis", **overrides):
+def run(registry: Registry, mesh, preset: str = "map_analysis_paper", **overrides):
     raw = load_raw_config(PRESETS_DIR / f"{preset}.yaml")
     raw.update(overrides)
     plan = pipeline.plan(parse_config(raw), registry)
@@ -101,7 +101,7 @@ def test_a_stage_whose_plugin_is_missing_is_an_error_before_any_work(registry):
 
 
 def test_map_analysis_on_the_real_level(registry, shared_data):
-    config = load_config(PRESETS_DIR / "map_analysis.yaml")
+    config = load_config(PRESETS_DIR / "map_analysis_paper.yaml")
     config = config.model_copy(update={"agent": config.agent.model_copy(update={"radius": 0.6, "max_climb": 0.9})})
     mesh, info = load_mesh(shared_data / "nav_test.obj")
     result = pipeline.run(pipeline.plan(config, registry), registry, mesh, info.name, info.sha256)

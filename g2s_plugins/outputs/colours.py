@@ -13,6 +13,9 @@
   already mean roots and terminals), given so that regions joined by a
   chokepoint differ (:func:`region_colours`); chokepoints are near-black and
   have their own marker shape.
+* Loop edges (a structure with loops) are near-black too but dotted in the
+  PNG and the report, and in the glTF run along paths in their own ``loops``
+  group, where a chokepoint is a short bar across a portal.
 
 Colours are 8-bit RGB tuples.
 """
@@ -46,6 +49,8 @@ NAVMESH_COLOUR: RGB = (60, 200, 90)
 NAVMESH_ALPHA = 0.35
 GRAPH_COLOUR: RGB = (90, 90, 90)
 STEINER_COLOUR: RGB = (150, 60, 200)
+LOOP_COLOUR: RGB = (25, 25, 25)
+"""Loop edges (a structure with loops, see g2s_core.loops): near-black, dotted where the format allows."""
 CHOKEPOINT_COLOUR: RGB = (20, 20, 20)
 
 REGION_COLOURS: tuple[RGB, ...] = (

@@ -12,7 +12,7 @@ import numpy as np
 from g2s_core.model import RunResult
 from g2s_core.summary import final_graph, roots_of, stage_rows
 
-__all__ = ["agent_value", "edge_list", "final_graph", "floors", "number", "positions", "roots_of", "stage_rows",
+__all__ = ["agent_value", "edge_list", "final_graph", "floors", "is_loop_edge", "number", "positions", "roots_of", "stage_rows",
            "terminal_ids", "vector"]
 
 FLOAT_DIGITS = 9
@@ -61,6 +61,11 @@ def edge_list(graph: nx.Graph) -> list[tuple[int, int]]:
     if graph.is_directed():
         return sorted((int(u), int(v)) for u, v in graph.edges)
     return sorted(tuple(sorted((int(u), int(v)))) for u, v in graph.edges)  # type: ignore[misc]
+
+
+def is_loop_edge(graph: nx.Graph, u: int, v: int) -> bool:
+    """Whether (u, v) is a loop edge of a rooted structure with loops (see :mod:`g2s_core.rooted`)."""
+    return bool(graph.edges[u, v].get("loop", False))
 
 
 def floors(heights: Sequence[float], gap: float) -> list[np.ndarray]:

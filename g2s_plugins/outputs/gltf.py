@@ -36,7 +36,9 @@ viewers' outliners find them), each holding its objects:
     chokepoint's position; extras its record (``width``, ``score``,
     ``traffic``, ``regions``, ``articulation``, ``portal`` ...).
 ``loops``
-    The structure's loop edges once the analysis adds them; empty for now.
+    The loop edges of a structure with loops (config ``loops:``, see
+    :mod:`g2s_core.loops`): near-black tubes, mesh ``loop_edges`` whose extras
+    list its ``edges``; empty for a tree.
 
 Groups of analyzers that did not run are empty.
 *r* is the agent radius. The ``structure``, ``roots``, ``terminals``,
@@ -66,6 +68,7 @@ from g2s_plugins.outputs.common import (
     edge_list,
     feature_records,
     final_graph,
+    is_loop_edge,
     number,
     roots_of,
     terminal_ids,
@@ -112,10 +115,15 @@ def build_scene(result: RunResult) -> trimesh.Scene:
     keys = list(result.analysis)
     heat = _heat_levels(graph, result.analysis[keys[0]]) if keys else {}
     colour_by = keys[0] if keys else ("depth" if graph.is_directed() else "none")
-    for name, (rgb, edges) in _edge_classes(graph, heat).items():
+    loops = [e for e in edge_list(graph) if graph.is_directed() and is_loop_edge(graph, *e)]
+    for name, (rgb, edges) in _edge_classes(graph, heat, set(loops)).items():
         tubes = _tubes(graph, edges, TUBE_RADIUS * radius)
         tubes.visual = _material(name, rgb)
         _place(scene, "structure", name, tubes, np.zeros(3), {"edges": [list(e) for e in edges], "colour_by": colour_by})
+    if loops:
+        tubes = _tubes(graph, loops, TUBE_RADIUS * radius)
+        tubes.visual = _material("loop_edges", colours.LOOP_COLOUR)
+        _place(scene, "loops", "loop_edges", tubes, np.zeros(3), {"edges": [list(e) for e in loops]})
     _add_markers(scene, result, graph, heat, radius)
     return scene
 
@@ -255,10 +263,14 @@ def _heat_levels(graph: nx.Graph, values: dict[int, float]) -> dict[int, int]:
     return {n: int(round(x * (HEAT_LEVELS - 1))) for n, x in zip(nodes, t)}
 
 
-def _edge_classes(graph: nx.Graph, heat: dict[int, int]) -> dict[str, tuple[colours.RGB, list[tuple[int, int]]]]:
-    """Mesh name -> (colour, edges) of the structure's edges, by the child's value step, depth, or all grey."""
+def _edge_classes(
+    graph: nx.Graph, heat: dict[int, int], loops: set[tuple[int, int]]
+) -> dict[str, tuple[colours.RGB, list[tuple[int, int]]]]:
+    """Mesh name -> (colour, edges) of the structure's edges but ``loops``, by the child's value step, depth, or all grey."""
     classes: dict[str, tuple[colours.RGB, list[tuple[int, int]]]] = {}
     for edge in edge_list(graph):
+        if edge in loops:
+            continue
         child = edge[1]
         if heat:
             name, rgb = f"edges_value_{heat[child]:02d}", colours.heat_colour(heat[child] / (HEAT_LEVELS - 1))

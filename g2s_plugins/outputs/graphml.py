@@ -19,6 +19,7 @@ from typing import Any
 import networkx as nx
 import numpy as np
 
+from g2s_core.rooted import tree_parent
 from g2s_core.model import RunResult
 from g2s_plugins.outputs.common import edge_list, final_graph, number, roots_of, terminal_ids
 from g2s_plugins.outputs.files import atomic_write
@@ -61,9 +62,9 @@ def _flat_graph(graph: nx.Graph, terminals: set[int], analysis: dict[str, dict[i
         attrs = flatten({k: v for k, v in graph.nodes[node].items() if k != "values"})  # written as value_<key>
         attrs["terminal"] = int(node) in terminals or bool(graph.nodes[node].get("terminal", False))
         if graph.is_directed():
-            parents = list(graph.predecessors(node))
-            if parents:
-                attrs["parent"] = int(parents[0])
+            parent = tree_parent(graph, node)
+            if parent is not None:
+                attrs["parent"] = int(parent)
         for key, values in analysis.items():
             if node in values and number(values[node]) is not None:
                 attrs[f"value_{key}"] = number(values[node])

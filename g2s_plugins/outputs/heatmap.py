@@ -8,7 +8,9 @@ Edges are grey lines, nodes are dots on viridis (dark purple lowest, yellow
 highest), roots are ringed in black, terminals are vermilion squares and
 openings vermilion bars. Without analysis values nodes and edges take their
 tree-depth colour (an edge its child's: red = depth 1, yellow = 2 ...) and,
-before step 4, one grey. A legend under the panels names the markers drawn.
+before step 4, one grey. Loop edges (a structure with loops, config
+``loops:``) are near-black dotted lines. A legend under the panels names the
+markers drawn.
 
 Floors: node heights (Y) are sorted and split wherever two neighbours differ
 by more than the agent height; each floor gets its own panel (lowest first),
@@ -50,6 +52,7 @@ from g2s_plugins.outputs.common import (
     feature_records,
     final_graph,
     floors,
+    is_loop_edge,
     roots_of,
     terminal_ids,
     triangle_regions,
@@ -190,10 +193,14 @@ def _panel(ax, graph: nx.Graph, group: list[int], floor_of: dict[int, int], inde
     dashed: list = []
     solid_colours: list = []
     dashed_colours: list = []
+    loops: list = []
     for u, v in edge_list(graph):
         if u not in members and v not in members:
             continue
         segment = [(graph.nodes[u]["pos"][0], graph.nodes[u]["pos"][2]), (graph.nodes[v]["pos"][0], graph.nodes[v]["pos"][2])]
+        if graph.is_directed() and is_loop_edge(graph, u, v):
+            loops.append(segment)
+            continue
         colour = colours.unit(colours.depth_colour(int(graph.nodes[v].get("depth", 1)))) if by_depth else (0.47, 0.47, 0.47, 1.0)
         if floor_of[u] == floor_of[v]:
             solid.append(segment)
@@ -205,6 +212,9 @@ def _panel(ax, graph: nx.Graph, group: list[int], floor_of: dict[int, int], inde
         ax.add_collection(LineCollection(solid, colors=solid_colours, linewidths=2.0 if by_depth else 1.2, zorder=1))
     if dashed:
         ax.add_collection(LineCollection(dashed, colors=dashed_colours, linewidths=1.0, linestyles="dashed", zorder=1))
+    if loops:
+        ax.add_collection(LineCollection(loops, colors=[colours.unit(colours.LOOP_COLOUR)], linewidths=1.6,
+                                         linestyles="dotted", zorder=1))
     p = np.asarray([graph.nodes[n]["pos"] for n in group], dtype=np.float64).reshape(-1, 3)
     mappable = None
     if values:
@@ -299,7 +309,7 @@ def _mark_chokepoints(ax, records: list[dict]) -> None:
 
 def _legend_handles(result: RunResult, graph: nx.Graph | None, groups: list[list[int]]) -> list[Artist]:
     """Legend entries for what the panels show: roots, terminals, openings, regions, chokepoints,
-    edges to another floor."""
+    loop edges, edges to another floor."""
     if graph is None:
         return []
     floor_of = {n: i for i, group in enumerate(groups) for n in group}
@@ -319,6 +329,9 @@ def _legend_handles(result: RunResult, graph: nx.Graph | None, groups: list[list
         handles.append(Line2D([], [], color=CHOKEPOINT_BAR["color"], linewidth=CHOKEPOINT_BAR["linewidth"],
                               marker="D", markersize=6, markerfacecolor="white",
                               markeredgecolor=CHOKEPOINT_MARKER["edgecolors"], label="chokepoint (id: walkable width)"))
+    if graph.is_directed() and any(is_loop_edge(graph, u, v) for u, v in graph.edges):
+        handles.append(Line2D([], [], color=colours.unit(colours.LOOP_COLOUR), linewidth=1.6, linestyle="dotted",
+                              label="loop edge"))
     if any(floor_of[u] != floor_of[v] for u, v in graph.edges):
         handles.append(Line2D([], [], color="0.47", linestyle="dashed",
                               label="edge to another floor (stairs, ramp or drop)"))

@@ -20,6 +20,8 @@ Step 3: Steiner tree               edges, nodes                                 
 Step 4: rooted trees               edges by depth [3]_, nodes                   no
 Step 5: simplified structure       edges by depth [3]_, nodes                   [1]_
 Roots                              a black diamond on each root                 yes
+Loop edges                         the final structure's loop edges, near-      yes
+                                   black, dotted [4]_
 Analysis: <key>                    edges and nodes by value (one per key)       [2]_
 Regions                            navmesh triangles coloured by region, a      yes
                                    cross on each region's centroid
@@ -29,7 +31,10 @@ Chokepoints                        a bar across each portal, an x sized by      
 
 .. [1] shown when the run has no analysis values.
 .. [2] the first key is shown, with its colour bar.
-.. [3] one trace per depth colour in use (at most ``len(DEPTH_COLOURS)``).
+.. [3] one trace per depth colour in use (at most ``len(DEPTH_COLOURS)``);
+   loop edges drawn dotted near-black in the same layer.
+.. [4] with loops kept (config ``loops:``, see :mod:`g2s_core.loops`); the
+   analysis layers leave loop edges to this layer.
 
 The Regions and Chokepoints layers appear when the ``regions`` and
 ``chokepoints`` analyzers ran; neighbouring regions differ in colour
@@ -68,6 +73,7 @@ from g2s_plugins.outputs.common import (
     edge_list,
     feature_records,
     final_graph,
+    is_loop_edge,
     roots_of,
     stage_rows,
     terminal_ids,
@@ -89,6 +95,9 @@ LAYER_ROOTS = "Roots"
 LAYER_ANALYSIS = "Analysis: {key}"
 LAYER_REGIONS = "Regions"
 LAYER_CHOKEPOINTS = "Chokepoints"
+LAYER_LOOPS = "Loop edges"
+LOOP_LINE = dict(width=5, color=colours.css(colours.LOOP_COLOUR), dash="dot")
+"""How loop edges are drawn, in the tree layers and in their own layer."""
 
 CAMERA_DIRECTION = (1.0, 1.4, 1.2)
 """Where the initial camera looks from (plotly scene units, Y up): above the level, from one corner."""
@@ -253,6 +262,8 @@ def build_figure(result: RunResult) -> go.Figure:
     for index, key in enumerate(keys):
         if final is not None:
             traces += _analysis_layer(final, key, result, visible=index == 0)
+    if final is not None and final.is_directed():
+        traces += _loop_layer(final)
     traces += _region_layer(result) + _chokepoint_layer(result)
     figure = go.Figure(data=traces)
     figure.update_layout(
@@ -406,7 +417,10 @@ def _opening_text(index: int, opening: Any) -> str:
 def _tree_layer(tree: nx.DiGraph, name: str, visible: bool, result: RunResult) -> list[Any]:
     """Edges by depth (one trace per depth colour in use, red = depth 1 first), then the nodes."""
     by_colour: dict[int, list[tuple[int, int]]] = {}
+    loops = _loop_edges(tree)
     for parent, child in edge_list(tree):
+        if is_loop_edge(tree, parent, child):
+            continue
         depth = int(tree.nodes[child].get("depth", 1))
         by_colour.setdefault((max(depth, 1) - 1) % len(colours.DEPTH_COLOURS), []).append((parent, child))
     traces: list[Any] = [
@@ -414,6 +428,8 @@ def _tree_layer(tree: nx.DiGraph, name: str, visible: bool, result: RunResult) -
                dict(width=5, color=colours.css(colours.DEPTH_COLOURS[index])))
         for index in sorted(by_colour)
     ]
+    if loops:
+        traces.append(_lines(tree, loops, name, visible, False, LOOP_LINE))
     nodes = sorted(tree.nodes)
     node_colours = [colours.css(colours.depth_colour(int(tree.nodes[n].get("depth", 0)))) for n in nodes]
     traces.append(_node_trace(tree, nodes, name, result, 3, node_colours, visible, showlegend=not traces))
@@ -431,7 +447,7 @@ def _analysis_layer(graph: nx.Graph, key: str, result: RunResult, visible: bool)
     name = LAYER_ANALYSIS.format(key=key)
     values = result.analysis[key]
     low, high = _value_range(list(values.values()))
-    edges = edge_list(graph)
+    edges = [(u, v) for u, v in edge_list(graph) if not (graph.is_directed() and is_loop_edge(graph, u, v))]
     # two points and a gap per segment, all in the child's colour
     edge_values = np.repeat(np.asarray([values.get(v, low) for _, v in edges], dtype=np.float32), 3)
     scale = dict(colorscale=colours.plotly_heat_scale(), cmin=low, cmax=high)
@@ -441,6 +457,16 @@ def _analysis_layer(graph: nx.Graph, key: str, result: RunResult, visible: bool)
     node_trace = _node_trace(graph, nodes, name, result, 5, marker_values, visible)
     node_trace.marker.update(showscale=True, colorbar=dict(title=dict(text=key), x=1.0, len=0.6), **scale)
     return [lines, node_trace]
+
+
+def _loop_layer(graph: nx.DiGraph) -> list[Any]:
+    """The loop edges of a structure with loops, near-black and dotted, with a legend entry of their own."""
+    loops = _loop_edges(graph)
+    return [_lines(graph, loops, LAYER_LOOPS, True, True, LOOP_LINE)] if loops else []
+
+
+def _loop_edges(graph: nx.DiGraph) -> list[tuple[int, int]]:
+    return [(u, v) for u, v in edge_list(graph) if is_loop_edge(graph, u, v)]
 
 
 def _record_markers(positions: Sequence[Sequence[float]], name: str, texts: list[str],

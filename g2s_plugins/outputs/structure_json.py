@@ -31,6 +31,7 @@ import numpy as np
 from g2s_core import version
 from g2s_core.model import Opening, RunResult
 from g2s_core.results import RUN_FILE, RUN_SCHEMA_VERSION, SCHEMA_VERSION, STRUCTURE_FILE
+from g2s_core.rooted import tree_parent
 from g2s_plugins.outputs.common import edge_list, final_graph, number, roots_of, terminal_ids, vector
 from g2s_plugins.outputs.files import atomic_write
 
@@ -146,8 +147,7 @@ def _node_record(graph: nx.Graph, node: int, terminals: set[int], analysis: dict
     attrs = graph.nodes[node]
     parent = None
     if graph.is_directed():
-        parents = list(graph.predecessors(node))
-        parent = int(parents[0]) if parents else None
+        parent = tree_parent(graph, node)
     return {
         "id": int(node),
         "position": vector(attrs["pos"]),

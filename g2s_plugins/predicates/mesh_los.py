@@ -75,7 +75,7 @@ def mesh_los_predicate(
             cache[key] = cache[(end, start)] = bool(ok[0])
         return cache[key]
 
-    return collapse_rule(tolerance, walkable)
+    return collapse_rule(tolerance, walkable, params.whole_chain_normals)
 
 
 @hookimpl

@@ -12,6 +12,7 @@ sight from A to C:
   the detail surface lies within the gap above or below
   (:meth:`g2s_plugins.recast.NavMesh.segment_surface_gaps`). Detour's raycast is 2D:
   alone, it lets an edge run metres under a ramp whose foot it crosses.
+  ``max_surface_gap: null`` leaves this check out, as the paper does.
 
 Default tolerance, 10 degrees: Recast quantises heights to the cell height,
 which tilts the polygons of a flat floor by a few degrees at most, and such
@@ -56,10 +57,12 @@ def g2s_simplify_predicate(params: Params, context: RunContext) -> Callable[[nx.
     params = params if params is not None else Params()
     agent = context.agent
     step = params.probe_step if params.probe_step is not None else 0.5 * float(agent.radius)
-    gap = float(params.max_surface_gap)
+    gap = params.max_surface_gap
 
     def line_of_sight(start: tuple[float, ...], end: tuple[float, ...]) -> bool:
         clear, _t = navmesh.raycast(start, end)
-        return clear and bool(navmesh.segment_surface_gaps(start, end, step, gap)[0] <= gap)
+        if not clear or gap is None:
+            return clear
+        return bool(navmesh.segment_surface_gaps(start, end, step, gap)[0] <= gap)
 
-    return collapse_rule(params.normal_tolerance_deg, line_of_sight)
+    return collapse_rule(params.normal_tolerance_deg, line_of_sight, params.whole_chain_normals)

@@ -1,0 +1,201 @@
+"""Bounded redundancy: loops of the walkable graph added back to the Steiner forest.
+
+A tree loses every loop of the level, so two places side by side across a
+loop look far apart along the structure. This step adds back the shortest
+initial-graph path between two structure nodes a, b whenever
+
+    d_S(a, b) > stretch * L(a, b)   and   d_S(a, b) - L(a, b) > min_gain
+
+(d_S: distance along the current structure, L: the path's length),
+greedily, shortest path first, re-checking d_S after every addition: a
+greedy spanner (Althoefer et al., "On sparse spanners of weighted graphs",
+1993) over the structure's candidate pairs. ``stretch = inf`` keeps the
+paper's tree. ``min_gain`` keeps the small loops around pillars out.
+
+Candidate pairs: each initial-graph node is assigned to its nearest
+structure node (Voronoi cells along the graph, one multi-source Dijkstra,
+as in Mehlhorn's Steiner approximation); every graph edge (x, y) whose ends
+lie in different cells gives the pair (cell(x), cell(y)) with the path
+cell(x) ~> x - y ~> cell(y); the shortest such path is kept per pair. So
+there are at most m candidates, whatever the level's size (the bound used
+on big levels), and each candidate path leaves the structure only once.
+
+Complexity (n nodes and m edges of the graph, s structure nodes, q
+candidate pairs <= m, v candidates that violate the bound on the tree):
+O(m + n log n) for the cells, O(q log q) to sort, O((s + q) log s) for the
+tree distances of all candidates at once (lowest common ancestors by binary
+lifting), then, once a path has been added, one Dijkstra on the structure
+bounded by ``max(stretch L, L + min_gain)`` per remaining violator, which
+visits only the structure nodes within that distance: O(v b log b) for v
+violators and b nodes in such a ball, independent of the level's size.
+"""
+
+from __future__ import annotations
+
+import heapq
+import math
+
+import networkx as nx
+import numpy as np
+import scipy.sparse as sp
+from scipy.sparse import csgraph
+
+from g2s_core.surface_arrays import SurfaceArrays, surface_arrays
+
+
+def add_loops(graph: nx.Graph, structure: nx.Graph, stretch: float, min_gain: float) -> nx.Graph:
+    """``structure`` (a forest whose edges are edges of ``graph``) with loop paths added.
+
+    Args:
+        graph: the initial graph, edges with ``weight`` (metres).
+        structure: the Steiner forest.
+        stretch: >= 1; ``inf`` returns ``structure`` itself.
+        min_gain: metres a path must save along the structure to be added.
+
+    Returns:
+        A new graph (or ``structure`` when nothing is added) with the added
+        paths' nodes and edges, attributes copied from ``graph``.
+    """
+    if math.isinf(stretch) or structure.number_of_edges() == 0:
+        return structure
+    arrays = surface_arrays(graph)
+    rows = arrays.rows(sorted(structure))
+    distance, predecessor, cell = csgraph.dijkstra(
+        arrays.adjacency, directed=False, indices=rows, min_only=True, return_predecessors=True
+    )
+    pairs, paths = _candidates(arrays, structure, distance, cell)
+    if len(pairs) == 0:
+        return structure
+    along_tree = _tree_distances(arrays, structure, pairs)
+    bound = np.maximum(stretch * paths, paths + min_gain)
+    violating = np.flatnonzero(along_tree > bound)
+    if violating.size == 0:
+        return structure
+    neighbours: dict[int, list[tuple[int, float]]] = {}
+    for u, v, length in structure.edges(data="weight"):
+        _join(neighbours, arrays.index[u], arrays.index[v], length)
+    added: list[list[int]] = []
+    for k in violating.tolist():  # candidates are sorted by path length
+        a, b, x, y = pairs[k]
+        if added and _within(neighbours, int(a), int(b), float(bound[k])):
+            continue
+        path = _walk(predecessor, x)[::-1] + _walk(predecessor, y)
+        added.append(path)
+        for p, q in zip(path, path[1:]):
+            _join(neighbours, p, q, graph.edges[arrays.nodes[p], arrays.nodes[q]]["weight"])
+    looped = structure.copy()
+    for path in added:
+        ids = [arrays.nodes[i] for i in path]
+        looped.add_nodes_from((node, graph.nodes[node]) for node in ids if node not in looped)
+        looped.add_edges_from((u, v, graph.edges[u, v]) for u, v in zip(ids, ids[1:]))
+    return looped
+
+
+def _candidates(
+    arrays: SurfaceArrays, structure: nx.Graph, distance: np.ndarray, cell: np.ndarray
+) -> tuple[np.ndarray, np.ndarray]:
+    """(q, 4) rows (a, b, x, y) and (q,) path lengths, shortest first, one per cell pair."""
+    upper = sp.triu(arrays.adjacency, k=1).tocoo()
+    x, y, w = upper.row.astype(np.int64), upper.col.astype(np.int64), upper.data
+    ok = np.isfinite(distance[x]) & np.isfinite(distance[y]) & (cell[x] != cell[y])
+    x, y, w = x[ok], y[ok], w[ok]
+    a, b = cell[x].astype(np.int64), cell[y].astype(np.int64)
+    in_structure = np.zeros(arrays.n, dtype=bool)
+    in_structure[arrays.rows(structure)] = True
+    # an edge of the structure itself joins two cells but is no shortcut
+    tree_edge = in_structure[x] & in_structure[y]
+    if tree_edge.any():
+        members = {tuple(sorted((arrays.index[u], arrays.index[v]))) for u, v in structure.edges}
+        tree_edge[tree_edge] = [(min(p, q), max(p, q)) in members for p, q in zip(x[tree_edge].tolist(), y[tree_edge].tolist())]
+    x, y, w, a, b = x[~tree_edge], y[~tree_edge], w[~tree_edge], a[~tree_edge], b[~tree_edge]
+    length = distance[x] + w + distance[y]
+    swap = a > b
+    a, b, x, y = np.where(swap, b, a), np.where(swap, a, b), np.where(swap, y, x), np.where(swap, x, y)
+    order = np.lexsort((y, x, b, a, length))
+    a, b, x, y, length = a[order], b[order], x[order], y[order], length[order]
+    _, first = np.unique(a * arrays.n + b, return_index=True)
+    first = np.sort(first)  # keeps the shortest-first order
+    return np.column_stack([a, b, x, y])[first], length[first]
+
+
+def _tree_distances(arrays: SurfaceArrays, forest: nx.Graph, pairs: np.ndarray) -> np.ndarray:
+    """Distance along ``forest`` between the ends of each pair (inf across trees), by binary lifting."""
+    n = arrays.n
+    edge_rows = np.array([(arrays.index[u], arrays.index[v]) for u, v in forest.edges], dtype=np.int64).reshape(-1, 2)
+    lengths = np.asarray(arrays.adjacency[edge_rows[:, 0], edge_rows[:, 1]]).ravel()
+    tree = sp.csr_array(
+        (np.concatenate([lengths, lengths]), (np.concatenate(edge_rows.T[::-1]), np.concatenate(edge_rows.T))), shape=(n, n)
+    )
+    _, labels = csgraph.connected_components(tree, directed=False)
+    # one traversal from a virtual node joined to the first node of every tree
+    members = arrays.rows(forest)
+    firsts = members[np.unique(labels[members], return_index=True)[1]]
+    virtual = sp.csr_array(
+        (np.ones(firsts.size), (np.full(firsts.size, n), firsts)), shape=(n + 1, n + 1)
+    )
+    augmented = sp.block_diag([tree, sp.csr_array((1, 1))]).tocsr() + virtual
+    order, parent = csgraph.breadth_first_order(augmented, n, directed=False, return_predecessors=True)
+    parent = parent[:n].astype(np.int64)
+    parent[(parent == n) | (parent < 0)] = -1
+    order = order[1:]
+    hops = np.zeros(n, dtype=np.int64)
+    metres = np.zeros(n)
+    up_length = np.zeros(n)
+    child = order[parent[order] >= 0]
+    up_length[child] = np.asarray(tree[child, parent[child]]).ravel()
+    for node in child.tolist():  # breadth-first: parents first
+        p = parent[node]
+        hops[node] = hops[p] + 1
+        metres[node] = metres[p] + up_length[node]
+    ancestors = [np.where(parent >= 0, parent, np.arange(n))]
+    while (1 << len(ancestors)) <= max(int(hops.max()), 1):
+        ancestors.append(ancestors[-1][ancestors[-1]])
+    a, b = pairs[:, 0].copy(), pairs[:, 1].copy()
+    deeper = hops[a] < hops[b]
+    a, b = np.where(deeper, b, a), np.where(deeper, a, b)
+    lift = hops[a] - hops[b]
+    for k, table in enumerate(ancestors):
+        step = ((lift >> k) & 1).astype(bool)
+        a[step] = table[a[step]]
+    for table in reversed(ancestors):
+        differ = table[a] != table[b]
+        a[differ], b[differ] = table[a[differ]], table[b[differ]]
+    lca = np.where(a == b, a, ancestors[0][a])
+    result = metres[pairs[:, 0]] + metres[pairs[:, 1]] - 2 * metres[lca]
+    return np.where(labels[pairs[:, 0]] == labels[pairs[:, 1]], result, np.inf)
+
+
+def _join(neighbours: dict[int, list[tuple[int, float]]], p: int, q: int, length: float) -> None:
+    """Add the edge p - q of ``length`` metres to an adjacency list."""
+    neighbours.setdefault(p, []).append((q, float(length)))
+    neighbours.setdefault(q, []).append((p, float(length)))
+
+
+def _within(neighbours: dict[int, list[tuple[int, float]]], source: int, target: int, limit: float) -> bool:
+    """Whether ``target`` is at most ``limit`` metres from ``source`` along the structure.
+
+    A Dijkstra that stops at ``limit``: it visits only the structure nodes
+    within that distance, whatever the size of the level.
+    """
+    best = {source: 0.0}
+    heap = [(0.0, source)]
+    while heap:
+        distance, node = heapq.heappop(heap)
+        if node == target:
+            return True
+        if distance > best[node]:
+            continue
+        for other, length in neighbours.get(node, ()):
+            through = distance + length
+            if through <= limit and through < best.get(other, math.inf):
+                best[other] = through
+                heapq.heappush(heap, (through, other))
+    return False
+
+
+def _walk(predecessor: np.ndarray, node: int) -> list[int]:
+    """Rows from ``node`` back to its structure node along the Voronoi search's predecessors."""
+    path = [int(node)]
+    while predecessor[path[-1]] >= 0:
+        path.append(int(predecessor[path[-1]]))
+    return path

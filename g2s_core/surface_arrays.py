@@ -1,0 +1,77 @@
+"""The surface graph as scipy arrays, for the stages and analyses that search it as a whole.
+
+Built once per graph object (cached while its node and edge counts are
+unchanged): the loops step, the coverage selector and the area/flow
+analyses all read the same arrays.
+"""
+
+from __future__ import annotations
+
+import weakref
+from collections.abc import Hashable, Iterable
+from dataclasses import dataclass
+
+import networkx as nx
+import numpy as np
+import scipy.sparse as sp
+
+MIN_LENGTH = 1e-12
+"""Zero-length edges (coincident points) are stored with this length: scipy's
+graph searches read a stored zero as no edge."""
+
+
+@dataclass(frozen=True)
+class SurfaceArrays:
+    """A graph as arrays: node i is ``nodes[i]``.
+
+    Attributes:
+        nodes: (n,) the node ids, in graph order.
+        index: node id -> row.
+        adjacency: (n, n) symmetric CSR matrix of edge lengths, metres.
+        area: (n,) float64 ``area`` attribute of each node, m² (0 when absent).
+    """
+
+    nodes: list[Hashable]
+    index: dict[Hashable, int]
+    adjacency: sp.csr_array
+    area: np.ndarray
+
+    @property
+    def n(self) -> int:
+        return len(self.nodes)
+
+    def rows(self, nodes: Iterable[Hashable]) -> np.ndarray:
+        """The rows of ``nodes``, as an int64 array."""
+        return np.fromiter((self.index[node] for node in nodes), dtype=np.int64)
+
+
+_CACHE: weakref.WeakKeyDictionary[nx.Graph, tuple[tuple[int, int, bool], SurfaceArrays]] = weakref.WeakKeyDictionary()
+
+
+def surface_arrays(graph: nx.Graph, weighted: bool = True) -> SurfaceArrays:
+    """``graph`` indexed as arrays (cached per graph object while its size is unchanged).
+
+    With ``weighted=False`` every edge has length 1 (hop count).
+    """
+    signature = (graph.number_of_nodes(), graph.number_of_edges(), weighted)
+    cached = _CACHE.get(graph)
+    if cached is not None and cached[0] == signature:
+        return cached[1]
+    nodes = list(graph.nodes)
+    index = {node: i for i, node in enumerate(nodes)}
+    m = graph.number_of_edges()
+    u = np.empty(m, dtype=np.int64)
+    v = np.empty(m, dtype=np.int64)
+    w = np.ones(m, dtype=np.float64)
+    for k, (a, b, length) in enumerate(graph.edges(data="weight", default=1.0)):
+        u[k], v[k] = index[a], index[b]
+        if weighted:
+            w[k] = length
+    keep = u != v
+    u, v, w = u[keep], v[keep], np.maximum(w[keep], MIN_LENGTH)
+    n = len(nodes)
+    adjacency = sp.csr_array((np.concatenate([w, w]), (np.concatenate([u, v]), np.concatenate([v, u]))), shape=(n, n))
+    area = np.fromiter((float(a) for _, a in graph.nodes(data="area", default=0.0)), dtype=np.float64, count=n)
+    arrays = SurfaceArrays(nodes, index, adjacency, area)
+    _CACHE[graph] = (signature, arrays)
+    return arrays
