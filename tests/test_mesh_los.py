@@ -8,7 +8,6 @@ import networkx as nx
 import numpy as np
 import pytest
 import trimesh
-from pydantic import ValidationError
 
 from g2s_core.config import AgentConfig
 from g2s_core.model import RunContext

@@ -11,7 +11,6 @@ import networkx as nx
 import numpy as np
 import pytest
 import trimesh
-from pydantic import ValidationError
 from scipy.spatial import cKDTree
 
 from g2s_core import pipeline
