@@ -26,7 +26,7 @@ from rich.table import Table
 
 from g2s_core import api, pipeline, version
 from g2s_core.api import MeshSource
-from g2s_core.batch import EXECUTORS, INSTALL_HINT, missing_extra, run_batch
+from g2s_core.batch import INSTALL_HINT, missing_extra, run_batch
 from g2s_core.batch import Progress as BatchProgress
 from g2s_core.config import parse_assignment, presets, resolve_config
 from g2s_core.errors import G2SError, PluginFailure
@@ -39,7 +39,7 @@ from g2s_core.summary import final_graph, roots_of, stage_rows
 
 EXIT_CODES = "exit codes: 0 success, 2 bad input or config, or a plugin that failed (named with its package), 1 internal error of g2s"
 
-__all__ = ["main", "stage_table"]
+__all__ = ["main", "metrics_table", "stage_table"]
 
 
 def _parser() -> argparse.ArgumentParser:
@@ -70,8 +70,8 @@ def _parser() -> argparse.ArgumentParser:
 
     batch = commands.add_parser(
         "batch", parents=[common],
-        usage="g2s batch CONFIG [CONFIG ...] INPUT [INPUT ...] -o OUTDIR [--executor {local,dask,serial}] "
-        "[--workers N] [--scheduler ADDRESS] [--format FORMATS] [--force] [-q] [-v]",
+        usage="g2s batch CONFIG [CONFIG ...] INPUT [INPUT ...] -o OUTDIR [--executor NAME] "
+        "[--workers N] [--scheduler ADDRESS] [--evaluate NAMES] [--format FORMATS] [--force] [-q] [-v]",
         help="run configs over many levels on a process pool or a Dask cluster, with a summary table",
         description="Run every config on every level: one result folder per (config, level) pair, as `g2s run` "
         "writes it, in OUTDIR/CONFIG/LEVEL/, and OUTDIR/summary.parquet and summary.csv with one row per pair "
@@ -85,14 +85,19 @@ def _parser() -> argparse.ArgumentParser:
                        f"(searched recursively for {' '.join(SUPPORTED_SUFFIXES)}), glob patterns, or "
                        f"{SAMPLE_PREFIX}NAME[?param=value&...]")
     batch.add_argument("-o", "--outdir", type=Path, required=True, help="folder of the batch's results")
-    batch.add_argument("--executor", choices=EXECUTORS, default="local",
-                       help="local: a process pool (default); dask: a dask.distributed cluster; serial: one by one "
-                       "in this process")
+    batch.add_argument("--executor", metavar="NAME", default="local",
+                       help="an installed executor plugin: local, a process pool (default); dask, a dask.distributed "
+                       "cluster; serial, one by one in this process (installed: "
+                       f"{', '.join(p.name for p in installed().plugins('executors'))}; see `g2s plugins --stage executors`)")
     batch.add_argument("--workers", type=int, metavar="N",
                        help="processes of the pool or of the Dask LocalCluster (default: the CPU count)")
     batch.add_argument("--scheduler", metavar="ADDRESS",
                        help="with --executor dask: the scheduler to use, e.g. tcp://host:8786 "
                        "(default: start a LocalCluster)")
+    batch.add_argument("--evaluate", metavar="NAMES", default="",
+                       help="comma-separated evaluator plugins added to every config that does not list them, e.g. "
+                       "traffic: coverage and flow agreement, in the summary's metric.* columns (they cost time; "
+                       "see docs/batch.md)")
     batch.add_argument("--format", metavar="FORMATS", help="comma-separated output formats for every pair "
                        "(default: each config's outputs.formats)")
     batch.add_argument("--force", action="store_true", help="recompute the pairs already finished")
@@ -182,11 +187,11 @@ def _batch(args: argparse.Namespace, errors: Console) -> int:
         raise G2SError("batch: expected one or more configs (preset names or .yaml files) followed by one or more levels")
     if args.workers is not None and args.workers < 1:
         raise G2SError(f"--workers: expected an integer >= 1, got {args.workers}")
-    if args.scheduler and args.executor != "dask":
-        raise G2SError("--scheduler: only with --executor dask")
+    evaluators = [name.strip() for name in args.evaluate.split(",") if name.strip()]
     with missing_extra(), _batch_progress(errors, args.quiet) as show:
         summary = run_batch(configs, inputs, args.outdir, args.executor, workers=args.workers,
-                            scheduler=args.scheduler, formats=args.format, force=args.force, progress=show)
+                            scheduler=args.scheduler, evaluators=evaluators, formats=args.format, force=args.force,
+                            progress=show)
     failed = summary[summary["status"] != "ok"]
     for row in failed.itertuples():
         errors.print(f"g2s: {row.config} on {row.level} failed: {row.error}", markup=False, highlight=False, soft_wrap=True)
@@ -283,6 +288,8 @@ def _execute(
     if not args.quiet:
         console = Console()
         console.print(stage_table(result, title=mesh.name))
+        if result.metrics:
+            console.print(metrics_table(result))
         for path in written:
             console.print(f"wrote {path}", markup=False, highlight=False, soft_wrap=True)
     return 0
@@ -321,6 +328,7 @@ def _summary(result: RunResult, outdir: Path, formats: Sequence[str], written: S
             "terminals": None if result.terminals is None else len(result.terminals.nodes),
             "analysis": list(result.analysis),
         },
+        "metrics": result.metrics,
         "warnings": result.warnings,
     }
 
@@ -337,6 +345,17 @@ def stage_table(result: RunResult, title: str = "") -> Table:
         table.add_column(column, justify="left" if column in ("step", "") else "right")
     for row in stage_rows(result.stages):
         table.add_row(*row, style="bold" if row[0] == "total" else None)
+    return table
+
+
+def metrics_table(result: RunResult) -> Table:
+    """The evaluators' measures: one row per evaluator key and measure."""
+    table = Table(title="evaluation")
+    for column in ("evaluator", "measure", "value"):
+        table.add_column(column, justify="right" if column == "value" else "left")
+    for key, measures in result.metrics.items():
+        for name, value in measures.items():
+            table.add_row(key, name, f"{value:.4g}")
     return table
 
 

@@ -21,7 +21,7 @@ from g2s_core.loops import add_loops
 from g2s_core.registry import PluginInfo, Registry
 from g2s_core.rooted import root_forest
 from g2s_core.simplify import simplify_forest
-from g2s_core.stages import PIPELINE
+from g2s_core.stages import BY_KEY, PIPELINE
 
 ProgressCallback = Callable[[str], None]
 
@@ -40,7 +40,7 @@ class ResolvedStage:
 class Plan:
     """The stages a config asks for, validated against the installed plugins.
 
-    ``stages`` maps each stage that runs to its plugins (one, or the analyzers in config order).
+    ``stages`` maps each stage that runs to its plugins (one, or the analyzers or evaluators in config order).
     """
 
     config: RunConfig
@@ -63,9 +63,9 @@ def plan(config: RunConfig, registry: Registry, source: str = "<config>") -> Pla
     try:
         for section in config.stages_to_run():
             entry = getattr(config, section)
-            if section == "analyzers":
+            if BY_KEY[section].many:
                 if entry:
-                    stages[section] = tuple(_resolve(registry, section, f"analyzers.{i}", a) for i, a in enumerate(entry))
+                    stages[section] = tuple(_resolve(registry, section, f"{section}.{i}", e) for i, e in enumerate(entry))
                 continue
             if entry is None:
                 raise ConfigError(
@@ -74,17 +74,18 @@ def plan(config: RunConfig, registry: Registry, source: str = "<config>") -> Pla
             stages[section] = (_resolve(registry, section, section, entry),)
     except ConfigError as exc:
         raise ConfigError(f"{source}: {exc}") from None
-    keys = [a.key for a in stages.get("analyzers", ())]
-    duplicates = sorted({k for k in keys if keys.count(k) > 1})
-    if duplicates:
-        raise ConfigError(f"{source}: analyzers: two analyzers write values named {duplicates[0]!r}; give one a 'key'")
+    for section, planned in stages.items():
+        keys = [p.key for p in planned if p.key is not None]
+        duplicates = sorted({k for k in keys if keys.count(k) > 1})
+        if duplicates:
+            raise ConfigError(f"{source}: {section}: two plugins write values named {duplicates[0]!r}; give one a 'key'")
     return Plan(config, stages)
 
 
 def _resolve(registry: Registry, section: str, key: str, entry: Any) -> ResolvedStage:
     info = registry.get(section, entry.plugin, key=f"{key}.plugin")
     params = registry.validate_params(info, entry.params, f"{key}.params")
-    values_key = (entry.key or entry.plugin) if section == "analyzers" else None
+    values_key = (entry.key or entry.plugin) if BY_KEY[section].many else None
     return ResolvedStage(section, info, params, values_key)
 
 
@@ -107,8 +108,8 @@ def run(
     context = RunContext(mesh=mesh, agent=config.agent, centre=bounds.mean(axis=0))
     result = RunResult(config=config.record(), mesh_name=mesh_name, mesh_sha256=mesh_sha256, context=context)
     for stage in PIPELINE:
-        if stage.key not in plan_.stages:
-            break
+        if stage.key not in plan_.stages:  # not configured (analyzers, evaluators), or after stop_after
+            continue
         say(f"{stage.step}: {stage.label}")
         record: dict[str, Any] = {}
         start = time.perf_counter()
@@ -210,6 +211,14 @@ def _analyzers_step(step: Step) -> bool:
     return True
 
 
+def _evaluators_step(step: Step) -> bool:
+    result = step.result
+    for evaluator in step.planned:
+        measures = step.registry.call(evaluator.plugin, params=evaluator.params, result=result, context=result.context)
+        result.metrics[evaluator.key] = {name: float(measures[name]) for name in sorted(measures)}
+    return True
+
+
 _STEPS: dict[str, Callable[[Step], bool]] = {
     "graph": _graph_step,
     "terminals": _terminals_step,
@@ -217,6 +226,7 @@ _STEPS: dict[str, Callable[[Step], bool]] = {
     "roots": _roots_step,
     "simplify": _simplify_step,
     "analyzers": _analyzers_step,
+    "evaluators": _evaluators_step,
 }
 """The step of each pipeline stage of :data:`g2s_core.stages.PIPELINE`."""
 

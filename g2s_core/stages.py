@@ -1,4 +1,4 @@
-"""The one table of plugin kinds: the six pipeline stages, output writers and level generators.
+"""The one table of plugin kinds: the pipeline stages, output writers, level generators and batch executors.
 
 Everything that lists stages reads it: the config's sections
 (:mod:`g2s_core.config`), the registry's look-ups and ``g2s plugins``
@@ -16,8 +16,10 @@ steiner      SteinerSolver      ``g2s_steiner_tree``        a tree of graph edge
 roots        RootSelector       ``g2s_root_scores``         a finite score for every node of the tree
 simplify     SimplifyPredicate  ``g2s_simplify_predicate``  a callable P(tree, a, b, c) -> bool
 analyzers    Analyzer           ``g2s_analyze``             a number for every node of the structure [*]_
+evaluators   Evaluator          ``g2s_evaluate``            a finite number for each named measure
 outputs      OutputWriter       ``g2s_write_output``        the paths written, among its FILES
 levels       LevelGenerator     ``g2s_generate_level``      a trimesh.Trimesh with triangles
+executors    Executor           ``g2s_execute``             an iterator of the summary rows of the pairs
 ===========  =================  ==========================  ==========================================
 
 .. [*] as a mapping, or as the ``values`` of an :class:`~g2s_core.model.AnalyzerResult`
@@ -27,7 +29,8 @@ levels       LevelGenerator     ``g2s_generate_level``      a trimesh.Trimesh wi
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Mapping
+import re
+from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -55,6 +58,10 @@ class Stage:
         check: the test of a result (see :data:`Check`).
         check_each_call: for a hook that returns a function, the test of each
             of that function's results (``None``: the result is not a function).
+        check_each_item: for a hook that returns an iterator, the test of each
+            item it yields (``None``: the result is not an iterator).
+        many: the config section lists any number of these plugins, each with
+            a ``key`` naming its output (``analyzers``, ``evaluators``).
         step, label: its row in the per-stage table (pipeline stages only).
         result: the :class:`~g2s_core.model.RunResult` attribute holding its output.
         timing: the :class:`~g2s_core.model.StageStats` name of its step.
@@ -67,6 +74,8 @@ class Stage:
     returns: str
     check: Check
     check_each_call: Callable[[Any], str | None] | None = None
+    check_each_item: Callable[[Any], str | None] | None = None
+    many: bool = False
     step: str = ""
     label: str = ""
     result: str = ""
@@ -148,6 +157,32 @@ def _written(value: Any, kwargs: Mapping[str, Any], plugin: Any) -> str | None:
     return f"paths it does not declare in FILES {files}: {stray[:3]}" if stray else None
 
 
+_MEASURE_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
+
+
+def _measures(value: Any, kwargs: Mapping[str, Any], plugin: Any) -> str | None:
+    if not isinstance(value, Mapping):
+        return f"{type(value).__name__}, not a mapping of measure name -> number"
+    for name, number in value.items():
+        if not isinstance(name, str) or not _MEASURE_NAME.fullmatch(name):
+            return f"the measure name {name!r}, not letters, digits and _ starting with a letter"
+        if isinstance(number, bool) or not isinstance(number, (int, float, np.integer, np.floating)):
+            return f"{number!r} for {name!r}, not a number"
+        if not math.isfinite(number):
+            return f"{number} for {name!r}, not a finite number (leave out a measure that cannot be computed)"
+    return None
+
+
+def _iterator(value: Any, kwargs: Mapping[str, Any], plugin: Any) -> str | None:
+    return None if isinstance(value, Iterator) else f"{type(value).__name__}, not an iterator"
+
+
+def _row(value: Any) -> str | None:
+    if isinstance(value, dict) and "config" in value and "level" in value:
+        return None
+    return f"{type(value).__name__}, not a summary row (a dict with config and level)"
+
+
 def _level(value: Any, kwargs: Mapping[str, Any], plugin: Any) -> str | None:
     if not isinstance(value, trimesh.Trimesh) or len(value.faces) == 0:
         return f"{type(value).__name__}, not a trimesh.Trimesh with triangles"
@@ -169,11 +204,15 @@ STAGES: tuple[Stage, ...] = (
           "a callable P(tree, a, b, c) -> bool", _predicate, check_each_call=_bool,
           step="Step 5", label="simplification", result="structure", timing="simplify"),
     Stage("analyzers", "Analyzer", hookspecs.g2s_analyze.__name__, "a number for every node of the structure",
-          _analysis, step="Post-process", label="analysis", result="analysis", timing="analysis"),
+          _analysis, many=True, step="Post-process", label="analysis", result="analysis", timing="analysis"),
+    Stage("evaluators", "Evaluator", hookspecs.g2s_evaluate.__name__, "a finite number for each named measure",
+          _measures, many=True, step="Post-process", label="evaluation", result="metrics", timing="evaluation"),
     Stage("outputs", "OutputWriter", hookspecs.g2s_write_output.__name__, "the paths written, among its FILES",
           _written, declares=("FILES",)),
     Stage("levels", "LevelGenerator", hookspecs.g2s_generate_level.__name__, "a trimesh.Trimesh with triangles",
           _level),
+    Stage("executors", "Executor", hookspecs.g2s_execute.__name__, "an iterator of the summary rows of the pairs",
+          _iterator, check_each_item=_row),
 )
 
 BY_KEY: dict[str, Stage] = {stage.key: stage for stage in STAGES}
