@@ -11,7 +11,8 @@ initial graph above that many nodes) and two multi-source searches.
 
 from __future__ import annotations
 
-from pydantic import Field, PositiveFloat
+from pydantic import Field, model_validator
+from pydantic_core import PydanticCustomError
 
 from g2s_core.model import RunContext, RunResult
 from g2s_core.plugin import PluginParams, hookimpl
@@ -23,13 +24,18 @@ NAME = "traffic"
 class Params(PluginParams):
     """Radii and the reference flow's sample."""
 
-    radii: list[PositiveFloat] = Field(list(evaluation.RADII), min_length=1,
-                               description="coverage radii, metres (each gives area_within_<r>m)")
+    radii: list[float] = Field(list(evaluation.RADII), min_length=1,
+                               description="coverage radii, metres, each > 0 (each gives area_within_<r>m)")
     off_distance: float = Field(5.0, gt=0, description="traffic_off counts the flow farther than this from the structure, metres")
     reference_sources: int = Field(evaluation.REFERENCE_SOURCES, ge=1,
                                    description="graphs with more nodes than this sample this many area-weighted sources")
     seed: int = Field(0, description="seed of the source sample")
 
+    @model_validator(mode="after")
+    def _positive_radii(self) -> Params:
+        if any(r <= 0 for r in self.radii):
+            raise PydanticCustomError("radii", "radii: expected numbers > 0 (metres)", {})
+        return self
 
 @hookimpl
 def g2s_evaluate(result: RunResult, params: Params, context: RunContext) -> dict[str, float]:
