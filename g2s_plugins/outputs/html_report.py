@@ -175,6 +175,8 @@ def _summary(result: RunResult) -> list[tuple[str, str]]:
         summary.append(("terminals", str(len(result.terminals.nodes))))
     if result.analysis:
         summary.append(("analysis values", ", ".join(result.analysis)))
+    for key, measures in result.metrics.items():
+        summary.append((f"evaluation ({key})", ", ".join(f"{name} {value:.4g}" for name, value in measures.items())))
     return summary
 
 
