@@ -35,11 +35,11 @@ from g2s_core.model import RunResult
 from g2s_core.outputs import DEFAULT_FORMATS, check_outdir, parse_formats, writers
 from g2s_core.registry import Registry, installed, plugin_parameters
 from g2s_core.stages import STAGES
-from g2s_core.summary import final_graph, roots_of, stage_rows
+from g2s_core.summary import final_graph, metric_lines, roots_of, stage_rows
 
 EXIT_CODES = "exit codes: 0 success, 2 bad input or config, or a plugin that failed (named with its package), 1 internal error of g2s"
 
-__all__ = ["main", "metrics_table", "stage_table"]
+__all__ = ["main", "stage_table"]
 
 
 def _parser() -> argparse.ArgumentParser:
@@ -288,8 +288,8 @@ def _execute(
     if not args.quiet:
         console = Console()
         console.print(stage_table(result, title=mesh.name))
-        if result.metrics:
-            console.print(metrics_table(result))
+        for label, measures in metric_lines(result):
+            console.print(f"{label}: {measures}", markup=False, highlight=False, soft_wrap=True)
         for path in written:
             console.print(f"wrote {path}", markup=False, highlight=False, soft_wrap=True)
     return 0
@@ -345,17 +345,6 @@ def stage_table(result: RunResult, title: str = "") -> Table:
         table.add_column(column, justify="left" if column in ("step", "") else "right")
     for row in stage_rows(result.stages):
         table.add_row(*row, style="bold" if row[0] == "total" else None)
-    return table
-
-
-def metrics_table(result: RunResult) -> Table:
-    """The evaluators' measures: one row per evaluator key and measure."""
-    table = Table(title="evaluation")
-    for column in ("evaluator", "measure", "value"):
-        table.add_column(column, justify="right" if column == "value" else "left")
-    for key, measures in result.metrics.items():
-        for name, value in measures.items():
-            table.add_row(key, name, f"{value:.4g}")
     return table
 
 

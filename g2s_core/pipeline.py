@@ -215,7 +215,7 @@ def _evaluators_step(step: Step) -> bool:
     result = step.result
     for evaluator in step.planned:
         measures = step.registry.call(evaluator.plugin, params=evaluator.params, result=result, context=result.context)
-        result.metrics[evaluator.key] = {name: float(measures[name]) for name in sorted(measures)}
+        result.metrics[evaluator.key] = {name: float(value) for name, value in measures.items()}
     return True
 
 
