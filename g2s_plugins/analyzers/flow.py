@@ -52,10 +52,4 @@ def g2s_analyze(structure: nx.Graph, params: Params, context: RunContext) -> Map
     weight = arrays.area if arrays.area.sum() > 0 else np.ones(arrays.n)
     flow, _ = traffic.od_flow(arrays.adjacency, weight, max_sources=params.max_sources, seed=params.seed)
     flow /= max(weight.sum() ** 2, 1e-300)
-    nodes = sorted(structure)
-    _, nearest = traffic.distance_to(arrays, arrays.rows(nodes))
-    reached = nearest >= 0
-    totals = np.bincount(nearest[reached], weights=flow[reached], minlength=arrays.n)
-    if params.aggregate == "mean":
-        totals /= np.maximum(np.bincount(nearest[reached], minlength=arrays.n), 1)
-    return {node: float(totals[arrays.index[node]]) for node in nodes}
+    return traffic.gather(context.graph, structure, flow, mean=params.aggregate == "mean")
