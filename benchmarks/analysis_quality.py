@@ -71,12 +71,13 @@ def main() -> None:
               f"{'rho':>6} {'rho_abw':>7} {'ceiling':>7} {'struct':>7} {'cpu s':>7} {'total s':>8}  stages (s)")
     print(header)
     for name, mesh in levels(args.levels, args.seeds):
-        references: dict[str, tuple] = {}  # per graph builder: the flow depends only on the graph
+        references: dict[str, tuple] = {}  # per graph builder and its parameters: the flow depends only on the graph
         for preset, plan in plans.items():
             cpu = time.process_time()
             result = pipeline.run(plan, registry, mesh, name, mesh_sha256(mesh))
             cpu = time.process_time() - cpu
-            builder = plan.stages["graph"][0].plugin.name
+            graph_stage = plan.stages["graph"][0]
+            builder = f"{graph_stage.plugin.name} {graph_stage.params.model_dump_json()}"
             if builder not in references:
                 start = time.process_time()
                 references[builder] = (evaluation.reference_flow(result), time.process_time() - start)
@@ -86,8 +87,8 @@ def main() -> None:
             print(f"{name:<18} {preset:<28} {q.polygons:>7} {within} {100 * q.traffic_off:6.1f}% "
                   f"{q.rho:6.3f} {q.rho_area_betweenness:7.3f} {q.rho_ceiling:7.3f} {100 * q.structure_share:6.1f}% "
                   f"{cpu:7.2f} {sum(q.stage_seconds.values()):8.2f}  {stages}", flush=True)
-        for builder, (_, seconds) in references.items():
-            print(f"{'':<18} (reference flow on the {builder} graph: {seconds:.2f} s CPU)")
+        for builder, (flow, seconds) in references.items():
+            print(f"{'':<18} (reference flow on the {builder.split()[0]} graph of {len(flow)} nodes: {seconds:.2f} s CPU)")
 
 
 if __name__ == "__main__":
