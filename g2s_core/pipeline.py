@@ -5,7 +5,7 @@ from __future__ import annotations
 import math
 import time
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Any
 
 import networkx as nx
@@ -17,11 +17,10 @@ from g2s_core.disconnected import disconnected_warning
 from g2s_core.errors import ConfigError, G2SError
 from g2s_core.model import AnalyzerResult, RunContext, RunResult, StageStats
 from g2s_core.plugin import PluginParams
-from g2s_core.loops import add_loops
 from g2s_core.registry import PluginInfo, Registry
 from g2s_core.rooted import root_forest
 from g2s_core.simplify import simplify_forest
-from g2s_core.stages import PIPELINE
+from g2s_core.stages import BY_KEY, PIPELINE
 
 ProgressCallback = Callable[[str], None]
 
@@ -68,6 +67,8 @@ def plan(config: RunConfig, registry: Registry, source: str = "<config>") -> Pla
                     stages[section] = tuple(_resolve(registry, section, f"analyzers.{i}", a) for i, a in enumerate(entry))
                 continue
             if entry is None:
+                if BY_KEY[section].optional:
+                    continue
                 raise ConfigError(
                     f"{section}: required key is missing (a plugin for this stage, or stop_after before it)"
                 )
@@ -107,16 +108,14 @@ def run(
     context = RunContext(mesh=mesh, agent=config.agent, centre=bounds.mean(axis=0))
     result = RunResult(config=config.record(), mesh_name=mesh_name, mesh_sha256=mesh_sha256, context=context)
     for stage in PIPELINE:
-        if stage.key not in plan_.stages:
-            break
+        if stage.key not in plan_.stages:  # an optional stage left out, or past stop_after
+            continue
         say(f"{stage.step}: {stage.label}")
         record: dict[str, Any] = {}
         start = time.perf_counter()
         step = Step(registry, plan_.stages[stage.key], result, record, config)
         go_on = _STEPS[stage.key](step)
-        seconds = time.perf_counter() - start - sum(s.seconds for s in step.followers)
-        result.stages.append(StageStats(stage.timing, seconds, **record))
-        result.stages.extend(step.followers)
+        result.stages.append(StageStats(stage.timing, time.perf_counter() - start, **record))
         if not go_on:
             break
     return result
@@ -132,8 +131,6 @@ class Step:
     result: RunResult
     record: dict[str, Any]
     config: RunConfig
-    followers: list[StageStats] = field(default_factory=list)
-    """Stats of work done right after the stage (the ``loops:`` step), listed after its own."""
 
     def call(self, **kwargs: Any) -> Any:
         """The stage's single plugin, called with its parameters and the run's context."""
@@ -172,11 +169,14 @@ def _steiner_step(step: Step) -> bool:
         graph=sub, terminals=terms), result.context)
     step.record.update(nodes=steiner.number_of_nodes(), edges=steiner.number_of_edges())
     result.steiner = steiner
-    if step.config.loops is not None:
-        start = time.perf_counter()
-        looped = add_loops(result.graph, steiner, step.config.loops.stretch, step.config.loops.min_gain)
-        step.followers.append(StageStats("loops", time.perf_counter() - start, looped.number_of_nodes(), looped.number_of_edges()))
-        result.looped = looped
+    return True
+
+
+def _loops_step(step: Step) -> bool:
+    result = step.result
+    looped = _with_graph_attributes(step.call(graph=result.graph, forest=result.steiner), result.graph)
+    step.record.update(nodes=looped.number_of_nodes(), edges=looped.number_of_edges())
+    result.looped = looped
     return True
 
 
@@ -214,6 +214,7 @@ _STEPS: dict[str, Callable[[Step], bool]] = {
     "graph": _graph_step,
     "terminals": _terminals_step,
     "steiner": _steiner_step,
+    "loops": _loops_step,
     "roots": _roots_step,
     "simplify": _simplify_step,
     "analyzers": _analyzers_step,
@@ -255,8 +256,13 @@ def steiner_forest(
         tree = solve(graph if len(groups) == 1 else graph.subgraph(components[index]), group)
         forest.add_nodes_from(sorted(tree.nodes))
         forest.add_edges_from(sorted(tuple(sorted(e)) for e in tree.edges))
-    for node in forest.nodes:
-        forest.nodes[node].update(graph.nodes[node])
-    for u, v in forest.edges:
-        forest.edges[u, v].update(graph.edges[u, v])
-    return forest
+    return _with_graph_attributes(forest, graph)
+
+
+def _with_graph_attributes(part: nx.Graph, graph: nx.Graph) -> nx.Graph:
+    """``part`` (nodes and edges of ``graph``) with ``graph``'s attributes copied onto them."""
+    for node in part.nodes:
+        part.nodes[node].update(graph.nodes[node])
+    for u, v in part.edges:
+        part.edges[u, v].update(graph.edges[u, v])
+    return part

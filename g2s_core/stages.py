@@ -1,4 +1,4 @@
-"""The one table of plugin kinds: the six pipeline stages, output writers and level generators.
+"""The one table of plugin kinds: the seven pipeline stages, output writers and level generators.
 
 Everything that lists stages reads it: the config's sections
 (:mod:`g2s_core.config`), the registry's look-ups and ``g2s plugins``
@@ -13,6 +13,7 @@ key          title              hook                        the plugin returns
 graph        GraphBuilder       ``g2s_build_graph``         an undirected networkx.Graph
 terminals    TerminalSelector   ``g2s_select_terminals``    Terminals whose nodes are in the graph
 steiner      SteinerSolver      ``g2s_steiner_tree``        a tree of graph edges joining the terminals
+loops        LoopAdder          ``g2s_add_loops``           the forest plus graph edges (optional)
 roots        RootSelector       ``g2s_root_scores``         a finite score for every node of the tree
 simplify     SimplifyPredicate  ``g2s_simplify_predicate``  a callable P(tree, a, b, c) -> bool
 analyzers    Analyzer           ``g2s_analyze``             a number for every node of the structure [*]_
@@ -59,6 +60,7 @@ class Stage:
         result: the :class:`~g2s_core.model.RunResult` attribute holding its output.
         timing: the :class:`~g2s_core.model.StageStats` name of its step.
         declares: module attributes its plugins must declare besides ``NAME``.
+        optional: a pipeline stage a config may leave out (the run skips it).
     """
 
     key: str
@@ -72,6 +74,7 @@ class Stage:
     result: str = ""
     timing: str = ""
     declares: tuple[str, ...] = ()
+    optional: bool = False
 
     @property
     def in_pipeline(self) -> bool:
@@ -102,6 +105,18 @@ def _tree(value: Any, kwargs: Mapping[str, Any], plugin: Any) -> str | None:
     if foreign:
         return f"a tree with edges not in the graph: {foreign[:3]}"
     return None if nx.is_tree(value) else "a graph that is not a tree"
+
+
+def _looped(value: Any, kwargs: Mapping[str, Any], plugin: Any) -> str | None:
+    graph, forest = kwargs["graph"], kwargs["forest"]
+    problem = _graph(value, kwargs, plugin)
+    if problem is not None:
+        return problem
+    missing = [n for n in forest if n not in value] + [e for e in forest.edges if not value.has_edge(*e)]
+    if missing:
+        return f"a graph that misses nodes or edges of the forest: {missing[:3]}"
+    foreign = [n for n in value if n not in graph] + [e for e in value.edges if not graph.has_edge(*e)]
+    return f"nodes or edges not in the graph: {foreign[:3]}" if foreign else None
 
 
 def _node_numbers(values: Any, nodes: Any, finite: bool) -> str | None:
@@ -163,13 +178,15 @@ STAGES: tuple[Stage, ...] = (
     Stage("steiner", "SteinerSolver", hookspecs.g2s_steiner_tree.__name__,
           "a tree of graph edges joining the terminals",
           _tree, step="Step 3", label="Steiner tree", result="steiner", timing="steiner"),
+    Stage("loops", "LoopAdder", hookspecs.g2s_add_loops.__name__, "the forest plus edges of the graph",
+          _looped, step="Step 3", label="loops kept", result="looped", timing="loops", optional=True),
     Stage("roots", "RootSelector", hookspecs.g2s_root_scores.__name__, "a finite score for every node of the tree",
           _root_scores, step="Step 4", label="rooted trees", result="forest", timing="roots"),
     Stage("simplify", "SimplifyPredicate", hookspecs.g2s_simplify_predicate.__name__,
           "a callable P(tree, a, b, c) -> bool", _predicate, check_each_call=_bool,
           step="Step 5", label="simplification", result="structure", timing="simplify"),
     Stage("analyzers", "Analyzer", hookspecs.g2s_analyze.__name__, "a number for every node of the structure",
-          _analysis, step="Post-process", label="analysis", result="analysis", timing="analysis"),
+          _analysis, optional=True, step="Post-process", label="analysis", result="analysis", timing="analysis"),
     Stage("outputs", "OutputWriter", hookspecs.g2s_write_output.__name__, "the paths written, among its FILES",
           _written, declares=("FILES",)),
     Stage("levels", "LevelGenerator", hookspecs.g2s_generate_level.__name__, "a trimesh.Trimesh with triangles",

@@ -46,7 +46,8 @@ def test_the_documented_example_plugins_register_and_work(tmp_path):
         exec(compile(code, module.__name__, "exec"), module.__dict__)
         registry.register(module, package="docs", entry_point=f"example.{index}")
     kinds = [(p.stage, p.name) for p in registry.plugins()]
-    assert kinds == [("graph", "triangles"), ("terminals", "above"), ("steiner", "star"), ("roots", "lowest"),
+    assert kinds == [("graph", "triangles"), ("terminals", "above"), ("steiner", "star"), ("loops", "shortcuts"),
+                     ("roots", "lowest"),
                      ("simplify", "straight"), ("analyzers", "height"), ("outputs", "csv"), ("levels", "plaza")]
 
     def call(stage, name, **kwargs):
@@ -60,6 +61,8 @@ def test_the_documented_example_plugins_register_and_work(tmp_path):
     tree = call("steiner", "star", graph=graph, terminals=terminals, context=None)
     for node in tree:  # as the pipeline does: the tree gets the graph's attributes
         tree.nodes[node].update(graph.nodes[node])
+    looped = call("loops", "shortcuts", graph=graph, forest=tree, context=None)
+    assert set(tree.edges) <= set(looped.edges) <= set(graph.edges)
     scores = call("roots", "lowest", tree=tree, context=None)
     assert set(scores) == set(tree)
     assert call("terminals", "above", graph=graph, context=None).nodes == ()
