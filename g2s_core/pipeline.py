@@ -27,12 +27,11 @@ ProgressCallback = Callable[[str], None]
 
 @dataclass(frozen=True)
 class ResolvedStage:
-    """A config section matched to its plugin, with validated parameters."""
+    """A config section's plugin with validated parameters; ``key`` names its values (analyzers)."""
 
-    section: str
     plugin: PluginInfo
     params: PluginParams
-    key: str | None = None
+    key: str
 
 
 @dataclass(frozen=True)
@@ -44,10 +43,6 @@ class Plan:
 
     config: RunConfig
     stages: dict[str, tuple[ResolvedStage, ...]]
-
-    @property
-    def analyzers(self) -> tuple[ResolvedStage, ...]:
-        return self.stages.get("analyzers", ())
 
 
 def plan(config: RunConfig, registry: Registry, source: str = "<config>") -> Plan:
@@ -62,17 +57,14 @@ def plan(config: RunConfig, registry: Registry, source: str = "<config>") -> Pla
     try:
         for section in config.stages_to_run():
             entry = getattr(config, section)
-            if section == "analyzers":
-                if entry:
-                    stages[section] = tuple(_resolve(registry, section, f"analyzers.{i}", a) for i, a in enumerate(entry))
-                continue
-            if entry is None:
-                if BY_KEY[section].optional:
-                    continue
+            if entry is None and not BY_KEY[section].optional:
                 raise ConfigError(
                     f"{section}: required key is missing (a plugin for this stage, or stop_after before it)"
                 )
-            stages[section] = (_resolve(registry, section, section, entry),)
+            listed = {f"{section}.{i}": e for i, e in enumerate(entry)} if isinstance(entry, list) else {section: entry}
+            resolved = tuple(_resolve(registry, section, key, e) for key, e in listed.items() if e is not None)
+            if resolved:
+                stages[section] = resolved
     except ConfigError as exc:
         raise ConfigError(f"{source}: {exc}") from None
     keys = [a.key for a in stages.get("analyzers", ())]
@@ -85,8 +77,7 @@ def plan(config: RunConfig, registry: Registry, source: str = "<config>") -> Pla
 def _resolve(registry: Registry, section: str, key: str, entry: Any) -> ResolvedStage:
     info = registry.get(section, entry.plugin, key=f"{key}.plugin")
     params = registry.validate_params(info, entry.params, f"{key}.params")
-    values_key = (entry.key or entry.plugin) if section == "analyzers" else None
-    return ResolvedStage(section, info, params, values_key)
+    return ResolvedStage(info, params, getattr(entry, "key", None) or entry.plugin)
 
 
 def run(
@@ -113,7 +104,7 @@ def run(
         say(f"{stage.step}: {stage.label}")
         record: dict[str, Any] = {}
         start = time.perf_counter()
-        step = Step(registry, plan_.stages[stage.key], result, record, config)
+        step = Step(registry, plan_.stages[stage.key], result, record)
         go_on = _STEPS[stage.key](step)
         result.stages.append(StageStats(stage.timing, time.perf_counter() - start, **record))
         if not go_on:
@@ -130,7 +121,6 @@ class Step:
     planned: tuple[ResolvedStage, ...]
     result: RunResult
     record: dict[str, Any]
-    config: RunConfig
 
     def call(self, **kwargs: Any) -> Any:
         """The stage's single plugin, called with its parameters and the run's context."""

@@ -127,10 +127,7 @@ def _move_into_place(staging: Path, outdir: Path, obsolete: Sequence[Path], prot
         os.rename(staging, outdir)
         return
     names = sorted(p.name for p in staging.iterdir())
-    for path in [outdir / name for name in names] + list(obsolete):
-        for guarded in protect:
-            if same_file(path, Path(guarded)):
-                raise G2SError(f"{outdir}: the input {guarded} has the name of a result file ({path.name})")
+    refuse_inputs(outdir, [outdir / name for name in names] + list(obsolete), protect)
     for name in names:
         os.replace(staging / name, outdir / name)
     for path in obsolete:
@@ -173,6 +170,15 @@ def _remove_if_empty(folder: Path) -> None:
         folder.rmdir()
     except OSError:
         pass
+
+
+def refuse_inputs(outdir: Path, paths: Sequence[Path], protect: Sequence[Path]) -> None:
+    """Raise :class:`G2SError` when a result path of ``paths`` is one of the input files ``protect``."""
+    for path in paths:
+        for guarded in protect:
+            if same_file(path, Path(guarded)):
+                raise G2SError(f"{outdir}: the input {guarded} has the name of a result file ({path.name}); "
+                               "choose another output folder")
 
 
 def same_file(a: Path, b: Path) -> bool:

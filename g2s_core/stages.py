@@ -76,10 +76,6 @@ class Stage:
     declares: tuple[str, ...] = ()
     optional: bool = False
 
-    @property
-    def in_pipeline(self) -> bool:
-        return bool(self.step)
-
 
 def _graph(value: Any, kwargs: Mapping[str, Any], plugin: Any) -> str | None:
     if not isinstance(value, nx.Graph) or isinstance(value, nx.DiGraph):
@@ -94,6 +90,11 @@ def _terminals(value: Any, kwargs: Mapping[str, Any], plugin: Any) -> str | None
     return f"nodes not in the graph: {unknown[:5]}" if unknown else None
 
 
+def _not_in(part: nx.Graph, whole: nx.Graph) -> list[Any]:
+    """The nodes and edges of ``part`` that ``whole`` lacks."""
+    return [n for n in part if n not in whole] + [e for e in part.edges if not whole.has_edge(*e)]
+
+
 def _tree(value: Any, kwargs: Mapping[str, Any], plugin: Any) -> str | None:
     graph, terminals = kwargs["graph"], kwargs["terminals"]
     if not isinstance(value, nx.Graph):
@@ -101,21 +102,20 @@ def _tree(value: Any, kwargs: Mapping[str, Any], plugin: Any) -> str | None:
     missing = [t for t in terminals if t not in value]
     if missing:
         return f"a tree that misses terminals {missing[:5]}"
-    foreign = [e for e in value.edges if not graph.has_edge(*e)]
+    foreign = _not_in(value, graph)
     if foreign:
-        return f"a tree with edges not in the graph: {foreign[:3]}"
+        return f"a tree with nodes or edges not in the graph: {foreign[:3]}"
     return None if nx.is_tree(value) else "a graph that is not a tree"
 
 
 def _looped(value: Any, kwargs: Mapping[str, Any], plugin: Any) -> str | None:
-    graph, forest = kwargs["graph"], kwargs["forest"]
     problem = _graph(value, kwargs, plugin)
     if problem is not None:
         return problem
-    missing = [n for n in forest if n not in value] + [e for e in forest.edges if not value.has_edge(*e)]
+    missing = _not_in(kwargs["forest"], value)
     if missing:
         return f"a graph that misses nodes or edges of the forest: {missing[:3]}"
-    foreign = [n for n in value if n not in graph] + [e for e in value.edges if not graph.has_edge(*e)]
+    foreign = _not_in(value, kwargs["graph"])
     return f"nodes or edges not in the graph: {foreign[:3]}" if foreign else None
 
 
@@ -195,6 +195,5 @@ STAGES: tuple[Stage, ...] = (
 
 BY_KEY: dict[str, Stage] = {stage.key: stage for stage in STAGES}
 BY_HOOK: dict[str, Stage] = {stage.hook: stage for stage in STAGES}
-PIPELINE: tuple[Stage, ...] = tuple(stage for stage in STAGES if stage.in_pipeline)
+PIPELINE: tuple[Stage, ...] = tuple(stage for stage in STAGES if stage.step)
 """The pipeline's stages, in order."""
-PIPELINE_KEYS: tuple[str, ...] = tuple(stage.key for stage in PIPELINE)
