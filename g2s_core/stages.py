@@ -60,7 +60,8 @@ class Stage:
         result: the :class:`~g2s_core.model.RunResult` attribute holding its output.
         timing: the :class:`~g2s_core.model.StageStats` name of its step.
         declares: module attributes its plugins must declare besides ``NAME``.
-        optional: a pipeline stage a config may leave out (the run skips it).
+        optional: a pipeline stage whose section a config may leave out (the run
+            skips it); a section listing plugins (``analyzers``) may be empty anyway.
     """
 
     key: str
@@ -186,7 +187,7 @@ STAGES: tuple[Stage, ...] = (
           "a callable P(tree, a, b, c) -> bool", _predicate, check_each_call=_bool,
           step="Step 5", label="simplification", result="structure", timing="simplify"),
     Stage("analyzers", "Analyzer", hookspecs.g2s_analyze.__name__, "a number for every node of the structure",
-          _analysis, optional=True, step="Post-process", label="analysis", result="analysis", timing="analysis"),
+          _analysis, step="Post-process", label="analysis", result="analysis", timing="analysis"),
     Stage("outputs", "OutputWriter", hookspecs.g2s_write_output.__name__, "the paths written, among its FILES",
           _written, declares=("FILES",)),
     Stage("levels", "LevelGenerator", hookspecs.g2s_generate_level.__name__, "a trimesh.Trimesh with triangles",
