@@ -90,8 +90,8 @@ def run(
 ) -> RunResult:
     """Run the planned stages on ``mesh`` in the order of the stage table and return what they produced.
 
-    Each step stores its output in the result; a step returns ``False`` when
-    there is nothing left to do (e.g. no terminals), which ends the run early.
+    Each step stores its output in the result; a step that returns ``False``
+    (nothing left to do, e.g. no terminals) ends the run early.
     """
     config = plan_.config
     say = progress or (lambda _message: None)
@@ -105,7 +105,7 @@ def run(
         record: dict[str, Any] = {}
         start = time.perf_counter()
         step = Step(registry, plan_.stages[stage.key], result, record)
-        go_on = _STEPS[stage.key](step)
+        go_on = _STEPS[stage.key](step) is not False
         result.stages.append(StageStats(stage.timing, time.perf_counter() - start, **record))
         if not go_on:
             break
@@ -128,17 +128,16 @@ class Step:
         return self.registry.call(chosen.plugin, params=chosen.params, context=self.result.context, **kwargs)
 
 
-def _graph_step(step: Step) -> bool:
+def _graph_step(step: Step) -> bool | None:
     result = step.result
     graph = step.call(mesh=result.context.mesh)
     if graph.number_of_nodes() == 0:
         raise G2SError(f"{result.mesh_name}: no walkable surface found for the agent (the initial graph is empty)")
     step.record.update(nodes=graph.number_of_nodes(), edges=graph.number_of_edges())
     result.context.graph = result.graph = graph
-    return True
 
 
-def _terminals_step(step: Step) -> bool:
+def _terminals_step(step: Step) -> bool | None:
     result, graph = step.result, step.result.graph
     terminals = step.call(graph=graph)
     step.record.update(terminals=len(terminals.nodes))
@@ -153,42 +152,38 @@ def _terminals_step(step: Step) -> bool:
     return bool(terminals.nodes)
 
 
-def _steiner_step(step: Step) -> bool:
+def _steiner_step(step: Step) -> bool | None:
     result = step.result
     steiner = steiner_forest(result.graph, result.terminals.nodes, lambda sub, terms: step.call(
         graph=sub, terminals=terms), result.context)
     step.record.update(nodes=steiner.number_of_nodes(), edges=steiner.number_of_edges())
     result.steiner = steiner
-    return True
 
 
-def _loops_step(step: Step) -> bool:
+def _loops_step(step: Step) -> bool | None:
     result = step.result
     looped = _with_graph_attributes(step.call(graph=result.graph, forest=result.steiner), result.graph)
     step.record.update(nodes=looped.number_of_nodes(), edges=looped.number_of_edges())
     result.looped = looped
-    return True
 
 
-def _roots_step(step: Step) -> bool:
+def _roots_step(step: Step) -> bool | None:
     result = step.result
     # the root selector scores the Steiner tree itself (its measures are O(n) on a
     # tree, not on a tree with loops); nodes the loops added are never roots
     structure = result.looped if result.looped is not None else result.steiner
     scores = {**dict.fromkeys(structure, -math.inf), **step.call(tree=result.steiner)}
     result.forest = root_forest(structure, scores, result.context.centre)
-    return True
 
 
-def _simplify_step(step: Step) -> bool:
+def _simplify_step(step: Step) -> bool | None:
     result = step.result
     structure = simplify_forest(result.forest, step.call())
     step.record.update(nodes=structure.number_of_nodes(), edges=structure.number_of_edges())
     result.structure = structure
-    return True
 
 
-def _analyzers_step(step: Step) -> bool:
+def _analyzers_step(step: Step) -> bool | None:
     result = step.result
     undirected = result.structure.to_undirected(as_view=True)
     for analyzer in step.planned:
@@ -197,10 +192,9 @@ def _analyzers_step(step: Step) -> bool:
             result.features[analyzer.key] = dict(values.features)
             values = values.values
         result.analysis[analyzer.key] = {n: float(values[n]) for n in result.structure}
-    return True
 
 
-_STEPS: dict[str, Callable[[Step], bool]] = {
+_STEPS: dict[str, Callable[[Step], bool | None]] = {
     "graph": _graph_step,
     "terminals": _terminals_step,
     "steiner": _steiner_step,
