@@ -46,7 +46,7 @@ import numpy as np
 import scipy.sparse as sp
 from scipy.sparse import csgraph
 
-from g2s_core.surface_arrays import SurfaceArrays, surface_arrays
+from g2s_plugins.surface_arrays import SurfaceArrays, surface_arrays
 
 __all__ = ["SurfaceArrays", "distance_to", "flow_error_bound", "gather", "od_flow", "represented_area", "subtree_sums", "surface_arrays"]
 
