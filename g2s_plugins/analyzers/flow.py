@@ -9,13 +9,14 @@ graph); a structure node's value is the mean through-flow of its polygons
 density: a node standing for many polygons does not outrank a busier node
 standing for few. Measured on nav_test and generated dungeons
 (docs/analysis_quality.md), the mean agrees better with the polygons' own
-flow than the sum (Spearman 0.94 against 0.86 on nav_test, 0.84 against
-0.79 on a 1k-polygon dungeon, same structures).
+flow than the sum (Spearman 0.94 against 0.89 on nav_test, 0.83 against
+0.78 on a 1k-polygon dungeon, same structures).
 
 Exact up to ``max_sources`` nodes, from that many area-sampled sources
 above, with the Hoeffding bound of :mod:`g2s_plugins.traffic` (0.10 of all
-pair weight per polygon for 256 sources, delta = 0.01; a mean of such
-values is within the same bound). Values are shares of all pair weight.
+pair weight per polygon for 256 sources, delta = 0.01; a node's mean is
+estimated the same way, each source's term again in [0, A²], so the same
+bound holds for it). Values are shares of all pair weight.
 Cost: O(k (m + n log n)) for k sources on the initial graph.
 """
 
