@@ -1,7 +1,7 @@
 """How well map-analysis presets show where people walk (issue 9's measures).
 
 Run: ``.venv/bin/python benchmarks/analysis_quality.py [--presets map_analysis_paper map_analysis]
-[--levels nav_test samples dungeon_1k dungeon_20k dungeon_100k]``
+[--levels nav_test samples dungeon_1k dungeon_20k dungeon_100k] [--seeds 0 1 2]``
 
 For every level and preset it runs the preset with the ``traffic`` evaluator
 added (the evaluator plugin any config or ``g2s batch --evaluate traffic``
@@ -9,12 +9,15 @@ uses, on :mod:`g2s_plugins.evaluation`) and prints its measures: share of the wa
 of the structure (along the initial graph), share of the reference traffic
 (area-weighted origin-destination flow on the initial graph) passing more
 than 5 m from it, Spearman rho of the heat map (first analyzer, each polygon
-given the value of its nearest structure node) and of area-weighted
-betweenness on the structure against that traffic, the structure's size as
-a share of the polygons, the time of every stage but the evaluation
-("total s") and that of the evaluation, which computes the reference flow
-(exact up to 512 nodes, 512 area-sampled sources above) for each run. This
-is a benchmark: nothing here asserts a target.
+given the value of its nearest structure node), of area-weighted
+betweenness on the structure and of the best values the structure's nodes
+could carry (the ceiling: the mean traffic of the polygons each stands
+for) against that traffic, the structure's size as
+a share of the polygons, the run's CPU time (``time.process_time``: the
+machine is shared; the evaluation included), the wall time of every stage
+but the evaluation ("total s") and that of the evaluation, which computes
+the reference flow (exact up to 512 nodes, 512 area-sampled sources above)
+for each run. This is a benchmark: nothing here asserts a target.
 """
 
 from __future__ import annotations
@@ -22,6 +25,7 @@ from __future__ import annotations
 import argparse
 import os
 import platform
+import time
 from collections.abc import Iterator
 from pathlib import Path
 
@@ -41,7 +45,7 @@ DUNGEONS = {"dungeon_1k": 115, "dungeon_20k": 2400, "dungeon_100k": 12000}
 SAMPLE_LEVELS = ("cross_hub", "t_hub", "two_floors", "closed_room", "room_with_window", "corridor_with_ramp")
 
 
-def levels(names: list[str]) -> Iterator[tuple[str, trimesh.Trimesh]]:
+def levels(names: list[str], seeds: list[int]) -> Iterator[tuple[str, trimesh.Trimesh]]:
     for name in names:
         if name == "nav_test":
             yield name, load_mesh(NAV_TEST)[0]
@@ -49,7 +53,8 @@ def levels(names: list[str]) -> Iterator[tuple[str, trimesh.Trimesh]]:
             for sample in SAMPLE_LEVELS:
                 yield sample, samples.load_sample(sample).mesh
         elif name in DUNGEONS:
-            yield name, samples.dungeon(seed=0, rooms=DUNGEONS[name]).mesh
+            for seed in seeds:
+                yield f"{name}_s{seed}", samples.dungeon(seed=seed, rooms=DUNGEONS[name]).mesh
         else:
             yield name, samples.load_sample(name).mesh
 
@@ -59,27 +64,31 @@ def main() -> None:
     parser.add_argument("--presets", nargs="+", default=["map_analysis_paper", "map_analysis"])
     parser.add_argument("--levels", nargs="+", default=["nav_test", "samples", "dungeon_1k", "dungeon_20k"],
                         help="nav_test, samples, a sample name, dungeon_1k, dungeon_20k, dungeon_100k")
+    parser.add_argument("--seeds", nargs="+", type=int, default=[0], help="seeds of the generated dungeons")
     args = parser.parse_args()
     print(f"machine: {platform.machine()}, {os.cpu_count()} cores, load average {os.getloadavg()[0]:.1f}")
     registry = Registry.from_entry_points()
     plans = {p: pipeline.plan(parse_config(with_evaluators(load_raw_config(PRESETS_DIR / f"{p}.yaml"), ["traffic"]), p),
                               registry, p) for p in args.presets}
     header = (f"{'level':<18} {'preset':<28} {'polys':>7} {'<=3m':>6} {'<=6m':>6} {'<=10m':>6} {'off>5m':>7} "
-              f"{'rho':>6} {'rho_abw':>7} {'struct':>7} {'total s':>8} {'eval s':>7}  stages (s)")
+              f"{'rho':>6} {'rho_abw':>7} {'ceiling':>7} {'struct':>7} {'cpu s':>7} {'total s':>8} {'eval s':>7}  stages (s)")
     print(header)
-    for name, mesh in levels(args.levels):
+    for name, mesh in levels(args.levels, args.seeds):
         for preset, plan in plans.items():
+            cpu = time.process_time()
             result = pipeline.run(plan, registry, mesh, name, mesh_sha256(mesh))
+            cpu = time.process_time() - cpu
             q = result.metrics["traffic"]
             seconds = {s.stage: s.seconds for s in result.stages}
             evaluating = seconds.pop("evaluation")
             stages = " ".join(f"{k}={v:.2f}" for k, v in seconds.items())
             within = " ".join(f"{100 * q[f'area_within_{r:g}m']:5.1f}%" for r in evaluation.RADII)
+            rho, abw, ceiling = (q.get(k, float("nan")) for k in ("rho", "rho_area_betweenness", "rho_ceiling"))
             polygons = traffic.surface_arrays(result.graph).n  # the nodes the measures count
             print(f"{name:<18} {preset:<28} {polygons:>7} {within} {100 * q['traffic_off']:6.1f}% "
-                  f"{q.get('rho', float('nan')):6.3f} {q.get('rho_area_betweenness', float('nan')):7.3f} "
-                  f"{100 * q['structure_share']:6.1f}% {sum(seconds.values()):8.2f} {evaluating:7.2f}  {stages}",
-                  flush=True)
+                  f"{rho:6.3f} {abw:7.3f} {ceiling:7.3f} {100 * q['structure_share']:6.1f}% "
+                  f"{cpu:7.2f} {sum(seconds.values()):8.2f} {evaluating:7.2f}  {stages}", flush=True)
+
 
 if __name__ == "__main__":
     main()

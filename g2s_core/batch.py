@@ -46,7 +46,7 @@ from g2s_core.config import find_config, load_raw_config, parse_config, with_eva
 from g2s_core.errors import G2SError, PluginFailure
 from g2s_core.mesh import SAMPLE_PREFIX, SUPPORTED_SUFFIXES
 from g2s_core.model import RunResult
-from g2s_core.outputs import DEFAULT_FORMATS, parse_formats, result_files
+from g2s_core.outputs import chosen_formats, result_files
 from g2s_core.registry import installed
 from g2s_core.stages import PIPELINE
 
@@ -294,11 +294,7 @@ def make_pairs(
         raw = with_evaluators(load_raw_config(find_config(config_path)), evaluators)
         config = parse_config(raw, source=source)
         pipeline.plan(config, registry, source=source)
-        chosen = tuple(parse_formats(
-            formats if formats is not None
-            else config.outputs.formats if "formats" in config.outputs.model_fields_set else DEFAULT_FORMATS,
-            "formats" if formats is not None else f"{source}: outputs.formats",
-        ))
+        chosen = tuple(chosen_formats(formats, config, source))
         digest = hashlib.sha256(json.dumps([config.model_dump(mode="json"), chosen], sort_keys=True).encode()).hexdigest()
         for level, spec in levels:
             pairs.append(Pair(

@@ -32,7 +32,7 @@ from g2s_core.config import parse_assignment, presets, resolve_config
 from g2s_core.errors import G2SError, PluginFailure
 from g2s_core.mesh import SAMPLE_PREFIX, SUPPORTED_SUFFIXES
 from g2s_core.model import RunResult
-from g2s_core.outputs import DEFAULT_FORMATS, check_outdir, parse_formats, writers
+from g2s_core.outputs import DEFAULT_FORMATS, check_outdir, chosen_formats, writers
 from g2s_core.registry import Registry, installed, plugin_parameters
 from g2s_core.stages import STAGES
 from g2s_core.summary import final_graph, metric_lines, roots_of, stage_rows
@@ -85,19 +85,15 @@ def _parser() -> argparse.ArgumentParser:
                        f"(searched recursively for {' '.join(SUPPORTED_SUFFIXES)}), glob patterns, or "
                        f"{SAMPLE_PREFIX}NAME[?param=value&...]")
     batch.add_argument("-o", "--outdir", type=Path, required=True, help="folder of the batch's results")
-    batch.add_argument("--executor", metavar="NAME", default="local",
-                       help="an installed executor plugin: local, a process pool (default); dask, a dask.distributed "
-                       "cluster; serial, one by one in this process (installed: "
-                       f"{', '.join(p.name for p in installed().plugins('executors'))}; see `g2s plugins --stage executors`)")
+    batch.add_argument("--executor", metavar="NAME", default="local", help="an executor plugin (`g2s plugins --stage "
+                       "executors`): local, a process pool (default); dask, a Dask cluster; serial, one by one here")
     batch.add_argument("--workers", type=int, metavar="N",
                        help="processes of the pool or of the Dask LocalCluster (default: the CPU count)")
     batch.add_argument("--scheduler", metavar="ADDRESS",
                        help="with --executor dask: the scheduler to use, e.g. tcp://host:8786 "
                        "(default: start a LocalCluster)")
-    batch.add_argument("--evaluate", metavar="NAMES", default="",
-                       help="comma-separated evaluator plugins added to every config that does not list them, e.g. "
-                       "traffic: coverage and flow agreement, in the summary's metric.* columns (they cost time; "
-                       "see docs/batch.md)")
+    batch.add_argument("--evaluate", metavar="NAMES", default="", help="evaluator plugins added to every config, "
+                       "e.g. traffic: coverage and flow agreement in metric.* columns (costly: docs/batch.md)")
     batch.add_argument("--format", metavar="FORMATS", help="comma-separated output formats for every pair "
                        "(default: each config's outputs.formats)")
     batch.add_argument("--force", action="store_true", help="recompute the pairs already finished")
@@ -163,15 +159,16 @@ def main(argv: Sequence[str] | None = None) -> int:
         return 1
 
 
-def _run(args: argparse.Namespace, errors: Console) -> int:
+def _run(args: argparse.Namespace, errors: Console, mesh_name: str | None = None) -> int:
+    """``g2s run`` (and ``g2s demo``, which names its generated level ``mesh_name``)."""
     config_files: list[Path] = []
     config, source = resolve_config(args.config, _overrides(args), overrides_source="--set", sources=config_files)
-    formats = _formats(args, config, source)
+    formats = chosen_formats(args.format, config, source, "--format")
     inputs = api.input_files(config, config_files, args.mesh)
     check_outdir(args.outdir, formats, args.force, inputs)
     registry = installed()
     plan = pipeline.plan(config, registry, source=source)
-    mesh = api.open_mesh(args.mesh, config, registry=registry)
+    mesh = api.open_mesh(args.mesh, config, name=mesh_name, registry=registry)
     if mesh.cleaning:
         removed = ", ".join(f"{count} {what.replace('_', ' ')}" for what, count in mesh.cleaning.items())
         _status(args, errors, f"cleaning removed {removed}")
@@ -225,17 +222,10 @@ def _demo(args: argparse.Namespace, errors: Console) -> int:
     for option, value, least in (("--rooms", args.rooms, 1), ("--seed", args.seed, 0)):
         if value < least:
             raise G2SError(f"{option}: expected an integer >= {least}, got {value}")
-    config_files: list[Path] = []
-    config, source = resolve_config("demo", _overrides(args), overrides_source="--set", sources=config_files)
-    formats = _formats(args, config, source)
-    check_outdir(args.outdir, formats, args.force, api.input_files(config, config_files))
-    registry = installed()
-    plan = pipeline.plan(config, registry, source=source)
-    spec = f"{SAMPLE_PREFIX}dungeon?seed={args.seed}&rooms={args.rooms}"
-    mesh = api.open_mesh(spec, config, name=f"dungeon (seed {args.seed}, {args.rooms} rooms)", registry=registry)
-    code = _execute(args, errors, registry, plan, mesh, formats, config_files)
+    args.config, args.mesh = "demo", f"{SAMPLE_PREFIX}dungeon?seed={args.seed}&rooms={args.rooms}"
+    code = _run(args, errors, mesh_name=f"dungeon (seed {args.seed}, {args.rooms} rooms)")
     if code == 0 and not (args.quiet or args.json):
-        Console().print(_demo_hint(args.outdir, formats), markup=False, highlight=False, soft_wrap=True)
+        Console().print(_demo_hint(args.outdir), markup=False, highlight=False, soft_wrap=True)
     return code
 
 
@@ -243,28 +233,22 @@ def _overrides(args: argparse.Namespace) -> dict[str, Any]:
     return dict(parse_assignment(text) for text in args.overrides)
 
 
-def _demo_hint(outdir: Path, formats: Sequence[str]) -> str:
+_DEMO_HINTS = (
+    ("report.html", "open {path} in a web browser (works offline) for the interactive 3D report"),
+    ("heatmap.png", "{path}: top-down heat map of the analysis"),
+    ("structure.glb", "{path}: level, navmesh and structure for any glTF viewer or Blender"),
+    ("structure.json", "{path}: the structure as data (see docs/outputs.md)"),
+    ("structure.graphml", "{path}, {graphml}: for networkx, Gephi, yEd"),
+)
+"""What to do with each file the demo may write, in the order the hint lists them."""
+
+
+def _demo_hint(outdir: Path) -> str:
     lines = [f"the demo's results are in {outdir}/"]
-    if "html" in formats:
-        lines.append(f"  open {outdir / 'report.html'} in a web browser (works offline) for the interactive 3D report")
-    if "png" in formats:
-        lines.append(f"  {outdir / 'heatmap.png'}: top-down heat map of the analysis")
-    if "glb" in formats:
-        lines.append(f"  {outdir / 'structure.glb'}: level, navmesh and structure for any glTF viewer or Blender")
-    if "json" in formats:
-        lines.append(f"  {outdir / 'structure.json'}: the structure as data (see docs/outputs.md)")
-    if "graphml" in formats:
-        lines.append(f"  {outdir / 'structure.graphml'}, {outdir / 'graph.graphml'}: for networkx, Gephi, yEd")
+    for name, hint in _DEMO_HINTS:
+        if (outdir / name).exists():
+            lines.append("  " + hint.format(path=outdir / name, graphml=outdir / "graph.graphml"))
     return "\n".join(lines)
-
-
-def _formats(args: argparse.Namespace, config: Any, source: str) -> list[str]:
-    """--format, else the config's outputs.formats when it sets them, else the default formats."""
-    if args.format is not None:
-        return parse_formats(args.format, "--format")
-    if "formats" in config.outputs.model_fields_set:
-        return parse_formats(config.outputs.formats, f"{source}: outputs.formats")
-    return list(DEFAULT_FORMATS)
 
 
 def _execute(

@@ -11,11 +11,15 @@ from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from g2s_core.errors import G2SError
 from g2s_core.model import RunResult
 from g2s_core.registry import PluginInfo, Registry, installed
-from g2s_core.result_folder import check_writable, same_file, staged
+from g2s_core.result_folder import check_writable, refuse_inputs, staged
+
+if TYPE_CHECKING:
+    from g2s_core.config import RunConfig
 
 DEFAULT_FORMATS: tuple[str, ...] = ("json", "html")
 """What a run writes when neither the config nor ``--format`` says."""
@@ -53,6 +57,16 @@ def parse_formats(formats: str | Sequence[str], source: str = "--format", regist
     return names
 
 
+def chosen_formats(given: str | Sequence[str] | None, config: RunConfig, source: str, option: str = "formats") -> list[str]:
+    """``given`` (``--format``, named ``option`` in errors), else the ``outputs.formats`` the config sets,
+    else :data:`DEFAULT_FORMATS`; checked by :func:`parse_formats`."""
+    if given is not None:
+        return parse_formats(given, option)
+    if "formats" in config.outputs.model_fields_set:
+        return parse_formats(config.outputs.formats, f"{source}: outputs.formats")
+    return list(DEFAULT_FORMATS)
+
+
 def result_paths(outdir: Path, formats: Sequence[str] | None = None, registry: Registry | None = None) -> list[Path]:
     """The result files of ``formats`` (all installed formats when ``None``) inside ``outdir``."""
     files = result_files(registry)
@@ -78,13 +92,7 @@ def check_outdir(
     parse_formats(formats, registry=registry)
     check_writable(outdir)
     every = result_paths(outdir, registry=registry)
-    for path in every:
-        for guarded in protect:
-            if same_file(path, Path(guarded)):
-                raise G2SError(
-                    f"{outdir}: the input {guarded} has the name of a result file ({path.name}); "
-                    "choose another output folder"
-                )
+    refuse_inputs(outdir, every, protect)
     existing = sorted(p.name for p in every if p.exists())
     if existing and not force:
         raise G2SError(f"{outdir}: already holds results ({', '.join(existing)}); use --force to replace them")

@@ -234,14 +234,11 @@ def _checked_items(info: PluginInfo, items: Iterator[Any], check: Callable[[Any]
     end = object()
     try:
         while (item := step(items, end)) is not end:
-            wrong = check(item)
-            if wrong is not None:
+            if (wrong := check(item)) is not None:
                 raise info.failure(f"its iterator gave {wrong}")
             yield item
     finally:
-        close = getattr(items, "close", None)
-        if close is not None:
-            close()
+        getattr(items, "close", lambda: None)()  # a generator's own cleanup (a pool's shutdown) runs now
 
 
 def plugin_parameters(info: PluginInfo) -> Iterable[tuple[str, str, str, str]]:

@@ -99,13 +99,12 @@ def load_result(path: str | Path) -> LoadedResult:
     if version not in READABLE_VERSIONS:
         readable = ", ".join(map(str, READABLE_VERSIONS))
         raise G2SError(f"{path}: schema_version {version!r} is not supported (this g2s reads {readable})")
-    checked = dict(document)
+    checked = {**document, "schema_version": SCHEMA_VERSION}
     for name, added in _ADDED_IN.items():
         if version < added:
             if name in document:
                 raise G2SError(f"{path}: {name}: not a field of schema_version {version}")
             checked[name] = {}
-    checked["schema_version"] = SCHEMA_VERSION
     problem = jsonschema.exceptions.best_match(_schema_validator().iter_errors(checked))
     if problem is not None:
         where = "".join(f"[{p}]" if isinstance(p, int) else f".{p}" for p in problem.absolute_path).lstrip(".")

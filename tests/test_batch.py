@@ -22,8 +22,8 @@ from tests.conftest import PROJECT
 
 CONFIG = str(PROJECT / "configs" / "map_analysis.yaml")
 SAMPLES = ["sample:dungeon?seed=1&rooms=12", "sample:dungeon?seed=2&rooms=14"]
-TIMES = [c for c in ("seconds_load", "seconds_graph", "seconds_terminals", "seconds_steiner", "seconds_roots",
-                     "seconds_simplify", "seconds_analyzers", "seconds_write", "seconds_total")]
+TIMES = [c for c in ("seconds_load", "seconds_graph", "seconds_terminals", "seconds_steiner", "seconds_loops",
+                     "seconds_roots", "seconds_simplify", "seconds_analyzers", "seconds_write", "seconds_total")]
 
 
 @pytest.fixture(scope="module")
@@ -78,7 +78,7 @@ def test_serial_pairs_are_what_g2s_run_writes(serial, levels, tmp_path, capsys):
         assert row.nodes_graph == stages["graph"]["nodes"] and row.edges_graph == stages["graph"]["edges"]
         assert row.terminals == stages["terminals"]["terminals"]
         assert row.nodes_simplify == stages["simplify"]["nodes"]
-        assert row.betweenness_max > 0 and row.structure_length > 0 and row.openings == 0
+        assert row.flow_max > 0 and row.structure_length > 0 and row.openings == 0
 
 
 def test_a_broken_level_is_recorded_and_the_batch_goes_on(serial):
@@ -212,7 +212,7 @@ def test_evaluated_pairs_get_the_metric_columns_of_their_structure_json(tmp_path
     assert not any(c.startswith(METRIC_PREFIX) for c in plain.columns)
     evaluated = run_batch([CONFIG], SAMPLES, out, "serial", formats="json", evaluators=["traffic"])
     assert not evaluated["reused"].any()  # another config: the evaluator is part of it
-    names = ["area_within_10m", "area_within_3m", "area_within_6m", "rho", "rho_area_betweenness",
+    names = ["area_within_10m", "area_within_3m", "area_within_6m", "rho", "rho_area_betweenness", "rho_ceiling",
              "structure_share", "traffic_off"]
     assert [c for c in evaluated.columns if c.startswith(METRIC_PREFIX)] == [f"metric.traffic.{n}" for n in names]
     for row in evaluated.to_dict("records"):

@@ -1,10 +1,10 @@
 """Coverage and flow agreement: the map-analysis evaluation of g2s_plugins.evaluation.
 
-Measures (shares in [0, 1], see :mod:`g2s_plugins.evaluation`):
+Measures (shares in [0, 1], rho in [-1, 1]; see :mod:`g2s_plugins.evaluation`):
 ``area_within_<r>m`` for each radius r, ``traffic_off`` (reference flow more
 than ``off_distance`` from the structure), ``rho`` (the first analyzer's heat
 map against the reference flow; left out without analyzers or when
-undefined), ``rho_area_betweenness`` and ``structure_share``.
+undefined), ``rho_area_betweenness``, ``rho_ceiling`` and ``structure_share``.
 Cost: the reference flow (``reference_sources`` Dijkstra searches of the
 initial graph above that many nodes) and two multi-source searches.
 """
