@@ -7,6 +7,7 @@ import numpy as np
 import pytest
 
 from g2s_core.errors import G2SError
+from g2s_core.ties import rank_key
 from g2s_plugins import centrality
 
 
@@ -256,9 +257,9 @@ def test_compute_dispatches_and_rejects_unknown_metric():
 
 def test_rank_key_orders_by_value_then_id_and_ignores_float_noise():
     values = {3: 0.5, 1: 0.5 + 1e-16, 2: 0.7, 0: 0.1}
-    assert sorted(values, key=lambda n: centrality.rank_key(n, values[n])) == [2, 1, 3, 0]
+    assert sorted(values, key=lambda n: rank_key(n, values[n])) == [2, 1, 3, 0]
     values[1] = 0.5 - 1e-16
-    assert sorted(values, key=lambda n: centrality.rank_key(n, values[n])) == [2, 1, 3, 0]
+    assert sorted(values, key=lambda n: rank_key(n, values[n])) == [2, 1, 3, 0]
 
 
 def test_tree_formulas_on_a_deep_path_need_no_recursion():
