@@ -26,7 +26,7 @@ import trimesh
 
 from g2s_core import pipeline
 from g2s_core.config import RunConfig, named_files, resolve_config
-from g2s_core.mesh import SAMPLE_PREFIX, clean_mesh, generate_level, load_mesh, mesh_sha256, prepare_mesh
+from g2s_core.mesh import SAMPLE_PREFIX, generate_level, load_mesh, mesh_sha256, prepare_and_clean
 from g2s_core.model import RunResult
 from g2s_core.outputs import DEFAULT_FORMATS, parse_formats, write_outputs
 from g2s_core.registry import Registry, installed
@@ -80,10 +80,7 @@ def open_mesh(mesh: MeshLike, config: RunConfig, name: str | None = None, regist
     """
     if isinstance(mesh, trimesh.Trimesh):
         name = name or "mesh"
-        prepared = prepare_mesh(mesh, config.mesh, source=name)
-        cleaning = None
-        if config.mesh.clean:
-            prepared, cleaning = clean_mesh(prepared)
+        prepared, cleaning = prepare_and_clean(mesh, config.mesh, source=name)
         return MeshSource(prepared, name, mesh_sha256(prepared), cleaning=cleaning)
     if isinstance(mesh, str) and mesh.startswith(SAMPLE_PREFIX):
         generated = generate_level(mesh, config.mesh, registry)

@@ -158,7 +158,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         return 1
 
 
-def _run(args: argparse.Namespace, errors: Console) -> int:
+def _run(args: argparse.Namespace, errors: Console, mesh_name: str | None = None) -> int:
+    """``g2s run`` (and ``g2s demo``, which names its generated level ``mesh_name``)."""
     config_files: list[Path] = []
     config, source = resolve_config(args.config, _overrides(args), overrides_source="--set", sources=config_files)
     formats = _formats(args, config, source)
@@ -166,7 +167,7 @@ def _run(args: argparse.Namespace, errors: Console) -> int:
     check_outdir(args.outdir, formats, args.force, inputs)
     registry = installed()
     plan = pipeline.plan(config, registry, source=source)
-    mesh = api.open_mesh(args.mesh, config, registry=registry)
+    mesh = api.open_mesh(args.mesh, config, name=mesh_name, registry=registry)
     if mesh.cleaning:
         removed = ", ".join(f"{count} {what.replace('_', ' ')}" for what, count in mesh.cleaning.items())
         _status(args, errors, f"cleaning removed {removed}")
@@ -220,17 +221,10 @@ def _demo(args: argparse.Namespace, errors: Console) -> int:
     for option, value, least in (("--rooms", args.rooms, 1), ("--seed", args.seed, 0)):
         if value < least:
             raise G2SError(f"{option}: expected an integer >= {least}, got {value}")
-    config_files: list[Path] = []
-    config, source = resolve_config("demo", _overrides(args), overrides_source="--set", sources=config_files)
-    formats = _formats(args, config, source)
-    check_outdir(args.outdir, formats, args.force, api.input_files(config, config_files))
-    registry = installed()
-    plan = pipeline.plan(config, registry, source=source)
-    spec = f"{SAMPLE_PREFIX}dungeon?seed={args.seed}&rooms={args.rooms}"
-    mesh = api.open_mesh(spec, config, name=f"dungeon (seed {args.seed}, {args.rooms} rooms)", registry=registry)
-    code = _execute(args, errors, registry, plan, mesh, formats, config_files)
+    args.config, args.mesh = "demo", f"{SAMPLE_PREFIX}dungeon?seed={args.seed}&rooms={args.rooms}"
+    code = _run(args, errors, mesh_name=f"dungeon (seed {args.seed}, {args.rooms} rooms)")
     if code == 0 and not (args.quiet or args.json):
-        Console().print(_demo_hint(args.outdir, formats), markup=False, highlight=False, soft_wrap=True)
+        Console().print(_demo_hint(args.outdir), markup=False, highlight=False, soft_wrap=True)
     return code
 
 
@@ -238,18 +232,21 @@ def _overrides(args: argparse.Namespace) -> dict[str, Any]:
     return dict(parse_assignment(text) for text in args.overrides)
 
 
-def _demo_hint(outdir: Path, formats: Sequence[str]) -> str:
+_DEMO_HINTS = (
+    ("report.html", "open {path} in a web browser (works offline) for the interactive 3D report"),
+    ("heatmap.png", "{path}: top-down heat map of the analysis"),
+    ("structure.glb", "{path}: level, navmesh and structure for any glTF viewer or Blender"),
+    ("structure.json", "{path}: the structure as data (see docs/outputs.md)"),
+    ("structure.graphml", "{path}, {graphml}: for networkx, Gephi, yEd"),
+)
+"""What to do with each file the demo may write, in the order the hint lists them."""
+
+
+def _demo_hint(outdir: Path) -> str:
     lines = [f"the demo's results are in {outdir}/"]
-    if "html" in formats:
-        lines.append(f"  open {outdir / 'report.html'} in a web browser (works offline) for the interactive 3D report")
-    if "png" in formats:
-        lines.append(f"  {outdir / 'heatmap.png'}: top-down heat map of the analysis")
-    if "glb" in formats:
-        lines.append(f"  {outdir / 'structure.glb'}: level, navmesh and structure for any glTF viewer or Blender")
-    if "json" in formats:
-        lines.append(f"  {outdir / 'structure.json'}: the structure as data (see docs/outputs.md)")
-    if "graphml" in formats:
-        lines.append(f"  {outdir / 'structure.graphml'}, {outdir / 'graph.graphml'}: for networkx, Gephi, yEd")
+    for name, hint in _DEMO_HINTS:
+        if (outdir / name).exists():
+            lines.append("  " + hint.format(path=outdir / name, graphml=outdir / "graph.graphml"))
     return "\n".join(lines)
 
 

@@ -73,13 +73,6 @@ class AnalyzerConfig(StageConfig):
     key: str | None = Field(None, description="name of the values in the outputs")
 
 
-class LoopsConfig(_Section):
-    """Loops added back after the Steiner step (see :mod:`g2s_core.loops`)."""
-
-    stretch: float = Field(1.5, ge=1, description="add a path when the structure is more than this many times longer between its ends (inf: the paper's tree)")
-    min_gain: float = Field(3.0, ge=0, description="and the structure is longer by more than this, metres")
-
-
 class OutputConfig(_Section):
     """What a run writes."""
 
@@ -88,8 +81,9 @@ class OutputConfig(_Section):
 
 class _Run(_Section):
     def record(self) -> dict[str, Any]:
-        """The config as plain JSON data, for the outputs (``loops`` only when set)."""
-        return self.model_dump(mode="json", exclude={"loops"} if self.loops is None else None)
+        """The config as plain JSON data, for the outputs (optional stages only when set)."""
+        unset = {stage.key for stage in PIPELINE if stage.optional and getattr(self, stage.key) is None}
+        return self.model_dump(mode="json", exclude=unset or None)
 
     def stages_to_run(self) -> tuple[str, ...]:
         """The stage sections that run, in order."""
@@ -111,7 +105,6 @@ RunConfig = create_model(
     mesh=(MeshConfig, Field(default_factory=MeshConfig)),
     agent=(AgentConfig, Field(default_factory=AgentConfig)),
     **{stage.key: _stage_field(stage.key) for stage in PIPELINE},
-    loops=(LoopsConfig | None, Field(None, description="loops kept after the Steiner step (absent: the paper's tree)")),
     stop_after=(Literal[tuple(stage.key for stage in PIPELINE)], Field(PIPELINE[-1].key, description="last stage to run")),
     outputs=(OutputConfig, Field(default_factory=OutputConfig)),
 )

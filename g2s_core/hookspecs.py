@@ -53,6 +53,18 @@ def g2s_steiner_tree(
 
 
 @hookspec(firstresult=True)
+def g2s_add_loops(graph: nx.Graph, forest: nx.Graph, params: PluginParams, context: RunContext) -> nx.Graph:
+    """LoopAdder: ``forest`` (the Steiner forest, edges of ``graph``) with paths of ``graph`` added back.
+
+    A tree loses every loop of the level; a loop adder keeps some. Return a
+    graph holding every node and edge of ``forest`` plus the edges of
+    ``graph`` it adds (``forest`` itself when it adds none); the pipeline
+    copies the graph's attributes onto new nodes and edges. Optional: without
+    a ``loops:`` section the structure stays the paper's tree.
+    """
+
+
+@hookspec(firstresult=True)
 def g2s_root_scores(tree: nx.Graph, params: PluginParams, context: RunContext) -> Mapping[int, float]:
     """RootSelector: a score for every node of ``tree`` (a forest).
 

@@ -79,10 +79,7 @@ def load_mesh(path: str | Path, config: MeshConfig | None = None) -> tuple[trime
             loaded = _read_single_mesh(path) or trimesh.load(path, force="mesh", process=False)
     except Exception as exc:  # trimesh raises many exception types for bad files
         raise MeshError(f"{path}: cannot read mesh ({type(exc).__name__}: {exc})") from None
-    mesh = prepare_mesh(loaded, config, source=str(path))
-    cleaning = None
-    if config.clean:
-        mesh, cleaning = clean_mesh(mesh)
+    mesh, cleaning = prepare_and_clean(loaded, config, source=str(path))
     info = MeshInfo(path.name, file_sha256(path), len(mesh.vertices), len(mesh.faces), cleaning)
     return mesh, info
 
@@ -172,6 +169,12 @@ def prepare_mesh(loaded: object, config: MeshConfig, source: str) -> trimesh.Tri
     if not np.isfinite(vertices).all():
         raise MeshError(f"mesh.scale: {config.scale:g} makes {source}'s vertex coordinates overflow (infinite)")
     return trimesh.Trimesh(vertices=vertices, faces=faces, process=False)
+
+
+def prepare_and_clean(loaded: object, config: MeshConfig, source: str) -> tuple[trimesh.Trimesh, dict[str, int] | None]:
+    """:func:`prepare_mesh`, then :func:`clean_mesh` when ``config.clean``; the mesh and what cleaning removed."""
+    mesh = prepare_mesh(loaded, config, source)
+    return clean_mesh(mesh) if config.clean else (mesh, None)
 
 
 def clean_mesh(mesh: trimesh.Trimesh) -> tuple[trimesh.Trimesh, dict[str, int]]:

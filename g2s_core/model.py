@@ -24,7 +24,6 @@ are spanning trees and the other edges carry ``loop=True`` (see
 
 from __future__ import annotations
 
-import dataclasses
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -244,8 +243,3 @@ class RunResult:
     def stage(self, name: str) -> StageStats | None:
         """The stats of stage ``name``, or ``None`` when it did not run."""
         return next((s for s in self.stages if s.stage == name), None)
-
-
-def as_dict(obj: Any) -> dict[str, Any]:
-    """A dataclass as a plain dict (tuples kept)."""
-    return dataclasses.asdict(obj)

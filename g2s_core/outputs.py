@@ -15,7 +15,7 @@ from pathlib import Path
 from g2s_core.errors import G2SError
 from g2s_core.model import RunResult
 from g2s_core.registry import PluginInfo, Registry, installed
-from g2s_core.result_folder import check_writable, same_file, staged
+from g2s_core.result_folder import check_writable, refuse_inputs, staged
 
 DEFAULT_FORMATS: tuple[str, ...] = ("json", "html")
 """What a run writes when neither the config nor ``--format`` says."""
@@ -78,13 +78,7 @@ def check_outdir(
     parse_formats(formats, registry=registry)
     check_writable(outdir)
     every = result_paths(outdir, registry=registry)
-    for path in every:
-        for guarded in protect:
-            if same_file(path, Path(guarded)):
-                raise G2SError(
-                    f"{outdir}: the input {guarded} has the name of a result file ({path.name}); "
-                    "choose another output folder"
-                )
+    refuse_inputs(outdir, every, protect)
     existing = sorted(p.name for p in every if p.exists())
     if existing and not force:
         raise G2SError(f"{outdir}: already holds results ({', '.join(existing)}); use --force to replace them")

@@ -5,7 +5,7 @@ from __future__ import annotations
 import math
 import time
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Any
 
 import networkx as nx
@@ -17,23 +17,21 @@ from g2s_core.disconnected import disconnected_warning
 from g2s_core.errors import ConfigError, G2SError
 from g2s_core.model import AnalyzerResult, RunContext, RunResult, StageStats
 from g2s_core.plugin import PluginParams
-from g2s_core.loops import add_loops
 from g2s_core.registry import PluginInfo, Registry
 from g2s_core.rooted import root_forest
 from g2s_core.simplify import simplify_forest
-from g2s_core.stages import PIPELINE
+from g2s_core.stages import BY_KEY, PIPELINE
 
 ProgressCallback = Callable[[str], None]
 
 
 @dataclass(frozen=True)
 class ResolvedStage:
-    """A config section matched to its plugin, with validated parameters."""
+    """A config section's plugin with validated parameters; ``key`` names its values (analyzers)."""
 
-    section: str
     plugin: PluginInfo
     params: PluginParams
-    key: str | None = None
+    key: str
 
 
 @dataclass(frozen=True)
@@ -45,10 +43,6 @@ class Plan:
 
     config: RunConfig
     stages: dict[str, tuple[ResolvedStage, ...]]
-
-    @property
-    def analyzers(self) -> tuple[ResolvedStage, ...]:
-        return self.stages.get("analyzers", ())
 
 
 def plan(config: RunConfig, registry: Registry, source: str = "<config>") -> Plan:
@@ -63,15 +57,14 @@ def plan(config: RunConfig, registry: Registry, source: str = "<config>") -> Pla
     try:
         for section in config.stages_to_run():
             entry = getattr(config, section)
-            if section == "analyzers":
-                if entry:
-                    stages[section] = tuple(_resolve(registry, section, f"analyzers.{i}", a) for i, a in enumerate(entry))
-                continue
-            if entry is None:
+            if entry is None and not BY_KEY[section].optional:
                 raise ConfigError(
                     f"{section}: required key is missing (a plugin for this stage, or stop_after before it)"
                 )
-            stages[section] = (_resolve(registry, section, section, entry),)
+            listed = {f"{section}.{i}": e for i, e in enumerate(entry)} if isinstance(entry, list) else {section: entry}
+            resolved = tuple(_resolve(registry, section, key, e) for key, e in listed.items() if e is not None)
+            if resolved:
+                stages[section] = resolved
     except ConfigError as exc:
         raise ConfigError(f"{source}: {exc}") from None
     keys = [a.key for a in stages.get("analyzers", ())]
@@ -84,8 +77,7 @@ def plan(config: RunConfig, registry: Registry, source: str = "<config>") -> Pla
 def _resolve(registry: Registry, section: str, key: str, entry: Any) -> ResolvedStage:
     info = registry.get(section, entry.plugin, key=f"{key}.plugin")
     params = registry.validate_params(info, entry.params, f"{key}.params")
-    values_key = (entry.key or entry.plugin) if section == "analyzers" else None
-    return ResolvedStage(section, info, params, values_key)
+    return ResolvedStage(info, params, getattr(entry, "key", None) or entry.plugin)
 
 
 def run(
@@ -98,8 +90,8 @@ def run(
 ) -> RunResult:
     """Run the planned stages on ``mesh`` in the order of the stage table and return what they produced.
 
-    Each step stores its output in the result; a step returns ``False`` when
-    there is nothing left to do (e.g. no terminals), which ends the run early.
+    Each step stores its output in the result; a step that returns ``False``
+    (nothing left to do, e.g. no terminals) ends the run early.
     """
     config = plan_.config
     say = progress or (lambda _message: None)
@@ -107,16 +99,14 @@ def run(
     context = RunContext(mesh=mesh, agent=config.agent, centre=bounds.mean(axis=0))
     result = RunResult(config=config.record(), mesh_name=mesh_name, mesh_sha256=mesh_sha256, context=context)
     for stage in PIPELINE:
-        if stage.key not in plan_.stages:
-            break
+        if stage.key not in plan_.stages:  # an optional stage left out, or past stop_after
+            continue
         say(f"{stage.step}: {stage.label}")
         record: dict[str, Any] = {}
         start = time.perf_counter()
-        step = Step(registry, plan_.stages[stage.key], result, record, config)
-        go_on = _STEPS[stage.key](step)
-        seconds = time.perf_counter() - start - sum(s.seconds for s in step.followers)
-        result.stages.append(StageStats(stage.timing, seconds, **record))
-        result.stages.extend(step.followers)
+        step = Step(registry, plan_.stages[stage.key], result, record)
+        go_on = _STEPS[stage.key](step) is not False
+        result.stages.append(StageStats(stage.timing, time.perf_counter() - start, **record))
         if not go_on:
             break
     return result
@@ -131,9 +121,6 @@ class Step:
     planned: tuple[ResolvedStage, ...]
     result: RunResult
     record: dict[str, Any]
-    config: RunConfig
-    followers: list[StageStats] = field(default_factory=list)
-    """Stats of work done right after the stage (the ``loops:`` step), listed after its own."""
 
     def call(self, **kwargs: Any) -> Any:
         """The stage's single plugin, called with its parameters and the run's context."""
@@ -141,17 +128,16 @@ class Step:
         return self.registry.call(chosen.plugin, params=chosen.params, context=self.result.context, **kwargs)
 
 
-def _graph_step(step: Step) -> bool:
+def _graph_step(step: Step) -> bool | None:
     result = step.result
     graph = step.call(mesh=result.context.mesh)
     if graph.number_of_nodes() == 0:
         raise G2SError(f"{result.mesh_name}: no walkable surface found for the agent (the initial graph is empty)")
     step.record.update(nodes=graph.number_of_nodes(), edges=graph.number_of_edges())
     result.context.graph = result.graph = graph
-    return True
 
 
-def _terminals_step(step: Step) -> bool:
+def _terminals_step(step: Step) -> bool | None:
     result, graph = step.result, step.result.graph
     terminals = step.call(graph=graph)
     step.record.update(terminals=len(terminals.nodes))
@@ -166,39 +152,38 @@ def _terminals_step(step: Step) -> bool:
     return bool(terminals.nodes)
 
 
-def _steiner_step(step: Step) -> bool:
+def _steiner_step(step: Step) -> bool | None:
     result = step.result
     steiner = steiner_forest(result.graph, result.terminals.nodes, lambda sub, terms: step.call(
         graph=sub, terminals=terms), result.context)
     step.record.update(nodes=steiner.number_of_nodes(), edges=steiner.number_of_edges())
     result.steiner = steiner
-    if step.config.loops is not None:
-        start = time.perf_counter()
-        looped = add_loops(result.graph, steiner, step.config.loops.stretch, step.config.loops.min_gain)
-        step.followers.append(StageStats("loops", time.perf_counter() - start, looped.number_of_nodes(), looped.number_of_edges()))
-        result.looped = looped
-    return True
 
 
-def _roots_step(step: Step) -> bool:
+def _loops_step(step: Step) -> bool | None:
+    result = step.result
+    looped = _with_graph_attributes(step.call(graph=result.graph, forest=result.steiner), result.graph)
+    step.record.update(nodes=looped.number_of_nodes(), edges=looped.number_of_edges())
+    result.looped = looped
+
+
+def _roots_step(step: Step) -> bool | None:
     result = step.result
     # the root selector scores the Steiner tree itself (its measures are O(n) on a
     # tree, not on a tree with loops); nodes the loops added are never roots
     structure = result.looped if result.looped is not None else result.steiner
     scores = {**dict.fromkeys(structure, -math.inf), **step.call(tree=result.steiner)}
     result.forest = root_forest(structure, scores, result.context.centre)
-    return True
 
 
-def _simplify_step(step: Step) -> bool:
+def _simplify_step(step: Step) -> bool | None:
     result = step.result
     structure = simplify_forest(result.forest, step.call())
     step.record.update(nodes=structure.number_of_nodes(), edges=structure.number_of_edges())
     result.structure = structure
-    return True
 
 
-def _analyzers_step(step: Step) -> bool:
+def _analyzers_step(step: Step) -> bool | None:
     result = step.result
     undirected = result.structure.to_undirected(as_view=True)
     for analyzer in step.planned:
@@ -207,13 +192,13 @@ def _analyzers_step(step: Step) -> bool:
             result.features[analyzer.key] = dict(values.features)
             values = values.values
         result.analysis[analyzer.key] = {n: float(values[n]) for n in result.structure}
-    return True
 
 
-_STEPS: dict[str, Callable[[Step], bool]] = {
+_STEPS: dict[str, Callable[[Step], bool | None]] = {
     "graph": _graph_step,
     "terminals": _terminals_step,
     "steiner": _steiner_step,
+    "loops": _loops_step,
     "roots": _roots_step,
     "simplify": _simplify_step,
     "analyzers": _analyzers_step,
@@ -255,8 +240,13 @@ def steiner_forest(
         tree = solve(graph if len(groups) == 1 else graph.subgraph(components[index]), group)
         forest.add_nodes_from(sorted(tree.nodes))
         forest.add_edges_from(sorted(tuple(sorted(e)) for e in tree.edges))
-    for node in forest.nodes:
-        forest.nodes[node].update(graph.nodes[node])
-    for u, v in forest.edges:
-        forest.edges[u, v].update(graph.edges[u, v])
-    return forest
+    return _with_graph_attributes(forest, graph)
+
+
+def _with_graph_attributes(part: nx.Graph, graph: nx.Graph) -> nx.Graph:
+    """``part`` (nodes and edges of ``graph``) with ``graph``'s attributes copied onto them."""
+    for node in part.nodes:
+        part.nodes[node].update(graph.nodes[node])
+    for u, v in part.edges:
+        part.edges[u, v].update(graph.edges[u, v])
+    return part

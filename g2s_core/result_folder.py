@@ -48,16 +48,12 @@ def check_writable(outdir: Path) -> None:
             no permission, ``/proc``).
     """
     try:
-        base = outdir
-        missing = []
-        while not os.path.lexists(base) and base != base.parent:
-            missing.append(base.name)
-            base = base.parent
+        base, missing = _missing_folders(outdir)
         if not base.is_dir():
             if base == outdir:
                 raise G2SError(f"{outdir}: exists and is not a folder")
             raise G2SError(f"{outdir}: cannot create the folder, {base} is not a folder")
-        longest = max((len(os.fsencode(name)) for name in missing), default=0)
+        longest = max((len(os.fsencode(folder.name)) for folder in missing), default=0)
         if longest > os.pathconf(base, "PC_NAME_MAX"):
             raise G2SError(f"{outdir}: cannot create the folder (a name of {longest} bytes is too long)")
         os.rmdir(tempfile.mkdtemp(dir=base, prefix=f"{STAGING_MARK}{os.getpid()}-"))
@@ -85,7 +81,9 @@ def staged(outdir: Path, obsolete: Sequence[Path] = (), protect: Sequence[Path] 
     created: list[Path] = []
     staging = None
     try:
-        _make_folders(outdir.parent, created)
+        for folder in reversed(_missing_folders(outdir.parent)[1]):  # outermost first
+            folder.mkdir()
+            created.append(folder)
         inside = outdir.is_dir()
         home = outdir if inside else outdir.parent
         _remove_stale(home)
@@ -127,10 +125,7 @@ def _move_into_place(staging: Path, outdir: Path, obsolete: Sequence[Path], prot
         os.rename(staging, outdir)
         return
     names = sorted(p.name for p in staging.iterdir())
-    for path in [outdir / name for name in names] + list(obsolete):
-        for guarded in protect:
-            if same_file(path, Path(guarded)):
-                raise G2SError(f"{outdir}: the input {guarded} has the name of a result file ({path.name})")
+    refuse_inputs(outdir, [outdir / name for name in names] + list(obsolete), protect)
     for name in names:
         os.replace(staging / name, outdir / name)
     for path in obsolete:
@@ -139,15 +134,13 @@ def _move_into_place(staging: Path, outdir: Path, obsolete: Sequence[Path], prot
     staging.rmdir()
 
 
-def _make_folders(folder: Path, created: list[Path]) -> None:
-    """Create ``folder`` and its missing parents, outermost first, appending each to ``created``."""
+def _missing_folders(folder: Path) -> tuple[Path, list[Path]]:
+    """The nearest path at or above ``folder`` that exists, and the missing ones below it, innermost first."""
     missing = []
-    while not folder.exists() and folder != folder.parent:
+    while not os.path.lexists(folder) and folder != folder.parent:
         missing.append(folder)
         folder = folder.parent
-    for path in reversed(missing):
-        path.mkdir()
-        created.append(path)
+    return folder, missing
 
 
 def _remove_stale(home: Path) -> None:
@@ -173,6 +166,15 @@ def _remove_if_empty(folder: Path) -> None:
         folder.rmdir()
     except OSError:
         pass
+
+
+def refuse_inputs(outdir: Path, paths: Sequence[Path], protect: Sequence[Path]) -> None:
+    """Raise :class:`G2SError` when a result path of ``paths`` is one of the input files ``protect``."""
+    for path in paths:
+        for guarded in protect:
+            if same_file(path, Path(guarded)):
+                raise G2SError(f"{outdir}: the input {guarded} has the name of a result file ({path.name}); "
+                               "choose another output folder")
 
 
 def same_file(a: Path, b: Path) -> bool:

@@ -6,7 +6,7 @@ ascending id order so that the result is deterministic. The paper selects a
 root among the *unvisited* nodes repeatedly; since a traversal visits a whole
 component, that is one root per component, which is what is done here.
 
-A structure with loops (see :mod:`g2s_core.loops`) is rooted the same way:
+A structure with loops (the optional ``loops`` stage) is rooted the same way:
 the depth-first traversal gives a rooted spanning tree of each component,
 and every other edge is kept as a *loop edge* (``loop=True``), directed from
 its shallower end to its deeper one (equal depths: lower id first). Tree

@@ -1,4 +1,4 @@
-"""The one table of plugin kinds: the six pipeline stages, output writers and level generators.
+"""The one table of plugin kinds: the seven pipeline stages, output writers and level generators.
 
 Everything that lists stages reads it: the config's sections
 (:mod:`g2s_core.config`), the registry's look-ups and ``g2s plugins``
@@ -13,6 +13,7 @@ key          title              hook                        the plugin returns
 graph        GraphBuilder       ``g2s_build_graph``         an undirected networkx.Graph
 terminals    TerminalSelector   ``g2s_select_terminals``    Terminals whose nodes are in the graph
 steiner      SteinerSolver      ``g2s_steiner_tree``        a tree of graph edges joining the terminals
+loops        LoopAdder          ``g2s_add_loops``           the forest plus graph edges (optional)
 roots        RootSelector       ``g2s_root_scores``         a finite score for every node of the tree
 simplify     SimplifyPredicate  ``g2s_simplify_predicate``  a callable P(tree, a, b, c) -> bool
 analyzers    Analyzer           ``g2s_analyze``             a number for every node of the structure [*]_
@@ -59,6 +60,8 @@ class Stage:
         result: the :class:`~g2s_core.model.RunResult` attribute holding its output.
         timing: the :class:`~g2s_core.model.StageStats` name of its step.
         declares: module attributes its plugins must declare besides ``NAME``.
+        optional: a pipeline stage whose section a config may leave out (the run
+            skips it); a section listing plugins (``analyzers``) may be empty anyway.
     """
 
     key: str
@@ -72,10 +75,7 @@ class Stage:
     result: str = ""
     timing: str = ""
     declares: tuple[str, ...] = ()
-
-    @property
-    def in_pipeline(self) -> bool:
-        return bool(self.step)
+    optional: bool = False
 
 
 def _graph(value: Any, kwargs: Mapping[str, Any], plugin: Any) -> str | None:
@@ -91,6 +91,11 @@ def _terminals(value: Any, kwargs: Mapping[str, Any], plugin: Any) -> str | None
     return f"nodes not in the graph: {unknown[:5]}" if unknown else None
 
 
+def _not_in(part: nx.Graph, whole: nx.Graph) -> list[Any]:
+    """The nodes and edges of ``part`` that ``whole`` lacks."""
+    return [n for n in part if n not in whole] + [e for e in part.edges if not whole.has_edge(*e)]
+
+
 def _tree(value: Any, kwargs: Mapping[str, Any], plugin: Any) -> str | None:
     graph, terminals = kwargs["graph"], kwargs["terminals"]
     if not isinstance(value, nx.Graph):
@@ -98,10 +103,21 @@ def _tree(value: Any, kwargs: Mapping[str, Any], plugin: Any) -> str | None:
     missing = [t for t in terminals if t not in value]
     if missing:
         return f"a tree that misses terminals {missing[:5]}"
-    foreign = [e for e in value.edges if not graph.has_edge(*e)]
+    foreign = _not_in(value, graph)
     if foreign:
-        return f"a tree with edges not in the graph: {foreign[:3]}"
+        return f"a tree with nodes or edges not in the graph: {foreign[:3]}"
     return None if nx.is_tree(value) else "a graph that is not a tree"
+
+
+def _looped(value: Any, kwargs: Mapping[str, Any], plugin: Any) -> str | None:
+    problem = _graph(value, kwargs, plugin)
+    if problem is not None:
+        return problem
+    missing = _not_in(kwargs["forest"], value)
+    if missing:
+        return f"a graph that misses nodes or edges of the forest: {missing[:3]}"
+    foreign = _not_in(value, kwargs["graph"])
+    return f"nodes or edges not in the graph: {foreign[:3]}" if foreign else None
 
 
 def _node_numbers(values: Any, nodes: Any, finite: bool) -> str | None:
@@ -163,6 +179,8 @@ STAGES: tuple[Stage, ...] = (
     Stage("steiner", "SteinerSolver", hookspecs.g2s_steiner_tree.__name__,
           "a tree of graph edges joining the terminals",
           _tree, step="Step 3", label="Steiner tree", result="steiner", timing="steiner"),
+    Stage("loops", "LoopAdder", hookspecs.g2s_add_loops.__name__, "the forest plus edges of the graph",
+          _looped, step="Step 3", label="loops kept", result="looped", timing="loops", optional=True),
     Stage("roots", "RootSelector", hookspecs.g2s_root_scores.__name__, "a finite score for every node of the tree",
           _root_scores, step="Step 4", label="rooted trees", result="forest", timing="roots"),
     Stage("simplify", "SimplifyPredicate", hookspecs.g2s_simplify_predicate.__name__,
@@ -178,6 +196,5 @@ STAGES: tuple[Stage, ...] = (
 
 BY_KEY: dict[str, Stage] = {stage.key: stage for stage in STAGES}
 BY_HOOK: dict[str, Stage] = {stage.hook: stage for stage in STAGES}
-PIPELINE: tuple[Stage, ...] = tuple(stage for stage in STAGES if stage.in_pipeline)
+PIPELINE: tuple[Stage, ...] = tuple(stage for stage in STAGES if stage.step)
 """The pipeline's stages, in order."""
-PIPELINE_KEYS: tuple[str, ...] = tuple(stage.key for stage in PIPELINE)

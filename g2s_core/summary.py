@@ -10,17 +10,6 @@ import networkx as nx
 from g2s_core.model import RunResult, StageStats
 from g2s_core.stages import PIPELINE
 
-def _step_rows() -> tuple[tuple[str, str, str], ...]:
-    rows = []
-    for stage in PIPELINE:
-        rows.append((stage.timing, stage.step, stage.label))
-        if stage.key == "steiner":  # the config's ``loops:`` step runs right after it (g2s_core.loops)
-            rows.append(("loops", stage.step, "loops kept"))
-    return tuple(rows)
-
-
-STEP_ROWS: tuple[tuple[str, str, str], ...] = _step_rows()
-"""The paper's per-stage table rows: (timing name, step, label)."""
 
 
 def final_graph(result: RunResult) -> tuple[str | None, nx.Graph | None]:
@@ -49,12 +38,12 @@ def stage_rows(stages: Sequence[StageStats]) -> list[tuple[str, str, str, str, s
     """
     by_name = {s.stage: s for s in stages}
     rows = []
-    for stage, step, label in STEP_ROWS:
-        stats = by_name.get(stage)
+    for stage in PIPELINE:
+        stats = by_name.get(stage.timing)
         if stats is None:
             continue
-        nodes = stats.terminals if stage == "terminals" else stats.nodes
-        rows.append((step, label, milliseconds(stats.seconds), _count(nodes), _count(stats.edges)))
+        nodes = stats.terminals if stage.key == "terminals" else stats.nodes
+        rows.append((stage.step, stage.label, milliseconds(stats.seconds), _count(nodes), _count(stats.edges)))
     total = sum(s.seconds for s in stages)
     rows.append(("total", "", milliseconds(total), "", ""))
     return rows

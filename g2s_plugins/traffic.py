@@ -46,8 +46,8 @@ import numpy as np
 import scipy.sparse as sp
 from scipy.sparse import csgraph
 
-from g2s_core.surface_arrays import SurfaceArrays, surface_arrays
 from g2s_plugins import _trees
+from g2s_plugins.surface_arrays import SurfaceArrays, surface_arrays
 
 __all__ = ["SurfaceArrays", "distance_to", "flow_error_bound", "od_flow", "represented_area", "subtree_sums", "surface_arrays"]
 

@@ -12,7 +12,7 @@ import pytest
 
 from g2s_core import pipeline
 from g2s_core.config import PRESETS_DIR, load_raw_config, parse_config
-from g2s_core.loops import add_loops
+from g2s_plugins.loops.spanner import add_loops
 from g2s_core.mesh import load_mesh, mesh_sha256
 from g2s_core.model import RunContext
 from g2s_core.registry import Registry
@@ -82,6 +82,17 @@ def test_two_floors_loop_around_the_central_block_is_kept(registry):
     paper = run(registry, mesh, preset("map_analysis_paper"))
     assert nx.cycle_basis(new.structure.to_undirected())
     assert not nx.cycle_basis(paper.structure.to_undirected())
+
+
+def test_loops_are_an_optional_stage_of_their_own(registry):
+    mesh = samples.two_floors().mesh
+    looped = run(registry, mesh, preset("map_analysis", stop_after="loops"))
+    assert [s.stage for s in looped.stages] == ["graph", "terminals", "steiner", "loops"]
+    assert nx.cycle_basis(looped.looped) and not nx.cycle_basis(looped.steiner)
+    assert all("pos" in looped.looped.nodes[n] for n in looped.looped)  # the graph's attributes, copied by the pipeline
+    tree = run(registry, mesh, preset("map_analysis", loops=None))
+    assert tree.looped is None and "loops" not in tree.config and tree.stage("loops") is None
+    assert not nx.cycle_basis(tree.structure.to_undirected())
 
 
 def test_loop_edges_appear_in_every_output(registry, tmp_path):

@@ -169,6 +169,40 @@ def test_a_root_selector_that_misses_nodes_fails_as_itself():
     assert str(caught.value) == "RootSelector plugin 'partial' (package 'pkg-r') failed: returned no value for nodes [1, 2]"
 
 
+def test_a_loop_adder_must_keep_the_forest_and_add_only_graph_edges():
+    import networkx as nx
+
+    graph = nx.cycle_graph(4)
+    forest = nx.path_graph(4)
+
+    @hookimpl
+    def drop(graph, forest):
+        return nx.Graph([(0, 1)])
+
+    @hookimpl
+    def invent(graph, forest):
+        return nx.Graph([*forest.edges, (0, 2)])
+
+    @hookimpl
+    def close(graph, forest):
+        return nx.Graph([*forest.edges, (3, 0)])
+
+    registry = Registry()
+    infos = [registry.register(make_plugin(name, g2s_add_loops=hook), package="pkg-l", entry_point=name)
+             for name, hook in (("drop", drop), ("invent", invent), ("close", close))]
+    problems = []
+    for info in infos[:2]:
+        with pytest.raises(PluginFailure) as caught:
+            registry.call(info, graph=graph, forest=forest, params=info.params_model(), context=None)
+        problems.append(str(caught.value))
+    assert problems == [
+        "LoopAdder plugin 'drop' (package 'pkg-l') failed: returned a graph that misses nodes or edges of the forest: [2, 3, (1, 2)]",
+        "LoopAdder plugin 'invent' (package 'pkg-l') failed: returned nodes or edges not in the graph: [(0, 2)]",
+    ]
+    closed = registry.call(infos[2], graph=graph, forest=forest, params=infos[2].params_model(), context=None)
+    assert nx.cycle_basis(closed)
+
+
 def test_a_predicate_that_returns_none_or_raises_fails_as_itself():
     @hookimpl
     def predicate():

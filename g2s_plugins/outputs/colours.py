@@ -50,7 +50,7 @@ NAVMESH_ALPHA = 0.35
 GRAPH_COLOUR: RGB = (90, 90, 90)
 STEINER_COLOUR: RGB = (150, 60, 200)
 LOOP_COLOUR: RGB = (25, 25, 25)
-"""Loop edges (a structure with loops, see g2s_core.loops): near-black, dotted where the format allows."""
+"""Loop edges (a structure with loops, see g2s_plugins.loops.spanner): near-black, dotted where the format allows."""
 CHOKEPOINT_COLOUR: RGB = (20, 20, 20)
 
 REGION_COLOURS: tuple[RGB, ...] = (

@@ -37,7 +37,7 @@ viewers' outliners find them), each holding its objects:
     ``traffic``, ``regions``, ``articulation``, ``portal`` ...).
 ``loops``
     The loop edges of a structure with loops (config ``loops:``, see
-    :mod:`g2s_core.loops`): near-black tubes, mesh ``loop_edges`` whose extras
+    :mod:`g2s_plugins.loops.spanner`): near-black tubes, mesh ``loop_edges`` whose extras
     list its ``edges``; empty for a tree.
 
 Groups of analyzers that did not run are empty.

@@ -33,7 +33,7 @@ Chokepoints                        a bar across each portal, an x sized by      
 .. [2] the first key is shown, with its colour bar.
 .. [3] one trace per depth colour in use (at most ``len(DEPTH_COLOURS)``);
    loop edges drawn dotted near-black in the same layer.
-.. [4] with loops kept (config ``loops:``, see :mod:`g2s_core.loops`); the
+.. [4] with loops kept (config ``loops:``, see :mod:`g2s_plugins.loops.spanner`); the
    analysis layers leave loop edges to this layer.
 
 The Regions and Chokepoints layers appear when the ``regions`` and

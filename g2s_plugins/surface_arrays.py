@@ -1,7 +1,7 @@
 """The surface graph as scipy arrays, for the stages and analyses that search it as a whole.
 
 Built once per graph object (cached while its node and edge counts are
-unchanged): the loops step, the coverage selector and the area/flow
+unchanged): the ``spanner`` loop adder, the coverage selector and the area/flow
 analyses all read the same arrays.
 """
 

@@ -1,4 +1,4 @@
-"""Bounded redundancy: loops of the walkable graph added back to the Steiner forest.
+"""Bounded redundancy (a greedy spanner): loops of the walkable graph added back to the Steiner forest.
 
 A tree loses every loop of the level, so two places side by side across a
 loop look far apart along the structure. This step adds back the shortest
@@ -10,7 +10,8 @@ initial-graph path between two structure nodes a, b whenever
 greedily, shortest path first, re-checking d_S after every addition: a
 greedy spanner (Althoefer et al., "On sparse spanners of weighted graphs",
 1993) over the structure's candidate pairs. ``stretch = inf`` keeps the
-paper's tree. ``min_gain`` keeps the small loops around pillars out.
+paper's tree (as does a config without a ``loops:`` section). ``min_gain``
+keeps the small loops around pillars out.
 
 Candidate pairs: each initial-graph node is assigned to its nearest
 structure node (Voronoi cells along the graph, one multi-source Dijkstra,
@@ -38,9 +39,27 @@ import math
 import networkx as nx
 import numpy as np
 import scipy.sparse as sp
+from pydantic import Field
 from scipy.sparse import csgraph
 
-from g2s_core.surface_arrays import SurfaceArrays, surface_arrays
+from g2s_core.model import RunContext
+from g2s_core.plugin import PluginParams, hookimpl
+from g2s_plugins.surface_arrays import SurfaceArrays, surface_arrays
+
+NAME = "spanner"
+
+
+class Params(PluginParams):
+    """When a loop path is worth adding."""
+
+    stretch: float = Field(1.5, ge=1, description="add a path when the structure is more than this many times longer between its ends")
+    min_gain: float = Field(3.0, ge=0, description="and the structure is longer by more than this, metres")
+
+
+@hookimpl
+def g2s_add_loops(graph: nx.Graph, forest: nx.Graph, params: Params, context: RunContext) -> nx.Graph:
+    """LoopAdder: greedy spanner paths between the forest's nodes (Althoefer et al. 1993)."""
+    return add_loops(graph, forest, params.stretch, params.min_gain)
 
 
 def add_loops(graph: nx.Graph, structure: nx.Graph, stretch: float, min_gain: float) -> nx.Graph:
