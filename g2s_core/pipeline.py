@@ -267,8 +267,9 @@ def steiner_forest(
 
 def _with_graph_attributes(part: nx.Graph, graph: nx.Graph) -> nx.Graph:
     """``part`` (nodes and edges of ``graph``) with ``graph``'s attributes copied onto them."""
-    for node in part.nodes:
-        part.nodes[node].update(graph.nodes[node])
-    for u, v in part.edges:
-        part.edges[u, v].update(graph.edges[u, v])
+    nodes, adjacency = graph.nodes, graph.adj
+    for node, data in part.nodes(data=True):
+        data.update(nodes[node])
+    for u, v, data in part.edges(data=True):
+        data.update(adjacency[u][v])
     return part

@@ -201,8 +201,10 @@ class Registry:
         if each is None:
             return value
 
+        guarded = _guarded(info, value, "its function raised")
+
         def checked(*args: Any) -> Any:
-            answer = _guarded(info, value, "its function raised")(*args)
+            answer = guarded(*args)
             wrong = each(answer)
             if wrong is not None:
                 raise info.failure(f"its function returned {wrong}")

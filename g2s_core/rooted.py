@@ -62,34 +62,36 @@ def root_forest(forest: nx.Graph, scores: Mapping[int, float], centre: np.ndarra
     components = sorted((min(c), c) for c in nx.connected_components(forest))
     roots = [min(c, key=rank.__getitem__) for _, c in components]
     rooted = nx.DiGraph(roots=roots)
+    # gathered first, then added in bulk in the same order (networkx's per-call bookkeeping)
+    nodes, edges, depth = [], [], {}
     for root in roots:
-        depth = {root: 0}
-        rooted.add_node(root, **forest.nodes[root], depth=0, root=root)
+        depth[root] = 0
+        nodes.append((root, {**forest.nodes[root], "depth": 0, "root": root}))
         for parent, child in nx.dfs_edges(forest, root, sort_neighbors=sorted):
             depth[child] = depth[parent] + 1
-            rooted.add_node(child, **forest.nodes[child], depth=depth[child], root=root)
-            rooted.add_edge(parent, child, **forest.edges[parent, child])
+            nodes.append((child, {**forest.nodes[child], "depth": depth[child], "root": root}))
+            edges.append((parent, child, forest.edges[parent, child]))
+    rooted.add_nodes_from(nodes)
+    rooted.add_edges_from(edges)
     loop_edges = [(u, v) for u, v in forest.edges if not rooted.has_edge(u, v) and not rooted.has_edge(v, u)]
     for u, v in sorted(loop_edges, key=lambda e: sorted(e)):
-        first, second = sorted((u, v), key=lambda node: (rooted.nodes[node]["depth"], node))
+        first, second = sorted((u, v), key=lambda node: (depth[node], node))
         rooted.add_edge(first, second, **forest.edges[u, v], loop=True)
     return rooted
 
 
 def tree_children(forest: nx.DiGraph, node: int) -> list[int]:
     """The children of ``node`` in its rooted tree (loop edges left out), by ascending id."""
-    return sorted(child for child in forest.successors(node) if not forest.edges[node, child].get("loop", False))
+    return sorted(child for child, data in forest.succ[node].items() if not data.get("loop", False))
 
 
 def tree_parent(forest: nx.DiGraph, node: int) -> int | None:
     """The parent of ``node`` in its rooted tree (``None`` for a root)."""
-    edges = forest.edges
-    return next((p for p in forest.predecessors(node) if not edges[p, node].get("loop", False)), None)
+    return next((p for p, data in forest.pred[node].items() if not data.get("loop", False)), None)
 
 
 def on_loop_edge(forest: nx.DiGraph, node: int) -> bool:
     """Whether ``node`` is an end of a loop edge."""
-    edges = forest.edges
-    return any(edges[node, c].get("loop", False) for c in forest.successors(node)) or any(
-        edges[p, node].get("loop", False) for p in forest.predecessors(node)
+    return any(data.get("loop", False) for data in forest.succ[node].values()) or any(
+        data.get("loop", False) for data in forest.pred[node].values()
     )
