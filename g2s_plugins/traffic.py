@@ -161,7 +161,9 @@ def od_flow(
     block = max(1, BLOCK_ENTRIES // n)
     for lo in range(0, len(sources), block):
         batch = sources[lo:lo + block]
-        _, predecessors = csgraph.dijkstra(adjacency, directed=False, indices=batch, return_predecessors=True)
+        # adjacency is symmetric: a directed search scans each edge once instead of from both of
+        # its stored directions, with the same distances and predecessors
+        _, predecessors = csgraph.dijkstra(adjacency, directed=True, indices=batch, return_predecessors=True)
         through = subtree_sums(predecessors, weight) - weight[None, :]
         through[np.arange(len(batch)), batch] = 0.0
         flow += factor[lo:lo + block] @ through
