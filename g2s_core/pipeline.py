@@ -87,10 +87,11 @@ def _cycle_collector_paused() -> Iterator[None]:
     """CPython's cyclic garbage collector off while the stages run (restored after).
 
     The stages build hundreds of thousands of small containers (networkx's
-    node, adjacency and edge dicts) that form no reference cycles, and every
-    collection the allocations trigger rescans all the live ones: about an
-    eighth of the CPU time of a 100k-polygon level (docs/performance.md).
-    Reference counting still frees everything the stages drop.
+    node, adjacency and edge dicts), and every collection their allocations
+    trigger rescans all the live ones: about an eighth of the CPU time of a
+    100k-polygon level (docs/performance.md). Reference counting still frees
+    what the stages drop; a reference cycle among it waits for the first
+    collection after the run.
     """
     enabled = gc.isenabled()
     gc.disable()
