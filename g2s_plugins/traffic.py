@@ -49,7 +49,7 @@ from scipy.sparse import csgraph
 from g2s_plugins import _trees
 from g2s_plugins.surface_arrays import SurfaceArrays, surface_arrays
 
-__all__ = ["SurfaceArrays", "distance_to", "flow_error_bound", "od_flow", "represented_area", "subtree_sums", "surface_arrays"]
+__all__ = ["SurfaceArrays", "distance_to", "flow_error_bound", "gather", "od_flow", "represented_area", "subtree_sums", "surface_arrays"]
 
 BLOCK_ENTRIES = 1 << 22
 """Distance/predecessor entries computed at once by :func:`od_flow` (32 MB of float64)."""
@@ -75,20 +75,34 @@ def distance_to(arrays: SurfaceArrays, sources: np.ndarray) -> tuple[np.ndarray,
     return distance, nearest
 
 
-def represented_area(graph: nx.Graph, structure_nodes: Iterable[Hashable]) -> dict[Hashable, float]:
-    """The walkable area each structure node stands for, m².
+def gather(
+    graph: nx.Graph, structure_nodes: Iterable[Hashable], values: np.ndarray, mean: bool = False
+) -> dict[Hashable, float]:
+    """Per structure node, the sum (or mean) of ``values`` over the graph nodes it stands for.
 
-    Every node of ``graph`` gives its ``area`` to its nearest structure node
-    along the graph (equal distances: scipy's choice, deterministic), so the
-    nodes a simplification removed count for the node that absorbed their
-    part of the surface. Nodes that reach no structure node give nothing.
+    Every node of ``graph`` belongs to its nearest structure node along the
+    graph (equal distances: scipy's choice, deterministic), so the nodes a
+    simplification removed count for the node that absorbed their part of
+    the surface. Nodes that reach no structure node give nothing.
+
+    Args:
+        values: (n,) one value per graph node, in the order of
+            :func:`surface_arrays`.
+        mean: divide each sum by the number of graph nodes it gathers.
     """
     arrays = surface_arrays(graph)
     structure = sorted(structure_nodes)
     _, nearest = distance_to(arrays, arrays.rows(structure))
     reached = nearest >= 0
-    totals = np.bincount(nearest[reached], weights=arrays.area[reached], minlength=arrays.n)
+    totals = np.bincount(nearest[reached], weights=np.asarray(values, dtype=np.float64)[reached], minlength=arrays.n)
+    if mean:
+        totals /= np.maximum(np.bincount(nearest[reached], minlength=arrays.n), 1)
     return {node: float(totals[arrays.index[node]]) for node in structure}
+
+
+def represented_area(graph: nx.Graph, structure_nodes: Iterable[Hashable]) -> dict[Hashable, float]:
+    """The walkable area each structure node stands for, m² (:func:`gather` of the nodes' ``area``)."""
+    return gather(graph, structure_nodes, surface_arrays(graph).area)
 
 
 def subtree_sums(parent: np.ndarray, values: np.ndarray) -> np.ndarray:

@@ -20,6 +20,7 @@ from g2s_core.rooted import root_forest
 from g2s_core.simplify import simplify_forest
 from g2s_plugins import centrality, evaluation, traffic
 from g2s_plugins.analyzers import betweenness as betweenness_analyzer
+from g2s_plugins.analyzers import flow as flow_analyzer
 from g2s_plugins.outputs import gltf, heatmap, html_report
 from g2s_plugins.outputs.structure_json import structure_document
 from g2s_plugins.samples import levels as samples
@@ -74,6 +75,38 @@ def test_loop_edges_survive_rooting_and_simplification():
     simplified = simplify_forest(rooted, lambda tree, a, b, c: True)
     assert nx.cycle_basis(simplified.to_undirected()), "simplification broke the loop"
     assert any(loop for _, _, loop in simplified.edges(data="loop"))
+
+
+def test_ring_around_a_square_block_keeps_only_its_four_corners():
+    # eight nodes around a square block: corners and middles of its sides; two nodes see each other on a common side
+    corners_and_middles = [(-1, -1), (0, -1), (1, -1), (1, 0), (1, 1), (0, 1), (-1, 1), (-1, 0)]
+    graph = nx.cycle_graph(8)
+    for node, (x, z) in enumerate(corners_and_middles):
+        graph.nodes[node]["pos"] = (float(x), 0.0, float(z))
+    rooted = root_forest(graph, {n: float(n == 0) for n in graph}, np.zeros(3))
+    assert rooted.has_edge(0, 7) and rooted.edges[0, 7]["loop"]  # the depth-first tree cut the ring at 7
+
+    def same_side(tree, a, b, c):
+        pa, pc = tree.nodes[a]["pos"], tree.nodes[c]["pos"]
+        return any(pa[i] == pc[i] and abs(pa[i]) == 1 for i in (0, 2))
+
+    simplified = simplify_forest(rooted, same_side)
+    # Algorithm 4 drops the middles 1, 3, 5; the loop pass drops 7, which Algorithm 4 cannot (a leaf of the tree)
+    assert sorted(simplified) == [0, 2, 4, 6]
+    assert sorted(map(sorted, simplified.edges)) == [[0, 2], [0, 6], [2, 4], [4, 6]]
+    assert simplified.edges[0, 6]["loop"] and simplified.edges[0, 6]["weight"] == pytest.approx(2.0)
+    assert len(nx.cycle_basis(simplified.to_undirected())) == 1
+
+
+def test_loop_pass_keeps_terminals_and_never_shrinks_a_loop_below_a_triangle():
+    graph = ring(6)
+    rooted = root_forest(graph, {n: float(n == 0) for n in graph}, np.zeros(3))
+    simplified = simplify_forest(rooted, lambda tree, a, b, c: True)
+    assert simplified.number_of_nodes() == 3 and len(nx.cycle_basis(simplified.to_undirected())) == 1
+    graph.nodes[5]["terminal"] = True
+    graph.nodes[3]["terminal"] = True
+    rooted = root_forest(graph, {n: float(n == 0) for n in graph}, np.zeros(3))
+    assert {3, 5} <= set(simplify_forest(rooted, lambda tree, a, b, c: True))
 
 
 def test_two_floors_loop_around_the_central_block_is_kept(registry):
@@ -154,6 +187,22 @@ def test_big_room_beside_a_many_polygon_corridor_swaps_rank_with_area_weighting(
     assert values == pytest.approx(weighted)
 
 
+def test_flow_analyzer_mean_and_sum_by_hand():
+    # a corridor 0 - 1 - 2 - 3 - 4 of 1 m² polygons; structure nodes 1 (cell 0, 1, 2) and 4 (cell 3, 4)
+    graph = nx.path_graph(5)
+    for node in graph:
+        graph.nodes[node].update(pos=(float(node), 0.0, 0.0), area=1.0)
+    for u, v in graph.edges:
+        graph.edges[u, v]["weight"] = 1.0
+    structure = nx.Graph([(1, 4)])
+    context = RunContext(mesh=None, agent=None, centre=np.zeros(3), graph=graph)
+    # ordered pairs through node i: 2 i (4 - i), i.e. 0, 6, 8, 6, 0; all pair weight 5² = 25
+    total = flow_analyzer.g2s_analyze(structure, flow_analyzer.Params(aggregate="sum"), context)
+    assert total == pytest.approx({1: 14 / 25, 4: 6 / 25})
+    mean = flow_analyzer.g2s_analyze(structure, flow_analyzer.Params(), context)
+    assert mean == pytest.approx({1: 14 / 3 / 25, 4: 3 / 25})
+
+
 def test_area_weighted_betweenness_with_a_loop_matches_brute_force():
     graph = ring(7, 1.0)
     graph.add_edge(0, 10, weight=2.4)  # unequal, so that no two paths tie
@@ -223,8 +272,10 @@ def test_new_preset_covers_nav_test_and_keeps_a_skeleton(registry):
     result = run(registry, mesh, preset("map_analysis"))
     quality = evaluation.evaluate(result)
     assert quality.area_within[6.0] > 0.95
-    assert quality.structure_share < 0.7  # nav_test has big polygons: 173 for 4,265 m²
-    assert -1.0 <= quality.rho <= 1.0
+    assert quality.structure_share < 0.7  # nav_test has big polygons: 179 for 4,265 m²
+    # the heat map is walking flow, exact on 179 polygons as the reference is: its rho is the ceiling by construction
+    assert quality.rho == pytest.approx(quality.rho_ceiling)
+    assert -1.0 <= quality.rho_area_betweenness < quality.rho
 
 
 def test_subtree_sums_by_hand():

@@ -35,7 +35,7 @@ def test_run_write_and_load_keep_the_command_line_guarantees(tmp_path):
     assert isinstance(result.structure.graph["roots"], list) and result.mesh_path == mesh_file
     assert all(isinstance(flag, bool) for _, flag in result.graph.nodes(data="terminal"))
     assert {n for n, flag in result.structure.nodes(data="terminal") if flag} <= set(result.terminals.nodes)
-    assert all(data["values"] == {"betweenness": result.analysis["betweenness"][n]}
+    assert all(data["values"] == {"flow": result.analysis["flow"][n]}
                for n, data in result.structure.nodes(data=True))
 
     with pytest.raises(G2SError, match="has the name of a result file"):

@@ -77,7 +77,7 @@ def test_serial_pairs_are_what_g2s_run_writes(serial, levels, tmp_path, capsys):
         assert row.nodes_graph == stages["graph"]["nodes"] and row.edges_graph == stages["graph"]["edges"]
         assert row.terminals == stages["terminals"]["terminals"]
         assert row.nodes_simplify == stages["simplify"]["nodes"]
-        assert row.betweenness_max > 0 and row.structure_length > 0 and row.openings == 0
+        assert row.flow_max > 0 and row.structure_length > 0 and row.openings == 0
 
 
 def test_a_broken_level_is_recorded_and_the_batch_goes_on(serial):

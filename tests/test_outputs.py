@@ -497,10 +497,10 @@ def test_real_run_json_is_deterministic_and_valid(tmp_path):
     document = json.loads((tmp_path / "a" / "structure.json").read_text())
     _validate(document, "structure.schema.json")
     assert document["navmesh"]["polygons"] > 0 and document["final_stage"] == "simplify"
-    assert document["analysis_keys"] == ["betweenness"]
+    assert document["analysis_keys"] == ["flow"]
     loaded = load_result(tmp_path / "a")
     assert sorted(loaded.structure.edges) == sorted(run.structure.edges)
-    assert loaded.analysis["betweenness"] == {n: common.number(v) for n, v in run.analysis["betweenness"].items()}
+    assert loaded.analysis["flow"] == {n: common.number(v) for n, v in run.analysis["flow"].items()}
 
 
 @needs_plugins
@@ -511,7 +511,7 @@ def test_cli_run_writes_the_chosen_formats_and_a_json_summary(tmp_path, capsys):
     summary = json.loads(out)
     assert summary["formats"] == ["json", "html"]  # base.yaml's default
     assert sorted(Path(f).name for f in summary["files"]) == ["report.html", "run.json", "structure.json"]
-    assert summary["final"]["stage"] == "simplify" and summary["final"]["analysis"] == ["betweenness"]
+    assert summary["final"]["stage"] == "simplify" and summary["final"]["analysis"] == ["flow"]
     assert err == ""
     code, out, err = g2s(capsys, "run", "configs/map_analysis.yaml", "sample:cross_hub", "-o", str(out_dir),
                          "--format", "glb,png", "--quiet", "--force")
@@ -541,4 +541,4 @@ def test_demo_writes_all_five_formats_and_they_agree(tmp_path, capsys):
     assert {n for n in names if n.startswith("terminal_")} == {f"terminal_{t}" for t in loaded.terminals.nodes}
     graph = nx.read_graphml(out_dir / "structure.graphml", node_type=int)
     assert sorted(graph.edges) == sorted(loaded.structure.edges)
-    assert {n: d["value_betweenness"] for n, d in graph.nodes(data=True)} == loaded.analysis["betweenness"]
+    assert {n: d["value_flow"] for n, d in graph.nodes(data=True)} == loaded.analysis["flow"]
