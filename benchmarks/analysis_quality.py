@@ -3,8 +3,9 @@
 Run: ``.venv/bin/python benchmarks/analysis_quality.py [--presets map_analysis_paper map_analysis]
 [--levels nav_test samples dungeon_1k dungeon_20k dungeon_100k] [--seeds 0 1 2]``
 
-For every level and preset it prints the measures of
-:mod:`g2s_plugins.evaluation`: share of the walkable area within 3 / 6 / 10 m
+For every level and preset it runs the preset with the ``traffic`` evaluator
+added (the evaluator plugin any config or ``g2s batch --evaluate traffic``
+uses, on :mod:`g2s_plugins.evaluation`) and prints its measures: share of the walkable area within 3 / 6 / 10 m
 of the structure (along the initial graph), share of the reference traffic
 (area-weighted origin-destination flow on the initial graph) passing more
 than 5 m from it, Spearman rho of the heat map (first analyzer, each polygon
@@ -13,9 +14,10 @@ betweenness on the structure and of the best values the structure's nodes
 could carry (the ceiling: the mean traffic of the polygons each stands
 for) against that traffic, the structure's size as
 a share of the polygons, the run's CPU time (``time.process_time``: the
-machine is shared) and the wall time of every stage. The reference flow is
-computed once per level and graph builder (exact up to 512 nodes, 512
-area-sampled sources above). This is a benchmark: nothing here asserts a target.
+machine is shared; the evaluation included), the wall time of every stage
+but the evaluation ("total s") and that of the evaluation, which computes
+the reference flow (exact up to 512 nodes, 512 area-sampled sources above)
+for each run. This is a benchmark: nothing here asserts a target.
 """
 
 from __future__ import annotations
@@ -30,10 +32,10 @@ from pathlib import Path
 import trimesh
 
 from g2s_core import pipeline
-from g2s_core.config import PRESETS_DIR, load_config
+from g2s_core.config import PRESETS_DIR, load_raw_config, parse_config, with_evaluators
 from g2s_core.mesh import load_mesh, mesh_sha256
 from g2s_core.registry import Registry
-from g2s_plugins import evaluation
+from g2s_plugins import evaluation, traffic
 from g2s_plugins.samples import levels as samples
 
 NAV_TEST = Path(__file__).resolve().parents[1] / ".." / "shared" / "data" / "nav_test.obj"
@@ -66,29 +68,26 @@ def main() -> None:
     args = parser.parse_args()
     print(f"machine: {platform.machine()}, {os.cpu_count()} cores, load average {os.getloadavg()[0]:.1f}")
     registry = Registry.from_entry_points()
-    plans = {p: pipeline.plan(load_config(PRESETS_DIR / f"{p}.yaml"), registry, p) for p in args.presets}
+    plans = {p: pipeline.plan(parse_config(with_evaluators(load_raw_config(PRESETS_DIR / f"{p}.yaml"), ["traffic"]), p),
+                              registry, p) for p in args.presets}
     header = (f"{'level':<18} {'preset':<28} {'polys':>7} {'<=3m':>6} {'<=6m':>6} {'<=10m':>6} {'off>5m':>7} "
-              f"{'rho':>6} {'rho_abw':>7} {'ceiling':>7} {'struct':>7} {'cpu s':>7} {'total s':>8}  stages (s)")
+              f"{'rho':>6} {'rho_abw':>7} {'ceiling':>7} {'struct':>7} {'cpu s':>7} {'total s':>8} {'eval s':>7}  stages (s)")
     print(header)
     for name, mesh in levels(args.levels, args.seeds):
-        references: dict[str, tuple] = {}  # per graph builder and its parameters: the flow depends only on the graph
         for preset, plan in plans.items():
             cpu = time.process_time()
             result = pipeline.run(plan, registry, mesh, name, mesh_sha256(mesh))
             cpu = time.process_time() - cpu
-            graph_stage = plan.stages["graph"][0]
-            builder = f"{graph_stage.plugin.name} {graph_stage.params.model_dump_json()}"
-            if builder not in references:
-                start = time.process_time()
-                references[builder] = (evaluation.reference_flow(result), time.process_time() - start)
-            q = evaluation.evaluate(result, references[builder][0])
-            stages = " ".join(f"{k}={v:.2f}" for k, v in q.stage_seconds.items())
-            within = " ".join(f"{100 * q.area_within[r]:5.1f}%" for r in evaluation.RADII)
-            print(f"{name:<18} {preset:<28} {q.polygons:>7} {within} {100 * q.traffic_off:6.1f}% "
-                  f"{q.rho:6.3f} {q.rho_area_betweenness:7.3f} {q.rho_ceiling:7.3f} {100 * q.structure_share:6.1f}% "
-                  f"{cpu:7.2f} {sum(q.stage_seconds.values()):8.2f}  {stages}", flush=True)
-        for builder, (flow, seconds) in references.items():
-            print(f"{'':<18} (reference flow on the {builder.split()[0]} graph of {len(flow)} nodes: {seconds:.2f} s CPU)")
+            q = result.metrics["traffic"]
+            seconds = {s.stage: s.seconds for s in result.stages}
+            evaluating = seconds.pop("evaluation")
+            stages = " ".join(f"{k}={v:.2f}" for k, v in seconds.items())
+            within = " ".join(f"{100 * q[f'area_within_{r:g}m']:5.1f}%" for r in evaluation.RADII)
+            rho, abw, ceiling = (q.get(k, float("nan")) for k in ("rho", "rho_area_betweenness", "rho_ceiling"))
+            polygons = traffic.surface_arrays(result.graph).n  # the nodes the measures count
+            print(f"{name:<18} {preset:<28} {polygons:>7} {within} {100 * q['traffic_off']:6.1f}% "
+                  f"{rho:6.3f} {abw:7.3f} {ceiling:7.3f} {100 * q['structure_share']:6.1f}% "
+                  f"{cpu:7.2f} {sum(seconds.values()):8.2f} {evaluating:7.2f}  {stages}", flush=True)
 
 
 if __name__ == "__main__":

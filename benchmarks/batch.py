@@ -1,6 +1,7 @@
 """Levels per minute of `g2s batch`: serial vs the local process pool vs a Dask LocalCluster.
 
     .venv/bin/python benchmarks/batch.py [--levels 200] [--rooms 120] [--workers 2] [--format json]
+        [--executors serial,local,dask] [--evaluate traffic]
 
 Each level is ``sample:dungeon?seed=S&rooms=R`` (generated inside its pair, as
 a batch of sample specs does; 120 rooms give about 1,000 navmesh polygons),
@@ -31,11 +32,12 @@ def main() -> int:
     parser.add_argument("--workers", type=int, default=os.cpu_count())
     parser.add_argument("--format", default="json")
     parser.add_argument("--executors", default="serial,local,dask")
+    parser.add_argument("--evaluate", default="", help="evaluators added to the config (g2s batch --evaluate)")
     args = parser.parse_args()
     config = PROJECT / "configs" / "map_analysis.yaml"
     levels = [f"sample:dungeon?seed={seed}&rooms={args.rooms}" for seed in range(args.levels)]
     print(f"{args.levels} dungeons of {args.rooms} rooms, {args.workers} workers, {os.cpu_count()} CPUs, "
-          f"formats {args.format}")
+          f"formats {args.format}, evaluators: {args.evaluate or 'none'}")
     print("| executor | seconds | levels/min | speed-up | efficiency | failed | polygons (mean) | load before -> after |")
     print("| --- | ---: | ---: | ---: | ---: | ---: | ---: | --- |")
     serial_seconds = None
@@ -43,8 +45,9 @@ def main() -> int:
         with tempfile.TemporaryDirectory() as folder:
             load_before = os.getloadavg()[0]
             start = time.perf_counter()
-            summary = run_batch([config], levels, Path(folder) / "out", executor, workers=args.workers,
-                                formats=args.format)
+            summary = run_batch([config], levels, Path(folder) / "out", executor,
+                                workers=None if executor == "serial" else args.workers, formats=args.format,
+                                evaluators=[name for name in args.evaluate.split(",") if name])
             seconds = time.perf_counter() - start
             load_after = os.getloadavg()[0]
         if executor == "serial":

@@ -1,6 +1,9 @@
-"""Batch runs: configs over many levels, on a process pool or a Dask cluster, with one summary table.
+"""Batch runs: configs over many levels, on any executor plugin, with one summary table.
 
-Every (config, level) pair is run by :func:`run_pair`, the same function on
+The core plans the pairs, resumes, and sums the rows up; an executor plugin
+(stage ``executors``: ``local`` process pool, ``dask`` cluster, ``serial``, or
+a third-party one) only decides where each pair runs. Every (config, level)
+pair is run by :func:`run_pair`, the same function on
 every executor; it opens the level, runs it and writes its result folder with
 the functions ``g2s run`` uses (:func:`g2s_core.api.open_mesh`,
 :func:`~g2s_core.api.execute`, :func:`~g2s_core.api.write_result`), then
@@ -15,9 +18,9 @@ Layout of ``OUTDIR``::
 
 A row file is what makes a pair finished: a re-run skips the pairs whose row
 says ``ok`` for the same config and mesh hash and whose result files are all
-there (resume), unless ``force``. Interrupting a batch (Ctrl-C) lets the
-running pairs finish on the process pool, drops the pending ones and writes the
-summary of the finished pairs.
+there (resume), unless ``force``. Interrupting a batch (Ctrl-C) closes the
+executor's iterator (the process pool lets its running pairs finish, pending
+ones are dropped) and writes the summary of the finished pairs.
 
 Needs the ``batch`` extra (``pip install 'graph2structure[batch]'``): pandas,
 pyarrow and dask.distributed.
@@ -31,31 +34,24 @@ import json
 import math
 import os
 import re
-import signal
 import time
-from collections.abc import Callable, Iterable, Iterator, Sequence
-from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
+from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from contextlib import closing, contextmanager
 from dataclasses import dataclass
-from multiprocessing import get_context
 from pathlib import Path
-from typing import TYPE_CHECKING, Any, Literal
+from typing import TYPE_CHECKING, Any
 
 from g2s_core import DISTRIBUTION, api, pipeline
-from g2s_core.config import find_config, load_raw_config, parse_config
+from g2s_core.config import find_config, load_raw_config, parse_config, with_evaluators
 from g2s_core.errors import G2SError, PluginFailure
 from g2s_core.mesh import SAMPLE_PREFIX, SUPPORTED_SUFFIXES
 from g2s_core.model import RunResult
-from g2s_core.outputs import DEFAULT_FORMATS, parse_formats, result_files
+from g2s_core.outputs import chosen_formats, result_files
 from g2s_core.registry import installed
 from g2s_core.stages import PIPELINE
 
 if TYPE_CHECKING:
     import pandas as pd
-
-Executor = Literal["local", "dask", "serial"]
-EXECUTORS: tuple[str, ...] = ("local", "dask", "serial")
-"""``local``: a process pool; ``dask``: a dask.distributed cluster; ``serial``: one after the other in this process."""
 
 RECORDS = ".g2s-batch"
 """The folder of ``OUTDIR`` holding one row file per finished pair."""
@@ -70,13 +66,18 @@ COLUMNS: tuple[str, ...] = (
     "terminals", "openings", "roots", "structure_length", "warnings",
 )
 """The summary's fixed columns, in order. Then, per analyzer key K: ``K_max``, ``K_mean``, ``K_top_node``,
-and for analyzers with records (chokepoints, regions) the columns of :func:`_feature_columns`; sorted by name.
+for analyzers with records (chokepoints, regions) the columns of :func:`_feature_columns`, and per
+evaluator key E and measure M ``metric.E.M`` (:data:`METRIC_PREFIX`); sorted by name.
 
 ``seconds_*`` are wall seconds (``seconds_total``: the whole pair, opening to
 writing); ``nodes_*``/``edges_*`` the sizes of the initial graph, the Steiner
 forest and the simplified structure; ``structure_length`` the sum of the
 structure's edge lengths, metres; ``warnings`` how many the run gave.
 """
+
+
+METRIC_PREFIX = "metric."
+"""Start of the evaluators' columns: ``metric.<evaluator key>.<measure>``, empty where not computed."""
 
 
 @dataclass(frozen=True)
@@ -166,6 +167,8 @@ def result_row(result: RunResult) -> dict[str, Any]:
         row[f"{key}_top_node"] = top
     for key, features in result.features.items():
         row.update(_feature_columns(key, features))
+    for key, measures in result.metrics.items():
+        row.update({f"{METRIC_PREFIX}{key}.{name}": value for name, value in measures.items()})
     return row
 
 
@@ -269,6 +272,7 @@ def make_pairs(
     outdir: Path,
     formats: str | Sequence[str] | None = None,
     force: bool = False,
+    evaluators: Sequence[str] = (),
 ) -> list[Pair]:
     """Every (config, level) pair of a batch, configs outer; configs and inputs are checked here.
 
@@ -287,14 +291,10 @@ def make_pairs(
         if name in seen:
             raise G2SError(f"{source}: config name {name!r} is also that of {seen[name]}; rename one of the files")
         seen[name] = source
-        raw = load_raw_config(find_config(config_path))
+        raw = with_evaluators(load_raw_config(find_config(config_path)), evaluators)
         config = parse_config(raw, source=source)
         pipeline.plan(config, registry, source=source)
-        chosen = tuple(parse_formats(
-            formats if formats is not None
-            else config.outputs.formats if "formats" in config.outputs.model_fields_set else DEFAULT_FORMATS,
-            "formats" if formats is not None else f"{source}: outputs.formats",
-        ))
+        chosen = tuple(chosen_formats(formats, config, source))
         digest = hashlib.sha256(json.dumps([config.model_dump(mode="json"), chosen], sort_keys=True).encode()).hexdigest()
         for level, spec in levels:
             pairs.append(Pair(
@@ -312,7 +312,7 @@ def _check_outdir(outdir: Path) -> None:
         raise G2SError(f"{outdir}: holds files that are not a g2s batch's; choose a new or empty folder")
 
 
-# --- executors ----------------------------------------------------------------
+# --- progress -----------------------------------------------------------------
 
 
 class Progress:
@@ -331,71 +331,6 @@ class Progress:
         return 60.0 * self.done / elapsed if elapsed > 0 else 0.0
 
 
-def _ignore_interrupt() -> None:
-    """Pool workers leave Ctrl-C to the batch, which lets their running pair finish."""
-    signal.signal(signal.SIGINT, signal.SIG_IGN)
-
-
-@contextmanager
-def _children_ignore_interrupt() -> Iterator[None]:
-    """Processes started inside ignore Ctrl-C (the disposition is inherited), this one keeps its handler."""
-    handler = signal.signal(signal.SIGINT, signal.SIG_IGN)
-    try:
-        yield
-    finally:
-        signal.signal(signal.SIGINT, handler)
-
-
-def _serial(pairs: Sequence[Pair], _workers: int | None, _scheduler: str | None) -> Iterator[dict[str, Any]]:
-    for pair in pairs:
-        yield run_pair(pair)
-
-
-def _local(pairs: Sequence[Pair], workers: int | None, _scheduler: str | None) -> Iterator[dict[str, Any]]:
-    # forkserver: workers start from a clean process, not a copy of one with a progress thread running
-    pool = ProcessPoolExecutor(workers or os.cpu_count(), get_context("forkserver"), _ignore_interrupt)
-    try:
-        pending = {pool.submit(run_pair, pair) for pair in pairs}
-        while pending:
-            finished, pending = wait(pending, return_when=FIRST_COMPLETED)
-            for future in finished:
-                yield future.result()
-    finally:  # also on Ctrl-C: the running pairs finish, the others are dropped
-        pool.shutdown(wait=True, cancel_futures=True)
-
-
-def _dask(pairs: Sequence[Pair], workers: int | None, scheduler: str | None) -> Iterator[dict[str, Any]]:
-    import logging
-
-    from dask.distributed import Client, LocalCluster, as_completed
-
-    if scheduler:
-        cluster = None
-        client = Client(scheduler)
-    else:
-        with _children_ignore_interrupt():
-            cluster = LocalCluster(
-                n_workers=workers or os.cpu_count(), threads_per_worker=1, processes=True,
-                dashboard_address=":0", silence_logs=logging.ERROR,
-            )
-        client = Client(cluster)
-    futures = [client.submit(run_pair, pair, key=f"g2s-{pair.config}/{pair.level}-{pair.config_sha256[:12]}", pure=False)
-               for pair in pairs]
-    try:
-        for future in as_completed(futures):
-            yield future.result()
-    finally:
-        client.cancel([f for f in futures if not f.done()])
-        client.close()
-        if cluster is not None:
-            cluster.close()
-
-
-_EXECUTORS: dict[str, Callable[[Sequence[Pair], int | None, str | None], Iterator[dict[str, Any]]]] = {
-    "serial": _serial, "local": _local, "dask": _dask,
-}
-
-
 # --- the batch ----------------------------------------------------------------
 
 
@@ -403,10 +338,12 @@ def run_batch(
     configs: Sequence[str | Path],
     inputs: Sequence[str | Path],
     outdir: str | Path,
-    executor: Executor = "local",
+    executor: str = "local",
     *,
     workers: int | None = None,
     scheduler: str | None = None,
+    executor_params: Mapping[str, Any] | None = None,
+    evaluators: Sequence[str] = (),
     formats: str | Sequence[str] | None = None,
     force: bool = False,
     progress: Callable[[Progress], None] | None = None,
@@ -418,33 +355,45 @@ def run_batch(
         inputs: mesh files, folders (searched recursively), glob patterns or
             ``sample:NAME?param=value&...`` specs.
         outdir: the batch's folder (see the module docs for its layout).
-        executor: ``"local"`` (a process pool of ``workers``, default the CPU
-            count), ``"dask"`` (the dask.distributed scheduler at ``scheduler``,
-            else a LocalCluster of ``workers`` processes) or ``"serial"``.
+        executor: an installed executor plugin (``g2s plugins --stage
+            executors``): ``"local"`` (a process pool of ``workers``, default
+            the CPU count), ``"dask"`` (the dask.distributed scheduler at
+            ``scheduler``, else a LocalCluster of ``workers`` processes) or
+            ``"serial"``.
+        workers, scheduler: the executor's parameters of these names, when given.
+        executor_params: any other parameters of the executor.
+        evaluators: evaluator plugins added, with their default parameters, to
+            every config that does not list them already (e.g. ``["traffic"]``).
         formats: output formats for every pair (default: each config's).
         force: recompute finished pairs.
         progress: called with the counts after each pair.
 
     Returns:
         The summary (also written to ``outdir/summary.parquet`` and
-        ``summary.csv``): :data:`COLUMNS`, then each analyzer's columns; rows
-        in config order, then level order. After Ctrl-C the files hold the
-        pairs finished so far, then ``KeyboardInterrupt`` propagates.
+        ``summary.csv``): :data:`COLUMNS`, then each analyzer's and
+        evaluator's columns; rows in config order, then level order. After
+        Ctrl-C the files hold the pairs finished so far, then
+        ``KeyboardInterrupt`` propagates.
 
     Raises:
-        ConfigError, G2SError: bad configs or inputs, before any pair runs.
+        ConfigError, G2SError: bad configs, inputs or executor parameters, before any pair runs.
     """
     import pandas as pd  # noqa: F401  (the extra is needed before any work starts)
 
-    if executor not in _EXECUTORS:
-        raise G2SError(f"executor: expected one of {', '.join(EXECUTORS)}, got {executor!r}")
+    registry = installed()
+    chosen = registry.get("executors", executor, key="executor")
+    given = {"workers": workers, "scheduler": scheduler}
+    options = {**(executor_params or {}), **{k: v for k, v in given.items() if v is not None}}
+    params = registry.validate_params(chosen, options, f"executor {executor!r} params")
+    for name in evaluators:
+        registry.get("evaluators", name, key="evaluators")
     outdir = Path(outdir)
-    pairs = make_pairs(configs, [str(i) for i in inputs], outdir, formats, force)
+    pairs = make_pairs(configs, [str(i) for i in inputs], outdir, formats, force, evaluators)
     counts = Progress(len(pairs))
     rows: dict[tuple[str, str], dict[str, Any]] = {}
     started = time.time()
     try:
-        with closing(_EXECUTORS[executor](pairs, workers, scheduler)) as finished:
+        with closing(registry.call(chosen, function=run_pair, items=pairs, params=params)) as finished:
             for row in finished:
                 rows[row["config"], row["level"]] = row
                 counts.update(row)
@@ -477,7 +426,7 @@ def _summary(rows: Iterable[dict[str, Any]]) -> pd.DataFrame:
         if column.startswith(("nodes_", "edges_")) or column in ("terminals", "openings", "roots", "warnings") \
                 or column.endswith(("_top_node", "_count")):
             frame[column] = frame[column].astype("Int64")
-        elif column.startswith("seconds_") or column == "structure_length" \
+        elif column.startswith(("seconds_", METRIC_PREFIX)) or column == "structure_length" \
                 or column.endswith(("_max", "_mean", "_top_score", "_top_width", "_largest_area")):
             frame[column] = frame[column].astype("float64")
     frame["reused"] = frame["reused"].astype(bool)

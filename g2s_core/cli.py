@@ -26,16 +26,16 @@ from rich.table import Table
 
 from g2s_core import api, pipeline, version
 from g2s_core.api import MeshSource
-from g2s_core.batch import EXECUTORS, INSTALL_HINT, missing_extra, run_batch
+from g2s_core.batch import INSTALL_HINT, missing_extra, run_batch
 from g2s_core.batch import Progress as BatchProgress
 from g2s_core.config import parse_assignment, presets, resolve_config
 from g2s_core.errors import G2SError, PluginFailure
 from g2s_core.mesh import SAMPLE_PREFIX, SUPPORTED_SUFFIXES
 from g2s_core.model import RunResult
-from g2s_core.outputs import DEFAULT_FORMATS, check_outdir, parse_formats, writers
+from g2s_core.outputs import DEFAULT_FORMATS, check_outdir, chosen_formats, writers
 from g2s_core.registry import Registry, installed, plugin_parameters
 from g2s_core.stages import STAGES
-from g2s_core.summary import final_graph, roots_of, stage_rows
+from g2s_core.summary import final_graph, metric_lines, roots_of, stage_rows
 
 EXIT_CODES = "exit codes: 0 success, 2 bad input or config, or a plugin that failed (named with its package), 1 internal error of g2s"
 
@@ -70,8 +70,8 @@ def _parser() -> argparse.ArgumentParser:
 
     batch = commands.add_parser(
         "batch", parents=[common],
-        usage="g2s batch CONFIG [CONFIG ...] INPUT [INPUT ...] -o OUTDIR [--executor {local,dask,serial}] "
-        "[--workers N] [--scheduler ADDRESS] [--format FORMATS] [--force] [-q] [-v]",
+        usage="g2s batch CONFIG [CONFIG ...] INPUT [INPUT ...] -o OUTDIR [--executor NAME] "
+        "[--workers N] [--scheduler ADDRESS] [--evaluate NAMES] [--format FORMATS] [--force] [-q] [-v]",
         help="run configs over many levels on a process pool or a Dask cluster, with a summary table",
         description="Run every config on every level: one result folder per (config, level) pair, as `g2s run` "
         "writes it, in OUTDIR/CONFIG/LEVEL/, and OUTDIR/summary.parquet and summary.csv with one row per pair "
@@ -85,14 +85,15 @@ def _parser() -> argparse.ArgumentParser:
                        f"(searched recursively for {' '.join(SUPPORTED_SUFFIXES)}), glob patterns, or "
                        f"{SAMPLE_PREFIX}NAME[?param=value&...]")
     batch.add_argument("-o", "--outdir", type=Path, required=True, help="folder of the batch's results")
-    batch.add_argument("--executor", choices=EXECUTORS, default="local",
-                       help="local: a process pool (default); dask: a dask.distributed cluster; serial: one by one "
-                       "in this process")
+    batch.add_argument("--executor", metavar="NAME", default="local", help="an executor plugin (`g2s plugins --stage "
+                       "executors`): local, a process pool (default); dask, a Dask cluster; serial, one by one here")
     batch.add_argument("--workers", type=int, metavar="N",
                        help="processes of the pool or of the Dask LocalCluster (default: the CPU count)")
     batch.add_argument("--scheduler", metavar="ADDRESS",
                        help="with --executor dask: the scheduler to use, e.g. tcp://host:8786 "
                        "(default: start a LocalCluster)")
+    batch.add_argument("--evaluate", metavar="NAMES", default="", help="evaluator plugins added to every config, "
+                       "e.g. traffic: coverage and flow agreement in metric.* columns (costly: docs/batch.md)")
     batch.add_argument("--format", metavar="FORMATS", help="comma-separated output formats for every pair "
                        "(default: each config's outputs.formats)")
     batch.add_argument("--force", action="store_true", help="recompute the pairs already finished")
@@ -162,7 +163,7 @@ def _run(args: argparse.Namespace, errors: Console, mesh_name: str | None = None
     """``g2s run`` (and ``g2s demo``, which names its generated level ``mesh_name``)."""
     config_files: list[Path] = []
     config, source = resolve_config(args.config, _overrides(args), overrides_source="--set", sources=config_files)
-    formats = _formats(args, config, source)
+    formats = chosen_formats(args.format, config, source, "--format")
     inputs = api.input_files(config, config_files, args.mesh)
     check_outdir(args.outdir, formats, args.force, inputs)
     registry = installed()
@@ -183,11 +184,11 @@ def _batch(args: argparse.Namespace, errors: Console) -> int:
         raise G2SError("batch: expected one or more configs (preset names or .yaml files) followed by one or more levels")
     if args.workers is not None and args.workers < 1:
         raise G2SError(f"--workers: expected an integer >= 1, got {args.workers}")
-    if args.scheduler and args.executor != "dask":
-        raise G2SError("--scheduler: only with --executor dask")
+    evaluators = [name.strip() for name in args.evaluate.split(",") if name.strip()]
     with missing_extra(), _batch_progress(errors, args.quiet) as show:
         summary = run_batch(configs, inputs, args.outdir, args.executor, workers=args.workers,
-                            scheduler=args.scheduler, formats=args.format, force=args.force, progress=show)
+                            scheduler=args.scheduler, evaluators=evaluators, formats=args.format, force=args.force,
+                            progress=show)
     failed = summary[summary["status"] != "ok"]
     for row in failed.itertuples():
         errors.print(f"g2s: {row.config} on {row.level} failed: {row.error}", markup=False, highlight=False, soft_wrap=True)
@@ -250,15 +251,6 @@ def _demo_hint(outdir: Path) -> str:
     return "\n".join(lines)
 
 
-def _formats(args: argparse.Namespace, config: Any, source: str) -> list[str]:
-    """--format, else the config's outputs.formats when it sets them, else the default formats."""
-    if args.format is not None:
-        return parse_formats(args.format, "--format")
-    if "formats" in config.outputs.model_fields_set:
-        return parse_formats(config.outputs.formats, f"{source}: outputs.formats")
-    return list(DEFAULT_FORMATS)
-
-
 def _execute(
     args: argparse.Namespace,
     errors: Console,
@@ -280,6 +272,8 @@ def _execute(
     if not args.quiet:
         console = Console()
         console.print(stage_table(result, title=mesh.name))
+        for label, measures in metric_lines(result):
+            console.print(f"{label}: {measures}", markup=False, highlight=False, soft_wrap=True)
         for path in written:
             console.print(f"wrote {path}", markup=False, highlight=False, soft_wrap=True)
     return 0
@@ -318,6 +312,7 @@ def _summary(result: RunResult, outdir: Path, formats: Sequence[str], written: S
             "terminals": None if result.terminals is None else len(result.terminals.nodes),
             "analysis": list(result.analysis),
         },
+        "metrics": result.metrics,
         "warnings": result.warnings,
     }
 

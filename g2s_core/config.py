@@ -1,6 +1,6 @@
 """Run configuration: YAML files, ``extends:`` presets, and validation.
 
-A config chooses one plugin per stage (analyzers: a list) with its parameters,
+A config chooses one plugin per stage (analyzers and evaluators: a list) with its parameters,
 plus agent, mesh and output settings. Everything is validated before any work
 starts; a problem is reported as one line naming the file, the key path and
 what was expected, e.g.::
@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import copy
 import os
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from pathlib import Path
 from typing import Any, Literal
 
@@ -22,7 +22,7 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationError, create_model
 from g2s_core.errors import ConfigError
 from g2s_core.input_files import MAX_NESTING, nesting_depth, parse_nested, read_text
 from g2s_core.messages import _field_at, _nested_model, describe_validation_error, show
-from g2s_core.stages import PIPELINE
+from g2s_core.stages import BY_KEY, PIPELINE
 
 
 _PACKAGE_DIR = Path(__file__).resolve().parent
@@ -67,8 +67,8 @@ class StageConfig(_Section):
     params: dict[str, Any] = Field(default_factory=dict, description="the plugin's parameters")
 
 
-class AnalyzerConfig(StageConfig):
-    """An analyzer; ``key`` names its values in the outputs (default: the plugin name)."""
+class KeyedStageConfig(StageConfig):
+    """One of a list of plugins (analyzers, evaluators); ``key`` names its values in the outputs (default: the plugin name)."""
 
     key: str | None = Field(None, description="name of the values in the outputs")
 
@@ -92,9 +92,9 @@ class _Run(_Section):
 
 
 def _stage_field(key: str) -> tuple[Any, Any]:
-    """The config section of a stage: one plugin, or a list of them for analyzers."""
-    if key == "analyzers":
-        return list[AnalyzerConfig], Field(default_factory=list)
+    """The config section of a stage: one plugin, or a list of them (analyzers, evaluators)."""
+    if BY_KEY[key].many:
+        return list[KeyedStageConfig], Field(default_factory=list)
     return StageConfig | None, None
 
 
@@ -238,6 +238,16 @@ def _merge_extends(
         return data
     parent_path = _resolve_extends(parent_name, base_dir, source)
     return _deep_merge(load_raw_config(parent_path, chain, sources), data)
+
+
+def with_evaluators(raw: dict[str, Any], names: Sequence[str]) -> dict[str, Any]:
+    """The raw config with each evaluator of ``names`` (default parameters) added to its ``evaluators:``
+    unless one of that key is listed already (a malformed section is left for validation to report)."""
+    listed = raw.get("evaluators") or []
+    if not isinstance(listed, list):
+        return raw
+    keys = {e.get("key") or e.get("plugin") for e in listed if isinstance(e, dict)}
+    return {**raw, "evaluators": listed + [{"plugin": name} for name in names if name not in keys]}
 
 
 def load_config(path: str | Path) -> RunConfig:

@@ -9,8 +9,9 @@ hook implementation may take any subset of the named arguments.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from pathlib import Path
+from typing import Any
 
 import networkx as nx
 import trimesh
@@ -98,6 +99,17 @@ def g2s_analyze(
 
 
 @hookspec(firstresult=True)
+def g2s_evaluate(result: RunResult, params: PluginParams, context: RunContext) -> Mapping[str, float]:
+    """Evaluator: measures of how good the run's result is, by name (after the analyzers).
+
+    ``result`` holds every stage's output (the initial graph, the Steiner
+    forest, the structure, the analyzers' values). Return a finite number for
+    each measure, named with letters, digits and ``_``; leave out a measure
+    that cannot be computed on this run (e.g. a correlation of constant values).
+    """
+
+
+@hookspec(firstresult=True)
 def g2s_write_output(result: RunResult, folder: Path) -> list[Path]:
     """OutputWriter: write the result files of one format into ``folder``; return their paths.
 
@@ -112,4 +124,16 @@ def g2s_generate_level(params: PluginParams) -> trimesh.Trimesh:
     """LevelGenerator: build a level (metres, Y up) from its declared parameters.
 
     Used as ``sample:NAME?param=value&...`` wherever a mesh file is accepted.
+    """
+
+
+@hookspec(firstresult=True)
+def g2s_execute(function: Callable[[Any], dict[str, Any]], items: Sequence[Any], params: PluginParams) -> Iterator[dict[str, Any]]:
+    """Executor: ``function(item)`` for every item of a batch, yielded as each finishes (any order).
+
+    ``function`` (:func:`g2s_core.batch.run_pair`) and the items are
+    picklable and importable by name, so they may run in other processes or
+    on other machines; the function never raises for a failed pair (its row
+    says so). Closing the iterator (the batch was interrupted) stops the work
+    not yet started. The items must not be run twice.
     """

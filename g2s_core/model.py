@@ -221,6 +221,8 @@ class RunResult:
     structure: nx.DiGraph | None = None
     analysis: dict[str, dict[int, float]] = field(default_factory=dict)
     features: dict[str, dict[str, Any]] = field(default_factory=dict)
+    metrics: dict[str, dict[str, float]] = field(default_factory=dict)
+    """Each evaluator's measures by name, under the evaluator's key (``evaluators:`` in the config)."""
     stages: list[StageStats] = field(default_factory=list)
     mesh_path: Path | None = None
     """The mesh file the run read, if any."""

@@ -11,11 +11,15 @@ from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from g2s_core.errors import G2SError
 from g2s_core.model import RunResult
 from g2s_core.registry import PluginInfo, Registry, installed
 from g2s_core.result_folder import check_writable, refuse_inputs, staged
+
+if TYPE_CHECKING:
+    from g2s_core.config import RunConfig
 
 DEFAULT_FORMATS: tuple[str, ...] = ("json", "html")
 """What a run writes when neither the config nor ``--format`` says."""
@@ -51,6 +55,16 @@ def parse_formats(formats: str | Sequence[str], source: str = "--format", regist
     if not names:
         raise G2SError(f"{source}: no output format given (expected some of: {', '.join(known)})")
     return names
+
+
+def chosen_formats(given: str | Sequence[str] | None, config: RunConfig, source: str, option: str = "formats") -> list[str]:
+    """``given`` (``--format``, named ``option`` in errors), else the ``outputs.formats`` the config sets,
+    else :data:`DEFAULT_FORMATS`; checked by :func:`parse_formats`."""
+    if given is not None:
+        return parse_formats(given, option)
+    if "formats" in config.outputs.model_fields_set:
+        return parse_formats(config.outputs.formats, f"{source}: outputs.formats")
+    return list(DEFAULT_FORMATS)
 
 
 def result_paths(outdir: Path, formats: Sequence[str] | None = None, registry: Registry | None = None) -> list[Path]:

@@ -40,7 +40,7 @@ class ResolvedStage:
 class Plan:
     """The stages a config asks for, validated against the installed plugins.
 
-    ``stages`` maps each stage that runs to its plugins (one, or the analyzers in config order).
+    ``stages`` maps each stage that runs to its plugins (one, or the analyzers or evaluators in config order).
     """
 
     config: RunConfig
@@ -69,10 +69,11 @@ def plan(config: RunConfig, registry: Registry, source: str = "<config>") -> Pla
                 stages[section] = resolved
     except ConfigError as exc:
         raise ConfigError(f"{source}: {exc}") from None
-    keys = [a.key for a in stages.get("analyzers", ())]
-    duplicates = sorted({k for k in keys if keys.count(k) > 1})
-    if duplicates:
-        raise ConfigError(f"{source}: analyzers: two analyzers write values named {duplicates[0]!r}; give one a 'key'")
+    for section, planned in stages.items():
+        keys = [p.key for p in planned]
+        duplicates = sorted({k for k in keys if keys.count(k) > 1})
+        if duplicates:
+            raise ConfigError(f"{source}: {section}: two plugins write values named {duplicates[0]!r}; give one a 'key'")
     return Plan(config, stages)
 
 
@@ -122,7 +123,7 @@ def run(
     context = RunContext(mesh=mesh, agent=config.agent, centre=bounds.mean(axis=0))
     result = RunResult(config=config.record(), mesh_name=mesh_name, mesh_sha256=mesh_sha256, context=context)
     for stage in PIPELINE:
-        if stage.key not in plan_.stages:  # an optional stage left out, or past stop_after
+        if stage.key not in plan_.stages:  # an optional stage or an empty list left out, or past stop_after
             continue
         say(f"{stage.step}: {stage.label}")
         record: dict[str, Any] = {}
@@ -217,6 +218,13 @@ def _analyzers_step(step: Step) -> bool | None:
         result.analysis[analyzer.key] = {n: float(values[n]) for n in result.structure}
 
 
+def _evaluators_step(step: Step) -> None:
+    result = step.result
+    for evaluator in step.planned:
+        measures = step.registry.call(evaluator.plugin, params=evaluator.params, result=result, context=result.context)
+        result.metrics[evaluator.key] = {name: float(value) for name, value in measures.items()}
+
+
 _STEPS: dict[str, Callable[[Step], bool | None]] = {
     "graph": _graph_step,
     "terminals": _terminals_step,
@@ -225,6 +233,7 @@ _STEPS: dict[str, Callable[[Step], bool | None]] = {
     "roots": _roots_step,
     "simplify": _simplify_step,
     "analyzers": _analyzers_step,
+    "evaluators": _evaluators_step,
 }
 """The step of each pipeline stage of :data:`g2s_core.stages.PIPELINE`."""
 

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import functools
 import importlib.metadata
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass
 from typing import Any
 
@@ -197,6 +197,8 @@ class Registry:
         problem = info.kind.check(value, kwargs, info.plugin)
         if problem is not None:
             raise info.failure(f"returned {problem}")
+        if info.kind.check_each_item is not None:
+            return _checked_items(info, value, info.kind.check_each_item)
         each = info.kind.check_each_call
         if each is None:
             return value
@@ -225,6 +227,20 @@ def _guarded(info: PluginInfo, function: Callable[..., Any], what: str) -> Calla
             raise info.failure(f"{what} {type(exc).__name__}: {exc}") from exc
 
     return call
+
+
+def _checked_items(info: PluginInfo, items: Iterator[Any], check: Callable[[Any], str | None]) -> Iterator[Any]:
+    """``items`` with each item checked and the exceptions of the iteration made ``info``'s failure;
+    closing it closes ``items``."""
+    step = _guarded(info, next, "its iterator raised")
+    end = object()
+    try:
+        while (item := step(items, end)) is not end:
+            if (wrong := check(item)) is not None:
+                raise info.failure(f"its iterator gave {wrong}")
+            yield item
+    finally:
+        getattr(items, "close", lambda: None)()  # a generator's own cleanup (a pool's shutdown) runs now
 
 
 def plugin_parameters(info: PluginInfo) -> Iterable[tuple[str, str, str, str]]:

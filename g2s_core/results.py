@@ -23,9 +23,11 @@ from g2s_core.errors import G2SError
 from g2s_core.input_files import parse_nested, read_text
 from g2s_core.model import Opening, StageStats, Terminals, vec3
 
-SCHEMA_VERSION = 2
-READABLE_VERSIONS = (1, 2)
-"""structure.json versions :func:`load_result` reads (1 has no ``features``)."""
+SCHEMA_VERSION = 3
+READABLE_VERSIONS = (1, 2, 3)
+"""structure.json versions :func:`load_result` reads (1 has no ``features``, 1 and 2 no ``metrics``)."""
+_ADDED_IN = {"features": 2, "metrics": 3}
+"""Fields a version added, empty when a file of an older version is read."""
 STRUCTURE_FILE = "structure.json"
 RUN_FILE = "run.json"
 RUN_SCHEMA_VERSION = 1
@@ -46,7 +48,8 @@ class LoadedResult:
     ``polygon``, ``depth``, ``root``), ``terminal`` (bool) and the plugins'
     extra attributes; its edges ``weight`` and extras. ``analysis`` maps each
     analyzer's key to its value per node, ``features`` to its records (empty
-    for version 1 files). ``stages`` come with their seconds
+    for version 1 files); ``metrics`` maps each evaluator's key to its measures
+    (empty before version 3). ``stages`` come with their seconds
     when ``run.json`` of the same mesh lies beside the file, NaN otherwise.
     """
 
@@ -60,6 +63,7 @@ class LoadedResult:
     roots: list[int]
     analysis: dict[str, dict[int, float | None]]
     features: dict[str, dict[str, Any]]
+    metrics: dict[str, dict[str, float]]
     terminals: Terminals | None
     steiner: nx.Graph | None
     forest: nx.DiGraph | None
@@ -73,7 +77,8 @@ def load_result(path: str | Path) -> LoadedResult:
     """Read a ``structure.json`` (or the folder holding one) back.
 
     The document is checked against :data:`SCHEMA_PATH` before use; a
-    version 1 file is checked as version 2 without ``features``.
+    file of an older version is checked as the current one with the fields
+    its version lacks empty.
 
     Raises:
         G2SError: the file is missing, not a regular UTF-8 file, not JSON, not
@@ -94,12 +99,12 @@ def load_result(path: str | Path) -> LoadedResult:
     if version not in READABLE_VERSIONS:
         readable = ", ".join(map(str, READABLE_VERSIONS))
         raise G2SError(f"{path}: schema_version {version!r} is not supported (this g2s reads {readable})")
-    if version == 1:
-        if "features" in document:
-            raise G2SError(f"{path}: features: not a field of schema_version 1")
-        checked = {**document, "schema_version": SCHEMA_VERSION, "features": {}}
-    else:
-        checked = document
+    checked = {**document, "schema_version": SCHEMA_VERSION}
+    for name, added in _ADDED_IN.items():
+        if version < added:
+            if name in document:
+                raise G2SError(f"{path}: {name}: not a field of schema_version {version}")
+            checked[name] = {}
     problem = jsonschema.exceptions.best_match(_schema_validator().iter_errors(checked))
     if problem is not None:
         where = "".join(f"[{p}]" if isinstance(p, int) else f".{p}" for p in problem.absolute_path).lstrip(".")
@@ -170,6 +175,7 @@ def _loaded(document: dict[str, Any], path: Path) -> LoadedResult:
         roots=roots,
         analysis=analysis,
         features=dict(document.get("features", {})),
+        metrics={key: dict(measures) for key, measures in document.get("metrics", {}).items()},
         terminals=terminals,
         steiner=_edges_graph(graphs.get("steiner"), directed=False),
         forest=_edges_graph(graphs.get("forest"), directed=True),  # type: ignore[arg-type]

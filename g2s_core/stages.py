@@ -1,4 +1,4 @@
-"""The one table of plugin kinds: the seven pipeline stages, output writers and level generators.
+"""The one table of plugin kinds: the eight pipeline stages, output writers, level generators and batch executors.
 
 Everything that lists stages reads it: the config's sections
 (:mod:`g2s_core.config`), the registry's look-ups and ``g2s plugins``
@@ -17,8 +17,10 @@ loops        LoopAdder          ``g2s_add_loops``           the forest plus grap
 roots        RootSelector       ``g2s_root_scores``         a finite score for every node of the tree
 simplify     SimplifyPredicate  ``g2s_simplify_predicate``  a callable P(tree, a, b, c) -> bool
 analyzers    Analyzer           ``g2s_analyze``             a number for every node of the structure [*]_
+evaluators   Evaluator          ``g2s_evaluate``            a finite number for each named measure
 outputs      OutputWriter       ``g2s_write_output``        the paths written, among its FILES
 levels       LevelGenerator     ``g2s_generate_level``      a trimesh.Trimesh with triangles
+executors    Executor           ``g2s_execute``             an iterator of the summary rows of the pairs
 ===========  =================  ==========================  ==========================================
 
 .. [*] as a mapping, or as the ``values`` of an :class:`~g2s_core.model.AnalyzerResult`
@@ -28,7 +30,8 @@ levels       LevelGenerator     ``g2s_generate_level``      a trimesh.Trimesh wi
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Mapping
+import re
+from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -56,6 +59,10 @@ class Stage:
         check: the test of a result (see :data:`Check`).
         check_each_call: for a hook that returns a function, the test of each
             of that function's results (``None``: the result is not a function).
+        check_each_item: for a hook that returns an iterator, the test of each
+            item it yields (``None``: the result is not an iterator).
+        many: the config section lists any number of these plugins, each with
+            a ``key`` naming its output (``analyzers``, ``evaluators``).
         step, label: its row in the per-stage table (pipeline stages only).
         result: the :class:`~g2s_core.model.RunResult` attribute holding its output.
         timing: the :class:`~g2s_core.model.StageStats` name of its step.
@@ -70,6 +77,8 @@ class Stage:
     returns: str
     check: Check
     check_each_call: Callable[[Any], str | None] | None = None
+    check_each_item: Callable[[Any], str | None] | None = None
+    many: bool = False
     step: str = ""
     label: str = ""
     result: str = ""
@@ -120,19 +129,19 @@ def _looped(value: Any, kwargs: Mapping[str, Any], plugin: Any) -> str | None:
     return f"nodes or edges not in the graph: {foreign[:3]}" if foreign else None
 
 
-def _node_numbers(values: Any, nodes: Any, finite: bool) -> str | None:
+def _node_numbers(values: Any, nodes: Any, finite: bool, of: str = "node") -> str | None:
     if not isinstance(values, Mapping):
-        return f"{type(values).__name__}, not a mapping of node -> number"
+        return f"{type(values).__name__}, not a mapping of {of} -> number"
     missing = [n for n in nodes if n not in values]
     if missing:
-        return f"no value for nodes {missing[:5]}"
+        return f"no value for {of}s {missing[:5]}"
     for node in nodes:
         try:
             number = float(values[node])
         except (TypeError, ValueError):
-            return f"{values[node]!r} for node {node}, not a number"
+            return f"{values[node]!r} for {of} {node}, not a number"
         if finite and not math.isfinite(number):
-            return f"{number} for node {node}, not a finite number"
+            return f"{number} for {of} {node}, not a finite number"
     return None
 
 
@@ -164,6 +173,27 @@ def _written(value: Any, kwargs: Mapping[str, Any], plugin: Any) -> str | None:
     return f"paths it does not declare in FILES {files}: {stray[:3]}" if stray else None
 
 
+_MEASURE_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
+
+
+def _measures(value: Any, kwargs: Mapping[str, Any], plugin: Any) -> str | None:
+    names = list(value) if isinstance(value, Mapping) else []
+    wrong = [n for n in names if not (isinstance(n, str) and _MEASURE_NAME.fullmatch(n))]
+    if wrong:
+        return f"the measure name {wrong[0]!r}, not letters, digits and _ starting with a letter"
+    return _node_numbers(value, names, finite=True, of="measure")
+
+
+def _iterator(value: Any, kwargs: Mapping[str, Any], plugin: Any) -> str | None:
+    return None if isinstance(value, Iterator) else f"{type(value).__name__}, not an iterator"
+
+
+def _row(value: Any) -> str | None:
+    if isinstance(value, dict) and "config" in value and "level" in value:
+        return None
+    return f"{type(value).__name__}, not a summary row (a dict with config and level)"
+
+
 def _level(value: Any, kwargs: Mapping[str, Any], plugin: Any) -> str | None:
     if not isinstance(value, trimesh.Trimesh) or len(value.faces) == 0:
         return f"{type(value).__name__}, not a trimesh.Trimesh with triangles"
@@ -187,11 +217,15 @@ STAGES: tuple[Stage, ...] = (
           "a callable P(tree, a, b, c) -> bool", _predicate, check_each_call=_bool,
           step="Step 5", label="simplification", result="structure", timing="simplify"),
     Stage("analyzers", "Analyzer", hookspecs.g2s_analyze.__name__, "a number for every node of the structure",
-          _analysis, step="Post-process", label="analysis", result="analysis", timing="analysis"),
+          _analysis, many=True, step="Post-process", label="analysis", result="analysis", timing="analysis"),
+    Stage("evaluators", "Evaluator", hookspecs.g2s_evaluate.__name__, "a finite number for each named measure",
+          _measures, many=True, step="Post-process", label="evaluation", result="metrics", timing="evaluation"),
     Stage("outputs", "OutputWriter", hookspecs.g2s_write_output.__name__, "the paths written, among its FILES",
           _written, declares=("FILES",)),
     Stage("levels", "LevelGenerator", hookspecs.g2s_generate_level.__name__, "a trimesh.Trimesh with triangles",
           _level),
+    Stage("executors", "Executor", hookspecs.g2s_execute.__name__, "an iterator of the summary rows of the pairs",
+          _iterator, check_each_item=_row),
 )
 
 BY_KEY: dict[str, Stage] = {stage.key: stage for stage in STAGES}

@@ -1,4 +1,4 @@
-"""Views of a run's result shared by the CLI and the output writers: its final graph and its stage table."""
+"""Views of a run's result shared by the CLI and the output writers: its final graph, its stage table, its measures."""
 
 from __future__ import annotations
 
@@ -47,6 +47,12 @@ def stage_rows(stages: Sequence[StageStats]) -> list[tuple[str, str, str, str, s
     total = sum(s.seconds for s in stages)
     rows.append(("total", "", milliseconds(total), "", ""))
     return rows
+
+
+def metric_lines(result: RunResult) -> list[tuple[str, str]]:
+    """``("evaluation (KEY)", "name value, ...")`` for each evaluator's measures, values to 4 significant digits."""
+    return [(f"evaluation ({key})", ", ".join(f"{name} {value:.4g}" for name, value in measures.items()))
+            for key, measures in result.metrics.items()]
 
 
 def milliseconds(seconds: float) -> str:

@@ -44,11 +44,19 @@ import numpy as np
 import rustworkx as rx
 import scipy.sparse as sp
 from scipy.sparse import csgraph
+from pydantic import Field
 from scipy.sparse.linalg import ArpackNoConvergence, eigsh, spsolve
 
 from g2s_core.errors import G2SError
-from g2s_core.ties import rank_key
+from g2s_core.plugin import PluginParams
 from g2s_plugins import traffic
+
+
+class ClosenessParams(PluginParams):
+    """Distances in metres or in hops (the closeness analyzer's and root selector's parameters)."""
+
+    weighted: bool = Field(True, description="measure distances by edge length (metres) instead of hop count")
+
 
 Metric = Literal["degree", "betweenness", "closeness", "eigenvector", "katz"]
 """The metric names accepted by :func:`compute`."""

@@ -41,6 +41,7 @@ Cost: two multi-source Dijkstra searches plus the reference flow (see
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -69,6 +70,14 @@ class Quality:
     polygons: int
     structure_nodes: int
     stage_seconds: dict[str, float] = field(default_factory=dict)
+
+    def measures(self) -> dict[str, float]:
+        """The measures by name, as the ``traffic`` evaluator reports them (``area_within_6m``,
+        ``traffic_off``, ``rho``, ``rho_area_betweenness``, ``rho_ceiling``, ``structure_share``); NaN ones left out."""
+        named = {**{f"area_within_{r:g}m": v for r, v in self.area_within.items()}, "traffic_off": self.traffic_off,
+                 "rho": self.rho, "rho_area_betweenness": self.rho_area_betweenness, "rho_ceiling": self.rho_ceiling,
+                 "structure_share": self.structure_share}
+        return {name.replace(".", "_"): value for name, value in named.items() if math.isfinite(value)}
 
 
 def reference_flow(result: RunResult, max_sources: int = REFERENCE_SOURCES, seed: int = 0) -> np.ndarray:

@@ -284,6 +284,7 @@ def test_subtree_sums_by_hand():
     values = np.array([1.0, 2.0, 4.0, 8.0])
     assert traffic.subtree_sums(parent, values).tolist() == [[15.0, 6.0, 4.0, 8.0], [9.0, 15.0, 4.0, 8.0]]
     assert traffic.subtree_sums(np.array([[-9999]]), np.array([16.0])).tolist() == [[16.0]]
+<<<<<<< HEAD
     with pytest.raises(ValueError, match="cycle"):
         traffic.subtree_sums(np.array([[1, 0, -1]]), values[:3])
 
@@ -303,3 +304,23 @@ def test_subtree_sums_add_as_numpy_does():
             if children.size:
                 expected += np.add.reduceat(sums[row, children], [0])[0]
             assert sums[row, node] == expected
+=======
+
+
+def test_the_traffic_evaluator_puts_the_evaluation_in_the_run_result(registry):
+    mesh = samples.dungeon(seed=2, rooms=10).mesh
+    evaluated = preset("map_analysis", evaluators=[{"plugin": "traffic", "params": {"radii": [2.5, 6]}}])
+    result = run(registry, mesh, evaluated)
+    quality = evaluation.evaluate(result, radii=(2.5, 6.0))
+    assert result.metrics == {"traffic": {
+        "area_within_2_5m": quality.area_within[2.5], "area_within_6m": quality.area_within[6.0],
+        "rho": quality.rho, "rho_area_betweenness": quality.rho_area_betweenness, "rho_ceiling": quality.rho_ceiling,
+        "structure_share": quality.structure_share, "traffic_off": quality.traffic_off}}
+    assert [s.stage for s in result.stages][-2:] == ["analysis", "evaluation"]
+    # without an analyzer there is no heat map: rho is left out, the rest is measured
+    bare = run(registry, mesh, {**evaluated, "analyzers": []})
+    assert sorted(bare.metrics["traffic"]) == ["area_within_2_5m", "area_within_6m", "rho_area_betweenness",
+                                               "rho_ceiling", "structure_share", "traffic_off"]
+    assert bare.stages[-1].stage == "evaluation" and not bare.analysis
+    assert not run(registry, mesh, {**evaluated, "stop_after": "analyzers"}).metrics
+>>>>>>> main

@@ -76,8 +76,8 @@ def test_the_documented_example_plugins_register_and_work(tmp_path):
         registry.register(module, package="docs", entry_point=f"example.{index}")
     kinds = [(p.stage, p.name) for p in registry.plugins()]
     assert kinds == [("graph", "triangles"), ("terminals", "above"), ("steiner", "star"), ("loops", "shortcuts"),
-                     ("roots", "lowest"),
-                     ("simplify", "straight"), ("analyzers", "height"), ("outputs", "csv"), ("levels", "plaza")]
+                     ("roots", "lowest"), ("simplify", "straight"), ("analyzers", "height"), ("evaluators", "kept"),
+                     ("outputs", "csv"), ("levels", "plaza"), ("executors", "threads")]
 
     def call(stage, name, **kwargs):
         info = registry.get(stage, name)
@@ -99,9 +99,14 @@ def test_the_documented_example_plugins_register_and_work(tmp_path):
     assert isinstance(predicate(nx_path_with_positions(), 0, 1, 2), bool)
     values = call("analyzers", "height", structure=tree, context=None)
     assert min(values.values()) == 0
-    result = RunResult(config={}, mesh_name="plaza", mesh_sha256="", context=None, graph=graph, steiner=tree)
+    result = RunResult(config={}, mesh_name="plaza", mesh_sha256="", context=None, graph=graph, steiner=tree,
+                       structure=tree)
+    assert 0 < call("evaluators", "kept", result=result, context=None)["node_share"] <= 1
     written = call("outputs", "csv", result=result, folder=tmp_path)
     assert [p.name for p in written] == ["nodes.csv"] and len(written[0].read_text().splitlines()) == len(tree) + 1
+    rows = [{"config": "c", "level": str(n)} for n in range(5)]
+    executed = call("executors", "threads", function=dict, items=rows)
+    assert sorted(executed, key=lambda row: row["level"]) == rows
 
 
 def nx_path_with_positions():

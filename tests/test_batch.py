@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import os
+import re
 import signal
 import subprocess
 import sys
@@ -13,7 +14,7 @@ from pathlib import Path
 import pandas as pd
 import pytest
 
-from g2s_core.batch import RECORDS, expand_inputs, run_batch
+from g2s_core.batch import METRIC_PREFIX, RECORDS, expand_inputs, run_batch
 from g2s_core.cli import main
 from g2s_core.errors import G2SError
 from g2s_plugins.samples.levels import dungeon
@@ -192,6 +193,37 @@ def test_cli_batch_bad_input_is_one_line(levels, tmp_path, capsys):
     assert (tmp_path / "mine" / "keep.txt").read_text() == "mine"
 
 
+def test_cli_batch_executor_is_any_installed_one_with_its_own_parameters(tmp_path, capsys):
+    assert_user_error(g2s(capsys, "batch", CONFIG, SAMPLES[0], "-o", str(tmp_path / "a"), "--executor", "ray"),
+                      "executor: Executor plugin 'ray' is not installed (installed: dask, local, serial)")
+    assert_user_error(g2s(capsys, "batch", CONFIG, SAMPLES[0], "-o", str(tmp_path / "a"), "--scheduler", "tcp://x:1"),
+                      "executor 'local' params.scheduler: unknown key (expected one of: workers)")
+    assert_user_error(g2s(capsys, "batch", CONFIG, SAMPLES[0], "-o", str(tmp_path / "a"), "--evaluate", "nope"),
+                      "evaluators: Evaluator plugin 'nope' is not installed")
+    assert not (tmp_path / "a").exists()
+    code, out, _ = g2s(capsys, "plugins", "--stage", "executors")
+    assert code == 0 and [line.split()[0] for line in out.splitlines() if line.startswith("  ") and not
+                          line.startswith("    ")] == ["dask", "local", "serial"]
+
+
+def test_evaluated_pairs_get_the_metric_columns_of_their_structure_json(tmp_path):
+    out = tmp_path / "out"
+    plain = run_batch([CONFIG], SAMPLES, out, "serial", formats="json")
+    assert not any(c.startswith(METRIC_PREFIX) for c in plain.columns)
+    evaluated = run_batch([CONFIG], SAMPLES, out, "serial", formats="json", evaluators=["traffic"])
+    assert not evaluated["reused"].any()  # another config: the evaluator is part of it
+    names = ["area_within_10m", "area_within_3m", "area_within_6m", "rho", "rho_area_betweenness", "rho_ceiling",
+             "structure_share", "traffic_off"]
+    assert [c for c in evaluated.columns if c.startswith(METRIC_PREFIX)] == [f"metric.traffic.{n}" for n in names]
+    for row in evaluated.to_dict("records"):
+        metrics = json.loads((Path(row["folder"]) / "structure.json").read_text())["metrics"]["traffic"]
+        assert {n: row[f"metric.traffic.{n}"] for n in names} == pytest.approx(metrics, rel=1e-8)
+        assert row["metric.traffic.area_within_6m"] >= row["metric.traffic.area_within_3m"]
+        assert row["seconds_evaluators"] > 0
+    assert list(run_batch([CONFIG], SAMPLES, out, "serial", formats="json", evaluators=["traffic"])["reused"]) == [
+        True, True]
+
+
 def test_cli_batch_on_a_running_dask_scheduler(tmp_path, capsys):
     from dask.distributed import LocalCluster
 
@@ -248,3 +280,21 @@ def test_chokepoints_and_regions_are_summed_up(tmp_path):
     assert row["chokepoints_top_score"] == pytest.approx(max(c["score"] for c in chokepoints))
     assert row["chokepoints_top_score"] == pytest.approx(row["chokepoints_max"])  # the score near its nodes
     assert row["regions_largest_area"] == pytest.approx(max(r["area"] for r in regions))
+
+
+def test_the_python_example_of_docs_batch_md_runs_as_written(tmp_path):
+    """The script of docs/batch.md "From Python", as a user saves and runs it, on a folder of small generated levels."""
+    (block,) = re.findall(r"^```python\n(.*?)^```$", (PROJECT / "docs" / "batch.md").read_text(), re.MULTILINE | re.DOTALL)
+    (tmp_path / "compare.py").write_text(block)
+    (tmp_path / "levels").mkdir()
+    for seed in (5, 6):
+        dungeon(seed=seed, rooms=6).mesh.export(tmp_path / "levels" / f"dungeon{seed}.obj")
+    done = subprocess.run([sys.executable, "compare.py"], cwd=tmp_path, capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr
+    summary = pd.read_parquet(tmp_path / "predicates" / "summary.parquet")
+    assert sorted(zip(summary["config"], summary["level"])) == [
+        (config, level) for config in ("mesh_los", "surface") for level in ("dungeon5", "dungeon6")]
+    assert (summary["status"] == "ok").all() and summary["metric.traffic.rho"].between(-1, 1).all()
+    assert all(word in done.stdout for word in ("dungeon5", "dungeon6", "metric.traffic.rho"))
+    last = done.stdout.splitlines()[-2:]  # the means per config close the output
+    assert [line.split()[0] for line in last] == ["mesh_los", "surface"] and all(len(line.split()) == 5 for line in last)

@@ -29,7 +29,7 @@ def test_defaults_and_stage_order(tmp_path):
     config = load_config(write(tmp_path, "c.yaml", "graph: {plugin: navmesh}\nstop_after: graph\n"))
     assert config.agent.radius == 0.5 and config.mesh.up_axis == "y"
     assert config.stages_to_run() == ("graph",)
-    assert RunConfig().stages_to_run()[-1] == "analyzers"
+    assert RunConfig().stages_to_run()[-2:] == ("analyzers", "evaluators")
 
 
 def test_extends_merges_mappings_and_replaces_lists(tmp_path):

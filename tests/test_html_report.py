@@ -43,6 +43,9 @@ def test_report_is_self_contained(tmp_path):
     assert text.count("plotly.js v") == 0  # the library, embedded once, compressed
     assert not re.search(r"<(script|link|img)[^>]+(src|href)=", text)  # nothing loaded from elsewhere
     assert "terminals &lt;b&gt;near&lt;/b&gt; the edge &amp; one more" in text  # warnings escaped
+    assert "evaluation (" not in text
+    result.metrics["traffic"] = {"area_within_6m": 0.97413, "rho": 0.8252}
+    assert "<dt>evaluation (traffic)</dt><dd>area_within_6m 0.9741, rho 0.8252</dd>" in html_report.render(result)
 
 
 FOLD = {"width": 1400, "height": 1000}

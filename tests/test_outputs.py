@@ -161,7 +161,7 @@ def test_structure_json_follows_the_shipped_schema(result, tmp_path):
     document = json.loads((tmp_path / "structure.json").read_text())
     _validate(document, "structure.schema.json")
     _validate(json.loads((tmp_path / "run.json").read_text()), "run.schema.json")
-    assert document["schema_version"] == 2 and document["features"] == {}
+    assert document["schema_version"] == 3 and document["features"] == {} and document["metrics"] == {}
     assert document["mesh"] == {"name": "two floors.obj", "sha256": "ab" * 32, "vertices": 16, "faces": 24,
                                 "bounds": [[0.0, -0.2, 0.0], [10.0, 4.0, 6.0]]}
     assert document["config"] == result.config
@@ -260,8 +260,8 @@ def test_load_result_refuses_other_files(tmp_path):
     path.write_text("{not json")
     with pytest.raises(G2SError, match="invalid JSON at line 1"):
         load_result(path)
-    path.write_text(json.dumps({"format": "g2s-structure", "schema_version": 3}))
-    with pytest.raises(G2SError, match="schema_version 3 is not supported"):
+    path.write_text(json.dumps({"format": "g2s-structure", "schema_version": 4}))
+    with pytest.raises(G2SError, match="schema_version 4 is not supported"):
         load_result(path)
     path.write_text(json.dumps({"nodes": []}))
     with pytest.raises(G2SError, match="not a g2s structure.json"):

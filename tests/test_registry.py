@@ -218,6 +218,63 @@ def test_a_predicate_that_returns_none_or_raises_fails_as_itself():
         checked(_chain_tree(), 0, 1, 1)
 
 
+@pytest.mark.parametrize("measures, problem", [
+    ({"rho": float("nan")}, "returned nan for measure rho, not a finite number"),
+    ({"area within 3m": 0.5}, "returned the measure name 'area within 3m', not letters, digits and _ starting with a letter"),
+    ({"share": "high"}, "returned 'high' for measure share, not a number"),
+    ([0.5], "returned list, not a mapping of measure -> number"),
+])
+def test_an_evaluator_gives_finite_numbers_by_name(measures, problem):
+    @hookimpl
+    def evaluate(result):
+        return measures
+
+    registry = Registry()
+    info = registry.register(make_plugin("loose", g2s_evaluate=evaluate), package="pkg-e", entry_point="e")
+    with pytest.raises(PluginFailure) as caught:
+        registry.call(info, result=None, params=info.params_model(), context=None)
+    assert str(caught.value) == f"Evaluator plugin 'loose' (package 'pkg-e') failed: {problem}"
+    measures = {"share": 1, "rho": -0.5}
+    assert registry.call(info, result=None, params=info.params_model(), context=None) == measures
+
+
+def test_an_executor_yields_rows_and_its_failures_name_it():
+    rows = [{"config": "c", "level": "a"}, {"config": "c", "level": "b"}]
+    closed = []
+
+    @hookimpl
+    def execute(function, items):
+        try:
+            for item in items:
+                yield function(item)
+            raise OSError("the cluster went away")
+        finally:
+            closed.append(True)
+
+    registry = Registry()
+    info = registry.register(make_plugin("flaky", g2s_execute=execute), package="pkg-x", entry_point="e")
+    results = registry.call(info, function=dict, items=rows, params=info.params_model())
+    assert [next(results), next(results)] == rows
+    with pytest.raises(PluginFailure, match=r"^Executor plugin 'flaky' \(package 'pkg-x'\) failed: "
+                                            r"its iterator raised OSError: the cluster went away$"):
+        next(results)
+    results = registry.call(info, function=dict, items=rows, params=info.params_model())
+    next(results)
+    results.close()  # as a batch does on Ctrl-C: the executor's own iterator is closed too
+    assert closed == [True, True]
+    lists = registry.call(info, function=lambda item: [item], items=rows, params=info.params_model())
+    with pytest.raises(PluginFailure, match="failed: its iterator gave list, not a summary row"):
+        next(lists)
+
+    @hookimpl
+    def collect(function, items):
+        return [function(item) for item in items]
+
+    eager = registry.register(make_plugin("eager", g2s_execute=collect), package="pkg-x", entry_point="eager")
+    with pytest.raises(PluginFailure, match="failed: returned list, not an iterator"):
+        registry.call(eager, function=dict, items=rows, params=eager.params_model())
+
+
 def test_bad_input_found_by_a_plugin_stays_the_users_error():
     @hookimpl
     def select(graph):

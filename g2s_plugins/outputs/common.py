@@ -10,10 +10,10 @@ import networkx as nx
 import numpy as np
 
 from g2s_core.model import RunResult
-from g2s_core.summary import final_graph, roots_of, stage_rows
+from g2s_core.summary import final_graph, metric_lines, roots_of, stage_rows
 
-__all__ = ["agent_value", "edge_list", "final_graph", "floors", "is_loop_edge", "number", "positions", "roots_of", "stage_rows",
-           "terminal_ids", "vector"]
+__all__ = ["agent_value", "edge_list", "final_graph", "floors", "is_loop_edge", "metric_lines", "number", "positions",
+           "roots_of", "stage_rows", "terminal_ids", "vector"]
 
 FLOAT_DIGITS = 9
 """Floats in the written files keep this many significant digits (``format(x, '.9g')``)."""

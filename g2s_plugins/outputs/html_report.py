@@ -74,6 +74,7 @@ from g2s_plugins.outputs.common import (
     feature_records,
     final_graph,
     is_loop_edge,
+    metric_lines,
     roots_of,
     stage_rows,
     terminal_ids,
@@ -175,7 +176,7 @@ def _summary(result: RunResult) -> list[tuple[str, str]]:
         summary.append(("terminals", str(len(result.terminals.nodes))))
     if result.analysis:
         summary.append(("analysis values", ", ".join(result.analysis)))
-    return summary
+    return summary + metric_lines(result)
 
 
 def _config_section(result: RunResult) -> str:

@@ -6,9 +6,9 @@ structure with its tree data and analysis values, the rooted trees, the
 terminals and openings, the sizes (and edges) of the Steiner tree and the
 rooted trees before simplification, the node/edge counts of every stage and
 the warnings. Its layout is described by ``g2s_core/structure.schema.json``
-(``schema_version`` 2: version 1 plus ``features``, the records
-analyzers such as ``chokepoints`` and ``regions`` return; version 1 files
-are still read).
+(``schema_version`` 3: version 1 plus ``features``, the records
+analyzers such as ``chokepoints`` and ``regions`` return (version 2), plus
+``metrics``, the evaluators' measures (version 3); older files are still read).
 
 Determinism rule: the same mesh and config give a byte-identical
 ``structure.json``. Keys are sorted, lists are in a fixed order (nodes and
@@ -105,6 +105,7 @@ def structure_document(result: RunResult) -> dict[str, Any]:
         "roots": roots,
         "analysis_keys": keys,
         "features": _plain(result.features),
+        "metrics": _plain(result.metrics),
         "nodes": nodes,
         "edges": edges,
         "trees": trees,

@@ -11,19 +11,13 @@ from __future__ import annotations
 from collections.abc import Mapping
 
 import networkx as nx
-from pydantic import Field
 
 from g2s_core.model import RunContext
-from g2s_core.plugin import PluginParams, hookimpl
+from g2s_core.plugin import hookimpl
 from g2s_plugins import centrality
 
 NAME = "closeness"
-
-
-class Params(PluginParams):
-    """Distances in metres or in hops."""
-
-    weighted: bool = Field(True, description="measure distances by edge length (metres) instead of hop count")
+Params = centrality.ClosenessParams
 
 
 @hookimpl

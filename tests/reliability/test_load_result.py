@@ -133,23 +133,27 @@ def _drop(document: dict, where: tuple) -> dict:
     return changed
 
 
-def _version_1(document: dict) -> dict:
-    """``document`` as version 1 wrote it: no ``features``."""
-    old = {k: v for k, v in copy.deepcopy(document).items() if k != "features"}
-    old["schema_version"] = 1
+def _older(document: dict, version: int) -> dict:
+    """``document`` as an older version wrote it: version 1 had no ``features``, 1 and 2 no ``metrics``."""
+    dropped = {"metrics", "features"} if version == 1 else {"metrics"}
+    old = {k: v for k, v in copy.deepcopy(document).items() if k not in dropped}
+    old["schema_version"] = version
     return old
 
 
-def test_version_1_files_are_read_and_checked_as_version_2_without_features(written, tmp_path):
-    loaded = load_result(_write(tmp_path, _version_1(written)))
-    assert loaded.schema_version == 1 and loaded.features == {}
+@pytest.mark.parametrize("version", [1, 2])
+def test_older_files_are_read_and_checked_as_the_current_version_without_its_new_fields(version, written, tmp_path):
+    loaded = load_result(_write(tmp_path, _older(written, version)))
+    assert loaded.schema_version == version and loaded.metrics == {}
+    assert version > 1 or loaded.features == {}
     assert loaded.structure.number_of_nodes() == len(written["nodes"])
-    path = _write(tmp_path, _set(_version_1(written), ("nodes", 0, "position"), [1, 2]))
+    path = _write(tmp_path, _set(_older(written, version), ("nodes", 0, "position"), [1, 2]))
     with pytest.raises(G2SError, match=r"nodes\[0\]\.position"):
         load_result(path)
-    path = _write(tmp_path, {**_version_1(written), "features": {}})
-    with pytest.raises(G2SError, match="features: not a field of schema_version 1"):
-        load_result(path)
+    for field in ("features", "metrics")[version - 1:]:
+        path = _write(tmp_path, {**_older(written, version), field: {}})
+        with pytest.raises(G2SError, match=f"{field}: not a field of schema_version {version}"):
+            load_result(path)
 
 
 @pytest.mark.parametrize("run_text", ["[]", "{", '{"stages": 5}', "[" * 5000, "\xff"])

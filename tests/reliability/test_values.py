@@ -31,12 +31,14 @@ def _plugin_float_params() -> list[tuple[str, str, str]]:
 
 
 def _value_for(model: type[BaseModel], field: str, number: float):
-    """``number`` shaped as ``field`` takes it: a scalar, or inside a point or list of points."""
+    """``number`` shaped as ``field`` takes it: a scalar, or inside a point, a list of points or a list of numbers."""
     text = repr(model.model_fields[field].annotation)
     if "tuple" in text and "list" in text:
         return [[number, 0.0, 0.0]]
     if "tuple" in text:
         return [number, 0.0, 0.0]
+    if "list" in text:
+        return [number]
     return number
 
 

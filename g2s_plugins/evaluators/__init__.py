@@ -1,0 +1,1 @@
+"""Evaluator plugins: measures of how good a run's result is (``evaluators:`` in the config)."""

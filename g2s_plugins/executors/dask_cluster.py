@@ -1,0 +1,68 @@
+"""A dask.distributed cluster: a scheduler's workers, or a LocalCluster of single-threaded processes started here.
+
+Workers import the batch's function by name and look plugins up in their own
+environment: every worker needs g2s and the same plugins installed, and sees
+the meshes and the output folder at the same paths (see docs/batch.md).
+"""
+
+from __future__ import annotations
+
+import logging
+import os
+import signal
+from collections.abc import Callable, Iterator, Sequence
+from contextlib import contextmanager
+from typing import Any
+
+from pydantic import Field
+
+from g2s_core.plugin import PluginParams, hookimpl
+
+NAME = "dask"
+
+
+class Params(PluginParams):
+    """Which cluster."""
+
+    scheduler: str | None = Field(None, description="address of a running scheduler, e.g. tcp://host:8786 "
+                                  "(default: start a LocalCluster and close it at the end)")
+    workers: int | None = Field(None, ge=1, description="processes of the LocalCluster (default: the CPU count)")
+
+
+@contextmanager
+def _children_ignore_interrupt() -> Iterator[None]:
+    """Processes started inside ignore Ctrl-C (the disposition is inherited), this one keeps its handler."""
+    handler = signal.signal(signal.SIGINT, signal.SIG_IGN)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGINT, handler)
+
+
+@hookimpl
+def g2s_execute(
+    function: Callable[[Any], dict[str, Any]], items: Sequence[Any], params: Params
+) -> Iterator[dict[str, Any]]:
+    """Each item as a Dask task, yielded as it finishes."""
+    from dask.distributed import Client, LocalCluster, as_completed
+
+    if params.scheduler:
+        cluster = None
+        client = Client(params.scheduler)
+    else:
+        with _children_ignore_interrupt():
+            cluster = LocalCluster(
+                n_workers=params.workers or os.cpu_count(), threads_per_worker=1, processes=True,
+                dashboard_address=":0", silence_logs=logging.ERROR,
+            )
+        client = Client(cluster)
+    # pure=False: a pair is run again when asked again (resume decides what is finished, not Dask's cache)
+    futures = [client.submit(function, item, pure=False) for item in items]
+    try:
+        for future in as_completed(futures):
+            yield future.result()
+    finally:
+        client.cancel([f for f in futures if not f.done()])
+        client.close()
+        if cluster is not None:
+            cluster.close()
