@@ -203,10 +203,8 @@ class Registry:
         if each is None:
             return value
 
-        guarded = _guarded(info, value, "its function raised")
-
         def checked(*args: Any) -> Any:
-            answer = guarded(*args)
+            answer = _guarded(info, value, "its function raised")(*args)
             wrong = each(answer)
             if wrong is not None:
                 raise info.failure(f"its function returned {wrong}")

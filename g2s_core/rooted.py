@@ -62,20 +62,16 @@ def root_forest(forest: nx.Graph, scores: Mapping[int, float], centre: np.ndarra
     components = sorted((min(c), c) for c in nx.connected_components(forest))
     roots = [min(c, key=rank.__getitem__) for _, c in components]
     rooted = nx.DiGraph(roots=roots)
-    # gathered first, then added in bulk in the same order (networkx's per-call bookkeeping)
-    nodes, edges, depth = [], [], {}
     for root in roots:
-        depth[root] = 0
-        nodes.append((root, {**forest.nodes[root], "depth": 0, "root": root}))
+        depth = {root: 0}
+        rooted.add_node(root, **forest.nodes[root], depth=0, root=root)
         for parent, child in nx.dfs_edges(forest, root, sort_neighbors=sorted):
             depth[child] = depth[parent] + 1
-            nodes.append((child, {**forest.nodes[child], "depth": depth[child], "root": root}))
-            edges.append((parent, child, forest.edges[parent, child]))
-    rooted.add_nodes_from(nodes)
-    rooted.add_edges_from(edges)
+            rooted.add_node(child, **forest.nodes[child], depth=depth[child], root=root)
+            rooted.add_edge(parent, child, **forest.edges[parent, child])
     loop_edges = [(u, v) for u, v in forest.edges if not rooted.has_edge(u, v) and not rooted.has_edge(v, u)]
     for u, v in sorted(loop_edges, key=lambda e: sorted(e)):
-        first, second = sorted((u, v), key=lambda node: (depth[node], node))
+        first, second = sorted((u, v), key=lambda node: (rooted.nodes[node]["depth"], node))
         rooted.add_edge(first, second, **forest.edges[u, v], loop=True)
     return rooted
 
