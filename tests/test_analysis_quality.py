@@ -284,7 +284,6 @@ def test_subtree_sums_by_hand():
     values = np.array([1.0, 2.0, 4.0, 8.0])
     assert traffic.subtree_sums(parent, values).tolist() == [[15.0, 6.0, 4.0, 8.0], [9.0, 15.0, 4.0, 8.0]]
     assert traffic.subtree_sums(np.array([[-9999]]), np.array([16.0])).tolist() == [[16.0]]
-<<<<<<< HEAD
     with pytest.raises(ValueError, match="cycle"):
         traffic.subtree_sums(np.array([[1, 0, -1]]), values[:3])
 
@@ -304,7 +303,6 @@ def test_subtree_sums_add_as_numpy_does():
             if children.size:
                 expected += np.add.reduceat(sums[row, children], [0])[0]
             assert sums[row, node] == expected
-=======
 
 
 def test_the_traffic_evaluator_puts_the_evaluation_in_the_run_result(registry):
@@ -323,4 +321,3 @@ def test_the_traffic_evaluator_puts_the_evaluation_in_the_run_result(registry):
                                                "rho_ceiling", "structure_share", "traffic_off"]
     assert bare.stages[-1].stage == "evaluation" and not bare.analysis
     assert not run(registry, mesh, {**evaluated, "stop_after": "analyzers"}).metrics
->>>>>>> main
