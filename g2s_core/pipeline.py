@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import gc
 import math
 import time
 from collections.abc import Callable, Sequence
@@ -99,17 +100,27 @@ def run(
     bounds = np.asarray(mesh.bounds, dtype=np.float64)
     context = RunContext(mesh=mesh, agent=config.agent, centre=bounds.mean(axis=0))
     result = RunResult(config=config.record(), mesh_name=mesh_name, mesh_sha256=mesh_sha256, context=context)
-    for stage in PIPELINE:
-        if stage.key not in plan_.stages:  # an optional stage or an empty list left out, or past stop_after
-            continue
-        say(f"{stage.step}: {stage.label}")
-        record: dict[str, Any] = {}
-        start = time.perf_counter()
-        step = Step(registry, plan_.stages[stage.key], result, record)
-        go_on = _STEPS[stage.key](step) is not False
-        result.stages.append(StageStats(stage.timing, time.perf_counter() - start, **record))
-        if not go_on:
-            break
+    # CPython's cyclic collector stays off while the stages run: they build hundreds of thousands of
+    # networkx dicts, and every collection their allocations trigger rescans all the live ones (about an
+    # eighth of the CPU time of a 100k-polygon level, docs/performance.md); reference counting still frees
+    # what they drop, and a cycle among it waits for the first collection after the run
+    collecting = gc.isenabled()
+    gc.disable()
+    try:
+        for stage in PIPELINE:
+            if stage.key not in plan_.stages:  # an optional stage or an empty list left out, or past stop_after
+                continue
+            say(f"{stage.step}: {stage.label}")
+            record: dict[str, Any] = {}
+            start = time.perf_counter()
+            step = Step(registry, plan_.stages[stage.key], result, record)
+            go_on = _STEPS[stage.key](step) is not False
+            result.stages.append(StageStats(stage.timing, time.perf_counter() - start, **record))
+            if not go_on:
+                break
+    finally:
+        if collecting:
+            gc.enable()
     return result
 
 
@@ -254,8 +265,8 @@ def steiner_forest(
 
 def _with_graph_attributes(part: nx.Graph, graph: nx.Graph) -> nx.Graph:
     """``part`` (nodes and edges of ``graph``) with ``graph``'s attributes copied onto them."""
-    for node in part.nodes:
-        part.nodes[node].update(graph.nodes[node])
-    for u, v in part.edges:
-        part.edges[u, v].update(graph.edges[u, v])
+    for node, data in part.nodes(data=True):
+        data.update(graph.nodes[node])
+    for u, v, data in part.edges(data=True):
+        data.update(graph.adj[u][v])
     return part

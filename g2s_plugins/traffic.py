@@ -4,8 +4,8 @@ structure node stands for, and area-weighted origin-destination flow.
 Shared by the ``coverage`` terminal selector, the ``flow`` and ``area``
 analyzers, area-weighted betweenness and :mod:`g2s_plugins.evaluation`.
 Every computation is a scipy sparse-graph search over the whole graph at
-once (:func:`scipy.sparse.csgraph.dijkstra`); nothing loops over nodes in
-Python except the per-depth accumulation of :func:`subtree_sums`.
+once (:func:`scipy.sparse.csgraph.dijkstra`); the sums up shortest-path
+trees (:func:`subtree_sums`) run in the C++ extension.
 
 Origin-destination flow (space syntax's "choice", weighted by area)
 --------------------------------------------------------------------
@@ -46,6 +46,7 @@ import numpy as np
 import scipy.sparse as sp
 from scipy.sparse import csgraph
 
+from g2s_plugins import _trees
 from g2s_plugins.surface_arrays import SurfaceArrays, surface_arrays
 
 __all__ = ["SurfaceArrays", "distance_to", "flow_error_bound", "gather", "od_flow", "represented_area", "subtree_sums", "surface_arrays"]
@@ -115,33 +116,17 @@ def subtree_sums(parent: np.ndarray, values: np.ndarray) -> np.ndarray:
     Returns:
         (b, n) float64: ``values`` summed over each node and its descendants.
 
-    Hop depths come from pointer jumping (O(b n log depth)); the sums are
-    then pushed up one depth level at a time (one numpy call per level).
+    O(b n) in the C++ extension (``src/trees_module.cpp``): per tree, the
+    children of each node in index order, each node's children's sums added
+    (numpy's pairwise order) before its own value.
+
+    Raises:
+        ValueError: a row has a parent out of range or a cycle.
     """
-    b, n = parent.shape
-    offsets = (np.arange(b, dtype=np.int64) * n)[:, None]
-    up = np.where(parent >= 0, parent + offsets, -1).ravel()
-    depth = (up >= 0).astype(np.int64)
-    jump = up.copy()
-    while True:
-        has = np.flatnonzero(jump >= 0)
-        if has.size == 0:
-            break
-        target = jump[has]
-        new_depth = depth.copy()
-        new_depth[has] += depth[target]
-        new_jump = np.full_like(jump, -1)
-        new_jump[has] = jump[target]
-        depth, jump = new_depth, new_jump
-    sums = np.tile(np.asarray(values, dtype=np.float64), b)
-    order = np.lexsort((up, -depth))  # deepest level first, then by parent
-    order = order[depth[order] > 0]
-    ends = np.flatnonzero(np.diff(depth[order])) + 1
-    for level in np.split(order, ends) if order.size else []:
-        parents = up[level]
-        starts = np.flatnonzero(np.concatenate([[True], parents[1:] != parents[:-1]]))
-        sums[parents[starts]] += np.add.reduceat(sums[level], starts)
-    return sums.reshape(b, n)
+    parent = np.asarray(parent)
+    if parent.dtype not in (np.int32, np.int64):
+        parent = parent.astype(np.int64)
+    return _trees.subtree_sums(np.ascontiguousarray(parent), np.ascontiguousarray(values, dtype=np.float64))
 
 
 def flow_error_bound(sources: int, delta: float = 0.01) -> float:
@@ -190,7 +175,9 @@ def od_flow(
     block = max(1, BLOCK_ENTRIES // n)
     for lo in range(0, len(sources), block):
         batch = sources[lo:lo + block]
-        _, predecessors = csgraph.dijkstra(adjacency, directed=False, indices=batch, return_predecessors=True)
+        # adjacency is symmetric: a directed search scans each edge once instead of from both of
+        # its stored directions, with the same distances and predecessors
+        _, predecessors = csgraph.dijkstra(adjacency, directed=True, indices=batch, return_predecessors=True)
         through = subtree_sums(predecessors, weight) - weight[None, :]
         through[np.arange(len(batch)), batch] = 0.0
         flow += factor[lo:lo + block] @ through

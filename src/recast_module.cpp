@@ -457,6 +457,22 @@ public:
         return gap <= reach ? gap : FLT_MAX;
     }
 
+    // The largest surface_gap over points at most `step` apart horizontally along a -> b, ends
+    // included, stopping at the first point with no surface within `reach` (then +inf).
+    double segment_gap(const double* a, const double* b, double step, float horizontal, float reach) const {
+        const double length = std::hypot(b[0] - a[0], b[2] - a[2]);
+        const long pieces = std::max(1L, static_cast<long>(std::ceil(length / step - 1e-9)));
+        float worst = 0.0f;
+        for (long i = 0; i <= pieces && worst != FLT_MAX; ++i) {
+            const double t = static_cast<double>(i) / static_cast<double>(pieces);
+            const float p[3] = {static_cast<float>(a[0] + t * (b[0] - a[0])),
+                                static_cast<float>(a[1] + t * (b[1] - a[1])),
+                                static_cast<float>(a[2] + t * (b[2] - a[2]))};
+            worst = std::max(worst, surface_gap(p, horizontal, reach));
+        }
+        return worst == FLT_MAX ? std::numeric_limits<double>::infinity() : static_cast<double>(worst);
+    }
+
 private:
     std::vector<std::unique_ptr<TileMesh>> build_solo(const Input& in, const Settings& s);
     std::vector<std::unique_ptr<TileMesh>> build_tiled(const Input& in, const Settings& s, int ts);
@@ -1148,17 +1164,7 @@ NB_MODULE(_recast, m) {
              [](const NavMeshCore& n, PointsIn A, PointsIn B, double step, float horizontal, float reach) {
                  if (!(step > 0)) throw nb::value_error("step must be positive");
                  const std::vector<double> out = map_row_pairs<double>(n, A, B, [&](const double* a, const double* b) {
-                     const double length = std::hypot(b[0] - a[0], b[2] - a[2]);
-                     const long pieces = std::max(1L, static_cast<long>(std::ceil(length / step - 1e-9)));
-                     float worst = 0.0f;
-                     for (long i = 0; i <= pieces && worst != FLT_MAX; ++i) {
-                         const double t = static_cast<double>(i) / static_cast<double>(pieces);
-                         const float p[3] = {static_cast<float>(a[0] + t * (b[0] - a[0])),
-                                             static_cast<float>(a[1] + t * (b[1] - a[1])),
-                                             static_cast<float>(a[2] + t * (b[2] - a[2]))};
-                         worst = std::max(worst, n.surface_gap(p, horizontal, reach));
-                     }
-                     return worst == FLT_MAX ? std::numeric_limits<double>::infinity() : static_cast<double>(worst);
+                     return n.segment_gap(a, b, step, horizontal, reach);
                  });
                  return to_numpy(out, out.size(), 0);
              },
@@ -1166,6 +1172,15 @@ NB_MODULE(_recast, m) {
              "(S,) float64: the largest vertical distance to the walkable surface (see surface_gap) over "
              "points at most `step` apart horizontally along each segment A[i] -> B[i], ends included; "
              "inf when a point has none within `reach`; GIL released")
+        .def("segment_surface_gap",
+             [](const NavMeshCore& n, Vec3In a, Vec3In b, double step, float horizontal, float reach) {
+                 if (!(step > 0)) throw nb::value_error("step must be positive");
+                 std::lock_guard<std::mutex> lock(n.mutex);
+                 return n.segment_gap(a.data(), b.data(), step, horizontal, reach);
+             },
+             nb::arg("a"), nb::arg("b"), nb::arg("step"), nb::arg("horizontal"), nb::arg("reach"),
+             "segment_surface_gaps for one segment a -> b, as a float: no array in or out (one call per "
+             "predicate test)")
         .def("nearest_poly",
              [](const NavMeshCore& n, Vec3In p, ExtIn extents) {
                  float pp[3], out[3], ext[3] = {n.default_ext[0], n.default_ext[1], n.default_ext[2]};

@@ -284,6 +284,25 @@ def test_subtree_sums_by_hand():
     values = np.array([1.0, 2.0, 4.0, 8.0])
     assert traffic.subtree_sums(parent, values).tolist() == [[15.0, 6.0, 4.0, 8.0], [9.0, 15.0, 4.0, 8.0]]
     assert traffic.subtree_sums(np.array([[-9999]]), np.array([16.0])).tolist() == [[16.0]]
+    with pytest.raises(ValueError, match="cycle"):
+        traffic.subtree_sums(np.array([[1, 0, -1]]), values[:3])
+
+
+def test_subtree_sums_add_as_numpy_does():
+    # a star of 300 leaves and random trees: each node's children summed in numpy's pairwise order, to
+    # the bit (the flow values, and so the structure output, must not move with the implementation)
+    rng = np.random.default_rng(3)
+    values = rng.random(301) * 10.0 ** rng.uniform(-3, 3, 301)
+    star = [-1] + [0] * 300
+    parent = np.array([star] + [[-1] + [int(rng.integers(0, k)) for k in range(1, 301)] for _ in range(3)])
+    sums = traffic.subtree_sums(parent, values)
+    for row in range(4):
+        for node in range(301):
+            children = np.flatnonzero(parent[row] == node)
+            expected = values[node]
+            if children.size:
+                expected += np.add.reduceat(sums[row, children], [0])[0]
+            assert sums[row, node] == expected
 
 
 def test_the_traffic_evaluator_puts_the_evaluation_in_the_run_result(registry):

@@ -212,3 +212,5 @@ def test_segment_surface_gaps_on_a_slab():
     assert gaps[1] == pytest.approx(0.5, abs=nm.settings["cell_height"])  # rising: the far end counts
     assert gaps[2] == math.inf  # 3 m above: beyond reach
     assert gaps[3] == math.inf  # runs off the slab
+    # one segment at a time (the surface_los predicate's call): the same values
+    assert [nm.segment_surface_gap(a, b, step=0.1, reach=1.0) for a, b in zip(A.tolist(), B.tolist())] == gaps.tolist()

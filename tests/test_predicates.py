@@ -39,6 +39,9 @@ class SquareWithWall:
             gaps.append(gap if on.all() and gap <= reach else math.inf)
         return np.array(gaps)
 
+    def segment_surface_gap(self, a, b, step, reach):
+        return float(self.segment_surface_gaps(a, b, step, reach)[0])
+
     @staticmethod
     def _inside(p):
         return 0.0 <= p[0] <= 10.0 and 0.0 <= p[2] <= 10.0 and abs(p[1]) < 0.5

@@ -76,7 +76,7 @@ def navmesh_graph(navmesh: NavMesh, agent: AgentConfig | None = None, max_edge_g
         (i, {"pos": pos[i], "normal": nrm[i], "area": area[i], "on_navmesh": True, "polygon": i})
         for i in range(navmesh.polygon_count)
     )
-    ends = portals.endpoints.tolist()
+    ends = portals.endpoints.reshape(-1, 6).tolist()
     crossing = np.zeros(len(pairs), dtype=bool)
     if max_edge_gap is not None and agent is None:
         raise ValueError("max_edge_gap needs the agent (its radius spaces the probes)")
@@ -86,7 +86,7 @@ def navmesh_graph(navmesh: NavMesh, agent: AgentConfig | None = None, max_edge_g
         )
         crossing = gaps > max_edge_gap
     graph.add_edges_from(
-        (a, b, {"weight": w, "portal": (tuple(e[0]), tuple(e[1])), "width": wd})
+        (a, b, {"weight": w, "portal": ((e[0], e[1], e[2]), (e[3], e[4], e[5])), "width": wd})
         for (a, b), w, e, wd, cross in zip(pairs.tolist(), weights.tolist(), ends, portals.widths.tolist(), crossing)
         if not cross
     )

@@ -102,7 +102,10 @@ def add_loops(graph: nx.Graph, structure: nx.Graph, stretch: float, min_gain: fl
         added.append(path)
         for p, q in zip(path, path[1:]):
             _join(neighbours, p, q, graph.edges[arrays.nodes[p], arrays.nodes[q]]["weight"])
-    looped = structure.copy()
+    # a copy as Graph.copy() makes it, visiting each edge once rather than from both ends
+    looped = nx.Graph(**structure.graph)
+    looped.add_nodes_from(structure.nodes(data=True))
+    looped.add_edges_from(structure.edges(data=True))
     for path in added:
         ids = [arrays.nodes[i] for i in path]
         looped.add_nodes_from((node, graph.nodes[node]) for node in ids if node not in looped)

@@ -63,6 +63,6 @@ def g2s_simplify_predicate(params: Params, context: RunContext) -> Callable[[nx.
         clear, _t = navmesh.raycast(start, end)
         if not clear or gap is None:
             return clear
-        return bool(navmesh.segment_surface_gaps(start, end, step, gap)[0] <= gap)
+        return navmesh.segment_surface_gap(start, end, step, gap) <= gap
 
     return collapse_rule(params.normal_tolerance_deg, line_of_sight, params.whole_chain_normals)

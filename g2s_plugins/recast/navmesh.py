@@ -209,6 +209,15 @@ class NavMesh:
         horizontal = float(self.settings["cell_size"]) if horizontal is None else float(horizontal)
         return self.core.segment_surface_gaps(A, B, float(step), horizontal, float(reach))
 
+    def segment_surface_gap(self, a, b, step: float, reach: float, horizontal: float | None = None) -> float:
+        """:meth:`segment_surface_gaps` of the one segment ``a -> b`` (two 3-sequences), m.
+
+        The same C++ computation without arrays in or out: for callers that test
+        one segment at a time (the ``surface_los`` predicate).
+        """
+        horizontal = float(self.settings["cell_size"]) if horizontal is None else float(horizontal)
+        return float(self.core.segment_surface_gap(_vec(a), _vec(b), float(step), horizontal, float(reach)))
+
     def poly_ref(self, index: int) -> int:
         """Detour ``dtPolyRef`` of polygon ``index``."""
         return int(self.core.poly_ref(int(index)))

@@ -1,0 +1,66 @@
+"""CPU and wall time of every stage of a preset on a generated dungeon (issue 9's speed target).
+
+Run: ``.venv/bin/python benchmarks/stage_times.py [--rooms 12000] [--preset map_analysis] [--repeat 1]``
+
+``samples.dungeon(seed=0, rooms=N)`` (12,000 rooms: 100,781 navmesh
+polygons) runs through the preset in this process. For each stage it prints
+the wall time and the CPU time of the whole process (all threads: the
+navmesh build runs its tiles on every core), read at the pipeline's progress
+callback, which fires as each stage starts. On a machine shared with other
+jobs the wall times grow with the load average (printed before and after);
+the CPU times much less, so compare those. This is a benchmark: nothing here
+asserts a time.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import platform
+import resource
+import time
+
+from g2s_core import pipeline
+from g2s_core.config import PRESETS_DIR, load_config
+from g2s_core.mesh import mesh_sha256
+from g2s_core.registry import Registry
+from g2s_plugins.samples import levels as samples
+
+
+def stage_times(plan: pipeline.Plan, registry: Registry, rooms: int) -> tuple[list[tuple[str, float, float]], int]:
+    """One run: (label, wall s, CPU s) per stage, and the number of navmesh polygons."""
+    mesh = samples.dungeon(seed=0, rooms=rooms).mesh
+    marks: list[tuple[str, float, float]] = []
+
+    def mark(message: str) -> None:
+        marks.append((message, time.perf_counter(), time.process_time()))
+
+    result = pipeline.run(plan, registry, mesh, f"dungeon_{rooms}", mesh_sha256(mesh), progress=mark)
+    mark("end")
+    stages = [(label, w1 - w0, c1 - c0) for (label, w0, c0), (_, w1, c1) in zip(marks, marks[1:])]
+    return stages, result.context.navmesh.polygon_count if result.context.navmesh is not None else 0
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--rooms", type=int, default=12000)
+    parser.add_argument("--preset", default="map_analysis")
+    parser.add_argument("--repeat", type=int, default=1)
+    args = parser.parse_args()
+    registry = Registry.from_entry_points()
+    plan = pipeline.plan(load_config(PRESETS_DIR / f"{args.preset}.yaml"), registry, args.preset)
+    print(f"machine: {platform.machine()}, {os.cpu_count()} cores, Python {platform.python_version()}; "
+          f"preset {args.preset}, dungeon of {args.rooms} rooms")
+    for run in range(args.repeat):
+        load = os.getloadavg()[0]
+        stages, polygons = stage_times(plan, registry, args.rooms)
+        print(f"run {run + 1}: {polygons} polygons, load average {load:.1f} -> {os.getloadavg()[0]:.1f}")
+        for label, wall, cpu in stages:
+            print(f"  {label:<40} wall {wall:7.2f} s   CPU {cpu:7.2f} s")
+        print(f"  {'total':<40} wall {sum(s[1] for s in stages):7.2f} s   CPU {sum(s[2] for s in stages):7.2f} s")
+    peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 2**20
+    print(f"peak memory (max RSS, this process): {peak:.2f} GiB")
+
+
+if __name__ == "__main__":
+    main()
