@@ -88,11 +88,21 @@ def reference_flow(result: RunResult, max_sources: int = REFERENCE_SOURCES, seed
     return flow
 
 
-def heat_map(result: RunResult, values: dict) -> np.ndarray:
-    """(n,) each initial-graph node's value of its nearest final-structure node (NaN where none)."""
+def nearest_structure_rows(result: RunResult) -> np.ndarray:
+    """(n,) the row of each initial-graph node's nearest final-structure node along the graph (-1: none)."""
+    arrays = traffic.surface_arrays(result.graph)
+    return traffic.distance_to(arrays, arrays.rows(sorted(result.structure)))[1]
+
+
+def heat_map(result: RunResult, values: dict, nearest: np.ndarray | None = None) -> np.ndarray:
+    """(n,) each initial-graph node's value of its nearest final-structure node (NaN where none).
+
+    ``nearest``: :func:`nearest_structure_rows` of ``result``, when already known.
+    """
     arrays = traffic.surface_arrays(result.graph)
     structure = sorted(result.structure)
-    _, nearest = traffic.distance_to(arrays, arrays.rows(structure))
+    if nearest is None:
+        nearest = nearest_structure_rows(result)
     by_row = np.full(arrays.n, np.nan)
     by_row[arrays.rows(structure)] = [values[node] for node in structure]
     return np.where(nearest >= 0, by_row[np.maximum(nearest, 0)], np.nan)
@@ -129,8 +139,9 @@ def evaluate(
     within = {r: float(area[distance <= r].sum() / area.sum()) for r in radii}
     total_flow = reference.sum()
     off = float(reference[distance > off_distance].sum() / total_flow) if total_flow > 0 else 0.0
+    nearest = nearest_structure_rows(result)
     first = next(iter(result.analysis.values()), None)
-    rho = _spearman(heat_map(result, first), reference) if first is not None else float("nan")
+    rho = _spearman(heat_map(result, first, nearest), reference) if first is not None else float("nan")
     undirected = result.structure.to_undirected(as_view=True)
     weights = traffic.represented_area(result.graph, undirected)
     betweenness = centrality.betweenness(undirected, weighted=True, node_weight=weights)
@@ -138,8 +149,10 @@ def evaluate(
         area_within=within,
         traffic_off=off,
         rho=rho,
-        rho_area_betweenness=_spearman(heat_map(result, betweenness), reference),
-        rho_ceiling=_spearman(heat_map(result, traffic.gather(result.graph, result.structure, reference, mean=True)), reference),
+        rho_area_betweenness=_spearman(heat_map(result, betweenness, nearest), reference),
+        rho_ceiling=_spearman(
+            heat_map(result, traffic.gather(result.graph, result.structure, reference, mean=True), nearest), reference
+        ),
         structure_share=result.structure.number_of_nodes() / arrays.n,
         polygons=arrays.n,
         structure_nodes=result.structure.number_of_nodes(),

@@ -37,6 +37,7 @@ class Params(PluginParams):
             raise PydanticCustomError("radii", "radii: expected numbers > 0 (metres)", {})
         return self
 
+
 @hookimpl
 def g2s_evaluate(result: RunResult, params: Params, context: RunContext) -> dict[str, float]:
     """The measures of a run that got to simplification (the analyzers' first key is the heat map)."""
