@@ -76,18 +76,7 @@ def root_forest(forest: nx.Graph, scores: Mapping[int, float], centre: np.ndarra
     return rooted
 
 
-def tree_children(forest: nx.DiGraph, node: int) -> list[int]:
-    """The children of ``node`` in its rooted tree (loop edges left out), by ascending id."""
-    return sorted(child for child, data in forest.succ[node].items() if not data.get("loop", False))
-
-
 def tree_parent(forest: nx.DiGraph, node: int) -> int | None:
     """The parent of ``node`` in its rooted tree (``None`` for a root)."""
     return next((p for p, data in forest.pred[node].items() if not data.get("loop", False)), None)
 
-
-def on_loop_edge(forest: nx.DiGraph, node: int) -> bool:
-    """Whether ``node`` is an end of a loop edge."""
-    return any(data.get("loop", False) for data in forest.succ[node].values()) or any(
-        data.get("loop", False) for data in forest.pred[node].values()
-    )

@@ -39,9 +39,13 @@ from collections.abc import Callable
 import networkx as nx
 import numpy as np
 
-from g2s_core.rooted import on_loop_edge, tree_children, tree_parent
+from g2s_core.rooted import tree_parent
 
 Predicate = Callable[[nx.DiGraph, int, int, int], bool]
+Links = dict[int, set[int]]
+"""Each node's tree children, or its partners along loop edges: plain sets kept in step with the tree, because
+networkx answers every such question through new view objects, which on a 100k-polygon level cost more than
+the predicate itself (docs/performance.md)."""
 
 
 def simplify_forest(forest: nx.DiGraph, predicate: Predicate) -> nx.DiGraph:
@@ -51,38 +55,45 @@ def simplify_forest(forest: nx.DiGraph, predicate: Predicate) -> nx.DiGraph:
     ``depth`` is recomputed; ``graph["roots"]`` is kept.
     """
     tree = forest.copy()
+    children: Links = {node: set() for node in tree}
+    loops: Links = {node: set() for node in tree}
+    for a, b, loop in tree.edges(data="loop", default=False):
+        if loop:
+            loops[a].add(b)
+            loops[b].add(a)
+        else:
+            children[a].add(b)
     for root in tree.graph["roots"]:
-        _simplify_from(tree, root, predicate)
-    _shorten_loops(tree, predicate)
-    for root in tree.graph["roots"]:
-        tree.nodes[root]["depth"] = 0
-        pending = [root]
-        while pending:
-            parent = pending.pop()
-            for child in tree_children(tree, parent):
-                tree.nodes[child]["depth"] = tree.nodes[parent]["depth"] + 1
-                pending.append(child)
+        _simplify_from(tree, children, loops, root, predicate)
+    _shorten_loops(tree, children, loops, predicate)
+    pending = [(root, 0) for root in tree.graph["roots"]]
+    while pending:
+        node, depth = pending.pop()
+        tree.nodes[node]["depth"] = depth
+        pending.extend((child, depth + 1) for child in children[node])
     return tree
 
 
-def _simplify_from(tree: nx.DiGraph, root: int, predicate: Predicate) -> None:
+def _simplify_from(tree: nx.DiGraph, children: Links, loops: Links, root: int, predicate: Predicate) -> None:
     pending = [root]
     while pending:
         a = pending.pop()
-        queue = deque(tree_children(tree, a))
+        queue = deque(sorted(children[a]))
         kept: list[int] = []
         while queue:
             b = queue.popleft()
-            grandchildren = tree_children(tree, b)
+            grandchildren = sorted(children[b])
             removable = (
                 grandchildren
                 and not tree.nodes[b].get("terminal", False)
-                and not on_loop_edge(tree, b)
+                and not loops[b]
                 # a loop edge a - c would be merged with a -> c: the loop a, b, c would vanish
                 and not any(tree.has_edge(c, a) or tree.has_edge(a, c) for c in grandchildren)
             )
             if removable and all(predicate(tree, a, b, c) for c in grandchildren):
                 tree.remove_node(b)
+                children[a].remove(b)
+                children[a].update(grandchildren)
                 for c in grandchildren:
                     length = float(np.linalg.norm(np.subtract(tree.nodes[a]["pos"], tree.nodes[c]["pos"])))
                     tree.add_edge(a, c, weight=length)
@@ -92,7 +103,7 @@ def _simplify_from(tree: nx.DiGraph, root: int, predicate: Predicate) -> None:
         pending.extend(reversed(kept))
 
 
-def _shorten_loops(tree: nx.DiGraph, predicate: Predicate) -> None:
+def _shorten_loops(tree: nx.DiGraph, children: Links, loops: Links, predicate: Predicate) -> None:
     """Remove the non-terminal tree leaves whose only other edge is a loop edge, where the predicate allows.
 
     Candidates are examined by ascending id; the parent of a removed node
@@ -102,16 +113,16 @@ def _shorten_loops(tree: nx.DiGraph, predicate: Predicate) -> None:
     pending = sorted(tree)  # a heap: the smallest id first
     while pending:
         b = heapq.heappop(pending)
-        if b not in tree or tree.nodes[b].get("terminal", False) or tree_children(tree, b):
+        if b not in tree or tree.nodes[b].get("terminal", False) or children[b] or len(loops[b]) != 1:
             continue
-        a = tree_parent(tree, b)
-        others = [q for q in nx.all_neighbors(tree, b) if q != a]
-        if a is None or len(others) != 1 or tree.degree(b) != 2:
-            continue
-        q = others[0]
-        if tree.has_edge(a, q) or tree.has_edge(q, a) or not predicate(tree, a, b, q):
+        a, (q,) = tree_parent(tree, b), loops[b]
+        if a is None or tree.has_edge(a, q) or tree.has_edge(q, a) or not predicate(tree, a, b, q):
             continue
         tree.remove_node(b)
+        children[a].remove(b)
+        loops[q].remove(b)
+        loops[a].add(q)
+        loops[q].add(a)
         first, second = sorted((a, q), key=lambda node: (tree.nodes[node]["depth"], node))
         length = float(np.linalg.norm(np.subtract(tree.nodes[a]["pos"], tree.nodes[q]["pos"])))
         tree.add_edge(first, second, weight=length, loop=True)

@@ -5,7 +5,7 @@
 * :func:`collapse_rule`: the paper's Algorithm 5 (Sec. 3.1.5) as both line-of-
   sight predicates (``surface_los`` over the navmesh, ``mesh_los`` over the
   level mesh) apply it; they differ only in the line-of-sight test they pass.
-* :func:`normals_angle_deg`, :func:`chain_bend_deg`: the normal test.
+* :func:`normals_angle_deg`: the normal test.
 * :func:`edge_surface_gaps`: how far every edge of a structure strays above
   or below the navmesh's detail surface
   (:meth:`g2s_plugins.recast.NavMesh.segment_surface_gaps`, the check
@@ -96,12 +96,6 @@ def normals_angle_deg(a: Vec, b: Vec) -> float:
     return math.degrees(math.acos(min(1.0, max(-1.0, cosine))))
 
 
-def chain_bend_deg(tree: nx.DiGraph, a: int, b: int, c: int) -> float:
-    """The largest angle between the normals of the chain A -> B -> C (the pairs AB, BC and AC)."""
-    na, nb, nc = (tree.nodes[n]["normal"] for n in (a, b, c))
-    return max(normals_angle_deg(na, nb), normals_angle_deg(nb, nc), normals_angle_deg(na, nc))
-
-
 def edge_surface_gaps(structure: nx.Graph, navmesh: NavMesh, agent: AgentConfig, step: float = 0.1) -> dict[tuple[int, int], float]:
     """How far each edge between two on-navmesh nodes strays from the navmesh surface, m (``inf``: leaves it).
 
@@ -127,10 +121,11 @@ def collapse_rule(
 
     1. C is a leaf not on the walkable surface (``on_navmesh`` false): a line
        of sight to a point off the surface means nothing;
-    2. the normals of the chain bend by more than ``tolerance_deg``
-       (:func:`chain_bend_deg`; with ``whole_chain`` false the normals of A and
-       B only, as the paper does, which lets a collapse cut across a change of
-       slope at C);
+    2. the normals of the chain bend by more than ``tolerance_deg``: the
+       largest angle between the normals of the pairs AB, BC and AC
+       (:func:`normals_angle_deg`; with ``whole_chain`` false the normals of A
+       and B only, as the paper does, which lets a collapse cut across a
+       change of slope at C);
     3. ``line_of_sight(A.pos, C.pos)`` is false: the straight segment is not
        walkable on the surface (each predicate's test, which also rejects a
        segment straying from the surface by more than its gap tolerance).
@@ -142,15 +137,18 @@ def collapse_rule(
     """
 
     def predicate(tree: nx.DiGraph, a: int, b: int, c: int) -> bool:
-        node_c = tree.nodes[c]
-        if tree.out_degree(c) == 0 and not node_c.get("on_navmesh", False):
-            return False
         nodes = tree.nodes
-        bend = chain_bend_deg(tree, a, b, c) if whole_chain else normals_angle_deg(nodes[a]["normal"], nodes[b]["normal"])
-        if bend > tolerance_deg:
+        node_a, node_c = nodes[a], nodes[c]
+        if not node_c.get("on_navmesh", False) and tree.out_degree(c) == 0:
             return False
-        start = tuple(float(v) for v in tree.nodes[a]["pos"])
-        end = tuple(float(v) for v in node_c["pos"])
-        return line_of_sight(start, end)
+        # pair by pair: a chain whose first pair bends needs no other angle
+        normal_a, normal_b = node_a["normal"], nodes[b]["normal"]
+        if normals_angle_deg(normal_a, normal_b) > tolerance_deg:
+            return False
+        if whole_chain:
+            normal_c = node_c["normal"]
+            if normals_angle_deg(normal_b, normal_c) > tolerance_deg or normals_angle_deg(normal_a, normal_c) > tolerance_deg:
+                return False
+        return line_of_sight(tuple(map(float, node_a["pos"])), tuple(map(float, node_c["pos"])))
 
     return predicate
