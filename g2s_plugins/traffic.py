@@ -3,9 +3,10 @@ structure node stands for, and area-weighted origin-destination flow.
 
 Shared by the ``coverage`` terminal selector, the ``flow`` and ``area``
 analyzers, area-weighted betweenness and :mod:`g2s_plugins.evaluation`.
-Every computation is a scipy sparse-graph search over the whole graph at
-once (:func:`scipy.sparse.csgraph.dijkstra`); the sums up shortest-path
-trees (:func:`subtree_sums`) run in the C++ extension.
+Every computation is a sparse-graph search over the whole graph at once:
+:func:`scipy.sparse.csgraph.dijkstra`, except the hundreds of shortest-path
+trees of the flow and the sums up them (:func:`shortest_path_flow`), which
+run in the C++ extension on two threads and give scipy's trees exactly.
 
 Origin-destination flow (space syntax's "choice", weighted by area)
 --------------------------------------------------------------------
@@ -39,6 +40,7 @@ Cost: O(k (m + n log n)) plus O(k n) memory in blocks.
 from __future__ import annotations
 
 import math
+import os
 from collections.abc import Hashable, Iterable
 
 import networkx as nx
@@ -49,10 +51,16 @@ from scipy.sparse import csgraph
 from g2s_plugins import _trees
 from g2s_plugins.surface_arrays import SurfaceArrays, surface_arrays
 
-__all__ = ["SurfaceArrays", "distance_to", "flow_error_bound", "gather", "od_flow", "represented_area", "subtree_sums", "surface_arrays"]
+__all__ = [
+    "SurfaceArrays", "distance_to", "flow_error_bound", "gather", "od_flow", "represented_area", "shortest_path_flow",
+    "surface_arrays",
+]
 
 BLOCK_ENTRIES = 1 << 22
-"""Distance/predecessor entries computed at once by :func:`od_flow` (32 MB of float64)."""
+"""Tree entries computed at once by :func:`od_flow` (32 MB of float64)."""
+
+THREADS = min(2, os.cpu_count() or 1)
+"""Threads of :func:`shortest_path_flow` (each runs whole sources; the values do not depend on it)."""
 
 
 def distance_to(arrays: SurfaceArrays, sources: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -105,28 +113,41 @@ def represented_area(graph: nx.Graph, structure_nodes: Iterable[Hashable]) -> di
     return gather(graph, structure_nodes, surface_arrays(graph).area)
 
 
-def subtree_sums(parent: np.ndarray, values: np.ndarray) -> np.ndarray:
-    """Sum of ``values`` over each node's subtree, for a batch of rooted trees.
+def shortest_path_flow(adjacency: sp.csr_array, sources: np.ndarray, values: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Shortest-path trees from ``sources``, and the value passing through each node of each tree.
 
     Args:
-        parent: (b, n) parent row of every node in each of b trees over the
-            same n nodes, negative for roots and unreached nodes.
+        adjacency: (n, n) edge lengths, CSR; row i holds the edges leaving i.
+        sources: (b,) rows of the sources.
         values: (n,) the value of each node.
 
     Returns:
-        (b, n) float64: ``values`` summed over each node and its descendants.
+        predecessors: (b, n) int32, the trees exactly as
+            ``scipy.sparse.csgraph.dijkstra(adjacency, directed=True,
+            indices=sources, return_predecessors=True)`` gives them (scipy
+            1.15 and later), equal lengths included (-9999: the source, or
+            unreached).
+        through: (b, n) float64, ``values`` summed over each node's
+            descendants in that tree (its subtree without itself); 0 for the
+            source and for unreached nodes.
 
-    O(b n) in the C++ extension (``src/trees_module.cpp``): per tree, the
-    children of each node in index order, each node's children's sums added
-    (numpy's pairwise order) before its own value.
+    In the C++ extension (``src/trees_module.cpp``) on :data:`THREADS`
+    threads: per source O(m log m) for the search and O(m) for the sums,
+    each node's children added in index order with numpy's pairwise sum, so
+    the values are the bits the scipy-and-numpy formulation gives. Why C++:
+    scipy's search holds the GIL, so it cannot use the second core (two
+    Python threads gave 1.02-1.07x, docs/performance.md); here each thread
+    runs whole sources.
 
     Raises:
-        ValueError: a row has a parent out of range or a cycle.
+        ValueError: an index or source out of range, or a negative length.
     """
-    parent = np.asarray(parent)
-    if parent.dtype not in (np.int32, np.int64):
-        parent = parent.astype(np.int64)
-    return _trees.subtree_sums(np.ascontiguousarray(parent), np.ascontiguousarray(values, dtype=np.float64))
+    csr = sp.csr_array(adjacency)
+    return _trees.shortest_path_flow(
+        np.ascontiguousarray(csr.indptr, dtype=np.int32), np.ascontiguousarray(csr.indices, dtype=np.int32),
+        np.ascontiguousarray(csr.data, dtype=np.float64),
+        np.asarray(sources, dtype=np.int32), np.ascontiguousarray(values, dtype=np.float64), THREADS,
+    )
 
 
 def flow_error_bound(sources: int, delta: float = 0.01) -> float:
@@ -177,8 +198,6 @@ def od_flow(
         batch = sources[lo:lo + block]
         # adjacency is symmetric: a directed search scans each edge once instead of from both of
         # its stored directions, with the same distances and predecessors
-        _, predecessors = csgraph.dijkstra(adjacency, directed=True, indices=batch, return_predecessors=True)
-        through = subtree_sums(predecessors, weight) - weight[None, :]
-        through[np.arange(len(batch)), batch] = 0.0
+        _, through = shortest_path_flow(adjacency, batch, weight)
         flow += factor[lo:lo + block] @ through
     return flow, sampled

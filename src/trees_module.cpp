@@ -1,25 +1,46 @@
-// g2s_plugins._trees: sums over the subtrees of many rooted trees at once.
+// g2s_plugins._trees: shortest-path trees from many sources, and the weight each node carries in them.
 //
-// The flow of area-weighted betweenness and of the `flow` analyzer pushes each
-// node's value up a shortest-path tree (one tree per source, given as parent
-// rows): a node's sum is its value plus its children's sums. numpy did this
-// one depth level at a time after pointer jumping, O(b n log depth) with many
-// passes over b x n arrays; here each tree is one O(n) pass.
+// The `flow` analyzer and area-weighted betweenness walk the initial graph from
+// hundreds of sources: one shortest-path tree per source, then each node's
+// value summed up its tree. scipy.sparse.csgraph.dijkstra builds the trees but
+// holds the GIL, so it cannot use a second core (two Python threads: 1.02-1.07x,
+// docs/performance.md); here both steps run in C++ on up to two threads, each
+// tree one search and one sweep back up it.
 //
-// The sums are the same bits as that numpy formulation: a node's children are
-// added in increasing index order exactly as numpy's `np.add.reduceat` adds a
-// segment (the first child, plus numpy's pairwise sum of the others), and that
-// total is then added to the node's own value.
+// The trees are scipy's to the last tie. Where two paths have exactly the same
+// length (common on generated, grid-aligned levels) the predecessor a node keeps
+// is the first node settled that reaches it that short, so it depends on the
+// order in which the search settles nodes at equal distances. scipy (from 1.15;
+// sparse/csgraph/_shortest_path.pyx) queues (-distance, index) pairs in a
+// std::priority_queue, skips stale entries, and replaces a predecessor only on
+// a strictly shorter path: equal distances settle highest index first. That
+// order is total, so any correct heap with the same order settles the nodes in
+// the same sequence; the search below keeps it, and tests/test_analysis_quality.py
+// checks the predecessors against scipy's on tie-rich grids and random graphs.
+// (Before 1.15 scipy used a Fibonacci heap with another tie order; from this
+// module the flow no longer depends on the scipy version.)
+//
+// The sums are the same bits as numpy: a node's children are added in
+// increasing index order as numpy's `np.add.reduceat` adds a segment (the first
+// child, plus numpy's pairwise sum of the others), and that total is then added
+// to the node's own value.
 
 #include <nanobind/nanobind.h>
 #include <nanobind/ndarray.h>
 
+#include <algorithm>
+#include <atomic>
 #include <cstdint>
+#include <functional>
+#include <limits>
+#include <thread>
 #include <vector>
 
 namespace nb = nanobind;
 
 namespace {
+
+constexpr int32_t NO_PREDECESSOR = -9999;  // scipy's mark for a source or an unreached node
 
 // numpy's pairwise summation of n doubles (its add reduction; blocks of 128, 8 accumulators).
 double pairwise_sum(const double* a, int64_t n) {
@@ -43,75 +64,149 @@ double pairwise_sum(const double* a, int64_t n) {
     return pairwise_sum(a, half) + pairwise_sum(a + half, n - half);
 }
 
-// One tree: children of each node in increasing index order (a CSR built by
-// counting), then nodes in an order that finishes every child before its parent.
-// Returns false when the row is not a forest.
-template <typename P>
-bool one_tree(const P* parent, const double* values, int64_t n, double* sums, std::vector<int64_t>& first,
-              std::vector<int64_t>& children, std::vector<int64_t>& pending, std::vector<int64_t>& ready,
-              std::vector<double>& buffer) {
-    first.assign(static_cast<size_t>(n) + 1, 0);
-    for (int64_t i = 0; i < n; ++i)
-        if (parent[i] >= 0) ++first[static_cast<size_t>(parent[i]) + 1];
-    for (int64_t i = 0; i < n; ++i) first[i + 1] += first[i];
-    children.resize(static_cast<size_t>(first[n]));
-    pending.assign(first.begin(), first.end() - 1);  // next free slot per node
-    for (int64_t i = 0; i < n; ++i)
-        if (parent[i] >= 0) children[pending[parent[i]]++] = i;
-    for (int64_t i = 0; i < n; ++i) pending[i] = first[i + 1] - first[i];  // children not yet summed
-    ready.clear();
-    for (int64_t i = 0; i < n; ++i)
-        if (pending[i] == 0) ready.push_back(i);
-    for (size_t k = 0; k < ready.size(); ++k) {
-        const int64_t v = ready[k];
-        const int64_t lo = first[v], count = first[v + 1] - lo;
-        double total = values[v];
-        if (count > 0) {
-            buffer.resize(static_cast<size_t>(count));
-            for (int64_t c = 0; c < count; ++c) buffer[c] = sums[children[lo + c]];
-            double branch = buffer[0];
-            if (count > 1) branch += pairwise_sum(buffer.data() + 1, count - 1);
-            total += branch;
-        }
-        sums[v] = total;
-        const int64_t p = parent[v];
-        if (p >= 0 && --pending[p] == 0) ready.push_back(p);
+// An entry of the search's queue. Queued earlier than `other` means: nearer, or as near with a higher
+// index (scipy's order, see the file comment).
+struct Entry {
+    double distance;
+    int32_t node;
+};
+// "a is served after b", the comparison std::push_heap/pop_heap take to keep the first-served entry on top.
+struct ServedAfter {
+    bool operator()(const Entry& a, const Entry& b) const {
+        return a.distance > b.distance || (a.distance == b.distance && a.node < b.node);
     }
-    return static_cast<int64_t>(ready.size()) == n;  // nodes on a cycle never become ready
+};
+
+struct Graph {
+    const int32_t* indptr;
+    const int32_t* indices;
+    const double* weights;
+    int32_t n;
+};
+
+// One source: its shortest-path tree (scipy's predecessors) and, per node, the
+// values summed over its subtree minus its own value (0 for the source).
+class TreeSweep {
+  public:
+    explicit TreeSweep(int32_t n) : distance_(static_cast<size_t>(n)), sums_(static_cast<size_t>(n)) { order_.reserve(n); }
+
+    void run(const Graph& g, int32_t source, const double* values, int32_t* predecessor, double* through) {
+        constexpr double infinity = std::numeric_limits<double>::infinity();
+        std::fill(predecessor, predecessor + g.n, NO_PREDECESSOR);
+        std::fill(distance_.begin(), distance_.end(), infinity);
+        order_.clear();
+        queue_.clear();
+        distance_[source] = 0.0;
+        queue_.push_back({0.0, source});
+        while (!queue_.empty()) {
+            std::pop_heap(queue_.begin(), queue_.end(), ServedAfter());
+            const Entry v = queue_.back();
+            queue_.pop_back();
+            if (distance_[v.node] < v.distance) continue;  // a stale entry: v was queued again nearer
+            order_.push_back(v.node);
+            for (int32_t j = g.indptr[v.node]; j < g.indptr[v.node + 1]; ++j) {
+                const int32_t u = g.indices[j];
+                const double d = v.distance + g.weights[j];
+                if (d <= infinity && distance_[u] > d) {  // d <= infinity: a NaN length is no edge, as in scipy
+                    distance_[u] = d;
+                    queue_.push_back({d, u});
+                    std::push_heap(queue_.begin(), queue_.end(), ServedAfter());
+                    predecessor[u] = v.node;
+                }
+            }
+        }
+        for (int32_t v = 0; v < g.n; ++v) through[v] = values[v] - values[v];  // unreached nodes carry nothing
+        // a node is settled after its parent: in reverse order every subtree is complete when its root comes
+        for (auto it = order_.rbegin(); it != order_.rend(); ++it) {
+            const int32_t v = *it;
+            children_.clear();
+            for (int32_t j = g.indptr[v]; j < g.indptr[v + 1]; ++j)
+                if (predecessor[g.indices[j]] == v) children_.push_back(g.indices[j]);
+            if (!std::is_sorted(children_.begin(), children_.end(), std::less_equal<int32_t>())) {  // a CSR row out of order
+                std::sort(children_.begin(), children_.end());
+                children_.erase(std::unique(children_.begin(), children_.end()), children_.end());
+            }
+            double total = values[v];
+            if (!children_.empty()) {
+                buffer_.resize(children_.size());
+                for (size_t c = 0; c < children_.size(); ++c) buffer_[c] = sums_[children_[c]];
+                double branch = buffer_[0];
+                if (buffer_.size() > 1) branch += pairwise_sum(buffer_.data() + 1, static_cast<int64_t>(buffer_.size()) - 1);
+                total += branch;
+            }
+            sums_[v] = total;
+            through[v] = total - values[v];
+        }
+        through[source] = 0.0;
+    }
+
+  private:
+    std::vector<double> distance_, sums_, buffer_;
+    std::vector<Entry> queue_;
+    std::vector<int32_t> order_, children_;
+};
+
+using Int32Array = nb::ndarray<const int32_t, nb::ndim<1>, nb::c_contig, nb::device::cpu>;
+using DoubleArray = nb::ndarray<const double, nb::ndim<1>, nb::c_contig, nb::device::cpu>;
+
+template <typename T>
+nb::ndarray<nb::numpy, T, nb::ndim<2>> owned(T* data, size_t rows, size_t cols) {
+    nb::capsule owner(data, [](void* p) noexcept { delete[] static_cast<T*>(p); });
+    return nb::ndarray<nb::numpy, T, nb::ndim<2>>(data, {rows, cols}, owner);
 }
 
-template <typename P>
-nb::ndarray<nb::numpy, double, nb::ndim<2>> subtree_sums(
-    nb::ndarray<const P, nb::ndim<2>, nb::c_contig, nb::device::cpu> parent,
-    nb::ndarray<const double, nb::ndim<1>, nb::c_contig, nb::device::cpu> values) {
-    const int64_t b = static_cast<int64_t>(parent.shape(0)), n = static_cast<int64_t>(parent.shape(1));
-    if (static_cast<int64_t>(values.shape(0)) != n)
-        throw nb::value_error("subtree_sums: parent must be (b, n) and values (n,)");
-    const P* pp = parent.data();
-    for (int64_t i = 0; i < b * n; ++i)
-        if (pp[i] >= n) throw nb::value_error("subtree_sums: a parent row is out of range");
-    auto* out = new double[static_cast<size_t>(b * n > 0 ? b * n : 1)];
-    nb::capsule owner(out, [](void* p) noexcept { delete[] static_cast<double*>(p); });
-    bool forests = true;
+nb::tuple shortest_path_flow(Int32Array indptr, Int32Array indices, DoubleArray weights, Int32Array sources,
+                             DoubleArray values, int threads) {
+    const int64_t n = static_cast<int64_t>(indptr.shape(0)) - 1;
+    if (n < 0 || static_cast<int64_t>(values.shape(0)) != n || indices.shape(0) != weights.shape(0))
+        throw nb::value_error("shortest_path_flow: indptr must be (n + 1,), values (n,), indices and weights alike");
+    const int32_t* ptr = indptr.data();
+    if (ptr[0] != 0 || ptr[n] != static_cast<int64_t>(indices.shape(0)))
+        throw nb::value_error("shortest_path_flow: indptr does not match indices");
+    for (int64_t i = 0; i < n; ++i)
+        if (ptr[i + 1] < ptr[i]) throw nb::value_error("shortest_path_flow: indptr decreases");
+    for (size_t j = 0; j < indices.shape(0); ++j)
+        if (indices.data()[j] < 0 || indices.data()[j] >= n) throw nb::value_error("shortest_path_flow: an index is out of range");
+    for (size_t j = 0; j < weights.shape(0); ++j)
+        if (weights.data()[j] < 0) throw nb::value_error("shortest_path_flow: a weight is negative");
+    const size_t b = sources.shape(0);
+    for (size_t i = 0; i < b; ++i)
+        if (sources.data()[i] < 0 || sources.data()[i] >= n) throw nb::value_error("shortest_path_flow: a source is out of range");
+    if (threads < 1 || threads > 2) throw nb::value_error("shortest_path_flow: threads must be 1 or 2");
+
+    const size_t cells = std::max<size_t>(b * static_cast<size_t>(n), 1);
+    auto* predecessors = new int32_t[cells];
+    auto* through = new double[cells];
+    auto pred_out = owned(predecessors, b, static_cast<size_t>(n));
+    auto through_out = owned(through, b, static_cast<size_t>(n));
+    const Graph g{ptr, indices.data(), weights.data(), static_cast<int32_t>(n)};
     {
         nb::gil_scoped_release release;
-        std::vector<int64_t> first, children, pending, ready;
-        std::vector<double> buffer;
-        for (int64_t row = 0; row < b && forests; ++row)
-            forests = one_tree(pp + row * n, values.data(), n, out + row * n, first, children, pending, ready, buffer);
+        std::atomic<size_t> next{0};
+        auto work = [&] {
+            TreeSweep sweep(g.n);
+            for (size_t row = next++; row < b; row = next++)
+                sweep.run(g, sources.data()[row], values.data(), predecessors + row * n, through + row * n);
+        };
+        const size_t helpers = std::min<size_t>(static_cast<size_t>(threads), std::max<size_t>(b, 1)) - 1;
+        std::vector<std::thread> pool;
+        for (size_t t = 0; t < helpers; ++t) pool.emplace_back(work);
+        work();
+        for (std::thread& t : pool) t.join();
     }
-    if (!forests) throw nb::value_error("subtree_sums: a parent row has a cycle");
-    return nb::ndarray<nb::numpy, double, nb::ndim<2>>(out, {static_cast<size_t>(b), static_cast<size_t>(n)}, owner);
+    return nb::make_tuple(pred_out, through_out);
 }
 
 }  // namespace
 
 NB_MODULE(_trees, m) {
-    m.doc() = "Sums over the subtrees of many rooted trees (see src/trees_module.cpp).";
-    const char* doc =
-        "subtree_sums(parent, values) -> (b, n) float64: for b trees over the same n nodes, "
-        "given as (b, n) parent rows (negative: a root or an unreached node), each node's value "
-        "plus its descendants' values. Every row must be a forest (no parent cycles).";
-    m.def("subtree_sums", &subtree_sums<int32_t>, nb::arg("parent"), nb::arg("values"), doc);
-    m.def("subtree_sums", &subtree_sums<int64_t>, nb::arg("parent"), nb::arg("values"), doc);
+    m.doc() = "Shortest-path trees from many sources and the weight passing through each node (see src/trees_module.cpp).";
+    m.def("shortest_path_flow", &shortest_path_flow, nb::arg("indptr"), nb::arg("indices"), nb::arg("weights"),
+          nb::arg("sources"), nb::arg("values"), nb::arg("threads"),
+          "shortest_path_flow(indptr, indices, weights, sources, values, threads) -> (predecessors, through).\n\n"
+          "For a graph in CSR form (int32 indptr (n + 1,), int32 indices and float64 weights (m,); edge i -> j)\n"
+          "and b source nodes: predecessors (b, n) int32, scipy.sparse.csgraph.dijkstra's (directed=True)\n"
+          "exactly, -9999 for the source and unreached nodes; through (b, n) float64, the values summed over\n"
+          "each node's subtree of that source's tree minus the node's own value (0 for the source).\n"
+          "threads: 1 or 2 worker threads, each running whole sources (the result does not depend on it).");
 }

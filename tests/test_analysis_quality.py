@@ -9,6 +9,9 @@ import math
 import networkx as nx
 import numpy as np
 import pytest
+import scipy
+import scipy.sparse as sp
+from scipy.sparse import csgraph
 
 from g2s_core import pipeline
 from g2s_core.config import PRESETS_DIR, load_raw_config, parse_config
@@ -278,31 +281,87 @@ def test_new_preset_covers_nav_test_and_keeps_a_skeleton(registry):
     assert -1.0 <= quality.rho_area_betweenness < quality.rho
 
 
-def test_subtree_sums_by_hand():
-    # tree 0 -> 1 -> 2 and 0 -> 3, and a lone node: sums of 1, 2, 4, 8, 16
-    parent = np.array([[-9999, 0, 1, 0], [1, -9999, 1, 0]])
-    values = np.array([1.0, 2.0, 4.0, 8.0])
-    assert traffic.subtree_sums(parent, values).tolist() == [[15.0, 6.0, 4.0, 8.0], [9.0, 15.0, 4.0, 8.0]]
-    assert traffic.subtree_sums(np.array([[-9999]]), np.array([16.0])).tolist() == [[16.0]]
-    with pytest.raises(ValueError, match="cycle"):
-        traffic.subtree_sums(np.array([[1, 0, -1]]), values[:3])
+def lengths(n: int, edges: list[tuple[int, int, float]]) -> sp.csr_array:
+    """Symmetric CSR edge lengths of an undirected graph on nodes 0..n-1."""
+    u, v, w = (np.array(column) for column in zip(*edges))
+    return sp.csr_array((np.concatenate([w, w]), (np.concatenate([u, v]), np.concatenate([v, u]))), shape=(n, n))
 
 
-def test_subtree_sums_add_as_numpy_does():
-    # a star of 300 leaves and random trees: each node's children summed in numpy's pairwise order, to
-    # the bit (the flow values, and so the structure output, must not move with the implementation)
+def grid_lengths(width: int, height: int, rng: np.random.Generator | None = None, diagonals: bool = False) -> sp.csr_array:
+    """A grid of unit steps (random lengths 1 or 2 with ``rng``): full of equally short paths."""
+    steps = [(1, 0), (0, 1)] + ([(1, 1), (1, -1)] if diagonals else [])
+    edges = [
+        (y * width + x, (y + dy) * width + x + dx, math.hypot(dx, dy) if rng is None else float(rng.integers(1, 3)))
+        for y in range(height) for x in range(width) for dx, dy in steps
+        if 0 <= x + dx < width and 0 <= y + dy < height
+    ]
+    return lengths(width * height, edges)
+
+
+def test_shortest_path_flow_by_hand():
+    # tree 0 - 1 - 2 and 0 - 3, a lone node 4; values 1, 2, 4, 8, 16
+    graph = lengths(5, [(0, 1, 1.0), (1, 2, 1.0), (0, 3, 1.0)])
+    values = np.array([1.0, 2.0, 4.0, 8.0, 16.0])
+    predecessors, through = traffic.shortest_path_flow(graph, np.array([0, 1]), values)
+    assert predecessors.tolist() == [[-9999, 0, 1, 0, -9999], [1, -9999, 1, 0, -9999]]
+    # from 0, node 1 carries node 2's value; from 1, node 0 carries node 3's; sources, leaves and node 4 nothing
+    assert through.tolist() == [[0.0, 4.0, 0.0, 0.0, 0.0], [8.0, 0.0, 0.0, 0.0, 0.0]]
+    # a square 0 - 1 - 3 - 2 - 0: node 3 is as near through 1 as through 2; as in scipy, the higher index settles
+    # first and keeps it
+    square = lengths(4, [(0, 1, 1.0), (0, 2, 1.0), (1, 3, 1.0), (2, 3, 1.0)])
+    predecessors, through = traffic.shortest_path_flow(square, np.array([0]), values[:4])
+    assert predecessors.tolist() == [[-9999, 0, 0, 2]]
+    assert through.tolist() == [[0.0, 0.0, 8.0, 0.0]]
+    with pytest.raises(ValueError, match="negative"):
+        traffic.shortest_path_flow(lengths(2, [(0, 1, -1.0)]), np.array([0]), values[:2])
+    with pytest.raises(ValueError, match="source"):
+        traffic.shortest_path_flow(square, np.array([4]), values[:4])
+
+
+@pytest.mark.skipif(
+    tuple(int(part) for part in scipy.__version__.split(".")[:2]) < (1, 15),
+    reason="scipy before 1.15 searched with a Fibonacci heap, which breaks ties in another order",
+)
+@pytest.mark.parametrize("name", ["grid", "grid of lengths 1 and 2", "grid with diagonals", "random"])
+def test_shortest_path_trees_are_scipys_to_the_last_tie(name):
+    rng = np.random.default_rng(5)
+    graph = {
+        "grid": grid_lengths(23, 17),
+        "grid of lengths 1 and 2": grid_lengths(19, 19, rng),
+        "grid with diagonals": grid_lengths(15, 21, diagonals=True),
+        "random": lengths(300, [(int(a), int(b), float(rng.integers(1, 4))) for a, b in rng.integers(0, 300, (600, 2)) if a != b]),
+    }[name]
+    sources = rng.choice(graph.shape[0], 40, replace=False)
+    _, expected = csgraph.dijkstra(graph, directed=True, indices=sources, return_predecessors=True)
+    predecessors, _ = traffic.shortest_path_flow(graph, sources, rng.random(graph.shape[0]))
+    assert np.array_equal(predecessors, expected)
+
+
+def test_shortest_path_flow_adds_as_numpy_does(monkeypatch):
+    # a star of 300 leaves and random graphs with values over six orders of magnitude: each node's children
+    # summed in numpy's pairwise order, to the bit (the flow values, and so the structure output, must not
+    # move with the implementation), on one thread or two alike
     rng = np.random.default_rng(3)
+    star = lengths(301, [(0, leaf, 1.0) for leaf in range(1, 301)])
+    tree = lengths(301, [(node, int(rng.integers(0, node)), float(rng.random())) for node in range(1, 301)])
+    loops = lengths(301, [(int(a), int(b), float(rng.random())) for a, b in rng.integers(0, 301, (900, 2)) if a != b])
     values = rng.random(301) * 10.0 ** rng.uniform(-3, 3, 301)
-    star = [-1] + [0] * 300
-    parent = np.array([star] + [[-1] + [int(rng.integers(0, k)) for k in range(1, 301)] for _ in range(3)])
-    sums = traffic.subtree_sums(parent, values)
-    for row in range(4):
-        for node in range(301):
-            children = np.flatnonzero(parent[row] == node)
-            expected = values[node]
-            if children.size:
-                expected += np.add.reduceat(sums[row, children], [0])[0]
-            assert sums[row, node] == expected
+    for graph in (star, tree, loops):
+        sources = np.array([0, 7, 300])
+        predecessors, through = traffic.shortest_path_flow(graph, sources, values)
+        for row, source in enumerate(sources):
+            distance = csgraph.dijkstra(graph, indices=int(source))
+            totals = values.copy()
+            for node in np.argsort(-distance, kind="stable"):  # farthest first: children before parents
+                children = np.flatnonzero(predecessors[row] == node)
+                if children.size:
+                    totals[node] = values[node] + np.add.reduceat(totals[children], [0])[0]
+            expected = np.where(np.isfinite(distance), totals - values, 0.0)
+            expected[source] = 0.0
+            assert np.array_equal(through[row], expected)
+        with monkeypatch.context() as one_thread:
+            one_thread.setattr(traffic, "THREADS", 1)
+            assert np.array_equal(traffic.shortest_path_flow(graph, sources, values)[1], through)
 
 
 def test_the_traffic_evaluator_puts_the_evaluation_in_the_run_result(registry):
