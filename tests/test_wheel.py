@@ -25,7 +25,7 @@ print(json.dumps({"libraries": libraries, "package": g2s_core.__file__, "extensi
 
 API = """
 import g2s_core
-import g2s_plugins._trees  # the second extension (subtree sums of the flow) ships too
+import g2s_plugins._trees  # the second extension (the flow's shortest-path trees) ships too
 result = g2s_core.run("sample:cross_hub", "map_piece", agent={"radius": 0.4})
 assert result.structure.number_of_nodes() > 0
 assert sum(terminal for _, terminal in result.structure.nodes(data="terminal")) >= 4
