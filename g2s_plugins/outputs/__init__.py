@@ -20,6 +20,7 @@ graph      graph.json                                  initial graph, networkx n
 See ``docs/outputs.md`` for the details of each format.
 """
 
-from g2s_core.results import LoadedResult, load_result
+from g2s_core.model import LoadedResult
+from g2s_plugins.outputs.json_reader import load_result
 
 __all__ = ["LoadedResult", "load_result"]
