@@ -28,7 +28,7 @@ from g2s_core import pipeline
 from g2s_core.config import RunConfig, named_files, resolve_config
 from g2s_core.mesh import SAMPLE_PREFIX, generate_level, load_mesh, mesh_sha256, prepare_and_clean
 from g2s_core.model import LoadedResult, RunResult
-from g2s_core.outputs import DEFAULT_FORMATS, parse_formats, write_outputs
+from g2s_core.outputs import DEFAULT_FORMATS, write_outputs
 from g2s_core.registry import Registry, installed
 
 MeshLike = str | Path | trimesh.Trimesh
@@ -193,11 +193,10 @@ def write_result(
         G2SError: unknown format, or the folder cannot take the results
             (checked before anything is written).
     """
-    outdir = Path(outdir)
     default = result.config.get("outputs", {}).get("formats", DEFAULT_FORMATS)
-    chosen = parse_formats(default if formats is None else formats, registry=registry)
+    chosen = default if formats is None else formats
     return write_outputs(
-        result, outdir, chosen, replace=force, progress=progress, registry=registry, protect=result.inputs
+        result, Path(outdir), chosen, replace=force, progress=progress, registry=registry, protect=result.inputs
     )
 
 
