@@ -1,4 +1,4 @@
-"""Reads back what the json writer wrote: structure.json, with the stage times of run.json (``g2s_core.load_result``).
+"""Reads back what the json writer wrote: structure.json, with the stage times of run.json (g2s_core.load_result).
 
 The ``json`` writer (:mod:`g2s_plugins.outputs.structure_json`) owns the
 format: its version, file names and JSON schemas (``structure.schema.json``,
