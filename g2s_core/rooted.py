@@ -12,8 +12,12 @@ and every other edge is kept as a *loop edge* (``loop=True``), directed from
 its shallower end to its deeper one (equal depths: lower id first). Tree
 edges carry no ``loop`` attribute, so a forest is rooted exactly as before.
 
+One depth-first search of scipy (``scipy.sparse.csgraph.depth_first_order``,
+on the forest as a CSR matrix over the sorted ids) from a virtual node joined
+to every root roots all components at once.
+
 Complexity: O((n + m) log n) for n nodes and m edges (ranking the nodes and
-sorting neighbours).
+sorting the edges).
 """
 
 from __future__ import annotations
@@ -22,12 +26,14 @@ from collections.abc import Mapping
 
 import networkx as nx
 import numpy as np
+import scipy.sparse as sp
+from scipy.sparse import csgraph
 
 from g2s_core.ties import tie_values
 
 
-def root_ranks(forest: nx.Graph, scores: Mapping[int, float], centre: np.ndarray) -> dict[int, int]:
-    """Rank of every node as a root: 0 is best.
+def root_ranks(forest: nx.Graph, scores: Mapping[int, float], centre: np.ndarray) -> np.ndarray:
+    """(n,) rank as a root of each node of ``sorted(forest)``: 0 is best.
 
     Order: highest score first; ties (see :mod:`g2s_core.ties`) go to the
     node nearest ``centre``, then to the lowest id.
@@ -39,8 +45,7 @@ def root_ranks(forest: nx.Graph, scores: Mapping[int, float], centre: np.ndarray
     positions = np.array([forest.nodes[n]["pos"] for n in nodes], dtype=np.float64).reshape(-1, 3)
     score = tie_values([scores[n] for n in nodes])
     distance = tie_values(np.linalg.norm(positions - centre, axis=1))
-    order = np.lexsort((np.asarray(nodes), distance, -score))
-    return {nodes[i]: rank for rank, i in enumerate(order.tolist())}
+    return np.argsort(np.lexsort((np.arange(len(nodes)), distance, -score)))
 
 
 def root_forest(forest: nx.Graph, scores: Mapping[int, float], centre: np.ndarray) -> nx.DiGraph:
@@ -59,20 +64,33 @@ def root_forest(forest: nx.Graph, scores: Mapping[int, float], centre: np.ndarra
         smallest node id).
     """
     rank = root_ranks(forest, scores, centre)
-    components = sorted((min(c), c) for c in nx.connected_components(forest))
-    roots = [min(c, key=rank.__getitem__) for _, c in components]
-    rooted = nx.DiGraph(roots=roots)
-    for root in roots:
-        depth = {root: 0}
-        rooted.add_node(root, **forest.nodes[root], depth=0, root=root)
-        for parent, child in nx.dfs_edges(forest, root, sort_neighbors=sorted):
-            depth[child] = depth[parent] + 1
-            rooted.add_node(child, **forest.nodes[child], depth=depth[child], root=root)
-            rooted.add_edge(parent, child, **forest.edges[parent, child])
-    loop_edges = [(u, v) for u, v in forest.edges if not rooted.has_edge(u, v) and not rooted.has_edge(v, u)]
-    for u, v in sorted(loop_edges, key=lambda e: sorted(e)):
-        first, second = sorted((u, v), key=lambda node: (rooted.nodes[node]["depth"], node))
-        rooted.add_edge(first, second, **forest.edges[u, v], loop=True)
+    nodes = sorted(forest)
+    n, index = len(nodes), {node: i for i, node in enumerate(nodes)}
+    lo, hi = np.sort(np.array([(index[u], index[v]) for u, v in forest.edges], dtype=np.int64).reshape(-1, 2), axis=1).T
+    # the forest as an (n+1, n+1) CSR matrix (columns ascending in each row) with a lone virtual node n
+    matrix = sp.csr_array((np.ones(2 * len(lo)), (np.r_[lo, hi], np.r_[hi, lo])), shape=(n + 1, n + 1))
+    count, label = csgraph.connected_components(matrix, directed=False)
+    # components numbered by their smallest node (the virtual node's comes last), each rooted at its best rank
+    label = np.argsort(np.argsort(np.unique(label, return_index=True)[1]))[label[:n]]
+    by_rank = np.lexsort((rank, label))
+    best = by_rank[np.searchsorted(label[by_rank], np.arange(count - 1))]
+    # one depth-first search (neighbours by ascending id) from the virtual node, joined to every root
+    start = sp.csr_array((np.ones(count - 1), (np.full(count - 1, n), best)), shape=matrix.shape)
+    order, parent = csgraph.depth_first_order(matrix + start, n, return_predecessors=True)
+    order, parent = order[1:][np.argsort(label[order[1:]], kind="stable")], parent.astype(np.int64)
+    depth, parents = [-1] * (n + 1), parent.tolist()
+    for node in order.tolist():
+        depth[node] = depth[parents[node]] + 1
+    rooted = nx.DiGraph(roots=[nodes[i] for i in best.tolist()])
+    rooted.add_nodes_from(nodes[i] for i in order.tolist())  # bare, then attributes: (node, dict) pairs are slow
+    for i, (node, data) in zip(order.tolist(), rooted.nodes(data=True)):
+        data.update(forest.nodes[node], depth=depth[i], root=nodes[best[label[i]]])
+    child = order[parent[order] != n]
+    rooted.add_edges_from((nodes[p], nodes[c], forest.edges[nodes[p], nodes[c]]) for p, c in zip(parent[child].tolist(), child.tolist()))
+    key, tree_key = lo * n + hi, np.minimum(parent[child], child) * n + np.maximum(parent[child], child)
+    for u, v in (divmod(k, n) for k in np.sort(key[~np.isin(key, tree_key)]).tolist()):  # the loop edges
+        first, second = (u, v) if depth[u] <= depth[v] else (v, u)
+        rooted.add_edge(nodes[first], nodes[second], **forest.edges[nodes[u], nodes[v]], loop=True)
     return rooted
 
 

@@ -12,7 +12,7 @@ it must be finite and >= 0.
 metric         algorithm                                          cost (n nodes, m edges)
 =============  =================================================  ==========================
 betweenness    forest: subtree-size formula (ours, exact)          O(n)
-               graph, unweighted: Brandes, rustworkx               O(nm), parallel
+               graph, unweighted: Brandes, rustworkx               O(nm), one thread
                graph, weighted: Brandes, igraph (networkx if       O(nm + n² log n)
                igraph does not import or a weight is 0)
 closeness      forest: sum-of-distances rerooting (ours, exact)    O(n)
@@ -71,6 +71,10 @@ _DENSE_EIGEN_LIMIT = 256
 
 _DIJKSTRA_BLOCK = 1 << 22
 """Distance-matrix entries computed at once by weighted closeness (32 MB)."""
+
+_ONE_THREAD = 1 << 62
+"""rustworkx's ``parallel_threshold`` that keeps Brandes on one thread: its parallel version adds the sources'
+contributions in thread order, so the last bits (and the ranks of near-equal values) changed from run to run."""
 
 
 # --- graph as arrays ---------------------------------------------------------------
@@ -356,7 +360,8 @@ def _igraph():
 def graph_betweenness(graph: nx.Graph, weighted: bool, normalized: bool = True) -> dict[Hashable, float]:
     """Brandes betweenness of any undirected graph, by a library.
 
-    Unweighted: :func:`rustworkx.betweenness_centrality` (parallel). Weighted:
+    Unweighted: :func:`rustworkx.betweenness_centrality` (on one thread, see
+    :data:`_ONE_THREAD`). Weighted:
     igraph's ``Graph.betweenness(weights=...)`` when igraph imports and every
     weight is > 0 (igraph refuses zero weights), else networkx's (same
     result, pure Python, about 60x slower on a 900-node grid). Normalised as
@@ -371,7 +376,7 @@ def _graph_betweenness(arrays: _Arrays, weighted: bool, normalized: bool) -> np.
     if n == 0:
         return np.zeros(0)
     if not weighted:
-        result = rx.betweenness_centrality(_rx_graph(arrays), normalized=normalized)
+        result = rx.betweenness_centrality(_rx_graph(arrays), normalized=normalized, parallel_threshold=_ONE_THREAD)
         return np.array([result[i] for i in range(n)], dtype=np.float64)
     igraph = _igraph()
     if igraph is not None and bool(np.all(arrays.w > 0)):
@@ -645,7 +650,8 @@ def edge_betweenness(graph: nx.Graph, normalized: bool = True) -> dict[tuple[Has
         child = np.where(parent[arrays.v] == arrays.u, arrays.v, arrays.u)
         values = size[child] * (rooted.component_size[child] - size[child])
     else:
-        result = rx.edge_betweenness_centrality(_rx_graph(arrays), normalized=False)
+        result = rx.edge_betweenness_centrality(_rx_graph(arrays), normalized=False,
+                                                 parallel_threshold=_ONE_THREAD)
         values = np.array([result[i] for i in range(len(arrays.u))], dtype=np.float64)
     n = arrays.n
     if normalized and n > 1:

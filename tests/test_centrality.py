@@ -272,3 +272,13 @@ def test_tree_formulas_on_a_deep_path_need_no_recursion():
     # total hop distance from i: i(i+1)/2 + (n-1-i)(n-i)/2
     for i in (0, 5000, n - 1):
         assert close[i] == pytest.approx((n - 1) / (i * (i + 1) / 2 + (n - 1 - i) * (n - i) / 2))
+
+
+def test_betweenness_on_a_graph_with_cycles_is_bitwise_the_same_on_every_run():
+    # a grid with chords: many equal-length paths, values summed from many sources
+    graph = nx.grid_2d_graph(30, 30)
+    graph.add_edges_from(((i, 0), (0, i)) for i in range(1, 30, 3))
+    node_runs = [centrality.graph_betweenness(graph, weighted=False) for _ in range(4)]
+    edge_runs = [centrality.edge_betweenness(graph) for _ in range(4)]
+    assert all(run == node_runs[0] for run in node_runs)
+    assert all(run == edge_runs[0] for run in edge_runs)

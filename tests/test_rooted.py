@@ -59,3 +59,18 @@ def test_deep_tree_does_not_recurse():
     graph = path_forest({i: (float(i), 0, 0) for i in range(n)}, [(i, i + 1) for i in range(n - 1)])
     rooted = root_forest(graph, {i: -i for i in range(n)}, centre=np.zeros(3))
     assert rooted.nodes[n - 1]["depth"] == n - 1
+
+
+def test_search_order_loop_edges_and_component_order_follow_the_ids():
+    # inserted out of order: component {7, 8, 9} (a triangle) before component {2, 3, 4, 5}
+    graph = path_forest({n: (float(n), 0.0, 0.0) for n in (9, 7, 8, 5, 2, 4, 3)},
+                        [(9, 7), (8, 9), (7, 8), (5, 2), (2, 4), (4, 3)])
+    rooted = root_forest(graph, {9: 1.0, 7: 0.0, 8: 0.0, 5: 0.0, 2: 0.0, 4: 1.0, 3: 0.0}, centre=np.zeros(3))
+    # components by smallest id; depth first from each root, neighbours by ascending id
+    assert rooted.graph["roots"] == [4, 9]
+    assert list(rooted.nodes) == [4, 2, 5, 3, 9, 7, 8]
+    assert [(u, v) for u, v, d in rooted.edges(data=True) if not d.get("loop")] == [(4, 2), (4, 3), (2, 5), (9, 7), (7, 8)]
+    # the triangle's third edge is a loop edge, from the shallower end
+    assert [(u, v) for u, v, d in rooted.edges(data=True) if d.get("loop")] == [(9, 8)]
+    assert [rooted.nodes[n]["depth"] for n in rooted] == [0, 1, 2, 1, 0, 1, 2]
+    assert [rooted.nodes[n]["root"] for n in rooted] == [4, 4, 4, 4, 9, 9, 9]

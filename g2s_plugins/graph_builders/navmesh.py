@@ -72,10 +72,10 @@ def navmesh_graph(navmesh: NavMesh, agent: AgentConfig | None = None, max_edge_g
     nrm = [tuple(n) for n in normals.tolist()]
     area = areas.tolist()
     graph = nx.Graph()
-    graph.add_nodes_from(
-        (i, {"pos": pos[i], "normal": nrm[i], "area": area[i], "on_navmesh": True, "polygon": i})
-        for i in range(navmesh.polygon_count)
-    )
+    # bare nodes, then their attributes: add_nodes_from takes (node, dict) pairs through an exception each
+    graph.add_nodes_from(range(navmesh.polygon_count))
+    for i, data in graph.nodes(data=True):
+        data.update(pos=pos[i], normal=nrm[i], area=area[i], on_navmesh=True, polygon=i)
     ends = portals.endpoints.reshape(-1, 6).tolist()
     crossing = np.zeros(len(pairs), dtype=bool)
     if max_edge_gap is not None and agent is None:

@@ -75,24 +75,25 @@ def add_loops(graph: nx.Graph, structure: nx.Graph, stretch: float, min_gain: fl
         A new graph (or ``structure`` when nothing is added) with the added
         paths' nodes and edges, attributes copied from ``graph``.
     """
-    if math.isinf(stretch) or structure.number_of_edges() == 0:
+    if math.isinf(stretch) or nx.is_empty(structure):
         return structure
     arrays = surface_arrays(graph)
     rows = arrays.rows(sorted(structure))
     distance, predecessor, cell = csgraph.dijkstra(
         arrays.adjacency, directed=False, indices=rows, min_only=True, return_predecessors=True
     )
-    pairs, paths = _candidates(arrays, structure, distance, cell)
+    ends, lengths = _edges(arrays, structure)
+    pairs, paths = _candidates(arrays, structure, ends, distance, cell)
     if len(pairs) == 0:
         return structure
-    along_tree = _tree_distances(arrays, structure, pairs)
+    along_tree = _tree_distances(arrays, structure, ends, pairs)
     bound = np.maximum(stretch * paths, paths + min_gain)
     violating = np.flatnonzero(along_tree > bound)
     if violating.size == 0:
         return structure
     neighbours: dict[int, list[tuple[int, float]]] = {}
-    for u, v, length in structure.edges(data="weight"):
-        _join(neighbours, arrays.index[u], arrays.index[v], length)
+    for p, q, length in zip(ends[:, 0].tolist(), ends[:, 1].tolist(), lengths):
+        _join(neighbours, p, q, length)
     added: list[list[int]] = []
     for k in violating.tolist():  # candidates are sorted by path length
         a, b, x, y = pairs[k]
@@ -102,19 +103,30 @@ def add_loops(graph: nx.Graph, structure: nx.Graph, stretch: float, min_gain: fl
         added.append(path)
         for p, q in zip(path, path[1:]):
             _join(neighbours, p, q, graph.edges[arrays.nodes[p], arrays.nodes[q]]["weight"])
-    # a copy as Graph.copy() makes it, visiting each edge once rather than from both ends
+    # a copy as Graph.copy() makes it, but visiting each edge once rather than from both ends, and
+    # adding bare nodes then their attributes (add_nodes_from takes (node, dict) pairs through an exception each)
     looped = nx.Graph(**structure.graph)
-    looped.add_nodes_from(structure.nodes(data=True))
+    looped.add_nodes_from(structure)
+    for (_, data), (_, original) in zip(looped.nodes(data=True), structure.nodes(data=True)):
+        data.update(original)
     looped.add_edges_from(structure.edges(data=True))
-    for path in added:
-        ids = [arrays.nodes[i] for i in path]
-        looped.add_nodes_from((node, graph.nodes[node]) for node in ids if node not in looped)
-        looped.add_edges_from((u, v, graph.edges[u, v]) for u, v in zip(ids, ids[1:]))
+    # every path's nodes, then every path's edges: the insertion order of adding them path by path
+    paths_ids = [[arrays.nodes[i] for i in path] for path in added]
+    looped.add_nodes_from((node, graph.nodes[node]) for ids in paths_ids for node in ids if node not in looped)
+    looped.add_edges_from((u, v, graph.edges[u, v]) for ids in paths_ids for u, v in zip(ids, ids[1:]))
     return looped
 
 
+def _edges(arrays: SurfaceArrays, structure: nx.Graph) -> tuple[np.ndarray, list[float]]:
+    """(e, 2) rows of the ends of ``structure``'s edges (in its edge order) and their ``weight``, metres."""
+    index = arrays.index
+    edges = [(index[u], index[v], length) for u, v, length in structure.edges(data="weight")]
+    ends = np.array([(p, q) for p, q, _ in edges], dtype=np.int64).reshape(-1, 2)
+    return ends, [length for _, _, length in edges]
+
+
 def _candidates(
-    arrays: SurfaceArrays, structure: nx.Graph, distance: np.ndarray, cell: np.ndarray
+    arrays: SurfaceArrays, structure: nx.Graph, ends: np.ndarray, distance: np.ndarray, cell: np.ndarray
 ) -> tuple[np.ndarray, np.ndarray]:
     """(q, 4) rows (a, b, x, y) and (q,) path lengths, shortest first, one per cell pair."""
     upper = sp.triu(arrays.adjacency, k=1).tocoo()
@@ -127,8 +139,8 @@ def _candidates(
     # an edge of the structure itself joins two cells but is no shortcut
     tree_edge = in_structure[x] & in_structure[y]
     if tree_edge.any():
-        members = {tuple(sorted((arrays.index[u], arrays.index[v]))) for u, v in structure.edges}
-        tree_edge[tree_edge] = [(min(p, q), max(p, q)) in members for p, q in zip(x[tree_edge].tolist(), y[tree_edge].tolist())]
+        key = np.minimum(x, y) * arrays.n + np.maximum(x, y)
+        tree_edge[tree_edge] = np.isin(key[tree_edge], ends.min(axis=1) * arrays.n + ends.max(axis=1))
     x, y, w, a, b = x[~tree_edge], y[~tree_edge], w[~tree_edge], a[~tree_edge], b[~tree_edge]
     length = distance[x] + w + distance[y]
     swap = a > b
@@ -140,10 +152,10 @@ def _candidates(
     return np.column_stack([a, b, x, y])[first], length[first]
 
 
-def _tree_distances(arrays: SurfaceArrays, forest: nx.Graph, pairs: np.ndarray) -> np.ndarray:
-    """Distance along ``forest`` between the ends of each pair (inf across trees), by binary lifting."""
+def _tree_distances(arrays: SurfaceArrays, forest: nx.Graph, edge_rows: np.ndarray, pairs: np.ndarray) -> np.ndarray:
+    """Distance along ``forest`` (its edges' rows ``edge_rows``) between the ends of each pair (inf across
+    trees), by binary lifting."""
     n = arrays.n
-    edge_rows = np.array([(arrays.index[u], arrays.index[v]) for u, v in forest.edges], dtype=np.int64).reshape(-1, 2)
     lengths = np.asarray(arrays.adjacency[edge_rows[:, 0], edge_rows[:, 1]]).ravel()
     tree = sp.csr_array(
         (np.concatenate([lengths, lengths]), (np.concatenate(edge_rows.T[::-1]), np.concatenate(edge_rows.T))), shape=(n, n)
@@ -160,15 +172,14 @@ def _tree_distances(arrays: SurfaceArrays, forest: nx.Graph, pairs: np.ndarray) 
     parent = parent[:n].astype(np.int64)
     parent[(parent == n) | (parent < 0)] = -1
     order = order[1:]
-    hops = np.zeros(n, dtype=np.int64)
-    metres = np.zeros(n)
     up_length = np.zeros(n)
     child = order[parent[order] >= 0]
     up_length[child] = np.asarray(tree[child, parent[child]]).ravel()
+    hops, metres, up, parents = [0] * n, [0.0] * n, up_length.tolist(), parent.tolist()
     for node in child.tolist():  # breadth-first: parents first
-        p = parent[node]
-        hops[node] = hops[p] + 1
-        metres[node] = metres[p] + up_length[node]
+        hops[node] = hops[parents[node]] + 1
+        metres[node] = metres[parents[node]] + up[node]
+    hops, metres = np.array(hops, dtype=np.int64), np.array(metres)
     ancestors = [np.where(parent >= 0, parent, np.arange(n))]
     while (1 << len(ancestors)) <= max(int(hops.max()), 1):
         ancestors.append(ancestors[-1][ancestors[-1]])

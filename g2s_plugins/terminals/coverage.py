@@ -127,16 +127,20 @@ def _cover(adjacency, seeds: np.ndarray, eligible: np.ndarray, radius: float) ->
     distance = start.tolist()
     parent = predecessor.tolist()
     indptr, indices, lengths = adjacency.indptr.tolist(), adjacency.indices.tolist(), adjacency.data.tolist()
+    # farthest first (ties: lowest row): the far nodes sorted once, popped from the end, merged with a
+    # heap of the entries pushed again after their node came closer (the same order as one heap of
+    # all entries, without sifting the many entries that are covered before their turn)
     far = np.flatnonzero((start > radius) & eligible)
-    farthest = [(-distance[node], node) for node in far.tolist()]  # a max-heap with stale entries
-    heapq.heapify(farthest)
+    far = far[np.lexsort((-far, start[far]))]
+    queue = list(zip((-start[far]).tolist(), far.tolist()))
+    again: list[tuple[float, int]] = []
     chosen = [seeds]
-    while farthest:
-        negative, node = heapq.heappop(farthest)
+    while queue or again:
+        negative, node = heapq.heappop(again) if again and (not queue or again[0] < queue[-1]) else queue.pop()
         if distance[node] <= radius:
             continue
         if -negative > distance[node]:  # stale: the node came closer since
-            heapq.heappush(farthest, (-distance[node], node))
+            heapq.heappush(again, (-distance[node], node))
             continue
         path = [node]
         while parent[path[-1]] >= 0:
