@@ -27,11 +27,9 @@ import trimesh
 from g2s_core import pipeline
 from g2s_core.config import RunConfig, named_files, resolve_config
 from g2s_core.mesh import SAMPLE_PREFIX, generate_level, load_mesh, mesh_sha256, prepare_and_clean
-from g2s_core.model import RunResult
-from g2s_core.outputs import DEFAULT_FORMATS, parse_formats, write_outputs
+from g2s_core.model import LoadedResult, RunResult
+from g2s_core.outputs import DEFAULT_FORMATS, write_outputs
 from g2s_core.registry import Registry, installed
-from g2s_core.results import LoadedResult
-from g2s_core.results import load_result as _load_structure
 
 MeshLike = str | Path | trimesh.Trimesh
 ConfigLike = str | Path | Mapping[str, Any] | RunConfig
@@ -195,23 +193,24 @@ def write_result(
         G2SError: unknown format, or the folder cannot take the results
             (checked before anything is written).
     """
-    outdir = Path(outdir)
     default = result.config.get("outputs", {}).get("formats", DEFAULT_FORMATS)
-    chosen = parse_formats(default if formats is None else formats, registry=registry)
+    chosen = default if formats is None else formats
     return write_outputs(
-        result, outdir, chosen, replace=force, progress=progress, registry=registry, protect=result.inputs
+        result, Path(outdir), chosen, replace=force, progress=progress, registry=registry, protect=result.inputs
     )
 
 
-def load_result(path: str | Path) -> LoadedResult:
-    """Read back a result folder (or its ``structure.json``).
+def load_result(path: str | Path, format: str = "json", registry: Registry | None = None) -> LoadedResult:
+    """Read back a result folder (or its ``structure.json``) with the ResultReader plugin of ``format``.
 
     The final structure's nodes carry ``terminal`` and ``values`` as in a
     :class:`~g2s_core.model.RunResult` from :func:`run`.
 
     Raises:
-        G2SError: the file is missing or not a g2s ``structure.json``.
+        G2SError: the file is missing or not a g2s ``structure.json``
+            (ConfigError: no reader of ``format`` is installed).
     """
-    loaded = _load_structure(path)
+    registry = registry or installed()
+    loaded = registry.call(registry.get("readers", format, key="format"), path=Path(path))
     _put_values(loaded.structure, loaded.analysis)
     return loaded

@@ -25,7 +25,6 @@ from rich.progress import Progress as RichProgress
 from rich.table import Table
 
 from g2s_core import api, pipeline, version
-from g2s_core.api import MeshSource
 from g2s_core.batch import INSTALL_HINT, missing_extra, run_batch
 from g2s_core.batch import Progress as BatchProgress
 from g2s_core.config import parse_assignment, presets, resolve_config
@@ -33,7 +32,7 @@ from g2s_core.errors import G2SError, PluginFailure
 from g2s_core.mesh import SAMPLE_PREFIX, SUPPORTED_SUFFIXES
 from g2s_core.model import RunResult
 from g2s_core.outputs import DEFAULT_FORMATS, check_outdir, chosen_formats, writers
-from g2s_core.registry import Registry, installed, plugin_parameters
+from g2s_core.registry import installed, plugin_parameters
 from g2s_core.stages import STAGES
 from g2s_core.summary import final_graph, metric_lines, roots_of, stage_rows
 
@@ -169,10 +168,26 @@ def _run(args: argparse.Namespace, errors: Console, mesh_name: str | None = None
     registry = installed()
     plan = pipeline.plan(config, registry, source=source)
     mesh = api.open_mesh(args.mesh, config, name=mesh_name, registry=registry)
-    if mesh.cleaning:
+    quiet = args.quiet or args.json
+    if mesh.cleaning and not quiet:
         removed = ", ".join(f"{count} {what.replace('_', ' ')}" for what, count in mesh.cleaning.items())
-        _status(args, errors, f"cleaning removed {removed}")
-    return _execute(args, errors, registry, plan, mesh, formats, config_files)
+        errors.print(f"cleaning removed {removed}", markup=False, highlight=False, soft_wrap=True)
+    with _progress(errors, quiet) as say:
+        result = api.execute(plan, registry, mesh, progress=say, config_files=config_files)
+        written = api.write_result(result, args.outdir, formats, force=args.force, progress=say, registry=registry)
+    if args.json:
+        print(json.dumps(_summary(result, args.outdir, formats, written), indent=1, sort_keys=True))
+        return 0
+    for warning in result.warnings:
+        errors.print(f"g2s: warning: {warning}", markup=False, highlight=False, soft_wrap=True)
+    if not args.quiet:
+        console = Console()
+        console.print(stage_table(result, title=mesh.name))
+        for label, measures in metric_lines(result):
+            console.print(f"{label}: {measures}", markup=False, highlight=False, soft_wrap=True)
+        for path in written:
+            console.print(f"wrote {path}", markup=False, highlight=False, soft_wrap=True)
+    return 0
 
 
 def _batch(args: argparse.Namespace, errors: Console) -> int:
@@ -251,34 +266,6 @@ def _demo_hint(outdir: Path) -> str:
     return "\n".join(lines)
 
 
-def _execute(
-    args: argparse.Namespace,
-    errors: Console,
-    registry: Registry,
-    plan: pipeline.Plan,
-    mesh: MeshSource,
-    formats: Sequence[str],
-    config_files: Sequence[Path],
-) -> int:
-    quiet = args.quiet or args.json
-    with _progress(errors, quiet) as say:
-        result = api.execute(plan, registry, mesh, progress=say, config_files=config_files)
-        written = api.write_result(result, args.outdir, formats, force=args.force, progress=say, registry=registry)
-    if args.json:
-        print(json.dumps(_summary(result, args.outdir, formats, written), indent=1, sort_keys=True))
-        return 0
-    for warning in result.warnings:
-        errors.print(f"g2s: warning: {warning}", markup=False, highlight=False, soft_wrap=True)
-    if not args.quiet:
-        console = Console()
-        console.print(stage_table(result, title=mesh.name))
-        for label, measures in metric_lines(result):
-            console.print(f"{label}: {measures}", markup=False, highlight=False, soft_wrap=True)
-        for path in written:
-            console.print(f"wrote {path}", markup=False, highlight=False, soft_wrap=True)
-    return 0
-
-
 @contextmanager
 def _progress(errors: Console, quiet: bool) -> Iterator[Callable[[str], None]]:
     """A callback showing progress on stderr as a spinner with the current step.
@@ -315,11 +302,6 @@ def _summary(result: RunResult, outdir: Path, formats: Sequence[str], written: S
         "metrics": result.metrics,
         "warnings": result.warnings,
     }
-
-
-def _status(args: argparse.Namespace, errors: Console, message: str) -> None:
-    if not (args.quiet or args.json):
-        errors.print(message, markup=False, highlight=False, soft_wrap=True)
 
 
 def stage_table(result: RunResult, title: str = "") -> Table:

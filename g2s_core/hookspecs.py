@@ -16,7 +16,7 @@ from typing import Any
 import networkx as nx
 import trimesh
 
-from g2s_core.model import AnalyzerResult, RunContext, RunResult, Terminals
+from g2s_core.model import AnalyzerResult, LoadedResult, RunContext, RunResult, Terminals
 from g2s_core.plugin import PluginParams, hookspec
 
 
@@ -116,6 +116,16 @@ def g2s_write_output(result: RunResult, folder: Path) -> list[Path]:
     The plugin declares ``FILES``, the names of every file it may write (what
     ``--force`` may replace); it writes only those, and may skip ones that
     make no sense for the run (e.g. before step 5).
+    """
+
+
+@hookspec(firstresult=True)
+def g2s_read_result(path: Path) -> LoadedResult:
+    """ResultReader: read back the files that the OutputWriter of the same ``NAME`` wrote.
+
+    ``path`` is a result folder or one of the format's files. A file that is
+    missing, damaged or not of the format is the user's bad input: raise
+    :class:`~g2s_core.errors.G2SError` naming the file and the field.
     """
 
 

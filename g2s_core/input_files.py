@@ -63,7 +63,8 @@ def read_text(path: str | Path, what: str, error: type[G2SError] = G2SError) -> 
         _require_regular(path, info.st_mode, what, error)
         if info.st_size > MAX_TEXT_BYTES:
             raise error(f"{path}: {info.st_size} bytes is too large for a {what} (at most {MAX_TEXT_BYTES})")
-        data = _read_all(descriptor, MAX_TEXT_BYTES + 1)
+        with open(descriptor, "rb", closefd=False) as handle:  # reads up to the limit or the end
+            data = handle.read(MAX_TEXT_BYTES + 1)
     except OSError as exc:
         raise error(f"{path}: cannot read {what} ({exc.strerror})") from None
     finally:
@@ -98,19 +99,6 @@ def _require_regular(path: str | Path, mode: int, what: str, error: type[G2SErro
     if not stat.S_ISREG(mode):
         kind = next((name for test, name in _KINDS if test(mode)), "not a regular file")
         raise error(f"{path}: expected a {what}, got {kind}")
-
-
-def _read_all(descriptor: int, limit: int) -> bytes:
-    """Up to ``limit`` bytes from an open file (fewer at its end)."""
-    chunks = []
-    size = 0
-    while size < limit:
-        chunk = os.read(descriptor, min(1 << 20, limit - size))
-        if not chunk:
-            break
-        chunks.append(chunk)
-        size += len(chunk)
-    return b"".join(chunks)
 
 
 def parse_nested(text: str, parse: Callable[[str], Any], source: str, error: type[G2SError] = G2SError) -> Any:

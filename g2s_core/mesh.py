@@ -114,12 +114,9 @@ def _read_single_mesh(path: Path) -> trimesh.Trimesh | None:
         return None
     with path.open("rb") as handle:
         data = trimesh.exchange.load.mesh_loaders[kind](handle, file_type=kind)
-    vertices, faces = data.get("vertices") if isinstance(data, dict) else None, None
-    if vertices is not None:
-        faces = data.get("faces")
-    if vertices is None or faces is None:
+    if not isinstance(data, dict) or data.get("vertices") is None or data.get("faces") is None:
         return None
-    vertices, faces = np.asarray(vertices), np.asarray(faces)
+    vertices, faces = np.asarray(data["vertices"]), np.asarray(data["faces"])
     if vertices.ndim != 2 or vertices.shape[1] != 3 or faces.ndim != 2 or faces.shape[1] != 3 or len(faces) == 0:
         return None
     return trimesh.Trimesh(vertices=vertices, faces=faces, process=False)

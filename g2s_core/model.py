@@ -176,6 +176,43 @@ class AnalyzerResult:
 
 
 @dataclass
+class LoadedResult:
+    """A run's result read back from its files by a ResultReader plugin (:func:`g2s_core.load_result`).
+
+    ``structure`` is the final structure: a :class:`networkx.DiGraph` (edges
+    parent -> child, ``graph["roots"]``) when the run got to rooted trees, an
+    undirected graph otherwise. Its nodes carry the attributes of this module
+    (``pos``, ``normal``, ``area``, ``on_navmesh``, ``polygon``, ``depth``,
+    ``root``), ``terminal`` (bool) and the plugins' extra attributes; its edges
+    ``weight`` and extras. ``analysis`` maps each analyzer's key to its value
+    per node, ``features`` to its records; ``metrics`` maps each evaluator's
+    key to its measures. ``stages`` carry their seconds when the reader found
+    them (NaN otherwise). ``schema_version`` is the version of the format read;
+    ``document`` the file's raw content. What a format does not hold stays
+    empty (``None``, ``[]``, ``{}``).
+    """
+
+    schema_version: int
+    mesh_name: str
+    mesh_sha256: str
+    config: dict[str, Any]
+    structure: nx.Graph
+    navmesh: dict[str, Any] | None = None
+    final_stage: str | None = None
+    roots: list[int] = field(default_factory=list)
+    analysis: dict[str, dict[int, float | None]] = field(default_factory=dict)
+    features: dict[str, dict[str, Any]] = field(default_factory=dict)
+    metrics: dict[str, dict[str, float]] = field(default_factory=dict)
+    terminals: Terminals | None = None
+    steiner: nx.Graph | None = None
+    forest: nx.DiGraph | None = None
+    graph_size: tuple[int, int] | None = None
+    stages: list[StageStats] = field(default_factory=list)
+    warnings: list[str] = field(default_factory=list)
+    document: dict[str, Any] = field(default_factory=dict, repr=False)
+
+
+@dataclass
 class RunContext:
     """Shared, read-mostly state that every hook receives as ``context``.
 

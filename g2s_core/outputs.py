@@ -75,9 +75,9 @@ def result_paths(outdir: Path, formats: Sequence[str] | None = None, registry: R
 
 
 def check_outdir(
-    outdir: Path, formats: Sequence[str], force: bool, protect: Sequence[Path] = (), registry: Registry | None = None
-) -> None:
-    """Refuse an output folder that cannot take the results, without creating anything.
+    outdir: Path, formats: str | Sequence[str], force: bool, protect: Sequence[Path] = (), registry: Registry | None = None
+) -> list[str]:
+    """Refuse an output folder that cannot take the results, without creating anything; the formats' names.
 
     Any result file of any installed format already in ``outdir`` counts as an
     earlier result and is refused unless ``force``. The files in ``protect``
@@ -89,19 +89,20 @@ def check_outdir(
             results exist without ``force``, or a result file would be an
             input file.
     """
-    parse_formats(formats, registry=registry)
+    names = parse_formats(formats, registry=registry)
     check_writable(outdir)
     every = result_paths(outdir, registry=registry)
     refuse_inputs(outdir, every, protect)
     existing = sorted(p.name for p in every if p.exists())
     if existing and not force:
         raise G2SError(f"{outdir}: already holds results ({', '.join(existing)}); use --force to replace them")
+    return names
 
 
 def write_outputs(
     result: RunResult,
     outdir: Path,
-    formats: Sequence[str],
+    formats: str | Sequence[str],
     replace: bool = False,
     progress: Callable[[str], None] | None = None,
     registry: Registry | None = None,
@@ -115,9 +116,8 @@ def write_outputs(
     """
     registry = registry or installed()
     known = writers(registry)
-    check_outdir(outdir, formats, replace, protect, registry)
+    result.formats = tuple(check_outdir(outdir, formats, replace, protect, registry))
     obsolete = [p for p in result_paths(outdir, registry=registry) if p.exists()] if replace else []
-    result.formats = tuple(parse_formats(formats, registry=registry))
     names: list[str] = []
     with staged(outdir, obsolete, protect) as staging:
         for fmt in result.formats:

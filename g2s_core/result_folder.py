@@ -20,6 +20,7 @@ result.
 
 from __future__ import annotations
 
+import contextlib
 import errno
 import os
 import re
@@ -96,7 +97,8 @@ def staged(outdir: Path, obsolete: Sequence[Path] = (), protect: Sequence[Path] 
         if staging is not None:
             shutil.rmtree(staging, ignore_errors=True)
         for folder in reversed(created):
-            _remove_if_empty(folder)
+            with contextlib.suppress(OSError):  # not empty: something else was put there meanwhile
+                folder.rmdir()
         storage = _storage_error(exc)
         if storage is not None:
             raise G2SError(f"{outdir}: cannot write results ({storage.strerror or storage}); nothing was written") from None
@@ -159,13 +161,6 @@ def _process_alive(pid: int) -> bool:
     except (PermissionError, OverflowError, ValueError):
         return pid != 0
     return True
-
-
-def _remove_if_empty(folder: Path) -> None:
-    try:
-        folder.rmdir()
-    except OSError:
-        pass
 
 
 def refuse_inputs(outdir: Path, paths: Sequence[Path], protect: Sequence[Path]) -> None:

@@ -1,4 +1,4 @@
-"""The one table of plugin kinds: the eight pipeline stages, output writers, level generators and batch executors.
+"""The one table of plugin kinds: the eight pipeline stages, output writers and readers, level generators and batch executors.
 
 Everything that lists stages reads it: the config's sections
 (:mod:`g2s_core.config`), the registry's look-ups and ``g2s plugins``
@@ -19,6 +19,7 @@ simplify     SimplifyPredicate  ``g2s_simplify_predicate``  a callable P(tree, a
 analyzers    Analyzer           ``g2s_analyze``             a number for every node of the structure [*]_
 evaluators   Evaluator          ``g2s_evaluate``            a finite number for each named measure
 outputs      OutputWriter       ``g2s_write_output``        the paths written, among its FILES
+readers      ResultReader       ``g2s_read_result``         the result read back, a LoadedResult
 levels       LevelGenerator     ``g2s_generate_level``      a trimesh.Trimesh with triangles
 executors    Executor           ``g2s_execute``             an iterator of the summary rows of the pairs
 ===========  =================  ==========================  ==========================================
@@ -41,7 +42,7 @@ import numpy as np
 import trimesh
 
 from g2s_core import hookspecs
-from g2s_core.model import AnalyzerResult, Terminals
+from g2s_core.model import AnalyzerResult, LoadedResult, Terminals
 
 Check = Callable[[Any, Mapping[str, Any], Any], "str | None"]
 """``check(result, hook arguments, plugin object)``: what is wrong with a result, or ``None``."""
@@ -194,6 +195,10 @@ def _row(value: Any) -> str | None:
     return f"{type(value).__name__}, not a summary row (a dict with config and level)"
 
 
+def _loaded(value: Any, kwargs: Mapping[str, Any], plugin: Any) -> str | None:
+    return None if isinstance(value, LoadedResult) else f"{type(value).__name__}, not a LoadedResult"
+
+
 def _level(value: Any, kwargs: Mapping[str, Any], plugin: Any) -> str | None:
     if not isinstance(value, trimesh.Trimesh) or len(value.faces) == 0:
         return f"{type(value).__name__}, not a trimesh.Trimesh with triangles"
@@ -222,6 +227,8 @@ STAGES: tuple[Stage, ...] = (
           _measures, many=True, step="Post-process", label="evaluation", result="metrics", timing="evaluation"),
     Stage("outputs", "OutputWriter", hookspecs.g2s_write_output.__name__, "the paths written, among its FILES",
           _written, declares=("FILES",)),
+    Stage("readers", "ResultReader", hookspecs.g2s_read_result.__name__, "the result read back, a LoadedResult",
+          _loaded),
     Stage("levels", "LevelGenerator", hookspecs.g2s_generate_level.__name__, "a trimesh.Trimesh with triangles",
           _level),
     Stage("executors", "Executor", hookspecs.g2s_execute.__name__, "an iterator of the summary rows of the pairs",

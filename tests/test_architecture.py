@@ -19,7 +19,7 @@ def test_core_never_imports_a_plugin():
             assert not any(n.startswith("g2s_plugins") for n in names), f"{path.name} imports {names}"
 
 
-CORE_CODE_BUDGET = 2516
+CORE_CODE_BUDGET = 2354
 """Lines of code g2s_core may hold (docs/architecture.md records the count): the core stays minimal."""
 
 
@@ -77,7 +77,7 @@ def test_the_documented_example_plugins_register_and_work(tmp_path):
     kinds = [(p.stage, p.name) for p in registry.plugins()]
     assert kinds == [("graph", "triangles"), ("terminals", "above"), ("steiner", "star"), ("loops", "shortcuts"),
                      ("roots", "lowest"), ("simplify", "straight"), ("analyzers", "height"), ("evaluators", "kept"),
-                     ("outputs", "csv"), ("levels", "plaza"), ("executors", "threads")]
+                     ("outputs", "csv"), ("readers", "csv"), ("levels", "plaza"), ("executors", "threads")]
 
     def call(stage, name, **kwargs):
         info = registry.get(stage, name)
@@ -104,6 +104,8 @@ def test_the_documented_example_plugins_register_and_work(tmp_path):
     assert 0 < call("evaluators", "kept", result=result, context=None)["node_share"] <= 1
     written = call("outputs", "csv", result=result, folder=tmp_path)
     assert [p.name for p in written] == ["nodes.csv"] and len(written[0].read_text().splitlines()) == len(tree) + 1
+    loaded = call("readers", "csv", path=tmp_path)
+    assert dict(loaded.structure.nodes(data="pos")) == dict(tree.nodes(data="pos"))
     rows = [{"config": "c", "level": str(n)} for n in range(5)]
     executed = call("executors", "threads", function=dict, items=rows)
     assert sorted(executed, key=lambda row: row["level"]) == rows

@@ -19,7 +19,6 @@ import numpy as np
 import pytest
 import trimesh
 
-from g2s_core import results
 from g2s_core.config import AgentConfig, load_config
 from g2s_core.errors import G2SError
 from g2s_core.model import Opening, RunContext, RunResult, StageStats, Terminals
@@ -132,7 +131,7 @@ def result() -> RunResult:
 
 def _schema(name: str) -> dict:
     jsonschema = pytest.importorskip("jsonschema")
-    schema = json.loads((Path(results.__file__).parent / name).read_text())
+    schema = json.loads((Path(structure_json.__file__).parent / name).read_text())
     jsonschema.Draft202012Validator.check_schema(schema)
     return schema
 

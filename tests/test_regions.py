@@ -13,7 +13,8 @@ import numpy as np
 import pytest
 
 from g2s_core import pipeline
-from g2s_core.results import SCHEMA_PATH, load_result
+from g2s_plugins.outputs.json_reader import load_result
+from g2s_plugins.outputs.structure_json import SCHEMA_PATH
 from g2s_core.config import PRESETS_DIR, load_config, load_raw_config, parse_config
 from g2s_core.errors import PluginError
 from g2s_core.model import RunResult

@@ -88,7 +88,7 @@ def test_the_cli_report_shows_the_openings_with_their_scores(tmp_path) -> None:
     assert proc.returncode == 0, proc.stderr
     document = json.loads((out / "structure.json").read_text(encoding="utf-8"))
     jsonschema = pytest.importorskip("jsonschema")
-    schema = json.loads((ROOT / "g2s_core" / "structure.schema.json").read_text(encoding="utf-8"))
+    schema = json.loads((ROOT / "g2s_plugins" / "outputs" / "structure.schema.json").read_text(encoding="utf-8"))
     jsonschema.Draft202012Validator(schema).validate(document)
     openings = document["terminals"]["openings"]
     assert openings and all(0.0 < o["score"] <= 1.0 and o["reason"] for o in openings)

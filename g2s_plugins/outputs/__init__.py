@@ -1,5 +1,6 @@
 """The built-in output writers (plugins, see :mod:`g2s_plugins.outputs.writers`), chosen by format
-name in the config or on the CLI; :mod:`g2s_core.outputs` manages the output folder.
+name in the config or on the CLI; :mod:`g2s_core.outputs` manages the output folder. The ``json``
+format is also read back (:mod:`g2s_plugins.outputs.json_reader`, a ResultReader plugin).
 
 Every writer takes the :class:`~g2s_core.model.RunResult` and the output folder
 and returns the paths it wrote. The writers of a run write into one staging
@@ -20,6 +21,7 @@ graph      graph.json                                  initial graph, networkx n
 See ``docs/outputs.md`` for the details of each format.
 """
 
-from g2s_core.results import LoadedResult, load_result
+from g2s_core.model import LoadedResult
+from g2s_plugins.outputs.json_reader import load_result
 
 __all__ = ["LoadedResult", "load_result"]

@@ -1,11 +1,11 @@
-"""``structure.json`` (deterministic) and ``run.json`` (timings); :mod:`g2s_core.results` reads them back.
+"""``structure.json`` (deterministic) and ``run.json`` (timings); :mod:`g2s_plugins.outputs.json_reader` reads them back.
 
 ``structure.json`` holds what a run found: the input mesh's name and SHA-256,
 the resolved config, the navmesh statistics, every node and edge of the final
 structure with its tree data and analysis values, the rooted trees, the
 terminals and openings, the sizes (and edges) of the Steiner tree and the
 rooted trees before simplification, the node/edge counts of every stage and
-the warnings. Its layout is described by ``g2s_core/structure.schema.json``
+the warnings. Its layout is described by ``structure.schema.json`` beside this module
 (``schema_version`` 3: version 1 plus ``features``, the records
 analyzers such as ``chokepoints`` and ``regions`` return (version 2), plus
 ``metrics``, the evaluators' measures (version 3); older files are still read).
@@ -30,10 +30,18 @@ import numpy as np
 
 from g2s_core import version
 from g2s_core.model import Opening, RunResult
-from g2s_core.results import RUN_FILE, RUN_SCHEMA_VERSION, SCHEMA_VERSION, STRUCTURE_FILE
 from g2s_core.rooted import tree_parent
 from g2s_plugins.outputs.common import edge_list, final_graph, number, roots_of, terminal_ids, vector
 from g2s_plugins.outputs.files import atomic_write
+
+SCHEMA_VERSION = 3
+STRUCTURE_FILE = "structure.json"
+RUN_FILE = "run.json"
+RUN_SCHEMA_VERSION = 1
+SCHEMA_PATH = Path(__file__).resolve().parent / "structure.schema.json"
+"""The layout of ``structure.json``, version :data:`SCHEMA_VERSION` (JSON Schema draft 2020-12)."""
+RUN_SCHEMA_PATH = Path(__file__).resolve().parent / "run.schema.json"
+"""The layout of ``run.json``, version :data:`RUN_SCHEMA_VERSION`."""
 
 _NODE_KEYS = ("pos", "normal", "area", "on_navmesh", "polygon", "terminal", "depth", "root", "values")
 _EDGE_KEYS = ("weight",)

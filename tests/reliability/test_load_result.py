@@ -13,7 +13,7 @@ from hypothesis import strategies as st
 
 from g2s_core.cli import main
 from g2s_core.errors import G2SError
-from g2s_core.results import load_result
+from g2s_plugins.outputs.json_reader import load_result
 
 
 @pytest.fixture(scope="module")

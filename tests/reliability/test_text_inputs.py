@@ -13,7 +13,7 @@ import pytest
 from g2s_core.config import load_config
 from g2s_core.errors import ConfigError, G2SError
 from g2s_core.input_files import MAX_NESTING, MAX_TEXT_BYTES, nesting_depth, read_text
-from g2s_core.results import load_result
+from g2s_plugins.outputs.json_reader import load_result
 from g2s_plugins.terminals.points import read_points
 from tests.reliability.checks import CORRIDOR, assert_clean_error, run_g2s, run_g2s_process, tree
 

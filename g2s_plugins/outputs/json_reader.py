@@ -1,82 +1,46 @@
-"""Reading a run's ``structure.json`` back (the ``json`` output writer's format, ``docs/outputs.md``).
+"""Reads back what the json writer wrote: structure.json, with the stage times of run.json (g2s_core.load_result).
 
-The format belongs to g2s, not to the writer plugin: its version, file names,
-JSON schemas (``structure.schema.json``, ``run.schema.json`` beside this module)
-and reader live here, and the writer (``g2s_plugins.outputs.structure_json``)
-writes what this reads. The reader trusts nothing in the file: it is read like
-every text input (:mod:`g2s_core.input_files`) and checked against the schema
-before use, so a damaged file is refused naming the file and the field.
+The ``json`` writer (:mod:`g2s_plugins.outputs.structure_json`) owns the
+format: its version, file names and JSON schemas (``structure.schema.json``,
+``run.schema.json`` beside this module); this reader reads what it writes.
+The reader trusts nothing in the file: it is read like every text input
+(:mod:`g2s_core.input_files`) and checked against the schema before use, so a
+damaged file is refused naming the file and the field.
 """
 
 from __future__ import annotations
 
 import functools
 import json
-from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-import jsonschema
 import networkx as nx
 
 from g2s_core.errors import G2SError
 from g2s_core.input_files import parse_nested, read_text
-from g2s_core.model import Opening, StageStats, Terminals, vec3
+from g2s_core.model import LoadedResult, Opening, StageStats, Terminals, vec3
+from g2s_core.plugin import hookimpl
+from g2s_plugins.outputs.structure_json import RUN_FILE, SCHEMA_PATH, SCHEMA_VERSION, STRUCTURE_FILE
 
-SCHEMA_VERSION = 3
+NAME = "json"
+
 READABLE_VERSIONS = (1, 2, 3)
 """structure.json versions :func:`load_result` reads (1 has no ``features``, 1 and 2 no ``metrics``)."""
 _ADDED_IN = {"features": 2, "metrics": 3}
 """Fields a version added, empty when a file of an older version is read."""
-STRUCTURE_FILE = "structure.json"
-RUN_FILE = "run.json"
-RUN_SCHEMA_VERSION = 1
-SCHEMA_PATH = Path(__file__).resolve().parent / "structure.schema.json"
-"""The layout of ``structure.json``, version :data:`SCHEMA_VERSION` (JSON Schema draft 2020-12)."""
-RUN_SCHEMA_PATH = Path(__file__).resolve().parent / "run.schema.json"
-"""The layout of ``run.json``, version :data:`RUN_SCHEMA_VERSION`."""
 
 
-@dataclass
-class LoadedResult:
-    """A ``structure.json`` read back, with networkx graphs.
-
-    ``structure`` is the final structure: a :class:`networkx.DiGraph` (edges
-    parent -> child, ``graph["roots"]``) when the run got to rooted trees, an
-    undirected graph otherwise. Its nodes carry the attributes of
-    :mod:`g2s_core.model` (``pos``, ``normal``, ``area``, ``on_navmesh``,
-    ``polygon``, ``depth``, ``root``), ``terminal`` (bool) and the plugins'
-    extra attributes; its edges ``weight`` and extras. ``analysis`` maps each
-    analyzer's key to its value per node, ``features`` to its records (empty
-    for version 1 files); ``metrics`` maps each evaluator's key to its measures
-    (empty before version 3). ``stages`` come with their seconds
-    when ``run.json`` of the same mesh lies beside the file, NaN otherwise.
-    """
-
-    schema_version: int
-    mesh_name: str
-    mesh_sha256: str
-    config: dict[str, Any]
-    navmesh: dict[str, Any] | None
-    final_stage: str | None
-    structure: nx.Graph
-    roots: list[int]
-    analysis: dict[str, dict[int, float | None]]
-    features: dict[str, dict[str, Any]]
-    metrics: dict[str, dict[str, float]]
-    terminals: Terminals | None
-    steiner: nx.Graph | None
-    forest: nx.DiGraph | None
-    graph_size: tuple[int, int] | None
-    stages: list[StageStats] = field(default_factory=list)
-    warnings: list[str] = field(default_factory=list)
-    document: dict[str, Any] = field(default_factory=dict, repr=False)
+@hookimpl
+def g2s_read_result(path: Path) -> LoadedResult:
+    """Read a result folder's ``structure.json`` (or that file), with the stage times of ``run.json`` beside it."""
+    return load_result(path)
 
 
 def load_result(path: str | Path) -> LoadedResult:
     """Read a ``structure.json`` (or the folder holding one) back.
 
-    The document is checked against :data:`SCHEMA_PATH` before use; a
+    The document is checked against ``structure.schema.json`` before use; a
     file of an older version is checked as the current one with the fields
     its version lacks empty.
 
@@ -105,6 +69,8 @@ def load_result(path: str | Path) -> LoadedResult:
             if name in document:
                 raise G2SError(f"{path}: {name}: not a field of schema_version {version}")
             checked[name] = {}
+    import jsonschema  # imported on first use: every command loads this plugin, few read results
+
     problem = jsonschema.exceptions.best_match(_schema_validator().iter_errors(checked))
     if problem is not None:
         where = "".join(f"[{p}]" if isinstance(p, int) else f".{p}" for p in problem.absolute_path).lstrip(".")
@@ -116,7 +82,9 @@ def load_result(path: str | Path) -> LoadedResult:
 
 
 @functools.cache
-def _schema_validator() -> jsonschema.protocols.Validator:
+def _schema_validator() -> Any:
+    import jsonschema
+
     schema = json.loads(SCHEMA_PATH.read_text(encoding="utf-8"))
     return jsonschema.validators.validator_for(schema)(schema)
 
