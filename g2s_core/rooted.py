@@ -29,6 +29,7 @@ import numpy as np
 import scipy.sparse as sp
 from scipy.sparse import csgraph
 
+from g2s_core.model import add_nodes_with_data
 from g2s_core.ties import tie_values
 
 
@@ -82,9 +83,9 @@ def root_forest(forest: nx.Graph, scores: Mapping[int, float], centre: np.ndarra
     for node in order.tolist():
         depth[node] = depth[parents[node]] + 1
     rooted = nx.DiGraph(roots=[nodes[i] for i in best.tolist()])
-    rooted.add_nodes_from(nodes[i] for i in order.tolist())  # bare, then attributes: (node, dict) pairs are slow
-    for i, (node, data) in zip(order.tolist(), rooted.nodes(data=True)):
-        data.update(forest.nodes[node], depth=depth[i], root=nodes[best[label[i]]])
+    visited = order.tolist()
+    add_nodes_with_data(rooted, (nodes[i] for i in visited),
+                        ({**forest.nodes[nodes[i]], "depth": depth[i], "root": nodes[best[label[i]]]} for i in visited))
     child = order[parent[order] != n]
     rooted.add_edges_from((nodes[p], nodes[c], forest.edges[nodes[p], nodes[c]]) for p, c in zip(parent[child].tolist(), child.tolist()))
     key, tree_key = lo * n + hi, np.minimum(parent[child], child) * n + np.maximum(parent[child], child)

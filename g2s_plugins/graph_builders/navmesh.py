@@ -36,6 +36,7 @@ from pydantic import Field
 
 from g2s_core.config import AgentConfig
 from g2s_core.errors import G2SError
+from g2s_core.model import add_nodes_with_data
 from g2s_core.plugin import hookimpl
 from g2s_plugins._surface import MAX_SURFACE_GAP
 from g2s_plugins.recast import NavMesh, RecastParams, SettingsError, build_navmesh
@@ -72,10 +73,10 @@ def navmesh_graph(navmesh: NavMesh, agent: AgentConfig | None = None, max_edge_g
     nrm = [tuple(n) for n in normals.tolist()]
     area = areas.tolist()
     graph = nx.Graph()
-    # bare nodes, then their attributes: add_nodes_from takes (node, dict) pairs through an exception each
-    graph.add_nodes_from(range(navmesh.polygon_count))
-    for i, data in graph.nodes(data=True):
-        data.update(pos=pos[i], normal=nrm[i], area=area[i], on_navmesh=True, polygon=i)
+    add_nodes_with_data(graph, range(navmesh.polygon_count), (
+        {"pos": pos[i], "normal": nrm[i], "area": area[i], "on_navmesh": True, "polygon": i}
+        for i in range(navmesh.polygon_count)
+    ))
     ends = portals.endpoints.reshape(-1, 6).tolist()
     crossing = np.zeros(len(pairs), dtype=bool)
     if max_edge_gap is not None and agent is None:

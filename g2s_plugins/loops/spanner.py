@@ -42,7 +42,7 @@ import scipy.sparse as sp
 from pydantic import Field
 from scipy.sparse import csgraph
 
-from g2s_core.model import RunContext
+from g2s_core.model import RunContext, add_nodes_with_data
 from g2s_core.plugin import PluginParams, hookimpl
 from g2s_plugins.surface_arrays import SurfaceArrays, surface_arrays
 
@@ -103,12 +103,9 @@ def add_loops(graph: nx.Graph, structure: nx.Graph, stretch: float, min_gain: fl
         added.append(path)
         for p, q in zip(path, path[1:]):
             _join(neighbours, p, q, graph.edges[arrays.nodes[p], arrays.nodes[q]]["weight"])
-    # a copy as Graph.copy() makes it, but visiting each edge once rather than from both ends, and
-    # adding bare nodes then their attributes (add_nodes_from takes (node, dict) pairs through an exception each)
+    # a copy as Graph.copy() makes it, but visiting each edge once rather than from both ends
     looped = nx.Graph(**structure.graph)
-    looped.add_nodes_from(structure)
-    for (_, data), (_, original) in zip(looped.nodes(data=True), structure.nodes(data=True)):
-        data.update(original)
+    add_nodes_with_data(looped, structure, (data for _, data in structure.nodes(data=True)))
     looped.add_edges_from(structure.edges(data=True))
     # every path's nodes, then every path's edges: the insertion order of adding them path by path
     paths_ids = [[arrays.nodes[i] for i in path] for path in added]
