@@ -312,6 +312,11 @@ def test_shortest_path_flow_by_hand():
     predecessors, through = traffic.shortest_path_flow(square, np.array([0]), values[:4])
     assert predecessors.tolist() == [[-9999, 0, 0, 2]]
     assert through.tolist() == [[0.0, 0.0, 8.0, 0.0]]
+    # the same square with every row's entries stored in reverse: the same trees and sums
+    reversed_rows = np.concatenate([np.arange(a, b)[::-1] for a, b in zip(square.indptr, square.indptr[1:])])
+    unsorted = sp.csr_array((square.data[reversed_rows], square.indices[reversed_rows], square.indptr), shape=square.shape)
+    assert [a.tolist() for a in traffic.shortest_path_flow(unsorted, np.array([0, 3]), values[:4])] == \
+        [a.tolist() for a in traffic.shortest_path_flow(square, np.array([0, 3]), values[:4])]
     with pytest.raises(ValueError, match="negative"):
         traffic.shortest_path_flow(lengths(2, [(0, 1, -1.0)]), np.array([0]), values[:2])
     with pytest.raises(ValueError, match="source"):
