@@ -33,12 +33,13 @@ plus the predicate's own cost.
 from __future__ import annotations
 
 import heapq
+import math
 from collections import deque
 from collections.abc import Callable
 
 import networkx as nx
-import numpy as np
 
+from g2s_core.model import add_nodes_with_data
 from g2s_core.rooted import tree_parent
 
 Predicate = Callable[[nx.DiGraph, int, int, int], bool]
@@ -54,7 +55,11 @@ def simplify_forest(forest: nx.DiGraph, predicate: Predicate) -> nx.DiGraph:
     New edges A -> C get ``weight`` = Euclidean distance between their ``pos``.
     ``depth`` is recomputed; ``graph["roots"]`` is kept.
     """
-    tree = forest.copy()
+    # a copy as DiGraph.copy() makes it, but with bare nodes first (see add_nodes_with_data)
+    tree = nx.DiGraph(**forest.graph)
+    add_nodes_with_data(tree, forest, (data for _, data in forest.nodes(data=True)))
+    tree.add_edges_from(forest.edges(data=True))
+    terminals = {node for node, terminal in tree.nodes(data="terminal", default=False) if terminal}
     children: Links = {node: set() for node in tree}
     loops: Links = {node: set() for node in tree}
     for a, b, loop in tree.edges(data="loop", default=False):
@@ -64,8 +69,8 @@ def simplify_forest(forest: nx.DiGraph, predicate: Predicate) -> nx.DiGraph:
         else:
             children[a].add(b)
     for root in tree.graph["roots"]:
-        _simplify_from(tree, children, loops, root, predicate)
-    _shorten_loops(tree, children, loops, predicate)
+        _simplify_from(tree, children, loops, terminals, root, predicate)
+    _shorten_loops(tree, children, loops, terminals, predicate)
     pending = [(root, 0) for root in tree.graph["roots"]]
     while pending:
         node, depth = pending.pop()
@@ -74,7 +79,7 @@ def simplify_forest(forest: nx.DiGraph, predicate: Predicate) -> nx.DiGraph:
     return tree
 
 
-def _simplify_from(tree: nx.DiGraph, children: Links, loops: Links, root: int, predicate: Predicate) -> None:
+def _simplify_from(tree: nx.DiGraph, children: Links, loops: Links, terminals: set[int], root: int, predicate: Predicate) -> None:
     pending = [root]
     while pending:
         a = pending.pop()
@@ -83,37 +88,36 @@ def _simplify_from(tree: nx.DiGraph, children: Links, loops: Links, root: int, p
         while queue:
             b = queue.popleft()
             grandchildren = sorted(children[b])
-            removable = (
-                grandchildren
-                and not tree.nodes[b].get("terminal", False)
-                and not loops[b]
-                # a loop edge a - c would be merged with a -> c: the loop a, b, c would vanish
-                and not any(tree.has_edge(c, a) or tree.has_edge(a, c) for c in grandchildren)
-            )
+            # kept: a leaf, a terminal, the end of a loop edge, or the parent of a node c with a loop edge a - c
+            # (the only edge a grandchild can have with a), which a -> c would merge, so the loop a, b, c would vanish
+            removable = grandchildren and b not in terminals and not loops[b] and loops[a].isdisjoint(grandchildren)
             if removable and all(predicate(tree, a, b, c) for c in grandchildren):
                 tree.remove_node(b)
                 children[a].remove(b)
                 children[a].update(grandchildren)
                 for c in grandchildren:
-                    length = float(np.linalg.norm(np.subtract(tree.nodes[a]["pos"], tree.nodes[c]["pos"])))
-                    tree.add_edge(a, c, weight=length)
+                    tree.add_edge(a, c, weight=_length(tree, a, c))
                 queue.extend(grandchildren)
             else:
                 kept.append(b)
         pending.extend(reversed(kept))
 
 
-def _shorten_loops(tree: nx.DiGraph, children: Links, loops: Links, predicate: Predicate) -> None:
+def _shorten_loops(tree: nx.DiGraph, children: Links, loops: Links, terminals: set[int], predicate: Predicate) -> None:
     """Remove the non-terminal tree leaves whose only other edge is a loop edge, where the predicate allows.
 
     Candidates are examined by ascending id; the parent of a removed node
     may become a candidate in turn (it is examined again), so a loop path
-    is shortened from the point where the spanning tree cut it.
+    is shortened from the point where the spanning tree cut it. Only a
+    removal changes a node's children and loop partners, and it puts both
+    nodes whose links it changed back on the heap: the other nodes need
+    examining once, and only those that are candidates at the start.
     """
-    pending = sorted(tree)  # a heap: the smallest id first
+    candidates = (b for b in tree if not children[b] and len(loops[b]) == 1 and b not in terminals)
+    pending = sorted(candidates)  # a heap: the smallest id first
     while pending:
         b = heapq.heappop(pending)
-        if b not in tree or tree.nodes[b].get("terminal", False) or children[b] or len(loops[b]) != 1:
+        if b not in tree or b in terminals or children[b] or len(loops[b]) != 1:
             continue
         a, (q,) = tree_parent(tree, b), loops[b]
         if a is None or tree.has_edge(a, q) or tree.has_edge(q, a) or not predicate(tree, a, b, q):
@@ -124,7 +128,13 @@ def _shorten_loops(tree: nx.DiGraph, children: Links, loops: Links, predicate: P
         loops[a].add(q)
         loops[q].add(a)
         first, second = sorted((a, q), key=lambda node: (tree.nodes[node]["depth"], node))
-        length = float(np.linalg.norm(np.subtract(tree.nodes[a]["pos"], tree.nodes[q]["pos"])))
-        tree.add_edge(first, second, weight=length, loop=True)
+        tree.add_edge(first, second, weight=_length(tree, a, q), loop=True)
         heapq.heappush(pending, a)
         heapq.heappush(pending, q)
+
+
+def _length(tree: nx.DiGraph, a: int, c: int) -> float:
+    """Distance between the ``pos`` of ``a`` and ``c``, m: the squares summed in order as ``numpy.linalg.norm``
+    does, in plain floats (a numpy call per new edge cost more than the rest of its removal)."""
+    (ax, ay, az), (cx, cy, cz) = tree.nodes[a]["pos"], tree.nodes[c]["pos"]
+    return math.sqrt((ax - cx) * (ax - cx) + (ay - cy) * (ay - cy) + (az - cz) * (az - cz))
