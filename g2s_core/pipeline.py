@@ -164,19 +164,21 @@ def _terminals_step(step: Step) -> bool | None:
     return bool(terminals.nodes)
 
 
+def _keep(step: Step, name: str, graph: nx.Graph) -> None:
+    """Store a step's graph as the result's attribute ``name`` and record its size."""
+    step.record.update(nodes=graph.number_of_nodes(), edges=graph.number_of_edges())
+    setattr(step.result, name, graph)
+
+
 def _steiner_step(step: Step) -> bool | None:
     result = step.result
-    steiner = steiner_forest(result.graph, result.terminals.nodes, lambda sub, terms: step.call(
-        graph=sub, terminals=terms), result.context)
-    step.record.update(nodes=steiner.number_of_nodes(), edges=steiner.number_of_edges())
-    result.steiner = steiner
+    _keep(step, "steiner", steiner_forest(result.graph, result.terminals.nodes, lambda sub, terms: step.call(
+        graph=sub, terminals=terms), result.context))
 
 
 def _loops_step(step: Step) -> bool | None:
     result = step.result
-    looped = _with_graph_attributes(step.call(graph=result.graph, forest=result.steiner), result.graph)
-    step.record.update(nodes=looped.number_of_nodes(), edges=looped.number_of_edges())
-    result.looped = looped
+    _keep(step, "looped", _with_graph_attributes(step.call(graph=result.graph, forest=result.steiner), result.graph))
 
 
 def _roots_step(step: Step) -> bool | None:
@@ -189,10 +191,7 @@ def _roots_step(step: Step) -> bool | None:
 
 
 def _simplify_step(step: Step) -> bool | None:
-    result = step.result
-    structure = simplify_forest(result.forest, step.call())
-    step.record.update(nodes=structure.number_of_nodes(), edges=structure.number_of_edges())
-    result.structure = structure
+    _keep(step, "structure", simplify_forest(step.result.forest, step.call()))
 
 
 def _analyzers_step(step: Step) -> bool | None:
@@ -239,11 +238,8 @@ def steiner_forest(
     terminals lie in several components a warning places the largest and names
     the likely cause (:mod:`g2s_core.disconnected`). The forest's nodes and edges carry the graph's attributes.
     """
-    component_of: dict[int, int] = {}
     components = sorted((sorted(c) for c in nx.connected_components(graph)), key=lambda c: c[0])
-    for index, component in enumerate(components):
-        for node in component:
-            component_of[node] = index
+    component_of = {node: index for index, component in enumerate(components) for node in component}
     groups: dict[int, list[int]] = {}
     for terminal in sorted(set(terminals)):
         groups.setdefault(component_of[terminal], []).append(terminal)
@@ -264,9 +260,13 @@ def steiner_forest(
 
 
 def _with_graph_attributes(part: nx.Graph, graph: nx.Graph) -> nx.Graph:
-    """``part`` (nodes and edges of ``graph``) with ``graph``'s attributes copied onto them."""
+    """``part`` (nodes and edges of ``graph``) with ``graph``'s attributes copied onto them.
+
+    ``graph``'s attributes are read from networkx's own dicts, not through a view object per node and edge.
+    """
+    node_data, adjacency = dict(graph.nodes(data=True)), dict(graph.adjacency())
     for node, data in part.nodes(data=True):
-        data.update(graph.nodes[node])
+        data.update(node_data[node])
     for u, v, data in part.edges(data=True):
-        data.update(graph.adj[u][v])
+        data.update(adjacency[u][v])
     return part

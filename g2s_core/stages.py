@@ -102,7 +102,15 @@ def _terminals(value: Any, kwargs: Mapping[str, Any], plugin: Any) -> str | None
 
 
 def _not_in(part: nx.Graph, whole: nx.Graph) -> list[Any]:
-    """The nodes and edges of ``part`` that ``whole`` lacks."""
+    """The nodes and edges of ``part`` that ``whole`` lacks.
+
+    First one comparison of each node's neighbour set with networkx's own
+    adjacency dicts (a lookup per edge took a third of a second per stage on
+    a 100k-polygon level); only a result with something missing is listed.
+    """
+    adjacency = dict(whole.adjacency())
+    if all(u in adjacency and neighbours.keys() <= adjacency[u].keys() for u, neighbours in part.adjacency()):
+        return []
     return [n for n in part if n not in whole] + [e for e in part.edges if not whole.has_edge(*e)]
 
 
