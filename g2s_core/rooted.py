@@ -22,6 +22,7 @@ sorting the edges).
 
 from __future__ import annotations
 
+import itertools
 from collections.abc import Mapping
 
 import networkx as nx
@@ -66,8 +67,9 @@ def root_forest(forest: nx.Graph, scores: Mapping[int, float], centre: np.ndarra
     """
     rank = root_ranks(forest, scores, centre)
     nodes = sorted(forest)
-    n, index = len(nodes), {node: i for i, node in enumerate(nodes)}
-    lo, hi = np.sort(np.array([(index[u], index[v]) for u, v in forest.edges], dtype=np.int64).reshape(-1, 2), axis=1).T
+    n, ends = len(nodes), np.fromiter(itertools.chain.from_iterable(forest.edges), dtype=np.int64).reshape(-1, 2)
+    # rows of the (integer, g2s_core.model) ids by one binary search, not a dict look-up per edge end
+    lo, hi = np.sort(np.searchsorted(np.array(nodes, dtype=np.int64), ends), axis=1).T
     # the forest as an (n+1, n+1) CSR matrix (columns ascending in each row) with a lone virtual node n
     matrix = sp.csr_array((np.ones(2 * len(lo)), (np.r_[lo, hi], np.r_[hi, lo])), shape=(n + 1, n + 1))
     count, label = csgraph.connected_components(matrix, directed=False)
@@ -83,15 +85,16 @@ def root_forest(forest: nx.Graph, scores: Mapping[int, float], centre: np.ndarra
     for node in order.tolist():
         depth[node] = depth[parents[node]] + 1
     rooted = nx.DiGraph(roots=[nodes[i] for i in best.tolist()])
-    visited = order.tolist()
+    # networkx's own dicts: a view object per node and edge looked up cost more than copying them
+    node_data, adjacency, root_of, visited = dict(forest.nodes(data=True)), dict(forest.adjacency()), best[label].tolist(), order.tolist()
     add_nodes_with_data(rooted, (nodes[i] for i in visited),
-                        ({**forest.nodes[nodes[i]], "depth": depth[i], "root": nodes[best[label[i]]]} for i in visited))
+                        ({**node_data[nodes[i]], "depth": depth[i], "root": nodes[root_of[i]]} for i in visited))
     child = order[parent[order] != n]
-    rooted.add_edges_from((nodes[p], nodes[c], forest.edges[nodes[p], nodes[c]]) for p, c in zip(parent[child].tolist(), child.tolist()))
+    rooted.add_edges_from((nodes[p], nodes[c], adjacency[nodes[p]][nodes[c]]) for p, c in zip(parent[child].tolist(), child.tolist()))
     key, tree_key = lo * n + hi, np.minimum(parent[child], child) * n + np.maximum(parent[child], child)
     for u, v in (divmod(k, n) for k in np.sort(key[~np.isin(key, tree_key)]).tolist()):  # the loop edges
         first, second = (u, v) if depth[u] <= depth[v] else (v, u)
-        rooted.add_edge(nodes[first], nodes[second], **forest.edges[nodes[u], nodes[v]], loop=True)
+        rooted.add_edge(nodes[first], nodes[second], **adjacency[nodes[u]][nodes[v]], loop=True)
     return rooted
 
 
