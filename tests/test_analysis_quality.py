@@ -204,6 +204,25 @@ def test_flow_analyzer_mean_and_sum_by_hand():
     assert total == pytest.approx({1: 14 / 25, 4: 6 / 25})
     mean = flow_analyzer.g2s_analyze(structure, flow_analyzer.Params(), context)
     assert mean == pytest.approx({1: 14 / 3 / 25, 4: 3 / 25})
+    # flows 0, 6, 8, 6, 0 rank 1.5, 3.5, 5, 3.5, 1.5 of 5: percentiles 100 (rank - 0.5) / 5 = 20, 60, 90, 60, 20
+    ranked = flow_analyzer.g2s_analyze(structure, flow_analyzer.Params(aggregate="percentile"), context)
+    assert ranked == pytest.approx({1: (20 + 60 + 90) / 3, 4: (60 + 20) / 2})
+
+
+def test_percentile_keeps_one_busy_polygon_from_lifting_its_node():
+    # a corridor 0 - ... - 5; node 1 stands for 0, 1, 2 (one busy polygon), node 4 for 3, 4, 5 (all fairly busy)
+    graph = nx.path_graph(6)
+    for node in graph:
+        graph.nodes[node].update(pos=(float(node), 0.0, 0.0), area=1.0)
+    for u, v in graph.edges:
+        graph.edges[u, v]["weight"] = 1.0
+    flow = np.array([0.0, 0.0, 100.0, 10.0, 11.0, 12.0])
+    mean = traffic.gather(graph, [1, 4], flow, mean=True)
+    assert mean[1] > mean[4]  # 33.3 against 11
+    # ranks 1.5, 1.5, 6, 3, 4, 5 of 6
+    assert traffic.percentile(flow) == pytest.approx(100 * (np.array([1.5, 1.5, 6, 3, 4, 5]) - 0.5) / 6)
+    ranked = traffic.gather(graph, [1, 4], traffic.percentile(flow), mean=True)
+    assert ranked[4] > ranked[1]
 
 
 def test_area_weighted_betweenness_with_a_loop_matches_brute_force():
