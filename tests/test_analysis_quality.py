@@ -59,6 +59,16 @@ def ring(nodes: int = 24, length: float = 1.0) -> nx.Graph:
     return graph
 
 
+def corridor(nodes: int) -> nx.Graph:
+    """A straight corridor 0 - 1 - ... of 1 m² polygons 1 m apart."""
+    graph = nx.path_graph(nodes)
+    for node in graph:
+        graph.nodes[node].update(pos=(float(node), 0.0, 0.0), area=1.0)
+    for u, v in graph.edges:
+        graph.edges[u, v]["weight"] = 1.0
+    return graph
+
+
 def test_ring_corridor_keeps_its_loop_with_stretch_and_loses_it_with_inf():
     graph = ring()
     tree = graph.copy()
@@ -191,12 +201,8 @@ def test_big_room_beside_a_many_polygon_corridor_swaps_rank_with_area_weighting(
 
 
 def test_flow_analyzer_mean_and_sum_by_hand():
-    # a corridor 0 - 1 - 2 - 3 - 4 of 1 m² polygons; structure nodes 1 (cell 0, 1, 2) and 4 (cell 3, 4)
-    graph = nx.path_graph(5)
-    for node in graph:
-        graph.nodes[node].update(pos=(float(node), 0.0, 0.0), area=1.0)
-    for u, v in graph.edges:
-        graph.edges[u, v]["weight"] = 1.0
+    # structure nodes 1 (cell 0, 1, 2) and 4 (cell 3, 4)
+    graph = corridor(5)
     structure = nx.Graph([(1, 4)])
     context = RunContext(mesh=None, agent=None, centre=np.zeros(3), graph=graph)
     # ordered pairs through node i: 2 i (4 - i), i.e. 0, 6, 8, 6, 0; all pair weight 5² = 25
@@ -210,12 +216,8 @@ def test_flow_analyzer_mean_and_sum_by_hand():
 
 
 def test_percentile_keeps_one_busy_polygon_from_lifting_its_node():
-    # a corridor 0 - ... - 5; node 1 stands for 0, 1, 2 (one busy polygon), node 4 for 3, 4, 5 (all fairly busy)
-    graph = nx.path_graph(6)
-    for node in graph:
-        graph.nodes[node].update(pos=(float(node), 0.0, 0.0), area=1.0)
-    for u, v in graph.edges:
-        graph.edges[u, v]["weight"] = 1.0
+    # node 1 stands for 0, 1, 2 (one busy polygon), node 4 for 3, 4, 5 (all fairly busy)
+    graph = corridor(6)
     flow = np.array([0.0, 0.0, 100.0, 10.0, 11.0, 12.0])
     mean = traffic.gather(graph, [1, 4], flow, mean=True)
     assert mean[1] > mean[4]  # 33.3 against 11
