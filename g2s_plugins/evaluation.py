@@ -23,15 +23,15 @@ The measures (all along the initial walkable graph, distances in metres):
     ``flow`` analyzer, which agrees with the reference partly by
     construction).
 ``rho_ceiling``
-    the same when each final-structure node carries the mean reference flow
-    of the initial-graph nodes it stands for (the same nearest-node
-    mapping): what the structure's node placement allows, whatever the
-    analyzer. The mean fits each node's polygons best in squares, not in
-    ranks, so an analyzer can beat it slightly on tiny graphs (by 0.012 on
-    a 25-node sample level), not by more on the levels measured. The
-    ``flow`` analyzer with ``aggregate: mean`` computes these values (from
-    its own source sample on big graphs): its rho is this figure by
-    construction.
+    the same when each final-structure node carries the mean percentile
+    rank of the reference flow over the initial-graph nodes it stands for
+    (the same nearest-node mapping): what the structure's node placement
+    allows, whatever the analyzer. The mean rank fits each node's polygons
+    best in squares of ranks, which is close to but not exactly the best
+    order for a rank correlation, so an analyzer can beat it slightly on
+    tiny graphs. The ``flow`` analyzer with ``aggregate: percentile``
+    computes these values (from its own source sample on big graphs): its
+    rho is this figure by construction.
 ``structure_share``
     final structure nodes / initial graph nodes.
 
@@ -151,7 +151,8 @@ def evaluate(
         rho=rho,
         rho_area_betweenness=_spearman(heat_map(result, betweenness, nearest), reference),
         rho_ceiling=_spearman(
-            heat_map(result, traffic.gather(result.graph, result.structure, reference, mean=True), nearest), reference
+            heat_map(result, traffic.gather(result.graph, result.structure, traffic.percentile(reference), mean=True),
+                     nearest), reference
         ),
         structure_share=result.structure.number_of_nodes() / arrays.n,
         polygons=arrays.n,

@@ -59,6 +59,16 @@ def ring(nodes: int = 24, length: float = 1.0) -> nx.Graph:
     return graph
 
 
+def corridor(nodes: int) -> nx.Graph:
+    """A straight corridor 0 - 1 - ... of 1 m² polygons 1 m apart."""
+    graph = nx.path_graph(nodes)
+    for node in graph:
+        graph.nodes[node].update(pos=(float(node), 0.0, 0.0), area=1.0)
+    for u, v in graph.edges:
+        graph.edges[u, v]["weight"] = 1.0
+    return graph
+
+
 def test_ring_corridor_keeps_its_loop_with_stretch_and_loses_it_with_inf():
     graph = ring()
     tree = graph.copy()
@@ -191,12 +201,8 @@ def test_big_room_beside_a_many_polygon_corridor_swaps_rank_with_area_weighting(
 
 
 def test_flow_analyzer_mean_and_sum_by_hand():
-    # a corridor 0 - 1 - 2 - 3 - 4 of 1 m² polygons; structure nodes 1 (cell 0, 1, 2) and 4 (cell 3, 4)
-    graph = nx.path_graph(5)
-    for node in graph:
-        graph.nodes[node].update(pos=(float(node), 0.0, 0.0), area=1.0)
-    for u, v in graph.edges:
-        graph.edges[u, v]["weight"] = 1.0
+    # structure nodes 1 (cell 0, 1, 2) and 4 (cell 3, 4)
+    graph = corridor(5)
     structure = nx.Graph([(1, 4)])
     context = RunContext(mesh=None, agent=None, centre=np.zeros(3), graph=graph)
     # ordered pairs through node i: 2 i (4 - i), i.e. 0, 6, 8, 6, 0; all pair weight 5² = 25
@@ -204,6 +210,21 @@ def test_flow_analyzer_mean_and_sum_by_hand():
     assert total == pytest.approx({1: 14 / 25, 4: 6 / 25})
     mean = flow_analyzer.g2s_analyze(structure, flow_analyzer.Params(), context)
     assert mean == pytest.approx({1: 14 / 3 / 25, 4: 3 / 25})
+    # flows 0, 6, 8, 6, 0 rank 1.5, 3.5, 5, 3.5, 1.5 of 5: percentiles 100 (rank - 0.5) / 5 = 20, 60, 90, 60, 20
+    ranked = flow_analyzer.g2s_analyze(structure, flow_analyzer.Params(aggregate="percentile"), context)
+    assert ranked == pytest.approx({1: (20 + 60 + 90) / 3, 4: (60 + 20) / 2})
+
+
+def test_percentile_keeps_one_busy_polygon_from_lifting_its_node():
+    # node 1 stands for 0, 1, 2 (one busy polygon), node 4 for 3, 4, 5 (all fairly busy)
+    graph = corridor(6)
+    flow = np.array([0.0, 0.0, 100.0, 10.0, 11.0, 12.0])
+    mean = traffic.gather(graph, [1, 4], flow, mean=True)
+    assert mean[1] > mean[4]  # 33.3 against 11
+    # ranks 1.5, 1.5, 6, 3, 4, 5 of 6
+    assert traffic.percentile(flow) == pytest.approx(100 * (np.array([1.5, 1.5, 6, 3, 4, 5]) - 0.5) / 6)
+    ranked = traffic.gather(graph, [1, 4], traffic.percentile(flow), mean=True)
+    assert ranked[4] > ranked[1]
 
 
 def test_area_weighted_betweenness_with_a_loop_matches_brute_force():
