@@ -5,8 +5,8 @@ out (Recast and the sampler walk only on faces whose normal points up, so an
 inside-out floor slab offers its underside, under its own top) still gives a
 graph, but of the wrong surface or of a sliver of the level, and the run
 looks like a success. Both graph builders (navmesh and sampling) call
-:func:`check_walkable_surface` on their graph, and end their "no walkable
-surface" error with :func:`no_walkable_surface_hint`.
+:func:`check_walkable_surface` on their graph, and raise
+:func:`no_walkable_surface` when they find nothing walkable.
 
 The rule, from ``benchmarks/frame_check.py`` (table and justification in
 docs/errors.md): a run is *suspicious* when its walkable area is less than
@@ -28,6 +28,8 @@ import networkx as nx
 import numpy as np
 import trimesh
 
+from g2s_core.config import AgentConfig
+from g2s_core.errors import G2SError
 from g2s_core.mesh import flip_inside_out_bodies
 from g2s_core.model import RunContext
 
@@ -117,9 +119,14 @@ def likely_causes(mesh: trimesh.Trimesh, max_slope: float, winding: bool = True)
     return causes
 
 
-def no_walkable_surface_hint(mesh: trimesh.Trimesh, max_slope: float) -> str:
-    """The end of a "no walkable surface" error: the likely causes, else what to check."""
-    return "; ".join(likely_causes(mesh, max_slope)) or GENERAL_HINT
+def no_walkable_surface(mesh: trimesh.Trimesh, agent: AgentConfig, reason: str) -> G2SError:
+    """The error of a graph builder that found nowhere ``agent`` can stand on ``mesh``: the agent,
+    the builder's ``reason``, then the likely causes (else what to check)."""
+    return G2SError(
+        f"no walkable surface for the agent (radius {agent.radius} m, height {agent.height} m, "
+        f"max climb {agent.max_climb} m, max slope {agent.max_slope} deg): {reason}; "
+        f"{'; '.join(likely_causes(mesh, agent.max_slope)) or GENERAL_HINT}"
+    )
 
 
 def check_walkable_surface(graph: nx.Graph, mesh: trimesh.Trimesh, context: RunContext) -> None:

@@ -40,7 +40,7 @@ from g2s_core.model import add_nodes_with_data
 from g2s_core.plugin import hookimpl
 from g2s_plugins._surface import MAX_SURFACE_GAP
 from g2s_plugins.recast import NavMesh, RecastParams, SettingsError, build_navmesh
-from g2s_plugins.walkable_check import check_walkable_surface, no_walkable_surface_hint
+from g2s_plugins.walkable_check import check_walkable_surface, no_walkable_surface
 
 NAME = "navmesh"
 
@@ -174,12 +174,7 @@ def g2s_build_graph(mesh, params, context):
             raise G2SError(
                 f"graph.params: {exc}; try another cell_size or tile_size (see docs/navmesh.md)"
             ) from exc
-        agent = context.agent
-        raise G2SError(
-            f"no walkable surface for the agent (radius {agent.radius} m, height {agent.height} m, "
-            f"max climb {agent.max_climb} m, max slope {agent.max_slope} deg): {exc}; "
-            f"{no_walkable_surface_hint(mesh, agent.max_slope)}"
-        ) from exc
+        raise no_walkable_surface(mesh, context.agent, str(exc)) from exc
     context.navmesh = navmesh
     graph = navmesh_graph(navmesh, context.agent, params.max_edge_gap)
     check_walkable_surface(graph, mesh, context)

@@ -65,7 +65,7 @@ from g2s_plugins._raycasting import (
     head_room,
     walk_segments,
 )
-from g2s_plugins.walkable_check import check_walkable_surface, no_walkable_surface_hint
+from g2s_plugins.walkable_check import check_walkable_surface, no_walkable_surface
 
 NAME = "sampling"
 
@@ -386,12 +386,7 @@ def g2s_build_graph(mesh, params, context):
     """
     params = params if params is not None else Params()
     graph = build_sampled_graph(mesh, params, AgentShape.from_config(context.agent))
-    agent = context.agent
     if graph.number_of_nodes() == 0:
-        raise G2SError(
-            f"no walkable surface for the agent (radius {agent.radius} m, height {agent.height} m, "
-            f"max climb {agent.max_climb} m, max slope {agent.max_slope} deg): no sample where it fits; "
-            f"{no_walkable_surface_hint(mesh, agent.max_slope)}"
-        )
+        raise no_walkable_surface(mesh, context.agent, "no sample where it fits")
     check_walkable_surface(graph, mesh, context)
     return graph
