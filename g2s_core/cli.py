@@ -170,8 +170,8 @@ def _run(args: argparse.Namespace, errors: Console, mesh_name: str | None = None
     mesh = api.open_mesh(args.mesh, config, name=mesh_name, registry=registry)
     quiet = args.quiet or args.json
     if mesh.cleaning and not quiet:
-        removed = ", ".join(f"{count} {what.replace('_', ' ')}" for what, count in mesh.cleaning.items())
-        errors.print(f"cleaning removed {removed}", markup=False, highlight=False, soft_wrap=True)
+        counts = ", ".join(f"{count} {what.replace('_', ' ')}" for what, count in mesh.cleaning.items())
+        errors.print(f"cleaning: {counts}", markup=False, highlight=False, soft_wrap=True)
     with _progress(errors, quiet) as say:
         result = api.execute(plan, registry, mesh, progress=say, config_files=config_files)
         written = api.write_result(result, args.outdir, formats, force=args.force, progress=say, registry=registry)

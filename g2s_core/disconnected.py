@@ -60,8 +60,7 @@ def likely_cause(step: float, gap: float, agent: Any) -> str:
             f"about {gap:.1f} m across, or a wall between them")
 
 
-def disconnected_warning(graph: nx.Graph, areas: Mapping[Any, Sequence[int]], terminal_count: int,
-                         agent: Any) -> str:
+def disconnected_warning(graph: nx.Graph, areas: Mapping[Any, Sequence[int]], terminal_count: int, agent: Any) -> str:
     """The warning for terminals spread over the connected ``areas`` (area id -> its nodes) of ``graph``.
 
     ``agent`` has ``radius``, ``height``, ``max_climb`` and ``max_slope`` (metres, degrees); without
@@ -71,8 +70,7 @@ def disconnected_warning(graph: nx.Graph, areas: Mapping[Any, Sequence[int]], te
         sizes = sorted((len(nodes) for nodes in areas.values()), reverse=True)
         return (f"{terminal_count} terminals lie in {len(sizes)} disconnected areas, so they are joined by one tree "
                 f"per area (the largest have {', '.join(map(str, sizes[:LISTED_AREAS]))} nodes).")
-    summaries = sorted((area_summary(graph, nodes) + (nodes,) for nodes in areas.values()),
-                       key=lambda s: -s[0])
+    summaries = sorted((area_summary(graph, nodes) + (nodes,) for nodes in areas.values()), key=lambda s: -s[0])
     listed = "; ".join(f"{size:.0f} m² near ({_xyz(where)})" for size, where, _ in summaries[:LISTED_AREAS])
     rest = summaries[LISTED_AREAS:]
     more = f"; {len(rest)} more with {sum(s[0] for s in rest):.0f} m² in all" if rest else ""

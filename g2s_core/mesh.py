@@ -151,8 +151,7 @@ def prepare_mesh(loaded: object, config: MeshConfig, source: str) -> trimesh.Tri
     """Check that ``loaded`` is a usable triangle mesh, then apply the up axis and scale."""
     if not isinstance(loaded, trimesh.Trimesh):
         raise MeshError(f"{source}: expected a triangle mesh, got {type(loaded).__name__} (no faces)")
-    vertices = np.asarray(loaded.vertices, dtype=np.float64)
-    faces = np.asarray(loaded.faces)
+    vertices, faces = np.asarray(loaded.vertices, dtype=np.float64), np.asarray(loaded.faces)
     if len(faces) == 0 or len(vertices) == 0:
         raise MeshError(f"{source}: the mesh is empty (no triangles)")
     if faces.ndim != 2 or faces.shape[1] != 3:
@@ -175,27 +174,44 @@ def prepare_and_clean(loaded: object, config: MeshConfig, source: str) -> tuple[
 
 
 def clean_mesh(mesh: trimesh.Trimesh) -> tuple[trimesh.Trimesh, dict[str, int]]:
-    """Merge close vertices and drop duplicate and zero-area faces with pymeshlab.
+    """Merge close vertices and drop duplicate and zero-area faces with pymeshlab, then
+    turn closed bodies wound inside out the right way (:func:`flip_inside_out_bodies`).
 
     Returns:
-        The cleaned mesh and the count of what each filter removed.
+        The cleaned mesh and the count of what each step removed or flipped
+        (``merged_vertices``, ``duplicate_faces``, ``zero_area_faces``, ``flipped_bodies``).
     """
     import pymeshlab  # imported here: it takes a second to load and most runs do not clean
 
     meshset = pymeshlab.MeshSet()
     meshset.add_mesh(pymeshlab.Mesh(vertex_matrix=mesh.vertices, face_matrix=mesh.faces.astype(np.int32)))
-    removed: dict[str, int] = {}
-    before = meshset.current_mesh().vertex_number()
-    meshset.meshing_merge_close_vertices()
-    removed["merged_vertices"] = before - meshset.current_mesh().vertex_number()
-    before = meshset.current_mesh().face_number()
-    meshset.meshing_remove_duplicate_faces()
-    removed["duplicate_faces"] = before - meshset.current_mesh().face_number()
-    before = meshset.current_mesh().face_number()
-    meshset.meshing_remove_null_faces()
-    removed["zero_area_faces"] = before - meshset.current_mesh().face_number()
+
+    def removed_by(filter_name: str, count: str) -> int:
+        before = getattr(meshset.current_mesh(), count)()
+        meshset.apply_filter(filter_name)
+        return before - getattr(meshset.current_mesh(), count)()
+
+    removed = {"merged_vertices": removed_by("meshing_merge_close_vertices", "vertex_number"),
+               "duplicate_faces": removed_by("meshing_remove_duplicate_faces", "face_number"),
+               "zero_area_faces": removed_by("meshing_remove_null_faces", "face_number")}
     cleaned = meshset.current_mesh()
     result = trimesh.Trimesh(vertices=cleaned.vertex_matrix(), faces=cleaned.face_matrix(), process=True)
     if len(result.faces) == 0:
         raise MeshError("cleaning removed every triangle of the mesh")
+    result, removed["flipped_bodies"] = flip_inside_out_bodies(result)
     return result, removed
+
+
+def flip_inside_out_bodies(mesh: trimesh.Trimesh) -> tuple[trimesh.Trimesh, int]:
+    """A copy of ``mesh`` whose closed bodies of negative signed volume are wound the other way, and their number.
+
+    Recast and the sampler walk only on faces whose normal points up, so an
+    inside-out floor offers its underside. trimesh's ``fix_inversion`` finds
+    the bodies (connected by shared edges: coincident vertices must be merged)
+    and flips those that are closed, consistently wound and of negative
+    volume; open ones are left alone, as their inside is not defined.
+    """
+    fixed = mesh.copy()
+    trimesh.repair.fix_inversion(fixed, multibody=True)
+    flipped = np.flatnonzero(np.any(fixed.faces != mesh.faces, axis=1))
+    return fixed, len(trimesh.graph.connected_components(mesh.face_adjacency, nodes=flipped))  # bodies of flipped faces

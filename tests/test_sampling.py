@@ -16,6 +16,7 @@ from scipy.spatial import cKDTree
 from g2s_core import pipeline
 from g2s_plugins.samples import levels as samples
 from g2s_core.config import AgentConfig, load_config, load_raw_config, parse_config
+from g2s_core.errors import G2SError
 from g2s_core.mesh import mesh_sha256
 from g2s_core.model import RunContext
 from g2s_core.registry import Registry
@@ -260,13 +261,15 @@ def test_walk_segments_batch():
     assert caster.backend in ("embree", "python")
 
 
-def test_empty_when_nothing_is_walkable():
+def test_nothing_walkable_is_reported_not_an_empty_graph():
     wall_only = box((-0.1, 0.0, -5.0), (0.1, 3.0, 5.0))
     upside_down = trimesh.Trimesh(vertices=[[0, 0, 0], [1, 0, 0], [0, 0, 1]], faces=[[0, 1, 2]], process=False)
     assert upside_down.face_normals[0][1] < 0
-    assert build(upside_down).number_of_nodes() == 0
     # A 0.2 m wide wall top is eroded away entirely.
-    assert build(wall_only).number_of_nodes() == 0
+    for mesh in (upside_down, wall_only):
+        assert sampling.build_sampled_graph(mesh, sampling.Params(), AgentShape.from_config(AGENT)).number_of_nodes() == 0
+        with pytest.raises(G2SError, match="no walkable surface for the agent"):
+            build(mesh)
 
 
 # --- the two routes through the whole pipeline -------------------------------------------

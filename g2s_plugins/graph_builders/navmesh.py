@@ -40,6 +40,7 @@ from g2s_core.model import add_nodes_with_data
 from g2s_core.plugin import hookimpl
 from g2s_plugins._surface import MAX_SURFACE_GAP
 from g2s_plugins.recast import NavMesh, RecastParams, SettingsError, build_navmesh
+from g2s_plugins.walkable_check import check_walkable_surface, no_walkable_surface
 
 NAME = "navmesh"
 
@@ -173,25 +174,8 @@ def g2s_build_graph(mesh, params, context):
             raise G2SError(
                 f"graph.params: {exc}; try another cell_size or tile_size (see docs/navmesh.md)"
             ) from exc
-        agent = context.agent
-        raise G2SError(
-            f"no walkable surface for the agent (radius {agent.radius} m, height {agent.height} m, "
-            f"max climb {agent.max_climb} m, max slope {agent.max_slope} deg): {exc}; "
-            f"{_up_axis_hint(mesh, agent.max_slope)}"
-        ) from exc
+        raise no_walkable_surface(mesh, context.agent, str(exc)) from exc
     context.navmesh = navmesh
-    return navmesh_graph(navmesh, context.agent, params.max_edge_gap)
-
-
-def _up_axis_hint(mesh, max_slope: float) -> str:
-    """What to check when nothing is walkable: the up axis when the faces that
-    could be floors face along z rather than y, else the agent and the scale."""
-    normals = np.asarray(mesh.face_normals)
-    areas = np.asarray(mesh.area_faces)
-    level = np.cos(np.radians(max_slope))
-    along_y = areas[np.abs(normals[:, 1]) >= level].sum()
-    along_z = areas[np.abs(normals[:, 2]) >= level].sum()
-    if along_z > along_y:
-        return ("most flat faces face along z, not y: if the file is Z-up, set `mesh: {up_axis: z}` "
-                "(or `y` if it is already z)")
-    return "check the agent settings and the mesh's up_axis and scale"
+    graph = navmesh_graph(navmesh, context.agent, params.max_edge_gap)
+    check_walkable_surface(graph, mesh, context)
+    return graph

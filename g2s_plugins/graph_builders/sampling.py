@@ -65,6 +65,7 @@ from g2s_plugins._raycasting import (
     head_room,
     walk_segments,
 )
+from g2s_plugins.walkable_check import check_walkable_surface, no_walkable_surface
 
 NAME = "sampling"
 
@@ -377,6 +378,15 @@ def build_sampled_graph(
 
 @hookimpl
 def g2s_build_graph(mesh, params, context):
-    """Sample the walkable surface of ``mesh`` for ``context.agent`` and join the samples the agent can walk between."""
+    """Sample the walkable surface of ``mesh`` for ``context.agent`` and join the samples the agent can walk between.
+
+    Raises:
+        G2SError: no place on the mesh where this agent fits (a property of the
+            input and the settings, not a failure of the program).
+    """
     params = params if params is not None else Params()
-    return build_sampled_graph(mesh, params, AgentShape.from_config(context.agent))
+    graph = build_sampled_graph(mesh, params, AgentShape.from_config(context.agent))
+    if graph.number_of_nodes() == 0:
+        raise no_walkable_surface(mesh, context.agent, "no sample where it fits")
+    check_walkable_surface(graph, mesh, context)
+    return graph

@@ -1,0 +1,143 @@
+"""Does the walkable surface a graph builder found fit the level, or was the mesh misread?
+
+A level read in the wrong frame (a Z-up file taken as Y-up) or wound inside
+out (Recast and the sampler walk only on faces whose normal points up, so an
+inside-out floor slab offers its underside, under its own top) still gives a
+graph, but of the wrong surface or of a sliver of the level, and the run
+looks like a success. Both graph builders (navmesh and sampling) call
+:func:`check_walkable_surface` on their graph, and raise
+:func:`no_walkable_surface` when they find nothing walkable.
+
+The rule, from ``benchmarks/frame_check.py`` (table and justification in
+docs/errors.md): a run is *suspicious* when its walkable area is less than
+:data:`MIN_WALKABLE_SHARE` of the level's footprint, or when the level is
+more than :data:`MAX_HEIGHT_RATIO` times as tall as its shorter horizontal
+side. A suspicious run is warned about only when a cause is found
+(:func:`likely_causes`): the level looks Z-up (:func:`looks_z_up`), or, for
+a small share, closed bodies are wound inside out. No correct level measured
+is suspicious, so on them the check costs a sum over the nodes; the
+inside-out count (20 to 110 µs a face) runs only on the suspicious path and
+on the error.
+"""
+
+from __future__ import annotations
+
+import math
+
+import networkx as nx
+import numpy as np
+import trimesh
+
+from g2s_core.config import AgentConfig
+from g2s_core.errors import G2SError
+from g2s_core.mesh import flip_inside_out_bodies
+from g2s_core.model import RunContext
+
+MIN_WALKABLE_SHARE = 0.1
+"""Walkable area over the footprint below which a run is suspicious: every correct level measured has
+0.12 or more, the misread and inside-out ones it should catch 0.08 or less (docs/errors.md)."""
+
+MAX_HEIGHT_RATIO = 2.0
+"""Height over the shorter horizontal side above which a level is suspicious: the correct levels measured
+reach 1.5, a level standing on its side 2.1 to 140 (docs/errors.md)."""
+
+Z_UP_FLAT_AREA_RATIO = 3.0
+"""Flat area along z over that along y above which a level looks Z-up whatever its shape: the correct
+levels measured reach 2.2 (corridors: walls along z, no ceiling), the Z-up ones 1.0 to 24 (docs/errors.md)."""
+
+
+def footprint_area(mesh: trimesh.Trimesh) -> float:
+    """Area of the mesh's axis-aligned bounding box seen from above (x by z), m²."""
+    low, high = np.asarray(mesh.bounds)
+    return float((high[0] - low[0]) * (high[2] - low[2]))
+
+
+def walkable_share(graph: nx.Graph, mesh: trimesh.Trimesh) -> float:
+    """The area the graph's nodes stand for (their ``area``, m²) over the :func:`footprint_area`."""
+    footprint = footprint_area(mesh)
+    walkable = math.fsum(area for _, area in graph.nodes(data="area", default=0.0))
+    return walkable / footprint if footprint > 0 else math.inf
+
+
+def height_ratio(mesh: trimesh.Trimesh) -> float:
+    """The mesh's height (y extent) over its shorter horizontal (x, z) extent."""
+    extent = np.ptp(np.asarray(mesh.bounds), axis=0)
+    shorter = min(extent[0], extent[2])
+    return float(extent[1] / shorter) if shorter > 0 else math.inf
+
+
+def flat_area_ratio(mesh: trimesh.Trimesh, max_slope: float) -> float:
+    """Area of the faces within ``max_slope`` degrees of ±z over that of the faces within it of ±y.
+
+    Read in its own frame a level's flat faces are floors and ceilings (±y);
+    a Z-up level read as Y-up has them facing along z.
+    """
+    normals = np.abs(np.asarray(mesh.face_normals))
+    areas = np.asarray(mesh.area_faces)
+    flat = math.cos(math.radians(max_slope))
+    along_y = areas[normals[:, 1] >= flat].sum()
+    return float(areas[normals[:, 2] >= flat].sum() / along_y) if along_y > 0 else math.inf
+
+
+def looks_z_up(mesh: trimesh.Trimesh, max_slope: float) -> bool:
+    """Whether ``mesh`` looks like a Z-up level read as Y-up.
+
+    That is: more than :data:`Z_UP_FLAT_AREA_RATIO` times as much flat area
+    along z as along y, or more at all on a level taller than
+    :data:`MAX_HEIGHT_RATIO` times its shorter horizontal side.
+    """
+    ratio = flat_area_ratio(mesh, max_slope)
+    return ratio > Z_UP_FLAT_AREA_RATIO or (ratio > 1 and height_ratio(mesh) > MAX_HEIGHT_RATIO)
+
+
+def inside_out_bodies(mesh: trimesh.Trimesh) -> int:
+    """How many closed bodies of ``mesh`` are wound inside out (negative signed volume).
+
+    Coincident vertices are merged first (on a copy), so that a body written
+    with split vertices (an OBJ's per-face normals) is still one closed body.
+    """
+    merged = trimesh.Trimesh(np.asarray(mesh.vertices), np.asarray(mesh.faces), process=True)
+    return flip_inside_out_bodies(merged)[1]
+
+
+GENERAL_HINT = "check the agent settings, the mesh's up_axis and scale, and that its floors' faces face up (their winding)"
+
+UP_AXIS_HINT = ("most flat faces face along z, not y: if the file is Z-up, set `mesh: {up_axis: z}` "
+                "(or `y` if it is already z)")
+
+
+def likely_causes(mesh: trimesh.Trimesh, max_slope: float, winding: bool = True) -> list[str]:
+    """What most likely made the walkable surface wrong, each naming the key to change.
+
+    ``winding``: also look for closed bodies wound inside out (the costly check).
+    """
+    causes = [UP_AXIS_HINT] if looks_z_up(mesh, max_slope) else []
+    bodies = inside_out_bodies(mesh) if winding else 0
+    if bodies:
+        causes.append(f"{bodies} closed bod{'y is' if bodies == 1 else 'ies are'} wound inside out "
+                      "(walkable faces must face up): set `mesh: {clean: true}` to flip them")
+    return causes
+
+
+def no_walkable_surface(mesh: trimesh.Trimesh, agent: AgentConfig, reason: str) -> G2SError:
+    """The error of a graph builder that found nowhere ``agent`` can stand on ``mesh``: the agent,
+    the builder's ``reason``, then the likely causes (else what to check)."""
+    return G2SError(
+        f"no walkable surface for the agent (radius {agent.radius} m, height {agent.height} m, "
+        f"max climb {agent.max_climb} m, max slope {agent.max_slope} deg): {reason}; "
+        f"{'; '.join(likely_causes(mesh, agent.max_slope)) or GENERAL_HINT}"
+    )
+
+
+def check_walkable_surface(graph: nx.Graph, mesh: trimesh.Trimesh, context: RunContext) -> None:
+    """Warn through ``context`` (one line) when ``graph``'s walkable surface looks like a misread mesh (module doc)."""
+    share = walkable_share(graph, mesh)
+    small, tall = share < MIN_WALKABLE_SHARE, height_ratio(mesh) > MAX_HEIGHT_RATIO
+    if not (small or tall):
+        return
+    causes = likely_causes(mesh, context.agent.max_slope, winding=small)
+    if not causes:
+        return
+    what = (f"only {100 * share:.1f} % of the level's footprint is walkable" if small else
+            f"the level is {height_ratio(mesh):.1f} times as tall as it is wide")
+    context.warn(f"mesh: {what}; {'; '.join(causes)}")
