@@ -36,7 +36,7 @@ import trimesh
 import g2s_core
 from g2s_core.config import resolve_config
 from g2s_core.errors import G2SError
-from g2s_core.mesh import _Z_UP_TO_Y_UP
+from g2s_core.mesh import Z_UP_TO_Y_UP
 from g2s_plugins.samples.levels import SAMPLES, load_sample
 from g2s_plugins.samples.pieces import PIECES
 from g2s_plugins.walkable_check import footprint_area, height_ratio, inside_out_bodies
@@ -58,7 +58,7 @@ def levels() -> list[tuple[str, trimesh.Trimesh, bool]]:
 
 def z_up_misread(mesh: trimesh.Trimesh) -> trimesh.Trimesh:
     """The level as a Z-up file holds it (the inverse of ``mesh.up_axis: z``), taken as Y-up."""
-    return trimesh.Trimesh(np.asarray(mesh.vertices) @ _Z_UP_TO_Y_UP, mesh.faces, process=False)
+    return trimesh.Trimesh(np.asarray(mesh.vertices) @ Z_UP_TO_Y_UP, mesh.faces, process=False)
 
 
 def inverted(mesh: trimesh.Trimesh) -> trimesh.Trimesh:

@@ -105,7 +105,7 @@ class GivenTerminals:
         rows = np.asarray(params.rows, dtype=np.int64)
         waypoints = np.zeros(0, dtype=np.int64)
         if params.cover:
-            cover = coverage._cover(arrays.adjacency, rows, np.ones(arrays.n, dtype=bool), coverage.default_radius(context))
+            cover = coverage.cover_paths(arrays.adjacency, rows, np.ones(arrays.n, dtype=bool), coverage.default_radius(context))
             waypoints = np.setdiff1d(cover, rows)
         return Terminals(nodes=tuple(sorted(arrays.nodes[row] for row in np.union1d(rows, waypoints).tolist())),
                          waypoints=tuple(sorted(arrays.nodes[row] for row in waypoints.tolist())))

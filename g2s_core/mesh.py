@@ -23,7 +23,7 @@ SUPPORTED_SUFFIXES = (".obj", ".glb", ".gltf", ".ply", ".stl", ".off")
 SAMPLE_PREFIX = "sample:"
 """A mesh argument ``sample:NAME?param=value&...`` asks the level generator NAME for a level."""
 
-_Z_UP_TO_Y_UP = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, -1.0, 0.0]])
+Z_UP_TO_Y_UP = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, -1.0, 0.0]])
 """Rotation taking a Z-up right-handed frame to a Y-up right-handed one: (x, y, z) -> (x, z, -y)."""
 
 
@@ -159,7 +159,7 @@ def prepare_mesh(loaded: object, config: MeshConfig, source: str) -> trimesh.Tri
     if not np.isfinite(vertices).all():
         raise MeshError(f"{source}: the mesh has NaN or infinite vertex coordinates")
     if config.up_axis == "z":
-        vertices = vertices @ _Z_UP_TO_Y_UP.T
+        vertices = vertices @ Z_UP_TO_Y_UP.T
     with np.errstate(over="ignore"):
         vertices = vertices * config.scale
     if not np.isfinite(vertices).all():

@@ -12,7 +12,7 @@ import trimesh
 
 import g2s_core
 from g2s_core.errors import G2SError
-from g2s_core.mesh import _Z_UP_TO_Y_UP, clean_mesh
+from g2s_core.mesh import Z_UP_TO_Y_UP, clean_mesh
 from g2s_plugins.samples.levels import SAMPLES, load_sample
 from g2s_plugins.samples.pieces import PIECES
 from g2s_plugins.walkable_check import height_ratio, inside_out_bodies, looks_z_up, walkable_share
@@ -22,7 +22,7 @@ BUILDERS = ["navmesh", "sampling"]
 
 def as_z_up_file(mesh: trimesh.Trimesh) -> trimesh.Trimesh:
     """The level as a Z-up file holds it: read with the default ``mesh.up_axis: y``, it stands on its side."""
-    return trimesh.Trimesh(np.asarray(mesh.vertices) @ _Z_UP_TO_Y_UP, mesh.faces, process=False)
+    return trimesh.Trimesh(np.asarray(mesh.vertices) @ Z_UP_TO_Y_UP, mesh.faces, process=False)
 
 
 def inverted(mesh: trimesh.Trimesh) -> trimesh.Trimesh:

@@ -89,7 +89,7 @@ def g2s_select_terminals(graph: nx.Graph, params: Params, context: RunContext) -
         )
     leaves = np.flatnonzero(degree == 1)
     seeds = np.concatenate([leaves, _seeds(adjacency, labels, count, leaves, small)])
-    cover = _cover(adjacency, seeds, ~small[labels], radius)
+    cover = cover_paths(adjacency, seeds, ~small[labels], radius)
     waypoints = np.setdiff1d(cover, leaves)
     rows = np.union1d(leaves, waypoints)
     return Terminals(
@@ -114,7 +114,7 @@ def _seeds(adjacency, labels: np.ndarray, count: int, leaves: np.ndarray, small:
     return np.asarray(seeds, dtype=np.int64)
 
 
-def _cover(adjacency, seeds: np.ndarray, eligible: np.ndarray, radius: float) -> np.ndarray:
+def cover_paths(adjacency, seeds: np.ndarray, eligible: np.ndarray, radius: float) -> np.ndarray:
     """The seeds plus, farthest node first, shortest paths to the growing set until all is within ``radius``.
 
     After each path the distances are lowered by a Dijkstra from the path
