@@ -78,6 +78,9 @@ def main() -> None:
             cpu = time.process_time()
             result = pipeline.run(plan, registry, mesh, name, mesh_sha256(mesh))
             cpu = time.process_time() - cpu
+            if "traffic" not in result.metrics:  # the run stopped before the evaluation (e.g. no terminals)
+                print(f"{name:<18} {preset:<28} stopped after {result.stages[-1].stage}: {'; '.join(result.warnings)}")
+                continue
             q = result.metrics["traffic"]
             seconds = {s.stage: s.seconds for s in result.stages}
             evaluating = seconds.pop("evaluation")
