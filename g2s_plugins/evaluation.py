@@ -82,10 +82,7 @@ class Quality:
 
 def reference_flow(result: RunResult, max_sources: int = REFERENCE_SOURCES, seed: int = 0) -> np.ndarray:
     """(n,) area-weighted OD flow through each initial-graph node, in graph node order."""
-    arrays = traffic.surface_arrays(result.graph)
-    weight = arrays.area if arrays.area.sum() > 0 else np.ones(arrays.n)
-    flow, _ = traffic.od_flow(arrays.adjacency, weight, max_sources=max_sources, seed=seed)
-    return flow
+    return traffic.walking_flow(result.graph, max_sources=max_sources, seed=seed)
 
 
 def nearest_structure_rows(result: RunResult) -> np.ndarray:
@@ -130,7 +127,7 @@ def evaluate(
     arrays = traffic.surface_arrays(result.graph)
     if reference is None:
         reference = reference_flow(result)
-    area = arrays.area if arrays.area.sum() > 0 else np.ones(arrays.n)
+    area = traffic.origin_weight(arrays)
     if result.structure is None:  # no terminals: nothing was joined
         return Quality({r: 0.0 for r in radii}, 1.0, float("nan"), float("nan"), float("nan"), 0.0, arrays.n, 0,
                        {s.stage: s.seconds for s in result.stages})

@@ -3,6 +3,9 @@ structure node stands for, and area-weighted origin-destination flow.
 
 Shared by the ``coverage`` terminal selector, the ``flow`` and ``area``
 analyzers, area-weighted betweenness and :mod:`g2s_plugins.evaluation`.
+The walking flow of an initial graph is computed once per graph and
+sample (:func:`walking_flow`): a traffic-aware ``coverage`` and the
+``flow`` analyzer of the same run share it.
 Every computation is a sparse-graph search over the whole graph at once:
 :func:`scipy.sparse.csgraph.dijkstra`, except the hundreds of shortest-path
 trees of the flow and the sums up them (:func:`shortest_path_flow`), which
@@ -41,6 +44,7 @@ from __future__ import annotations
 
 import math
 import os
+import weakref
 from collections.abc import Hashable, Iterable
 
 import networkx as nx
@@ -53,12 +57,16 @@ from g2s_plugins import _trees
 from g2s_plugins.surface_arrays import SurfaceArrays, surface_arrays
 
 __all__ = [
-    "SurfaceArrays", "distance_to", "flow_error_bound", "gather", "od_flow", "represented_area", "shortest_path_flow",
-    "surface_arrays",
+    "WALKING_SOURCES", "SurfaceArrays", "distance_to", "flow_error_bound", "gather", "od_flow", "origin_weight", "percentile",
+    "represented_area", "shortest_path_flow", "surface_arrays", "walking_flow",
 ]
 
 BLOCK_ENTRIES = 1 << 22
 """Tree entries computed at once by :func:`od_flow` (32 MB of float64)."""
+
+WALKING_SOURCES = 256
+"""Sources of the walking flow that the ``flow`` analyzer and a traffic-aware ``coverage`` compute by default
+(one computation per run when both use it: :func:`walking_flow`)."""
 
 THREADS = min(2, os.cpu_count() or 1)
 """Threads of :func:`shortest_path_flow` (each runs whole sources; the values do not depend on it)."""
@@ -213,3 +221,35 @@ def od_flow(
         _, through = shortest_path_flow(adjacency, batch, weight)
         flow += factor[lo:lo + block] @ through
     return flow, sampled
+
+
+def origin_weight(arrays: SurfaceArrays) -> np.ndarray:
+    """(n,) the weight walkers are drawn by: each node's area, m², or 1 per node when no node has an area."""
+    return arrays.area if arrays.area.sum() > 0 else np.ones(arrays.n)
+
+
+_FLOWS: weakref.WeakKeyDictionary[nx.Graph, tuple[SurfaceArrays, dict[tuple[int | None, int], np.ndarray]]] = (
+    weakref.WeakKeyDictionary()
+)
+
+
+def walking_flow(graph: nx.Graph, max_sources: int | None = None, seed: int = 0) -> np.ndarray:
+    """(n,) :func:`od_flow` of ``graph`` by :func:`origin_weight`, in :func:`surface_arrays` order; read-only.
+
+    Cached per graph object and ``(max_sources, seed)`` for as long as its
+    :func:`surface_arrays` are (the graph's size unchanged): the selector and
+    the analyzer of one run that ask for the same flow get the same array,
+    computed once. It is read-only so that no caller can change another's
+    values; divide into a new array (``flow / total``).
+    """
+    arrays = surface_arrays(graph)
+    cached = _FLOWS.get(graph)
+    if cached is None or cached[0] is not arrays:
+        cached = _FLOWS[graph] = (arrays, {})
+    flows = cached[1]
+    key = (max_sources, seed)
+    if key not in flows:
+        flow, _ = od_flow(arrays.adjacency, origin_weight(arrays), max_sources=max_sources, seed=seed)
+        flow.flags.writeable = False
+        flows[key] = flow
+    return flows[key]

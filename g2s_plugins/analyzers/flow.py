@@ -31,7 +31,6 @@ from collections.abc import Mapping
 from typing import Literal
 
 import networkx as nx
-import numpy as np
 from pydantic import Field
 
 from g2s_core.model import RunContext
@@ -44,7 +43,7 @@ NAME = "flow"
 class Params(PluginParams):
     """Exactness against speed, and how the polygons' flow becomes a node's value."""
 
-    max_sources: int = Field(256, ge=1, description="graphs with more nodes than this sample this many area-weighted sources")
+    max_sources: int = Field(traffic.WALKING_SOURCES, ge=1, description="graphs with more nodes than this sample this many area-weighted sources")
     seed: int = Field(0, description="seed of the source sample")
     aggregate: Literal["mean", "sum", "percentile"] = Field(
         "mean", description="a structure node's value: mean (a density) or sum of the through-flow of the polygons it "
@@ -55,10 +54,8 @@ class Params(PluginParams):
 @hookimpl
 def g2s_analyze(structure: nx.Graph, params: Params, context: RunContext) -> Mapping[int, float]:
     """Through-flow of the initial graph, averaged, summed or ranked per structure node."""
-    arrays = traffic.surface_arrays(context.graph)
-    weight = arrays.area if arrays.area.sum() > 0 else np.ones(arrays.n)
-    flow, _ = traffic.od_flow(arrays.adjacency, weight, max_sources=params.max_sources, seed=params.seed)
+    flow = traffic.walking_flow(context.graph, max_sources=params.max_sources, seed=params.seed)
     if params.aggregate == "percentile":
         return traffic.gather(context.graph, structure, traffic.percentile(flow), mean=True)
-    flow /= max(weight.sum() ** 2, 1e-300)
-    return traffic.gather(context.graph, structure, flow, mean=params.aggregate == "mean")
+    total = traffic.origin_weight(traffic.surface_arrays(context.graph)).sum()
+    return traffic.gather(context.graph, structure, flow / max(total**2, 1e-300), mean=params.aggregate == "mean")
