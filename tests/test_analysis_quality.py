@@ -15,6 +15,7 @@ from scipy.sparse import csgraph
 
 from g2s_core import pipeline
 from g2s_core.config import PRESETS_DIR, load_raw_config, parse_config
+from g2s_core.errors import ConfigError
 from g2s_plugins.loops.spanner import add_loops
 from g2s_core.mesh import load_mesh, mesh_sha256
 from g2s_core.model import RunContext
@@ -27,6 +28,7 @@ from g2s_plugins.analyzers import flow as flow_analyzer
 from g2s_plugins.outputs import gltf, heatmap, html_report
 from g2s_plugins.outputs.structure_json import structure_document
 from g2s_plugins.samples import levels as samples
+from g2s_plugins.terminals import coverage
 
 NAV_TEST = "../shared/data/nav_test.obj"
 
@@ -175,6 +177,101 @@ def test_dead_end_room_with_a_central_pillar_is_covered(registry):
     distance, _ = traffic.distance_to(arrays, arrays.rows(result.steiner))
     assert result.structure.number_of_nodes() >= 2
     assert distance.max() <= radius + 1e-9
+
+
+def spine_and_side_room() -> nx.Graph:
+    """A busy spine 0 - 1 - 2 - 3 (leaves 0 and 3) and a quiet side room off 2: a triangle 4, 5, 6 (no leaf).
+
+    Edges 1 m, but 4 - 6 1.2 m (so that 6 alone is the farthest node); every node 1 m².
+    """
+    graph = nx.Graph()
+    graph.add_weighted_edges_from([(0, 1, 1.0), (1, 2, 1.0), (2, 3, 1.0), (2, 4, 1.0), (4, 5, 1.0), (5, 6, 1.0),
+                                   (4, 6, 1.2)])
+    for node in graph:
+        graph.nodes[node]["area"] = 1.0
+    return graph
+
+
+def select_cover(graph: nx.Graph, **params) -> tuple[tuple, tuple]:
+    context = RunContext(mesh=None, agent=None, centre=np.zeros(3), graph=graph)
+    terminals = coverage.g2s_select_terminals(graph, coverage.Params(min_area=0.0, **params), context)
+    assert not context.warnings
+    return terminals.nodes, terminals.waypoints
+
+
+def test_traffic_weight_zero_is_the_plain_cover():
+    # plain distances from the leaves 0 and 3: 1 m to 1 and 2, 2 m to 4, 3 m to 5, 3.2 m to 6
+    graph = spine_and_side_room()
+    assert select_cover(graph, radius=4.0) == ((0, 3), ())
+    assert select_cover(graph, radius=3.0) == ((0, 2, 3, 4, 6), (2, 4, 6))  # 6 and its path 6 - 4 - 2
+    for radius in (4.0, 3.0, 0.5):
+        assert select_cover(graph, radius=radius, traffic_weight=0.0, traffic_radius=1.0) == select_cover(
+            graph, radius=radius)
+
+
+def test_traffic_aware_cover_adds_a_waypoint_where_traffic_steps_down():
+    graph = spine_and_side_room()
+    # through-flow (ordered pairs, ends excluded): 1 parts {0} | 5 others: 10; 2 parts {0, 1} | {3} | {4, 5, 6}:
+    # 2 (2 + 6 + 3) = 22; 4 parts {5, 6} | 4 others: 16 (5 - 6 is direct); 0, 3, 5, 6: 0. Ranks 2.5 (the four
+    # zeros), 5, 7, 6: percentiles 100 (rank - 0.5) / 7
+    flow = traffic.walking_flow(graph, max_sources=traffic.WALKING_SOURCES)
+    assert flow.tolist() == [0, 10, 22, 0, 16, 0, 0]
+    # weight 0.07 m per point: 1 m per rank step, so length + |rank difference|
+    lengths = coverage.traffic_lengths(graph, 0.07)
+    expected = {(0, 1): 3.5, (1, 2): 3.0, (2, 3): 5.5, (2, 4): 2.0, (4, 5): 4.5, (5, 6): 1.0, (4, 6): 4.7}
+    assert {edge: lengths[edge] for edge in expected} == pytest.approx(expected)
+    # weighted distances from 0 and 3: 1 3.5, 2 5.5, 4 7.5, 5 12, 6 12.2; radius 6: 6 is farthest, its path
+    # 6 - 4 - 2 joins; then 5 is 1 away, 1 3 away. The plain pass (4 m) adds nothing: the plain cover alone has
+    # no waypoint, the traffic-aware one marks the quiet room's far corner and the step into the room
+    assert select_cover(graph, radius=4.0) == ((0, 3), ())
+    assert select_cover(graph, radius=4.0, traffic_weight=0.07, traffic_radius=6.0) == ((0, 2, 3, 4, 6), (2, 4, 6))
+    # the plain pass still guarantees its radius: at 0.5 m it adds 1 and 5, each 1 m from that cover
+    nodes, _ = select_cover(graph, radius=0.5, traffic_weight=0.07, traffic_radius=6.0)
+    assert nodes == tuple(range(7))
+
+
+def test_selector_and_flow_analyzer_share_one_flow_and_leave_it_intact(monkeypatch):
+    def level() -> nx.Graph:  # 300 nodes: the flow is sampled
+        graph = nx.convert_node_labels_to_integers(nx.grid_2d_graph(20, 15))
+        for node in graph:
+            graph.nodes[node]["area"] = 1.0 + node % 7
+        for u, v in graph.edges:
+            graph.edges[u, v]["weight"] = 1.0 + (u * v) % 5 / 10
+        return graph
+
+    structure = nx.path_graph(range(0, 300, 25))
+    alone = level()
+    context = RunContext(mesh=None, agent=None, centre=np.zeros(3), graph=alone)
+    before = {aggregate: flow_analyzer.g2s_analyze(structure, flow_analyzer.Params(aggregate=aggregate), context)
+              for aggregate in ("mean", "sum", "percentile")}
+    original, calls = traffic.od_flow, []
+
+    def counted(*args, **kwargs):
+        calls.append(1)
+        return original(*args, **kwargs)
+
+    monkeypatch.setattr(traffic, "od_flow", counted)
+    graph = level()
+    context = RunContext(mesh=None, agent=None, centre=np.zeros(3), graph=graph)
+    coverage.g2s_select_terminals(graph, coverage.Params(radius=3.0, traffic_weight=0.1), context)
+    after = {aggregate: flow_analyzer.g2s_analyze(structure, flow_analyzer.Params(aggregate=aggregate), context)
+             for aggregate in ("mean", "sum", "percentile")}
+    assert after == before
+    assert len(calls) == 1  # computed by the selector, reused three times by the analyzer
+    shared = traffic.walking_flow(graph, max_sources=traffic.WALKING_SOURCES)
+    assert not shared.flags.writeable
+    # another seed is another flow; a graph that changed size gets a new one
+    assert traffic.walking_flow(graph, max_sources=traffic.WALKING_SOURCES, seed=1) is not shared
+    graph.add_edge(0, 299, weight=1.0)
+    assert traffic.walking_flow(graph, max_sources=traffic.WALKING_SOURCES) is not shared
+
+
+def test_coverage_traffic_parameters_are_validated(registry):
+    for params, key in (({"traffic_weight": -0.1}, "terminals.params.traffic_weight"),
+                        ({"traffic_weight": 0.1, "traffic_radius": 0}, "terminals.params.traffic_radius")):
+        raw = preset("map_analysis", terminals={"plugin": "coverage", "params": params})
+        with pytest.raises(ConfigError, match=f"{key}: expected a number"):
+            pipeline.plan(parse_config(raw), registry)
 
 
 def test_big_room_beside_a_many_polygon_corridor_swaps_rank_with_area_weighting():

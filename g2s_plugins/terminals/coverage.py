@@ -31,8 +31,35 @@ of the area within 6 m; the best agreement of a heat map on the structure
 with walking flow (the ceiling) falls with the radius: 0.90, 0.84, 0.81.
 Default ``min_area``: the area of a disc of ``radius``.
 
+Traffic-aware cover (``traffic_weight`` > 0). A cover by walking distance
+alone places its nodes without regard to where traffic changes, and the
+heat map gives every polygon the value of its nearest structure node: a
+quiet side room within ``radius`` of a busy path takes the path's value
+(on the 1k-polygon dungeons, the polygons off the Steiner paths carry 58 %
+of the heat map's rank error, docs/analysis_quality.md "Where the losses
+are"). So the cover first runs on lengths that also count the change of
+traffic along each edge::
+
+    length(u, v) + traffic_weight * |p(u) - p(v)|
+
+with p the percentile rank, 0-100, of each node's walking flow
+(:func:`g2s_plugins.traffic.walking_flow` with the ``flow`` analyzer's
+defaults, 256 area-sampled sources, seed 0: the same array that analyzer
+computes, so a run with both computes it once) and ``traffic_weight`` in
+metres per percentile point; its radius is ``traffic_radius``. Where
+traffic steps from busy to quiet, distances grow and the cover puts a node
+on the quiet side. Then the plain cover above runs from that set, so every
+node still lies within ``radius`` metres of it along the graph.
+``traffic_weight: 0`` (the default) is the plain cover alone, unchanged.
+Default ``traffic_radius``: 5/3 of ``radius`` (10 m for 6 m): the weighted
+lengths are longer than the walking ones, and a radius as small as the
+plain cover's adds nodes everywhere traffic changes at all. Measured in
+docs/analysis_quality.md ("Traffic-aware cover"), MEASURED.
+
 Complexity: O(m + n log n) for step 1 plus, per added path, a Dijkstra over
-the nodes that path brings closer (in practice the area around it).
+the nodes that path brings closer (in practice the area around it); with
+``traffic_weight`` > 0, that twice, plus the walking flow, O(k (m + n log n))
+for k = 256 sources, unless the run's ``flow`` analyzer already needs it.
 """
 
 from __future__ import annotations
@@ -42,6 +69,7 @@ import math
 
 import networkx as nx
 import numpy as np
+import scipy.sparse as sp
 from pydantic import Field
 from scipy.sparse import csgraph
 
@@ -57,12 +85,17 @@ AGENT_RADII = 12.0
 EXTENT_SHARE = 0.1
 """Default cover radius at most this share of the level's horizontal extent."""
 
+TRAFFIC_RADIUS_SHARE = 10.0 / 6.0
+"""Default ``traffic_radius`` as a multiple of ``radius``."""
+
 
 class Params(PluginParams):
-    """Cover radius and the smallest area that is forced in."""
+    """Cover radius, the smallest area that is forced in, and the traffic-aware cover before the plain one."""
 
     radius: float | None = Field(None, gt=0, description="every walkable node within this many metres (along the graph) of a terminal; default 12 agent radii, at most 1/10 of the level's extent")
     min_area: float | None = Field(None, ge=0, description="walkable areas smaller than this (m²) are reported, not covered; default pi radius²")
+    traffic_weight: float = Field(0.0, ge=0, description="metres added to each edge per percentile point of walking-flow difference between its ends, for a first cover that puts nodes where traffic changes; 0: the plain cover only")
+    traffic_radius: float | None = Field(None, gt=0, description="radius of that traffic-aware cover, in metres of those lengths; default 5/3 radius (10 m for 6 m)")
 
 
 def default_radius(context: RunContext) -> float:
@@ -89,13 +122,31 @@ def g2s_select_terminals(graph: nx.Graph, params: Params, context: RunContext) -
         )
     leaves = np.flatnonzero(degree == 1)
     seeds = np.concatenate([leaves, _seeds(adjacency, labels, count, leaves, small)])
-    cover = cover_paths(adjacency, seeds, ~small[labels], radius)
+    eligible = ~small[labels]
+    if params.traffic_weight > 0:
+        traffic_radius = params.traffic_radius if params.traffic_radius is not None else TRAFFIC_RADIUS_SHARE * radius
+        seeds = cover_paths(traffic_lengths(graph, params.traffic_weight), seeds, eligible, traffic_radius)
+    cover = cover_paths(adjacency, seeds, eligible, radius)
     waypoints = np.setdiff1d(cover, leaves)
     rows = np.union1d(leaves, waypoints)
     return Terminals(
         nodes=tuple(sorted(arrays.nodes[i] for i in rows.tolist())),
         waypoints=tuple(sorted(arrays.nodes[i] for i in waypoints.tolist())),
     )
+
+
+def traffic_lengths(graph: nx.Graph, weight: float) -> sp.csr_array:
+    """(n, n) edge lengths plus ``weight`` x the difference of the walking-flow percentiles of each edge's ends.
+
+    Rows as in :func:`g2s_plugins.traffic.surface_arrays`; ``weight`` in
+    metres per percentile point (0-100). O(m) after the flow.
+    """
+    arrays = traffic.surface_arrays(graph)
+    rank = traffic.percentile(traffic.walking_flow(graph, max_sources=traffic.WALKING_SOURCES))
+    adjacency = arrays.adjacency
+    rows = np.repeat(np.arange(arrays.n), np.diff(adjacency.indptr))
+    lengths = adjacency.data + weight * np.abs(rank[rows] - rank[adjacency.indices])
+    return sp.csr_array((lengths, adjacency.indices, adjacency.indptr), shape=adjacency.shape)
 
 
 def _seeds(adjacency, labels: np.ndarray, count: int, leaves: np.ndarray, small: np.ndarray) -> np.ndarray:
