@@ -54,7 +54,13 @@ node still lies within ``radius`` metres of it along the graph.
 Default ``traffic_radius``: 5/3 of ``radius`` (10 m for 6 m): the weighted
 lengths are longer than the walking ones, and a radius as small as the
 plain cover's adds nodes everywhere traffic changes at all. Measured in
-docs/analysis_quality.md ("Traffic-aware cover"), MEASURED.
+docs/analysis_quality.md ("Traffic-aware cover") on the 1k-polygon
+dungeons (seeds 0 / 1 / 2): weight 0.1 m per point, traffic radius 10 m
+and radius 6 m raise the heat map's rho from 0.881 / 0.877 / 0.871 to
+0.931 / 0.918 / 0.908 with a structure of 53.9 / 47.3 / 47.3 % of the
+polygons instead of 48.4 / 44.8 / 41.1 %; the plain cover needs a 4.5 m
+radius for 0.920 / 0.900 / 0.907 with 55.8 / 49.9 / 49.4 %. nav_test:
+0.956 -> 0.953, 55.3 -> 54.7 %.
 
 Complexity: O(m + n log n) for step 1 plus, per added path, a Dijkstra over
 the nodes that path brings closer (in practice the area around it); with
