@@ -199,13 +199,18 @@ def _resolve_extends(name: Any, base_dir: Path, source: Path) -> Path:
 
 
 def _deep_merge(base: dict[str, Any], override: dict[str, Any]) -> dict[str, Any]:
-    """``override`` on top of ``base``: mappings merge key by key, anything else replaces."""
+    """``override`` on top of ``base``: mappings merge key by key, anything else replaces.
+
+    A stage section that names another ``plugin`` replaces the section it
+    overrides, parameters and all: parameters belong to their plugin, so a
+    config that extends a preset and picks another terminal selector does
+    not inherit the preset's selector parameters.
+    """
     merged = dict(base)
     for key, value in override.items():
-        if isinstance(value, dict) and isinstance(merged.get(key), dict):
-            merged[key] = _deep_merge(merged[key], value)
-        else:
-            merged[key] = value
+        current = merged.get(key)
+        same = isinstance(current, dict) and isinstance(value, dict) and value.get("plugin", current.get("plugin")) == current.get("plugin")
+        merged[key] = _deep_merge(current, value) if same else value
     return merged
 
 

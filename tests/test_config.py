@@ -51,6 +51,24 @@ def test_extends_merges_mappings_and_replaces_lists(tmp_path):
     assert [a.plugin for a in config.analyzers] == ["betweenness"]
 
 
+def test_a_section_naming_another_plugin_does_not_inherit_its_parameters(tmp_path):
+    write(tmp_path, "parent.yaml", """
+        terminals: {plugin: coverage, params: {traffic_weight: 0.1, radius: 5.0}}
+        simplify: {plugin: surface_los, params: {max_surface_gap: null}}
+    """)
+    child = write(tmp_path, "child.yaml", """
+        extends: parent.yaml
+        terminals: {plugin: metric, params: {top_k: 3}}
+        simplify: {params: {whole_chain_normals: false}}
+    """)
+    config = load_config(child)
+    assert (config.terminals.plugin, config.terminals.params) == ("metric", {"top_k": 3})
+    # the same plugin, named or not, merges key by key
+    assert config.simplify.params == {"max_surface_gap": None, "whole_chain_normals": False}
+    same = write(tmp_path, "same.yaml", "extends: parent.yaml\nterminals: {plugin: coverage, params: {radius: 4.0}}\n")
+    assert load_config(same).terminals.params == {"traffic_weight": 0.1, "radius": 4.0}
+
+
 def test_extends_finds_presets_by_name(tmp_path):
     config = load_config(write(tmp_path, "c.yaml", "extends: map_analysis\nagent: {radius: 0.6}\n"))
     assert config.terminals.plugin == "coverage" and config.agent.radius == 0.6
