@@ -117,10 +117,7 @@ def structure_document(result: RunResult) -> dict[str, Any]:
         "nodes": nodes,
         "edges": edges,
         "trees": trees,
-        "terminals": None if result.terminals is None else {
-            "node_ids": terminal_ids(result),
-            "openings": [_opening(o) for o in result.terminals.openings],
-        },
+        "terminals": None if result.terminals is None else _terminals(result),
         "graphs": {
             "graph": _size(result.graph),
             "steiner": _with_edges(result.steiner),
@@ -171,6 +168,18 @@ def _node_record(graph: nx.Graph, node: int, terminals: set[int], analysis: dict
         "values": {key: number(analysis[key][node]) for key in keys if node in analysis[key]},
         "extra": _extra(attrs, _NODE_KEYS),
     }
+
+
+def _terminals(result: RunResult) -> dict[str, Any]:
+    """Step 2's result: the terminals, the openings and, only when there are any, the waypoints (so that the
+    file of a run without waypoints is the same as before they were recorded)."""
+    terminals: dict[str, Any] = {
+        "node_ids": terminal_ids(result),
+        "openings": [_opening(o) for o in result.terminals.openings],
+    }
+    if result.terminals.waypoints:
+        terminals["waypoint_ids"] = [int(w) for w in result.terminals.waypoints]
+    return terminals
 
 
 def _opening(opening: Opening) -> dict[str, Any]:
