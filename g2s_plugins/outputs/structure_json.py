@@ -9,6 +9,9 @@ the warnings. Its layout is described by ``structure.schema.json`` beside this m
 (``schema_version`` 3: version 1 plus ``features``, the records
 analyzers such as ``chokepoints`` and ``regions`` return (version 2), plus
 ``metrics``, the evaluators' measures (version 3); older files are still read).
+``terminals.waypoint_ids``, the selector's waypoints, came later without a new
+version: it is written only when there are waypoints, so the file of a run
+without them did not change (docs/outputs.md).
 
 Determinism rule: the same mesh and config give a byte-identical
 ``structure.json``. Keys are sorted, lists are in a fixed order (nodes and
