@@ -108,7 +108,8 @@ def execute(
     """Run a planned config on a mesh; terminal flags and analysis values go on the graphs' nodes.
 
     Every node of ``result.graph``, ``steiner``, ``forest`` and ``structure``
-    gets ``terminal`` (bool); every node of ``result.structure`` gets
+    gets ``terminal`` (bool; false for the selector's waypoints, see
+    ``Terminals.without_waypoints``); every node of ``result.structure`` gets
     ``values``, a dict of analysis key -> value (also in ``result.analysis``).
     ``result.inputs`` lists the files the run read (:func:`input_files`;
     ``config_files``: the config files ``plan.config`` came from).
@@ -116,7 +117,7 @@ def execute(
     result = pipeline.run(plan, registry, source.mesh, source.name, source.sha256, progress=progress)
     result.mesh_path = source.path
     result.inputs = input_files(plan.config, config_files, source.path)
-    terminals = set() if result.terminals is None else set(result.terminals.nodes)
+    terminals = set() if result.terminals is None else set(result.terminals.without_waypoints)
     for graph in (result.graph, result.steiner, result.forest, result.structure):
         if graph is not None:
             for node, attrs in graph.nodes(data=True):

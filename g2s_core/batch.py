@@ -153,7 +153,7 @@ def result_row(result: RunResult) -> dict[str, Any]:
             row[f"nodes_{stage.key}"] = None if stats is None else stats.nodes
             row[f"edges_{stage.key}"] = None if stats is None else stats.edges
     terminals = result.terminals
-    row["terminals"] = None if terminals is None else len(terminals.nodes)
+    row["terminals"] = None if terminals is None else len(terminals.without_waypoints)
     row["openings"] = None if terminals is None else len(terminals.openings)
     structure = result.structure
     row["roots"] = None if structure is None else len(structure.graph["roots"])

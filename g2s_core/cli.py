@@ -296,7 +296,7 @@ def _summary(result: RunResult, outdir: Path, formats: Sequence[str], written: S
             "nodes": None if graph is None else graph.number_of_nodes(),
             "edges": None if graph is None else graph.number_of_edges(),
             "roots": roots_of(graph),
-            "terminals": None if result.terminals is None else len(result.terminals.nodes),
+            "terminals": None if result.terminals is None else len(result.terminals.without_waypoints),
             "analysis": list(result.analysis),
         },
         "metrics": result.metrics,

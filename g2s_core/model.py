@@ -154,12 +154,19 @@ class Terminals:
         openings: the entry/exit openings the terminals stand for, if any.
         waypoints: those of ``nodes`` that only pull the structure into an
             area (e.g. coverage): the Steiner tree joins them, but unlike the
-            other terminals simplification may remove them.
+            other terminals simplification may remove them, and they are not
+            terminals of the result (no ``terminal`` flag, no marker).
     """
 
     nodes: tuple[int, ...]
     openings: tuple[Opening, ...] = ()
     waypoints: tuple[int, ...] = ()
+
+    @property
+    def without_waypoints(self) -> tuple[int, ...]:
+        """The terminals of the result: ``nodes`` minus ``waypoints``, in the selector's order."""
+        waypoints = set(self.waypoints)
+        return tuple(node for node in self.nodes if node not in waypoints)
 
 
 @dataclass(frozen=True)

@@ -154,7 +154,7 @@ def _terminals_step(step: Step) -> bool | None:
     terminals = step.call(graph=graph)
     step.record.update(terminals=len(terminals.nodes))
     result.terminals = terminals
-    for node in set(terminals.nodes).difference(terminals.waypoints):
+    for node in terminals.without_waypoints:
         graph.nodes[node]["terminal"] = True
     if not terminals.nodes:
         result.context.warn(

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import networkx as nx
 import pytest
 
 import g2s_core
@@ -54,6 +55,23 @@ def test_run_write_and_load_keep_the_command_line_guarantees(tmp_path):
     for node, data in loaded.structure.nodes(data=True):
         assert data["terminal"] == result.structure.nodes[node]["terminal"]
         assert data["values"] == pytest.approx(result.structure.nodes[node]["values"])
+
+
+def test_waypoints_are_plain_nodes_in_the_run_and_in_its_files(tmp_path):
+    """The coverage selector's waypoints are no terminals of the run, and its files say the same."""
+    result = g2s_core.run("sample:dungeon?rooms=6&seed=0", "map_analysis")
+    terminals = result.terminals
+    assert set(terminals.waypoints) & set(result.structure)  # some waypoints stay in the structure
+    flags = dict(result.structure.nodes(data="terminal"))
+    assert {n for n, flag in flags.items() if flag} == set(terminals.without_waypoints) & set(result.structure)
+    result.write(tmp_path / "out", formats=["json", "graphml"])
+    loaded = g2s_core.load_result(tmp_path / "out")
+    assert dict(loaded.structure.nodes(data="terminal")) == flags
+    assert loaded.terminals.without_waypoints == terminals.without_waypoints
+    assert loaded.terminals.waypoints == terminals.waypoints
+    assert sorted(loaded.terminals.nodes) == sorted(terminals.nodes)
+    graphml = nx.read_graphml(tmp_path / "out" / "structure.graphml", node_type=int)
+    assert dict(graphml.nodes(data="terminal")) == flags
 
 
 def test_the_same_run_from_python_and_from_the_command_line_writes_the_same_structure(tmp_path):

@@ -19,7 +19,7 @@ def test_core_never_imports_a_plugin():
             assert not any(n.startswith("g2s_plugins") for n in names), f"{path.name} imports {names}"
 
 
-CORE_CODE_BUDGET = 2361
+CORE_CODE_BUDGET = 2365
 """Lines of code g2s_core may hold (docs/architecture.md records the count): the core stays minimal."""
 
 

@@ -16,7 +16,7 @@ import trimesh
 
 from g2s_plugins.outputs import colours, gltf
 from tests.conftest import PROJECT
-from tests.test_outputs import make_result, real_navmesh, two_floor_mesh
+from tests.test_outputs import TERMINALS, WAYPOINTS, make_result, real_navmesh, two_floor_mesh
 
 _COMPONENTS = {5121: np.uint8, 5123: np.uint16, 5125: np.uint32, 5126: np.float32}
 _WIDTH = {"SCALAR": 1, "VEC2": 2, "VEC3": 3, "VEC4": 4}
@@ -131,6 +131,15 @@ def test_root_and_terminal_markers_leave_the_value_spheres_visible(tmp_path):
     ring = scene.geometry[scene.graph[f"terminal_{terminal}"][1]]
     inner = np.hypot(ring.vertices[:, 0], ring.vertices[:, 2]).min()
     assert inner > np.hypot(sphere.vertices[:, 0], sphere.vertices[:, 2]).max()  # the sphere shows through the ring
+
+
+def test_waypoints_get_no_ring(tmp_path):
+    result = make_result(waypoints=WAYPOINTS)
+    header, _ = read_glb(gltf.write(result, tmp_path)[0])
+    assert sorted(_children(header, "terminals")) == sorted(f"terminal_{t}" for t in TERMINALS)
+    scene = trimesh.load(tmp_path / "structure.glb")
+    kept = [w for w in WAYPOINTS if w in result.structure]
+    assert kept and all(_node_extras(scene, f"node_{w}")["terminal"] is False for w in kept)
 
 
 def test_without_analysis_edges_show_the_tree_depth(tmp_path):

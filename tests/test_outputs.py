@@ -60,8 +60,9 @@ def _timed(stages: list[StageStats], stage: str, make, counts):
     return value
 
 
-def make_result(navmesh=None, analysis: bool = True) -> RunResult:
-    """A complete run on :func:`two_floor_mesh`: grid graph, corner terminals, Steiner tree, rooted, simplified."""
+def make_result(navmesh=None, analysis: bool = True, waypoints: tuple[int, ...] = ()) -> RunResult:
+    """A complete run on :func:`two_floor_mesh`: grid graph, corner terminals (and ``waypoints``, which the
+    Steiner tree joins but which are not terminals), Steiner tree, rooted, simplified."""
     mesh = two_floor_mesh()
     stages: list[StageStats] = []
     config = load_config(PROJECT / "configs" / "map_analysis.yaml").model_dump(mode="json")
@@ -86,9 +87,9 @@ def make_result(navmesh=None, analysis: bool = True) -> RunResult:
     graph = _timed(stages, "graph", build_graph, counts=lambda g: dict(nodes=len(g), edges=g.number_of_edges()))
     context.graph = graph
     opening = Opening((0.0, 0.0, 3.0), (-1.0, 0.0, 0.0), 2.0, (0.0, 0.0, 2.0), (0.0, 0.0, 4.0))
-    terminals = _timed(stages, "terminals", lambda: Terminals((0, 2, 12, 20, 15), (opening,)),
+    terminals = _timed(stages, "terminals", lambda: Terminals((0, 2, 12, 20, 15, *waypoints), (opening,), waypoints),
                        counts=lambda t: dict(terminals=len(t.nodes)))
-    for t in terminals.nodes:
+    for t in terminals.without_waypoints:
         graph.nodes[t]["terminal"] = True
 
     def solve(sub: nx.Graph, terms: list[int]) -> nx.Graph:
@@ -383,6 +384,71 @@ def test_heatmap_marks_terminals_and_openings_and_explains_dashed_edges(result):
     assert vermilion.sum() > 200  # the squares and the opening's bar are drawn
 
 
+# --- waypoints: nodes the Steiner tree joins that are not terminals -------------------------
+
+WAYPOINTS = (4, 7, 10)
+"""The waypoints of the hand-made run with waypoints: simplification drops 4 and 7 and keeps 10."""
+TERMINALS = [0, 2, 12, 20, 15]
+"""Its terminals, in the selector's order (those of :func:`make_result`)."""
+
+
+@pytest.fixture(scope="module")
+def waypoint_result() -> RunResult:
+    return make_result(waypoints=WAYPOINTS)
+
+
+def test_structure_json_and_graphml_record_waypoints_apart_from_the_terminals(waypoint_result, result, tmp_path):
+    run = waypoint_result
+    assert [w for w in WAYPOINTS if w in run.structure] == [10]  # simplification may drop waypoints
+    assert common.terminal_ids(run) == TERMINALS
+    document = structure_json.structure_document(run)
+    _validate(document, "structure.schema.json")
+    assert document["terminals"]["node_ids"] == TERMINALS and document["terminals"]["waypoint_ids"] == [4, 7, 10]
+    assert {r["id"] for r in document["nodes"] if r["terminal"]} == set(TERMINALS) & set(run.structure)
+    assert "waypoint_ids" not in structure_json.structure_document(result)["terminals"]  # only when there are any
+    graphml.write(run, tmp_path)
+    for name in ("structure.graphml", "graph.graphml"):
+        flags = nx.get_node_attributes(nx.read_graphml(tmp_path / name, node_type=int), "terminal")
+        assert {n for n, flag in flags.items() if flag} == set(TERMINALS) & set(flags), name
+
+
+def test_load_result_gives_back_the_terminals_and_the_waypoints(waypoint_result, tmp_path):
+    run = waypoint_result
+    structure_json.write(run, tmp_path)
+    loaded = load_result(tmp_path)
+    assert loaded.terminals.nodes == (*TERMINALS, *WAYPOINTS)  # the terminals, then the waypoints
+    assert loaded.terminals.waypoints == run.terminals.waypoints == WAYPOINTS
+    assert loaded.terminals.without_waypoints == run.terminals.without_waypoints == tuple(TERMINALS)
+    assert dict(loaded.structure.nodes(data="terminal")) == dict(run.structure.nodes(data="terminal", default=False))
+    document = json.loads((tmp_path / "structure.json").read_text())
+    document["terminals"]["waypoint_ids"] = [4, 12]
+    (tmp_path / "structure.json").write_text(json.dumps(document))
+    with pytest.raises(G2SError, match=r"terminals\.waypoint_ids: node 12 is also in terminals\.node_ids"):
+        load_result(tmp_path)
+
+
+def test_heatmap_marks_the_terminals_not_the_waypoints(waypoint_result):
+    groups = heatmap.floor_groups(waypoint_result.structure, 2.0)
+    points, _ = heatmap._terminals_by_floor(waypoint_result, waypoint_result.structure, groups)
+    expected = [tuple(waypoint_result.graph.nodes[t]["pos"]) for t in TERMINALS]
+    assert sorted(map(tuple, np.concatenate(points).tolist())) == sorted(expected)
+    labels = [h.get_label() for h in heatmap._legend_handles(waypoint_result, waypoint_result.structure, groups)]
+    assert labels == ["root", "terminal", "opening", "edge to another floor (stairs, ramp or drop)"]
+
+
+def test_html_report_marks_the_terminals_not_the_waypoints(waypoint_result):
+    from g2s_plugins.outputs import html_report
+
+    figure = html_report.build_figure(waypoint_result)
+    squares, = [t for t in figure.data if t.name == html_report.LAYER_TERMINALS and t.mode == "markers"]
+    assert [text.split("<br>")[0] for text in squares.text] == [f"node {t} (terminal)" for t in TERMINALS]
+    markers = [trace for trace in figure.data if getattr(trace, "mode", "") == "markers"]
+    heads = {text.split("<br>")[0] for trace in markers for text in trace.text or ()}
+    waypoint_heads = {head for head in heads if head.split(" (")[0] in {f"node {w}" for w in WAYPOINTS}}
+    assert waypoint_heads and not any("terminal" in head for head in waypoint_heads)  # hovered, not a terminal
+    assert "<dt>terminals</dt><dd>5</dd>" in html_report.render(waypoint_result)
+
+
 # --- folders and formats ------------------------------------------------------------------
 
 
@@ -537,7 +603,8 @@ def test_demo_writes_all_five_formats_and_they_agree(tmp_path, capsys):
     assert {"level_mesh", "navmesh_surface"} <= names and any(n.startswith("edges_value_") for n in names)
     assert {n for n in names if n.startswith("root_")} == {f"root_{r}" for r in loaded.roots}
     assert {n for n in names if n.startswith("node_")} == {f"node_{n}" for n in loaded.structure}
-    assert {n for n in names if n.startswith("terminal_")} == {f"terminal_{t}" for t in loaded.terminals.nodes}
+    terminals = loaded.terminals.without_waypoints
+    assert {n for n in names if n.startswith("terminal_")} == {f"terminal_{t}" for t in terminals}
     graph = nx.read_graphml(out_dir / "structure.graphml", node_type=int)
     assert sorted(graph.edges) == sorted(loaded.structure.edges)
     assert {n: d["value_flow"] for n, d in graph.nodes(data=True)} == loaded.analysis["flow"]

@@ -37,8 +37,9 @@ def vector(value: Any) -> list[float | None] | None:
 
 
 def terminal_ids(result: RunResult) -> list[int]:
-    """The terminals in the selector's order (``[]`` before step 2)."""
-    return [int(t) for t in result.terminals.nodes] if result.terminals is not None else []
+    """The terminals every output shows and records, in the selector's order (``[]`` before step 2); the
+    selector's waypoints are plain structure nodes (``Terminals.without_waypoints``)."""
+    return [int(t) for t in result.terminals.without_waypoints] if result.terminals is not None else []
 
 
 def agent_value(result: RunResult, name: str, default: float) -> float:

@@ -173,7 +173,7 @@ def _summary(result: RunResult) -> list[tuple[str, str]]:
         if roots:
             summary.append(("trees", f"{len(roots)} (roots {', '.join(map(str, roots[:12]))}{' ...' if len(roots) > 12 else ''})"))
     if result.terminals is not None:
-        summary.append(("terminals", str(len(result.terminals.nodes))))
+        summary.append(("terminals", str(len(terminal_ids(result)))))
     if result.analysis:
         summary.append(("analysis values", ", ".join(result.analysis)))
     return summary + metric_lines(result)

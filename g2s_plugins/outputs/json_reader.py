@@ -129,7 +129,7 @@ def _loaded(document: dict[str, Any], path: Path) -> LoadedResult:
             )
             for o in document["terminals"]["openings"]
         )
-        terminals = Terminals(tuple(int(t) for t in document["terminals"]["node_ids"]), openings)
+        terminals = _terminals(document["terminals"], openings)
     graphs = document["graphs"]
     size = graphs.get("graph")
     return LoadedResult(
@@ -152,6 +152,16 @@ def _loaded(document: dict[str, Any], path: Path) -> LoadedResult:
         warnings=list(document["warnings"]),
         document=document,
     )
+
+
+def _terminals(data: dict[str, Any], openings: tuple[Opening, ...]) -> Terminals:
+    """The selector's result: the terminals, then the waypoints (files without ``waypoint_ids`` have none)."""
+    nodes = tuple(int(t) for t in data["node_ids"])
+    waypoints = tuple(int(w) for w in data.get("waypoint_ids", ()))
+    both = set(nodes).intersection(waypoints)
+    if both:
+        raise ValueError(f"terminals.waypoint_ids: node {min(both)} is also in terminals.node_ids")
+    return Terminals(nodes + waypoints, openings, waypoints)
 
 
 def _edges_graph(data: dict[str, Any] | None, directed: bool) -> nx.Graph | None:

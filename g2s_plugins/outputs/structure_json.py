@@ -9,6 +9,9 @@ the warnings. Its layout is described by ``structure.schema.json`` beside this m
 (``schema_version`` 3: version 1 plus ``features``, the records
 analyzers such as ``chokepoints`` and ``regions`` return (version 2), plus
 ``metrics``, the evaluators' measures (version 3); older files are still read).
+``terminals.waypoint_ids``, the selector's waypoints, came later without a new
+version: it is written only when there are waypoints, so the file of a run
+without them did not change (docs/outputs.md).
 
 Determinism rule: the same mesh and config give a byte-identical
 ``structure.json``. Keys are sorted, lists are in a fixed order (nodes and
@@ -117,10 +120,7 @@ def structure_document(result: RunResult) -> dict[str, Any]:
         "nodes": nodes,
         "edges": edges,
         "trees": trees,
-        "terminals": None if result.terminals is None else {
-            "node_ids": terminal_ids(result),
-            "openings": [_opening(o) for o in result.terminals.openings],
-        },
+        "terminals": None if result.terminals is None else _terminals(result),
         "graphs": {
             "graph": _size(result.graph),
             "steiner": _with_edges(result.steiner),
@@ -171,6 +171,18 @@ def _node_record(graph: nx.Graph, node: int, terminals: set[int], analysis: dict
         "values": {key: number(analysis[key][node]) for key in keys if node in analysis[key]},
         "extra": _extra(attrs, _NODE_KEYS),
     }
+
+
+def _terminals(result: RunResult) -> dict[str, Any]:
+    """Step 2's result: the terminals, the openings and, only when there are any, the waypoints (so that the
+    file of a run without waypoints is the same as before they were recorded)."""
+    terminals: dict[str, Any] = {
+        "node_ids": terminal_ids(result),
+        "openings": [_opening(o) for o in result.terminals.openings],
+    }
+    if result.terminals.waypoints:
+        terminals["waypoint_ids"] = [int(w) for w in result.terminals.waypoints]
+    return terminals
 
 
 def _opening(opening: Opening) -> dict[str, Any]:
