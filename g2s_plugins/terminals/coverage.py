@@ -35,7 +35,7 @@ Traffic-aware cover (``traffic_weight`` > 0). A cover by walking distance
 alone places its nodes without regard to where traffic changes, and the
 heat map gives every polygon the value of its nearest structure node: a
 quiet side room within ``radius`` of a busy path takes the path's value
-(on the 1k-polygon dungeons, the polygons off the Steiner paths carry 58 %
+(on a 1k-polygon dungeon the polygons off the Steiner paths carried 58 %
 of the heat map's rank error, docs/analysis_quality.md "Where the losses
 are"). So the cover first runs on lengths that also count the change of
 traffic along each edge::
@@ -131,6 +131,7 @@ def g2s_select_terminals(graph: nx.Graph, params: Params, context: RunContext) -
     eligible = ~small[labels]
     if params.traffic_weight > 0:
         traffic_radius = params.traffic_radius if params.traffic_radius is not None else TRAFFIC_RADIUS_SHARE * radius
+        # the plain cover below grows from this one, so its radius guarantee holds whatever this one chose
         seeds = cover_paths(traffic_lengths(graph, params.traffic_weight), seeds, eligible, traffic_radius)
     cover = cover_paths(adjacency, seeds, eligible, radius)
     waypoints = np.setdiff1d(cover, leaves)
