@@ -199,6 +199,23 @@ def select_cover(graph: nx.Graph, **params) -> tuple[tuple, tuple]:
     return terminals.nodes, terminals.waypoints
 
 
+def test_default_min_area_covers_islands_larger_than_a_disc_of_half_the_radius():
+    # radius 2 m: the default min_area is pi (2 / 2)² = 3.14 m². Three areas, each a ring of four 1 m edges (no
+    # leaf, every node within 2 m of every other): 12 m², 4 m² (above the default, below the area of a whole disc of
+    # the radius, 12.6 m²) and 2 m² (below both)
+    graph = nx.Graph()
+    for first, size, area in ((0, 4, 3.0), (10, 4, 1.0), (20, 4, 0.5)):
+        ring = [first + k for k in range(size)]
+        graph.add_weighted_edges_from((a, b, 1.0) for a, b in zip(ring, ring[1:] + ring[:1]))
+        for node in ring:
+            graph.nodes[node]["area"] = area
+    context = RunContext(mesh=None, agent=None, centre=np.zeros(3), graph=graph)
+    terminals = coverage.g2s_select_terminals(graph, coverage.Params(radius=2.0), context)
+    # each ring big enough gets one seed, its node farthest from its lowest id (2 and 12); the 2 m² ring is reported
+    assert terminals.nodes == (2, 12)
+    assert context.warnings == ["coverage: 1 walkable area(s) smaller than 3.14 m² (2 m² in all) are not covered"]
+
+
 def test_traffic_weight_zero_is_the_plain_cover():
     # plain distances from the leaves 0 and 3: 1 m to 1 and 2, 2 m to 4, 3 m to 5, 3.2 m to 6
     graph = spine_and_side_room()

@@ -29,7 +29,12 @@ get more than one terminal. Measured on a 115-room generated dungeon
 58 % of the polygons, 6 m 48 % and 8 m 46 %, with 100 %, 100 % and 99.7 %
 of the area within 6 m; the best agreement of a heat map on the structure
 with walking flow (the ceiling) falls with the radius: 0.90, 0.84, 0.81.
-Default ``min_area``: the area of a disc of ``radius``.
+Default ``min_area``: the area of a disc of half the ``radius`` (28 m² for
+the default 6 m). Smaller areas are the tops of crates, pillars and sills;
+on ``nav_test`` every area under it is a single navmesh polygon of 8-14 m²,
+while the areas between it and a whole disc of ``radius`` (113 m²) are an
+88 m² walkway and a 53 m² platform, places people stand on, which that
+larger default left out (docs/analysis_quality.md, "Islands").
 
 Traffic-aware cover (``traffic_weight`` > 0). A cover by walking distance
 alone places its nodes without regard to where traffic changes, and the
@@ -99,7 +104,7 @@ class Params(PluginParams):
     """Cover radius, the smallest area that is forced in, and the traffic-aware cover before the plain one."""
 
     radius: float | None = Field(None, gt=0, description="every walkable node within this many metres (along the graph) of a terminal; default 12 agent radii, at most 1/10 of the level's extent")
-    min_area: float | None = Field(None, ge=0, description="walkable areas smaller than this (m²) are reported, not covered; default pi radius²")
+    min_area: float | None = Field(None, ge=0, description="walkable areas smaller than this (m²) are reported, not covered; default pi (radius / 2)²")
     traffic_weight: float = Field(0.0, ge=0, description="metres added to each edge per percentile point of walking-flow difference between its ends, for a first cover that puts nodes where traffic changes; 0: the plain cover only")
     traffic_radius: float | None = Field(None, gt=0, description="radius of that traffic-aware cover, in metres of those lengths; default 5/3 radius (10 m for 6 m)")
 
@@ -114,7 +119,7 @@ def default_radius(context: RunContext) -> float:
 def g2s_select_terminals(graph: nx.Graph, params: Params, context: RunContext) -> Terminals:
     """Leaves plus the farthest-first cover paths, by ascending id."""
     radius = params.radius if params.radius is not None else default_radius(context)
-    min_area = params.min_area if params.min_area is not None else math.pi * radius**2
+    min_area = params.min_area if params.min_area is not None else math.pi * (radius / 2) ** 2
     arrays = traffic.surface_arrays(graph)
     adjacency = arrays.adjacency
     degree = np.diff(adjacency.indptr)
