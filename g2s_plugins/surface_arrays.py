@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import weakref
 from collections.abc import Hashable, Iterable
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import networkx as nx
 import numpy as np
@@ -29,12 +29,16 @@ class SurfaceArrays:
         index: node id -> row.
         adjacency: (n, n) symmetric CSR matrix of edge lengths, metres.
         area: (n,) float64 ``area`` attribute of each node, m² (0 when absent).
+        derived: results computed from these arrays, kept with them (so they
+            are dropped when the graph changes size), e.g. the walking flows
+            of :func:`g2s_plugins.traffic.walking_flow`.
     """
 
     nodes: list[Hashable]
     index: dict[Hashable, int]
     adjacency: sp.csr_array
     area: np.ndarray
+    derived: dict[Hashable, np.ndarray] = field(default_factory=dict, compare=False, repr=False)
 
     @property
     def n(self) -> int:

@@ -44,7 +44,6 @@ from __future__ import annotations
 
 import math
 import os
-import weakref
 from collections.abc import Hashable, Iterable
 
 import networkx as nx
@@ -228,11 +227,6 @@ def origin_weight(arrays: SurfaceArrays) -> np.ndarray:
     return arrays.area if arrays.area.sum() > 0 else np.ones(arrays.n)
 
 
-_FLOWS: weakref.WeakKeyDictionary[nx.Graph, tuple[SurfaceArrays, dict[tuple[int | None, int], np.ndarray]]] = (
-    weakref.WeakKeyDictionary()
-)
-
-
 def walking_flow(graph: nx.Graph, max_sources: int | None = None, seed: int = 0) -> np.ndarray:
     """(n,) :func:`od_flow` of ``graph`` by :func:`origin_weight`, in :func:`surface_arrays` order; read-only.
 
@@ -243,13 +237,9 @@ def walking_flow(graph: nx.Graph, max_sources: int | None = None, seed: int = 0)
     values; divide into a new array (``flow / total``).
     """
     arrays = surface_arrays(graph)
-    cached = _FLOWS.get(graph)
-    if cached is None or cached[0] is not arrays:
-        cached = _FLOWS[graph] = (arrays, {})
-    flows = cached[1]
-    key = (max_sources, seed)
-    if key not in flows:
+    key = ("walking_flow", max_sources, seed)
+    if key not in arrays.derived:
         flow, _ = od_flow(arrays.adjacency, origin_weight(arrays), max_sources=max_sources, seed=seed)
         flow.flags.writeable = False
-        flows[key] = flow
-    return flows[key]
+        arrays.derived[key] = flow
+    return arrays.derived[key]
