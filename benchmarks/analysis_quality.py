@@ -1,7 +1,8 @@
 """How well map-analysis presets show where people walk (issue 9's measures).
 
 Run: ``.venv/bin/python benchmarks/analysis_quality.py [--presets map_analysis_paper map_analysis]
-[--levels nav_test samples dungeon_1k dungeon_20k dungeon_100k] [--seeds 0 1 2]``
+[--levels nav_test samples dungeon_1k dungeon_20k dungeon_100k terrain_1k terrain_20k building_1k building_20k]
+[--seeds 0 1 2]``
 
 For every level and preset it runs the preset with the ``traffic`` evaluator
 added (the evaluator plugin any config or ``g2s batch --evaluate traffic``
@@ -42,6 +43,16 @@ NAV_TEST = Path(__file__).resolve().parents[1] / ".." / "shared" / "data" / "nav
 DUNGEONS = {"dungeon_1k": 115, "dungeon_20k": 2400, "dungeon_100k": 12000}
 """Generated dungeons: name -> rooms (about 8.5 navmesh polygons per room)."""
 
+FAMILIES = {
+    "terrain_1k": ("terrain", {"size": 165.0}),
+    "terrain_20k": ("terrain", {"size": 720.0}),
+    "building_1k": ("building", {"floors": 4, "rooms": 40, "stairwells": 2}),
+    "building_20k": ("building", {"floors": 12, "rooms": 280, "stairwells": 6}),
+}
+"""Other level families: name -> (sample, arguments), each level built with ``seed=s``. About 1k / 20k navmesh
+polygons with the default agent (seed 0: terrain 931 / 19,864, building 959 / 19,719; other seeds within a
+few per cent); the other arguments are the generators' defaults."""
+
 SAMPLE_LEVELS = ("cross_hub", "t_hub", "two_floors", "closed_room", "room_with_window", "corridor_with_ramp")
 
 
@@ -55,6 +66,10 @@ def levels(names: list[str], seeds: list[int]) -> Iterator[tuple[str, trimesh.Tr
         elif name in DUNGEONS:
             for seed in seeds:
                 yield f"{name}_s{seed}", samples.dungeon(seed=seed, rooms=DUNGEONS[name]).mesh
+        elif name in FAMILIES:
+            sample, arguments = FAMILIES[name]
+            for seed in seeds:
+                yield f"{name}_s{seed}", samples.load_sample(sample, seed=seed, **arguments).mesh
         else:
             yield name, samples.load_sample(name).mesh
 
@@ -63,8 +78,9 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--presets", nargs="+", default=["map_analysis_paper", "map_analysis"])
     parser.add_argument("--levels", nargs="+", default=["nav_test", "samples", "dungeon_1k", "dungeon_20k"],
-                        help="nav_test, samples, a sample name, dungeon_1k, dungeon_20k, dungeon_100k")
-    parser.add_argument("--seeds", nargs="+", type=int, default=[0], help="seeds of the generated dungeons")
+                        help="nav_test, samples, a sample name, dungeon_1k, dungeon_20k, dungeon_100k, "
+                             "terrain_1k, terrain_20k, building_1k, building_20k")
+    parser.add_argument("--seeds", nargs="+", type=int, default=[0], help="seeds of the generated levels")
     args = parser.parse_args()
     print(f"machine: {platform.machine()}, {os.cpu_count()} cores, load average {os.getloadavg()[0]:.1f}")
     registry = Registry.from_entry_points()

@@ -87,6 +87,8 @@ def test_registry_names_and_load():
         "stair_deck",
         "cross_platform",
         "chamfered_platform",
+        "terrain",
+        "building",
     }
     lvl = load_sample("straight_corridor", length=5.0)
     assert isinstance(lvl, SampleLevel) and lvl.name == "straight_corridor"

@@ -886,13 +886,17 @@ SAMPLES: dict[str, Callable[..., SampleLevel]] = {
 }
 """Sample name -> factory. Every factory takes keyword arguments only."""
 
-# Rooms joined by doors (chokepoint and region ground truth) and map pieces with
-# known openings build on the helpers above.
+# Rooms joined by doors (chokepoint and region ground truth), map pieces with
+# known openings, outdoor terrain and multi-storey buildings build on the helpers above.
+from g2s_plugins.samples.buildings import SAMPLES as _BUILDING_SAMPLES  # noqa: E402
+from g2s_plugins.samples.outdoor import SAMPLES as _OUTDOOR_SAMPLES  # noqa: E402
 from g2s_plugins.samples.pieces import PIECES as _PIECE_SAMPLES  # noqa: E402
 from g2s_plugins.samples.rooms import SAMPLES as _ROOM_SAMPLES  # noqa: E402
 
 SAMPLES.update(_ROOM_SAMPLES)
 SAMPLES.update(_PIECE_SAMPLES)
+SAMPLES.update(_OUTDOOR_SAMPLES)
+SAMPLES.update(_BUILDING_SAMPLES)
 
 
 def load_sample(name: str, **kwargs: Any) -> SampleLevel:
