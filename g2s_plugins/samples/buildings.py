@@ -11,9 +11,10 @@ steps. Metres, Y up.
 from __future__ import annotations
 
 import math
-from typing import Any
+from typing import Annotated, Any
 
 import numpy as np
+from pydantic import Field, NonNegativeInt, PositiveFloat, PositiveInt, validate_call
 
 from g2s_plugins.samples.levels import (
     NX,
@@ -23,10 +24,10 @@ from g2s_plugins.samples.levels import (
     SLAB_THICKNESS,
     WALL_HEIGHT,
     WALL_THICKNESS,
+    Probability,
     SampleLevel,
     _LevelBuilder,
     _no_apertures,
-    _positive,
 )
 
 MAX_RISER = 0.15
@@ -47,25 +48,29 @@ LANDING = 2.0
 STAIR_DOOR = 2.0
 """Width of a stairwell's door to the corridor, metres."""
 
+MIN_STOREY = 3.3
+"""Least height from one storey's floor to the next, metres: a wall (3 m) and the slab above (0.2 m) fit, 0.1 m apart."""
+
 MIN_LOBBY = 2.5
 """Least depth of a stairwell's lobby, metres (Recast's navmesh collapsed a 2 m lobby to a line, measured)."""
 
 _DOOR_MARGIN = 0.3  # metres of wall kept between a door and a room's corner
 
 
+@validate_call
 def building(
-    seed: int = 0,
-    floors: int = 3,
-    rooms: int = 10,
-    stairwells: int = 1,
-    storey: float = 3.5,
-    corridor_width: float = 2.4,
-    room_depth: float = 8.0,
-    room_min: float = 4.0,
-    room_max: float = 7.0,
-    door_min: float = 1.5,
-    door_max: float = 1.8,
-    connections: float = 0.3,
+    seed: NonNegativeInt = 0,
+    floors: PositiveInt = 3,
+    rooms: Annotated[int, Field(ge=2)] = 10,
+    stairwells: NonNegativeInt = 1,
+    storey: Annotated[float, Field(ge=MIN_STOREY)] = 3.5,
+    corridor_width: PositiveFloat = 2.4,
+    room_depth: Annotated[float, Field(ge=2 * (STAIR_WIDTH + WALL_THICKNESS) + MIN_LOBBY)] = 8.0,
+    room_min: PositiveFloat = 4.0,
+    room_max: PositiveFloat = 7.0,
+    door_min: PositiveFloat = 1.5,
+    door_max: PositiveFloat = 1.8,
+    connections: Probability = 0.3,
 ) -> SampleLevel:
     """Storeys of rooms on both sides of a corridor, joined by switchback stairwells.
 
@@ -96,18 +101,18 @@ def building(
     (``numpy.random.default_rng(seed)``).
 
     Args:
-        seed: seed of the random generator (an integer).
-        floors: number of storeys (a count, >= 1).
-        rooms: rooms per storey, stairwells not counted (a count, >= 2).
+        seed: seed of the random generator.
+        floors: number of storeys (a count).
+        rooms: rooms per storey, stairwells not counted (a count).
         stairwells: stairwells joining every storey to the next (a count, >= 1 when floors > 1).
-        storey: height from one storey's floor to the next, metres (>= 3.3 so that walls fit under the slab above).
+        storey: height from one storey's floor to the next, metres.
         corridor_width: clear width of each storey's corridor, metres.
-        room_depth: depth of every room across the corridor, metres (>= 6.9; at 7 m Recast split some, docs/samples.md).
+        room_depth: depth of every room across the corridor, metres (fits a stairwell; at 7 m Recast split some, docs/samples.md).
         room_min: smallest room width along the corridor, metres.
         room_max: largest room width along the corridor, metres.
         door_min: narrowest door, metres (the design agent needs 1.5 m: 1.4 m doors closed, measured).
         door_max: widest door, metres.
-        connections: probability that two neighbouring rooms share a door (in [0, 1]).
+        connections: probability that two neighbouring rooms share a door.
 
     Openings: none (closed). Metadata: ``floor_heights`` (storey floors, m),
     ``length`` (the corridor's, m), ``rooms`` (tuple of ``{"x0", "x1",
@@ -122,22 +127,13 @@ def building(
     (1), ``cycles`` (None: not counted).
     """
     params = dict(locals())
-    floors, rooms, stairwells = int(floors), int(rooms), int(stairwells)
-    if floors < 1 or rooms < 2 or stairwells < 0 or (floors > 1 and stairwells < 1):
-        raise ValueError(f"need floors >= 1, rooms >= 2 and stairwells >= 1 (0 allowed on one floor), got "
-                         f"floors={floors}, rooms={rooms}, stairwells={stairwells}")
-    _positive(corridor_width=corridor_width, room_min=room_min, door_min=door_min)
+    if floors > 1 and stairwells < 1:
+        raise ValueError(f"a building of {floors} floors needs stairwells >= 1")
     t = WALL_THICKNESS
-    if storey < WALL_HEIGHT + SLAB_THICKNESS + 0.1:
-        raise ValueError(f"storey must be >= {WALL_HEIGHT + SLAB_THICKNESS + 0.1:g} m, got {storey!r}")
-    if room_depth < 2 * (STAIR_WIDTH + t) + MIN_LOBBY:
-        raise ValueError(f"room_depth must be >= {2 * (STAIR_WIDTH + t) + MIN_LOBBY:g} m, got {room_depth!r}")
     if not door_min <= door_max <= room_min - 2 * _DOOR_MARGIN:
         raise ValueError(f"need door_min <= door_max <= room_min - {2 * _DOOR_MARGIN:g}")
     if room_max < room_min:
         raise ValueError(f"room_max ({room_max}) must be >= room_min ({room_min})")
-    if not 0.0 <= connections <= 1.0:
-        raise ValueError(f"connections must be in [0, 1], got {connections!r}")
     rng = np.random.default_rng(seed)
     steps = math.ceil(storey / MAX_RISER - 1e-9)
     riser, run = storey / steps, steps * TREAD

@@ -17,10 +17,11 @@ import math
 
 import numpy as np
 import trimesh
+from pydantic import NonNegativeFloat, NonNegativeInt, PositiveFloat, validate_call
 from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import connected_components
 
-from g2s_plugins.samples.levels import DESIGN_AGENT, SampleLevel, _LevelBuilder, _positive
+from g2s_plugins.samples.levels import DESIGN_AGENT, SampleLevel, _LevelBuilder
 
 _HILL_AREA = 400.0  # m² of map per hill or hollow
 _HILL_SIGMA = (6.0, 18.0)  # m, range of a hill's Gaussian width
@@ -34,14 +35,15 @@ _RUIN = {"segments": (2, 4), "length": (2.0, 5.0), "gap": (1.5, 3.0), "thickness
 _SINK = 0.3  # m an obstacle reaches below the lowest ground under it
 
 
+@validate_call
 def terrain(
-    seed: int = 0,
-    size: float = 100.0,
-    relief: float = 8.0,
-    obstacles: float = 0.5,
-    cliffs: float = 4.0,
-    ruins: float = 2.0,
-    cell: float = 1.5,
+    seed: NonNegativeInt = 0,
+    size: PositiveFloat = 100.0,
+    relief: PositiveFloat = 8.0,
+    obstacles: NonNegativeFloat = 0.5,
+    cliffs: NonNegativeFloat = 4.0,
+    ruins: NonNegativeFloat = 2.0,
+    cell: PositiveFloat = 1.5,
 ) -> SampleLevel:
     """An open square of hilly ground with cliffs, scattered trees and rocks and a few ruined walls.
 
@@ -66,12 +68,12 @@ def terrain(
     (``numpy.random.default_rng(seed)``).
 
     Args:
-        seed: seed of the random generator (an integer).
+        seed: seed of the random generator.
         size: side of the square map, metres.
         relief: largest height of a hill or depth of a hollow, metres.
-        obstacles: trees and rocks per 100 m² of map (a density, >= 0).
-        cliffs: cliffs per hectare (10,000 m²) of map (a density, >= 0).
-        ruins: ruined walls per hectare of map (a density, >= 0).
+        obstacles: trees and rocks per 100 m² of map (a density).
+        cliffs: cliffs per hectare (10,000 m²) of map (a density).
+        ruins: ruined walls per hectare of map (a density).
         cell: side of a ground grid square, metres (1-2 m is realistic).
 
     Openings: none (the edge of the map is not an entry). Metadata:
@@ -93,9 +95,6 @@ def terrain(
     """
     params = {"seed": seed, "size": size, "relief": relief, "obstacles": obstacles, "cliffs": cliffs,
               "ruins": ruins, "cell": cell}
-    _positive(size=size, relief=relief, cell=cell)
-    if min(obstacles, cliffs, ruins) < 0:
-        raise ValueError(f"obstacles, cliffs and ruins must be >= 0, got {obstacles}, {cliffs}, {ruins}")
     n = max(1, round(size / cell))
     if n > 2000:
         raise ValueError(f"size / cell must be <= 2000 grid squares a side, got {size / cell:g}")
