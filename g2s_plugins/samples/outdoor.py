@@ -262,8 +262,8 @@ def _triangle_edges(n: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Edges shared by two ground triangles: (t0, t1, horizontal length in grid steps), each (e,)."""
     square = np.arange(n * n).reshape(n, n)
     first, second = 2 * square, 2 * square + 1  # (a, d, c) touches -X and +Z; (a, c, b) touches -Z and +X
-    t0 = [first.ravel(), second[:-1, :].ravel(), first[:, 1:].ravel()]
-    t1 = [second.ravel(), first[1:, :].ravel(), second[:, :-1].ravel()]
+    t0 = [first.ravel(), second[:-1, :].ravel(), first[:, :-1].ravel()]
+    t1 = [second.ravel(), first[1:, :].ravel(), second[:, 1:].ravel()]
     lengths = [np.full(n * n, math.sqrt(2.0)), np.ones(n * (n - 1)), np.ones(n * (n - 1))]
     return np.concatenate(t0), np.concatenate(t1), np.concatenate(lengths)
 
