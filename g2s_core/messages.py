@@ -120,7 +120,8 @@ def describe_validation_error(exc: ValidationError, model: type[BaseModel], pref
     info = _field_at(model, loc)
     if info is not None:
         return f"{path}: expected {describe_field(info)}, got {show(error.get('input'))}"
-    return f"{path}: {error['msg'][0].lower()}{error['msg'][1:]}, got {show(error.get('input'))}"
+    got = "" if isinstance(error.get("input"), dict) else f", got {show(error.get('input'))}"  # a check of the whole mapping
+    return f"{path}: {error['msg'][0].lower()}{error['msg'][1:]}{got}"
 
 
 def _nested_model(info: FieldInfo | None) -> type[BaseModel] | None:
