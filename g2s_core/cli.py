@@ -37,8 +37,7 @@ from g2s_core.registry import installed, plugin_parameters
 from g2s_core.stages import STAGES
 from g2s_core.summary import final_graph, metric_lines, roots_of, stage_rows
 
-EXIT_CODES = ("exit codes: 0 success, 2 bad input or config, or a plugin that failed (named with its package), "
-              "1 internal error of g2s, 130 interrupted")
+EXIT_CODES = "exit codes: 0 success, 2 bad input or config or a failed plugin (named with its package), 1 internal error, 130 interrupted"
 
 __all__ = ["main", "stage_table"]
 
@@ -106,9 +105,7 @@ def _parser() -> argparse.ArgumentParser:
                                   help="list installed plugins and their parameters, and broken ones")
     plugins.add_argument("--stage", choices=[stage.key for stage in STAGES], help="only this stage")
 
-    demo = commands.add_parser("demo", parents=[common], help="run the full pipeline on the built-in dungeon sample",
-                               description="Run the demo preset on a generated dungeon (sample:dungeon) and list "
-                               "what it wrote.", epilog=EXIT_CODES)
+    demo = commands.add_parser("demo", parents=[common], help="run the full pipeline on the built-in dungeon sample", epilog=EXIT_CODES)
     demo.add_argument("-o", "--outdir", type=Path, default=Path("g2s-demo"), help="folder for the results (default: g2s-demo)")
     demo.add_argument("--rooms", type=int, default=12, help="rooms in the generated dungeon (default: 12)")
     demo.add_argument("--seed", type=int, default=0, help="seed of the generated dungeon (default: 0)")
