@@ -36,10 +36,11 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Annotated, Any
 
 import numpy as np
 import trimesh
+from pydantic import Field, NonNegativeFloat, NonNegativeInt, PositiveFloat, PositiveInt, validate_call
 from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import minimum_spanning_tree
 
@@ -53,6 +54,12 @@ WALL_THICKNESS = 0.2
 
 SLAB_THICKNESS = 0.2
 """Thickness of every floor slab (its top is the floor height), metres."""
+
+Probability = Annotated[float, Field(ge=0, le=1)]
+"""A factory parameter that is a probability."""
+
+RampSlope = Annotated[float, Field(gt=0, lt=90)]
+"""A factory parameter that is a ramp's slope, degrees (a ramp rises, so its run is finite and > 0)."""
 
 DESIGN_AGENT: dict[str, float] = {
     "radius": 0.5,
@@ -303,13 +310,6 @@ class _LevelBuilder:
         return SampleLevel(name=name, mesh=mesh, openings=tuple(openings), metadata=meta)
 
 
-def _positive(**values: float) -> None:
-    """Raise ``ValueError`` naming the first of ``values`` that is not > 0."""
-    for key, value in values.items():
-        if not value > 0:
-            raise ValueError(f"{key} must be > 0, got {value!r}")
-
-
 def _rect(x0: float, x1: float, z0: float, z1: float) -> dict[str, float]:
     """A floor rectangle for metadata: ``{"x0", "x1", "z0", "z1"}``, metres."""
     return {"x0": float(x0), "x1": float(x1), "z0": float(z0), "z1": float(z1)}
@@ -324,9 +324,7 @@ def _end_openings(x_start: float, y_start: float, x_end: float, y_end: float, wi
 
 
 def _ramp_run(rise: float, slope_deg: float) -> float:
-    """Horizontal length (m) of a ramp climbing ``rise`` metres at ``slope_deg``."""
-    if not 0.0 < slope_deg < 90.0:
-        raise ValueError(f"slope_deg must be in (0, 90), got {slope_deg!r}")
+    """Horizontal length (m) of a ramp climbing ``rise`` metres at ``slope_deg`` (in (0, 90))."""
     return rise / math.tan(math.radians(slope_deg))
 
 
@@ -349,14 +347,18 @@ def _ramp_meta(
 # --------------------------------------------------------------------------
 
 
-def straight_corridor(length: float = 12.0, width: float = 3.0) -> SampleLevel:
+@validate_call
+def straight_corridor(length: PositiveFloat = 12.0, width: PositiveFloat = 3.0) -> SampleLevel:
     """A straight corridor along +X, walled on both long sides, both ends open.
 
     The floor covers x in [0, length], z in [-width/2, width/2] at y = 0.
     Openings (2): the -X end at x = 0, then the +X end at x = ``length``.
     Metadata: ``floor_heights`` (0.0,).
+
+    Args:
+        length: corridor length, metres.
+        width: corridor width between its walls, metres.
     """
-    _positive(length=length, width=width)
     b = _LevelBuilder()
     b.corridors(True, 0.0, length, 0.0, width, 0.0)
     meta = {
@@ -369,26 +371,33 @@ def straight_corridor(length: float = 12.0, width: float = 3.0) -> SampleLevel:
     return b.build("straight_corridor", _end_openings(0.0, 0.0, length, 0.0, width), meta)
 
 
+@validate_call
 def corridor_with_ramp(
-    lower_length: float = 6.0,
-    upper_length: float = 6.0,
-    width: float = 3.0,
-    rise: float = 2.0,
-    slope_deg: float = 20.0,
+    lower_length: PositiveFloat = 6.0,
+    upper_length: PositiveFloat = 6.0,
+    width: PositiveFloat = 3.0,
+    rise: PositiveFloat = 2.0,
+    slope_deg: RampSlope = 20.0,
 ) -> SampleLevel:
     """A corridor along +X that climbs a walled ramp to a higher floor; both ends open.
 
     Lower floor: x in [0, lower_length] at y = 0. Ramp: from x = lower_length
-    up ``rise`` metres at ``slope_deg`` (run = rise / tan(slope)). Upper
-    floor: the next ``upper_length`` metres at y = ``rise`` (a thin slab,
-    nothing below it). The corridor is ``width`` wide around z = 0.
+    up to y = ``rise`` (run = rise / tan(slope_deg)). Upper floor: the next
+    ``upper_length`` at y = ``rise`` (a thin slab, nothing below it). The
+    corridor is centred on z = 0.
     Openings (2): the lower end (heading -X, y = 0), then the upper end
     (heading +X, y = ``rise``).
     Metadata: ``floor_heights`` (0, rise); ``ramp`` dict with ``x0, x1, z0,
     z1`` (its extent, m), ``y0, y1`` (heights at its ends), ``slope_deg``,
     ``run``.
+
+    Args:
+        lower_length: length of the lower floor, metres.
+        upper_length: length of the upper floor, metres.
+        width: width of the corridor and the ramp, metres.
+        rise: height of the upper floor above the lower one, metres.
+        slope_deg: the ramp's slope, degrees (the design agent walks up to 45).
     """
-    _positive(lower_length=lower_length, upper_length=upper_length, width=width, rise=rise)
     run = _ramp_run(rise, slope_deg)
     xr0, xr1 = lower_length, lower_length + run
     x_end = xr1 + upper_length
@@ -415,7 +424,6 @@ def _hub(
     name: str, arms: tuple[int, ...], hub_size: float, arm_length: float, arm_width: float
 ) -> SampleLevel:
     """A square hub room centred on the origin with corridor arms on the given sides."""
-    _positive(hub_size=hub_size, arm_length=arm_length, arm_width=arm_width)
     if arm_width >= hub_size:
         raise ValueError(f"arm_width ({arm_width}) must be < hub_size ({hub_size})")
     h, w = 0.5 * hub_size, float(arm_width)
@@ -441,28 +449,48 @@ def _hub(
     return b.build(name, openings, meta)
 
 
-def cross_hub(hub_size: float = 8.0, arm_length: float = 6.0, arm_width: float = 3.0) -> SampleLevel:
+@validate_call
+def cross_hub(
+    hub_size: PositiveFloat = 8.0, arm_length: PositiveFloat = 6.0, arm_width: PositiveFloat = 3.0
+) -> SampleLevel:
     """A square hub room (centred on the origin, y = 0) with 4 corridor arms, ends open.
 
-    The hub covers [-hub_size/2, hub_size/2]² in x, z; each arm is
-    ``arm_length`` long and ``arm_width`` wide, centred on an axis.
-    Openings (4), one per arm end, in the order +X, +Z, -X, -Z
+    The hub covers [-hub_size/2, hub_size/2]² in x, z; each arm is centred on
+    an axis. Openings (4), one per arm end, in the order +X, +Z, -X, -Z
     (``metadata['arms']``).
+
+    Args:
+        hub_size: side of the square hub, metres.
+        arm_length: length of each arm from the hub's wall to its open end, metres.
+        arm_width: width of each arm, metres.
     """
     return _hub("cross_hub", (PX, PZ, NX, NZ), hub_size, arm_length, arm_width)
 
 
-def t_hub(hub_size: float = 8.0, arm_length: float = 6.0, arm_width: float = 3.0) -> SampleLevel:
-    """Like :func:`cross_hub` with 3 arms (+X, -X, -Z; the +Z side is walled): 3 openings."""
+@validate_call
+def t_hub(
+    hub_size: PositiveFloat = 8.0, arm_length: PositiveFloat = 6.0, arm_width: PositiveFloat = 3.0
+) -> SampleLevel:
+    """Like :func:`cross_hub` with 3 arms (+X, -X, -Z; the +Z side is walled): 3 openings.
+
+    Args:
+        hub_size: side of the square hub, metres.
+        arm_length: length of each arm from the hub's wall to its open end, metres.
+        arm_width: width of each arm, metres.
+    """
     return _hub("t_hub", (PX, NX, NZ), hub_size, arm_length, arm_width)
 
 
-def closed_room(width: float = 8.0, depth: float = 6.0) -> SampleLevel:
+@validate_call
+def closed_room(width: PositiveFloat = 8.0, depth: PositiveFloat = 6.0) -> SampleLevel:
     """A room closed by walls on all sides: 0 openings.
 
     The floor covers x in [-width/2, width/2], z in [-depth/2, depth/2] at y = 0.
+
+    Args:
+        width: the floor's extent along X, metres.
+        depth: the floor's extent along Z, metres.
     """
-    _positive(width=width, depth=depth)
     bounds = [-width / 2, width / 2, -depth / 2, depth / 2]
     b = _LevelBuilder()
     b.floors(*bounds, 0.0)
@@ -477,34 +505,40 @@ def closed_room(width: float = 8.0, depth: float = 6.0) -> SampleLevel:
     return b.build("closed_room", [], meta)
 
 
+@validate_call
 def room_with_window(
-    width: float = 8.0,
-    depth: float = 6.0,
-    door_width: float = 2.0,
-    door_height: float = 2.5,
-    window_width: float = 2.0,
-    sill_height: float = 1.0,
+    width: PositiveFloat = 8.0,
+    depth: PositiveFloat = 6.0,
+    door_width: PositiveFloat = 2.0,
+    door_height: PositiveFloat = 2.5,
+    window_width: PositiveFloat = 2.0,
+    sill_height: PositiveFloat = 1.0,
     window_top: float = 2.0,
 ) -> SampleLevel:
     """A room with a doorway (the one opening) and a window (not an opening).
 
     The floor covers x in [-width/2, width/2], z in [-depth/2, depth/2] at
-    y = 0. The doorway is a gap ``door_width`` wide, centred on z = 0, in the
-    +X wall, with a lintel from ``door_height`` up; the floor ends at the
-    doorway (nothing beyond), so it leads outside. The window is a hole
-    ``window_width`` wide, centred on x = 0, in the +Z wall from
-    ``sill_height`` to ``window_top`` above the floor.
+    y = 0. The doorway is a gap centred on z = 0 in the +X wall, under a
+    lintel; the floor ends at the doorway (nothing beyond), so it leads
+    outside. The window is a hole centred on x = 0 in the +Z wall.
     Openings (1): the doorway, heading +X.
     Metadata: ``door`` and ``window`` dicts with ``p0, p1`` (ends of the
     bottom edge on the wall's inner face, m), ``heading`` (outward),
     ``width`` and heights (``height``; ``sill_height``, ``top``).
+
+    Args:
+        width: the floor's extent along X, metres.
+        depth: the floor's extent along Z, metres.
+        door_width: the doorway's width, metres.
+        door_height: height of the lintel's underside above the floor, metres.
+        window_width: the window's width, metres.
+        sill_height: height of the window's bottom above the floor, metres.
+        window_top: height of the window's top above the floor, metres.
     """
-    _positive(width=width, depth=depth, door_width=door_width, door_height=door_height)
-    _positive(window_width=window_width)
     if door_width >= depth or window_width >= width:
         raise ValueError("door_width must be < depth and window_width < width")
-    if not 0.0 < sill_height < window_top <= WALL_HEIGHT:
-        raise ValueError(f"need 0 < sill_height < window_top <= {WALL_HEIGHT}")
+    if not sill_height < window_top <= WALL_HEIGHT:
+        raise ValueError(f"need sill_height < window_top <= {WALL_HEIGHT}")
     hw, hd = width / 2, depth / 2
     b = _LevelBuilder()
     b.floors(-hw, hw, -hd, hd, 0.0)
@@ -548,14 +582,15 @@ def room_with_window(
     return b.build("room_with_window", [door], meta)
 
 
+@validate_call
 def two_floors(
     ramp: bool = True,
-    size: float = 16.0,
-    block: float = 6.0,
-    upper_height: float = 4.0,
-    upper_size: float = 10.0,
-    ramp_width: float = 3.0,
-    slope_deg: float = 20.0,
+    size: PositiveFloat = 16.0,
+    block: PositiveFloat = 6.0,
+    upper_height: PositiveFloat = 4.0,
+    upper_size: PositiveFloat = 10.0,
+    ramp_width: PositiveFloat = 3.0,
+    slope_deg: RampSlope = 20.0,
 ) -> SampleLevel:
     """A ground floor that loops around a central block, and an upper floor beside it.
 
@@ -563,18 +598,25 @@ def two_floors(
     [b0, b1]² (b0 = (size - block) / 2), so the walkable area is a ring and
     paths around it form a cycle. The block is four walls around a void with
     no floor and no roof, so no walkable surface exists on or in it.
-    Upper floor (y = ``upper_height``): a square room of side ``upper_size``
-    beside the ground floor on +X (it covers nothing below it), centred on
-    z = size / 2, starting at x = size + run where run = upper_height /
-    tan(slope_deg). With ``ramp=True`` a walled ramp ``ramp_width`` wide
-    climbs from the ground floor's +X wall (centred on z = size / 2) to the
-    upper floor's -X wall; with ``ramp=False`` both walls are solid and the
-    two floors are not connected. Everything else is walled: 0 openings.
+    Upper floor (y = ``upper_height``): a square room beside the ground floor
+    on +X (it covers nothing below it), centred on z = size / 2, starting at
+    x = size + run where run = upper_height / tan(slope_deg). The ramp climbs
+    from the ground floor's +X wall (centred on z = size / 2) to the upper
+    floor's -X wall; without it both walls are solid and the two floors are
+    not connected. Everything else is walled: 0 openings.
     Metadata: ``floor_heights``, ``ground`` / ``upper`` / ``block`` extents
     (``x0, x1, z0, z1``), ``ramp`` (as in :func:`corridor_with_ramp`, or
     ``None``), ``components`` (1 or 2), ``cycles`` (1).
+
+    Args:
+        ramp: whether a walled ramp joins the two floors.
+        size: side of the square ground floor, metres.
+        block: side of the central block, metres.
+        upper_height: height of the upper floor above the ground floor, metres.
+        upper_size: side of the square upper floor, metres.
+        ramp_width: the ramp's width, metres.
+        slope_deg: the ramp's slope, degrees (the design agent walks up to 45).
     """
-    _positive(size=size, block=block, upper_height=upper_height, upper_size=upper_size, ramp_width=ramp_width)
     if block >= size:
         raise ValueError(f"block ({block}) must be < size ({size})")
     if ramp_width >= min(size, upper_size):
@@ -730,37 +772,35 @@ def _pillar_lattice(
     return np.column_stack([x, z])
 
 
+@validate_call
 def dungeon(
-    seed: int = 0,
-    rooms: int = 12,
-    room_min: float = 5.0,
+    seed: NonNegativeInt = 0,
+    rooms: PositiveInt = 12,
+    room_min: PositiveFloat = 5.0,
     room_max: float = 10.0,
-    spacing: float = 14.0,
-    corridor_width: float = 3.0,
-    loops: float = 0.15,
-    obstacles: float = 0.3,
-    pillar_size: float = 1.0,
-    pillar_gap: float = 1.6,
-    exits: int = 0,
-    exit_length: float = 3.0,
+    spacing: PositiveFloat = 14.0,
+    corridor_width: PositiveFloat = 3.0,
+    loops: NonNegativeFloat = 0.15,
+    obstacles: Probability = 0.3,
+    pillar_size: PositiveFloat = 1.0,
+    pillar_gap: PositiveFloat = 1.6,
+    exits: NonNegativeInt = 0,
+    exit_length: PositiveFloat = 3.0,
 ) -> SampleLevel:
     """Rooms of random sizes on a grid, joined by corridors, with optional pillars.
 
-    Layout: ``rooms`` slots of a grid with pitch ``spacing`` metres are grown
-    at random as one 4-connected blob; each slot holds a room whose sides are
-    random multiples of 0.5 m in [room_min, room_max], shifted at random
-    inside its slot (every room covers its slot centre ± room_min / 2).
-    Corridors ``corridor_width`` wide join neighbouring rooms along a random
-    spanning tree of the slot adjacency, plus ``round(loops * rooms)`` (at
-    least 1 when ``loops > 0`` and the layout allows) extra neighbour pairs,
-    which make loops. Obstacles: square pillars ``pillar_size`` wide and a
-    wall high on a lattice centred in each room, ``pillar_gap`` metres clear
-    of the walls and of each other (wider than the design agent); each
-    lattice site holds a pillar with probability ``obstacles``. The navmesh
-    size grows with ``rooms`` and ``obstacles`` (see docs/samples.md).
-    Exits: ``exits`` corridor stubs ``exit_length`` long leave rooms on the
-    outside of the layout (sides with no room further along their row or
-    column) and end open; ``exits=0`` (default) gives a closed dungeon.
+    Layout: the rooms' grid slots are grown at random as one 4-connected
+    blob; each slot holds a room whose sides are random multiples of 0.5 m in
+    [room_min, room_max], shifted at random inside its slot (every room
+    covers its slot centre ± room_min / 2). Corridors join neighbouring rooms
+    along a random spanning tree of the slot adjacency, plus
+    ``round(loops * rooms)`` (at least 1 when ``loops > 0`` and the layout
+    allows) extra neighbour pairs, which make loops. Obstacles: square
+    pillars a wall high on a lattice centred in each room, with gaps wider
+    than the design agent by default. The navmesh size grows with ``rooms`` and ``obstacles`` (see docs/samples.md).
+    Exits: corridor stubs leave rooms on the outside of the layout (sides
+    with no room further along their row or column) and end open;
+    ``exits=0`` (default) gives a closed dungeon.
 
     All floors are at y = 0. Geometry is built with numpy: 5000 rooms take
     about a second. Same arguments, same level (``numpy.random.default_rng(seed)``).
@@ -773,21 +813,28 @@ def dungeon(
     corridors), ``pillars`` (count), ``pillar_centres`` (tuple of (x, 0, z)),
     ``exit_rooms`` (tuple of (room, side name)), ``cycles`` (loops +
     pillars: each pillar is a hole in the walkable area), ``components`` (1).
+
+    Args:
+        seed: seed of the random layout.
+        rooms: number of rooms.
+        room_min: smallest side of a room, metres.
+        room_max: largest side of a room, metres.
+        spacing: pitch of the rooms' grid, metres.
+        corridor_width: width of the corridors and exits, metres.
+        loops: extra corridors beyond the spanning tree, per room.
+        obstacles: probability that a lattice site in a room holds a pillar.
+        pillar_size: side of a square pillar, metres.
+        pillar_gap: clear gap between pillars, and between a pillar and a wall, metres.
+        exits: number of open corridor stubs.
+        exit_length: length of each exit corridor, metres.
     """
     params = dict(locals())
-    rooms, exits = int(rooms), int(exits)
-    if rooms < 1 or exits < 0:
-        raise ValueError(f"need rooms >= 1 and exits >= 0, got rooms={rooms}, exits={exits}")
-    _positive(room_min=room_min, spacing=spacing, corridor_width=corridor_width)
-    _positive(pillar_size=pillar_size, pillar_gap=pillar_gap, exit_length=exit_length)
     if room_max < room_min:
         raise ValueError(f"room_max ({room_max}) must be >= room_min ({room_min})")
     if room_min < corridor_width + 2 * _MOUTH_MARGIN:
         raise ValueError(f"room_min must be >= corridor_width + {2 * _MOUTH_MARGIN}")
     if spacing < room_max + 2 * WALL_THICKNESS + 1.0:
         raise ValueError(f"spacing must be >= room_max + {2 * WALL_THICKNESS + 1.0}")
-    if not 0.0 <= obstacles <= 1.0 or loops < 0:
-        raise ValueError("obstacles must be in [0, 1] and loops >= 0")
     rng = np.random.default_rng(seed)
 
     # Rooms: random sizes (0.5 m steps), shifted inside their slots.

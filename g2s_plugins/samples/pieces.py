@@ -28,8 +28,9 @@ are designed for :data:`PIECE_AGENT`, the agent of ``configs/map_piece.yaml``.
 from __future__ import annotations
 
 import numpy as np
+from pydantic import PositiveFloat, PositiveInt, validate_call
 
-from g2s_plugins.samples.levels import SLAB_THICKNESS, SampleLevel, _LevelBuilder, _opening, _positive, _rect
+from g2s_plugins.samples.levels import SLAB_THICKNESS, SampleLevel, _LevelBuilder, _opening, _rect
 
 PIECE_AGENT: dict[str, float] = {"radius": 0.4, "height": 2.0, "max_climb": 0.4, "max_slope_deg": 60.0}
 """The agent the pieces are designed for (metres, degrees): that of ``configs/map_piece.yaml``."""
@@ -59,18 +60,26 @@ def _meta(params: dict, floors: tuple[float, ...], components: int = 1) -> dict:
     return {"params": params, "floor_heights": floors, "components": components, "piece_agent": dict(PIECE_AGENT)}
 
 
+@validate_call
 def doorway_room(
-    width: float = 12.0, depth: float = 9.0, wall: float = 0.6, doors: tuple[float, ...] = (1.2, 1.5, 2.0, 1.5, 1.8)
+    width: PositiveFloat = 12.0, depth: PositiveFloat = 9.0, wall: PositiveFloat = 0.6,
+    doors: tuple[float, ...] = (1.2, 1.5, 2.0, 1.5, 1.8),
 ) -> SampleLevel:
-    """A room ``width`` x ``depth`` (clear floor) in walls ``wall`` thick with up to five doorways.
+    """A walled room with up to five doorways.
 
     The floor slab runs under the walls to their outer faces, where the
-    piece ends; a doorway is a full-height gap in the wall. Doors, in order:
-    west (centred), east (centred), south (at a quarter of the width), south
-    (at three quarters), north (centred). Each opening is the doorway's
-    outer face, as wide as the door.
+    piece ends; a doorway is a full-height gap in the wall. Each opening is
+    the doorway's outer face, as wide as the door.
+
+    Args:
+        width: clear floor inside the walls along X, metres.
+        depth: clear floor inside the walls along Z, metres.
+        wall: thickness of the walls, metres.
+        doors: widths of the doorways, metres, in this order: west (centred),
+            east (centred), south (a quarter of the width along), south (three
+            quarters along), north (centred); fewer widths leave the last
+            walls whole.
     """
-    _positive(width=width, depth=depth, wall=wall)
     if not 1 <= len(doors) <= 5 or min(doors) <= 0:
         raise ValueError(f"doors must be 1 to 5 widths > 0, got {doors!r}")
     b = _LevelBuilder()
@@ -106,16 +115,24 @@ def doorway_room(
     return b.build("doorway_room", openings, meta)
 
 
+@validate_call
 def curb_platform(
-    length: float = 12.7, depth: float = 8.0, curb: float = 0.3, curb_width: float = 0.2, gap: float = 2.0
+    length: PositiveFloat = 12.7, depth: PositiveFloat = 8.0, curb: PositiveFloat = 0.3,
+    curb_width: PositiveFloat = 0.2, gap: PositiveFloat = 2.0,
 ) -> SampleLevel:
-    """A wall-less platform rimmed by a curb ``curb`` high, with a ``gap`` in the middle of each short side.
+    """A wall-less platform rimmed by a curb, with a gap in the middle of each short side.
 
     The curb is lower than the agent's climb, so Recast (and probes cast
     higher than it) step over it; the platform's edge beyond it drops into
     the void. Openings: the two gaps (west and east).
+
+    Args:
+        length: the platform's extent along X, metres.
+        depth: the platform's extent along Z (its short sides), metres.
+        curb: the curb's height, metres.
+        curb_width: the curb's width, metres.
+        gap: width of each gap in the curb, metres.
     """
-    _positive(length=length, depth=depth, curb=curb, curb_width=curb_width, gap=gap)
     if gap >= depth - 2 * curb_width:
         raise ValueError(f"gap {gap} m does not fit the {depth} m side")
     b = _LevelBuilder()
@@ -131,20 +148,27 @@ def curb_platform(
     return b.build("curb_platform", openings, _meta(params, (0.0,)))
 
 
+@validate_call
 def wall_tops(
-    length: float = 12.0, width: float = 4.0, high: float = 3.7, low: float = 0.3, thick: float = 2.0
+    length: PositiveFloat = 12.0, width: PositiveFloat = 4.0, high: PositiveFloat = 3.7, low: PositiveFloat = 0.3,
+    thick: PositiveFloat = 2.0,
 ) -> SampleLevel:
-    """A corridor open at both ends between two thick walls: one ``high``, one ``low`` (a bench).
+    """A corridor open at both ends between two thick walls: one high, one low (a bench).
 
     The high wall's top is walkable for Recast but unreachable from the
     floor (no opening on it). The bench is reachable (lower than the climb);
     a full-height wall stands behind it, and it stops ``thick`` short of the
     corridor's ends, so it holds no opening either; the floor's edge beside
     it, between the bench and each end, is open but lies ``thick + 0.2`` m
-    inside the piece's extent. Openings: the corridor's west and east ends,
-    ``width`` wide.
+    inside the piece's extent. Openings: the corridor's west and east ends.
+
+    Args:
+        length: the corridor's length along X, metres.
+        width: the corridor's width between the two walls, metres.
+        high: height of the high wall, metres.
+        low: height of the bench, metres.
+        thick: thickness of both walls, metres.
     """
-    _positive(length=length, width=width, high=high, low=low, thick=thick)
     if length <= 2 * thick + 2:
         raise ValueError(f"length must exceed 2 * thick + 2, got {length}")
     b = _LevelBuilder()
@@ -160,9 +184,10 @@ def wall_tops(
     return b.build("wall_tops", openings, meta)
 
 
+@validate_call
 def stair_deck(
-    floor_length: float = 8.0, deck_length: float = 4.0, width: float = 6.0, riser: float = 0.25,
-    tread: float = 0.3, steps: int = 12, stair_width: float = 2.0
+    floor_length: PositiveFloat = 8.0, deck_length: PositiveFloat = 4.0, width: PositiveFloat = 6.0,
+    riser: PositiveFloat = 0.25, tread: PositiveFloat = 0.3, steps: PositiveInt = 12, stair_width: PositiveFloat = 2.0,
 ) -> SampleLevel:
     """A walled ground floor and a deck ``steps * riser`` higher, joined by straight stairs.
 
@@ -170,10 +195,18 @@ def stair_deck(
     podium over [floor_length, floor_length + deck_length] with parapets on
     its long sides. The stairs rise along +X against the north wall and end
     at the podium. Openings: the ground floor's west end and the deck's east
-    end, both ``width`` wide.
+    end.
+
+    Args:
+        floor_length: length of the ground floor along X, metres.
+        deck_length: length of the deck along X, metres.
+        width: width of the ground floor and the deck, metres.
+        riser: height of each step, metres.
+        tread: depth of each step along X, metres.
+        steps: number of steps.
+        stair_width: width of the stairs, metres.
     """
-    _positive(floor_length=floor_length, deck_length=deck_length, width=width, riser=riser, tread=tread)
-    if steps < 1 or steps * tread >= floor_length or stair_width >= width:
+    if steps * tread >= floor_length or stair_width >= width:
         raise ValueError("the stairs must fit the ground floor")
     top = steps * riser
     b = _LevelBuilder()
@@ -196,9 +229,17 @@ def stair_deck(
     return b.build("stair_deck", openings, _meta(params, (0.0, top)))
 
 
-def cross_platform(hub: float = 6.0, arm_length: float = 5.0, arm_width: float = 3.0) -> SampleLevel:
-    """A wall-less cross: a square ``hub`` and four arms; the openings are the arm ends."""
-    _positive(hub=hub, arm_length=arm_length, arm_width=arm_width)
+@validate_call
+def cross_platform(
+    hub: PositiveFloat = 6.0, arm_length: PositiveFloat = 5.0, arm_width: PositiveFloat = 3.0
+) -> SampleLevel:
+    """A wall-less cross: a square hub and four arms; the openings are the arm ends.
+
+    Args:
+        hub: side of the square hub, metres.
+        arm_length: length of each arm beyond the hub, metres.
+        arm_width: width of each arm, metres.
+    """
     if arm_width > hub:
         raise ValueError(f"arm_width must be at most hub, got {arm_width}")
     b = _LevelBuilder()
@@ -212,13 +253,20 @@ def cross_platform(hub: float = 6.0, arm_length: float = 5.0, arm_width: float =
     return b.build("cross_platform", openings, _meta(params, (0.0,)))
 
 
-def chamfered_platform(length: float = 10.0, width: float = 5.0, chamfer: float = 0.45) -> SampleLevel:
-    """A wall-less slab with its corners cut at 45 degrees, ``chamfer`` along each side.
+@validate_call
+def chamfered_platform(
+    length: PositiveFloat = 10.0, width: PositiveFloat = 5.0, chamfer: PositiveFloat = 0.45
+) -> SampleLevel:
+    """A wall-less slab with its corners cut at 45 degrees.
 
     The chamfers (``chamfer * sqrt(2)`` long) are narrower than the agent's
     diameter. Openings: the four straight sides between the chamfers.
+
+    Args:
+        length: the slab's extent along X, metres.
+        width: the slab's extent along Z, metres.
+        chamfer: how far each cut reaches along each side from the corner, metres.
     """
-    _positive(length=length, width=width, chamfer=chamfer)
     if 2 * chamfer >= min(length, width):
         raise ValueError(f"chamfer {chamfer} m does not fit the slab")
     b = _LevelBuilder()

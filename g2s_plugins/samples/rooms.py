@@ -28,6 +28,7 @@ from collections.abc import Callable
 from typing import Any
 
 import numpy as np
+from pydantic import PositiveFloat, validate_call
 
 from g2s_plugins.samples.levels import (
     NX,
@@ -36,10 +37,10 @@ from g2s_plugins.samples.levels import (
     PZ,
     WALL_HEIGHT,
     WALL_THICKNESS,
+    RampSlope,
     SampleLevel,
     _LevelBuilder,
     _no_apertures,
-    _positive,
     _ramp_meta,
     _ramp_run,
 )
@@ -97,13 +98,17 @@ def _build(name: str, rooms: list[tuple[float, float, float, float, float]],
     return b.build(name, [], meta)
 
 
-def two_rooms_one_door(size: float = 8.0, door_width: float = 2.0) -> SampleLevel:
+@validate_call
+def two_rooms_one_door(size: PositiveFloat = 8.0, door_width: PositiveFloat = 2.0) -> SampleLevel:
     """Two square rooms side by side along X, joined by one door in the middle of their shared wall.
 
     Room 0 covers [0, size]², room 1 [size + 0.2, 2 size + 0.2] x [0, size], both at y = 0.
     Expected: the door is the top chokepoint and an articulation point; two regions.
+
+    Args:
+        size: side of each square room, metres.
+        door_width: the door's clear width, metres.
     """
-    _positive(size=size, door_width=door_width)
     if door_width >= size:
         raise ValueError("door_width must be < size")
     s, t = float(size), WALL_THICKNESS
@@ -113,15 +118,22 @@ def two_rooms_one_door(size: float = 8.0, door_width: float = 2.0) -> SampleLeve
                   {"size": size, "door_width": door_width}, expected, {"cycles": 0})
 
 
-def room_with_two_doors(size: float = 8.0, narrow: float = 1.8, wide: float = 3.0) -> SampleLevel:
+@validate_call
+def room_with_two_doors(
+    size: PositiveFloat = 8.0, narrow: PositiveFloat = 1.8, wide: PositiveFloat = 3.0
+) -> SampleLevel:
     """A middle room with a narrow door to a room on -X and a wide door to a room on +X.
 
-    Rooms (each ``size`` square, y = 0): 0 the middle one, 1 on -X, 2 on +X. Door 0
-    (rooms 1-0) is ``narrow`` wide, door 1 (rooms 0-2) ``wide``; the level is
-    symmetric otherwise, so the same traffic crosses both doors and the narrow one
-    must score higher. Expected: three regions, both doors articulation points.
+    Rooms (y = 0): 0 the middle one, 1 on -X, 2 on +X. Door 0 joins rooms 1-0,
+    door 1 rooms 0-2; the level is symmetric otherwise, so the same traffic
+    crosses both doors and the narrow one must score higher. Expected: three
+    regions, both doors articulation points.
+
+    Args:
+        size: side of each square room, metres.
+        narrow: clear width of door 0, metres.
+        wide: clear width of door 1, metres.
     """
-    _positive(size=size, narrow=narrow, wide=wide)
     if not narrow < wide < size:
         raise ValueError("need narrow < wide < size")
     s, t = float(size), WALL_THICKNESS
@@ -132,14 +144,18 @@ def room_with_two_doors(size: float = 8.0, narrow: float = 1.8, wide: float = 3.
                   expected, {"cycles": 0})
 
 
-def loop_of_four_rooms(size: float = 8.0, door_width: float = 2.0) -> SampleLevel:
+@validate_call
+def loop_of_four_rooms(size: PositiveFloat = 8.0, door_width: PositiveFloat = 2.0) -> SampleLevel:
     """Four square rooms on a 2 x 2 grid, each joined to its two neighbours: one loop.
 
     Rooms (y = 0): 0 at [0, size]², 1 beside it on +X, 2 beside 0 on +Z, 3 diagonal.
     Doors: 0-1, 2-3 (on +X sides), 0-2, 1-3 (on +Z sides), centred on the walls.
     Expected: four regions, four chokepoints, no articulation points.
+
+    Args:
+        size: side of each square room, metres.
+        door_width: clear width of every door, metres.
     """
-    _positive(size=size, door_width=door_width)
     if door_width >= size:
         raise ValueError("door_width must be < size")
     s, t = float(size), WALL_THICKNESS
@@ -152,18 +168,25 @@ def loop_of_four_rooms(size: float = 8.0, door_width: float = 2.0) -> SampleLeve
                   expected, {"cycles": 1})
 
 
+@validate_call
 def floors_joined_by_ramp(
-    size: float = 10.0, upper_height: float = 3.0, ramp_width: float = 2.5, slope_deg: float = 20.0
+    size: PositiveFloat = 10.0, upper_height: PositiveFloat = 3.0, ramp_width: PositiveFloat = 2.5,
+    slope_deg: RampSlope = 20.0,
 ) -> SampleLevel:
     """A ground room, a walled ramp up along +X, and an upper room at ``upper_height``.
 
     Room 0 covers [0, size]² at y = 0, room 1 [size + run, 2 size + run] x [0, size]
     at y = ``upper_height`` (run = upper_height / tan(slope_deg)); the ramp,
-    ``ramp_width`` wide and centred on z = size / 2, joins gaps in the rooms' facing
-    walls. Expected: two regions on two floors, the ramp a chokepoint between them
-    and an articulation point. Metadata ``ramp`` as in ``corridor_with_ramp``.
+    centred on z = size / 2, joins gaps in the rooms' facing walls. Expected: two
+    regions on two floors, the ramp a chokepoint between them and an articulation
+    point. Metadata ``ramp`` as in ``corridor_with_ramp``.
+
+    Args:
+        size: side of each square room, metres.
+        upper_height: height of the upper room's floor above the ground room's, metres.
+        ramp_width: the ramp's width, metres.
+        slope_deg: the ramp's slope, degrees (the design agent walks up to 45).
     """
-    _positive(size=size, upper_height=upper_height, ramp_width=ramp_width)
     if ramp_width >= size:
         raise ValueError("ramp_width must be < size")
     run = _ramp_run(upper_height, slope_deg)
