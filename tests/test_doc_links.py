@@ -70,3 +70,8 @@ def test_the_reference_doc_names_every_built_in_plugin(stage: str):
     missing = [p.name for p in installed().plugins(stage) if p.package == DISTRIBUTION
                and f"`{p.name}`" not in text and f"`--executor {p.name}`" not in text]
     assert not missing, f"docs/{REFERENCE[stage]} does not name the {stage} plugins {missing}"
+
+
+def test_the_readme_lists_every_doc():
+    readme = (PROJECT / "README.md").read_text(encoding="utf-8").split("## Documentation", 1)[1]
+    assert [d.name for d in DOCS[1:] if f"`docs/{d.name}`" not in readme] == []
