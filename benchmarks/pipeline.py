@@ -3,8 +3,8 @@ Python user would otherwise reach for.
 
 Run: ``.venv/bin/python benchmarks/pipeline.py [--rooms 120 600 2400 12000] [--timeout 120]``
 
-For each dungeon (leaf terminals, the map-analysis preset with the ``mehlhorn``
-Steiner solver unless ``--steiner kou``) it prints:
+For each dungeon (the map-analysis preset, its Steiner solver replaced by
+``--steiner``, ``mehlhorn`` by default) it prints:
 - g2s's time per stage (steps 1-5 and the analysis);
 - peers on the same initial graph and terminals: networkx ``steiner_tree``
   (kou, mehlhorn), rustworkx ``steiner_tree``; on the same final tree,

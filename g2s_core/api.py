@@ -152,7 +152,7 @@ def run(
         progress: called with a short message as each stage starts.
         **overrides: config keys and their new values, as ``g2s run --set``
             takes them: ``agent={"radius": 0.4}`` (mappings merge) or dotted,
-            ``**{"terminals.params.k": 20}``.
+            ``**{"terminals.params.radius": 8.0}``.
 
     Returns:
         The :class:`~g2s_core.model.RunResult`: ``graph``, ``terminals``,

@@ -3,7 +3,8 @@
 Exit codes: 0 success; 2 bad input or config (one line on stderr, no
 traceback), or a plugin that could not be loaded, raised an exception or
 returned a wrong result (one line naming the plugin and its package); 1 internal
-error of g2s (``--verbose`` shows the traceback).
+error of g2s (``--verbose`` shows the traceback); 130 interrupted (Ctrl-C);
+``g2s batch`` also 4 when some (config, level) pairs failed.
 """
 
 from __future__ import annotations
@@ -36,7 +37,7 @@ from g2s_core.registry import installed, plugin_parameters
 from g2s_core.stages import STAGES
 from g2s_core.summary import final_graph, metric_lines, roots_of, stage_rows
 
-EXIT_CODES = "exit codes: 0 success, 2 bad input or config, or a plugin that failed (named with its package), 1 internal error of g2s"
+EXIT_CODES = "exit codes: 0 success, 2 bad input or config or a failed plugin (named with its package), 1 internal error, 130 interrupted"
 
 __all__ = ["main", "stage_table"]
 
@@ -45,7 +46,7 @@ def _parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="g2s",
         description="Graph2Structure: extract a hierarchical structure of navigable paths from level geometry.",
-        epilog=EXIT_CODES,
+        epilog=f"{EXIT_CODES}; g2s batch also 4 when some pairs failed",
     )
     parser.add_argument("-v", "--verbose", action="store_true", help="show tracebacks of internal errors")
     parser.add_argument("--version", action="version", version=f"g2s {version()}")
@@ -104,7 +105,7 @@ def _parser() -> argparse.ArgumentParser:
                                   help="list installed plugins and their parameters, and broken ones")
     plugins.add_argument("--stage", choices=[stage.key for stage in STAGES], help="only this stage")
 
-    demo = commands.add_parser("demo", parents=[common], help="run the full pipeline on the built-in dungeon sample")
+    demo = commands.add_parser("demo", parents=[common], help="run the full pipeline on the built-in dungeon sample", epilog=EXIT_CODES)
     demo.add_argument("-o", "--outdir", type=Path, default=Path("g2s-demo"), help="folder for the results (default: g2s-demo)")
     demo.add_argument("--rooms", type=int, default=12, help="rooms in the generated dungeon (default: 12)")
     demo.add_argument("--seed", type=int, default=0, help="seed of the generated dungeon (default: 0)")
@@ -121,7 +122,7 @@ def _add_output_options(command: argparse.ArgumentParser) -> None:
         f"(default: the config's, else {','.join(DEFAULT_FORMATS)})",
     )
     command.add_argument("--set", action="append", default=[], metavar="KEY=VALUE", dest="overrides",
-                         help="override a config value, e.g. --set agent.radius=0.4 --set terminals.params.top_k=20 "
+                         help="override a config value, e.g. --set agent.radius=0.4 --set mesh.scale=0.01 "
                          "(repeatable; the value is read as YAML)")
     command.add_argument("--force", action="store_true", help="replace results already in the output folder")
     command.add_argument("-q", "--quiet", action="store_true", help="no progress, tables or file list")

@@ -208,10 +208,14 @@ def _deep_merge(base: dict[str, Any], override: dict[str, Any]) -> dict[str, Any
     """
     merged = dict(base)
     for key, value in override.items():
-        current = merged.get(key)
-        same = isinstance(current, dict) and isinstance(value, dict) and value.get("plugin", current.get("plugin")) == current.get("plugin")
-        merged[key] = _deep_merge(current, value) if same else value
+        merged[key] = _merged_value(merged.get(key), value)
     return merged
+
+
+def _merged_value(current: Any, value: Any) -> Any:
+    """``value`` on top of ``current``: merged when both are mappings naming the same plugin (or none), else ``value``."""
+    same = isinstance(current, dict) and isinstance(value, Mapping) and value.get("plugin", current.get("plugin")) == current.get("plugin")
+    return _deep_merge(current, dict(value)) if same else value
 
 
 def load_raw_config(path: str | Path, _chain: tuple[Path, ...] = (), sources: list[Path] | None = None) -> dict[str, Any]:
@@ -362,7 +366,8 @@ def parse_assignment(text: str, source: str = "--set") -> tuple[str, Any]:
 def set_key(data: dict[str, Any], key: str, value: Any, source: str) -> dict[str, Any]:
     """A copy of the raw config ``data`` with the dotted ``key`` set to ``value``.
 
-    A mapping ``value`` merges into a mapping already there; list items are
+    A mapping ``value`` merges into a mapping already there (not a stage
+    section naming another plugin, which it replaces); list items are
     addressed by index (``analyzers.0.params``). Keys are checked against
     :class:`RunConfig` down to the plugins' ``params``, which the plugin's own
     model checks later.
@@ -387,8 +392,7 @@ def set_key(data: dict[str, Any], key: str, value: Any, source: str) -> dict[str
             part = str(part)
         current = container[part] if isinstance(container, list) or part in container else None
         if last:
-            merge = isinstance(value, Mapping) and isinstance(current, dict)
-            container[part] = _deep_merge(current, dict(value)) if merge else value
+            container[part] = _merged_value(current, value)
         else:
             if not isinstance(current, (dict, list)):
                 current = container[part] = {}

@@ -117,10 +117,10 @@ def describe_validation_error(exc: ValidationError, model: type[BaseModel], pref
         return f"{path}: expected a mapping, got {show(error.get('input'))}"
     if kind == "finite_number":
         return f"{path}: expected a finite number, got {show(error.get('input'))}"
-    info = _field_at(model, loc)
-    if info is not None:
+    if (info := _field_at(model, loc)) is not None:
         return f"{path}: expected {describe_field(info)}, got {show(error.get('input'))}"
-    return f"{path}: {error['msg'][0].lower()}{error['msg'][1:]}, got {show(error.get('input'))}"
+    got = "" if isinstance(error.get("input"), dict) else f", got {show(error.get('input'))}"  # a check of the whole mapping
+    return f"{path}: {error['msg'][0].lower()}{error['msg'][1:]}{got}"
 
 
 def _nested_model(info: FieldInfo | None) -> type[BaseModel] | None:

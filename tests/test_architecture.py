@@ -62,6 +62,19 @@ def test_the_documented_stage_table_is_the_code_table():
     assert rows == [(stage.key, stage.title, stage.hook) for stage in STAGES]
 
 
+def test_the_pipeline_picture_names_every_built_in_plugin():
+    from g2s_core import DISTRIBUTION
+    from g2s_core.registry import installed
+
+    text = (PROJECT / "docs" / "architecture.md").read_text()
+    picture = text.split("The pipeline (the paper's Algorithm 1)", 1)[1].split("## The stage table", 1)[0]
+    listed = [set(group.split(" | ")) for group in re.findall(r"\(([a-z_]+(?: \| [a-z_]+)*)\)", picture)]
+    stages = ["graph", "terminals", "steiner", "loops", "roots", "simplify", "analyzers", "evaluators", "outputs",
+              "readers", "executors"]
+    built_in = [{p.name for p in installed().plugins(stage) if p.package == DISTRIBUTION} for stage in stages]
+    assert listed == built_in
+
+
 def test_the_documented_example_plugins_register_and_work(tmp_path):
     import types
 

@@ -140,3 +140,13 @@ def test_set_key_merges_mappings_indexes_lists_and_leaves_the_input_alone():
     assert raw == {"agent": {"radius": 0.5, "height": 2.0}, "analyzers": [{"plugin": "degree"}]}
     assert parse_assignment("graph.plugin=navmesh") == ("graph.plugin", "navmesh")
     assert parse_assignment("stop_after=") == ("stop_after", None)
+
+
+def test_set_replaces_a_stage_section_naming_another_plugin_as_extends_does():
+    from g2s_core.config import resolve_config
+
+    config, _ = resolve_config("map_analysis", {"terminals": {"plugin": "leaves"}})
+    assert config.terminals.plugin == "leaves" and config.terminals.params == {}
+    same, _ = resolve_config("map_analysis", {"terminals": {"params": {"radius": 4.0}}})
+    assert same.terminals.plugin == "coverage" and same.terminals.params["radius"] == 4.0
+    assert same.terminals.params["traffic_weight"] == 0.1

@@ -122,6 +122,16 @@ def test_parameter_errors_are_one_line(params, message):
     assert str(caught.value) == message
 
 
+def test_a_check_of_the_whole_mapping_is_reported_without_the_mapping():
+    from g2s_plugins.terminals import metric
+
+    registry = Registry()
+    info = registry.register(metric, package="p", entry_point="e")
+    with pytest.raises(ConfigError) as caught:
+        registry.validate_params(info, {"top_k": 2, "min_degree": 3, "max_degree": 2}, "terminals.params")
+    assert str(caught.value) == "terminals.params: min_degree (3) is larger than max_degree (2); no node can pass"
+
+
 def test_parameter_help_comes_from_the_declaration():
     info = Registry().register(terminal_plugin(), package="p", entry_point="e")
     assert list(plugin_parameters(info)) == [("k", "an integer >= 1", "5", "how many nodes to keep")]
