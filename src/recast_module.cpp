@@ -41,6 +41,7 @@
 #include <string>
 #include <thread>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 namespace nb = nanobind;
@@ -114,6 +115,16 @@ constexpr int AUTO_SOLO_MAX_CELLS = 512;
 constexpr int AUTO_TILE_SIZE = 256;
 constexpr int MIN_TILE_SIZE = 16;
 
+// Recast's region partitions (step 4 of build_tile).
+enum class Partition { watershed, monotone, layers };
+
+Partition parse_partition(const std::string& name) {
+    if (name == "watershed") return Partition::watershed;
+    if (name == "monotone") return Partition::monotone;
+    if (name == "layers") return Partition::layers;
+    throw nb::value_error(("Recast: partition must be 'watershed', 'monotone' or 'layers', got '" + name + "'").c_str());
+}
+
 struct Settings {
     double cell_size, cell_height;
     double agent_height, agent_radius, agent_max_climb, agent_max_slope;
@@ -125,6 +136,7 @@ struct Settings {
     int tile_size;  // -1: automatic, 0: solo, > 0: tiles of this many cells
     int threads;    // worker threads of a tiled build; 0: hardware concurrency
     bool filter_low_hanging_obstacles, filter_ledge_spans, filter_low_height_spans;
+    Partition partition;
 };
 
 // Limits of Recast 1.5.1's voxel settings: compact spans store their height in
@@ -184,7 +196,35 @@ struct TileMesh {
     std::unique_ptr<unsigned char, DtFreeDel> data;  // dtCreateNavMeshData output
     int data_size = 0;
     std::string empty_reason;             // why the tile has no polygons (npolys == 0)
+    std::vector<float> overlaps;          // (K,3) world: a span of each region that overlaps itself in plan
 };
+
+// One span (world x, floor y, z) of each region of `chf` that holds two spans of one
+// column: a region overlapping itself in plan, which Recast's contours (traced in
+// plan) cannot describe. Regions in order of first sight, scanning rows of columns.
+std::vector<float> self_overlapping_regions(const rcCompactHeightfield& chf) {
+    std::vector<float> found;
+    std::unordered_set<unsigned short> seen;
+    for (int z = 0; z < chf.height; ++z) {
+        for (int x = 0; x < chf.width; ++x) {
+            const rcCompactCell& cell = chf.cells[x + z * chf.width];
+            const int end = static_cast<int>(cell.index + cell.count);
+            for (int i = static_cast<int>(cell.index); i < end; ++i) {
+                const unsigned short reg = chf.spans[i].reg;
+                if (reg == 0 || (reg & RC_BORDER_REG) || seen.count(reg)) continue;
+                for (int j = i + 1; j < end; ++j) {
+                    if (chf.spans[j].reg != reg) continue;
+                    seen.insert(reg);
+                    found.insert(found.end(), {chf.bmin[0] + (static_cast<float>(x) + 0.5f) * chf.cs,
+                                               chf.bmin[1] + static_cast<float>(chf.spans[i].y) * chf.ch,
+                                               chf.bmin[2] + (static_cast<float>(z) + 0.5f) * chf.cs});
+                    break;
+                }
+            }
+        }
+    }
+    return found;
+}
 
 // Input shared by every tile of a build.
 struct Input {
@@ -239,10 +279,23 @@ void build_tile(const Input& in, const int* tris, int ntris, const rcConfig& c, 
         return;
     }
 
-    // 4. Watershed regions.
-    if (!rcBuildDistanceField(&ctx, *chf)) fail("rcBuildDistanceField failed", &ctx, where);
-    if (!rcBuildRegions(&ctx, *chf, c.borderSize, c.minRegionArea, c.mergeRegionArea))
-        too_big("rcBuildRegions failed");
+    // 4. Regions. Only watershed reads the distance field; layer regions have no merge step.
+    switch (s.partition) {
+    case Partition::watershed:
+        if (!rcBuildDistanceField(&ctx, *chf)) fail("rcBuildDistanceField failed", &ctx, where);
+        if (!rcBuildRegions(&ctx, *chf, c.borderSize, c.minRegionArea, c.mergeRegionArea))
+            too_big("rcBuildRegions failed");
+        break;
+    case Partition::monotone:
+        if (!rcBuildRegionsMonotone(&ctx, *chf, c.borderSize, c.minRegionArea, c.mergeRegionArea))
+            too_big("rcBuildRegionsMonotone failed");
+        break;
+    case Partition::layers:
+        if (!rcBuildLayerRegions(&ctx, *chf, c.borderSize, c.minRegionArea))
+            too_big("rcBuildLayerRegions failed");
+        break;
+    }
+    out.overlaps = self_overlapping_regions(*chf);
 
     // 5. Contours, polygons, detail.
     std::unique_ptr<rcContourSet, ContourDel> cset(rcAllocContourSet());
@@ -352,6 +405,7 @@ public:
     std::vector<int32_t> dtri_poly;     // (DT,)
     std::vector<int64_t> portal_pairs;  // (E,2) a < b, sorted
     std::vector<double> portal_ends;    // (E,2,3) shared segment end points, along a's edge
+    std::vector<double> overlaps;       // (K,3) a span of each region overlapping itself, tile by tile
     int npolys = 0;
 
     // Resolved Recast configuration and tiling.
@@ -663,6 +717,7 @@ void NavMeshCore::assemble(std::vector<std::unique_ptr<TileMesh>>& tiles) {
     areas.resize(static_cast<size_t>(total));
     regions.resize(static_cast<size_t>(total));
     dverts.clear();
+    overlaps.clear();
     dverts.reserve(static_cast<size_t>(total_dverts) * 3);
     dtris.clear();
     dtris.reserve(static_cast<size_t>(total_dtris) * 3);
@@ -726,6 +781,7 @@ void NavMeshCore::assemble(std::vector<std::unique_ptr<TileMesh>>& tiles) {
         for (float v : t.dverts) dverts.push_back(static_cast<double>(v));
         for (int32_t v : t.dtris) dtris.push_back(v + dbase);
         for (int32_t p : t.dpoly) dtri_poly.push_back(p + first);
+        overlaps.insert(overlaps.end(), t.overlaps.begin(), t.overlaps.end());
         first += t.npolys;
         tp.reset();  // free the tile's copy as we go
     }
@@ -976,12 +1032,13 @@ NavMeshCore* build_navmesh(nb::ndarray<const V, nb::shape<-1, 3>, nb::c_contig, 
                            int verts_per_poly, double detail_sample_dist, double detail_sample_max_error,
                            long long max_cells, std::optional<int> tile_size, int threads,
                            bool filter_low_hanging_obstacles, bool filter_ledge_spans,
-                           bool filter_low_height_spans) {
+                           bool filter_low_height_spans, const std::string& partition) {
     Settings s{cell_size, cell_height, agent_height, agent_radius, agent_max_climb, agent_max_slope,
                region_min_size, region_merge_size, edge_max_len, edge_max_error, verts_per_poly,
                detail_sample_dist, detail_sample_max_error, max_cells,
                tile_size ? *tile_size : -1, threads,
-               filter_low_hanging_obstacles, filter_ledge_spans, filter_low_height_spans};
+               filter_low_hanging_obstacles, filter_ledge_spans, filter_low_height_spans,
+               parse_partition(partition)};
     if (tile_size && *tile_size < 0) throw nb::value_error("Recast: tile_size must be None (automatic), 0 (solo) or >= 16 cells");
     check_settings(s);
     const size_t nv = vertices.shape(0), nt = faces.shape(0);
@@ -1019,7 +1076,7 @@ void def_build(nb::module_& m) {
           nb::arg("detail_sample_dist") = 6.0, nb::arg("detail_sample_max_error") = 1.0,
           nb::arg("max_cells") = 100000000LL, nb::arg("tile_size") = nb::none(), nb::arg("threads") = 0,
           nb::arg("filter_low_hanging_obstacles") = true, nb::arg("filter_ledge_spans") = true,
-          nb::arg("filter_low_height_spans") = true,
+          nb::arg("filter_low_height_spans") = true, nb::arg("partition") = "watershed",
           nb::rv_policy::take_ownership,
           "Build a navmesh from (N,3) vertices and (M,3) triangle faces. World-unit settings, "
           "derived into Recast's voxel configuration as Recast's demo does. tile_size: None "
@@ -1027,7 +1084,9 @@ void def_build(nb::module_& m) {
           "else tiles of 256 cells), 0 (solo) or the tile side in cells (>= 16). threads: "
           "worker threads of a tiled build (0: hardware concurrency). max_cells: most xz cells "
           "rasterised at once (the solo grid, or one tile with its border). filter_*: run Recast's "
-          "rcFilterLowHangingWalkableObstacles / rcFilterLedgeSpans / rcFilterWalkableLowHeightSpans.");
+          "rcFilterLowHangingWalkableObstacles / rcFilterLedgeSpans / rcFilterWalkableLowHeightSpans. "
+          "partition: Recast's region partition, 'watershed' (rcBuildRegions), 'monotone' "
+          "(rcBuildRegionsMonotone) or 'layers' (rcBuildLayerRegions).");
 }
 
 using Vec3In = std::array<double, 3>;
@@ -1084,6 +1143,10 @@ NB_MODULE(_recast, m) {
         .def_prop_ro("portal_endpoints",
                      [](const NavMeshCore& n) { return to_numpy(n.portal_ends, n.portal_ends.size() / 6, 2, 3); },
                      "(E,2,3) float64: end points of the segment the pair shares, along a's edge")
+        .def_prop_ro("region_overlaps",
+                     [](const NavMeshCore& n) { return to_numpy(n.overlaps, n.overlaps.size() / 3, 3); },
+                     "(K,3) float64: a span (world x, floor y, z) of each Recast region that overlaps itself "
+                     "in plan, tile by tile")
         .def_prop_ro("tile_size", [](const NavMeshCore& n) { return n.tile_size; },
                      "tile side in cells; 0 for a solo navmesh")
         .def_prop_ro("tile_count", [](const NavMeshCore& n) { return static_cast<int>(n.tile_first.size()); },

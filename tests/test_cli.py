@@ -55,6 +55,9 @@ def test_bad_plugin_parameter(tmp_path):
     config.write_text("extends: graph_only\ngraph: {plugin: navmesh, params: {cell_size: -1}}\n")
     assert_user_error(g2s("run", str(config), "sample:straight_corridor", "-o", str(tmp_path / "out")),
                       "graph.params.cell_size: expected")
+    config.write_text("extends: graph_only\ngraph: {plugin: navmesh, params: {partition: spiral}}\n")
+    assert_user_error(g2s("run", str(config), "sample:straight_corridor", "-o", str(tmp_path / "out")),
+                      "graph.params.partition: expected one of 'watershed', 'monotone', 'layers', got 'spiral'")
 
 
 def test_missing_mesh_and_unknown_sample(tmp_path):

@@ -214,3 +214,20 @@ def test_segment_surface_gaps_on_a_slab():
     assert gaps[3] == math.inf  # runs off the slab
     # one segment at a time (the surface_los predicate's call): the same values
     assert [nm.segment_surface_gap(a, b, step=0.1, reach=1.0) for a, b in zip(A.tolist(), B.tolist())] == gaps.tolist()
+
+
+def test_overlapping_regions_are_warned_about():
+    stairwell = levels.SAMPLES["building"]()  # 3 storeys: watershed makes one region of the stairwell
+    design = stairwell.metadata["design_agent"]
+    agent = types.SimpleNamespace(radius=design["radius"], height=design["height"],
+                                  max_climb=design["max_climb"], max_slope=design["max_slope_deg"])
+    _, watershed = run(stairwell.mesh, agent=agent)
+    (warning,) = watershed.warnings
+    x, y, z = watershed.navmesh.region_overlaps[0]
+    assert warning.startswith("graph: Recast's watershed partition made 1 region that overlaps itself in plan")
+    assert f"({x:.1f}, {y:.1f}, {z:.1f}) m" in warning and warning.endswith(
+        "set graph.params.partition: layers (docs/navmesh.md)")
+    _, layers = run(stairwell.mesh, plugin.Params(partition="layers"), agent=agent)
+    assert layers.warnings == [] and len(layers.navmesh.region_overlaps) == 0
+    _, flat = run(level())
+    assert flat.warnings == []

@@ -13,6 +13,7 @@ import pytest
 import trimesh
 
 from g2s_plugins.recast import FLT_MAX, NavMesh, RecastParams, SettingsError, _recast, build_navmesh, resolve_settings
+from g2s_plugins.samples.buildings import building
 
 AGENT = types.SimpleNamespace(radius=0.3, height=2.0, max_climb=0.4, max_slope=45.0)
 
@@ -612,3 +613,56 @@ def test_filter_switches_reach_recast():
     on = build(mesh)
     off = build(mesh, filter_low_hanging_obstacles=False, filter_ledge_spans=False, filter_low_height_spans=False)
     assert off.areas.sum() > on.areas.sum() * 1.02
+
+
+# ------------------------------------------------------------------ region partitions
+
+PARTITIONS = ("watershed", "monotone", "layers")
+
+
+@pytest.mark.parametrize("partition", PARTITIONS)
+def test_every_partition_builds_a_walkable_navmesh(partition):
+    mesh = trimesh.util.concatenate([floor(10, 10), slab((0.5, 3, 6), (0, 1.5, -2))])
+    nm = build(mesh, partition=partition)
+    walkable = 10 * 10 - 0.5 * 6
+    assert adjacency_components(nm) == 1
+    assert walkable * 0.75 < nm.areas.sum() < walkable
+    assert len(nm.region_overlaps) == 0
+
+
+@pytest.fixture(scope="module")
+def three_storeys():
+    level = building()  # 3 storeys, one switchback stairwell
+    return level, level.metadata["design_agent"]
+
+
+def centre_height_jumps(nm: NavMesh) -> np.ndarray:
+    """(E,) |dy| between the centres (on the detail surface) of each pair of neighbour polygons, m."""
+    pairs = nm.portals().pairs
+    return np.abs(nm.centres[pairs[:, 0], 1] - nm.centres[pairs[:, 1], 1])
+
+
+@pytest.mark.parametrize("tile_size", [None, 128])
+def test_layers_and_monotone_do_not_join_storeys_of_a_stairwell(three_storeys, tile_size):
+    level, design = three_storeys
+    agent = types.SimpleNamespace(radius=design["radius"], height=design["height"],
+                                  max_climb=design["max_climb"], max_slope=design["max_slope_deg"])
+    meshes = {p: build(level.mesh, agent, partition=p, tile_size=tile_size) for p in PARTITIONS}
+    assert meshes["watershed"].tile_count == (1 if tile_size is None else 2)
+    # watershed: one region of the stairwell overlaps itself, polygons 5 m apart are neighbours
+    (overlap,) = meshes["watershed"].region_overlaps
+    (well,) = level.metadata["stairwells"]
+    assert well["x0"] < overlap[0] < well["x1"] and well["z0"] < overlap[2] < well["z1"]
+    assert centre_height_jumps(meshes["watershed"]).max() > 5.0
+    for partition in ("monotone", "layers"):
+        nm = meshes[partition]
+        assert len(nm.region_overlaps) == 0 and adjacency_components(nm) == 1
+        assert centre_height_jumps(nm).max() <= agent.height, partition
+
+
+def test_partition_is_validated():
+    with pytest.raises(pydantic.ValidationError):
+        RecastParams(partition="spiral")
+    assert resolve_settings(AGENT, RecastParams(partition="layers"))["partition"] == "layers"
+    with pytest.raises(ValueError, match="partition must be"):
+        _recast.build(floor(4, 4).vertices, floor(4, 4).faces, **{**resolve_settings(AGENT), "partition": "spiral"})

@@ -6,7 +6,10 @@ under both presets, and the shared nav_test level under the map-analysis one
 edges over crests and troughs go through portal nodes (the navmesh builder's
 ``max_edge_gap``) and collapses stay within ``max_surface_gap`` of the
 surface (``surface_los``); this checks what the two give together, probing
-every 0.1 m along each edge between on-navmesh nodes.
+every 0.1 m along each edge between on-navmesh nodes. The default building's
+watershed navmesh joins its storeys (a known Recast defect); with
+``graph.params.partition: layers`` it does not, but the structure still fails
+the check for another known cause (:data:`LAYERED_BUILDING_CORNER_CUTS`).
 """
 
 from __future__ import annotations
@@ -14,7 +17,7 @@ from __future__ import annotations
 import pytest
 
 from g2s_core import pipeline
-from g2s_core.config import PRESETS_DIR, load_config
+from g2s_core.config import PRESETS_DIR, load_config, load_raw_config, parse_config, set_key
 from g2s_core.mesh import load_mesh
 from g2s_core.registry import Registry
 from g2s_plugins._surface import edge_surface_gaps
@@ -27,7 +30,8 @@ PRESETS = ("map_piece", "map_analysis")
 
 KNOWN_RECAST_SHORTCUTS = {
     ("building", "map_analysis"): "Recast's watershed makes one region of a switchback stairwell across three storeys "
-    "and joins its polygons 5 m apart in height; the structure follows those navmesh edges (docs/samples.md, building)",
+    "and joins its polygons 5 m apart in height; the structure follows those navmesh edges (docs/samples.md, building); "
+    "graph.params.partition: layers avoids it (test_layered_building_stays_on_the_surface)",
 }
 """Cases that fail for a known defect outside the structure, with its cause; strict: they must keep failing."""
 
@@ -59,3 +63,17 @@ def test_nav_test_structure_stays_on_the_surface(plans, shared_data) -> None:
     registry, plan = plans[0], plans[1]["map_analysis"]
     mesh, _ = load_mesh(shared_data / "nav_test.obj")
     assert _largest_gap(registry, plan, mesh, "nav_test") <= LIMIT
+
+LAYERED_BUILDING_CORNER_CUTS = (
+    "with layers the storeys stay apart, but two navmesh edges between neighbour polygons (0-53 and 63-90) cut a "
+    "corner of the navmesh boundary over less than the crest rule's 0.25 m probe spacing (agent radius / 2), so "
+    "the builder keeps them straight and the 0.1 m probes here find them leaving the surface (measured)"
+)
+
+
+@pytest.mark.xfail(strict=True, reason=LAYERED_BUILDING_CORNER_CUTS)
+def test_layered_building_stays_on_the_surface(plans) -> None:
+    registry = plans[0]
+    raw = set_key(load_raw_config(PRESETS_DIR / "map_analysis.yaml"), "graph.params.partition", "layers", "test")
+    plan = pipeline.plan(parse_config(raw), registry)
+    assert _largest_gap(registry, plan, SAMPLES["building"]().mesh, "building") <= LIMIT

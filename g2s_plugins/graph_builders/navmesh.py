@@ -22,6 +22,14 @@ node* instead: at the shared segment's midpoint on the detail surface,
 Portal nodes are numbered after the polygons, in the order of their pairs.
 ``max_edge_gap: null`` gives the paper's graph (one edge per pair).
 
+Overlapping regions: Recast's watershed partition can make one region of
+a switchback stairwell over several storeys, which overlaps itself in plan;
+its polygons then join floors metres apart in height and take another
+floor's heights. The builder warns, with the count and the first such
+region's position, when the navmesh has any
+(:attr:`g2s_plugins.recast.NavMesh.region_overlaps`); ``partition: layers``
+or ``monotone`` never makes them (docs/navmesh.md).
+
 Nodes are inserted by polygon index, then the portal nodes; edges sorted by ``(a, b)``, then
 each portal node's two.
 """
@@ -154,6 +162,18 @@ def _distance(graph: nx.Graph, u: int, v: int) -> float:
     return math.dist(graph.nodes[u]["pos"], graph.nodes[v]["pos"])
 
 
+def overlapping_regions_warning(overlaps: np.ndarray, partition: str) -> str:
+    """The warning for (K,3) ``overlaps`` (:attr:`NavMesh.region_overlaps`, K > 0) of a ``partition`` build."""
+    count = len(overlaps)
+    x, y, z = (float(v) for v in overlaps[0])
+    regions = "1 region that overlaps itself" if count == 1 else f"{count} regions that overlap themselves"
+    return (
+        f"graph: Recast's {partition} partition made {regions} in plan (a stairwell over several storeys?), "
+        f"the first at ({x:.1f}, {y:.1f}, {z:.1f}) m: polygons there may join floors metres apart in height "
+        f"and sit off the floor; set graph.params.partition: layers (docs/navmesh.md)"
+    )
+
+
 @hookimpl
 def g2s_build_graph(mesh, params, context):
     """Build the navmesh of ``mesh`` for ``context.agent`` and return its polygon graph.
@@ -176,6 +196,8 @@ def g2s_build_graph(mesh, params, context):
             ) from exc
         raise no_walkable_surface(mesh, context.agent, str(exc)) from exc
     context.navmesh = navmesh
+    if len(navmesh.region_overlaps):
+        context.warn(overlapping_regions_warning(navmesh.region_overlaps, params.partition))
     graph = navmesh_graph(navmesh, context.agent, params.max_edge_gap)
     check_walkable_surface(graph, mesh, context)
     return graph

@@ -70,6 +70,11 @@ class NavMesh:
     ``normals``         (P,3) float64, area-weighted unit normal of the
                         polygon's detail triangles, +Y side.
     ``areas``           (P,) float64, m², sum of the detail triangle areas.
+    ``region_overlaps`` (K,3) float64, one span (x, floor y, z) of each Recast
+                        region holding two spans of one xz column: a region
+                        overlapping itself in plan, whose contours (traced in
+                        plan) join floors of different heights. Only the
+                        ``watershed`` partition makes them; tile by tile.
 
     Polygon index ``i`` is Detour polygon ``poly_ref(i)``. Polygons are
     numbered tile by tile (row-major tiles); tiles share equal border vertices.
@@ -86,6 +91,7 @@ class NavMesh:
         self.detail_vertices: np.ndarray = core.detail_vertices
         self.detail_triangles: np.ndarray = core.detail_triangles
         self.detail_polygon: np.ndarray = core.detail_polygon
+        self.region_overlaps: np.ndarray = core.region_overlaps
         self.centres, self.normals, self.areas = _surface(
             self.polygon_count, self.vertices, self.polygons,
             self.detail_vertices, self.detail_triangles, self.detail_polygon,

@@ -22,7 +22,7 @@ Voxel values are derived in single precision exactly as Recast's demo does
 
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, Literal
 
 import numpy as np
 from pydantic import ConfigDict, Field, field_validator
@@ -104,6 +104,13 @@ class RecastParams(PluginParams):
     )
     filter_low_height_spans: bool = Field(
         True, description="Recast's rcFilterWalkableLowHeightSpans: drop spans with less head room than the agent"
+    )
+    partition: Literal["watershed", "monotone", "layers"] = Field(
+        "watershed",
+        description="Recast's region partition: watershed (rcBuildRegions: the best polygons, but it can make "
+        "one self-overlapping region of a stairwell over several storeys), monotone (rcBuildRegionsMonotone: "
+        "fastest, never overlaps, long thin polygons) or layers (rcBuildLayerRegions: never overlaps, "
+        "better polygons than monotone); see docs/navmesh.md",
     )
     max_cells: int = Field(
         100_000_000,
@@ -207,6 +214,7 @@ def resolve_settings(agent: Any, params: RecastParams | None = None) -> dict[str
         filter_low_hanging_obstacles=bool(p.filter_low_hanging_obstacles),
         filter_ledge_spans=bool(p.filter_ledge_spans),
         filter_low_height_spans=bool(p.filter_low_height_spans),
+        partition=p.partition,
     )
     _check_voxels(settings, keys, cs_given=p.cell_size is not None, ch_given=p.cell_height is not None)
     return settings
