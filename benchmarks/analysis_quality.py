@@ -1,6 +1,6 @@
 """How well map-analysis presets show where people walk (issue 9's measures).
 
-Run: ``.venv/bin/python benchmarks/analysis_quality.py [--presets map_analysis_paper map_analysis]
+Run: ``.venv/bin/python benchmarks/analysis_quality.py [--presets map_analysis_paper map_analysis my.yaml]
 [--levels nav_test samples dungeon_1k dungeon_20k dungeon_100k terrain_1k terrain_20k building_1k building_20k]
 [--seeds 0 1 2]``
 
@@ -18,7 +18,10 @@ a share of the polygons, the run's CPU time (``time.process_time``: the
 machine is shared; the evaluation included), the wall time of every stage
 but the evaluation ("total s") and that of the evaluation, which computes
 the reference flow (exact up to 512 nodes, 512 area-sampled sources above)
-for each run. This is a benchmark: nothing here asserts a target.
+for each run, and the number of navmesh regions that overlap themselves in plan
+("overlap", :attr:`g2s_plugins.recast.NavMesh.region_overlaps`; "-" without a
+navmesh). ``--presets`` takes preset names or config files (a file extending a
+preset with other parameters). This is a benchmark: nothing here asserts a target.
 """
 
 from __future__ import annotations
@@ -33,7 +36,7 @@ from pathlib import Path
 import trimesh
 
 from g2s_core import pipeline
-from g2s_core.config import PRESETS_DIR, load_raw_config, parse_config, with_evaluators
+from g2s_core.config import find_config, load_raw_config, parse_config, with_evaluators
 from g2s_core.mesh import load_mesh, mesh_sha256
 from g2s_core.registry import Registry
 from g2s_plugins import evaluation, traffic
@@ -84,10 +87,10 @@ def main() -> None:
     args = parser.parse_args()
     print(f"machine: {platform.machine()}, {os.cpu_count()} cores, load average {os.getloadavg()[0]:.1f}")
     registry = Registry.from_entry_points()
-    plans = {p: pipeline.plan(parse_config(with_evaluators(load_raw_config(PRESETS_DIR / f"{p}.yaml"), ["traffic"]), p),
-                              registry, p) for p in args.presets}
+    plans = {Path(p).stem: pipeline.plan(parse_config(with_evaluators(load_raw_config(find_config(p)), ["traffic"]), p),
+                                         registry, p) for p in args.presets}
     header = (f"{'level':<18} {'preset':<28} {'polys':>7} {'<=3m':>6} {'<=6m':>6} {'<=10m':>6} {'off>5m':>7} "
-              f"{'rho':>6} {'rho_abw':>7} {'ceiling':>7} {'struct':>7} {'cpu s':>7} {'total s':>8} {'eval s':>7}  stages (s)")
+              f"{'rho':>6} {'rho_abw':>7} {'ceiling':>7} {'struct':>7} {'overlap':>7} {'cpu s':>7} {'total s':>8} {'eval s':>7}  stages (s)")
     print(header)
     for name, mesh in levels(args.levels, args.seeds):
         for preset, plan in plans.items():
@@ -104,9 +107,11 @@ def main() -> None:
             within = " ".join(f"{100 * q[f'area_within_{r:g}m']:5.1f}%" for r in evaluation.RADII)
             rho, abw, ceiling = (q.get(k, float("nan")) for k in ("rho", "rho_area_betweenness", "rho_ceiling"))
             polygons = traffic.surface_arrays(result.graph).n  # the nodes the measures count
+            navmesh = result.context.navmesh
+            overlaps = "-" if navmesh is None else len(navmesh.region_overlaps)
             print(f"{name:<18} {preset:<28} {polygons:>7} {within} {100 * q['traffic_off']:6.1f}% "
                   f"{rho:6.3f} {abw:7.3f} {ceiling:7.3f} {100 * q['structure_share']:6.1f}% "
-                  f"{cpu:7.2f} {sum(seconds.values()):8.2f} {evaluating:7.2f}  {stages}", flush=True)
+                  f"{overlaps:>7} {cpu:7.2f} {sum(seconds.values()):8.2f} {evaluating:7.2f}  {stages}", flush=True)
 
 
 if __name__ == "__main__":
