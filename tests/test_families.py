@@ -137,3 +137,13 @@ def test_map_analysis_structure_reaches_every_storey():
     ys = np.array([pos[1] for _, pos in result.structure.nodes(data="pos")])
     for height in level.metadata["floor_heights"]:
         assert np.any(np.abs(ys - height) < 0.4), height
+
+
+def test_map_analysis_cuts_across_hills_where_the_papers_normal_test_keeps_every_node():
+    """The preset's 45-degree normal tolerance (docs/analysis_quality.md, "Simplification on uneven ground"):
+    on hilly ground the paper's 10 degrees keep most chain nodes; the surface-gap check still keeps every edge on the ground."""
+    level = terrain(seed=1, size=60.0)
+    hills = g2s_core.run(level.mesh, "map_analysis")
+    papers_tolerance = g2s_core.run(level.mesh, "map_analysis", simplify={"params": {"normal_tolerance_deg": 10.0}})
+    kept, kept_at_10 = hills.structure.number_of_nodes(), papers_tolerance.structure.number_of_nodes()
+    assert kept < 0.85 * kept_at_10, (kept, kept_at_10)
