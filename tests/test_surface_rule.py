@@ -31,7 +31,8 @@ PRESETS = ("map_piece", "map_analysis")
 KNOWN_RECAST_SHORTCUTS = {
     ("building", "map_analysis"): "Recast's watershed makes one region of a switchback stairwell across three storeys "
     "and joins its polygons 5 m apart in height; the structure follows those navmesh edges (docs/samples.md, building); "
-    "graph.params.partition: layers avoids it (test_layered_building_stays_on_the_surface)",
+    "graph.params.partition: layers keeps the storeys apart (tests/test_recast.py), but see "
+    "LAYERED_BUILDING_CORNER_CUTS",
 }
 """Cases that fail for a known defect outside the structure, with its cause; strict: they must keep failing."""
 

@@ -107,10 +107,10 @@ class RecastParams(PluginParams):
     )
     partition: Literal["watershed", "monotone", "layers"] = Field(
         "watershed",
-        description="Recast's region partition: watershed (rcBuildRegions: the best polygons, but it can make "
-        "one self-overlapping region of a stairwell over several storeys), monotone (rcBuildRegionsMonotone: "
-        "fastest, never overlaps, long thin polygons) or layers (rcBuildLayerRegions: never overlaps, "
-        "better polygons than monotone); see docs/navmesh.md",
+        description="Recast's region partition: watershed (rcBuildRegions; can make a region of a stairwell over "
+        "several storeys that overlaps itself in plan), monotone (rcBuildRegionsMonotone: never overlaps, long thin "
+        "polygons) or layers (rcBuildLayerRegions: never overlaps, fewer polygons, slower on large levels); "
+        "see docs/navmesh.md",
     )
     max_cells: int = Field(
         100_000_000,
