@@ -22,6 +22,7 @@ from typing import Any
 
 import numpy as np
 import trimesh
+from trimesh import util
 
 UP = np.array([0.0, 1.0, 0.0])
 """The up direction of every g2s mesh."""
@@ -93,6 +94,7 @@ class RayCaster:
     def __init__(self, mesh: trimesh.Trimesh) -> None:
         self.mesh = mesh
         self.intersector, self.backend = _make_intersector(mesh)
+        self._embree: Any = None
         triangles = np.asarray(mesh.triangles, dtype=np.float64)
         self._plane_points = triangles[:, 0, :]
         self._centroids = triangles.mean(axis=1)
@@ -112,11 +114,15 @@ class RayCaster:
             directions: (n, 3) or (3,) directions (any non-zero length).
         """
         origins = np.asarray(origins, dtype=np.float64).reshape(-1, 3)
-        directions = np.broadcast_to(np.asarray(directions, dtype=np.float64), origins.shape)
         n = len(origins)
         if n == 0 or len(self.mesh.faces) == 0:
             return Hits(np.full(n, -1, dtype=np.int64), np.full(n, np.inf), np.full((n, 3), np.nan))
-        unit = directions / np.linalg.norm(directions, axis=1, keepdims=True)
+        directions = np.asarray(directions, dtype=np.float64)
+        if directions.ndim == 1:  # one direction for every ray: normalised once, as a row
+            directions = directions[None, :]
+        else:
+            directions = np.broadcast_to(directions, origins.shape)
+        unit = np.broadcast_to(directions / np.linalg.norm(directions, axis=1, keepdims=True), origins.shape)
         face, distance, grazing = self._cast(origins, unit)
         if np.any(grazing):
             aside = np.cross(unit[grazing], _SKEW)
@@ -151,24 +157,45 @@ class RayCaster:
         distance = np.einsum("ij,ij->i", locations - origins[ray], unit[ray])
         return ray, distance, np.asarray(face, dtype=np.int64), locations
 
+    def _first_faces(self, origins: np.ndarray, unit: np.ndarray) -> np.ndarray:
+        """(n,) int64: the intersector's ``intersects_first`` answer for these rays.
+
+        With Embree, the rays go straight to the scene trimesh's intersector
+        built (scaled and float32, :class:`trimesh.ray.ray_pyembree._EmbreeWrap`),
+        after the same float32 rounding and re-normalisation ``intersects_first``
+        applies: the same bits reach Embree without its per-call copies. A batch
+        sharing one direction (``unit`` a broadcast row) re-normalises that row once.
+        """
+        if self.backend != "embree":
+            return np.asarray(self.intersector.intersects_first(origins, np.ascontiguousarray(unit)), dtype=np.int64)
+        if self._embree is None:
+            self._embree = self.intersector._scene
+        one_direction = unit.strides[0] == 0
+        directions = util.unitize(np.array(unit[:1] if one_direction else unit, dtype=np.float32))
+        face = self._embree.run(origins.astype(np.float32), np.broadcast_to(directions, unit.shape))
+        return np.asarray(face, dtype=np.int64)
+
     def _cast(self, origins: np.ndarray, unit: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """One intersector call: (face, distance, grazing) per ray; ``unit`` is normalised."""
         n = len(origins)
-        face = np.asarray(self.intersector.intersects_first(origins, unit), dtype=np.int64).reshape(n)
+        face = self._first_faces(origins, unit).reshape(n)
         self.rays_cast += n
         distance = np.full(n, np.inf)
         grazing = np.zeros(n, dtype=bool)
         hit = face >= 0
-        if np.any(hit):
+        if hit.any():
             f, o, d = face[hit], origins[hit], unit[hit]
             normal = self.face_normals[f]
             denominator = np.einsum("ij,ij->i", d, normal)
             along_plane = np.einsum("ij,ij->i", self._plane_points[f] - o, normal)
             flat = np.abs(denominator) < 1e-9
-            t = np.where(flat, 0.0, along_plane / np.where(flat, 1.0, denominator))
-            # A ray in a triangle's plane (or a degenerate triangle) has no plane
-            # crossing: take the distance to the triangle's centroid instead.
-            t = np.where(flat, np.einsum("ij,ij->i", self._centroids[f] - o, d), t)
+            if flat.any():
+                t = np.where(flat, 0.0, along_plane / np.where(flat, 1.0, denominator))
+                # A ray in a triangle's plane (or a degenerate triangle) has no plane
+                # crossing: take the distance to the triangle's centroid instead.
+                t = np.where(flat, np.einsum("ij,ij->i", self._centroids[f] - o, d), t)
+            else:
+                t = along_plane / denominator
             distance[hit] = np.maximum(t, 0.0)
             grazing[hit] = flat
         return face, distance, grazing

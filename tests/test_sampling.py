@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import importlib
 import math
+import sys
 import types
 from pathlib import Path
 
@@ -259,6 +260,31 @@ def test_walk_segments_batch():
     assert hits.distance[1] == pytest.approx(1.0, abs=1e-5)  # down onto the floor (y = 0)
     assert hits.face[2] == -1 and math.isinf(hits.distance[2])  # beside the level
     assert caster.backend in ("embree", "python")
+
+
+def test_python_intersector_gives_the_embree_answers(monkeypatch: pytest.MonkeyPatch):
+    pytest.importorskip("embreex")
+    mesh = level(floor(), box((-0.1, -0.2, -5.0), (0.1, 3.0, 0.0)), box((2.0, -0.1, 1.0), (3.0, 0.3, 4.0)))  # no coplanar faces
+    rng = np.random.default_rng(0)
+    starts = np.column_stack([rng.uniform(-5, 5, 60), np.zeros(60), rng.uniform(-5, 5, 60)])
+    ends = np.column_stack([rng.uniform(-5, 5, 60), np.zeros(60), rng.uniform(-5, 5, 60)])
+    origins = np.column_stack([rng.uniform(-6, 6, 80), rng.uniform(-1, 4, 80), rng.uniform(-6, 6, 80)])
+    directions = rng.normal(size=(80, 3))
+    agent = AgentShape.from_config(AGENT)
+
+    def answers(caster: RayCaster) -> list[np.ndarray]:
+        down, sideways = caster.first_hits(origins, [0.0, -1.0, 0.0]), caster.first_hits(origins, directions)
+        ok, rise = walk_segments(caster, starts, ends, agent, probe_step=0.25)
+        return [down.face, down.distance, sideways.face, sideways.distance, ok, rise]
+
+    with_embree = RayCaster(mesh)
+    assert with_embree.backend == "embree"
+    monkeypatch.delattr(trimesh.ray, "ray_pyembree")  # as if embreex failed to import
+    monkeypatch.setitem(sys.modules, "trimesh.ray.ray_pyembree", None)
+    python = RayCaster(mesh)
+    assert python.backend == "python"
+    for a, b in zip(answers(with_embree), answers(python)):
+        np.testing.assert_allclose(a, b, atol=1e-6)
 
 
 def test_nothing_walkable_is_reported_not_an_empty_graph():

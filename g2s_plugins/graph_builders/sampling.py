@@ -173,9 +173,10 @@ def agent_fits(
     ok = head_room(caster, points, agent)
     if clearance <= 0 or not np.any(ok):
         return ok
+    # Each test below only casts for the candidates every earlier test kept (a
+    # point is out at its first wall), one direction per batch; lowest level first,
+    # since most walls reach the knee.
     idx = np.nonzero(ok)[0]
-    base = points[idx]
-    m, k = len(base), len(COMPASS)
 
     # Walls and obstacles: horizontal rays; a walkable (ramp) face hit is ground, not a wall.
     levels = sorted(
@@ -185,13 +186,15 @@ def agent_fits(
             round(agent.height - 5 * EPSILON, 6),
         }
     )
-    origins = (base[:, None, None, :] + np.asarray(levels)[None, :, None, None] * UP).repeat(k, axis=2)
-    directions = np.broadcast_to(COMPASS[None, None, :, :], origins.shape)
-    hits = caster.first_hits(origins.reshape(-1, 3), directions.reshape(-1, 3))
-    wall = (hits.distance < clearance) & ~caster.walkable_faces(hits.face, agent.max_slope_deg)
-    fits = ~wall.reshape(m, -1).any(axis=1)
+    for level in levels:
+        for direction in COMPASS:
+            hits = caster.first_hits(points[idx] + level * UP, direction)
+            wall = (hits.distance < clearance) & ~caster.walkable_faces(hits.face, agent.max_slope_deg)
+            idx = idx[~wall]
 
     # Ledges: ground in every direction at the clearance distance.
+    base = points[idx]
+    m, k = len(base), len(COMPASS)
     reach = float(agent.max_rise(clearance)) + GROUND_MARGIN
     probe = (base[:, None, :] + clearance * COMPASS[None, :, :]).reshape(-1, 3)
     down = caster.first_hits(probe + reach * UP, -UP)
@@ -199,8 +202,8 @@ def agent_fits(
     # Head room over the landing point, from the probe's own origin (see walk_segments).
     above = agent.height - np.where(ground, down.distance, 0.0)
     ground[ground] = clear_above(caster, probe[ground] + reach * UP, above[ground])
-    fits &= ground.reshape(m, k).all(axis=1)
-    ok[idx] = fits
+    ok[:] = False
+    ok[idx] = ground.reshape(m, k).all(axis=1)
     return ok
 
 
