@@ -185,3 +185,34 @@ def test_mesh_los_keeps_b_when_a_to_c_runs_under_the_ground() -> None:
     mesh = level(FLOOR, hump)
     assert predicate(mesh, max_surface_gap=1.0)(tree, 0, 1, 2) is True
     assert predicate(mesh)(tree, 0, 1, 2) is False
+
+
+def test_lookahead_batches_walks_without_changing_answers(monkeypatch: pytest.MonkeyPatch) -> None:
+    # The tree a sampled dungeon gives, simplified with and without testing the walks below C ahead.
+    from g2s_core import pipeline
+    from g2s_core.config import PRESETS_DIR, load_raw_config, parse_config
+    from g2s_core.mesh import mesh_sha256
+    from g2s_core.registry import Registry
+    from g2s_plugins._raycasting import walk_segments
+    from g2s_plugins.samples.levels import dungeon
+
+    registry = Registry.from_entry_points()
+    config = parse_config(load_raw_config(PRESETS_DIR / "map_analysis_sampling.yaml"), "test")
+    mesh = dungeon(seed=3, rooms=12).mesh
+    run = pipeline.run(pipeline.plan(config, registry, "test"), registry, mesh, "dungeon", mesh_sha256(mesh))
+    batches: list[int] = []
+
+    def counting(caster, starts, *args, **kwargs):
+        batches.append(len(starts))
+        return walk_segments(caster, starts, *args, **kwargs)
+
+    monkeypatch.setattr(mesh_los, "walk_segments", counting)
+    simplified = {}
+    for lookahead in (0, mesh_los.LOOKAHEAD):
+        monkeypatch.setattr(mesh_los, "LOOKAHEAD", lookahead)
+        batches.clear()
+        tree = simplify_forest(run.forest, predicate(mesh))
+        simplified[lookahead] = (sorted(tree.edges(data="weight")), len(batches), max(batches))
+    alone, ahead = simplified[0], simplified[mesh_los.LOOKAHEAD]
+    assert alone[0] == ahead[0]
+    assert alone[2] == 1 and ahead[2] > 1 and ahead[1] < alone[1]

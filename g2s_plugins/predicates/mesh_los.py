@@ -26,8 +26,10 @@ Which predicate to use:
   voxelised approximation. It tests a line of zero width: it does not keep
   the agent radius away from walls the segment passes beside.
 
-Cost per call: one batch of about 2 L / probe_step + 3 rays (L = |AC|),
-through Embree when available; answers are cached per (A, C) pair.
+Cost: about 2 L / probe_step + 3 rays per walk tested (L = |AC|), through
+Embree when available; answers are cached per (A, C) pair, and a walk not
+cached yet is tested in one batch with the walks from A to the nodes just
+below C, which the next calls along the chain ask about (``LOOKAHEAD``).
 """
 
 from __future__ import annotations
@@ -54,28 +56,75 @@ class Params(CollapseParams):
     )
 
 
+LOOKAHEAD = 8
+"""Nodes below C whose walks from A are tested in the same batch as A -> C (see ``mesh_los_predicate``).
+
+Measured on dungeon_1k and building_1k (map_analysis_sampling, simplify CPU): 2.9-3.0 s without lookahead,
+1.15-1.5 s for any of 2, 4, 8, 12 or 32, within the shared machine's noise of each other."""
+
+
+def _below(tree: nx.DiGraph, c: int, count: int) -> list[int]:
+    """Up to ``count`` nodes under ``c`` in ``tree``, nearest first (breadth first, by id)."""
+    found: list[int] = []
+    frontier = [c]
+    while frontier and len(found) < count:
+        frontier = sorted(n for node in frontier for n in tree.successors(node))
+        found.extend(frontier[: count - len(found)])
+    return found
+
+
 def mesh_los_predicate(
     mesh: object, agent: AgentShape, params: Params
 ) -> Callable[[nx.DiGraph, int, int, int], bool]:
-    """``P(tree, a, b, c)`` over ``mesh`` for ``agent`` (see the module docstring)."""
+    """``P(tree, a, b, c)`` over ``mesh`` for ``agent`` (see the module docstring).
+
+    Simplification asks about one chain at a time, and after removing B it
+    asks about A and each child of C next. So a walk A -> C that is not cached
+    yet is tested in one batch with the walks from A to the ``LOOKAHEAD``
+    nodes nearest under C: one ray batch then answers a whole run of removals
+    along a chain. Every walk is tested on its own rays, so the answers are
+    those of one call per pair; only the number of calls changes.
+    """
     probe_step = params.probe_step if params.probe_step is not None else 0.5 * agent.radius
     tolerance = params.normal_tolerance_deg
     caster: RayCaster | None = None
-    cache: dict[tuple[tuple[float, ...], tuple[float, ...]], bool] = {}
+    walked: dict[tuple[tuple[float, ...], tuple[float, ...]], bool] = {}  # walks tested, start -> end
+    cache: dict[tuple[tuple[float, ...], tuple[float, ...]], bool] = {}  # answers given, for (A, C) and (C, A)
+    chain: tuple[nx.DiGraph, int] | None = None  # the tree and C of the predicate call being answered
+
+    def position(tree: nx.DiGraph, node: int) -> tuple[float, ...]:
+        return tuple(map(float, tree.nodes[node]["pos"]))
 
     def walkable(start: tuple[float, ...], end: tuple[float, ...]) -> bool:
         nonlocal caster
-        key = (start, end)
-        if key not in cache:
-            if caster is None:  # built on first use: runs that never reach here pay nothing
-                caster = RayCaster(mesh)
-            ok, _ = walk_segments(
-                caster, np.array([start]), np.array([end]), agent, probe_step, params.margin, params.max_surface_gap
-            )
-            cache[key] = cache[(end, start)] = bool(ok[0])
-        return cache[key]
+        if (start, end) not in cache:
+            if (start, end) not in walked:
+                if caster is None:  # built on first use: runs that never reach here pay nothing
+                    caster = RayCaster(mesh)
+                ends = [end]
+                if chain is not None:
+                    tree, c = chain
+                    ahead = dict.fromkeys(position(tree, node) for node in _below(tree, c, LOOKAHEAD))
+                    ends += [e for e in ahead if (start, e) not in walked and e != end]
+                ok, _ = walk_segments(
+                    caster, np.array([start] * len(ends)), np.array(ends), agent, probe_step, params.margin,
+                    params.max_surface_gap,
+                )
+                walked.update(((start, e), answer) for e, answer in zip(ends, ok.tolist()))
+            cache[(start, end)] = cache[(end, start)] = walked[(start, end)]
+        return cache[(start, end)]
 
-    return collapse_rule(tolerance, walkable, params.whole_chain_normals)
+    rule = collapse_rule(tolerance, walkable, params.whole_chain_normals)
+
+    def predicate(tree: nx.DiGraph, a: int, b: int, c: int) -> bool:
+        nonlocal chain
+        chain = (tree, c)
+        try:
+            return rule(tree, a, b, c)
+        finally:
+            chain = None
+
+    return predicate
 
 
 @hookimpl
