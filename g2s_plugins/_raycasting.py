@@ -166,10 +166,11 @@ class RayCaster:
         applies: the same bits reach Embree without its per-call copies. A batch
         sharing one direction (``unit`` a broadcast row) re-normalises that row once.
         """
-        if self.backend != "embree":
+        if self._embree is None and self.backend == "embree":
+            # a private attribute of trimesh's intersector: without it (another trimesh), take the public call
+            self._embree = getattr(self.intersector, "_scene", False)
+        if not self._embree:
             return np.asarray(self.intersector.intersects_first(origins, np.ascontiguousarray(unit)), dtype=np.int64)
-        if self._embree is None:
-            self._embree = self.intersector._scene
         one_direction = unit.strides[0] == 0
         directions = util.unitize(np.array(unit[:1] if one_direction else unit, dtype=np.float32))
         face = self._embree.run(origins.astype(np.float32), np.broadcast_to(directions, unit.shape))

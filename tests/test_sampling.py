@@ -394,3 +394,18 @@ def test_sampling_presets_run(registry):
         p = np.array([pos for _, pos in result.structure.nodes(data="pos")])
         for opening in lvl.openings:
             assert cKDTree(p).query(opening.position)[0] < 2.0, (preset, opening.position)
+
+
+def test_embree_caster_without_trimeshs_private_scene_takes_the_public_call():
+    pytest.importorskip("embreex")
+    mesh = level(floor(), box((-0.1, -0.2, -5.0), (0.1, 3.0, 0.0)))
+    rng = np.random.default_rng(1)
+    origins = np.column_stack([rng.uniform(-6, 6, 40), rng.uniform(-1, 4, 40), rng.uniform(-6, 6, 40)])
+    directions = rng.normal(size=(40, 3))
+    direct = RayCaster(mesh)
+    public = RayCaster(mesh)
+    public.intersector = types.SimpleNamespace(intersects_first=public.intersector.intersects_first)
+    a, b = direct.first_hits(origins, directions), public.first_hits(origins, directions)
+    assert public._embree is False
+    np.testing.assert_array_equal(a.face, b.face)
+    np.testing.assert_array_equal(a.distance, b.distance)
