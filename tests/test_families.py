@@ -170,11 +170,11 @@ def test_map_analysis_cuts_across_hills_where_the_papers_normal_test_keeps_every
 # ---------------------------------------------------------------- castle
 
 WATERSHED_SPIRALS = (
-    "Recast's watershed partition makes one region of a tower's whole spiral stair (0-12 m) and of others with "
-    "it; the region overlaps itself in plan (NavMesh.region_overlaps: 5 regions on the default castle), its "
-    "contour is traced in plan and its polygons come out as fragments with no neighbour links: no tower top is "
-    "reached (measured: each tower's stair polygons in as many components as polygons); monotone and layers "
-    "make one component"
+    "Recast's watershed partition makes one region of the towers' spiral stairs (here one region, 31, holds the "
+    "stair polygons of all four towers); it overlaps itself in plan "
+    "(NavMesh.region_overlaps lists it once), its contour is traced in plan and its stair polygons come out as "
+    "fragments with no neighbour links (9 polygons in 9 components; one tower has none): no tower top, nor the "
+    "walk over the gate, is reached (measured); monotone and layers make one component"
 )
 
 

@@ -33,11 +33,11 @@ KNOWN_RECAST_SHORTCUTS = {
     "and joins its polygons 5 m apart in height; the structure follows those navmesh edges (docs/samples.md, building); "
     "graph.params.partition: layers keeps the storeys apart (tests/test_recast.py), but see "
     "LAYERED_BUILDING_CORNER_CUTS",
-    ("castle", "map_analysis"): "Recast's watershed makes one region of each tower's spiral stair and joins turns "
-    "of it 3-9 m apart (NavMesh.region_overlaps: 4 regions); with graph.params.partition monotone or layers the "
-    "check still fails, for a third cause: Recast's detail mesh lifts a few stair polygons' inner samples to the "
-    "landing above (polygon vertices at 2.2-2.4 m, detail heights up to 7.05 m, measured), so their centres and the "
-    "edges to them leave the stair (docs/analysis_quality.md, castle)",
+    ("castle", "map_analysis"): "Recast's watershed makes one region of several towers' spiral stairs "
+    "(NavMesh.region_overlaps: 4 regions) and 9 structure edges follow its fragments off the stairs; with "
+    "graph.params.partition monotone or layers 2 / 4 edges still fail: Recast's detail mesh lifts some stair "
+    "polygons' inner samples to the landing above (vertices at 2.2-2.4 m, detail heights up to 7.05 m, measured), "
+    "and the rest are LAYERED_BUILDING_CORNER_CUTS' cause (docs/analysis_quality.md, castle)",
 }
 """Cases that fail for a known defect outside the structure, with its cause; strict: they must keep failing."""
 
