@@ -388,8 +388,7 @@ def _tower(b: _LevelBuilder, centre: np.ndarray, previous: np.ndarray, following
     landing_start = start - door_half
     landing = (other - start) % (2 * math.pi) + 2 * door_half
 
-    n1, n2 = math.ceil(WALK / MAX_RISER - 1e-9), math.ceil((TOWER_TOP - WALK) / MAX_RISER - 1e-9)
-    riser1, riser2 = WALK / n1, (TOWER_TOP - WALK) / n2
+    (n1, riser1, _), (n2, riser2, _) = _straight_flight(WALK), _straight_flight(TOWER_TOP - WALK)  # risers only
     # The courtyard door: between the curtain walls' faces (their half thickness, seen from the tower's outside).
     wall_half = math.asin(CURTAIN / 2 / (TOWER_INNER + TOWER_WALL)) + DOOR_WIDTH / 2 / (TOWER_INNER + TOWER_WALL)
     door_range = (door_half + wall_half, landing - door_half - wall_half)
@@ -416,10 +415,10 @@ def _tower(b: _LevelBuilder, centre: np.ndarray, previous: np.ndarray, following
     core = np.array([[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]]) * NEWEL * 0.64 + centre
     _solid(b, np.concatenate([core[None], _sectors(centre, NEWEL * 0.6, NEWEL, *_arcs(0.0, 2 * math.pi))]),
            -SLAB_THICKNESS, TOWER_TOP)
+    # The ground floor around the newel (the ground slabs leave out the walls, _ground).
     _solid(b, _sectors(centre, NEWEL, TOWER_INNER + 0.05, *_arcs(0.0, 2 * math.pi)), -SLAB_THICKNESS, 0.0)
     annulus = math.pi * (TOWER_INNER**2 - NEWEL**2)
-    b.floor_area += annulus
-    b.floor_area += annulus * ((n1 - 1) * step1 + landing + (n2 - 1) * step2 + 2 * math.pi - hole) / (2 * math.pi)
+    b.floor_area += annulus * (1 + ((n1 - 1) * step1 + landing + (n2 - 1) * step2 + 2 * math.pi - hole) / (2 * math.pi))
 
     doors = [(door_angle, 0.0), (to_prev, WALK), (to_next, WALK)]
     edges = sorted({*np.linspace(0.0, 2 * math.pi, round(2 * math.pi / _ARC_STEP) + 1)[:-1],
