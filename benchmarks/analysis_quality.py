@@ -14,7 +14,11 @@ than 5 m from it, Spearman rho of the heat map (first analyzer, each polygon
 given the value of its nearest structure node), of area-weighted
 betweenness on the structure and of the best values the structure's nodes
 could carry (the ceiling: the mean traffic of the polygons each stands
-for) against that traffic, the structure's size as
+for) against that traffic, the same heat map and ceiling against the
+reference traffic on the level's navmesh graph ("rho nav", "ceil nav": the
+run's own graph on the navmesh route, the heat map carried from the samples
+to the polygons on the sampling route) and the share of the navmesh's area
+left out of them ("nav out"), the structure's size as
 a share of the polygons, the run's CPU time (``time.process_time``: the
 machine is shared; the evaluation included), the wall time of every stage
 but the evaluation ("total s") and that of the evaluation, which computes
@@ -56,8 +60,9 @@ FAMILIES = {
     "castle_20k": ("castle", {"towers": 24, "size": 520.0, "statues": 20.0, "keep_storeys": 6, "bridges": 4}),
 }
 """Other level families: name -> (sample, arguments), each level built with ``seed=s``. About 1k / 20k navmesh
-polygons with the default agent (seed 0: terrain 931 / 19,864, building 959 / 19,719; other seeds within a
-few per cent); the other arguments are the generators' defaults."""
+polygons with the default agent (seed 0: terrain 931 / 19,864, building 959 / 19,719, castle 1,079 / 20,038 with
+the default watershed partition; other seeds within a few per cent, castle 1k 996-1,079); the other arguments
+are the generators' defaults."""
 
 SAMPLE_LEVELS = ("cross_hub", "t_hub", "two_floors", "closed_room", "room_with_window", "corridor_with_ramp")
 
@@ -93,7 +98,7 @@ def main() -> None:
     plans = {Path(p).stem: pipeline.plan(parse_config(with_evaluators(load_raw_config(find_config(p)), ["traffic"]), p),
                                          registry, p) for p in args.presets}
     header = (f"{'level':<18} {'preset':<28} {'polys':>7} {'<=3m':>6} {'<=6m':>6} {'<=10m':>6} {'off>5m':>7} "
-              f"{'rho':>6} {'rho_abw':>7} {'ceiling':>7} {'struct':>7} {'overlap':>7} {'cpu s':>7} {'total s':>8} {'eval s':>7}  stages (s)")
+              f"{'rho':>6} {'rho_abw':>7} {'ceiling':>7} {'rho nav':>7} {'ceil nav':>8} {'nav out':>7} {'struct':>7} {'overlap':>7} {'cpu s':>7} {'total s':>8} {'eval s':>7}  stages (s)")
     print(header)
     for name, mesh in levels(args.levels, args.seeds):
         for preset, plan in plans.items():
@@ -108,12 +113,15 @@ def main() -> None:
             evaluating = seconds.pop("evaluation")
             stages = " ".join(f"{k}={v:.2f}" for k, v in seconds.items())
             within = " ".join(f"{100 * q[f'area_within_{r:g}m']:5.1f}%" for r in evaluation.RADII)
-            rho, abw, ceiling = (q.get(k, float("nan")) for k in ("rho", "rho_area_betweenness", "rho_ceiling"))
+            rho, abw, ceiling, rho_nav, ceiling_nav, nav_out = (q.get(k, float("nan")) for k in (
+                "rho", "rho_area_betweenness", "rho_ceiling", "rho_navmesh", "rho_navmesh_ceiling",
+                "navmesh_area_left_out"))
             polygons = traffic.surface_arrays(result.graph).n  # the nodes the measures count
             navmesh = result.context.navmesh
             overlaps = "-" if navmesh is None else len(navmesh.region_overlaps)
             print(f"{name:<18} {preset:<28} {polygons:>7} {within} {100 * q['traffic_off']:6.1f}% "
-                  f"{rho:6.3f} {abw:7.3f} {ceiling:7.3f} {100 * q['structure_share']:6.1f}% "
+                  f"{rho:6.3f} {abw:7.3f} {ceiling:7.3f} {rho_nav:7.3f} {ceiling_nav:8.3f} {100 * nav_out:6.1f}% "
+                  f"{100 * q['structure_share']:6.1f}% "
                   f"{overlaps:>7} {cpu:7.2f} {sum(seconds.values()):8.2f} {evaluating:7.2f}  {stages}", flush=True)
 
 

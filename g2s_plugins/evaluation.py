@@ -34,9 +34,55 @@ The measures (all along the initial walkable graph, distances in metres):
     rho is this figure by construction.
 ``structure_share``
     final structure nodes / initial graph nodes.
+``rho_navmesh``, ``rho_navmesh_ceiling``
+    ``rho`` and ``rho_ceiling`` measured on the *navmesh graph* of the level
+    instead of the run's own initial graph: where people walk is a property
+    of the level, which issue 9 defines as the walking flow
+    (:func:`reference_flow`, the same sources rule) on the graph of navmesh
+    polygons, whatever graph the run analyses. For a run of the ``navmesh``
+    builder (``context.navmesh`` set) that graph is the run's own and the
+    mapping below is the identity, so these are ``rho`` and
+    ``rho_ceiling`` exactly. Otherwise (the sampling route) the navmesh of
+    the same mesh is built for the run's agent with the ``navmesh``
+    builder's default parameters (:func:`~g2s_plugins.recast.build_navmesh`,
+    :func:`~g2s_plugins.graph_builders.navmesh.navmesh_graph`) and the heat
+    map is carried from the samples to its nodes (:func:`navmesh_surface`,
+    :func:`carry`):
+
+    * each sample belongs to the polygon it stands on: Detour's nearest
+      polygon (:meth:`~g2s_plugins.recast.NavMesh.nearest_poly`, one call
+      per sample: the extension has no batched form), unless the nearest
+      point on it is off the sample in plan (more than
+      :data:`PLAN_TOLERANCE`) or more than the navmesh's climb tolerance
+      away in height: then it belongs to none (samples in the margin Recast
+      erodes a little wider than the sampler's clearance, crate tops Recast
+      leaves out);
+    * a polygon's value is the area-weighted mean of the heat of the
+      samples on it that reach the structure (each sample's heat as in
+      ``rho``), exactly the common value when they all have one (so ties
+      stay ties for the rank correlation);
+    * a polygon with no such sample, and a portal node (``area`` 0, on a
+      crest between two polygons: ``rho`` ranks it like any node with the
+      value of its nearest structure node, so here it takes a value the same
+      way as an empty polygon), takes the heat of the nearest sample that
+      reaches the structure (3D, from its ``pos``; scipy ``cKDTree``) within
+      :data:`REACH_SPACINGS` sample spacings (the builder's ``spacing``,
+      else twice the agent radius, its default), else it is left out;
+    * for the ceiling each structure node carries the mean percentile of
+      the navmesh reference over the samples it stands for (the same
+      nearest-node rule as ``rho_ceiling``), each sample counting its
+      polygon's (samples on no polygon count nothing), carried the same way.
+``navmesh_area_left_out``
+    share of the navmesh graph's area that the heat map could not be carried
+    to (no sample that reaches the structure on or near it; on the navmesh
+    route: the nodes that reach no structure, which ``rho`` leaves out too).
 
 Cost: two multi-source Dijkstra searches plus the reference flow (see
-:func:`g2s_plugins.traffic.od_flow`).
+:func:`g2s_plugins.traffic.od_flow`). Off the navmesh route the navmesh
+measures add a navmesh build of the mesh (Recast: the ``navmesh`` builder's
+graph stage), its reference flow, one Detour look-up per sample, one
+k-d tree query and two more multi-source searches; a navmesh that cannot be
+built leaves them out.
 """
 
 from __future__ import annotations
@@ -44,17 +90,27 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
+import networkx as nx
 import numpy as np
+from scipy.spatial import cKDTree
 from scipy.stats import spearmanr
 
 from g2s_core.model import RunResult
 from g2s_plugins import centrality, traffic
+from g2s_plugins.graph_builders import navmesh as navmesh_builder
+from g2s_plugins.recast import NavMesh, SettingsError, build_navmesh
 
 RADII = (3.0, 6.0, 10.0)
 """Coverage radii reported by default, metres."""
 
 REFERENCE_SOURCES = 512
 """Graphs with more nodes than this get a sampled reference flow with this many sources."""
+
+PLAN_TOLERANCE = 1e-3
+"""A sample stands on a polygon when Detour's nearest point on it is this close in plan, m (float32 rounding)."""
+
+REACH_SPACINGS = 2.0
+"""A navmesh node without a sample takes the nearest sample's heat within this many sample spacings."""
 
 
 @dataclass(frozen=True)
@@ -70,13 +126,18 @@ class Quality:
     polygons: int
     structure_nodes: int
     stage_seconds: dict[str, float] = field(default_factory=dict)
+    rho_navmesh: float = float("nan")
+    rho_navmesh_ceiling: float = float("nan")
+    navmesh_area_left_out: float = float("nan")
 
     def measures(self) -> dict[str, float]:
         """The measures by name, as the ``traffic`` evaluator reports them (``area_within_6m``,
-        ``traffic_off``, ``rho``, ``rho_area_betweenness``, ``rho_ceiling``, ``structure_share``); NaN ones left out."""
+        ``traffic_off``, ``rho``, ``rho_area_betweenness``, ``rho_ceiling``, ``structure_share``,
+        ``rho_navmesh``, ``rho_navmesh_ceiling``, ``navmesh_area_left_out``); NaN ones left out."""
         named = {**{f"area_within_{r:g}m": v for r, v in self.area_within.items()}, "traffic_off": self.traffic_off,
                  "rho": self.rho, "rho_area_betweenness": self.rho_area_betweenness, "rho_ceiling": self.rho_ceiling,
-                 "structure_share": self.structure_share}
+                 "structure_share": self.structure_share, "rho_navmesh": self.rho_navmesh,
+                 "rho_navmesh_ceiling": self.rho_navmesh_ceiling, "navmesh_area_left_out": self.navmesh_area_left_out}
         return {name.replace(".", "_"): value for name, value in named.items() if math.isfinite(value)}
 
 
@@ -105,6 +166,112 @@ def heat_map(result: RunResult, values: dict, nearest: np.ndarray | None = None)
     return np.where(nearest >= 0, by_row[np.maximum(nearest, 0)], np.nan)
 
 
+@dataclass(frozen=True)
+class NavmeshSurface:
+    """The navmesh graph a run's heat map is measured on, and how the run's initial graph stands on it.
+
+    Attributes:
+        graph: the navmesh polygon graph (:mod:`g2s_plugins.graph_builders.navmesh`).
+        flow: (N,) its reference flow, in :func:`~g2s_plugins.traffic.surface_arrays` order.
+        owner: (n,) for each row of the run's initial graph, the row of the navmesh node it stands on (-1: none).
+        reach: how far a navmesh node looks for the nearest sample when none stands on it, m.
+    """
+
+    graph: nx.Graph
+    flow: np.ndarray
+    owner: np.ndarray
+    reach: float
+
+
+def polygons_under(navmesh: NavMesh, points: np.ndarray) -> np.ndarray:
+    """(n,) the polygon each of the (n,3) ``points`` stands on, -1 where none (see the module docs)."""
+    polygons = np.full(len(points), -1, dtype=np.int64)
+    for i, point in enumerate(np.asarray(points, dtype=np.float64)):
+        polygon, nearest = navmesh.nearest_poly(point)
+        if (polygon >= 0 and abs(nearest[1] - point[1]) <= navmesh.climb_tolerance
+                and math.hypot(nearest[0] - point[0], nearest[2] - point[2]) <= PLAN_TOLERANCE):
+            polygons[i] = polygon
+    return polygons
+
+
+def navmesh_surface(result: RunResult, reference: np.ndarray, max_sources: int = REFERENCE_SOURCES,
+                    seed: int = 0) -> NavmeshSurface | None:
+    """The navmesh graph of the run's level, its reference flow and the mapping to it (see the module docs).
+
+    Args:
+        reference: :func:`reference_flow` of the run's own graph (the navmesh's, on the navmesh route).
+
+    Returns ``None`` when Recast cannot build a navmesh of the mesh for the run's agent.
+    """
+    arrays = traffic.surface_arrays(result.graph)
+    if result.context.navmesh is not None:  # the run's graph is the navmesh graph: the identity
+        return NavmeshSurface(result.graph, reference, np.arange(arrays.n), 0.0)
+    context = result.context
+    params = navmesh_builder.Params()
+    try:
+        navmesh = build_navmesh(context.mesh.vertices, context.mesh.faces, context.agent, params)
+    except (SettingsError, RuntimeError):
+        return None
+    graph = navmesh_builder.navmesh_graph(navmesh, context.agent, params.max_edge_gap)
+    navmesh_arrays = traffic.surface_arrays(graph)
+    polygon_rows = navmesh_arrays.rows(range(navmesh.polygon_count))
+    polygons = polygons_under(navmesh, _positions(result.graph))
+    owner = np.where(polygons >= 0, polygon_rows[np.maximum(polygons, 0)], -1)
+    spacing = result.graph.graph.get("sampling_stats", {}).get("spacing", 2.0 * float(context.agent.radius))
+    return NavmeshSurface(graph, traffic.walking_flow(graph, max_sources, seed), owner, REACH_SPACINGS * spacing)
+
+
+def carry(values: np.ndarray, area: np.ndarray, positions: np.ndarray, surface: NavmeshSurface) -> np.ndarray:
+    """(N,) ``values`` of the run's initial-graph nodes carried to the navmesh graph's nodes (NaN: left out).
+
+    Args:
+        values: (n,) one value per initial-graph row (NaN: none, e.g. a node that reaches no structure).
+        area: (n,) their areas, m² (the weights of a polygon's mean).
+        positions: (n,3) their positions, m.
+
+    A navmesh node takes the area-weighted mean of the values standing on
+    it (their common value exactly when they are all equal; the plain mean
+    when their areas are all 0), else the value of the nearest valued node
+    within ``surface.reach`` (3D), else NaN. O(n + N log n).
+    """
+    n_nodes = traffic.surface_arrays(surface.graph).n
+    valued = np.isfinite(values)
+    on = valued & (surface.owner >= 0)
+    owner, value, weight = surface.owner[on], values[on], area[on]
+    count = np.bincount(owner, minlength=n_nodes)
+    weights = np.bincount(owner, weights=weight, minlength=n_nodes)
+    weighted = np.bincount(owner, weights=weight * value, minlength=n_nodes)
+    plain = np.bincount(owner, weights=value, minlength=n_nodes)
+    lowest, highest = np.full(n_nodes, np.inf), np.full(n_nodes, -np.inf)
+    np.minimum.at(lowest, owner, value)
+    np.maximum.at(highest, owner, value)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        carried = np.where(weights > 0, weighted / weights, plain / count)
+    carried = np.where(lowest == highest, lowest, carried)
+    empty = np.flatnonzero(count == 0)
+    carried[empty] = np.nan
+    if empty.size and valued.any():
+        distance, nearest = cKDTree(positions[valued]).query(_positions(surface.graph)[empty])
+        near = distance <= surface.reach
+        carried[empty[near]] = values[valued][nearest[near]]
+    return carried
+
+
+def _positions(graph: nx.Graph) -> np.ndarray:
+    """(n,3) the ``pos`` of every node, in :func:`~g2s_plugins.traffic.surface_arrays` order."""
+    nodes = traffic.surface_arrays(graph).nodes
+    return np.array([graph.nodes[node]["pos"] for node in nodes], dtype=np.float64).reshape(-1, 3)
+
+
+def _navmesh_ceiling(result: RunResult, surface: NavmeshSurface) -> dict:
+    """Per final-structure node, the mean percentile of the navmesh reference over the samples it stands for."""
+    standing = surface.owner >= 0
+    percentile = np.where(standing, traffic.percentile(surface.flow)[np.maximum(surface.owner, 0)], 0.0)
+    sums = traffic.gather(result.graph, result.structure, percentile)
+    counts = traffic.gather(result.graph, result.structure, standing.astype(np.float64))
+    return {node: sums[node] / counts[node] if counts[node] > 0 else float("nan") for node in sums}
+
+
 def _spearman(heat: np.ndarray, reference: np.ndarray) -> float:
     ok = np.isfinite(heat)
     if ok.sum() < 3 or np.ptp(heat[ok]) == 0 or np.ptp(reference[ok]) == 0:
@@ -117,16 +284,19 @@ def evaluate(
     reference: np.ndarray | None = None,
     radii: tuple[float, ...] = RADII,
     off_distance: float = 5.0,
+    max_sources: int = REFERENCE_SOURCES,
+    seed: int = 0,
 ) -> Quality:
     """The measures of a run that got to the analysis (see the module docs).
 
     Args:
         reference: :func:`reference_flow` of the same graph, when already known
             (it depends only on the graph, not on the preset).
+        max_sources, seed: the reference flows' source sample (:func:`reference_flow`).
     """
     arrays = traffic.surface_arrays(result.graph)
     if reference is None:
-        reference = reference_flow(result)
+        reference = reference_flow(result, max_sources, seed)
     area = traffic.origin_weight(arrays)
     if result.structure is None:  # no terminals: nothing was joined
         return Quality({r: 0.0 for r in radii}, 1.0, float("nan"), float("nan"), float("nan"), 0.0, arrays.n, 0,
@@ -142,6 +312,21 @@ def evaluate(
     undirected = result.structure.to_undirected(as_view=True)
     weights = traffic.represented_area(result.graph, undirected)
     betweenness = centrality.betweenness(undirected, weighted=True, node_weight=weights)
+    rho_navmesh = rho_navmesh_ceiling = left_out = float("nan")
+    surface = navmesh_surface(result, reference, max_sources, seed)
+    if surface is not None:
+        positions = _positions(result.graph)
+
+        def on_navmesh(values: np.ndarray) -> np.ndarray:
+            return carry(values, arrays.area, positions, surface)
+
+        if first is not None:
+            rho_navmesh = _spearman(on_navmesh(heat_map(result, first, nearest)), surface.flow)
+        rho_navmesh_ceiling = _spearman(on_navmesh(heat_map(result, _navmesh_ceiling(result, surface), nearest)),
+                                        surface.flow)
+        reached = on_navmesh(np.where(nearest >= 0, 1.0, np.nan))
+        navmesh_area = traffic.surface_arrays(surface.graph).area
+        left_out = float(navmesh_area[np.isnan(reached)].sum() / navmesh_area.sum())
     return Quality(
         area_within=within,
         traffic_off=off,
@@ -155,4 +340,7 @@ def evaluate(
         polygons=arrays.n,
         structure_nodes=result.structure.number_of_nodes(),
         stage_seconds={s.stage: s.seconds for s in result.stages},
+        rho_navmesh=rho_navmesh,
+        rho_navmesh_ceiling=rho_navmesh_ceiling,
+        navmesh_area_left_out=left_out,
     )

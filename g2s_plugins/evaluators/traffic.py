@@ -4,9 +4,13 @@ Measures (shares in [0, 1], rho in [-1, 1]; see :mod:`g2s_plugins.evaluation`):
 ``area_within_<r>m`` for each radius r, ``traffic_off`` (reference flow more
 than ``off_distance`` from the structure), ``rho`` (the first analyzer's heat
 map against the reference flow; left out without analyzers or when
-undefined), ``rho_area_betweenness``, ``rho_ceiling`` and ``structure_share``.
+undefined), ``rho_area_betweenness``, ``rho_ceiling``, ``structure_share``,
+and ``rho_navmesh``, ``rho_navmesh_ceiling`` and ``navmesh_area_left_out``
+(the heat map against the reference flow on the level's navmesh graph; the
+run's own graph on the navmesh route).
 Cost: the reference flow (``reference_sources`` Dijkstra searches of the
-initial graph above that many nodes) and two multi-source searches.
+initial graph above that many nodes) and two multi-source searches; off the
+navmesh route also a navmesh build of the level and its reference flow.
 """
 
 from __future__ import annotations
@@ -43,4 +47,5 @@ def g2s_evaluate(result: RunResult, params: Params, context: RunContext) -> dict
     """The measures of a run that got to simplification (the analyzers' first key is the heat map)."""
     reference = evaluation.reference_flow(result, params.reference_sources, params.seed)
     radii = tuple(sorted(set(params.radii)))
-    return evaluation.evaluate(result, reference, radii, params.off_distance).measures()
+    return evaluation.evaluate(result, reference, radii, params.off_distance, params.reference_sources,
+                               params.seed).measures()
