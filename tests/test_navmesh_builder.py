@@ -221,13 +221,15 @@ def test_overlapping_regions_are_warned_about():
     design = stairwell.metadata["design_agent"]
     agent = types.SimpleNamespace(radius=design["radius"], height=design["height"],
                                   max_climb=design["max_climb"], max_slope=design["max_slope_deg"])
-    _, watershed = run(stairwell.mesh, agent=agent)
+    _, watershed = run(stairwell.mesh, plugin.Params(partition="watershed"), agent=agent)
     (warning,) = watershed.warnings
     x, y, z = watershed.navmesh.region_overlaps[0]
     assert warning.startswith("graph: Recast's watershed partition made 1 region that overlaps itself in plan")
     assert f"({x:.1f}, {y:.1f}, {z:.1f}) m" in warning and warning.endswith(
-        "set graph.params.partition: layers (docs/navmesh.md)")
-    _, layers = run(stairwell.mesh, plugin.Params(partition="layers"), agent=agent)
-    assert layers.warnings == [] and len(layers.navmesh.region_overlaps) == 0
+        "set graph.params.partition: auto, the default (docs/navmesh.md)")
+    # the default (auto) rebuilt the overlapping tile: nothing left to warn about
+    _, default = run(stairwell.mesh, agent=agent)
+    assert default.warnings == [] and len(default.navmesh.region_overlaps) == 0
+    assert default.navmesh.repartitioned_tiles.tolist() == [[0, 0]]
     _, flat = run(level())
     assert flat.warnings == []
