@@ -327,7 +327,13 @@ void build_tile(const Input& in, const int* tris, int ntris, const rcConfig& c, 
     std::unique_ptr<rcPolyMesh, PolyMeshDel> pmesh(rcAllocPolyMesh());
     if (!pmesh) fail("rcAllocPolyMesh failed (out of memory)", nullptr, where);
     if (!rcBuildPolyMesh(&ctx, *cset, c.maxVertsPerPoly, *pmesh)) too_big("rcBuildPolyMesh failed");
-    if (pmesh->npolys == 0) return;
+    if (pmesh->npolys == 0) {
+        if (!out.overlaps.empty())
+            out.empty_reason = std::to_string(out.overlaps.size() / 3) +
+                               " region(s) overlap themselves in plan and Recast made no polygon of them; "
+                               "partition 'auto' rebuilds such regions";
+        return;
+    }
     std::unique_ptr<rcPolyMeshDetail, DetailDel> dmesh(rcAllocPolyMeshDetail());
     if (!dmesh) fail("rcAllocPolyMeshDetail failed (out of memory)", nullptr, where);
     if (!rcBuildPolyMeshDetail(&ctx, *pmesh, *chf, c.detailSampleDist, c.detailSampleMaxError, *dmesh))

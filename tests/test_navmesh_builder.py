@@ -13,12 +13,14 @@ import pytest
 import trimesh
 
 from g2s_core import hookspecs
+from g2s_core.errors import G2SError
 from g2s_core.model import RunContext
 from g2s_core.plugin import PROJECT, PluginParams
 from g2s_plugins._surface import edge_surface_gaps
 from g2s_plugins.graph_builders import navmesh as plugin
 from g2s_plugins.recast import NavMesh, RecastParams
 from g2s_plugins.samples import levels
+from tests.test_recast import spiral_tower
 
 AGENT = types.SimpleNamespace(radius=0.3, height=2.0, max_climb=0.4, max_slope=45.0)
 DEMO_AGENT = types.SimpleNamespace(radius=0.6, height=2.0, max_climb=0.9, max_slope=45.0)
@@ -233,3 +235,12 @@ def test_overlapping_regions_are_warned_about():
     assert default.navmesh.repartitioned_tiles.tolist() == [[0, 0]]
     _, flat = run(level())
     assert flat.warnings == []
+
+
+def test_a_watershed_navmesh_lost_to_overlaps_names_the_partition():
+    # not "no walkable surface" with hints about the mesh: the partition lost it
+    with pytest.raises(G2SError) as error:
+        run(spiral_tower(), plugin.Params(partition="watershed"), agent=BASE_AGENT)
+    assert str(error.value).startswith("graph.params.partition: watershed: Recast: no walkable polygons (1 region(s) "
+                                       "overlap themselves in plan and Recast made no polygon of them; partition "
+                                       "'auto' rebuilds such regions)")

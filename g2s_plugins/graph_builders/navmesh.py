@@ -191,6 +191,8 @@ def g2s_build_graph(mesh, params, context):
     except SettingsError as exc:
         raise G2SError(str(exc)) from exc
     except RuntimeError as exc:
+        if "overlap themselves in plan" in str(exc):  # the partition's doing, not the mesh's
+            raise G2SError(f"graph.params.partition: {params.partition}: {exc}") from exc
         if "no walkable" not in str(exc):
             raise G2SError(
                 f"graph.params: {exc}; try another cell_size or tile_size (see docs/navmesh.md)"
