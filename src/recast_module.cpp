@@ -115,14 +115,18 @@ constexpr int AUTO_SOLO_MAX_CELLS = 512;
 constexpr int AUTO_TILE_SIZE = 256;
 constexpr int MIN_TILE_SIZE = 16;
 
-// Recast's region partitions (step 4 of build_tile).
-enum class Partition { watershed, monotone, layers };
+// Recast's region partitions (step 4 of build_tile). automatic: watershed, redone
+// with AUTO_FALLBACK in a tile where a watershed region overlaps itself in plan.
+enum class Partition { automatic, watershed, monotone, layers };
+constexpr Partition AUTO_FALLBACK = Partition::layers;
 
 Partition parse_partition(const std::string& name) {
+    if (name == "auto") return Partition::automatic;
     if (name == "watershed") return Partition::watershed;
     if (name == "monotone") return Partition::monotone;
     if (name == "layers") return Partition::layers;
-    throw nb::value_error(("Recast: partition must be 'watershed', 'monotone' or 'layers', got '" + name + "'").c_str());
+    throw nb::value_error(
+        ("Recast: partition must be 'auto', 'watershed', 'monotone' or 'layers', got '" + name + "'").c_str());
 }
 
 struct Settings {
@@ -197,6 +201,7 @@ struct TileMesh {
     int data_size = 0;
     std::string empty_reason;             // why the tile has no polygons (npolys == 0)
     std::vector<float> overlaps;          // (K,3) world: a span of each region that overlaps itself in plan
+    bool repartitioned = false;           // automatic partition: watershed overlapped, regions redone
 };
 
 // One span (world x, floor y, z) of each region of `chf` that holds two spans of one
@@ -280,22 +285,35 @@ void build_tile(const Input& in, const int* tris, int ntris, const rcConfig& c, 
     }
 
     // 4. Regions. Only watershed reads the distance field; layer regions have no merge step.
-    switch (s.partition) {
-    case Partition::watershed:
-        if (!rcBuildDistanceField(&ctx, *chf)) fail("rcBuildDistanceField failed", &ctx, where);
-        if (!rcBuildRegions(&ctx, *chf, c.borderSize, c.minRegionArea, c.mergeRegionArea))
-            too_big("rcBuildRegions failed");
-        break;
-    case Partition::monotone:
-        if (!rcBuildRegionsMonotone(&ctx, *chf, c.borderSize, c.minRegionArea, c.mergeRegionArea))
-            too_big("rcBuildRegionsMonotone failed");
-        break;
-    case Partition::layers:
-        if (!rcBuildLayerRegions(&ctx, *chf, c.borderSize, c.minRegionArea))
-            too_big("rcBuildLayerRegions failed");
-        break;
-    }
+    // Every partition labels all spans afresh (the region of each span, the region count,
+    // the border), so the automatic fallback on the same compact heightfield gives what a
+    // build with the fallback alone gives (tested); only the unused distance field stays.
+    auto build_regions = [&](Partition partition) {
+        switch (partition) {
+        case Partition::automatic:
+        case Partition::watershed:
+            if (!rcBuildDistanceField(&ctx, *chf)) fail("rcBuildDistanceField failed", &ctx, where);
+            if (!rcBuildRegions(&ctx, *chf, c.borderSize, c.minRegionArea, c.mergeRegionArea))
+                too_big("rcBuildRegions failed");
+            break;
+        case Partition::monotone:
+            if (!rcBuildRegionsMonotone(&ctx, *chf, c.borderSize, c.minRegionArea, c.mergeRegionArea))
+                too_big("rcBuildRegionsMonotone failed");
+            break;
+        case Partition::layers:
+            if (!rcBuildLayerRegions(&ctx, *chf, c.borderSize, c.minRegionArea))
+                too_big("rcBuildLayerRegions failed");
+            break;
+        }
+    };
+    build_regions(s.partition);
     out.overlaps = self_overlapping_regions(*chf);
+    if (s.partition == Partition::automatic && !out.overlaps.empty()) {
+        ctx.errors.clear();  // Recast logs the overlap as an error; it is repaired here
+        build_regions(AUTO_FALLBACK);
+        out.overlaps = self_overlapping_regions(*chf);
+        out.repartitioned = true;
+    }
 
     // 5. Contours, polygons, detail.
     std::unique_ptr<rcContourSet, ContourDel> cset(rcAllocContourSet());
@@ -309,7 +327,13 @@ void build_tile(const Input& in, const int* tris, int ntris, const rcConfig& c, 
     std::unique_ptr<rcPolyMesh, PolyMeshDel> pmesh(rcAllocPolyMesh());
     if (!pmesh) fail("rcAllocPolyMesh failed (out of memory)", nullptr, where);
     if (!rcBuildPolyMesh(&ctx, *cset, c.maxVertsPerPoly, *pmesh)) too_big("rcBuildPolyMesh failed");
-    if (pmesh->npolys == 0) return;
+    if (pmesh->npolys == 0) {
+        if (!out.overlaps.empty())
+            out.empty_reason = std::to_string(out.overlaps.size() / 3) +
+                               " region(s) overlap themselves in plan and Recast made no polygon of them; "
+                               "partition 'auto' rebuilds such regions";
+        return;
+    }
     std::unique_ptr<rcPolyMeshDetail, DetailDel> dmesh(rcAllocPolyMeshDetail());
     if (!dmesh) fail("rcAllocPolyMeshDetail failed (out of memory)", nullptr, where);
     if (!rcBuildPolyMeshDetail(&ctx, *pmesh, *chf, c.detailSampleDist, c.detailSampleMaxError, *dmesh))
@@ -406,6 +430,7 @@ public:
     std::vector<int64_t> portal_pairs;  // (E,2) a < b, sorted
     std::vector<double> portal_ends;    // (E,2,3) shared segment end points, along a's edge
     std::vector<double> overlaps;       // (K,3) a span of each region overlapping itself, tile by tile
+    std::vector<int32_t> repartitioned; // (R,2) tile x, z of the tiles the automatic partition redid
     int npolys = 0;
 
     // Resolved Recast configuration and tiling.
@@ -718,6 +743,7 @@ void NavMeshCore::assemble(std::vector<std::unique_ptr<TileMesh>>& tiles) {
     regions.resize(static_cast<size_t>(total));
     dverts.clear();
     overlaps.clear();
+    repartitioned.clear();
     dverts.reserve(static_cast<size_t>(total_dverts) * 3);
     dtris.clear();
     dtris.reserve(static_cast<size_t>(total_dtris) * 3);
@@ -782,6 +808,7 @@ void NavMeshCore::assemble(std::vector<std::unique_ptr<TileMesh>>& tiles) {
         for (int32_t v : t.dtris) dtris.push_back(v + dbase);
         for (int32_t p : t.dpoly) dtri_poly.push_back(p + first);
         overlaps.insert(overlaps.end(), t.overlaps.begin(), t.overlaps.end());
+        if (t.repartitioned) repartitioned.insert(repartitioned.end(), {t.tx, t.ty});
         first += t.npolys;
         tp.reset();  // free the tile's copy as we go
     }
@@ -1076,7 +1103,7 @@ void def_build(nb::module_& m) {
           nb::arg("detail_sample_dist") = 6.0, nb::arg("detail_sample_max_error") = 1.0,
           nb::arg("max_cells") = 100000000LL, nb::arg("tile_size") = nb::none(), nb::arg("threads") = 0,
           nb::arg("filter_low_hanging_obstacles") = true, nb::arg("filter_ledge_spans") = true,
-          nb::arg("filter_low_height_spans") = true, nb::arg("partition") = "watershed",
+          nb::arg("filter_low_height_spans") = true, nb::arg("partition") = "auto",
           nb::rv_policy::take_ownership,
           "Build a navmesh from (N,3) vertices and (M,3) triangle faces. World-unit settings, "
           "derived into Recast's voxel configuration as Recast's demo does. tile_size: None "
@@ -1085,7 +1112,8 @@ void def_build(nb::module_& m) {
           "worker threads of a tiled build (0: hardware concurrency). max_cells: most xz cells "
           "rasterised at once (the solo grid, or one tile with its border). filter_*: run Recast's "
           "rcFilterLowHangingWalkableObstacles / rcFilterLedgeSpans / rcFilterWalkableLowHeightSpans. "
-          "partition: Recast's region partition, 'watershed' (rcBuildRegions), 'monotone' "
+          "partition: Recast's region partition, 'auto' (watershed; a tile where a region overlaps "
+          "itself in plan is redone with layers), 'watershed' (rcBuildRegions), 'monotone' "
           "(rcBuildRegionsMonotone) or 'layers' (rcBuildLayerRegions).");
 }
 
@@ -1146,7 +1174,11 @@ NB_MODULE(_recast, m) {
         .def_prop_ro("region_overlaps",
                      [](const NavMeshCore& n) { return to_numpy(n.overlaps, n.overlaps.size() / 3, 3); },
                      "(K,3) float64: a span (world x, floor y, z) of each Recast region that overlaps itself "
-                     "in plan, tile by tile")
+                     "in plan, tile by tile (left in the built navmesh: none with partition 'auto')")
+        .def_prop_ro("repartitioned_tiles",
+                     [](const NavMeshCore& n) { return to_numpy(n.repartitioned, n.repartitioned.size() / 2, 2); },
+                     "(R,2) int32: tile (x, z) of each tile whose watershed regions overlapped and were redone "
+                     "by the 'auto' partition, row-major order; (0, 0) for a solo navmesh")
         .def_prop_ro("tile_size", [](const NavMeshCore& n) { return n.tile_size; },
                      "tile side in cells; 0 for a solo navmesh")
         .def_prop_ro("tile_count", [](const NavMeshCore& n) { return static_cast<int>(n.tile_first.size()); },

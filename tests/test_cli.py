@@ -12,6 +12,7 @@ import pytest
 
 from g2s_core.cli import main
 from g2s_core.stages import STAGES
+from g2s_plugins.recast import RecastParams
 from tests.conftest import PROJECT
 
 G2S = [sys.executable, "-m", "g2s_core.cli"]
@@ -57,7 +58,7 @@ def test_bad_plugin_parameter(tmp_path):
                       "graph.params.cell_size: expected")
     config.write_text("extends: graph_only\ngraph: {plugin: navmesh, params: {partition: spiral}}\n")
     assert_user_error(g2s("run", str(config), "sample:straight_corridor", "-o", str(tmp_path / "out")),
-                      "graph.params.partition: expected one of 'watershed', 'monotone', 'layers', got 'spiral'")
+                      "graph.params.partition: expected one of 'auto', 'watershed', 'monotone', 'layers', got 'spiral'")
 
 
 def test_missing_mesh_and_unknown_sample(tmp_path):
@@ -106,6 +107,10 @@ def test_plugins_lists_stage_name_package_and_parameters():
     assert proc.returncode == 0, proc.stderr
     assert proc.stdout.startswith("graph\n  navmesh  (graph2structure)\n")
     assert "cell_size:" in proc.stdout
+    # the region partition: its values, default and description (wrapped to the terminal)
+    flat = " ".join(proc.stdout.split())
+    description = RecastParams.model_fields["partition"].description
+    assert f"partition: one of 'auto', 'watershed', 'monotone', 'layers', default 'auto'. {description}" in flat
 
 
 def test_version_and_verbose_after_the_command(tmp_path):

@@ -13,12 +13,14 @@ import pytest
 import trimesh
 
 from g2s_core import hookspecs
+from g2s_core.errors import G2SError
 from g2s_core.model import RunContext
 from g2s_core.plugin import PROJECT, PluginParams
 from g2s_plugins._surface import edge_surface_gaps
 from g2s_plugins.graph_builders import navmesh as plugin
 from g2s_plugins.recast import NavMesh, RecastParams
 from g2s_plugins.samples import levels
+from tests.test_recast import spiral_tower
 
 AGENT = types.SimpleNamespace(radius=0.3, height=2.0, max_climb=0.4, max_slope=45.0)
 DEMO_AGENT = types.SimpleNamespace(radius=0.6, height=2.0, max_climb=0.9, max_slope=45.0)
@@ -221,13 +223,24 @@ def test_overlapping_regions_are_warned_about():
     design = stairwell.metadata["design_agent"]
     agent = types.SimpleNamespace(radius=design["radius"], height=design["height"],
                                   max_climb=design["max_climb"], max_slope=design["max_slope_deg"])
-    _, watershed = run(stairwell.mesh, agent=agent)
+    _, watershed = run(stairwell.mesh, plugin.Params(partition="watershed"), agent=agent)
     (warning,) = watershed.warnings
     x, y, z = watershed.navmesh.region_overlaps[0]
     assert warning.startswith("graph: Recast's watershed partition made 1 region that overlaps itself in plan")
     assert f"({x:.1f}, {y:.1f}, {z:.1f}) m" in warning and warning.endswith(
-        "set graph.params.partition: layers (docs/navmesh.md)")
-    _, layers = run(stairwell.mesh, plugin.Params(partition="layers"), agent=agent)
-    assert layers.warnings == [] and len(layers.navmesh.region_overlaps) == 0
+        "set graph.params.partition: auto, the default (docs/navmesh.md)")
+    # the default (auto) rebuilt the overlapping tile: nothing left to warn about
+    _, default = run(stairwell.mesh, agent=agent)
+    assert default.warnings == [] and len(default.navmesh.region_overlaps) == 0
+    assert default.navmesh.repartitioned_tiles.tolist() == [[0, 0]]
     _, flat = run(level())
     assert flat.warnings == []
+
+
+def test_a_watershed_navmesh_lost_to_overlaps_names_the_partition():
+    # not "no walkable surface" with hints about the mesh: the partition lost it
+    with pytest.raises(G2SError) as error:
+        run(spiral_tower(), plugin.Params(partition="watershed"), agent=BASE_AGENT)
+    assert str(error.value).startswith("graph.params.partition: watershed: Recast: no walkable polygons (1 region(s) "
+                                       "overlap themselves in plan and Recast made no polygon of them; partition "
+                                       "'auto' rebuilds such regions)")

@@ -617,7 +617,7 @@ def test_filter_switches_reach_recast():
 
 # ------------------------------------------------------------------ region partitions
 
-PARTITIONS = ("watershed", "monotone", "layers")
+PARTITIONS = ("auto", "watershed", "monotone", "layers")
 
 
 @pytest.mark.parametrize("partition", PARTITIONS)
@@ -654,15 +654,113 @@ def test_layers_and_monotone_do_not_join_storeys_of_a_stairwell(three_storeys, t
     (well,) = level.metadata["stairwells"]
     assert well["x0"] < overlap[0] < well["x1"] and well["z0"] < overlap[2] < well["z1"]
     assert centre_height_jumps(meshes["watershed"]).max() > 5.0
-    for partition in ("monotone", "layers"):
+    for partition in ("auto", "monotone", "layers"):
         nm = meshes[partition]
         assert len(nm.region_overlaps) == 0 and adjacency_components(nm) == 1
         assert centre_height_jumps(nm).max() <= agent.height, partition
+    # the stairwell lies in the first tile of the tiled build: auto redid that one only
+    assert meshes["auto"].repartitioned_tiles.tolist() == [[0, 0]]
+
+
+MESH_ARRAYS = ("vertices", "polygons", "neighbours", "area_ids", "region_ids",
+               "detail_vertices", "detail_triangles", "detail_polygon")
+
+
+def same_arrays(a: NavMesh, b: NavMesh) -> bool:
+    return all(np.array_equal(getattr(a, name), getattr(b, name)) for name in MESH_ARRAYS)
+
+
+def test_auto_without_overlaps_is_watershed(shared_data):
+    from g2s_core.mesh import load_mesh
+    nav_test, _ = load_mesh(shared_data / "nav_test.obj")
+    for mesh, tile_size in ((nav_test, None), (ramp_level(), 32)):
+        auto, watershed = build(mesh, partition="auto", tile_size=tile_size), build(mesh, partition="watershed",
+                                                                                  tile_size=tile_size)
+        assert len(watershed.region_overlaps) == 0 and len(auto.repartitioned_tiles) == 0
+        assert same_arrays(auto, watershed)
+        assert np.array_equal(auto.portals().endpoints, watershed.portals().endpoints)
+
+
+def test_auto_fallback_on_the_same_heightfield_is_a_fresh_fallback_build(three_storeys):
+    # the watershed pass (its distance field and regions) leaves nothing that changes the fallback's result
+    level, design = three_storeys
+    agent = types.SimpleNamespace(radius=design["radius"], height=design["height"],
+                                  max_climb=design["max_climb"], max_slope=design["max_slope_deg"])
+    auto, layers = build(level.mesh, agent, partition="auto"), build(level.mesh, agent, partition="layers")
+    assert auto.tile_count == 1 and auto.repartitioned_tiles.tolist() == [[0, 0]]
+    assert same_arrays(auto, layers)
+
+
+def tile_polygons(nm: NavMesh, k: int) -> np.ndarray:
+    """(n, nvp, 3) world vertices of the polygons of the ``k``-th tile holding polygons, NaN padded."""
+    first = nm.tile_first_polygon
+    end = first[k + 1] if k + 1 < len(first) else nm.polygon_count
+    polygons = nm.polygons[first[k]:end]
+    return np.where((polygons >= 0)[..., None], nm.vertices[polygons], np.nan)
+
+
+def test_tiled_auto_redoes_only_the_tiles_that_overlap(three_storeys):
+    level, design = three_storeys
+    agent = types.SimpleNamespace(radius=design["radius"], height=design["height"],
+                                  max_climb=design["max_climb"], max_slope=design["max_slope_deg"])
+    meshes = {p: build(level.mesh, agent, partition=p, tile_size=128) for p in ("auto", "watershed", "layers")}
+    # watershed overlaps in tile (0, 0) only; auto takes that tile from layers, the other from watershed
+    watershed = meshes["watershed"]
+    (overlap,) = watershed.region_overlaps
+    config = watershed.config()
+    assert config["tileGrid"] == (2, 1) and (overlap[0] - config["bmin"][0]) // (128 * config["cs"]) == 0
+    assert meshes["auto"].repartitioned_tiles.tolist() == [[0, 0]]
+    assert np.array_equal(tile_polygons(meshes["auto"], 0), tile_polygons(meshes["layers"], 0), equal_nan=True)
+    assert np.array_equal(tile_polygons(meshes["auto"], 1), tile_polygons(meshes["watershed"], 1), equal_nan=True)
+    assert not np.array_equal(tile_polygons(meshes["layers"], 1), tile_polygons(meshes["watershed"], 1),
+                              equal_nan=True)
+
+
+def spiral_tower(turns: int = 3, steps_per_turn: int = 16, storey: float = 3.6, inner: float = 1.0,
+                 outer: float = 3.0) -> trimesh.Trimesh:
+    """A round tower (centred on the y axis): ground floor, central newel post, outer wall, and a spiral
+    stair of ``turns`` full turns winding anticlockwise up between them, one ``storey`` per turn; each
+    step a 0.2 m thick slab (four flat pieces of the annulus sector), risers ``storey / steps_per_turn``."""
+    height = turns * storey + 3.0
+    upright = trimesh.transformations.rotation_matrix(-math.pi / 2, (1, 0, 0))  # trimesh's z axis -> y
+
+    def column(mesh: trimesh.Trimesh, bottom: float, top: float) -> trimesh.Trimesh:
+        mesh.apply_transform(upright)
+        return mesh.apply_translation((0.0, (bottom + top) / 2, 0.0))
+
+    parts = [
+        column(trimesh.creation.cylinder(radius=outer + 0.3, height=0.2, sections=48), -0.2, 0.0),
+        column(trimesh.creation.cylinder(radius=inner, height=height, sections=32), 0.0, height),
+        column(trimesh.creation.annulus(r_min=outer, r_max=outer + 0.3, height=height, sections=48), 0.0, height),
+    ]
+    step = 2 * math.pi / steps_per_turn
+    for i in range(turns * steps_per_turn):
+        top = (i + 1) * storey / steps_per_turn
+        angles = np.linspace(i * step, (i + 1) * step, 5)
+        for a0, a1 in zip(angles[:-1], angles[1:]):
+            corners = [(r * math.cos(a), y, r * math.sin(a)) for r in (inner, outer) for a in (a0, a1)
+                       for y in (top - 0.2, top)]
+            parts.append(trimesh.convex.convex_hull(np.array(corners)))
+    return trimesh.util.concatenate(parts)
+
+
+def test_auto_keeps_the_turns_of_a_spiral_stair_apart():
+    # the map-analysis agent; turns 3.6 m apart, the agent 2 m tall
+    agent = types.SimpleNamespace(radius=0.5, height=2.0, max_climb=0.4, max_slope=45.0)
+    tower = spiral_tower()
+    # watershed makes a region of the stair that winds over itself: Recast then gets no polygon at all
+    with pytest.raises(RuntimeError, match=r"no walkable polygons \(1 region\(s\) overlap themselves in plan"):
+        build(tower, agent, partition="watershed")
+    nm = build(tower, agent)
+    assert nm.repartitioned_tiles.tolist() == [[0, 0]] and len(nm.region_overlaps) == 0
+    assert adjacency_components(nm) == 1 and centre_height_jumps(nm).max() <= agent.height
+    assert nm.centres[:, 1].min() < 0.5 and nm.centres[:, 1].max() > 3 * 3.6 - 1.0  # the ground to the top step
 
 
 def test_partition_is_validated():
     with pytest.raises(pydantic.ValidationError):
         RecastParams(partition="spiral")
     assert resolve_settings(AGENT, RecastParams(partition="layers"))["partition"] == "layers"
+    assert RecastParams().partition == "auto"
     with pytest.raises(ValueError, match="partition must be"):
         _recast.build(floor(4, 4).vertices, floor(4, 4).faces, **{**resolve_settings(AGENT), "partition": "spiral"})

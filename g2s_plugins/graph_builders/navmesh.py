@@ -25,10 +25,11 @@ Portal nodes are numbered after the polygons, in the order of their pairs.
 Overlapping regions: Recast's watershed partition can make one region of
 a switchback stairwell over several storeys, which overlaps itself in plan;
 its polygons then join floors metres apart in height and take another
-floor's heights. The builder warns, with the count and the first such
-region's position, when the navmesh has any
-(:attr:`g2s_plugins.recast.NavMesh.region_overlaps`); ``partition: layers``
-or ``monotone`` never makes them (docs/navmesh.md).
+floor's heights. The default ``partition: auto`` rebuilds the regions of
+such a tile with ``layers``, which never makes them, so nothing is left to
+warn about. With ``partition: watershed`` the builder warns, with the count
+and the first such region's position, when the navmesh has any
+(:attr:`g2s_plugins.recast.NavMesh.region_overlaps`; docs/navmesh.md).
 
 Nodes are inserted by polygon index, then the portal nodes; edges sorted by ``(a, b)``, then
 each portal node's two.
@@ -170,7 +171,7 @@ def overlapping_regions_warning(overlaps: np.ndarray, partition: str) -> str:
     return (
         f"graph: Recast's {partition} partition made {regions} in plan (a stairwell over several storeys?), "
         f"the first at ({x:.1f}, {y:.1f}, {z:.1f}) m: polygons there may join floors metres apart in height "
-        f"and sit off the floor; set graph.params.partition: layers (docs/navmesh.md)"
+        f"and sit off the floor; set graph.params.partition: auto, the default (docs/navmesh.md)"
     )
 
 
@@ -190,6 +191,8 @@ def g2s_build_graph(mesh, params, context):
     except SettingsError as exc:
         raise G2SError(str(exc)) from exc
     except RuntimeError as exc:
+        if "overlap themselves in plan" in str(exc):  # the partition's doing, not the mesh's
+            raise G2SError(f"graph.params.partition: {params.partition}: {exc}") from exc
         if "no walkable" not in str(exc):
             raise G2SError(
                 f"graph.params: {exc}; try another cell_size or tile_size (see docs/navmesh.md)"

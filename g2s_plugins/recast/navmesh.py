@@ -71,10 +71,16 @@ class NavMesh:
                         polygon's detail triangles, +Y side.
     ``areas``           (P,) float64, m², sum of the detail triangle areas.
     ``region_overlaps`` (K,3) float64, one span (x, floor y, z) of each Recast
-                        region holding two spans of one xz column: a region
-                        overlapping itself in plan, whose contours (traced in
-                        plan) join floors of different heights. Only the
-                        ``watershed`` partition makes them; tile by tile.
+                        region of the built navmesh holding two spans of one
+                        xz column: a region overlapping itself in plan, whose
+                        contours (traced in plan) join floors of different
+                        heights. Only the ``watershed`` partition leaves them
+                        (``auto`` redoes those tiles); tile by tile.
+    ``repartitioned_tiles`` (R,2) int32, tile (x, z) of each tile whose
+                        watershed regions overlapped and that the ``auto``
+                        partition rebuilt with ``layers`` (row-major order;
+                        ``(0, 0)`` for a solo navmesh); empty for the other
+                        partitions.
 
     Polygon index ``i`` is Detour polygon ``poly_ref(i)``. Polygons are
     numbered tile by tile (row-major tiles); tiles share equal border vertices.
@@ -92,6 +98,7 @@ class NavMesh:
         self.detail_triangles: np.ndarray = core.detail_triangles
         self.detail_polygon: np.ndarray = core.detail_polygon
         self.region_overlaps: np.ndarray = core.region_overlaps
+        self.repartitioned_tiles: np.ndarray = core.repartitioned_tiles
         self.centres, self.normals, self.areas = _surface(
             self.polygon_count, self.vertices, self.polygons,
             self.detail_vertices, self.detail_triangles, self.detail_polygon,

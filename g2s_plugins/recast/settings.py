@@ -105,9 +105,10 @@ class RecastParams(PluginParams):
     filter_low_height_spans: bool = Field(
         True, description="Recast's rcFilterWalkableLowHeightSpans: drop spans with less head room than the agent"
     )
-    partition: Literal["watershed", "monotone", "layers"] = Field(
-        "watershed",
-        description="Recast's region partition: watershed (rcBuildRegions; can make a region of a stairwell over "
+    partition: Literal["auto", "watershed", "monotone", "layers"] = Field(
+        "auto",
+        description="Recast's region partition: auto (watershed, and a tile where a watershed region overlaps "
+        "itself in plan is redone with layers), watershed (rcBuildRegions; can make a region of a stairwell over "
         "several storeys that overlaps itself in plan), monotone (rcBuildRegionsMonotone: never overlaps, long thin "
         "polygons) or layers (rcBuildLayerRegions: never overlaps, fewer polygons, slower on large levels); "
         "see docs/navmesh.md",
