@@ -39,8 +39,8 @@ LAYERED_BUILDING_CORNER_CUTS = (
 )
 
 CASTLE_STAIR_DETAIL = (
-    "the default partition (auto) builds the castle with layer regions (its watershed regions overlap: 4 "
-    "regions, several towers' spiral stairs), and 4 edges still fail: 2 of them join stair polygons whose inner "
+    "the default partition (auto) redoes with layer regions the castle's tiles whose watershed regions overlap "
+    "(4 of 9, the towers' spiral stairs), and 4 edges still fail: 2 of them join stair polygons whose inner "
     "detail samples Recast's detail mesh lifted to the landing or turn above (vertices at 2.9-3.3 m, detail heights "
     "up to 7.18 m; a landing polygon at 7.05 m with detail up to 10.55 m, measured), the other 2 have the cause of "
     "LAYERED_BUILDING_CORNER_CUTS (docs/analysis_quality.md, castle)"
