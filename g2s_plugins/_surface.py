@@ -6,6 +6,8 @@
   sight predicates (``surface_los`` over the navmesh, ``mesh_los`` over the
   level mesh) apply it; they differ only in the line-of-sight test they pass.
 * :func:`normals_angle_deg`: the normal test.
+* :func:`traffic_ranks`: the walking-flow percentile of each node, for the
+  rule's optional traffic test (``max_traffic_step``).
 * :func:`edge_surface_gaps`: how far every edge of a structure strays above
   or below the navmesh's detail surface
   (:meth:`g2s_plugins.recast.NavMesh.segment_surface_gaps`, the check
@@ -18,15 +20,17 @@ Conventions: metres, degrees, Y up.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Hashable, Mapping, Sequence
 
 import networkx as nx
 import numpy as np
 from pydantic import Field
 
 from g2s_core.config import AgentConfig
+from g2s_core.errors import PluginError
 from g2s_core.model import NavMesh
 from g2s_core.plugin import PluginParams
+from g2s_plugins import traffic
 
 Vec = Sequence[float]
 LineOfSight = Callable[[tuple[float, ...], tuple[float, ...]], bool]
@@ -62,6 +66,13 @@ class CollapseParams(PluginParams):
     )
     probe_step: float | None = Field(
         None, gt=0, le=100, description="surface probes along A -> C at most this far apart, m; default agent radius / 2"
+    )
+    max_traffic_step: float | None = Field(
+        None,
+        ge=0,
+        le=100,
+        description="keep B when the walking-flow percentile (0-100) of B differs from A's or C's by more than this, "
+        "percentile points; null: no such check",
     )
 
 
@@ -112,34 +123,75 @@ def edge_surface_gaps(structure: nx.Graph, navmesh: NavMesh, agent: AgentConfig,
     return dict(zip(edges, gaps.tolist()))
 
 
+def traffic_ranks(graph: nx.Graph) -> dict[Hashable, float]:
+    """Walking-flow percentile rank (0-100) of each node of ``graph`` that walkers start from.
+
+    The rank is :func:`g2s_plugins.traffic.percentile` of
+    :func:`g2s_plugins.traffic.walking_flow` with the ``flow`` analyzer's
+    defaults (256 area-sampled sources, seed 0): the array that analyzer and a
+    traffic-aware ``coverage`` use, computed once per graph. Nodes of zero
+    origin weight (an opening the ``entry_exit`` selector adds, area 0) get
+    no rank: no walker starts or ends there, so their through-flow is always
+    0 and says nothing about the traffic around them.
+    """
+    arrays = traffic.surface_arrays(graph)
+    rank = traffic.percentile(traffic.walking_flow(graph, max_sources=traffic.WALKING_SOURCES))
+    walked = traffic.origin_weight(arrays) > 0
+    return {node: value for node, value, keep in zip(arrays.nodes, rank.tolist(), walked.tolist()) if keep}
+
+
 def collapse_rule(
-    tolerance_deg: float, line_of_sight: LineOfSight, whole_chain: bool = True
+    params: CollapseParams, line_of_sight: LineOfSight, graph: nx.Graph | None = None
 ) -> Callable[[nx.DiGraph, int, int, int], bool]:
-    """``P(tree, A, B, C)`` of the paper's Algorithm 5: True when B may be removed.
+    """``P(tree, A, B, C)`` of the paper's Algorithm 5 with ``params``' tolerances: True when B may be removed.
 
     B is kept (False) when
 
     1. C is a leaf not on the walkable surface (``on_navmesh`` false): a line
        of sight to a point off the surface means nothing;
-    2. the normals of the chain bend by more than ``tolerance_deg``: the
-       largest angle between the normals of the pairs AB, BC and AC
-       (:func:`normals_angle_deg`; with ``whole_chain`` false the normals of A
-       and B only, as the paper does, which lets a collapse cut across a
-       change of slope at C);
-    3. ``line_of_sight(A.pos, C.pos)`` is false: the straight segment is not
+    2. with ``max_traffic_step`` set, the walking-flow percentile of B
+       (:func:`traffic_ranks` of ``graph``, the run's initial graph) differs
+       from that of A or of C by more than it: the heat map gives each
+       polygon its nearest structure node's value, so removing B would give
+       B's surroundings the value of a node whose traffic differs; a node
+       without a rank (not in ``graph``, or an opening) is not compared;
+    3. the normals of the chain bend by more than ``normal_tolerance_deg``:
+       the largest angle between the normals of the pairs AB, BC and AC
+       (:func:`normals_angle_deg`; with ``whole_chain_normals`` false the
+       normals of A and B only, as the paper does, which lets a collapse cut
+       across a change of slope at C);
+    4. ``line_of_sight(A.pos, C.pos)`` is false: the straight segment is not
        walkable on the surface (each predicate's test, which also rejects a
        segment straying from the surface by more than its gap tolerance).
 
-    The paper's pseudocode writes test 3 backwards (it sets ``canCollapse =
+    Tests 2 and 3 cost a few lookups; test 4 runs only when they let B go.
+    Test 2 compares the nodes' own polygons, not the polygons each will
+    stand for: those depend on which nodes the rest of the simplification
+    keeps. As A stays while the nodes after it are removed one by one, every
+    node removed between two kept ones is within the step of the first.
+
+    The paper's pseudocode writes test 4 backwards (it sets ``canCollapse =
     false`` when there *is* line of sight, and its last line sets it true
     unconditionally); its text states the intent implemented here: collapse
     only when A and C see each other on the surface.
+
+    Raises:
+        PluginError: ``max_traffic_step`` is set and there is no ``graph``.
     """
+    tolerance_deg, whole_chain, max_step = params.normal_tolerance_deg, params.whole_chain_normals, params.max_traffic_step
+    ranks: Mapping[Hashable, float] = {}
+    if max_step is not None:
+        if graph is None:
+            raise PluginError("max_traffic_step needs the run's initial surface graph")
+        ranks = traffic_ranks(graph)
 
     def predicate(tree: nx.DiGraph, a: int, b: int, c: int) -> bool:
         nodes = tree.nodes
         node_a, node_c = nodes[a], nodes[c]
         if not node_c.get("on_navmesh", False) and tree.out_degree(c) == 0:
+            return False
+        rank_b = ranks.get(b)
+        if rank_b is not None and any(abs(ranks[n] - rank_b) > max_step for n in (a, c) if n in ranks):
             return False
         # pair by pair: a chain whose first pair bends needs no other angle
         normal_a, normal_b = node_a["normal"], nodes[b]["normal"]

@@ -12,7 +12,7 @@ from g2s_core.config import AgentConfig
 from g2s_core.errors import PluginError
 from g2s_core.model import RunContext
 from g2s_core.simplify import simplify_forest
-from g2s_plugins._surface import normals_angle_deg
+from g2s_plugins._surface import normals_angle_deg, traffic_ranks
 from g2s_plugins.predicates import always, max_length, never, surface_los
 
 UP = (0.0, 1.0, 0.0)
@@ -133,6 +133,48 @@ def test_surface_los_keeps_b_when_a_to_c_leaves_the_surface():
 def test_surface_los_zero_normal_keeps_b():
     tree = chain(((1, 0, 9), (0.0, 0.0, 0.0), True), ((2, 0, 9), UP, True), ((3, 0, 9), UP, True))
     assert make(surface_los, SquareWithWall(), normal_tolerance_deg=180.0)(tree, 0, 1, 2) is False
+
+
+def walked_path(count: int = 5) -> nx.Graph:
+    """The initial graph of a corridor: polygons 0 - 1 - ... in a row, 1 m apart, each 1 m²."""
+    graph = nx.path_graph(count)
+    nx.set_edge_attributes(graph, 1.0, "weight")
+    nx.set_node_attributes(graph, 1.0, "area")
+    return graph
+
+
+def test_traffic_ranks_of_a_corridor_leave_openings_out():
+    # through-flow of a row of five: 2 k (4 - k) ordered pairs pass node k: 0, 6, 8, 6, 0;
+    # an opening (area 0) after node 4 starts no walk and adds no flow, but counts among the six ranked values:
+    # ranks 2 (three 0s), 4.5 (two 6s), 6 -> percentiles 100 (rank - 0.5) / 6
+    graph = walked_path()
+    graph.add_edge(4, 5, weight=1.0)
+    graph.nodes[5]["area"] = 0.0
+    assert traffic_ranks(graph) == pytest.approx({0: 25.0, 1: 400 / 6, 2: 550 / 6, 3: 400 / 6, 4: 25.0})
+
+
+def test_surface_los_traffic_step_keeps_b_where_the_flow_changes():
+    # the corridor's percentiles (five values 0, 6, 8, 6, 0): 20, 60, 90, 60, 20; the tree follows it in the open
+    graph = walked_path()
+    tree = chain(*[((1 + 2 * i, 0, 9), UP, True) for i in range(5)])
+
+    def simplified(**params) -> list[tuple[int, int]]:
+        ctx = RunContext(mesh=None, agent=AgentConfig(), centre=np.zeros(3), navmesh=SquareWithWall(), graph=graph)
+        predicate = surface_los.g2s_simplify_predicate(params=surface_los.Params(**params), context=ctx)
+        return sorted(simplify_forest(tree, predicate).edges)
+
+    assert simplified() == [(0, 4)]
+    # 35 points: 0 (20) -> 1 (60) steps 40, so 1 stays; 1 -> 2 (90) -> 3 steps 30, so 2 goes; 3 (60) -> 4 (20) keeps 3
+    assert simplified(max_traffic_step=35) == [(0, 1), (1, 3), (3, 4)]
+    assert simplified(max_traffic_step=25) == [(0, 1), (1, 2), (2, 3), (3, 4)]
+    # 40 points: 1 goes (40 and 30), then 2 (90) is compared with the kept 0 (20): 70, so 2 stays; 3 goes
+    assert simplified(max_traffic_step=40) == [(0, 2), (2, 4)]
+    assert simplified(max_traffic_step=70) == [(0, 4)]
+
+
+def test_traffic_step_needs_the_initial_graph():
+    with pytest.raises(PluginError, match="max_traffic_step"):
+        make(surface_los, SquareWithWall(), max_traffic_step=10.0)
 
 
 def test_normals_angle():

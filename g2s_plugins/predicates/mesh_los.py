@@ -74,9 +74,10 @@ def _below(tree: nx.DiGraph, c: int, count: int) -> list[int]:
 
 
 def mesh_los_predicate(
-    mesh: object, agent: AgentShape, params: Params
+    mesh: object, agent: AgentShape, params: Params, graph: nx.Graph | None = None
 ) -> Callable[[nx.DiGraph, int, int, int], bool]:
-    """``P(tree, a, b, c)`` over ``mesh`` for ``agent`` (see the module docstring).
+    """``P(tree, a, b, c)`` over ``mesh`` for ``agent`` (see the module docstring); ``graph``: the run's
+    initial graph, which ``max_traffic_step`` needs (:func:`g2s_plugins._surface.collapse_rule`).
 
     Simplification asks about one chain at a time, and after removing B it
     asks about A and each child of C next. So a walk A -> C that is not cached
@@ -86,7 +87,6 @@ def mesh_los_predicate(
     those of one call per pair; only the number of calls changes.
     """
     probe_step = params.probe_step if params.probe_step is not None else 0.5 * agent.radius
-    tolerance = params.normal_tolerance_deg
     caster: RayCaster | None = None
     walked: dict[tuple[tuple[float, ...], tuple[float, ...]], bool] = {}  # walks tested, start -> end
     cache: dict[tuple[tuple[float, ...], tuple[float, ...]], bool] = {}  # answers given, for (A, C) and (C, A)
@@ -114,7 +114,7 @@ def mesh_los_predicate(
             cache[(start, end)] = cache[(end, start)] = walked[(start, end)]
         return cache[(start, end)]
 
-    rule = collapse_rule(tolerance, walkable, params.whole_chain_normals)
+    rule = collapse_rule(params, walkable, graph)
 
     def predicate(tree: nx.DiGraph, a: int, b: int, c: int) -> bool:
         nonlocal chain
@@ -131,4 +131,4 @@ def mesh_los_predicate(
 def g2s_simplify_predicate(params: Params, context: RunContext) -> Callable[[nx.DiGraph, int, int, int], bool]:
     """Algorithm 5's rules with a walk test over ``context.mesh`` instead of the navmesh."""
     params = params if params is not None else Params()
-    return mesh_los_predicate(context.mesh, AgentShape.from_config(context.agent), params)
+    return mesh_los_predicate(context.mesh, AgentShape.from_config(context.agent), params, context.graph)

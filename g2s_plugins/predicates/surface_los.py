@@ -65,4 +65,4 @@ def g2s_simplify_predicate(params: Params, context: RunContext) -> Callable[[nx.
             return clear
         return navmesh.segment_surface_gap(start, end, step, gap) <= gap
 
-    return collapse_rule(params.normal_tolerance_deg, line_of_sight, params.whole_chain_normals)
+    return collapse_rule(params, line_of_sight, context.graph)
