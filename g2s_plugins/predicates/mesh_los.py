@@ -4,8 +4,9 @@ The counterpart of ``surface_los`` for graphs built without a navigation
 mesh (the ``sampling`` builder), usable after any builder. For a chain
 A -> B -> C of a rooted tree the predicate is the paper's Algorithm 5 as
 :func:`g2s_plugins._surface.collapse_rule` states it (C a leaf off the
-surface, the chain's normals bending by more than ``normal_tolerance_deg``,
-or no line of sight: B stays), with this line of sight: the agent can walk
+surface, with ``max_traffic_step`` set a step in walking traffic at B, the
+chain's normals bending by more than ``normal_tolerance_deg``, or no line
+of sight: B stays), with this line of sight: the agent can walk
 the straight segment A -> C over ``context.mesh``. The segment lifted by half
 the agent height hits no triangle, and under each of the points spaced at
 most ``probe_step`` apart along it a short downward ray finds walkable ground

@@ -2,7 +2,8 @@
 
 For a chain A -> B -> C of a rooted tree the predicate is the paper's
 Algorithm 5 as :func:`g2s_plugins._surface.collapse_rule` states it (C a
-leaf off the navmesh, the chain's normals bending by more than
+leaf off the navmesh, with ``max_traffic_step`` set a step in walking
+traffic at B, the chain's normals bending by more than
 ``normal_tolerance_deg``, or no line of sight: B stays), with this line of
 sight from A to C:
 
