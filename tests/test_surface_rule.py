@@ -9,9 +9,9 @@ surface (``surface_los``); this checks what the two give together, probing
 every 0.1 m along each edge between on-navmesh nodes. The default building's
 watershed regions overlap and join its storeys (a known Recast defect), so the
 default ``partition: auto`` builds it with layer regions, which keep the storeys
-apart; its structure still fails the check for another known cause
-(:data:`LAYERED_BUILDING_CORNER_CUTS`), and with ``partition: watershed`` for
-the joined storeys (:data:`WATERSHED_STAIRWELL_SHORTCUTS`).
+apart, and its structure passes (the builder routes centre segments that cut a
+corner of the navmesh between its probes, module doc); with ``partition:
+watershed`` it fails for the joined storeys (:data:`WATERSHED_STAIRWELL_SHORTCUTS`).
 """
 
 from __future__ import annotations
@@ -31,14 +31,7 @@ LIMIT = 0.5
 
 PRESETS = ("map_piece", "map_analysis")
 
-LAYERED_BUILDING_CORNER_CUTS = (
-    "the default partition (auto) builds the building with layer regions, which keep the storeys apart, but two "
-    "navmesh edges between neighbour polygons (0-53 and 63-90) cut a corner of the navmesh boundary over less than "
-    "the crest rule's 0.25 m probe spacing (agent radius / 2), so the builder keeps them straight and the 0.1 m "
-    "probes here find them leaving the surface (measured; monotone regions have two such edges too)"
-)
-
-KNOWN_RECAST_SHORTCUTS = {("building", "map_analysis"): LAYERED_BUILDING_CORNER_CUTS}
+KNOWN_RECAST_SHORTCUTS: dict[tuple[str, str], str] = {}
 """Cases that fail for a known defect outside the structure, with its cause; strict: they must keep failing."""
 
 
