@@ -1,7 +1,8 @@
 """How well map-analysis presets show where people walk (issue 9's measures).
 
 Run: ``.venv/bin/python benchmarks/analysis_quality.py [--presets map_analysis_paper map_analysis my.yaml]
-[--levels nav_test samples dungeon_1k dungeon_20k dungeon_100k terrain_1k terrain_20k building_1k building_20k]
+[--levels nav_test samples dungeon_1k dungeon_20k dungeon_100k terrain_1k terrain_20k building_1k building_20k
+castle_1k castle_20k]
 [--seeds 0 1 2]``
 
 For every level and preset it runs the preset with the ``traffic`` evaluator
@@ -57,10 +58,13 @@ FAMILIES = {
     "terrain_20k": ("terrain", {"size": 720.0}),
     "building_1k": ("building", {"floors": 4, "rooms": 40, "stairwells": 2}),
     "building_20k": ("building", {"floors": 12, "rooms": 280, "stairwells": 6}),
+    "castle_1k": ("castle", {"bridges": 2}),
+    "castle_20k": ("castle", {"towers": 24, "size": 520.0, "statues": 20.0, "keep_storeys": 6, "bridges": 4}),
 }
 """Other level families: name -> (sample, arguments), each level built with ``seed=s``. About 1k / 20k navmesh
-polygons with the default agent (seed 0: terrain 931 / 19,864, building 959 / 19,719; other seeds within a
-few per cent); the other arguments are the generators' defaults."""
+polygons with the default agent (seed 0: terrain 931 / 19,864, building 959 / 19,719, castle 1,079 / 20,038 with
+the default watershed partition; other seeds within a few per cent, castle 1k 996-1,079); the other arguments
+are the generators' defaults."""
 
 SAMPLE_LEVELS = ("cross_hub", "t_hub", "two_floors", "closed_room", "room_with_window", "corridor_with_ramp")
 
@@ -88,7 +92,7 @@ def main() -> None:
     parser.add_argument("--presets", nargs="+", default=["map_analysis_paper", "map_analysis"])
     parser.add_argument("--levels", nargs="+", default=["nav_test", "samples", "dungeon_1k", "dungeon_20k"],
                         help="nav_test, samples, a sample name, dungeon_1k, dungeon_20k, dungeon_100k, "
-                             "terrain_1k, terrain_20k, building_1k, building_20k")
+                             "terrain_1k, terrain_20k, building_1k, building_20k, castle_1k, castle_20k")
     parser.add_argument("--seeds", nargs="+", type=int, default=[0], help="seeds of the generated levels")
     args = parser.parse_args()
     print(f"machine: {platform.machine()}, {os.cpu_count()} cores, load average {os.getloadavg()[0]:.1f}")

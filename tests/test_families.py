@@ -1,4 +1,4 @@
-"""The outdoor and multi-storey sample levels (g2s_plugins.samples.outdoor, .buildings)."""
+"""The outdoor, multi-storey and castle sample levels (g2s_plugins.samples.outdoor, .buildings, .castle)."""
 
 from __future__ import annotations
 
@@ -8,12 +8,13 @@ import types
 import numpy as np
 import pytest
 from scipy.sparse import coo_matrix
-from scipy.sparse.csgraph import connected_components
+from scipy.sparse.csgraph import connected_components, shortest_path
 
 import g2s_core
 from g2s_core.cli import main
 from g2s_core.mesh import generate_level
 from g2s_plugins.samples.buildings import building
+from g2s_plugins.samples.castle import CLEARANCE, castle
 from g2s_plugins.samples.levels import DESIGN_AGENT, SAMPLES
 from g2s_plugins.samples.outdoor import _triangle_edges, terrain
 
@@ -23,16 +24,27 @@ AGENT = types.SimpleNamespace(radius=DESIGN_AGENT["radius"], height=DESIGN_AGENT
                               max_climb=DESIGN_AGENT["max_climb"], max_slope=DESIGN_AGENT["max_slope_deg"])
 
 
-def navmesh_components(level) -> tuple[object, int]:
-    nav = recast.build_navmesh(level.mesh.vertices, level.mesh.faces, AGENT)
+def navmesh_components(level, **params) -> tuple[object, int]:
+    nav, labels = navmesh_labels(level, **params)
+    return nav, int(labels.max()) + 1
+
+
+def navmesh_labels(level, **params) -> tuple[object, np.ndarray]:
+    """The navmesh (default agent, Recast ``params``) and each polygon's connected component (P,)."""
+    nav = recast.build_navmesh(level.mesh.vertices, level.mesh.faces, AGENT, recast.RecastParams(**params))
     i, j = np.nonzero(nav.neighbours >= 0)
     k = nav.neighbours[i, j]
     p = nav.polygon_count
     graph = coo_matrix((np.ones(len(i)), (i, k)), shape=(p, p))
-    return nav, connected_components(graph, directed=False)[0]
+    return nav, connected_components(graph, directed=False)[1]
 
 
-@pytest.mark.parametrize("factory, kwargs", [(terrain, {"size": 40.0}), (building, {"floors": 2, "rooms": 4})])
+SMALL_CASTLE = {"towers": 4, "size": 60.0, "keep_storeys": 3, "bridges": 1, "statues": 2.0, "margin": 4.0}
+"""The smallest castle with every feature: spiral stairs, a wall stair, the gate, a bridge, a 3-storey keep."""
+
+
+@pytest.mark.parametrize("factory, kwargs", [(terrain, {"size": 40.0}), (building, {"floors": 2, "rooms": 4}),
+                                             (castle, SMALL_CASTLE)])
 def test_same_arguments_same_mesh_bytes(factory, kwargs):
     a, b, other = factory(seed=3, **kwargs), factory(seed=3, **kwargs), factory(seed=4, **kwargs)
     assert a.mesh.vertices.tobytes() == b.mesh.vertices.tobytes() and a.mesh.faces.tobytes() == b.mesh.faces.tobytes()
@@ -42,7 +54,8 @@ def test_same_arguments_same_mesh_bytes(factory, kwargs):
     assert np.all(a.mesh.area_faces > 1e-9)
 
 
-@pytest.mark.parametrize("spec", ["sample:terrain?size=40&seed=2&obstacles=1.5", "sample:building?floors=2&rooms=5&seed=1"])
+@pytest.mark.parametrize("spec", ["sample:terrain?size=40&seed=2&obstacles=1.5", "sample:building?floors=2&rooms=5&seed=1",
+                                  "sample:castle?towers=3&size=50&seed=1&statues=1.5"])
 def test_sample_specs_resolve_through_the_registry(spec):
     name, query = spec.removeprefix("sample:").split("?")
     kwargs = {k: float(v) if "." in v else int(v) for k, v in (p.split("=") for p in query.split("&"))}
@@ -58,6 +71,11 @@ def test_sample_specs_resolve_through_the_registry(spec):
                                               "needs stairwells >= 1"),
     ("sample:building?door_min=2.0&door_max=1.5", "sample:building with door_min=2.0, door_max=1.5: need door_min "
                                                   "<= door_max <= room_min - 0.6"),
+    ("sample:castle?towers=2", "sample:castle.towers: expected an integer >= 3, got '2'"),
+    ("sample:castle?towers=3&size=50&bridges=2", "sample:castle with towers=3, size=50.0, bridges=2: a castle of 3 "
+                                                 "towers has 1 walls facing a side of the keep; bridges must be <= 1"),
+    ("sample:castle?towers=16&size=60", "sample:castle with towers=16, size=60.0: the curtain walls of 16 towers at "
+                                        "size 60 are 11.9 m long; towers need >= 15.8 m (raise size)"),
 ])
 def test_bad_parameters_are_user_errors(spec, message, tmp_path, capsys):
     assert main(["run", "graph_only", spec, "-o", str(tmp_path / "out")]) == 2
@@ -147,3 +165,109 @@ def test_map_analysis_cuts_across_hills_where_the_papers_normal_test_keeps_every
     papers_tolerance = g2s_core.run(level.mesh, "map_analysis", simplify={"params": {"normal_tolerance_deg": 10.0}})
     kept, kept_at_10 = hills.structure.number_of_nodes(), papers_tolerance.structure.number_of_nodes()
     assert kept < 0.85 * kept_at_10, (kept, kept_at_10)
+
+
+# ---------------------------------------------------------------- castle
+
+WATERSHED_SPIRALS = (
+    "Recast's watershed partition makes one region of the towers' spiral stairs (here one region, 31, holds the "
+    "stair polygons of all four towers); it overlaps itself in plan "
+    "(NavMesh.region_overlaps lists it once), its contour is traced in plan and its stair polygons come out as "
+    "fragments with no neighbour links (9 polygons in 9 components; one tower has none): no tower top, nor the "
+    "walk over the gate, is reached (measured); monotone, layers and auto (the default: the tile redone with "
+    "layers) make one component"
+)
+
+
+def _castle_probes(meta) -> dict[str, tuple[float, float, float]]:
+    """The castle's ground-truth points that must lie on the main walkable area, by name."""
+    probes = {"courtyard": meta["courtyard"], "field": meta["field"], "gate": meta["gate"]["passage"],
+              "walk over the gate": meta["gate"]["walk"], "keep roof": meta["keep"]["floors"][-1]}
+    probes.update({f"tower {i} top": t["top"] for i, t in enumerate(meta["towers"])})
+    probes.update({f"tower {i} door": t["door"] for i, t in enumerate(meta["towers"])})
+    probes.update({f"walk {i}": w for i, w in enumerate(meta["walks"])})
+    probes.update({f"keep floor {i}": f for i, f in enumerate(meta["keep"]["floors"])})
+    probes.update({f"bridge {b['wall']}": b["deck"] for b in meta["bridges"]})
+    probes.update({"wall stair foot": meta["wall_stair"]["foot"], "wall stair top": meta["wall_stair"]["top"]})
+    return probes
+
+
+def _polygon_at(nav, point) -> int:
+    """The polygon under ``point`` within 0.3 m across and 0.5 m up or down (-1: none)."""
+    return nav.nearest_poly(point, (0.3, 0.5, 0.3))[0]
+
+
+@pytest.mark.parametrize("partition", [
+    pytest.param("watershed", marks=pytest.mark.xfail(strict=True, reason=WATERSHED_SPIRALS)), "monotone", "layers",
+    "auto"])
+def test_castle_is_one_walkable_area_from_the_courtyard_to_every_tower_top(partition):
+    level = castle(**SMALL_CASTLE)
+    nav, labels = navmesh_labels(level, partition=partition)
+    main = np.argmax(np.bincount(labels))
+    where = {name: _polygon_at(nav, point) for name, point in _castle_probes(level.metadata).items()}
+    assert {name: p for name, p in where.items() if p < 0 or labels[p] != main} == {}
+    assert labels.max() + 1 == level.metadata["components"] == 1
+
+
+def _graph_distance(nav, a: int, b: int) -> float:
+    """Length (m) of the shortest chain of neighbour polygons from a to b, centre to centre."""
+    i, j = np.nonzero(nav.neighbours >= 0)
+    k = nav.neighbours[i, j]
+    weights = np.linalg.norm(nav.centres[i] - nav.centres[k], axis=1)
+    graph = coo_matrix((weights, (i, k)), shape=(nav.polygon_count,) * 2)
+    return float(shortest_path(graph, directed=False, indices=[a])[0, b])
+
+
+def test_castle_walkways_pass_over_the_ground_as_separate_floors():
+    """Under the bridge and over the gate: two polygons at one x, z, 7 m apart in height, both on the navmesh,
+    not neighbours; the way from one to the other along the navmesh runs through a tower or the keep (> 25 m)."""
+    level = castle(**SMALL_CASTLE)
+    meta = level.metadata
+    nav, _ = navmesh_labels(level, partition="monotone")
+    pairs = [(meta["gate"]["walk"], meta["gate"]["passage"])] + [(b["deck"], b["under"]) for b in meta["bridges"]]
+    for upper, lower in pairs:
+        top, bottom = _polygon_at(nav, upper), _polygon_at(nav, lower)
+        assert top >= 0 and bottom >= 0 and top != bottom
+        assert nav.centres[top, 1] - nav.centres[bottom, 1] == pytest.approx(meta["walk_height"], abs=0.3)
+        assert bottom not in nav.neighbours[top] and top not in nav.neighbours[bottom]
+        assert _graph_distance(nav, top, bottom) > 25.0
+
+
+def _surfaces_above(mesh, xz: np.ndarray) -> list[np.ndarray]:
+    """For each point (x, z): heights (sorted up) of every face hit by a vertical line, and whether each faces up."""
+    origins = np.column_stack([xz[:, 0], np.full(len(xz), 100.0), xz[:, 1]])
+    locations, rays, faces = mesh.ray.intersects_location(origins, np.tile([0.0, -1.0, 0.0], (len(xz), 1)),
+                                                          multiple_hits=True)
+    up = mesh.face_normals[faces, 1] > 0.5
+    return [np.array(sorted(zip(locations[rays == r, 1], up[rays == r]))) for r in range(len(xz))]
+
+
+def test_castle_head_room_over_every_stair_landing_and_under_walkways():
+    """Every upward face of a tower's stair, landing or top platform that has something above it (its next face up
+    faces down) has CLEARANCE (2.4 m) of head room; so has the ground under the bridges and in the gate passage."""
+    level = castle(**SMALL_CASTLE)
+    meta = level.metadata
+    angles = np.linspace(0.0, 2 * math.pi, 90, endpoint=False)
+    ring = np.concatenate([r * np.column_stack([np.cos(angles), np.sin(angles)]) for r in (2.8, 3.75, 4.7)])
+    checked = 0
+    for tower in meta["towers"]:
+        for hits in _surfaces_above(level.mesh, ring + tower["centre"]):
+            for (y, up), (y_next, up_next) in zip(hits[:-1], hits[1:]):
+                if up and not up_next and y > 0.1:  # a walkable top with an underside above it
+                    assert y_next - y >= CLEARANCE - 1e-6, (tower["centre"], y, y_next)
+                    checked += 1
+    assert checked > 4 * 90 * 3  # every stair column has at least one turn above
+    below = np.array([[p[0], p[2]] for p in [meta["gate"]["passage"], *(b["under"] for b in meta["bridges"])]])
+    for hits in _surfaces_above(level.mesh, below):
+        ground = np.flatnonzero((np.abs(hits[:, 0]) < 1e-6) & (hits[:, 1] > 0))[0]
+        assert hits[ground + 1, 0] >= CLEARANCE
+
+
+@pytest.mark.parametrize("towers", [3, 5, 8, 12, 32])
+def test_castle_spiral_stairs_fit_any_number_of_towers(towers):
+    size = max(60.0, 8.0 * towers)
+    meta = castle(towers=towers, size=size, statues=0.0).metadata
+    assert len(meta["towers"]) == len(meta["walks"]) == towers
+    for tower in meta["towers"]:
+        assert tower["turns"] > 2.0
+        assert all(0.4 < rate <= 1.5 for rate in tower["rates"])

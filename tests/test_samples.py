@@ -89,6 +89,7 @@ def test_registry_names_and_load():
         "chamfered_platform",
         "terrain",
         "building",
+        "castle",
     }
     lvl = load_sample("straight_corridor", length=5.0)
     assert isinstance(lvl, SampleLevel) and lvl.name == "straight_corridor"

@@ -164,6 +164,32 @@ def _sloped_blocks(x0: Any, x1: Any, z0: Any, z1: Any, bottom: Any, top0: Any, t
     return np.stack([x, y, z], axis=2)
 
 
+def _plan_hexahedra(base: np.ndarray, top: np.ndarray, y0: Any, y1: Any) -> np.ndarray:
+    """Hexahedra with vertical sides between a base quad at ``y0`` and a top quad at ``y1``.
+
+    ``base`` and ``top`` are (n, 4, 2) x, z corners in the order (u0, v0),
+    (u1, v0), (u1, v1), (u0, v1) of the solid's own (u, v) frame, with v to
+    the left of u seen from above (counter-clockwise, as an axis-aligned box's
+    x0z0, x1z0, x1z1, x0z1); ``y0``, ``y1`` scalars or (n,), metres. Returns
+    corners (n, 8, 3) in the ``_HEX_BITS`` order.
+    """
+    base = np.asarray(base, dtype=np.float64).reshape(-1, 4, 2)
+    top = np.asarray(top, dtype=np.float64).reshape(-1, 4, 2)
+    y0, y1 = _col(y0, len(base)), _col(y1, len(base))
+    quad_corner = np.array([0, 1, 3, 2])[(_HEX_BITS[:, 0] + 2 * _HEX_BITS[:, 2]).astype(int)]  # (8,)
+    upper = _HEX_BITS[:, 1] > 0
+    xz = np.where(upper[None, :, None], top[:, quad_corner], base[:, quad_corner])
+    y = np.where(upper[None, :], y1[:, None], y0[:, None])
+    return np.stack([xz[:, :, 0], y, xz[:, :, 1]], axis=2)
+
+
+def _turned_rectangle(cx: float, cz: float, half_x: float, half_z: float, angle: float) -> np.ndarray:
+    """Corners (4, 2) of a rectangle turned by ``angle`` about its centre, counter-clockwise from above."""
+    local = np.array([[-half_x, -half_z], [half_x, -half_z], [half_x, half_z], [-half_x, half_z]])
+    c, s = math.cos(angle), math.sin(angle)
+    return local @ np.array([[c, s], [-s, c]]) + (cx, cz)
+
+
 def _hexahedra_mesh(corners: np.ndarray) -> trimesh.Trimesh:
     """One mesh from hexahedra (n, 8, 3), 12 outward triangles each, vertices merged."""
     n = len(corners)
@@ -934,8 +960,9 @@ SAMPLES: dict[str, Callable[..., SampleLevel]] = {
 """Sample name -> factory. Every factory takes keyword arguments only."""
 
 # Rooms joined by doors (chokepoint and region ground truth), map pieces with
-# known openings, outdoor terrain and multi-storey buildings build on the helpers above.
+# known openings, outdoor terrain, multi-storey buildings and castles build on the helpers above.
 from g2s_plugins.samples.buildings import SAMPLES as _BUILDING_SAMPLES  # noqa: E402
+from g2s_plugins.samples.castle import SAMPLES as _CASTLE_SAMPLES  # noqa: E402
 from g2s_plugins.samples.outdoor import SAMPLES as _OUTDOOR_SAMPLES  # noqa: E402
 from g2s_plugins.samples.pieces import PIECES as _PIECE_SAMPLES  # noqa: E402
 from g2s_plugins.samples.rooms import SAMPLES as _ROOM_SAMPLES  # noqa: E402
@@ -944,6 +971,7 @@ SAMPLES.update(_ROOM_SAMPLES)
 SAMPLES.update(_PIECE_SAMPLES)
 SAMPLES.update(_OUTDOOR_SAMPLES)
 SAMPLES.update(_BUILDING_SAMPLES)
+SAMPLES.update(_CASTLE_SAMPLES)
 
 
 def load_sample(name: str, **kwargs: Any) -> SampleLevel:

@@ -21,7 +21,7 @@ from pydantic import NonNegativeFloat, NonNegativeInt, PositiveFloat, validate_c
 from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import connected_components
 
-from g2s_plugins.samples.levels import DESIGN_AGENT, SampleLevel, _LevelBuilder
+from g2s_plugins.samples.levels import DESIGN_AGENT, SampleLevel, _LevelBuilder, _plan_hexahedra, _turned_rectangle
 
 _HILL_AREA = 400.0  # m² of map per hill or hollow
 _HILL_SIGMA = (6.0, 18.0)  # m, range of a hill's Gaussian width
@@ -143,23 +143,10 @@ def terrain(
         """A hexahedron with base and top quads (4, 2) in x, z, counter-clockwise seen from above
         (corner order x0z0, x1z0, x1z1, x0z1 of its local frame), ``tall`` metres above the ground."""
         low, high = ground_range(base)
-        order = [0, 1, 3, 2]  # the quads' corners in _HEX_BITS order (x fastest, then z)
-        y0, y1 = low - _SINK, high + tall
-        corners = np.empty((8, 3))
-        for k in range(8):
-            quad = top if (k >> 1) & 1 else base
-            x, z = quad[order[(k & 1) + 2 * ((k >> 2) & 1)]]
-            corners[k] = (x, y1 if (k >> 1) & 1 else y0, z)
-        b.hexahedra(corners[None])
+        b.hexahedra(_plan_hexahedra(base, top, low - _SINK, high + tall))
         footprints.append(_polygon_area(base))
         perimeters.append(float(np.linalg.norm(base - np.roll(base, 1, axis=0), axis=1).sum()))
         centres_xz.append(base.mean(axis=0))
-
-    def rectangle(cx: float, cz: float, half_x: float, half_z: float, angle: float) -> np.ndarray:
-        """Corners (4, 2) of a rectangle turned by ``angle`` about its centre, counter-clockwise from above."""
-        local = np.array([[-half_x, -half_z], [half_x, -half_z], [half_x, half_z], [-half_x, half_z]])
-        c, s = math.cos(angle), math.sin(angle)
-        return local @ np.array([[c, s], [-s, c]]) + (cx, cz)
 
     count = int(rng.poisson(obstacles * size * size / 100.0))
     place = rng.uniform(0.0, size, (count, 2))
@@ -170,11 +157,11 @@ def terrain(
     rock_half = rng.uniform(*_ROCK["half"], count)
     rock_height = rng.uniform(*_ROCK["height"], count)
     for k in np.nonzero(is_tree)[0]:
-        trunk = rectangle(*place[k], tree_side[k] / 2, tree_side[k] / 2, turn[k])
+        trunk = _turned_rectangle(*place[k], tree_side[k] / 2, tree_side[k] / 2, turn[k])
         prism(trunk, trunk, tree_height[k])
     for k in np.nonzero(~is_tree)[0]:
-        base = rectangle(*place[k], rock_half[k], rock_half[k], turn[k])
-        top = rectangle(*place[k], _ROCK["top"] * rock_half[k], _ROCK["top"] * rock_half[k], turn[k])
+        base = _turned_rectangle(*place[k], rock_half[k], rock_half[k], turn[k])
+        top = _turned_rectangle(*place[k], _ROCK["top"] * rock_half[k], _ROCK["top"] * rock_half[k], turn[k])
         prism(base, top, rock_height[k])
 
     n_ruins = int(rng.poisson(ruins * size * size / 1e4))
@@ -186,7 +173,7 @@ def terrain(
         for length, gap, tall in zip(rng.uniform(*_RUIN["length"], pieces), rng.uniform(*_RUIN["gap"], pieces),
                                      rng.uniform(*_RUIN["height"], pieces)):
             middle = start + (offset + length / 2) * direction
-            wall = rectangle(*middle, length / 2, _RUIN["thickness"] / 2, angle)
+            wall = _turned_rectangle(*middle, length / 2, _RUIN["thickness"] / 2, angle)
             prism(wall, wall, tall)
             offset += length + gap
             segments += 1
