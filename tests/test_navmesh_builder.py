@@ -203,6 +203,59 @@ def test_crests_are_crossed_on_the_surface():
     assert max(routed_gaps.values()) <= plugin.Params().max_edge_gap + 0.05  # the probes' spacing adds a little
 
 
+def _crosses_in_plan(a, b, p, q) -> bool:
+    """Whether the x-z segment a-b meets the x-z segment p-q (orientations; independent of the builder's clipping)."""
+    def side(o, r, s):
+        return (r[0] - o[0]) * (s[2] - o[2]) - (r[2] - o[2]) * (s[0] - o[0])
+    return side(a, b, p) * side(a, b, q) <= 0 and side(p, q, a) * side(p, q, b) <= 0
+
+
+def test_centre_segments_are_clipped_to_their_polygons():
+    """Unit square A = [0, 1]², then B = [1, 2] x [0, 4] (clockwise) sharing x = 1, 0 <= z <= 1 with it:
+    from A's centre (0.5, 0.5) to (1.5, 2) the segment leaves A through z = 1 at t = 1/3 and enters B at
+    x = 1, t = 1/2, passing the portal's end (1, 1) outside both; to (1.5, 0.5) it crosses the portal at t = 1/2."""
+    corners = [(0, 0), (1, 0), (1, 1), (0, 1), (1, 0), (1, 4), (2, 4), (2, 0)]
+    navmesh = types.SimpleNamespace(
+        vertices=np.array([(x, 0.0, z) for x, z in corners]),
+        polygons=np.array([[0, 1, 2, 3, -1, -1], [4, 5, 6, 7, -1, -1]]),
+    )
+    origin = np.array([[0.5, 0.5], [0.5, 0.5]])
+    direction = np.array([[1.0, 1.5], [1.0, 0.0]])
+    leave = plugin._clip(navmesh, np.array([0, 0]), origin, direction, leaving=True)
+    enter = plugin._clip(navmesh, np.array([1, 1]), origin, direction, leaving=False)
+    assert leave.tolist() == pytest.approx([1 / 3, 0.5]) and enter.tolist() == pytest.approx([0.5, 0.5])
+
+
+def two_rooms_and_a_passage() -> trimesh.Trimesh:
+    """Two 4 x 4 m floors 2 m apart along x, joined along their z = 0 sides by a passage 1.5 m wide (no walls)."""
+    return trimesh.util.concatenate([
+        slab((4, 0.2, 4), (2, -0.1, 2)), slab((2, 0.2, 1.5), (5, -0.1, 0.75)), slab((4, 0.2, 4), (8, -0.1, 2)),
+    ])
+
+
+def test_corner_cuts_between_probes_are_routed():
+    """With the presets' agent (r = 0.5 m) Recast makes 4 polygons: a strip along the passage and into both
+    rooms, and three polygons of the rooms. The segment from the strip's centre to the first room's leaves
+    the navmesh round the passage's corner for less than the crest rule's 0.25 m probe spacing; it misses its
+    portal in plan, so the builder routes it through a portal node; the other pairs cross their portals and
+    keep one edge (a flat floor: no crest either)."""
+    mesh = two_rooms_and_a_passage()
+    paper, ctx = run(mesh, plugin.Params(max_edge_gap=None), agent=BASE_AGENT)
+    nm, portals = ctx.navmesh, ctx.navmesh.portals()
+    starts, ends = nm.centres[portals.pairs[:, 0]], nm.centres[portals.pairs[:, 1]]
+    crosses = [_crosses_in_plan(a, b, p, q) for a, b, (p, q) in zip(starts, ends, portals.endpoints)]
+    assert crosses.count(False) == 1
+    cut = crosses.index(False)
+    step = 0.5 * BASE_AGENT.radius
+    assert nm.segment_surface_gaps(starts, ends, step, 4.0).max() <= 0.4  # the crest rule's probes see nothing
+    assert nm.segment_surface_gaps(starts[[cut]], ends[[cut]], 0.01, 4.0)[0] == math.inf  # finer ones do
+    assert max(edge_surface_gaps(paper, nm, BASE_AGENT, step=0.01).values()) == math.inf
+    routed, _ = run(mesh, agent=BASE_AGENT)
+    assert [routed.has_edge(a, b) for a, b in portals.pairs.tolist()] == crosses
+    assert routed.number_of_nodes() == nm.polygon_count + 1
+    assert max(edge_surface_gaps(routed, nm, BASE_AGENT, step=0.01).values()) <= 0.4
+
+
 def test_segment_surface_gaps_on_a_slab():
     mesh = slab((10, 0.2, 10), (0, -0.1, 0))
     _, ctx = run(mesh, plugin.Params(max_edge_gap=None))

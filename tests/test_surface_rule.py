@@ -9,9 +9,9 @@ surface (``surface_los``); this checks what the two give together, probing
 every 0.1 m along each edge between on-navmesh nodes. The default building's
 watershed regions overlap and join its storeys (a known Recast defect), so the
 default ``partition: auto`` builds it with layer regions, which keep the storeys
-apart; its structure still fails the check for another known cause
-(:data:`LAYERED_BUILDING_CORNER_CUTS`), and with ``partition: watershed`` for
-the joined storeys (:data:`WATERSHED_STAIRWELL_SHORTCUTS`).
+apart, and its structure passes (the builder routes centre segments that cut a
+corner of the navmesh between its probes, module doc); with ``partition:
+watershed`` it fails for the joined storeys (:data:`WATERSHED_STAIRWELL_SHORTCUTS`).
 """
 
 from __future__ import annotations
@@ -31,23 +31,17 @@ LIMIT = 0.5
 
 PRESETS = ("map_piece", "map_analysis")
 
-LAYERED_BUILDING_CORNER_CUTS = (
-    "the default partition (auto) builds the building with layer regions, which keep the storeys apart, but two "
-    "navmesh edges between neighbour polygons (0-53 and 63-90) cut a corner of the navmesh boundary over less than "
-    "the crest rule's 0.25 m probe spacing (agent radius / 2), so the builder keeps them straight and the 0.1 m "
-    "probes here find them leaving the surface (measured; monotone regions have two such edges too)"
-)
-
 CASTLE_STAIR_DETAIL = (
     "the default partition (auto) redoes with layer regions the castle's tiles whose watershed regions overlap "
     "(4 of 9, the towers' spiral stairs), and 4 edges still fail: 2 of them join stair polygons whose inner "
     "detail samples Recast's detail mesh lifted to the landing or turn above (vertices at 2.9-3.3 m, detail heights "
-    "up to 7.18 m; a landing polygon at 7.05 m with detail up to 10.55 m, measured), the other 2 have the cause of "
-    "LAYERED_BUILDING_CORNER_CUTS (docs/analysis_quality.md, castle)"
+    "up to 7.18 m; a landing polygon at 7.05 m with detail up to 10.55 m, measured), the other 2 join two route "
+    "points of one crest-routed pair on a stair, 0.17-0.21 m apart in plan and 0.5-2.3 m in height, between which "
+    "the 0.25 m probes see nothing (not centre-to-centre edges: the corner rule leaves them; docs/analysis_quality.md, "
+    "castle)"
 )
 
-KNOWN_RECAST_SHORTCUTS = {("building", "map_analysis"): LAYERED_BUILDING_CORNER_CUTS,
-                          ("castle", "map_analysis"): CASTLE_STAIR_DETAIL}
+KNOWN_RECAST_SHORTCUTS = {("castle", "map_analysis"): CASTLE_STAIR_DETAIL}
 """Cases that fail for a known defect outside the structure, with its cause; strict: they must keep failing."""
 
 
