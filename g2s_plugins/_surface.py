@@ -124,19 +124,22 @@ def edge_surface_gaps(structure: nx.Graph, navmesh: NavMesh, agent: AgentConfig,
 
 
 def traffic_ranks(graph: nx.Graph) -> dict[Hashable, float]:
-    """Walking-flow percentile rank (0-100) of each node of ``graph`` that walkers start from.
+    """Walking-flow percentile rank (0-100) of each node of ``graph`` that some walk starts at or passes through.
 
     The rank is :func:`g2s_plugins.traffic.percentile` of
     :func:`g2s_plugins.traffic.walking_flow` with the ``flow`` analyzer's
     defaults (256 area-sampled sources, seed 0): the array that analyzer and a
-    traffic-aware ``coverage`` use, computed once per graph. Nodes of zero
-    origin weight (an opening the ``entry_exit`` selector adds, area 0) get
-    no rank: no walker starts or ends there, so their through-flow is always
-    0 and says nothing about the traffic around them.
+    traffic-aware ``coverage`` use, computed once per graph. A node no walk
+    touches, with no area and no through-flow (an opening the ``entry_exit``
+    selector adds: area 0, at the end of the graph), gets no rank: its 0
+    says nothing about the traffic around it. A portal node of the
+    ``navmesh`` builder (area 0, between two polygons) is ranked by the
+    walks passing through it.
     """
     arrays = traffic.surface_arrays(graph)
-    rank = traffic.percentile(traffic.walking_flow(graph, max_sources=traffic.WALKING_SOURCES))
-    walked = traffic.origin_weight(arrays) > 0
+    flow = traffic.walking_flow(graph, max_sources=traffic.WALKING_SOURCES)
+    rank = traffic.percentile(flow)
+    walked = (traffic.origin_weight(arrays) > 0) | (flow > 0)
     return {node: value for node, value, keep in zip(arrays.nodes, rank.tolist(), walked.tolist()) if keep}
 
 
@@ -154,7 +157,8 @@ def collapse_rule(
        from that of A or of C by more than it: the heat map gives each
        polygon its nearest structure node's value, so removing B would give
        B's surroundings the value of a node whose traffic differs; a node
-       without a rank (not in ``graph``, or an opening) is not compared;
+       without a rank (not in ``graph``, or an opening no walk touches) is
+       not compared;
     3. the normals of the chain bend by more than ``normal_tolerance_deg``:
        the largest angle between the normals of the pairs AB, BC and AC
        (:func:`normals_angle_deg`; with ``whole_chain_normals`` false the

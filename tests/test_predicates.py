@@ -151,6 +151,12 @@ def test_traffic_ranks_of_a_corridor_leave_openings_out():
     graph.add_edge(4, 5, weight=1.0)
     graph.nodes[5]["area"] = 0.0
     assert traffic_ranks(graph) == pytest.approx({0: 25.0, 1: 400 / 6, 2: 550 / 6, 3: 400 / 6, 4: 25.0})
+    # a portal node (area 0) between polygons 1 and 2 is ranked by the walks through it: 2 x 2 x 3 = 12, the most
+    graph = walked_path()
+    graph.remove_edge(1, 2)
+    graph.add_edges_from([(1, 5), (5, 2)], weight=0.5)
+    graph.nodes[5]["area"] = 0.0
+    assert traffic_ranks(graph)[5] == pytest.approx(100 * 5.5 / 6)
 
 
 def test_surface_los_traffic_step_keeps_b_where_the_flow_changes():
