@@ -118,7 +118,7 @@ constexpr int MIN_TILE_SIZE = 16;
 // Recast's region partitions (step 4 of build_tile). automatic: watershed, redone
 // with AUTO_FALLBACK in a tile where a watershed region overlaps itself in plan.
 enum class Partition { automatic, watershed, monotone, layers };
-constexpr Partition AUTO_FALLBACK = Partition::layers;
+constexpr Partition AUTO_FALLBACK = Partition::monotone;
 
 Partition parse_partition(const std::string& name) {
     if (name == "auto") return Partition::automatic;
@@ -1113,7 +1113,7 @@ void def_build(nb::module_& m) {
           "rasterised at once (the solo grid, or one tile with its border). filter_*: run Recast's "
           "rcFilterLowHangingWalkableObstacles / rcFilterLedgeSpans / rcFilterWalkableLowHeightSpans. "
           "partition: Recast's region partition, 'auto' (watershed; a tile where a region overlaps "
-          "itself in plan is redone with layers), 'watershed' (rcBuildRegions), 'monotone' "
+          "itself in plan is redone with monotone), 'watershed' (rcBuildRegions), 'monotone' "
           "(rcBuildRegionsMonotone) or 'layers' (rcBuildLayerRegions).");
 }
 

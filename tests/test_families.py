@@ -175,7 +175,7 @@ WATERSHED_SPIRALS = (
     "(NavMesh.region_overlaps lists it once), its contour is traced in plan and its stair polygons come out as "
     "fragments with no neighbour links (9 polygons in 9 components; one tower has none): no tower top, nor the "
     "walk over the gate, is reached (measured); monotone, layers and auto (the default: the tile redone with "
-    "layers) make one component"
+    "monotone) make one component"
 )
 
 

@@ -686,9 +686,9 @@ def test_auto_fallback_on_the_same_heightfield_is_a_fresh_fallback_build(three_s
     level, design = three_storeys
     agent = types.SimpleNamespace(radius=design["radius"], height=design["height"],
                                   max_climb=design["max_climb"], max_slope=design["max_slope_deg"])
-    auto, layers = build(level.mesh, agent, partition="auto"), build(level.mesh, agent, partition="layers")
+    auto, monotone = build(level.mesh, agent, partition="auto"), build(level.mesh, agent, partition="monotone")
     assert auto.tile_count == 1 and auto.repartitioned_tiles.tolist() == [[0, 0]]
-    assert same_arrays(auto, layers)
+    assert same_arrays(auto, monotone)
 
 
 def tile_polygons(nm: NavMesh, k: int) -> np.ndarray:
@@ -703,16 +703,16 @@ def test_tiled_auto_redoes_only_the_tiles_that_overlap(three_storeys):
     level, design = three_storeys
     agent = types.SimpleNamespace(radius=design["radius"], height=design["height"],
                                   max_climb=design["max_climb"], max_slope=design["max_slope_deg"])
-    meshes = {p: build(level.mesh, agent, partition=p, tile_size=128) for p in ("auto", "watershed", "layers")}
-    # watershed overlaps in tile (0, 0) only; auto takes that tile from layers, the other from watershed
+    meshes = {p: build(level.mesh, agent, partition=p, tile_size=128) for p in ("auto", "watershed", "monotone")}
+    # watershed overlaps in tile (0, 0) only; auto takes that tile from monotone, the other from watershed
     watershed = meshes["watershed"]
     (overlap,) = watershed.region_overlaps
     config = watershed.config()
     assert config["tileGrid"] == (2, 1) and (overlap[0] - config["bmin"][0]) // (128 * config["cs"]) == 0
     assert meshes["auto"].repartitioned_tiles.tolist() == [[0, 0]]
-    assert np.array_equal(tile_polygons(meshes["auto"], 0), tile_polygons(meshes["layers"], 0), equal_nan=True)
+    assert np.array_equal(tile_polygons(meshes["auto"], 0), tile_polygons(meshes["monotone"], 0), equal_nan=True)
     assert np.array_equal(tile_polygons(meshes["auto"], 1), tile_polygons(meshes["watershed"], 1), equal_nan=True)
-    assert not np.array_equal(tile_polygons(meshes["layers"], 1), tile_polygons(meshes["watershed"], 1),
+    assert not np.array_equal(tile_polygons(meshes["monotone"], 1), tile_polygons(meshes["watershed"], 1),
                               equal_nan=True)
 
 

@@ -8,7 +8,7 @@ edges over crests and troughs go through portal nodes (the navmesh builder's
 surface (``surface_los``); this checks what the two give together, probing
 every 0.1 m along each edge between on-navmesh nodes. The default building's
 watershed regions overlap and join its storeys (a known Recast defect), so the
-default ``partition: auto`` builds it with layer regions, which keep the storeys
+default ``partition: auto`` builds it with monotone regions, which keep the storeys
 apart, and its structure passes (the builder routes centre segments that cut a
 corner of the navmesh between its probes, module doc); with ``partition:
 watershed`` it fails for the joined storeys (:data:`WATERSHED_STAIRWELL_SHORTCUTS`).
@@ -32,13 +32,11 @@ LIMIT = 0.5
 PRESETS = ("map_piece", "map_analysis")
 
 CASTLE_STAIR_DETAIL = (
-    "the default partition (auto) redoes with layer regions the castle's tiles whose watershed regions overlap "
-    "(4 of 9, the towers' spiral stairs), and 4 edges still fail: 2 of them join stair polygons whose inner "
-    "detail samples Recast's detail mesh lifted to the landing or turn above (vertices at 2.9-3.3 m, detail heights "
-    "up to 7.18 m; a landing polygon at 7.05 m with detail up to 10.55 m, measured), the other 2 join two route "
-    "points of one crest-routed pair on a stair, 0.17-0.21 m apart in plan and 0.5-2.3 m in height, between which "
-    "the 0.25 m probes see nothing (not centre-to-centre edges: the corner rule leaves them; docs/analysis_quality.md, "
-    "castle)"
+    "the default partition (auto) redoes with monotone regions the castle's tiles whose watershed regions overlap "
+    "(4 of 9, the towers' spiral stairs), and 1 edge of 742 still fails (3.21 m): a 0.33 m initial-graph edge "
+    "that climbs 3.24 m to the centre of a stair polygon whose inner detail samples Recast's detail mesh lifted to "
+    "the turn above (vertices at 2.17-2.42 m, detail heights up to 7.05 m, centre at 5.55 m; measured; "
+    "docs/analysis_quality.md, castle)"
 )
 
 KNOWN_RECAST_SHORTCUTS = {("castle", "map_analysis"): CASTLE_STAIR_DETAIL}
@@ -69,7 +67,7 @@ def test_generated_structures_stay_on_the_surface(plans, sample: str, preset: st
 
 
 def test_spiral_stair_structure_stays_on_the_surface(plans) -> None:
-    # watershed gets no navmesh at all here; auto's layer regions keep the turns apart (tests/test_recast.py)
+    # watershed gets no navmesh at all here; auto's monotone regions keep the turns apart (tests/test_recast.py)
     registry, plan = plans[0], plans[1]["map_analysis"]
     result = pipeline.run(plan, registry, spiral_tower(), "spiral_tower", "-")
     assert len(result.context.navmesh.repartitioned_tiles) == 1 and result.structure.number_of_edges() > 5

@@ -37,7 +37,7 @@ Overlapping regions: Recast's watershed partition can make one region of
 a switchback stairwell over several storeys, which overlaps itself in plan;
 its polygons then join floors metres apart in height and take another
 floor's heights. The default ``partition: auto`` rebuilds the regions of
-such a tile with ``layers``, which never makes them, so nothing is left to
+such a tile with ``monotone``, which never makes them, so nothing is left to
 warn about. With ``partition: watershed`` the builder warns, with the count
 and the first such region's position, when the navmesh has any
 (:attr:`g2s_plugins.recast.NavMesh.region_overlaps`; docs/navmesh.md).

@@ -78,7 +78,7 @@ class NavMesh:
                         (``auto`` redoes those tiles); tile by tile.
     ``repartitioned_tiles`` (R,2) int32, tile (x, z) of each tile whose
                         watershed regions overlapped and that the ``auto``
-                        partition rebuilt with ``layers`` (row-major order;
+                        partition rebuilt with ``monotone`` (row-major order;
                         ``(0, 0)`` for a solo navmesh); empty for the other
                         partitions.
 

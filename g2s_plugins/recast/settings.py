@@ -108,7 +108,7 @@ class RecastParams(PluginParams):
     partition: Literal["auto", "watershed", "monotone", "layers"] = Field(
         "auto",
         description="Recast's region partition: auto (watershed, and a tile where a watershed region overlaps "
-        "itself in plan is redone with layers), watershed (rcBuildRegions; can make a region of a stairwell over "
+        "itself in plan is redone with monotone), watershed (rcBuildRegions; can make a region of a stairwell over "
         "several storeys that overlaps itself in plan), monotone (rcBuildRegionsMonotone: never overlaps, long thin "
         "polygons) or layers (rcBuildLayerRegions: never overlaps, fewer polygons, slower on large levels); "
         "see docs/navmesh.md",
