@@ -33,7 +33,7 @@ PRESETS = ("map_piece", "map_analysis")
 
 CASTLE_STAIR_DETAIL = (
     "the default partition (auto) redoes with monotone regions the castle's tiles whose watershed regions overlap "
-    "(4 of 9, the towers' spiral stairs), and 1 edge of 742 still fails (3.21 m): a 0.33 m initial-graph edge "
+    "(4 of 9, the towers' spiral stairs), and 1 edge of 742 (784 with map_analysis's traffic step) still fails (3.21 m): a 0.33 m initial-graph edge "
     "that climbs 3.24 m to the centre of a stair polygon whose inner detail samples Recast's detail mesh lifted to "
     "the turn above (vertices at 2.17-2.42 m, detail heights up to 7.05 m, centre at 5.55 m; measured; "
     "docs/analysis_quality.md, castle)"
