@@ -103,10 +103,9 @@ def navmesh_graph(navmesh: NavMesh, agent: AgentConfig | None = None, max_edge_g
     if max_edge_gap is not None and agent is None:
         raise ValueError("max_edge_gap needs the agent (its radius spaces the probes)")
     if max_edge_gap is not None and len(pairs):
-        gaps = navmesh.segment_surface_gaps(
-            centres[pairs[:, 0]], centres[pairs[:, 1]], 0.5 * float(agent.radius), 2.0 * float(agent.height)
-        )
-        crossing = (gaps > max_edge_gap) | (_corner_gaps(navmesh, 2.0 * float(agent.height)) > max_edge_gap)
+        step, reach = _probe_spacing_and_reach(agent)
+        gaps = navmesh.segment_surface_gaps(centres[pairs[:, 0]], centres[pairs[:, 1]], step, reach)
+        crossing = (gaps > max_edge_gap) | (_corner_gaps(navmesh, reach) > max_edge_gap)
     graph.add_edges_from(
         (a, b, {"weight": w, "portal": ((e[0], e[1], e[2]), (e[3], e[4], e[5])), "width": wd})
         for (a, b), w, e, wd, cross in zip(pairs.tolist(), weights.tolist(), ends, portals.widths.tolist(), crossing)
@@ -115,6 +114,12 @@ def navmesh_graph(navmesh: NavMesh, agent: AgentConfig | None = None, max_edge_g
     if crossing.any():
         _add_portal_nodes(graph, navmesh, np.flatnonzero(crossing), agent, max_edge_gap)
     return graph
+
+
+def _probe_spacing_and_reach(agent: AgentConfig) -> tuple[float, float]:
+    """The crest rule's probe spacing (agent radius / 2) and how far up or down a probe looks for the surface
+    (twice the agent height), m."""
+    return 0.5 * float(agent.radius), 2.0 * float(agent.height)
 
 
 CORNER_PROBE_STEP = 0.005
@@ -211,7 +216,7 @@ def _add_portal_nodes(
 ) -> None:
     """Join each pair ``which`` indexes (into ``navmesh.portals()``) along the surface (see the module doc)."""
     portals = navmesh.portals()
-    step, reach = 0.5 * float(agent.radius), 2.0 * float(agent.height)
+    step, reach = _probe_spacing_and_reach(agent)
     cell = float(navmesh.settings["cell_size"])
 
     def on_surface(point: np.ndarray) -> tuple[int, np.ndarray]:
