@@ -20,6 +20,7 @@
 #include <nanobind/stl/optional.h>
 
 #include <Recast.h>
+#include <RecastAlloc.h>
 #include <DetourAlloc.h>
 #include <DetourNavMesh.h>
 #include <DetourNavMeshBuilder.h>
@@ -27,12 +28,14 @@
 #include <DetourStatus.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cfloat>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <mutex>
@@ -202,6 +205,7 @@ struct TileMesh {
     std::string empty_reason;             // why the tile has no polygons (npolys == 0)
     std::vector<float> overlaps;          // (K,3) world: a span of each region that overlaps itself in plan
     bool repartitioned = false;           // automatic partition: watershed overlapped, regions redone
+    std::vector<int32_t> detail_redone;   // local polygons whose detail read another storey, rebuilt
 };
 
 // One span (world x, floor y, z) of each region of `chf` that holds two spans of one
@@ -229,6 +233,239 @@ std::vector<float> self_overlapping_regions(const rcCompactHeightfield& chf) {
         }
     }
     return found;
+}
+
+// ---------------------------------------------------------------- detail heights off the storey
+
+// Recast's detail mesh (rcBuildPolyMeshDetail; getHeightData in RecastMeshDetail.cpp) reads each
+// polygon's heights over its bounding box, one cell wider, from the spans of the polygon's region,
+// one per column, then floods the columns left by connection from the region's edge spans. Step 4
+// leaves no region with two spans in one column, but a region can wind round a spiral stair and
+// come back one turn higher in the next columns: the box then holds the region on two storeys, and
+// the samples read there (inside the polygon or on its edges) take the other storey's heights.
+// Recast has its own path for a polygon that may lie over its region elsewhere (a polygon of
+// several regions: seed at its vertices' spans, flood by connection); here the region's spans on
+// the other storey are hidden from the one polygon's rebuild instead, so it reads its own storey.
+
+// The detail of polygon `i` of `pm` alone: rcBuildPolyMeshDetail on a one-polygon view of pm.
+bool polygon_detail(rcContext& ctx, const rcPolyMesh& pm, int i, const rcCompactHeightfield& chf,
+                    const rcConfig& c, rcPolyMeshDetail& out) {
+    rcPolyMesh one;  // borrows pm's arrays; released below, before its destructor would free them
+    one.verts = pm.verts;
+    one.polys = pm.polys + static_cast<size_t>(i) * 2 * pm.nvp;
+    one.regs = pm.regs + i;
+    one.flags = pm.flags + i;
+    one.areas = pm.areas + i;
+    one.nverts = pm.nverts;
+    one.npolys = one.maxpolys = 1;
+    one.nvp = pm.nvp;
+    rcVcopy(one.bmin, pm.bmin);
+    rcVcopy(one.bmax, pm.bmax);
+    one.cs = pm.cs;
+    one.ch = pm.ch;
+    one.borderSize = pm.borderSize;
+    one.maxEdgeError = pm.maxEdgeError;
+    const bool ok = rcBuildPolyMeshDetail(&ctx, one, chf, c.detailSampleDist, c.detailSampleMaxError, out);
+    one.verts = one.polys = one.regs = one.flags = nullptr;
+    one.areas = nullptr;
+    return ok;
+}
+
+// The least-squares plane y = a x + b z + d through polygon `i`'s vertices, in cells of the poly
+// mesh (x, z from its origin, y in cell heights); flat at their mean height if degenerate.
+std::array<double, 3> vertex_plane(const rcPolyMesh& pm, int i) {
+    const unsigned short* p = &pm.polys[static_cast<size_t>(i) * 2 * pm.nvp];
+    double m[3][3] = {}, r[3] = {};
+    for (int k = 0; k < pm.nvp && p[k] != RC_MESH_NULL_IDX; ++k) {
+        const unsigned short* v = &pm.verts[p[k] * 3];
+        const double row[3] = {static_cast<double>(v[0]), static_cast<double>(v[2]), 1.0};
+        for (int a = 0; a < 3; ++a) {
+            for (int b = 0; b < 3; ++b) m[a][b] += row[a] * row[b];
+            r[a] += row[a] * v[1];
+        }
+    }
+    auto det = [](const double a[3][3]) {
+        return a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+               a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
+    };
+    const double d = det(m);
+    std::array<double, 3> plane = {0.0, 0.0, r[2] / m[2][2]};
+    if (std::fabs(d) <= 1e-9) return plane;
+    for (int col = 0; col < 3; ++col) {  // Cramer's rule
+        double mc[3][3];
+        for (int a = 0; a < 3; ++a)
+            for (int b = 0; b < 3; ++b) mc[a][b] = b == col ? r[a] : m[a][b];
+        plane[col] = det(mc) / d;
+    }
+    return plane;
+}
+
+// Whether a vertex of polygon `i`'s detail lies more than the agent's height from `plane`.
+bool detail_leaves_plane(const rcPolyMesh& pm, const rcPolyMeshDetail& dm, int mesh, const std::array<double, 3>& plane,
+                         int walkable_height) {
+    const unsigned int vb = dm.meshes[mesh * 4 + 0], nv = dm.meshes[mesh * 4 + 1];
+    for (unsigned int k = vb; k < vb + nv; ++k) {
+        const float* v = &dm.verts[k * 3];
+        // Recast sets a detail vertex one cell height above the span it read
+        const double y = (v[1] - pm.bmin[1]) / pm.ch - 1.0;
+        const double at = plane[0] * (v[0] - pm.bmin[0]) / pm.cs + plane[1] * (v[2] - pm.bmin[2]) / pm.cs + plane[2];
+        if (std::fabs(y - at) > walkable_height) return true;
+    }
+    return false;
+}
+
+// The spans of polygon `i`'s region that its detail must not read: in the columns Recast reads for
+// it, the pieces of the region (spans joined by connections within those columns) that no polygon
+// vertex stands on (a span of a cell at the vertex within the climb of its height) and that hold a
+// span more than the agent's height from the plane through the vertices: another storey.
+std::vector<int> other_storey_spans(const rcPolyMesh& pm, int i, const std::array<double, 3>& plane,
+                                    const rcCompactHeightfield& chf, const rcConfig& c, std::vector<int>& piece) {
+    const unsigned short reg = pm.regs[i];
+    if (reg == RC_MULTIPLE_REGS) return {};  // Recast seeds such a polygon at its vertices already
+    const unsigned short* p = &pm.polys[static_cast<size_t>(i) * 2 * pm.nvp];
+    int n = 0;
+    int x0 = chf.width, x1 = 0, z0 = chf.height, z1 = 0;
+    for (; n < pm.nvp && p[n] != RC_MESH_NULL_IDX; ++n) {
+        const unsigned short* v = &pm.verts[p[n] * 3];
+        x0 = std::min(x0, static_cast<int>(v[0])); x1 = std::max(x1, static_cast<int>(v[0]));
+        z0 = std::min(z0, static_cast<int>(v[2])); z1 = std::max(z1, static_cast<int>(v[2]));
+    }
+    // Recast's box (rcBuildPolyMeshDetail), in the compact heightfield's columns.
+    const int bs = pm.borderSize;
+    x0 = std::max(0, x0 - 1) + bs; x1 = std::min(chf.width, x1 + 1) + bs;
+    z0 = std::max(0, z0 - 1) + bs; z1 = std::min(chf.height, z1 + 1) + bs;
+    x1 = std::min(x1, chf.width); z1 = std::min(z1, chf.height);
+    auto column = [&](int x, int z) -> const rcCompactCell& { return chf.cells[x + z * chf.width]; };
+
+    // Pieces of the region in the box (flood by connection).
+    std::vector<int> spans, queue;
+    int pieces = 0;
+    for (int z = z0; z < z1; ++z)
+        for (int x = x0; x < x1; ++x) {
+            const rcCompactCell& cell = column(x, z);
+            for (int s = static_cast<int>(cell.index); s < static_cast<int>(cell.index + cell.count); ++s) {
+                if (chf.spans[s].reg != reg || piece[s] >= 0) continue;
+                piece[s] = pieces;
+                spans.push_back(s);
+                queue.assign({x, z, s});
+                for (size_t q = 0; q < queue.size(); q += 3) {
+                    const rcCompactSpan& cs = chf.spans[queue[q + 2]];
+                    for (int dir = 0; dir < 4; ++dir) {
+                        if (rcGetCon(cs, dir) == RC_NOT_CONNECTED) continue;
+                        const int ax = queue[q] + rcGetDirOffsetX(dir), az = queue[q + 1] + rcGetDirOffsetY(dir);
+                        if (ax < x0 || ax >= x1 || az < z0 || az >= z1) continue;
+                        const int as = static_cast<int>(column(ax, az).index) + rcGetCon(cs, dir);
+                        if (chf.spans[as].reg != reg || piece[as] >= 0) continue;
+                        piece[as] = pieces;
+                        spans.push_back(as);
+                        queue.insert(queue.end(), {ax, az, as});
+                    }
+                }
+                ++pieces;
+            }
+        }
+    std::vector<int> hidden;
+    if (pieces > 1) {
+        std::vector<char> own(pieces, 0), far(pieces, 0);
+        for (int k = 0; k < n; ++k) {
+            const unsigned short* v = &pm.verts[p[k] * 3];
+            for (int z = v[2] - 1 + bs; z <= v[2] + bs; ++z)
+                for (int x = v[0] - 1 + bs; x <= v[0] + bs; ++x) {
+                    if (x < x0 || x >= x1 || z < z0 || z >= z1) continue;
+                    const rcCompactCell& cell = column(x, z);
+                    for (int s = static_cast<int>(cell.index); s < static_cast<int>(cell.index + cell.count); ++s)
+                        if (piece[s] >= 0 && std::abs(static_cast<int>(chf.spans[s].y) - v[1]) <= c.walkableClimb)
+                            own[piece[s]] = 1;
+                }
+        }
+        for (int z = z0; z < z1; ++z)
+            for (int x = x0; x < x1; ++x) {
+                const double at = plane[0] * (x - bs + 0.5) + plane[1] * (z - bs + 0.5) + plane[2];
+                const rcCompactCell& cell = column(x, z);
+                for (int s = static_cast<int>(cell.index); s < static_cast<int>(cell.index + cell.count); ++s)
+                    if (piece[s] >= 0 && std::fabs(chf.spans[s].y - at) > c.walkableHeight) far[piece[s]] = 1;
+            }
+        if (std::find(own.begin(), own.end(), 1) != own.end())
+            for (int s : spans)
+                if (!own[piece[s]] && far[piece[s]]) hidden.push_back(s);
+    }
+    for (int s : spans) piece[s] = -1;
+    return hidden;
+}
+
+// Rebuilds the detail of each polygon that Recast lifted or sank to another storey: a detail vertex
+// more than the agent's height from the plane through the polygon's vertices, where the polygon's
+// box holds its region on another storey (other_storey_spans); the rebuild hides those spans and
+// replaces the polygon's detail in `dmesh` if it then stays within that height of the plane.
+// Returns the polygons replaced (local indices, ascending); the others keep Recast's detail exactly.
+std::vector<int32_t> redo_detail_off_storey(LogContext& ctx, const rcPolyMesh& pm, rcCompactHeightfield& chf,
+                                            const rcConfig& c, std::unique_ptr<rcPolyMeshDetail, DetailDel>& dmesh,
+                                            const std::function<void(const std::string&)>& too_big) {
+    const rcPolyMeshDetail& dm = *dmesh;
+    std::vector<int> piece(static_cast<size_t>(chf.spanCount), -1);
+    std::vector<int32_t> changed;
+    std::vector<std::unique_ptr<rcPolyMeshDetail, DetailDel>> redone;
+    for (int i = 0; i < pm.npolys; ++i) {
+        const std::array<double, 3> plane = vertex_plane(pm, i);
+        if (!detail_leaves_plane(pm, dm, i, plane, c.walkableHeight)) continue;
+        const std::vector<int> hidden = other_storey_spans(pm, i, plane, chf, c, piece);
+        if (hidden.empty()) continue;
+        std::vector<unsigned short> regs;
+        for (int s : hidden) {
+            regs.push_back(chf.spans[s].reg);
+            chf.spans[s].reg = 0;
+        }
+        std::unique_ptr<rcPolyMeshDetail, DetailDel> one(rcAllocPolyMeshDetail());
+        if (!one) fail("rcAllocPolyMeshDetail failed (out of memory)");
+        const bool ok = polygon_detail(ctx, pm, i, chf, c, *one);
+        for (size_t k = 0; k < hidden.size(); ++k) chf.spans[hidden[k]].reg = regs[k];
+        if (!ok) too_big("rcBuildPolyMeshDetail failed");
+        if (detail_leaves_plane(pm, *one, 0, plane, c.walkableHeight)) continue;
+        changed.push_back(i);
+        redone.push_back(std::move(one));
+    }
+    if (changed.empty()) return changed;
+
+    // Splice: every polygon's detail in order, the changed ones from their rebuild.
+    std::unique_ptr<rcPolyMeshDetail, DetailDel> spliced(rcAllocPolyMeshDetail());
+    if (!spliced) fail("rcAllocPolyMeshDetail failed (out of memory)");
+    auto source = [&](int i, unsigned int& mesh_index) -> const rcPolyMeshDetail& {
+        const auto it = std::lower_bound(changed.begin(), changed.end(), i);
+        if (it != changed.end() && *it == i) {
+            mesh_index = 0;
+            return *redone[static_cast<size_t>(it - changed.begin())];
+        }
+        mesh_index = static_cast<unsigned int>(i);
+        return dm;
+    };
+    int nverts = 0, ntris = 0;
+    for (int i = 0; i < pm.npolys; ++i) {
+        unsigned int k;
+        const rcPolyMeshDetail& from = source(i, k);
+        nverts += static_cast<int>(from.meshes[k * 4 + 1]);
+        ntris += static_cast<int>(from.meshes[k * 4 + 3]);
+    }
+    spliced->meshes = static_cast<unsigned int*>(rcAlloc(sizeof(unsigned int) * 4 * pm.npolys, RC_ALLOC_PERM));
+    spliced->verts = static_cast<float*>(rcAlloc(sizeof(float) * 3 * std::max(nverts, 1), RC_ALLOC_PERM));
+    spliced->tris = static_cast<unsigned char*>(rcAlloc(4 * std::max(ntris, 1), RC_ALLOC_PERM));
+    if (!spliced->meshes || !spliced->verts || !spliced->tris) fail("rcAlloc failed (out of memory)");
+    spliced->nmeshes = pm.npolys;
+    for (int i = 0; i < pm.npolys; ++i) {
+        unsigned int k;
+        const rcPolyMeshDetail& from = source(i, k);
+        const unsigned int* mesh = &from.meshes[k * 4];
+        unsigned int* to = &spliced->meshes[i * 4];
+        to[0] = static_cast<unsigned int>(spliced->nverts);
+        to[1] = mesh[1];
+        to[2] = static_cast<unsigned int>(spliced->ntris);
+        to[3] = mesh[3];
+        std::copy(from.verts + mesh[0] * 3, from.verts + (mesh[0] + mesh[1]) * 3, spliced->verts + spliced->nverts * 3);
+        std::copy(from.tris + mesh[2] * 4, from.tris + (mesh[2] + mesh[3]) * 4, spliced->tris + spliced->ntris * 4);
+        spliced->nverts += static_cast<int>(mesh[1]);
+        spliced->ntris += static_cast<int>(mesh[3]);
+    }
+    dmesh = std::move(spliced);
+    return changed;
 }
 
 // Input shared by every tile of a build.
@@ -338,6 +575,7 @@ void build_tile(const Input& in, const int* tris, int ntris, const rcConfig& c, 
     if (!dmesh) fail("rcAllocPolyMeshDetail failed (out of memory)", nullptr, where);
     if (!rcBuildPolyMeshDetail(&ctx, *pmesh, *chf, c.detailSampleDist, c.detailSampleMaxError, *dmesh))
         too_big("rcBuildPolyMeshDetail failed");
+    out.detail_redone = redo_detail_off_storey(ctx, *pmesh, *chf, c, dmesh, too_big);
     chf.reset();
     cset.reset();
 
@@ -431,6 +669,7 @@ public:
     std::vector<double> portal_ends;    // (E,2,3) shared segment end points, along a's edge
     std::vector<double> overlaps;       // (K,3) a span of each region overlapping itself, tile by tile
     std::vector<int32_t> repartitioned; // (R,2) tile x, z of the tiles the automatic partition redid
+    std::vector<int32_t> detail_redone; // (N,) polygons whose detail read another storey, rebuilt
     int npolys = 0;
 
     // Resolved Recast configuration and tiling.
@@ -744,6 +983,7 @@ void NavMeshCore::assemble(std::vector<std::unique_ptr<TileMesh>>& tiles) {
     dverts.clear();
     overlaps.clear();
     repartitioned.clear();
+    detail_redone.clear();
     dverts.reserve(static_cast<size_t>(total_dverts) * 3);
     dtris.clear();
     dtris.reserve(static_cast<size_t>(total_dtris) * 3);
@@ -809,6 +1049,7 @@ void NavMeshCore::assemble(std::vector<std::unique_ptr<TileMesh>>& tiles) {
         for (int32_t p : t.dpoly) dtri_poly.push_back(p + first);
         overlaps.insert(overlaps.end(), t.overlaps.begin(), t.overlaps.end());
         if (t.repartitioned) repartitioned.insert(repartitioned.end(), {t.tx, t.ty});
+        for (int32_t p : t.detail_redone) detail_redone.push_back(p + first);
         first += t.npolys;
         tp.reset();  // free the tile's copy as we go
     }
@@ -1179,6 +1420,11 @@ NB_MODULE(_recast, m) {
                      [](const NavMeshCore& n) { return to_numpy(n.repartitioned, n.repartitioned.size() / 2, 2); },
                      "(R,2) int32: tile (x, z) of each tile whose watershed regions overlapped and were redone "
                      "by the 'auto' partition, row-major order; (0, 0) for a solo navmesh")
+        .def_prop_ro("detail_redone_polygons",
+                     [](const NavMeshCore& n) { return to_numpy(n.detail_redone, n.detail_redone.size(), 0); },
+                     "(N,) int32: polygons whose detail heights Recast read from their region on another "
+                     "storey (a region winding back over itself, e.g. round a spiral stair), rebuilt from "
+                     "their own storey; ascending")
         .def_prop_ro("tile_size", [](const NavMeshCore& n) { return n.tile_size; },
                      "tile side in cells; 0 for a solo navmesh")
         .def_prop_ro("tile_count", [](const NavMeshCore& n) { return static_cast<int>(n.tile_first.size()); },

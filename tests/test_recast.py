@@ -755,6 +755,35 @@ def test_auto_keeps_the_turns_of_a_spiral_stair_apart():
     assert nm.repartitioned_tiles.tolist() == [[0, 0]] and len(nm.region_overlaps) == 0
     assert adjacency_components(nm) == 1 and centre_height_jumps(nm).max() <= agent.height
     assert nm.centres[:, 1].min() < 0.5 and nm.centres[:, 1].max() > 3 * 3.6 - 1.0  # the ground to the top step
+    assert len(nm.detail_redone_polygons) == 0  # no detail read from another turn here
+
+
+def detail_overshoot(nm: NavMesh) -> np.ndarray:
+    """(P,) metres by which each polygon's detail vertices leave the height range of its own vertices."""
+    vy = np.where(nm.polygons >= 0, nm.vertices[np.maximum(nm.polygons, 0), 1], np.nan)
+    owner = np.repeat(nm.detail_polygon, 3)
+    y = nm.detail_vertices[nm.detail_triangles.ravel(), 1]
+    out = np.zeros(nm.polygon_count)
+    np.maximum.at(out, owner, np.maximum(np.nanmin(vy, 1)[owner] - y, y - np.nanmax(vy, 1)[owner]))
+    return out
+
+
+def test_detail_heights_stay_on_the_polygons_own_turn_of_a_spiral_stair():
+    # The tower with a 3 m wide stair. Its monotone region 3 winds round the newel and comes back one
+    # turn (3.6 m) lower beside the triangle of stair at (1.7, 0.7), (0.7, 1.7), (2.7, 1.7), vertices
+    # 7.68-8.18 m high: Recast's detail mesh read that triangle's heights over its bounding box from
+    # its region, and its sample at the box corner (1.7, 1.7) from the turn below, 4.43 m, which put
+    # the polygon's centre at 5.55 m (measured before the rule). Rebuilt with the turn below hidden,
+    # the detail is the triangle itself (+ Recast's one cell height), its centre on the stair.
+    agent = types.SimpleNamespace(radius=0.5, height=2.0, max_climb=0.4, max_slope=45.0)
+    nm = build(spiral_tower(outer=4.0), agent)
+    (lifted,) = nm.detail_redone_polygons
+    corners = nm.vertices[nm.polygons[lifted][nm.polygons[lifted] >= 0]]
+    np.testing.assert_allclose(corners, [[1.7, 7.68, 0.7], [0.7, 8.18, 1.7], [2.7, 7.68, 1.7]], atol=0.01)
+    assert nm.region_ids[lifted] == 3
+    assert 7.68 <= nm.centres[lifted, 1] <= 8.18 + agent.max_climb
+    # every polygon's detail stays within a cell height or two of its own vertices
+    assert detail_overshoot(nm).max() < 2 * 0.125
 
 
 def test_partition_is_validated():

@@ -12,6 +12,8 @@ default ``partition: auto`` builds it with monotone regions, which keep the stor
 apart, and its structure passes (the builder routes centre segments that cut a
 corner of the navmesh between its probes, module doc); with ``partition:
 watershed`` it fails for the joined storeys (:data:`WATERSHED_STAIRWELL_SHORTCUTS`).
+The castle's spiral stairs pass since the navmesh rebuilds the detail heights
+Recast read from another turn of a stair (``NavMesh.detail_redone_polygons``).
 """
 
 from __future__ import annotations
@@ -31,18 +33,6 @@ LIMIT = 0.5
 
 PRESETS = ("map_piece", "map_analysis")
 
-CASTLE_STAIR_DETAIL = (
-    "the default partition (auto) redoes with monotone regions the castle's tiles whose watershed regions overlap "
-    "(4 of 9, the towers' spiral stairs), and 1 edge of 742 (784 with map_analysis's traffic step) still fails (3.21 m): a 0.33 m initial-graph edge "
-    "that climbs 3.24 m to the centre of a stair polygon whose inner detail samples Recast's detail mesh lifted to "
-    "the turn above (vertices at 2.17-2.42 m, detail heights up to 7.05 m, centre at 5.55 m; measured; "
-    "docs/analysis_quality.md, castle)"
-)
-
-KNOWN_RECAST_SHORTCUTS = {("castle", "map_analysis"): CASTLE_STAIR_DETAIL}
-"""Cases that fail for a known defect outside the structure, with its cause; strict: they must keep failing."""
-
-
 @pytest.fixture(scope="module")
 def plans():
     registry = Registry.from_entry_points()
@@ -59,9 +49,7 @@ def _largest_gap(registry, plan, mesh, name: str) -> float:
 
 @pytest.mark.parametrize("preset", PRESETS)
 @pytest.mark.parametrize("sample", sorted(SAMPLES))
-def test_generated_structures_stay_on_the_surface(plans, sample: str, preset: str, request) -> None:
-    if (sample, preset) in KNOWN_RECAST_SHORTCUTS:
-        request.node.add_marker(pytest.mark.xfail(strict=True, reason=KNOWN_RECAST_SHORTCUTS[sample, preset]))
+def test_generated_structures_stay_on_the_surface(plans, sample: str, preset: str) -> None:
     registry, plan = plans[0], plans[1][preset]
     assert _largest_gap(registry, plan, SAMPLES[sample]().mesh, sample) <= LIMIT
 

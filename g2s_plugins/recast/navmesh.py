@@ -81,6 +81,13 @@ class NavMesh:
                         partition rebuilt with ``monotone`` (row-major order;
                         ``(0, 0)`` for a solo navmesh); empty for the other
                         partitions.
+    ``detail_redone_polygons`` (N,) int32, ascending: polygons whose
+                        detail heights Recast read from their region on
+                        another storey (a region winding back over itself
+                        one storey up or down, as round a spiral stair) and
+                        that were rebuilt from their own storey; the other
+                        polygons keep Recast's detail exactly (docs/navmesh.md,
+                        "Detail heights").
 
     Polygon index ``i`` is Detour polygon ``poly_ref(i)``. Polygons are
     numbered tile by tile (row-major tiles); tiles share equal border vertices.
@@ -99,6 +106,7 @@ class NavMesh:
         self.detail_polygon: np.ndarray = core.detail_polygon
         self.region_overlaps: np.ndarray = core.region_overlaps
         self.repartitioned_tiles: np.ndarray = core.repartitioned_tiles
+        self.detail_redone_polygons: np.ndarray = core.detail_redone_polygons
         self.centres, self.normals, self.areas = _surface(
             self.polygon_count, self.vertices, self.polygons,
             self.detail_vertices, self.detail_triangles, self.detail_polygon,
