@@ -26,7 +26,9 @@ the reference flow (exact up to 512 nodes, 512 area-sampled sources above)
 for each run, the number of navmesh regions left overlapping themselves in plan
 ("overlap", :attr:`g2s_plugins.recast.NavMesh.region_overlaps`) and of tiles the
 ``auto`` partition rebuilt because watershed overlapped there ("redone",
-:attr:`g2s_plugins.recast.NavMesh.repartitioned_tiles`; both "-" without a
+:attr:`g2s_plugins.recast.NavMesh.repartitioned_tiles`) and of polygons whose
+detail heights Recast read from another storey, rebuilt ("detail",
+:attr:`g2s_plugins.recast.NavMesh.detail_redone_polygons`; all three "-" without a
 navmesh). ``--presets`` takes preset names or config files (a file extending a
 preset with other parameters). This is a benchmark: nothing here asserts a target.
 """
@@ -100,7 +102,7 @@ def main() -> None:
     plans = {Path(p).stem: pipeline.plan(parse_config(with_evaluators(load_raw_config(find_config(p)), ["traffic"]), p),
                                          registry, p) for p in args.presets}
     header = (f"{'level':<18} {'preset':<28} {'polys':>7} {'<=3m':>6} {'<=6m':>6} {'<=10m':>6} {'off>5m':>7} "
-              f"{'rho':>6} {'rho_abw':>7} {'ceiling':>7} {'rho nav':>7} {'ceil nav':>8} {'nav out':>7} {'struct':>7} {'overlap':>7} {'redone':>6} {'cpu s':>7} {'total s':>8} {'eval s':>7}  stages (s)")
+              f"{'rho':>6} {'rho_abw':>7} {'ceiling':>7} {'rho nav':>7} {'ceil nav':>8} {'nav out':>7} {'struct':>7} {'overlap':>7} {'redone':>6} {'detail':>6} {'cpu s':>7} {'total s':>8} {'eval s':>7}  stages (s)")
     print(header)
     for name, mesh in levels(args.levels, args.seeds):
         for preset, plan in plans.items():
@@ -120,12 +122,12 @@ def main() -> None:
                 "navmesh_area_left_out"))
             polygons = traffic.surface_arrays(result.graph).n  # the nodes the measures count
             navmesh = result.context.navmesh
-            overlaps, redone = ("-", "-") if navmesh is None else (
-                len(navmesh.region_overlaps), len(navmesh.repartitioned_tiles))
+            overlaps, redone, detail = ("-", "-", "-") if navmesh is None else (
+                len(navmesh.region_overlaps), len(navmesh.repartitioned_tiles), len(navmesh.detail_redone_polygons))
             print(f"{name:<18} {preset:<28} {polygons:>7} {within} {100 * q['traffic_off']:6.1f}% "
                   f"{rho:6.3f} {abw:7.3f} {ceiling:7.3f} {rho_nav:7.3f} {ceiling_nav:8.3f} {100 * nav_out:6.1f}% "
                   f"{100 * q['structure_share']:6.1f}% "
-                  f"{overlaps:>7} {redone:>6} {cpu:7.2f} {sum(seconds.values()):8.2f} {evaluating:7.2f}  {stages}", flush=True)
+                  f"{overlaps:>7} {redone:>6} {detail:>6} {cpu:7.2f} {sum(seconds.values()):8.2f} {evaluating:7.2f}  {stages}", flush=True)
 
 
 if __name__ == "__main__":

@@ -34,9 +34,10 @@ dungeons, 3 % on buildings, where a segment passing just outside its floor is
 over the storey below; docs/navmesh.md).
 
 Overlapping regions: Recast's watershed partition can make one region of
-a switchback stairwell over several storeys, which overlaps itself in plan;
-its polygons then join floors metres apart in height and take another
-floor's heights. The default ``partition: auto`` rebuilds the regions of
+a switchback stairwell or spiral stair over several storeys, which overlaps
+itself in plan; Recast traces its contour in plan and can lose its polygons or
+their links there (the castle's spiral stairs come out as unlinked fragments).
+The default ``partition: auto`` rebuilds the regions of
 such a tile with ``monotone``, which never makes them, so nothing is left to
 warn about. With ``partition: watershed`` the builder warns, with the count
 and the first such region's position, when the navmesh has any
@@ -271,8 +272,8 @@ def overlapping_regions_warning(overlaps: np.ndarray, partition: str) -> str:
     regions = "1 region that overlaps itself" if count == 1 else f"{count} regions that overlap themselves"
     return (
         f"graph: Recast's {partition} partition made {regions} in plan (a stairwell over several storeys?), "
-        f"the first at ({x:.1f}, {y:.1f}, {z:.1f}) m: polygons there may join floors metres apart in height "
-        f"and sit off the floor; set graph.params.partition: auto, the default (docs/navmesh.md)"
+        f"the first at ({x:.1f}, {y:.1f}, {z:.1f}) m: Recast may lose polygons there or their links (a stair "
+        f"cut off); set graph.params.partition: auto, the default (docs/navmesh.md)"
     )
 
 

@@ -73,8 +73,8 @@ class NavMesh:
     ``region_overlaps`` (K,3) float64, one span (x, floor y, z) of each Recast
                         region of the built navmesh holding two spans of one
                         xz column: a region overlapping itself in plan, whose
-                        contours (traced in plan) join floors of different
-                        heights. Only the ``watershed`` partition leaves them
+                        contours (traced in plan) can lose polygons or their
+                        links. Only the ``watershed`` partition leaves them
                         (``auto`` redoes those tiles); tile by tile.
     ``repartitioned_tiles`` (R,2) int32, tile (x, z) of each tile whose
                         watershed regions overlapped and that the ``auto``
