@@ -239,10 +239,11 @@ std::vector<float> self_overlapping_regions(const rcCompactHeightfield& chf) {
 
 // Recast's detail mesh (rcBuildPolyMeshDetail; getHeightData in RecastMeshDetail.cpp) reads each
 // polygon's heights over its bounding box, one cell wider, from the spans of the polygon's region,
-// one per column, then floods the columns left by connection from the region's edge spans. Step 4
-// leaves no region with two spans in one column, but a region can wind round a spiral stair and
-// come back one turn higher in the next columns: the box then holds the region on two storeys, and
-// the samples read there (inside the polygon or on its edges) take the other storey's heights.
+// one per column, then floods the columns left by connection from the region's edge spans. The
+// region is its only storey filter: a region overlapping itself (watershed) holds two storeys in
+// one column, and even one that never does (auto, monotone, layers) can wind round a spiral stair
+// and come back one turn higher in the next columns. The box then holds the region on two storeys,
+// and the samples read there (inside the polygon or on its edges) take the other storey's heights.
 // Recast has its own path for a polygon that may lie over its region elsewhere (a polygon of
 // several regions: seed at its vertices' spans, flood by connection); here the region's spans on
 // the other storey are hidden from the one polygon's rebuild instead, so it reads its own storey.
