@@ -246,7 +246,8 @@ std::vector<float> self_overlapping_regions(const rcCompactHeightfield& chf) {
 // and the samples read there (inside the polygon or on its edges) take the other storey's heights.
 // Recast has its own path for a polygon that may lie over its region elsewhere (a polygon of
 // several regions: seed at its vertices' spans, flood by connection); here the region's spans on
-// the other storey are hidden from the one polygon's rebuild instead, so it reads its own storey.
+// the other storey are hidden from the one polygon's rebuild instead, so that it still reads its
+// own storey's spans directly, as Recast does for every other polygon.
 
 // The detail of polygon `i` of `pm` alone: rcBuildPolyMeshDetail on a one-polygon view of pm.
 bool polygon_detail(rcContext& ctx, const rcPolyMesh& pm, int i, const rcCompactHeightfield& chf,
