@@ -38,10 +38,7 @@ EXIT_CODES = "exit codes: 0 success, 2 bad input or config or a failed plugin (n
 __all__ = ["main", "stage_table"]
 
 
-Command = Callable[[argparse.Namespace], int]
-
-
-def _parser() -> tuple[argparse.ArgumentParser, dict[str, Command | G2SError | PluginFailure]]:
+def _parser() -> tuple[argparse.ArgumentParser, dict[str, Callable[[argparse.Namespace], int] | G2SError | PluginFailure]]:
     """The parser, and the run function of each plugin's command (or why it cannot run)."""
     parser = argparse.ArgumentParser(
         prog="g2s",
