@@ -157,6 +157,7 @@ def g2s_command(parser: argparse.ArgumentParser) -> Callable[[argparse.Namespace
     ``parser`` is the command's own subparser (its help line in ``g2s --help``
     is the plugin's summary; the plugin may set its ``usage``, ``description``
     and ``epilog``). The function gets the parsed arguments and returns the
-    exit code. Bad input is a :class:`~g2s_core.errors.G2SError` with a
-    one-line message (exit 2), as in every command of g2s.
+    exit code; it runs as g2s's own commands do: bad input is a
+    :class:`~g2s_core.errors.G2SError` with a one-line message (exit 2), any
+    other exception an internal error (exit 1).
     """

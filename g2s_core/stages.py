@@ -62,6 +62,9 @@ class Stage:
         check: the test of a result (see :data:`Check`).
         check_each_call: for a hook that returns a function, the test of each
             of that function's results (``None``: the result is not a function).
+        guard_each_call: that function's exceptions (but bad input) are the
+            plugin's failure; ``False`` for a command, which runs as g2s's own
+            commands do (an unexpected exception is exit 1, as today for ``g2s batch``).
         check_each_item: for a hook that returns an iterator, the test of each
             item it yields (``None``: the result is not an iterator).
         many: the config section lists any number of these plugins, each with
@@ -80,6 +83,7 @@ class Stage:
     returns: str
     check: Check
     check_each_call: Callable[[Any], str | None] | None = None
+    guard_each_call: bool = True
     check_each_item: Callable[[Any], str | None] | None = None
     many: bool = False
     step: str = ""
@@ -252,7 +256,7 @@ STAGES: tuple[Stage, ...] = (
     Stage("executors", "Executor", hookspecs.g2s_execute.__name__, "an iterator of the summary rows of the pairs",
           _iterator, check_each_item=_row),
     Stage("commands", "Command", hookspecs.g2s_command.__name__, "a function run(args) -> exit code", _command,
-          check_each_call=_exit_code),
+          check_each_call=_exit_code, guard_each_call=False),
 )
 
 BY_KEY: dict[str, Stage] = {stage.key: stage for stage in STAGES}

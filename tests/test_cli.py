@@ -37,15 +37,17 @@ def test_help_lists_the_commands():
 
 
 def test_a_command_plugin_that_fails_stops_only_its_own_command(monkeypatch, capsys):
-    """A command whose hook raises or returns no function, or whose name is g2s's own: the other commands run."""
+    """A command whose hook raises or returns no function, or whose name is g2s's own: the other commands run;
+    a command that raises is an internal error, as g2s's own commands are."""
     import types
 
     from g2s_core import cli, hookimpl
     from g2s_core.registry import Registry
 
     registry = Registry.from_entry_points()
-    for name, hook in (("broken", lambda parser: parser.no_such_method()), ("nothing", lambda parser: None),
-                       ("run", lambda parser: lambda args: 7)):
+    hooks = {"broken": lambda parser: parser.no_such_method(), "nothing": lambda parser: None,
+             "crashes": lambda parser: lambda args: {}["key"], "run": lambda parser: lambda args: 7}
+    for name, hook in hooks.items():
         plugin = types.ModuleType(name, f"the {name} command")
         plugin.NAME, plugin.g2s_command = name, hookimpl(hook)
         registry.register(plugin, package="tests", entry_point=f"commands.{name}")
@@ -57,6 +59,9 @@ def test_a_command_plugin_that_fails_stops_only_its_own_command(monkeypatch, cap
     assert main(["nothing"]) == 2
     assert capsys.readouterr().err.strip() == ("g2s: error: Command plugin 'nothing' (package 'tests') failed: "
                                                "returned NoneType, not a function run(args) -> exit code")
+    assert main(["crashes"]) == 1  # the command's own exception: an internal error, as in g2s's own commands
+    assert capsys.readouterr().err.splitlines() == ["g2s: internal error: KeyError: 'key'",
+                                                    "(run again with --verbose for the traceback)"]
     with pytest.raises(SystemExit):  # g2s's own `run` keeps its name and its arguments
         main(["run"])
     assert "the following arguments are required: config, mesh" in capsys.readouterr().err
