@@ -20,7 +20,7 @@ import tempfile
 import time
 from pathlib import Path
 
-from g2s_core.batch import run_batch
+from g2s_plugins.batch.runner import run_batch
 
 PROJECT = Path(__file__).resolve().parents[1]
 

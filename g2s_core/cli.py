@@ -1,16 +1,16 @@
-"""The ``g2s`` command line: run a config on a mesh, batches over many levels, list plugins, run the demo.
+"""The ``g2s`` command line: run a config on a mesh, list presets and plugins, run the demo, and the commands
+that plugins add (stage ``commands``, e.g. ``g2s batch``).
 
 Exit codes: 0 success; 2 bad input or config (one line on stderr, no
 traceback), or a plugin that could not be loaded, raised an exception or
 returned a wrong result (one line naming the plugin and its package); 1 internal
 error of g2s (``--verbose`` shows the traceback); 130 interrupted (Ctrl-C);
-``g2s batch`` also 4 when some (config, level) pairs failed.
+a plugin's command may add its own (``g2s batch``: 4 when some pairs failed).
 """
 
 from __future__ import annotations
 
 import argparse
-import itertools
 import json
 import sys
 import textwrap
@@ -21,16 +21,12 @@ from pathlib import Path
 from typing import Any
 
 from rich.console import Console
-from rich.progress import BarColumn, MofNCompleteColumn, TextColumn
-from rich.progress import Progress as RichProgress
 from rich.table import Table
 
 from g2s_core import api, pipeline, version
-from g2s_core.batch import INSTALL_HINT, missing_extra, run_batch
-from g2s_core.batch import Progress as BatchProgress
 from g2s_core.config import parse_assignment, presets, resolve_config
 from g2s_core.errors import G2SError, PluginFailure
-from g2s_core.mesh import SAMPLE_PREFIX, SUPPORTED_SUFFIXES
+from g2s_core.mesh import SAMPLE_PREFIX
 from g2s_core.model import RunResult
 from g2s_core.outputs import DEFAULT_FORMATS, check_outdir, chosen_formats, writers
 from g2s_core.registry import installed, plugin_parameters
@@ -42,11 +38,12 @@ EXIT_CODES = "exit codes: 0 success, 2 bad input or config or a failed plugin (n
 __all__ = ["main", "stage_table"]
 
 
-def _parser() -> argparse.ArgumentParser:
+def _parser() -> tuple[argparse.ArgumentParser, dict[str, Callable[[argparse.Namespace], int] | G2SError | PluginFailure]]:
+    """The parser, and the run function of each plugin's command (or why it cannot run)."""
     parser = argparse.ArgumentParser(
         prog="g2s",
         description="Graph2Structure: extract a hierarchical structure of navigable paths from level geometry.",
-        epilog=f"{EXIT_CODES}; g2s batch also 4 when some pairs failed",
+        epilog=f"{EXIT_CODES}; a plugin's command may add its own (g2s COMMAND --help)",
     )
     parser.add_argument("-v", "--verbose", action="store_true", help="show tracebacks of internal errors")
     parser.add_argument("--version", action="version", version=f"g2s {version()}")
@@ -68,37 +65,6 @@ def _parser() -> argparse.ArgumentParser:
     run.add_argument("-o", "--outdir", type=Path, required=True, help="folder for the results")
     _add_output_options(run)
 
-    batch = commands.add_parser(
-        "batch", parents=[common],
-        usage="g2s batch CONFIG [CONFIG ...] INPUT [INPUT ...] -o OUTDIR [--executor NAME] "
-        "[--workers N] [--scheduler ADDRESS] [--evaluate NAMES] [--format FORMATS] [--force] [-q] [-v]",
-        help="run configs over many levels on a process pool or a Dask cluster, with a summary table",
-        description="Run every config on every level: one result folder per (config, level) pair, as `g2s run` "
-        "writes it, in OUTDIR/CONFIG/LEVEL/, and OUTDIR/summary.parquet and summary.csv with one row per pair "
-        "(see docs/batch.md). A level that fails is recorded and the batch goes on; a re-run skips the pairs "
-        f"already finished for the same config and mesh. {INSTALL_HINT}.",
-        epilog="exit codes: 0 every pair ran, 4 some pairs failed (see the summary's error column), "
-        "2 bad config or input, 130 interrupted (finished pairs are kept), 1 internal error of g2s",
-    )
-    batch.add_argument("items", nargs="+", metavar="CONFIG|INPUT",
-                       help="configs (the leading preset names and .yaml/.yml files), then levels: mesh files, folders "
-                       f"(searched recursively for {' '.join(SUPPORTED_SUFFIXES)}), glob patterns, or "
-                       f"{SAMPLE_PREFIX}NAME[?param=value&...]")
-    batch.add_argument("-o", "--outdir", type=Path, required=True, help="folder of the batch's results")
-    batch.add_argument("--executor", metavar="NAME", default="local", help="an executor plugin (`g2s plugins --stage "
-                       "executors`): local, a process pool (default); dask, a Dask cluster; serial, one by one here")
-    batch.add_argument("--workers", type=int, metavar="N",
-                       help="processes of the pool or of the Dask LocalCluster (default: the CPU count)")
-    batch.add_argument("--scheduler", metavar="ADDRESS",
-                       help="with --executor dask: the scheduler to use, e.g. tcp://host:8786 "
-                       "(default: start a LocalCluster)")
-    batch.add_argument("--evaluate", metavar="NAMES", default="", help="evaluator plugins added to every config, "
-                       "e.g. traffic: coverage and flow agreement in metric.* columns (costly: docs/batch.md)")
-    batch.add_argument("--format", metavar="FORMATS", help="comma-separated output formats for every pair "
-                       "(default: each config's outputs.formats)")
-    batch.add_argument("--force", action="store_true", help="recompute the pairs already finished")
-    batch.add_argument("-q", "--quiet", action="store_true", help="no progress bar or totals")
-
     commands.add_parser("presets", parents=[common], help="list the preset configs and what each is for")
 
     plugins = commands.add_parser("plugins", parents=[common],
@@ -110,7 +76,17 @@ def _parser() -> argparse.ArgumentParser:
     demo.add_argument("--rooms", type=int, default=12, help="rooms in the generated dungeon (default: 12)")
     demo.add_argument("--seed", type=int, default=0, help="seed of the generated dungeon (default: 0)")
     _add_output_options(demo)
-    return parser
+
+    registry, plugged = installed(), {}
+    for info in registry.plugins("commands"):
+        if info.name in commands.choices:  # g2s's own commands keep their names
+            continue
+        command = commands.add_parser(info.name, parents=[common], help=info.summary)
+        try:
+            plugged[info.name] = registry.call(info, parser=command)
+        except (G2SError, PluginFailure) as exc:  # stops only that command, when it is run
+            plugged[info.name] = exc
+    return parser, plugged
 
 
 def _add_output_options(command: argparse.ArgumentParser) -> None:
@@ -130,17 +106,21 @@ def _add_output_options(command: argparse.ArgumentParser) -> None:
 
 
 def main(argv: Sequence[str] | None = None) -> int:
-    args = _parser().parse_args(argv)
+    parser, plugged = _parser()
+    args = parser.parse_args(argv)
     errors = Console(stderr=True)
     try:
+        if args.command in plugged:
+            command = plugged[args.command]
+            if isinstance(command, Exception):
+                raise command
+            return command(args)
         if args.command == "run":
             return _run(args, errors)
         if args.command == "plugins":
             return _plugins(args)
         if args.command == "presets":
             return _presets()
-        if args.command == "batch":
-            return _batch(args, errors)
         return _demo(args, errors)
     except (G2SError, PluginFailure) as exc:  # the user, or the named plugin's authors, can fix it
         errors.print(f"g2s: error: {exc}", markup=False, highlight=False, soft_wrap=True)
@@ -189,49 +169,6 @@ def _run(args: argparse.Namespace, errors: Console, mesh_name: str | None = None
         for path in written:
             console.print(f"wrote {path}", markup=False, highlight=False, soft_wrap=True)
     return 0
-
-
-def _batch(args: argparse.Namespace, errors: Console) -> int:
-    names = presets()
-    configs = list(itertools.takewhile(
-        lambda item: Path(item).suffix.lower() in (".yaml", ".yml") or item in names, args.items))
-    inputs = args.items[len(configs):]
-    if not configs or not inputs:
-        raise G2SError("batch: expected one or more configs (preset names or .yaml files) followed by one or more levels")
-    if args.workers is not None and args.workers < 1:
-        raise G2SError(f"--workers: expected an integer >= 1, got {args.workers}")
-    evaluators = [name.strip() for name in args.evaluate.split(",") if name.strip()]
-    with missing_extra(), _batch_progress(errors, args.quiet) as show:
-        summary = run_batch(configs, inputs, args.outdir, args.executor, workers=args.workers,
-                            scheduler=args.scheduler, evaluators=evaluators, formats=args.format, force=args.force,
-                            progress=show)
-    failed = summary[summary["status"] != "ok"]
-    for row in failed.itertuples():
-        errors.print(f"g2s: {row.config} on {row.level} failed: {row.error}", markup=False, highlight=False, soft_wrap=True)
-    if not args.quiet:
-        reused = int(summary["reused"].sum())
-        Console().print(f"{len(summary)} pairs: {len(summary) - len(failed)} ok ({reused} already finished), "
-                        f"{len(failed)} failed; summary in {args.outdir / 'summary.csv'} and summary.parquet",
-                        markup=False, highlight=False, soft_wrap=True)
-    return 4 if len(failed) else 0
-
-
-@contextmanager
-def _batch_progress(errors: Console, quiet: bool) -> Iterator[Callable[[BatchProgress], None]]:
-    """A progress bar on stderr (done, failed, remaining, levels per minute), when stderr is a terminal."""
-    if quiet or not errors.is_terminal:
-        yield lambda _counts: None
-        return
-    columns = (TextColumn("batch"), BarColumn(), MofNCompleteColumn(), TextColumn("{task.fields[counts]}"))
-    with RichProgress(*columns, console=errors) as bar:
-        task = bar.add_task("batch", total=None, counts="starting")
-
-        def show(counts: BatchProgress) -> None:
-            bar.update(task, total=counts.total, completed=counts.done, counts=(
-                f"failed {counts.failed}, remaining {counts.total - counts.done}, "
-                f"{counts.per_minute:.1f} levels/min"))
-
-        yield show
 
 
 def _demo(args: argparse.Namespace, errors: Console) -> int:

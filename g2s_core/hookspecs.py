@@ -9,6 +9,7 @@ hook implementation may take any subset of the named arguments.
 
 from __future__ import annotations
 
+import argparse
 from collections.abc import Callable, Iterator, Mapping, Sequence
 from pathlib import Path
 from typing import Any
@@ -141,9 +142,22 @@ def g2s_generate_level(params: PluginParams) -> trimesh.Trimesh:
 def g2s_execute(function: Callable[[Any], dict[str, Any]], items: Sequence[Any], params: PluginParams) -> Iterator[dict[str, Any]]:
     """Executor: ``function(item)`` for every item of a batch, yielded as each finishes (any order).
 
-    ``function`` (:func:`g2s_core.batch.run_pair`) and the items are
+    ``function`` (the batch runner's ``run_pair``) and the items are
     picklable and importable by name, so they may run in other processes or
     on other machines; the function never raises for a failed pair (its row
     says so). Closing the iterator (the batch was interrupted) stops the work
     not yet started. The items must not be run twice.
+    """
+
+
+@hookspec(firstresult=True)
+def g2s_command(parser: argparse.ArgumentParser) -> Callable[[argparse.Namespace], int]:
+    """Command: ``g2s NAME``; add its arguments to ``parser``, return the function that runs it.
+
+    ``parser`` is the command's own subparser (its help line in ``g2s --help``
+    is the plugin's summary; the plugin may set its ``usage``, ``description``
+    and ``epilog``). The function gets the parsed arguments and returns the
+    exit code; it runs as g2s's own commands do: bad input is a
+    :class:`~g2s_core.errors.G2SError` with a one-line message (exit 2), any
+    other exception an internal error (exit 1).
     """

@@ -189,7 +189,7 @@ class Registry:
         A :class:`~g2s_core.errors.G2SError` the plugin raises (bad input it
         found) passes through; any other exception, and a wrong result, becomes
         ``info.failure(...)``. A returned function is wrapped so that its own
-        results and exceptions are checked the same way.
+        results (and, unless the stage says otherwise, exceptions) are checked the same way.
         """
         others = [p for p in self.manager.get_plugins() if p is not info.plugin]
         caller = self.manager.subset_hook_caller(info.kind.hook, remove_plugins=others)
@@ -204,7 +204,8 @@ class Registry:
             return value
 
         def checked(*args: Any) -> Any:
-            answer = _guarded(info, value, "its function raised")(*args)
+            function = _guarded(info, value, "its function raised") if info.kind.guard_each_call else value
+            answer = function(*args)
             wrong = each(answer)
             if wrong is not None:
                 raise info.failure(f"its function returned {wrong}")

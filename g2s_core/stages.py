@@ -1,4 +1,5 @@
-"""The one table of plugin kinds: the eight pipeline stages, output writers and readers, level generators and batch executors.
+"""The one table of plugin kinds: the eight pipeline stages, output writers and readers, level generators, batch executors
+and commands of the ``g2s`` command line.
 
 Everything that lists stages reads it: the config's sections
 (:mod:`g2s_core.config`), the registry's look-ups and ``g2s plugins``
@@ -22,6 +23,7 @@ outputs      OutputWriter       ``g2s_write_output``        the paths written, a
 readers      ResultReader       ``g2s_read_result``         the result read back, a LoadedResult
 levels       LevelGenerator     ``g2s_generate_level``      a trimesh.Trimesh with triangles
 executors    Executor           ``g2s_execute``             an iterator of the summary rows of the pairs
+commands     Command            ``g2s_command``             a function run(args) -> exit code
 ===========  =================  ==========================  ==========================================
 
 .. [*] as a mapping, or as the ``values`` of an :class:`~g2s_core.model.AnalyzerResult`
@@ -60,6 +62,9 @@ class Stage:
         check: the test of a result (see :data:`Check`).
         check_each_call: for a hook that returns a function, the test of each
             of that function's results (``None``: the result is not a function).
+        guard_each_call: that function's exceptions (but bad input) are the
+            plugin's failure; ``False`` for a command, which runs as g2s's own
+            commands do (an unexpected exception is exit 1, as today for ``g2s batch``).
         check_each_item: for a hook that returns an iterator, the test of each
             item it yields (``None``: the result is not an iterator).
         many: the config section lists any number of these plugins, each with
@@ -78,6 +83,7 @@ class Stage:
     returns: str
     check: Check
     check_each_call: Callable[[Any], str | None] | None = None
+    guard_each_call: bool = True
     check_each_item: Callable[[Any], str | None] | None = None
     many: bool = False
     step: str = ""
@@ -203,6 +209,14 @@ def _row(value: Any) -> str | None:
     return f"{type(value).__name__}, not a summary row (a dict with config and level)"
 
 
+def _command(value: Any, kwargs: Mapping[str, Any], plugin: Any) -> str | None:
+    return None if callable(value) else f"{type(value).__name__}, not a function run(args) -> exit code"
+
+
+def _exit_code(value: Any) -> str | None:
+    return None if isinstance(value, int) and not isinstance(value, bool) else f"{type(value).__name__}, not an exit code"
+
+
 def _loaded(value: Any, kwargs: Mapping[str, Any], plugin: Any) -> str | None:
     return None if isinstance(value, LoadedResult) else f"{type(value).__name__}, not a LoadedResult"
 
@@ -241,6 +255,8 @@ STAGES: tuple[Stage, ...] = (
           _level),
     Stage("executors", "Executor", hookspecs.g2s_execute.__name__, "an iterator of the summary rows of the pairs",
           _iterator, check_each_item=_row),
+    Stage("commands", "Command", hookspecs.g2s_command.__name__, "a function run(args) -> exit code", _command,
+          check_each_call=_exit_code, guard_each_call=False),
 )
 
 BY_KEY: dict[str, Stage] = {stage.key: stage for stage in STAGES}

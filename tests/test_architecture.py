@@ -11,15 +11,22 @@ from g2s_core.stages import PIPELINE, STAGES
 from tests.conftest import PROJECT
 
 
+EXEMPT_IMPORTS = {"batch.py": ["g2s_plugins.batch.runner"]}
+"""The one exemption: issue 13 documented batch runs from Python as ``g2s_core.batch.run_batch``; the runner now
+lives in the ``batch`` command plugin, and ``g2s_core/batch.py`` only re-exports it so that scripts using that path
+keep working."""
+
+
 def test_core_never_imports_a_plugin():
     for path in sorted((PROJECT / "g2s_core").glob("*.py")):
         for node in ast.walk(ast.parse(path.read_text())):
             names = [a.name for a in node.names] if isinstance(node, ast.Import) else \
                 [node.module or ""] if isinstance(node, ast.ImportFrom) else []
-            assert not any(n.startswith("g2s_plugins") for n in names), f"{path.name} imports {names}"
+            if any(n.startswith("g2s_plugins") for n in names):
+                assert names == EXEMPT_IMPORTS.get(path.name), f"{path.name} imports {names}"
 
 
-CORE_CODE_BUDGET = 2365
+CORE_CODE_BUDGET = 2027
 """Lines of code g2s_core may hold (docs/architecture.md records the count): the core stays minimal."""
 
 
@@ -70,12 +77,13 @@ def test_the_pipeline_picture_names_every_built_in_plugin():
     picture = text.split("The pipeline (the paper's Algorithm 1)", 1)[1].split("## The stage table", 1)[0]
     listed = [set(group.split(" | ")) for group in re.findall(r"\(([a-z_]+(?: \| [a-z_]+)*)\)", picture)]
     stages = ["graph", "terminals", "steiner", "loops", "roots", "simplify", "analyzers", "evaluators", "outputs",
-              "readers", "executors"]
+              "readers", "executors", "commands"]
     built_in = [{p.name for p in installed().plugins(stage) if p.package == DISTRIBUTION} for stage in stages]
     assert listed == built_in
 
 
-def test_the_documented_example_plugins_register_and_work(tmp_path):
+def test_the_documented_example_plugins_register_and_work(tmp_path, capsys):
+    import argparse
     import types
 
     from g2s_core.model import RunResult
@@ -90,7 +98,8 @@ def test_the_documented_example_plugins_register_and_work(tmp_path):
     kinds = [(p.stage, p.name) for p in registry.plugins()]
     assert kinds == [("graph", "triangles"), ("terminals", "above"), ("steiner", "star"), ("loops", "shortcuts"),
                      ("roots", "lowest"), ("simplify", "straight"), ("analyzers", "height"), ("evaluators", "kept"),
-                     ("outputs", "csv"), ("readers", "csv"), ("levels", "plaza"), ("executors", "threads")]
+                     ("outputs", "csv"), ("readers", "csv"), ("levels", "plaza"), ("executors", "threads"),
+                     ("commands", "size")]
 
     def call(stage, name, **kwargs):
         info = registry.get(stage, name)
@@ -122,6 +131,11 @@ def test_the_documented_example_plugins_register_and_work(tmp_path):
     rows = [{"config": "c", "level": str(n)} for n in range(5)]
     executed = call("executors", "threads", function=dict, items=rows)
     assert sorted(executed, key=lambda row: row["level"]) == rows
+    mesh.export(tmp_path / "plaza.obj")
+    parser = argparse.ArgumentParser(prog="g2s size")
+    run = registry.call(registry.get("commands", "size"), parser=parser)
+    assert run(parser.parse_args([str(tmp_path / "plaza.obj")])) == 0
+    assert capsys.readouterr().out == f"{tmp_path / 'plaza.obj'}: 12 triangles, 20.0 x 0.2 x 20.0 m\n"
 
 
 def nx_path_with_positions():

@@ -14,7 +14,7 @@ from pathlib import Path
 import pandas as pd
 import pytest
 
-from g2s_core.batch import METRIC_PREFIX, RECORDS, expand_inputs, run_batch
+from g2s_plugins.batch.runner import METRIC_PREFIX, RECORDS, expand_inputs, run_batch
 from g2s_core.cli import main
 from g2s_core.errors import G2SError
 from g2s_plugins.samples.levels import dungeon
@@ -299,3 +299,13 @@ def test_the_python_example_of_docs_batch_md_runs_as_written(tmp_path):
     assert all(word in done.stdout for word in ("dungeon5", "dungeon6", "metric.traffic.rho"))
     last = done.stdout.splitlines()[-2:]  # the means per config close the output
     assert [line.split()[0] for line in last] == ["mesh_los", "surface"] and all(len(line.split()) == 5 for line in last)
+
+
+def test_issue_13s_python_path_still_imports_the_runner():
+    """docs/batch.md: ``g2s_core.batch`` re-exports the batch plugin's runner, so that scripts using it keep working."""
+    import g2s_core.batch
+    from g2s_plugins.batch import runner
+
+    assert g2s_core.batch.__all__ and all(getattr(g2s_core.batch, name) is getattr(runner, name)
+                                          for name in g2s_core.batch.__all__)
+    assert {"run_batch", "run_pair", "Pair", "Progress", "COLUMNS", "RECORDS", "METRIC_PREFIX"} <= set(g2s_core.batch.__all__)

@@ -32,8 +32,39 @@ def assert_user_error(proc: subprocess.CompletedProcess, fragment: str) -> None:
 def test_help_lists_the_commands():
     proc = g2s("--help")
     assert proc.returncode == 0
-    for command in ("run", "plugins", "demo"):
+    for command in ("run", "plugins", "demo", "batch"):
         assert command in proc.stdout
+
+
+def test_a_command_plugin_that_fails_stops_only_its_own_command(monkeypatch, capsys):
+    """A command whose hook raises or returns no function, or whose name is g2s's own: the other commands run;
+    a command that raises is an internal error, as g2s's own commands are."""
+    import types
+
+    from g2s_core import cli, hookimpl
+    from g2s_core.registry import Registry
+
+    registry = Registry.from_entry_points()
+    hooks = {"broken": lambda parser: parser.no_such_method(), "nothing": lambda parser: None,
+             "crashes": lambda parser: lambda args: {}["key"], "run": lambda parser: lambda args: 7}
+    for name, hook in hooks.items():
+        plugin = types.ModuleType(name, f"the {name} command")
+        plugin.NAME, plugin.g2s_command = name, hookimpl(hook)
+        registry.register(plugin, package="tests", entry_point=f"commands.{name}")
+    monkeypatch.setattr(cli, "installed", lambda: registry)
+    assert main(["presets"]) == 0 and "map_analysis" in capsys.readouterr().out
+    assert main(["broken"]) == 2
+    assert capsys.readouterr().err.strip() == ("g2s: error: Command plugin 'broken' (package 'tests') failed: "
+                                               "raised AttributeError: 'ArgumentParser' object has no attribute 'no_such_method'")
+    assert main(["nothing"]) == 2
+    assert capsys.readouterr().err.strip() == ("g2s: error: Command plugin 'nothing' (package 'tests') failed: "
+                                               "returned NoneType, not a function run(args) -> exit code")
+    assert main(["crashes"]) == 1  # the command's own exception: an internal error, as in g2s's own commands
+    assert capsys.readouterr().err.splitlines() == ["g2s: internal error: KeyError: 'key'",
+                                                    "(run again with --verbose for the traceback)"]
+    with pytest.raises(SystemExit):  # g2s's own `run` keeps its name and its arguments
+        main(["run"])
+    assert "the following arguments are required: config, mesh" in capsys.readouterr().err
 
 
 def test_bad_config_value(tmp_path):

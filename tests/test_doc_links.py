@@ -57,7 +57,7 @@ def test_relative_links_and_named_files_exist(doc: Path):
 
 REFERENCE = {"terminals": "plugins.md", "loops": "plugins.md", "roots": "plugins.md", "simplify": "plugins.md",
              "analyzers": "plugins.md", "evaluators": "plugins.md", "steiner": "steiner.md", "outputs": "outputs.md",
-             "executors": "batch.md"}
+             "executors": "batch.md", "commands": "batch.md"}
 """The doc that describes each kind's built-in plugins (graph builders: navmesh.md and sampling.md, by name in their titles)."""
 
 

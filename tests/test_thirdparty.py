@@ -112,3 +112,31 @@ def test_an_exception_inside_a_plugin_names_the_plugin_and_its_package(installed
     assert proc.stderr.strip() == (
         "g2s: error: Analyzer plugin 'explodes' (package 'g2s-example-plugin') failed: raised KeyError: 'height'")
     assert not (tmp_path / "out").exists()
+
+
+def test_third_party_command_runs_through_g2s(installed_plugin, tmp_path):
+    helped = g2s(installed_plugin, "--help")
+    assert helped.returncode == 0, helped.stderr
+    assert "    level        write a level of an installed level generator to a mesh file" in helped.stdout
+    assert "batch" in helped.stdout  # the built-in command plugin stays
+    listing = g2s(installed_plugin, "plugins", "--stage", "commands")
+    assert "  level  (g2s-example-plugin)\n" in listing.stdout and "  batch  (graph2structure)\n" in listing.stdout
+
+    level = tmp_path / "plaza.obj"
+    proc = g2s(installed_plugin, "level", "sample:plaza?size=40", str(level))
+    assert proc.returncode == 0, proc.stderr
+    assert proc.stdout == f"wrote {level}: 12 triangles\n"
+    run = g2s(installed_plugin, "run", "graph_only", str(level), "-o", str(tmp_path / "out"), "--json")
+    assert run.returncode == 0, run.stderr  # the written level is a mesh g2s reads
+
+    again = g2s(installed_plugin, "level", "sample:plaza", str(level))
+    assert again.returncode == 2 and again.stderr.strip() == f"g2s: error: {level}: exists already; choose another file name"
+    bad = g2s(installed_plugin, "level", "sample:plaza?size=-1", str(tmp_path / "bad.obj"))
+    assert bad.returncode == 2 and bad.stderr.strip() == "g2s: error: sample:plaza.size: expected a number > 0, got '-1'"
+
+
+def test_a_command_without_an_exit_code_is_that_plugins_failure(installed_plugin):
+    proc = g2s(installed_plugin, "generators")
+    assert proc.returncode == 2 and "Traceback" not in proc.stderr
+    assert proc.stderr.strip() == ("g2s: error: Command plugin 'generators' (package 'g2s-example-plugin') failed: "
+                                   "its function returned NoneType, not an exit code")

@@ -1,0 +1,456 @@
+"""Batch runs: configs over many levels, on any executor plugin, with one summary table.
+
+This module plans the pairs, resumes, and sums the rows up; an executor plugin
+(stage ``executors``: ``local`` process pool, ``dask`` cluster, ``serial``, or
+a third-party one) only decides where each pair runs. Every (config, level)
+pair is run by :func:`run_pair`, the same function on
+every executor; it opens the level, runs it and writes its result folder with
+the functions ``g2s run`` uses (:func:`g2s_core.api.open_mesh`,
+:func:`~g2s_core.api.execute`, :func:`~g2s_core.api.write_result`), then
+records the pair's summary row.
+A pair that fails is recorded with its error and the batch goes on.
+
+Layout of ``OUTDIR``::
+
+    OUTDIR/CONFIG/LEVEL/...              the run's result files, as `g2s run -o` writes them
+    OUTDIR/.g2s-batch/CONFIG/LEVEL.json  the pair's summary row, written once its folder is complete
+    OUTDIR/summary.parquet, summary.csv  one row per pair (see :data:`COLUMNS`)
+
+A row file is what makes a pair finished: a re-run skips the pairs whose row
+says ``ok`` for the same config and mesh hash and whose result files are all
+there (resume), unless ``force``. Interrupting a batch (Ctrl-C) closes the
+executor's iterator (the process pool lets its running pairs finish, pending
+ones are dropped) and writes the summary of the finished pairs.
+
+Needs the ``batch`` extra (``pip install 'graph2structure[batch]'``): pandas,
+pyarrow and dask.distributed.
+"""
+
+from __future__ import annotations
+
+import glob
+import hashlib
+import json
+import math
+import os
+import re
+import time
+from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
+from contextlib import closing, contextmanager
+from dataclasses import dataclass
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+from g2s_core import DISTRIBUTION, api, pipeline
+from g2s_core.config import find_config, load_raw_config, parse_config, with_evaluators
+from g2s_core.errors import G2SError, PluginFailure
+from g2s_core.mesh import SAMPLE_PREFIX, SUPPORTED_SUFFIXES
+from g2s_core.model import RunResult
+from g2s_core.outputs import chosen_formats, result_files
+from g2s_core.registry import installed
+from g2s_core.stages import PIPELINE
+
+if TYPE_CHECKING:
+    import pandas as pd
+
+RECORDS = ".g2s-batch"
+"""The folder of ``OUTDIR`` holding one row file per finished pair."""
+
+INSTALL_HINT = (f"g2s batch needs the 'batch' extra: pip install '{DISTRIBUTION}[batch]' "
+                "(pandas, pyarrow, dask.distributed; from a clone: make setup)")
+
+COLUMNS: tuple[str, ...] = (
+    "config", "level", "input", "folder", "status", "error", "reused", "mesh_sha256", "config_sha256",
+    "seconds_load", *(f"seconds_{s.key}" for s in PIPELINE), "seconds_write", "seconds_total",
+    *(f"{what}_{s.key}" for s in PIPELINE if s.key in ("graph", "steiner", "simplify") for what in ("nodes", "edges")),
+    "terminals", "openings", "roots", "structure_length", "warnings",
+)
+"""The summary's fixed columns, in order. Then, per analyzer key K: ``K_max``, ``K_mean``, ``K_top_node``,
+for analyzers with records (chokepoints, regions) the columns of :func:`_feature_columns`, and per
+evaluator key E and measure M ``metric.E.M`` (:data:`METRIC_PREFIX`); sorted by name.
+
+``seconds_*`` are wall seconds (``seconds_total``: the whole pair, opening to
+writing); ``nodes_*``/``edges_*`` the sizes of the initial graph, the Steiner
+forest and the simplified structure; ``structure_length`` the sum of the
+structure's edge lengths, metres; ``warnings`` how many the run gave.
+"""
+
+
+METRIC_PREFIX = "metric."
+"""Start of the evaluators' columns: ``metric.<evaluator key>.<measure>``, empty where not computed."""
+
+
+@dataclass(frozen=True)
+class Pair:
+    """One config on one level: what :func:`run_pair` needs, picklable and free of local state but paths.
+
+    Attributes:
+        config: the config's name in the batch (its file stem).
+        raw_config: the config as read, ``extends:`` merged (validated by the worker).
+        source: the config file, for messages.
+        formats: the output formats.
+        config_sha256: hash of the config and formats: a finished pair is reused only for the same one.
+        level: the level's name in the batch.
+        spec: the mesh file or ``sample:`` spec.
+        folder: the pair's result folder.
+        record: the pair's row file.
+        force: recompute even when the pair is finished.
+    """
+
+    config: str
+    raw_config: dict[str, Any]
+    source: str
+    formats: tuple[str, ...]
+    config_sha256: str
+    level: str
+    spec: str
+    folder: str
+    record: str
+    force: bool = False
+
+
+def run_pair(pair: Pair) -> dict[str, Any]:
+    """Run one pair, write its result folder and its row file; its summary row.
+
+    A finished pair (see the module docs) is not run again: its earlier row is
+    returned with ``reused`` set. Errors do not propagate: the row says
+    ``failed`` with the one-line message ``g2s run`` would print.
+    """
+    start = time.perf_counter()
+    row: dict[str, Any] = {
+        "config": pair.config, "level": pair.level, "input": pair.spec, "folder": pair.folder,
+        "status": "ok", "error": None, "reused": False, "config_sha256": pair.config_sha256,
+    }
+    try:
+        registry = installed()
+        config = parse_config(pair.raw_config, source=pair.source)
+        plan = pipeline.plan(config, registry, source=pair.source)
+        mesh = api.open_mesh(pair.spec, config, registry=registry)
+        row.update(mesh_sha256=mesh.sha256, seconds_load=time.perf_counter() - start)
+        earlier = _finished_row(pair, mesh.sha256)
+        if earlier is not None:
+            return {**earlier, "reused": True}
+        result = api.execute(plan, registry, mesh)
+        api.write_result(result, pair.folder, pair.formats, force=True, registry=registry)
+        row.update(result_row(result))
+        row["seconds_write"] = time.perf_counter() - start - row["seconds_load"] - result.total_seconds
+    except (G2SError, PluginFailure) as exc:
+        row.update(status="failed", error=str(exc))
+    except Exception as exc:  # an internal error of g2s on this level: recorded, the batch goes on
+        row.update(status="failed", error=f"internal error: {type(exc).__name__}: {exc}")
+    row["seconds_total"] = time.perf_counter() - start
+    _write_json(Path(pair.record), row)
+    return row
+
+
+def result_row(result: RunResult) -> dict[str, Any]:
+    """A run's summary values (the columns of :data:`COLUMNS` after ``seconds_load``, and the analyzers')."""
+    row: dict[str, Any] = {}
+    for stage in PIPELINE:
+        stats = result.stage(stage.timing)
+        row[f"seconds_{stage.key}"] = None if stats is None else stats.seconds
+        if stage.key in ("graph", "steiner", "simplify"):
+            row[f"nodes_{stage.key}"] = None if stats is None else stats.nodes
+            row[f"edges_{stage.key}"] = None if stats is None else stats.edges
+    terminals = result.terminals
+    row["terminals"] = None if terminals is None else len(terminals.without_waypoints)
+    row["openings"] = None if terminals is None else len(terminals.openings)
+    structure = result.structure
+    row["roots"] = None if structure is None else len(structure.graph["roots"])
+    row["structure_length"] = None if structure is None else float(
+        math.fsum(w for _, _, w in structure.edges(data="weight", default=0.0)))
+    row["warnings"] = len(result.warnings)
+    for key, values in result.analysis.items():
+        top = max(sorted(values), key=lambda node: values[node]) if values else None
+        row[f"{key}_max"] = None if top is None else values[top]
+        row[f"{key}_mean"] = math.fsum(values.values()) / len(values) if values else None
+        row[f"{key}_top_node"] = top
+    for key, features in result.features.items():
+        row.update(_feature_columns(key, features))
+    for key, measures in result.metrics.items():
+        row.update({f"{METRIC_PREFIX}{key}.{name}": value for name, value in measures.items()})
+    return row
+
+
+def _feature_columns(key: str, features: dict[str, Any]) -> dict[str, Any]:
+    """An analyzer's records summed up (e.g. ``chokepoints``, ``regions``): for each list of records F,
+    ``K_count`` (``K_F_count`` when F is not the analyzer key K), the highest ``score`` and that record's
+    ``width`` (``..._top_score``, ``..._top_width``), the largest ``area`` (``..._largest_area``)."""
+    row: dict[str, Any] = {}
+    for name, records in features.items():
+        if not isinstance(records, list):
+            continue
+        prefix = key if name == key else f"{key}_{name}"
+        row[f"{prefix}_count"] = len(records)
+        scored = [r for r in records if isinstance(r, dict) and "score" in r]
+        if scored:
+            top = max(scored, key=lambda record: record["score"])
+            row[f"{prefix}_top_score"] = top["score"]
+            row[f"{prefix}_top_width"] = top.get("width")
+        areas = [r["area"] for r in records if isinstance(r, dict) and "area" in r]
+        if areas:
+            row[f"{prefix}_largest_area"] = max(areas)
+    return row
+
+
+def _finished_row(pair: Pair, mesh_sha256: str) -> dict[str, Any] | None:
+    """The pair's earlier row when it is finished for this config and mesh, else ``None``."""
+    if pair.force:
+        return None
+    try:
+        earlier = json.loads(Path(pair.record).read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return None
+    files = result_files()
+    complete = all((Path(pair.folder) / name).is_file() for fmt in pair.formats for name in files.get(fmt, ()))
+    same = earlier.get("config_sha256") == pair.config_sha256 and earlier.get("mesh_sha256") == mesh_sha256
+    return earlier if same and complete and earlier.get("status") == "ok" else None
+
+
+def _write_json(path: Path, data: dict[str, Any]) -> None:
+    """Write ``data`` so that the file is either absent, the old one, or complete."""
+    path.parent.mkdir(parents=True, exist_ok=True)
+    temporary = path.with_name(f".{path.name}.{os.getpid()}.tmp")
+    temporary.write_text(json.dumps(data, sort_keys=True, allow_nan=True), encoding="utf-8")
+    os.replace(temporary, path)
+
+
+# --- the pairs of a batch -----------------------------------------------------
+
+
+def expand_inputs(inputs: Sequence[str], exclude: Path | None = None) -> list[tuple[str, str]]:
+    """``(level name, mesh spec)`` for every level of ``inputs``, in input order, files sorted.
+
+    An input is a mesh file (taken whatever its extension: a wrong one fails
+    its pairs), a folder (its files with a known mesh extension, recursively,
+    except those under ``exclude``), a glob pattern, or a ``sample:`` spec.
+    A level's name is its file stem (its path without extension, relative to
+    its folder, for a folder's files) or the spec with other characters than
+    letters, digits, ``.`` ``_`` ``-`` turned to ``_``.
+
+    Raises:
+        G2SError: an input matches nothing, or two levels get the same name.
+    """
+    levels: dict[str, str] = {}
+
+    def add(name: str, spec: str, origin: str) -> None:
+        if name in levels and levels[name] != spec:
+            raise G2SError(f"{origin}: level name {name!r} is also that of {levels[name]}; rename one of the files")
+        levels[name] = spec
+
+    for item in inputs:
+        path = Path(item)
+        if item.startswith(SAMPLE_PREFIX):
+            add(re.sub(r"[^A-Za-z0-9._-]+", "_", item[len(SAMPLE_PREFIX):]).strip("_"), item, item)
+        elif path.is_dir():
+            found = [p for p in _mesh_files(path) if exclude is None or not p.resolve().is_relative_to(exclude.resolve())]
+            if not found:
+                raise G2SError(f"{item}: no mesh files in this folder (expected {', '.join(SUPPORTED_SUFFIXES)})")
+            for file in found:
+                add(file.relative_to(path).with_suffix("").as_posix(), str(file), item)
+        elif path.exists():
+            add(path.stem, item, item)
+        elif glob.has_magic(item):
+            matches = sorted(glob.glob(item, recursive=True))
+            files = [Path(m) for m in matches if Path(m).is_file()]
+            if not files:
+                raise G2SError(f"{item}: the pattern matches no files")
+            for file in files:
+                add(file.stem, str(file), item)
+        else:
+            raise G2SError(f"{item}: no such mesh file, folder or pattern (or {SAMPLE_PREFIX}NAME)")
+    return [(name, spec) for name, spec in levels.items()]
+
+
+def _mesh_files(folder: Path) -> Iterator[Path]:
+    return iter(sorted(p for p in folder.rglob("*") if p.is_file() and p.suffix.lower() in SUPPORTED_SUFFIXES))
+
+
+def make_pairs(
+    configs: Sequence[str | Path],
+    inputs: Sequence[str],
+    outdir: Path,
+    formats: str | Sequence[str] | None = None,
+    force: bool = False,
+    evaluators: Sequence[str] = (),
+) -> list[Pair]:
+    """Every (config, level) pair of a batch, configs outer; configs and inputs are checked here.
+
+    Raises:
+        ConfigError, G2SError: a config does not validate, two configs share a
+            file stem, an input matches nothing, or ``outdir`` cannot take a batch.
+    """
+    _check_outdir(outdir)
+    levels = expand_inputs(inputs, exclude=outdir)
+    registry = installed()
+    pairs: list[Pair] = []
+    seen: dict[str, str] = {}
+    for config_path in configs:
+        source = str(config_path)
+        name = Path(config_path).stem
+        if name in seen:
+            raise G2SError(f"{source}: config name {name!r} is also that of {seen[name]}; rename one of the files")
+        seen[name] = source
+        raw = with_evaluators(load_raw_config(find_config(config_path)), evaluators)
+        config = parse_config(raw, source=source)
+        pipeline.plan(config, registry, source=source)
+        chosen = tuple(chosen_formats(formats, config, source))
+        digest = hashlib.sha256(json.dumps([config.model_dump(mode="json"), chosen], sort_keys=True).encode()).hexdigest()
+        for level, spec in levels:
+            pairs.append(Pair(
+                name, raw, source, chosen, digest, level, spec,
+                folder=str(outdir / name / level), record=str(outdir / RECORDS / name / f"{level}.json"), force=force,
+            ))
+    return pairs
+
+
+def _check_outdir(outdir: Path) -> None:
+    """A batch writes into a new or empty folder, or into one an earlier batch wrote."""
+    if outdir.exists() and not outdir.is_dir():
+        raise G2SError(f"{outdir}: exists and is not a folder")
+    if outdir.is_dir() and any(outdir.iterdir()) and not (outdir / RECORDS).is_dir():
+        raise G2SError(f"{outdir}: holds files that are not a g2s batch's; choose a new or empty folder")
+
+
+# --- progress -----------------------------------------------------------------
+
+
+class Progress:
+    """What a batch reports as pairs finish: counts and rate; ``update(row)`` after each pair."""
+
+    def __init__(self, total: int) -> None:
+        self.total, self.done, self.failed, self.started = total, 0, 0, time.perf_counter()
+
+    def update(self, row: dict[str, Any]) -> None:
+        self.done += 1
+        self.failed += row["status"] != "ok"
+
+    @property
+    def per_minute(self) -> float:
+        elapsed = time.perf_counter() - self.started
+        return 60.0 * self.done / elapsed if elapsed > 0 else 0.0
+
+
+# --- the batch ----------------------------------------------------------------
+
+
+def run_batch(
+    configs: Sequence[str | Path],
+    inputs: Sequence[str | Path],
+    outdir: str | Path,
+    executor: str = "local",
+    *,
+    workers: int | None = None,
+    scheduler: str | None = None,
+    executor_params: Mapping[str, Any] | None = None,
+    evaluators: Sequence[str] = (),
+    formats: str | Sequence[str] | None = None,
+    force: bool = False,
+    progress: Callable[[Progress], None] | None = None,
+) -> pd.DataFrame:
+    """Run every config on every level of ``inputs``; the summary, one row per pair.
+
+    Args:
+        configs: preset names or YAML config files.
+        inputs: mesh files, folders (searched recursively), glob patterns or
+            ``sample:NAME?param=value&...`` specs.
+        outdir: the batch's folder (see the module docs for its layout).
+        executor: an installed executor plugin (``g2s plugins --stage
+            executors``): ``"local"`` (a process pool of ``workers``, default
+            the CPU count), ``"dask"`` (the dask.distributed scheduler at
+            ``scheduler``, else a LocalCluster of ``workers`` processes) or
+            ``"serial"``.
+        workers, scheduler: the executor's parameters of these names, when given.
+        executor_params: any other parameters of the executor.
+        evaluators: evaluator plugins added, with their default parameters, to
+            every config that does not list them already (e.g. ``["traffic"]``).
+        formats: output formats for every pair (default: each config's).
+        force: recompute finished pairs.
+        progress: called with the counts after each pair.
+
+    Returns:
+        The summary (also written to ``outdir/summary.parquet`` and
+        ``summary.csv``): :data:`COLUMNS`, then each analyzer's and
+        evaluator's columns; rows in config order, then level order. After
+        Ctrl-C the files hold the pairs finished so far, then
+        ``KeyboardInterrupt`` propagates.
+
+    Raises:
+        ConfigError, G2SError: bad configs, inputs or executor parameters, before any pair runs.
+    """
+    import pandas as pd  # noqa: F401  (the extra is needed before any work starts)
+
+    registry = installed()
+    chosen = registry.get("executors", executor, key="executor")
+    given = {"workers": workers, "scheduler": scheduler}
+    options = {**(executor_params or {}), **{k: v for k, v in given.items() if v is not None}}
+    params = registry.validate_params(chosen, options, f"executor {executor!r} params")
+    for name in evaluators:
+        registry.get("evaluators", name, key="evaluators")
+    outdir = Path(outdir)
+    pairs = make_pairs(configs, [str(i) for i in inputs], outdir, formats, force, evaluators)
+    counts = Progress(len(pairs))
+    rows: dict[tuple[str, str], dict[str, Any]] = {}
+    started = time.time()
+    try:
+        with closing(registry.call(chosen, function=run_pair, items=pairs, params=params)) as finished:
+            for row in finished:
+                rows[row["config"], row["level"]] = row
+                counts.update(row)
+                if progress is not None:
+                    progress(counts)
+    finally:
+        for pair in pairs:  # after Ctrl-C: the pairs that finished while the executor stopped
+            if (pair.config, pair.level) not in rows and _written_since(Path(pair.record), started):
+                rows[pair.config, pair.level] = json.loads(Path(pair.record).read_text(encoding="utf-8"))
+        summary = _summary([rows[p.config, p.level] for p in pairs if (p.config, p.level) in rows])
+        if rows:
+            write_summary(summary, outdir)
+    return summary
+
+
+def _written_since(path: Path, moment: float) -> bool:
+    try:
+        return path.stat().st_mtime >= moment
+    except OSError:
+        return False
+
+
+def _summary(rows: Iterable[dict[str, Any]]) -> pd.DataFrame:
+    import pandas as pd
+
+    frame = pd.DataFrame(list(rows))
+    extra = sorted(c for c in frame.columns if c not in COLUMNS)
+    frame = frame.reindex(columns=[*COLUMNS, *extra])
+    for column in frame.columns:
+        if column.startswith(("nodes_", "edges_")) or column in ("terminals", "openings", "roots", "warnings") \
+                or column.endswith(("_top_node", "_count")):
+            frame[column] = frame[column].astype("Int64")
+        elif column.startswith(("seconds_", METRIC_PREFIX)) or column == "structure_length" \
+                or column.endswith(("_max", "_mean", "_top_score", "_top_width", "_largest_area")):
+            frame[column] = frame[column].astype("float64")
+    frame["reused"] = frame["reused"].astype(bool)
+    return frame
+
+
+def write_summary(summary: pd.DataFrame, outdir: Path) -> list[Path]:
+    """``summary.parquet`` and ``summary.csv`` in ``outdir``, each replaced whole."""
+    paths = []
+    for name, write in (("summary.parquet", summary.to_parquet), ("summary.csv", summary.to_csv)):
+        path = outdir / name
+        temporary = path.with_name(f".{name}.tmp")
+        write(temporary, index=False)
+        os.replace(temporary, path)
+        paths.append(path)
+    return paths
+
+
+@contextmanager
+def missing_extra() -> Iterator[None]:
+    """Turn a missing package of the ``batch`` extra into a :class:`G2SError` saying how to install it."""
+    try:
+        yield
+    except ModuleNotFoundError as exc:
+        if exc.name and exc.name.split(".")[0] in ("pandas", "pyarrow", "dask", "distributed"):
+            raise G2SError(f"{INSTALL_HINT} ({exc.name} is missing)") from None
+        raise
