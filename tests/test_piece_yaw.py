@@ -44,6 +44,7 @@ def run():
         ("cross_platform", {}, 15.0),
         ("cross_platform", {}, 30.0),
         ("curb_platform", {}, 15.0),
+        ("curb_platform", {}, 30.0),  # each curb gap was cut into 2 or 3 overlapping openings
         # 1.2 m doors Recast closes at some yaws: the floor's end lies the wall's thickness beyond the erosion.
         ("doorway_room", {"doors": (1.2,) * 5}, 45.0),
         ("doorway_room", {"wall": 0.8}, 45.0),

@@ -35,19 +35,25 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
    boundary's direction within ``match_angle_deg`` (a curved edge). The
    opening lies on that line; its ends are extended along the edge while the
    surface goes on inside the edge, ends just outside it, and nothing stands
-   in the way or straight out: this undoes the retreat from walls.
+   in the way or straight out: this undoes the retreat from walls. An
+   opening overlapping a wider one along the same line, facing the same way,
+   is the same opening found twice and is dropped.
 6. Priors, each measured on the generated pieces of
    :mod:`g2s_plugins.samples.pieces` (docs/entry_exit.md):
 
    * width: openings narrower than ``min_width_radii * r`` (default the
      agent's diameter) are dropped (chamfers, slivers);
    * reachability (``main_floor_only``): the opening must run along the
-     navmesh component of largest area, the main floor and what the agent
-     reaches from it (an unreachable wall top, a roof, holds no exit);
+     navmesh floor of largest area, the main floor and what the agent
+     reaches from it (an unreachable wall top, a roof, holds no exit); a
+     floor is a navmesh component with those whose boundary comes within
+     ``r`` at the same height (Recast's grid cuts narrow passages at some yaws);
    * outer extent (``extent_heights``): modular pieces meet their neighbours
      at their outer extent, facing out. The opening's gap to the piece's
      extent along its heading (the largest ``vertex . heading`` of the mesh
-     minus the midpoint's) must not exceed ``extent_heights`` agent heights.
+     minus the midpoint's; a heading near one of the piece's own horizontal
+     axes, taken from its walls, is measured along that axis) must not exceed
+     ``extent_heights`` agent heights.
 
    The score is the product of three factors in [0, 1]: the share of edge
    points on the fitted line, ``1 - gap / (extent_heights * height)``, and
@@ -538,6 +544,38 @@ def extent_gap(vertices: np.ndarray, point: np.ndarray, heading: np.ndarray, fra
     return float(np.max(vertices @ axis) - point @ axis)
 
 
+def _repeated(openings: list[Opening], radius: float, max_turn_deg: float) -> np.ndarray:
+    """(n,) bool: openings that overlap a wider one along the same edge, facing the same way.
+
+    Recast's voxel staircase along an edge turned off the grid's axes can cut one opening's
+    samples into several segments; each is extended along the edge (step 5) over much of the same
+    opening (the generated ``curb_platform`` turned by 5 to 60 degrees: 2 or 3 per curb gap). A
+    narrower opening whose midpoint lies within ``radius`` of a wider one's line, whose extent
+    along it overlaps the wider one's and whose heading is within ``max_turn_deg`` of it is the
+    same opening found again.
+    """
+    n = len(openings)
+    again = np.zeros(n, dtype=bool)
+    first = np.array([o.p0 for o in openings], dtype=np.float64).reshape(n, 3)
+    last = np.array([o.p1 for o in openings], dtype=np.float64).reshape(n, 3)
+    heading = np.array([o.heading for o in openings], dtype=np.float64).reshape(n, 3)
+    width = np.linalg.norm(last - first, axis=1)
+    cos_turn = math.cos(math.radians(max_turn_deg))
+    order = np.argsort(-width, kind="stable")
+    for rank, i in enumerate(order):
+        if again[i] or width[i] <= 0:
+            continue
+        along = (last[i] - first[i]) / width[i]
+        for j in order[rank + 1 :]:
+            if again[j] or np.dot(heading[i], heading[j]) < cos_turn:
+                continue
+            mid = 0.5 * (first[j] + last[j]) - first[i]
+            off = np.linalg.norm(mid - np.dot(mid, along) * along)
+            lo, hi = sorted((np.dot(first[j] - first[i], along), np.dot(last[j] - first[i], along)))
+            again[j] = off <= radius and lo < width[i] and hi > 0.0
+    return again
+
+
 def detect_openings(
     mesh: trimesh.Trimesh, navmesh: NavMesh, agent: AgentConfig, params: Params | None = None
 ) -> Detection:
@@ -599,6 +637,8 @@ def detect_openings(
         opening = Opening(vec3(mid), vec3(heading), width, vec3(p0), vec3(p1), score, reason)
         polys = tuple(sorted(set(samples.polygon[e.samples].tolist())))
         found.append((opening, polys, vec3(e.normal)))
+    repeated = _repeated([f[0] for f in found], s.radius, float(params.max_turn_deg))
+    found = [f for f, again in zip(found, repeated) if not again]
     found = [f for f in found if f[0].score >= float(params.min_score) - 1e-12]
     if params.best is not None and len(found) > params.best:
         order = sorted(range(len(found)), key=lambda i: (-found[i][0].score, i))[: params.best]
