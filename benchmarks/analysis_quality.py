@@ -2,7 +2,7 @@
 
 Run: ``.venv/bin/python benchmarks/analysis_quality.py [--presets map_analysis_paper map_analysis my.yaml]
 [--levels nav_test samples dungeon_1k dungeon_20k dungeon_100k terrain_1k terrain_20k building_1k building_20k
-castle_1k castle_20k]
+castle_1k castle_20k my_level.obj]
 [--seeds 0 1 2]``
 
 For every level and preset it runs the preset with the ``traffic`` evaluator
@@ -30,7 +30,9 @@ for each run, the number of navmesh regions left overlapping themselves in plan
 detail heights Recast read from another storey, rebuilt ("detail",
 :attr:`g2s_plugins.recast.NavMesh.detail_redone_polygons`; all three "-" without a
 navmesh). ``--presets`` takes preset names or config files (a file extending a
-preset with other parameters). This is a benchmark: nothing here asserts a target.
+preset with other parameters); ``--levels`` also takes mesh files (any format
+``g2s run`` reads, Y-up metres), so the same table can be made for levels of
+one's own. This is a benchmark: nothing here asserts a target.
 """
 
 from __future__ import annotations
@@ -81,6 +83,8 @@ def levels(names: list[str], seeds: list[int]) -> Iterator[tuple[str, trimesh.Tr
         elif name in DUNGEONS:
             for seed in seeds:
                 yield f"{name}_s{seed}", samples.dungeon(seed=seed, rooms=DUNGEONS[name]).mesh
+        elif Path(name).is_file():
+            yield Path(name).stem, load_mesh(Path(name))[0]
         elif name in FAMILIES:
             sample, arguments = FAMILIES[name]
             for seed in seeds:
@@ -94,7 +98,7 @@ def main() -> None:
     parser.add_argument("--presets", nargs="+", default=["map_analysis_paper", "map_analysis"])
     parser.add_argument("--levels", nargs="+", default=["nav_test", "samples", "dungeon_1k", "dungeon_20k"],
                         help="nav_test, samples, a sample name, dungeon_1k, dungeon_20k, dungeon_100k, "
-                             "terrain_1k, terrain_20k, building_1k, building_20k, castle_1k, castle_20k")
+                             "terrain_1k, terrain_20k, building_1k, building_20k, castle_1k, castle_20k, or a mesh file (Y-up, metres)")
     parser.add_argument("--seeds", nargs="+", type=int, default=[0], help="seeds of the generated levels")
     args = parser.parse_args()
     print(f"machine: {platform.machine()}, {os.cpu_count()} cores, load average {os.getloadavg()[0]:.1f}")
