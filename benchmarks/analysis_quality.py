@@ -2,8 +2,8 @@
 
 Run: ``.venv/bin/python benchmarks/analysis_quality.py [--presets map_analysis_paper map_analysis my.yaml]
 [--levels nav_test samples dungeon_1k dungeon_20k dungeon_100k terrain_1k terrain_20k building_1k building_20k
-castle_1k castle_20k]
-[--seeds 0 1 2]``
+castle_1k castle_20k my_level.obj]
+[--seeds 0 1 2] [--yaws 0 30 45]``
 
 For every level and preset it runs the preset with the ``traffic`` evaluator
 added (the evaluator plugin any config or ``g2s batch --evaluate traffic``
@@ -30,12 +30,17 @@ for each run, the number of navmesh regions left overlapping themselves in plan
 detail heights Recast read from another storey, rebuilt ("detail",
 :attr:`g2s_plugins.recast.NavMesh.detail_redone_polygons`; all three "-" without a
 navmesh). ``--presets`` takes preset names or config files (a file extending a
-preset with other parameters). This is a benchmark: nothing here asserts a target.
+preset with other parameters); ``--levels`` also takes mesh files (any format
+``g2s run`` reads, Y-up metres), so the same table can be made for levels of
+one's own; ``--yaws`` runs every level also turned by those angles (degrees,
+about the vertical axis through the centre of its bounds), to check that the
+figures do not depend on how a level lies in its frame. This is a benchmark: nothing here asserts a target.
 """
 
 from __future__ import annotations
 
 import argparse
+import math
 import os
 import platform
 import time
@@ -81,6 +86,8 @@ def levels(names: list[str], seeds: list[int]) -> Iterator[tuple[str, trimesh.Tr
         elif name in DUNGEONS:
             for seed in seeds:
                 yield f"{name}_s{seed}", samples.dungeon(seed=seed, rooms=DUNGEONS[name]).mesh
+        elif Path(name).is_file():
+            yield Path(name).stem, load_mesh(Path(name))[0]
         elif name in FAMILIES:
             sample, arguments = FAMILIES[name]
             for seed in seeds:
@@ -89,13 +96,26 @@ def levels(names: list[str], seeds: list[int]) -> Iterator[tuple[str, trimesh.Tr
             yield name, samples.load_sample(name).mesh
 
 
+def turned(named_meshes: Iterator[tuple[str, trimesh.Trimesh]], yaws: list[float]) -> Iterator[tuple[str, trimesh.Trimesh]]:
+    """Each level turned by each of ``yaws`` (degrees) about the vertical axis through the centre of its bounds."""
+    for name, mesh in named_meshes:
+        for yaw in yaws:
+            if yaw == 0:
+                yield name, mesh
+                continue
+            rotation = trimesh.transformations.rotation_matrix(math.radians(yaw), [0.0, 1.0, 0.0], mesh.bounds.mean(axis=0))
+            yield f"{name}_yaw{yaw:g}", mesh.copy().apply_transform(rotation)
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--presets", nargs="+", default=["map_analysis_paper", "map_analysis"])
     parser.add_argument("--levels", nargs="+", default=["nav_test", "samples", "dungeon_1k", "dungeon_20k"],
                         help="nav_test, samples, a sample name, dungeon_1k, dungeon_20k, dungeon_100k, "
-                             "terrain_1k, terrain_20k, building_1k, building_20k, castle_1k, castle_20k")
+                             "terrain_1k, terrain_20k, building_1k, building_20k, castle_1k, castle_20k, or a mesh file (Y-up, metres)")
     parser.add_argument("--seeds", nargs="+", type=int, default=[0], help="seeds of the generated levels")
+    parser.add_argument("--yaws", nargs="+", type=float, default=[0.0],
+                        help="degrees: run every level also turned by these angles about the vertical axis")
     args = parser.parse_args()
     print(f"machine: {platform.machine()}, {os.cpu_count()} cores, load average {os.getloadavg()[0]:.1f}")
     registry = Registry.from_entry_points()
@@ -104,7 +124,7 @@ def main() -> None:
     header = (f"{'level':<18} {'preset':<28} {'polys':>7} {'<=3m':>6} {'<=6m':>6} {'<=10m':>6} {'off>5m':>7} "
               f"{'rho':>6} {'rho_abw':>7} {'ceiling':>7} {'rho nav':>7} {'ceil nav':>8} {'nav out':>7} {'struct':>7} {'overlap':>7} {'redone':>6} {'detail':>6} {'cpu s':>7} {'total s':>8} {'eval s':>7}  stages (s)")
     print(header)
-    for name, mesh in levels(args.levels, args.seeds):
+    for name, mesh in turned(levels(args.levels, args.seeds), args.yaws):
         for preset, plan in plans.items():
             cpu = time.process_time()
             result = pipeline.run(plan, registry, mesh, name, mesh_sha256(mesh))
