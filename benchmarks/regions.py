@@ -1,6 +1,7 @@
 """Time and quality of the chokepoints and regions analyzers on generated dungeons.
 
-Run: ``.venv/bin/python benchmarks/regions.py [--rooms 120 2400 12000] [--obstacles 0.3] [--seeds 1]``
+Run: ``.venv/bin/python benchmarks/regions.py [--rooms 120 2400 12000] [--obstacles 0.3] [--seeds 1]
+[--yaws 0 5 10 15 20 30 45 60 90]``
 
 For each dungeon (``samples.dungeon(seed, rooms, obstacles)``) the
 ``level_regions`` preset runs once, then, on its navmesh and structure, the
@@ -10,8 +11,11 @@ the best of up to 5 calls (CPU time is the figure to trust on a shared
 machine; the load average is printed). It prints the sizes, the times, and how
 well the result matches the generated level: the share of corridors with a
 chokepoint in them and the share of rooms with a region of their own
-(:func:`g2s_plugins.samples.rooms.dungeon_shares`). This is a benchmark, not
-a test: nothing here asserts a time.
+(:func:`g2s_plugins.samples.rooms.dungeon_shares`). With ``--yaws`` each
+dungeon is also turned about the vertical line through the centre of its
+bounds (:func:`g2s_plugins.samples.pieces.turned`) and its layout with it, so
+the shares show whether the split depends on how the level is turned. This is
+a benchmark, not a test: nothing here asserts a time.
 """
 
 from __future__ import annotations
@@ -29,6 +33,7 @@ from g2s_core.registry import Registry
 from g2s_plugins import decomposition
 from g2s_plugins.analyzers.chokepoints import Params
 from g2s_plugins.samples.levels import dungeon
+from g2s_plugins.samples.pieces import turned, yaw_about_centre
 from g2s_plugins.samples.rooms import dungeon_shares
 
 
@@ -43,17 +48,18 @@ def best_times(function: Callable[[], Any]) -> tuple[float, float, Any]:
     return min(walls), min(cpus), value
 
 
-def measure(rooms: int, seed: int, obstacles: float, registry: Registry) -> dict[str, float]:
+def measure(rooms: int, seed: int, obstacles: float, yaw: float, registry: Registry) -> dict[str, float]:
     level = dungeon(seed=seed, rooms=rooms, obstacles=obstacles)
+    turn = yaw_about_centre(level.mesh, yaw)
     plan = pipeline.plan(load_config(PRESETS_DIR / "level_regions.yaml"), registry)
-    result = pipeline.run(plan, registry, level.mesh, level.name, "-")
+    result = pipeline.run(plan, registry, turned(level, yaw).mesh, level.name, "-")
     navmesh, structure = result.context.navmesh, result.structure.to_undirected(as_view=True)
     params = Params()
     split_wall, split_cpu, split = best_times(lambda: decomposition.decompose(navmesh, result.context.agent, params))
     score_wall, score_cpu, (chokepoints, _) = best_times(lambda: decomposition.score(split, structure))
-    doors, own = dungeon_shares(level, chokepoints, split.regions, navmesh)
+    doors, own = dungeon_shares(level, chokepoints, split.regions, navmesh, turn)
     return {
-        "rooms": rooms, "corridors": len(level.metadata["corridors"]), "polygons": navmesh.polygon_count,
+        "yaw": yaw, "seed": seed, "rooms": rooms, "corridors": len(level.metadata["corridors"]), "polygons": navmesh.polygon_count,
         "portals": len(navmesh.portals().pairs), "structure": structure.number_of_nodes(),
         "regions": len(split.regions), "chokepoints": len(chokepoints),
         "split_wall": 1000 * split_wall, "split_cpu": 1000 * split_cpu, "score_wall": 1000 * score_wall,
@@ -66,20 +72,23 @@ def main() -> None:
     parser.add_argument("--rooms", type=int, nargs="+", default=[120, 2400, 12000])
     parser.add_argument("--obstacles", type=float, default=0.3)
     parser.add_argument("--seeds", type=int, default=1, help="dungeons per size (seeds 0 .. n-1)")
+    parser.add_argument("--yaws", type=float, nargs="+", default=[0.0],
+                        help="turn each dungeon by these angles about the vertical, degrees")
     args = parser.parse_args()
     registry = Registry.from_entry_points()
     print(f"# {platform.machine()}, {os.cpu_count()} cores, Python {platform.python_version()}, "
           f"obstacles {args.obstacles}, load average {os.getloadavg()[0]:.1f}")
-    print("| rooms | corridors | polygons | portals | regions | chokepoints | split CPU (wall) ms "
+    print("| yaw | seed | rooms | corridors | polygons | portals | regions | chokepoints | split CPU (wall) ms "
           "| score CPU (wall) ms | corridors with a chokepoint | rooms with their own region |")
-    print("| ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |")
+    print("| ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |")
     for rooms in args.rooms:
         for seed in range(args.seeds):
-            m = measure(rooms, seed, args.obstacles, registry)
-            print(f"| {m['rooms']:,} | {m['corridors']:,} | {m['polygons']:,} | {m['portals']:,} | {m['regions']:,} "
-                  f"| {m['chokepoints']:,} | {m['split_cpu']:.0f} ({m['split_wall']:.0f}) "
-                  f"| {m['score_cpu']:.0f} ({m['score_wall']:.0f}) | {m['doors']:.1%} "
-                  f"| {m['own']:.1%} |", flush=True)
+            for yaw in args.yaws:
+                m = measure(rooms, seed, args.obstacles, yaw, registry)
+                print(f"| {m['yaw']:g} | {m['seed']} | {m['rooms']:,} | {m['corridors']:,} | {m['polygons']:,} "
+                      f"| {m['portals']:,} | {m['regions']:,} | {m['chokepoints']:,} "
+                      f"| {m['split_cpu']:.0f} ({m['split_wall']:.0f}) | {m['score_cpu']:.0f} ({m['score_wall']:.0f}) "
+                      f"| {m['doors']:.1%} | {m['own']:.1%} |", flush=True)
 
 
 if __name__ == "__main__":

@@ -23,6 +23,7 @@ from g2s_plugins import decomposition
 from g2s_plugins.centrality import edge_betweenness
 from g2s_plugins.outputs import colours, heatmap, structure_json
 from g2s_plugins.samples.levels import dungeon, load_sample
+from g2s_plugins.samples.pieces import turned, yaw_about_centre
 from g2s_plugins.samples.rooms import dungeon_shares
 from tests.test_gltf import _children, read_glb
 
@@ -239,6 +240,19 @@ def test_dungeon_doors_are_chokepoints_and_rooms_are_regions(seed, obstacles):
     result = run(level)
     doors, rooms = dungeon_shares(level, chokepoints(result), regions(result), result.context.navmesh)
     assert doors >= 0.9 and rooms >= 0.9
+
+
+def test_a_dungeon_turned_30_degrees_keeps_its_rooms_and_corridor_chokepoints():
+    # open rooms: at 0 and at 30 degrees every room is a region and every corridor holds a chokepoint
+    # (docs/plugins.md "Turned levels (yaw)"); scored against the unturned layout the turned result misses
+    level = dungeon(seed=0, rooms=12, obstacles=0.0)
+    for degrees in (0.0, 30.0):
+        result = run(turned(level, degrees))
+        found, rooms = chokepoints(result), regions(result)
+        assert (len(rooms), len(found)) == (12, len(level.metadata["corridors"]))
+        navmesh, turn = result.context.navmesh, yaw_about_centre(level.mesh, degrees)
+        assert dungeon_shares(level, found, rooms, navmesh, turn) == (1.0, 1.0)
+    assert max(dungeon_shares(level, found, rooms, navmesh)) < 0.5
 
 
 # --- the real test level, end to end -------------------------------------------------------

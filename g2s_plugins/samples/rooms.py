@@ -28,6 +28,7 @@ from collections.abc import Callable
 from typing import Any
 
 import numpy as np
+import trimesh
 from pydantic import PositiveFloat, validate_call
 
 from g2s_plugins.samples.levels import (
@@ -200,7 +201,7 @@ def floors_joined_by_ramp(
 
 
 def dungeon_shares(level: SampleLevel, chokepoints: list[dict[str, Any]], regions: list[dict[str, Any]],
-                   navmesh: Any) -> tuple[float, float]:
+                   navmesh: Any, turn: np.ndarray | None = None) -> tuple[float, float]:
     """How well chokepoints and regions found on a ``dungeon`` match its generated corridors and rooms.
 
     Returns (share of corridors with a chokepoint in them, share of rooms whose
@@ -208,17 +209,22 @@ def dungeon_shares(level: SampleLevel, chokepoints: list[dict[str, Any]], region
     runs between the two rooms' facing walls, 1 m into each room (a mouth), across
     the band both rooms cover. Chokepoints and regions are the records of the
     ``chokepoints`` and ``regions`` analyzers; ``navmesh`` the run's navmesh.
+    ``turn``: the (4, 4) transform the analysed mesh had from ``level``'s (e.g.
+    :func:`g2s_plugins.samples.pieces.yaw_about_centre`), so the layout is
+    turned with it; None when the level was analysed as generated.
     """
+    turn = np.eye(4) if turn is None else np.asarray(turn, dtype=np.float64)
     labels = np.full(navmesh.polygon_count, -1)
     for region in regions:
         labels[region["polygons"]] = region["id"]
-    room_region = np.array([labels[navmesh.nearest_poly(c, extents=(3.0, 1.0, 3.0))[0]]
-                            for c in level.metadata["room_centres"]])
+    centres = trimesh.transform_points(np.asarray(level.metadata["room_centres"], dtype=np.float64), turn)
+    room_region = np.array([labels[navmesh.nearest_poly(c, extents=(3.0, 1.0, 3.0))[0]] for c in centres])
     values, counts = np.unique(room_region, return_counts=True)
     own = np.isin(room_region, values[(counts == 1) & (values >= 0)])
     bounds = np.asarray(level.metadata["room_bounds"])  # x0, x1, z0, z1
     slots = np.asarray(level.metadata["slots"])
-    found = np.asarray([c["position"] for c in chokepoints], dtype=np.float64).reshape(-1, 3)[:, [0, 2]]
+    found = np.asarray([c["position"] for c in chokepoints], dtype=np.float64).reshape(-1, 3)
+    found = trimesh.transform_points(found, np.linalg.inv(turn))[:, [0, 2]]  # back into the layout's frame
     located = 0
     for a, b in level.metadata["corridors"]:
         axis = 0 if slots[a, 0] != slots[b, 0] else 1  # the corridor runs along x (0) or z (1)
