@@ -12,8 +12,10 @@ polygons and their shared edges (portals):
    distance to the nearest piece (scipy ``cKDTree`` over the pieces'
    midpoints, heights scaled by :data:`HEIGHT_SCALE` so that another floor's
    walls stay far). A polygon's clearance is its centre's; a portal's is the
-   largest clearance of five points along it, so a door's portal measures
-   the middle of the door. Small holes in the walkable surface (closed
+   largest clearance of points along it at most one navmesh cell apart (five
+   at least, always its middle: :func:`portal_samples`), so a door's portal
+   measures the middle of the door, and a long portal that crosses a passage
+   only in part measures the passage. Small holes in the walkable surface (closed
    boundary loops of the hole orientation enclosing less than
    ``obstacle_area`` m²: pillars, crates) are left out of the clearances
    that split the level, so they neither make a room as narrow as its doors
@@ -87,8 +89,8 @@ PIECE = 1.0
 NEAREST_PIECES = 6
 """Wall pieces whose exact distance is computed for each point (the nearest by midpoint)."""
 
-PORTAL_SAMPLES = np.array([0.1, 0.3, 0.5, 0.7, 0.9])
-"""Where along a portal the clearance is measured (fractions from its first end point)."""
+PORTAL_SAMPLES = 5
+"""The fewest points along a portal where its clearance is measured (:func:`portal_samples`)."""
 
 
 class DecompositionParams(PluginParams):
@@ -230,8 +232,30 @@ class Clearances:
     widest: np.ndarray
 
 
+def portal_samples(ends: np.ndarray, spacing: float) -> tuple[np.ndarray, np.ndarray]:
+    """Points along each portal ``ends`` (E,2,3) where its clearance is measured: (K,3) points, m, and (K,) portal index.
+
+    A portal of length L gets n points at the middles of its n equal parts
+    (0.1, 0.3 ... 0.9 for n = 5), n the odd number next to or at
+    max(:data:`PORTAL_SAMPLES`, ceil(L / spacing)). On flat ground a clearance
+    changes by at most the distance moved, so the largest sample is within ``spacing`` / 2
+    of the portal's largest clearance, and a door's portal (wall to wall,
+    widest in its middle) is measured exactly. Why not five points always:
+    where walls lie at an angle to Recast's voxel grid, a thin polygon along a
+    wall can border a corridor's mouth with one long portal, of which the
+    mouth is a short stretch that five points may all miss (measured on
+    turned dungeons: docs/plugins.md, turned levels).
+    """
+    length = np.linalg.norm(ends[:, 1] - ends[:, 0], axis=1)
+    count = np.maximum(np.ceil(length / spacing), PORTAL_SAMPLES).astype(np.int64) | 1  # odd: the middle is one
+    portal = np.repeat(np.arange(len(ends)), count)
+    k = np.arange(len(portal)) - np.repeat(np.cumsum(count) - count, count)
+    t = ((k + 0.5) / count[portal])[:, None]
+    return ends[portal, 0] * (1.0 - t) + ends[portal, 1] * t, portal
+
+
 def clearances(navmesh: Any, obstacle_area: float) -> Clearances:
-    """The clearances of ``navmesh`` (a portal's is the largest of :data:`PORTAL_SAMPLES` points along it).
+    """The clearances of ``navmesh`` (a portal's is the largest of its :func:`portal_samples`, one navmesh cell apart).
 
     Small holes (:func:`obstacle_edges`: pillars, crates) are left out of the
     clearances that split the level, so that they neither make a room as
@@ -241,17 +265,16 @@ def clearances(navmesh: Any, obstacle_area: float) -> Clearances:
     start, end = boundary_edges(navmesh)
     obstacle = obstacle_edges(start, end, obstacle_area)
     ends = navmesh.portals().endpoints
-    points = ends[:, None, 0] * (1.0 - PORTAL_SAMPLES[None, :, None]) + ends[:, None, 1] * PORTAL_SAMPLES[None, :, None]
-    points = points.reshape(-1, 3)
-    shape = (len(ends), len(PORTAL_SAMPLES))
-    walls = _distance_to(points, start[~obstacle], end[~obstacle]).reshape(shape)
-    every = np.minimum(walls, _distance_to(points, start[obstacle], end[obstacle]).reshape(shape))
-    widest = every.argmax(axis=1) if len(ends) else np.zeros(0, dtype=np.int64)
+    points, portal = portal_samples(ends, float(navmesh.settings["cell_size"]))
+    walls = _distance_to(points, start[~obstacle], end[~obstacle])
+    every = np.minimum(walls, _distance_to(points, start[obstacle], end[obstacle]))
+    first = np.searchsorted(portal, np.arange(len(ends)))
+    widest = np.lexsort((-every, portal))[first]  # each portal's first sample of largest clearance
     return Clearances(
         polygons=_distance_to(np.asarray(navmesh.centres), start[~obstacle], end[~obstacle]),
-        portals_open=walls.max(axis=1, initial=0.0),
-        portals=every.max(axis=1, initial=0.0),
-        widest=points.reshape(*shape, 3)[np.arange(len(ends)), widest],
+        portals_open=np.maximum.reduceat(walls, first) if len(ends) else np.zeros(0),
+        portals=every[widest],
+        widest=points[widest],
     )
 
 

@@ -231,6 +231,14 @@ def test_region_colours_of_hand_made_region_graphs():
     assert colours.region_colours([{"id": 7, "neighbours": []}]) == {7: colours.REGION_COLOURS[0]}
 
 
+def test_portal_samples_are_a_cell_apart_and_include_the_middle():
+    ends = np.array([[[0.0, 0.0, 0.0], [1.0, 0.0, 0.0]], [[0.0, 0.0, 0.0], [0.0, 0.0, 2.6]]])
+    points, portal = decomposition.portal_samples(ends, 0.25)
+    assert portal.tolist() == [0] * 5 + [1] * 11  # a short portal keeps five points; 2.6 m / 0.25 m -> 11 (odd)
+    assert np.allclose(points[:5, 0], [0.1, 0.3, 0.5, 0.7, 0.9])
+    assert np.allclose(points[5:, 2], (np.arange(11) + 0.5) * 2.6 / 11) and np.isclose(points[10, 2], 1.3)
+
+
 # --- dungeons: generated rooms and corridors --------------------------------------------
 
 
