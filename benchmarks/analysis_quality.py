@@ -48,6 +48,7 @@ import time
 from collections.abc import Iterator
 from pathlib import Path
 
+import numpy as np
 import trimesh
 
 from g2s_core import pipeline
@@ -78,34 +79,45 @@ SAMPLE_LEVELS = ("cross_hub", "t_hub", "two_floors", "closed_room", "room_with_w
 
 
 def levels(names: list[str], seeds: list[int]) -> Iterator[tuple[str, trimesh.Trimesh]]:
+    for name, mesh, _ in levels_with_metadata(names, seeds):
+        yield name, mesh
+
+
+def levels_with_metadata(names: list[str], seeds: list[int]) -> Iterator[tuple[str, trimesh.Trimesh, dict]]:
+    """Each level of ``names`` (see ``--levels``) with its generator's metadata (``{}`` for mesh files)."""
     for name in names:
         if name == "nav_test":
-            yield name, load_mesh(NAV_TEST)[0]
+            yield name, load_mesh(NAV_TEST)[0], {}
         elif name == "samples":
             for sample in SAMPLE_LEVELS:
-                yield sample, samples.load_sample(sample).mesh
+                level = samples.load_sample(sample)
+                yield sample, level.mesh, level.metadata
         elif name in DUNGEONS:
             for seed in seeds:
-                yield f"{name}_s{seed}", samples.dungeon(seed=seed, rooms=DUNGEONS[name]).mesh
+                level = samples.dungeon(seed=seed, rooms=DUNGEONS[name])
+                yield f"{name}_s{seed}", level.mesh, level.metadata
         elif Path(name).is_file():
-            yield Path(name).stem, load_mesh(Path(name))[0]
+            yield Path(name).stem, load_mesh(Path(name))[0], {}
         elif name in FAMILIES:
             sample, arguments = FAMILIES[name]
             for seed in seeds:
-                yield f"{name}_s{seed}", samples.load_sample(sample, seed=seed, **arguments).mesh
+                level = samples.load_sample(sample, seed=seed, **arguments)
+                yield f"{name}_s{seed}", level.mesh, level.metadata
         else:
-            yield name, samples.load_sample(name).mesh
+            level = samples.load_sample(name)
+            yield name, level.mesh, level.metadata
+
+
+def yaw_rotation(mesh: trimesh.Trimesh, yaw: float) -> np.ndarray:
+    """(4,4) the turn by ``yaw`` degrees about the vertical axis through the centre of ``mesh``'s bounds."""
+    return trimesh.transformations.rotation_matrix(math.radians(yaw), [0.0, 1.0, 0.0], mesh.bounds.mean(axis=0))
 
 
 def turned(named_meshes: Iterator[tuple[str, trimesh.Trimesh]], yaws: list[float]) -> Iterator[tuple[str, trimesh.Trimesh]]:
-    """Each level turned by each of ``yaws`` (degrees) about the vertical axis through the centre of its bounds."""
+    """Each level turned by each of ``yaws`` (degrees, :func:`yaw_rotation`)."""
     for name, mesh in named_meshes:
         for yaw in yaws:
-            if yaw == 0:
-                yield name, mesh
-                continue
-            rotation = trimesh.transformations.rotation_matrix(math.radians(yaw), [0.0, 1.0, 0.0], mesh.bounds.mean(axis=0))
-            yield f"{name}_yaw{yaw:g}", mesh.copy().apply_transform(rotation)
+            yield (name, mesh) if yaw == 0 else (f"{name}_yaw{yaw:g}", mesh.copy().apply_transform(yaw_rotation(mesh, yaw)))
 
 
 def main() -> None:
