@@ -1,6 +1,7 @@
 """Openings and structures of map pieces against their known or designer-placed connectors.
 
-Run: ``.venv/bin/python benchmarks/piece_quality.py [--config configs/map_piece.yaml] [--pieces DIR]``
+Run: ``.venv/bin/python benchmarks/piece_quality.py [--config configs/map_piece.yaml] [--pieces DIR]
+[--variations] [--yaws 0 5 10 15 20 30 45 60 90]``
 
 Runs the map-piece preset on every generated piece of
 :mod:`g2s_plugins.samples.pieces` (reference: the known openings) and on the
@@ -11,7 +12,10 @@ detected openings, precision (share of openings whose midpoint lies within
 1.5 m of a reference connector), recall (share of reference connectors with
 an opening that close), the number of trees of the structure, and the
 largest height between a final edge and the navmesh surface under it
-(edges made by simplification / all edges).
+(edges made by simplification / all edges). With ``--yaws`` every piece and
+its reference are turned about the vertical axis through the centre of the
+piece's bounding box, one table per angle: the answer must not depend on how
+the piece is turned.
 docs/entry_exit.md records its output before and after changes.
 """
 
@@ -23,6 +27,7 @@ import sys
 from pathlib import Path
 
 import numpy as np
+import trimesh
 
 from g2s_core import pipeline
 from g2s_core.config import load_config
@@ -98,15 +103,16 @@ def prior_measurements(mesh, reference: np.ndarray, agent, navmesh_params: dict)
     navmesh = build_navmesh(mesh.vertices, mesh.faces, agent, RecastParams(**navmesh_params))
     loose = entry_exit.Params(min_width_radii=0.0, extent_heights=None, main_floor_only=False)
     detection = entry_exit.detect_openings(mesh, navmesh, agent, loose)
-    main = entry_exit.main_floor(navmesh)
+    main = entry_exit.main_floor(navmesh, agent)
     vertices = np.asarray(mesh.vertices, dtype=np.float64)
+    frame = entry_exit.piece_frame(mesh)
     rows = []
     for opening, polygons in zip(detection.openings, detection.polygons):
         position = np.asarray(opening.position)
         known = bool(len(reference)) and bool(
             np.min(np.linalg.norm(reference - position, axis=1)) <= pieces.MATCH_DISTANCE
         )
-        gap = entry_exit.extent_gap(vertices, position, np.asarray(opening.heading))
+        gap = entry_exit.extent_gap(vertices, position, np.asarray(opening.heading), frame)
         rows.append((known, opening.width, gap, bool(main[list(polygons)].any())))
     return rows
 
@@ -127,31 +133,8 @@ VARIATIONS = [
 """Generated pieces with other parameters than the defaults: the rules must hold beyond the cases they were measured on."""
 
 
-def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--config", default=str(ROOT / "configs" / "map_piece.yaml"))
-    parser.add_argument("--pieces", default=str(SHARED_PIECES), help="folder of the shared pieces and connectors.json")
-    parser.add_argument("--priors", action="store_true", help="also list the generated pieces' candidates, priors off")
-    parser.add_argument("--variations", action="store_true", help="also run the generated pieces with other parameters")
-    args = parser.parse_args(argv)
-    registry = Registry.from_entry_points()
-    plan = pipeline.plan(load_config(Path(args.config)), registry)
-
-    def run(mesh, name):
-        return pipeline.run(plan, registry, mesh, name, mesh_sha256(mesh))
-
-    rows = []
-    generated = [(name, {}) for name in pieces.PIECES] + (VARIATIONS if args.variations else [])
-    for name, kwargs in generated:
-        level = pieces.PIECES[name](**kwargs)
-        reference = np.array([o.position for o in level.openings], dtype=np.float64)
-        label = name + "".join(f" {k}={v}" for k, v in kwargs.items())
-        rows.append((measure(run, label, level.mesh, reference), "known"))
-    folder = Path(args.pieces)
-    for name, (reference, kind) in shared_references(folder).items():
-        mesh, _ = load_mesh(folder / f"{name}.obj")
-        rows.append((measure(run, name, mesh, reference), kind))
-
+def print_table(rows: list[tuple[dict, str]]) -> None:
+    """The per-piece table: counts, precision, recall, trees, surface gaps and scores."""
     print(f"{'piece':58s} {'ref':8s} {'found':>5s} {'refs':>4s} {'precision':>10s} {'recall':>8s} "
           f"{'trees':>5s} {'gap new/all m':>13s}  scores")
     for row, kind in rows:
@@ -161,6 +144,49 @@ def main(argv: list[str] | None = None) -> int:
         print(f"{row['piece']:58s} {kind:8s} {row['openings']:5d} {row['reference']:4d} "
               f"{row['correct']:3d} {precision:6.0%} {row['recalled']:2d} {recall:5.0%} "
               f"{row['trees']:5d} {row['gap'][0]:6.2f}/{row['gap'][1]:5.2f}  {scores}")
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--config", default=str(ROOT / "configs" / "map_piece.yaml"))
+    parser.add_argument("--pieces", default=str(SHARED_PIECES), help="folder of the shared pieces and connectors.json")
+    parser.add_argument("--priors", action="store_true", help="also list the generated pieces' candidates, priors off")
+    parser.add_argument("--variations", action="store_true", help="also run the generated pieces with other parameters")
+    parser.add_argument(
+        "--yaws", type=float, nargs="+", default=[0.0], metavar="DEG",
+        help="turn every piece and its reference by these angles about the vertical axis through the centre of its "
+        "bounding box, degrees; one table per angle (default: 0, as laid out)",
+    )
+    args = parser.parse_args(argv)
+    registry = Registry.from_entry_points()
+    plan = pipeline.plan(load_config(Path(args.config)), registry)
+
+    def run(mesh, name):
+        return pipeline.run(plan, registry, mesh, name, mesh_sha256(mesh))
+
+    generated = [(name, {}) for name in pieces.PIECES] + (VARIATIONS if args.variations else [])
+    folder = Path(args.pieces)
+    shared = [(name, load_mesh(folder / f"{name}.obj")[0], reference, kind)
+              for name, (reference, kind) in shared_references(folder).items()]
+    for index, yaw in enumerate(args.yaws):
+        rows = []
+        for name, kwargs in generated:
+            level = pieces.PIECES[name](**kwargs)
+            if yaw:
+                level = pieces.turned(level, yaw)
+            reference = np.array([o.position for o in level.openings], dtype=np.float64)
+            label = name + "".join(f" {k}={v}" for k, v in kwargs.items())
+            rows.append((measure(run, label, level.mesh, reference), "known"))
+        for name, mesh, reference, kind in shared:
+            if yaw:
+                matrix = pieces.yaw_about_centre(mesh, yaw)
+                mesh = mesh.copy()
+                mesh.apply_transform(matrix)
+                reference = trimesh.transform_points(reference, matrix) if len(reference) else reference
+            rows.append((measure(run, name, mesh, reference), kind))
+        if len(args.yaws) > 1 or yaw:
+            print(("\n" if index else "") + f"yaw {yaw:g} degrees")
+        print_table(rows)
     if args.priors:
         config = load_config(Path(args.config))
         print("\ncandidates with the priors off (generated pieces): piece, known, width m, extent gap m, main floor")

@@ -27,8 +27,13 @@ are designed for :data:`PIECE_AGENT`, the agent of ``configs/map_piece.yaml``.
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import numpy as np
+import trimesh
 from pydantic import PositiveFloat, PositiveInt, validate_call
+
+from g2s_core.model import Vec3, vec3
 
 from g2s_plugins.samples.levels import SLAB_THICKNESS, SampleLevel, _LevelBuilder, _opening, _rect
 
@@ -294,6 +299,37 @@ PIECES = {
     "chamfered_platform": chamfered_platform,
 }
 """Piece name -> factory (keyword arguments only); registered in ``levels.SAMPLES``."""
+
+
+def yaw_about_centre(mesh: trimesh.Trimesh, degrees: float) -> np.ndarray:
+    """(4, 4) transform turning ``mesh`` by ``degrees`` about the vertical (+Y) axis through its bounding box's centre.
+
+    Positive angles turn counter-clockwise seen from above (+X towards -Z): how a
+    kit exported at another heading, or a piece placed turned in a level and
+    exported in world space, reaches the detector.
+    """
+    centre = np.asarray(mesh.bounds, dtype=np.float64).mean(axis=0)
+    return trimesh.transformations.rotation_matrix(np.radians(degrees), [0.0, 1.0, 0.0], point=centre)
+
+
+def turned(level: SampleLevel, degrees: float) -> SampleLevel:
+    """``level`` turned by ``degrees`` about its vertical centre line (:func:`yaw_about_centre`), openings with it."""
+    matrix = yaw_about_centre(level.mesh, degrees)
+    mesh = level.mesh.copy()
+    mesh.apply_transform(matrix)
+
+    def point(p: Vec3) -> Vec3:
+        return vec3(trimesh.transform_points(np.asarray([p], dtype=np.float64), matrix)[0])
+
+    def vector(v: Vec3) -> Vec3:
+        return vec3(matrix[:3, :3] @ np.asarray(v, dtype=np.float64))
+
+    openings = tuple(
+        replace(o, position=point(o.position), heading=vector(o.heading), p0=point(o.p0), p1=point(o.p1))
+        for o in level.openings
+    )
+    metadata = {**level.metadata, "yaw_deg": float(degrees)}
+    return SampleLevel(name=level.name, mesh=mesh, openings=openings, metadata=metadata)
 
 
 MATCH_DISTANCE = 1.5

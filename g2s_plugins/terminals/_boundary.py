@@ -219,8 +219,11 @@ def sample_loops(loops: list[BoundaryLoop], step: float) -> LoopSamples:
     return LoopSamples(position, tangent, poly[edge], sample_loop, spacing, closed)
 
 
-def polygon_components(neighbours: np.ndarray) -> np.ndarray:
-    """(P,) connected-component label of every navmesh polygon (polygons joined across shared edges)."""
+def polygon_components(neighbours: np.ndarray, joined: np.ndarray | None = None) -> np.ndarray:
+    """(P,) connected-component label of every navmesh polygon (polygons joined across shared edges).
+
+    ``joined``: (k, 2) further pairs of polygon indices to treat as neighbours.
+    """
     from scipy.sparse import coo_matrix
     from scipy.sparse.csgraph import connected_components
 
@@ -228,5 +231,8 @@ def polygon_components(neighbours: np.ndarray) -> np.ndarray:
     p = len(neighbours)
     i, j = np.nonzero(neighbours >= 0)
     k = neighbours[i, j].astype(np.int64)
+    if joined is not None and len(joined):
+        pairs = np.asarray(joined, dtype=np.int64).reshape(-1, 2)
+        i, k = np.r_[i, pairs[:, 0]], np.r_[k, pairs[:, 1]]
     graph = coo_matrix((np.ones(len(i)), (i, k)), shape=(p, p))
     return connected_components(graph, directed=False)[1].astype(np.int64)

@@ -35,19 +35,25 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
    boundary's direction within ``match_angle_deg`` (a curved edge). The
    opening lies on that line; its ends are extended along the edge while the
    surface goes on inside the edge, ends just outside it, and nothing stands
-   in the way or straight out: this undoes the retreat from walls.
+   in the way or straight out: this undoes the retreat from walls. An
+   opening overlapping a wider one along the same line, facing the same way,
+   is the same opening found twice and is dropped.
 6. Priors, each measured on the generated pieces of
    :mod:`g2s_plugins.samples.pieces` (docs/entry_exit.md):
 
    * width: openings narrower than ``min_width_radii * r`` (default the
      agent's diameter) are dropped (chamfers, slivers);
    * reachability (``main_floor_only``): the opening must run along the
-     navmesh component of largest area, the main floor and what the agent
-     reaches from it (an unreachable wall top, a roof, holds no exit);
+     navmesh floor of largest area, the main floor and what the agent
+     reaches from it (an unreachable wall top, a roof, holds no exit); a
+     floor is a navmesh component with those whose boundary comes within
+     ``r`` at the same height (Recast's grid cuts narrow passages at some yaws);
    * outer extent (``extent_heights``): modular pieces meet their neighbours
      at their outer extent, facing out. The opening's gap to the piece's
      extent along its heading (the largest ``vertex . heading`` of the mesh
-     minus the midpoint's) must not exceed ``extent_heights`` agent heights.
+     minus the midpoint's; a heading near one of the piece's own horizontal
+     axes, taken from its walls, is measured along that axis) must not exceed
+     ``extent_heights`` agent heights.
 
    The score is the product of three factors in [0, 1]: the share of edge
    points on the fitted line, ``1 - gap / (extent_heights * height)``, and
@@ -137,10 +143,11 @@ class Params(PluginParams):
         None, ge=0, le=90, description="drop openings steeper than this from the horizontal, degrees; None: keep all"
     )
     edge_search_radii: float = Field(
-        2.5,
+        3.0,
         gt=0,
         description="how far beyond the navmesh boundary the surface's edge is looked for, agent radii "
-        "(Recast's erosion plus contour error stays below ~2.2)",
+        "(Recast's erosion, plus the wall's thickness where it closes a doorway barely wider than the agent: "
+        "up to 1.2 m for walls 0.8 m thick)",
     )
     edge_tolerance_radii: float = Field(
         0.25,
@@ -452,29 +459,121 @@ class Detection:
     normals: tuple[tuple[float, float, float], ...]
 
 
-def main_floor(navmesh: NavMesh) -> np.ndarray:
-    """(P,) bool: the polygons of the navmesh component with the largest area."""
-    label = polygon_components(navmesh.neighbours)
-    if len(label) == 0:
+def main_floor(navmesh: NavMesh, agent: AgentConfig) -> np.ndarray:
+    """(P,) bool: the polygons of the navmesh's floor of largest area.
+
+    A floor is a connected component of the navmesh, together with every other one whose boundary
+    comes within one agent radius horizontally and the agent's climb vertically. Recast's voxel
+    grid can cut a floor in two where a passage barely wider than the agent pinches (the shared
+    Hallway turned by 5 and 60 degrees: halves 0.15 and 0.02 m apart), while a wall between two
+    floors, however thin, leaves them at least 1.12 m apart (generated, at every yaw; see
+    docs/entry_exit.md).
+    """
+    neighbours = np.asarray(navmesh.neighbours)
+    if len(neighbours) == 0:
         return np.zeros(0, dtype=bool)
+    radius = float(agent.radius)
+    samples = sample_loops(boundary_loops(navmesh.vertices, navmesh.polygons, neighbours), radius / 4.0)
+    near = cKDTree(samples.position[:, [0, 2]]).query_pairs(radius, output_type="ndarray").reshape(-1, 2)
+    level = np.abs(samples.position[near[:, 0], 1] - samples.position[near[:, 1], 1]) <= float(agent.max_climb)
+    pairs = samples.polygon[near[level]]
+    label = polygon_components(neighbours, pairs)
     area = np.bincount(label, weights=np.asarray(navmesh.areas, dtype=np.float64))
     return label == int(np.argmax(area))
 
 
-_AXES = np.array([[1.0, 0.0, 0.0], [-1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, 0.0, -1.0]])
 _AXIS_SNAP_COS = math.cos(math.radians(20.0))
+_WALL_SIN = math.sin(math.radians(10.0))
+_FRAME_BIN_DEG = 1.0
+_FRAME_SPREAD_DEG = 3.0
 
 
-def extent_gap(vertices: np.ndarray, point: np.ndarray, heading: np.ndarray) -> float:
+def _quarter_turns(h: np.ndarray) -> np.ndarray:
+    """(4, n, 2): the horizontal (x, z) vectors ``h`` (n, 2) turned by 0, 90, 180 and 270 degrees.
+
+    Turned by swapping and negating components, so an axis-aligned vector stays exactly on its axis.
+    """
+    x, z = h[:, 0], h[:, 1]
+    return np.stack([np.stack([x, z], 1), np.stack([-z, x], 1), np.stack([-x, -z], 1), np.stack([z, -x], 1)])
+
+
+def piece_frame(mesh: trimesh.Trimesh) -> np.ndarray:
+    """(4, 3) the piece's own horizontal axes, taken from its walls: ``[u, -u, w, -w]`` with ``w`` = ``u`` turned 90 degrees.
+
+    Modular pieces are laid out on two perpendicular horizontal directions, whatever yaw they were
+    exported at. The walls' and slab sides' faces (normals within 10 degrees of horizontal) vote
+    for their normal's direction modulo 90 degrees, weighted by area, in 1 degree bins; ``u`` is the
+    area-weighted median of the normals within 3 degrees of the fullest bin, each first turned by a
+    multiple of 90 degrees onto it: one face's own direction, so a piece most of whose walls lie
+    exactly on X and Z gives exactly the X and Z axes, whatever a few slanted faces say. A piece
+    with no wall face gives them too.
+    """
+    normals = np.asarray(mesh.face_normals, dtype=np.float64)
+    areas = np.asarray(mesh.area_faces, dtype=np.float64)
+    wall = (np.abs(normals[:, 1]) <= _WALL_SIN) & (areas > 0)
+    u = np.array([1.0, 0.0])
+    if wall.any():
+        h = normals[wall][:, [0, 2]]
+        h = h / np.linalg.norm(h, axis=1, keepdims=True)
+        weight = areas[wall]
+        angle = np.degrees(np.arctan2(h[:, 1], h[:, 0])) % 90.0
+        bins = int(round(90.0 / _FRAME_BIN_DEG))
+        votes = np.bincount(np.floor(angle / _FRAME_BIN_DEG).astype(np.int64) % bins, weights=weight, minlength=bins)
+        votes = votes + np.roll(votes, 1) + np.roll(votes, -1)  # a peak on a bin border is not split
+        peak = np.radians((int(np.argmax(votes)) + 0.5) * _FRAME_BIN_DEG)
+        turns = _quarter_turns(h)  # (4, n, 2)
+        toward = turns @ np.array([math.cos(peak), math.sin(peak)])
+        folded = turns[np.argmax(toward, axis=0), np.arange(len(h))]
+        near = np.flatnonzero(np.max(toward, axis=0) >= math.cos(math.radians(_FRAME_SPREAD_DEG + _FRAME_BIN_DEG)))
+        order = near[np.argsort(np.arctan2(folded[near, 1], folded[near, 0]), kind="stable")]
+        half = np.searchsorted(np.cumsum(weight[order]), 0.5 * weight[order].sum())
+        u = folded[order[min(half, len(order) - 1)]]
+    return np.array([[u[0], 0.0, u[1]], [-u[0], 0.0, -u[1]], [-u[1], 0.0, u[0]], [u[1], 0.0, -u[0]]])
+
+
+def extent_gap(vertices: np.ndarray, point: np.ndarray, heading: np.ndarray, frame: np.ndarray) -> float:
     """How far ``point`` lies inside the extent of ``vertices`` along the horizontal unit ``heading``, m.
 
-    Modular pieces are laid out on their frame's X and Z axes: a heading within 20 degrees of one
-    is measured along that axis, so the few degrees of noise in a short opening's fitted edge do
-    not add the piece's extent along the other axis.
+    Modular pieces are laid out on two perpendicular horizontal axes, ``frame`` (4, 3) (see
+    :func:`piece_frame`): a heading within 20 degrees of one is measured along that axis, so the
+    few degrees of noise in a short opening's fitted edge do not add the piece's extent along the
+    other axis.
     """
-    cos = _AXES @ heading
-    axis = _AXES[int(np.argmax(cos))] if cos.max() >= _AXIS_SNAP_COS else heading
+    cos = frame @ heading
+    axis = frame[int(np.argmax(cos))] if cos.max() >= _AXIS_SNAP_COS else heading
     return float(np.max(vertices @ axis) - point @ axis)
+
+
+def _repeated(openings: list[Opening], radius: float, max_turn_deg: float) -> np.ndarray:
+    """(n,) bool: openings that overlap a wider one along the same edge, facing the same way.
+
+    Recast's voxel staircase along an edge turned off the grid's axes can cut one opening's
+    samples into several segments; each is extended along the edge (step 5) over much of the same
+    opening (the generated ``curb_platform`` turned by 5 to 60 degrees: 2 or 3 per curb gap). A
+    narrower opening whose midpoint lies within ``radius`` of a wider one's line, whose extent
+    along it overlaps the wider one's and whose heading is within ``max_turn_deg`` of it is the
+    same opening found again.
+    """
+    n = len(openings)
+    again = np.zeros(n, dtype=bool)
+    first = np.array([o.p0 for o in openings], dtype=np.float64).reshape(n, 3)
+    last = np.array([o.p1 for o in openings], dtype=np.float64).reshape(n, 3)
+    heading = np.array([o.heading for o in openings], dtype=np.float64).reshape(n, 3)
+    width = np.linalg.norm(last - first, axis=1)
+    cos_turn = math.cos(math.radians(max_turn_deg))
+    order = np.argsort(-width, kind="stable")
+    for rank, i in enumerate(order):
+        if again[i] or width[i] <= 0:
+            continue
+        along = (last[i] - first[i]) / width[i]
+        for j in order[rank + 1 :]:
+            if again[j] or np.dot(heading[i], heading[j]) < cos_turn:
+                continue
+            mid = 0.5 * (first[j] + last[j]) - first[i]
+            off = np.linalg.norm(mid - np.dot(mid, along) * along)
+            lo, hi = sorted((np.dot(first[j] - first[i], along), np.dot(last[j] - first[i], along)))
+            again[j] = off <= radius and lo < width[i] and hi > 0.0
+    return again
 
 
 def detect_openings(
@@ -498,7 +597,7 @@ def detect_openings(
     ways = _ways_out(samples, np.asarray(navmesh.normals), caster, s, params)
     segments = _segments(samples, ways, float(params.max_turn_deg))
     if params.main_floor_only:
-        main = main_floor(navmesh)
+        main = main_floor(navmesh, agent)
         segments = [g for g in segments if main[samples.polygon[g]].any()]
     kept = _match_edges(segments, ways, s, params)
     if not kept:
@@ -506,6 +605,7 @@ def detect_openings(
     p_first, p_last = _extend(kept, caster, s)
 
     vertices = np.asarray(mesh.vertices, dtype=np.float64)
+    frame = piece_frame(mesh)
     min_width = float(params.min_width_radii) * s.radius
     max_gap = None if params.extent_heights is None else float(params.extent_heights) * s.height
     max_slope = None if params.max_slope_deg is None else math.radians(float(params.max_slope_deg))
@@ -521,7 +621,7 @@ def detect_openings(
         heading[1] = 0.0
         heading = _unit(heading) if np.linalg.norm(heading) > 1e-6 else e.outward
         mid = (a + b) / 2.0
-        gap = max(0.0, extent_gap(vertices, mid, heading))
+        gap = max(0.0, extent_gap(vertices, mid, heading, frame))
         if max_gap is not None and gap > max_gap:
             continue
         extent_factor = 1.0 if max_gap is None else 1.0 - gap / max_gap
@@ -537,6 +637,8 @@ def detect_openings(
         opening = Opening(vec3(mid), vec3(heading), width, vec3(p0), vec3(p1), score, reason)
         polys = tuple(sorted(set(samples.polygon[e.samples].tolist())))
         found.append((opening, polys, vec3(e.normal)))
+    repeated = _repeated([f[0] for f in found], s.radius, float(params.max_turn_deg))
+    found = [f for f, again in zip(found, repeated) if not again]
     found = [f for f in found if f[0].score >= float(params.min_score) - 1e-12]
     if params.best is not None and len(found) > params.best:
         order = sorted(range(len(found)), key=lambda i: (-found[i][0].score, i))[: params.best]
