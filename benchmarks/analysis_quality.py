@@ -11,7 +11,8 @@ uses, on :mod:`g2s_plugins.evaluation`) and prints its measures: share of the wa
 of the structure (along the initial graph), share of the reference traffic
 (area-weighted origin-destination flow on the initial graph) passing more
 than 5 m from it, Spearman rho of the heat map (first analyzer, each polygon
-given the value of its nearest structure node), of area-weighted
+given the value of its nearest structure node), the same with every polygon
+weighted by its area ("rho_a", :func:`g2s_plugins.evaluation.weighted_spearman`), of area-weighted
 betweenness on the structure and of the best values the structure's nodes
 could carry (the ceiling: the mean traffic of the polygons each stands
 for) against that traffic, the same heat map and ceiling against the
@@ -47,6 +48,7 @@ import time
 from collections.abc import Iterator
 from pathlib import Path
 
+import numpy as np
 import trimesh
 
 from g2s_core import pipeline
@@ -77,34 +79,45 @@ SAMPLE_LEVELS = ("cross_hub", "t_hub", "two_floors", "closed_room", "room_with_w
 
 
 def levels(names: list[str], seeds: list[int]) -> Iterator[tuple[str, trimesh.Trimesh]]:
+    for name, mesh, _ in levels_with_metadata(names, seeds):
+        yield name, mesh
+
+
+def levels_with_metadata(names: list[str], seeds: list[int]) -> Iterator[tuple[str, trimesh.Trimesh, dict]]:
+    """Each level of ``names`` (see ``--levels``) with its generator's metadata (``{}`` for mesh files)."""
     for name in names:
         if name == "nav_test":
-            yield name, load_mesh(NAV_TEST)[0]
+            yield name, load_mesh(NAV_TEST)[0], {}
         elif name == "samples":
             for sample in SAMPLE_LEVELS:
-                yield sample, samples.load_sample(sample).mesh
+                level = samples.load_sample(sample)
+                yield sample, level.mesh, level.metadata
         elif name in DUNGEONS:
             for seed in seeds:
-                yield f"{name}_s{seed}", samples.dungeon(seed=seed, rooms=DUNGEONS[name]).mesh
+                level = samples.dungeon(seed=seed, rooms=DUNGEONS[name])
+                yield f"{name}_s{seed}", level.mesh, level.metadata
         elif Path(name).is_file():
-            yield Path(name).stem, load_mesh(Path(name))[0]
+            yield Path(name).stem, load_mesh(Path(name))[0], {}
         elif name in FAMILIES:
             sample, arguments = FAMILIES[name]
             for seed in seeds:
-                yield f"{name}_s{seed}", samples.load_sample(sample, seed=seed, **arguments).mesh
+                level = samples.load_sample(sample, seed=seed, **arguments)
+                yield f"{name}_s{seed}", level.mesh, level.metadata
         else:
-            yield name, samples.load_sample(name).mesh
+            level = samples.load_sample(name)
+            yield name, level.mesh, level.metadata
+
+
+def yaw_rotation(mesh: trimesh.Trimesh, yaw: float) -> np.ndarray:
+    """(4,4) the turn by ``yaw`` degrees about the vertical axis through the centre of ``mesh``'s bounds."""
+    return trimesh.transformations.rotation_matrix(math.radians(yaw), [0.0, 1.0, 0.0], mesh.bounds.mean(axis=0))
 
 
 def turned(named_meshes: Iterator[tuple[str, trimesh.Trimesh]], yaws: list[float]) -> Iterator[tuple[str, trimesh.Trimesh]]:
-    """Each level turned by each of ``yaws`` (degrees) about the vertical axis through the centre of its bounds."""
+    """Each level turned by each of ``yaws`` (degrees, :func:`yaw_rotation`)."""
     for name, mesh in named_meshes:
         for yaw in yaws:
-            if yaw == 0:
-                yield name, mesh
-                continue
-            rotation = trimesh.transformations.rotation_matrix(math.radians(yaw), [0.0, 1.0, 0.0], mesh.bounds.mean(axis=0))
-            yield f"{name}_yaw{yaw:g}", mesh.copy().apply_transform(rotation)
+            yield (name, mesh) if yaw == 0 else (f"{name}_yaw{yaw:g}", mesh.copy().apply_transform(yaw_rotation(mesh, yaw)))
 
 
 def main() -> None:
@@ -122,7 +135,7 @@ def main() -> None:
     plans = {Path(p).stem: pipeline.plan(parse_config(with_evaluators(load_raw_config(find_config(p)), ["traffic"]), p),
                                          registry, p) for p in args.presets}
     header = (f"{'level':<18} {'preset':<28} {'polys':>7} {'<=3m':>6} {'<=6m':>6} {'<=10m':>6} {'off>5m':>7} "
-              f"{'rho':>6} {'rho_abw':>7} {'ceiling':>7} {'rho nav':>7} {'ceil nav':>8} {'nav out':>7} {'struct':>7} {'overlap':>7} {'redone':>6} {'detail':>6} {'cpu s':>7} {'total s':>8} {'eval s':>7}  stages (s)")
+              f"{'rho':>6} {'rho_a':>6} {'rho_abw':>7} {'ceiling':>7} {'rho nav':>7} {'ceil nav':>8} {'nav out':>7} {'struct':>7} {'overlap':>7} {'redone':>6} {'detail':>6} {'cpu s':>7} {'total s':>8} {'eval s':>7}  stages (s)")
     print(header)
     for name, mesh in turned(levels(args.levels, args.seeds), args.yaws):
         for preset, plan in plans.items():
@@ -137,15 +150,15 @@ def main() -> None:
             evaluating = seconds.pop("evaluation")
             stages = " ".join(f"{k}={v:.2f}" for k, v in seconds.items())
             within = " ".join(f"{100 * q[f'area_within_{r:g}m']:5.1f}%" for r in evaluation.RADII)
-            rho, abw, ceiling, rho_nav, ceiling_nav, nav_out = (q.get(k, float("nan")) for k in (
-                "rho", "rho_area_betweenness", "rho_ceiling", "rho_navmesh", "rho_navmesh_ceiling",
+            rho, rho_area, abw, ceiling, rho_nav, ceiling_nav, nav_out = (q.get(k, float("nan")) for k in (
+                "rho", "rho_area", "rho_area_betweenness", "rho_ceiling", "rho_navmesh", "rho_navmesh_ceiling",
                 "navmesh_area_left_out"))
             polygons = traffic.surface_arrays(result.graph).n  # the nodes the measures count
             navmesh = result.context.navmesh
             overlaps, redone, detail = ("-", "-", "-") if navmesh is None else (
                 len(navmesh.region_overlaps), len(navmesh.repartitioned_tiles), len(navmesh.detail_redone_polygons))
             print(f"{name:<18} {preset:<28} {polygons:>7} {within} {100 * q['traffic_off']:6.1f}% "
-                  f"{rho:6.3f} {abw:7.3f} {ceiling:7.3f} {rho_nav:7.3f} {ceiling_nav:8.3f} {100 * nav_out:6.1f}% "
+                  f"{rho:6.3f} {rho_area:6.3f} {abw:7.3f} {ceiling:7.3f} {rho_nav:7.3f} {ceiling_nav:8.3f} {100 * nav_out:6.1f}% "
                   f"{100 * q['structure_share']:6.1f}% "
                   f"{overlaps:>7} {redone:>6} {detail:>6} {cpu:7.2f} {sum(seconds.values()):8.2f} {evaluating:7.2f}  {stages}", flush=True)
 

@@ -17,8 +17,17 @@ The measures (all along the initial walkable graph, distances in metres):
     final structure, between the heat map (each node takes the first
     analyzer's value of its nearest final-structure node) and the reference
     flow.
+``rho_area``
+    ``rho`` with each node weighted by its walkable area (``area``, m²; 1
+    per node when no node has an area, as the reference flow draws them): a
+    weighted Spearman correlation, the weighted Pearson correlation of the
+    weighted mid-ranks (:func:`weighted_spearman`). ``rho`` ranks every
+    polygon equally, so a 0.4 m² sliver along a wall moves it as much as a
+    200 m² hall (the paper's own limit: every polygon counts the same,
+    whatever its size); here each square metre counts the same. Nodes of no
+    area (portal nodes) count nothing. Same nodes as ``rho``.
 ``rho_area_betweenness``
-    the same for area-weighted betweenness on the final structure, whatever
+    the same as ``rho`` for area-weighted betweenness on the final structure, whatever
     the run's analyzers are (an honest check when the run's heat map is the
     ``flow`` analyzer, which agrees with the reference partly by
     construction).
@@ -129,13 +138,14 @@ class Quality:
     rho_navmesh: float = float("nan")
     rho_navmesh_ceiling: float = float("nan")
     navmesh_area_left_out: float = float("nan")
+    rho_area: float = float("nan")
 
     def measures(self) -> dict[str, float]:
         """The measures by name, as the ``traffic`` evaluator reports them (``area_within_6m``,
-        ``traffic_off``, ``rho``, ``rho_area_betweenness``, ``rho_ceiling``, ``structure_share``,
+        ``traffic_off``, ``rho``, ``rho_area``, ``rho_area_betweenness``, ``rho_ceiling``, ``structure_share``,
         ``rho_navmesh``, ``rho_navmesh_ceiling``, ``navmesh_area_left_out``); NaN ones left out."""
         named = {**{f"area_within_{r:g}m": v for r, v in self.area_within.items()}, "traffic_off": self.traffic_off,
-                 "rho": self.rho, "rho_area_betweenness": self.rho_area_betweenness, "rho_ceiling": self.rho_ceiling,
+                 "rho": self.rho, "rho_area": self.rho_area, "rho_area_betweenness": self.rho_area_betweenness, "rho_ceiling": self.rho_ceiling,
                  "structure_share": self.structure_share, "rho_navmesh": self.rho_navmesh,
                  "rho_navmesh_ceiling": self.rho_navmesh_ceiling, "navmesh_area_left_out": self.navmesh_area_left_out}
         return {name.replace(".", "_"): value for name, value in named.items() if math.isfinite(value)}
@@ -279,6 +289,34 @@ def _spearman(heat: np.ndarray, reference: np.ndarray) -> float:
     return float(spearmanr(heat[ok], reference[ok]).statistic)
 
 
+def weighted_spearman(x: np.ndarray, y: np.ndarray, weight: np.ndarray) -> float:
+    """Spearman's rho of (n,) ``x`` and ``y`` with (n,) ``weight`` >= 0 per observation (NaN when undefined).
+
+    Each value's rank is its weighted mid-rank: the weight of the smaller
+    values plus half that of its ties, so tied values share one rank and an
+    observation of weight w counts as w observations; rho is the weighted
+    Pearson correlation of the two rank vectors (``numpy.cov`` with
+    ``aweights``). With equal weights this is ``scipy.stats.spearmanr``
+    (ranks shifted and scaled alike, which a correlation ignores). The same
+    construction, weighted ranks then a weighted Pearson correlation, as
+    the weighted Spearman of the R package wCorr (Bailey, Emad, Zhang and
+    Xie, "wCorr Formulas"). O(n log n).
+    """
+    if not weight.sum() > 0:
+        return float("nan")
+    ranks = [_weighted_midranks(values, weight) for values in (x, y)]
+    covariance = np.cov(ranks[0], ranks[1], aweights=weight)
+    if not (covariance[0, 0] > 0 and covariance[1, 1] > 0):
+        return float("nan")
+    return float(covariance[0, 1] / math.sqrt(covariance[0, 0] * covariance[1, 1]))
+
+
+def _weighted_midranks(values: np.ndarray, weight: np.ndarray) -> np.ndarray:
+    distinct, inverse = np.unique(values, return_inverse=True)
+    tied = np.bincount(inverse, weights=weight, minlength=len(distinct))
+    return (np.cumsum(tied) - tied / 2)[inverse]
+
+
 def evaluate(
     result: RunResult,
     reference: np.ndarray | None = None,
@@ -308,7 +346,12 @@ def evaluate(
     off = float(reference[distance > off_distance].sum() / total_flow) if total_flow > 0 else 0.0
     nearest = nearest_structure_rows(result)
     first = next(iter(result.analysis.values()), None)
-    rho = _spearman(heat_map(result, first, nearest), reference) if first is not None else float("nan")
+    heat = heat_map(result, first, nearest) if first is not None else None
+    rho = _spearman(heat, reference) if heat is not None else float("nan")
+    rho_area = float("nan")
+    if heat is not None and np.isfinite(rho):
+        ok = np.isfinite(heat)
+        rho_area = weighted_spearman(heat[ok], reference[ok], area[ok])
     undirected = result.structure.to_undirected(as_view=True)
     weights = traffic.represented_area(result.graph, undirected)
     betweenness = centrality.betweenness(undirected, weighted=True, node_weight=weights)
@@ -321,7 +364,7 @@ def evaluate(
             return carry(values, arrays.area, positions, surface)
 
         if first is not None:
-            rho_navmesh = _spearman(on_navmesh(heat_map(result, first, nearest)), surface.flow)
+            rho_navmesh = _spearman(on_navmesh(heat), surface.flow)
         rho_navmesh_ceiling = _spearman(on_navmesh(heat_map(result, _navmesh_ceiling(result, surface), nearest)),
                                         surface.flow)
         reached = on_navmesh(np.where(nearest >= 0, 1.0, np.nan))
@@ -331,6 +374,7 @@ def evaluate(
         area_within=within,
         traffic_off=off,
         rho=rho,
+        rho_area=rho_area,
         rho_area_betweenness=_spearman(heat_map(result, betweenness, nearest), reference),
         rho_ceiling=_spearman(
             heat_map(result, traffic.gather(result.graph, result.structure, traffic.percentile(reference), mean=True),

@@ -5,6 +5,7 @@ from __future__ import annotations
 import hashlib
 import json
 import math
+from types import SimpleNamespace
 
 import networkx as nx
 import numpy as np
@@ -291,6 +292,86 @@ def test_coverage_traffic_parameters_are_validated(registry):
             pipeline.plan(parse_config(raw), registry)
 
 
+def room_with_sliver_and_alcove(tile_border: bool = False) -> tuple[nx.Graph, SimpleNamespace]:
+    """A 10 m square room R (node 0) with, beyond its east wall, a sliver S (1) 0.4 m deep, a triangle over the
+    whole wall, and beyond its north wall a 2 m wide alcove A (2) 2 m deep. Plan coordinates (x, z), y = 0.
+
+    ``tile_border``: S lies in the next tile (its own copies of the wall's two vertices) and touches R only
+    from z = 2 to z = 8, the portal Detour gives for that part of the border.
+    """
+    plan = [(0, 0), (10, 0), (10, 10), (6, 10), (4, 10), (0, 10), (10.4, 5), (6, 12), (4, 12), (10, 0), (10, 10)]
+    vertices = np.array([(x, 0.0, z) for x, z in plan])
+    east = (9, 6, 10) if tile_border else (1, 6, 2)
+    polygons = np.array([(0, 1, 2, 3, 4, 5), (*east, -1, -1, -1), (4, 3, 7, 8, -1, -1)])
+    neighbours = np.array([(-1, 1, -1, 2, -1, -1), (-1, -1, 0, -1, -1, -1), (0, -1, -1, -1, -1, -1)])
+    navmesh = SimpleNamespace(vertices=vertices, polygons=polygons, neighbours=neighbours)
+    graph = nx.Graph()
+    for node, area in ((0, 100.0), (1, 2.0), (2, 4.0)):
+        corners = vertices[polygons[node][polygons[node] >= 0]]
+        graph.add_node(node, pos=tuple(corners.mean(axis=0)), area=area, polygon=node)
+    east_portal = ((10.0, 0.0, 2.0), (10.0, 0.0, 8.0)) if tile_border else (tuple(vertices[1]), tuple(vertices[2]))
+    for other, portal in ((1, east_portal), (2, (tuple(vertices[3]), tuple(vertices[4])))):
+        graph.add_edge(0, other, portal=portal, weight=float(np.linalg.norm(
+            np.subtract(graph.nodes[0]["pos"], graph.nodes[other]["pos"]))))
+    return graph, navmesh
+
+
+def test_leaf_depth_is_how_far_its_polygon_reaches_beyond_the_shared_edge():
+    graph, navmesh = room_with_sliver_and_alcove()
+    assert coverage.leaf_depths(graph, navmesh, [1, 2]) == pytest.approx([0.4, 2.0])
+    # across a tile border the way in is only the part Detour links: the sliver's corners are 2 m beyond it
+    graph, navmesh = room_with_sliver_and_alcove(tile_border=True)
+    assert coverage.leaf_depths(graph, navmesh, [1, 2]) == pytest.approx([2.0, 2.0])
+    # without polygons (the sampling route) the depth is unknown: every leaf counts as deep
+    assert coverage.leaf_depths(graph, None, [1, 2]).tolist() == [math.inf, math.inf]
+    del graph.nodes[1]["polygon"]
+    assert coverage.leaf_depths(graph, navmesh, [1, 2]).tolist() == [math.inf, 2.0]
+
+
+def test_leaf_min_depth_drops_the_sliver_and_keeps_the_alcove():
+    graph, navmesh = room_with_sliver_and_alcove()
+
+    def terminals(**params) -> tuple:
+        context = RunContext(mesh=None, agent=None, centre=np.zeros(3), navmesh=navmesh, graph=graph)
+        return coverage.g2s_select_terminals(graph, coverage.Params(radius=50.0, min_area=0.0, **params),
+                                             context).nodes
+
+    assert terminals() == terminals(leaf_min_depth=0.0) == terminals(leaf_min_depth=0.4) == (1, 2)
+    assert terminals(leaf_min_depth=1.0) == terminals(leaf_min_depth=2.0) == (2,)
+    # no leaf deep enough: the area is seeded as one without leaves, at its node farthest from node 0 (the
+    # centroids: R (5, 6.67), S (10.13, 5), 5.4 m away, A (5, 11), 4.3 m away)
+    assert terminals(leaf_min_depth=2.5) == (1,)
+    # a graph without a navmesh keeps every leaf
+    assert select_cover(spine_and_side_room(), radius=3.0, leaf_min_depth=5.0) == select_cover(
+        spine_and_side_room(), radius=3.0)
+
+
+def test_leaf_min_depth_is_validated(registry):
+    raw = preset("map_analysis", terminals={"plugin": "coverage", "params": {"leaf_min_depth": -1}})
+    with pytest.raises(ConfigError, match="terminals.params.leaf_min_depth: expected a number"):
+        pipeline.plan(parse_config(raw), registry)
+
+
+def test_weighted_spearman_by_hand_and_against_scipy():
+    rng = np.random.default_rng(3)
+    x = rng.integers(0, 6, 40).astype(float)
+    y = x + rng.normal(size=40)
+    # equal weights: Spearman's rho with mid-ranks for ties
+    assert evaluation.weighted_spearman(x, y, np.full(40, 2.5)) == pytest.approx(scipy.stats.spearmanr(x, y).statistic)
+    # a whole-number weight counts as that many copies of the observation; weight 0 as none
+    weight = rng.integers(0, 4, 40)
+    assert evaluation.weighted_spearman(x, y, weight.astype(float)) == pytest.approx(
+        scipy.stats.spearmanr(np.repeat(x, weight), np.repeat(y, weight)).statistic)
+    # by hand: one big polygon that agrees outweighs two small ones that disagree
+    x, y = np.array([1.0, 2.0, 3.0]), np.array([1.0, 3.0, 2.0])
+    assert scipy.stats.spearmanr(x, y).statistic == pytest.approx(0.5)
+    # weights 8, 1, 1: mid-ranks x 4, 8.5, 9.5 and y 4, 9.5, 8.5 (weighted mean 5): covariance
+    # (8 + 3.5 x 4.5 + 4.5 x 3.5) / 10 = 3.95, variances (8 + 3.5² + 4.5²) / 10 = 4.05
+    assert evaluation.weighted_spearman(x, y, np.array([8.0, 1.0, 1.0])) == pytest.approx(3.95 / 4.05)
+    assert math.isnan(evaluation.weighted_spearman(x, np.ones(3), np.ones(3)))
+    assert math.isnan(evaluation.weighted_spearman(x, y, np.zeros(3)))
+
+
 def test_big_room_beside_a_many_polygon_corridor_swaps_rank_with_area_weighting():
     # A - H - B; A leads to a one-polygon room R of 100 m², B to a corridor of four 1 m² polygons
     graph = nx.Graph()
@@ -511,7 +592,7 @@ def test_the_traffic_evaluator_puts_the_evaluation_in_the_run_result(registry):
     quality = evaluation.evaluate(result, radii=(2.5, 6.0))
     assert result.metrics == {"traffic": {
         "area_within_2_5m": quality.area_within[2.5], "area_within_6m": quality.area_within[6.0],
-        "rho": quality.rho, "rho_area_betweenness": quality.rho_area_betweenness, "rho_ceiling": quality.rho_ceiling,
+        "rho": quality.rho, "rho_area": quality.rho_area, "rho_area_betweenness": quality.rho_area_betweenness, "rho_ceiling": quality.rho_ceiling,
         "structure_share": quality.structure_share, "traffic_off": quality.traffic_off,
         "rho_navmesh": quality.rho, "rho_navmesh_ceiling": quality.rho_ceiling,
         "navmesh_area_left_out": quality.navmesh_area_left_out}}

@@ -4,7 +4,8 @@ Measures (shares in [0, 1], rho in [-1, 1]; see :mod:`g2s_plugins.evaluation`):
 ``area_within_<r>m`` for each radius r, ``traffic_off`` (reference flow more
 than ``off_distance`` from the structure), ``rho`` (the first analyzer's heat
 map against the reference flow; left out without analyzers or when
-undefined), ``rho_area_betweenness``, ``rho_ceiling``, ``structure_share``,
+undefined), ``rho_area`` (the same, each node weighted by its area),
+``rho_area_betweenness``, ``rho_ceiling``, ``structure_share``,
 and ``rho_navmesh``, ``rho_navmesh_ceiling`` and ``navmesh_area_left_out``
 (the heat map against the reference flow on the level's navmesh graph; the
 run's own graph on the navmesh route).

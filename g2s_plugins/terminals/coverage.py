@@ -67,6 +67,18 @@ polygons instead of 48.4 / 44.8 / 41.1 %; the plain cover needs a 4.5 m
 radius for 0.920 / 0.900 / 0.907 with 55.8 / 49.9 / 49.4 %. nav_test:
 0.956 -> 0.953, 55.3 -> 54.7 %.
 
+Shallow leaves (``leaf_min_depth`` > 0). Recast's convex decomposition
+(at most 6 vertices a polygon) leaves thin polygons along curved or angled
+walls beside a big room polygon: leaves of the graph that are no dead-end
+place. Only the leaves at least ``leaf_min_depth`` deep are seeded
+(:func:`leaf_depths`: how far the polygon reaches beyond the edge it
+shares); the others are covered within ``radius`` like any node. Measured
+in docs/analysis_quality.md ("Slivers and places: leaf depth"): 1 m, the
+default agent's diameter, keeps the leaf of 29 of 30 generated dead-end
+rooms and drops about half of the leaves of a dungeon turned by 30 degrees,
+but lowers rho on a 1k dungeon from 0.929 to 0.898, so no preset sets it;
+``0`` (the default) seeds every leaf, unchanged.
+
 Complexity: O(m + n log n) for step 1 plus, per added path, a Dijkstra over
 the nodes that path brings closer (in practice the area around it); with
 ``traffic_weight`` > 0, that twice, plus the walking flow, O(k (m + n log n))
@@ -84,7 +96,7 @@ import scipy.sparse as sp
 from pydantic import Field
 from scipy.sparse import csgraph
 
-from g2s_core.model import RunContext, Terminals
+from g2s_core.model import NavMesh, RunContext, Terminals
 from g2s_core.plugin import PluginParams, hookimpl
 from g2s_plugins import traffic
 
@@ -107,6 +119,7 @@ class Params(PluginParams):
     min_area: float | None = Field(None, ge=0, description="walkable areas smaller than this (m²) are reported, not covered; default pi (radius / 2)²")
     traffic_weight: float = Field(0.0, ge=0, description="metres added to each edge per percentile point of walking-flow difference between its ends, for a first cover that puts nodes where traffic changes; 0: the plain cover only")
     traffic_radius: float | None = Field(None, gt=0, description="radius of that traffic-aware cover, in metres of those lengths; default 5/3 radius (10 m for 6 m)")
+    leaf_min_depth: float = Field(0.0, ge=0, description="leaves of the navmesh graph less deep than this (m: how far their polygon reaches beyond the edge it shares) are not seeded as terminals, the cover still reaches them; 0: every leaf; leaves without a polygon (the sampling route) always count")
 
 
 def default_radius(context: RunContext) -> float:
@@ -132,6 +145,9 @@ def g2s_select_terminals(graph: nx.Graph, params: Params, context: RunContext) -
             f"({component_area[small].sum():.3g} m² in all) are not covered"
         )
     leaves = np.flatnonzero(degree == 1)
+    if params.leaf_min_depth > 0:
+        depths = leaf_depths(graph, context.navmesh, [arrays.nodes[i] for i in leaves.tolist()])
+        leaves = leaves[depths >= params.leaf_min_depth]
     seeds = np.concatenate([leaves, _seeds(adjacency, labels, count, leaves, small)])
     eligible = ~small[labels]
     if params.traffic_weight > 0:
@@ -145,6 +161,59 @@ def g2s_select_terminals(graph: nx.Graph, params: Params, context: RunContext) -
         nodes=tuple(sorted(arrays.nodes[i] for i in rows.tolist())),
         waypoints=tuple(sorted(arrays.nodes[i] for i in waypoints.tolist())),
     )
+
+
+def leaf_depths(graph: nx.Graph, navmesh: NavMesh | None, leaves: list) -> np.ndarray:
+    """(k,) how far a walker can go into each of the ``leaves`` (degree-1 nodes) beyond the edge it shares, m.
+
+    A leaf's depth is the largest horizontal (x-z) distance from a vertex of
+    its navmesh polygon to the nearest segment it shares with its one
+    neighbouring polygon: the polygon is convex, so that is the farthest any
+    point of it lies from the way in. The shared segments are the ``portal``
+    of the leaf's graph edge (Detour's shared part, exact across a tile
+    border, where the edge may touch the next tile's polygon over only part
+    of its length; on a crest the edge to the portal node carries the pair's
+    segment) and every other edge of the polygon that the neighbour holds
+    whole (both vertices its own: two polygons of one tile can share more
+    than one edge, and ``portal`` lists the first). A leaf with no polygon
+    (``polygon`` -1 or absent: a sample of the sampling route, whose graph
+    has no polygons, or a graph built without ``navmesh``) gets ``inf``: its
+    depth is unknown, so it counts as deep. O(k nvp²).
+    """
+    depths = np.full(len(leaves), np.inf)
+    if navmesh is None:
+        return depths
+    for k, leaf in enumerate(leaves):
+        polygon = graph.nodes[leaf].get("polygon", -1)
+        if polygon < 0:
+            continue
+        corners = navmesh.polygons[polygon]
+        corners = corners[corners >= 0]
+        following = np.roll(corners, -1)
+        across = navmesh.neighbours[polygon][: len(corners)]
+        whole = [j for j in np.flatnonzero(across >= 0).tolist()
+                 if np.isin([corners[j], following[j]], navmesh.polygons[across[j]]).all()]
+        plan = navmesh.vertices[:, [0, 2]]
+        starts, ends = [plan[corners[whole]]], [plan[following[whole]]]
+        (neighbour,) = graph[leaf]
+        portal = graph.edges[leaf, neighbour].get("portal")
+        if portal is not None:
+            starts.append(np.asarray(portal[0], dtype=np.float64)[None, [0, 2]])
+            ends.append(np.asarray(portal[1], dtype=np.float64)[None, [0, 2]])
+        start, end = np.concatenate(starts), np.concatenate(ends)
+        if len(start):
+            depths[k] = _plan_distances(plan[corners], start, end).min(axis=1).max()
+    return depths
+
+
+def _plan_distances(points: np.ndarray, start: np.ndarray, end: np.ndarray) -> np.ndarray:
+    """(p, s) distance from each of the (p,2) ``points`` to each segment ``start[j] -> end[j]`` ((s,2) each)."""
+    span = end - start
+    length2 = np.einsum("ij,ij->i", span, span)
+    offset = points[:, None, :] - start[None, :, :]
+    with np.errstate(invalid="ignore", divide="ignore"):
+        t = np.clip(np.nan_to_num(np.einsum("psj,sj->ps", offset, span) / length2), 0.0, 1.0)
+    return np.linalg.norm(offset - t[..., None] * span[None, :, :], axis=2)
 
 
 def traffic_lengths(graph: nx.Graph, weight: float) -> sp.csr_array:
