@@ -236,7 +236,7 @@ def portal_samples(ends: np.ndarray, spacing: float) -> tuple[np.ndarray, np.nda
     """Points along each portal ``ends`` (E,2,3) where its clearance is measured: (K,3) points, m, and (K,) portal index.
 
     A portal of length L gets n points at the middles of its n equal parts
-    (0.1, 0.3 ... 0.9 for n = 5), n the odd number next to or at
+    (0.1, 0.3 ... 0.9 for n = 5), n the smallest odd number at or above
     max(:data:`PORTAL_SAMPLES`, ceil(L / spacing)). On flat ground a clearance
     changes by at most the distance moved, so the largest sample is within ``spacing`` / 2
     of the portal's largest clearance, and a door's portal (wall to wall,
