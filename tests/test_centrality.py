@@ -8,7 +8,7 @@ import pytest
 
 from g2s_core.errors import G2SError
 from g2s_core.ties import rank_key
-from g2s_plugins import centrality
+from g2s_plugins import centrality, traffic
 
 
 def assert_close(ours: dict, reference: dict, tol: float = 1e-9) -> None:
@@ -151,6 +151,26 @@ def test_weighted_betweenness_with_equal_length_paths_matches_networkx():
     graph = random_weights(nx.grid_2d_graph(6, 5), 3, integer=True)
     graph = nx.convert_node_labels_to_integers(graph, ordering="sorted")
     assert_close(centrality.betweenness(graph, weighted=True), nx.betweenness_centrality(graph, weight="weight"))
+
+
+def test_sampled_brandes_within_its_bound_above_the_exact_size(monkeypatch):
+    # a looped graph above the exact size: the estimate from sampled sources is within the Hoeffding bound of
+    # the exact values (nodes and edges, hops and lengths), the same on every call, and exact below the size
+    monkeypatch.setattr(centrality, "BRANDES_EXACT", 300)
+    monkeypatch.setattr(centrality, "BRANDES_SOURCES", 128)
+    graph = random_weights(nx.connected_watts_strogatz_graph(600, 4, 0.2, seed=5), 5)
+    bound = traffic.flow_error_bound(128) * 600 / 599
+    for weighted in (False, True):
+        estimate = centrality.betweenness(graph, weighted=weighted)
+        exact = nx.betweenness_centrality(graph, weight="weight" if weighted else None)
+        assert max(abs(estimate[node] - exact[node]) for node in graph) <= bound
+        assert estimate != pytest.approx(exact, abs=1e-12)  # sampled, not exact
+        assert centrality.betweenness(graph, weighted=weighted) == estimate
+    edges = centrality.edge_betweenness(graph)
+    exact_edges = nx.edge_betweenness_centrality(graph)
+    assert max(abs(edges[edge] - exact_edges[edge]) for edge in graph.edges) <= bound
+    small = nx.convert_node_labels_to_integers(nx.cycle_graph(300))
+    assert_close(centrality.betweenness(small), nx.betweenness_centrality(small))
 
 
 def test_weighted_betweenness_networkx_fallback(monkeypatch):
