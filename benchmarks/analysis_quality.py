@@ -41,14 +41,12 @@ figures do not depend on how a level lies in its frame. This is a benchmark: not
 from __future__ import annotations
 
 import argparse
-import math
 import os
 import platform
 import time
 from collections.abc import Iterator
 from pathlib import Path
 
-import numpy as np
 import trimesh
 
 from g2s_core import pipeline
@@ -57,6 +55,7 @@ from g2s_core.mesh import load_mesh, mesh_sha256
 from g2s_core.registry import Registry
 from g2s_plugins import evaluation, traffic
 from g2s_plugins.samples import levels as samples
+from g2s_plugins.samples.pieces import yaw_about_centre
 
 NAV_TEST = Path(__file__).resolve().parents[1] / ".." / "shared" / "data" / "nav_test.obj"
 DUNGEONS = {"dungeon_1k": 115, "dungeon_20k": 2400, "dungeon_100k": 12000}
@@ -108,16 +107,11 @@ def levels_with_metadata(names: list[str], seeds: list[int]) -> Iterator[tuple[s
             yield name, level.mesh, level.metadata
 
 
-def yaw_rotation(mesh: trimesh.Trimesh, yaw: float) -> np.ndarray:
-    """(4,4) the turn by ``yaw`` degrees about the vertical axis through the centre of ``mesh``'s bounds."""
-    return trimesh.transformations.rotation_matrix(math.radians(yaw), [0.0, 1.0, 0.0], mesh.bounds.mean(axis=0))
-
-
 def turned(named_meshes: Iterator[tuple[str, trimesh.Trimesh]], yaws: list[float]) -> Iterator[tuple[str, trimesh.Trimesh]]:
-    """Each level turned by each of ``yaws`` (degrees, :func:`yaw_rotation`)."""
+    """Each level turned by each of ``yaws`` (degrees, :func:`g2s_plugins.samples.pieces.yaw_about_centre`)."""
     for name, mesh in named_meshes:
         for yaw in yaws:
-            yield (name, mesh) if yaw == 0 else (f"{name}_yaw{yaw:g}", mesh.copy().apply_transform(yaw_rotation(mesh, yaw)))
+            yield (name, mesh) if yaw == 0 else (f"{name}_yaw{yaw:g}", mesh.copy().apply_transform(yaw_about_centre(mesh, yaw)))
 
 
 def main() -> None:

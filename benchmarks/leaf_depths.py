@@ -28,11 +28,12 @@ from collections import defaultdict
 import networkx as nx
 import numpy as np
 import trimesh
-from analysis_quality import levels_with_metadata, yaw_rotation
+from analysis_quality import levels_with_metadata
 
 from g2s_core.config import AgentConfig
 from g2s_plugins.graph_builders import navmesh as navmesh_builder
 from g2s_plugins.recast import build_navmesh
+from g2s_plugins.samples.pieces import yaw_about_centre
 from g2s_plugins.terminals.coverage import leaf_depths
 
 THRESHOLDS = (0.5, 1.0, 1.5, 2.0, 3.0)
@@ -78,7 +79,7 @@ def main() -> None:
     for name, mesh, metadata in levels_with_metadata(args.levels, args.seeds):
         rooms, kinds = rooms_of(metadata)
         for yaw in args.yaws:
-            rotation = yaw_rotation(mesh, yaw)
+            rotation = yaw_about_centre(mesh, yaw)
             turned = mesh if yaw == 0 else mesh.copy().apply_transform(rotation)
             navmesh = build_navmesh(turned.vertices, turned.faces, agent, params)
             graph = navmesh_builder.navmesh_graph(navmesh, agent, params.max_edge_gap)

@@ -97,7 +97,7 @@ from g2s_core.model import NavMesh, Opening, RunContext, Terminals, vec3
 from g2s_core.plugin import PluginParams, hookimpl
 from g2s_plugins._raycasting import UP, RayCaster
 from g2s_plugins._surface import on_navmesh
-from g2s_plugins.terminals._boundary import LoopSamples, boundary_loops, polygon_components, sample_loops
+from g2s_plugins.terminals._boundary import BoundaryLoop, LoopSamples, boundary_loops, polygon_components, sample_loops
 
 NAME = "entry_exit"
 
@@ -459,7 +459,7 @@ class Detection:
     normals: tuple[tuple[float, float, float], ...]
 
 
-def main_floor(navmesh: NavMesh, agent: AgentConfig) -> np.ndarray:
+def main_floor(navmesh: NavMesh, agent: AgentConfig, loops: list[BoundaryLoop] | None = None) -> np.ndarray:
     """(P,) bool: the polygons of the navmesh's floor of largest area.
 
     A floor is a connected component of the navmesh, together with every other one whose boundary
@@ -467,13 +467,15 @@ def main_floor(navmesh: NavMesh, agent: AgentConfig) -> np.ndarray:
     grid can cut a floor in two where a passage barely wider than the agent pinches (the shared
     Hallway turned by 5 and 60 degrees: halves 0.15 and 0.02 m apart), while a wall between two
     floors, however thin, leaves them at least 1.12 m apart (generated, at every yaw; see
-    docs/entry_exit.md).
+    docs/entry_exit.md). ``loops``: the navmesh's :func:`boundary_loops`, when the caller has them.
     """
     neighbours = np.asarray(navmesh.neighbours)
     if len(neighbours) == 0:
         return np.zeros(0, dtype=bool)
     radius = float(agent.radius)
-    samples = sample_loops(boundary_loops(navmesh.vertices, navmesh.polygons, neighbours), radius / 4.0)
+    if loops is None:
+        loops = boundary_loops(navmesh.vertices, navmesh.polygons, neighbours)
+    samples = sample_loops(loops, radius / 4.0)
     near = cKDTree(samples.position[:, [0, 2]]).query_pairs(radius, output_type="ndarray").reshape(-1, 2)
     level = np.abs(samples.position[near[:, 0], 1] - samples.position[near[:, 1], 1]) <= float(agent.max_climb)
     pairs = samples.polygon[near[level]]
@@ -597,7 +599,7 @@ def detect_openings(
     ways = _ways_out(samples, np.asarray(navmesh.normals), caster, s, params)
     segments = _segments(samples, ways, float(params.max_turn_deg))
     if params.main_floor_only:
-        main = main_floor(navmesh, agent)
+        main = main_floor(navmesh, agent, loops)
         segments = [g for g in segments if main[samples.polygon[g]].any()]
     kept = _match_edges(segments, ways, s, params)
     if not kept:
