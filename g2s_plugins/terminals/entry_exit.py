@@ -168,8 +168,9 @@ class Params(PluginParams):
     )
     main_floor_only: bool = Field(
         True,
-        description="keep only openings on the navmesh component of largest area (the main floor and what "
-        "is reachable from it); false: every component's",
+        description="keep only openings on the navmesh floor of largest area (a component with those whose "
+        "boundary comes within one agent radius at the same height: the main floor and what is reachable from it); "
+        "false: every component's",
     )
     extent_heights: float | None = Field(
         0.5,
