@@ -206,6 +206,7 @@ struct TileMesh {
     std::vector<float> overlaps;          // (K,3) world: a span of each region that overlaps itself in plan
     bool repartitioned = false;           // automatic partition: watershed overlapped, regions redone
     std::vector<int32_t> detail_redone;   // local polygons whose detail read another storey, rebuilt
+    std::vector<int32_t> detail_resampled; // local polygons whose detail left the floor, rebuilt with finer samples
 };
 
 // One span (world x, floor y, z) of each region of `chf` that holds two spans of one
@@ -302,18 +303,24 @@ std::array<double, 3> vertex_plane(const rcPolyMesh& pm, int i) {
     return plane;
 }
 
-// Whether a vertex of polygon `i`'s detail lies more than the agent's height from `plane`.
-bool detail_leaves_plane(const rcPolyMesh& pm, const rcPolyMeshDetail& dm, int mesh, const std::array<double, 3>& plane,
-                         int walkable_height) {
+// How far (cell heights) the farthest vertex of detail mesh `mesh` lies from `plane`.
+double detail_plane_offset(const rcPolyMesh& pm, const rcPolyMeshDetail& dm, int mesh, const std::array<double, 3>& plane) {
     const unsigned int vb = dm.meshes[mesh * 4 + 0], nv = dm.meshes[mesh * 4 + 1];
+    double farthest = 0.0;
     for (unsigned int k = vb; k < vb + nv; ++k) {
         const float* v = &dm.verts[k * 3];
         // Recast sets a detail vertex one cell height above the span it read
         const double y = (v[1] - pm.bmin[1]) / pm.ch - 1.0;
         const double at = plane[0] * (v[0] - pm.bmin[0]) / pm.cs + plane[1] * (v[2] - pm.bmin[2]) / pm.cs + plane[2];
-        if (std::fabs(y - at) > walkable_height) return true;
+        farthest = std::max(farthest, std::fabs(y - at));
     }
-    return false;
+    return farthest;
+}
+
+// Whether a vertex of detail mesh `mesh` lies more than the agent's height from `plane`.
+bool detail_leaves_plane(const rcPolyMesh& pm, const rcPolyMeshDetail& dm, int mesh, const std::array<double, 3>& plane,
+                         int walkable_height) {
+    return detail_plane_offset(pm, dm, mesh, plane) > walkable_height;
 }
 
 // The spans of polygon `i`'s region that its detail must not read: in the columns Recast reads for
@@ -395,40 +402,13 @@ std::vector<int> other_storey_spans(const rcPolyMesh& pm, int i, const std::arra
     return hidden;
 }
 
-// Rebuilds the detail of each polygon that Recast lifted or sank to another storey: a detail vertex
-// more than the agent's height from the plane through the polygon's vertices, where the polygon's
-// box holds its region on another storey (other_storey_spans); the rebuild hides those spans and
-// replaces the polygon's detail in `dmesh` if it then stays within that height of the plane.
-// Returns the polygons replaced (local indices, ascending); the others keep Recast's detail exactly.
-std::vector<int32_t> redo_detail_off_storey(LogContext& ctx, const rcPolyMesh& pm, rcCompactHeightfield& chf,
-                                            const rcConfig& c, std::unique_ptr<rcPolyMeshDetail, DetailDel>& dmesh,
-                                            const std::function<void(const std::string&)>& too_big) {
+// Replaces the detail of polygons `changed` (ascending) in `dmesh` by `redone` (one single-polygon
+// detail each): every polygon's detail in order, the changed ones from their rebuild.
+void splice_detail(const rcPolyMesh& pm, std::unique_ptr<rcPolyMeshDetail, DetailDel>& dmesh,
+                   const std::vector<int32_t>& changed,
+                   const std::vector<std::unique_ptr<rcPolyMeshDetail, DetailDel>>& redone) {
+    if (changed.empty()) return;
     const rcPolyMeshDetail& dm = *dmesh;
-    std::vector<int> piece(static_cast<size_t>(chf.spanCount), -1);
-    std::vector<int32_t> changed;
-    std::vector<std::unique_ptr<rcPolyMeshDetail, DetailDel>> redone;
-    for (int i = 0; i < pm.npolys; ++i) {
-        const std::array<double, 3> plane = vertex_plane(pm, i);
-        if (!detail_leaves_plane(pm, dm, i, plane, c.walkableHeight)) continue;
-        const std::vector<int> hidden = other_storey_spans(pm, i, plane, chf, c, piece);
-        if (hidden.empty()) continue;
-        std::vector<unsigned short> regs;
-        for (int s : hidden) {
-            regs.push_back(chf.spans[s].reg);
-            chf.spans[s].reg = 0;
-        }
-        std::unique_ptr<rcPolyMeshDetail, DetailDel> one(rcAllocPolyMeshDetail());
-        if (!one) fail("rcAllocPolyMeshDetail failed (out of memory)");
-        const bool ok = polygon_detail(ctx, pm, i, chf, c, *one);
-        for (size_t k = 0; k < hidden.size(); ++k) chf.spans[hidden[k]].reg = regs[k];
-        if (!ok) too_big("rcBuildPolyMeshDetail failed");
-        if (detail_leaves_plane(pm, *one, 0, plane, c.walkableHeight)) continue;
-        changed.push_back(i);
-        redone.push_back(std::move(one));
-    }
-    if (changed.empty()) return changed;
-
-    // Splice: every polygon's detail in order, the changed ones from their rebuild.
     std::unique_ptr<rcPolyMeshDetail, DetailDel> spliced(rcAllocPolyMeshDetail());
     if (!spliced) fail("rcAllocPolyMeshDetail failed (out of memory)");
     auto source = [&](int i, unsigned int& mesh_index) -> const rcPolyMeshDetail& {
@@ -467,6 +447,245 @@ std::vector<int32_t> redo_detail_off_storey(LogContext& ctx, const rcPolyMesh& p
         spliced->ntris += static_cast<int>(mesh[3]);
     }
     dmesh = std::move(spliced);
+}
+
+// Rebuilds the detail of each polygon that Recast lifted or sank to another storey: a detail vertex
+// more than the agent's height from the plane through the polygon's vertices, where the polygon's
+// box holds its region on another storey (other_storey_spans); the rebuild hides those spans and
+// replaces the polygon's detail in `dmesh` if it then stays within that height of the plane.
+// Returns the polygons replaced (local indices, ascending); the others keep Recast's detail exactly.
+std::vector<int32_t> redo_detail_off_storey(LogContext& ctx, const rcPolyMesh& pm, rcCompactHeightfield& chf,
+                                            const rcConfig& c, std::unique_ptr<rcPolyMeshDetail, DetailDel>& dmesh,
+                                            const std::function<void(const std::string&)>& too_big) {
+    const rcPolyMeshDetail& dm = *dmesh;
+    std::vector<int> piece(static_cast<size_t>(chf.spanCount), -1);
+    std::vector<int32_t> changed;
+    std::vector<std::unique_ptr<rcPolyMeshDetail, DetailDel>> redone;
+    for (int i = 0; i < pm.npolys; ++i) {
+        const std::array<double, 3> plane = vertex_plane(pm, i);
+        if (!detail_leaves_plane(pm, dm, i, plane, c.walkableHeight)) continue;
+        const std::vector<int> hidden = other_storey_spans(pm, i, plane, chf, c, piece);
+        if (hidden.empty()) continue;
+        std::vector<unsigned short> regs;
+        for (int s : hidden) {
+            regs.push_back(chf.spans[s].reg);
+            chf.spans[s].reg = 0;
+        }
+        std::unique_ptr<rcPolyMeshDetail, DetailDel> one(rcAllocPolyMeshDetail());
+        if (!one) fail("rcAllocPolyMeshDetail failed (out of memory)");
+        const bool ok = polygon_detail(ctx, pm, i, chf, c, *one);
+        for (size_t k = 0; k < hidden.size(); ++k) chf.spans[hidden[k]].reg = regs[k];
+        if (!ok) too_big("rcBuildPolyMeshDetail failed");
+        if (detail_leaves_plane(pm, *one, 0, plane, c.walkableHeight)) continue;
+        changed.push_back(i);
+        redone.push_back(std::move(one));
+    }
+    splice_detail(pm, dmesh, changed, redone);
+    return changed;
+}
+
+// ---------------------------------------------------------------- detail chords off the floor
+
+// Recast triangulates each polygon's detail from samples on its edges and, every detailSampleDist,
+// inside it, and checks its triangles against the inside samples only. Those must lie half the
+// spacing inside the edges, so a polygon narrower than about detailSampleDist gets none; where such
+// a polygon bends (a long thin polygon along the foot or the crest of a ramp), its triangles join
+// edge samples far apart across the bend and their insides pass over the trough or under the crest,
+// and nothing checks them.
+
+// The largest distance (cell heights) of polygon `i`'s detail (mesh `mesh` of `dm`) from the floor
+// under it: at points of each detail triangle (along its edges half a column apart, and over the
+// centre of each column inside it), the triangle's height against the span of the polygon's region
+// (of any walkable region for a polygon of several) in that point's column nearest `plane` (the
+// polygon's storey, vertex_plane: not the region's turn above on a spiral stair); 0 if none has one.
+double detail_floor_gap(const rcPolyMesh& pm, const rcPolyMeshDetail& dm, int mesh, int i,
+                        const std::array<double, 3>& plane, const rcCompactHeightfield& chf) {
+    const unsigned short reg = pm.regs[i];
+    double worst = 0.0;
+    // The floor gap at plan point (px, pz) (columns) of height h (cell heights).
+    auto probe = [&](double px, double pz, double h) {
+        const int cx = static_cast<int>(std::floor(px)), cz = static_cast<int>(std::floor(pz));
+        if (cx < 0 || cz < 0 || cx >= chf.width || cz >= chf.height) return;
+        const rcCompactCell& cell = chf.cells[cx + cz * chf.width];
+        const double storey = plane[0] * (px - pm.borderSize) + plane[1] * (pz - pm.borderSize) + plane[2];
+        int floor = -1;
+        for (int s = static_cast<int>(cell.index); s < static_cast<int>(cell.index + cell.count); ++s) {
+            if (chf.areas[s] == RC_NULL_AREA || (reg != RC_MULTIPLE_REGS && chf.spans[s].reg != reg)) continue;
+            if (floor < 0 || std::fabs(chf.spans[s].y - storey) < std::fabs(chf.spans[floor].y - storey)) floor = s;
+        }
+        if (floor >= 0) worst = std::max(worst, std::fabs(h - chf.spans[floor].y));
+    };
+    const unsigned int vb = dm.meshes[mesh * 4 + 0], tb = dm.meshes[mesh * 4 + 2], nt = dm.meshes[mesh * 4 + 3];
+    for (unsigned int t = tb; t < tb + nt; ++t) {
+        double x[3], z[3], y[3];  // columns and cell heights; Recast puts a detail vertex one cell height up
+        for (int k = 0; k < 3; ++k) {
+            const float* v = &dm.verts[(vb + dm.tris[t * 4 + k]) * 3];
+            x[k] = (v[0] - chf.bmin[0]) / chf.cs;
+            y[k] = (v[1] - chf.bmin[1]) / chf.ch - 1.0;
+            z[k] = (v[2] - chf.bmin[2]) / chf.cs;
+        }
+        // Along the edges, half a column apart (a sliver may cover no column's centre) ...
+        for (int k = 0; k < 3; ++k) {
+            const int l = (k + 1) % 3;
+            const int steps = 1 + static_cast<int>(2.0 * std::hypot(x[l] - x[k], z[l] - z[k]));
+            for (int q = 0; q <= steps; ++q) {
+                const double f = static_cast<double>(q) / steps;
+                probe(x[k] + f * (x[l] - x[k]), z[k] + f * (z[l] - z[k]), y[k] + f * (y[l] - y[k]));
+            }
+        }
+        // ... and at the centre of each column inside.
+        const double det = (x[1] - x[0]) * (z[2] - z[0]) - (x[2] - x[0]) * (z[1] - z[0]);
+        if (std::fabs(det) < 1e-12) continue;
+        const int x0 = static_cast<int>(std::floor(std::min({x[0], x[1], x[2]})));
+        const int x1 = static_cast<int>(std::floor(std::max({x[0], x[1], x[2]})));
+        const int z0 = static_cast<int>(std::floor(std::min({z[0], z[1], z[2]})));
+        const int z1 = static_cast<int>(std::floor(std::max({z[0], z[1], z[2]})));
+        for (int cz = z0; cz <= z1; ++cz)
+            for (int cx = x0; cx <= x1; ++cx) {
+                const double px = cx + 0.5 - x[0], pz = cz + 0.5 - z[0];
+                const double u = (px * (z[2] - z[0]) - (x[2] - x[0]) * pz) / det;
+                const double w = ((x[1] - x[0]) * pz - px * (z[1] - z[0])) / det;
+                if (u < 0.0 || w < 0.0 || u + w > 1.0) continue;
+                probe(cx + 0.5, cz + 0.5, y[0] + u * (y[1] - y[0]) + w * (y[2] - y[0]));
+            }
+    }
+    return worst;
+}
+
+// Recast triangulates a polygon that gets no inside samples with triangulateHull, which walks round
+// the hull greedily and, on a long sliver, fans out from one hull sample: the fan's inner edges run
+// along the polygon, over its bends. This retriangulates the detail `one` (polygon `i` of `pm` alone)
+// when every vertex of it lies on the polygon's outline: the samples in order round the convex polygon,
+// joined by the triangulation of least total diagonal length in plan (dynamic programming over the
+// convex chain, O(n^3) for Recast's n <= 127 samples), whose diagonals cross the sliver instead.
+// Returns false, leaving `one` as it was, if a vertex lies inside or no such triangulation exists.
+bool shortest_hull_triangulation(const rcPolyMesh& pm, int i, rcPolyMeshDetail& one) {
+    const unsigned short* p = &pm.polys[static_cast<size_t>(i) * 2 * pm.nvp];
+    int nin = 0;
+    while (nin < pm.nvp && p[nin] != RC_MESH_NULL_IDX) ++nin;
+    const int n = static_cast<int>(one.meshes[1]);
+    if (n < 4 || one.meshes[0] != 0) return false;
+    const float* v = one.verts;  // Recast puts the polygon's own vertices first
+    double cx = 0.0, cz = 0.0;
+    for (int k = 0; k < nin; ++k) {
+        cx += v[k * 3] / nin;
+        cz += v[k * 3 + 2] / nin;
+    }
+    const double on_outline = 1e-3 * pm.cs;
+    for (int k = nin; k < n; ++k) {
+        bool on_edge = false;
+        for (int a = 0, b = nin - 1; a < nin && !on_edge; b = a++) {
+            const double ex = v[a * 3] - v[b * 3], ez = v[a * 3 + 2] - v[b * 3 + 2];
+            const double len = std::hypot(ex, ez);
+            const double across = ((v[k * 3] - v[b * 3]) * ez - (v[k * 3 + 2] - v[b * 3 + 2]) * ex) / len;
+            const double along = ((v[k * 3] - v[b * 3]) * ex + (v[k * 3 + 2] - v[b * 3 + 2]) * ez) / len;
+            on_edge = std::fabs(across) <= on_outline && along >= -on_outline && along <= len + on_outline;
+        }
+        if (!on_edge) return false;
+    }
+    std::vector<int> hull(n);
+    std::vector<double> angle(n);
+    for (int k = 0; k < n; ++k) {
+        hull[k] = k;
+        angle[k] = std::atan2(v[k * 3 + 2] - cz, v[k * 3] - cx);
+    }
+    std::sort(hull.begin(), hull.end(), [&](int a, int b) { return angle[a] < angle[b]; });
+    auto plan = [&](int a, int b) { return std::hypot(v[hull[a] * 3] - v[hull[b] * 3], v[hull[a] * 3 + 2] - v[hull[b] * 3 + 2]); };
+    auto twice_area = [&](int a, int k, int b) {
+        const float *va = &v[hull[a] * 3], *vk = &v[hull[k] * 3], *vb = &v[hull[b] * 3];
+        return (vk[0] - va[0]) * (vb[2] - va[2]) - (vb[0] - va[0]) * (vk[2] - va[2]);
+    };
+    const double inf = std::numeric_limits<double>::infinity();
+    std::vector<double> cost(static_cast<size_t>(n) * n, inf);
+    std::vector<int> apex(static_cast<size_t>(n) * n, -1);
+    for (int a = 0; a + 1 < n; ++a) cost[a * n + a + 1] = 0.0;
+    for (int gap = 2; gap < n; ++gap)
+        for (int a = 0; a + gap < n; ++a) {
+            const int b = a + gap;
+            for (int k = a + 1; k < b; ++k) {
+                if (std::fabs(twice_area(a, k, b)) < on_outline * on_outline) continue;  // collinear samples
+                const double c = cost[a * n + k] + cost[k * n + b] + (k > a + 1 ? plan(a, k) : 0.0) +
+                                 (b > k + 1 ? plan(k, b) : 0.0);
+                if (c < cost[a * n + b]) {
+                    cost[a * n + b] = c;
+                    apex[a * n + b] = k;
+                }
+            }
+        }
+    if (cost[n - 1] == inf) return false;
+    // Recast's winding (its first triangle's), and its edge flags: 1 for an edge on the outline.
+    const unsigned char* t0 = one.tris;
+    const float *a0 = &v[t0[0] * 3], *b0 = &v[t0[1] * 3], *c0 = &v[t0[2] * 3];
+    const bool clockwise = (b0[0] - a0[0]) * (c0[2] - a0[2]) - (c0[0] - a0[0]) * (b0[2] - a0[2]) < 0;
+    unsigned char* tris = static_cast<unsigned char*>(rcAlloc(4 * (n - 2), RC_ALLOC_PERM));
+    if (!tris) fail("rcAlloc failed (out of memory)");
+    int ntris = 0;
+    std::vector<std::pair<int, int>> todo = {{0, n - 1}};
+    while (!todo.empty()) {
+        const auto [a, b] = todo.back();
+        todo.pop_back();
+        if (b - a < 2) continue;
+        const int k = apex[a * n + b];
+        int corner[3] = {a, k, b};
+        if ((twice_area(a, k, b) < 0) != clockwise) std::swap(corner[1], corner[2]);
+        unsigned char* t = &tris[ntris++ * 4];
+        t[3] = 0;
+        for (int e = 0; e < 3; ++e) {
+            t[e] = static_cast<unsigned char>(hull[corner[e]]);
+            const int d = std::abs(corner[e] - corner[(e + 1) % 3]);
+            if (d == 1 || d == n - 1) t[3] |= static_cast<unsigned char>(1 << (2 * e));
+        }
+        todo.push_back({a, k});
+        todo.push_back({k, b});
+    }
+    rcFree(one.tris);
+    one.tris = tris;
+    one.ntris = ntris;
+    one.meshes[3] = static_cast<unsigned int>(ntris);
+    return true;
+}
+
+// Rebuilds the detail of each polygon whose detail leaves the floor under it by more than the
+// agent's climb (detail_floor_gap): rcBuildPolyMeshDetail on the polygon alone, retriangulated by
+// shortest_hull_triangulation if all its samples lie on the outline; again with detailSampleDist and
+// detailSampleMaxError halved while the result is still off and the spacing stays at least one cell.
+// It keeps the rebuild nearest the floor if that is nearer than Recast's and no vertex of it lies
+// further from the plane through the polygon's vertices than the agent's height or Recast's farthest
+// (finer samples on a spiral stair can read the region's turn below where the turn above is another
+// region's). Polygons in `skip`
+// (ascending; rebuilt from their own storey already) keep their detail. Returns the polygons
+// replaced (ascending); the others keep their detail exactly. Nothing to do without detail samples.
+std::vector<int32_t> resample_detail_off_floor(LogContext& ctx, const rcPolyMesh& pm, const rcCompactHeightfield& chf,
+                                               const rcConfig& c, std::unique_ptr<rcPolyMeshDetail, DetailDel>& dmesh,
+                                               const std::vector<int32_t>& skip,
+                                               const std::function<void(const std::string&)>& too_big) {
+    std::vector<int32_t> changed;
+    std::vector<std::unique_ptr<rcPolyMeshDetail, DetailDel>> redone;
+    if (c.detailSampleDist <= 0.0f) return changed;
+    for (int i = 0; i < pm.npolys; ++i) {
+        if (std::binary_search(skip.begin(), skip.end(), i)) continue;
+        const std::array<double, 3> plane = vertex_plane(pm, i);
+        double gap = detail_floor_gap(pm, *dmesh, i, i, plane, chf);
+        const double bend = std::max<double>(c.walkableHeight, detail_plane_offset(pm, *dmesh, i, plane));
+        std::unique_ptr<rcPolyMeshDetail, DetailDel> best;
+        rcConfig fine = c;
+        for (; gap > c.walkableClimb && fine.detailSampleDist >= c.cs;
+             fine.detailSampleDist /= 2, fine.detailSampleMaxError /= 2) {
+            std::unique_ptr<rcPolyMeshDetail, DetailDel> one(rcAllocPolyMeshDetail());
+            if (!one) fail("rcAllocPolyMeshDetail failed (out of memory)");
+            if (!polygon_detail(ctx, pm, i, chf, fine, *one)) too_big("rcBuildPolyMeshDetail failed");
+            shortest_hull_triangulation(pm, i, *one);
+            const double rebuilt = detail_floor_gap(pm, *one, 0, i, plane, chf);
+            if (rebuilt < gap && detail_plane_offset(pm, *one, 0, plane) <= bend) {
+                gap = rebuilt;
+                best = std::move(one);
+            }
+        }
+        if (!best) continue;
+        changed.push_back(i);
+        redone.push_back(std::move(best));
+    }
+    splice_detail(pm, dmesh, changed, redone);
     return changed;
 }
 
@@ -578,6 +797,7 @@ void build_tile(const Input& in, const int* tris, int ntris, const rcConfig& c, 
     if (!rcBuildPolyMeshDetail(&ctx, *pmesh, *chf, c.detailSampleDist, c.detailSampleMaxError, *dmesh))
         too_big("rcBuildPolyMeshDetail failed");
     out.detail_redone = redo_detail_off_storey(ctx, *pmesh, *chf, c, dmesh, too_big);
+    out.detail_resampled = resample_detail_off_floor(ctx, *pmesh, *chf, c, dmesh, out.detail_redone, too_big);
     chf.reset();
     cset.reset();
 
@@ -672,6 +892,7 @@ public:
     std::vector<double> overlaps;       // (K,3) a span of each region overlapping itself, tile by tile
     std::vector<int32_t> repartitioned; // (R,2) tile x, z of the tiles the automatic partition redid
     std::vector<int32_t> detail_redone; // (N,) polygons whose detail read another storey, rebuilt
+    std::vector<int32_t> detail_resampled; // (N,) polygons whose detail left the floor, rebuilt with finer samples
     int npolys = 0;
 
     // Resolved Recast configuration and tiling.
@@ -986,6 +1207,7 @@ void NavMeshCore::assemble(std::vector<std::unique_ptr<TileMesh>>& tiles) {
     overlaps.clear();
     repartitioned.clear();
     detail_redone.clear();
+    detail_resampled.clear();
     dverts.reserve(static_cast<size_t>(total_dverts) * 3);
     dtris.clear();
     dtris.reserve(static_cast<size_t>(total_dtris) * 3);
@@ -1052,6 +1274,7 @@ void NavMeshCore::assemble(std::vector<std::unique_ptr<TileMesh>>& tiles) {
         overlaps.insert(overlaps.end(), t.overlaps.begin(), t.overlaps.end());
         if (t.repartitioned) repartitioned.insert(repartitioned.end(), {t.tx, t.ty});
         for (int32_t p : t.detail_redone) detail_redone.push_back(p + first);
+        for (int32_t p : t.detail_resampled) detail_resampled.push_back(p + first);
         first += t.npolys;
         tp.reset();  // free the tile's copy as we go
     }
@@ -1427,6 +1650,11 @@ NB_MODULE(_recast, m) {
                      "(N,) int32: polygons whose detail heights Recast read from their region on another "
                      "storey (a region winding back over itself, e.g. round a spiral stair), rebuilt from "
                      "their own storey; ascending")
+        .def_prop_ro("detail_resampled_polygons",
+                     [](const NavMeshCore& n) { return to_numpy(n.detail_resampled, n.detail_resampled.size(), 0); },
+                     "(N,) int32: polygons whose detail triangles left the floor under them by more than the "
+                     "agent's climb (too narrow for Recast's inside samples, bent along a ramp's foot or crest), "
+                     "rebuilt with finer samples; ascending")
         .def_prop_ro("tile_size", [](const NavMeshCore& n) { return n.tile_size; },
                      "tile side in cells; 0 for a solo navmesh")
         .def_prop_ro("tile_count", [](const NavMeshCore& n) { return static_cast<int>(n.tile_first.size()); },
@@ -1556,3 +1784,4 @@ NB_MODULE(_recast, m) {
     def_build<double, int64_t>(m);
     m.attr("DT_VERTS_PER_POLYGON") = DT_VERTS_PER_POLYGON;
 }
+

@@ -798,3 +798,33 @@ def test_partition_is_validated():
     assert RecastParams().partition == "auto"
     with pytest.raises(ValueError, match="partition must be"):
         _recast.build(floor(4, 4).vertices, floor(4, 4).faces, **{**resolve_settings(AGENT), "partition": "spiral"})
+
+
+def detail_surface_points(nm: NavMesh, polygons: np.ndarray, divisions: int = 4) -> np.ndarray:
+    """(N,3) points on the detail triangles of ``polygons``: a barycentric grid of ``divisions`` per edge on each."""
+    u, v = np.meshgrid(np.arange(divisions + 1), np.arange(divisions + 1))
+    keep = (u + v) <= divisions
+    u, v = u[keep] / divisions, v[keep] / divisions
+    corners = nm.detail_vertices[nm.detail_triangles[np.isin(nm.detail_polygon, polygons)]]
+    a, b, c = corners[:, None, 0], corners[:, None, 1], corners[:, None, 2]
+    return (a + u[None, :, None] * (b - a) + v[None, :, None] * (c - a)).reshape(-1, 3)
+
+
+def test_detail_triangles_left_off_the_floor_are_rebuilt_onto_the_hills():
+    # Generated terrain, 80 m: Recast triangulates polygons too narrow for inside samples from their
+    # edge samples alone, and some triangles there pass over a trough or under a crest by more than
+    # the climb. Those polygons are rebuilt (finer samples, a triangulation whose diagonals cross the
+    # polygon); their detail then follows the hills: within the climb of the terrain's own triangles,
+    # plus Recast's offsets (one cell height up, heights rounded up to a cell height).
+    from g2s_plugins.samples.outdoor import terrain
+
+    agent = types.SimpleNamespace(radius=0.5, height=2.0, max_climb=0.4, max_slope=45.0)
+    mesh = terrain(size=80.0, seed=0).mesh
+    nm = build(mesh, agent)
+    resampled = nm.detail_resampled_polygons
+    assert len(resampled) > 0 and np.all(np.diff(resampled) > 0)
+    _, gap, _ = trimesh.proximity.ProximityQuery(mesh).on_surface(detail_surface_points(nm, resampled))
+    assert gap.max() <= agent.max_climb + 2 * 0.125
+    # the rebuilt polygons still bend with the hills rather than lying flat
+    rise = np.ptp(nm.detail_vertices[np.unique(nm.detail_triangles[np.isin(nm.detail_polygon, resampled)])][:, 1])
+    assert rise > 1.0

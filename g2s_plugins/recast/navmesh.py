@@ -88,6 +88,12 @@ class NavMesh:
                         that were rebuilt from their own storey; the other
                         polygons keep Recast's detail exactly (docs/navmesh.md,
                         "Detail heights").
+    ``detail_resampled_polygons`` (N,) int32, ascending: polygons whose
+                        detail triangles left the floor under them by more
+                        than the agent's climb (too narrow for Recast's
+                        inside samples and bent, as along the foot or the
+                        crest of a ramp) and that were rebuilt with finer
+                        samples (docs/navmesh.md, "Detail chords").
 
     Polygon index ``i`` is Detour polygon ``poly_ref(i)``. Polygons are
     numbered tile by tile (row-major tiles); tiles share equal border vertices.
@@ -107,6 +113,7 @@ class NavMesh:
         self.region_overlaps: np.ndarray = core.region_overlaps
         self.repartitioned_tiles: np.ndarray = core.repartitioned_tiles
         self.detail_redone_polygons: np.ndarray = core.detail_redone_polygons
+        self.detail_resampled_polygons: np.ndarray = core.detail_resampled_polygons
         self.centres, self.normals, self.areas = _surface(
             self.polygon_count, self.vertices, self.polygons,
             self.detail_vertices, self.detail_triangles, self.detail_polygon,
