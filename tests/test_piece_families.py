@@ -48,3 +48,11 @@ def test_a_pillar_before_a_door_leaves_it_whole() -> None:
     for known in level.openings:
         best, distance = _nearest(found, known)
         assert distance <= 0.1 and best.width == pytest.approx(known.width, abs=0.1)
+
+
+@pytest.mark.parametrize("yaw", [20.0, 90.0])
+def test_a_door_exactly_as_wide_as_the_agent_is_no_opening(yaw: float) -> None:
+    # The 0.8 m door measured 0.8000011 m between its jambs and passed "at least the agent's diameter".
+    level = pieces.turned(pieces.narrow_door_room(narrow=2 * CONFIG.agent.radius), yaw)
+    found = _detect(level).openings
+    assert len(found) == 1 and _nearest(found, level.openings[0])[1] <= 0.1

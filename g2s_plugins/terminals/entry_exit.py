@@ -41,8 +41,9 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
 6. Priors, each measured on the generated pieces of
    :mod:`g2s_plugins.samples.pieces` (docs/entry_exit.md):
 
-   * width: openings narrower than ``min_width_radii * r`` (default the
-     agent's diameter) are dropped (chamfers, slivers);
+   * width: openings no wider than ``min_width_radii * r`` (default the
+     agent's diameter) are dropped (chamfers, slivers, a door exactly as
+     wide as the agent, which Recast erodes away);
    * reachability (``main_floor_only``): the opening must run along the
      navmesh floor of largest area, the main floor and what the agent
      reaches from it (an unreachable wall top, a roof, holds no exit); a
@@ -104,6 +105,10 @@ NAME = "entry_exit"
 _REFINE_ROUNDS = 4
 """Bisection rounds that place a found edge to 1/16 of the search step."""
 
+_SAME_WIDTH = 1e-4
+"""Metres: widths this close are equal (an opening between jambs measures their distance to the ray
+caster's single precision: a 0.8 m door 0.8000011 m)."""
+
 
 class Params(PluginParams):
     """Boundary sampling, ways out, segment rules and priors; lengths in metres unless noted.
@@ -137,7 +142,10 @@ class Params(PluginParams):
         4.0, ge=0, description="the way out must be clear this far from the sample, agent radii"
     )
     min_width_radii: float = Field(
-        2.0, ge=0, description="narrower openings are dropped, agent radii (default: the agent's diameter)"
+        2.0,
+        ge=0,
+        description="openings no wider are dropped, agent radii (default: the agent's diameter; one exactly as wide "
+        "as the agent is no way through)",
     )
     max_slope_deg: float | None = Field(
         None, ge=0, le=90, description="drop openings steeper than this from the horizontal, degrees; None: keep all"
@@ -651,7 +659,7 @@ def detect_openings(
     found: list[tuple[Opening, tuple[int, ...], tuple[float, float, float]]] = []
     edges: list[_Edge] = []
     for e, a, b in zip(kept, p_first, p_last):
-        if float(np.linalg.norm(b - a)) < min_width - 1e-9:
+        if float(np.linalg.norm(b - a)) < min_width + _SAME_WIDTH:
             continue
         d = b - a
         if max_slope is not None and math.atan2(abs(d[1]), math.hypot(d[0], d[2])) > max_slope + 1e-12:
