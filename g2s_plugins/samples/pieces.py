@@ -20,6 +20,14 @@ wrong on real pieces (see docs/entry_exit.md):
 * :func:`chamfered_platform`: a wall-less slab with chamfered corners; the
   openings are its four sides, the chamfers are narrower than the agent.
 
+The held-out families (:data:`HELD_OUT`) are shapes designers build that the
+rules were not measured on when they were set (docs/entry_exit.md, "Piece
+shapes it was not tuned on"): :func:`corner_corridor`, :func:`t_junction`,
+:func:`bridge`, :func:`windowed_room`, :func:`threshold_door`,
+:func:`open_side_room`, :func:`thick_wall_door`, :func:`two_storey`,
+:func:`cluttered_room` and :func:`narrow_door_room`; their known openings were
+chosen as a designer would before the detector ran on them.
+
 Units, frame and solids follow :mod:`g2s_plugins.samples.levels` (metres, Y
 up, outward-facing hexahedra, floors' tops at the floor height). The pieces
 are designed for :data:`PIECE_AGENT`, the agent of ``configs/map_piece.yaml``.
@@ -31,7 +39,7 @@ from dataclasses import replace
 
 import numpy as np
 import trimesh
-from pydantic import PositiveFloat, PositiveInt, validate_call
+from pydantic import NonNegativeFloat, PositiveFloat, PositiveInt, validate_call
 
 from g2s_core.model import Vec3, vec3
 
@@ -628,9 +636,9 @@ def cluttered_room(
 @validate_call
 def narrow_door_room(
     width: PositiveFloat = 8.0, depth: PositiveFloat = 6.0, wall: PositiveFloat = 0.3,
-    narrow: PositiveFloat = 0.6, door: PositiveFloat | None = 1.6,
+    narrow: PositiveFloat = 0.6, door: NonNegativeFloat = 1.6,
 ) -> SampleLevel:
-    """A walled room with a doorway narrower than the agent (west) and, unless ``door`` is None, a wide one (east).
+    """A walled room with a doorway narrower than the agent (west) and, unless ``door`` is 0, a wide one (east).
 
     The agent (:data:`PIECE_AGENT`, 0.8 m across) cannot pass the narrow
     doorway, so it is no opening. Openings: the east doorway; none without it.
@@ -640,15 +648,15 @@ def narrow_door_room(
         depth: clear floor inside the walls along Z, metres.
         wall: thickness of the walls, metres.
         narrow: width of the west doorway, metres.
-        door: width of the east doorway, metres; None: no east doorway.
+        door: width of the east doorway, metres; 0: no east doorway.
     """
     b = _LevelBuilder()
     b.floors(-wall, width + wall, -wall, depth + wall, 0.0)
     gaps = {"W": [(depth / 2 - narrow / 2, depth / 2 + narrow / 2, 0.0, TALL)]}
-    if door is not None:
+    if door > 0:
         gaps["E"] = [(depth / 2 - door / 2, depth / 2 + door / 2, 0.0, TALL)]
     _walls(b, width, depth, wall, gaps)
-    openings = [] if door is None else [_door("E", depth / 2, door, width, depth, wall)]
+    openings = [_door("E", depth / 2, door, width, depth, wall)] if door > 0 else []
     params = {"width": width, "depth": depth, "wall": wall, "narrow": narrow, "door": door}
     return b.build("narrow_door_room", openings, _meta(params, (0.0,)))
 
@@ -676,8 +684,9 @@ PIECES = {
     "stair_deck": stair_deck,
     "cross_platform": cross_platform,
     "chamfered_platform": chamfered_platform,
+    **HELD_OUT,
 }
-"""Piece name -> factory (keyword arguments only); registered in ``levels.SAMPLES``."""
+"""Piece name -> factory (keyword arguments only), the held-out families included; registered in ``levels.SAMPLES``."""
 
 
 def yaw_about_centre(mesh: trimesh.Trimesh, degrees: float) -> np.ndarray:
