@@ -37,7 +37,8 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
    surface goes on inside the edge, ends just outside it, and nothing stands
    in the way or straight out: this undoes the retreat from walls. An
    opening overlapping a wider one along the same line, facing the same way,
-   is the same opening found twice and is dropped.
+   is the same opening found twice: the wider one is stretched along its line
+   to span both and the other dropped.
 6. Priors, each measured on the generated pieces of
    :mod:`g2s_plugins.samples.pieces` (docs/entry_exit.md):
 
