@@ -139,11 +139,11 @@ VARIATIONS = [
 """Generated pieces with other parameters than the defaults: the rules must hold beyond the cases they were measured on."""
 
 HELD_OUT_VARIATIONS = [
-    ("bridge", {"width": 1.2}), ("windowed_room", {"sill": 0.5}), ("threshold_door", {"step": 0.3}),
+    ("bridge", {"width": 1.6}), ("bridge", {"width": 1.2}), ("windowed_room", {"sill": 0.5}), ("threshold_door", {"step": 0.3}),
     ("thick_wall_door", {"doors": (1.4, 2.0)}), ("narrow_door_room", {"narrow": 0.8}),
     ("narrow_door_room", {"door": 0.0}),
 ]
-"""Held-out families with other parameters: a 1.2 m bridge, a sill above the climb but low, a 0.3 m
+"""Held-out families with other parameters: 1.6 and 1.2 m bridges, a sill above the climb but low, a 0.3 m
 threshold, wider tunnels, a door exactly the agent's diameter, a piece whose only door is too narrow."""
 
 FAMILIES = {**pieces.PIECES, **pieces.HELD_OUT}

@@ -414,7 +414,7 @@ def t_junction(
 
 @validate_call
 def bridge(
-    length: PositiveFloat = 12.0, width: PositiveFloat = 1.6, railing: PositiveFloat = 1.0,
+    length: PositiveFloat = 12.0, width: PositiveFloat = 2.0, railing: PositiveFloat = 1.0,
     rail_width: PositiveFloat = 0.1,
 ) -> SampleLevel:
     """A narrow walkway over a void between two railings, open at both ends.
@@ -422,7 +422,9 @@ def bridge(
     Nothing of the piece lies under the deck (x in [0, length], z in [0,
     width]); the railings (higher than the agent's climb, too narrow to
     stand on) run along both long sides. Openings: the two ends, as wide as
-    the walkway between the railings.
+    the walkway between the railings. The default width leaves every
+    preset's agent (radius up to 0.5 m) a navmesh; Recast gives the 0.4 m
+    agent none on some narrower ones (docs/entry_exit.md).
 
     Args:
         length: the walkway's length along X, metres.
@@ -532,7 +534,7 @@ def open_side_room(
 @validate_call
 def thick_wall_door(
     width: PositiveFloat = 8.0, depth: PositiveFloat = 6.0, wall: PositiveFloat = 1.0,
-    doors: tuple[PositiveFloat, PositiveFloat] = (1.2, 1.6), door_height: PositiveFloat = 2.4,
+    doors: tuple[float, ...] = (1.2, 1.6), door_height: PositiveFloat = 2.4,
 ) -> SampleLevel:
     """A room in walls ``wall`` thick whose two doorways, under lintels, are short tunnels.
 
@@ -545,6 +547,8 @@ def thick_wall_door(
         doors: widths of the west and east doorways, metres.
         door_height: height of the lintels' undersides above the floor, metres.
     """
+    if len(doors) != 2 or min(doors) <= 0:
+        raise ValueError(f"doors must be 2 widths > 0, got {doors!r}")
     b = _LevelBuilder()
     b.floors(-wall, width + wall, -wall, depth + wall, 0.0)
     gaps = {side: [(depth / 2 - d / 2, depth / 2 + d / 2, 0.0, door_height)] for side, d in zip("WE", doors)}
