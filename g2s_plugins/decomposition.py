@@ -32,12 +32,14 @@ polygons and their shared edges (portals):
    into their neighbours.
 3. Regions are the groups left (``scipy.sparse.csgraph.connected_components``
    of the merged portals), numbered by their lowest polygon id. Candidates
-   between the same two regions closer than ``min_separation`` are one
-   chokepoint (the widest portal of them stays: a door cut by a tile border
-   is several portals).
+   between the same two regions that are chained end to end (one opening:
+   Recast's region contours may bend across a wide gap) or closer than
+   ``min_separation`` are one chokepoint (the widest portal of them stays:
+   a door cut by a tile border is several portals).
 4. A chokepoint is an articulation of the level when it is a bridge of the
    region multigraph (regions joined by one edge per chokepoint;
-   ``rustworkx.bridges``): closing it disconnects the level.
+   ``rustworkx.bridges``, which sees parallel edges as one, so a pair of
+   regions with two chokepoints is left out): closing it disconnects the level.
 5. Traffic (:func:`score`). A structure edge whose two ends lie in different
    regions crosses the chokepoint between them nearest to it; the
    chokepoint's traffic is the largest edge betweenness of the structure
