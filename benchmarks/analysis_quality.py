@@ -51,6 +51,7 @@ import trimesh
 
 from g2s_core import pipeline
 from g2s_core.config import find_config, load_raw_config, parse_config, with_evaluators
+from g2s_core.errors import G2SError
 from g2s_core.mesh import load_mesh, mesh_sha256
 from g2s_core.registry import Registry
 from g2s_plugins import evaluation, traffic
@@ -134,7 +135,11 @@ def main() -> None:
     for name, mesh in turned(levels(args.levels, args.seeds), args.yaws):
         for preset, plan in plans.items():
             cpu = time.process_time()
-            result = pipeline.run(plan, registry, mesh, name, mesh_sha256(mesh))
+            try:
+                result = pipeline.run(plan, registry, mesh, name, mesh_sha256(mesh))
+            except G2SError as error:  # a level the preset cannot run (e.g. no walkable surface): say so, go on
+                print(f"{name:<18} {preset:<28} error: {error}", flush=True)
+                continue
             cpu = time.process_time() - cpu
             if "traffic" not in result.metrics:  # the run stopped before the evaluation (e.g. no terminals)
                 print(f"{name:<18} {preset:<28} stopped after {result.stages[-1].stage}: {'; '.join(result.warnings)}")

@@ -31,6 +31,7 @@ import trimesh
 from analysis_quality import levels_with_metadata
 
 from g2s_core.config import AgentConfig
+from g2s_core.errors import G2SError
 from g2s_plugins.graph_builders import navmesh as navmesh_builder
 from g2s_plugins.recast import build_navmesh
 from g2s_plugins.samples.pieces import yaw_about_centre
@@ -81,7 +82,11 @@ def main() -> None:
         for yaw in args.yaws:
             rotation = yaw_about_centre(mesh, yaw)
             turned = mesh if yaw == 0 else mesh.copy().apply_transform(rotation)
-            navmesh = build_navmesh(turned.vertices, turned.faces, agent, params)
+            try:
+                navmesh = build_navmesh(turned.vertices, turned.faces, agent, params)
+            except (RuntimeError, G2SError) as error:  # e.g. no walkable surface for the agent: say so, go on
+                print(f"{name} yaw {yaw:g}: no navmesh: {error}", flush=True)
+                continue
             graph = navmesh_builder.navmesh_graph(navmesh, agent, params.max_edge_gap)
             leaves = [node for node, degree in graph.degree() if degree == 1]
             depths = leaf_depths(graph, navmesh, leaves)
