@@ -1,13 +1,15 @@
 """Openings and structures of map pieces against their known or designer-placed connectors.
 
 Run: ``.venv/bin/python benchmarks/piece_quality.py [--config configs/map_piece.yaml] [--pieces DIR]
-[--variations] [--yaws 0 5 10 15 20 30 45 60 90]``
+[--variations] [--held-out] [--yaws 0 5 10 15 20 30 45 60 90]``
 
 Runs the map-piece preset on every generated piece of
 :mod:`g2s_plugins.samples.pieces` (reference: the known openings) and on the
 shared pieces ``../shared/data/pieces/*.obj`` (reference: the designers'
 connectors in ``connectors.json``; the Hallway has none, so its tool
-connectors stand in, and the table says so). Per piece it prints the
+connectors stand in, and the table says so); with ``--held-out``, also on the
+families the rules were not measured on (:data:`pieces.HELD_OUT` and
+:data:`HELD_OUT_VARIATIONS`). Per piece it prints the
 detected openings, precision (share of openings whose midpoint lies within
 1.5 m of a reference connector), recall (share of reference connectors with
 an opening that close), the number of trees of the structure, and the
@@ -31,6 +33,7 @@ import trimesh
 
 from g2s_core import pipeline
 from g2s_core.config import load_config
+from g2s_core.errors import G2SError
 from g2s_core.mesh import load_mesh, mesh_sha256
 from g2s_core.registry import Registry
 from g2s_plugins.samples import pieces
@@ -60,8 +63,11 @@ def trees(result) -> int:
 
 
 def measure(run, name: str, mesh, reference: np.ndarray) -> dict:
-    """One row: counts, precision, recall, trees and surface gap of ``run`` on ``mesh``."""
-    result = run(mesh, name)
+    """One row: counts, precision, recall, trees and surface gap of ``run`` on ``mesh``; ``error`` when it fails."""
+    try:
+        result = run(mesh, name)
+    except G2SError as error:  # what the user sees instead of openings
+        return {"piece": name, "reference": len(reference), "error": str(error).split(":")[0]}
     openings = result.terminals.openings if result.terminals is not None else ()
     found = np.array([o.position for o in openings], dtype=np.float64).reshape(-1, 3)
     correct, recalled = pieces.match_openings(found, reference)
@@ -132,12 +138,26 @@ VARIATIONS = [
 ]
 """Generated pieces with other parameters than the defaults: the rules must hold beyond the cases they were measured on."""
 
+HELD_OUT_VARIATIONS = [
+    ("bridge", {"width": 1.6}), ("bridge", {"width": 1.2}), ("windowed_room", {"sill": 0.5}), ("threshold_door", {"step": 0.3}),
+    ("thick_wall_door", {"doors": (1.4, 2.0)}), ("narrow_door_room", {"narrow": 0.8}),
+    ("narrow_door_room", {"door": 0.0}),
+]
+"""Held-out families with other parameters: 1.6 and 1.2 m bridges, a sill above the climb but low, a 0.3 m
+threshold, wider tunnels, a door exactly the agent's diameter, a piece whose only door is too narrow."""
+
+FAMILIES = {**pieces.PIECES, **pieces.HELD_OUT}
+"""Every generated family the benchmark knows, by name."""
+
 
 def print_table(rows: list[tuple[dict, str]]) -> None:
     """The per-piece table: counts, precision, recall, trees, surface gaps and scores."""
     print(f"{'piece':58s} {'ref':8s} {'found':>5s} {'refs':>4s} {'precision':>10s} {'recall':>8s} "
           f"{'trees':>5s} {'gap new/all m':>13s}  scores")
     for row, kind in rows:
+        if "error" in row:
+            print(f"{row['piece']:58s} {kind:8s} {'-':>5s} {row['reference']:4d}  error: {row['error']}")
+            continue
         precision = row["correct"] / row["openings"] if row["openings"] else float("nan")
         recall = row["recalled"] / row["reference"] if row["reference"] else float("nan")
         scores = " ".join("-" if v is None else f"{v:.2f}" for v in row["scores"])
@@ -152,6 +172,8 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--pieces", default=str(SHARED_PIECES), help="folder of the shared pieces and connectors.json")
     parser.add_argument("--priors", action="store_true", help="also list the generated pieces' candidates, priors off")
     parser.add_argument("--variations", action="store_true", help="also run the generated pieces with other parameters")
+    parser.add_argument("--held-out", action="store_true",
+                        help="also run the families the rules were not measured on (and, with --variations, theirs)")
     parser.add_argument(
         "--yaws", type=float, nargs="+", default=[0.0], metavar="DEG",
         help="turn every piece and its reference by these angles about the vertical axis through the centre of its "
@@ -164,14 +186,17 @@ def main(argv: list[str] | None = None) -> int:
     def run(mesh, name):
         return pipeline.run(plan, registry, mesh, name, mesh_sha256(mesh))
 
-    generated = [(name, {}) for name in pieces.PIECES] + (VARIATIONS if args.variations else [])
+    tuned = [name for name in pieces.PIECES if name not in pieces.HELD_OUT]
+    generated = [(name, {}) for name in tuned] + (VARIATIONS if args.variations else [])
+    if args.held_out:
+        generated += [(name, {}) for name in pieces.HELD_OUT] + (HELD_OUT_VARIATIONS if args.variations else [])
     folder = Path(args.pieces)
     shared = [(name, load_mesh(folder / f"{name}.obj")[0], reference, kind)
               for name, (reference, kind) in shared_references(folder).items()]
     for index, yaw in enumerate(args.yaws):
         rows = []
         for name, kwargs in generated:
-            level = pieces.PIECES[name](**kwargs)
+            level = FAMILIES[name](**kwargs)
             if yaw:
                 level = pieces.turned(level, yaw)
             reference = np.array([o.position for o in level.openings], dtype=np.float64)

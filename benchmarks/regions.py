@@ -1,7 +1,8 @@
 """Time and quality of the chokepoints and regions analyzers on generated dungeons.
 
 Run: ``.venv/bin/python benchmarks/regions.py [--rooms 120 2400 12000] [--obstacles 0.3] [--seeds 1]
-[--yaws 0 5 10 15 20 30 45 60 90]``
+[--yaws 0 5 10 15 20 30 45 60 90]``, or ``--levels FILE ...`` for mesh files (real levels: no known
+answer, so the sizes, counts and times only; docs/plugins.md, real levels).
 
 For each dungeon (``samples.dungeon(seed, rooms, obstacles)``) the
 ``level_regions`` preset runs once, then, on its navmesh and structure, the
@@ -27,6 +28,9 @@ import time
 from collections.abc import Callable
 from typing import Any
 
+import networkx as nx
+
+import g2s_core
 from g2s_core import pipeline
 from g2s_core.config import PRESETS_DIR, load_config
 from g2s_core.registry import Registry
@@ -67,6 +71,22 @@ def measure(rooms: int, seed: int, obstacles: float, yaw: float, registry: Regis
     }
 
 
+def measure_file(path: str) -> dict[str, Any]:
+    """The ``level_regions`` preset on a mesh file, then the split and the scoring timed as in :func:`measure`."""
+    result = g2s_core.run(path, "level_regions")
+    navmesh, structure = result.context.navmesh, result.structure.to_undirected(as_view=True)
+    params = Params()
+    split_wall, split_cpu, split = best_times(lambda: decomposition.decompose(navmesh, result.context.agent, params))
+    score_wall, score_cpu, (chokepoints, _) = best_times(lambda: decomposition.score(split, structure))
+    return {
+        "level": os.path.basename(path), "polygons": navmesh.polygon_count,
+        "areas": nx.number_connected_components(result.graph), "regions": len(split.regions),
+        "chokepoints": len(chokepoints), "articulations": sum(k["articulation"] for k in chokepoints),
+        "split_wall": 1000 * split_wall, "split_cpu": 1000 * split_cpu, "score_wall": 1000 * score_wall,
+        "score_cpu": 1000 * score_cpu,
+    }
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--rooms", type=int, nargs="+", default=[120, 2400, 12000])
@@ -74,10 +94,22 @@ def main() -> None:
     parser.add_argument("--seeds", type=int, default=1, help="dungeons per size (seeds 0 .. n-1)")
     parser.add_argument("--yaws", type=float, nargs="+", default=[0.0],
                         help="turn each dungeon by these angles about the vertical, degrees")
+    parser.add_argument("--levels", nargs="+", default=[], metavar="FILE",
+                        help="measure these mesh files instead of generated dungeons")
     args = parser.parse_args()
     registry = Registry.from_entry_points()
     print(f"# {platform.machine()}, {os.cpu_count()} cores, Python {platform.python_version()}, "
           f"obstacles {args.obstacles}, load average {os.getloadavg()[0]:.1f}")
+    if args.levels:
+        print("| level | polygons | walkable areas | regions | chokepoints | articulations | split CPU (wall) ms "
+              "| score CPU (wall) ms |")
+        print("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |")
+        for path in args.levels:
+            m = measure_file(path)
+            print(f"| {m['level']} | {m['polygons']:,} | {m['areas']} | {m['regions']} | {m['chokepoints']} "
+                  f"| {m['articulations']} | {m['split_cpu']:.0f} ({m['split_wall']:.0f}) "
+                  f"| {m['score_cpu']:.0f} ({m['score_wall']:.0f}) |", flush=True)
+        return
     print("| yaw | seed | rooms | corridors | polygons | portals | regions | chokepoints | split CPU (wall) ms "
           "| score CPU (wall) ms | corridors with a chokepoint | rooms with their own region |")
     print("| ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |")

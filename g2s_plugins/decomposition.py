@@ -32,12 +32,14 @@ polygons and their shared edges (portals):
    into their neighbours.
 3. Regions are the groups left (``scipy.sparse.csgraph.connected_components``
    of the merged portals), numbered by their lowest polygon id. Candidates
-   between the same two regions closer than ``min_separation`` are one
-   chokepoint (the widest portal of them stays: a door cut by a tile border
-   is several portals).
+   between the same two regions that are chained end to end (one opening:
+   Recast's region contours may bend across a wide gap) or closer than
+   ``min_separation`` are one chokepoint (the widest portal of them stays:
+   a door cut by a tile border is several portals).
 4. A chokepoint is an articulation of the level when it is a bridge of the
    region multigraph (regions joined by one edge per chokepoint;
-   ``rustworkx.bridges``): closing it disconnects the level.
+   ``rustworkx.bridges``, which sees parallel edges as one, so a pair of
+   regions with two chokepoints is left out): closing it disconnects the level.
 5. Traffic (:func:`score`). A structure edge whose two ends lie in different
    regions crosses the chokepoint between them nearest to it; the
    chokepoint's traffic is the largest edge betweenness of the structure
@@ -62,6 +64,7 @@ numpy/scipy over arrays, networkx only on the small region graph.
 from __future__ import annotations
 
 import math
+from collections import Counter
 from dataclasses import dataclass
 from typing import Any
 
@@ -383,20 +386,45 @@ def _region_floors(labels: np.ndarray, count: int, band: np.ndarray, areas: np.n
     return np.where(table.max(axis=1) > 0, table.argmax(axis=1), nearest).astype(np.int64)
 
 
+def _openings(candidates: np.ndarray, sides: np.ndarray, endpoints: np.ndarray) -> np.ndarray:
+    """(C,) int64: the opening of each candidate portal, equal for candidates of the same region pair
+    chained by shared end points (equal to 1 cm; scipy connected components).
+
+    Recast cuts a passage between its regions' contours, which may turn: a wide gap whose cut bends at a
+    contour vertex is two portals end to end, one opening (measured: docs/plugins.md, real levels).
+    """
+    if len(candidates) == 0:
+        return np.zeros(0, dtype=np.int64)
+    _, point = np.unique(_point_keys(endpoints[candidates].reshape(-1, 3)), return_inverse=True)
+    point = point.reshape(-1, 2)
+    _, pair = np.unique(sides, axis=0, return_inverse=True)
+    n, c = int(point.max()) + 1, len(candidates)
+    # a candidate joins its two end points, each taken within its region pair
+    ends = pair.reshape(-1)[:, None] * n + point
+    _, node = np.unique(ends, return_inverse=True)
+    node = node.reshape(-1, 2)
+    links = sparse.coo_array((np.ones(c), (node[:, 0], node[:, 1])), shape=(int(node.max()) + 1,) * 2)
+    return csgraph.connected_components(links, directed=False)[1][node[:, 0]].astype(np.int64)
+
+
 def _chokepoints(candidates: np.ndarray, pairs: np.ndarray, labels: np.ndarray, endpoints: np.ndarray,
                  widest: np.ndarray, width: np.ndarray, floor: np.ndarray, separation: float) -> list[dict[str, Any]]:
-    """One record per chokepoint: candidates grouped by region pair, widest first, near ones dropped."""
+    """One record per chokepoint: candidates grouped by region pair, widest first; the others of an
+    opening (:func:`_openings`) and near ones dropped."""
     sides = np.sort(labels[pairs[candidates]], axis=1)
+    opening = _openings(candidates, sides, endpoints)
     order = np.lexsort((candidates, -width[candidates], sides[:, 1], sides[:, 0]))
     kept: list[dict[str, Any]] = []
     kept_at: dict[tuple[int, int], list[np.ndarray]] = {}
+    kept_openings: set[int] = set()
     for i in order.tolist():
         e = int(candidates[i])
         a, b = int(sides[i, 0]), int(sides[i, 1])
         position = widest[e]
         others = kept_at.setdefault((a, b), [])
-        if any(np.linalg.norm(q - position) < separation for q in others):
+        if int(opening[i]) in kept_openings or any(np.linalg.norm(q - position) < separation for q in others):
             continue
+        kept_openings.add(int(opening[i]))
         others.append(position)
         kept.append({
             "position": position.tolist(),
@@ -411,7 +439,9 @@ def _chokepoints(candidates: np.ndarray, pairs: np.ndarray, labels: np.ndarray, 
     region_graph = rx.PyGraph(multigraph=True)
     region_graph.add_nodes_from(range(count))
     region_graph.add_edges_from_no_data(pairs_kept)
-    bridges = {tuple(sorted(e)) for e in rx.bridges(region_graph)}  # a doubled pair is never a bridge
+    # rustworkx's bridges sees parallel edges as one; a pair of regions with two chokepoints has no bridge
+    doubled = {pair for pair, times in Counter(pairs_kept).items() if times > 1}
+    bridges = {tuple(sorted(e)) for e in rx.bridges(region_graph)} - doubled
     for k, pair in zip(kept, pairs_kept):
         k["articulation"] = pair in bridges
     return kept

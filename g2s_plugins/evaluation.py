@@ -102,7 +102,6 @@ from dataclasses import dataclass, field
 import networkx as nx
 import numpy as np
 from scipy.spatial import cKDTree
-from scipy.stats import spearmanr
 
 from g2s_core.model import RunResult
 from g2s_plugins import centrality, traffic
@@ -283,6 +282,8 @@ def _navmesh_ceiling(result: RunResult, surface: NavmeshSurface) -> dict:
 
 
 def _spearman(heat: np.ndarray, reference: np.ndarray) -> float:
+    from scipy.stats import spearmanr  # here, not at the top: importing scipy.stats is about a quarter of every g2s command's start-up
+
     ok = np.isfinite(heat)
     if ok.sum() < 3 or np.ptp(heat[ok]) == 0 or np.ptp(reference[ok]) == 0:
         return float("nan")

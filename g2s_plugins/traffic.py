@@ -50,7 +50,6 @@ import networkx as nx
 import numpy as np
 import scipy.sparse as sp
 from scipy.sparse import csgraph
-from scipy.stats import rankdata
 
 from g2s_plugins import _trees
 from g2s_plugins.surface_arrays import SurfaceArrays, surface_arrays
@@ -123,6 +122,8 @@ def percentile(values: np.ndarray) -> np.ndarray:
     matters: a node's mean percentile is not pulled up by one busy polygon
     the way its mean flow is. O(n log n).
     """
+    from scipy.stats import rankdata  # here, not at the top: importing scipy.stats is about a quarter of every g2s command's start-up
+
     values = np.asarray(values, dtype=np.float64)
     return 100.0 * (rankdata(values) - 0.5) / max(values.size, 1)
 

@@ -100,7 +100,8 @@ def inside_out_bodies(mesh: trimesh.Trimesh) -> int:
     return flip_inside_out_bodies(merged)[1]
 
 
-GENERAL_HINT = "check the agent settings, the mesh's up_axis and scale, and that its floors' faces face up (their winding)"
+GENERAL_HINT = ("check mesh.scale (the file's units to metres), the agent settings, the mesh's up_axis, and that its "
+                "floors' faces face up (their winding)")
 
 UP_AXIS_HINT = ("most flat faces face along z, not y: if the file is Z-up, set `mesh: {up_axis: z}` "
                 "(or `y` if it is already z)")
@@ -119,13 +120,21 @@ def likely_causes(mesh: trimesh.Trimesh, max_slope: float, winding: bool = True)
     return causes
 
 
+def level_size(mesh: trimesh.Trimesh) -> str:
+    """The mesh's extent in words: ``2.02 x 2.1 m (x, z), 0.176 m tall``."""
+    extent = np.ptp(np.asarray(mesh.bounds), axis=0)
+    return f"{extent[0]:.3g} x {extent[2]:.3g} m (x, z), {extent[1]:.3g} m tall"
+
+
 def no_walkable_surface(mesh: trimesh.Trimesh, agent: AgentConfig, reason: str) -> G2SError:
     """The error of a graph builder that found nowhere ``agent`` can stand on ``mesh``: the agent,
-    the builder's ``reason``, then the likely causes (else what to check)."""
+    the builder's ``reason``, then the likely causes, else the level's size (a file in other units
+    than metres shows in it: a 200 m level read at ``mesh.scale: 0.01`` is 2 m across) and what to check."""
+    causes = likely_causes(mesh, agent.max_slope)
     return G2SError(
         f"no walkable surface for the agent (radius {agent.radius} m, height {agent.height} m, "
         f"max climb {agent.max_climb} m, max slope {agent.max_slope} deg): {reason}; "
-        f"{'; '.join(likely_causes(mesh, agent.max_slope)) or GENERAL_HINT}"
+        + ("; ".join(causes) if causes else f"the level is {level_size(mesh)}: {GENERAL_HINT}")
     )
 
 

@@ -7,10 +7,12 @@ import json
 import subprocess
 import sys
 from functools import cache
+from types import SimpleNamespace
 
 import networkx as nx
 import numpy as np
 import pytest
+import trimesh
 
 from g2s_core import pipeline
 from g2s_plugins.outputs.json_reader import load_result
@@ -135,6 +137,42 @@ def test_a_loop_of_four_rooms_has_no_articulation():
     for door in level.metadata["doors"]:
         assert sum(near(c["position"], door["position"], 0.5) for c in found) == 1
     assert all(len(r["neighbours"]) == 2 for r in regions(result))
+
+
+def open_fields(gaps_between: list[tuple[float, float]]):
+    """Two 200 x 80 m fields (x -100..100; z < 0 and z > 0) parted at z = 0 by 10 m thick, 3 m tall
+    walls everywhere but the ``gaps_between`` (x from, x to), metres. The walls are open boxes, so the
+    floor inside each is a walkable pit of its own (a region no passage reaches)."""
+    edges = [-100.0] + [x for gap in gaps_between for x in gap] + [100.0]
+    walls = [trimesh.creation.box(extents=(b - a, 3.0, 10.0)).apply_translation(((a + b) / 2, 1.5, 0.0))
+             for a, b in zip(edges[::2], edges[1::2]) if b > a]
+    for wall in walls:
+        wall.update_faces(wall.face_normals[:, 1] < 0.5)
+    floor = trimesh.creation.box(extents=(200.0, 0.2, 160.0)).apply_translation((0.0, -0.1, 0.0))
+    return SimpleNamespace(mesh=trimesh.util.concatenate([floor, *walls]), name="open_fields")
+
+
+def test_a_wide_gap_cut_by_two_portals_is_one_chokepoint():
+    # Recast cuts each 30 m gap between the fields along its regions' contours, which bend at a vertex
+    # 16 m into a field: two portals end to end per gap. They are one opening, so one chokepoint each
+    # (there were six for the three gaps before; the same shape on a real open level, docs/plugins.md)
+    gaps = [(-60.0, -30.0), (10.0, 40.0), (80.0, 100.0)]
+    result = run(open_fields(gaps))
+    found = chokepoints(result)
+    fields = sorted(r["id"] for r in sorted(regions(result), key=lambda r: -r["area"])[:2])
+    assert len(found) == 3 and all(c["regions"] == fields and not c["articulation"] for c in found)
+    assert [sum(a - 1 <= c["position"][0] <= b + 1 for c in found) for a, b in gaps] == [1, 1, 1]
+
+
+def test_two_chokepoints_between_the_same_regions_are_not_articulations():
+    # closing one of two passages between the same two regions leaves the other (rustworkx's bridges
+    # sees the two edges of the region multigraph as one: both were flagged)
+    pairs = np.array([[0, 1], [2, 3], [4, 5]])
+    labels = np.array([0, 1, 0, 1, 1, 2])
+    ends = np.array([[[0.0, 0, 0], [1, 0, 0]], [[10, 0, 0], [11, 0, 0]], [[20, 0, 0], [21, 0, 0]]])
+    found = decomposition._chokepoints(np.arange(3), pairs, labels, ends, ends[:, 0], np.ones(3),
+                                       np.zeros(3, dtype=np.int64), separation=3.0)
+    assert [(c["regions"], c["articulation"]) for c in found] == [([0, 1], False), ([0, 1], False), ([1, 2], True)]
 
 
 def test_a_ramp_is_the_chokepoint_between_two_floors():

@@ -214,7 +214,8 @@ def _poisson_candidates(surface: trimesh.Trimesh, spacing: float, params: Params
     if count > MAX_CANDIDATES:
         raise G2SError(
             f"sampling: spacing {spacing:g} m is too small for {area:.0f} m² of walkable surface "
-            f"({count} candidate points); use a larger spacing or a smaller candidate_density"
+            f"({count} candidate points); use a larger spacing or a smaller candidate_density, or check "
+            "mesh.scale (the file's units to metres)"
         )
     points, faces = trimesh.sample.sample_surface(surface, max(count, 1), seed=params.seed)
     return np.asarray(points, dtype=np.float64), np.asarray(faces, dtype=np.int64), area / max(count, 1)

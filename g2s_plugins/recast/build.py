@@ -12,6 +12,9 @@ fastest), in each tile in Recast's order; a solo build is one tile.
 Memory guard: ``max_cells`` bounds the xz cells rasterised at once, that is
 the solo grid, or one tile with its border (tiles are built one per worker
 thread); a tiled grid has at most :data:`~.settings.MAX_TILES` tiles.
+Time guard: ``max_level_cells`` bounds the cells of the whole xz grid, so that a
+flat level read in the wrong units (100 times too large: no height to betray
+it) stops at once instead of building for an hour.
 """
 
 from __future__ import annotations
@@ -24,6 +27,7 @@ from . import _recast
 from .navmesh import NavMesh
 from .settings import (
     MAX_GRID_SIDE,
+    MAX_LEVEL_CELLS,
     MAX_SPAN_HEIGHT,
     MAX_TILES,
     RecastParams,
@@ -78,13 +82,13 @@ def build_navmesh(vertices, faces, agent: Any, params: RecastParams | None = Non
         raise ValueError("Recast: vertices must be finite")
     if len(v):
         check_grid(v, settings, cell_size_given=params.cell_size is not None,
-                   cell_height_given=params.cell_height is not None)
+                   cell_height_given=params.cell_height is not None, max_level_cells=params.max_level_cells)
     core = _recast.build(v, f, **settings)
     return NavMesh(core, settings)
 
 
 def check_grid(vertices: np.ndarray, settings: dict[str, Any], cell_size_given: bool = False,
-               cell_height_given: bool = False) -> None:
+               cell_height_given: bool = False, max_level_cells: int = MAX_LEVEL_CELLS) -> None:
     """Refuse a level whose voxel grid Recast cannot hold, before anything is allocated.
 
     Computes the grid as Recast does (float32 bounds, ``(int)(extent / cs + 0.5)``
@@ -122,6 +126,12 @@ def check_grid(vertices: np.ndarray, settings: dict[str, Any], cell_size_given: 
         raise SettingsError(
             f"{cs_key}: the level ({size}) is {width} x {depth} cells of {cs:g} m, more than "
             f"{MAX_GRID_SIDE} a side; {_SCALE_HINT}, or use a larger graph.params.cell_size"
+        )
+    if width * depth > max_level_cells:
+        raise SettingsError(
+            f"{cs_key}: the level ({size}) is {width} x {depth} cells of {cs:g} m ({width * depth:.3g}), more than "
+            f"graph.params.max_level_cells={max_level_cells:.3g} (about a minute of Recast per 1e8 cells); {_SCALE_HINT}, "
+            "or use a larger graph.params.cell_size or max_level_cells"
         )
     layers = extent[1] / ch
     if layers > MAX_SPAN_HEIGHT:

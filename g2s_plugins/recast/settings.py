@@ -29,7 +29,7 @@ from pydantic import ConfigDict, Field, field_validator
 
 from g2s_core.plugin import PluginParams
 
-__all__ = ["RecastParams", "SettingsError", "resolve_settings", "voxel_config", "VOXEL_LIMITS"]
+__all__ = ["RecastParams", "SettingsError", "resolve_settings", "voxel_config", "VOXEL_LIMITS", "MAX_LEVEL_CELLS"]
 
 MIN_TILE_SIZE = 16
 """Smallest tile side (cells) of a tiled build."""
@@ -39,6 +39,10 @@ MAX_GRID_SIDE = (1 << 24) - 1
 
 MAX_TILES = 1 << 22
 """Most tiles of a tiled build: Detour addresses tiles and polygons with 22 bits together."""
+
+MAX_LEVEL_CELLS = 1_000_000_000
+"""Default ``max_level_cells``: twice the largest level benchmarked (4.3e8 cells, docs/performance.md); a flat
+generated level builds in about 0.6 µs of CPU a cell (0.9 µs wall on 2 cores), so 1e9 cells is about 10 minutes."""
 
 MAX_SPAN_HEIGHT = (1 << 13) - 1
 """Recast's ``RC_SPAN_MAX_HEIGHT``: the level's height in cell heights."""
@@ -119,6 +123,13 @@ class RecastParams(PluginParams):
         le=1 << 34,
         description="refuse to rasterise more xz cells at once (the solo grid, or one tile with its border): "
         "memory guard",
+    )
+    max_level_cells: int = Field(
+        MAX_LEVEL_CELLS,
+        gt=0,
+        description="refuse a level whose whole xz grid has more cells than this: time guard (a flat level "
+        "takes about 0.6 µs of CPU a cell, so the default is about 10 minutes; a file read in the wrong units "
+        "is the usual cause)",
     )
     tile_size: int | None = Field(
         None,

@@ -37,12 +37,14 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
    surface goes on inside the edge, ends just outside it, and nothing stands
    in the way or straight out: this undoes the retreat from walls. An
    opening overlapping a wider one along the same line, facing the same way,
-   is the same opening found twice and is dropped.
+   is the same opening found twice: the wider one is stretched along its line
+   to span both and the other dropped.
 6. Priors, each measured on the generated pieces of
    :mod:`g2s_plugins.samples.pieces` (docs/entry_exit.md):
 
-   * width: openings narrower than ``min_width_radii * r`` (default the
-     agent's diameter) are dropped (chamfers, slivers);
+   * width: openings no wider than ``min_width_radii * r`` (default the
+     agent's diameter) are dropped (chamfers, slivers, a door exactly as
+     wide as the agent, which Recast erodes away);
    * reachability (``main_floor_only``): the opening must run along the
      navmesh floor of largest area, the main floor and what the agent
      reaches from it (an unreachable wall top, a roof, holds no exit); a
@@ -104,6 +106,10 @@ NAME = "entry_exit"
 _REFINE_ROUNDS = 4
 """Bisection rounds that place a found edge to 1/16 of the search step."""
 
+_SAME_WIDTH = 1e-4
+"""Metres: widths this close are equal (an opening between jambs measures their distance to the ray
+caster's single precision: a 0.8 m door 0.8000011 m)."""
+
 
 class Params(PluginParams):
     """Boundary sampling, ways out, segment rules and priors; lengths in metres unless noted.
@@ -137,7 +143,10 @@ class Params(PluginParams):
         4.0, ge=0, description="the way out must be clear this far from the sample, agent radii"
     )
     min_width_radii: float = Field(
-        2.0, ge=0, description="narrower openings are dropped, agent radii (default: the agent's diameter)"
+        2.0,
+        ge=0,
+        description="openings no wider are dropped, agent radii (default: the agent's diameter; one exactly as wide "
+        "as the agent is no way through)",
     )
     max_slope_deg: float | None = Field(
         None, ge=0, le=90, description="drop openings steeper than this from the horizontal, degrees; None: keep all"
@@ -548,17 +557,18 @@ def extent_gap(vertices: np.ndarray, point: np.ndarray, heading: np.ndarray, fra
 
 
 def _repeated(openings: list[Opening], radius: float, max_turn_deg: float) -> np.ndarray:
-    """(n,) bool: openings that overlap a wider one along the same edge, facing the same way.
+    """(n,) int: for each opening that overlaps a wider one along the same edge, facing the same way, that one's index; else -1.
 
     Recast's voxel staircase along an edge turned off the grid's axes can cut one opening's
     samples into several segments; each is extended along the edge (step 5) over much of the same
-    opening (the generated ``curb_platform`` turned by 5 to 60 degrees: 2 or 3 per curb gap). A
-    narrower opening whose midpoint lies within ``radius`` of a wider one's line, whose extent
-    along it overlaps the wider one's and whose heading is within ``max_turn_deg`` of it is the
-    same opening found again.
+    opening (the generated ``curb_platform`` turned by 5 to 60 degrees: 2 or 3 per curb gap), and
+    an obstacle standing before a doorway splits its samples in two, each seeing part of the door
+    (the held-out ``cluttered_room``'s pillar). A narrower opening whose midpoint lies within
+    ``radius`` of a wider one's line, whose extent along it overlaps the wider one's and whose
+    heading is within ``max_turn_deg`` of it is the same opening found again.
     """
     n = len(openings)
-    again = np.zeros(n, dtype=bool)
+    into = np.full(n, -1, dtype=np.int64)
     first = np.array([o.p0 for o in openings], dtype=np.float64).reshape(n, 3)
     last = np.array([o.p1 for o in openings], dtype=np.float64).reshape(n, 3)
     heading = np.array([o.heading for o in openings], dtype=np.float64).reshape(n, 3)
@@ -566,17 +576,29 @@ def _repeated(openings: list[Opening], radius: float, max_turn_deg: float) -> np
     cos_turn = math.cos(math.radians(max_turn_deg))
     order = np.argsort(-width, kind="stable")
     for rank, i in enumerate(order):
-        if again[i] or width[i] <= 0:
+        if into[i] >= 0 or width[i] <= 0:
             continue
         along = (last[i] - first[i]) / width[i]
         for j in order[rank + 1 :]:
-            if again[j] or np.dot(heading[i], heading[j]) < cos_turn:
+            if into[j] >= 0 or np.dot(heading[i], heading[j]) < cos_turn:
                 continue
             mid = 0.5 * (first[j] + last[j]) - first[i]
             off = np.linalg.norm(mid - np.dot(mid, along) * along)
             lo, hi = sorted((np.dot(first[j] - first[i], along), np.dot(last[j] - first[i], along)))
-            again[j] = off <= radius and lo < width[i] and hi > 0.0
-    return again
+            if off <= radius and lo < width[i] and hi > 0.0:
+                into[j] = i
+    return into
+
+
+def _union_ends(wide: Opening, parts: list[Opening]) -> tuple[np.ndarray, np.ndarray] | None:
+    """The ends of ``wide`` stretched along its own line over ``parts`` (openings repeating it); None when they lie within it."""
+    p0, p1 = np.asarray(wide.p0, dtype=np.float64), np.asarray(wide.p1, dtype=np.float64)
+    along = (p1 - p0) / wide.width
+    t = [float(np.dot(np.asarray(p, dtype=np.float64) - p0, along)) for o in parts for p in (o.p0, o.p1)]
+    lo, hi = min(0.0, *t), max(wide.width, *t)
+    if lo > -1e-9 and hi < wide.width + 1e-9:
+        return None
+    return p0 + along * lo, p0 + along * hi
 
 
 def detect_openings(
@@ -613,20 +635,16 @@ def detect_openings(
     max_gap = None if params.extent_heights is None else float(params.extent_heights) * s.height
     max_slope = None if params.max_slope_deg is None else math.radians(float(params.max_slope_deg))
     found: list[tuple[Opening, tuple[int, ...], tuple[float, float, float]]] = []
-    for e, a, b in zip(kept, p_first, p_last):
+    def scored(e: _Edge, a: np.ndarray, b: np.ndarray) -> Opening | None:
+        """The opening between ``a`` and ``b`` on ``e``'s edge with its score; None when the outer-extent prior drops it."""
         width = float(np.linalg.norm(b - a))
-        if width < min_width - 1e-9:
-            continue
-        d = b - a
-        if max_slope is not None and math.atan2(abs(d[1]), math.hypot(d[0], d[2])) > max_slope + 1e-12:
-            continue
         heading = e.outward.copy()
         heading[1] = 0.0
         heading = _unit(heading) if np.linalg.norm(heading) > 1e-6 else e.outward
         mid = (a + b) / 2.0
         gap = max(0.0, extent_gap(vertices, mid, heading, frame))
         if max_gap is not None and gap > max_gap:
-            continue
+            return None
         extent_factor = 1.0 if max_gap is None else 1.0 - gap / max_gap
         width_factor = min(1.0, width / (2.0 * min_width)) if min_width > 0 else 1.0
         score = round(e.straight * extent_factor * width_factor, 6)
@@ -637,11 +655,32 @@ def detect_openings(
         )
         left = np.cross(UP, heading)
         p0, p1 = (b, a) if np.dot(b - a, left) > 0 else (a, b)
-        opening = Opening(vec3(mid), vec3(heading), width, vec3(p0), vec3(p1), score, reason)
+        return Opening(vec3(mid), vec3(heading), width, vec3(p0), vec3(p1), score, reason)
+
+    found: list[tuple[Opening, tuple[int, ...], tuple[float, float, float]]] = []
+    edges: list[_Edge] = []
+    for e, a, b in zip(kept, p_first, p_last):
+        if float(np.linalg.norm(b - a)) < min_width + _SAME_WIDTH:
+            continue
+        d = b - a
+        if max_slope is not None and math.atan2(abs(d[1]), math.hypot(d[0], d[2])) > max_slope + 1e-12:
+            continue
+        opening = scored(e, a, b)
+        if opening is None:
+            continue
         polys = tuple(sorted(set(samples.polygon[e.samples].tolist())))
         found.append((opening, polys, vec3(e.normal)))
-    repeated = _repeated([f[0] for f in found], s.radius, float(params.max_turn_deg))
-    found = [f for f, again in zip(found, repeated) if not again]
+        edges.append(e)
+    # An opening found again is one with the wider one, which spans both.
+    into = _repeated([f[0] for f in found], s.radius, float(params.max_turn_deg))
+    for i in sorted(set(into[into >= 0].tolist())):
+        parts = [found[j] for j in np.flatnonzero(into == i)]
+        ends = _union_ends(found[i][0], [f[0] for f in parts])
+        union = None if ends is None else scored(edges[i], *ends)
+        if union is not None:
+            polys = tuple(sorted(set(found[i][1]).union(*(f[1] for f in parts))))
+            found[i] = (union, polys, found[i][2])
+    found = [f for f, again in zip(found, into) if again < 0]
     found = [f for f in found if f[0].score >= float(params.min_score) - 1e-12]
     if params.best is not None and len(found) > params.best:
         order = sorted(range(len(found)), key=lambda i: (-found[i][0].score, i))[: params.best]

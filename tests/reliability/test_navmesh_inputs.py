@@ -10,6 +10,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+import trimesh
 
 from g2s_core.cli import main
 from g2s_plugins.recast import RecastParams, SettingsError, resolve_settings
@@ -149,4 +150,54 @@ def test_memory_guard_bounds_tiles_not_the_whole_grid():
 def test_tile_count_is_bounded_without_overflow():
     corners = np.array([[0.0, 0.0, 0.0], [4.0e6, 3.0, 4.0e6]])  # 1.6e7 cells a side
     with pytest.raises(SettingsError, match="needs 3906250000 tiles"):
-        check_grid(corners, resolve_settings(Agent(), RecastParams(cell_size=0.25)), cell_size_given=True)
+        check_grid(corners, resolve_settings(Agent(), RecastParams(cell_size=0.25)), cell_size_given=True,
+                   max_level_cells=1 << 62)
+
+
+# --- a level in the wrong units (docs/errors.md, "Units and scale") -------------------------------------------------
+
+
+def test_flat_level_a_hundred_times_too_large_is_refused_at_once(tmp_path, capsys):
+    # a flat 200 m level read at mesh.scale: 100 is 20 km across and has no height to show it: 6.4e9 cells
+    # of 0.25 m, which Recast would build for about an hour; the time guard refuses it before any work
+    mesh = floor_obj(tmp_path / "f.obj", 200)
+    code, err = run(tmp_path, mesh, "mesh: {scale: 100}\n", capsys)
+    assert_refused(code, err, "mesh: the level (2e+04 x 2e+04 m", "graph.params.max_level_cells=1e+09", "mesh.scale")
+    assert run(tmp_path, mesh, "", capsys)[0] == 0
+
+
+def test_the_time_guard_counts_the_whole_grid():
+    corners = np.array([[0.0, 0.0, 0.0], [250.0, 0.0, 250.0]])  # 1000 x 1000 cells of 0.25 m
+    settings = resolve_settings(Agent())
+    check_grid(corners, settings, max_level_cells=1000 * 1000)
+    with pytest.raises(SettingsError, match=r"mesh: the level \(250 x 250 m .* 1000 x 1000 cells of 0.25 m"):
+        check_grid(corners, settings, max_level_cells=1000 * 1000 - 1)
+    with pytest.raises(SettingsError, match="graph.params.cell_size: the level"):
+        check_grid(corners, resolve_settings(Agent(), RecastParams(cell_size=0.25)), cell_size_given=True,
+                   max_level_cells=10)
+
+
+def test_level_a_hundred_times_too_small_shows_its_size(tmp_path, capsys):
+    # a 200 m level of rooms and corridors read at mesh.scale: 0.01 is 2 m across: nothing is walkable,
+    # and the error gives the size, so that the wrong units show, and names mesh.scale first
+    mesh = tmp_path / "rooms.obj"
+    rooms = trimesh.util.concatenate([trimesh.creation.box(extents=(200, 0.2, 200)).apply_translation((0, -0.1, 0))]
+                                     + [trimesh.creation.box(extents=(4, 3, 150)).apply_translation((x, 1.5, 0))
+                                        for x in (-60, -20, 20, 60)])
+    rooms.export(mesh)
+    code, err = run(tmp_path, mesh, "mesh: {scale: 0.01}\n", capsys)
+    assert_refused(code, err, "no walkable surface", "the level is 2 x 2 m (x, z), 0.032 m tall: check mesh.scale")
+    assert run(tmp_path, mesh, "", capsys)[0] == 0
+
+
+@pytest.mark.parametrize("preset", ["graph_only", "map_piece"])
+def test_y_up_level_read_as_z_up_names_the_up_axis(tmp_path, capsys, preset):
+    # mesh.up_axis: z on a Y-up file stands the level on its side: its floors face along z. The tops of its
+    # walls are walkable, so the run ends (exit 0) with a warning naming the key; a level whose walls have no
+    # walkable top stops with exit 2 and the same cause (test_bumpy_z_up_level_read_as_y_up_names_the_up_axis)
+    config = tmp_path / "c.yaml"
+    config.write_text(f"extends: {preset}\nmesh: {{up_axis: z}}\n")
+    outcome = main(["run", str(config), "sample:cross_hub", "-o", str(tmp_path / "out"), "--quiet"])
+    err = capsys.readouterr().err
+    assert outcome == 0, err
+    assert "Traceback" not in err and "`mesh: {up_axis: z}` (or `y` if it is already z)" in err, err
