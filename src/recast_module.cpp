@@ -552,13 +552,66 @@ double detail_floor_gap(const rcPolyMesh& pm, const rcPolyMeshDetail& dm, int me
     return worst;
 }
 
+// Twice the signed plan area of triangle (a, k, b): positive when counter-clockwise (x right, second
+// coordinate up).
+template <typename T>
+T twice_area(const std::array<T, 2>& a, const std::array<T, 2>& k, const std::array<T, 2>& b) {
+    return (k[0] - a[0]) * (b[1] - a[1]) - (b[0] - a[0]) * (k[1] - a[1]);
+}
+
+// The triangulation of a convex polygon (`outline`: its plan points in order round it, either way)
+// whose diagonals have the least total length: dynamic programming over the chain (minimum weight
+// triangulation of a convex polygon; Gilbert 1979, Klincsek 1980), O(n^3) time, O(n^2) memory.
+// A triangle whose doubled area is under `flat_area` (collinear points) is never used. Returns the
+// n - 2 triangles as outline positions (a, k, b), a < k < b, so wound as the outline is; empty for
+// fewer than 3 points or when no triangulation avoids flat triangles. T (float or double) is the
+// precision of the areas and lengths.
+template <typename T>
+std::vector<std::array<int, 3>> least_diagonal_triangulation(const std::vector<std::array<T, 2>>& outline,
+                                                              double flat_area) {
+    const int n = static_cast<int>(outline.size());
+    std::vector<std::array<int, 3>> triangles;
+    if (n < 3) return triangles;
+    auto plan = [&](int a, int b) {
+        return std::hypot(outline[a][0] - outline[b][0], outline[a][1] - outline[b][1]);
+    };
+    const double inf = std::numeric_limits<double>::infinity();
+    std::vector<double> cost(static_cast<size_t>(n) * n, inf);
+    std::vector<int> apex(static_cast<size_t>(n) * n, -1);
+    for (int a = 0; a + 1 < n; ++a) cost[a * n + a + 1] = 0.0;
+    for (int gap = 2; gap < n; ++gap)
+        for (int a = 0; a + gap < n; ++a) {
+            const int b = a + gap;
+            for (int k = a + 1; k < b; ++k) {
+                if (std::fabs(twice_area(outline[a], outline[k], outline[b])) < flat_area) continue;
+                const double c = cost[a * n + k] + cost[k * n + b] + (k > a + 1 ? plan(a, k) : 0.0) +
+                                 (b > k + 1 ? plan(k, b) : 0.0);
+                if (c < cost[a * n + b]) {
+                    cost[a * n + b] = c;
+                    apex[a * n + b] = k;
+                }
+            }
+        }
+    if (cost[n - 1] == inf) return triangles;
+    std::vector<std::pair<int, int>> todo = {{0, n - 1}};
+    while (!todo.empty()) {
+        const auto [a, b] = todo.back();
+        todo.pop_back();
+        if (b - a < 2) continue;
+        const int k = apex[a * n + b];
+        triangles.push_back({a, k, b});
+        todo.push_back({a, k});
+        todo.push_back({k, b});
+    }
+    return triangles;
+}
+
 // Recast triangulates a polygon that gets no inside samples with triangulateHull, which walks round
 // the hull greedily and, on a long sliver, fans out from one hull sample: the fan's inner edges run
 // along the polygon, over its bends. This retriangulates the detail `one` (polygon `i` of `pm` alone)
 // when every vertex of it lies on the polygon's outline: the samples in order round the convex polygon,
-// joined by the triangulation of least total diagonal length in plan (dynamic programming over the
-// convex chain, O(n^3) for Recast's n <= 127 samples), whose diagonals cross the sliver instead.
-// Returns false, leaving `one` as it was, if a vertex lies inside or no such triangulation exists.
+// joined by least_diagonal_triangulation (Recast's n <= 127 samples), whose diagonals cross the sliver
+// instead. Returns false, leaving `one` as it was, if a vertex lies inside or no such triangulation exists.
 bool shortest_hull_triangulation(const rcPolyMesh& pm, int i, rcPolyMeshDetail& one) {
     const unsigned short* p = &pm.polys[static_cast<size_t>(i) * 2 * pm.nvp];
     int nin = 0;
@@ -590,29 +643,10 @@ bool shortest_hull_triangulation(const rcPolyMesh& pm, int i, rcPolyMeshDetail& 
         angle[k] = std::atan2(v[k * 3 + 2] - cz, v[k * 3] - cx);
     }
     std::sort(hull.begin(), hull.end(), [&](int a, int b) { return angle[a] < angle[b]; });
-    auto plan = [&](int a, int b) { return std::hypot(v[hull[a] * 3] - v[hull[b] * 3], v[hull[a] * 3 + 2] - v[hull[b] * 3 + 2]); };
-    auto twice_area = [&](int a, int k, int b) {
-        const float *va = &v[hull[a] * 3], *vk = &v[hull[k] * 3], *vb = &v[hull[b] * 3];
-        return (vk[0] - va[0]) * (vb[2] - va[2]) - (vb[0] - va[0]) * (vk[2] - va[2]);
-    };
-    const double inf = std::numeric_limits<double>::infinity();
-    std::vector<double> cost(static_cast<size_t>(n) * n, inf);
-    std::vector<int> apex(static_cast<size_t>(n) * n, -1);
-    for (int a = 0; a + 1 < n; ++a) cost[a * n + a + 1] = 0.0;
-    for (int gap = 2; gap < n; ++gap)
-        for (int a = 0; a + gap < n; ++a) {
-            const int b = a + gap;
-            for (int k = a + 1; k < b; ++k) {
-                if (std::fabs(twice_area(a, k, b)) < on_outline * on_outline) continue;  // collinear samples
-                const double c = cost[a * n + k] + cost[k * n + b] + (k > a + 1 ? plan(a, k) : 0.0) +
-                                 (b > k + 1 ? plan(k, b) : 0.0);
-                if (c < cost[a * n + b]) {
-                    cost[a * n + b] = c;
-                    apex[a * n + b] = k;
-                }
-            }
-        }
-    if (cost[n - 1] == inf) return false;
+    std::vector<std::array<float, 2>> outline(n);
+    for (int k = 0; k < n; ++k) outline[k] = {v[hull[k] * 3], v[hull[k] * 3 + 2]};
+    const std::vector<std::array<int, 3>> triangles = least_diagonal_triangulation(outline, on_outline * on_outline);
+    if (triangles.empty()) return false;
     // Recast's winding (its first triangle's), and its edge flags: 1 for an edge on the outline.
     const unsigned char* t0 = one.tris;
     const float *a0 = &v[t0[0] * 3], *b0 = &v[t0[1] * 3], *c0 = &v[t0[2] * 3];
@@ -620,14 +654,9 @@ bool shortest_hull_triangulation(const rcPolyMesh& pm, int i, rcPolyMeshDetail& 
     unsigned char* tris = static_cast<unsigned char*>(rcAlloc(4 * (n - 2), RC_ALLOC_PERM));
     if (!tris) fail("rcAlloc failed (out of memory)");
     int ntris = 0;
-    std::vector<std::pair<int, int>> todo = {{0, n - 1}};
-    while (!todo.empty()) {
-        const auto [a, b] = todo.back();
-        todo.pop_back();
-        if (b - a < 2) continue;
-        const int k = apex[a * n + b];
-        int corner[3] = {a, k, b};
-        if ((twice_area(a, k, b) < 0) != clockwise) std::swap(corner[1], corner[2]);
+    for (std::array<int, 3> corner : triangles) {
+        if ((twice_area(outline[corner[0]], outline[corner[1]], outline[corner[2]]) < 0) != clockwise)
+            std::swap(corner[1], corner[2]);
         unsigned char* t = &tris[ntris++ * 4];
         t[3] = 0;
         for (int e = 0; e < 3; ++e) {
@@ -635,8 +664,6 @@ bool shortest_hull_triangulation(const rcPolyMesh& pm, int i, rcPolyMeshDetail& 
             const int d = std::abs(corner[e] - corner[(e + 1) % 3]);
             if (d == 1 || d == n - 1) t[3] |= static_cast<unsigned char>(1 << (2 * e));
         }
-        todo.push_back({a, k});
-        todo.push_back({k, b});
     }
     rcFree(one.tris);
     one.tris = tris;
@@ -1783,5 +1810,20 @@ NB_MODULE(_recast, m) {
     def_build<float, int64_t>(m);
     def_build<double, int64_t>(m);
     m.attr("DT_VERTS_PER_POLYGON") = DT_VERTS_PER_POLYGON;
+    m.def("least_diagonal_triangulation",
+          [](nb::ndarray<const double, nb::shape<-1, 2>, nb::c_contig, nb::device::cpu> points, double flat_area) {
+              std::vector<std::array<double, 2>> outline(points.shape(0));
+              for (size_t k = 0; k < outline.size(); ++k) outline[k] = {points(k, 0), points(k, 1)};
+              std::vector<int32_t> flat;
+              for (const auto& t : least_diagonal_triangulation(outline, flat_area)) flat.insert(flat.end(), t.begin(), t.end());
+              return to_numpy(flat, flat.size() / 3, 3);
+          },
+          nb::arg("points"), nb::arg("flat_area") = 1e-12,
+          "(n-2,3) int32: the triangulation of least total diagonal length of the convex polygon whose "
+          "(n,2) float64 plan points are given in order round it (the rule that retriangulates a detail "
+          "polygon with no inside samples), as rows (a, k, b) of point indices, a < k < b, so wound as "
+          "the points are; dynamic programming, O(n^3). Triangles whose doubled area is under "
+          "flat_area (collinear points) are never used. (0,3) for fewer than 3 points or when every "
+          "triangulation needs such a triangle.");
 }
 
