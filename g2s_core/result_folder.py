@@ -83,8 +83,9 @@ def staged(outdir: Path, obsolete: Sequence[Path] = (), protect: Sequence[Path] 
     staging = None
     try:
         for folder in reversed(_missing_folders(outdir.parent)[1]):  # outermost first
-            folder.mkdir()
-            created.append(folder)
+            with contextlib.suppress(FileExistsError):  # made meanwhile by another run (a batch's pairs share a folder)
+                folder.mkdir()
+                created.append(folder)
         inside = outdir.is_dir()
         home = outdir if inside else outdir.parent
         _remove_stale(home)

@@ -13,6 +13,7 @@ from pathlib import Path
 import pytest
 
 from g2s_core.errors import G2SError
+from g2s_core import result_folder
 from g2s_core.result_folder import STAGING_MARK, staged
 from g2s_plugins.outputs import heatmap
 from tests.reliability.checks import CORRIDOR, assert_clean_error, run_g2s, run_g2s_process, snapshot, tree
@@ -168,6 +169,23 @@ def test_staging_of_a_live_process_is_left_alone(tmp_path):
     with staged(tmp_path / "out") as staging:
         (staging / "a.txt").write_text("a")
     assert live.is_dir() and (tmp_path / "out" / "a.txt").read_text() == "a"
+
+
+def test_a_parent_folder_made_meanwhile_by_another_run_is_shared(tmp_path, monkeypatch):
+    """Two batch pairs of one config write into its folder at once: both may find it missing, one makes it first."""
+    out = tmp_path / "config" / "level"
+    missing_folders = result_folder._missing_folders
+
+    def racing(folder):
+        found = missing_folders(folder)
+        if folder == out.parent:
+            folder.mkdir()  # the other pair, between this run's look and its mkdir
+        return found
+
+    monkeypatch.setattr(result_folder, "_missing_folders", racing)
+    with staged(out) as staging:
+        (staging / "a.txt").write_text("a")
+    assert (out / "a.txt").read_text() == "a" and tree(tmp_path) == ["config", "config/level", "config/level/a.txt"]
 
 
 def test_staged_api_error_names_the_folder(tmp_path):
