@@ -146,10 +146,6 @@ HELD_OUT_VARIATIONS = [
 """Held-out families with other parameters: 1.6 and 1.2 m bridges, a sill above the climb but low, a 0.3 m
 threshold, wider tunnels, a door exactly the agent's diameter, a piece whose only door is too narrow."""
 
-FAMILIES = {**pieces.PIECES, **pieces.HELD_OUT}
-"""Every generated family the benchmark knows, by name."""
-
-
 def print_table(rows: list[tuple[dict, str]]) -> None:
     """The per-piece table: counts, precision, recall, trees, surface gaps and scores."""
     print(f"{'piece':58s} {'ref':8s} {'found':>5s} {'refs':>4s} {'precision':>10s} {'recall':>8s} "
@@ -196,7 +192,7 @@ def main(argv: list[str] | None = None) -> int:
     for index, yaw in enumerate(args.yaws):
         rows = []
         for name, kwargs in generated:
-            level = FAMILIES[name](**kwargs)
+            level = pieces.PIECES[name](**kwargs)
             if yaw:
                 level = pieces.turned(level, yaw)
             reference = np.array([o.position for o in level.openings], dtype=np.float64)

@@ -634,7 +634,7 @@ def detect_openings(
     min_width = float(params.min_width_radii) * s.radius
     max_gap = None if params.extent_heights is None else float(params.extent_heights) * s.height
     max_slope = None if params.max_slope_deg is None else math.radians(float(params.max_slope_deg))
-    found: list[tuple[Opening, tuple[int, ...], tuple[float, float, float]]] = []
+
     def scored(e: _Edge, a: np.ndarray, b: np.ndarray) -> Opening | None:
         """The opening between ``a`` and ``b`` on ``e``'s edge with its score; None when the outer-extent prior drops it."""
         width = float(np.linalg.norm(b - a))
