@@ -32,7 +32,10 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
 5. Matching to the geometry (the paper's "corresponding segment in the
    original geometry"): the edge points of a segment must fit one straight
    line within ``edge_tolerance_radii * r`` (80 % of them) or follow the
-   boundary's direction within ``match_angle_deg`` (a curved edge). The
+   boundary's direction within ``match_angle_deg`` (a curved edge); a
+   segment that fits neither is fitted again without the samples at its ends
+   whose way out lies more than ``max_turn_deg`` from its median one (a
+   segment that walked round a corner onto the edge). The
    opening lies on that line; its ends are extended along the edge while the
    surface goes on inside the edge, ends just outside it, and nothing stands
    in the way or straight out: this undoes the retreat from walls. An
@@ -109,6 +112,19 @@ _REFINE_ROUNDS = 4
 _SAME_WIDTH = 1e-4
 """Metres: widths this close are equal (an opening between jambs measures their distance to the ray
 caster's single precision: a 0.8 m door 0.8000011 m)."""
+
+_INSET_STEPS = 0.5
+"""Search steps: how far inside the edge line the extension's candidates stand. Past an open corner the
+floor goes on under them for about this far again (a chamfer's 135-degree corner), so the measured width
+grows by twice it: 0.5 steps (0.025 m for the map-piece agent) is 8 times the found edge's precision
+(:data:`_REFINE_ROUNDS`); at 2 steps the 0.64 m chamfers of ``chamfered_platform`` measured 0.88 m,
+wider than the agent (docs/entry_exit.md)."""
+
+_SNAP_SLACK = 0.01
+"""Metres added to the snap's downward reach (2 x ``snap_distance``): Recast lifts a navmesh corner to the
+highest span around it, up to the climb above the floor, and single precision and a polygon tilted
+towards that corner then put the floor a fraction of a millimetre beyond the reach (0.80017 m for 0.8 m:
+``curb_platform curb=0.35`` turned by 30 to 60 degrees); the smallest cell height allowed."""
 
 
 class Params(PluginParams):
@@ -245,7 +261,7 @@ def _snap(
     # Down: from ``snap`` above the sample, so a sample a little under the surface is found too.
     down = caster.first_hits(samples.position + n_nav * snap, -n_nav)
     dist, pts, tri = down.distance, down.points, down.face
-    ok = dist <= 2.0 * snap
+    ok = dist <= 2.0 * snap + _SNAP_SLACK
     miss = np.nonzero(~ok)[0]
     if len(miss):
         up = caster.first_hits(samples.position[miss], n_nav[miss])
@@ -402,13 +418,33 @@ def _match_edges(segments: list[np.ndarray], ways: _Ways, s: _Settings, params: 
     """Match each segment to the straight (or smoothly curved) edge its samples found; others are dropped."""
     tolerance = max(2.0 * s.delta, float(params.edge_tolerance_radii) * s.radius)
     cos_match = math.cos(math.radians(float(params.match_angle_deg)))
-    kept = []
-    for samples in segments:
+    cos_turn = math.cos(math.radians(float(params.max_turn_deg)))
+
+    def fit(samples: np.ndarray) -> tuple[np.ndarray, np.ndarray, float] | None:
         points = ways.edge[samples]
         centre, direction, residual = _fit_line(points)
         straight = float(np.count_nonzero(residual <= tolerance)) / len(points)
         if straight < 0.8 and not _follows(points, ways.tangent[samples], cos_match):
-            continue  # the edge points fit no straight edge and no curve along the segment: a corner
+            return None  # the edge points fit no straight edge and no curve along the segment: a corner
+        return centre, direction, straight
+
+    kept = []
+    for samples in segments:
+        matched = fit(samples)
+        if matched is None:
+            # A segment that walked round a corner onto an edge (its way out turning a little at each
+            # sample, never by max_turn_deg at once): the samples at its ends looking out more than
+            # max_turn_deg away from its median way out belong to the corner; fit the rest again.
+            median = _unit(np.median(ways.direction[samples], axis=0))
+            inside = np.flatnonzero(ways.direction[samples] @ median >= cos_turn)
+            if len(inside) < 2:
+                continue
+            samples = samples[inside[0]: inside[-1] + 1]
+            matched = fit(samples)
+            if matched is None:
+                continue
+        centre, direction, straight = matched
+        points = ways.edge[samples]
         if np.dot(direction, points[-1] - points[0]) < 0:
             direction = -direction
         nrm = _unit(ways.normal[samples].mean(axis=0))
@@ -434,7 +470,7 @@ def _extend(kept: list[_Edge], caster: RayCaster, s: _Settings) -> tuple[np.ndar
     first = np.array([e.first for e in kept])
     last = np.array([e.last for e in kept])
     along = _unit(np.cross(nrm, out))  # walking direction along the edge (interior on the left)
-    inset = 2.0 * s.delta  # candidates stand this far inside the edge line
+    inset = _INSET_STEPS * s.delta  # candidates stand this far inside the edge line
     n_ext = max(1, int(math.ceil((2.0 * s.radius + s.step) / s.delta)))
     steps = s.delta * np.arange(1, n_ext + 1)
     ends = np.stack([first, last])  # (2, n, 3)
