@@ -62,6 +62,9 @@ def test_the_preset_erodes_exactly_the_agent_radius() -> None:
         ("curb_platform", {"curb": 0.35, "gap": 1.2}, 45.0),
         # The chamfers (0.64 m) measured 0.88 m when the extension's probes stood 0.1 m inside the edge.
         ("chamfered_platform", {}, 30.0),
+        # Thresholds higher than the rays (0.2 m): found from the step's top, between the door's jambs.
+        ("threshold_door", {"step": 0.3}, 0.0),
+        ("threshold_door", {"step": 0.35}, 10.0),
     ],
 )
 def test_every_known_opening_and_nothing_else(run, name: str, kwargs: dict, yaw: float) -> None:
@@ -80,7 +83,7 @@ def _ways(directions: np.ndarray, edges: np.ndarray) -> entry_exit._Ways:
     n = len(edges)
     up = np.tile([0.0, 1.0, 0.0], (n, 1))
     tangent = np.tile([0.0, 0.0, -1.0], (n, 1))
-    return entry_exit._Ways(edges.copy(), up, tangent, np.ones(n, bool), directions, edges)
+    return entry_exit._Ways(edges.copy(), up, tangent, np.ones(n, bool), directions, edges, np.zeros(n, bool))
 
 
 def test_a_segment_that_walks_round_a_corner_is_fitted_without_the_corner() -> None:
@@ -99,3 +102,19 @@ def test_a_segment_that_walks_round_a_corner_is_fitted_without_the_corner() -> N
     # Whole, the segment fits no line: the corner's four edge points are off it.
     _, _, residual = entry_exit._fit_line(ways.edge)
     assert np.count_nonzero(residual <= 0.1) < 0.8 * 13
+
+
+def _detect(level, **params):
+    navmesh = build_navmesh(level.mesh.vertices, level.mesh.faces, CONFIG.agent, RecastParams(**CONFIG.graph.params))
+    return entry_exit.detect_openings(level.mesh, navmesh, CONFIG.agent, entry_exit.Params(**params))
+
+
+def test_a_step_up_is_a_doorway_only_between_jambs() -> None:
+    threshold = pieces.threshold_door(step=0.3)
+    assert len(_detect(threshold).openings) == 2
+    (level,) = _detect(threshold, step_up=False).openings  # the rays at 0.2 m meet the 0.3 m step
+    assert level.position[0] > 1.0  # the east doorway only
+    # The curb is the same step at the piece's edge, with no jambs: only its gaps are openings.
+    curb = pieces.curb_platform(curb=0.3)
+    found = _detect(curb).openings
+    assert len(found) == 2 and all(o.width == pytest.approx(2.0, abs=0.1) for o in found)
