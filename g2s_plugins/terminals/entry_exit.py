@@ -140,7 +140,8 @@ class Params(PluginParams):
     sample_height: float | None = Field(
         None,
         gt=0,
-        description="height of the rays above the surface, m: a curb or sill higher than this closes the way; "
+        description="height of the rays above the surface, m: a curb or sill higher than this closes the way "
+        "(but a step within the climb between jambs, see step_up); "
         "None: half the agent's max climb, at least 0.1",
     )
     snap_distance: float | None = Field(
