@@ -355,7 +355,8 @@ def join_passages(labels: np.ndarray, sides: np.ndarray, passage: np.ndarray) ->
         sides: (C, 2) the groups on the two sides of every chokepoint candidate.
         passage: (G,) bool, whether each group is a passage.
 
-    Returns labels numbered by their lowest polygon id.
+    Returns:
+        (P,) the region of every polygon, regions numbered by their lowest polygon id.
     """
     count = len(passage)
     sides = sides[sides[:, 0] != sides[:, 1]]

@@ -81,8 +81,9 @@ def _floor_cells(room: np.ndarray, boxes: list[tuple[float, float, float, float]
     x0, x1, z0, z1 = room
     xs = np.unique(np.clip([x0, x1, *(v for box in boxes for v in box[:2])], x0, x1))
     zs = np.unique(np.clip([z0, z1, *(v for box in boxes for v in box[2:])], z0, z1))
-    inside = lambda x, z: any(a < x < b and c < z < d for a, b, c, d in boxes)  # noqa: E731
-    return [(a, b, c, d) for a, b in zip(xs, xs[1:]) for c, d in zip(zs, zs[1:]) if not inside((a + b) / 2, (c + d) / 2)]
+    cells = [(a, b, c, d) for a, b in zip(xs, xs[1:]) for c, d in zip(zs, zs[1:])]
+    return [cell for cell in cells if not any(a < (cell[0] + cell[1]) / 2 < b and c < (cell[2] + cell[3]) / 2 < d
+                                              for a, b, c, d in boxes)]
 
 
 def _build(name: str, rooms: list[tuple[float, float, float, float, float]],
