@@ -258,9 +258,9 @@ def lecture_hall(
     a block juts into the aisles so that an aisle's ends are ``aisle_end``
     wide (wall to wall). The blocks are obstacles larger than
     ``obstacle_area``: walls to the split. Expected: one region, the hall, no
-    chokepoint (the aisles are passages within it; each used to be a region
-    between two chokepoints: 1 m walkable, ends 0.7 m, as in the lecture hall
-    of docs/plugins.md's real levels). Metadata ``aisles``: ``{"x0", "x1", "z0",
+    chokepoint (the aisles are passages within it; before the width rule each
+    was a region between two chokepoints, as the 1 m aisles with 0.7-0.8 m
+    ends of the lecture hall of docs/plugins.md's real levels). Metadata ``aisles``: ``{"x0", "x1", "z0",
     "z1"}`` of each aisle between blocks.
 
     Args:
@@ -301,7 +301,8 @@ def ring_corridor(
     middle of the -X side. Expected: two regions (the ring and the room) and the
     door the one chokepoint; the pilasters are no chokepoints (as on
     docs/plugins.md's real levels, where a ring 2.5 m walkable narrowed to
-    1.5-1.8 m was cut into 3 regions).
+    1.5-1.8 m was cut into 3 regions). Not met: the ring is still cut at its
+    pilasters (docs/plugins.md, "Passages, not rooms").
 
     Args:
         size: side of the square around the closed room, metres.
