@@ -26,7 +26,10 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
    roof over its floor or a hole under its ramp is no exit). A sample with a
    way out takes the one reaching the edge soonest. The fan, rather than one
    ray straight out, finds the way out of Recast's V-shaped notch in a
-   doorway through a thick wall, whose slanted sides face the jambs.
+   doorway through a thick wall, whose slanted sides face the jambs. With
+   ``step_up``, a sample with no way out whose ray straight out meets a step
+   within the climb (a threshold, a curb) looks again from the step's top;
+   such an opening is kept only between jambs (step 6).
 4. Segments: runs of consecutive samples with a way out, split where the way
    out turns by more than ``max_turn_deg``.
 5. Matching to the geometry (the paper's "corresponding segment in the
@@ -48,6 +51,9 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
    * width: openings no wider than ``min_width_radii * r`` (default the
      agent's diameter) are dropped (chamfers, slivers, a door exactly as
      wide as the agent, which Recast erodes away);
+   * jambs (``step_up``): an opening found from step tops needs something
+     at half the agent's height within two search steps of both its ends
+     (a threshold's jambs); a curb along the piece's edge has none;
    * reachability (``main_floor_only``): the opening must run along the
      navmesh floor of largest area, the main floor and what the agent
      reaches from it (an unreachable wall top, a roof, holds no exit); a
@@ -264,7 +270,7 @@ class _Ways:
 def _snap(
     samples: LoopSamples, polygon_normals: np.ndarray, caster: RayCaster, s: _Settings
 ) -> tuple[np.ndarray, np.ndarray]:
-    """Samples moved onto the mesh along the polygon normal (down first, then up) and the hit normals.
+    """Samples moved onto the mesh (down along the polygon normal, straight down, then up) and the hit normals.
 
     Only faces the agent can walk count: a polygon Recast laid over a step tilts, and its normal
     can lead onto the riser."""
@@ -359,8 +365,9 @@ def _step_tops(
 ) -> tuple[np.ndarray, np.ndarray]:
     """Where the agent steps up onto what blocks the rays straight out: (M,) bool and (M,3) the step's top.
 
-    A point's step is what its straight-out ray meets within ``outward_radii * r`` when the surface just
-    behind that face lies higher than the rays but within the climb, facing up (a threshold, a curb).
+    A point's step is what its straight-out ray meets within ``outward_radii * r`` when the surface one
+    search step behind that face lies within the climb, higher than half the rays' height (not the floor
+    under a wall) and facing up: a threshold, a curb.
     """
     lifted = base + normal * s.lift
     hit = caster.first_hits(lifted, outward)
