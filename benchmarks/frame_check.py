@@ -3,8 +3,12 @@
 Run: ``.venv/bin/python benchmarks/frame_check.py [--sampling]``
 
 For every sample level (:data:`g2s_plugins.samples.levels.SAMPLES`), four
-generated dungeons, ``../shared/data/nav_test.obj`` and the two shared pieces,
-four versions of the mesh:
+generated dungeons, ``../shared/data/nav_test.obj``, the two shared pieces and
+two generated pieces whose answers are known (:func:`thick_tiled_room`: its
+floor tiles are closed slabs thicker than the agent's climb and thinner than
+its height, so wound inside out they hide their floor; :func:`inward_box_room`:
+a room modelled as one closed box seen from inside, whose negative volume is
+meant and must not be warned about), four versions of the mesh:
 
 * ``correct``: as made (Y up, outward-facing solids);
 * ``z-up``: the same level written as a Z-up file and read with the default
@@ -15,7 +19,9 @@ four versions of the mesh:
 Per version it prints (a Markdown table) the statistics
 :mod:`g2s_plugins.walkable_check` decides on: the height over the shorter
 horizontal side, the flat area facing along z over that along y, the closed
-bodies wound inside out (and the seconds counting them took), and per graph
+bodies wound inside out, those of them that hide their floor (under less
+than the agent's height of headroom) and the microseconds a face finding
+them took (on the machine's load of the moment), and per graph
 builder (navmesh; with ``--sampling`` also sampling) the *walkable share*
 (the nodes' area over the level's horizontal bounding-box area) and what g2s
 tells the user (warning or error, and the causes it names). Pieces (the
@@ -39,11 +45,44 @@ from g2s_core.errors import G2SError
 from g2s_core.mesh import Z_UP_TO_Y_UP
 from g2s_plugins.samples.levels import SAMPLES, load_sample
 from g2s_plugins.samples.pieces import PIECES
-from g2s_plugins.walkable_check import footprint_area, height_ratio, inside_out_bodies
+from g2s_plugins.walkable_check import (
+    flat_area_ratio,
+    footprint_area,
+    height_ratio,
+    hidden_floor_bodies,
+    inside_out_bodies,
+)
 
 ROOT = Path(__file__).resolve().parents[1]
 SHARED = ROOT.parent / "shared" / "data"
 DUNGEONS = [{"rooms": 12, "seed": 0}, {"rooms": 40, "seed": 1}, {"rooms": 115, "seed": 2}, {"rooms": 600, "seed": 3}]
+
+
+def box(low: tuple[float, float, float], high: tuple[float, float, float]) -> trimesh.Trimesh:
+    """The closed, outward-facing box between corners ``low`` and ``high`` (metres)."""
+    low_corner, high_corner = np.asarray(low, dtype=float), np.asarray(high, dtype=float)
+    return trimesh.creation.box(extents=high_corner - low_corner).apply_translation((low_corner + high_corner) / 2)
+
+
+def thick_tiled_room(thickness: float = 0.6) -> trimesh.Trimesh:
+    """An 8 x 6 m room floored with four closed tiles ``thickness`` thick (top at y = 0), walled 3 m high
+    and 0.3 m thick, with a 1.6 m doorway in its east wall. The default 0.6 m lies between
+    ``map_piece``'s agent climb (0.4 m: Recast cannot merge an upturned underside with the top)
+    and height (2 m). The tiles are 2 cm apart (less than a navmesh cell), so that no two share an
+    edge and each is a closed body of its own."""
+    gap = 0.02
+    tiles = [box((x + gap / 2, -thickness, z + gap / 2), (x + 4.0 - gap / 2, 0.0, z + 3.0 - gap / 2))
+             for x in (0.0, 4.0) for z in (0.0, 3.0)]
+    walls = [box((-0.3, -thickness, -0.3), (0.0, 3.0, 6.3)), box((8.0, -thickness, -0.3), (8.3, 3.0, 2.2)),
+             box((8.0, -thickness, 3.8), (8.3, 3.0, 6.3)), box((0.0, -thickness, -0.3), (8.0, 3.0, 0.0)),
+             box((0.0, -thickness, 6.0), (8.0, 3.0, 6.3))]
+    return trimesh.util.concatenate(tiles + walls)
+
+
+def inward_box_room() -> trimesh.Trimesh:
+    """An 8 x 3 x 6 m room modelled as one closed box wound inwards: seen from inside, its floor
+    faces up into it (negative signed volume, on purpose)."""
+    return inverted(box((0.0, 0.0, 0.0), (8.0, 3.0, 6.0)))
 
 
 def levels() -> list[tuple[str, trimesh.Trimesh, bool]]:
@@ -53,6 +92,7 @@ def levels() -> list[tuple[str, trimesh.Trimesh, bool]]:
     found.append(("nav_test.obj", trimesh.load(SHARED / "nav_test.obj", force="mesh", process=False), False))
     found += [(f"{p}.obj", trimesh.load(SHARED / "pieces" / f"{p}.obj", force="mesh", process=False), True)
               for p in ("Hallway", "Ramp")]
+    found += [("thick_tiled_room", thick_tiled_room(), True), ("inward_box_room", inward_box_room(), True)]
     return found
 
 
@@ -102,24 +142,17 @@ def _causes(message: str) -> str:
     return f" {'+'.join(causes)}" if causes else ""
 
 
-def inside_out(mesh: trimesh.Trimesh) -> tuple[int, float]:
-    """(closed bodies wound inside out, seconds to count them)."""
-    start = time.perf_counter()
-    count = inside_out_bodies(mesh)
-    return count, time.perf_counter() - start
-
-
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--sampling", action="store_true", help="also measure the sampling builder")
     args = parser.parse_args()
     versions = {"correct": lambda m: m, "z-up": z_up_misread, "inverted": inverted, "half inv.": half_inverted}
     builders = ["navmesh", "sampling"] if args.sampling else ["navmesh"]
-    print(f"| level | version | faces | height ratio | z/y flat area | inside-out bodies (s) | "
+    print("| level | version | faces | height ratio | z/y flat area | inside-out bodies | hiding their floor (µs a face) | "
           + " | ".join(f"{b} share | g2s says" for b in builders) + " |")
-    print("|---" * (6 + 2 * len(builders)) + "|")
+    print("|---" * (7 + 2 * len(builders)) + "|")
     for name, mesh, piece in levels():
-        max_slope = 60.0 if piece else 45.0
+        agent = resolve_config("map_piece" if piece else "map_analysis")[0].agent
         for version_name, make in versions.items():
             version = make(mesh)
             cells = []
@@ -127,18 +160,11 @@ def main() -> None:
                 area, said = graph_run(version, piece, builder)
                 cells += [f"{area / footprint_area(version):.3f}", said]
             start = time.perf_counter()
-            bodies = inside_out_bodies(version)
-            seconds = time.perf_counter() - start
+            hiding = hidden_floor_bodies(version, agent)
+            micros = 1e6 * (time.perf_counter() - start) / len(version.faces)
             print(f"| {name} | {version_name} | {len(mesh.faces)} | {height_ratio(version):.2f} | "
-                  f"{flat_area_ratio(version, max_slope):.2f} | {bodies} ({seconds:.2f}) | " + " | ".join(cells) + " |",
-                  flush=True)
-
-
-def flat_area_ratio(mesh: trimesh.Trimesh, max_slope: float) -> float:
-    """Area of the faces within ``max_slope`` of ±Z over that of the faces within it of ±Y."""
-    normals, areas = np.abs(np.asarray(mesh.face_normals)), np.asarray(mesh.area_faces)
-    flat = np.cos(np.radians(max_slope))
-    return float(areas[normals[:, 2] >= flat].sum() / areas[normals[:, 1] >= flat].sum())
+                  f"{flat_area_ratio(version, agent.max_slope):.2f} | {inside_out_bodies(version)} | "
+                  f"{hiding} ({micros:.0f}) | " + " | ".join(cells) + " |", flush=True)
 
 
 if __name__ == "__main__":

@@ -10,14 +10,18 @@ looks like a success. Both graph builders (navmesh and sampling) call
 
 The rule, from ``benchmarks/frame_check.py`` (table and justification in
 docs/errors.md): a run is *suspicious* when its walkable area is less than
-:data:`MIN_WALKABLE_SHARE` of the level's footprint, or when the level is
-more than :data:`MAX_HEIGHT_RATIO` times as tall as its shorter horizontal
-side. A suspicious run is warned about only when a cause is found
+:data:`MIN_WALKABLE_SHARE` of the level's footprint, or less than
+:data:`SMALL_MESH_SHARE` of it on a mesh of at most :data:`SMALL_MESH_FACES`
+faces (:func:`looks_for_winding`), or when the level is more than
+:data:`MAX_HEIGHT_RATIO` times as tall as its shorter horizontal side. A
+suspicious run is warned about only when a cause is found
 (:func:`likely_causes`): the level looks Z-up (:func:`looks_z_up`), or, for
-a small share, closed bodies are wound inside out. No correct level measured
-is suspicious, so on them the check costs a sum over the nodes; the
-inside-out count (20 to 110 µs a face) runs only on the suspicious path and
-on the error.
+a small share, closed bodies are wound inside out so that they hide their
+floor (:func:`hidden_floor_bodies`; a room modelled as a box seen from
+inside is wound inwards on purpose and does not count). No correct level
+measured above :data:`SMALL_MESH_FACES` faces is suspicious, so on big
+levels the check costs a sum over the nodes; the inside-out count (20 to
+110 µs a face) runs only on the suspicious path and on the error.
 """
 
 from __future__ import annotations
@@ -36,6 +40,16 @@ from g2s_core.model import RunContext
 MIN_WALKABLE_SHARE = 0.1
 """Walkable area over the footprint below which a run is suspicious: every correct level measured has
 0.12 or more, the misread and inside-out ones it should catch 0.08 or less (docs/errors.md)."""
+
+SMALL_MESH_FACES = 2000
+"""Faces up to which a mesh is small: its inside-out count costs at most 0.04 to 0.22 s (20 to 110 µs a face),
+so a share under :data:`SMALL_MESH_SHARE` is enough to look (docs/errors.md)."""
+
+SMALL_MESH_SHARE = 0.5
+"""Walkable share under which a small mesh is looked at for inside-out bodies (docs/errors.md)."""
+
+RAY_START = 1e-3
+"""Height over a face's centre the headroom ray of :func:`hidden_floor_bodies` starts at, metres: clear of the face."""
 
 MAX_HEIGHT_RATIO = 2.0
 """Height over the shorter horizontal side above which a level is suspicious: the correct levels measured
@@ -96,8 +110,44 @@ def inside_out_bodies(mesh: trimesh.Trimesh) -> int:
     Coincident vertices are merged first (on a copy), so that a body written
     with split vertices (an OBJ's per-face normals) is still one closed body.
     """
+    return len(_inside_out_faces(mesh)[1])
+
+
+def hidden_floor_bodies(mesh: trimesh.Trimesh, agent: AgentConfig) -> int:
+    """How many closed bodies of ``mesh`` are wound inside out *and* hide their floor that way.
+
+    A closed body of negative signed volume (:func:`inside_out_bodies`) is
+    either a solid wound inside out, whose upturned underside lies under its
+    own top, or a room modelled as a closed box seen from inside, whose floor
+    faces up into the room on purpose. Cast up from each of the body's faces
+    that face up (within ``agent.max_slope``), the first face of ``mesh`` above
+    lies less than ``agent.height`` over the solid's underside (the agent cannot
+    stand in a slab) and more over the room's floor (else it is no room). A body
+    counts when more of its up-facing area has less than that headroom.
+    Cost: :func:`inside_out_bodies` (20 to 110 µs a face) and one ray a face.
+    """
+    merged, bodies = _inside_out_faces(mesh)
+    body_of = np.full(len(merged.faces), -1)
+    for index, faces in enumerate(bodies):
+        body_of[faces] = index
+    up = np.flatnonzero((body_of >= 0) & (merged.face_normals[:, 1] >= math.cos(math.radians(agent.max_slope))))
+    origins = merged.triangles_center[up] + [0.0, RAY_START, 0.0]
+    upward = np.tile([0.0, 1.0, 0.0], (len(up), 1))
+    hits, rays = merged.ray.intersects_location(origins, upward, multiple_hits=False)[:2]
+    headroom = np.full(len(up), math.inf)
+    headroom[rays] = hits[:, 1] - origins[rays, 1] + RAY_START
+    area = merged.area_faces[up]
+    cramped = np.bincount(body_of[up], weights=area * (headroom < agent.height), minlength=len(bodies))
+    return int(np.count_nonzero(2 * cramped > np.bincount(body_of[up], weights=area, minlength=len(bodies))))
+
+
+def _inside_out_faces(mesh: trimesh.Trimesh) -> tuple[trimesh.Trimesh, list[np.ndarray]]:
+    """``mesh`` with coincident vertices merged, and the face indices of each of its closed bodies wound
+    inside out (those :func:`g2s_core.mesh.flip_inside_out_bodies` flips)."""
     merged = trimesh.Trimesh(np.asarray(mesh.vertices), np.asarray(mesh.faces), process=True)
-    return flip_inside_out_bodies(merged)[1]
+    flipped = np.flatnonzero(np.any(flip_inside_out_bodies(merged)[0].faces != merged.faces, axis=1))
+    return merged, [np.asarray(sorted(b)) for b in trimesh.graph.connected_components(merged.face_adjacency,
+                                                                                        nodes=flipped)]
 
 
 GENERAL_HINT = ("check mesh.scale (the file's units to metres), the agent settings, the mesh's up_axis, and that its "
@@ -107,13 +157,14 @@ UP_AXIS_HINT = ("most flat faces face along z, not y: if the file is Z-up, set `
                 "(or `y` if it is already z)")
 
 
-def likely_causes(mesh: trimesh.Trimesh, max_slope: float, winding: bool = True) -> list[str]:
-    """What most likely made the walkable surface wrong, each naming the key to change.
+def likely_causes(mesh: trimesh.Trimesh, agent: AgentConfig, winding: bool = True) -> list[str]:
+    """What most likely made the walkable surface wrong for ``agent``, each naming the key to change.
 
-    ``winding``: also look for closed bodies wound inside out (the costly check).
+    ``winding``: also look for closed bodies wound inside out that hide their floor
+    (:func:`hidden_floor_bodies`, the costly check).
     """
-    causes = [UP_AXIS_HINT] if looks_z_up(mesh, max_slope) else []
-    bodies = inside_out_bodies(mesh) if winding else 0
+    causes = [UP_AXIS_HINT] if looks_z_up(mesh, agent.max_slope) else []
+    bodies = hidden_floor_bodies(mesh, agent) if winding else 0
     if bodies:
         causes.append(f"{bodies} closed bod{'y is' if bodies == 1 else 'ies are'} wound inside out "
                       "(walkable faces must face up): set `mesh: {clean: true}` to flip them")
@@ -130,7 +181,7 @@ def no_walkable_surface(mesh: trimesh.Trimesh, agent: AgentConfig, reason: str) 
     """The error of a graph builder that found nowhere ``agent`` can stand on ``mesh``: the agent,
     the builder's ``reason``, then the likely causes, else the level's size (a file in other units
     than metres shows in it: a 200 m level read at ``mesh.scale: 0.01`` is 2 m across) and what to check."""
-    causes = likely_causes(mesh, agent.max_slope)
+    causes = likely_causes(mesh, agent)
     return G2SError(
         f"no walkable surface for the agent (radius {agent.radius} m, height {agent.height} m, "
         f"max climb {agent.max_climb} m, max slope {agent.max_slope} deg): {reason}; "
@@ -138,15 +189,23 @@ def no_walkable_surface(mesh: trimesh.Trimesh, agent: AgentConfig, reason: str) 
     )
 
 
+def looks_for_winding(share: float, faces: int) -> bool:
+    """Whether a run whose walkable share is ``share`` on a mesh of ``faces`` faces is worth the inside-out count:
+    under :data:`MIN_WALKABLE_SHARE` on any mesh, under :data:`SMALL_MESH_SHARE` on one of at most
+    :data:`SMALL_MESH_FACES` faces."""
+    return share < MIN_WALKABLE_SHARE or (faces <= SMALL_MESH_FACES and share < SMALL_MESH_SHARE)
+
+
 def check_walkable_surface(graph: nx.Graph, mesh: trimesh.Trimesh, context: RunContext) -> None:
     """Warn through ``context`` (one line) when ``graph``'s walkable surface looks like a misread mesh (module doc)."""
     share = walkable_share(graph, mesh)
-    small, tall = share < MIN_WALKABLE_SHARE, height_ratio(mesh) > MAX_HEIGHT_RATIO
-    if not (small or tall):
+    winding, tall = looks_for_winding(share, len(mesh.faces)), height_ratio(mesh) > MAX_HEIGHT_RATIO
+    if not (winding or tall):
         return
-    causes = likely_causes(mesh, context.agent.max_slope, winding=small)
+    causes = likely_causes(mesh, context.agent, winding=winding)
     if not causes:
         return
-    what = (f"only {100 * share:.1f} % of the level's footprint is walkable" if small else
+    what = (f"only {100 * share:.1f} % of the level's footprint is walkable"
+            if share < MIN_WALKABLE_SHARE or not tall else
             f"the level is {height_ratio(mesh):.1f} times as tall as it is wide")
     context.warn(f"mesh: {what}; {'; '.join(causes)}")

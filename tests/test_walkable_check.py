@@ -15,7 +15,17 @@ from g2s_core.errors import G2SError
 from g2s_core.mesh import Z_UP_TO_Y_UP, clean_mesh
 from g2s_plugins.samples.levels import SAMPLES, load_sample
 from g2s_plugins.samples.pieces import PIECES
-from g2s_plugins.walkable_check import height_ratio, inside_out_bodies, looks_z_up, walkable_share
+from g2s_core.config import resolve_config
+from g2s_plugins.walkable_check import (
+    SMALL_MESH_FACES,
+    SMALL_MESH_SHARE,
+    height_ratio,
+    hidden_floor_bodies,
+    inside_out_bodies,
+    looks_for_winding,
+    looks_z_up,
+    walkable_share,
+)
 
 BUILDERS = ["navmesh", "sampling"]
 
@@ -39,6 +49,15 @@ def mesh_warnings(result) -> list[str]:
     return [w for w in result.warnings if w.startswith("mesh:")]
 
 
+def slab(x0: float, x1: float, z0: float, z1: float, thickness: float) -> trimesh.Trimesh:
+    """A closed, outward-facing floor slab over [x0, x1] x [z0, z1] m whose top is at y = 0."""
+    return trimesh.creation.box(extents=(x1 - x0, thickness, z1 - z0)).apply_translation(
+        ((x0 + x1) / 2, -thickness / 2, (z0 + z1) / 2))
+
+
+PIECE_AGENT = {"radius": 0.4, "height": 2.0, "max_climb": 0.4, "max_slope": 60}
+
+
 def hallway(shared_data) -> trimesh.Trimesh:
     return trimesh.load(shared_data / "pieces" / "Hallway.obj", force="mesh", process=False)
 
@@ -60,6 +79,24 @@ def test_a_z_up_dungeon_looks_z_up_and_the_dungeon_does_not():
     level = load_sample("dungeon", rooms=12).mesh
     assert not looks_z_up(level, 45.0)
     assert looks_z_up(as_z_up_file(level), 45.0)
+
+
+def test_hidden_floor_bodies_tell_an_inside_out_slab_from_a_room_seen_from_inside():
+    agent = resolve_config("map_piece")[0].agent  # 2 m tall
+    thin, thick = inverted(slab(0, 4, 0, 4, 0.6)), inverted(slab(0, 4, 0, 4, 2.5))
+    room = inverted(trimesh.creation.box(extents=(8.0, 3.0, 6.0)))  # its floor faces up into it, 3 m under its ceiling
+    assert [inside_out_bodies(m) for m in (thin, thick, room)] == [1, 1, 1]
+    # under 2 m of headroom the upturned underside hides a floor; a slab thicker than the agent is tall
+    # looks like a room from inside, and is not counted
+    assert [hidden_floor_bodies(m, agent) for m in (thin, thick, room)] == [1, 0, 0]
+    assert hidden_floor_bodies(trimesh.util.concatenate([thin, room.apply_translation((10, 0, 0))]), agent) == 1
+
+
+def test_only_small_meshes_are_looked_at_above_the_share_threshold():
+    assert looks_for_winding(0.05, 10 * SMALL_MESH_FACES)
+    assert looks_for_winding(SMALL_MESH_SHARE - 0.01, SMALL_MESH_FACES)
+    assert not looks_for_winding(SMALL_MESH_SHARE - 0.01, SMALL_MESH_FACES + 1)
+    assert not looks_for_winding(SMALL_MESH_SHARE, 12)
 
 
 def test_inside_out_bodies_counts_closed_bodies_of_negative_volume():
@@ -91,8 +128,7 @@ def test_no_sample_level_read_right_warns(name, builder):
 @pytest.mark.parametrize("builder", BUILDERS)
 @pytest.mark.parametrize("name", list(PIECES))
 def test_no_sample_piece_read_right_warns(name, builder):
-    piece_agent = {"radius": 0.4, "height": 2.0, "max_climb": 0.4, "max_slope": 60}
-    assert mesh_warnings(graph_run(load_sample(name).mesh, builder, agent=piece_agent)) == []
+    assert mesh_warnings(graph_run(load_sample(name).mesh, builder, agent=PIECE_AGENT)) == []
 
 
 @pytest.mark.parametrize("builder", BUILDERS)
@@ -107,18 +143,30 @@ def test_nav_test_read_as_z_up_warns(shared_data):
     assert "`mesh: {up_axis: z}`" in warning and "inside out" not in warning, warning
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="since map_piece erodes exactly the agent radius (cells of 0.4 / 3, not 0.133: docs/entry_exit.md), "
-    "the inside-out Hallway's walkable share is 0.152 (0.066 before; the correct piece 0.481), above "
-    "MIN_WALKABLE_SHARE = 0.1, so the run is not suspicious and nothing is said; correct levels reach down "
-    "to 0.12, so no share threshold separates them now (docs/errors.md's table predates the change)",
-)
 def test_an_inside_out_piece_warns(shared_data):
     wrong = g2s_core.run(inverted(hallway(shared_data)), "map_piece", stop_after="terminals")
     (warning,) = mesh_warnings(wrong)
     assert "1 closed body is wound inside out" in warning and "`mesh: {clean: true}`" in warning, warning
     assert "up_axis" not in warning
+
+
+@pytest.mark.parametrize("builder", BUILDERS)
+def test_a_piece_with_one_of_two_thick_tiles_inside_out_warns(builder):
+    # 0.6 m tiles: thicker than the climb (Recast cannot merge the upturned underside with the top), 2 cm apart;
+    # the other tile walks, about 0.3 of the footprint: above MIN_WALKABLE_SHARE, under SMALL_MESH_SHARE
+    piece = trimesh.util.concatenate([slab(0, 3.99, 0, 4, 0.6), inverted(slab(4.01, 8, 0, 4, 0.6))])
+    result = graph_run(piece, builder, agent=PIECE_AGENT)
+    (warning,) = mesh_warnings(result)
+    assert "1 closed body is wound inside out" in warning and "`mesh: {clean: true}`" in warning, warning
+    assert mesh_warnings(graph_run(piece, builder, agent=PIECE_AGENT, mesh={"clean": True})) == []
+
+
+@pytest.mark.parametrize("builder", BUILDERS)
+def test_a_narrow_room_modelled_as_a_box_seen_from_inside_does_not_warn(builder):
+    room = inverted(trimesh.creation.box(extents=(1.6, 3.0, 10.0)))  # negative volume on purpose
+    result = graph_run(room, builder, agent=PIECE_AGENT)
+    assert walkable_share(result.graph, room) < SMALL_MESH_SHARE  # so the inside-out count runs
+    assert inside_out_bodies(room) == 1 and mesh_warnings(result) == []
 
 
 def test_cleaning_an_inside_out_piece_restores_its_openings(shared_data):
