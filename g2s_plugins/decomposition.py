@@ -30,17 +30,26 @@ polygons and their shared edges (portals):
    merged: groups only grow and portals only narrow, so the two sides stay
    apart. Small or barely wider groups (slivers, corridors, corners) merge
    into their neighbours.
-3. Regions are the groups left (``scipy.sparse.csgraph.connected_components``
-   of the merged portals), numbered by their lowest polygon id. Candidates
+3. Passages (:func:`join_passages`). A group whose mean walkable width,
+   its area over its longest extent (:func:`longest_extents`), is below
+   ``passage_width`` agent diameters is a passage (an aisle, a catwalk, a
+   narrow corridor: two agents cannot pass each other in it), not a room,
+   however much narrower its ends are than its widest point. Passages joined
+   by candidates are one passage; a passage whose candidates all lead to one
+   room is part of that room (an aisle between desk rows, a dead end, a
+   catwalk up a ramp); one between several rooms stays a region and carries
+   the chokepoints to them.
+4. Regions are the groups left (``scipy.sparse.csgraph.connected_components``
+   of the merged portals and joined passages), numbered by their lowest polygon id. Candidates
    between the same two regions that are chained end to end (one opening:
    Recast's region contours may bend across a wide gap) or closer than
    ``min_separation`` are one chokepoint (the widest portal of them stays:
    a door cut by a tile border is several portals).
-4. A chokepoint is an articulation of the level when it is a bridge of the
+5. A chokepoint is an articulation of the level when it is a bridge of the
    region multigraph (regions joined by one edge per chokepoint;
    ``rustworkx.bridges``, which sees parallel edges as one, so a pair of
    regions with two chokepoints is left out): closing it disconnects the level.
-5. Traffic (:func:`score`). A structure edge whose two ends lie in different
+6. Traffic (:func:`score`). A structure edge whose two ends lie in different
    regions crosses the chokepoint between them nearest to it; the
    chokepoint's traffic is the largest edge betweenness of the structure
    edges crossing it (:func:`g2s_plugins.centrality.edge_betweenness`: the
@@ -55,7 +64,7 @@ the polygon graph already joins floors only where the agent can walk (ramps,
 stairs).
 
 Complexity: clearance O((B + P + E) log B) for B wall pieces, P polygons,
-E portals; the merge tree sorts the portals and runs one union-find step per
+E portals; extents O(V) for V polygon corners; the merge tree sorts the portals and runs one union-find step per
 portal (a Python loop of O(E alpha(P)): a merge order is sequential by
 nature and no library offers it on a general graph); everything else is
 numpy/scipy over arrays, networkx only on the small region graph.
@@ -95,6 +104,10 @@ NEAREST_PIECES = 6
 PORTAL_SAMPLES = 5
 """The fewest points along a portal where its clearance is measured (:func:`portal_samples`)."""
 
+EXTENT_DIRECTIONS = 8
+"""Directions, evenly spread over 180 degrees, along which a region's longest extent is measured
+(:func:`longest_extents`: at least cos(90 / 8 degrees) = 98 % of its diameter)."""
+
 
 class DecompositionParams(PluginParams):
     """How the walkable surface is split into regions at chokepoints (shared by ``chokepoints`` and ``regions``)."""
@@ -111,6 +124,10 @@ class DecompositionParams(PluginParams):
     min_region_area: float = Field(8.0, ge=0, description="smaller areas (slivers, corners) merge into a neighbour, m²")
     min_separation: float = Field(
         3.0, ge=0, description="chokepoints between the same two regions closer than this are one, metres"
+    )
+    passage_width: float = Field(
+        1.4, ge=0, description="a region narrower than this on average (walkable area / longest extent, in agent "
+        "diameters) is a passage: it joins the room it leads to when it leads to one only",
     )
 
 
@@ -315,6 +332,49 @@ def _merge_tree(pairs: np.ndarray, portal_clearance: np.ndarray, polygon_clearan
     return merged, blocked
 
 
+def longest_extents(navmesh: Any, labels: np.ndarray, count: int) -> np.ndarray:
+    """(count,) the longest plan (xz) extent of each region of ``labels`` (P,), m: the largest of its
+    widths along :data:`EXTENT_DIRECTIONS` directions, over its polygons' corners."""
+    polygons = np.asarray(navmesh.polygons, dtype=np.int64)
+    rows, cols = np.nonzero(polygons >= 0)
+    xz = np.asarray(navmesh.vertices, dtype=np.float64)[polygons[rows, cols]][:, [0, 2]]
+    angle = np.arange(EXTENT_DIRECTIONS) * (math.pi / EXTENT_DIRECTIONS)
+    along = xz @ np.stack([np.cos(angle), np.sin(angle)])  # (V, D) each corner along each direction
+    low = np.full((count, EXTENT_DIRECTIONS), np.inf)
+    high = np.full((count, EXTENT_DIRECTIONS), -np.inf)
+    np.minimum.at(low, labels[rows], along)
+    np.maximum.at(high, labels[rows], along)
+    return (high - low).max(axis=1)
+
+
+def join_passages(labels: np.ndarray, sides: np.ndarray, passage: np.ndarray) -> np.ndarray:
+    """(P,) int64 region labels once passages are joined (step 3 of the module doc).
+
+    Args:
+        labels: (P,) the merge tree's group of every polygon.
+        sides: (C, 2) the groups on the two sides of every chokepoint candidate.
+        passage: (G,) bool, whether each group is a passage.
+
+    Returns:
+        (P,) the region of every polygon, regions numbered by their lowest polygon id.
+    """
+    count = len(passage)
+    sides = sides[sides[:, 0] != sides[:, 1]]
+    both = passage[sides].all(axis=1)
+    links = sparse.coo_array((np.ones(int(both.sum())), (sides[both, 0], sides[both, 1])), shape=(count, count))
+    system = csgraph.connected_components(links, directed=False)[1]  # passages joined by candidates
+    one = passage[sides].sum(axis=1) == 1
+    way = np.where(passage[sides[one, 0]][:, None], sides[one], sides[one, ::-1])  # (passage, room)
+    ways = np.unique(np.column_stack([system[way[:, 0]], way[:, 1]]), axis=0)  # (passage system, room)
+    rooms_reached = np.bincount(ways[:, 0], minlength=count)
+    into = way[rooms_reached[system[way[:, 0]]] == 1]  # passages of systems that lead to one room
+    edges = np.concatenate([sides[both], into])
+    links = sparse.coo_array((np.ones(len(edges)), (edges[:, 0], edges[:, 1])), shape=(count, count))
+    group = csgraph.connected_components(links, directed=False)[1][labels]
+    _, first, group = np.unique(group, return_index=True, return_inverse=True)
+    return np.argsort(np.argsort(first))[group.reshape(-1)].astype(np.int64)
+
+
 def floor_bands(heights: np.ndarray, normals: np.ndarray, areas: np.ndarray, gap: float) -> np.ndarray:
     """(P,) int64: the height band of every flat polygon, -1 for sloped ones (bands lowest first)."""
     flat = np.asarray(normals)[:, 1] >= math.cos(math.radians(FLAT_DEG))
@@ -348,7 +408,11 @@ def decompose(navmesh: Any, agent: Any, params: DecompositionParams) -> Decompos
     n = navmesh.polygon_count
     joined = sparse.coo_array((np.ones(int(merged.sum())), (pairs[merged, 0], pairs[merged, 1])), shape=(n, n))
     count, labels = csgraph.connected_components(joined, directed=False)
-    labels = labels.astype(np.int64)
+    mean_width = np.bincount(labels, weights=areas, minlength=count) / np.maximum(
+        longest_extents(navmesh, labels, count), 1e-9)
+    labels = join_passages(labels, labels[pairs[blocked]], mean_width < params.passage_width * 2.0 * float(agent.radius))
+    count = int(labels.max()) + 1 if len(labels) else 0
+    blocked &= labels[pairs[:, 0]] != labels[pairs[:, 1]]
 
     centres = np.asarray(navmesh.centres, dtype=np.float64)
     region_area = np.bincount(labels, weights=areas, minlength=count)

@@ -20,22 +20,34 @@ Metadata (besides the common keys of ``SampleLevel``):
     ``chokepoints`` (doors and ramps), ``articulation`` (per door, whether
     closing it disconnects the level) and, where it applies, ``ranking``
     (door indices, highest chokepoint score first).
+``obstacles``
+    (where a level has them) tuple of ``{"x0", "x1", "z0", "z1"}``: solids a
+    wall high standing in the floor (desk rows, a closed room, pilasters),
+    their roofs too steep to stand on, so that they are walls and never
+    walkable islands.
+
+The last five samples are the shapes a designer calls passages, not rooms
+(aisles between desk rows, a ring corridor, a catwalk, a dead-end corridor),
+beside small offices that must stay rooms; their ``expected`` is what the
+width rule of :mod:`g2s_plugins.decomposition` is checked against.
 """
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 from typing import Any
 
 import numpy as np
 import trimesh
-from pydantic import PositiveFloat, validate_call
+from pydantic import PositiveFloat, PositiveInt, validate_call
 
 from g2s_plugins.samples.levels import (
     NX,
     NZ,
     PX,
     PZ,
+    SLAB_THICKNESS,
     WALL_HEIGHT,
     WALL_THICKNESS,
     RampSlope,
@@ -44,26 +56,59 @@ from g2s_plugins.samples.levels import (
     _no_apertures,
     _ramp_meta,
     _ramp_run,
+    _rect,
+    _sloped_blocks,
 )
 
 _OPPOSITE = {PX: NX, PZ: NZ}
+
+_ROOF_SLOPE = math.tan(math.radians(60.0))
+"""Rise per metre of an obstacle's roof: steeper than any agent walks, so a roof is never a walkable island."""
+
+
+def _obstacles(b: _LevelBuilder, boxes: list[tuple[float, float, float, float]]) -> tuple[dict[str, float], ...]:
+    """Solids over ``(x0, x1, z0, z1)`` from the floor slab's bottom to a wall's height, roofs rising
+    along +X at :data:`_ROOF_SLOPE`; their metadata records."""
+    x0, x1, z0, z1 = (np.array(column, dtype=np.float64) for column in zip(*boxes))
+    b.hexahedra(_sloped_blocks(x0, x1, z0, z1, -SLAB_THICKNESS, WALL_HEIGHT, WALL_HEIGHT + (x1 - x0) * _ROOF_SLOPE))
+    return tuple(_rect(*box) for box in boxes)
+
+
+def _floor_cells(room: np.ndarray, boxes: list[tuple[float, float, float, float]]) -> list[tuple[float, ...]]:
+    """The floor rectangle ``room`` (x0, x1, z0, z1) less the ``boxes``, as the cells (x0, x1, z0, z1) of the grid
+    their sides make. Recast sees surfaces, not solids: a floor left under an obstacle would be a walkable
+    room inside it."""
+    x0, x1, z0, z1 = room
+    xs = np.unique(np.clip([x0, x1, *(v for box in boxes for v in box[:2])], x0, x1))
+    zs = np.unique(np.clip([z0, z1, *(v for box in boxes for v in box[2:])], z0, z1))
+    cells = [(a, b, c, d) for a, b in zip(xs, xs[1:]) for c, d in zip(zs, zs[1:])]
+    return [cell for cell in cells if not any(a < (cell[0] + cell[1]) / 2 < b and c < (cell[2] + cell[3]) / 2 < d
+                                              for a, b, c, d in boxes)]
 
 
 def _build(name: str, rooms: list[tuple[float, float, float, float, float]],
            doors: list[tuple[int, int, int, float, float]], params: dict[str, Any],
            expected: dict[str, Any], extra: dict[str, Any] | None = None,
-           ramp: tuple[float, float] | None = None) -> SampleLevel:
+           ramp: tuple[float, float] | None = None,
+           obstacles: list[tuple[float, float, float, float]] = (), b: _LevelBuilder | None = None) -> SampleLevel:
     """Rooms ``(x0, x1, z0, z1, floor y)`` and doors ``(room a, room b, side of a, centre, width)``.
 
     A door sits on side ``PX`` or ``PZ`` of room ``a``; room ``b`` starts one
     wall thickness beyond it. ``centre`` is the door's centre along the wall
     (world z for ``PX``, world x for ``PZ``). ``ramp = (centre z, width)`` joins
     room 0's +X wall to room 1's -X wall by a walled ramp along +X.
+    ``obstacles``: ``(x0, x1, z0, z1)`` solids standing in the floor (:func:`_obstacles`);
+    ``b``: a builder already holding other parts of the level.
     """
-    b = _LevelBuilder()
+    b = b or _LevelBuilder()
     bounds = np.array([r[:4] for r in rooms], dtype=np.float64)
     heights = np.array([r[4] for r in rooms], dtype=np.float64)
-    b.floors(bounds[:, 0], bounds[:, 1], bounds[:, 2], bounds[:, 3], heights)
+    if obstacles:
+        extra = {**(extra or {}), "obstacles": _obstacles(b, list(obstacles))}
+        cells = [(*cell, y) for room, y in zip(bounds, heights) for cell in _floor_cells(room, obstacles)]
+        b.floors(*np.array(cells).T)
+    else:
+        b.floors(bounds[:, 0], bounds[:, 1], bounds[:, 2], bounds[:, 3], heights)
     apertures = _no_apertures(len(rooms))
     door_meta = []
     t = WALL_THICKNESS
@@ -200,6 +245,186 @@ def floors_joined_by_ramp(
                   ramp=(zc, ramp_width))
 
 
+@validate_call
+def lecture_hall(
+    aisles: PositiveInt = 3, aisle_width: PositiveFloat = 2.2, aisle_end: PositiveFloat = 1.7,
+    row_length: PositiveFloat = 12.0, block_width: PositiveFloat = 3.0,
+) -> SampleLevel:
+    """A hall with blocks of desk rows, and aisles between the blocks that narrow at both ends.
+
+    ``aisles + 1`` blocks ``block_width`` wide (x) and ``row_length`` long (z)
+    stand ``aisle_width`` apart, 3 m from the hall's side walls, 4 m from its
+    front (z = 0) and 3 m from its back. A 0.6 m long end panel at each end of
+    a block juts into the aisles so that an aisle's ends are ``aisle_end``
+    wide (wall to wall). The blocks are obstacles larger than
+    ``obstacle_area``: walls to the split. Expected: one region, the hall, no
+    chokepoint (the aisles are passages within it; before the width rule each
+    was a region between two chokepoints, as the 1 m aisles with 0.7-0.8 m
+    ends of the lecture hall of docs/plugins.md's real levels). Metadata ``aisles``: ``{"x0", "x1", "z0",
+    "z1"}`` of each aisle between blocks.
+
+    Args:
+        aisles: number of aisles between blocks.
+        aisle_width: clear width of an aisle between two blocks, metres.
+        aisle_end: clear width of an aisle between the end panels, metres.
+        row_length: length of a block of desk rows along z, metres.
+        block_width: width of a block of desk rows along x, metres.
+    """
+    if not aisle_end < aisle_width:
+        raise ValueError("aisle_end must be < aisle_width")
+    side, front, back, panel = 3.0, 4.0, 3.0, 0.6
+    jut = (aisle_width - aisle_end) / 2
+    step = block_width + aisle_width
+    width = 2 * side + (aisles + 1) * block_width + aisles * aisle_width
+    z0, z1 = front, front + row_length
+    blocks = [(side + i * step, side + i * step + block_width) for i in range(aisles + 1)]
+    obstacles = [(x0, x1, z0 + panel, z1 - panel) for x0, x1 in blocks]
+    obstacles += [(x0 - jut, x1 + jut, za, zb) for x0, x1 in blocks for za, zb in ((z0, z0 + panel), (z1 - panel, z1))]
+    params = {"aisles": aisles, "aisle_width": aisle_width, "aisle_end": aisle_end, "row_length": row_length,
+              "block_width": block_width}
+    extra = {"aisles": tuple(_rect(a[1], b[0], z0, z1) for a, b in zip(blocks, blocks[1:])), "cycles": aisles + 1}
+    return _build("lecture_hall", [(0.0, width, 0.0, z1 + back, 0.0)], [], params,
+                  {"regions": 1, "chokepoints": 0}, extra, obstacles=obstacles)
+
+
+@validate_call
+def ring_corridor(
+    size: PositiveFloat = 16.0, width: PositiveFloat = 3.5, narrow: PositiveFloat = 2.5,
+    door_width: PositiveFloat = 1.8,
+) -> SampleLevel:
+    """A corridor all round a closed room, narrowed by pilasters at three spots, and a room off it.
+
+    Room 0 is the square [0, size]² holding the closed room (an obstacle) in its
+    middle, so that its walkable floor is a ring ``width`` wide; pilasters on the
+    outer walls (1 m long, in the middle of the -Z, +X and +Z sides) narrow the
+    ring to ``narrow``. Room 1 (8 x 8 m) lies on -X, joined by a door in the
+    middle of the -X side. Expected: two regions (the ring and the room) and the
+    door the one chokepoint; the pilasters are no chokepoints (as on
+    docs/plugins.md's real levels, where a ring 2.5 m walkable narrowed to
+    1.5-1.8 m was cut into 3 regions). Not met: the ring is still cut at its
+    pilasters (docs/plugins.md, "Passages, not rooms").
+
+    Args:
+        size: side of the square around the closed room, metres.
+        width: clear width of the ring corridor, metres.
+        narrow: clear width of the ring at a pilaster, metres.
+        door_width: clear width of the door to the room on -X, metres.
+    """
+    if not narrow < width < size / 2 - 1.0 or door_width >= size - 2 * width:
+        raise ValueError("need narrow < width < size / 2 - 1 and door_width < size - 2 width")
+    s, t, mid, jut = float(size), WALL_THICKNESS, size / 2, width - narrow
+    rooms = [(0.0, s, 0.0, s, 0.0), (-8.0 - t, -t, mid - 4.0, mid + 4.0, 0.0)]
+    obstacles = [(width, s - width, width, s - width),
+                 (mid - 0.5, mid + 0.5, 0.0, jut), (s - jut, s, mid - 0.5, mid + 0.5), (mid - 0.5, mid + 0.5, s - jut, s)]
+    params = {"size": size, "width": width, "narrow": narrow, "door_width": door_width}
+    expected = {"regions": 2, "chokepoints": 1, "articulation": (True,)}
+    return _build("ring_corridor", rooms, [(1, 0, PX, mid, door_width)], params, expected, {"cycles": 1},
+                  obstacles=obstacles)
+
+
+@validate_call
+def catwalk(
+    length: PositiveFloat = 22.0, width: PositiveFloat = 2.5, narrow: PositiveFloat = 1.9,
+    height: PositiveFloat = 1.5, slope_deg: RampSlope = 15.0,
+) -> SampleLevel:
+    """A hall with a raised catwalk along its -Z wall, reached by a walled ramp, narrowed by a pilaster.
+
+    The hall is [0, run + 2 + length] x [0, 12] at y = 0; the catwalk is the top
+    of a solid ledge ``height`` tall and ``width`` deep against the -Z wall,
+    over x from run + 2 to the +X wall; a walled ramp ``width`` wide climbs to
+    it along +X from x = 2 (run = height / tan(slope_deg)). A pilaster on the
+    wall halfway along the catwalk narrows it to ``narrow`` (its open edge is a
+    drop: the navmesh keeps the agent's radius from it too). Expected: one
+    region and no chokepoint: the catwalk is a passage of the hall, not a room
+    (it was two regions joined at the pilaster, as the catwalks on
+    docs/plugins.md's real levels). Metadata ``catwalk`` and ``ramp`` extents.
+
+    Args:
+        length: length of the catwalk, metres.
+        width: depth of the ledge (wall to drop), metres.
+        narrow: depth of the ledge beside the pilaster, metres.
+        height: height of the catwalk above the hall's floor, metres.
+        slope_deg: the ramp's slope, degrees (the design agent walks up to 45).
+    """
+    if not narrow < width < 6.0:
+        raise ValueError("need narrow < width < 6")
+    run = _ramp_run(height, slope_deg)
+    x0, x1, zc = 2.0 + run, 2.0 + run + length, width / 2
+    b = _LevelBuilder()
+    b.boxes(np.array([[x0, -SLAB_THICKNESS, 0.0]]), np.array([[x1, height, width]]))
+    b.ramp(2.0, x0, zc, width, 0.0, height)
+    middle = (x0 + x1) / 2
+    params = {"length": length, "width": width, "narrow": narrow, "height": height, "slope_deg": slope_deg}
+    extra = {"catwalk": _rect(x0, x1, 0.0, width) | {"y": float(height)},
+             "ramp": _ramp_meta(2.0, x0, zc, width, 0.0, height, slope_deg), "floor_heights": (0.0, float(height))}
+    return _build("catwalk", [(0.0, x1, 0.0, 12.0, 0.0)], [], params, {"regions": 1, "chokepoints": 0}, extra,
+                  obstacles=[(middle - 0.5, middle + 0.5, 0.0, width - narrow)], b=b)
+
+
+@validate_call
+def offices(
+    count: PositiveInt = 4, width: PositiveFloat = 4.0, depth: PositiveFloat = 5.0,
+    corridor_width: PositiveFloat = 3.0, door_width: PositiveFloat = 1.8,
+) -> SampleLevel:
+    """Small offices side by side off a corridor, one door each.
+
+    The corridor runs along +X at z in [0, corridor_width], as ``count``
+    segments ``width`` long joined by openings its full width (room i, i < count);
+    office i (room count + i, ``width`` x ``depth``, 3 x 4 m walkable for the
+    design agent by default) lies beyond the +Z wall of segment i, joined by a
+    door in its middle. Expected: ``count + 1`` regions (the corridor and every
+    office), one chokepoint at each office door, all articulations.
+
+    Args:
+        count: number of offices.
+        width: width of an office along the corridor, metres.
+        depth: depth of an office, metres.
+        corridor_width: clear width of the corridor, metres.
+        door_width: clear width of an office door, metres.
+    """
+    if not door_width < min(width, corridor_width):
+        raise ValueError("door_width must be < width and < corridor_width")
+    t = WALL_THICKNESS
+    step = width + t
+    segments = [(i * step, i * step + width, 0.0, corridor_width, 0.0) for i in range(count)]
+    rooms = segments + [(x0, x1, corridor_width + t, corridor_width + t + depth, 0.0) for x0, x1, *_ in segments]
+    doors = [(i, i + 1, PX, corridor_width / 2, corridor_width) for i in range(count - 1)]
+    doors += [(i, count + i, PZ, i * step + width / 2, door_width) for i in range(count)]
+    params = {"count": count, "width": width, "depth": depth, "corridor_width": corridor_width,
+              "door_width": door_width}
+    expected = {"regions": count + 1, "chokepoints": count, "articulation": (True,) * count}
+    return _build("offices", rooms, doors, params, expected, {"cycles": 0})
+
+
+@validate_call
+def dead_end_corridor(
+    size: PositiveFloat = 8.0, length: PositiveFloat = 14.0, width: PositiveFloat = 2.0,
+    door_width: PositiveFloat = 1.6,
+) -> SampleLevel:
+    """A square room with a narrow dead-end corridor off it, behind a door narrower still.
+
+    Room 0 is [0, size]²; the corridor (room 1) runs along +X from its +X wall,
+    ``length`` long and ``width`` wide around z = size / 2, through a door
+    ``door_width`` wide. Expected: one region: the corridor is too narrow for
+    two agents to pass (1 m walkable for the design agent) and leads nowhere,
+    so it is a passage of the room (it was a region of its own behind a
+    chokepoint).
+
+    Args:
+        size: side of the square room, metres.
+        length: length of the corridor, metres.
+        width: clear width of the corridor, metres.
+        door_width: clear width of the door between the room and the corridor, metres.
+    """
+    if not door_width < width < size:
+        raise ValueError("need door_width < width < size")
+    s, t, mid = float(size), WALL_THICKNESS, size / 2
+    rooms = [(0.0, s, 0.0, s, 0.0), (s + t, s + t + length, mid - width / 2, mid + width / 2, 0.0)]
+    params = {"size": size, "length": length, "width": width, "door_width": door_width}
+    return _build("dead_end_corridor", rooms, [(0, 1, PX, mid, door_width)], params,
+                  {"regions": 1, "chokepoints": 0}, {"cycles": 0})
+
+
 def dungeon_shares(level: SampleLevel, chokepoints: list[dict[str, Any]], regions: list[dict[str, Any]],
                    navmesh: Any, turn: np.ndarray | None = None) -> tuple[float, float]:
     """How well chokepoints and regions found on a ``dungeon`` match its generated corridors and rooms.
@@ -243,5 +468,10 @@ SAMPLES: dict[str, Callable[..., SampleLevel]] = {
     "room_with_two_doors": room_with_two_doors,
     "loop_of_four_rooms": loop_of_four_rooms,
     "floors_joined_by_ramp": floors_joined_by_ramp,
+    "lecture_hall": lecture_hall,
+    "ring_corridor": ring_corridor,
+    "catwalk": catwalk,
+    "offices": offices,
+    "dead_end_corridor": dead_end_corridor,
 }
 """The room samples, registered in :data:`g2s_plugins.samples.levels.SAMPLES`."""

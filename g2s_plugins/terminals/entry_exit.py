@@ -26,13 +26,19 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
    roof over its floor or a hole under its ramp is no exit). A sample with a
    way out takes the one reaching the edge soonest. The fan, rather than one
    ray straight out, finds the way out of Recast's V-shaped notch in a
-   doorway through a thick wall, whose slanted sides face the jambs.
+   doorway through a thick wall, whose slanted sides face the jambs. With
+   ``step_up``, a sample with no way out whose ray straight out meets a step
+   within the climb (a threshold, a curb) looks again from the step's top;
+   such an opening is kept only between jambs (step 6).
 4. Segments: runs of consecutive samples with a way out, split where the way
    out turns by more than ``max_turn_deg``.
 5. Matching to the geometry (the paper's "corresponding segment in the
    original geometry"): the edge points of a segment must fit one straight
    line within ``edge_tolerance_radii * r`` (80 % of them) or follow the
-   boundary's direction within ``match_angle_deg`` (a curved edge). The
+   boundary's direction within ``match_angle_deg`` (a curved edge); a
+   segment that fits neither is fitted again without the samples at its ends
+   whose way out lies more than ``max_turn_deg`` from its median one (a
+   segment that walked round a corner onto the edge). The
    opening lies on that line; its ends are extended along the edge while the
    surface goes on inside the edge, ends just outside it, and nothing stands
    in the way or straight out: this undoes the retreat from walls. An
@@ -45,6 +51,9 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
    * width: openings no wider than ``min_width_radii * r`` (default the
      agent's diameter) are dropped (chamfers, slivers, a door exactly as
      wide as the agent, which Recast erodes away);
+   * jambs (``step_up``): an opening found from step tops needs something
+     at half the agent's height within two search steps of both its ends
+     (a threshold's jambs); a curb along the piece's edge has none;
    * reachability (``main_floor_only``): the opening must run along the
      navmesh floor of largest area, the main floor and what the agent
      reaches from it (an unreachable wall top, a roof, holds no exit); a
@@ -110,6 +119,19 @@ _SAME_WIDTH = 1e-4
 """Metres: widths this close are equal (an opening between jambs measures their distance to the ray
 caster's single precision: a 0.8 m door 0.8000011 m)."""
 
+_INSET_STEPS = 0.5
+"""Search steps: how far inside the edge line the extension's candidates stand. Past an open corner the
+floor goes on under them for about this far again (a chamfer's 135-degree corner), so the measured width
+grows by twice it: 0.5 steps (0.025 m for the map-piece agent) is 8 times the found edge's precision
+(:data:`_REFINE_ROUNDS`); at 2 steps the 0.64 m chamfers of ``chamfered_platform`` measured 0.88 m,
+wider than the agent (docs/entry_exit.md)."""
+
+_SNAP_SLACK = 0.01
+"""Metres added to the snap's downward reach (2 x ``snap_distance``): Recast lifts a navmesh corner to the
+highest span around it, up to the climb above the floor, and single precision and a polygon tilted
+towards that corner then put the floor a fraction of a millimetre beyond the reach (0.80017 m for 0.8 m:
+``curb_platform curb=0.35`` turned by 30 to 60 degrees); the smallest cell height allowed."""
+
 
 class Params(PluginParams):
     """Boundary sampling, ways out, segment rules and priors; lengths in metres unless noted.
@@ -124,7 +146,8 @@ class Params(PluginParams):
     sample_height: float | None = Field(
         None,
         gt=0,
-        description="height of the rays above the surface, m: a curb or sill higher than this closes the way; "
+        description="height of the rays above the surface, m: a curb or sill higher than this closes the way "
+        "(but a step within the climb between jambs, see step_up); "
         "None: half the agent's max climb, at least 0.1",
     )
     snap_distance: float | None = Field(
@@ -175,6 +198,12 @@ class Params(PluginParams):
         description="an exit must lead out of the piece: one agent radius beyond its edge nothing of the "
         "piece lies straight below or above (false: keep ledges and holes inside the piece)",
     )
+    step_up: bool = Field(
+        True,
+        description="where a step higher than the rays but within the climb closes the way out, look again from "
+        "its top; such an opening is kept only between jambs (something at half the agent's height at both "
+        "ends): a doorway over a threshold, not a curb",
+    )
     main_floor_only: bool = Field(
         True,
         description="keep only openings on the navmesh floor of largest area (a component with those whose "
@@ -200,6 +229,7 @@ class _Settings:
     lift: float
     snap: float
     delta: float
+    walkable_cos: float  # cosine of the agent's steepest walkable slope
 
 
 def _settings(params: Params, agent: AgentConfig) -> _Settings:
@@ -209,7 +239,8 @@ def _settings(params: Params, agent: AgentConfig) -> _Settings:
     lift = float(params.sample_height) if params.sample_height is not None else max(0.5 * climb, 0.1)
     snap = float(params.snap_distance) if params.snap_distance is not None else max(climb, 0.1)
     return _Settings(
-        radius=r, height=float(agent.height), climb=climb, step=step, lift=lift, snap=snap, delta=min(step, r) / 4.0
+        radius=r, height=float(agent.height), climb=climb, step=step, lift=lift, snap=snap, delta=min(step, r) / 4.0,
+        walkable_cos=math.cos(math.radians(float(agent.max_slope))),
     )
 
 
@@ -233,25 +264,39 @@ class _Ways:
     found: np.ndarray  # (M,) bool: the sample has a way out
     direction: np.ndarray  # (M,3) the way out (unit, surface plane)
     edge: np.ndarray  # (M,3) where the surface ends along it
+    stepped: np.ndarray  # (M,) bool: the way out starts on a step up (``base`` is on its top)
 
 
 def _snap(
-    samples: LoopSamples, polygon_normals: np.ndarray, caster: RayCaster, snap: float
+    samples: LoopSamples, polygon_normals: np.ndarray, caster: RayCaster, s: _Settings
 ) -> tuple[np.ndarray, np.ndarray]:
-    """Samples moved onto the mesh along the polygon normal (down first, then up) and the hit normals."""
+    """Samples moved onto the mesh (down along the polygon normal, straight down, then up) and the hit normals.
+
+    Only faces the agent can walk count: a polygon Recast laid over a step tilts, and its normal
+    can lead onto the riser."""
+    snap = s.snap
     n_nav = _unit(polygon_normals[samples.polygon])
     base = samples.position.copy()
     normal = n_nav.copy()
-    # Down: from ``snap`` above the sample, so a sample a little under the surface is found too.
+
+    def walkable(face: np.ndarray) -> np.ndarray:
+        return np.abs(caster.face_normals[np.maximum(face, 0)] @ UP) >= s.walkable_cos
+
+    # Down: from ``snap`` above the sample, so a sample a little under the surface is found too;
+    # then straight down, then up along the normal.
     down = caster.first_hits(samples.position + n_nav * snap, -n_nav)
     dist, pts, tri = down.distance, down.points, down.face
-    ok = dist <= 2.0 * snap
-    miss = np.nonzero(~ok)[0]
-    if len(miss):
-        up = caster.first_hits(samples.position[miss], n_nav[miss])
-        up_ok = up.distance <= snap
-        pts[miss[up_ok]], tri[miss[up_ok]] = up.points[up_ok], up.face[up_ok]
-        ok[miss[up_ok]] = True
+    ok = (dist <= 2.0 * snap + _SNAP_SLACK) & walkable(tri)
+    vertical = np.broadcast_to(UP, n_nav.shape)
+    for start, direction, reach in ((snap, -1.0, 2.0 * snap + _SNAP_SLACK), (0.0, 1.0, snap)):
+        miss = np.nonzero(~ok)[0]
+        if not len(miss):
+            break
+        axis = n_nav[miss] if direction > 0 else vertical[miss]
+        hits = caster.first_hits(samples.position[miss] + axis * start, axis * direction)
+        good = (hits.distance <= reach) & walkable(hits.face)
+        pts[miss[good]], tri[miss[good]] = hits.points[good], hits.face[good]
+        ok[miss[good]] = True
     base[ok] = pts[ok]
     face_n = caster.face_normals[tri[ok]]
     flip = np.einsum("ij,ij->i", face_n, n_nav[ok]) < 0
@@ -282,11 +327,10 @@ def _surface_ends(
     return 0.5 * (lo + hi)
 
 
-def _ways_out(
-    samples: LoopSamples, polygon_normals: np.ndarray, caster: RayCaster, s: _Settings, params: Params
-) -> _Ways:
-    base, normal = _snap(samples, polygon_normals, caster, s.snap)
-    tangent = _unit(samples.tangent - np.einsum("ij,ij->i", samples.tangent, normal)[:, None] * normal)
+def _fan(
+    base: np.ndarray, normal: np.ndarray, tangent: np.ndarray, caster: RayCaster, s: _Settings, params: Params
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The way out of each point of ``base`` (step 3): (M,) found, (M,3) direction, (M,) distance to the edge."""
     outward = np.cross(tangent, normal)  # the walkable side is on the left of the tangent
     m, k = len(base), int(params.fan_count)
     half = math.radians(float(params.fan_half_angle_deg))
@@ -313,9 +357,53 @@ def _ways_out(
     pick = np.argmin(cost, axis=1)
     found = np.isfinite(cost[np.arange(m), pick])
     chosen = np.arange(m) * k + pick
-    direction = dirs[chosen]
-    reach = np.nan_to_num(edge[chosen])
-    return _Ways(base, normal, tangent, found, direction, base + direction * reach[:, None])
+    return found, dirs[chosen], np.nan_to_num(edge[chosen])
+
+
+def _step_tops(
+    base: np.ndarray, normal: np.ndarray, outward: np.ndarray, caster: RayCaster, s: _Settings, params: Params
+) -> tuple[np.ndarray, np.ndarray]:
+    """Where the agent steps up onto what blocks the rays straight out: (M,) bool and (M,3) the step's top.
+
+    A point's step is what its straight-out ray meets within ``outward_radii * r`` when the surface one
+    search step behind that face lies within the climb, higher than half the rays' height (not the floor
+    under a wall) and facing up: a threshold, a curb.
+    """
+    lifted = base + normal * s.lift
+    hit = caster.first_hits(lifted, outward)
+    near = np.isfinite(hit.distance) & (hit.distance <= float(params.outward_radii) * s.radius)
+    top = np.full_like(base, np.nan)
+    rows = np.nonzero(near)[0]
+    if not len(rows):
+        return near, top
+    above = (lifted[rows] + outward[rows] * (hit.distance[rows] + s.delta)[:, None]
+             + normal[rows] * (s.climb - s.lift))
+    down = caster.first_hits(above, -normal[rows])
+    height = s.climb - down.distance
+    facing = np.einsum("ij,ij->i", caster.face_normals[np.maximum(down.face, 0)], normal[rows])
+    step = np.isfinite(down.distance) & (height > 0.5 * s.lift) & (facing > 0.5)
+    near[rows[~step]] = False
+    top[rows[step]] = down.points[step]
+    return near, top
+
+
+def _ways_out(
+    samples: LoopSamples, polygon_normals: np.ndarray, caster: RayCaster, s: _Settings, params: Params
+) -> _Ways:
+    base, normal = _snap(samples, polygon_normals, caster, s)
+    tangent = _unit(samples.tangent - np.einsum("ij,ij->i", samples.tangent, normal)[:, None] * normal)
+    found, direction, reach = _fan(base, normal, tangent, caster, s, params)
+    stepped = np.zeros(len(base), dtype=bool)
+    if params.step_up:
+        rows = np.nonzero(~found)[0]
+        near, top = _step_tops(base[rows], normal[rows], np.cross(tangent[rows], normal[rows]), caster, s, params)
+        rows, top = rows[near], top[near]
+        if len(rows):
+            up_found, up_direction, up_reach = _fan(top, normal[rows], tangent[rows], caster, s, params)
+            rows, top = rows[up_found], top[up_found]
+            base[rows], found[rows], stepped[rows] = top, True, True
+            direction[rows], reach[rows] = up_direction[up_found], up_reach[up_found]
+    return _Ways(base, normal, tangent, found, direction, base + direction * reach[:, None], stepped)
 
 
 # --------------------------------------------------------------------------
@@ -402,13 +490,33 @@ def _match_edges(segments: list[np.ndarray], ways: _Ways, s: _Settings, params: 
     """Match each segment to the straight (or smoothly curved) edge its samples found; others are dropped."""
     tolerance = max(2.0 * s.delta, float(params.edge_tolerance_radii) * s.radius)
     cos_match = math.cos(math.radians(float(params.match_angle_deg)))
-    kept = []
-    for samples in segments:
+    cos_turn = math.cos(math.radians(float(params.max_turn_deg)))
+
+    def fit(samples: np.ndarray) -> tuple[np.ndarray, np.ndarray, float] | None:
         points = ways.edge[samples]
         centre, direction, residual = _fit_line(points)
         straight = float(np.count_nonzero(residual <= tolerance)) / len(points)
         if straight < 0.8 and not _follows(points, ways.tangent[samples], cos_match):
-            continue  # the edge points fit no straight edge and no curve along the segment: a corner
+            return None  # the edge points fit no straight edge and no curve along the segment: a corner
+        return centre, direction, straight
+
+    kept = []
+    for samples in segments:
+        matched = fit(samples)
+        if matched is None:
+            # A segment that walked round a corner onto an edge (its way out turning a little at each
+            # sample, never by max_turn_deg at once): the samples at its ends looking out more than
+            # max_turn_deg away from its median way out belong to the corner; fit the rest again.
+            median = _unit(np.median(ways.direction[samples], axis=0))
+            inside = np.flatnonzero(ways.direction[samples] @ median >= cos_turn)
+            if len(inside) < 2:
+                continue
+            samples = samples[inside[0]: inside[-1] + 1]
+            matched = fit(samples)
+            if matched is None:
+                continue
+        centre, direction, straight = matched
+        points = ways.edge[samples]
         if np.dot(direction, points[-1] - points[0]) < 0:
             direction = -direction
         nrm = _unit(ways.normal[samples].mean(axis=0))
@@ -434,7 +542,7 @@ def _extend(kept: list[_Edge], caster: RayCaster, s: _Settings) -> tuple[np.ndar
     first = np.array([e.first for e in kept])
     last = np.array([e.last for e in kept])
     along = _unit(np.cross(nrm, out))  # walking direction along the edge (interior on the left)
-    inset = 2.0 * s.delta  # candidates stand this far inside the edge line
+    inset = _INSET_STEPS * s.delta  # candidates stand this far inside the edge line
     n_ext = max(1, int(math.ceil((2.0 * s.radius + s.step) / s.delta)))
     steps = s.delta * np.arange(1, n_ext + 1)
     ends = np.stack([first, last])  # (2, n, 3)
@@ -453,6 +561,24 @@ def _extend(kept: list[_Edge], caster: RayCaster, s: _Settings) -> tuple[np.ndar
     run = np.cumprod(floor & edge_goes_on & open_out, axis=2).sum(axis=2)  # leading valid candidates
     ext = np.minimum(np.where(run < n_ext, run + 0.5, run) * s.delta, d_along)
     return first - along * ext[0][:, None], last + along * ext[1][:, None]
+
+
+def _between_jambs(
+    kept: list[_Edge], first: np.ndarray, last: np.ndarray, caster: RayCaster, s: _Settings
+) -> np.ndarray:
+    """(n,) bool: something stands at both ends of each opening at half the agent's height (a doorway's jambs).
+
+    Probes start one search step inside the opening's ends and inside its edge line, half the agent's
+    height above it, and look along the edge for 2 search steps.
+    """
+    out = np.array([e.outward for e in kept])
+    nrm = np.array([e.normal for e in kept])
+    along = _unit(np.cross(nrm, out))
+    lift = nrm * (0.5 * s.height) - out * s.delta
+    starts = np.concatenate([first + along * s.delta + lift, last - along * s.delta + lift])
+    directions = np.concatenate([-along, along])
+    reach = caster.first_hits(starts, directions).distance <= 2.0 * s.delta
+    return reach[: len(kept)] & reach[len(kept):]
 
 
 # --------------------------------------------------------------------------
@@ -657,11 +783,14 @@ def detect_openings(
         p0, p1 = (b, a) if np.dot(b - a, left) > 0 else (a, b)
         return Opening(vec3(mid), vec3(heading), width, vec3(p0), vec3(p1), score, reason)
 
+    jambs = _between_jambs(kept, p_first, p_last, caster, s)
     found: list[tuple[Opening, tuple[int, ...], tuple[float, float, float]]] = []
     edges: list[_Edge] = []
-    for e, a, b in zip(kept, p_first, p_last):
+    for e, a, b, framed in zip(kept, p_first, p_last, jambs):
         if float(np.linalg.norm(b - a)) < min_width + _SAME_WIDTH:
             continue
+        if ways.stepped[e.samples].mean() > 0.5 and not framed:
+            continue  # a step along the piece's edge with no jambs: a curb, not a threshold
         d = b - a
         if max_slope is not None and math.atan2(abs(d[1]), math.hypot(d[0], d[2])) > max_slope + 1e-12:
             continue
