@@ -16,14 +16,14 @@ import sys
 import textwrap
 import traceback
 from collections.abc import Callable, Iterator, Sequence
-from contextlib import contextmanager
+from contextlib import contextmanager, suppress
 from pathlib import Path
 from typing import Any
 
 from rich.console import Console
 from rich.table import Table
 
-from g2s_core import api, pipeline, version
+from g2s_core import version
 from g2s_core.config import parse_assignment, presets, resolve_config
 from g2s_core.errors import G2SError, PluginFailure
 from g2s_core.mesh import SAMPLE_PREFIX
@@ -31,7 +31,11 @@ from g2s_core.model import RunResult
 from g2s_core.outputs import DEFAULT_FORMATS, check_outdir, chosen_formats, writers
 from g2s_core.registry import installed, plugin_parameters
 from g2s_core.stages import STAGES
+from g2s_core.lazy import lazy_module
 from g2s_core.summary import final_graph, metric_lines, roots_of, stage_rows
+
+# a run needs them (and trimesh, networkx, scipy through them); listing plugins and checking a config do not
+api, pipeline = lazy_module("g2s_core.api"), lazy_module("g2s_core.pipeline")
 
 EXIT_CODES = "exit codes: 0 success, 2 bad input or config or a failed plugin (named with its package), 1 internal error, 130 interrupted"
 
@@ -45,8 +49,7 @@ def _parser() -> tuple[argparse.ArgumentParser, dict[str, Callable[[argparse.Nam
         description="Graph2Structure: extract a hierarchical structure of navigable paths from level geometry.",
         epilog=f"{EXIT_CODES}; a plugin's command may add its own (g2s COMMAND --help)",
     )
-    parser.add_argument("-v", "--verbose", action="store_true", help="show tracebacks of internal errors")
-    parser.add_argument("--version", action="version", version=f"g2s {version()}")
+    _add_main_options(parser)
     # -v is accepted after the command too; SUPPRESS keeps a -v given before it
     common = argparse.ArgumentParser(add_help=False)
     common.add_argument("-v", "--verbose", action="store_true", default=argparse.SUPPRESS,
@@ -89,6 +92,21 @@ def _parser() -> tuple[argparse.ArgumentParser, dict[str, Callable[[argparse.Nam
     return parser, plugged
 
 
+def _add_main_options(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("-v", "--verbose", action="store_true", help="show tracebacks of internal errors")
+    parser.add_argument("--version", action="version", version=f"g2s {version()}")
+
+
+def _answer_version(argv: Sequence[str] | None) -> None:
+    """Print the version and exit when ``argv`` asks for it before any command, as the full parser would, but
+    before the plugins (whose commands it lists) load; anything else, errors included, is left to the full parser."""
+    early = argparse.ArgumentParser(prog="g2s", add_help=False, allow_abbrev=False, exit_on_error=False)
+    _add_main_options(early)
+    early.add_argument("command", nargs=argparse.REMAINDER)
+    with suppress(argparse.ArgumentError):
+        early.parse_known_args(argv)
+
+
 def _add_output_options(command: argparse.ArgumentParser) -> None:
     command.add_argument(
         "--format",
@@ -106,6 +124,7 @@ def _add_output_options(command: argparse.ArgumentParser) -> None:
 
 
 def main(argv: Sequence[str] | None = None) -> int:
+    _answer_version(argv)
     parser, plugged = _parser()
     args = parser.parse_args(argv)
     errors = Console(stderr=True)

@@ -12,13 +12,14 @@ from __future__ import annotations
 import argparse
 from collections.abc import Callable, Iterator, Mapping, Sequence
 from pathlib import Path
-from typing import Any
-
-import networkx as nx
-import trimesh
+from typing import TYPE_CHECKING, Any
 
 from g2s_core.model import AnalyzerResult, LoadedResult, RunContext, RunResult, Terminals
 from g2s_core.plugin import PluginParams, hookspec
+
+if TYPE_CHECKING:  # annotations only (g2s_core.lazy)
+    import networkx as nx
+    import trimesh
 
 
 @hookspec(firstresult=True)

@@ -10,20 +10,21 @@ from dataclasses import dataclass
 from pathlib import Path
 from urllib.parse import parse_qsl, urlsplit
 
-import numpy as np
-import trimesh
-
 from g2s_core.config import MeshConfig
 from g2s_core.errors import ConfigError, MeshError
 from g2s_core.input_files import check_regular_file
+from g2s_core.lazy import lazy_module
 from g2s_core.registry import Registry, installed
+
+# loaded with the first mesh read: the CLI and the batch command import this module for its names
+np, trimesh = lazy_module("numpy"), lazy_module("trimesh")
 
 SUPPORTED_SUFFIXES = (".obj", ".glb", ".gltf", ".ply", ".stl", ".off")
 
 SAMPLE_PREFIX = "sample:"
 """A mesh argument ``sample:NAME?param=value&...`` asks the level generator NAME for a level."""
 
-Z_UP_TO_Y_UP = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, -1.0, 0.0]])
+Z_UP_TO_Y_UP = ((1.0, 0.0, 0.0), (0.0, 0.0, 1.0), (0.0, -1.0, 0.0))
 """Rotation taking a Z-up right-handed frame to a Y-up right-handed one: (x, y, z) -> (x, z, -y)."""
 
 
@@ -159,7 +160,7 @@ def prepare_mesh(loaded: object, config: MeshConfig, source: str) -> trimesh.Tri
     if not np.isfinite(vertices).all():
         raise MeshError(f"{source}: the mesh has NaN or infinite vertex coordinates")
     if config.up_axis == "z":
-        vertices = vertices @ Z_UP_TO_Y_UP.T
+        vertices = vertices @ np.array(Z_UP_TO_Y_UP).T
     with np.errstate(over="ignore"):
         vertices = vertices * config.scale
     if not np.isfinite(vertices).all():

@@ -29,11 +29,11 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Protocol, runtime_checkable
 
-import networkx as nx
-import numpy as np
-import trimesh
+if TYPE_CHECKING:  # annotations only: importing them here would slow every command (g2s_core.lazy)
+    import networkx as nx
+    import numpy as np
+    import trimesh
 
-if TYPE_CHECKING:
     from g2s_core.config import AgentConfig
 
 Vec3 = tuple[float, float, float]

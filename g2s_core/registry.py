@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import functools
 import importlib.metadata
+import threading
 from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass
 from typing import Any
@@ -78,36 +79,61 @@ class BrokenPlugin:
 
 
 class Registry:
-    """The installed plugins, by stage and name, and the means to call them."""
+    """The installed plugins, by stage and name, and the means to call them.
+
+    A registry made by :meth:`from_entry_points` loads an entry point named
+    ``<stage>.<anything>`` when that stage's plugins are first asked for, and
+    the entry points named otherwise with the first stage asked for: ``g2s
+    --help`` loads only the commands (and output writers it names), a config
+    error needs no plugin, ``g2s plugins`` and :attr:`broken` load them all.
+    """
 
     def __init__(self) -> None:
         self.manager = pluggy.PluginManager(PROJECT)
         self.manager.add_hookspecs(hookspecs)
         self._plugins: dict[tuple[str, str], PluginInfo] = {}
-        self.broken: list[BrokenPlugin] = []
+        self._broken: list[tuple[int, BrokenPlugin]] = []  # with the entry point's place among all; a stage's in order
+        self._unloaded: dict[str | None, list[tuple[int, str, importlib.metadata.EntryPoint]]] = {}
+        self._loading = threading.RLock()  # a stage asked for from two threads is loaded once, by the first
 
     @classmethod
     def from_entry_points(cls, group: str = ENTRY_POINT_GROUP) -> Registry:
-        """Load every entry point of ``group`` (sorted by package, then name); keep the broken ones aside."""
+        """The entry points of ``group`` (sorted by package, then name), each loaded when its stage is first asked for."""
         registry = cls()
         seen: set[tuple[str, str, str]] = set()
         entries = sorted(
             importlib.metadata.entry_points(group=group),
             key=lambda ep: (ep.dist.name if ep.dist else "", ep.name),
         )
-        for ep in entries:
+        for order, ep in enumerate(entries):
             package = ep.dist.name if ep.dist else "?"
             if (package, ep.name, ep.value) in seen:
                 continue
             seen.add((package, ep.name, ep.value))
-            try:
-                loaded = ep.load()
-                for plugin in loaded if isinstance(loaded, (list, tuple)) else [loaded]:
-                    registry.register(plugin, package=package, entry_point=ep.name)
-            except Exception as exc:  # a broken third-party plugin must not stop the others
-                reason = str(exc) if isinstance(exc, PluginError) else f"{type(exc).__name__}: {exc}"
-                registry.broken.append(BrokenPlugin(package, ep.name, ep.value, reason))
+            stage = ep.name.split(".", 1)[0]
+            registry._unloaded.setdefault(stage if stage in BY_KEY else None, []).append((order, package, ep))
         return registry
+
+    @property
+    def broken(self) -> list[BrokenPlugin]:
+        """Every entry point that could not be loaded or registered, in the order of the entry points."""
+        self._load(None)
+        return [broken for _, broken in sorted(self._broken, key=lambda pair: pair[0])]
+
+    def _load(self, stage: str | None) -> None:
+        """Load the entry points of ``stage`` (of every stage when ``None``) and those named after no stage,
+        in the order of the entry points; keep the broken ones aside."""
+        keys = [None, *BY_KEY] if stage is None else [None, stage]
+        with self._loading:
+            pending = sorted(entry for key in keys for entry in self._unloaded.pop(key, []))
+            for order, package, ep in pending:
+                try:
+                    loaded = ep.load()
+                    for plugin in loaded if isinstance(loaded, (list, tuple)) else [loaded]:
+                        self.register(plugin, package=package, entry_point=ep.name)
+                except Exception as exc:  # a broken third-party plugin must not stop the others
+                    reason = str(exc) if isinstance(exc, PluginError) else f"{type(exc).__name__}: {exc}"
+                    self._broken.append((order, BrokenPlugin(package, ep.name, ep.value, reason)))
 
     def register(self, plugin: Any, package: str, entry_point: str) -> PluginInfo:
         """Register one plugin object; its stage is the single hook of the stage table it implements."""
@@ -123,6 +149,10 @@ class Registry:
             found = ", ".join(hooks) or "none"
             raise PluginError(f"{where}: a plugin implements exactly one stage hook, found {found}")
         stage = BY_HOOK[hooks[0]]
+        named = entry_point.split(".", 1)[0]
+        if named in BY_KEY and named != stage.key:  # it would be missed by a registry that loaded only its stage
+            self.manager.unregister(plugin)
+            raise PluginError(f"{where}: the plugin is a {stage.title}, whose entry points are named '{stage.key}.<name>'")
         name = getattr(plugin, "NAME", None)
         if not isinstance(name, str) or not name:
             self.manager.unregister(plugin)
@@ -149,6 +179,7 @@ class Registry:
 
     def plugins(self, stage: str | None = None) -> list[PluginInfo]:
         """Registered plugins in pipeline-stage order, then by name."""
+        self._load(stage)
         order = {s.key: i for i, s in enumerate(STAGES)}
         chosen = (p for p in self._plugins.values() if stage is None or p.stage == stage)
         return sorted(chosen, key=lambda p: (order[p.stage], p.name))
@@ -162,7 +193,8 @@ class Registry:
                 package provides a plugin of the same kind and name).
         """
         title = BY_KEY[stage].title
-        for broken in self.broken:  # also a second plugin of that name: which one is meant is unknown
+        self._load(stage)
+        for _, broken in self._broken:  # also a second plugin of that name: which one is meant is unknown
             if broken.entry_point == f"{stage}.{name}":
                 raise PluginFailure(
                     f"{title} plugin {name!r} (package {broken.package!r}) failed to load: {broken.reason}"
@@ -171,7 +203,7 @@ class Registry:
         if info is not None:
             return info
         installed = ", ".join(p.name for p in self.plugins(stage)) or "none"
-        broken = [f"{b.entry_point} of package {b.package!r}" for b in self.broken if b.entry_point.startswith(f"{stage}.")]
+        broken = [f"{b.entry_point} of package {b.package!r}" for _, b in self._broken if b.entry_point.startswith(f"{stage}.")]
         also = f"; failed to load: {', '.join(broken)}, see `g2s plugins`" if broken else ""
         where = f"{key}: " if key else ""
         raise ConfigError(f"{where}{title} plugin {name!r} is not installed (installed: {installed}{also})")

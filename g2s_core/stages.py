@@ -39,12 +39,12 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-import networkx as nx
-import numpy as np
-import trimesh
-
 from g2s_core import hookspecs
+from g2s_core.lazy import lazy_module
 from g2s_core.model import AnalyzerResult, LoadedResult, Terminals
+
+# a plugin's result is checked after the plugin has imported them; listing plugins needs none
+nx, np, trimesh = lazy_module("networkx"), lazy_module("numpy"), lazy_module("trimesh")
 
 Check = Callable[[Any, Mapping[str, Any], Any], "str | None"]
 """``check(result, hook arguments, plugin object)``: what is wrong with a result, or ``None``."""

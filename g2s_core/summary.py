@@ -5,10 +5,11 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 
-import networkx as nx
-
+from g2s_core.lazy import lazy_module
 from g2s_core.model import RunResult, StageStats
 from g2s_core.stages import PIPELINE
+
+nx = lazy_module("networkx")  # a result holds graphs only once it is loaded; the CLI imports this module for every command
 
 
 

@@ -345,3 +345,45 @@ def test_two_installed_plugins_of_one_name_stop_the_runs_that_ask_for_it(monkeyp
 
 
 OTHER_FIRST_K = terminal_plugin("first_k")
+
+
+def test_entry_points_load_when_their_stage_is_first_asked_for(monkeypatch):
+    """``<stage>.<name>`` entry points load with their stage, the others with the first stage asked for;
+    a broken one is listed (with every other) once all are asked for, in the order of the entry points."""
+    import importlib.metadata
+
+    loaded = []
+
+    def entry_point(name, plugin):
+        def load():
+            loaded.append(name)
+            if plugin is None:
+                raise ImportError(f"{name} is broken")
+            return plugin
+
+        return types.SimpleNamespace(name=name, value=f"pkg.{name}", dist=types.SimpleNamespace(name="pkg"), load=load)
+
+    @hookimpl
+    def depth(structure):
+        return {node: 0.0 for node in structure}
+
+    found = [entry_point("terminals.first_k", FIRST_K), entry_point("analyzers.depth", make_plugin("depth", g2s_analyze=depth)),
+             entry_point("anything", make_plugin("any_k", Params=TopK, g2s_select_terminals=select_first)),
+             entry_point("analyzers.gone", None), entry_point("terminals.gone", None)]
+    monkeypatch.setattr(importlib.metadata, "entry_points", lambda group: found)
+    registry = Registry.from_entry_points()
+    assert loaded == []
+    assert [p.name for p in registry.plugins("terminals")] == ["any_k", "first_k"]
+    assert sorted(loaded) == ["anything", "terminals.first_k", "terminals.gone"]
+    assert registry.get("analyzers", "depth").stage == "analyzers"
+    assert [b.entry_point for b in registry.broken] == ["analyzers.gone", "terminals.gone"]
+    assert sorted(loaded) == ["analyzers.depth", "analyzers.gone", "anything", "terminals.first_k", "terminals.gone"]
+
+
+def test_an_entry_point_named_for_another_stage_is_broken():
+    """Loaded only with the stage its name gives, it would be missing from a registry that loaded the other one."""
+    registry = Registry()
+    with pytest.raises(PluginError, match=r"entry point 'analyzers.first_k' of package 'p': the plugin is a "
+                                          r"TerminalSelector, whose entry points are named 'terminals.<name>'"):
+        registry.register(terminal_plugin(), package="p", entry_point="analyzers.first_k")
+    assert registry.plugins() == []

@@ -41,9 +41,10 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from g2s_core import DISTRIBUTION, api, pipeline
+from g2s_core import DISTRIBUTION
 from g2s_core.config import find_config, load_raw_config, parse_config, with_evaluators
 from g2s_core.errors import G2SError, PluginFailure
+from g2s_core.lazy import lazy_module
 from g2s_core.mesh import SAMPLE_PREFIX, SUPPORTED_SUFFIXES
 from g2s_core.model import RunResult
 from g2s_core.outputs import chosen_formats, result_files
@@ -52,6 +53,10 @@ from g2s_core.stages import PIPELINE
 
 if TYPE_CHECKING:
     import pandas as pd
+
+    from g2s_core import api, pipeline
+else:  # a pair's run needs them (and trimesh, networkx, scipy through them); `g2s --help` lists the command without
+    api, pipeline = lazy_module("g2s_core.api"), lazy_module("g2s_core.pipeline")
 
 RECORDS = ".g2s-batch"
 """The folder of ``OUTDIR`` holding one row file per finished pair."""

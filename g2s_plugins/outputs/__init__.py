@@ -21,7 +21,18 @@ graph      graph.json                                  initial graph, networkx n
 See ``docs/outputs.md`` for the details of each format.
 """
 
+from typing import Any
+
 from g2s_core.model import LoadedResult
-from g2s_plugins.outputs.json_reader import load_result
 
 __all__ = ["LoadedResult", "load_result"]
+
+
+def __getattr__(name: str) -> Any:
+    # the reader imports networkx and scipy; the writers' plugin objects in this package, which every
+    # command lists, import neither
+    if name == "load_result":
+        from g2s_plugins.outputs.json_reader import load_result
+
+        return load_result
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

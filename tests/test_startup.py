@@ -1,0 +1,59 @@
+"""What the answers that need no computation import (docs/performance.md, "Start-up"): `g2s --version` no plugin
+and no heavy library; `--help`, a config error and `g2s presets` only the plugins they name, none of trimesh, scipy,
+networkx, numpy. Each case runs in a fresh interpreter, so the test sees exactly what that command imported."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+
+import pytest
+
+from tests.conftest import PROJECT
+
+HEAVY = ("trimesh", "scipy", "networkx", "numpy", "pymeshlab", "rustworkx", "igraph", "plotly", "matplotlib", "PIL")
+
+PROBE = """
+import contextlib, io, json, sys
+from g2s_core import cli
+watched, argv = sys.argv[1].split(","), sys.argv[2:]
+with contextlib.redirect_stdout(io.StringIO()) as out, contextlib.redirect_stderr(io.StringIO()) as err:
+    try:
+        code = cli.main(argv)
+    except SystemExit as exit:
+        code = exit.code
+print(json.dumps({"code": code, "out": out.getvalue(), "err": err.getvalue(),
+                  "modules": sorted(name for name in sys.modules if name.partition(".")[0] in watched)}))
+"""
+
+
+def imported(*argv: str) -> dict:
+    """Exit code, output and the top-level packages of :data:`HEAVY` and ``g2s_plugins`` that ``g2s *argv`` imported."""
+    proc = subprocess.run([sys.executable, "-c", PROBE, ",".join((*HEAVY, "g2s_plugins")), *argv],
+                          capture_output=True, text=True, cwd=PROJECT, check=True)
+    return json.loads(proc.stdout)
+
+
+def test_version_loads_no_plugin_and_no_heavy_library():
+    answer = imported("--version")
+    assert answer["code"] == 0 and answer["out"].startswith("g2s ")
+    assert answer["modules"] == []
+
+
+@pytest.mark.parametrize("argv", [["--help"], ["run", "--help"], ["presets"]])
+def test_help_and_presets_load_only_the_commands_and_writers_they_show(argv):
+    answer = imported(*argv)
+    assert answer["code"] == 0 and answer["out"]
+    plugins = {name for name in answer["modules"] if name.startswith("g2s_plugins.")}
+    assert plugins <= {"g2s_plugins.batch", "g2s_plugins.batch.command", "g2s_plugins.batch.runner",
+                       "g2s_plugins.outputs", "g2s_plugins.outputs.writers"}
+    assert not [name for name in answer["modules"] if not name.startswith("g2s_plugins")]
+
+
+def test_a_config_error_is_found_before_any_heavy_library_loads(tmp_path):
+    config = tmp_path / "typo.yaml"
+    config.write_text("extends: map_piece\nagnet: {radius: 0.4}\n")
+    answer = imported("run", str(config), "level.obj", "-o", str(tmp_path / "out"))
+    assert answer["code"] == 2 and "agnet: unknown key" in answer["err"]
+    assert not [name for name in answer["modules"] if not name.startswith("g2s_plugins")]
