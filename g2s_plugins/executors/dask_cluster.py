@@ -51,9 +51,11 @@ def g2s_execute(
         client = Client(params.scheduler)
     else:
         with _children_ignore_interrupt():
+            # a pair's failure reaches g2s through its future; Dask's own ERROR lines (a worker's heartbeat to a
+            # scheduler that Ctrl-C is closing, seen under load) would break the one-line "g2s: interrupted"
             cluster = LocalCluster(
                 n_workers=params.workers or os.cpu_count(), threads_per_worker=1, processes=True,
-                dashboard_address=":0", silence_logs=logging.ERROR,
+                dashboard_address=":0", silence_logs=logging.CRITICAL,
             )
         client = Client(cluster)
     # pure=False: a pair is run again when asked again (resume decides what is finished, not Dask's cache)
