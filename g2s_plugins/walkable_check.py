@@ -208,7 +208,7 @@ def check_walkable_surface(graph: nx.Graph, mesh: trimesh.Trimesh, context: RunC
     causes = likely_causes(mesh, context.agent, winding=winding)
     if not causes:
         return
-    what = (f"only {100 * share:.1f} % of the level's footprint is walkable"
-            if share < MIN_WALKABLE_SHARE or not tall else
-            f"the level is {height_ratio(mesh):.1f} times as tall as it is wide")
+    walkable = f"{100 * share:.1f} % of the level's footprint is walkable"
+    what = (f"only {walkable}" if share < MIN_WALKABLE_SHARE else
+            walkable if not tall else f"the level is {height_ratio(mesh):.1f} times as tall as it is wide")
     context.warn(f"mesh: {what}; {'; '.join(causes)}")
