@@ -75,6 +75,9 @@ MAX_CANDIDATES = 5_000_000
 MAX_EDGE_BATCH = 200_000
 """Candidate edges tested per batch of rays (bounds memory on large levels)."""
 
+MAX_LEDGE_BATCH = 50_000
+"""Candidate points whose ledge rays (8 each) are cast per batch (bounds memory on large levels)."""
+
 
 class Params(PluginParams):
     """Sampling method and density, edge rules and clean-up."""
@@ -192,18 +195,20 @@ def agent_fits(
             wall = (hits.distance < clearance) & ~caster.walkable_faces(hits.face, agent.max_slope_deg)
             idx = idx[~wall]
 
-    # Ledges: ground in every direction at the clearance distance.
-    base = points[idx]
-    m, k = len(base), len(COMPASS)
+    # Ledges: ground in every direction at the clearance distance, a batch of
+    # candidates at a time (8 rays each; one batch for all would hold several
+    # (8 n, 3) arrays at once: 0.8 GB for 0.6 M candidates).
     reach = float(agent.max_rise(clearance)) + GROUND_MARGIN
-    probe = (base[:, None, :] + clearance * COMPASS[None, :, :]).reshape(-1, 3)
-    down = caster.first_hits(probe + reach * UP, -UP)
-    ground = (down.distance <= 2.0 * reach) & caster.walkable_faces(down.face, agent.max_slope_deg)
-    # Head room over the landing point, from the probe's own origin (see walk_segments).
-    above = agent.height - np.where(ground, down.distance, 0.0)
-    ground[ground] = clear_above(caster, probe[ground] + reach * UP, above[ground])
     ok[:] = False
-    ok[idx] = ground.reshape(m, k).all(axis=1)
+    for begin in range(0, len(idx), MAX_LEDGE_BATCH):
+        rows = idx[begin : begin + MAX_LEDGE_BATCH]
+        probe = (points[rows][:, None, :] + clearance * COMPASS[None, :, :]).reshape(-1, 3)
+        down = caster.first_hits(probe + reach * UP, -UP)
+        ground = (down.distance <= 2.0 * reach) & caster.walkable_faces(down.face, agent.max_slope_deg)
+        # Head room over the landing point, from the probe's own origin (see walk_segments).
+        above = agent.height - np.where(ground, down.distance, 0.0)
+        ground[ground] = clear_above(caster, probe[ground] + reach * UP, above[ground])
+        ok[rows] = ground.reshape(len(rows), len(COMPASS)).all(axis=1)
     return ok
 
 
@@ -254,9 +259,11 @@ def poisson_disk_subset(points: np.ndarray, radius: float, seed: int = 0) -> np.
     n = len(points)
     if n <= 1:
         return np.arange(n)
-    pairs = cKDTree(points).query_pairs(radius, output_type="ndarray").astype(np.int64).reshape(-1, 2)
-    heads = np.concatenate([pairs[:, 0], pairs[:, 1]])
-    tails = np.concatenate([pairs[:, 1], pairs[:, 0]])
+    pairs = cKDTree(points).query_pairs(radius, output_type="ndarray").reshape(-1, 2)
+    # int32 halves the two lists (pairs grow as n x points per disk: 7 M for 0.6 M points).
+    heads = np.concatenate([pairs[:, 0], pairs[:, 1]], dtype=np.int32)
+    tails = np.concatenate([pairs[:, 1], pairs[:, 0]], dtype=np.int32)
+    del pairs
     order = np.argsort(heads, kind="stable")
     neighbours = tails[order]
     start = np.concatenate([[0], np.cumsum(np.bincount(heads, minlength=n))])
