@@ -36,6 +36,7 @@ from g2s_core.config import AgentConfig
 from g2s_core.errors import G2SError
 from g2s_core.mesh import flip_inside_out_bodies
 from g2s_core.model import RunContext
+from g2s_plugins._raycasting import UP, RayCaster
 
 MIN_WALKABLE_SHARE = 0.1
 """Walkable area over the footprint below which a run is suspicious: every correct level measured has
@@ -134,11 +135,8 @@ def hidden_floor_bodies(mesh: trimesh.Trimesh, agent: AgentConfig) -> int:
     for index, faces in enumerate(bodies):
         body_of[faces] = index
     up = np.flatnonzero((body_of >= 0) & (merged.face_normals[:, 1] >= math.cos(math.radians(agent.max_slope))))
-    origins = merged.triangles_center[up] + [0.0, RAY_START, 0.0]
-    upward = np.tile([0.0, 1.0, 0.0], (len(up), 1))
-    hits, rays = merged.ray.intersects_location(origins, upward, multiple_hits=False)[:2]
-    headroom = np.full(len(up), math.inf)
-    headroom[rays] = hits[:, 1] - origins[rays, 1] + RAY_START
+    origins = merged.triangles_center[up] + RAY_START * UP
+    headroom = RayCaster(merged).first_hits(origins, UP).distance + RAY_START  # inf where nothing is above
     area = merged.area_faces[up]
     cramped = np.bincount(body_of[up], weights=area * (headroom < agent.height), minlength=len(bodies))
     return int(np.count_nonzero(2 * cramped > np.bincount(body_of[up], weights=area, minlength=len(bodies))))
