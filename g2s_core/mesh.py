@@ -199,12 +199,13 @@ def clean_mesh(mesh: trimesh.Trimesh) -> tuple[trimesh.Trimesh, dict[str, int]]:
     result = trimesh.Trimesh(vertices=cleaned.vertex_matrix(), faces=cleaned.face_matrix(), process=True)
     if len(result.faces) == 0:
         raise MeshError("cleaning removed every triangle of the mesh")
-    result, removed["flipped_bodies"] = flip_inside_out_bodies(result)
-    return result, removed
+    result, flipped = flip_inside_out_bodies(result)
+    return result, {**removed, "flipped_bodies": len(flipped)}
 
 
-def flip_inside_out_bodies(mesh: trimesh.Trimesh) -> tuple[trimesh.Trimesh, int]:
-    """A copy of ``mesh`` whose closed bodies of negative signed volume are wound the other way, and their number.
+def flip_inside_out_bodies(mesh: trimesh.Trimesh) -> tuple[trimesh.Trimesh, list[np.ndarray]]:
+    """A copy of ``mesh`` whose closed bodies of negative signed volume are wound the other way, and the face
+    indices of each such body.
 
     Recast and the sampler walk only on faces whose normal points up, so an
     inside-out floor offers its underside. trimesh's ``fix_inversion`` finds
@@ -215,4 +216,4 @@ def flip_inside_out_bodies(mesh: trimesh.Trimesh) -> tuple[trimesh.Trimesh, int]
     fixed = mesh.copy()
     trimesh.repair.fix_inversion(fixed, multibody=True)
     flipped = np.flatnonzero(np.any(fixed.faces != mesh.faces, axis=1))
-    return fixed, len(trimesh.graph.connected_components(mesh.face_adjacency, nodes=flipped))  # bodies of flipped faces
+    return fixed, [np.asarray(body) for body in trimesh.graph.connected_components(mesh.face_adjacency, nodes=flipped)]

@@ -146,9 +146,7 @@ def _inside_out_faces(mesh: trimesh.Trimesh) -> tuple[trimesh.Trimesh, list[np.n
     """``mesh`` with coincident vertices merged, and the face indices of each of its closed bodies wound
     inside out (those :func:`g2s_core.mesh.flip_inside_out_bodies` flips)."""
     merged = trimesh.Trimesh(np.asarray(mesh.vertices), np.asarray(mesh.faces), process=True)
-    flipped = np.flatnonzero(np.any(flip_inside_out_bodies(merged)[0].faces != merged.faces, axis=1))
-    return merged, [np.asarray(sorted(b)) for b in trimesh.graph.connected_components(merged.face_adjacency,
-                                                                                        nodes=flipped)]
+    return merged, flip_inside_out_bodies(merged)[1]
 
 
 GENERAL_HINT = ("check mesh.scale (the file's units to metres), the agent settings, the mesh's up_axis, and that its "
