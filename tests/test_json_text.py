@@ -1,0 +1,136 @@
+"""The fixed JSON text (g2s_plugins.outputs.json_text): the standard library's indented text, character for character."""
+
+from __future__ import annotations
+
+import enum
+import json
+import random
+
+import numpy as np
+import pytest
+
+from g2s_plugins.outputs.json_text import dumps_indented
+
+
+def standard(value) -> str:
+    return json.dumps(value, sort_keys=True, indent=1, ensure_ascii=False, allow_nan=False)
+
+
+class Level(enum.IntEnum):
+    GROUND = 0
+    UPPER = 1
+
+
+class Name(str):
+    pass
+
+
+TRICKY = [
+    {},
+    [],
+    (),
+    "",
+    0,
+    -0.0,
+    0.1,
+    1e16,
+    1e-7,
+    -123456789.123,
+    5e-324,
+    1.7976931348623157e308,
+    2**70,
+    -(2**63),
+    True,
+    False,
+    None,
+    "plain",
+    'quote " backslash \\ slash / tab \t newline \n nul \x00 bell \x07 del \x7f',
+    "unicode: é ü 中文 m² \u2028 \u2029 \ud800 😀",
+    {"b": 1, "a": [], "c": {}, "A": [[]], "é": {"": None}, "a b": ({},)},
+    [True, 1, 1.0, False, 0, 0.0],
+    [1, 2, 3],
+    [1.5, -2.25, 3.0],
+    [1, 2.5],
+    [[1, 2], [3, 4]],
+    [{"x": [1.0, 2.0, 3.0], "y": None}, {"x": [], "y": {"z": [[], {}]}}],
+    (1, (2, (3, ())), [4, [5]]),
+    {"deep": [[[[[[[["bottom"]]]]]]]]},
+    # types the writer hands to json.dumps: subclasses, non-str keys, numpy scalars that are float/int subclasses
+    [Level.UPPER, {"level": Level.GROUND}],
+    [Name("sub"), {Name("k"): Name("v")}],
+    {10: "int key", 2: "int key"},
+    {2.5: "float key", -1e-9: "float key", True: "bool key"},
+    {None: "none key"},
+    {"scalars": [np.float64(0.1), np.float64(-2.5)]},
+    [np.float64(1.0), 2.0],
+]
+
+
+@pytest.mark.parametrize("value", TRICKY, ids=range(len(TRICKY)))
+def test_tricky_values_give_the_standard_text(value):
+    assert dumps_indented(value) == standard(value)
+    # the same value inside nested containers, where every line is indented deeper
+    nested = {"outer": [value, {"inner": value}], "z": [[value]]}
+    assert dumps_indented(nested) == standard(nested)
+
+
+def random_value(rng: random.Random, depth: int):
+    choice = rng.randrange(10 if depth < 5 else 6)
+    if choice == 0:
+        return rng.choice([None, True, False])
+    if choice == 1:
+        return rng.randint(-(10**12), 10**12)
+    if choice == 2:
+        return rng.choice([rng.uniform(-1e6, 1e6), rng.random() * 1e-9, float(rng.randint(-5, 5)), 1e22])
+    if choice == 3:
+        return "".join(rng.choice("ab\"\\\n\té中😀 /\x01") for _ in range(rng.randrange(6)))
+    if choice == 4:
+        return [rng.random() for _ in range(rng.randrange(4))]
+    if choice == 5:
+        return [rng.randint(0, 99) for _ in range(rng.randrange(4))]
+    if choice in (6, 7):
+        return [random_value(rng, depth + 1) for _ in range(rng.randrange(4))]
+    return {"".join(rng.choice("abcé_ ") for _ in range(rng.randrange(1, 4))): random_value(rng, depth + 1)
+            for _ in range(rng.randrange(5))}
+
+
+def test_random_documents_give_the_standard_text():
+    rng = random.Random(7)
+    for _ in range(300):
+        value = random_value(rng, 0)
+        assert dumps_indented(value) == standard(value)
+
+
+@pytest.mark.parametrize("value", [
+    float("nan"), [1.0, float("inf")], {"a": [-float("inf")]}, {"k": {1.0: 2}, "nan": {float("nan"): 1}},
+])
+def test_non_finite_floats_raise_as_json_does(value):
+    with pytest.raises(ValueError) as standard_error:
+        standard(value)
+    with pytest.raises(ValueError) as error:
+        dumps_indented(value)
+    assert str(error.value) == str(standard_error.value)
+
+
+@pytest.mark.parametrize("value", [object(), [1, {"a": {1, 2}}], {"a": np.int64(3)}, {(1, 2): "tuple key"},
+                                   {"a": {1: "int key", "b": "str key"}}])
+def test_what_json_cannot_hold_raises_as_json_does(value):
+    with pytest.raises(TypeError) as standard_error:
+        standard(value)
+    with pytest.raises(TypeError) as error:
+        dumps_indented(value)
+    assert str(error.value) == str(standard_error.value)
+
+
+def test_circular_reference_raises_as_json_does():
+    loop: list = [1]
+    loop.append({"back": loop})
+    with pytest.raises(ValueError, match="Circular reference detected"):
+        dumps_indented(loop)
+
+
+def test_deep_nesting_gives_the_standard_text():
+    value: list = []
+    for _ in range(300):
+        value = [value, {"k": 1}]
+    assert dumps_indented(value) == standard(value)
