@@ -17,6 +17,7 @@ __all__ = ["agent_value", "edge_list", "final_graph", "floors", "is_loop_edge", 
 
 FLOAT_DIGITS = 9
 """Floats in the written files keep this many significant digits (``format(x, '.9g')``)."""
+_ROUNDED = f".{FLOAT_DIGITS}g"
 
 def number(value: Any) -> float | None:
     """``value`` as a float rounded to :data:`FLOAT_DIGITS` significant digits; ``None`` if not finite.
@@ -26,14 +27,14 @@ def number(value: Any) -> float | None:
     x = float(value)
     if not math.isfinite(x):
         return None
-    return float(format(x, f".{FLOAT_DIGITS}g")) + 0.0
+    return float(format(x, _ROUNDED)) + 0.0
 
 
 def vector(value: Any) -> list[float | None] | None:
     """A 3-vector as a list of rounded floats (``None`` when absent)."""
     if value is None:
         return None
-    return [number(v) for v in np.asarray(value, dtype=np.float64).reshape(-1)]
+    return [number(v) for v in np.asarray(value, dtype=np.float64).reshape(-1).tolist()]
 
 
 def terminal_ids(result: RunResult) -> list[int]:

@@ -23,8 +23,10 @@ the navmesh build time) and the g2s version go to ``run.json`` instead.
 
 from __future__ import annotations
 
-import json
+import gc
 import platform
+from collections.abc import Iterator
+from contextlib import contextmanager
 from pathlib import Path
 from typing import Any
 
@@ -33,9 +35,9 @@ import numpy as np
 
 from g2s_core import version
 from g2s_core.model import Opening, RunResult
-from g2s_core.rooted import tree_parent
 from g2s_plugins.outputs.common import edge_list, final_graph, number, roots_of, terminal_ids, vector
 from g2s_plugins.outputs.files import atomic_write
+from g2s_plugins.outputs.json_text import dumps_indented
 
 SCHEMA_VERSION = 3
 STRUCTURE_FILE = "structure.json"
@@ -56,15 +58,41 @@ _TIMING_WORDS = ("seconds", "time")
 
 def write(result: RunResult, outdir: Path) -> list[Path]:
     """Write ``structure.json`` and ``run.json`` into ``outdir``."""
-    structure = atomic_write(outdir / STRUCTURE_FILE, dumps(structure_document(result)))
+    with _collector_paused():
+        structure = atomic_write(outdir / STRUCTURE_FILE, dumps(structure_document(result)))
     run = atomic_write(outdir / RUN_FILE, dumps(run_document(result)))
     return [structure, run]
 
 
+@contextmanager
+def _collector_paused() -> Iterator[None]:
+    """CPython's cycle collector off while the document is built and written, then back as it was.
+
+    The document of a big level is about a million new lists, dicts and
+    strings, none in a cycle; each full collection they set off walks every
+    object of the run as well (its graphs with their attribute dicts), which
+    doubled the CPU time of building the document on the 100k-polygon level
+    (docs/performance.md). Nothing collectable is lost: the collector runs
+    again as soon as it is back on.
+    """
+    enabled = gc.isenabled()
+    gc.disable()
+    try:
+        yield
+    finally:
+        if enabled:
+            gc.enable()
+
+
 def dumps(document: dict[str, Any]) -> bytes:
-    """The fixed JSON form: sorted keys, one-space indent, UTF-8, final newline."""
-    text = json.dumps(document, sort_keys=True, indent=1, ensure_ascii=False, allow_nan=False)
-    return (text + "\n").encode("utf-8")
+    """The fixed JSON form: sorted keys, one-space indent, UTF-8, final newline.
+
+    The text of ``json.dumps(document, sort_keys=True, indent=1,
+    ensure_ascii=False, allow_nan=False)``, character for character, from
+    :func:`g2s_plugins.outputs.json_text.dumps_indented` (the standard
+    library's indented encoder is pure Python).
+    """
+    return (dumps_indented(document) + "\n").encode("utf-8")
 
 
 def structure_document(result: RunResult) -> dict[str, Any]:
@@ -78,8 +106,9 @@ def structure_document(result: RunResult) -> dict[str, Any]:
     trees: list[dict[str, Any]] = []
     if graph is not None:
         roots = roots_of(graph)
+        parents = _tree_parents(graph)
         for node in sorted(graph.nodes):
-            nodes.append(_node_record(graph, node, terminals, result.analysis, keys))
+            nodes.append(_node_record(graph, node, terminals, result.analysis, keys, parents.get(node)))
         for u, v in edge_list(graph):
             attrs = graph.edges[u, v]
             edges.append({
@@ -152,11 +181,23 @@ def run_document(result: RunResult) -> dict[str, Any]:
     }
 
 
-def _node_record(graph: nx.Graph, node: int, terminals: set[int], analysis: dict, keys: list[str]) -> dict[str, Any]:
-    attrs = graph.nodes[node]
-    parent = None
+def _tree_parents(graph: nx.Graph) -> dict[int, int]:
+    """Each node's parent in its rooted tree (:func:`g2s_core.rooted.tree_parent` of every node of a directed
+    graph, in one pass over the in-edges instead of a predecessor view per node); ``{}`` for an undirected graph."""
+    parents: dict[int, int] = {}
     if graph.is_directed():
-        parent = tree_parent(graph, node)
+        # in-edges come per node in the order of its predecessors, as tree_parent reads them: the first
+        # predecessor that is not a loop partner is the parent
+        for parent, child, loop in graph.in_edges(data="loop", default=False):
+            if not loop and child not in parents:
+                parents[child] = parent
+    return parents
+
+
+def _node_record(
+    graph: nx.Graph, node: int, terminals: set[int], analysis: dict, keys: list[str], parent: int | None
+) -> dict[str, Any]:
+    attrs = graph.nodes[node]
     return {
         "id": int(node),
         "position": vector(attrs["pos"]),
@@ -237,7 +278,12 @@ _SKIP = _Skip()
 
 def _plain(value: Any) -> Any:
     """``value`` as JSON data with rounded floats; :data:`_SKIP` for what cannot be written."""
-    if value is None or isinstance(value, str):
+    kind = type(value)  # the plain types first, by identity: most attribute values are (a quarter of the writing)
+    if kind is float:
+        return number(value)
+    if kind is int or kind is str or kind is bool or value is None:
+        return value
+    if isinstance(value, str):
         return value
     if isinstance(value, (bool, np.bool_)):
         return bool(value)
