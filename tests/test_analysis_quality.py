@@ -422,6 +422,20 @@ def test_percentile_keeps_one_busy_polygon_from_lifting_its_node():
     assert ranked[4] > ranked[1]
 
 
+@pytest.mark.parametrize("values", [
+    [], [3.0], [0.0, -0.0, 0.0], [1.0, float("nan"), 2.0], [float("inf"), -float("inf"), 1.0, float("inf")], [0.0] * 7,
+    np.random.default_rng(1).integers(0, 5, 1000).astype(float), np.round(np.random.default_rng(2).random(5000), 2),
+    np.random.default_rng(3).random(5000),
+], ids=range(9))
+def test_percentile_ranks_are_scipys_to_the_bit(values):
+    # the ranks are computed without scipy.stats (its import is slow); they must stay rankdata's, ties and nan included
+    from scipy.stats import rankdata
+
+    values = np.asarray(values, dtype=np.float64)
+    expected = 100.0 * (rankdata(values) - 0.5) / max(values.size, 1)
+    assert traffic.percentile(values).tobytes() == expected.tobytes()
+
+
 def test_area_weighted_betweenness_with_a_loop_matches_brute_force():
     graph = ring(7, 1.0)
     graph.add_edge(0, 10, weight=2.4)  # unequal, so that no two paths tie
