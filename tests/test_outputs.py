@@ -181,6 +181,27 @@ def test_structure_json_follows_the_shipped_schema(result, tmp_path):
     assert {(p, c) for c, p in parents.items() if p is not None} == set(result.structure.edges)
 
 
+def test_structure_json_text_is_the_standard_librarys(result, waypoint_result):
+    # the writer's own encoder (outputs.json_text) must give json.dumps's text of the same document
+    for run in (result, waypoint_result):
+        document = structure_json.structure_document(run)
+        text = json.dumps(document, sort_keys=True, indent=1, ensure_ascii=False, allow_nan=False) + "\n"
+        assert structure_json.dumps(document) == text.encode("utf-8")
+
+
+def test_node_parents_are_the_tree_parents_with_loop_partners_skipped(result):
+    from g2s_core.rooted import tree_parent
+
+    forest = nx.DiGraph()
+    forest.add_edge(2, 3, loop=True)  # 3's first predecessor is a loop partner, its tree parent is 1
+    forest.add_edges_from([(0, 1), (0, 2), (1, 3), (3, 4)])
+    for graph in (forest, result.structure):
+        expected = {node: tree_parent(graph, node) for node in graph}
+        assert {node: structure_json._tree_parents(graph).get(node) for node in graph} == expected
+    assert structure_json._tree_parents(forest)[3] == 1
+    assert structure_json._tree_parents(nx.Graph([(0, 1)])) == {}
+
+
 def test_schema_rejects_what_the_writer_must_not_write(result):
     jsonschema = pytest.importorskip("jsonschema")
     document = structure_json.structure_document(result)
