@@ -42,7 +42,7 @@ import scipy.sparse as sp
 from pydantic import Field
 from scipy.sparse import csgraph
 
-from g2s_core.model import RunContext, add_nodes_with_data
+from g2s_core.model import RunContext
 from g2s_core.plugin import PluginParams, hookimpl
 from g2s_plugins.surface_arrays import SurfaceArrays, surface_arrays
 
@@ -73,7 +73,9 @@ def add_loops(graph: nx.Graph, structure: nx.Graph, stretch: float, min_gain: fl
 
     Returns:
         A new graph (or ``structure`` when nothing is added) with the added
-        paths' nodes and edges, attributes copied from ``graph``.
+        paths' nodes and edges; a new graph's nodes and edges carry no
+        attributes (the pipeline copies ``graph``'s, see
+        :func:`g2s_core.hookspecs.g2s_add_loops`).
     """
     if math.isinf(stretch) or nx.is_empty(structure):
         return structure
@@ -103,14 +105,14 @@ def add_loops(graph: nx.Graph, structure: nx.Graph, stretch: float, min_gain: fl
         added.append(path)
         for p, q in zip(path, path[1:]):
             _join(neighbours, p, q, graph.edges[arrays.nodes[p], arrays.nodes[q]]["weight"])
-    # a copy as Graph.copy() makes it, but visiting each edge once rather than from both ends
+    # the structure's nodes and edges, then every path's nodes, then every path's edges (the insertion order of
+    # adding them path by path), without attributes: the pipeline copies the graph's onto them all at once
     looped = nx.Graph(**structure.graph)
-    add_nodes_with_data(looped, structure, (data for _, data in structure.nodes(data=True)))
-    looped.add_edges_from(structure.edges(data=True))
-    # every path's nodes, then every path's edges: the insertion order of adding them path by path
+    looped.add_nodes_from(structure)
+    looped.add_edges_from(structure.edges)
     paths_ids = [[arrays.nodes[i] for i in path] for path in added]
-    looped.add_nodes_from((node, graph.nodes[node]) for ids in paths_ids for node in ids if node not in looped)
-    looped.add_edges_from((u, v, graph.edges[u, v]) for ids in paths_ids for u, v in zip(ids, ids[1:]))
+    looped.add_nodes_from(node for ids in paths_ids for node in ids)
+    looped.add_edges_from((u, v) for ids in paths_ids for u, v in zip(ids, ids[1:]))
     return looped
 
 
