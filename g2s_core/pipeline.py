@@ -16,7 +16,7 @@ import trimesh
 from g2s_core.config import RunConfig
 from g2s_core.disconnected import disconnected_warning
 from g2s_core.errors import ConfigError, G2SError
-from g2s_core.model import AnalyzerResult, RunContext, RunResult, StageStats, add_nodes_with_data
+from g2s_core.model import AnalyzerResult, RunContext, RunResult, StageStats
 from g2s_core.plugin import PluginParams
 from g2s_core.registry import PluginInfo, Registry
 from g2s_core.rooted import root_forest
@@ -247,18 +247,16 @@ def steiner_forest(
         areas = {index: components[index] for index in groups}
         context.warn(disconnected_warning(graph, areas, sum(map(len, groups.values())), context.agent))
     forest = nx.Graph()
-    # the attributes copied as the forest is built, from networkx's own dicts (not a view object per node and edge)
-    node_data, adjacency = dict(graph.nodes(data=True)), dict(graph.adjacency())
     for index, group in sorted(groups.items()):
-        nodes, edges = group, []
-        if len(group) > 1:
-            # a subgraph view is slow to iterate: with a single group of terminals
-            # the solver gets the whole graph (its other components are unreachable)
-            tree = solve(graph if len(groups) == 1 else graph.subgraph(components[index]), group)
-            nodes, edges = sorted(tree.nodes), sorted((u, v) if u < v else (v, u) for u, v in tree.edges)
-        add_nodes_with_data(forest, nodes, (node_data[node] for node in nodes))
-        forest.add_edges_from((u, v, adjacency[u][v]) for u, v in edges)
-    return forest
+        if len(group) == 1:
+            forest.add_node(group[0])
+            continue
+        # a subgraph view is slow to iterate: with a single group of terminals
+        # the solver gets the whole graph (its other components are unreachable)
+        tree = solve(graph if len(groups) == 1 else graph.subgraph(components[index]), group)
+        forest.add_nodes_from(sorted(tree.nodes))
+        forest.add_edges_from(sorted(tuple(sorted(e)) for e in tree.edges))
+    return _with_graph_attributes(forest, graph)
 
 
 def _with_graph_attributes(part: nx.Graph, graph: nx.Graph) -> nx.Graph:
