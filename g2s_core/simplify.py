@@ -33,6 +33,7 @@ plus the predicate's own cost.
 from __future__ import annotations
 
 import heapq
+import itertools
 import math
 from collections import deque
 from collections.abc import Callable
@@ -60,22 +61,19 @@ def simplify_forest(forest: nx.DiGraph, predicate: Predicate) -> nx.DiGraph:
     add_nodes_with_data(tree, forest, (data for _, data in forest.nodes(data=True)))
     tree.add_edges_from(forest.edges(data=True))
     terminals = {node for node, terminal in tree.nodes(data="terminal", default=False) if terminal}
-    children: Links = {node: set() for node in tree}
+    children: Links = {a: {b for b, data in below.items() if not data.get("loop", False)} for a, below in tree.adjacency()}
     loops: Links = {node: set() for node in tree}
-    for a, b, loop in tree.edges(data="loop", default=False):
-        if loop:
-            loops[a].add(b)
-            loops[b].add(a)
-        else:
-            children[a].add(b)
+    for a, b in ((a, b) for a, b, loop in tree.edges(data="loop", default=False) if loop):
+        loops[a].add(b)
+        loops[b].add(a)
     for root in tree.graph["roots"]:
         _simplify_from(tree, children, loops, terminals, root, predicate)
     _shorten_loops(tree, children, loops, terminals, predicate)
-    pending = [(root, 0) for root in tree.graph["roots"]]
+    pending, nodes = [(root, 0) for root in tree.graph["roots"]], tree.nodes
     while pending:
         node, depth = pending.pop()
-        tree.nodes[node]["depth"] = depth
-        pending.extend((child, depth + 1) for child in children[node])
+        nodes[node]["depth"] = depth
+        pending.extend(zip(children[node], itertools.repeat(depth + 1)))
     return tree
 
 

@@ -195,7 +195,8 @@ def collapse_rule(
         if not node_c.get("on_navmesh", False) and tree.out_degree(c) == 0:
             return False
         rank_b = ranks.get(b)
-        if rank_b is not None and any(abs(ranks[n] - rank_b) > max_step for n in (a, c) if n in ranks):
+        # a node without a rank is not compared (it counts as B's); no generator: this runs on every call
+        if rank_b is not None and (abs(ranks.get(a, rank_b) - rank_b) > max_step or abs(ranks.get(c, rank_b) - rank_b) > max_step):
             return False
         # pair by pair: a chain whose first pair bends needs no other angle
         normal_a, normal_b = node_a["normal"], nodes[b]["normal"]

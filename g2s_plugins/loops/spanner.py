@@ -34,6 +34,7 @@ violators and b nodes in such a ball, independent of the level's size.
 from __future__ import annotations
 
 import heapq
+import itertools
 import math
 
 import networkx as nx
@@ -42,7 +43,7 @@ import scipy.sparse as sp
 from pydantic import Field
 from scipy.sparse import csgraph
 
-from g2s_core.model import RunContext, add_nodes_with_data
+from g2s_core.model import RunContext
 from g2s_core.plugin import PluginParams, hookimpl
 from g2s_plugins.surface_arrays import SurfaceArrays, surface_arrays
 
@@ -73,7 +74,9 @@ def add_loops(graph: nx.Graph, structure: nx.Graph, stretch: float, min_gain: fl
 
     Returns:
         A new graph (or ``structure`` when nothing is added) with the added
-        paths' nodes and edges, attributes copied from ``graph``.
+        paths' nodes and edges; a new graph's nodes and edges carry no
+        attributes (the pipeline copies ``graph``'s, see
+        :func:`g2s_core.hookspecs.g2s_add_loops`).
     """
     if math.isinf(stretch) or nx.is_empty(structure):
         return structure
@@ -103,23 +106,21 @@ def add_loops(graph: nx.Graph, structure: nx.Graph, stretch: float, min_gain: fl
         added.append(path)
         for p, q in zip(path, path[1:]):
             _join(neighbours, p, q, graph.edges[arrays.nodes[p], arrays.nodes[q]]["weight"])
-    # a copy as Graph.copy() makes it, but visiting each edge once rather than from both ends
+    # the structure's nodes and edges, then every path's nodes, then every path's edges (the insertion order of
+    # adding them path by path), without attributes: the pipeline copies the graph's onto them all at once
     looped = nx.Graph(**structure.graph)
-    add_nodes_with_data(looped, structure, (data for _, data in structure.nodes(data=True)))
-    looped.add_edges_from(structure.edges(data=True))
-    # every path's nodes, then every path's edges: the insertion order of adding them path by path
+    looped.add_nodes_from(structure)
+    looped.add_edges_from(structure.edges)
     paths_ids = [[arrays.nodes[i] for i in path] for path in added]
-    looped.add_nodes_from((node, graph.nodes[node]) for ids in paths_ids for node in ids if node not in looped)
-    looped.add_edges_from((u, v, graph.edges[u, v]) for ids in paths_ids for u, v in zip(ids, ids[1:]))
+    looped.add_nodes_from(node for ids in paths_ids for node in ids)
+    looped.add_edges_from((u, v) for ids in paths_ids for u, v in zip(ids, ids[1:]))
     return looped
 
 
 def _edges(arrays: SurfaceArrays, structure: nx.Graph) -> tuple[np.ndarray, list[float]]:
     """(e, 2) rows of the ends of ``structure``'s edges (in its edge order) and their ``weight``, metres."""
-    index = arrays.index
-    edges = [(index[u], index[v], length) for u, v, length in structure.edges(data="weight")]
-    ends = np.array([(p, q) for p, q, _ in edges], dtype=np.int64).reshape(-1, 2)
-    return ends, [length for _, _, length in edges]
+    ends = arrays.rows(itertools.chain.from_iterable(structure.edges)).reshape(-1, 2)
+    return ends, [length for _, _, length in structure.edges(data="weight")]
 
 
 def _candidates(
@@ -158,25 +159,14 @@ def _tree_distances(arrays: SurfaceArrays, forest: nx.Graph, edge_rows: np.ndarr
         (np.concatenate([lengths, lengths]), (np.concatenate(edge_rows.T[::-1]), np.concatenate(edge_rows.T))), shape=(n, n)
     )
     _, labels = csgraph.connected_components(tree, directed=False)
-    # one traversal from a virtual node joined to the first node of every tree
     members = arrays.rows(forest)
     firsts = members[np.unique(labels[members], return_index=True)[1]]
-    virtual = sp.csr_array(
-        (np.ones(firsts.size), (np.full(firsts.size, n), firsts)), shape=(n + 1, n + 1)
-    )
-    augmented = sp.block_diag([tree, sp.csr_array((1, 1))]).tocsr() + virtual
-    order, parent = csgraph.breadth_first_order(augmented, n, directed=False, return_predecessors=True)
-    parent = parent[:n].astype(np.int64)
-    parent[(parent == n) | (parent < 0)] = -1
-    order = order[1:]
-    up_length = np.zeros(n)
-    child = order[parent[order] >= 0]
-    up_length[child] = np.asarray(tree[child, parent[child]]).ravel()
-    hops, metres, up, parents = [0] * n, [0.0] * n, up_length.tolist(), parent.tolist()
-    for node in child.tolist():  # breadth-first: parents first
-        hops[node] = hops[parents[node]] + 1
-        metres[node] = metres[parents[node]] + up[node]
-    hops, metres = np.array(hops, dtype=np.int64), np.array(metres)
+    # from the first node of every tree: each node's parent and its distance (metres, hops) from that node; a
+    # tree's paths are unique, so Dijkstra sums the lengths root first, parent by parent
+    metres, parent, _ = csgraph.dijkstra(tree, directed=False, indices=firsts, min_only=True, return_predecessors=True)
+    hops = csgraph.dijkstra(tree, directed=False, indices=firsts, min_only=True, unweighted=True)
+    reached = np.isfinite(metres)  # not the nodes of no tree
+    metres, hops, parent = np.where(reached, metres, 0.0), np.where(reached, hops, 0).astype(np.int64), parent.astype(np.int64)
     ancestors = [np.where(parent >= 0, parent, np.arange(n))]
     while (1 << len(ancestors)) <= max(int(hops.max()), 1):
         ancestors.append(ancestors[-1][ancestors[-1]])
