@@ -41,7 +41,8 @@ polygons and their shared edges (portals):
    the chokepoints to them.
    Pinches (:func:`pinches`): a candidate between two *corridor-like*
    groups (area at least :data:`CORRIDOR_ELONGATION` squares of their
-   widest walkable width: long for their width) is a pinch, not a
+   widest walkable width: long for their width; and that width at most
+   :data:`CORRIDOR_WIDTH` agent diameters) is a pinch, not a
    chokepoint, when the corridor is locally wider than the cut on both
    sides by 1 / ``narrowness`` at least but not by 1 / ``pinch`` or more:
    a pilaster narrows a corridor for a step and the corridor goes on as
@@ -127,6 +128,11 @@ CORRIDOR_ELONGATION = 3.0
 """A group whose area is at least this many squares of its widest walkable width is corridor-like (:func:`pinches`):
 a corridor 2.5 m walkable and 7.5 m long or longer. Measured: a square room is 1, the offices and the rooms of the
 samples 1.2-1.9, the ring corridor's pieces 4.1-8.7 (docs/plugins.md, "Pinches")."""
+
+CORRIDOR_WIDTH = 4.0
+"""A corridor-like group is also at most this many agent diameters wide at its widest (walkable): a corridor holds a
+few agents abreast, however long a hall is (measured: the corridors of the samples 2.1-2.7 diameters, turned or not;
+docs/plugins.md, "Pinches")."""
 
 PINCH_REACH = 1.5
 """A side's local width near a cut is measured within this many times the cut's clear width (wall to wall) of it
@@ -557,7 +563,7 @@ def _join_pinches(navmesh: Any, labels: np.ndarray, count: int, pairs: np.ndarra
     """(P,) the regions ``labels`` with the groups on both sides of every pinch joined (step 3 of the module doc)."""
     width = widest_widths(labels, count, clearance.polygons, pairs, clearance.portals_open)
     area = np.bincount(labels, weights=areas, minlength=count)
-    corridor_like = area >= CORRIDOR_ELONGATION * width**2
+    corridor_like = (area >= CORRIDOR_ELONGATION * width**2) & (width <= CORRIDOR_WIDTH * 2.0 * radius)
     candidates = np.flatnonzero(blocked)
     sides = labels[pairs[candidates]]
     between = (sides[:, 0] != sides[:, 1]) & corridor_like[sides].all(axis=1)
