@@ -167,8 +167,8 @@ class DecompositionParams(PluginParams):
     )
     pinch: float = Field(
         0.4, ge=0, le=1, description="a cut between two corridor-like regions (area at least 3 squares of their "
-        "width) that keeps at least this fraction of the corridor's walkable width on both sides of it is a pinch "
-        "(pilasters), not a chokepoint: the two regions are one (1: off)",
+        "width, width at most 4 agent diameters) that keeps at least this fraction of the corridor's walkable width "
+        "on both sides of it is a pinch (pilasters), not a chokepoint: the two regions are one (1: off)",
     )
 
 

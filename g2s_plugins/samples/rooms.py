@@ -304,8 +304,8 @@ def ring_corridor(
     middle of the -X side. Expected: two regions (the ring and the room) and the
     door the one chokepoint; the pilasters are no chokepoints (as on
     docs/plugins.md's real levels, where a ring 2.5 m walkable narrowed to
-    1.5-1.8 m was cut into 3 regions). Not met: the ring is still cut at its
-    pilasters (docs/plugins.md, "Passages, not rooms").
+    1.5-1.8 m was cut into 3 regions). Met by the pinch rule of
+    :mod:`g2s_plugins.decomposition` (before it: 4 regions at the pilasters).
 
     Args:
         size: side of the square around the closed room, metres.
