@@ -39,8 +39,26 @@ polygons and their shared edges (portals):
    room is part of that room (an aisle between desk rows, a dead end, a
    catwalk up a ramp); one between several rooms stays a region and carries
    the chokepoints to them.
+   Pinches (:func:`pinches`): a candidate between two *corridor-like*
+   groups (area at least :data:`CORRIDOR_ELONGATION` squares of their
+   widest walkable width: long for their width; and that width at most
+   :data:`CORRIDOR_WIDTH` agent diameters) is a pinch, not a
+   chokepoint, when the corridor is locally wider than the cut on both
+   sides by 1 / ``narrowness`` at least but not by 1 / ``pinch`` or more:
+   a pilaster narrows a corridor for a step and the corridor goes on as
+   wide on both sides, so the two groups are one space (a ring or straight
+   corridor cut at its pilasters). The local width of a side is twice the
+   largest clearance of that side's floor within :data:`PINCH_REACH` clear
+   widths of the cut (:func:`local_widths`, on a grid one navmesh cell
+   apart): there a pilaster's corridor has its full width again, while a
+   corridor's mouth into a room is as narrow as the cut on the corridor's
+   side and the room is wide on the other (the rooms at the corridor's ends
+   stay apart), and a door takes more of a corridor than ``pinch`` allows
+   (a door across a corridor parts it as a door between rooms does). The
+   two groups of every pinch join. This is the project's own rule, set on
+   the generated samples (docs/plugins.md, "Pinches").
 4. Regions are the groups left (``scipy.sparse.csgraph.connected_components``
-   of the merged portals and joined passages), numbered by their lowest polygon id. Candidates
+   of the merged portals, joined passages and pinches), numbered by their lowest polygon id. Candidates
    between the same two regions that are chained end to end (one opening:
    Recast's region contours may bend across a wide gap) or closer than
    ``min_separation`` are one chokepoint (the widest portal of them stays:
@@ -64,7 +82,9 @@ the polygon graph already joins floors only where the agent can walk (ramps,
 stairs).
 
 Complexity: clearance O((B + P + E) log B) for B wall pieces, P polygons,
-E portals; extents O(V) for V polygon corners; the merge tree sorts the portals and runs one union-find step per
+E portals; extents O(V) for V polygon corners; pinches O(C (Q M + Q log B)) for
+C candidates between corridor-like groups, Q grid points within a cut's reach
+(hundreds) and M polygons near it; the merge tree sorts the portals and runs one union-find step per
 portal (a Python loop of O(E alpha(P)): a merge order is sequential by
 nature and no library offers it on a general graph); everything else is
 numpy/scipy over arrays, networkx only on the small region graph.
@@ -104,6 +124,22 @@ NEAREST_PIECES = 6
 PORTAL_SAMPLES = 5
 """The fewest points along a portal where its clearance is measured (:func:`portal_samples`)."""
 
+CORRIDOR_ELONGATION = 3.0
+"""A group whose area is at least this many squares of its widest walkable width is corridor-like (:func:`pinches`):
+a corridor 2.5 m walkable and 7.5 m long or longer. Measured: a square room is 1, the offices and the rooms of the
+samples 1.2-1.9, the ring corridor's pieces 4.1-8.7 (docs/plugins.md, "Pinches")."""
+
+CORRIDOR_WIDTH = 4.0
+"""A corridor-like group is also at most this many agent diameters wide at its widest (walkable): a corridor holds a
+few agents abreast, however long a hall is (measured: the corridors of the samples 2.1-2.7 diameters, turned or not;
+docs/plugins.md, "Pinches")."""
+
+PINCH_REACH = 1.5
+"""A side's local width near a cut is measured within this many times the cut's clear width (wall to wall) of it
+(:func:`local_widths`): past a pilaster a corridor is as wide as before within about one clear width, while a room
+beyond a corridor's mouth shows its width only further in. Measured on the generated dungeons and samples against
+1.0 and 2.0 (docs/plugins.md, "Pinches")."""
+
 EXTENT_DIRECTIONS = 8
 """Directions, evenly spread over 180 degrees, along which a region's longest extent is measured
 (:func:`longest_extents`: at least cos(90 / 8 degrees) = 98 % of its diameter)."""
@@ -128,6 +164,11 @@ class DecompositionParams(PluginParams):
     passage_width: float = Field(
         1.4, ge=0, description="a region narrower than this on average (walkable area / longest extent, in agent "
         "diameters) is a passage: it joins the room it leads to when it leads to one only",
+    )
+    pinch: float = Field(
+        0.4, ge=0, le=1, description="a cut between two corridor-like regions (area at least 3 squares of their "
+        "width, width at most 4 agent diameters) that keeps at least this fraction of the corridor's walkable width "
+        "on both sides of it is a pinch (pilasters), not a chokepoint: the two regions are one (1: off)",
     )
 
 
@@ -244,12 +285,15 @@ class Clearances:
         portals_open: (E,) clearance of each portal, small holes ignored.
         portals: (E,) clearance of each portal, every wall counted.
         widest: (E,3) each portal's point of largest clearance (every wall counted).
+        open_walls: the walls the clearances that split the level are measured to (small holes left out):
+            start and end points, (B',3) each, m.
     """
 
     polygons: np.ndarray
     portals_open: np.ndarray
     portals: np.ndarray
     widest: np.ndarray
+    open_walls: tuple[np.ndarray, np.ndarray]
 
 
 def portal_samples(ends: np.ndarray, spacing: float) -> tuple[np.ndarray, np.ndarray]:
@@ -295,6 +339,7 @@ def clearances(navmesh: Any, obstacle_area: float) -> Clearances:
         portals_open=np.maximum.reduceat(walls, first) if len(ends) else np.zeros(0),
         portals=every[widest],
         widest=points[widest],
+        open_walls=(start[~obstacle], end[~obstacle]),
     )
 
 
@@ -368,11 +413,85 @@ def join_passages(labels: np.ndarray, sides: np.ndarray, passage: np.ndarray) ->
     ways = np.unique(np.column_stack([system[way[:, 0]], way[:, 1]]), axis=0)  # (passage system, room)
     rooms_reached = np.bincount(ways[:, 0], minlength=count)
     into = way[rooms_reached[system[way[:, 0]]] == 1]  # passages of systems that lead to one room
-    edges = np.concatenate([sides[both], into])
-    links = sparse.coo_array((np.ones(len(edges)), (edges[:, 0], edges[:, 1])), shape=(count, count))
-    group = csgraph.connected_components(links, directed=False)[1][labels]
+    return join_groups(labels, count, np.concatenate([sides[both], into]))
+
+
+def join_groups(labels: np.ndarray, count: int, links: np.ndarray) -> np.ndarray:
+    """(P,) int64: the groups ``labels`` (P,) of ``count`` groups joined along ``links`` (K, 2) group pairs
+    (scipy connected components), numbered by their lowest polygon id."""
+    graph = sparse.coo_array((np.ones(len(links)), (links[:, 0], links[:, 1])), shape=(count, count))
+    group = csgraph.connected_components(graph, directed=False)[1][labels]
     _, first, group = np.unique(group, return_index=True, return_inverse=True)
     return np.argsort(np.argsort(first))[group.reshape(-1)].astype(np.int64)
+
+
+def widest_widths(labels: np.ndarray, count: int, polygon_clearance: np.ndarray, pairs: np.ndarray,
+                  portal_clearance: np.ndarray) -> np.ndarray:
+    """(count,) each group's widest walkable width, m: twice the largest clearance of its polygon centres
+    (P,) and of the portals (E,) inside it (``pairs`` (E, 2): a portal's two polygons), so that a corridor
+    whose polygon centres lie off its middle is measured across its portals."""
+    widest = np.zeros(count)
+    np.maximum.at(widest, labels, polygon_clearance)
+    inside = labels[pairs[:, 0]] == labels[pairs[:, 1]]
+    np.maximum.at(widest, labels[pairs[inside, 0]], portal_clearance[inside])
+    return 2.0 * widest
+
+
+def local_widths(navmesh: Any, labels: np.ndarray, points: np.ndarray, sides: np.ndarray, reach: np.ndarray,
+                 walls: tuple[np.ndarray, np.ndarray]) -> np.ndarray:
+    """(C, 2) the walkable width of each of the two groups ``sides`` (C, 2) near each cut ``points`` (C, 3), m:
+    twice the largest clearance (to ``walls``, start and end (B, 3)) of that group's floor within ``reach``
+    (C,) metres of the point in plan (0 where it has none).
+
+    The floor is sampled on a square grid one navmesh cell apart, centred on the cut; a grid point belongs
+    to the group of the (convex) polygon holding it in plan and stands at that polygon's centre height. On
+    flat ground the largest sample is within 0.71 cells of the largest clearance.
+    """
+    polygons = np.asarray(navmesh.polygons, dtype=np.int64)
+    valid = polygons >= 0
+    corners = np.asarray(navmesh.vertices, dtype=np.float64)[np.where(valid, polygons, 0)][..., [0, 2]]
+    following = np.roll(corners, -1, axis=1)
+    last = valid.sum(axis=1) - 1
+    following[np.arange(len(polygons)), last] = corners[:, 0]  # each polygon's last corner closes on its first
+    low = np.where(valid[..., None], corners, np.inf).min(axis=1)
+    high = np.where(valid[..., None], corners, -np.inf).max(axis=1)
+    heights = np.asarray(navmesh.centres, dtype=np.float64)[:, 1]
+    cell = float(navmesh.settings["cell_size"])
+    samples, owner = [], []
+    for i, (point, pair, radius) in enumerate(zip(points, sides, reach)):
+        steps = np.arange(-math.floor(radius / cell), math.floor(radius / cell) + 1) * cell
+        grid = np.stack(np.meshgrid(steps, steps), axis=-1).reshape(-1, 2)
+        grid = grid[np.einsum("kc,kc->k", grid, grid) <= radius * radius] + point[[0, 2]]
+        near = np.flatnonzero(np.isin(labels, pair) & (low <= point[[0, 2]] + radius).all(axis=1)
+                              & (high >= point[[0, 2]] - radius).all(axis=1))
+        edge = (following - corners)[near]
+        offset = grid[None, None, :, :] - corners[near][:, :, None, :]
+        cross = edge[..., 0, None] * offset[..., 1] - edge[..., 1, None] * offset[..., 0]  # (M, 6, Q)
+        pad = ~valid[near][..., None]
+        inside = ((cross >= -1e-9) | pad).all(axis=1) | ((cross <= 1e-9) | pad).all(axis=1)  # either winding
+        holder, sample = np.nonzero(inside)
+        sample, first = np.unique(sample, return_index=True)
+        polygon = near[holder[first]]
+        samples.append(np.column_stack([grid[sample, 0], heights[polygon], grid[sample, 1]]))
+        owner.append(2 * i + (labels[polygon] == pair[1]))
+    widths = np.zeros(2 * len(points))
+    if samples:
+        clearance = _distance_to(np.concatenate(samples), *walls)
+        np.maximum.at(widths, np.concatenate(owner), 2.0 * clearance)
+    return widths.reshape(-1, 2)
+
+
+def pinches(cut: np.ndarray, local: np.ndarray, pinch: float, narrowness: float) -> np.ndarray:
+    """(C,) bool: which cuts between corridor-like groups are pinches, not chokepoints (step 3 of the module doc).
+
+    Args:
+        cut: (C,) walkable width of each cut, m.
+        local: (C, 2) the walkable width of the groups on its two sides near it (:func:`local_widths`), m.
+        pinch: a pinch keeps at least this fraction of the local width on both sides (narrower: a door) ...
+        narrowness: ... and at most this fraction (wider: the cut is the mouth of a passage as narrow as it).
+    """
+    keeps = cut[:, None] / np.maximum(local, 1e-9)
+    return ((keeps >= pinch) & (keeps <= narrowness)).all(axis=1)
 
 
 def floor_bands(heights: np.ndarray, normals: np.ndarray, areas: np.ndarray, gap: float) -> np.ndarray:
@@ -412,6 +531,9 @@ def decompose(navmesh: Any, agent: Any, params: DecompositionParams) -> Decompos
         longest_extents(navmesh, labels, count), 1e-9)
     labels = join_passages(labels, labels[pairs[blocked]], mean_width < params.passage_width * 2.0 * float(agent.radius))
     count = int(labels.max()) + 1 if len(labels) else 0
+    if params.pinch <= params.narrowness:  # above it no cut can keep the fraction and be a candidate at once
+        labels = _join_pinches(navmesh, labels, count, pairs, blocked, areas, clearance, float(agent.radius), params)
+        count = int(labels.max()) + 1 if len(labels) else 0
     blocked &= labels[pairs[:, 0]] != labels[pairs[:, 1]]
 
     centres = np.asarray(navmesh.centres, dtype=np.float64)
@@ -434,6 +556,22 @@ def decompose(navmesh: Any, agent: Any, params: DecompositionParams) -> Decompos
     chokepoints = _chokepoints(np.flatnonzero(blocked), pairs, labels, portals.endpoints, clearance.widest,
                                2.0 * clearance.portals, floor, params.min_separation)
     return Decomposition(labels, regions, chokepoints)
+
+
+def _join_pinches(navmesh: Any, labels: np.ndarray, count: int, pairs: np.ndarray, blocked: np.ndarray,
+                  areas: np.ndarray, clearance: Clearances, radius: float, params: DecompositionParams) -> np.ndarray:
+    """(P,) the regions ``labels`` with the groups on both sides of every pinch joined (step 3 of the module doc)."""
+    width = widest_widths(labels, count, clearance.polygons, pairs, clearance.portals_open)
+    area = np.bincount(labels, weights=areas, minlength=count)
+    corridor_like = (area >= CORRIDOR_ELONGATION * width**2) & (width <= CORRIDOR_WIDTH * 2.0 * radius)
+    candidates = np.flatnonzero(blocked)
+    sides = labels[pairs[candidates]]
+    between = (sides[:, 0] != sides[:, 1]) & corridor_like[sides].all(axis=1)
+    candidates, sides = candidates[between], sides[between]
+    cut = 2.0 * clearance.portals_open[candidates]
+    reach = PINCH_REACH * (cut + 2.0 * radius)  # the cut's clear width is its walkable width and the agent's
+    local = local_widths(navmesh, labels, clearance.widest[candidates], sides, reach, clearance.open_walls)
+    return join_groups(labels, count, sides[pinches(cut, local, params.pinch, params.narrowness)])
 
 
 def _region_floors(labels: np.ndarray, count: int, band: np.ndarray, areas: np.ndarray,

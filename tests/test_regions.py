@@ -292,12 +292,65 @@ def test_passages_join_the_room_they_lead_to_and_offices_stay_rooms(name):
         assert all(sum(near(c["position"], d["position"], 1.0) for c in chokepoints(result)) == 1 for d in doors)
 
 
-@pytest.mark.xfail(strict=True, reason="the ring's pieces are as wide on average as rooms (2.97-3.52 agent diameters): "
-                   "width alone cannot tell them from rooms (docs/plugins.md, 'Passages, not rooms')")
 def test_a_ring_corridor_narrowed_by_pilasters_is_one_region():
+    # its pieces are as wide on average as rooms (2.97-3.52 agent diameters), so the width rule leaves them;
+    # the pinch rule joins them: 4 regions / 4 chokepoints before it (docs/plugins.md, "Pinches")
     level, result = sample_run("ring_corridor")
     expected = level.metadata["expected"]
     assert (len(regions(result)), len(chokepoints(result))) == (expected["regions"], expected["chokepoints"])
+    (door,) = level.metadata["doors"]
+    assert near(chokepoints(result)[0]["position"], door["position"], 1.0)
+
+
+@pytest.mark.parametrize("name", ["pilaster_corridor", "bent_corridor", "door_in_corridor", "gallery"])
+def test_pilasters_are_pinches_and_doors_stay_chokepoints(name):
+    # answers fixed before the pinch rule was run; before it the bent corridor was 4 regions / 3 chokepoints
+    level, result = sample_run(name)
+    expected = level.metadata["expected"]
+    assert (len(regions(result)), len(chokepoints(result))) == (expected["regions"], expected["chokepoints"])
+    doors = [d for d in level.metadata["doors"] if d["width"] < 2.0]  # not the bent corridor's full-width corner
+    assert all(sum(near(c["position"], d["position"], 1.0) for c in chokepoints(result)) == 1 for d in doors)
+
+
+def test_pinch_1_turns_the_pinch_rule_off():
+    raw = load_raw_config(PRESET)
+    for analyzer in raw["analyzers"][1:]:
+        analyzer["params"]["pinch"] = 1.0
+    result = run(load_sample("ring_corridor"), parse_config(raw))
+    assert (len(regions(result)), len(chokepoints(result))) == (4, 4)  # the three pilasters and the door
+
+
+def test_pinches_keep_a_share_of_the_corridor_on_both_sides():
+    # a 2.5 m corridor: a 1.25 m cut keeps half of it on both sides (a pilaster), a 0.5 m cut a fifth (a door),
+    # a 2 m cut 0.8 (the mouth of a passage as narrow as the cut); a 1.25 m cut into a room 4 m wide near it
+    # keeps 0.31 on the room's side
+    cut = np.array([1.25, 0.5, 2.0, 1.25])
+    local = np.array([[2.5, 2.5], [2.5, 2.5], [2.5, 2.5], [2.5, 4.0]])
+    assert decomposition.pinches(cut, local, pinch=0.4, narrowness=0.75).tolist() == [True, False, False, False]
+    assert not decomposition.pinches(cut, local, pinch=1.0, narrowness=0.75).any()
+
+
+def _flat_navmesh(cells: list[tuple[float, float, float, float]]) -> SimpleNamespace:
+    """A flat navmesh of rectangular polygons (x0, x1, z0, z1) with 0.25 m cells."""
+    corners = np.array([[(x0, 0.0, z0), (x1, 0.0, z0), (x1, 0.0, z1), (x0, 0.0, z1)] for x0, x1, z0, z1 in cells])
+    polygons = np.full((len(cells), 6), -1)
+    polygons[:, :4] = np.arange(4 * len(cells)).reshape(-1, 4)
+    return SimpleNamespace(vertices=corners.reshape(-1, 3), polygons=polygons, centres=corners.mean(axis=1),
+                           settings={"cell_size": 0.25})
+
+
+def test_local_widths_of_a_corridor_and_of_the_room_it_opens_into():
+    # a corridor 2 m wide (z 0..2) along x 0..5 opens at x = 5 into a 6 x 6 m room (z -2..4); within 2 m of
+    # the cut's middle (5, 1) the corridor is 2 m wide (clearance 1 on its middle line) and the room's widest
+    # point is (7, 1), sqrt(5) m from the mouth's corners
+    navmesh = _flat_navmesh([(0.0, 5.0, 0.0, 2.0), (5.0, 11.0, -2.0, 4.0)])
+    corners = [(0, 0), (5, 0), (5, -2), (11, -2), (11, 4), (5, 4), (5, 2), (0, 2)]
+    walls = np.array([(x, 0.0, z) for x, z in corners], dtype=float)
+    start, end = walls[:-1], walls[1:]  # the open end at x = 0 is no wall
+    for labels, widths in (([0, 1], [2.0, 2.0 * np.sqrt(5.0)]), ([1, 0], [2.0 * np.sqrt(5.0), 2.0])):
+        local = decomposition.local_widths(navmesh, np.array(labels), np.array([[5.0, 0.0, 1.0]]), np.array([[0, 1]]),
+                                           np.array([2.0]), (start, end))
+        assert local[0] == pytest.approx(widths)
 
 
 def test_passage_systems_join_a_room_only_when_they_lead_to_one():

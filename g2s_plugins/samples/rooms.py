@@ -26,10 +26,13 @@ Metadata (besides the common keys of ``SampleLevel``):
     their roofs too steep to stand on, so that they are walls and never
     walkable islands.
 
-The last five samples are the shapes a designer calls passages, not rooms
-(aisles between desk rows, a ring corridor, a catwalk, a dead-end corridor),
-beside small offices that must stay rooms; their ``expected`` is what the
-width rule of :mod:`g2s_plugins.decomposition` is checked against.
+Five samples are the shapes a designer calls passages, not rooms (aisles
+between desk rows, a ring corridor, a catwalk, a dead-end corridor), beside
+small offices that must stay rooms; their ``expected`` is what the width rule
+of :mod:`g2s_plugins.decomposition` is checked against. The last four are
+corridors for its pinch rule: a straight and a bent corridor narrowed by
+pilasters (one region each), a door across a corridor and a long gallery
+beside a corridor (two regions: doors stay chokepoints).
 """
 
 from __future__ import annotations
@@ -301,8 +304,8 @@ def ring_corridor(
     middle of the -X side. Expected: two regions (the ring and the room) and the
     door the one chokepoint; the pilasters are no chokepoints (as on
     docs/plugins.md's real levels, where a ring 2.5 m walkable narrowed to
-    1.5-1.8 m was cut into 3 regions). Not met: the ring is still cut at its
-    pilasters (docs/plugins.md, "Passages, not rooms").
+    1.5-1.8 m was cut into 3 regions). Met by the pinch rule of
+    :mod:`g2s_plugins.decomposition` (before it: 4 regions at the pilasters).
 
     Args:
         size: side of the square around the closed room, metres.
@@ -425,6 +428,122 @@ def dead_end_corridor(
                   {"regions": 1, "chokepoints": 0}, {"cycles": 0})
 
 
+
+@validate_call
+def pilaster_corridor(
+    length: PositiveFloat = 24.0, width: PositiveFloat = 3.5, narrow: PositiveFloat = 2.5,
+    door_width: PositiveFloat = 1.8,
+) -> SampleLevel:
+    """A straight corridor narrowed by pilasters at three spots, between two rooms behind doors.
+
+    Room 0 is the corridor, [0, length] x [0, width]; pilasters (1 m long) at a quarter, half and three
+    quarters of its length, on its -Z, +Z and -Z walls in turn, narrow it to ``narrow``. Rooms 1 and 2
+    (8 x 8 m) lie beyond its -X and +X ends, each through a door in the middle of the end wall.
+    Expected (fixed before the shape rule was run): three regions (the corridor and the two rooms)
+    and the two doors the chokepoints; a pilaster leaves the corridor one space, as a designer sees it.
+
+    Args:
+        length: length of the corridor, metres.
+        width: clear width of the corridor, metres.
+        narrow: clear width of the corridor beside a pilaster, metres.
+        door_width: clear width of the two doors, metres.
+    """
+    if not door_width < width or not narrow < width or length < 12.0:
+        raise ValueError("need door_width < width, narrow < width and length >= 12")
+    s, t, mid, jut = float(length), WALL_THICKNESS, width / 2, width - narrow
+    rooms = [(0.0, s, 0.0, width, 0.0), (-8.0 - t, -t, mid - 4.0, mid + 4.0, 0.0),
+             (s + t, s + t + 8.0, mid - 4.0, mid + 4.0, 0.0)]
+    spots = [s / 4, s / 2, 3 * s / 4]
+    obstacles = [(x - 0.5, x + 0.5, *((0.0, jut) if i % 2 == 0 else (width - jut, width))) for i, x in enumerate(spots)]
+    params = {"length": length, "width": width, "narrow": narrow, "door_width": door_width}
+    expected = {"regions": 3, "chokepoints": 2, "articulation": (True, True)}
+    return _build("pilaster_corridor", rooms, [(1, 0, PX, mid, door_width), (0, 2, PX, mid, door_width)], params,
+                  expected, {"cycles": 0}, obstacles=obstacles)
+
+
+@validate_call
+def bent_corridor(
+    arm: PositiveFloat = 16.0, width: PositiveFloat = 3.5, narrow: PositiveFloat = 2.5,
+    door_width: PositiveFloat = 1.8,
+) -> SampleLevel:
+    """An L-shaped corridor narrowed by a pilaster in each arm, with a room at one end.
+
+    Room 0 is the arm along +X, [0, arm] x [0, width]; room 1 the arm along +Z, ``width`` wide and
+    ``arm`` long, beyond room 0's +X end and joined to it by an opening the corridor's full width (the
+    corner). A 1 m pilaster on the outer wall halfway along each arm narrows it to ``narrow``. Room 2
+    (8 x 8 m) lies beyond the end of the +Z arm, through a door. Expected (fixed before the shape rule
+    was run): two regions (the corridor and the room) and the door the one chokepoint.
+
+    Args:
+        arm: length of each arm, metres.
+        width: clear width of the corridor, metres.
+        narrow: clear width of an arm beside its pilaster, metres.
+        door_width: clear width of the door to the room, metres.
+    """
+    if not door_width < width or not narrow < width or arm < 2 * width:
+        raise ValueError("need door_width < width, narrow < width and arm >= 2 width")
+    s, t, jut = float(arm), WALL_THICKNESS, width - narrow
+    x0 = s + t
+    rooms = [(0.0, s, 0.0, width, 0.0), (x0, x0 + width, 0.0, s, 0.0),
+             (x0 + width / 2 - 4.0, x0 + width / 2 + 4.0, s + t, s + t + 8.0, 0.0)]
+    obstacles = [(s / 2 - 0.5, s / 2 + 0.5, 0.0, jut), (x0 + width - jut, x0 + width, s / 2 - 0.5, s / 2 + 0.5)]
+    params = {"arm": arm, "width": width, "narrow": narrow, "door_width": door_width}
+    doors = [(0, 1, PX, width / 2, width), (1, 2, PZ, x0 + width / 2, door_width)]
+    expected = {"regions": 2, "chokepoints": 1, "articulation": (True,)}
+    return _build("bent_corridor", rooms, doors, params, expected, {"cycles": 0}, obstacles=obstacles)
+
+
+@validate_call
+def door_in_corridor(
+    length: PositiveFloat = 12.0, width: PositiveFloat = 3.5, door_width: PositiveFloat = 1.8,
+) -> SampleLevel:
+    """A straight corridor in two halves, parted by a wall across it with a door in its middle.
+
+    Room 0 is the first half, [0, length] x [0, width]; room 1 the second, beyond its +X end. Expected (fixed before
+    the shape rule was run): two regions and the door the one chokepoint. A designer puts a door across
+    a corridor to part it: it can be shut, held or locked and it breaks the sight line, so it bounds
+    two spaces as a door between rooms does; a pilaster does none of this.
+
+    Args:
+        length: length of each half, metres.
+        width: clear width of the corridor, metres.
+        door_width: clear width of the door, metres.
+    """
+    if not door_width < width:
+        raise ValueError("need door_width < width")
+    s, t = float(length), WALL_THICKNESS
+    rooms = [(0.0, s, 0.0, width, 0.0), (s + t, 2 * s + t, 0.0, width, 0.0)]
+    params = {"length": length, "width": width, "door_width": door_width}
+    expected = {"regions": 2, "chokepoints": 1, "articulation": (True,)}
+    return _build("door_in_corridor", rooms, [(0, 1, PX, width / 2, door_width)], params, expected, {"cycles": 0})
+
+
+@validate_call
+def gallery(
+    length: PositiveFloat = 20.0, depth: PositiveFloat = 5.0, corridor_width: PositiveFloat = 3.5,
+    door_width: PositiveFloat = 1.8,
+) -> SampleLevel:
+    """A long gallery beside a corridor as long, joined through a door in the middle of their shared wall.
+
+    Room 0 is the corridor, [0, length] x [0, corridor_width]; room 1 the gallery, ``length`` x ``depth``,
+    beyond its +Z wall. Both are long for their width, as the ring's pieces are. Expected (fixed before
+    the shape rule was run): two regions and the door the one chokepoint.
+
+    Args:
+        length: length of the corridor and of the gallery, metres.
+        depth: clear depth of the gallery, metres.
+        corridor_width: clear width of the corridor, metres.
+        door_width: clear width of the door, metres.
+    """
+    if door_width >= length:
+        raise ValueError("need door_width < length")
+    s, t, w = float(length), WALL_THICKNESS, float(corridor_width)
+    rooms = [(0.0, s, 0.0, w, 0.0), (0.0, s, w + t, w + t + depth, 0.0)]
+    params = {"length": length, "depth": depth, "corridor_width": corridor_width, "door_width": door_width}
+    expected = {"regions": 2, "chokepoints": 1, "articulation": (True,)}
+    return _build("gallery", rooms, [(0, 1, PZ, s / 2, door_width)], params, expected, {"cycles": 0})
+
+
 def dungeon_shares(level: SampleLevel, chokepoints: list[dict[str, Any]], regions: list[dict[str, Any]],
                    navmesh: Any, turn: np.ndarray | None = None) -> tuple[float, float]:
     """How well chokepoints and regions found on a ``dungeon`` match its generated corridors and rooms.
@@ -473,5 +592,9 @@ SAMPLES: dict[str, Callable[..., SampleLevel]] = {
     "catwalk": catwalk,
     "offices": offices,
     "dead_end_corridor": dead_end_corridor,
+    "pilaster_corridor": pilaster_corridor,
+    "bent_corridor": bent_corridor,
+    "door_in_corridor": door_in_corridor,
+    "gallery": gallery,
 }
 """The room samples, registered in :data:`g2s_plugins.samples.levels.SAMPLES`."""
