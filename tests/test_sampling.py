@@ -264,7 +264,7 @@ def test_walk_segments_batch():
 
 def test_python_intersector_gives_the_embree_answers(monkeypatch: pytest.MonkeyPatch):
     pytest.importorskip("embreex")
-    mesh = level(floor(), box((-0.1, -0.2, -5.0), (0.1, 3.0, 0.0)), box((2.0, -0.1, 1.0), (3.0, 0.3, 4.0)))  # no coplanar faces
+    mesh = level(floor(), box((-0.1, -0.3, -5.0), (0.1, 3.0, 0.0)), box((2.0, -0.1, 1.0), (3.0, 0.3, 4.0)))  # no coplanar faces (the floor is at y = -0.2)
     rng = np.random.default_rng(0)
     starts = np.column_stack([rng.uniform(-5, 5, 60), np.zeros(60), rng.uniform(-5, 5, 60)])
     ends = np.column_stack([rng.uniform(-5, 5, 60), np.zeros(60), rng.uniform(-5, 5, 60)])
