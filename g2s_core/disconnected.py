@@ -56,8 +56,9 @@ def likely_cause(step: float, gap: float, agent: Any) -> str:
                 f"for this agent (agent.max_climb {climb:g} m, agent.max_slope {float(agent.max_slope):g}°)")
     if step > climb:
         return f"a step of about {step:.1f} m, higher than agent.max_climb ({climb:g} m)"
-    return (f"a gap or passage too narrow for the agent (agent.radius {radius:g} m) "
-            f"about {gap:.1f} m across, or a wall between them")
+    # the nodes are polygon centres or samples, so their distance bounds the gap, it does not measure it
+    return (f"a gap or passage too narrow for the agent (agent.radius {radius:g} m), or a wall, between "
+            f"places about {gap:.1f} m apart")
 
 
 def disconnected_warning(graph: nx.Graph, areas: Mapping[Any, Sequence[int]], terminal_count: int, agent: Any) -> str:
@@ -90,4 +91,4 @@ def _positions(graph: nx.Graph, nodes: Sequence[int]) -> np.ndarray:
 
 
 def _xyz(point: np.ndarray) -> str:
-    return ", ".join(f"{v:.1f}" for v in point) + " m"
+    return ", ".join(f"{round(float(v), 1) + 0.0:.1f}" for v in point) + " m"  # + 0.0: no "-0.0"

@@ -25,7 +25,7 @@ def areas(graph: nx.Graph) -> dict[int, list[int]]:
 @pytest.mark.parametrize("rise, cause", [
     (0.6, "a step of about 0.6 m, higher than agent.max_climb (0.4 m)"),  # a step the agent cannot climb
     (4.0, "separate floors (4.0 m apart)"),                                 # a floor above the other
-    (0.0, "a gap or passage too narrow for the agent (agent.radius 0.5 m) about 2.0 m across"),
+    (0.0, "a gap or passage too narrow for the agent (agent.radius 0.5 m), or a wall, between places about 2.0 m apart"),
 ])
 def test_the_likely_cause_follows_the_step_between_the_closest_areas(rise, cause):
     graph = nx.Graph()
@@ -60,3 +60,11 @@ def test_an_abstract_graph_gets_the_counts_only():
     message = disconnected_warning(graph, areas(graph), 3, None)
     assert message == ("3 terminals lie in 2 disconnected areas, so they are joined by one tree per area "
                        "(the largest have 3, 2 nodes).")
+
+
+def test_places_near_zero_print_without_a_minus_sign():
+    graph = nx.Graph()
+    slab(graph, -0.54, -0.04, 1, 0)  # its one node at (-0.04, -0.04, 0.5)
+    slab(graph, 5.0, 0.0, 2, 100)
+    message = disconnected_warning(graph, areas(graph), 2, AgentConfig())
+    assert "-0.0" not in message and "(0.0, 0.0, 0.5 m)" in message
