@@ -197,9 +197,9 @@ def test_node_parents_are_the_tree_parents_with_loop_partners_skipped(result):
     forest.add_edges_from([(0, 1), (0, 2), (1, 3), (3, 4)])
     for graph in (forest, result.structure):
         expected = {node: tree_parent(graph, node) for node in graph}
-        assert {node: structure_json._tree_parents(graph).get(node) for node in graph} == expected
-    assert structure_json._tree_parents(forest)[3] == 1
-    assert structure_json._tree_parents(nx.Graph([(0, 1)])) == {}
+        assert {node: common.tree_parents(graph).get(node) for node in graph} == expected
+    assert common.tree_parents(forest)[3] == 1
+    assert common.tree_parents(nx.Graph([(0, 1)])) == {}
 
 
 def test_schema_rejects_what_the_writer_must_not_write(result):

@@ -13,7 +13,7 @@ from g2s_core.model import RunResult
 from g2s_core.summary import final_graph, metric_lines, roots_of, stage_rows
 
 __all__ = ["agent_value", "edge_list", "final_graph", "floors", "is_loop_edge", "metric_lines", "number", "positions",
-           "roots_of", "stage_rows", "terminal_ids", "vector"]
+           "roots_of", "stage_rows", "terminal_ids", "tree_parents", "vector"]
 
 FLOAT_DIGITS = 9
 """Floats in the written files keep this many significant digits (``format(x, '.9g')``)."""
@@ -104,3 +104,15 @@ def triangle_regions(result: RunResult) -> np.ndarray | None:
         labels[np.asarray(record["polygons"], dtype=np.int64)] = int(record["id"])
     return labels[np.asarray(navmesh.detail_polygon, dtype=np.int64)]
 
+
+def tree_parents(graph: nx.Graph) -> dict[int, int]:
+    """Each node's parent in its rooted tree: :func:`g2s_core.rooted.tree_parent` of every node of a directed
+    graph, in one pass over the in-edges (the writers list every node); ``{}`` for an undirected graph."""
+    parents: dict[int, int] = {}
+    if graph.is_directed():
+        # in-edges come per node in the order of its predecessors, as tree_parent reads them: the first
+        # predecessor that is not a loop partner is the parent
+        for parent, child, loop in graph.in_edges(data="loop", default=False):
+            if not loop and child not in parents:
+                parents[child] = parent
+    return parents

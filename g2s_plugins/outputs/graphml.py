@@ -19,9 +19,8 @@ from typing import Any
 import networkx as nx
 import numpy as np
 
-from g2s_core.rooted import tree_parent
 from g2s_core.model import RunResult
-from g2s_plugins.outputs.common import edge_list, final_graph, number, roots_of, terminal_ids
+from g2s_plugins.outputs.common import edge_list, final_graph, number, roots_of, terminal_ids, tree_parents
 from g2s_plugins.outputs.files import atomic_write
 
 STRUCTURE_FILE = "structure.graphml"
@@ -58,13 +57,12 @@ def _graphml_bytes(graph: nx.Graph) -> bytes:
 
 def _flat_graph(graph: nx.Graph, terminals: set[int], analysis: dict[str, dict[int, float]]) -> nx.Graph:
     flat: nx.Graph = nx.DiGraph() if graph.is_directed() else nx.Graph()
+    parents = tree_parents(graph)
     for node in sorted(graph.nodes):
         attrs = flatten({k: v for k, v in graph.nodes[node].items() if k != "values"})  # written as value_<key>
         attrs["terminal"] = int(node) in terminals or bool(graph.nodes[node].get("terminal", False))
-        if graph.is_directed():
-            parent = tree_parent(graph, node)
-            if parent is not None:
-                attrs["parent"] = int(parent)
+        if node in parents:
+            attrs["parent"] = int(parents[node])
         for key, values in analysis.items():
             if node in values and number(values[node]) is not None:
                 attrs[f"value_{key}"] = number(values[node])

@@ -35,7 +35,7 @@ import numpy as np
 
 from g2s_core import version
 from g2s_core.model import Opening, RunResult
-from g2s_plugins.outputs.common import edge_list, final_graph, number, roots_of, terminal_ids, vector
+from g2s_plugins.outputs.common import edge_list, final_graph, number, roots_of, terminal_ids, tree_parents, vector
 from g2s_plugins.outputs.files import atomic_write
 from g2s_plugins.outputs.json_text import dumps_indented
 
@@ -106,7 +106,7 @@ def structure_document(result: RunResult) -> dict[str, Any]:
     trees: list[dict[str, Any]] = []
     if graph is not None:
         roots = roots_of(graph)
-        parents = _tree_parents(graph)
+        parents = tree_parents(graph)
         for node in sorted(graph.nodes):
             nodes.append(_node_record(graph, node, terminals, result.analysis, keys, parents.get(node)))
         for u, v in edge_list(graph):
@@ -179,19 +179,6 @@ def run_document(result: RunResult) -> dict[str, Any]:
         "g2s_version": version(),
         "python": platform.python_version(),
     }
-
-
-def _tree_parents(graph: nx.Graph) -> dict[int, int]:
-    """Each node's parent in its rooted tree (:func:`g2s_core.rooted.tree_parent` of every node of a directed
-    graph, in one pass over the in-edges instead of a predecessor view per node); ``{}`` for an undirected graph."""
-    parents: dict[int, int] = {}
-    if graph.is_directed():
-        # in-edges come per node in the order of its predecessors, as tree_parent reads them: the first
-        # predecessor that is not a loop partner is the parent
-        for parent, child, loop in graph.in_edges(data="loop", default=False):
-            if not loop and child not in parents:
-                parents[child] = parent
-    return parents
 
 
 def _node_record(
