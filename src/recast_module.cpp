@@ -1626,6 +1626,36 @@ std::vector<T> map_row_pairs(const NavMeshCore& n, const PointsIn& A, const Poin
     return out;
 }
 
+// Rows a worker takes at a time in parallel_row_pairs, and the fewest rows worth a second thread
+// (a thread costs tens of microseconds; the portal-node routes probe a few rows per call).
+constexpr size_t PARALLEL_CHUNK = 256;
+
+// map_row_pairs for an fn that only reads the navmesh (Detour's const queries queryPolygons and
+// closestPointOnPoly, which keep no state in the query object): the rows are shared out in chunks
+// between one thread per core, each writing its own rows, so the result does not depend on the count.
+template <typename T, typename Fn>
+std::vector<T> parallel_row_pairs(const NavMeshCore& n, const PointsIn& A, const PointsIn& B, Fn fn) {
+    if (A.shape(0) != B.shape(0)) throw nb::value_error("A and B must have the same length");
+    const size_t rows = A.shape(0);
+    std::vector<T> out(rows);
+    const double* a = A.data();
+    const double* b = B.data();
+    nb::gil_scoped_release release;
+    std::lock_guard<std::mutex> lock(n.mutex);
+    std::atomic<size_t> next{0};
+    auto work = [&] {
+        for (size_t lo = next.fetch_add(PARALLEL_CHUNK); lo < rows; lo = next.fetch_add(PARALLEL_CHUNK))
+            for (size_t i = lo; i < std::min(rows, lo + PARALLEL_CHUNK); ++i) out[i] = fn(a + i * 3, b + i * 3);
+    };
+    const size_t cores = std::max(1u, std::thread::hardware_concurrency());
+    const size_t helpers = std::min(cores, rows / PARALLEL_CHUNK + 1) - 1;
+    std::vector<std::thread> pool;
+    for (size_t t = 0; t < helpers; ++t) pool.emplace_back(work);
+    work();
+    for (std::thread& t : pool) t.join();
+    return out;
+}
+
 void get3(const Vec3In& a, float* out) {
     for (int i = 0; i < 3; ++i) out[i] = static_cast<float>(a[i]);
 }
@@ -1761,7 +1791,7 @@ NB_MODULE(_recast, m) {
         .def("segment_surface_gaps",
              [](const NavMeshCore& n, PointsIn A, PointsIn B, double step, float horizontal, float reach) {
                  if (!(step > 0)) throw nb::value_error("step must be positive");
-                 const std::vector<double> out = map_row_pairs<double>(n, A, B, [&](const double* a, const double* b) {
+                 const std::vector<double> out = parallel_row_pairs<double>(n, A, B, [&](const double* a, const double* b) {
                      return n.segment_gap(a, b, step, horizontal, reach);
                  });
                  return to_numpy(out, out.size(), 0);
@@ -1769,7 +1799,7 @@ NB_MODULE(_recast, m) {
              nb::arg("A"), nb::arg("B"), nb::arg("step"), nb::arg("horizontal"), nb::arg("reach"),
              "(S,) float64: the largest vertical distance to the walkable surface (see surface_gap) over "
              "points at most `step` apart horizontally along each segment A[i] -> B[i], ends included; "
-             "inf when a point has none within `reach`; GIL released")
+             "inf when a point has none within `reach`; GIL released, rows shared between the cores")
         .def("segment_surface_gap",
              [](const NavMeshCore& n, Vec3In a, Vec3In b, double step, float horizontal, float reach) {
                  if (!(step > 0)) throw nb::value_error("step must be positive");

@@ -269,6 +269,13 @@ def test_segment_surface_gaps_on_a_slab():
     assert gaps[3] == math.inf  # runs off the slab
     # one segment at a time (the surface_los predicate's call): the same values
     assert [nm.segment_surface_gap(a, b, step=0.1, reach=1.0) for a, b in zip(A.tolist(), B.tolist())] == gaps.tolist()
+    # 1,000 rows, shared between the cores in chunks: each row's value as on its own
+    rng = np.random.default_rng(2)
+    A, B = rng.uniform(-6, 6, (1000, 3)), rng.uniform(-6, 6, (1000, 3))
+    A[:, 1], B[:, 1] = rng.uniform(-0.5, 1.5, 1000), rng.uniform(-0.5, 1.5, 1000)
+    gaps = nm.segment_surface_gaps(A, B, step=0.1, reach=1.0)
+    assert np.isfinite(gaps).any() and np.isinf(gaps).any()
+    assert [nm.segment_surface_gap(a, b, step=0.1, reach=1.0) for a, b in zip(A.tolist(), B.tolist())] == gaps.tolist()
 
 
 def test_overlapping_regions_are_warned_about():
