@@ -164,7 +164,9 @@ def shortest_path_flow(adjacency: sp.csr_array, sources: np.ndarray, values: np.
             source and for unreached nodes.
 
     In the C++ extension (``src/trees_module.cpp``) on :data:`THREADS`
-    threads: per source O(m log m) for the search and O(m) for the sums,
+    threads: per source O(m log m) for the search (which queues only the
+    nodes that are not passages of a corridor, two neighbours each, and walks
+    through those) and O(m) for the sums,
     each node's children added in index order with numpy's pairwise sum, so
     the values are the bits the scipy-and-numpy formulation gives. Why C++:
     scipy's search holds the GIL, so it cannot use the second core (two

@@ -20,6 +20,26 @@
 // (Before 1.15 scipy used a Fibonacci heap with another tie order; from this
 // module the flow no longer depends on the scipy version.)
 //
+// Corridors. Most nodes of a navmesh graph are *passages*: exactly two
+// neighbours, linked both ways, and no other edge (70 % of the 100k-polygon
+// level's nodes). The search queues only the other nodes; a settled node walks
+// each corridor it opens onto to its far end, adding the lengths one by one as
+// the plain search would, so every distance is the same float. What the walk
+// changes is when a node is reached, not by how much, so the tie rule is
+// applied explicitly instead of by the order of arrival: a node reached as
+// short again takes the new predecessor when that one settles first in scipy's
+// order (nearer, or as near with a higher index). Then every node keeps, of the
+// neighbours that reach it shortest, the one settled first, as in scipy's
+// search: the same tree. The walk stops where it arrives longer than the node
+// already is (the corridor beyond is nearer from its other end). The sweep up
+// the tree takes its nodes in breadth-first order from the source (parents
+// before children) instead of the order they settled in. That settling order
+// is scipy's (distance, higher index) order only when every edge lengthens the
+// path: a length that vanishes beside a distance (0, or 1e-12 m beside 10 km)
+// lets a node settle after a node as near with a lower index, the one that
+// reached it. A graph with such a length is searched without corridors and
+// without the explicit tie rule, node by node as scipy does.
+//
 // The sums are the same bits as numpy: a node's children are added in
 // increasing index order as numpy's `np.add.reduceat` adds a segment (the first
 // child, plus numpy's pairwise sum of the others), and that total is then added
@@ -30,6 +50,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <thread>
@@ -80,8 +101,43 @@ struct Graph {
     const int32_t* indptr;
     const int32_t* indices;
     const double* weights;
+    const uint8_t* passage;  // (n,) 1: a passage node (see the file comment), which the search walks through
+    bool corridors;          // any passage node: the search walks corridors and applies the tie rule itself
     int32_t n;
 };
+
+// Whether adding any finite length of `weights` (m,) to any distance of the graph gives a longer distance
+// (see the file comment): the shortest is at least one unit in the last place of twice the sum of all.
+bool lengths_always_add(const double* weights, size_t m) {
+    constexpr double infinity = std::numeric_limits<double>::infinity();
+    double total = 0.0, shortest = infinity;
+    for (size_t j = 0; j < m; ++j)
+        if (weights[j] < infinity) {  // an infinite or NaN length reaches nothing
+            total += weights[j];
+            shortest = std::min(shortest, weights[j]);
+        }
+    const double longest = 2.0 * total;
+    return shortest > 0.0 && shortest >= std::nextafter(longest, infinity) - longest;
+}
+
+// (n,) 1 for each passage node of the CSR graph: two row entries, two different neighbours other than
+// itself, each listing it, and no other node listing it; all 0 when a length can vanish beside a distance
+// (lengths_always_add). O(m).
+std::vector<uint8_t> passages(const int32_t* indptr, const int32_t* indices, const double* weights, int32_t n) {
+    std::vector<uint8_t> passage(static_cast<size_t>(n), 0);
+    if (!lengths_always_add(weights, static_cast<size_t>(indptr[n]))) return passage;
+    std::vector<int32_t> listed(static_cast<size_t>(n), 0);
+    for (int32_t j = 0; j < indptr[n]; ++j) ++listed[indices[j]];
+    auto lists = [&](int32_t from, int32_t to) {
+        return std::find(indices + indptr[from], indices + indptr[from + 1], to) != indices + indptr[from + 1];
+    };
+    for (int32_t u = 0; u < n; ++u) {
+        if (indptr[u + 1] - indptr[u] != 2 || listed[u] != 2) continue;
+        const int32_t x = indices[indptr[u]], y = indices[indptr[u] + 1];
+        passage[u] = x != y && x != u && y != u && lists(x, u) && lists(y, u);
+    }
+    return passage;
+}
 
 // One source: its shortest-path tree (scipy's predecessors) and, per node, the
 // values summed over its subtree minus its own value (0 for the source).
@@ -97,24 +153,47 @@ class TreeSweep {
         constexpr double infinity = std::numeric_limits<double>::infinity();
         std::fill(predecessor, predecessor + g.n, NO_PREDECESSOR);
         std::fill(distance_.begin(), distance_.end(), infinity);
-        order_.clear();
         queue_.clear();
         distance_[source] = 0.0;
         queue_.push_back({0.0, source});
+        // whether `a` settles before `b` in scipy's search: nearer, or as near with a higher index
+        auto settles_before = [&](int32_t a, int32_t b) {
+            return distance_[a] < distance_[b] || (distance_[a] == distance_[b] && a > b);
+        };
+        // `u` reached at `d` from `from`: shorter, or (walking corridors) as short from a node that settles first;
+        // never the source
+        auto reach = [&](int32_t u, double d, int32_t from) {
+            if (distance_[u] > d) {
+                distance_[u] = d;
+                predecessor[u] = from;
+                return true;
+            }
+            if (g.corridors && distance_[u] == d && predecessor[u] >= 0 && settles_before(from, predecessor[u]))
+                predecessor[u] = from;
+            return false;
+        };
+        // the source is where the search starts, never a node to walk through
+        auto passage = [&](int32_t u) { return g.passage[u] && u != source; };
         while (!queue_.empty()) {
             std::pop_heap(queue_.begin(), queue_.end(), ServedAfter());
             const Entry v = queue_.back();
             queue_.pop_back();
             if (distance_[v.node] < v.distance) continue;  // a stale entry: v was queued again nearer
-            order_.push_back(v.node);
             for (int32_t j = g.indptr[v.node]; j < g.indptr[v.node + 1]; ++j) {
-                const int32_t u = g.indices[j];
-                const double d = v.distance + g.weights[j];
-                if (d <= infinity && distance_[u] > d) {  // d <= infinity: a NaN length is no edge, as in scipy
-                    distance_[u] = d;
+                int32_t u = g.indices[j], from = v.node;
+                double d = v.distance + g.weights[j];
+                // along a corridor to its far end, or to where it arrives longer than the node already is; a NaN
+                // length is no edge, as in scipy, and an infinite one reaches nothing
+                while (passage(u) && d < infinity && d <= distance_[u]) {
+                    reach(u, d, from);
+                    const int32_t k = g.indptr[u] + (g.indices[g.indptr[u]] == from ? 1 : 0);
+                    from = u;
+                    d += g.weights[k];
+                    u = g.indices[k];
+                }
+                if (!passage(u) && d < infinity && reach(u, d, from)) {
                     queue_.push_back({d, u});
                     std::push_heap(queue_.begin(), queue_.end(), ServedAfter());
-                    predecessor[u] = v.node;
                 }
             }
         }
@@ -129,7 +208,13 @@ class TreeSweep {
         std::copy(first_child_.begin(), first_child_.end() - 1, next_child_.begin());
         for (int32_t v = 0; v < g.n; ++v)
             if (predecessor[v] >= 0) children_[next_child_[predecessor[v]]++] = v;
-        // a node is settled after its parent: in reverse order every subtree is complete when its root comes
+        // breadth first from the source, parents before children: in reverse every subtree is complete when
+        // its root comes
+        order_.clear();
+        order_.push_back(source);
+        for (size_t i = 0; i < order_.size(); ++i)
+            order_.insert(order_.end(), children_.begin() + first_child_[order_[i]],
+                          children_.begin() + first_child_[order_[i] + 1]);
         for (auto it = order_.rbegin(); it != order_.rend(); ++it) {
             const int32_t v = *it;
             const int32_t first = first_child_[v], count = first_child_[v + 1] - first;
@@ -186,7 +271,9 @@ nb::tuple shortest_path_flow(Int32Array indptr, Int32Array indices, DoubleArray 
     auto* through = new double[cells];
     auto pred_out = owned(predecessors, b, static_cast<size_t>(n));
     auto through_out = owned(through, b, static_cast<size_t>(n));
-    const Graph g{ptr, indices.data(), weights.data(), static_cast<int32_t>(n)};
+    const std::vector<uint8_t> passage = passages(ptr, indices.data(), weights.data(), static_cast<int32_t>(n));
+    const bool corridors = std::find(passage.begin(), passage.end(), 1) != passage.end();
+    const Graph g{ptr, indices.data(), weights.data(), passage.data(), corridors, static_cast<int32_t>(n)};
     {
         nb::gil_scoped_release release;
         std::atomic<size_t> next{0};

@@ -572,6 +572,42 @@ def test_shortest_path_trees_are_scipys_to_the_last_tie(name):
     assert np.array_equal(predecessors, expected)
 
 
+def corridor_lengths(rng: np.random.Generator, junctions: int, corridors: int) -> sp.csr_array:
+    """Random junctions joined by corridors of 0-5 passage nodes (two neighbours each), lengths 1 or 2:
+    corridors as in a navmesh graph, full of equally short paths."""
+    edges, node = [], junctions
+    for _ in range(corridors):
+        previous, end = (int(v) for v in rng.integers(0, junctions, 2))
+        for _ in range(int(rng.integers(0, 6))):
+            edges.append((previous, node, float(rng.integers(1, 3))))
+            previous, node = node, node + 1
+        if previous != end:
+            edges.append((previous, end, float(rng.integers(1, 3))))
+    graph = lengths(node, edges)
+    graph.sum_duplicates()
+    return graph
+
+
+@pytest.mark.skipif(
+    tuple(int(part) for part in scipy.__version__.split(".")[:2]) < (1, 15),
+    reason="scipy before 1.15 searched with a Fibonacci heap, which breaks ties in another order",
+)
+def test_shortest_path_trees_through_corridors_are_scipys():
+    # the search walks through passage nodes instead of queueing them and applies scipy's tie rule itself:
+    # the same trees, sources inside corridors included
+    rng = np.random.default_rng(11)
+    for junctions, corridors in [(3, 8), (10, 30), (40, 120)]:
+        graph = corridor_lengths(rng, junctions, corridors)
+        sources = rng.choice(graph.shape[0], 20, replace=False)
+        _, expected = csgraph.dijkstra(graph, directed=True, indices=sources, return_predecessors=True)
+        predecessors, _ = traffic.shortest_path_flow(graph, sources, rng.random(graph.shape[0]))
+        assert np.array_equal(predecessors, expected)
+    # a triangle 0 - 1 (length 0), 0 - 2 and 1 - 2 (length 1), searched from 0: 1 is as near as 0 but settles
+    # after it, so 2 stays with 0, the first to reach it (the tie rule's order would give it to 1)
+    flat = lengths(3, [(0, 1, 0.0), (0, 2, 1.0), (1, 2, 1.0)])
+    assert traffic.shortest_path_flow(flat, np.array([0]), np.ones(3))[0].tolist() == [[-9999, 0, 0]]
+
+
 def test_shortest_path_flow_adds_as_numpy_does(monkeypatch):
     # a star of 300 leaves and random graphs with values over six orders of magnitude: each node's children
     # summed in numpy's pairwise order, to the bit (the flow values, and so the structure output, must not
