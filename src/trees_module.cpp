@@ -52,6 +52,8 @@
 #include <atomic>
 #include <cmath>
 #include <cstdint>
+#include <string>
+#include <utility>
 #include <limits>
 #include <thread>
 #include <vector>
@@ -247,20 +249,30 @@ nb::ndarray<nb::numpy, T, nb::ndim<2>> owned(T* data, size_t rows, size_t cols) 
     return nb::ndarray<nb::numpy, T, nb::ndim<2>>(data, {rows, cols}, owner);
 }
 
-nb::tuple shortest_path_flow(Int32Array indptr, Int32Array indices, DoubleArray weights, Int32Array sources,
-                             DoubleArray values, int threads) {
+// The number of nodes n of a CSR graph, after checking its arrays (`what` names the caller in errors).
+int64_t checked_nodes(const char* what, const Int32Array& indptr, const Int32Array& indices, const DoubleArray& weights) {
+    const std::string name(what);
     const int64_t n = static_cast<int64_t>(indptr.shape(0)) - 1;
-    if (n < 0 || static_cast<int64_t>(values.shape(0)) != n || indices.shape(0) != weights.shape(0))
-        throw nb::value_error("shortest_path_flow: indptr must be (n + 1,), values (n,), indices and weights alike");
+    if (n < 0 || indices.shape(0) != weights.shape(0))
+        throw nb::value_error((name + ": indptr must be (n + 1,), indices and weights alike").c_str());
     const int32_t* ptr = indptr.data();
     if (ptr[0] != 0 || ptr[n] != static_cast<int64_t>(indices.shape(0)))
-        throw nb::value_error("shortest_path_flow: indptr does not match indices");
+        throw nb::value_error((name + ": indptr does not match indices").c_str());
     for (int64_t i = 0; i < n; ++i)
-        if (ptr[i + 1] < ptr[i]) throw nb::value_error("shortest_path_flow: indptr decreases");
+        if (ptr[i + 1] < ptr[i]) throw nb::value_error((name + ": indptr decreases").c_str());
     for (size_t j = 0; j < indices.shape(0); ++j)
-        if (indices.data()[j] < 0 || indices.data()[j] >= n) throw nb::value_error("shortest_path_flow: an index is out of range");
+        if (indices.data()[j] < 0 || indices.data()[j] >= n) throw nb::value_error((name + ": an index is out of range").c_str());
     for (size_t j = 0; j < weights.shape(0); ++j)
-        if (weights.data()[j] < 0) throw nb::value_error("shortest_path_flow: a weight is negative");
+        if (weights.data()[j] < 0) throw nb::value_error((name + ": a weight is negative").c_str());
+    return n;
+}
+
+nb::tuple shortest_path_flow(Int32Array indptr, Int32Array indices, DoubleArray weights, Int32Array sources,
+                             DoubleArray values, int threads) {
+    const int64_t n = checked_nodes("shortest_path_flow", indptr, indices, weights);
+    if (static_cast<int64_t>(values.shape(0)) != n)
+        throw nb::value_error("shortest_path_flow: indptr must be (n + 1,), values (n,), indices and weights alike");
+    const int32_t* ptr = indptr.data();
     const size_t b = sources.shape(0);
     for (size_t i = 0; i < b; ++i)
         if (sources.data()[i] < 0 || sources.data()[i] >= n) throw nb::value_error("shortest_path_flow: a source is out of range");
@@ -291,6 +303,111 @@ nb::tuple shortest_path_flow(Int32Array indptr, Int32Array indices, DoubleArray 
     return nb::make_tuple(pred_out, through_out);
 }
 
+// Python's heapq on a list of (float, int) items, step for step (heappush, heappop and their sifts): the
+// cover's searches start from a list that is not a heap, so the order its items come out in, and with it
+// which of two equally short ways a node keeps, is heapq's own.
+class PyHeap {
+  public:
+    using Item = std::pair<double, int64_t>;
+    std::vector<Item> items;
+
+    void push(const Item& item) {
+        items.push_back(item);
+        sift_down(0, items.size() - 1);
+    }
+    Item pop() {
+        const Item last = items.back();
+        items.pop_back();
+        if (items.empty()) return last;
+        const Item top = items[0];
+        items[0] = last;
+        sift_up(0);
+        return top;
+    }
+
+  private:
+    void sift_down(size_t start, size_t pos) {
+        const Item item = items[pos];
+        while (pos > start) {
+            const size_t parent = (pos - 1) >> 1;
+            if (!(item < items[parent])) break;
+            items[pos] = items[parent];
+            pos = parent;
+        }
+        items[pos] = item;
+    }
+    void sift_up(size_t pos) {
+        const size_t end = items.size(), start = pos;
+        const Item item = items[pos];
+        for (size_t child = 2 * pos + 1; child < end; child = 2 * pos + 1) {
+            if (child + 1 < end && !(items[child] < items[child + 1])) ++child;
+            items[pos] = items[child];
+            pos = child;
+        }
+        items[pos] = item;
+        sift_down(start, pos);
+    }
+};
+
+using Int64Array = nb::ndarray<const int64_t, nb::ndim<1>, nb::c_contig, nb::device::cpu>;
+
+nb::ndarray<nb::numpy, int64_t, nb::ndim<1>> cover_paths(Int32Array indptr, Int32Array indices, DoubleArray lengths,
+                                                          DoubleArray start, Int32Array predecessor, Int64Array far,
+                                                          double radius) {
+    const int64_t n = checked_nodes("cover_paths", indptr, indices, lengths);
+    if (static_cast<int64_t>(start.shape(0)) != n || static_cast<int64_t>(predecessor.shape(0)) != n)
+        throw nb::value_error("cover_paths: start and predecessor must be (n,)");
+    for (size_t i = 0; i < far.shape(0); ++i)
+        if (far.data()[i] < 0 || far.data()[i] >= n) throw nb::value_error("cover_paths: a far node is out of range");
+    for (int64_t v = 0; v < n; ++v)
+        if (predecessor.data()[v] >= n) throw nb::value_error("cover_paths: a predecessor is out of range");
+    const int32_t* ptr = indptr.data();
+    std::vector<double> distance(start.data(), start.data() + n);
+    std::vector<int32_t> parent(predecessor.data(), predecessor.data() + n);
+    std::vector<int64_t> added;
+    {
+        nb::gil_scoped_release release;
+        size_t queued = far.shape(0);  // far nodes not yet taken, from the end
+        auto far_item = [&](size_t i) { return PyHeap::Item{-start.data()[far.data()[i]], far.data()[i]}; };
+        PyHeap again, pending;
+        while (queued > 0 || !again.items.empty()) {
+            const PyHeap::Item item = !again.items.empty() && (queued == 0 || again.items[0] < far_item(queued - 1))
+                                          ? again.pop() : far_item(--queued);
+            const int64_t node = item.second;
+            if (distance[node] <= radius) continue;
+            if (-item.first > distance[node]) {  // stale: the node came closer since
+                again.push({-distance[node], node});
+                continue;
+            }
+            const size_t first = added.size();
+            for (int64_t v = node; parent[v] >= 0; v = parent[v]) added.push_back(v);  // the last is in the set
+            pending.items.clear();
+            for (size_t i = first; i < added.size(); ++i) {
+                distance[added[i]] = 0.0;
+                parent[added[i]] = -1;
+                pending.items.push_back({0.0, added[i]});
+            }
+            while (!pending.items.empty()) {
+                const auto [reached, here] = pending.pop();
+                if (reached > distance[here]) continue;
+                for (int32_t k = ptr[here]; k < ptr[here + 1]; ++k) {
+                    const int32_t other = indices.data()[k];
+                    const double through = reached + lengths.data()[k];
+                    if (through < distance[other]) {
+                        distance[other] = through;
+                        parent[other] = static_cast<int32_t>(here);
+                        pending.push({through, other});
+                    }
+                }
+            }
+        }
+    }
+    auto* out = new int64_t[std::max<size_t>(added.size(), 1)];
+    std::copy(added.begin(), added.end(), out);
+    nb::capsule owner(out, [](void* p) noexcept { delete[] static_cast<int64_t*>(p); });
+    return nb::ndarray<nb::numpy, int64_t, nb::ndim<1>>(out, {added.size()}, owner);
+}
+
 }  // namespace
 
 NB_MODULE(_trees, m) {
@@ -303,4 +420,11 @@ NB_MODULE(_trees, m) {
           "exactly, -9999 for the source and unreached nodes; through (b, n) float64, the values summed over\n"
           "each node's subtree of that source's tree minus the node's own value (0 for the source).\n"
           "threads: 1 or 2 worker threads, each running whole sources (the result does not depend on it).");
+    m.def("cover_paths", &cover_paths, nb::arg("indptr"), nb::arg("indices"), nb::arg("lengths"), nb::arg("start"),
+          nb::arg("predecessor"), nb::arg("far"), nb::arg("radius"),
+          "cover_paths(indptr, indices, lengths, start, predecessor, far, radius) -> added.\n\n"
+          "The loop of g2s_plugins.terminals.coverage.cover_paths (see there) on a CSR graph (int32 indptr,\n"
+          "int32 indices, float64 lengths), from the distances `start` (n,) float64 to the seeds and their\n"
+          "predecessors (n,) int32 (negative: none), the far nodes `far` (int64) in the order they are taken\n"
+          "from the end: added (k,) int64, the nodes of the paths added, path by path.");
 }

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import hashlib
+import heapq
 import json
 import math
 from types import SimpleNamespace
@@ -225,6 +226,61 @@ def test_traffic_weight_zero_is_the_plain_cover():
     for radius in (4.0, 3.0, 0.5):
         assert select_cover(graph, radius=radius, traffic_weight=0.0, traffic_radius=1.0) == select_cover(
             graph, radius=radius)
+
+
+def reference_cover(adjacency: sp.csr_array, seeds: np.ndarray, eligible: np.ndarray, radius: float) -> np.ndarray:
+    """cover_paths as plain Python with heapq: the farthest uncovered node (ties: lowest row) and its path
+    back to the set join it, then a Dijkstra from the path lowers the distances, until all is within radius."""
+    start, predecessor, _ = csgraph.dijkstra(adjacency, directed=False, indices=seeds, min_only=True,
+                                             return_predecessors=True)
+    distance, parent = start.tolist(), predecessor.tolist()
+    heap = [(-start[node], node) for node in np.flatnonzero((start > radius) & eligible).tolist()]
+    heapq.heapify(heap)
+    chosen = [seeds]
+    while heap:
+        negative, node = heapq.heappop(heap)
+        if distance[node] <= radius:
+            continue
+        if -negative > distance[node]:  # came closer since: back in at its new distance
+            heapq.heappush(heap, (-distance[node], node))
+            continue
+        path = [node]
+        while parent[path[-1]] >= 0:
+            path.append(parent[path[-1]])
+        path.pop()
+        chosen.append(np.asarray(path, dtype=np.int64))
+        for member in path:
+            distance[member], parent[member] = 0.0, -1
+        pending = [(0.0, member) for member in path]  # not a heap: heapq's order decides equal ways
+        while pending:
+            reached, here = heapq.heappop(pending)
+            if reached > distance[here]:
+                continue
+            for k in range(adjacency.indptr[here], adjacency.indptr[here + 1]):
+                other, through = int(adjacency.indices[k]), reached + float(adjacency.data[k])
+                if through < distance[other]:
+                    distance[other], parent[other] = through, here
+                    heapq.heappush(pending, (through, other))
+    return np.unique(np.concatenate(chosen))
+
+
+def test_cover_paths_is_the_plain_python_cover():
+    # a path 0 - 1 - ... - 9 of unit steps from seed 0, radius 2.5: the farthest node 9 and its path back to
+    # 0 (nodes 1-9) join, so all is covered
+    path = lengths(10, [(i, i + 1, 1.0) for i in range(9)])
+    assert coverage.cover_paths(path, np.array([0]), np.ones(10, bool), 2.5).tolist() == list(range(10))
+    # random graphs of equal lengths, full of equally short ways, and of random lengths: the same cover
+    rng = np.random.default_rng(8)
+    for _ in range(60):
+        n = int(rng.integers(5, 120))
+        edges = [(int(a), int(b), float(rng.choice([1.0, 2.0])) if rng.random() < 0.7 else float(rng.random()) + 0.1)
+                 for a, b in rng.integers(0, n, (2 * n, 2)) if a != b]
+        graph = lengths(n, edges)
+        graph.sum_duplicates()
+        seeds = rng.choice(n, int(rng.integers(1, 4)), replace=False).astype(np.int64)
+        eligible, radius = rng.random(n) < 0.9, float(rng.choice([0.5, 1.5, 3.0]))
+        assert np.array_equal(coverage.cover_paths(graph, seeds, eligible, radius),
+                              reference_cover(graph, seeds, eligible, radius))
 
 
 def test_traffic_aware_cover_adds_a_waypoint_where_traffic_steps_down():

@@ -87,7 +87,6 @@ for k = 256 sources, unless the run's ``flow`` analyzer already needs it.
 
 from __future__ import annotations
 
-import heapq
 import math
 
 import networkx as nx
@@ -98,7 +97,7 @@ from scipy.sparse import csgraph
 
 from g2s_core.model import NavMesh, RunContext, Terminals
 from g2s_core.plugin import PluginParams, hookimpl
-from g2s_plugins import traffic
+from g2s_plugins import _trees, traffic
 
 NAME = "coverage"
 
@@ -251,44 +250,22 @@ def cover_paths(adjacency, seeds: np.ndarray, eligible: np.ndarray, radius: floa
 
     After each path the distances are lowered by a Dijkstra from the path
     that only follows nodes it brings closer, so the work per path is the
-    area around it, not the whole level.
+    area around it, not the whole level. The nodes farther than ``radius``
+    are taken farthest first (ties: lowest row), and one that came closer
+    since its distance was read goes back into a heap at its new distance;
+    the loop runs in C++ (:func:`g2s_plugins._trees.cover_paths`, whose heaps
+    are Python's ``heapq`` step for step, so equally short ways are chosen as
+    that gives them).
     """
     start, predecessor, _ = csgraph.dijkstra(
         adjacency, directed=False, indices=seeds, min_only=True, return_predecessors=True
     )
-    distance = start.tolist()
-    parent = predecessor.tolist()
-    indptr, indices, lengths = adjacency.indptr.tolist(), adjacency.indices.tolist(), adjacency.data.tolist()
-    # farthest first (ties: lowest row): the far nodes sorted once, popped from the end, merged with a
-    # heap of the entries pushed again after their node came closer (the same order as one heap of
-    # all entries, without sifting the many entries that are covered before their turn)
     far = np.flatnonzero((start > radius) & eligible)
-    far = far[np.lexsort((-far, start[far]))]
-    queue = list(zip((-start[far]).tolist(), far.tolist()))
-    again: list[tuple[float, int]] = []
-    chosen = [seeds]
-    while queue or again:
-        negative, node = heapq.heappop(again) if again and (not queue or again[0] < queue[-1]) else queue.pop()
-        if distance[node] <= radius:
-            continue
-        if -negative > distance[node]:  # stale: the node came closer since
-            heapq.heappush(again, (-distance[node], node))
-            continue
-        path = [node]
-        while parent[path[-1]] >= 0:
-            path.append(parent[path[-1]])
-        path.pop()  # the last node is already in the set
-        chosen.append(np.asarray(path, dtype=np.int64))
-        for member in path:
-            distance[member], parent[member] = 0.0, -1
-        pending = [(0.0, member) for member in path]
-        while pending:
-            reached, here = heapq.heappop(pending)
-            if reached > distance[here]:
-                continue
-            for k in range(indptr[here], indptr[here + 1]):
-                other, through = indices[k], reached + lengths[k]
-                if through < distance[other]:
-                    distance[other], parent[other] = through, here
-                    heapq.heappush(pending, (through, other))
-    return np.unique(np.concatenate(chosen))
+    far = far[np.lexsort((-far, start[far]))]  # taken from the end: farthest first, ties lowest row first
+    csr = sp.csr_array(adjacency)
+    added = _trees.cover_paths(
+        np.ascontiguousarray(csr.indptr, dtype=np.int32), np.ascontiguousarray(csr.indices, dtype=np.int32),
+        np.ascontiguousarray(csr.data, dtype=np.float64), np.ascontiguousarray(start, dtype=np.float64),
+        np.ascontiguousarray(predecessor, dtype=np.int32), np.ascontiguousarray(far, dtype=np.int64), float(radius),
+    )
+    return np.unique(np.concatenate([seeds, added]))
