@@ -99,7 +99,6 @@ def navmesh_graph(navmesh: NavMesh, agent: AgentConfig | None = None, max_edge_g
         {"pos": pos[i], "normal": nrm[i], "area": area[i], "on_navmesh": True, "polygon": i}
         for i in range(navmesh.polygon_count)
     ))
-    ends = portals.endpoints.reshape(-1, 6).tolist()
     crossing = np.zeros(len(pairs), dtype=bool)
     if max_edge_gap is not None and agent is None:
         raise ValueError("max_edge_gap needs the agent (its radius spaces the probes)")
@@ -107,10 +106,13 @@ def navmesh_graph(navmesh: NavMesh, agent: AgentConfig | None = None, max_edge_g
         step, reach = _probe_spacing_and_reach(agent)
         gaps = navmesh.segment_surface_gaps(centres[pairs[:, 0]], centres[pairs[:, 1]], step, reach)
         crossing = (gaps > max_edge_gap) | (_corner_gaps(navmesh, reach) > max_edge_gap)
+    direct = ~crossing
     graph.add_edges_from(
         (a, b, {"weight": w, "portal": ((e[0], e[1], e[2]), (e[3], e[4], e[5])), "width": wd})
-        for (a, b), w, e, wd, cross in zip(pairs.tolist(), weights.tolist(), ends, portals.widths.tolist(), crossing)
-        if not cross
+        for (a, b), w, e, wd in zip(
+            pairs[direct].tolist(), weights[direct].tolist(), portals.endpoints[direct].reshape(-1, 6).tolist(),
+            portals.widths[direct].tolist(),
+        )
     )
     if crossing.any():
         _add_portal_nodes(graph, navmesh, np.flatnonzero(crossing), agent, max_edge_gap)
