@@ -229,8 +229,9 @@ class NavMesh:
         overlap); over none, e.g. where Recast eroded the boundary, to the
         nearest boundary point of a polygon within ``horizontal`` (default one
         ``cell_size``). A segment's gap is its probes' largest, ``inf`` when a
-        probe has no surface within ``reach``. Looped in C++: O(length / step)
-        probes, each O(polygons within ``horizontal``).
+        probe has no surface within ``reach``. Looped in C++, the rows shared
+        between the cores (each row's value does not depend on it):
+        O(length / step) probes, each O(polygons within ``horizontal``).
         """
         A = np.ascontiguousarray(A, dtype=np.float64).reshape(-1, 3)
         B = np.ascontiguousarray(B, dtype=np.float64).reshape(-1, 3)
