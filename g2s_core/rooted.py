@@ -96,8 +96,8 @@ def root_forest(forest: nx.Graph, scores: Mapping[int, float], centre: np.ndarra
                         ({**node_data[nodes[i]], "depth": depth[i], "root": nodes[root_of[i]]} for i in visited))
     child = order[parent[order] != n]
     rooted.add_edges_from((nodes[p], nodes[c], adjacency[nodes[p]][nodes[c]]) for p, c in zip(parent[child].tolist(), child.tolist()))
-    key, tree_key = lo * n + hi, np.minimum(parent[child], child) * n + np.maximum(parent[child], child)
-    for u, v in (divmod(k, n) for k in np.sort(key[~np.isin(key, tree_key)]).tolist()):  # the loop edges
+    loop = (parent[lo] != hi) & (parent[hi] != lo)  # the loop edges: a tree edge joins a node to its parent
+    for u, v in (divmod(k, n) for k in np.sort(lo[loop] * n + hi[loop]).tolist()):
         first, second = (u, v) if depth[u] <= depth[v] else (v, u)
         rooted.add_edge(nodes[first], nodes[second], **adjacency[nodes[u]][nodes[v]], loop=True)
     return rooted
