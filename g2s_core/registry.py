@@ -234,9 +234,9 @@ class Registry:
         each = info.kind.check_each_call
         if each is None:
             return value
+        function = _guarded(info, value, "its function raised") if info.kind.guard_each_call else value
 
         def checked(*args: Any) -> Any:
-            function = _guarded(info, value, "its function raised") if info.kind.guard_each_call else value
             answer = function(*args)
             wrong = each(answer)
             if wrong is not None:

@@ -177,7 +177,8 @@ def _predicate(value: Any, kwargs: Mapping[str, Any], plugin: Any) -> str | None
 
 
 def _bool(value: Any) -> str | None:
-    return None if isinstance(value, (bool, np.bool_)) else f"{type(value).__name__}, not a bool"
+    # a plain bool first: this runs on every answer of a predicate, and np is looked up lazily (g2s_core.lazy)
+    return None if isinstance(value, bool) or isinstance(value, np.bool_) else f"{type(value).__name__}, not a bool"
 
 
 def _written(value: Any, kwargs: Mapping[str, Any], plugin: Any) -> str | None:
