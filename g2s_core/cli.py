@@ -30,6 +30,7 @@ from g2s_core.mesh import SAMPLE_PREFIX
 from g2s_core.model import RunResult
 from g2s_core.outputs import DEFAULT_FORMATS, check_outdir, chosen_formats, writers
 from g2s_core.registry import installed, plugin_parameters
+from g2s_core.result_folder import interrupts_held
 from g2s_core.stages import STAGES
 from g2s_core.lazy import lazy_module
 from g2s_core.summary import final_graph, metric_lines, roots_of, stage_rows
@@ -178,7 +179,8 @@ def _run(args: argparse.Namespace, errors: Console, mesh_name: str | None = None
     config_files: list[Path] = []
     config, source = resolve_config(args.config, dict(map(parse_assignment, args.overrides)), "--set", config_files)
     formats = chosen_formats(args.format, config, source, "--format")
-    inputs = api.input_files(config, config_files, args.mesh)
+    with interrupts_held():  # importing trimesh (api's) catches BaseException: a Ctrl-C then was lost, the run went on
+        inputs = api.input_files(config, config_files, args.mesh)
     check_outdir(args.outdir, formats, args.force, inputs)
     registry = installed()
     plan = pipeline.plan(config, registry, source=source)

@@ -233,3 +233,24 @@ def test_a_setting_given_twice_is_refused_not_the_last_one_kept(tmp_path):
     spec = "sample:dungeon?rooms=2&seed=1&rooms=3"
     assert_user_error(g2s("run", "graph_only", spec, "-o", str(tmp_path / "out")), f"{spec}: rooms is given twice")
     assert not (tmp_path / "out").exists()
+
+
+def test_ctrl_c_while_trimesh_imports_is_not_lost(tmp_path, monkeypatch, capsys):
+    """trimesh's imports catch BaseException (its optional dependencies), a KeyboardInterrupt among them: a Ctrl-C
+    in the first second of a run was lost and the run wrote its results. It is held until the import is done."""
+    import signal
+
+    from g2s_core import api, cli
+
+    class Importing:
+        def __getattr__(self, name):
+            try:
+                os.kill(os.getpid(), signal.SIGINT)
+            except BaseException:  # as trimesh does
+                pass
+            return getattr(api, name)
+
+    monkeypatch.setattr(cli, "api", Importing())
+    assert main(["run", "graph_only", "sample:straight_corridor", "-o", str(tmp_path / "out"), "-q"]) == 130
+    assert capsys.readouterr().err.strip() == "g2s: interrupted"
+    assert not (tmp_path / "out").exists()
