@@ -26,6 +26,7 @@ import trimesh
 
 from g2s_core import pipeline
 from g2s_core.config import RunConfig, named_files, resolve_config
+from g2s_core.errors import G2SError
 from g2s_core.mesh import SAMPLE_PREFIX, generate_level, load_mesh, mesh_sha256, prepare_and_clean
 from g2s_core.model import LoadedResult, RunResult
 from g2s_core.outputs import DEFAULT_FORMATS, write_outputs
@@ -113,8 +114,17 @@ def execute(
     ``values``, a dict of analysis key -> value (also in ``result.analysis``).
     ``result.inputs`` lists the files the run read (:func:`input_files`;
     ``config_files``: the config files ``plan.config`` came from).
+
+    Raises:
+        G2SError: bad input met while running, its message led by ``source.name`` (as the mesh's own errors
+            are by its path), so that a level among many is found; the step's other errors as they are.
     """
-    result = pipeline.run(plan, registry, source.mesh, source.name, source.sha256, progress=progress)
+    try:
+        result = pipeline.run(plan, registry, source.mesh, source.name, source.sha256, progress=progress)
+    except G2SError as exc:  # a graph builder does not know the file: its "mesh: ..." errors are named here
+        if not str(exc).startswith(f"{source.name}: "):
+            exc.args = (f"{source.name}: {exc}",)  # the same exception, of a plugin's own G2SError class too
+        raise
     result.mesh_path = source.path
     result.inputs = input_files(plan.config, config_files, source.path)
     terminals = set() if result.terminals is None else set(result.terminals.without_waypoints)

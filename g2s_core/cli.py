@@ -18,7 +18,7 @@ import traceback
 from collections.abc import Callable, Iterator, Sequence
 from contextlib import contextmanager, suppress
 from pathlib import Path
-from typing import Any
+from typing import Any, NoReturn
 
 from rich.console import Console
 from rich.table import Table
@@ -30,6 +30,7 @@ from g2s_core.mesh import SAMPLE_PREFIX
 from g2s_core.model import RunResult
 from g2s_core.outputs import DEFAULT_FORMATS, check_outdir, chosen_formats, writers
 from g2s_core.registry import installed, plugin_parameters
+from g2s_core.result_folder import interrupts_held
 from g2s_core.stages import STAGES
 from g2s_core.lazy import lazy_module
 from g2s_core.summary import final_graph, metric_lines, roots_of, stage_rows
@@ -39,12 +40,27 @@ api, pipeline = lazy_module("g2s_core.api"), lazy_module("g2s_core.pipeline")
 
 EXIT_CODES = "exit codes: 0 success, 2 bad input or config or a failed plugin (named with its package), 1 internal error, 130 interrupted"
 
-__all__ = ["main", "stage_table"]
+__all__ = ["main", "output_folder", "stage_table"]
+
+
+class CommandParser(argparse.ArgumentParser):
+    """argparse's parser (its commands' too), whose usage errors are one line, as every other error, with the
+    exit code of bad input."""
+
+    def error(self, message: str) -> NoReturn:
+        self.exit(2, f"g2s: error: {message} (see {self.prog} --help)\n")
+
+
+def output_folder(text: str) -> Path:
+    """An ``-o`` argument: a folder, never empty (an unset shell variable would put results in the working folder)."""
+    if not text.strip():
+        raise argparse.ArgumentTypeError("expected a folder, got an empty name")
+    return Path(text)
 
 
 def _parser() -> tuple[argparse.ArgumentParser, dict[str, Callable[[argparse.Namespace], int] | G2SError | PluginFailure]]:
     """The parser, and the run function of each plugin's command (or why it cannot run)."""
-    parser = argparse.ArgumentParser(
+    parser = CommandParser(
         prog="g2s",
         description="Graph2Structure: extract a hierarchical structure of navigable paths from level geometry.",
         epilog=f"{EXIT_CODES}; a plugin's command may add its own (g2s COMMAND --help)",
@@ -65,7 +81,7 @@ def _parser() -> tuple[argparse.ArgumentParser, dict[str, Callable[[argparse.Nam
     run.add_argument("config", help="preset name (see `g2s presets`) or YAML config file")
     run.add_argument("mesh", help=f"mesh file (.obj .glb .gltf .ply .stl .off) or {SAMPLE_PREFIX}NAME[?param=value&...] "
                      "for a level from an installed level generator (see `g2s plugins --stage levels`)")
-    run.add_argument("-o", "--outdir", type=Path, required=True, help="folder for the results")
+    run.add_argument("-o", "--outdir", type=output_folder, required=True, help="folder for the results")
     _add_output_options(run)
 
     commands.add_parser("presets", parents=[common], help="list the preset configs and what each is for")
@@ -75,7 +91,7 @@ def _parser() -> tuple[argparse.ArgumentParser, dict[str, Callable[[argparse.Nam
     plugins.add_argument("--stage", choices=[stage.key for stage in STAGES], help="only this stage")
 
     demo = commands.add_parser("demo", parents=[common], help="run the full pipeline on the built-in dungeon sample", epilog=EXIT_CODES)
-    demo.add_argument("-o", "--outdir", type=Path, default=Path("g2s-demo"), help="folder for the results (default: g2s-demo)")
+    demo.add_argument("-o", "--outdir", type=output_folder, default=Path("g2s-demo"), help="folder for the results (default: g2s-demo)")
     demo.add_argument("--rooms", type=int, default=12, help="rooms in the generated dungeon (default: 12)")
     demo.add_argument("--seed", type=int, default=0, help="seed of the generated dungeon (default: 0)")
     _add_output_options(demo)
@@ -161,9 +177,10 @@ def main(argv: Sequence[str] | None = None) -> int:
 def _run(args: argparse.Namespace, errors: Console, mesh_name: str | None = None) -> int:
     """``g2s run`` (and ``g2s demo``, which names its generated level ``mesh_name``)."""
     config_files: list[Path] = []
-    config, source = resolve_config(args.config, _overrides(args), overrides_source="--set", sources=config_files)
+    config, source = resolve_config(args.config, dict(map(parse_assignment, args.overrides)), "--set", config_files)
     formats = chosen_formats(args.format, config, source, "--format")
-    inputs = api.input_files(config, config_files, args.mesh)
+    with interrupts_held():  # importing trimesh (api's) catches BaseException: a Ctrl-C then was lost, the run went on
+        inputs = api.input_files(config, config_files, args.mesh)
     check_outdir(args.outdir, formats, args.force, inputs)
     registry = installed()
     plan = pipeline.plan(config, registry, source=source)
@@ -199,10 +216,6 @@ def _demo(args: argparse.Namespace, errors: Console) -> int:
     if code == 0 and not (args.quiet or args.json):
         Console().print(_demo_hint(args.outdir), markup=False, highlight=False, soft_wrap=True)
     return code
-
-
-def _overrides(args: argparse.Namespace) -> dict[str, Any]:
-    return dict(parse_assignment(text) for text in args.overrides)
 
 
 _DEMO_HINTS = (

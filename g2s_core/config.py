@@ -36,7 +36,7 @@ or an editable install has no ``g2s_core/presets`` and reads ``configs/``.
 
 
 class _Section(BaseModel):
-    model_config = ConfigDict(extra="forbid", frozen=True, allow_inf_nan=False)
+    model_config = ConfigDict(extra="forbid", frozen=True, allow_inf_nan=False, strict=True)
 
 
 class AgentConfig(_Section):
@@ -127,6 +127,15 @@ class _Loader(yaml.SafeLoader):
     def add_indent(self, column: int) -> bool:
         self._check_depth(len(self.indents))
         return super().add_indent(column)
+
+    def construct_mapping(self, node: yaml.MappingNode, deep: bool = False) -> dict[Any, Any]:
+        """A mapping, refusing a key written twice (PyYAML would keep the last silently)."""
+        seen: dict[tuple[str, str], yaml.Node] = {}
+        for key in (key for key, _ in node.value if isinstance(key, yaml.ScalarNode)):  # before ``<<`` merges
+            if (first := seen.setdefault((key.tag, key.value), key)) is not key:
+                raise yaml.constructor.ConstructorError(
+                    None, None, f"duplicate key {key.value!r} (first at line {first.start_mark.line + 1})", key.start_mark)
+        return super().construct_mapping(node, deep)
 
     def _check_depth(self, depth: int) -> None:
         if depth >= MAX_NESTING:

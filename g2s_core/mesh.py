@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
+import codecs
 import hashlib
+import io
 import logging
 from collections.abc import Iterator
 from contextlib import contextmanager
@@ -77,7 +79,11 @@ def load_mesh(path: str | Path, config: MeshConfig | None = None) -> tuple[trime
         raise MeshError(f"{path}: unsupported mesh type {path.suffix!r} (expected one of {', '.join(SUPPORTED_SUFFIXES)})")
     try:
         with _trimesh_log_silenced():
-            loaded = _read_single_mesh(path) or trimesh.load(path, force="mesh", process=False)
+            with path.open("rb") as handle:  # trimesh takes a UTF-8 byte-order mark for part of an OBJ's first line
+                marked = path.suffix.lower() == ".obj" and handle.read(3) == codecs.BOM_UTF8
+            file = (io.BytesIO(path.read_bytes()[3:]), "obj", trimesh.resolvers.FilePathResolver(path)) if marked \
+                else (path,)
+            loaded = _read_single_mesh(path) or trimesh.load(*file, force="mesh", process=False)
     except Exception as exc:  # trimesh raises many exception types for bad files
         raise MeshError(f"{path}: cannot read mesh ({type(exc).__name__}: {exc})") from None
     mesh, cleaning = prepare_and_clean(loaded, config, source=str(path))
@@ -144,7 +150,9 @@ def generate_level(spec: str, config: MeshConfig | None = None, registry: Regist
         query = parse_qsl(parts.query, keep_blank_values=True, strict_parsing=bool(parts.query))
     except ValueError:
         raise ConfigError(f"{spec}: expected sample:NAME?param=value&param=value") from None
-    params = registry.validate_params(info, dict(query), key=f"{SAMPLE_PREFIX}{info.name}")
+    if len(params := dict(query)) < len(query):  # dict() would keep the last value silently
+        raise ConfigError(f"{spec}: {next(n for n, _ in query if [m for m, _ in query].count(n) > 1)} is given twice")
+    params = registry.validate_params(info, params, key=f"{SAMPLE_PREFIX}{info.name}")
     return prepare_mesh(registry.call(info, params=params), config or MeshConfig(), source=spec)
 
 

@@ -92,7 +92,7 @@ def staged(outdir: Path, obsolete: Sequence[Path] = (), protect: Sequence[Path] 
         beside = "" if inside else f".{outdir.name[:64]}"  # short enough for any name limit
         staging = Path(tempfile.mkdtemp(dir=home, prefix=f"{beside}{STAGING_MARK}{os.getpid()}-"))
         yield staging
-        with _interrupts_held():
+        with interrupts_held():
             _move_into_place(staging, outdir, obsolete, protect)
     except BaseException as exc:
         if staging is not None:
@@ -182,7 +182,7 @@ def same_file(a: Path, b: Path) -> bool:
 
 
 @contextmanager
-def _interrupts_held() -> Iterator[None]:
+def interrupts_held() -> Iterator[None]:
     """Hold Ctrl-C (SIGINT) and SIGTERM back until the block ends, then act on them."""
     if threading.current_thread() is not threading.main_thread():
         yield

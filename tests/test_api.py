@@ -91,3 +91,23 @@ def test_bad_inputs_raise_one_line_errors():
         g2s_core.run("sample:t_hub", load_config(find_config("map_analysis")), **{"analyzers.2.key": "x"})
     with pytest.raises(ConfigError, match=r"^RunConfig: analyzers: expected a list of mappings, got a mapping$"):
         g2s_core.run("sample:t_hub", RunConfig(), **{"analyzers.0.key": "x"})
+
+
+def test_errors_met_while_running_name_the_level_once():
+    """A graph builder does not know the file: its errors are led by the level's name, as the mesh's own are,
+    and a message that already starts with it (the pipeline's empty-graph one) is not named twice."""
+    import types
+
+    from g2s_core import api, hookimpl, pipeline
+    from g2s_core.registry import Registry
+
+    with pytest.raises(G2SError, match=r"^straight_corridor: mesh: the level is less than one 0\.25 m cell across"):
+        g2s_core.run("sample:straight_corridor", "graph_only", mesh={"scale": 0.01})
+    registry = Registry.from_entry_points()
+    plugin = types.ModuleType("nothing", "a graph builder that finds no node")
+    plugin.NAME, plugin.g2s_build_graph = "nothing", hookimpl(lambda mesh, params, context: nx.Graph())
+    registry.register(plugin, package="tests", entry_point="graph_builders.nothing")
+    config, _ = resolve_config("graph_only", {"graph": {"plugin": "nothing"}})
+    level = api.open_mesh("sample:straight_corridor", config, registry=registry)
+    with pytest.raises(G2SError, match=r"^straight_corridor: no walkable surface found for the agent \(the initial"):
+        api.execute(pipeline.plan(config, registry), registry, level)

@@ -55,7 +55,7 @@ def test_a_command_plugin_that_fails_stops_only_its_own_command(monkeypatch, cap
     assert main(["presets"]) == 0 and "map_analysis" in capsys.readouterr().out
     assert main(["broken"]) == 2
     assert capsys.readouterr().err.strip() == ("g2s: error: Command plugin 'broken' (package 'tests') failed: "
-                                               "raised AttributeError: 'ArgumentParser' object has no attribute 'no_such_method'")
+                                               "raised AttributeError: 'CommandParser' object has no attribute 'no_such_method'")
     assert main(["nothing"]) == 2
     assert capsys.readouterr().err.strip() == ("g2s: error: Command plugin 'nothing' (package 'tests') failed: "
                                                "returned NoneType, not a function run(args) -> exit code")
@@ -202,3 +202,55 @@ def test_plugins_listing_fits_80_columns():
     lines = proc.stdout.splitlines()
     assert max(len(line) for line in lines) <= 80
     assert [line for line in lines if line and not line.startswith(" ")] == [stage.key for stage in STAGES]
+
+
+@pytest.mark.parametrize(
+    "args, says",
+    [(["plugins", "--stage", "nope"], "argument --stage: invalid choice: 'nope' (choose from 'graph',"),
+     (["frobnicate"], "argument COMMAND: invalid choice: 'frobnicate'"),
+     (["run", "graph_only"], "the following arguments are required: mesh, -o/--outdir (see g2s run --help)"),
+     (["demo", "--rooms", "x"], "argument --rooms: invalid int value: 'x'")],
+    ids=["choice", "command", "missing", "type"],
+)
+def test_usage_errors_are_one_line_too(args, says):
+    # argparse printed its usage line first: two lines, where a script relies on one
+    assert_user_error(g2s(*args), says)
+
+
+@pytest.mark.parametrize("command", [["run", "graph_only", "sample:straight_corridor"], ["batch", "graph_only", "sample:t_hub"]])
+def test_an_empty_output_folder_name_is_refused(command, tmp_path):
+    # `-o "$OUT"` with OUT unset: Path("") is the working folder, where the results went
+    assert_user_error(g2s(*command, "-o", "", cwd=tmp_path), "argument -o/--outdir: expected a folder, got an empty name")
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_a_setting_given_twice_is_refused_not_the_last_one_kept(tmp_path):
+    # YAML and URL queries both kept the last value silently: an agent 9 m wide, or a 3-room dungeon
+    config = tmp_path / "twice.yaml"
+    config.write_text("extends: graph_only\nagent: {radius: 0.3, radius: 9}\n")
+    assert_user_error(g2s("run", str(config), "sample:t_hub", "-o", str(tmp_path / "out")),
+                      "twice.yaml: invalid YAML at line 2, column 22: duplicate key 'radius' (first at line 2)")
+    spec = "sample:dungeon?rooms=2&seed=1&rooms=3"
+    assert_user_error(g2s("run", "graph_only", spec, "-o", str(tmp_path / "out")), f"{spec}: rooms is given twice")
+    assert not (tmp_path / "out").exists()
+
+
+def test_ctrl_c_while_trimesh_imports_is_not_lost(tmp_path, monkeypatch, capsys):
+    """trimesh's imports catch BaseException (its optional dependencies), a KeyboardInterrupt among them: a Ctrl-C
+    in the first second of a run was lost and the run wrote its results. It is held until the import is done."""
+    import signal
+
+    from g2s_core import api, cli
+
+    class Importing:
+        def __getattr__(self, name):
+            try:
+                os.kill(os.getpid(), signal.SIGINT)
+            except BaseException:  # as trimesh does
+                pass
+            return getattr(api, name)
+
+    monkeypatch.setattr(cli, "api", Importing())
+    assert main(["run", "graph_only", "sample:straight_corridor", "-o", str(tmp_path / "out"), "-q"]) == 130
+    assert capsys.readouterr().err.strip() == "g2s: interrupted"
+    assert not (tmp_path / "out").exists()

@@ -105,10 +105,23 @@ def test_extends_cycle_is_an_error(tmp_path):
         ("- a\n- b\n", "c.yaml: expected a mapping of settings at the top level, got a list"),
         ("agent: {radius: [1\n", "c.yaml: invalid YAML at line"),
         ("extends: no_such_preset\n", "c.yaml: extends: no config file or preset named 'no_such_preset'"),
+        ("agent: {radius: 0.3}\nagent: {height: 1.5}\n",
+         "c.yaml: invalid YAML at line 2, column 1: duplicate key 'agent' (first at line 1)"),
+        ("agent: {radius: 0.3, radius: 9}\n", "c.yaml: invalid YAML at line 1, column 22: duplicate key 'radius' (first at"),
+        ("agent: {radius: true}\n", "c.yaml: agent.radius: expected a number > 0, got true"),
+        ("agent: {height: '1.5'}\n", "c.yaml: agent.height: expected a number > 0, got '1.5'"),
+        ("mesh: {clean: 1}\n", "c.yaml: mesh.clean: expected true or false, got 1"),
     ],
 )
 def test_bad_configs_give_one_line_naming_the_key(tmp_path, text, expected):
     assert error_of(write(tmp_path, "c.yaml", text)).startswith(f"{tmp_path}/{expected}")
+
+
+def test_merged_keys_may_be_overridden_but_not_written_twice(tmp_path):
+    base = "corner: &corner {radius: 0.3, height: 1.5}\n"
+    assert load_raw_config(write(tmp_path, "m.yaml", base + "agent: {<<: *corner, radius: 0.4}\n"))["agent"] == \
+        {"radius": 0.4, "height": 1.5}
+    assert "duplicate key 'radius'" in error_of(write(tmp_path, "d.yaml", base + "agent: {<<: *corner, radius: 0.4, radius: 1}\n"))
 
 
 def test_missing_config_file(tmp_path):

@@ -17,6 +17,7 @@ from rich.console import Console
 from rich.progress import BarColumn, MofNCompleteColumn, TextColumn
 from rich.progress import Progress as RichProgress
 
+from g2s_core.cli import output_folder
 from g2s_core.config import presets
 from g2s_core.errors import G2SError
 from g2s_core.mesh import SAMPLE_PREFIX, SUPPORTED_SUFFIXES
@@ -42,7 +43,7 @@ def g2s_command(parser: argparse.ArgumentParser) -> Callable[[argparse.Namespace
                         help="configs (the leading preset names and .yaml/.yml files), then levels: mesh files, folders "
                         f"(searched recursively for {' '.join(SUPPORTED_SUFFIXES)}), glob patterns, or "
                         f"{SAMPLE_PREFIX}NAME[?param=value&...]")
-    parser.add_argument("-o", "--outdir", type=Path, required=True, help="folder of the batch's results")
+    parser.add_argument("-o", "--outdir", type=output_folder, required=True, help="folder of the batch's results")
     parser.add_argument("--executor", metavar="NAME", default="local", help="an executor plugin (`g2s plugins --stage "
                         "executors`): local, a process pool (default); dask, a Dask cluster; serial, one by one here")
     parser.add_argument("--workers", type=int, metavar="N",

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import json
 import os
 from pathlib import Path
 
@@ -31,6 +32,21 @@ def test_obj_in_another_encoding_runs(encoding, tmp_path, quick_config, capsys):
     assert outcome.code == 0, outcome.stderr
     assert tree(tmp_path / "out") == ["graph.json"]
     assert snapshot([mesh]) == before
+
+
+def test_obj_with_a_byte_order_mark_before_its_first_vertex_is_read_whole(tmp_path, quick_config, capsys):
+    # trimesh took the mark for part of the first line: the first vertex was lost and the faces pointed past the
+    # end ("cannot read mesh (IndexError: index 3 is out of bounds ...)"); CRLF line ends as Windows writes them
+    body = "\r\n".join(FLOOR_OBJ.splitlines()[2:]) + "\r\n"
+    (tmp_path / "plain.obj").write_text(body)
+    (tmp_path / "marked.obj").write_bytes(b"\xef\xbb\xbf" + body.encode())
+    graphs = []
+    for name in ("plain", "marked"):
+        outcome = run_g2s(capsys, "run", quick_config, tmp_path / f"{name}.obj", "-o", tmp_path / name, "-q")
+        assert outcome.code == 0, outcome.stderr
+        written = json.loads((tmp_path / name / "graph.json").read_text())
+        graphs.append((written["nodes"], written["edges"]))
+    assert graphs[0] == graphs[1] and graphs[0][0]
 
 
 def _symlink_to_zero(folder: Path) -> Path:

@@ -51,7 +51,8 @@ def assert_refused(code: int, err: str, *fragments: str) -> None:
 
 def test_z_up_floor_read_as_y_up_names_the_up_axis(tmp_path, capsys):
     mesh = quad_obj(tmp_path / "z_up.obj", [(-5, -5, 0), (5, -5, 0), (5, 5, 0), (-5, 5, 0)])
-    assert_refused(*run(tmp_path, mesh, "", capsys), "mesh: the level has no floor area", "`mesh: {up_axis: z}`")
+    assert_refused(*run(tmp_path, mesh, "", capsys), "error: z_up.obj: mesh: the level has no floor area",
+                   "`mesh: {up_axis: z}`")
     code, err = run(tmp_path, mesh, "mesh: {up_axis: z}\n", capsys)
     assert code == 0, err
 
@@ -62,7 +63,7 @@ def test_bumpy_z_up_level_read_as_y_up_names_the_up_axis(tmp_path, capsys):
              "f 1 2 3", "f 1 3 4", "f 5 6 7", "f 5 7 8"]
     mesh = tmp_path / "bumpy.obj"
     mesh.write_text("\n".join(lines) + "\n")
-    assert_refused(*run(tmp_path, mesh, "", capsys), "no walkable surface", "`mesh: {up_axis: z}`")
+    assert_refused(*run(tmp_path, mesh, "", capsys), "error: bumpy.obj: no walkable surface", "`mesh: {up_axis: z}`")
 
 
 def test_single_wall(tmp_path, capsys):
@@ -72,7 +73,8 @@ def test_single_wall(tmp_path, capsys):
 
 @pytest.mark.parametrize(
     "size, fragment",
-    [(1e-4, "mesh: the level is less than one 0.25 m cell across"), (3e6, "mesh: the level (3e+06 x 3e+06 m")],
+    [(1e-4, "error: f.obj: mesh: the level is less than one 0.25 m cell across"),
+     (3e6, "error: f.obj: mesh: the level (3e+06 x 3e+06 m")],
 )
 def test_tiny_and_huge_levels(tmp_path, capsys, size, fragment):
     assert_refused(*run(tmp_path, floor_obj(tmp_path / "f.obj", size), "", capsys), fragment, "mesh.scale")
@@ -162,7 +164,7 @@ def test_flat_level_a_hundred_times_too_large_is_refused_at_once(tmp_path, capsy
     # of 0.25 m, which Recast would build for about an hour; the time guard refuses it before any work
     mesh = floor_obj(tmp_path / "f.obj", 200)
     code, err = run(tmp_path, mesh, "mesh: {scale: 100}\n", capsys)
-    assert_refused(code, err, "mesh: the level (2e+04 x 2e+04 m", "graph.params.max_level_cells=1e+09", "mesh.scale")
+    assert_refused(code, err, "error: f.obj: mesh: the level (2e+04 x 2e+04 m", "graph.params.max_level_cells=1e+09", "mesh.scale")
     assert run(tmp_path, mesh, "", capsys)[0] == 0
 
 
@@ -186,7 +188,7 @@ def test_level_a_hundred_times_too_small_shows_its_size(tmp_path, capsys):
                                         for x in (-60, -20, 20, 60)])
     rooms.export(mesh)
     code, err = run(tmp_path, mesh, "mesh: {scale: 0.01}\n", capsys)
-    assert_refused(code, err, "no walkable surface", "the level is 2 x 2 m (x, z), 0.032 m tall: check mesh.scale")
+    assert_refused(code, err, "error: rooms.obj: no walkable surface", "the level is 2 x 2 m (x, z), 0.032 m tall: check mesh.scale")
     assert run(tmp_path, mesh, "", capsys)[0] == 0
 
 
