@@ -31,30 +31,23 @@ import scipy.sparse as sp
 from scipy.sparse import csgraph
 
 from g2s_core.model import add_nodes_with_data
-from g2s_core.ties import tie_value, tie_values
+from g2s_core.ties import tie_values
 
 
-def best_roots(forest: nx.Graph, nodes: list[int], label: np.ndarray, scores: Mapping[int, float], centre: np.ndarray) -> list[int]:
-    """The row in ``nodes`` (the sorted ids of ``forest``) of each component's root, components by ``label`` (0, 1, ...).
+def root_ranks(forest: nx.Graph, scores: Mapping[int, float], centre: np.ndarray) -> np.ndarray:
+    """(n,) rank as a root of each node of ``sorted(forest)``: 0 is best.
 
     Order: highest score first; ties (see :mod:`g2s_core.ties`) go to the
-    node nearest ``centre``, then to the lowest id. Rounding keeps the order
-    of the values, so only a component's highest scores, down to the first
-    that rounds lower, are rounded and only those nodes' distances computed
-    (the rounding's text round trip for every node took 0.1 s on a 100k-polygon level).
+    node nearest ``centre``, then to the lowest id.
     """
+    nodes = sorted(forest)
     missing = [n for n in nodes if n not in scores]
     if missing:
         raise ValueError(f"the root selector gave no score for nodes {missing[:5]}")
-    score = np.array([scores[n] for n in nodes], dtype=np.float64)
-    order = np.lexsort((-score, label))
-    bounds, best = np.searchsorted(label[order], np.arange(label.max(initial=-1) + 2)).tolist(), []
-    for start, end in zip(bounds, bounds[1:]):  # a component's nodes from its highest score down
-        top = tie_value(score[order[start]])
-        tied = order[start:next((i for i in range(start + 1, end) if tie_value(score[order[i]]) != top), end)]
-        positions = np.array([forest.nodes[nodes[i]]["pos"] for i in tied.tolist()], dtype=np.float64).reshape(-1, 3)
-        best.append(int(tied[np.lexsort((tied, tie_values(np.linalg.norm(positions - centre, axis=1))))[0]]))
-    return best
+    positions = np.array([forest.nodes[n]["pos"] for n in nodes], dtype=np.float64).reshape(-1, 3)
+    score = tie_values([scores[n] for n in nodes])
+    distance = tie_values(np.linalg.norm(positions - centre, axis=1))
+    return np.argsort(np.lexsort((np.arange(len(nodes)), distance, -score)))
 
 
 def root_forest(forest: nx.Graph, scores: Mapping[int, float], centre: np.ndarray) -> nx.DiGraph:
@@ -72,6 +65,7 @@ def root_forest(forest: nx.Graph, scores: Mapping[int, float], centre: np.ndarra
         ``root``; ``graph["roots"]`` lists the roots in component order (by
         smallest node id).
     """
+    rank = root_ranks(forest, scores, centre)
     nodes = sorted(forest)
     n, ends = len(nodes), np.fromiter(itertools.chain.from_iterable(forest.edges), dtype=np.int64).reshape(-1, 2)
     # rows of the (integer, g2s_core.model) ids by one binary search, not a dict look-up per edge end
@@ -79,9 +73,10 @@ def root_forest(forest: nx.Graph, scores: Mapping[int, float], centre: np.ndarra
     # the forest as an (n+1, n+1) CSR matrix (columns ascending in each row) with a lone virtual node n
     matrix = sp.csr_array((np.ones(2 * len(lo)), (np.r_[lo, hi], np.r_[hi, lo])), shape=(n + 1, n + 1))
     count, label = csgraph.connected_components(matrix, directed=False)
-    # components numbered by their smallest node (the virtual node's comes last), each rooted at its best node
+    # components numbered by their smallest node (the virtual node's comes last), each rooted at its best rank
     label = np.argsort(np.argsort(np.unique(label, return_index=True)[1]))[label[:n]]
-    best = np.array(best_roots(forest, nodes, label, scores, centre), dtype=np.int64)
+    by_rank = np.lexsort((rank, label))
+    best = by_rank[np.searchsorted(label[by_rank], np.arange(count - 1))]
     # one depth-first search (neighbours by ascending id) from the virtual node, joined to every root
     start = sp.csr_array((np.ones(count - 1), (np.full(count - 1, n), best)), shape=matrix.shape)
     order, parent = csgraph.depth_first_order(matrix + start, n, return_predecessors=True)
