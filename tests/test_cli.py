@@ -235,7 +235,7 @@ def test_a_setting_given_twice_is_refused_not_the_last_one_kept(tmp_path):
     assert not (tmp_path / "out").exists()
 
 
-def test_ctrl_c_while_trimesh_imports_is_not_lost(tmp_path, monkeypatch, capsys):
+def test_ctrl_c_while_trimesh_imports_is_not_lost(tmp_path, monkeypatch, capsys, request):
     """trimesh's imports catch BaseException (its optional dependencies), a KeyboardInterrupt among them: a Ctrl-C
     in the first second of a run was lost and the run wrote its results. It is held until the import is done."""
     import signal
@@ -251,6 +251,9 @@ def test_ctrl_c_while_trimesh_imports_is_not_lost(tmp_path, monkeypatch, capsys)
             return getattr(api, name)
 
     monkeypatch.setattr(cli, "api", Importing())
+    # as from a terminal: a shell's background job (how CI may start the suite) inherits SIGINT ignored
+    previous = signal.signal(signal.SIGINT, signal.default_int_handler)
+    request.addfinalizer(lambda: signal.signal(signal.SIGINT, previous))
     assert main(["run", "graph_only", "sample:straight_corridor", "-o", str(tmp_path / "out"), "-q"]) == 130
     assert capsys.readouterr().err.strip() == "g2s: interrupted"
     assert not (tmp_path / "out").exists()

@@ -6,6 +6,7 @@ from __future__ import annotations
 import os
 import resource
 import shutil
+import signal
 import subprocess
 import sys
 from pathlib import Path
@@ -139,7 +140,8 @@ def test_ctrl_c_while_writing_leaves_nothing(tmp_path, quick_config):
     """A real SIGINT to a real process, after some of its files were written."""
     out = tmp_path / "out"
     proc = subprocess.run([sys.executable, "-c", SIGINT_WHILE_WRITING, "run", str(quick_config), CORRIDOR,
-                           "-o", str(out), "--format", "json,png"], capture_output=True, text=True, timeout=300)
+                           "-o", str(out), "--format", "json,png"], capture_output=True, text=True, timeout=300,
+                          preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))  # as from a terminal, not a background job
     assert proc.returncode == 130, proc.stderr
     assert proc.stderr.strip() == "g2s: interrupted"
     assert tree(tmp_path) == ["quick.yaml"]
