@@ -19,6 +19,7 @@ it) stops at once instead of building for an hour.
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 import numpy as np
@@ -109,6 +110,14 @@ def check_grid(vertices: np.ndarray, settings: dict[str, Any], cell_size_given: 
         )
     voxels = voxel_config(settings)
     cs, ch = float(voxels["cs"]), float(voxels["ch"])
+    far = float(np.abs(np.concatenate([lo, hi])).max())
+    if np.spacing(np.float32(far)) > cs / 2:  # Recast's rasteriser overruns its stack from about 2^22 m out
+        reach = 2.0 ** (math.floor(math.log2(cs / 2)) + 24)
+        raise SettingsError(
+            f"mesh: vertices lie up to {far:.4g} m from the origin, where Recast's single precision keeps only "
+            f"{np.spacing(np.float32(far)):g} m between values, more than half a {cs:g} m cell; move the level "
+            f"within {reach:.4g} m of the origin"
+        )
     size = f"{extent[0]:.4g} x {extent[2]:.4g} m (x, z), {extent[1]:.4g} m tall"
     cs_key = "graph.params.cell_size" if cell_size_given else "mesh"
     width, depth = (int(np.floor(e / cs + 0.5)) for e in (extent[0], extent[2]))

@@ -150,7 +150,7 @@ def test_memory_guard_bounds_tiles_not_the_whole_grid():
 
 
 def test_tile_count_is_bounded_without_overflow():
-    corners = np.array([[0.0, 0.0, 0.0], [4.0e6, 3.0, 4.0e6]])  # 1.6e7 cells a side
+    corners = np.array([[-2.0e6, 0.0, -2.0e6], [2.0e6, 3.0, 2.0e6]])  # 1.6e7 cells a side, centred on the origin
     with pytest.raises(SettingsError, match="needs 3906250000 tiles"):
         check_grid(corners, resolve_settings(Agent(), RecastParams(cell_size=0.25)), cell_size_given=True,
                    max_level_cells=1 << 62)
@@ -203,3 +203,15 @@ def test_y_up_level_read_as_z_up_names_the_up_axis(tmp_path, capsys, preset):
     err = capsys.readouterr().err
     assert outcome == 0, err
     assert "Traceback" not in err and "`mesh: {up_axis: z}` (or `y` if it is already z)" in err, err
+
+
+def test_level_far_from_the_origin_is_refused_before_recast_overruns(tmp_path, capsys):
+    """At 5e6 m single precision keeps 0.5 m between values and Recast's rasteriser overran its stack (exit 134)."""
+    far = quad_obj(tmp_path / "utm.obj", [(5e6 - 20, 0, 5e6 - 20), (5e6 - 20, 0, 5e6 + 20),
+                                          (5e6 + 20, 0, 5e6 + 20), (5e6 + 20, 0, 5e6 - 20)])
+    assert_refused(*run(tmp_path, far, "", capsys), "utm.obj: mesh: vertices lie up to 5e+06 m from the origin",
+                   "move the level within")
+    near = quad_obj(tmp_path / "near.obj", [(1e5 - 20, 0, 1e5 - 20), (1e5 - 20, 0, 1e5 + 20),
+                                            (1e5 + 20, 0, 1e5 + 20), (1e5 + 20, 0, 1e5 - 20)])
+    code, err = run(tmp_path, near, "", capsys)
+    assert code == 0, err
