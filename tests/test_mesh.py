@@ -115,7 +115,7 @@ def test_sample_levels_come_from_the_level_generators_with_their_parameters():
     assert np.array_equal(mesh.vertices, expected.vertices) and np.array_equal(mesh.faces, expected.faces)
     for spec, message in [
         ("sample:nope", "sample:nope: unknown sample 'nope' (expected one of: "),
-        ("sample:dungeon?rooms=many", "sample:dungeon.rooms: expected an integer > 0, got 'many'"),
+        ("sample:dungeon?rooms=many", "sample:dungeon.rooms: expected an integer >= 1 and <= 100000, got 'many'"),
         ("sample:cross_hub?arms=3", "sample:cross_hub.arms: unknown key (expected one of: hub_size, arm_length, arm_width)"),
         ("sample:cross_hub?hub_size", "sample:cross_hub?hub_size: expected sample:NAME?param=value&param=value"),
     ]:

@@ -74,7 +74,9 @@ def test_plugins_listing_shows_the_unit_and_bounds_of_dungeon_spacing():
     "spec, message",
     [
         ("sample:dungeon?obstacles=1.5", "sample:dungeon.obstacles: expected a number >= 0 and <= 1, got '1.5'"),
-        ("sample:dungeon?rooms=0", "sample:dungeon.rooms: expected an integer > 0, got '0'"),
+        ("sample:dungeon?rooms=0", "sample:dungeon.rooms: expected an integer >= 1 and <= 100000, got '0'"),
+        # a typo's count generated for minutes before anything said why
+        ("sample:dungeon?rooms=100000000", "sample:dungeon.rooms: expected an integer >= 1 and <= 100000, got '100000000'"),
         ("sample:corridor_with_ramp?slope_deg=90", "sample:corridor_with_ramp.slope_deg: expected a number > 0 and < 90, got '90'"),
     ],
 )

@@ -798,10 +798,15 @@ def _pillar_lattice(
     return np.column_stack([x, z])
 
 
+MAX_DUNGEON_ROOMS = 100_000
+"""The largest dungeon (eight times the 12,000-room, 100,781-polygon benchmark level): a count from a typo
+(``rooms=100000000``) generated for minutes before anything said why; larger levels: benchmarks/large_level.py."""
+
+
 @validate_call
 def dungeon(
     seed: NonNegativeInt = 0,
-    rooms: PositiveInt = 12,
+    rooms: Annotated[int, Field(ge=1, le=MAX_DUNGEON_ROOMS)] = 12,
     room_min: PositiveFloat = 5.0,
     room_max: float = 10.0,
     spacing: PositiveFloat = 14.0,
@@ -842,7 +847,7 @@ def dungeon(
 
     Args:
         seed: seed of the random layout.
-        rooms: number of rooms.
+        rooms: number of rooms, at most :data:`MAX_DUNGEON_ROOMS`.
         room_min: smallest side of a room, metres.
         room_max: largest side of a room, metres.
         spacing: pitch of the rooms' grid, metres.

@@ -99,6 +99,7 @@ def test_root_point_non_finite_cli(point, tmp_path, capsys):
     "option, value, says",
     [("--rooms", "0", "--rooms: expected an integer >= 1, got 0"),
      ("--rooms", "-3", "--rooms: expected an integer >= 1, got -3"),
+     ("--rooms", "100000000", "sample:dungeon.rooms: expected an integer >= 1 and <= 100000, got '100000000'"),
      ("--seed", "-1", "--seed: expected an integer >= 0, got -1")],
 )
 def test_demo_options_out_of_range(option, value, says, tmp_path, capsys):
