@@ -121,9 +121,8 @@ def execute(
     """
     try:
         result = pipeline.run(plan, registry, source.mesh, source.name, source.sha256, progress=progress)
-    except G2SError as exc:  # a graph builder does not know the file: its "mesh: ..." errors are named here
-        if not str(exc).startswith(f"{source.name}: "):
-            exc.args = (f"{source.name}: {exc}",)  # the same exception, of a plugin's own G2SError class too
+    except G2SError as exc:  # the stages do not know the file: their errors are named here, once
+        exc.args = (f"{source.name}: {exc}",)  # the same exception, of a plugin's own G2SError class too
         raise
     result.mesh_path = source.path
     result.inputs = input_files(plan.config, config_files, source.path)

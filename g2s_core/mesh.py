@@ -150,8 +150,9 @@ def generate_level(spec: str, config: MeshConfig | None = None, registry: Regist
         query = parse_qsl(parts.query, keep_blank_values=True, strict_parsing=bool(parts.query))
     except ValueError:
         raise ConfigError(f"{spec}: expected sample:NAME?param=value&param=value") from None
-    if len(params := dict(query)) < len(query):  # dict() would keep the last value silently
-        raise ConfigError(f"{spec}: {next(n for n, _ in query if [m for m, _ in query].count(n) > 1)} is given twice")
+    names = [name for name, _ in query]
+    if len(params := dict(query)) < len(names):  # dict() would keep the last value silently
+        raise ConfigError(f"{spec}: {next(name for name in names if names.count(name) > 1)} is given twice")
     params = registry.validate_params(info, params, key=f"{SAMPLE_PREFIX}{info.name}")
     return prepare_mesh(registry.call(info, params=params), config or MeshConfig(), source=spec)
 

@@ -144,7 +144,7 @@ def _graph_step(step: Step) -> bool | None:
     result = step.result
     graph = step.call(mesh=result.context.mesh)
     if graph.number_of_nodes() == 0:
-        raise G2SError(f"{result.mesh_name}: no walkable surface found for the agent (the initial graph is empty)")
+        raise G2SError("no walkable surface found for the agent (the initial graph is empty)")  # named by api.execute
     step.record.update(nodes=graph.number_of_nodes(), edges=graph.number_of_edges())
     result.context.graph = result.graph = graph
 

@@ -176,12 +176,18 @@ def shortest_path_flow(adjacency: sp.csr_array, sources: np.ndarray, values: np.
     Raises:
         ValueError: an index or source out of range, or a negative length.
     """
-    csr = sp.csr_array(adjacency)
     return _trees.shortest_path_flow(
-        np.ascontiguousarray(csr.indptr, dtype=np.int32), np.ascontiguousarray(csr.indices, dtype=np.int32),
-        np.ascontiguousarray(csr.data, dtype=np.float64),
-        np.asarray(sources, dtype=np.int32), np.ascontiguousarray(values, dtype=np.float64), THREADS,
+        *extension_csr(adjacency), np.asarray(sources, dtype=np.int32), np.ascontiguousarray(values, dtype=np.float64),
+        THREADS,
     )
+
+
+def extension_csr(adjacency: sp.csr_array) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``adjacency``'s CSR arrays as the C++ extension takes them: (n+1,) int32 indptr, (m,) int32 indices, (m,)
+    float64 lengths, each contiguous."""
+    csr = sp.csr_array(adjacency)
+    return (np.ascontiguousarray(csr.indptr, dtype=np.int32), np.ascontiguousarray(csr.indices, dtype=np.int32),
+            np.ascontiguousarray(csr.data, dtype=np.float64))
 
 
 def flow_error_bound(sources: int, delta: float = 0.01) -> float:

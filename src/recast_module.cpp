@@ -1614,27 +1614,16 @@ using Vec3In = std::array<double, 3>;
 using ExtIn = std::optional<std::array<double, 3>>;
 using PointsIn = nb::ndarray<const double, nb::shape<-1, 3>, nb::c_contig, nb::device::cpu>;
 
-// fn(a, b) for every row pair of the (N,3) A and B (float64 rows), with the GIL released
-// and the query lock held (Detour's query object is not reentrant).
-template <typename T, typename Fn>
-std::vector<T> map_row_pairs(const NavMeshCore& n, const PointsIn& A, const PointsIn& B, Fn fn) {
-    if (A.shape(0) != B.shape(0)) throw nb::value_error("A and B must have the same length");
-    std::vector<T> out(A.shape(0));
-    nb::gil_scoped_release release;
-    std::lock_guard<std::mutex> lock(n.mutex);
-    for (size_t i = 0; i < out.size(); ++i) out[i] = fn(A.data() + i * 3, B.data() + i * 3);
-    return out;
-}
-
-// Rows a worker takes at a time in parallel_row_pairs, and the fewest rows worth a second thread
+// Rows a worker takes at a time when map_row_pairs shares them out, and the fewest rows worth a second thread
 // (a thread costs tens of microseconds; the portal-node routes probe a few rows per call).
 constexpr size_t PARALLEL_CHUNK = 256;
 
-// map_row_pairs for an fn that only reads the navmesh (Detour's const queries queryPolygons and
-// closestPointOnPoly, which keep no state in the query object): the rows are shared out in chunks
-// between one thread per core, each writing its own rows, so the result does not depend on the count.
+// fn(a, b) for every row pair of the (N,3) A and B (float64 rows), with the GIL released and the query lock held
+// (Detour's query object is not reentrant). `parallel`, for an fn that only reads the navmesh (Detour's const
+// queries queryPolygons and closestPointOnPoly, which keep no state in the query object): the rows are shared out
+// in chunks between one thread per core, each writing its own rows, so the result does not depend on the count.
 template <typename T, typename Fn>
-std::vector<T> parallel_row_pairs(const NavMeshCore& n, const PointsIn& A, const PointsIn& B, Fn fn) {
+std::vector<T> map_row_pairs(const NavMeshCore& n, const PointsIn& A, const PointsIn& B, Fn fn, bool parallel = false) {
     if (A.shape(0) != B.shape(0)) throw nb::value_error("A and B must have the same length");
     const size_t rows = A.shape(0);
     std::vector<T> out(rows);
@@ -1647,7 +1636,7 @@ std::vector<T> parallel_row_pairs(const NavMeshCore& n, const PointsIn& A, const
         for (size_t lo = next.fetch_add(PARALLEL_CHUNK); lo < rows; lo = next.fetch_add(PARALLEL_CHUNK))
             for (size_t i = lo; i < std::min(rows, lo + PARALLEL_CHUNK); ++i) out[i] = fn(a + i * 3, b + i * 3);
     };
-    const size_t cores = std::max(1u, std::thread::hardware_concurrency());
+    const size_t cores = parallel ? std::max(1u, std::thread::hardware_concurrency()) : 1;
     const size_t helpers = std::min(cores, rows / PARALLEL_CHUNK + 1) - 1;
     std::vector<std::thread> pool;
     for (size_t t = 0; t < helpers; ++t) pool.emplace_back(work);
@@ -1791,9 +1780,9 @@ NB_MODULE(_recast, m) {
         .def("segment_surface_gaps",
              [](const NavMeshCore& n, PointsIn A, PointsIn B, double step, float horizontal, float reach) {
                  if (!(step > 0)) throw nb::value_error("step must be positive");
-                 const std::vector<double> out = parallel_row_pairs<double>(n, A, B, [&](const double* a, const double* b) {
+                 const std::vector<double> out = map_row_pairs<double>(n, A, B, [&](const double* a, const double* b) {
                      return n.segment_gap(a, b, step, horizontal, reach);
-                 });
+                 }, true);
                  return to_numpy(out, out.size(), 0);
              },
              nb::arg("A"), nb::arg("B"), nb::arg("step"), nb::arg("horizontal"), nb::arg("reach"),

@@ -94,8 +94,8 @@ def test_bad_inputs_raise_one_line_errors():
 
 
 def test_errors_met_while_running_name_the_level_once():
-    """A graph builder does not know the file: its errors are led by the level's name, as the mesh's own are,
-    and a message that already starts with it (the pipeline's empty-graph one) is not named twice."""
+    """The stages do not know the file: their errors (a graph builder's, the pipeline's empty-graph one) are led by
+    the level's name once, as the mesh's own are."""
     import types
 
     from g2s_core import api, hookimpl, pipeline

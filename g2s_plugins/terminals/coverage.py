@@ -262,10 +262,8 @@ def cover_paths(adjacency, seeds: np.ndarray, eligible: np.ndarray, radius: floa
     )
     far = np.flatnonzero((start > radius) & eligible)
     far = far[np.lexsort((-far, start[far]))]  # taken from the end: farthest first, ties lowest row first
-    csr = sp.csr_array(adjacency)
     added = _trees.cover_paths(
-        np.ascontiguousarray(csr.indptr, dtype=np.int32), np.ascontiguousarray(csr.indices, dtype=np.int32),
-        np.ascontiguousarray(csr.data, dtype=np.float64), np.ascontiguousarray(start, dtype=np.float64),
+        *traffic.extension_csr(adjacency), np.ascontiguousarray(start, dtype=np.float64),
         np.ascontiguousarray(predecessor, dtype=np.int32), np.ascontiguousarray(far, dtype=np.int64), float(radius),
     )
     return np.unique(np.concatenate([seeds, added]))
