@@ -111,3 +111,26 @@ def test_errors_met_while_running_name_the_level_once():
     level = api.open_mesh("sample:straight_corridor", config, registry=registry)
     with pytest.raises(G2SError, match=r"^straight_corridor: no walkable surface found for the agent \(the initial"):
         api.execute(pipeline.plan(config, registry), registry, level)
+
+
+@pytest.mark.parametrize("collecting", [True, False])
+def test_the_cyclic_collector_is_left_as_it_was_after_a_run_and_its_writing(tmp_path, monkeypatch, collecting):
+    # the run and the writers pause the collector (and a big run's objects are collected once at its end);
+    # a caller's choice stands afterwards, also when the run fails
+    import gc
+
+    seen: list[bool] = []
+    monkeypatch.setattr(gc, "collect", lambda *args: seen.append(gc.isenabled()) or 0)
+    was = gc.isenabled()
+    (gc.enable if collecting else gc.disable)()
+    try:
+        result = g2s_core.run("sample:cross_hub", "map_analysis")
+        assert gc.isenabled() == collecting
+        result.write(tmp_path / "out", formats="json,graphml")
+        assert gc.isenabled() == collecting
+        with pytest.raises(G2SError):
+            g2s_core.run("sample:closed_room", "map_analysis", **{"agent.radius": 50.0})
+        assert gc.isenabled() == collecting
+    finally:
+        (gc.enable if was else gc.disable)()
+    assert seen == []  # a small level's objects are left to the collector's own pace

@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import codecs
+import io
+
 import numpy as np
 import pytest
 import trimesh
@@ -95,6 +98,28 @@ def test_single_mesh_files_skip_the_scene_and_read_the_same_arrays(tmp_path, suf
     reference = trimesh.load(path, force="mesh", process=False)
     assert np.array_equal(mesh.vertices, reference.vertices) and np.array_equal(mesh.faces, reference.faces)
     assert info.faces == len(source.faces)
+
+
+@pytest.mark.parametrize("options, mark", [({}, b""), ({"include_normals": True, "include_texture": True}, b""),
+                                           ({}, codecs.BOM_UTF8)])
+def test_an_obj_of_one_material_skips_the_scene_and_reads_the_same_arrays(tmp_path, options, mark):
+    source = levels.two_floors().mesh
+    path = tmp_path / "level.obj"
+    path.write_bytes(mark + source.export(file_type="obj", **options).encode())
+    mesh, info = load_mesh(path)
+    with path.open("rb") as handle:
+        handle.seek(len(mark))
+        reference = trimesh.load(io.BytesIO(handle.read()), "obj", force="mesh", process=False)
+    assert np.array_equal(mesh.vertices, reference.vertices) and np.array_equal(mesh.faces, reference.faces)
+    assert info.faces == len(source.faces) and info.sha256 == file_sha256(path)
+
+
+def test_an_obj_of_several_materials_is_read_as_one_mesh(tmp_path):
+    path = tmp_path / "two.obj"
+    path.write_text("v 0 0 0\nv 1 0 0\nv 1 0 1\nv 0 0 1\nusemtl a\nf 1 2 3\nusemtl b\nf 1 3 4\n")
+    mesh, info = load_mesh(path)
+    reference = trimesh.load(path, force="mesh", process=False)
+    assert info.faces == 2 and np.array_equal(mesh.faces, reference.faces)
 
 
 def test_a_ply_point_cloud_is_still_refused(tmp_path):
