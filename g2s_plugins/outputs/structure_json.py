@@ -23,10 +23,7 @@ the navmesh build time) and the g2s version go to ``run.json`` instead.
 
 from __future__ import annotations
 
-import gc
 import platform
-from collections.abc import Iterator
-from contextlib import contextmanager
 from pathlib import Path
 from typing import Any
 
@@ -38,6 +35,7 @@ from g2s_core.model import Opening, RunResult
 from g2s_plugins.outputs.common import edge_list, final_graph, number, roots_of, terminal_ids, tree_parents, vector
 from g2s_plugins.outputs.files import atomic_write
 from g2s_plugins.outputs.json_text import dumps_indented
+from g2s_plugins.outputs.writers import collector_paused
 
 SCHEMA_VERSION = 3
 STRUCTURE_FILE = "structure.json"
@@ -58,30 +56,10 @@ _TIMING_WORDS = ("seconds", "time")
 
 def write(result: RunResult, outdir: Path) -> list[Path]:
     """Write ``structure.json`` and ``run.json`` into ``outdir``."""
-    with _collector_paused():
+    with collector_paused():  # also when called directly, not as the plugin (benchmarks/structure_write.py)
         structure = atomic_write(outdir / STRUCTURE_FILE, dumps(structure_document(result)))
     run = atomic_write(outdir / RUN_FILE, dumps(run_document(result)))
     return [structure, run]
-
-
-@contextmanager
-def _collector_paused() -> Iterator[None]:
-    """CPython's cycle collector off while the document is built and written, then back as it was.
-
-    The document of a big level is about a million new lists, dicts and
-    strings, none in a cycle; each full collection they set off walks every
-    object of the run as well (its graphs with their attribute dicts), which
-    doubled the CPU time of building the document on the 100k-polygon level
-    (docs/performance.md). Nothing collectable is lost: the collector runs
-    again as soon as it is back on.
-    """
-    enabled = gc.isenabled()
-    gc.disable()
-    try:
-        yield
-    finally:
-        if enabled:
-            gc.enable()
 
 
 def dumps(document: dict[str, Any]) -> bytes:
@@ -270,26 +248,29 @@ def _plain(value: Any) -> Any:
         return number(value)
     if kind is int or kind is str or kind is bool or value is None:
         return value
-    if isinstance(value, str):
-        return value
-    if isinstance(value, (bool, np.bool_)):
-        return bool(value)
-    if isinstance(value, (int, np.integer)):
-        return int(value)
-    if isinstance(value, (float, np.floating)):
-        return number(value)
+    if kind is not dict and kind is not tuple and kind is not list:  # so are the containers (the edges' portals)
+        if isinstance(value, str):
+            return value
+        if isinstance(value, (bool, np.bool_)):
+            return bool(value)
+        if isinstance(value, (int, np.integer)):
+            return int(value)
+        if isinstance(value, (float, np.floating)):
+            return number(value)
+        if isinstance(value, (set, frozenset)):
+            try:
+                value = sorted(value)
+            except TypeError:
+                return _SKIP
+        elif isinstance(value, np.ndarray):
+            value = value.tolist()
+        elif not isinstance(value, (dict, list, tuple)):
+            return _SKIP
     if isinstance(value, dict):
         items = {str(k): _plain(v) for k, v in value.items()}
         return {k: v for k, v in items.items() if v is not _SKIP}
-    if isinstance(value, (set, frozenset)):
-        try:
-            value = sorted(value)
-        except TypeError:
-            return _SKIP
-    if isinstance(value, (list, tuple, np.ndarray)):
-        items = [_plain(v) for v in (value.tolist() if isinstance(value, np.ndarray) else value)]
-        return _SKIP if any(i is _SKIP for i in items) else items
-    return _SKIP
+    items = [_plain(v) for v in value]
+    return _SKIP if any(i is _SKIP for i in items) else items
 
 
 def _extra(attrs: dict[str, Any], known: tuple[str, ...]) -> dict[str, Any]:

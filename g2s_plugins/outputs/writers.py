@@ -3,12 +3,15 @@
 Each writer is a small object with the plugin's ``NAME`` (the format),
 ``FILES`` and summary; its module is imported when it first writes, because
 plotly and matplotlib take a while to import and most commands never write
-those formats.
+those formats. Each writes with CPython's cyclic collector paused (:func:`collector_paused`).
 """
 
 from __future__ import annotations
 
+import gc
 import importlib
+from collections.abc import Iterator
+from contextlib import contextmanager
 from pathlib import Path
 
 from g2s_core.model import RunResult
@@ -26,10 +29,30 @@ class LazyWriter:
 
     @hookimpl
     def g2s_write_output(self, result: RunResult, folder: Path) -> list[Path]:
-        return importlib.import_module(self.module).write(result, folder)
+        with collector_paused():
+            return importlib.import_module(self.module).write(result, folder)
 
     def __repr__(self) -> str:
         return f"LazyWriter({self.NAME!r}, {self.module})"
+
+
+@contextmanager
+def collector_paused() -> Iterator[None]:
+    """CPython's cyclic collector off in the block, then back as it was.
+
+    A writer makes hundreds of thousands of short-lived objects (tubes, XML elements, records), none in a
+    cycle, and each full collection that their allocations set off walks every object of the run as well
+    (its graphs with their attribute dicts): on the 100k-polygon level, half of the GraphML writer's time
+    and a sixth of the GLB writer's (docs/performance.md). Nothing collectable is lost: the collector runs
+    again as soon as it is back on.
+    """
+    enabled = gc.isenabled()
+    gc.disable()
+    try:
+        yield
+    finally:
+        if enabled:
+            gc.enable()
 
 
 json = LazyWriter("json", "structure_json", ("structure.json", "run.json"),
