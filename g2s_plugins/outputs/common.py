@@ -34,6 +34,8 @@ def vector(value: Any) -> list[float | None] | None:
     """A 3-vector as a list of rounded floats (``None`` when absent)."""
     if value is None:
         return None
+    if type(value) is tuple and all(type(v) is float for v in value):  # a node's position: no array needed
+        return [number(v) for v in value]
     return [number(v) for v in np.asarray(value, dtype=np.float64).reshape(-1).tolist()]
 
 

@@ -85,15 +85,14 @@ def _text(value: Any, newline: str) -> str:
 def _dict_text(value: dict, newline: str) -> str:
     if not value:
         return "{}"
-    try:
-        keys = sorted(value)
-    except TypeError:  # keys of several types: the standard library says which
-        return _standard(value, newline)
+    layout = _LAYOUTS.get(tuple(value))
+    if layout is None:
+        layout = _layout(value)
+        if layout is None:  # keys that are not all str: the standard library writes them (or says why not)
+            return _standard(value, newline)
     inner = newline + " "
     items = []
-    for key in keys:
-        if type(key) is not str:
-            return _standard(value, newline)
+    for key, key_text in layout:
         # the scalars of the records inline, without a call each (most of the values of structure.json)
         item = value[key]
         kind = type(item)
@@ -107,8 +106,28 @@ def _dict_text(value: dict, newline: str) -> str:
             text = "null"
         else:
             text = _text(item, inner)
-        items.append(_key_text(key) + text)
+        items.append(key_text + text)
     return "{" + inner + ("," + inner).join(items) + newline + "}"
+
+
+_LAYOUTS: dict[tuple, tuple[tuple[str, str], ...]] = {}
+"""The keys of a dict (in its own order) -> its keys sorted, each with its text and the ``": "`` after it:
+the records of a document repeat a few key sets many times, which are sorted and escaped once."""
+
+
+def _layout(value: dict) -> tuple[tuple[str, str], ...] | None:
+    """``value``'s keys sorted with their texts (remembered for the next dict with the same keys);
+    ``None`` when a key is not a ``str``."""
+    try:
+        keys = sorted(value)
+    except TypeError:  # keys of several types
+        return None
+    if any(type(key) is not str for key in keys):
+        return None
+    layout = tuple((key, encode_basestring(key) + ": ") for key in keys)
+    if len(layout) <= 64 and len(_LAYOUTS) < 4096:  # bounded: records have few keys, plugins' own names too
+        _LAYOUTS[tuple(value)] = layout
+    return layout
 
 
 def _list_text(value: list | tuple, newline: str) -> str:
@@ -123,16 +142,3 @@ def _list_text(value: list | tuple, newline: str) -> str:
     else:
         items = [_text(item, inner) for item in value]
     return "[" + inner + ("," + inner).join(items) + newline + "]"
-
-
-_KEY_TEXTS: dict[str, str] = {}
-"""Each key's text with the ``": "`` after it: the records of a document repeat a few keys many times."""
-
-
-def _key_text(key: str) -> str:
-    text = _KEY_TEXTS.get(key)
-    if text is None:
-        text = encode_basestring(key) + ": "
-        if len(_KEY_TEXTS) < 4096:  # bounded: plugins' own attribute names stay few, but need not
-            _KEY_TEXTS[key] = text
-    return text
