@@ -286,10 +286,8 @@ def named_files(config: RunConfig) -> list[Path]:
     pending: list[Any] = [entry.params for entry in entries]
     while pending:
         value = pending.pop()
-        if isinstance(value, dict):
-            pending.extend(value.values())
-        elif isinstance(value, list):
-            pending.extend(value)
+        if isinstance(value, (dict, list)):
+            pending.extend(value.values() if isinstance(value, dict) else value)
         elif isinstance(value, str) and _is_file(Path(value)):
             found.append(Path(value))
     return found

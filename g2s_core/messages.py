@@ -19,17 +19,11 @@ _TYPE_NAMES = {int: "an integer", float: "a number", bool: "true or false", str:
 
 def show(value: Any) -> str:
     """A value as the user wrote it in YAML."""
-    if value is None:
-        return "null"
-    if isinstance(value, bool):
-        return "true" if value else "false"
-    if isinstance(value, str):
-        return repr(value)
-    if isinstance(value, dict):
-        return "a mapping"
-    if isinstance(value, list):
-        return "a list"
-    return str(value)
+    if value is None or isinstance(value, bool):
+        return {None: "null", True: "true", False: "false"}[value]
+    if isinstance(value, (dict, list)):
+        return "a mapping" if isinstance(value, dict) else "a list"
+    return repr(value) if isinstance(value, str) else str(value)
 
 
 def _plural(phrase: str) -> str:
@@ -62,23 +56,15 @@ def _describe_type(annotation: Any) -> str:
     return getattr(annotation, "__name__", str(annotation))
 
 
-_BOUNDS = (
-    (annotated_types.Ge, "ge", ">="),
-    (annotated_types.Gt, "gt", ">"),
-    (annotated_types.Le, "le", "<="),
-    (annotated_types.Lt, "lt", "<"),
-)
+_BOUNDS = ((annotated_types.Ge, "ge", ">="), (annotated_types.Gt, "gt", ">"), (annotated_types.Le, "le", "<="),
+           (annotated_types.Lt, "lt", "<"))
 
 
 def describe_field(info: FieldInfo) -> str:
     """What a field accepts, in words: ``an integer >= 1``."""
-    limits = []
-    for bound in info.metadata:
-        for cls, attribute, op in _BOUNDS:
-            if isinstance(bound, cls):
-                limits.append(f"{op} {getattr(bound, attribute)}")
-        if isinstance(bound, annotated_types.MinLen):
-            limits.append(f"with at least {bound.min_length} items")
+    limits = [f"{op} {getattr(bound, attribute)}" for bound in info.metadata for cls, attribute, op in _BOUNDS
+              if isinstance(bound, cls)]
+    limits += [f"with at least {bound.min_length} items" for bound in info.metadata if isinstance(bound, annotated_types.MinLen)]
     return " ".join([_describe_type(info.annotation), " and ".join(limits)]).strip()
 
 
