@@ -153,7 +153,7 @@ def generate_level(spec: str, config: MeshConfig | None = None, registry: Regist
     names = [name for name, _ in query]
     if len(params := dict(query)) < len(names):  # dict() would keep the last value silently
         raise ConfigError(f"{spec}: {next(name for name in names if names.count(name) > 1)} is given twice")
-    params = registry.validate_params(info, params, key=f"{SAMPLE_PREFIX}{info.name}")
+    params = registry.validate_params(info, params, key=f"{SAMPLE_PREFIX}{info.name}", text=True)
     return prepare_mesh(registry.call(info, params=params), config or MeshConfig(), source=spec)
 
 

@@ -8,7 +8,7 @@ once reads the same in errors and in ``g2s plugins``.
 
 from __future__ import annotations
 
-from typing import Any, Literal, get_args, get_origin
+from typing import Annotated, Any, Literal, get_args, get_origin
 
 import annotated_types
 from pydantic import BaseModel, ValidationError
@@ -38,6 +38,8 @@ def _describe_type(annotation: Any) -> str:
     args = get_args(annotation)
     if annotation in _TYPE_NAMES:
         return _TYPE_NAMES[annotation]
+    if origin is Annotated:  # an item's own rules, e.g. Strict(False) on a tuple inside a list
+        return _describe_type(args[0])
     if origin is Literal:
         return "one of " + ", ".join(show(a) for a in args)
     if origin in (list, tuple, set, frozenset):

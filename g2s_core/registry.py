@@ -201,10 +201,14 @@ class Registry:
         where = f"{key}: " if key else ""
         raise ConfigError(f"{where}{title} plugin {name!r} is not installed (installed: {installed}{also})")
 
-    def validate_params(self, info: PluginInfo, params: dict[str, Any], key: str) -> PluginParams:
-        """The plugin's parameter model built from ``params``; one-line error at ``key``."""
+    def validate_params(self, info: PluginInfo, params: dict[str, Any], key: str, text: bool = False) -> PluginParams:
+        """The plugin's parameter model built from ``params``; one-line error at ``key``.
+
+        Values are taken as written (strict: ``'7'`` is no number); with ``text`` they are strings to
+        convert, as a ``sample:`` query's are (``'7'`` is 7, ``'abc'`` and ``'true'`` are no integers).
+        """
         try:
-            return info.params_model.model_validate(params)
+            return info.params_model.model_validate(params, strict=False if text else None)
         except ValidationError as exc:
             raise ConfigError(describe_validation_error(exc, info.params_model, prefix=key)) from None
 
