@@ -21,7 +21,7 @@ def describe_damage(path: Path) -> str | None:
     """Why the STL, GLB or glTF file ``path`` holds no mesh (it ends before or after its header says, or its
     JSON is broken), in words; ``None`` when none of this is found (or the file cannot be read at all)."""
     try:
-        data = path.read_bytes()  # read whole already by the reader that failed
+        data = path.read_bytes()  # asked only once reading failed: a good file is never read twice
     except OSError:  # the reader's own error says it better
         return None
     suffix, size = path.suffix.lower(), len(data)
