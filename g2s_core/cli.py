@@ -253,13 +253,25 @@ def _progress(errors: Console, quiet: bool) -> Iterator[Callable[[str], None]]:
 def _summary(result: RunResult, outdir: Path, formats: Sequence[str], written: Sequence[Path]) -> dict[str, Any]:
     """The --json summary."""
     stage, graph = final_graph(result)
-    final = {"stage": stage, "nodes": None if graph is None else graph.number_of_nodes(),
-             "edges": None if graph is None else graph.number_of_edges(), "roots": roots_of(graph),
-             "terminals": None if result.terminals is None else len(result.terminals.without_waypoints),
-             "analysis": list(result.analysis)}
-    return {"mesh": result.mesh_name, "mesh_sha256": result.mesh_sha256, "outdir": str(outdir), "formats": list(formats),
-            "files": [str(p) for p in written], "stages": [vars(s) for s in result.stages],
-            "total_seconds": result.total_seconds, "final": final, "metrics": result.metrics, "warnings": result.warnings}
+    return {
+        "mesh": result.mesh_name,
+        "mesh_sha256": result.mesh_sha256,
+        "outdir": str(outdir),
+        "formats": list(formats),
+        "files": [str(p) for p in written],
+        "stages": [vars(s) for s in result.stages],
+        "total_seconds": result.total_seconds,
+        "final": {
+            "stage": stage,
+            "nodes": None if graph is None else graph.number_of_nodes(),
+            "edges": None if graph is None else graph.number_of_edges(),
+            "roots": roots_of(graph),
+            "terminals": None if result.terminals is None else len(result.terminals.without_waypoints),
+            "analysis": list(result.analysis),
+        },
+        "metrics": result.metrics,
+        "warnings": result.warnings,
+    }
 
 
 def stage_table(result: RunResult, title: str = "") -> Table:

@@ -29,8 +29,13 @@ MAX_TEXT_BYTES = 256 * 1024 * 1024
 MAX_NESTING = 100
 """Deepest nesting of mappings and lists a text input may have (g2s's own files use fewer than 10)."""
 
-_KINDS = ((stat.S_ISDIR, "a folder"), (stat.S_ISFIFO, "a FIFO"), (stat.S_ISCHR, "a character device"),
-          (stat.S_ISBLK, "a block device"), (stat.S_ISSOCK, "a socket"))
+_KINDS = (
+    (stat.S_ISDIR, "a folder"),
+    (stat.S_ISFIFO, "a FIFO"),
+    (stat.S_ISCHR, "a character device"),
+    (stat.S_ISBLK, "a block device"),
+    (stat.S_ISSOCK, "a socket"),
+)
 
 
 def read_text(path: str | Path, what: str, error: type[G2SError] = G2SError) -> str:
@@ -111,7 +116,8 @@ def parse_nested(text: str, parse: Callable[[str], Any], source: str, error: typ
     try:
         data = parse(text)
     except RecursionError:
-        data, depth = None, MAX_NESTING + 1
+        data = None
+        depth = MAX_NESTING + 1
     except json.JSONDecodeError:
         raise
     except (ValueError, OverflowError) as exc:
