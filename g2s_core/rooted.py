@@ -44,8 +44,10 @@ def root_ranks(forest: nx.Graph, scores: Mapping[int, float], centre: np.ndarray
     missing = [n for n in nodes if n not in scores]
     if missing:
         raise ValueError(f"the root selector gave no score for nodes {missing[:5]}")
-    positions = np.array([forest.nodes[n]["pos"] for n in nodes], dtype=np.float64).reshape(-1, 3)
-    score = tie_values([scores[n] for n in nodes])
+    data = dict(forest.nodes(data=True))
+    positions = np.fromiter(itertools.chain.from_iterable(data[n]["pos"] for n in nodes), dtype=np.float64).reshape(-1, 3)
+    distinct, inverse = np.unique(np.array([scores[n] for n in nodes], dtype=np.float64), return_inverse=True)
+    score = tie_values(distinct)[inverse]  # each distinct score rounded once
     distance = tie_values(np.linalg.norm(positions - centre, axis=1))
     return np.argsort(np.lexsort((np.arange(len(nodes)), distance, -score)))
 
