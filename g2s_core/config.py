@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import copy
 import os
+import re
 from collections.abc import Mapping, Sequence
 from pathlib import Path
 from typing import Any, Literal
@@ -142,6 +143,11 @@ class _Loader(yaml.SafeLoader):
             raise yaml.scanner.ScannerError(
                 None, None, f"nested deeper than {MAX_NESTING} levels of mappings and lists", self.get_mark()
             )
+
+
+# PyYAML follows YAML 1.1, which reads 1e-3 as text; YAML 1.2, JSON and every reader of a config take it as a number
+_Loader.add_implicit_resolver(
+    "tag:yaml.org,2002:float", re.compile(r"^[-+]?(?:[0-9][0-9_]*(?:\.[0-9_]*)?|\.[0-9_]+)[eE][-+]?[0-9]+$"), list("-+.0123456789"))
 
 
 def _parse_yaml(text: str, source: str) -> Any:

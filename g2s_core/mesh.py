@@ -16,6 +16,7 @@ from g2s_core.config import MeshConfig
 from g2s_core.errors import ConfigError, MeshError
 from g2s_core.input_files import check_regular_file
 from g2s_core.lazy import lazy_module
+from g2s_core.mesh_damage import describe_damage
 from g2s_core.registry import Registry, installed
 
 # loaded with the first mesh read: the CLI and the batch command import this module for its names
@@ -85,7 +86,9 @@ def load_mesh(path: str | Path, config: MeshConfig | None = None) -> tuple[trime
                 else (path,)
             loaded = _read_single_mesh(path) or trimesh.load(*file, force="mesh", process=False)
     except Exception as exc:  # trimesh raises many exception types for bad files
-        raise MeshError(f"{path}: cannot read mesh ({type(exc).__name__}: {exc})") from None
+        raise MeshError(f"{path}: {describe_damage(path) or f'cannot read mesh ({type(exc).__name__}: {exc})'}") from None
+    if not len(getattr(loaded, "faces", ())) and (damage := describe_damage(path)):  # a cut binary STL reads as empty
+        raise MeshError(f"{path}: {damage}")
     mesh, cleaning = prepare_and_clean(loaded, config, source=str(path))
     info = MeshInfo(path.name, file_sha256(path), len(mesh.vertices), len(mesh.faces), cleaning)
     return mesh, info
@@ -153,7 +156,7 @@ def generate_level(spec: str, config: MeshConfig | None = None, registry: Regist
     names = [name for name, _ in query]
     if len(params := dict(query)) < len(names):  # dict() would keep the last value silently
         raise ConfigError(f"{spec}: {next(name for name in names if names.count(name) > 1)} is given twice")
-    params = registry.validate_params(info, params, key=f"{SAMPLE_PREFIX}{info.name}")
+    params = registry.validate_params(info, params, key=f"{SAMPLE_PREFIX}{info.name}", text=True)
     return prepare_mesh(registry.call(info, params=params), config or MeshConfig(), source=spec)
 
 

@@ -8,7 +8,7 @@ once reads the same in errors and in ``g2s plugins``.
 
 from __future__ import annotations
 
-from typing import Any, Literal, get_args, get_origin
+from typing import Annotated, Any, Literal, get_args, get_origin
 
 import annotated_types
 from pydantic import BaseModel, ValidationError
@@ -44,6 +44,8 @@ def _describe_type(annotation: Any) -> str:
     args = get_args(annotation)
     if annotation in _TYPE_NAMES:
         return _TYPE_NAMES[annotation]
+    if origin is Annotated:  # an item's own rules, e.g. Strict(False) on a tuple inside a list
+        return _describe_type(args[0])
     if origin is Literal:
         return "one of " + ", ".join(show(a) for a in args)
     if origin in (list, tuple, set, frozenset):
@@ -72,13 +74,9 @@ _BOUNDS = (
 
 def describe_field(info: FieldInfo) -> str:
     """What a field accepts, in words: ``an integer >= 1``."""
-    limits = []
-    for bound in info.metadata:
-        for cls, attribute, op in _BOUNDS:
-            if isinstance(bound, cls):
-                limits.append(f"{op} {getattr(bound, attribute)}")
-        if isinstance(bound, annotated_types.MinLen):
-            limits.append(f"with at least {bound.min_length} items")
+    limits = [f"{op} {getattr(bound, attribute)}" for bound in info.metadata for cls, attribute, op in _BOUNDS
+              if isinstance(bound, cls)]
+    limits += [f"with at least {bound.min_length} items" for bound in info.metadata if isinstance(bound, annotated_types.MinLen)]
     return " ".join([_describe_type(info.annotation), " and ".join(limits)]).strip()
 
 

@@ -249,9 +249,10 @@ def steiner_forest(
         context.warn(disconnected_warning(graph, areas, sum(map(len, groups.values())), context.agent))
     nodes, edges = [], []
     for index, group in sorted(groups.items()):
-        # a lone terminal is a tree of its own; a subgraph view is slow to iterate: with a single group of
-        # terminals the solver gets the whole graph (its other components are unreachable)
-        tree = nx.empty_graph(group) if len(group) == 1 else solve(graph if len(groups) == 1 else graph.subgraph(components[index]), group)
+        # a subgraph view is slow to iterate: with a single group of terminals
+        # the solver gets the whole graph (its other components are unreachable)
+        part = graph if len(groups) == 1 else graph.subgraph(components[index])
+        tree = solve(part, group) if len(group) > 1 else nx.empty_graph(group)  # a lone terminal: its own tree
         nodes += sorted(tree.nodes)
         edges += sorted((u, v) if u <= v else (v, u) for u, v in tree.edges)
     # the groups' nodes and edges are disjoint: all nodes first then all edges make the same graph as group by group

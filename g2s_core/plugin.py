@@ -31,6 +31,14 @@ class PluginParams(BaseModel):
     and produces the ``g2s plugins`` help. Unknown keys are rejected, and so
     are NaN and infinite numbers (a plugin that means to accept them sets
     ``allow_inf_nan=True`` on that field and says so in its description).
+
+    Values are taken as written, as in the config's own sections: ``true``
+    and ``'7'`` are not numbers, ``7`` is not a string (an integer is a
+    number). YAML has no tuples, so a tuple field says ``Field(strict=False)``
+    to take a list; its items stay strict (a tuple inside a list:
+    ``list[Annotated[tuple[float, float], Strict(False)]]``). The ``sample:``
+    query's values are text, read by pydantic's conversions from text
+    (``rooms=5``; ``rooms=abc`` and ``rooms=true`` are refused).
     """
 
-    model_config = ConfigDict(extra="forbid", frozen=True, allow_inf_nan=False)
+    model_config = ConfigDict(extra="forbid", frozen=True, allow_inf_nan=False, strict=True)

@@ -100,16 +100,9 @@ class Registry:
     def from_entry_points(cls, group: str = ENTRY_POINT_GROUP) -> Registry:
         """The entry points of ``group`` (sorted by package, then name), each loaded when its stage is first asked for."""
         registry = cls()
-        seen: set[tuple[str, str, str]] = set()
-        entries = sorted(
-            importlib.metadata.entry_points(group=group),
-            key=lambda ep: (ep.dist.name if ep.dist else "", ep.name),
-        )
-        for order, ep in enumerate(entries):
-            package = ep.dist.name if ep.dist else "?"
-            if (package, ep.name, ep.value) in seen:
-                continue
-            seen.add((package, ep.name, ep.value))
+        entries = sorted(importlib.metadata.entry_points(group=group), key=lambda ep: (ep.dist.name if ep.dist else "", ep.name))
+        unique = {(ep.dist.name if ep.dist else "?", ep.name, ep.value): ep for ep in entries}  # a package found twice
+        for order, ((package, _, _), ep) in enumerate(unique.items()):
             stage = ep.name.split(".", 1)[0]
             registry._unloaded.setdefault(stage if stage in BY_KEY else None, []).append((order, package, ep))
         return registry
@@ -208,10 +201,14 @@ class Registry:
         where = f"{key}: " if key else ""
         raise ConfigError(f"{where}{title} plugin {name!r} is not installed (installed: {installed}{also})")
 
-    def validate_params(self, info: PluginInfo, params: dict[str, Any], key: str) -> PluginParams:
-        """The plugin's parameter model built from ``params``; one-line error at ``key``."""
+    def validate_params(self, info: PluginInfo, params: dict[str, Any], key: str, text: bool = False) -> PluginParams:
+        """The plugin's parameter model built from ``params``; one-line error at ``key``.
+
+        Values are taken as written (strict: ``'7'`` is no number); with ``text`` they are strings to
+        convert, as a ``sample:`` query's are (``'7'`` is 7, ``'abc'`` and ``'true'`` are no integers).
+        """
         try:
-            return info.params_model.model_validate(params)
+            return info.params_model.model_validate(params, strict=False if text else None)
         except ValidationError as exc:
             raise ConfigError(describe_validation_error(exc, info.params_model, prefix=key)) from None
 

@@ -27,9 +27,7 @@ def roots_of(graph: nx.Graph | None) -> list[int]:
     if graph is None or not graph.is_directed():
         return []
     roots = graph.graph.get("roots")
-    if roots is None:
-        roots = [n for n in graph.nodes if graph.in_degree(n) == 0]
-    return [int(r) for r in roots]
+    return [int(r) for r in (roots if roots is not None else (n for n, degree in graph.in_degree if degree == 0))]
 
 
 def stage_rows(stages: Sequence[StageStats]) -> list[tuple[str, str, str, str, str]]:
@@ -45,8 +43,7 @@ def stage_rows(stages: Sequence[StageStats]) -> list[tuple[str, str, str, str, s
             continue
         nodes = stats.terminals if stage.key == "terminals" else stats.nodes
         rows.append((stage.step, stage.label, milliseconds(stats.seconds), _count(nodes), _count(stats.edges)))
-    total = sum(s.seconds for s in stages)
-    rows.append(("total", "", milliseconds(total), "", ""))
+    rows.append(("total", "", milliseconds(sum(s.seconds for s in stages)), "", ""))
     return rows
 
 

@@ -235,6 +235,31 @@ def test_a_setting_given_twice_is_refused_not_the_last_one_kept(tmp_path):
     assert not (tmp_path / "out").exists()
 
 
+def test_ctrl_c_while_the_console_script_loads_is_one_line(tmp_path):
+    """Ctrl-C in the first half second of `g2s run` (pydantic, pluggy, rich and YAML loading) printed a traceback.
+    The console script is signalled as soon as it has imported pydantic, which the command line needs: its other
+    imports are still running (Python's import-time report, on stderr, says when each import ends)."""
+    import signal
+
+    script = Path(sys.executable).with_name("g2s")
+    proc = subprocess.Popen([script, "run", "graph_only", "sample:straight_corridor", "-o", str(tmp_path / "out")],
+                            stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True,
+                            env={**os.environ, "PYTHONPROFILEIMPORTTIME": "1"},
+                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))  # as from a terminal
+    imported = []  # "import time: self | cumulative | <indent>module" once each import ends
+    for line in proc.stderr:
+        imported.append(line.rpartition("|")[2].strip() if line.startswith("import time:") else line)
+        if imported[-1] == "pydantic":
+            proc.send_signal(signal.SIGINT)
+            break
+    rest = proc.stderr.read()
+    proc.wait(timeout=60)
+    assert "g2s_core.entry" in imported and "g2s_core.cli" not in imported  # signalled while the command line loaded
+    said = [line.strip() for line in rest.splitlines() if line.strip() and not line.startswith("import time:")]
+    assert (proc.returncode, said) == (130, ["g2s: interrupted"]), rest
+    assert not (tmp_path / "out").exists()
+
+
 def test_ctrl_c_while_trimesh_imports_is_not_lost(tmp_path, monkeypatch, capsys, request):
     """trimesh's imports catch BaseException (its optional dependencies), a KeyboardInterrupt among them: a Ctrl-C
     in the first second of a run was lost and the run wrote its results. It is held until the import is done."""

@@ -155,6 +155,21 @@ def test_set_key_merges_mappings_indexes_lists_and_leaves_the_input_alone():
     assert parse_assignment("stop_after=") == ("stop_after", None)
 
 
+@pytest.mark.parametrize(("text", "value"), [
+    ("1e-3", 0.001), ("2E3", 2000.0), ("-1.5e+2", -150.0), (".5e1", 5.0), ("1_0e1", 100.0),  # YAML 1.2 floats
+    ("1e", "1e"), ("e3", "e3"), ("1e3x", "1e3x"), ("12", 12), ("0.25", 0.25),  # not exponent floats: as before
+])
+def test_numbers_with_an_exponent_are_numbers_in_configs_and_set(text, value, tmp_path):
+    from g2s_core.config import parse_assignment, resolve_config
+
+    assert parse_assignment(f"terminals.params.radius={text}") == ("terminals.params.radius", value)
+    config_file = tmp_path / "c.yaml"
+    config_file.write_text(f"extends: map_analysis\nmesh: {{scale: 1e-2}}\nterminals: {{params: {{radius: {text}}}}}\n")
+    if isinstance(value, float) and value > 0:
+        config, _ = resolve_config(str(config_file), {})
+        assert config.mesh.scale == 0.01 and config.terminals.params["radius"] == value
+
+
 def test_set_replaces_a_stage_section_naming_another_plugin_as_extends_does():
     from g2s_core.config import resolve_config
 

@@ -29,7 +29,7 @@ NAME = "traffic"
 class Params(PluginParams):
     """Radii and the reference flow's sample."""
 
-    radii: list[float] = Field(list(evaluation.RADII), min_length=1,
+    radii: list[float] = Field(list(evaluation.RADII), min_length=1, strict=False,
                                description="coverage radii, metres, each > 0 (each gives area_within_<r>m)")
     off_distance: float = Field(5.0, gt=0, description="traffic_off counts the flow farther than this from the structure, metres")
     reference_sources: int = Field(evaluation.REFERENCE_SOURCES, ge=1,

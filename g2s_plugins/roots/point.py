@@ -22,7 +22,7 @@ class Params(PluginParams):
     """The point the roots should be near."""
 
     point: tuple[float, float, float] = Field(
-        (0.0, 0.0, 0.0), description="[x, y, z] in metres, mesh frame (default: the origin)"
+        (0.0, 0.0, 0.0), strict=False, description="[x, y, z] in metres, mesh frame (default: the origin)"
     )
 
 

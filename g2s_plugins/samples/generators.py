@@ -81,13 +81,15 @@ def _indent(line: str) -> int:
 
 def _params_model(name: str, factory: Callable[..., SampleLevel]) -> type[PluginParams]:
     """The factory's keyword arguments as fields: type and bounds from its signature,
-    description from its ``Args:`` section (tests check that every argument has one)."""
+    description from its ``Args:`` section (tests check that every argument has one);
+    a tuple also as a list, as for every plugin's tuple parameters (:class:`PluginParams`)."""
     hints = typing.get_type_hints(factory, include_extras=True)
     described = documented_args(factory)
     fields = {
         parameter.name: (
-            hints.get(parameter.name, typing.Any),
-            Field(parameter.default, description=described.get(parameter.name, "")),
+            hint := hints.get(parameter.name, typing.Any),
+            Field(parameter.default, description=described.get(parameter.name, ""),
+                  strict=False if typing.get_origin(hint) is tuple else None),
         )
         for parameter in inspect.signature(factory).parameters.values()
         if parameter.default is not inspect.Parameter.empty

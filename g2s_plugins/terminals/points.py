@@ -23,11 +23,11 @@ from __future__ import annotations
 import json
 import re
 from pathlib import Path
-from typing import Any
+from typing import Annotated, Any
 
 import networkx as nx
 import numpy as np
-from pydantic import Field, model_validator
+from pydantic import Field, Strict, model_validator
 from pydantic_core import PydanticCustomError
 from scipy.spatial import cKDTree
 
@@ -45,8 +45,8 @@ _DEFAULT_NORMAL = (0.0, 1.0, 0.0)
 class Params(PluginParams):
     """Where the points come from (exactly one of points, file) and how they are joined."""
 
-    points: list[tuple[float, float, float]] | None = Field(
-        None, min_length=1, description="points [x, y, z] in metres, mesh frame"
+    points: list[Annotated[tuple[float, float, float], Strict(False)]] | None = Field(
+        None, min_length=1, strict=False, description="points [x, y, z] in metres, mesh frame"
     )
     file: str | None = Field(None, description="JSON, CSV or text file with one point [x, y, z] per entry/line")
     connect: int = Field(1, ge=1, le=32, description="number of nearest graph nodes each point is joined to")

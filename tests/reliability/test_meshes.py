@@ -80,3 +80,83 @@ def test_mesh_that_is_not_a_regular_file(make, says, tmp_path, quick_config, cap
     assert tree(out) == []
     with pytest.raises(MeshError, match=says):
         load_mesh(mesh)
+
+
+# --- damaged STL, GLB and glTF files: what is wrong, in words (trimesh's own errors misled) ------------------
+
+
+def _floor(tmp_path: Path, suffix: str) -> Path:
+    """The 20 x 20 m floor of FLOOR_OBJ (two triangles) written by trimesh as ``floor<suffix>``."""
+    import trimesh
+
+    path = tmp_path / f"floor{suffix}"
+    trimesh.Trimesh([[-10, 0, -10], [10, 0, -10], [10, 0, 10], [-10, 0, 10]], [[0, 3, 2], [0, 2, 1]]).export(path)
+    return path
+
+
+def _damaged(path: Path, name: str, data: bytes) -> Path:
+    damaged = path.with_name(name)
+    damaged.write_bytes(data)
+    return damaged
+
+
+@pytest.mark.parametrize("suffix", [".stl", ".glb"])
+def test_the_intact_files_the_damage_tests_cut_are_read(suffix, tmp_path, quick_config, capsys):
+    outcome = run_g2s(capsys, "run", quick_config, _floor(tmp_path, suffix), "-o", tmp_path / "out", "-q")
+    assert outcome.code == 0, outcome.stderr
+
+
+def test_a_binary_stl_cut_short_says_how_many_triangles_it_holds(tmp_path, quick_config, capsys):
+    # was "the mesh is empty (no triangles)": trimesh reads a binary STL of the wrong size as ASCII STL
+    data = _floor(tmp_path, ".stl").read_bytes()
+    assert len(data) == 84 + 2 * 50
+    cut = _damaged(tmp_path, "trunc.stl", data[:84 + 50 + 20])
+    outcome = run_g2s(capsys, "run", quick_config, cut, "-o", tmp_path / "out")
+    assert_clean_error(outcome, f"{cut}: binary STL ends early: the header announces 2 triangles, the file holds 1")
+    assert tree(tmp_path / "out") == []
+
+
+def test_a_binary_stl_with_bytes_past_its_triangles_says_so(tmp_path, quick_config, capsys):
+    longer = _damaged(tmp_path, "long.stl", _floor(tmp_path, ".stl").read_bytes() + bytes(30))
+    outcome = run_g2s(capsys, "run", quick_config, longer, "-o", tmp_path / "out")
+    assert_clean_error(outcome, f"{longer}: binary STL has 30 bytes more than the 2 triangles its header announces")
+
+
+def test_a_binary_stl_whose_header_starts_with_solid_is_still_binary(tmp_path, quick_config, capsys):
+    # some exporters write "solid" in a binary STL's free header, which is how ASCII STL begins
+    data = _floor(tmp_path, ".stl").read_bytes()
+    data = b"solid exported".ljust(80, b" ") + data[80:]
+    whole = _damaged(tmp_path, "solid.stl", data)
+    assert run_g2s(capsys, "run", quick_config, whole, "-o", tmp_path / "whole", "-q").code == 0
+    cut = _damaged(tmp_path, "solid_cut.stl", data[:-10])
+    outcome = run_g2s(capsys, "run", quick_config, cut, "-o", tmp_path / "out")
+    assert_clean_error(outcome, f"{cut}: binary STL ends early: the header announces 2 triangles, the file holds 1")
+
+
+def test_an_empty_ascii_stl_is_still_an_empty_mesh(tmp_path, quick_config, capsys):
+    empty = _damaged(tmp_path, "empty.stl", b"solid nothing\nendsolid nothing\n")
+    outcome = run_g2s(capsys, "run", quick_config, empty, "-o", tmp_path / "out")
+    assert_clean_error(outcome, f"{empty}: the mesh is empty (no triangles)")
+
+
+def test_a_glb_cut_short_says_how_long_it_should_be(tmp_path, quick_config, capsys):
+    # was "cannot read mesh (JSONDecodeError: Unterminated string ...)": the JSON chunk was cut
+    data = _floor(tmp_path, ".glb").read_bytes()
+    cut = _damaged(tmp_path, "trunc.glb", data[:len(data) // 2])
+    outcome = run_g2s(capsys, "run", quick_config, cut, "-o", tmp_path / "out")
+    assert_clean_error(outcome, f"{cut}: the GLB file ends early (its header announces {len(data)} bytes, "
+                                f"the file has {len(data) // 2})")
+    assert tree(tmp_path / "out") == []
+
+
+@pytest.mark.parametrize("data, says", [
+    (b'{"asset": {"version": "2.0"}, "meshes": [', "not valid glTF JSON (line 1, column 42: Expecting value)"),
+    (b'{"asset": {"version": "2.0"},\n "meshes": [}', "not valid glTF JSON (line 2, column 13: Expecting value)"),
+    (b'{"asset": {"version": "2.0", "generator": "caf\xe9"}}', "not valid glTF JSON (not UTF-8 text)"),
+])
+def test_gltf_whose_json_is_broken_says_where(data, says, tmp_path, quick_config, capsys):
+    # was "cannot read mesh (FileNotFoundError: model.gltf)": trimesh then looks for a zip archive
+    bad = _damaged(tmp_path, "bad.gltf", data)
+    outcome = run_g2s(capsys, "run", quick_config, bad, "-o", tmp_path / "out")
+    assert_clean_error(outcome, f"{bad}: {says}")
+    assert tree(tmp_path / "out") == []

@@ -1,15 +1,16 @@
-"""Values no setting accepts: NaN and infinities in any plugin parameter or config number,
-and out-of-range command-line options."""
+"""Values no setting accepts: NaN and infinities in any plugin parameter or config number, values of another
+type than a plugin parameter's (a bool or a quoted number for a number), and out-of-range command-line options."""
 
 from __future__ import annotations
 
-from typing import get_args
+from typing import Literal, get_args, get_origin
 
 import pytest
-from pydantic import BaseModel
+from pydantic import BaseModel, Strict
 
 from g2s_core.config import AgentConfig, MeshConfig, parse_config
 from g2s_core.errors import ConfigError
+from g2s_core.messages import show
 from g2s_core.registry import installed
 from tests.reliability.checks import CORRIDOR, assert_clean_error, run_g2s, tree
 
@@ -72,15 +73,20 @@ def test_no_config_number_accepts_non_finite_numbers(section, model):
                 parse_config({section: {field: number}}, source="my.yaml")
 
 
-@pytest.mark.parametrize("spelling", [".nan", ".NaN", "nan", ".inf", "-.inf", "'inf'"])
-def test_metric_threshold_nan_cli(spelling, tmp_path, capsys):
+@pytest.mark.parametrize("spelling, expected", [
+    (".nan", "expected a finite number, got nan"), (".NaN", "expected a finite number, got nan"),
+    (".inf", "expected a finite number, got inf"), ("-.inf", "expected a finite number, got -inf"),
+    # YAML reads these as strings, which are no numbers (they were converted before parameters were strict)
+    ("nan", "expected a number or null, got 'nan'"), ("'inf'", "expected a number or null, got 'inf'"),
+])
+def test_metric_threshold_nan_cli(spelling, expected, tmp_path, capsys):
     config = tmp_path / "nan.yaml"
     config.write_text(
         "extends: map_analysis\nterminals: {plugin: metric, params: {metric: degree, threshold: %s}}\n" % spelling
     )
     out = tmp_path / "out"
     outcome = run_g2s(capsys, "run", config, CORRIDOR, "-o", out)
-    assert_clean_error(outcome, "nan.yaml: terminals.params.threshold: expected a finite number")
+    assert_clean_error(outcome, f"nan.yaml: terminals.params.threshold: {expected}")
     assert tree(out) == []
 
 
@@ -90,6 +96,122 @@ def test_root_point_non_finite_cli(point, tmp_path, capsys):
     config.write_text("extends: map_analysis\nroots: {plugin: point, params: {point: %s}}\n" % point)
     outcome = run_g2s(capsys, "run", config, CORRIDOR, "-o", tmp_path / "out")
     assert_clean_error(outcome, "root.yaml: roots.params.point.", "expected a finite number")
+
+
+# --- values of the wrong type: plugin parameters are strict, as the config's sections -------------
+
+WRONG_TYPES = {float: [True, "7"], int: [True, "7", 7.5], str: [7, True], bool: [1, "true"]}
+"""A field's scalar type -> values that are not of it, as YAML reads them (``true``, ``'7'``, ``7``)."""
+
+
+def _scalar_type(annotation):
+    """The one scalar type of WRONG_TYPES that ``annotation`` holds (inside ``| None``, lists, tuples), else None."""
+    found = {a for a in _leaves(annotation) if a in WRONG_TYPES}
+    return found.pop() if len(found) == 1 and not any(get_origin(a) is Literal for a in _leaves(annotation)) else None
+
+
+def _leaves(annotation):
+    arguments = [a for a in get_args(annotation) if a is not Ellipsis and not isinstance(a, Strict)]
+    return [leaf for a in arguments for leaf in _leaves(a)] if arguments and get_origin(annotation) is not Literal \
+        else [annotation]
+
+
+PLUGIN_TYPED = [(info.stage, info.name, field, kind) for info in installed().plugins()
+                for field, model_field in info.params_model.model_fields.items()
+                if (kind := _scalar_type(model_field.annotation)) is not None]
+
+
+def test_every_kind_of_plugin_parameter_is_checked():
+    kinds = {kind for *_, kind in PLUGIN_TYPED}
+    assert kinds == set(WRONG_TYPES)
+    assert ("graph", "navmesh", "cell_size", float) in PLUGIN_TYPED
+    assert ("terminals", "points", "points", float) in PLUGIN_TYPED and ("levels", "doorway_room", "doors", float) in PLUGIN_TYPED
+
+
+@pytest.mark.parametrize("stage, plugin, field, kind", PLUGIN_TYPED, ids=["/".join(p[:3]) for p in PLUGIN_TYPED])
+def test_no_plugin_parameter_takes_a_value_of_another_type(stage, plugin, field, kind):
+    """A bool is no number, a string no number, a number no string: each refused naming the key and the value."""
+    registry = installed()
+    info = registry.get(stage, plugin)
+    for wrong in WRONG_TYPES[kind]:
+        with pytest.raises(ConfigError) as caught:
+            registry.validate_params(info, {field: _value_for(info.params_model, field, wrong)}, key=f"{stage}.params")
+        message = str(caught.value)
+        assert message.startswith(f"{stage}.params.{field}") and ": expected " in message, message
+        assert message.endswith(f", got {show(wrong)}"), message
+
+
+@pytest.mark.parametrize("section, says", [
+    ("graph: {plugin: navmesh, params: {cell_size: true}}", "graph.params.cell_size: expected a number or null > 0, got true"),
+    ("terminals: {plugin: coverage, params: {radius: '7'}}", "terminals.params.radius: expected a number or null > 0, got '7'"),
+    ("terminals: {plugin: points, params: {file: 7}}", "terminals.params.file: expected a string or null, got 7"),
+    ("terminals: {plugin: points, params: {points: [[0, true, 0]]}}", "terminals.params.points.0.1: expected a list of lists of 3 numbers or null"),
+    ("roots: {plugin: point, params: {point: [0, 0, '1']}}", "roots.params.point.2: expected a list of 3 numbers, got '1'"),
+    ("analyzers: [{plugin: degree, params: {weighted: 1}}]", "analyzers.0.params.weighted: expected true or false, got 1"),
+    ("evaluators: [{plugin: traffic, params: {radii: [6, true]}}]", "evaluators.0.params.radii.1: expected a list of numbers"),
+    ("evaluators: [{plugin: traffic, params: {seed: 1.5}}]", "evaluators.0.params.seed: expected an integer, got 1.5"),
+])
+def test_a_parameter_of_the_wrong_type_is_refused_before_any_work(section, says, tmp_path, capsys):
+    """These ran before (``true`` read as 1 m, ``'7'`` as 7 m), now exit 2 with one line."""
+    config = tmp_path / "typed.yaml"
+    config.write_text(f"extends: map_analysis\n{section}\n")
+    outcome = run_g2s(capsys, "run", config, CORRIDOR, "-o", tmp_path / "out")
+    assert_clean_error(outcome, f"typed.yaml: {says}")
+    assert tree(tmp_path / "out") == []
+
+
+def test_lists_tuples_and_integers_for_numbers_are_still_taken():
+    registry = installed()
+
+    def params(stage, plugin, **values):
+        return registry.validate_params(registry.get(stage, plugin), values, key=f"{stage}.params")
+
+    assert params("roots", "point", point=[1, 0, 2.5]).point == (1.0, 0.0, 2.5)  # YAML gives a list for a tuple
+    assert params("terminals", "points", points=[[0, 0, 1], (2, 0, 3.5)]).points == [(0.0, 0.0, 1.0), (2.0, 0.0, 3.5)]
+    assert params("terminals", "points", file="points.csv").file == "points.csv"
+    assert params("evaluators", "traffic", radii=(3, 6)).radii == [3.0, 6.0]  # Python code may give a tuple
+    assert params("levels", "doorway_room", doors=[1, 1.5]).doors == (1.0, 1.5)
+    radius = params("terminals", "coverage", radius=7).radius
+    assert radius == 7 and isinstance(radius, float)
+
+
+@pytest.mark.parametrize("how", [["--set", "terminals.params.radius=7"], ["--set", "terminals.params={radius: 7.5}"]])
+def test_a_number_given_with_set_is_read_as_yaml_and_taken(how, tmp_path, capsys):
+    outcome = run_g2s(capsys, "run", "map_analysis", CORRIDOR, "-o", tmp_path / "out", "--format", "json", "-q", *how)
+    assert outcome.code == 0, outcome.stderr
+    assert (tmp_path / "out" / "structure.json").is_file()
+
+
+def test_a_quoted_number_given_with_set_is_refused(tmp_path, capsys):
+    outcome = run_g2s(capsys, "run", "map_analysis", CORRIDOR, "-o", tmp_path / "out", "--set", "terminals.params.radius='7'")
+    assert_clean_error(outcome, "terminals.params.radius: expected a number or null > 0, got '7'")
+
+
+@pytest.mark.parametrize("spec", ["sample:dungeon?rooms=5&seed=2", "sample:two_floors?ramp=false", "sample:straight_corridor?length=9.5"])
+def test_a_sample_query_is_text_converted_to_its_types(spec, tmp_path, capsys):
+    """A URL query holds only text: ``rooms=5`` is the integer 5, ``ramp=false`` false (pydantic's reading of text)."""
+    outcome = run_g2s(capsys, "run", "graph_only", spec, "-o", tmp_path / "out", "-q")
+    assert outcome.code == 0, outcome.stderr
+
+
+@pytest.mark.parametrize("query, says", [
+    ("rooms=abc", "rooms: expected an integer >= 1 and <= 100000, got 'abc'"),
+    ("rooms=true", "rooms: expected an integer >= 1 and <= 100000, got 'true'"),
+    ("rooms=2.5", "rooms: expected an integer >= 1 and <= 100000, got '2.5'"),
+    ("seed=", "seed: expected an integer >= 0, got ''"),
+])
+def test_a_sample_query_value_that_is_not_of_its_type_is_refused(query, says, tmp_path, capsys):
+    outcome = run_g2s(capsys, "run", "graph_only", f"sample:dungeon?{query}", "-o", tmp_path / "out")
+    assert_clean_error(outcome, f"sample:dungeon.{says}")
+    assert tree(tmp_path / "out") == []
+
+
+def test_executor_parameters_are_strict_too(tmp_path):
+    from g2s_plugins.batch.runner import run_batch
+
+    with pytest.raises(ConfigError, match=r"^executor 'local' params\.workers: expected an integer or null >= 1, got '2'$"):
+        run_batch(["graph_only"], [CORRIDOR], tmp_path / "out", "local", executor_params={"workers": "2"})
+    assert not (tmp_path / "out").exists()
 
 
 # --- command-line options -------------------------------------------------------------------

@@ -1,0 +1,21 @@
+"""The ``g2s`` console script (``[project.scripts]`` in pyproject.toml).
+
+Loading the command line (:mod:`g2s_core.cli`, with pydantic, pluggy, rich
+and YAML) takes about half a second; a Ctrl-C then printed a traceback. This
+module, like the package's ``__init__``, imports only the standard library and
+loads the command line under its own interrupt handling, so that a Ctrl-C at
+any time ends as ``g2s: interrupted``, exit code 130.
+"""
+
+import sys
+
+
+def main() -> int:
+    """``g2s`` as installed: :func:`g2s_core.cli.main`, and a Ctrl-C while it loads ends as one later does."""
+    try:
+        from g2s_core import cli
+
+        return cli.main()
+    except KeyboardInterrupt:  # cli.main answers it itself once its parser is built
+        print("g2s: interrupted", file=sys.stderr)
+        return 130
