@@ -16,7 +16,7 @@ import trimesh
 from g2s_core.config import RunConfig
 from g2s_core.disconnected import disconnected_warning
 from g2s_core.errors import ConfigError, G2SError
-from g2s_core.model import AnalyzerResult, RunContext, RunResult, StageStats
+from g2s_core.model import AnalyzerResult, RunContext, RunResult, StageStats, graph_of
 from g2s_core.plugin import PluginParams
 from g2s_core.registry import PluginInfo, Registry
 from g2s_core.rooted import root_forest
@@ -247,17 +247,17 @@ def steiner_forest(
     if len(groups) > 1:
         areas = {index: components[index] for index in groups}
         context.warn(disconnected_warning(graph, areas, sum(map(len, groups.values())), context.agent))
-    forest = nx.Graph()
+    nodes, edges = [], []
     for index, group in sorted(groups.items()):
-        if len(group) == 1:
-            forest.add_node(group[0])
-            continue
         # a subgraph view is slow to iterate: with a single group of terminals
         # the solver gets the whole graph (its other components are unreachable)
-        tree = solve(graph if len(groups) == 1 else graph.subgraph(components[index]), group)
-        forest.add_nodes_from(sorted(tree.nodes))
-        forest.add_edges_from(sorted(tuple(sorted(e)) for e in tree.edges))
-    return _with_graph_attributes(forest, graph)
+        part = graph if len(groups) == 1 else graph.subgraph(components[index])
+        tree = solve(part, group) if len(group) > 1 else nx.empty_graph(group)  # a lone terminal: its own tree
+        nodes += sorted(tree.nodes)
+        edges += sorted((u, v) if u <= v else (v, u) for u, v in tree.edges)
+    # the groups' nodes and edges are disjoint: all nodes first then all edges make the same graph as group by group
+    node_data, adjacency = dict(graph.nodes(data=True)), dict(graph.adjacency())
+    return graph_of(nx.Graph(), {node: dict(node_data[node]) for node in nodes}, ((u, v, dict(adjacency[u][v])) for u, v in edges))
 
 
 def _with_graph_attributes(part: nx.Graph, graph: nx.Graph) -> nx.Graph:

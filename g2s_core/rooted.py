@@ -30,7 +30,7 @@ import numpy as np
 import scipy.sparse as sp
 from scipy.sparse import csgraph
 
-from g2s_core.model import add_nodes_with_data
+from g2s_core.model import graph_of
 from g2s_core.ties import tie_values
 
 
@@ -44,8 +44,10 @@ def root_ranks(forest: nx.Graph, scores: Mapping[int, float], centre: np.ndarray
     missing = [n for n in nodes if n not in scores]
     if missing:
         raise ValueError(f"the root selector gave no score for nodes {missing[:5]}")
-    positions = np.array([forest.nodes[n]["pos"] for n in nodes], dtype=np.float64).reshape(-1, 3)
-    score = tie_values([scores[n] for n in nodes])
+    data = dict(forest.nodes(data=True))
+    positions = np.fromiter(itertools.chain.from_iterable(data[n]["pos"] for n in nodes), dtype=np.float64).reshape(-1, 3)
+    distinct, inverse = np.unique(np.array([scores[n] for n in nodes], dtype=np.float64), return_inverse=True)
+    score = tie_values(distinct)[inverse]  # each distinct score rounded once
     distance = tie_values(np.linalg.norm(positions - centre, axis=1))
     return np.argsort(np.lexsort((np.arange(len(nodes)), distance, -score)))
 
@@ -84,18 +86,16 @@ def root_forest(forest: nx.Graph, scores: Mapping[int, float], centre: np.ndarra
     depth, parents = [-1] * (n + 1), parent.tolist()
     for node in order.tolist():
         depth[node] = depth[parents[node]] + 1
-    rooted = nx.DiGraph(roots=[nodes[i] for i in best.tolist()])
     # networkx's own dicts: a view object per node and edge looked up cost more than copying them
     node_data, adjacency, root_of, visited = dict(forest.nodes(data=True)), dict(forest.adjacency()), best[label].tolist(), order.tolist()
-    add_nodes_with_data(rooted, (nodes[i] for i in visited),
-                        ({**node_data[nodes[i]], "depth": depth[i], "root": nodes[root_of[i]]} for i in visited))
     child = order[parent[order] != n]
-    rooted.add_edges_from((nodes[p], nodes[c], adjacency[nodes[p]][nodes[c]]) for p, c in zip(parent[child].tolist(), child.tolist()))
+    edges = [(nodes[p], nodes[c], dict(adjacency[nodes[p]][nodes[c]])) for p, c in zip(parent[child].tolist(), child.tolist())]
     loop = (parent[lo] != hi) & (parent[hi] != lo)  # the loop edges: a tree edge joins a node to its parent
     for u, v in (divmod(k, n) for k in np.sort(lo[loop] * n + hi[loop]).tolist()):
         first, second = (u, v) if depth[u] <= depth[v] else (v, u)
-        rooted.add_edge(nodes[first], nodes[second], **adjacency[nodes[u]][nodes[v]], loop=True)
-    return rooted
+        edges.append((nodes[first], nodes[second], {**adjacency[nodes[u]][nodes[v]], "loop": True}))
+    return graph_of(nx.DiGraph(roots=[nodes[i] for i in best.tolist()]),
+                    {nodes[i]: {**node_data[nodes[i]], "depth": depth[i], "root": nodes[root_of[i]]} for i in visited}, edges)
 
 
 def tree_parent(forest: nx.DiGraph, node: int) -> int | None:

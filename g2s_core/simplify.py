@@ -40,7 +40,7 @@ from collections.abc import Callable
 
 import networkx as nx
 
-from g2s_core.model import add_nodes_with_data
+from g2s_core.model import graph_of
 from g2s_core.rooted import tree_parent
 
 Predicate = Callable[[nx.DiGraph, int, int, int], bool]
@@ -56,14 +56,13 @@ def simplify_forest(forest: nx.DiGraph, predicate: Predicate) -> nx.DiGraph:
     New edges A -> C get ``weight`` = Euclidean distance between their ``pos``.
     ``depth`` is recomputed; ``graph["roots"]`` is kept.
     """
-    # a copy as DiGraph.copy() makes it, but with bare nodes first (see add_nodes_with_data)
-    tree = nx.DiGraph(**forest.graph)
-    add_nodes_with_data(tree, forest, (data for _, data in forest.nodes(data=True)))
-    tree.add_edges_from(forest.edges(data=True))
-    terminals = {node for node, terminal in tree.nodes(data="terminal", default=False) if terminal}
-    children: Links = {a: {b for b, data in below.items() if not data.get("loop", False)} for a, below in tree.adjacency()}
+    # a copy as DiGraph.copy() makes it (see graph_of), and each node's children and loop partners
+    edges = [(a, b, dict(data)) for a, below in forest.adjacency() for b, data in below.items()]
+    tree = graph_of(nx.DiGraph(**forest.graph), {node: dict(data) for node, data in forest.nodes(data=True)}, edges)
+    terminals = {node for node, data in tree.nodes(data=True) if data.get("terminal", False)}
+    children: Links = {a: {b for b, data in below.items() if not data.get("loop", False)} for a, below in forest.adjacency()}
     loops: Links = {node: set() for node in tree}
-    for a, b in ((a, b) for a, b, loop in tree.edges(data="loop", default=False) if loop):
+    for a, b in ((a, b) for a, b, data in edges if data.get("loop", False)):
         loops[a].add(b)
         loops[b].add(a)
     for root in tree.graph["roots"]:

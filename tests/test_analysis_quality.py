@@ -540,6 +540,24 @@ def test_flow_is_exact_on_small_graphs_and_sampled_flow_within_its_bound(seed):
         assert np.abs(estimate - exact).max() / total <= traffic.flow_error_bound(sources)
 
 
+@pytest.mark.parametrize("kept", [1, 5 * 30, 1 << 25])
+def test_flow_keeping_tree_blocks_before_summing_them_gives_the_same_bits(monkeypatch, kept):
+    graph = random_surface(200, 3)
+    arrays = traffic.surface_arrays(graph)
+    monkeypatch.setattr(traffic, "BLOCK_ENTRIES", 5 * arrays.n)  # blocks of 5 sources
+    monkeypatch.setattr(traffic, "KEPT_ENTRIES", kept * arrays.n)  # the products after every block, every 30, at the end
+    flow, _ = traffic.od_flow(arrays.adjacency, arrays.area, max_sources=64, seed=4)
+    # the sum block by block, each block's product as soon as its trees are made
+    draws = np.random.default_rng(4).choice(np.flatnonzero(arrays.area > 0), size=64, replace=True,
+                                            p=arrays.area / arrays.area.sum())
+    sources, counts = np.unique(draws, return_counts=True)
+    factor, expected = counts * (arrays.area.sum() / 64), np.zeros(arrays.n)
+    assert len(sources) > 10
+    for lo in range(0, len(sources), 5):
+        expected += factor[lo:lo + 5] @ traffic.shortest_path_flow(arrays.adjacency, sources[lo:lo + 5], arrays.area)[1]
+    assert flow.tobytes() == expected.tobytes()
+
+
 PAPER_STRUCTURE_SHA256 = "7d0d88e6c161dcabe593221c3aa90c695d68052702a23e6388e8b1038faa89c0"
 """sha256 of the structure parts (below) of ``structure.json`` that the former ``map_analysis`` preset wrote for
 nav_test.obj before issue 9 (55 nodes, 45 edges); later stronger line-of-sight tests must not move it."""

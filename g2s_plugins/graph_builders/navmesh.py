@@ -57,8 +57,8 @@ from pydantic import Field
 
 from g2s_core.config import AgentConfig
 from g2s_core.errors import G2SError
-from g2s_core.model import add_nodes_with_data
 from g2s_core.plugin import hookimpl
+from g2s_core.model import graph_of
 from g2s_plugins._surface import MAX_SURFACE_GAP
 from g2s_plugins.recast import NavMesh, RecastParams, SettingsError, build_navmesh
 from g2s_plugins.walkable_check import check_walkable_surface, no_walkable_surface
@@ -94,11 +94,8 @@ def navmesh_graph(navmesh: NavMesh, agent: AgentConfig | None = None, max_edge_g
     pos = [tuple(p) for p in centres.tolist()]
     nrm = [tuple(n) for n in normals.tolist()]
     area = areas.tolist()
-    graph = nx.Graph()
-    add_nodes_with_data(graph, range(navmesh.polygon_count), (
-        {"pos": pos[i], "normal": nrm[i], "area": area[i], "on_navmesh": True, "polygon": i}
-        for i in range(navmesh.polygon_count)
-    ))
+    nodes = {i: {"pos": pos[i], "normal": nrm[i], "area": area[i], "on_navmesh": True, "polygon": i}
+             for i in range(navmesh.polygon_count)}
     crossing = np.zeros(len(pairs), dtype=bool)
     if max_edge_gap is not None and agent is None:
         raise ValueError("max_edge_gap needs the agent (its radius spaces the probes)")
@@ -107,13 +104,13 @@ def navmesh_graph(navmesh: NavMesh, agent: AgentConfig | None = None, max_edge_g
         gaps = navmesh.segment_surface_gaps(centres[pairs[:, 0]], centres[pairs[:, 1]], step, reach)
         crossing = (gaps > max_edge_gap) | (_corner_gaps(navmesh, reach) > max_edge_gap)
     direct = ~crossing
-    graph.add_edges_from(
+    graph = graph_of(nx.Graph(), nodes, (
         (a, b, {"weight": w, "portal": ((e[0], e[1], e[2]), (e[3], e[4], e[5])), "width": wd})
         for (a, b), w, e, wd in zip(
             pairs[direct].tolist(), weights[direct].tolist(), portals.endpoints[direct].reshape(-1, 6).tolist(),
             portals.widths[direct].tolist(),
         )
-    )
+    ))
     if crossing.any():
         _add_portal_nodes(graph, navmesh, np.flatnonzero(crossing), agent, max_edge_gap)
     return graph

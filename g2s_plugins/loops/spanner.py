@@ -43,7 +43,7 @@ import scipy.sparse as sp
 from pydantic import Field
 from scipy.sparse import csgraph
 
-from g2s_core.model import RunContext
+from g2s_core.model import RunContext, graph_of
 from g2s_core.plugin import PluginParams, hookimpl
 from g2s_plugins.surface_arrays import SurfaceArrays, surface_arrays
 
@@ -108,13 +108,10 @@ def add_loops(graph: nx.Graph, structure: nx.Graph, stretch: float, min_gain: fl
             _join(neighbours, p, q, graph.edges[arrays.nodes[p], arrays.nodes[q]]["weight"])
     # the structure's nodes and edges, then every path's nodes, then every path's edges (the insertion order of
     # adding them path by path), without attributes: the pipeline copies the graph's onto them all at once
-    looped = nx.Graph(**structure.graph)
-    looped.add_nodes_from(structure)
-    looped.add_edges_from(structure.edges)
     paths_ids = [[arrays.nodes[i] for i in path] for path in added]
-    looped.add_nodes_from(node for ids in paths_ids for node in ids)
-    looped.add_edges_from((u, v) for ids in paths_ids for u, v in zip(ids, ids[1:]))
-    return looped
+    nodes = dict.fromkeys(itertools.chain(structure, (node for ids in paths_ids for node in ids)))
+    edges = itertools.chain(structure.edges, ((u, v) for ids in paths_ids for u, v in zip(ids, ids[1:])))
+    return graph_of(nx.Graph(**structure.graph), {node: {} for node in nodes}, ((u, v, {}) for u, v in edges))
 
 
 def _edges(arrays: SurfaceArrays, structure: nx.Graph) -> tuple[np.ndarray, list[float]]:

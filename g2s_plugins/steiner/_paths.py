@@ -26,6 +26,7 @@ The solvers' shared contract, ``solver(graph, terminals) -> tree``:
 
 from __future__ import annotations
 
+import itertools
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 
@@ -33,6 +34,8 @@ import networkx as nx
 import numpy as np
 from scipy.sparse import csr_matrix
 from scipy.sparse.csgraph import minimum_spanning_tree
+
+from g2s_core.model import graph_of
 
 NO_PREDECESSOR = -9999
 """What scipy.sparse.csgraph writes in a predecessor array for "none"."""
@@ -420,10 +423,10 @@ def to_networkx(
         tree.add_nodes_from(csr.nodes[terminals].tolist())
         return tree
     order = np.argsort(lo * csr.n + hi)
-    tree.add_weighted_edges_from(
-        zip(csr.nodes[lo[order]].tolist(), csr.nodes[hi[order]].tolist(), weights[order].tolist())
-    )
-    return tree
+    u, v = csr.nodes[lo[order]].tolist(), csr.nodes[hi[order]].tolist()
+    # add_weighted_edges_from's graph (nodes as the edges first name them), without its checks per edge
+    nodes = dict.fromkeys(itertools.chain.from_iterable(zip(u, v)))
+    return graph_of(tree, {node: {} for node in nodes}, ((a, b, {"weight": w}) for a, b, w in zip(u, v, weights[order].tolist())))
 
 
 def prepare(graph: nx.Graph, terminals: Iterable[int]) -> tuple[CSRGraph, np.ndarray]:
