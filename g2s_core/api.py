@@ -120,23 +120,18 @@ def execute(
         G2SError: bad input met while running, its message led by ``source.name`` (as the mesh's own errors
             are by its path), so that a level among many is found; the step's other errors as they are.
     """
-    # The cyclic collector stays off until the run's objects are all made (pipeline.run leaves it as it finds
-    # it); a big run's are then scanned once, in one full collection: back on with a million young objects, the
-    # collector scanned them three times over, once per generation they passed through (0.9 s after the stages
-    # of the 100k-polygon level). A small run's few (about 22 per navmesh polygon) are left to its own pace, as
-    # a full collection also scans the some 100,000 objects of the loaded modules.
-    collecting = gc.isenabled()
-    gc.disable()
     try:
         result = pipeline.run(plan, registry, source.mesh, source.name, source.sha256, progress=progress)
     except G2SError as exc:  # the stages do not know the file: their errors are named here, once
         exc.args = (f"{source.name}: {exc}",)  # the same exception, of a plugin's own G2SError class too
         raise
-    finally:
-        if collecting:
-            if gc.get_count()[0] > 100_000:
-                gc.collect()
-            gc.enable()
+    # pipeline.run switches CPython's cyclic collector back on with the run's objects all young: the next
+    # allocations would scan each of them three times over, in a gen-0, a gen-1 and a full collection (0.9 s
+    # after the stages of the 100k-polygon level). A big run's get one full collection now, before anything
+    # else is allocated; a small run's few (about 22 per navmesh polygon) are left to the collector's pace,
+    # as a full collection also scans the some 100,000 objects of the loaded modules.
+    if gc.isenabled() and gc.get_count()[0] > 100_000:
+        gc.collect()
     result.mesh_path = source.path
     result.inputs = input_files(plan.config, config_files, source.path)
     terminals = set() if result.terminals is None else set(result.terminals.without_waypoints)

@@ -49,8 +49,10 @@ def file_sha256(path: Path) -> str:
 
 def mesh_sha256(mesh: trimesh.Trimesh) -> str:
     """Hex SHA-256 of an in-memory mesh's vertex and face arrays (float64, int64)."""
-    arrays = np.ascontiguousarray(mesh.vertices, dtype=np.float64), np.ascontiguousarray(mesh.faces, dtype=np.int64)
-    return hashlib.sha256(b"".join(array.tobytes() for array in arrays)).hexdigest()
+    digest = hashlib.sha256()
+    digest.update(np.ascontiguousarray(mesh.vertices, dtype=np.float64).tobytes())
+    digest.update(np.ascontiguousarray(mesh.faces, dtype=np.int64).tobytes())
+    return digest.hexdigest()
 
 
 def load_mesh(path: str | Path, config: MeshConfig | None = None) -> tuple[trimesh.Trimesh, MeshInfo]:
@@ -67,16 +69,18 @@ def load_mesh(path: str | Path, config: MeshConfig | None = None) -> tuple[trime
         MeshError: the file is missing, unreadable, of an unsupported type,
             empty, not made of triangles, or has non-finite coordinates.
     """
-    config, path = config or MeshConfig(), Path(path)
+    config = config or MeshConfig()
+    path = Path(path)
     check_regular_file(path, "mesh file", MeshError)
     if path.suffix.lower() not in SUPPORTED_SUFFIXES:
         raise MeshError(f"{path}: unsupported mesh type {path.suffix!r} (expected one of {', '.join(SUPPORTED_SUFFIXES)})")
     try:
         with _trimesh_log_silenced():
             with path.open("rb") as handle:  # trimesh takes a UTF-8 byte-order mark for part of an OBJ's first line
-                start = 3 if path.suffix.lower() == ".obj" and handle.read(3) == codecs.BOM_UTF8 else 0
-            file = (io.BytesIO(path.read_bytes()[start:]), "obj", trimesh.resolvers.FilePathResolver(path)) if start else (path,)
-            loaded = _read_single_mesh(path, start) or trimesh.load(*file, force="mesh", process=False)
+                marked = path.suffix.lower() == ".obj" and handle.read(3) == codecs.BOM_UTF8
+            file = (io.BytesIO(path.read_bytes()[3:]), "obj", trimesh.resolvers.FilePathResolver(path)) if marked \
+                else (path,)
+            loaded = (None if marked else _read_single_mesh(path)) or trimesh.load(*file, force="mesh", process=False)
     except Exception as exc:  # trimesh raises many exception types for bad files
         raise MeshError(f"{path}: {describe_damage(path) or f'cannot read mesh ({type(exc).__name__}: {exc})'}") from None
     if not len(getattr(loaded, "faces", ())) and (damage := describe_damage(path)):  # a cut binary STL reads as empty
@@ -103,9 +107,9 @@ _SINGLE_MESH_FORMATS = ("ply", "stl", "off", "obj")
 """Formats whose trimesh reader returns a single mesh's arrays (an OBJ's when its faces share one material)."""
 
 
-def _read_single_mesh(path: Path, start: int = 0) -> trimesh.Trimesh | None:
+def _read_single_mesh(path: Path) -> trimesh.Trimesh | None:
     """A PLY/STL/OFF file's triangles, or those of an OBJ file whose faces share one material, straight from
-    trimesh's format reader, which reads the file from byte ``start`` on.
+    trimesh's format reader.
 
     ``trimesh.load`` wraps every file in a scene and copies and hashes the
     arrays to flatten it again (2 s per million triangles, 100 times the PLY
@@ -116,7 +120,6 @@ def _read_single_mesh(path: Path, start: int = 0) -> trimesh.Trimesh | None:
     if kind not in _SINGLE_MESH_FORMATS:
         return None
     with path.open("rb") as handle:
-        handle.seek(start)
         data = trimesh.exchange.load.mesh_loaders[kind](handle, file_type=kind)
     if isinstance(data, dict) and len(data.get("geometry") or ()) == 1:  # an OBJ's meshes, one per material
         data = next(iter(data["geometry"].values()))

@@ -131,8 +131,9 @@ def _move_into_place(staging: Path, outdir: Path, obsolete: Sequence[Path], prot
     refuse_inputs(outdir, [outdir / name for name in names] + list(obsolete), protect)
     for name in names:
         os.replace(staging / name, outdir / name)
-    for path in [p for p in obsolete if p.name not in names]:
-        path.unlink(missing_ok=True)
+    for path in obsolete:
+        if path.name not in names:
+            path.unlink(missing_ok=True)
     staging.rmdir()
 
 
@@ -148,7 +149,8 @@ def _missing_folders(folder: Path) -> tuple[Path, list[Path]]:
 def _remove_stale(home: Path) -> None:
     """Remove staging folders in ``home`` whose process no longer runs."""
     for path in home.iterdir():
-        if (match := _STAGING_NAME.search(path.name)) and path.is_dir() and not _process_alive(int(match.group(1))):
+        match = _STAGING_NAME.search(path.name)
+        if match and path.is_dir() and not _process_alive(int(match.group(1))):
             shutil.rmtree(path, ignore_errors=True)
 
 
