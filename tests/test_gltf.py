@@ -242,3 +242,62 @@ def test_regions_glb_passes_the_khronos_validator(tmp_path):
     assert_khronos_valid(path)
     header, _ = read_glb(path)
     assert len(_children(header, "regions")) == 4 and len(_children(header, "chokepoints")) == 4
+
+
+TUBE_SEGMENTS = {
+    "up": [(0.0, 0.0, 0.0), (0.0, 2.5, 0.0)],
+    "down": [(0.0, 2.5, 0.0), (0.0, 0.0, 0.0)],
+    "along +z, the cylinders' own axis": [(1.0, 2.0, 3.0), (1.0, 2.0, 7.0)],
+    "along -z": [(1.0, 2.0, 7.0), (1.0, 2.0, 3.0)],
+    "along +x": [(-3.0, 0.5, 0.0), (4.0, 0.5, 0.0)],
+    "along -x": [(4.0, 0.5, 0.0), (-3.0, 0.5, 0.0)],
+    "a ramp": [(10.0, 0.0, -4.0), (13.5, 1.2, -1.0)],
+    "the same ramp down": [(13.5, 1.2, -1.0), (10.0, 0.0, -4.0)],
+    "long, far from the origin": [(-812.25, 31.0, 640.5), (377.0, -12.75, -95.125)],
+    "a micrometre": [(5.0, 1.0, 5.0), (5.0, 1.0, 5.000001)],
+}
+
+
+def test_tubes_are_the_cylinders_trimesh_makes():
+    """Built together with numpy, each tube has trimesh.creation.cylinder's vertices (in its order) and faces."""
+    segments = np.asarray(list(TUBE_SEGMENTS.values()))
+    vertices, faces = gltf._cylinders(segments, 0.1)
+    assert vertices.shape[0] == len(segments)
+    for (label, segment), tube in zip(TUBE_SEGMENTS.items(), vertices):
+        expected = trimesh.creation.cylinder(0.1, sections=gltf.TUBE_SIDES, segment=segment)
+        assert tube.shape == expected.vertices.shape and np.array_equal(faces, expected.faces), label
+        assert np.allclose(tube, expected.vertices, rtol=0.0, atol=1e-5), label
+        assert trimesh.Trimesh(tube, faces).is_volume, label  # closed, faces pointing out
+
+
+def test_one_tube_per_edge_of_nonzero_length():
+    import networkx as nx
+
+    graph = nx.DiGraph()
+    for node, segment in enumerate(TUBE_SEGMENTS.values()):
+        graph.add_node(2 * node, pos=segment[0])
+        graph.add_node(2 * node + 1, pos=segment[1])
+    graph.add_node(99, pos=graph.nodes[4]["pos"])
+    edges = [(0, 1), (4, 99), (2, 3), (6, 7), (99, 4)]  # 4 and 99 are the same point
+    tubes = gltf._tubes(graph, edges, 0.1)
+    drawn = [(0, 1), (2, 3), (6, 7)]
+    expected = trimesh.util.concatenate([
+        trimesh.creation.cylinder(0.1, sections=gltf.TUBE_SIDES, segment=[graph.nodes[u]["pos"], graph.nodes[v]["pos"]])
+        for u, v in drawn])
+    assert np.array_equal(tubes.faces, expected.faces)
+    assert np.allclose(tubes.vertices, expected.vertices, rtol=0.0, atol=1e-5)
+    assert len(tubes.split(only_watertight=True)) == len(drawn)
+    assert gltf._tubes(graph, [(4, 99)], 0.1).is_empty
+
+
+def test_two_runs_write_the_same_glb_bytes(tmp_path):
+    from g2s_plugins.samples.levels import load_sample
+    from tests.test_regions import run
+
+    level = load_sample("loop_of_four_rooms")
+    for name in ("a", "b"):
+        (tmp_path / name).mkdir()
+    written = [gltf.write(run(level), tmp_path / name)[0] for name in ("a", "b")]
+    assert written[0].read_bytes() == written[1].read_bytes()
+    header, _ = read_glb(written[0])
+    assert _children(header, "chokepoints") and [m for m in header["meshes"] if m["name"].startswith("edges")]

@@ -51,6 +51,7 @@ Coordinates are metres, Y up, which is glTF's convention.
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
@@ -90,6 +91,8 @@ RING_RADIUS, RING_THICKNESS = 0.65, 0.08
 BAR_RADIUS = 0.3
 CONE_RADIUS, CONE_HEIGHT, CONE_GAP = 0.5, 1.4, 0.1
 """Sizes in agent radii."""
+MIN_SEGMENT = 1e-9
+"""An edge shorter than this (m) gets no tube, and a chokepoint's portal shorter than this a short upright bar."""
 
 
 def write(result: RunResult, outdir: Path) -> list[Path]:
@@ -166,12 +169,16 @@ def _add_regions(scene: trimesh.Scene, result: RunResult) -> None:
 
 def _add_chokepoints(scene: trimesh.Scene, result: RunResult, radius: float) -> None:
     """``chokepoint_<id>`` under ``chokepoints``: a bar across each chokepoint's portal, its record in the extras."""
-    for record in feature_records(result, "chokepoints"):
-        position = np.asarray(record["position"], dtype=np.float64)
-        portal = np.asarray(record["portal"], dtype=np.float64) - position
-        if np.linalg.norm(portal[1] - portal[0]) <= 1e-9:  # a point portal: a short upright bar shows it
-            portal = np.asarray([[0.0, -BAR_RADIUS * radius, 0.0], [0.0, BAR_RADIUS * radius, 0.0]])
-        bar = trimesh.creation.cylinder(BAR_RADIUS * radius, sections=TUBE_SIDES, segment=portal)
+    records = feature_records(result, "chokepoints")
+    if not records:
+        return
+    positions = np.asarray([record["position"] for record in records], dtype=np.float64).reshape(-1, 3)
+    portals = np.asarray([record["portal"] for record in records], dtype=np.float64) - positions[:, None]
+    points = np.linalg.norm(portals[:, 1] - portals[:, 0], axis=1) <= MIN_SEGMENT
+    portals[points] = [[0.0, -BAR_RADIUS * radius, 0.0], [0.0, BAR_RADIUS * radius, 0.0]]  # a short upright bar each
+    bars, faces = _cylinders(portals, BAR_RADIUS * radius)
+    for record, position, vertices in zip(records, positions, bars):
+        bar = trimesh.Trimesh(vertices, faces, process=False)
         bar.visual = _material("chokepoint", colours.CHOKEPOINT_COLOUR)
         name = f"chokepoint_{record['id']}"
         _place(scene, "chokepoints", name, bar, position, dict(record), geometry_name=name)
@@ -201,7 +208,7 @@ def _add_markers(scene: trimesh.Scene, result: RunResult, graph: nx.Graph, heat:
     for node in sorted(graph.nodes) if heat else ():
         level = heat[node]
         ball = shape(f"sphere_value_{level:02d}", lambda: trimesh.creation.icosphere(2, NODE_RADIUS * radius),
-                     colours.heat_colour(level / (HEAT_LEVELS - 1)))
+                     _step_colour(level))
         _place(scene, "structure", f"node_{node}", ball, graph.nodes[node]["pos"], info(node))
     source = result.graph if result.graph is not None else graph
     for node in sorted(t for t in terminals if t in source):
@@ -263,6 +270,13 @@ def _heat_levels(graph: nx.Graph, values: dict[int, float]) -> dict[int, int]:
     return {n: int(round(x * (HEAT_LEVELS - 1))) for n, x in zip(nodes, t)}
 
 
+@functools.cache
+def _step_colour(level: int) -> colours.RGB:
+    """The colour of analysis step ``level`` (0 .. HEAT_LEVELS - 1), asked of the colour map once per step
+    rather than once per edge and node (that took most of the writer's time on a 100k-polygon level)."""
+    return colours.heat_colour(level / (HEAT_LEVELS - 1))
+
+
 def _edge_classes(
     graph: nx.Graph, heat: dict[int, int], loops: set[tuple[int, int]]
 ) -> dict[str, tuple[colours.RGB, list[tuple[int, int]]]]:
@@ -273,7 +287,7 @@ def _edge_classes(
             continue
         child = edge[1]
         if heat:
-            name, rgb = f"edges_value_{heat[child]:02d}", colours.heat_colour(heat[child] / (HEAT_LEVELS - 1))
+            name, rgb = f"edges_value_{heat[child]:02d}", _step_colour(heat[child])
         elif graph.is_directed():
             depth = (max(int(graph.nodes[child].get("depth", 1)), 1) - 1) % len(colours.DEPTH_COLOURS) + 1
             name, rgb = f"edges_depth_{depth}", colours.depth_colour(depth)
@@ -284,10 +298,50 @@ def _edge_classes(
 
 
 def _tubes(graph: nx.Graph, edges: list[tuple[int, int]], radius: float) -> trimesh.Trimesh:
-    """One closed tube per edge (zero-length edges give none), as one mesh."""
-    parts = []
-    for u, v in edges:
-        segment = np.asarray([graph.nodes[u]["pos"], graph.nodes[v]["pos"]], dtype=np.float64)
-        if np.linalg.norm(segment[1] - segment[0]) > 1e-9:
-            parts.append(trimesh.creation.cylinder(radius, sections=TUBE_SIDES, segment=segment))
-    return trimesh.util.concatenate(parts) if parts else trimesh.Trimesh()
+    """One closed tube per edge (edges shorter than :data:`MIN_SEGMENT` give none), as one mesh."""
+    segments = np.asarray([(graph.nodes[u]["pos"], graph.nodes[v]["pos"]) for u, v in edges], dtype=np.float64)
+    segments = segments.reshape(-1, 2, 3)
+    segments = segments[np.linalg.norm(segments[:, 1] - segments[:, 0], axis=1) > MIN_SEGMENT]
+    if not len(segments):
+        return trimesh.Trimesh()
+    vertices, faces = _cylinders(segments, radius)
+    numbered = faces + vertices.shape[1] * np.arange(len(segments))[:, None, None]  # each tube into its own vertices
+    return trimesh.Trimesh(vertices.reshape(-1, 3), numbered.reshape(-1, 3), process=False)
+
+
+def _cylinders(segments: np.ndarray, radius: float) -> tuple[np.ndarray, np.ndarray]:
+    """Closed cylinders of ``radius`` (m) and :data:`TUBE_SIDES` sides along ``segments`` ((n, 2, 3) m, none
+    shorter than :data:`MIN_SEGMENT`): their vertices (n, V, 3) m and the faces (F, 3) that index each one's V.
+
+    Each is the mesh ``trimesh.creation.cylinder(radius, sections=TUBE_SIDES, segment=...)`` makes (the same
+    vertices in the same order, the same faces), built for all segments at once: one call of it per
+    segment took more than half the writer's time on a 100k-polygon level.
+    """
+    vertices, faces = _unit_cylinder()
+    axes = segments[:, 1] - segments[:, 0]
+    scale = np.empty((len(segments), 1, 3))
+    scale[:, :, :2] = radius
+    scale[:, :, 2] = np.linalg.norm(axes, axis=1)[:, None]
+    rotated = (vertices * scale) @ _rotations_from_z(axes).transpose(0, 2, 1)
+    return rotated + (segments[:, 0] + axes * 0.5)[:, None], faces
+
+
+@functools.cache
+def _unit_cylinder() -> tuple[np.ndarray, np.ndarray]:
+    """The vertices (V, 3) and faces (F, 3) of trimesh's cylinder of radius 1 and height 1 with
+    :data:`TUBE_SIDES` sides, its axis Z, centred on the origin."""
+    cylinder = trimesh.creation.cylinder(1.0, 1.0, sections=TUBE_SIDES)
+    vertices, faces = np.array(cylinder.vertices), np.array(cylinder.faces)
+    vertices.flags.writeable = faces.flags.writeable = False  # shared by every call, and by every bar's mesh
+    return vertices, faces
+
+
+def _rotations_from_z(vectors: np.ndarray) -> np.ndarray:
+    """(n, 3, 3) rotations taking +Z onto the directions of ``vectors`` (n, 3).
+
+    Built as ``trimesh.geometry.align_vectors`` builds its rotation (from the two vectors' SVD bases, each
+    made right-handed), so that each tube is turned about its axis as trimesh's own cylinder would be.
+    """
+    bases = np.linalg.svd(np.concatenate([[[0.0, 0.0, 1.0]], vectors])[:, :, None])[0]
+    bases[np.linalg.det(bases) < 0, :, -1] *= -1.0
+    return bases[1:] @ bases[0].T
