@@ -12,6 +12,7 @@ and ``analysis_keys``. Nodes and edges are written in ascending id order.
 
 from __future__ import annotations
 
+import functools
 import io
 from pathlib import Path
 from typing import Any
@@ -64,8 +65,9 @@ def _flat_graph(graph: nx.Graph, terminals: set[int], analysis: dict[str, dict[i
         if node in parents:
             attrs["parent"] = int(parents[node])
         for key, values in analysis.items():
-            if node in values and number(values[node]) is not None:
-                attrs[f"value_{key}"] = number(values[node])
+            value = number(values[node]) if node in values else None
+            if value is not None:
+                attrs[f"value_{key}"] = value
         flat.add_node(int(node), **attrs)
     for u, v in edge_list(graph):
         flat.add_edge(u, v, **flatten(graph.edges[u, v]))
@@ -81,16 +83,23 @@ def flatten(attrs: dict[str, Any]) -> dict[str, Any]:
 
 
 def _flatten_into(flat: dict[str, Any], name: str, value: Any) -> None:
-    if value is None:
-        return
-    if isinstance(value, (bool, np.bool_)):
-        flat[name] = bool(value)
-    elif isinstance(value, (int, np.integer)):
-        flat[name] = int(value)
-    elif isinstance(value, (float, np.floating)):
+    # floats, positions, normals and portals first, without arrays: they are nearly all the values
+    if isinstance(value, (float, np.floating)):
         x = number(value)
         if x is not None:
             flat[name] = x
+    elif _is_float_triple(value):
+        for key, x in zip(_axis_names(name), value):
+            _flatten_into(flat, key, x)
+    elif type(value) is tuple and all(_is_float_triple(row) for row in value):
+        for i, row in enumerate(value):
+            _flatten_into(flat, f"{name}_{i}", row)
+    elif value is None:
+        return
+    elif isinstance(value, (bool, np.bool_)):
+        flat[name] = bool(value)
+    elif isinstance(value, (int, np.integer)):
+        flat[name] = int(value)
     elif isinstance(value, str):
         flat[name] = value
     elif isinstance(value, (list, tuple, np.ndarray)):
@@ -112,3 +121,12 @@ def _flatten_into(flat: dict[str, Any], name: str, value: Any) -> None:
                 _flatten_into(flat, f"{name}_{i}", int(x) if integral else float(x))
     else:
         flat[name] = str(value)
+
+
+def _is_float_triple(value: Any) -> bool:
+    return type(value) is tuple and len(value) == 3 and type(value[0]) is type(value[1]) is type(value[2]) is float
+
+
+@functools.cache
+def _axis_names(name: str) -> tuple[str, str, str]:
+    return tuple(f"{name}_{axis}" for axis in _AXES)
