@@ -1,4 +1,4 @@
-"""structure.glb: reloaded with trimesh and read chunk by chunk, names, colours, counts and extras are checked."""
+"""structure.glb: names, colours, counts and extras (reloaded with trimesh and read chunk by chunk), tubes, bytes."""
 
 from __future__ import annotations
 
