@@ -43,7 +43,7 @@ def collector_paused() -> Iterator[None]:
     A writer makes hundreds of thousands of short-lived objects (tubes, XML elements, records), none in a
     cycle, and each full collection that their allocations set off walks every object of the run as well
     (its graphs with their attribute dicts): on the 100k-polygon level, a third of the GraphML writer's time
-    and a seventh of the GLB writer's, at load 4.5 (docs/performance.md). Nothing collectable is lost: the
+    at load 4.5 (docs/performance.md). Nothing collectable is lost: the
     collector runs again as soon as it is back on.
     """
     enabled = gc.isenabled()
