@@ -28,7 +28,7 @@ def show(value: Any) -> str:
     if isinstance(value, dict):
         return "a mapping"
     if isinstance(value, list):
-        return "a list"
+        return f"a list of {len(value)} item{'s' if len(value) != 1 else ''}"
     return str(value)
 
 
@@ -109,7 +109,9 @@ def describe_validation_error(exc: ValidationError, model: type[BaseModel], pref
         known = ", ".join(owner.model_fields) if owner else ""
         hint = f"expected one of: {known}" if known else "no keys are accepted here"
         return f"{path}: unknown key ({hint})"
-    if kind == "missing":
+    if kind == "missing" and loc and isinstance(loc[-1], int):  # a tuple given too few items: the list is wrong
+        loc, path = loc[:-1], path.rpartition(".")[0]
+    elif kind == "missing":
         return f"{path}: required key is missing"
     if kind in {"model_type", "dict_type", "model_attributes_type"}:
         return f"{path}: expected a mapping, got {show(error.get('input'))}"

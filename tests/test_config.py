@@ -102,7 +102,7 @@ def test_extends_cycle_is_an_error(tmp_path):
         ("agent: 3\n", "c.yaml: agent: expected a mapping, got 3"),
         ("analyzers: {plugin: degree}\n", "c.yaml: analyzers: expected a list of mappings, got a mapping"),
         ("stop_after: never\n", "c.yaml: stop_after: expected one of 'graph',"),
-        ("- a\n- b\n", "c.yaml: expected a mapping of settings at the top level, got a list"),
+        ("- a\n- b\n", "c.yaml: expected a mapping of settings at the top level, got a list of 2 items"),
         ("agent: {radius: [1\n", "c.yaml: invalid YAML at line"),
         ("extends: no_such_preset\n", "c.yaml: extends: no config file or preset named 'no_such_preset'"),
         ("agent: {radius: 0.3}\nagent: {height: 1.5}\n",
