@@ -256,8 +256,7 @@ def steiner_forest(
         nodes += sorted(tree.nodes)
         edges += sorted((u, v) if u <= v else (v, u) for u, v in tree.edges)
     # the groups' nodes and edges are disjoint: all nodes first then all edges make the same graph as group by group
-    node_data, adjacency = dict(graph.nodes(data=True)), dict(graph.adjacency())
-    return graph_of(nx.Graph(), {node: dict(node_data[node]) for node in nodes}, ((u, v, dict(adjacency[u][v])) for u, v in edges))
+    return _with_graph_attributes(graph_of(nx.Graph(), {node: {} for node in nodes}, ((u, v, {}) for u, v in edges)), graph)
 
 
 def _with_graph_attributes(part: nx.Graph, graph: nx.Graph) -> nx.Graph:

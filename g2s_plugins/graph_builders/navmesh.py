@@ -57,8 +57,8 @@ from pydantic import Field
 
 from g2s_core.config import AgentConfig
 from g2s_core.errors import G2SError
-from g2s_core.plugin import hookimpl
 from g2s_core.model import graph_of
+from g2s_core.plugin import hookimpl
 from g2s_plugins._surface import MAX_SURFACE_GAP
 from g2s_plugins.recast import NavMesh, RecastParams, SettingsError, build_navmesh
 from g2s_plugins.walkable_check import check_walkable_surface, no_walkable_surface

@@ -109,7 +109,7 @@ def add_loops(graph: nx.Graph, structure: nx.Graph, stretch: float, min_gain: fl
     # the structure's nodes and edges, then every path's nodes, then every path's edges (the insertion order of
     # adding them path by path), without attributes: the pipeline copies the graph's onto them all at once
     paths_ids = [[arrays.nodes[i] for i in path] for path in added]
-    nodes = dict.fromkeys(itertools.chain(structure, (node for ids in paths_ids for node in ids)))
+    nodes = itertools.chain(structure, (node for ids in paths_ids for node in ids))
     edges = itertools.chain(structure.edges, ((u, v) for ids in paths_ids for u, v in zip(ids, ids[1:])))
     return graph_of(nx.Graph(**structure.graph), {node: {} for node in nodes}, ((u, v, {}) for u, v in edges))
 

@@ -425,7 +425,7 @@ def to_networkx(
     order = np.argsort(lo * csr.n + hi)
     u, v = csr.nodes[lo[order]].tolist(), csr.nodes[hi[order]].tolist()
     # add_weighted_edges_from's graph (nodes as the edges first name them), without its checks per edge
-    nodes = dict.fromkeys(itertools.chain.from_iterable(zip(u, v)))
+    nodes = itertools.chain.from_iterable(zip(u, v))
     return graph_of(tree, {node: {} for node in nodes}, ((a, b, {"weight": w}) for a, b, w in zip(u, v, weights[order].tolist())))
 
 
