@@ -36,6 +36,9 @@ HEIGHT_TOLERANCE = 0.01
 GROUND_MARGIN = 0.1
 """Metres the ground may lie below the straight line between two points, on top of the agent's climb."""
 
+MAX_OCCUPANCY_CELLS = 1 << 25
+"""Cells (bytes) at most in a :class:`BoxOccupancy` grid; a larger level gets larger cells."""
+
 GRAZE_NUDGE = 1e-4
 """Metres a ray that grazes a triangle is moved aside before it is cast again."""
 
@@ -95,9 +98,9 @@ class RayCaster:
         self.mesh = mesh
         self.intersector, self.backend = _make_intersector(mesh)
         self._embree: Any = None
-        triangles = np.asarray(mesh.triangles, dtype=np.float64)
-        self._plane_points = triangles[:, 0, :]
-        self._centroids = triangles.mean(axis=1)
+        self.triangles = np.asarray(mesh.triangles, dtype=np.float64).reshape(-1, 3, 3)
+        self._plane_points = self.triangles[:, 0, :]
+        self._centroids = self.triangles.mean(axis=1)
         self.face_normals = np.asarray(mesh.face_normals, dtype=np.float64)
         self.rays_cast = 0
 
@@ -223,6 +226,57 @@ class RayCaster:
         ok = faces >= 0
         ok[ok] = self.face_normals[faces[ok], 1] >= math.cos(math.radians(max_slope_deg)) - 1e-9
         return ok
+
+
+class BoxOccupancy:
+    """The cells of a regular 3-D grid that the widened bounding boxes of some triangles touch.
+
+    A broad phase for rays that only matter when they pass near those
+    triangles: a point in no touched cell lies farther than ``widen`` from
+    every one of them along each axis, so a ray from it shorter than that
+    cannot reach them, and need not be cast. Conservative: a touched cell
+    only means "maybe near" (the box of a long diagonal triangle touches
+    cells far from it).
+
+    Args:
+        triangles: (m, 3, 3) corners, metres.
+        widen: (3,) metres each box grows by on both sides, per axis.
+        cell: edge of a cell, metres; grown until the grid has at most
+            ``MAX_OCCUPANCY_CELLS`` cells.
+    """
+
+    def __init__(self, triangles: np.ndarray, widen: np.ndarray, cell: float) -> None:
+        triangles = np.asarray(triangles, dtype=np.float64).reshape(-1, 3, 3)
+        lo = triangles.min(axis=1) - widen
+        hi = triangles.max(axis=1) + widen
+        self.origin = lo.min(axis=0) if len(triangles) else np.zeros(3)
+        extent = (hi.max(axis=0) - self.origin) if len(triangles) else np.zeros(3)
+        self.cell = max(float(cell), float(np.prod(extent + cell) / MAX_OCCUPANCY_CELLS) ** (1 / 3))
+        self.occupied = np.zeros(tuple(self._cell_of(self.origin + extent) + 1), dtype=bool)
+        # Many small triangles share their cell ranges: fill each range once.
+        for i0, j0, k0, i1, j1, k1 in np.unique(np.hstack([self._cell_of(lo), self._cell_of(hi)]), axis=0).tolist():
+            self.occupied[i0 : i1 + 1, j0 : j1 + 1, k0 : k1 + 1] = True
+
+    def _cell_of(self, points: np.ndarray) -> np.ndarray:
+        """(..., 3) int64 cell indices (floor is monotonic: a point inside a box gets a cell of its range)."""
+        return np.floor((points - self.origin) / self.cell).astype(np.int64)
+
+    def columns_free(self, points: np.ndarray, low: np.ndarray | float, high: np.ndarray | float) -> np.ndarray:
+        """(n,) bool: the vertical segment from ``points[i]`` raised by ``low`` to it raised by ``high``
+        (metres; scalars or (n,)) meets no touched cell."""
+        points = np.asarray(points, dtype=np.float64).reshape(-1, 3)
+        shape = np.array(self.occupied.shape)
+        bottom = self._cell_of(points + np.multiply.outer(low, UP))
+        top = self._cell_of(points + np.multiply.outer(high, UP))[:, 1]
+        inside = np.all((bottom[:, [0, 2]] >= 0) & (bottom[:, [0, 2]] < shape[[0, 2]]), axis=1)
+        free = np.ones(len(points), dtype=bool)
+        rows, i, j, k, top = np.nonzero(inside)[0], bottom[inside, 0], bottom[inside, 1], bottom[inside, 2], top[inside]
+        for step in range(int(np.max(top - j, initial=-1)) + 1):
+            level = j + step
+            touched = (level <= top) & (level >= 0) & (level < shape[1])
+            touched[touched] = self.occupied[i[touched], level[touched], k[touched]]
+            free[rows[touched]] = False
+        return free
 
 
 def all_hits_down(caster: RayCaster, xz: np.ndarray, top: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
