@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from functools import cached_property
 from typing import Any
 
 import numpy as np
@@ -71,12 +72,19 @@ class Hits:
     Attributes:
         face: (n,) int64, index of the triangle hit, -1 for no hit.
         distance: (n,) float64, metres along the ray, ``inf`` for no hit.
-        points: (n, 3) float64, where each ray hits, NaN for no hit.
+        origins: (n, 3) float64, the rays' starts.
+        unit: (n, 3) float64, the rays' unit directions.
     """
 
     face: np.ndarray
     distance: np.ndarray
-    points: np.ndarray
+    origins: np.ndarray
+    unit: np.ndarray
+
+    @cached_property
+    def points(self) -> np.ndarray:
+        """(n, 3) float64, where each ray hits, NaN for no hit (worked out on first use: most callers need none)."""
+        return self.origins + self.unit * np.where(self.face >= 0, self.distance, np.nan)[:, None]
 
     @property
     def hit(self) -> np.ndarray:
@@ -119,7 +127,7 @@ class RayCaster:
         origins = np.asarray(origins, dtype=np.float64).reshape(-1, 3)
         n = len(origins)
         if n == 0 or len(self.mesh.faces) == 0:
-            return Hits(np.full(n, -1, dtype=np.int64), np.full(n, np.inf), np.full((n, 3), np.nan))
+            return Hits(np.full(n, -1, dtype=np.int64), np.full(n, np.inf), origins, np.zeros((n, 3)))
         directions = np.asarray(directions, dtype=np.float64)
         if directions.ndim == 1:  # one direction for every ray: normalised once, as a row
             directions = directions[None, :]
@@ -135,8 +143,7 @@ class RayCaster:
             take_b = distance_b > distance_a
             face[grazing] = np.where(take_b, face_b, face_a)
             distance[grazing] = np.where(take_b, distance_b, distance_a)
-        points = origins + unit * np.where(face >= 0, distance, np.nan)[:, None]
-        return Hits(face, distance, points)
+        return Hits(face, distance, origins, unit)
 
     def all_hits(
         self, origins: np.ndarray, directions: np.ndarray
@@ -203,22 +210,6 @@ class RayCaster:
             distance[hit] = np.maximum(t, 0.0)
             grazing[hit] = flat
         return face, distance, grazing
-
-    def segments_clear(self, starts: np.ndarray, ends: np.ndarray) -> np.ndarray:
-        """(n,) bool: the segments ``starts[i] -> ends[i]`` cross no triangle.
-
-        A segment of zero length is clear.
-        """
-        starts = np.asarray(starts, dtype=np.float64).reshape(-1, 3)
-        ends = np.asarray(ends, dtype=np.float64).reshape(-1, 3)
-        vectors = ends - starts
-        lengths = np.linalg.norm(vectors, axis=1)
-        clear = np.ones(len(starts), dtype=bool)
-        moving = lengths > 1e-9
-        if np.any(moving):
-            hits = self.first_hits(starts[moving], vectors[moving])
-            clear[moving] = hits.distance >= lengths[moving]
-        return clear
 
     def walkable_faces(self, faces: np.ndarray, max_slope_deg: float) -> np.ndarray:
         """(n,) bool: ``faces`` (indices, -1 = none) are at most ``max_slope_deg`` from horizontal."""
@@ -321,8 +312,12 @@ class AgentShape:
 def clear_above(caster: RayCaster, origins: np.ndarray, needed: np.ndarray | float) -> np.ndarray:
     """(n,) bool: nothing lies within ``needed`` metres straight above each origin (one upward ray each)."""
     origins = np.asarray(origins, dtype=np.float64).reshape(-1, 3)
-    hits = caster.first_hits(origins, UP)
-    return hits.distance >= np.asarray(needed, dtype=np.float64) - HEIGHT_TOLERANCE
+    return has_room(caster.first_hits(origins, UP).distance, needed)
+
+
+def has_room(distance: np.ndarray, needed: np.ndarray | float) -> np.ndarray:
+    """(n,) bool: upward rays that hit at ``distance`` (metres, ``inf``: nothing) leave ``needed`` metres free."""
+    return distance >= np.asarray(needed, dtype=np.float64) - HEIGHT_TOLERANCE
 
 
 def head_room(caster: RayCaster, ground: np.ndarray, agent: AgentShape) -> np.ndarray:
@@ -368,7 +363,10 @@ def walk_segments(
     if n == 0:
         return np.zeros(0, dtype=bool), np.zeros(0)
     lift = 0.5 * agent.height
-    ok = caster.segments_clear(starts + lift * UP, ends + lift * UP)
+    low, high = starts + lift * UP, ends + lift * UP
+    vectors = high - low
+    lengths = np.linalg.norm(vectors, axis=1)
+    moving = lengths > 1e-9
 
     # Probe points: k_i intervals per segment, k_i + 1 points (ends included).
     delta = ends - starts
@@ -381,13 +379,24 @@ def walk_segments(
     t = step_index / np.repeat(intervals, counts)
     line = starts[segment] + t[:, None] * delta[segment]
     reach = lift + agent.max_climb + margin
-    down = caster.first_hits(line + lift * UP, -UP)
-    good = (down.distance <= reach) & caster.walkable_faces(down.face, agent.max_slope_deg)
-    ground_y = np.where(good, line[:, 1] + lift - np.where(good, down.distance, 0.0), line[:, 1])
-    # Head room from the same lifted point (the downward ray found nothing between
-    # it and the ground), so both rays describe the same vertical line.
+
+    # One intersector call for every ray (each ray is cast on its own, so the
+    # answers are those of separate calls; small batches cost mostly per call):
+    # the lifted segments, then down and up from each lifted probe point, the
+    # same vertical line (the downward ray found nothing between it and the ground).
+    lifted = line + lift * UP
+    rays = int(np.count_nonzero(moving))
+    hits = caster.first_hits(
+        np.concatenate([low[moving], lifted, lifted]),
+        np.concatenate([vectors[moving], np.broadcast_to(-UP, lifted.shape), np.broadcast_to(UP, lifted.shape)]),
+    )
+    ok = np.ones(n, dtype=bool)
+    ok[moving] = hits.distance[:rays] >= lengths[moving]
+    down_distance, down_face = hits.distance[rays : rays + len(line)], hits.face[rays : rays + len(line)]
+    good = (down_distance <= reach) & caster.walkable_faces(down_face, agent.max_slope_deg)
+    ground_y = np.where(good, line[:, 1] + lift - np.where(good, down_distance, 0.0), line[:, 1])
     above = agent.height - (line[:, 1] + lift - ground_y)
-    good[good] = clear_above(caster, line[good] + lift * UP, above[good])
+    good[good] = has_room(hits.distance[rays + len(line) :][good], above[good])
     if max_gap is not None:
         good &= np.abs(ground_y - line[:, 1]) <= max_gap
     has_ground = np.logical_and.reduceat(good, first)

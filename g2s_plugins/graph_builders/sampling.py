@@ -50,6 +50,7 @@ import numpy as np
 import trimesh
 from pydantic import Field
 from scipy import sparse
+from scipy.sparse import csgraph
 from scipy.spatial import cKDTree
 
 from g2s_core.errors import G2SError
@@ -363,6 +364,35 @@ def poisson_disk_subset(points: np.ndarray, radius: float, seed: int = 0) -> np.
     return np.sort(np.asarray(taken, dtype=np.int64))
 
 
+def _small_regions(count: int, edges: np.ndarray, areas: np.ndarray, min_area: float) -> tuple[np.ndarray, int]:
+    """``(small, parts)``: (count,) bool, the samples of connected parts standing for less than ``min_area``
+    m² in all; and how many such parts there are (none if ``min_area`` is 0).
+
+    ``edges``: (m, 2) sample ids. A part's area is summed in the order
+    networkx's ``connected_components`` gives its nodes (breadth first from
+    its lowest id, neighbours in id order) wherever another order could
+    round it to the other side of ``min_area``, so the parts dropped are
+    those a sum over the networkx graph would drop.
+    """
+    if min_area <= 0 or count == 0:
+        return np.zeros(count, dtype=bool), 0
+    links = sparse.coo_array((np.ones(len(edges), dtype=np.int8), (edges[:, 0], edges[:, 1])), shape=(count, count))
+    parts, part = csgraph.connected_components(links, directed=False)
+    totals = np.bincount(part, weights=areas, minlength=parts)
+    # Two orders of summing k positive terms differ by less than k float epsilons of the total.
+    close = np.abs(totals - min_area) <= 1e-15 * np.bincount(part, minlength=parts) * totals
+    if np.any(close):
+        nodes = np.nonzero(close[part])[0]
+        subgraph = nx.Graph()
+        subgraph.add_nodes_from(nodes.tolist())
+        subgraph.add_edges_from(edges[close[part[edges[:, 0]]]].tolist())
+        area_list = areas.tolist()
+        for component in nx.connected_components(subgraph):
+            totals[part[next(iter(component))]] = sum(area_list[n] for n in component)
+    small = totals < min_area
+    return small[part], int(np.count_nonzero(small))
+
+
 # --- the hook ---------------------------------------------------------------------------
 
 
@@ -444,6 +474,14 @@ def build_sampled_graph(
 
     lengths = np.linalg.norm(samples[edges[:, 1]] - samples[edges[:, 0]], axis=1)
     weights = lengths + params.slope_penalty * np.abs(samples[edges[:, 1], 1] - samples[edges[:, 0], 1])
+    min_area = params.min_region_area if params.min_region_area is not None else 16.0 * agent.radius**2
+    small, dropped = _small_regions(len(samples), edges, areas, min_area)
+    if dropped:
+        # Ids stay in order (0..k-1 among the kept samples), edges in their sorted order.
+        new_id = np.cumsum(~small) - 1
+        kept_edge = ~small[edges[:, 0]]
+        samples, sample_normals, areas = samples[~small], sample_normals[~small], areas[~small]
+        edges, weights = new_id[edges[kept_edge]], weights[kept_edge]
     pos = [tuple(p) for p in samples.tolist()]
     nrm = [tuple(v) for v in sample_normals.tolist()]
     area_list = areas.astype(np.float64).tolist()
@@ -452,19 +490,9 @@ def build_sampled_graph(
         for i in range(len(pos))
     )
     graph.add_edges_from((a, b, {"weight": w}) for (a, b), w in zip(edges.tolist(), weights.tolist()))
-
-    dropped = 0
-    min_area = params.min_region_area if params.min_region_area is not None else 16.0 * agent.radius**2
-    if min_area > 0:
-        for component in list(nx.connected_components(graph)):
-            if sum(graph.nodes[n]["area"] for n in component) < min_area:
-                graph.remove_nodes_from(component)
-                dropped += 1
-        if dropped:
-            graph = nx.convert_node_labels_to_integers(graph, ordering="sorted")
     lap("graph")
     stats.update(
-        samples=int(len(samples)),
+        samples=int(len(small)),
         nodes=graph.number_of_nodes(),
         edges=graph.number_of_edges(),
         regions_dropped=dropped,
