@@ -40,6 +40,10 @@ GROUND_MARGIN = 0.1
 MAX_OCCUPANCY_CELLS = 1 << 25
 """Cells (bytes) at most in a :class:`BoxOccupancy` grid; a larger level gets larger cells."""
 
+JOINT_CALL_MAX_RAYS = 2048
+"""Rays up to which :meth:`RayCaster.first_hits_of` casts its batches in one call (about where
+the per-call cost saved, ~70 µs, matches the cost of a direction per ray, ~0.1 µs a ray)."""
+
 GRAZE_NUDGE = 1e-4
 """Metres a ray that grazes a triangle is moved aside before it is cast again."""
 
@@ -144,6 +148,26 @@ class RayCaster:
             face[grazing] = np.where(take_b, face_b, face_a)
             distance[grazing] = np.where(take_b, distance_b, distance_a)
         return Hits(face, distance, origins, unit)
+
+    def first_hits_of(self, batches: list[tuple[np.ndarray, np.ndarray]]) -> list[Hits]:
+        """:meth:`first_hits` of several ``(origins, directions)`` batches, in that order.
+
+        Together they are cast in one call when they hold at most
+        ``JOINT_CALL_MAX_RAYS`` rays (a small batch costs mostly per call),
+        else one call each (a batch sharing one direction normalises it once).
+        Each ray is cast on its own either way: the answers are the same.
+        """
+        sizes = [len(origins) for origins, _ in batches]
+        if sum(sizes) > JOINT_CALL_MAX_RAYS:
+            return [self.first_hits(origins, directions) for origins, directions in batches]
+        origins = np.concatenate([np.asarray(o, dtype=np.float64).reshape(-1, 3) for o, _ in batches])
+        directions = np.concatenate([np.broadcast_to(d, (len(o), 3)) for o, d in batches])
+        hits = self.first_hits(origins, directions)
+        ends = np.cumsum(sizes).tolist()
+        return [
+            Hits(hits.face[a:b], hits.distance[a:b], hits.origins[a:b], hits.unit[a:b])
+            for a, b in zip([0, *ends[:-1]], ends)
+        ]
 
     def all_hits(
         self, origins: np.ndarray, directions: np.ndarray
@@ -380,23 +404,16 @@ def walk_segments(
     line = starts[segment] + t[:, None] * delta[segment]
     reach = lift + agent.max_climb + margin
 
-    # One intersector call for every ray (each ray is cast on its own, so the
-    # answers are those of separate calls; small batches cost mostly per call):
-    # the lifted segments, then down and up from each lifted probe point, the
+    # The lifted segments, then down and up from each lifted probe point: the
     # same vertical line (the downward ray found nothing between it and the ground).
     lifted = line + lift * UP
-    rays = int(np.count_nonzero(moving))
-    hits = caster.first_hits(
-        np.concatenate([low[moving], lifted, lifted]),
-        np.concatenate([vectors[moving], np.broadcast_to(-UP, lifted.shape), np.broadcast_to(UP, lifted.shape)]),
-    )
+    across, down, up = caster.first_hits_of([(low[moving], vectors[moving]), (lifted, -UP), (lifted, UP)])
     ok = np.ones(n, dtype=bool)
-    ok[moving] = hits.distance[:rays] >= lengths[moving]
-    down_distance, down_face = hits.distance[rays : rays + len(line)], hits.face[rays : rays + len(line)]
-    good = (down_distance <= reach) & caster.walkable_faces(down_face, agent.max_slope_deg)
-    ground_y = np.where(good, line[:, 1] + lift - np.where(good, down_distance, 0.0), line[:, 1])
+    ok[moving] = across.distance >= lengths[moving]
+    good = (down.distance <= reach) & caster.walkable_faces(down.face, agent.max_slope_deg)
+    ground_y = np.where(good, line[:, 1] + lift - np.where(good, down.distance, 0.0), line[:, 1])
     above = agent.height - (line[:, 1] + lift - ground_y)
-    good[good] = has_room(hits.distance[rays + len(line) :][good], above[good])
+    good[good] = has_room(up.distance[good], above[good])
     if max_gap is not None:
         good &= np.abs(ground_y - line[:, 1]) <= max_gap
     has_ground = np.logical_and.reduceat(good, first)

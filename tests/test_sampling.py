@@ -16,12 +16,23 @@ from scipy.spatial import cKDTree
 
 from g2s_core import pipeline
 from g2s_plugins.samples import levels as samples
-from g2s_core.config import AgentConfig, load_config, load_raw_config, parse_config
+from g2s_core.config import AgentConfig, MeshConfig, load_config, load_raw_config, parse_config
 from g2s_core.errors import G2SError
-from g2s_core.mesh import mesh_sha256
+from g2s_core.mesh import generate_level, mesh_sha256
 from g2s_core.model import RunContext
 from g2s_core.registry import Registry
-from g2s_plugins._raycasting import AgentShape, RayCaster, walk_segments
+from g2s_plugins._raycasting import (
+    COMPASS,
+    EPSILON,
+    GROUND_MARGIN,
+    UP,
+    AgentShape,
+    BoxOccupancy,
+    RayCaster,
+    clear_above,
+    head_room,
+    walk_segments,
+)
 from g2s_plugins.graph_builders import sampling
 
 AGENT = AgentConfig(radius=0.5, height=2.0, max_climb=0.4, max_slope=45.0)
@@ -409,3 +420,105 @@ def test_embree_caster_without_trimeshs_private_scene_takes_the_public_call():
     assert public._embree is False
     np.testing.assert_array_equal(a.face, b.face)
     np.testing.assert_array_equal(a.distance, b.distance)
+
+
+# --- rays saved without changing an answer ------------------------------------------------
+
+
+def test_box_occupancy_never_frees_a_column_that_meets_a_widened_box():
+    rng = np.random.default_rng(3)
+    corners = rng.uniform(-5, 5, (40, 3, 3)) * np.array([1.0, 0.3, 1.0])
+    widen = np.array([0.5, 0.01, 0.5])
+    grid = BoxOccupancy(corners, widen, cell=0.25)
+    points = rng.uniform(-7, 7, (4000, 3)) * np.array([1.0, 0.3, 1.0])
+    low, high = -0.4, 1.2
+    lo, hi = corners.min(axis=1) - widen, corners.max(axis=1) + widen
+    meets = (
+        (points[:, None, 0] >= lo[:, 0]) & (points[:, None, 0] <= hi[:, 0])
+        & (points[:, None, 2] >= lo[:, 2]) & (points[:, None, 2] <= hi[:, 2])
+        & (points[:, None, 1] + high >= lo[:, 1]) & (points[:, None, 1] + low <= hi[:, 1])
+    ).any(axis=1)
+    free = grid.columns_free(points, low, high)
+    assert not np.any(free & meets)
+    assert free.sum() > 0.2 * len(points)  # and it does free the columns far from every box
+    assert BoxOccupancy(np.zeros((0, 3, 3)), widen, cell=0.25).columns_free(points, low, high).all()
+
+
+def test_disk_inside_its_triangle():
+    triangle = np.array([[0.0, 0.0, 0.0], [4.0, 0.0, 0.0], [0.0, 0.0, 4.0]])
+    points = np.array([[1.0, 0.0, 1.0], [0.4, 0.0, 1.0], [1.0, 0.0, 0.4], [1.8, 0.0, 1.8], [5.0, 0.0, 5.0]])
+    for corners in (triangle, triangle[::-1]):  # either winding
+        inside = sampling._disk_inside(points, np.broadcast_to(corners, (len(points), 3, 3)), 0.5)
+        assert inside.tolist() == [True, False, False, False, False]
+    edge_on = np.array([[0.0, 0.0, 0.0], [4.0, 0.0, 0.0], [4.0, 3.0, 0.0]])  # a wall: no area seen from above
+    assert not sampling._disk_inside(points[:1], edge_on[None], 0.0).any()
+
+
+@pytest.mark.parametrize(
+    "name, scale",
+    [("building", 1.0), ("two_storey", 1.0), ("bridge", 1.0), ("terrain", 1.0), ("stair_deck", 1.0), ("catwalk", 1.0),
+     ("wall_tops", 1.0), ("building", 4.0)],
+)
+def test_agent_fits_saves_rays_not_answers(name, scale):
+    mesh = generate_level(f"sample:{name}", MeshConfig(scale=scale))
+    agent = AgentShape.from_config(AGENT)
+    surface = sampling.walkable_surface(mesh, agent)
+    points, faces, _ = sampling._poisson_candidates(surface, 1.0 * scale, sampling.Params())
+    shortcuts, walls_only, every_ray = RayCaster(mesh), RayCaster(mesh), RayCaster(mesh)
+    fits = sampling.agent_fits(shortcuts, points, agent, 0.5, surface.triangles[faces])
+    np.testing.assert_array_equal(fits, sampling.agent_fits(walls_only, points, agent, 0.5))
+    np.testing.assert_array_equal(fits, _agent_fits_with_every_ray(every_ray, points, agent, 0.5))
+    assert shortcuts.rays_cast <= walls_only.rays_cast < every_ray.rays_cast
+    if scale > 1:  # 0.8 m thick floors, large rooms: ground all around is known for most candidates
+        assert shortcuts.rays_cast < 0.5 * walls_only.rays_cast
+
+
+def _agent_fits_with_every_ray(caster: RayCaster, points: np.ndarray, agent: AgentShape, clearance: float) -> np.ndarray:
+    """agent_fits without any broad phase: 24 wall rays and 16 ledge rays per point."""
+    ok = head_room(caster, points, agent)
+    levels = sorted({round(min(agent.max_climb + GROUND_MARGIN, agent.height - EPSILON), 6),
+                     round(0.5 * agent.height, 6), round(agent.height - 5 * EPSILON, 6)})
+    for level in levels:
+        for direction in COMPASS:
+            hits = caster.first_hits(points + level * UP, direction)
+            ok &= ~((hits.distance < clearance) & ~caster.walkable_faces(hits.face, agent.max_slope_deg))
+    reach = float(agent.max_rise(clearance)) + GROUND_MARGIN
+    probe = (points[:, None, :] + clearance * COMPASS[None, :, :]).reshape(-1, 3)
+    down = caster.first_hits(probe + reach * UP, -UP)
+    ground = (down.distance <= 2.0 * reach) & caster.walkable_faces(down.face, agent.max_slope_deg)
+    ground &= clear_above(caster, probe + reach * UP, agent.height - np.where(ground, down.distance, 0.0))
+    return ok & ground.reshape(len(points), len(COMPASS)).all(axis=1)
+
+
+def test_small_regions_are_summed_as_networkx_orders_them():
+    # 0.1 + 0.2 + 0.3 rounds to 0.6000000000000001 in this order, to 0.6 in another:
+    # a part standing for "0.6" m² is dropped or kept by its order of summing.
+    areas = np.array([0.1, 0.2, 0.3, 0.3, 0.2, 0.1, 5.0, 0.05])
+    edges = np.array([[0, 1], [1, 2], [3, 4], [4, 5], [6, 7]])
+    for min_area in (0.6, 0.6000000000000001, 1.0, 5.06, 0.0):
+        graph = nx.Graph()
+        graph.add_nodes_from((i, {"area": a}) for i, a in enumerate(areas.tolist()))
+        graph.add_edges_from(edges.tolist())
+        expected = np.zeros(len(areas), dtype=bool)
+        parts = 0
+        if min_area > 0:
+            for component in nx.connected_components(graph):
+                if sum(graph.nodes[n]["area"] for n in component) < min_area:
+                    expected[list(component)] = True
+                    parts += 1
+        small, dropped = sampling._small_regions(len(areas), edges, areas, min_area)
+        assert small.tolist() == expected.tolist() and dropped == parts, min_area
+
+
+def test_joint_ray_call_gives_the_separate_calls_answers():
+    mesh = level(floor(), box((-0.1, -0.3, -5.0), (0.1, 3.0, 0.0)), box((2.0, -0.1, 1.0), (3.0, 0.3, 4.0)))
+    caster = RayCaster(mesh)
+    rng = np.random.default_rng(5)
+    for count in (5, 2000):  # one call, then one call per batch
+        origins = np.column_stack([rng.uniform(-6, 6, count), rng.uniform(-1, 4, count), rng.uniform(-6, 6, count)])
+        batches = [(origins, rng.normal(size=(count, 3))), (origins, np.array([0.0, -1.0, 0.0])), (origins[:3], np.array([0.0, 1.0, 0.0]))]
+        for hits, (o, d) in zip(caster.first_hits_of(batches), batches):
+            alone = caster.first_hits(o, d)
+            np.testing.assert_array_equal(hits.face, alone.face)
+            np.testing.assert_array_equal(hits.distance, alone.distance)
+            np.testing.assert_array_equal(hits.points, alone.points)
