@@ -17,6 +17,8 @@ wanted. No Recast is involved: ``context.navmesh`` stays ``None``.
    height); no ledge within ``clearance`` (ground found at that distance in 8
    directions, within a step or the max slope, with head room). This erodes
    the walkable surface by ``clearance`` as Recast erodes it by the radius.
+   Rays whose answer the geometry near a candidate already gives are not
+   cast (:class:`_Surroundings`); the answers are the same.
 4. *Samples*: for ``poisson``, a maximal Poisson-disk subset of the
    surviving candidates (no two closer than ``spacing``, every candidate
    within ``spacing`` of a sample), chosen by seeded dart throwing
