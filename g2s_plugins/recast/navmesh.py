@@ -10,6 +10,7 @@ attribute and method here takes and returns world coordinates all the same.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
@@ -113,6 +114,8 @@ class NavMesh:
         origin.flags.writeable = False
         self.local_origin: np.ndarray = origin
         self._shifted = bool(origin.any())
+        # a query point's conversion, once per raycast: near the origin _vec itself, no call more than before
+        self._local: Callable[[Any], tuple[float, float, float]] = self._shifted_point if self._shifted else _vec
         local_vertices, local_detail = core.vertices, core.detail_vertices
         self.vertices: np.ndarray = self._world(local_vertices)
         self.polygons: np.ndarray = core.polygons
@@ -280,17 +283,15 @@ class NavMesh:
         return f"NavMesh(polygons={self.polygon_count}, vertices={len(self.vertices)})"
 
     # ------------------------------------------------------------ frames
-    # Near the origin both are the identity, not a subtraction of zeros: -0.0 + 0.0 is 0.0, and the arrays of such
+    # Near the origin these are the identity, not an addition of zeros: -0.0 + 0.0 is 0.0, and the arrays of such
     # a level stay Recast's values bit for bit.
     def _world(self, local: np.ndarray) -> np.ndarray:
         """(..., 3) local coordinates -> world (float64)."""
         return local + self.local_origin if self._shifted else local
 
-    def _local(self, p) -> tuple[float, float, float]:
+    def _shifted_point(self, p) -> tuple[float, float, float]:
         """One world point (a 3-sequence) -> local, as the extension takes it."""
         x, y, z = _vec(p)
-        if not self._shifted:
-            return (x, y, z)
         ox, oy, oz = self.local_origin
         return (x - float(ox), y - float(oy), z - float(oz))
 
