@@ -1,8 +1,8 @@
 """The local frame a navmesh is built in: levels far from the origin keep their single-precision detail.
 
-Recast and Detour compute in single precision, which keeps 2^-23 of a
-coordinate's magnitude: 0.12 mm below 1 km, but 1 mm at 10 km and 6 cm at
-1,000 km, enough to move a wall across a cell edge. A level exported in world
+Recast and Detour compute in single precision, which keeps at most 2^-23 of
+a coordinate's size between values: 0.06 mm below 1 km, but 1 mm at 10 km and
+6 cm at 1,000 km, enough to move a wall across a cell edge. A level exported in world
 coordinates (a tile of an open world, GIS terrain) is therefore translated in
 double precision before it reaches Recast, and every coordinate of the built
 navmesh is translated back (:class:`~.navmesh.NavMesh` takes and returns world
@@ -35,9 +35,9 @@ import numpy as np
 __all__ = ["NEAR_ORIGIN", "local_origin"]
 
 NEAR_ORIGIN = 1024.0
-"""Half the width of the window the local origin is chosen in, m (2^10). Below 2^10 m single precision keeps
-2^-13 m (0.12 mm) between values: 1/400 of the finest automatic cell size (0.05 m) and 1/80 of the finest
-automatic cell height (0.01 m). Measured on nav_test.obj (map_analysis): moved by up to 2,000 m its navmesh
+"""Half the width of the window the local origin is chosen in, m (2^10). A level less than 2 km across then lies
+within 2^11 m of its local origin, where single precision keeps at most 2^-13 m (0.12 mm) between values: 1/400 of
+the finest automatic cell size (0.05 m) and 1/80 of the finest automatic cell height (0.01 m). Measured on nav_test.obj (map_analysis): moved by up to 2,000 m its navmesh
 keeps its 173 polygons (centres within 0.16 mm), moved by 3,000 m and more it gains one (docs/navmesh.md,
 "Levels far from the origin")."""
 
