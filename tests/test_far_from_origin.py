@@ -149,3 +149,15 @@ def test_nav_test_moved_by_10_km_keeps_its_91_structure_nodes(shared_data):
     counts = [g2s_core.run(moved(level, (d, 0.0, d)), "map_analysis").structure.number_of_nodes()
               for d in (0.0, 1e4)]
     assert counts == [91, 91]  # 93 before the local frame (docs/navmesh.md)
+
+
+@pytest.mark.parametrize("shift", [(0.0, 0.0, 0.0), (100_000.0, 5.0, 100_000.0), (-3e6, 0.0, 7e6)])
+def test_region_vertex_keys_count_from_the_level_s_own_corner(shift):
+    """The chokepoints/regions analyzers key vertices to 1 cm in 21 bits from the level's corner, not the origin:
+    a level 10 m across keys alike wherever it lies (it used to be refused beyond about 21 km when every
+    coordinate was positive)."""
+    from g2s_plugins.decomposition import _point_keys
+
+    points = np.array([[0.0, 0.0, 0.0], [10.0, 0.0, 0.0], [10.0, 0.0, 10.0], [10.004, 0.0, 10.0], [0.0, 3.0, 5.0]])
+    _, groups = np.unique(_point_keys(points + np.asarray(shift)), return_inverse=True)
+    assert groups.reshape(-1).tolist() == [0, 2, 3, 3, 1]
