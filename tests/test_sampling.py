@@ -18,7 +18,7 @@ from g2s_core import pipeline
 from g2s_plugins.samples import levels as samples
 from g2s_core.config import AgentConfig, MeshConfig, load_config, load_raw_config, parse_config
 from g2s_core.errors import G2SError
-from g2s_core.mesh import generate_level, mesh_sha256
+from g2s_core.mesh import generate_level, load_mesh, mesh_sha256
 from g2s_core.model import RunContext
 from g2s_core.registry import Registry
 from g2s_plugins._raycasting import (
@@ -471,6 +471,18 @@ def test_agent_fits_saves_rays_not_answers(name, scale):
     assert shortcuts.rays_cast <= walls_only.rays_cast < every_ray.rays_cast
     if scale > 1:  # 0.8 m thick floors, large rooms: ground all around is known for most candidates
         assert shortcuts.rays_cast < 0.5 * walls_only.rays_cast
+
+
+def test_agent_fits_far_from_the_origin_saves_no_ray_it_needs(shared_data):
+    # 10,000 km out a ray reaches Embree with its origin rounded to float32 (up to
+    # half a metre): candidates that close to a wall must still cast their rays.
+    mesh = load_mesh(shared_data / "nav_test.obj")[0]
+    mesh.vertices = mesh.vertices + np.array([1e7, 50.0, -3e6])
+    agent = AgentShape.from_config(AGENT)
+    surface = sampling.walkable_surface(mesh, agent)
+    points, faces, _ = sampling._poisson_candidates(surface, 1.0, sampling.Params())
+    fits = sampling.agent_fits(RayCaster(mesh), points, agent, 0.5, surface.triangles[faces])
+    np.testing.assert_array_equal(fits, _agent_fits_with_every_ray(RayCaster(mesh), points, agent, 0.5))
 
 
 def _agent_fits_with_every_ray(caster: RayCaster, points: np.ndarray, agent: AgentShape, clearance: float) -> np.ndarray:

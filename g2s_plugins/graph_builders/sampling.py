@@ -240,8 +240,11 @@ class _Surroundings:
     Every triangle's bounding box, grown by the clearance sideways and by
     ``margin`` on all sides, goes into one of two :class:`BoxOccupancy` grids:
     ``steep`` (steeper than the max slope: walls, ceilings, undersides) or
-    ``walkable``. The margin covers Embree's float32 arithmetic and the
-    nudge of a grazing ray (:meth:`RayCaster.first_hits`).
+    ``walkable``. The margin covers how far Embree may see a ray from where
+    it is: each origin goes to Embree rounded to float32 at its absolute
+    coordinates (:meth:`RayCaster._first_faces`, as trimesh's own call does:
+    half a metre 10,000 km out), the level is scaled in float32, and a
+    grazing ray is cast again nudged aside (:meth:`RayCaster.first_hits`).
 
     * No steep cell along a candidate's column from knee to head: no
       horizontal ray of ``clearance`` metres from it can meet a wall.
@@ -253,7 +256,10 @@ class _Surroundings:
         self.agent, self.clearance = agent, clearance
         self.reach = float(agent.max_rise(clearance)) + GROUND_MARGIN
         """Metres above the probes the ledge rays start from (a step or the max slope, plus the ground margin)."""
-        self.margin = max(EPSILON, 1e-6 * float(np.ptp(corners.reshape(-1, 3), axis=0).max(initial=0.0)))
+        size = float(np.ptp(corners.reshape(-1, 3), axis=0).max(initial=0.0))
+        farthest = float(np.abs(corners).max(initial=0.0)) + clearance + self.reach + agent.height
+        self.margin = EPSILON + 1e-6 * size + 2.0**-22 * farthest
+        """Metres (see above; 2^-22 is twice float32's relative rounding: at most half an ulp per coordinate)."""
         widen = np.array([clearance + self.margin, self.margin, clearance + self.margin])
         walkable = caster.walkable_faces(np.arange(len(corners)), agent.max_slope_deg)
         cell = max(clearance, 0.25)
@@ -277,7 +283,7 @@ class _Surroundings:
         normals = np.cross(triangles[:, 1] - triangles[:, 0], triangles[:, 2] - triangles[:, 0])
         with np.errstate(divide="ignore", invalid="ignore"):
             drop = self.clearance * np.hypot(normals[:, 0], normals[:, 2]) / np.abs(normals[:, 1])
-        plain = _disk_inside(points, triangles, self.clearance + self.margin) & (drop <= self.reach - GROUND_MARGIN)
+        plain = _disk_inside(points, triangles, self.clearance + self.margin) & (drop <= self.reach - GROUND_MARGIN - self.margin)
         plain[plain] = self.steep.columns_free(points[plain], -drop[plain] - self.margin, top)
         plain[plain] = self.walkable.columns_free(points[plain], self.reach, top)
         return plain
