@@ -137,7 +137,7 @@ def traffic_ranks(graph: nx.Graph) -> dict[Hashable, float]:
     walks passing through it.
     """
     arrays = traffic.surface_arrays(graph)
-    flow = traffic.walking_flow(graph, max_sources=traffic.WALKING_SOURCES)
+    flow = traffic.arrays_walking_flow(arrays, max_sources=traffic.WALKING_SOURCES)
     rank = traffic.percentile(flow)
     walked = (traffic.origin_weight(arrays) > 0) | (flow > 0)
     return {node: value for node, value, keep in zip(arrays.nodes, rank.tolist(), walked.tolist()) if keep}

@@ -235,9 +235,9 @@ def _add_portal_nodes(
     for k, ((a, b), polygon, middle, ends_k) in enumerate(zip(pairs, polygons, middles.tolist(), endpoints.tolist())):
         attributes = {"portal": tuple(map(tuple, ends_k)), "width": widths[k]}
         previous, previous_pos = a, node_data[a]["pos"]
-        for polygon, pos in [*halves[2 * k], (polygon, middle), *halves[2 * k + 1]]:
-            pos = tuple(pos)
-            nodes.append((node, {"pos": pos, "normal": tuple(normals[polygon]), "area": 0.0, "on_navmesh": True, "polygon": -1}))
+        for on, point in [*halves[2 * k], (polygon, middle), *halves[2 * k + 1]]:
+            pos = tuple(point)
+            nodes.append((node, {"pos": pos, "normal": tuple(normals[on]), "area": 0.0, "on_navmesh": True, "polygon": -1}))
             edges.append((previous, node, {"weight": math.dist(previous_pos, pos), **attributes}))
             previous, previous_pos, node = node, pos, node + 1
         edges.append((previous, b, {"weight": math.dist(previous_pos, node_data[b]["pos"]), **attributes}))
