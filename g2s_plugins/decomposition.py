@@ -236,7 +236,8 @@ def obstacle_edges(start: np.ndarray, end: np.ndarray, max_area: float) -> np.nd
 def _point_keys(points: np.ndarray) -> np.ndarray:
     """(N,) int64 keys equal for points equal to 1 cm (21 bits a coordinate: levels up to 20 km across)."""
     cells = np.round(points * 100.0).astype(np.int64)
-    cells -= cells.min(axis=0, initial=0)
+    if len(cells):  # counted from the level's own corner, so a level far from the origin keys as one near it
+        cells -= cells.min(axis=0)
     if cells.size and cells.max() >= 1 << 21:
         raise PluginError("the level is more than 20 km across; chokepoints and regions cannot key its vertices")
     return (cells[:, 0] << 42) | (cells[:, 1] << 21) | cells[:, 2]

@@ -15,6 +15,10 @@ thread); a tiled grid has at most :data:`~.settings.MAX_TILES` tiles.
 Time guard: ``max_level_cells`` bounds the cells of the whole xz grid, so that a
 flat level read in the wrong units (100 times too large: no height to betray
 it) stops at once instead of building for an hour.
+
+Frame: Recast builds in the level's local frame (:mod:`.frame`), the vertices
+translated in double precision; a level is refused only where double
+precision itself keeps less than half a cell between coordinates.
 """
 
 from __future__ import annotations
@@ -25,6 +29,7 @@ from typing import Any
 import numpy as np
 
 from . import _recast
+from .frame import local_origin
 from .navmesh import NavMesh
 from .settings import (
     MAX_GRID_SIDE,
@@ -52,7 +57,7 @@ def build_navmesh(vertices, faces, agent: Any, params: RecastParams | None = Non
     """Build a navmesh, solo or tiled (see the tiling rule in the module docs).
 
     Args:
-        vertices: (N,3) float32/float64, metres, Y up.
+        vertices: (N,3) float32/float64, metres, Y up, world coordinates (the navmesh returns them too).
         faces: (M,3) integer vertex indices of triangles.
         agent: object with ``radius``, ``height``, ``max_climb`` (m), ``max_slope`` (deg).
         params: :class:`RecastParams`; ``None`` for the defaults.
@@ -81,11 +86,32 @@ def build_navmesh(vertices, faces, agent: Any, params: RecastParams | None = Non
         raise ValueError(f"Recast: expected (N,3) vertices and (M,3) faces, got {v.shape} and {f.shape}")
     if not np.isfinite(v).all():
         raise ValueError("Recast: vertices must be finite")
+    origin = np.zeros(3)
     if len(v):
+        check_precision(v, float(voxel_config(settings)["cs"]))
+        origin = local_origin(v.min(axis=0), v.max(axis=0))
+        if origin.any():
+            v = v - origin  # float64 whatever v was
         check_grid(v, settings, cell_size_given=params.cell_size is not None,
                    cell_height_given=params.cell_height is not None, max_level_cells=params.max_level_cells)
     core = _recast.build(v, f, **settings)
-    return NavMesh(core, settings)
+    return NavMesh(core, settings, origin)
+
+
+def check_precision(vertices: np.ndarray, cell_size: float) -> None:
+    """Refuse a level so far from the origin that double precision keeps less than half a cell between values.
+
+    Raises:
+        SettingsError: naming ``mesh``, with the distance a level can lie at with this cell size.
+    """
+    far = float(np.abs(vertices).max())
+    if np.spacing(far) > cell_size / 2:
+        reach = 2.0 ** (math.floor(math.log2(cell_size / 2)) + 53)
+        raise SettingsError(
+            f"mesh: vertices lie up to {far:.4g} m from the origin, where double precision keeps only "
+            f"{np.spacing(far):g} m between values, more than half a {cell_size:g} m cell; move the level "
+            f"within {reach:.4g} m of the origin"
+        )
 
 
 def check_grid(vertices: np.ndarray, settings: dict[str, Any], cell_size_given: bool = False,
@@ -94,7 +120,8 @@ def check_grid(vertices: np.ndarray, settings: dict[str, Any], cell_size_given: 
 
     Computes the grid as Recast does (float32 bounds, ``(int)(extent / cs + 0.5)``
     cells a side) in Python integers, so no size can overflow, and checks it
-    against the memory guard and Recast's and Detour's limits.
+    against the memory guard and Recast's and Detour's limits. ``vertices`` are
+    those Recast gets: in the local frame.
 
     Raises:
         SettingsError: naming ``graph.params.<key>`` when that setting was
@@ -110,16 +137,15 @@ def check_grid(vertices: np.ndarray, settings: dict[str, Any], cell_size_given: 
         )
     voxels = voxel_config(settings)
     cs, ch = float(voxels["cs"]), float(voxels["ch"])
-    far = float(np.abs(np.concatenate([lo, hi])).max())
-    if np.spacing(np.float32(far)) > cs / 2:  # Recast's rasteriser overruns its stack from about 2^22 m out
-        reach = 2.0 ** (math.floor(math.log2(cs / 2)) + 24)
-        raise SettingsError(
-            f"mesh: vertices lie up to {far:.4g} m from the origin, where Recast's single precision keeps only "
-            f"{np.spacing(np.float32(far)):g} m between values, more than half a {cs:g} m cell; move the level "
-            f"within {reach:.4g} m of the origin"
-        )
     size = f"{extent[0]:.4g} x {extent[2]:.4g} m (x, z), {extent[1]:.4g} m tall"
     cs_key = "graph.params.cell_size" if cell_size_given else "mesh"
+    far = float(np.abs(np.concatenate([lo, hi])).max())
+    if np.spacing(np.float32(far)) > cs / 2:  # Recast's rasteriser overruns its stack from about 2^22 m out
+        raise SettingsError(
+            f"{cs_key}: the level ({size}) reaches {far:.4g} m from its local origin (docs/navmesh.md), where "
+            f"Recast's single precision keeps only {np.spacing(np.float32(far)):g} m between values, more than "
+            f"half a {cs:g} m cell; {_SCALE_HINT}, or use a larger graph.params.cell_size"
+        )
     width, depth = (int(np.floor(e / cs + 0.5)) for e in (extent[0], extent[2]))
     if width < 1 or depth < 1:
         if cell_size_given and extent[0] > 0 and extent[2] > 0:

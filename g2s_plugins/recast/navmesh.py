@@ -3,11 +3,14 @@
 :class:`NavMesh` wraps the extension's ``NavMeshCore`` (one Detour tile, or
 several joined): it copies the mesh arrays once, computes per-polygon centres,
 normals and areas with numpy, and forwards raycasts and nearest-polygon
-look-ups to Detour. Coordinates are metres with Y up, as in the mesh.
+look-ups to Detour. Coordinates are metres with Y up, as in the mesh: a level
+far from the origin is built in a local frame (:mod:`.frame`), and every
+attribute and method here takes and returns world coordinates all the same.
 """
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
@@ -97,68 +100,87 @@ class NavMesh:
 
     Polygon index ``i`` is Detour polygon ``poly_ref(i)``. Polygons are
     numbered tile by tile (row-major tiles); tiles share equal border vertices.
+
+    Every coordinate above and every query below is in world coordinates;
+    ``local_origin`` (3,) float64 is where the frame Recast built in lies
+    (:mod:`.frame`; all zero for a level near the origin, whose arrays are
+    Recast's values as they are).
     """
 
-    def __init__(self, core: Any, settings: dict[str, Any]):
-        self.core = core
+    def __init__(self, core: Any, settings: dict[str, Any], local_origin: np.ndarray | None = None):
+        self._core = core
         self.settings = dict(settings)
-        self.vertices: np.ndarray = core.vertices
+        origin = np.zeros(3) if local_origin is None else np.array(local_origin, dtype=np.float64).reshape(3)
+        origin.flags.writeable = False
+        self.local_origin: np.ndarray = origin
+        self._shifted = bool(origin.any())
+        # a query point's conversion, once per raycast: near the origin _vec itself, no call more than before
+        self._local: Callable[[Any], tuple[float, float, float]] = self._shifted_point if self._shifted else _vec
+        local_vertices, local_detail = core.vertices, core.detail_vertices
+        self.vertices: np.ndarray = self._world(local_vertices)
         self.polygons: np.ndarray = core.polygons
         self.neighbours: np.ndarray = core.neighbours
         self.area_ids: np.ndarray = core.area_ids
         self.region_ids: np.ndarray = core.region_ids
-        self.detail_vertices: np.ndarray = core.detail_vertices
+        self.detail_vertices: np.ndarray = self._world(local_detail)
         self.detail_triangles: np.ndarray = core.detail_triangles
         self.detail_polygon: np.ndarray = core.detail_polygon
-        self.region_overlaps: np.ndarray = core.region_overlaps
+        self.region_overlaps: np.ndarray = self._world(core.region_overlaps)
         self.repartitioned_tiles: np.ndarray = core.repartitioned_tiles
         self.detail_redone_polygons: np.ndarray = core.detail_redone_polygons
         self.detail_resampled_polygons: np.ndarray = core.detail_resampled_polygons
-        self.centres, self.normals, self.areas = _surface(
-            self.polygon_count, self.vertices, self.polygons,
-            self.detail_vertices, self.detail_triangles, self.detail_polygon,
+        # in the local frame, where the barycentric lift is as precise as for a level at the origin
+        local_centres, self.normals, self.areas = _surface(
+            self.polygon_count, local_vertices, self.polygons,
+            local_detail, self.detail_triangles, self.detail_polygon,
         )
+        self.centres: np.ndarray = self._world(local_centres)
         self._portals: Portals | None = None
 
     # ------------------------------------------------------------ sizes
     @property
     def polygon_count(self) -> int:
         """Number of polygons P."""
-        return int(self.core.polygon_count)
+        return int(self._core.polygon_count)
 
     @property
     def nvp(self) -> int:
         """Max vertices per polygon (the width of ``polygons``)."""
-        return int(self.core.nvp)
+        return int(self._core.nvp)
 
     @property
     def tile_size(self) -> int:
         """Tile side in cells; 0 for a solo navmesh."""
-        return int(self.core.tile_size)
+        return int(self._core.tile_size)
 
     @property
     def tile_count(self) -> int:
         """Number of Detour tiles holding polygons (1 for a solo navmesh)."""
-        return int(self.core.tile_count)
+        return int(self._core.tile_count)
 
     @property
     def tile_first_polygon(self) -> np.ndarray:
         """(T,) int32, the index of each tile's first polygon (tiles in row-major order)."""
-        return self.core.tile_first_polygon
+        return self._core.tile_first_polygon
 
     @property
     def build_seconds(self) -> float:
         """Wall time of the C++ build (Recast + Detour), seconds."""
-        return float(self.core.build_seconds)
+        return float(self._core.build_seconds)
 
     def config(self) -> dict[str, Any]:
-        """Recast's resolved ``rcConfig`` (voxel units, whole grid size, bounds) and the
-        tiling: ``tileSize`` (0: solo), ``borderSize``, ``tileGrid``, ``tiles``, ``autoTiled``."""
-        return dict(self.core.config())
+        """Recast's resolved ``rcConfig`` (voxel units, whole grid size, bounds ``bmin``, ``bmax`` in world
+        coordinates) and the tiling: ``tileSize`` (0: solo), ``borderSize``, ``tileGrid``, ``tiles``, ``autoTiled``."""
+        config = dict(self._core.config())
+        if self._shifted:
+            for key in ("bmin", "bmax"):
+                config[key] = tuple(float(v) for v in self._world(np.asarray(config[key], dtype=np.float64)))
+        return config
 
     def stats(self) -> dict[str, Any]:
-        """Sizes and timing: polygons, vertices, detail triangles, tiles, cell size/height, seconds."""
-        return {
+        """Sizes and timing: polygons, vertices, detail triangles, tiles, cell size/height, seconds; and
+        ``local_origin`` ([x, y, z], m) for a level built in a translated frame (none near the origin)."""
+        stats = {
             "polygons": self.polygon_count,
             "vertices": int(len(self.vertices)),
             "detail_vertices": int(len(self.detail_vertices)),
@@ -171,15 +193,18 @@ class NavMesh:
             "area_m2": float(self.areas.sum()),
             "build_seconds": self.build_seconds,
         }
+        if self._shifted:
+            stats["local_origin"] = [float(v) for v in self.local_origin]
+        return stats
 
     # ------------------------------------------------------------ topology
     def portals(self) -> Portals:
         """The shared polygon edges, every adjacent pair once (from Detour's links, computed at build)."""
         if self._portals is None:
-            pairs = np.asarray(self.core.portal_pairs, dtype=np.int64).reshape(-1, 2)
-            endpoints = np.asarray(self.core.portal_endpoints, dtype=np.float64).reshape(-1, 2, 3)
-            widths = np.linalg.norm(endpoints[:, 1] - endpoints[:, 0], axis=1)
-            self._portals = Portals(pairs=pairs, endpoints=endpoints, widths=widths)
+            pairs = np.asarray(self._core.portal_pairs, dtype=np.int64).reshape(-1, 2)
+            local = np.asarray(self._core.portal_endpoints, dtype=np.float64).reshape(-1, 2, 3)
+            widths = np.linalg.norm(local[:, 1] - local[:, 0], axis=1)
+            self._portals = Portals(pairs=pairs, endpoints=self._world(local), widths=widths)
         return self._portals
 
     # ------------------------------------------------------------ queries
@@ -187,12 +212,12 @@ class NavMesh:
     def default_extents(self) -> tuple[float, float, float]:
         """Half extents of the nearest-polygon search when none are given:
         ``(max(2r, 2cs), max(h, 2ch), max(2r, 2cs))`` for agent radius r, height h."""
-        return tuple(float(v) for v in self.core.default_extents)  # type: ignore[return-value]
+        return tuple(float(v) for v in self._core.default_extents)  # type: ignore[return-value]
 
     @property
     def climb_tolerance(self) -> float:
         """Vertical tolerance of the raycast end check: ``max(agent max climb, 2 cell heights)``, m."""
-        return float(self.core.climb_tolerance)
+        return float(self._core.climb_tolerance)
 
     def raycast(self, a, b, extents=None) -> tuple[bool, float]:
         """Whether the straight walk from ``a`` to ``b`` along the navmesh is clear.
@@ -205,19 +230,18 @@ class NavMesh:
         (fraction of a->b where a wall was hit, ``FLT_MAX`` when not hit; 0
         when ``a`` is on no polygon).
         """
-        clear, t = self.core.raycast(_vec(a), _vec(b), None if extents is None else _vec(extents))
+        clear, t = self._core.raycast(self._local(a), self._local(b), None if extents is None else _vec(extents))
         return bool(clear), float(t)
 
     def raycast_many(self, A, B, extents=None) -> np.ndarray:
         """(N,) bool: ``raycast(A[i], B[i])[0]`` for (N,3) ``A`` and ``B``, looped in C++."""
-        A = np.ascontiguousarray(A, dtype=np.float64).reshape(-1, 3)
-        B = np.ascontiguousarray(B, dtype=np.float64).reshape(-1, 3)
-        return self.core.raycast_many(A, B, None if extents is None else _vec(extents))
+        extents = None if extents is None else _vec(extents)
+        return self._core.raycast_many(self._local_rows(A), self._local_rows(B), extents)
 
     def nearest_poly(self, p, extents=None) -> tuple[int, np.ndarray]:
         """(polygon index, (3,) nearest point on it) within the half ``extents``; (-1, p) if none."""
-        idx, point = self.core.nearest_poly(_vec(p), None if extents is None else _vec(extents))
-        return int(idx), point
+        idx, point = self._core.nearest_poly(self._local(p), None if extents is None else _vec(extents))
+        return int(idx), self._world(point)
 
     def segment_surface_gaps(self, A, B, step: float, reach: float, horizontal: float | None = None) -> np.ndarray:
         """(S,) how far each straight segment ``A[i] -> B[i]`` ((S,3) each) strays from the walkable surface, m.
@@ -233,10 +257,9 @@ class NavMesh:
         between the cores (each row's value does not depend on it):
         O(length / step) probes, each O(polygons within ``horizontal``).
         """
-        A = np.ascontiguousarray(A, dtype=np.float64).reshape(-1, 3)
-        B = np.ascontiguousarray(B, dtype=np.float64).reshape(-1, 3)
         horizontal = float(self.settings["cell_size"]) if horizontal is None else float(horizontal)
-        return self.core.segment_surface_gaps(A, B, float(step), horizontal, float(reach))
+        return self._core.segment_surface_gaps(self._local_rows(A), self._local_rows(B), float(step), horizontal,
+                                               float(reach))
 
     def segment_surface_gap(self, a, b, step: float, reach: float, horizontal: float | None = None) -> float:
         """:meth:`segment_surface_gaps` of the one segment ``a -> b`` (two 3-sequences), m.
@@ -245,18 +268,37 @@ class NavMesh:
         one segment at a time (the ``surface_los`` predicate).
         """
         horizontal = float(self.settings["cell_size"]) if horizontal is None else float(horizontal)
-        return float(self.core.segment_surface_gap(_vec(a), _vec(b), float(step), horizontal, float(reach)))
+        return float(self._core.segment_surface_gap(self._local(a), self._local(b), float(step), horizontal,
+                                                    float(reach)))
 
     def poly_ref(self, index: int) -> int:
         """Detour ``dtPolyRef`` of polygon ``index``."""
-        return int(self.core.poly_ref(int(index)))
+        return int(self._core.poly_ref(int(index)))
 
     def poly_index(self, ref: int) -> int:
         """Polygon index of a Detour ``dtPolyRef`` (-1 for 0)."""
-        return int(self.core.poly_index(int(ref)))
+        return int(self._core.poly_index(int(ref)))
 
     def __repr__(self) -> str:
         return f"NavMesh(polygons={self.polygon_count}, vertices={len(self.vertices)})"
+
+    # ------------------------------------------------------------ frames
+    # Near the origin these are the identity, not an addition of zeros: -0.0 + 0.0 is 0.0, and the arrays of such
+    # a level stay Recast's values bit for bit.
+    def _world(self, local: np.ndarray) -> np.ndarray:
+        """(..., 3) local coordinates -> world (float64)."""
+        return local + self.local_origin if self._shifted else local
+
+    def _shifted_point(self, p) -> tuple[float, float, float]:
+        """One world point (a 3-sequence) -> local, as the extension takes it."""
+        x, y, z = _vec(p)
+        ox, oy, oz = self.local_origin
+        return (x - float(ox), y - float(oy), z - float(oz))
+
+    def _local_rows(self, points) -> np.ndarray:
+        """(N,3) world points (any array-like) -> local, float64 and C-contiguous as the extension takes them."""
+        rows = np.ascontiguousarray(points, dtype=np.float64).reshape(-1, 3)
+        return rows - self.local_origin if self._shifted else rows
 
 
 # ---------------------------------------------------------------- numpy helpers

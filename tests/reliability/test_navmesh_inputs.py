@@ -205,13 +205,16 @@ def test_y_up_level_read_as_z_up_names_the_up_axis(tmp_path, capsys, preset):
     assert "Traceback" not in err and "`mesh: {up_axis: z}` (or `y` if it is already z)" in err, err
 
 
-def test_level_far_from_the_origin_is_refused_before_recast_overruns(tmp_path, capsys):
-    """At 5e6 m single precision keeps 0.5 m between values and Recast's rasteriser overran its stack (exit 134)."""
-    far = quad_obj(tmp_path / "utm.obj", [(5e6 - 20, 0, 5e6 - 20), (5e6 - 20, 0, 5e6 + 20),
-                                          (5e6 + 20, 0, 5e6 + 20), (5e6 + 20, 0, 5e6 - 20)])
-    assert_refused(*run(tmp_path, far, "", capsys), "utm.obj: mesh: vertices lie up to 5e+06 m from the origin",
-                   "move the level within")
-    near = quad_obj(tmp_path / "near.obj", [(1e5 - 20, 0, 1e5 - 20), (1e5 - 20, 0, 1e5 + 20),
-                                            (1e5 + 20, 0, 1e5 + 20), (1e5 + 20, 0, 1e5 - 20)])
-    code, err = run(tmp_path, near, "", capsys)
+def test_level_far_from_the_origin_builds_and_is_refused_only_where_double_precision_loses_the_cell(tmp_path, capsys):
+    """At 5e6 m single precision keeps 0.5 m between values and Recast's rasteriser overran its stack (exit 134):
+    the level is now built in its local frame; at 2e15 m double precision keeps only 0.25 m, half a cell."""
+    def square(name: str, centre: float) -> Path:
+        return quad_obj(tmp_path / name, [(centre - 20, 0, centre - 20), (centre - 20, 0, centre + 20),
+                                          (centre + 20, 0, centre + 20), (centre + 20, 0, centre - 20)])
+
+    (tmp_path / "near").mkdir(), (tmp_path / "far").mkdir()
+    code, err = run(tmp_path / "near", square("utm.obj", 5e6), "", capsys)
     assert code == 0, err
+    assert_refused(*run(tmp_path / "far", square("far.obj", 2e15), "", capsys),
+                   "far.obj: mesh: vertices lie up to 2e+15 m from the origin, where double precision keeps only "
+                   "0.25 m between values, more than half a 0.25 m cell; move the level within 1.126e+15 m")
