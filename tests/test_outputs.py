@@ -274,6 +274,12 @@ def test_numbers_are_rounded_to_nine_significant_digits():
     assert common.number(np.float32(0.1)) == 0.100000001
 
 
+def test_coordinates_keep_ten_micrometres_far_from_the_origin():
+    assert common.coordinate(9999.123456789) == 9999.12346  # under 10^4 m: 9 significant digits, as number
+    assert common.coordinate(123456.7891234) == 123456.78912
+    assert common.vector((-1.0e7 - 0.123456, 0.5, float("nan"))) == [-10000000.12346, 0.5, None]
+
+
 def test_load_result_refuses_other_files(tmp_path):
     path = tmp_path / "structure.json"
     with pytest.raises(G2SError, match="no such structure file"):

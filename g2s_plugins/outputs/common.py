@@ -12,12 +12,20 @@ import numpy as np
 from g2s_core.model import RunResult
 from g2s_core.summary import final_graph, metric_lines, roots_of, stage_rows
 
-__all__ = ["agent_value", "edge_list", "final_graph", "floors", "is_loop_edge", "metric_lines", "number", "positions",
+__all__ = ["agent_value", "coordinate", "edge_list", "final_graph", "floors", "is_loop_edge", "metric_lines", "number", "positions",
            "roots_of", "stage_rows", "terminal_ids", "tree_parents", "vector"]
 
 FLOAT_DIGITS = 9
-"""Floats in the written files keep this many significant digits (``format(x, '.9g')``)."""
+"""Floats in the written files keep this many significant digits (``format(x, '.9g')``); coordinates also keep
+at least :data:`COORDINATE_DECIMALS` decimals."""
 _ROUNDED = f".{FLOAT_DIGITS}g"
+
+COORDINATE_DECIMALS = 5
+"""Decimals a coordinate keeps at the least: 10 µm. From 10^4 m out, 9 significant digits alone would be coarser:
+a level 1,000 km from the origin would be written to the centimetre (docs/navmesh.md, "Levels far from the
+origin")."""
+_FINE_FROM = 10.0 ** (FLOAT_DIGITS - COORDINATE_DECIMALS)
+
 
 def number(value: Any) -> float | None:
     """``value`` as a float rounded to :data:`FLOAT_DIGITS` significant digits; ``None`` if not finite.
@@ -30,13 +38,22 @@ def number(value: Any) -> float | None:
     return float(format(x, _ROUNDED)) + 0.0
 
 
+def coordinate(value: Any) -> float | None:
+    """:func:`number`, or ``value`` rounded to :data:`COORDINATE_DECIMALS` decimals where that is finer (from
+    10^4 m out); ``None`` if not finite."""
+    x = float(value)
+    if -_FINE_FROM < x < _FINE_FROM or not math.isfinite(x):
+        return number(x)
+    return round(x, COORDINATE_DECIMALS) + 0.0
+
+
 def vector(value: Any) -> list[float | None] | None:
-    """A 3-vector as a list of rounded floats (``None`` when absent)."""
+    """A 3-vector (a position, a direction) as a list of :func:`coordinate` values (``None`` when absent)."""
     if value is None:
         return None
     if type(value) is tuple and all(type(v) is float for v in value):  # a node's position: no array needed
-        return [number(v) for v in value]
-    return [number(v) for v in np.asarray(value, dtype=np.float64).reshape(-1).tolist()]
+        return [coordinate(v) for v in value]
+    return [coordinate(v) for v in np.asarray(value, dtype=np.float64).reshape(-1).tolist()]
 
 
 def terminal_ids(result: RunResult) -> list[int]:

@@ -3,8 +3,9 @@
 GraphML holds only scalars, so attributes are flattened: a 3-vector ``pos``
 becomes ``pos_x``, ``pos_y``, ``pos_z``; an (n, 3) array ``portal`` becomes
 ``portal_0_x`` ... ``portal_{n-1}_z``; other arrays ``name_0``, ``name_1`` ...;
-``None`` values are left out (GraphML's "no data"). Floats keep 9
-significant digits. Structure nodes also get ``terminal``, ``parent`` (absent
+``None`` values are left out (GraphML's "no data"). Floats are rounded as
+in ``structure.json`` (:func:`g2s_plugins.outputs.common.number`, the
+components of 3-vectors :func:`~g2s_plugins.outputs.common.coordinate`). Structure nodes also get ``terminal``, ``parent`` (absent
 for roots) and one ``value_<key>`` per analysis value; the graph carries
 ``mesh_name``, ``mesh_sha256``, ``final_stage``, ``roots`` (comma-separated)
 and ``analysis_keys``. Nodes and edges are written in ascending id order.
@@ -21,7 +22,7 @@ import networkx as nx
 import numpy as np
 
 from g2s_core.model import RunResult
-from g2s_plugins.outputs.common import edge_list, final_graph, number, roots_of, terminal_ids, tree_parents
+from g2s_plugins.outputs.common import coordinate, edge_list, final_graph, number, roots_of, terminal_ids, tree_parents
 from g2s_plugins.outputs.files import atomic_write
 
 STRUCTURE_FILE = "structure.graphml"
@@ -88,9 +89,11 @@ def _flatten_into(flat: dict[str, Any], name: str, value: Any) -> None:
         x = number(value)
         if x is not None:
             flat[name] = x
-    elif _is_float_triple(value):
+    elif _is_float_triple(value):  # a position, a direction or a portal's end: coordinates
         for key, x in zip(_axis_names(name), value):
-            _flatten_into(flat, key, x)
+            x = coordinate(x)
+            if x is not None:
+                flat[key] = x
     elif type(value) is tuple and all(_is_float_triple(row) for row in value):
         for i, row in enumerate(value):
             _flatten_into(flat, f"{name}_{i}", row)

@@ -16,7 +16,9 @@ without them did not change (docs/outputs.md).
 Determinism rule: the same mesh and config give a byte-identical
 ``structure.json``. Keys are sorted, lists are in a fixed order (nodes and
 edges by id), floats are rounded to 9 significant digits (``format(x,
-'.9g')``, ``-0.0`` written as ``0.0``, non-finite values as ``null``), and
+'.9g')``; the components of 3-vectors also to 5 decimals, finer from 10^4 m
+out; ``-0.0`` written as
+``0.0``, non-finite values as ``null``), and
 nothing that varies between runs is written to it: wall times (stage seconds,
 the navmesh build time) and the g2s version go to ``run.json`` instead.
 """
@@ -269,6 +271,8 @@ def _plain(value: Any) -> Any:
     if isinstance(value, dict):
         items = {str(k): _plain(v) for k, v in value.items()}
         return {k: v for k, v in items.items() if v is not _SKIP}
+    if len(value) == 3 and all(type(v) is float for v in value):  # a point or a direction (a portal's end)
+        return vector(value)
     items = [_plain(v) for v in value]
     return _SKIP if any(i is _SKIP for i in items) else items
 
