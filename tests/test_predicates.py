@@ -130,6 +130,19 @@ def test_surface_los_keeps_b_when_a_to_c_leaves_the_surface():
     assert make(surface_los, SquareWithWall(), max_surface_gap=0.5)(tree, 0, 1, 2) is True
 
 
+def test_surface_los_remembers_bends_per_pair_of_normals_and_takes_array_normals():
+    # the normal test's answers are remembered per pair of normals: asked again, in either order and after
+    # other pairs, a pair gets the answer its angle gives; a normal given as an array (unhashable) is compared
+    tilted = (0.0, math.cos(math.radians(12)), math.sin(math.radians(12)))
+    p = make(surface_los, SquareWithWall())
+    bent = chain(((1, 0, 9), UP, True), ((2, 0, 9), tilted, True), ((3, 0, 9), UP, True))
+    flat = chain(((1, 0, 9), UP, True), ((2, 0, 9), UP, True), ((3, 0, 9), UP, True))
+    assert [p(tree, 0, 1, 2) for tree in (bent, flat, bent, flat)] == [False, True, False, True]
+    for normal, expected in ((np.array(tilted), False), (np.array(UP), True), ([0.0, 1.0, 0.0], True)):
+        tree = chain(((1, 0, 9), UP, True), ((2, 0, 9), normal, True), ((3, 0, 9), UP, True))
+        assert p(tree, 0, 1, 2) is expected
+
+
 def test_surface_los_zero_normal_keeps_b():
     tree = chain(((1, 0, 9), (0.0, 0.0, 0.0), True), ((2, 0, 9), UP, True), ((3, 0, 9), UP, True))
     assert make(surface_los, SquareWithWall(), normal_tolerance_deg=180.0)(tree, 0, 1, 2) is False

@@ -216,52 +216,80 @@ def _add_portal_nodes(
 ) -> None:
     """Join each pair ``which`` indexes (into ``navmesh.portals()``) along the surface (see the module doc)."""
     portals = navmesh.portals()
+    reach = _probe_spacing_and_reach(agent)[1]
+    extents = (float(navmesh.settings["cell_size"]), reach, float(navmesh.settings["cell_size"]))
+    pairs, endpoints, widths = portals.pairs[which].tolist(), portals.endpoints[which], portals.widths[which].tolist()
+    middles = endpoints.mean(axis=1)
+    surface = [navmesh.nearest_poly(middle, extents=extents) for middle in middles]
+    polygons = [int(polygon) if polygon >= 0 else a for (polygon, _), (a, _b) in zip(surface, pairs)]
+    middles = np.array([nearest if polygon >= 0 else middle for (polygon, nearest), middle in zip(surface, middles)],
+                       dtype=np.float64).reshape(-1, 3)
+    centres = navmesh.centres
+    # each pair's two halves, centre to middle and middle to centre, refined all together
+    starts = np.stack([centres[[a for a, _ in pairs]], middles], axis=1).reshape(-1, 3)
+    ends = np.stack([middles, centres[[b for _, b in pairs]]], axis=1).reshape(-1, 3)
+    halves = _surface_points_between(navmesh, starts, ends, REFINEMENTS, agent, max_edge_gap, extents)
+    nodes: list[tuple[int, dict]] = []
+    edges: list[tuple[int, int, dict]] = []
+    normals, node_data, node = navmesh.normals.tolist(), graph.nodes, navmesh.polygon_count
+    for k, ((a, b), polygon, middle, ends_k) in enumerate(zip(pairs, polygons, middles.tolist(), endpoints.tolist())):
+        attributes = {"portal": tuple(map(tuple, ends_k)), "width": widths[k]}
+        previous, previous_pos = a, node_data[a]["pos"]
+        for on, point in [*halves[2 * k], (polygon, middle), *halves[2 * k + 1]]:
+            pos = tuple(point)
+            nodes.append((node, {"pos": pos, "normal": tuple(normals[on]), "area": 0.0, "on_navmesh": True, "polygon": -1}))
+            edges.append((previous, node, {"weight": math.dist(previous_pos, pos), **attributes}))
+            previous, previous_pos, node = node, pos, node + 1
+        edges.append((previous, b, {"weight": math.dist(previous_pos, node_data[b]["pos"]), **attributes}))
+    # all nodes, then all edges in the order they were made: the same graph as adding them pair by pair
+    graph.add_nodes_from(nodes)
+    graph.add_edges_from(edges)
+
+
+def _surface_points_between(
+    navmesh: NavMesh, starts: np.ndarray, ends: np.ndarray, depth: int, agent: AgentConfig, max_edge_gap: float,
+    extents: tuple[float, float, float],
+) -> list[list[tuple[int, list[float]]]]:
+    """For each segment ``starts[i] -> ends[i]`` ((S,3) each), the surface points (polygon, position) strictly
+    between them that bring every piece within ``max_edge_gap``, in order from start to end.
+
+    A piece is probed every probe step (``agent``'s); if its worst probe strays further than the gap, the surface
+    point nearest that probe splits it in two, each refined again, ``depth`` levels in all. All pieces of a
+    level in one C++ call.
+    """
+    found: list[list[tuple[int, list[float]]]] = [[] for _ in range(len(starts))]
+    if depth == 0 or not len(starts):
+        return found
     step, reach = _probe_spacing_and_reach(agent)
-    cell = float(navmesh.settings["cell_size"])
-
-    def on_surface(point: np.ndarray) -> tuple[int, np.ndarray]:
-        polygon, nearest = navmesh.nearest_poly(point, extents=(cell, reach, cell))
-        return int(polygon), np.asarray(nearest, dtype=np.float64)
-
-    def between(start: np.ndarray, end: np.ndarray, depth: int) -> list[tuple[int, np.ndarray]]:
-        """Surface points strictly between ``start`` and ``end`` that bring every piece within the gap."""
-        pieces = max(1, math.ceil(math.hypot(end[0] - start[0], end[2] - start[2]) / step))
-        if depth == 0 or pieces < 2:
-            return []
-        probes = start + (np.arange(1, pieces) / pieces)[:, None] * (end - start)
-        gaps = navmesh.segment_surface_gaps(probes, probes, step, reach)
-        worst = int(np.argmax(gaps))
-        if gaps[worst] <= max_edge_gap:
-            return []
-        polygon, point = on_surface(probes[worst])
-        if polygon < 0:  # no surface there to follow
-            return []
-        return [*between(start, point, depth - 1), (polygon, point), *between(point, end, depth - 1)]
-
-    node = navmesh.polygon_count
-    for k in which.tolist():
-        a, b = (int(v) for v in portals.pairs[k])
-        polygon, middle = on_surface(portals.endpoints[k].mean(axis=0))
-        if polygon < 0:
-            polygon, middle = a, portals.endpoints[k].mean(axis=0)
-        centre_a, centre_b = (np.asarray(graph.nodes[n]["pos"], dtype=np.float64) for n in (a, b))
-        route = [
-            *between(centre_a, middle, REFINEMENTS), (polygon, middle), *between(middle, centre_b, REFINEMENTS)
-        ]
-        attributes = {"portal": tuple(tuple(float(v) for v in e) for e in portals.endpoints[k]),
-                      "width": float(portals.widths[k])}
-        previous = a
-        for polygon, point in route:
-            pos = tuple(float(v) for v in point)
-            graph.add_node(node, pos=pos, normal=tuple(float(v) for v in navmesh.normals[polygon]),
-                           area=0.0, on_navmesh=True, polygon=-1)
-            graph.add_edge(previous, node, weight=_distance(graph, previous, node), **attributes)
-            previous, node = node, node + 1
-        graph.add_edge(previous, b, weight=_distance(graph, previous, b), **attributes)
-
-
-def _distance(graph: nx.Graph, u: int, v: int) -> float:
-    return math.dist(graph.nodes[u]["pos"], graph.nodes[v]["pos"])
+    span = ends - starts
+    counts = [max(1, math.ceil(math.hypot(dx, dz) / step)) for dx, _, dz in span.tolist()]
+    probed = [i for i, count in enumerate(counts) if count >= 2]
+    if not probed:
+        return found
+    inner = np.array([counts[i] - 1 for i in probed])
+    rows = np.repeat(probed, inner)
+    fraction = np.concatenate([np.arange(1, counts[i]) for i in probed]) / np.repeat([counts[i] for i in probed], inner)
+    probes = starts[rows] + fraction[:, None] * span[rows]
+    gaps = navmesh.segment_surface_gaps(probes, probes, step, reach)
+    split, points = [], []
+    for i, first, last in zip(probed, (np.cumsum(inner) - inner).tolist(), np.cumsum(inner).tolist()):
+        worst = first + int(np.argmax(gaps[first:last]))
+        if not gaps[worst] <= max_edge_gap:
+            polygon, point = navmesh.nearest_poly(probes[worst], extents=extents)
+            if polygon >= 0:  # else no surface there to follow
+                split.append((i, int(polygon)))
+                points.append(np.asarray(point, dtype=np.float64))
+    if not split:
+        return found
+    indices = [i for i, _ in split]
+    middles = np.array(points, dtype=np.float64).reshape(-1, 3)
+    pieces = _surface_points_between(
+        navmesh, np.concatenate([starts[indices], middles]), np.concatenate([middles, ends[indices]]), depth - 1,
+        agent, max_edge_gap, extents,
+    )
+    for j, ((i, polygon), middle) in enumerate(zip(split, middles.tolist())):
+        found[i] = [*pieces[j], (polygon, middle), *pieces[len(split) + j]]
+    return found
 
 
 def overlapping_regions_warning(overlaps: np.ndarray, partition: str) -> str:

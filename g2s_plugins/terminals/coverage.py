@@ -152,7 +152,7 @@ def g2s_select_terminals(graph: nx.Graph, params: Params, context: RunContext) -
     if params.traffic_weight > 0:
         traffic_radius = params.traffic_radius if params.traffic_radius is not None else TRAFFIC_RADIUS_SHARE * radius
         # the plain cover below grows from this one, so its radius guarantee holds whatever this one chose
-        seeds = cover_paths(traffic_lengths(graph, params.traffic_weight), seeds, eligible, traffic_radius)
+        seeds = cover_paths(traffic_lengths(arrays, params.traffic_weight), seeds, eligible, traffic_radius)
     cover = cover_paths(adjacency, seeds, eligible, radius)
     waypoints = np.setdiff1d(cover, leaves)
     rows = np.union1d(leaves, waypoints)
@@ -215,14 +215,14 @@ def _plan_distances(points: np.ndarray, start: np.ndarray, end: np.ndarray) -> n
     return np.linalg.norm(offset - t[..., None] * span[None, :, :], axis=2)
 
 
-def traffic_lengths(graph: nx.Graph, weight: float) -> sp.csr_array:
-    """(n, n) edge lengths plus ``weight`` x the difference of the walking-flow percentiles of each edge's ends.
+def traffic_lengths(arrays: traffic.SurfaceArrays, weight: float) -> sp.csr_array:
+    """(n, n) edge lengths of a graph's ``arrays`` plus ``weight`` x the difference of the walking-flow
+    percentiles of each edge's ends.
 
-    Rows as in :func:`g2s_plugins.traffic.surface_arrays`; ``weight`` in
-    metres per percentile point (0-100). O(m) after the flow.
+    Rows as in ``arrays`` (:func:`g2s_plugins.traffic.surface_arrays`);
+    ``weight`` in metres per percentile point (0-100). O(m) after the flow.
     """
-    arrays = traffic.surface_arrays(graph)
-    rank = traffic.percentile(traffic.walking_flow(graph, max_sources=traffic.WALKING_SOURCES))
+    rank = traffic.percentile(traffic.arrays_walking_flow(arrays, max_sources=traffic.WALKING_SOURCES))
     adjacency = arrays.adjacency
     rows = np.repeat(np.arange(arrays.n), np.diff(adjacency.indptr))
     lengths = adjacency.data + weight * np.abs(rank[rows] - rank[adjacency.indices])
