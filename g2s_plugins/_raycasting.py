@@ -12,6 +12,13 @@ and makes one intersector call per batch, never one per ray.
 Conventions: metres, Y up, directions need not be unit length (they are
 normalised). A ray "hits" the first triangle along it, front or back face.
 Distances are measured along the normalised direction; "no hit" is ``inf``.
+
+Frame: Embree computes in single precision, so the caster works in the
+level's local frame (:mod:`g2s_plugins.local_frame`, the navmesh's rule):
+the mesh it hands to the intersector is translated in double precision by
+the local origin of its bounds, every ray origin likewise before the cast,
+and every crossing back. Callers see world coordinates only; a level near
+the origin has a local origin of exactly 0 and is cast against as it is.
 """
 
 from __future__ import annotations
@@ -24,6 +31,8 @@ from typing import Any
 import numpy as np
 import trimesh
 from trimesh import util
+
+from g2s_plugins.local_frame import local_origin
 
 UP = np.array([0.0, 1.0, 0.0])
 """The up direction of every g2s mesh."""
@@ -99,22 +108,37 @@ class RayCaster:
     """Batched first-hit queries against one triangle mesh.
 
     Args:
-        mesh: the triangles rays may hit (metres, Y up).
+        mesh: the triangles rays may hit (metres, Y up, world coordinates).
 
     Attributes:
         backend: ``"embree"`` or ``"python"``.
         rays_cast: how many rays this caster has cast (for statistics).
+        local_origin: (3,) float64, whole metres: where the frame the
+            intersector works in lies (see the module docs; all zero for a
+            level near the origin).
+        triangles: (m, 3, 3) float64, the mesh's corners, world coordinates.
     """
 
     def __init__(self, mesh: trimesh.Trimesh) -> None:
         self.mesh = mesh
-        self.intersector, self.backend = _make_intersector(mesh)
-        self._embree: Any = None
         self.triangles = np.asarray(mesh.triangles, dtype=np.float64).reshape(-1, 3, 3)
-        self._plane_points = self.triangles[:, 0, :]
-        self._centroids = self.triangles.mean(axis=1)
+        corners = self.triangles.reshape(-1, 3)
+        self.local_origin = local_origin(corners.min(axis=0), corners.max(axis=0)) if len(corners) else np.zeros(3)
+        self._shifted = bool(np.any(self.local_origin))
+        local = mesh
+        if self._shifted:
+            local = trimesh.Trimesh(vertices=np.asarray(mesh.vertices) - self.local_origin, faces=mesh.faces, process=False)
+        self.intersector, self.backend = _make_intersector(local)
+        self._embree: Any = None
+        local_triangles = self.triangles - self.local_origin if self._shifted else self.triangles
+        self._plane_points = local_triangles[:, 0, :]
+        self._centroids = local_triangles.mean(axis=1)
         self.face_normals = np.asarray(mesh.face_normals, dtype=np.float64)
         self.rays_cast = 0
+
+    def to_local(self, points: np.ndarray) -> np.ndarray:
+        """(n, 3) float64: world ``points`` in the caster's local frame (the same array near the origin)."""
+        return points - self.local_origin if self._shifted else points
 
     def first_hits(self, origins: np.ndarray, directions: np.ndarray) -> Hits:
         """The first triangle each ray hits and how far along the ray.
@@ -138,12 +162,13 @@ class RayCaster:
         else:
             directions = np.broadcast_to(directions, origins.shape)
         unit = np.broadcast_to(directions / np.linalg.norm(directions, axis=1, keepdims=True), origins.shape)
-        face, distance, grazing = self._cast(origins, unit)
+        local = self.to_local(origins)
+        face, distance, grazing = self._cast(local, unit)
         if np.any(grazing):
             aside = np.cross(unit[grazing], _SKEW)
             aside /= np.linalg.norm(aside, axis=1, keepdims=True)
-            face_a, distance_a, _ = self._cast(origins[grazing] + GRAZE_NUDGE * aside, unit[grazing])
-            face_b, distance_b, _ = self._cast(origins[grazing] - GRAZE_NUDGE * aside, unit[grazing])
+            face_a, distance_a, _ = self._cast(local[grazing] + GRAZE_NUDGE * aside, unit[grazing])
+            face_b, distance_b, _ = self._cast(local[grazing] - GRAZE_NUDGE * aside, unit[grazing])
             take_b = distance_b > distance_a
             face[grazing] = np.where(take_b, face_b, face_a)
             distance[grazing] = np.where(take_b, distance_b, distance_a)
@@ -184,15 +209,18 @@ class RayCaster:
         if len(origins) == 0 or len(self.mesh.faces) == 0:
             return np.zeros(0, np.int64), np.zeros(0), np.zeros(0, np.int64), np.zeros((0, 3))
         unit = np.ascontiguousarray(directions / np.linalg.norm(directions, axis=1, keepdims=True))
-        locations, ray, face = self.intersector.intersects_location(origins, unit, multiple_hits=True)
+        local = self.to_local(origins)
+        locations, ray, face = self.intersector.intersects_location(local, unit, multiple_hits=True)
         self.rays_cast += len(origins)
         ray = np.asarray(ray, dtype=np.int64)
         locations = np.asarray(locations, dtype=np.float64).reshape(-1, 3)
-        distance = np.einsum("ij,ij->i", locations - origins[ray], unit[ray])
+        distance = np.einsum("ij,ij->i", locations - local[ray], unit[ray])
+        if self._shifted:
+            locations = locations + self.local_origin
         return ray, distance, np.asarray(face, dtype=np.int64), locations
 
     def _first_faces(self, origins: np.ndarray, unit: np.ndarray) -> np.ndarray:
-        """(n,) int64: the intersector's ``intersects_first`` answer for these rays.
+        """(n,) int64: the intersector's ``intersects_first`` answer for these rays (``origins`` in the local frame).
 
         With Embree, the rays go straight to the scene trimesh's intersector
         built (scaled and float32, :class:`trimesh.ray.ray_pyembree._EmbreeWrap`),
@@ -211,7 +239,7 @@ class RayCaster:
         return np.asarray(face, dtype=np.int64)
 
     def _cast(self, origins: np.ndarray, unit: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """One intersector call: (face, distance, grazing) per ray; ``unit`` is normalised."""
+        """One intersector call: (face, distance, grazing) per ray; ``origins`` local, ``unit`` normalised."""
         n = len(origins)
         face = self._first_faces(origins, unit).reshape(n)
         self.rays_cast += n

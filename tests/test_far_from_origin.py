@@ -1,7 +1,8 @@
 """A level far from the origin gives the navmesh and structure of the same level at the origin, translated.
 
-Recast works in single precision; the navmesh is built in a local frame (g2s_plugins/recast/frame.py) and
-NavMesh takes and returns world coordinates (docs/navmesh.md, "Levels far from the origin").
+Recast and Embree work in single precision; the navmesh is built, and the rays are cast, in a local frame
+(g2s_plugins/local_frame.py); NavMesh and RayCaster take and return world coordinates (docs/navmesh.md, "Levels
+far from the origin").
 """
 
 from __future__ import annotations
@@ -15,9 +16,10 @@ from scipy.spatial import cKDTree
 
 import g2s_core
 from g2s_core.mesh import generate_level, load_mesh
+from g2s_plugins._raycasting import RayCaster
+from g2s_plugins.local_frame import NEAR_ORIGIN, local_origin
 from g2s_plugins.recast import RecastParams, SettingsError, build_navmesh, resolve_settings
 from g2s_plugins.recast.build import check_grid
-from g2s_plugins.recast.frame import NEAR_ORIGIN, local_origin
 
 AGENT = types.SimpleNamespace(radius=0.3, height=2.0, max_climb=0.4, max_slope=45.0)
 MM = 1e-3
@@ -161,3 +163,53 @@ def test_region_vertex_keys_count_from_the_level_s_own_corner(shift):
     points = np.array([[0.0, 0.0, 0.0], [10.0, 0.0, 0.0], [10.0, 0.0, 10.0], [10.004, 0.0, 10.0], [0.0, 3.0, 5.0]])
     _, groups = np.unique(_point_keys(points + np.asarray(shift)), return_inverse=True)
     assert groups.reshape(-1).tolist() == [0, 2, 3, 3, 1]
+
+
+# --- the ray caster (sampling route, entry_exit openings, mesh_los) ------------------------------------------
+
+
+def test_the_ray_caster_answers_in_world_coordinates_from_its_local_frame():
+    """A 20 x 10 m floor with a 0.5 m wall across its middle: rays along the wall's end and down through the floor,
+    near the origin and 1,000 km out (where float32 keeps 6 cm between world coordinates)."""
+    floor = trimesh.creation.box(extents=(20.0, 0.2, 10.0))
+    floor.apply_translation((0.0, -0.1, 0.0))
+    wall = trimesh.creation.box(extents=(0.5, 3.0, 6.0))
+    wall.apply_translation((0.0, 1.5, 0.0))
+    level = trimesh.util.concatenate([floor, wall])
+    shift = np.array([1e6, 30.0, -1e6])
+    near, far = RayCaster(level), RayCaster(moved(level, shift))
+    assert near.local_origin.tolist() == [0.0, 0.0, 0.0] and far.local_origin.tolist() == [1e6, 0.0, -1e6]
+    assert np.abs(far.triangles - shift - near.triangles).max() < 1e-9  # the public arrays: world coordinates
+
+    # towards the wall from x = -5 at 1 m height, passing 1 mm inside or outside its end (z = 3)
+    origins = np.array([[-5.0, 1.0, 2.999], [-5.0, 1.0, 3.001], [-5.0, 1.0, -2.999], [-5.0, 1.0, -3.001]])
+    for caster, offset in ((near, 0.0), (far, shift)):
+        hits = caster.first_hits(origins + offset, np.array([1.0, 0.0, 0.0]))
+        assert hits.hit.tolist() == [True, False, True, False]
+        assert hits.distance[hits.hit] == pytest.approx([4.75, 4.75], abs=1e-6)
+        assert np.abs(hits.points[hits.hit] - offset - [[-0.25, 1.0, 2.999], [-0.25, 1.0, -2.999]]).max() < 1e-6
+    column, distance, face, points = far.all_hits(np.array([[-5.0, 5.0, 1.0]]) + shift, np.array([0.0, -1.0, 0.0]))
+    assert np.sort(points[:, 1] - shift[1]) == pytest.approx([-0.2, 0.0], abs=1e-6)  # the floor's top and bottom
+    assert np.sort(distance) == pytest.approx([5.0, 5.2], abs=1e-6)
+
+
+@pytest.mark.parametrize("shift", [(1e4, 0.0, 1e4), (1e6, 0.0, -1e6)])
+def test_the_sampling_route_moved_far_gives_the_same_structure(shift):
+    # Before the ray caster's local frame: 118 nodes (4.3 m apart) at 10 km, 128 (5.2 m) at 1,000 km, not 124
+    level = generate_level("sample:dungeon")
+    shift = np.array(shift)
+    reference, result = (g2s_core.run(moved(level, s), "map_analysis_sampling").structure for s in (0 * shift, shift))
+    assert (result.number_of_nodes(), result.number_of_edges()) == \
+           (reference.number_of_nodes(), reference.number_of_edges())
+    assert farthest_unmatched(positions(result) - shift, positions(reference)) < MM
+
+
+@pytest.mark.parametrize("piece", ["Ramp.obj", "Hallway.obj"])
+def test_entry_exit_openings_moved_far_are_the_same_openings(shared_data, piece):
+    # Before: Ramp.obj's openings moved by 23 cm at 1,000 km; Hallway.obj kept 6 of its 7
+    level = load_mesh(shared_data / "pieces" / piece)[0]
+    shift = np.array([1e6, 0.0, 1e6])
+    runs = [g2s_core.run(moved(level, s), "map_piece", stop_after="terminals") for s in (0 * shift, shift)]
+    openings = [np.array([run.graph.nodes[n]["pos"] for n in run.terminals.nodes]) for run in runs]
+    assert len(openings[1]) == len(openings[0]) > 0
+    assert farthest_unmatched(openings[1] - shift, openings[0]) < MM

@@ -241,10 +241,11 @@ class _Surroundings:
     ``margin`` on all sides, goes into one of two :class:`BoxOccupancy` grids:
     ``steep`` (steeper than the max slope: walls, ceilings, undersides) or
     ``walkable``. The margin covers how far Embree may see a ray from where
-    it is: each origin goes to Embree rounded to float32 at its absolute
-    coordinates (:meth:`RayCaster._first_faces`, as trimesh's own call does:
-    half a metre 10,000 km out), the level is scaled in float32, and a
-    grazing ray is cast again nudged aside (:meth:`RayCaster.first_hits`).
+    it is: each origin goes to Embree rounded to float32 at its coordinates
+    in the caster's local frame (:attr:`RayCaster.local_origin`; within a
+    kilometre or so of the level, wherever the level lies), the level is
+    scaled in float32, and a grazing ray is cast again nudged aside
+    (:meth:`RayCaster.first_hits`).
 
     * No steep cell along a candidate's column from knee to head: no
       horizontal ray of ``clearance`` metres from it can meet a wall.
@@ -257,9 +258,9 @@ class _Surroundings:
         self.reach = float(agent.max_rise(clearance)) + GROUND_MARGIN
         """Metres above the probes the ledge rays start from (a step or the max slope, plus the ground margin)."""
         size = float(np.ptp(corners.reshape(-1, 3), axis=0).max(initial=0.0))
-        farthest = float(np.abs(corners).max(initial=0.0)) + clearance + self.reach + agent.height
+        farthest = float(np.abs(caster.to_local(corners)).max(initial=0.0)) + clearance + self.reach + agent.height
         self.margin = EPSILON + 1e-6 * size + 2.0**-22 * farthest
-        """Metres (see above; 2^-22 is twice float32's relative rounding: at most half an ulp per coordinate)."""
+        """Metres (see above; 2^-22 is twice float32's relative rounding: at most half an ulp per local coordinate)."""
         widen = np.array([clearance + self.margin, self.margin, clearance + self.margin])
         walkable = caster.walkable_faces(np.arange(len(corners)), agent.max_slope_deg)
         cell = max(clearance, 0.25)

@@ -16,7 +16,7 @@ Time guard: ``max_level_cells`` bounds the cells of the whole xz grid, so that a
 flat level read in the wrong units (100 times too large: no height to betray
 it) stops at once instead of building for an hour.
 
-Frame: Recast builds in the level's local frame (:mod:`.frame`), the vertices
+Frame: Recast builds in the level's local frame (:mod:`g2s_plugins.local_frame`), the vertices
 translated in double precision; a level is refused only where double
 precision itself keeps less than half a cell between coordinates.
 """
@@ -28,8 +28,8 @@ from typing import Any
 
 import numpy as np
 
+from ..local_frame import local_origin
 from . import _recast
-from .frame import local_origin
 from .navmesh import NavMesh
 from .settings import (
     MAX_GRID_SIDE,

@@ -4,7 +4,7 @@
 several joined): it copies the mesh arrays once, computes per-polygon centres,
 normals and areas with numpy, and forwards raycasts and nearest-polygon
 look-ups to Detour. Coordinates are metres with Y up, as in the mesh: a level
-far from the origin is built in a local frame (:mod:`.frame`), and every
+far from the origin is built in a local frame (:mod:`g2s_plugins.local_frame`), and every
 attribute and method here takes and returns world coordinates all the same.
 """
 
@@ -103,7 +103,7 @@ class NavMesh:
 
     Every coordinate above and every query below is in world coordinates;
     ``local_origin`` (3,) float64 is where the frame Recast built in lies
-    (:mod:`.frame`; all zero for a level near the origin, whose arrays are
+    (:mod:`g2s_plugins.local_frame`; all zero for a level near the origin, whose arrays are
     Recast's values as they are).
     """
 

@@ -1,22 +1,25 @@
-"""The local frame a navmesh is built in: levels far from the origin keep their single-precision detail.
+"""The local frame of a level: levels far from the origin keep their single-precision detail.
 
-Recast and Detour compute in single precision, which keeps at most 2^-23 of
-a coordinate's size between values: 0.06 mm below 1 km, but 1 mm at 10 km and
-6 cm at 1,000 km, enough to move a wall across a cell edge. A level exported in world
-coordinates (a tile of an open world, GIS terrain) is therefore translated in
-double precision before it reaches Recast, and every coordinate of the built
-navmesh is translated back (:class:`~.navmesh.NavMesh` takes and returns world
-coordinates only).
+Recast and Detour (the navmesh) and Embree (the ray caster of the built-in
+plugins) compute in single precision, which keeps at most 2^-23 of a
+coordinate's size between values: 0.06 mm below 1 km, but 1 mm at 10 km and
+6 cm at 1,000 km, enough to move a wall across a cell edge or a ray past a
+wall's end. A level exported in world coordinates (a tile of an open world,
+GIS terrain) is therefore translated in double precision before it reaches
+either, and every coordinate they give back is translated back:
+:class:`~g2s_plugins.recast.navmesh.NavMesh` and
+:class:`~g2s_plugins._raycasting.RayCaster` take and return world
+coordinates only. Both choose the frame by the rule below, written once here.
 
 Rule (per axis, from the bounding box's centre ``c``): the local origin is
 the roundest whole number of metres within :data:`NEAR_ORIGIN` of ``c``:
 ``0`` when ``|c| <= NEAR_ORIGIN`` (every level near the origin is built
-untranslated, exactly as before), else the multiple of the largest power of
+and cast against untranslated, exactly as before), else the multiple of the largest power of
 ten in that window, the nearest to ``c`` (the lower one on a tie). The window is
 2,048 m wide, so the local origin is a whole number of kilometres at least,
 and a level moved by a round distance (10 km, 1,000 km) gets that distance
-back as its local origin: Recast then sees the very coordinates of the level
-at the origin. Otherwise the local coordinates lie within ``NEAR_ORIGIN`` plus
+back as its local origin: Recast and Embree then see the very coordinates
+of the level at the origin. Otherwise the local coordinates lie within ``NEAR_ORIGIN`` plus
 half the level's extent of the local origin, as they would near the origin.
 
 Subtracting a whole number from a coordinate under 2^53 m is exact in double
