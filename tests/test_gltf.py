@@ -14,6 +14,10 @@ import numpy as np
 import pytest
 import trimesh
 
+from g2s_core import pipeline
+from g2s_core.config import PRESETS_DIR, load_config
+from g2s_core.mesh import generate_level, mesh_sha256
+from g2s_core.registry import installed
 from g2s_plugins.outputs import colours, gltf
 from tests.conftest import PROJECT
 from tests.test_outputs import TERMINALS, WAYPOINTS, make_result, real_navmesh, two_floor_mesh
@@ -301,3 +305,25 @@ def test_two_runs_write_the_same_glb_bytes(tmp_path):
     assert written[0].read_bytes() == written[1].read_bytes()
     header, _ = read_glb(written[0])
     assert _children(header, "chokepoints") and [m for m in header["meshes"] if m["name"].startswith("edges")]
+
+
+def test_a_level_far_from_the_origin_keeps_its_detail_in_the_glb(tmp_path):
+    """glTF vertices are single precision (6 cm steps 1,000 km out): the level's meshes are written in its local
+    frame and their nodes carry the local origin, which glTF writes in double precision."""
+    move = np.array([1_000_123.456, 7.0, -2_000_456.789])
+    mesh = generate_level("sample:loop_of_four_rooms")
+    mesh.vertices = mesh.vertices + move
+    registry = installed()
+    plan = pipeline.plan(load_config(PRESETS_DIR / "demo.yaml"), registry, "demo")
+    result = pipeline.run(plan, registry, mesh, "far", mesh_sha256(mesh))
+    gltf.write(result, tmp_path)
+    header, blob = read_glb(tmp_path / gltf.GLB_FILE)
+    node = next(n for n in header["nodes"] if n.get("name") == "level_mesh")
+    origin = np.array(node["matrix"][12:15])
+    assert origin.tolist() == [1_000_000.0, 0.0, -2_000_000.0]
+    positions = header["meshes"][node["mesh"]]["primitives"][0]["attributes"]["POSITION"]
+    written = accessor(header, blob, positions).astype(np.float64) + origin
+    assert np.abs(written - mesh.vertices).max() < 1e-4
+    tubes = [n for n in header["nodes"] if n.get("name", "").startswith("edges")]
+    assert tubes and all(n["matrix"][12:15] == origin.tolist() for n in tubes)
+    assert_khronos_valid(tmp_path / gltf.GLB_FILE)

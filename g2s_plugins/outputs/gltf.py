@@ -46,7 +46,11 @@ Groups of analyzers that did not run are empty.
 sinks into the floor; their objects sit at the nodes' exact positions inside
 the group. Every ``node_``, ``root_`` and ``terminal_`` node's extras hold ``id``,
 ``depth``, ``root``, ``terminal`` and ``values`` (analysis key -> value).
-Coordinates are metres, Y up, which is glTF's convention.
+Coordinates are metres, Y up, which is glTF's convention. glTF holds vertices
+in single precision, so a level far from the origin keeps its meshes (level,
+navmesh, regions, tubes) in its local frame (:mod:`g2s_plugins.local_frame`,
+the navmesh's rule; 0 near the origin) and their nodes carry the local origin
+as their translation, which glTF writes in double precision like every node's.
 """
 
 from __future__ import annotations
@@ -63,6 +67,7 @@ from trimesh.visual.material import PBRMaterial
 from trimesh.visual.texture import TextureVisuals
 
 from g2s_core.model import RunResult
+from g2s_plugins.local_frame import local_origin
 from g2s_plugins.outputs import colours
 from g2s_plugins.outputs.common import (
     agent_value,
@@ -109,8 +114,9 @@ def build_scene(result: RunResult) -> trimesh.Scene:
     for group in GROUPS:
         lift = NODE_RADIUS * radius if group in LIFTED_GROUPS else REGION_LIFT if group == "regions" else 0.0
         scene.graph.update(frame_to=group, frame_from=scene.graph.base_frame, matrix=_translation((0.0, lift, 0.0)))
-    _add_surfaces(scene, result)
-    _add_regions(scene, result)
+    origin = _frame_origin(result)
+    _add_surfaces(scene, result, origin)
+    _add_regions(scene, result, origin)
     _add_chokepoints(scene, result, radius)
     _, graph = final_graph(result)
     if graph is None:
@@ -122,30 +128,48 @@ def build_scene(result: RunResult) -> trimesh.Scene:
     for name, (rgb, edges) in _edge_classes(graph, heat, set(loops)).items():
         tubes = _tubes(graph, edges, TUBE_RADIUS * radius)
         tubes.visual = _material(name, rgb)
-        _place(scene, "structure", name, tubes, np.zeros(3), {"edges": [list(e) for e in edges], "colour_by": colour_by})
+        _place(scene, "structure", name, tubes, _in_frame(tubes, origin),
+               {"edges": [list(e) for e in edges], "colour_by": colour_by})
     if loops:
         tubes = _tubes(graph, loops, TUBE_RADIUS * radius)
         tubes.visual = _material("loop_edges", colours.LOOP_COLOUR)
-        _place(scene, "loops", "loop_edges", tubes, np.zeros(3), {"edges": [list(e) for e in loops]})
+        _place(scene, "loops", "loop_edges", tubes, _in_frame(tubes, origin), {"edges": [list(e) for e in loops]})
     _add_markers(scene, result, graph, heat, radius)
     return scene
 
 
-def _add_surfaces(scene: trimesh.Scene, result: RunResult) -> None:
+def _frame_origin(result: RunResult) -> np.ndarray:
+    """(3,) the local origin of the level's bounds (all zero near the origin, or without a mesh)."""
+    mesh = result.context.mesh
+    if mesh is None or not len(mesh.vertices):
+        return np.zeros(3)
+    vertices = np.asarray(mesh.vertices, dtype=np.float64)
+    return local_origin(vertices.min(axis=0), vertices.max(axis=0))
+
+
+def _in_frame(geometry: trimesh.Trimesh, origin: np.ndarray) -> np.ndarray:
+    """Moves ``geometry``'s world-coordinate vertices into the local frame at ``origin``; returns where its node
+    goes (``origin``). Near the origin the vertices are left as they are."""
+    if origin.any():
+        geometry.vertices = np.asarray(geometry.vertices, dtype=np.float64) - origin
+    return origin
+
+
+def _add_surfaces(scene: trimesh.Scene, result: RunResult, origin: np.ndarray) -> None:
     mesh = result.context.mesh
     if mesh is not None and len(mesh.faces):
         level = trimesh.Trimesh(np.asarray(mesh.vertices), np.asarray(mesh.faces), process=False)
         level.visual = _material("level_mesh", colours.MESH_COLOUR)
-        _place(scene, "level", "level_mesh", level, np.zeros(3))
+        _place(scene, "level", "level_mesh", level, _in_frame(level, origin))
     navmesh = result.context.navmesh
     if navmesh is not None and len(navmesh.detail_triangles):
         surface = trimesh.Trimesh(np.asarray(navmesh.detail_vertices, dtype=np.float64),
                                   np.asarray(navmesh.detail_triangles, dtype=np.int64), process=False)
         surface.visual = _material("navmesh_surface", colours.NAVMESH_COLOUR, alpha=colours.NAVMESH_ALPHA)
-        _place(scene, "navmesh", "navmesh_surface", surface, np.zeros(3))
+        _place(scene, "navmesh", "navmesh_surface", surface, _in_frame(surface, origin))
 
 
-def _add_regions(scene: trimesh.Scene, result: RunResult) -> None:
+def _add_regions(scene: trimesh.Scene, result: RunResult, origin: np.ndarray) -> None:
     """``region_<id>`` under ``regions``: each region's navmesh detail triangles in its colour."""
     regions = triangle_regions(result)
     if regions is None:
@@ -164,7 +188,7 @@ def _add_regions(scene: trimesh.Scene, result: RunResult) -> None:
         name = f"region_{record['id']}"
         part.visual = _material(name, palette[record["id"]])
         extras = {k: record[k] for k in ("id", "area", "floor", "centroid", "neighbours")}
-        _place(scene, "regions", name, part, np.zeros(3), extras)
+        _place(scene, "regions", name, part, _in_frame(part, origin), extras)
 
 
 def _add_chokepoints(scene: trimesh.Scene, result: RunResult, radius: float) -> None:
