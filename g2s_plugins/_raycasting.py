@@ -32,7 +32,7 @@ import numpy as np
 import trimesh
 from trimesh import util
 
-from g2s_plugins.local_frame import local_origin
+from g2s_plugins.local_frame import LocalFrame
 
 UP = np.array([0.0, 1.0, 0.0])
 """The up direction of every g2s mesh."""
@@ -113,8 +113,8 @@ class RayCaster:
     Attributes:
         backend: ``"embree"`` or ``"python"``.
         rays_cast: how many rays this caster has cast (for statistics).
-        local_origin: (3,) float64, whole metres: where the frame the
-            intersector works in lies (see the module docs; all zero for a
+        frame: the :class:`~g2s_plugins.local_frame.LocalFrame` the
+            intersector works in (see the module docs; not shifted for a
             level near the origin).
         triangles: (m, 3, 3) float64, the mesh's corners, world coordinates.
     """
@@ -122,23 +122,22 @@ class RayCaster:
     def __init__(self, mesh: trimesh.Trimesh) -> None:
         self.mesh = mesh
         self.triangles = np.asarray(mesh.triangles, dtype=np.float64).reshape(-1, 3, 3)
-        corners = self.triangles.reshape(-1, 3)
-        self.local_origin = local_origin(corners.min(axis=0), corners.max(axis=0)) if len(corners) else np.zeros(3)
-        self._shifted = bool(np.any(self.local_origin))
+        self.frame = LocalFrame(self.triangles)
         local = mesh
-        if self._shifted:
-            local = trimesh.Trimesh(vertices=np.asarray(mesh.vertices) - self.local_origin, faces=mesh.faces, process=False)
+        if self.frame.shifted:
+            local = trimesh.Trimesh(self.frame.to_local(np.asarray(mesh.vertices)), mesh.faces, process=False)
         self.intersector, self.backend = _make_intersector(local)
         self._embree: Any = None
-        local_triangles = self.triangles - self.local_origin if self._shifted else self.triangles
+        local_triangles = self.frame.to_local(self.triangles)
         self._plane_points = local_triangles[:, 0, :]
         self._centroids = local_triangles.mean(axis=1)
         self.face_normals = np.asarray(mesh.face_normals, dtype=np.float64)
         self.rays_cast = 0
 
-    def to_local(self, points: np.ndarray) -> np.ndarray:
-        """(n, 3) float64: world ``points`` in the caster's local frame (the same array near the origin)."""
-        return points - self.local_origin if self._shifted else points
+    @property
+    def local_origin(self) -> np.ndarray:
+        """(3,) float64, whole metres: the origin of :attr:`frame` (all zero for a level near the origin)."""
+        return self.frame.origin
 
     def first_hits(self, origins: np.ndarray, directions: np.ndarray) -> Hits:
         """The first triangle each ray hits and how far along the ray.
@@ -162,7 +161,7 @@ class RayCaster:
         else:
             directions = np.broadcast_to(directions, origins.shape)
         unit = np.broadcast_to(directions / np.linalg.norm(directions, axis=1, keepdims=True), origins.shape)
-        local = self.to_local(origins)
+        local = self.frame.to_local(origins)
         face, distance, grazing = self._cast(local, unit)
         if np.any(grazing):
             aside = np.cross(unit[grazing], _SKEW)
@@ -209,15 +208,13 @@ class RayCaster:
         if len(origins) == 0 or len(self.mesh.faces) == 0:
             return np.zeros(0, np.int64), np.zeros(0), np.zeros(0, np.int64), np.zeros((0, 3))
         unit = np.ascontiguousarray(directions / np.linalg.norm(directions, axis=1, keepdims=True))
-        local = self.to_local(origins)
+        local = self.frame.to_local(origins)
         locations, ray, face = self.intersector.intersects_location(local, unit, multiple_hits=True)
         self.rays_cast += len(origins)
         ray = np.asarray(ray, dtype=np.int64)
         locations = np.asarray(locations, dtype=np.float64).reshape(-1, 3)
         distance = np.einsum("ij,ij->i", locations - local[ray], unit[ray])
-        if self._shifted:
-            locations = locations + self.local_origin
-        return ray, distance, np.asarray(face, dtype=np.int64), locations
+        return ray, distance, np.asarray(face, dtype=np.int64), self.frame.to_world(locations)
 
     def _first_faces(self, origins: np.ndarray, unit: np.ndarray) -> np.ndarray:
         """(n,) int64: the intersector's ``intersects_first`` answer for these rays (``origins`` in the local frame).

@@ -35,7 +35,7 @@ import math
 
 import numpy as np
 
-__all__ = ["NEAR_ORIGIN", "local_origin"]
+__all__ = ["NEAR_ORIGIN", "LocalFrame", "local_origin"]
 
 NEAR_ORIGIN = 1024.0
 """Half the width of the window the local origin is chosen in, m (2^10). A level less than 2 km across then lies
@@ -70,3 +70,32 @@ def _roundest_near(centre: float) -> float:
 def _multiples(low: float, high: float, power: float) -> range:
     """The k with ``low <= k * power <= high``."""
     return range(math.ceil(low / power), math.floor(high / power) + 1)
+
+
+class LocalFrame:
+    """The local frame of a set of points: translations in and out of it, the identity near the origin.
+
+    Near the origin nothing is added or subtracted (not even zeros: ``-0.0 + 0.0`` is ``0.0``), so such a level's
+    arrays are passed on bit for bit and its outputs are those of a build without a frame.
+
+    Args:
+        points: (n, 3) world coordinates, m; the frame's origin is :func:`local_origin` of their bounds (none:
+            the world's own frame).
+    """
+
+    def __init__(self, points: np.ndarray | tuple = ()) -> None:
+        points = np.asarray(points, dtype=np.float64).reshape(-1, 3)
+        origin = local_origin(points.min(axis=0), points.max(axis=0)) if len(points) else np.zeros(3)
+        origin.flags.writeable = False
+        self.origin: np.ndarray = origin
+        """(3,) float64, whole metres."""
+        self.shifted = bool(origin.any())
+        """Whether the origin is not the world's."""
+
+    def to_local(self, points: np.ndarray) -> np.ndarray:
+        """(..., 3) world coordinates in this frame (float64; ``points`` themselves when not shifted)."""
+        return points - self.origin if self.shifted else points
+
+    def to_world(self, points: np.ndarray) -> np.ndarray:
+        """(..., 3) coordinates of this frame in the world's (float64; ``points`` themselves when not shifted)."""
+        return points + self.origin if self.shifted else points

@@ -258,7 +258,7 @@ class _Surroundings:
         self.reach = float(agent.max_rise(clearance)) + GROUND_MARGIN
         """Metres above the probes the ledge rays start from (a step or the max slope, plus the ground margin)."""
         size = float(np.ptp(corners.reshape(-1, 3), axis=0).max(initial=0.0))
-        farthest = float(np.abs(caster.to_local(corners)).max(initial=0.0)) + clearance + self.reach + agent.height
+        farthest = float(np.abs(caster.frame.to_local(corners)).max(initial=0.0)) + clearance + self.reach + agent.height
         self.margin = EPSILON + 1e-6 * size + 2.0**-22 * farthest
         """Metres (see above; 2^-22 is twice float32's relative rounding: at most half an ulp per local coordinate)."""
         widen = np.array([clearance + self.margin, self.margin, clearance + self.margin])

@@ -67,7 +67,7 @@ from trimesh.visual.material import PBRMaterial
 from trimesh.visual.texture import TextureVisuals
 
 from g2s_core.model import RunResult
-from g2s_plugins.local_frame import local_origin
+from g2s_plugins.local_frame import LocalFrame
 from g2s_plugins.outputs import colours
 from g2s_plugins.outputs.common import (
     agent_value,
@@ -114,9 +114,10 @@ def build_scene(result: RunResult) -> trimesh.Scene:
     for group in GROUPS:
         lift = NODE_RADIUS * radius if group in LIFTED_GROUPS else REGION_LIFT if group == "regions" else 0.0
         scene.graph.update(frame_to=group, frame_from=scene.graph.base_frame, matrix=_translation((0.0, lift, 0.0)))
-    origin = _frame_origin(result)
-    _add_surfaces(scene, result, origin)
-    _add_regions(scene, result, origin)
+    mesh = result.context.mesh
+    frame = LocalFrame(() if mesh is None else mesh.vertices)
+    _add_surfaces(scene, result, frame)
+    _add_regions(scene, result, frame)
     _add_chokepoints(scene, result, radius)
     _, graph = final_graph(result)
     if graph is None:
@@ -128,48 +129,39 @@ def build_scene(result: RunResult) -> trimesh.Scene:
     for name, (rgb, edges) in _edge_classes(graph, heat, set(loops)).items():
         tubes = _tubes(graph, edges, TUBE_RADIUS * radius)
         tubes.visual = _material(name, rgb)
-        _place(scene, "structure", name, tubes, _in_frame(tubes, origin),
+        _place(scene, "structure", name, tubes, _in_frame(tubes, frame),
                {"edges": [list(e) for e in edges], "colour_by": colour_by})
     if loops:
         tubes = _tubes(graph, loops, TUBE_RADIUS * radius)
         tubes.visual = _material("loop_edges", colours.LOOP_COLOUR)
-        _place(scene, "loops", "loop_edges", tubes, _in_frame(tubes, origin), {"edges": [list(e) for e in loops]})
+        _place(scene, "loops", "loop_edges", tubes, _in_frame(tubes, frame), {"edges": [list(e) for e in loops]})
     _add_markers(scene, result, graph, heat, radius)
     return scene
 
 
-def _frame_origin(result: RunResult) -> np.ndarray:
-    """(3,) the local origin of the level's bounds (all zero near the origin, or without a mesh)."""
-    mesh = result.context.mesh
-    if mesh is None or not len(mesh.vertices):
-        return np.zeros(3)
-    vertices = np.asarray(mesh.vertices, dtype=np.float64)
-    return local_origin(vertices.min(axis=0), vertices.max(axis=0))
+def _in_frame(geometry: trimesh.Trimesh, frame: LocalFrame) -> np.ndarray:
+    """Moves ``geometry``'s world-coordinate vertices into ``frame``; returns where its node goes (the frame's
+    origin). Near the origin the vertices are left as they are."""
+    if frame.shifted:
+        geometry.vertices = frame.to_local(np.asarray(geometry.vertices, dtype=np.float64))
+    return frame.origin
 
 
-def _in_frame(geometry: trimesh.Trimesh, origin: np.ndarray) -> np.ndarray:
-    """Moves ``geometry``'s world-coordinate vertices into the local frame at ``origin``; returns where its node
-    goes (``origin``). Near the origin the vertices are left as they are."""
-    if origin.any():
-        geometry.vertices = np.asarray(geometry.vertices, dtype=np.float64) - origin
-    return origin
-
-
-def _add_surfaces(scene: trimesh.Scene, result: RunResult, origin: np.ndarray) -> None:
+def _add_surfaces(scene: trimesh.Scene, result: RunResult, frame: LocalFrame) -> None:
     mesh = result.context.mesh
     if mesh is not None and len(mesh.faces):
         level = trimesh.Trimesh(np.asarray(mesh.vertices), np.asarray(mesh.faces), process=False)
         level.visual = _material("level_mesh", colours.MESH_COLOUR)
-        _place(scene, "level", "level_mesh", level, _in_frame(level, origin))
+        _place(scene, "level", "level_mesh", level, _in_frame(level, frame))
     navmesh = result.context.navmesh
     if navmesh is not None and len(navmesh.detail_triangles):
         surface = trimesh.Trimesh(np.asarray(navmesh.detail_vertices, dtype=np.float64),
                                   np.asarray(navmesh.detail_triangles, dtype=np.int64), process=False)
         surface.visual = _material("navmesh_surface", colours.NAVMESH_COLOUR, alpha=colours.NAVMESH_ALPHA)
-        _place(scene, "navmesh", "navmesh_surface", surface, _in_frame(surface, origin))
+        _place(scene, "navmesh", "navmesh_surface", surface, _in_frame(surface, frame))
 
 
-def _add_regions(scene: trimesh.Scene, result: RunResult, origin: np.ndarray) -> None:
+def _add_regions(scene: trimesh.Scene, result: RunResult, frame: LocalFrame) -> None:
     """``region_<id>`` under ``regions``: each region's navmesh detail triangles in its colour."""
     regions = triangle_regions(result)
     if regions is None:
@@ -188,7 +180,7 @@ def _add_regions(scene: trimesh.Scene, result: RunResult, origin: np.ndarray) ->
         name = f"region_{record['id']}"
         part.visual = _material(name, palette[record["id"]])
         extras = {k: record[k] for k in ("id", "area", "floor", "centroid", "neighbours")}
-        _place(scene, "regions", name, part, _in_frame(part, origin), extras)
+        _place(scene, "regions", name, part, _in_frame(part, frame), extras)
 
 
 def _add_chokepoints(scene: trimesh.Scene, result: RunResult, radius: float) -> None:

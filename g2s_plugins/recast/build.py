@@ -28,7 +28,7 @@ from typing import Any
 
 import numpy as np
 
-from ..local_frame import local_origin
+from ..local_frame import LocalFrame
 from . import _recast
 from .navmesh import NavMesh
 from .settings import (
@@ -86,16 +86,15 @@ def build_navmesh(vertices, faces, agent: Any, params: RecastParams | None = Non
         raise ValueError(f"Recast: expected (N,3) vertices and (M,3) faces, got {v.shape} and {f.shape}")
     if not np.isfinite(v).all():
         raise ValueError("Recast: vertices must be finite")
-    origin = np.zeros(3)
     if len(v):
         check_precision(v, float(voxel_config(settings)["cs"]))
-        origin = local_origin(v.min(axis=0), v.max(axis=0))
-        if origin.any():
-            v = v - origin  # float64 whatever v was
+    frame = LocalFrame(v)
+    v = frame.to_local(v)  # float64 when shifted, whatever v was
+    if len(v):
         check_grid(v, settings, cell_size_given=params.cell_size is not None,
                    cell_height_given=params.cell_height is not None, max_level_cells=params.max_level_cells)
     core = _recast.build(v, f, **settings)
-    return NavMesh(core, settings, origin)
+    return NavMesh(core, settings, frame)
 
 
 def check_precision(vertices: np.ndarray, cell_size: float) -> None:

@@ -16,6 +16,7 @@ from typing import Any
 
 import numpy as np
 
+from ..local_frame import LocalFrame
 from . import _recast
 
 __all__ = ["NavMesh", "Portals", "FLT_MAX", "DT_VERTS_PER_POLYGON"]
@@ -107,15 +108,12 @@ class NavMesh:
     Recast's values as they are).
     """
 
-    def __init__(self, core: Any, settings: dict[str, Any], local_origin: np.ndarray | None = None):
+    def __init__(self, core: Any, settings: dict[str, Any], frame: LocalFrame | None = None):
         self._core = core
         self.settings = dict(settings)
-        origin = np.zeros(3) if local_origin is None else np.array(local_origin, dtype=np.float64).reshape(3)
-        origin.flags.writeable = False
-        self.local_origin: np.ndarray = origin
-        self._shifted = bool(origin.any())
+        self._frame = LocalFrame() if frame is None else frame
         # a query point's conversion, once per raycast: near the origin _vec itself, no call more than before
-        self._local: Callable[[Any], tuple[float, float, float]] = self._shifted_point if self._shifted else _vec
+        self._local: Callable[[Any], tuple[float, float, float]] = self._shifted_point if self._frame.shifted else _vec
         local_vertices, local_detail = core.vertices, core.detail_vertices
         self.vertices: np.ndarray = self._world(local_vertices)
         self.polygons: np.ndarray = core.polygons
@@ -172,7 +170,7 @@ class NavMesh:
         """Recast's resolved ``rcConfig`` (voxel units, whole grid size, bounds ``bmin``, ``bmax`` in world
         coordinates) and the tiling: ``tileSize`` (0: solo), ``borderSize``, ``tileGrid``, ``tiles``, ``autoTiled``."""
         config = dict(self._core.config())
-        if self._shifted:
+        if self._frame.shifted:
             for key in ("bmin", "bmax"):
                 config[key] = tuple(float(v) for v in self._world(np.asarray(config[key], dtype=np.float64)))
         return config
@@ -193,7 +191,7 @@ class NavMesh:
             "area_m2": float(self.areas.sum()),
             "build_seconds": self.build_seconds,
         }
-        if self._shifted:
+        if self._frame.shifted:
             stats["local_origin"] = [float(v) for v in self.local_origin]
         return stats
 
@@ -283,22 +281,24 @@ class NavMesh:
         return f"NavMesh(polygons={self.polygon_count}, vertices={len(self.vertices)})"
 
     # ------------------------------------------------------------ frames
-    # Near the origin these are the identity, not an addition of zeros: -0.0 + 0.0 is 0.0, and the arrays of such
-    # a level stay Recast's values bit for bit.
+    @property
+    def local_origin(self) -> np.ndarray:
+        """(3,) float64: where the frame Recast built in lies (all zero for a level near the origin)."""
+        return self._frame.origin
+
     def _world(self, local: np.ndarray) -> np.ndarray:
         """(..., 3) local coordinates -> world (float64)."""
-        return local + self.local_origin if self._shifted else local
+        return self._frame.to_world(local)
 
     def _shifted_point(self, p) -> tuple[float, float, float]:
         """One world point (a 3-sequence) -> local, as the extension takes it."""
         x, y, z = _vec(p)
-        ox, oy, oz = self.local_origin
+        ox, oy, oz = self._frame.origin
         return (x - float(ox), y - float(oy), z - float(oz))
 
     def _local_rows(self, points) -> np.ndarray:
         """(N,3) world points (any array-like) -> local, float64 and C-contiguous as the extension takes them."""
-        rows = np.ascontiguousarray(points, dtype=np.float64).reshape(-1, 3)
-        return rows - self.local_origin if self._shifted else rows
+        return self._frame.to_local(np.ascontiguousarray(points, dtype=np.float64).reshape(-1, 3))
 
 
 # ---------------------------------------------------------------- numpy helpers
