@@ -30,6 +30,7 @@ from typing import Any
 
 import numpy as np
 import trimesh
+from scipy import sparse
 from trimesh import util
 
 from g2s_plugins.local_frame import LocalFrame
@@ -317,6 +318,170 @@ class BoxOccupancy:
             touched[touched] = self.occupied[i[touched], level[touched], k[touched]]
             free[rows[touched]] = False
         return free
+
+
+def ray_margin(caster: RayCaster, reach: float) -> float:
+    """Metres by which Embree may see a ray away from where it is cast.
+
+    :data:`EPSILON`, plus 1e-6 of the level's size (the level is scaled in
+    float32), plus 2^-22 (twice float32's relative rounding: at most half an
+    ulp per coordinate) of the farthest coordinate a ray starts at in the
+    caster's local frame: the mesh's, plus ``reach`` metres.
+    """
+    corners = caster.triangles
+    size = float(np.ptp(corners.reshape(-1, 3), axis=0).max(initial=0.0))
+    farthest = float(np.abs(caster.frame.to_local(corners)).max(initial=0.0)) + reach
+    return EPSILON + 1e-6 * size + 2.0**-22 * farthest
+
+
+def disk_inside(points: np.ndarray, triangles: np.ndarray, radius: float) -> np.ndarray:
+    """(n,) bool: the XZ disk of ``radius`` around each point lies inside its triangle's XZ projection.
+
+    Each edge's line must lie at least ``radius`` from the point, on the
+    triangle's side; a triangle seen edge-on (no XZ area) contains nothing.
+    ``points`` (n, 3), ``triangles`` (n, 3, 3), metres.
+    """
+    xz = points[:, [0, 2]]
+    corners = triangles[:, :, [0, 2]]
+    edges = np.roll(corners, -1, axis=1) - corners
+    offsets = xz[:, None, :] - corners
+    area = edges[:, 0, 0] * edges[:, 1, 1] - edges[:, 0, 1] * edges[:, 1, 0]
+    cross = edges[:, :, 0] * offsets[:, :, 1] - edges[:, :, 1] * offsets[:, :, 0]
+    lengths = np.hypot(edges[:, :, 0], edges[:, :, 1])
+    inside = np.sign(area)[:, None] * cross >= radius * lengths
+    return np.all(inside, axis=1) & (area != 0)
+
+
+MAX_FLOOR_CELL_ENTRIES = 4_000_000
+"""(triangle, cell) pairs at most in :class:`OpenFloors`' broad phase; more and the cells are made larger."""
+
+
+class OpenFloors:
+    """Walkable triangles with nothing else near them up to the agent's height: open floor, where a walk needs no ray.
+
+    A triangle T is open when every other triangle of the caster's mesh
+    either lies outside the height range from T's lowest corner down by
+    ``EPSILON`` to its highest corner up by the agent's height plus
+    ``2 EPSILON`` (both grown by :attr:`margin`), or does not overlap, seen
+    from above, T shrunk by :attr:`margin` (an exact separating-axis test of
+    the two XZ projections). A point stands on T (:meth:`faces_under`) when
+    it lies at least ``2 margin`` inside T's edges seen from above and within
+    ``max_offset`` (at most ``EPSILON``) of T's plane.
+
+    For two points A, C on the same open T, every ray of
+    :func:`walk_segments` (lifted by half the agent height, more than
+    ``2 (EPSILON + margin)``) between them stays at least a margin away from
+    every other triangle over T, and from T itself: the lifted segment meets
+    nothing within its length, each downward ray lands on T (walkable), at
+    ``line height + half the agent height - ground`` where the ground is T's
+    plane, and each upward ray finds at least the agent's height of room over
+    that ground. The ground under the line then lies within ``max_offset``
+    of it, and rises along it no faster than T, a walkable slope: the walk
+    passes whenever ``max_offset`` is within the climb plus the ground margin
+    and the surface-gap tolerance (:meth:`certain_walks`).
+    """
+
+    def __init__(self, caster: RayCaster, agent: AgentShape) -> None:
+        self.caster, self.agent = caster, agent
+        self.margin = ray_margin(caster, agent.height + 2.0 * EPSILON)
+        """Metres (:func:`ray_margin` over the highest ray start, the agent's height over the floor)."""
+        walkable = np.nonzero(caster.walkable_faces(np.arange(len(caster.triangles)), agent.max_slope_deg))[0]
+        tall_enough = 0.5 * agent.height > 2.0 * (EPSILON + self.margin)
+        self.open = np.zeros(len(caster.triangles), dtype=bool)
+        """(m,) bool per triangle of the caster's mesh."""
+        if tall_enough and len(walkable):
+            self.open[walkable[~self._crowded(walkable)]] = True
+
+    def _crowded(self, floors: np.ndarray) -> np.ndarray:
+        """(k,) bool: another triangle comes near each of the walkable triangles ``floors`` (see the class)."""
+        corners, margin = self.caster.triangles, self.margin
+        low = corners[floors, :, 1].min(axis=1) - EPSILON
+        high = corners[floors, :, 1].max(axis=1) + self.agent.height + 2.0 * EPSILON
+        # Shrunk by the margin: towards the incentre, by the margin over the inradius.
+        xz = corners[floors][:, :, [0, 2]]
+        sides = np.linalg.norm(np.roll(xz, -1, axis=1) - np.roll(xz, 1, axis=1), axis=2)
+        u, v = xz[:, 1] - xz[:, 0], xz[:, 2] - xz[:, 0]
+        area2 = np.abs(u[:, 0] * v[:, 1] - u[:, 1] * v[:, 0])
+        perimeter = sides.sum(axis=1)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            inradius = area2 / perimeter
+            centre = np.einsum("ki,kij->kj", sides, xz) / perimeter[:, None]
+            shrunk = centre[:, None, :] + (xz - centre[:, None, :]) * ((inradius - margin) / inradius)[:, None, None]
+        crowded = ~(inradius > 2.0 * margin)
+        floor, other = self._neighbours(floors)
+        keep = (floors[floor] != other) & ~crowded[floor]
+        floor, other = floor[keep], other[keep]
+        others = corners[other]
+        in_range = (others[:, :, 1].min(axis=1) - margin <= high[floor]) & (others[:, :, 1].max(axis=1) + margin >= low[floor])
+        floor, other = floor[in_range], other[in_range]
+        overlapping = ~_separated(shrunk[floor], corners[other][:, :, [0, 2]])
+        crowded[floor[overlapping]] = True
+        return crowded
+
+    def _neighbours(self, floors: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """``(floor, other)``: pairs of an index into ``floors`` and a triangle whose XZ boxes (grown by the margin)
+        share a cell of a 2-D grid (a broad phase: every overlapping pair is among them)."""
+        xz = self.caster.triangles[:, :, [0, 2]]
+        lo, hi = xz.min(axis=1) - self.margin, xz.max(axis=1) + self.margin
+        origin = lo.min(axis=0)
+        extent = float((hi.max(axis=0) - origin).max())
+        cell = max(float(np.median(hi - lo)), extent / 4096.0, 1e-6)
+        while True:
+            first, last = np.floor((lo - origin) / cell).astype(np.int64), np.floor((hi - origin) / cell).astype(np.int64)
+            spans = last - first + 1
+            if int((spans[:, 0] * spans[:, 1]).sum()) <= MAX_FLOOR_CELL_ENTRIES:
+                break
+            cell *= 2.0
+        columns = int(last[:, 1].max()) + 1
+
+        def cells_of(rows: np.ndarray) -> sparse.csr_array:
+            count = spans[rows, 0] * spans[rows, 1]
+            owner = np.repeat(np.arange(len(rows)), count)
+            k = np.arange(int(count.sum())) - np.repeat(np.cumsum(count) - count, count)
+            i = first[rows, 0][owner] + k // spans[rows, 1][owner]
+            j = first[rows, 1][owner] + k % spans[rows, 1][owner]
+            cells = (int(last[:, 0].max()) + 1) * columns
+            return sparse.csr_array((np.ones(len(owner), dtype=np.int32), (owner, i * columns + j)), shape=(len(rows), cells))
+
+        shared = (cells_of(floors) @ cells_of(np.arange(len(xz))).T).tocoo()
+        return shared.row.astype(np.int64), shared.col.astype(np.int64)
+
+    def faces_under(self, points: np.ndarray, max_offset: float = EPSILON) -> np.ndarray:
+        """(n,) int64: the open triangle each point stands on (see the class; ``max_offset`` in metres, at most
+        ``EPSILON``), -1 where there is none. One downward ray per point, from ``2 EPSILON`` above it."""
+        points = np.asarray(points, dtype=np.float64).reshape(-1, 3)
+        faces = np.full(len(points), -1, dtype=np.int64)
+        if not self.open.any() or len(points) == 0:
+            return faces
+        face = self.caster.first_hits(points + 2.0 * EPSILON * UP, -UP).face
+        on = (face >= 0) & self.open[np.maximum(face, 0)]
+        rows, face = np.nonzero(on)[0], face[on]
+        triangles = self.caster.triangles[face]
+        normal = self.caster.face_normals[face]
+        offset = points[rows] - triangles[:, 0]
+        # Height above the plane: the normal's Y is positive (a walkable triangle).
+        above = np.einsum("ij,ij->i", offset, normal) / normal[:, 1]
+        good = disk_inside(points[rows], triangles, 2.0 * self.margin) & (np.abs(above) <= min(max_offset, EPSILON))
+        faces[rows[good]] = face[good]
+        return faces
+
+    def certain_offset(self, margin: float, max_gap: float | None) -> float:
+        """Metres a point may lie off its open triangle's plane for :func:`walk_segments` (``margin``, ``max_gap``)
+        to pass between any two such points on it (a millionth of a metre kept for rounding)."""
+        limit = min(EPSILON, self.agent.max_climb + margin, max_gap if max_gap is not None else math.inf)
+        return limit - 1e-6
+
+
+def _separated(first: np.ndarray, second: np.ndarray) -> np.ndarray:
+    """(n,) bool: the 2-D triangles ``first[i]`` and ``second[i]`` ((n, 3, 2) each; the second may be degenerate)
+    have a separating line along one of their six edges (for two convex polygons, exactly when they do not meet)."""
+    both = np.concatenate([first, second], axis=1)
+    edges = np.concatenate([np.roll(first, -1, axis=1) - first, np.roll(second, -1, axis=1) - second], axis=1)
+    axes = np.stack([-edges[:, :, 1], edges[:, :, 0]], axis=2)  # (n, 6, 2)
+    projected = np.einsum("nad,nvd->nav", axes, both)  # (n, 6 axes, 6 vertices)
+    a, b = projected[:, :, :3], projected[:, :, 3:]
+    apart = (a.max(axis=2) < b.min(axis=2)) | (b.max(axis=2) < a.min(axis=2))
+    return apart.any(axis=1)
 
 
 def all_hits_down(caster: RayCaster, xz: np.ndarray, top: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

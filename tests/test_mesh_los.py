@@ -216,3 +216,92 @@ def test_lookahead_batches_walks_without_changing_answers(monkeypatch: pytest.Mo
     alone, ahead = simplified[0], simplified[mesh_los.LOOKAHEAD]
     assert alone[0] == ahead[0]
     assert alone[2] == 1 and ahead[2] > 1 and ahead[1] < alone[1]
+
+
+def test_open_floor_is_a_walkable_triangle_with_nothing_near_it_up_to_the_agent_height() -> None:
+    from g2s_plugins._raycasting import AgentShape, OpenFloors, RayCaster
+
+    agent = AgentShape.from_config(AGENT)
+    floor = slab(-10, 10, -10, 10)  # its top: two triangles, each the other's neighbour across the diagonal
+    top = np.nonzero(floor.face_normals[:, 1] > 0.9)[0]
+
+    def open_top(*parts) -> np.ndarray:
+        return OpenFloors(RayCaster(level(floor, *parts)), agent).open[top]
+
+    assert open_top().all()
+    assert open_top(box((-11, 2.1, -11), (11, 2.3, 11))).all()  # a ceiling over the agent's head
+    assert not open_top(box((-11, 1.5, -11), (11, 1.7, 11))).any()  # a ceiling within its height
+    assert open_top(slab(-10, 10, -10, 10, top=-3.0)).all()  # a floor below
+    pillar = open_top(box((6, 0, -3), (7, 3, -2)))  # stands on one of the two triangles
+    assert pillar.sum() == 1
+
+    floors = OpenFloors(RayCaster(floor), agent)
+    points = np.array([[5.0, 0.0, -5.0], [5.0, 0.005, -5.0], [5.0, 0.02, -5.0], [9.99, 0.0, -5.0], [0.0, 0.0, 0.0]])
+    faces = floors.faces_under(points)
+    assert faces[0] in top and faces[1] == faces[0]
+    assert (faces[2:] == -1).all()  # off the plane, at the floor's edge, on the diagonal
+    assert (floors.faces_under(points, max_offset=0.001)[:2] == [faces[0], -1]).all()
+
+
+@pytest.mark.parametrize("name, scale, offset", [
+    ("building?seed=1", 4.0, 0.0), ("cluttered_room", 1.0, 0.0), ("two_storey", 1.0, 0.0), ("stair_deck", 2.0, 0.0),
+    ("building?seed=2", 2.0, 1e7),
+])
+def test_walks_on_one_open_floor_pass_with_every_ray_cast(name: str, scale: float, offset: float) -> None:
+    # The claim OpenFloors makes, against walk_segments casting every ray, on random points (some off the
+    # plane, some near the edges) and agents; /tmp-style sweeps of it over all generators found no exception.
+    from g2s_core.config import MeshConfig
+    from g2s_core.mesh import generate_level
+    from g2s_plugins._raycasting import AgentShape, OpenFloors, RayCaster, walk_segments
+
+    mesh = generate_level(f"sample:{name}", MeshConfig(scale=scale))
+    mesh.vertices = mesh.vertices + np.array([offset, 0.01 * offset, -offset])
+    caster = RayCaster(mesh)
+    rng = np.random.default_rng(7)
+    for radius, height, climb, slope, margin, gap in [(0.5, 2.0, 0.4, 45.0, 0.1, 0.4), (0.2, 1.0, 0.2, 20.0, 0.0, 0.005)]:
+        agent = AgentShape.from_config(AgentConfig(radius=radius, height=height, max_climb=climb, max_slope=slope))
+        floors = OpenFloors(caster, agent)
+        face = rng.choice(np.nonzero(floors.open)[0], 3000)
+        weights = np.concatenate([rng.dirichlet([1, 1, 1], 2000), rng.dirichlet([0.2, 0.2, 0.2], 1000)])
+        points = np.einsum("ni,nij->nj", weights, caster.triangles[face]) + rng.uniform(-0.012, 0.012, (3000, 1)) * UP
+        under = floors.faces_under(points, floors.certain_offset(margin, gap))
+        assert ((under == -1) | (under == face)).all()
+        on = rng.permutation(np.nonzero(under >= 0)[0])
+        on = on[np.argsort(under[on], kind="stable")]  # by triangle, in random order on each
+        starts, ends = np.concatenate([on[:-1], on[:-2]]), np.concatenate([on[1:], on[2:]])
+        same = under[starts] == under[ends]
+        ok, _ = walk_segments(caster, points[starts[same]], points[ends[same]], agent, 0.25, margin, gap)
+        assert same.sum() > 100 and ok.all()
+
+
+def test_open_floor_answers_save_walk_tests_not_answers(monkeypatch: pytest.MonkeyPatch) -> None:
+    # A sampled building's tree simplified with the open-floor answers and with every walk tested by rays.
+    from g2s_core import pipeline
+    from g2s_core.config import PRESETS_DIR, MeshConfig, load_raw_config, parse_config
+    from g2s_core.mesh import generate_level, mesh_sha256
+    from g2s_core.registry import Registry
+    from g2s_plugins._raycasting import OpenFloors, walk_segments
+
+    registry = Registry.from_entry_points()
+    config = parse_config(load_raw_config(PRESETS_DIR / "map_analysis_sampling.yaml"), "test")
+    mesh = generate_level("sample:building?seed=1", MeshConfig(scale=2.0))
+    run = pipeline.run(pipeline.plan(config, registry, "test"), registry, mesh, "building", mesh_sha256(mesh))
+    walks: list[int] = []
+
+    def counting(caster, starts, *args, **kwargs):
+        walks.append(len(starts))
+        return walk_segments(caster, starts, *args, **kwargs)
+
+    class NoOpenFloors(OpenFloors):
+        def faces_under(self, points, max_offset=0.0):
+            return np.full(len(points), -1)
+
+    monkeypatch.setattr(mesh_los, "walk_segments", counting)
+    simplified = {}
+    for floors in (NoOpenFloors, OpenFloors):
+        monkeypatch.setattr(mesh_los, "OpenFloors", floors)
+        walks.clear()
+        tree = simplify_forest(run.forest, predicate(mesh, normal_tolerance_deg=45.0))
+        simplified[floors] = (sorted(tree.edges(data="weight")), len(walks))
+    assert simplified[OpenFloors][0] == simplified[NoOpenFloors][0]
+    assert simplified[OpenFloors][1] < 0.5 * simplified[NoOpenFloors][1]

@@ -30,6 +30,7 @@ from g2s_plugins._raycasting import (
     BoxOccupancy,
     RayCaster,
     clear_above,
+    disk_inside,
     head_room,
     walk_segments,
 )
@@ -448,10 +449,10 @@ def test_disk_inside_its_triangle():
     triangle = np.array([[0.0, 0.0, 0.0], [4.0, 0.0, 0.0], [0.0, 0.0, 4.0]])
     points = np.array([[1.0, 0.0, 1.0], [0.4, 0.0, 1.0], [1.0, 0.0, 0.4], [1.8, 0.0, 1.8], [5.0, 0.0, 5.0]])
     for corners in (triangle, triangle[::-1]):  # either winding
-        inside = sampling._disk_inside(points, np.broadcast_to(corners, (len(points), 3, 3)), 0.5)
+        inside = disk_inside(points, np.broadcast_to(corners, (len(points), 3, 3)), 0.5)
         assert inside.tolist() == [True, False, False, False, False]
     edge_on = np.array([[0.0, 0.0, 0.0], [4.0, 0.0, 0.0], [4.0, 3.0, 0.0]])  # a wall: no area seen from above
-    assert not sampling._disk_inside(points[:1], edge_on[None], 0.0).any()
+    assert not disk_inside(points[:1], edge_on[None], 0.0).any()
 
 
 @pytest.mark.parametrize(

@@ -67,7 +67,9 @@ from g2s_plugins._raycasting import (
     RayCaster,
     all_hits_down,
     clear_above,
+    disk_inside,
     head_room,
+    ray_margin,
     walk_segments,
 )
 from g2s_plugins.walkable_check import check_walkable_surface, no_walkable_surface
@@ -257,10 +259,8 @@ class _Surroundings:
         self.agent, self.clearance = agent, clearance
         self.reach = float(agent.max_rise(clearance)) + GROUND_MARGIN
         """Metres above the probes the ledge rays start from (a step or the max slope, plus the ground margin)."""
-        size = float(np.ptp(corners.reshape(-1, 3), axis=0).max(initial=0.0))
-        farthest = float(np.abs(caster.frame.to_local(corners)).max(initial=0.0)) + clearance + self.reach + agent.height
-        self.margin = EPSILON + 1e-6 * size + 2.0**-22 * farthest
-        """Metres (see above; 2^-22 is twice float32's relative rounding: at most half an ulp per local coordinate)."""
+        self.margin = ray_margin(caster, clearance + self.reach + agent.height)
+        """Metres (:func:`~g2s_plugins._raycasting.ray_margin` over the highest ray start)."""
         widen = np.array([clearance + self.margin, self.margin, clearance + self.margin])
         walkable = caster.walkable_faces(np.arange(len(corners)), agent.max_slope_deg)
         cell = max(clearance, 0.25)
@@ -284,27 +284,10 @@ class _Surroundings:
         normals = np.cross(triangles[:, 1] - triangles[:, 0], triangles[:, 2] - triangles[:, 0])
         with np.errstate(divide="ignore", invalid="ignore"):
             drop = self.clearance * np.hypot(normals[:, 0], normals[:, 2]) / np.abs(normals[:, 1])
-        plain = _disk_inside(points, triangles, self.clearance + self.margin) & (drop <= self.reach - GROUND_MARGIN - self.margin)
+        plain = disk_inside(points, triangles, self.clearance + self.margin) & (drop <= self.reach - GROUND_MARGIN - self.margin)
         plain[plain] = self.steep.columns_free(points[plain], -drop[plain] - self.margin, top)
         plain[plain] = self.walkable.columns_free(points[plain], self.reach, top)
         return plain
-
-
-def _disk_inside(points: np.ndarray, triangles: np.ndarray, radius: float) -> np.ndarray:
-    """(n,) bool: the XZ disk of ``radius`` around each point lies inside its triangle's XZ projection.
-
-    Each edge's line must lie at least ``radius`` from the point, on the
-    triangle's side; a triangle seen edge-on (no XZ area) contains nothing.
-    """
-    xz = points[:, [0, 2]]
-    corners = triangles[:, :, [0, 2]]
-    edges = np.roll(corners, -1, axis=1) - corners
-    offsets = xz[:, None, :] - corners
-    area = edges[:, 0, 0] * edges[:, 1, 1] - edges[:, 0, 1] * edges[:, 1, 0]
-    cross = edges[:, :, 0] * offsets[:, :, 1] - edges[:, :, 1] * offsets[:, :, 0]
-    lengths = np.hypot(edges[:, :, 0], edges[:, :, 1])
-    inside = np.sign(area)[:, None] * cross >= radius * lengths
-    return np.all(inside, axis=1) & (area != 0)
 
 
 def _poisson_candidates(surface: trimesh.Trimesh, spacing: float, params: Params) -> tuple[np.ndarray, np.ndarray, float]:

@@ -43,7 +43,7 @@ from pydantic import Field
 
 from g2s_core.model import RunContext
 from g2s_core.plugin import hookimpl
-from g2s_plugins._raycasting import GROUND_MARGIN, AgentShape, RayCaster, walk_segments
+from g2s_plugins._raycasting import GROUND_MARGIN, AgentShape, OpenFloors, RayCaster, walk_segments
 from g2s_plugins._surface import CollapseParams, collapse_rule
 
 NAME = "mesh_los"
@@ -89,6 +89,7 @@ def mesh_los_predicate(
     """
     probe_step = params.probe_step if params.probe_step is not None else 0.5 * agent.radius
     caster: RayCaster | None = None
+    floor_of: dict[tuple[float, ...], int] = {}  # the open floor triangle each node of the tree stands on, or -1
     walked: dict[tuple[tuple[float, ...], tuple[float, ...]], bool] = {}  # walks tested, start -> end
     cache: dict[tuple[tuple[float, ...], tuple[float, ...]], bool] = {}  # answers given, for (A, C) and (C, A)
     chain: tuple[nx.DiGraph, int] | None = None  # the tree and C of the predicate call being answered
@@ -96,17 +97,35 @@ def mesh_los_predicate(
     def position(tree: nx.DiGraph, node: int) -> tuple[float, ...]:
         return tuple(map(float, tree.nodes[node]["pos"]))
 
+    def start_casting(tree: nx.DiGraph | None) -> RayCaster:
+        """The caster, and the open floor under every node of ``tree`` (built on first use: runs that never
+        get here pay nothing; nodes keep their positions while simplification removes some)."""
+        caster = RayCaster(mesh)
+        if tree is not None:
+            positions = list(dict.fromkeys(position(tree, node) for node in tree))
+            floors = OpenFloors(caster, agent)
+            faces = floors.faces_under(np.array(positions).reshape(-1, 3), floors.certain_offset(params.margin, params.max_surface_gap))
+            floor_of.update(zip(positions, faces.tolist()))
+        return caster
+
+    def certain(start: tuple[float, ...], end: tuple[float, ...]) -> bool:
+        """Both ends on the same open floor triangle: the walk passes (:class:`OpenFloors`)."""
+        face = floor_of.get(start, -1)
+        return face >= 0 and floor_of.get(end, -1) == face
+
     def walkable(start: tuple[float, ...], end: tuple[float, ...]) -> bool:
         nonlocal caster
         if (start, end) not in cache:
-            if (start, end) not in walked:
-                if caster is None:  # built on first use: runs that never reach here pay nothing
-                    caster = RayCaster(mesh)
+            if caster is None:
+                caster = start_casting(chain[0] if chain is not None else None)
+            if certain(start, end):
+                walked[(start, end)] = True
+            elif (start, end) not in walked:
                 ends = [end]
                 if chain is not None:
                     tree, c = chain
                     ahead = dict.fromkeys(position(tree, node) for node in _below(tree, c, LOOKAHEAD))
-                    ends += [e for e in ahead if (start, e) not in walked and e != end]
+                    ends += [e for e in ahead if (start, e) not in walked and e != end and not certain(start, e)]
                 ok, _ = walk_segments(
                     caster, np.array([start] * len(ends)), np.array(ends), agent, probe_step, params.margin,
                     params.max_surface_gap,
