@@ -366,7 +366,10 @@ class OpenFloors:
     from above, T shrunk by :attr:`margin` (an exact separating-axis test of
     the two XZ projections). A point stands on T (:meth:`faces_under`) when
     it lies at least ``2 margin`` inside T's edges seen from above and within
-    ``max_offset`` (at most ``EPSILON``) of T's plane.
+    ``max_offset`` (at most ``EPSILON``) of T's plane. Only triangles whose
+    XZ inradius exceeds ``min_inradius`` (metres) are looked at: a caller
+    whose walks are longer than that skips the many small triangles that
+    would seldom hold both ends of one (a level of 1 m floor tiles).
 
     For two points A, C on the same open T, every ray of
     :func:`walk_segments` (lifted by half the agent height, more than
@@ -381,8 +384,8 @@ class OpenFloors:
     and the surface-gap tolerance (:meth:`certain_walks`).
     """
 
-    def __init__(self, caster: RayCaster, agent: AgentShape) -> None:
-        self.caster, self.agent = caster, agent
+    def __init__(self, caster: RayCaster, agent: AgentShape, min_inradius: float = 0.0) -> None:
+        self.caster, self.agent, self.min_inradius = caster, agent, min_inradius
         self.margin = ray_margin(caster, agent.height + 2.0 * EPSILON)
         """Metres (:func:`ray_margin` over the highest ray start, the agent's height over the floor)."""
         walkable = np.nonzero(caster.walkable_faces(np.arange(len(caster.triangles)), agent.max_slope_deg))[0]
@@ -393,29 +396,29 @@ class OpenFloors:
             self.open[walkable[~self._crowded(walkable)]] = True
 
     def _crowded(self, floors: np.ndarray) -> np.ndarray:
-        """(k,) bool: another triangle comes near each of the walkable triangles ``floors`` (see the class)."""
+        """(k,) bool: the walkable triangles ``floors`` that are too small or that another triangle comes near."""
         corners, margin = self.caster.triangles, self.margin
-        low = corners[floors, :, 1].min(axis=1) - EPSILON
-        high = corners[floors, :, 1].max(axis=1) + self.agent.height + 2.0 * EPSILON
         # Shrunk by the margin: towards the incentre, by the margin over the inradius.
         xz = corners[floors][:, :, [0, 2]]
         sides = np.linalg.norm(np.roll(xz, -1, axis=1) - np.roll(xz, 1, axis=1), axis=2)
         u, v = xz[:, 1] - xz[:, 0], xz[:, 2] - xz[:, 0]
-        area2 = np.abs(u[:, 0] * v[:, 1] - u[:, 1] * v[:, 0])
         perimeter = sides.sum(axis=1)
         with np.errstate(divide="ignore", invalid="ignore"):
-            inradius = area2 / perimeter
-            centre = np.einsum("ki,kij->kj", sides, xz) / perimeter[:, None]
-            shrunk = centre[:, None, :] + (xz - centre[:, None, :]) * ((inradius - margin) / inradius)[:, None, None]
-        crowded = ~(inradius > 2.0 * margin)
-        floor, other = self._neighbours(floors)
-        keep = (floors[floor] != other) & ~crowded[floor]
-        floor, other = floor[keep], other[keep]
+            inradius = np.abs(u[:, 0] * v[:, 1] - u[:, 1] * v[:, 0]) / perimeter
+        crowded = ~(inradius > max(2.0 * margin, self.min_inradius))
+        roomy = np.nonzero(~crowded)[0]
+        xz, sides, perimeter, inradius = xz[roomy], sides[roomy], perimeter[roomy], inradius[roomy]
+        centre = np.einsum("ki,kij->kj", sides, xz) / perimeter[:, None]
+        shrunk = centre[:, None, :] + (xz - centre[:, None, :]) * ((inradius - margin) / inradius)[:, None, None]
+        low = corners[floors[roomy], :, 1].min(axis=1) - EPSILON
+        high = corners[floors[roomy], :, 1].max(axis=1) + self.agent.height + 2.0 * EPSILON
+        floor, other = self._neighbours(floors[roomy])
         others = corners[other]
-        in_range = (others[:, :, 1].min(axis=1) - margin <= high[floor]) & (others[:, :, 1].max(axis=1) + margin >= low[floor])
-        floor, other = floor[in_range], other[in_range]
-        overlapping = ~_separated(shrunk[floor], corners[other][:, :, [0, 2]])
-        crowded[floor[overlapping]] = True
+        near = (floors[roomy][floor] != other) & (others[:, :, 1].min(axis=1) - margin <= high[floor])
+        near &= others[:, :, 1].max(axis=1) + margin >= low[floor]
+        floor, other = floor[near], other[near]
+        overlapping = ~_separated(shrunk[floor], others[near][:, :, [0, 2]])
+        crowded[roomy[floor[overlapping]]] = True
         return crowded
 
     def _neighbours(self, floors: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -475,13 +478,18 @@ class OpenFloors:
 def _separated(first: np.ndarray, second: np.ndarray) -> np.ndarray:
     """(n,) bool: the 2-D triangles ``first[i]`` and ``second[i]`` ((n, 3, 2) each; the second may be degenerate)
     have a separating line along one of their six edges (for two convex polygons, exactly when they do not meet)."""
-    both = np.concatenate([first, second], axis=1)
-    edges = np.concatenate([np.roll(first, -1, axis=1) - first, np.roll(second, -1, axis=1) - second], axis=1)
-    axes = np.stack([-edges[:, :, 1], edges[:, :, 0]], axis=2)  # (n, 6, 2)
-    projected = np.einsum("nad,nvd->nav", axes, both)  # (n, 6 axes, 6 vertices)
-    a, b = projected[:, :, :3], projected[:, :, 3:]
-    apart = (a.max(axis=2) < b.min(axis=2)) | (b.max(axis=2) < a.min(axis=2))
-    return apart.any(axis=1)
+    corners = np.concatenate([first, second], axis=1).transpose(1, 2, 0)  # (6 corners, 2, n)
+    apart = np.zeros(len(first), dtype=bool)
+    for triangle in (0, 3):
+        for i in range(3):
+            start, end = corners[triangle + i], corners[triangle + (i + 1) % 3]
+            dx, dz = end[0] - start[0], end[1] - start[1]
+            # every corner projected on the edge's normal (-dz, dx)
+            along = [dx * corner[1] - dz * corner[0] for corner in corners]
+            a_low, a_high = np.minimum(np.minimum(along[0], along[1]), along[2]), np.maximum(np.maximum(along[0], along[1]), along[2])
+            b_low, b_high = np.minimum(np.minimum(along[3], along[4]), along[5]), np.maximum(np.maximum(along[3], along[4]), along[5])
+            apart |= (a_high < b_low) | (b_high < a_low)
+    return apart
 
 
 def all_hits_down(caster: RayCaster, xz: np.ndarray, top: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

@@ -535,3 +535,38 @@ def test_joint_ray_call_gives_the_separate_calls_answers():
             np.testing.assert_array_equal(hits.face, alone.face)
             np.testing.assert_array_equal(hits.distance, alone.distance)
             np.testing.assert_array_equal(hits.points, alone.points)
+
+
+def _poisson_disk_subset_one_by_one(points: np.ndarray, radius: float, seed: int) -> np.ndarray:
+    """The dart throwing of ``poisson_disk_subset`` without its parts: every point in the seeded order, every pair."""
+    from scipy import sparse
+
+    pairs = cKDTree(points).query_pairs(radius, output_type="ndarray")
+    heads, tails = np.concatenate([pairs[:, 0], pairs[:, 1]]), np.concatenate([pairs[:, 1], pairs[:, 0]])
+    rows = sparse.csr_array((np.ones(len(heads), dtype=np.int8), (heads, tails)), shape=(len(points), len(points)))
+    free = np.ones(len(points), dtype=bool)
+    taken = []
+    for i in np.random.default_rng(seed).permutation(len(points)).tolist():
+        if free[i]:
+            taken.append(i)
+            free[rows.indices[rows.indptr[i] : rows.indptr[i + 1]]] = False
+    return np.sort(np.asarray(taken, dtype=np.int64))
+
+
+def test_poisson_disk_subset_in_parts_is_the_one_by_one_pick():
+    rng = np.random.default_rng(5)
+    clouds = {
+        "floor": np.column_stack([rng.uniform(0, 40, 30_000), np.zeros(30_000), rng.uniform(0, 40, 30_000)]),
+        "box": rng.uniform(0, 12, (10_000, 3)),
+        "floors": np.column_stack([rng.uniform(0, 30, 30_000), rng.integers(0, 3, 30_000) * 0.7, rng.uniform(0, 30, 30_000)]),
+        "clusters": (rng.normal(size=(10_000, 3)) * 0.3 + rng.integers(0, 6, (10_000, 1)) * 3.0),
+        "few": rng.uniform(0, 3, (9, 3)),
+        "grid": np.stack(np.meshgrid(np.arange(40.0), [0.0], np.arange(40.0)), axis=-1).reshape(-1, 3),  # ties at the radius
+    }
+    mesh = generate_level("sample:building?seed=1", MeshConfig(scale=2.0))
+    clouds["building"] = trimesh.sample.sample_surface(mesh, 40_000, seed=1)[0]
+    for name, points in clouds.items():
+        for radius, seed in [(1.0, 0), (0.45, 3)]:
+            assert np.array_equal(
+                sampling.poisson_disk_subset(points, radius, seed), _poisson_disk_subset_one_by_one(points, radius, seed)
+            ), (name, radius, seed)

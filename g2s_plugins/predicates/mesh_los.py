@@ -101,9 +101,9 @@ def mesh_los_predicate(
         """The caster, and the open floor under every node of ``tree`` (built on first use: runs that never
         get here pay nothing; nodes keep their positions while simplification removes some)."""
         caster = RayCaster(mesh)
-        if tree is not None:
+        floors = OpenFloors(caster, agent, min_inradius=agent.radius)
+        if tree is not None and floors.open.any():
             positions = list(dict.fromkeys(position(tree, node) for node in tree))
-            floors = OpenFloors(caster, agent)
             faces = floors.faces_under(np.array(positions).reshape(-1, 3), floors.certain_offset(params.margin, params.max_surface_gap))
             floor_of.update(zip(positions, faces.tolist()))
         return caster
