@@ -341,15 +341,17 @@ def disk_inside(points: np.ndarray, triangles: np.ndarray, radius: float) -> np.
     triangle's side; a triangle seen edge-on (no XZ area) contains nothing.
     ``points`` (n, 3), ``triangles`` (n, 3, 3), metres.
     """
-    xz = points[:, [0, 2]]
-    corners = triangles[:, :, [0, 2]]
-    edges = np.roll(corners, -1, axis=1) - corners
-    offsets = xz[:, None, :] - corners
-    area = edges[:, 0, 0] * edges[:, 1, 1] - edges[:, 0, 1] * edges[:, 1, 0]
-    cross = edges[:, :, 0] * offsets[:, :, 1] - edges[:, :, 1] * offsets[:, :, 0]
-    lengths = np.hypot(edges[:, :, 0], edges[:, :, 1])
-    inside = np.sign(area)[:, None] * cross >= radius * lengths
-    return np.all(inside, axis=1) & (area != 0)
+    x, z = points[:, 0], points[:, 2]
+    corner_x, corner_z = triangles[:, :, 0], triangles[:, :, 2]
+    edge_x = [corner_x[:, (i + 1) % 3] - corner_x[:, i] for i in range(3)]
+    edge_z = [corner_z[:, (i + 1) % 3] - corner_z[:, i] for i in range(3)]
+    area = edge_x[0] * edge_z[1] - edge_z[0] * edge_x[1]
+    side = np.sign(area)
+    inside = area != 0
+    for i in range(3):
+        cross = edge_x[i] * (z - corner_z[:, i]) - edge_z[i] * (x - corner_x[:, i])
+        inside &= side * cross >= radius * np.hypot(edge_x[i], edge_z[i])
+    return inside
 
 
 MAX_FLOOR_CELL_ENTRIES = 4_000_000

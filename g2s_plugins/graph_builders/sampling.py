@@ -30,7 +30,9 @@ wanted. No Recast is involved: ``context.navmesh`` stays ``None``.
    :func:`g2s_plugins._raycasting.walk_segments` (the segment lifted by half
    the agent height hits nothing; the ground under evenly spaced points is
    walkable, has head room and changes height by at most a step or the max
-   slope). Weight = length + ``slope_penalty`` × |height change|.
+   slope); a pair on one open floor triangle passes without a ray
+   (:class:`g2s_plugins._raycasting.OpenFloors`). Weight = length +
+   ``slope_penalty`` × |height change|.
 
 Nodes (ids 0..n-1, ordered by x, then z, then y): ``pos`` (on the surface),
 ``normal`` (of the triangle under the sample), ``area`` (the walkable surface
@@ -282,9 +284,11 @@ class _Surroundings:
         """
         top = self.reach + self.agent.height
         # The own triangle's lowest point over the disk; a ray stops there at the latest.
-        normals = np.cross(triangles[:, 1] - triangles[:, 0], triangles[:, 2] - triangles[:, 0])
+        u, v = triangles[:, 1] - triangles[:, 0], triangles[:, 2] - triangles[:, 0]
+        normal_x, normal_y, normal_z = (u[:, 1] * v[:, 2] - u[:, 2] * v[:, 1], u[:, 2] * v[:, 0] - u[:, 0] * v[:, 2],
+                                        u[:, 0] * v[:, 1] - u[:, 1] * v[:, 0])
         with np.errstate(divide="ignore", invalid="ignore"):
-            drop = self.clearance * np.hypot(normals[:, 0], normals[:, 2]) / np.abs(normals[:, 1])
+            drop = self.clearance * np.hypot(normal_x, normal_z) / np.abs(normal_y)
         plain = disk_inside(points, triangles, self.clearance + self.margin) & (drop <= self.reach - GROUND_MARGIN - self.margin)
         plain[plain] = self.steep.columns_free(points[plain], -drop[plain] - self.margin, top)
         plain[plain] = self.walkable.columns_free(points[plain], self.reach, top)
