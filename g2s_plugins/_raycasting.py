@@ -282,17 +282,19 @@ class BoxOccupancy:
     Args:
         triangles: (m, 3, 3) corners, metres.
         widen: (3,) metres each box grows by on both sides, per axis.
-        cell: edge of a cell, metres; grown until the grid has at most
+        cell: edge of a cell, metres, or (3,) its edges along x, y, z; grown
+            (all edges in proportion) until the grid has at most
             ``MAX_OCCUPANCY_CELLS`` cells.
     """
 
-    def __init__(self, triangles: np.ndarray, widen: np.ndarray, cell: float) -> None:
+    def __init__(self, triangles: np.ndarray, widen: np.ndarray, cell: float | np.ndarray) -> None:
         triangles = np.asarray(triangles, dtype=np.float64).reshape(-1, 3, 3)
         lo = triangles.min(axis=1) - widen
         hi = triangles.max(axis=1) + widen
         self.origin = lo.min(axis=0) if len(triangles) else np.zeros(3)
         extent = (hi.max(axis=0) - self.origin) if len(triangles) else np.zeros(3)
-        self.cell = max(float(cell), float(np.prod(extent + cell) / MAX_OCCUPANCY_CELLS) ** (1 / 3))
+        cell = np.broadcast_to(np.asarray(cell, dtype=np.float64), (3,))
+        self.cell = cell * max(1.0, float(np.prod((extent + cell) / cell) / MAX_OCCUPANCY_CELLS) ** (1 / 3))
         self.occupied = np.zeros(tuple(self._cell_of(self.origin + extent) + 1), dtype=bool)
         # Many small triangles share their cell ranges: fill each range once.
         for i0, j0, k0, i1, j1, k1 in np.unique(np.hstack([self._cell_of(lo), self._cell_of(hi)]), axis=0).tolist():

@@ -466,10 +466,12 @@ def test_agent_fits_saves_rays_not_answers(name, scale):
     surface = sampling.walkable_surface(mesh, agent)
     points, faces, _ = sampling._poisson_candidates(surface, 1.0 * scale, sampling.Params())
     shortcuts, walls_only, every_ray = RayCaster(mesh), RayCaster(mesh), RayCaster(mesh)
+    across = RayCaster(mesh)
     fits = sampling.agent_fits(shortcuts, points, agent, 0.5, surface.triangles[faces])
     np.testing.assert_array_equal(fits, sampling.agent_fits(walls_only, points, agent, 0.5))
     np.testing.assert_array_equal(fits, _agent_fits_with_every_ray(every_ray, points, agent, 0.5))
-    assert shortcuts.rays_cast <= walls_only.rays_cast < every_ray.rays_cast
+    np.testing.assert_array_equal(fits, sampling.agent_fits(across, points, agent, 0.5, surface.triangles, faces))
+    assert across.rays_cast <= shortcuts.rays_cast <= walls_only.rays_cast < every_ray.rays_cast
     if scale > 1:  # 0.8 m thick floors, large rooms: ground all around is known for most candidates
         assert shortcuts.rays_cast < 0.5 * walls_only.rays_cast
 
@@ -484,6 +486,23 @@ def test_agent_fits_far_from_the_origin_saves_no_ray_it_needs(shared_data):
     points, faces, _ = sampling._poisson_candidates(surface, 1.0, sampling.Params())
     fits = sampling.agent_fits(RayCaster(mesh), points, agent, 0.5, surface.triangles[faces])
     np.testing.assert_array_equal(fits, _agent_fits_with_every_ray(RayCaster(mesh), points, agent, 0.5))
+    np.testing.assert_array_equal(fits, sampling.agent_fits(RayCaster(mesh), points, agent, 0.5, surface.triangles, faces))
+
+
+def test_clearance_disk_may_reach_across_to_the_neighbouring_triangle():
+    # A quad floor of two triangles, x and z in [0, 4]: a disk crossing the diagonal lies in the pair,
+    # one crossing the outer edge does not; a neighbour folded back over its triangle does not count.
+    quad = np.array([[[0, 0, 0], [4, 0, 4], [4, 0, 0]], [[0, 0, 0], [0, 0, 4], [4, 0, 4]]], dtype=float)
+    floor = sampling._Floor(quad)
+    assert floor.neighbour.tolist() == [[1, -1, -1], [-1, -1, 0]]
+    points = np.array([[2.2, 0, 1.9], [3.8, 0, 1.0], [2.2, 0, 1.9]])
+    inside, drop = floor.disk_inside(points, np.array([0, 0, 0]), 0.5, 0.5)
+    assert inside.tolist() == [True, False, True] and np.allclose(drop[inside], 0.0)
+    alone, _ = sampling._Floor(quad, across=False).disk_inside(points, np.array([0, 0, 0]), 0.5, 0.5)
+    assert not alone.any()
+    folded = quad.copy()
+    folded[1] = [[0, 0, 0], [4, 0, 4], [3, 0, 1]][::-1]  # shares the diagonal, lies on the first one's side
+    assert (sampling._Floor(folded).neighbour == -1).all()
 
 
 def _agent_fits_with_every_ray(caster: RayCaster, points: np.ndarray, agent: AgentShape, clearance: float) -> np.ndarray:
