@@ -411,6 +411,8 @@ class OpenFloors:
             inradius = np.abs(u[:, 0] * v[:, 1] - u[:, 1] * v[:, 0]) / perimeter
         crowded = ~(inradius > max(2.0 * margin, self.min_inradius))
         roomy = np.nonzero(~crowded)[0]
+        if len(roomy) == 0:
+            return crowded
         xz, sides, perimeter, inradius = xz[roomy], sides[roomy], perimeter[roomy], inradius[roomy]
         centre = np.einsum("ki,kij->kj", sides, xz) / perimeter[:, None]
         shrunk = centre[:, None, :] + (xz - centre[:, None, :]) * ((inradius - margin) / inradius)[:, None, None]
