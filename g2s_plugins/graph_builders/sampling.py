@@ -316,6 +316,13 @@ class _Floor:
             """(m,) rise per metre of the steepest horizontal direction (inf: a vertical triangle)."""
             # height at (x, z): height0 - (slope_x (x - x0) + slope_z (z - z0))
             self.slope = np.column_stack([normal_x / normal_y, normal_z / normal_y])
+        corner_x, corner_z = corners[:, :, 0], corners[:, :, 2]
+        self._edge_x = np.roll(corner_x, -1, axis=1) - corner_x
+        self._edge_z = np.roll(corner_z, -1, axis=1) - corner_z
+        area = self._edge_x[:, 0] * self._edge_z[:, 1] - self._edge_z[:, 0] * self._edge_x[:, 1]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            # metres inside an edge per unit of the cross product; nan for a triangle with no XZ area
+            self._inward = np.where(area != 0, np.sign(area), np.nan)[:, None] / np.hypot(self._edge_x, self._edge_z)
         self.neighbour = np.full((len(corners), 3), -1, dtype=np.int64)
         """(m, 3): the triangle sharing edge i (corner i to corner i + 1), -1 for none (or more than one)."""
         self.neighbour_edge = np.zeros((len(corners), 3), dtype=np.int64)
@@ -340,18 +347,11 @@ class _Floor:
             self.neighbour.reshape(-1)[folded] = -1
 
     def _edge_room(self, points: np.ndarray, faces: np.ndarray) -> np.ndarray:
-        """(n, 3): how far each point lies inside each edge line of its triangle, seen from above (metres; -inf
-        for a triangle with no XZ area)."""
-        corners = self.corners[faces]
-        corner_x, corner_z = corners[:, :, 0], corners[:, :, 2]
-        edge_x = np.roll(corner_x, -1, axis=1) - corner_x
-        edge_z = np.roll(corner_z, -1, axis=1) - corner_z
-        area = edge_x[:, 0] * edge_z[:, 1] - edge_z[:, 0] * edge_x[:, 1]
-        cross = edge_x * (points[:, None, 2] - corner_z) - edge_z * (points[:, None, 0] - corner_x)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            room = np.sign(area)[:, None] * cross / np.hypot(edge_x, edge_z)
-        room[area == 0] = -np.inf
-        return np.nan_to_num(room, nan=-np.inf)
+        """(n, 3): how far each point lies inside each edge line of its triangle, seen from above (metres; nan
+        for a triangle with no XZ area, which no comparison passes)."""
+        corner_x, corner_z = self.corners[faces, :, 0], self.corners[faces, :, 2]
+        cross = self._edge_x[faces] * (points[:, None, 2] - corner_z) - self._edge_z[faces] * (points[:, None, 0] - corner_x)
+        return cross * self._inward[faces]
 
     def _drop(self, points: np.ndarray, faces: np.ndarray, clearance: float) -> np.ndarray:
         """(n,): metres the triangle's plane lies farthest above or below the point's height within ``clearance``
@@ -367,12 +367,12 @@ class _Floor:
         that edge (every point of the disk beyond that edge is then inside that triangle); (n,) metres, the
         largest :meth:`_drop` of those triangles over ``clearance``. Seen from above."""
         room = self._edge_room(points, faces)
-        inside = np.isfinite(room).all(axis=1) & (room >= 0.0).all(axis=1)
+        inside = (room >= 0.0).all(axis=1)  # nan (no XZ area) compares false
         drop = np.where(inside, self._drop(points, faces, clearance), np.inf)
         for edge in range(3):
             rows = np.nonzero(inside & (room[:, edge] < radius))[0]
             other = self.neighbour[faces[rows], edge]
-            beyond = np.full((len(rows), 3), -np.inf)
+            beyond = np.full((len(rows), 3), np.nan)
             beyond[other >= 0] = self._edge_room(points[rows[other >= 0]], other[other >= 0])
             # the shared edge bounds the own triangle's side: only the other two count
             beyond[np.arange(len(rows)), self.neighbour_edge[faces[rows], edge]] = np.inf
