@@ -151,7 +151,9 @@ def percentile(values: np.ndarray) -> np.ndarray:
     n = values.size
     order = np.argsort(values, kind="stable")
     ordered = values[order]
-    starts = np.flatnonzero(np.concatenate([[True], np.diff(ordered) > tie_tolerance(values)]))
+    with np.errstate(invalid="ignore"):  # inf - inf is nan, no step beyond the tolerance: equal infinities tie
+        steps = np.diff(ordered)
+    starts = np.flatnonzero(np.concatenate([[True], steps > tie_tolerance(values)]))
     counts = np.diff(np.append(starts, n))
     ranks = np.empty(n)
     ranks[order] = np.repeat(starts + 1 + (counts - 1) / 2, counts)
