@@ -1,5 +1,6 @@
 """report.html in headless Chromium, offline: no console errors, no network, the plot drawn with all its layers,
-the default view showing what matters and the whole level, above the fold."""
+the default view showing what matters and the whole level, above the fold; and a level far from the origin drawn in
+its local frame, read in world metres."""
 
 from __future__ import annotations
 
