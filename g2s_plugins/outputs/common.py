@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Hashable, Sequence
+from collections.abc import Sequence
 from itertools import repeat
 from typing import Any
 
@@ -13,7 +13,7 @@ import numpy as np
 from g2s_core.model import RunResult
 from g2s_core.summary import final_graph, metric_lines, roots_of, stage_rows
 
-__all__ = ["agent_value", "by_groups", "coordinate", "coordinates", "edge_list", "edges_with_data", "final_graph", "floors", "is_loop_edge",
+__all__ = ["agent_value", "coordinate", "coordinates", "edge_list", "edges_with_data", "final_graph", "floors", "is_loop_edge",
            "metric_lines", "number", "numbers", "positions", "roots_of", "stage_rows", "terminal_ids", "tree_parents",
            "vector", "vectors"]
 
@@ -130,28 +130,6 @@ def vectors(values: Sequence[Any]) -> list[list[float | None] | None]:
     flat = coordinates(array.reshape(-1).tolist())
     rows = iter(list(map(list, zip(*[iter(flat)] * array.shape[1]))))
     return [None if value is None else next(rows) for value in values]
-
-
-def by_groups(values: Sequence[Any], group: Callable[[Any], Hashable], convert: Callable[[Hashable, list], list]) -> list:
-    """``convert(key, rows)`` of the rows of ``values`` that share ``group(row)``, put back in ``values``' order.
-
-    Column-wise writing (:mod:`g2s_plugins.outputs.json_text`,
-    :mod:`g2s_plugins.outputs.structure_json`) converts the values of a
-    column a type (or a key set) at a time; ``convert`` returns one result
-    per row it is given.
-    """
-    keys = list(map(group, values))
-    distinct = set(keys)
-    if len(distinct) == 1:
-        return convert(distinct.pop(), list(values))
-    rows: dict[Hashable, list[int]] = {}
-    for row, key in enumerate(keys):
-        rows.setdefault(key, []).append(row)
-    result: list[Any] = [None] * len(values)
-    for key, indices in rows.items():
-        for row, converted in zip(indices, convert(key, [values[i] for i in indices])):
-            result[row] = converted
-    return result
 
 
 def terminal_ids(result: RunResult) -> list[int]:

@@ -44,6 +44,8 @@ from json.encoder import encode_basestring
 from operator import itemgetter
 from typing import Any
 
+from g2s_plugins.outputs.columns import by_groups
+
 __all__ = ["dumps_indented"]
 
 _int_text = int.__repr__
@@ -72,20 +74,8 @@ def _standard(value: Any, newline: str) -> str:
 
 def _texts(values: Sequence[Any], newline: str) -> list[str]:
     """The text of each of ``values``, a column of values that all start on a line indented as at ``newline``
-    (a line break plus the indent)."""
-    kinds = list(map(type, values))
-    distinct = set(kinds)
-    if len(distinct) == 1:
-        return _texts_of_kind(distinct.pop(), values, newline)
-    # a column of several types (a float or None ...): each type written as a column, the texts put back in order
-    rows: dict[type, list[int]] = {}
-    for row, kind in enumerate(kinds):
-        rows.setdefault(kind, []).append(row)
-    texts: list[str] = [""] * len(values)
-    for kind, indices in rows.items():
-        for row, text in zip(indices, _texts_of_kind(kind, [values[i] for i in indices], newline)):
-            texts[row] = text
-    return texts
+    (a line break plus the indent); a column of several types (a float or ``None`` ...) is written a type at a time."""
+    return by_groups(values, type, lambda kind, rows: _texts_of_kind(kind, rows, newline))
 
 
 def _texts_of_kind(kind: type, values: Sequence[Any], newline: str) -> list[str]:
@@ -141,18 +131,7 @@ def _list_texts(values: Sequence[list | tuple], newline: str) -> list[str]:
 def _dict_texts(values: Sequence[dict], newline: str) -> list[str]:
     """:func:`_texts` of a column of dicts: the dicts with the same keys are written a column per key."""
     inner = newline + " "
-    keys = list(map(tuple, values))
-    distinct = set(keys)
-    if len(distinct) == 1:
-        return _same_keys_texts(distinct.pop(), values, newline, inner)
-    rows: dict[tuple, list[int]] = {}
-    for row, key_tuple in enumerate(keys):
-        rows.setdefault(key_tuple, []).append(row)
-    texts: list[str] = [""] * len(values)
-    for key_tuple, indices in rows.items():
-        for row, text in zip(indices, _same_keys_texts(key_tuple, [values[i] for i in indices], newline, inner)):
-            texts[row] = text
-    return texts
+    return by_groups(values, tuple, lambda keys, rows: _same_keys_texts(keys, rows, newline, inner))
 
 
 def _same_keys_texts(keys: tuple, values: Sequence[dict], newline: str, inner: str) -> list[str]:

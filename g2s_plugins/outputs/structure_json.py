@@ -36,8 +36,8 @@ import numpy as np
 
 from g2s_core import version
 from g2s_core.model import Opening, RunResult
+from g2s_plugins.outputs.columns import by_groups
 from g2s_plugins.outputs.common import (
-    by_groups,
     coordinates,
     edge_list,
     edges_with_data,
