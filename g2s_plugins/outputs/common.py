@@ -110,8 +110,9 @@ def significant_digits(values: np.ndarray) -> np.ndarray:
         scale = _POWERS_OF_TEN[np.abs(k)]
         scaled = np.where(k >= 0, values * scale, values / scale)
         digits = np.rint(scaled)
-        settled = usable & (np.abs(np.abs(scaled - digits) - 0.5) > 1e-6) & (np.abs(digits) >= 10.0 ** (FLOAT_DIGITS - 1)) \
-            & (np.abs(digits) <= 10.0 ** FLOAT_DIGITS)
+        # 9 digits, or 10^9 when x rounds up to the next power of ten (a wrong exponent gives 8 or 10 digits)
+        nine_digits = (np.abs(digits) >= 10.0 ** (FLOAT_DIGITS - 1)) & (np.abs(digits) <= 10.0 ** FLOAT_DIGITS)
+        settled = usable & nine_digits & (np.abs(np.abs(scaled - digits) - 0.5) > 1e-6)
         result[settled] = np.where(k >= 0, digits / scale, digits * scale)[settled]
     for index in np.flatnonzero(~settled).tolist():
         result[index] = float(format(values[index], _ROUNDED))

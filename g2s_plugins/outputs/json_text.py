@@ -145,7 +145,8 @@ def _same_keys_texts(keys: tuple, values: Sequence[dict], newline: str, inner: s
             return [_standard(v, newline) for v in values]
     parts: list[str | list[str]] = []
     for index, (key, key_text) in enumerate(layout):
-        parts += ["{" + inner + key_text if index == 0 else "," + inner + key_text, _texts(list(map(itemgetter(key), values)), inner)]
+        before = "{" + inner + key_text if index == 0 else "," + inner + key_text
+        parts += [before, _texts(list(map(itemgetter(key), values)), inner)]
     return _joined([*parts, newline + "}"])
 
 

@@ -175,8 +175,10 @@ def _node_records(graph: nx.Graph, terminals: set[int], analysis: dict, keys: li
     positions = vectors([a["pos"] for a in attrs])
     normals = vectors([a.get("normal") for a in attrs])
     areas = numbers([a.get("area") for a in attrs])
-    columns = {key: dict(zip(present := [n for n in ids if n in analysis[key]], numbers([analysis[key][n] for n in present])))
-               for key in keys}
+    columns = {}  # key -> {node: rounded value} of the nodes that have one
+    for key in keys:
+        present = [n for n in ids if n in analysis[key]]
+        columns[key] = dict(zip(present, numbers([analysis[key][n] for n in present])))
     extras = _extras(attrs, _NODE_KEYS)
     return [
         {
