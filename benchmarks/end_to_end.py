@@ -12,8 +12,10 @@ plugins, planning, :func:`g2s_core.api.open_mesh`, :func:`g2s_core.api.execute`
 (split into its stages and the time outside them) and
 :func:`g2s_core.api.write_result` for each of ``--formats``, each written
 alone into its own folder. Last, unless ``--skip-cli``, the command itself
-runs in a child process and its wall time is printed. The load average is
-printed before and after: figures taken under load are not comparable.
+runs in a child process and its wall time is printed. Each phase gives its
+wall and CPU time (the process's, both cores' worth for the stages); the
+load average is printed before and after: figures taken under load are not
+comparable, CPU times less so than wall times.
 
 This is a benchmark, not a test: nothing here asserts a time.
 """
@@ -69,7 +71,13 @@ def phases(level: Path, preset: str, formats: list[str], outdir: Path) -> None:
 
 
 def report(label: str, start: float, note: str = "") -> None:
-    print(f"  {label:<28} {time.perf_counter() - start:7.2f} s   {note}", flush=True)
+    """Print ``label``'s wall time since ``start`` (``time.perf_counter``) and the CPU time since the last report."""
+    global _cpu_start
+    cpu, _cpu_start = time.process_time() - _cpu_start, time.process_time()
+    print(f"  {label:<28} {time.perf_counter() - start:7.2f} s  CPU {cpu:6.2f} s   {note}", flush=True)
+
+
+_cpu_start = time.process_time()
 
 
 def main() -> None:

@@ -206,11 +206,14 @@ def _resolve_extends(name: Any, base_dir: Path, source: Path) -> Path:
     if not isinstance(name, str) or not name:
         raise ConfigError(f"{source}: extends: expected a config file or preset name, got {show(name)}")
     try:
-        return find_config(name, base_dir).resolve()
+        found = find_config(name, base_dir).resolve()
     except ConfigError:
         raise ConfigError(
             f"{source}: extends: no config file or preset named {name!r} (presets: {', '.join(presets())})"
         ) from None
+    # a file named after the preset it extends (my/map_analysis.yaml: extends: map_analysis) can only mean the preset
+    preset = PRESETS_DIR / f"{Path(name).stem}.yaml"
+    return preset.resolve() if found == Path(source).resolve() and preset.is_file() else found
 
 
 def _deep_merge(base: dict[str, Any], override: dict[str, Any]) -> dict[str, Any]:
@@ -288,14 +291,11 @@ def named_files(config: RunConfig) -> list[Path]:
     """
     found: list[Path] = []
     sections = [getattr(config, stage.key) for stage in PIPELINE]
-    entries = [e for s in sections for e in (s if isinstance(s, list) else [s]) if e is not None]
-    pending: list[Any] = [entry.params for entry in entries]
+    pending: list[Any] = [e.params for s in sections for e in (s if isinstance(s, list) else [s]) if e is not None]
     while pending:
         value = pending.pop()
-        if isinstance(value, dict):
-            pending.extend(value.values())
-        elif isinstance(value, list):
-            pending.extend(value)
+        if isinstance(value, (dict, list)):
+            pending.extend(value.values() if isinstance(value, dict) else value)
         elif isinstance(value, str) and _is_file(Path(value)):
             found.append(Path(value))
     return found

@@ -56,7 +56,8 @@ from g2s_plugins.surface_arrays import SurfaceArrays, surface_arrays
 
 __all__ = [
     "WALKING_SOURCES", "SurfaceArrays", "arrays_walking_flow", "distance_to", "flow_error_bound", "gather", "od_flow",
-    "origin_weight", "percentile", "represented_area", "shortest_path_flow", "surface_arrays", "walking_flow",
+    "origin_weight", "percentile", "represented_area", "shortest_path_flow", "surface_arrays", "tie_tolerance",
+    "walking_flow",
 ]
 
 BLOCK_ENTRIES = 1 << 22
@@ -128,23 +129,64 @@ def percentile(values: np.ndarray) -> np.ndarray:
     The heat map's scale when only the order of the polygons' traffic
     matters: a node's mean percentile is not pulled up by one busy polygon
     the way its mean flow is. A rank is ``scipy.stats.rankdata``'s
-    (``method="average"``; all ``nan`` when a value is ``nan``), computed
-    here with one stable sort: the mean rank of a run of ties, ``first +
-    (count - 1) / 2``, is a whole or half number, so it is the same float
-    however it is computed, and a run needs no import of ``scipy.stats``
-    (0.3 s or more, docs/performance.md). O(n log n).
+    (``method="average"``; all ``nan`` when a value is ``nan``) but for what
+    counts as a tie, computed here with one stable sort: the mean rank of a
+    run of ties, ``first + (count - 1) / 2``, is a whole or half number, so
+    it is the same float however it is computed, and a run needs no import
+    of ``scipy.stats`` (0.3 s or more, docs/performance.md). O(n log n).
+
+    **Ties within rounding.** In the sorted values a run of ties goes on
+    while each value exceeds the one before it by at most
+    :func:`tie_tolerance` (``2 n eps`` of the largest magnitude): flows equal
+    in exact arithmetic (two samples placed symmetrically) whose float sums
+    came out a few units in the last place apart, in a way that depends on
+    where the level lies, rank as equal. The rule chains: values 1,
+    1 + t, 1 + 2t (t the tolerance) are one run of three, though its ends
+    differ by 2t; it is the rule that splits the sorted values into runs
+    whatever their spacing, and a chain joins distinct values only where
+    they lie within a tolerance of each other, which the flows measured do
+    not (see :func:`tie_tolerance`).
     """
     values = np.asarray(values, dtype=np.float64).reshape(-1)
     n = values.size
     order = np.argsort(values, kind="stable")
     ordered = values[order]
-    starts = np.flatnonzero(np.concatenate([[True], ordered[1:] != ordered[:-1]]))
+    with np.errstate(invalid="ignore"):  # inf - inf is nan, no step beyond the tolerance: equal infinities tie
+        steps = np.diff(ordered)
+    starts = np.flatnonzero(np.concatenate([[True], steps > tie_tolerance(values)]))
     counts = np.diff(np.append(starts, n))
     ranks = np.empty(n)
     ranks[order] = np.repeat(starts + 1 + (counts - 1) / 2, counts)
     if np.isnan(values).any():
         ranks[:] = np.nan
     return 100.0 * (ranks - 0.5) / max(n, 1)
+
+
+def tie_tolerance(values: np.ndarray) -> float:
+    """The largest difference :func:`percentile` counts as a tie among the (n,) ``values``: ``2 n eps max |v|``
+    (eps = 2^-52, the largest magnitude over the finite values; 0 when there are none).
+
+    Why: a walking flow (:func:`od_flow`) is a sum of non-negative terms,
+    per source a subtree's values (at most n of them, added up the tree by
+    :func:`shortest_path_flow`, less the node's own value), then the sources'
+    products with their factors (at most n sources). However a sum of
+    non-negative terms is ordered, each of its roundings is at most eps/2 of
+    a partial sum no larger than the whole, so a flow is off by at most
+    about ``(n + n) eps / 2`` of the scale of its sums, and two flows equal
+    in exact arithmetic lie within ``2 n eps`` of it. The values alone do
+    not give that scale (the total pair weight A²), so the largest value
+    stands for it. Measured (3 December 2026, ``map_analysis_sampling`` on
+    nav_test.obj, n = 2,862, at the origin and moved 10 km to 10,000 km):
+    the tolerance is 1.3e-12 of the largest flow (which is 2% of A²); flows
+    tied but for rounding differ by at most 6 units in their last place
+    (1.1e-16 of the largest), distinct ones by at least 5.3e-6 of it, so
+    neither comes near the tolerance, and the last bits of the areas and
+    lengths a level far out gets from its world coordinates move the ties
+    only within it.
+    """
+    values = np.asarray(values, dtype=np.float64).reshape(-1)
+    finite = np.abs(values[np.isfinite(values)])
+    return 2.0 * values.size * float(np.finfo(np.float64).eps) * float(finite.max()) if finite.size else 0.0
 
 
 def represented_area(graph: nx.Graph, structure_nodes: Iterable[Hashable]) -> dict[Hashable, float]:

@@ -484,12 +484,41 @@ def test_percentile_keeps_one_busy_polygon_from_lifting_its_node():
     np.random.default_rng(3).random(5000),
 ], ids=range(9))
 def test_percentile_ranks_are_scipys_to_the_bit(values):
-    # the ranks are computed without scipy.stats (its import is slow); they must stay rankdata's, ties and nan included
+    # the ranks are computed without scipy.stats (its import is slow); they must stay rankdata's, ties and nan included,
+    # where no distinct values lie within the tie tolerance (here every gap between distinct values is over 1e-9)
     from scipy.stats import rankdata
 
     values = np.asarray(values, dtype=np.float64)
     expected = 100.0 * (rankdata(values) - 0.5) / max(values.size, 1)
     assert traffic.percentile(values).tobytes() == expected.tobytes()
+
+
+EPS = float(np.finfo(np.float64).eps)
+
+
+def test_values_one_unit_in_the_last_place_apart_are_tied():
+    values = np.array([2.0, 1.0, np.nextafter(1.0, 2.0)])  # tolerance 2 n eps max = 2 * 3 * eps * 2 = 12 eps
+    assert traffic.tie_tolerance(values) == 12 * EPS
+    assert traffic.percentile(values).tolist() == pytest.approx([100 * 2.5 / 3, 100 * 1.0 / 3, 100 * 1.0 / 3])
+
+
+def test_values_farther_apart_than_the_tolerance_are_not_tied():
+    at_tolerance, beyond = np.array([1.0, 1.0 + 12 * EPS, 2.0]), np.array([1.0, 1.0 + 14 * EPS, 2.0])
+    assert traffic.percentile(at_tolerance).tolist() == pytest.approx([100 * 1.0 / 3, 100 * 1.0 / 3, 100 * 2.5 / 3])
+    assert traffic.percentile(beyond).tolist() == pytest.approx([100 * 0.5 / 3, 100 * 1.5 / 3, 100 * 2.5 / 3])
+
+
+def test_a_chain_of_near_ties_is_one_run():
+    # tolerance 2 * 4 * eps * 2 = 16 eps: each step of 10 eps ties, so the three are one run though its ends lie
+    # 20 eps apart; 2 stands alone
+    values = np.array([1.0 + 20 * EPS, 2.0, 1.0, 1.0 + 10 * EPS])
+    assert traffic.percentile(values).tolist() == pytest.approx([100 * 1.5 / 4, 100 * 3.5 / 4, 100 * 1.5 / 4, 100 * 1.5 / 4])
+
+
+def test_the_tolerance_scales_with_the_largest_finite_magnitude():
+    assert traffic.tie_tolerance(np.array([-4.0, 1.0, np.inf, np.nan])) == 2 * 4 * EPS * 4.0
+    assert traffic.tie_tolerance(np.array([0.0, 0.0])) == 0.0
+    assert traffic.tie_tolerance(np.array([np.nan])) == traffic.tie_tolerance(np.array([])) == 0.0
 
 
 def test_area_weighted_betweenness_with_a_loop_matches_brute_force():

@@ -86,6 +86,15 @@ def test_extends_cycle_is_an_error(tmp_path):
     write(tmp_path, "a.yaml", "extends: b.yaml\n")
     b = write(tmp_path, "b.yaml", "extends: a.yaml\n")
     assert "extends: cycle" in error_of(b)
+    assert "extends: cycle myself.yaml -> myself.yaml" in error_of(write(tmp_path, "myself.yaml", "extends: myself\n"))
+
+
+@pytest.mark.parametrize("extends", ["map_analysis", "map_analysis.yaml"])
+def test_a_file_named_after_the_preset_it_extends_extends_the_preset(tmp_path, extends):
+    mine = write(tmp_path, "map_analysis.yaml", f"extends: {extends}\nagent: {{radius: 0.3}}\n")
+    config = load_config(mine)
+    assert config.agent.radius == 0.3
+    assert config.model_dump()["terminals"] == load_config(PRESETS_DIR / "map_analysis.yaml").model_dump()["terminals"]
 
 
 @pytest.mark.parametrize(

@@ -1,11 +1,13 @@
 """report.html in headless Chromium, offline: no console errors, no network, the plot drawn with all its layers,
-the default view showing what matters and the whole level, above the fold."""
+the default view showing what matters and the whole level, above the fold; and a level far from the origin drawn in
+its local frame, read in world metres."""
 
 from __future__ import annotations
 
 import base64
 import gzip
 import io
+import json
 import re
 import subprocess
 import sys
@@ -14,8 +16,11 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+import g2s_core
+from g2s_core.mesh import generate_level
 from g2s_plugins.outputs import colours, html_report
 from tests.conftest import PROJECT
+from tests.test_far_from_origin import moved
 from tests.test_outputs import make_result
 
 CHROMIUM = Path("/usr/bin/chromium")
@@ -26,8 +31,8 @@ CHROMIUM_ARGS = [
     "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
 ]
 
-pytestmark = pytest.mark.skipif(not CHROMIUM.exists(), reason="Debian's chromium is not installed (/usr/bin/chromium); "
-                                "`make test` installs it when run as root, or: sudo apt-get install chromium")
+needs_chromium = pytest.mark.skipif(not CHROMIUM.exists(), reason="Debian's chromium is not installed (/usr/bin/chromium); "
+                                    "`make test` installs it when run as root, or: sudo apt-get install chromium")
 
 
 def _depth_classes(tree) -> int:
@@ -52,6 +57,7 @@ FOLD = {"width": 1400, "height": 1000}
 """The window the report must fit without scrolling to see the plot."""
 
 
+@needs_chromium
 def test_report_renders_offline_in_chromium(tmp_path):
     sync_api = pytest.importorskip("playwright.sync_api")
     result = make_result()
@@ -173,3 +179,43 @@ def test_hover_gives_role_position_in_metres_and_each_value_once():
     assert lines[0] == f"node {root} (root, terminal)"
     assert lines[1] == f"x {x:.2f} m, y {y:.2f} m, z {z:.2f} m"
     assert [line.split(":")[0] for line in lines[3:]] == ["betweenness", "degree"]
+
+
+def _coordinates(trace: dict) -> np.ndarray:
+    """(n, 3) a trace's x, y, z as the page holds them: plotly's typed arrays (dtype and base64 bytes)."""
+    assert all(trace[axis]["dtype"] == "f4" for axis in "xyz")
+    return np.stack([np.frombuffer(base64.b64decode(trace[axis]["bdata"]), dtype=np.float32) for axis in "xyz"], axis=1)
+
+
+HOVER_POSITION = re.compile(r"x (-?\d+\.\d\d) m, y (-?\d+\.\d\d) m, z (-?\d+\.\d\d) m")
+
+
+def _hover_positions(trace: dict) -> np.ndarray:
+    return np.array([[float(v) for v in HOVER_POSITION.search(text).groups()] for text in trace.get("text") or ()])
+
+
+def test_a_level_far_from_the_origin_is_drawn_in_its_local_frame_and_read_in_world_metres():
+    # 1,000 km out, float32 world coordinates would step by 6 cm; the view holds them less the local origin
+    level = generate_level("sample:loop_of_four_rooms")
+    shift = np.array([1e6, 0.0, -1e6])
+    near, far = (json.loads(html_report.build_figure(g2s_core.run(moved(level, s), "level_regions")).to_json())
+                 for s in (0 * shift, shift))
+    assert [(t["type"], t.get("name")) for t in far["data"]] == [(t["type"], t.get("name")) for t in near["data"]]
+    hovered = 0
+    for at_origin, out in zip(near["data"], far["data"]):
+        local, reference = _coordinates(out), _coordinates(at_origin)
+        # the far run's world positions less the move agree with the origin's within 2e-9 m: within a float32 step
+        step = np.spacing(np.float32(max(np.nanmax(np.abs(reference), initial=0.0), 1.0)))
+        assert np.array_equal(np.isnan(local), np.isnan(reference))
+        assert np.nanmax(np.abs(local - reference), initial=0.0) <= step
+        world, origin_world = _hover_positions(out), _hover_positions(at_origin)
+        assert world.shape == origin_world.shape
+        if len(world):  # every hover of a position shows it in world metres, to the centimetre
+            assert np.abs(world - shift - origin_world).max() <= 0.0100001
+            hovered += len(world)
+    assert hovered > 0
+    scene, reference = far["layout"]["scene"], near["layout"]["scene"]
+    assert [scene[f"{a}axis"]["title"]["text"] for a in "xyz"] == ["X − 1,000,000 (m)", "Y (m, up)", "Z + 1,000,000 (m)"]
+    assert [reference[f"{a}axis"]["title"]["text"] for a in "xyz"] == ["X (m)", "Y (m, up)", "Z (m)"]
+    for axis in ("xaxis", "yaxis", "zaxis"):
+        assert scene[axis]["range"] == pytest.approx(reference[axis]["range"], abs=1e-6)

@@ -128,3 +128,27 @@ def test_deep_nesting_gives_the_standard_text():
     for _ in range(300):
         value = [value, {"k": 1}]
     assert dumps_indented(value) == standard(value)
+
+
+def test_columns_of_records_give_the_standard_text():
+    # the writer works a column at a time: records with the same keys, lists of one length, columns of mixed types
+    rng = random.Random(11)
+    records = [{
+        "id": i,
+        "position": [rng.uniform(-1e7, 1e7) for _ in range(3)],
+        "area": rng.choice([None, 0.5, 1, "x", True, -0.0, 1e-7, 1e21, np.float64(2.5)]),
+        "values": {"flow": rng.random()} if i % 3 else {},
+        "extra": rng.choice([{}, {"portal": [[1.0, 2.0, 3.0], (4.0, 5.0, 6.0)]}, {"b": [1, [2]], "a": None}, {2: "k"}]),
+    } for i in range(500)]
+    mixed = [*records[:50], [1, 2, 3], [[1, 2]] * 20, list(range(40)), "s", 1.5, None, True, {}, [], ()]
+    value = {"records": records, "mixed": mixed, "lengths": [list(range(i)) for i in range(30)] * 2,
+             "pairs": [(i, i + 1) for i in range(100)], "long rows": [list(range(17))] * 3}
+    assert dumps_indented(value) == standard(value)
+
+
+def test_a_bad_value_deep_in_a_column_raises_as_json_does():
+    records = [{"x": [0.5, 1.0]} for _ in range(10)] + [{"x": [0.5, float("nan")]}]
+    with pytest.raises(ValueError, match="Out of range float values are not JSON compliant"):
+        dumps_indented({"records": records})
+    with pytest.raises(TypeError, match="Object of type set is not JSON serializable"):
+        dumps_indented([{"x": 1}, {"x": {1}}])

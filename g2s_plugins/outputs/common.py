@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
+from itertools import repeat
 from typing import Any
 
 import networkx as nx
@@ -12,8 +13,9 @@ import numpy as np
 from g2s_core.model import RunResult
 from g2s_core.summary import final_graph, metric_lines, roots_of, stage_rows
 
-__all__ = ["agent_value", "coordinate", "edge_list", "final_graph", "floors", "is_loop_edge", "metric_lines", "number", "positions",
-           "roots_of", "stage_rows", "terminal_ids", "tree_parents", "vector"]
+__all__ = ["agent_value", "coordinate", "coordinates", "edge_list", "edges_with_data", "final_graph", "floors", "is_loop_edge",
+           "metric_lines", "number", "numbers", "positions", "roots_of", "stage_rows", "terminal_ids", "tree_parents",
+           "vector", "vectors"]
 
 FLOAT_DIGITS = 9
 """Floats in the written files keep this many significant digits (``format(x, '.9g')``); coordinates also keep
@@ -56,6 +58,81 @@ def vector(value: Any) -> list[float | None] | None:
     return [coordinate(v) for v in np.asarray(value, dtype=np.float64).reshape(-1).tolist()]
 
 
+def numbers(values: Sequence[Any]) -> list[float | None]:
+    """:func:`number` of each of ``values`` (``None`` stays ``None``), rounded by C loops instead of a call each."""
+    return _rounded(values, coordinates=False)
+
+
+def coordinates(values: Sequence[Any]) -> list[float | None]:
+    """:func:`coordinate` of each of ``values`` (``None`` stays ``None``), as :func:`numbers` does."""
+    return _rounded(values, coordinates=True)
+
+
+def _rounded(values: Sequence[Any], coordinates: bool) -> list[float | None]:
+    missing = [value is None for value in values]
+    if any(missing):
+        rounded = iter(_rounded([v for v, absent in zip(values, missing) if not absent], coordinates))
+        return [None if absent else next(rounded) for absent in missing]
+    floats = np.array(list(map(float, values)), dtype=np.float64)
+    result: list[float | None] = (significant_digits(floats) + 0.0).tolist()  # + 0.0: -0.0 -> 0.0
+    if coordinates:
+        with np.errstate(invalid="ignore"):
+            far = np.flatnonzero(np.abs(floats) >= _FINE_FROM)  # not nan; infinities are left to the next line
+        for index in far.tolist():
+            result[index] = coordinate(float(floats[index]))
+    if not np.isfinite(floats).all():
+        result = [x if x is not None and math.isfinite(x) else None for x in result]
+    return result
+
+
+_POWERS_OF_TEN = np.array([float(f"1e{k}") for k in range(23)])
+"""10^0 .. 10^22, the powers of ten a float64 holds exactly."""
+
+
+def significant_digits(values: np.ndarray) -> np.ndarray:
+    """``float(format(x, '.9g'))`` of each float64 of ``values``, the same floats, without a string each.
+
+    The nearest integer to x * 10^k (k = 8 - exponent, at most 22 either way) is its
+    9-digit decimal, rounded half to even as ``format`` does, unless the
+    product lies within its rounding error (1e-7 at most) of a half; then
+    m / 10^k (or m * 10^-k), one correctly rounded operation on exact
+    operands, is the float nearest that decimal, which is what ``float()``
+    parses. The values this cannot settle (near a half, tiny, huge, zero,
+    not finite: a few in a million) go through ``format``.
+    """
+    values = np.asarray(values, dtype=np.float64)
+    result = values.copy()
+    magnitude = np.abs(values)
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        shift = (FLOAT_DIGITS - 1) - np.floor(np.log10(magnitude))
+        usable = np.isfinite(shift) & (np.abs(shift) <= 22)
+        k = np.where(usable, shift, 0).astype(np.int64)
+        scale = _POWERS_OF_TEN[np.abs(k)]
+        scaled = np.where(k >= 0, values * scale, values / scale)
+        digits = np.rint(scaled)
+        # 9 digits, or 10^9 when x rounds up to the next power of ten (a wrong exponent gives 8 or 10 digits)
+        nine_digits = (np.abs(digits) >= 10.0 ** (FLOAT_DIGITS - 1)) & (np.abs(digits) <= 10.0 ** FLOAT_DIGITS)
+        settled = usable & nine_digits & (np.abs(np.abs(scaled - digits) - 0.5) > 1e-6)
+        result[settled] = np.where(k >= 0, digits / scale, digits * scale)[settled]
+    for index in np.flatnonzero(~settled).tolist():
+        result[index] = float(format(values[index], _ROUNDED))
+    return result
+
+
+def vectors(values: Sequence[Any]) -> list[list[float | None] | None]:
+    """:func:`vector` of each of ``values``: their components rounded together by :func:`coordinates`."""
+    present = [value for value in values if value is not None]
+    try:
+        array = np.asarray(present, dtype=np.float64)
+    except (TypeError, ValueError):  # ragged or not numbers: one by one, as vector() takes (or refuses) them
+        array = None
+    if array is None or array.ndim != 2 or not array.shape[1]:
+        return [vector(value) for value in values]
+    flat = coordinates(array.reshape(-1).tolist())
+    rows = iter(list(map(list, zip(*[iter(flat)] * array.shape[1]))))
+    return [None if value is None else next(rows) for value in values]
+
+
 def terminal_ids(result: RunResult) -> list[int]:
     """The terminals every output shows and records, in the selector's order (``[]`` before step 2); the
     selector's waypoints are plain structure nodes (``Terminals.without_waypoints``)."""
@@ -79,9 +156,21 @@ def positions(graph: nx.Graph, nodes: Sequence[int]) -> np.ndarray:
 
 def edge_list(graph: nx.Graph) -> list[tuple[int, int]]:
     """Edges sorted; (parent, child) for a rooted forest, (low id, high id) otherwise."""
-    if graph.is_directed():
-        return sorted((int(u), int(v)) for u, v in graph.edges)
-    return sorted(tuple(sorted((int(u), int(v)))) for u, v in graph.edges)  # type: ignore[misc]
+    return sorted(_oriented(graph, graph.edges))
+
+
+def edges_with_data(graph: nx.Graph) -> list[tuple[int, int, dict[str, Any]]]:
+    """:func:`edge_list`'s edges, in its order, each with its attribute dict (read as the edges are listed:
+    looking each up again costs a networkx view per edge)."""
+    edges = list(graph.edges(data=True))
+    pairs = _oriented(graph, edges)
+    return [(*pairs[i], edges[i][2]) for i in sorted(range(len(pairs)), key=pairs.__getitem__)]
+
+
+def _oriented(graph: nx.Graph, edges: Sequence[tuple]) -> list[tuple[int, int]]:
+    """``(u, v)`` of each edge as ints: (parent, child) in a directed graph, (low id, high id) otherwise."""
+    pairs = [(int(edge[0]), int(edge[1])) for edge in edges]
+    return pairs if graph.is_directed() else [(u, v) if u <= v else (v, u) for u, v in pairs]
 
 
 def is_loop_edge(graph: nx.Graph, u: int, v: int) -> bool:

@@ -6,7 +6,13 @@ the warnings and the config used (YAML, with the formats actually written).
 plotly.js is embedded once, gzip-compressed (the browser unpacks it with its
 built-in ``DecompressionStream``), and the geometry travels as typed arrays
 of 32-bit floats, so a level of a few hundred polygons gives a page of about
-2 MB. The 3D view's legend entries are layers that a click shows or hides
+2 MB. A level far from the origin is drawn in its local frame
+(:mod:`g2s_plugins.local_frame`, the frame of the GLB's meshes): the arrays
+hold positions less the local origin, which keep the level's detail in
+single precision (1,000 km out, world coordinates would round to 6 cm), an
+axis whose origin moved says so in its title (``X − 1,000,000 (m)``), and
+every hover shows world positions, to the centimetre; near the origin
+nothing is translated. The 3D view's legend entries are layers that a click shows or hides
 (a layer may be several plotly traces sharing a legend group):
 
 =================================  ==========================================  =======
@@ -68,6 +74,7 @@ import yaml
 from plotly.offline import get_plotlyjs
 
 from g2s_core.model import RunResult
+from g2s_plugins.local_frame import LocalFrame
 from g2s_plugins.outputs import colours
 from g2s_plugins.outputs.common import (
     edge_list,
@@ -266,12 +273,14 @@ def build_figure(result: RunResult) -> go.Figure:
     if final is not None and final.is_directed():
         traces += _loop_layer(final)
     traces += _region_layer(result) + _chokepoint_layer(result)
-    figure = go.Figure(data=traces)
+    bounds = _level_bounds(result)
+    frame = LocalFrame(bounds)
+    figure = go.Figure(data=[_in_view(trace, frame) for trace in traces])
     figure.update_layout(
         template="plotly_white",
         margin=dict(l=0, r=0, t=0, b=0),
         legend=dict(groupclick="togglegroup", itemsizing="constant", x=0.0, y=1.0, bgcolor="rgba(255,255,255,0.7)"),
-        scene=_scene(_level_bounds(result)),
+        scene=_scene(frame.to_local(bounds), frame.origin),
         uirevision="g2s",
     )
     return figure
@@ -287,8 +296,30 @@ def _level_bounds(result: RunResult) -> np.ndarray:
     return np.stack([points.min(axis=0), points.max(axis=0)]) if len(points) else np.asarray([[-1.0] * 3, [1.0] * 3])
 
 
-def _scene(bounds: np.ndarray) -> dict[str, Any]:
-    """Axes fixed to ``bounds`` (metres), true proportions, and a camera that sees the whole box.
+def _in_view(trace: go.Mesh3d | go.Scatter3d, frame: LocalFrame) -> dict[str, Any]:
+    """``trace`` (its x, y, z world coordinates, float64, m) as the view draws it: in ``frame``, float32 arrays.
+
+    The one place where positions lose precision: after the subtraction of the local origin, so a level far out
+    keeps its detail (near the origin nothing is subtracted, and the arrays are the world's, rounded). Returned as
+    a new trace's spec: plotly keeps a trace's old array when given one whose values compare equal, whatever its
+    dtype.
+    """
+    spec = trace.to_plotly_json()
+    points = np.stack([np.asarray(spec[axis], dtype=np.float64) for axis in "xyz"], axis=1)
+    local = frame.to_local(points).astype(np.float32)
+    return {**spec, "x": local[:, 0], "y": local[:, 1], "z": local[:, 2]}
+
+
+def _axis_title(name: str, origin: float, unit: str) -> str:
+    """An axis title; where the view's frame moved along the axis, what its values are: ``X − 1,000,000 (m)``."""
+    if origin == 0:
+        return f"{name} ({unit})"
+    return f"{name} {'−' if origin > 0 else '+'} {abs(origin):,.0f} ({unit})"
+
+
+def _scene(bounds: np.ndarray, origin: np.ndarray) -> dict[str, Any]:
+    """Axes fixed to ``bounds`` (metres, in the view's frame; its (3,) ``origin`` in the world is named in the
+    titles of the axes it moved), true proportions, and a camera that sees the whole box.
 
     plotly draws the box with half-sides ``aspectratio / 2`` around the origin
     and looks at it from ``eye``: the eye stands on :data:`CAMERA_DIRECTION` at
@@ -300,8 +331,9 @@ def _scene(bounds: np.ndarray) -> dict[str, Any]:
     distance = radius / math.sin(math.radians(CAMERA_FOV_DEGREES / 2))
     direction = np.asarray(CAMERA_DIRECTION) / np.linalg.norm(CAMERA_DIRECTION)
     eye = distance * direction
-    axes = {f"{axis}axis": dict(range=[float(bounds[0][i]), float(bounds[1][i])], title=title, autorange=False)
-            for i, (axis, title) in enumerate(zip("xyz", ("X (m)", "Y (m, up)", "Z (m)")))}
+    axes = {f"{axis}axis": dict(range=[float(bounds[0][i]), float(bounds[1][i])],
+                                title=_axis_title(axis.upper(), float(origin[i]), unit), autorange=False)
+            for i, (axis, unit) in enumerate(zip("xyz", ("m", "m, up", "m")))}
     return dict(
         **axes,
         aspectmode="manual",
@@ -316,8 +348,8 @@ def _visible(shown: bool) -> bool | str:
 
 def _mesh_trace(vertices: np.ndarray, faces: np.ndarray, name: str, colour: str | list[str], opacity: float,
                 visible: bool) -> go.Mesh3d:
-    """Triangles ``faces`` of ``vertices`` in one ``colour``, or one colour per face."""
-    v = np.asarray(vertices, dtype=np.float32)
+    """Triangles ``faces`` of ``vertices`` (world, m) in one ``colour``, or one colour per face."""
+    v = np.asarray(vertices, dtype=np.float64)
     f = np.asarray(faces, dtype=np.int32)
     paint = dict(color=colour) if isinstance(colour, str) else dict(facecolor=colour)
     return go.Mesh3d(
@@ -329,8 +361,8 @@ def _mesh_trace(vertices: np.ndarray, faces: np.ndarray, name: str, colour: str 
 
 
 def _segments(points: Sequence[tuple[Any, Any]]) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """x, y, z float32 arrays of line segments ``(p, q)``, a NaN after each so plotly leaves a gap."""
-    array = np.full((len(points), 3, 3), np.nan, dtype=np.float32)
+    """x, y, z float64 arrays (world, m) of line segments ``(p, q)``, a NaN after each so plotly leaves a gap."""
+    array = np.full((len(points), 3, 3), np.nan, dtype=np.float64)
     for index, (p, q) in enumerate(points):
         array[index, 0], array[index, 1] = p, q
     flat = array.reshape(-1, 3)
@@ -368,7 +400,7 @@ def _hover(title: str, roles: Sequence[str], pos: Sequence[float], lines: Sequen
 def _node_trace(graph: nx.Graph, nodes: Sequence[int], name: str, result: RunResult, size: float,
                 colour: Any, visible: bool, showlegend: bool = False, symbol: str = "circle") -> go.Scatter3d:
     terminals = set(terminal_ids(result))
-    p = np.asarray([graph.nodes[n]["pos"] for n in nodes], dtype=np.float32).reshape(-1, 3)
+    p = np.asarray([graph.nodes[n]["pos"] for n in nodes], dtype=np.float64).reshape(-1, 3)
     return go.Scatter3d(
         x=p[:, 0], y=p[:, 1], z=p[:, 2], mode="markers",
         name=name, legendgroup=name, showlegend=showlegend,
@@ -473,7 +505,7 @@ def _loop_edges(graph: nx.DiGraph) -> list[tuple[int, int]]:
 def _record_markers(positions: Sequence[Sequence[float]], name: str, texts: list[str],
                     marker: dict[str, Any]) -> go.Scatter3d:
     """Markers at the (R, 3) ``positions`` (m) with hover ``texts``, in layer ``name`` (no legend entry of their own)."""
-    p = np.asarray(positions, dtype=np.float32).reshape(-1, 3)
+    p = np.asarray(positions, dtype=np.float64).reshape(-1, 3)
     return go.Scatter3d(x=p[:, 0], y=p[:, 1], z=p[:, 2], mode="markers", name=name, legendgroup=name,
                         showlegend=False, marker=marker, text=texts, hoverinfo="text")
 

@@ -112,12 +112,13 @@ def _loaded(document: dict[str, Any], path: Path) -> LoadedResult:
         structure.add_node(node, **attrs)
         for key, value in record["values"].items():
             analysis.setdefault(key, {})[node] = value
-    for record in document["edges"]:
+    for index, record in enumerate(document["edges"]):
         attrs = dict(record["extra"])
         if record["weight"] is not None:
             attrs["weight"] = record["weight"]
-        structure.add_edge(int(record["source"]), int(record["target"]), **attrs)
-    roots = [int(r) for r in document["roots"]]
+        ends = _known_nodes(structure, {end: record[end] for end in ("source", "target")}, f"edges[{index}]")
+        structure.add_edge(*ends, **attrs)  # add_edge alone would add a missing end as a node without position
+    roots = _known_nodes(structure, dict(enumerate(document["roots"])), "roots")
     if directed:
         structure.graph["roots"] = roots
     terminals = None
@@ -152,6 +153,15 @@ def _loaded(document: dict[str, Any], path: Path) -> LoadedResult:
         warnings=list(document["warnings"]),
         document=document,
     )
+
+
+def _known_nodes(structure: nx.Graph, ids: dict[Any, Any], field: str) -> list[int]:
+    """``ids`` (place in ``field`` -> node id) as ints, each a node of ``structure``."""
+    for place, node in ids.items():
+        if int(node) not in structure:
+            where = f"{field}[{place}]" if isinstance(place, int) else f"{field}.{place}"
+            raise ValueError(f"{where}: node {int(node)} is not in nodes")
+    return [int(node) for node in ids.values()]
 
 
 def _terminals(data: dict[str, Any], openings: tuple[Opening, ...]) -> Terminals:

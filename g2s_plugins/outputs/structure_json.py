@@ -26,6 +26,8 @@ the navmesh build time) and the g2s version go to ``run.json`` instead.
 from __future__ import annotations
 
 import platform
+from itertools import chain, repeat
+from operator import itemgetter
 from pathlib import Path
 from typing import Any
 
@@ -34,7 +36,20 @@ import numpy as np
 
 from g2s_core import version
 from g2s_core.model import Opening, RunResult
-from g2s_plugins.outputs.common import edge_list, final_graph, number, roots_of, terminal_ids, tree_parents, vector
+from g2s_plugins.outputs.columns import by_groups
+from g2s_plugins.outputs.common import (
+    coordinates,
+    edge_list,
+    edges_with_data,
+    final_graph,
+    number,
+    numbers,
+    roots_of,
+    terminal_ids,
+    tree_parents,
+    vector,
+    vectors,
+)
 from g2s_plugins.outputs.files import atomic_write
 from g2s_plugins.outputs.json_text import dumps_indented
 from g2s_plugins.outputs.writers import collector_paused
@@ -86,17 +101,8 @@ def structure_document(result: RunResult) -> dict[str, Any]:
     trees: list[dict[str, Any]] = []
     if graph is not None:
         roots = roots_of(graph)
-        parents = tree_parents(graph)
-        for node in sorted(graph.nodes):
-            nodes.append(_node_record(graph, node, terminals, result.analysis, keys, parents.get(node)))
-        for u, v in edge_list(graph):
-            attrs = graph.edges[u, v]
-            edges.append({
-                "source": u,
-                "target": v,
-                "weight": _optional_number(attrs.get("weight")),
-                "extra": _extra(attrs, _EDGE_KEYS),
-            })
+        nodes = _node_records(graph, terminals, result.analysis, keys)
+        edges = _edge_records(graph)
         for root in roots:
             members = sorted({root, *nx.descendants(graph, root)})
             trees.append({
@@ -161,24 +167,46 @@ def run_document(result: RunResult) -> dict[str, Any]:
     }
 
 
-def _node_record(
-    graph: nx.Graph, node: int, terminals: set[int], analysis: dict, keys: list[str], parent: int | None
-) -> dict[str, Any]:
-    attrs = graph.nodes[node]
-    return {
-        "id": int(node),
-        "position": vector(attrs["pos"]),
-        "normal": vector(attrs.get("normal")),
-        "area": _optional_number(attrs.get("area")),
-        "on_navmesh": None if attrs.get("on_navmesh") is None else bool(attrs["on_navmesh"]),
-        "polygon": None if attrs.get("polygon") is None else int(attrs["polygon"]),
-        "terminal": int(node) in terminals or bool(attrs.get("terminal", False)),
-        "root": None if attrs.get("root") is None else int(attrs["root"]),
-        "depth": None if attrs.get("depth") is None else int(attrs["depth"]),
-        "parent": parent,
-        "values": {key: number(analysis[key][node]) for key in keys if node in analysis[key]},
-        "extra": _extra(attrs, _NODE_KEYS),
-    }
+def _node_records(graph: nx.Graph, terminals: set[int], analysis: dict, keys: list[str]) -> list[dict[str, Any]]:
+    """The records of ``graph``'s nodes, by id; each attribute is rounded for all nodes at once (a column)."""
+    ids = sorted(graph.nodes)
+    attrs = list(map(graph.nodes.__getitem__, ids))
+    parents = tree_parents(graph)
+    positions = vectors([a["pos"] for a in attrs])
+    normals = vectors([a.get("normal") for a in attrs])
+    areas = numbers([a.get("area") for a in attrs])
+    columns = {}  # key -> {node: rounded value} of the nodes that have one
+    for key in keys:
+        present = [n for n in ids if n in analysis[key]]
+        columns[key] = dict(zip(present, numbers([analysis[key][n] for n in present])))
+    extras = _extras(attrs, _NODE_KEYS)
+    return [
+        {
+            "id": int(node),
+            "position": position,
+            "normal": normal,
+            "area": area,
+            "on_navmesh": None if a.get("on_navmesh") is None else bool(a["on_navmesh"]),
+            "polygon": None if a.get("polygon") is None else int(a["polygon"]),
+            "terminal": int(node) in terminals or bool(a.get("terminal", False)),
+            "root": None if a.get("root") is None else int(a["root"]),
+            "depth": None if a.get("depth") is None else int(a["depth"]),
+            "parent": parents.get(node),
+            "values": {key: columns[key][node] for key in keys if node in columns[key]},
+            "extra": extra,
+        }
+        for node, a, position, normal, area, extra in zip(ids, attrs, positions, normals, areas, extras)
+    ]
+
+
+def _edge_records(graph: nx.Graph) -> list[dict[str, Any]]:
+    """The records of ``graph``'s edges in :func:`edge_list`'s order, rounded a column at a time."""
+    edges = edges_with_data(graph)
+    attrs = [data for _, _, data in edges]
+    weights = numbers([data.get("weight") for data in attrs])
+    extras = _extras(attrs, _EDGE_KEYS)
+    return [{"source": u, "target": v, "weight": weight, "extra": extra}
+            for (u, v, _), weight, extra in zip(edges, weights, extras)]
 
 
 def _terminals(result: RunResult) -> dict[str, Any]:
@@ -232,10 +260,6 @@ def _navmesh_stats(result: RunResult, timing: bool) -> dict[str, Any] | None:
     return _plain(chosen)
 
 
-def _optional_number(value: Any) -> float | None:
-    return None if value is None else number(value)
-
-
 class _Skip:
     """Marks a value that JSON cannot hold faithfully."""
 
@@ -245,38 +269,89 @@ _SKIP = _Skip()
 
 def _plain(value: Any) -> Any:
     """``value`` as JSON data with rounded floats; :data:`_SKIP` for what cannot be written."""
-    kind = type(value)  # the plain types first, by identity: most attribute values are (a quarter of the writing)
+    return _plain_column([value])[0]
+
+
+def _plain_column(values: list) -> list:
+    """:func:`_plain` of each of ``values``, a column: the values of a type (dicts: of a key set) go together."""
+    return by_groups(values, type, _plain_of_kind)
+
+
+def _plain_of_kind(kind: type, values: list) -> list:
+    """:func:`_plain_column` of values that are all of type ``kind``."""
     if kind is float:
-        return number(value)
-    if kind is int or kind is str or kind is bool or value is None:
+        return numbers(values)
+    if kind is int or kind is str or kind is bool or kind is type(None):
+        return values
+    if kind is dict:
+        return by_groups(values, tuple, _plain_dicts)
+    if kind is list or kind is tuple:
+        return _plain_lists(values)
+    return [plain if plain is _SKIP or isinstance(plain, str) else _plain(plain) for plain in map(_builtin, values)]
+
+
+def _plain_dicts(keys: tuple, values: list[dict]) -> list:
+    """:func:`_plain_column` of dicts whose keys are ``keys`` (of these, or more): a column per key; keys become
+    ``str``, values JSON cannot hold are left out."""
+    if not keys:
+        return [{} for _ in values]
+    names = [str(key) for key in keys]
+    columns = [_plain_column(list(map(itemgetter(key), values))) for key in keys]
+    rows = list(map(dict, map(zip, repeat(names), zip(*columns))))
+    if any(_SKIP in column for column in columns):
+        rows = [{k: v for k, v in row.items() if v is not _SKIP} for row in rows]
+    return rows
+
+
+def _extras(attrs: list[dict[str, Any]], known: tuple[str, ...]) -> list[dict[str, Any]]:
+    """Each of ``attrs``' attributes beyond the documented ones that JSON can hold (plugins' own, e.g. ``width``)."""
+    extra_keys = {keys: tuple(k for k in keys if k not in known) for keys in set(map(tuple, attrs))}
+    return by_groups(attrs, lambda a: extra_keys[tuple(a)], _plain_dicts)
+
+
+def _plain_lists(values: list) -> list:
+    """:func:`_plain_column` of lists (or tuples): three floats are a point or a direction (a portal's end)
+    whose components are coordinates; a list with an item JSON cannot hold is itself left out."""
+    sizes = list(map(len, values))
+    flat = list(chain.from_iterable(values))
+    size = sizes[0]
+    if size and sizes.count(size) == len(sizes):  # lists of one length (points, portals): regrouped by zip
+        points = size == 3 and set(map(type, flat)) == {float}
+        if points or size != 3:
+            items = coordinates(flat) if points else _plain_column(flat)
+            rows = list(map(list, zip(*[iter(items)] * size)))
+            return rows if points or _SKIP not in items else [_SKIP if _SKIP in row else row for row in rows]
+    points_at = [len(value) == 3 and type(value[0]) is float and type(value[1]) is float and type(value[2]) is float
+                 for value in values]
+    items = iter(_plain_column([item for value, point in zip(values, points_at) if not point for item in value]))
+    point_items = iter(coordinates([item for value, point in zip(values, points_at) if point for item in value]))
+    result = []
+    for value, point in zip(values, points_at):
+        row = [next(point_items if point else items) for _ in value]
+        result.append(_SKIP if not point and _SKIP in row else row)
+    return result
+
+
+def _builtin(value: Any) -> Any:
+    """A value of a type beyond the plain ones as plain types (numpy scalars and arrays, sets, subclasses; a
+    ``str`` subclass stays itself, as JSON writes it as a string), or :data:`_SKIP` when JSON cannot hold it."""
+    if isinstance(value, str):
         return value
-    if kind is not dict and kind is not tuple and kind is not list:  # so are the containers (the edges' portals)
-        if isinstance(value, str):
-            return value
-        if isinstance(value, (bool, np.bool_)):
-            return bool(value)
-        if isinstance(value, (int, np.integer)):
-            return int(value)
-        if isinstance(value, (float, np.floating)):
-            return number(value)
-        if isinstance(value, (set, frozenset)):
-            try:
-                value = sorted(value)
-            except TypeError:
-                return _SKIP
-        elif isinstance(value, np.ndarray):
-            value = value.tolist()
-        elif not isinstance(value, (dict, list, tuple)):
+    if isinstance(value, (bool, np.bool_)):
+        return bool(value)
+    if isinstance(value, (int, np.integer)):
+        return int(value)
+    if isinstance(value, (float, np.floating)):
+        return float(value)
+    if isinstance(value, (set, frozenset)):
+        try:
+            return sorted(value)
+        except TypeError:
             return _SKIP
+    if isinstance(value, np.ndarray):
+        return value.tolist()
     if isinstance(value, dict):
-        items = {str(k): _plain(v) for k, v in value.items()}
-        return {k: v for k, v in items.items() if v is not _SKIP}
-    if len(value) == 3 and all(type(v) is float for v in value):  # a point or a direction (a portal's end)
-        return vector(value)
-    items = [_plain(v) for v in value]
-    return _SKIP if any(i is _SKIP for i in items) else items
-
-
-def _extra(attrs: dict[str, Any], known: tuple[str, ...]) -> dict[str, Any]:
-    """Attributes beyond the documented ones that JSON can hold (plugins' own, e.g. ``width``)."""
-    return _plain({k: v for k, v in attrs.items() if k not in known})
+        return dict(value)
+    if isinstance(value, (list, tuple)):
+        return list(value)
+    return _SKIP

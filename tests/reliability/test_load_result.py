@@ -69,6 +69,19 @@ def test_malformed_field_is_named(where, value, field, written, tmp_path):
 
 
 @pytest.mark.parametrize(
+    "where, field",
+    [(("edges", 0, "target"), "edges[0].target"), (("edges", 1, "source"), "edges[1].source"), (("roots", 0), "roots[0]")],
+)
+def test_a_reference_to_a_node_not_in_nodes_is_refused(where, field, written, tmp_path):
+    missing = max(node["id"] for node in written["nodes"]) + 1
+    path = _write(tmp_path, _set(written, where, missing))
+    with pytest.raises(G2SError) as caught:
+        load_result(path)
+    assert str(caught.value) == (f"{path}: malformed structure file (ValueError: {field}: node {missing} is not in "
+                                 "nodes)")
+
+
+@pytest.mark.parametrize(
     "text, says",
     [
         ("", "invalid JSON"),
