@@ -340,20 +340,92 @@ def disk_inside(points: np.ndarray, triangles: np.ndarray, radius: float) -> np.
     """(n,) bool: the XZ disk of ``radius`` around each point lies inside its triangle's XZ projection.
 
     Each edge's line must lie at least ``radius`` from the point, on the
-    triangle's side; a triangle seen edge-on (no XZ area) contains nothing.
-    ``points`` (n, 3), ``triangles`` (n, 3, 3), metres.
+    triangle's side (:meth:`FloorTriangles.edge_room`); a triangle seen
+    edge-on (no XZ area) contains nothing. ``points`` (n, 3), ``triangles``
+    (n, 3, 3), metres.
     """
-    x, z = points[:, 0], points[:, 2]
-    corner_x, corner_z = triangles[:, :, 0], triangles[:, :, 2]
-    edge_x = [corner_x[:, (i + 1) % 3] - corner_x[:, i] for i in range(3)]
-    edge_z = [corner_z[:, (i + 1) % 3] - corner_z[:, i] for i in range(3)]
-    area = edge_x[0] * edge_z[1] - edge_z[0] * edge_x[1]
-    side = np.sign(area)
-    inside = area != 0
-    for i in range(3):
-        cross = edge_x[i] * (z - corner_z[:, i]) - edge_z[i] * (x - corner_x[:, i])
-        inside &= side * cross >= radius * np.hypot(edge_x[i], edge_z[i])
-    return inside
+    room = FloorTriangles(triangles, across=False).edge_room(points, np.arange(len(points)))
+    return (room >= radius).all(axis=1)
+
+
+class FloorTriangles:
+    """Walkable triangles (m, 3, 3) seen from above, and which one lies across each edge (``across``: computed
+    from shared corners; off: none)."""
+
+    def __init__(self, corners: np.ndarray, across: bool = True) -> None:
+        self.corners = corners
+        u, v = corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0]
+        normal_x, normal_y, normal_z = (u[:, 1] * v[:, 2] - u[:, 2] * v[:, 1], u[:, 2] * v[:, 0] - u[:, 0] * v[:, 2],
+                                        u[:, 0] * v[:, 1] - u[:, 1] * v[:, 0])
+        with np.errstate(divide="ignore", invalid="ignore"):
+            self.gradient = np.hypot(normal_x, normal_z) / np.abs(normal_y)
+            """(m,) rise per metre of the steepest horizontal direction (inf: a vertical triangle)."""
+            # height at (x, z): height0 - (slope_x (x - x0) + slope_z (z - z0))
+            self.slope = np.column_stack([normal_x / normal_y, normal_z / normal_y])
+        corner_x, corner_z = corners[:, :, 0], corners[:, :, 2]
+        self._edge_x = np.roll(corner_x, -1, axis=1) - corner_x
+        self._edge_z = np.roll(corner_z, -1, axis=1) - corner_z
+        area = self._edge_x[:, 0] * self._edge_z[:, 1] - self._edge_z[:, 0] * self._edge_x[:, 1]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            # metres inside an edge per unit of the cross product; nan for a triangle with no XZ area
+            self._inward = np.where(area != 0, np.sign(area), np.nan)[:, None] / np.hypot(self._edge_x, self._edge_z)
+        self.neighbour = np.full((len(corners), 3), -1, dtype=np.int64)
+        """(m, 3): the triangle sharing edge i (corner i to corner i + 1), -1 for none (or more than one)."""
+        self.neighbour_edge = np.zeros((len(corners), 3), dtype=np.int64)
+        """(m, 3): which edge of that triangle it is."""
+        if across and len(corners):
+            _, vertex = np.unique(corners.reshape(-1, 3), axis=0, return_inverse=True)
+            vertex = vertex.reshape(-1, 3)
+            ends = np.sort(np.stack([vertex, np.roll(vertex, -1, axis=1)], axis=2), axis=2).reshape(-1, 2)
+            _, key, count = np.unique(ends, axis=0, return_inverse=True, return_counts=True)
+            key = key.reshape(-1)
+            order = np.argsort(key, kind="stable")
+            pair = count[key[order]] == 2
+            first, second = order[pair][0::2], order[pair][1::2]
+            self.neighbour.reshape(-1)[first], self.neighbour.reshape(-1)[second] = second // 3, first // 3
+            self.neighbour_edge.reshape(-1)[first], self.neighbour_edge.reshape(-1)[second] = second % 3, first % 3
+            # A neighbour folded back over the triangle (seen from above) does not extend it: none.
+            faces = np.repeat(np.arange(len(corners)), 3)
+            linked = self.neighbour.reshape(-1) >= 0
+            apex = corners[self.neighbour.reshape(-1)[linked], (self.neighbour_edge.reshape(-1)[linked] + 2) % 3]
+            room = self.edge_room(apex, faces[linked])[np.arange(int(linked.sum())), np.tile(np.arange(3), len(corners))[linked]]
+            folded = np.nonzero(linked)[0][~(room < 0.0)]
+            self.neighbour.reshape(-1)[folded] = -1
+
+    def edge_room(self, points: np.ndarray, faces: np.ndarray) -> np.ndarray:
+        """(n, 3): how far each point lies inside each edge line of its triangle, seen from above (metres; nan
+        for a triangle with no XZ area, which no comparison passes)."""
+        corner_x, corner_z = self.corners[faces, :, 0], self.corners[faces, :, 2]
+        cross = self._edge_x[faces] * (points[:, None, 2] - corner_z) - self._edge_z[faces] * (points[:, None, 0] - corner_x)
+        return cross * self._inward[faces]
+
+    def _drop(self, points: np.ndarray, faces: np.ndarray, clearance: float) -> np.ndarray:
+        """(n,): metres the triangle's plane lies farthest above or below the point's height within ``clearance``
+        of it horizontally."""
+        corner = self.corners[faces, 0]
+        offset = points[:, [0, 2]] - corner[:, [0, 2]]
+        height = corner[:, 1] - (self.slope[faces] * offset).sum(axis=1)
+        return np.abs(height - points[:, 1]) + clearance * self.gradient[faces]
+
+    def disk_inside(self, points: np.ndarray, faces: np.ndarray, radius: float, clearance: float) -> tuple[np.ndarray, np.ndarray]:
+        """``(inside, drop)``: (n,) bool, the XZ disk of ``radius`` around each point lies inside its triangle
+        ``faces[i]``, or inside it and, for each edge whose line is nearer than ``radius``, the triangle across
+        that edge (every point of the disk beyond that edge is then inside that triangle); (n,) metres, the
+        largest :meth:`_drop` of those triangles over ``clearance``. Seen from above."""
+        room = self.edge_room(points, faces)
+        inside = (room >= 0.0).all(axis=1)  # nan (no XZ area) compares false
+        drop = np.where(inside, self._drop(points, faces, clearance), np.inf)
+        for edge in range(3):
+            rows = np.nonzero(inside & (room[:, edge] < radius))[0]
+            other = self.neighbour[faces[rows], edge]
+            beyond = np.full((len(rows), 3), np.nan)
+            beyond[other >= 0] = self.edge_room(points[rows[other >= 0]], other[other >= 0])
+            # the shared edge bounds the own triangle's side: only the other two count
+            beyond[np.arange(len(rows)), self.neighbour_edge[faces[rows], edge]] = np.inf
+            fits = (other >= 0) & (beyond >= radius).all(axis=1)
+            inside[rows[~fits]] = False
+            drop[rows[fits]] = np.maximum(drop[rows[fits]], self._drop(points[rows[fits]], other[fits], clearance))
+        return inside, drop
 
 
 MAX_FLOOR_CELL_ENTRIES = 4_000_000
@@ -385,7 +457,7 @@ class OpenFloors:
     that ground. The ground under the line then lies within ``max_offset``
     of it, and rises along it no faster than T, a walkable slope: the walk
     passes whenever ``max_offset`` is within the climb plus the ground margin
-    and the surface-gap tolerance (:meth:`certain_walks`).
+    and the surface-gap tolerance (:meth:`certain_offset`).
     """
 
     def __init__(self, caster: RayCaster, agent: AgentShape, min_inradius: float = 0.0) -> None:

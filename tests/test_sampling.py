@@ -28,6 +28,7 @@ from g2s_plugins._raycasting import (
     UP,
     AgentShape,
     BoxOccupancy,
+    FloorTriangles,
     RayCaster,
     clear_above,
     disk_inside,
@@ -493,16 +494,16 @@ def test_clearance_disk_may_reach_across_to_the_neighbouring_triangle():
     # A quad floor of two triangles, x and z in [0, 4]: a disk crossing the diagonal lies in the pair,
     # one crossing the outer edge does not; a neighbour folded back over its triangle does not count.
     quad = np.array([[[0, 0, 0], [4, 0, 4], [4, 0, 0]], [[0, 0, 0], [0, 0, 4], [4, 0, 4]]], dtype=float)
-    floor = sampling._Floor(quad)
+    floor = FloorTriangles(quad)
     assert floor.neighbour.tolist() == [[1, -1, -1], [-1, -1, 0]]
     points = np.array([[2.2, 0, 1.9], [3.8, 0, 1.0], [2.2, 0, 1.9]])
     inside, drop = floor.disk_inside(points, np.array([0, 0, 0]), 0.5, 0.5)
     assert inside.tolist() == [True, False, True] and np.allclose(drop[inside], 0.0)
-    alone, _ = sampling._Floor(quad, across=False).disk_inside(points, np.array([0, 0, 0]), 0.5, 0.5)
+    alone, _ = FloorTriangles(quad, across=False).disk_inside(points, np.array([0, 0, 0]), 0.5, 0.5)
     assert not alone.any()
     folded = quad.copy()
     folded[1] = [[0, 0, 0], [4, 0, 4], [3, 0, 1]][::-1]  # shares the diagonal, lies on the first one's side
-    assert (sampling._Floor(folded).neighbour == -1).all()
+    assert (FloorTriangles(folded).neighbour == -1).all()
 
 
 def _agent_fits_with_every_ray(caster: RayCaster, points: np.ndarray, agent: AgentShape, clearance: float) -> np.ndarray:

@@ -66,11 +66,11 @@ from g2s_plugins._raycasting import (
     UP,
     AgentShape,
     BoxOccupancy,
+    FloorTriangles,
     OpenFloors,
     RayCaster,
     all_hits_down,
     clear_above,
-    disk_inside,
     head_room,
     ray_margin,
     walk_segments,
@@ -230,7 +230,7 @@ def agent_fits(
     ok[:] = False
     if triangles is not None:
         corners = np.asarray(triangles, dtype=np.float64).reshape(-1, 3, 3)
-        floor = _Floor(corners) if faces is not None else _Floor(corners[idx], across=False)
+        floor = FloorTriangles(corners) if faces is not None else FloorTriangles(corners[idx], across=False)
         plain = around.plain_ground(points[idx], floor, np.asarray(faces)[idx] if faces is not None else np.arange(len(idx)))
         ok[idx[plain]] = True
         idx = idx[~plain]
@@ -278,13 +278,13 @@ class _Surroundings:
         # Cells half as high as the ledge rays start above a floor (before any growing): its own cell seldom reaches there.
         self.walkable = BoxOccupancy(corners[walkable], widen, np.array([cell, min(cell, 0.5 * (self.reach - self.margin)), cell]))
 
-    def plain_ground(self, points: np.ndarray, floor: _Floor, faces: np.ndarray) -> np.ndarray:
+    def plain_ground(self, points: np.ndarray, floor: FloorTriangles, faces: np.ndarray) -> np.ndarray:
         """(n,) bool: the ledge test certainly passes at ``points`` (each on its triangle ``faces[i]`` of ``floor``).
 
         True where the clearance disk around a point (grown by ``margin``)
         lies inside its own walkable triangle seen from above, or inside it
         and the triangles across the edges the disk crosses
-        (:meth:`_Floor.disk_inside`); where those triangles stay within
+        (:meth:`~g2s_plugins._raycasting.FloorTriangles.disk_inside`); where those triangles stay within
         ``reach`` less the ground margin of the point's height under the disk;
         and where no steep triangle is near the point's column from that
         lowest point to the agent's height above the ledge rays' start, and
@@ -300,86 +300,6 @@ class _Surroundings:
         plain[plain] = self.steep.columns_free(points[plain], -drop[plain] - self.margin, top)
         plain[plain] = self.walkable.columns_free(points[plain], self.reach, top)
         return plain
-
-
-class _Floor:
-    """Walkable triangles (m, 3, 3) seen from above, and which one lies across each edge (``across``: computed
-    from shared corners; off: none)."""
-
-    def __init__(self, corners: np.ndarray, across: bool = True) -> None:
-        self.corners = corners
-        u, v = corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0]
-        normal_x, normal_y, normal_z = (u[:, 1] * v[:, 2] - u[:, 2] * v[:, 1], u[:, 2] * v[:, 0] - u[:, 0] * v[:, 2],
-                                        u[:, 0] * v[:, 1] - u[:, 1] * v[:, 0])
-        with np.errstate(divide="ignore", invalid="ignore"):
-            self.gradient = np.hypot(normal_x, normal_z) / np.abs(normal_y)
-            """(m,) rise per metre of the steepest horizontal direction (inf: a vertical triangle)."""
-            # height at (x, z): height0 - (slope_x (x - x0) + slope_z (z - z0))
-            self.slope = np.column_stack([normal_x / normal_y, normal_z / normal_y])
-        corner_x, corner_z = corners[:, :, 0], corners[:, :, 2]
-        self._edge_x = np.roll(corner_x, -1, axis=1) - corner_x
-        self._edge_z = np.roll(corner_z, -1, axis=1) - corner_z
-        area = self._edge_x[:, 0] * self._edge_z[:, 1] - self._edge_z[:, 0] * self._edge_x[:, 1]
-        with np.errstate(divide="ignore", invalid="ignore"):
-            # metres inside an edge per unit of the cross product; nan for a triangle with no XZ area
-            self._inward = np.where(area != 0, np.sign(area), np.nan)[:, None] / np.hypot(self._edge_x, self._edge_z)
-        self.neighbour = np.full((len(corners), 3), -1, dtype=np.int64)
-        """(m, 3): the triangle sharing edge i (corner i to corner i + 1), -1 for none (or more than one)."""
-        self.neighbour_edge = np.zeros((len(corners), 3), dtype=np.int64)
-        """(m, 3): which edge of that triangle it is."""
-        if across and len(corners):
-            _, vertex = np.unique(corners.reshape(-1, 3), axis=0, return_inverse=True)
-            vertex = vertex.reshape(-1, 3)
-            ends = np.sort(np.stack([vertex, np.roll(vertex, -1, axis=1)], axis=2), axis=2).reshape(-1, 2)
-            _, key, count = np.unique(ends, axis=0, return_inverse=True, return_counts=True)
-            key = key.reshape(-1)
-            order = np.argsort(key, kind="stable")
-            pair = count[key[order]] == 2
-            first, second = order[pair][0::2], order[pair][1::2]
-            self.neighbour.reshape(-1)[first], self.neighbour.reshape(-1)[second] = second // 3, first // 3
-            self.neighbour_edge.reshape(-1)[first], self.neighbour_edge.reshape(-1)[second] = second % 3, first % 3
-            # A neighbour folded back over the triangle (seen from above) does not extend it: none.
-            faces = np.repeat(np.arange(len(corners)), 3)
-            linked = self.neighbour.reshape(-1) >= 0
-            apex = corners[self.neighbour.reshape(-1)[linked], (self.neighbour_edge.reshape(-1)[linked] + 2) % 3]
-            room = self._edge_room(apex, faces[linked])[np.arange(int(linked.sum())), np.tile(np.arange(3), len(corners))[linked]]
-            folded = np.nonzero(linked)[0][~(room < 0.0)]
-            self.neighbour.reshape(-1)[folded] = -1
-
-    def _edge_room(self, points: np.ndarray, faces: np.ndarray) -> np.ndarray:
-        """(n, 3): how far each point lies inside each edge line of its triangle, seen from above (metres; nan
-        for a triangle with no XZ area, which no comparison passes)."""
-        corner_x, corner_z = self.corners[faces, :, 0], self.corners[faces, :, 2]
-        cross = self._edge_x[faces] * (points[:, None, 2] - corner_z) - self._edge_z[faces] * (points[:, None, 0] - corner_x)
-        return cross * self._inward[faces]
-
-    def _drop(self, points: np.ndarray, faces: np.ndarray, clearance: float) -> np.ndarray:
-        """(n,): metres the triangle's plane lies farthest above or below the point's height within ``clearance``
-        of it horizontally."""
-        corner = self.corners[faces, 0]
-        offset = points[:, [0, 2]] - corner[:, [0, 2]]
-        height = corner[:, 1] - (self.slope[faces] * offset).sum(axis=1)
-        return np.abs(height - points[:, 1]) + clearance * self.gradient[faces]
-
-    def disk_inside(self, points: np.ndarray, faces: np.ndarray, radius: float, clearance: float) -> tuple[np.ndarray, np.ndarray]:
-        """``(inside, drop)``: (n,) bool, the XZ disk of ``radius`` around each point lies inside its triangle
-        ``faces[i]``, or inside it and, for each edge whose line is nearer than ``radius``, the triangle across
-        that edge (every point of the disk beyond that edge is then inside that triangle); (n,) metres, the
-        largest :meth:`_drop` of those triangles over ``clearance``. Seen from above."""
-        room = self._edge_room(points, faces)
-        inside = (room >= 0.0).all(axis=1)  # nan (no XZ area) compares false
-        drop = np.where(inside, self._drop(points, faces, clearance), np.inf)
-        for edge in range(3):
-            rows = np.nonzero(inside & (room[:, edge] < radius))[0]
-            other = self.neighbour[faces[rows], edge]
-            beyond = np.full((len(rows), 3), np.nan)
-            beyond[other >= 0] = self._edge_room(points[rows[other >= 0]], other[other >= 0])
-            # the shared edge bounds the own triangle's side: only the other two count
-            beyond[np.arange(len(rows)), self.neighbour_edge[faces[rows], edge]] = np.inf
-            fits = (other >= 0) & (beyond >= radius).all(axis=1)
-            inside[rows[~fits]] = False
-            drop[rows[fits]] = np.maximum(drop[rows[fits]], self._drop(points[rows[fits]], other[fits], clearance))
-        return inside, drop
 
 
 def _poisson_candidates(surface: trimesh.Trimesh, spacing: float, params: Params) -> tuple[np.ndarray, np.ndarray, float]:
