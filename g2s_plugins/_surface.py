@@ -202,9 +202,10 @@ def collapse_rule(
             return normals_angle_deg(u, v) > tolerance_deg
 
     def predicate(tree: nx.DiGraph, a: int, b: int, c: int) -> bool:
-        nodes = tree.nodes
+        # networkx's own dicts rather than its views (a method call per look-up): this runs on every call
+        nodes = tree._node
         node_a, node_c = nodes[a], nodes[c]
-        if not node_c.get("on_navmesh", False) and tree.out_degree(c) == 0:
+        if not node_c.get("on_navmesh", False) and not tree._succ[c]:  # C a leaf
             return False
         rank_b = ranks.get(b)
         # a node without a rank is not compared (it counts as B's); no generator: this runs on every call

@@ -1798,6 +1798,20 @@ NB_MODULE(_recast, m) {
              nb::arg("a"), nb::arg("b"), nb::arg("step"), nb::arg("horizontal"), nb::arg("reach"),
              "segment_surface_gaps for one segment a -> b, as a float: no array in or out (one call per "
              "predicate test)")
+        .def("line_of_sight",
+             [](const NavMeshCore& n, Vec3In a, Vec3In b, double step, float horizontal, std::optional<double> max_gap) {
+                 if (!(step > 0)) throw nb::value_error("step must be positive");
+                 float pa[3], pb[3];
+                 get3(a, pa); get3(b, pb);
+                 thread_local std::vector<dtPolyRef> path(256);  // raycast's corridor, kept between the calls
+                 nb::gil_scoped_release release;
+                 std::lock_guard<std::mutex> lock(n.mutex);
+                 if (!n.ray(pa, pb, n.default_ext, path).first) return false;
+                 return !max_gap || n.segment_gap(a.data(), b.data(), step, horizontal, static_cast<float>(*max_gap)) <= *max_gap;
+             },
+             nb::arg("a"), nb::arg("b"), nb::arg("step"), nb::arg("horizontal"), nb::arg("max_gap").none(),
+             "raycast(a, b) is clear and, unless max_gap is None, segment_surface_gap(a, b, step, horizontal, "
+             "reach=max_gap) <= max_gap: both tests in one call, GIL released (the surface_los predicate's)")
         .def("nearest_poly",
              [](const NavMeshCore& n, Vec3In p, ExtIn extents) {
                  float pp[3], out[3], ext[3] = {n.default_ext[0], n.default_ext[1], n.default_ext[2]};

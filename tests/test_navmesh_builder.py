@@ -278,6 +278,22 @@ def test_segment_surface_gaps_on_a_slab():
     assert [nm.segment_surface_gap(a, b, step=0.1, reach=1.0) for a, b in zip(A.tolist(), B.tolist())] == gaps.tolist()
 
 
+def test_line_of_sight_is_the_raycast_and_the_surface_gap_together():
+    # surface_los's one C++ call gives what its two tests give one after the other, on a level with a ramp
+    # between two floors (a segment can run clear in plan yet under the ramp) and walls
+    _, ctx = run(levels.SAMPLES["floors_joined_by_ramp"]().mesh)
+    nm = ctx.navmesh
+    rng = np.random.default_rng(5)
+    pairs = nm.portals().pairs[rng.integers(len(nm.portals().pairs), size=400)]
+    A, B = nm.centres[pairs[:, 0]], nm.centres[pairs[:, 1]] + rng.uniform(-2.0, 2.0, (400, 3)) * [1, 0, 1]
+    A[:100] += rng.uniform(-0.5, 0.5, (100, 3))  # and points off the surface
+    for max_gap in (0.4, 0.1, None):
+        expected = [nm.raycast(a, b)[0] and (max_gap is None or nm.segment_surface_gap(a, b, 0.3, max_gap) <= max_gap)
+                    for a, b in zip(A.tolist(), B.tolist())]
+        assert [nm.line_of_sight(a, b, 0.3, max_gap) for a, b in zip(A.tolist(), B.tolist())] == expected
+        assert 0 < sum(expected) < len(expected)  # clear and blocked pairs both
+
+
 def test_overlapping_regions_are_warned_about():
     stairwell = levels.SAMPLES["building"]()  # 3 storeys: watershed makes one region of the stairwell
     design = stairwell.metadata["design_agent"]

@@ -42,6 +42,13 @@ class SquareWithWall:
     def segment_surface_gap(self, a, b, step, reach):
         return float(self.segment_surface_gaps(a, b, step, reach)[0])
 
+    def line_of_sight(self, a, b, step, max_gap):
+        """The real navmesh's one call: the raycast, then (unless ``max_gap`` is None) the gap test."""
+        clear, _t = self.raycast(a, b)
+        if not clear or max_gap is None:
+            return clear
+        return self.segment_surface_gap(a, b, step, max_gap) <= max_gap
+
     @staticmethod
     def _inside(p):
         return 0.0 <= p[0] <= 10.0 and 0.0 <= p[2] <= 10.0 and abs(p[1]) < 0.5

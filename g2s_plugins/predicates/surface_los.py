@@ -23,8 +23,9 @@ default agent climbs up to 45), so 10 degrees still keeps a node where one
 begins.
 
 Cost per call: one navmesh raycast, O(polygons crossed), and one Detour
-height query per probe point (at most |AC| / probe_step + 1 of them, in one
-C++ call that stops at the first probe out of reach).
+height query per probe point (at most |AC| / probe_step + 1 of them, stopping
+at the first probe out of reach), both in one C++ call
+(:meth:`g2s_plugins.recast.NavMesh.line_of_sight`).
 """
 
 from __future__ import annotations
@@ -61,9 +62,6 @@ def g2s_simplify_predicate(params: Params, context: RunContext) -> Callable[[nx.
     gap = params.max_surface_gap
 
     def line_of_sight(start: tuple[float, ...], end: tuple[float, ...]) -> bool:
-        clear, _t = navmesh.raycast(start, end)
-        if not clear or gap is None:
-            return clear
-        return navmesh.segment_surface_gap(start, end, step, gap) <= gap
+        return navmesh.line_of_sight(start, end, step, gap)
 
     return collapse_rule(params, line_of_sight, context.graph)

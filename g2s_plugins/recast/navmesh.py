@@ -269,6 +269,14 @@ class NavMesh:
         return float(self._core.segment_surface_gap(self._local(a), self._local(b), float(step), horizontal,
                                                     float(reach)))
 
+    def line_of_sight(self, a, b, step: float, max_gap: float | None) -> bool:
+        """Whether :meth:`raycast` from ``a`` to ``b`` is clear and, unless ``max_gap`` (m) is ``None``, the
+        segment strays no further than that from the walkable surface (:meth:`segment_surface_gap` with
+        ``reach=max_gap``, probes ``step`` apart): the same two answers in one C++ call instead of two (the
+        ``surface_los`` predicate's test, tens of thousands of calls on a 100k-polygon level)."""
+        return self._core.line_of_sight(self._local(a), self._local(b), float(step), float(self.settings["cell_size"]),
+                                        None if max_gap is None else float(max_gap))
+
     def poly_ref(self, index: int) -> int:
         """Detour ``dtPolyRef`` of polygon ``index``."""
         return int(self._core.poly_ref(int(index)))
