@@ -49,9 +49,7 @@ each portal node's two.
 
 from __future__ import annotations
 
-import itertools
 import math
-from concurrent.futures import ThreadPoolExecutor
 
 import networkx as nx
 import numpy as np
@@ -96,37 +94,26 @@ def navmesh_graph(navmesh: NavMesh, agent: AgentConfig | None = None, max_edge_g
     pos = [tuple(p) for p in centres.tolist()]
     nrm = [tuple(n) for n in normals.tolist()]
     area = areas.tolist()
+    nodes = {i: {"pos": pos[i], "normal": nrm[i], "area": area[i], "on_navmesh": True, "polygon": i}
+             for i in range(navmesh.polygon_count)}
+    crossing = np.zeros(len(pairs), dtype=bool)
     if max_edge_gap is not None and agent is None:
         raise ValueError("max_edge_gap needs the agent (its radius spaces the probes)")
-    crossing = np.zeros(len(pairs), dtype=bool)
-    # The probes run in C++ without the GIL: in a thread of their own, while this one makes the nodes and every
-    # pair's edge record (whether a pair's edge is direct depends on them, its record does not).
-    with ThreadPoolExecutor(max_workers=1) as probing:
-        if max_edge_gap is not None and len(pairs):
-            probed = probing.submit(_crossing_pairs, navmesh, agent, max_edge_gap)
-        nodes = {i: {"pos": pos[i], "normal": nrm[i], "area": area[i], "on_navmesh": True, "polygon": i}
-                 for i in range(navmesh.polygon_count)}
-        edges = [
-            (a, b, {"weight": w, "portal": ((e[0], e[1], e[2]), (e[3], e[4], e[5])), "width": wd})
-            for (a, b), w, e, wd in zip(
-                pairs.tolist(), weights.tolist(), portals.endpoints.reshape(-1, 6).tolist(), portals.widths.tolist()
-            )
-        ]
-        if max_edge_gap is not None and len(pairs):
-            crossing = probed.result()
-    graph = graph_of(nx.Graph(), nodes, itertools.compress(edges, (~crossing).tolist()))
+    if max_edge_gap is not None and len(pairs):
+        step, reach = _probe_spacing_and_reach(agent)
+        gaps = navmesh.segment_surface_gaps(centres[pairs[:, 0]], centres[pairs[:, 1]], step, reach)
+        crossing = (gaps > max_edge_gap) | (_corner_gaps(navmesh, reach) > max_edge_gap)
+    direct = ~crossing
+    graph = graph_of(nx.Graph(), nodes, (
+        (a, b, {"weight": w, "portal": ((e[0], e[1], e[2]), (e[3], e[4], e[5])), "width": wd})
+        for (a, b), w, e, wd in zip(
+            pairs[direct].tolist(), weights[direct].tolist(), portals.endpoints[direct].reshape(-1, 6).tolist(),
+            portals.widths[direct].tolist(),
+        )
+    ))
     if crossing.any():
         _add_portal_nodes(graph, navmesh, np.flatnonzero(crossing), agent, max_edge_gap)
     return graph
-
-
-def _crossing_pairs(navmesh: NavMesh, agent: AgentConfig, max_edge_gap: float) -> np.ndarray:
-    """(E,) bool: the pairs of ``navmesh.portals()`` whose centre segment strays more than ``max_edge_gap`` (m)
-    from the surface: along its whole length, or round a corner (:func:`_corner_gaps`)."""
-    centres, pairs = navmesh.centres, navmesh.portals().pairs
-    step, reach = _probe_spacing_and_reach(agent)
-    gaps = navmesh.segment_surface_gaps(centres[pairs[:, 0]], centres[pairs[:, 1]], step, reach)
-    return (gaps > max_edge_gap) | (_corner_gaps(navmesh, reach) > max_edge_gap)
 
 
 def _probe_spacing_and_reach(agent: AgentConfig) -> tuple[float, float]:
