@@ -69,6 +69,7 @@ from scipy.sparse import csgraph
 from scipy.spatial import cKDTree
 
 from g2s_core.errors import G2SError
+from g2s_core.model import RunContext
 from g2s_core.plugin import PluginParams, hookimpl
 from g2s_plugins._raycasting import (
     COMPASS,
@@ -551,7 +552,7 @@ def build_sampled_graph(
 
 
 @hookimpl
-def g2s_build_graph(mesh, params, context):
+def g2s_build_graph(mesh: trimesh.Trimesh, params: Params | None, context: RunContext) -> nx.Graph:
     """Sample the walkable surface of ``mesh`` for ``context.agent`` and join the samples the agent can walk between.
 
     Raises:

@@ -41,6 +41,7 @@ import networkx as nx
 import numpy as np
 from scipy.sparse.csgraph import dijkstra
 
+from g2s_core.model import RunContext
 from g2s_core.plugin import PluginParams, hookimpl
 from g2s_plugins.steiner import _paths
 
@@ -88,6 +89,6 @@ def _mehlhorn(csr: _paths.CSRGraph, terms: np.ndarray) -> nx.Graph:
 
 
 @hookimpl
-def g2s_steiner_tree(graph: nx.Graph, terminals: Sequence[int], params: Params, context) -> nx.Graph:
+def g2s_steiner_tree(graph: nx.Graph, terminals: Sequence[int], params: Params, context: RunContext) -> nx.Graph:
     """SteinerSolver: Mehlhorn's tree over ``graph`` joining ``terminals``."""
     return mehlhorn_steiner_tree(graph, terminals)

@@ -246,7 +246,7 @@ def _seeds(adjacency, labels: np.ndarray, count: int, leaves: np.ndarray, small:
     return np.asarray(seeds, dtype=np.int64)
 
 
-def cover_paths(adjacency, seeds: np.ndarray, eligible: np.ndarray, radius: float) -> np.ndarray:
+def cover_paths(adjacency: sp.csr_array, seeds: np.ndarray, eligible: np.ndarray, radius: float) -> np.ndarray:
     """The seeds plus, farthest node first, shortest paths to the growing set until all is within ``radius``.
 
     After each path the distances are lowered by a Dijkstra from the path
