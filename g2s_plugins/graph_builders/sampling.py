@@ -552,14 +552,13 @@ def build_sampled_graph(
 
 
 @hookimpl
-def g2s_build_graph(mesh: trimesh.Trimesh, params: Params | None, context: RunContext) -> nx.Graph:
+def g2s_build_graph(mesh: trimesh.Trimesh, params: Params, context: RunContext) -> nx.Graph:
     """Sample the walkable surface of ``mesh`` for ``context.agent`` and join the samples the agent can walk between.
 
     Raises:
         G2SError: no place on the mesh where this agent fits (a property of the
             input and the settings, not a failure of the program).
     """
-    params = params if params is not None else Params()
     graph = build_sampled_graph(mesh, params, AgentShape.from_config(context.agent))
     if graph.number_of_nodes() == 0:
         raise no_walkable_surface(mesh, context.agent, "no sample where it fits")

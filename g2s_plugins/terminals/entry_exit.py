@@ -889,6 +889,5 @@ def g2s_select_terminals(graph: nx.Graph, params: Params, context: RunContext) -
             "entry_exit needs the navmesh graph builder (graph: plugin: navmesh): "
             "the run has no navigation mesh to take the boundary from"
         )
-    params = params if params is not None else Params()
     detection = detect_openings(context.mesh, context.navmesh, context.agent, params)
     return add_terminals(graph, detection, context.navmesh, context.agent)
