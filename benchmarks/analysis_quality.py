@@ -115,7 +115,8 @@ def turned(named_meshes: Iterator[tuple[str, trimesh.Trimesh]], yaws: list[float
             yield (name, mesh) if yaw == 0 else (f"{name}_yaw{yaw:g}", mesh.copy().apply_transform(yaw_about_centre(mesh, yaw)))
 
 
-def main() -> None:
+def main(argv: list[str] | None = None, registry: Registry | None = None) -> None:
+    """The table for ``argv`` (the command line when None), with ``registry`` (the installed plugins when None)."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--presets", nargs="+", default=["map_analysis_paper", "map_analysis"])
     parser.add_argument("--levels", nargs="+", default=["nav_test", "samples", "dungeon_1k", "dungeon_20k"],
@@ -124,9 +125,9 @@ def main() -> None:
     parser.add_argument("--seeds", nargs="+", type=int, default=[0], help="seeds of the generated levels")
     parser.add_argument("--yaws", nargs="+", type=float, default=[0.0],
                         help="degrees: run every level also turned by these angles about the vertical axis")
-    args = parser.parse_args()
+    args = parser.parse_args(argv)
     print(f"machine: {platform.machine()}, {os.cpu_count()} cores, load average {os.getloadavg()[0]:.1f}")
-    registry = Registry.from_entry_points()
+    registry = registry or Registry.from_entry_points()
     plans = {Path(p).stem: pipeline.plan(parse_config(with_evaluators(load_raw_config(find_config(p)), ["traffic"]), p),
                                          registry, p) for p in args.presets}
     header = (f"{'level':<18} {'preset':<28} {'polys':>7} {'<=3m':>6} {'<=6m':>6} {'<=10m':>6} {'off>5m':>7} "

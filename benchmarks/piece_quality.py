@@ -26,15 +26,17 @@ from __future__ import annotations
 import argparse
 import json
 import sys
+from collections.abc import Callable
 from pathlib import Path
 
 import numpy as np
 import trimesh
 
 from g2s_core import pipeline
-from g2s_core.config import load_config
+from g2s_core.config import AgentConfig, load_config
 from g2s_core.errors import G2SError
 from g2s_core.mesh import load_mesh, mesh_sha256
+from g2s_core.model import RunResult
 from g2s_core.registry import Registry
 from g2s_plugins.samples import pieces
 
@@ -42,7 +44,7 @@ ROOT = Path(__file__).resolve().parents[1]
 SHARED_PIECES = ROOT.parent / "shared" / "data" / "pieces"
 
 
-def edge_surface_gap(result) -> tuple[float, float]:
+def edge_surface_gap(result: RunResult) -> tuple[float, float]:
     """Largest height (m) between the structure's edges and the navmesh surface: (collapsed edges, all edges).
 
     Collapsed edges are those simplification made (not in the initial graph); the others join
@@ -57,13 +59,18 @@ def edge_surface_gap(result) -> tuple[float, float]:
     return max(new, default=0.0), max(gaps.values(), default=0.0)
 
 
-def trees(result) -> int:
+def trees(result: RunResult) -> int:
     """Number of trees in the final structure (0 when the run stopped before)."""
     return 0 if result.structure is None else len(result.structure.graph["roots"])
 
 
-def measure(run, name: str, mesh, reference: np.ndarray) -> dict:
-    """One row: counts, precision, recall, trees and surface gap of ``run`` on ``mesh``; ``error`` when it fails."""
+def measure(
+    run: Callable[[trimesh.Trimesh, str], RunResult], name: str, mesh: trimesh.Trimesh, reference: np.ndarray
+) -> dict:
+    """One row: counts, precision, recall, trees and surface gap of ``run(mesh, name)``; ``error`` when it fails.
+
+    ``reference``: (k, 3) the known openings' midpoints, metres.
+    """
     try:
         result = run(mesh, name)
     except G2SError as error:  # what the user sees instead of openings
@@ -98,7 +105,9 @@ def shared_references(folder: Path) -> dict[str, tuple[np.ndarray, str]]:
     return out
 
 
-def prior_measurements(mesh, reference: np.ndarray, agent, navmesh_params: dict) -> list[tuple]:
+def prior_measurements(
+    mesh: trimesh.Trimesh, reference: np.ndarray, agent: AgentConfig, navmesh_params: dict
+) -> list[tuple]:
     """Every candidate opening with the priors off: (known?, width m, gap to the outer extent m, on the main floor?).
 
     What docs/entry_exit.md quotes to justify each prior's default.
@@ -179,7 +188,7 @@ def main(argv: list[str] | None = None) -> int:
     registry = Registry.from_entry_points()
     plan = pipeline.plan(load_config(Path(args.config)), registry)
 
-    def run(mesh, name):
+    def run(mesh: trimesh.Trimesh, name: str) -> RunResult:
         return pipeline.run(plan, registry, mesh, name, mesh_sha256(mesh))
 
     tuned = [name for name in pieces.PIECES if name not in pieces.HELD_OUT]

@@ -33,6 +33,7 @@ import networkx as nx
 import g2s_core
 from g2s_core import pipeline
 from g2s_core.config import PRESETS_DIR, load_config
+from g2s_core.model import RunResult
 from g2s_core.registry import Registry
 from g2s_plugins import decomposition
 from g2s_plugins.analyzers.chokepoints import Params
@@ -52,38 +53,40 @@ def best_times(function: Callable[[], Any]) -> tuple[float, float, Any]:
     return min(walls), min(cpus), value
 
 
+def timed_split(result: RunResult) -> tuple[decomposition.Decomposition, list[dict[str, Any]], dict[str, float]]:
+    """The split and the chokepoints of a run's navmesh and structure, with the times of both (:func:`best_times`):
+    ``split_wall``, ``split_cpu``, ``score_wall``, ``score_cpu``, milliseconds."""
+    navmesh, structure = result.context.navmesh, result.structure.to_undirected(as_view=True)
+    params = Params()
+    split_wall, split_cpu, split = best_times(lambda: decomposition.decompose(navmesh, result.context.agent, params))
+    score_wall, score_cpu, (chokepoints, _) = best_times(lambda: decomposition.score(split, structure))
+    return split, chokepoints, {"split_wall": 1000 * split_wall, "split_cpu": 1000 * split_cpu,
+                                "score_wall": 1000 * score_wall, "score_cpu": 1000 * score_cpu}
+
+
 def measure(rooms: int, seed: int, obstacles: float, yaw: float, registry: Registry) -> dict[str, float]:
     level = dungeon(seed=seed, rooms=rooms, obstacles=obstacles)
     turn = yaw_about_centre(level.mesh, yaw)
     plan = pipeline.plan(load_config(PRESETS_DIR / "level_regions.yaml"), registry)
     result = pipeline.run(plan, registry, turned(level, yaw).mesh, level.name, "-")
-    navmesh, structure = result.context.navmesh, result.structure.to_undirected(as_view=True)
-    params = Params()
-    split_wall, split_cpu, split = best_times(lambda: decomposition.decompose(navmesh, result.context.agent, params))
-    score_wall, score_cpu, (chokepoints, _) = best_times(lambda: decomposition.score(split, structure))
+    navmesh = result.context.navmesh
+    split, chokepoints, times = timed_split(result)
     doors, own = dungeon_shares(level, chokepoints, split.regions, navmesh, turn)
     return {
         "yaw": yaw, "seed": seed, "rooms": rooms, "corridors": len(level.metadata["corridors"]), "polygons": navmesh.polygon_count,
-        "portals": len(navmesh.portals().pairs), "structure": structure.number_of_nodes(),
-        "regions": len(split.regions), "chokepoints": len(chokepoints),
-        "split_wall": 1000 * split_wall, "split_cpu": 1000 * split_cpu, "score_wall": 1000 * score_wall,
-        "score_cpu": 1000 * score_cpu, "doors": doors, "own": own,
+        "portals": len(navmesh.portals().pairs), "structure": result.structure.number_of_nodes(),
+        "regions": len(split.regions), "chokepoints": len(chokepoints), **times, "doors": doors, "own": own,
     }
 
 
 def measure_file(path: str) -> dict[str, Any]:
     """The ``level_regions`` preset on a mesh file, then the split and the scoring timed as in :func:`measure`."""
     result = g2s_core.run(path, "level_regions")
-    navmesh, structure = result.context.navmesh, result.structure.to_undirected(as_view=True)
-    params = Params()
-    split_wall, split_cpu, split = best_times(lambda: decomposition.decompose(navmesh, result.context.agent, params))
-    score_wall, score_cpu, (chokepoints, _) = best_times(lambda: decomposition.score(split, structure))
+    split, chokepoints, times = timed_split(result)
     return {
-        "level": os.path.basename(path), "polygons": navmesh.polygon_count,
+        "level": os.path.basename(path), "polygons": result.context.navmesh.polygon_count,
         "areas": nx.number_connected_components(result.graph), "regions": len(split.regions),
-        "chokepoints": len(chokepoints), "articulations": sum(k["articulation"] for k in chokepoints),
-        "split_wall": 1000 * split_wall, "split_cpu": 1000 * split_cpu, "score_wall": 1000 * score_wall,
-        "score_cpu": 1000 * score_cpu,
+        "chokepoints": len(chokepoints), "articulations": sum(k["articulation"] for k in chokepoints), **times,
     }
 
 

@@ -141,6 +141,8 @@ def _add_output_options(command: argparse.ArgumentParser) -> None:
 
 
 def main(argv: Sequence[str] | None = None) -> int:
+    """Run ``g2s`` with ``argv`` (default: the process's arguments) and return the exit code: 0 done, 2 bad input
+    or a plugin's failure (one line, ``g2s: error: ...``), 130 interrupted, 1 an internal error."""
     _answer_version(argv)
     parser, plugged = _parser()
     args = parser.parse_args(argv)

@@ -58,7 +58,6 @@ class Stage:
         key: config section, registry kind, entry-point name prefix and ``--stage`` value.
         title: the kind's name in messages and ``g2s plugins``.
         hook: the hook its plugins implement (see :mod:`g2s_core.hookspecs`).
-        returns: what the hook must return, in words.
         check: the test of a result (see :data:`Check`).
         check_each_call: for a hook that returns a function, the test of each
             of that function's results (``None``: the result is not a function).
@@ -80,7 +79,6 @@ class Stage:
     key: str
     title: str
     hook: str
-    returns: str
     check: Check
     check_each_call: Callable[[Any], str | None] | None = None
     guard_each_call: bool = True
@@ -229,34 +227,27 @@ def _level(value: Any, kwargs: Mapping[str, Any], plugin: Any) -> str | None:
 
 
 STAGES: tuple[Stage, ...] = (
-    Stage("graph", "GraphBuilder", hookspecs.g2s_build_graph.__name__, "an undirected networkx.Graph",
-          _graph, step="Step 1", label="initial graph", result="graph", timing="graph"),
-    Stage("terminals", "TerminalSelector", hookspecs.g2s_select_terminals.__name__,
-          "Terminals whose nodes are in the graph",
-          _terminals, step="Step 2", label="terminals", result="terminals", timing="terminals"),
-    Stage("steiner", "SteinerSolver", hookspecs.g2s_steiner_tree.__name__,
-          "a tree of graph edges joining the terminals",
-          _tree, step="Step 3", label="Steiner tree", result="steiner", timing="steiner"),
-    Stage("loops", "LoopAdder", hookspecs.g2s_add_loops.__name__, "the forest plus edges of the graph",
-          _looped, step="Step 3", label="loops kept", result="looped", timing="loops", optional=True),
-    Stage("roots", "RootSelector", hookspecs.g2s_root_scores.__name__, "a finite score for every node of the tree",
-          _root_scores, step="Step 4", label="rooted trees", result="forest", timing="roots"),
-    Stage("simplify", "SimplifyPredicate", hookspecs.g2s_simplify_predicate.__name__,
-          "a callable P(tree, a, b, c) -> bool", _predicate, check_each_call=_bool,
+    Stage("graph", "GraphBuilder", hookspecs.g2s_build_graph.__name__, _graph,
+          step="Step 1", label="initial graph", result="graph", timing="graph"),
+    Stage("terminals", "TerminalSelector", hookspecs.g2s_select_terminals.__name__, _terminals,
+          step="Step 2", label="terminals", result="terminals", timing="terminals"),
+    Stage("steiner", "SteinerSolver", hookspecs.g2s_steiner_tree.__name__, _tree,
+          step="Step 3", label="Steiner tree", result="steiner", timing="steiner"),
+    Stage("loops", "LoopAdder", hookspecs.g2s_add_loops.__name__, _looped,
+          step="Step 3", label="loops kept", result="looped", timing="loops", optional=True),
+    Stage("roots", "RootSelector", hookspecs.g2s_root_scores.__name__, _root_scores,
+          step="Step 4", label="rooted trees", result="forest", timing="roots"),
+    Stage("simplify", "SimplifyPredicate", hookspecs.g2s_simplify_predicate.__name__, _predicate, check_each_call=_bool,
           step="Step 5", label="simplification", result="structure", timing="simplify"),
-    Stage("analyzers", "Analyzer", hookspecs.g2s_analyze.__name__, "a number for every node of the structure",
-          _analysis, many=True, step="Post-process", label="analysis", result="analysis", timing="analysis"),
-    Stage("evaluators", "Evaluator", hookspecs.g2s_evaluate.__name__, "a finite number for each named measure",
-          _measures, many=True, step="Post-process", label="evaluation", result="metrics", timing="evaluation"),
-    Stage("outputs", "OutputWriter", hookspecs.g2s_write_output.__name__, "the paths written, among its FILES",
-          _written, declares=("FILES",)),
-    Stage("readers", "ResultReader", hookspecs.g2s_read_result.__name__, "the result read back, a LoadedResult",
-          _loaded),
-    Stage("levels", "LevelGenerator", hookspecs.g2s_generate_level.__name__, "a trimesh.Trimesh with triangles",
-          _level),
-    Stage("executors", "Executor", hookspecs.g2s_execute.__name__, "an iterator of the summary rows of the pairs",
-          _iterator, check_each_item=_row),
-    Stage("commands", "Command", hookspecs.g2s_command.__name__, "a function run(args) -> exit code", _command,
+    Stage("analyzers", "Analyzer", hookspecs.g2s_analyze.__name__, _analysis, many=True,
+          step="Post-process", label="analysis", result="analysis", timing="analysis"),
+    Stage("evaluators", "Evaluator", hookspecs.g2s_evaluate.__name__, _measures, many=True,
+          step="Post-process", label="evaluation", result="metrics", timing="evaluation"),
+    Stage("outputs", "OutputWriter", hookspecs.g2s_write_output.__name__, _written, declares=("FILES",)),
+    Stage("readers", "ResultReader", hookspecs.g2s_read_result.__name__, _loaded),
+    Stage("levels", "LevelGenerator", hookspecs.g2s_generate_level.__name__, _level),
+    Stage("executors", "Executor", hookspecs.g2s_execute.__name__, _iterator, check_each_item=_row),
+    Stage("commands", "Command", hookspecs.g2s_command.__name__, _command,
           check_each_call=_exit_code, guard_each_call=False),
 )
 

@@ -53,7 +53,8 @@ def metric_lines(result: RunResult) -> list[tuple[str, str]]:
             for key, measures in result.metrics.items()]
 
 
-def milliseconds(seconds: float) -> str:
+def milliseconds(seconds: float | None) -> str:
+    """``seconds`` in milliseconds to 0.1 ms, for the stage tables; empty when unknown (None, NaN, inf)."""
     return "" if seconds is None or not math.isfinite(seconds) else f"{seconds * 1000:.1f}"
 
 

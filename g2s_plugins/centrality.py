@@ -25,6 +25,21 @@ eigenvector    scipy ``eigsh`` (ARPACK) per component              iterative
 katz           scipy sparse LU solve of (I - alpha A) x = 1        sparse direct
 =============  =================================================  ==========================
 
+Besides these node metrics, :func:`edge_betweenness` (the chokepoints'
+traffic, unweighted): s (N - s) pairs across each edge of a forest, O(n);
+on a graph with cycles Brandes' algorithm by rustworkx, O(nm), and from 256
+sampled sources by igraph above 2,048 nodes, O(km).
+
+Sources: betweenness, L. C. Freeman, "A set of measures of centrality based
+on betweenness", Sociometry 40(1):35-41, 1977, computed by U. Brandes' "A
+faster algorithm for betweenness centrality", Journal of Mathematical
+Sociology 25(2):163-177, 2001; closeness in the form of S. Wasserman and
+K. Faust, Social Network Analysis: Methods and Applications, Cambridge
+University Press, 1994; eigenvector centrality, P. Bonacich, "Factoring and
+weighting approaches to status scores and clique identification", Journal
+of Mathematical Sociology 2(1):113-120, 1972; L. Katz, "A new status index
+derived from sociometric analysis", Psychometrika 18(1):39-43, 1953.
+
 Normalisation follows networkx for undirected graphs, over the *whole*
 graph's n (not per component): betweenness is divided by (n-1)(n-2)/2, the
 number of node pairs that exclude the node; closeness is Wasserman-Faust's
@@ -666,6 +681,7 @@ __all__ = [
     "components",
     "compute",
     "degree",
+    "edge_betweenness",
     "eigenvector",
     "graph_betweenness",
     "katz",

@@ -2,8 +2,10 @@
 
 The walkable surface is split where it narrows, as strategy-game map analysers
 do on their tile grids (BWEM grows areas from the points farthest from the
-walls and puts a chokepoint where two grown areas meet; Perkins 2010, BWTA,
-uses the Voronoi diagram of the walls). Here the same idea runs on the navmesh
+walls and puts a chokepoint where two grown areas meet; BWTA uses the
+Voronoi diagram of the walls: L. Perkins, "Terrain analysis in real-time
+strategy games: an integrated approach to choke point detection and region
+decomposition", AIIDE 2010). Here the same idea runs on the navmesh
 polygons and their shared edges (portals):
 
 1. Clearance. The navmesh's boundary edges (polygon edges with no

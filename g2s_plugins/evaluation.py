@@ -97,7 +97,7 @@ built leaves them out.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import networkx as nx
 import numpy as np
@@ -131,9 +131,6 @@ class Quality:
     rho_area_betweenness: float
     rho_ceiling: float
     structure_share: float
-    polygons: int
-    structure_nodes: int
-    stage_seconds: dict[str, float] = field(default_factory=dict)
     rho_navmesh: float = float("nan")
     rho_navmesh_ceiling: float = float("nan")
     navmesh_area_left_out: float = float("nan")
@@ -338,8 +335,7 @@ def evaluate(
         reference = reference_flow(result, max_sources, seed)
     area = traffic.origin_weight(arrays)
     if result.structure is None:  # no terminals: nothing was joined
-        return Quality({r: 0.0 for r in radii}, 1.0, float("nan"), float("nan"), float("nan"), 0.0, arrays.n, 0,
-                       {s.stage: s.seconds for s in result.stages})
+        return Quality({r: 0.0 for r in radii}, 1.0, float("nan"), float("nan"), float("nan"), 0.0)
     joined = result.looped if result.looped is not None else result.steiner
     distance, _ = traffic.distance_to(arrays, arrays.rows(sorted(joined)))
     within = {r: float(area[distance <= r].sum() / area.sum()) for r in radii}
@@ -382,9 +378,6 @@ def evaluate(
                      nearest), reference
         ),
         structure_share=result.structure.number_of_nodes() / arrays.n,
-        polygons=arrays.n,
-        structure_nodes=result.structure.number_of_nodes(),
-        stage_seconds={s.stage: s.seconds for s in result.stages},
         rho_navmesh=rho_navmesh,
         rho_navmesh_ceiling=rho_navmesh_ceiling,
         navmesh_area_left_out=left_out,

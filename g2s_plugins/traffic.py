@@ -13,6 +13,11 @@ run in the C++ extension on two threads and give scipy's trees exactly.
 
 Origin-destination flow (space syntax's "choice", weighted by area)
 --------------------------------------------------------------------
+Space syntax (B. Hillier and J. Hanson, The Social Logic of Space, Cambridge
+University Press, 1984) calls "choice" what network science calls
+betweenness (L. C. Freeman, Sociometry 40(1):35-41, 1977); here each pair
+counts the product of its ends' areas.
+
 A walker goes from origin s to destination t, both drawn in proportion to
 the area of their nodes (polygons), along the shortest path of the graph.
 The flow through node v is the total pair weight of the paths that pass
@@ -29,7 +34,9 @@ over all sources this is exact in O(n (m + n log n)).
 For big graphs k sources are drawn with replacement with probability
 a_s / A (A = total area) and ``flow ~ (A / k) sum_i through_{s_i}``, an
 unbiased estimate. Each term lies in [0, A^2], so by Hoeffding's
-inequality, for any node, with probability >= 1 - delta::
+inequality (W. Hoeffding, "Probability inequalities for sums of bounded
+random variables", J. American Statistical Association 58(301):13-30,
+1963), for any node, with probability >= 1 - delta::
 
     |estimate(v) - flow(v)| <= A^2 sqrt(ln(2 / delta) / (2 k))
 

@@ -16,3 +16,29 @@ def shared_data() -> Path:
     if not SHARED_DATA.is_dir():
         pytest.skip(f"shared test data not found at {SHARED_DATA}")
     return SHARED_DATA
+
+
+@pytest.fixture(scope="session")
+def run_piece():
+    """``run_piece(name, yaw=0.0, **kwargs) -> (level, result)``: the ``map_piece`` preset run on the generated
+    piece ``pieces.PIECES[name](**kwargs)``, turned by ``yaw`` degrees when not 0; each once per session."""
+    from g2s_core import pipeline
+    from g2s_core.config import PRESETS_DIR, load_config
+    from g2s_core.mesh import mesh_sha256
+    from g2s_core.registry import Registry
+    from g2s_plugins.samples import pieces
+
+    registry = Registry.from_entry_points()
+    plan = pipeline.plan(load_config(PRESETS_DIR / "map_piece.yaml"), registry)
+    cache: dict[tuple, tuple] = {}
+
+    def run(name: str, yaw: float = 0.0, **kwargs):
+        key = (name, yaw, tuple(sorted(kwargs.items())))
+        if key not in cache:
+            level = pieces.PIECES[name](**kwargs)
+            if yaw:
+                level = pieces.turned(level, yaw)
+            cache[key] = (level, pipeline.run(plan, registry, level.mesh, name, mesh_sha256(level.mesh)))
+        return cache[key]
+
+    return run

@@ -20,16 +20,10 @@ from g2s_plugins._surface import edge_surface_gaps
 from g2s_plugins.graph_builders import navmesh as plugin
 from g2s_plugins.recast import NavMesh, RecastParams
 from g2s_plugins.samples import levels
-from tests.test_recast import spiral_tower
+from tests.test_recast import slab, spiral_tower
 
 AGENT = types.SimpleNamespace(radius=0.3, height=2.0, max_climb=0.4, max_slope=45.0)
 DEMO_AGENT = types.SimpleNamespace(radius=0.6, height=2.0, max_climb=0.9, max_slope=45.0)
-
-
-def slab(extents, centre) -> trimesh.Trimesh:
-    box = trimesh.creation.box(extents=extents)
-    box.apply_translation(centre)
-    return box
 
 
 def level() -> trimesh.Trimesh:

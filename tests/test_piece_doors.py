@@ -9,30 +9,13 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from g2s_core import pipeline
 from g2s_core.config import PRESETS_DIR, load_config
-from g2s_core.mesh import mesh_sha256
-from g2s_core.registry import Registry
 from g2s_plugins.recast import RecastParams, build_navmesh
 from g2s_plugins.recast.settings import resolve_settings, voxel_config
 from g2s_plugins.samples import pieces
 from g2s_plugins.terminals import entry_exit
 
 CONFIG = load_config(PRESETS_DIR / "map_piece.yaml")
-
-
-@pytest.fixture(scope="module")
-def run():
-    registry = Registry.from_entry_points()
-    plan = pipeline.plan(CONFIG, registry)
-
-    def run_piece(name: str, yaw: float = 0.0, **kwargs):
-        level = pieces.PIECES[name](**kwargs)
-        if yaw:
-            level = pieces.turned(level, yaw)
-        return level, pipeline.run(plan, registry, level.mesh, name, mesh_sha256(level.mesh))
-
-    return run_piece
 
 
 def test_the_preset_erodes_exactly_the_agent_radius() -> None:
@@ -67,8 +50,8 @@ def test_the_preset_erodes_exactly_the_agent_radius() -> None:
         ("threshold_door", {"step": 0.35}, 10.0),
     ],
 )
-def test_every_known_opening_and_nothing_else(run, name: str, kwargs: dict, yaw: float) -> None:
-    level, result = run(name, yaw, **kwargs)
+def test_every_known_opening_and_nothing_else(run_piece, name: str, kwargs: dict, yaw: float) -> None:
+    level, result = run_piece(name, yaw, **kwargs)
     found = result.terminals.openings
     assert len(found) == len(level.openings), [(o.position, o.width) for o in found]
     for known in level.openings:

@@ -11,31 +11,13 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from g2s_core import pipeline
 from g2s_core.config import PRESETS_DIR, load_config
-from g2s_core.mesh import mesh_sha256
-from g2s_core.registry import Registry
 from g2s_plugins._surface import MAX_SURFACE_GAP, edge_surface_gaps
 from g2s_plugins.recast import RecastParams, build_navmesh
 from g2s_plugins.samples import levels, pieces
 from g2s_plugins.terminals import entry_exit
 
 CONFIG = load_config(PRESETS_DIR / "map_piece.yaml")
-
-
-@pytest.fixture(scope="module")
-def run():
-    registry = Registry.from_entry_points()
-    plan = pipeline.plan(CONFIG, registry)
-    cache: dict[str, object] = {}
-
-    def run_piece(name: str):
-        if name not in cache:
-            level = pieces.PIECES[name]()
-            cache[name] = (level, pipeline.run(plan, registry, level.mesh, name, mesh_sha256(level.mesh)))
-        return cache[name]
-
-    return run_piece
 
 
 def test_the_pieces_are_registered_samples_for_the_preset_agent() -> None:
@@ -45,8 +27,8 @@ def test_the_pieces_are_registered_samples_for_the_preset_agent() -> None:
 
 
 @pytest.mark.parametrize("name", sorted(pieces.PIECES))
-def test_every_known_opening_and_nothing_else(run, name: str) -> None:
-    level, result = run(name)
+def test_every_known_opening_and_nothing_else(run_piece, name: str) -> None:
+    level, result = run_piece(name)
     found = result.terminals.openings
     assert len(found) == len(level.openings), [o.position for o in found]
     radius = CONFIG.agent.radius
@@ -60,8 +42,8 @@ def test_every_known_opening_and_nothing_else(run, name: str) -> None:
 
 
 @pytest.mark.parametrize("name", sorted(pieces.PIECES))
-def test_one_tree_per_piece_on_the_surface(run, name: str) -> None:
-    _, result = run(name)
+def test_one_tree_per_piece_on_the_surface(run_piece, name: str) -> None:
+    _, result = run_piece(name)
     assert len(result.structure.graph["roots"]) == 1
     assert set(result.terminals.nodes) <= set(result.structure)
     gaps = edge_surface_gaps(result.structure, result.context.navmesh, result.context.agent)

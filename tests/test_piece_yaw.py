@@ -14,26 +14,11 @@ from types import SimpleNamespace
 import numpy as np
 import pytest
 
-from g2s_core import pipeline
 from g2s_core.config import PRESETS_DIR, load_config
-from g2s_core.mesh import mesh_sha256
-from g2s_core.registry import Registry
 from g2s_plugins.samples import pieces
 from g2s_plugins.terminals import entry_exit
 
 CONFIG = load_config(PRESETS_DIR / "map_piece.yaml")
-
-
-@pytest.fixture(scope="module")
-def run():
-    registry = Registry.from_entry_points()
-    plan = pipeline.plan(CONFIG, registry)
-
-    def run_turned(name: str, yaw: float, **kwargs):
-        level = pieces.turned(pieces.PIECES[name](**kwargs), yaw)
-        return level, pipeline.run(plan, registry, level.mesh, name, mesh_sha256(level.mesh))
-
-    return run_turned
 
 
 @pytest.mark.parametrize(
@@ -50,8 +35,8 @@ def run():
         ("doorway_room", {"wall": 0.8}, 45.0),
     ],
 )
-def test_a_turned_piece_gives_every_known_opening_and_nothing_else(run, name: str, kwargs: dict, yaw: float) -> None:
-    level, result = run(name, yaw, **kwargs)
+def test_a_turned_piece_gives_every_known_opening_and_nothing_else(run_piece, name: str, kwargs: dict, yaw: float) -> None:
+    level, result = run_piece(name, yaw, **kwargs)
     found = result.terminals.openings
     assert len(found) == len(level.openings), [o.position for o in found]
     for known in level.openings:

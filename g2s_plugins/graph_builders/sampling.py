@@ -22,7 +22,9 @@ wanted. No Recast is involved: ``context.navmesh`` stays ``None``.
 4. *Samples*: for ``poisson``, a maximal Poisson-disk subset of the
    surviving candidates (no two closer than ``spacing``, every candidate
    within ``spacing`` of a sample), chosen by seeded dart throwing
-   (:func:`poisson_disk_subset`); for ``grid``, every surviving grid point.
+   (:func:`poisson_disk_subset`; R. L. Cook, "Stochastic sampling in
+   computer graphics", ACM Transactions on Graphics 5(1):51-72, 1986); for
+   ``grid``, every surviving grid point.
    pymeshlab's own Poisson-disk filter is not used for this step: it draws
    from a process-wide random generator that cannot be seeded from Python,
    so the same input gives a different sample on every call.
@@ -41,6 +43,15 @@ spacing² / cos(slope) for ``grid``), ``on_navmesh=True`` ("on the walkable
 surface"), ``polygon=-1``. Connected parts whose area is below
 ``min_region_area`` are dropped. ``graph.graph["sampling_stats"]`` holds
 the resolved settings and counts (candidates, samples, rays, ...). The same mesh and parameters always give the same graph.
+
+Cost, for c candidates, s samples and p sample pairs within
+``connect_radius``: at most 41 rays a candidate (head room; 8 directions at
+up to 3 heights; 8 ledge rays down and 8 up), fewer where
+:class:`_Surroundings` gives the answer; the Poisson-disk subset, k-d tree
+queries over the candidates and their pairs within ``spacing``; the pairs,
+one k-d tree query, then O(connect_radius / probe_step) rays for each pair
+not on one open floor triangle. Each ray is a search of Embree's bounding
+volume hierarchy (trimesh's own intersector without Embree).
 """
 
 from __future__ import annotations
@@ -58,6 +69,7 @@ from scipy.sparse import csgraph
 from scipy.spatial import cKDTree
 
 from g2s_core.errors import G2SError
+from g2s_core.model import RunContext
 from g2s_core.plugin import PluginParams, hookimpl
 from g2s_plugins._raycasting import (
     COMPASS,
@@ -547,14 +559,13 @@ def build_sampled_graph(
 
 
 @hookimpl
-def g2s_build_graph(mesh, params, context):
+def g2s_build_graph(mesh: trimesh.Trimesh, params: Params, context: RunContext) -> nx.Graph:
     """Sample the walkable surface of ``mesh`` for ``context.agent`` and join the samples the agent can walk between.
 
     Raises:
         G2SError: no place on the mesh where this agent fits (a property of the
             input and the settings, not a failure of the program).
     """
-    params = params if params is not None else Params()
     graph = build_sampled_graph(mesh, params, AgentShape.from_config(context.agent))
     if graph.number_of_nodes() == 0:
         raise no_walkable_surface(mesh, context.agent, "no sample where it fits")

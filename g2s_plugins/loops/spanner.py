@@ -8,8 +8,9 @@ initial-graph path between two structure nodes a, b whenever
 
 (d_S: distance along the current structure, L: the path's length),
 greedily, shortest path first, re-checking d_S after every addition: a
-greedy spanner (Althoefer et al., "On sparse spanners of weighted graphs",
-1993) over the structure's candidate pairs. ``stretch = inf`` keeps the
+greedy spanner (I. Althoefer, G. Das, D. Dobkin, D. Joseph and J. Soares,
+"On sparse spanners of weighted graphs", Discrete & Computational Geometry
+9(1):81-100, 1993) over the structure's candidate pairs. ``stretch = inf`` keeps the
 paper's tree (as does a config without a ``loops:`` section). ``min_gain``
 keeps the small loops around pillars out.
 

@@ -23,10 +23,13 @@ Colours are 8-bit RGB tuples.
 from __future__ import annotations
 
 from collections.abc import Iterable, Mapping, Sequence
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import networkx as nx
 import numpy as np
+
+if TYPE_CHECKING:  # matplotlib loads only when a heat map is drawn
+    from matplotlib.colors import Colormap
 
 RGB = tuple[int, int, int]
 
@@ -112,7 +115,7 @@ def plotly_heat_scale() -> list[list]:
     return [[float(t), css(heat_colour(t))] for t in stops]
 
 
-def matplotlib_heat_cmap():  # -> matplotlib.colors.Colormap
+def matplotlib_heat_cmap() -> Colormap:
     """The analysis scale as a matplotlib colormap."""
     from matplotlib import colormaps
 

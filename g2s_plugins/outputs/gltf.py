@@ -101,6 +101,7 @@ MIN_SEGMENT = 1e-9
 
 
 def write(result: RunResult, outdir: Path) -> list[Path]:
+    """``structure.glb`` in ``outdir``: :func:`build_scene` as binary glTF."""
     scene = build_scene(result)
     data = scene.export(file_type="glb")
     return [atomic_write(outdir / GLB_FILE, data)]

@@ -16,6 +16,8 @@ from g2s_plugins.outputs.files import atomic_write
 
 
 def write(result: RunResult, outdir: Path) -> list[Path]:
+    """``graph.json`` in ``outdir``: the initial graph as networkx node-link JSON, with the mesh's name and
+    SHA-256; nothing when the run built no graph."""
     if result.graph is None:
         return []
     data = nx.node_link_data(result.graph, edges="edges")

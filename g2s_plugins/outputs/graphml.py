@@ -31,6 +31,8 @@ _AXES = ("x", "y", "z")
 
 
 def write(result: RunResult, outdir: Path) -> list[Path]:
+    """``structure.graphml`` (the final graph, :func:`~g2s_plugins.outputs.common.final_graph`) and ``graph.graphml``
+    (the initial graph) in ``outdir``, each when the run has it."""
     written = []
     stage, graph = final_graph(result)
     terminals = set(terminal_ids(result))

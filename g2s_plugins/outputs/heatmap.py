@@ -67,6 +67,7 @@ DPI = 110
 
 
 def write(result: RunResult, outdir: Path) -> list[Path]:
+    """``heatmap.png`` in ``outdir`` (:func:`render`)."""
     return [atomic_write(outdir / HEATMAP_FILE, render(result))]
 
 

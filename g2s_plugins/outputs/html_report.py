@@ -115,6 +115,7 @@ PLOT_CONFIG = {"displaylogo": False, "responsive": True, "scrollZoom": True}
 
 
 def write(result: RunResult, outdir: Path) -> list[Path]:
+    """``report.html`` in ``outdir`` (:func:`render`)."""
     return [atomic_write(outdir / REPORT_FILE, render(result).encode("utf-8"))]
 
 

@@ -60,8 +60,6 @@ RUN_FILE = "run.json"
 RUN_SCHEMA_VERSION = 1
 SCHEMA_PATH = Path(__file__).resolve().parent / "structure.schema.json"
 """The layout of ``structure.json``, version :data:`SCHEMA_VERSION` (JSON Schema draft 2020-12)."""
-RUN_SCHEMA_PATH = Path(__file__).resolve().parent / "run.schema.json"
-"""The layout of ``run.json``, version :data:`RUN_SCHEMA_VERSION`."""
 
 _NODE_KEYS = ("pos", "normal", "area", "on_navmesh", "polygon", "terminal", "depth", "root", "values")
 _EDGE_KEYS = ("weight",)

@@ -27,6 +27,7 @@ import math
 from typing import Any
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from ..local_frame import LocalFrame
 from . import _recast
@@ -53,7 +54,7 @@ AUTO_TILE_SIZE = 256
 _SCALE_HINT = "check mesh.scale (the file's units to metres) and mesh.up_axis"
 
 
-def build_navmesh(vertices, faces, agent: Any, params: RecastParams | None = None) -> NavMesh:
+def build_navmesh(vertices: ArrayLike, faces: ArrayLike, agent: Any, params: RecastParams | None = None) -> NavMesh:
     """Build a navmesh, solo or tiled (see the tiling rule in the module docs).
 
     Args:

@@ -15,6 +15,7 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from ..local_frame import LocalFrame
 from . import _recast
@@ -217,7 +218,7 @@ class NavMesh:
         """Vertical tolerance of the raycast end check: ``max(agent max climb, 2 cell heights)``, m."""
         return float(self._core.climb_tolerance)
 
-    def raycast(self, a, b, extents=None) -> tuple[bool, float]:
+    def raycast(self, a: ArrayLike, b: ArrayLike, extents: ArrayLike | None = None) -> tuple[bool, float]:
         """Whether the straight walk from ``a`` to ``b`` along the navmesh is clear.
 
         Starts on the polygon nearest ``a`` (within ``extents`` half extents,
@@ -231,17 +232,17 @@ class NavMesh:
         clear, t = self._core.raycast(self._local(a), self._local(b), None if extents is None else _vec(extents))
         return bool(clear), float(t)
 
-    def raycast_many(self, A, B, extents=None) -> np.ndarray:
+    def raycast_many(self, A: ArrayLike, B: ArrayLike, extents: ArrayLike | None = None) -> np.ndarray:
         """(N,) bool: ``raycast(A[i], B[i])[0]`` for (N,3) ``A`` and ``B``, looped in C++."""
         extents = None if extents is None else _vec(extents)
         return self._core.raycast_many(self._local_rows(A), self._local_rows(B), extents)
 
-    def nearest_poly(self, p, extents=None) -> tuple[int, np.ndarray]:
+    def nearest_poly(self, p: ArrayLike, extents: ArrayLike | None = None) -> tuple[int, np.ndarray]:
         """(polygon index, (3,) nearest point on it) within the half ``extents``; (-1, p) if none."""
         idx, point = self._core.nearest_poly(self._local(p), None if extents is None else _vec(extents))
         return int(idx), self._world(point)
 
-    def segment_surface_gaps(self, A, B, step: float, reach: float, horizontal: float | None = None) -> np.ndarray:
+    def segment_surface_gaps(self, A: ArrayLike, B: ArrayLike, step: float, reach: float, horizontal: float | None = None) -> np.ndarray:
         """(S,) how far each straight segment ``A[i] -> B[i]`` ((S,3) each) strays from the walkable surface, m.
 
         Probes at most ``step`` apart horizontally along each segment, both ends
@@ -259,7 +260,7 @@ class NavMesh:
         return self._core.segment_surface_gaps(self._local_rows(A), self._local_rows(B), float(step), horizontal,
                                                float(reach))
 
-    def segment_surface_gap(self, a, b, step: float, reach: float, horizontal: float | None = None) -> float:
+    def segment_surface_gap(self, a: ArrayLike, b: ArrayLike, step: float, reach: float, horizontal: float | None = None) -> float:
         """:meth:`segment_surface_gaps` of the one segment ``a -> b`` (two 3-sequences), m.
 
         The same C++ computation without arrays in or out: for callers that test

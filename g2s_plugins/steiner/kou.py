@@ -40,6 +40,7 @@ import networkx as nx
 import numpy as np
 from scipy.sparse.csgraph import dijkstra
 
+from g2s_core.model import RunContext
 from g2s_core.plugin import PluginParams, hookimpl
 from g2s_plugins.steiner import _paths
 
@@ -107,6 +108,6 @@ def _walk_in_blocks(
 
 
 @hookimpl
-def g2s_steiner_tree(graph: nx.Graph, terminals: Sequence[int], params: Params, context) -> nx.Graph:
+def g2s_steiner_tree(graph: nx.Graph, terminals: Sequence[int], params: Params, context: RunContext) -> nx.Graph:
     """SteinerSolver: Kou et al.'s tree over ``graph`` joining ``terminals``."""
     return kou_steiner_tree(graph, terminals)

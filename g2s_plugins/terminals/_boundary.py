@@ -5,6 +5,10 @@ the walkable interior lies on the *left* of the walking direction ``t`` seen
 from above, i.e. on the side of ``up x t``; the outward side is ``t x up``.
 Outer rims therefore run counter-clockwise seen from above and the rims of
 holes clockwise.
+
+Complexity: O(V log V + B log B) to weld the V navmesh vertices by position
+and chain the B boundary edges (one sort of each; a pinch vertex's few
+edges are compared one by one); sampling O(B + S) for S samples.
 """
 
 from __future__ import annotations

@@ -4,7 +4,8 @@ The paper's leaves reach every dead end, but a room with no degree-1 polygon
 (a dead-end room split into polygons around a pillar, a ring corridor) gets
 no terminal and no structure. This selector keeps the leaves and then covers
 the rest greedily, farthest first (a farthest-point cover, as in Gonzalez's
-k-center heuristic):
+k-center heuristic: T. F. Gonzalez, "Clustering to minimize the maximum
+intercluster distance", Theoretical Computer Science 38:293-306, 1985):
 
 1. distances from the leaves along the graph (one multi-source Dijkstra);
    an area without leaves is seeded with its node farthest from its
@@ -245,7 +246,7 @@ def _seeds(adjacency, labels: np.ndarray, count: int, leaves: np.ndarray, small:
     return np.asarray(seeds, dtype=np.int64)
 
 
-def cover_paths(adjacency, seeds: np.ndarray, eligible: np.ndarray, radius: float) -> np.ndarray:
+def cover_paths(adjacency: sp.csr_array, seeds: np.ndarray, eligible: np.ndarray, radius: float) -> np.ndarray:
     """The seeds plus, farthest node first, shortest paths to the growing set until all is within ``radius``.
 
     After each path the distances are lowered by a Dijkstra from the path

@@ -89,6 +89,17 @@ batch of rays (one per step and bisection round) is one call of the shared
 
 Needs the navigation mesh the ``navmesh`` graph builder leaves in
 ``context.navmesh``.
+
+Cost, for a navmesh of V vertices and B boundary edges, S samples (the
+boundary's length / ``sample_step``), k = ``fan_count`` and o openings:
+O(V log V + B log B) to chain the loops; rays, in batches: up to three to snap
+each sample, and per sample and fan direction one outward ray, at most
+``edge_search_radii * r / d`` downward probes (d = min(``sample_step``,
+r) / 4) and 4 bisection rays to find the surface's end, two more beyond it
+with ``leave_footprint``: O(S k edge_search_radii r / d) rays (up to twice
+that with ``step_up``, for the samples searched again from a step's top).
+The main floor adds a k-d tree over boundary samples r / 4 apart, the
+repeated openings an O(o^2) comparison, the terminals a k-d tree query each.
 """
 
 from __future__ import annotations
@@ -881,6 +892,5 @@ def g2s_select_terminals(graph: nx.Graph, params: Params, context: RunContext) -
             "entry_exit needs the navmesh graph builder (graph: plugin: navmesh): "
             "the run has no navigation mesh to take the boundary from"
         )
-    params = params if params is not None else Params()
     detection = detect_openings(context.mesh, context.navmesh, context.agent, params)
     return add_terminals(graph, detection, context.navmesh, context.agent)

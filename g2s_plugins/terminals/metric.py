@@ -21,6 +21,9 @@ component: the metrics are computed without paths between components and
 the selection is made within each component. Equal values (to 12
 significant digits) are ranked by ascending node id. The terminals are
 returned by ascending id.
+
+Complexity: the metric's (the table in :mod:`g2s_plugins.centrality`), plus
+O(n log n) to split the graph into components and rank each one's nodes.
 """
 
 from __future__ import annotations

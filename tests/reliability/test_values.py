@@ -14,9 +14,6 @@ from g2s_core.messages import show
 from g2s_core.registry import installed
 from tests.reliability.checks import CORRIDOR, assert_clean_error, run_g2s, run_g2s_process, tree
 
-NON_FINITE = {"nan": ".nan", "inf": ".inf", "-inf": "-.inf"}
-"""Name -> how YAML writes it."""
-
 
 def _takes_floats(annotation) -> bool:
     return annotation is float or any(_takes_floats(a) for a in get_args(annotation))
