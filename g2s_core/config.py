@@ -84,7 +84,8 @@ class _Run(_Section):
     def record(self) -> dict[str, Any]:
         """The config as plain JSON data, for the outputs (optional stages only when set)."""
         unset = {stage.key for stage in PIPELINE if stage.optional and getattr(self, stage.key) is None}
-        return self.model_dump(mode="json", exclude=unset or None)
+        # numpy values given through the Python API (np.int64(6), an array for a point) as their Python ones
+        return self.model_dump(mode="json", exclude=unset or None, fallback=lambda value: getattr(value, "tolist", lambda: value)())
 
     def stages_to_run(self) -> tuple[str, ...]:
         """The stage sections that run, in order."""
