@@ -4,7 +4,7 @@ that plugins add (stage ``commands``, e.g. ``g2s batch``).
 Exit codes: 0 success; 2 bad input or config (one line on stderr, no
 traceback), or a plugin that could not be loaded, raised an exception or
 returned a wrong result (one line naming the plugin and its package); 1 internal
-error of g2s (``--verbose`` shows the traceback); 130 interrupted (Ctrl-C);
+error of g2s (``--verbose`` shows the traceback); 130 interrupted (Ctrl-C, or SIGTERM from the console script);
 a plugin's command may add its own (``g2s batch``: 4 when some pairs failed).
 """
 
