@@ -71,18 +71,18 @@ def load_mesh(path: str | Path, config: MeshConfig | None = None) -> tuple[trime
         raise MeshError(f"{path}: unsupported mesh type {path.suffix!r} (expected one of {', '.join(SUPPORTED_SUFFIXES)})")
     try:
         with _trimesh_log_silenced():
-            with path.open("rb") as handle:  # trimesh takes a UTF-8 byte-order mark for part of an OBJ's first line
-                marked = path.suffix.lower() == ".obj" and handle.read(3) == codecs.BOM_UTF8
-            file = (io.BytesIO(path.read_bytes()[3:]), "obj") if marked else (path,)
-            loaded = (None if marked else _read_single_mesh(path)) or \
+            raw = path.read_bytes()
+            # trimesh's OBJ reader takes a UTF-8 byte-order mark for part of the first line and splits on spaces only
+            text = raw.removeprefix(codecs.BOM_UTF8).replace(b"\t", b" ") if path.suffix.lower() == ".obj" else raw
+            file = (io.BytesIO(text), "obj") if text != raw else (path,)
+            loaded = (None if text != raw else _read_single_mesh(path)) or \
                 trimesh.load(*file, force="mesh", process=False, resolver=_files_beside(path))
     except Exception as exc:  # trimesh raises many exception types for bad files
         raise MeshError(f"{path}: {describe_damage(path) or f'cannot read mesh ({type(exc).__name__}: {exc})'}") from None
     if not len(getattr(loaded, "faces", ())) and (damage := describe_damage(path)):  # a cut binary STL reads as empty
         raise MeshError(f"{path}: {damage}")
     mesh, cleaning = prepare_and_clean(loaded, config, source=str(path))
-    digest = hashlib.sha256(path.read_bytes()).hexdigest()  # read whole: the mesh reader has just read it all too
-    return mesh, MeshInfo(path.name, digest, len(mesh.vertices), len(mesh.faces), cleaning)
+    return mesh, MeshInfo(path.name, hashlib.sha256(raw).hexdigest(), len(mesh.vertices), len(mesh.faces), cleaning)
 
 
 @contextmanager

@@ -115,6 +115,15 @@ def test_an_obj_of_one_material_skips_the_scene_and_reads_the_same_arrays(tmp_pa
     assert info.faces == len(source.faces) and info.sha256 == hashlib.sha256(path.read_bytes()).hexdigest()
 
 
+def test_an_obj_separated_by_tabs_reads_as_with_spaces(tmp_path):
+    text = levels.two_floors().mesh.export(file_type="obj")
+    spaced, tabbed = tmp_path / "spaced.obj", tmp_path / "tabbed.obj"
+    spaced.write_text(text)
+    tabbed.write_text(text.replace(" ", "\t"))
+    (mesh, _), (reference, _) = load_mesh(tabbed), load_mesh(spaced)
+    assert len(mesh.faces) and np.array_equal(mesh.vertices, reference.vertices) and np.array_equal(mesh.faces, reference.faces)
+
+
 def test_an_obj_of_several_materials_is_read_as_one_mesh(tmp_path):
     path = tmp_path / "two.obj"
     path.write_text("v 0 0 0\nv 1 0 0\nv 1 0 1\nv 0 0 1\nusemtl a\nf 1 2 3\nusemtl b\nf 1 3 4\n")
