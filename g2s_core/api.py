@@ -27,7 +27,7 @@ import trimesh
 
 from g2s_core import pipeline
 from g2s_core.config import RunConfig, named_files, resolve_config
-from g2s_core.errors import G2SError
+from g2s_core.errors import G2SError, MeshError
 from g2s_core.mesh import SAMPLE_PREFIX, generate_level, load_mesh, mesh_sha256, prepare_and_clean
 from g2s_core.model import LoadedResult, RunResult
 from g2s_core.outputs import DEFAULT_FORMATS, write_outputs
@@ -75,9 +75,11 @@ def open_mesh(mesh: MeshLike, config: RunConfig, name: str | None = None, regist
         registry: the plugins that generate sample levels (default: the installed ones).
 
     Raises:
-        MeshError: the file is missing or not a usable triangle mesh.
+        MeshError: ``mesh`` is none of these, or the file is missing or not a usable triangle mesh.
         ConfigError: no such level generator, or bad parameters for it.
     """
+    if not isinstance(mesh, (str, Path, trimesh.Trimesh)):  # a Scene is what trimesh.load gives for a glTF
+        raise MeshError(f"mesh: expected a mesh file, {SAMPLE_PREFIX}NAME or a trimesh.Trimesh, got {type(mesh).__name__}")
     if isinstance(mesh, trimesh.Trimesh):
         name = name or "mesh"
         prepared, cleaning = prepare_and_clean(mesh, config.mesh, source=name)

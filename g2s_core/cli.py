@@ -4,7 +4,7 @@ that plugins add (stage ``commands``, e.g. ``g2s batch``).
 Exit codes: 0 success; 2 bad input or config (one line on stderr, no
 traceback), or a plugin that could not be loaded, raised an exception or
 returned a wrong result (one line naming the plugin and its package); 1 internal
-error of g2s (``--verbose`` shows the traceback); 130 interrupted (Ctrl-C);
+error of g2s (``--verbose`` shows the traceback); 130 interrupted (Ctrl-C, or SIGTERM from the console script);
 a plugin's command may add its own (``g2s batch``: 4 when some pairs failed).
 """
 
@@ -15,6 +15,7 @@ import json
 import sys
 import textwrap
 import traceback
+import warnings
 from collections.abc import Callable, Iterator, Sequence
 from contextlib import contextmanager, suppress
 from pathlib import Path
@@ -146,34 +147,29 @@ def main(argv: Sequence[str] | None = None) -> int:
     parser, plugged = _parser()
     args = parser.parse_args(argv)
     errors = Console(stderr=True)
-    try:
-        if args.command in plugged:
-            command = plugged[args.command]
+    own = {"run": lambda a: _run(a, errors), "plugins": _plugins, "presets": lambda _: _presets(), "demo": lambda a: _demo(a, errors)}
+    with warnings.catch_warnings():  # numpy's (a 1e300 coordinate overflowing) would add lines to the one line of stderr
+        warnings.simplefilter("default" if args.verbose else "ignore", RuntimeWarning)
+        try:
+            command = plugged.get(args.command) or own[args.command]  # a plugin's command, or why it cannot run
             if isinstance(command, Exception):
                 raise command
             return command(args)
-        if args.command == "run":
-            return _run(args, errors)
-        if args.command == "plugins":
-            return _plugins(args)
-        if args.command == "presets":
-            return _presets()
-        return _demo(args, errors)
-    except (G2SError, PluginFailure) as exc:  # the user, or the named plugin's authors, can fix it
-        errors.print(f"g2s: error: {exc}", markup=False, highlight=False, soft_wrap=True)
-        if args.verbose:
-            traceback.print_exc()
-        return 2
-    except KeyboardInterrupt:
-        errors.print("g2s: interrupted", markup=False)
-        return 130
-    except Exception as exc:  # anything else is our bug: say so, keep the user's data
-        errors.print(f"g2s: internal error: {type(exc).__name__}: {exc}", markup=False, highlight=False, soft_wrap=True)
-        if args.verbose:
-            traceback.print_exc()
-        else:
-            errors.print("(run again with --verbose for the traceback)", markup=False)
-        return 1
+        except (G2SError, PluginFailure) as exc:  # the user, or the named plugin's authors, can fix it
+            errors.print(f"g2s: error: {exc}", markup=False, highlight=False, soft_wrap=True)
+            if args.verbose:
+                traceback.print_exc()
+            return 2
+        except KeyboardInterrupt:
+            errors.print("g2s: interrupted", markup=False)
+            return 130
+        except Exception as exc:  # anything else is our bug: say so, keep the user's data
+            errors.print(f"g2s: internal error: {type(exc).__name__}: {exc}", markup=False, highlight=False, soft_wrap=True)
+            if args.verbose:
+                traceback.print_exc()
+            else:
+                errors.print("(run again with --verbose for the traceback)", markup=False)
+            return 1
 
 
 def _run(args: argparse.Namespace, errors: Console, mesh_name: str | None = None) -> int:
@@ -310,8 +306,7 @@ def _plugins(args: argparse.Namespace) -> int:
 
 def _presets() -> int:
     console = Console()
-    console.print("\n".join(_columns(list(presets().items()), console.width, indent=0)),
-                  markup=False, highlight=False, soft_wrap=True)
+    console.print("\n".join(_columns(list(presets().items()), console.width, 0)), markup=False, highlight=False, soft_wrap=True)
     return 0
 
 

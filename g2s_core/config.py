@@ -84,7 +84,8 @@ class _Run(_Section):
     def record(self) -> dict[str, Any]:
         """The config as plain JSON data, for the outputs (optional stages only when set)."""
         unset = {stage.key for stage in PIPELINE if stage.optional and getattr(self, stage.key) is None}
-        return self.model_dump(mode="json", exclude=unset or None)
+        # numpy values given through the Python API (np.int64(6), an array for a point) as their Python ones
+        return self.model_dump(mode="json", exclude=unset or None, fallback=lambda value: getattr(value, "tolist", lambda: value)())
 
     def stages_to_run(self) -> tuple[str, ...]:
         """The stage sections that run, in order."""
@@ -185,7 +186,7 @@ def find_config(name: str | Path, base_dir: Path = Path()) -> Path:
     given = base_dir / name
     candidates = [given, base_dir / f"{name}.yaml", PRESETS_DIR / name, PRESETS_DIR / f"{name}.yaml"]
     for candidate in candidates:
-        if candidate.is_file():
+        if _is_file(candidate):  # not Path.is_file: a name too long for the file system raises
             return candidate
     if os.path.lexists(given):
         return given
@@ -196,8 +197,7 @@ def presets() -> dict[str, str]:
     """Preset name -> its purpose: the first comment line of the YAML file."""
     purposes = {}
     for path in sorted(PRESETS_DIR.glob("*.yaml")):
-        lines = path.read_text(encoding="utf-8").splitlines()
-        comment = next((line for line in lines if line.startswith("#")), "")
+        comment = next((line for line in path.read_text(encoding="utf-8").splitlines() if line.startswith("#")), "")
         purposes[path.stem] = comment.lstrip("#").strip()
     return purposes
 
@@ -391,7 +391,7 @@ def set_key(data: dict[str, Any], key: str, value: Any, source: str) -> dict[str
         ConfigError: the key is unknown, or indexes past a list's end;
             the message starts with ``source``.
     """
-    path = tuple(int(part) if part.isdigit() else part for part in key.split("."))
+    path = tuple(int(part) if re.fullmatch("[0-9]{1,18}", part) else part for part in key.split("."))  # not "²", 5000 digits
     _check_key(path, source)
     data = copy.deepcopy(data)
     container: Any = data

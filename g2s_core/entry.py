@@ -7,11 +7,16 @@ loads the command line under its own interrupt handling, so that a Ctrl-C at
 any time ends as ``g2s: interrupted``, exit code 130.
 """
 
+import signal
 import sys
 
 
 def main() -> int:
-    """``g2s`` as installed: :func:`g2s_core.cli.main`, and a Ctrl-C while it loads ends as one later does."""
+    """``g2s`` as installed: :func:`g2s_core.cli.main`, and a Ctrl-C while it loads ends as one later does.
+
+    SIGTERM (``kill``, a job scheduler's stop) is taken as a Ctrl-C: killed outright, a run left its staging
+    folder behind, half written."""
+    signal.signal(signal.SIGTERM, signal.default_int_handler)
     try:
         from g2s_core import cli
 

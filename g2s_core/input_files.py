@@ -56,8 +56,8 @@ def read_text(path: str | Path, what: str, error: type[G2SError] = G2SError) -> 
         descriptor = os.open(path, os.O_RDONLY | os.O_NONBLOCK)
     except FileNotFoundError:
         raise error(f"{path}: no such {what}") from None
-    except OSError as exc:
-        raise error(f"{path}: cannot read {what} ({exc.strerror})") from None
+    except (OSError, ValueError) as exc:  # ValueError: a NUL byte in the path (given from Python)
+        raise error(f"{path}: cannot read {what} ({getattr(exc, 'strerror', None) or exc})") from None
     try:
         info = os.fstat(descriptor)
         _require_regular(path, info.st_mode, what, error)

@@ -42,11 +42,6 @@ class MeshInfo:
     cleaning: dict[str, int] | None = None
 
 
-def file_sha256(path: Path) -> str:
-    """Hex SHA-256 of a file's bytes (read whole: the mesh reader has just read them all too)."""
-    return hashlib.sha256(path.read_bytes()).hexdigest()
-
-
 def mesh_sha256(mesh: trimesh.Trimesh) -> str:
     """Hex SHA-256 of an in-memory mesh's vertex and face arrays (float64, int64)."""
     digest = hashlib.sha256()
@@ -76,18 +71,18 @@ def load_mesh(path: str | Path, config: MeshConfig | None = None) -> tuple[trime
         raise MeshError(f"{path}: unsupported mesh type {path.suffix!r} (expected one of {', '.join(SUPPORTED_SUFFIXES)})")
     try:
         with _trimesh_log_silenced():
-            with path.open("rb") as handle:  # trimesh takes a UTF-8 byte-order mark for part of an OBJ's first line
-                marked = path.suffix.lower() == ".obj" and handle.read(3) == codecs.BOM_UTF8
-            file = (io.BytesIO(path.read_bytes()[3:]), "obj", trimesh.resolvers.FilePathResolver(path)) if marked \
-                else (path,)
-            loaded = (None if marked else _read_single_mesh(path)) or trimesh.load(*file, force="mesh", process=False)
+            raw = path.read_bytes()
+            # trimesh's OBJ reader takes a UTF-8 byte-order mark for part of the first line and splits on spaces only
+            text = raw.removeprefix(codecs.BOM_UTF8).replace(b"\t", b" ") if path.suffix.lower() == ".obj" else raw
+            file = (io.BytesIO(text), "obj") if text != raw else (path,)
+            loaded = (None if text != raw else _read_single_mesh(path)) or \
+                trimesh.load(*file, force="mesh", process=False, resolver=_files_beside(path))
     except Exception as exc:  # trimesh raises many exception types for bad files
         raise MeshError(f"{path}: {describe_damage(path) or f'cannot read mesh ({type(exc).__name__}: {exc})'}") from None
     if not len(getattr(loaded, "faces", ())) and (damage := describe_damage(path)):  # a cut binary STL reads as empty
         raise MeshError(f"{path}: {damage}")
     mesh, cleaning = prepare_and_clean(loaded, config, source=str(path))
-    info = MeshInfo(path.name, file_sha256(path), len(mesh.vertices), len(mesh.faces), cleaning)
-    return mesh, info
+    return mesh, MeshInfo(path.name, hashlib.sha256(raw).hexdigest(), len(mesh.vertices), len(mesh.faces), cleaning)
 
 
 @contextmanager
@@ -101,6 +96,19 @@ def _trimesh_log_silenced() -> Iterator[None]:
         yield
     finally:
         logger.setLevel(level)
+
+
+def _files_beside(path: Path) -> trimesh.resolvers.FilePathResolver:
+    """trimesh's reader of the files a mesh file names (a glTF's buffers and images, an OBJ's materials), refusing
+    one that is not a regular file: trimesh would open a FIFO and wait forever for a writer."""
+
+    class RegularFiles(trimesh.resolvers.FilePathResolver):
+        def absolute(self, name: str) -> Path:
+            if (found := super().absolute(name)).exists():
+                check_regular_file(found, "file", MeshError)
+            return found
+
+    return RegularFiles(path)
 
 
 _SINGLE_MESH_FORMATS = ("ply", "stl", "off", "obj")
@@ -168,6 +176,10 @@ def prepare_mesh(loaded: object, config: MeshConfig, source: str) -> trimesh.Tri
         raise MeshError(f"{source}: the mesh is empty (no triangles)")
     if faces.ndim != 2 or faces.shape[1] != 3:
         raise MeshError(f"{source}: expected triangles, got faces with {faces.shape[-1]} corners")
+    if vertices.ndim != 2 or vertices.shape[1] != 3:  # an OBJ's "v x y" lines
+        raise MeshError(f"{source}: expected vertices of 3 coordinates x, y, z, got {vertices.shape[-1]}")
+    if (wrong := faces[(faces < 0) | (faces >= len(vertices))]).size:  # a damaged file; numpy would wrap negative ones
+        raise MeshError(f"{source}: a face names vertex {wrong[0]}, but the mesh has {len(vertices)} (numbered from 0)")
     if not np.isfinite(vertices).all():
         raise MeshError(f"{source}: the mesh has NaN or infinite vertex coordinates")
     if config.up_axis == "z":

@@ -37,7 +37,8 @@ def describe_damage(path: Path) -> str | None:
     if suffix == ".gltf":
         try:
             json.loads(data)
-        except ValueError as exc:  # json.JSONDecodeError, or UnicodeDecodeError for bytes that are not UTF-8 text
-            where = f"line {exc.lineno}, column {exc.colno}: {exc.msg}" if isinstance(exc, json.JSONDecodeError) else "not UTF-8 text"
+        except (ValueError, RecursionError) as exc:  # json.JSONDecodeError; UnicodeDecodeError for bytes that are not UTF-8
+            where = f"line {exc.lineno}, column {exc.colno}: {exc.msg}" if isinstance(exc, json.JSONDecodeError) else \
+                "nested too deeply" if isinstance(exc, RecursionError) else "not UTF-8 text"
             return f"not valid glTF JSON ({where})"
     return None

@@ -43,15 +43,10 @@ def parse_formats(formats: str | Sequence[str], source: str = "--format", regist
     """
     known = writers(registry)
     items = formats.split(",") if isinstance(formats, str) else list(formats)
-    names: list[str] = []
-    for item in items:
-        name = str(item).strip().lower()
-        if not name:
-            continue
+    names = list(dict.fromkeys(name for name in (str(item).strip().lower() for item in items) if name))  # once each
+    for name in names:
         if name not in known:
             raise G2SError(f"{source}: unknown output format {name!r} (expected some of: {', '.join(known)})")
-        if name not in names:
-            names.append(name)
     if not names:
         raise G2SError(f"{source}: no output format given (expected some of: {', '.join(known)})")
     return names
@@ -70,8 +65,7 @@ def chosen_formats(given: str | Sequence[str] | None, config: RunConfig, source:
 def result_paths(outdir: Path, formats: Sequence[str] | None = None, registry: Registry | None = None) -> list[Path]:
     """The result files of ``formats`` (all installed formats when ``None``) inside ``outdir``."""
     files = result_files(registry)
-    chosen = files if formats is None else formats
-    return [outdir / name for fmt in chosen for name in files.get(fmt, ())]
+    return [outdir / name for fmt in (files if formats is None else formats) for name in files.get(fmt, ())]
 
 
 def check_outdir(
@@ -86,15 +80,16 @@ def check_outdir(
 
     Raises:
         G2SError: unknown format, ``outdir`` cannot be created or written,
-            results exist without ``force``, or a result file would be an
-            input file.
+            results exist without ``force``, a result file would be an
+            input file, or a folder has a result file's name.
     """
     names = parse_formats(formats, registry=registry)
     check_writable(outdir)
     every = result_paths(outdir, registry=registry)
     refuse_inputs(outdir, every, protect)
-    existing = sorted(p.name for p in every if p.exists())
-    if existing and not force:
+    if folders := [p.name for p in every if p.is_dir()]:  # the move into place would stop there, half done
+        raise G2SError(f"{outdir}: {', '.join(folders)}: a folder has the name of a result file; move it or choose another output folder")
+    if (existing := sorted(p.name for p in every if p.exists())) and not force:
         raise G2SError(f"{outdir}: already holds results ({', '.join(existing)}); use --force to replace them")
     return names
 

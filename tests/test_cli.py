@@ -186,6 +186,9 @@ def test_set_overrides_reach_the_run(tmp_path):
     ("agent.radius=[1", "--set agent.radius: the value '[1' is not valid YAML"),
     ("agent.radius=-1", "map_piece: agent.radius: expected a number > 0, got -1"),
     ("analyzers.3.key=x", "--set analyzers.3.key: analyzers has no item 3 (it lists 1)"),
+    # both were internal errors: int() of a 5000-digit index, and of a digit that is not 0-9
+    ("analyzers." + "9" * 5000 + ".key=x", "--set analyzers." + "9" * 5000 + ".key: unknown key '999"),
+    ("analyzers.\u00b2.key=x", "--set analyzers.\u00b2.key: unknown key '\u00b2' (expected one of: plugin, params, key)"),
     ("terminals.params.nope=1", "map_piece: terminals.params.nope: unknown key"),
 ])
 def test_bad_set_is_a_clean_error(tmp_path, capsys, setting, fragment):

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import codecs
+import hashlib
 import io
 
 import numpy as np
@@ -12,7 +13,7 @@ import trimesh
 from g2s_core import DISTRIBUTION
 from g2s_core.config import MeshConfig
 from g2s_core.errors import ConfigError, MeshError
-from g2s_core.mesh import SUPPORTED_SUFFIXES, file_sha256, generate_level, load_mesh
+from g2s_core.mesh import SUPPORTED_SUFFIXES, generate_level, load_mesh
 from g2s_core.registry import installed
 from g2s_plugins.samples import levels
 
@@ -28,7 +29,7 @@ def test_formats_load_to_the_same_geometry(tmp_path, suffix):
     before = path.read_bytes()
     mesh, info = load_mesh(path)
     assert np.allclose(mesh.bounds, floor_box().bounds)
-    assert info.faces == 12 and info.sha256 == file_sha256(path)
+    assert info.faces == 12 and info.sha256 == hashlib.sha256(path.read_bytes()).hexdigest()
     assert path.read_bytes() == before
 
 
@@ -111,7 +112,16 @@ def test_an_obj_of_one_material_skips_the_scene_and_reads_the_same_arrays(tmp_pa
         handle.seek(len(mark))
         reference = trimesh.load(io.BytesIO(handle.read()), "obj", force="mesh", process=False)
     assert np.array_equal(mesh.vertices, reference.vertices) and np.array_equal(mesh.faces, reference.faces)
-    assert info.faces == len(source.faces) and info.sha256 == file_sha256(path)
+    assert info.faces == len(source.faces) and info.sha256 == hashlib.sha256(path.read_bytes()).hexdigest()
+
+
+def test_an_obj_separated_by_tabs_reads_as_with_spaces(tmp_path):
+    text = levels.two_floors().mesh.export(file_type="obj")
+    spaced, tabbed = tmp_path / "spaced.obj", tmp_path / "tabbed.obj"
+    spaced.write_text(text)
+    tabbed.write_text(text.replace(" ", "\t"))
+    (mesh, _), (reference, _) = load_mesh(tabbed), load_mesh(spaced)
+    assert len(mesh.faces) and np.array_equal(mesh.vertices, reference.vertices) and np.array_equal(mesh.faces, reference.faces)
 
 
 def test_an_obj_of_several_materials_is_read_as_one_mesh(tmp_path):

@@ -283,6 +283,11 @@ class _Surroundings:
         """Metres above the probes the ledge rays start from (a step or the max slope, plus the ground margin)."""
         self.margin = ray_margin(caster, clearance + self.reach + agent.height)
         """Metres (:func:`~g2s_plugins._raycasting.ray_margin` over the highest ray start)."""
+        if self.margin >= self.reach:  # a level hundreds of kilometres across: no ray could tell a step from a floor
+            raise G2SError(
+                f"sampling: the level is too large for the ray caster: rays on it are precise to {self.margin:.3g} m, "
+                f"not within the {self.reach:.3g} m the ledge test looks down; check mesh.scale (the file's units to metres)"
+            )
         widen = np.array([clearance + self.margin, self.margin, clearance + self.margin])
         walkable = caster.walkable_faces(np.arange(len(corners)), agent.max_slope_deg)
         cell = max(clearance, 0.25)
@@ -317,13 +322,14 @@ class _Surroundings:
 def _poisson_candidates(surface: trimesh.Trimesh, spacing: float, params: Params) -> tuple[np.ndarray, np.ndarray, float]:
     """Dense random points on ``surface``: (points, face index, area each point stands for)."""
     area = float(surface.area)
-    count = int(math.ceil(area * params.candidate_density / spacing**2))
-    if count > MAX_CANDIDATES:
+    wanted = area * params.candidate_density / spacing / spacing  # spacing**2 is 0 for a spacing under 1e-162 m
+    if not wanted <= MAX_CANDIDATES:
         raise G2SError(
-            f"sampling: spacing {spacing:g} m is too small for {area:.0f} m² of walkable surface "
-            f"({count} candidate points); use a larger spacing or a smaller candidate_density, or check "
+            f"sampling: spacing {spacing:g} m is too small for {area:.4g} m² of walkable surface "
+            f"({wanted:.4g} candidate points); use a larger spacing or a smaller candidate_density, or check "
             "mesh.scale (the file's units to metres)"
         )
+    count = math.ceil(wanted)
     points, faces = trimesh.sample.sample_surface(surface, max(count, 1), seed=params.seed)
     return np.asarray(points, dtype=np.float64), np.asarray(faces, dtype=np.int64), area / max(count, 1)
 
@@ -331,9 +337,10 @@ def _poisson_candidates(surface: trimesh.Trimesh, spacing: float, params: Params
 def _grid_candidates(surface: trimesh.Trimesh, spacing: float) -> tuple[np.ndarray, np.ndarray]:
     """Points where a regular XZ grid of vertical lines crosses ``surface``: (points, face index)."""
     lo, hi = np.asarray(surface.bounds)
-    nx_, nz_ = (int(math.floor((hi[i] - lo[i]) / spacing)) + 1 for i in (0, 2))
-    if nx_ * nz_ > MAX_CANDIDATES:
-        raise G2SError(f"sampling: spacing {spacing:g} m gives a {nx_} x {nz_} grid; use a larger spacing")
+    across = [float(np.floor((hi[i] - lo[i]) / spacing)) + 1 for i in (0, 2)]  # inf for a tiny spacing
+    if not across[0] * across[1] <= MAX_CANDIDATES:
+        raise G2SError(f"sampling: spacing {spacing:g} m gives a {across[0]:.4g} x {across[1]:.4g} grid; use a larger spacing")
+    nx_, nz_ = map(int, across)
     # Centre the grid on the surface's footprint.
     x0 = lo[0] + 0.5 * ((hi[0] - lo[0]) - (nx_ - 1) * spacing)
     z0 = lo[2] + 0.5 * ((hi[2] - lo[2]) - (nz_ - 1) * spacing)

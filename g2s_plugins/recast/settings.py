@@ -16,7 +16,7 @@ Voxel values are derived in single precision exactly as Recast's demo does
 ``walkableClimb = floorf(max_climb / ch)``, ``walkableRadius = ceilf(radius / cs)``,
 ``maxEdgeLen = (int)(edge_max_len / cs)``, ``minRegionArea = (int)(region_min_size²)``,
 ``mergeRegionArea = (int)(region_merge_size²)``,
-``detailSampleDist = 0 if detail_sample_dist < 0.9 else cs * detail_sample_dist``,
+``detailSampleDist = cs * detail_sample_dist``,
 ``detailSampleMaxError = ch * detail_sample_max_error``.
 """
 
@@ -93,7 +93,8 @@ class RecastParams(PluginParams):
     edge_max_error: float = Field(1.3, ge=0, description="max contour simplification error, cells")
     verts_per_poly: int = Field(6, ge=3, le=6, description="max vertices per polygon (Detour allows 3..6)")
     detail_sample_dist: float = Field(
-        6.0, ge=0, description="detail mesh sample spacing, cells (< 0.9: no sampling)"
+        6.0, ge=0.9, description="detail mesh sample spacing, cells (Recast's 'no sampling' below 0.9 crashed the "
+        "system Recast library, 1.5.1+git20210215)"
     )
     detail_sample_max_error: float = Field(
         1.0, ge=0, description="max detail mesh height error, cell heights"
@@ -163,8 +164,7 @@ def voxel_config(settings: dict[str, Any]) -> dict[str, float]:
             "maxEdgeLen": np.trunc(f(settings["edge_max_len"]) / cs),
             "minRegionArea": np.trunc(f(settings["region_min_size"]) * f(settings["region_min_size"])),
             "mergeRegionArea": np.trunc(f(settings["region_merge_size"]) * f(settings["region_merge_size"])),
-            "detailSampleDist": f(0) if f(settings["detail_sample_dist"]) < f(0.9)
-            else cs * f(settings["detail_sample_dist"]),
+            "detailSampleDist": cs * f(settings["detail_sample_dist"]),
             "detailSampleMaxError": ch * f(settings["detail_sample_max_error"]),
         }
 
@@ -235,6 +235,10 @@ def resolve_settings(agent: Any, params: RecastParams | None = None) -> dict[str
 def _check_voxels(settings: dict[str, Any], keys: dict[str, str], cs_given: bool, ch_given: bool) -> None:
     voxels = voxel_config(settings)
     cs, ch = settings["cell_size"], settings["cell_height"]
+    for key, name in (("cell_size", "cs"), ("cell_height", "ch")):
+        if not np.isfinite(voxels[name]):  # Recast would build with cells of infinite size
+            raise SettingsError(f"{_PARAMS}{key}: {settings[key]:g} m is more than Recast's single precision holds "
+                                f"(at most {float(np.finfo(np.float32).max):.4g} m)")
     # voxel value: (agent setting, the cell key, whether that cell size was set, the cell size)
     rows = {
         "walkableHeight": ("height", f"{_PARAMS}cell_height", ch_given, ch),

@@ -12,5 +12,8 @@ def nearness(tree: nx.Graph, target: np.ndarray) -> dict[int, float]:
     if not nodes:
         return {}
     positions = np.asarray([tree.nodes[node]["pos"] for node in nodes], dtype=np.float64)
-    distances = np.linalg.norm(positions - np.asarray(target, dtype=np.float64), axis=1)
+    offsets = positions - np.asarray(target, dtype=np.float64)
+    distances = np.linalg.norm(offsets, axis=1)
+    if not np.isfinite(distances).all():  # the squares overflow for a target 1e155 m away or more: hypot does not
+        distances = np.hypot(np.hypot(offsets[:, 0], offsets[:, 1]), offsets[:, 2])
     return dict(zip(nodes, (-distances).tolist()))

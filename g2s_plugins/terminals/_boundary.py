@@ -16,10 +16,15 @@ from __future__ import annotations
 from dataclasses import dataclass
 import numpy as np
 
+from g2s_core.errors import G2SError
 from g2s_plugins._raycasting import UP
 
 WELD = 1e-4
 """Metres: navmesh vertices closer than this (per axis, rounded) are one vertex when chaining loops."""
+
+MAX_BOUNDARY_SAMPLES = 10_000_000
+"""Boundary samples at most (0.24 GB of positions): more means a step far too small for the level (1,250 km of
+boundary at the default agent's 0.125 m)."""
 
 
 # --------------------------------------------------------------------------
@@ -179,11 +184,15 @@ class LoopSamples:
     closed: np.ndarray
 
 
-def sample_loops(loops: list[BoundaryLoop], step: float) -> LoopSamples:
+def sample_loops(loops: list[BoundaryLoop], step: float, setting: str = "step") -> LoopSamples:
     """Samples every ``step`` metres (rounded so each loop is evenly divided).
 
     Sample k of a loop of length L with n = max(1, round(L / step)) samples
     lies at arc length (k + 1/2) L / n, so no sample sits on a corner.
+
+    Raises:
+        G2SError: more than :data:`MAX_BOUNDARY_SAMPLES` samples; the message starts with ``setting``, the
+            config key that chose ``step``.
     """
     if not loops or step <= 0:
         z = np.zeros((0, 3))
@@ -207,6 +216,9 @@ def sample_loops(loops: list[BoundaryLoop], step: float) -> LoopSamples:
     n_loops = len(loops)
     loop_start = np.searchsorted(loop_of_edge, np.arange(n_loops), side="left")
     loop_len = np.bincount(loop_of_edge, weights=length, minlength=n_loops)
+    if not (wanted := float(loop_len.sum()) / step) <= MAX_BOUNDARY_SAMPLES:
+        raise G2SError(f"{setting}: a sample every {step:g} m along the navmesh's {loop_len.sum():.4g} m of boundary "
+                       f"makes {wanted:.3g} samples, more than {MAX_BOUNDARY_SAMPLES:,}; use a larger {setting}")
     n_samples = np.maximum(1, np.rint(loop_len / step)).astype(np.int64)
     spacing = loop_len / n_samples
     sample_loop = np.repeat(np.arange(n_loops), n_samples)

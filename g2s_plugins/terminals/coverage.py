@@ -132,7 +132,7 @@ def default_radius(context: RunContext) -> float:
 def g2s_select_terminals(graph: nx.Graph, params: Params, context: RunContext) -> Terminals:
     """Leaves plus the farthest-first cover paths, by ascending id."""
     radius = params.radius if params.radius is not None else default_radius(context)
-    min_area = params.min_area if params.min_area is not None else math.pi * (radius / 2) ** 2
+    min_area = params.min_area if params.min_area is not None else math.pi * (radius / 2) * (radius / 2)  # ** overflows
     arrays = traffic.surface_arrays(graph)
     adjacency = arrays.adjacency
     degree = np.diff(adjacency.indptr)

@@ -324,7 +324,10 @@ def _surface_ends(
     caster: RayCaster, origins: np.ndarray, directions: np.ndarray, down: np.ndarray, s: _Settings, reach: float
 ) -> np.ndarray:
     """(n,) distance along each direction where the surface under the lifted origins ends (NaN: not within reach)."""
-    n_off = max(1, int(math.ceil(reach / s.delta)))
+    if not (steps := reach / s.delta) <= _MAX_PROBE_RAYS:  # a batch could not hold one sample's probes
+        raise PluginError(f"terminals.params.edge_search_radii: looking {reach:.4g} m beyond the boundary in steps of "
+                          f"{s.delta:.4g} m makes {steps:.3g} probes a sample, more than {_MAX_PROBE_RAYS:,}; use a smaller one")
+    n_off = max(1, int(math.ceil(steps)))
     offsets = s.delta * np.arange(1, n_off + 1)
     lo = np.full(len(origins), np.nan)
     batch = max(1, _MAX_PROBE_RAYS // n_off)
@@ -629,7 +632,7 @@ def main_floor(navmesh: NavMesh, agent: AgentConfig, loops: list[BoundaryLoop] |
     radius = float(agent.radius)
     if loops is None:
         loops = boundary_loops(navmesh.vertices, navmesh.polygons, neighbours)
-    samples = sample_loops(loops, radius / 4.0)
+    samples = sample_loops(loops, radius / 4.0, "agent.radius")
     near = cKDTree(samples.position[:, [0, 2]]).query_pairs(radius, output_type="ndarray").reshape(-1, 2)
     level = np.abs(samples.position[near[:, 0], 1] - samples.position[near[:, 1], 1]) <= float(agent.max_climb)
     pairs = samples.polygon[near[level]]
@@ -759,7 +762,7 @@ def detect_openings(
     params = params if params is not None else Params()
     s = _settings(params, agent)
     loops = boundary_loops(navmesh.vertices, navmesh.polygons, navmesh.neighbours)
-    samples = sample_loops(loops, s.step)
+    samples = sample_loops(loops, s.step, "agent.radius" if params.sample_step is None else "terminals.params.sample_step")
     if len(samples.loop) == 0:
         return Detection((), (), ())
     caster = RayCaster(mesh)

@@ -10,7 +10,7 @@ import pytest
 
 from g2s_core.errors import MeshError
 from g2s_core.mesh import load_mesh
-from tests.reliability.checks import assert_clean_error, run_g2s, snapshot, tree
+from tests.reliability.checks import assert_clean_error, run_g2s, run_g2s_process, snapshot, tree
 
 FLOOR_OBJ = """# {comment}
 o {name}
@@ -160,3 +160,79 @@ def test_gltf_whose_json_is_broken_says_where(data, says, tmp_path, quick_config
     outcome = run_g2s(capsys, "run", quick_config, bad, "-o", tmp_path / "out")
     assert_clean_error(outcome, f"{bad}: {says}")
     assert tree(tmp_path / "out") == []
+
+
+# --- meshes whose arrays are damaged, and what a mesh file names (found by fuzzing, /tmp/fuzz, 3 December 2026) ---
+
+PLY_HEAD = ("ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+            "element face 2\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n0 0 10\n10 0 10\n10 0 0\n3 0 1 2\n")
+
+
+@pytest.mark.parametrize("face, vertex", [("3 0 2 9", 9), ("3 0 2 -1", -1), ("3 0 -5 2", -5)])
+def test_a_face_naming_a_vertex_the_file_lacks_is_refused(face, vertex, tmp_path, quick_config, capsys):
+    # were "internal error: IndexError" (9, -5), or a failure blamed on the navmesh plugin (-1, read by numpy as
+    # the last vertex, by Recast as out of range)
+    mesh = tmp_path / "bad.ply"
+    mesh.write_text(PLY_HEAD + face + "\n")
+    outcome = run_g2s(capsys, "run", quick_config, mesh, "-o", tmp_path / "out")
+    assert_clean_error(outcome, f"{mesh}: a face names vertex {vertex}, but the mesh has 4 (numbered from 0)")
+    assert tree(tmp_path / "out") == []
+
+
+def test_vertices_of_two_coordinates_are_refused(tmp_path, quick_config, capsys):
+    # "v x y" lines: the graph builders failed on the (N, 2) array, blamed as their own failure
+    mesh = tmp_path / "flat.obj"
+    mesh.write_text("v 0 0\nv 0 10\nv 10 10\nf 1 2 3\n")
+    outcome = run_g2s(capsys, "run", quick_config, mesh, "-o", tmp_path / "out")
+    assert_clean_error(outcome, f"{mesh}: expected vertices of 3 coordinates x, y, z, got 2")
+
+
+def _gltf_with_buffer(folder: Path) -> Path:
+    """floor.gltf as trimesh writes it, its buffers in files beside it."""
+    import trimesh
+
+    floor = trimesh.Trimesh([[-10, 0, -10], [10, 0, -10], [10, 0, 10], [-10, 0, 10]], [[0, 3, 2], [0, 2, 1]])
+    for name, data in trimesh.exchange.gltf.export_gltf(floor).items():
+        (folder / name).write_bytes(data)
+    return folder / "model.gltf"
+
+
+def test_a_gltf_buffer_that_is_a_fifo_is_refused_not_waited_on(tmp_path):
+    # trimesh opened the FIFO and waited forever for a writer
+    gltf = _gltf_with_buffer(tmp_path)
+    buffer = tmp_path / json.loads(gltf.read_text())["buffers"][0]["uri"]
+    buffer.unlink()
+    os.mkfifo(buffer)
+    outcome = run_g2s_process("run", "graph_only", gltf, "-o", tmp_path / "out", timeout=60)
+    assert_clean_error(outcome, f"{gltf}: cannot read mesh (MeshError: {buffer}: expected a file, got a FIFO)")
+
+
+def test_a_gltf_nested_too_deeply_is_a_clean_error(tmp_path, quick_config, capsys):
+    # the damage report's own json.loads raised RecursionError: an internal error
+    gltf = _damaged(tmp_path, "deep.gltf", b"[" * 100_000 + b"]" * 100_000)
+    outcome = run_g2s(capsys, "run", quick_config, gltf, "-o", tmp_path / "out")
+    assert_clean_error(outcome, f"{gltf}: not valid glTF JSON (nested too deeply)")
+
+
+def test_numpy_warnings_of_a_broken_glb_stay_off_the_error_line(tmp_path):
+    # a node matrix of NaN: numpy's "RuntimeWarning: invalid value encountered in det" printed two more lines
+    data = _floor(tmp_path, ".glb").read_bytes()
+    length = int.from_bytes(data[12:16], "little")
+    document = json.loads(data[20:20 + length])
+    document["nodes"][0]["matrix"] = [float("nan")] * 16
+    chunk = json.dumps(document).encode()
+    chunk += b" " * (-len(chunk) % 4)
+    body = len(chunk).to_bytes(4, "little") + b"JSON" + chunk + data[20 + length:]
+    glb = _damaged(tmp_path, "nan.glb", b"glTF" + (2).to_bytes(4, "little") + (12 + len(body)).to_bytes(4, "little") + body)
+    outcome = run_g2s_process("run", "graph_only", glb, "-o", tmp_path / "out")
+    assert_clean_error(outcome, f"{glb}: ")
+
+
+def test_a_level_too_large_for_the_ray_caster_is_refused_by_the_sampling_builder(tmp_path, capsys):
+    # two floors 1000 km apart: the rays' precision exceeded the ledge test's reach and a negative cell size made
+    # a complex number ("TypeError: '>' not supported between instances of 'complex' and 'float'")
+    mesh = tmp_path / "far.obj"
+    square = "v {x} 0 0\nv {x} 0 10\nv {x2} 0 10\nv {x2} 0 0\n"
+    mesh.write_text(square.format(x=0, x2=10) + square.format(x=1e6, x2=1e6 + 10) + "f 1 2 3\nf 1 3 4\nf 5 6 7\nf 5 7 8\n")
+    outcome = run_g2s(capsys, "run", "map_analysis_sampling", mesh, "-o", tmp_path / "out")
+    assert_clean_error(outcome, "far.obj: sampling: the level is too large for the ray caster: rays on it are precise to")

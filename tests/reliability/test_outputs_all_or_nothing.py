@@ -96,6 +96,17 @@ def test_forced_rerun_that_fails_keeps_the_earlier_results(tmp_path, quick_confi
     assert snapshot(out.iterdir()) == before
 
 
+def test_a_folder_with_a_result_files_name_is_refused_before_any_work(tmp_path, capsys):
+    # with --force, run.json was moved in, then the move of structure.json onto the folder failed: half a result
+    out = tmp_path / "out"
+    (out / "structure.json").mkdir(parents=True)
+    (out / "structure.json" / "mine.txt").write_text("mine\n")
+    before = tree(out)
+    outcome = run_g2s(capsys, "run", "graph_only", CORRIDOR, "-o", out, "--force")
+    assert_clean_error(outcome, f"{out}: structure.json: a folder has the name of a result file")
+    assert tree(out) == before
+
+
 def test_forced_rerun_replaces_all_results_at_once(tmp_path, quick_config, capsys):
     out = tmp_path / "out"
     assert run_g2s(capsys, "run", quick_config, CORRIDOR, "-o", out, "--format", "json,graph").code == 0

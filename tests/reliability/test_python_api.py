@@ -80,6 +80,34 @@ def test_bad_mesh(make, fragments, tmp_path):
     _one_line(error, *fragments)
 
 
+@pytest.mark.parametrize("make", [lambda t: t.Scene(), lambda t: t.PointCloud([[0, 0, 0]]), lambda t: None],
+                         ids=["scene", "point-cloud", "none"])
+def test_a_mesh_of_another_type_is_a_mesh_error(make):
+    # was "TypeError: expected str, bytes or os.PathLike object, not Scene": trimesh.load gives a Scene for a glTF
+    import trimesh
+
+    with pytest.raises(MeshError) as error:
+        g2s_core.run(make(trimesh), "graph_only")
+    _one_line(error, "mesh: expected a mesh file, sample:NAME or a trimesh.Trimesh, got")
+
+
+def test_numpy_values_in_a_config_are_recorded_as_numbers():
+    # were "PydanticSerializationError: Unable to serialize unknown type: <class 'numpy.int64'>" as the run ended
+    import numpy as np
+
+    result = g2s_core.run(CORRIDOR, {"extends": "map_analysis", "roots": {"plugin": "point", "params": {"point": np.array([1.0, 0, 2])}}},
+                          **{"terminals.params.radius": np.int64(6)})
+    assert result.config["roots"]["params"]["point"] == [1.0, 0.0, 2.0]
+    assert result.config["terminals"]["params"]["radius"] == 6
+
+
+def test_a_nul_byte_in_a_structure_path_is_a_clean_error():
+    # the reader's os.open raised ValueError, reported as the json reader's own failure
+    with pytest.raises(G2SError) as error:
+        g2s_core.load_result("a\0b.json")
+    _one_line(error, "cannot read structure file (embedded null byte)")
+
+
 def _text(path: Path, text: str) -> Path:
     path.write_text(text)
     return path

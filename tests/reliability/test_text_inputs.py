@@ -122,6 +122,16 @@ def test_odd_yaml_documents(text, says, tmp_path):
     assert says in str(caught.value)
 
 
+def test_a_config_name_too_long_for_the_file_system_is_not_found(tmp_path, capsys):
+    # Path.is_file raised "OSError: [Errno 36] File name too long": an internal error
+    config = tmp_path / "long.yaml"
+    config.write_text("extends: " + "x" * 5000 + "\n")
+    outcome = run_g2s(capsys, "run", config, CORRIDOR, "-o", tmp_path / "out")
+    assert_clean_error(outcome, f"{config}: extends: no config file or preset named 'xxx")
+    outcome = run_g2s(capsys, "run", "y" * 300, CORRIDOR, "-o", tmp_path / "out")
+    assert_clean_error(outcome, "y" * 300 + ": no such config file or preset")
+
+
 def test_yaml_bomb_is_refused_quickly(tmp_path):
     lines = ["a0: &a0 [x, x, x, x, x, x, x, x, x]"]
     lines += [f"a{i}: &a{i} [{', '.join([f'*a{i - 1}'] * 9)}]" for i in range(1, 10)]

@@ -12,7 +12,7 @@ from g2s_core.config import AgentConfig, MeshConfig, parse_config
 from g2s_core.errors import ConfigError
 from g2s_core.messages import show
 from g2s_core.registry import installed
-from tests.reliability.checks import CORRIDOR, assert_clean_error, run_g2s, tree
+from tests.reliability.checks import CORRIDOR, assert_clean_error, run_g2s, run_g2s_process, tree
 
 
 def _takes_floats(annotation) -> bool:
@@ -156,6 +156,31 @@ def test_a_parameter_of_the_wrong_type_is_refused_before_any_work(section, says,
     outcome = run_g2s(capsys, "run", config, CORRIDOR, "-o", tmp_path / "out")
     assert_clean_error(outcome, f"typed.yaml: {says}")
     assert tree(tmp_path / "out") == []
+
+
+@pytest.mark.parametrize("config, setting, says", [
+    # each of these valid but extreme values ended in a plugin's failure, or (detail_sample_dist) a segmentation fault
+    ("graph_only", "graph.params.cell_height=1e300", "graph.params.cell_height: 1e+300 m is more than Recast's single"),
+    ("map_piece", "terminals.params.edge_search_radii=1e300", "terminals.params.edge_search_radii: looking 4e+299 m"),
+    ("map_analysis_sampling", "graph.params.spacing=1e-300", "sampling: spacing 1e-300 m is too small for 1"),
+    ("map_analysis_sampling", "graph.params.method=grid", "sampling: spacing 4.94066e-324 m gives a inf x inf grid"),
+    ("map_piece", "terminals.params.sample_step=1e-300", "terminals.params.sample_step: a sample every 1e-300 m along the"),
+    ("graph_only", "agent.radius=1e-300", "agent.radius: crest probes every 5e-301 m (half the agent's radius) along"),
+    ("graph_only", "graph.params.detail_sample_dist=0", "graph.params.detail_sample_dist: expected a number >= 0.9, got 0"),
+])
+def test_a_value_out_of_proportion_to_the_level_is_refused_naming_its_key(config, setting, says, tmp_path):
+    extra = ["--set", "graph.params.spacing=5e-324"] if "method=grid" in setting else []  # the grid's size overflows
+    outcome = run_g2s_process("run", config, "sample:two_rooms_one_door", "-o", tmp_path / "out", "--set", setting, *extra)
+    assert_clean_error(outcome, says)
+    assert tree(tmp_path / "out") == []
+
+
+@pytest.mark.parametrize("setting", ["roots={plugin: point, params: {point: [1e300, 0, 0]}}", "terminals.params.radius=1e300"])
+def test_a_huge_distance_still_runs(setting, tmp_path):
+    # the root point's distances overflowed to inf (the root selector "returned -inf"); the cover radius's square
+    # raised OverflowError
+    outcome = run_g2s_process("run", "map_analysis", CORRIDOR, "-o", tmp_path / "out", "-q", "--set", setting)
+    assert outcome.code == 0, outcome.stderr
 
 
 def test_lists_tuples_and_integers_for_numbers_are_still_taken():
