@@ -72,8 +72,7 @@ def load_mesh(path: str | Path, config: MeshConfig | None = None) -> tuple[trime
     try:
         with _trimesh_log_silenced():
             raw = path.read_bytes()
-            # trimesh's OBJ reader takes a UTF-8 byte-order mark for part of the first line and splits on spaces only
-            text = raw.removeprefix(codecs.BOM_UTF8).replace(b"\t", b" ") if path.suffix.lower() == ".obj" else raw
+            text = _as_trimesh_reads_obj(raw) if path.suffix.lower() == ".obj" else raw
             file = (io.BytesIO(text), "obj") if text != raw else (path,)
             loaded = (None if text != raw else _read_single_mesh(path)) or \
                 trimesh.load(*file, force="mesh", process=False, resolver=_files_beside(path))
@@ -83,6 +82,13 @@ def load_mesh(path: str | Path, config: MeshConfig | None = None) -> tuple[trime
         raise MeshError(f"{path}: {damage}")
     mesh, cleaning = prepare_and_clean(loaded, config, source=str(path))
     return mesh, MeshInfo(path.name, hashlib.sha256(raw).hexdigest(), len(mesh.vertices), len(mesh.faces), cleaning)
+
+
+def _as_trimesh_reads_obj(text: bytes) -> bytes:
+    """An OBJ file's bytes as trimesh's reader understands them: it takes a UTF-8 byte-order mark for part of the
+    first line, splits values on spaces only and lines on ``\\n`` only (an old Mac file ends its lines with ``\\r``)."""
+    text = text.removeprefix(codecs.BOM_UTF8).replace(b"\t", b" ")
+    return text if b"\n" in text else text.replace(b"\r", b"\n")
 
 
 @contextmanager

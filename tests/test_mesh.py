@@ -115,12 +115,14 @@ def test_an_obj_of_one_material_skips_the_scene_and_reads_the_same_arrays(tmp_pa
     assert info.faces == len(source.faces) and info.sha256 == hashlib.sha256(path.read_bytes()).hexdigest()
 
 
-def test_an_obj_separated_by_tabs_reads_as_with_spaces(tmp_path):
+@pytest.mark.parametrize("edit", [lambda text: text.replace(" ", "\t"), lambda text: text.replace("\n", "\r")],
+                         ids=["tabs", "old Mac line ends"])
+def test_an_obj_with_tabs_or_lone_carriage_returns_reads_as_the_plain_file(tmp_path, edit):
     text = levels.two_floors().mesh.export(file_type="obj")
-    spaced, tabbed = tmp_path / "spaced.obj", tmp_path / "tabbed.obj"
-    spaced.write_text(text)
-    tabbed.write_text(text.replace(" ", "\t"))
-    (mesh, _), (reference, _) = load_mesh(tabbed), load_mesh(spaced)
+    plain, edited = tmp_path / "plain.obj", tmp_path / "edited.obj"
+    plain.write_text(text)
+    edited.write_bytes(edit(text).encode())
+    (mesh, _), (reference, _) = load_mesh(edited), load_mesh(plain)
     assert len(mesh.faces) and np.array_equal(mesh.vertices, reference.vertices) and np.array_equal(mesh.faces, reference.faces)
 
 
