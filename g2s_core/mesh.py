@@ -73,8 +73,9 @@ def load_mesh(path: str | Path, config: MeshConfig | None = None) -> tuple[trime
         with _trimesh_log_silenced():
             raw = path.read_bytes()
             text = _as_trimesh_reads_obj(raw) if path.suffix.lower() == ".obj" else raw
-            file = (io.BytesIO(text), "obj") if text != raw else (path,)
-            loaded = (None if text != raw else _read_single_mesh(path)) or \
+            rewritten = text != raw
+            file = (io.BytesIO(text), "obj") if rewritten else (path,)
+            loaded = (None if rewritten else _read_single_mesh(path)) or \
                 trimesh.load(*file, force="mesh", process=False, resolver=_files_beside(path))
     except Exception as exc:  # trimesh raises many exception types for bad files
         raise MeshError(f"{path}: {describe_damage(path) or f'cannot read mesh ({type(exc).__name__}: {exc})'}") from None
@@ -106,7 +107,8 @@ def _trimesh_log_silenced() -> Iterator[None]:
 
 def _files_beside(path: Path) -> trimesh.resolvers.FilePathResolver:
     """trimesh's reader of the files a mesh file names (a glTF's buffers and images, an OBJ's materials), refusing
-    one that is not a regular file: trimesh would open a FIFO and wait forever for a writer."""
+    one that is not a regular file: trimesh would open a FIFO and wait forever for a writer. (A class made here,
+    not at import: trimesh loads lazily, and a command that reads no mesh must not load it.)"""
 
     class RegularFiles(trimesh.resolvers.FilePathResolver):
         def absolute(self, name: str) -> Path:

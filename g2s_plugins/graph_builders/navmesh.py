@@ -101,8 +101,9 @@ def navmesh_graph(navmesh: NavMesh, agent: AgentConfig | None = None, max_edge_g
         raise ValueError("max_edge_gap needs the agent (its radius spaces the probes)")
     if max_edge_gap is not None and len(pairs):
         step, reach = _probe_spacing_and_reach(agent)
-        _probed_lengths(centres[pairs[:, 0]], centres[pairs[:, 1]], step)
-        gaps = navmesh.segment_surface_gaps(centres[pairs[:, 0]], centres[pairs[:, 1]], step, reach)
+        starts, ends = centres[pairs[:, 0]], centres[pairs[:, 1]]
+        _check_probe_count(float(np.hypot(*(ends - starts)[:, [0, 2]].T).sum()), step)
+        gaps = navmesh.segment_surface_gaps(starts, ends, step, reach)
         crossing = (gaps > max_edge_gap) | (_corner_gaps(navmesh, reach) > max_edge_gap)
     direct = ~crossing
     graph = graph_of(nx.Graph(), nodes, (
@@ -127,15 +128,13 @@ MAX_CREST_PROBES = 20_000_000
 """Crest probes at most in one pass (0.48 GB of positions): more means an agent radius far too small for the level."""
 
 
-def _probed_lengths(starts: np.ndarray, ends: np.ndarray, step: float) -> list[float]:
-    """The horizontal lengths of the segments ``starts[i] -> ends[i]`` ((S,3) each), m, refusing them when probes
-    every ``step`` metres along them would be more than :data:`MAX_CREST_PROBES`."""
-    lengths = [math.hypot(dx, dz) for dx, _, dz in (ends - starts).tolist()]
-    if not (wanted := sum(lengths) / step) <= MAX_CREST_PROBES:
-        raise G2SError(f"agent.radius: crest probes every {step:g} m (half the agent's radius) along {sum(lengths):.4g} m "
+def _check_probe_count(length: float, step: float) -> None:
+    """Refuse crest probes every ``step`` metres along ``length`` metres of links when they would be more than
+    :data:`MAX_CREST_PROBES`."""
+    if not (wanted := length / step) <= MAX_CREST_PROBES:
+        raise G2SError(f"agent.radius: crest probes every {step:g} m (half the agent's radius) along {length:.4g} m "
                        f"of navmesh links make {wanted:.3g}, more than {MAX_CREST_PROBES:,}; use a larger agent.radius, "
                        "or check mesh.scale (the file's units to metres)")
-    return lengths
 
 
 CORNER_PROBE_STEP = 0.005
@@ -278,7 +277,9 @@ def _surface_points_between(
         return found
     step, reach = _probe_spacing_and_reach(agent)
     span = ends - starts
-    counts = [max(1, math.ceil(length / step)) for length in _probed_lengths(starts, ends, step)]
+    lengths = [math.hypot(dx, dz) for dx, _, dz in span.tolist()]
+    _check_probe_count(sum(lengths), step)
+    counts = [max(1, math.ceil(length / step)) for length in lengths]
     probed = [i for i, count in enumerate(counts) if count >= 2]
     if not probed:
         return found
