@@ -54,9 +54,7 @@ NAME = "spanner"
 class Params(PluginParams):
     """When a loop path is worth adding."""
 
-    stretch: float = Field(1.5, ge=1, allow_inf_nan=True,
-                           description="add a path when the structure is more than this many times longer between its ends "
-                                       "(.inf: none, the paper's tree)")
+    stretch: float = Field(1.5, ge=1, description="add a path when the structure is more than this many times longer between its ends")
     min_gain: float = Field(3.0, ge=0, description="and the structure is longer by more than this, metres")
 
 
