@@ -120,7 +120,7 @@ def _walk_in_blocks(
 
 def slow_closure_warning(terminals: int, nodes: int, edges: int) -> str | None:
     """The warning for a metric closure of ``terminals`` searches over a graph of ``nodes`` and ``edges`` that
-    predicts a minute or more (cost at least :data:`SLOW_COST`), naming the counts and what to use instead;
+    predicts 20 s or more (cost at least :data:`SLOW_COST`), naming the counts and what to use instead;
     ``None`` below that."""
     cost = terminals * (edges + nodes * math.log2(max(nodes, 2)))
     if cost < SLOW_COST:
