@@ -615,6 +615,14 @@ def clear_above(caster: RayCaster, origins: np.ndarray, needed: np.ndarray | flo
     return has_room(caster.first_hits(origins, UP).distance, needed)
 
 
+def hit_from_behind(caster: RayCaster, hits: Hits) -> np.ndarray:
+    """(n,) bool: each ray of ``hits`` met its first triangle on the back side (the triangle's normal points
+    along the ray, as a closed body's outward-wound walls do seen from inside); False where it met nothing."""
+    behind = hits.hit
+    behind[behind] = np.einsum("ij,ij->i", caster.face_normals[hits.face[behind]], hits.unit[behind]) > 0.0
+    return behind
+
+
 def has_room(distance: np.ndarray, needed: np.ndarray | float) -> np.ndarray:
     """(n,) bool: upward rays that hit at ``distance`` (metres, ``inf``: nothing) leave ``needed`` metres free."""
     return distance >= np.asarray(needed, dtype=np.float64) - HEIGHT_TOLERANCE

@@ -206,6 +206,59 @@ def test_low_ceiling_removes_samples_below_it():
     assert not any(min(graph.nodes[a]["pos"][0], graph.nodes[b]["pos"][0]) < 0 and abs(graph.nodes[a]["pos"][1]) < 1e-6 for a, b in graph.edges)
 
 
+def quad(corners) -> trimesh.Trimesh:
+    """One single-sided quad, its normal by the right-hand rule over ``corners`` (4, in order)."""
+    return trimesh.Trimesh(np.asarray(corners, dtype=float), [[0, 1, 2], [0, 2, 3]], process=False)
+
+
+@pytest.mark.parametrize("method", ["poisson", "grid"])
+@pytest.mark.parametrize("single_sided_floor, height", [(False, 3.0), (True, 4.0)])
+def test_no_sample_inside_a_closed_box_standing_on_the_floor(method, single_sided_floor, height):
+    # 8 m wide, taller than the agent: no clearance ray from its middle reaches a wall. Its
+    # bottom lies in the floor's plane, and which of the two a ledge ray meets there is
+    # Embree's tie: at these heights 34 (poisson) and 49 (grid) samples stood inside before the solids rule.
+    ground = quad([(-10, 0, -10), (-10, 0, 10), (10, 0, 10), (10, 0, -10)]) if single_sided_floor else floor(-10, 10, -10, 10)
+    graph = build(level(ground, box((-4.0, 0.0, -4.0), (4.0, height, 4.0))), method=method)
+    p = positions(graph)
+    inside = (np.abs(p[:, 0]) < 4.0) & (np.abs(p[:, 2]) < 4.0) & (p[:, 1] < height - 0.1)
+    assert not inside.any()
+    assert np.any(np.abs(p[:, 1] - height) < 1e-6) and np.any(np.abs(p[:, 1]) < 1e-6)  # its roof and the floor around stay
+    assert graph.graph["sampling_stats"]["candidates_inside_solids"] > 0
+
+
+def _room(ceiling: str, walls: str) -> trimesh.Trimesh:
+    """A 10 x 3 x 10 m room on a slab, of single-sided quads: ceiling facing ``up``/``down``, walls ``in``/``out``."""
+    corners = [(-5, 3, -5), (-5, 3, 5), (5, 3, 5), (5, 3, -5)]
+    parts = [floor(-8, 8, -8, 8), quad(corners if ceiling == "up" else corners[::-1])]
+    ring = [(-5, -5), (5, -5), (5, 5), (-5, 5)]
+    for (x0, z0), (x1, z1) in zip(ring, ring[1:] + ring[:1]):
+        wall = [(x0, 0, z0), (x1, 0, z1), (x1, 3, z1), (x0, 3, z0)]  # faces into the room
+        parts.append(quad(wall if walls == "in" else wall[::-1]))
+    return level(*parts)
+
+
+@pytest.mark.parametrize("ceiling", ["up", "down"])
+def test_room_with_single_sided_ceiling_and_walls_keeps_its_floor(ceiling):
+    # An upper floor seen from below is a back face when it faces up, but the walls face into the room.
+    graph = build(_room(ceiling, "in"))
+    p = positions(graph)
+    assert np.count_nonzero((np.abs(p[:, 0]) < 5) & (np.abs(p[:, 2]) < 5) & (np.abs(p[:, 1]) < 1e-6)) > 40
+    assert graph.graph["sampling_stats"]["candidates_inside_solids"] == 0
+
+
+def test_inside_closed_solids_needs_back_faces_all_round():
+    agent = AgentShape.from_config(AGENT)
+    solid = level(floor(-10, 10, -10, 10), box((-4.0, 0.0, -4.0), (4.0, 3.0, 4.0)))
+    inverted = solid.copy()
+    inverted.invert()  # wound inside out: seen from the front everywhere
+    bridge = level(floor(-10, 10, -10, 10), box((-4.0, 2.5, -4.0), (4.0, 2.7, 4.0)))  # a closed deck overhead
+    shell = _room("up", "out")  # outward quads all round: a closed body, as far as winding tells
+    points = np.array([[0.0, 0.0, 0.0], [7.0, 0.0, 0.0]])
+    expected = {solid: [True, False], inverted: [False, False], bridge: [False, False], shell: [True, False]}
+    for mesh, answer in expected.items():
+        np.testing.assert_array_equal(sampling.inside_closed_solids(RayCaster(mesh), points, agent), answer)
+
+
 def test_hole_in_the_floor_is_not_crossed():
     # Without erosion samples lie right at the edges of the 1.2 m wide hole, well
     # within connect_radius (2 m) of each other across it.

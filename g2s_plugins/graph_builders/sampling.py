@@ -84,6 +84,7 @@ from g2s_plugins._raycasting import (
     all_hits_down,
     clear_above,
     head_room,
+    hit_from_behind,
     ray_margin,
     walk_segments,
 )
@@ -256,6 +257,43 @@ def agent_fits(
         ground[ground] = clear_above(caster, probe[ground] + reach * UP, above[ground])
         ok[rows] = ground.reshape(len(rows), len(COMPASS)).all(axis=1)
     return ok
+
+
+SOLID_DIRECTIONS = COMPASS[::2]
+"""The horizontal directions (+x, +z, -x, -z) :func:`inside_closed_solids` looks along."""
+
+
+def inside_closed_solids(caster: RayCaster, points: np.ndarray, agent: AgentShape) -> np.ndarray:
+    """(n,) bool: each ground point lies inside a closed solid (a building block standing on the floor).
+
+    A point is inside when the first triangle straight above it and the
+    first ones along +x, +z, -x and -z from half the agent's height over it
+    (rays of unlimited length) are all met on their back side
+    (:func:`~g2s_plugins._raycasting.hit_from_behind`): a closed body wound
+    outwards, seen from within. A place meant to be walked is seen from the
+    front: a room's walls face into it, whether they are single quads or
+    the faces of wall slabs, and the underside of a bridge or a slab faces
+    down at it. A single-sided upper floor (a quad facing up) is met from
+    behind above a room, but the room's walls are not, so its floor stays.
+    A ray that meets nothing leaves the point outside. A level wound inside
+    out is met from the front everywhere, so it loses no point here and
+    :mod:`g2s_plugins.walkable_check` still speaks about it.
+
+    The agent checks cannot tell: a solid taller than the agent and wider
+    than twice the clearance leaves its floor's middle with head room and
+    no wall or ledge within the clearance.
+
+    Cost: one upward ray a point, and up to four horizontal rays for the
+    points whose first triangle above is met from behind.
+    """
+    points = np.asarray(points, dtype=np.float64).reshape(-1, 3)
+    inside = hit_from_behind(caster, caster.first_hits(points + EPSILON * UP, UP))
+    rows = np.nonzero(inside)[0]
+    for direction in SOLID_DIRECTIONS:
+        rows = rows[hit_from_behind(caster, caster.first_hits(points[rows] + 0.5 * agent.height * UP, direction))]
+    inside[:] = False
+    inside[rows] = True
+    return inside
 
 
 class _Surroundings:
@@ -492,7 +530,13 @@ def build_sampled_graph(
     lap("candidates")
     fits = agent_fits(caster, candidates, agent, clearance, surface.triangles, faces)
     lap("agent_checks")
+    # Before the Poisson-disk pick, not after: a candidate inside a solid could
+    # otherwise block one outside it or add to a sample's area.
+    solid = inside_closed_solids(caster, candidates[fits], agent)
+    fits[fits] = ~solid
+    lap("solids")
     stats["candidates"] = int(len(candidates))
+    stats["candidates_inside_solids"] = int(solid.sum())
     stats["candidates_fit"] = int(fits.sum())
     kept, kept_faces = candidates[fits], faces[fits]
     normals = np.asarray(surface.face_normals)[kept_faces]
