@@ -19,6 +19,11 @@ wanted. No Recast is involved: ``context.navmesh`` stays ``None``.
    the walkable surface by ``clearance`` as Recast erodes it by the radius.
    Rays whose answer the geometry near a candidate already gives are not
    cast (:class:`_Surroundings`); the answers are the same.
+   *Closed solids* (:func:`inside_closed_solids`): a candidate that passed
+   those checks is dropped when the first triangles above it and along
+   ±x, ±z are all met from behind (the inside of an outward-wound block
+   standing on the floor, which the checks above miss in the middle of a
+   block taller than the agent and wider than twice the clearance).
 4. *Samples*: for ``poisson``, a maximal Poisson-disk subset of the
    surviving candidates (no two closer than ``spacing``, every candidate
    within ``spacing`` of a sample), chosen by seeded dart throwing
@@ -47,7 +52,8 @@ the resolved settings and counts (candidates, samples, rays, ...). The same mesh
 Cost, for c candidates, s samples and p sample pairs within
 ``connect_radius``: at most 41 rays a candidate (head room; 8 directions at
 up to 3 heights; 8 ledge rays down and 8 up), fewer where
-:class:`_Surroundings` gives the answer; the Poisson-disk subset, k-d tree
+:class:`_Surroundings` gives the answer; one more upward ray a candidate
+that fits, and 4 horizontal ones where that ray meets a face from behind; the Poisson-disk subset, k-d tree
 queries over the candidates and their pairs within ``spacing``; the pairs,
 one k-d tree query, then O(connect_radius / probe_step) rays for each pair
 not on one open floor triangle. Each ray is a search of Embree's bounding
