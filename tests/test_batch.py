@@ -328,3 +328,14 @@ def test_cli_batch_outdir_under_a_file_is_one_line(tmp_path, capsys):
     (tmp_path / "level.obj").write_text("v 0 0 0\n")
     assert_user_error(g2s(capsys, "batch", CONFIG, SAMPLES[0], "-o", str(tmp_path / "level.obj" / "out")),
                       "level.obj/out: cannot create the folder, ")
+
+
+def test_a_config_given_twice_runs_once_as_a_level_given_twice(tmp_path):
+    """`map_analysis map_analysis` was refused: 'config name 'map_analysis' is also that of map_analysis; rename one
+    of the files'; a level given twice ran once."""
+    summary = run_batch(["map_analysis", CONFIG], [SAMPLES[0], SAMPLES[0]], tmp_path / "out", "serial", formats="json")
+    assert list(summary["config"]) == ["map_analysis"] and list(summary["status"]) == ["ok"]
+    other = tmp_path / "map_analysis.yaml"
+    other.write_text("extends: map_analysis\n")
+    with pytest.raises(G2SError, match="config name 'map_analysis' is also that of map_analysis; rename one"):
+        run_batch(["map_analysis", str(other)], [SAMPLES[0]], tmp_path / "other", "serial", formats="json")

@@ -283,21 +283,24 @@ def make_pairs(
     """Every (config, level) pair of a batch, configs outer; configs and inputs are checked here.
 
     Raises:
-        ConfigError, G2SError: a config does not validate, two configs share a
-            file stem, an input matches nothing, or ``outdir`` cannot take a batch.
+        ConfigError, G2SError: a config does not validate, two configs (other
+            than one file given twice) share a file stem, an input matches nothing, or ``outdir`` cannot take a batch.
     """
     _check_outdir(outdir)
     levels = expand_inputs(inputs, exclude=outdir)
     registry = installed()
     pairs: list[Pair] = []
-    seen: dict[str, str] = {}
+    seen: dict[str, tuple[str, Path]] = {}
     for config_path in configs:
         source = str(config_path)
         name = Path(config_path).stem
+        found = find_config(config_path)
         if name in seen:
-            raise G2SError(f"{source}: config name {name!r} is also that of {seen[name]}; rename one of the files")
-        seen[name] = source
-        raw = with_evaluators(load_raw_config(find_config(config_path)), evaluators)
+            if seen[name][1] == found.resolve():  # the same config twice, as a level given twice: its pairs once
+                continue
+            raise G2SError(f"{source}: config name {name!r} is also that of {seen[name][0]}; rename one of the files")
+        seen[name] = source, found.resolve()
+        raw = with_evaluators(load_raw_config(found), evaluators)
         config = parse_config(raw, source=source)
         pipeline.plan(config, registry, source=source)
         chosen = tuple(chosen_formats(formats, config, source))
