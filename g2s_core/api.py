@@ -167,7 +167,8 @@ def run(
         config: a preset name (``g2s presets`` lists them), a YAML file, a
             mapping as a YAML file would hold, or a :class:`~g2s_core.config.RunConfig`.
         mesh_name: the name recorded for an in-memory mesh.
-        progress: called with a short message as each stage starts.
+        progress: called with a short message as each stage starts, and with each warning as it is raised
+            (a :class:`~g2s_core.model.RaisedWarning`).
         **overrides: config keys and their new values, as ``g2s run --set``
             takes them: ``agent={"radius": 0.4}`` (mappings merge) or dotted,
             ``**{"terminals.params.radius": 8.0}``.

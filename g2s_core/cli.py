@@ -16,8 +16,8 @@ import sys
 import textwrap
 import traceback
 import warnings
-from collections.abc import Callable, Iterator, Sequence
-from contextlib import contextmanager, suppress
+from collections.abc import Callable, Sequence
+from contextlib import nullcontext, suppress
 from pathlib import Path
 from typing import Any, NoReturn
 
@@ -28,7 +28,7 @@ from g2s_core import version
 from g2s_core.config import parse_assignment, presets, resolve_config
 from g2s_core.errors import G2SError, PluginFailure
 from g2s_core.mesh import SAMPLE_PREFIX
-from g2s_core.model import RunResult
+from g2s_core.model import RaisedWarning, RunResult
 from g2s_core.outputs import DEFAULT_FORMATS, check_outdir, chosen_formats, writers
 from g2s_core.registry import installed, plugin_parameters
 from g2s_core.result_folder import interrupts_held
@@ -187,14 +187,18 @@ def _run(args: argparse.Namespace, errors: Console, mesh_name: str | None = None
     if mesh.cleaning and not quiet:
         counts = ", ".join(f"{count} {what.replace('_', ' ')}" for what, count in mesh.cleaning.items())
         errors.print(f"cleaning: {counts}", markup=False, highlight=False, soft_wrap=True)
-    with _progress(errors, quiet) as say:
-        result = api.execute(plan, registry, mesh, progress=say, config_files=config_files)
-        written = api.write_result(result, args.outdir, formats, force=args.force, progress=say, registry=registry)
+    # progress on a terminal only, so that an error stays the one line on stderr that scripts can rely on
+    live = not quiet and errors.is_terminal
+    with errors.status("running") if live else nullcontext() as spinner:
+        def say(message: str) -> None:  # the step on the spinner; a warning above it as raised, before a costly step
+            _warn(errors, message) if isinstance(message, RaisedWarning) else spinner.update(message)
+        result = api.execute(plan, registry, mesh, progress=say if live else None, config_files=config_files)
+        written = api.write_result(result, args.outdir, formats, force=args.force, progress=say if live else None, registry=registry)
     if args.json:
         print(json.dumps(_summary(result, args.outdir, formats, written), indent=1, sort_keys=True))
         return 0
-    for warning in result.warnings:
-        errors.print(f"g2s: warning: {warning}", markup=False, highlight=False, soft_wrap=True)
+    for warning in () if live else result.warnings:  # else they were shown above the spinner
+        _warn(errors, warning)
     if not args.quiet:
         console = Console()
         console.print(stage_table(result, title=mesh.name))
@@ -234,18 +238,8 @@ def _demo_hint(outdir: Path) -> str:
     return "\n".join(lines)
 
 
-@contextmanager
-def _progress(errors: Console, quiet: bool) -> Iterator[Callable[[str], None]]:
-    """A callback showing progress on stderr as a spinner with the current step.
-
-    Nothing is shown with ``quiet`` or when stderr is not a terminal, so that
-    an error stays the one line on stderr that scripts can rely on.
-    """
-    if quiet or not errors.is_terminal:
-        yield lambda _message: None
-    else:
-        with errors.status("running") as status:
-            yield lambda message: status.update(message)
+def _warn(errors: Console, message: str) -> None:
+    errors.print(f"g2s: warning: {message}", markup=False, highlight=False, soft_wrap=True)
 
 
 def _summary(result: RunResult, outdir: Path, formats: Sequence[str], written: Sequence[Path]) -> dict[str, Any]:

@@ -24,7 +24,7 @@ are spanning trees and the other edges carry ``loop=True`` (see
 
 from __future__ import annotations
 
-from collections.abc import Hashable, Iterable, Mapping, Sequence
+from collections.abc import Callable, Hashable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Protocol, runtime_checkable
@@ -236,6 +236,11 @@ class LoadedResult:
     document: dict[str, Any] = field(default_factory=dict, repr=False)
 
 
+class RaisedWarning(str):
+    """A warning as the run's ``progress`` callback receives it, the moment it is raised: its message, a ``str``
+    (any callback can show it), of its own class (so a callback can tell it from a stage's name)."""
+
+
 @dataclass
 class RunContext:
     """Shared, read-mostly state that every hook receives as ``context``.
@@ -248,6 +253,8 @@ class RunContext:
             the graph was built without one.
         graph: the initial surface graph, once stage 1 has run.
         warnings: messages for the user collected during the run.
+        progress: the run's progress callback, which :meth:`warn` also tells each warning as a
+            :class:`RaisedWarning`, before a costly step rather than after the run.
     """
 
     mesh: trimesh.Trimesh
@@ -256,10 +263,12 @@ class RunContext:
     navmesh: NavMesh | None = None
     graph: nx.Graph | None = None
     warnings: list[str] = field(default_factory=list)
+    progress: Callable[[str], None] = lambda _message: None
 
     def warn(self, message: str) -> None:
-        """Record a warning for the run result and the CLI."""
+        """Record a warning for the run result and the CLI, and tell the progress callback at once."""
         self.warnings.append(message)
+        self.progress(RaisedWarning(message))
 
 
 @dataclass

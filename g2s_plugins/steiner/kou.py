@@ -34,6 +34,7 @@ from the search of the smaller terminal, and both spanning trees break ties by
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterable, Sequence
 
 import networkx as nx
@@ -49,6 +50,16 @@ NAME = "kou"
 DISTANCE_BUDGET = 1 << 24
 """Most distances (terminals x nodes) held at once: 16 Mi entries, 128 MiB of float64
 (plus 64 MiB of int32 predecessors when the closure is computed in one pass)."""
+
+SLOW_COST = 2e9
+"""Kou's cost, terminals x (edges + nodes log2 nodes), from which a run is warned before the metric closure: at the
+10-50 ns per unit measured on sampled levels (docs/steiner.md, "When kou is slow") 20 s to 2 minutes, and minutes
+beyond. Every kou run of the presets on the sample levels and shared pieces stays under 8e8 (the most:
+map_piece_sampling on a 400-room dungeon, 7.6e8, 25 s); a map-piece preset on a whole level with a 0.1 m agent
+reached 6e10 (688 s)."""
+
+NS_PER_UNIT = (10.0, 50.0)
+"""Nanoseconds per unit of :data:`SLOW_COST`'s measure, fastest and slowest measured (docs/steiner.md)."""
 
 
 class Params(PluginParams):
@@ -107,7 +118,25 @@ def _walk_in_blocks(
     return np.concatenate(children), np.concatenate(parents)
 
 
+def slow_closure_warning(terminals: int, nodes: int, edges: int) -> str | None:
+    """The warning for a metric closure of ``terminals`` searches over a graph of ``nodes`` and ``edges`` that
+    predicts 20 s or more (cost at least :data:`SLOW_COST`), naming the counts and what to use instead;
+    ``None`` below that."""
+    cost = terminals * (edges + nodes * math.log2(max(nodes, 2)))
+    if cost < SLOW_COST:
+        return None
+    fast, slow = (f"{m:.0f}" if m >= 1 else f"{m:.1f}" for m in (cost * ns * 1e-9 / 60.0 for ns in NS_PER_UNIT))
+    return (
+        f"steiner: kou searches the graph once per terminal: {terminals:,} terminals on {nodes:,} nodes and "
+        f"{edges:,} edges predict about {fast}-{slow} min (docs/steiner.md); the mehlhorn solver gives a "
+        "tree of the same approximation bound in one search (steiner: {plugin: mehlhorn}); for a whole level "
+        "rather than a map piece, the map_analysis preset is made for it"
+    )
+
+
 @hookimpl
 def g2s_steiner_tree(graph: nx.Graph, terminals: Sequence[int], params: Params, context: RunContext) -> nx.Graph:
-    """SteinerSolver: Kou et al.'s tree over ``graph`` joining ``terminals``."""
+    """SteinerSolver: Kou et al.'s tree over ``graph`` joining ``terminals``; warns first when it will be slow."""
+    if warning := slow_closure_warning(len(set(terminals)), graph.number_of_nodes(), graph.number_of_edges()):
+        context.warn(warning)
     return kou_steiner_tree(graph, terminals)
