@@ -31,6 +31,8 @@ CASES = [
     ("room_with_window", {}, 1),
     ("dungeon", {}, 0),
     ("dungeon", {"seed": 3, "rooms": 30, "exits": 3}, 3),
+    ("maze", {}, 0),
+    ("maze", {"seed": 2, "cells": 12, "loops": 0.2}, 0),
 ]
 CASE_IDS = [f"{name}-{i}" for i, (name, _, _) in enumerate(CASES)]
 NOT_DUNGEON = [i for i, (name, _, _) in enumerate(CASES) if name != "dungeon"]
@@ -109,6 +111,7 @@ def test_registry_names_and_load():
         "terrain",
         "building",
         "castle",
+        "maze",
     }
     lvl = load_sample("straight_corridor", length=5.0)
     assert isinstance(lvl, SampleLevel) and lvl.name == "straight_corridor"
@@ -133,6 +136,8 @@ def test_unknown_sample_lists_names():
         ("dungeon", {"rooms": 0}),
         ("dungeon", {"room_min": 3.0}),
         ("dungeon", {"rooms": 2, "exits": 50}),
+        ("maze", {"cells": 1}),
+        ("maze", {"loops": 1.5}),
     ],
 )
 def test_bad_arguments_raise(name, kwargs):
@@ -368,6 +373,33 @@ def test_dungeon_ground_truth():
         inside = (bounds[:, 0] + gap + size / 2 <= x + 1e-9) & (x <= bounds[:, 1] - gap - size / 2 + 1e-9)
         inside &= (bounds[:, 2] + gap + size / 2 <= z + 1e-9) & (z <= bounds[:, 3] - gap - size / 2 + 1e-9)
         assert inside.sum() == 1
+
+
+def test_maze_ground_truth():
+    import networkx as nx
+
+    def cell_graph(meta, cells):
+        east, south = meta["east_walls"], meta["south_walls"]
+        graph = nx.grid_2d_graph(cells, cells)
+        graph.remove_edges_from(((i, j), (i + 1, j)) for i, j in np.argwhere(east))
+        graph.remove_edges_from(((i, j), (i, j + 1)) for i, j in np.argwhere(south))
+        return graph
+
+    perfect = load_sample("maze", seed=1, cells=10, loops=0.0)
+    graph = cell_graph(perfect.metadata, 10)
+    assert nx.is_tree(graph)  # one path between any two cells
+    assert perfect.metadata["loops"] == perfect.metadata["cycles"] == 0
+    assert perfect.metadata["dead_ends"] == sum(1 for _, d in graph.degree if d == 1) > 0
+    looped = load_sample("maze", seed=1, cells=10, loops=0.3)
+    graph = cell_graph(looped.metadata, 10)
+    assert nx.is_connected(graph) and graph.number_of_edges() - graph.number_of_nodes() + 1 == looped.metadata["loops"] > 0
+    assert 0 < looped.metadata["cycles"] <= looped.metadata["loops"]
+    # every corridor is `width` wide between walls centred on the cell boundaries
+    width = 3.0
+    lvl = load_sample("maze", cells=6, width=width)
+    assert lvl.metadata["pitch"] == pytest.approx(width + lvl.metadata["wall_thickness"])
+    assert np.allclose(lvl.mesh.bounds[:, [0, 2]], [[-0.1, -0.1], [6 * 3.2 + 0.1, 6 * 3.2 + 0.1]])
+    assert load_sample("maze", seed=0).metadata["east_walls"].tolist() != load_sample("maze", seed=1).metadata["east_walls"].tolist()
 
 
 def test_dungeon_corridors_have_floor():

@@ -965,9 +965,10 @@ SAMPLES: dict[str, Callable[..., SampleLevel]] = {
 """Sample name -> factory. Every factory takes keyword arguments only."""
 
 # Rooms joined by doors (chokepoint and region ground truth), map pieces with
-# known openings, outdoor terrain, multi-storey buildings and castles build on the helpers above.
+# known openings, outdoor terrain, multi-storey buildings, castles and mazes build on the helpers above.
 from g2s_plugins.samples.buildings import SAMPLES as _BUILDING_SAMPLES  # noqa: E402
 from g2s_plugins.samples.castle import SAMPLES as _CASTLE_SAMPLES  # noqa: E402
+from g2s_plugins.samples.maze import SAMPLES as _MAZE_SAMPLES  # noqa: E402
 from g2s_plugins.samples.outdoor import SAMPLES as _OUTDOOR_SAMPLES  # noqa: E402
 from g2s_plugins.samples.pieces import PIECES as _PIECE_SAMPLES  # noqa: E402
 from g2s_plugins.samples.rooms import SAMPLES as _ROOM_SAMPLES  # noqa: E402
@@ -977,6 +978,7 @@ SAMPLES.update(_PIECE_SAMPLES)
 SAMPLES.update(_OUTDOOR_SAMPLES)
 SAMPLES.update(_BUILDING_SAMPLES)
 SAMPLES.update(_CASTLE_SAMPLES)
+SAMPLES.update(_MAZE_SAMPLES)
 
 
 def load_sample(name: str, **kwargs: Any) -> SampleLevel:
