@@ -191,7 +191,9 @@ def _run(args: argparse.Namespace, errors: Console, mesh_name: str | None = None
     live = not quiet and errors.is_terminal
     with errors.status("running") if live else nullcontext() as spinner:
         def say(message: str) -> None:  # the step on the spinner; a warning above it as raised, before a costly step
-            _warn(errors, message) if isinstance(message, RaisedWarning) else spinner.update(message)
+            if isinstance(message, RaisedWarning):
+                return _warn(errors, message)
+            spinner.update(message)
         result = api.execute(plan, registry, mesh, progress=say if live else None, config_files=config_files)
         written = api.write_result(result, args.outdir, formats, force=args.force, progress=say if live else None, registry=registry)
     if args.json:

@@ -15,6 +15,7 @@ import pandas as pd
 import pytest
 
 from g2s_plugins.batch.runner import METRIC_PREFIX, RECORDS, expand_inputs, run_batch
+from g2s_core import load_result
 from g2s_core.cli import main
 from g2s_core.errors import G2SError
 from g2s_plugins.samples.levels import dungeon
@@ -309,3 +310,32 @@ def test_issue_13s_python_path_still_imports_the_runner():
     assert g2s_core.batch.__all__ and all(getattr(g2s_core.batch, name) is getattr(runner, name)
                                           for name in g2s_core.batch.__all__)
     assert {"run_batch", "run_pair", "Pair", "Progress", "COLUMNS", "RECORDS", "METRIC_PREFIX"} <= set(g2s_core.batch.__all__)
+
+
+def test_an_analyzer_key_like_a_count_column_is_summed_up_as_values(tmp_path):
+    """`key: edges` gives the columns edges_max, edges_mean (floats) and edges_top_node, beside the edges_* counts
+    (the summary's typing took edges_max for a count: an internal error once every pair had run)."""
+    config = tmp_path / "edges.yaml"
+    config.write_text("extends: map_analysis\nanalyzers: [{plugin: betweenness, key: edges}]\n")
+    summary = run_batch([str(config)], [SAMPLES[0]], tmp_path / "out", "serial", formats="json")
+    row = summary.iloc[0]
+    values = load_result(row["folder"]).analysis["edges"]
+    assert row["status"] == "ok" and row["edges_max"] == pytest.approx(max(values.values()))
+    assert str(summary["edges_max"].dtype) == "float64" and str(summary["edges_steiner"].dtype) == "Int64"
+
+
+def test_cli_batch_outdir_under_a_file_is_one_line(tmp_path, capsys):
+    (tmp_path / "level.obj").write_text("v 0 0 0\n")
+    assert_user_error(g2s(capsys, "batch", CONFIG, SAMPLES[0], "-o", str(tmp_path / "level.obj" / "out")),
+                      "level.obj/out: cannot create the folder, ")
+
+
+def test_a_config_given_twice_runs_once_as_a_level_given_twice(tmp_path):
+    """`map_analysis map_analysis` was refused: 'config name 'map_analysis' is also that of map_analysis; rename one
+    of the files'; a level given twice ran once."""
+    summary = run_batch(["map_analysis", CONFIG], [SAMPLES[0], SAMPLES[0]], tmp_path / "out", "serial", formats="json")
+    assert list(summary["config"]) == ["map_analysis"] and list(summary["status"]) == ["ok"]
+    other = tmp_path / "map_analysis.yaml"
+    other.write_text("extends: map_analysis\n")
+    with pytest.raises(G2SError, match="config name 'map_analysis' is also that of map_analysis; rename one"):
+        run_batch(["map_analysis", str(other)], [SAMPLES[0]], tmp_path / "other", "serial", formats="json")

@@ -48,6 +48,19 @@ def test_leaves_of_a_cycle_are_none():
     assert select(leaves, nx.cycle_graph(5)).nodes == ()
 
 
+def test_one_leaf_warns_that_the_structure_is_one_node():
+    graph = nx.cycle_graph(6)  # a ring of streets with one dead-end alley
+    graph.add_edge(0, 6)
+    run = context()
+    assert leaves.g2s_select_terminals(graph=graph, params=leaves.Params(), context=run).nodes == (6,)
+    assert run.warnings == ["leaves: the graph's 7 nodes have one dead end, so the structure is that node; a level "
+                            "of loops has almost none, and the coverage terminal selector (the map_analysis preset) "
+                            "reaches every area"]
+    two = context()
+    leaves.g2s_select_terminals(graph=nx.path_graph(3), params=leaves.Params(), context=two)
+    assert two.warnings == []
+
+
 # --- metric ------------------------------------------------------------------------------
 
 

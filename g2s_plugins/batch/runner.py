@@ -49,6 +49,7 @@ from g2s_core.mesh import SAMPLE_PREFIX, SUPPORTED_SUFFIXES
 from g2s_core.model import RunResult
 from g2s_core.outputs import chosen_formats, result_files
 from g2s_core.registry import installed
+from g2s_core.result_folder import check_writable
 from g2s_core.stages import PIPELINE
 
 if TYPE_CHECKING:
@@ -282,21 +283,24 @@ def make_pairs(
     """Every (config, level) pair of a batch, configs outer; configs and inputs are checked here.
 
     Raises:
-        ConfigError, G2SError: a config does not validate, two configs share a
-            file stem, an input matches nothing, or ``outdir`` cannot take a batch.
+        ConfigError, G2SError: a config does not validate, two configs (other
+            than one file given twice) share a file stem, an input matches nothing, or ``outdir`` cannot take a batch.
     """
     _check_outdir(outdir)
     levels = expand_inputs(inputs, exclude=outdir)
     registry = installed()
     pairs: list[Pair] = []
-    seen: dict[str, str] = {}
+    seen: dict[str, tuple[str, Path]] = {}
     for config_path in configs:
         source = str(config_path)
         name = Path(config_path).stem
+        found = find_config(config_path)
         if name in seen:
-            raise G2SError(f"{source}: config name {name!r} is also that of {seen[name]}; rename one of the files")
-        seen[name] = source
-        raw = with_evaluators(load_raw_config(find_config(config_path)), evaluators)
+            if seen[name][1] == found.resolve():  # the same config twice, as a level given twice: its pairs once
+                continue
+            raise G2SError(f"{source}: config name {name!r} is also that of {seen[name][0]}; rename one of the files")
+        seen[name] = source, found.resolve()
+        raw = with_evaluators(load_raw_config(found), evaluators)
         config = parse_config(raw, source=source)
         pipeline.plan(config, registry, source=source)
         chosen = tuple(chosen_formats(formats, config, source))
@@ -310,9 +314,8 @@ def make_pairs(
 
 
 def _check_outdir(outdir: Path) -> None:
-    """A batch writes into a new or empty folder, or into one an earlier batch wrote."""
-    if outdir.exists() and not outdir.is_dir():
-        raise G2SError(f"{outdir}: exists and is not a folder")
+    """A batch writes into a new or empty folder, or into one an earlier batch wrote; one it can create or write."""
+    check_writable(outdir)
     if outdir.is_dir() and any(outdir.iterdir()) and not (outdir / RECORDS).is_dir():
         raise G2SError(f"{outdir}: holds files that are not a g2s batch's; choose a new or empty folder")
 
@@ -428,14 +431,32 @@ def _summary(rows: Iterable[dict[str, Any]]) -> pd.DataFrame:
     extra = sorted(c for c in frame.columns if c not in COLUMNS)
     frame = frame.reindex(columns=[*COLUMNS, *extra])
     for column in frame.columns:
-        if column.startswith(("nodes_", "edges_")) or column in ("terminals", "openings", "roots", "warnings") \
-                or column.endswith(("_top_node", "_count")):
-            frame[column] = frame[column].astype("Int64")
-        elif column.startswith(("seconds_", METRIC_PREFIX)) or column == "structure_length" \
-                or column.endswith(("_max", "_mean", "_top_score", "_top_width", "_largest_area")):
-            frame[column] = frame[column].astype("float64")
-    frame["reused"] = frame["reused"].astype(bool)
+        kind = _column_type(column)
+        if kind is not None:
+            frame[column] = frame[column].astype(kind)
     return frame
+
+
+_INTEGER_COLUMNS = frozenset(c for c in COLUMNS if c.startswith(("nodes_", "edges_"))) | {
+    "terminals", "openings", "roots", "warnings"}
+
+
+def _column_type(column: str) -> str | None:
+    """The summary column's pandas type (``None``: the text columns, kept as they are).
+
+    The fixed columns are typed by name, the others by their form: an analyzer
+    key is the user's (``key: edges`` gives ``edges_max``, a float, not one of
+    the ``edges_*`` counts), and an evaluator's measure names are its own.
+    """
+    if column in COLUMNS:
+        if column == "reused":
+            return "bool"
+        if column in _INTEGER_COLUMNS:
+            return "Int64"
+        return "float64" if column.startswith("seconds_") or column == "structure_length" else None
+    if column.startswith(METRIC_PREFIX):
+        return "float64"
+    return "Int64" if column.endswith(("_top_node", "_count")) else "float64"
 
 
 def write_summary(summary: pd.DataFrame, outdir: Path) -> list[Path]:

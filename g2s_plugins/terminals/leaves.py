@@ -21,5 +21,14 @@ class Params(PluginParams):
 
 @hookimpl
 def g2s_select_terminals(graph: nx.Graph, params: Params, context: RunContext) -> Terminals:
-    """The nodes of degree 1 (networkx degree: a self-loop counts 2), by ascending id."""
-    return Terminals(nodes=tuple(sorted(node for node, degree in graph.degree() if degree == 1)))
+    """The nodes of degree 1 (networkx degree: a self-loop counts 2), by ascending id.
+
+    One leaf makes a structure of one node, whatever the level's size (a street grid has almost no dead end):
+    the run says so (none at all stops the run, with the pipeline's own warning).
+    """
+    leaves = tuple(sorted(node for node, degree in graph.degree() if degree == 1))
+    if len(leaves) == 1:
+        context.warn(f"leaves: the graph's {graph.number_of_nodes()} nodes have one dead end, so the structure is "
+                     "that node; a level of loops has almost none, and the coverage terminal selector (the "
+                     "map_analysis preset) reaches every area")
+    return Terminals(nodes=leaves)
