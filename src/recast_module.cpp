@@ -119,9 +119,20 @@ constexpr int AUTO_TILE_SIZE = 256;
 constexpr int MIN_TILE_SIZE = 16;
 
 // Recast's region partitions (step 4 of build_tile). automatic: watershed, redone
-// with AUTO_FALLBACK in a tile where a watershed region overlaps itself in plan.
+// with AUTO_FALLBACK in a tile where a watershed region overlaps itself in plan or
+// where one region's contours total more than AUTO_MAX_REGION_CONTOUR_VERTS vertices.
 enum class Partition { automatic, watershed, monotone, layers };
 constexpr Partition AUTO_FALLBACK = Partition::monotone;
+
+// rcBuildPolyMesh triangulates each region's contour, its holes joined to its outline,
+// in time about cubic in the contour's vertices. Watershed makes one region of a maze's
+// winding corridors or of a floor round a pillar field: 303-1483 vertices on mazes of
+// 16-32 cells (0.16-14 s in rcBuildPolyMesh), 630-761 in the 256-cell tiles of 48-cell
+// mazes, 1754 in a tile and 3394 solo on a 112 m pillar floor (22 s, 202 s). Every level
+// of the structure-hash set (nav_test, the pieces, the samples, dungeons of up to 12,000
+// rooms) with every preset's agent has at most 54 (docs/navmesh.md, "Slow case", measured
+// 3 December 2026). 128 sits 2.4 times above the one and 2.4 times below the other.
+constexpr int AUTO_MAX_REGION_CONTOUR_VERTS = 128;
 
 Partition parse_partition(const std::string& name) {
     if (name == "auto") return Partition::automatic;
@@ -204,7 +215,7 @@ struct TileMesh {
     int data_size = 0;
     std::string empty_reason;             // why the tile has no polygons (npolys == 0)
     std::vector<float> overlaps;          // (K,3) world: a span of each region that overlaps itself in plan
-    bool repartitioned = false;           // automatic partition: watershed overlapped, regions redone
+    bool repartitioned = false;           // automatic partition: watershed regions overlapped or too long, redone
     std::vector<int32_t> detail_redone;   // local polygons whose detail read another storey, rebuilt
     std::vector<int32_t> detail_resampled; // local polygons whose detail left the floor, rebuilt with finer samples
 };
@@ -234,6 +245,16 @@ std::vector<float> self_overlapping_regions(const rcCompactHeightfield& chf) {
         }
     }
     return found;
+}
+
+// The most contour vertices of one region of `cset`: its outline and its holes, which
+// rcBuildPolyMesh triangulates as one polygon.
+int largest_region_contour(const rcContourSet& cset) {
+    std::unordered_map<unsigned short, int> per_region;
+    int largest = 0;
+    for (int i = 0; i < cset.nconts; ++i)
+        largest = std::max(largest, per_region[cset.conts[i].reg] += cset.conts[i].nverts);
+    return largest;
 }
 
 // ---------------------------------------------------------------- detail heights off the storey
@@ -800,11 +821,24 @@ void build_tile(const Input& in, const int* tris, int ntris, const rcConfig& c, 
         out.repartitioned = true;
     }
 
-    // 5. Contours, polygons, detail.
-    std::unique_ptr<rcContourSet, ContourDel> cset(rcAllocContourSet());
-    if (!cset) fail("rcAllocContourSet failed (out of memory)", nullptr, where);
-    if (!rcBuildContours(&ctx, *chf, c.maxSimplificationError, c.maxEdgeLen, *cset))
-        fail("rcBuildContours failed", &ctx, where);
+    // 5. Contours, polygons, detail. Contours only read the compact heightfield, so
+    // the automatic fallback after them is again exactly the fallback partition's build.
+    std::unique_ptr<rcContourSet, ContourDel> cset;
+    auto build_contours = [&] {
+        cset.reset(rcAllocContourSet());
+        if (!cset) fail("rcAllocContourSet failed (out of memory)", nullptr, where);
+        if (!rcBuildContours(&ctx, *chf, c.maxSimplificationError, c.maxEdgeLen, *cset))
+            fail("rcBuildContours failed", &ctx, where);
+    };
+    build_contours();
+    if (s.partition == Partition::automatic && !out.repartitioned &&
+        largest_region_contour(*cset) > AUTO_MAX_REGION_CONTOUR_VERTS) {
+        ctx.errors.clear();  // what Recast logged belongs to the watershed contours, dropped here
+        build_regions(AUTO_FALLBACK);
+        out.overlaps = self_overlapping_regions(*chf);
+        out.repartitioned = true;
+        build_contours();
+    }
     if (cset->nconts == 0) {
         out.empty_reason = "no contours; regions too small?";
         return;

@@ -14,6 +14,7 @@ import trimesh
 
 from g2s_plugins.recast import FLT_MAX, NavMesh, RecastParams, SettingsError, _recast, build_navmesh, resolve_settings
 from g2s_plugins.samples.buildings import building
+from g2s_plugins.samples.maze import maze
 
 AGENT = types.SimpleNamespace(radius=0.3, height=2.0, max_climb=0.4, max_slope=45.0)
 
@@ -719,6 +720,31 @@ def test_tiled_auto_redoes_only_the_tiles_that_overlap(three_storeys):
     assert np.array_equal(tile_polygons(meshes["auto"], 1), tile_polygons(meshes["watershed"], 1), equal_nan=True)
     assert not np.array_equal(tile_polygons(meshes["monotone"], 1), tile_polygons(meshes["watershed"], 1),
                               equal_nan=True)
+
+
+MAP_AGENT = types.SimpleNamespace(radius=0.5, height=2.0, max_climb=0.4, max_slope=45.0)
+
+
+def test_auto_redoes_a_maze_whose_watershed_region_winds_through_it():
+    # watershed makes one region of most of the maze's corridors, a contour of 1483 vertices that
+    # rcBuildPolyMesh took 14 s over (docs/navmesh.md, "Slow case"); auto takes the tile from monotone
+    level = maze(seed=0, cells=32)
+    auto, monotone = (build(level.mesh, MAP_AGENT, partition=p) for p in ("auto", "monotone"))
+    assert auto.tile_count == 1 and auto.repartitioned_tiles.tolist() == [[0, 0]]
+    assert len(auto.region_overlaps) == 0 and same_arrays(auto, monotone)
+    assert adjacency_components(auto) == 1
+
+
+def test_watershed_keeps_its_long_region_on_a_small_maze():
+    # 303 contour vertices on a 16-cell maze (0.16 s): past the bound, so auto redoes it, but watershed
+    # is watershed whatever the contour
+    level = maze(seed=0, cells=16)
+    meshes = {p: build(level.mesh, MAP_AGENT, partition=p) for p in ("auto", "watershed", "monotone")}
+    assert meshes["auto"].repartitioned_tiles.tolist() == [[0, 0]] and same_arrays(meshes["auto"], meshes["monotone"])
+    assert len(meshes["watershed"].repartitioned_tiles) == 0
+    assert not same_arrays(meshes["watershed"], meshes["monotone"])
+    regions, counts = np.unique(meshes["watershed"].region_ids, return_counts=True)
+    assert counts.max() > meshes["watershed"].polygon_count / 2  # one region holds most of the maze
 
 
 def spiral_tower(turns: int = 3, steps_per_turn: int = 16, storey: float = 3.6, inner: float = 1.0,

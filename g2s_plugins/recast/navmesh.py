@@ -82,8 +82,10 @@ class NavMesh:
                         links. Only the ``watershed`` partition leaves them
                         (``auto`` redoes those tiles); tile by tile.
     ``repartitioned_tiles`` (R,2) int32, tile (x, z) of each tile whose
-                        watershed regions overlapped and that the ``auto``
-                        partition rebuilt with ``monotone`` (row-major order;
+                        watershed regions overlapped, or had one region
+                        whose contours total more than 128 vertices, and
+                        that the ``auto`` partition rebuilt with
+                        ``monotone`` (row-major order;
                         ``(0, 0)`` for a solo navmesh); empty for the other
                         partitions.
     ``detail_redone_polygons`` (N,) int32, ascending: polygons whose

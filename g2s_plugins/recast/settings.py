@@ -113,8 +113,10 @@ class RecastParams(PluginParams):
     partition: Literal["auto", "watershed", "monotone", "layers"] = Field(
         "auto",
         description="Recast's region partition: auto (watershed, and a tile where a watershed region overlaps "
-        "itself in plan is redone with monotone), watershed (rcBuildRegions; can make a region of a stairwell over "
-        "several storeys that overlaps itself in plan), monotone (rcBuildRegionsMonotone: never overlaps, long thin "
+        "itself in plan, or where one region's contours total more than 128 vertices, is redone with monotone), "
+        "watershed (rcBuildRegions; can make a region of a stairwell over several storeys that overlaps itself in "
+        "plan, or one region of a maze's corridors or a pillar field that rcBuildPolyMesh takes seconds to minutes "
+        "over), monotone (rcBuildRegionsMonotone: never overlaps, long thin "
         "polygons) or layers (rcBuildLayerRegions: never overlaps, fewer polygons, slower on large levels); "
         "see docs/navmesh.md",
     )
