@@ -76,7 +76,9 @@ The measures (all along the initial walkable graph, distances in metres):
       way as an empty polygon), takes the heat of the nearest sample that
       reaches the structure (3D, from its ``pos``; scipy ``cKDTree``) within
       :data:`REACH_SPACINGS` sample spacings (the builder's ``spacing``,
-      else twice the agent radius, its default), else it is left out;
+      else twice the agent radius, its default), else it is left out; so is
+      every node of a connected area of the navmesh on which no such sample
+      stands (an island inside a crate: the nearest sample is outside it);
     * for the ceiling each structure node carries the mean percentile of
       the navmesh reference over the samples it stands for (the same
       nearest-node rule as ``rho_ceiling``), each sample counting its
@@ -101,6 +103,7 @@ from dataclasses import dataclass
 
 import networkx as nx
 import numpy as np
+from scipy.sparse import csgraph
 from scipy.spatial import cKDTree
 
 from g2s_core.model import RunResult
@@ -238,7 +241,8 @@ def carry(values: np.ndarray, area: np.ndarray, positions: np.ndarray, surface: 
     A navmesh node takes the area-weighted mean of the values standing on
     it (their common value exactly when they are all equal; the plain mean
     when their areas are all 0), else the value of the nearest valued node
-    within ``surface.reach`` (3D), else NaN. O(n + N log n).
+    within ``surface.reach`` (3D), else NaN; every node of a connected area of
+    the navmesh graph on which no valued node stands is NaN. O(n + N log n).
     """
     n_nodes = traffic.surface_arrays(surface.graph).n
     valued = np.isfinite(values)
@@ -260,6 +264,11 @@ def carry(values: np.ndarray, area: np.ndarray, positions: np.ndarray, surface: 
         distance, nearest = cKDTree(positions[valued]).query(_positions(surface.graph)[empty])
         near = distance <= surface.reach
         carried[empty[near]] = values[valued][nearest[near]]
+    # an area of the navmesh that no valued sample stands on (an island inside a crate, which the sampler leaves
+    # out) is left out: its nearest sample lies across a wall, where the reference walks
+    _, component = csgraph.connected_components(traffic.surface_arrays(surface.graph).adjacency, directed=False)
+    held = np.bincount(component[owner], minlength=len(component)) > 0
+    carried[~held[component]] = np.nan
     return carried
 
 

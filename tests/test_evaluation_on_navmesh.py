@@ -68,6 +68,19 @@ def test_a_navmesh_node_takes_the_area_weighted_mean_of_its_samples_else_the_nea
     assert zero[[0, 1, 3]].tolist() == [1.5, 6.0, 8.0]
 
 
+def test_a_navmesh_island_no_sample_stands_on_is_left_out():
+    # polygon 0 with a sample on it; polygon 1, 1 m away, an island (inside a crate, say) with none: the sample
+    # is within reach, but across the crate's wall
+    graph = nx.Graph()
+    graph.add_node(0, pos=(0.0, 0.0, 0.0), area=4.0)
+    graph.add_node(1, pos=(1.0, 0.0, 0.0), area=1.0)
+    surface = evaluation.NavmeshSurface(graph, np.zeros(2), owner=np.array([0]), reach=2.0)
+    carried = evaluation.carry(np.array([5.0]), np.array([1.0]), np.array([[0.2, 0.0, 0.0]]), surface)
+    assert carried[0] == 5.0 and np.isnan(carried[1])
+    graph.add_edge(0, 1, weight=1.0)  # joined: the polygon takes the sample's value
+    assert evaluation.carry(np.array([5.0]), np.array([1.0]), np.array([[0.2, 0.0, 0.0]]), surface).tolist() == [5.0, 5.0]
+
+
 def inside(point: np.ndarray, outline: np.ndarray) -> bool:
     """Whether ``point`` lies in the convex ``outline`` (k,3) in plan (x, z), 1 mm of slack."""
     a, b = outline[:, [0, 2]], np.roll(outline[:, [0, 2]], -1, axis=0)
