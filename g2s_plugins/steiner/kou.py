@@ -56,7 +56,7 @@ SLOW_COST = 2e9
 10-50 ns per unit measured on sampled levels (docs/steiner.md, "When kou is slow") 20 s to 2 minutes, and minutes
 beyond. Every kou run of the presets on the sample levels and shared pieces stays under 8e8 (the most:
 map_piece_sampling on a 400-room dungeon, 7.6e8, 25 s); a map-piece preset on a whole level with a 0.1 m agent
-reached 6e10 (688 s)."""
+reached 2.2e10 in its largest area (688 s)."""
 
 NS_PER_UNIT = (10.0, 50.0)
 """Nanoseconds per unit of :data:`SLOW_COST`'s measure, fastest and slowest measured (docs/steiner.md)."""
