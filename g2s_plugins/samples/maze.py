@@ -15,6 +15,8 @@ from typing import Annotated, Any
 
 import numpy as np
 from pydantic import Field, NonNegativeInt, PositiveFloat, validate_call
+from scipy import sparse
+from scipy.sparse import csgraph
 
 from g2s_plugins.samples.levels import SLAB_THICKNESS, WALL_HEIGHT, WALL_THICKNESS, Probability, SampleLevel, _LevelBuilder
 
@@ -129,30 +131,18 @@ def _wall_islands(east: np.ndarray, south: np.ndarray) -> int:
     boundary corner, so those count as one group, which is no hole.
     """
     cells = east.shape[1]
-    parent = list(range((cells + 1) ** 2))
-
-    def find(p: int) -> int:
-        while parent[p] != p:
-            parent[p] = parent[parent[p]]
-            p = parent[p]
-        return p
-
-    def corner(x: int, z: int) -> int:
-        return x * (cells + 1) + z
-
-    def join(p: int, q: int) -> None:
-        parent[find(p)] = find(q)
-
-    for x in range(cells + 1):  # the outer wall
-        for z in (0, cells):
-            join(corner(x, z), corner(0, 0))
-            join(corner(z, x), corner(0, 0))
-    for i, j in np.argwhere(east):
-        join(corner(i + 1, j), corner(i + 1, j + 1))
-    for i, j in np.argwhere(south):
-        join(corner(i, j + 1), corner(i + 1, j + 1))
-    walled = {find(corner(i + 1, j)) for i, j in np.argwhere(east)} | {find(corner(i, j + 1)) for i, j in np.argwhere(south)}
-    return len(walled - {find(corner(0, 0))})
+    ei, ej = np.nonzero(east)
+    si, sj = np.nonzero(south)
+    ring = np.arange(cells)  # the outer wall, corner to next corner on all four sides
+    x = np.r_[ei + 1, si, ring, ring, np.zeros(cells, int), np.full(cells, cells)]
+    z = np.r_[ej, sj + 1, np.zeros(cells, int), np.full(cells, cells), ring, ring]
+    x2 = np.r_[ei + 1, si + 1, ring + 1, ring + 1, np.zeros(cells, int), np.full(cells, cells)]
+    z2 = np.r_[ej + 1, sj + 1, np.zeros(cells, int), np.full(cells, cells), ring + 1, ring + 1]
+    n = (cells + 1) ** 2
+    walls = sparse.coo_array((np.ones(len(x)), (x * (cells + 1) + z, x2 * (cells + 1) + z2)), shape=(n, n))
+    _, group = csgraph.connected_components(walls, directed=False)
+    inner = group[np.r_[(ei + 1) * (cells + 1) + ej, si * (cells + 1) + sj + 1]]
+    return len(set(inner.tolist()) - {int(group[0])})
 
 
 SAMPLES = {"maze": maze}
