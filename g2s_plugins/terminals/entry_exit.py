@@ -282,6 +282,11 @@ class _Ways:
     stepped: np.ndarray  # (M,) bool: the way out starts on a step up (``base`` is on its top)
 
 
+def _walkable(caster: RayCaster, face: np.ndarray, s: _Settings) -> np.ndarray:
+    """(n,) bool: the hit faces (-1: none) lie within the agent's slope, either side up."""
+    return np.abs(caster.face_normals[np.maximum(face, 0)] @ UP) >= s.walkable_cos
+
+
 def _snap(
     samples: LoopSamples, polygon_normals: np.ndarray, caster: RayCaster, s: _Settings
 ) -> tuple[np.ndarray, np.ndarray]:
@@ -294,14 +299,11 @@ def _snap(
     base = samples.position.copy()
     normal = n_nav.copy()
 
-    def walkable(face: np.ndarray) -> np.ndarray:
-        return np.abs(caster.face_normals[np.maximum(face, 0)] @ UP) >= s.walkable_cos
-
     # Down: from ``snap`` above the sample, so a sample a little under the surface is found too;
     # then straight down, then up along the normal.
     down = caster.first_hits(samples.position + n_nav * snap, -n_nav)
     dist, pts, tri = down.distance, down.points, down.face
-    ok = (dist <= 2.0 * snap + _SNAP_SLACK) & walkable(tri)
+    ok = (dist <= 2.0 * snap + _SNAP_SLACK) & _walkable(caster, tri, s)
     vertical = np.broadcast_to(UP, n_nav.shape)
     for start, direction, reach in ((snap, -1.0, 2.0 * snap + _SNAP_SLACK), (0.0, 1.0, snap)):
         miss = np.nonzero(~ok)[0]
@@ -309,7 +311,7 @@ def _snap(
             break
         axis = n_nav[miss] if direction > 0 else vertical[miss]
         hits = caster.first_hits(samples.position[miss] + axis * start, axis * direction)
-        good = (hits.distance <= reach) & walkable(hits.face)
+        good = (hits.distance <= reach) & _walkable(caster, hits.face, s)
         pts[miss[good]], tri[miss[good]] = hits.points[good], hits.face[good]
         ok[miss[good]] = True
     base[ok] = pts[ok]
@@ -323,7 +325,11 @@ def _snap(
 def _surface_ends(
     caster: RayCaster, origins: np.ndarray, directions: np.ndarray, down: np.ndarray, s: _Settings, reach: float
 ) -> np.ndarray:
-    """(n,) distance along each direction where the surface under the lifted origins ends (NaN: not within reach)."""
+    """(n,) distance along each direction where the surface under the lifted origins ends (NaN: not within reach).
+
+    Only faces the agent can walk count as surface: on a floor sloping down out of the piece the probes,
+    cast along its tilted normal, would otherwise meet the slab's own end face below the floor's edge
+    and put the edge beyond it (by ``lift * tan(slope)``: 0.05 m at 15 degrees)."""
     if not (steps := reach / s.delta) <= _MAX_PROBE_RAYS:  # a batch could not hold one sample's probes
         raise PluginError(f"terminals.params.edge_search_radii: looking {reach:.4g} m beyond the boundary in steps of "
                           f"{s.delta:.4g} m makes {steps:.3g} probes a sample, more than {_MAX_PROBE_RAYS:,}; use a smaller one")
@@ -335,14 +341,15 @@ def _surface_ends(
         part = slice(begin, begin + batch)
         probes = (origins[part, None, :] + directions[part, None, :] * offsets[None, :, None]).reshape(-1, 3)
         hits = caster.first_hits(probes, np.repeat(down[part], n_off, axis=0))
-        missing = (hits.distance > s.lift + s.climb).reshape(-1, n_off)
+        missing = ((hits.distance > s.lift + s.climb) | ~_walkable(caster, hits.face, s)).reshape(-1, n_off)
         lo[part] = np.where(missing.any(axis=1), np.argmax(missing, axis=1) * s.delta, np.nan)
     hi = lo + s.delta
     rows = np.nonzero(np.isfinite(lo))[0]
     for _ in range(_REFINE_ROUNDS):  # bisection between the last offset with surface and the first without
         mid = 0.5 * (lo[rows] + hi[rows])
         probe = origins[rows] + directions[rows] * mid[:, None]
-        on = caster.first_hits(probe, down[rows]).distance <= s.lift + s.climb
+        hit = caster.first_hits(probe, down[rows])
+        on = (hit.distance <= s.lift + s.climb) & _walkable(caster, hit.face, s)
         lo[rows] = np.where(on, mid, lo[rows])
         hi[rows] = np.where(on, hi[rows], mid)
     return 0.5 * (lo + hi)
@@ -555,7 +562,10 @@ def _extend(kept: list[_Edge], caster: RayCaster, s: _Settings) -> tuple[np.ndar
     """The ends of each opening, extended along its edge (one batched pass per test): (n,3) and (n,3).
 
     Candidates just inside the edge, beyond both ends: the surface must go on under them, the
-    way along the edge must be clear, and so must the way out of them.
+    way along the edge must be clear, and so must the way out of them. They stand ``lift`` straight
+    above the edge and probe straight down: lifted along a floor's normal that tilts out of the piece
+    (a floor sloping down out of it) they would stand ``lift * sin(slope)`` farther out, outside the
+    jambs' faces from 7 degrees on, and the extension would run along the walls' outer faces.
     """
     n = len(kept)
     out = np.array([e.outward for e in kept])
@@ -568,11 +578,11 @@ def _extend(kept: list[_Edge], caster: RayCaster, s: _Settings) -> tuple[np.ndar
     steps = s.delta * np.arange(1, n_ext + 1)
     ends = np.stack([first, last])  # (2, n, 3)
     sign = np.array([-1.0, 1.0])[:, None, None]
-    starts = ends - (out * inset)[None] + (nrm * s.lift)[None]
+    starts = ends - (out * inset)[None] + UP * s.lift
     direction = sign * along[None]  # (2, n, 3)
     d_along = caster.first_hits(starts.reshape(-1, 3), direction.reshape(-1, 3)).distance.reshape(2, n)
     cand = (starts[:, :, None, :] + direction[:, :, None, :] * steps[None, None, :, None]).reshape(-1, 3)
-    down = np.broadcast_to(-nrm[None, :, None, :], (2, n, n_ext, 3)).reshape(-1, 3)
+    down = np.broadcast_to(-UP, (2 * n * n_ext, 3))
     outwards = np.broadcast_to(out[None, :, None, :], (2, n, n_ext, 3)).reshape(-1, 3)
     reach = s.lift + s.climb
     floor = (caster.first_hits(cand, down).distance <= reach).reshape(2, n, n_ext)

@@ -1,0 +1,68 @@
+"""Entry/exit detection on piece kinds measured after the held-out set (docs/entry_exit.md).
+
+Each test holds one cause found on those kinds and fixed, on a small piece built here: solids are
+convex hulls of their corners (metres, Y up), designed for the map-piece agent.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+import trimesh
+
+from g2s_core.config import PRESETS_DIR, load_config
+from g2s_plugins.recast import RecastParams, build_navmesh
+from g2s_plugins.terminals import entry_exit
+
+CONFIG = load_config(PRESETS_DIR / "map_piece.yaml")
+SLAB, TALL = 0.2, 3.0
+
+
+def _detect(mesh: trimesh.Trimesh) -> entry_exit.Detection:
+    navmesh = build_navmesh(mesh.vertices, mesh.faces, CONFIG.agent, RecastParams(**CONFIG.graph.params))
+    return entry_exit.detect_openings(mesh, navmesh, CONFIG.agent)
+
+
+def _block(x0: float, x1: float, z0: float, z1: float, bottom, top) -> trimesh.Trimesh:
+    """A solid over [x0, x1] x [z0, z1] between ``bottom(x)`` and ``top(x)`` (linear in x)."""
+    corners = [(x, f(x), z) for x in (x0, x1) for z in (z0, z1) for f in (bottom, top)]
+    return trimesh.convex.convex_hull(np.array(corners, dtype=np.float64))
+
+
+def _sloped_corridor(slope_deg: float, length: float = 12.0, width: float = 2.4, wall: float = 0.3,
+                     door: float = 1.6) -> trimesh.Trimesh:
+    """A corridor along +X rising ``slope_deg``, each end closed by a wall with a ``door`` doorway (centred at z = width / 2)."""
+    g = math.tan(math.radians(slope_deg))
+
+    def floor(x: float) -> float:
+        return g * x
+
+    def below(x: float) -> float:
+        return floor(x) - SLAB
+
+    def above(x: float) -> float:
+        return floor(x) + TALL
+
+    x0, x1 = -wall, length + wall
+    parts = [_block(x0, x1, -wall, width + wall, below, floor),
+             _block(x0, x1, -wall, 0.0, below, above), _block(x0, x1, width, width + wall, below, above)]
+    for a, b in ((x0, 0.0), (length, x1)):
+        parts += [_block(a, b, 0.0, width / 2 - door / 2, below, above),
+                  _block(a, b, width / 2 + door / 2, width, below, above)]
+    return trimesh.util.concatenate(parts)
+
+
+@pytest.mark.parametrize("slope", [5.0, 15.0])
+def test_a_door_at_the_foot_of_a_slope_measures_its_width(slope: float) -> None:
+    # The floor sloping down out of the lower door: the edge search met the slab's end face under the
+    # edge (the probes follow the tilted normal) and the extension, lifted along that normal, stood
+    # outside the jambs: the 1.6 m door measured 2.97-3.04 m, the corridor's whole outer width.
+    found = _detect(_sloped_corridor(slope)).openings
+    assert len(found) == 2
+    for o in found:
+        assert o.width == pytest.approx(1.6, abs=0.05)
+        assert abs(o.position[2] - 1.2) <= 0.05
+    low = min(found, key=lambda o: o.position[0])
+    assert low.position[0] == pytest.approx(-0.3, abs=0.02)
