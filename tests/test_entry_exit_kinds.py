@@ -66,3 +66,32 @@ def test_a_door_at_the_foot_of_a_slope_measures_its_width(slope: float) -> None:
         assert abs(o.position[2] - 1.2) <= 0.05
     low = min(found, key=lambda o: o.position[0])
     assert low.position[0] == pytest.approx(-0.3, abs=0.02)
+
+
+def _box(x0: float, x1: float, y0: float, y1: float, z0: float, z1: float) -> trimesh.Trimesh:
+    return _block(x0, x1, z0, z1, lambda x: y0, lambda x: y1)
+
+
+def _room_with_low_window(top: float) -> trimesh.Trimesh:
+    """Room 8 x 6 m, walls 0.3 m thick: a 1.6 m doorway south (x 3.2-4.8), a 1.2 m window west (z 2.4-3.6) from the floor to ``top``."""
+    w, d, t = 8.0, 6.0, 0.3
+    parts = [_box(-t, w + t, -SLAB, 0.0, -t, d + t),
+             _box(w, w + t, -SLAB, TALL, -t, d + t), _box(-t, w + t, -SLAB, TALL, d, d + t),
+             _box(-t, 3.2, -SLAB, TALL, -t, 0.0), _box(4.8, w + t, -SLAB, TALL, -t, 0.0),
+             _box(-t, 0.0, -SLAB, TALL, -t, 2.4), _box(-t, 0.0, -SLAB, TALL, 3.6, d + t), _box(-t, 0.0, top, TALL, 2.4, 3.6)]
+    return trimesh.util.concatenate(parts)
+
+
+@pytest.mark.parametrize("top", [1.0, 1.5])
+def test_a_window_at_floor_level_lower_than_the_agent_is_no_opening(top: float) -> None:
+    # The rays at half the climb passed under its lintel and the floor ends at the wall's outer face:
+    # it was an opening 1.19 m wide. Now the way out must be clear up to the edge at the agent's height
+    # less the rays' height (1.8 m) too.
+    found = _detect(_room_with_low_window(top)).openings
+    assert len(found) == 1
+    assert found[0].position[0] == pytest.approx(4.0, abs=0.05) and found[0].position[2] == pytest.approx(-0.3, abs=0.02)
+
+
+def test_a_doorway_as_high_as_the_agent_is_an_opening() -> None:
+    found = _detect(_room_with_low_window(2.0)).openings
+    assert len(found) == 2

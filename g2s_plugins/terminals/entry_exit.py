@@ -374,6 +374,12 @@ def _fan(
         caster, lifted[todo], dirs[todo], down[todo], s, float(params.edge_search_radii) * s.radius
     )
     ok = np.isfinite(edge)
+    if ok.any():
+        # Head room: the rays at ``lift`` pass under a lintel lower than the agent (a window at floor
+        # level, a vent); the same way ``lift`` below the agent's height must be clear up to the edge.
+        rows = np.nonzero(ok)[0]
+        head = np.repeat(base + normal * (s.height - s.lift), k, axis=0)[rows]
+        ok[rows[caster.first_hits(head, dirs[rows]).distance <= edge[rows]]] = False
     if params.leave_footprint and ok.any():
         rows = np.nonzero(ok)[0]
         beyond = lifted[rows] + dirs[rows] * (edge[rows] + s.radius)[:, None]
