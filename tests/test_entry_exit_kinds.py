@@ -95,3 +95,34 @@ def test_a_window_at_floor_level_lower_than_the_agent_is_no_opening(top: float) 
 def test_a_doorway_as_high_as_the_agent_is_an_opening() -> None:
     found = _detect(_room_with_low_window(2.0)).openings
     assert len(found) == 2
+
+
+def _u_corridor(facets: int = 24, radius: float = 5.0, width: float = 2.4, wall: float = 0.3) -> trimesh.Trimesh:
+    """A half-ring corridor (180 degrees, centred on the origin, z >= 0) of ``facets`` straight pieces, both ends open facing -Z."""
+    angles = np.radians(np.linspace(0.0, 180.0, facets + 1))
+    rings = [(radius - width / 2 - wall, radius - width / 2, -SLAB, TALL), (radius - width / 2, radius + width / 2, -SLAB, 0.0),
+             (radius + width / 2, radius + width / 2 + wall, -SLAB, TALL)]
+    parts = []
+    for a0, a1 in zip(angles[:-1], angles[1:]):
+        for r0, r1, y0, y1 in rings:
+            corners = [(r * math.cos(a), y, r * math.sin(a)) for r in (r0, r1) for a in (a0, a1) for y in (y0, y1)]
+            parts.append(trimesh.convex.convex_hull(np.array(corners)))
+    return trimesh.util.concatenate(parts)
+
+
+def test_a_piece_without_axes_keeps_the_openings_at_its_extent() -> None:
+    # Its 24 facets vote for 12 directions alike: the frame is whichever wins by a hair (11.7 or 49.2 degrees
+    # turned by 22 as the vertices move by 5e-9 m). Snapped to the 49.2-degree axis, an end lying at the extent
+    # along its own heading measured 3.69 m inside and was dropped; the snap now never counts more.
+    mesh = _u_corridor()
+    mesh.apply_transform(trimesh.transformations.rotation_matrix(math.radians(22.0), [0.0, 1.0, 0.0]))
+    vertices = np.asarray(mesh.vertices)
+    heading = np.array([-math.sin(math.radians(22.0)), 0.0, -math.cos(math.radians(22.0))])
+    end = np.array([5.0 * math.cos(math.radians(22.0)), 0.0, -5.0 * math.sin(math.radians(22.0))])
+    tilted = math.radians(49.2)
+    u, w = np.array([math.cos(tilted), 0.0, math.sin(tilted)]), np.array([-math.sin(tilted), 0.0, math.cos(tilted)])
+    assert entry_exit.extent_gap(vertices, end, heading, np.array([u, -u, w, -w])) == pytest.approx(0.0, abs=1e-9)
+    found = _detect(mesh).openings
+    assert len(found) == 2
+    assert max(float(np.linalg.norm(np.subtract(o.position, end))) for o in found) > 9.0  # the other end
+    assert min(float(np.linalg.norm(np.subtract(o.position, end))) for o in found) <= 0.05

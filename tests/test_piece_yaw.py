@@ -83,7 +83,10 @@ def test_a_turned_heading_is_measured_along_the_pieces_own_axis() -> None:
     heading = math.cos(noisy) * w + math.sin(noisy) * u
     assert entry_exit.extent_gap(corners, 2.0 * w, heading, frame) == pytest.approx(0.0, abs=1e-12)
     axes = np.array([[1.0, 0.0, 0.0], [-1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, 0.0, -1.0]])
-    assert entry_exit.extent_gap(corners, 2.0 * w, heading, axes) > 1.0  # on X and Z it would be dropped
+    along_z = float(np.max(corners @ axes[2]) - 2.0 * w @ axes[2])
+    assert along_z > 1.0  # on X and Z it would be dropped ...
+    own = float(np.max(corners @ heading) - 2.0 * w @ heading)
+    assert entry_exit.extent_gap(corners, 2.0 * w, heading, axes) == pytest.approx(own)  # ... a wrong frame never counts more
 
 
 def _quads(*quads: tuple[float, float, float, float, float]) -> SimpleNamespace:

@@ -712,11 +712,18 @@ def extent_gap(vertices: np.ndarray, point: np.ndarray, heading: np.ndarray, fra
     Modular pieces are laid out on two perpendicular horizontal axes, ``frame`` (4, 3) (see
     :func:`piece_frame`): a heading within 20 degrees of one is measured along that axis, so the
     few degrees of noise in a short opening's fitted edge do not add the piece's extent along the
-    other axis.
+    other axis. The snap only ever helps: the gap is the smaller of the two, since a piece whose
+    walls run in many directions (a curved corridor) has no axes to speak of, and its frame is
+    whichever direction wins the vote by a hair (a U-shaped corridor of 24 facets turned by 22
+    degrees: 11.7 or 49.2 degrees as its vertices move by 5e-9 m, and at 49.2 an end at the extent
+    along its own heading measured 3.69 m inside along the axis).
     """
     cos = frame @ heading
-    axis = frame[int(np.argmax(cos))] if cos.max() >= _AXIS_SNAP_COS else heading
-    return float(np.max(vertices @ axis) - point @ axis)
+    along_heading = float(np.max(vertices @ heading) - point @ heading)
+    if cos.max() < _AXIS_SNAP_COS:
+        return along_heading
+    axis = frame[int(np.argmax(cos))]
+    return min(along_heading, float(np.max(vertices @ axis) - point @ axis))
 
 
 def _repeated(openings: list[Opening], radius: float, max_turn_deg: float) -> np.ndarray:
