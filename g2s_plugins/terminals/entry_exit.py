@@ -342,6 +342,9 @@ def _surface_ends(
         probes = (origins[part, None, :] + directions[part, None, :] * offsets[None, :, None]).reshape(-1, 3)
         hits = caster.first_hits(probes, np.repeat(down[part], n_off, axis=0))
         missing = ((hits.distance > s.lift + s.climb) | ~_walkable(caster, hits.face, s)).reshape(-1, n_off)
+        # The surface ends where two probes in a row find none: a crack narrower than a search step
+        # (unwelded floor tiles) is no edge, and neither the agent nor Recast's voxels see it.
+        missing[:, :-1] &= missing[:, 1:]
         lo[part] = np.where(missing.any(axis=1), np.argmax(missing, axis=1) * s.delta, np.nan)
     hi = lo + s.delta
     rows = np.nonzero(np.isfinite(lo))[0]
@@ -592,6 +595,8 @@ def _extend(kept: list[_Edge], caster: RayCaster, s: _Settings) -> tuple[np.ndar
     outwards = np.broadcast_to(out[None, :, None, :], (2, n, n_ext, 3)).reshape(-1, 3)
     reach = s.lift + s.climb
     floor = (caster.first_hits(cand, down).distance <= reach).reshape(2, n, n_ext)
+    # One candidate over a crack, with floor on both sides of it, stands on the floor (see _surface_ends).
+    floor[:, :, :-1] |= np.concatenate([np.ones((2, n, 1), dtype=bool), floor[:, :, :-2]], axis=2) & floor[:, :, 1:]
     beyond = caster.first_hits(cand + outwards * (2.0 * inset), down).distance  # just past the edge line
     edge_goes_on = (beyond > reach).reshape(2, n, n_ext)
     open_out = (caster.first_hits(cand, outwards).distance > s.radius + inset).reshape(2, n, n_ext)
