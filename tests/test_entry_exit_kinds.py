@@ -14,6 +14,7 @@ import trimesh
 
 from g2s_core.config import PRESETS_DIR, load_config
 from g2s_plugins.recast import RecastParams, build_navmesh
+from g2s_plugins.samples import pieces
 from g2s_plugins.terminals import entry_exit
 
 CONFIG = load_config(PRESETS_DIR / "map_piece.yaml")
@@ -157,3 +158,15 @@ def test_cracks_between_unwelded_floor_tiles_are_no_edge(yaw: float) -> None:
         best = min(found, key=lambda o: float(np.linalg.norm(np.subtract(o.position, door))))
         assert float(np.linalg.norm(np.subtract(best.position, door))) <= 0.05
         assert best.width == pytest.approx(1.6, abs=0.05)
+
+
+@pytest.mark.parametrize("yaw", [0.0, 30.0])
+def test_the_sloped_corridor_family_gives_its_two_doors(yaw: float) -> None:
+    level = pieces.sloped_corridor(slope=12.0)
+    level = pieces.turned(level, yaw) if yaw else level
+    found = _detect(level.mesh).openings
+    assert len(found) == 2
+    for known in level.openings:
+        best = min(found, key=lambda o: float(np.linalg.norm(np.subtract(o.position, known.position))))
+        assert float(np.linalg.norm(np.subtract(best.position, known.position))) <= 0.05
+        assert best.width == pytest.approx(known.width, abs=0.05)

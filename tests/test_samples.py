@@ -98,6 +98,7 @@ def test_registry_names_and_load():
         "stair_deck",
         "cross_platform",
         "chamfered_platform",
+        "sloped_corridor",
         "corner_corridor",
         "t_junction",
         "bridge",

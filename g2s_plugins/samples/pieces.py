@@ -19,6 +19,9 @@ wrong on real pieces (see docs/entry_exit.md):
   four arm ends, not the arms' sides;
 * :func:`chamfered_platform`: a wall-less slab with chamfered corners; the
   openings are its four sides, the chamfers are narrower than the agent.
+* :func:`sloped_corridor`: a corridor rising 10 degrees, a doorway in each end
+  wall; at the lower one the floor slopes down out of the piece (found after
+  the held-out families).
 
 The held-out families (:data:`HELD_OUT`) are shapes designers build that the
 rules were not measured on when they were set (docs/entry_exit.md, "Piece
@@ -35,15 +38,17 @@ are designed for :data:`PIECE_AGENT`, the agent of ``configs/map_piece.yaml``.
 
 from __future__ import annotations
 
+import math
 from dataclasses import replace
+from typing import Annotated
 
 import numpy as np
 import trimesh
-from pydantic import NonNegativeFloat, PositiveFloat, PositiveInt, validate_call
+from pydantic import Field, NonNegativeFloat, PositiveFloat, PositiveInt, validate_call
 
 from g2s_core.model import Vec3, vec3
 
-from g2s_plugins.samples.levels import SLAB_THICKNESS, SampleLevel, _LevelBuilder, _opening, _rect
+from g2s_plugins.samples.levels import SLAB_THICKNESS, SampleLevel, _LevelBuilder, _opening, _rect, _sloped_blocks
 
 PIECE_AGENT: dict[str, float] = {"radius": 0.4, "height": 2.0, "max_climb": 0.4, "max_slope_deg": 60.0}
 """The agent the pieces are designed for (metres, degrees): that of ``configs/map_piece.yaml``."""
@@ -336,6 +341,47 @@ def chamfered_platform(
     ]
     params = {"length": length, "width": width, "chamfer": chamfer}
     return b.build("chamfered_platform", openings, _meta(params, (0.0,)))
+
+
+@validate_call
+def sloped_corridor(
+    length: PositiveFloat = 12.0, width: PositiveFloat = 2.4, wall: PositiveFloat = 0.3, door: PositiveFloat = 1.6,
+    slope: Annotated[float, Field(gt=0, lt=45)] = 10.0,
+) -> SampleLevel:
+    """A corridor rising ``slope`` degrees along +X, each end closed by a wall with a doorway.
+
+    The floor (a wedge) and the walls (``TALL`` above the floor everywhere)
+    rise with the corridor; the lower doorway opens onto nothing, the floor
+    sloping down out of the piece. Found after the held-out families: the
+    floor's tilted normal put the lower door's edge and extension outside its
+    jambs (docs/entry_exit.md, "Piece kinds measured after the held-out
+    set"). Openings: both doorways' outer faces, at the floor's height there.
+
+    Args:
+        length: clear length between the end walls along X, metres.
+        width: clear width between the side walls along Z, metres.
+        wall: thickness of all walls, metres.
+        door: width of both doorways, metres.
+        slope: the floor's rise, degrees.
+    """
+    if door >= width:
+        raise ValueError(f"door ({door:g} m) must be narrower than the corridor ({width:g} m)")
+    rise = math.tan(math.radians(slope))
+    x0, x1 = -wall, length + wall
+    y0, y1 = x0 * rise, x1 * rise
+    bottom = y0 - SLAB_THICKNESS
+    b = _LevelBuilder()
+    b.hexahedra(_sloped_blocks(x0, x1, -wall, width + wall, bottom, y0, y1))
+    b.floor_area += width * length / math.cos(math.radians(slope))
+    sides = [(x0, x1, -wall, 0.0), (x0, x1, width, width + wall)]
+    lo, hi = width / 2 - door / 2, width / 2 + door / 2
+    for a, e in ((x0, 0.0), (length, x1)):
+        sides += [(a, e, 0.0, lo), (a, e, hi, width)]
+    for a, e, z0, z1 in sides:
+        b.hexahedra(_sloped_blocks(a, e, z0, z1, bottom, a * rise + TALL, e * rise + TALL))
+    openings = [_opening((x0, y0, width / 2), _W, door), _opening((x1, y1, width / 2), _E, door)]
+    params = {"length": length, "width": width, "wall": wall, "door": door, "slope": slope}
+    return b.build("sloped_corridor", openings, _meta(params, (y0, y1)))
 
 
 # --------------------------------------------------------------------------
@@ -688,6 +734,7 @@ PIECES = {
     "stair_deck": stair_deck,
     "cross_platform": cross_platform,
     "chamfered_platform": chamfered_platform,
+    "sloped_corridor": sloped_corridor,
     **HELD_OUT,
 }
 """Piece name -> factory (keyword arguments only), the held-out families included; registered in ``levels.SAMPLES``."""
