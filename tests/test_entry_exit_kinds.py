@@ -73,13 +73,16 @@ def _box(x0: float, x1: float, y0: float, y1: float, z0: float, z1: float) -> tr
     return _block(x0, x1, z0, z1, lambda x: y0, lambda x: y1)
 
 
-def _room_with_low_window(top: float) -> trimesh.Trimesh:
-    """Room 8 x 6 m, walls 0.3 m thick: a 1.6 m doorway south (x 3.2-4.8), a 1.2 m window west (z 2.4-3.6) from the floor to ``top``."""
+def _room_with_low_window(top: float, bar_step: float | None = None) -> trimesh.Trimesh:
+    """Room 8 x 6 m, walls 0.3 m thick: a 1.6 m doorway south (x 3.2-4.8), a 1.2 m window west (z 2.4-3.6) from the floor to
+    ``top``; with ``bar_step``, bars 0.05 m square that far apart in the wall's middle, from the floor to ``top``."""
     w, d, t = 8.0, 6.0, 0.3
     parts = [_box(-t, w + t, -SLAB, 0.0, -t, d + t),
              _box(w, w + t, -SLAB, TALL, -t, d + t), _box(-t, w + t, -SLAB, TALL, d, d + t),
              _box(-t, 3.2, -SLAB, TALL, -t, 0.0), _box(4.8, w + t, -SLAB, TALL, -t, 0.0),
              _box(-t, 0.0, -SLAB, TALL, -t, 2.4), _box(-t, 0.0, -SLAB, TALL, 3.6, d + t), _box(-t, 0.0, top, TALL, 2.4, 3.6)]
+    for z in np.arange(2.4 + bar_step / 2, 3.6, bar_step) if bar_step else ():
+        parts.append(_box(-0.175, -0.125, 0.0, top, z - 0.025, z + 0.025))
     return trimesh.util.concatenate(parts)
 
 
@@ -170,3 +173,13 @@ def test_the_sloped_corridor_family_gives_its_two_doors(yaw: float) -> None:
         best = min(found, key=lambda o: float(np.linalg.norm(np.subtract(o.position, known.position))))
         assert float(np.linalg.norm(np.subtract(best.position, known.position))) <= 0.05
         assert best.width == pytest.approx(known.width, abs=0.05)
+
+
+@pytest.mark.parametrize("bar_step", [0.15, 0.25])
+def test_bars_across_a_doorway_close_it(bar_step: float) -> None:
+    # A window 2.9 m high (head room enough) behind bars in the wall's middle: one ray out passes between two
+    # bars, and the extension tests only the last 0.025 m inside the outer face: an opening 1.18-1.20 m wide.
+    # Now the clear width across the opening, from its edge in to the navmesh, must exceed the agent's too.
+    found = _detect(_room_with_low_window(2.9, bar_step)).openings
+    assert len(found) == 1 and found[0].position[2] == pytest.approx(-0.3, abs=0.02)
+    assert len(_detect(_room_with_low_window(2.9)).openings) == 2  # without bars it is a doorway

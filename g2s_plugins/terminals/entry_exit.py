@@ -605,6 +605,29 @@ def _extend(kept: list[_Edge], caster: RayCaster, s: _Settings) -> tuple[np.ndar
     return first - along * ext[0][:, None], last + along * ext[1][:, None]
 
 
+def _passages(
+    kept: list[_Edge], first: np.ndarray, last: np.ndarray, ways: _Ways, caster: RayCaster, s: _Settings
+) -> np.ndarray:
+    """(n,) the narrowest clear width across each opening between its edge and the navmesh, m.
+
+    At every search step in from the edge, as deep as its samples stand from it (the wall's thickness
+    and the erosion), a ray each way along the edge from the opening's middle, the rays' height up:
+    bars or a grille in the wall leave gaps narrower than the agent however wide the hole.
+    """
+    out = np.array([e.outward for e in kept])
+    nrm = np.array([e.normal for e in kept])
+    along = _unit(np.cross(nrm, out))
+    mid = 0.5 * (first + last) + UP * s.lift
+    deep = np.array([np.median(np.linalg.norm(ways.edge[e.samples] - ways.base[e.samples], axis=1)) for e in kept])
+    widths = np.full(len(kept), np.inf)
+    for k in range(1, int(math.ceil(float(deep.max(initial=0.0)) / s.delta)) + 1):
+        rows = np.nonzero(k * s.delta <= deep)[0]
+        points = mid[rows] - out[rows] * (k * s.delta)
+        span = (caster.first_hits(points, along[rows]).distance + caster.first_hits(points, -along[rows]).distance)
+        widths[rows] = np.minimum(widths[rows], span)
+    return widths
+
+
 def _between_jambs(
     kept: list[_Edge], first: np.ndarray, last: np.ndarray, caster: RayCaster, s: _Settings
 ) -> np.ndarray:
@@ -833,10 +856,11 @@ def detect_openings(
         return Opening(vec3(mid), vec3(heading), width, vec3(p0), vec3(p1), score, reason)
 
     jambs = _between_jambs(kept, p_first, p_last, caster, s)
+    passages = _passages(kept, p_first, p_last, ways, caster, s)
     found: list[tuple[Opening, tuple[int, ...], tuple[float, float, float]]] = []
     edges: list[_Edge] = []
-    for e, a, b, framed in zip(kept, p_first, p_last, jambs):
-        if float(np.linalg.norm(b - a)) < min_width + _SAME_WIDTH:
+    for e, a, b, framed, passage in zip(kept, p_first, p_last, jambs, passages):
+        if min(float(np.linalg.norm(b - a)), passage) < min_width + _SAME_WIDTH:
             continue
         if ways.stepped[e.samples].mean() > 0.5 and not framed:
             continue  # a step along the piece's edge with no jambs: a curb, not a threshold
