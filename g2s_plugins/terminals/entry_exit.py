@@ -18,9 +18,12 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
    either side of straight out. Along each, rays cast down find where the
    surface ends (the floor's edge, looked for up to ``edge_search_radii * r``
    away: Recast erodes the walkable area by ``r``, so the navmesh boundary
-   lies about ``r`` inside the real edge). A direction is a way out when the
-   edge is found, the ray along it stays clear for ``outward_radii * r``
-   (no wall, jamb or curb higher than ``h`` in the way) and, with
+   lies about ``r`` inside the real edge; it ends where two rays in a row meet
+   no walkable face, so a crack between floor tiles is no edge). A direction
+   is a way out when the edge is found, the ray along it stays clear for
+   ``outward_radii * r`` (no wall, jamb or curb higher than ``h`` in the
+   way), the same way ``h`` below the agent's height is clear up to the edge
+   (head room: no lintel lower than the agent) and, with
    ``leave_footprint``, one agent radius beyond the edge nothing of the piece
    lies straight below or above (a ledge over a lower floor of the piece, a
    roof over its floor or a hole under its ramp is no exit). A sample with a
@@ -50,7 +53,9 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
 
    * width: openings no wider than ``min_width_radii * r`` (default the
      agent's diameter) are dropped (chamfers, slivers, a door exactly as
-     wide as the agent, which Recast erodes away);
+     wide as the agent, which Recast erodes away), and so are openings whose
+     clear width across, between their edge and the navmesh, is no wider
+     (bars across a doorway);
    * jambs (``step_up``): an opening found from step tops needs something
      at half the agent's height within two search steps of both its ends
      (a threshold's jambs); a curb along the piece's edge has none;
