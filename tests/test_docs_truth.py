@@ -166,3 +166,20 @@ def test_settings_commented_out_in_configs_are_valid(config: Path):
         except Exception as exc:
             problems.append(f"line {number}: {exc}")
     assert not problems, f"{config.name}: {problems}"
+
+
+@pytest.mark.parametrize("doc", [doc for doc in DOCS if "```yaml" in doc.read_text(encoding="utf-8")],
+                         ids=lambda path: path.name)
+def test_documented_config_snippets_are_valid(doc: Path):
+    """Each YAML block is a config, or a part of one: a part (no `extends:`) is read over `map_analysis`."""
+    from g2s_core.config import resolve_config
+    from g2s_core.pipeline import plan
+    from g2s_core.registry import installed
+
+    problems = []
+    for block in re.findall(r"^```yaml\n(.*?)^```", doc.read_text(encoding="utf-8"), flags=re.MULTILINE | re.DOTALL):
+        try:
+            plan(resolve_config({"extends": "map_analysis", **yaml.safe_load(block)})[0], installed())
+        except Exception as exc:
+            problems.append(f"{block.splitlines()[0]} ...: {exc}")
+    assert not problems, f"{doc.name}: {problems}"
