@@ -1,7 +1,9 @@
-"""The commands README.md and docs/*.md show, and the settings configs/*.yaml show commented out, are ones g2s
-takes: every `g2s ...` line of a code block and every inline `g2s ...` names an existing command, options that
-command has, presets that exist, installed formats, stages, executors and evaluators, and `--set` keys and
-values its config accepts. (Links and the files the docs name: tests/test_doc_links.py.)"""
+"""The commands and configs README.md and docs/*.md show, and the settings configs/*.yaml show commented out, are
+ones g2s takes: every `g2s ...` line of a code block and every inline `g2s ...` names an existing command, options
+that command has, presets that exist, installed formats, stages, executors and evaluators, and `--set` keys and
+values its config accepts; every YAML block is a valid config. (Links and the files the docs name:
+tests/test_doc_links.py; the Python examples: tests/test_python_docs.py, tests/test_architecture.py,
+tests/test_batch.py.)"""
 
 from __future__ import annotations
 
@@ -75,8 +77,8 @@ def command_problems(command: str) -> list[str]:
     parser, commands = subcommands()
     words = [word.strip("[]") for word in shlex.split(command)[1:]]
     while words and words[0].startswith("-"):  # g2s's own options, before the command
-        if words.pop(0) not in parser._option_string_actions:
-            return [f"g2s has no option {words[0]}"]
+        if (option := words.pop(0)) not in parser._option_string_actions:
+            return [f"g2s has no option {option}"]
     if not words or PLACEHOLDER.search(words[0]):
         return []
     if words[0] not in commands:
@@ -128,6 +130,7 @@ def test_the_check_finds_what_g2s_refuses():
     assert command_problems("g2s run map_piece p.glb -o out --set terminals.params.sample_stepp=0.2") != []
     assert command_problems("g2s batch map_analysis levels/ -o runs --executor dusk --evaluate traffic") != []
     assert command_problems("g2s demo --format json,gbl") != []
+    assert command_problems("g2s --verbos run map_analysis level.obj -o out") == ["g2s has no option --verbos"]
     assert command_problems("g2s COMMAND --help") == command_problems("g2s batch CONFIG -o OUTDIR [--workers N]") == []
 
 
