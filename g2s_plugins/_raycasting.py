@@ -10,7 +10,9 @@ when ``embreex`` imports, else through trimesh's pure-Python intersector
 and makes one intersector call per batch, never one per ray.
 
 Conventions: metres, Y up, directions need not be unit length (they are
-normalised). A ray "hits" the first triangle along it, front or back face.
+normalised). A ray "hits" the first triangle along it, front or back face;
+of a down-facing triangle and an up-facing one on the same three corners
+(a two-sided floor) it hits the up-facing one, whichever is listed first.
 Distances are measured along the normalised direction; "no hit" is ``inf``.
 
 Frame: Embree computes in single precision, so the caster works in the
