@@ -379,6 +379,18 @@ def disk_inside(points: np.ndarray, triangles: np.ndarray, radius: float) -> np.
     return (room >= radius).all(axis=1)
 
 
+def _row_ranks(rows: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``np.unique(rows, axis=0, return_inverse=True, return_counts=True)[1:]`` by one lexsort: (n,) each row's rank
+    among the distinct rows in lexicographic order, and (k,) how many rows each distinct one has. numpy's row unique
+    sorts rows as records, 5 times slower on millions of triangle corners (7.5 s against 1.5 s for 2.5 M)."""
+    order = np.lexsort(rows.T[::-1])
+    ordered = rows[order]
+    starts = np.r_[True, (ordered[1:] != ordered[:-1]).any(axis=1)] if len(rows) else np.zeros(0, dtype=bool)
+    ranks = np.empty(len(rows), dtype=np.int64)
+    ranks[order] = np.cumsum(starts) - 1
+    return ranks, np.diff(np.r_[np.flatnonzero(starts), len(rows)])
+
+
 class FloorTriangles:
     """Walkable triangles (m, 3, 3) seen from above, and which one lies across each edge (``across``: computed
     from shared corners; off: none)."""
@@ -405,10 +417,10 @@ class FloorTriangles:
         self.neighbour_edge = np.zeros((len(corners), 3), dtype=np.int64)
         """(m, 3): which edge of that triangle it is."""
         if across and len(corners):
-            _, vertex = np.unique(corners.reshape(-1, 3), axis=0, return_inverse=True)
+            vertex = _row_ranks(corners.reshape(-1, 3))[0]
             vertex = vertex.reshape(-1, 3)
             ends = np.sort(np.stack([vertex, np.roll(vertex, -1, axis=1)], axis=2), axis=2).reshape(-1, 2)
-            _, key, count = np.unique(ends, axis=0, return_inverse=True, return_counts=True)
+            key, count = _row_ranks(ends)
             key = key.reshape(-1)
             order = np.argsort(key, kind="stable")
             pair = count[key[order]] == 2
