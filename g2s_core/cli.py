@@ -85,13 +85,14 @@ def _parser() -> tuple[argparse.ArgumentParser, dict[str, Callable[[argparse.Nam
     run.add_argument("-o", "--outdir", type=output_folder, required=True, help="folder for the results")
     _add_output_options(run)
 
-    commands.add_parser("presets", parents=[common], help="list the preset configs and what each is for")
-
-    plugins = commands.add_parser("plugins", parents=[common],
-                                  help="list installed plugins and their parameters, and broken ones")
+    commands.add_parser("presets", parents=[common], help="list the preset configs and what each is for",
+                        description="List the preset configs and what each is for.", epilog=EXIT_CODES)
+    plugins = commands.add_parser("plugins", parents=[common], help="list installed plugins and their parameters, and "
+                                  "broken ones", description="List installed plugins and their parameters, and broken ones.", epilog=EXIT_CODES)
     plugins.add_argument("--stage", choices=[stage.key for stage in STAGES], help="only this stage")
 
-    demo = commands.add_parser("demo", parents=[common], help="run the full pipeline on the built-in dungeon sample", epilog=EXIT_CODES)
+    demo = commands.add_parser("demo", parents=[common], help="run the full pipeline on the built-in dungeon sample",
+                               description="Run the full pipeline on the built-in dungeon sample.", epilog=EXIT_CODES)
     demo.add_argument("-o", "--outdir", type=output_folder, default=Path("g2s-demo"), help="folder for the results (default: g2s-demo)")
     demo.add_argument("--rooms", type=int, default=12, help="rooms in the generated dungeon (default: 12)")
     demo.add_argument("--seed", type=int, default=0, help="seed of the generated dungeon (default: 0)")

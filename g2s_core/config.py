@@ -401,8 +401,6 @@ def set_key(data: dict[str, Any], key: str, value: Any, source: str) -> dict[str
             if not isinstance(part, int) or part >= len(container):
                 raise ConfigError(f"{source}: {'.'.join(map(str, path[:depth]))} has no item {part!r} "
                                   f"(it lists {len(container)})")
-        elif not isinstance(container, dict):
-            raise ConfigError(f"{source}: {'.'.join(map(str, path[:depth]))} is not a mapping")
         else:
             part = str(part)
         current = container[part] if isinstance(container, list) or part in container else None

@@ -76,7 +76,7 @@ def describe_field(info: FieldInfo) -> str:
     """What a field accepts, in words: ``an integer >= 1``."""
     limits = [f"{op} {getattr(bound, attribute)}" for bound in info.metadata for cls, attribute, op in _BOUNDS
               if isinstance(bound, cls)]
-    limits += [f"with at least {bound.min_length} items" for bound in info.metadata if isinstance(bound, annotated_types.MinLen)]
+    limits += [f"with at least {b.min_length} item{'s' * (b.min_length > 1)}" for b in info.metadata if isinstance(b, annotated_types.MinLen)]
     return " ".join([_describe_type(info.annotation), " and ".join(limits)]).strip()
 
 

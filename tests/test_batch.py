@@ -236,6 +236,14 @@ def test_cli_batch_on_a_running_dask_scheduler(tmp_path, capsys):
     assert pd.read_csv(tmp_path / "out" / "summary.csv")["status"].tolist() == ["ok"]
 
 
+def test_cli_batch_names_a_scheduler_address_that_is_no_dask_scheduler(tmp_path, capsys):
+    assert_user_error(g2s(capsys, "batch", CONFIG, SAMPLES[0], "-o", str(tmp_path / "out"), "--executor", "dask",
+                          "--scheduler", "bogus://x"),
+                      "--scheduler: expected the address of a running Dask scheduler (tcp://host:8786), got 'bogus://x': "
+                      "unknown address scheme 'bogus'")
+    assert not (tmp_path / "out").exists()
+
+
 def test_cli_batch_without_the_extra_says_how_to_install_it(monkeypatch, tmp_path, capsys):
     monkeypatch.setitem(sys.modules, "pandas", None)
     assert_user_error(g2s(capsys, "batch", CONFIG, SAMPLES[0], "-o", str(tmp_path / "out")),

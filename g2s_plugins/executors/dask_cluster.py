@@ -16,6 +16,7 @@ from typing import Any
 
 from pydantic import Field
 
+from g2s_core.errors import G2SError
 from g2s_core.plugin import PluginParams, hookimpl
 
 NAME = "dask"
@@ -48,7 +49,11 @@ def g2s_execute(
 
     if params.scheduler:
         cluster = None
-        client = Client(params.scheduler)
+        try:
+            client = Client(params.scheduler)
+        except (OSError, ValueError) as exc:  # the user's address, not this plugin, is at fault
+            raise G2SError(f"--scheduler: expected the address of a running Dask scheduler (tcp://host:8786), got "
+                           f"{params.scheduler!r}: {' '.join(str(exc).split())}") from exc
     else:
         with _children_ignore_interrupt():
             # a pair's failure reaches g2s through its future; Dask's own ERROR lines (a worker's heartbeat to a

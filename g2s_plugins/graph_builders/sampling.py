@@ -38,7 +38,14 @@ wanted. No Recast is involved: ``context.navmesh`` stays ``None``.
    the agent height hits nothing; the ground under evenly spaced points is
    walkable, has head room and changes height by at most a step or the max
    slope); a pair on one open floor triangle passes without a ray
-   (:class:`g2s_plugins._raycasting.OpenFloors`). Weight = length +
+   (:class:`g2s_plugins._raycasting.OpenFloors`). Then the *gaps*
+   (:func:`_gap_pairs`): in a passage only slightly wider than twice the
+   clearance the samples form a thin band, where the pick can leave two
+   consecutive ones farther apart than ``connect_radius``; pairs up to
+   ``gap_radius`` apart that pass the same walk test are joined too, but
+   only where the graph so far has no way between them shorter than
+   ``GAP_STRETCH`` × their distance (on open ground a common neighbour
+   is such a way, so almost nothing is added there). Weight = length +
    ``slope_penalty`` × |height change|.
 
 Nodes (ids 0..n-1, ordered by x, then z, then y): ``pos`` (on the surface),
@@ -56,7 +63,10 @@ up to 3 heights; 8 ledge rays down and 8 up), fewer where
 that fits, and 4 horizontal ones where that ray meets a face from behind; the Poisson-disk subset, k-d tree
 queries over the candidates and their pairs within ``spacing``; the pairs,
 one k-d tree query, then O(connect_radius / probe_step) rays for each pair
-not on one open floor triangle. Each ray is a search of Embree's bounding
+not on one open floor triangle; the gaps, a k-d tree query within
+``gap_radius``, one sparse matrix product for the common neighbours, a
+bounded Dijkstra search from the pairs left, tile by tile, and the walk
+test for the pairs that have no short way. Each ray is a search of Embree's bounding
 volume hierarchy (trimesh's own intersector without Embree).
 """
 
@@ -108,6 +118,11 @@ MAX_LEDGE_BATCH = 50_000
 """Candidate points whose ledge rays (8 each) are cast per batch (bounds memory on large levels)."""
 
 
+GAP_STRETCH = 2.0
+"""A pair of samples beyond ``connect_radius`` but within ``gap_radius`` is joined only when the graph's way
+between them is longer than this many times their distance (see :func:`_gap_pairs`)."""
+
+
 class Params(PluginParams):
     """Sampling method and density, edge rules and clean-up."""
 
@@ -136,15 +151,23 @@ class Params(PluginParams):
         8.0, ge=2, le=100, description="poisson: candidate points per spacing² the Poisson-disk subset is chosen from"
     )
     seed: int = Field(0, ge=0, description="poisson: seed of the candidate points and of the Poisson-disk pick")
+    gap_radius: float | None = Field(
+        None,
+        ge=0,
+        le=1000,
+        description="also join samples up to this far apart if walkable and the graph has no way between them "
+        f"within {GAP_STRETCH:g} x their distance (gaps in thin passages), m; default 3 x spacing; 0: off",
+    )
 
 
-def _resolve(params: Params, agent: AgentShape) -> tuple[float, float, float, float]:
-    """``(spacing, connect_radius, clearance, probe_step)`` with the defaults filled in."""
+def _resolve(params: Params, agent: AgentShape) -> tuple[float, float, float, float, float]:
+    """``(spacing, connect_radius, clearance, probe_step, gap_radius)`` with the defaults filled in."""
     spacing = params.spacing if params.spacing is not None else 2.0 * agent.radius
     connect = params.connect_radius if params.connect_radius is not None else 2.0 * spacing
     clearance = params.clearance if params.clearance is not None else agent.radius
     probe = params.probe_step if params.probe_step is not None else 0.5 * min(spacing, agent.radius)
-    return spacing, connect, clearance, probe
+    gap = params.gap_radius if params.gap_radius is not None else 3.0 * spacing
+    return spacing, connect, clearance, probe, gap
 
 
 # --- walkable surface -----------------------------------------------------------------
@@ -489,6 +512,92 @@ def _small_regions(count: int, edges: np.ndarray, areas: np.ndarray, min_area: f
     return small[part], int(np.count_nonzero(small))
 
 
+# --- edges ------------------------------------------------------------------------------
+
+
+def _walkable_pairs(
+    caster: RayCaster, agent: AgentShape, samples: np.ndarray, floor: np.ndarray, pairs: np.ndarray, probe_step: float
+) -> np.ndarray:
+    """(m,) bool: the agent walks straight between the two samples of each of ``pairs`` ((m, 2) ids).
+
+    A pair on one open floor triangle (``floor``: each sample's, from
+    :meth:`~g2s_plugins._raycasting.OpenFloors.faces_under`; -1 for none)
+    passes without a ray; the others get :func:`walk_segments`, a batch at a time.
+    """
+    keep = (floor[pairs[:, 0]] >= 0) & (floor[pairs[:, 0]] == floor[pairs[:, 1]])
+    tested = np.nonzero(~keep)[0]
+    for begin in range(0, len(tested), MAX_EDGE_BATCH):
+        rows = tested[begin : begin + MAX_EDGE_BATCH]
+        keep[rows] = walk_segments(caster, samples[pairs[rows, 0]], samples[pairs[rows, 1]], agent, probe_step)[0]
+    return keep
+
+
+def _gap_pairs(samples: np.ndarray, edges: np.ndarray, connect: float, gap: float) -> np.ndarray:
+    """(k, 2) sample ids, each row and the rows ascending: pairs farther apart than ``connect`` but at most ``gap`` (m) whose way along
+    ``edges`` ((m, 2) ids) is missing or longer than ``GAP_STRETCH`` times their distance.
+
+    In a passage only slightly wider than twice the clearance the candidates
+    form a thin band, and the Poisson-disk pick can leave consecutive samples
+    along it farther apart than ``connect_radius``: the passage is cut. On
+    open ground a pair that far apart almost always has a common neighbour,
+    a way at most 2 x ``connect`` long, so it is found here with one sparse
+    product and no search; the few pairs left get a shortest-path search from
+    each first sample (:func:`_bounded_ways`), bounded by ``GAP_STRETCH`` x
+    ``gap``. The pairs returned still need the walk test.
+    """
+    count = len(samples)
+    if gap <= connect or count < 2:
+        return np.zeros((0, 2), dtype=np.int64)
+    pairs = np.asarray(cKDTree(samples).query_pairs(gap, output_type="ndarray"), dtype=np.int64).reshape(-1, 2)
+    pairs = np.sort(pairs, axis=1)
+    distance = np.linalg.norm(samples[pairs[:, 1]] - samples[pairs[:, 0]], axis=1)
+    far = distance > connect
+    pairs, distance = pairs[far], distance[far]
+    if len(pairs) == 0:
+        return pairs
+    lengths = np.linalg.norm(samples[edges[:, 1]] - samples[edges[:, 0]], axis=1)
+    links = sparse.csr_array((lengths, (edges[:, 0], edges[:, 1])), shape=(count, count))
+    links = links + links.T
+    # A common neighbour is a way of at most 2 x connect < 2 x distance <= GAP_STRETCH x distance.
+    adjacent = (links > 0).astype(np.int32)
+    shared = (adjacent @ adjacent)[pairs[:, 0], pairs[:, 1]] > 0
+    pairs, distance = pairs[~shared], distance[~shared]
+    if len(pairs) == 0:
+        return pairs
+    way = _bounded_ways(samples, links, pairs, GAP_STRETCH * gap)
+    pairs = pairs[way > GAP_STRETCH * distance]
+    return pairs[np.lexsort((pairs[:, 1], pairs[:, 0]))]
+
+
+def _bounded_ways(samples: np.ndarray, links: sparse.csr_array, pairs: np.ndarray, limit: float) -> np.ndarray:
+    """(k,) the shortest way along ``links`` (symmetric, weights in m) between the samples of each of ``pairs``
+    ((k, 2) ids at most ``limit`` apart), or inf where it is longer than ``limit`` (m).
+
+    A way no longer than ``limit`` stays within ``limit`` of its start, so the
+    search from the sources in one XZ tile (side 4 x ``limit``) needs only the
+    samples of that tile and the eight around it: scipy's Dijkstra on that
+    part of the graph, its table (sources x part) small, its cost growing
+    with the level's area, not its square.
+    """
+    side = 4.0 * limit
+    tile = np.floor(samples[:, [0, 2]] / side).astype(np.int64)
+    tile -= tile.min(axis=0)
+    width = int(tile[:, 1].max()) + 3
+    key = (tile[:, 0] + 1) * width + tile[:, 1] + 1  # a margin of one tile all round keeps the 3 x 3 keys apart
+    order = np.argsort(key, kind="stable")
+    starts = np.searchsorted(key[order], np.arange((int(tile[:, 0].max()) + 3) * width + 1))
+    way = np.full(len(pairs), np.inf)
+    source_key = key[pairs[:, 0]]
+    for home in np.unique(source_key):
+        block = [order[starts[k] : starts[k + 1]] for dx in (-1, 0, 1) for k in home + dx * width + np.arange(-1, 2)]
+        part = np.sort(np.concatenate(block))
+        mine = np.nonzero(source_key == home)[0]
+        sources, row = np.unique(np.searchsorted(part, pairs[mine, 0]), return_inverse=True)
+        table = csgraph.dijkstra(links[part][:, part], directed=False, indices=sources, limit=limit)
+        way[mine] = table[row, np.searchsorted(part, pairs[mine, 1])]
+    return way
+
+
 # --- the hook ---------------------------------------------------------------------------
 
 
@@ -500,7 +609,7 @@ def build_sampled_graph(
     ``timings``, when given, receives the seconds each step took (kept out of
     the graph so that its JSON output stays the same from run to run).
     """
-    spacing, connect, clearance, probe_step = _resolve(params, agent)
+    spacing, connect, clearance, probe_step, gap = _resolve(params, agent)
     timings = timings if timings is not None else {}
     clock = time.perf_counter()
 
@@ -517,6 +626,7 @@ def build_sampled_graph(
         "method": params.method,
         "spacing": spacing,
         "connect_radius": connect,
+        "gap_radius": gap,
         "clearance": clearance,
         "ray_backend": caster.backend,
         "surface_faces": int(len(surface.faces)),
@@ -564,19 +674,18 @@ def build_sampled_graph(
     pairs = cKDTree(samples).query_pairs(connect, output_type="ndarray") if len(samples) > 1 else np.zeros((0, 2), int)
     pairs = np.sort(np.asarray(pairs, dtype=np.int64).reshape(-1, 2), axis=1)
     pairs = pairs[np.lexsort((pairs[:, 1], pairs[:, 0]))]
-    # A pair on one open floor triangle is walkable without a ray (OpenFloors); the others are tested.
     floors = OpenFloors(caster, agent, min_inradius=0.5 * spacing)
     floor = floors.faces_under(samples, floors.certain_offset(GROUND_MARGIN, None))
-    keep_edge = (floor[pairs[:, 0]] >= 0) & (floor[pairs[:, 0]] == floor[pairs[:, 1]])
-    tested = np.nonzero(~keep_edge)[0]
-    for begin in range(0, len(tested), MAX_EDGE_BATCH):
-        chunk = pairs[tested[begin : begin + MAX_EDGE_BATCH]]
-        keep_edge[tested[begin : begin + MAX_EDGE_BATCH]] = walk_segments(
-            caster, samples[chunk[:, 0]], samples[chunk[:, 1]], agent, probe_step
-        )[0]
-    edges = pairs[keep_edge]
+    edges = pairs[_walkable_pairs(caster, agent, samples, floor, pairs, probe_step)]
     lap("edges")
+    gaps = _gap_pairs(samples, edges, connect, gap)
+    gaps = gaps[_walkable_pairs(caster, agent, samples, floor, gaps, probe_step)]
+    if len(gaps):
+        edges = np.concatenate([edges, gaps])
+        edges = edges[np.lexsort((edges[:, 1], edges[:, 0]))]
+    lap("gaps")
     stats["candidate_edges"] = int(len(pairs))
+    stats["gap_edges"] = int(len(gaps))
 
     lengths = np.linalg.norm(samples[edges[:, 1]] - samples[edges[:, 0]], axis=1)
     weights = lengths + params.slope_penalty * np.abs(samples[edges[:, 1], 1] - samples[edges[:, 0], 1])

@@ -1,0 +1,188 @@
+"""The commands and configs README.md and docs/*.md show, and the settings configs/*.yaml show commented out, are
+ones g2s takes: every `g2s ...` line of a code block and every inline `g2s ...` names an existing command, options
+that command has, presets that exist, installed formats, stages, executors and evaluators, and `--set` keys and
+values its config accepts; every YAML block is a valid config. (Links and the files the docs name:
+tests/test_doc_links.py; the Python examples: tests/test_python_docs.py, tests/test_architecture.py,
+tests/test_batch.py.)"""
+
+from __future__ import annotations
+
+import argparse
+import re
+import shlex
+from pathlib import Path
+
+import pytest
+import yaml
+
+from tests.conftest import PROJECT
+
+DOCS = [PROJECT / "README.md", *sorted((PROJECT / "docs").glob("*.md"))]
+CONFIGS = sorted((PROJECT / "configs").glob("*.yaml"))
+PLACEHOLDER = re.compile(r"^[A-Z][A-Z_]*$|\.\.\.|^\S*[A-Z]{2,}")
+"""CONFIG, NAMES, FILE.obj, sample:X?...: words the docs put where the user's own value goes."""
+
+
+def documented_commands(text: str) -> list[str]:
+    """Each `g2s <command> ...` of ``text``: the lines of its code blocks that start with it (a trailing `# comment`
+    dropped) and its inline code spans that do (which may run over a line break)."""
+    found = []
+    for block in re.findall(r"^```[a-z]*\n(.*?)^```", text, flags=re.MULTILINE | re.DOTALL):
+        found += [re.sub(r"\s+#\s.*$", "", line).strip() for line in block.splitlines() if line.startswith("g2s ")]
+    prose = re.sub(r"^```.*?^```", "", text, flags=re.MULTILINE | re.DOTALL)
+    found += [" ".join(span.split()) for span in re.findall(r"`(g2s [^`]+)`", prose)]
+    return found
+
+
+def test_documented_commands_are_found():
+    text = "```sh\ng2s run map_piece p.glb -o out   # a piece\n```\nThen `g2s plugins\n--stage levels`, not `g2s:`.\n"
+    assert documented_commands(text) == ["g2s run map_piece p.glb -o out", "g2s plugins --stage levels"]
+
+
+def subcommands() -> tuple[argparse.ArgumentParser, dict[str, argparse.ArgumentParser]]:
+    from g2s_core.cli import _parser
+
+    parser, _ = _parser()
+    action = next(a for a in parser._actions if isinstance(a, argparse._SubParsersAction))
+    return parser, dict(action.choices)
+
+
+def value_problems(option: str, value: str, config: str | None) -> list[str]:
+    """What is wrong with ``option``'s ``value`` (nothing when it is a placeholder)."""
+    from g2s_core.config import parse_assignment, resolve_config
+    from g2s_core.pipeline import plan
+    from g2s_core.registry import installed
+
+    if PLACEHOLDER.search(value):
+        return []
+    kinds = {"--format": "outputs", "--executor": "executors", "--evaluate": "evaluators"}
+    if option in kinds:
+        names = {p.name for p in installed().plugins(kinds[option])}
+        return [f"{option} {name}: no such {kinds[option]} plugin" for name in value.split(",") if name not in names]
+    if option == "--set" and config is not None:
+        key, setting = parse_assignment(value)
+        if isinstance(setting, str) and PLACEHOLDER.search(setting):
+            return []
+        try:
+            plan(resolve_config(config, {key: setting}, "--set")[0], installed())
+        except Exception as exc:
+            return [f"--set {value}: {exc}"]
+    return []
+
+
+def command_problems(command: str) -> list[str]:
+    """What the g2s parser, the presets and the installed plugins do not take in ``command``."""
+    from g2s_core.config import presets
+
+    parser, commands = subcommands()
+    words = [word.strip("[]") for word in shlex.split(command)[1:]]
+    while words and words[0].startswith("-"):  # g2s's own options, before the command
+        if (option := words.pop(0)) not in parser._option_string_actions:
+            return [f"g2s has no option {option}"]
+    if not words or PLACEHOLDER.search(words[0]):
+        return []
+    if words[0] not in commands:
+        return [f"no command {words[0]!r}"]
+    sub, problems, positionals, index = commands[words[0]], [], [], 1
+    while index < len(words):
+        word = words[index]
+        index += 1
+        if not word.startswith("-") or word == "-":
+            positionals.append(word)
+            continue
+        option, _, attached = word.partition("=")
+        action = sub._option_string_actions.get(option)
+        if action is None:
+            problems.append(f"g2s {words[0]} has no option {option}")
+            continue
+        if action.nargs == 0:
+            continue
+        value = attached or (words[index] if index < len(words) else "")
+        index += 0 if attached else 1
+        if action.choices is not None and value not in action.choices and not PLACEHOLDER.search(value):
+            problems.append(f"{option} {value}: expected one of {sorted(action.choices)}")
+        config = positionals[0] if words[0] == "run" and positionals else "demo" if words[0] == "demo" else None
+        if config is not None and not (config in presets() or (PROJECT / config).is_file()):
+            config = None
+        problems += value_problems(option, value, config)
+    if words[0] == "run" and positionals and not PLACEHOLDER.search(positionals[0]):
+        config = positionals[0]
+        if not config.endswith((".yaml", ".yml")) and config not in presets():
+            problems.append(f"no preset {config!r}")
+        elif config.startswith("configs/") and not (PROJECT / config).is_file():
+            problems.append(f"no file {config}")
+    return problems
+
+
+@pytest.mark.parametrize("doc", DOCS, ids=lambda path: path.name)
+def test_documented_g2s_commands_are_ones_g2s_takes(doc: Path):
+    problems = [f"`{command}`: {problem}" for command in documented_commands(doc.read_text(encoding="utf-8"))
+                for problem in command_problems(command)]
+    assert not problems, f"{doc.name}: {problems}"
+
+
+def test_the_check_finds_what_g2s_refuses():
+    assert command_problems("g2s run map_analysis level.obj -o out --set agent.radius=0.4 --format json,glb") == []
+    assert command_problems("g2s run map_analysis level.obj -o out --quiet --stage x") == [
+        "g2s run has no option --stage"]
+    assert command_problems("g2s plugins --stage level") != []
+    assert command_problems("g2s run map_analyis level.obj -o out") == ["no preset 'map_analyis'"]
+    assert command_problems("g2s run map_piece p.glb -o out --set terminals.params.sample_stepp=0.2") != []
+    assert command_problems("g2s batch map_analysis levels/ -o runs --executor dusk --evaluate traffic") != []
+    assert command_problems("g2s demo --format json,gbl") != []
+    assert command_problems("g2s --verbos run map_analysis level.obj -o out") == ["g2s has no option --verbos"]
+    assert command_problems("g2s COMMAND --help") == command_problems("g2s batch CONFIG -o OUTDIR [--workers N]") == []
+
+
+def commented_settings(text: str) -> list[tuple[int, str, object]]:
+    """Each commented-out setting of a config's text (a `#` line holding YAML `key: value`): its line number, its
+    dotted key (the settings it is indented under, then its own) and its value."""
+    found, parents = [], []  # (indentation, key) of the settings the next lines may be under
+    for number, line in enumerate(text.splitlines(), 1):
+        setting = re.match(r"^(\s*)(\w+):", line)
+        commented = re.match(r"^(\s*)#\s{1,3}(\w+): (.*?)\s*(#.*)?$", line)
+        if setting:
+            indent = len(setting.group(1))
+            parents = [(i, key) for i, key in parents if i < indent] + [(indent, setting.group(2))]
+        elif commented and not commented.group(2)[0].isupper():
+            indent = len(commented.group(1))  # the `#` stands where the key would
+            keys = [key for i, key in parents if i < indent] + [commented.group(2)]
+            found.append((number, ".".join(keys), yaml.safe_load(commented.group(3))))
+    return found
+
+
+def test_commented_settings_are_found():
+    text = "# A preset.\ngraph:\n  params:\n    method: grid\n    # spacing: null     # metres\n#   terminals: {a: 1}\n"
+    assert commented_settings(text) == [(5, "graph.params.spacing", None), (6, "terminals", {"a": 1})]
+
+
+@pytest.mark.parametrize("config", CONFIGS, ids=lambda path: path.name)
+def test_settings_commented_out_in_configs_are_valid(config: Path):
+    from g2s_core.config import resolve_config
+    from g2s_core.pipeline import plan
+    from g2s_core.registry import installed
+
+    problems = []
+    for number, key, value in commented_settings(config.read_text(encoding="utf-8")):
+        try:
+            plan(resolve_config(config, {key: value}, "uncommented")[0], installed())
+        except Exception as exc:
+            problems.append(f"line {number}: {exc}")
+    assert not problems, f"{config.name}: {problems}"
+
+
+@pytest.mark.parametrize("doc", [doc for doc in DOCS if "```yaml" in doc.read_text(encoding="utf-8")],
+                         ids=lambda path: path.name)
+def test_documented_config_snippets_are_valid(doc: Path):
+    """Each YAML block is a config, or a part of one: a part (no `extends:`) is read over `map_analysis`."""
+    from g2s_core.config import resolve_config
+    from g2s_core.pipeline import plan
+    from g2s_core.registry import installed
+
+    problems = []
+    for block in re.findall(r"^```yaml\n(.*?)^```", doc.read_text(encoding="utf-8"), flags=re.MULTILINE | re.DOTALL):
+        try:
+            plan(resolve_config({"extends": "map_analysis", **yaml.safe_load(block)})[0], installed())
+        except Exception as exc:
+            problems.append(f"{block.splitlines()[0]} ...: {exc}")
+    assert not problems, f"{doc.name}: {problems}"
