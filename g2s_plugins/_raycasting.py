@@ -393,9 +393,10 @@ def _row_ranks(rows: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 
 class FloorTriangles:
     """Walkable triangles (m, 3, 3) seen from above, and which one lies across each edge (``across``: computed
-    from shared corners; off: none)."""
+    from shared corners; off: none). ``vertex``, when given: (m, 3) int, an id per corner, equal exactly where the
+    corners' coordinates are (as :meth:`of_mesh` gives them); else found by sorting the 3 m corners."""
 
-    def __init__(self, corners: np.ndarray, across: bool = True) -> None:
+    def __init__(self, corners: np.ndarray, across: bool = True, vertex: np.ndarray | None = None) -> None:
         self.corners = corners
         u, v = corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0]
         normal_x, normal_y, normal_z = (u[:, 1] * v[:, 2] - u[:, 2] * v[:, 1], u[:, 2] * v[:, 0] - u[:, 0] * v[:, 2],
@@ -417,23 +418,35 @@ class FloorTriangles:
         self.neighbour_edge = np.zeros((len(corners), 3), dtype=np.int64)
         """(m, 3): which edge of that triangle it is."""
         if across and len(corners):
-            vertex = _row_ranks(corners.reshape(-1, 3))[0]
-            vertex = vertex.reshape(-1, 3)
-            ends = np.sort(np.stack([vertex, np.roll(vertex, -1, axis=1)], axis=2), axis=2).reshape(-1, 2)
-            key, count = _row_ranks(ends)
-            key = key.reshape(-1)
+            if vertex is None:
+                vertex = _row_ranks(corners.reshape(-1, 3))[0].reshape(-1, 3)
+            start, end = vertex, np.roll(vertex, -1, axis=1)
+            # an edge's key: its two corner ids, the lower first, as one integer (equal for the edge either way round)
+            key = (np.minimum(start, end) * (int(vertex.max()) + 1) + np.maximum(start, end)).reshape(-1)
             order = np.argsort(key, kind="stable")
-            pair = count[key[order]] == 2
-            first, second = order[pair][0::2], order[pair][1::2]
-            self.neighbour.reshape(-1)[first], self.neighbour.reshape(-1)[second] = second // 3, first // 3
+            group = np.cumsum(np.r_[True, np.diff(key[order]) != 0]) - 1
+            pair = np.bincount(group)[group] == 2
+            first, second = order[pair][0::2], order[pair][1::2]  # edges 3 f + i sharing their two corners
             self.neighbour_edge.reshape(-1)[first], self.neighbour_edge.reshape(-1)[second] = second % 3, first % 3
             # A neighbour folded back over the triangle (seen from above) does not extend it: none.
-            faces = np.repeat(np.arange(len(corners)), 3)
-            linked = self.neighbour.reshape(-1) >= 0
-            apex = corners[self.neighbour.reshape(-1)[linked], (self.neighbour_edge.reshape(-1)[linked] + 2) % 3]
-            room = self.edge_room(apex, faces[linked])[np.arange(int(linked.sum())), np.tile(np.arange(3), len(corners))[linked]]
-            folded = np.nonzero(linked)[0][~(room < 0.0)]
-            self.neighbour.reshape(-1)[folded] = -1
+            edge, other = np.concatenate([first, second]), np.concatenate([second, first])
+            apex = corners.reshape(-1, 3)[other - other % 3 + (other + 2) % 3]  # the other's corner off the edge
+            extends = self._edge_room_flat(apex, edge) < 0.0
+            self.neighbour.reshape(-1)[edge[extends]] = other[extends] // 3
+
+    @classmethod
+    def of_mesh(cls, mesh: trimesh.Trimesh) -> FloorTriangles:
+        """The triangles of ``mesh`` with their neighbours, corners told apart by sorting its vertices (fewer than
+        its 3 m corners: a mesh whose vertices are shared by about 6 triangles has about m / 2)."""
+        vertex = _row_ranks(np.asarray(mesh.vertices, dtype=np.float64))[0][np.asarray(mesh.faces)]
+        return cls(np.asarray(mesh.triangles, dtype=np.float64).reshape(-1, 3, 3), vertex=vertex)
+
+    def _edge_room_flat(self, points: np.ndarray, edges: np.ndarray) -> np.ndarray:
+        """(n,): :meth:`edge_room` of each point for one edge only, ``edges[i]`` = 3 face + edge (the same sums)."""
+        corner_x, corner_z = self.corners[:, :, 0].reshape(-1)[edges], self.corners[:, :, 2].reshape(-1)[edges]
+        edge_x, edge_z = self._edge_x.reshape(-1)[edges], self._edge_z.reshape(-1)[edges]
+        cross = edge_x * (points[:, 2] - corner_z) - edge_z * (points[:, 0] - corner_x)
+        return cross * self._inward.reshape(-1)[edges]
 
     def edge_room(self, points: np.ndarray, faces: np.ndarray) -> np.ndarray:
         """(n, 3): how far each point lies inside each edge line of its triangle, seen from above (metres; nan
