@@ -30,6 +30,7 @@ from g2s_plugins._raycasting import (
     BoxOccupancy,
     FloorTriangles,
     RayCaster,
+    _row_starts,
     clear_above,
     disk_inside,
     head_room,
@@ -525,6 +526,7 @@ def test_agent_fits_saves_rays_not_answers(name, scale):
     np.testing.assert_array_equal(fits, sampling.agent_fits(walls_only, points, agent, 0.5))
     np.testing.assert_array_equal(fits, _agent_fits_with_every_ray(every_ray, points, agent, 0.5))
     np.testing.assert_array_equal(fits, sampling.agent_fits(across, points, agent, 0.5, surface.triangles, faces))
+    np.testing.assert_array_equal(fits, sampling.agent_fits(RayCaster(mesh), points, agent, 0.5, surface, faces))
     assert across.rays_cast <= shortcuts.rays_cast <= walls_only.rays_cast < every_ray.rays_cast
     if scale > 1:  # 0.8 m thick floors, large rooms: ground all around is known for most candidates
         assert shortcuts.rays_cast < 0.5 * walls_only.rays_cast
@@ -643,3 +645,24 @@ def test_poisson_disk_subset_in_parts_is_the_one_by_one_pick():
             assert np.array_equal(
                 sampling.poisson_disk_subset(points, radius, seed), _poisson_disk_subset_one_by_one(points, radius, seed)
             ), (name, radius, seed)
+
+
+@pytest.mark.parametrize("name", ["building", "terrain", "stair_deck"])
+def test_floor_neighbours_from_shared_vertices_are_those_from_corners(name):
+    # of_mesh tells corners apart by the mesh's vertices: the same neighbours as sorting all corners, also where
+    # the mesh repeats a vertex (every face its own three vertices, as an unwelded export has them)
+    surface = sampling.walkable_surface(generate_level(f"sample:{name}", MeshConfig()), AgentShape.from_config(AGENT))
+    corners = np.asarray(surface.triangles)
+    unwelded = trimesh.Trimesh(corners.reshape(-1, 3), np.arange(3 * len(corners)).reshape(-1, 3), process=False)
+    expected = FloorTriangles(corners)
+    assert (expected.neighbour >= 0).any()  # some edges are shared: the test looks at something
+    for mesh in (surface, unwelded):
+        floor = FloorTriangles.of_mesh(mesh)
+        np.testing.assert_array_equal(floor.neighbour, expected.neighbour)
+        np.testing.assert_array_equal(floor.neighbour_edge, expected.neighbour_edge)
+
+
+def test_row_starts_pick_each_distinct_row_once():
+    rows = np.random.default_rng(3).integers(-2, 3, (5000, 6))
+    np.testing.assert_array_equal(rows[_row_starts(rows)], np.unique(rows, axis=0))
+    assert len(_row_starts(rows[:0])) == 0
