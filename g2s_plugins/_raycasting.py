@@ -346,11 +346,14 @@ def _reversed_twins(triangles: np.ndarray) -> np.ndarray:
     first, second = order[pair], order[pair + 1]
     corner_found = (triangles[first][:, :, None, :] == triangles[second][:, None, :, :]).all(axis=3).any(axis=2)
     same_corners = (key[first] == key[second]).all(axis=1) & corner_found.all(axis=1)
-    normal_y = np.cross(triangles[:, 1] - triangles[:, 0], triangles[:, 2] - triangles[:, 0])[:, 1]
+    # the normals' Y of the paired triangles only (most triangles have no twin)
+    normal_first, normal_second = (
+        np.cross(triangles[rows, 1] - triangles[rows, 0], triangles[rows, 2] - triangles[rows, 0])[:, 1] for rows in (first, second)
+    )
     # a two-sided wall has no up-facing side: the intersector's answer stands there
-    facing = same_corners & (np.sign(normal_y[first]) == -np.sign(normal_y[second])) & (normal_y[first] != 0)
-    down = np.where(normal_y[first] < 0, first, second)[facing]
-    twin[down] = np.where(normal_y[first] < 0, second, first)[facing]
+    facing = same_corners & (np.sign(normal_first) == -np.sign(normal_second)) & (normal_first != 0)
+    down = np.where(normal_first < 0, first, second)[facing]
+    twin[down] = np.where(normal_first < 0, second, first)[facing]
     return twin
 
 
