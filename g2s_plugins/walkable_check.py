@@ -15,7 +15,8 @@ docs/errors.md): a run is *suspicious* when its walkable area is less than
 faces (:func:`looks_for_winding`), or when the level is more than
 :data:`MAX_HEIGHT_RATIO` times as tall as its shorter horizontal side. A
 suspicious run is warned about only when a cause is found
-(:func:`likely_causes`): the level looks Z-up (:func:`looks_z_up`), or, for
+(:func:`likely_causes`): the level looks Z-up (:func:`looks_z_up`) and its
+walkable surface does not show it upright (:func:`walks_upright`), or, for
 a small share, closed bodies are wound inside out so that they hide their
 floor (:func:`hidden_floor_bodies`; a room modelled as a box seen from
 inside is wound inwards on purpose and does not count). No correct level
@@ -61,7 +62,19 @@ reach 1.5, a level standing on its side 2.1 to 140 (docs/errors.md)."""
 
 Z_UP_FLAT_AREA_RATIO = 3.0
 """Flat area along z over that along y above which a level looks Z-up whatever its shape: the correct
-levels measured reach 2.2 (corridors: walls along z, no ceiling), the Z-up ones 1.0 to 24 (docs/errors.md)."""
+levels measured reach 2.2 (corridors: walls along z, no ceiling), the Z-up ones 1.0 to 24 (docs/errors.md).
+A corridor along x whose walls are tall for its width reaches it too (the 15-degree sloped corridor: 3.3),
+so the shape alone does not decide: :func:`walks_upright`."""
+
+UPRIGHT_PIECE_SHARE = 0.7
+"""Share of the walkable area in its largest connected piece from which that piece may show the level upright
+(:func:`walks_upright`): the Z-up levels read as Y-up measured keep 0.65 or less in one piece (each wall's
+side apart), the correct levels 1.00 but for a spiral stair whose top landing stands apart, 0.74
+(docs/errors.md)."""
+
+LEVEL_TILT = 5.0
+"""Degrees from straight up within which a walkable node is level (:func:`walks_upright`): flat floors
+measure 0 to 3.6 (Recast's detail mesh), the ramps and stairs measured 8 and more (docs/errors.md)."""
 
 
 def footprint_area(mesh: trimesh.Trimesh) -> float:
@@ -106,6 +119,33 @@ def looks_z_up(mesh: trimesh.Trimesh, max_slope: float) -> bool:
     """
     ratio = flat_area_ratio(mesh, max_slope)
     return ratio > Z_UP_FLAT_AREA_RATIO or (ratio > 1 and height_ratio(mesh) > MAX_HEIGHT_RATIO)
+
+
+def walks_upright(graph: nx.Graph, mesh: trimesh.Trimesh, agent: AgentConfig) -> bool:
+    """Whether the walkable surface ``graph`` found on ``mesh`` shows the level read upright.
+
+    A Z-up level read as Y-up walks on the sides of its walls: level patches,
+    each apart at its own height, as the floors that joined them stand on
+    edge. So the level is upright when its walkable surface covers at least
+    :data:`MIN_WALKABLE_SHARE` of the footprint, at least
+    :data:`UPRIGHT_PIECE_SHARE` of it lies in one connected piece, and that
+    piece climbs: its nodes (``pos``, m) span more than ``agent.max_climb``
+    in height, or one leans more than :data:`LEVEL_TILT` from straight up
+    (``normal``; a ramp can be one node). Landings joined only by a lift,
+    or a single level floor, do not show it.
+    """
+    pieces = [list(piece) for piece in nx.connected_components(graph)]
+    areas = [math.fsum(graph.nodes[node].get("area", 0.0) for node in piece) for piece in pieces]
+    total = math.fsum(areas)
+    if walkable_share(graph, mesh) < MIN_WALKABLE_SHARE or total <= 0:
+        return False
+    largest = int(np.argmax(areas))
+    if areas[largest] < UPRIGHT_PIECE_SHARE * total:
+        return False
+    nodes = [graph.nodes[node] for node in pieces[largest]]
+    heights = [node["pos"][1] for node in nodes]
+    lean = min(node.get("normal", UP)[1] for node in nodes)
+    return max(heights) - min(heights) > agent.max_climb or lean < math.cos(math.radians(LEVEL_TILT))
 
 
 def inside_out_bodies(mesh: trimesh.Trimesh) -> int:
@@ -156,13 +196,16 @@ UP_AXIS_HINT = ("most flat faces face along z, not y: if the file is Z-up, set `
                 "(or `y` if it is already z)")
 
 
-def likely_causes(mesh: trimesh.Trimesh, agent: AgentConfig, winding: bool = True) -> list[str]:
+def likely_causes(mesh: trimesh.Trimesh, agent: AgentConfig, winding: bool = True,
+                  graph: nx.Graph | None = None) -> list[str]:
     """What most likely made the walkable surface wrong for ``agent``, each naming the key to change.
 
     ``winding``: also look for closed bodies wound inside out that hide their floor
-    (:func:`hidden_floor_bodies`, the costly check).
+    (:func:`hidden_floor_bodies`, the costly check). ``graph``: the walkable surface found, if any:
+    one that :func:`walks_upright` clears the up axis.
     """
-    causes = [UP_AXIS_HINT] if looks_z_up(mesh, agent.max_slope) else []
+    z_up = looks_z_up(mesh, agent.max_slope) and not (graph is not None and walks_upright(graph, mesh, agent))
+    causes = [UP_AXIS_HINT] if z_up else []
     bodies = hidden_floor_bodies(mesh, agent) if winding else 0
     if bodies:
         causes.append(f"{bodies} closed bod{'y is' if bodies == 1 else 'ies are'} wound inside out "
@@ -201,7 +244,7 @@ def check_walkable_surface(graph: nx.Graph, mesh: trimesh.Trimesh, context: RunC
     winding, tall = looks_for_winding(share, len(mesh.faces)), height_ratio(mesh) > MAX_HEIGHT_RATIO
     if not (winding or tall):
         return
-    causes = likely_causes(mesh, context.agent, winding=winding)
+    causes = likely_causes(mesh, context.agent, winding=winding, graph=graph)
     if not causes:
         return
     walkable = f"{100 * share:.1f} % of the level's footprint is walkable"
