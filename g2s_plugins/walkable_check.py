@@ -128,21 +128,33 @@ def walks_upright(graph: nx.Graph, mesh: trimesh.Trimesh, agent: AgentConfig) ->
     each apart at its own height, as the floors that joined them stand on
     edge. So the level is upright when its walkable surface covers at least
     :data:`MIN_WALKABLE_SHARE` of the footprint, at least
-    :data:`UPRIGHT_PIECE_SHARE` of it lies in one connected piece, and that
-    piece climbs: its nodes (``pos``, m) span more than ``agent.max_climb``
-    in height, or one leans more than :data:`LEVEL_TILT` from straight up
-    (``normal``; a ramp can be one node). Landings joined only by a lift,
-    or a single level floor, do not show it.
+    :data:`UPRIGHT_PIECE_SHARE` of it lies in one connected piece
+    (:func:`largest_piece`), and that piece :func:`climbs`. Landings joined
+    only by a lift, or a single level floor, do not show it.
     """
-    pieces = [list(piece) for piece in nx.connected_components(graph)]
-    areas = [math.fsum(graph.nodes[node].get("area", 0.0) for node in piece) for piece in pieces]
+    if walkable_share(graph, mesh) < MIN_WALKABLE_SHARE:
+        return False
+    share, nodes = largest_piece(graph)
+    return share >= UPRIGHT_PIECE_SHARE and climbs(nodes, agent)
+
+
+def largest_piece(graph: nx.Graph) -> tuple[float, list[dict]]:
+    """The share of the graph's walkable area (the nodes' ``area``) in its largest connected piece (0 for a
+    graph without area), and that piece's node attributes."""
+    pieces = [[graph.nodes[node] for node in piece] for piece in nx.connected_components(graph)]
+    areas = [math.fsum(node.get("area", 0.0) for node in piece) for piece in pieces]
     total = math.fsum(areas)
-    if walkable_share(graph, mesh) < MIN_WALKABLE_SHARE or total <= 0:
-        return False
+    if total <= 0:
+        return 0.0, []
     largest = int(np.argmax(areas))
-    if areas[largest] < UPRIGHT_PIECE_SHARE * total:
+    return areas[largest] / total, pieces[largest]
+
+
+def climbs(nodes: list[dict], agent: AgentConfig) -> bool:
+    """Whether walkable nodes (their ``pos`` and ``normal``) span more than ``agent.max_climb`` in height, or
+    one leans more than :data:`LEVEL_TILT` from straight up (a ramp can be one navmesh polygon)."""
+    if not nodes:
         return False
-    nodes = [graph.nodes[node] for node in pieces[largest]]
     heights = [node["pos"][1] for node in nodes]
     lean = min(node.get("normal", UP)[1] for node in nodes)
     return max(heights) - min(heights) > agent.max_climb or lean < math.cos(math.radians(LEVEL_TILT))
