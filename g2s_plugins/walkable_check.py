@@ -73,8 +73,9 @@ side apart), the correct levels 1.00 but for a spiral stair whose top landing st
 (docs/errors.md)."""
 
 LEVEL_TILT = 5.0
-"""Degrees from straight up within which a walkable node is level (:func:`walks_upright`): flat floors
-measure 0 to 3.6 (Recast's detail mesh), the ramps and stairs measured 8 and more (docs/errors.md)."""
+"""Degrees from straight up within which a walkable node is level (:func:`climbs`): a wall's side read as a
+floor leans 0, the ramps and stairs measured 8 and more; Recast's detail mesh leans a few nodes of level
+floors up to 10 (``wall_tops``), so a piece climbs by leaning only over most of its area (docs/errors.md)."""
 
 
 def footprint_area(mesh: trimesh.Trimesh) -> float:
@@ -151,13 +152,15 @@ def largest_piece(graph: nx.Graph) -> tuple[float, list[dict]]:
 
 
 def climbs(nodes: list[dict], agent: AgentConfig) -> bool:
-    """Whether walkable nodes (their ``pos`` and ``normal``) span more than ``agent.max_climb`` in height, or
-    one leans more than :data:`LEVEL_TILT` from straight up (a ramp can be one navmesh polygon)."""
+    """Whether walkable nodes (their ``pos``, ``normal`` and ``area``) span more than ``agent.max_climb`` in
+    height, or those leaning more than :data:`LEVEL_TILT` from straight up hold most of their area (a ramp
+    can be one navmesh polygon)."""
     if not nodes:
         return False
     heights = [node["pos"][1] for node in nodes]
-    lean = min(node.get("normal", UP)[1] for node in nodes)
-    return max(heights) - min(heights) > agent.max_climb or lean < math.cos(math.radians(LEVEL_TILT))
+    areas = np.array([node.get("area", 0.0) for node in nodes])
+    leaning = np.array([node.get("normal", UP)[1] < math.cos(math.radians(LEVEL_TILT)) for node in nodes])
+    return max(heights) - min(heights) > agent.max_climb or 2 * areas[leaning].sum() > areas.sum()
 
 
 def inside_out_bodies(mesh: trimesh.Trimesh) -> int:
