@@ -234,11 +234,9 @@ _DEMO_HINTS = (
 
 
 def _demo_hint(outdir: Path) -> str:
-    lines = [f"the demo's results are in {outdir}/"]
-    for name, hint in _DEMO_HINTS:
-        if (outdir / name).exists():
-            lines.append("  " + hint.format(path=outdir / name, graphml=outdir / "graph.graphml"))
-    return "\n".join(lines)
+    hints = ("  " + hint.format(path=outdir / name, graphml=outdir / "graph.graphml") for name, hint in _DEMO_HINTS
+             if (outdir / name).exists())
+    return "\n".join([f"the demo's results are in {outdir}/", *hints])
 
 
 def _warn(errors: Console, message: str) -> None:

@@ -206,8 +206,9 @@ def prepare_and_clean(loaded: object, config: MeshConfig, source: str) -> tuple[
 
 
 def clean_mesh(mesh: trimesh.Trimesh) -> tuple[trimesh.Trimesh, dict[str, int]]:
-    """Merge close vertices and drop duplicate and zero-area faces with pymeshlab, then
-    turn closed bodies wound inside out the right way (:func:`flip_inside_out_bodies`).
+    """Merge close vertices and drop zero-area faces with pymeshlab, drop duplicate faces (of a two-sided
+    face its up-facing side stays), then turn closed bodies wound inside out the right way
+    (:func:`flip_inside_out_bodies`).
 
     Returns:
         The cleaned mesh and the count of what each step removed or flipped
@@ -223,15 +224,19 @@ def clean_mesh(mesh: trimesh.Trimesh) -> tuple[trimesh.Trimesh, dict[str, int]]:
         meshset.apply_filter(filter_name)
         return before - getattr(meshset.current_mesh(), count)()
 
-    removed = {"merged_vertices": removed_by("meshing_merge_close_vertices", "vertex_number"),
-               "duplicate_faces": removed_by("meshing_remove_duplicate_faces", "face_number"),
-               "zero_area_faces": removed_by("meshing_remove_null_faces", "face_number")}
+    merged = removed_by("meshing_merge_close_vertices", "vertex_number")
+    zero_area = removed_by("meshing_remove_null_faces", "face_number")
     cleaned = meshset.current_mesh()
     result = trimesh.Trimesh(vertices=cleaned.vertex_matrix(), faces=cleaned.face_matrix(), process=True)
+    # Of faces on the same corners the most up-facing stays: pymeshlab's duplicate filter keeps either side of a
+    # floor exported two-sided, and neither graph builder walks on its down-facing side.
+    order = np.argsort(-result.face_normals[:, 1], kind="stable")
+    kept = np.sort(order[np.unique(np.sort(result.faces[order], axis=1), axis=0, return_index=True)[1]])
+    result.update_faces(kept)
     if len(result.faces) == 0:
         raise MeshError("cleaning removed every triangle of the mesh")
     result, flipped = flip_inside_out_bodies(result)
-    return result, {**removed, "flipped_bodies": len(flipped)}
+    return result, {"merged_vertices": merged, "duplicate_faces": len(order) - len(kept), "zero_area_faces": zero_area, "flipped_bodies": len(flipped)}
 
 
 def flip_inside_out_bodies(mesh: trimesh.Trimesh) -> tuple[trimesh.Trimesh, list[np.ndarray]]:

@@ -13,7 +13,7 @@ import trimesh
 from g2s_core import DISTRIBUTION
 from g2s_core.config import MeshConfig
 from g2s_core.errors import ConfigError, MeshError
-from g2s_core.mesh import SUPPORTED_SUFFIXES, generate_level, load_mesh
+from g2s_core.mesh import SUPPORTED_SUFFIXES, clean_mesh, generate_level, load_mesh
 from g2s_core.registry import installed
 from g2s_plugins.samples import levels
 
@@ -61,6 +61,17 @@ def test_cleaning_reports_what_it_removed(tmp_path):
     assert len(mesh.faces) == 12
     assert info.cleaning["merged_vertices"] == 8 and info.cleaning["duplicate_faces"] == 12
 
+
+
+def test_cleaning_keeps_the_up_facing_side_of_two_sided_floors():
+    """Floors exported two-sided (each top also wound the other way, listed before or after it): of each pair,
+    cleaning drops the down-facing face, so every floor stays walkable (pymeshlab's own filter kept either)."""
+    dungeon = levels.dungeon(seed=0, rooms=20).mesh
+    up = dungeon.face_normals[:, 1] > 0.99
+    for faces in (np.vstack([dungeon.faces, dungeon.faces[up][:, ::-1]]), np.vstack([dungeon.faces[up][:, ::-1], dungeon.faces])):
+        cleaned, removed = clean_mesh(trimesh.Trimesh(dungeon.vertices, faces, process=False))
+        assert removed["duplicate_faces"] == up.sum() and len(cleaned.faces) == len(dungeon.faces)
+        assert (cleaned.face_normals[:, 1] > 0.99).sum() == up.sum()
 
 @pytest.mark.parametrize(
     "name, content, message",
