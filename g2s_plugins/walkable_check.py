@@ -15,7 +15,8 @@ docs/errors.md): a run is *suspicious* when its walkable area is less than
 faces (:func:`looks_for_winding`), or when the level is more than
 :data:`MAX_HEIGHT_RATIO` times as tall as its shorter horizontal side. A
 suspicious run is warned about only when a cause is found
-(:func:`likely_causes`): the level looks Z-up (:func:`looks_z_up`), or, for
+(:func:`likely_causes`): the level looks Z-up (:func:`looks_z_up`) and its
+walkable surface does not show it upright (:func:`walks_upright`), or, for
 a small share, closed bodies are wound inside out so that they hide their
 floor (:func:`hidden_floor_bodies`; a room modelled as a box seen from
 inside is wound inwards on purpose and does not count). No correct level
@@ -61,7 +62,20 @@ reach 1.5, a level standing on its side 2.1 to 140 (docs/errors.md)."""
 
 Z_UP_FLAT_AREA_RATIO = 3.0
 """Flat area along z over that along y above which a level looks Z-up whatever its shape: the correct
-levels measured reach 2.2 (corridors: walls along z, no ceiling), the Z-up ones 1.0 to 24 (docs/errors.md)."""
+levels measured reach 2.2 (corridors: walls along z, no ceiling), the Z-up ones 1.0 to 24 (docs/errors.md).
+A corridor along x whose walls are tall for its width reaches it too (the 15-degree sloped corridor: 3.3),
+so the shape alone does not decide: :func:`walks_upright`."""
+
+UPRIGHT_PIECE_SHARE = 0.7
+"""Share of the walkable area in its largest connected piece from which that piece may show the level upright
+(:func:`walks_upright`): the Z-up levels read as Y-up measured keep 0.65 or less in one piece (each wall's
+side apart), the correct levels 1.00 but for a spiral stair whose top landing stands apart, 0.74
+(docs/errors.md)."""
+
+LEVEL_TILT = 5.0
+"""Degrees from straight up within which a walkable node is level (:func:`climbs`): a wall's side read as a
+floor leans 0, the ramps and stairs measured 8 and more; Recast's detail mesh leans a few nodes of level
+floors up to 10 (``wall_tops``), so a piece climbs by leaning only over most of its area (docs/errors.md)."""
 
 
 def footprint_area(mesh: trimesh.Trimesh) -> float:
@@ -106,6 +120,47 @@ def looks_z_up(mesh: trimesh.Trimesh, max_slope: float) -> bool:
     """
     ratio = flat_area_ratio(mesh, max_slope)
     return ratio > Z_UP_FLAT_AREA_RATIO or (ratio > 1 and height_ratio(mesh) > MAX_HEIGHT_RATIO)
+
+
+def walks_upright(graph: nx.Graph, mesh: trimesh.Trimesh, agent: AgentConfig) -> bool:
+    """Whether the walkable surface ``graph`` found on ``mesh`` shows the level read upright.
+
+    A Z-up level read as Y-up walks on the sides of its walls: level patches,
+    each apart at its own height, as the floors that joined them stand on
+    edge. So the level is upright when its walkable surface covers at least
+    :data:`MIN_WALKABLE_SHARE` of the footprint, at least
+    :data:`UPRIGHT_PIECE_SHARE` of it lies in one connected piece
+    (:func:`largest_piece`), and that piece :func:`climbs`. Landings joined
+    only by a lift, or a single level floor, do not show it.
+    """
+    if walkable_share(graph, mesh) < MIN_WALKABLE_SHARE:
+        return False
+    share, nodes = largest_piece(graph)
+    return share >= UPRIGHT_PIECE_SHARE and climbs(nodes, agent)
+
+
+def largest_piece(graph: nx.Graph) -> tuple[float, list[dict]]:
+    """The share of the graph's walkable area (the nodes' ``area``) in its largest connected piece (0 for a
+    graph without area), and that piece's node attributes."""
+    pieces = [[graph.nodes[node] for node in piece] for piece in nx.connected_components(graph)]
+    areas = [math.fsum(node.get("area", 0.0) for node in piece) for piece in pieces]
+    total = math.fsum(areas)
+    if total <= 0:
+        return 0.0, []
+    largest = int(np.argmax(areas))
+    return areas[largest] / total, pieces[largest]
+
+
+def climbs(nodes: list[dict], agent: AgentConfig) -> bool:
+    """Whether walkable nodes (their ``pos``, ``normal`` and ``area``) span more than ``agent.max_climb`` in
+    height, or those leaning more than :data:`LEVEL_TILT` from straight up hold most of their area (a ramp
+    can be one navmesh polygon)."""
+    if not nodes:
+        return False
+    heights = [node["pos"][1] for node in nodes]
+    areas = np.array([node.get("area", 0.0) for node in nodes])
+    leaning = np.array([node.get("normal", UP)[1] < math.cos(math.radians(LEVEL_TILT)) for node in nodes])
+    return max(heights) - min(heights) > agent.max_climb or 2 * areas[leaning].sum() > areas.sum()
 
 
 def inside_out_bodies(mesh: trimesh.Trimesh) -> int:
@@ -156,13 +211,16 @@ UP_AXIS_HINT = ("most flat faces face along z, not y: if the file is Z-up, set `
                 "(or `y` if it is already z)")
 
 
-def likely_causes(mesh: trimesh.Trimesh, agent: AgentConfig, winding: bool = True) -> list[str]:
+def likely_causes(mesh: trimesh.Trimesh, agent: AgentConfig, winding: bool = True,
+                  graph: nx.Graph | None = None) -> list[str]:
     """What most likely made the walkable surface wrong for ``agent``, each naming the key to change.
 
     ``winding``: also look for closed bodies wound inside out that hide their floor
-    (:func:`hidden_floor_bodies`, the costly check).
+    (:func:`hidden_floor_bodies`, the costly check). ``graph``: the walkable surface found, if any:
+    one that :func:`walks_upright` clears the up axis.
     """
-    causes = [UP_AXIS_HINT] if looks_z_up(mesh, agent.max_slope) else []
+    z_up = looks_z_up(mesh, agent.max_slope) and not (graph is not None and walks_upright(graph, mesh, agent))
+    causes = [UP_AXIS_HINT] if z_up else []
     bodies = hidden_floor_bodies(mesh, agent) if winding else 0
     if bodies:
         causes.append(f"{bodies} closed bod{'y is' if bodies == 1 else 'ies are'} wound inside out "
@@ -201,7 +259,7 @@ def check_walkable_surface(graph: nx.Graph, mesh: trimesh.Trimesh, context: RunC
     winding, tall = looks_for_winding(share, len(mesh.faces)), height_ratio(mesh) > MAX_HEIGHT_RATIO
     if not (winding or tall):
         return
-    causes = likely_causes(mesh, context.agent, winding=winding)
+    causes = likely_causes(mesh, context.agent, winding=winding, graph=graph)
     if not causes:
         return
     walkable = f"{100 * share:.1f} % of the level's footprint is walkable"

@@ -17,6 +17,7 @@ from g2s_plugins.samples.levels import SAMPLES, load_sample
 from g2s_plugins.samples.pieces import PIECES
 from g2s_core.config import resolve_config
 from g2s_plugins.walkable_check import (
+    MAX_HEIGHT_RATIO,
     SMALL_MESH_FACES,
     SMALL_MESH_SHARE,
     height_ratio,
@@ -25,6 +26,7 @@ from g2s_plugins.walkable_check import (
     looks_for_winding,
     looks_z_up,
     walkable_share,
+    walks_upright,
 )
 
 BUILDERS = ["navmesh", "sampling"]
@@ -117,6 +119,46 @@ def test_a_z_up_level_read_as_y_up_warns_naming_the_up_axis(builder):
     assert "times as tall as it is wide" in warning and "`mesh: {up_axis: z}`" in warning, warning
     again = graph_run(as_z_up_file(load_sample("cross_hub").mesh), builder, mesh={"up_axis": "z"})
     assert mesh_warnings(again) == []
+
+
+def sloped_corridor(along_z: bool) -> trimesh.Trimesh:
+    """The 15-degree sloped corridor (12 x 2.4 m, walls 3 m over its floor): 2.2 times as tall as it is wide,
+    its side walls along z when it runs along x (more flat area along z than along y: it looks Z-up)."""
+    mesh = load_sample("sloped_corridor", slope=15.0).mesh
+    return mesh.apply_transform(trimesh.transformations.rotation_matrix(np.pi / 2, (0, 1, 0))) if along_z else mesh
+
+
+def test_walks_upright_needs_one_piece_that_climbs():
+    agent = resolve_config("map_piece")[0].agent
+    mesh = trimesh.creation.box(extents=(4.0, 4.0, 4.0))  # footprint 16 m²
+
+    def graph(*nodes):
+        built = nx.Graph()
+        built.add_nodes_from((i, {"pos": (0.0, y, 0.0), "normal": normal, "area": 2.0}) for i, (y, normal) in enumerate(nodes))
+        return built
+
+    flat, ramp = (0.0, 1.0, 0.0), (0.0, np.cos(np.radians(15)), np.sin(np.radians(15)))
+    level = graph((0.0, flat), (0.1, flat))
+    level.add_edge(0, 1)
+    assert not walks_upright(level, mesh, agent)  # a wall's side, read as a floor, is level
+    assert walks_upright(graph((0.0, ramp)), mesh, agent)  # a ramp can be one node
+    stairs = graph((0.0, flat), (1.5, flat))
+    assert not walks_upright(stairs, mesh, agent)  # two patches apart, at their own heights
+    stairs.add_edge(0, 1)
+    assert walks_upright(stairs, mesh, agent)
+    assert not walks_upright(graph((0.0, ramp)), trimesh.creation.box(extents=(8.0, 4.0, 8.0)), agent)  # a sliver
+
+
+@pytest.mark.parametrize("builder", BUILDERS)
+def test_a_tall_piece_read_right_does_not_warn_and_its_z_up_file_does(builder):
+    along_x, along_z = sloped_corridor(along_z=False), sloped_corridor(along_z=True)
+    assert height_ratio(along_x) > MAX_HEIGHT_RATIO and looks_z_up(along_x, PIECE_AGENT["max_slope"])
+    for piece in (along_x, along_z):
+        assert mesh_warnings(graph_run(piece, builder, agent=PIECE_AGENT)) == []
+    # the Z-up file of the corridor along z stands 4.2 times as tall as wide on the sides of its end walls
+    (warning,) = mesh_warnings(graph_run(as_z_up_file(along_z), builder, agent=PIECE_AGENT))
+    assert "times as tall as it is wide" in warning and "`mesh: {up_axis: z}`" in warning, warning
+    assert mesh_warnings(graph_run(as_z_up_file(along_z), builder, agent=PIECE_AGENT, mesh={"up_axis": "z"})) == []
 
 
 @pytest.mark.parametrize("builder", BUILDERS)
