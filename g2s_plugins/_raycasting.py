@@ -448,7 +448,7 @@ class FloorTriangles:
             # A neighbour folded back over the triangle (seen from above) does not extend it: none.
             edge, other = np.concatenate([first, second]), np.concatenate([second, first])
             apex = corners.reshape(-1, 3)[other - other % 3 + (other + 2) % 3]  # the other's corner off the edge
-            extends = self._edge_room_flat(apex, edge) < 0.0
+            extends = self.edge_room_of(apex, edge) < 0.0
             self.neighbour.reshape(-1)[edge[extends]] = other[extends] // 3
 
     @classmethod
@@ -458,19 +458,18 @@ class FloorTriangles:
         vertex = _row_ranks(np.asarray(mesh.vertices, dtype=np.float64))[np.asarray(mesh.faces)]
         return cls(np.asarray(mesh.triangles, dtype=np.float64).reshape(-1, 3, 3), vertex=vertex)
 
-    def _edge_room_flat(self, points: np.ndarray, edges: np.ndarray) -> np.ndarray:
-        """(n,): :meth:`edge_room` of each point for one edge only, ``edges[i]`` = 3 face + edge (the same sums)."""
-        corner_x, corner_z = self.corners[:, :, 0].reshape(-1)[edges], self.corners[:, :, 2].reshape(-1)[edges]
-        edge_x, edge_z = self._edge_x.reshape(-1)[edges], self._edge_z.reshape(-1)[edges]
-        cross = edge_x * (points[:, 2] - corner_z) - edge_z * (points[:, 0] - corner_x)
-        return cross * self._inward.reshape(-1)[edges]
+    def edge_room_of(self, points: np.ndarray, edges: np.ndarray) -> np.ndarray:
+        """(n,): how far each point lies inside one edge line, ``edges[i]`` = 3 x its triangle + the edge, seen
+        from above (metres; nan for a triangle with no XZ area, which no comparison passes)."""
+        face, side = np.divmod(edges, 3)
+        corner_x, corner_z = self.corners[face, side, 0], self.corners[face, side, 2]
+        cross = self._edge_x[face, side] * (points[:, 2] - corner_z) - self._edge_z[face, side] * (points[:, 0] - corner_x)
+        return cross * self._inward[face, side]
 
     def edge_room(self, points: np.ndarray, faces: np.ndarray) -> np.ndarray:
-        """(n, 3): how far each point lies inside each edge line of its triangle, seen from above (metres; nan
-        for a triangle with no XZ area, which no comparison passes)."""
-        corner_x, corner_z = self.corners[faces, :, 0], self.corners[faces, :, 2]
-        cross = self._edge_x[faces] * (points[:, None, 2] - corner_z) - self._edge_z[faces] * (points[:, None, 0] - corner_x)
-        return cross * self._inward[faces]
+        """(n, 3): :meth:`edge_room_of` each point for each edge of its triangle ``faces[i]``."""
+        edges = (3 * np.asarray(faces)[:, None] + np.arange(3)).reshape(-1)
+        return self.edge_room_of(np.repeat(points, 3, axis=0), edges).reshape(-1, 3)
 
     def _drop(self, points: np.ndarray, faces: np.ndarray, clearance: float) -> np.ndarray:
         """(n,): metres the triangle's plane lies farthest above or below the point's height within ``clearance``
