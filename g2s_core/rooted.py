@@ -16,7 +16,7 @@ One depth-first search of scipy (``scipy.sparse.csgraph.depth_first_order``,
 on the forest as a CSR matrix over the sorted ids) from a virtual node joined
 to every root roots all components at once.
 
-Complexity: O((n + m) log n) for n nodes and m edges (ranking the nodes and
+Complexity: O((n + m) log n) for n nodes and m edges (sorting the scores and
 sorting the edges).
 """
 
@@ -34,22 +34,25 @@ from g2s_core.model import graph_of
 from g2s_core.ties import tie_values
 
 
-def root_ranks(forest: nx.Graph, scores: Mapping[int, float], centre: np.ndarray) -> np.ndarray:
-    """(n,) rank as a root of each node of ``sorted(forest)``: 0 is best.
+def component_roots(
+    forest: nx.Graph, nodes: list[int], label: np.ndarray, count: int, scores: Mapping[int, float], centre: np.ndarray
+) -> np.ndarray:
+    """(count,) the position in ``nodes`` (``sorted(forest)``) of each component's root, ``label`` (n,) numbering
+    the components 0 .. count-1.
 
-    Order: highest score first; ties (see :mod:`g2s_core.ties`) go to the
-    node nearest ``centre``, then to the lowest id.
+    The root is the node with the highest score; ties (see :mod:`g2s_core.ties`) go to the node nearest
+    ``centre``, then to the lowest id. Only the nodes with their component's highest score are measured.
     """
-    nodes = sorted(forest)
     missing = [n for n in nodes if n not in scores]
     if missing:
         raise ValueError(f"the root selector gave no score for nodes {missing[:5]}")
-    data = dict(forest.nodes(data=True))
-    positions = np.fromiter(itertools.chain.from_iterable(data[n]["pos"] for n in nodes), dtype=np.float64).reshape(-1, 3)
     distinct, inverse = np.unique(np.array([scores[n] for n in nodes], dtype=np.float64), return_inverse=True)
-    score = tie_values(distinct)[inverse]  # each distinct score rounded once
-    distance = tie_values(np.linalg.norm(positions - centre, axis=1))
-    return np.argsort(np.lexsort((np.arange(len(nodes)), distance, -score)))
+    score, top = tie_values(distinct)[inverse], np.full(count, -np.inf)  # each distinct score rounded once
+    np.maximum.at(top, label, score)
+    rows = np.flatnonzero(score == top[label])  # a few per component: their distances alone are rounded
+    positions = np.array([forest._node[nodes[i]]["pos"] for i in rows.tolist()], dtype=np.float64).reshape(-1, 3)
+    order = np.lexsort((rows, tie_values(np.linalg.norm(positions - centre, axis=1)), label[rows]))
+    return rows[order[np.searchsorted(label[rows][order], np.arange(count))]]
 
 
 def root_forest(forest: nx.Graph, scores: Mapping[int, float], centre: np.ndarray) -> nx.DiGraph:
@@ -67,7 +70,6 @@ def root_forest(forest: nx.Graph, scores: Mapping[int, float], centre: np.ndarra
         ``root``; ``graph["roots"]`` lists the roots in component order (by
         smallest node id).
     """
-    rank = root_ranks(forest, scores, centre)
     nodes = sorted(forest)
     n, ends = len(nodes), np.fromiter(itertools.chain.from_iterable(forest.edges), dtype=np.int64).reshape(-1, 2)
     # rows of the (integer, g2s_core.model) ids by one binary search, not a dict look-up per edge end
@@ -75,10 +77,9 @@ def root_forest(forest: nx.Graph, scores: Mapping[int, float], centre: np.ndarra
     # the forest as an (n+1, n+1) CSR matrix (columns ascending in each row) with a lone virtual node n
     matrix = sp.csr_array((np.ones(2 * len(lo)), (np.r_[lo, hi], np.r_[hi, lo])), shape=(n + 1, n + 1))
     count, label = csgraph.connected_components(matrix, directed=False)
-    # components numbered by their smallest node (the virtual node's comes last), each rooted at its best rank
+    # components numbered by their smallest node (the virtual node's comes last), each rooted at its best node
     label = np.argsort(np.argsort(np.unique(label, return_index=True)[1]))[label[:n]]
-    by_rank = np.lexsort((rank, label))
-    best = by_rank[np.searchsorted(label[by_rank], np.arange(count - 1))]
+    best = component_roots(forest, nodes, label, count - 1, scores, centre)
     # one depth-first search (neighbours by ascending id) from the virtual node, joined to every root
     start = sp.csr_array((np.ones(count - 1), (np.full(count - 1, n), best)), shape=matrix.shape)
     order, parent = csgraph.depth_first_order(matrix + start, n, return_predecessors=True)
@@ -86,8 +87,8 @@ def root_forest(forest: nx.Graph, scores: Mapping[int, float], centre: np.ndarra
     depth, parents = [-1] * (n + 1), parent.tolist()
     for node in order.tolist():
         depth[node] = depth[parents[node]] + 1
-    # networkx's own dicts: a view object per node and edge looked up cost more than copying them
-    node_data, adjacency, root_of, visited = dict(forest.nodes(data=True)), dict(forest.adjacency()), best[label].tolist(), order.tolist()
+    # networkx's own dicts (as g2s_core.model.graph_of writes them): a view object per node and edge looked up costs more
+    node_data, adjacency, root_of, visited = forest._node, forest._adj, best[label].tolist(), order.tolist()
     child = order[parent[order] != n]
     edges = [(nodes[p], nodes[c], dict(adjacency[nodes[p]][nodes[c]])) for p, c in zip(parent[child].tolist(), child.tolist())]
     loop = (parent[lo] != hi) & (parent[hi] != lo)  # the loop edges: a tree edge joins a node to its parent

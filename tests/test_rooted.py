@@ -48,6 +48,26 @@ def test_one_tree_per_component_and_isolated_nodes():
     assert nx.is_forest(rooted.to_undirected())
 
 
+def test_each_component_is_rooted_at_the_first_of_all_its_nodes_ranked():
+    # every node ranked by (rounded score, rounded distance to the centre, id), as the paper's rule reads, against
+    # the roots found by measuring only each component's best-scored nodes; scores and positions tie often
+    from g2s_core.ties import tie_value
+
+    rng = np.random.default_rng(5)
+    for _ in range(200):
+        n = int(rng.integers(1, 40))
+        ids = rng.choice(1000, size=n, replace=False).tolist()
+        positions = {i: tuple(float(v) for v in rng.choice([-1.0, 0.0, 1.0, 0.5], size=3)) for i in ids}
+        edges = [(ids[k], ids[int(rng.integers(k))]) for k in range(1, n) if rng.random() < 0.8]
+        graph = path_forest(positions, edges)
+        scores = {i: float(rng.choice([0.0, 1.0, 0.1 + 0.2, 0.3, -np.inf])) for i in ids}
+        centre = rng.choice([-0.5, 0.0, 0.5], size=3)
+        ranked = sorted(ids, key=lambda i: (-tie_value(scores[i]), tie_value(np.linalg.norm(np.subtract(positions[i], centre))), i))
+        components = sorted((sorted(c) for c in nx.connected_components(graph)), key=lambda c: c[0])
+        expected = [min(component, key=ranked.index) for component in components]
+        assert root_forest(graph, scores, centre).graph["roots"] == expected
+
+
 def test_missing_scores_are_an_error():
     graph = path_forest({0: (0, 0, 0), 1: (1, 0, 0)}, [(0, 1)])
     with pytest.raises(ValueError, match="no score"):
