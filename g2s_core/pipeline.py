@@ -264,8 +264,8 @@ def _with_graph_attributes(part: nx.Graph, graph: nx.Graph) -> nx.Graph:
 
     ``graph``'s attributes are read from networkx's own dicts, not through a view object per node and edge.
     """
-    node_data, adjacency = dict(graph.nodes(data=True)), dict(graph.adjacency())
-    for node, data in part.nodes(data=True):
+    node_data, adjacency = graph._node, graph._adj
+    for node, data in part._node.items():
         data.update(node_data[node])
     for u, v, data in part.edges(data=True):
         data.update(adjacency[u][v])
