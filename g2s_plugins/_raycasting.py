@@ -26,6 +26,7 @@ the origin has a local origin of exactly 0 and is cast against as it is.
 from __future__ import annotations
 
 import math
+import weakref
 from dataclasses import dataclass
 from functools import cached_property
 from typing import Any
@@ -82,6 +83,69 @@ def _make_intersector(mesh: trimesh.Trimesh) -> tuple[Any, str]:
 
 
 @dataclass(frozen=True)
+class _Scene:
+    """What every :class:`RayCaster` of one mesh shares (read-only arrays, (m, ...) per triangle, and the intersector).
+
+    Attributes:
+        triangles: (m, 3, 3) float64, the corners, world coordinates.
+        frame: the local frame of the corners (see the module docs).
+        intersector: trimesh's intersector over a Trimesh of its own (the
+            corners in ``frame``): it holds no reference to the caller's mesh,
+            so the cache of :func:`_scene_of` does not keep that mesh alive.
+        backend: ``"embree"`` or ``"python"``.
+        plane_points: (m, 3) float64, each triangle's first corner, local frame.
+        centroids: (m, 3) float64, each triangle's centroid, local frame.
+        face_normals: (m, 3) float64, unit normals.
+        twin: (m,) int64, :func:`_reversed_twins`.
+    """
+
+    triangles: np.ndarray
+    frame: LocalFrame
+    intersector: Any
+    backend: str
+    plane_points: np.ndarray
+    centroids: np.ndarray
+    face_normals: np.ndarray
+    twin: np.ndarray
+
+    @classmethod
+    def of_mesh(cls, mesh: trimesh.Trimesh) -> _Scene:
+        """Built from ``mesh``: O(m log m) for the twin pairing; Embree's own build waits for the first ray."""
+        triangles = np.asarray(mesh.triangles, dtype=np.float64).reshape(-1, 3, 3)
+        frame = LocalFrame(triangles)
+        # use_embree=False: trimesh's own intersector of ``local`` (``local.ray``) is never asked
+        local = trimesh.Trimesh(frame.to_local(np.asarray(mesh.vertices)), mesh.faces, process=False, use_embree=False)
+        intersector, backend = _make_intersector(local)
+        local_triangles = frame.to_local(triangles)
+        return cls(
+            triangles, frame, intersector, backend, local_triangles[:, 0, :], local_triangles.mean(axis=1),
+            np.asarray(mesh.face_normals, dtype=np.float64), _reversed_twins(triangles),
+        )
+
+
+_SCENES: dict[int, tuple[int, _Scene]] = {}
+"""``id(mesh)`` -> (the mesh's content hash when its scene was built, the scene); an entry leaves with its mesh."""
+
+
+def _scene_of(mesh: trimesh.Trimesh) -> _Scene:
+    """The :class:`_Scene` of ``mesh``, built on first use and again after its vertices or faces change.
+
+    Keyed by the object, not by its content (two equal meshes get two
+    scenes): trimesh's hash of the mesh, kept up to date as its tracked
+    arrays change and cached while they do not, only tells a changed mesh.
+    """
+    key, version = id(mesh), hash(mesh)
+    entry = _SCENES.get(key)
+    if entry is not None and entry[0] == version:
+        return entry[1]
+    if entry is None:  # an id is reused only after its object is gone, and the entry goes first
+        weakref.finalize(mesh, _SCENES.pop, key, None)
+    scene = _Scene.of_mesh(mesh)
+    _SCENES[key] = (version, scene)
+    return scene
+
+
+@dataclass(frozen=True)
 class Hits:
     """First hits of a batch of rays.
 
@@ -120,23 +184,23 @@ class RayCaster:
             intersector works in (see the module docs; not shifted for a
             level near the origin).
         triangles: (m, 3, 3) float64, the mesh's corners, world coordinates.
+
+    Every caster of one mesh object shares that mesh's arrays above and its
+    intersector (:func:`_scene_of`: built on the first caster, in seconds
+    for millions of triangles, and kept while the mesh lives); each counts
+    its own :attr:`rays_cast`. So plugins of one run (the ``sampling``
+    builder, ``mesh_los``) each make a caster of ``context.mesh`` and build
+    the scene once, and their statistics do not depend on each other.
     """
 
     def __init__(self, mesh: trimesh.Trimesh) -> None:
         self.mesh = mesh
-        self.triangles = np.asarray(mesh.triangles, dtype=np.float64).reshape(-1, 3, 3)
-        self.frame = LocalFrame(self.triangles)
-        local = mesh
-        if self.frame.shifted:
-            local = trimesh.Trimesh(self.frame.to_local(np.asarray(mesh.vertices)), mesh.faces, process=False)
-        self.intersector, self.backend = _make_intersector(local)
+        scene = _scene_of(mesh)
+        self.triangles, self.frame, self.face_normals = scene.triangles, scene.frame, scene.face_normals
+        self.intersector, self.backend = scene.intersector, scene.backend
+        self._plane_points, self._centroids, self._twin = scene.plane_points, scene.centroids, scene.twin
         self._embree: Any = None
-        local_triangles = self.frame.to_local(self.triangles)
-        self._plane_points = local_triangles[:, 0, :]
-        self._centroids = local_triangles.mean(axis=1)
-        self.face_normals = np.asarray(mesh.face_normals, dtype=np.float64)
         self.rays_cast = 0
-        self._twin = _reversed_twins(self.triangles)
 
     @property
     def local_origin(self) -> np.ndarray:

@@ -2,10 +2,12 @@
 
 from __future__ import annotations
 
+import gc
 import importlib
 import math
 import sys
 import types
+import weakref
 from pathlib import Path
 
 import networkx as nx
@@ -30,6 +32,7 @@ from g2s_plugins._raycasting import (
     BoxOccupancy,
     FloorTriangles,
     RayCaster,
+    _SCENES,
     _row_starts,
     clear_above,
     disk_inside,
@@ -346,12 +349,43 @@ def test_python_intersector_gives_the_embree_answers(monkeypatch: pytest.MonkeyP
 
     with_embree = RayCaster(mesh)
     assert with_embree.backend == "embree"
+    other = mesh.copy()  # another mesh object: a caster of ``mesh`` would share the Embree scene
     monkeypatch.delattr(trimesh.ray, "ray_pyembree")  # as if embreex failed to import
     monkeypatch.setitem(sys.modules, "trimesh.ray.ray_pyembree", None)
-    python = RayCaster(mesh)
+    python = RayCaster(other)
     assert python.backend == "python"
     for a, b in zip(answers(with_embree), answers(python)):
         np.testing.assert_allclose(a, b, atol=1e-6)
+
+
+def test_casters_of_one_mesh_share_its_scene_and_count_their_own_rays():
+    mesh = level(floor(), box((-0.1, 0.0, -5.0), (0.1, 3.0, 0.0)))
+    origins = np.array([[1.0, 2.0, 1.0], [-3.0, 2.0, -2.0], [0.0, 5.0, -1.0]])
+    first, second = RayCaster(mesh), RayCaster(mesh)
+    assert first.triangles is second.triangles and first.intersector is second.intersector  # built once
+    before = first.first_hits(origins, -UP)
+    np.testing.assert_allclose(before.distance, [2.0, 2.0, 2.0], atol=1e-5)  # the floor, the floor, the wall's top
+    assert (first.rays_cast, second.rays_cast) == (3, 0)
+    assert RayCaster(mesh.copy()).triangles is not first.triangles  # keyed by the object, not its content
+
+    mesh.vertices[:, 1] -= 1.0  # changed in place: a new scene, with the new answers
+    moved = RayCaster(mesh)
+    assert moved.triangles is not first.triangles
+    np.testing.assert_allclose(moved.first_hits(origins, -UP).distance, [3.0, 3.0, 3.0], atol=1e-5)
+    assert RayCaster(mesh).triangles is moved.triangles
+
+    gone, key = weakref.ref(mesh), id(mesh)
+    del mesh, first, second, moved
+    gc.collect()  # trimesh's meshes hold reference cycles of their own
+    assert gone() is None and key not in _SCENES  # the cache kept neither the mesh nor its scene
+
+
+def test_sampling_stats_do_not_depend_on_other_casters_of_the_mesh():
+    mesh = samples.two_floors(ramp=True).mesh
+    alone = build(mesh.copy()).graph["sampling_stats"]
+    RayCaster(mesh).first_hits(np.zeros((5, 3)), UP)  # another plugin casting on the same mesh first
+    assert build(mesh).graph["sampling_stats"] == alone
+    assert build(mesh).graph["sampling_stats"] == alone  # and a second run on the same mesh object
 
 
 def test_nothing_walkable_is_reported_not_an_empty_graph():
