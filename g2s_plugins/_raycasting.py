@@ -108,6 +108,17 @@ class _Scene:
     face_normals: np.ndarray
     twin: np.ndarray
 
+    @cached_property
+    def extent(self) -> tuple[float, float]:
+        """Metres: the corners' largest extent along an axis, and their largest coordinate (absolute) in
+        :attr:`frame` (for :func:`ray_margin`; from the corners' bounds, once per mesh)."""
+        if len(self.triangles) == 0:
+            return 0.0, 0.0
+        corners = self.triangles.reshape(-1, 3)
+        bounds = np.stack([corners.min(axis=0), corners.max(axis=0)])
+        # the frame's shift is monotonic, so the bounds' extreme in it is the extreme of the shifted corners
+        return float((bounds[1] - bounds[0]).max()), float(np.abs(self.frame.to_local(bounds)).max())
+
     @classmethod
     def of_mesh(cls, mesh: trimesh.Trimesh) -> _Scene:
         """Built from ``mesh``: O(m log m) for the twin pairing; Embree's own build waits for the first ray."""
@@ -184,6 +195,7 @@ class RayCaster:
             intersector works in (see the module docs; not shifted for a
             level near the origin).
         triangles: (m, 3, 3) float64, the mesh's corners, world coordinates.
+        scene: what it shares with every caster of the same mesh (below).
 
     Every caster of one mesh object shares that mesh's arrays above and its
     intersector (:func:`_scene_of`: built on the first caster, in seconds
@@ -195,7 +207,7 @@ class RayCaster:
 
     def __init__(self, mesh: trimesh.Trimesh) -> None:
         self.mesh = mesh
-        scene = _scene_of(mesh)
+        self.scene = scene = _scene_of(mesh)
         self.triangles, self.frame, self.face_normals = scene.triangles, scene.frame, scene.face_normals
         self.intersector, self.backend = scene.intersector, scene.backend
         self._plane_points, self._centroids, self._twin = scene.plane_points, scene.centroids, scene.twin
@@ -429,10 +441,8 @@ def ray_margin(caster: RayCaster, reach: float) -> float:
     ulp per coordinate) of the farthest coordinate a ray starts at in the
     caster's local frame: the mesh's, plus ``reach`` metres.
     """
-    corners = caster.triangles
-    size = float(np.ptp(corners.reshape(-1, 3), axis=0).max(initial=0.0))
-    farthest = float(np.abs(caster.frame.to_local(corners)).max(initial=0.0)) + reach
-    return EPSILON + 1e-6 * size + 2.0**-22 * farthest
+    size, farthest = caster.scene.extent
+    return EPSILON + 1e-6 * size + 2.0**-22 * (farthest + reach)
 
 
 def disk_inside(points: np.ndarray, triangles: np.ndarray, radius: float) -> np.ndarray:
@@ -521,6 +531,37 @@ class FloorTriangles:
         its 3 m corners: a mesh whose vertices are shared by about 6 triangles has about m / 2)."""
         vertex = _row_ranks(np.asarray(mesh.vertices, dtype=np.float64))[np.asarray(mesh.faces)]
         return cls(np.asarray(mesh.triangles, dtype=np.float64).reshape(-1, 3, 3), vertex=vertex)
+
+    @classmethod
+    def near(cls, mesh: trimesh.Trimesh, faces: np.ndarray, radius: float) -> tuple[FloorTriangles, np.ndarray]:
+        """What :meth:`disk_inside` needs for XZ disks of ``radius`` around points on the triangles ``faces`` (n,)
+        of ``mesh``: the :meth:`of_mesh` triangles that may hold such a disk, with every triangle sharing a corner
+        with them (all that can lie across their edges), and (n,) each of ``faces`` among them, -1 for a triangle
+        that holds no such disk (:meth:`disk_inside` would answer False).
+
+        A disk nearer than ``radius`` to an edge's line fits only if the triangle across that edge holds a point
+        ``radius - room`` beyond the line (``room``: the disk centre's distance inside it, at most the triangle's
+        height over that edge), so reaches that far from both of the edge's corners: a triangle with an edge whose
+        corners have no triangle with a side that long holds no disk. On a finely tessellated floor (0.2 m
+        triangles under a 0.5 m disk) that is every triangle: the neighbours of a few triangles are found, not of
+        all m (O(m) to pick them, O(k log k) for the k picked).
+        """
+        rank = _row_ranks(np.asarray(mesh.vertices, dtype=np.float64))[np.asarray(mesh.faces)]
+        triangles = np.asarray(mesh.triangles, dtype=np.float64).reshape(-1, 3, 3)
+        xz = triangles[:, :, [0, 2]]
+        side = np.roll(xz, -1, axis=1) - xz
+        length = np.hypot(side[:, :, 0], side[:, :, 1])  # (m, 3), edge i from corner i to corner i + 1
+        with np.errstate(divide="ignore", invalid="ignore"):
+            height = np.abs(side[:, 0, 0] * side[:, 1, 1] - side[:, 0, 1] * side[:, 1, 0])[:, None] / length
+        reach = np.zeros(int(rank.max(initial=-1)) + 1)
+        np.maximum.at(reach, rank.reshape(-1), np.repeat(length.max(axis=1), 3))
+        across = np.minimum(reach[rank], reach[np.roll(rank, -1, axis=1)])
+        # a millimetre kept for rounding: a triangle kept in vain costs time, one dropped in error a ray
+        holds = ((height >= radius) | (across + 1e-3 >= radius - height)).all(axis=1)
+        touched = np.zeros(len(reach), dtype=bool)
+        touched[rank[holds]] = True
+        picked = np.flatnonzero(touched[rank].any(axis=1))
+        return cls(triangles[picked], vertex=rank[picked]), np.where(holds[faces], np.searchsorted(picked, faces), -1)
 
     def edge_room_of(self, points: np.ndarray, edges: np.ndarray) -> np.ndarray:
         """(n,): how far each point lies inside one edge line, ``edges[i]`` = 3 x its triangle + the edge, seen

@@ -696,6 +696,37 @@ def test_floor_neighbours_from_shared_vertices_are_those_from_corners(name):
         np.testing.assert_array_equal(floor.neighbour_edge, expected.neighbour_edge)
 
 
+@pytest.mark.parametrize("radius", [0.2, 0.35, 0.6, 1.0])
+def test_floor_triangles_near_points_give_disk_inside_the_whole_floors_answers(radius):
+    # a floor cut into 4 m triangles beside one cut into 0.2 m triangles (as artists' exports often are), sharing
+    # the corners along x = 4: near() leaves out the small triangles no disk fits in, and answers as the whole
+    # floor's neighbours do
+    parts = [trimesh.Trimesh(*trimesh.remesh.subdivide_to_size(quad(corners).vertices, quad(corners).faces, max_edge=edge))
+             for corners, edge in ((((-4, 0, -4), (-4, 0, 4), (4, 0, 4), (4, 0, -4)), 4.0),
+                                   (((4, 0, -4), (4, 0, 4), (12, 0, 4), (12, 0, -4)), 0.2))]
+    # and a sliver 0.4 m high between three large triangles: a disk on it fits only across its long edge
+    sliver = [[20, 0, 0], [24, 0, 0.4], [28, 0, 0], [24, 0, -8], [20, 0, 8], [28, 0, 8]]
+    parts.append(trimesh.Trimesh(sliver, [[0, 1, 2], [0, 2, 3], [0, 4, 1], [1, 5, 2]], process=False))
+    surface = level(*parts)
+    points, on_face = trimesh.sample.sample_surface(surface, 3000, seed=5)
+    weights = np.random.default_rng(5).dirichlet(np.ones(3), 300)  # points on the sliver
+    points = np.concatenate([points, weights @ np.asarray(sliver, dtype=float)[[0, 1, 2]]])
+    on_face = np.concatenate([on_face, np.full(300, len(surface.faces) - 4)])
+    whole = FloorTriangles.of_mesh(surface)
+    near, on = FloorTriangles.near(surface, on_face, radius)
+    expected, expected_drop = whole.disk_inside(points, on_face, radius, radius)
+    inside = on >= 0
+    assert not expected[~inside].any()  # no triangle left out holds a disk
+    got, drop = near.disk_inside(points[inside], on[inside], radius, radius)
+    np.testing.assert_array_equal(got, expected[inside])
+    np.testing.assert_array_equal(drop, expected_drop[inside])
+    assert expected.any()  # some disks fit: the test looks at something
+    if radius == 0.6:
+        assert expected[-300:].any()  # and on the sliver, across its edges
+    if radius >= 0.35:  # 0.2 m triangles hold no such disk, and their neighbours are not looked for
+        assert len(near.corners) < 0.1 * len(whole.corners)
+
+
 def test_row_starts_pick_each_distinct_row_once():
     rows = np.random.default_rng(3).integers(-2, 3, (5000, 6))
     np.testing.assert_array_equal(rows[_row_starts(rows)], np.unique(rows, axis=0))

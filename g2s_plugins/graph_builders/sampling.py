@@ -272,13 +272,15 @@ def agent_fits(
     reach = around.reach
     ok[:] = False
     if triangles is not None:
+        on = np.asarray(faces)[idx] if faces is not None else np.arange(len(idx))
         if faces is None:
             floor = FloorTriangles(np.asarray(triangles, dtype=np.float64).reshape(-1, 3, 3)[idx], across=False)
         elif isinstance(triangles, trimesh.Trimesh):
-            floor = FloorTriangles.of_mesh(triangles)
+            floor, on = FloorTriangles.near(triangles, on, clearance + around.margin)
         else:
             floor = FloorTriangles(np.asarray(triangles, dtype=np.float64).reshape(-1, 3, 3))
-        plain = around.plain_ground(points[idx], floor, np.asarray(faces)[idx] if faces is not None else np.arange(len(idx)))
+        plain = on >= 0
+        plain[plain] = around.plain_ground(points[idx[plain]], floor, on[plain])
         ok[idx[plain]] = True
         idx = idx[~plain]
     for begin in range(0, len(idx), MAX_LEDGE_BATCH):
