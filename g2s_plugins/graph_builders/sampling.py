@@ -234,7 +234,9 @@ def agent_fits(
     ((n,) int), the corners of a walkable surface (m, 3, 3) and each point
     lies on ``triangles[faces[i]]``, whose neighbours across its edges are
     then known too (given as the surface's Trimesh, found from its shared
-    vertices: quicker on a finely tessellated floor). They only save rays: a point well inside its triangle
+    vertices, and only around the triangles that can hold the clearance disk,
+    :meth:`~g2s_plugins._raycasting.FloorTriangles.near`: quicker on a finely
+    tessellated floor). They only save rays: a point well inside its triangle
     (or the triangles across the edges near it), with nothing else near, has
     ground all around without casting (see :class:`_Surroundings`); the
     answer is the same.
