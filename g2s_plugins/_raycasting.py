@@ -485,7 +485,7 @@ def _row_ranks(rows: np.ndarray) -> np.ndarray:
 class FloorTriangles:
     """Walkable triangles (m, 3, 3) seen from above, and which one lies across each edge (``across``: computed
     from shared corners; off: none). ``vertex``, when given: (m, 3) int, an id per corner, equal exactly where the
-    corners' coordinates are (as :meth:`of_mesh` gives them); else found by sorting the 3 m corners."""
+    corners' coordinates are (as :meth:`near` gives them); else found by sorting the 3 m corners."""
 
     def __init__(self, corners: np.ndarray, across: bool = True, vertex: np.ndarray | None = None) -> None:
         self.corners = corners
@@ -526,18 +526,12 @@ class FloorTriangles:
             self.neighbour.reshape(-1)[edge[extends]] = other[extends] // 3
 
     @classmethod
-    def of_mesh(cls, mesh: trimesh.Trimesh) -> FloorTriangles:
-        """The triangles of ``mesh`` with their neighbours, corners told apart by sorting its vertices (fewer than
-        its 3 m corners: a mesh whose vertices are shared by about 6 triangles has about m / 2)."""
-        vertex = _row_ranks(np.asarray(mesh.vertices, dtype=np.float64))[np.asarray(mesh.faces)]
-        return cls(np.asarray(mesh.triangles, dtype=np.float64).reshape(-1, 3, 3), vertex=vertex)
-
-    @classmethod
     def near(cls, mesh: trimesh.Trimesh, faces: np.ndarray, radius: float) -> tuple[FloorTriangles, np.ndarray]:
         """What :meth:`disk_inside` needs for XZ disks of ``radius`` around points on the triangles ``faces`` (n,)
-        of ``mesh``: the :meth:`of_mesh` triangles that may hold such a disk, with every triangle sharing a corner
-        with them (all that can lie across their edges), and (n,) each of ``faces`` among them, -1 for a triangle
-        that holds no such disk (:meth:`disk_inside` would answer False).
+        of ``mesh``: the triangles that may hold such a disk, with every triangle sharing a corner with them (all
+        that can lie across their edges), and (n,) each of ``faces`` among them, -1 for a triangle that holds no
+        such disk (:meth:`disk_inside` would answer False). Corners are told apart by sorting the mesh's vertices
+        (fewer than its 3 m corners: a mesh whose vertices are shared by about 6 triangles has about m / 2).
 
         A disk nearer than ``radius`` to an edge's line fits only if the triangle across that edge holds a point
         ``radius - room`` beyond the line (``room``: the disk centre's distance inside it, at most the triangle's

@@ -683,15 +683,17 @@ def test_poisson_disk_subset_in_parts_is_the_one_by_one_pick():
 
 @pytest.mark.parametrize("name", ["building", "terrain", "stair_deck"])
 def test_floor_neighbours_from_shared_vertices_are_those_from_corners(name):
-    # of_mesh tells corners apart by the mesh's vertices: the same neighbours as sorting all corners, also where
-    # the mesh repeats a vertex (every face its own three vertices, as an unwelded export has them)
+    # near() tells corners apart by the mesh's vertices: the same neighbours as sorting all corners, also where
+    # the mesh repeats a vertex (every face its own three vertices, as an unwelded export has them); a disk of
+    # radius 0 fits in every triangle, so it keeps them all
     surface = sampling.walkable_surface(generate_level(f"sample:{name}", MeshConfig()), AgentShape.from_config(AGENT))
     corners = np.asarray(surface.triangles)
     unwelded = trimesh.Trimesh(corners.reshape(-1, 3), np.arange(3 * len(corners)).reshape(-1, 3), process=False)
     expected = FloorTriangles(corners)
     assert (expected.neighbour >= 0).any()  # some edges are shared: the test looks at something
     for mesh in (surface, unwelded):
-        floor = FloorTriangles.of_mesh(mesh)
+        floor, on = FloorTriangles.near(mesh, np.arange(len(corners)), 0.0)
+        np.testing.assert_array_equal(on, np.arange(len(corners)))
         np.testing.assert_array_equal(floor.neighbour, expected.neighbour)
         np.testing.assert_array_equal(floor.neighbour_edge, expected.neighbour_edge)
 
@@ -712,7 +714,7 @@ def test_floor_triangles_near_points_give_disk_inside_the_whole_floors_answers(r
     weights = np.random.default_rng(5).dirichlet(np.ones(3), 300)  # points on the sliver
     points = np.concatenate([points, weights @ np.asarray(sliver, dtype=float)[[0, 1, 2]]])
     on_face = np.concatenate([on_face, np.full(300, len(surface.faces) - 4)])
-    whole = FloorTriangles.of_mesh(surface)
+    whole = FloorTriangles(np.asarray(surface.triangles))  # every triangle, neighbours by sorting the corners
     near, on = FloorTriangles.near(surface, on_face, radius)
     expected, expected_drop = whole.disk_inside(points, on_face, radius, radius)
     inside = on >= 0
