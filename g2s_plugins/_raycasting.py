@@ -26,6 +26,7 @@ the origin has a local origin of exactly 0 and is cast against as it is.
 from __future__ import annotations
 
 import math
+import weakref
 from dataclasses import dataclass
 from functools import cached_property
 from typing import Any
@@ -82,6 +83,80 @@ def _make_intersector(mesh: trimesh.Trimesh) -> tuple[Any, str]:
 
 
 @dataclass(frozen=True)
+class _Scene:
+    """What every :class:`RayCaster` of one mesh shares (read-only arrays, (m, ...) per triangle, and the intersector).
+
+    Attributes:
+        triangles: (m, 3, 3) float64, the corners, world coordinates.
+        frame: the local frame of the corners (see the module docs).
+        intersector: trimesh's intersector over a Trimesh of its own (the
+            corners in ``frame``): it holds no reference to the caller's mesh,
+            so the cache of :func:`_scene_of` does not keep that mesh alive.
+        backend: ``"embree"`` or ``"python"``.
+        plane_points: (m, 3) float64, each triangle's first corner, local frame.
+        centroids: (m, 3) float64, each triangle's centroid, local frame.
+        face_normals: (m, 3) float64, unit normals.
+        twin: (m,) int64, :func:`_reversed_twins`.
+    """
+
+    triangles: np.ndarray
+    frame: LocalFrame
+    intersector: Any
+    backend: str
+    plane_points: np.ndarray
+    centroids: np.ndarray
+    face_normals: np.ndarray
+    twin: np.ndarray
+
+    @cached_property
+    def extent(self) -> tuple[float, float]:
+        """Metres: the corners' largest extent along an axis, and their largest coordinate (absolute) in
+        :attr:`frame` (for :func:`ray_margin`; from the corners' bounds, once per mesh)."""
+        if len(self.triangles) == 0:
+            return 0.0, 0.0
+        corners = self.triangles.reshape(-1, 3)
+        bounds = np.stack([corners.min(axis=0), corners.max(axis=0)])
+        # the frame's shift is monotonic, so the bounds' extreme in it is the extreme of the shifted corners
+        return float((bounds[1] - bounds[0]).max()), float(np.abs(self.frame.to_local(bounds)).max())
+
+    @classmethod
+    def of_mesh(cls, mesh: trimesh.Trimesh) -> _Scene:
+        """Built from ``mesh``: O(m log m) for the twin pairing; Embree's own build waits for the first ray."""
+        triangles = np.asarray(mesh.triangles, dtype=np.float64).reshape(-1, 3, 3)
+        frame = LocalFrame(triangles)
+        # use_embree=False: trimesh's own intersector of ``local`` (``local.ray``) is never asked
+        local = trimesh.Trimesh(frame.to_local(np.asarray(mesh.vertices)), mesh.faces, process=False, use_embree=False)
+        intersector, backend = _make_intersector(local)
+        local_triangles = frame.to_local(triangles)
+        return cls(
+            triangles, frame, intersector, backend, local_triangles[:, 0, :], local_triangles.mean(axis=1),
+            np.asarray(mesh.face_normals, dtype=np.float64), _reversed_twins(triangles),
+        )
+
+
+_SCENES: dict[int, tuple[int, _Scene]] = {}
+"""``id(mesh)`` -> (the mesh's content hash when its scene was built, the scene); an entry leaves with its mesh."""
+
+
+def _scene_of(mesh: trimesh.Trimesh) -> _Scene:
+    """The :class:`_Scene` of ``mesh``, built on first use and again after its vertices or faces change.
+
+    Keyed by the object, not by its content (two equal meshes get two
+    scenes): trimesh's hash of the mesh, kept up to date as its tracked
+    arrays change and cached while they do not, only tells a changed mesh.
+    """
+    key, version = id(mesh), hash(mesh)
+    entry = _SCENES.get(key)
+    if entry is not None and entry[0] == version:
+        return entry[1]
+    if entry is None:  # an id is reused only after its object is gone, and the entry goes first
+        weakref.finalize(mesh, _SCENES.pop, key, None)
+    scene = _Scene.of_mesh(mesh)
+    _SCENES[key] = (version, scene)
+    return scene
+
+
+@dataclass(frozen=True)
 class Hits:
     """First hits of a batch of rays.
 
@@ -120,23 +195,24 @@ class RayCaster:
             intersector works in (see the module docs; not shifted for a
             level near the origin).
         triangles: (m, 3, 3) float64, the mesh's corners, world coordinates.
+        scene: what it shares with every caster of the same mesh (below).
+
+    Every caster of one mesh object shares that mesh's arrays above and its
+    intersector (:func:`_scene_of`: built on the first caster, in seconds
+    for millions of triangles, and kept while the mesh lives); each counts
+    its own :attr:`rays_cast`. So plugins of one run (the ``sampling``
+    builder, ``mesh_los``) each make a caster of ``context.mesh`` and build
+    the scene once, and their statistics do not depend on each other.
     """
 
     def __init__(self, mesh: trimesh.Trimesh) -> None:
         self.mesh = mesh
-        self.triangles = np.asarray(mesh.triangles, dtype=np.float64).reshape(-1, 3, 3)
-        self.frame = LocalFrame(self.triangles)
-        local = mesh
-        if self.frame.shifted:
-            local = trimesh.Trimesh(self.frame.to_local(np.asarray(mesh.vertices)), mesh.faces, process=False)
-        self.intersector, self.backend = _make_intersector(local)
+        self.scene = scene = _scene_of(mesh)
+        self.triangles, self.frame, self.face_normals = scene.triangles, scene.frame, scene.face_normals
+        self.intersector, self.backend = scene.intersector, scene.backend
+        self._plane_points, self._centroids, self._twin = scene.plane_points, scene.centroids, scene.twin
         self._embree: Any = None
-        local_triangles = self.frame.to_local(self.triangles)
-        self._plane_points = local_triangles[:, 0, :]
-        self._centroids = local_triangles.mean(axis=1)
-        self.face_normals = np.asarray(mesh.face_normals, dtype=np.float64)
         self.rays_cast = 0
-        self._twin = _reversed_twins(self.triangles)
 
     @property
     def local_origin(self) -> np.ndarray:
@@ -365,10 +441,8 @@ def ray_margin(caster: RayCaster, reach: float) -> float:
     ulp per coordinate) of the farthest coordinate a ray starts at in the
     caster's local frame: the mesh's, plus ``reach`` metres.
     """
-    corners = caster.triangles
-    size = float(np.ptp(corners.reshape(-1, 3), axis=0).max(initial=0.0))
-    farthest = float(np.abs(caster.frame.to_local(corners)).max(initial=0.0)) + reach
-    return EPSILON + 1e-6 * size + 2.0**-22 * farthest
+    size, farthest = caster.scene.extent
+    return EPSILON + 1e-6 * size + 2.0**-22 * (farthest + reach)
 
 
 def disk_inside(points: np.ndarray, triangles: np.ndarray, radius: float) -> np.ndarray:
@@ -411,7 +485,7 @@ def _row_ranks(rows: np.ndarray) -> np.ndarray:
 class FloorTriangles:
     """Walkable triangles (m, 3, 3) seen from above, and which one lies across each edge (``across``: computed
     from shared corners; off: none). ``vertex``, when given: (m, 3) int, an id per corner, equal exactly where the
-    corners' coordinates are (as :meth:`of_mesh` gives them); else found by sorting the 3 m corners."""
+    corners' coordinates are (as :meth:`near` gives them); else found by sorting the 3 m corners."""
 
     def __init__(self, corners: np.ndarray, across: bool = True, vertex: np.ndarray | None = None) -> None:
         self.corners = corners
@@ -452,11 +526,36 @@ class FloorTriangles:
             self.neighbour.reshape(-1)[edge[extends]] = other[extends] // 3
 
     @classmethod
-    def of_mesh(cls, mesh: trimesh.Trimesh) -> FloorTriangles:
-        """The triangles of ``mesh`` with their neighbours, corners told apart by sorting its vertices (fewer than
-        its 3 m corners: a mesh whose vertices are shared by about 6 triangles has about m / 2)."""
-        vertex = _row_ranks(np.asarray(mesh.vertices, dtype=np.float64))[np.asarray(mesh.faces)]
-        return cls(np.asarray(mesh.triangles, dtype=np.float64).reshape(-1, 3, 3), vertex=vertex)
+    def near(cls, mesh: trimesh.Trimesh, faces: np.ndarray, radius: float) -> tuple[FloorTriangles, np.ndarray]:
+        """What :meth:`disk_inside` needs for XZ disks of ``radius`` around points on the triangles ``faces`` (n,)
+        of ``mesh``: the triangles that may hold such a disk, with every triangle sharing a corner with them (all
+        that can lie across their edges), and (n,) each of ``faces`` among them, -1 for a triangle that holds no
+        such disk (:meth:`disk_inside` would answer False). Corners are told apart by sorting the mesh's vertices
+        (fewer than its 3 m corners: a mesh whose vertices are shared by about 6 triangles has about m / 2).
+
+        A disk nearer than ``radius`` to an edge's line fits only if the triangle across that edge holds a point
+        ``radius - room`` beyond the line (``room``: the disk centre's distance inside it, at most the triangle's
+        height over that edge), so reaches that far from both of the edge's corners: a triangle with an edge whose
+        corners have no triangle with a side that long holds no disk. On a finely tessellated floor (0.2 m
+        triangles under a 0.5 m disk) that is every triangle: the neighbours of a few triangles are found, not of
+        all m (O(m) to pick them, O(k log k) for the k picked).
+        """
+        rank = _row_ranks(np.asarray(mesh.vertices, dtype=np.float64))[np.asarray(mesh.faces)]
+        triangles = np.asarray(mesh.triangles, dtype=np.float64).reshape(-1, 3, 3)
+        xz = triangles[:, :, [0, 2]]
+        side = np.roll(xz, -1, axis=1) - xz
+        length = np.hypot(side[:, :, 0], side[:, :, 1])  # (m, 3), edge i from corner i to corner i + 1
+        with np.errstate(divide="ignore", invalid="ignore"):
+            height = np.abs(side[:, 0, 0] * side[:, 1, 1] - side[:, 0, 1] * side[:, 1, 0])[:, None] / length
+        reach = np.zeros(int(rank.max(initial=-1)) + 1)
+        np.maximum.at(reach, rank.reshape(-1), np.repeat(length.max(axis=1), 3))
+        across = np.minimum(reach[rank], reach[np.roll(rank, -1, axis=1)])
+        # a millimetre kept for rounding: a triangle kept in vain costs time, one dropped in error a ray
+        holds = ((height >= radius) | (across + 1e-3 >= radius - height)).all(axis=1)
+        touched = np.zeros(len(reach), dtype=bool)
+        touched[rank[holds]] = True
+        picked = np.flatnonzero(touched[rank].any(axis=1))
+        return cls(triangles[picked], vertex=rank[picked]), np.where(holds[faces], np.searchsorted(picked, faces), -1)
 
     def edge_room_of(self, points: np.ndarray, edges: np.ndarray) -> np.ndarray:
         """(n,): how far each point lies inside one edge line, ``edges[i]`` = 3 x its triangle + the edge, seen

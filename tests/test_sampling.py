@@ -2,10 +2,12 @@
 
 from __future__ import annotations
 
+import gc
 import importlib
 import math
 import sys
 import types
+import weakref
 from pathlib import Path
 
 import networkx as nx
@@ -30,6 +32,7 @@ from g2s_plugins._raycasting import (
     BoxOccupancy,
     FloorTriangles,
     RayCaster,
+    _SCENES,
     _row_starts,
     clear_above,
     disk_inside,
@@ -346,12 +349,43 @@ def test_python_intersector_gives_the_embree_answers(monkeypatch: pytest.MonkeyP
 
     with_embree = RayCaster(mesh)
     assert with_embree.backend == "embree"
+    other = mesh.copy()  # another mesh object: a caster of ``mesh`` would share the Embree scene
     monkeypatch.delattr(trimesh.ray, "ray_pyembree")  # as if embreex failed to import
     monkeypatch.setitem(sys.modules, "trimesh.ray.ray_pyembree", None)
-    python = RayCaster(mesh)
+    python = RayCaster(other)
     assert python.backend == "python"
     for a, b in zip(answers(with_embree), answers(python)):
         np.testing.assert_allclose(a, b, atol=1e-6)
+
+
+def test_casters_of_one_mesh_share_its_scene_and_count_their_own_rays():
+    mesh = level(floor(), box((-0.1, 0.0, -5.0), (0.1, 3.0, 0.0)))
+    origins = np.array([[1.0, 2.0, 1.0], [-3.0, 2.0, -2.0], [0.0, 5.0, -1.0]])
+    first, second = RayCaster(mesh), RayCaster(mesh)
+    assert first.triangles is second.triangles and first.intersector is second.intersector  # built once
+    before = first.first_hits(origins, -UP)
+    np.testing.assert_allclose(before.distance, [2.0, 2.0, 2.0], atol=1e-5)  # the floor, the floor, the wall's top
+    assert (first.rays_cast, second.rays_cast) == (3, 0)
+    assert RayCaster(mesh.copy()).triangles is not first.triangles  # keyed by the object, not its content
+
+    mesh.vertices[:, 1] -= 1.0  # changed in place: a new scene, with the new answers
+    moved = RayCaster(mesh)
+    assert moved.triangles is not first.triangles
+    np.testing.assert_allclose(moved.first_hits(origins, -UP).distance, [3.0, 3.0, 3.0], atol=1e-5)
+    assert RayCaster(mesh).triangles is moved.triangles
+
+    gone, key = weakref.ref(mesh), id(mesh)
+    del mesh, first, second, moved
+    gc.collect()  # trimesh's meshes hold reference cycles of their own
+    assert gone() is None and key not in _SCENES  # the cache kept neither the mesh nor its scene
+
+
+def test_sampling_stats_do_not_depend_on_other_casters_of_the_mesh():
+    mesh = samples.two_floors(ramp=True).mesh
+    alone = build(mesh.copy()).graph["sampling_stats"]
+    RayCaster(mesh).first_hits(np.zeros((5, 3)), UP)  # another plugin casting on the same mesh first
+    assert build(mesh).graph["sampling_stats"] == alone
+    assert build(mesh).graph["sampling_stats"] == alone  # and a second run on the same mesh object
 
 
 def test_nothing_walkable_is_reported_not_an_empty_graph():
@@ -649,17 +683,50 @@ def test_poisson_disk_subset_in_parts_is_the_one_by_one_pick():
 
 @pytest.mark.parametrize("name", ["building", "terrain", "stair_deck"])
 def test_floor_neighbours_from_shared_vertices_are_those_from_corners(name):
-    # of_mesh tells corners apart by the mesh's vertices: the same neighbours as sorting all corners, also where
-    # the mesh repeats a vertex (every face its own three vertices, as an unwelded export has them)
+    # near() tells corners apart by the mesh's vertices: the same neighbours as sorting all corners, also where
+    # the mesh repeats a vertex (every face its own three vertices, as an unwelded export has them); a disk of
+    # radius 0 fits in every triangle, so it keeps them all
     surface = sampling.walkable_surface(generate_level(f"sample:{name}", MeshConfig()), AgentShape.from_config(AGENT))
     corners = np.asarray(surface.triangles)
     unwelded = trimesh.Trimesh(corners.reshape(-1, 3), np.arange(3 * len(corners)).reshape(-1, 3), process=False)
     expected = FloorTriangles(corners)
     assert (expected.neighbour >= 0).any()  # some edges are shared: the test looks at something
     for mesh in (surface, unwelded):
-        floor = FloorTriangles.of_mesh(mesh)
+        floor, on = FloorTriangles.near(mesh, np.arange(len(corners)), 0.0)
+        np.testing.assert_array_equal(on, np.arange(len(corners)))
         np.testing.assert_array_equal(floor.neighbour, expected.neighbour)
         np.testing.assert_array_equal(floor.neighbour_edge, expected.neighbour_edge)
+
+
+@pytest.mark.parametrize("radius", [0.2, 0.35, 0.6, 1.0])
+def test_floor_triangles_near_points_give_disk_inside_the_whole_floors_answers(radius):
+    # a floor cut into 4 m triangles beside one cut into 0.2 m triangles (as artists' exports often are), sharing
+    # the corners along x = 4: near() leaves out the small triangles no disk fits in, and answers as the whole
+    # floor's neighbours do
+    parts = [trimesh.Trimesh(*trimesh.remesh.subdivide_to_size(quad(corners).vertices, quad(corners).faces, max_edge=edge))
+             for corners, edge in ((((-4, 0, -4), (-4, 0, 4), (4, 0, 4), (4, 0, -4)), 4.0),
+                                   (((4, 0, -4), (4, 0, 4), (12, 0, 4), (12, 0, -4)), 0.2))]
+    # and a sliver 0.4 m high between three large triangles: a disk on it fits only across its long edge
+    sliver = [[20, 0, 0], [24, 0, 0.4], [28, 0, 0], [24, 0, -8], [20, 0, 8], [28, 0, 8]]
+    parts.append(trimesh.Trimesh(sliver, [[0, 1, 2], [0, 2, 3], [0, 4, 1], [1, 5, 2]], process=False))
+    surface = level(*parts)
+    points, on_face = trimesh.sample.sample_surface(surface, 3000, seed=5)
+    weights = np.random.default_rng(5).dirichlet(np.ones(3), 300)  # points on the sliver
+    points = np.concatenate([points, weights @ np.asarray(sliver, dtype=float)[[0, 1, 2]]])
+    on_face = np.concatenate([on_face, np.full(300, len(surface.faces) - 4)])
+    whole = FloorTriangles(np.asarray(surface.triangles))  # every triangle, neighbours by sorting the corners
+    near, on = FloorTriangles.near(surface, on_face, radius)
+    expected, expected_drop = whole.disk_inside(points, on_face, radius, radius)
+    inside = on >= 0
+    assert not expected[~inside].any()  # no triangle left out holds a disk
+    got, drop = near.disk_inside(points[inside], on[inside], radius, radius)
+    np.testing.assert_array_equal(got, expected[inside])
+    np.testing.assert_array_equal(drop, expected_drop[inside])
+    assert expected.any()  # some disks fit: the test looks at something
+    if radius == 0.6:
+        assert expected[-300:].any()  # and on the sliver, across its edges
+    if radius >= 0.35:  # 0.2 m triangles hold no such disk, and their neighbours are not looked for
+        assert len(near.corners) < 0.1 * len(whole.corners)
 
 
 def test_row_starts_pick_each_distinct_row_once():

@@ -234,7 +234,9 @@ def agent_fits(
     ((n,) int), the corners of a walkable surface (m, 3, 3) and each point
     lies on ``triangles[faces[i]]``, whose neighbours across its edges are
     then known too (given as the surface's Trimesh, found from its shared
-    vertices: quicker on a finely tessellated floor). They only save rays: a point well inside its triangle
+    vertices, and only around the triangles that can hold the clearance disk,
+    :meth:`~g2s_plugins._raycasting.FloorTriangles.near`: quicker on a finely
+    tessellated floor). They only save rays: a point well inside its triangle
     (or the triangles across the edges near it), with nothing else near, has
     ground all around without casting (see :class:`_Surroundings`); the
     answer is the same.
@@ -272,13 +274,15 @@ def agent_fits(
     reach = around.reach
     ok[:] = False
     if triangles is not None:
+        on = np.asarray(faces)[idx] if faces is not None else np.arange(len(idx))
         if faces is None:
             floor = FloorTriangles(np.asarray(triangles, dtype=np.float64).reshape(-1, 3, 3)[idx], across=False)
         elif isinstance(triangles, trimesh.Trimesh):
-            floor = FloorTriangles.of_mesh(triangles)
+            floor, on = FloorTriangles.near(triangles, on, clearance + around.margin)
         else:
             floor = FloorTriangles(np.asarray(triangles, dtype=np.float64).reshape(-1, 3, 3))
-        plain = around.plain_ground(points[idx], floor, np.asarray(faces)[idx] if faces is not None else np.arange(len(idx)))
+        plain = on >= 0
+        plain[plain] = around.plain_ground(points[idx[plain]], floor, on[plain])
         ok[idx[plain]] = True
         idx = idx[~plain]
     for begin in range(0, len(idx), MAX_LEDGE_BATCH):
