@@ -183,7 +183,11 @@ def test_cli_batch_reports_failures_and_writes_the_summary(levels, tmp_path, cap
 def test_cli_batch_bad_input_is_one_line(levels, tmp_path, capsys):
     assert_user_error(g2s(capsys, "batch", CONFIG, str(levels / "nothing*.obj"), "-o", str(tmp_path / "a")),
                       "nothing*.obj: the pattern matches no files")
-    assert_user_error(g2s(capsys, "batch", CONFIG, "-o", str(tmp_path / "a")), "expected one or more configs")
+    assert_user_error(g2s(capsys, "batch", CONFIG, "-o", str(tmp_path / "a")),
+                      f"batch: expected one or more levels after the configs ({CONFIG})")
+    # a misspelt preset was "batch: expected one or more configs ... followed by one or more levels", not named
+    assert_user_error(g2s(capsys, "batch", "map_anaylsis", "sample:dungeon", "-o", str(tmp_path / "a")),
+                      "map_anaylsis: expected a preset name or a .yaml/.yml config first, then one or more levels (presets: ")
     bad = tmp_path / "bad.yaml"
     bad.write_text("extends: map_analysis\nsimplify: {plugin: nope}\n")
     assert_user_error(g2s(capsys, "batch", str(bad), "sample:dungeon", "-o", str(tmp_path / "a")),

@@ -67,8 +67,11 @@ def batch(args: argparse.Namespace) -> int:
     configs = list(itertools.takewhile(
         lambda item: Path(item).suffix.lower() in (".yaml", ".yml") or item in names, args.items))
     inputs = args.items[len(configs):]
-    if not configs or not inputs:
-        raise G2SError("batch: expected one or more configs (preset names or .yaml files) followed by one or more levels")
+    if not configs:  # named, as a misspelt preset is the likely cause
+        raise G2SError(f"{args.items[0]}: expected a preset name or a .yaml/.yml config first, then one or more levels "
+                       f"(presets: {', '.join(names)})")
+    if not inputs:
+        raise G2SError(f"batch: expected one or more levels after the configs ({' '.join(configs)})")
     if args.workers is not None and args.workers < 1:
         raise G2SError(f"--workers: expected an integer >= 1, got {args.workers}")
     evaluators = [name.strip() for name in args.evaluate.split(",") if name.strip()]
