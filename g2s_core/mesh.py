@@ -95,10 +95,13 @@ def load_mesh(path: str | Path, config: MeshConfig | None = None) -> tuple[trime
 
 def _as_trimesh_reads_obj(text: bytes) -> bytes:
     """An OBJ file's bytes as trimesh's reader understands them: it takes a UTF-8 byte-order mark for part of the
-    first line, splits values on spaces only and lines on ``\\n`` only (an old Mac file ends its lines with ``\\r``),
+    first line, splits values on spaces only, lines on ``\\n`` only (an old Mac file ends its lines with ``\\r``),
+    reads a line only if it starts with its keyword,
     and takes a negative index for one counted back from the file's end, not from the face's line (:func:`_absolute_indices`)."""
     text = text.removeprefix(codecs.BOM_UTF8).replace(b"\t", b" ")
     text = text if b"\n" in text else text.replace(b"\r", b"\n")
+    if b"\n " in text:  # trimesh skips an indented line: a "  v" line was lost and every later vertex index shifted
+        text = re.sub(rb"\n +", b"\n", text)
     # only faces before the last vertex can be misread: the search took 1 % of reading a file whose faces follow its
     # vertices, 6 % of one of 100 objects each followed by its faces (CPU time, 420k triangles, 3 December 2026)
     return _absolute_indices(text) if _RELATIVE_FACE.search(text, 0, text.rfind(b"\nv")) else text

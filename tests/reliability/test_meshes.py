@@ -364,3 +364,12 @@ def test_a_mesh_file_the_system_refuses_to_read_is_named(tmp_path, monkeypatch):
     monkeypatch.setattr(Path, "read_bytes", refused)
     with pytest.raises(MeshError, match=r"locked.obj: cannot read mesh file \(Permission denied\)$"):
         load_mesh(mesh)
+
+
+def test_obj_lines_indented_are_read(tmp_path):
+    # trimesh reads a line only from its first column: an indented "v" line was lost, the faces after it shifted
+    # ("cannot read mesh (IndexError: index 3 is out of bounds ...)", or silently other triangles)
+    (tmp_path / "plain.obj").write_text(OBJ)
+    (tmp_path / "indented.obj").write_text("o floor\n" + "".join("  " + line + "\n" for line in OBJ.splitlines()))
+    plain, indented = (load_mesh(tmp_path / name)[0] for name in ("plain.obj", "indented.obj"))
+    assert indented.vertices.tolist() == plain.vertices.tolist() and indented.faces.tolist() == plain.faces.tolist()
