@@ -185,6 +185,14 @@ def test_cli_batch_bad_input_is_one_line(levels, tmp_path, capsys):
                       "nothing*.obj: the pattern matches no files")
     assert_user_error(g2s(capsys, "batch", CONFIG, "-o", str(tmp_path / "a")),
                       f"batch: expected one or more levels after the configs ({CONFIG})")
+    # the options named as given, not as run_batch's parameters ("executor 'serial' params.workers: unknown key",
+    # "evaluators: Evaluator plugin 'nope' ...", "executor: Executor plugin 'nope' ...")
+    for options, says in ((["--executor", "serial", "--workers", "2"], "--workers: the serial executor takes no workers"),
+                          (["--executor", "local", "--scheduler", "x"], "--scheduler: the local executor takes no scheduler"),
+                          (["--evaluate", "traffic,nope"], "--evaluate: Evaluator plugin 'nope' is not installed"),
+                          (["--executor", "nope"], "--executor: Executor plugin 'nope' is not installed")):
+        assert_user_error(g2s(capsys, "batch", CONFIG, "sample:dungeon", "-o", str(tmp_path / "a"), *options), says)
+    assert not (tmp_path / "a").exists()
     # a misspelt preset was "batch: expected one or more configs ... followed by one or more levels", not named
     assert_user_error(g2s(capsys, "batch", "map_anaylsis", "sample:dungeon", "-o", str(tmp_path / "a")),
                       "map_anaylsis: expected a preset name or a .yaml/.yml config first, then one or more levels (presets: ")
