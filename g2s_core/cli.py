@@ -26,7 +26,7 @@ from rich.table import Table
 
 from g2s_core import version
 from g2s_core.config import parse_assignment, presets, resolve_config
-from g2s_core.errors import G2SError, PluginFailure
+from g2s_core.errors import ConfigError, G2SError, PluginFailure
 from g2s_core.mesh import SAMPLE_PREFIX
 from g2s_core.model import RaisedWarning, RunResult
 from g2s_core.outputs import DEFAULT_FORMATS, check_outdir, chosen_formats, writers
@@ -213,9 +213,10 @@ def _run(args: argparse.Namespace, errors: Console, mesh_name: str | None = None
 
 
 def _demo(args: argparse.Namespace, errors: Console) -> int:
-    for option, value, least in (("--rooms", args.rooms, 1), ("--seed", args.seed, 0)):
-        if value < least:
-            raise G2SError(f"{option}: expected an integer >= {least}, got {value}")
+    try:  # the dungeon generator's own bounds, named as the options the user gave ("rooms: ..." -> "--rooms: ...")
+        installed().validate_params(installed().get("levels", "dungeon"), {"rooms": args.rooms, "seed": args.seed}, key="")
+    except ConfigError as exc:
+        raise ConfigError(f"--{exc}") from None
     args.config, args.mesh = "demo", f"{SAMPLE_PREFIX}dungeon?seed={args.seed}&rooms={args.rooms}"
     code = _run(args, errors, mesh_name=f"dungeon (seed {args.seed}, {args.rooms} rooms)")
     if code == 0 and not (args.quiet or args.json):

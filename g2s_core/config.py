@@ -206,14 +206,14 @@ def _resolve_extends(name: Any, base_dir: Path, source: Path) -> Path:
     if not isinstance(name, str) or not name:
         raise ConfigError(f"{source}: extends: expected a config file or preset name, got {show(name)}")
     try:
-        found = find_config(name, base_dir).resolve()
+        found = find_config(name, base_dir)  # not resolved: messages name the file as the user's paths lead to it
     except ConfigError:
         raise ConfigError(
             f"{source}: extends: no config file or preset named {name!r} (presets: {', '.join(presets())})"
         ) from None
     # a file named after the preset it extends (my/map_analysis.yaml: extends: map_analysis) can only mean the preset
     preset = PRESETS_DIR / f"{Path(name).stem}.yaml"
-    return preset.resolve() if found == Path(source).resolve() and preset.is_file() else found
+    return preset if found.resolve() == Path(source).resolve() and preset.is_file() else found
 
 
 def _deep_merge(base: dict[str, Any], override: dict[str, Any]) -> dict[str, Any]:
@@ -249,7 +249,7 @@ def load_raw_config(path: str | Path, _chain: tuple[Path, ...] = (), sources: li
     data = _read_yaml(path)
     if sources is not None:
         sources.append(path)
-    return _merge_extends(data, resolved.parent, path, (*_chain, resolved), sources)
+    return _merge_extends(data, path.parent, path, (*_chain, resolved), sources)
 
 
 def _merge_extends(

@@ -3,28 +3,46 @@
 trimesh reads a binary STL whose size does not match its header as ASCII STL
 and finds no triangles ("the mesh is empty"), reports a GLB cut short by the
 JSON error of its cut header chunk, and a glTF file whose JSON is broken as a
-missing ``model.gltf`` (it then looks for a zip archive). :func:`describe_damage`
-is asked only after trimesh failed or found no triangles.
+missing ``model.gltf`` (it then looks for a zip archive). Of a damaged OBJ, OFF
+or PLY file it passes numpy's words on ("string or file could not be read to
+its end due to unmatched data", "index 8 is out of bounds", "cannot reshape
+array of size 6 into shape (3,3)"): here the first line at fault is found, or
+the element a binary PLY's data runs short in. :func:`describe_damage` is asked
+only after trimesh failed or the mesh it read was refused.
 """
 
 from __future__ import annotations
 
+import codecs
 import json
-from pathlib import Path
+import math
+import re
+from collections.abc import Callable, Iterable
+from functools import partial
 
 STL_HEADER, STL_TRIANGLE, GLB_HEADER = 84, 50, 12
 """Bytes of a binary STL's header (80 free bytes, then the triangle count, uint32) and of each of its
 triangles; bytes of a GLB's header (``glTF``, the version, then the file's length in bytes, uint32 each)."""
 
+OBJ_VALUES = {b"v": "vertex coordinate", b"vt": "texture coordinate", b"vn": "normal coordinate"}
+"""The OBJ lines of numbers trimesh reads, and what their values are called in messages."""
 
-def describe_damage(path: Path) -> str | None:
-    """Why the STL, GLB or glTF file ``path`` holds no mesh (it ends before or after its header says, or its
-    JSON is broken), in words; ``None`` when none of this is found (or the file cannot be read at all)."""
-    try:
-        data = path.read_bytes()  # asked only once reading failed: a good file is never read twice
-    except OSError:  # the reader's own error says it better
-        return None
-    suffix, size = path.suffix.lower(), len(data)
+Rows = list[tuple[int, list[bytes]]]
+"""A text file's lines as (line number from 1, whitespace-separated values)."""
+
+
+def describe_damage(suffix: str, data: bytes) -> str | None:
+    """Why the bytes ``data`` of a mesh file of type ``suffix`` (``.stl`` ...) hold no mesh, or not the one they
+    should, in words; ``None`` when none of the checks below finds it.
+
+    Text formats are checked line by line (OBJ, OFF, ASCII PLY: values that
+    are not numbers, vertices of fewer than 3 coordinates, faces of fewer than
+    3 corners or naming a vertex the file lacks, fewer rows than the header
+    declares); binary formats by their size against their header.
+    """
+    suffix, size = suffix.lower(), len(data)
+    if size == 0:
+        return "the file is empty (0 bytes)"
     if suffix == ".stl" and size >= STL_HEADER and (not data.startswith(b"solid") or b"\0" in data[:STL_HEADER]):
         count = int.from_bytes(data[80:STL_HEADER], "little")  # ASCII STL starts with "solid", never holds a NUL
         if size < (expected := STL_HEADER + STL_TRIANGLE * count):
@@ -41,4 +59,160 @@ def describe_damage(path: Path) -> str | None:
             where = f"line {exc.lineno}, column {exc.colno}: {exc.msg}" if isinstance(exc, json.JSONDecodeError) else \
                 "nested too deeply" if isinstance(exc, RecursionError) else "not UTF-8 text"
             return f"not valid glTF JSON ({where})"
+    readers: dict[str, Callable[[bytes], str | None]] = {".obj": _obj_damage, ".off": _off_damage, ".ply": _ply_damage}
+    return readers[suffix](data) if suffix in readers else None
+
+
+def _obj_damage(data: bytes) -> str | None:
+    """The first line of an OBJ file that is wrong. Faces number vertices from 1, or back from their line when
+    negative; ``f 1 2 9`` in a file of 3 vertices is wrong wherever it stands (trimesh reads every vertex first)."""
+    rows = _rows(data.removeprefix(codecs.BOM_UTF8).splitlines())
+    vertices, before = sum(values[:1] == [b"v"] for _, values in rows), 0
+    for number, line in rows:
+        (key, *values), problem = line or [b""], None
+        if key in OBJ_VALUES:
+            before += key == b"v"
+            problem = _vertex(values) if key == b"v" else _not_numbers(values, OBJ_VALUES[key])
+        elif key == b"f" and len(values) < 3:
+            problem = f"a face of {_many(len(values), 'corner')} (at least 3 make a face)"
+        elif key == b"f" and (wrong := next((c for c in values if not re.fullmatch(rb"-?\d+(/-?\d*){0,2}", c)), None)):
+            problem = f"face corner {_text(wrong)!r} is not a vertex index (expected v, v/vt, v//vn or v/vt/vn)"
+        elif key == b"f":
+            indices = [int(corner.split(b"/")[0]) for corner in values]
+            problem = next((f"a face refers to vertex {i}{_named_vertices(i, before, vertices)}" for i in indices
+                            if not (0 < i <= vertices or 0 < before + 1 + i <= before)), None)
+        if problem:
+            return f"line {number}: {problem}"
     return None
+
+
+def _named_vertices(index: int, before: int, vertices: int) -> str:
+    """Why the OBJ face index ``index`` names no vertex, ``before`` of the file's ``vertices`` preceding its line."""
+    if index == 0:
+        return "; OBJ numbers vertices from 1"
+    return f"; the file has {_many(vertices, 'vertex')}" if index > 0 else \
+        f", counted back from its line, but the file lists {_many(before, 'vertex')} before it"
+
+
+def _off_damage(data: bytes) -> str | None:
+    """The first line of an OFF file that is wrong: ``OFF``, the counts ``vertices faces edges`` (on the same line
+    or the next), then a vertex per line (x y z first) and a face per line (its corner count, then indices from 0)."""
+    rows = [(number, values) for number, values in _rows(line.split(b"#")[0] for line in data.splitlines()) if values]
+    if not rows or not rows[0][1][0].endswith(b"OFF"):
+        return f"expected OFF on the first line, got {_text(b' '.join(rows[0][1])) if rows else 'only comments'!r}"
+    (number, (_, *counts)), body = rows[0], rows[1:]
+    if not counts and body:
+        (number, counts), body = body[0], body[1:]
+    if len(counts) < 2 or not all(count.isdigit() for count in counts[:2]):
+        return f"line {number}: expected the counts of vertices and faces, got {repr(_text(b' '.join(counts))) if counts else 'nothing'}"
+    vertices, faces = int(counts[0]), int(counts[1])
+    return _declared_rows(body, [("vertex", vertices, _vertex), ("face", faces, partial(_face, vertices=vertices))])
+
+
+def _ply_damage(data: bytes) -> str | None:
+    """Where a PLY file's data disagrees with its header: an ASCII file's first line at fault, or the element a
+    binary file's data runs short in (a list's length taken from its first row, as trimesh reads it)."""
+    header, found, body = data.partition(b"end_header")
+    if not found:
+        return "the PLY header has no end_header line"
+    elements: list[tuple[str, int, list[list[bytes]]]] = []
+    for number, line in _rows(header.splitlines()):
+        key, *values = line or [b""]
+        if key == b"element" and len(values) == 2 and values[1].isdigit():
+            elements.append((_text(values[0]), int(values[1]), []))
+        elif key == b"property" and elements and len(values) == (4 if values[:1] == [b"list"] else 2):
+            elements[-1][2].append(values[:-1])
+        elif key in (b"element", b"property"):
+            return f"header line {number}: expected 'element NAME COUNT' or 'property TYPE NAME', got {_text(b' '.join([key, *values]))!r}"
+    body, start = body.partition(b"\n")[2], header.count(b"\n") + 2
+    if re.search(rb"^format ascii", header, re.MULTILINE):
+        vertices = next((count for name, count, _ in elements if name == "vertex"), 0)
+        return _declared_rows(_rows(body.splitlines(), start), [
+            (name, count, partial(_ply_row, properties=properties, name=name, vertices=vertices))
+            for name, count, properties in elements])
+    order, offset = "big" if b"big_endian" in header else "little", 0
+    for name, count, properties in elements:
+        row = sum(_ply_size(p[0]) for p in properties if p[0] != b"list")
+        for _, length, item in (p for p in properties if p[0] == b"list"):
+            row += _ply_size(length) + _ply_size(item) * int.from_bytes(body[offset + row:offset + row + _ply_size(length)], order)
+        if (holds := (len(body) - offset) // row if row else count) < count:
+            return f"binary PLY ends early: the header declares {_many(count, name)}, the file holds {holds}"
+        offset += count * row
+    return f"binary PLY has {len(body) - offset} bytes more than its header declares" if len(body) > offset else None
+
+
+def _ply_row(values: list[bytes], properties: list[list[bytes]], name: str, vertices: int) -> str | None:
+    """What is wrong with an ASCII PLY row of element ``name``: a value that is not a finite number, its length
+    against the header's properties, or a face's corners."""
+    if problem := _not_numbers(values, "value", finite=True):
+        return problem
+    length = 0
+    for kind, *_ in properties:
+        length += 1 + (int(float(values[length])) if kind == b"list" and length < len(values) else 0)
+    if len(values) != length:
+        return f"{len(values)} values, the header declares {length} for each {name}"
+    return _face(values, vertices) if name == "face" and properties[:1] and properties[0][0] == b"list" else None
+
+
+def _vertex(values: list[bytes]) -> str | None:
+    """What is wrong with an OBJ or OFF vertex's values (x y z, then optional values such as a colour)."""
+    if problem := _not_numbers(values, "vertex coordinate", finite=True):
+        return problem
+    return f"a vertex of {len(values)} coordinates (expected x y z)" if len(values) < 3 else None
+
+
+def _face(values: list[bytes], vertices: int) -> str | None:
+    """What is wrong with an OFF or PLY face row ``N i1 ... iN`` (indices from 0; OFF may add a colour)."""
+    if not values[0].isdigit():
+        return f"a face's corner count {_text(values[0])!r} is not a whole number"
+    count, corners = int(values[0]), values[1:1 + int(values[0])]
+    if count < 3 or len(corners) < count:
+        return f"a face of {_many(count, 'corner')}" + (" (at least 3 make a face)" if count < 3 else f" lists {len(corners)}")
+    if wrong := next((corner for corner in corners if not corner.isdigit()), None):
+        return f"face corner {_text(wrong)!r} is not a vertex index"
+    wrong_index = next((int(corner) for corner in corners if int(corner) >= vertices), None)
+    return None if wrong_index is None else f"a face refers to vertex {wrong_index}; the file has {_many(vertices, 'vertex')} (numbered from 0)"
+
+
+def _declared_rows(rows: Rows, elements: list[tuple[str, int, Callable[[list[bytes]], str | None]]]) -> str | None:
+    """The first of ``rows`` at fault, taken in turn by ``elements`` (name, count the header declares, check of a
+    row), or that there are fewer rows than declared."""
+    for name, count, check in elements:
+        if len(rows) < count:
+            return f"the header declares {_many(count, name)}, the file has {len(rows)}"
+        if problem := next((f"line {number}: {p}" for number, values in rows[:count] if (p := check(values))), None):
+            return problem
+        rows = rows[count:]
+    return None
+
+
+def _not_numbers(values: list[bytes], what: str, finite: bool = False) -> str | None:
+    """The first of ``values`` that is not a number (or, when ``finite``, not a finite one), in words."""
+    for value in values:
+        try:
+            number = float(value)
+        except ValueError:
+            return f"{what} {_text(value)!r} is not a number"
+        if finite and not math.isfinite(number):
+            return f"{what} {_text(value)!r} is not a finite number"
+    return None
+
+
+def _rows(lines: Iterable[bytes], start: int = 1) -> Rows:
+    """Each line's number and whitespace-separated values."""
+    return [(number, line.split()) for number, line in enumerate(lines, start)]
+
+
+def _ply_size(kind: bytes) -> int:
+    """Bytes of a PLY scalar type: ``char`` ... ``double``, or ``int8`` ... ``float64``."""
+    bits = re.sub(rb"\D", b"", kind)
+    return int(bits) // 8 if bits else {b"char": 1, b"uchar": 1, b"short": 2, b"ushort": 2, b"double": 8}.get(kind, 4)
+
+
+def _many(count: int, name: str) -> str:
+    """``1 vertex``, ``2 vertices``, ``0 faces``."""
+    return f"{count} {name if count == 1 else {'vertex': 'vertices'}.get(name, f'{name}s')}"
+
+
+def _text(value: bytes) -> str:
+    return value.decode("utf-8", errors="replace")

@@ -66,6 +66,13 @@ levels measured reach 2.2 (corridors: walls along z, no ceiling), the Z-up ones 
 A corridor along x whose walls are tall for its width reaches it too (the 15-degree sloped corridor: 3.3),
 so the shape alone does not decide: :func:`walks_upright`."""
 
+Z_UP_UNWALKED_RATIO = 4.0
+"""Flat area along z over that along y above which a level no graph builder found a walkable surface on looks
+Z-up. With no surface to show it upright (:func:`walks_upright`), the shape alone decides, so more of it than
+:data:`Z_UP_FLAT_AREA_RATIO` asks: a tall piece read right has more wall than floor (a stairwell's landings too
+narrow for the agent failed with the up-axis hint before 3 December 2026); the tall pieces measured reach 3.28,
+the Z-up levels that fail so 5.09 and more (a platform on its side, ``Hallway.obj``'s file; docs/errors.md)."""
+
 UPRIGHT_PIECE_SHARE = 0.7
 """Share of the walkable area in its largest connected piece from which that piece may show the level upright
 (:func:`walks_upright`): the Z-up levels read as Y-up measured keep 0.65 or less in one piece (each wall's
@@ -217,9 +224,13 @@ def likely_causes(mesh: trimesh.Trimesh, agent: AgentConfig, winding: bool = Tru
 
     ``winding``: also look for closed bodies wound inside out that hide their floor
     (:func:`hidden_floor_bodies`, the costly check). ``graph``: the walkable surface found, if any:
-    one that :func:`walks_upright` clears the up axis.
+    one that :func:`walks_upright` clears the up axis; without one, only a flat area along z over
+    :data:`Z_UP_UNWALKED_RATIO` times that along y names it.
     """
-    z_up = looks_z_up(mesh, agent.max_slope) and not (graph is not None and walks_upright(graph, mesh, agent))
+    if graph is None:
+        z_up = flat_area_ratio(mesh, agent.max_slope) > Z_UP_UNWALKED_RATIO
+    else:
+        z_up = looks_z_up(mesh, agent.max_slope) and not walks_upright(graph, mesh, agent)
     causes = [UP_AXIS_HINT] if z_up else []
     bodies = hidden_floor_bodies(mesh, agent) if winding else 0
     if bodies:

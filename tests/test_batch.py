@@ -86,7 +86,7 @@ def test_serial_pairs_are_what_g2s_run_writes(serial, levels, tmp_path, capsys):
 def test_a_broken_level_is_recorded_and_the_batch_goes_on(serial):
     out, summary = serial
     broken = summary.set_index("level").loc["broken"]
-    assert broken["status"] == "failed" and "broken.obj" in broken["error"] and "NaN" in broken["error"]
+    assert broken["status"] == "failed" and "broken.obj" in broken["error"] and "'nan' is not a finite number" in broken["error"]
     assert not (out / "map_analysis" / "broken").exists()
     on_disk = pd.read_parquet(out / "summary.parquet")
     pd.testing.assert_frame_equal(on_disk, summary)
@@ -175,7 +175,7 @@ def test_cli_batch_reports_failures_and_writes_the_summary(levels, tmp_path, cap
                                "--workers", "2", "--format", "json")
     assert code == 4, stderr
     lines = [line for line in stderr.splitlines() if line.strip()]
-    assert len(lines) == 1 and lines[0].startswith("g2s: map_analysis on broken failed: ") and "NaN" in lines[0]
+    assert len(lines) == 1 and lines[0].startswith("g2s: map_analysis on broken failed: ") and "'nan' is not a finite number" in lines[0]
     assert "4 pairs: 3 ok (0 already finished), 1 failed" in stdout
     assert (out / "summary.parquet").is_file() and (out / RECORDS).is_dir()
 
@@ -183,7 +183,11 @@ def test_cli_batch_reports_failures_and_writes_the_summary(levels, tmp_path, cap
 def test_cli_batch_bad_input_is_one_line(levels, tmp_path, capsys):
     assert_user_error(g2s(capsys, "batch", CONFIG, str(levels / "nothing*.obj"), "-o", str(tmp_path / "a")),
                       "nothing*.obj: the pattern matches no files")
-    assert_user_error(g2s(capsys, "batch", CONFIG, "-o", str(tmp_path / "a")), "expected one or more configs")
+    assert_user_error(g2s(capsys, "batch", CONFIG, "-o", str(tmp_path / "a")),
+                      f"batch: expected one or more levels after the configs ({CONFIG})")
+    # a misspelt preset was "batch: expected one or more configs ... followed by one or more levels", not named
+    assert_user_error(g2s(capsys, "batch", "map_anaylsis", "sample:dungeon", "-o", str(tmp_path / "a")),
+                      "map_anaylsis: expected a preset name or a .yaml/.yml config first, then one or more levels (presets: ")
     bad = tmp_path / "bad.yaml"
     bad.write_text("extends: map_analysis\nsimplify: {plugin: nope}\n")
     assert_user_error(g2s(capsys, "batch", str(bad), "sample:dungeon", "-o", str(tmp_path / "a")),
@@ -196,12 +200,16 @@ def test_cli_batch_bad_input_is_one_line(levels, tmp_path, capsys):
 
 
 def test_cli_batch_executor_is_any_installed_one_with_its_own_parameters(tmp_path, capsys):
+    # the options are named as given; before 3 December 2026 as run_batch's parameters ("executor: ...",
+    # "executor 'local' params.scheduler: unknown key (expected one of: workers)", "evaluators: ...")
     assert_user_error(g2s(capsys, "batch", CONFIG, SAMPLES[0], "-o", str(tmp_path / "a"), "--executor", "ray"),
-                      "executor: Executor plugin 'ray' is not installed (installed: dask, local, serial)")
+                      "--executor: Executor plugin 'ray' is not installed (installed: dask, local, serial)")
     assert_user_error(g2s(capsys, "batch", CONFIG, SAMPLES[0], "-o", str(tmp_path / "a"), "--scheduler", "tcp://x:1"),
-                      "executor 'local' params.scheduler: unknown key (expected one of: workers)")
-    assert_user_error(g2s(capsys, "batch", CONFIG, SAMPLES[0], "-o", str(tmp_path / "a"), "--evaluate", "nope"),
-                      "evaluators: Evaluator plugin 'nope' is not installed")
+                      "--scheduler: the local executor takes no scheduler (see g2s plugins --stage executors)")
+    assert_user_error(g2s(capsys, "batch", CONFIG, SAMPLES[0], "-o", str(tmp_path / "a"), "--executor", "serial",
+                          "--workers", "2"), "--workers: the serial executor takes no workers")
+    assert_user_error(g2s(capsys, "batch", CONFIG, SAMPLES[0], "-o", str(tmp_path / "a"), "--evaluate", "traffic,nope"),
+                      "--evaluate: Evaluator plugin 'nope' is not installed")
     assert not (tmp_path / "a").exists()
     code, out, _ = g2s(capsys, "plugins", "--stage", "executors")
     assert code == 0 and [line.split()[0] for line in out.splitlines() if line.startswith("  ") and not

@@ -89,6 +89,20 @@ def test_extends_cycle_is_an_error(tmp_path):
     assert "extends: cycle myself.yaml -> myself.yaml" in error_of(write(tmp_path, "myself.yaml", "extends: myself\n"))
 
 
+def test_errors_in_extended_configs_name_them_by_the_users_relative_paths(tmp_path, monkeypatch):
+    # the files a config extends were named by their absolute paths (the cycle, the bad value, the missing preset)
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "sub").mkdir()
+    write(tmp_path, "sub/a.yaml", "extends: b.yaml\n")
+    write(tmp_path, "sub/b.yaml", "extends: a.yaml\n")
+    assert error_of(Path("sub/a.yaml")) == "sub/a.yaml: extends: cycle a.yaml -> b.yaml -> a.yaml"
+    write(tmp_path, "sub/c.yaml", "extends: d\n")
+    write(tmp_path, "sub/d.yaml", "extends: nope\n")
+    assert error_of(Path("sub/c.yaml")).startswith("sub/d.yaml: extends: no config file or preset named 'nope'")
+    write(tmp_path, "sub/d.yaml", "agent: [\n")
+    assert error_of(Path("sub/c.yaml")).startswith("sub/d.yaml: invalid YAML at line 2")
+
+
 @pytest.mark.parametrize("extends", ["map_analysis", "map_analysis.yaml"])
 def test_a_file_named_after_the_preset_it_extends_extends_the_preset(tmp_path, extends):
     mine = write(tmp_path, "map_analysis.yaml", f"extends: {extends}\nagent: {{radius: 0.3}}\n")

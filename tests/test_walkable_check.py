@@ -245,3 +245,46 @@ def test_cleaning_flips_inside_out_bodies_and_counts_them():
     assert [body.volume > 0 for body in cleaned.split(only_watertight=False)] == [True, True]
     _, counts = clean_mesh(right)
     assert counts["flipped_bodies"] == 0
+
+
+def narrow_stairwell(storeys: int = 4, storey: float = 3.0) -> trimesh.Trimesh:
+    """A 4 x 4 m tower (3.6 m inside, walls 0.2 m) of ``storeys`` storeys read right (Y up): per storey a flight
+    of 9 solid steps 1.5 m wide along the south wall, a 0.8 m half landing on the east, a flight back along the
+    north wall and a 0.8 m landing on the west. Its flat area along z is 1.96 times that along y."""
+    def box(low, high):
+        low, high = np.asarray(low, dtype=float), np.asarray(high, dtype=float)
+        return trimesh.creation.box(extents=high - low).apply_translation((low + high) / 2)
+
+    top = storeys * storey + 1.0
+    parts = [box((-0.2, -0.2, -0.2), (0.0, top, 3.8)), box((3.6, -0.2, -0.2), (3.8, top, 3.8)),
+             box((0.0, -0.2, -0.2), (3.6, top, 0.0)), box((0.0, -0.2, 3.6), (3.6, top, 3.8)),
+             box((0.0, -0.2, 0.0), (3.6, 0.0, 3.6))]
+    for s in range(storeys):
+        y = s * storey
+        for i in range(9):
+            parts.append(box((0.8 + 2.0 * i / 9, y - 0.2, 0.0), (0.8 + 2.0 * (i + 1) / 9, y + storey / 2 * (i + 1) / 9, 1.5)))
+            parts.append(box((2.8 - 2.0 * (i + 1) / 9, y + storey / 2 - 0.2, 2.1),
+                             (2.8 - 2.0 * i / 9, y + storey / 2 + storey / 2 * (i + 1) / 9, 3.6)))
+        parts.append(box((2.8, y + storey / 2 - 0.2, 0.0), (3.6, y + storey / 2, 3.6)))
+        parts.append(box((0.0, y + storey - 0.2, 1.5 if s + 1 < storeys else 0.0), (0.8, y + storey, 3.6)))
+    return trimesh.util.concatenate(parts)
+
+
+@pytest.mark.parametrize("builder", BUILDERS)
+def test_no_walkable_surface_on_a_tall_piece_read_right_does_not_name_the_up_axis(builder):
+    # an agent too wide for the 0.8 m landings: the error added "if the file is Z-up, set `mesh: {up_axis: z}`"
+    # (the tower is 3.3 times as tall as wide and has more wall along z than floor), though it stands upright
+    tower = narrow_stairwell()
+    assert looks_z_up(tower, PIECE_AGENT["max_slope"])
+    with pytest.raises(G2SError, match="no walkable surface") as caught:
+        graph_run(tower, builder, agent={**PIECE_AGENT, "radius": 0.9})
+    assert "up_axis: z" not in str(caught.value) and "the level is 4 x 4 m (x, z), 13.2 m tall" in str(caught.value)
+
+
+@pytest.mark.parametrize("builder", BUILDERS)
+def test_no_walkable_surface_on_a_platform_on_its_side_names_the_up_axis(builder):
+    # a 20 x 20 m platform with a 0.3 m curb, written Z-up and read Y-up: its flat area faces along z
+    platform = load_sample("curb_platform").mesh
+    with pytest.raises(G2SError, match="no walkable surface") as caught:
+        graph_run(as_z_up_file(platform), builder)
+    assert "`mesh: {up_axis: z}`" in str(caught.value)

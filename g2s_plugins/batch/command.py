@@ -22,6 +22,7 @@ from g2s_core.config import presets
 from g2s_core.errors import G2SError
 from g2s_core.mesh import SAMPLE_PREFIX, SUPPORTED_SUFFIXES
 from g2s_core.plugin import hookimpl
+from g2s_core.registry import installed
 from g2s_plugins.batch.runner import INSTALL_HINT, Progress, missing_extra, run_batch
 
 NAME = "batch"
@@ -67,11 +68,22 @@ def batch(args: argparse.Namespace) -> int:
     configs = list(itertools.takewhile(
         lambda item: Path(item).suffix.lower() in (".yaml", ".yml") or item in names, args.items))
     inputs = args.items[len(configs):]
-    if not configs or not inputs:
-        raise G2SError("batch: expected one or more configs (preset names or .yaml files) followed by one or more levels")
+    if not configs:  # named, as a misspelt preset is the likely cause
+        raise G2SError(f"{args.items[0]}: expected a preset name or a .yaml/.yml config first, then one or more levels "
+                       f"(presets: {', '.join(names)})")
+    if not inputs:
+        raise G2SError(f"batch: expected one or more levels after the configs ({' '.join(configs)})")
     if args.workers is not None and args.workers < 1:
         raise G2SError(f"--workers: expected an integer >= 1, got {args.workers}")
     evaluators = [name.strip() for name in args.evaluate.split(",") if name.strip()]
+    # named as the options the user gave (run_batch names its own parameters: "executor", "evaluators", "params.workers")
+    registry = installed()
+    executor = registry.get("executors", args.executor, key="--executor")
+    for option in ("workers", "scheduler"):
+        if getattr(args, option) is not None and option not in executor.params_model.model_fields:
+            raise G2SError(f"--{option}: the {executor.name} executor takes no {option} (see g2s plugins --stage executors)")
+    for name in evaluators:
+        registry.get("evaluators", name, key="--evaluate")
     with missing_extra(), _progress_bar(errors, args.quiet) as show:
         summary = run_batch(configs, inputs, args.outdir, args.executor, workers=args.workers,
                             scheduler=args.scheduler, evaluators=evaluators, formats=args.format, force=args.force,
