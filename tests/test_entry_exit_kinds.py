@@ -183,3 +183,34 @@ def test_bars_across_a_doorway_close_it(bar_step: float) -> None:
     found = _detect(_room_with_low_window(2.9, bar_step)).openings
     assert len(found) == 1 and found[0].position[2] == pytest.approx(-0.3, abs=0.02)
     assert len(_detect(_room_with_low_window(2.9)).openings) == 2  # without bars it is a doorway
+
+
+@pytest.mark.parametrize("width, yaw", [(2.4, 0.0), (1.2, 22.0), (1.6, 45.0)])
+def test_a_roof_is_not_the_main_floor(width: float, yaw: float) -> None:
+    # A flat roof on the corridor's walls is walkable for Recast, unreachable, and larger than the floor it
+    # covers (it overhangs the walls): it was taken for the main floor and its four edges, 3.2 m up, for the
+    # openings, while the corridor's ends were dropped. A floor over others (a roof) is now never the main one.
+    level = pieces.roofed_corridor(width=width)
+    level = pieces.turned(level, yaw) if yaw else level
+    found = _detect(level.mesh).openings
+    assert len(found) == 2
+    for known in level.openings:
+        best = min(found, key=lambda o: float(np.linalg.norm(np.subtract(o.position, known.position))))
+        assert float(np.linalg.norm(np.subtract(best.position, known.position))) <= 0.05
+        assert best.width == pytest.approx(width, abs=0.05)
+
+
+def test_area_below_measures_what_a_floor_covers() -> None:
+    # Floor 10 x 4 m, a roof 12 x 6 m straight over it 3 m up, a ledge 2 x 4 m beside it at 1 m: the roof has
+    # the floor's navmesh under it, the floor and the ledge nothing (the ledge is within the agent's height).
+    mesh = trimesh.util.concatenate([_box(0, 10, -SLAB, 0, 0, 4), _box(-1, 11, 3.0, 3.2, -1, 5),
+                                     _box(12, 14, 0.8, 1.0, 0, 4)])
+    navmesh = build_navmesh(mesh.vertices, mesh.faces, CONFIG.agent, RecastParams(**CONFIG.graph.params))
+    height = np.asarray(navmesh.centres)[:, 1]
+    label = np.where(height > 2.0, 0, np.where(height > 0.5, 1, 2))
+    share = entry_exit.area_below(navmesh, label, float(CONFIG.agent.height))
+    roof_area = float(np.sum(np.asarray(navmesh.areas)[label == 0]))
+    floor_area = float(np.sum(np.asarray(navmesh.areas)[label == 2]))
+    assert share[0] == pytest.approx(floor_area / roof_area, rel=0.1)
+    assert share[1] == 0.0 and share[2] == 0.0
+

@@ -63,7 +63,8 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
      navmesh floor of largest area, the main floor and what the agent
      reaches from it (an unreachable wall top, a roof, holds no exit); a
      floor is a navmesh component with those whose boundary comes within
-     ``r`` at the same height (Recast's grid cuts narrow passages at some yaws);
+     ``r`` at the same height (Recast's grid cuts narrow passages at some yaws),
+     and a floor over others (a closed ceiling's top) is a roof, never the main one;
    * outer extent (``extent_heights``): modular pieces meet their neighbours
      at their outer extent, facing out. The opening's gap to the piece's
      extent along its heading (the largest ``vertex . heading`` of the mesh
@@ -666,14 +667,16 @@ class Detection:
 
 
 def main_floor(navmesh: NavMesh, agent: AgentConfig, loops: list[BoundaryLoop] | None = None) -> np.ndarray:
-    """(P,) bool: the polygons of the navmesh's floor of largest area.
+    """(P,) bool: the polygons of the navmesh's floor of largest area that is no roof.
 
     A floor is a connected component of the navmesh, together with every other one whose boundary
     comes within one agent radius horizontally and the agent's climb vertically. Recast's voxel
     grid can cut a floor in two where a passage barely wider than the agent pinches (the shared
     Hallway turned by 5 and 60 degrees: halves 0.15 and 0.02 m apart), while a wall between two
     floors, however thin, leaves them at least 1.12 m apart (generated, at every yaw; see
-    docs/entry_exit.md). ``loops``: the navmesh's :func:`boundary_loops`, when the caller has them.
+    docs/entry_exit.md). A roof is a floor over others (:func:`area_below`, at least ``_ROOF_SHARE``
+    of its area): a closed ceiling's top outweighs the floor under it, which it covers and overhangs.
+    ``loops``: the navmesh's :func:`boundary_loops`, when the caller has them.
     """
     neighbours = np.asarray(navmesh.neighbours)
     if len(neighbours) == 0:
@@ -687,7 +690,49 @@ def main_floor(navmesh: NavMesh, agent: AgentConfig, loops: list[BoundaryLoop] |
     pairs = samples.polygon[near[level]]
     label = polygon_components(neighbours, pairs)
     area = np.bincount(label, weights=np.asarray(navmesh.areas, dtype=np.float64))
+    roof = area_below(navmesh, label, float(agent.height)) >= _ROOF_SHARE
+    area[roof] = -1.0  # the lowest floor has none below it, so some floor is never a roof
     return label == int(np.argmax(area))
+
+
+_ROOF_SHARE = 0.1
+"""A floor over other floors of at least this share of its own area, an agent's height or more below, is a roof.
+Measured (docs/entry_exit.md, "A fourth round of piece kinds"): roofs over corridors 1.2-2.4 m wide 0.22-0.79
+(a roof overhangs its walls, and the floor under it is eroded by the agent's radius from them), the shared
+Hallway's roof 0.07-0.34; every other floor of the generated and shared pieces (wall tops, a round island) 0.00-0.04."""
+# Barycentric points sampling each triangle (its centroid and one towards each corner, equal weights):
+# a roof's few large polygons are sampled inside, not only at their centroids.
+_COVER_POINTS = np.array([[1 / 3, 1 / 3, 1 / 3], [2 / 3, 1 / 6, 1 / 6], [1 / 6, 2 / 3, 1 / 6], [1 / 6, 1 / 6, 2 / 3]])
+
+
+def area_below(navmesh: NavMesh, label: np.ndarray, height: float) -> np.ndarray:
+    """(C,) the area of other components lying under each component, at least ``height`` lower, over its own area.
+
+    A roof or a ceiling's top (walkable for Recast, as real exports close their rooms) lies over
+    the floor it covers; a floor does not. ``label``: (P,) component of every polygon, C = its
+    largest + 1; ``height``: the agent's height, metres. Each polygon, cut into a fan of triangles,
+    is sampled at four points per triangle weighted by area; from each, a ray cast up from
+    ``height`` above it finds the first navmesh surface there, which it lies under. O(P log P)
+    with the ray caster's BVH.
+    """
+    polygons = np.asarray(navmesh.polygons)
+    vertices = np.asarray(navmesh.vertices, dtype=np.float64)
+    fan = range(1, polygons.shape[1] - 1)  # triangle (0, j, j + 1) of each polygon with a corner j + 1
+    owners = [np.flatnonzero(polygons[:, j + 1] >= 0) for j in fan]
+    triangles = np.concatenate([polygons[o][:, [0, j, j + 1]] for j, o in zip(fan, owners)])
+    owner = np.concatenate(owners)
+    corners = vertices[triangles]
+    area = 0.5 * np.linalg.norm(np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0]), axis=1)
+    points = np.einsum("kj,tjd->tkd", _COVER_POINTS, corners).reshape(-1, 3)
+    caster = RayCaster(trimesh.Trimesh(vertices, triangles, process=False))
+    hits = caster.first_hits(points + UP * height, UP)
+    own = np.repeat(label[owner], len(_COVER_POINTS))
+    over = label[owner[np.maximum(hits.face, 0)]]
+    under = hits.hit & (over != own)
+    weight = np.repeat(area / len(_COVER_POINTS), len(_COVER_POINTS))
+    count = int(label.max()) + 1
+    total = np.bincount(label[owner], weights=area, minlength=count)
+    return np.bincount(over[under], weights=weight[under], minlength=count) / np.maximum(total, 1e-12)
 
 
 _AXIS_SNAP_COS = math.cos(math.radians(20.0))
