@@ -214,3 +214,41 @@ def test_area_below_measures_what_a_floor_covers() -> None:
     assert share[0] == pytest.approx(floor_area / roof_area, rel=0.1)
     assert share[1] == 0.0 and share[2] == 0.0
 
+
+def _room_under_eaves(eaves: float, canopy: float | None = None) -> trimesh.Trimesh:
+    """Room 8 x 6 m, walls 0.3 m to 3 m, 1.6 m doorways west and east (z 2.2-3.8) under 2.4 m lintels, and a
+    roof slab 3.0-3.2 m up overhanging the walls by ``eaves`` all round; with ``canopy``, a slab 0.1 m thick at that
+    height over the west doorway, 1 m deep outside it."""
+    w, d, t = 8.0, 6.0, 0.3
+    parts = [_box(-t, w + t, -SLAB, 0.0, -t, d + t), _box(-t, w + t, -SLAB, TALL, -t, 0.0),
+             _box(-t, w + t, -SLAB, TALL, d, d + t),
+             _box(-eaves - t, w + t + eaves, TALL, TALL + 0.2, -t - eaves, d + t + eaves)]
+    for x0, x1 in ((-t, 0.0), (w, w + t)):
+        parts += [_box(x0, x1, -SLAB, TALL, 0.0, 2.2), _box(x0, x1, -SLAB, TALL, 3.8, d), _box(x0, x1, 2.4, TALL, 2.2, 3.8)]
+    if canopy is not None:
+        parts.append(_box(-t - 1.0, -t, canopy, canopy + 0.1, 2.0, 4.0))
+    return trimesh.util.concatenate(parts)
+
+
+@pytest.mark.parametrize("yaw", [0.0, 30.0])
+def test_doors_under_eaves_are_openings(yaw: float) -> None:
+    # A roof overhanging the walls by 1 m hid both doors: one radius beyond the floor's edge the eaves stood
+    # straight above (3 m up, over the agent's head), and the eaves set the piece's extent 1 m beyond the
+    # doors. Now only what stands lower than the agent's height there blocks the way, and the extent is the
+    # geometry's up to the agent's head over the opening.
+    mesh = _room_under_eaves(1.0)
+    turn = pieces.yaw_about_centre(mesh, yaw)
+    mesh.apply_transform(turn)
+    known = trimesh.transform_points(np.array([[-0.3, 0.0, 3.0], [8.3, 0.0, 3.0]]), turn)
+    found = _detect(mesh).openings
+    assert len(found) == 2
+    for point in known:
+        best = min(found, key=lambda o: float(np.linalg.norm(np.subtract(o.position, point))))
+        assert float(np.linalg.norm(np.subtract(best.position, point))) <= 0.05
+        assert best.width == pytest.approx(1.6, abs=0.05)
+
+
+def test_a_canopy_lower_than_the_agent_closes_the_way() -> None:
+    # The same room without eaves, a canopy 1.7 m up over the west doorway outside: the agent cannot stand there.
+    found = _detect(_room_under_eaves(0.0, canopy=1.7)).openings
+    assert len(found) == 1 and found[0].position[0] == pytest.approx(8.3, abs=0.02)

@@ -25,8 +25,9 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
    way), the same way ``h`` below the agent's height is clear up to the edge
    (head room: no lintel lower than the agent) and, with
    ``leave_footprint``, one agent radius beyond the edge nothing of the piece
-   lies straight below or above (a ledge over a lower floor of the piece, a
-   roof over its floor or a hole under its ramp is no exit). A sample with a
+   lies straight below, nor above lower than the head-room ray (a ledge over
+   a lower floor of the piece, a canopy too low to stand under or a hole
+   under its ramp is no exit; eaves are no obstacle). A sample with a
    way out takes the one reaching the edge soonest. The fan, rather than one
    ray straight out, finds the way out of Recast's V-shaped notch in a
    doorway through a thick wall, whose slanted sides face the jambs. With
@@ -67,8 +68,9 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
      and a floor over others (a closed ceiling's top) is a roof, never the main one;
    * outer extent (``extent_heights``): modular pieces meet their neighbours
      at their outer extent, facing out. The opening's gap to the piece's
-     extent along its heading (the largest ``vertex . heading`` of the mesh
-     minus the midpoint's; a heading near one of the piece's own horizontal
+     extent along its heading (the largest ``vertex . heading`` over the faces
+     reaching down to the agent's height over the opening, minus the
+     midpoint's: eaves and upper storeys overhanging it do not count; a heading near one of the piece's own horizontal
      axes, taken from its walls, is measured along that axis) must not exceed
      ``extent_heights`` agent heights.
 
@@ -217,7 +219,8 @@ class Params(PluginParams):
     leave_footprint: bool = Field(
         True,
         description="an exit must lead out of the piece: one agent radius beyond its edge nothing of the "
-        "piece lies straight below or above (false: keep ledges and holes inside the piece)",
+        "piece lies straight below, nor above lower than the agent's height less sample_height (false: keep "
+        "ledges, holes inside the piece and exits under low canopies)",
     )
     step_up: bool = Field(
         True,
@@ -394,7 +397,8 @@ def _fan(
         beyond = lifted[rows] + dirs[rows] * (edge[rows] + s.radius)[:, None]
         below = caster.first_hits(beyond, -UP).distance
         above = caster.first_hits(beyond, UP).distance
-        ok[rows[np.isfinite(below) | np.isfinite(above)]] = False
+        # Above, only what the agent could not stand under blocks the way (the head-room rule): eaves do not.
+        ok[rows[np.isfinite(below) | (above < s.height - s.lift)]] = False
     # The soonest way out; among equals, the one closest to straight out.
     cost = np.where(ok, edge, np.inf).reshape(m, k) + 1e-6 * np.abs(theta)[None, :]
     pick = np.argmin(cost, axis=1)
@@ -784,6 +788,15 @@ def piece_frame(mesh: trimesh.Trimesh) -> np.ndarray:
     return np.array([[u[0], 0.0, u[1]], [-u[0], 0.0, -u[1]], [-u[1], 0.0, u[0]], [u[1], 0.0, -u[0]]])
 
 
+def corners_below(corners: np.ndarray, top: float) -> np.ndarray:
+    """(k, 3) the corners of the triangles ``corners`` (F, 3, 3) that reach down to ``top`` (m) or lower.
+
+    The piece's extent at an opening is that of what the agent meets there: ``top`` is its head over
+    the opening, and eaves, a roof or an upper storey overhanging the opening do not count.
+    """
+    return corners[corners[:, :, 1].min(axis=1) <= top].reshape(-1, 3)
+
+
 def extent_gap(vertices: np.ndarray, point: np.ndarray, heading: np.ndarray, frame: np.ndarray) -> float:
     """How far ``point`` lies inside the extent of ``vertices`` along the horizontal unit ``heading``, m.
 
@@ -877,7 +890,7 @@ def detect_openings(
         return Detection((), (), ())
     p_first, p_last = _extend(kept, caster, s)
 
-    vertices = np.asarray(mesh.vertices, dtype=np.float64)
+    corners = np.asarray(mesh.triangles, dtype=np.float64)
     frame = piece_frame(mesh)
     min_width = float(params.min_width_radii) * s.radius
     max_gap = None if params.extent_heights is None else float(params.extent_heights) * s.height
@@ -890,7 +903,7 @@ def detect_openings(
         heading[1] = 0.0
         heading = _unit(heading) if np.linalg.norm(heading) > 1e-6 else e.outward
         mid = (a + b) / 2.0
-        gap = max(0.0, extent_gap(vertices, mid, heading, frame))
+        gap = max(0.0, extent_gap(corners_below(corners, mid[1] + s.height), mid, heading, frame))
         if max_gap is not None and gap > max_gap:
             return None
         extent_factor = 1.0 if max_gap is None else 1.0 - gap / max_gap
