@@ -163,16 +163,20 @@ def test_cracks_between_unwelded_floor_tiles_are_no_edge(yaw: float) -> None:
         assert best.width == pytest.approx(1.6, abs=0.05)
 
 
+def _assert_known(found: tuple, points: list, widths: list[float]) -> None:
+    """As many openings as known ones, one within 0.05 m of each known midpoint ``points`` and as wide (0.05 m)."""
+    assert len(found) == len(points)
+    for point, width in zip(points, widths):
+        best = min(found, key=lambda o: float(np.linalg.norm(np.subtract(o.position, point))))
+        assert float(np.linalg.norm(np.subtract(best.position, point))) <= 0.05
+        assert best.width == pytest.approx(width, abs=0.05)
+
+
 @pytest.mark.parametrize("yaw", [0.0, 30.0])
 def test_the_sloped_corridor_family_gives_its_two_doors(yaw: float) -> None:
     level = pieces.sloped_corridor(slope=12.0)
     level = pieces.turned(level, yaw) if yaw else level
-    found = _detect(level.mesh).openings
-    assert len(found) == 2
-    for known in level.openings:
-        best = min(found, key=lambda o: float(np.linalg.norm(np.subtract(o.position, known.position))))
-        assert float(np.linalg.norm(np.subtract(best.position, known.position))) <= 0.05
-        assert best.width == pytest.approx(known.width, abs=0.05)
+    _assert_known(_detect(level.mesh).openings, [o.position for o in level.openings], [o.width for o in level.openings])
 
 
 @pytest.mark.parametrize("bar_step", [0.15, 0.25])
@@ -192,12 +196,7 @@ def test_a_roof_is_not_the_main_floor(width: float, yaw: float) -> None:
     # openings, while the corridor's ends were dropped. A floor over others (a roof) is now never the main one.
     level = pieces.roofed_corridor(width=width)
     level = pieces.turned(level, yaw) if yaw else level
-    found = _detect(level.mesh).openings
-    assert len(found) == 2
-    for known in level.openings:
-        best = min(found, key=lambda o: float(np.linalg.norm(np.subtract(o.position, known.position))))
-        assert float(np.linalg.norm(np.subtract(best.position, known.position))) <= 0.05
-        assert best.width == pytest.approx(width, abs=0.05)
+    _assert_known(_detect(level.mesh).openings, [o.position for o in level.openings], [width, width])
 
 
 def test_area_below_measures_what_a_floor_covers() -> None:
@@ -240,12 +239,7 @@ def test_doors_under_eaves_are_openings(yaw: float) -> None:
     turn = pieces.yaw_about_centre(mesh, yaw)
     mesh.apply_transform(turn)
     known = trimesh.transform_points(np.array([[-0.3, 0.0, 3.0], [8.3, 0.0, 3.0]]), turn)
-    found = _detect(mesh).openings
-    assert len(found) == 2
-    for point in known:
-        best = min(found, key=lambda o: float(np.linalg.norm(np.subtract(o.position, point))))
-        assert float(np.linalg.norm(np.subtract(best.position, point))) <= 0.05
-        assert best.width == pytest.approx(1.6, abs=0.05)
+    _assert_known(_detect(mesh).openings, known, [1.6, 1.6])
 
 
 def test_a_canopy_lower_than_the_agent_closes_the_way() -> None:
