@@ -119,7 +119,7 @@ def prior_measurements(
     loose = entry_exit.Params(min_width_radii=0.0, extent_heights=None, main_floor_only=False)
     detection = entry_exit.detect_openings(mesh, navmesh, agent, loose)
     main = entry_exit.main_floor(navmesh, agent)
-    vertices = np.asarray(mesh.vertices, dtype=np.float64)
+    corners = np.asarray(mesh.triangles, dtype=np.float64)
     frame = entry_exit.piece_frame(mesh)
     rows = []
     for opening, polygons in zip(detection.openings, detection.polygons):
@@ -127,7 +127,8 @@ def prior_measurements(
         known = bool(len(reference)) and bool(
             np.min(np.linalg.norm(reference - position, axis=1)) <= pieces.MATCH_DISTANCE
         )
-        gap = entry_exit.extent_gap(vertices, position, np.asarray(opening.heading), frame)
+        below = entry_exit.corners_below(corners, position[1] + float(agent.height))
+        gap = entry_exit.extent_gap(below, position, np.asarray(opening.heading), frame)
         rows.append((known, opening.width, gap, bool(main[list(polygons)].any())))
     return rows
 

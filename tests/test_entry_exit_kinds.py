@@ -163,16 +163,20 @@ def test_cracks_between_unwelded_floor_tiles_are_no_edge(yaw: float) -> None:
         assert best.width == pytest.approx(1.6, abs=0.05)
 
 
+def _assert_known(found: tuple, points: list, widths: list[float]) -> None:
+    """As many openings as known ones, one within 0.05 m of each known midpoint ``points`` and as wide (0.05 m)."""
+    assert len(found) == len(points)
+    for point, width in zip(points, widths):
+        best = min(found, key=lambda o: float(np.linalg.norm(np.subtract(o.position, point))))
+        assert float(np.linalg.norm(np.subtract(best.position, point))) <= 0.05
+        assert best.width == pytest.approx(width, abs=0.05)
+
+
 @pytest.mark.parametrize("yaw", [0.0, 30.0])
 def test_the_sloped_corridor_family_gives_its_two_doors(yaw: float) -> None:
     level = pieces.sloped_corridor(slope=12.0)
     level = pieces.turned(level, yaw) if yaw else level
-    found = _detect(level.mesh).openings
-    assert len(found) == 2
-    for known in level.openings:
-        best = min(found, key=lambda o: float(np.linalg.norm(np.subtract(o.position, known.position))))
-        assert float(np.linalg.norm(np.subtract(best.position, known.position))) <= 0.05
-        assert best.width == pytest.approx(known.width, abs=0.05)
+    _assert_known(_detect(level.mesh).openings, [o.position for o in level.openings], [o.width for o in level.openings])
 
 
 @pytest.mark.parametrize("bar_step", [0.15, 0.25])
@@ -183,3 +187,62 @@ def test_bars_across_a_doorway_close_it(bar_step: float) -> None:
     found = _detect(_room_with_low_window(2.9, bar_step)).openings
     assert len(found) == 1 and found[0].position[2] == pytest.approx(-0.3, abs=0.02)
     assert len(_detect(_room_with_low_window(2.9)).openings) == 2  # without bars it is a doorway
+
+
+@pytest.mark.parametrize("width, yaw", [(2.4, 0.0), (1.2, 22.0), (1.6, 45.0)])
+def test_a_roof_is_not_the_main_floor(width: float, yaw: float) -> None:
+    # A flat roof on the corridor's walls is walkable for Recast, unreachable, and larger than the floor it
+    # covers (it overhangs the walls): it was taken for the main floor and its four edges, 3.2 m up, for the
+    # openings, while the corridor's ends were dropped. A floor over others (a roof) is now never the main one.
+    level = pieces.roofed_corridor(width=width)
+    level = pieces.turned(level, yaw) if yaw else level
+    _assert_known(_detect(level.mesh).openings, [o.position for o in level.openings], [width, width])
+
+
+def test_area_below_measures_what_a_floor_covers() -> None:
+    # Floor 10 x 4 m, a roof 12 x 6 m straight over it 3 m up, a ledge 2 x 4 m beside it at 1 m: the roof has
+    # the floor's navmesh under it, the floor and the ledge nothing (the ledge is within the agent's height).
+    mesh = trimesh.util.concatenate([_box(0, 10, -SLAB, 0, 0, 4), _box(-1, 11, 3.0, 3.2, -1, 5),
+                                     _box(12, 14, 0.8, 1.0, 0, 4)])
+    navmesh = build_navmesh(mesh.vertices, mesh.faces, CONFIG.agent, RecastParams(**CONFIG.graph.params))
+    height = np.asarray(navmesh.centres)[:, 1]
+    label = np.where(height > 2.0, 0, np.where(height > 0.5, 1, 2))
+    share = entry_exit.area_below(navmesh, label, float(CONFIG.agent.height))
+    roof_area = float(np.sum(np.asarray(navmesh.areas)[label == 0]))
+    floor_area = float(np.sum(np.asarray(navmesh.areas)[label == 2]))
+    assert share[0] == pytest.approx(floor_area / roof_area, rel=0.1)
+    assert share[1] == 0.0 and share[2] == 0.0
+
+
+def _room_under_eaves(eaves: float, canopy: float | None = None) -> trimesh.Trimesh:
+    """Room 8 x 6 m, walls 0.3 m to 3 m, 1.6 m doorways west and east (z 2.2-3.8) under 2.4 m lintels, and a
+    roof slab 3.0-3.2 m up overhanging the walls by ``eaves`` all round; with ``canopy``, a slab 0.1 m thick at that
+    height over the west doorway, 1 m deep outside it."""
+    w, d, t = 8.0, 6.0, 0.3
+    parts = [_box(-t, w + t, -SLAB, 0.0, -t, d + t), _box(-t, w + t, -SLAB, TALL, -t, 0.0),
+             _box(-t, w + t, -SLAB, TALL, d, d + t),
+             _box(-eaves - t, w + t + eaves, TALL, TALL + 0.2, -t - eaves, d + t + eaves)]
+    for x0, x1 in ((-t, 0.0), (w, w + t)):
+        parts += [_box(x0, x1, -SLAB, TALL, 0.0, 2.2), _box(x0, x1, -SLAB, TALL, 3.8, d), _box(x0, x1, 2.4, TALL, 2.2, 3.8)]
+    if canopy is not None:
+        parts.append(_box(-t - 1.0, -t, canopy, canopy + 0.1, 2.0, 4.0))
+    return trimesh.util.concatenate(parts)
+
+
+@pytest.mark.parametrize("yaw", [0.0, 30.0])
+def test_doors_under_eaves_are_openings(yaw: float) -> None:
+    # A roof overhanging the walls by 1 m hid both doors: one radius beyond the floor's edge the eaves stood
+    # straight above (3 m up, over the agent's head), and the eaves set the piece's extent 1 m beyond the
+    # doors. Now only what stands lower than the agent's height there blocks the way, and the extent is the
+    # geometry's up to the agent's head over the opening.
+    mesh = _room_under_eaves(1.0)
+    turn = pieces.yaw_about_centre(mesh, yaw)
+    mesh.apply_transform(turn)
+    known = trimesh.transform_points(np.array([[-0.3, 0.0, 3.0], [8.3, 0.0, 3.0]]), turn)
+    _assert_known(_detect(mesh).openings, known, [1.6, 1.6])
+
+
+def test_a_canopy_lower_than_the_agent_closes_the_way() -> None:
+    # The same room without eaves, a canopy 1.7 m up over the west doorway outside: the agent cannot stand there.
+    found = _detect(_room_under_eaves(0.0, canopy=1.7)).openings
+    assert len(found) == 1 and found[0].position[0] == pytest.approx(8.3, abs=0.02)

@@ -99,6 +99,7 @@ def test_registry_names_and_load():
         "cross_platform",
         "chamfered_platform",
         "sloped_corridor",
+        "roofed_corridor",
         "corner_corridor",
         "t_junction",
         "bridge",

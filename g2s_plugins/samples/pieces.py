@@ -22,6 +22,8 @@ wrong on real pieces (see docs/entry_exit.md):
 * :func:`sloped_corridor`: a corridor rising 10 degrees, a doorway in each end
   wall; at the lower one the floor slopes down out of the piece (found after
   the held-out families).
+* :func:`roofed_corridor`: a corridor under a flat roof whose walkable top
+  outweighs the floor it covers (found in the fourth round of piece kinds).
 
 The held-out families (:data:`HELD_OUT`) are shapes designers build that the
 rules were not measured on when they were set (docs/entry_exit.md, "Piece
@@ -384,6 +386,33 @@ def sloped_corridor(
     return b.build("sloped_corridor", openings, _meta(params, (y0, y1)))
 
 
+@validate_call
+def roofed_corridor(
+    length: PositiveFloat = 12.0, width: PositiveFloat = 2.4, wall: PositiveFloat = 0.3, roof: PositiveFloat = 0.2
+) -> SampleLevel:
+    """A walled corridor open at both ends under a flat roof ``roof`` thick on its walls, as real exports close them.
+
+    The roof's top (``TALL + roof`` up, over the floor and the walls) is walkable for Recast but
+    unreachable, and outweighs the floor it covers. Found in the fourth round of piece kinds: the
+    roof was taken for the main floor and its edges for the openings (docs/entry_exit.md).
+    Openings: the corridor's two ends, as wide as it.
+
+    Args:
+        length: the corridor's length along X, metres.
+        width: clear width between the walls along Z, metres.
+        wall: thickness of the walls, metres.
+        roof: thickness of the roof slab, metres.
+    """
+    b = _LevelBuilder()
+    b.floors(0.0, length, -wall, width + wall, 0.0)
+    _box(b, 0.0, length, -SLAB_THICKNESS, TALL, -wall, 0.0)
+    _box(b, 0.0, length, -SLAB_THICKNESS, TALL, width, width + wall)
+    _box(b, 0.0, length, TALL, TALL + roof, -wall, width + wall)
+    openings = [_opening((0.0, 0.0, width / 2), _W, width), _opening((length, 0.0, width / 2), _E, width)]
+    params = {"length": length, "width": width, "wall": wall, "roof": roof}
+    return b.build("roofed_corridor", openings, _meta(params, (0.0, TALL + roof), components=2))
+
+
 # --------------------------------------------------------------------------
 # Held-out families: shapes designers build that the rules above were not measured on
 # --------------------------------------------------------------------------
@@ -735,6 +764,7 @@ PIECES = {
     "cross_platform": cross_platform,
     "chamfered_platform": chamfered_platform,
     "sloped_corridor": sloped_corridor,
+    "roofed_corridor": roofed_corridor,
     **HELD_OUT,
 }
 """Piece name -> factory (keyword arguments only), the held-out families included; registered in ``levels.SAMPLES``."""

@@ -25,8 +25,9 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
    way), the same way ``h`` below the agent's height is clear up to the edge
    (head room: no lintel lower than the agent) and, with
    ``leave_footprint``, one agent radius beyond the edge nothing of the piece
-   lies straight below or above (a ledge over a lower floor of the piece, a
-   roof over its floor or a hole under its ramp is no exit). A sample with a
+   lies straight below, nor above lower than the head-room ray (a ledge over
+   a lower floor of the piece, a canopy too low to stand under or a hole
+   under its ramp is no exit; eaves are no obstacle). A sample with a
    way out takes the one reaching the edge soonest. The fan, rather than one
    ray straight out, finds the way out of Recast's V-shaped notch in a
    doorway through a thick wall, whose slanted sides face the jambs. With
@@ -63,11 +64,13 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
      navmesh floor of largest area, the main floor and what the agent
      reaches from it (an unreachable wall top, a roof, holds no exit); a
      floor is a navmesh component with those whose boundary comes within
-     ``r`` at the same height (Recast's grid cuts narrow passages at some yaws);
+     ``r`` at the same height (Recast's grid cuts narrow passages at some yaws),
+     and a floor over others (a closed ceiling's top) is a roof, never the main one;
    * outer extent (``extent_heights``): modular pieces meet their neighbours
      at their outer extent, facing out. The opening's gap to the piece's
-     extent along its heading (the largest ``vertex . heading`` of the mesh
-     minus the midpoint's; a heading near one of the piece's own horizontal
+     extent along its heading (the largest ``vertex . heading`` over the faces
+     reaching down to the agent's height over the opening, minus the
+     midpoint's: eaves and upper storeys overhanging it do not count; a heading near one of the piece's own horizontal
      axes, taken from its walls, is measured along that axis) must not exceed
      ``extent_heights`` agent heights.
 
@@ -216,7 +219,8 @@ class Params(PluginParams):
     leave_footprint: bool = Field(
         True,
         description="an exit must lead out of the piece: one agent radius beyond its edge nothing of the "
-        "piece lies straight below or above (false: keep ledges and holes inside the piece)",
+        "piece lies straight below, nor above lower than the agent's height less sample_height (false: keep "
+        "ledges, holes inside the piece and exits under low canopies)",
     )
     step_up: bool = Field(
         True,
@@ -393,7 +397,8 @@ def _fan(
         beyond = lifted[rows] + dirs[rows] * (edge[rows] + s.radius)[:, None]
         below = caster.first_hits(beyond, -UP).distance
         above = caster.first_hits(beyond, UP).distance
-        ok[rows[np.isfinite(below) | np.isfinite(above)]] = False
+        # Above, only what the agent could not stand under blocks the way (the head-room rule): eaves do not.
+        ok[rows[np.isfinite(below) | (above < s.height - s.lift)]] = False
     # The soonest way out; among equals, the one closest to straight out.
     cost = np.where(ok, edge, np.inf).reshape(m, k) + 1e-6 * np.abs(theta)[None, :]
     pick = np.argmin(cost, axis=1)
@@ -666,14 +671,16 @@ class Detection:
 
 
 def main_floor(navmesh: NavMesh, agent: AgentConfig, loops: list[BoundaryLoop] | None = None) -> np.ndarray:
-    """(P,) bool: the polygons of the navmesh's floor of largest area.
+    """(P,) bool: the polygons of the navmesh's floor of largest area that is no roof.
 
     A floor is a connected component of the navmesh, together with every other one whose boundary
     comes within one agent radius horizontally and the agent's climb vertically. Recast's voxel
     grid can cut a floor in two where a passage barely wider than the agent pinches (the shared
     Hallway turned by 5 and 60 degrees: halves 0.15 and 0.02 m apart), while a wall between two
     floors, however thin, leaves them at least 1.12 m apart (generated, at every yaw; see
-    docs/entry_exit.md). ``loops``: the navmesh's :func:`boundary_loops`, when the caller has them.
+    docs/entry_exit.md). A roof is a floor over others (:func:`area_below`, at least ``_ROOF_SHARE``
+    of its area): a closed ceiling's top outweighs the floor under it, which it covers and overhangs.
+    ``loops``: the navmesh's :func:`boundary_loops`, when the caller has them.
     """
     neighbours = np.asarray(navmesh.neighbours)
     if len(neighbours) == 0:
@@ -687,7 +694,49 @@ def main_floor(navmesh: NavMesh, agent: AgentConfig, loops: list[BoundaryLoop] |
     pairs = samples.polygon[near[level]]
     label = polygon_components(neighbours, pairs)
     area = np.bincount(label, weights=np.asarray(navmesh.areas, dtype=np.float64))
+    roof = area_below(navmesh, label, float(agent.height)) >= _ROOF_SHARE
+    area[roof] = -1.0  # the lowest floor has none below it, so some floor is never a roof
     return label == int(np.argmax(area))
+
+
+_ROOF_SHARE = 0.1
+"""A floor over other floors of at least this share of its own area, an agent's height or more below, is a roof.
+Measured (docs/entry_exit.md, "A fourth round of piece kinds"): roofs over corridors 1.2-2.4 m wide 0.22-0.79
+(a roof overhangs its walls, and the floor under it is eroded by the agent's radius from them), the shared
+Hallway's roof 0.07-0.34; every other floor of the generated and shared pieces (wall tops, a round island) 0.00-0.04."""
+# Barycentric points sampling each triangle (its centroid and one towards each corner, equal weights):
+# a roof's few large polygons are sampled inside, not only at their centroids.
+_COVER_POINTS = np.array([[1 / 3, 1 / 3, 1 / 3], [2 / 3, 1 / 6, 1 / 6], [1 / 6, 2 / 3, 1 / 6], [1 / 6, 1 / 6, 2 / 3]])
+
+
+def area_below(navmesh: NavMesh, label: np.ndarray, height: float) -> np.ndarray:
+    """(C,) the area of other components lying under each component, at least ``height`` lower, over its own area.
+
+    A roof or a ceiling's top (walkable for Recast, as real exports close their rooms) lies over
+    the floor it covers; a floor does not. ``label``: (P,) component of every polygon, C = its
+    largest + 1; ``height``: the agent's height, metres. Each polygon, cut into a fan of triangles,
+    is sampled at four points per triangle weighted by area; from each, a ray cast up from
+    ``height`` above it finds the first navmesh surface there, which it lies under. O(P log P)
+    with the ray caster's BVH.
+    """
+    polygons = np.asarray(navmesh.polygons)
+    vertices = np.asarray(navmesh.vertices, dtype=np.float64)
+    fan = range(1, polygons.shape[1] - 1)  # triangle (0, j, j + 1) of each polygon with a corner j + 1
+    owners = [np.flatnonzero(polygons[:, j + 1] >= 0) for j in fan]
+    triangles = np.concatenate([polygons[o][:, [0, j, j + 1]] for j, o in zip(fan, owners)])
+    owner = np.concatenate(owners)
+    corners = vertices[triangles]
+    area = 0.5 * np.linalg.norm(np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0]), axis=1)
+    points = np.einsum("kj,tjd->tkd", _COVER_POINTS, corners).reshape(-1, 3)
+    caster = RayCaster(trimesh.Trimesh(vertices, triangles, process=False))
+    hits = caster.first_hits(points + UP * height, UP)
+    own = np.repeat(label[owner], len(_COVER_POINTS))
+    over = label[owner[np.maximum(hits.face, 0)]]
+    under = hits.hit & (over != own)
+    weight = np.repeat(area / len(_COVER_POINTS), len(_COVER_POINTS))
+    count = int(label.max()) + 1
+    total = np.bincount(label[owner], weights=area, minlength=count)
+    return np.bincount(over[under], weights=weight[under], minlength=count) / np.maximum(total, 1e-12)
 
 
 _AXIS_SNAP_COS = math.cos(math.radians(20.0))
@@ -737,6 +786,15 @@ def piece_frame(mesh: trimesh.Trimesh) -> np.ndarray:
         half = np.searchsorted(np.cumsum(weight[order]), 0.5 * weight[order].sum())
         u = folded[order[min(half, len(order) - 1)]]
     return np.array([[u[0], 0.0, u[1]], [-u[0], 0.0, -u[1]], [-u[1], 0.0, u[0]], [u[1], 0.0, -u[0]]])
+
+
+def corners_below(corners: np.ndarray, top: float) -> np.ndarray:
+    """(k, 3) the corners of the triangles ``corners`` (F, 3, 3) that reach down to ``top`` (m) or lower.
+
+    The piece's extent at an opening is that of what the agent meets there: ``top`` is its head over
+    the opening, and eaves, a roof or an upper storey overhanging the opening do not count.
+    """
+    return corners[corners[:, :, 1].min(axis=1) <= top].reshape(-1, 3)
 
 
 def extent_gap(vertices: np.ndarray, point: np.ndarray, heading: np.ndarray, frame: np.ndarray) -> float:
@@ -832,7 +890,7 @@ def detect_openings(
         return Detection((), (), ())
     p_first, p_last = _extend(kept, caster, s)
 
-    vertices = np.asarray(mesh.vertices, dtype=np.float64)
+    corners = np.asarray(mesh.triangles, dtype=np.float64)
     frame = piece_frame(mesh)
     min_width = float(params.min_width_radii) * s.radius
     max_gap = None if params.extent_heights is None else float(params.extent_heights) * s.height
@@ -845,7 +903,7 @@ def detect_openings(
         heading[1] = 0.0
         heading = _unit(heading) if np.linalg.norm(heading) > 1e-6 else e.outward
         mid = (a + b) / 2.0
-        gap = max(0.0, extent_gap(vertices, mid, heading, frame))
+        gap = max(0.0, extent_gap(corners_below(corners, mid[1] + s.height), mid, heading, frame))
         if max_gap is not None and gap > max_gap:
             return None
         extent_factor = 1.0 if max_gap is None else 1.0 - gap / max_gap
