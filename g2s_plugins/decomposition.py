@@ -59,8 +59,17 @@ polygons and their shared edges (portals):
    (a door across a corridor parts it as a door between rooms does). The
    two groups of every pinch join. This is the project's own rule, set on
    the generated samples (docs/plugins.md, "Pinches").
+   Side strips (:func:`join_side_strips`, after the pinches): a group all of
+   whose candidates lead to one other group, and whose widest candidate keeps
+   at least ``narrowness`` of the group's own mean width, is a strip beside
+   that group and joins it: a shelving aisle whose ends measure narrower than
+   its widest point only because the racks' corners are rasterised at an
+   angle, or a room beyond an opening wider than most of it (wall stubs).
+   A room behind doors is far wider than its doors and stays. The project's
+   own rule, set on the held-out level kinds (docs/plugins.md, "Level kinds
+   it was not tuned on").
 4. Regions are the groups left (``scipy.sparse.csgraph.connected_components``
-   of the merged portals, joined passages and pinches), numbered by their lowest polygon id. Candidates
+   of the merged portals, joined passages, pinches and side strips), numbered by their lowest polygon id. Candidates
    between the same two regions that are chained end to end (one opening:
    Recast's region contours may bend across a wide gap) or closer than
    ``min_separation`` are one chokepoint (the widest portal of them stays:
@@ -86,7 +95,8 @@ stairs).
 Complexity: clearance O((B + P + E) log B) for B wall pieces, P polygons,
 E portals; extents O(V) for V polygon corners; pinches O(C (Q M + Q log B)) for
 C candidates between corridor-like groups, Q grid points within a cut's reach
-(hundreds) and M polygons near it; the merge tree sorts the portals and runs one union-find step per
+(hundreds) and M polygons near it; side strips O(V + C log C) (extents, then
+sorting the candidates' region pairs); the merge tree sorts the portals and runs one union-find step per
 portal (a Python loop of O(E alpha(P)): a merge order is sequential by
 nature and no library offers it on a general graph); everything else is
 numpy/scipy over arrays, networkx only on the small region graph.
@@ -153,7 +163,8 @@ class DecompositionParams(PluginParams):
     narrowness: float = Field(
         0.75, gt=0, lt=1,
         description="a passage is a chokepoint when its width is at most this fraction of the widest "
-        "point of the rooms on both sides",
+        "point of the rooms on both sides; a region whose chokepoints all lead to one region and keep at least "
+        "this fraction of its mean width joins it (side strips)",
     )
     obstacle_area: float = Field(
         16.0, ge=0, description="holes in the walkable surface smaller than this (pillars, crates) neither "
@@ -395,6 +406,43 @@ def longest_extents(navmesh: Any, labels: np.ndarray, count: int) -> np.ndarray:
     return (high - low).max(axis=1)
 
 
+def mean_widths(navmesh: Any, labels: np.ndarray, areas: np.ndarray) -> np.ndarray:
+    """(G,) the mean walkable width of each group of ``labels`` (P,), m: its area (``areas`` (P,), m²) over its
+    longest extent (:func:`longest_extents`)."""
+    count = int(labels.max()) + 1 if len(labels) else 0
+    extents = longest_extents(navmesh, labels, count)
+    return np.bincount(labels, weights=areas, minlength=count) / np.maximum(extents, 1e-9)
+
+
+def join_side_strips(labels: np.ndarray, cuts: np.ndarray, width: np.ndarray, mean_width: np.ndarray,
+                     narrowness: float) -> np.ndarray:
+    """(P,) int64 region labels once side strips are joined to the region they hang off (step 3 of the module doc).
+
+    A region all of whose chokepoint candidates lead to one other region, and whose widest candidate keeps at
+    least ``narrowness`` of its own mean width, is a strip beside that region (an aisle between shelving racks, an
+    alcove), not a room behind doors: it joins that region.
+
+    Args:
+        labels: (P,) the region of every polygon.
+        cuts: (C, 2) the two polygons of every chokepoint candidate.
+        width: (C,) each candidate's walkable width (small holes left out), m.
+        mean_width: (G,) each region's mean walkable width (:func:`mean_widths`), m.
+        narrowness: the fraction of a region's mean width a candidate must keep for the region to be a strip.
+    """
+    count = len(mean_width)
+    sides = labels[cuts]
+    between = sides[:, 0] != sides[:, 1]
+    sides, width = sides[between], width[between]
+    ends = np.concatenate([sides, sides[:, ::-1]])  # (region, neighbour) both ways
+    widths = np.concatenate([width, width])
+    neighbours = np.unique(ends, axis=0)
+    one_neighbour = np.bincount(neighbours[:, 0], minlength=count) == 1
+    widest = np.zeros(count)
+    np.maximum.at(widest, ends[:, 0], widths)
+    strip = one_neighbour & (widest >= narrowness * mean_width)
+    return join_groups(labels, count, ends[strip[ends[:, 0]]])
+
+
 def join_passages(labels: np.ndarray, sides: np.ndarray, passage: np.ndarray) -> np.ndarray:
     """(P,) int64 region labels once passages are joined (step 3 of the module doc).
 
@@ -530,13 +578,15 @@ def decompose(navmesh: Any, agent: Any, params: DecompositionParams) -> Decompos
     n = navmesh.polygon_count
     joined = sparse.coo_array((np.ones(int(merged.sum())), (pairs[merged, 0], pairs[merged, 1])), shape=(n, n))
     count, labels = csgraph.connected_components(joined, directed=False)
-    mean_width = np.bincount(labels, weights=areas, minlength=count) / np.maximum(
-        longest_extents(navmesh, labels, count), 1e-9)
-    labels = join_passages(labels, labels[pairs[blocked]], mean_width < params.passage_width * 2.0 * float(agent.radius))
+    passage = mean_widths(navmesh, labels, areas) < params.passage_width * 2.0 * float(agent.radius)
+    labels = join_passages(labels, labels[pairs[blocked]], passage)
     count = int(labels.max()) + 1 if len(labels) else 0
     if params.pinch <= params.narrowness:  # above it no cut can keep the fraction and be a candidate at once
         labels = _join_pinches(navmesh, labels, count, pairs, blocked, areas, clearance, float(agent.radius), params)
         count = int(labels.max()) + 1 if len(labels) else 0
+    labels = join_side_strips(labels, pairs[blocked], 2.0 * clearance.portals_open[blocked],
+                              mean_widths(navmesh, labels, areas), params.narrowness)
+    count = int(labels.max()) + 1 if len(labels) else 0
     blocked &= labels[pairs[:, 0]] != labels[pairs[:, 1]]
 
     centres = np.asarray(navmesh.centres, dtype=np.float64)

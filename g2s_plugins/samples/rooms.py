@@ -32,7 +32,9 @@ small offices that must stay rooms; their ``expected`` is what the width rule
 of :mod:`g2s_plugins.decomposition` is checked against. The last four are
 corridors for its pinch rule: a straight and a bent corridor narrowed by
 pilasters (one region each), a door across a corridor and a long gallery
-beside a corridor (two regions: doors stay chokepoints).
+beside a corridor (two regions: doors stay chokepoints). The last two come from the held-out round of
+3 December 2026 (docs/plugins.md): rooms joined by openings of growing width, and a warehouse whose shelving aisles
+are part of its hall (the side-strip rule).
 """
 
 from __future__ import annotations
@@ -544,6 +546,64 @@ def gallery(
     return _build("gallery", rooms, [(0, 1, PZ, s / 2, door_width)], params, expected, {"cycles": 0})
 
 
+@validate_call
+def wide_openings(size: PositiveFloat = 8.0, openings: tuple[PositiveFloat, ...] = (3.0, 4.0, 6.0)) -> SampleLevel:
+    """Square rooms in a row along +X, each joined to the next by one opening in the middle of their shared wall.
+
+    Room i covers [i (size + 0.2), i (size + 0.2) + size] x [0, size]; opening i (``openings[i]`` wide, wall to
+    wall) joins rooms i and i + 1. Designer's rule, fixed before the level was first analysed (held-out round of
+    3 December 2026, docs/plugins.md): an opening at most half as wide as its wall parts two rooms (a doorway or an
+    arch, however wide: the wall still shapes both); a wider one leaves wall stubs and the rooms on its two sides
+    are one. Expected by default: 3 regions (the 3 m and 4 m arches are chokepoints, the 6 m opening is not),
+    both chokepoints articulations.
+
+    Args:
+        size: side of each square room, metres.
+        openings: clear width of each opening, metres (one fewer than the rooms).
+    """
+    if not all(width < size for width in openings):
+        raise ValueError("every opening must be < size")
+    s, t = float(size), WALL_THICKNESS
+    rooms = [(i * (s + t), i * (s + t) + s, 0.0, s, 0.0) for i in range(len(openings) + 1)]
+    doors = [(i, i + 1, PX, s / 2, float(width)) for i, width in enumerate(openings)]
+    parting = [width <= s / 2 for width in openings]
+    expected = {"regions": 1 + sum(parting), "chokepoints": sum(parting), "articulation": (True,) * sum(parting),
+                "parting": tuple(parting)}
+    return _build("wide_openings", rooms, doors, {"size": size, "openings": list(openings)}, expected, {"cycles": 0})
+
+
+@validate_call
+def shelving_warehouse(
+    aisles: tuple[PositiveFloat, ...] = (2.4, 3.0, 3.6, 3.0, 2.4), rack_depth: PositiveFloat = 1.2,
+    rack_length: PositiveFloat = 14.0, door_width: PositiveFloat = 2.0,
+) -> SampleLevel:
+    """A 32 x 24 m warehouse hall with a row of full-height shelving racks, and an office off it through a door.
+
+    ``len(aisles) + 1`` racks ``rack_depth`` deep (x) and ``rack_length`` long (z, from z = 5) stand from x = 4,
+    ``aisles[i]`` apart (clear width between racks i and i + 1); the racks are obstacles larger than
+    ``obstacle_area``, walls to the split. The office (room 1, 6 x 6 m) lies beyond the hall's +X wall through a door
+    ``door_width`` wide at z = 3. Expected (fixed before the level was first analysed, held-out round of 3 December
+    2026): 2 regions and the door the one chokepoint: the aisles are part of the hall, as a lecture hall's are.
+    Metadata ``racks``: ``{"x0", "x1", "z0", "z1"}`` of each rack.
+
+    Args:
+        aisles: clear width of each aisle between two racks, metres.
+        rack_depth: depth of a rack along x, metres.
+        rack_length: length of a rack along z, metres (at most 17).
+        door_width: clear width of the office door, metres.
+    """
+    if rack_length > 17.0 or 4.0 + (len(aisles) + 1) * rack_depth + sum(aisles) > 30.0 or door_width >= 6.0:
+        raise ValueError("the racks must leave 2 m of the hall free on every side and door_width must be < 6")
+    x0 = 4.0 + np.concatenate([[0.0], np.cumsum(np.asarray(aisles) + rack_depth)])
+    racks = [(float(x), float(x) + rack_depth, 5.0, 5.0 + rack_length) for x in x0]
+    t = WALL_THICKNESS
+    rooms = [(0.0, 32.0, 0.0, 24.0, 0.0), (32.0 + t, 38.0 + t, 0.0, 6.0, 0.0)]
+    params = {"aisles": list(aisles), "rack_depth": rack_depth, "rack_length": rack_length, "door_width": door_width}
+    expected = {"regions": 2, "chokepoints": 1, "articulation": (True,)}
+    return _build("shelving_warehouse", rooms, [(0, 1, PX, 3.0, door_width)], params, expected,
+                  {"racks": tuple(_rect(*rack) for rack in racks), "cycles": len(racks)}, obstacles=racks)
+
+
 def dungeon_shares(level: SampleLevel, chokepoints: list[dict[str, Any]], regions: list[dict[str, Any]],
                    navmesh: Any, turn: np.ndarray | None = None) -> tuple[float, float]:
     """How well chokepoints and regions found on a ``dungeon`` match its generated corridors and rooms.
@@ -596,5 +656,7 @@ SAMPLES: dict[str, Callable[..., SampleLevel]] = {
     "bent_corridor": bent_corridor,
     "door_in_corridor": door_in_corridor,
     "gallery": gallery,
+    "wide_openings": wide_openings,
+    "shelving_warehouse": shelving_warehouse,
 }
 """The room samples, registered in :data:`g2s_plugins.samples.levels.SAMPLES`."""
