@@ -60,14 +60,16 @@ polygons and their shared edges (portals):
    two groups of every pinch join. This is the project's own rule, set on
    the generated samples (docs/plugins.md, "Pinches").
    Side strips (:func:`join_side_strips`, after the pinches): a group all of
-   whose candidates lead to one other group, and whose widest candidate keeps
-   at least ``narrowness`` of the group's own mean width, is a strip beside
-   that group and joins it: a shelving aisle whose ends measure narrower than
-   its widest point only because the racks' corners are rasterised at an
-   angle, or a room beyond an opening wider than most of it (wall stubs).
-   A room behind doors is far wider than its doors and stays. The project's
-   own rule, set on the held-out level kinds (docs/plugins.md, "Level kinds
-   it was not tuned on").
+   whose candidates lead to one other group, at two places at least
+   ``min_separation`` apart (it meets that group at both its ends), and whose
+   widest candidate keeps at least ``narrowness`` of the group's own mean
+   width, is a strip beside that group and joins it: a shelving aisle whose
+   ends read narrower than its widest point only because the racks' corners
+   are rasterised at an angle. A room with two doors to one corridor is far
+   wider than its doors and stays; a dead end is left to the merge tree (a
+   room and its corridor, measured as one group, are narrow on average). The
+   project's own rule, set on the held-out level kinds (docs/plugins.md,
+   "Level kinds it was not tuned on").
 4. Regions are the groups left (``scipy.sparse.csgraph.connected_components``
    of the merged portals, joined passages, pinches and side strips), numbered by their lowest polygon id. Candidates
    between the same two regions that are chained end to end (one opening:
@@ -163,8 +165,8 @@ class DecompositionParams(PluginParams):
     narrowness: float = Field(
         0.75, gt=0, lt=1,
         description="a passage is a chokepoint when its width is at most this fraction of the widest "
-        "point of the rooms on both sides; a region whose chokepoints all lead to one region and keep at least "
-        "this fraction of its mean width joins it (side strips)",
+        "point of the rooms on both sides; a region whose chokepoints all lead to one region, at two places, and "
+        "keep at least this fraction of its mean width joins it (side strips)",
     )
     obstacle_area: float = Field(
         16.0, ge=0, description="holes in the walkable surface smaller than this (pillars, crates) neither "
@@ -414,32 +416,40 @@ def mean_widths(navmesh: Any, labels: np.ndarray, areas: np.ndarray) -> np.ndarr
     return np.bincount(labels, weights=areas, minlength=count) / np.maximum(extents, 1e-9)
 
 
-def join_side_strips(labels: np.ndarray, cuts: np.ndarray, width: np.ndarray, mean_width: np.ndarray,
-                     narrowness: float) -> np.ndarray:
-    """(P,) int64 region labels once side strips are joined to the region they hang off (step 3 of the module doc).
+def join_side_strips(labels: np.ndarray, cuts: np.ndarray, width: np.ndarray, points: np.ndarray,
+                     mean_width: np.ndarray, narrowness: float, separation: float) -> np.ndarray:
+    """(P,) int64 region labels once side strips are joined to the region they run beside (step 3 of the module doc).
 
-    A region all of whose chokepoint candidates lead to one other region, and whose widest candidate keeps at
-    least ``narrowness`` of its own mean width, is a strip beside that region (an aisle between shelving racks, an
-    alcove), not a room behind doors: it joins that region.
+    A region all of whose chokepoint candidates lead to one other region, at two places at least ``separation``
+    apart (it meets that region at both its ends: the two go round something, as an aisle and its hall go round a
+    rack), and whose widest candidate keeps at least ``narrowness`` of its own mean width, is a strip beside that
+    region, not a room behind doors: it joins that region. A room with two doors to one corridor is far wider than
+    its doors; a dead end (one place) is left to the merge tree.
 
     Args:
         labels: (P,) the region of every polygon.
         cuts: (C, 2) the two polygons of every chokepoint candidate.
         width: (C,) each candidate's walkable width (small holes left out), m.
+        points: (C, 3) each candidate's widest point, m.
         mean_width: (G,) each region's mean walkable width (:func:`mean_widths`), m.
         narrowness: the fraction of a region's mean width a candidate must keep for the region to be a strip.
+        separation: how far apart (plan, the longer side of their bounding box) a strip's candidates reach, m.
     """
     count = len(mean_width)
     sides = labels[cuts]
     between = sides[:, 0] != sides[:, 1]
-    sides, width = sides[between], width[between]
+    sides, width, plan = sides[between], width[between], points[between][:, [0, 2]]
     ends = np.concatenate([sides, sides[:, ::-1]])  # (region, neighbour) both ways
-    widths = np.concatenate([width, width])
+    widths, plan = np.concatenate([width, width]), np.concatenate([plan, plan])
     neighbours = np.unique(ends, axis=0)
     one_neighbour = np.bincount(neighbours[:, 0], minlength=count) == 1
     widest = np.zeros(count)
     np.maximum.at(widest, ends[:, 0], widths)
-    strip = one_neighbour & (widest >= narrowness * mean_width)
+    low, high = np.full((count, 2), np.inf), np.full((count, 2), -np.inf)
+    np.minimum.at(low, ends[:, 0], plan)
+    np.maximum.at(high, ends[:, 0], plan)
+    spread = np.where(np.isfinite(low), high - low, 0.0).max(axis=1)
+    strip = one_neighbour & (spread >= separation) & (widest >= narrowness * mean_width)
     return join_groups(labels, count, ends[strip[ends[:, 0]]])
 
 
@@ -584,8 +594,8 @@ def decompose(navmesh: Any, agent: Any, params: DecompositionParams) -> Decompos
     if params.pinch <= params.narrowness:  # above it no cut can keep the fraction and be a candidate at once
         labels = _join_pinches(navmesh, labels, count, pairs, blocked, areas, clearance, float(agent.radius), params)
         count = int(labels.max()) + 1 if len(labels) else 0
-    labels = join_side_strips(labels, pairs[blocked], 2.0 * clearance.portals_open[blocked],
-                              mean_widths(navmesh, labels, areas), params.narrowness)
+    labels = join_side_strips(labels, pairs[blocked], 2.0 * clearance.portals_open[blocked], clearance.widest[blocked],
+                              mean_widths(navmesh, labels, areas), params.narrowness, params.min_separation)
     count = int(labels.max()) + 1 if len(labels) else 0
     blocked &= labels[pairs[:, 0]] != labels[pairs[:, 1]]
 

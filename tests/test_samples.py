@@ -92,7 +92,7 @@ def test_registry_names_and_load():
         "bent_corridor",
         "door_in_corridor",
         "gallery",
-        "wide_openings",
+        "two_doors_to_a_corridor",
         "shelving_warehouse",
         "doorway_room",
         "curb_platform",

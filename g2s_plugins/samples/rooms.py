@@ -33,8 +33,8 @@ of :mod:`g2s_plugins.decomposition` is checked against. The last four are
 corridors for its pinch rule: a straight and a bent corridor narrowed by
 pilasters (one region each), a door across a corridor and a long gallery
 beside a corridor (two regions: doors stay chokepoints). The last two come from the held-out round of
-3 December 2026 (docs/plugins.md): rooms joined by openings of growing width, and a warehouse whose shelving aisles
-are part of its hall (the side-strip rule).
+3 December 2026 (docs/plugins.md): a room with two doors to one corridor (a room, not a strip beside the corridor),
+and a warehouse whose shelving aisles are part of its hall (the side-strip rule).
 """
 
 from __future__ import annotations
@@ -547,29 +547,39 @@ def gallery(
 
 
 @validate_call
-def wide_openings(size: PositiveFloat = 8.0, openings: tuple[PositiveFloat, ...] = (3.0, 4.0, 6.0)) -> SampleLevel:
-    """Square rooms in a row along +X, each joined to the next by one opening in the middle of their shared wall.
+def two_doors_to_a_corridor(
+    length: PositiveFloat = 24.0, corridor_width: PositiveFloat = 3.0, door_width: PositiveFloat = 2.0,
+    spacing: PositiveFloat = 4.0,
+) -> SampleLevel:
+    """A room with two doors to the same corridor, and a room behind a door at each end of the corridor.
 
-    Room i covers [i (size + 0.2), i (size + 0.2) + size] x [0, size]; opening i (``openings[i]`` wide, wall to
-    wall) joins rooms i and i + 1. Designer's rule, fixed before the level was first analysed (held-out round of
-    3 December 2026, docs/plugins.md): an opening at most half as wide as its wall parts two rooms (a doorway or an
-    arch, however wide: the wall still shapes both); a wider one leaves wall stubs and the rooms on its two sides
-    are one. Expected by default: 3 regions (the 3 m and 4 m arches are chokepoints, the 6 m opening is not),
-    both chokepoints articulations.
+    The corridor runs along +X, [0, length] x [0, corridor_width], as two segments (rooms 0 and 1) joined by an
+    opening its full width at x = 10; the 8 x 6 m room beyond its +Z wall is two halves (rooms 2 and 3) joined
+    along their whole shared side, one door ``door_width`` wide from each half to the segment beside it, the
+    doors' centres ``spacing`` apart around x = 10 (2 m by default, where the held-out level had 1.6 m: turned by
+    45 degrees the navmesh closes 1.6 m doors); rooms 4 and 5 (8 x 8 m) lie beyond the corridor's -X and +X
+    ends through 1.8 m doors. Expected (fixed before the level was first analysed, held-out round of 3 December
+    2026): 4 regions (corridor, room, two end rooms), 4 chokepoints; the room's two doors are no articulations
+    (closing one leaves the other), the end doors are.
 
     Args:
-        size: side of each square room, metres.
-        openings: clear width of each opening, metres (one fewer than the rooms).
+        length: length of the corridor, metres (at least 16).
+        corridor_width: clear width of the corridor, metres.
+        door_width: clear width of each of the room's two doors, metres.
+        spacing: distance between the centres of the room's two doors, metres.
     """
-    if not all(width < size for width in openings):
-        raise ValueError("every opening must be < size")
-    s, t = float(size), WALL_THICKNESS
-    rooms = [(i * (s + t), i * (s + t) + s, 0.0, s, 0.0) for i in range(len(openings) + 1)]
-    doors = [(i, i + 1, PX, s / 2, float(width)) for i, width in enumerate(openings)]
-    parting = [width <= s / 2 for width in openings]
-    expected = {"regions": 1 + sum(parting), "chokepoints": sum(parting), "articulation": (True,) * sum(parting),
-                "parting": tuple(parting)}
-    return _build("wide_openings", rooms, doors, {"size": size, "openings": list(openings)}, expected, {"cycles": 0})
+    if length < 16.0 or not door_width < spacing < 8.0 - door_width or corridor_width <= 1.8:
+        raise ValueError("need length >= 16, door_width < spacing < 8 - door_width and corridor_width > 1.8")
+    s, t, w = float(length), WALL_THICKNESS, float(corridor_width)
+    mid = w / 2
+    rooms = [(0.0, 10.0, 0.0, w, 0.0), (10.0 + t, s, 0.0, w, 0.0),
+             (6.0, 10.0, w + t, w + t + 6.0, 0.0), (10.0 + t, 14.0, w + t, w + t + 6.0, 0.0),
+             (-8.0 - t, -t, mid - 4.0, mid + 4.0, 0.0), (s + t, s + t + 8.0, mid - 4.0, mid + 4.0, 0.0)]
+    doors = [(0, 2, PZ, 10.0 - spacing / 2 + t / 2, door_width), (1, 3, PZ, 10.0 + spacing / 2 + t / 2, door_width),
+             (4, 0, PX, mid, 1.8), (1, 5, PX, mid, 1.8), (0, 1, PX, mid, w), (2, 3, PX, w + t + 3.0, 6.0)]
+    params = {"length": length, "corridor_width": corridor_width, "door_width": door_width, "spacing": spacing}
+    expected = {"regions": 4, "chokepoints": 4, "articulation": (False, False, True, True)}
+    return _build("two_doors_to_a_corridor", rooms, doors, params, expected, {"cycles": 1})
 
 
 @validate_call
@@ -656,7 +666,7 @@ SAMPLES: dict[str, Callable[..., SampleLevel]] = {
     "bent_corridor": bent_corridor,
     "door_in_corridor": door_in_corridor,
     "gallery": gallery,
-    "wide_openings": wide_openings,
+    "two_doors_to_a_corridor": two_doors_to_a_corridor,
     "shelving_warehouse": shelving_warehouse,
 }
 """The room samples, registered in :data:`g2s_plugins.samples.levels.SAMPLES`."""
