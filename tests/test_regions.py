@@ -377,19 +377,22 @@ def test_longest_extent_of_a_turned_strip_is_within_two_percent_of_its_length():
 
 
 def test_side_strips_join_the_one_region_they_run_beside():
-    # regions 0-4 (mean walkable widths 5, 1.8, 5, 5, 1.8 m): 1 meets 0 by two cuts 10 m apart as wide as itself
-    # (an aisle beside the hall: joins); 2 meets 0 by two 0.6 m doors 4 m apart (a room with two doors to one
-    # corridor: stays); 3 meets 0 and 2 (two neighbours: stays); 4 meets 0 at one place only (a dead end: stays)
-    labels = np.array([0, 0, 1, 2, 3, 4])
-    cuts = np.array([[0, 2], [1, 2], [0, 3], [1, 3], [0, 4], [3, 4], [0, 5], [1, 5]])
-    width = np.array([1.5, 1.4, 0.6, 0.6, 4.5, 1.0, 1.5, 1.5])
+    # regions 0-5 (mean walkable widths 5, 1.8, 5, 5, 1.8, 2.9 m; longest extents 20, 12, 8, 8, 6, 10 m):
+    # 1 meets 0 at its two ends, 10 m apart, by cuts as wide as itself (an aisle beside the hall): joins;
+    # 2 meets 0 by two 0.6 m doors 4 m apart (a room with two doors to one corridor): stays;
+    # 3 meets 0 and 2 (two neighbours): stays; 4 meets 0 at one place only (a dead end): stays;
+    # 5 meets 0 by wide cuts 4 m apart across its 10 m (the part of a pillared room next to its other part): stays
+    labels = np.array([0, 0, 1, 2, 3, 4, 5])
+    cuts = np.array([[0, 2], [1, 2], [0, 3], [1, 3], [0, 4], [3, 4], [0, 5], [1, 5], [0, 6], [1, 6]])
+    width = np.array([1.5, 1.4, 0.6, 0.6, 4.5, 1.0, 1.5, 1.5, 2.6, 2.5])
     points = np.array([[0, 0, 0], [10, 0, 0], [20, 0, 0], [24, 0, 0], [30, 0, 0], [34, 0, 0], [40, 0, 0],
-                       [41, 0, 0]], dtype=float)
-    mean_width = np.array([5.0, 1.8, 5.0, 5.0, 1.8])
-    joined = decomposition.join_side_strips(labels, cuts, width, points, mean_width, 0.75, 3.0)
-    assert joined.tolist() == [0, 0, 0, 1, 2, 3]
-    assert decomposition.join_side_strips(labels, cuts, 0.5 * width, points, mean_width, 0.75, 3.0).tolist() == \
-        labels.tolist()
+                       [41, 0, 0], [50, 0, 0], [50, 0, 4]], dtype=float)
+    mean_width = np.array([5.0, 1.8, 5.0, 5.0, 1.8, 2.9])
+    extent = np.array([20.0, 12.0, 8.0, 8.0, 6.0, 10.0])
+    joined = decomposition.join_side_strips(labels, cuts, width, points, mean_width, extent, 0.75, 3.0)
+    assert joined.tolist() == [0, 0, 0, 1, 2, 3, 4]
+    narrower = decomposition.join_side_strips(labels, cuts, 0.5 * width, points, mean_width, extent, 0.75, 3.0)
+    assert narrower.tolist() == labels.tolist()
 
 
 def test_a_room_with_two_doors_to_one_corridor_stays_a_room():
