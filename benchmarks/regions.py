@@ -1,7 +1,8 @@
 """Time and quality of the chokepoints and regions analyzers on generated dungeons.
 
 Run: ``.venv/bin/python benchmarks/regions.py [--rooms 120 2400 12000] [--obstacles 0.3] [--seeds 1]
-[--yaws 0 5 10 15 20 30 45 60 90]``, or ``--levels FILE ...`` for mesh files (real levels: no known
+[--yaws 0 5 10 15 20 30 45 60 90] [--params '{"min_region_area": 4}']``,
+or ``--levels FILE ...`` for mesh files (real levels: no known
 answer, so the sizes, counts and times only; docs/plugins.md, real levels).
 
 For each dungeon (``samples.dungeon(seed, rooms, obstacles)``) the
@@ -22,6 +23,7 @@ a benchmark, not a test: nothing here asserts a time.
 from __future__ import annotations
 
 import argparse
+import json
 import os
 import platform
 import time
@@ -53,24 +55,26 @@ def best_times(function: Callable[[], Any]) -> tuple[float, float, Any]:
     return min(walls), min(cpus), value
 
 
-def timed_split(result: RunResult) -> tuple[decomposition.Decomposition, list[dict[str, Any]], dict[str, float]]:
-    """The split and the chokepoints of a run's navmesh and structure, with the times of both (:func:`best_times`):
-    ``split_wall``, ``split_cpu``, ``score_wall``, ``score_cpu``, milliseconds."""
+def timed_split(result: RunResult, params: Params | None = None) -> tuple[decomposition.Decomposition,
+                                                                         list[dict[str, Any]], dict[str, float]]:
+    """The split (with ``params``, the defaults when None) and the chokepoints of a run's navmesh and structure,
+    with the times of both (:func:`best_times`): ``split_wall``, ``split_cpu``, ``score_wall``, ``score_cpu``, ms."""
     navmesh, structure = result.context.navmesh, result.structure.to_undirected(as_view=True)
-    params = Params()
+    params = params or Params()
     split_wall, split_cpu, split = best_times(lambda: decomposition.decompose(navmesh, result.context.agent, params))
     score_wall, score_cpu, (chokepoints, _) = best_times(lambda: decomposition.score(split, structure))
     return split, chokepoints, {"split_wall": 1000 * split_wall, "split_cpu": 1000 * split_cpu,
                                 "score_wall": 1000 * score_wall, "score_cpu": 1000 * score_cpu}
 
 
-def measure(rooms: int, seed: int, obstacles: float, yaw: float, registry: Registry) -> dict[str, float]:
+def measure(rooms: int, seed: int, obstacles: float, yaw: float, registry: Registry,
+            params: Params | None = None) -> dict[str, float]:
     level = dungeon(seed=seed, rooms=rooms, obstacles=obstacles)
     turn = yaw_about_centre(level.mesh, yaw)
     plan = pipeline.plan(load_config(PRESETS_DIR / "level_regions.yaml"), registry)
     result = pipeline.run(plan, registry, turned(level, yaw).mesh, level.name, "-")
     navmesh = result.context.navmesh
-    split, chokepoints, times = timed_split(result)
+    split, chokepoints, times = timed_split(result, params)
     doors, own = dungeon_shares(level, chokepoints, split.regions, navmesh, turn)
     return {
         "yaw": yaw, "seed": seed, "rooms": rooms, "corridors": len(level.metadata["corridors"]), "polygons": navmesh.polygon_count,
@@ -99,10 +103,13 @@ def main() -> None:
                         help="turn each dungeon by these angles about the vertical, degrees")
     parser.add_argument("--levels", nargs="+", default=[], metavar="FILE",
                         help="measure these mesh files instead of generated dungeons")
+    parser.add_argument("--params", type=json.loads, default={}, metavar="JSON",
+                        help="split settings other than the defaults, e.g. '{\"min_region_area\": 4}'")
     args = parser.parse_args()
+    params = Params(**args.params)
     registry = Registry.from_entry_points()
     print(f"# {platform.machine()}, {os.cpu_count()} cores, Python {platform.python_version()}, "
-          f"obstacles {args.obstacles}, load average {os.getloadavg()[0]:.1f}")
+          f"obstacles {args.obstacles}, params {args.params or 'defaults'}, load average {os.getloadavg()[0]:.1f}")
     if args.levels:
         print("| level | polygons | walkable areas | regions | chokepoints | articulations | split CPU (wall) ms "
               "| score CPU (wall) ms |")
@@ -119,7 +126,7 @@ def main() -> None:
     for rooms in args.rooms:
         for seed in range(args.seeds):
             for yaw in args.yaws:
-                m = measure(rooms, seed, args.obstacles, yaw, registry)
+                m = measure(rooms, seed, args.obstacles, yaw, registry, params)
                 print(f"| {m['yaw']:g} | {m['seed']} | {m['rooms']:,} | {m['corridors']:,} | {m['polygons']:,} "
                       f"| {m['portals']:,} | {m['regions']:,} | {m['chokepoints']:,} "
                       f"| {m['split_cpu']:.0f} ({m['split_wall']:.0f}) | {m['score_cpu']:.0f} ({m['score_wall']:.0f}) "

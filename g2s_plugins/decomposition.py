@@ -59,8 +59,19 @@ polygons and their shared edges (portals):
    (a door across a corridor parts it as a door between rooms does). The
    two groups of every pinch join. This is the project's own rule, set on
    the generated samples (docs/plugins.md, "Pinches").
+   Side strips (:func:`join_side_strips`, after the pinches): a group all of
+   whose candidates lead to one other group, at both its ends (spread over
+   :data:`STRIP_ENDS` of its longest extent and ``min_separation``), and whose
+   widest candidate keeps at least ``narrowness`` of the group's own mean
+   width, is a strip beside that group and joins it: a shelving aisle whose
+   ends read narrower than its widest point only because the racks' corners
+   are rasterised at an angle. A room with two doors to one corridor is far
+   wider than its doors and stays; a dead end is left to the merge tree (a
+   room and its corridor, measured as one group, are narrow on average). The
+   project's own rule, set on the held-out level kinds (docs/plugins.md,
+   "Level kinds it was not tuned on").
 4. Regions are the groups left (``scipy.sparse.csgraph.connected_components``
-   of the merged portals, joined passages and pinches), numbered by their lowest polygon id. Candidates
+   of the merged portals, joined passages, pinches and side strips), numbered by their lowest polygon id. Candidates
    between the same two regions that are chained end to end (one opening:
    Recast's region contours may bend across a wide gap) or closer than
    ``min_separation`` are one chokepoint (the widest portal of them stays:
@@ -86,7 +97,8 @@ stairs).
 Complexity: clearance O((B + P + E) log B) for B wall pieces, P polygons,
 E portals; extents O(V) for V polygon corners; pinches O(C (Q M + Q log B)) for
 C candidates between corridor-like groups, Q grid points within a cut's reach
-(hundreds) and M polygons near it; the merge tree sorts the portals and runs one union-find step per
+(hundreds) and M polygons near it; side strips O(V + C log C) (extents, then
+sorting the candidates' region pairs); the merge tree sorts the portals and runs one union-find step per
 portal (a Python loop of O(E alpha(P)): a merge order is sequential by
 nature and no library offers it on a general graph); everything else is
 numpy/scipy over arrays, networkx only on the small region graph.
@@ -142,6 +154,13 @@ PINCH_REACH = 1.5
 beyond a corridor's mouth shows its width only further in. Measured on the generated dungeons and samples against
 1.0 and 2.0 (docs/plugins.md, "Pinches")."""
 
+STRIP_ENDS = 2.0 / 3.0
+"""A side strip's chokepoint candidates are spread over at least this fraction of its longest extent: it meets its
+region at both ends (:func:`join_side_strips`). Measured (docs/plugins.md, "Level kinds it was not tuned on"; the
+farthest pair's distance over the extent): a warehouse aisle turned 45 degrees 1.00, pieces of pillared dungeon rooms
+cut off by pillar gaps 0.82-0.84, the part of a pillared room holding its centre (the rest gone to the next room
+through its corridor) 0.56."""
+
 EXTENT_DIRECTIONS = 8
 """Directions, evenly spread over 180 degrees, along which a region's longest extent is measured
 (:func:`longest_extents`: at least cos(90 / 8 degrees) = 98 % of its diameter)."""
@@ -153,7 +172,8 @@ class DecompositionParams(PluginParams):
     narrowness: float = Field(
         0.75, gt=0, lt=1,
         description="a passage is a chokepoint when its width is at most this fraction of the widest "
-        "point of the rooms on both sides",
+        "point of the rooms on both sides; a region whose chokepoints all lead to one region, at both its ends, "
+        "and keep at least this fraction of its mean width joins it (side strips)",
     )
     obstacle_area: float = Field(
         16.0, ge=0, description="holes in the walkable surface smaller than this (pillars, crates) neither "
@@ -380,19 +400,72 @@ def _merge_tree(pairs: np.ndarray, portal_clearance: np.ndarray, polygon_clearan
     return merged, blocked
 
 
+def _extent_axes() -> np.ndarray:
+    """(2, D) unit plan (xz) vectors of the :data:`EXTENT_DIRECTIONS` directions, evenly spread over 180 degrees."""
+    angle = np.arange(EXTENT_DIRECTIONS) * (math.pi / EXTENT_DIRECTIONS)
+    return np.stack([np.cos(angle), np.sin(angle)])
+
+
 def longest_extents(navmesh: Any, labels: np.ndarray, count: int) -> np.ndarray:
     """(count,) the longest plan (xz) extent of each region of ``labels`` (P,), m: the largest of its
     widths along :data:`EXTENT_DIRECTIONS` directions, over its polygons' corners."""
     polygons = np.asarray(navmesh.polygons, dtype=np.int64)
     rows, cols = np.nonzero(polygons >= 0)
     xz = np.asarray(navmesh.vertices, dtype=np.float64)[polygons[rows, cols]][:, [0, 2]]
-    angle = np.arange(EXTENT_DIRECTIONS) * (math.pi / EXTENT_DIRECTIONS)
-    along = xz @ np.stack([np.cos(angle), np.sin(angle)])  # (V, D) each corner along each direction
+    along = xz @ _extent_axes()  # (V, D) each corner along each direction
     low = np.full((count, EXTENT_DIRECTIONS), np.inf)
     high = np.full((count, EXTENT_DIRECTIONS), -np.inf)
     np.minimum.at(low, labels[rows], along)
     np.maximum.at(high, labels[rows], along)
     return (high - low).max(axis=1)
+
+
+def mean_widths(navmesh: Any, labels: np.ndarray, areas: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(G,) the mean walkable width of each group of ``labels`` (P,), m: its area (``areas`` (P,), m²) over its
+    longest extent; and (G,) that extent (:func:`longest_extents`), m."""
+    count = int(labels.max()) + 1 if len(labels) else 0
+    extents = longest_extents(navmesh, labels, count)
+    return np.bincount(labels, weights=areas, minlength=count) / np.maximum(extents, 1e-9), extents
+
+
+def join_side_strips(labels: np.ndarray, cuts: np.ndarray, width: np.ndarray, points: np.ndarray,
+                     mean_width: np.ndarray, extent: np.ndarray, narrowness: float, separation: float) -> np.ndarray:
+    """(P,) int64 region labels once side strips are joined to the region they run beside (step 3 of the module doc).
+
+    A region all of whose chokepoint candidates lead to one other region, at both its ends (candidates spread at
+    least :data:`STRIP_ENDS` of its longest extent and ``separation`` apart: the two go round something, as an
+    aisle and its hall go round a rack), and whose widest candidate keeps at least ``narrowness`` of its own mean
+    width, is a strip beside that region, not a room behind doors: it joins that region. A room with two doors to
+    one corridor is far wider than its doors; a dead end (one place) is left to the merge tree.
+
+    Args:
+        labels: (P,) the region of every polygon.
+        cuts: (C, 2) the two polygons of every chokepoint candidate.
+        width: (C,) each candidate's walkable width (small holes left out), m.
+        points: (C, 3) each candidate's widest point, m.
+        mean_width: (G,) each region's mean walkable width (:func:`mean_widths`), m.
+        extent: (G,) each region's longest extent (:func:`longest_extents`), m.
+        narrowness: the fraction of a region's mean width a candidate must keep for the region to be a strip.
+        separation: how far apart (plan) a strip's candidates reach at least, m.
+    """
+    count = len(mean_width)
+    sides = labels[cuts]
+    between = sides[:, 0] != sides[:, 1]
+    sides, width, plan = sides[between], width[between], points[between][:, [0, 2]]
+    ends = np.concatenate([sides, sides[:, ::-1]])  # (region, neighbour) both ways
+    widths, plan = np.concatenate([width, width]), np.concatenate([plan, plan])
+    neighbours = np.unique(ends, axis=0)
+    one_neighbour = np.bincount(neighbours[:, 0], minlength=count) == 1
+    widest = np.zeros(count)
+    np.maximum.at(widest, ends[:, 0], widths)
+    along = plan @ _extent_axes()  # (2C, D) each candidate's point along each direction
+    low, high = np.full((count, EXTENT_DIRECTIONS), np.inf), np.full((count, EXTENT_DIRECTIONS), -np.inf)
+    np.minimum.at(low, ends[:, 0], along)
+    np.maximum.at(high, ends[:, 0], along)
+    spread = np.where(np.isfinite(low), high - low, 0.0).max(axis=1)  # within 2 % of the farthest pair's distance
+    at_ends = spread >= np.maximum(separation, STRIP_ENDS * extent)
+    strip = one_neighbour & at_ends & (widest >= narrowness * mean_width)
+    return join_groups(labels, count, ends[strip[ends[:, 0]]])
 
 
 def join_passages(labels: np.ndarray, sides: np.ndarray, passage: np.ndarray) -> np.ndarray:
@@ -530,13 +603,15 @@ def decompose(navmesh: Any, agent: Any, params: DecompositionParams) -> Decompos
     n = navmesh.polygon_count
     joined = sparse.coo_array((np.ones(int(merged.sum())), (pairs[merged, 0], pairs[merged, 1])), shape=(n, n))
     count, labels = csgraph.connected_components(joined, directed=False)
-    mean_width = np.bincount(labels, weights=areas, minlength=count) / np.maximum(
-        longest_extents(navmesh, labels, count), 1e-9)
-    labels = join_passages(labels, labels[pairs[blocked]], mean_width < params.passage_width * 2.0 * float(agent.radius))
+    passage = mean_widths(navmesh, labels, areas)[0] < params.passage_width * 2.0 * float(agent.radius)
+    labels = join_passages(labels, labels[pairs[blocked]], passage)
     count = int(labels.max()) + 1 if len(labels) else 0
     if params.pinch <= params.narrowness:  # above it no cut can keep the fraction and be a candidate at once
         labels = _join_pinches(navmesh, labels, count, pairs, blocked, areas, clearance, float(agent.radius), params)
         count = int(labels.max()) + 1 if len(labels) else 0
+    labels = join_side_strips(labels, pairs[blocked], 2.0 * clearance.portals_open[blocked], clearance.widest[blocked],
+                              *mean_widths(navmesh, labels, areas), params.narrowness, params.min_separation)
+    count = int(labels.max()) + 1 if len(labels) else 0
     blocked &= labels[pairs[:, 0]] != labels[pairs[:, 1]]
 
     centres = np.asarray(navmesh.centres, dtype=np.float64)

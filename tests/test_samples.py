@@ -92,6 +92,8 @@ def test_registry_names_and_load():
         "bent_corridor",
         "door_in_corridor",
         "gallery",
+        "two_doors_to_a_corridor",
+        "shelving_warehouse",
         "doorway_room",
         "curb_platform",
         "wall_tops",

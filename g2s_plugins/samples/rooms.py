@@ -32,7 +32,9 @@ small offices that must stay rooms; their ``expected`` is what the width rule
 of :mod:`g2s_plugins.decomposition` is checked against. The last four are
 corridors for its pinch rule: a straight and a bent corridor narrowed by
 pilasters (one region each), a door across a corridor and a long gallery
-beside a corridor (two regions: doors stay chokepoints).
+beside a corridor (two regions: doors stay chokepoints). The last two come from the held-out round of
+3 December 2026 (docs/plugins.md): a room with two doors to one corridor (a room, not a strip beside the corridor),
+and a warehouse whose shelving aisles are part of its hall (the side-strip rule).
 """
 
 from __future__ import annotations
@@ -544,6 +546,74 @@ def gallery(
     return _build("gallery", rooms, [(0, 1, PZ, s / 2, door_width)], params, expected, {"cycles": 0})
 
 
+@validate_call
+def two_doors_to_a_corridor(
+    length: PositiveFloat = 24.0, corridor_width: PositiveFloat = 3.0, door_width: PositiveFloat = 2.0,
+    spacing: PositiveFloat = 4.0,
+) -> SampleLevel:
+    """A room with two doors to the same corridor, and a room behind a door at each end of the corridor.
+
+    The corridor runs along +X, [0, length] x [0, corridor_width], as two segments (rooms 0 and 1) joined by an
+    opening its full width at x = 10; the 8 x 6 m room beyond its +Z wall is two halves (rooms 2 and 3) joined
+    along their whole shared side, one door ``door_width`` wide from each half to the segment beside it, the
+    doors' centres ``spacing`` apart around x = 10 (2 m by default, where the held-out level had 1.6 m: turned by
+    45 degrees the navmesh closes 1.6 m doors); rooms 4 and 5 (8 x 8 m) lie beyond the corridor's -X and +X
+    ends through 1.8 m doors. Expected (fixed before the level was first analysed, held-out round of 3 December
+    2026): 4 regions (corridor, room, two end rooms), 4 chokepoints; the room's two doors are no articulations
+    (closing one leaves the other), the end doors are.
+
+    Args:
+        length: length of the corridor, metres (at least 16).
+        corridor_width: clear width of the corridor, metres.
+        door_width: clear width of each of the room's two doors, metres.
+        spacing: distance between the centres of the room's two doors, metres.
+    """
+    if length < 16.0 or not door_width < spacing < 8.0 - door_width or corridor_width <= 1.8:
+        raise ValueError("need length >= 16, door_width < spacing < 8 - door_width and corridor_width > 1.8")
+    s, t, w = float(length), WALL_THICKNESS, float(corridor_width)
+    mid = w / 2
+    rooms = [(0.0, 10.0, 0.0, w, 0.0), (10.0 + t, s, 0.0, w, 0.0),
+             (6.0, 10.0, w + t, w + t + 6.0, 0.0), (10.0 + t, 14.0, w + t, w + t + 6.0, 0.0),
+             (-8.0 - t, -t, mid - 4.0, mid + 4.0, 0.0), (s + t, s + t + 8.0, mid - 4.0, mid + 4.0, 0.0)]
+    doors = [(0, 2, PZ, 10.0 - spacing / 2 + t / 2, door_width), (1, 3, PZ, 10.0 + spacing / 2 + t / 2, door_width),
+             (4, 0, PX, mid, 1.8), (1, 5, PX, mid, 1.8), (0, 1, PX, mid, w), (2, 3, PX, w + t + 3.0, 6.0)]
+    params = {"length": length, "corridor_width": corridor_width, "door_width": door_width, "spacing": spacing}
+    expected = {"regions": 4, "chokepoints": 4, "articulation": (False, False, True, True)}
+    return _build("two_doors_to_a_corridor", rooms, doors, params, expected, {"cycles": 1})
+
+
+@validate_call
+def shelving_warehouse(
+    aisles: tuple[PositiveFloat, ...] = (2.4, 3.0, 3.6, 3.0, 2.4), rack_depth: PositiveFloat = 1.2,
+    rack_length: PositiveFloat = 14.0, door_width: PositiveFloat = 2.0,
+) -> SampleLevel:
+    """A 32 x 24 m warehouse hall with a row of full-height shelving racks, and an office off it through a door.
+
+    ``len(aisles) + 1`` racks ``rack_depth`` deep (x) and ``rack_length`` long (z, from z = 5) stand from x = 4,
+    ``aisles[i]`` apart (clear width between racks i and i + 1); the racks are obstacles larger than
+    ``obstacle_area``, walls to the split. The office (room 1, 6 x 6 m) lies beyond the hall's +X wall through a door
+    ``door_width`` wide at z = 3. Expected (fixed before the level was first analysed, held-out round of 3 December
+    2026): 2 regions and the door the one chokepoint: the aisles are part of the hall, as a lecture hall's are.
+    Metadata ``racks``: ``{"x0", "x1", "z0", "z1"}`` of each rack.
+
+    Args:
+        aisles: clear width of each aisle between two racks, metres.
+        rack_depth: depth of a rack along x, metres.
+        rack_length: length of a rack along z, metres (at most 17).
+        door_width: clear width of the office door, metres.
+    """
+    if rack_length > 17.0 or 4.0 + (len(aisles) + 1) * rack_depth + sum(aisles) > 30.0 or door_width >= 6.0:
+        raise ValueError("the racks must leave 2 m of the hall free on every side and door_width must be < 6")
+    x0 = 4.0 + np.concatenate([[0.0], np.cumsum(np.asarray(aisles) + rack_depth)])
+    racks = [(float(x), float(x) + rack_depth, 5.0, 5.0 + rack_length) for x in x0]
+    t = WALL_THICKNESS
+    rooms = [(0.0, 32.0, 0.0, 24.0, 0.0), (32.0 + t, 38.0 + t, 0.0, 6.0, 0.0)]
+    params = {"aisles": list(aisles), "rack_depth": rack_depth, "rack_length": rack_length, "door_width": door_width}
+    expected = {"regions": 2, "chokepoints": 1, "articulation": (True,)}
+    return _build("shelving_warehouse", rooms, [(0, 1, PX, 3.0, door_width)], params, expected,
+                  {"racks": tuple(_rect(*rack) for rack in racks), "cycles": len(racks)}, obstacles=racks)
+
+
 def dungeon_shares(level: SampleLevel, chokepoints: list[dict[str, Any]], regions: list[dict[str, Any]],
                    navmesh: Any, turn: np.ndarray | None = None) -> tuple[float, float]:
     """How well chokepoints and regions found on a ``dungeon`` match its generated corridors and rooms.
@@ -596,5 +666,7 @@ SAMPLES: dict[str, Callable[..., SampleLevel]] = {
     "bent_corridor": bent_corridor,
     "door_in_corridor": door_in_corridor,
     "gallery": gallery,
+    "two_doors_to_a_corridor": two_doors_to_a_corridor,
+    "shelving_warehouse": shelving_warehouse,
 }
 """The room samples, registered in :data:`g2s_plugins.samples.levels.SAMPLES`."""
