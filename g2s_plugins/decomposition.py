@@ -400,10 +400,17 @@ def _merge_tree(pairs: np.ndarray, portal_clearance: np.ndarray, polygon_clearan
     return merged, blocked
 
 
-def _extent_axes() -> np.ndarray:
-    """(2, D) unit plan (xz) vectors of the :data:`EXTENT_DIRECTIONS` directions, evenly spread over 180 degrees."""
+def plan_spreads(xz: np.ndarray, owner: np.ndarray, count: int) -> np.ndarray:
+    """(count,) how far apart each group's points reach in plan, m: the largest of their spreads along
+    :data:`EXTENT_DIRECTIONS` directions evenly spread over 180 degrees (within 2 % of the farthest pair's
+    distance); 0 for a group with no point. ``xz``: (V, 2) points, ``owner``: (V,) the group of each."""
     angle = np.arange(EXTENT_DIRECTIONS) * (math.pi / EXTENT_DIRECTIONS)
-    return np.stack([np.cos(angle), np.sin(angle)])
+    along = xz @ np.stack([np.cos(angle), np.sin(angle)])  # (V, D) each point along each direction
+    low = np.full((count, EXTENT_DIRECTIONS), np.inf)
+    high = np.full((count, EXTENT_DIRECTIONS), -np.inf)
+    np.minimum.at(low, owner, along)
+    np.maximum.at(high, owner, along)
+    return np.where(np.isfinite(low), high - low, 0.0).max(axis=1)
 
 
 def longest_extents(navmesh: Any, labels: np.ndarray, count: int) -> np.ndarray:
@@ -412,12 +419,7 @@ def longest_extents(navmesh: Any, labels: np.ndarray, count: int) -> np.ndarray:
     polygons = np.asarray(navmesh.polygons, dtype=np.int64)
     rows, cols = np.nonzero(polygons >= 0)
     xz = np.asarray(navmesh.vertices, dtype=np.float64)[polygons[rows, cols]][:, [0, 2]]
-    along = xz @ _extent_axes()  # (V, D) each corner along each direction
-    low = np.full((count, EXTENT_DIRECTIONS), np.inf)
-    high = np.full((count, EXTENT_DIRECTIONS), -np.inf)
-    np.minimum.at(low, labels[rows], along)
-    np.maximum.at(high, labels[rows], along)
-    return (high - low).max(axis=1)
+    return plan_spreads(xz, labels[rows], count)
 
 
 def mean_widths(navmesh: Any, labels: np.ndarray, areas: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -458,12 +460,7 @@ def join_side_strips(labels: np.ndarray, cuts: np.ndarray, width: np.ndarray, po
     one_neighbour = np.bincount(neighbours[:, 0], minlength=count) == 1
     widest = np.zeros(count)
     np.maximum.at(widest, ends[:, 0], widths)
-    along = plan @ _extent_axes()  # (2C, D) each candidate's point along each direction
-    low, high = np.full((count, EXTENT_DIRECTIONS), np.inf), np.full((count, EXTENT_DIRECTIONS), -np.inf)
-    np.minimum.at(low, ends[:, 0], along)
-    np.maximum.at(high, ends[:, 0], along)
-    spread = np.where(np.isfinite(low), high - low, 0.0).max(axis=1)  # within 2 % of the farthest pair's distance
-    at_ends = spread >= np.maximum(separation, STRIP_ENDS * extent)
+    at_ends = plan_spreads(plan, ends[:, 0], count) >= np.maximum(separation, STRIP_ENDS * extent)
     strip = one_neighbour & at_ends & (widest >= narrowness * mean_width)
     return join_groups(labels, count, ends[strip[ends[:, 0]]])
 
