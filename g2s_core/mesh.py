@@ -17,7 +17,7 @@ from g2s_core.config import MeshConfig
 from g2s_core.errors import ConfigError, MeshError
 from g2s_core.input_files import check_regular_file
 from g2s_core.lazy import lazy_module
-from g2s_core.mesh_damage import describe_damage
+from g2s_core.mesh_damage import declared_faces, describe_damage
 from g2s_core.registry import Registry, installed
 
 # loaded with the first mesh read: the CLI and the batch command import this module for its names
@@ -82,12 +82,15 @@ def load_mesh(path: str | Path, config: MeshConfig | None = None) -> tuple[trime
             file = (io.BytesIO(text), "obj") if rewritten else (path,)
             loaded = (None if rewritten else _read_single_mesh(path)) or \
                 trimesh.load(*file, force="mesh", process=False, resolver=_files_beside(path))
+            # trimesh reads an OFF or PLY file cut at a line of its face list as the faces it holds
+            if len(getattr(loaded, "faces", ())) < (declared := declared_faces(path.suffix, raw)):
+                raise ValueError(f"the header declares {declared} faces, trimesh read {len(loaded.faces)}")
     except Exception as exc:  # trimesh raises many exception types for bad files
-        raise MeshError(f"{path}: {describe_damage(path.suffix, raw) or f'cannot read mesh ({type(exc).__name__}: {exc})'}") from None
+        raise MeshError(f"{path}: {describe_damage(path, raw) or f'cannot read mesh ({type(exc).__name__}: {exc})'}") from None
     try:
         mesh, cleaning = prepare_and_clean(loaded, config, source=str(path))
     except MeshError as exc:  # the file's fault, not mesh.scale's or cleaning's (read as empty, a face past its vertices)
-        if str(exc).startswith(f"{path}:") and (damage := describe_damage(path.suffix, raw)):
+        if str(exc).startswith(f"{path}:") and (damage := describe_damage(path, raw)):
             raise MeshError(f"{path}: {damage}") from None
         raise
     return mesh, MeshInfo(path.name, hashlib.sha256(raw).hexdigest(), len(mesh.vertices), len(mesh.faces), cleaning)
@@ -96,16 +99,30 @@ def load_mesh(path: str | Path, config: MeshConfig | None = None) -> tuple[trime
 def _as_trimesh_reads_obj(text: bytes) -> bytes:
     """An OBJ file's bytes as trimesh's reader understands them: it takes a UTF-8 byte-order mark for part of the
     first line, splits values on spaces only, lines on ``\\n`` only (an old Mac file ends its lines with ``\\r``),
-    reads a line only if it starts with its keyword,
-    and takes a negative index for one counted back from the file's end, not from the face's line (:func:`_absolute_indices`)."""
+    reads a line only if it starts with its keyword, reads a face's vertex index 0 (OBJ numbers them from 1) as 1,
+    and takes a negative index for one counted back from the file's end, not from the face's line (:func:`_absolute_indices`).
+
+    Raises:
+        ValueError: a face names vertex 0 (:func:`~g2s_core.mesh_damage.describe_damage` names its line)."""
     text = text.removeprefix(codecs.BOM_UTF8).replace(b"\t", b" ")
     text = text if b"\n" in text else text.replace(b"\r", b"\n")
     if b"\n " in text:  # trimesh skips an indented line: a "  v" line was lost and every later vertex index shifted
         text = re.sub(rb"\n +", b"\n", text)
+    last_vertex = text.rfind(b"\nv")
+    faces_before = _FACE_LINE.search(text, 0, last_vertex) is not None  # most files list every vertex first
+    # a value 0 is mostly an integer coordinate or "s 0": only a face line's is wrong
+    if any(text.startswith(b"f ", text.rfind(b"\n", 0, zero.start()) + 1)
+           for zero in _ZERO_INDEX.finditer(text, 0 if faces_before else last_vertex)):
+        raise ValueError("a face names vertex 0")
     # only faces before the last vertex can be misread: the search took 1 % of reading a file whose faces follow its
     # vertices, 6 % of one of 100 objects each followed by its faces (CPU time, 420k triangles, 3 December 2026)
-    return _absolute_indices(text) if _RELATIVE_FACE.search(text, 0, text.rfind(b"\nv")) else text
+    return _absolute_indices(text) if faces_before and _RELATIVE_FACE.search(text, 0, last_vertex) else text
 
+
+_FACE_LINE = re.compile(rb"^f ", re.MULTILINE)
+
+_ZERO_INDEX = re.compile(rb" 0(?![^/\s])")
+"""A value 0 on any line: on a face line, a corner's vertex index 0."""
 
 _RELATIVE_FACE = re.compile(rb"\nf [^\n-]*-")
 """A face line with a negative (relative) index."""
@@ -248,10 +265,10 @@ def prepare_mesh(loaded: object, config: MeshConfig, source: str) -> trimesh.Tri
 def prepare_and_clean(loaded: object, config: MeshConfig, source: str) -> tuple[trimesh.Trimesh, dict[str, int] | None]:
     """:func:`prepare_mesh`, then :func:`clean_mesh` when ``config.clean``; the mesh and what cleaning removed."""
     mesh = prepare_mesh(loaded, config, source)
-    return clean_mesh(mesh) if config.clean else (mesh, None)
+    return clean_mesh(mesh, source) if config.clean else (mesh, None)
 
 
-def clean_mesh(mesh: trimesh.Trimesh) -> tuple[trimesh.Trimesh, dict[str, int]]:
+def clean_mesh(mesh: trimesh.Trimesh, source: str = "mesh") -> tuple[trimesh.Trimesh, dict[str, int]]:
     """Merge close vertices and drop zero-area faces with pymeshlab, drop duplicate faces (of a two-sided
     face its up-facing side stays), then turn closed bodies wound inside out the right way
     (:func:`flip_inside_out_bodies`).
@@ -259,6 +276,9 @@ def clean_mesh(mesh: trimesh.Trimesh) -> tuple[trimesh.Trimesh, dict[str, int]]:
     Returns:
         The cleaned mesh and the count of what each step removed or flipped
         (``merged_vertices``, ``duplicate_faces``, ``zero_area_faces``, ``flipped_bodies``).
+
+    Raises:
+        MeshError: no triangle is left; the message starts with ``source``.
     """
     import pymeshlab  # imported here: it takes a second to load and most runs do not clean
 
@@ -280,7 +300,7 @@ def clean_mesh(mesh: trimesh.Trimesh) -> tuple[trimesh.Trimesh, dict[str, int]]:
     kept = np.sort(order[np.unique(np.sort(result.faces[order], axis=1), axis=0, return_index=True)[1]])
     result.update_faces(kept)
     if len(result.faces) == 0:
-        raise MeshError("cleaning removed every triangle of the mesh")
+        raise MeshError(f"{source}: mesh.clean removed every triangle (each had zero area, or corners merged into one)")
     result, flipped = flip_inside_out_bodies(result)
     return result, {"merged_vertices": merged, "duplicate_faces": len(order) - len(kept), "zero_area_faces": zero_area, "flipped_bodies": len(flipped)}
 

@@ -13,12 +13,17 @@ only after trimesh failed or the mesh it read was refused.
 
 from __future__ import annotations
 
+import base64
+import binascii
 import codecs
+import io
 import json
 import math
 import re
+import stat
 from collections.abc import Callable, Iterable
 from functools import partial
+from pathlib import Path
 
 STL_HEADER, STL_TRIANGLE, GLB_HEADER = 84, 50, 12
 """Bytes of a binary STL's header (80 free bytes, then the triangle count, uint32) and of each of its
@@ -27,20 +32,28 @@ triangles; bytes of a GLB's header (``glTF``, the version, then the file's lengt
 OBJ_VALUES = {b"v": "vertex coordinate", b"vt": "texture coordinate", b"vn": "normal coordinate"}
 """The OBJ lines of numbers trimesh reads, and what their values are called in messages."""
 
+OBJ_INDEXED = {b"v": "vertex", b"vt": "texture coordinate", b"vn": "normal"}
+"""What a face corner's ``v/vt/vn`` indices name, in messages."""
+
+PLY_TYPES = (b"char", b"uchar", b"short", b"ushort", b"int", b"uint", b"float", b"double", b"int8", b"uint8", b"int16",
+             b"uint16", b"int32", b"uint32", b"int64", b"uint64", b"float16", b"float32", b"float64")
+"""The PLY property types trimesh reads."""
+
 Rows = list[tuple[int, list[bytes]]]
 """A text file's lines as (line number from 1, whitespace-separated values)."""
 
 
-def describe_damage(suffix: str, data: bytes) -> str | None:
-    """Why the bytes ``data`` of a mesh file of type ``suffix`` (``.stl`` ...) hold no mesh, or not the one they
-    should, in words; ``None`` when none of the checks below finds it.
+def describe_damage(path: Path, data: bytes) -> str | None:
+    """Why the bytes ``data`` of the mesh file ``path`` hold no mesh, or not the one they should, in words;
+    ``None`` when none of the checks below finds it.
 
     Text formats are checked line by line (OBJ, OFF, ASCII PLY: values that
     are not numbers, vertices of fewer than 3 coordinates, faces of fewer than
     3 corners or naming a vertex the file lacks, fewer rows than the header
-    declares); binary formats by their size against their header.
+    declares); binary formats by their size against their header; glTF and
+    GLB by their JSON and the buffers it lists (:func:`_gltf_damage`).
     """
-    suffix, size = suffix.lower(), len(data)
+    suffix, size = path.suffix.lower(), len(data)
     if size == 0:
         return "the file is empty (0 bytes)"
     if suffix == ".stl" and size >= STL_HEADER and (not data.startswith(b"solid") or b"\0" in data[:STL_HEADER]):
@@ -52,46 +65,126 @@ def describe_damage(suffix: str, data: bytes) -> str | None:
     announced = int.from_bytes(data[8:GLB_HEADER], "little")
     if suffix == ".glb" and size >= GLB_HEADER and data.startswith(b"glTF") and size < announced:
         return f"the GLB file ends early (its header announces {announced} bytes, the file has {size})"
+    if suffix == ".glb" and data.startswith(b"glTF"):
+        return _glb_damage(data, path.parent)
     if suffix == ".gltf":
-        try:
-            json.loads(data)
-        except (ValueError, RecursionError) as exc:  # json.JSONDecodeError; UnicodeDecodeError for bytes that are not UTF-8
-            where = f"line {exc.lineno}, column {exc.colno}: {exc.msg}" if isinstance(exc, json.JSONDecodeError) else \
-                "nested too deeply" if isinstance(exc, RecursionError) else "not UTF-8 text"
-            return f"not valid glTF JSON ({where})"
+        document = _json(data)
+        return f"not valid glTF JSON ({document})" if isinstance(document, str) else _gltf_damage(document, path.parent, None)
     readers: dict[str, Callable[[bytes], str | None]] = {".obj": _obj_damage, ".off": _off_damage, ".ply": _ply_damage}
     return readers[suffix](data) if suffix in readers else None
 
 
+def declared_faces(suffix: str, data: bytes) -> int:
+    """The faces an OFF or PLY file's header declares (0 for other files, or when the header does not say)."""
+    if suffix.lower() == ".ply":
+        declared = re.search(rb"^element face (\d+)", data.partition(b"end_header")[0], re.MULTILINE)
+    elif suffix.lower() == ".off":  # OFF, then "vertices faces edges" on that line or the next one of values
+        declared = re.match(rb"\s*\w*OFF\s+(?:#[^\n]*\s+)*\d+\s+(\d+)", data)
+    return int(declared[1]) if suffix.lower() in (".ply", ".off") and declared else 0
+
+
+def _json(data: bytes) -> object:
+    """JSON text's value, or where and why it is not JSON (a string)."""
+    try:
+        return json.loads(data)
+    except (ValueError, RecursionError) as exc:  # json.JSONDecodeError; UnicodeDecodeError for bytes that are not UTF-8
+        return f"line {exc.lineno}, column {exc.colno}: {exc.msg}" if isinstance(exc, json.JSONDecodeError) else \
+            "nested too deeply" if isinstance(exc, RecursionError) else "not UTF-8 text"
+
+
+def _glb_damage(data: bytes, folder: Path) -> str | None:
+    """What is wrong with a GLB file's chunks: its JSON chunk (the first), then the glTF it holds, whose buffer
+    without a ``uri`` is the binary chunk that follows."""
+    length, kind = int.from_bytes(data[12:16], "little"), data[16:20]
+    if kind != b"JSON":
+        return f"the GLB's first chunk is of type {_text(kind)!r}, expected 'JSON'"
+    if len(data) < 20 + length:
+        return f"the GLB's JSON chunk announces {length} bytes, the file has {len(data) - 20} after the chunk's header"
+    if isinstance(document := _json(data[20:20 + length]), str):
+        return f"the GLB's JSON chunk is not valid JSON ({document})"
+    binary = data[20 + length:]
+    return _gltf_damage(document, folder, int.from_bytes(binary[:4], "little") if binary[4:8] == b"BIN\0" else None)
+
+
+def _gltf_damage(document: object, folder: Path, binary: int | None) -> str | None:
+    """What is wrong with a glTF document: not an object, a buffer that cannot be read (a file missing beside the
+    glTF file or shorter than its ``byteLength``, a data URI that is not base64, a GLB without its binary chunk), or
+    an index to a buffer or buffer view the document lacks. ``binary``: a GLB's binary chunk's length."""
+    if not isinstance(document, dict):
+        return "expected a glTF JSON object at the top level"
+    sizes = []
+    for number, buffer in _listed(document, "buffers"):
+        uri, needed = buffer.get("uri"), buffer.get("byteLength", 0)
+        if uri is None and binary is None:
+            return f"buffers[{number}] has no uri and the file no binary chunk"
+        if isinstance(uri, str) and uri.startswith("data:"):
+            try:
+                size = len(base64.b64decode(uri.partition(",")[2], validate=True))
+            except binascii.Error:
+                return f"buffers[{number}]: its data URI is not valid base64"
+        elif isinstance(uri, str):
+            try:
+                if not stat.S_ISREG((folder / uri).stat().st_mode):
+                    return None  # trimesh was refused it by name (a FIFO would wait forever): mesh._files_beside
+                with (folder / uri).open("rb") as file:
+                    size = file.seek(0, io.SEEK_END)
+            except OSError as exc:
+                return f"buffers[{number}]: cannot read its file {uri!r} beside the glTF file ({exc.strerror})"
+        else:
+            size = binary or 0
+        if isinstance(needed, int) and size < needed:
+            return f"buffers[{number}]: byteLength is {needed} bytes, its data holds {size}"
+        sizes.append(size)
+    views = _listed(document, "bufferViews")
+    for items, key, target, count in (("bufferViews", "buffer", "buffer", len(sizes)), ("accessors", "bufferView", "bufferView", len(views))):
+        for number, item in _listed(document, items):
+            if key in item and not (isinstance(item[key], int) and 0 <= item[key] < count):
+                return f"{items}[{number}].{key} is {item[key]!r}; the file lists {_many(count, target)}"
+    for number, view in views:
+        end = sum(value for value in (view.get("byteOffset", 0), view.get("byteLength", 0)) if isinstance(value, int))
+        if "buffer" in view and end > sizes[view["buffer"]]:
+            return f"bufferViews[{number}] ends at byte {end}, past the {sizes[view['buffer']]} bytes of buffer {view['buffer']}"
+    return None
+
+
+def _listed(document: dict, name: str) -> list[tuple[int, dict]]:
+    """A glTF document's list ``name`` (``buffers`` ...): each object's index and the object."""
+    items = document.get(name)
+    return [(number, item) for number, item in enumerate(items) if isinstance(item, dict)] if isinstance(items, list) else []
+
+
 def _obj_damage(data: bytes) -> str | None:
-    """The first line of an OBJ file that is wrong. Faces number vertices from 1, or back from their line when
-    negative; ``f 1 2 9`` in a file of 3 vertices is wrong wherever it stands (trimesh reads every vertex first)."""
+    """The first line of an OBJ file that is wrong. Faces number vertices (texture coordinates, normals) from 1, or
+    back from their line when negative; ``f 1 2 9`` in a file of 3 vertices is wrong wherever it stands (trimesh
+    reads every vertex first)."""
     rows = _rows(data.removeprefix(codecs.BOM_UTF8).splitlines())
-    vertices, before = sum(values[:1] == [b"v"] for _, values in rows), 0
+    listed = {key: sum(values[:1] == [key] for _, values in rows) for key in OBJ_VALUES}
+    before = dict.fromkeys(OBJ_VALUES, 0)
     for number, line in rows:
         (key, *values), problem = line or [b""], None
         if key in OBJ_VALUES:
-            before += key == b"v"
+            before[key] += 1
             problem = _vertex(values) if key == b"v" else _not_numbers(values, OBJ_VALUES[key])
         elif key == b"f" and len(values) < 3:
             problem = f"a face of {_many(len(values), 'corner')} (at least 3 make a face)"
         elif key == b"f" and (wrong := next((c for c in values if not re.fullmatch(rb"-?\d+(/-?\d*){0,2}", c)), None)):
             problem = f"face corner {_text(wrong)!r} is not a vertex index (expected v, v/vt, v//vn or v/vt/vn)"
         elif key == b"f":
-            indices = [int(corner.split(b"/")[0]) for corner in values]
-            problem = next((f"a face refers to vertex {i}{_named_vertices(i, before, vertices)}" for i in indices
-                            if not (0 < i <= vertices or 0 < before + 1 + i <= before)), None)
+            problem = next((f"a face refers to {OBJ_INDEXED[kind]} {i}{_named_item(i, before[kind], listed[kind], OBJ_INDEXED[kind])}"
+                            for corner in values for kind, index in zip(OBJ_VALUES, corner.split(b"/")) if index
+                            if not (0 < (i := int(index)) <= listed[kind] or 0 < before[kind] + 1 + i <= before[kind])), None)
         if problem:
             return f"line {number}: {problem}"
     return None
 
 
-def _named_vertices(index: int, before: int, vertices: int) -> str:
-    """Why the OBJ face index ``index`` names no vertex, ``before`` of the file's ``vertices`` preceding its line."""
+def _named_item(index: int, before: int, listed: int, name: str) -> str:
+    """Why the OBJ face index ``index`` names no ``name`` (vertex ...), ``before`` of the file's ``listed`` preceding
+    its line."""
     if index == 0:
-        return "; OBJ numbers vertices from 1"
-    return f"; the file has {_many(vertices, 'vertex')}" if index > 0 else \
-        f", counted back from its line, but the file lists {_many(before, 'vertex')} before it"
+        return f"; OBJ numbers {_many(2, name).split()[1]} from 1"
+    return f"; the file has {_many(listed, name)}" if index > 0 else \
+        f", counted back from its line, but the file lists {_many(before, name)} before it"
 
 
 def _off_damage(data: bytes) -> str | None:
@@ -121,6 +214,8 @@ def _ply_damage(data: bytes) -> str | None:
         if key == b"element" and len(values) == 2 and values[1].isdigit():
             elements.append((_text(values[0]), int(values[1]), []))
         elif key == b"property" and elements and len(values) == (4 if values[:1] == [b"list"] else 2):
+            if wrong := next((kind for kind in values[values[0] == b"list":-1] if kind not in PLY_TYPES), None):
+                return f"header line {number}: unknown property type {_text(wrong)!r} (expected one of {_text(b', '.join(PLY_TYPES))})"
             elements[-1][2].append(values[:-1])
         elif key in (b"element", b"property"):
             return f"header line {number}: expected 'element NAME COUNT' or 'property TYPE NAME', got {_text(b' '.join([key, *values]))!r}"

@@ -221,6 +221,60 @@ def test_a_gltf_buffer_that_is_a_fifo_is_refused_not_waited_on(tmp_path):
     assert_clean_error(outcome, f"{gltf}: cannot read mesh (MeshError: {buffer}: expected a file, got a FIFO)")
 
 
+def _glb(document: dict, binary: bytes) -> bytes:
+    """A GLB file of ``document`` (the JSON chunk) and the binary chunk ``binary``."""
+    chunk = json.dumps(document).encode()
+    chunk += b" " * (-len(chunk) % 4)
+    body = len(chunk).to_bytes(4, "little") + b"JSON" + chunk + len(binary).to_bytes(4, "little") + b"BIN\0" + binary
+    return b"glTF" + (2).to_bytes(4, "little") + (12 + len(body)).to_bytes(4, "little") + body
+
+
+def _glb_parts(tmp_path: Path) -> tuple[bytes, dict, bytes]:
+    """floor.glb's bytes, its JSON document and its binary chunk's data."""
+    data = _floor(tmp_path, ".glb").read_bytes()
+    length = int.from_bytes(data[12:16], "little")
+    return data, json.loads(data[20:20 + length]), data[20 + length + 8:]
+
+
+@pytest.mark.parametrize("damage, says", [
+    # were "cannot read mesh (JSONDecodeError: Expecting value: line 1 column 2 (char 1))" ...
+    (lambda data, document, binary: data[:21] + b"@" + data[22:], "the GLB's JSON chunk is not valid JSON (line 1, column 2: Expecting property name enclosed in double quotes)"),
+    (lambda data, document, binary: data[:16] + b"JSOX" + data[20:], "the GLB's first chunk is of type 'JSOX', expected 'JSON'"),
+    (lambda data, document, binary: data[:12] + (len(data)).to_bytes(4, "little") + data[16:],
+     "the GLB's JSON chunk announces {size} bytes, the file has {rest} after the chunk's header"),
+    # was "cannot read mesh (IndexError: list index out of range)"
+    (lambda data, document, binary: _glb({**document, "accessors": [{**document["accessors"][0], "bufferView": 7}]}, binary),
+     "accessors[0].bufferView is 7; the file lists 2 bufferViews"),
+    (lambda data, document, binary: _glb({**document, "bufferViews": [{**view, "buffer": 3} for view in document["bufferViews"]]}, binary),
+     "bufferViews[0].buffer is 3; the file lists 1 buffer"),
+])
+def test_a_glb_whose_json_chunk_is_damaged_says_what_is_wrong(damage, says, tmp_path, quick_config, capsys):
+    data, document, binary = _glb_parts(tmp_path)
+    glb = _damaged(tmp_path, "bad.glb", damage(data, document, binary))
+    outcome = run_g2s(capsys, "run", quick_config, glb, "-o", tmp_path / "out")
+    assert_clean_error(outcome, f"{glb}: {says.format(size=len(data), rest=len(data) - 20)}")
+    assert tree(tmp_path / "out") == []
+
+
+@pytest.mark.parametrize("buffer, says", [
+    # was "cannot read mesh (FileNotFoundError: missing.bin)"
+    ({"uri": "missing.bin"}, "buffers[0]: cannot read its file 'missing.bin' beside the glTF file (No such file or directory)"),
+    # were "cannot read mesh (AssertionError: )"
+    ({"uri": "short.bin"}, "buffers[0]: byteLength is {length} bytes, its data holds 3"),
+    ({"uri": "data:application/octet-stream;base64,@@@"}, "buffers[0]: its data URI is not valid base64"),
+])
+def test_a_gltf_whose_buffer_cannot_be_read_names_it(buffer, says, tmp_path, quick_config, capsys):
+    gltf = _gltf_with_buffer(tmp_path)
+    (tmp_path / "short.bin").write_bytes(b"abc")
+    document = json.loads(gltf.read_text())
+    length = document["buffers"][0]["byteLength"]
+    document["buffers"][0].update(buffer)
+    gltf.write_text(json.dumps(document))
+    outcome = run_g2s(capsys, "run", quick_config, gltf, "-o", tmp_path / "out")
+    assert_clean_error(outcome, f"{gltf}: {says.format(length=length)}")
+    assert tree(tmp_path / "out") == []
+
+
 def test_a_gltf_nested_too_deeply_is_a_clean_error(tmp_path, quick_config, capsys):
     # the damage report's own json.loads raised RecursionError: an internal error
     gltf = _damaged(tmp_path, "deep.gltf", b"[" * 100_000 + b"]" * 100_000)
@@ -304,6 +358,20 @@ def _cut(text: str, marker: str) -> str:
     ("header.ply", _cut(PLY, "end_header"), "the PLY header has no end_header line"),
     # was "cannot read mesh (IndexError: index 0 is out of bounds for axis 0 with size 0)"
     ("empty.glb", "", "the file is empty (0 bytes)"),
+    # were read silently as vertex 1: trimesh subtracts 1 from positive indices only (robust2, 3 December 2026)
+    ("zero.obj", OBJ.replace("f 1 3 4", "f 0 3 4"), "line 6: a face refers to vertex 0; OBJ numbers vertices from 1"),
+    ("zero_last.obj", OBJ + "f 2 3 0", "line 7: a face refers to vertex 0; OBJ numbers vertices from 1"),
+    ("zero_vt.obj", OBJ.replace("f 1 2 3", "vt 0 0\nf 1/1 0/1 3/1"), "line 6: a face refers to vertex 0; OBJ numbers vertices from 1"),
+    # was "cannot read mesh (OverflowError: Python int too large to convert to C long)"
+    ("vn.obj", OBJ.replace("f 1 2 3\nf 1 3 4\n", "vt 0 0\nvn 0 1 0\nf 1/1/1 2/1/99999999999999999999 3/1/1\nf 1//1 3//1 4//1\n"),
+     "line 7: a face refers to normal 99999999999999999999; the file has 1 normal"),
+    # were read silently with the faces before the cut
+    ("cut_faces.off", _cut(OFF, "3 0 2 3"), "the header declares 2 faces, the file has 1"),
+    ("cut_faces.ply", _cut(PLY, "3 0 2 3"), "the header declares 2 faces, the file has 1"),
+    # was "cannot read mesh (KeyError: 'double64')"
+    ("type.ply", PLY.replace("property float z", "property double64 z"), "header line 6: unknown property type 'double64' "
+     "(expected one of char, uchar, short, ushort, int, uint, float, double, int8, uint8, int16, uint16, int32, uint32, "
+     "int64, uint64, float16, float32, float64)"),
 ])
 def test_a_damaged_text_mesh_is_named_by_its_line(name, data, says, tmp_path, quick_config, capsys):
     mesh = tmp_path / name
@@ -373,3 +441,11 @@ def test_obj_lines_indented_are_read(tmp_path):
     (tmp_path / "indented.obj").write_text("o floor\n" + "".join("  " + line + "\n" for line in OBJ.splitlines()))
     plain, indented = (load_mesh(tmp_path / name)[0] for name in ("plain.obj", "indented.obj"))
     assert indented.vertices.tolist() == plain.vertices.tolist() and indented.faces.tolist() == plain.faces.tolist()
+
+
+def test_a_mesh_that_cleaning_empties_is_named(tmp_path, quick_config, capsys):
+    # was "cleaning removed every triangle of the mesh", without the file (robust2 sweep, 3 December 2026)
+    mesh = tmp_path / "collinear.obj"
+    mesh.write_text("v 0 0 0\nv 1 0.5 2\nv 2 1 4\nf 1 2 3\n")
+    outcome = run_g2s(capsys, "run", quick_config, mesh, "-o", tmp_path / "out", "--set", "mesh.clean=true")
+    assert_clean_error(outcome, f"{mesh}: mesh.clean removed every triangle (each had zero area, or corners merged into one)")
