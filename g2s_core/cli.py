@@ -59,6 +59,16 @@ def output_folder(text: str) -> Path:
     return Path(text)
 
 
+def _given(what: str) -> Callable[[str], str]:
+    """The type of an argument naming ``what``, refusing an empty one: ``Path("")`` is the working folder, which
+    was then named as the config or mesh (``.: expected a config file, got a folder``)."""
+    def given(text: str) -> str:
+        if not text.strip():
+            raise argparse.ArgumentTypeError(f"expected {what}, got an empty name")
+        return text
+    return given
+
+
 def _parser() -> tuple[argparse.ArgumentParser, dict[str, Callable[[argparse.Namespace], int] | G2SError | PluginFailure]]:
     """The parser, and the run function of each plugin's command (or why it cannot run)."""
     parser = CommandParser(
@@ -79,8 +89,8 @@ def _parser() -> tuple[argparse.ArgumentParser, dict[str, Callable[[argparse.Nam
         epilog=f"{EXIT_CODES}\n\npresets:\n" + "\n".join(_columns(list(presets().items()), width=80, indent=2)),
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
-    run.add_argument("config", help="preset name (see `g2s presets`) or YAML config file")
-    run.add_argument("mesh", help=f"mesh file (.obj .glb .gltf .ply .stl .off) or {SAMPLE_PREFIX}NAME[?param=value&...] "
+    run.add_argument("config", type=_given("a preset name or a config file"), help="preset name (see `g2s presets`) or YAML config file")
+    run.add_argument("mesh", type=_given(f"a mesh file or {SAMPLE_PREFIX}NAME"), help=f"mesh file (.obj .glb .gltf .ply .stl .off) or {SAMPLE_PREFIX}NAME[?param=value&...] "
                      "for a level from an installed level generator (see `g2s plugins --stage levels`)")
     run.add_argument("-o", "--outdir", type=output_folder, required=True, help="folder for the results")
     _add_output_options(run)
@@ -185,9 +195,6 @@ def _run(args: argparse.Namespace, errors: Console, mesh_name: str | None = None
     plan = pipeline.plan(config, registry, source=source)
     mesh = api.open_mesh(args.mesh, config, name=mesh_name, registry=registry)
     quiet = args.quiet or args.json
-    if mesh.cleaning and not quiet:
-        counts = ", ".join(f"{count} {what.replace('_', ' ')}" for what, count in mesh.cleaning.items())
-        errors.print(f"cleaning: {counts}", markup=False, highlight=False, soft_wrap=True)
     # progress on a terminal only, so that an error stays the one line on stderr that scripts can rely on
     live = not quiet and errors.is_terminal
     with errors.status("running") if live else nullcontext() as spinner:
@@ -200,6 +207,9 @@ def _run(args: argparse.Namespace, errors: Console, mesh_name: str | None = None
     if args.json:
         print(json.dumps(_summary(result, args.outdir, formats, written), indent=1, sort_keys=True))
         return 0
+    if mesh.cleaning and not quiet:  # after the run, so that an error stays the one line on stderr
+        counts = ", ".join(f"{count} {what.replace('_', ' ')}" for what, count in mesh.cleaning.items())
+        errors.print(f"cleaning: {counts}", markup=False, highlight=False, soft_wrap=True)
     for warning in () if live else result.warnings:  # else they were shown above the spinner
         _warn(errors, warning)
     if not args.quiet:

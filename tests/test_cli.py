@@ -227,6 +227,14 @@ def test_an_empty_output_folder_name_is_refused(command, tmp_path):
     assert list(tmp_path.iterdir()) == []
 
 
+@pytest.mark.parametrize("args, says", [
+    (["", "sample:t_hub"], "argument config: expected a preset name or a config file, got an empty name"),
+    (["graph_only", " "], "argument mesh: expected a mesh file or sample:NAME, got an empty name")])
+def test_an_empty_config_or_mesh_name_is_refused_not_read_as_the_working_folder(args, says, tmp_path):
+    # was ".: expected a config file, got a folder" (".: expected a mesh file ..."): Path("") is the working folder
+    assert_user_error(g2s("run", *args, "-o", tmp_path / "out", cwd=tmp_path), says)
+
+
 def test_a_setting_given_twice_is_refused_not_the_last_one_kept(tmp_path):
     # YAML and URL queries both kept the last value silently: an agent 9 m wide, or a 3-room dungeon
     config = tmp_path / "twice.yaml"

@@ -449,3 +449,15 @@ def test_a_mesh_that_cleaning_empties_is_named(tmp_path, quick_config, capsys):
     mesh.write_text("v 0 0 0\nv 1 0.5 2\nv 2 1 4\nf 1 2 3\n")
     outcome = run_g2s(capsys, "run", quick_config, mesh, "-o", tmp_path / "out", "--set", "mesh.clean=true")
     assert_clean_error(outcome, f"{mesh}: mesh.clean removed every triangle (each had zero area, or corners merged into one)")
+
+
+def test_what_cleaning_removed_follows_a_run_and_never_precedes_its_error(tmp_path, quick_config, capsys):
+    # "cleaning: ..." was printed on stderr before the run, so that a failing run's error was its second line
+    small = tmp_path / "small.obj"
+    small.write_text("v 0 0 0\nv 0 0 0.5\nv 0.5 0 0\nv 0.5 0 0\nf 1 2 3\nf 1 2 4\n")
+    outcome = run_g2s(capsys, "run", quick_config, small, "-o", tmp_path / "out", "--set", "mesh.clean=true")
+    assert_clean_error(outcome, "small.obj: no walkable surface for the agent")
+    floor = tmp_path / "floor.obj"
+    floor.write_text(FLOOR_OBJ.format(comment="floor", name="floor") + "f 1 4 3\n")
+    outcome = run_g2s(capsys, "run", quick_config, floor, "-o", tmp_path / "out", "--set", "mesh.clean=true")
+    assert outcome.code == 0 and "cleaning: 0 merged vertices, 1 duplicate faces" in outcome.stderr, outcome.stderr
