@@ -21,6 +21,7 @@ Complexity: O(n log n) to build the k-d tree plus O(p (log n + k)) for p points.
 from __future__ import annotations
 
 import json
+import math
 import re
 from pathlib import Path
 from typing import Annotated, Any
@@ -116,6 +117,8 @@ def read_points(file: str | Path) -> np.ndarray:
             point = vec3(row)
         except (TypeError, ValueError):
             raise G2SError(f"{path}: point {index} is {row!r}, expected [x, y, z] numbers") from None
+        if not all(map(math.isfinite, point)):  # nan, inf, 1e999: was named without the file
+            raise G2SError(f"{path}: point {index} {point} is not finite")
         points.append(point)
     if not points:
         raise G2SError(f"{path}: the file holds no points")
@@ -130,10 +133,8 @@ def g2s_select_terminals(graph: nx.Graph, params: Params, context: RunContext) -
         G2SError: the graph has no nodes, or a point is farther than
             ``max_distance`` from every node (the message names the point).
     """
+    # finite: the params refuse .nan and .inf, read_points the file's
     points = np.asarray(params.points, dtype=np.float64) if params.points is not None else read_points(params.file)
-    if not np.all(np.isfinite(points)):
-        index = int(np.flatnonzero(~np.all(np.isfinite(points), axis=1))[0])
-        raise G2SError(f"point {index} {tuple(points[index].tolist())} is not finite")
     existing = sorted(graph.nodes)
     if not existing:
         raise G2SError("the graph has no nodes to join the points to")
@@ -147,7 +148,7 @@ def g2s_select_terminals(graph: nx.Graph, params: Params, context: RunContext) -
         if distances[i, 0] > params.max_distance:
             x, y, z = point.tolist()
             raise G2SError(
-                f"point {i} ({x:g}, {y:g}, {z:g}) is {distances[i, 0]:.3g} m from the nearest graph node, "
+                f"{params.file or 'terminals.params.points'}: point {i} ({x:g}, {y:g}, {z:g}) is {distances[i, 0]:.3g} m from the nearest graph node, "
                 f"farther than max_distance = {params.max_distance:g} m"
             )
     first_id = int(max(existing)) + 1

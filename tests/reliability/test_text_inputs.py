@@ -185,19 +185,23 @@ def test_bad_points_file_api(kind, tmp_path):
 def test_odd_points_json(text, says, tmp_path):
     points = tmp_path / "points.json"
     points.write_text(text)
-    try:
+    with pytest.raises(G2SError) as caught:
         read_points(points)
-    except G2SError as exc:
-        assert str(points) in str(exc) and says in str(exc)
-    else:  # an infinite value is read; the terminal selector refuses it (checked through the CLI below)
-        assert says == "not finite"
+    assert str(points) in str(caught.value) and says in str(caught.value)
 
 
-def test_infinite_point_refused_by_the_run(tmp_path, capsys):
+@pytest.mark.parametrize("text, says", [
+    # were "point 0 (0.0, 0.0, inf) is not finite", without the file (robust2 sweep, 3 December 2026)
+    ("0, 0, 1e999\n", "point 0 (0.0, 0.0, inf) is not finite"),
+    ("x,y,z\n1,nan,2\n", "point 0 (1.0, nan, 2.0) is not finite"),
+    # were "point 0 (1000, 0, 2000) is ... m from the nearest graph node ...", without the file: millimetres
+    ("1000,0,2000\n", "point 0 (1000, 0, 2000) is"),
+])
+def test_a_point_refused_by_the_run_names_its_file(text, says, tmp_path, capsys):
     points = tmp_path / "points.csv"
-    points.write_text("0, 0, 1e999\n")
+    points.write_text(text)
     outcome = run_g2s(capsys, "run", points_config(tmp_path, points), CORRIDOR, "-o", tmp_path / "out")
-    assert_clean_error(outcome, "point 0", "not finite")
+    assert_clean_error(outcome, f"{points}: {says}")
 
 
 # --- structure.json read back --------------------------------------------------------------
