@@ -128,8 +128,8 @@ def _gltf_damage(document: object, folder: Path, binary: int | None) -> str | No
                     return None  # trimesh was refused it by name (a FIFO would wait forever): mesh._files_beside
                 with (folder / uri).open("rb") as file:
                     size = file.seek(0, io.SEEK_END)
-            except OSError as exc:
-                return f"buffers[{number}]: cannot read its file {uri!r} beside the glTF file ({exc.strerror})"
+            except (OSError, ValueError) as exc:  # ValueError: a NUL in the name
+                return f"buffers[{number}]: cannot read its file {uri!r} beside the glTF file ({getattr(exc, 'strerror', None) or exc})"
         else:
             size = binary or 0
         if isinstance(needed, int) and size < needed:
@@ -167,7 +167,7 @@ def _obj_damage(data: bytes) -> str | None:
             problem = _vertex(values) if key == b"v" else _not_numbers(values, OBJ_VALUES[key])
         elif key == b"f" and len(values) < 3:
             problem = f"a face of {_many(len(values), 'corner')} (at least 3 make a face)"
-        elif key == b"f" and (wrong := next((c for c in values if not re.fullmatch(rb"-?\d+(/-?\d*){0,2}", c)), None)):
+        elif key == b"f" and (wrong := next((c for c in values if not re.fullmatch(rb"-?\d+(/(-?\d+)?){0,2}", c)), None)):
             problem = f"face corner {_text(wrong)!r} is not a vertex index (expected v, v/vt, v//vn or v/vt/vn)"
         elif key == b"f":
             problem = next((f"a face refers to {OBJ_INDEXED[kind]} {i}{_named_item(i, before[kind], listed[kind], OBJ_INDEXED[kind])}"
