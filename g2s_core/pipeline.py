@@ -237,7 +237,7 @@ def steiner_forest(
     ``solve(subgraph, terminals)`` is called for components with two or more
     terminals (with the whole graph when all terminals share one component); a component with one terminal gives a single-node tree. When
     terminals lie in several components a warning places the largest and names
-    the likely cause (:mod:`g2s_core.disconnected`). The forest's nodes and edges carry the graph's attributes.
+    the likely cause (:mod:`g2s_core.disconnected`). The forest's nodes and edges share the graph's attribute dicts.
     """
     components = sorted((sorted(c) for c in nx.connected_components(graph)), key=lambda c: c[0])
     component_of = {node: index for index, component in enumerate(components) for node in component}
@@ -256,7 +256,8 @@ def steiner_forest(
         nodes += sorted(tree.nodes)
         edges += sorted((u, v) if u <= v else (v, u) for u, v in tree.edges)
     # the groups' nodes and edges are disjoint: all nodes first then all edges make the same graph as group by group
-    return _with_graph_attributes(graph_of(nx.Graph(), {node: {} for node in nodes}, ((u, v, {}) for u, v in edges)), graph)
+    # the graph's own attribute dicts, shared as a subgraph view shares them: no step changes them after step 2
+    return graph_of(nx.Graph(), {node: graph._node[node] for node in nodes}, ((u, v, graph._adj[u][v]) for u, v in edges))
 
 
 def _with_graph_attributes(part: nx.Graph, graph: nx.Graph) -> nx.Graph:

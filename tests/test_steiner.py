@@ -399,3 +399,21 @@ def test_plugin_module_through_registry_and_pipeline(module):
     )
     assert edge_set(forest) == {(0, 1), (0, 2), (0, 3)}
     assert 8 in forest and forest.degree(8) == 0
+
+
+def test_the_steiner_forest_shares_the_graphs_attribute_dicts():
+    """The forest's nodes and edges hold the graph's own attribute dicts, in the graph's key order, as a subgraph
+    view would; one lone terminal of another component as well."""
+    from g2s_core.model import RunContext
+    from g2s_core.pipeline import steiner_forest
+
+    graph = weighted([(0, 1, 1.0), (0, 2, 1.0), (1, 2, 2.5), (7, 8, 1.0)])
+    for node in graph:
+        graph.nodes[node].update(pos=(float(node), 0.0, 0.0), area=1.0 + node)
+    graph.edges[0, 1]["portal"] = 3
+    context = RunContext(mesh=None, agent=None, centre=np.zeros(3))
+    forest = steiner_forest(graph, [1, 2, 8], lambda sub, terms: mehlhorn.mehlhorn_steiner_tree(sub, terms), context)
+    assert list(forest) == [0, 1, 2, 8] and edge_set(forest) == {(0, 1), (0, 2)}
+    assert all(forest.nodes[node] is graph.nodes[node] for node in forest)
+    assert all(forest.edges[u, v] is graph.edges[u, v] for u, v in forest.edges)
+    assert list(forest.edges[0, 1].items()) == [("weight", 1.0), ("portal", 3)]
