@@ -78,14 +78,18 @@ def test_grid_faces_and_their_boundary() -> None:
 
 
 def test_a_hole_larger_than_two_spacings_squared_is_open() -> None:
-    # 6 x 6 samples with the middle 2 x 2 gone: 16 unit squares round a 9 m² hole (a pillar's).
-    surface = sampled_surface(_grid(6, {(2, 2), (2, 3), (3, 2), (3, 3)}), spacing=1.0)
-    assert len(surface.polygons) == 16
+    # 6 x 6 samples with the middle 2 x 2 gone (a pillar's hole): 16 unit squares, and a triangle
+    # at each of the hole's corners (the diagonal there has a common neighbour on one side only),
+    # round an octagon of 9 - 4 x 0.5 = 7 m².
+    pillar = {(2, 2), (2, 3), (3, 2), (3, 3)}
+    surface = sampled_surface(_grid(6, pillar), spacing=1.0)
+    assert len(surface.polygons) == 20 and sorted(np.round(surface.areas, 9)) == [0.5] * 4 + [1.0] * 16
     loops = boundary_loops(surface.vertices, surface.polygons, surface.neighbours)
-    assert sorted(lp.edge_count for lp in loops) == [12, 20]
+    assert sorted(lp.edge_count for lp in loops) == [8, 20]
     # With samples 2 m apart the same hole is less than 2 spacings squared: walkable surface.
-    surface = sampled_surface(_grid(6, {(2, 2), (2, 3), (3, 2), (3, 3)}), spacing=2.0)
-    assert len(surface.polygons) == 17
+    surface = sampled_surface(_grid(6, pillar), spacing=2.0)
+    assert len(surface.polygons) == 21
+    assert [lp.edge_count for lp in boundary_loops(surface.vertices, surface.polygons, surface.neighbours)] == [20]
 
 
 def test_samples_in_single_file_keep_both_sides_as_boundary() -> None:
