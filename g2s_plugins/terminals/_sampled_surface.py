@@ -47,9 +47,14 @@ from scipy.sparse import csgraph
 FACE_AREA_SPACINGS = 2.0
 """A counter-clockwise face of at most this many squared sample spacings (in plan) is walkable surface.
 
-A maximal Poisson-disk pick leaves no empty disk wider than the spacing among its samples, so the
-faces between them cover at most about a spacing squared; a hole round a pillar or a well, eroded by
-the clearance on every side, is larger (docs/entry_exit.md, "Openings on the sampling route")."""
+A maximal Poisson-disk pick leaves no empty disk wider than the spacing among its samples: a
+Delaunay triangle between them covers at most 1.3 spacings squared, a square of four on one
+circle 2. Measured on the sampled graphs of every generated piece kind (docs/entry_exit.md,
+"Openings on the sampling route"): 3,995 counter-clockwise faces, median 0.79, 99 % at most 3.7;
+the larger are holes (the ring corridor's island, 156) or places where the graph lacks an edge
+(up to 10.2 on ``big_hall``'s open floor). A face taken for a hole costs rays only (the floor
+goes on all round it: no way out); one taken for surface could hide a boundary, so the bound is
+the tight one."""
 
 
 @dataclass(frozen=True)

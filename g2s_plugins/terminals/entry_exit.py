@@ -95,8 +95,13 @@ selector returns no terminals and the pipeline stops with a warning. Every
 batch of rays (one per step and bisection round) is one call of the shared
 :class:`g2s_plugins._raycasting.RayCaster`, never one call per ray.
 
-Needs the navigation mesh the ``navmesh`` graph builder leaves in
-``context.navmesh``.
+Runs on the navigation mesh the ``navmesh`` graph builder leaves in
+``context.navmesh``; without one, on the surface the ``sampling`` builder's
+graph covers (:mod:`._sampled_surface`): its faces stand for the navmesh
+polygons (normals, the main floor, the nodes an opening is joined to), its
+boundary lies up to a sample spacing inside the eroded edge, and the search
+for the floor's edge (step 3) reaches that much farther. Every other step
+and rule is the same on both.
 
 Cost, for a navmesh of V vertices and B boundary edges, S samples (the
 boundary's length / ``sample_step``), k = ``fan_count`` and o openings:
