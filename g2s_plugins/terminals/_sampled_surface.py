@@ -6,32 +6,36 @@ radius) joined where the agent walks between them. The surface they cover is
 the union of the graph's small faces; its boundary, the rims of that union,
 plays the navmesh boundary's part for the entry/exit method.
 
-1. *Plan-planar edges*: an edge ``a-b`` is dropped when a common neighbour
-   ``c`` sees it at a right angle or more (``c`` inside the circle on ``a-b``
-   as diameter, seen from above): the Gabriel rule (K. R. Gabriel and R. R.
-   Sokal, "A new statistical approach to geographic variation analysis",
-   Systematic Zoology 18(3):259-278, 1969) among graph neighbours only, so a
-   floor over another (not joined to it) never removes its edges. Two edges
-   crossing in plan have such a neighbour (the angles of their four ends sum
-   to 360 degrees), so what is left is planar where the neighbours are joined.
+1. *Plan-planar edges*: an edge ``a-b`` stays when the widest angle at which
+   a common neighbour on its left sees it and the widest on its right sum to
+   less than 180 degrees (the local Delaunay test: B. Delaunay, "Sur la
+   sphere vide", 1934; C. L. Lawson's edge-flip criterion, 1977). Only graph
+   neighbours count, so a floor over another (not joined to it) never
+   removes its edges. Of two edges crossing in plan whose four ends are
+   joined, the one whose opposite angles sum to more than 180 degrees goes,
+   so what is left is planar where the neighbours are joined; a thin band of
+   samples (a corridor two or three samples wide) keeps its triangles.
 2. *Faces*: the edges seen from above, each node's neighbours in angle order;
    a face is the cycle of directed edges each followed by the one leaving
    its end next clockwise (the face on their left: counter-clockwise seen
    from above, the outside of a part clockwise).
 3. *Filled faces*: counter-clockwise faces no larger than
    ``FACE_AREA_SPACINGS`` squared sample spacings; the others (each part's
-   outside, holes round pillars and wells) are the open ones.
+   outside, holes round pillars and wells) are the open ones. An edge with
+   no filled face on either side (samples in single file) is a polygon of
+   two corners, whose boundary runs along both its sides.
 
 The polygons are the filled faces (their nodes in walking order), neighbours
 across each edge the filled face on its other side (-1: a boundary edge),
-normals the mean of their nodes' ``normal``, areas their surface area. They
+normals the mean of their nodes' ``normal``, areas their surface area,
+``joined`` the polygons of one connected part of the graph. They
 have the fields of :class:`g2s_core.model.NavMesh` that
 :func:`g2s_plugins.terminals._boundary.boundary_loops` and
 ``entry_exit.main_floor`` read.
 
-Complexity, for n samples and m edges: O(m log m) to sort the neighbours and
-directed edges, one sparse product for the common neighbours (O(m d) for d
-neighbours a node), O(m) to trace the faces.
+Complexity, for n samples and m edges with d neighbours a node: O(m d) for
+the common neighbours (one sorted look-up each), O(m log m) to sort the
+directed edges, O(m) to trace the faces.
 """
 
 from __future__ import annotations

@@ -98,10 +98,8 @@ batch of rays (one per step and bisection round) is one call of the shared
 Runs on the navigation mesh the ``navmesh`` graph builder leaves in
 ``context.navmesh``; without one, on the surface the ``sampling`` builder's
 graph covers (:mod:`._sampled_surface`): its faces stand for the navmesh
-polygons (normals, the main floor, the nodes an opening is joined to), its
-boundary lies up to a sample spacing inside the eroded edge, and the search
-for the floor's edge (step 3) reaches that much farther. Every other step
-and rule is the same on both.
+polygons (normals, the main floor, the nodes an opening is joined to). Every
+step and rule is the same on both.
 
 Cost, for a navmesh of V vertices and B boundary edges, S samples (the
 boundary's length / ``sample_step``), k = ``fan_count`` and o openings:
@@ -260,10 +258,9 @@ class _Settings:
     snap: float
     delta: float
     walkable_cos: float  # cosine of the agent's steepest walkable slope
-    inset: float  # how far the boundary may lie inside the walkable surface's eroded edge, m
 
 
-def _settings(params: Params, agent: AgentConfig, inset: float = 0.0) -> _Settings:
+def _settings(params: Params, agent: AgentConfig) -> _Settings:
     r = float(agent.radius)
     climb = float(agent.max_climb)
     step = float(params.sample_step) if params.sample_step is not None else r / 2.0
@@ -271,7 +268,7 @@ def _settings(params: Params, agent: AgentConfig, inset: float = 0.0) -> _Settin
     snap = float(params.snap_distance) if params.snap_distance is not None else max(climb, 0.1)
     return _Settings(
         radius=r, height=float(agent.height), climb=climb, step=step, lift=lift, snap=snap, delta=min(step, r) / 4.0,
-        walkable_cos=math.cos(math.radians(float(agent.max_slope))), inset=float(inset),
+        walkable_cos=math.cos(math.radians(float(agent.max_slope))),
     )
 
 
@@ -390,7 +387,7 @@ def _fan(
     edge = np.full(m * k, np.nan)
     todo = np.nonzero(clear)[0]
     edge[todo] = _surface_ends(
-        caster, lifted[todo], dirs[todo], down[todo], s, float(params.edge_search_radii) * s.radius + s.inset
+        caster, lifted[todo], dirs[todo], down[todo], s, float(params.edge_search_radii) * s.radius
     )
     ok = np.isfinite(edge)
     if ok.any():
@@ -876,7 +873,6 @@ def detect_openings(
     surface: NavMesh | SampledSurface,
     agent: AgentConfig,
     params: Params | None = None,
-    inset: float = 0.0,
 ) -> Detection:
     """Steps 1-6 of the method: the openings of ``mesh`` for ``agent`` on ``surface``, in detection order.
 
@@ -887,11 +883,9 @@ def detect_openings(
             sampled graph of it.
         agent: object with ``radius``, ``height``, ``max_climb``, ``max_slope``.
         params: :class:`Params`; ``None`` for the defaults.
-        inset: how far inside the surface's edge eroded by the agent's radius its boundary may lie, m
-            (added to the edge search): 0 for a navmesh, whose boundary is that edge.
     """
     params = params if params is not None else Params()
-    s = _settings(params, agent, inset)
+    s = _settings(params, agent)
     loops = boundary_loops(surface.vertices, surface.polygons, surface.neighbours)
     samples = sample_loops(loops, s.step, "agent.radius" if params.sample_step is None else "terminals.params.sample_step")
     if len(samples.loop) == 0:
@@ -1035,9 +1029,7 @@ def g2s_select_terminals(graph: nx.Graph, params: Params, context: RunContext) -
     """Find the piece's entries/exits, add one terminal node per opening and return them.
 
     On a navmesh when the run has one; else on the surface the ``sampling`` builder's graph covers
-    (:mod:`._sampled_surface`), whose boundary lies up to a sample spacing inside the edge the
-    agent's radius erodes (plus the clearance beyond the radius): the edge search reaches that
-    much farther.
+    (:mod:`._sampled_surface`).
     """
     if context.navmesh is not None:
         detection = detect_openings(context.mesh, context.navmesh, context.agent, params)
@@ -1048,8 +1040,6 @@ def g2s_select_terminals(graph: nx.Graph, params: Params, context: RunContext) -
             "entry_exit needs the navmesh graph builder or the sampling one (graph: plugin: navmesh or sampling): "
             "the run has no navigation mesh and no sampled surface to take the boundary from"
         )
-    spacing = float(stats["spacing"])
-    surface = sampled_surface(graph, spacing)
-    inset = spacing + max(0.0, float(stats["clearance"]) - float(context.agent.radius))
-    detection = detect_openings(context.mesh, surface, context.agent, params, inset)
+    surface = sampled_surface(graph, float(stats["spacing"]))
+    detection = detect_openings(context.mesh, surface, context.agent, params)
     return add_terminals(graph, detection, None, context.agent, surface)
