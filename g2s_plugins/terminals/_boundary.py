@@ -1,4 +1,4 @@
-"""Navmesh boundary loops and loop sampling for the ``entry_exit`` selector.
+"""Boundary loops of a polygon surface (a navmesh, or the faces of a sampled graph) and loop sampling for ``entry_exit``.
 
 Conventions: metres, Y up, right-handed. A boundary loop is oriented so that
 the walkable interior lies on the *left* of the walking direction ``t`` seen
@@ -96,7 +96,8 @@ def boundary_loops(vertices: np.ndarray, polygons: np.ndarray, neighbours: np.nd
     its end vertex, found with one sorted look-up for all edges. Where several
     edges leave one vertex (two areas touching at a point) the successor is
     the one turning most to the left, which keeps each loop around one area.
-    Open chains (only on a malformed navmesh) come first, then closed loops in
+    Open chains (only on a malformed navmesh, or where a sampled graph's edges still cross seen from
+    above) come first, then closed loops in
     the order of their lowest edge: deterministic for a given navmesh.
     """
     vertices = np.asarray(vertices, dtype=np.float64)

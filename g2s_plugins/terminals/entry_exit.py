@@ -95,8 +95,11 @@ selector returns no terminals and the pipeline stops with a warning. Every
 batch of rays (one per step and bisection round) is one call of the shared
 :class:`g2s_plugins._raycasting.RayCaster`, never one call per ray.
 
-Needs the navigation mesh the ``navmesh`` graph builder leaves in
-``context.navmesh``.
+Runs on the navigation mesh the ``navmesh`` graph builder leaves in
+``context.navmesh``; without one, on the surface the ``sampling`` builder's
+graph covers (:mod:`._sampled_surface`): its faces stand for the navmesh
+polygons (normals, the main floor, the nodes an opening is joined to). Every
+step and rule is the same on both.
 
 Cost, for a navmesh of V vertices and B boundary edges, S samples (the
 boundary's length / ``sample_step``), k = ``fan_count`` and o openings:
@@ -128,6 +131,7 @@ from g2s_core.plugin import PluginParams, hookimpl
 from g2s_plugins._raycasting import UP, RayCaster
 from g2s_plugins._surface import on_navmesh
 from g2s_plugins.terminals._boundary import BoundaryLoop, LoopSamples, boundary_loops, polygon_components, sample_loops
+from g2s_plugins.terminals._sampled_surface import SampledSurface, sampled_surface
 
 NAME = "entry_exit"
 
@@ -670,7 +674,7 @@ class Detection:
     normals: tuple[tuple[float, float, float], ...]
 
 
-def main_floor(navmesh: NavMesh, agent: AgentConfig, loops: list[BoundaryLoop] | None = None) -> np.ndarray:
+def main_floor(navmesh: NavMesh | SampledSurface, agent: AgentConfig, loops: list[BoundaryLoop] | None = None) -> np.ndarray:
     """(P,) bool: the polygons of the navmesh's floor of largest area that is no roof.
 
     A floor is a connected component of the navmesh, together with every other one whose boundary
@@ -692,6 +696,8 @@ def main_floor(navmesh: NavMesh, agent: AgentConfig, loops: list[BoundaryLoop] |
     near = cKDTree(samples.position[:, [0, 2]]).query_pairs(radius, output_type="ndarray").reshape(-1, 2)
     level = np.abs(samples.position[near[:, 0], 1] - samples.position[near[:, 1], 1]) <= float(agent.max_climb)
     pairs = samples.polygon[near[level]]
+    if isinstance(navmesh, SampledSurface):  # faces apart along single-file samples the agent walks
+        pairs = np.concatenate([pairs, navmesh.joined])
     label = polygon_components(neighbours, pairs)
     area = np.bincount(label, weights=np.asarray(navmesh.areas, dtype=np.float64))
     roof = area_below(navmesh, label, float(agent.height)) >= _ROOF_SHARE
@@ -709,7 +715,7 @@ Hallway's roof 0.07-0.34; every other floor of the generated and shared pieces (
 _COVER_POINTS = np.array([[1 / 3, 1 / 3, 1 / 3], [2 / 3, 1 / 6, 1 / 6], [1 / 6, 2 / 3, 1 / 6], [1 / 6, 1 / 6, 2 / 3]])
 
 
-def area_below(navmesh: NavMesh, label: np.ndarray, height: float) -> np.ndarray:
+def area_below(navmesh: NavMesh | SampledSurface, label: np.ndarray, height: float) -> np.ndarray:
     """(C,) the area of other components lying under each component, at least ``height`` lower, over its own area.
 
     A roof or a ceiling's top (walkable for Recast, as real exports close their rooms) lies over
@@ -863,27 +869,32 @@ def _union_ends(wide: Opening, parts: list[Opening]) -> tuple[np.ndarray, np.nda
 
 
 def detect_openings(
-    mesh: trimesh.Trimesh, navmesh: NavMesh, agent: AgentConfig, params: Params | None = None
+    mesh: trimesh.Trimesh,
+    surface: NavMesh | SampledSurface,
+    agent: AgentConfig,
+    params: Params | None = None,
 ) -> Detection:
-    """Steps 1-6 of the method: the openings of ``mesh`` for ``agent`` on ``navmesh``, in detection order.
+    """Steps 1-6 of the method: the openings of ``mesh`` for ``agent`` on ``surface``, in detection order.
 
     Args:
         mesh: the source ``trimesh.Trimesh`` (metres, Y up).
-        navmesh: a :class:`g2s_plugins.recast.NavMesh` built from it.
+        surface: the walkable surface as polygons: a :class:`g2s_plugins.recast.NavMesh` built from
+            ``mesh``, or the :func:`~g2s_plugins.terminals._sampled_surface.sampled_surface` of a
+            sampled graph of it.
         agent: object with ``radius``, ``height``, ``max_climb``, ``max_slope``.
         params: :class:`Params`; ``None`` for the defaults.
     """
     params = params if params is not None else Params()
     s = _settings(params, agent)
-    loops = boundary_loops(navmesh.vertices, navmesh.polygons, navmesh.neighbours)
+    loops = boundary_loops(surface.vertices, surface.polygons, surface.neighbours)
     samples = sample_loops(loops, s.step, "agent.radius" if params.sample_step is None else "terminals.params.sample_step")
     if len(samples.loop) == 0:
         return Detection((), (), ())
     caster = RayCaster(mesh)
-    ways = _ways_out(samples, np.asarray(navmesh.normals), caster, s, params)
+    ways = _ways_out(samples, np.asarray(surface.normals), caster, s, params)
     segments = _segments(samples, ways, float(params.max_turn_deg))
     if params.main_floor_only:
-        main = main_floor(navmesh, agent, loops)
+        main = main_floor(surface, agent, loops)
         segments = [g for g in segments if main[samples.polygon[g]].any()]
     kept = _match_edges(segments, ways, s, params)
     if not kept:
@@ -958,8 +969,18 @@ def detect_openings(
 # --------------------------------------------------------------------------
 
 
-def add_terminals(graph: nx.Graph, detection: Detection, navmesh: NavMesh, agent: AgentConfig) -> Terminals:
-    """Add one node per opening to ``graph`` (see the module doc) and return the terminals."""
+def add_terminals(
+    graph: nx.Graph,
+    detection: Detection,
+    navmesh: NavMesh | None,
+    agent: AgentConfig,
+    sampled: SampledSurface | None = None,
+) -> Terminals:
+    """Add one node per opening to ``graph`` (see the module doc) and return the terminals.
+
+    ``sampled``: the surface the openings were found on when it is a sampled graph's (``navmesh``
+    then ``None``): an opening is joined to the nearest sample at the corners of its faces.
+    """
     if not detection.openings:
         return Terminals(nodes=(), openings=())
     node_of_polygon: dict[int, int] = {}
@@ -988,7 +1009,11 @@ def add_terminals(graph: nx.Graph, detection: Detection, navmesh: NavMesh, agent
         )
         # One edge, so the terminal stays a leaf: never a shortcut between polygons, never
         # an inner node the simplification could remove.
-        candidates = [node_of_polygon[p] for p in polys if p in node_of_polygon]
+        if sampled is None:
+            candidates = [node_of_polygon[p] for p in polys if p in node_of_polygon]
+        else:
+            corners = sampled.polygons[list(polys)]
+            candidates = [sampled.nodes[i] for i in np.unique(corners[corners >= 0]).tolist()]
         if not candidates and tree is not None:
             candidates = [ids[int(tree.query(pos)[1])]]
         if candidates:
@@ -1001,11 +1026,20 @@ def add_terminals(graph: nx.Graph, detection: Detection, navmesh: NavMesh, agent
 
 @hookimpl
 def g2s_select_terminals(graph: nx.Graph, params: Params, context: RunContext) -> Terminals:
-    """Find the piece's entries/exits, add one terminal node per opening and return them."""
-    if context.navmesh is None:
+    """Find the piece's entries/exits, add one terminal node per opening and return them.
+
+    On a navmesh when the run has one; else on the surface the ``sampling`` builder's graph covers
+    (:mod:`._sampled_surface`).
+    """
+    if context.navmesh is not None:
+        detection = detect_openings(context.mesh, context.navmesh, context.agent, params)
+        return add_terminals(graph, detection, context.navmesh, context.agent)
+    stats = graph.graph.get("sampling_stats")
+    if not stats or "spacing" not in stats:
         raise PluginError(
-            "entry_exit needs the navmesh graph builder (graph: plugin: navmesh): "
-            "the run has no navigation mesh to take the boundary from"
+            "entry_exit needs the navmesh graph builder or the sampling one (graph: plugin: navmesh or sampling): "
+            "the run has no navigation mesh and no sampled surface to take the boundary from"
         )
-    detection = detect_openings(context.mesh, context.navmesh, context.agent, params)
-    return add_terminals(graph, detection, context.navmesh, context.agent)
+    surface = sampled_surface(graph, float(stats["spacing"]))
+    detection = detect_openings(context.mesh, surface, context.agent, params)
+    return add_terminals(graph, detection, None, context.agent, surface)

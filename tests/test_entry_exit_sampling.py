@@ -1,0 +1,117 @@
+"""``entry_exit`` on the sampling route: openings on the surface a sampled graph covers (no navmesh).
+
+docs/entry_exit.md, "Openings on the sampling route (3 December 2026)".
+"""
+
+from __future__ import annotations
+
+import networkx as nx
+import numpy as np
+import pytest
+
+from g2s_core.config import load_config
+from g2s_core.errors import PluginError
+from g2s_core.model import RunContext
+from g2s_plugins.graph_builders import sampling
+from g2s_plugins.samples import levels as samples
+from g2s_plugins.samples import pieces
+from g2s_plugins.terminals import entry_exit
+from g2s_plugins.terminals._boundary import boundary_loops
+from g2s_plugins.terminals._sampled_surface import sampled_surface
+
+CONFIG = load_config("configs/map_piece_sampling.yaml")
+
+
+def _openings(level) -> tuple[np.ndarray, np.ndarray, nx.Graph, tuple]:
+    """(found midpoints, known midpoints, the graph, the terminals) of ``level`` on the preset's sampling route."""
+    ctx = RunContext(mesh=level.mesh, agent=CONFIG.agent, centre=np.asarray(level.mesh.bounds).mean(axis=0))
+    graph = sampling.g2s_build_graph(mesh=level.mesh, params=sampling.Params(), context=ctx)
+    before = graph.number_of_nodes()
+    terminals = entry_exit.g2s_select_terminals(graph=graph, params=entry_exit.Params(), context=ctx)
+    assert graph.number_of_nodes() == before + len(terminals.nodes)
+    found = np.array([o.position for o in terminals.openings], dtype=np.float64).reshape(-1, 3)
+    known = np.array([o.position for o in level.openings], dtype=np.float64).reshape(-1, 3)
+    return found, known, graph, terminals
+
+
+def _grid(side: int, holes: set[tuple[int, int]] = frozenset()) -> nx.Graph:
+    """A ``side`` x ``side`` grid of samples 1 m apart on y = 0, joined to their 8 neighbours, ``holes`` left out."""
+    graph = nx.Graph()
+    cells = [(i, j) for i in range(side) for j in range(side) if (i, j) not in holes]
+    for i, j in cells:
+        graph.add_node((i, j), pos=(float(i), 0.0, float(j)), normal=(0.0, 1.0, 0.0))
+    for i, j in cells:
+        for di, dj in ((1, 0), (0, 1), (1, 1), (1, -1)):
+            if (i + di, j + dj) in graph:
+                graph.add_edge((i, j), (i + di, j + dj))
+    return graph
+
+
+def test_corridor_with_two_open_ends_has_exactly_two_openings() -> None:
+    found, known, _, _ = _openings(samples.straight_corridor())
+    assert len(found) == 2
+    assert pieces.match_openings(found, known) == (2, 2)
+
+
+def test_closed_room_with_one_door_has_one_opening() -> None:
+    level = samples.room_with_window()  # one doorway; the window above the sill is no way out
+    found, known, graph, terminals = _openings(level)
+    assert len(found) == 1 and pieces.match_openings(found, known) == (1, 1)
+    (opening,) = terminals.openings
+    assert opening.width == pytest.approx(level.openings[0].width, abs=0.1)
+    # The terminal is a leaf joined to a sample; off the surface the samples stand on.
+    (node,) = terminals.nodes
+    assert graph.degree[node] == 1 and graph.nodes[node]["on_navmesh"] is False
+
+
+def test_grid_faces_and_their_boundary() -> None:
+    # 3 x 3 samples 1 m apart: the diagonals are not Delaunay (each square's four corners on one
+    # circle), so four unit squares, and one boundary loop round the 8 outer samples.
+    surface = sampled_surface(_grid(3), spacing=1.0)
+    assert len(surface.polygons) == 4 and np.allclose(surface.areas, 1.0)
+    (loop,) = boundary_loops(surface.vertices, surface.polygons, surface.neighbours)
+    assert loop.closed and loop.edge_count == 8
+    # Interior on the left seen from above (+Y up): (up x t) . (centre - p) > 0 on every edge.
+    t = np.roll(loop.points, -1, axis=0) - loop.points
+    left = np.cross([0.0, 1.0, 0.0], t)
+    assert (np.einsum("ij,ij->i", left, np.array([1.0, 0.0, 1.0]) - loop.points) > 0).all()
+
+
+def test_a_hole_larger_than_two_spacings_squared_is_open() -> None:
+    # 6 x 6 samples with the middle 2 x 2 gone (a pillar's hole): 16 unit squares, and a triangle
+    # at each of the hole's corners (the diagonal there has a common neighbour on one side only),
+    # round an octagon of 9 - 4 x 0.5 = 7 m².
+    pillar = {(2, 2), (2, 3), (3, 2), (3, 3)}
+    surface = sampled_surface(_grid(6, pillar), spacing=1.0)
+    assert len(surface.polygons) == 20 and sorted(np.round(surface.areas, 9)) == [0.5] * 4 + [1.0] * 16
+    loops = boundary_loops(surface.vertices, surface.polygons, surface.neighbours)
+    assert sorted(lp.edge_count for lp in loops) == [8, 20]
+    # With samples 2 m apart the same hole is less than 2 spacings squared: walkable surface.
+    surface = sampled_surface(_grid(6, pillar), spacing=2.0)
+    assert len(surface.polygons) == 21
+    assert [lp.edge_count for lp in boundary_loops(surface.vertices, surface.polygons, surface.neighbours)] == [20]
+
+
+def test_samples_in_single_file_keep_both_sides_as_boundary() -> None:
+    graph = nx.Graph()
+    for i in range(4):
+        graph.add_node(i, pos=(float(i), 0.0, 0.0), normal=(0.0, 1.0, 0.0))
+    graph.add_edges_from([(0, 1), (1, 2), (2, 3)])
+    surface = sampled_surface(graph, spacing=1.0)
+    assert len(surface.polygons) == 3 and np.allclose(surface.areas, 0.0)
+    (loop,) = boundary_loops(surface.vertices, surface.polygons, surface.neighbours)
+    assert loop.edge_count == 6  # out along one side, back along the other
+    assert len(surface.joined) == 2  # one floor
+
+
+def test_needs_a_navmesh_or_a_sampled_graph() -> None:
+    level = samples.straight_corridor()
+    ctx = RunContext(mesh=level.mesh, agent=CONFIG.agent, centre=np.zeros(3))
+    graph = nx.Graph()
+    graph.add_node(0, pos=(0.0, 0.0, 0.0), normal=(0.0, 1.0, 0.0), area=1.0, on_navmesh=True, polygon=-1)
+    with pytest.raises(PluginError, match="navmesh graph builder or the sampling one"):
+        entry_exit.g2s_select_terminals(graph=graph, params=entry_exit.Params(), context=ctx)
+
+
+def test_the_sampling_preset_finds_openings() -> None:
+    assert CONFIG.graph.plugin == "sampling" and CONFIG.terminals.plugin == "entry_exit"
