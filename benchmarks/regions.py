@@ -35,6 +35,7 @@ import networkx as nx
 import g2s_core
 from g2s_core import pipeline
 from g2s_core.config import PRESETS_DIR, RunConfig, parse_assignment, resolve_config
+from g2s_core.errors import ConfigError
 from g2s_core.model import RunResult
 from g2s_core.registry import Registry
 from g2s_plugins import decomposition
@@ -110,8 +111,11 @@ def main() -> None:
                         help="preset settings other than level_regions', e.g. graph.params.cell_size=0.1")
     args = parser.parse_args()
     params = Params(**args.params)
-    overrides = dict(parse_assignment(text) for text in args.overrides)
-    config = resolve_config(PRESETS_DIR / "level_regions.yaml", overrides)[0]
+    try:
+        overrides = dict(parse_assignment(text) for text in args.overrides)
+        config = resolve_config(PRESETS_DIR / "level_regions.yaml", overrides)[0]
+    except ConfigError as exc:
+        parser.exit(2, f"{exc}\n")
     registry = Registry.from_entry_points()
     print(f"# {platform.machine()}, {os.cpu_count()} cores, Python {platform.python_version()}, "
           f"obstacles {args.obstacles}, params {args.params or 'defaults'}, preset settings {overrides or 'as given'}, "
