@@ -1,7 +1,7 @@
 """Time and quality of the chokepoints and regions analyzers on generated dungeons.
 
 Run: ``.venv/bin/python benchmarks/regions.py [--rooms 120 2400 12000] [--obstacles 0.3] [--seeds 1]
-[--yaws 0 5 10 15 20 30 45 60 90] [--params '{"min_region_area": 4}']``,
+[--yaws 0 5 10 15 20 30 45 60 90] [--params '{"min_region_area": 4}'] [--set graph.params.cell_size=0.1]``,
 or ``--levels FILE ...`` for mesh files (real levels: no known
 answer, so the sizes, counts and times only; docs/plugins.md, real levels).
 
@@ -34,7 +34,8 @@ import networkx as nx
 
 import g2s_core
 from g2s_core import pipeline
-from g2s_core.config import PRESETS_DIR, load_config
+from g2s_core.config import PRESETS_DIR, RunConfig, parse_assignment, resolve_config
+from g2s_core.errors import ConfigError
 from g2s_core.model import RunResult
 from g2s_core.registry import Registry
 from g2s_plugins import decomposition
@@ -68,10 +69,11 @@ def timed_split(result: RunResult, params: Params | None = None) -> tuple[decomp
 
 
 def measure(rooms: int, seed: int, obstacles: float, yaw: float, registry: Registry,
-            params: Params | None = None) -> dict[str, float]:
+            params: Params | None = None, config: RunConfig | None = None) -> dict[str, float]:
+    """One dungeon through ``config`` (the ``level_regions`` preset when None), then its split timed and matched."""
     level = dungeon(seed=seed, rooms=rooms, obstacles=obstacles)
     turn = yaw_about_centre(level.mesh, yaw)
-    plan = pipeline.plan(load_config(PRESETS_DIR / "level_regions.yaml"), registry)
+    plan = pipeline.plan(config or resolve_config(PRESETS_DIR / "level_regions.yaml")[0], registry)
     result = pipeline.run(plan, registry, turned(level, yaw).mesh, level.name, "-")
     navmesh = result.context.navmesh
     split, chokepoints, times = timed_split(result, params)
@@ -105,11 +107,19 @@ def main() -> None:
                         help="measure these mesh files instead of generated dungeons")
     parser.add_argument("--params", type=json.loads, default={}, metavar="JSON",
                         help="split settings other than the defaults, e.g. '{\"min_region_area\": 4}'")
+    parser.add_argument("--set", nargs="+", default=[], metavar="KEY=VALUE", dest="overrides",
+                        help="preset settings other than level_regions', e.g. graph.params.cell_size=0.1")
     args = parser.parse_args()
     params = Params(**args.params)
+    try:
+        overrides = dict(parse_assignment(text) for text in args.overrides)
+        config = resolve_config(PRESETS_DIR / "level_regions.yaml", overrides)[0]
+    except ConfigError as exc:
+        parser.exit(2, f"{exc}\n")
     registry = Registry.from_entry_points()
     print(f"# {platform.machine()}, {os.cpu_count()} cores, Python {platform.python_version()}, "
-          f"obstacles {args.obstacles}, params {args.params or 'defaults'}, load average {os.getloadavg()[0]:.1f}")
+          f"obstacles {args.obstacles}, params {args.params or 'defaults'}, preset settings {overrides or 'as given'}, "
+          f"load average {os.getloadavg()[0]:.1f}")
     if args.levels:
         print("| level | polygons | walkable areas | regions | chokepoints | articulations | split CPU (wall) ms "
               "| score CPU (wall) ms |")
@@ -126,7 +136,7 @@ def main() -> None:
     for rooms in args.rooms:
         for seed in range(args.seeds):
             for yaw in args.yaws:
-                m = measure(rooms, seed, args.obstacles, yaw, registry, params)
+                m = measure(rooms, seed, args.obstacles, yaw, registry, params, config)
                 print(f"| {m['yaw']:g} | {m['seed']} | {m['rooms']:,} | {m['corridors']:,} | {m['polygons']:,} "
                       f"| {m['portals']:,} | {m['regions']:,} | {m['chokepoints']:,} "
                       f"| {m['split_cpu']:.0f} ({m['split_wall']:.0f}) | {m['score_cpu']:.0f} ({m['score_wall']:.0f}) "
