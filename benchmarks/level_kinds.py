@@ -6,10 +6,13 @@ narrow railed bridges), ``car_park`` (three storeys joined by ramps and two swit
 an office), ``forest`` (hilly ground, 300 trunks, fallen logs), ``stadium`` (a bowl of stepped tiers, aisle
 stairs, a cross aisle and vomitories out to an outer deck) and ``harbour`` (a quay, piers, moored boats with
 walkable decks). Y up, metres, ``numpy.random.default_rng(seed)``; every solid is a closed convex body with
-outward faces (trimesh's convex hull), so Recast reads each top as floor.
+outward faces (trimesh's convex hull), so Recast reads each top as floor. Recast also reads as floor the ground
+inside a closed solid with head room over it, so the ground stops under the stadium's stands and the harbour's
+warehouses (a first draft had walkable strips inside the stands and a floor in every warehouse).
 
 Run: ``.venv/bin/python benchmarks/level_kinds.py OUT_DIR [--kinds subway forest] [--seeds 0 1 2]`` writes
-``OUT_DIR/<kind>_s<seed>.obj``, the files ``benchmarks/analysis_quality.py --levels`` takes.
+``OUT_DIR/<kind>_s<seed>.obj``, the files ``benchmarks/analysis_quality.py --levels`` takes (which also takes the
+kinds' names and builds them with ``--seeds``).
 """
 
 from __future__ import annotations
@@ -321,7 +324,6 @@ def stadium(seed: int) -> trimesh.Trimesh:
     half_x, half_z = rng.uniform(52.0, 58.0), rng.uniform(34.0, 38.0)
     lower, upper, row, rise = int(rng.integers(9, 12)), int(rng.integers(9, 12)), 0.8, 0.45
     margin = 5.0  # flat walk between the pitch and the first row
-    s.box(-half_x - 40, half_x + 40, -0.5, 0.0, -half_z - 40, half_z + 40)
     cross_depth, top_depth = 3.0, 3.0
     # one stand's depth profile, distance from its front (toward the pitch): (start, end, top) per step
     steps: list[tuple[float, float, float]] = []
@@ -339,6 +341,11 @@ def stadium(seed: int) -> trimesh.Trimesh:
         d += row
     steps.append((d, d + top_depth, y))
     depth, cross_y = d + top_depth, cross[2]
+    near_x, near_z = half_x + margin, half_z + margin
+    # the ground stops under the stands, whose solid tiers reach down to its bottom: no floor inside a solid
+    s.slab(-half_x - 40, half_x + 40, -half_z - 40, half_z + 40, 0.0, [
+        (-half_x, half_x, near_z, near_z + depth), (-half_x, half_x, -near_z - depth, -near_z),
+        (near_x, near_x + depth, -half_z, half_z), (-near_x - depth, -near_x, -half_z, half_z)], thickness=0.5)
     deck_depth = 5.0
     for side in range(4):
         along_x = side < 2
@@ -361,19 +368,19 @@ def stadium(seed: int) -> trimesh.Trimesh:
         bounds = [-span, *sum(([c[0], c[1]] for c in cuts), []), span]
         for a0, a1 in zip(bounds[0::2], bounds[1::2]):  # plain tiers between the cuts
             for d0, d1, top in steps:
-                put(a0, a1, d0, d1, 0.0, top)
+                put(a0, a1, d0, d1, -0.5, top)
         for a0, a1, kind in cuts:
             for d0, d1, top in steps:
                 if kind == "aisle":
                     if d1 - d0 > row + 1e-9:  # cross aisle and top walkway stay whole across the aisle
-                        put(a0, a1, d0, d1, 0.0, top)
+                        put(a0, a1, d0, d1, -0.5, top)
                     else:
-                        put(a0, a1, d0, d0 + row / 2, 0.0, top - rise / 2)
-                        put(a0, a1, d0 + row / 2, d1, 0.0, top)
+                        put(a0, a1, d0, d0 + row / 2, -0.5, top - rise / 2)
+                        put(a0, a1, d0 + row / 2, d1, -0.5, top)
                 elif d0 < cross[1] - 1e-9:  # a vomitory cuts only the upper tiers
-                    put(a0, a1, d0, d1, 0.0, top)
+                    put(a0, a1, d0, d1, -0.5, top)
                 else:  # the tunnel: floor at the cross aisle, roof 2.6 m over it under the upper tiers
-                    put(a0, a1, d0, d1, 0.0, cross_y)
+                    put(a0, a1, d0, d1, -0.5, cross_y)
                     if top > cross_y + 2.9:
                         put(a0, a1, d0, d1, cross_y + 2.6, top)
         put(-span, span, depth, depth + deck_depth, cross_y - 0.3, cross_y)  # the outer deck
@@ -395,9 +402,11 @@ def harbour(seed: int) -> trimesh.Trimesh:
     rng = np.random.default_rng(seed)
     s = _Solids()
     length, quay = 300.0, 24.0
-    s.box(0, length, -2.0, 2.0, -quay, 0.0)
-    for x in np.arange(6.0, length - 20.0, rng.uniform(24.0, 30.0)):  # warehouses along the back
-        s.box(x, x + rng.uniform(12.0, 18.0), 2.0, 9.0, -quay, -quay + rng.uniform(7.0, 10.0))
+    warehouses = [(x, x + rng.uniform(12.0, 18.0), -quay, -quay + rng.uniform(7.0, 10.0))
+                  for x in np.arange(6.0, length - 20.0, rng.uniform(24.0, 30.0))]  # along the back
+    s.slab(0, length, -quay, 0.0, 2.0, warehouses, thickness=4.0)  # no quay inside a warehouse's solid
+    for x0, x1, z0, z1 in warehouses:
+        s.box(x0, x1, -2.0, 9.0, z0, z1)
     for x in np.arange(3.0, length - 2.0, 6.0):
         s.box(x - 0.25, x + 0.25, 2.0, 2.6, -1.0, -0.5)
     for _ in range(70):  # crates and containers on the open quay
