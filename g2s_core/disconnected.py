@@ -9,12 +9,6 @@ area and each of the next :data:`COMPARED_AREAS` largest ones (a k-d tree per
 pair, O(n log n) in the nodes of those areas): the vertical step between them,
 compared with the agent's ``max_climb`` and ``height``, tells a step too high
 to climb, separate floors, or a gap or passage too narrow for the agent.
-"Closest" counts a vertical offset ``height / max_climb`` times (5 for the
-default agent): a room shut by a narrow door lies nearer, in straight
-metres, to the floor under it than to the corridor beside it, and was
-reported as "separate floors" (the office rooms of a three-storey car park
-in docs/analysis_quality.md, "A fifth round of level kinds", 3.5 m above
-the deck below and 4.5 m from the office floor).
 """
 
 from __future__ import annotations
@@ -45,11 +39,10 @@ def area_summary(graph: nx.Graph, nodes: Sequence[int]) -> tuple[float, np.ndarr
     return total, points[int(np.argmin(np.linalg.norm(points - centre, axis=1)))]
 
 
-def closest_step(graph: nx.Graph, a: Sequence[int], b: Sequence[int], vertical_weight: float = 1.0) -> tuple[float, float, np.ndarray, np.ndarray]:
-    """``(horizontal distance, vertical step, point of a, point of b)`` of the closest nodes of ``a`` and ``b`` (metres),
-    closest with each vertical offset counted ``vertical_weight`` times."""
-    pa, pb, scale = _positions(graph, a), _positions(graph, b), np.array([1.0, vertical_weight, 1.0])
-    distance, index = cKDTree(pb * scale).query(pa * scale)
+def closest_step(graph: nx.Graph, a: Sequence[int], b: Sequence[int]) -> tuple[float, float, np.ndarray, np.ndarray]:
+    """``(horizontal distance, vertical step, point of a, point of b)`` of the closest nodes of ``a`` and ``b`` (metres)."""
+    pa, pb = _positions(graph, a), _positions(graph, b)
+    distance, index = cKDTree(pb).query(pa)
     best = int(np.argmin(distance))
     offset = pb[index[best]] - pa[best]
     return float(np.hypot(offset[0], offset[2])), float(abs(offset[1])), pa[best], pb[index[best]]
@@ -86,9 +79,9 @@ def disconnected_warning(graph: nx.Graph, areas: Mapping[Any, Sequence[int]], te
                f"one tree per area. Largest areas: {listed}{more}.")
     if agent is None or len(summaries) < 2:
         return message
-    largest, weight = summaries[0][2], float(agent.height) / max(float(agent.max_climb), 1e-3)
-    gap, step, here, there = min((closest_step(graph, largest, other[2], weight) for other in summaries[1:1 + COMPARED_AREAS]),
-                                 key=lambda pair: np.hypot(pair[0], weight * pair[1]))
+    largest = summaries[0][2]
+    gap, step, here, there = min((closest_step(graph, largest, other[2]) for other in summaries[1:1 + COMPARED_AREAS]),
+                                 key=lambda pair: np.hypot(pair[0], pair[1]))
     return (f"{message} Likely cause: {likely_cause(step, gap, agent)}, "
             f"e.g. between ({_xyz(here)}) and ({_xyz(there)}).")
 

@@ -37,19 +37,6 @@ def test_the_likely_cause_follows_the_step_between_the_closest_areas(rise, cause
     assert cause in message
 
 
-def test_a_room_beside_a_floor_and_over_another_is_shut_by_a_passage_not_a_floor():
-    """A room on the upper floor, 5 m from that floor's nearest place and 3.5 m over the floor below it (a room
-    of the fifth round's car park whose door is narrower than the agent): the upper floor is the closer cause."""
-    graph = nx.Graph()
-    lower = slab(graph, 0.0, 0.0, 20, 0)
-    upper = slab(graph, 0.0, 3.5, 8, 100)
-    graph.add_edge(lower[-1], upper[0])  # a ramp joins the two floors
-    slab(graph, 12.0, 3.5, 4, 200)
-    message = disconnected_warning(graph, areas(graph), 5, AgentConfig())
-    assert "a gap or passage too narrow for the agent (agent.radius 0.5 m), or a wall, between places about 5.0 m " \
-        "apart, e.g. between (7.5, 3.5, 0.5 m) and (12.5, 3.5, 0.5 m)" in message
-
-
 def test_hundreds_of_areas_give_one_short_line():
     graph = nx.Graph()
     for index in range(600):
