@@ -71,20 +71,19 @@ class _Solids:
             a, b = start + heading * tread * i, start + heading * tread * (i + 1)
             self.prism(np.array([a - side, b - side, b + side, a + side]), y0 - 0.3, y0 + riser * (i + 1))
 
+    def ramp(self, a: np.ndarray, b: np.ndarray, width: float, ya: float, yb: float, thickness: float = 0.3) -> None:
+        """A straight deck from plan point ``a`` (x, z) with its top at ``ya`` to ``b`` at ``yb``, ``width`` m wide."""
+        a, b = np.asarray(a, dtype=np.float64), np.asarray(b, dtype=np.float64)
+        along = (b - a) / np.linalg.norm(b - a)
+        side = np.array([-along[1], along[0]]) * width / 2
+        corners = [(a - side, ya), (a + side, ya), (b - side, yb), (b + side, yb)]
+        self.hull(np.array([[p[0], y - d, p[1]] for p, y in corners for d in (0.0, thickness)]))
+
     def mesh(self) -> trimesh.Trimesh:
+        """Every solid in one mesh, coincident vertices merged."""
         mesh = trimesh.util.concatenate(self.parts)
         mesh.merge_vertices()
         return mesh
-
-
-def _ramp(solids: _Solids, a: np.ndarray, b: np.ndarray, width: float, ya: float, yb: float,
-          thickness: float = 0.3) -> None:
-    """A straight deck from plan point ``a`` at height ``ya`` to ``b`` at ``yb`` (top surface), ``width`` m wide."""
-    a, b = np.asarray(a, dtype=np.float64), np.asarray(b, dtype=np.float64)
-    along = (b - a) / np.linalg.norm(b - a)
-    side = np.array([-along[1], along[0]]) * width / 2
-    corners = [(a - side, ya), (a + side, ya), (b - side, yb), (b + side, yb)]
-    solids.hull(np.array([[p[0], y - d, p[1]] for p, y in corners for d in (0.0, thickness)]))
 
 
 def subway(seed: int) -> trimesh.Trimesh:
@@ -193,14 +192,14 @@ def archipelago(seed: int) -> trimesh.Trimesh:
         along = (centres[j] - centres[i]) / np.linalg.norm(centres[j] - centres[i])
         a, b = centres[i] + along * (radii[i] * 0.6), centres[j] - along * (radii[j] * 0.6)
         width = rng.uniform(1.8, 2.4)
-        _ramp(s, a, b, width, tops[i], tops[j])
+        s.ramp(a, b, width, tops[i], tops[j])
         side = np.array([-along[1], along[0]]) * (width / 2 - 0.05)
         shore_a, shore_b = centres[i] + along * radii[i], centres[j] - along * radii[j]
         span = np.linalg.norm(b - a)
         t = np.array([np.dot(shore_a - a, along), np.dot(shore_b - a, along)]) / span
         ya, yb = tops[i] + t * (tops[j] - tops[i])
         for sign in (-1, 1):  # railings over the water only, so the bridge's ends stay open
-            _ramp(s, shore_a + sign * side, shore_b + sign * side, 0.1, ya + 1.0, yb + 1.0, thickness=1.3)
+            s.ramp(shore_a + sign * side, shore_b + sign * side, 0.1, ya + 1.0, yb + 1.0, thickness=1.3)
     return s.mesh()
 
 
@@ -236,7 +235,7 @@ def car_park(seed: int) -> trimesh.Trimesh:
         if k < 2:
             x0, x1, z0, z1 = ramps[k]
             up = k % 2 == 0
-            _ramp(s, np.array([x0 if up else x1, 5.0]), np.array([x1 if up else x0, 5.0]), 6.0, y, y + storey)
+            s.ramp(np.array([x0 if up else x1, 5.0]), np.array([x1 if up else x0, 5.0]), 6.0, y, y + storey)
             for z in (z0 - 0.2, z1):  # kerbs along the ramp's slot
                 s.box(x0, x1, y, y + 1.0, z, z + 0.2)
         if k < 2:
@@ -437,7 +436,7 @@ def harbour(seed: int) -> trimesh.Trimesh:
                                  [x0, z + hull_len - bow]])
                 s.prism(plan, deck - 1.5, deck)
                 gap = (z + hull_len * 0.4, z + hull_len * 0.4 + 1.8)
-                for (a, b) in ((z, gap[0]), (gap[1], z + hull_len - bow)):  # bulwark along the pier side, open at the gap
+                for a, b in ((z, gap[0]), (gap[1], z + hull_len - bow)):  # bulwark along the pier side, open at the gap
                     s.box(near - 0.1 if sx > 0 else near, near if sx > 0 else near + 0.1, deck, deck + 0.8, a, b)
                 s.box(x0, x1, deck, deck + 0.8, z, z + 0.15)
                 outer = far - sx * 0.15
@@ -445,7 +444,7 @@ def harbour(seed: int) -> trimesh.Trimesh:
                 cx0, cx1 = sorted((near + sx * beam * 0.35, far - sx * 0.5))
                 s.box(cx0, cx1, deck, deck + 2.2, z + hull_len * 0.55, z + hull_len * 0.8)  # the cabin
                 if big:  # a gangway from the pier's edge up to the bulwark's gap
-                    _ramp(s, np.array([px + sx * (width / 2 - 1.0), sum(gap) / 2]), np.array([near + sx * 0.6, sum(gap) / 2]),
+                    s.ramp(np.array([px + sx * (width / 2 - 1.0), sum(gap) / 2]), np.array([near + sx * 0.6, sum(gap) / 2]),
                           1.4, 2.0, deck)
                 z += hull_len + rng.uniform(1.0, 4.0)
     return s.mesh()
@@ -459,6 +458,7 @@ KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
 
 
 def main(argv: list[str] | None = None) -> None:
+    """Write the OBJ files ``argv`` asks for (the command line when None)."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("out", type=Path, help="directory for the OBJ files")
     parser.add_argument("--kinds", nargs="+", default=list(KINDS), choices=list(KINDS))
