@@ -2,7 +2,7 @@
 
 Run: ``.venv/bin/python benchmarks/analysis_quality.py [--presets map_analysis_paper map_analysis my.yaml]
 [--levels nav_test samples dungeon_1k dungeon_20k dungeon_100k terrain_1k terrain_20k building_1k building_20k
-castle_1k castle_20k my_level.obj]
+castle_1k castle_20k subway archipelago car_park forest stadium harbour my_level.obj]
 [--seeds 0 1 2] [--yaws 0 30 45]``
 
 For every level and preset it runs the preset with the ``traffic`` evaluator
@@ -33,7 +33,7 @@ detail heights Recast read from another storey, rebuilt ("detail",
 navmesh). ``--presets`` takes preset names or config files (a file extending a
 preset with other parameters); ``--levels`` also takes mesh files (any format
 ``g2s run`` reads, Y-up metres), so the same table can be made for levels of
-one's own; ``--yaws`` runs every level also turned by those angles (degrees,
+one's own, and the level kinds of ``benchmarks/level_kinds.py`` (each built with ``seed=s``); ``--yaws`` runs every level also turned by those angles (degrees,
 about the vertical axis through the centre of its bounds), to check that the
 figures do not depend on how a level lies in its frame. This is a benchmark: nothing here asserts a target.
 """
@@ -48,6 +48,7 @@ from collections.abc import Iterator
 from pathlib import Path
 
 import trimesh
+from level_kinds import KINDS
 
 from g2s_core import pipeline
 from g2s_core.config import find_config, load_raw_config, parse_config, with_evaluators
@@ -98,6 +99,9 @@ def levels_with_metadata(names: list[str], seeds: list[int]) -> Iterator[tuple[s
                 yield f"{name}_s{seed}", level.mesh, level.metadata
         elif Path(name).is_file():
             yield Path(name).stem, load_mesh(Path(name))[0], {}
+        elif name in KINDS:
+            for seed in seeds:
+                yield f"{name}_s{seed}", KINDS[name](seed), {}
         elif name in FAMILIES:
             sample, arguments = FAMILIES[name]
             for seed in seeds:
@@ -121,7 +125,8 @@ def main(argv: list[str] | None = None, registry: Registry | None = None) -> Non
     parser.add_argument("--presets", nargs="+", default=["map_analysis_paper", "map_analysis"])
     parser.add_argument("--levels", nargs="+", default=["nav_test", "samples", "dungeon_1k", "dungeon_20k"],
                         help="nav_test, samples, a sample name, dungeon_1k, dungeon_20k, dungeon_100k, "
-                             "terrain_1k, terrain_20k, building_1k, building_20k, castle_1k, castle_20k, or a mesh file (Y-up, metres)")
+                             "terrain_1k, terrain_20k, building_1k, building_20k, castle_1k, castle_20k, a kind of benchmarks/level_kinds.py "
+                             "(subway, archipelago, car_park, forest, stadium, harbour), or a mesh file (Y-up, metres)")
     parser.add_argument("--seeds", nargs="+", type=int, default=[0], help="seeds of the generated levels")
     parser.add_argument("--yaws", nargs="+", type=float, default=[0.0],
                         help="degrees: run every level also turned by these angles about the vertical axis")
