@@ -246,3 +246,15 @@ def test_a_canopy_lower_than_the_agent_closes_the_way() -> None:
     # The same room without eaves, a canopy 1.7 m up over the west doorway outside: the agent cannot stand there.
     found = _detect(_room_under_eaves(0.0, canopy=1.7)).openings
     assert len(found) == 1 and found[0].position[0] == pytest.approx(8.3, abs=0.02)
+
+
+def test_a_two_metre_connector_keeps_its_floor_and_both_ends() -> None:
+    # A 2 x 2 m floor between two walls, open at both ends: eroded by the agent's radius it keeps
+    # about 1 m², under the 1.14 m² Recast's default minimum region (8 cells squared) removed, so the
+    # piece had no navmesh at all at 0 and 22 degrees (docs/entry_exit.md, "A fourth round").
+    mesh = trimesh.util.concatenate([_box(0.0, 2.0, -SLAB, 0.0, -0.3, 2.3), _box(0.0, 2.0, -SLAB, TALL, -0.3, 0.0),
+                                     _box(0.0, 2.0, -SLAB, TALL, 2.0, 2.3)])
+    found = _detect(mesh).openings
+    assert sorted(round(o.position[0]) for o in found) == [0, 2]
+    for o in found:
+        assert o.width == pytest.approx(2.0, abs=0.1)
