@@ -62,8 +62,10 @@ def g2s_add_loops(graph: nx.Graph, forest: nx.Graph, params: PluginParams, conte
     A tree loses every loop of the level; a loop adder keeps some. Return a
     graph holding every node and edge of ``forest`` plus the edges of
     ``graph`` it adds (``forest`` itself when it adds none); the pipeline
-    copies the graph's attributes onto new nodes and edges. Optional: without
-    a ``loops:`` section the structure stays the paper's tree.
+    copies the graph's attributes onto new nodes and edges. ``forest``'s node
+    and edge attribute dicts are ``graph``'s own (shared, as a subgraph view
+    shares them): add nodes and edges, never change their attributes.
+    Optional: without a ``loops:`` section the structure stays the paper's tree.
     """
 
 
