@@ -76,8 +76,8 @@ def describe_damage(path: Path, data: bytes) -> str | None:
 
 def declared_faces(suffix: str, data: bytes) -> int:
     """The faces an OFF or PLY file's header declares (0 for other files, or when the header does not say)."""
-    if suffix.lower() == ".ply":
-        declared = re.search(rb"^element face (\d+)", data.partition(b"end_header")[0], re.MULTILINE)
+    if suffix.lower() == ".ply":  # in the header only, without copying the (binary) rest of the file
+        declared = re.compile(rb"^element face (\d+)", re.MULTILINE).search(data, 0, max(data.find(b"end_header"), 0))
     elif suffix.lower() == ".off":  # OFF, then "vertices faces edges" on that line or the next one of values
         declared = re.match(rb"\s*\w*OFF\s+(?:#[^\n]*\s+)*\d+\s+(\d+)", data)
     return int(declared[1]) if suffix.lower() in (".ply", ".off") and declared else 0
@@ -182,7 +182,7 @@ def _named_item(index: int, before: int, listed: int, name: str) -> str:
     """Why the OBJ face index ``index`` names no ``name`` (vertex ...), ``before`` of the file's ``listed`` preceding
     its line."""
     if index == 0:
-        return f"; OBJ numbers {_many(2, name).split()[1]} from 1"
+        return f"; OBJ numbers {_many(2, name).partition(' ')[2]} from 1"
     return f"; the file has {_many(listed, name)}" if index > 0 else \
         f", counted back from its line, but the file lists {_many(before, name)} before it"
 

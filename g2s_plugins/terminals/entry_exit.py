@@ -972,17 +972,18 @@ def detect_openings(
 def add_terminals(
     graph: nx.Graph,
     detection: Detection,
-    navmesh: NavMesh | None,
+    surface: NavMesh | SampledSurface,
     agent: AgentConfig,
-    sampled: SampledSurface | None = None,
 ) -> Terminals:
     """Add one node per opening to ``graph`` (see the module doc) and return the terminals.
 
-    ``sampled``: the surface the openings were found on when it is a sampled graph's (``navmesh``
-    then ``None``): an opening is joined to the nearest sample at the corners of its faces.
+    ``surface``: the one the openings were found on; on a sampled graph's, an opening is joined to
+    the nearest sample at the corners of its faces.
     """
     if not detection.openings:
         return Terminals(nodes=(), openings=())
+    sampled = surface if isinstance(surface, SampledSurface) else None
+    navmesh = None if sampled is not None else surface
     node_of_polygon: dict[int, int] = {}
     ids, positions = [], []
     for node, data in graph.nodes(data=True):
@@ -1042,4 +1043,4 @@ def g2s_select_terminals(graph: nx.Graph, params: Params, context: RunContext) -
         )
     surface = sampled_surface(graph, float(stats["spacing"]))
     detection = detect_openings(context.mesh, surface, context.agent, params)
-    return add_terminals(graph, detection, None, context.agent, surface)
+    return add_terminals(graph, detection, surface, context.agent)
