@@ -69,7 +69,7 @@ class RouteOffset:
     @hookimpl
     def g2s_simplify_predicate(self, params: RouteOffsetParams, context: RunContext) -> Predicate:
         """The relaxed predicate over the run's navmesh (see the module docs)."""
-        sees = surface_los.g2s_simplify_predicate(surface_los.Params(**params.model_dump(exclude={"offset"})), context)
+        sees = surface_los.g2s_simplify_predicate(surface_los.Params(**params.model_dump(exclude={"offset"})), context, None, None)
         allowed = collapse_rule(params, lambda start, end: True, context.graph)
         routes: dict[tuple[int, int], np.ndarray] = {}  # the removed nodes' positions along each new edge, (k, 3) m
 

@@ -80,13 +80,20 @@ def g2s_root_scores(tree: nx.Graph, params: PluginParams, context: RunContext) -
 
 @hookspec(firstresult=True)
 def g2s_simplify_predicate(
-    params: PluginParams, context: RunContext
-) -> Callable[[nx.DiGraph, int, int, int], bool]:
+    params: PluginParams, context: RunContext, forest: nx.DiGraph, simplified: nx.DiGraph | None
+) -> Callable[[nx.DiGraph, int, int, int], bool] | None:
     """SimplifyPredicate: return ``P(tree, a, b, c)``.
 
     For a chain a -> b -> c of the rooted ``tree`` (a DiGraph whose nodes carry
     the surface attributes), ``P`` says whether b may be removed and c joined
     to a directly. It is asked for every child c of b and must return a bool.
+    ``forest`` is the rooted forest that simplification starts from.
+
+    A predicate whose result must meet a condition takes ``simplified``: the
+    pipeline then asks the hook again with the structure the last predicate
+    gave (``None`` on the first call) and simplifies ``forest`` anew with each
+    predicate it returns, until it returns ``None``, which keeps that
+    structure. A hook that does not take ``simplified`` is asked once.
     """
 
 

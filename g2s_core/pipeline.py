@@ -192,7 +192,11 @@ def _roots_step(step: Step) -> bool | None:
 
 
 def _simplify_step(step: Step) -> bool | None:
-    _keep(step, "structure", simplify_forest(step.result.forest, step.call()))
+    forest, structure, again = step.result.forest, None, step.registry.takes(step.planned[0].plugin, "simplified")
+    # a plugin that takes `simplified` is asked again with each structure until it keeps one (hookspecs.py)
+    while (structure is None or again) and (predicate := step.call(forest=forest, simplified=structure)) is not None:
+        structure = simplify_forest(forest, predicate)
+    _keep(step, "structure", structure)
 
 
 def _analyzers_step(step: Step) -> bool | None:

@@ -229,7 +229,7 @@ class Registry:
         if info.kind.check_each_item is not None:
             return _checked_items(info, value, info.kind.check_each_item)
         each = info.kind.check_each_call
-        if each is None:
+        if each is None or value is None:
             return value
         function = _guarded(info, value, "its function raised") if info.kind.guard_each_call else value
 
@@ -241,6 +241,12 @@ class Registry:
             return answer
 
         return checked
+
+
+    def takes(self, info: PluginInfo, argument: str) -> bool:
+        """Whether ``info``'s hook implementation takes the named ``argument`` (it may take any subset of them)."""
+        caller = getattr(self.manager.hook, info.kind.hook)
+        return any(argument in impl.argnames for impl in caller.get_hookimpls() if impl.plugin is info.plugin)
 
 
 def _guarded(info: PluginInfo, function: Callable[..., Any], what: str) -> Callable[..., Any]:

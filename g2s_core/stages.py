@@ -171,7 +171,8 @@ def _analysis(value: Any, kwargs: Mapping[str, Any], plugin: Any) -> str | None:
 
 
 def _predicate(value: Any, kwargs: Mapping[str, Any], plugin: Any) -> str | None:
-    return None if callable(value) else f"{type(value).__name__}, not a callable P(tree, a, b, c)"
+    kept = value is None and kwargs.get("simplified") is not None  # None keeps the structure it was given
+    return None if callable(value) or kept else f"{type(value).__name__}, not a callable P(tree, a, b, c)"
 
 
 def _bool(value: Any) -> str | None:

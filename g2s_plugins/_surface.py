@@ -74,6 +74,13 @@ class CollapseParams(PluginParams):
         description="keep B when the walking-flow percentile (0-100) of B differs from A's or C's by more than this, "
         "percentile points; null: no such check",
     )
+    min_heat_rho: float | None = Field(
+        None,
+        ge=-1,
+        le=1,
+        description="simplify less where the heat map would rank the polygons with a Spearman rho under this against "
+        "walking flow: restore removed nodes until it holds (g2s_plugins/heat_guarantee.py); null: no such check",
+    )
 
 
 def on_navmesh(navmesh: NavMesh | None, point: Vec, agent: AgentConfig) -> bool:

@@ -99,6 +99,7 @@ built leaves them out.
 from __future__ import annotations
 
 import math
+from collections.abc import Hashable, Iterable, Mapping
 from dataclasses import dataclass
 
 import networkx as nx
@@ -157,22 +158,47 @@ def reference_flow(result: RunResult, max_sources: int = REFERENCE_SOURCES, seed
 
 def nearest_structure_rows(result: RunResult) -> np.ndarray:
     """(n,) the row of each initial-graph node's nearest final-structure node along the graph (-1: none)."""
-    arrays = traffic.surface_arrays(result.graph)
-    return traffic.distance_to(arrays, arrays.rows(sorted(result.structure)))[1]
+    return _nearest_rows(result.graph, result.structure)
 
 
-def heat_map(result: RunResult, values: dict, nearest: np.ndarray | None = None) -> np.ndarray:
-    """(n,) each initial-graph node's value of its nearest final-structure node (NaN where none).
+def _nearest_rows(graph: nx.Graph, structure_nodes: Iterable[Hashable]) -> np.ndarray:
+    arrays = traffic.surface_arrays(graph)
+    return traffic.distance_to(arrays, arrays.rows(sorted(structure_nodes)))[1]
 
-    ``nearest``: :func:`nearest_structure_rows` of ``result``, when already known.
+
+def heat_map(graph: nx.Graph, structure_nodes: Iterable[Hashable], values: Mapping[Hashable, float],
+             nearest: np.ndarray | None = None) -> np.ndarray:
+    """(n,) each node of ``graph`` (a run's initial graph) given the value of its nearest structure node (NaN where none).
+
+    ``nearest``: :func:`nearest_structure_rows` of the run, when already known.
     """
-    arrays = traffic.surface_arrays(result.graph)
-    structure = sorted(result.structure)
+    arrays = traffic.surface_arrays(graph)
+    structure = sorted(structure_nodes)
     if nearest is None:
-        nearest = nearest_structure_rows(result)
+        nearest = _nearest_rows(graph, structure)
     by_row = np.full(arrays.n, np.nan)
     by_row[arrays.rows(structure)] = [values[node] for node in structure]
     return np.where(nearest >= 0, by_row[np.maximum(nearest, 0)], np.nan)
+
+
+def placement_heat(graph: nx.Graph, structure_nodes: Iterable[Hashable], flow: np.ndarray,
+                   nearest: np.ndarray | None = None) -> np.ndarray:
+    """(n,) the heat map whose structure nodes carry the mean percentile of ``flow`` over the nodes they stand for.
+
+    Each node of ``graph`` gets its nearest structure node's mean of
+    :func:`~g2s_plugins.traffic.percentile` of the (n,) ``flow``: the
+    ``flow`` analyzer's heat map with ``aggregate: percentile`` when ``flow``
+    is its walking flow, and ``rho_ceiling``'s when ``flow`` is the reference.
+    """
+    structure = sorted(structure_nodes)
+    return heat_map(graph, structure, traffic.gather(graph, structure, traffic.percentile(flow), mean=True), nearest)
+
+
+def placement_rho(graph: nx.Graph, structure_nodes: Iterable[Hashable], flow: np.ndarray,
+                  nearest: np.ndarray | None = None) -> float:
+    """Spearman rho between :func:`placement_heat` and ``flow`` over the nodes that reach the structure
+    (``rho_ceiling`` when ``flow`` is the reference flow; NaN when undefined)."""
+    return spearman(placement_heat(graph, structure_nodes, flow, nearest), flow)
 
 
 @dataclass(frozen=True)
@@ -287,7 +313,9 @@ def _navmesh_ceiling(result: RunResult, surface: NavmeshSurface) -> dict:
     return {node: sums[node] / counts[node] if counts[node] > 0 else float("nan") for node in sums}
 
 
-def _spearman(heat: np.ndarray, reference: np.ndarray) -> float:
+def spearman(heat: np.ndarray, reference: np.ndarray) -> float:
+    """Spearman rho of (n,) ``heat`` and ``reference`` over the entries where ``heat`` is finite (NaN: fewer
+    than three, or either constant there)."""
     from scipy.stats import spearmanr  # here, not at the top: importing scipy.stats is about a quarter of every g2s command's start-up
 
     ok = np.isfinite(heat)
@@ -352,8 +380,8 @@ def evaluate(
     off = float(reference[distance > off_distance].sum() / total_flow) if total_flow > 0 else 0.0
     nearest = nearest_structure_rows(result)
     first = next(iter(result.analysis.values()), None)
-    heat = heat_map(result, first, nearest) if first is not None else None
-    rho = _spearman(heat, reference) if heat is not None else float("nan")
+    heat = heat_map(result.graph, result.structure, first, nearest) if first is not None else None
+    rho = spearman(heat, reference) if heat is not None else float("nan")
     rho_area = float("nan")
     if heat is not None and np.isfinite(rho):
         ok = np.isfinite(heat)
@@ -370,9 +398,9 @@ def evaluate(
             return carry(values, arrays.area, positions, surface)
 
         if first is not None:
-            rho_navmesh = _spearman(on_navmesh(heat), surface.flow)
-        rho_navmesh_ceiling = _spearman(on_navmesh(heat_map(result, _navmesh_ceiling(result, surface), nearest)),
-                                        surface.flow)
+            rho_navmesh = spearman(on_navmesh(heat), surface.flow)
+        ceiling = heat_map(result.graph, result.structure, _navmesh_ceiling(result, surface), nearest)
+        rho_navmesh_ceiling = spearman(on_navmesh(ceiling), surface.flow)
         reached = on_navmesh(np.where(nearest >= 0, 1.0, np.nan))
         navmesh_area = traffic.surface_arrays(surface.graph).area
         left_out = float(navmesh_area[np.isnan(reached)].sum() / navmesh_area.sum())
@@ -381,11 +409,8 @@ def evaluate(
         traffic_off=off,
         rho=rho,
         rho_area=rho_area,
-        rho_area_betweenness=_spearman(heat_map(result, betweenness, nearest), reference),
-        rho_ceiling=_spearman(
-            heat_map(result, traffic.gather(result.graph, result.structure, traffic.percentile(reference), mean=True),
-                     nearest), reference
-        ),
+        rho_area_betweenness=spearman(heat_map(result.graph, result.structure, betweenness, nearest), reference),
+        rho_ceiling=placement_rho(result.graph, result.structure, reference, nearest),
         structure_share=result.structure.number_of_nodes() / arrays.n,
         rho_navmesh=rho_navmesh,
         rho_navmesh_ceiling=rho_navmesh_ceiling,

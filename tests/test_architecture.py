@@ -26,7 +26,7 @@ def test_core_never_imports_a_plugin():
                 assert names == EXEMPT_IMPORTS.get(path.name), f"{path.name} imports {names}"
 
 
-CORE_CODE_BUDGET = 2365
+CORE_CODE_BUDGET = 2372
 """Lines of code g2s_core may hold (docs/architecture.md records the count): the core stays minimal."""
 
 
@@ -117,7 +117,7 @@ def test_the_documented_example_plugins_register_and_work(tmp_path, capsys):
     scores = call("roots", "lowest", tree=tree, context=None)
     assert set(scores) == set(tree)
     assert call("terminals", "above", graph=graph, context=None).nodes == ()
-    predicate = call("simplify", "straight", context=None)
+    predicate = call("simplify", "straight", context=None, forest=None, simplified=None)
     assert isinstance(predicate(nx_path_with_positions(), 0, 1, 2), bool)
     values = call("analyzers", "height", structure=tree, context=None)
     assert min(values.values()) == 0

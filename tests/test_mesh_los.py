@@ -33,7 +33,7 @@ def level(*parts) -> trimesh.Trimesh:
 
 def predicate(mesh, **params):
     context = RunContext(mesh=mesh, agent=AGENT, centre=np.zeros(3))
-    return mesh_los.g2s_simplify_predicate(params=mesh_los.Params(**params), context=context)
+    return mesh_los.g2s_simplify_predicate(params=mesh_los.Params(**params), context=context, forest=None, simplified=None)
 
 
 def chain(*specs) -> nx.DiGraph:

@@ -87,7 +87,8 @@ def chain(*specs) -> nx.DiGraph:
 
 
 def make(module, navmesh=None, **params):
-    return module.g2s_simplify_predicate(params=module.Params(**params), context=context(navmesh))
+    rounds = {"forest": None, "simplified": None} if module is surface_los else {}  # the first call of the pipeline's
+    return module.g2s_simplify_predicate(params=module.Params(**params), context=context(navmesh), **rounds)
 
 
 # --- surface_los ---------------------------------------------------------------------------
@@ -186,7 +187,7 @@ def test_surface_los_traffic_step_keeps_b_where_the_flow_changes():
 
     def simplified(**params) -> list[tuple[int, int]]:
         ctx = RunContext(mesh=None, agent=AgentConfig(), centre=np.zeros(3), navmesh=SquareWithWall(), graph=graph)
-        predicate = surface_los.g2s_simplify_predicate(params=surface_los.Params(**params), context=ctx)
+        predicate = surface_los.g2s_simplify_predicate(params=surface_los.Params(**params), context=ctx, forest=None, simplified=None)
         return sorted(simplify_forest(tree, predicate).edges)
 
     assert simplified() == [(0, 4)]
@@ -275,5 +276,6 @@ def test_register_as_predicates_and_run_through_pluggy():
     for module in (surface_los, max_length, always, never):
         info = registry.register(module, package="graph2structure", entry_point=f"simplify.{module.NAME}")
         assert (info.stage, info.name) == ("simplify", module.NAME)
-    predicate = registry.call(registry.get("simplify", "never"), params=never.Params(), context=context())
+    predicate = registry.call(registry.get("simplify", "never"), params=never.Params(), context=context(), forest=None,
+                              simplified=None)
     assert predicate(chain(((0, 0, 0), UP, True), ((1, 0, 0), UP, True), ((2, 0, 0), UP, True)), 0, 1, 2) is False

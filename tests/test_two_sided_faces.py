@@ -48,7 +48,7 @@ def test_the_sampler_walks_a_two_sided_floor(twin_first):
 @pytest.mark.parametrize("twin_first", [False, True])
 def test_line_of_sight_over_a_two_sided_floor(twin_first):
     context = RunContext(mesh=two_sided_slab(twin_first), agent=AGENT, centre=np.zeros(3))
-    clear = mesh_los.g2s_simplify_predicate(params=mesh_los.Params(), context=context)
+    clear = mesh_los.g2s_simplify_predicate(params=mesh_los.Params(), context=context, forest=None, simplified=None)
     chain = nx.DiGraph([(0, 1), (1, 2)], roots=[0])
     for node, pos in enumerate([(2.0, 0.0, 2.0), (10.0, 0.0, 12.0), (18.0, 0.0, 3.0)]):
         chain.add_node(node, pos=pos, normal=(0.0, 1.0, 0.0), on_navmesh=True, area=1.0, polygon=-1, depth=node, root=0)

@@ -48,6 +48,7 @@ from g2s_core.model import RunContext
 from g2s_core.plugin import hookimpl
 from g2s_plugins._raycasting import GROUND_MARGIN, AgentShape, OpenFloors, RayCaster, walk_segments
 from g2s_plugins._surface import CollapseParams, collapse_rule
+from g2s_plugins.heat_guarantee import guaranteed
 
 NAME = "mesh_los"
 
@@ -151,7 +152,12 @@ def mesh_los_predicate(
 
 
 @hookimpl
-def g2s_simplify_predicate(params: Params, context: RunContext) -> Callable[[nx.DiGraph, int, int, int], bool]:
-    """Algorithm 5's rules with a walk test over ``context.mesh`` instead of the navmesh."""
+def g2s_simplify_predicate(
+    params: Params, context: RunContext, forest: nx.DiGraph, simplified: nx.DiGraph | None
+) -> Callable[[nx.DiGraph, int, int, int], bool] | None:
+    """Algorithm 5's rules with a walk test over ``context.mesh`` instead of the navmesh; with ``min_heat_rho``,
+    the rounds of :func:`g2s_plugins.heat_guarantee.guaranteed`."""
     params = params if params is not None else Params()
-    return mesh_los_predicate(context.mesh, AgentShape.from_config(context.agent), params, context.graph)
+    agent = AgentShape.from_config(context.agent)
+    return guaranteed(lambda: mesh_los_predicate(context.mesh, agent, params, context.graph), params.min_heat_rho,
+                      context, forest, simplified)

@@ -38,6 +38,7 @@ from g2s_core.errors import PluginError
 from g2s_core.model import RunContext
 from g2s_core.plugin import hookimpl
 from g2s_plugins._surface import CollapseParams, collapse_rule
+from g2s_plugins.heat_guarantee import guaranteed
 
 NAME = "surface_los"
 
@@ -47,8 +48,11 @@ class Params(CollapseParams):
 
 
 @hookimpl
-def g2s_simplify_predicate(params: Params, context: RunContext) -> Callable[[nx.DiGraph, int, int, int], bool]:
-    """The predicate of Algorithm 5 over ``context.navmesh``.
+def g2s_simplify_predicate(
+    params: Params, context: RunContext, forest: nx.DiGraph, simplified: nx.DiGraph | None
+) -> Callable[[nx.DiGraph, int, int, int], bool] | None:
+    """The predicate of Algorithm 5 over ``context.navmesh``; with ``min_heat_rho``, the rounds of
+    :func:`g2s_plugins.heat_guarantee.guaranteed`.
 
     Raises:
         PluginError: the run has no navigation mesh.
@@ -64,4 +68,5 @@ def g2s_simplify_predicate(params: Params, context: RunContext) -> Callable[[nx.
     def line_of_sight(start: tuple[float, ...], end: tuple[float, ...]) -> bool:
         return navmesh.line_of_sight(start, end, step, gap)
 
-    return collapse_rule(params, line_of_sight, context.graph)
+    return guaranteed(lambda: collapse_rule(params, line_of_sight, context.graph), params.min_heat_rho, context, forest,
+                      simplified)

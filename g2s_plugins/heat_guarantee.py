@@ -1,0 +1,109 @@
+"""A guaranteed heat map: simplification stops short where the heat map would rank the polygons less like the
+walking flow than ``min_heat_rho`` (a parameter of both line-of-sight predicates, :mod:`g2s_plugins._surface`).
+
+The quantity (:func:`g2s_plugins.evaluation.placement_rho`): Spearman rho,
+over the nodes of the run's initial graph, between each node's walking
+flow (:func:`g2s_plugins.traffic.walking_flow` with the ``flow``
+analyzer's sources, the array that analyzer and ``max_traffic_step``
+use) and the value the heat map gives it, the mean walking-flow
+percentile of the nodes its nearest structure node stands for: the
+``flow`` analyzer's heat map with ``aggregate: percentile``, and the
+evaluator's ``rho_ceiling`` (which ranks against its own reference flow,
+the same array up to its larger source sample).
+
+The mechanism, a Douglas-Peucker tolerance for the heat map (D. H.
+Douglas and T. K. Peucker, Cartographica 10(2):112-122, 1973, keep the
+point farthest from the simplified line until every point is within the
+tolerance): Algorithm 4 simplifies as it always does and the result is
+measured. While rho is under the target, the removed nodes whose own
+polygon's percentile differs most from the heat the map gives it (by more
+than :data:`FLOOR` points) are restored, :data:`RESTORED_SHARE` of the
+forest's nodes at a time: the forest is simplified again by the same
+predicate, which now keeps them and every node the last structure kept
+(:func:`keeping`), so each round's structure holds the last one's. A
+structure that meets the target is the one Algorithm 4 gave, unchanged;
+when no removed node differs by more than the floor and rho is still
+under the target, the last structure is kept with a warning that says so.
+
+Complexity: a round is one simplification (its predicate calls) and one
+measure (a multi-source Dijkstra over the initial graph, O(m + n log n),
+and two sorts); each round but the last restores ceil(share x forest
+nodes) nodes, so there are at most 1 / :data:`RESTORED_SHARE` + 1 of them.
+A structure that meets the target costs one measure.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Hashable
+
+import networkx as nx
+import numpy as np
+
+from g2s_core.model import RunContext
+from g2s_plugins import evaluation, traffic
+
+Predicate = Callable[[nx.DiGraph, int, int, int], bool]
+
+RESTORED_SHARE = 0.02
+"""Forest nodes restored per round, as a share of the forest's nodes."""
+
+FLOOR = 10.0
+"""Percentile points: a removed node whose polygon's walking-flow percentile differs from the heat the map gives it
+by no more than this is never restored (the smallest ``max_traffic_step`` measured, docs/analysis_quality.md)."""
+
+
+def restored(
+    graph: nx.Graph, forest: nx.DiGraph, simplified: nx.DiGraph, min_rho: float, context: RunContext
+) -> set[Hashable] | None:
+    """The nodes the next simplification of ``forest`` must keep, or ``None`` when ``simplified`` is kept.
+
+    ``None`` when the heat map of ``simplified`` ranks the nodes of
+    ``graph`` (the run's initial graph) with rho >= ``min_rho`` against
+    their walking flow, or rho is undefined (every node's flow alike), or
+    no removed node differs by more than :data:`FLOOR` (a warning gives rho);
+    else every node of ``simplified`` and the removed nodes of ``forest``
+    whose percentile differs most from their heat, ceil(:data:`RESTORED_SHARE`
+    x the forest's nodes) of them, by decreasing difference then node id.
+    """
+    arrays = traffic.surface_arrays(graph)
+    flow = traffic.arrays_walking_flow(arrays, max_sources=traffic.WALKING_SOURCES)
+    heat = evaluation.placement_heat(graph, simplified, flow)
+    rho = evaluation.spearman(heat, flow)
+    if not rho < min_rho:
+        return None
+    removed = np.array(sorted(node for node in forest if node not in simplified), dtype=np.int64)
+    difference = np.abs(traffic.percentile(flow) - heat)[arrays.rows(removed)] if removed.size else np.zeros(0)
+    above = difference > FLOOR  # NaN (a node reaching no structure node) is not
+    if not above.any():
+        context.warn(f"the heat map ranks the polygons with Spearman rho {rho:.3f} against walking flow, under "
+                     f"min_heat_rho {min_rho:g}: no node simplification removed differs from the heat it is given "
+                     f"by more than {FLOOR:g} percentile points")
+        return None
+    order = np.lexsort((removed[above], -difference[above]))
+    count = math.ceil(RESTORED_SHARE * forest.number_of_nodes())
+    return set(simplified) | set(removed[above][order[:count]].tolist())
+
+
+def keeping(predicate: Predicate, kept: set[Hashable]) -> Predicate:
+    """``predicate``, except that a node of ``kept`` is never removed."""
+
+    def keep(tree: nx.DiGraph, a: int, b: int, c: int) -> bool:
+        return b not in kept and predicate(tree, a, b, c)
+
+    return keep
+
+
+def guaranteed(
+    make_predicate: Callable[[], Predicate], min_rho: float | None, context: RunContext, forest: nx.DiGraph,
+    simplified: nx.DiGraph | None,
+) -> Predicate | None:
+    """What a predicate hook returns with ``min_heat_rho`` (the hookspec's ``simplified`` protocol): the predicate
+    of ``make_predicate`` first, then, after each structure, ``None`` to keep it or that predicate keeping the
+    nodes of :func:`restored`."""
+    if simplified is None:
+        return make_predicate()
+    if min_rho is None:
+        return None
+    kept = restored(context.graph, forest, simplified, min_rho, context)
+    return None if kept is None else keeping(make_predicate(), kept)

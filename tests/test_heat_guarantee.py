@@ -1,0 +1,156 @@
+"""The guaranteed heat map (``min_heat_rho``): on a hand-checkable corridor, and through the pipeline."""
+
+from __future__ import annotations
+
+import types
+
+import networkx as nx
+import numpy as np
+import pytest
+import scipy.stats
+
+from g2s_core import pipeline
+from g2s_core.config import PRESETS_DIR, AgentConfig, load_raw_config, parse_config
+from g2s_core.mesh import load_mesh, mesh_sha256
+from g2s_core.model import RunContext
+from g2s_core.plugin import PluginParams, hookimpl
+from g2s_core.registry import Registry
+from g2s_core.rooted import root_forest
+from g2s_core.simplify import simplify_forest
+from g2s_plugins import evaluation, heat_guarantee, traffic
+from g2s_plugins._surface import CollapseParams, collapse_rule
+
+
+def corridor(n: int = 9) -> nx.Graph:
+    """A straight corridor of n polygons of 1 m², 1 m apart, flat and all on the navmesh."""
+    graph = nx.path_graph(n)
+    for i in graph:
+        graph.nodes[i].update(pos=(float(i), 0.0, 0.0), area=1.0, normal=(0.0, 1.0, 0.0), on_navmesh=True)
+    nx.set_edge_attributes(graph, 1.0, "weight")
+    return graph
+
+
+def simplified(graph: nx.Graph, params: CollapseParams) -> tuple[nx.DiGraph, list[float]]:
+    """The structure of the corridor rooted at 0, simplified as the pipeline does it (line of sight everywhere),
+    and the rho of each structure the loop made."""
+    forest = root_forest(graph, {i: -i for i in graph}, centre=np.zeros(3))
+    context = RunContext(mesh=None, agent=AgentConfig(), centre=np.zeros(3), graph=graph)
+    flow = traffic.walking_flow(graph, max_sources=traffic.WALKING_SOURCES)
+    structure, rhos = None, []
+    while (predicate := heat_guarantee.guaranteed(lambda: collapse_rule(params, lambda start, end: True, graph),
+                                                  params.min_heat_rho, context, forest, structure)) is not None:
+        structure = simplify_forest(forest, predicate)
+        rhos.append(evaluation.placement_rho(graph, structure, flow))
+    return structure, rhos
+
+
+def test_the_corridor_by_hand():
+    # ordered pairs through node i of a corridor of nine 1 m² polygons: 2 i (8 - i)
+    graph = corridor()
+    flow = traffic.walking_flow(graph, max_sources=traffic.WALKING_SOURCES)
+    assert flow.tolist() == [0, 14, 24, 30, 32, 30, 24, 14, 0]
+    # the step of 60 percentile points keeps 3 (77.8 against the root's 11.1) and lets every other node go
+    structure, rhos = simplified(graph, CollapseParams(max_traffic_step=60.0))
+    assert sorted(structure) == [0, 3, 8]
+    # nearest structure node: 0, 1 -> 0; 2-5 -> 3; 6-8 -> 8 (ranks 1.5, 3.5, 5.5, 7.5, 9 of the five flows)
+    heat = [22.2, 22.2, 76.4, 76.4, 76.4, 76.4, 33.3, 33.3, 33.3]
+    assert evaluation.placement_heat(graph, structure, flow) == pytest.approx(heat, abs=0.05)
+    assert rhos == [pytest.approx(scipy.stats.spearmanr(heat, flow).statistic)]
+    assert rhos[0] == pytest.approx(0.8291, abs=1e-4)
+
+
+def test_a_fixed_step_under_the_target_gets_its_nodes_back_until_it_holds():
+    graph = corridor()
+    structure, rhos = simplified(graph, CollapseParams(max_traffic_step=60.0, min_heat_rho=0.9))
+    # one node a round (ceil of 2 % of 9), the removed node whose percentile differs most from its heat:
+    # {0, 3, 8} gives 6 the heat 33.3 against its own 55.6 (2: 76.4 against 55.6, 4: 76.4 against 94.4), so 6
+    # comes back; then 2 (86.1 against 55.6 once 3 stands for 2-4); rho 0.829 -> 0.861 -> 0.935
+    assert sorted(structure) == [0, 2, 3, 6, 8]
+    assert rhos == pytest.approx([0.8291, 0.8608, 0.9353], abs=1e-4)
+    heat = [11.1, 44.4, 44.4, 86.1, 86.1, 66.7, 66.7, 22.2, 22.2]
+    assert evaluation.placement_heat(graph, structure, traffic.walking_flow(graph)) == pytest.approx(heat, abs=0.05)
+
+
+def test_a_structure_that_holds_is_kept_as_it_is():
+    graph = corridor()
+    plain, _ = simplified(graph, CollapseParams(max_traffic_step=60.0))
+    held, rhos = simplified(graph, CollapseParams(max_traffic_step=60.0, min_heat_rho=0.8))
+    assert rhos == [pytest.approx(0.8291, abs=1e-4)]
+    assert sorted(held.edges) == sorted(plain.edges)
+
+
+def test_a_target_out_of_reach_stops_at_the_floor_and_says_so():
+    graph = corridor()
+    context = RunContext(mesh=None, agent=AgentConfig(), centre=np.zeros(3), graph=graph)
+    forest = root_forest(graph, {i: -i for i in graph}, centre=np.zeros(3))
+    # every node kept: rho 1, kept without a word
+    assert heat_guarantee.restored(graph, forest, forest, 1.0, context) is None and not context.warnings
+    # all but 4 (94.4): its nearest node stands for both, heat 86.1, 8.3 points off: under the floor of 10
+    assert heat_guarantee.restored(graph, forest, forest.subgraph(set(graph) - {4}), 1.0, context) is None
+    assert "rho 0.987" in context.warnings[0] and "under min_heat_rho 1" in context.warnings[0]
+
+
+def predicate_plugin(asked: list, takes_simplified: bool) -> types.ModuleType:
+    """A SimplifyPredicate that lets every node go first; when it takes ``simplified``, it then keeps the smallest
+    node that went, and keeps the structure that holds it."""
+    module = types.ModuleType("plugin_rounds")
+    module.NAME = "rounds"
+
+    class Params(PluginParams):
+        """No parameters."""
+
+    module.Params = Params
+    kept: list = []
+    if takes_simplified:
+        @hookimpl
+        def g2s_simplify_predicate(params, context, forest, simplified):
+            asked.append(simplified if simplified is None else set(simplified))
+            if simplified is None:
+                return lambda tree, a, b, c: True
+            if kept:
+                return None if kept[0] in simplified else lambda tree, a, b, c: True
+            kept.append(min(set(forest) - set(simplified)))
+            return lambda tree, a, b, c: b != kept[0]
+    else:
+        @hookimpl
+        def g2s_simplify_predicate(params, context):
+            asked.append("once")
+            return lambda tree, a, b, c: True
+    module.g2s_simplify_predicate = g2s_simplify_predicate
+    module.kept = kept
+    return module
+
+
+@pytest.mark.parametrize("takes", [True, False])
+def test_the_pipeline_asks_again_only_a_predicate_that_takes_simplified(shared_data, takes):
+    registry = Registry.from_entry_points()
+    asked: list = []
+    plugin = predicate_plugin(asked, takes)
+    registry.register(plugin, package="test", entry_point="simplify.rounds")
+    raw = load_raw_config(PRESETS_DIR / "map_analysis_paper.yaml")
+    raw["simplify"] = {"plugin": "rounds"}
+    raw["analyzers"] = []
+    mesh = load_mesh(shared_data / "nav_test.obj")[0]
+    result = pipeline.run(pipeline.plan(parse_config(raw), registry), registry, mesh, "nav_test", mesh_sha256(mesh))
+    if takes:
+        (node,) = plugin.kept
+        assert asked[0] is None and node not in asked[1] and node in asked[2] and len(asked) == 3
+        assert set(result.structure) == asked[2]
+    else:
+        assert asked == ["once"]
+
+
+def test_map_analysis_on_a_level_that_holds_measures_once_and_changes_nothing(shared_data, monkeypatch):
+    registry = Registry.from_entry_points()
+    mesh = load_mesh(shared_data / "nav_test.obj")[0]
+    measured = []
+    restored = heat_guarantee.restored
+    monkeypatch.setattr(heat_guarantee, "restored", lambda *args: measured.append(1) or restored(*args))
+    structures = []
+    for rho in (0.9, None):
+        raw = load_raw_config(PRESETS_DIR / "map_analysis.yaml")
+        raw["simplify"]["params"]["min_heat_rho"] = rho
+        result = pipeline.run(pipeline.plan(parse_config(raw), registry), registry, mesh, "nav_test", mesh_sha256(mesh))
+        structures.append((sorted(result.structure.nodes), sorted(result.structure.edges)))
+    assert measured == [1]  # nav_test's heat map holds 0.967: one measure, no second simplification
+    assert structures[0] == structures[1]
