@@ -242,7 +242,6 @@ class Registry:
 
         return checked
 
-
     def takes(self, info: PluginInfo, argument: str) -> bool:
         """Whether ``info``'s hook implementation takes the named ``argument`` (it may take any subset of them)."""
         caller = getattr(self.manager.hook, info.kind.hook)
