@@ -41,7 +41,7 @@ api, pipeline = lazy_module("g2s_core.api"), lazy_module("g2s_core.pipeline")
 
 EXIT_CODES = "exit codes: 0 success, 2 bad input or config or a failed plugin (named with its package), 1 internal error, 130 interrupted"
 
-__all__ = ["main", "output_folder", "stage_table"]
+__all__ = ["main", "named", "output_folder", "stage_table"]
 
 
 class CommandParser(argparse.ArgumentParser):
@@ -59,7 +59,7 @@ def output_folder(text: str) -> Path:
     return Path(text)
 
 
-def _given(what: str) -> Callable[[str], str]:
+def named(what: str) -> Callable[[str], str]:
     """The type of an argument naming ``what``, refusing an empty one: ``Path("")`` is the working folder, which
     was then named as the config or mesh (``.: expected a config file, got a folder``)."""
     def given(text: str) -> str:
@@ -89,8 +89,8 @@ def _parser() -> tuple[argparse.ArgumentParser, dict[str, Callable[[argparse.Nam
         epilog=f"{EXIT_CODES}\n\npresets:\n" + "\n".join(_columns(list(presets().items()), width=80, indent=2)),
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
-    run.add_argument("config", type=_given("a preset name or a config file"), help="preset name (see `g2s presets`) or YAML config file")
-    run.add_argument("mesh", type=_given(f"a mesh file or {SAMPLE_PREFIX}NAME"), help=f"mesh file (.obj .glb .gltf .ply .stl .off) or {SAMPLE_PREFIX}NAME[?param=value&...] "
+    run.add_argument("config", type=named("a preset name or a config file"), help="preset name (see `g2s presets`) or YAML config file")
+    run.add_argument("mesh", type=named(f"a mesh file or {SAMPLE_PREFIX}NAME"), help=f"mesh file (.obj .glb .gltf .ply .stl .off) or {SAMPLE_PREFIX}NAME[?param=value&...] "
                      "for a level from an installed level generator (see `g2s plugins --stage levels`)")
     run.add_argument("-o", "--outdir", type=output_folder, required=True, help="folder for the results")
     _add_output_options(run)

@@ -235,6 +235,16 @@ def test_an_empty_config_or_mesh_name_is_refused_not_read_as_the_working_folder(
     assert_user_error(g2s("run", *args, "-o", tmp_path / "out", cwd=tmp_path), says)
 
 
+@pytest.mark.parametrize("items", [["", "sample:t_hub"], ["graph_only", ""], ["graph_only", "sample:t_hub", " "]])
+def test_an_empty_batch_config_or_level_is_refused_as_run_refuses_it(items, tmp_path):
+    # a config "" was ": expected a preset name or a .yaml/.yml config first ..."; a level "" was the working
+    # folder, searched for meshes, whose pairs then ran
+    (tmp_path / "floor.obj").write_text("v 0 0 0\nv 1 0 0\nv 0 0 1\nf 1 3 2\n")
+    assert_user_error(g2s("batch", *items, "-o", "out", cwd=tmp_path),
+                      "argument CONFIG|INPUT: expected a preset, a config file or a level, got an empty name")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["floor.obj"]
+
+
 def test_a_setting_given_twice_is_refused_not_the_last_one_kept(tmp_path):
     # YAML and URL queries both kept the last value silently: an agent 9 m wide, or a 3-room dungeon
     config = tmp_path / "twice.yaml"
