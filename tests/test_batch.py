@@ -357,24 +357,12 @@ def test_a_config_given_twice_runs_once_as_a_level_given_twice(tmp_path):
         run_batch(["map_analysis", str(other)], [SAMPLES[0]], tmp_path / "other", "serial", formats="json")
 
 
-def test_ctrl_c_that_a_library_swallows_still_stops_the_batch(tmp_path, monkeypatch, capsys, request):
+def test_ctrl_c_that_a_library_swallows_still_stops_the_batch(tmp_path, swallowed_ctrl_c, capsys):
     """trimesh's imports catch BaseException, a KeyboardInterrupt among them: a Ctrl-C while the batch's first pair
     loaded them was lost and the batch ran to its end (exit 0; 2,400 rooms: 11 s after a Ctrl-C at 2 s)."""
-    from g2s_core import pipeline
     from g2s_plugins.batch import runner
 
-    class Importing:
-        def __getattr__(self, name):
-            try:
-                os.kill(os.getpid(), signal.SIGINT)
-            except BaseException:  # as trimesh does
-                pass
-            return getattr(pipeline, name)
-
-    monkeypatch.setattr(runner, "pipeline", Importing())
-    # as from a terminal: a shell's background job (how CI may start the suite) inherits SIGINT ignored
-    previous = signal.signal(signal.SIGINT, signal.default_int_handler)
-    request.addfinalizer(lambda: signal.signal(signal.SIGINT, previous))
+    swallowed_ctrl_c(runner, "pipeline")
     out = tmp_path / "out"
     code, _, err = g2s(capsys, "batch", "graph_only", "sample:t_hub", "-o", str(out), "--executor", "serial", "-q")
     assert (code, err.strip()) == (130, "g2s: interrupted")

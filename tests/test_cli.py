@@ -281,25 +281,13 @@ def test_ctrl_c_while_the_console_script_loads_is_one_line(tmp_path):
     assert not (tmp_path / "out").exists()
 
 
-def test_ctrl_c_while_trimesh_imports_is_not_lost(tmp_path, monkeypatch, capsys, request):
+def test_ctrl_c_while_trimesh_imports_is_not_lost(tmp_path, swallowed_ctrl_c, capsys):
     """trimesh's imports catch BaseException (its optional dependencies), a KeyboardInterrupt among them: a Ctrl-C
-    in the first second of a run was lost and the run wrote its results. It is held until the import is done."""
-    import signal
+    in the first second of a run was lost and the run wrote its results. It is remembered, and stops the run at
+    its next step."""
+    from g2s_core import cli
 
-    from g2s_core import api, cli
-
-    class Importing:
-        def __getattr__(self, name):
-            try:
-                os.kill(os.getpid(), signal.SIGINT)
-            except BaseException:  # as trimesh does
-                pass
-            return getattr(api, name)
-
-    monkeypatch.setattr(cli, "api", Importing())
-    # as from a terminal: a shell's background job (how CI may start the suite) inherits SIGINT ignored
-    previous = signal.signal(signal.SIGINT, signal.default_int_handler)
-    request.addfinalizer(lambda: signal.signal(signal.SIGINT, previous))
+    swallowed_ctrl_c(cli, "api")
     assert main(["run", "graph_only", "sample:straight_corridor", "-o", str(tmp_path / "out"), "-q"]) == 130
     assert capsys.readouterr().err.strip() == "g2s: interrupted"
     assert not (tmp_path / "out").exists()
