@@ -258,3 +258,13 @@ def test_a_two_metre_connector_keeps_its_floor_and_both_ends() -> None:
     assert sorted(round(o.position[0]) for o in found) == [0, 2]
     for o in found:
         assert o.width == pytest.approx(2.0, abs=0.1)
+
+
+@pytest.mark.parametrize("pier, door, yaw", [(0.1, 1.6, 0.0), (0.2, 1.2, 0.0), (0.3, 1.2, 22.0)])
+def test_two_doors_side_by_side_are_two_openings(pier: float, door: float, yaw: float) -> None:
+    # Samples along the wall inside saw out through both doorways alike: one segment, one edge spanning both
+    # doors and the pier between them, whose passage was measured from its middle, inside the pier, and which
+    # was dropped (neither door found). A pier standing on an edge between two free stretches now cuts it.
+    level = pieces.twin_doors(door=door, pier=pier)
+    level = pieces.turned(level, yaw) if yaw else level
+    _assert_known(_detect(level.mesh).openings, [o.position for o in level.openings], [o.width for o in level.openings])

@@ -102,6 +102,7 @@ def test_registry_names_and_load():
         "chamfered_platform",
         "sloped_corridor",
         "roofed_corridor",
+        "twin_doors",
         "corner_corridor",
         "t_junction",
         "bridge",

@@ -24,6 +24,8 @@ wrong on real pieces (see docs/entry_exit.md):
   the held-out families).
 * :func:`roofed_corridor`: a corridor under a flat roof whose walkable top
   outweighs the floor it covers (found in the fourth round of piece kinds).
+* :func:`twin_doors`: two doorways side by side, a pier of wall between them
+  narrower than the agent; each is an opening (found in the fifth round).
 
 The held-out families (:data:`HELD_OUT`) are shapes designers build that the
 rules were not measured on when they were set (docs/entry_exit.md, "Piece
@@ -413,6 +415,36 @@ def roofed_corridor(
     return b.build("roofed_corridor", openings, _meta(params, (0.0, TALL + roof), components=2))
 
 
+@validate_call
+def twin_doors(
+    width: PositiveFloat = 8.0, depth: PositiveFloat = 6.0, wall: PositiveFloat = 0.3,
+    door: PositiveFloat = 1.2, pier: PositiveFloat = 0.2,
+) -> SampleLevel:
+    """A walled room with two doorways side by side in its east wall, a ``pier`` of wall between them, and one west.
+
+    Samples along the wall inside see out through both doorways alike (the navmesh need not enter a
+    doorway barely wider than the agent, and runs in front of a pier narrower than it), so the two
+    were one edge spanning the pier, measured from its middle and dropped. Found in the fifth round
+    of piece kinds (docs/entry_exit.md). Openings: the west doorway (1.6 m) and each east one.
+
+    Args:
+        width: clear floor inside the walls along X, metres.
+        depth: clear floor inside the walls along Z, metres.
+        wall: thickness of the walls, metres.
+        door: width of each east doorway, metres.
+        pier: the wall between the east doorways, metres.
+    """
+    b = _LevelBuilder()
+    b.floors(-wall, width + wall, -wall, depth + wall, 0.0)
+    centres = (depth / 2 - (door + pier) / 2, depth / 2 + (door + pier) / 2)
+    gaps = {"W": [(depth / 2 - 0.8, depth / 2 + 0.8, 0.0, TALL)],
+            "E": [(c - door / 2, c + door / 2, 0.0, TALL) for c in centres]}
+    _walls(b, width, depth, wall, gaps)
+    openings = [_door("W", depth / 2, 1.6, width, depth, wall), *(_door("E", c, door, width, depth, wall) for c in centres)]
+    params = {"width": width, "depth": depth, "wall": wall, "door": door, "pier": pier}
+    return b.build("twin_doors", openings, _meta(params, (0.0,)))
+
+
 # --------------------------------------------------------------------------
 # Held-out families: shapes designers build that the rules above were not measured on
 # --------------------------------------------------------------------------
@@ -765,6 +797,7 @@ PIECES = {
     "chamfered_platform": chamfered_platform,
     "sloped_corridor": sloped_corridor,
     "roofed_corridor": roofed_corridor,
+    "twin_doors": twin_doors,
     **HELD_OUT,
 }
 """Piece name -> factory (keyword arguments only), the held-out families included; registered in ``levels.SAMPLES``."""
