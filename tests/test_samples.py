@@ -103,6 +103,7 @@ def test_registry_names_and_load():
         "sloped_corridor",
         "roofed_corridor",
         "twin_doors",
+        "stair_exit",
         "corner_corridor",
         "t_junction",
         "bridge",

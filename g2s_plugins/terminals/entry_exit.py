@@ -621,6 +621,24 @@ def _split_at_piers(kept: list[_Edge], ways: _Ways, caster: RayCaster, s: _Setti
     return out
 
 
+def _onto_grazed_step(points: np.ndarray, out: np.ndarray, caster: RayCaster, s: _Settings) -> np.ndarray:
+    """(n,3) ``points`` (on edges) raised onto a step top just inside them that lies higher by more than half the rays' height.
+
+    The edge search's rays stand ``lift`` above the sample; a step exactly that high (a stair's
+    0.2 m riser for the map-piece agent) lies in their plane, so they pass over its top unseen and
+    the floor's end beyond it is found at the sample's height, a riser below the real edge, where
+    the extension's candidates then stand in the step's top face. Probed straight down from the
+    climb above, half a search step inside the edge.
+    """
+    inset = _INSET_STEPS * s.delta
+    hit = caster.first_hits(points - out * inset + UP * s.climb, np.broadcast_to(-UP, points.shape).copy())
+    rise = s.climb - hit.distance
+    step = np.isfinite(hit.distance) & (rise > 0.5 * s.lift) & _walkable(caster, hit.face, s)
+    raised = points.copy()
+    raised[step, 1] += rise[step]
+    return raised
+
+
 def _extend(kept: list[_Edge], caster: RayCaster, s: _Settings) -> tuple[np.ndarray, np.ndarray]:
     """The ends of each opening, extended along its edge (one batched pass per test): (n,3) and (n,3).
 
@@ -633,10 +651,10 @@ def _extend(kept: list[_Edge], caster: RayCaster, s: _Settings) -> tuple[np.ndar
     n = len(kept)
     out = np.array([e.outward for e in kept])
     nrm = np.array([e.normal for e in kept])
-    first = np.array([e.first for e in kept])
-    last = np.array([e.last for e in kept])
-    along = _unit(np.cross(nrm, out))  # walking direction along the edge (interior on the left)
     inset = _INSET_STEPS * s.delta  # candidates stand this far inside the edge line
+    first = _onto_grazed_step(np.array([e.first for e in kept]), out, caster, s)
+    last = _onto_grazed_step(np.array([e.last for e in kept]), out, caster, s)
+    along = _unit(np.cross(nrm, out))  # walking direction along the edge (interior on the left)
     n_ext = max(1, int(math.ceil((2.0 * s.radius + s.step) / s.delta)))
     steps = s.delta * np.arange(1, n_ext + 1)
     ends = np.stack([first, last])  # (2, n, 3)
