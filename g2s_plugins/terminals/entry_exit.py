@@ -42,7 +42,11 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
    boundary's direction within ``match_angle_deg`` (a curved edge); a
    segment that fits neither is fitted again without the samples at its ends
    whose way out lies more than ``max_turn_deg`` from its median one (a
-   segment that walked round a corner onto the edge). The
+   segment that walked round a corner onto the edge). An edge is cut where
+   something stands on it between two free stretches (a pier between two
+   doorways the samples saw out through alike), and its ends are raised onto
+   a step top just inside them (a riser as high as the rays, which they pass
+   over). The
    opening lies on that line; its ends are extended along the edge while the
    surface goes on inside the edge, ends just outside it, and nothing stands
    in the way or straight out: this undoes the retreat from walls. An
