@@ -206,8 +206,8 @@ def _run(args: argparse.Namespace, errors: Console, mesh_name: str | None = None
             spinner.update(message)
         result = api.execute(plan, registry, mesh, progress=say, config_files=config_files)
         written = api.write_result(result, args.outdir, formats, force=args.force, progress=say, registry=registry)
-    if args.json:
-        print(json.dumps(_summary(result, args.outdir, formats, written), indent=1, sort_keys=True))
+    if args.json:  # through rich as all other output, so that a reader that leaves early (`| head`) ends it as quietly
+        Console().out(json.dumps(_summary(result, args.outdir, formats, written), indent=1, sort_keys=True), highlight=False)
         return 0
     if mesh.cleaning and not quiet:  # after the run, so that an error stays the one line on stderr
         counts = ", ".join(f"{count} {what.replace('_', ' ')}" for what, count in mesh.cleaning.items())

@@ -123,6 +123,16 @@ def test_json_summary_is_the_only_stdout(tmp_path):
     assert [s["stage"] for s in summary["stages"]] == ["graph"]
 
 
+def test_a_reader_that_closes_stdout_early_is_no_internal_error(tmp_path):
+    """`g2s run ... --json | head -c 100`: the results are written; stdout's reader left (exit 1, nothing on stderr,
+    as rich ends the other commands' output) and g2s does not call it its own bug."""
+    run = subprocess.Popen([*G2S, "run", "configs/graph_only.yaml", "sample:straight_corridor", "-o", str(tmp_path / "o"),
+                            "--json"], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=PROJECT)
+    run.stdout.close()
+    assert (run.stderr.read(), run.wait()) == ("", 1)
+    assert (tmp_path / "o" / "graph.json").is_file()
+
+
 def test_real_level_graph(tmp_path, shared_data):
     config = tmp_path / "recast_demo.yaml"
     config.write_text("extends: graph_only\nagent: {radius: 0.6, height: 2.0, max_climb: 0.9, max_slope: 45}\n"
