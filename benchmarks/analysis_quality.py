@@ -2,7 +2,8 @@
 
 Run: ``.venv/bin/python benchmarks/analysis_quality.py [--presets map_analysis_paper map_analysis my.yaml]
 [--levels nav_test samples dungeon_1k dungeon_20k dungeon_100k terrain_1k terrain_20k building_1k building_20k
-castle_1k castle_20k subway archipelago car_park forest stadium harbour my_level.obj]
+castle_1k castle_20k subway archipelago car_park forest stadium harbour school cathedral mine ship village market
+my_level.obj]
 [--seeds 0 1 2] [--yaws 0 30 45]``
 
 For every level and preset it runs the preset with the ``traffic`` evaluator
@@ -126,7 +127,7 @@ def main(argv: list[str] | None = None, registry: Registry | None = None) -> Non
     parser.add_argument("--levels", nargs="+", default=["nav_test", "samples", "dungeon_1k", "dungeon_20k"],
                         help="nav_test, samples, a sample name, dungeon_1k, dungeon_20k, dungeon_100k, "
                              "terrain_1k, terrain_20k, building_1k, building_20k, castle_1k, castle_20k, a kind of benchmarks/level_kinds.py "
-                             "(subway, archipelago, car_park, forest, stadium, harbour), or a mesh file (Y-up, metres)")
+                             f"({', '.join(KINDS)}), or a mesh file (Y-up, metres)")
     parser.add_argument("--seeds", nargs="+", type=int, default=[0], help="seeds of the generated levels")
     parser.add_argument("--yaws", nargs="+", type=float, default=[0.0],
                         help="degrees: run every level also turned by these angles about the vertical axis")

@@ -1,6 +1,6 @@
-"""Level kinds of the fifth held-out round (issue 9): generators no preset setting was made on.
+"""Level kinds of the fifth and sixth held-out rounds (issue 9): generators no preset setting was made on.
 
-Six kinds, each about 1,000 navmesh polygons with the presets' agent (radius 0.5 m, height 2 m, climb 0.4 m):
+Fifth round: six kinds, each about 1,000 navmesh polygons with the presets' agent (radius 0.5 m, height 2 m, climb 0.4 m):
 ``subway`` (platforms, track pits 1.2 m lower, stairs up to two concourses), ``archipelago`` (islands joined by
 narrow railed bridges), ``car_park`` (three storeys joined by ramps and two switchback stairwells, the top one
 an office), ``forest`` (hilly ground, 300 trunks, fallen logs), ``stadium`` (a bowl of stepped tiers, aisle
@@ -9,6 +9,15 @@ walkable decks). Y up, metres, ``numpy.random.default_rng(seed)``; every solid i
 outward faces (trimesh's convex hull), so Recast reads each top as floor. Recast also reads as floor the ground
 inside a closed solid with head room over it, so the ground stops under the stadium's stands and the harbour's
 warehouses (a first draft had walkable strips inside the stands and a floor in every warehouse).
+
+Sixth round: six more kinds, 630-970 navmesh polygons with that agent: ``school`` (two storeys of classrooms
+round a courtyard), ``cathedral`` (nave, aisles between pillars, chapels, transept, raised chancel over a crypt,
+cloister, churchyard), ``mine`` (four room-and-pillar levels joined by a switchback decline and steep stairs
+standing for ladders), ``ship`` (a cargo ship's tank top, tween deck, cabin deck, main deck and superstructure),
+``village`` (rolling ground, a river and two bridges, houses one enters) and ``market`` (a square of stalls and
+crates, streets, a hall). The same rule holds: the floor stops inside the mine's pillars, and the ship's
+engine and funnel are too low or too narrow to hold a floor. Stairs rise at most 0.18 m a step: with 0.2 m
+risers Recast's ledge filter cuts the flight at the presets' 0.4 m climb (found on a first draft of the ship).
 
 Run: ``.venv/bin/python benchmarks/level_kinds.py OUT_DIR [--kinds subway forest] [--seeds 0 1 2]`` writes
 ``OUT_DIR/<kind>_s<seed>.obj``, the files ``benchmarks/analysis_quality.py --levels`` takes (which also takes the
@@ -20,6 +29,7 @@ from __future__ import annotations
 import argparse
 import math
 from collections.abc import Callable
+from itertools import pairwise
 from pathlib import Path
 
 import numpy as np
@@ -78,6 +88,19 @@ class _Solids:
         side = np.array([-along[1], along[0]]) * width / 2
         corners = [(a - side, ya), (a + side, ya), (b - side, yb), (b + side, yb)]
         self.hull(np.array([[p[0], y - d, p[1]] for p, y in corners for d in (0.0, thickness)]))
+
+    def wall(self, a: tuple[float, float], b: tuple[float, float], y0: float, y1: float,
+             doors: list[tuple[float, float]] = (), thickness: float = 0.2) -> None:
+        """A wall along x or along z from plan point ``a`` (x, z) to ``b``, between heights y0 < y1, open over each
+        door (start, width), metres from ``a`` along the wall; ``thickness`` centred on the line."""
+        along = 0 if a[1] == b[1] else 1
+        lo, hi = sorted((a[along], b[along]))
+        cuts = [lo, *sum(([lo + start, lo + start + width] for start, width in sorted(doors)), []), hi]
+        fixed, half = a[1 - along], thickness / 2
+        for c0, c1 in zip(cuts[0::2], cuts[1::2]):
+            if c1 - c0 > 1e-6:
+                x0, x1, z0, z1 = (c0, c1, fixed - half, fixed + half) if along == 0 else (fixed - half, fixed + half, c0, c1)
+                self.box(x0, x1, y0, y1, z0, z1)
 
     def mesh(self) -> trimesh.Trimesh:
         """Every solid in one mesh, coincident vertices merged."""
@@ -450,9 +473,589 @@ def harbour(seed: int) -> trimesh.Trimesh:
     return s.mesh()
 
 
+def school(seed: int) -> trimesh.Trimesh:
+    """A two-storey school round a courtyard: a 3 m corridor rings the courtyard on both floors, classrooms 9 m
+    deep between the corridor and the outer walls, each through one door 1.6-2.0 m wide, with desks (1.2 x 0.6 m,
+    0.75 m high) in rows. Ground floor: the courtyard (planters, benches, trees) through 2.4 m openings in its
+    wall; upper floor: a 1.1 m parapet over it. Two classrooms at opposite sides hold a straight flight (0.18 /
+    0.28 m steps, 2 m wide) to the one above, railed round its opening. No roof.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    size_x, size_z, depth, corridor, storey = rng.uniform(84.0, 96.0), rng.uniform(60.0, 68.0), 9.0, 3.0, 3.6
+    inner = (depth, size_x - depth, depth, size_z - depth)  # the corridor's outer edge
+    court = (depth + corridor, size_x - depth - corridor, depth + corridor, size_z - depth - corridor)
+
+    def cuts(lo: float, hi: float, corner: float) -> list[float]:
+        """Partition positions from ``lo`` to ``hi``, rooms 7-9.5 m wide; the end rooms reach 4-6 m past ``corner``
+        (m from each end), so that they have a door on the corridor."""
+        xs = [lo, lo + corner + rng.uniform(4.0, 6.0)]
+        while xs[-1] + 9.5 < hi - corner - 4.0:
+            xs.append(xs[-1] + rng.uniform(7.0, 9.5))
+        return [*xs, hi]
+
+    # rooms: (side, c0, c1) along x for the sides at z = 0 ("south") and z = size_z ("north"), along z for the others
+    rooms = [(side, a, b) for side in ("south", "north") for a, b in pairwise(cuts(0.0, size_x, depth))]
+    rooms += [(side, a, b) for side in ("west", "east") for a, b in pairwise(cuts(depth, size_z - depth, 0.0))]
+    south = sum(side == "south" for side, _, _ in rooms)
+    stair_rooms = {1, 2 * south - 2}  # the second room from the west on the south side, from the east on the north
+    run = storey / 0.18 * 0.28
+    holes, doors = [], {side: [] for side in ("south", "north", "west", "east")}
+    for index, (side, a, b) in enumerate(rooms):
+        lo, hi = (max(a, inner[0]), min(b, inner[1])) if side in ("south", "north") else (a, b)
+        width = rng.uniform(1.6, 2.0)
+        if index in stair_rooms:  # the door beside the flight's foot
+            start = a + 0.4 if a >= inner[0] else lo + 0.3
+        else:
+            start = rng.uniform(lo + 0.3, hi - 0.3 - width)
+        doors[side].append((start, width))
+        if index in stair_rooms:
+            outward = -1.0 if side == "south" else 1.0
+            foot_z = depth - 1.4 if side == "south" else size_z - depth + 1.4
+            x0 = start + width + 0.3
+            holes.append((x0, x0 + 2.0, *sorted((foot_z, foot_z + outward * run))))
+            s.stairs(np.array([x0 + 1.0, foot_z]), np.array([0.0, outward]), 2.0, 0.0, storey, riser=0.18, tread=0.28)
+    for level in range(2):
+        y = level * storey
+        s.slab(0, size_x, 0, size_z, y, [court, *holes] if level else [])
+        top = y + storey - 0.3
+        for z in (0, size_z):
+            s.wall((0, z), (size_x, z), y, top)
+        for x in (0, size_x):
+            s.wall((x, 0), (x, size_z), y, top)
+        for side, (a, b) in {"south": ((inner[0], inner[2]), (inner[1], inner[2])),
+                             "north": ((inner[0], inner[3]), (inner[1], inner[3])),
+                             "west": ((inner[0], inner[2]), (inner[0], inner[3])),
+                             "east": ((inner[1], inner[2]), (inner[1], inner[3]))}.items():
+            origin = a[0] if side in ("south", "north") else a[1]
+            s.wall(a, b, y, top, [(start - origin, width) for start, width in doors[side]])
+        court_top = top if level == 0 else y + 1.1
+        for a, b in (((court[0], court[2]), (court[1], court[2])), ((court[0], court[3]), (court[1], court[3])),
+                     ((court[0], court[2]), (court[0], court[3])), ((court[1], court[2]), (court[1], court[3]))):
+            span = abs(b[0] - a[0]) + abs(b[1] - a[1])
+            openings = [(rng.uniform(0.2, 0.45) * span, 2.4), (rng.uniform(0.55, 0.8) * span, 2.4)] if level == 0 else []
+            s.wall(a, b, y, court_top, openings)
+        for index, (side, a, b) in enumerate(rooms):
+            if side in ("south", "north"):
+                z0, z1 = (0.0, depth) if side == "south" else (size_z - depth, size_z)
+                if b < size_x:
+                    s.wall((b, z0), (b, z1), y, top)
+                if index in stair_rooms:
+                    continue
+                for x in np.arange(a + 2.0, b - 2.0, 2.4):
+                    for z in np.arange(z0 + 2.0, z1 - 2.5, 1.9):
+                        if rng.random() < 0.75:
+                            s.box(x, x + 1.2, y, y + 0.75, z, z + 0.6)
+            else:
+                x0, x1 = (0.0, depth) if side == "west" else (size_x - depth, size_x)
+                if b < size_z - depth:
+                    s.wall((x0, b), (x1, b), y, top)
+                for z in np.arange(a + 2.0, b - 2.0, 2.4):
+                    for x in np.arange(x0 + 2.0, x1 - 2.5, 1.9):
+                        if rng.random() < 0.75:
+                            s.box(x, x + 0.6, y, y + 0.75, z, z + 1.2)
+    for x0, x1, z0, z1 in holes:  # railings round each flight's opening, open at its top end
+        for x in (x0 - 0.1, x1):
+            s.box(x, x + 0.1, storey, storey + 1.0, z0, z1)
+        foot = z0 if z0 > size_z / 2 else z1
+        s.box(x0 - 0.1, x1 + 0.1, storey, storey + 1.0, foot - 0.05, foot + 0.05)
+    for _ in range(int(rng.integers(10, 16))):  # courtyard: planters (0.5 m, not stepped on), benches, trees
+        x, z = rng.uniform(court[0] + 3, court[1] - 6), rng.uniform(court[2] + 3, court[3] - 6)
+        kind = rng.random()
+        if kind < 0.4:
+            s.box(x, x + rng.uniform(2.0, 4.0), 0.0, 0.5, z, z + rng.uniform(1.0, 3.0))
+        elif kind < 0.7:
+            s.box(x, x + 1.8, 0.0, 0.45, z, z + 0.5)
+        else:
+            angles = np.linspace(0, 2 * math.pi, 8, endpoint=False)
+            s.prism(np.array([x, z]) + 0.3 * np.stack([np.cos(angles), np.sin(angles)], 1), -0.3, 6.0)
+    return s.mesh()
+
+
+def cathedral(seed: int) -> trimesh.Trimesh:
+    """A cathedral in its churchyard. Nave 12 m wide and 55-70 m long between two arcades of octagonal pillars
+    (0.75 m in radius, bays 5-6 m), aisles 4.5 m wide, pews (0.45 m deep, 0.95 m high, 0.55 m apart: not walked
+    between) either side of a 3 m central walk; side chapels (5 x 4.5 m, a 3 m arch) off every other bay of the
+    north aisle; a crossing and transept arms 12 m wide reaching 20 m from the axis, a door at each end; a chancel
+    raised three 0.15 m steps, with choir aisles at floor level, over a crypt 4.2 m down (pillars on a 3.5 m
+    grid) that a 2 m flight (0.175 / 0.28 m steps) in each choir aisle goes down to; a half-octagon apse. A cloister
+    (4 m walks round a garth, a low arcade wall with openings) off the south aisle. The west front has a 3 m and
+    two 2 m doors onto the churchyard, which has gravestones and a boundary wall. Walls 1 m thick; no vaults.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    nave_len, choir_len = rng.uniform(55.0, 70.0), rng.uniform(16.0, 22.0)
+    cross0, cross1 = nave_len, nave_len + 12.0
+    east = cross1 + choir_len  # the chancel's east end; the apse beyond it
+    crypt = (cross1, east, -10.5, 10.5)
+    run = 4.2 / 0.175 * 0.28
+    flights = [(cross1, cross1 + run, zc - 1.0, zc + 1.0) for zc in (-9.4, 9.4)]  # along the choir aisles' outer walls
+    yard = (-35.0, east + 25.0, -55.0, 42.0)
+    s.slab(*yard, 0.0, [crypt], thickness=0.5)
+    s.box(cross1, east, -4.7, -4.2, -10.5, 10.5)  # the crypt's floor
+    s.slab(cross1, east, -6.0, 6.0, 0.45, [])  # the raised chancel over it
+    s.slab(cross1, east, -10.5, -6.0, 0.0, [flights[0]])  # choir aisles over it, open over each flight
+    s.slab(cross1, east, 6.0, 10.5, 0.0, [flights[1]])
+    s.stairs(np.array([cross1 - 0.9, 0.0]), np.array([1.0, 0.0]), 12.0, 0.0, 0.45)  # up to the chancel
+    for x0, x1, z0, z1 in flights:
+        s.stairs(np.array([x1, (z0 + z1) / 2]), np.array([-1.0, 0.0]), 2.0, -4.2, 4.2, riser=0.175, tread=0.28)
+        inner = z0 - 0.1 if z0 > 0 else z1
+        s.box(x0, x1, 0.0, 1.0, inner, inner + 0.1)
+        s.box(x1, x1 + 0.1, 0.0, 1.0, z0 - 0.1, z1 + 0.1)
+    for x in np.arange(cross1 + run + 2.0, east - 1.0, 3.5):  # the crypt's pillars
+        for z in (-7.0, -3.0, 3.0, 7.0):
+            s.box(x - 0.3, x + 0.3, -4.2, -0.3, z - 0.3, z + 0.3)
+    s.wall((cross1, -10.5), (east, -10.5), -4.2, -0.3)
+    s.wall((cross1, 10.5), (east, 10.5), -4.2, -0.3)
+    s.wall((east, -10.5), (east, 10.5), -4.2, -0.3)
+    s.wall((cross1, -10.5), (cross1, 10.5), -4.2, -0.3)
+    height = 14.0
+    angles = np.linspace(0, 2 * math.pi, 8, endpoint=False)
+    octagon = np.stack([np.cos(angles), np.sin(angles)], 1)
+    bays = np.arange(4.0, nave_len - 2.0, rng.uniform(5.0, 6.0))
+    for x in bays:
+        for z in (-6.0, 6.0):
+            s.prism(np.array([x, z]) + 0.75 * octagon, -0.5, height)
+    for x in (cross0, cross1):  # the crossing's piers
+        for z in (-6.0, 6.0):
+            s.box(x - 0.8, x + 0.8, -0.5, height, z - 0.8, z + 0.8)
+    for x in np.arange(cross1 + 5.0, east - 2.0, 5.0):  # the chancel's arcade, standing on its edge
+        for z in (-6.0, 6.0):
+            s.prism(np.array([x, z]) + 0.6 * octagon, 0.0, height)
+    west_doors = [(2.75 - 1.0, 2.0), (11.0 - 1.5, 3.0), (19.25 - 1.0, 2.0)]  # from z = -11: south aisle, nave, north aisle
+    s.wall((0.0, -11.0), (0.0, 11.0), -0.5, height, west_doors, thickness=1.0)
+    chapels = bays[1::2][:-1] + 0.5 * (bays[1] - bays[0])
+    s.wall((0.0, 11.0), (cross0, 11.0), -0.5, height, [(x - 1.5, 3.0) for x in chapels], thickness=1.0)
+    cloister = (6.0, 6.0 + rng.uniform(24.0, 30.0), -11.0 - rng.uniform(24.0, 30.0), -11.0)
+    cloister_door = rng.uniform(cloister[0] + 5.0, cloister[1] - 8.0)
+    s.wall((0.0, -11.0), (cross0, -11.0), -0.5, height, [(cloister_door, 2.0)], thickness=1.0)
+    for x in chapels:
+        s.wall((x - 2.5, 11.0), (x - 2.5, 15.5), -0.5, 6.0, thickness=0.6)
+        s.wall((x + 2.5, 11.0), (x + 2.5, 15.5), -0.5, 6.0, thickness=0.6)
+        s.wall((x - 2.5, 15.5), (x + 2.5, 15.5), -0.5, 6.0, thickness=0.6)
+        s.box(x - 0.9, x + 0.9, 0.0, 1.0, 14.2, 14.9)  # the chapel's altar
+    for sign in (-1.0, 1.0):  # transept arms
+        s.wall((cross0, sign * 11.0), (cross0, sign * 20.0), -0.5, height, thickness=1.0)
+        s.wall((cross1, sign * 11.0), (cross1, sign * 20.0), -0.5, height, thickness=1.0)
+        s.wall((cross0, sign * 20.0), (cross1, sign * 20.0), -0.5, height, [(rng.uniform(3.0, 6.5), 2.5)], thickness=1.0)
+        s.wall((cross1, sign * 11.0), (east, sign * 11.0), -0.5, height, thickness=1.0)
+        s.wall((east, sign * 6.0), (east, sign * 11.0), -0.5, height, thickness=1.0)
+    apse = np.array([[east + 6.0 * math.sin(a), 6.0 * math.cos(a)] for a in np.linspace(0, math.pi, 5)])
+    s.prism(np.concatenate([apse, [[east, -6.0], [east, 6.0]]]), -0.5, 0.45)
+    for a, b in zip(apse[:-1], apse[1:]):
+        s.ramp(a, b, 1.0, height, height, thickness=height + 0.5)
+    s.box(east + 1.0, east + 3.0, 0.45, 1.5, -1.0, 1.0)  # the high altar
+    for x in np.arange(cross1 + 1.0, east - 1.0, 0.9):  # choir stalls along the chancel's sides
+        for z in (-5.2, 4.6):
+            s.box(x, x + 0.6, 0.45, 1.4, z, z + 0.6)
+    for x in np.arange(6.0, cross0 - 4.0, 1.0):  # pews either side of the central walk
+        for z0, z1 in ((-5.0, -1.5), (1.5, 5.0)):
+            s.box(x, x + 0.45, 0.0, 0.95, z0, z1)
+    x0, x1, z0, z1 = cloister  # the cloister: outer walls, a garth inside an arcade wall with openings
+    s.wall((x0, z0), (x1, z0), -0.5, 6.0, thickness=0.6)
+    s.wall((x0, z0), (x0, z1), -0.5, 6.0, [(rng.uniform(3.0, z1 - z0 - 5.0), 2.0)], thickness=0.6)
+    s.wall((x1, z0), (x1, z1), -0.5, 6.0, thickness=0.6)
+    g0, g1, h0, h1 = x0 + 4.3, x1 - 4.3, z0 + 4.3, z1 - 4.3
+    for a, b in (((g0, h0), (g1, h0)), ((g0, h1), (g1, h1)), ((g0, h0), (g0, h1)), ((g1, h0), (g1, h1))):
+        span = abs(b[0] - a[0]) + abs(b[1] - a[1])
+        s.wall(a, b, 0.0, 0.8, [(span / 2 - 1.0, 2.0)], thickness=0.4)
+    s.prism(np.array([(g0 + g1) / 2, (h0 + h1) / 2]) + 1.2 * octagon, -0.5, 0.7)  # a well in the garth
+    footprint = [(-1.0, east + 7.0, -12.0, 12.0), (cross0 - 1.0, cross1 + 1.0, -21.0, 21.0), (0.0, cross0, 10.0, 16.5),
+                 (x0 - 1.0, x1 + 1.0, z0 - 1.0, z1)]
+    stones = 0
+    while stones < 160:  # gravestones in the churchyard, clear of the buildings and the west front
+        x, z = rng.uniform(yard[0] + 2.0, yard[1] - 2.0), rng.uniform(yard[2] + 2.0, yard[3] - 2.0)
+        if any(a - 2.0 < x < b + 2.0 and c - 2.0 < z < d + 2.0 for a, b, c, d in footprint) or (x < 0 and abs(z) < 13.0):
+            continue
+        s.box(x, x + 0.8, 0.0, 0.9, z, z + 0.25)
+        stones += 1
+    for a, b in (((yard[0], yard[2]), (yard[1], yard[2])), ((yard[0], yard[3]), (yard[1], yard[3])),
+                 ((yard[0], yard[2]), (yard[0], yard[3])), ((yard[1], yard[2]), (yard[1], yard[3]))):
+        s.wall(a, b, 0.0, 1.5, thickness=0.5)
+    return s.mesh()
+
+
+def mine(seed: int) -> trimesh.Trimesh:
+    """A room-and-pillar mine of four levels 10 m apart (y = 0 to -30), each a 76 x 56 m floor left between
+    irregular rock pillars (convex heptagons 2.2-3.8 m in radius on a 10 m grid, 3.5 m straight, then tapering to
+    the rock over the level), so that its drifts are 2.4-5.6 m wide,
+    with a cavern where two pillars were taken out (boulders on its floor) and rock walls 3.5 m high round it.
+    The levels are joined on the east by a decline (two 3.5 m legs at 11 degrees a level, a landing between
+    them, a rock wall between the legs) and on the west by ladders modelled as steep stairs, 1.4 m wide, from a
+    bay of the level below up to the level above: 0.18 m risers on 0.25 m treads (36 degrees), the steepest
+    Recast's ledge filter lets the presets' agent (0.4 m climb) walk; 0.3 m risers, a true ladder's, are cut.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    levels, gap, size_x, size_z = 4, 10.0, 70.0, 50.0
+    lo_x, hi_x, lo_z, hi_z = -3.0, size_x + 3.0, -3.0, size_z + 3.0
+    leg = 0.5 * gap / math.tan(math.radians(11.0))
+    ladder_z = [18.0 + 8.0 * k for k in range(levels - 1)]
+    angles = np.linspace(0, 2 * math.pi, 7, endpoint=False)
+    for k in range(levels):
+        y = -gap * k
+        cavern = (int(rng.integers(1, 5)), int(rng.integers(1, 4)))
+        for i, (x0, x1) in enumerate(pairwise([lo_x, *np.arange(10.0, size_x - 1.0, 10.0), hi_x])):
+            for j, (z0, z1) in enumerate(pairwise([lo_z, *np.arange(10.0, size_z - 1.0, 10.0), hi_z])):
+                if (i, j) in (cavern, (cavern[0] + 1, cavern[1])):
+                    s.box(x0, x1, y - 0.5, y, z0, z1)
+                    continue
+                radius = rng.uniform(2.6, 3.8) * rng.uniform(0.85, 1.0, size=7)
+                turn = rng.uniform(0, 2 * math.pi)
+                centre = np.array([5.0 + 10.0 * i, 5.0 + 10.0 * j])
+                plan = centre + radius[:, None] * np.stack([np.cos(angles + turn), np.sin(angles + turn)], 1)
+                s.hull(np.concatenate([np.insert(plan, 1, y - 0.5, axis=1), np.insert(plan, 1, y + 3.5, axis=1),
+                                       [[centre[0], y + gap - 0.5, centre[1]]]]))  # tapering up to the rock above
+                # the cell's floor stops at a square inside the pillar: Recast would find floor inside it
+                core = 0.6 * radius.min()
+                s.slab(x0, x1, z0, z1, y, [(centre[0] - core, centre[0] + core, centre[1] - core, centre[1] + core)],
+                       thickness=0.5)
+        for _ in range(int(rng.integers(3, 6))):  # boulders in the cavern
+            p = np.array([10.0 + 10.0 * cavern[0], 5.0 + 10.0 * cavern[1]]) + rng.uniform(-6.0, 6.0, size=2) * [1.0, 0.4]
+            size = rng.uniform(0.8, 1.6)
+            s.hull(np.concatenate([p + rng.normal(0, size / 2, size=(8, 2)), rng.uniform(y - 0.2, y + size, (8, 1))],
+                                  axis=1)[:, [0, 2, 1]])
+        west = [(ladder_z[k] - 1.0 - lo_z, 2.0)] if k < levels - 1 else []  # the ladder's top
+        if k > 0:
+            west.append((ladder_z[k - 1] + 0.7 - lo_z, 2.5))  # the bay the ladder below starts from
+        s.wall((lo_x, lo_z), (lo_x, hi_z), y, y + 3.5, west, thickness=0.6)
+        s.wall((hi_x, lo_z), (hi_x, hi_z), y, y + 3.5, [(3.0 - lo_z, 5.0)], thickness=0.6)
+        s.wall((lo_x, lo_z), (hi_x, lo_z), y, y + 3.5, thickness=0.6)
+        s.wall((lo_x, hi_z), (hi_x, hi_z), y, y + 3.5, thickness=0.6)
+        s.box(hi_x, hi_x + 9.0, y - 0.5, y, 3.0, 8.0)  # the decline's platform at this level
+        if k < levels - 1:  # the decline down to the next level: out along +z, back along -z
+            z1 = 8.0 + leg
+            s.ramp(np.array([hi_x + 2.25, 8.0]), np.array([hi_x + 2.25, z1]), 3.5, y, y - gap / 2)
+            s.box(hi_x + 0.5, hi_x + 8.5, y - gap / 2 - 0.5, y - gap / 2, z1, z1 + 4.0)
+            s.ramp(np.array([hi_x + 6.75, z1]), np.array([hi_x + 6.75, 8.0]), 3.5, y - gap / 2, y - gap)
+            s.hull(np.array([[hi_x + 4.0 + dx, yy, z] for dx in (0.0, 1.0)
+                             for z, yy in ((8.0, y + 1.0), (8.0, y - gap - 0.3), (z1, y - gap / 2 + 1.0), (z1, y - gap / 2 - 0.3))]))
+            rise, tread = gap / 56, 0.25  # the ladder from the bay of level k + 1 up to level k's west edge
+            run = gap / rise * tread
+            s.stairs(np.array([lo_x - run, ladder_z[k]]), np.array([1.0, 0.0]), 1.4, y - gap, gap, riser=rise, tread=tread)
+            s.box(lo_x - run - 2.0, lo_x - run, y - gap - 0.5, y - gap, ladder_z[k] - 0.7, ladder_z[k] + 0.7)
+            s.box(lo_x - run - 2.0, lo_x, y - gap - 0.5, y - gap, ladder_z[k] + 0.7, ladder_z[k] + 3.2)
+    return s.mesh()
+
+
+def ship(seed: int) -> trimesh.Trimesh:
+    """A cargo ship 150-165 m long (and a 16 m bow) and 20-24 m in beam, bow toward +x. Tank top (y = 0): an
+    engine room aft (main engine, generators) and, forward of a bulkhead with a 1.8 m door at both levels, a
+    hold with cargo (boxes 1-2.6 m high) and two rows of stanchions under a tween deck (3.2 m, cargo too) open
+    under every hatch. Deck 2 (3.2 m) over the engine room: a 2 m corridor between cabins (about 4 m wide, the
+    last two 8 m; doors 1.6-1.8 m, a bunk each). Main deck (6.4 m): open, 1.1 m bulwarks, hatch covers 1.2 m
+    high with steps up, cranes and bollards, and a superstructure aft (walls, two 1.8 m doors, a mess with
+    tables) under a boat deck (9.6 m; lifeboats, funnel) and a bridge deck (12.8 m) with wings. Companionways
+    (0.16 / 0.25 m steps, 2 m wide; 0.2 m risers are cut by Recast's ledge filter at the presets' 0.4 m climb)
+    join tank top and deck 2 and deck 2 and the main deck through cabins, the hold's tank top, tween deck and
+    main deck, and, outside the superstructure's front, the main deck and the boat deck (two) and the boat and
+    bridge decks; every opening is railed.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    length, half = rng.uniform(150.0, 165.0), rng.uniform(10.0, 12.0)
+    bow, aft, house, rise = 16.0, 0.35 * length, 20.0, 3.2  # deck 2 ends at x = aft, the superstructure at house
+    riser, tread = 0.16, 0.25
+    run = rise / riser * tread
+    s.box(0.0, length, -0.5, 0.0, -half, half)  # tank top
+    for z in (-half - 0.3, half):  # shell and bulwarks
+        s.box(-0.3, length, -0.5, 7.5, z, z + 0.3)
+    s.box(-0.3, 0.0, -0.5, 7.5, -half, half)
+    for sign in (-1.0, 1.0):
+        s.ramp(np.array([length, sign * (half + 0.15)]), np.array([length + bow, 0.0]), 0.3, 7.5, 7.5, thickness=8.0)
+    cabin_edges = [*np.arange(0.0, aft - 20.0, 4.0), aft - 16.0, aft - 8.0, aft]
+    hatches = [(x, x + 12.0, -half + 4.5, half - 4.5) for x in np.arange(aft + 10.0, length - 12.0, rng.uniform(16.0, 19.0))]
+    # companionways, each (x0, x1, z0, z1) of its opening, climbing along +x: tank top -> deck 2 in the last cabin on
+    # +z, deck 2 -> main deck in the one before on -z; in the hold, tank top -> tween deck near the bow and tween
+    # deck -> main deck by the bulkhead
+    lower = (aft - 7.7, aft - 7.7 + run, half - 2.6, half - 0.6)
+    upper = (aft - 13.5, aft - 13.5 + run, -half + 0.6, -half + 2.6)
+    hold_lower = (length - 5.0 - run, length - 5.0, half - 3.0, half - 1.0)
+    hold_upper = (aft + 3.0, aft + 3.0 + run, -half + 0.6, -half + 2.6)
+    s.slab(0.0, aft, -half, half, rise, [lower])
+    s.slab(aft, length, -half, half, rise, [hold_lower, *hatches])  # the tween deck, open under every hatch
+    s.slab(0.0, length, -half, half, 2 * rise, [upper, hold_upper])
+    s.prism(np.array([[length, -half], [length + bow, 0.0], [length, half]]), 2 * rise - 1.0, 2 * rise)
+    for (x0, x1, z0, z1), y0, y1 in ((lower, 0.0, rise), (upper, rise, 2 * rise), (hold_lower, 0.0, rise),
+                                     (hold_upper, rise, 2 * rise)):
+        s.stairs(np.array([x0, (z0 + z1) / 2]), np.array([1.0, 0.0]), 2.0, y0, y1 - y0, riser=riser, tread=tread)
+        for z in (z0 - 0.1, z1):  # railed on both sides and at the foot end
+            s.box(x0, x1, y1, y1 + 1.0, z, z + 0.1)
+        s.box(x0 - 0.1, x0, y1, y1 + 1.0, z0 - 0.1, z1 + 0.1)
+    s.wall((aft, -half), (aft, half), 0.0, rise - 0.3, [(half - 0.9, 1.8)], thickness=0.3)  # the bulkhead
+    s.wall((aft, -half), (aft, half), rise, 2 * rise - 0.3, [(half - 0.9, 1.8)], thickness=0.3)
+    # the main engine and generators, under 2 m: Recast reads the floor inside a solid with head room as floor
+    s.box(aft * 0.3, aft * 0.3 + 12.0, 0.0, 1.9, -2.0, 2.0)
+    for x in (aft * 0.3 + 2.0, aft * 0.3 + 8.0):
+        for z in (-half + 1.5, half - 3.5):
+            s.box(x, x + 3.5, 0.0, 1.8, z, z + 2.0)
+    for x in np.arange(aft + 2.0, length - 2.0, 5.0):  # the hold's stanchions on both levels, beside the openings
+        for z in (-half + 3.6, half - 4.0):
+            if not any(a - 0.5 < x < b + 0.5 and c - 0.5 < z < d + 0.5 for a, b, c, d in (hold_lower, hold_upper)):
+                s.box(x, x + 0.4, 0.0, 2 * rise - 0.3, z, z + 0.4)
+    for level in (0.0, rise):  # cargo in the hold and on the tween deck, clear of its openings
+        placed = 0
+        while placed < 70:
+            x, z = rng.uniform(aft + 8.0, length - 8.0 - run), rng.uniform(-half + 1.0, half - 3.0)
+            w, d = rng.uniform(1.5, 6.0), rng.uniform(1.5, 2.4)
+            if level and any(x < b + 1.0 and a - 1.0 < x + w and z < d_ + 1.0 and c - 1.0 < z + d for a, b, c, d_ in hatches):
+                continue
+            s.box(x, x + w, level, level + rng.uniform(1.0, min(2.6, rise - 0.5)), z, z + d)
+            placed += 1
+    for sign in (-1.0, 1.0):  # deck 2: the corridor's walls with a door into each cabin, partitions, bunks
+        doors = [(a + rng.uniform(0.3, b - a - 2.1), rng.uniform(1.6, 1.8)) for a, b in pairwise(cabin_edges)]
+        s.wall((0.0, sign * 1.1), (aft, sign * 1.1), rise, 2 * rise - 0.3, doors)
+        for x in cabin_edges[1:-1]:
+            s.wall((x, sign * 1.1), (x, sign * half), rise, 2 * rise - 0.3)
+        for a, b in pairwise(cabin_edges[:-2]):
+            s.box(a + 0.3, a + 2.3, rise, rise + 0.6, *sorted((sign * (half - 0.2), sign * (half - 1.1))))
+    y = 2 * rise  # the superstructure on the main deck, a mess inside, the boat deck on it
+    x0, x1, z0, z1 = 2.0, house, -half + 2.0, half - 2.0
+    for a, b in (((x0, z0), (x1, z0)), ((x0, z1), (x1, z1)), ((x0, z0), (x0, z1))):
+        s.wall(a, b, y, y + rise - 0.3)
+    s.wall((x1, z0), (x1, z1), y, y + rise - 0.3, [(2.6, 1.8), (z1 - z0 - 4.4, 1.8)])
+    for x in (x0 + 4.0, x0 + 9.0):
+        s.box(x, x + 2.5, y, y + 0.75, -1.5, 1.5)
+    s.slab(x0, x1, z0, z1, 3 * rise, [])
+    for a, b in (((x0, z0), (x1, z0)), ((x0, z1), (x1, z1)), ((x0, z0), (x0, z1))):
+        s.wall(a, b, 3 * rise, 3 * rise + 1.0, thickness=0.1)
+    s.wall((x1, z0), (x1, z1), 3 * rise, 3 * rise + 1.0, [(0.2, 2.2), (z1 - z0 - 2.4, 2.2)], thickness=0.1)
+    for zc in (z0 + 1.3, z1 - 1.3):  # up from the main deck outside its front, to its front corners
+        s.stairs(np.array([x1 + run, zc]), np.array([-1.0, 0.0]), 2.0, y, rise, riser=riser, tread=tread)
+    s.box(x0 + 3.0, x0 + 5.5, 3 * rise, 5 * rise, -1.0, 1.0)  # the funnel, through the bridge deck, too narrow to
+    # leave the decks inside it a floor
+    for zc in (z0 + 1.5, z1 - 3.0):
+        s.box(x0 + 8.0, x0 + 14.0, 3 * rise, 3 * rise + 1.5, zc, zc + 1.5)  # lifeboats
+    bridge = x1 - 2.5 - run  # the bridge deck and its wings, a stair up from the boat deck
+    s.slab(x0, bridge, -half, half, 4 * rise, [])
+    s.stairs(np.array([x1 - 2.5, 0.0]), np.array([-1.0, 0.0]), 2.0, 3 * rise, rise, riser=riser, tread=tread)
+    s.box(x0 + 6.5, x0 + 8.5, 4 * rise, 4 * rise + 1.0, -3.0, 3.0)  # the console
+    for a, b in (((x0, -half), (bridge, -half)), ((x0, half), (bridge, half)), ((x0, -half), (x0, half))):
+        s.wall(a, b, 4 * rise, 4 * rise + 1.0, thickness=0.1)
+    s.wall((bridge, -half), (bridge, half), 4 * rise, 4 * rise + 1.0, [(half - 1.1, 2.2)], thickness=0.1)
+    for x0, x1, z0, z1 in hatches:  # hatch covers with steps up, a crane beside each
+        s.box(x0, x1, y, y + 1.2, z0, z1)
+        s.stairs(np.array([x0 + 6.0, z0 - 8 * 0.3]), np.array([0.0, 1.0]), 2.0, y, 1.2, riser=0.15, tread=0.3)
+        s.box(x1 + 1.5, x1 + 2.5, y, y + 9.0, -0.5, 0.5)
+    for x in np.arange(aft + 10.0, length - 2.0, 9.0):
+        for z in (-half + 0.6, half - 1.0):
+            if rng.random() < 0.6:
+                s.box(x, x + 0.4, y, y + 0.6, z, z + 0.4)  # bollards
+    return s.mesh()
+
+
+def village(seed: int) -> trimesh.Trimesh:
+    """An open-world village on rolling ground 180 m square (a 2.5 m grid, heights within about 2.4 m of the mean)
+    cut by a river 11-13 m wide (no water surface: the ground stops at its banks) that two bridges cross, a cart
+    bridge 3.5 m wide and a footbridge 2 m wide, both railed over the water. 26-32 houses (7-11 x 6-8 m, walls
+    0.25 m, one door 1.6-1.9 m, a 1.6 m opening in the partition of the larger ones, empty (a first draft's
+    table stood in front of some doors), a 50-degree gable roof no one stands on), each on a floor 0.15 m over the highest ground under it, with steps
+    up to its door where the ground is lower; 90 trees and three fences of posts.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    size, step = 180.0, 2.5
+    grid = np.arange(0.0, size + step / 2, step)
+    waves = rng.normal(size=(5, 4))
+    river_x, bend, phase = rng.uniform(0.4, 0.6) * size, rng.uniform(8.0, 14.0), rng.uniform(0, 2 * math.pi)
+    river_half = rng.uniform(5.5, 6.5)
+
+    def height(x: np.ndarray, z: np.ndarray) -> np.ndarray:
+        return sum(0.5 * np.sin(x * (0.02 + 0.02 * abs(w[0])) + w[1] * 3) * np.cos(z * (0.02 + 0.02 * abs(w[2])) + w[3] * 3)
+                   for w in waves)
+
+    def river(z: np.ndarray) -> np.ndarray:
+        """The river's centre line, x at ``z``."""
+        return river_x + bend * np.sin(z * 0.04 + phase)
+
+    gx, gz = np.meshgrid(grid, grid, indexing="ij")
+    n = len(grid)
+    vertices = np.stack([gx.ravel(), height(gx, gz).ravel(), gz.ravel()], axis=1)
+    index = np.arange(n * n).reshape(n, n)
+    a, b, c, d = index[:-1, :-1].ravel(), index[1:, :-1].ravel(), index[1:, 1:].ravel(), index[:-1, 1:].ravel()
+    faces = np.concatenate([np.stack([a, c, b], 1), np.stack([a, d, c], 1)])
+    centre = vertices[faces].mean(axis=1)
+    faces = faces[np.abs(centre[:, 0] - river(centre[:, 2])) > river_half]  # no ground in the river
+    ground = trimesh.Trimesh(vertices, faces, process=False)
+    skirt = ground.copy()
+    skirt.vertices[:, 1] -= 0.5
+    skirt.invert()
+    s.parts += [ground, skirt]
+    for z, width in ((rng.uniform(0.2, 0.4) * size, 3.5), (rng.uniform(0.6, 0.8) * size, 2.0)):
+        xc = float(river(np.array(z)))
+        ends = [np.array([xc - river_half - 4.0, z]), np.array([xc + river_half + 4.0, z])]
+        ys = [float(height(np.array(p[0]), np.array(p[1]))) + 0.05 for p in ends]
+        s.ramp(ends[0], ends[1], width, ys[0], ys[1], thickness=1.0)
+        for sign in (-1.0, 1.0):  # railings over the water, open at the ends
+            t0 = 3.0 / (2.0 * (river_half + 4.0))  # 1 m inland of each bank
+            t1 = 1.0 - t0
+            a_, b_ = ends[0] + t0 * (ends[1] - ends[0]), ends[0] + t1 * (ends[1] - ends[0])
+            side = np.array([0.0, sign * (width / 2 - 0.05)])
+            s.ramp(a_ + side, b_ + side, 0.1, ys[0] + t0 * (ys[1] - ys[0]) + 1.0, ys[0] + t1 * (ys[1] - ys[0]) + 1.0,
+                   thickness=1.0)
+    taken: list[tuple[float, float, float, float]] = []
+    angles = np.linspace(0, 2 * math.pi, 8, endpoint=False)
+    ring = np.stack([np.cos(angles), np.sin(angles)], 1)
+    houses = int(rng.integers(26, 33))
+    while len(taken) < houses:
+        w, d = rng.uniform(7.0, 11.0), rng.uniform(6.0, 8.0)
+        x0, z0 = rng.uniform(8.0, size - 8.0 - w), rng.uniform(8.0, size - 8.0 - d)
+        x1, z1 = x0 + w, z0 + d
+        zs = np.linspace(z0, z1, 5)
+        if np.any(np.abs(river(zs)[:, None] - np.array([x0, x1])[None]) < river_half + 6.0) or \
+                np.any((river(zs) > x0) & (river(zs) < x1)):
+            continue
+        if any(x0 < b + 5.0 and a < x1 + 5.0 and z0 < d_ + 5.0 and c < z1 + 5.0 for a, b, c, d_ in taken):
+            continue
+        taken.append((x0, x1, z0, z1))
+        px, pz = np.meshgrid(np.linspace(x0 - 1.0, x1 + 1.0, 7), np.linspace(z0 - 1.0, z1 + 1.0, 7))
+        under = height(px, pz)
+        floor = float(under.max()) + 0.15
+        s.box(x0, x1, float(under.min()) - 0.5, floor, z0, z1)
+        top = floor + 2.8
+        door_side = int(rng.integers(4))
+        door_w = rng.uniform(1.6, 1.9)
+        walls = [((x0, z0), (x1, z0)), ((x0, z1), (x1, z1)), ((x0, z0), (x0, z1)), ((x1, z0), (x1, z1))]
+        for k, (a_, b_) in enumerate(walls):
+            span = abs(b_[0] - a_[0]) + abs(b_[1] - a_[1])
+            # clear of the partition of a larger house (at the middle of the long walls)
+            start = rng.uniform(1.0, (span / 2 if w > 9.0 and k < 2 else span) - 1.0 - door_w)
+            s.wall(a_, b_, floor, top, [(start, door_w)] if k == door_side else [], thickness=0.25)
+            if k == door_side:  # steps from the ground outside up to the door
+                along = 0 if a_[1] == b_[1] else 1
+                mid = np.array(a_, dtype=float)
+                mid[along] += start + door_w / 2
+                outward = np.zeros(2)
+                outward[1 - along] = -1.0 if k in (0, 2) else 1.0
+                outside = mid + outward * 0.125  # the wall's outer face
+                ground_y = float(height(np.array(outside[0]), np.array(outside[1])))
+                rise = floor - ground_y
+                if rise > 0.3:
+                    count = math.ceil(rise / 0.17)
+                    s.stairs(outside + outward * count * 0.3, -outward, door_w + 0.4, ground_y, rise, riser=rise / count)
+        if w > 9.0:  # a partition with an opening
+            xm = (x0 + x1) / 2
+            s.wall((xm, z0), (xm, z1), floor, top, [(rng.uniform(1.0, d - 2.6), 1.6)], thickness=0.2)
+        ridge = (d / 2 + 0.4) * math.tan(math.radians(50.0))
+        s.hull(np.array([[x, top, z] for x in (x0 - 0.4, x1 + 0.4) for z in (z0 - 0.4, z1 + 0.4)]
+                        + [[x, top + ridge, (z0 + z1) / 2] for x in (x0 - 0.4, x1 + 0.4)]))
+    trees, placed = 90, 0
+    while placed < trees:
+        x, z = rng.uniform(3.0, size - 3.0, size=2)
+        if abs(x - float(river(np.array(z)))) < river_half + 1.5 or \
+                any(a - 2.0 < x < b + 2.0 and c - 2.0 < z < d_ + 2.0 for a, b, c, d_ in taken):
+            continue
+        y = float(height(np.array(x), np.array(z)))
+        s.prism(np.array([x, z]) + rng.uniform(0.25, 0.5) * ring, y - 1.0, y + 8.0)
+        placed += 1
+    for _ in range(3):  # fences: rows of posts 0.9 m apart (a fence, not walked through), 8-20 m long
+        x, z = rng.uniform(10.0, size - 30.0, size=2)
+        heading = np.array([1.0, 0.0]) if rng.random() < 0.5 else np.array([0.0, 1.0])
+        for t in np.arange(0.0, rng.uniform(8.0, 20.0), 0.9):
+            p = np.array([x, z]) + t * heading
+            if abs(p[0] - float(river(np.array(p[1])))) < river_half + 1.0 or \
+                    any(a - 1.0 < p[0] < b + 1.0 and c - 1.0 < p[1] < d_ + 1.0 for a, b, c, d_ in taken):
+                continue
+            y = float(height(np.array(p[0]), np.array(p[1])))
+            s.box(p[0] - 0.08, p[0] + 0.08, y - 0.5, y + 1.1, p[1] - 0.08, p[1] + 0.08)
+    return s.mesh()
+
+
+def market(seed: int) -> trimesh.Trimesh:
+    """A town's market square 84-96 x 60-70 m, closed by house fronts 9 m high, five streets 5-7 m wide leading
+    out 20-30 m to the map's edge. Rows of stalls 6-7 m apart fill the square (counters 2-3 x 1 m, 0.9 m high,
+    0.5-1.5 m apart; half of them under a canvas awning 2.3-2.6 m up on four posts, sloping 20 degrees, whose top
+    no one reaches), crates stacked behind the counters and 30 loose about the square; a fountain (an octagonal
+    basin 0.7 m high, 3.5 m in radius); a market hall in one corner (pillars on a 4 m grid under a 50-degree
+    roof); a stage 1 m high with steps; carts in the streets.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    size_x, size_z = rng.uniform(84.0, 96.0), rng.uniform(60.0, 70.0)
+    angles = np.linspace(0, 2 * math.pi, 8, endpoint=False)
+    ring = np.stack([np.cos(angles), np.sin(angles)], 1)
+    # streets: (side, offset of its near edge along that side, width, length)
+    streets = [("south", rng.uniform(8.0, 0.4 * size_x), rng.uniform(5.0, 7.0), rng.uniform(20.0, 30.0)),
+               ("south", rng.uniform(0.55 * size_x, size_x - 15.0), rng.uniform(5.0, 7.0), rng.uniform(20.0, 30.0)),
+               ("north", rng.uniform(0.3 * size_x, 0.6 * size_x), rng.uniform(5.0, 7.0), rng.uniform(20.0, 30.0)),
+               ("west", rng.uniform(8.0, size_z - 15.0), rng.uniform(5.0, 7.0), rng.uniform(20.0, 30.0)),
+               ("east", rng.uniform(8.0, size_z - 15.0), rng.uniform(5.0, 7.0), rng.uniform(20.0, 30.0))]
+    s.box(0.0, size_x, -0.5, 0.0, 0.0, size_z)
+    sides = {"south": ((0.0, 0.0), (size_x, 0.0)), "north": ((0.0, size_z), (size_x, size_z)),
+             "west": ((0.0, 0.0), (0.0, size_z)), "east": ((size_x, 0.0), (size_x, size_z))}
+    for side, (a, b) in sides.items():
+        s.wall(a, b, 0.0, 9.0, [(start, width) for name, start, width, _ in streets if name == side], thickness=1.0)
+    for side, start, width, length in streets:  # each street: paving, house fronts both sides, a cart
+        if side in ("south", "north"):
+            z0, z1 = (-length, 0.0) if side == "south" else (size_z, size_z + length)
+            s.box(start, start + width, -0.5, 0.0, z0, z1)
+            for x in (start, start + width):
+                s.wall((x, z0), (x, z1), 0.0, 9.0, thickness=1.0)
+            cz = rng.uniform(z0 + 4.0, z1 - 6.0)
+            s.box(start + 0.8, start + 2.4, 0.0, 1.3, cz, cz + 3.0)
+        else:
+            x0, x1 = (-length, 0.0) if side == "west" else (size_x, size_x + length)
+            s.box(x0, x1, -0.5, 0.0, start, start + width)
+            for z in (start, start + width):
+                s.wall((x0, z), (x1, z), 0.0, 9.0, thickness=1.0)
+            cx = rng.uniform(x0 + 4.0, x1 - 6.0)
+            s.box(cx, cx + 3.0, 0.0, 1.3, start + 0.8, start + 2.4)
+    hall = (size_x - 22.0, size_x - 0.5, size_z - 14.0, size_z - 0.5)  # the market hall in the north-east corner
+    for x in np.arange(hall[0] + 1.0, hall[1], 4.0):
+        for z in np.arange(hall[2] + 1.0, hall[3], 4.0):
+            s.box(x - 0.3, x + 0.3, 0.0, 5.0, z - 0.3, z + 0.3)
+    ridge = (hall[3] - hall[2]) / 2 * math.tan(math.radians(50.0))
+    s.hull(np.array([[x, 5.0, z] for x in hall[:2] for z in hall[2:]]
+                    + [[x, 5.0 + ridge, (hall[2] + hall[3]) / 2] for x in hall[:2]]))
+    fountain = np.array([rng.uniform(0.4, 0.5) * size_x, rng.uniform(0.4, 0.6) * size_z])
+    s.prism(fountain + 3.5 * ring, -0.5, 0.7)
+    s.prism(fountain + 0.5 * ring, 0.0, 3.0)
+    stage = (rng.uniform(3.0, 8.0), size_z - 6.5)
+    s.box(stage[0], stage[0] + 8.0, -0.5, 1.0, stage[1], stage[1] + 5.0)
+    s.stairs(np.array([stage[0] + 4.0, stage[1] - 1.8]), np.array([0.0, 1.0]), 3.0, 0.0, 1.0, riser=1.0 / 6, tread=0.3)
+    clear = [(fountain[0] - 6.0, fountain[0] + 6.0, fountain[1] - 6.0, fountain[1] + 6.0),
+             (stage[0] - 2.0, stage[0] + 10.0, stage[1] - 4.0, size_z)]
+
+    def free(x0: float, x1: float, z0: float, z1: float) -> bool:
+        return not any(x0 < b and a < x1 and z0 < d and c < z1 for a, b, c, d in clear)
+
+    def crates(x: float, z: float) -> None:
+        """A stack of one to three crates 0.6-1.2 m, each a little smaller than the one under it."""
+        y, size = 0.0, rng.uniform(0.6, 1.2)
+        for _ in range(int(rng.integers(1, 4))):
+            s.box(x, x + size, y, y + size, z, z + size)
+            y, size = y + size, size * 0.8
+
+    for z in np.arange(5.0, size_z - 8.0, rng.uniform(6.0, 7.0)):  # rows of stalls facing -z
+        x = 4.0 + rng.uniform(0.0, 2.0)
+        while x < size_x - 6.0:
+            w = rng.uniform(2.0, 3.0)
+            if free(x - 0.5, x + w + 0.5, z - 1.5, z + 2.5) and (x > hall[1] or x + w < hall[0] or z + 2.5 < hall[2]):
+                s.box(x, x + w, 0.0, 0.9, z, z + 1.0)
+                crates(x + rng.uniform(0.0, w - 1.2), z + 1.4)
+                if rng.random() < 0.5:  # the awning: four posts and a sloping canvas
+                    for px in (x, x + w - 0.1):
+                        for pz in (z - 0.6, z + 1.6):
+                            s.box(px, px + 0.1, 0.0, 2.3, pz, pz + 0.1)
+                    low = rng.uniform(2.3, 2.6)
+                    high = low + 2.4 * math.tan(math.radians(20.0))
+                    s.hull(np.array([[px, y + dy, pz] for px in (x - 0.2, x + w + 0.2)
+                                     for pz, y in ((z - 0.8, low), (z + 1.8, high)) for dy in (0.0, 0.05)]))
+            x += w + rng.uniform(0.5, 1.5)
+    placed = 0
+    while placed < 30:
+        x, z = rng.uniform(2.0, size_x - 3.0), rng.uniform(2.0, size_z - 3.0)
+        if free(x - 1.0, x + 2.0, z - 1.0, z + 2.0):
+            crates(x, z)
+            clear.append((x - 0.5, x + 1.7, z - 0.5, z + 1.7))
+            placed += 1
+    return s.mesh()
+
+
 KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
     "subway": subway, "archipelago": archipelago, "car_park": car_park,
     "forest": forest, "stadium": stadium, "harbour": harbour,
+    "school": school, "cathedral": cathedral, "mine": mine, "ship": ship, "village": village, "market": market,
 }
 """Kind name -> generator (seed -> Y-up mesh in metres)."""
 

@@ -9,6 +9,10 @@ area and each of the next :data:`COMPARED_AREAS` largest ones (a k-d tree per
 pair, O(n log n) in the nodes of those areas): the vertical step between them,
 compared with the agent's ``max_climb`` and ``height``, tells a step too high
 to climb, separate floors, or a gap or passage too narrow for the agent.
+When the closest pair is a floor above another but the two areas also meet
+on one floor (a room shut by a narrow door above a deck), the pair on one
+floor is named if it is closer with vertical offsets counted ``height /
+max_climb`` times: a designer fixes the door, not the storeys.
 """
 
 from __future__ import annotations
@@ -39,13 +43,26 @@ def area_summary(graph: nx.Graph, nodes: Sequence[int]) -> tuple[float, np.ndarr
     return total, points[int(np.argmin(np.linalg.norm(points - centre, axis=1)))]
 
 
-def closest_step(graph: nx.Graph, a: Sequence[int], b: Sequence[int]) -> tuple[float, float, np.ndarray, np.ndarray]:
-    """``(horizontal distance, vertical step, point of a, point of b)`` of the closest nodes of ``a`` and ``b`` (metres)."""
+def closest_step(graph: nx.Graph, a: Sequence[int], b: Sequence[int],
+                 climb_weight: float = 1.0) -> tuple[float, float, np.ndarray, np.ndarray]:
+    """``(horizontal distance, vertical step, point of a, point of b)`` of the closest nodes of ``a`` and ``b`` (metres),
+    vertical offsets counted ``climb_weight`` times."""
     pa, pb = _positions(graph, a), _positions(graph, b)
-    distance, index = cKDTree(pb).query(pa)
+    scale = np.array([1.0, climb_weight, 1.0])
+    distance, index = cKDTree(pb * scale).query(pa * scale)
     best = int(np.argmin(distance))
     offset = pb[index[best]] - pa[best]
     return float(np.hypot(offset[0], offset[2])), float(abs(offset[1])), pa[best], pb[index[best]]
+
+
+def closest_step_for(graph: nx.Graph, a: Sequence[int], b: Sequence[int], agent: Any) -> tuple[float, float, np.ndarray, np.ndarray]:
+    """:func:`closest_step`, or the closest pair on one floor when the plain one is a floor above another and the
+    one-floor pair is closer with vertical offsets counted ``agent.height / agent.max_climb`` times."""
+    plain = closest_step(graph, a, b)
+    if plain[1] <= float(agent.max_climb) or float(agent.max_climb) <= 0:
+        return plain
+    weighted = closest_step(graph, a, b, float(agent.height) / float(agent.max_climb))
+    return weighted if weighted[1] <= float(agent.max_climb) else plain
 
 
 def likely_cause(step: float, gap: float, agent: Any) -> str:
@@ -80,7 +97,7 @@ def disconnected_warning(graph: nx.Graph, areas: Mapping[Any, Sequence[int]], te
     if agent is None or len(summaries) < 2:
         return message
     largest = summaries[0][2]
-    gap, step, here, there = min((closest_step(graph, largest, other[2]) for other in summaries[1:1 + COMPARED_AREAS]),
+    gap, step, here, there = min((closest_step_for(graph, largest, other[2], agent) for other in summaries[1:1 + COMPARED_AREAS]),
                                  key=lambda pair: np.hypot(pair[0], pair[1]))
     return (f"{message} Likely cause: {likely_cause(step, gap, agent)}, "
             f"e.g. between ({_xyz(here)}) and ({_xyz(there)}).")

@@ -37,6 +37,20 @@ def test_the_likely_cause_follows_the_step_between_the_closest_areas(rise, cause
     assert cause in message
 
 
+def test_a_room_shut_above_a_deck_is_named_by_its_door_not_the_storeys():
+    """A car park: an office floor over a deck (joined by a ramp) and a room on the office's level, shut by a
+    narrow door 4 m from the office floor and 3.5 m above the deck. The closest nodes are the room and the
+    deck under it, but the designer's cause is the door on the office's level."""
+    graph = nx.Graph()
+    deck = slab(graph, 0.0, 0.0, 20, 0)
+    office = slab(graph, 0.0, 3.5, 10, 100)
+    graph.add_edge(deck[0], office[0])  # the ramp
+    slab(graph, 14.0, 3.5, 4, 200)
+    message = disconnected_warning(graph, areas(graph), 5, AgentConfig())
+    assert "a gap or passage too narrow for the agent (agent.radius 0.5 m), or a wall, between places about 5.0 m apart" in message
+    assert "between (9.5, 3.5, 0.5 m) and (14.5, 3.5, 0.5 m)" in message
+
+
 def test_hundreds_of_areas_give_one_short_line():
     graph = nx.Graph()
     for index in range(600):

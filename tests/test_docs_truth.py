@@ -3,7 +3,7 @@ ones g2s takes: every `g2s ...` line of a code block and every inline `g2s ...` 
 that command has, presets that exist, installed formats, stages, executors and evaluators, and `--set` keys and
 values its config accepts; every YAML block is a valid config. (Links and the files the docs name:
 tests/test_doc_links.py; the Python examples: tests/test_python_docs.py, tests/test_architecture.py,
-tests/test_batch.py.)"""
+tests/test_batch.py, and docs/outputs.md's and docs/samples.md's here.)"""
 
 from __future__ import annotations
 
@@ -186,3 +186,19 @@ def test_documented_config_snippets_are_valid(doc: Path):
         except Exception as exc:
             problems.append(f"{block.splitlines()[0]} ...: {exc}")
     assert not problems, f"{doc.name}: {problems}"
+
+
+@pytest.mark.parametrize("doc", ["outputs.md", "samples.md"])
+def test_documented_python_reading_results_and_samples_runs(doc: str, tmp_path, monkeypatch):
+    """docs/outputs.md's snippets read back a run's `out` folder (structure.json, structure.glb, structure.graphml);
+    docs/samples.md's builds and exports a sample: each block runs as written, in order, in the folder of that run."""
+    from g2s_core.cli import main
+
+    monkeypatch.chdir(tmp_path)
+    assert main(["run", "map_analysis", "sample:cross_hub", "-o", "out", "--format", "json,glb,graphml", "-q"]) == 0
+    blocks = re.findall(r"^```python\n(.*?)^```$", (PROJECT / "docs" / doc).read_text(encoding="utf-8"),
+                        flags=re.MULTILINE | re.DOTALL)
+    assert blocks
+    namespace: dict = {}
+    for index, block in enumerate(blocks):
+        exec(compile(block, f"{doc} block {index + 1}", "exec"), namespace)

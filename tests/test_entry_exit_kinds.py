@@ -258,3 +258,25 @@ def test_a_two_metre_connector_keeps_its_floor_and_both_ends() -> None:
     assert sorted(round(o.position[0]) for o in found) == [0, 2]
     for o in found:
         assert o.width == pytest.approx(2.0, abs=0.1)
+
+
+@pytest.mark.parametrize("pier, door, yaw", [(0.1, 1.6, 0.0), (0.2, 1.2, 0.0), (0.3, 1.2, 22.0)])
+def test_two_doors_side_by_side_are_two_openings(pier: float, door: float, yaw: float) -> None:
+    # Samples along the wall inside saw out through both doorways alike: one segment, one edge spanning both
+    # doors and the pier between them, whose passage was measured from its middle, inside the pier, and which
+    # was dropped (neither door found). A pier standing on an edge between two free stretches now cuts it.
+    level = pieces.twin_doors(door=door, pier=pier)
+    level = pieces.turned(level, yaw) if yaw else level
+    _assert_known(_detect(level.mesh).openings, [o.position for o in level.openings], [o.width for o in level.openings])
+
+
+@pytest.mark.parametrize("riser, yaw", [(0.2, 0.0), (0.2, 90.0), (0.15, 30.0)])
+def test_stairs_leaving_at_their_top_give_the_top_edge(riser: float, yaw: float) -> None:
+    # Risers as high as the edge search's rays (0.2 m): the rays lay in the top step's plane and passed over it,
+    # the floor's end was found a riser below the top, and the extension's candidates, standing in the top step's
+    # face, found no floor: the top edge measured 0.65 m and was dropped. Lower risers gave the top edge a riser low.
+    # The edge's ends are now raised onto a step top just inside them.
+    level = pieces.stair_exit(riser=riser)
+    level = pieces.turned(level, yaw) if yaw else level
+    found = _detect(level.mesh).openings
+    _assert_known(found, [o.position for o in level.openings], [o.width for o in level.openings])

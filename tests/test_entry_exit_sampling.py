@@ -115,3 +115,12 @@ def test_needs_a_navmesh_or_a_sampled_graph() -> None:
 
 def test_the_sampling_preset_finds_openings() -> None:
     assert CONFIG.graph.plugin == "sampling" and CONFIG.terminals.plugin == "entry_exit"
+
+
+@pytest.mark.parametrize("pier, yaw", [(0.1, 0.0), (0.3, 45.0)])
+def test_two_doors_side_by_side_on_the_sampling_route(pier: float, yaw: float) -> None:
+    # As on the navmesh route (tests/test_entry_exit_kinds.py): one edge spanned both doors and the pier.
+    level = pieces.twin_doors(pier=pier)
+    level = pieces.turned(level, yaw) if yaw else level
+    found, known, _, _ = _openings(level)
+    assert len(found) == 3 and pieces.match_openings(found, known) == (3, 3)

@@ -102,6 +102,8 @@ def test_registry_names_and_load():
         "chamfered_platform",
         "sloped_corridor",
         "roofed_corridor",
+        "twin_doors",
+        "stair_exit",
         "corner_corridor",
         "t_junction",
         "bridge",

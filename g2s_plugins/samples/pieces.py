@@ -24,6 +24,10 @@ wrong on real pieces (see docs/entry_exit.md):
   the held-out families).
 * :func:`roofed_corridor`: a corridor under a flat roof whose walkable top
   outweighs the floor it covers (found in the fourth round of piece kinds).
+* :func:`twin_doors`: two doorways side by side, a pier of wall between them
+  narrower than the agent; each is an opening (found in the fifth round).
+* :func:`stair_exit`: stairs with 0.2 m risers leaving a room at their top,
+  the piece's edge (found in the fifth round).
 
 The held-out families (:data:`HELD_OUT`) are shapes designers build that the
 rules were not measured on when they were set (docs/entry_exit.md, "Piece
@@ -413,6 +417,77 @@ def roofed_corridor(
     return b.build("roofed_corridor", openings, _meta(params, (0.0, TALL + roof), components=2))
 
 
+@validate_call
+def twin_doors(
+    width: PositiveFloat = 8.0, depth: PositiveFloat = 6.0, wall: PositiveFloat = 0.3,
+    door: PositiveFloat = 1.2, pier: PositiveFloat = 0.2,
+) -> SampleLevel:
+    """A walled room with two doorways side by side in its east wall, a ``pier`` of wall between them, and one west.
+
+    Samples along the wall inside see out through both doorways alike (the navmesh need not enter a
+    doorway barely wider than the agent, and runs in front of a pier narrower than it), so the two
+    were one edge spanning the pier, measured from its middle and dropped. Found in the fifth round
+    of piece kinds (docs/entry_exit.md). Openings: the west doorway (1.6 m) and each east one.
+
+    Args:
+        width: clear floor inside the walls along X, metres.
+        depth: clear floor inside the walls along Z, metres.
+        wall: thickness of the walls, metres.
+        door: width of each east doorway, metres.
+        pier: the wall between the east doorways, metres.
+    """
+    b = _LevelBuilder()
+    b.floors(-wall, width + wall, -wall, depth + wall, 0.0)
+    centres = (depth / 2 - (door + pier) / 2, depth / 2 + (door + pier) / 2)
+    gaps = {"W": [(depth / 2 - 0.8, depth / 2 + 0.8, 0.0, TALL)],
+            "E": [(c - door / 2, c + door / 2, 0.0, TALL) for c in centres]}
+    _walls(b, width, depth, wall, gaps)
+    openings = [_door("W", depth / 2, 1.6, width, depth, wall), *(_door("E", c, door, width, depth, wall) for c in centres)]
+    params = {"width": width, "depth": depth, "wall": wall, "door": door, "pier": pier}
+    return b.build("twin_doors", openings, _meta(params, (0.0,)))
+
+
+@validate_call
+def stair_exit(
+    width: PositiveFloat = 8.0, depth: PositiveFloat = 6.0, wall: PositiveFloat = 0.3,
+    riser: PositiveFloat = 0.2, tread: PositiveFloat = 0.3, steps: PositiveInt = 10, door: PositiveFloat = 1.6,
+) -> SampleLevel:
+    """A walled room whose east doorway opens onto stairs leaving the piece at their top.
+
+    ``steps`` steps (``riser`` high, ``tread`` deep, ``door`` wide between 0.2 m walls) rise along
+    +X from the doorway; the top tread ends at the piece's east edge, with no landing. A riser as
+    high as the edge search's rays (0.2 m for :data:`PIECE_AGENT`) lies in their plane: they passed
+    over the top step unseen, the edge was found a riser low and the opening was dropped. Found in
+    the fifth round of piece kinds (docs/entry_exit.md). Openings: the west doorway and the stairs'
+    top edge, ``steps * riser`` up.
+
+    Args:
+        width: clear floor inside the walls along X, metres.
+        depth: clear floor inside the walls along Z, metres.
+        wall: thickness of the walls, metres.
+        riser: height of each step, metres.
+        tread: depth of each step along X, metres.
+        steps: number of steps.
+        door: width of both doorways and of the stairs, metres.
+    """
+    b = _LevelBuilder()
+    b.floors(-wall, width + wall, -wall, depth + wall, 0.0)
+    gaps = {side: [(depth / 2 - door / 2, depth / 2 + door / 2, 0.0, TALL)] for side in "WE"}
+    _walls(b, width, depth, wall, gaps)
+    z0, z1 = depth / 2 - door / 2, depth / 2 + door / 2
+    for i in range(1, steps + 1):
+        x0, x1 = width + wall + tread * (i - 1), width + wall + tread * i
+        _box(b, x0, x1, -SLAB_THICKNESS, riser * i, z0, z1)
+        _box(b, x0, x1, -SLAB_THICKNESS, riser * i + TALL, z0 - 0.2, z0)
+        _box(b, x0, x1, -SLAB_THICKNESS, riser * i + TALL, z1, z1 + 0.2)
+    b.floor_area += steps * tread * door
+    top = steps * riser
+    openings = [_door("W", depth / 2, door, width, depth, wall),
+                _opening((width + wall + steps * tread, top, depth / 2), _E, door)]
+    params = {"width": width, "depth": depth, "wall": wall, "riser": riser, "tread": tread, "steps": steps, "door": door}
+    return b.build("stair_exit", openings, _meta(params, (0.0, top)))
+
+
 # --------------------------------------------------------------------------
 # Held-out families: shapes designers build that the rules above were not measured on
 # --------------------------------------------------------------------------
@@ -765,6 +840,8 @@ PIECES = {
     "chamfered_platform": chamfered_platform,
     "sloped_corridor": sloped_corridor,
     "roofed_corridor": roofed_corridor,
+    "twin_doors": twin_doors,
+    "stair_exit": stair_exit,
     **HELD_OUT,
 }
 """Piece name -> factory (keyword arguments only), the held-out families included; registered in ``levels.SAMPLES``."""

@@ -42,7 +42,11 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
    boundary's direction within ``match_angle_deg`` (a curved edge); a
    segment that fits neither is fitted again without the samples at its ends
    whose way out lies more than ``max_turn_deg`` from its median one (a
-   segment that walked round a corner onto the edge). The
+   segment that walked round a corner onto the edge). An edge is cut where
+   something stands on it between two free stretches (a pier between two
+   doorways the samples saw out through alike), and its ends are raised onto
+   a step top just inside them (a riser as high as the rays, which they pass
+   over). The
    opening lies on that line; its ends are extended along the edge while the
    surface goes on inside the edge, ends just outside it, and nothing stands
    in the way or straight out: this undoes the retreat from walls. An
@@ -116,7 +120,7 @@ repeated openings an O(o^2) comparison, the terminals a k-d tree query each.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import networkx as nx
 import numpy as np
@@ -581,6 +585,64 @@ def _match_edges(segments: list[np.ndarray], ways: _Ways, s: _Settings, params: 
     return kept
 
 
+def _split_at_piers(kept: list[_Edge], ways: _Ways, caster: RayCaster, s: _Settings) -> list[_Edge]:
+    """Each edge cut where something stands on it between two free stretches (a pier between two doorways).
+
+    The navmesh need not enter doorways barely wider than the agent (a 1.2 m door eroded to 0.4 m, which
+    Recast's grid keeps or closes with its phase), and then the samples along the wall inside see out
+    through two neighbouring doorways alike: one segment, one edge spanning both and the pier between,
+    whose middle stands in the pier. Candidates every search step along the edge, where
+    :func:`_extend`'s stand (half a step inside the edge line, ``lift`` up), are blocked when the way
+    straight out meets something within ``r``; a blocked run with free candidates on both sides cuts
+    the edge, and each part keeps the samples whose edge points lie along it (at least two). Blocked
+    runs at the ends (jambs) only end the edge, as before. O(edge length / search step) rays per edge.
+    """
+    inset = _INSET_STEPS * s.delta
+    out: list[_Edge] = []
+    for e in kept:
+        length = float(np.linalg.norm(e.last - e.first))
+        n = int(length / s.delta) + 1
+        if n < 3:
+            out.append(e)
+            continue
+        along = (e.last - e.first) / length
+        t = s.delta * np.arange(n)
+        points = e.first + along * t[:, None] - e.outward * inset + UP * s.lift
+        blocked = caster.first_hits(points, np.tile(e.outward, (n, 1))).distance <= s.radius + inset
+        free = np.flatnonzero(~blocked)
+        if len(free) < 2 or not blocked[free[0]: free[-1] + 1].any():
+            out.append(e)
+            continue
+        t_edge = (ways.edge[e.samples] - e.first) @ along
+        starts = np.r_[0, np.flatnonzero(np.diff(free) > 1) + 1]
+        for run in np.split(free, starts[1:]):
+            lo, hi = t[run[0]] - s.delta, t[run[-1]] + s.delta
+            part = e.samples[(t_edge >= lo) & (t_edge <= hi)]
+            if len(part) < 2:
+                continue
+            tp = (ways.edge[part] - e.first) @ along
+            out.append(replace(e, samples=part, first=e.first + along * tp.min(), last=e.first + along * tp.max()))
+    return out
+
+
+def _onto_grazed_step(points: np.ndarray, out: np.ndarray, caster: RayCaster, s: _Settings) -> np.ndarray:
+    """(n,3) ``points`` (on edges) raised onto a step top just inside them that lies higher by more than half the rays' height.
+
+    The edge search's rays stand ``lift`` above the sample; a step exactly that high (a stair's
+    0.2 m riser for the map-piece agent) lies in their plane, so they pass over its top unseen and
+    the floor's end beyond it is found at the sample's height, a riser below the real edge, where
+    the extension's candidates then stand in the step's top face. Probed straight down from the
+    climb above, half a search step inside the edge.
+    """
+    inset = _INSET_STEPS * s.delta
+    hit = caster.first_hits(points - out * inset + UP * s.climb, np.broadcast_to(-UP, points.shape).copy())
+    rise = s.climb - hit.distance
+    step = np.isfinite(hit.distance) & (rise > 0.5 * s.lift) & _walkable(caster, hit.face, s)
+    raised = points.copy()
+    raised[step, 1] += rise[step]
+    return raised
+
+
 def _extend(kept: list[_Edge], caster: RayCaster, s: _Settings) -> tuple[np.ndarray, np.ndarray]:
     """The ends of each opening, extended along its edge (one batched pass per test): (n,3) and (n,3).
 
@@ -593,10 +655,10 @@ def _extend(kept: list[_Edge], caster: RayCaster, s: _Settings) -> tuple[np.ndar
     n = len(kept)
     out = np.array([e.outward for e in kept])
     nrm = np.array([e.normal for e in kept])
-    first = np.array([e.first for e in kept])
-    last = np.array([e.last for e in kept])
-    along = _unit(np.cross(nrm, out))  # walking direction along the edge (interior on the left)
     inset = _INSET_STEPS * s.delta  # candidates stand this far inside the edge line
+    first = _onto_grazed_step(np.array([e.first for e in kept]), out, caster, s)
+    last = _onto_grazed_step(np.array([e.last for e in kept]), out, caster, s)
+    along = _unit(np.cross(nrm, out))  # walking direction along the edge (interior on the left)
     n_ext = max(1, int(math.ceil((2.0 * s.radius + s.step) / s.delta)))
     steps = s.delta * np.arange(1, n_ext + 1)
     ends = np.stack([first, last])  # (2, n, 3)
@@ -896,7 +958,7 @@ def detect_openings(
     if params.main_floor_only:
         main = main_floor(surface, agent, loops)
         segments = [g for g in segments if main[samples.polygon[g]].any()]
-    kept = _match_edges(segments, ways, s, params)
+    kept = _split_at_piers(_match_edges(segments, ways, s, params), ways, caster, s)
     if not kept:
         return Detection((), (), ())
     p_first, p_last = _extend(kept, caster, s)
