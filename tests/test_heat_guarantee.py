@@ -154,3 +154,19 @@ def test_map_analysis_on_a_level_that_holds_measures_once_and_changes_nothing(sh
         structures.append((sorted(result.structure.nodes), sorted(result.structure.edges)))
     assert measured == [1]  # nav_test's heat map holds 0.967: one measure, no second simplification
     assert structures[0] == structures[1]
+
+
+def test_none_keeps_a_structure_only_once_one_was_given():
+    from g2s_core.errors import PluginFailure
+
+    @hookimpl
+    def g2s_simplify_predicate(params, context, forest, simplified):
+        return None
+
+    module = types.ModuleType("plugin_nothing")
+    module.NAME, module.g2s_simplify_predicate = "nothing", g2s_simplify_predicate
+    registry = Registry()
+    info = registry.register(module, package="test", entry_point="simplify.nothing")
+    with pytest.raises(PluginFailure, match="returned NoneType, not a callable P"):
+        registry.call(info, params=info.params_model(), context=None, forest=None, simplified=None)
+    assert registry.call(info, params=info.params_model(), context=None, forest=None, simplified=nx.DiGraph()) is None

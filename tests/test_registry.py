@@ -220,7 +220,7 @@ def test_a_predicate_that_returns_none_or_raises_fails_as_itself():
 
     registry = Registry()
     info = registry.register(make_plugin("sloppy", g2s_simplify_predicate=predicate), package="pkg-p", entry_point="e")
-    checked = registry.call(info, params=info.params_model(), context=None)
+    checked = registry.call(info, params=info.params_model(), context=None, forest=None, simplified=None)
     with pytest.raises(PluginFailure, match=r"^SimplifyPredicate plugin 'sloppy' \(package 'pkg-p'\) failed: "
                                             r"its function returned NoneType, not a bool$"):
         checked(_chain_tree(), 0, 1, 2)
