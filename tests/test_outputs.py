@@ -431,6 +431,14 @@ def test_floors_keep_splitting_at_a_gap_in_the_node_heights():
     assert [g.tolist() for g in common.floors(heights, 2.0, ground)] == expected
 
 
+def test_floors_keep_a_landing_far_from_every_storey_whole():
+    # storeys 10 m apart (the mine kind's levels), a 2 x 2 m landing half way whose nodes (5.0 and 5.1 m) are
+    # nearer the lower and the upper storey: more than an agent height from both, it stays one floor
+    ground = np.concatenate([_rectangle(0, 20, 0, 20, 0.0), _rectangle(0, 20, 0, 20, 10.0), _rectangle(0, 2, 0, 2, 5.0)])
+    heights = [0.0, 10.0, 5.0, 5.1, 0.0]
+    assert [g.tolist() for g in common.floors(heights, 2.0, ground)] == [[0, 4], [2, 3], [1]]
+
+
 def test_heatmap_colours_follow_the_values(tmp_path):
     """Values on viridis: dark purple lowest, yellow highest; depth colours as in the paper."""
     assert colours.heat_colour(0.0) == (68, 1, 84) and colours.heat_colour(1.0) == (253, 231, 37)

@@ -12,8 +12,13 @@ before step 4, one grey. Loop edges (a structure with loops, config
 ``loops:``) are near-black dotted lines. A legend under the panels names the
 markers drawn.
 
-Floors: node heights (Y) are sorted and split wherever two neighbours differ
-by more than the agent height; each floor gets its own panel (lowest first),
+Floors (:func:`common.floors`): storeys are height bands holding a real share
+of the walkable ground's area (1 % of it in a 0.1 m bin, sloped ground
+counted over its height span), at least the agent height apart. Node
+heights (Y) are sorted and split wherever two neighbours differ by more than
+the agent height, and each such floor is split between the storey bands
+within an agent height of it, each node going to the nearest band (the nodes
+on stairs and ramps to the storeys they join). Each floor gets its own panel (lowest first),
 with the edges that touch it (edges to another floor dashed, as the legend
 says), and the terminals and openings whose height is nearest its nodes'. The
 colour scale is shared by all panels.
