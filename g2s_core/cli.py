@@ -31,7 +31,7 @@ from g2s_core.mesh import SAMPLE_PREFIX
 from g2s_core.model import RaisedWarning, RunResult
 from g2s_core.outputs import DEFAULT_FORMATS, check_outdir, chosen_formats, writers
 from g2s_core.registry import installed, plugin_parameters
-from g2s_core.result_folder import interrupts_held
+from g2s_core.result_folder import interrupts_held, stop_if_interrupted
 from g2s_core.stages import STAGES
 from g2s_core.lazy import lazy_module
 from g2s_core.summary import final_graph, metric_lines, roots_of, stage_rows
@@ -41,7 +41,7 @@ api, pipeline = lazy_module("g2s_core.api"), lazy_module("g2s_core.pipeline")
 
 EXIT_CODES = "exit codes: 0 success, 2 bad input or config or a failed plugin (named with its package), 1 internal error, 130 interrupted"
 
-__all__ = ["main", "output_folder", "stage_table"]
+__all__ = ["main", "named", "output_folder", "stage_table"]
 
 
 class CommandParser(argparse.ArgumentParser):
@@ -59,7 +59,7 @@ def output_folder(text: str) -> Path:
     return Path(text)
 
 
-def _given(what: str) -> Callable[[str], str]:
+def named(what: str) -> Callable[[str], str]:
     """The type of an argument naming ``what``, refusing an empty one: ``Path("")`` is the working folder, which
     was then named as the config or mesh (``.: expected a config file, got a folder``)."""
     def given(text: str) -> str:
@@ -89,8 +89,8 @@ def _parser() -> tuple[argparse.ArgumentParser, dict[str, Callable[[argparse.Nam
         epilog=f"{EXIT_CODES}\n\npresets:\n" + "\n".join(_columns(list(presets().items()), width=80, indent=2)),
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
-    run.add_argument("config", type=_given("a preset name or a config file"), help="preset name (see `g2s presets`) or YAML config file")
-    run.add_argument("mesh", type=_given(f"a mesh file or {SAMPLE_PREFIX}NAME"), help=f"mesh file (.obj .glb .gltf .ply .stl .off) or {SAMPLE_PREFIX}NAME[?param=value&...] "
+    run.add_argument("config", type=named("a preset name or a config file"), help="preset name (see `g2s presets`) or YAML config file")
+    run.add_argument("mesh", type=named(f"a mesh file or {SAMPLE_PREFIX}NAME"), help=f"mesh file (.obj .glb .gltf .ply .stl .off) or {SAMPLE_PREFIX}NAME[?param=value&...] "
                      "for a level from an installed level generator (see `g2s plugins --stage levels`)")
     run.add_argument("-o", "--outdir", type=output_folder, required=True, help="folder for the results")
     _add_output_options(run)
@@ -159,7 +159,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     args = parser.parse_args(argv)
     errors = Console(stderr=True)
     own = {"run": lambda a: _run(a, errors), "plugins": _plugins, "presets": lambda _: _presets(), "demo": lambda a: _demo(a, errors)}
-    with warnings.catch_warnings():  # numpy's (a 1e300 coordinate overflowing) would add lines to the one line of stderr
+    with warnings.catch_warnings(), interrupts_held(hold=False):  # numpy's warnings (a 1e300 coordinate overflowing) would add lines to the one line of stderr
         warnings.simplefilter("default" if args.verbose else "ignore", RuntimeWarning)
         try:
             command = plugged.get(args.command) or own[args.command]  # a plugin's command, or why it cannot run
@@ -188,8 +188,7 @@ def _run(args: argparse.Namespace, errors: Console, mesh_name: str | None = None
     config_files: list[Path] = []
     config, source = resolve_config(args.config, dict(map(parse_assignment, args.overrides)), "--set", config_files)
     formats = chosen_formats(args.format, config, source, "--format")
-    with interrupts_held():  # importing trimesh (api's) catches BaseException: a Ctrl-C then was lost, the run went on
-        inputs = api.input_files(config, config_files, args.mesh)
+    inputs = api.input_files(config, config_files, args.mesh)
     check_outdir(args.outdir, formats, args.force, inputs)
     registry = installed()
     plan = pipeline.plan(config, registry, source=source)
@@ -199,11 +198,14 @@ def _run(args: argparse.Namespace, errors: Console, mesh_name: str | None = None
     live = not quiet and errors.is_terminal
     with errors.status("running") if live else nullcontext() as spinner:
         def say(message: str) -> None:  # the step on the spinner; a warning above it as raised, before a costly step
+            stop_if_interrupted()  # a Ctrl-C that a library swallowed (importing trimesh) stops the run at its next step
+            if not live:
+                return None
             if isinstance(message, RaisedWarning):
                 return _warn(errors, message)
             spinner.update(message)
-        result = api.execute(plan, registry, mesh, progress=say if live else None, config_files=config_files)
-        written = api.write_result(result, args.outdir, formats, force=args.force, progress=say if live else None, registry=registry)
+        result = api.execute(plan, registry, mesh, progress=say, config_files=config_files)
+        written = api.write_result(result, args.outdir, formats, force=args.force, progress=say, registry=registry)
     if args.json:  # through rich as all other output, so that a reader that leaves early (`| head`) ends it as quietly
         Console().out(json.dumps(_summary(result, args.outdir, formats, written), indent=1, sort_keys=True), highlight=False)
         return 0

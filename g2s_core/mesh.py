@@ -11,13 +11,13 @@ from collections.abc import Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
-from urllib.parse import parse_qsl, urlsplit
+from urllib.parse import parse_qsl, unquote, urlsplit
 
 from g2s_core.config import MeshConfig
 from g2s_core.errors import ConfigError, MeshError
 from g2s_core.input_files import check_regular_file
 from g2s_core.lazy import lazy_module
-from g2s_core.mesh_damage import declared_faces, describe_damage
+from g2s_core.mesh_damage import declared_faces, describe_damage, off_polygons
 from g2s_core.registry import Registry, installed
 
 # loaded with the first mesh read: the CLI and the batch command import this module for its names
@@ -86,7 +86,10 @@ def load_mesh(path: str | Path, config: MeshConfig | None = None) -> tuple[trime
             if len(getattr(loaded, "faces", ())) < (declared := declared_faces(path.suffix, raw)):
                 raise ValueError(f"the header declares {declared} faces, trimesh read {len(loaded.faces)}")
     except Exception as exc:  # trimesh raises many exception types for bad files
-        raise MeshError(f"{path}: {describe_damage(path, raw) or f'cannot read mesh ({type(exc).__name__}: {exc})'}") from None
+        if (damage := describe_damage(path, raw)) or path.suffix.lower() != ".off":
+            raise MeshError(f"{path}: {damage or f'cannot read mesh ({type(exc).__name__}: {exc})'}") from None
+        vertices, polygons = off_polygons(raw)  # a sound OFF file of polygons trimesh cannot fan: fanned as it fans an OBJ's
+        loaded = trimesh.Trimesh(vertices=vertices, faces=trimesh.geometry.triangulate_quads(polygons), process=False)
     try:
         mesh, cleaning = prepare_and_clean(loaded, config, source=str(path))
     except MeshError as exc:  # the file's fault, not mesh.scale's or cleaning's (read as empty, a face past its vertices)
@@ -178,6 +181,9 @@ def _files_beside(path: Path) -> trimesh.resolvers.FilePathResolver:
             if (found := super().absolute(name)).exists():
                 check_regular_file(found, "file", MeshError)
             return found
+
+        def get(self, name: str) -> bytes:  # a glTF's uri is URL-encoded ("my%20level.bin"); trimesh does not decode it
+            return super().get(name if (Path(self.parent) / name).exists() else unquote(name))
 
     return RegularFiles(path)
 

@@ -24,6 +24,7 @@ import stat
 from collections.abc import Callable, Iterable
 from functools import partial
 from pathlib import Path
+from urllib.parse import unquote
 
 STL_HEADER, STL_TRIANGLE, GLB_HEADER = 84, 50, 12
 """Bytes of a binary STL's header (80 free bytes, then the triangle count, uint32) and of each of its
@@ -123,13 +124,14 @@ def _gltf_damage(document: object, folder: Path, binary: int | None) -> str | No
             except binascii.Error:
                 return f"buffers[{number}]: its data URI is not valid base64"
         elif isinstance(uri, str):
+            name = uri if (folder / uri).exists() else unquote(uri)  # URL-encoded, as mesh._files_beside reads it
             try:
-                if not stat.S_ISREG((folder / uri).stat().st_mode):
+                if not stat.S_ISREG((folder / name).stat().st_mode):
                     return None  # trimesh was refused it by name (a FIFO would wait forever): mesh._files_beside
-                with (folder / uri).open("rb") as file:
+                with (folder / name).open("rb") as file:
                     size = file.seek(0, io.SEEK_END)
             except (OSError, ValueError) as exc:  # ValueError: a NUL in the name
-                return f"buffers[{number}]: cannot read its file {uri!r} beside the glTF file ({getattr(exc, 'strerror', None) or exc})"
+                return f"buffers[{number}]: cannot read its file {name!r} beside the glTF file ({getattr(exc, 'strerror', None) or exc})"
         else:
             size = binary or 0
         if isinstance(needed, int) and size < needed:
@@ -190,6 +192,14 @@ def _named_item(index: int, before: int, listed: int, name: str) -> str:
 def _off_damage(data: bytes) -> str | None:
     """The first line of an OFF file that is wrong: ``OFF``, the counts ``vertices faces edges`` (on the same line
     or the next), then a vertex per line (x y z first) and a face per line (its corner count, then indices from 0)."""
+    if isinstance(read := _off_rows(data), str):
+        return read
+    vertices, faces, body = read
+    return _declared_rows(body, [("vertex", vertices, _vertex), ("face", faces, partial(_face, vertices=vertices))])
+
+
+def _off_rows(data: bytes) -> tuple[int, int, Rows] | str:
+    """An OFF file's counts of vertices and faces and its rows of values after them, or what is wrong with its header."""
     rows = [(number, values) for number, values in _rows(line.split(b"#")[0] for line in data.splitlines()) if values]
     if not rows or not rows[0][1][0].endswith(b"OFF"):
         return f"expected OFF on the first line, got {_text(b' '.join(rows[0][1])) if rows else 'only comments'!r}"
@@ -198,8 +208,19 @@ def _off_damage(data: bytes) -> str | None:
         (number, counts), body = body[0], body[1:]
     if len(counts) < 2 or not all(count.isdigit() for count in counts[:2]):
         return f"line {number}: expected the counts of vertices and faces, got {repr(_text(b' '.join(counts))) if counts else 'nothing'}"
-    vertices, faces = int(counts[0]), int(counts[1])
-    return _declared_rows(body, [("vertex", vertices, _vertex), ("face", faces, partial(_face, vertices=vertices))])
+    return int(counts[0]), int(counts[1]), body
+
+
+def off_polygons(data: bytes) -> tuple[list[list[float]], list[list[int]]]:
+    """A sound OFF file's vertices (x y z) and faces (vertex indices from 0, any number of corners each).
+
+    trimesh fans an OFF polygon of 5 or more corners from its text values, not integers, and fails (trimesh 4.x
+    on numpy 2: ``TypeError ... string multiply ufunc``); :func:`~g2s_core.mesh.load_mesh` reads such a file
+    with this when :func:`describe_damage` finds it sound.
+    """
+    vertices, faces, body = _off_rows(data)
+    return ([[float(value) for value in values[:3]] for _, values in body[:vertices]],
+            [[int(corner) for corner in values[1:1 + int(values[0])]] for _, values in body[vertices:vertices + faces]])
 
 
 def _ply_damage(data: bytes) -> str | None:

@@ -119,4 +119,6 @@ def write_outputs(
             if progress is not None:
                 progress(f"writing {fmt}")
             names.extend(Path(p).name for p in registry.call(known[fmt], result=result, folder=staging))
+        if appeared := sorted(p.name for p in result_paths(outdir, registry=registry) if p.exists() and p not in obsolete):
+            raise G2SError(f"{outdir}: another run wrote {', '.join(appeared)} there meanwhile; nothing of this run was written")
     return [outdir / name for name in names]

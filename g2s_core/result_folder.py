@@ -92,6 +92,7 @@ def staged(outdir: Path, obsolete: Sequence[Path] = (), protect: Sequence[Path] 
         beside = "" if inside else f".{outdir.name[:64]}"  # short enough for any name limit
         staging = Path(tempfile.mkdtemp(dir=home, prefix=f"{beside}{STAGING_MARK}{os.getpid()}-"))
         yield staging
+        stop_if_interrupted()
         with interrupts_held():
             _move_into_place(staging, outdir, obsolete, protect)
     except BaseException as exc:
@@ -181,18 +182,43 @@ def same_file(a: Path, b: Path) -> bool:
         return False
 
 
+_TAKEN: list[int] = []
+"""The interrupts a command took (:func:`interrupts_held` with ``hold=False``), its KeyboardInterrupt swallowed or not."""
+
+
+def stop_if_interrupted() -> None:
+    """Raise KeyboardInterrupt if the command took an interrupt that a library swallowed."""
+    if _TAKEN:
+        raise KeyboardInterrupt
+
+
 @contextmanager
-def interrupts_held() -> Iterator[None]:
-    """Hold Ctrl-C (SIGINT) and SIGTERM back until the block ends, then act on them."""
+def interrupts_held(hold: bool = True) -> Iterator[None]:
+    """Hold Ctrl-C (SIGINT) and SIGTERM back until the block ends, then act on them.
+
+    With ``hold`` false (a whole command) they raise KeyboardInterrupt at once and are remembered for
+    :func:`stop_if_interrupted`: trimesh, scipy and PIL catch BaseException while they load, and a run whose
+    interrupt they swallowed went on and wrote its results. A signal the parent process ignores (a background
+    job's Ctrl-C) stays ignored.
+    """
     if threading.current_thread() is not threading.main_thread():
         yield
         return
     received: list[int] = []
-    previous = {sig: signal.signal(sig, lambda number, _frame: received.append(number)) for sig in (signal.SIGINT, signal.SIGTERM)}
+
+    def take(number: int, _frame: object) -> None:
+        received.append(number)
+        if not hold:
+            _TAKEN.append(number)
+            raise KeyboardInterrupt
+
+    previous = {sig: signal.signal(sig, take) for sig in (signal.SIGINT, signal.SIGTERM) if signal.getsignal(sig) is not signal.SIG_IGN}
     try:
         yield
     finally:
         for sig, handler in previous.items():
             signal.signal(sig, handler)
-    if received:
+        if not hold:  # the command is over: a script's next run in this process starts afresh
+            _TAKEN.clear()
+    if received and hold:
         signal.raise_signal(received[0])

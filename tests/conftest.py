@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import os
+import signal
 from pathlib import Path
 
 import pytest
@@ -16,6 +18,30 @@ def shared_data() -> Path:
     if not SHARED_DATA.is_dir():
         pytest.skip(f"shared test data not found at {SHARED_DATA}")
     return SHARED_DATA
+
+
+@pytest.fixture
+def swallowed_ctrl_c(monkeypatch, request):
+    """``swallowed_ctrl_c(owner, name)``: ``owner.name`` (a lazily imported module) becomes one whose every use
+    sends this process a Ctrl-C and swallows its KeyboardInterrupt, as trimesh's imports catch BaseException.
+    Ctrl-C raises KeyboardInterrupt meanwhile, as from a terminal (a shell's background job, how CI may start the
+    suite, inherits it ignored)."""
+    def swallow(owner: object, name: str) -> None:
+        module = getattr(owner, name)
+
+        class Importing:
+            def __getattr__(self, attribute: str) -> object:
+                try:
+                    os.kill(os.getpid(), signal.SIGINT)
+                except BaseException:  # as trimesh does
+                    pass
+                return getattr(module, attribute)
+
+        monkeypatch.setattr(owner, name, Importing())
+
+    previous = signal.signal(signal.SIGINT, signal.default_int_handler)
+    request.addfinalizer(lambda: signal.signal(signal.SIGINT, previous))
+    return swallow
 
 
 @pytest.fixture(scope="session")

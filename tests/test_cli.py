@@ -245,6 +245,16 @@ def test_an_empty_config_or_mesh_name_is_refused_not_read_as_the_working_folder(
     assert_user_error(g2s("run", *args, "-o", tmp_path / "out", cwd=tmp_path), says)
 
 
+@pytest.mark.parametrize("items", [["", "sample:t_hub"], ["graph_only", ""], ["graph_only", "sample:t_hub", " "]])
+def test_an_empty_batch_config_or_level_is_refused_as_run_refuses_it(items, tmp_path):
+    # a config "" was ": expected a preset name or a .yaml/.yml config first ..."; a level "" was the working
+    # folder, searched for meshes, whose pairs then ran
+    (tmp_path / "floor.obj").write_text("v 0 0 0\nv 1 0 0\nv 0 0 1\nf 1 3 2\n")
+    assert_user_error(g2s("batch", *items, "-o", "out", cwd=tmp_path),
+                      "argument CONFIG|INPUT: expected a preset, a config file or a level, got an empty name")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["floor.obj"]
+
+
 def test_a_setting_given_twice_is_refused_not_the_last_one_kept(tmp_path):
     # YAML and URL queries both kept the last value silently: an agent 9 m wide, or a 3-room dungeon
     config = tmp_path / "twice.yaml"
@@ -281,25 +291,13 @@ def test_ctrl_c_while_the_console_script_loads_is_one_line(tmp_path):
     assert not (tmp_path / "out").exists()
 
 
-def test_ctrl_c_while_trimesh_imports_is_not_lost(tmp_path, monkeypatch, capsys, request):
+def test_ctrl_c_while_trimesh_imports_is_not_lost(tmp_path, swallowed_ctrl_c, capsys):
     """trimesh's imports catch BaseException (its optional dependencies), a KeyboardInterrupt among them: a Ctrl-C
-    in the first second of a run was lost and the run wrote its results. It is held until the import is done."""
-    import signal
+    in the first second of a run was lost and the run wrote its results. It is remembered, and stops the run at
+    its next step."""
+    from g2s_core import cli
 
-    from g2s_core import api, cli
-
-    class Importing:
-        def __getattr__(self, name):
-            try:
-                os.kill(os.getpid(), signal.SIGINT)
-            except BaseException:  # as trimesh does
-                pass
-            return getattr(api, name)
-
-    monkeypatch.setattr(cli, "api", Importing())
-    # as from a terminal: a shell's background job (how CI may start the suite) inherits SIGINT ignored
-    previous = signal.signal(signal.SIGINT, signal.default_int_handler)
-    request.addfinalizer(lambda: signal.signal(signal.SIGINT, previous))
+    swallowed_ctrl_c(cli, "api")
     assert main(["run", "graph_only", "sample:straight_corridor", "-o", str(tmp_path / "out"), "-q"]) == 130
     assert capsys.readouterr().err.strip() == "g2s: interrupted"
     assert not (tmp_path / "out").exists()

@@ -17,7 +17,7 @@ from rich.console import Console
 from rich.progress import BarColumn, MofNCompleteColumn, TextColumn
 from rich.progress import Progress as RichProgress
 
-from g2s_core.cli import output_folder
+from g2s_core.cli import named, output_folder
 from g2s_core.config import presets
 from g2s_core.errors import G2SError
 from g2s_core.mesh import SAMPLE_PREFIX, SUPPORTED_SUFFIXES
@@ -40,7 +40,7 @@ def g2s_command(parser: argparse.ArgumentParser) -> Callable[[argparse.Namespace
         f"already finished for the same config and mesh. {INSTALL_HINT}.")
     parser.epilog = ("exit codes: 0 every pair ran, 4 some pairs failed (see the summary's error column), "
                      "2 bad config or input, 130 interrupted (finished pairs are kept), 1 internal error of g2s")
-    parser.add_argument("items", nargs="+", metavar="CONFIG|INPUT",
+    parser.add_argument("items", nargs="+", metavar="CONFIG|INPUT", type=named("a preset, a config file or a level"),
                         help="configs (the leading preset names and .yaml/.yml files), then levels: mesh files, folders "
                         f"(searched recursively for {' '.join(SUPPORTED_SUFFIXES)}), glob patterns, or "
                         f"{SAMPLE_PREFIX}NAME[?param=value&...]")

@@ -49,7 +49,7 @@ from g2s_core.mesh import SAMPLE_PREFIX, SUPPORTED_SUFFIXES
 from g2s_core.model import RunResult
 from g2s_core.outputs import chosen_formats, result_files
 from g2s_core.registry import installed
-from g2s_core.result_folder import check_writable
+from g2s_core.result_folder import check_writable, stop_if_interrupted
 from g2s_core.stages import PIPELINE
 
 if TYPE_CHECKING:
@@ -403,6 +403,7 @@ def run_batch(
     try:
         with closing(registry.call(chosen, function=run_pair, items=pairs, params=params)) as finished:
             for row in finished:
+                stop_if_interrupted()  # a Ctrl-C that a library swallowed here (importing trimesh) stops the batch
                 rows[row["config"], row["level"]] = row
                 counts.update(row)
                 if progress is not None:
@@ -460,15 +461,27 @@ def _column_type(column: str) -> str | None:
 
 
 def write_summary(summary: pd.DataFrame, outdir: Path) -> list[Path]:
-    """``summary.parquet`` and ``summary.csv`` in ``outdir``, each replaced whole."""
-    paths = []
-    for name, write in (("summary.parquet", summary.to_parquet), ("summary.csv", summary.to_csv)):
-        path = outdir / name
-        temporary = path.with_name(f".{name}.tmp")
-        write(temporary, index=False)
+    """``summary.parquet`` and ``summary.csv`` in ``outdir``, both written before either replaces the earlier one.
+
+    Raises:
+        G2SError: the storage failed (disk full, file size limit); the earlier summary files are kept and no
+            temporary file is left.
+    """
+    files = {outdir / name: (outdir / f".{name}.tmp", write) for name, write in (
+        ("summary.parquet", summary.to_parquet), ("summary.csv", summary.to_csv))}
+    try:
+        for temporary, write in files.values():
+            write(temporary, index=False)
+    except BaseException as exc:
+        for temporary, _ in files.values():
+            temporary.unlink(missing_ok=True)
+        if isinstance(exc, OSError):  # pyarrow's has the errno, and its own words in strerror
+            raise G2SError(f"{outdir}: cannot write the summary ({os.strerror(exc.errno) if exc.errno else exc}); "
+                           "the pairs' results are kept: run the batch again to write it") from None
+        raise
+    for path, (temporary, _) in files.items():
         os.replace(temporary, path)
-        paths.append(path)
-    return paths
+    return list(files)
 
 
 @contextmanager

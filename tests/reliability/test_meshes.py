@@ -275,6 +275,23 @@ def test_a_gltf_whose_buffer_cannot_be_read_names_it(buffer, says, tmp_path, qui
     assert tree(tmp_path / "out") == []
 
 
+def test_a_gltf_whose_buffer_uri_is_url_encoded_is_read(tmp_path):
+    # exporters write a file "floor part.bin" as the uri "floor%20part.bin"; trimesh looked for "floor%20part.bin"
+    # ("buffers[0]: cannot read its file 'floor%20part.bin' ...")
+    gltf = _gltf_with_buffer(tmp_path)
+    document = json.loads(gltf.read_text())
+    for number, buffer in enumerate(document["buffers"]):
+        (tmp_path / buffer["uri"]).rename(tmp_path / f"floor part {number}.bin")
+        buffer["uri"] = f"floor%20part%20{number}.bin"
+    gltf.write_text(json.dumps(document))
+    mesh, _ = load_mesh(gltf)
+    assert len(mesh.faces) == 2 and mesh.area == pytest.approx(400)
+    (tmp_path / "floor part 0.bin").unlink()
+    with pytest.raises(MeshError) as missing:
+        load_mesh(gltf)
+    assert str(missing.value) == f"{gltf}: buffers[0]: cannot read its file 'floor part 0.bin' beside the glTF file (No such file or directory)"
+
+
 def test_a_gltf_nested_too_deeply_is_a_clean_error(tmp_path, quick_config, capsys):
     # the damage report's own json.loads raised RecursionError: an internal error
     gltf = _damaged(tmp_path, "deep.gltf", b"[" * 100_000 + b"]" * 100_000)
@@ -461,3 +478,19 @@ def test_what_cleaning_removed_follows_a_run_and_never_precedes_its_error(tmp_pa
     floor.write_text(FLOOR_OBJ.format(comment="floor", name="floor") + "f 1 4 3\n")
     outcome = run_g2s(capsys, "run", quick_config, floor, "-o", tmp_path / "out", "--set", "mesh.clean=true")
     assert outcome.code == 0 and "cleaning: 0 merged vertices, 1 duplicate faces" in outcome.stderr, outcome.stderr
+
+
+def test_an_off_file_of_triangles_quads_and_a_pentagon_is_read_whole(tmp_path):
+    # trimesh fanned the pentagon from its text values: "cannot read mesh (TypeError: The 'out' kwarg is necessary
+    # when using the string multiply ufunc directly ...)"
+    mesh_file = tmp_path / "mixed.off"
+    mesh_file.write_text("OFF\n# a square of two triangles, a square quad, a pentagon\n9 4 0\n"
+                         "0 0 0\n0 0 4\n4 0 4\n4 0 0\n8 0 4\n8 0 0\n12 0 4\n12 0 0\n14 0 2\n"
+                         "3 0 1 2\n3 0 2 3\n4 3 2 4 5\n5 5 4 6 8 7\n")
+    mesh, info = load_mesh(mesh_file)
+    assert (info.faces, mesh.area) == (7, pytest.approx(16 + 16 + 20))  # 2 + 2 + 3 triangles
+    assert (mesh.face_normals[:, 1] > 0.99).all()  # fanned with the polygons' winding: every face up
+    mesh_file.write_text(mesh_file.read_text().replace("5 5 4 6 8 7", "5 5 4 6 9 7"))
+    with pytest.raises(MeshError) as wrong:
+        load_mesh(mesh_file)
+    assert str(wrong.value) == f"{mesh_file}: line 16: a face refers to vertex 9; the file has 9 vertices (numbered from 0)"

@@ -258,3 +258,27 @@ def test_force_never_overwrites_an_input(make, tmp_path, capsys):
     outcome = run_g2s(capsys, "run", config, mesh, "-o", out, "--force", *options)
     assert_clean_error(outcome, f"the input {guarded} has the name of a result file ({guarded.name})")
     assert snapshot([guarded]) == before and tree(out) == [guarded.name]
+
+
+@pytest.mark.parametrize("force", [False, True])
+def test_a_run_that_another_run_wrote_into_meanwhile_writes_nothing(force, tmp_path, quick_config, capsys):
+    """Two runs into one folder at once both passed the check for earlier results; the later one's files then went
+    in beside or over the other's: a folder of two runs' files (its graph.json, the other's structure.json)."""
+    from g2s_core import api
+
+    out = tmp_path / "out"
+    if force:
+        assert run_g2s(capsys, "run", quick_config, CORRIDOR, "-o", out, "--format", "json").code == 0
+    result = api.run(CORRIDOR, str(quick_config))
+    earlier = snapshot(out.glob("*"))
+
+    def another_run_writes(step):
+        if step == "writing graph":  # the other run, between this one's check and its move into place
+            out.mkdir(exist_ok=True)
+            (out / "graph.json").write_text("{}")
+
+    with pytest.raises(G2SError) as refused:
+        api.write_result(result, out, "graph", force=force, progress=another_run_writes)
+    assert str(refused.value) == f"{out}: another run wrote graph.json there meanwhile; nothing of this run was written"
+    assert (out / "graph.json").read_text() == "{}" and snapshot(out.glob("*.json")) == {**earlier, **snapshot([out / "graph.json"])}
+    assert not any(STAGING_MARK in path.name for path in tmp_path.rglob("*"))
