@@ -381,10 +381,62 @@ def test_heatmap_png_has_a_panel_per_floor_and_no_metadata(result, tmp_path):
     one_floor = heatmap.floor_groups(result.structure, 10.0)
     assert len(one_floor) == 1
     # the ground under each floor: the upward faces of its slab (two triangles each), seen as X/Z
-    ground = heatmap._ground(result, result.structure, heatmap.floor_groups(result.structure, 2.0))
+    ground = heatmap._ground(result, result.structure, heatmap.floor_groups(result.structure, 2.0),
+                             heatmap._walkable(result))
     assert [g.shape for g in ground] == [(2, 3, 2), (2, 3, 2)]
     assert np.allclose(ground[0].reshape(-1, 2).max(axis=0), [10.0, 6.0])
     assert np.allclose(ground[1].reshape(-1, 2).max(axis=0), [6.0, 4.0])
+
+
+# --- floors: storeys told apart by the walkable area at each height --------------------------------------
+
+
+def _rectangle(x0: float, x1: float, z0: float, z1: float, y0: float, y1: float | None = None) -> np.ndarray:
+    """(2, 3, 3) the two triangles of a rectangle in plan, at height ``y0`` (rising along x to ``y1``)."""
+    y1 = y0 if y1 is None else y1
+    a, b, c, d = (x0, y0, z0), (x1, y1, z0), (x1, y1, z1), (x0, y0, z1)
+    return np.array([[a, b, c], [a, c, d]], dtype=np.float64)
+
+
+def test_floors_split_two_storeys_joined_by_a_ramp_of_evenly_spaced_nodes():
+    # 10 x 10 m floors at y = 0 and y = 4 joined by a 2 m wide ramp rising 4 m over 10 m: 200 m² flat, 21.5 m²
+    # of ramp spread over 4 m, so 0.27 m² (0.12 %) in each 0.1 m bin; the nodes climb the ramp every 0.5 m
+    ground = np.concatenate([_rectangle(0, 10, 0, 10, 0.0), _rectangle(10, 20, 4, 6, 0.0, 4.0),
+                             _rectangle(20, 30, 0, 10, 4.0)])
+    heights = [0.0, 0.0, 0.5, 1.0, 1.5, 2.0, 2.5, 3.0, 3.5, 4.0, 4.0]
+    assert [g.tolist() for g in common.floors(heights, 2.0)] == [list(range(11))]  # the gap rule: one floor
+    # the nodes up to 2.0 m are nearer the lower storey (1.9 m from its 0-0.1 m band) than the upper (4-4.1 m)
+    assert [g.tolist() for g in common.floors(heights, 2.0, ground)] == [[0, 1, 2, 3, 4, 5], [6, 7, 8, 9, 10]]
+
+
+def test_floors_keep_a_hill_in_one_floor():
+    # a 60 x 60 m heightfield, y = 6 sin(x / 9) cos(z / 9) on a 2 m grid: 12 m of relief, every slope under
+    # 45 degrees; its area spreads over the heights, no 0.1 m bin holds 1 % of it
+    x, z = np.meshgrid(np.arange(0.0, 62.0, 2.0), np.arange(0.0, 62.0, 2.0), indexing="ij")
+    y = 6.0 * np.sin(x / 9.0) * np.cos(z / 9.0)
+    corners = np.stack([x, y, z], axis=-1)
+    a, b, c, d = corners[:-1, :-1], corners[1:, :-1], corners[1:, 1:], corners[:-1, 1:]
+    ground = np.concatenate([np.stack([a, b, c], axis=2), np.stack([a, c, d], axis=2)]).reshape(-1, 3, 3)
+    heights = y.reshape(-1)
+    assert len(common.floors(heights, 2.0, ground)) == 1
+
+
+def test_floors_keep_splitting_at_a_gap_in_the_node_heights():
+    # today's case: floors 3 m apart with nothing between, and a 2 x 2 m platform 6 m up holding 0.4 % of the
+    # area (no storey by its area) but 3 m above the nearest node: three floors, with or without the ground
+    ground = np.concatenate([_rectangle(0, 30, 0, 15, 0.0), _rectangle(0, 30, 0, 15, 3.0), _rectangle(0, 2, 0, 2, 6.0)])
+    heights = [3.0, 0.0, 6.0, 0.1, 3.1]
+    expected = [[1, 3], [0, 4], [2]]
+    assert [g.tolist() for g in common.floors(heights, 2.0)] == expected
+    assert [g.tolist() for g in common.floors(heights, 2.0, ground)] == expected
+
+
+def test_floors_keep_a_landing_far_from_every_storey_whole():
+    # storeys 10 m apart (the mine kind's levels), a 2 x 2 m landing half way whose nodes (5.0 and 5.1 m) are
+    # nearer the lower and the upper storey: more than an agent height from both, it stays one floor
+    ground = np.concatenate([_rectangle(0, 20, 0, 20, 0.0), _rectangle(0, 20, 0, 20, 10.0), _rectangle(0, 2, 0, 2, 5.0)])
+    heights = [0.0, 10.0, 5.0, 5.1, 0.0]
+    assert [g.tolist() for g in common.floors(heights, 2.0, ground)] == [[0, 4], [2, 3], [1]]
 
 
 def test_heatmap_colours_follow_the_values(tmp_path):

@@ -12,8 +12,13 @@ before step 4, one grey. Loop edges (a structure with loops, config
 ``loops:``) are near-black dotted lines. A legend under the panels names the
 markers drawn.
 
-Floors: node heights (Y) are sorted and split wherever two neighbours differ
-by more than the agent height; each floor gets its own panel (lowest first),
+Floors (:func:`common.floors`): storeys are height bands holding a real share
+of the walkable ground's area (1 % of it in a 0.1 m bin, sloped ground
+counted over its height span), at least the agent height apart. Node
+heights (Y) are sorted and split wherever two neighbours differ by more than
+the agent height, and each such floor is split between the storey bands
+within an agent height of it, each node going to the nearest band (the nodes
+on stairs and ramps to the storeys they join). Each floor gets its own panel (lowest first),
 with the edges that touch it (edges to another floor dashed, as the legend
 says), and the terminals and openings whose height is nearest its nodes'. The
 colour scale is shared by all panels.
@@ -71,11 +76,12 @@ def write(result: RunResult, outdir: Path) -> list[Path]:
     return [atomic_write(outdir / HEATMAP_FILE, render(result))]
 
 
-def floor_groups(graph: nx.Graph, gap: float) -> list[list[int]]:
-    """The graph's nodes grouped by floor (see the module doc), lowest floor first."""
+def floor_groups(graph: nx.Graph, gap: float, ground: np.ndarray | None = None) -> list[list[int]]:
+    """The graph's nodes grouped by floor (see the module doc), lowest floor first; ``ground``: the (T, 3, 3)
+    walkable triangles (:func:`_walkable`) whose area tells the storeys apart."""
     nodes = sorted(graph.nodes)
     heights = [float(graph.nodes[n]["pos"][1]) for n in nodes]
-    return [[nodes[i] for i in group] for group in floors(heights, gap)]
+    return [[nodes[i] for i in group] for group in floors(heights, gap, ground)]
 
 
 def render(result: RunResult) -> bytes:
@@ -83,7 +89,8 @@ def render(result: RunResult) -> bytes:
     _, graph = final_graph(result)
     keys = list(result.analysis)
     key = keys[0] if keys else None
-    groups = floor_groups(graph, agent_value(result, "height", 2.0)) if graph is not None else []
+    walkable = _walkable(result)
+    groups = floor_groups(graph, agent_value(result, "height", 2.0), walkable) if graph is not None else []
     count = max(len(groups), 1)
     columns = min(count, 3)
     rows = math.ceil(count / columns)
@@ -103,7 +110,7 @@ def render(result: RunResult) -> bytes:
         norm = Normalize(vmin=low, vmax=high if high > low else low + 1.0)
         floor_of = {n: i for i, group in enumerate(groups) for n in group}
         roots = set(roots_of(graph))
-        ground = _ground(result, graph, groups)
+        ground = _ground(result, graph, groups, walkable)
         terminals, openings = _terminals_by_floor(result, graph, groups)
         regions = _regions_by_floor(result, graph, groups)
         chokepoints = _chokepoints_by_floor(result, graph, groups)
@@ -144,14 +151,19 @@ def render(result: RunResult) -> bytes:
     return buffer.getvalue()
 
 
-def _ground(result: RunResult, graph: nx.Graph, groups: list[list[int]]) -> list[np.ndarray]:
-    """Per floor, the walkable triangles under it as (T, 3, 2) X/Z outlines.
+def _ground(result: RunResult, graph: nx.Graph, groups: list[list[int]], triangles: np.ndarray) -> list[np.ndarray]:
+    """Per floor, the (T, 3, 3) walkable ``triangles`` (:func:`_walkable`) under it as (T, 3, 2) X/Z outlines.
 
-    The navmesh's detail triangles when there is a navmesh, else the mesh's
-    faces no steeper than the agent's max slope. A triangle goes to the floor
-    whose node heights (widened by the agent height) hold its centre height,
-    the nearest such floor if several do, none if none does.
+    A triangle goes to the floor whose node heights (widened by the agent
+    height) hold its centre height, the nearest such floor if several do,
+    none if none does.
     """
+    return [triangles[chosen][:, :, [0, 2]] for chosen in _ground_floors(result, graph, groups, triangles)]
+
+
+def _walkable(result: RunResult) -> np.ndarray:
+    """(T, 3, 3) walkable triangles (m): the navmesh's detail triangles when there is a navmesh, else the
+    mesh's faces no steeper than the agent's max slope."""
     navmesh = result.context.navmesh
     if navmesh is not None and len(navmesh.detail_triangles):
         triangles = np.asarray(navmesh.detail_vertices, dtype=np.float64)[np.asarray(navmesh.detail_triangles)]
@@ -162,7 +174,7 @@ def _ground(result: RunResult, graph: nx.Graph, groups: list[list[int]]) -> list
         triangles = np.asarray(mesh.triangles)[up]
     else:
         triangles = np.zeros((0, 3, 3))
-    return [triangles[chosen][:, :, [0, 2]] for chosen in _ground_floors(result, graph, groups, triangles)]
+    return triangles
 
 
 def _ground_floors(result: RunResult, graph: nx.Graph, groups: list[list[int]], triangles: np.ndarray) -> list[np.ndarray]:
