@@ -39,9 +39,23 @@ from g2s_core.summary import final_graph, metric_lines, roots_of, stage_rows
 # a run needs them (and trimesh, networkx, scipy through them); listing plugins and checking a config do not
 api, pipeline = lazy_module("g2s_core.api"), lazy_module("g2s_core.pipeline")
 
-EXIT_CODES = "exit codes: 0 success, 2 bad input or config or a failed plugin (named with its package), 1 internal error, 130 interrupted"
+EXIT_CODES = ("exit codes: 0 success, 2 bad input or config or a failed plugin (named with its package), 1 internal error, 130 "
+              "interrupted, 141 the reader of the output left early (| head)")
+EXIT_READER_LEFT = 141
+"""The exit code when the program reading g2s's standard output closes it early, as a shell reports a process that
+SIGPIPE ended: neither bad input (2) nor a bug of g2s (1)."""
 
-__all__ = ["main", "named", "output_folder", "stage_table"]
+
+class Output(Console):
+    """Standard output through rich, ending the command with :data:`EXIT_READER_LEFT` when its reader leaves."""
+
+    def on_broken_pipe(self) -> None:
+        try:
+            super().on_broken_pipe()  # stops writing to the closed pipe, then exits
+        except SystemExit:
+            raise SystemExit(EXIT_READER_LEFT) from None
+
+__all__ = ["EXIT_READER_LEFT", "Output", "main", "named", "output_folder", "stage_table"]
 
 
 class CommandParser(argparse.ArgumentParser):
@@ -153,7 +167,8 @@ def _add_output_options(command: argparse.ArgumentParser) -> None:
 
 def main(argv: Sequence[str] | None = None) -> int:
     """Run ``g2s`` with ``argv`` (default: the process's arguments) and return the exit code: 0 done, 2 bad input
-    or a plugin's failure (one line, ``g2s: error: ...``), 130 interrupted, 1 an internal error."""
+    or a plugin's failure (one line, ``g2s: error: ...``), 130 interrupted, 141 the output's reader left early, 1 an
+    internal error."""
     _answer_version(argv)
     parser, plugged = _parser()
     args = parser.parse_args(argv)
@@ -207,7 +222,7 @@ def _run(args: argparse.Namespace, errors: Console, mesh_name: str | None = None
         result = api.execute(plan, registry, mesh, progress=say, config_files=config_files)
         written = api.write_result(result, args.outdir, formats, force=args.force, progress=say, registry=registry)
     if args.json:  # through rich as all other output, so that a reader that leaves early (`| head`) ends it as quietly
-        Console().out(json.dumps(_summary(result, args.outdir, formats, written), indent=1, sort_keys=True), highlight=False)
+        Output().out(json.dumps(_summary(result, args.outdir, formats, written), indent=1, sort_keys=True), highlight=False)
         return 0
     if mesh.cleaning and not quiet:  # after the run, so that an error stays the one line on stderr
         counts = ", ".join(f"{count} {what.replace('_', ' ')}" for what, count in mesh.cleaning.items())
@@ -215,7 +230,7 @@ def _run(args: argparse.Namespace, errors: Console, mesh_name: str | None = None
     for warning in () if live else result.warnings:  # else they were shown above the spinner
         _warn(errors, warning)
     if not args.quiet:
-        console = Console()
+        console = Output()
         console.print(stage_table(result, title=mesh.name))
         for label, measures in metric_lines(result):
             console.print(f"{label}: {measures}", markup=False, highlight=False, soft_wrap=True)
@@ -232,7 +247,7 @@ def _demo(args: argparse.Namespace, errors: Console) -> int:
     args.config, args.mesh = "demo", f"{SAMPLE_PREFIX}dungeon?seed={args.seed}&rooms={args.rooms}"
     code = _run(args, errors, mesh_name=f"dungeon (seed {args.seed}, {args.rooms} rooms)")
     if code == 0 and not (args.quiet or args.json):
-        Console().print(_demo_hint(args.outdir), markup=False, highlight=False, soft_wrap=True)
+        Output().print(_demo_hint(args.outdir), markup=False, highlight=False, soft_wrap=True)
     return code
 
 
@@ -293,7 +308,7 @@ def stage_table(result: RunResult, title: str = "") -> Table:
 def _plugins(args: argparse.Namespace) -> int:
     """Plugins under their stage's config key; parameters in two columns wrapped to the terminal."""
     registry = installed()
-    console = Console()
+    console = Output()
     lines = []
     for stage in STAGES if args.stage is None else [s for s in STAGES if s.key == args.stage]:
         lines.append(stage.key)
@@ -313,7 +328,7 @@ def _plugins(args: argparse.Namespace) -> int:
 
 
 def _presets() -> int:
-    console = Console()
+    console = Output()
     console.print("\n".join(_columns(list(presets().items()), console.width, 0)), markup=False, highlight=False, soft_wrap=True)
     return 0
 

@@ -124,13 +124,16 @@ def test_json_summary_is_the_only_stdout(tmp_path):
 
 
 def test_a_reader_that_closes_stdout_early_is_no_internal_error(tmp_path):
-    """`g2s run ... --json | head -c 100`: the results are written; stdout's reader left (exit 1, nothing on stderr,
-    as rich ends the other commands' output) and g2s does not call it its own bug."""
+    """`g2s run ... --json | head -c 100`: the results are written; stdout's reader left (exit 141, as a shell
+    reports a process SIGPIPE ended; nothing on stderr) and g2s does not call it its own bug (exit 1)."""
     run = subprocess.Popen([*G2S, "run", "configs/graph_only.yaml", "sample:straight_corridor", "-o", str(tmp_path / "o"),
                             "--json"], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=PROJECT)
     run.stdout.close()
-    assert (run.stderr.read(), run.wait()) == ("", 1)
+    assert (run.stderr.read(), run.wait()) == ("", 141)
     assert (tmp_path / "o" / "graph.json").is_file()
+    listing = subprocess.Popen([*G2S, "plugins"], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=PROJECT)
+    listing.stdout.close()
+    assert (listing.stderr.read(), listing.wait()) == ("", 141)
 
 
 def test_real_level_graph(tmp_path, shared_data):

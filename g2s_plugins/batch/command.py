@@ -17,7 +17,7 @@ from rich.console import Console
 from rich.progress import BarColumn, MofNCompleteColumn, TextColumn
 from rich.progress import Progress as RichProgress
 
-from g2s_core.cli import named, output_folder
+from g2s_core.cli import Output, named, output_folder
 from g2s_core.config import presets
 from g2s_core.errors import G2SError
 from g2s_core.mesh import SAMPLE_PREFIX, SUPPORTED_SUFFIXES
@@ -39,7 +39,8 @@ def g2s_command(parser: argparse.ArgumentParser) -> Callable[[argparse.Namespace
         "(see docs/batch.md). A level that fails is recorded and the batch goes on; a re-run skips the pairs "
         f"already finished for the same config and mesh. {INSTALL_HINT}.")
     parser.epilog = ("exit codes: 0 every pair ran, 4 some pairs failed (see the summary's error column), "
-                     "2 bad config or input, 130 interrupted (finished pairs are kept), 1 internal error of g2s")
+                     "2 bad config or input, 130 interrupted (finished pairs are kept), 141 the reader of the output left early, "
+                     "1 internal error of g2s")
     parser.add_argument("items", nargs="+", metavar="CONFIG|INPUT", type=named("a preset, a config file or a level"),
                         help="configs (the leading preset names and .yaml/.yml files), then levels: mesh files, folders "
                         f"(searched recursively for {' '.join(SUPPORTED_SUFFIXES)}), glob patterns, or "
@@ -93,7 +94,7 @@ def batch(args: argparse.Namespace) -> int:
         errors.print(f"g2s: {row.config} on {row.level} failed: {row.error}", markup=False, highlight=False, soft_wrap=True)
     if not args.quiet:
         reused = int(summary["reused"].sum())
-        Console().print(f"{len(summary)} pairs: {len(summary) - len(failed)} ok ({reused} already finished), "
+        Output().print(f"{len(summary)} pairs: {len(summary) - len(failed)} ok ({reused} already finished), "
                         f"{len(failed)} failed; summary in {args.outdir / 'summary.csv'} and summary.parquet",
                         markup=False, highlight=False, soft_wrap=True)
     return 4 if len(failed) else 0
