@@ -35,6 +35,7 @@ A structure that meets the target costs one measure.
 from __future__ import annotations
 
 import math
+import weakref
 from collections.abc import Callable, Hashable
 
 import networkx as nx
@@ -95,15 +96,23 @@ def keeping(predicate: Predicate, kept: set[Hashable]) -> Predicate:
 
 
 def guaranteed(
-    make_predicate: Callable[[], Predicate], min_rho: float | None, context: RunContext, forest: nx.DiGraph,
+    make_predicate: Callable[[], Predicate], min_rho: float | None, context: RunContext, forest: nx.DiGraph | None,
     simplified: nx.DiGraph | None,
 ) -> Predicate | None:
     """What a predicate hook returns with ``min_heat_rho`` (the hookspec's ``simplified`` protocol): the predicate
-    of ``make_predicate`` first, then, after each structure, ``None`` to keep it or that predicate keeping the
+    of ``make_predicate`` first, then, after each structure, ``None`` to keep it or that same predicate keeping the
     nodes of :func:`restored`."""
     if simplified is None:
-        return make_predicate()
+        predicate = make_predicate()
+        if forest is not None:  # None: asked outside the pipeline, for one predicate
+            _FIRST[forest] = predicate
+        return predicate
     if min_rho is None:
         return None
     kept = restored(context.graph, forest, simplified, min_rho, context)
-    return None if kept is None else keeping(make_predicate(), kept)
+    return None if kept is None else keeping(_FIRST[forest], kept)
+
+
+_FIRST: weakref.WeakKeyDictionary[nx.DiGraph, Predicate] = weakref.WeakKeyDictionary()
+"""The predicate each forest was first simplified with, asked again in the later rounds: its answers depend on the
+chain's nodes alone, and its caches (ray casters, walks, normal tests) hold for every round."""
