@@ -318,6 +318,32 @@ def test_graph_to_csr_is_canonical_and_symmetric():
     assert edge_list(mehlhorn_steiner_tree(graph, [10, 30])) == [(10, 30, 2.5)]
 
 
+def test_distinct_gives_the_sorted_distinct_values():
+    assert _paths.distinct(np.array([5, 3, 5, 1, 3], dtype=np.int64)).tolist() == [1, 3, 5]
+    assert _paths.distinct(np.empty(0, dtype=np.int64)).tolist() == []
+
+
+def test_the_csr_of_a_graph_read_from_its_surface_arrays_when_they_fit():
+    from g2s_plugins.surface_arrays import surface_arrays
+
+    graph = nx.Graph()
+    graph.add_edge(10, 30, weight=2.5)
+    graph.add_edge(20, 30)  # no weight: 1
+    graph.add_edge(10, 20, weight=4.0)
+    # ids inserted out of order (10, 30, 20): rows are not the sorted ids, so not read from the arrays
+    assert _paths.from_surface_arrays(surface_arrays(graph)) is None
+    ordered = nx.Graph()
+    ordered.add_nodes_from([10, 20, 30])
+    ordered.add_edges_from(graph.edges(data=True))
+    csr = _paths.from_surface_arrays(surface_arrays(ordered))
+    assert csr.matrix.toarray().tolist() == [[0.0, 4.0, 2.5], [4.0, 0.0, 1.0], [2.5, 1.0, 0.0]]
+    assert (csr.nodes.tolist(), csr.lo.tolist(), csr.hi.tolist(), csr.weight.tolist()) == ([10, 20, 30], [0, 0, 1], [1, 2, 2], [4.0, 2.5, 1.0])
+    # a zero weight (stored as MIN_LENGTH by the arrays) is kept as it is by the graph's own reading
+    ordered.add_edge(30, 40, weight=0.0)
+    assert _paths.from_surface_arrays(surface_arrays(ordered)) is None
+    assert _paths.graph_to_csr(ordered).weight.tolist() == [4.0, 2.5, 1.0, 0.0]
+
+
 def test_spanning_tree_breaks_ties_by_ends_and_keeps_zeros():
     # A 4-cycle of equal weights: the order (w, lo, hi) drops the largest pair (2, 3).
     a = np.array([2, 0, 1, 3])

@@ -105,7 +105,7 @@ def _walk_in_blocks(
     csr: _paths.CSRGraph, terms: np.ndarray, a: np.ndarray, b: np.ndarray, rows_per_search: int
 ) -> tuple[np.ndarray, np.ndarray]:
     """Path edges of the closure-MST edges ``(a, b)``, searching again from the sources ``a`` in blocks."""
-    sources = np.unique(a)
+    sources = _paths.distinct(a)
     children, parents = [], []
     for start in range(0, sources.shape[0], rows_per_search):
         block = sources[start : start + rows_per_search]
