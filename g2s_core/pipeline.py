@@ -19,7 +19,7 @@ from g2s_core.errors import ConfigError, G2SError
 from g2s_core.model import AnalyzerResult, RunContext, RunResult, StageStats, graph_of
 from g2s_core.plugin import PluginParams
 from g2s_core.registry import PluginInfo, Registry
-from g2s_core.rooted import root_forest
+from g2s_core.rooted import components, root_forest
 from g2s_core.simplify import simplify_forest
 from g2s_core.stages import BY_KEY, PIPELINE
 
@@ -243,19 +243,19 @@ def steiner_forest(
     terminals lie in several components a warning places the largest and names
     the likely cause (:mod:`g2s_core.disconnected`). The forest's nodes and edges share the graph's attribute dicts.
     """
-    components = sorted((sorted(c) for c in nx.connected_components(graph)), key=lambda c: c[0])
-    component_of = {node: index for index, component in enumerate(components) for node in component}
+    ids = np.sort(np.fromiter(graph._node, np.int64, len(graph)))
+    label = components(graph, ids)[3]
     groups: dict[int, list[int]] = {}
-    for terminal in sorted(set(terminals)):
-        groups.setdefault(component_of[terminal], []).append(terminal)
-    if len(groups) > 1:
-        areas = {index: components[index] for index in groups}
+    for index, terminal in zip(label[np.searchsorted(ids, wanted := sorted(set(terminals)))].tolist(), wanted):
+        groups.setdefault(index, []).append(terminal)
+    areas = {index: ids[label == index].tolist() for index in groups} if len(groups) > 1 else {}
+    if areas:
         context.warn(disconnected_warning(graph, areas, sum(map(len, groups.values())), context.agent))
     nodes, edges = [], []
     for index, group in sorted(groups.items()):
         # a subgraph view is slow to iterate: with a single group of terminals
         # the solver gets the whole graph (its other components are unreachable)
-        part = graph if len(groups) == 1 else graph.subgraph(components[index])
+        part = graph if len(groups) == 1 else graph.subgraph(areas[index])
         tree = solve(part, group) if len(group) > 1 else nx.empty_graph(group)  # a lone terminal: its own tree
         nodes += sorted(tree.nodes)
         edges += sorted((u, v) if u <= v else (v, u) for u, v in tree.edges)

@@ -94,3 +94,14 @@ def test_search_order_loop_edges_and_component_order_follow_the_ids():
     assert [(u, v) for u, v, d in rooted.edges(data=True) if d.get("loop")] == [(9, 8)]
     assert [rooted.nodes[n]["depth"] for n in rooted] == [0, 1, 2, 1, 0, 1, 2]
     assert [rooted.nodes[n]["root"] for n in rooted] == [4, 4, 4, 4, 9, 9, 9]
+
+
+def test_components_reads_every_edge_once_and_numbers_components_by_smallest_id():
+    from g2s_core.rooted import components
+
+    # inserted out of order, with a lone node 8: rows 2->0, 3->1, 4->2, 5->3, 7->4, 8->5, 9->6
+    graph = path_forest({n: (0.0, 0.0, 0.0) for n in (9, 7, 8, 5, 2, 4, 3)}, [(9, 7), (5, 2), (4, 3), (3, 2)])
+    lo, hi, count, label = components(graph, np.array([2, 3, 4, 5, 7, 8, 9]))
+    assert sorted(zip(lo.tolist(), hi.tolist())) == [(0, 1), (0, 3), (1, 2), (4, 6)]
+    assert count == 3
+    assert label.tolist() == [0, 0, 0, 0, 1, 2, 1]
