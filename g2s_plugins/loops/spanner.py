@@ -45,6 +45,7 @@ from pydantic import Field
 from scipy.sparse import csgraph
 
 from g2s_core.model import RunContext, graph_of
+from g2s_core.rooted import components
 from g2s_core.plugin import PluginParams, hookimpl
 from g2s_plugins.surface_arrays import SurfaceArrays, surface_arrays
 
@@ -82,11 +83,12 @@ def add_loops(graph: nx.Graph, structure: nx.Graph, stretch: float, min_gain: fl
     if math.isinf(stretch) or nx.is_empty(structure):
         return structure
     arrays = surface_arrays(graph)
-    rows = arrays.rows(sorted(structure))
+    ids = np.array(sorted(structure), dtype=np.int64)
+    rows = arrays.rows(ids.tolist())
     distance, predecessor, cell = csgraph.dijkstra(
         arrays.adjacency, directed=False, indices=rows, min_only=True, return_predecessors=True
     )
-    ends, lengths = _edges(arrays, structure)
+    ends = rows[np.column_stack(components(structure, ids)[:2])]  # (e, 2) rows of its edges' ends, in no set order
     pairs, paths = _candidates(arrays, structure, ends, distance, cell)
     if len(pairs) == 0:
         return structure
@@ -95,30 +97,21 @@ def add_loops(graph: nx.Graph, structure: nx.Graph, stretch: float, min_gain: fl
     violating = np.flatnonzero(along_tree > bound)
     if violating.size == 0:
         return structure
-    neighbours: dict[int, list[tuple[int, float]]] = {}
-    for p, q, length in zip(ends[:, 0].tolist(), ends[:, 1].tolist(), lengths):
-        _join(neighbours, p, q, length)
-    added: list[list[int]] = []
+    paths_ids: list[list[int]] = []
+    joined: dict[int, list[tuple[int, float]]] = {}  # the added paths' edges, by node id
     for k in violating.tolist():  # candidates are sorted by path length
         a, b, x, y = pairs[k]
-        if added and _within(neighbours, int(a), int(b), float(bound[k])):
+        if paths_ids and _within(structure._adj, joined, arrays.nodes[a], arrays.nodes[b], float(bound[k])):
             continue
-        path = _walk(predecessor, x)[::-1] + _walk(predecessor, y)
-        added.append(path)
-        for p, q in zip(path, path[1:]):
-            _join(neighbours, p, q, graph.edges[arrays.nodes[p], arrays.nodes[q]]["weight"])
+        paths_ids.append([arrays.nodes[i] for i in _walk(predecessor, x)[::-1] + _walk(predecessor, y)])
+        for p, q in zip(paths_ids[-1], paths_ids[-1][1:]):
+            joined.setdefault(p, []).append((q, graph._adj[p][q]["weight"]))
+            joined.setdefault(q, []).append((p, graph._adj[p][q]["weight"]))
     # the structure's nodes and edges, then every path's nodes, then every path's edges (the insertion order of
     # adding them path by path), without attributes: the pipeline copies the graph's onto them all at once
-    paths_ids = [[arrays.nodes[i] for i in path] for path in added]
-    nodes = itertools.chain(structure, (node for ids in paths_ids for node in ids))
-    edges = itertools.chain(structure.edges, ((u, v) for ids in paths_ids for u, v in zip(ids, ids[1:])))
+    nodes = itertools.chain(structure, (node for path in paths_ids for node in path))
+    edges = itertools.chain(structure.edges, ((u, v) for path in paths_ids for u, v in zip(path, path[1:])))
     return graph_of(nx.Graph(**structure.graph), {node: {} for node in nodes}, ((u, v, {}) for u, v in edges))
-
-
-def _edges(arrays: SurfaceArrays, structure: nx.Graph) -> tuple[np.ndarray, list[float]]:
-    """(e, 2) rows of the ends of ``structure``'s edges (in its edge order) and their ``weight``, metres."""
-    ends = arrays.rows(itertools.chain.from_iterable(structure.edges)).reshape(-1, 2)
-    return ends, [length for _, _, length in structure.edges(data="weight")]
 
 
 def _candidates(
@@ -183,14 +176,11 @@ def _tree_distances(arrays: SurfaceArrays, forest: nx.Graph, edge_rows: np.ndarr
     return np.where(labels[pairs[:, 0]] == labels[pairs[:, 1]], result, np.inf)
 
 
-def _join(neighbours: dict[int, list[tuple[int, float]]], p: int, q: int, length: float) -> None:
-    """Add the edge p - q of ``length`` metres to an adjacency list."""
-    neighbours.setdefault(p, []).append((q, float(length)))
-    neighbours.setdefault(q, []).append((p, float(length)))
-
-
-def _within(neighbours: dict[int, list[tuple[int, float]]], source: int, target: int, limit: float) -> bool:
-    """Whether ``target`` is at most ``limit`` metres from ``source`` along the structure.
+def _within(
+    adjacency: dict[int, dict[int, dict]], joined: dict[int, list[tuple[int, float]]], source: int, target: int, limit: float
+) -> bool:
+    """Whether ``target`` is at most ``limit`` metres from ``source`` along the structure: its edges (networkx's
+    adjacency dicts, lengths in ``weight``) and the paths ``joined`` to it (node id -> (neighbour, length)).
 
     A Dijkstra that stops at ``limit``: it visits only the structure nodes
     within that distance, whatever the size of the level.
@@ -203,7 +193,8 @@ def _within(neighbours: dict[int, list[tuple[int, float]]], source: int, target:
             return True
         if distance > best[node]:
             continue
-        for other, length in neighbours.get(node, ()):
+        along = [(other, data["weight"]) for other, data in adjacency.get(node, {}).items()]
+        for other, length in along + joined.get(node, []):
             through = distance + length
             if through <= limit and through < best.get(other, math.inf):
                 best[other] = through
