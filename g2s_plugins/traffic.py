@@ -85,8 +85,8 @@ EXACT_NODES = 2000
 """The heat-map guarantee (:mod:`g2s_plugins.heat_guarantee`) and the evaluation's reference
 (:mod:`g2s_plugins.evaluation`) compute the exact walking flow of graphs with at most this many nodes of positive
 weight (``exact_up_to`` of :func:`walking_flow`): a 256-source sample ranks a structure's heat map up to 0.024 of
-rho above the exact flow on levels of 700-1,400 polygons, whose exact flow costs 0.02-0.13 s of CPU (about 0.3 s at
-2,000, O(n (m + n log n)); a `g2s run` of such a level, 2-3.5 s; docs/analysis_quality.md, "A guaranteed heat
+rho above the exact flow on levels of 700-1,400 polygons, whose exact flow costs 0.02-0.13 s of CPU (0.18 s at
+1,974, O(n (m + n log n)); a `g2s run` of such a level, 2.2-3.7 s; docs/analysis_quality.md, "A guaranteed heat
 map")."""
 
 THREADS = min(2, os.cpu_count() or 1)
