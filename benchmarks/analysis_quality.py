@@ -3,7 +3,7 @@
 Run: ``.venv/bin/python benchmarks/analysis_quality.py [--presets map_analysis_paper map_analysis my.yaml]
 [--levels nav_test samples dungeon_1k dungeon_20k dungeon_100k terrain_1k terrain_20k building_1k building_20k
 castle_1k castle_20k subway archipelago car_park forest stadium harbour school cathedral mine ship village market
-my_level.obj]
+office airport sewer lanes prison museum my_level.obj]
 [--seeds 0 1 2] [--yaws 0 30 45]``
 
 For every level and preset it runs the preset with the ``traffic`` evaluator
