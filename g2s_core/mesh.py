@@ -188,7 +188,7 @@ def _files_beside(path: Path) -> trimesh.resolvers.FilePathResolver:
         def get(self, name: str) -> bytes:  # a glTF's uri is URL-encoded ("my%20level.bin"); trimesh does not decode it
             return super().get(name if (Path(self.parent) / name).exists() else unquote(name))
 
-    return RegularFiles(path)
+    return RegularFiles(path, allow_anywhere=True)  # a buffer in "../buffers/", as glTF allows: trimesh 5 refuses it
 
 
 _SINGLE_MESH_FORMATS = ("ply", "stl", "off", "obj")

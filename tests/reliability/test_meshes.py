@@ -322,6 +322,22 @@ def test_a_gltf_whose_buffer_uri_is_url_encoded_is_read(tmp_path):
     assert str(missing.value) == f"{gltf}: buffers[0]: cannot read its file 'floor part 0.bin' beside the glTF file (No such file or directory)"
 
 
+def test_a_gltf_whose_buffer_lies_in_another_folder_is_read(tmp_path):
+    # a glTF may name its buffer by a relative path out of its folder ("../buffers/floor.bin"); trimesh 5 refused it:
+    # "cannot read mesh (ValueError: '../buffers/floor.bin' escapes resolver root ... pass `FilePathResolver(path,
+    # allow_anywhere=True)` to allow it)"
+    (tmp_path / "level").mkdir()
+    (tmp_path / "buffers").mkdir()
+    gltf = _gltf_with_buffer(tmp_path / "level")
+    document = json.loads(gltf.read_text())
+    for buffer in document["buffers"]:
+        (tmp_path / "level" / buffer["uri"]).rename(tmp_path / "buffers" / buffer["uri"])
+        buffer["uri"] = f"../buffers/{buffer['uri']}"
+    gltf.write_text(json.dumps(document))
+    mesh, _ = load_mesh(gltf)
+    assert len(mesh.faces) == 2 and mesh.area == pytest.approx(400)
+
+
 def test_a_gltf_nested_too_deeply_is_a_clean_error(tmp_path, quick_config, capsys):
     # the damage report's own json.loads raised RecursionError: an internal error
     gltf = _damaged(tmp_path, "deep.gltf", b"[" * 100_000 + b"]" * 100_000)
