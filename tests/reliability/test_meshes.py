@@ -338,6 +338,22 @@ def test_a_gltf_whose_buffer_lies_in_another_folder_is_read(tmp_path):
     assert len(mesh.faces) == 2 and mesh.area == pytest.approx(400)
 
 
+@pytest.mark.parametrize("config, vertices", [
+    ("map_piece", "v 0 0 0\nv 5 0 5\nv 10 0 10\n"),  # on a line across the plan: the navmesh's grid is not empty
+    ("map_piece_sampling", "v 0 0 0\nv 5 0 5\nv 10 0 10\n"),
+    ("map_piece_sampling", "v 3 1 2\nv 3 1 2\nv 3 1 2\n"),
+])
+def test_a_mesh_of_zero_area_is_named_so_not_taken_for_z_up(config, vertices, tmp_path, capsys):
+    # a mesh whose triangles all have their corners on a line or at one point (a glTF accessor without its
+    # bufferView reads as zeros) was "no walkable surface ...; most flat faces face along z, not y: if the file is
+    # Z-up, set mesh: {up_axis: z}": no face has area along y, so the flat-area ratio along z was taken as infinite
+    mesh = _damaged(tmp_path / "x", "degenerate.obj", (vertices + "f 1 2 3\nf 3 2 1\n").encode())
+    outcome = run_g2s(capsys, "run", config, mesh, "-o", tmp_path / "out")
+    assert_clean_error(outcome, "every face has zero area (its corners on a line or at one point): the file holds no surface")
+    assert "up_axis" not in outcome.stderr
+    assert tree(tmp_path / "out") == []
+
+
 def test_a_gltf_nested_too_deeply_is_a_clean_error(tmp_path, quick_config, capsys):
     # the damage report's own json.loads raised RecursionError: an internal error
     gltf = _damaged(tmp_path, "deep.gltf", b"[" * 100_000 + b"]" * 100_000)
