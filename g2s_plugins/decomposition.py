@@ -73,7 +73,9 @@ polygons and their shared edges (portals):
 4. Regions are the groups left (``scipy.sparse.csgraph.connected_components``
    of the merged portals, joined passages, pinches and side strips), numbered by their lowest polygon id. Candidates
    between the same two regions that are chained end to end (one opening:
-   Recast's region contours may bend across a wide gap) or closer than
+   Recast's region contours may bend across a wide gap), that end on the same
+   small hole closer together across it than either is wide (a post in a gap:
+   :func:`_post_links`), or closer than
    ``min_separation`` are one chokepoint (the widest portal of them stays:
    a door cut by a tile border is several portals).
 5. A chokepoint is an articulation of the level when it is a bridge of the
@@ -98,9 +100,9 @@ Complexity: clearance O((B + P + E) log B) for B wall pieces, P polygons,
 E portals; extents O(V) for V polygon corners; pinches O(C (Q M + Q log B)) for
 C candidates between corridor-like groups, Q grid points within a cut's reach
 (hundreds) and M polygons near it; side strips O(V + C log C) (extents, then
-sorting the candidates' region pairs); the merge tree sorts the portals and runs one union-find step per
-portal (a Python loop of O(E alpha(P)): a merge order is sequential by
-nature and no library offers it on a general graph); everything else is
+sorting the candidates' region pairs); openings O(C log C + sum of k^2) for k candidate ends on each small
+hole; the merge tree sorts the portals and runs one union-find step per portal (a Python loop of O(E alpha(P)): a
+merge order is sequential by nature and no library offers it on a general graph); everything else is
 numpy/scipy over arrays, networkx only on the small region graph.
 """
 
@@ -232,8 +234,9 @@ def boundary_edges(navmesh: Any) -> tuple[np.ndarray, np.ndarray]:
     return vertices[polygons[rows, cols]], vertices[polygons[rows, following[rows, cols]]]
 
 
-def obstacle_edges(start: np.ndarray, end: np.ndarray, max_area: float) -> np.ndarray:
-    """(B,) bool: boundary edges of holes smaller than ``max_area`` m² (pillars, crates).
+def small_holes(start: np.ndarray, end: np.ndarray, max_area: float) -> np.ndarray:
+    """(B,) int64: the hole (a loop id) of each boundary edge ``start`` -> ``end`` (B,3 each) that bounds a hole
+    smaller than ``max_area`` m² (pillars, crates), -1 for the others.
 
     Boundary edges are joined into loops at equal end points (vertices equal
     to 1 cm, so loops close across tile borders; scipy connected components).
@@ -242,7 +245,7 @@ def obstacle_edges(start: np.ndarray, end: np.ndarray, max_area: float) -> np.nd
     loop with the largest area.
     """
     if len(start) == 0:
-        return np.zeros(0, dtype=bool)
+        return np.zeros(0, dtype=np.int64)
     _, vertex = np.unique(_point_keys(np.concatenate([start, end])), return_inverse=True)
     vertex = vertex.reshape(-1)
     n, b = int(vertex.max()) + 1, len(start)
@@ -252,7 +255,7 @@ def obstacle_edges(start: np.ndarray, end: np.ndarray, max_area: float) -> np.nd
     signed = 0.5 * np.bincount(loop, weights=start[:, 0] * end[:, 2] - end[:, 0] * start[:, 2], minlength=count)
     outer = np.sign(signed[np.argmax(np.abs(signed))])
     small_hole = (np.sign(signed) == -outer) & (np.abs(signed) < max_area)
-    return small_hole[loop]
+    return np.where(small_hole[loop], loop, -1).astype(np.int64)
 
 
 def _point_keys(points: np.ndarray) -> np.ndarray:
@@ -310,6 +313,7 @@ class Clearances:
         widest: (E,3) each portal's point of largest clearance (every wall counted).
         open_walls: the walls the clearances that split the level are measured to (small holes left out):
             start and end points, (B',3) each, m.
+        holes: the small holes' boundary: their edges' start points, (H,3) m, and the hole of each, (H,) int64.
     """
 
     polygons: np.ndarray
@@ -317,6 +321,7 @@ class Clearances:
     portals: np.ndarray
     widest: np.ndarray
     open_walls: tuple[np.ndarray, np.ndarray]
+    holes: tuple[np.ndarray, np.ndarray]
 
 
 def portal_samples(ends: np.ndarray, spacing: float) -> tuple[np.ndarray, np.ndarray]:
@@ -344,13 +349,14 @@ def portal_samples(ends: np.ndarray, spacing: float) -> tuple[np.ndarray, np.nda
 def clearances(navmesh: Any, obstacle_area: float) -> Clearances:
     """The clearances of ``navmesh`` (a portal's is the largest of its :func:`portal_samples`, one navmesh cell apart).
 
-    Small holes (:func:`obstacle_edges`: pillars, crates) are left out of the
+    Small holes (:func:`small_holes`: pillars, crates) are left out of the
     clearances that split the level, so that they neither make a room as
     narrow as its doors nor make passages of their own; the width reported
     for a chokepoint counts them.
     """
     start, end = boundary_edges(navmesh)
-    obstacle = obstacle_edges(start, end, obstacle_area)
+    hole = small_holes(start, end, obstacle_area)
+    obstacle = hole >= 0
     ends = navmesh.portals().endpoints
     points, portal = portal_samples(ends, float(navmesh.settings["cell_size"]))
     walls = _distance_to(points, start[~obstacle], end[~obstacle])
@@ -363,6 +369,7 @@ def clearances(navmesh: Any, obstacle_area: float) -> Clearances:
         portals=every[widest],
         widest=points[widest],
         open_walls=(start[~obstacle], end[~obstacle]),
+        holes=(start[obstacle], hole[obstacle]),
     )
 
 
@@ -629,7 +636,7 @@ def decompose(navmesh: Any, agent: Any, params: DecompositionParams) -> Decompos
         for r in range(count)
     ]
     chokepoints = _chokepoints(np.flatnonzero(blocked), pairs, labels, portals.endpoints, clearance.widest,
-                               2.0 * clearance.portals, floor, params.min_separation)
+                               2.0 * clearance.portals, floor, params.min_separation, clearance.holes)
     return Decomposition(labels, regions, chokepoints)
 
 
@@ -663,33 +670,76 @@ def _region_floors(labels: np.ndarray, count: int, band: np.ndarray, areas: np.n
     return np.where(table.max(axis=1) > 0, table.argmax(axis=1), nearest).astype(np.int64)
 
 
-def _openings(candidates: np.ndarray, sides: np.ndarray, endpoints: np.ndarray) -> np.ndarray:
-    """(C,) int64: the opening of each candidate portal, equal for candidates of the same region pair
-    chained by shared end points (equal to 1 cm; scipy connected components).
+def _openings(candidates: np.ndarray, sides: np.ndarray, endpoints: np.ndarray, width: np.ndarray,
+              holes: tuple[np.ndarray, np.ndarray]) -> np.ndarray:
+    """(C,) int64: the opening of each candidate portal, equal for candidates of the same region pair chained by
+    shared end points (equal to 1 cm), or ending on the same small hole that is shorter between their two ends
+    than both candidates are wide (scipy connected components).
 
     Recast cuts a passage between its regions' contours, which may turn: a wide gap whose cut bends at a
-    contour vertex is two portals end to end, one opening (measured: docs/plugins.md, real levels).
+    contour vertex is two portals end to end, one opening (measured: docs/plugins.md, real levels). A post
+    in a gap (a gravestone, a bollard) parts the cut into portals that end on its outline; the post is a small
+    hole, left out of the clearances that split the level, and the gap on either side of it is wider than the
+    post is between their ends: one opening too. The wall between two doors is a small hole as well, but longer
+    between the doors than a door is wide, so two doors stay two (docs/plugins.md, "One opening, one chokepoint").
+
+    Args:
+        candidates: (C,) portal ids; ``sides``: (C, 2) their region pairs; ``endpoints``: (E, 2, 3) every
+            portal's end points, m; ``width``: (E,) every portal's walkable width, m.
+        holes: the small holes' boundary vertices, (H, 3) m, and the hole of each, (H,) (:class:`Clearances`).
     """
     if len(candidates) == 0:
         return np.zeros(0, dtype=np.int64)
-    _, point = np.unique(_point_keys(endpoints[candidates].reshape(-1, 3)), return_inverse=True)
-    point = point.reshape(-1, 2)
+    ends = endpoints[candidates].reshape(-1, 3)
+    _, point = np.unique(_point_keys(np.concatenate([ends, holes[0]])), return_inverse=True)
+    point = point.reshape(-1)
+    hole_of = np.full(int(point.max()) + 1, -1, dtype=np.int64)
+    hole_of[point[len(ends):]] = holes[1]
+    point = point[: len(ends)].reshape(-1, 2)
     _, pair = np.unique(sides, axis=0, return_inverse=True)
-    n, c = int(point.max()) + 1, len(candidates)
+    pair = pair.reshape(-1)
+    n = len(hole_of)
     # a candidate joins its two end points, each taken within its region pair
-    ends = pair.reshape(-1)[:, None] * n + point
-    _, node = np.unique(ends, return_inverse=True)
+    _, node = np.unique(pair[:, None] * n + point, return_inverse=True)
     node = node.reshape(-1, 2)
-    links = sparse.coo_array((np.ones(c), (node[:, 0], node[:, 1])), shape=(int(node.max()) + 1,) * 2)
-    return csgraph.connected_components(links, directed=False)[1][node[:, 0]].astype(np.int64)
+    posts = _post_links(pair, hole_of[point], ends.reshape(-1, 2, 3), width[candidates])
+    links = np.concatenate([node, np.column_stack([node[posts[:, 0], 0], node[posts[:, 1], 0]])])
+    graph = sparse.coo_array((np.ones(len(links)), (links[:, 0], links[:, 1])), shape=(int(node.max()) + 1,) * 2)
+    return csgraph.connected_components(graph, directed=False)[1][node[:, 0]].astype(np.int64)
+
+
+def _post_links(pair: np.ndarray, hole: np.ndarray, ends: np.ndarray, width: np.ndarray) -> np.ndarray:
+    """(K, 2) candidate pairs of one region pair with an end point each on one small hole that lies closer to
+    the other's than either candidate is wide (a post in a gap; :func:`_openings`).
+
+    Args:
+        pair: (C,) each candidate's region pair; ``hole``: (C, 2) the small hole each end point lies on (-1:
+            none); ``ends``: (C, 2, 3) the end points, m; ``width``: (C,) walkable widths, m.
+    """
+    candidate, end = np.nonzero(hole >= 0)
+    order = np.lexsort((candidate, hole[candidate, end], pair[candidate]))
+    candidate, end = candidate[order], end[order]
+    key = np.column_stack([pair[candidate], hole[candidate, end]])
+    starts = np.flatnonzero(np.r_[True, (key[1:] != key[:-1]).any(axis=1)])
+    found = []
+    for group in np.split(np.arange(len(candidate)), starts[1:]):  # a few end points on each hole
+        if len(group) < 2:
+            continue
+        i, j = np.triu_indices(len(group), 1)
+        a, b = candidate[group[i]], candidate[group[j]]
+        gap = np.linalg.norm(ends[a, end[group[i]]] - ends[b, end[group[j]]], axis=1)
+        keep = (a != b) & (gap < np.minimum(width[a], width[b]))
+        found.append(np.column_stack([a[keep], b[keep]]))
+    return np.concatenate(found) if found else np.zeros((0, 2), dtype=np.int64)
 
 
 def _chokepoints(candidates: np.ndarray, pairs: np.ndarray, labels: np.ndarray, endpoints: np.ndarray,
-                 widest: np.ndarray, width: np.ndarray, floor: np.ndarray, separation: float) -> list[dict[str, Any]]:
+                 widest: np.ndarray, width: np.ndarray, floor: np.ndarray, separation: float,
+                 holes: tuple[np.ndarray, np.ndarray]) -> list[dict[str, Any]]:
     """One record per chokepoint: candidates grouped by region pair, widest first; the others of an
-    opening (:func:`_openings`) and near ones dropped."""
+    opening (:func:`_openings`, ``holes`` as there) and near ones dropped."""
     sides = np.sort(labels[pairs[candidates]], axis=1)
-    opening = _openings(candidates, sides, endpoints)
+    opening = _openings(candidates, sides, endpoints, width, holes)
     order = np.lexsort((candidates, -width[candidates], sides[:, 1], sides[:, 0]))
     kept: list[dict[str, Any]] = []
     kept_at: dict[tuple[int, int], list[np.ndarray]] = {}

@@ -90,9 +90,9 @@ def test_small_holes_are_obstacles_and_outer_walls_are_not():
     pillar = square(5.0, 5.0, 2.0, clockwise=True)  # 4 m²
     block = square(10.0, 10.0, 5.0, clockwise=True)  # 25 m²
     start, end = (np.concatenate(parts) for parts in zip(outer, pillar, block))
-    flags = decomposition.obstacle_edges(start, end, max_area=16.0)
+    flags = decomposition.small_holes(start, end, max_area=16.0) >= 0
     assert flags.tolist() == [False] * 4 + [True] * 4 + [False] * 4
-    assert not decomposition.obstacle_edges(start, end, max_area=0.0).any()
+    assert (decomposition.small_holes(start, end, max_area=0.0) < 0).all()
 
 
 def test_distance_to_walls_is_exact_for_long_walls():
@@ -164,14 +164,38 @@ def test_a_wide_gap_cut_by_two_portals_is_one_chokepoint():
     assert [sum(a - 1 <= c["position"][0] <= b + 1 for c in found) for a, b in gaps] == [1, 1, 1]
 
 
+def test_a_post_in_a_gap_leaves_one_chokepoint():
+    # a 1 m post in the middle of a 14 m gap parts the cut between the fields into portals that end on the post's
+    # outline; the post is narrower between them than either is wide, so the gap is one opening: one chokepoint
+    # (there were two, 5.5 and 5.0 m, as at the gravestones in the cathedral churchyard's gaps)
+    post = trimesh.creation.box(extents=(1.0, 1.0, 1.0)).apply_translation((0.3, 0.5, 0.0))
+    level = SimpleNamespace(mesh=trimesh.util.concatenate([open_fields([(-7.0, 7.0)]).mesh, post]), name="post")
+    result = run(level)
+    fields = sorted(r["id"] for r in sorted(regions(result), key=lambda r: -r["area"])[:2])
+    between = [c for c in chokepoints(result) if c["regions"] == fields]
+    assert len(between) == 1 and -7.0 <= between[0]["position"][0] <= 7.0
+
+
+def test_portals_beside_a_post_narrower_than_both_are_one_opening():
+    # three portals of one region pair end on small hole 7: the first two 2 m apart across it, each 5 m wide
+    # (a post in a gap), the second and third 3 m apart, the third 1 m wide (the wall between two doors)
+    pair = np.zeros(3, dtype=np.int64)
+    hole = np.array([[-1, 7], [7, 7], [7, -1]])
+    ends = np.array([[[0.0, 0, 0], [5, 0, 0]], [[7, 0, 0], [12, 0, 0]], [[15, 0, 0], [16, 0, 0]]])
+    links = decomposition._post_links(pair, hole, ends, np.array([5.0, 5.0, 1.0]))
+    assert links.tolist() == [[0, 1]]
+    assert len(decomposition._post_links(pair, hole, ends, np.array([1.5, 5.0, 1.0]))) == 0
+
+
 def test_two_chokepoints_between_the_same_regions_are_not_articulations():
     # closing one of two passages between the same two regions leaves the other (rustworkx's bridges
     # sees the two edges of the region multigraph as one: both were flagged)
     pairs = np.array([[0, 1], [2, 3], [4, 5]])
     labels = np.array([0, 1, 0, 1, 1, 2])
     ends = np.array([[[0.0, 0, 0], [1, 0, 0]], [[10, 0, 0], [11, 0, 0]], [[20, 0, 0], [21, 0, 0]]])
+    no_holes = (np.zeros((0, 3)), np.zeros(0, dtype=np.int64))
     found = decomposition._chokepoints(np.arange(3), pairs, labels, ends, ends[:, 0], np.ones(3),
-                                       np.zeros(3, dtype=np.int64), separation=3.0)
+                                       np.zeros(3, dtype=np.int64), separation=3.0, holes=no_holes)
     assert [(c["regions"], c["articulation"]) for c in found] == [([0, 1], False), ([0, 1], False), ([1, 2], True)]
 
 
