@@ -21,9 +21,12 @@ polygons and their shared edges (portals):
    boundary loops of the hole orientation enclosing less than
    ``obstacle_area`` m²: pillars, crates) are left out of the clearances
    that split the level, so they neither make a room as narrow as its doors
-   nor make passages of their own. ``width = 2 x clearance`` with every wall
-   counted is the walkable width reported for a chokepoint (add the agent's
-   diameter for wall to wall).
+   nor make passages of their own; but a small hole that is a piece of wall
+   between two openings (:func:`wall_pieces`: long for its width, its ends
+   near other walls, its long sides not) counts as a wall, so that a front of
+   doors is not one opening as wide as the front. ``width = 2 x clearance``
+   with every wall counted is the walkable width reported for a chokepoint
+   (add the agent's diameter for wall to wall).
 2. Merge tree (watershed by clearance). Portals are taken widest first and
    join the groups of polygons on their two sides (union-find), except when
    both groups are already *rooms*: they hold at least ``min_region_area`` m²
@@ -101,8 +104,9 @@ E portals; extents O(V) for V polygon corners; pinches O(C (Q M + Q log B)) for
 C candidates between corridor-like groups, Q grid points within a cut's reach
 (hundreds) and M polygons near it; side strips O(V + C log C) (extents, then
 sorting the candidates' region pairs); openings O(C log C + sum of k^2) for k candidate ends on each small
-hole; the merge tree sorts the portals and runs one union-find step per portal (a Python loop of O(E alpha(P)): a
-merge order is sequential by nature and no library offers it on a general graph); everything else is
+hole; wall pieces O(B) and O(B) more per elongated small hole (few: pillars are compact); the merge tree sorts the
+portals and runs one union-find step per portal (a Python loop of O(E alpha(P)): a merge order is sequential by
+nature and no library offers it on a general graph); everything else is
 numpy/scipy over arrays, networkx only on the small region graph.
 """
 
@@ -162,6 +166,12 @@ region at both ends (:func:`join_side_strips`). Measured (docs/plugins.md, "Leve
 farthest pair's distance over the extent): a warehouse aisle turned 45 degrees 1.00, pieces of pillared dungeon rooms
 cut off by pillar gaps 0.82-0.84, the part of a pillared room holding its centre (the rest gone to the next room
 through its corridor) 0.56."""
+
+WALL_PIECE_ELONGATION = 3.0
+"""A small hole whose longest plan extent squared is at least this many times its area (a rectangle 2.6 times as
+long as it is wide or more) and whose ends lie near other walls is a piece of wall between openings
+(:func:`wall_pieces`). Measured: square pillars and posts 1.7-2.0, the cathedral's west front between its doors
+3.26 (docs/plugins.md, "One opening, one chokepoint")."""
 
 EXTENT_DIRECTIONS = 8
 """Directions, evenly spread over 180 degrees, along which a region's longest extent is measured
@@ -258,6 +268,51 @@ def small_holes(start: np.ndarray, end: np.ndarray, max_area: float) -> np.ndarr
     return np.where(small_hole[loop], loop, -1).astype(np.int64)
 
 
+def wall_pieces(start: np.ndarray, end: np.ndarray, hole: np.ndarray) -> np.ndarray:
+    """(B,) bool: the edges of small holes (``hole`` (B,), :func:`small_holes`) that are pieces of wall between
+    openings, not pillars: elongated (longest plan extent squared at least :data:`WALL_PIECE_ELONGATION` times
+    the area), with both its ends (its extreme corners along that extent) nearer to the other walls (other holes'
+    too) than it is long, and the middles of both its long sides farther from them than either end is.
+
+    The wall between two doors is a small hole whose ends face the doors' far jambs, with a room on either
+    side; a pillar or a post is compact, a pair of gravestones grown into one hole stands in open ground, and a
+    row of desks has the next row or a wall beside it as near as the aisles at its ends. Counting the pieces as walls
+    keeps a front of three doors from reading as one opening as wide as the front (docs/plugins.md, "One
+    opening, one chokepoint"). Cost: O(B) for the holes' extents, then O(B) per elongated hole (the walls near
+    its ends, whose distance is then exact: :func:`_distance_to`).
+    """
+    piece = np.zeros(len(start), dtype=bool)
+    member = np.flatnonzero(hole >= 0)
+    ids, index = np.unique(hole[member], return_inverse=True)
+    if len(ids) == 0:
+        return piece
+    a, b = start[member], end[member]
+    area = 0.5 * np.abs(np.bincount(index, weights=a[:, 0] * b[:, 2] - b[:, 0] * a[:, 2], minlength=len(ids)))
+    spreads = directional_spreads(a[:, [0, 2]], index, len(ids))
+    direction = np.argmax(spreads, axis=1)
+    extent = spreads[np.arange(len(ids)), direction]
+    elongated = extent**2 >= WALL_PIECE_ELONGATION * area
+    if not elongated.any():
+        return piece
+    plan_low, plan_high = np.minimum(start, end)[:, [0, 2]], np.maximum(start, end)[:, [0, 2]]
+    for k in np.flatnonzero(elongated):  # few: pillars and posts are compact
+        corners = a[index == k]
+        angle = direction[k] * math.pi / EXTENT_DIRECTIONS
+        axis = np.array([math.cos(angle), math.sin(angle)])
+        across = np.array([-axis[1], axis[0]])
+        lengthwise, crosswise = corners[:, [0, 2]] @ axis, corners[:, [0, 2]] @ across
+        middle = 0.5 * (lengthwise.min() + lengthwise.max()) * axis
+        sides = np.stack([middle + crosswise.min() * across, middle + crosswise.max() * across])  # long sides' middles
+        points = np.concatenate([corners[[np.argmin(lengthwise), np.argmax(lengthwise)]],
+                                 np.insert(sides, 1, corners[:, 1].mean(), axis=1)])
+        box_low, box_high = points[:, [0, 2]].min(axis=0) - extent[k], points[:, [0, 2]].max(axis=0) + extent[k]
+        nearby = (plan_high >= box_low).all(axis=1) & (plan_low <= box_high).all(axis=1)
+        other = np.flatnonzero(nearby & (hole != ids[k]))
+        gaps, room = np.split(_distance_to(points, start[other], end[other]), 2)
+        piece[member[index == k]] = bool((gaps <= extent[k]).all() and room.min() > gaps.max())
+    return piece
+
+
 def _point_keys(points: np.ndarray) -> np.ndarray:
     """(N,) int64 keys equal for points equal to 1 cm (21 bits a coordinate: levels up to 20 km across)."""
     cells = np.round(points * 100.0).astype(np.int64)
@@ -349,13 +404,14 @@ def portal_samples(ends: np.ndarray, spacing: float) -> tuple[np.ndarray, np.nda
 def clearances(navmesh: Any, obstacle_area: float) -> Clearances:
     """The clearances of ``navmesh`` (a portal's is the largest of its :func:`portal_samples`, one navmesh cell apart).
 
-    Small holes (:func:`small_holes`: pillars, crates) are left out of the
+    Small holes (:func:`small_holes`: pillars, crates; not :func:`wall_pieces`) are left out of the
     clearances that split the level, so that they neither make a room as
     narrow as its doors nor make passages of their own; the width reported
     for a chokepoint counts them.
     """
     start, end = boundary_edges(navmesh)
     hole = small_holes(start, end, obstacle_area)
+    hole[wall_pieces(start, end, hole)] = -1
     obstacle = hole >= 0
     ends = navmesh.portals().endpoints
     points, portal = portal_samples(ends, float(navmesh.settings["cell_size"]))
@@ -411,13 +467,20 @@ def plan_spreads(xz: np.ndarray, owner: np.ndarray, count: int) -> np.ndarray:
     """(count,) how far apart each group's points reach in plan, m: the largest of their spreads along
     :data:`EXTENT_DIRECTIONS` directions evenly spread over 180 degrees (within 2 % of the farthest pair's
     distance); 0 for a group with no point. ``xz``: (V, 2) points, ``owner``: (V,) the group of each."""
+    return directional_spreads(xz, owner, count).max(axis=1)
+
+
+def directional_spreads(xz: np.ndarray, owner: np.ndarray, count: int) -> np.ndarray:
+    """(count, D) how far each group's points ``xz`` (V, 2) reach along each of the D = :data:`EXTENT_DIRECTIONS`
+    directions at angles ``d * 180 / D`` degrees from +x towards +z, m (0 for a group with no point; ``owner``
+    (V,) is the group of each point)."""
     angle = np.arange(EXTENT_DIRECTIONS) * (math.pi / EXTENT_DIRECTIONS)
     along = xz @ np.stack([np.cos(angle), np.sin(angle)])  # (V, D) each point along each direction
     low = np.full((count, EXTENT_DIRECTIONS), np.inf)
     high = np.full((count, EXTENT_DIRECTIONS), -np.inf)
     np.minimum.at(low, owner, along)
     np.maximum.at(high, owner, along)
-    return np.where(np.isfinite(low), high - low, 0.0).max(axis=1)
+    return np.where(np.isfinite(low), high - low, 0.0)
 
 
 def longest_extents(navmesh: Any, labels: np.ndarray, count: int) -> np.ndarray:
