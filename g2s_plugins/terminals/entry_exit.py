@@ -691,10 +691,11 @@ def _passages(
     At every search step in from the edge, as deep as its samples stand from it (the wall's thickness
     and the erosion), rays each way along the edge from the opening's middle. At the rays' height:
     bars or a grille in the wall leave gaps narrower than the agent however wide the hole. One search
-    step above the climb (over what the agent steps onto, such as a low slab of rubble): a leaf or a
-    chunk standing in the passage leaves its free part. Returns (n,) the narrowest width at the rays'
-    height, m, and (n,) (n,) how far the narrowest free part above the climb reaches from the middle
-    towards ``first`` and towards ``last`` (along the edge, m; infinite where nothing stands).
+    step above the climb (over what the agent steps onto, such as a low slab of rubble, and not
+    stopped by ground it walks onto): a leaf or a chunk standing in the passage leaves its free
+    part. Returns (n,) the narrowest width at the rays' height, m, and (n,) (n,) how far the
+    narrowest free part above the climb reaches from the middle towards ``first`` and towards
+    ``last`` (along the edge, m; infinite where nothing stands).
     """
     out = np.array([e.outward for e in kept])
     nrm = np.array([e.normal for e in kept])
@@ -709,11 +710,14 @@ def _passages(
         inside = mid[rows] - out[rows] * (k * s.delta)
         points = np.concatenate([inside + UP * s.lift, inside + UP * (s.climb + s.delta)])
         directions = np.concatenate([along[rows], along[rows]])
-        forward = caster.first_hits(points, directions).distance.reshape(2, -1)
-        backward = caster.first_hits(points, -directions).distance.reshape(2, -1)
-        widths[rows] = np.minimum(widths[rows], forward[0] + backward[0])
-        to_last = np.where(towards_last[rows], forward[1], backward[1])
-        to_first = np.where(towards_last[rows], backward[1], forward[1])
+        hits_ahead, hits_back = caster.first_hits(points, directions), caster.first_hits(points, -directions)
+        low, high = slice(0, len(rows)), slice(len(rows), None)
+        widths[rows] = np.minimum(widths[rows], hits_ahead.distance[low] + hits_back.distance[low])
+        # Above the climb, ground the agent walks onto (a terrain rising beside its border) is in no one's way.
+        forward, backward = (np.where(h.hit & _walkable(caster, h.face, s), np.inf, h.distance)[high]
+                             for h in (hits_ahead, hits_back))
+        to_last = np.where(towards_last[rows], forward, backward)
+        to_first = np.where(towards_last[rows], backward, forward)
         narrower = to_first + to_last < free[rows]
         rows = rows[narrower]
         free[rows], back[rows], ahead[rows] = (to_first + to_last)[narrower], to_first[narrower], to_last[narrower]
