@@ -3,7 +3,7 @@
 Run: ``.venv/bin/python benchmarks/analysis_quality.py [--presets map_analysis_paper map_analysis my.yaml]
 [--levels nav_test samples dungeon_1k dungeon_20k dungeon_100k terrain_1k terrain_20k building_1k building_20k
 castle_1k castle_20k subway archipelago car_park forest stadium harbour school cathedral mine ship village market
-my_level.obj]
+office airport sewer lanes prison museum my_level.obj]
 [--seeds 0 1 2] [--yaws 0 30 45]``
 
 For every level and preset it runs the preset with the ``traffic`` evaluator
@@ -24,7 +24,8 @@ left out of them ("nav out"), the structure's size as
 a share of the polygons, the run's CPU time (``time.process_time``: the
 machine is shared; the evaluation included), the wall time of every stage
 but the evaluation ("total s") and that of the evaluation, which computes
-the reference flow (exact up to 512 nodes, 512 area-sampled sources above)
+the reference flow (exact up to 2,000 nodes, :data:`g2s_plugins.traffic.EXACT_NODES`; 512 area-sampled sources
+above; exact up to 512 before 4 December 2026)
 for each run, the number of navmesh regions left overlapping themselves in plan
 ("overlap", :attr:`g2s_plugins.recast.NavMesh.region_overlaps`) and of tiles the
 ``auto`` partition rebuilt because watershed overlapped there ("redone",

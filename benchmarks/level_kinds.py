@@ -1,4 +1,4 @@
-"""Level kinds of the fifth and sixth held-out rounds (issue 9): generators no preset setting was made on.
+"""Level kinds of the fifth, sixth and seventh held-out rounds (issue 9): generators no preset setting was made on.
 
 Fifth round: six kinds, each about 1,000 navmesh polygons with the presets' agent (radius 0.5 m, height 2 m, climb 0.4 m):
 ``subway`` (platforms, track pits 1.2 m lower, stairs up to two concourses), ``archipelago`` (islands joined by
@@ -19,6 +19,16 @@ crates, streets, a hall). The same rule holds: the floor stops inside the mine's
 engine and funnel are too low or too narrow to hold a floor. Stairs rise at most 0.18 m a step: with 0.2 m
 risers Recast's ledge filter cuts the flight at the presets' 0.4 m climb (found on a first draft of the ship).
 
+Seventh round: six more kinds, 734-1,216 navmesh polygons with that agent (seeds 0-2): ``office`` (three
+open-plan storeys of cubicles behind 1.2 m partitions round a solid core), ``airport`` (check-in hall, security
+line, a 360-390 m concourse with gate holdrooms, jet bridges, shops, moving walkways and a mezzanine), ``sewer``
+(a grid of tunnels, channels between walkways, chambers, footbridges, side rooms), ``lanes`` (a three-lane
+multiplayer arena, symmetric under a half turn, with catwalks, a bridge and jump-down ledges), ``prison`` (three
+cell blocks of two tiers round open wells with galleries and bridges, a mess hall, a yard) and ``museum``
+(galleries in enfilade on two storeys, an entrance hall open to the roof with a grand flight). Tops of tall
+solids that a first draft left flat (the office's core, the arena's blocks, the prison's guard post) are
+ridged or pointed at 50 degrees, which no agent stands on; the ground stops under the arena's tall blocks.
+
 Run: ``.venv/bin/python benchmarks/level_kinds.py OUT_DIR [--kinds subway forest] [--seeds 0 1 2]`` writes
 ``OUT_DIR/<kind>_s<seed>.obj``, the files ``benchmarks/analysis_quality.py --levels`` takes (which also takes the
 kinds' names and builds them with ``--seeds``).
@@ -34,6 +44,14 @@ from pathlib import Path
 
 import numpy as np
 import trimesh
+
+
+def _cut_lines(x0: float, x1: float, z0: float, z1: float,
+               holes: list[tuple[float, float, float, float]]) -> tuple[np.ndarray, np.ndarray]:
+    """The sorted x (k,) and z (m,) of the rectangle [x0, x1] x [z0, z1]'s edges and its holes' edges, clipped to it."""
+    xs = np.unique(np.clip([x0, x1, *[h[i] for h in holes for i in (0, 1)]], x0, x1))
+    zs = np.unique(np.clip([z0, z1, *[h[i] for h in holes for i in (2, 3)]], z0, z1))
+    return xs, zs
 
 
 class _Solids:
@@ -61,13 +79,34 @@ class _Solids:
 
         Cut along every hole's edges into a grid of rectangles; the cells outside all holes are kept.
         """
-        xs = np.unique(np.clip([x0, x1, *[h[i] for h in holes for i in (0, 1)]], x0, x1))
-        zs = np.unique(np.clip([z0, z1, *[h[i] for h in holes for i in (2, 3)]], z0, z1))
+        xs, zs = _cut_lines(x0, x1, z0, z1, holes)
         for a, b in zip(xs[:-1], xs[1:]):
             for c, d in zip(zs[:-1], zs[1:]):
                 mx, mz = (a + b) / 2, (c + d) / 2
                 if not any(h[0] < mx < h[1] and h[2] < mz < h[3] for h in holes):
                     self.box(a, b, top - thickness, top, c, d)
+
+    def ground(self, x0: float, x1: float, z0: float, z1: float, top: float, holes: list[tuple[float, float, float, float]],
+               thickness: float = 0.5) -> None:
+        """Ground over [x0, x1] x [z0, z1] with its top at ``top``, stopping under each hole (x0, x1, z0, z1).
+
+        As :meth:`slab`, but the cells of a strip between two cut lines along x are joined into one box per run
+        outside the holes: about (strips x holes crossing them) boxes for many holes, not (2 holes)^2.
+        """
+        xs, zs = _cut_lines(x0, x1, z0, z1, holes)
+        for a, b in zip(xs[:-1], xs[1:]):
+            mx = (a + b) / 2
+            start = None
+            for c, d in zip(zs[:-1], zs[1:]):
+                mz = (c + d) / 2
+                if any(h[0] < mx < h[1] and h[2] < mz < h[3] for h in holes):
+                    if start is not None:
+                        self.box(a, b, top - thickness, top, start, c)
+                    start = None
+                elif start is None:
+                    start = c
+            if start is not None:
+                self.box(a, b, top - thickness, top, start, zs[-1])
 
     def stairs(self, start: np.ndarray, heading: np.ndarray, width: float, y0: float, rise: float,
                riser: float = 0.15, tread: float = 0.30) -> None:
@@ -1052,10 +1091,498 @@ def market(seed: int) -> trimesh.Trimesh:
     return s.mesh()
 
 
+def office(seed: int) -> trimesh.Trimesh:
+    """Three open-plan office storeys 3.8 m apart on a 64-72 x 40-46 m plate, round a solid 16 x 8 m core (lifts,
+    risers: no floor inside it), joined by straight flights (0.173 / 0.28 m steps, 2 m wide, railed round their
+    slots) beside each end of the core, side by side: storey k's flights in lane k. Along one long side a row of
+    meeting rooms 5 m deep (0.12 m glass walls to the ceiling, a 1.6 m door each, a table); the rest is clusters of
+    cubicles, 3.2 x 3.2 m, two deep, back to back, between partitions 1.2 m high and 0.06 m thick (under the
+    agent's 2 m, but not walked over), each entered through a 1.6 m gap in its front and holding a desk 0.7 m deep
+    along its back; aisles 1.8-2.4 m between clusters.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    size_x, size_z, storey, storeys, cube = rng.uniform(64.0, 72.0), rng.uniform(40.0, 46.0), 3.8, 3, 3.2
+    xc, zc = size_x / 2, size_z / 2
+    core = (xc - 8.0, xc + 8.0, zc - 4.0, zc + 4.0)
+    riser, tread = storey / 22, 0.28
+    run = 22 * tread
+    flight_lanes = [[(core[0] - 3.4 - 2.4 * k, core[0] - 1.4 - 2.4 * k), (core[1] + 1.4 + 2.4 * k, core[1] + 3.4 + 2.4 * k)]
+              for k in range(storeys - 1)]  # x extents of storey k's two flights
+    slots = [[(x0, x1, zc - run / 2 - 0.4, zc + run / 2) for x0, x1 in lane] for lane in flight_lanes]
+    s.slab(0.0, size_x, 0.0, size_z, 0.0, [core])
+    for k in range(1, storeys):
+        s.slab(0.0, size_x, 0.0, size_z, k * storey, [core, *slots[k - 1]])
+    top = storeys * storey - 0.3  # the core's top is a roof no one stands on
+    s.hull(np.array([[x, y, z] for x in core[:2] for z in core[2:] for y in (-0.3, top)] + [[x, top + 5.0, zc] for x in core[:2]]))
+    for k, lane in enumerate(flight_lanes):
+        for x0, x1 in lane:
+            s.stairs(np.array([(x0 + x1) / 2, zc - run / 2]), np.array([0.0, 1.0]), x1 - x0, k * storey, storey, riser, tread)
+    for k in range(storeys):
+        y = k * storey
+        for a, b in (((0.0, 0.0), (size_x, 0.0)), ((0.0, size_z), (size_x, size_z)),
+                     ((0.0, 0.0), (0.0, size_z)), ((size_x, 0.0), (size_x, size_z))):
+            s.wall(a, b, y, y + storey - 0.3, thickness=0.3)
+        for x0, x1, z0, z1 in slots[k - 1] if k > 0 else []:  # railing round each slot, open where the flight arrives
+            for a, b in (((x0, z0), (x1, z0)), ((x0, z0), (x0, z1)), ((x1, z0), (x1, z1))):
+                s.wall(a, b, y, y + 1.0, thickness=0.1)
+        back = size_z - 5.0  # meeting rooms along the back, a glass wall in front with a door each
+        edges = [0.0, *np.cumsum(rng.uniform(4.5, 7.0, size=40))]
+        edges = [e for e in edges if e < size_x - 4.0] + [size_x]
+        doors = [(a + rng.uniform(0.5, b - a - 2.1), 1.6) for a, b in pairwise(edges)]
+        s.wall((0.0, back), (size_x, back), y, y + storey - 0.3, doors, thickness=0.12)
+        for x in edges[1:-1]:
+            s.wall((x, back), (x, size_z), y, y + storey - 0.3, thickness=0.12)
+        for a, b in pairwise(edges):  # a table in each room
+            s.box((a + b) / 2 - 1.0, (a + b) / 2 + 1.0, y, y + 0.75, back + 1.8, back + 3.2)
+        z = 2.5  # clusters of cubicles: two rows back to back, opening toward the aisles
+        while z + 2 * cube < back - 2.0:
+            x = 2.5
+            while True:
+                cubes = int(rng.integers(2, 6))
+                x1 = x + cube * cubes
+                if x1 > size_x - 2.5:
+                    break
+                stairs_x = (flight_lanes[-1][0][0] - 1.5, flight_lanes[-1][1][1] + 1.5)
+                clear = x1 < stairs_x[0] or x > stairs_x[1] or z + 2 * cube < core[2] - 2.5 or z > core[3] + 2.5
+                if clear:
+                    s.wall((x, z + cube), (x1, z + cube), y, y + 1.2, thickness=0.06)  # the spine
+                    for i in range(cubes + 1):
+                        s.wall((x + cube * i, z), (x + cube * i, z + 2 * cube), y, y + 1.2, thickness=0.06)
+                    for i in range(cubes):
+                        a = x + cube * i
+                        gap = rng.uniform(0.2, cube - 1.8)
+                        for front, inner in ((z, z + cube), (z + 2 * cube, z + cube)):
+                            s.wall((a, front), (a + cube, front), y, y + 1.2, [(gap, 1.6)], thickness=0.06)
+                            c0, c1 = sorted((inner, inner - 0.73 if inner > front else inner + 0.73))
+                            s.box(a + 0.03, a + cube - 0.03, y, y + 0.75, c0, c1)
+                x = x1 + rng.uniform(1.8, 2.4)
+            z += 2 * cube + rng.uniform(1.8, 2.4)
+    return s.mesh()
+
+
+def airport(seed: int) -> trimesh.Trimesh:
+    """An airport terminal: a check-in hall 50 x 40 m (islands of counters and belts 1 m high), a security line
+    (cabinets 0.8 m wide, passages 1.2 m) into an airside concourse 220-250 m long and 18-22 m wide. South of the
+    concourse 8-10 gate holdrooms 18-24 m wide, open to it, with rows of seats 0.45 m high, a desk and a jet bridge
+    (a corridor 2.6 m wide, 14-18 m long, a dead end) each; north of it shops 10 m deep behind storefronts with a
+    4 m opening, under a mezzanine (a lounge 5 m up, 40-50 m long, over the shops and a 4 m strip of the
+    concourse, railed, with sofas) reached by a flight at each end (0.179 / 0.28 m steps, 2.4 m wide). Two pairs
+    of moving walkways (1.4 m belts 0.15 m up, 40-60 m long, 1 m balustrades both sides, open at the ends) run
+    down the concourse's middle.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    length, width = rng.uniform(360.0, 390.0), rng.uniform(18.0, 22.0)
+    shop_depth, wall_h = 10.0, 8.0
+    s.box(-50.0, 0.0, -0.5, 0.0, -10.0, 30.0)  # the check-in hall, x < 0
+    s.box(0.0, length, -0.5, 0.0, 0.0, width + shop_depth)  # concourse and the shops' floor
+    s.wall((-50.0, -10.0), (-50.0, 30.0), -0.5, wall_h, [(16.0, 8.0)], thickness=0.4)  # the landside doors
+    s.wall((-50.0, -10.0), (0.0, -10.0), -0.5, wall_h, thickness=0.4)
+    s.wall((-50.0, 30.0), (0.0, 30.0), -0.5, wall_h, thickness=0.4)
+    s.wall((0.0, -10.0), (0.0, 0.0), -0.5, wall_h, thickness=0.4)
+    s.wall((0.0, width + shop_depth), (0.0, 30.0), -0.5, wall_h, thickness=0.4)
+    for z in np.arange(-4.0, 24.0, 7.0):  # check-in islands along x: a belt between two rows of counters
+        x0 = rng.uniform(-44.0, -40.0)
+        s.box(x0, x0 + 24.0, 0.0, 1.1, z, z + 0.8)
+        s.box(x0, x0 + 24.0, 0.0, 0.6, z + 0.8, z + 1.8)
+        s.box(x0, x0 + 24.0, 0.0, 1.1, z + 1.8, z + 2.6)
+    gate_x = -6.0  # the security line across the hall's end: cabinets 0.8 m wide, passages 1.3 m
+    for z in np.arange(-9.4, 29.0, 2.1):
+        s.box(gate_x - 1.5, gate_x + 1.5, 0.0, 1.1, z, z + 0.8)
+    holdrooms = [0.0]
+    while holdrooms[-1] < length - 24.0:
+        holdrooms.append(holdrooms[-1] + rng.uniform(18.0, 24.0))
+    holdrooms[-1] = length
+    depth = 16.0
+    s.box(0.0, length, -0.5, 0.0, -depth, 0.0)
+    s.wall((0.0, -depth), (length, -depth), -0.5, wall_h, [((a + b) / 2 - 1.3, 2.6) for a, b in pairwise(holdrooms)],
+           thickness=0.4)
+    for a, b in pairwise(holdrooms):
+        s.wall((a, -depth), (a, 0.0), -0.5, wall_h, thickness=0.3)
+        jet = rng.uniform(14.0, 18.0)
+        xm = (a + b) / 2
+        s.box(xm - 1.3, xm + 1.3, -0.5, 0.0, -depth - jet, -depth)
+        for x in (xm - 1.5, xm + 1.3):
+            s.box(x, x + 0.2, -0.5, 2.6, -depth - jet, -depth)
+        s.box(xm - 1.5, xm + 1.5, -0.5, 2.6, -depth - jet - 0.2, -depth - jet)
+        s.box(xm - 3.0, xm + 0.5, 0.0, 1.0, -depth + 2.5, -depth + 3.5)  # the gate desk
+        for z in np.arange(-depth + 5.5, -2.5, rng.uniform(1.6, 2.0)):  # rows of seats, an aisle down the middle
+            s.box(a + 1.5, xm - 1.2, 0.0, 0.45, z, z + 0.6)
+            s.box(xm + 1.2, b - 1.5, 0.0, 0.45, z, z + 0.6)
+    s.wall((length, -depth), (length, width + shop_depth), -0.5, wall_h, thickness=0.4)
+    s.wall((0.0, width + shop_depth), (length, width + shop_depth), -0.5, wall_h, thickness=0.4)
+    shops = [0.0]
+    while shops[-1] < length - 12.0:
+        shops.append(shops[-1] + rng.uniform(9.0, 14.0))
+    shops[-1] = length
+    s.wall((0.0, width), (length, width), 0.0, 4.0, [(a + rng.uniform(0.5, b - a - 4.5) - 0.0, 4.0) for a, b in pairwise(shops)],
+           thickness=0.2)
+    for a, b in pairwise(shops):
+        s.wall((a, width), (a, width + shop_depth), 0.0, 4.0, thickness=0.2)
+        for z in np.arange(width + 2.5, width + shop_depth - 1.5, 2.5):  # shelves
+            s.box(a + 2.0, b - 2.0, 0.0, 1.6, z, z + 0.5)
+    mx0 = rng.uniform(0.25, 0.45) * length
+    mx1 = mx0 + rng.uniform(40.0, 50.0)
+    s.box(mx0, mx1, 4.7, 5.0, width - 4.0, width + shop_depth)
+    s.wall((mx0, width - 4.0), (mx1, width - 4.0), 5.0, 6.0, [(0.3, 2.6), (mx1 - mx0 - 2.9, 2.6)], thickness=0.1)
+    for x in (mx0, mx1):  # railed, open where the flights arrive
+        s.wall((x, width - 4.0), (x, width + shop_depth), 5.0, 6.0, thickness=0.1)
+    for x in np.arange(mx0 + 5.0, mx1 - 5.0, 4.5):  # sofas
+        z = width + rng.uniform(1.0, 8.0)
+        s.box(x, x + 2.0, 5.0, 5.8, z, z + 0.9)
+    run = 28 * 0.28
+    for x in (mx0 + 1.6, mx1 - 1.6):  # up across the concourse to the mezzanine's edge
+        s.stairs(np.array([x, width - 4.0 - run]), np.array([0.0, 1.0]), 2.4, 0.0, 5.0, riser=5.0 / 28, tread=0.28)
+    x = rng.uniform(15.0, 25.0)
+    while x + 40.0 < length - 10.0:  # moving walkways, a pair at a time, clear of the mezzanine's flights
+        x1 = min(x + rng.uniform(40.0, 60.0), length - 10.0)
+        if x1 < mx0 - 3.0 or x > mx1 + 3.0:
+            for zc in (width / 2 - 1.5, width / 2 + 1.5):  # belt and balustrades, a gap between the two
+                s.box(x, x1, 0.0, 0.15, zc - 0.7, zc + 0.7)
+                for z in (zc - 0.85, zc + 0.7):
+                    s.box(x, x1, 0.0, 1.0, z, z + 0.15)
+        x = x1 + rng.uniform(12.0, 20.0)
+    return s.mesh()
+
+
+def sewer(seed: int) -> trimesh.Trimesh:
+    """A storm sewer: tunnels on a grid (four along x 36-44 m apart, five along z 40-48 m apart), each a channel
+    3-4 m wide (no water surface: nothing to walk on) between walkways 2-2.4 m wide, walled 3.5 m high. Where two
+    tunnels cross, a chamber whose floor is one grate over the crossing channels; between chambers the walkways
+    are joined by footbridges 1.5 m wide every 18-30 m, a fifth of the stretches between chambers lose 8-20 m of
+    walkway on one side (the channel against the wall there), pipes 0.5 m high lie along a third of the walkways,
+    and the tunnels at the grid's edge run 12-20 m on to dead-end outfalls. Six to eight side rooms 7-9 x 6-8 m
+    (pumps, valves: blocks 1-1.5 m high), floors 0.3 m up, open off the tunnels along x through 1.6 m doors with a
+    0.15 m sill.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    xs = np.cumsum([20.0, *rng.uniform(40.0, 48.0, size=4)])  # tunnels along z, at these x
+    zs = np.cumsum([20.0, *rng.uniform(36.0, 44.0, size=3)])  # tunnels along x, at these z
+    channel, walk = rng.uniform(1.5, 2.0), rng.uniform(2.0, 2.4)
+    half = channel + walk  # a tunnel's half width, wall to centre line
+    ends = (xs[0] - half - rng.uniform(12.0, 20.0), xs[-1] + half + rng.uniform(12.0, 20.0),
+            zs[0] - half - rng.uniform(12.0, 20.0), zs[-1] + half + rng.uniform(12.0, 20.0))
+    rooms: list[tuple[int, float, float, float, float, float]] = []  # (tunnel, side, x0, width, depth, door)
+    count = int(rng.integers(6, 9))
+    while len(rooms) < count:  # side rooms off the tunnels along x, between the tunnels along z
+        i, j = int(rng.integers(len(zs))), int(rng.integers(len(xs) - 1))
+        sign = 1.0 if rng.random() < 0.5 else -1.0
+        w, d = rng.uniform(7.0, 9.0), rng.uniform(6.0, 8.0)
+        x0 = rng.uniform(xs[j] + half + 3.0, xs[j + 1] - half - 3.0 - w)
+        if not any(q == i and t == sign and abs(x0 - p) < w + 4.0 for q, t, p, *_ in rooms):
+            rooms.append((i, sign, x0, w, d, rng.uniform(x0 + 1.0, x0 + w - 2.6)))
+
+    def box(along_x: bool, at: float, a0: float, a1: float, y0: float, y1: float, c0: float, c1: float) -> None:
+        """A box in a tunnel's frame: ``a`` along it, ``c`` across it from its centre line ``at``."""
+        s.box(a0, a1, y0, y1, at + c0, at + c1) if along_x else s.box(at + c0, at + c1, y0, y1, a0, a1)
+
+    for along_x, centres, stops, lo, hi in ((True, zs, xs, ends[0], ends[1]), (False, xs, zs, ends[2], ends[3])):
+        cuts = [lo, *sum(([c - half, c + half] for c in stops), []), hi]
+        for k, at in enumerate(centres):
+            for a0, a1 in zip(cuts[0::2], cuts[1::2]):
+                for sign in (-1.0, 1.0):
+                    c0, c1 = sorted((sign * channel, sign * half))
+                    doors = [(door - a0, 1.6) for i, side, _, _, _, door in rooms
+                             if along_x and i == k and side == sign and a0 < door < a1]
+                    missing = (a0, a0)
+                    if rng.random() < 0.2 and a1 - a0 > 20.0 and not doors:  # a stretch with the channel against the wall
+                        start = rng.uniform(a0 + 4.0, a1 - 14.0)
+                        missing = (start, start + rng.uniform(8.0, min(20.0, a1 - start - 4.0)))
+                    for b0, b1 in ((a0, missing[0]), (missing[1], a1)):
+                        if b1 - b0 > 1e-6:
+                            box(along_x, at, b0, b1, -0.6, 0.0, c0, c1)
+                            if rng.random() < 0.33 and b1 - b0 > 4.0 and not doors:  # a pipe along the wall
+                                box(along_x, at, b0 + 1.0, b1 - 1.0, 0.0, 0.5, *sorted((sign * (half - 0.6), sign * half)))
+                    line = at + sign * (half + 0.15)
+                    s.wall((a0, line) if along_x else (line, a0), (a1, line) if along_x else (line, a1), -0.6, 3.5,
+                           doors, thickness=0.3)
+                a = a0 + rng.uniform(8.0, 14.0)
+                while a < a1 - 6.0:  # footbridges
+                    box(along_x, at, a, a + 1.5, -0.3, 0.0, -channel, channel)
+                    a += rng.uniform(18.0, 30.0)
+            for c in stops:  # the chamber: a grate over the whole crossing
+                box(along_x, at, c - half, c + half, -0.3, 0.0, -half, half)
+            for a in (lo - 0.3, hi):  # the outfall's end wall
+                box(along_x, at, a, a + 0.3, -0.6, 3.5, -half, half)
+    for i, sign, x0, w, d, door in rooms:
+        face = zs[i] + sign * (half + 0.3)  # the tunnel wall's outer face
+        far = face + sign * d
+        z0, z1 = sorted((face, far))
+        s.box(x0, x0 + w, -0.6, 0.3, z0, z1)
+        s.box(door, door + 1.6, -0.6, 0.15, *sorted((face - sign * 0.3, face)))  # the sill in the door
+        for a, b in (((x0, far), (x0 + w, far)), ((x0, z0), (x0, z1)), ((x0 + w, z0), (x0 + w, z1))):
+            s.wall(a, b, 0.3, 3.5, thickness=0.3)
+        for _ in range(int(rng.integers(2, 5))):
+            px, pz = rng.uniform(x0 + 1.0, x0 + w - 2.5), rng.uniform(z0 + 1.5, z1 - 2.0)
+            s.box(px, px + 1.5, 0.3, 0.3 + rng.uniform(1.0, 1.5), pz, pz + 1.0)
+    return s.mesh()
+
+
+
+def lanes(seed: int) -> trimesh.Trimesh:
+    """A three-lane multiplayer arena 220 x 124 m, symmetric under a half turn about its centre as competitive maps
+    are: a base at each end (a platform 1.2 m up, reached by a ramp 8 m wide and two flights of 0.15 / 0.30 m
+    steps), three lanes 9-11 m wide between them (top, middle, bottom), and between the lanes two jungles of solid
+    blocks 4-7 m high (ridged roofs at 50 degrees, which no one stands on) with alleys 3.5-6 m wide. Along each side lane a catwalk 3 m up (3.5 m wide, the lane
+    passing under it, ramps at 12 degrees at both ends) whose edge is a jump-down ledge all along; a bridge 3 m
+    up across the middle lane at the map's centre between two blocks 3 m high, each with a ramp; cover walls
+    1 m high and crates 1.2 m high in the lanes.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    size_x, size_z = 220.0, 124.0
+    footprints: list[tuple[float, float, float, float]] = []  # of solids on the ground: the ground stops under them
+
+    def turned(x: float, z: float) -> tuple[float, float]:
+        return size_x - x, size_z - z
+
+    def block(x0: float, x1: float, top: float, z0: float, z1: float, roof: bool = False) -> None:
+        """A solid block on the ground and its copy turned half round the map's centre; with ``roof``, a ridge
+        along x over ``top``, its sides at 50 degrees (a top no one stands on)."""
+        for (a, c), (b, d) in (((x0, z0), (x1, z1)), (turned(x1, z1), turned(x0, z0))):
+            corners = [[x, y, z] for x in (a, b) for z in (c, d) for y in (-0.5, top)]
+            ridge = top + (d - c) / 2 * math.tan(math.radians(50.0))
+            s.hull(np.array(corners + ([[x, ridge, (c + d) / 2] for x in (a, b)] if roof else [])))
+            if top > 2.0:
+                footprints.append((a, b, c, d))
+
+    def ramp(a: tuple[float, float], b: tuple[float, float], width: float, ya: float, yb: float) -> None:
+        for p, q in ((a, b), (turned(*a), turned(*b))):
+            s.ramp(np.array(p), np.array(q), width, ya, yb)
+
+    lane = rng.uniform(9.0, 11.0, size=2)
+    bottom, middle = (4.0, 4.0 + lane[0]), (size_z / 2 - lane[1] / 2, size_z / 2 + lane[1] / 2)
+    base, rise = 18.0, 3.0
+    run = rise / math.tan(math.radians(12.0))
+    block(2.0, base, 1.2, 2.0, size_z - 2.0)  # a base's platform
+    ramp((base + 8.0, size_z / 2), (base, size_z / 2), 8.0, 0.0, 1.2)
+    for z in (bottom[0] + 2.0, size_z - bottom[0] - 4.5):
+        for start, heading in (((base + 8 * 0.30, z + 1.25), (-1.0, 0.0)), ((size_x - base - 8 * 0.30, size_z - z - 1.25), (1.0, 0.0))):
+            s.stairs(np.array(start), np.array(heading), 2.5, 0.0, 1.2)
+    pad = (size_x / 2 - 3.0, size_x / 2 + 3.0, middle[0] - 6.0, middle[0])  # the bridge's block on this side
+    keep_out = (pad[0] - run - 2.0, pad[1] + 1.0, pad[2] - 2.0, pad[3])
+    x = base + rng.uniform(8.0, 12.0)
+    while x < size_x - base - 12.0:  # the jungle between the bottom and the middle lane
+        x1 = min(x + rng.uniform(6.0, 14.0), size_x - base - 8.0)
+        z = bottom[1] + rng.uniform(3.5, 6.0)
+        while z < middle[0] - 7.0:
+            z1 = min(z + rng.uniform(5.0, 12.0), middle[0] - rng.uniform(3.5, 6.0))
+            clear = x1 < keep_out[0] or x > keep_out[1] or z1 < keep_out[2] or z > keep_out[3]
+            if z1 - z > 3.0 and x1 - x > 3.0 and clear:
+                block(x, x1, rng.uniform(4.0, 7.0), z, z1, roof=True)
+            z = z1 + rng.uniform(3.5, 6.0)
+        x = x1 + rng.uniform(3.5, 6.0)
+    block(pad[0], pad[1], rise, pad[2], pad[3])
+    ramp((pad[0] - run, (pad[2] + pad[3]) / 2), (pad[0], (pad[2] + pad[3]) / 2), 3.0, 0.0, rise)
+    s.box(size_x / 2 - 1.5, size_x / 2 + 1.5, rise - 0.4, rise, middle[0], middle[1])  # the bridge
+    c0, c1 = rng.uniform(0.3, 0.4) * size_x, rng.uniform(0.55, 0.65) * size_x
+    zc = bottom[1] - 1.75  # the catwalk along the bottom lane's far side
+    for (a, c), (b, d) in (((c0, zc - 1.75), (c1, zc + 1.75)), (turned(c1, zc + 1.75), turned(c0, zc - 1.75))):
+        s.box(a, b, rise - 0.4, rise, c, d)
+    ramp((c0 - run, zc), (c0, zc), 3.5, 0.0, rise)
+    ramp((c1 + run, zc), (c1, zc), 3.5, 0.0, rise)
+    for lo, hi in (bottom, middle):  # cover in the lanes, clear of the catwalk's ramps
+        for _ in range(18):
+            x, z = rng.uniform(base + 10.0, size_x - base - 10.0), rng.uniform(lo + 1.5, hi - 2.5)
+            if lo == bottom[0] and (abs(x - c0 + run / 2) < run / 2 + 2.0 or abs(x - c1 - run / 2) < run / 2 + 2.0):
+                continue
+            if rng.random() < 0.5:
+                block(x, x + rng.uniform(2.0, 4.0), 1.0, z, z + 0.4)
+            else:
+                block(x, x + 1.2, 1.2, z, z + 1.2)
+    s.ground(0.0, size_x, 0.0, size_z, 0.0, footprints)
+    for a, b in (((0.0, 0.0), (size_x, 0.0)), ((0.0, size_z), (size_x, size_z)),
+                 ((0.0, 0.0), (0.0, size_z)), ((size_x, 0.0), (size_x, size_z))):
+        s.wall(a, b, -0.5, 6.0, thickness=0.5)
+    return s.mesh()
+
+
+def prison(seed: int) -> trimesh.Trimesh:
+    """A prison: three cell blocks side by side, each a hall 9-11 m wide between two rows of 14-18 cells on two
+    tiers 3.2 m apart; the upper cells open on galleries 1.8 m wide, railed over the open well, with bridges 2 m
+    wide across it every 4-6 cells and a flight (0.16 / 0.28 m steps, 1.6 m wide) in the well up to each gallery
+    at alternate ends. A cell is 3.2-3.5 x 3.6 m behind a wall with a 1.6 m door (a real one is narrower, but the
+    agent is 1 m wide and a first draft's 1.3 m doors closed most cells), with a bunk 0.5 m high and a basin. A
+    corridor 4 m wide joins the halls at one end to a hub round a guard post (4 x 4 m, solid, a pyramid roof) and
+    on to a mess hall 24 x 16 m of tables and benches and, through a 2 m gate, a walled yard 40 x 30 m with a few
+    benches and a hoop's post.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    storey, depth = 3.2, 3.6
+    riser, tread = storey / 20, 0.28
+    blocks_z = [0.0]
+    for b in range(3):
+        cells, cell_w, hall = int(rng.integers(14, 19)), rng.uniform(3.2, 3.5), rng.uniform(9.0, 11.0)
+        z0 = blocks_z[-1]
+        length = cells * cell_w
+        width = 2 * depth + hall
+        s.box(0.0, length, -0.3, 0.0, z0, z0 + width)
+        well = (z0 + depth + 1.8, z0 + depth + hall - 1.8)  # open between the galleries
+        bridges = [(i * cell_w, i * cell_w + 2.0) for i in range(4, cells - 3, int(rng.integers(4, 7)))]
+        flights = [(1.0, well[0], 1.0), (length - 1.0, well[1] - 1.6, -1.0)]  # foot x, z of the flight's edge, heading
+        holes = [(0.0, length, well[0], well[1])]
+        s.slab(0.0, length, z0 + depth, z0 + depth + hall, storey, holes)
+        for a, b_ in bridges:
+            s.box(a, b_, storey - 0.3, storey, *well)
+        for x, zf, heading in flights:
+            s.stairs(np.array([x, zf + 0.8]), np.array([heading, 0.0]), 1.6, 0.0, storey, riser, tread)
+            top = x + heading * 20 * tread
+            s.box(*sorted((top, top + heading * 1.6)), storey - 0.3, storey, zf, zf + 1.6)  # landing at the gallery
+        for edge in well:  # railings, open at the bridges and the landings
+            gaps = [(a, b_ - a) for a, b_ in bridges]
+            for x, zf, heading in flights:
+                top = x + heading * 20 * tread
+                if abs(zf - edge) < 1.7 or abs(zf + 1.6 - edge) < 1.7:
+                    lo = min(top, top + heading * 1.6)
+                    gaps.append((lo, 1.6))
+            s.wall((0.0, edge), (length, edge), storey, storey + 1.0, sorted(gaps), thickness=0.1)
+        for y in (0.0, storey):
+            for side in range(2):
+                back, front = (z0, z0 + depth) if side == 0 else (z0 + width, z0 + width - depth)
+                out = 1.0 if side == 0 else -1.0
+                if y > 0.0:
+                    s.box(0.0, length, y - 0.3, y, *sorted((back, front)))  # the upper cells' floor
+                s.wall((0.0, back), (length, back), y, y + storey - 0.3, thickness=0.3)
+                doors = [(i * cell_w + rng.uniform(0.3, cell_w - 1.9), 1.6) for i in range(cells)]
+                s.wall((0.0, front), (length, front), y, y + storey - 0.3, doors, thickness=0.2)
+                for i in range(cells + 1):
+                    s.wall((i * cell_w, back), (i * cell_w, front), y, y + storey - 0.3, thickness=0.2)
+                for i, (door, _) in enumerate(doors):
+                    bunk_x = i * cell_w + 0.1 if door - i * cell_w > 0.9 else (i + 1) * cell_w - 0.9
+                    s.box(bunk_x, bunk_x + 0.8, y, y + 0.5, *sorted((back + out * 0.15, back + out * 2.15)))
+                    basin_x = (i + 1) * cell_w - 0.6 if bunk_x < i * cell_w + 1.0 else i * cell_w + 0.1
+                    s.box(basin_x, basin_x + 0.5, y, y + 0.9, *sorted((back + out * 0.15, back + out * 0.65)))
+        s.wall((length, z0 + depth), (length, z0 + width - depth), 0.0, 2 * storey, thickness=0.3)
+        blocks_z.append(z0 + width + 0.3)
+    total = blocks_z[-1]
+    s.wall((0.0, 0.0), (0.0, total), 0.0, 2 * storey,  # the halls' west ends open on the corridor
+           [(blocks_z[b] + depth + 0.5, blocks_z[b + 1] - blocks_z[b] - 2 * depth - 1.3) for b in range(3)], thickness=0.3)
+    s.box(-4.0, 0.0, -0.3, 0.0, 0.0, total)  # the corridor along the blocks' ends
+    s.wall((-4.0, 0.0), (-4.0, total), 0.0, storey, [(total / 2 - 2.0, 4.0)], thickness=0.3)
+    s.wall((-4.0, 0.0), (0.0, 0.0), 0.0, storey, thickness=0.3)
+    s.wall((-4.0, total), (0.0, total), 0.0, storey, thickness=0.3)
+    hub = (-16.0, -4.0, total / 2 - 6.0, total / 2 + 6.0)  # the hub round a solid guard post
+    s.slab(hub[0], hub[1], hub[2], hub[3], 0.0, [(-12.0, -8.0, total / 2 - 2.0, total / 2 + 2.0)])
+    s.hull(np.array([[x, y, z] for x in (-12.0, -8.0) for z in (total / 2 - 2.0, total / 2 + 2.0) for y in (-0.3, storey)]
+                    + [[-10.0, storey + 2.5, total / 2]]))
+    s.wall((hub[0], hub[2]), (hub[1], hub[2]), 0.0, storey, thickness=0.3)
+    s.wall((hub[0], hub[3]), (hub[1], hub[3]), 0.0, storey, thickness=0.3)
+    mess = (-40.0, -16.0, total / 2 - 8.0, total / 2 + 8.0)
+    s.box(mess[0], mess[1], -0.3, 0.0, mess[2], mess[3])
+    s.wall((mess[1], mess[2]), (mess[1], mess[3]), 0.0, storey, [(4.0, 4.0)], thickness=0.3)
+    s.wall((mess[0], mess[2]), (mess[1], mess[2]), 0.0, storey, thickness=0.3)
+    s.wall((mess[0], mess[2]), (mess[0], mess[3]), 0.0, storey, thickness=0.3)
+    gate = rng.uniform(4.0, 18.0)
+    s.wall((mess[0], mess[3]), (mess[1], mess[3]), 0.0, storey, [(gate, 2.0)], thickness=0.3)
+    for x in np.arange(mess[0] + 2.0, mess[1] - 3.0, 4.0):  # tables with a bench either side
+        for z in np.arange(mess[2] + 2.0, mess[3] - 2.0, 3.2):
+            s.box(x, x + 2.4, 0.0, 0.75, z + 0.5, z + 1.3)
+            for bz in (z, z + 1.5):
+                s.box(x, x + 2.4, 0.0, 0.45, bz, bz + 0.3)
+    yard = (mess[1] - 40.0, mess[1], mess[3] + 0.15, mess[3] + 30.0)
+    s.box(yard[0], yard[1], -0.3, 0.0, yard[2], yard[3])
+    for a, b in (((yard[0], yard[3]), (yard[1], yard[3])), ((yard[0], yard[2]), (yard[0], yard[3])), ((yard[0], mess[3]), (mess[0], mess[3])),
+                 ((yard[1], yard[2]), (yard[1], yard[3]))):
+        s.wall(a, b, 0.0, 5.0, thickness=0.2)
+    for _ in range(int(rng.integers(4, 8))):
+        x, z = rng.uniform(yard[0] + 2.0, yard[1] - 4.0), rng.uniform(yard[2] + 3.0, yard[3] - 2.0)
+        s.box(x, x + 2.0, 0.0, 0.45, z, z + 0.5)
+    s.box(yard[1] - 6.0, yard[1] - 5.7, 0.0, 3.5, (yard[2] + yard[3]) / 2, (yard[2] + yard[3]) / 2 + 0.3)
+    return s.mesh()
+
+
+def museum(seed: int) -> trimesh.Trimesh:
+    """A museum of two storeys 5.5 m apart: a grid of 6 x 5 galleries 12-16 m wide and 10-14 m deep (the front
+    row 15-16 m deep) behind 0.4 m walls, every wall between two galleries pierced by a 2.4 m door on the line
+    through their centres, so the doors stand in line (an enfilade) along both axes on both storeys. One front
+    gallery is the entrance hall, open to the roof: a 3 m door from a forecourt, a flight up along its back
+    (0.172 / 0.30 m steps, 3 m wide) to a landing 3 m deep across the hall upstairs, railed, with doors to the
+    galleries behind and beside it. In the galleries, off the door lines: plinths 1 x 1 m (1.2 m high) for
+    statues, display cases 2 x 0.8 m (1 m high) along the walls, a bench, and in some a free-standing screen
+    4 m long and 3 m high.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    storey, door = 5.5, 2.4
+    xs = np.cumsum([0.0, *rng.uniform(12.0, 16.0, size=6)])
+    zs = np.cumsum([0.0, rng.uniform(15.0, 16.0), *rng.uniform(10.0, 14.0, size=4)])
+    hall = int(rng.integers(2, 4))  # the entrance hall's column, in the front row
+    hx0, hx1, hz0, hz1 = xs[hall], xs[hall + 1], zs[0], zs[1]
+    landing = hz1 - 3.0
+    s.box(xs[0] - 0.2, xs[-1] + 0.2, -0.3, 0.0, zs[0] - 0.2, zs[-1] + 0.2)
+    s.box(hx0 - 6.0, hx1 + 6.0, -0.3, 0.0, zs[0] - 12.0, zs[0] - 0.2)  # the forecourt
+    s.slab(xs[0] - 0.2, xs[-1] + 0.2, zs[0] - 0.2, zs[-1] + 0.2, storey, [(hx0 + 0.2, hx1 - 0.2, hz0 + 0.2, landing)])
+    stair_x = (hx0 + hx1) / 2 + 3.5
+    run = 32 * 0.30
+    s.stairs(np.array([stair_x, landing - run]), np.array([0.0, 1.0]), 3.0, 0.0, storey, riser=storey / 32, tread=0.30)
+    s.wall((hx0 + 0.2, landing), (hx1 - 0.2, landing), storey, storey + 1.0, [(stair_x - 1.5 - hx0 - 0.2, 3.0)],
+           thickness=0.1)
+    for y in (0.0, storey):
+        top = y + storey - 0.3
+        for i, x in enumerate(xs):  # walls along z, one door per gallery they part, on its centre line
+            inner = 0 < i < len(xs) - 1
+            doors = []
+            for j in range(len(zs) - 1):
+                centre = (zs[j] + zs[j + 1]) / 2
+                beside_void = y > 0 and j == 0 and i in (hall, hall + 1)
+                if beside_void:  # upstairs, the hall's side walls open on its landing only
+                    doors.append((hz1 - 2.7 - zs[0] + 0.2, door))
+                elif inner:
+                    doors.append((centre - door / 2 - zs[0] + 0.2, door))
+            s.wall((x, zs[0] - 0.2), (x, zs[-1] + 0.2), y, top, doors, thickness=0.4)
+        for j, z in enumerate(zs):  # walls along x
+            doors = []
+            for i in range(len(xs) - 1):
+                centre = (xs[i] + xs[i + 1]) / 2
+                if 0 < j < len(zs) - 1:  # upstairs too where the hall's landing meets its back wall
+                    doors.append((centre - door / 2 - xs[0] + 0.2, door))
+                elif j == 0 and y == 0 and i == hall:
+                    doors.append((centre - 1.5 - xs[0] + 0.2, 3.0))
+            s.wall((xs[0] - 0.2, z), (xs[-1] + 0.2, z), y, top, doors, thickness=0.4)
+        for i in range(len(xs) - 1):
+            for j in range(len(zs) - 1):
+                if i == hall and j == 0:
+                    continue
+                x0, x1, z0, z1 = xs[i] + 0.2, xs[i + 1] - 0.2, zs[j] + 0.2, zs[j + 1] - 0.2
+                xc, zc = (x0 + x1) / 2, (z0 + z1) / 2
+
+                def clear(a0: float, a1: float, c0: float, c1: float) -> bool:
+                    """Off both door lines (1.8 m either side of the centre lines)."""
+                    return (a1 < xc - 1.8 or a0 > xc + 1.8) and (c1 < zc - 1.8 or c0 > zc + 1.8)
+
+                for _ in range(int(rng.integers(4, 9))):  # cases along a wall
+                    along_x = rng.random() < 0.5
+                    if along_x:
+                        a = rng.uniform(x0 + 0.5, x1 - 2.5)
+                        c = z0 + 0.3 if rng.random() < 0.5 else z1 - 1.1
+                        box = (a, a + 2.0, c, c + 0.8)
+                    else:
+                        c = rng.uniform(z0 + 0.5, z1 - 2.5)
+                        a = x0 + 0.3 if rng.random() < 0.5 else x1 - 1.1
+                        box = (a, a + 0.8, c, c + 2.0)
+                    if clear(*box):
+                        s.box(box[0], box[1], y, y + 1.0, box[2], box[3])
+                for _ in range(int(rng.integers(2, 6))):  # plinths
+                    a, c = rng.uniform(x0 + 2.0, x1 - 3.0), rng.uniform(z0 + 2.0, z1 - 3.0)
+                    if clear(a, a + 1.0, c, c + 1.0):
+                        s.box(a, a + 1.0, y, y + 1.2, c, c + 1.0)
+                a = xc + rng.choice([-1.0, 1.0]) * rng.uniform(2.5, 3.5)
+                if clear(a - 0.9, a + 0.9, zc + 2.0, zc + 2.5):
+                    s.box(a - 0.9, a + 0.9, y, y + 0.45, zc + 2.0, zc + 2.5)  # a bench
+                if rng.random() < 0.4 and x1 - x0 > 13.0:  # a screen, parallel to the front
+                    a, c = xc + rng.choice([-1.0, 1.0]) * 3.5, zc + rng.choice([-1.0, 1.0]) * rng.uniform(2.5, 3.5)
+                    s.box(a - 1.5, a + 1.5, y, y + 3.0, c - 0.1, c + 0.1)
+    return s.mesh()
+
+
 KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
     "subway": subway, "archipelago": archipelago, "car_park": car_park,
     "forest": forest, "stadium": stadium, "harbour": harbour,
     "school": school, "cathedral": cathedral, "mine": mine, "ship": ship, "village": village, "market": market,
+    "office": office, "airport": airport, "sewer": sewer, "lanes": lanes, "prison": prison, "museum": museum,
 }
 """Kind name -> generator (seed -> Y-up mesh in metres)."""
 

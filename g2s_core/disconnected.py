@@ -44,18 +44,21 @@ def area_summary(graph: nx.Graph, nodes: Sequence[int]) -> tuple[float, np.ndarr
 
 
 def closest_step(graph: nx.Graph, a: Sequence[int], b: Sequence[int],
-                 climb_weight: float = 1.0) -> tuple[float, float, np.ndarray, np.ndarray]:
-    """``(horizontal distance, vertical step, point of a, point of b)`` of the closest nodes of ``a`` and ``b`` (metres),
-    vertical offsets counted ``climb_weight`` times."""
+                 climb_weight: float = 1.0) -> tuple[float, float, np.ndarray, np.ndarray, float]:
+    """``(horizontal distance, vertical step, point of a, point of b, run)`` of the closest nodes of ``a`` and ``b``
+    (metres), vertical offsets counted ``climb_weight`` times. ``run`` is the horizontal distance less half the
+    width of each node's surface (the square root of its ``area``): how far apart the two surfaces' edges lie."""
     pa, pb = _positions(graph, a), _positions(graph, b)
     scale = np.array([1.0, climb_weight, 1.0])
     distance, index = cKDTree(pb * scale).query(pa * scale)
     best = int(np.argmin(distance))
-    offset = pb[index[best]] - pa[best]
-    return float(np.hypot(offset[0], offset[2])), float(abs(offset[1])), pa[best], pb[index[best]]
+    offset, nodes = pb[index[best]] - pa[best], (a[best], b[int(index[best])])
+    horizontal = float(np.hypot(offset[0], offset[2]))
+    run = horizontal - sum(np.sqrt(float(graph.nodes[n].get("area", 0.0))) for n in nodes) / 2
+    return horizontal, float(abs(offset[1])), pa[best], pb[index[best]], max(run, 0.0)
 
 
-def closest_step_for(graph: nx.Graph, a: Sequence[int], b: Sequence[int], agent: Any) -> tuple[float, float, np.ndarray, np.ndarray]:
+def closest_step_for(graph: nx.Graph, a: Sequence[int], b: Sequence[int], agent: Any) -> tuple[float, float, np.ndarray, np.ndarray, float]:
     """:func:`closest_step`, or the closest pair on one floor when the plain one is a floor above another and the
     one-floor pair is closer with vertical offsets counted ``agent.height / agent.max_climb`` times."""
     plain = closest_step(graph, a, b)
@@ -65,13 +68,15 @@ def closest_step_for(graph: nx.Graph, a: Sequence[int], b: Sequence[int], agent:
     return weighted if weighted[1] <= float(agent.max_climb) else plain
 
 
-def likely_cause(step: float, gap: float, agent: Any) -> str:
-    """What most likely separates two areas whose closest nodes are ``gap`` m apart with a ``step`` m rise."""
+def likely_cause(step: float, gap: float, agent: Any, run: float = 0.0) -> str:
+    """What most likely separates two areas whose closest nodes are ``gap`` m apart with a ``step`` m rise, their
+    surfaces' edges ``run`` m apart."""
     climb, height, radius = float(agent.max_climb), float(agent.height), float(agent.radius)
     if step > height:
         return (f"separate floors ({step:.1f} m apart) with no walkable stairs or ramp between them "
                 f"for this agent (agent.max_climb {climb:g} m, agent.max_slope {float(agent.max_slope):g}°)")
-    if step > climb:
+    # a rise the agent would walk up as a slope over the run (islands 18 m apart, 0.6 m in height) is no step
+    if step > climb and step > run * np.tan(np.radians(float(agent.max_slope))):
         return f"a step of about {step:.1f} m, higher than agent.max_climb ({climb:g} m)"
     # the nodes are polygon centres or samples, so their distance bounds the gap, it does not measure it
     return (f"a gap or passage too narrow for the agent (agent.radius {radius:g} m), or a wall, between "
@@ -97,9 +102,9 @@ def disconnected_warning(graph: nx.Graph, areas: Mapping[Any, Sequence[int]], te
     if agent is None or len(summaries) < 2:
         return message
     largest = summaries[0][2]
-    gap, step, here, there = min((closest_step_for(graph, largest, other[2], agent) for other in summaries[1:1 + COMPARED_AREAS]),
-                                 key=lambda pair: np.hypot(pair[0], pair[1]))
-    return (f"{message} Likely cause: {likely_cause(step, gap, agent)}, "
+    gap, step, here, there, run = min((closest_step_for(graph, largest, other[2], agent) for other in summaries[1:1 + COMPARED_AREAS]),
+                                      key=lambda pair: np.hypot(pair[0], pair[1]))
+    return (f"{message} Likely cause: {likely_cause(step, gap, agent, run)}, "
             f"e.g. between ({_xyz(here)}) and ({_xyz(there)}).")
 
 

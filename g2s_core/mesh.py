@@ -90,6 +90,9 @@ def load_mesh(path: str | Path, config: MeshConfig | None = None) -> tuple[trime
             raise MeshError(f"{path}: {damage or f'cannot read mesh ({type(exc).__name__}: {exc})'}") from None
         vertices, polygons = off_polygons(raw)  # a sound OFF file of polygons trimesh cannot fan: fanned as it fans an OBJ's
         loaded = trimesh.Trimesh(vertices=vertices, faces=trimesh.geometry.triangulate_quads(polygons), process=False)
+    # trimesh reads a sparse accessor's data without its values: the mesh would be silently wrong
+    if b'"sparse"' in raw and path.suffix.lower() in (".gltf", ".glb") and (damage := describe_damage(path, raw)):
+        raise MeshError(f"{path}: {damage}")
     try:
         mesh, cleaning = prepare_and_clean(loaded, config, source=str(path))
     except MeshError as exc:  # the file's fault, not mesh.scale's or cleaning's (read as empty, a face past its vertices)
@@ -185,7 +188,7 @@ def _files_beside(path: Path) -> trimesh.resolvers.FilePathResolver:
         def get(self, name: str) -> bytes:  # a glTF's uri is URL-encoded ("my%20level.bin"); trimesh does not decode it
             return super().get(name if (Path(self.parent) / name).exists() else unquote(name))
 
-    return RegularFiles(path)
+    return RegularFiles(path, allow_anywhere=True)  # a buffer in "../buffers/", as glTF allows: trimesh 5 refuses it
 
 
 _SINGLE_MESH_FORMATS = ("ply", "stl", "off", "obj")

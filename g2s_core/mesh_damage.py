@@ -36,6 +36,12 @@ OBJ_VALUES = {b"v": "vertex coordinate", b"vt": "texture coordinate", b"vn": "no
 OBJ_INDEXED = {b"v": "vertex", b"vt": "texture coordinate", b"vn": "normal"}
 """What a face corner's ``v/vt/vn`` indices name, in messages."""
 
+GLTF_COMPONENTS = {5120: 1, 5121: 1, 5122: 2, 5123: 2, 5125: 4, 5126: 4}
+"""A glTF accessor's ``componentType`` codes and the bytes of each (int8, uint8, int16, uint16, uint32, float32)."""
+
+GLTF_TYPES = {"SCALAR": 1, "VEC2": 2, "VEC3": 3, "VEC4": 4, "MAT2": 4, "MAT3": 9, "MAT4": 16}
+"""A glTF accessor's ``type`` names and the components of each."""
+
 PLY_TYPES = (b"char", b"uchar", b"short", b"ushort", b"int", b"uint", b"float", b"double", b"int8", b"uint8", b"int16",
              b"uint16", b"int32", b"uint32", b"int64", b"uint64", b"float16", b"float32", b"float64")
 """The PLY property types trimesh reads."""
@@ -146,6 +152,27 @@ def _gltf_damage(document: object, folder: Path, binary: int | None) -> str | No
         end = sum(value for value in (view.get("byteOffset", 0), view.get("byteLength", 0)) if isinstance(value, int))
         if "buffer" in view and end > sizes[view["buffer"]]:
             return f"bufferViews[{number}] ends at byte {end}, past the {sizes[view['buffer']]} bytes of buffer {view['buffer']}"
+    return next(filter(None, (_accessor_damage(number, accessor, document) for number, accessor in _listed(document, "accessors"))), None)
+
+
+def _accessor_damage(number: int, accessor: dict, document: dict) -> str | None:
+    """What is wrong with the glTF accessor ``accessors[number]``: a count, component type, type or byte offset
+    of another kind than the glTF specification's, data past its buffer view's end, or sparse values (trimesh
+    reads the data under them only: the mesh would be read silently wrong)."""
+    expected = {"count": "an integer >= 1", "componentType": f"one of {', '.join(map(str, GLTF_COMPONENTS))}",
+                "type": f"one of {', '.join(GLTF_TYPES)}", "byteOffset": "an integer >= 0"}
+    count, offset = accessor.get("count"), accessor.get("byteOffset", 0)
+    wrong = {"count": not (type(count) is int and count >= 1), "componentType": accessor.get("componentType") not in GLTF_COMPONENTS,
+             "type": accessor.get("type") not in GLTF_TYPES, "byteOffset": not (type(offset) is int and offset >= 0)}
+    if key := next((key for key, is_wrong in wrong.items() if is_wrong), None):
+        return f"accessors[{number}].{key} is {accessor.get(key)!r}; expected {expected[key]}"
+    if "sparse" in accessor:
+        return f"accessors[{number}] is sparse, which g2s cannot read (its values would be read as zeros or the data under them)"
+    item = GLTF_COMPONENTS[accessor["componentType"]] * GLTF_TYPES[accessor["type"]]
+    view = document["bufferViews"][accessor["bufferView"]] if "bufferView" in accessor else None
+    length, stride = (view.get("byteLength"), view.get("byteStride") or item) if isinstance(view, dict) else (None, item)
+    if isinstance(length, int) and isinstance(stride, int) and (end := offset + (count - 1) * stride + item) > length:
+        return f"accessors[{number}] ends at byte {end} of bufferViews[{accessor['bufferView']}], past its {length} bytes"
     return None
 
 

@@ -21,9 +21,12 @@ polygons and their shared edges (portals):
    boundary loops of the hole orientation enclosing less than
    ``obstacle_area`` m²: pillars, crates) are left out of the clearances
    that split the level, so they neither make a room as narrow as its doors
-   nor make passages of their own. ``width = 2 x clearance`` with every wall
-   counted is the walkable width reported for a chokepoint (add the agent's
-   diameter for wall to wall).
+   nor make passages of their own; but a small hole that is a piece of wall
+   between two openings (:func:`wall_pieces`: long for its width, its ends
+   near other walls, its long sides not) counts as a wall, so that a front of
+   doors is not one opening as wide as the front. ``width = 2 x clearance``
+   with every wall counted is the walkable width reported for a chokepoint
+   (add the agent's diameter for wall to wall).
 2. Merge tree (watershed by clearance). Portals are taken widest first and
    join the groups of polygons on their two sides (union-find), except when
    both groups are already *rooms*: they hold at least ``min_region_area`` m²
@@ -73,7 +76,9 @@ polygons and their shared edges (portals):
 4. Regions are the groups left (``scipy.sparse.csgraph.connected_components``
    of the merged portals, joined passages, pinches and side strips), numbered by their lowest polygon id. Candidates
    between the same two regions that are chained end to end (one opening:
-   Recast's region contours may bend across a wide gap) or closer than
+   Recast's region contours may bend across a wide gap), that end on the same
+   small hole closer together across it than either is wide (a post in a gap:
+   :func:`_post_links`), or closer than
    ``min_separation`` are one chokepoint (the widest portal of them stays:
    a door cut by a tile border is several portals).
 5. A chokepoint is an articulation of the level when it is a bridge of the
@@ -98,8 +103,9 @@ Complexity: clearance O((B + P + E) log B) for B wall pieces, P polygons,
 E portals; extents O(V) for V polygon corners; pinches O(C (Q M + Q log B)) for
 C candidates between corridor-like groups, Q grid points within a cut's reach
 (hundreds) and M polygons near it; side strips O(V + C log C) (extents, then
-sorting the candidates' region pairs); the merge tree sorts the portals and runs one union-find step per
-portal (a Python loop of O(E alpha(P)): a merge order is sequential by
+sorting the candidates' region pairs); openings O(C log C + sum of k^2) for k candidate ends on each small
+hole; wall pieces O(B) and O(B) more per elongated small hole (few: pillars are compact); the merge tree sorts the
+portals and runs one union-find step per portal (a Python loop of O(E alpha(P)): a merge order is sequential by
 nature and no library offers it on a general graph); everything else is
 numpy/scipy over arrays, networkx only on the small region graph.
 """
@@ -160,6 +166,12 @@ region at both ends (:func:`join_side_strips`). Measured (docs/plugins.md, "Leve
 farthest pair's distance over the extent): a warehouse aisle turned 45 degrees 1.00, pieces of pillared dungeon rooms
 cut off by pillar gaps 0.82-0.84, the part of a pillared room holding its centre (the rest gone to the next room
 through its corridor) 0.56."""
+
+WALL_PIECE_ELONGATION = 3.0
+"""A small hole whose longest plan extent squared is at least this many times its area (a rectangle 2.6 times as
+long as it is wide or more) and whose ends lie near other walls is a piece of wall between openings
+(:func:`wall_pieces`). Measured: square pillars and posts 1.7-2.0, the cathedral's west front between its doors
+3.26 (docs/plugins.md, "One opening, one chokepoint")."""
 
 EXTENT_DIRECTIONS = 8
 """Directions, evenly spread over 180 degrees, along which a region's longest extent is measured
@@ -232,8 +244,9 @@ def boundary_edges(navmesh: Any) -> tuple[np.ndarray, np.ndarray]:
     return vertices[polygons[rows, cols]], vertices[polygons[rows, following[rows, cols]]]
 
 
-def obstacle_edges(start: np.ndarray, end: np.ndarray, max_area: float) -> np.ndarray:
-    """(B,) bool: boundary edges of holes smaller than ``max_area`` m² (pillars, crates).
+def small_holes(start: np.ndarray, end: np.ndarray, max_area: float) -> np.ndarray:
+    """(B,) int64: the hole (a loop id) of each boundary edge ``start`` -> ``end`` (B,3 each) that bounds a hole
+    smaller than ``max_area`` m² (pillars, crates), -1 for the others.
 
     Boundary edges are joined into loops at equal end points (vertices equal
     to 1 cm, so loops close across tile borders; scipy connected components).
@@ -242,7 +255,7 @@ def obstacle_edges(start: np.ndarray, end: np.ndarray, max_area: float) -> np.nd
     loop with the largest area.
     """
     if len(start) == 0:
-        return np.zeros(0, dtype=bool)
+        return np.zeros(0, dtype=np.int64)
     _, vertex = np.unique(_point_keys(np.concatenate([start, end])), return_inverse=True)
     vertex = vertex.reshape(-1)
     n, b = int(vertex.max()) + 1, len(start)
@@ -252,7 +265,52 @@ def obstacle_edges(start: np.ndarray, end: np.ndarray, max_area: float) -> np.nd
     signed = 0.5 * np.bincount(loop, weights=start[:, 0] * end[:, 2] - end[:, 0] * start[:, 2], minlength=count)
     outer = np.sign(signed[np.argmax(np.abs(signed))])
     small_hole = (np.sign(signed) == -outer) & (np.abs(signed) < max_area)
-    return small_hole[loop]
+    return np.where(small_hole[loop], loop, -1).astype(np.int64)
+
+
+def wall_pieces(start: np.ndarray, end: np.ndarray, hole: np.ndarray) -> np.ndarray:
+    """(B,) bool: the edges of small holes (``hole`` (B,), :func:`small_holes`) that are pieces of wall between
+    openings, not pillars: elongated (longest plan extent squared at least :data:`WALL_PIECE_ELONGATION` times
+    the area), with both its ends (its extreme corners along that extent) nearer to the other walls (other holes'
+    too) than it is long, and the middles of both its long sides farther from them than either end is.
+
+    The wall between two doors is a small hole whose ends face the doors' far jambs, with a room on either
+    side; a pillar or a post is compact, a pair of gravestones grown into one hole stands in open ground, and a
+    row of desks has the next row or a wall beside it as near as the aisles at its ends. Counting the pieces as walls
+    keeps a front of three doors from reading as one opening as wide as the front (docs/plugins.md, "One
+    opening, one chokepoint"). Cost: O(B) for the holes' extents, then O(B) per elongated hole (the walls near
+    its ends, whose distance is then exact: :func:`_distance_to`).
+    """
+    piece = np.zeros(len(start), dtype=bool)
+    member = np.flatnonzero(hole >= 0)
+    ids, index = np.unique(hole[member], return_inverse=True)
+    if len(ids) == 0:
+        return piece
+    a, b = start[member], end[member]
+    area = 0.5 * np.abs(np.bincount(index, weights=a[:, 0] * b[:, 2] - b[:, 0] * a[:, 2], minlength=len(ids)))
+    spreads = directional_spreads(a[:, [0, 2]], index, len(ids))
+    direction = np.argmax(spreads, axis=1)
+    extent = spreads[np.arange(len(ids)), direction]
+    elongated = extent**2 >= WALL_PIECE_ELONGATION * area
+    if not elongated.any():
+        return piece
+    plan_low, plan_high = np.minimum(start, end)[:, [0, 2]], np.maximum(start, end)[:, [0, 2]]
+    for k in np.flatnonzero(elongated):  # few: pillars and posts are compact
+        corners = a[index == k]
+        angle = direction[k] * math.pi / EXTENT_DIRECTIONS
+        axis = np.array([math.cos(angle), math.sin(angle)])
+        across = np.array([-axis[1], axis[0]])
+        lengthwise, crosswise = corners[:, [0, 2]] @ axis, corners[:, [0, 2]] @ across
+        middle = 0.5 * (lengthwise.min() + lengthwise.max()) * axis
+        sides = np.stack([middle + crosswise.min() * across, middle + crosswise.max() * across])  # long sides' middles
+        points = np.concatenate([corners[[np.argmin(lengthwise), np.argmax(lengthwise)]],
+                                 np.insert(sides, 1, corners[:, 1].mean(), axis=1)])
+        box_low, box_high = points[:, [0, 2]].min(axis=0) - extent[k], points[:, [0, 2]].max(axis=0) + extent[k]
+        nearby = (plan_high >= box_low).all(axis=1) & (plan_low <= box_high).all(axis=1)
+        other = np.flatnonzero(nearby & (hole != ids[k]))
+        gaps, room = np.split(_distance_to(points, start[other], end[other]), 2)
+        piece[member[index == k]] = bool((gaps <= extent[k]).all() and room.min() > gaps.max())
+    return piece
 
 
 def _point_keys(points: np.ndarray) -> np.ndarray:
@@ -310,6 +368,7 @@ class Clearances:
         widest: (E,3) each portal's point of largest clearance (every wall counted).
         open_walls: the walls the clearances that split the level are measured to (small holes left out):
             start and end points, (B',3) each, m.
+        holes: the small holes' boundary: their edges' start points, (H,3) m, and the hole of each, (H,) int64.
     """
 
     polygons: np.ndarray
@@ -317,6 +376,7 @@ class Clearances:
     portals: np.ndarray
     widest: np.ndarray
     open_walls: tuple[np.ndarray, np.ndarray]
+    holes: tuple[np.ndarray, np.ndarray]
 
 
 def portal_samples(ends: np.ndarray, spacing: float) -> tuple[np.ndarray, np.ndarray]:
@@ -344,13 +404,15 @@ def portal_samples(ends: np.ndarray, spacing: float) -> tuple[np.ndarray, np.nda
 def clearances(navmesh: Any, obstacle_area: float) -> Clearances:
     """The clearances of ``navmesh`` (a portal's is the largest of its :func:`portal_samples`, one navmesh cell apart).
 
-    Small holes (:func:`obstacle_edges`: pillars, crates) are left out of the
+    Small holes (:func:`small_holes`: pillars, crates; not :func:`wall_pieces`) are left out of the
     clearances that split the level, so that they neither make a room as
     narrow as its doors nor make passages of their own; the width reported
     for a chokepoint counts them.
     """
     start, end = boundary_edges(navmesh)
-    obstacle = obstacle_edges(start, end, obstacle_area)
+    hole = small_holes(start, end, obstacle_area)
+    hole[wall_pieces(start, end, hole)] = -1
+    obstacle = hole >= 0
     ends = navmesh.portals().endpoints
     points, portal = portal_samples(ends, float(navmesh.settings["cell_size"]))
     walls = _distance_to(points, start[~obstacle], end[~obstacle])
@@ -363,6 +425,7 @@ def clearances(navmesh: Any, obstacle_area: float) -> Clearances:
         portals=every[widest],
         widest=points[widest],
         open_walls=(start[~obstacle], end[~obstacle]),
+        holes=(start[obstacle], hole[obstacle]),
     )
 
 
@@ -404,13 +467,20 @@ def plan_spreads(xz: np.ndarray, owner: np.ndarray, count: int) -> np.ndarray:
     """(count,) how far apart each group's points reach in plan, m: the largest of their spreads along
     :data:`EXTENT_DIRECTIONS` directions evenly spread over 180 degrees (within 2 % of the farthest pair's
     distance); 0 for a group with no point. ``xz``: (V, 2) points, ``owner``: (V,) the group of each."""
+    return directional_spreads(xz, owner, count).max(axis=1)
+
+
+def directional_spreads(xz: np.ndarray, owner: np.ndarray, count: int) -> np.ndarray:
+    """(count, D) how far each group's points ``xz`` (V, 2) reach along each of the D = :data:`EXTENT_DIRECTIONS`
+    directions at angles ``d * 180 / D`` degrees from +x towards +z, m (0 for a group with no point; ``owner``
+    (V,) is the group of each point)."""
     angle = np.arange(EXTENT_DIRECTIONS) * (math.pi / EXTENT_DIRECTIONS)
     along = xz @ np.stack([np.cos(angle), np.sin(angle)])  # (V, D) each point along each direction
     low = np.full((count, EXTENT_DIRECTIONS), np.inf)
     high = np.full((count, EXTENT_DIRECTIONS), -np.inf)
     np.minimum.at(low, owner, along)
     np.maximum.at(high, owner, along)
-    return np.where(np.isfinite(low), high - low, 0.0).max(axis=1)
+    return np.where(np.isfinite(low), high - low, 0.0)
 
 
 def longest_extents(navmesh: Any, labels: np.ndarray, count: int) -> np.ndarray:
@@ -629,7 +699,7 @@ def decompose(navmesh: Any, agent: Any, params: DecompositionParams) -> Decompos
         for r in range(count)
     ]
     chokepoints = _chokepoints(np.flatnonzero(blocked), pairs, labels, portals.endpoints, clearance.widest,
-                               2.0 * clearance.portals, floor, params.min_separation)
+                               2.0 * clearance.portals, floor, params.min_separation, clearance.holes)
     return Decomposition(labels, regions, chokepoints)
 
 
@@ -663,33 +733,76 @@ def _region_floors(labels: np.ndarray, count: int, band: np.ndarray, areas: np.n
     return np.where(table.max(axis=1) > 0, table.argmax(axis=1), nearest).astype(np.int64)
 
 
-def _openings(candidates: np.ndarray, sides: np.ndarray, endpoints: np.ndarray) -> np.ndarray:
-    """(C,) int64: the opening of each candidate portal, equal for candidates of the same region pair
-    chained by shared end points (equal to 1 cm; scipy connected components).
+def _openings(candidates: np.ndarray, sides: np.ndarray, endpoints: np.ndarray, width: np.ndarray,
+              holes: tuple[np.ndarray, np.ndarray]) -> np.ndarray:
+    """(C,) int64: the opening of each candidate portal, equal for candidates of the same region pair chained by
+    shared end points (equal to 1 cm), or ending on the same small hole that is shorter between their two ends
+    than both candidates are wide (scipy connected components).
 
     Recast cuts a passage between its regions' contours, which may turn: a wide gap whose cut bends at a
-    contour vertex is two portals end to end, one opening (measured: docs/plugins.md, real levels).
+    contour vertex is two portals end to end, one opening (measured: docs/plugins.md, real levels). A post
+    in a gap (a gravestone, a bollard) parts the cut into portals that end on its outline; the post is a small
+    hole, left out of the clearances that split the level, and the gap on either side of it is wider than the
+    post is between their ends: one opening too. The wall between two doors is a small hole as well, but longer
+    between the doors than a door is wide, so two doors stay two (docs/plugins.md, "One opening, one chokepoint").
+
+    Args:
+        candidates: (C,) portal ids; ``sides``: (C, 2) their region pairs; ``endpoints``: (E, 2, 3) every
+            portal's end points, m; ``width``: (E,) every portal's walkable width, m.
+        holes: the small holes' boundary vertices, (H, 3) m, and the hole of each, (H,) (:class:`Clearances`).
     """
     if len(candidates) == 0:
         return np.zeros(0, dtype=np.int64)
-    _, point = np.unique(_point_keys(endpoints[candidates].reshape(-1, 3)), return_inverse=True)
-    point = point.reshape(-1, 2)
+    ends = endpoints[candidates].reshape(-1, 3)
+    _, point = np.unique(_point_keys(np.concatenate([ends, holes[0]])), return_inverse=True)
+    point = point.reshape(-1)
+    hole_of = np.full(int(point.max()) + 1, -1, dtype=np.int64)
+    hole_of[point[len(ends):]] = holes[1]
+    point = point[: len(ends)].reshape(-1, 2)
     _, pair = np.unique(sides, axis=0, return_inverse=True)
-    n, c = int(point.max()) + 1, len(candidates)
+    pair = pair.reshape(-1)
+    n = len(hole_of)
     # a candidate joins its two end points, each taken within its region pair
-    ends = pair.reshape(-1)[:, None] * n + point
-    _, node = np.unique(ends, return_inverse=True)
+    _, node = np.unique(pair[:, None] * n + point, return_inverse=True)
     node = node.reshape(-1, 2)
-    links = sparse.coo_array((np.ones(c), (node[:, 0], node[:, 1])), shape=(int(node.max()) + 1,) * 2)
-    return csgraph.connected_components(links, directed=False)[1][node[:, 0]].astype(np.int64)
+    posts = _post_links(pair, hole_of[point], ends.reshape(-1, 2, 3), width[candidates])
+    links = np.concatenate([node, np.column_stack([node[posts[:, 0], 0], node[posts[:, 1], 0]])])
+    graph = sparse.coo_array((np.ones(len(links)), (links[:, 0], links[:, 1])), shape=(int(node.max()) + 1,) * 2)
+    return csgraph.connected_components(graph, directed=False)[1][node[:, 0]].astype(np.int64)
+
+
+def _post_links(pair: np.ndarray, hole: np.ndarray, ends: np.ndarray, width: np.ndarray) -> np.ndarray:
+    """(K, 2) candidate pairs of one region pair with an end point each on one small hole that lies closer to
+    the other's than either candidate is wide (a post in a gap; :func:`_openings`).
+
+    Args:
+        pair: (C,) each candidate's region pair; ``hole``: (C, 2) the small hole each end point lies on (-1:
+            none); ``ends``: (C, 2, 3) the end points, m; ``width``: (C,) walkable widths, m.
+    """
+    candidate, end = np.nonzero(hole >= 0)
+    order = np.lexsort((candidate, hole[candidate, end], pair[candidate]))
+    candidate, end = candidate[order], end[order]
+    key = np.column_stack([pair[candidate], hole[candidate, end]])
+    starts = np.flatnonzero(np.r_[True, (key[1:] != key[:-1]).any(axis=1)])
+    found = []
+    for group in np.split(np.arange(len(candidate)), starts[1:]):  # a few end points on each hole
+        if len(group) < 2:
+            continue
+        i, j = np.triu_indices(len(group), 1)
+        a, b = candidate[group[i]], candidate[group[j]]
+        gap = np.linalg.norm(ends[a, end[group[i]]] - ends[b, end[group[j]]], axis=1)
+        keep = (a != b) & (gap < np.minimum(width[a], width[b]))
+        found.append(np.column_stack([a[keep], b[keep]]))
+    return np.concatenate(found) if found else np.zeros((0, 2), dtype=np.int64)
 
 
 def _chokepoints(candidates: np.ndarray, pairs: np.ndarray, labels: np.ndarray, endpoints: np.ndarray,
-                 widest: np.ndarray, width: np.ndarray, floor: np.ndarray, separation: float) -> list[dict[str, Any]]:
+                 widest: np.ndarray, width: np.ndarray, floor: np.ndarray, separation: float,
+                 holes: tuple[np.ndarray, np.ndarray]) -> list[dict[str, Any]]:
     """One record per chokepoint: candidates grouped by region pair, widest first; the others of an
-    opening (:func:`_openings`) and near ones dropped."""
+    opening (:func:`_openings`, ``holes`` as there) and near ones dropped."""
     sides = np.sort(labels[pairs[candidates]], axis=1)
-    opening = _openings(candidates, sides, endpoints)
+    opening = _openings(candidates, sides, endpoints, width, holes)
     order = np.lexsort((candidates, -width[candidates], sides[:, 1], sides[:, 0]))
     kept: list[dict[str, Any]] = []
     kept_at: dict[tuple[int, int], list[np.ndarray]] = {}

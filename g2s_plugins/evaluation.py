@@ -116,7 +116,8 @@ RADII = (3.0, 6.0, 10.0)
 """Coverage radii reported by default, metres."""
 
 REFERENCE_SOURCES = 512
-"""Graphs with more nodes than this get a sampled reference flow with this many sources."""
+"""Graphs with more nodes of positive weight than this and than :data:`g2s_plugins.traffic.EXACT_NODES` get a
+sampled reference flow with this many sources; smaller ones the exact flow."""
 
 PLAN_TOLERANCE = 1e-3
 """A sample stands on a polygon when Detour's nearest point on it is this close in plan, m (float32 rounding)."""
@@ -152,8 +153,10 @@ class Quality:
 
 
 def reference_flow(result: RunResult, max_sources: int = REFERENCE_SOURCES, seed: int = 0) -> np.ndarray:
-    """(n,) area-weighted OD flow through each initial-graph node, in graph node order."""
-    return traffic.walking_flow(result.graph, max_sources=max_sources, seed=seed)
+    """(n,) area-weighted OD flow through each initial-graph node, in graph node order: exact up to
+    :data:`g2s_plugins.traffic.EXACT_NODES` (or ``max_sources``) nodes of positive weight, the heat-map
+    guarantee's rule, else from ``max_sources`` sampled sources."""
+    return traffic.walking_flow(result.graph, max_sources, seed, exact_up_to=traffic.EXACT_NODES)
 
 
 def nearest_structure_rows(result: RunResult) -> np.ndarray:
@@ -253,7 +256,8 @@ def navmesh_surface(result: RunResult, reference: np.ndarray, max_sources: int =
     polygons = polygons_under(navmesh, _positions(result.graph))
     owner = np.where(polygons >= 0, polygon_rows[np.maximum(polygons, 0)], -1)
     spacing = result.graph.graph.get("sampling_stats", {}).get("spacing", 2.0 * float(context.agent.radius))
-    return NavmeshSurface(graph, traffic.walking_flow(graph, max_sources, seed), owner, REACH_SPACINGS * spacing)
+    flow = traffic.walking_flow(graph, max_sources, seed, exact_up_to=traffic.EXACT_NODES)
+    return NavmeshSurface(graph, flow, owner, REACH_SPACINGS * spacing)
 
 
 def carry(values: np.ndarray, area: np.ndarray, positions: np.ndarray, surface: NavmeshSurface) -> np.ndarray:

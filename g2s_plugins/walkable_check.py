@@ -115,7 +115,8 @@ def flat_area_ratio(mesh: trimesh.Trimesh, max_slope: float) -> float:
     areas = np.asarray(mesh.area_faces)
     flat = math.cos(math.radians(max_slope))
     along_y = areas[normals[:, 1] >= flat].sum()
-    return float(areas[normals[:, 2] >= flat].sum() / along_y) if along_y > 0 else math.inf
+    along_z = areas[normals[:, 2] >= flat].sum()
+    return float(along_z / along_y) if along_y > 0 else math.inf if along_z > 0 else 0.0  # no flat face: no frame
 
 
 def looks_z_up(mesh: trimesh.Trimesh, max_slope: float) -> bool:
@@ -214,6 +215,8 @@ def _inside_out_faces(mesh: trimesh.Trimesh) -> tuple[trimesh.Trimesh, list[np.n
 GENERAL_HINT = ("check mesh.scale (the file's units to metres), the agent settings, the mesh's up_axis, and that its "
                 "floors' faces face up (their winding)")
 
+ZERO_AREA_HINT = "every face has zero area (its corners on a line or at one point): the file holds no surface; export it again"
+
 UP_AXIS_HINT = ("most flat faces face along z, not y: if the file is Z-up, set `mesh: {up_axis: z}` "
                 "(or `y` if it is already z)")
 
@@ -227,6 +230,8 @@ def likely_causes(mesh: trimesh.Trimesh, agent: AgentConfig, winding: bool = Tru
     one that :func:`walks_upright` clears the up axis; without one, only a flat area along z over
     :data:`Z_UP_UNWALKED_RATIO` times that along y names it.
     """
+    if not np.asarray(mesh.area_faces).any():  # a degenerate export, whatever its frame or winding
+        return [ZERO_AREA_HINT]
     if graph is None:
         z_up = flat_area_ratio(mesh, agent.max_slope) > Z_UP_UNWALKED_RATIO
     else:

@@ -82,3 +82,15 @@ def test_places_near_zero_print_without_a_minus_sign():
     slab(graph, 5.0, 0.0, 2, 100)
     message = disconnected_warning(graph, areas(graph), 2, AgentConfig())
     assert "-0.0" not in message and "(0.0, 0.0, 0.5 m)" in message
+
+
+def test_a_rise_far_from_the_areas_edges_is_no_step():
+    """The archipelago of benchmarks/level_kinds.py (seed 0): islands at heights 0.5-2 m, a bridge too narrow for
+    the agent. The closest places, on two islands 18.6 m apart, differ by 0.6 m, which the warning called a step
+    higher than max_climb; over 18 m that rise is a slope the agent walks: what parts them lies between them."""
+    graph = nx.Graph()
+    slab(graph, 0.0, 0.0, 10, 0)
+    slab(graph, 28.0, 0.6, 4, 100)
+    message = disconnected_warning(graph, areas(graph), 5, AgentConfig())
+    assert "Likely cause: a gap or passage too narrow for the agent (agent.radius 0.5 m), or a wall, between places about " \
+           "19.0 m apart, e.g. between (9.5, 0.0, 0.5 m) and (28.5, 0.6, 0.5 m)." in message

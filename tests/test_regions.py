@@ -90,9 +90,9 @@ def test_small_holes_are_obstacles_and_outer_walls_are_not():
     pillar = square(5.0, 5.0, 2.0, clockwise=True)  # 4 m²
     block = square(10.0, 10.0, 5.0, clockwise=True)  # 25 m²
     start, end = (np.concatenate(parts) for parts in zip(outer, pillar, block))
-    flags = decomposition.obstacle_edges(start, end, max_area=16.0)
+    flags = decomposition.small_holes(start, end, max_area=16.0) >= 0
     assert flags.tolist() == [False] * 4 + [True] * 4 + [False] * 4
-    assert not decomposition.obstacle_edges(start, end, max_area=0.0).any()
+    assert (decomposition.small_holes(start, end, max_area=0.0) < 0).all()
 
 
 def test_distance_to_walls_is_exact_for_long_walls():
@@ -164,14 +164,86 @@ def test_a_wide_gap_cut_by_two_portals_is_one_chokepoint():
     assert [sum(a - 1 <= c["position"][0] <= b + 1 for c in found) for a, b in gaps] == [1, 1, 1]
 
 
+def test_a_post_in_a_gap_leaves_one_chokepoint():
+    # a 1 m post in the middle of a 14 m gap parts the cut between the fields into portals that end on the post's
+    # outline; the post is narrower between them than either is wide, so the gap is one opening: one chokepoint
+    # (there were two, 5.5 and 5.0 m, as at the gravestones in the cathedral churchyard's gaps)
+    post = trimesh.creation.box(extents=(1.0, 1.0, 1.0)).apply_translation((0.3, 0.5, 0.0))
+    level = SimpleNamespace(mesh=trimesh.util.concatenate([open_fields([(-7.0, 7.0)]).mesh, post]), name="post")
+    result = run(level)
+    fields = sorted(r["id"] for r in sorted(regions(result), key=lambda r: -r["area"])[:2])
+    between = [c for c in chokepoints(result) if c["regions"] == fields]
+    assert len(between) == 1 and -7.0 <= between[0]["position"][0] <= 7.0
+
+
+def test_portals_beside_a_post_narrower_than_both_are_one_opening():
+    # three portals of one region pair end on small hole 7: the first two 2 m apart across it, each 5 m wide
+    # (a post in a gap), the second and third 3 m apart, the third 1 m wide (the wall between two doors)
+    pair = np.zeros(3, dtype=np.int64)
+    hole = np.array([[-1, 7], [7, 7], [7, -1]])
+    ends = np.array([[[0.0, 0, 0], [5, 0, 0]], [[7, 0, 0], [12, 0, 0]], [[15, 0, 0], [16, 0, 0]]])
+    links = decomposition._post_links(pair, hole, ends, np.array([5.0, 5.0, 1.0]))
+    assert links.tolist() == [[0, 1]]
+    assert len(decomposition._post_links(pair, hole, ends, np.array([1.5, 5.0, 1.0]))) == 0
+
+
+def west_front():
+    """The cathedral's west front: a 62 x 40 m field (z < -1), a 1 m thick, 3 m tall wall at z -1..0 with doors
+    of 2, 3 and 2 m (from x = 1.75, 9.5 and 18.25), a 22 x 30 m hall behind it (x 0..22, z 0..30) with two rows
+    of 1.2 m pillars at x 5.5 and 16.5. Walls and pillars are open at the top (no walkable roofs)."""
+    def box(x0, x1, z0, z1, top):
+        solid = trimesh.creation.box(bounds=((x0, -0.2, z0), (x1, top, z1)))
+        if top > 0:
+            solid.update_faces(solid.face_normals[:, 1] < 0.5)
+        return solid
+
+    front = [-1.0, 1.75, 3.75, 9.5, 12.5, 18.25, 20.25, 23.0]
+    parts = [box(-20.0, 42.0, -41.0, -1.0, 0.0), box(0.0, 22.0, -1.0, 30.0, 0.0)]
+    parts += [box(a, b, -1.0, 0.0, 3.0) for a, b in zip(front[::2], front[1::2])]
+    parts += [box(-1.0, 0.0, 0.0, 31.0, 3.0), box(22.0, 23.0, 0.0, 31.0, 3.0), box(0.0, 22.0, 30.0, 31.0, 3.0)]
+    parts += [box(x - 0.6, x + 0.6, z - 0.6, z + 0.6, 3.0) for x in (5.5, 16.5) for z in range(6, 27, 5)]
+    return SimpleNamespace(mesh=trimesh.util.concatenate(parts), name="west_front")
+
+
+def test_three_doors_in_a_front_part_the_field_from_the_hall():
+    # the wall between two of the doors is a small hole (15 m² of navmesh hole, under obstacle_area), so the
+    # front read as one opening 18.5 m wide and the field and the hall were one region with no chokepoint; each
+    # piece is long for its width and its ends face the doors' far jambs: a piece of wall, counted as one
+    result = run(west_front())
+    field, hall = sorted(regions(result), key=lambda r: -r["area"])[:2]
+    assert field["centroid"][2] < -1.0 < 0.0 < hall["centroid"][2]
+    between = [c for c in chokepoints(result) if c["regions"] == sorted([field["id"], hall["id"]])]
+    assert sorted(round(c["position"][0]) for c in between) == [3, 11, 19]
+
+
+def test_elongated_holes_between_walls_are_wall_pieces_and_pillars_are_not():
+    # a 7 x 2 m hole 1 m from the outer wall at one end and from a 25 m² block at the other, open ground on both
+    # long sides (a wall between two doors), is a piece of wall; a 2 m pillar, a 4 x 1 m stone in the open and a
+    # 6 x 1.5 m row of desks 1 m from a wall (as near as the aisles at its ends) are not
+    def rectangle(x0, x1, z0, z1):
+        corners = np.array([[x0, 0, z0], [x0, 0, z1], [x1, 0, z1], [x1, 0, z0]], dtype=float)
+        return corners, np.roll(corners, -1, axis=0)
+
+    outer = square(0.0, 0.0, 30.0, clockwise=False)
+    pillar = square(5.0, 5.0, 2.0, clockwise=True)
+    piece, block = rectangle(1.0, 8.0, 20.0, 22.0), square(9.0, 18.5, 5.0, clockwise=True)
+    stone, desks = rectangle(15.0, 19.0, 5.0, 6.0), rectangle(2.0, 8.0, 27.5, 29.0)
+    start, end = (np.concatenate(parts) for parts in zip(outer, pillar, piece, block, stone, desks))
+    hole = decomposition.small_holes(start, end, max_area=16.0)
+    assert ((hole >= 0) == np.repeat([False, True, True, False, True, True], 4)).all()
+    pieces = decomposition.wall_pieces(start, end, hole)
+    assert pieces.tolist() == np.repeat([False, False, True, False, False, False], 4).tolist()
+
+
 def test_two_chokepoints_between_the_same_regions_are_not_articulations():
     # closing one of two passages between the same two regions leaves the other (rustworkx's bridges
     # sees the two edges of the region multigraph as one: both were flagged)
     pairs = np.array([[0, 1], [2, 3], [4, 5]])
     labels = np.array([0, 1, 0, 1, 1, 2])
     ends = np.array([[[0.0, 0, 0], [1, 0, 0]], [[10, 0, 0], [11, 0, 0]], [[20, 0, 0], [21, 0, 0]]])
+    no_holes = (np.zeros((0, 3)), np.zeros(0, dtype=np.int64))
     found = decomposition._chokepoints(np.arange(3), pairs, labels, ends, ends[:, 0], np.ones(3),
-                                       np.zeros(3, dtype=np.int64), separation=3.0)
+                                       np.zeros(3, dtype=np.int64), separation=3.0, holes=no_holes)
     assert [(c["regions"], c["articulation"]) for c in found] == [([0, 1], False), ([0, 1], False), ([1, 2], True)]
 
 

@@ -9,9 +9,11 @@ undefined), ``rho_area`` (the same, each node weighted by its area),
 and ``rho_navmesh``, ``rho_navmesh_ceiling`` and ``navmesh_area_left_out``
 (the heat map against the reference flow on the level's navmesh graph; the
 run's own graph on the navmesh route).
-Cost: the reference flow (``reference_sources`` Dijkstra searches of the
-initial graph above that many nodes) and two multi-source searches; off the
-navmesh route also a navmesh build of the level and its reference flow.
+Cost: the reference flow (exact up to
+:data:`g2s_plugins.traffic.EXACT_NODES` nodes, one Dijkstra search of the
+initial graph per node; above, ``reference_sources`` searches) and two
+multi-source searches; off the navmesh route also a navmesh build of the
+level and its reference flow.
 """
 
 from __future__ import annotations
@@ -33,7 +35,8 @@ class Params(PluginParams):
                                description="coverage radii, metres, each > 0 (each gives area_within_<r>m)")
     off_distance: float = Field(5.0, gt=0, description="traffic_off counts the flow farther than this from the structure, metres")
     reference_sources: int = Field(evaluation.REFERENCE_SOURCES, ge=1,
-                                   description="graphs with more nodes than this sample this many area-weighted sources")
+                                   description="graphs with more nodes than this and than traffic.EXACT_NODES (2,000) "
+                                               "sample this many area-weighted sources")
     seed: int = Field(0, description="seed of the source sample")
 
     @model_validator(mode="after")

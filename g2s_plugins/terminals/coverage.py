@@ -139,16 +139,20 @@ def g2s_select_terminals(graph: nx.Graph, params: Params, context: RunContext) -
     count, labels = csgraph.connected_components(adjacency, directed=False)
     component_area = np.bincount(labels, weights=arrays.area, minlength=count)
     small = component_area < min_area
-    if small.any():
-        context.warn(
-            f"coverage: {int(small.sum())} walkable area(s) smaller than {min_area:.3g} m² "
-            f"({component_area[small].sum():.3g} m² in all) are not covered"
-        )
     leaves = np.flatnonzero(degree == 1)
     if params.leaf_min_depth > 0:
         depths = leaf_depths(graph, context.navmesh, [arrays.nodes[i] for i in leaves.tolist()])
         leaves = leaves[depths >= params.leaf_min_depth]
-    seeds = np.concatenate([leaves, _seeds(adjacency, labels, count, leaves, small)])
+    has_leaf = np.zeros(count, dtype=bool)
+    has_leaf[labels[leaves]] = True
+    # a small area with leaves keeps them as terminals (its own tree joins them): only the others are left out
+    left_out = small & ~has_leaf
+    if left_out.any():
+        context.warn(
+            f"coverage: {int(left_out.sum())} walkable area(s) smaller than {min_area:.3g} m² "
+            f"({component_area[left_out].sum():.3g} m² in all) are not covered"
+        )
+    seeds = np.concatenate([leaves, _seeds(adjacency, labels, has_leaf, small)])
     eligible = ~small[labels]
     if params.traffic_weight > 0:
         traffic_radius = params.traffic_radius if params.traffic_radius is not None else TRAFFIC_RADIUS_SHARE * radius
@@ -230,10 +234,9 @@ def traffic_lengths(arrays: traffic.SurfaceArrays, weight: float) -> sp.csr_arra
     return sp.csr_array((lengths, adjacency.indices, adjacency.indptr), shape=adjacency.shape)
 
 
-def _seeds(adjacency, labels: np.ndarray, count: int, leaves: np.ndarray, small: np.ndarray) -> np.ndarray:
-    """One node per big enough area without leaves: the farthest from its lowest-id node."""
-    has_leaf = np.zeros(count, dtype=bool)
-    has_leaf[labels[leaves]] = True
+def _seeds(adjacency, labels: np.ndarray, has_leaf: np.ndarray, small: np.ndarray) -> np.ndarray:
+    """One node per big enough area without leaves (``has_leaf``, ``small``: (areas,) bool): the farthest from its
+    lowest-id node."""
     firsts = np.unique(labels, return_index=True)[1]
     lonely = firsts[~has_leaf & ~small]
     if lonely.size == 0:

@@ -256,6 +256,36 @@ def test_a_glb_whose_json_chunk_is_damaged_says_what_is_wrong(damage, says, tmp_
     assert tree(tmp_path / "out") == []
 
 
+def _with_accessor(document: dict, **changes: object) -> dict:
+    """``document`` with its first accessor (the floor's face indices) changed: a key None is taken out."""
+    accessor = {key: value for key, value in {**document["accessors"][0], **changes}.items() if value is not None}
+    return {**document, "accessors": [accessor, *document["accessors"][1:]]}
+
+
+@pytest.mark.parametrize("changes, says", [
+    # were "cannot read mesh (TypeError: unsupported operand type(s) for +: 'int' and 'str')", "(TypeError: slice
+    # indices must be integers ...)", "(OverflowError: Python int too large to convert to C long)", "(KeyError:
+    # '5126')", "(KeyError: 'VEC7')", "(TypeError: can only concatenate str (not "numpy.int64") to str)"
+    ({"count": "6"}, "accessors[0].count is '6'; expected an integer >= 1"),
+    ({"count": 6.5}, "accessors[0].count is 6.5; expected an integer >= 1"),
+    ({"count": 2**63}, "accessors[0] ends at byte 36893488147419103232 of bufferViews[0], past its 24 bytes"),
+    ({"componentType": 1234}, "accessors[0].componentType is 1234; expected one of 5120, 5121, 5122, 5123, 5125, 5126"),
+    ({"type": "VEC7"}, "accessors[0].type is 'VEC7'; expected one of SCALAR, VEC2, VEC3, VEC4, MAT2, MAT3, MAT4"),
+    ({"byteOffset": "0"}, "accessors[0].byteOffset is '0'; expected an integer >= 0"),
+    # was read silently: trimesh reads the data under a sparse accessor's values (zeros without a bufferView)
+    ({"sparse": {"count": 1, "indices": {"bufferView": 0, "componentType": 5125}, "values": {"bufferView": 0}}},
+     "accessors[0] is sparse, which g2s cannot read (its values would be read as zeros or the data under them)"),
+    ({"bufferView": None, "sparse": {"count": 1, "indices": {"bufferView": 0, "componentType": 5125}, "values": {"bufferView": 0}}},
+     "accessors[0] is sparse, which g2s cannot read (its values would be read as zeros or the data under them)"),
+])
+def test_a_glb_accessor_of_the_wrong_kind_names_its_key(changes, says, tmp_path, quick_config, capsys):
+    _, document, binary = _glb_parts(tmp_path)
+    glb = _damaged(tmp_path, "bad.glb", _glb(_with_accessor(document, **changes), binary))
+    outcome = run_g2s(capsys, "run", quick_config, glb, "-o", tmp_path / "out")
+    assert_clean_error(outcome, f"{glb}: {says}")
+    assert tree(tmp_path / "out") == []
+
+
 @pytest.mark.parametrize("buffer, says", [
     # was "cannot read mesh (FileNotFoundError: missing.bin)"
     ({"uri": "missing.bin"}, "buffers[0]: cannot read its file 'missing.bin' beside the glTF file (No such file or directory)"),
@@ -290,6 +320,38 @@ def test_a_gltf_whose_buffer_uri_is_url_encoded_is_read(tmp_path):
     with pytest.raises(MeshError) as missing:
         load_mesh(gltf)
     assert str(missing.value) == f"{gltf}: buffers[0]: cannot read its file 'floor part 0.bin' beside the glTF file (No such file or directory)"
+
+
+def test_a_gltf_whose_buffer_lies_in_another_folder_is_read(tmp_path):
+    # a glTF may name its buffer by a relative path out of its folder ("../buffers/floor.bin"); trimesh 5 refused it:
+    # "cannot read mesh (ValueError: '../buffers/floor.bin' escapes resolver root ... pass `FilePathResolver(path,
+    # allow_anywhere=True)` to allow it)"
+    (tmp_path / "level").mkdir()
+    (tmp_path / "buffers").mkdir()
+    gltf = _gltf_with_buffer(tmp_path / "level")
+    document = json.loads(gltf.read_text())
+    for buffer in document["buffers"]:
+        (tmp_path / "level" / buffer["uri"]).rename(tmp_path / "buffers" / buffer["uri"])
+        buffer["uri"] = f"../buffers/{buffer['uri']}"
+    gltf.write_text(json.dumps(document))
+    mesh, _ = load_mesh(gltf)
+    assert len(mesh.faces) == 2 and mesh.area == pytest.approx(400)
+
+
+@pytest.mark.parametrize("config, vertices", [
+    ("map_piece", "v 0 0 0\nv 5 0 5\nv 10 0 10\n"),  # on a line across the plan: the navmesh's grid is not empty
+    ("map_piece_sampling", "v 0 0 0\nv 5 0 5\nv 10 0 10\n"),
+    ("map_piece_sampling", "v 3 1 2\nv 3 1 2\nv 3 1 2\n"),
+])
+def test_a_mesh_of_zero_area_is_named_so_not_taken_for_z_up(config, vertices, tmp_path, capsys):
+    # a mesh whose triangles all have their corners on a line or at one point (a glTF accessor without its
+    # bufferView reads as zeros) was "no walkable surface ...; most flat faces face along z, not y: if the file is
+    # Z-up, set mesh: {up_axis: z}": no face has area along y, so the flat-area ratio along z was taken as infinite
+    mesh = _damaged(tmp_path / "x", "degenerate.obj", (vertices + "f 1 2 3\nf 3 2 1\n").encode())
+    outcome = run_g2s(capsys, "run", config, mesh, "-o", tmp_path / "out")
+    assert_clean_error(outcome, "every face has zero area (its corners on a line or at one point): the file holds no surface")
+    assert "up_axis" not in outcome.stderr
+    assert tree(tmp_path / "out") == []
 
 
 def test_a_gltf_nested_too_deeply_is_a_clean_error(tmp_path, quick_config, capsys):
