@@ -14,7 +14,7 @@ import trimesh
 
 from g2s_core.config import PRESETS_DIR, load_config
 from g2s_plugins.recast import RecastParams, build_navmesh
-from g2s_plugins.samples import pieces
+from g2s_plugins.samples import outdoor, pieces
 from g2s_plugins.terminals import entry_exit
 
 CONFIG = load_config(PRESETS_DIR / "map_piece.yaml")
@@ -317,3 +317,12 @@ def test_a_door_half_blocked_inside_its_wall_is_its_free_part(block: str, free: 
         best = min(found, key=lambda o: float(np.linalg.norm(np.subtract(o.position, point))))
         assert float(np.linalg.norm(np.subtract(best.position, point)[[0, 2]])) <= 0.05  # along the wall's face
         assert best.width == pytest.approx(width, abs=0.05)
+
+
+def test_ground_rising_beside_a_terrain_border_leaves_its_openings_whole() -> None:
+    # The free part of an opening is measured one search step above the climb; hilly ground rising beside the
+    # border within the passage's depth is walked onto, not walked round, so it must not end the free part. When it
+    # did, the sample terrain's two long border openings measured 29.3 and 39.3 m instead of 70.1 and 73.0 m.
+    widths = sorted(o.width for o in _detect(outdoor.terrain().mesh).openings)
+    assert len(widths) == 7
+    assert widths[-2] > 65.0 and widths[-1] > 65.0
