@@ -14,7 +14,7 @@ import trimesh
 
 from g2s_core.config import PRESETS_DIR, load_config
 from g2s_plugins.recast import RecastParams, build_navmesh
-from g2s_plugins.samples import pieces
+from g2s_plugins.samples import outdoor, pieces
 from g2s_plugins.terminals import entry_exit
 
 CONFIG = load_config(PRESETS_DIR / "map_piece.yaml")
@@ -280,3 +280,49 @@ def test_stairs_leaving_at_their_top_give_the_top_edge(riser: float, yaw: float)
     level = pieces.turned(level, yaw) if yaw else level
     found = _detect(level.mesh).openings
     _assert_known(found, [o.position for o in level.openings], [o.width for o in level.openings])
+
+
+def _room_with_a_half_blocked_door(block: str) -> trimesh.Trimesh:
+    """Room 8 x 6 m, walls 0.4 m thick, a 1.6 m doorway east (z 2.2-3.8) and one west under 2.2 m lintels. The west
+    one half blocked: ``"leaf"``, 1.6 m (z 2.2-3.8), a sliding leaf 0.04 m thick and 2.1 m high in the wall's middle
+    over z 2.2-2.8; ``"rubble"``, 2.0 m (z 2.0-4.0), a chunk 0.7 m high over z 3.5-4.0 from 0.1 m short of the outer
+    face to 0.1 m inside the room, and a slab 0.25 m high (the agent steps onto it) over z 2.0-2.4 just inside the room."""
+    w, d, t = 8.0, 6.0, 0.4
+    west = (2.2, 3.8) if block == "leaf" else (2.0, 4.0)
+    parts = [_box(-t, w + t, -SLAB, 0.0, -t, d + t), _box(-t, w + t, -SLAB, TALL, -t, 0.0),
+             _box(-t, w + t, -SLAB, TALL, d, d + t)]
+    for (x0, x1), (z0, z1) in (((-t, 0.0), west), ((w, w + t), (2.2, 3.8))):
+        parts += [_box(x0, x1, -SLAB, TALL, 0.0, z0), _box(x0, x1, -SLAB, TALL, z1, d), _box(x0, x1, 2.2, TALL, z0, z1)]
+    if block == "leaf":
+        parts.append(_box(-0.22, -0.18, 0.01, 2.11, 2.2, 2.8))
+    else:
+        parts += [_box(-0.3, 0.1, 0.0, 0.7, 3.5, 4.0), _box(0.0, 0.3, 0.0, 0.25, 2.0, 2.4)]
+    return trimesh.util.concatenate(parts)
+
+
+@pytest.mark.parametrize("block, free, yaw", [("leaf", (2.8, 3.8), 0.0), ("leaf", (2.8, 3.8), 22.0),
+                                              ("rubble", (2.0, 3.5), 0.0), ("rubble", (2.0, 3.5), 45.0)])
+def test_a_door_half_blocked_inside_its_wall_is_its_free_part(block: str, free: tuple, yaw: float) -> None:
+    # The floor ends at the outer face along the whole door, so the opening measured the door, while a sliding
+    # leaf in the wall's middle left 1.0 m of 1.6 m free (fifth round's `sliding_door`) and a rubble chunk just
+    # inside the face 1.5 m of 2.0 m (`rubble_breach` measured 1.86-1.91 m of its 1.5 m). The opening is now the
+    # passage's narrowest free part above the climb: the slab of rubble the agent steps onto does not narrow it.
+    mesh = _room_with_a_half_blocked_door(block)
+    turn = pieces.yaw_about_centre(mesh, yaw)
+    mesh.apply_transform(turn)
+    known = trimesh.transform_points(np.array([[-0.4, 0.0, sum(free) / 2], [8.4, 0.0, 3.0]]), turn)
+    found = _detect(mesh).openings
+    assert len(found) == 2
+    for point, width in zip(known, [free[1] - free[0], 1.6]):
+        best = min(found, key=lambda o: float(np.linalg.norm(np.subtract(o.position, point))))
+        assert float(np.linalg.norm(np.subtract(best.position, point)[[0, 2]])) <= 0.05  # along the wall's face
+        assert best.width == pytest.approx(width, abs=0.05)
+
+
+def test_ground_rising_beside_a_terrain_border_leaves_its_openings_whole() -> None:
+    # The free part of an opening is measured one search step above the climb; hilly ground rising beside the
+    # border within the passage's depth is walked onto, not walked round, so it must not end the free part. When it
+    # did, the sample terrain's two long border openings measured 29.3 and 39.3 m instead of 70.1 and 73.0 m.
+    widths = sorted(o.width for o in _detect(outdoor.terrain().mesh).openings)
+    assert len(widths) == 7
+    assert widths[-2] > 65.0 and widths[-1] > 65.0

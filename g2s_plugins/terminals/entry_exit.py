@@ -60,7 +60,9 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
      agent's diameter) are dropped (chamfers, slivers, a door exactly as
      wide as the agent, which Recast erodes away), and so are openings whose
      clear width across, between their edge and the navmesh, is no wider
-     (bars across a doorway);
+     (bars across a doorway); an opening is the narrowest free part of that
+     passage above the climb (a sliding leaf or a rubble chunk in the wall
+     leaves part of the door);
    * jambs (``step_up``): an opening found from step tops needs something
      at half the agent's height within two search steps of both its ends
      (a threshold's jambs); a curb along the piece's edge has none;
@@ -683,25 +685,59 @@ def _extend(kept: list[_Edge], caster: RayCaster, s: _Settings) -> tuple[np.ndar
 
 def _passages(
     kept: list[_Edge], first: np.ndarray, last: np.ndarray, ways: _Ways, caster: RayCaster, s: _Settings
-) -> np.ndarray:
-    """(n,) the narrowest clear width across each opening between its edge and the navmesh, m.
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The narrowest clear width across each opening between its edge and the navmesh, and its free part.
 
     At every search step in from the edge, as deep as its samples stand from it (the wall's thickness
-    and the erosion), a ray each way along the edge from the opening's middle, the rays' height up:
-    bars or a grille in the wall leave gaps narrower than the agent however wide the hole.
+    and the erosion), rays each way along the edge from the opening's middle. At the rays' height:
+    bars or a grille in the wall leave gaps narrower than the agent however wide the hole. One search
+    step above the climb (over what the agent steps onto, such as a low slab of rubble, and not
+    stopped by ground it walks onto): a leaf or a chunk standing in the passage leaves its free
+    part. Returns (n,) the narrowest width at the rays' height, m, and (n,) (n,) how far the
+    narrowest free part above the climb reaches from the middle towards ``first`` and towards
+    ``last`` (along the edge, m; infinite where nothing stands).
     """
     out = np.array([e.outward for e in kept])
     nrm = np.array([e.normal for e in kept])
     along = _unit(np.cross(nrm, out))
-    mid = 0.5 * (first + last) + UP * s.lift
+    towards_last = np.einsum("ij,ij->i", along, last - first) >= 0.0
+    mid = 0.5 * (first + last)
     deep = np.array([np.median(np.linalg.norm(ways.edge[e.samples] - ways.base[e.samples], axis=1)) for e in kept])
-    widths = np.full(len(kept), np.inf)
+    widths, free = np.full(len(kept), np.inf), np.full(len(kept), np.inf)
+    back, ahead = np.full(len(kept), np.inf), np.full(len(kept), np.inf)
     for k in range(1, int(math.ceil(float(deep.max(initial=0.0)) / s.delta)) + 1):
         rows = np.nonzero(k * s.delta <= deep)[0]
-        points = mid[rows] - out[rows] * (k * s.delta)
-        span = (caster.first_hits(points, along[rows]).distance + caster.first_hits(points, -along[rows]).distance)
-        widths[rows] = np.minimum(widths[rows], span)
-    return widths
+        inside = mid[rows] - out[rows] * (k * s.delta)
+        points = np.concatenate([inside + UP * s.lift, inside + UP * (s.climb + s.delta)])
+        directions = np.concatenate([along[rows], along[rows]])
+        hits_ahead, hits_back = caster.first_hits(points, directions), caster.first_hits(points, -directions)
+        low, high = slice(0, len(rows)), slice(len(rows), None)
+        widths[rows] = np.minimum(widths[rows], hits_ahead.distance[low] + hits_back.distance[low])
+        # Above the climb, ground the agent walks onto (a terrain rising beside its border) is in no one's way.
+        forward, backward = (np.where(h.hit & _walkable(caster, h.face, s), np.inf, h.distance)[high]
+                             for h in (hits_ahead, hits_back))
+        to_last = np.where(towards_last[rows], forward, backward)
+        to_first = np.where(towards_last[rows], backward, forward)
+        narrower = to_first + to_last < free[rows]
+        rows = rows[narrower]
+        free[rows], back[rows], ahead[rows] = (to_first + to_last)[narrower], to_first[narrower], to_last[narrower]
+    return widths, back, ahead
+
+
+def _free_part(
+    first: np.ndarray, last: np.ndarray, back: np.ndarray, ahead: np.ndarray
+) -> tuple[np.ndarray, np.ndarray]:
+    """(n,3) (n,3): the openings' ends ``first`` and ``last`` moved in along their edge onto the free part's ends.
+
+    ``back`` and ``ahead`` (n,): how far the passage is free from the middle towards each end (see
+    :func:`_passages`). The floor's end runs the door's whole width while a sliding leaf in the wall's
+    middle, or a rubble chunk just inside the face, leaves only part of it to walk through: the
+    opening is that part, as it is where something stands at the face (the floor ends there).
+    """
+    half = 0.5 * np.linalg.norm(last - first, axis=1)
+    along = (last - first) / np.maximum(2.0 * half, 1e-12)[:, None]
+    mid = 0.5 * (first + last)
+    return mid - along * np.minimum(half, back)[:, None], mid + along * np.minimum(half, ahead)[:, None]
 
 
 def _between_jambs(
@@ -992,7 +1028,8 @@ def detect_openings(
         return Opening(vec3(mid), vec3(heading), width, vec3(p0), vec3(p1), score, reason)
 
     jambs = _between_jambs(kept, p_first, p_last, caster, s)
-    passages = _passages(kept, p_first, p_last, ways, caster, s)
+    passages, back, ahead = _passages(kept, p_first, p_last, ways, caster, s)
+    p_first, p_last = _free_part(p_first, p_last, back, ahead)
     found: list[tuple[Opening, tuple[int, ...], tuple[float, float, float]]] = []
     edges: list[_Edge] = []
     for e, a, b, framed, passage in zip(kept, p_first, p_last, jambs, passages):
