@@ -703,8 +703,7 @@ def _passages(
     towards_last = np.einsum("ij,ij->i", along, last - first) >= 0.0
     mid = 0.5 * (first + last)
     deep = np.array([np.median(np.linalg.norm(ways.edge[e.samples] - ways.base[e.samples], axis=1)) for e in kept])
-    widths, free = np.full(len(kept), np.inf), np.full(len(kept), np.inf)
-    back, ahead = np.full(len(kept), np.inf), np.full(len(kept), np.inf)
+    widths, back, ahead = np.full(len(kept), np.inf), np.full(len(kept), np.inf), np.full(len(kept), np.inf)
     for k in range(1, int(math.ceil(float(deep.max(initial=0.0)) / s.delta)) + 1):
         rows = np.nonzero(k * s.delta <= deep)[0]
         inside = mid[rows] - out[rows] * (k * s.delta)
@@ -714,13 +713,13 @@ def _passages(
         low, high = slice(0, len(rows)), slice(len(rows), None)
         widths[rows] = np.minimum(widths[rows], hits_ahead.distance[low] + hits_back.distance[low])
         # Above the climb, ground the agent walks onto (a terrain rising beside its border) is in no one's way.
-        forward, backward = (np.where(h.hit & _walkable(caster, h.face, s), np.inf, h.distance)[high]
+        forward, backward = (np.where(h.hit[high] & _walkable(caster, h.face[high], s), np.inf, h.distance[high])
                              for h in (hits_ahead, hits_back))
         to_last = np.where(towards_last[rows], forward, backward)
         to_first = np.where(towards_last[rows], backward, forward)
-        narrower = to_first + to_last < free[rows]
+        narrower = to_first + to_last < back[rows] + ahead[rows]
         rows = rows[narrower]
-        free[rows], back[rows], ahead[rows] = (to_first + to_last)[narrower], to_first[narrower], to_last[narrower]
+        back[rows], ahead[rows] = to_first[narrower], to_last[narrower]
     return widths, back, ahead
 
 
