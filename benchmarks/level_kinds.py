@@ -1,4 +1,4 @@
-"""Level kinds of the fifth, sixth and seventh held-out rounds (issue 9): generators no preset setting was made on.
+"""Level kinds of the fifth to eighth held-out rounds (issue 9): generators no preset setting was made on.
 
 Fifth round: six kinds, each about 1,000 navmesh polygons with the presets' agent (radius 0.5 m, height 2 m, climb 0.4 m):
 ``subway`` (platforms, track pits 1.2 m lower, stairs up to two concourses), ``archipelago`` (islands joined by
@@ -28,6 +28,16 @@ cell blocks of two tiers round open wells with galleries and bridges, a mess hal
 (galleries in enfilade on two storeys, an entrance hall open to the roof with a grand flight). Tops of tall
 solids that a first draft left flat (the office's core, the arena's blocks, the prison's guard post) are
 ridged or pointed at 50 degrees, which no agent stands on; the ground stops under the arena's tall blocks.
+
+Eighth round: six more kinds, 782-1,126 navmesh polygons with that agent (seeds 0-2): ``tower`` (seven office
+storeys joined only by two switchback stairwells), ``hospital`` (three storeys of wards off a racetrack of
+corridors, small rooms in the core, a stairwell and two lift shafts no one walks through), ``mall`` (three storeys
+of shops off galleries round an atrium open over all three, escalators as ramps across it), ``canyon`` (ledges in
+three tiers on both walls, ramps up them, sagging rope bridges across, a stream bed with fords), ``hillside`` (a
+terraced town whose streets climb as stairs between houses) and ``spaceship`` (three ring corridors joined by
+spokes, rooms off the rings, airlocks). Doors in walls at an angle are 2 m wide (the spaceship): a 1.6 m door,
+enough on the axes, closes there for the presets' agent. Stairwells' steps are blocks 0.45 m deep (``stairs``'s
+``depth``), so the flight of the storey below keeps its head room.
 
 Run: ``.venv/bin/python benchmarks/level_kinds.py OUT_DIR [--kinds subway forest] [--seeds 0 1 2]`` writes
 ``OUT_DIR/<kind>_s<seed>.obj``, the files ``benchmarks/analysis_quality.py --levels`` takes (which also takes the
@@ -109,16 +119,18 @@ class _Solids:
                 self.box(a, b, top - thickness, top, start, zs[-1])
 
     def stairs(self, start: np.ndarray, heading: np.ndarray, width: float, y0: float, rise: float,
-               riser: float = 0.15, tread: float = 0.30) -> None:
+               riser: float = 0.15, tread: float = 0.30, depth: float | None = None) -> None:
         """A straight flight from ``start`` (x, z) along the unit ``heading`` (x, z), climbing ``rise`` from ``y0``.
 
-        Each step is a solid block from ``y0`` up to its tread; the flight's plan is ``rise / riser * tread`` long.
+        Each step is a solid block from ``y0`` (0.3 m under it) up to its tread, or with ``depth`` a block that deep
+        under its tread (a flight with room under it); the flight's plan is ``rise / riser * tread`` long.
         """
         start, heading = np.asarray(start, dtype=np.float64), np.asarray(heading, dtype=np.float64)
         side = np.array([-heading[1], heading[0]]) * width / 2
         for i in range(int(round(rise / riser))):
             a, b = start + heading * tread * i, start + heading * tread * (i + 1)
-            self.prism(np.array([a - side, b - side, b + side, a + side]), y0 - 0.3, y0 + riser * (i + 1))
+            top = y0 + riser * (i + 1)
+            self.prism(np.array([a - side, b - side, b + side, a + side]), y0 - 0.3 if depth is None else top - depth, top)
 
     def ramp(self, a: np.ndarray, b: np.ndarray, width: float, ya: float, yb: float, thickness: float = 0.3) -> None:
         """A straight deck from plan point ``a`` (x, z) with its top at ``ya`` to ``b`` at ``yb``, ``width`` m wide."""
@@ -1578,11 +1590,477 @@ def museum(seed: int) -> trimesh.Trimesh:
     return s.mesh()
 
 
+def _strip(a: np.ndarray, b: np.ndarray, width: float) -> np.ndarray:
+    """The plan (4, 2) of a strip ``width`` m wide along the segment from plan point ``a`` (x, z) to ``b``."""
+    a, b = np.asarray(a, dtype=np.float64), np.asarray(b, dtype=np.float64)
+    along = (b - a) / np.linalg.norm(b - a)
+    side = np.array([-along[1], along[0]]) * width / 2
+    return np.array([a - side, b - side, b + side, a + side])
+
+
+def _switchback(s: _Solids, x0: float, z0: float, y: float, storey: float) -> None:
+    """Storey ``y``'s switchback in a well 4 m wide (x0 to x0 + 4) from z0 along +z: a landing 2 m deep at the
+    well's z0 end on every storey, a flight up along +z in the lane x0 to x0 + 2, a landing across the far end
+    half a storey up, a flight back along -z in the other lane to the next storey's landing. Steps are 0.28 m treads,
+    risers of at most 0.18 m, each a block 0.45 m deep, so the flights of the storey below keep their head room.
+    The well is :func:`_well_length` long; storeys above ``y`` leave it open beyond the landing."""
+    steps = math.ceil(storey / 2 / 0.18)
+    riser, run = storey / 2 / steps, steps * 0.28
+    s.stairs(np.array([x0 + 1.0, z0 + 2.0]), np.array([0.0, 1.0]), 2.0, y, storey / 2, riser, 0.28, depth=0.45)
+    s.box(x0, x0 + 4.0, y + storey / 2 - 0.45, y + storey / 2, z0 + 2.0 + run, z0 + 4.0 + run)
+    s.stairs(np.array([x0 + 3.0, z0 + 2.0 + run]), np.array([0.0, -1.0]), 2.0, y + storey / 2, storey / 2, riser, 0.28,
+             depth=0.45)
+
+
+def _well_length(storey: float) -> float:
+    """The length (m) of :func:`_switchback`'s well for a storey ``storey`` m high."""
+    return 4.0 + 0.28 * math.ceil(storey / 2 / 0.18)
+
+
+def tower(seed: int) -> trimesh.Trimesh:
+    """An office tower's floors: seven storeys 3.5 m apart on a 42-48 x 28-32 m plate round a solid core (lifts and
+    risers, no floor, a roof at 50 degrees) joined by two switchback stairwells only, one at each end of the core
+    (wells 4 m wide, walled, a 1.6 m door a storey toward the corridor, 0.28 m treads, risers under 0.18 m). A
+    corridor 2.4 m wide rings the core and wells; offices 3.5-6.5 m wide line the outer walls (a 1.6 m door on
+    the corridor each, a desk and a cabinet; a neighbour joined through a 1.6 m door in a third of the partitions;
+    the corner rooms only through their neighbours), and on each storey one stretch of 2-4 offices on a long side is
+    an open room.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    size_x, size_z, storey, storeys = rng.uniform(42.0, 48.0), rng.uniform(28.0, 32.0), 3.5, 7
+    xc, zc = size_x / 2, size_z / 2
+    well = _well_length(storey)
+    core = (xc - 6.0, xc + 6.0, zc - well / 2, zc + well / 2)
+    wells = [core[0] - 4.4, core[1] + 0.4]  # x0 of each well, z from core[2]
+    block = (wells[0] - 0.2, wells[1] + 4.2, core[2], core[3])
+    ring = (block[0] - 2.4, block[1] + 2.4, block[2] - 2.4, block[3] + 2.4)  # the corridor's outer edge
+    holes = [(x0, x0 + 4.0, core[2] + 2.0, core[3]) for x0 in wells]
+    top = storeys * storey - 0.3
+    s.hull(np.array([[x, y, z] for x in core[:2] for z in core[2:] for y in (-0.3, top)] + [[x, top + 4.0, zc] for x in core[:2]]))
+    for k in range(storeys):
+        y = k * storey
+        s.slab(0.0, size_x, 0.0, size_z, y, [core] + (holes if k else []))
+        ceiling = y + storey - 0.3
+        for a, b in (((0.0, 0.0), (size_x, 0.0)), ((0.0, size_z), (size_x, size_z)),
+                     ((0.0, 0.0), (0.0, size_z)), ((size_x, 0.0), (size_x, size_z))):
+            s.wall(a, b, y, ceiling, thickness=0.3)
+        for x0 in wells:  # the well's walls, its door toward the corridor at the landing's end
+            s.wall((x0, core[2]), (x0 + 4.0, core[2]), y, ceiling, [(1.2, 1.6)])
+            s.wall((x0, core[3]), (x0 + 4.0, core[3]), y, ceiling)
+            for x in (x0, x0 + 4.0):
+                s.wall((x, core[2]), (x, core[3]), y, ceiling)
+            if k < storeys - 1:
+                _switchback(s, x0, core[2], y, storey)
+            else:  # a rail across the open flight at the top
+                s.box(x0, x0 + 2.0, y, y + 1.0, core[2] + 1.9, core[2] + 2.0)
+        # offices: a row along each long wall between the corridor's ends, a row along each short wall, corner rooms
+        open_row, open_at, open_n = int(rng.integers(0, 2)), int(rng.integers(1, 4)), int(rng.integers(2, 5))
+        for r, (out_z, wall_z) in enumerate(((0.0, ring[2]), (size_z, ring[3]))):
+            cuts = [ring[0]]
+            while cuts[-1] < ring[1] - 7.0:
+                cuts.append(cuts[-1] + rng.uniform(3.5, 6.5))
+            cuts = [*cuts[:-1], ring[1]] if len(cuts) > 1 else [ring[0], ring[1]]
+            doors = [(a - ring[0] + rng.uniform(0.4, b - a - 2.0), 1.6) for a, b in pairwise(cuts)]
+            s.wall((ring[0], wall_z), (ring[1], wall_z), y, ceiling, doors, thickness=0.15)
+            z0, z1 = sorted((out_z, wall_z))
+            for i, x in enumerate(cuts):
+                if r == open_row and open_at <= i < open_at + open_n - 1:
+                    continue
+                passage = [(rng.uniform(0.3, z1 - z0 - 2.0), 1.6)] if rng.random() < 0.33 else []
+                s.wall((x, z0), (x, z1), y, ceiling, passage, thickness=0.12)
+            for a, b in pairwise(cuts):  # a desk by the window, a cabinet against a partition
+                xm, z = (a + b) / 2, (z0 + 1.2 if out_z == 0.0 else z1 - 1.9)
+                s.box(xm - 0.8, xm + 0.8, y, y + 0.75, z, z + 0.7)
+                zc_ = rng.uniform(z0 + 2.5, z1 - 2.5)
+                s.box(a + 0.1, a + 0.6, y, y + 1.8, zc_ - 0.5, zc_ + 0.5)
+        for out_x, wall_x in ((0.0, ring[0]), (size_x, ring[1])):
+            x0, x1 = sorted((out_x, wall_x))
+            cuts = [ring[2]]
+            while cuts[-1] < ring[3] - 6.0:
+                cuts.append(cuts[-1] + rng.uniform(3.5, 5.5))
+            cuts = [*cuts[:-1], ring[3]]
+            doors = [(a - ring[2] + rng.uniform(0.4, b - a - 2.0), 1.6) for a, b in pairwise(cuts)]
+            s.wall((wall_x, ring[2]), (wall_x, ring[3]), y, ceiling, doors, thickness=0.15)
+            for i, z in enumerate(cuts):  # the end cuts part a corner room off, joined through a door
+                passage = [(rng.uniform(0.3, x1 - x0 - 2.0), 1.6)] if i in (0, len(cuts) - 1) or rng.random() < 0.33 else []
+                s.wall((x0, z), (x1, z), y, ceiling, passage, thickness=0.12)
+            for a, b in [(0.0, ring[2]), *pairwise(cuts), (ring[3], size_z)]:
+                zm, x = (a + b) / 2, (x0 + 1.2 if out_x == 0.0 else x1 - 1.9)
+                s.box(x, x + 0.7, y, y + 0.75, zm - 0.8, zm + 0.8)
+    return s.mesh()
+
+
+def hospital(seed: int) -> trimesh.Trimesh:
+    """A hospital ward block of three storeys 4 m apart on a 96-108 x 30 m plate: two corridors 2.6 m wide along x
+    (a racetrack, joined by cross corridors at both ends and in the middle), patient rooms 3.8-4.6 m wide and 6 m
+    deep along both outer walls (a 1.6 m door each, one or two beds 1 x 2.1 m, a chair), and between the corridors
+    a core 12 m deep of small rooms (stores, sluices, offices, 3-5 m wide, a 1.6 m door on either corridor), a
+    nurses' station (a counter open to the corridor), a switchback stairwell (4 m wide, :func:`_switchback`) and two
+    lifts: walled shafts 2.6 m square with no door and no floor above the ground, which no one walks through,
+    beside a solid machine room (no floor inside, a roof at 50 degrees).
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    size_x, storey, storeys, room, corridor, core = rng.uniform(96.0, 108.0), 4.0, 3, 6.0, 2.6, 12.0
+    size_z = 2 * (room + corridor) + core
+    c0, c1 = room + corridor, room + corridor + core  # the core's z extent
+    cross = [rng.uniform(6.0, 10.0), size_x / 2 + rng.uniform(-8.0, 8.0), size_x - rng.uniform(8.0, 12.0)]
+    well_x, well_z = cross[1] + 5.0, c0 + 0.3
+    lifts = [(cross[1] - 6.0, cross[1] - 3.4), (cross[1] - 3.0, cross[1] - 0.4)]
+    holes = [(well_x, well_x + 4.0, well_z + 2.0, well_z + _well_length(storey))] + [(a, b, c1 - 2.6, c1) for a, b in lifts]
+    machine = (lifts[0][0] - 0.1, lifts[1][1] + 0.1, c0, c1 - 2.7)  # between the lifts and a corridor, solid
+    holes.append(machine)
+    top = storeys * storey - 0.3
+    s.hull(np.array([[x, y, z] for x in machine[:2] for z in machine[2:] for y in (-0.3, top)]
+                    + [[(machine[0] + machine[1]) / 2, top + (machine[1] - machine[0]) / 2 * math.tan(math.radians(50.0)), z]
+                       for z in machine[2:]]))  # a roof ridged along z at 50 degrees
+    for k in range(storeys):
+        y = k * storey
+        ceiling = y + storey - 0.3
+        s.slab(0.0, size_x, 0.0, size_z, y, holes if k else [machine])
+        for a, b in (((0.0, 0.0), (size_x, 0.0)), ((0.0, size_z), (size_x, size_z)),
+                     ((0.0, 0.0), (0.0, size_z)), ((size_x, 0.0), (size_x, size_z))):
+            s.wall(a, b, y, ceiling, thickness=0.3)
+        for side, (out_z, wall_z) in enumerate(((0.0, room), (size_z, size_z - room))):  # patient rooms
+            cuts = [0.0]
+            while cuts[-1] < size_x - 5.0:
+                cuts.append(cuts[-1] + rng.uniform(3.8, 4.6))
+            cuts[-1] = size_x
+            s.wall((0.0, wall_z), (size_x, wall_z), y, ceiling, [(a + rng.uniform(0.2, b - a - 1.9), 1.6) for a, b in pairwise(cuts)],
+                   thickness=0.15)
+            z0, z1 = sorted((out_z, wall_z))
+            for x in cuts[1:-1]:
+                s.wall((x, z0), (x, z1), y, ceiling, thickness=0.12)
+            for a, b in pairwise(cuts):
+                beds = [a + 0.3] if rng.random() < 0.5 or b - a < 4.2 else [a + 0.2, b - 1.2]
+                for bx in beds:  # heads against the outer wall
+                    bz = z0 + 0.3 if out_z == 0.0 else z1 - 2.4
+                    s.box(bx, bx + 1.0, y, y + 0.6, bz, bz + 2.1)
+                cz = z0 + 3.5 if out_z == 0.0 else z1 - 4.0
+                s.box(b - 0.8, b - 0.2, y, y + 0.9, cz, cz + 0.5)
+        # the core: small rooms along both corridors, back to back, except at the cross corridors, stair and lifts
+        busy = [(x - 1.5, x + 1.5) for x in (cross[0], cross[2])] + [(cross[1] - 7.0, well_x + 9.5)]
+        spine = (c0 + c1) / 2
+        for wall_z, inner in ((c0, spine), (c1, spine)):
+            x = 0.3
+            while x < size_x - 3.5:
+                w = rng.uniform(3.0, 5.0)
+                x1 = min(x + w, size_x - 0.3)
+                if all(x1 < a or x > b for a, b in busy):
+                    z0, z1 = sorted((wall_z, inner))
+                    door_z = wall_z
+                    s.wall((x, door_z), (x1, door_z), y, ceiling, [(rng.uniform(0.1, max(0.11, x1 - x - 1.8)), 1.6)], thickness=0.15)
+                    for xw in (x, x1):
+                        s.wall((xw, z0), (xw, z1), y, ceiling, thickness=0.12)
+                    s.wall((x, inner), (x1, inner), y, ceiling, thickness=0.12)
+                    if rng.random() < 0.6:  # shelving along the back
+                        zb = inner - 0.6 if inner > wall_z else inner
+                        s.box(x + 0.2, x1 - 0.2, y, y + 1.8, zb, zb + 0.6)
+                x = x1 + (0.0 if rng.random() < 0.8 else rng.uniform(2.0, 4.0))
+        s.box(well_x + 5.5, well_x + 9.0, y, y + 1.1, c0 + 1.0, c0 + 1.6)  # the nurses' station's counter
+        s.box(well_x + 5.5, well_x + 6.1, y, y + 1.1, c0 + 1.6, c0 + 4.0)
+        for x0 in (well_x,):  # the stairwell's walls, its door on the corridor at the landing
+            s.wall((x0, well_z), (x0 + 4.0, well_z), y, ceiling, [(1.2, 1.6)])
+            s.wall((x0, well_z + _well_length(storey)), (x0 + 4.0, well_z + _well_length(storey)), y, ceiling)
+            for x in (x0, x0 + 4.0):
+                s.wall((x, well_z), (x, well_z + _well_length(storey)), y, ceiling)
+            if k < storeys - 1:
+                _switchback(s, x0, well_z, y, storey)
+            else:
+                s.box(x0, x0 + 2.0, y, y + 1.0, well_z + 1.9, well_z + 2.0)
+        for a, b in lifts:  # lift shafts: walled all round
+            for z in (c1 - 2.7, c1 + 0.0):
+                s.wall((a, z), (b, z), y, ceiling, thickness=0.2)
+            for x in (a, b):
+                s.wall((x, c1 - 2.7), (x, c1), y, ceiling, thickness=0.2)
+    return s.mesh()
+
+
+def mall(seed: int) -> trimesh.Trimesh:
+    """A shopping mall of three storeys 5 m apart on a 100-116 x 52 m plan: an atrium 10 m wide down the middle,
+    open over all three (the upper floors railed 1.1 m along it), galleries 6 m wide on both sides of it, shops
+    8-12 m wide and 14 m deep off the galleries behind storefronts with a 4-6 m opening (shelves and a counter
+    inside), and an anchor store 22-26 m deep across each end (an 8 m opening on each gallery, islands of racks).
+    Escalators are ramps 1.6 m wide with 1 m balustrades, straight across the atrium from one gallery to the
+    one opposite a storey up (27 degrees); two per storey, the upper one turned the other way.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    size_x, size_z, storey, shop = rng.uniform(100.0, 116.0), 52.0, 5.0, 14.0
+    anchors = (rng.uniform(22.0, 26.0), size_x - rng.uniform(22.0, 26.0))
+    a0, a1 = size_z / 2 - 5.0, size_z / 2 + 5.0  # the atrium's z extent
+    hole = (anchors[0] + 6.0, anchors[1] - 6.0, a0, a1)
+    mid = (hole[0] + hole[1]) / 2  # storey 0's escalators in the atrium's west half, storey 1's in its east half
+    escalators = [[x, x + rng.uniform(8.0, 12.0)] for x in (hole[0] + rng.uniform(4.0, 8.0), mid + rng.uniform(4.0, 8.0))]
+    for k in range(3):
+        y = k * storey
+        ceiling = y + storey - 0.3
+        s.slab(0.0, size_x, 0.0, size_z, y, [hole] if k else [])
+        for a, b in (((0.0, 0.0), (size_x, 0.0)), ((0.0, size_z), (size_x, size_z)),
+                     ((0.0, 0.0), (0.0, size_z)), ((size_x, 0.0), (size_x, size_z))):
+            s.wall(a, b, y, ceiling, [(size_z / 2 - 3.0, 6.0)] if k == 0 and a[0] == b[0] else [], thickness=0.3)
+        leaving = escalators[k] if k < 2 else []
+        if k:  # rails along the atrium, open where an escalator arrives or leaves (on the a0 side on even storeys)
+            for z, xs in ((a0, [] if k % 2 else escalators[k - 1] + leaving), (a1, escalators[k - 1] + leaving if k % 2 else [])):
+                cuts = [hole[0], *sum(([x - 0.9, x + 0.9] for x in sorted(xs)), []), hole[1]]
+                for c0, c1 in zip(cuts[0::2], cuts[1::2]):
+                    s.box(c0, c1, y, y + 1.1, z - 0.05, z + 0.05)
+            for x in hole[:2]:
+                s.box(x - 0.05, x + 0.05, y, y + 1.1, a0, a1)
+        for x in (anchors[0], anchors[1]):  # anchor stores' fronts, an opening on each gallery
+            s.wall((x, 0.0), (x, size_z), y, ceiling, [(shop + 0.5, 8.0), (size_z - shop - 8.5, 8.0)], thickness=0.3)
+        for x0, x1 in ((0.0, anchors[0]), (anchors[1], size_x)):
+            for _ in range(int(rng.integers(10, 16))):
+                x, z = rng.uniform(x0 + 2.0, x1 - 5.0), rng.uniform(2.0, size_z - 4.0)
+                s.box(x, x + 3.0, y, y + 1.4, z, z + 1.2)
+        for front in (shop, size_z - shop):  # shops along both galleries
+            cuts = [anchors[0]]
+            while cuts[-1] < anchors[1] - 12.0:
+                cuts.append(cuts[-1] + rng.uniform(8.0, 12.0))
+            cuts[-1] = anchors[1]
+            openings = []
+            for a, b in pairwise(cuts):
+                w = rng.uniform(4.0, 6.0)
+                openings.append((a - anchors[0] + rng.uniform(0.5, b - a - w - 0.5), w))
+            s.wall((anchors[0], front), (anchors[1], front), y, ceiling, openings, thickness=0.2)
+            back = 0.0 if front == shop else size_z
+            z0, z1 = sorted((front, back))
+            for x in cuts[1:-1]:
+                s.wall((x, z0), (x, z1), y, ceiling, thickness=0.15)
+            for a, b in pairwise(cuts):
+                for z in np.arange(z0 + 2.5, z1 - 3.5, 2.6):  # shelves across the shop
+                    if rng.random() < 0.7:
+                        s.box(a + 1.8, b - 1.8, y, y + 1.6, z, z + 0.6)
+                zc = z1 - 1.6 if back == 0.0 else z0 + 1.0
+                s.box(a + 0.8, a + 2.6, y, y + 1.0, zc, zc + 0.6)  # the counter
+        for x in leaving:  # up across the atrium: from z < a0 to z > a1 on storeys 0 and 2, the other way on 1
+            za, zb = (a0, a1) if k % 2 == 0 else (a1, a0)
+            s.ramp(np.array([x, za]), np.array([x, zb]), 1.6, y, y + storey)
+            for dx in (-0.85, 0.85):
+                s.ramp(np.array([x + dx, za]), np.array([x + dx, zb]), 0.1, y + 1.0, y + storey + 1.0, thickness=1.3)
+    return s.mesh()
+
+
+def canyon(seed: int) -> trimesh.Trimesh:
+    """A canyon 380-420 m long along x and 18-24 m wide between rock walls 26 m high (tops sloped at more than 60
+    degrees, which no one stands on). Its floor at y = 0 is split along its length by a stream bed 3 m wide with
+    no bottom (nothing to walk on), crossed by four fords 3 m wide, 0.2 m down. On each wall, ledges 3.5-5 m wide in
+    tiers 5, 10 and 15 m up, each a run of pieces up to 25-60 m long, each within a piece of the tier below, with
+    gaps between; a ramp 2 m wide against the wall climbs at 20 degrees from a piece (or the floor) to the start of
+    each piece of the tier above, so every piece is reached from below. Rope bridges 1.6 m wide, railed 1 m,
+    sagging 0.6 m in the middle, cross the canyon between ledges of the same tier where both walls have one, two
+    or three a tier. 200-260 boulders (0.4-1.2 m) lie on the floor, clear of the ramps' lane.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    length, width, tier, bed = rng.uniform(380.0, 420.0), rng.uniform(18.0, 24.0), 5.0, 3.0
+    run = tier / math.tan(math.radians(20.0))
+    for face, out in ((0.0, -5.0), (width, width + 5.0)):  # the walls: vertical inside, steep tops outside
+        s.hull(np.array([[x, y, z] for x in (-2.0, length + 2.0) for y, z in ((-1.5, face), (26.0, face), (-1.5, out), (36.0, out))]))
+    for face, out in ((0.0, -5.0), (length, length + 5.0)):  # the ends, as steep
+        s.hull(np.array([[x, y, z] for z in (0.0, width) for y, x in ((-1.5, face), (26.0, face), (-1.5, out), (36.0, out))]))
+    mid = width / 2 + rng.uniform(-2.0, 2.0)
+    s.box(0.0, length, -1.5, 0.0, 0.0, mid - bed / 2)
+    s.box(0.0, length, -1.5, 0.0, mid + bed / 2, width)
+    for x in np.sort(rng.uniform(15.0, length - 15.0, size=4)):  # fords 3 m wide, 0.2 m under the floor
+        s.box(x - 1.5, x + 1.5, -1.5, -0.2, mid - bed / 2, mid + bed / 2)
+    pieces = {}
+    for side, face in ((0, 0.0), (1, width)):
+        below = [(0.0, length)]
+        for k in (1, 2, 3):
+            deep = rng.uniform(3.5, 5.0)
+            z0, z1 = (face, face + deep) if side == 0 else (face - deep, face)
+            row = []
+            for a, b in below:  # pieces of this tier start above a piece of the tier below, after a ramp
+                x = a + rng.uniform(1.0, 6.0)
+                while x + run + 15.0 < b:  # within the piece below, so no ramp climbs into a piece above
+                    start = x + run
+                    end = min(start + rng.uniform(25.0, 60.0), b)
+                    row.append((start, end))
+                    wall_z = (z0 + 1.0) if side == 0 else (z1 - 1.0)
+                    s.ramp(np.array([x, wall_z]), np.array([start + 0.5, wall_z]), 2.0, (k - 1) * tier, k * tier)
+                    x = end + rng.uniform(15.0, 30.0)
+            for a, b in row:
+                s.box(a, b, k * tier - 0.6, k * tier, z0, z1)
+            pieces[side, k] = (row, z0, z1)
+            below = row
+    for k in (1, 2, 3):
+        (row0, _, near), (row1, far, _) = pieces[0, k], pieces[1, k]
+        both = [(max(a, c) + 3.0, min(b, d) - 3.0) for a, b in row0 for c, d in row1 if min(b, d) - max(a, c) > 8.0]
+        for a, b in both[:int(rng.integers(2, 4))]:
+            x = rng.uniform(a, b)
+            y, sag = k * tier, k * tier - 0.6
+            for p, q, ya, yb in (((x, near - 0.5), (x, width / 2), y, sag), ((x, width / 2), (x, far + 0.5), sag, y)):
+                s.ramp(np.array(p), np.array(q), 1.6, ya, yb, thickness=0.2)
+                for dx in (-0.85, 0.85):  # ropes over the gap, open at the ledges
+                    pp, qq = np.array(p) + [dx, 0.0], np.array(q) + [dx, 0.0]
+                    pp[1], qq[1] = max(pp[1], near + 0.1), min(qq[1], far - 0.1)
+                    s.ramp(pp, qq, 0.1, ya + 1.0, yb + 1.0, thickness=1.1)
+    for _ in range(int(rng.integers(200, 260))):  # boulders clear of the stream bed
+        c = np.array([rng.uniform(5.0, length - 5.0), rng.choice([rng.uniform(3.5, mid - bed), rng.uniform(mid + bed, width - 3.5)])])
+        r = rng.uniform(0.4, 1.2)
+        s.hull(np.concatenate([c + rng.normal(0, r / 2, size=(8, 2)), rng.uniform(-0.3, r * 1.5, (8, 1))], axis=1)[:, [0, 2, 1]])
+    return s.mesh()
+
+
+def hillside(seed: int) -> trimesh.Trimesh:
+    """A terraced hillside town 130-150 m wide climbing along +z: nine terraces 4 m apart in height and 15-19 m
+    deep, each a street 5-7 m wide along its front and behind it a row of houses (solid, 6-11 m wide, ridged roofs
+    at 50 degrees) backed against the retaining wall of the terrace above. Streets climb as stairs (0.16 / 0.30 m
+    steps, 2.5-3.5 m wide) between houses from each street to the next, at least two a terrace (the widest other
+    gaps when chance gave fewer, 2-3.5 m wide); other gaps are
+    alleys 2-2.4 m wide that end at the wall, or small gardens with a tree. A square 14 m deep before the middle terrace's row (a
+    pointed fountain, benches), a church closing the top street, and on every street 10-17 planters and stalls.
+    The ground stops under the houses and the church.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    size_x, rise, terraces = rng.uniform(130.0, 150.0), 4.0, 9
+    steps = 25
+    run = steps * 0.30
+    square = terraces // 2
+    depths = rng.uniform(15.0, 19.0, size=terraces) + 14.0 * (np.arange(terraces) == square)  # the square's 14 m more
+    fronts = np.cumsum([0.0, *depths])  # z of each terrace's front, and the last one's back
+    for i in range(terraces):
+        y, z0, z1 = i * rise, fronts[i], fronts[i + 1]
+        footprints: list[tuple[float, float, float, float]] = []  # of houses and the church: the ground stops under them
+        for x in (-0.3, size_x):  # the town's side walls
+            s.box(x, x + 0.3, y - 1.0, y + 1.2, z0, z1)
+        street = rng.uniform(5.0, 7.0) + (14.0 if i == square else 0.0)
+        houses_z0 = z0 + street
+        if i == terraces - 1:  # the top terrace: a church closes the street, no row behind
+            footprints.append((size_x / 2 - 8.0, size_x / 2 + 8.0, houses_z0, z1))
+            s.hull(np.array([[x, yy, z] for x in (size_x / 2 - 8.0, size_x / 2 + 8.0) for z in (houses_z0, z1)
+                             for yy in (y - 0.5, y + 10.0)] + [[size_x / 2, y + 10.0 + 8.0 * math.tan(math.radians(50.0)), z]
+                                                                for z in (houses_z0, z1)]))
+            for x in (rng.uniform(5.0, size_x / 2 - 15.0), rng.uniform(size_x / 2 + 10.0, size_x - 10.0)):
+                s.box(x, x + 4.0, y, y + 0.8, houses_z0 + 1.0, houses_z0 + 2.0)
+            s.ground(0.0, size_x, z0, z1, y, footprints, thickness=rise + 1.0)
+            continue
+        x = rng.uniform(0.0, 4.0)
+        gaps = []
+        while x < size_x - 8.0:
+            w = rng.uniform(6.0, 11.0)
+            x1 = min(x + w, size_x)
+            depth = z1 - houses_z0
+            ridge = y + 6.0 + min(w, depth) / 2 * math.tan(math.radians(50.0))
+            along_x = w > depth
+            corners = [[a, yy, c] for a in (x, x1) for c in (houses_z0, z1) for yy in (y - 0.5, y + 6.0)]
+            top = [[a, ridge, (houses_z0 + z1) / 2] for a in (x, x1)] if along_x else [[(x + x1) / 2, ridge, c] for c in (houses_z0, z1)]
+            s.hull(np.array(corners + top))
+            footprints.append((x, x1, houses_z0, z1))
+            kind = rng.random()
+            if kind < 0.35:
+                gap = rng.uniform(2.5, 3.5)
+                gaps.append(("stairs", x1, gap))
+            elif kind < 0.7:
+                gap = rng.uniform(2.0, 2.4)
+                gaps.append(("alley", x1, gap))
+            else:
+                gap = rng.uniform(5.0, 8.0)
+                gaps.append(("garden", x1, gap))
+            x = x1 + gap
+        gaps = [g for g in gaps if g[1] + g[2] <= size_x - 0.5]
+        others = sorted((g for g in gaps if g[0] != "stairs"), key=lambda g: -g[2])
+        for g in others[:max(0, 2 - sum(g[0] == "stairs" for g in gaps))]:  # every terrace has two ways up at least
+            gaps[gaps.index(g)] = ("stairs", *g[1:])
+        for kind, gx, gw in gaps:
+            if kind == "stairs":  # up to the next street, cut into the back of this terrace's row, at most 3.5 m wide
+                s.stairs(np.array([gx + gw / 2, z1 - run]), np.array([0.0, 1.0]), min(gw, 3.5), y, rise, riser=rise / steps,
+                         tread=0.30)
+            elif kind == "garden":
+                angles = np.linspace(0, 2 * math.pi, 8, endpoint=False)
+                c = np.array([gx + gw / 2, (houses_z0 + z1) / 2])
+                s.prism(c + 0.35 * np.stack([np.cos(angles), np.sin(angles)], 1), y - 0.5, y + 7.0)
+                s.box(gx, gx + gw, y, y + 1.0, z1 - 1.2, z1)  # a bench against the wall
+        s.ground(0.0, size_x, z0, z1, y, footprints, thickness=rise + 1.0)
+        for _ in range(int(rng.integers(10, 18))):  # planters and stalls in the street
+            px, pz = rng.uniform(2.0, size_x - 5.0), rng.uniform(z0 + 1.0, z0 + street - 2.0)
+            s.box(px, px + rng.uniform(1.0, 3.0), y, y + 0.8, pz, pz + 1.0)
+        if i == square:
+            c = np.array([size_x / 2, z0 + 8.0])
+            angles = np.linspace(0, 2 * math.pi, 12, endpoint=False)
+            s.hull(np.array([[*(c + 2.5 * np.array([math.cos(a), math.sin(a)])), y] for a in angles] + [[*c, y + 4.0]])[:, [0, 2, 1]])
+            for dx in (-7.0, 5.0):
+                s.box(c[0] + dx, c[0] + dx + 2.0, y, y + 0.45, c[1] + 4.0, c[1] + 4.6)
+    return s.mesh()
+
+
+def spaceship(seed: int) -> trimesh.Trimesh:
+    """A space station's deck: a hub 9 m across (a 12-gon) and three ring corridors 3 m wide, 28-32, 52-58 and
+    76-82 m from the centre (24-gons of straight segments, walls 3 m high), joined by six spokes from the hub to
+    the first ring and eight between each ring and the next (corridors 2.6 m wide, offset by a step so no spoke runs
+    straight through). Off each ring's outside, on every segment no spoke leaves from, a room 6-9 m deep between
+    radial walls (cabins and labs, a door 2 m wide each, a bunk or bench and lockers: the walls are chords at
+    angles, where a 1.6 m door, enough along the axes, closes for the presets' agent); off the outer ring four
+    airlocks instead of rooms: a stub corridor out to a chamber 3 x 4 m behind a door, then an outer door onto a
+    docking platform. Crates and consoles line the rings. No floor elsewhere: space is nothing to walk on.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    hub, ring_w, spoke_w, wall_h, sides = 4.5 / math.cos(math.pi / 12), 3.0, 2.6, 3.0, 24
+    rings = [rng.uniform(28.0, 32.0), rng.uniform(52.0, 58.0), rng.uniform(76.0, 82.0)]
+    angles = np.linspace(0.0, 2 * math.pi, sides, endpoint=False) + rng.uniform(0.0, 2 * math.pi / sides)
+    step = angles[1] - angles[0]
+    locks = set(rng.choice(sides, size=4, replace=False).tolist())  # the outer ring's segments with an airlock
+    spokes = [set(range(0, sides, 4)), set(range(1, sides, 3)), set(range(2, sides, 3))]  # segments, into each ring
+
+    def at(radius: float, angle: float) -> np.ndarray:
+        return radius * np.array([math.cos(angle), math.sin(angle)])
+
+    def wall(p: np.ndarray, q: np.ndarray, gap: float = 0.0) -> None:
+        """A wall 0.2 m thick from plan point p to q, open over ``gap`` m in its middle."""
+        half = (q - p) / np.linalg.norm(q - p) * gap / 2
+        for u, v in ((p, (p + q) / 2 - half), ((p + q) / 2 + half, q)) if gap else ((p, q),):
+            s.prism(_strip(u, v, 0.2), 0.0, wall_h)
+
+    s.prism(np.array([at(hub, a) for a in np.linspace(0, 2 * math.pi, 12, endpoint=False)]), -0.3, 0.0)
+    starts = [4.3] + [(r + ring_w / 2) * math.cos(step / 2) - 0.2 for r in rings[:-1]]  # into the chords' middles
+    for n, (radius, start) in enumerate(zip(rings, starts)):
+        r0, r1 = radius - ring_w / 2, radius + ring_w / 2
+        outward = spokes[n + 1] if n + 1 < len(rings) else locks
+        depth = rng.uniform(6.0, 9.0)
+        for i, (a, b) in enumerate(zip(angles, np.roll(angles, -1))):
+            mid = a + step / 2
+            s.prism(np.array([at(r0, a), at(r1, a), at(r1, b), at(r0, b)]), -0.3, 0.0)
+            wall(at(r0, a), at(r0, b), spoke_w + 0.2 if i in spokes[n] else 0.0)
+            wall(at(r1, a), at(r1, b), spoke_w + 0.2 if i in outward else 2.0)
+            if i in spokes[n]:  # a spoke in from the ring (or hub) inside, to the middle of this segment
+                s.prism(_strip(at(start, mid), at(r0 + 0.3, mid), spoke_w), -0.3, 0.0)
+                side = at(spoke_w / 2 + 0.1, mid + math.pi / 2)
+                for sign in (-1, 1):
+                    s.prism(_strip(at(start + 0.4, mid) + sign * side, at(r0 - 0.1, mid) + sign * side, 0.2), 0.0, wall_h)
+            if i % 2 == 0 and rng.random() < 0.5:  # a crate or console against the outer wall, a quarter along
+                c = at(r1 - 0.6, a + step / 4)
+                s.prism(_strip(c - at(0.5, a + math.pi / 2), c + at(0.5, a + math.pi / 2), 0.8), 0.0, rng.uniform(0.8, 1.4))
+            if n + 1 == len(rings) and i in locks:  # an airlock: stub, inner door, chamber, outer door, platform
+                for r_a, r_b, w in ((r1 * math.cos(step / 2) - 0.2, r1 + 3.0, 2.6), (r1 + 3.0, r1 + 7.0, 3.0),
+                                    (r1 + 7.0, r1 + 13.0, 6.0)):
+                    s.prism(_strip(at(r_a, mid), at(r_b, mid), w), -0.3, 0.0)
+                for r_a, r_b, w in ((r1, r1 + 3.0, 2.6), (r1 + 3.0, r1 + 7.0, 3.0)):
+                    for sign in (-1, 1):
+                        off = at(w / 2 + 0.1, mid + math.pi / 2) * sign
+                        s.prism(_strip(at(r_a, mid) + off, at(r_b, mid) + off, 0.2), 0.0, wall_h)
+                for r_door in (r1 + 3.0, r1 + 7.0):  # door walls 2 m open in the middle
+                    wall(at(r_door, mid) - at(1.7, mid + math.pi / 2), at(r_door, mid) + at(1.7, mid + math.pi / 2), 2.0)
+            elif i not in outward:  # a room: floor, walls along the radii and across its back, lockers, a bunk
+                pa, pb, qa, qb = at(r1, a), at(r1, b), at(r1 + depth, a), at(r1 + depth, b)
+                s.prism(np.array([pa, pb, qb, qa]), -0.3, 0.0)
+                for p, q in ((pa, qa), (qa, qb), (pb, qb)):
+                    wall(p, q)
+                lockers = (qa + qb) / 2 + (pa - qa) * 0.12
+                s.prism(_strip(lockers + (qb - qa) * 0.25, lockers - (qb - qa) * 0.25, 0.6), 0.0, 1.9)
+                bunk = (pa + qb) / 2 + (qa - pa) * 0.1
+                s.prism(_strip(bunk - (pa - qa) * 0.25, bunk + (pa - qa) * 0.25, 0.9), 0.0, 0.5)
+    return s.mesh()
+
 KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
     "subway": subway, "archipelago": archipelago, "car_park": car_park,
     "forest": forest, "stadium": stadium, "harbour": harbour,
     "school": school, "cathedral": cathedral, "mine": mine, "ship": ship, "village": village, "market": market,
     "office": office, "airport": airport, "sewer": sewer, "lanes": lanes, "prison": prison, "museum": museum,
+    "tower": tower, "hospital": hospital, "mall": mall, "canyon": canyon, "hillside": hillside, "spaceship": spaceship,
 }
 """Kind name -> generator (seed -> Y-up mesh in metres)."""
 
