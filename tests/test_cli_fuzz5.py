@@ -5,8 +5,12 @@ parameter refused by its own rule was described by its type and bounds, which al
 
 from __future__ import annotations
 
+import re
+
 import pytest
 
+from g2s_core.errors import G2SError
+from g2s_plugins.terminals.points import read_points
 from tests.reliability.checks import assert_clean_error, run_g2s, tree
 
 
@@ -20,20 +24,12 @@ def test_a_parameter_refused_by_its_own_rule_says_the_rule(tmp_path, capsys):
 @pytest.mark.parametrize("text, says", [
     ("[[true, false, true]]", "point 0 is [true, false, true], expected [x, y, z] numbers"),
     ('[["1", "0", "0"]]', 'point 0 is ["1", "0", "0"], expected [x, y, z] numbers'),
-    ("[[6, 0, 0], [null, 0, 0]]", "point 1 is [null, 0, 0], expected [x, y, z] numbers"),
+    ("[[6, 0, 0], [null, 0, 0]]", "point 1 is [null, 0, 0], expected [x, y, z] numbers"),  # was [None, 0, 0]
 ])
-def test_a_json_points_file_of_other_values_than_numbers_is_refused(text, says, tmp_path, capsys):
+def test_a_json_points_file_of_other_values_than_numbers_is_refused(text, says, tmp_path):
     points = tmp_path / "points.json"
     points.write_text(text)
-    outcome = run_g2s(capsys, "run", "map_piece", "sample:straight_corridor", "-o", tmp_path / "out",
-                      "--set", "terminals.plugin=points", "--set", f"terminals.params={{file: '{points}'}}")
-    assert_clean_error(outcome, f"straight_corridor: {points}: {says}")
-    assert tree(tmp_path / "out") == []
-
-
-def test_a_json_points_file_of_numbers_is_read(tmp_path, capsys):
-    points = tmp_path / "points.json"
-    points.write_text("[[6, 0, 0], [6.5, 0.1, 0]]")
-    outcome = run_g2s(capsys, "run", "map_piece", "sample:straight_corridor", "-o", tmp_path / "out", "-q",
-                      "--set", "terminals.plugin=points", "--set", f"terminals.params={{file: '{points}'}}")
-    assert outcome.code == 0, outcome.stderr
+    with pytest.raises(G2SError, match=f"^{re.escape(f'{points}: {says}')}$"):
+        read_points(points)
+    points.write_text("[[6, 0, 0], [6.5, 0.1, -1e-3]]")
+    assert read_points(points).tolist() == [[6, 0, 0], [6.5, 0.1, -1e-3]]
