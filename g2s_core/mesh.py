@@ -86,8 +86,8 @@ def load_mesh(path: str | Path, config: MeshConfig | None = None) -> tuple[trime
             if len(getattr(loaded, "faces", ())) < (declared := declared_faces(path.suffix, raw)):
                 raise ValueError(f"the header declares {declared} faces, trimesh read {len(loaded.faces)}")
     except Exception as exc:  # trimesh raises many exception types for bad files
-        if (damage := describe_damage(path, raw)) or path.suffix.lower() != ".off":
-            raise MeshError(f"{path}: {damage or f'cannot read mesh ({type(exc).__name__}: {exc})'}") from None
+        if (damage := describe_damage(path, raw) or (exc if isinstance(exc, MeshError) else None)) or path.suffix.lower() != ".off":
+            raise MeshError(f"{path}: {damage or f'cannot read mesh ({type(exc).__name__}: {exc})'}") from None  # MeshError: _files_beside
         vertices, polygons = off_polygons(raw)  # a sound OFF file of polygons trimesh cannot fan: fanned as it fans an OBJ's
         loaded = trimesh.Trimesh(vertices=vertices, faces=trimesh.geometry.triangulate_quads(polygons), process=False)
     # trimesh reads a sparse accessor's data without its values: the mesh would be silently wrong

@@ -20,6 +20,7 @@ import io
 import json
 import math
 import re
+import reprlib
 import stat
 from collections.abc import Callable, Iterable
 from functools import partial
@@ -42,6 +43,12 @@ GLTF_COMPONENTS = {5120: 1, 5121: 1, 5122: 2, 5123: 2, 5125: 4, 5126: 4}
 GLTF_TYPES = {"SCALAR": 1, "VEC2": 2, "VEC3": 3, "VEC4": 4, "MAT2": 4, "MAT3": 9, "MAT4": 16}
 """A glTF accessor's ``type`` names and the components of each."""
 
+GLTF_LISTS = ("scenes", "nodes", "meshes", "accessors", "bufferViews", "buffers")
+"""The glTF document's lists of objects that lead from its scene to the vertices' bytes."""
+
+STL_KEYWORDS = (b"solid", b"facet", b"outer", b"vertex", b"endloop", b"endfacet", b"endsolid")
+"""The words an ASCII STL line starts with (trimesh reads any case)."""
+
 PLY_TYPES = (b"char", b"uchar", b"short", b"ushort", b"int", b"uint", b"float", b"double", b"int8", b"uint8", b"int16",
              b"uint16", b"int32", b"uint32", b"int64", b"uint64", b"float16", b"float32", b"float64")
 """The PLY property types trimesh reads."""
@@ -63,8 +70,9 @@ def describe_damage(path: Path, data: bytes) -> str | None:
     suffix, size = path.suffix.lower(), len(data)
     if size == 0:
         return "the file is empty (0 bytes)"
-    if suffix == ".stl" and size >= STL_HEADER and (not data.startswith(b"solid") or b"\0" in data[:STL_HEADER]):
-        count = int.from_bytes(data[80:STL_HEADER], "little")  # ASCII STL starts with "solid", never holds a NUL
+    # ASCII STL starts with "solid", never holds a NUL
+    if binary_stl := suffix == ".stl" and size >= STL_HEADER and (not data.startswith(b"solid") or b"\0" in data[:STL_HEADER]):
+        count = int.from_bytes(data[80:STL_HEADER], "little")
         if size < (expected := STL_HEADER + STL_TRIANGLE * count):
             return f"binary STL ends early: the header announces {count} triangles, the file holds {(size - STL_HEADER) // STL_TRIANGLE}"
         if size > expected:
@@ -77,8 +85,9 @@ def describe_damage(path: Path, data: bytes) -> str | None:
     if suffix == ".gltf":
         document = _json(data)
         return f"not valid glTF JSON ({document})" if isinstance(document, str) else _gltf_damage(document, path.parent, None)
-    readers: dict[str, Callable[[bytes], str | None]] = {".obj": _obj_damage, ".off": _off_damage, ".ply": _ply_damage}
-    return readers[suffix](data) if suffix in readers else None
+    readers: dict[str, Callable[[bytes], str | None]] = {".obj": _obj_damage, ".off": _off_damage, ".ply": _ply_damage,
+                                                         ".stl": _stl_ascii_damage}
+    return readers[suffix](data) if suffix in readers and not binary_stl else None
 
 
 def declared_faces(suffix: str, data: bytes) -> int:
@@ -116,9 +125,15 @@ def _glb_damage(data: bytes, folder: Path) -> str | None:
 def _gltf_damage(document: object, folder: Path, binary: int | None) -> str | None:
     """What is wrong with a glTF document: not an object, a buffer that cannot be read (a file missing beside the
     glTF file or shorter than its ``byteLength``, a data URI that is not base64, a GLB without its binary chunk), or
-    an index to a buffer or buffer view the document lacks. ``binary``: a GLB's binary chunk's length."""
+    an index to a buffer or buffer view the document lacks, its accessors (:func:`_accessor_damage`), then the way from
+    its scene to the vertices (:func:`_scene_damage`). ``binary``: a GLB's binary chunk's length."""
     if not isinstance(document, dict):
         return "expected a glTF JSON object at the top level"
+    for name in GLTF_LISTS:  # trimesh fails on another kind with a TypeError or AttributeError
+        if not isinstance(items := document.get(name, []), list):
+            return _expected(name, items, "a list of objects")
+        if (wrong := next((number for number, item in enumerate(items) if not isinstance(item, dict)), None)) is not None:
+            return _expected(f"{name}[{wrong}]", items[wrong], "an object")
     sizes = []
     for number, buffer in _listed(document, "buffers"):
         uri, needed = buffer.get("uri"), buffer.get("byteLength", 0)
@@ -152,7 +167,8 @@ def _gltf_damage(document: object, folder: Path, binary: int | None) -> str | No
         end = sum(value for value in (view.get("byteOffset", 0), view.get("byteLength", 0)) if isinstance(value, int))
         if "buffer" in view and end > sizes[view["buffer"]]:
             return f"bufferViews[{number}] ends at byte {end}, past the {sizes[view['buffer']]} bytes of buffer {view['buffer']}"
-    return next(filter(None, (_accessor_damage(number, accessor, document) for number, accessor in _listed(document, "accessors"))), None)
+    return next(filter(None, (_accessor_damage(number, accessor, document) for number, accessor in _listed(document, "accessors"))), None) \
+        or _scene_damage(document)
 
 
 def _accessor_damage(number: int, accessor: dict, document: dict) -> str | None:
@@ -177,9 +193,39 @@ def _accessor_damage(number: int, accessor: dict, document: dict) -> str | None:
 
 
 def _listed(document: dict, name: str) -> list[tuple[int, dict]]:
-    """A glTF document's list ``name`` (``buffers`` ...): each object's index and the object."""
-    items = document.get(name)
-    return [(number, item) for number, item in enumerate(items) if isinstance(item, dict)] if isinstance(items, list) else []
+    """A glTF document's list ``name`` (``buffers`` ..., of objects: :func:`_gltf_damage` checks it first): each object's index and the object."""
+    return list(enumerate(document.get(name, [])))
+
+
+def _scene_damage(document: dict) -> str | None:
+    """What is wrong on the way from a glTF document's scene to its vertices (trimesh fails on it with a ``TypeError``
+    or ``KeyError``): the scene's index, each scene's node indices, and each mesh primitive's ``POSITION`` accessor,
+    which a valid glTF may leave out but g2s needs."""
+    count = {name: len(document.get(name, [])) for name in GLTF_LISTS}
+    if "scene" in document and not _is_index(document["scene"], count["scenes"]):
+        return _expected("scene", document["scene"], f"the index of one of the file's {_many(count['scenes'], 'scene')}")
+    for number, scene in _listed(document, "scenes"):
+        if not (isinstance(nodes := scene.get("nodes", []), list) and all(_is_index(node, count["nodes"]) for node in nodes)):
+            return _expected(f"scenes[{number}].nodes", nodes, f"a list of indices of the file's {_many(count['nodes'], 'node')}")
+    for number, mesh in _listed(document, "meshes"):
+        if not (isinstance(primitives := mesh.get("primitives"), list) and all(isinstance(p, dict) for p in primitives)):
+            return _expected(f"meshes[{number}].primitives", primitives, "a list of objects")
+        for index, primitive in enumerate(primitives):
+            if not isinstance(attributes := primitive.get("attributes"), dict) or "POSITION" not in attributes:
+                return f"meshes[{number}].primitives[{index}] has no attributes.POSITION, the accessor of its vertices, which g2s needs"
+            if not _is_index(attributes["POSITION"], count["accessors"]):
+                return _expected(f"meshes[{number}].primitives[{index}].attributes.POSITION", attributes["POSITION"],
+                                 f"the index of one of the file's {_many(count['accessors'], 'accessor')}")
+    return None
+
+
+def _is_index(value: object, count: int) -> bool:
+    return type(value) is int and 0 <= value < count
+
+
+def _expected(key: str, value: object, expected: str) -> str:
+    """``KEY is VALUE; expected ...``, a long value cut short; a missing one (``None`` from ``dict.get``) named so."""
+    return f"{key} is {'missing' if value is None else reprlib.repr(value)}; expected {expected}"
 
 
 def _obj_damage(data: bytes) -> str | None:
@@ -248,6 +294,27 @@ def off_polygons(data: bytes) -> tuple[list[list[float]], list[list[int]]]:
     vertices, faces, body = _off_rows(data)
     return ([[float(value) for value in values[:3]] for _, values in body[:vertices]],
             [[int(corner) for corner in values[1:1 + int(values[0])]] for _, values in body[vertices:vertices + faces]])
+
+
+def _stl_ascii_damage(data: bytes) -> str | None:
+    """The first line of an ASCII STL file that is wrong: a word the format does not start a line with, a vertex
+    that is not 3 finite numbers, a facet of other than 3 vertices, or an ``endsolid`` without its ``solid``
+    (trimesh reads every ``vertex`` of a solid as one list of numbers, so one bad line failed the whole file)."""
+    corners, solid = 0, False
+    for number, (word, *values) in ((number, line) for number, line in _rows(data.splitlines()) if line):
+        if (key := word.lower()) not in STL_KEYWORDS:
+            problem = f"a line starts with {_text(word)!r} (expected one of {_text(b', '.join(STL_KEYWORDS))})"
+        elif key == b"vertex":
+            corners += 1
+            problem = _not_numbers(values, "vertex coordinate", finite=True) or \
+                (f"a vertex of {len(values)} coordinates (expected x y z)" if len(values) != 3 else None)
+        else:
+            problem = f"a facet of {_many(corners, 'vertex')} (expected 3)" if key == b"endloop" and corners != 3 else \
+                "endsolid without a solid before it" if key == b"endsolid" and not solid else None
+            corners, solid = 0 if key == b"facet" else corners, {b"solid": True, b"endsolid": False}.get(key, solid)
+        if problem:
+            return f"line {number}: {problem}"
+    return None
 
 
 def _ply_damage(data: bytes) -> str | None:

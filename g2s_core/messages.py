@@ -117,6 +117,8 @@ def describe_validation_error(exc: ValidationError, model: type[BaseModel], pref
         return f"{path}: expected a mapping, got {show(error.get('input'))}"
     if kind == "finite_number":
         return f"{path}: expected a finite number, got {show(error.get('input'))}"
+    if kind == "value_error" and loc:  # a field's own rule beyond its type and bounds (tile_size: 0 or >= 16)
+        return f"{path}: {error['ctx']['error']}, got {show(error.get('input'))}"
     if (info := _field_at(model, loc)) is not None:
         return f"{path}: expected {describe_field(info)}, got {show(error.get('input'))}"
     got = "" if isinstance(error.get("input"), dict) else f", got {show(error.get('input'))}"  # a check of the whole mapping

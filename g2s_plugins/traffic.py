@@ -321,7 +321,7 @@ def walking_flow(graph: nx.Graph, max_sources: int | None = None, seed: int = 0,
     positive weight (:func:`is_exact`), else from ``max_sources`` sampled
     sources.
 
-    Cached per graph object and ``(max_sources, seed)`` (``max_sources`` ``None`` when exact) for as long as its
+    Cached per graph object and ``(max_sources, seed)`` (neither when exact: the exact flow draws no sample) for as long as its
     :func:`surface_arrays` are (the graph's size unchanged): the selector and
     the analyzer of one run that ask for the same flow get the same array,
     computed once. It is read-only so that no caller can change another's
@@ -336,7 +336,7 @@ def arrays_walking_flow(
     """:func:`walking_flow` of the graph ``arrays`` were made from, for a caller that holds them already (each
     :func:`surface_arrays` look-up counts the graph's edges: 20-30 ms on a 100k-polygon level)."""
     exact = is_exact(arrays, max_sources, exact_up_to)
-    key = ("walking_flow", None if exact else max_sources, seed)  # one exact flow for every caller that gets it
+    key = ("walking_flow",) if exact else ("walking_flow", max_sources, seed)  # one exact flow for every caller that gets it
     if key not in arrays.derived:
         flow, _ = od_flow(arrays.adjacency, origin_weight(arrays), None if exact else max_sources, seed)
         flow.flags.writeable = False

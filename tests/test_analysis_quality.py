@@ -356,6 +356,19 @@ def test_selector_and_flow_analyzer_share_one_flow_and_leave_it_intact(monkeypat
     assert traffic.walking_flow(graph, max_sources=traffic.WALKING_SOURCES) is not shared
 
 
+def test_the_exact_flow_is_computed_once_whatever_seed_its_callers_give(monkeypatch):
+    # the exact flow draws no sample: its cache key held the seed, so two callers of other seeds computed it twice
+    original, calls = traffic.od_flow, []
+    monkeypatch.setattr(traffic, "od_flow", lambda *args, **kwargs: calls.append(1) or original(*args, **kwargs))
+    graph = spine_and_side_room()
+    exact = traffic.walking_flow(graph, max_sources=traffic.WALKING_SOURCES, seed=0)
+    assert traffic.walking_flow(graph, max_sources=traffic.WALKING_SOURCES, seed=7) is exact
+    assert traffic.walking_flow(graph, max_sources=None, seed=3) is exact
+    assert len(calls) == 1
+    sampled = traffic.walking_flow(graph, max_sources=2, seed=0)  # 7 nodes of weight > 2 sources: sampled
+    assert traffic.walking_flow(graph, max_sources=2, seed=1) is not sampled and len(calls) == 3
+
+
 def test_coverage_traffic_parameters_are_validated(registry):
     for params, key in (({"traffic_weight": -0.1}, "terminals.params.traffic_weight"),
                         ({"traffic_weight": 0.1, "traffic_radius": 0}, "terminals.params.traffic_radius")):

@@ -409,6 +409,18 @@ def test_floors_split_two_storeys_joined_by_a_ramp_of_evenly_spaced_nodes():
     assert [g.tolist() for g in common.floors(heights, 2.0, ground)] == [[0, 1, 2, 3, 4, 5], [6, 7, 8, 9, 10]]
 
 
+@pytest.mark.parametrize("lower", [-4.7, -4.2, -3.6, -2.3, -1.3, -0.7])
+def test_floors_exactly_an_agent_height_apart_stay_two_in_single_precision(lower):
+    # storeys 2.0 m apart (the agent's height) at round heights, as the navmesh gives them in float32: the upper
+    # reads 1e-7 m under its round height, and its 0.1 m bin was one short of the lower's + 20: one panel
+    # (robust5, 4 December 2026: 20 of 10,000 placements from -5 to 5 m in steps of 1 mm merged)
+    low, high = float(np.float32(lower)), float(np.float32(lower + 2.0))
+    assert high - low < 2.0
+    ground = np.concatenate([_rectangle(0, 10, 0, 10, low), _rectangle(12, 22, 0, 10, high)])
+    floors = common.floors([low] * 3 + [high] * 3, 2.0, ground)
+    assert [g.tolist() for g in floors] == [[0, 1, 2], [3, 4, 5]]
+
+
 def test_floors_keep_a_hill_in_one_floor():
     # a 60 x 60 m heightfield, y = 6 sin(x / 9) cos(z / 9) on a 2 m grid: 12 m of relief, every slope under
     # 45 degrees; its area spreads over the heights, no 0.1 m bin holds 1 % of it

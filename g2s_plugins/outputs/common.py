@@ -182,6 +182,10 @@ STOREY_BIN = 0.1
 """Height bins (m) in which :func:`floors` sums the walkable area. A flat floor's navmesh lies in one or two
 bins; a ramp, a stair or a hill spreads its area over many (measured on the generated levels, docs/outputs.md)."""
 
+BIN_SLACK = 1e-3
+"""Share of a :data:`STOREY_BIN` (0.1 mm) under a bin's lower edge that still counts in it: more than the
+rounding of single-precision heights of levels up to a few kilometres high, less than any modelled offset."""
+
 STOREY_SHARE = 0.01
 """The share of the walkable area a height bin holds (a sloped triangle counted over the bins it spans) for
 :func:`floors` to see a storey there. Measured on 20 levels (docs/outputs.md): the smallest storey holds 1.05 %
@@ -218,7 +222,9 @@ def floors(heights: Sequence[float], gap: float, ground: np.ndarray | None = Non
         y = triangles[:, :, 1]
         span = y.max(axis=1) - y.min(axis=1)
         counted = area * STOREY_BIN / np.maximum(span, STOREY_BIN)
-        bins, which = np.unique(np.floor(y.mean(axis=1) / STOREY_BIN).astype(np.int64), return_inverse=True)
+        # a storey at a round height (5.0 m) whose single-precision navmesh height reads 4.9999998 stays in the bin
+        # of 5.0: without the slack, storeys exactly an agent height apart fell one bin short of it and merged
+        bins, which = np.unique(np.floor(y.mean(axis=1) / STOREY_BIN + BIN_SLACK).astype(np.int64), return_inverse=True)
         dense = bins[np.bincount(which.reshape(-1), weights=counted) >= STOREY_SHARE * area.sum()]
         if len(dense):
             parts = np.split(dense, np.flatnonzero(np.diff(dense) >= round(gap / STOREY_BIN)) + 1)

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import functools
 import json
+import math
 from pathlib import Path
 from typing import Any
 
@@ -19,6 +20,7 @@ import networkx as nx
 
 from g2s_core.errors import G2SError
 from g2s_core.input_files import parse_nested, read_text
+from g2s_core.messages import show
 from g2s_core.model import LoadedResult, Opening, StageStats, Terminals, vec3
 from g2s_core.plugin import hookimpl
 from g2s_plugins.outputs.structure_json import RUN_FILE, SCHEMA_PATH, SCHEMA_VERSION, STRUCTURE_FILE
@@ -29,6 +31,17 @@ READABLE_VERSIONS = (1, 2, 3)
 """structure.json versions :func:`load_result` reads (1 has no ``features``, 1 and 2 no ``metrics``)."""
 _ADDED_IN = {"features": 2, "metrics": 3}
 """Fields a version added, empty when a file of an older version is read."""
+
+_SCHEMA_TYPES = {"array": "a list", "object": "a mapping", "string": "a string", "integer": "an integer",
+                 "number": "a number", "boolean": "true or false", "null": "null"}
+"""JSON schema types in the words of g2s's config messages."""
+
+_BOUNDS = {"minimum": ">=", "maximum": "<=", "exclusiveMinimum": ">", "exclusiveMaximum": "<"}
+
+
+class MalformedField(ValueError):
+    """A field that follows the schema but contradicts another (an edge to a node the file lacks); the message
+    starts with the field."""
 
 
 @hookimpl
@@ -60,7 +73,7 @@ def load_result(path: str | Path) -> LoadedResult:
     if not isinstance(document, dict) or document.get("format") != "g2s-structure":
         raise G2SError(f"{path}: not a g2s structure.json file")
     version = document.get("schema_version")
-    if version not in READABLE_VERSIONS:
+    if type(version) is not int or version not in READABLE_VERSIONS:  # True and 2.0 equal 1 and 2
         readable = ", ".join(map(str, READABLE_VERSIONS))
         raise G2SError(f"{path}: schema_version {version!r} is not supported (this g2s reads {readable})")
     checked = {**document, "schema_version": SCHEMA_VERSION}
@@ -69,15 +82,21 @@ def load_result(path: str | Path) -> LoadedResult:
             if name in document:
                 raise G2SError(f"{path}: {name}: not a field of schema_version {version}")
             checked[name] = {}
+    if found := _non_finite(document):
+        raise G2SError(f"{path}: {found[0]}: expected a finite number, got {found[1]}")
     import jsonschema  # imported on first use: every command loads this plugin, few read results
 
     problem = jsonschema.exceptions.best_match(_schema_validator().iter_errors(checked))
     if problem is not None:
         where = "".join(f"[{p}]" if isinstance(p, int) else f".{p}" for p in problem.absolute_path).lstrip(".")
-        raise G2SError(f"{path}: {where or '(top level)'}: {_shorten(problem.message)}")
+        key, words = _in_words(problem)
+        where = f"{where}.{key}".lstrip(".") if key else where
+        raise G2SError(f"{path}: {where or '(top level)'}: {words}")
     try:
         return _loaded(document, path)
-    except (KeyError, TypeError, ValueError, OverflowError) as exc:  # what the schema cannot say, e.g. a parent id
+    except MalformedField as exc:
+        raise G2SError(f"{path}: {exc}") from None
+    except (KeyError, TypeError, ValueError, OverflowError) as exc:  # what the schema cannot say
         raise G2SError(f"{path}: malformed structure file ({type(exc).__name__}: {exc})") from None
 
 
@@ -87,6 +106,40 @@ def _schema_validator() -> Any:
 
     schema = json.loads(SCHEMA_PATH.read_text(encoding="utf-8"))
     return jsonschema.validators.validator_for(schema)(schema)
+
+
+def _non_finite(value: Any, where: str = "") -> tuple[str, float] | None:
+    """The first number in ``value`` that is not finite (``NaN``, ``Infinity``: Python's json reads them, JSON has
+    none, the writer writes none; ``1e999`` reads as infinity) and where it is, e.g. ``nodes[3].position[0]``."""
+    if isinstance(value, float) and not math.isfinite(value):
+        return where, value
+    items = value.items() if isinstance(value, dict) else enumerate(value) if isinstance(value, list) else ()
+    for key, item in items:
+        if found := _non_finite(item, f"{where}[{key}]" if isinstance(key, int) else f"{where}.{key}".lstrip(".")):
+            return found
+    return None
+
+
+def _in_words(problem: Any) -> tuple[str, str]:
+    """A ``jsonschema`` error in the words of g2s's config messages: the key it is about, when below the error's
+    path (a missing or unknown key), and ``expected ..., got ...`` (the validator's own message otherwise)."""
+    rule, expected, value = problem.validator, problem.validator_value, problem.instance
+    if rule == "required":
+        return next(key for key in expected if key not in value), "required key is missing"
+    if rule == "additionalProperties":
+        known = ", ".join(problem.schema.get("properties", {}))
+        return next(key for key in value if key not in problem.schema.get("properties", {})), f"unknown key (expected one of: {known})"
+    kinds = [expected] if rule == "type" else [item.get("type") for item in expected] if rule in ("anyOf", "oneOf") else []
+    if kinds and all(kinds):
+        words = [_SCHEMA_TYPES[kind] for item in kinds for kind in ([item] if isinstance(item, str) else item)]
+        return "", f"expected {' or '.join(dict.fromkeys(words))}, got {show(value)}"
+    if rule in ("enum", "const"):
+        return "", f"expected {'one of ' + ', '.join(map(show, expected)) if rule == 'enum' else show(expected)}, got {show(value)}"
+    if rule in ("minItems", "maxItems"):
+        return "", f"expected a list of {'at least' if rule == 'minItems' else 'at most'} {expected} items, got {show(value)}"
+    if rule in _BOUNDS:
+        return "", f"expected a number {_BOUNDS[rule]} {expected}, got {show(value)}"
+    return "", _shorten(problem.message)
 
 
 def _shorten(message: str, limit: int = 160) -> str:
@@ -160,7 +213,7 @@ def _known_nodes(structure: nx.Graph, ids: dict[Any, Any], field: str) -> list[i
     for place, node in ids.items():
         if int(node) not in structure:
             where = f"{field}[{place}]" if isinstance(place, int) else f"{field}.{place}"
-            raise ValueError(f"{where}: node {int(node)} is not in nodes")
+            raise MalformedField(f"{where}: node {int(node)} is not in nodes")
     return [int(node) for node in ids.values()]
 
 
@@ -170,7 +223,7 @@ def _terminals(data: dict[str, Any], openings: tuple[Opening, ...]) -> Terminals
     waypoints = tuple(int(w) for w in data.get("waypoint_ids", ()))
     both = set(nodes).intersection(waypoints)
     if both:
-        raise ValueError(f"terminals.waypoint_ids: node {min(both)} is also in terminals.node_ids")
+        raise MalformedField(f"terminals.waypoint_ids: node {min(both)} is also in terminals.node_ids")
     return Terminals(nodes + waypoints, openings, waypoints)
 
 

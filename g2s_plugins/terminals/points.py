@@ -114,9 +114,11 @@ def read_points(file: str | Path) -> np.ndarray:
     points = []
     for index, row in enumerate(rows):
         try:
+            if is_json and not all(type(value) in (int, float) for value in row):  # true and "1" were read as 1
+                raise TypeError(row)
             point = vec3(row)
         except (TypeError, ValueError):
-            raise G2SError(f"{path}: point {index} is {row!r}, expected [x, y, z] numbers") from None
+            raise G2SError(f"{path}: point {index} is {json.dumps(row) if is_json else repr(row)}, expected [x, y, z] numbers") from None
         if not all(map(math.isfinite, point)):  # nan, inf, 1e999: was named without the file
             raise G2SError(f"{path}: point {index} {point} is not finite")
         points.append(point)

@@ -218,7 +218,7 @@ def test_a_gltf_buffer_that_is_a_fifo_is_refused_not_waited_on(tmp_path):
     buffer.unlink()
     os.mkfifo(buffer)
     outcome = run_g2s_process("run", "graph_only", gltf, "-o", tmp_path / "out", timeout=60)
-    assert_clean_error(outcome, f"{gltf}: cannot read mesh (MeshError: {buffer}: expected a file, got a FIFO)")
+    assert_clean_error(outcome, f"{gltf}: {buffer}: expected a file, got a FIFO")
 
 
 def _glb(document: dict, binary: bytes) -> bytes:
@@ -234,6 +234,94 @@ def _glb_parts(tmp_path: Path) -> tuple[bytes, dict, bytes]:
     data = _floor(tmp_path, ".glb").read_bytes()
     length = int.from_bytes(data[12:16], "little")
     return data, json.loads(data[20:20 + length]), data[20 + length + 8:]
+
+
+def _ascii_stl() -> str:
+    """The floor of FLOOR_OBJ (two triangles) as trimesh writes it in ASCII STL: solid, then per facet a normal,
+    outer loop, 3 vertex lines, endloop, endfacet; endsolid."""
+    import trimesh
+
+    floor = trimesh.Trimesh([[-10, 0, -10], [10, 0, -10], [10, 0, 10], [-10, 0, 10]], [[0, 3, 2], [0, 2, 1]])
+    return floor.export(file_type="stl_ascii")
+
+
+def _line_changed(text: str, number: int, new: str | None) -> str:
+    """``text`` with its line ``number`` (from 1) replaced by ``new``, written twice (``new`` ``"twice"``) or deleted."""
+    lines = text.splitlines()
+    lines[number - 1:number] = [] if new is None else [lines[number - 1]] * 2 if new == "twice" else [new]
+    return "\n".join(lines) + "\n"
+
+
+@pytest.mark.parametrize("number, new, says", [
+    # were "cannot read mesh (ValueError: cannot reshape array of size 17 into shape (3))" (robust5, 4 December 2026)
+    (5, None, "line 6: a facet of 2 vertices (expected 3)"),
+    (5, "twice", "line 8: a facet of 4 vertices (expected 3)"),
+    (5, "vertex 10 0", "line 5: a vertex of 2 coordinates (expected x y z)"),
+    (5, "vertex 10 0 10 1", "line 5: a vertex of 4 coordinates (expected x y z)"),
+    # was "cannot read mesh (ValueError: string or file could not be read to its end due to unmatched data)"
+    (5, "vertex 10 0 1,5", "line 5: vertex coordinate '1,5' is not a number"),
+    (5, "VeXtex 10 0 10", "line 5: a line starts with 'VeXtex' (expected one of solid, facet, outer, vertex, endloop, endfacet, endsolid)"),
+    # was "cannot read mesh (ValueError: `endsolid` precedes `solid`!)"
+    (17, "twice", "line 18: endsolid without a solid before it"),
+    # was "the mesh has NaN or infinite vertex coordinates", without the line
+    (5, "vertex 10 nan 10", "line 5: vertex coordinate 'nan' is not a finite number"),
+])
+def test_a_damaged_ascii_stl_is_named_by_its_line(number, new, says, tmp_path, quick_config, capsys):
+    text = _ascii_stl()
+    assert text.splitlines()[4].startswith("vertex") and text.splitlines()[16].startswith("endsolid")
+    stl = _damaged(tmp_path, "bad.stl", _line_changed(text, number, new).encode())
+    outcome = run_g2s(capsys, "run", quick_config, stl, "-o", tmp_path / "out")
+    assert_clean_error(outcome, f"{stl}: {says}")
+    assert tree(tmp_path / "out") == []
+
+
+def test_the_ascii_stl_the_damage_tests_change_is_read_and_a_binary_stls_nan_is_not_taken_for_text(tmp_path):
+    (tmp_path / "floor.stl").write_text(_ascii_stl())
+    assert load_mesh(tmp_path / "floor.stl")[1].faces == 2
+    data = bytearray(_floor(tmp_path, ".stl").read_bytes())
+    data[84 + 12:84 + 16] = bytes.fromhex("0000c07f")  # the first vertex's x, a float32 NaN
+    (tmp_path / "nan.stl").write_bytes(data)
+    with pytest.raises(MeshError, match=r"nan\.stl: the mesh has NaN or infinite vertex coordinates$"):
+        load_mesh(tmp_path / "nan.stl")
+
+
+@pytest.mark.parametrize("change, says", [
+    # were "cannot read mesh (KeyError: 'POSITION')", "(TypeError: 'NoneType' object is not subscriptable)" (robust5)
+    ({"meshes": [{"primitives": [{"attributes": {"NORMAL": 0}, "indices": 0}]}]},
+     "meshes[0].primitives[0] has no attributes.POSITION, the accessor of its vertices, which g2s needs"),
+    ({"meshes": [{"primitives": [{"attributes": None}]}]},
+     "meshes[0].primitives[0] has no attributes.POSITION, the accessor of its vertices, which g2s needs"),
+    ({"meshes": [{"primitives": [{"attributes": {"POSITION": 9}}]}]},
+     "meshes[0].primitives[0].attributes.POSITION is 9; expected the index of one of the file's 2 accessors"),
+    # was "cannot read mesh (KeyError: 'primitives')"
+    ({"meshes": [{"name": "floor"}]}, "meshes[0].primitives is missing; expected a list of objects"),
+    # were "cannot read mesh (TypeError: list indices must be integers or slices, not str)"
+    ({"scene": "0"}, "scene is '0'; expected the index of one of the file's 1 scene"),
+    ({"scenes": [{"nodes": "0"}]}, "scenes[0].nodes is '0'; expected a list of indices of the file's 1 node"),
+    ({"scenes": [{"nodes": [4]}]}, "scenes[0].nodes is [4]; expected a list of indices of the file's 1 node"),
+    # were "(AttributeError: 'str' object has no attribute 'get')", "(TypeError: object of type 'int' has no len())"
+    ({"nodes": "x"}, "nodes is 'x'; expected a list of objects"),
+    ({"accessors": 3}, "accessors is 3; expected a list of objects"),
+    ({"bufferViews": [None]}, "bufferViews[0] is missing; expected an object"),
+    ({"meshes": [[]]}, "meshes[0] is []; expected an object"),
+])
+def test_a_glb_whose_scene_meshes_or_lists_are_of_another_kind_names_the_key(change, says, tmp_path, quick_config, capsys):
+    _, document, binary = _glb_parts(tmp_path)
+    assert len(document["scenes"]) == len(document["nodes"]) == 1 and len(document["accessors"]) == 2
+    glb = _damaged(tmp_path, "bad.glb", _glb({**document, **change}, binary))
+    outcome = run_g2s(capsys, "run", quick_config, glb, "-o", tmp_path / "out")
+    assert_clean_error(outcome, f"{glb}: {says}")
+    assert tree(tmp_path / "out") == []
+
+
+def test_a_gltf_buffer_that_is_a_device_is_named_in_g2s_words(tmp_path, quick_config, capsys):
+    # was "cannot read mesh (MeshError: /dev/zero: expected a file, got a character device)"
+    gltf = _gltf_with_buffer(tmp_path)
+    document = json.loads(gltf.read_text())
+    document["buffers"][0]["uri"] = "/dev/zero"
+    gltf.write_text(json.dumps(document))
+    outcome = run_g2s(capsys, "run", quick_config, gltf, "-o", tmp_path / "out")
+    assert_clean_error(outcome, f"{gltf}: /dev/zero: expected a file, got a character device")
 
 
 @pytest.mark.parametrize("damage, says", [
