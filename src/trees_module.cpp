@@ -146,10 +146,8 @@ std::vector<uint8_t> passages(const int32_t* indptr, const int32_t* indices, con
 class TreeSweep {
   public:
     explicit TreeSweep(int32_t n)
-        : distance_(static_cast<size_t>(n)), sums_(static_cast<size_t>(n)), first_child_(static_cast<size_t>(n) + 1),
-          next_child_(static_cast<size_t>(n)), children_(static_cast<size_t>(n)) {
-        order_.reserve(n);
-    }
+        : distance_(static_cast<size_t>(n)), sums_(static_cast<size_t>(n)), order_(static_cast<size_t>(n)),
+          first_child_(static_cast<size_t>(n) + 1), next_child_(static_cast<size_t>(n)), children_(static_cast<size_t>(n)) {}
 
     void run(const Graph& g, int32_t source, const double* values, int32_t* predecessor, double* through) {
         constexpr double infinity = std::numeric_limits<double>::infinity();
@@ -164,7 +162,7 @@ class TreeSweep {
         };
         // `u` reached at `d` from `from`: shorter, or (walking corridors) as short from a node that settles first;
         // never the source
-        auto reach = [&](int32_t u, double d, int32_t from) {
+        auto reach = [&](int32_t u, double d, int32_t from) __attribute__((always_inline)) {
             if (distance_[u] > d) {
                 distance_[u] = d;
                 predecessor[u] = from;
@@ -212,21 +210,23 @@ class TreeSweep {
             if (predecessor[v] >= 0) children_[next_child_[predecessor[v]]++] = v;
         // breadth first from the source, parents before children: in reverse every subtree is complete when
         // its root comes
-        order_.clear();
-        order_.push_back(source);
-        for (size_t i = 0; i < order_.size(); ++i)
-            order_.insert(order_.end(), children_.begin() + first_child_[order_[i]],
-                          children_.begin() + first_child_[order_[i] + 1]);
-        for (auto it = order_.rbegin(); it != order_.rend(); ++it) {
-            const int32_t v = *it;
+        // (each node's children copied by a plain loop: most nodes have one child or none, for which a call to
+        // vector::insert cost more than the copy)
+        int32_t* order = order_.data();
+        int32_t size = 1;
+        order[0] = source;
+        for (int32_t i = 0; i < size; ++i)
+            for (int32_t c = first_child_[order[i]]; c < first_child_[order[i] + 1]; ++c) order[size++] = children_[c];
+        for (int32_t i = size - 1; i >= 0; --i) {
+            const int32_t v = order[i];
             const int32_t first = first_child_[v], count = first_child_[v + 1] - first;
             double total = values[v];
-            if (count > 0) {
+            if (count == 1) {
+                total += sums_[children_[first]];  // the branch of one child is that child's sum
+            } else if (count > 1) {
                 buffer_.resize(static_cast<size_t>(count));
                 for (int32_t c = 0; c < count; ++c) buffer_[c] = sums_[children_[first + c]];
-                double branch = buffer_[0];
-                if (count > 1) branch += pairwise_sum(buffer_.data() + 1, static_cast<int64_t>(count) - 1);
-                total += branch;
+                total += buffer_[0] + pairwise_sum(buffer_.data() + 1, static_cast<int64_t>(count) - 1);
             }
             sums_[v] = total;
             through[v] = total - values[v];

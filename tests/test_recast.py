@@ -854,3 +854,35 @@ def test_detail_triangles_left_off_the_floor_are_rebuilt_onto_the_hills():
     # the rebuilt polygons still bend with the hills rather than lying flat
     rise = np.ptp(nm.detail_vertices[np.unique(nm.detail_triangles[np.isin(nm.detail_polygon, resampled)])][:, 1])
     assert rise > 1.0
+
+
+def test_best_triangle_per_polygon_is_the_sorts_last_of_the_highest():
+    # owners in runs (as the extension writes them): the highest score of each, the later of equal ones (-0.0
+    # equals 0.0), -1 for polygons 2 and 4, which own no triangle
+    from g2s_plugins.recast.navmesh import _best_per_owner
+
+    owner = np.array([0, 0, 0, 1, 1, 3, 3, 3])
+    score = np.array([0.5, -np.inf, 0.5, 0.0, -0.0, -np.inf, -np.inf, 0.2])
+    assert _best_per_owner(score, owner, 5).tolist() == [2, 4, -1, 7, -1]
+    # out of order or with a NaN (the highest, as a sort puts it): the same rule
+    assert _best_per_owner(score[::-1], owner[::-1], 5).tolist() == [7, 4, -1, 0, -1]
+    assert _best_per_owner(np.array([np.nan, 1.0, 0.0]), np.array([0, 0, 1]), 2).tolist() == [0, 2]
+    assert _best_per_owner(np.zeros(0), np.zeros(0, dtype=np.int32), 2).tolist() == [-1, -1]
+    rng = np.random.default_rng(4)
+    for _ in range(50):
+        owner = np.sort(rng.integers(0, 9, 40))
+        score = rng.choice([-np.inf, -1.0, 0.0, 0.25, 0.25], 40)
+        order = np.lexsort((score, owner))
+        last = np.r_[owner[order][1:] != owner[order][:-1], True]
+        expected = np.full(9, -1)
+        expected[owner[order][last]] = order[last]
+        assert _best_per_owner(score, owner, 9).tolist() == expected.tolist()
+
+
+def test_bounds_are_each_columns_extremes():
+    from g2s_plugins.recast.build import bounds
+
+    points = np.array([[1.0, -2.0, 3.0], [-4.0, 5.0, 0.5], [2.0, 0.0, -6.0]], dtype=np.float32)
+    lo, hi = bounds(points)
+    assert lo.tolist() == [-4.0, -2.0, -6.0] and hi.tolist() == [2.0, 5.0, 3.0]
+    assert lo.dtype == hi.dtype == np.float32

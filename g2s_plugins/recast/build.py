@@ -89,13 +89,23 @@ def build_navmesh(vertices: ArrayLike, faces: ArrayLike, agent: Any, params: Rec
         raise ValueError("Recast: vertices must be finite")
     if len(v):
         check_precision(v, float(voxel_config(settings)["cs"]))
-    frame = LocalFrame(v)
+    frame = LocalFrame(np.stack(bounds(v)) if len(v) else v)  # the frame reads only the points' bounds
     v = frame.to_local(v)  # float64 when shifted, whatever v was
     if len(v):
         check_grid(v, settings, cell_size_given=params.cell_size is not None,
                    cell_height_given=params.cell_height is not None, max_level_cells=params.max_level_cells)
     core = _recast.build(v, f, **settings)
     return NavMesh(core, settings, frame)
+
+
+def bounds(points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """((3,), (3,)) the smallest and largest coordinate of the (N,3) ``points`` along each axis (N > 0).
+
+    Column by column: numpy reduces an (N,3) array along its first axis three values at a time, 30 ms each way
+    for the 864k vertices of the 100k-polygon level, a column in 0.4 ms (docs/performance.md).
+    """
+    return (np.array([points[:, k].min() for k in range(3)], dtype=points.dtype),
+            np.array([points[:, k].max() for k in range(3)], dtype=points.dtype))
 
 
 def check_precision(vertices: np.ndarray, cell_size: float) -> None:
@@ -128,8 +138,7 @@ def check_grid(vertices: np.ndarray, settings: dict[str, Any], cell_size_given: 
             given, else ``mesh``, with the level's size.
     """
     with np.errstate(over="ignore", invalid="ignore"):
-        lo = vertices.min(axis=0).astype(np.float32)
-        hi = vertices.max(axis=0).astype(np.float32)
+        lo, hi = (side.astype(np.float32) for side in bounds(vertices))
         extent = (hi - lo).astype(np.float64)
     if not (np.isfinite(lo).all() and np.isfinite(hi).all() and np.isfinite(extent).all()):
         raise SettingsError(

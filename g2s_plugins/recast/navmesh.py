@@ -356,15 +356,35 @@ def _surface(P, verts, polys, dverts, dtris, owner):
     l0 = ((p1[:, 2] - p2[:, 2]) * (qx - p2[:, 0]) + (p2[:, 0] - p1[:, 0]) * (qz - p2[:, 2])) / safe
     l1 = ((p2[:, 2] - p0[:, 2]) * (qx - p2[:, 0]) + (p0[:, 0] - p2[:, 0]) * (qz - p2[:, 2])) / safe
     lam = np.stack([l0, l1, 1.0 - l0 - l1], axis=1)
-    score = np.where(np.abs(d) > 1e-12, lam.min(axis=1), -np.inf)
-    order = np.lexsort((score, owner))
-    os_ = owner[order]
-    last = np.r_[os_[1:] != os_[:-1], True]
-    best = np.full(P, -1, dtype=np.int64)
-    best[os_[last]] = order[last]
+    score = np.where(np.abs(d) > 1e-12, np.minimum(np.minimum(l0, l1), lam[:, 2]), -np.inf)
+    best = _best_per_owner(score, owner, P)
     has = best >= 0
     b = best[has]
     lb = np.clip(lam[b], 0.0, None)
     lb /= np.maximum(lb.sum(axis=1, keepdims=True), 1e-300)
     centres[has, 1] = lb[:, 0] * p0[b, 1] + lb[:, 1] * p1[b, 1] + lb[:, 2] * p2[b, 1]
     return centres, normals, areas
+
+
+def _best_per_owner(score: np.ndarray, owner: np.ndarray, P: int) -> np.ndarray:
+    """(P,) int64: for each owner 0..P-1 the index of its highest ``score`` ((T,) each), the last of equal ones;
+    -1 for an owner of none.
+
+    The detail triangles come owner by owner (the extension writes them polygon by polygon), so the groups are
+    runs and one maximum per run finds them: O(T), 7 ms for the 221,798 triangles of the 100k-polygon level
+    where a sort by (owner, score) took 36-49 ms (docs/performance.md); out of order or with a NaN score, that
+    sort, whose order (NaN highest, a stable sort's last of equals) is the rule.
+    """
+    best = np.full(P, -1, dtype=np.int64)
+    if len(owner) == 0:
+        return best
+    if np.any(owner[1:] < owner[:-1]) or np.isnan(score).any():
+        order = np.lexsort((score, owner))
+        grouped = owner[order]
+        last = np.r_[grouped[1:] != grouped[:-1], True]
+        best[grouped[last]] = order[last]
+        return best
+    starts = np.flatnonzero(np.r_[True, owner[1:] != owner[:-1]])
+    top = np.repeat(np.maximum.reduceat(score, starts), np.diff(np.r_[starts, len(owner)]))
+    best[owner[starts]] = np.maximum.reduceat(np.where(score == top, np.arange(len(owner)), -1), starts)
+    return best
