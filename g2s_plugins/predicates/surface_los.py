@@ -25,7 +25,11 @@ begins.
 Cost per call: one navmesh raycast, O(polygons crossed), and one Detour
 height query per probe point (at most |AC| / probe_step + 1 of them, stopping
 at the first probe out of reach), both in one C++ call
-(:meth:`g2s_plugins.recast.NavMesh.line_of_sight`).
+(:meth:`g2s_plugins.recast.NavMesh.line_of_sight`). On the pipeline's rooted
+forest the lines of sight between nodes two and three tree edges apart are
+computed ahead on a second thread while simplification runs
+(:meth:`g2s_plugins.recast.NavMesh.sights_ahead`): the same answers, most of
+them ready when asked.
 """
 
 from __future__ import annotations
