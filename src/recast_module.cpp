@@ -1748,32 +1748,42 @@ private:
     }
     uint64_t key(int64_t a, int64_t c) const { return static_cast<uint64_t>(a) * rows_ + static_cast<uint64_t>(c); }
 
-    // The pairs (A, C), C two then three edges below A, anchors by row; then their answers, in that order.
+    // The pairs (A, C), C two then three edges below A, anchors by row; then their answers, in that order. A pair
+    // three apart is asked only after the node between A and C's parent P went, which needed A to see P: it is
+    // computed only when the pair (A, P) was clear (about half of them are not).
     void work() {
         std::vector<int64_t> start(rows_ + 1, 0), child(heads_.size());
         for (const int64_t h : heads_) ++start[h + 1];
         for (size_t i = 0; i < rows_; ++i) start[i + 1] += start[i];
         std::vector<int64_t> fill(start.begin(), start.end() - 1);
         for (size_t e = 0; e < heads_.size(); ++e) child[fill[heads_[e]]++] = tails_[e];
-        for (size_t a = 0; a < rows_; ++a)
-            for (int depth = 2; depth <= 3; ++depth) {
-                std::vector<int64_t> level{static_cast<int64_t>(a)};
-                for (int d = 0; d < depth; ++d) {
-                    std::vector<int64_t> below;
-                    for (const int64_t u : level) below.insert(below.end(), &child[start[u]], &child[start[u + 1]]);
-                    level.swap(below);
-                }
-                for (const int64_t c : level)
-                    if (wanted_[c] && slot_.emplace(key(a, c), pairs_.size()).second) pairs_.emplace_back(a, c);
+        std::vector<int64_t> after;  // for each pair, the slot of the pair that must be clear first, or -1
+        for (size_t a = 0; a < rows_; ++a) {
+            const int64_t a_first = static_cast<int64_t>(pairs_.size());
+            for (int64_t i = start[a]; i < start[a + 1]; ++i)
+                for (int64_t j = start[child[i]]; j < start[child[i] + 1]; ++j)
+                    if (wanted_[child[j]]) add(a, child[j], -1, after);
+            const int64_t a_last = static_cast<int64_t>(pairs_.size());
+            for (int64_t k = a_first; k < a_last; ++k) {
+                const int64_t p = pairs_[k].second;
+                for (int64_t j = start[p]; j < start[p + 1]; ++j)
+                    if (wanted_[child[j]]) add(a, child[j], k, after);
             }
+        }
         answers_ = std::make_unique<std::atomic<uint8_t>[]>(pairs_.size());
         listed_.store(true, std::memory_order_release);
         std::vector<dtPolyRef> path(256);
         for (size_t i = 0; i < pairs_.size() && !stop_.load(std::memory_order_relaxed); ++i) {
+            if (after[i] >= 0 && answers_[after[i]].load(std::memory_order_relaxed) != 2) continue;
             const auto [a, c] = pairs_[i];
             const bool clear = n_.sees(&pos_[3 * a], &pos_[3 * c], step_, horizontal_, max_gap_, path);
             answers_[i].store(clear ? 2 : 1, std::memory_order_release);
         }
+    }
+    void add(int64_t a, int64_t c, int64_t first, std::vector<int64_t>& after) {
+        if (!slot_.emplace(key(a, c), pairs_.size()).second) return;
+        pairs_.emplace_back(a, c);
+        after.push_back(first);
     }
 
     const NavMeshCore& n_;
