@@ -75,7 +75,9 @@ def g2s_simplify_predicate(
         return navmesh.line_of_sight(start, end, step, gap)
 
     def rule() -> Callable[[nx.DiGraph, int, int, int], bool]:
-        between = None if forest is None else _sights_ahead(navmesh, forest, step, gap)
+        # no forest (asked outside the pipeline) or a navmesh without the method (a test double): one at a time
+        ahead = forest is not None and hasattr(navmesh, "sights_ahead")
+        between = _sights_ahead(navmesh, forest, step, gap) if ahead else None
         return collapse_rule(params, line_of_sight, context.graph, between)
 
     return guaranteed(rule, params.min_heat_rho, context, forest, simplified)
