@@ -151,8 +151,7 @@ def traffic_ranks(graph: nx.Graph) -> dict[Hashable, float]:
 
 
 def collapse_rule(
-    params: CollapseParams, line_of_sight: LineOfSight, graph: nx.Graph | None = None,
-    between: Callable[[int, int], bool] | None = None,
+    params: CollapseParams, line_of_sight: LineOfSight, graph: nx.Graph | None = None
 ) -> Callable[[nx.DiGraph, int, int, int], bool]:
     """``P(tree, A, B, C)`` of the paper's Algorithm 5 with ``params``' tolerances: True when B may be removed.
 
@@ -177,8 +176,6 @@ def collapse_rule(
        segment straying from the surface by more than its gap tolerance).
 
     Tests 2 and 3 cost a few lookups; test 4 runs only when they let B go.
-    ``between(A, C)``, when given, is test 4 asked by node ids: the same
-    answer as ``line_of_sight`` of their points, perhaps computed ahead.
     Test 2 compares the nodes' own polygons, not the polygons each will
     stand for: those depend on which nodes the rest of the simplification
     keeps. As A stays while the nodes after it are removed one by one, every
@@ -229,8 +226,6 @@ def collapse_rule(
             normal_c = node_c["normal"]
             if bent(normal_b, normal_c) or bent(normal_a, normal_c):
                 return False
-        if between is not None:
-            return between(a, c)
         return line_of_sight(tuple(map(float, node_a["pos"])), tuple(map(float, node_c["pos"])))
 
     return predicate

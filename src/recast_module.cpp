@@ -1075,17 +1075,6 @@ public:
         return worst == FLT_MAX ? std::numeric_limits<double>::infinity() : static_cast<double>(worst);
     }
 
-    // The surface_los predicate's line of sight: ray(a, b) is clear and, unless max_gap is empty, segment_gap(a, b,
-    // step, horizontal, reach=max_gap) <= max_gap. The points as doubles, converted to float as get3 does; `path` is
-    // the raycast's corridor buffer, one per thread (only const Detour queries run here).
-    bool sees(const double* a, const double* b, double step, float horizontal, std::optional<double> max_gap,
-              std::vector<dtPolyRef>& path) const {
-        const float pa[3] = {static_cast<float>(a[0]), static_cast<float>(a[1]), static_cast<float>(a[2])};
-        const float pb[3] = {static_cast<float>(b[0]), static_cast<float>(b[1]), static_cast<float>(b[2])};
-        if (!ray(pa, pb, default_ext, path).first) return false;
-        return !max_gap || segment_gap(a, b, step, horizontal, static_cast<float>(*max_gap)) <= *max_gap;
-    }
-
 private:
     std::vector<std::unique_ptr<TileMesh>> build_solo(const Input& in, const Settings& s);
     std::vector<std::unique_ptr<TileMesh>> build_tiled(const Input& in, const Settings& s, int ts);
@@ -1694,118 +1683,6 @@ void get3(const Vec3In& a, float* out) {
     for (int i = 0; i < 3; ++i) out[i] = static_cast<float>(a[i]);
 }
 
-// Lines of sight asked ahead, for the surface_los predicate on one rooted forest. Algorithm 4
-// (g2s_core/simplify.py) asks the line of sight A -> C of its chains A -> B -> C one after the other, and most of
-// them join a node to one two or three tree edges below it (docs/performance.md, 4 December 05-07 UTC). A worker
-// thread computes those pairs, anchors in the forest's depth-first order (the order Algorithm 4 visits them in),
-// while the predicate's thread runs Algorithm 4; `sees` takes a pair's answer when the worker has it and computes
-// it otherwise. Both compute NavMeshCore::sees, which runs only const Detour queries (no state in the shared query
-// object), so which thread answered changes no answer. Speculative: pairs never asked are computed too.
-class SightsAhead {
-public:
-    // ids (R,): the forest's nodes, depth-first; heads, tails (E,): its edges by id; pos (R,3): local points;
-    // wanted (R,): whether a node may be a chain's end C (pairs ending elsewhere are never asked).
-    SightsAhead(const NavMeshCore& n, const int64_t* ids, size_t rows, const int64_t* heads, const int64_t* tails,
-                size_t edges, const double* pos, const uint8_t* wanted, double step, float horizontal,
-                std::optional<double> max_gap)
-        : n_(n), pos_(pos, pos + 3 * rows), wanted_(wanted, wanted + rows), heads_(edges), tails_(edges),
-          rows_(rows), step_(step), horizontal_(horizontal), max_gap_(max_gap) {
-        row_.reserve(rows);
-        for (size_t i = 0; i < rows; ++i) row_.emplace(ids[i], static_cast<int64_t>(i));
-        for (size_t e = 0; e < edges; ++e) {
-            heads_[e] = row(heads[e]);
-            tails_[e] = row(tails[e]);
-        }
-        worker_ = std::thread([this] { work(); });
-    }
-    ~SightsAhead() {
-        stop_ = true;
-        worker_.join();
-    }
-    SightsAhead(const SightsAhead&) = delete;
-    SightsAhead& operator=(const SightsAhead&) = delete;
-
-    // NavMeshCore::sees from node a to node c (ids of the forest).
-    bool sees(int64_t a, int64_t c) {
-        const int64_t ra = row(a), rc = row(c);
-        if (listed_.load(std::memory_order_acquire)) {
-            const auto found = slot_.find(key(ra, rc));
-            if (found != slot_.end()) {
-                const uint8_t answer = answers_[found->second].load(std::memory_order_acquire);
-                if (answer != 0) return answer == 2;
-            }
-        }
-        thread_local std::vector<dtPolyRef> path(256);
-        nb::gil_scoped_release release;
-        return n_.sees(&pos_[3 * ra], &pos_[3 * rc], step_, horizontal_, max_gap_, path);
-    }
-
-private:
-    int64_t row(int64_t id) const {
-        const auto found = row_.find(id);
-        if (found == row_.end()) throw nb::key_error("node not in the forest");
-        return found->second;
-    }
-    uint64_t key(int64_t a, int64_t c) const { return static_cast<uint64_t>(a) * rows_ + static_cast<uint64_t>(c); }
-
-    // The pairs (A, C), C two then three edges below A, anchors by row; then their answers, in that order. A pair
-    // three apart is asked only after the node between A and C's parent P went, which needed A to see P: it is
-    // computed only when the pair (A, P) was clear (about half of them are not).
-    void work() {
-        std::vector<int64_t> start(rows_ + 1, 0), child(heads_.size());
-        for (const int64_t h : heads_) ++start[h + 1];
-        for (size_t i = 0; i < rows_; ++i) start[i + 1] += start[i];
-        std::vector<int64_t> fill(start.begin(), start.end() - 1);
-        for (size_t e = 0; e < heads_.size(); ++e) child[fill[heads_[e]]++] = tails_[e];
-        std::vector<int64_t> after;  // for each pair, the slot of the pair that must be clear first, or -1
-        for (size_t a = 0; a < rows_; ++a) {
-            const int64_t a_first = static_cast<int64_t>(pairs_.size());
-            for (int64_t i = start[a]; i < start[a + 1]; ++i)
-                for (int64_t j = start[child[i]]; j < start[child[i] + 1]; ++j)
-                    if (wanted_[child[j]]) add(a, child[j], -1, after);
-            const int64_t a_last = static_cast<int64_t>(pairs_.size());
-            for (int64_t k = a_first; k < a_last; ++k) {
-                const int64_t p = pairs_[k].second;
-                for (int64_t j = start[p]; j < start[p + 1]; ++j)
-                    if (wanted_[child[j]]) add(a, child[j], k, after);
-            }
-        }
-        answers_ = std::make_unique<std::atomic<uint8_t>[]>(pairs_.size());
-        listed_.store(true, std::memory_order_release);
-        std::vector<dtPolyRef> path(256);
-        for (size_t i = 0; i < pairs_.size() && !stop_.load(std::memory_order_relaxed); ++i) {
-            if (after[i] >= 0 && answers_[after[i]].load(std::memory_order_relaxed) != 2) continue;
-            const auto [a, c] = pairs_[i];
-            const bool clear = n_.sees(&pos_[3 * a], &pos_[3 * c], step_, horizontal_, max_gap_, path);
-            answers_[i].store(clear ? 2 : 1, std::memory_order_release);
-        }
-    }
-    void add(int64_t a, int64_t c, int64_t first, std::vector<int64_t>& after) {
-        if (!slot_.emplace(key(a, c), pairs_.size()).second) return;
-        pairs_.emplace_back(a, c);
-        after.push_back(first);
-    }
-
-    const NavMeshCore& n_;
-    std::vector<double> pos_;
-    std::vector<uint8_t> wanted_;
-    std::vector<int64_t> heads_, tails_;
-    size_t rows_;
-    double step_;
-    float horizontal_;
-    std::optional<double> max_gap_;
-    std::unordered_map<int64_t, int64_t> row_;
-    // written by the worker before it sets listed_, read-only after
-    std::unordered_map<uint64_t, size_t> slot_;
-    std::vector<std::pair<int64_t, int64_t>> pairs_;
-    std::unique_ptr<std::atomic<uint8_t>[]> answers_;  // 0: not yet, 1: blocked, 2: clear
-    std::atomic<bool> listed_{false}, stop_{false};
-    std::thread worker_;
-};
-
-using IdsIn = nb::ndarray<const int64_t, nb::ndim<1>, nb::c_contig, nb::device::cpu>;
-using MaskIn = nb::ndarray<const uint8_t, nb::ndim<1>, nb::c_contig, nb::device::cpu>;
-
 }  // namespace
 
 NB_MODULE(_recast, m) {
@@ -1958,10 +1835,13 @@ NB_MODULE(_recast, m) {
         .def("line_of_sight",
              [](const NavMeshCore& n, Vec3In a, Vec3In b, double step, float horizontal, std::optional<double> max_gap) {
                  if (!(step > 0)) throw nb::value_error("step must be positive");
+                 float pa[3], pb[3];
+                 get3(a, pa); get3(b, pb);
                  thread_local std::vector<dtPolyRef> path(256);  // raycast's corridor, kept between the calls
                  nb::gil_scoped_release release;
                  std::lock_guard<std::mutex> lock(n.mutex);
-                 return n.sees(a.data(), b.data(), step, horizontal, max_gap, path);
+                 if (!n.ray(pa, pb, n.default_ext, path).first) return false;
+                 return !max_gap || n.segment_gap(a.data(), b.data(), step, horizontal, static_cast<float>(*max_gap)) <= *max_gap;
              },
              nb::arg("a"), nb::arg("b"), nb::arg("step"), nb::arg("horizontal"), nb::arg("max_gap").none(),
              "raycast(a, b) is clear and, unless max_gap is None, segment_surface_gap(a, b, step, horizontal, "
@@ -1991,25 +1871,6 @@ NB_MODULE(_recast, m) {
                  return n.ref_to_index(static_cast<dtPolyRef>(ref));
              },
              nb::arg("ref"), "global polygon index of a Detour dtPolyRef (tile's first index + decodePolyIdPoly); -1 for 0");
-
-    nb::class_<SightsAhead>(m, "SightsAhead",
-                            "NavMeshCore.line_of_sight between the nodes of one rooted forest, the pairs two and "
-                            "three tree edges apart computed ahead by a worker thread")
-        .def("__init__",
-             [](SightsAhead* self, const NavMeshCore& n, IdsIn ids, IdsIn heads, IdsIn tails, PointsIn pos,
-                MaskIn wanted, double step, float horizontal, std::optional<double> max_gap) {
-                 if (!(step > 0)) throw nb::value_error("step must be positive");
-                 if (pos.shape(0) != ids.shape(0) || wanted.shape(0) != ids.shape(0) || tails.shape(0) != heads.shape(0))
-                     throw nb::value_error("ids, pos and wanted must have one row per node, heads and tails one per edge");
-                 new (self) SightsAhead(n, ids.data(), ids.shape(0), heads.data(), tails.data(), heads.shape(0),
-                                        pos.data(), wanted.data(), step, horizontal, max_gap);
-             },
-             nb::keep_alive<1, 2>(), nb::arg("navmesh"), nb::arg("ids"), nb::arg("heads"), nb::arg("tails"),
-             nb::arg("pos"), nb::arg("wanted"), nb::arg("step"), nb::arg("horizontal"), nb::arg("max_gap").none(),
-             "ids (R,) int64 the forest's nodes in depth-first order, heads/tails (E,) int64 its edges by id, pos "
-             "(R,3) float64 their local points, wanted (R,) uint8 the nodes a chain may end at; starts the worker")
-        .def("sees", &SightsAhead::sees, nb::arg("a"), nb::arg("c"),
-             "line_of_sight(pos[a], pos[c], step, horizontal, max_gap) for node ids a and c of the forest");
 
     def_build<float, int32_t>(m);
     def_build<double, int32_t>(m);

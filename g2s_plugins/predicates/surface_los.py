@@ -25,23 +25,17 @@ begins.
 Cost per call: one navmesh raycast, O(polygons crossed), and one Detour
 height query per probe point (at most |AC| / probe_step + 1 of them, stopping
 at the first probe out of reach), both in one C++ call
-(:meth:`g2s_plugins.recast.NavMesh.line_of_sight`). On the pipeline's rooted
-forest the lines of sight between nodes two and three tree edges apart are
-computed ahead on a second thread while simplification runs
-(:meth:`g2s_plugins.recast.NavMesh.sights_ahead`): the same answers, most of
-them ready when asked.
+(:meth:`g2s_plugins.recast.NavMesh.line_of_sight`).
 """
 
 from __future__ import annotations
 
-import itertools
 from collections.abc import Callable
 
 import networkx as nx
-import numpy as np
 
 from g2s_core.errors import PluginError
-from g2s_core.model import NavMesh, RunContext
+from g2s_core.model import RunContext
 from g2s_core.plugin import hookimpl
 from g2s_plugins._surface import CollapseParams, collapse_rule
 from g2s_plugins.heat_guarantee import guaranteed
@@ -74,29 +68,5 @@ def g2s_simplify_predicate(
     def line_of_sight(start: tuple[float, ...], end: tuple[float, ...]) -> bool:
         return navmesh.line_of_sight(start, end, step, gap)
 
-    def rule() -> Callable[[nx.DiGraph, int, int, int], bool]:
-        # no forest (asked outside the pipeline) or a navmesh without the method (a test double): one at a time
-        ahead = forest is not None and hasattr(navmesh, "sights_ahead")
-        between = _sights_ahead(navmesh, forest, step, gap) if ahead else None
-        return collapse_rule(params, line_of_sight, context.graph, between)
-
-    return guaranteed(rule, params.min_heat_rho, context, forest, simplified)
-
-
-def _sights_ahead(navmesh: NavMesh, forest: nx.DiGraph, step: float, gap: float | None) -> Callable[[int, int], bool]:
-    """The line of sight between two nodes of ``forest`` by id, those two and three tree edges apart computed ahead
-    on a second thread (:meth:`g2s_plugins.recast.NavMesh.sights_ahead`): Algorithm 4 asks its chains one after
-    the other, and most of its lines of sight join such pairs (docs/performance.md, 4 December, 05-07 UTC).
-
-    A pair may end at a node on the navmesh or with children (the collapse rule asks no other). O(n) to set up.
-    """
-    nodes, succ = forest._node, forest._succ
-    ids = np.fromiter(nodes, np.int64, len(nodes))
-    counts = np.fromiter(map(len, succ.values()), np.int64, len(succ))
-    heads = np.repeat(np.fromiter(succ, np.int64, len(succ)), counts)
-    tails = np.fromiter(itertools.chain.from_iterable(succ.values()), np.int64, len(heads))
-    # one flat iterator rather than a list of tuples: half the time on a 100k-node forest
-    pos = np.fromiter(itertools.chain.from_iterable(data["pos"] for data in nodes.values()), np.float64, 3 * len(ids))
-    # succ and nodes list the nodes in one order (graph_of)
-    wanted = np.fromiter((data.get("on_navmesh", False) for data in nodes.values()), bool, len(ids)) | (counts > 0)
-    return navmesh.sights_ahead(ids, heads, tails, pos.reshape(-1, 3), wanted, step, gap).sees
+    return guaranteed(lambda: collapse_rule(params, line_of_sight, context.graph), params.min_heat_rho, context, forest,
+                      simplified)

@@ -280,18 +280,6 @@ class NavMesh:
         return self._core.line_of_sight(self._local(a), self._local(b), float(step), float(self.settings["cell_size"]),
                                         None if max_gap is None else float(max_gap))
 
-    def sights_ahead(self, ids: np.ndarray, heads: np.ndarray, tails: np.ndarray, pos: ArrayLike, wanted: np.ndarray,
-                     step: float, max_gap: float | None) -> Any:
-        """:meth:`line_of_sight` between the nodes of one rooted forest, as ``sees(a, c)`` (node ids) of the object
-        returned, whose worker thread computes the pairs two and three tree edges apart ahead.
-
-        ``ids`` (R,) int64: the nodes in depth-first order; ``heads``, ``tails`` (E,) int64: the edges by id;
-        ``pos`` (R,3): the nodes' points; ``wanted`` (R,) bool: the nodes a pair may end at.
-        """
-        return _recast.SightsAhead(self._core, ids, heads, tails, self._local_rows(pos), wanted.astype(np.uint8),
-                                   float(step), float(self.settings["cell_size"]),
-                                   None if max_gap is None else float(max_gap))
-
     def poly_ref(self, index: int) -> int:
         """Detour ``dtPolyRef`` of polygon ``index``."""
         return int(self._core.poly_ref(int(index)))
