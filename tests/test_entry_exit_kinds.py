@@ -326,3 +326,25 @@ def test_ground_rising_beside_a_terrain_border_leaves_its_openings_whole() -> No
     widths = sorted(o.width for o in _detect(outdoor.terrain().mesh).openings)
     assert len(widths) == 7
     assert widths[-2] > 65.0 and widths[-1] > 65.0
+
+
+def _bridge_over_a_closed_trough() -> trimesh.Trimesh:
+    """A deck 10 x 2.4 m between 1 m parapets; under its middle 6 m a trough 3 m deep, walled all round."""
+    return trimesh.util.concatenate([
+        _box(0, 10, -SLAB, 0.0, 0.0, 2.4), _box(0, 10, -SLAB, 1.0, -0.2, 0.0), _box(0, 10, -SLAB, 1.0, 2.4, 2.6),
+        _box(0, 1.8, -3.2, -SLAB, -0.2, 2.6), _box(8.2, 10, -3.2, -SLAB, -0.2, 2.6),
+        _box(1.8, 8.2, -3.2, -3.0, -2.0, 4.4), _box(1.8, 2.0, -3.0, -SLAB, -2.0, 4.4),
+        _box(8.0, 8.2, -3.0, -SLAB, -2.0, 4.4), _box(2.0, 8.0, -3.0, -SLAB, -2.0, -1.8),
+        _box(2.0, 8.0, -3.0, -SLAB, 4.2, 4.4)])
+
+
+@pytest.mark.parametrize("yaw", [0.0, 22.0])
+def test_a_bridge_over_a_closed_trough_keeps_its_ends(yaw: float) -> None:
+    # The deck lies over the trough's floor (more than a tenth of its area, 3 m below), so the roof test took it
+    # for a roof and the trough, walled all round, for the main floor: no opening at all (seventh round's
+    # `bridge_over_gap`, both routes, every yaw). A floor the agent can leave now comes first.
+    mesh = _bridge_over_a_closed_trough()
+    turn = pieces.yaw_about_centre(mesh, yaw)
+    mesh.apply_transform(turn)
+    known = trimesh.transform_points(np.array([[0.0, 0.0, 1.2], [10.0, 0.0, 1.2]]), turn)
+    _assert_known(_detect(mesh).openings, list(known), [2.4, 2.4])

@@ -771,7 +771,10 @@ class Detection:
     normals: tuple[tuple[float, float, float], ...]
 
 
-def main_floor(navmesh: NavMesh | SampledSurface, agent: AgentConfig, loops: list[BoundaryLoop] | None = None) -> np.ndarray:
+def main_floor(
+    navmesh: NavMesh | SampledSurface, agent: AgentConfig, loops: list[BoundaryLoop] | None = None,
+    looks_out: np.ndarray | None = None,
+) -> np.ndarray:
     """(P,) bool: the polygons of the navmesh's floor of largest area that is no roof.
 
     A floor is a connected component of the navmesh, together with every other one whose boundary
@@ -781,7 +784,10 @@ def main_floor(navmesh: NavMesh | SampledSurface, agent: AgentConfig, loops: lis
     floors, however thin, leaves them at least 1.12 m apart (generated, at every yaw; see
     docs/entry_exit.md). A roof is a floor over others (:func:`area_below`, at least ``_ROOF_SHARE``
     of its area): a closed ceiling's top outweighs the floor under it, which it covers and overhangs.
-    ``loops``: the navmesh's :func:`boundary_loops`, when the caller has them.
+    ``loops``: the navmesh's :func:`boundary_loops`, when the caller has them. ``looks_out``: (P,) bool,
+    the polygons whose boundary looks out of the piece (step 2's segments); given, a floor the agent
+    can leave comes first, roof or not: a floor walled all round holds no opening whatever its size
+    (a bridge's deck lies over the closed trough under it, which the roof test alone would keep).
     """
     neighbours = np.asarray(navmesh.neighbours)
     if len(neighbours) == 0:
@@ -798,8 +804,12 @@ def main_floor(navmesh: NavMesh | SampledSurface, agent: AgentConfig, loops: lis
     label = polygon_components(neighbours, pairs)
     area = np.bincount(label, weights=np.asarray(navmesh.areas, dtype=np.float64))
     roof = area_below(navmesh, label, float(agent.height)) >= _ROOF_SHARE
-    area[roof] = -1.0  # the lowest floor has none below it, so some floor is never a roof
-    return label == int(np.argmax(area))
+    leaves = np.zeros(len(area), dtype=bool)
+    if looks_out is not None:
+        leaves[np.unique(label[np.asarray(looks_out, dtype=bool)])] = True
+    # Leaving first, then no roof (the lowest floor has none below it), then area; ties to the lowest label.
+    best = np.lexsort((-np.arange(len(area)), area, ~roof, leaves))[-1]
+    return label == int(best)
 
 
 _ROOF_SHARE = 0.1
@@ -991,7 +1001,10 @@ def detect_openings(
     ways = _ways_out(samples, np.asarray(surface.normals), caster, s, params)
     segments = _segments(samples, ways, float(params.max_turn_deg))
     if params.main_floor_only:
-        main = main_floor(surface, agent, loops)
+        looks_out = np.zeros(len(surface.areas), dtype=bool)
+        for g in segments:
+            looks_out[samples.polygon[g]] = True
+        main = main_floor(surface, agent, loops, looks_out)
         segments = [g for g in segments if main[samples.polygon[g]].any()]
     kept = _split_at_piers(_match_edges(segments, ways, s, params), ways, caster, s)
     if not kept:
