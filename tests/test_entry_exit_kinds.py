@@ -348,3 +348,25 @@ def test_a_bridge_over_a_closed_trough_keeps_its_ends(yaw: float) -> None:
     mesh.apply_transform(turn)
     known = trimesh.transform_points(np.array([[0.0, 0.0, 1.2], [10.0, 0.0, 1.2]]), turn)
     _assert_known(_detect(mesh).openings, list(known), [2.4, 2.4])
+
+
+def _catwalk_with_rails(length: float = 12.0, width: float = 1.5) -> trimesh.Trimesh:
+    """A deck ``width`` wide between railings of posts 0.05 m square every 1.5 m and rails at 0.45-0.5 and 0.95-1.0 m."""
+    parts = [_box(0.0, length, -0.05, 0.0, 0.0, width)]
+    for z0, z1 in ((-0.05, 0.0), (width, width + 0.05)):
+        parts += [_box(min(1.5 * k, length - 0.05), min(1.5 * k, length - 0.05) + 0.05, -0.05, 1.0, z0, z1)
+                  for k in range(int(length / 1.5) + 1)]
+        parts += [_box(0.0, length, 0.45, 0.5, z0, z1), _box(0.0, length, 0.95, 1.0, z0, z1)]
+    return trimesh.util.concatenate(parts)
+
+
+@pytest.mark.parametrize("yaw", [0.0, 22.0])
+def test_a_railing_of_posts_and_rails_closes_the_side(yaw: float) -> None:
+    # The rays out at 0.2 m and at the head room (1.8 m) passed under and over rails at 0.5 and 1.0 m between posts
+    # 1.5 m apart: each bay of the railing was an opening (seventh round's `catwalk_grating`: 8-12 others a yaw).
+    # The way is now clear at every search step of height from the climb to the head-room ray, a radius past the edge.
+    mesh = _catwalk_with_rails()
+    turn = pieces.yaw_about_centre(mesh, yaw)
+    mesh.apply_transform(turn)
+    known = trimesh.transform_points(np.array([[0.0, 0.0, 0.75], [12.0, 0.0, 0.75]]), turn)
+    _assert_known(_detect(mesh).openings, list(known), [1.5, 1.5])
