@@ -328,6 +328,13 @@ def test_ground_rising_beside_a_terrain_border_leaves_its_openings_whole() -> No
     assert widths[-2] > 65.0 and widths[-1] > 65.0
 
 
+def _assert_known_turned(mesh: trimesh.Trimesh, yaw: float, points: list, width: float) -> None:
+    """:func:`_assert_known` on ``mesh`` turned by ``yaw`` about its centre, its known ``points`` turned with it."""
+    turn = pieces.yaw_about_centre(mesh, yaw)
+    mesh.apply_transform(turn)
+    _assert_known(_detect(mesh).openings, list(trimesh.transform_points(np.array(points), turn)), [width] * len(points))
+
+
 def _bridge_over_a_closed_trough() -> trimesh.Trimesh:
     """A deck 10 x 2.4 m between 1 m parapets; under its middle 6 m a trough 3 m deep, walled all round."""
     return trimesh.util.concatenate([
@@ -343,11 +350,7 @@ def test_a_bridge_over_a_closed_trough_keeps_its_ends(yaw: float) -> None:
     # The deck lies over the trough's floor (more than a tenth of its area, 3 m below), so the roof test took it
     # for a roof and the trough, walled all round, for the main floor: no opening at all (seventh round's
     # `bridge_over_gap`, both routes, every yaw). A floor the agent can leave now comes first.
-    mesh = _bridge_over_a_closed_trough()
-    turn = pieces.yaw_about_centre(mesh, yaw)
-    mesh.apply_transform(turn)
-    known = trimesh.transform_points(np.array([[0.0, 0.0, 1.2], [10.0, 0.0, 1.2]]), turn)
-    _assert_known(_detect(mesh).openings, list(known), [2.4, 2.4])
+    _assert_known_turned(_bridge_over_a_closed_trough(), yaw, [[0.0, 0.0, 1.2], [10.0, 0.0, 1.2]], 2.4)
 
 
 def _catwalk_with_rails(length: float = 12.0, width: float = 1.5) -> trimesh.Trimesh:
@@ -365,8 +368,4 @@ def test_a_railing_of_posts_and_rails_closes_the_side(yaw: float) -> None:
     # The rays out at 0.2 m and at the head room (1.8 m) passed under and over rails at 0.5 and 1.0 m between posts
     # 1.5 m apart: each bay of the railing was an opening (seventh round's `catwalk_grating`: 8-12 others a yaw).
     # The way is now clear at every search step of height from the climb to the head-room ray, a radius past the edge.
-    mesh = _catwalk_with_rails()
-    turn = pieces.yaw_about_centre(mesh, yaw)
-    mesh.apply_transform(turn)
-    known = trimesh.transform_points(np.array([[0.0, 0.0, 0.75], [12.0, 0.0, 0.75]]), turn)
-    _assert_known(_detect(mesh).openings, list(known), [1.5, 1.5])
+    _assert_known_turned(_catwalk_with_rails(), yaw, [[0.0, 0.0, 0.75], [12.0, 0.0, 0.75]], 1.5)
