@@ -124,3 +124,14 @@ def test_two_doors_side_by_side_on_the_sampling_route(pier: float, yaw: float) -
     level = pieces.turned(level, yaw) if yaw else level
     found, known, _, _ = _openings(level)
     assert len(found) == 3 and pieces.match_openings(found, known) == (3, 3)
+
+
+def test_a_bridge_over_a_closed_trough_keeps_its_ends_on_the_sampling_route() -> None:
+    # As on the navmesh route (tests/test_entry_exit_kinds.py): the deck, over the trough's floor, was a roof and
+    # the trough, walled all round, the main floor, so no terminal at all. A floor the agent can leave comes first.
+    from tests.test_entry_exit_kinds import _bridge_over_a_closed_trough
+
+    level = samples.SampleLevel(name="bridge", mesh=_bridge_over_a_closed_trough(), metadata={}, openings=(
+        samples._opening((0.0, 0.0, 1.2), (-1.0, 0.0, 0.0), 2.4), samples._opening((10.0, 0.0, 1.2), (1.0, 0.0, 0.0), 2.4)))
+    found, known, _, _ = _openings(pieces.turned(level, 22.0))
+    assert pieces.match_openings(found, known) == (2, 2) and len(found) == 2

@@ -23,7 +23,9 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
    is a way out when the edge is found, the ray along it stays clear for
    ``outward_radii * r`` (no wall, jamb or curb higher than ``h`` in the
    way), the same way ``h`` below the agent's height is clear up to the edge
-   (head room: no lintel lower than the agent) and, with
+   (head room: no lintel lower than the agent), the same way at every search
+   step of height from the climb up to that is clear one agent radius past
+   the edge (no rail of a railing between its posts) and, with
    ``leave_footprint``, one agent radius beyond the edge nothing of the piece
    lies straight below, nor above lower than the head-room ray (a ledge over
    a lower floor of the piece, a canopy too low to stand under or a hole
@@ -112,8 +114,9 @@ boundary's length / ``sample_step``), k = ``fan_count`` and o openings:
 O(V log V + B log B) to chain the loops; rays, in batches: up to three to snap
 each sample, and per sample and fan direction one outward ray, at most
 ``edge_search_radii * r / d`` downward probes (d = min(``sample_step``,
-r) / 4) and 4 bisection rays to find the surface's end, two more beyond it
-with ``leave_footprint``: O(S k edge_search_radii r / d) rays (up to twice
+r) / 4) and 4 bisection rays to find the surface's end, (agent height - h -
+climb) / d across the way for the directions clear so far, two more beyond it
+with ``leave_footprint``: O(S k (edge_search_radii r + agent height) / d) rays (up to twice
 that with ``step_up``, for the samples searched again from a step's top).
 The main floor adds a k-d tree over boundary samples r / 4 apart, the
 repeated openings an O(o^2) comparison, the terminals a k-d tree query each.
@@ -402,6 +405,18 @@ def _fan(
         rows = np.nonzero(ok)[0]
         head = np.repeat(base + normal * (s.height - s.lift), k, axis=0)[rows]
         ok[rows[caster.first_hits(head, dirs[rows]).distance <= edge[rows]]] = False
+    if ok.any():
+        # Bars across the way (a railing's rails between its posts) pass between the rays at ``lift`` and
+        # the head-room ray: the way must be clear at every search step of height from the climb up to the
+        # head-room ray until the agent's body is past the edge, one radius beyond it.
+        rows = np.nonzero(ok)[0]
+        heights = np.arange(s.climb + s.delta / 2.0, s.height - s.lift, s.delta)
+        start = np.repeat(base, k, axis=0)[rows]
+        up = np.repeat(normal, k, axis=0)[rows]
+        origins = (start[None, :, :] + heights[:, None, None] * up[None, :, :]).reshape(-1, 3)
+        hits = caster.first_hits(origins, np.tile(dirs[rows], (len(heights), 1))).distance
+        barred = (hits.reshape(len(heights), -1) <= (edge[rows] + s.radius)[None, :]).any(axis=0)
+        ok[rows[barred]] = False
     if params.leave_footprint and ok.any():
         rows = np.nonzero(ok)[0]
         beyond = lifted[rows] + dirs[rows] * (edge[rows] + s.radius)[:, None]
@@ -771,7 +786,10 @@ class Detection:
     normals: tuple[tuple[float, float, float], ...]
 
 
-def main_floor(navmesh: NavMesh | SampledSurface, agent: AgentConfig, loops: list[BoundaryLoop] | None = None) -> np.ndarray:
+def main_floor(
+    navmesh: NavMesh | SampledSurface, agent: AgentConfig, loops: list[BoundaryLoop] | None = None,
+    looks_out: np.ndarray | None = None,
+) -> np.ndarray:
     """(P,) bool: the polygons of the navmesh's floor of largest area that is no roof.
 
     A floor is a connected component of the navmesh, together with every other one whose boundary
@@ -781,7 +799,10 @@ def main_floor(navmesh: NavMesh | SampledSurface, agent: AgentConfig, loops: lis
     floors, however thin, leaves them at least 1.12 m apart (generated, at every yaw; see
     docs/entry_exit.md). A roof is a floor over others (:func:`area_below`, at least ``_ROOF_SHARE``
     of its area): a closed ceiling's top outweighs the floor under it, which it covers and overhangs.
-    ``loops``: the navmesh's :func:`boundary_loops`, when the caller has them.
+    ``loops``: the navmesh's :func:`boundary_loops`, when the caller has them. ``looks_out``: (P,) bool,
+    the polygons whose boundary looks out of the piece (step 2's segments); given, a floor the agent
+    can leave comes first, roof or not: a floor walled all round holds no opening whatever its size
+    (a bridge's deck lies over the closed trough under it, which the roof test alone would keep).
     """
     neighbours = np.asarray(navmesh.neighbours)
     if len(neighbours) == 0:
@@ -798,8 +819,12 @@ def main_floor(navmesh: NavMesh | SampledSurface, agent: AgentConfig, loops: lis
     label = polygon_components(neighbours, pairs)
     area = np.bincount(label, weights=np.asarray(navmesh.areas, dtype=np.float64))
     roof = area_below(navmesh, label, float(agent.height)) >= _ROOF_SHARE
-    area[roof] = -1.0  # the lowest floor has none below it, so some floor is never a roof
-    return label == int(np.argmax(area))
+    leaves = np.zeros(len(area), dtype=bool)
+    if looks_out is not None:
+        leaves[np.unique(label[np.asarray(looks_out, dtype=bool)])] = True
+    # Leaving first, then no roof (the lowest floor has none below it), then area; ties to the lowest label.
+    best = np.lexsort((-np.arange(len(area)), area, ~roof, leaves))[-1]
+    return label == int(best)
 
 
 _ROOF_SHARE = 0.1
@@ -991,7 +1016,10 @@ def detect_openings(
     ways = _ways_out(samples, np.asarray(surface.normals), caster, s, params)
     segments = _segments(samples, ways, float(params.max_turn_deg))
     if params.main_floor_only:
-        main = main_floor(surface, agent, loops)
+        looks_out = np.zeros(len(surface.areas), dtype=bool)
+        for g in segments:
+            looks_out[samples.polygon[g]] = True
+        main = main_floor(surface, agent, loops, looks_out)
         segments = [g for g in segments if main[samples.polygon[g]].any()]
     kept = _split_at_piers(_match_edges(segments, ways, s, params), ways, caster, s)
     if not kept:
