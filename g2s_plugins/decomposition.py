@@ -259,6 +259,11 @@ def require_navmesh(context: Any, analyzer: str) -> Any:
 
 def boundary_edges(navmesh: Any) -> tuple[np.ndarray, np.ndarray]:
     """The navmesh's boundary edges (polygon edges with no neighbour): start and end points, (B,3) each, m."""
+    return polygon_boundary_edges(navmesh)[1:]
+
+
+def polygon_boundary_edges(navmesh: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The navmesh's boundary edges: (B,) the polygon of each, and its start and end points, (B,3) each, m."""
     polygons = np.asarray(navmesh.polygons, dtype=np.int64)
     valid = polygons >= 0
     count = valid.sum(axis=1)
@@ -266,7 +271,7 @@ def boundary_edges(navmesh: Any) -> tuple[np.ndarray, np.ndarray]:
     following = np.where(j + 1 < count[:, None], j + 1, 0)
     rows, cols = np.nonzero(valid & (np.asarray(navmesh.neighbours) < 0))
     vertices = np.asarray(navmesh.vertices, dtype=np.float64)
-    return vertices[polygons[rows, cols]], vertices[polygons[rows, following[rows, cols]]]
+    return rows, vertices[polygons[rows, cols]], vertices[polygons[rows, following[rows, cols]]]
 
 
 def small_holes(start: np.ndarray, end: np.ndarray, max_area: float) -> np.ndarray:
@@ -513,19 +518,15 @@ class Outlines:
 def outlines(navmesh: Any, pairs: np.ndarray, endpoints: np.ndarray, footprint: float,
              enclosure: float) -> Outlines:
     """The :class:`Outlines` of ``navmesh``'s polygons (``pairs`` (E, 2) and ``endpoints`` (E, 2, 3): its portals)."""
+    owner_of_wall, start, end = polygon_boundary_edges(navmesh)
     polygons = np.asarray(navmesh.polygons, dtype=np.int64)
     valid = polygons >= 0
-    count = valid.sum(axis=1)
-    j = np.arange(polygons.shape[1])[None, :]
-    following = np.where(j + 1 < count[:, None], j + 1, 0)
-    rows, cols = np.nonzero(valid & (np.asarray(navmesh.neighbours) < 0))
     vertices = np.asarray(navmesh.vertices, dtype=np.float64)
-    length = np.linalg.norm(vertices[polygons[rows, following[rows, cols]]] - vertices[polygons[rows, cols]], axis=1)
     n = len(polygons)
     owner = pairs.reshape(-1)
     order = np.argsort(owner, kind="stable")
     indptr = np.concatenate([[0], np.cumsum(np.bincount(owner, minlength=n))])
-    return Outlines(walls=np.bincount(rows, weights=length, minlength=n),
+    return Outlines(walls=np.bincount(owner_of_wall, weights=np.linalg.norm(end - start, axis=1), minlength=n),
                     portal_length=np.linalg.norm(endpoints[:, 1] - endpoints[:, 0], axis=1),
                     portals_of=(indptr, order // 2), pairs=pairs, endpoints=endpoints,
                     corners=np.where(valid[..., None], vertices[np.where(valid, polygons, 0)][..., [0, 2]], np.nan),
