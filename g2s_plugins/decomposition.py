@@ -190,7 +190,7 @@ a wall 0.57-0.81, niches open over their width 0.81-0.94 (only the 2 m wide ones
 SMALL_ROOM_OPENING = 0.5
 """A small room's exits (the portals out of it) spread over at most this share of its longest plan extent: one door,
 not a piece of walkway open at both ends (measured, seed 0: 36 strips of the airport's concourse where its moving
-walkways run, 16 pieces of the arena's end strips and 22 of the sewer's walkways, 0.88-0.98 of their outline wall,
+walkways run, 16 pieces of the arena's end strips and 22 of the sewer's walkways, 0.87-0.98 of their outline wall,
 each open at both ends; docs/plugins.md, "Small rooms of their own")."""
 
 SMALL_ROOM_FOOTPRINT = 1.0
