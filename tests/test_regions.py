@@ -252,7 +252,8 @@ def rooms_off_a_corridor(width: float, depth: float, door: float):
     for i in range(3):
         x0 = 4.0 + i * (width + 3.0)
         parts += [box(x0, x0 + width, north, back, 0.0), box(x0 - 0.2, x0, north, back, 3.0),
-                  box(x0 + width, x0 + width + 0.2, north, back, 3.0), box(x0 - 0.2, x0 + width + 0.2, back, back + 0.2, 3.0)]
+                  box(x0 + width, x0 + width + 0.2, north, back, 3.0),
+                  box(x0 - 0.2, x0 + width + 0.2, back, back + 0.2, 3.0)]
         middle = x0 + width / 2
         parts.append(box(middle - door / 2, middle + door / 2, north, north + 0.2, 0.0))
         front += [middle - door / 2, middle + door / 2]
