@@ -34,7 +34,13 @@ polygons and their shared edges (portals):
    1 / ``narrowness``. Such a portal is a chokepoint candidate and is never
    merged: groups only grow and portals only narrow, so the two sides stay
    apart. Small or barely wider groups (slivers, corridors, corners) merge
-   into their neighbours.
+   into their neighbours. A smaller group is a room too when it is walled in
+   but for one opening (:class:`Outlines`: at least
+   :data:`SMALL_ROOM_ENCLOSURE` of its outline is wall, the portals out of it
+   lie within :data:`SMALL_ROOM_OPENING` of its longest extent, and it holds
+   the agent's footprint): a prison cell or a box room behind its door, not
+   a niche or a bay open over its width, nor a piece of walkway open at both
+   ends. Such a small room is never a passage (step 3).
 3. Passages (:func:`join_passages`). A group whose mean walkable width,
    its area over its longest extent (:func:`longest_extents`), is below
    ``passage_width`` agent diameters is a passage (an aisle, a catwalk, a
@@ -104,7 +110,8 @@ E portals; extents O(V) for V polygon corners; pinches O(C (Q M + Q log B)) for
 C candidates between corridor-like groups, Q grid points within a cut's reach
 (hundreds) and M polygons near it; side strips O(V + C log C) (extents, then
 sorting the candidates' region pairs); openings O(C log C + sum of k^2) for k candidate ends on each small
-hole; wall pieces O(B) and O(B) more per elongated small hole (few: pillars are compact); the merge tree sorts the
+hole; small rooms O(k) per look at a group under ``min_region_area`` (k: its polygons and their portals, few);
+wall pieces O(B) and O(B) more per elongated small hole (few: pillars are compact); the merge tree sorts the
 portals and runs one union-find step per portal (a Python loop of O(E alpha(P)): a merge order is sequential by
 nature and no library offers it on a general graph); everything else is
 numpy/scipy over arrays, networkx only on the small region graph.
@@ -173,6 +180,22 @@ long as it is wide or more) and whose ends lie near other walls is a piece of wa
 (:func:`wall_pieces`). Measured: square pillars and posts 1.7-2.0, the cathedral's west front between its doors
 3.26 (docs/plugins.md, "One opening, one chokepoint")."""
 
+SMALL_ROOM_ENCLOSURE = 0.85
+"""A group under ``min_region_area`` is a room when at least this share of its outline (walls and the portals out of
+it) is wall, its exits are :data:`SMALL_ROOM_OPENING` together and it holds :data:`SMALL_ROOM_FOOTPRINT` (step 2 of the
+module doc). Measured (docs/plugins.md, "Small rooms of their own"; 0, 22 and 45 degrees): rooms of 4-16 m² behind
+1.5-2 m doors 0.85-0.98 (one 0.76), open-fronted cubicles 0.24-0.87 (all but one under 0.85), a bay between piers and
+a wall 0.57-0.81, niches open over their width 0.81-0.94 (only the 2 m wide ones, 2-3 m deep, cut off at all)."""
+
+SMALL_ROOM_OPENING = 0.5
+"""A small room's exits (the portals out of it) spread over at most this share of its longest plan extent: one door,
+not a piece of walkway open at both ends (measured, seed 0: 36 strips of the airport's concourse where its moving
+walkways run, 16 pieces of the arena's end strips and 22 of the sewer's walkways, 0.87-0.98 of their outline wall,
+each open at both ends; docs/plugins.md, "Small rooms of their own")."""
+
+SMALL_ROOM_FOOTPRINT = 1.0
+"""A small room holds at least this many squares of the agent's diameter (its own footprint), m² per m²."""
+
 EXTENT_DIRECTIONS = 8
 """Directions, evenly spread over 180 degrees, along which a region's longest extent is measured
 (:func:`longest_extents`: at least cos(90 / 8 degrees) = 98 % of its diameter)."""
@@ -191,7 +214,10 @@ class DecompositionParams(PluginParams):
         16.0, ge=0, description="holes in the walkable surface smaller than this (pillars, crates) neither "
         "narrow a room nor make a passage, m²",
     )
-    min_region_area: float = Field(8.0, ge=0, description="smaller areas (slivers, corners) merge into a neighbour, m²")
+    min_region_area: float = Field(
+        8.0, ge=0, description="smaller areas (slivers, corners) merge into a neighbour, m², unless walled in but for "
+        "one opening (a small room behind its door)",
+    )
     min_separation: float = Field(
         3.0, ge=0, description="chokepoints between the same two regions closer than this are one, metres"
     )
@@ -234,6 +260,11 @@ def require_navmesh(context: Any, analyzer: str) -> Any:
 
 def boundary_edges(navmesh: Any) -> tuple[np.ndarray, np.ndarray]:
     """The navmesh's boundary edges (polygon edges with no neighbour): start and end points, (B,3) each, m."""
+    return polygon_boundary_edges(navmesh)[1:]
+
+
+def polygon_boundary_edges(navmesh: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The navmesh's boundary edges: (B,) the polygon of each, and its start and end points, (B,3) each, m."""
     polygons = np.asarray(navmesh.polygons, dtype=np.int64)
     valid = polygons >= 0
     count = valid.sum(axis=1)
@@ -241,7 +272,7 @@ def boundary_edges(navmesh: Any) -> tuple[np.ndarray, np.ndarray]:
     following = np.where(j + 1 < count[:, None], j + 1, 0)
     rows, cols = np.nonzero(valid & (np.asarray(navmesh.neighbours) < 0))
     vertices = np.asarray(navmesh.vertices, dtype=np.float64)
-    return vertices[polygons[rows, cols]], vertices[polygons[rows, following[rows, cols]]]
+    return rows, vertices[polygons[rows, cols]], vertices[polygons[rows, following[rows, cols]]]
 
 
 def small_holes(start: np.ndarray, end: np.ndarray, max_area: float) -> np.ndarray:
@@ -429,15 +460,101 @@ def clearances(navmesh: Any, obstacle_area: float) -> Clearances:
     )
 
 
+@dataclass(frozen=True)
+class Outlines:
+    """What a group of navmesh polygons is bounded by: walls, or portals to the rest of the level.
+
+    The merge tree asks it whether a group under ``min_region_area`` is walled in but for one opening (step 2 of
+    the module doc); a group's exits are found through its polygons' portals, O(k) for k polygons and their portals.
+
+    Attributes:
+        walls: (P,) length of each polygon's boundary edges (walls, small holes' outlines included), m.
+        portal_length: (E,) length of each portal, m.
+        portals_of: CSR of polygon -> portal ids, ``(indptr (P+1,), portal ids (2E,))``.
+        pairs: (E, 2) each portal's two polygons; ``endpoints``: (E, 2, 3) their end points, m.
+        corners: (P, K, 2) each polygon's corners in plan (x, z), NaN past its last, m.
+        footprint: groups smaller than this (m²) are never rooms of their own.
+        enclosure: a group under ``min_region_area`` is a room when at least this share of its outline is wall
+            (and its exits are one opening: :meth:`one_opening`).
+    """
+
+    walls: np.ndarray
+    portal_length: np.ndarray
+    portals_of: tuple[np.ndarray, np.ndarray]
+    pairs: np.ndarray
+    endpoints: np.ndarray
+    corners: np.ndarray
+    footprint: float
+    enclosure: float
+
+    def exits(self, polygons: list[int]) -> np.ndarray:
+        """The portals from the group ``polygons`` to polygons outside it, ids."""
+        inside = np.asarray(polygons, dtype=np.int64)
+        indptr, ids = self.portals_of
+        touching = np.unique(np.concatenate([ids[indptr[p]:indptr[p + 1]] for p in inside]))
+        return touching[~np.isin(self.pairs[touching], inside).all(axis=1)]
+
+    def wall_share(self, polygons: list[int]) -> float:
+        """The share of the outline of the group ``polygons`` that is wall (0-1): its walls' length over that and the
+        length of its portals to polygons outside it."""
+        wall = float(self.walls[polygons].sum())
+        return wall / max(wall + float(self.portal_length[self.exits(polygons)].sum()), 1e-12)
+
+    def one_opening(self, polygons: list[int]) -> bool:
+        """Whether the portals out of the group ``polygons`` lie together at one side of it: their end points spread
+        over at most :data:`SMALL_ROOM_OPENING` of the group's longest plan extent (a door, not a piece of walkway
+        open at both ends)."""
+        ends = self.endpoints[self.exits(polygons)].reshape(-1, 3)[:, [0, 2]]
+        corners = self.corners[polygons].reshape(-1, 2)
+        corners = corners[np.isfinite(corners[:, 0])]
+        spread = plan_spreads(ends, np.zeros(len(ends), dtype=np.int64), 1)[0]
+        return bool(spread <= SMALL_ROOM_OPENING * plan_spreads(corners, np.zeros(len(corners), dtype=np.int64), 1)[0])
+
+    def enclosed(self, polygons: list[int]) -> bool:
+        """Whether the group ``polygons`` is walled in all round but for one opening (``enclosure`` of its outline is
+        wall, :meth:`one_opening`)."""
+        return self.wall_share(polygons) >= self.enclosure and self.one_opening(polygons)
+
+
+def outlines(navmesh: Any, pairs: np.ndarray, endpoints: np.ndarray, footprint: float,
+             enclosure: float) -> Outlines:
+    """The :class:`Outlines` of ``navmesh``'s polygons (``pairs`` (E, 2) and ``endpoints`` (E, 2, 3): its portals)."""
+    owner_of_wall, start, end = polygon_boundary_edges(navmesh)
+    polygons = np.asarray(navmesh.polygons, dtype=np.int64)
+    valid = polygons >= 0
+    vertices = np.asarray(navmesh.vertices, dtype=np.float64)
+    n = len(polygons)
+    owner = pairs.reshape(-1)
+    order = np.argsort(owner, kind="stable")
+    indptr = np.concatenate([[0], np.cumsum(np.bincount(owner, minlength=n))])
+    return Outlines(walls=np.bincount(owner_of_wall, weights=np.linalg.norm(end - start, axis=1), minlength=n),
+                    portal_length=np.linalg.norm(endpoints[:, 1] - endpoints[:, 0], axis=1),
+                    portals_of=(indptr, order // 2), pairs=pairs, endpoints=endpoints,
+                    corners=np.where(valid[..., None], vertices[np.where(valid, polygons, 0)][..., [0, 2]], np.nan),
+                    footprint=footprint, enclosure=enclosure)
+
+
 def _merge_tree(pairs: np.ndarray, portal_clearance: np.ndarray, polygon_clearance: np.ndarray,
-                areas: np.ndarray, narrowness: float, min_area: float) -> tuple[np.ndarray, np.ndarray]:
+                areas: np.ndarray, narrowness: float, min_area: float,
+                outline: Outlines) -> tuple[np.ndarray, np.ndarray]:
     """(merged, blocked): boolean masks over the portals (step 2 of the module doc)."""
     n = len(polygon_clearance)
     parent = list(range(n))
     peak = polygon_clearance.tolist()
     area = areas.tolist()
+    following = [-1] * n  # each group's polygons as a chain from its root, so that a small group's outline is measured
+    last = list(range(n))
     merged = np.zeros(len(pairs), dtype=bool)
     blocked = np.zeros(len(pairs), dtype=bool)
+
+    def members(root: int) -> list[int]:  # a small group's polygons: few
+        found = [root]
+        while following[found[-1]] >= 0:
+            found.append(following[found[-1]])
+        return found
+
+    def room(root: int) -> bool:
+        return area[root] >= min_area or (area[root] >= outline.footprint and outline.enclosed(members(root)))
 
     def find(x: int) -> int:
         while parent[x] != x:
@@ -451,12 +568,14 @@ def _merge_tree(pairs: np.ndarray, portal_clearance: np.ndarray, polygon_clearan
         ra, rb = find(a), find(b)
         if ra == rb:
             continue
-        if c <= narrowness * min(peak[ra], peak[rb]) and min(area[ra], area[rb]) >= min_area:
+        if c <= narrowness * min(peak[ra], peak[rb]) and room(ra) and room(rb):
             blocked[e] = True
             continue
         if area[ra] < area[rb]:
             ra, rb = rb, ra
         parent[rb] = ra
+        following[last[ra]] = rb
+        last[ra] = last[rb]
         peak[ra] = max(peak[ra], peak[rb])
         area[ra] += area[rb]
         merged[e] = True
@@ -665,12 +784,15 @@ def decompose(navmesh: Any, agent: Any, params: DecompositionParams) -> Decompos
     portals = navmesh.portals()
     pairs = np.asarray(portals.pairs, dtype=np.int64).reshape(-1, 2)
     areas = np.asarray(navmesh.areas, dtype=np.float64)
+    outline = outlines(navmesh, pairs, np.asarray(portals.endpoints, dtype=np.float64), SMALL_ROOM_FOOTPRINT *
+                       (2.0 * float(agent.radius)) ** 2, SMALL_ROOM_ENCLOSURE)
     merged, blocked = _merge_tree(pairs, clearance.portals_open, clearance.polygons, areas,
-                                  params.narrowness, params.min_region_area)
+                                  params.narrowness, params.min_region_area, outline)
     n = navmesh.polygon_count
     joined = sparse.coo_array((np.ones(int(merged.sum())), (pairs[merged, 0], pairs[merged, 1])), shape=(n, n))
     count, labels = csgraph.connected_components(joined, directed=False)
-    passage = mean_widths(navmesh, labels, areas)[0] < params.passage_width * 2.0 * float(agent.radius)
+    small = np.bincount(labels, weights=areas) < params.min_region_area  # a small room the outline kept apart
+    passage = (mean_widths(navmesh, labels, areas)[0] < params.passage_width * 2.0 * float(agent.radius)) & ~small
     labels = join_passages(labels, labels[pairs[blocked]], passage)
     count = int(labels.max()) + 1 if len(labels) else 0
     if params.pinch <= params.narrowness:  # above it no cut can keep the fraction and be a candidate at once

@@ -235,6 +235,62 @@ def test_elongated_holes_between_walls_are_wall_pieces_and_pillars_are_not():
     assert pieces.tolist() == np.repeat([False, False, True, False, False, False], 4).tolist()
 
 
+def rooms_off_a_corridor(width: float, depth: float, door: float):
+    """A 24 x 2.5 m corridor (x 0..24, z 0..2.5) with three rooms ``width`` x ``depth`` m off its north wall (from x 4,
+    3 m apart), each behind a door ``door`` m wide in the middle of its 0.2 m wall; 3 m tall walls, open at the top.
+    ``door`` equal to ``width``: niches open over their whole width."""
+    def box(x0, x1, z0, z1, top):
+        solid = trimesh.creation.box(bounds=((x0, -0.2, z0), (x1, top, z1)))
+        if top > 0:
+            solid.update_faces(solid.face_normals[:, 1] < 0.5)
+        return solid
+
+    north, back = 2.5, 2.7 + depth
+    parts = [box(0.0, 24.0, 0.0, north, 0.0), box(-0.2, 24.2, -0.2, 0.0, 3.0), box(-0.2, 0.0, 0.0, north, 3.0),
+             box(24.0, 24.2, 0.0, north, 3.0)]
+    front = [-0.2]
+    for i in range(3):
+        x0 = 4.0 + i * (width + 3.0)
+        parts += [box(x0, x0 + width, north, back, 0.0), box(x0 - 0.2, x0, north, back, 3.0),
+                  box(x0 + width, x0 + width + 0.2, north, back, 3.0),
+                  box(x0 - 0.2, x0 + width + 0.2, back, back + 0.2, 3.0)]
+        middle = x0 + width / 2
+        parts.append(box(middle - door / 2, middle + door / 2, north, north + 0.2, 0.0))
+        front += [middle - door / 2, middle + door / 2]
+    front.append(24.2)
+    parts += [box(a, b, north, north + 0.2, 3.0) for a, b in zip(front[::2], front[1::2]) if b > a]
+    return SimpleNamespace(mesh=trimesh.util.concatenate(parts), name="rooms_off_a_corridor")
+
+
+def test_small_rooms_behind_doors_are_regions_and_niches_are_not():
+    # three 3 x 3 m rooms (3.3 m² walkable, under min_region_area) behind 1.5 m doors each merged into the corridor;
+    # their outline is wall all round but for the door (0.97 of it; 0.91 turned by 22 degrees), so
+    # each is a room: a region with one chokepoint, its door
+    result = run(rooms_off_a_corridor(3.0, 3.0, 1.5))
+    rooms = sorted((r for r in regions(result) if r["centroid"][2] > 2.7), key=lambda r: r["centroid"][0])
+    middles = [5.5, 11.5, 17.5]
+    assert len(regions(result)) == 4 and [r["centroid"][0] for r in rooms] == pytest.approx(middles, abs=0.5)
+    assert all(r["area"] < 8.0 for r in rooms)
+    assert sorted(c["position"][0] for c in chokepoints(result)) == pytest.approx(middles, abs=0.5)
+    # niches 3 m wide and 2 m deep, open over their whole width, are part of the corridor
+    assert len(regions(run(rooms_off_a_corridor(3.0, 2.0, 3.0)))) == 1
+
+
+def test_wall_share_of_a_group_counts_its_portals_out_only():
+    # a 2 x 2 m room (polygon 0, its four edges without neighbour: 8 m of wall) with a 1 m portal to a door (a 1 x
+    # 0.2 m polygon 1) that opens on a 6 x 2 m corridor (polygon 2); the portal between the room and the door is
+    # inside the group of polygons 0 and 1, and the door's two 0.2 m sides are wall
+    navmesh = _flat_navmesh([(0.0, 2.0, 2.2, 4.2), (0.5, 1.5, 2.0, 2.2), (-2.0, 4.0, 0.0, 2.0)])
+    navmesh.neighbours = np.array([[-1, -1, -1, -1, -1, -1], [2, -1, 0, -1, -1, -1], [-1, -1, -1, -1, -1, -1]])
+    pairs = np.array([[0, 1], [1, 2]])
+    endpoints = np.array([[[0.5, 0, 2.2], [1.5, 0, 2.2]], [[0.5, 0, 2.0], [1.5, 0, 2.0]]])
+    outline = decomposition.outlines(navmesh, pairs, endpoints, footprint=1.0, enclosure=0.85)
+    assert outline.wall_share([0]) == pytest.approx(8.0 / 9.0)
+    assert outline.wall_share([0, 1]) == pytest.approx((8.0 + 0.4) / (8.0 + 0.4 + 1.0))
+    assert outline.enclosed([0])
+    assert not dataclasses.replace(outline, enclosure=0.9).enclosed([0])
+
+
 def test_two_chokepoints_between_the_same_regions_are_not_articulations():
     # closing one of two passages between the same two regions leaves the other (rustworkx's bridges
     # sees the two edges of the region multigraph as one: both were flagged)
