@@ -269,7 +269,9 @@ def expand_inputs(inputs: Sequence[str], exclude: Path | None = None) -> list[tu
 
 
 def _mesh_files(folder: Path) -> Iterator[Path]:
-    return iter(sorted(p for p in folder.rglob("*") if p.is_file() and p.suffix.lower() in SUPPORTED_SUFFIXES))
+    """Every entry under ``folder`` named like a mesh file that is not a folder: a link to nothing, a FIFO or a device
+    named ``level.obj`` is a level too, whose pairs fail with the reader's message instead of leaving it out unsaid."""
+    return iter(sorted(p for p in folder.rglob("*") if p.suffix.lower() in SUPPORTED_SUFFIXES and not p.is_dir()))
 
 
 def make_pairs(
