@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import json
 import os
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -36,6 +37,17 @@ print(len(written))
 """
 
 
+def readme_glibc_problems(wheel_name: str) -> list[str]:
+    """Where README.md's set-up misstates the glibc a wheel built here needs (its manylinux tag)."""
+    tag = re.search(r"manylinux_(\d+)_(\d+)", wheel_name)
+    readme = (PROJECT / "README.md").read_text(encoding="utf-8")
+    glibc = f"{tag.group(1)}.{tag.group(2)}"
+    problems = [] if f"glibc {glibc}+" in readme else [f"README.md does not say the wheel needs glibc {glibc}+"]
+    if Path("/etc/debian_version").read_text().startswith("12") and f"`{tag.group(0)}` when built on Debian 12" not in readme:
+        problems.append(f"README.md does not name {tag.group(0)} as the tag built on Debian 12")
+    return problems
+
+
 def install_wheel(root: Path) -> Path:
     """`make wheel`, then a new venv holding only that wheel and its PyPI dependencies; its bin folder."""
     dist = root / "dist"
@@ -43,6 +55,7 @@ def install_wheel(root: Path) -> Path:
     assert build.returncode == 0, build.stdout + build.stderr
     wheels = sorted(dist.glob("graph2structure-*.whl"))
     assert len(wheels) == 1 and "manylinux" in wheels[0].name, wheels
+    assert readme_glibc_problems(wheels[0].name) == []
     venv = root / "venv"
     subprocess.run([sys.executable, "-m", "venv", str(venv)], check=True)
     # --no-compile: byte-compiling plotly's thousands of modules would double the install time
