@@ -202,3 +202,41 @@ def test_documented_python_reading_results_and_samples_runs(doc: str, tmp_path, 
     namespace: dict = {}
     for index, block in enumerate(blocks):
         exec(compile(block, f"{doc} block {index + 1}", "exec"), namespace)
+
+
+SAMPLE_SPEC = re.compile(r"sample:([a-z_]+)(\?[^\s`\"')\]]*)?")
+"""A level spec the docs show, `sample:NAME` or `sample:NAME?param=value&...`, up to where the code span or quote ends."""
+
+
+def sample_spec_problems(text: str) -> list[str]:
+    """What the installed level generators do not take among ``text``'s `sample:` specs: an unknown NAME, an unknown
+    parameter or a value of the wrong type. Shell expansions (`seed={0..99}`), ranges (`seed=0..199`) and the example
+    generators the docs define themselves (`NAME = "plaza"`) are left out."""
+    from urllib.parse import parse_qsl
+
+    from g2s_core.registry import installed
+
+    registry, defined = installed(), set(re.findall(r'^NAME = "(\w+)"', text, flags=re.MULTILINE))
+    problems = []
+    for match in SAMPLE_SPEC.finditer(text):
+        name, query = match.group(1), (match.group(2) or "?")[1:]
+        if name in defined or "{" in query or ".." in query:
+            continue
+        try:
+            registry.validate_params(registry.get("levels", name), dict(parse_qsl(query)), key=match.group(0), text=True)
+        except Exception as exc:
+            problems.append(f"{match.group(0)}: {exc}")
+    return problems
+
+
+def test_the_sample_check_finds_what_g2s_refuses():
+    assert sample_spec_problems('`g2s run map_analysis "sample:dungeon?rooms=6&seed=3" -o out`') == []
+    assert len(sample_spec_problems("`sample:dungoen` and `sample:dungeon?romos=6` and `sample:maze?cells=x`")) == 3
+    assert sample_spec_problems('seeds `sample:dungeon?seed=0..199`, `"sample:maze?seed="{0..9}`') == []
+
+
+@pytest.mark.parametrize("doc", [doc for doc in DOCS if "sample:" in doc.read_text(encoding="utf-8")],
+                         ids=lambda path: path.name)
+def test_documented_sample_levels_are_ones_g2s_generates(doc: Path):
+    problems = sample_spec_problems(doc.read_text(encoding="utf-8"))
+    assert not problems, f"{doc.name}: {problems}"
