@@ -8,6 +8,7 @@ import os
 import re
 import subprocess
 import sys
+import zipfile
 from pathlib import Path
 
 import pytest
@@ -37,6 +38,20 @@ print(len(written))
 """
 
 
+def missing_from_wheel(names: set[str]) -> list[str]:
+    """What an installed g2s reads by path that a wheel holding ``names`` lacks: each preset of configs/ (as
+    g2s_core/presets/), every file of the two packages that is not Python (the JSON schemas), both extensions."""
+    needed = {f"g2s_core/presets/{preset.name}" for preset in (PROJECT / "configs").glob("*.yaml")}
+    needed |= {path.relative_to(PROJECT).as_posix() for package in ("g2s_core", "g2s_plugins")
+               for path in (PROJECT / package).rglob("*")
+               if path.is_file() and path.suffix not in (".py", ".pyc", ".so") and "__pycache__" not in path.parts}
+    missing = sorted(needed - names)
+    for extension in ("g2s_plugins/_trees", "g2s_plugins/recast/_recast"):
+        if not any(name.startswith(f"{extension}.") and name.endswith(".so") for name in names):
+            missing.append(f"{extension}.*.so")
+    return missing
+
+
 def readme_glibc_problems(wheel_name: str) -> list[str]:
     """Where README.md's set-up misstates the glibc a wheel built here needs (its manylinux tag)."""
     tag = re.search(r"manylinux_(\d+)_(\d+)", wheel_name)
@@ -56,6 +71,8 @@ def install_wheel(root: Path) -> Path:
     wheels = sorted(dist.glob("graph2structure-*.whl"))
     assert len(wheels) == 1 and "manylinux" in wheels[0].name, wheels
     assert readme_glibc_problems(wheels[0].name) == []
+    with zipfile.ZipFile(wheels[0]) as wheel:
+        assert missing_from_wheel(set(wheel.namelist())) == []
     venv = root / "venv"
     subprocess.run([sys.executable, "-m", "venv", str(venv)], check=True)
     # --no-compile: byte-compiling plotly's thousands of modules would double the install time
