@@ -1,7 +1,8 @@
 """The commands and configs README.md and docs/*.md show, and the settings configs/*.yaml show commented out, are
 ones g2s takes: every `g2s ...` line of a code block and every inline `g2s ...` names an existing command, options
 that command has, presets that exist, installed formats, stages, executors and evaluators, and `--set` keys and
-values its config accepts; every YAML block is a valid config. (Links and the files the docs name:
+values its config accepts; every YAML block is a valid config; every `sample:NAME?param=value` is a level an installed
+generator makes, and every `--set KEY=VALUE` in prose a setting a preset takes. (Links and the files the docs name:
 tests/test_doc_links.py; the Python examples: tests/test_python_docs.py, tests/test_architecture.py,
 tests/test_batch.py, and docs/outputs.md's and docs/samples.md's here.)"""
 
@@ -205,7 +206,8 @@ def test_documented_python_reading_results_and_samples_runs(doc: str, tmp_path, 
 
 
 SAMPLE_SPEC = re.compile(r"sample:([a-z_]+)(\?[^\s`\"')\]]*)?")
-"""A level spec the docs show, `sample:NAME` or `sample:NAME?param=value&...`, up to where the code span or quote ends."""
+"""A level spec the docs show, `sample:NAME` or `sample:NAME?param=value&...`, up to where its code span or quote
+ends."""
 
 
 def sample_spec_problems(text: str) -> list[str]:
@@ -223,7 +225,8 @@ def sample_spec_problems(text: str) -> list[str]:
         if name in defined or "{" in query or ".." in query:
             continue
         try:
-            registry.validate_params(registry.get("levels", name), dict(parse_qsl(query)), key=match.group(0), text=True)
+            info = registry.get("levels", name)
+            registry.validate_params(info, dict(parse_qsl(query)), key=match.group(0), text=True)
         except Exception as exc:
             problems.append(f"{match.group(0)}: {exc}")
     return problems
@@ -239,4 +242,46 @@ def test_the_sample_check_finds_what_g2s_refuses():
                          ids=lambda path: path.name)
 def test_documented_sample_levels_are_ones_g2s_generates(doc: Path):
     problems = sample_spec_problems(doc.read_text(encoding="utf-8"))
+    assert not problems, f"{doc.name}: {problems}"
+
+
+def inline_set_problems(text: str) -> list[str]:
+    """What no preset that runs every stage takes among ``text``'s `--set KEY=VALUE` code spans in prose (those in a
+    `g2s ...` command are checked against its config above). A value naming a plugin the text registers itself
+    (`"terminals.above" = ...`, the how-to's third-party package) is left out."""
+    from g2s_core.config import RunConfig, presets, resolve_config
+
+    last = RunConfig.model_fields["stop_after"].default
+    full = [name for name in presets() if resolve_config(name)[0].stop_after == last]
+    own = set(re.findall(r'^\s*"\w+\.(\w+)" = ', text, flags=re.MULTILINE))
+    prose = re.sub(r"^```.*?^```", "", text, flags=re.MULTILINE | re.DOTALL)
+    problems = []
+    for span in re.findall(r"`([^`]*--set [^`]*)`", prose):
+        if span.startswith("g2s "):
+            continue
+        for quoted, bare in re.findall(r"--set\s+(?:'([^']*)'|(\S+))", span):
+            value = quoted or bare
+            if "=" not in value or PLACEHOLDER.search(value.partition("=")[0]) or own & set(re.findall(r"\w+", value)):
+                continue
+            refusals = [problem for preset in full for problem in value_problems("--set", value, preset)]
+            if len(refusals) == len(full):
+                problems.append(refusals[0])
+    return problems
+
+
+def test_the_inline_set_check_finds_what_g2s_refuses():
+    assert inline_set_problems("`--set terminals.params.best=4` keeps four, `--set KEY=VALUE`") == []
+    assert len(inline_set_problems("`--set terminals.params.bestt=4`, `--set 'agent={radius: -1}'`")) == 2
+    # graph_only, which stops before the terminals, is no excuse
+    assert len(inline_set_problems("`--set terminals.plugin=above`")) == 1
+    assert inline_set_problems('```toml\n"terminals.above" = "my.above"\n```\n`--set terminals.plugin=above`') == []
+
+
+SET_DOCS = [doc for doc in DOCS if doc.name != "errors.md" and "--set " in doc.read_text(encoding="utf-8")]
+"""The docs with `--set` examples; docs/errors.md shows refused values on purpose."""
+
+
+@pytest.mark.parametrize("doc", SET_DOCS, ids=lambda path: path.name)
+def test_documented_set_examples_are_settings_g2s_takes(doc: Path):
+    problems = inline_set_problems(doc.read_text(encoding="utf-8"))
     assert not problems, f"{doc.name}: {problems}"

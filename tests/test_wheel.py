@@ -58,7 +58,8 @@ def readme_glibc_problems(wheel_name: str) -> list[str]:
     readme = (PROJECT / "README.md").read_text(encoding="utf-8")
     glibc = f"{tag.group(1)}.{tag.group(2)}"
     problems = [] if f"glibc {glibc}+" in readme else [f"README.md does not say the wheel needs glibc {glibc}+"]
-    if Path("/etc/debian_version").read_text().startswith("12") and f"`{tag.group(0)}` when built on Debian 12" not in readme:
+    debian_12 = Path("/etc/debian_version").read_text().startswith("12")
+    if debian_12 and f"`{tag.group(0)}` when built on Debian 12" not in readme:
         problems.append(f"README.md does not name {tag.group(0)} as the tag built on Debian 12")
     return problems
 
