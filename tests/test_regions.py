@@ -176,15 +176,33 @@ def test_a_post_in_a_gap_leaves_one_chokepoint():
     assert len(between) == 1 and -7.0 <= between[0]["position"][0] <= 7.0
 
 
-def test_portals_beside_a_post_narrower_than_both_are_one_opening():
-    # three portals of one region pair end on small hole 7: the first two 2 m apart across it, each 5 m wide
-    # (a post in a gap), the second and third 3 m apart, the third 1 m wide (the wall between two doors)
-    pair = np.zeros(3, dtype=np.int64)
-    hole = np.array([[-1, 7], [7, 7], [7, -1]])
-    ends = np.array([[[0.0, 0, 0], [5, 0, 0]], [[7, 0, 0], [12, 0, 0]], [[15, 0, 0], [16, 0, 0]]])
-    links = decomposition._post_links(pair, hole, ends, np.array([5.0, 5.0, 1.0]))
-    assert links.tolist() == [[0, 1]]
-    assert len(decomposition._post_links(pair, hole, ends, np.array([1.5, 5.0, 1.0]))) == 0
+def test_a_post_less_than_half_as_wide_as_the_openings_beside_it_is_one_opening():
+    # portals of one region pair ending on small hole 7 (wall to wall = walkable + 1.25 m: the 0.5 m agent's
+    # diameter and a 0.25 m cell): a 0.8 m post between two 3.25 m parts of a gate (ends 2.05 m apart across it,
+    # 2 m walkable each: the post keeps 0.25 of a part; the rule before, ends closer than either is wide, split
+    # it), then a 2 m wall between two 3 m doors (ends 3.25 m apart, 1.75 m walkable: 0.67 of a door)
+    pair = np.zeros(4, dtype=np.int64)
+    hole = np.array([[-1, 7], [7, -1], [-1, 7], [7, -1]])
+    ends = np.array([[[0.0, 0, 0], [2, 0, 0]], [[4.05, 0, 0], [6.05, 0, 0]],
+                     [[10, 0, 0], [11.75, 0, 0]], [[15, 0, 0], [16.75, 0, 0]]])
+    pair[2:] = 1
+    width = np.array([2.0, 2.0, 1.75, 1.75])
+    assert decomposition._post_links(pair, hole, ends, width, 1.25).tolist() == [[0, 1]]
+    # 3 m doors 0.5 m apart (ends 1.75 m apart): a pier a sixth as wide as the doors, one opening
+    ends[3] = ends[2] + [3.5, 0, 0]
+    assert decomposition._post_links(pair, hole, ends, width, 1.25).tolist() == [[0, 1], [2, 3]]
+
+
+def test_three_posts_in_a_gap_leave_one_chokepoint():
+    # three 0.8 m posts in a 14 m gap, 2.9 m apart: each part is 1.9 m walkable, 1.5-2 m as measured, and the
+    # posts' outlines 2 m across; they split the gap into four chokepoints before (parts narrower than the posts'
+    # outlines); each post is under half a part wall to wall: one opening
+    posts = [trimesh.creation.box(extents=(0.8, 1.0, 0.8)).apply_translation((x, 0.5, 0.0)) for x in (-3.5, 0.0, 3.5)]
+    level = SimpleNamespace(mesh=trimesh.util.concatenate([open_fields([(-7.0, 7.0)]).mesh, *posts]), name="posts")
+    result = run(level)
+    fields = sorted(r["id"] for r in sorted(regions(result), key=lambda r: -r["area"])[:2])
+    between = [c for c in chokepoints(result) if c["regions"] == fields]
+    assert len(between) == 1 and -7.0 <= between[0]["position"][0] <= 7.0
 
 
 def west_front():
@@ -299,7 +317,7 @@ def test_two_chokepoints_between_the_same_regions_are_not_articulations():
     ends = np.array([[[0.0, 0, 0], [1, 0, 0]], [[10, 0, 0], [11, 0, 0]], [[20, 0, 0], [21, 0, 0]]])
     no_holes = (np.zeros((0, 3)), np.zeros(0, dtype=np.int64))
     found = decomposition._chokepoints(np.arange(3), pairs, labels, ends, ends[:, 0], np.ones(3),
-                                       np.zeros(3, dtype=np.int64), separation=3.0, holes=no_holes)
+                                       np.zeros(3, dtype=np.int64), separation=3.0, holes=no_holes, wall_to_wall=1.25)
     assert [(c["regions"], c["articulation"]) for c in found] == [([0, 1], False), ([0, 1], False), ([1, 2], True)]
 
 
