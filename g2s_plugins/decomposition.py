@@ -176,9 +176,11 @@ through its corridor) 0.56."""
 
 WALL_PIECE_ELONGATION = 3.0
 """A small hole whose longest plan extent squared is at least this many times its area (a rectangle 2.6 times as
-long as it is wide or more) and whose ends lie near other walls is a piece of wall between openings
-(:func:`wall_pieces`). Measured: square pillars and posts 1.7-2.0, the cathedral's west front between its doors
-3.26 (docs/plugins.md, "One opening, one chokepoint")."""
+long as it is wide or more), or whose solid (the hole less the agent's diameter and a navmesh cell across each way)
+is at least this many times as long as it is wide, and whose ends lie near other walls, is a piece of wall between
+openings (:func:`wall_pieces`). Measured: square pillars and posts 1.7-2.0 and 1.0-1.33 (solid), the cathedral's west
+front between its doors 3.26 and 5.75, 1.5 m piers of a 0.2 m wall 1.9-2.5 and 6.0 (docs/plugins.md, "One opening,
+one chokepoint" and "Posts, niches and aisles")."""
 
 POST_SHARE = 0.5
 """A small hole between two chokepoint candidates of one region pair is a post (or a pier) in one opening when it is
@@ -306,11 +308,19 @@ def small_holes(start: np.ndarray, end: np.ndarray, max_area: float) -> np.ndarr
     return np.where(small_hole[loop], loop, -1).astype(np.int64)
 
 
-def wall_pieces(start: np.ndarray, end: np.ndarray, hole: np.ndarray) -> np.ndarray:
+def wall_pieces(start: np.ndarray, end: np.ndarray, hole: np.ndarray, grown: float) -> np.ndarray:
     """(B,) bool: the edges of small holes (``hole`` (B,), :func:`small_holes`) that are pieces of wall between
-    openings, not pillars: elongated (longest plan extent squared at least :data:`WALL_PIECE_ELONGATION` times
-    the area), with both its ends (its extreme corners along that extent) nearer to the other walls (other holes'
-    too) than it is long, and the middles of both its long sides farther from them than either end is.
+    openings, not pillars: elongated (its longest plan extent squared at least :data:`WALL_PIECE_ELONGATION`
+    times its area, which takes a wall turning a corner too; or the solid inside, the hole less ``grown`` m across
+    each way, at least that many times as long as it is wide, its plan extent across the direction of its
+    narrowest against that narrowest, and at least ``grown`` long: a shorter solid, a gravestone or a mullion, is
+    a post whatever its shape), with both its ends (its extreme corners along its longest extent) nearer to the
+    other walls (other holes' too) than it is long, and the middles of both its long sides farther from them than
+    either end is.
+
+    A hole's outline is the solid's grown by the agent's radius and about a navmesh cell of rasterisation each
+    side (``grown``: the agent's diameter and a cell), which makes the pier of a 0.2 m wall look as compact as a
+    post: a 2.5 x 0.2 m pier is a hole of about 3.75 x 1.5 m (docs/plugins.md, "Posts, niches and aisles").
 
     The wall between two doors is a small hole whose ends face the doors' far jambs, with a room on either
     side; a pillar or a post is compact, a pair of gravestones grown into one hole stands in open ground, and a
@@ -329,7 +339,10 @@ def wall_pieces(start: np.ndarray, end: np.ndarray, hole: np.ndarray) -> np.ndar
     spreads = directional_spreads(a[:, [0, 2]], index, len(ids))
     direction = np.argmax(spreads, axis=1)
     extent = spreads[np.arange(len(ids)), direction]
-    elongated = extent**2 >= WALL_PIECE_ELONGATION * area
+    narrowest = np.argmin(spreads, axis=1)  # a rectangle's diagonals spread farther than its length
+    length = spreads[np.arange(len(ids)), (narrowest + EXTENT_DIRECTIONS // 2) % EXTENT_DIRECTIONS] - grown
+    width = spreads[np.arange(len(ids)), narrowest] - grown  # the solid's, shorter than ``grown``: a post
+    elongated = (extent**2 >= WALL_PIECE_ELONGATION * area) | (length >= np.maximum(WALL_PIECE_ELONGATION * width, grown))
     if not elongated.any():
         return piece
     plan_low, plan_high = np.minimum(start, end)[:, [0, 2]], np.maximum(start, end)[:, [0, 2]]
@@ -406,7 +419,9 @@ class Clearances:
         widest: (E,3) each portal's point of largest clearance (every wall counted).
         open_walls: the walls the clearances that split the level are measured to (small holes left out):
             start and end points, (B',3) each, m.
-        holes: the small holes' boundary: their edges' start points, (H,3) m, and the hole of each, (H,) int64.
+        holes: the small holes' boundary (wall pieces too: a piece less than half as wide as the doors beside it
+            is a pier in one opening, :func:`_post_links`): their edges' start points, (H,3) m, and the hole of
+            each, (H,) int64.
     """
 
     polygons: np.ndarray
@@ -439,18 +454,17 @@ def portal_samples(ends: np.ndarray, spacing: float) -> tuple[np.ndarray, np.nda
     return ends[portal, 0] * (1.0 - t) + ends[portal, 1] * t, portal
 
 
-def clearances(navmesh: Any, obstacle_area: float) -> Clearances:
+def clearances(navmesh: Any, obstacle_area: float, wall_to_wall: float) -> Clearances:
     """The clearances of ``navmesh`` (a portal's is the largest of its :func:`portal_samples`, one navmesh cell apart).
 
-    Small holes (:func:`small_holes`: pillars, crates; not :func:`wall_pieces`) are left out of the
-    clearances that split the level, so that they neither make a room as
+    Small holes (:func:`small_holes`: pillars, crates; not :func:`wall_pieces`, whose outlines are grown by
+    ``wall_to_wall``, m) are left out of the clearances that split the level, so that they neither make a room as
     narrow as its doors nor make passages of their own; the width reported
     for a chokepoint counts them.
     """
     start, end = boundary_edges(navmesh)
     hole = small_holes(start, end, obstacle_area)
-    hole[wall_pieces(start, end, hole)] = -1
-    obstacle = hole >= 0
+    obstacle = (hole >= 0) & ~wall_pieces(start, end, hole, wall_to_wall)
     ends = navmesh.portals().endpoints
     points, portal = portal_samples(ends, float(navmesh.settings["cell_size"]))
     walls = _distance_to(points, start[~obstacle], end[~obstacle])
@@ -463,7 +477,7 @@ def clearances(navmesh: Any, obstacle_area: float) -> Clearances:
         portals=every[widest],
         widest=points[widest],
         open_walls=(start[~obstacle], end[~obstacle]),
-        holes=(start[obstacle], hole[obstacle]),
+        holes=(start[hole >= 0], hole[hole >= 0]),
     )
 
 
@@ -787,7 +801,8 @@ def decompose(navmesh: Any, agent: Any, params: DecompositionParams) -> Decompos
     (walkable width, m), ``regions`` ([a, b], a < b), ``polygons`` (the
     portal's two polygons), ``floors``, ``articulation``.
     """
-    clearance = clearances(navmesh, params.obstacle_area)
+    wall_to_wall = 2.0 * float(agent.radius) + float(navmesh.settings["cell_size"])
+    clearance = clearances(navmesh, params.obstacle_area, wall_to_wall)
     portals = navmesh.portals()
     pairs = np.asarray(portals.pairs, dtype=np.int64).reshape(-1, 2)
     areas = np.asarray(navmesh.areas, dtype=np.float64)
@@ -827,7 +842,6 @@ def decompose(navmesh: Any, agent: Any, params: DecompositionParams) -> Decompos
          "floor": int(floor[r]), "height_range": [float(low[r]), float(high[r])], "neighbours": []}
         for r in range(count)
     ]
-    wall_to_wall = 2.0 * float(agent.radius) + float(navmesh.settings["cell_size"])
     chokepoints = _chokepoints(np.flatnonzero(blocked), pairs, labels, portals.endpoints, clearance.widest,
                                2.0 * clearance.portals, floor, params.min_separation, clearance.holes, wall_to_wall)
     return Decomposition(labels, regions, chokepoints)

@@ -234,6 +234,36 @@ def test_three_doors_in_a_front_part_the_field_from_the_hall():
     assert sorted(round(c["position"][0]) for c in between) == [3, 11, 19]
 
 
+def arcade(opening: float, pier: float):
+    """Two 20 x 12 m rooms (x 0..20; z 0..12 and 12.2..24.2) parted by a 0.2 m wall with three openings ``opening`` m
+    wide side by side, centred at x = 10 and parted by two piers ``pier`` m wide; 3 m tall walls, open at the top."""
+    def box(x0, x1, z0, z1, top):
+        solid = trimesh.creation.box(bounds=((x0, -0.2, z0), (x1, top, z1)))
+        if top > 0:
+            solid.update_faces(solid.face_normals[:, 1] < 0.5)
+        return solid
+
+    span = 3 * opening + 2 * pier
+    cuts = [-0.2] + [10 - span / 2 + k * (opening + pier) + d for k in range(3) for d in (0.0, opening)] + [20.2]
+    parts = [box(0.0, 20.0, 0.0, 24.2, 0.0), box(-0.2, 20.2, -0.2, 0.0, 3.0), box(-0.2, 20.2, 24.2, 24.4, 3.0),
+             box(-0.2, 0.0, 0.0, 24.2, 3.0), box(20.0, 20.2, 0.0, 24.2, 3.0)]
+    parts += [box(a, b, 12.0, 12.2, 3.0) for a, b in zip(cuts[::2], cuts[1::2])]
+    return SimpleNamespace(mesh=trimesh.util.concatenate(parts), name="arcade")
+
+
+def test_piers_of_a_thin_wall_are_wall_pieces_between_doors():
+    # three 2.5 m openings parted by 1.5 m piers of a 0.2 m wall: the piers' holes (about 2.75 x 1.5 m, grown by the
+    # agent's radius and a cell) were as compact as posts, so the rooms saw one 10.5 m opening and were one region;
+    # the solid inside each (1.5 x 0.2 m) is long for its width, a wall piece; each pier is over half an opening
+    # wide: three doors, three chokepoints
+    result = run(arcade(2.5, 1.5))
+    found = chokepoints(result)
+    assert len(regions(result)) == 2 and len(found) == 3
+    assert sorted(round(c["position"][0]) for c in found) == [6, 10, 14]
+    # 0.4 m piers (a sixth of an opening) are posts of one opening
+    assert len(chokepoints(run(arcade(2.5, 0.4)))) == 1
+
+
 def test_elongated_holes_between_walls_are_wall_pieces_and_pillars_are_not():
     # a 7 x 2 m hole 1 m from the outer wall at one end and from a 25 m² block at the other, open ground on both
     # long sides (a wall between two doors), is a piece of wall; a 2 m pillar, a 4 x 1 m stone in the open and a
@@ -249,7 +279,7 @@ def test_elongated_holes_between_walls_are_wall_pieces_and_pillars_are_not():
     start, end = (np.concatenate(parts) for parts in zip(outer, pillar, piece, block, stone, desks))
     hole = decomposition.small_holes(start, end, max_area=16.0)
     assert ((hole >= 0) == np.repeat([False, True, True, False, True, True], 4)).all()
-    pieces = decomposition.wall_pieces(start, end, hole)
+    pieces = decomposition.wall_pieces(start, end, hole, grown=1.25)
     assert pieces.tolist() == np.repeat([False, False, True, False, False, False], 4).tolist()
 
 
