@@ -342,7 +342,8 @@ def wall_pieces(start: np.ndarray, end: np.ndarray, hole: np.ndarray, grown: flo
     narrowest = np.argmin(spreads, axis=1)  # a rectangle's diagonals spread farther than its length
     length = spreads[np.arange(len(ids)), (narrowest + EXTENT_DIRECTIONS // 2) % EXTENT_DIRECTIONS] - grown
     width = spreads[np.arange(len(ids)), narrowest] - grown  # the solid's, shorter than ``grown``: a post
-    elongated = (extent**2 >= WALL_PIECE_ELONGATION * area) | (length >= np.maximum(WALL_PIECE_ELONGATION * width, grown))
+    solid = length >= np.maximum(WALL_PIECE_ELONGATION * width, grown)
+    elongated = (extent**2 >= WALL_PIECE_ELONGATION * area) | solid
     if not elongated.any():
         return piece
     plan_low, plan_high = np.minimum(start, end)[:, [0, 2]], np.maximum(start, end)[:, [0, 2]]
