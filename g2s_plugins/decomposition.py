@@ -83,8 +83,8 @@ polygons and their shared edges (portals):
    of the merged portals, joined passages, pinches and side strips), numbered by their lowest polygon id. Candidates
    between the same two regions that are chained end to end (one opening:
    Recast's region contours may bend across a wide gap), that end on the same
-   small hole closer together across it than either is wide (a post in a gap:
-   :func:`_post_links`), or closer than
+   small hole less than half as wide between them, wall to wall, as the narrower
+   of the two (a post in a gap, a slim pier between arches: :func:`_post_links`), or closer than
    ``min_separation`` are one chokepoint (the widest portal of them stays:
    a door cut by a tile border is several portals).
 5. A chokepoint is an articulation of the level when it is a bridge of the
@@ -176,9 +176,18 @@ through its corridor) 0.56."""
 
 WALL_PIECE_ELONGATION = 3.0
 """A small hole whose longest plan extent squared is at least this many times its area (a rectangle 2.6 times as
-long as it is wide or more) and whose ends lie near other walls is a piece of wall between openings
-(:func:`wall_pieces`). Measured: square pillars and posts 1.7-2.0, the cathedral's west front between its doors
-3.26 (docs/plugins.md, "One opening, one chokepoint")."""
+long as it is wide or more), or whose solid (the hole less the agent's diameter and a navmesh cell across each way)
+is at least this many times as long as it is wide, and whose ends lie near other walls, is a piece of wall between
+openings (:func:`wall_pieces`). Measured: square pillars and posts 1.7-2.0 and 1.0-1.33 (solid), the cathedral's west
+front between its doors 3.26 and 5.75, 1.5 m piers of a 0.2 m wall 1.9-2.5 and 6.0 (docs/plugins.md, "One opening,
+one chokepoint" and "Posts, niches and aisles")."""
+
+POST_SHARE = 0.5
+"""A small hole between two chokepoint candidates of one region pair is a post (or a pier) in one opening when it is
+less than this share as wide, between the candidates' ends on it, as the narrower of the two is wide, both wall to
+wall (:func:`_post_links`): a gate with a post, two arches on a slim pier. At least as wide: a wall between two doors.
+The designer's rule of docs/plugins.md, "Posts, niches and aisles"; measured there on posts of 0.3-1.5 m in gaps of
+4-20 m and on doors of 1.5-3 m 0.5-3 m apart, at 0, 22 and 45 degrees."""
 
 SMALL_ROOM_ENCLOSURE = 0.85
 """A group under ``min_region_area`` is a room when at least this share of its outline (walls and the portals out of
@@ -299,11 +308,19 @@ def small_holes(start: np.ndarray, end: np.ndarray, max_area: float) -> np.ndarr
     return np.where(small_hole[loop], loop, -1).astype(np.int64)
 
 
-def wall_pieces(start: np.ndarray, end: np.ndarray, hole: np.ndarray) -> np.ndarray:
+def wall_pieces(start: np.ndarray, end: np.ndarray, hole: np.ndarray, grown: float) -> np.ndarray:
     """(B,) bool: the edges of small holes (``hole`` (B,), :func:`small_holes`) that are pieces of wall between
-    openings, not pillars: elongated (longest plan extent squared at least :data:`WALL_PIECE_ELONGATION` times
-    the area), with both its ends (its extreme corners along that extent) nearer to the other walls (other holes'
-    too) than it is long, and the middles of both its long sides farther from them than either end is.
+    openings, not pillars: elongated (its longest plan extent squared at least :data:`WALL_PIECE_ELONGATION`
+    times its area, which takes a wall turning a corner too; or the solid inside, the hole less ``grown`` m across
+    each way, at least that many times as long as it is wide, its plan extent across the direction of its
+    narrowest against that narrowest, and at least ``grown`` long: a shorter solid, a gravestone or a mullion, is
+    a post whatever its shape), with both its ends (its extreme corners along its longest extent) nearer to the
+    other walls (other holes' too) than it is long, and the middles of both its long sides farther from them than
+    either end is.
+
+    A hole's outline is the solid's grown by the agent's radius and about a navmesh cell of rasterisation each
+    side (``grown``: the agent's diameter and a cell), which makes the pier of a 0.2 m wall look as compact as a
+    post: a 2.5 x 0.2 m pier is a hole of about 3.75 x 1.5 m (docs/plugins.md, "Posts, niches and aisles").
 
     The wall between two doors is a small hole whose ends face the doors' far jambs, with a room on either
     side; a pillar or a post is compact, a pair of gravestones grown into one hole stands in open ground, and a
@@ -322,7 +339,11 @@ def wall_pieces(start: np.ndarray, end: np.ndarray, hole: np.ndarray) -> np.ndar
     spreads = directional_spreads(a[:, [0, 2]], index, len(ids))
     direction = np.argmax(spreads, axis=1)
     extent = spreads[np.arange(len(ids)), direction]
-    elongated = extent**2 >= WALL_PIECE_ELONGATION * area
+    narrowest = np.argmin(spreads, axis=1)  # a rectangle's diagonals spread farther than its length
+    length = spreads[np.arange(len(ids)), (narrowest + EXTENT_DIRECTIONS // 2) % EXTENT_DIRECTIONS] - grown
+    width = spreads[np.arange(len(ids)), narrowest] - grown  # the solid's, shorter than ``grown``: a post
+    solid = length >= np.maximum(WALL_PIECE_ELONGATION * width, grown)
+    elongated = (extent**2 >= WALL_PIECE_ELONGATION * area) | solid
     if not elongated.any():
         return piece
     plan_low, plan_high = np.minimum(start, end)[:, [0, 2]], np.maximum(start, end)[:, [0, 2]]
@@ -399,7 +420,9 @@ class Clearances:
         widest: (E,3) each portal's point of largest clearance (every wall counted).
         open_walls: the walls the clearances that split the level are measured to (small holes left out):
             start and end points, (B',3) each, m.
-        holes: the small holes' boundary: their edges' start points, (H,3) m, and the hole of each, (H,) int64.
+        holes: the small holes' boundary (wall pieces too: a piece less than half as wide as the doors beside it
+            is a pier in one opening, :func:`_post_links`): their edges' start points, (H,3) m, and the hole of
+            each, (H,) int64.
     """
 
     polygons: np.ndarray
@@ -432,18 +455,17 @@ def portal_samples(ends: np.ndarray, spacing: float) -> tuple[np.ndarray, np.nda
     return ends[portal, 0] * (1.0 - t) + ends[portal, 1] * t, portal
 
 
-def clearances(navmesh: Any, obstacle_area: float) -> Clearances:
+def clearances(navmesh: Any, obstacle_area: float, wall_to_wall: float) -> Clearances:
     """The clearances of ``navmesh`` (a portal's is the largest of its :func:`portal_samples`, one navmesh cell apart).
 
-    Small holes (:func:`small_holes`: pillars, crates; not :func:`wall_pieces`) are left out of the
-    clearances that split the level, so that they neither make a room as
+    Small holes (:func:`small_holes`: pillars, crates; not :func:`wall_pieces`, whose outlines are grown by
+    ``wall_to_wall``, m) are left out of the clearances that split the level, so that they neither make a room as
     narrow as its doors nor make passages of their own; the width reported
     for a chokepoint counts them.
     """
     start, end = boundary_edges(navmesh)
     hole = small_holes(start, end, obstacle_area)
-    hole[wall_pieces(start, end, hole)] = -1
-    obstacle = hole >= 0
+    obstacle = (hole >= 0) & ~wall_pieces(start, end, hole, wall_to_wall)
     ends = navmesh.portals().endpoints
     points, portal = portal_samples(ends, float(navmesh.settings["cell_size"]))
     walls = _distance_to(points, start[~obstacle], end[~obstacle])
@@ -456,7 +478,7 @@ def clearances(navmesh: Any, obstacle_area: float) -> Clearances:
         portals=every[widest],
         widest=points[widest],
         open_walls=(start[~obstacle], end[~obstacle]),
-        holes=(start[obstacle], hole[obstacle]),
+        holes=(start[hole >= 0], hole[hole >= 0]),
     )
 
 
@@ -780,7 +802,8 @@ def decompose(navmesh: Any, agent: Any, params: DecompositionParams) -> Decompos
     (walkable width, m), ``regions`` ([a, b], a < b), ``polygons`` (the
     portal's two polygons), ``floors``, ``articulation``.
     """
-    clearance = clearances(navmesh, params.obstacle_area)
+    wall_to_wall = 2.0 * float(agent.radius) + float(navmesh.settings["cell_size"])
+    clearance = clearances(navmesh, params.obstacle_area, wall_to_wall)
     portals = navmesh.portals()
     pairs = np.asarray(portals.pairs, dtype=np.int64).reshape(-1, 2)
     areas = np.asarray(navmesh.areas, dtype=np.float64)
@@ -821,7 +844,7 @@ def decompose(navmesh: Any, agent: Any, params: DecompositionParams) -> Decompos
         for r in range(count)
     ]
     chokepoints = _chokepoints(np.flatnonzero(blocked), pairs, labels, portals.endpoints, clearance.widest,
-                               2.0 * clearance.portals, floor, params.min_separation, clearance.holes)
+                               2.0 * clearance.portals, floor, params.min_separation, clearance.holes, wall_to_wall)
     return Decomposition(labels, regions, chokepoints)
 
 
@@ -856,22 +879,24 @@ def _region_floors(labels: np.ndarray, count: int, band: np.ndarray, areas: np.n
 
 
 def _openings(candidates: np.ndarray, sides: np.ndarray, endpoints: np.ndarray, width: np.ndarray,
-              holes: tuple[np.ndarray, np.ndarray]) -> np.ndarray:
+              holes: tuple[np.ndarray, np.ndarray], wall_to_wall: float) -> np.ndarray:
     """(C,) int64: the opening of each candidate portal, equal for candidates of the same region pair chained by
-    shared end points (equal to 1 cm), or ending on the same small hole that is shorter between their two ends
-    than both candidates are wide (scipy connected components).
+    shared end points (equal to 1 cm), or ending on the same small hole that is a post between them
+    (:func:`_post_links`; scipy connected components).
 
     Recast cuts a passage between its regions' contours, which may turn: a wide gap whose cut bends at a
     contour vertex is two portals end to end, one opening (measured: docs/plugins.md, real levels). A post
     in a gap (a gravestone, a bollard) parts the cut into portals that end on its outline; the post is a small
-    hole, left out of the clearances that split the level, and the gap on either side of it is wider than the
-    post is between their ends: one opening too. The wall between two doors is a small hole as well, but longer
-    between the doors than a door is wide, so two doors stay two (docs/plugins.md, "One opening, one chokepoint").
+    hole, left out of the clearances that split the level, and the gap on either side of it is more than twice
+    as wide as the post: one opening too. The wall between two doors is a small hole as well, but at least half
+    as long as a door is wide, so two doors stay two (docs/plugins.md, "Posts, niches and aisles").
 
     Args:
         candidates: (C,) portal ids; ``sides``: (C, 2) their region pairs; ``endpoints``: (E, 2, 3) every
             portal's end points, m; ``width``: (E,) every portal's walkable width, m.
         holes: the small holes' boundary vertices, (H, 3) m, and the hole of each, (H,) (:class:`Clearances`).
+        wall_to_wall: what a walkable width lacks of the width wall to wall, m: the agent's diameter and a
+            navmesh cell of rasterisation (:func:`_post_links`).
     """
     if len(candidates) == 0:
         return np.zeros(0, dtype=np.int64)
@@ -887,19 +912,26 @@ def _openings(candidates: np.ndarray, sides: np.ndarray, endpoints: np.ndarray, 
     # a candidate joins its two end points, each taken within its region pair
     _, node = np.unique(pair[:, None] * n + point, return_inverse=True)
     node = node.reshape(-1, 2)
-    posts = _post_links(pair, hole_of[point], ends.reshape(-1, 2, 3), width[candidates])
+    posts = _post_links(pair, hole_of[point], ends.reshape(-1, 2, 3), width[candidates], wall_to_wall)
     links = np.concatenate([node, np.column_stack([node[posts[:, 0], 0], node[posts[:, 1], 0]])])
     graph = sparse.coo_array((np.ones(len(links)), (links[:, 0], links[:, 1])), shape=(int(node.max()) + 1,) * 2)
     return csgraph.connected_components(graph, directed=False)[1][node[:, 0]].astype(np.int64)
 
 
-def _post_links(pair: np.ndarray, hole: np.ndarray, ends: np.ndarray, width: np.ndarray) -> np.ndarray:
-    """(K, 2) candidate pairs of one region pair with an end point each on one small hole that lies closer to
-    the other's than either candidate is wide (a post in a gap; :func:`_openings`).
+def _post_links(pair: np.ndarray, hole: np.ndarray, ends: np.ndarray, width: np.ndarray,
+                wall_to_wall: float) -> np.ndarray:
+    """(K, 2) candidate pairs of one region pair with an end point each on one small hole that is a post between
+    them: less than :data:`POST_SHARE` as wide as the narrower candidate, both wall to wall (:func:`_openings`).
+
+    The hole's outline is the post's grown by the agent's radius, and a door's walkable width is its width wall
+    to wall less the agent's diameter, each within about a navmesh cell of rasterisation (docs/plugins.md,
+    "Widths turned"): so the post is the distance between the two end points on it less ``wall_to_wall``, and a
+    candidate's width wall to wall is its walkable width plus ``wall_to_wall``.
 
     Args:
         pair: (C,) each candidate's region pair; ``hole``: (C, 2) the small hole each end point lies on (-1:
             none); ``ends``: (C, 2, 3) the end points, m; ``width``: (C,) walkable widths, m.
+        wall_to_wall: the agent's diameter and a navmesh cell, m.
     """
     candidate, end = np.nonzero(hole >= 0)
     order = np.lexsort((candidate, hole[candidate, end], pair[candidate]))
@@ -912,19 +944,19 @@ def _post_links(pair: np.ndarray, hole: np.ndarray, ends: np.ndarray, width: np.
             continue
         i, j = np.triu_indices(len(group), 1)
         a, b = candidate[group[i]], candidate[group[j]]
-        gap = np.linalg.norm(ends[a, end[group[i]]] - ends[b, end[group[j]]], axis=1)
-        keep = (a != b) & (gap < np.minimum(width[a], width[b]))
+        post = np.linalg.norm(ends[a, end[group[i]]] - ends[b, end[group[j]]], axis=1) - wall_to_wall
+        keep = (a != b) & (post < POST_SHARE * (np.minimum(width[a], width[b]) + wall_to_wall))
         found.append(np.column_stack([a[keep], b[keep]]))
     return np.concatenate(found) if found else np.zeros((0, 2), dtype=np.int64)
 
 
 def _chokepoints(candidates: np.ndarray, pairs: np.ndarray, labels: np.ndarray, endpoints: np.ndarray,
                  widest: np.ndarray, width: np.ndarray, floor: np.ndarray, separation: float,
-                 holes: tuple[np.ndarray, np.ndarray]) -> list[dict[str, Any]]:
+                 holes: tuple[np.ndarray, np.ndarray], wall_to_wall: float) -> list[dict[str, Any]]:
     """One record per chokepoint: candidates grouped by region pair, widest first; the others of an
-    opening (:func:`_openings`, ``holes`` as there) and near ones dropped."""
+    opening (:func:`_openings`, ``holes`` and ``wall_to_wall`` as there) and near ones dropped."""
     sides = np.sort(labels[pairs[candidates]], axis=1)
-    opening = _openings(candidates, sides, endpoints, width, holes)
+    opening = _openings(candidates, sides, endpoints, width, holes, wall_to_wall)
     order = np.lexsort((candidates, -width[candidates], sides[:, 1], sides[:, 0]))
     kept: list[dict[str, Any]] = []
     kept_at: dict[tuple[int, int], list[np.ndarray]] = {}

@@ -176,15 +176,33 @@ def test_a_post_in_a_gap_leaves_one_chokepoint():
     assert len(between) == 1 and -7.0 <= between[0]["position"][0] <= 7.0
 
 
-def test_portals_beside_a_post_narrower_than_both_are_one_opening():
-    # three portals of one region pair end on small hole 7: the first two 2 m apart across it, each 5 m wide
-    # (a post in a gap), the second and third 3 m apart, the third 1 m wide (the wall between two doors)
-    pair = np.zeros(3, dtype=np.int64)
-    hole = np.array([[-1, 7], [7, 7], [7, -1]])
-    ends = np.array([[[0.0, 0, 0], [5, 0, 0]], [[7, 0, 0], [12, 0, 0]], [[15, 0, 0], [16, 0, 0]]])
-    links = decomposition._post_links(pair, hole, ends, np.array([5.0, 5.0, 1.0]))
-    assert links.tolist() == [[0, 1]]
-    assert len(decomposition._post_links(pair, hole, ends, np.array([1.5, 5.0, 1.0]))) == 0
+def test_a_post_less_than_half_as_wide_as_the_openings_beside_it_is_one_opening():
+    # portals of one region pair ending on small hole 7 (wall to wall = walkable + 1.25 m: the 0.5 m agent's
+    # diameter and a 0.25 m cell): a 0.8 m post between two 3.25 m parts of a gate (ends 2.05 m apart across it,
+    # 2 m walkable each: the post keeps 0.25 of a part; the rule before, ends closer than either is wide, split
+    # it), then a 2 m wall between two 3 m doors (ends 3.25 m apart, 1.75 m walkable: 0.67 of a door)
+    pair = np.zeros(4, dtype=np.int64)
+    hole = np.array([[-1, 7], [7, -1], [-1, 7], [7, -1]])
+    ends = np.array([[[0.0, 0, 0], [2, 0, 0]], [[4.05, 0, 0], [6.05, 0, 0]],
+                     [[10, 0, 0], [11.75, 0, 0]], [[15, 0, 0], [16.75, 0, 0]]])
+    pair[2:] = 1
+    width = np.array([2.0, 2.0, 1.75, 1.75])
+    assert decomposition._post_links(pair, hole, ends, width, 1.25).tolist() == [[0, 1]]
+    # 3 m doors 0.5 m apart (ends 1.75 m apart): a pier a sixth as wide as the doors, one opening
+    ends[3] = ends[2] + [3.5, 0, 0]
+    assert decomposition._post_links(pair, hole, ends, width, 1.25).tolist() == [[0, 1], [2, 3]]
+
+
+def test_three_posts_in_a_gap_leave_one_chokepoint():
+    # three 0.8 m posts in a 14 m gap, 2.9 m apart: each part is 1.9 m walkable, 1.5-2 m as measured, and the
+    # posts' outlines 2 m across; they split the gap into four chokepoints before (parts narrower than the posts'
+    # outlines); each post is under half a part wall to wall: one opening
+    posts = [trimesh.creation.box(extents=(0.8, 1.0, 0.8)).apply_translation((x, 0.5, 0.0)) for x in (-3.5, 0.0, 3.5)]
+    level = SimpleNamespace(mesh=trimesh.util.concatenate([open_fields([(-7.0, 7.0)]).mesh, *posts]), name="posts")
+    result = run(level)
+    fields = sorted(r["id"] for r in sorted(regions(result), key=lambda r: -r["area"])[:2])
+    between = [c for c in chokepoints(result) if c["regions"] == fields]
+    assert len(between) == 1 and -7.0 <= between[0]["position"][0] <= 7.0
 
 
 def west_front():
@@ -216,6 +234,36 @@ def test_three_doors_in_a_front_part_the_field_from_the_hall():
     assert sorted(round(c["position"][0]) for c in between) == [3, 11, 19]
 
 
+def arcade(opening: float, pier: float):
+    """Two 20 x 12 m rooms (x 0..20; z 0..12 and 12.2..24.2) parted by a 0.2 m wall with three openings ``opening`` m
+    wide side by side, centred at x = 10 and parted by two piers ``pier`` m wide; 3 m tall walls, open at the top."""
+    def box(x0, x1, z0, z1, top):
+        solid = trimesh.creation.box(bounds=((x0, -0.2, z0), (x1, top, z1)))
+        if top > 0:
+            solid.update_faces(solid.face_normals[:, 1] < 0.5)
+        return solid
+
+    span = 3 * opening + 2 * pier
+    cuts = [-0.2] + [10 - span / 2 + k * (opening + pier) + d for k in range(3) for d in (0.0, opening)] + [20.2]
+    parts = [box(0.0, 20.0, 0.0, 24.2, 0.0), box(-0.2, 20.2, -0.2, 0.0, 3.0), box(-0.2, 20.2, 24.2, 24.4, 3.0),
+             box(-0.2, 0.0, 0.0, 24.2, 3.0), box(20.0, 20.2, 0.0, 24.2, 3.0)]
+    parts += [box(a, b, 12.0, 12.2, 3.0) for a, b in zip(cuts[::2], cuts[1::2])]
+    return SimpleNamespace(mesh=trimesh.util.concatenate(parts), name="arcade")
+
+
+def test_piers_of_a_thin_wall_are_wall_pieces_between_doors():
+    # three 2.5 m openings parted by 1.5 m piers of a 0.2 m wall: the piers' holes (about 2.75 x 1.5 m, grown by the
+    # agent's radius and a cell) were as compact as posts, so the rooms saw one 10.5 m opening and were one region;
+    # the solid inside each (1.5 x 0.2 m) is long for its width, a wall piece; each pier is over half an opening
+    # wide: three doors, three chokepoints
+    result = run(arcade(2.5, 1.5))
+    found = chokepoints(result)
+    assert len(regions(result)) == 2 and len(found) == 3
+    assert sorted(round(c["position"][0]) for c in found) == [6, 10, 14]
+    # 0.4 m piers (a sixth of an opening) are posts of one opening
+    assert len(chokepoints(run(arcade(2.5, 0.4)))) == 1
+
+
 def test_elongated_holes_between_walls_are_wall_pieces_and_pillars_are_not():
     # a 7 x 2 m hole 1 m from the outer wall at one end and from a 25 m² block at the other, open ground on both
     # long sides (a wall between two doors), is a piece of wall; a 2 m pillar, a 4 x 1 m stone in the open and a
@@ -231,7 +279,7 @@ def test_elongated_holes_between_walls_are_wall_pieces_and_pillars_are_not():
     start, end = (np.concatenate(parts) for parts in zip(outer, pillar, piece, block, stone, desks))
     hole = decomposition.small_holes(start, end, max_area=16.0)
     assert ((hole >= 0) == np.repeat([False, True, True, False, True, True], 4)).all()
-    pieces = decomposition.wall_pieces(start, end, hole)
+    pieces = decomposition.wall_pieces(start, end, hole, grown=1.25)
     assert pieces.tolist() == np.repeat([False, False, True, False, False, False], 4).tolist()
 
 
@@ -299,7 +347,7 @@ def test_two_chokepoints_between_the_same_regions_are_not_articulations():
     ends = np.array([[[0.0, 0, 0], [1, 0, 0]], [[10, 0, 0], [11, 0, 0]], [[20, 0, 0], [21, 0, 0]]])
     no_holes = (np.zeros((0, 3)), np.zeros(0, dtype=np.int64))
     found = decomposition._chokepoints(np.arange(3), pairs, labels, ends, ends[:, 0], np.ones(3),
-                                       np.zeros(3, dtype=np.int64), separation=3.0, holes=no_holes)
+                                       np.zeros(3, dtype=np.int64), separation=3.0, holes=no_holes, wall_to_wall=1.25)
     assert [(c["regions"], c["articulation"]) for c in found] == [([0, 1], False), ([0, 1], False), ([1, 2], True)]
 
 
