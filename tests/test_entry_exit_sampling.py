@@ -159,3 +159,13 @@ def test_an_opening_found_again_through_a_union_is_one(yaw: float) -> None:
     found, known, _, terminals = _openings(pieces.turned(level, yaw) if yaw else level)
     assert len(found) == 4 and pieces.match_openings(found, known) == (4, 4)
     assert all(o.width > 9.5 for o in terminals.openings)
+
+
+def test_a_barrier_the_agent_cannot_climb_leaves_both_ends_on_the_sampling_route() -> None:
+    # As on the navmesh route (tests/test_entry_exit_kinds.py): only the larger part's end was found.
+    from tests.test_entry_exit_kinds import _corridor_with_a_barrier
+
+    level = samples.SampleLevel(name="barrier", mesh=_corridor_with_a_barrier(1.0), metadata={}, openings=(
+        samples._opening((0.0, 0.0, 1.2), (-1.0, 0.0, 0.0), 2.4), samples._opening((12.0, 0.0, 1.2), (1.0, 0.0, 0.0), 2.4)))
+    found, known, _, _ = _openings(pieces.turned(level, 22.0))
+    assert pieces.match_openings(found, known) == (2, 2) and len(found) == 2
