@@ -369,3 +369,19 @@ def test_a_railing_of_posts_and_rails_closes_the_side(yaw: float) -> None:
     # 1.5 m apart: each bay of the railing was an opening (seventh round's `catwalk_grating`: 8-12 others a yaw).
     # The way is now clear at every search step of height from the climb to the head-room ray, a radius past the edge.
     _assert_known_turned(_catwalk_with_rails(), yaw, [[0.0, 0.0, 0.75], [12.0, 0.0, 0.75]], 1.5)
+
+
+def _corridor_with_a_barrier(height: float, at: float = 7.0, length: float = 12.0, width: float = 2.4) -> trimesh.Trimesh:
+    """A corridor ``length`` x ``width`` m open at both ends, walls 0.3 m thick; a barrier ``height`` m high and 0.3 m
+    thick across its whole width ``at`` m from its west end."""
+    return trimesh.util.concatenate([
+        _box(0.0, length, -SLAB, 0.0, -0.3, width + 0.3), _box(0.0, length, -SLAB, TALL, -0.3, 0.0),
+        _box(0.0, length, -SLAB, TALL, width, width + 0.3), _box(at, at + 0.3, -SLAB, height, 0.0, width)])
+
+
+@pytest.mark.parametrize("height, at, yaw", [(1.0, 7.0, 0.0), (1.0, 7.0, 22.0), (0.6, 5.85, 45.0)])
+def test_a_barrier_the_agent_cannot_climb_leaves_both_ends(height: float, at: float, yaw: float) -> None:
+    # The barrier cuts the floor in two; one floor held openings, the larger part's, so the other end was missed
+    # (eighth round's `vault_barrier_corridor`, both routes, every yaw; barriers 0.5-1.0 m high). A floor that
+    # leaves the piece at the main floor's level holds openings too.
+    _assert_known_turned(_corridor_with_a_barrier(height, at), yaw, [[0.0, 0.0, 1.2], [12.0, 0.0, 1.2]], 2.4)

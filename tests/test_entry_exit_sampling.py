@@ -8,6 +8,7 @@ from __future__ import annotations
 import networkx as nx
 import numpy as np
 import pytest
+import trimesh
 
 from g2s_core.config import load_config
 from g2s_core.errors import PluginError
@@ -133,5 +134,38 @@ def test_a_bridge_over_a_closed_trough_keeps_its_ends_on_the_sampling_route() ->
 
     level = samples.SampleLevel(name="bridge", mesh=_bridge_over_a_closed_trough(), metadata={}, openings=(
         samples._opening((0.0, 0.0, 1.2), (-1.0, 0.0, 0.0), 2.4), samples._opening((10.0, 0.0, 1.2), (1.0, 0.0, 0.0), 2.4)))
+    found, known, _, _ = _openings(pieces.turned(level, 22.0))
+    assert pieces.match_openings(found, known) == (2, 2) and len(found) == 2
+
+
+def _plaza_with_an_arch() -> samples.SampleLevel:
+    """A plaza 10 x 10 m open on all four sides, a freestanding arch (piers 0.6 m, 2 m apart, a lintel at 3 m) in its middle."""
+    from tests.test_entry_exit_kinds import _box
+
+    mesh = trimesh.util.concatenate([
+        _box(0, 10, -0.2, 0.0, 0, 10), _box(3.4, 4.0, 0.0, 3.0, 4.7, 5.3), _box(6.0, 6.6, 0.0, 3.0, 4.7, 5.3),
+        _box(3.4, 6.6, 3.0, 3.6, 4.7, 5.3)])
+    sides = [((0, 0, 5), (-1, 0, 0)), ((10, 0, 5), (1, 0, 0)), ((5, 0, 0), (0, 0, -1)), ((5, 0, 10), (0, 0, 1))]
+    return samples.SampleLevel(name="plaza_arch", mesh=mesh, metadata={},
+                               openings=tuple(samples._opening(p, h, 10.0) for p, h in sides))
+
+
+@pytest.mark.parametrize("yaw", [0.0, 45.0])
+def test_an_opening_found_again_through_a_union_is_one(yaw: float) -> None:
+    # Eighth round's `plaza_arch`: one side's samples gave parts 3.28-9.98, 0.54-3.37 and 0.17-2.80 m along it; the
+    # first two were one, and their union then overlapped the third, which overlapped neither: a fifth terminal
+    # on that side (at 0 and 45 degrees). The repeats are now merged until none is left.
+    level = _plaza_with_an_arch()
+    found, known, _, terminals = _openings(pieces.turned(level, yaw) if yaw else level)
+    assert len(found) == 4 and pieces.match_openings(found, known) == (4, 4)
+    assert all(o.width > 9.5 for o in terminals.openings)
+
+
+def test_a_barrier_the_agent_cannot_climb_leaves_both_ends_on_the_sampling_route() -> None:
+    # As on the navmesh route (tests/test_entry_exit_kinds.py): only the larger part's end was found.
+    from tests.test_entry_exit_kinds import _corridor_with_a_barrier
+
+    level = samples.SampleLevel(name="barrier", mesh=_corridor_with_a_barrier(1.0), metadata={}, openings=(
+        samples._opening((0.0, 0.0, 1.2), (-1.0, 0.0, 0.0), 2.4), samples._opening((12.0, 0.0, 1.2), (1.0, 0.0, 0.0), 2.4)))
     found, known, _, _ = _openings(pieces.turned(level, 22.0))
     assert pieces.match_openings(found, known) == (2, 2) and len(found) == 2

@@ -54,7 +54,7 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
    in the way or straight out: this undoes the retreat from walls. An
    opening overlapping a wider one along the same line, facing the same way,
    is the same opening found twice: the wider one is stretched along its line
-   to span both and the other dropped.
+   to span both and the other dropped, again until none overlaps a wider one.
 6. Priors, each measured on the generated pieces of
    :mod:`g2s_plugins.samples.pieces` (docs/entry_exit.md):
 
@@ -74,6 +74,8 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
      floor is a navmesh component with those whose boundary comes within
      ``r`` at the same height (Recast's grid cuts narrow passages at some yaws),
      and a floor over others (a closed ceiling's top) is a roof, never the main one;
+     other floors leaving the piece at the main floor's level (within the climb)
+     hold openings with it (a corridor cut in two by a barrier);
    * outer extent (``extent_heights``): modular pieces meet their neighbours
      at their outer extent, facing out. The opening's gap to the piece's
      extent along its heading (the largest ``vertex . heading`` over the faces
@@ -244,8 +246,8 @@ class Params(PluginParams):
     main_floor_only: bool = Field(
         True,
         description="keep only openings on the navmesh floor of largest area (a component with those whose "
-        "boundary comes within one agent radius at the same height: the main floor and what is reachable from it); "
-        "false: every component's",
+        "boundary comes within one agent radius at the same height: the main floor and what is reachable from it) "
+        "and the floors at its level that leave the piece too; false: every component's",
     )
     extent_heights: float | None = Field(
         0.5,
@@ -790,7 +792,7 @@ def main_floor(
     navmesh: NavMesh | SampledSurface, agent: AgentConfig, loops: list[BoundaryLoop] | None = None,
     looks_out: np.ndarray | None = None,
 ) -> np.ndarray:
-    """(P,) bool: the polygons of the navmesh's floor of largest area that is no roof.
+    """(P,) bool: the polygons of the navmesh's main floor: its floor of largest area that is no roof, and those at its level.
 
     A floor is a connected component of the navmesh, together with every other one whose boundary
     comes within one agent radius horizontally and the agent's climb vertically. Recast's voxel
@@ -802,7 +804,10 @@ def main_floor(
     ``loops``: the navmesh's :func:`boundary_loops`, when the caller has them. ``looks_out``: (P,) bool,
     the polygons whose boundary looks out of the piece (step 2's segments); given, a floor the agent
     can leave comes first, roof or not: a floor walled all round holds no opening whatever its size
-    (a bridge's deck lies over the closed trough under it, which the roof test alone would keep).
+    (a bridge's deck lies over the closed trough under it, which the roof test alone would keep); and
+    with a floor that leaves, every other one that leaves too, is no roof and whose lowest point lies
+    within the climb of the main one's: the parts of a corridor cut by a barrier or by a pass
+    narrower than Recast keeps; not a wall's top, a roof or a ravine's floor below a bridge.
     """
     neighbours = np.asarray(navmesh.neighbours)
     if len(neighbours) == 0:
@@ -824,7 +829,16 @@ def main_floor(
         leaves[np.unique(label[np.asarray(looks_out, dtype=bool)])] = True
     # Leaving first, then no roof (the lowest floor has none below it), then area; ties to the lowest label.
     best = np.lexsort((-np.arange(len(area)), area, ~roof, leaves))[-1]
-    return label == int(best)
+    if looks_out is None or not leaves[best]:
+        return label == int(best)
+    # Floors at its level that leave the piece too hold openings with it: a barrier higher than the climb, or a pass
+    # Recast cuts, splits one floor in two, each part with its own ends (a corridor's far end was missed).
+    height = np.asarray(navmesh.vertices, dtype=np.float64)[np.asarray(navmesh.polygons)[:, 0], 1]
+    lowest = np.full(len(area), np.inf)
+    np.minimum.at(lowest, label, height)
+    kept = leaves & ~roof & (np.abs(lowest - lowest[best]) <= float(agent.max_climb))
+    kept[best] = True
+    return kept[label]
 
 
 _ROOF_SHARE = 0.1
@@ -1073,16 +1087,23 @@ def detect_openings(
         polys = tuple(sorted(set(samples.polygon[e.samples].tolist())))
         found.append((opening, polys, vec3(e.normal)))
         edges.append(e)
-    # An opening found again is one with the wider one, which spans both.
-    into = _repeated([f[0] for f in found], s.radius, float(params.max_turn_deg))
-    for i in sorted(set(into[into >= 0].tolist())):
-        parts = [found[j] for j in np.flatnonzero(into == i)]
-        ends = _union_ends(found[i][0], [f[0] for f in parts])
-        union = None if ends is None else scored(edges[i], *ends)
-        if union is not None:
-            polys = tuple(sorted(set(found[i][1]).union(*(f[1] for f in parts))))
-            found[i] = (union, polys, found[i][2])
-    found = [f for f, again in zip(found, into) if again < 0]
+    # An opening found again is one with the wider one, which spans both; again until none is left,
+    # since a union can reach one that overlapped none of its parts (a plaza's side on the sampling
+    # route: parts 3.28-9.98 and 0.54-3.37 m along it, then one at 0.17-2.80 m). Each pass drops
+    # one at least: at most n passes of O(n^2) for n openings.
+    while True:
+        into = _repeated([f[0] for f in found], s.radius, float(params.max_turn_deg))
+        if not (into >= 0).any():
+            break
+        for i in sorted(set(into[into >= 0].tolist())):
+            parts = [found[j] for j in np.flatnonzero(into == i)]
+            ends = _union_ends(found[i][0], [f[0] for f in parts])
+            union = None if ends is None else scored(edges[i], *ends)
+            if union is not None:
+                polys = tuple(sorted(set(found[i][1]).union(*(f[1] for f in parts))))
+                found[i] = (union, polys, found[i][2])
+        found = [f for f, again in zip(found, into) if again < 0]
+        edges = [e for e, again in zip(edges, into) if again < 0]
     found = [f for f in found if f[0].score >= float(params.min_score) - 1e-12]
     if params.best is not None and len(found) > params.best:
         order = sorted(range(len(found)), key=lambda i: (-found[i][0].score, i))[: params.best]
