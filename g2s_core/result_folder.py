@@ -5,8 +5,9 @@ be created or written. :func:`staged` gives the writers an empty staging
 folder on the same file system as the output folder and, once every writer
 has finished, moves the files into place:
 
-* the output folder does not exist yet: the staging folder is made beside it
-  and renamed to it (one atomic rename);
+* the output folder does not exist yet: the staging folder is made beside it,
+  and a folder inside it, made with the umask's mode, is renamed to it (one
+  atomic rename);
 * it exists (it may hold the user's other files, even the input mesh): the
   staging folder is made inside it and each file is renamed into place, with
   Ctrl-C held back until the last rename is done.
@@ -91,10 +92,16 @@ def staged(outdir: Path, obsolete: Sequence[Path] = (), protect: Sequence[Path] 
         _remove_stale(home)
         beside = "" if inside else f".{outdir.name[:64]}"  # short enough for any name limit
         staging = Path(tempfile.mkdtemp(dir=home, prefix=f"{beside}{STAGING_MARK}{os.getpid()}-"))
-        yield staging
+        # the folder that becomes the output folder is made by mkdir, which gives it the umask's mode: mkdtemp's
+        # 0700 kept other users (a web server showing report.html) out of a new output folder
+        results = staging if inside else staging / outdir.name
+        results.mkdir(exist_ok=True)
+        yield results
         stop_if_interrupted()
         with interrupts_held():
-            _move_into_place(staging, outdir, obsolete, protect)
+            _move_into_place(results, outdir, obsolete, protect)
+            if results != staging:
+                staging.rmdir()  # emptied by the rename
     except BaseException as exc:
         if staging is not None:
             shutil.rmtree(staging, ignore_errors=True)
