@@ -103,14 +103,18 @@ def staged(outdir: Path, obsolete: Sequence[Path] = (), protect: Sequence[Path] 
             if results != staging:
                 staging.rmdir()  # emptied by the rename
     except BaseException as exc:
+        # another process removed the folder (rm -r of the output folder): a writer's FileNotFoundError is no fault of its own
+        vanished = staging is not None and not staging.is_dir() and isinstance(exc, Exception)
         if staging is not None:
             shutil.rmtree(staging, ignore_errors=True)
         for folder in reversed(created):
             with contextlib.suppress(OSError):  # not empty: something else was put there meanwhile
                 folder.rmdir()
         storage = _storage_error(exc)
-        if storage is not None:
-            raise G2SError(f"{outdir}: cannot write results ({storage.strerror or storage}); nothing was written") from None
+        if storage is not None or vanished:
+            why = "its folder was removed meanwhile" if vanished else storage.strerror or storage
+            left = f" (the staging folder {staging} could not be removed; the next run removes it)" if staging and staging.exists() else ""
+            raise G2SError(f"{outdir}: cannot write results ({why}); nothing was written{left}") from None
         raise
 
 
