@@ -27,11 +27,13 @@ import os
 import re
 import shutil
 import signal
+import sys
 import tempfile
 import threading
 from collections.abc import Iterator, Sequence
 from contextlib import contextmanager
 from pathlib import Path
+from typing import Any
 
 from g2s_core.errors import G2SError
 
@@ -209,8 +211,10 @@ def interrupts_held(hold: bool = True) -> Iterator[None]:
 
     With ``hold`` false (a whole command) they raise KeyboardInterrupt at once and are remembered for
     :func:`stop_if_interrupted`: trimesh, scipy and PIL catch BaseException while they load, and a run whose
-    interrupt they swallowed went on and wrote its results. A signal the parent process ignores (a background
-    job's Ctrl-C) stays ignored.
+    interrupt they swallowed went on and wrote its results. Python itself swallows one raised in a ``__del__``
+    method or a weakref callback (the import system's, while a module loads), printing ``Exception ignored in ...``
+    and its traceback; that print is left out, the interrupt being remembered. A signal the parent process
+    ignores (a background job's Ctrl-C) stays ignored.
     """
     if threading.current_thread() is not threading.main_thread():
         yield
@@ -223,10 +227,16 @@ def interrupts_held(hold: bool = True) -> Iterator[None]:
             _TAKEN.append(number)
             raise KeyboardInterrupt
 
+    def unraisable(problem: Any) -> None:
+        if not (problem.exc_type is KeyboardInterrupt and _TAKEN):
+            previous_hook(problem)
+
     previous = {sig: signal.signal(sig, take) for sig in (signal.SIGINT, signal.SIGTERM) if signal.getsignal(sig) is not signal.SIG_IGN}
+    previous_hook, sys.unraisablehook = sys.unraisablehook, sys.unraisablehook if hold else unraisable
     try:
         yield
     finally:
+        sys.unraisablehook = previous_hook
         for sig, handler in previous.items():
             signal.signal(sig, handler)
         if not hold:  # the command is over: a script's next run in this process starts afresh
