@@ -164,6 +164,8 @@ def _read_yaml(path: Path) -> dict[str, Any]:
         mark = getattr(exc, "problem_mark", None)
         where = f" at line {mark.line + 1}, column {mark.column + 1}" if mark else ""
         problem = getattr(exc, "problem", None) or "not valid YAML"
+        if problem.startswith("but "):  # "but found another document" says what was expected first
+            problem = f"{exc.context} {problem}"
         raise ConfigError(f"{path}: invalid YAML{where}: {problem}") from None
     if data is None:
         return {}
@@ -209,7 +211,7 @@ def _resolve_extends(name: Any, base_dir: Path, source: Path) -> Path:
         found = find_config(name, base_dir)  # not resolved: messages name the file as the user's paths lead to it
     except ConfigError:
         raise ConfigError(
-            f"{source}: extends: no config file or preset named {name!r} (presets: {', '.join(presets())})"
+            f"{source}: extends: no config file or preset named {show(name)} (presets: {', '.join(presets())})"
         ) from None
     # a file named after the preset it extends (my/map_analysis.yaml: extends: map_analysis) can only mean the preset
     preset = PRESETS_DIR / f"{Path(name).stem}.yaml"
@@ -246,6 +248,8 @@ def load_raw_config(path: str | Path, _chain: tuple[Path, ...] = (), sources: li
     if resolved in _chain:
         cycle = " -> ".join(p.name for p in (*_chain, resolved))
         raise ConfigError(f"{path}: extends: cycle {cycle}")
+    if len(_chain) == MAX_NESTING:  # Python's stack ran out first, named as a file nested too deeply
+        raise ConfigError(f"{path}: extends: a chain of more than {MAX_NESTING} configs ({_chain[0].name} -> {_chain[1].name} -> ...)")
     data = _read_yaml(path)
     if sources is not None:
         sources.append(path)
@@ -420,7 +424,7 @@ def _check_key(path: tuple[str | int, ...], source: str) -> None:
         owner = RunConfig if depth == 1 else _nested_model(_field_at(RunConfig, path[: depth - 1]))
         if owner is None:  # free-form mapping: a plugin's params, checked by the plugin's model
             return
-        raise ConfigError(f"{source}: unknown key {part!r} (expected one of: {', '.join(owner.model_fields)})")
+        raise ConfigError(f"{source}: unknown key {show(part)} (expected one of: {', '.join(owner.model_fields)})")
 
 
 def parse_config(data: dict[str, Any], source: str = "<config>") -> RunConfig:

@@ -359,3 +359,15 @@ def test_ctrl_c_while_trimesh_imports_is_not_lost(tmp_path, swallowed_ctrl_c, ca
     assert main(["run", "graph_only", "sample:straight_corridor", "-o", str(tmp_path / "out"), "-q"]) == 130
     assert capsys.readouterr().err.strip() == "g2s: interrupted"
     assert not (tmp_path / "out").exists()
+
+
+@pytest.mark.parametrize("args, says", [
+    (["--format", "x" * 100_000], "--format: unknown output format '" + "x" * 60 + "...' (100,000 characters) (expected some of: "),
+    (["--set", "graph.plugin=" + "x" * 100_000],
+     "map_piece: graph.plugin: GraphBuilder plugin '" + "x" * 60 + "...' (100,000 characters) is not installed (installed: "),
+])
+def test_a_name_of_100000_characters_is_cut_short_in_the_message(args, says, tmp_path, capsys):
+    # the whole name was repeated: one line of 100 kB
+    assert main(["run", "map_piece", "sample:straight_corridor", "-o", str(tmp_path / "out"), *args]) == 2
+    error = capsys.readouterr().err
+    assert error.startswith(f"g2s: error: {says}") and len(error) < 300 and error.count("\n") == 1
