@@ -22,7 +22,7 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationError, create_model
 
 from g2s_core.errors import ConfigError
 from g2s_core.input_files import MAX_NESTING, nesting_depth, parse_nested, read_text
-from g2s_core.messages import _field_at, _nested_model, describe_validation_error, show
+from g2s_core.messages import _field_at, _nested_model, describe_validation_error, show, show_key
 from g2s_core.stages import BY_KEY, PIPELINE
 
 
@@ -160,6 +160,9 @@ def _read_yaml(path: Path) -> dict[str, Any]:
     text = read_text(path, "config file", ConfigError)
     try:
         data = _parse_yaml(text, str(path))
+    except yaml.reader.ReaderError as exc:  # it has no line, only a position ("invalid YAML: not valid YAML")
+        line = text.count("\n", 0, exc.position) + 1
+        raise ConfigError(f"{path}: line {line}: character U+{exc.character:04X} is not allowed in YAML") from None
     except yaml.YAMLError as exc:
         mark = getattr(exc, "problem_mark", None)
         where = f" at line {mark.line + 1}, column {mark.column + 1}" if mark else ""
@@ -215,7 +218,7 @@ def _resolve_extends(name: Any, base_dir: Path, source: Path) -> Path:
         ) from None
     # a file named after the preset it extends (my/map_analysis.yaml: extends: map_analysis) can only mean the preset
     preset = PRESETS_DIR / f"{Path(name).stem}.yaml"
-    return preset if found.resolve() == Path(source).resolve() and preset.is_file() else found
+    return preset if os.path.realpath(found) == os.path.realpath(source) and preset.is_file() else found
 
 
 def _deep_merge(base: dict[str, Any], override: dict[str, Any]) -> dict[str, Any]:
@@ -244,7 +247,7 @@ def load_raw_config(path: str | Path, _chain: tuple[Path, ...] = (), sources: li
     Every file read is appended to ``sources`` when given.
     """
     path = Path(path)
-    resolved = path.resolve()
+    resolved = Path(os.path.realpath(path))  # not Path.resolve, which raises RuntimeError on a link to itself
     if resolved in _chain:
         cycle = " -> ".join(p.name for p in (*_chain, resolved))
         raise ConfigError(f"{path}: extends: cycle {cycle}")
@@ -357,7 +360,7 @@ def resolve_config(
             f"config: expected a config file, a preset name, a mapping or a RunConfig, got {type(config).__name__}"
         )
     for key, value in (overrides or {}).items():
-        raw = set_key(raw, key, value, source=f"{overrides_source} {key}")
+        raw = set_key(raw, key, value, source=f"{overrides_source} {show_key(key)}")
     return parse_config(raw, source=source), source
 
 
@@ -371,14 +374,13 @@ def parse_assignment(text: str, source: str = "--set") -> tuple[str, Any]:
     key, equals, value = text.partition("=")
     key = key.strip()
     if not equals or not key:
-        raise ConfigError(f"{source} {text!r}: expected KEY=VALUE, e.g. agent.radius=0.4")
+        raise ConfigError(f"{source} {show(text)}: expected KEY=VALUE, e.g. agent.radius=0.4")
     try:
-        return key, _parse_yaml(value, f"{source} {key}") if value.strip() else None
+        return key, _parse_yaml(value, f"{source} {show_key(key)}") if value.strip() else None
     except yaml.YAMLError as exc:
-        shown = repr(value) if len(value) <= 60 else repr(value[:57] + "...")
         problem = getattr(exc, "problem", None)
         raise ConfigError(
-            f"{source} {key}: the value {shown} is not valid YAML" + (f" ({problem})" if problem else "")
+            f"{source} {show_key(key)}: the value {show(value)} is not valid YAML" + (f" ({problem})" if problem else "")
         ) from None
 
 
@@ -411,8 +413,8 @@ def set_key(data: dict[str, Any], key: str, value: Any, source: str) -> dict[str
         if last:
             container[part] = _merged_value(current, value)
         else:
-            if not isinstance(current, (dict, list)):
-                current = container[part] = {}
+            if not isinstance(current, (dict, list)):  # a list when indexed: analyzers.0 of a config without analyzers
+                current = container[part] = [] if isinstance(path[depth + 1], int) else {}
             container = current
     return data
 

@@ -38,6 +38,13 @@ def show(value: Any) -> str:
     return str(value)
 
 
+def show_key(key: Any) -> str:
+    """A key as written, quoted as :func:`show` does when it is long or holds a newline or a control character, which
+    would break the message's one line."""
+    text = str(key)
+    return text if text.isprintable() and len(text) <= _LONGEST else show(text)
+
+
 def _plural(phrase: str) -> str:
     """``an integer`` -> ``integers``, ``a list of 3 numbers`` -> ``lists of 3 numbers``."""
     noun = phrase.split(" ", 1)[1] if phrase.startswith(("a ", "an ")) else phrase
@@ -111,7 +118,7 @@ def describe_validation_error(exc: ValidationError, model: type[BaseModel], pref
     kind = error["type"]
     bad_key = kind == "invalid_key" or "[key]" in error["loc"]  # a key YAML read as a number or null
     loc = loc[:-1] if bad_key else loc
-    path = ".".join(str(p) for p in ((prefix,) if prefix else ()) + loc) or "(top level)"
+    path = ".".join(map(show_key, ((prefix,) if prefix else ()) + loc)) or "(top level)"
     if bad_key:  # pydantic's words: "Keys should be strings", "Input should be a valid string"
         return f"{path}: expected names as keys, got {show(error['input'])}"
     if kind == "extra_forbidden":

@@ -201,7 +201,7 @@ def test_set_overrides_reach_the_run(tmp_path):
     ("agent.radius=-1", "map_piece: agent.radius: expected a number > 0, got -1"),
     ("analyzers.3.key=x", "--set analyzers.3.key: analyzers has no item 3 (it lists 1)"),
     # both were internal errors: int() of a 5000-digit index, and of a digit that is not 0-9
-    ("analyzers." + "9" * 5000 + ".key=x", "--set analyzers." + "9" * 5000 + ".key: unknown key '999"),
+    ("analyzers." + "9" * 5000 + ".key=x", "--set 'analyzers." + "9" * 50 + "...' (5,014 characters): unknown key '999"),
     ("analyzers.\u00b2.key=x", "--set analyzers.\u00b2.key: unknown key '\u00b2' (expected one of: plugin, params, key)"),
     ("terminals.params.nope=1", "map_piece: terminals.params.nope: unknown key"),
 ])
@@ -371,3 +371,24 @@ def test_a_name_of_100000_characters_is_cut_short_in_the_message(args, says, tmp
     assert main(["run", "map_piece", "sample:straight_corridor", "-o", str(tmp_path / "out"), *args]) == 2
     error = capsys.readouterr().err
     assert error.startswith(f"g2s: error: {says}") and len(error) < 300 and error.count("\n") == 1
+
+
+@pytest.mark.parametrize("config", ["loop.yaml", "extends_loop.yaml"])
+def test_a_config_that_is_a_link_to_itself_is_a_clean_error(config, tmp_path, capsys, monkeypatch):
+    # was exit 1, "internal error: RuntimeError: Symlink loop from '.../loop.yaml'" (Path.resolve)
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "loop.yaml").symlink_to("loop.yaml")
+    (tmp_path / "extends_loop.yaml").write_text("extends: loop.yaml\n")
+    assert main(["run", config, "sample:straight_corridor", "-o", "out"]) == 2
+    assert capsys.readouterr().err == "g2s: error: loop.yaml: cannot read config file (Too many levels of symbolic links)\n"
+
+
+@pytest.mark.parametrize("setting, says", [
+    ("agent.rad\nius=1", "--set 'agent.rad\\nius': unknown key 'rad\\nius' (expected one of: radius, height, max_climb, "
+                         "max_slope)"),  # the newline itself: two lines
+    ("evaluators.0.plugin=traffic", "--set evaluators.0.plugin: evaluators has no item 0 (it lists 0)"),  # was "map_analysis:
+    # evaluators: expected a list of mappings, got a mapping": the index made a mapping of the list map_analysis leaves out
+])
+def test_a_set_key_with_a_newline_or_an_index_into_nothing_is_one_clear_line(setting, says, tmp_path, capsys):
+    assert main(["run", "map_analysis", "sample:straight_corridor", "-o", str(tmp_path / "out"), "--set", setting]) == 2
+    assert capsys.readouterr().err == f"g2s: error: {says}\n"

@@ -216,6 +216,9 @@ def test_set_replaces_a_stage_section_naming_another_plugin_as_extends_does():
      "unreadable value (an integer of more than 4300 digits)"),  # ... use sys.set_int_max_str_digits() to increase the limit)"
     ("agent: {radius: !!binary eQ==}\n", "agent.radius: expected a number > 0, got binary data of 1 byte"),  # "got b'y'"
     ("outputs: {formats: !!set {json: null}}\n", "outputs.formats: expected a list of strings, got a set of 1 item"),  # {'json'}
+    ('"a\\nb": 1\n', "'a\\nb': unknown key (expected one of: mesh, agent, graph, terminals, steiner, loops, roots, simplify, "
+                    "analyzers, evaluators, stop_after, outputs)"),  # the newline itself: two lines
+    ("agent: {radius: 0.3}\n\x07\n", "line 2: character U+0007 is not allowed in YAML"),  # "invalid YAML: not valid YAML"
     ("agent: {radius: 0.3}\n---\nagent: {radius: 0.4}\n",  # "... column 1: but found another document"
      "invalid YAML at line 2, column 1: expected a single document in the stream but found another document"),
 ])
