@@ -400,3 +400,18 @@ def test_an_agent_that_climbs_its_own_height_is_run_by_entry_exit(setting, tmp_p
     # array of size 0 into shape (0,newaxis)": no height was left between the climb and the head-room ray to search
     assert main(["run", "map_piece", "sample:straight_corridor", "-o", str(tmp_path / "out"), "-q", "--set", setting]) == 0
     assert all(line.startswith("g2s: warning: ") for line in capsys.readouterr().err.splitlines())  # none found, maybe
+
+
+def test_a_batch_with_links_to_themselves_is_no_internal_error(tmp_path, capsys, monkeypatch):
+    # both were exit 1, "internal error: RuntimeError: Symlink loop from ...": Path.resolve of the config, and of a
+    # folder's entries when the output folder lies inside the folder
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "levels").mkdir()
+    (tmp_path / "levels" / "floor.obj").write_text("v 0 0 0\nv 20 0 0\nv 20 0 20\nv 0 0 20\nf 1 3 2\nf 1 4 3\n")
+    (tmp_path / "levels" / "self.obj").symlink_to("self.obj")
+    (tmp_path / "loop.yaml").symlink_to("loop.yaml")
+    assert main(["batch", "loop.yaml", "levels", "-o", "runs"]) == 2
+    assert capsys.readouterr().err == "g2s: error: loop.yaml: cannot read config file (Too many levels of symbolic links)\n"
+    assert main(["batch", "graph_only", "levels", "-o", "levels/runs", "-q"]) == 4
+    assert capsys.readouterr().err == ("g2s: graph_only on self failed: levels/self.obj: cannot read mesh file "
+                                       "(Too many levels of symbolic links)\n")
