@@ -11,6 +11,7 @@ what was expected, e.g.::
 from __future__ import annotations
 
 import copy
+import functools
 import os
 import re
 from collections.abc import Mapping, Sequence
@@ -241,37 +242,37 @@ def _merged_value(current: Any, value: Any) -> Any:
     return _deep_merge(current, dict(value)) if same else value
 
 
-def load_raw_config(path: str | Path, _chain: tuple[Path, ...] = (), sources: list[Path] | None = None) -> dict[str, Any]:
+def load_raw_config(path: str | Path, sources: list[Path] | None = None) -> dict[str, Any]:
     """Read a YAML config and everything it ``extends:``, merged, unvalidated.
 
-    Every file read is appended to ``sources`` when given.
+    Every file read is appended to ``sources`` when given. The chain of
+    ``extends:`` is followed in a loop: followed by recursion, a chain of
+    some 500 configs ran out of Python's stack and was said to be nested too
+    deeply.
     """
-    path = Path(path)
-    resolved = Path(os.path.realpath(path))  # not Path.resolve, which raises RuntimeError on a link to itself
-    if resolved in _chain:
-        cycle = " -> ".join(p.name for p in (*_chain, resolved))
-        raise ConfigError(f"{path}: extends: cycle {cycle}")
-    if len(_chain) == MAX_NESTING:  # Python's stack ran out first, named as a file nested too deeply
-        raise ConfigError(f"{path}: extends: a chain of more than {MAX_NESTING} configs ({_chain[0].name} -> {_chain[1].name} -> ...)")
-    data = _read_yaml(path)
-    if sources is not None:
-        sources.append(path)
-    return _merge_extends(data, path.parent, path, (*_chain, resolved), sources)
+    layers: list[dict[str, Any]] = []  # the config, then what it extends, ...
+    chain: list[Path] = []
+    while True:
+        path = Path(path)
+        resolved = Path(os.path.realpath(path))  # not Path.resolve, which raises RuntimeError on a link to itself
+        if resolved in chain:
+            raise ConfigError(f"{path}: extends: cycle {' -> '.join(p.name for p in (*chain, resolved))}")
+        chain.append(resolved)
+        layers.append(_read_yaml(path))
+        if sources is not None:
+            sources.append(path)
+        parent = layers[-1].pop("extends", None)
+        if parent is None:
+            return functools.reduce(_deep_merge, reversed(layers), {})
+        path = _resolve_extends(parent, path.parent, path)
 
 
-def _merge_extends(
-    data: dict[str, Any],
-    base_dir: Path,
-    source: str | Path,
-    chain: tuple[Path, ...],
-    sources: list[Path] | None = None,
-) -> dict[str, Any]:
+def _merge_extends(data: dict[str, Any], base_dir: Path, source: str | Path, sources: list[Path] | None = None) -> dict[str, Any]:
     """``data`` on top of the config its ``extends:`` names (looked up from ``base_dir``)."""
     parent_name = data.pop("extends", None)
     if parent_name is None:
         return data
-    parent_path = _resolve_extends(parent_name, base_dir, source)
-    return _deep_merge(load_raw_config(parent_path, chain, sources), data)
+    return _deep_merge(load_raw_config(_resolve_extends(parent_name, base_dir, source), sources), data)
 
 
 def with_evaluators(raw: dict[str, Any], names: Sequence[str]) -> dict[str, Any]:
@@ -351,7 +352,7 @@ def resolve_config(
         source = "config mapping"
         if nesting_depth(config, MAX_NESTING) > MAX_NESTING:
             raise ConfigError(f"{source}: nested deeper than {MAX_NESTING} levels of mappings and lists")
-        raw = _merge_extends(copy.deepcopy(dict(config)), Path.cwd(), source, (), sources)
+        raw = _merge_extends(copy.deepcopy(dict(config)), Path.cwd(), source, sources)
     elif isinstance(config, (str, Path)):
         source = str(config)
         raw = load_raw_config(find_config(config), sources=sources)
