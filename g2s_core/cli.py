@@ -177,6 +177,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     with warnings.catch_warnings(), interrupts_held(hold=False):  # numpy's warnings (a 1e300 coordinate overflowing) would add lines to the one line of stderr
         warnings.simplefilter("default" if args.verbose else "ignore", RuntimeWarning)
         try:
+            stop_if_interrupted()  # a Ctrl-C that a plugin's import swallowed while the parser was built
             command = plugged.get(args.command) or own[args.command]  # a plugin's command, or why it cannot run
             if isinstance(command, Exception):
                 raise command

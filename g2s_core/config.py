@@ -11,6 +11,7 @@ what was expected, e.g.::
 from __future__ import annotations
 
 import copy
+import functools
 import os
 import re
 from collections.abc import Mapping, Sequence
@@ -22,7 +23,7 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationError, create_model
 
 from g2s_core.errors import ConfigError
 from g2s_core.input_files import MAX_NESTING, nesting_depth, parse_nested, read_text
-from g2s_core.messages import _field_at, _nested_model, describe_validation_error, show
+from g2s_core.messages import _field_at, _nested_model, describe_validation_error, show, show_key
 from g2s_core.stages import BY_KEY, PIPELINE
 
 
@@ -160,10 +161,15 @@ def _read_yaml(path: Path) -> dict[str, Any]:
     text = read_text(path, "config file", ConfigError)
     try:
         data = _parse_yaml(text, str(path))
+    except yaml.reader.ReaderError as exc:  # it has no line, only a position ("invalid YAML: not valid YAML")
+        line = text.count("\n", 0, exc.position) + 1
+        raise ConfigError(f"{path}: line {line}: character U+{exc.character:04X} is not allowed in YAML") from None
     except yaml.YAMLError as exc:
         mark = getattr(exc, "problem_mark", None)
         where = f" at line {mark.line + 1}, column {mark.column + 1}" if mark else ""
         problem = getattr(exc, "problem", None) or "not valid YAML"
+        if problem.startswith("but "):  # "but found another document" says what was expected first
+            problem = f"{exc.context} {problem}"
         raise ConfigError(f"{path}: invalid YAML{where}: {problem}") from None
     if data is None:
         return {}
@@ -209,11 +215,11 @@ def _resolve_extends(name: Any, base_dir: Path, source: Path) -> Path:
         found = find_config(name, base_dir)  # not resolved: messages name the file as the user's paths lead to it
     except ConfigError:
         raise ConfigError(
-            f"{source}: extends: no config file or preset named {name!r} (presets: {', '.join(presets())})"
+            f"{source}: extends: no config file or preset named {show(name)} (presets: {', '.join(presets())})"
         ) from None
     # a file named after the preset it extends (my/map_analysis.yaml: extends: map_analysis) can only mean the preset
     preset = PRESETS_DIR / f"{Path(name).stem}.yaml"
-    return preset if found.resolve() == Path(source).resolve() and preset.is_file() else found
+    return preset if os.path.realpath(found) == os.path.realpath(source) and preset.is_file() else found
 
 
 def _deep_merge(base: dict[str, Any], override: dict[str, Any]) -> dict[str, Any]:
@@ -236,35 +242,37 @@ def _merged_value(current: Any, value: Any) -> Any:
     return _deep_merge(current, dict(value)) if same else value
 
 
-def load_raw_config(path: str | Path, _chain: tuple[Path, ...] = (), sources: list[Path] | None = None) -> dict[str, Any]:
+def load_raw_config(path: str | Path, sources: list[Path] | None = None) -> dict[str, Any]:
     """Read a YAML config and everything it ``extends:``, merged, unvalidated.
 
-    Every file read is appended to ``sources`` when given.
+    Every file read is appended to ``sources`` when given. The chain of
+    ``extends:`` is followed in a loop: followed by recursion, a chain of
+    some 500 configs ran out of Python's stack and was said to be nested too
+    deeply.
     """
-    path = Path(path)
-    resolved = path.resolve()
-    if resolved in _chain:
-        cycle = " -> ".join(p.name for p in (*_chain, resolved))
-        raise ConfigError(f"{path}: extends: cycle {cycle}")
-    data = _read_yaml(path)
-    if sources is not None:
-        sources.append(path)
-    return _merge_extends(data, path.parent, path, (*_chain, resolved), sources)
+    layers: list[dict[str, Any]] = []  # the config, then what it extends, ...
+    chain: list[Path] = []
+    while True:
+        path = Path(path)
+        resolved = Path(os.path.realpath(path))  # not Path.resolve, which raises RuntimeError on a link to itself
+        if resolved in chain:
+            raise ConfigError(f"{path}: extends: cycle {' -> '.join(p.name for p in (*chain, resolved))}")
+        chain.append(resolved)
+        layers.append(_read_yaml(path))
+        if sources is not None:
+            sources.append(path)
+        parent = layers[-1].pop("extends", None)
+        if parent is None:
+            return functools.reduce(_deep_merge, reversed(layers), {})
+        path = _resolve_extends(parent, path.parent, path)
 
 
-def _merge_extends(
-    data: dict[str, Any],
-    base_dir: Path,
-    source: str | Path,
-    chain: tuple[Path, ...],
-    sources: list[Path] | None = None,
-) -> dict[str, Any]:
+def _merge_extends(data: dict[str, Any], base_dir: Path, source: str | Path, sources: list[Path] | None = None) -> dict[str, Any]:
     """``data`` on top of the config its ``extends:`` names (looked up from ``base_dir``)."""
     parent_name = data.pop("extends", None)
     if parent_name is None:
         return data
-    parent_path = _resolve_extends(parent_name, base_dir, source)
-    return _deep_merge(load_raw_config(parent_path, chain, sources), data)
+    return _deep_merge(load_raw_config(_resolve_extends(parent_name, base_dir, source), sources), data)
 
 
 def with_evaluators(raw: dict[str, Any], names: Sequence[str]) -> dict[str, Any]:
@@ -344,7 +352,7 @@ def resolve_config(
         source = "config mapping"
         if nesting_depth(config, MAX_NESTING) > MAX_NESTING:
             raise ConfigError(f"{source}: nested deeper than {MAX_NESTING} levels of mappings and lists")
-        raw = _merge_extends(copy.deepcopy(dict(config)), Path.cwd(), source, (), sources)
+        raw = _merge_extends(copy.deepcopy(dict(config)), Path.cwd(), source, sources)
     elif isinstance(config, (str, Path)):
         source = str(config)
         raw = load_raw_config(find_config(config), sources=sources)
@@ -353,7 +361,7 @@ def resolve_config(
             f"config: expected a config file, a preset name, a mapping or a RunConfig, got {type(config).__name__}"
         )
     for key, value in (overrides or {}).items():
-        raw = set_key(raw, key, value, source=f"{overrides_source} {key}")
+        raw = set_key(raw, key, value, source=f"{overrides_source} {show_key(key)}")
     return parse_config(raw, source=source), source
 
 
@@ -367,14 +375,13 @@ def parse_assignment(text: str, source: str = "--set") -> tuple[str, Any]:
     key, equals, value = text.partition("=")
     key = key.strip()
     if not equals or not key:
-        raise ConfigError(f"{source} {text!r}: expected KEY=VALUE, e.g. agent.radius=0.4")
+        raise ConfigError(f"{source} {show(text)}: expected KEY=VALUE, e.g. agent.radius=0.4")
     try:
-        return key, _parse_yaml(value, f"{source} {key}") if value.strip() else None
+        return key, _parse_yaml(value, f"{source} {show_key(key)}") if value.strip() else None
     except yaml.YAMLError as exc:
-        shown = repr(value) if len(value) <= 60 else repr(value[:57] + "...")
         problem = getattr(exc, "problem", None)
         raise ConfigError(
-            f"{source} {key}: the value {shown} is not valid YAML" + (f" ({problem})" if problem else "")
+            f"{source} {show_key(key)}: the value {show(value)} is not valid YAML" + (f" ({problem})" if problem else "")
         ) from None
 
 
@@ -407,8 +414,8 @@ def set_key(data: dict[str, Any], key: str, value: Any, source: str) -> dict[str
         if last:
             container[part] = _merged_value(current, value)
         else:
-            if not isinstance(current, (dict, list)):
-                current = container[part] = {}
+            if not isinstance(current, (dict, list)):  # a list when indexed: analyzers.0 of a config without analyzers
+                current = container[part] = [] if isinstance(path[depth + 1], int) else {}
             container = current
     return data
 
@@ -420,7 +427,7 @@ def _check_key(path: tuple[str | int, ...], source: str) -> None:
         owner = RunConfig if depth == 1 else _nested_model(_field_at(RunConfig, path[: depth - 1]))
         if owner is None:  # free-form mapping: a plugin's params, checked by the plugin's model
             return
-        raise ConfigError(f"{source}: unknown key {part!r} (expected one of: {', '.join(owner.model_fields)})")
+        raise ConfigError(f"{source}: unknown key {show(part)} (expected one of: {', '.join(owner.model_fields)})")
 
 
 def parse_config(data: dict[str, Any], source: str = "<config>") -> RunConfig:

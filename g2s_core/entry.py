@@ -2,8 +2,9 @@
 
 Loading the command line (:mod:`g2s_core.cli`, with pydantic, pluggy, rich
 and YAML) takes about half a second; a Ctrl-C then printed a traceback. This
-module, like the package's ``__init__``, imports only the standard library and
-loads the command line under its own interrupt handling, so that a Ctrl-C at
+module, like the package's ``__init__``, imports only the standard library (and
+:mod:`g2s_core.result_folder`, which needs no more) and loads the command
+line under the command's interrupt handling, so that a Ctrl-C at
 any time ends as ``g2s: interrupted``, exit code 130.
 """
 
@@ -18,9 +19,15 @@ def main() -> int:
     folder behind, half written."""
     signal.signal(signal.SIGTERM, signal.default_int_handler)
     try:
-        from g2s_core import cli
+        from g2s_core.result_folder import interrupts_held, stop_if_interrupted
 
-        return cli.main()
+        # remembered, as in the command: a Ctrl-C that lands in the import system's weakref callback was printed
+        # as "Exception ignored in ..." and lost, and the run went on and wrote its results
+        with interrupts_held(hold=False):
+            from g2s_core import cli
+
+            stop_if_interrupted()
+            return cli.main()
     except KeyboardInterrupt:  # cli.main answers it itself once its parser is built
         print("g2s: interrupted", file=sys.stderr)
         return 130

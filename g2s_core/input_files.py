@@ -17,6 +17,7 @@ from __future__ import annotations
 import json
 import os
 import stat
+import sys
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any
@@ -120,8 +121,9 @@ def parse_nested(text: str, parse: Callable[[str], Any], source: str, error: typ
         depth = MAX_NESTING + 1
     except json.JSONDecodeError:
         raise
-    except (ValueError, OverflowError) as exc:
-        raise error(f"{source}: unreadable value ({exc})") from None
+    except (ValueError, OverflowError) as exc:  # Python's words for a long integer advise a call of Python's
+        why = f"an integer of more than {sys.get_int_max_str_digits()} digits" if "int_max_str_digits" in str(exc) else exc
+        raise error(f"{source}: unreadable value ({why})") from None
     else:
         depth = nesting_depth(data, MAX_NESTING)
     if depth > MAX_NESTING:

@@ -17,19 +17,32 @@ from pydantic.fields import FieldInfo
 _TYPE_NAMES = {int: "an integer", float: "a number", bool: "true or false", str: "a string", dict: "a mapping"}
 
 
+_LONGEST = 60  # characters of a text, and digits of an integer, shown in full: a megabyte of text was one line
+
+
 def show(value: Any) -> str:
-    """A value as the user wrote it in YAML."""
+    """A value as the user wrote it in YAML, a long text or integer cut short (``'xxx...' (1,000,000 characters)``)."""
     if value is None:
         return "null"
     if isinstance(value, bool):
         return "true" if value else "false"
     if isinstance(value, str):
-        return repr(value)
+        return repr(value) if len(value) <= _LONGEST else f"{value[:_LONGEST] + '...'!r} ({len(value):,} characters)"
+    if isinstance(value, int) and len(digits := str(abs(value))) > _LONGEST:
+        return f"an integer of {len(digits):,} digits"
     if isinstance(value, dict):
         return "a mapping"
-    if isinstance(value, list):
-        return f"a list of {len(value)} item{'s' if len(value) != 1 else ''}"
+    if isinstance(value, (list, set, bytes)):  # YAML's !!set and !!binary too
+        kind, unit = {bytes: ("binary data", "byte"), set: ("a set", "item")}.get(type(value), ("a list", "item"))
+        return f"{kind} of {len(value)} {unit}{'s' if len(value) != 1 else ''}"
     return str(value)
+
+
+def show_key(key: Any) -> str:
+    """A key as written, quoted as :func:`show` does when it is long or holds a newline or a control character, which
+    would break the message's one line."""
+    text = str(key)
+    return text if text.isprintable() and len(text) <= _LONGEST else show(text)
 
 
 def _plural(phrase: str) -> str:
@@ -102,8 +115,12 @@ def describe_validation_error(exc: ValidationError, model: type[BaseModel], pref
     """The first error of ``exc`` as ``key.path: expected ..., got ...``."""
     error = exc.errors()[0]
     loc = tuple(p for p in error["loc"] if not (isinstance(p, str) and ("[" in p or p in {"function-after"})))
-    path = ".".join(str(p) for p in ((prefix,) if prefix else ()) + loc) or "(top level)"
     kind = error["type"]
+    bad_key = kind == "invalid_key" or "[key]" in error["loc"]  # a key YAML read as a number or null
+    loc = loc[:-1] if bad_key else loc
+    path = ".".join(map(show_key, ((prefix,) if prefix else ()) + loc)) or "(top level)"
+    if bad_key:  # pydantic's words: "Keys should be strings", "Input should be a valid string"
+        return f"{path}: expected names as keys, got {show(error['input'])}"
     if kind == "extra_forbidden":
         owner = model if len(loc) == 1 else _nested_model(_field_at(model, loc[:-1]))
         known = ", ".join(owner.model_fields) if owner else ""

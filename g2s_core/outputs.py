@@ -14,6 +14,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from g2s_core.errors import G2SError
+from g2s_core.messages import show
 from g2s_core.model import RunResult
 from g2s_core.registry import PluginInfo, Registry, installed
 from g2s_core.result_folder import check_writable, refuse_inputs, staged
@@ -46,7 +47,7 @@ def parse_formats(formats: str | Sequence[str], source: str = "--format", regist
     names = list(dict.fromkeys(name for name in (str(item).strip().lower() for item in items) if name))  # once each
     for name in names:
         if name not in known:
-            raise G2SError(f"{source}: unknown output format {name!r} (expected some of: {', '.join(known)})")
+            raise G2SError(f"{source}: unknown output format {show(name)} (expected some of: {', '.join(known)})")
     if not names:
         raise G2SError(f"{source}: no output format given (expected some of: {', '.join(known)})")
     return names

@@ -25,7 +25,7 @@ from pydantic import ValidationError
 
 from g2s_core import hookspecs
 from g2s_core.errors import ConfigError, G2SError, PluginError, PluginFailure
-from g2s_core.messages import describe_field, describe_validation_error
+from g2s_core.messages import describe_field, describe_validation_error, show
 from g2s_core.plugin import PROJECT, PluginParams
 from g2s_core.stages import BY_HOOK, BY_KEY, STAGES, Stage
 
@@ -199,7 +199,7 @@ class Registry:
         broken = [f"{b.entry_point} of package {b.package!r}" for _, b in self._broken if b.entry_point.startswith(f"{stage}.")]
         also = f"; failed to load: {', '.join(broken)}, see `g2s plugins`" if broken else ""
         where = f"{key}: " if key else ""
-        raise ConfigError(f"{where}{title} plugin {name!r} is not installed (installed: {installed}{also})")
+        raise ConfigError(f"{where}{title} plugin {show(name)} is not installed (installed: {installed}{also})")
 
     def validate_params(self, info: PluginInfo, params: dict[str, Any], key: str, text: bool = False) -> PluginParams:
         """The plugin's parameter model built from ``params``; one-line error at ``key``.

@@ -5,8 +5,9 @@ be created or written. :func:`staged` gives the writers an empty staging
 folder on the same file system as the output folder and, once every writer
 has finished, moves the files into place:
 
-* the output folder does not exist yet: the staging folder is made beside it
-  and renamed to it (one atomic rename);
+* the output folder does not exist yet: the staging folder is made beside it,
+  and a folder inside it, made with the umask's mode, is renamed to it (one
+  atomic rename);
 * it exists (it may hold the user's other files, even the input mesh): the
   staging folder is made inside it and each file is renamed into place, with
   Ctrl-C held back until the last rename is done.
@@ -26,11 +27,13 @@ import os
 import re
 import shutil
 import signal
+import sys
 import tempfile
 import threading
 from collections.abc import Iterator, Sequence
 from contextlib import contextmanager
 from pathlib import Path
+from typing import Any
 
 from g2s_core.errors import G2SError
 
@@ -91,19 +94,29 @@ def staged(outdir: Path, obsolete: Sequence[Path] = (), protect: Sequence[Path] 
         _remove_stale(home)
         beside = "" if inside else f".{outdir.name[:64]}"  # short enough for any name limit
         staging = Path(tempfile.mkdtemp(dir=home, prefix=f"{beside}{STAGING_MARK}{os.getpid()}-"))
-        yield staging
+        # the folder that becomes the output folder is made by mkdir, which gives it the umask's mode: mkdtemp's
+        # 0700 kept other users (a web server showing report.html) out of a new output folder
+        results = staging if inside else staging / outdir.name
+        results.mkdir(exist_ok=True)
+        yield results
         stop_if_interrupted()
         with interrupts_held():
-            _move_into_place(staging, outdir, obsolete, protect)
+            _move_into_place(results, outdir, obsolete, protect)
+            if results != staging:
+                staging.rmdir()  # emptied by the rename
     except BaseException as exc:
+        # another process removed the folder (rm -r of the output folder): a writer's FileNotFoundError is no fault of its own
+        vanished = staging is not None and not staging.is_dir() and isinstance(exc, Exception)
         if staging is not None:
             shutil.rmtree(staging, ignore_errors=True)
         for folder in reversed(created):
             with contextlib.suppress(OSError):  # not empty: something else was put there meanwhile
                 folder.rmdir()
         storage = _storage_error(exc)
-        if storage is not None:
-            raise G2SError(f"{outdir}: cannot write results ({storage.strerror or storage}); nothing was written") from None
+        if storage is not None or vanished:
+            why = "its folder was removed meanwhile" if vanished else storage.strerror or storage
+            left = f" (the staging folder {staging} could not be removed; the next run removes it)" if staging and staging.exists() else ""
+            raise G2SError(f"{outdir}: cannot write results ({why}); nothing was written{left}") from None
         raise
 
 
@@ -198,8 +211,10 @@ def interrupts_held(hold: bool = True) -> Iterator[None]:
 
     With ``hold`` false (a whole command) they raise KeyboardInterrupt at once and are remembered for
     :func:`stop_if_interrupted`: trimesh, scipy and PIL catch BaseException while they load, and a run whose
-    interrupt they swallowed went on and wrote its results. A signal the parent process ignores (a background
-    job's Ctrl-C) stays ignored.
+    interrupt they swallowed went on and wrote its results. Python itself swallows one raised in a ``__del__``
+    method or a weakref callback (the import system's, while a module loads), printing ``Exception ignored in ...``
+    and its traceback; that print is left out, the interrupt being remembered. A signal the parent process
+    ignores (a background job's Ctrl-C) stays ignored.
     """
     if threading.current_thread() is not threading.main_thread():
         yield
@@ -212,10 +227,16 @@ def interrupts_held(hold: bool = True) -> Iterator[None]:
             _TAKEN.append(number)
             raise KeyboardInterrupt
 
+    def unraisable(problem: Any) -> None:
+        if not (problem.exc_type is KeyboardInterrupt and _TAKEN):
+            previous_hook(problem)
+
     previous = {sig: signal.signal(sig, take) for sig in (signal.SIGINT, signal.SIGTERM) if signal.getsignal(sig) is not signal.SIG_IGN}
+    previous_hook, sys.unraisablehook = sys.unraisablehook, sys.unraisablehook if hold else unraisable
     try:
         yield
     finally:
+        sys.unraisablehook = previous_hook
         for sig, handler in previous.items():
             signal.signal(sig, handler)
         if not hold:  # the command is over: a script's next run in this process starts afresh

@@ -201,3 +201,38 @@ def test_set_replaces_a_stage_section_naming_another_plugin_as_extends_does():
     same, _ = resolve_config("map_analysis", {"terminals": {"params": {"radius": 4.0}}})
     assert same.terminals.plugin == "coverage" and same.terminals.params["radius"] == 4.0
     assert same.terminals.params["traffic_weight"] == 0.1
+
+
+@pytest.mark.parametrize("text, expected", [
+    # robust6's configs that fight back (4 December 2026); what each said before
+    ("agent: {1: 1}\n", "agent: expected names as keys, got 1"),  # "agent.1: expected a mapping, got 1"
+    ("agent: {null: 1}\n", "agent: expected names as keys, got null"),  # "agent.None: keys should be strings, got null"
+    ("graph: {plugin: navmesh, params: {null: 2}}\n",  # "graph.params.None: input should be a valid string, got null"
+     "graph.params: expected names as keys, got null"),
+    ("agent: {radius: " + "x" * 1_000_000 + "}\n",  # the megabyte, on one line
+     "agent.radius: expected a number > 0, got '" + "x" * 60 + "...' (1,000,000 characters)"),
+    ("agent: {radius: 1" + "0" * 400 + "}\n", "agent.radius: expected a number > 0, got an integer of 401 digits"),  # all 401
+    ("agent: {radius: 1" + "0" * 5000 + "}\n",  # "(Exceeds the limit (4300 digits) for integer string conversion: ...
+     "unreadable value (an integer of more than 4300 digits)"),  # ... use sys.set_int_max_str_digits() to increase the limit)"
+    ("agent: {radius: !!binary eQ==}\n", "agent.radius: expected a number > 0, got binary data of 1 byte"),  # "got b'y'"
+    ("outputs: {formats: !!set {json: null}}\n", "outputs.formats: expected a list of strings, got a set of 1 item"),  # {'json'}
+    ('"a\\nb": 1\n', "'a\\nb': unknown key (expected one of: mesh, agent, graph, terminals, steiner, loops, roots, simplify, "
+                    "analyzers, evaluators, stop_after, outputs)"),  # the newline itself: two lines
+    ("agent: {radius: 0.3}\n\x07\n", "line 2: character U+0007 is not allowed in YAML"),  # "invalid YAML: not valid YAML"
+    ("agent: {radius: 0.3}\n---\nagent: {radius: 0.4}\n",  # "... column 1: but found another document"
+     "invalid YAML at line 2, column 1: expected a single document in the stream but found another document"),
+])
+def test_configs_that_fight_back_are_said_in_g2s_words_on_a_short_line(tmp_path, text, expected):
+    message = error_of(write(tmp_path, "c.yaml", text))
+    assert message == f"{tmp_path}/c.yaml: {expected}"
+
+
+def test_a_chain_of_a_thousand_extends_is_read(tmp_path):
+    # was "c487.yaml: nested deeper than 100 levels of mappings and lists": Python's stack ran out inside the YAML reader
+    for index in range(1000):
+        (tmp_path / f"c{index}.yaml").write_text(f"extends: c{index + 1}\n")
+    (tmp_path / "c1000.yaml").write_text("extends: map_piece\nagent: {radius: 0.3}\n")
+    config = load_config(tmp_path / "c0.yaml")
+    assert config.agent.radius == 0.3 and config.terminals.plugin == "entry_exit"
+    (tmp_path / "c1000.yaml").write_text("extends: c500\n")
+    assert error_of(tmp_path / "c0.yaml").endswith("c1000.yaml -> c500.yaml")  # a cycle is still one

@@ -53,13 +53,18 @@ def _changed(document: dict, change) -> dict:
     (lambda d: d.__setitem__("schema_version", 2.0), "schema_version 2.0 is not supported (this g2s reads 1, 2, 3)"),
     # was "malformed structure file (ValueError: edges[0].target: node 999999 is not in nodes)"
     (lambda d: d["edges"][0].__setitem__("target", 999999), "edges[0].target: node 999999 is not in nodes"),
+    # a node given the id of another: named by an edge to the id it hid ("edges[I].target: node N is not in nodes"),
+    # or, when an edge could not tell, the two records merged into one node silently
+    (lambda d: d["nodes"][2].__setitem__("id", d["nodes"][0]["id"]), "nodes[2].id: id 0 is given twice (first at nodes[0])"),
+    (lambda d: d["nodes"].append({**d["nodes"][0], "position": [9.0, 9.0, 9.0]}),
+     "nodes[N].id: id 0 is given twice (first at nodes[0])"),
 ], ids=lambda value: value if isinstance(value, str) else "")
 def test_a_damaged_structure_file_is_named_in_g2s_words(change, says, written, tmp_path):
     path = tmp_path / "structure.json"
     path.write_text(json.dumps(_changed(written, change)))
     with pytest.raises(G2SError) as caught:
         load_result(path)
-    assert str(caught.value) == f"{path}: {says}"
+    assert str(caught.value) == f"{path}: {says}".replace("[N]", f"[{len(written['nodes'])}]")
 
 
 def test_the_written_file_loads(written, tmp_path):

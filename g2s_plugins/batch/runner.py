@@ -249,7 +249,9 @@ def expand_inputs(inputs: Sequence[str], exclude: Path | None = None) -> list[tu
         if item.startswith(SAMPLE_PREFIX):
             add(re.sub(r"[^A-Za-z0-9._-]+", "_", item[len(SAMPLE_PREFIX):]).strip("_"), item, item)
         elif path.is_dir():
-            found = [p for p in _mesh_files(path) if exclude is None or not p.resolve().is_relative_to(exclude.resolve())]
+            # os.path.realpath, not Path.resolve, which raises RuntimeError on a link to itself
+            found = [p for p in _mesh_files(path)
+                     if exclude is None or not Path(os.path.realpath(p)).is_relative_to(os.path.realpath(exclude))]
             if not found:
                 raise G2SError(f"{item}: no mesh files in this folder (expected {', '.join(SUPPORTED_SUFFIXES)})")
             for file in found:
@@ -292,16 +294,16 @@ def make_pairs(
     levels = expand_inputs(inputs, exclude=outdir)
     registry = installed()
     pairs: list[Pair] = []
-    seen: dict[str, tuple[str, Path]] = {}
+    seen: dict[str, tuple[str, str]] = {}
     for config_path in configs:
         source = str(config_path)
         name = Path(config_path).stem
         found = find_config(config_path)
         if name in seen:
-            if seen[name][1] == found.resolve():  # the same config twice, as a level given twice: its pairs once
+            if seen[name][1] == os.path.realpath(found):  # the same config twice, as a level given twice: its pairs once
                 continue
             raise G2SError(f"{source}: config name {name!r} is also that of {seen[name][0]}; rename one of the files")
-        seen[name] = source, found.resolve()
+        seen[name] = source, os.path.realpath(found)
         raw = with_evaluators(load_raw_config(found), evaluators)
         config = parse_config(raw, source=source)
         pipeline.plan(config, registry, source=source)

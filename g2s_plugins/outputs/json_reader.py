@@ -152,8 +152,11 @@ def _loaded(document: dict[str, Any], path: Path) -> LoadedResult:
     directed = bool(document["directed"])
     structure: nx.Graph = nx.DiGraph() if directed else nx.Graph()
     analysis: dict[str, dict[int, float | None]] = {key: {} for key in document["analysis_keys"]}
-    for record in document["nodes"]:
+    first: dict[int, int] = {}  # node id -> the index of the record giving it
+    for index, record in enumerate(document["nodes"]):
         node = int(record["id"])
+        if (earlier := first.setdefault(node, index)) != index:  # add_node would merge the two records silently
+            raise MalformedField(f"nodes[{index}].id: id {node} is given twice (first at nodes[{earlier}])")
         attrs: dict[str, Any] = dict(record["extra"])
         attrs["pos"] = vec3(record["position"])
         if record["normal"] is not None:

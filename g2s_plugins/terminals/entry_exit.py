@@ -407,12 +407,12 @@ def _fan(
         rows = np.nonzero(ok)[0]
         head = np.repeat(base + normal * (s.height - s.lift), k, axis=0)[rows]
         ok[rows[caster.first_hits(head, dirs[rows]).distance <= edge[rows]]] = False
-    if ok.any():
+    heights = np.arange(s.climb + s.delta / 2.0, s.height - s.lift, s.delta)  # none when the agent climbs its height
+    if ok.any() and len(heights):
         # Bars across the way (a railing's rails between its posts) pass between the rays at ``lift`` and
         # the head-room ray: the way must be clear at every search step of height from the climb up to the
         # head-room ray until the agent's body is past the edge, one radius beyond it.
         rows = np.nonzero(ok)[0]
-        heights = np.arange(s.climb + s.delta / 2.0, s.height - s.lift, s.delta)
         start = np.repeat(base, k, axis=0)[rows]
         up = np.repeat(normal, k, axis=0)[rows]
         origins = (start[None, :, :] + heights[:, None, None] * up[None, :, :]).reshape(-1, 3)
