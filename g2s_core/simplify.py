@@ -218,11 +218,11 @@ def _from_whole_forest(forest: nx.DiGraph, whole_forest: WholeForest) -> nx.DiGr
 def _depths(parent: np.ndarray, kept: np.ndarray) -> np.ndarray:
     """(n,) each node's depth once the nodes not ``kept`` are gone: its kept ancestors in the forest of ``parent``
     (Algorithm 4 joins a removed node's children to its parent; the loop pass removes leaves). Pointer jumping,
-    O(n log depth)."""
+    O(n log n)."""
     # above[i]: an ancestor of i (a root: itself); count[i]: the kept nodes above i up to it, itself included
     rooted = parent >= 0
     above = np.where(rooted, parent, np.arange(len(parent)))
     count = (rooted & kept[above]).astype(np.int64)
-    while (above != above[above]).any():
+    for _ in range(len(parent).bit_length()):  # each doubles the distance covered: enough for a path of n nodes
         above, count = above[above], count + count[above]
     return count
