@@ -94,6 +94,10 @@ def g2s_simplify_predicate(
     gave (``None`` on the first call) and simplifies ``forest`` anew with each
     predicate it returns, until it returns ``None``, which keeps that
     structure. A hook that does not take ``simplified`` is asked once.
+
+    ``P`` may carry ``P.whole_forest``, the whole forest's simplification
+    in one call (:mod:`g2s_core.simplify`), which must answer as Algorithm 4
+    asking ``P`` chain by chain does; the pipeline then takes it.
     """
 
 

@@ -218,7 +218,8 @@ class Registry:
         A :class:`~g2s_core.errors.G2SError` the plugin raises (bad input it
         found) passes through; any other exception, and a wrong result, becomes
         ``info.failure(...)``. A returned function is wrapped so that its own
-        results (and, unless the stage says otherwise, exceptions) are checked the same way.
+        results (and, unless the stage says otherwise, exceptions) are checked the same way; the wrapper
+        carries the function's own attributes, each callable one guarded as the function is.
         """
         others = [p for p in self.manager.get_plugins() if p is not info.plugin]
         caller = self.manager.subset_hook_caller(info.kind.hook, remove_plugins=others)
@@ -240,6 +241,9 @@ class Registry:
                 raise info.failure(f"its function returned {wrong}")
             return answer
 
+        # e.g. a predicate's whole-forest path (g2s_core.simplify)
+        checked.__dict__.update({name: _guarded(info, attribute, "its function raised") if callable(attribute) else attribute
+                                 for name, attribute in getattr(value, "__dict__", {}).items()})
         return checked
 
     def takes(self, info: PluginInfo, argument: str) -> bool:

@@ -26,6 +26,17 @@ triangle and never vanishes. Measured (docs/analysis_quality.md): these
 nodes were 7 % of nav_test's and 4 % of a 1k-polygon dungeon's polygons
 in the structure.
 
+A predicate may carry a whole-forest path, ``predicate.whole_forest``: a
+function of the forest as :class:`ForestArrays` returning what Algorithm 4
+and the loop pass above do with the predicate's answers (which nodes stay,
+which edges they add, in order), computed in one call (the ``surface_los``
+predicate does it in C++, src/forest_simplify.hpp). The structure is then
+built from that answer, the same graph as the loop below would build: the
+kept nodes in the forest's order, each node's successors and predecessors
+in the order their edges were made (the forest's first, then the added
+ones). This path owes the loop below the same answer on every forest, which
+its plugin's tests check.
+
 Complexity: O(n + k) predicate calls, k = number of removals, each call
 plus the predicate's own cost.
 """
@@ -37,8 +48,10 @@ import itertools
 import math
 from collections import deque
 from collections.abc import Callable
+from dataclasses import dataclass
 
 import networkx as nx
+import numpy as np
 
 from g2s_core.model import graph_of
 from g2s_core.rooted import tree_parent
@@ -50,12 +63,40 @@ networkx answers every such question through new view objects, which on a 100k-p
 the predicate itself (docs/performance.md)."""
 
 
+@dataclass(frozen=True)
+class ForestArrays:
+    """A rooted forest of n integer-id nodes and m loop edges, a row per node in the forest's node order.
+
+    ``ids`` (n,) int64; ``parent`` (n,) int64 the row of each node's tree parent, -1 for a root; ``depth`` (n,)
+    int64; ``fixed`` (n,) bool: never removed (terminals); ``loops`` (m,2) int64 rows of the loop edges u -> v;
+    ``roots`` (r,) int64 rows of ``graph["roots"]``; ``points`` (n,3) float64 ``pos``, m; ``data`` each node's own
+    attribute dict (read only).
+    """
+
+    ids: np.ndarray
+    parent: np.ndarray
+    depth: np.ndarray
+    fixed: np.ndarray
+    loops: np.ndarray
+    roots: np.ndarray
+    points: np.ndarray
+    data: list[dict]
+
+
+WholeForest = Callable[[ForestArrays], tuple[np.ndarray, np.ndarray, np.ndarray]]
+"""``predicate.whole_forest(forest)``: (n,) bool the nodes that stay, (k,2) int64 the rows of the edges added
+(A -> C, or the loop pass's loop edge), in the order added, and (k,) bool which of them are loop edges."""
+
+
 def simplify_forest(forest: nx.DiGraph, predicate: Predicate) -> nx.DiGraph:
     """A simplified copy of a rooted ``forest`` (see :mod:`g2s_core.rooted`).
 
     New edges A -> C get ``weight`` = Euclidean distance between their ``pos``.
     ``depth`` is recomputed; ``graph["roots"]`` is kept.
     """
+    whole_forest: WholeForest | None = getattr(predicate, "whole_forest", None)
+    if whole_forest is not None:
+        return _from_whole_forest(forest, whole_forest)
     # a copy as DiGraph.copy() makes it (see graph_of), and each node's children and loop partners
     edges = [(a, b, dict(data)) for a, below in forest.adjacency() for b, data in below.items()]
     tree = graph_of(nx.DiGraph(**forest.graph), {node: dict(data) for node, data in forest.nodes(data=True)}, edges)
@@ -135,3 +176,53 @@ def _length(tree: nx.DiGraph, a: int, c: int) -> float:
     ``numpy.linalg.norm`` in plain floats (0.2 us a call instead of numpy's 6 us)."""
     (ax, ay, az), (cx, cy, cz) = tree.nodes[a]["pos"], tree.nodes[c]["pos"]
     return math.sqrt((ax - cx) * (ax - cx) + (ay - cy) * (ay - cy) + (az - cz) * (az - cz))
+
+
+def forest_arrays(forest: nx.DiGraph) -> ForestArrays:
+    """``forest`` (integer ids) as :class:`ForestArrays`: its adjacency read by numpy's C loops, O(n + m log n)."""
+    succ, data, n = forest._succ, list(forest._node.values()), forest.number_of_nodes()
+    ids = np.fromiter(succ, np.int64, n)
+    order = np.argsort(ids)
+    tails = np.repeat(np.arange(n), np.fromiter(map(len, succ.values()), np.int64, n))
+    heads = order[np.searchsorted(ids, np.fromiter(itertools.chain.from_iterable(succ.values()), np.int64, len(tails)),
+                                  sorter=order)]
+    loop = np.fromiter((e.get("loop", False) for below in succ.values() for e in below.values()), bool, len(tails))
+    parent = np.full(n, -1, dtype=np.int64)
+    parent[heads[~loop]] = tails[~loop]
+    roots = order[np.searchsorted(ids, np.array(forest.graph["roots"], dtype=np.int64), sorter=order)]
+    return ForestArrays(
+        ids=ids, parent=parent, depth=np.fromiter((d["depth"] for d in data), np.int64, n),
+        fixed=np.fromiter((bool(d.get("terminal", False)) for d in data), bool, n),
+        loops=np.stack([tails[loop], heads[loop]], axis=1), roots=roots,
+        points=np.fromiter(itertools.chain.from_iterable(d["pos"] for d in data), np.float64, 3 * n).reshape(n, 3),
+        data=data)
+
+
+def _from_whole_forest(forest: nx.DiGraph, whole_forest: WholeForest) -> nx.DiGraph:
+    """The structure :func:`simplify_forest` builds, from the answer of a predicate's whole-forest path."""
+    arrays = forest_arrays(forest)
+    kept, added, loop = whole_forest(arrays)
+    ids, keep = arrays.ids.tolist(), dict(zip(arrays.ids.tolist(), kept.tolist()))
+    # the forest's edges whose ends both stay, in its order, then the added edges whose ends both stay, in theirs
+    edges = [(a, b, dict(data)) for a, below in forest._succ.items() if keep[a] for b, data in below.items() if keep[b]]
+    added, loop = added[kept[added].all(axis=1)], loop[kept[added].all(axis=1)]
+    offset = arrays.points[added[:, 0]] - arrays.points[added[:, 1]]  # the squares summed in _length's order
+    lengths = np.sqrt(offset[:, 0] * offset[:, 0] + offset[:, 1] * offset[:, 1] + offset[:, 2] * offset[:, 2]).tolist()
+    edges.extend((a, c, {"weight": length, "loop": True} if is_loop else {"weight": length})
+                 for (a, c), length, is_loop in zip(arrays.ids[added].tolist(), lengths, loop.tolist()))
+    depth = _depths(arrays.parent, kept).tolist()
+    nodes = {node: {**data, "depth": d} for node, data, d in zip(ids, arrays.data, depth) if keep[node]}
+    return graph_of(nx.DiGraph(**forest.graph), nodes, edges)
+
+
+def _depths(parent: np.ndarray, kept: np.ndarray) -> np.ndarray:
+    """(n,) each node's depth once the nodes not ``kept`` are gone: its kept ancestors in the forest of ``parent``
+    (Algorithm 4 joins a removed node's children to its parent; the loop pass removes leaves). Pointer jumping,
+    O(n log n)."""
+    # above[i]: an ancestor of i (a root: itself); count[i]: the kept nodes above i up to it, itself included
+    rooted = parent >= 0
+    above = np.where(rooted, parent, np.arange(len(parent)))
+    count = (rooted & kept[above]).astype(np.int64)
+    for _ in range(len(parent).bit_length()):  # each doubles the distance covered: enough for a path of n nodes
+        above, count = above[above], count + count[above]
+    return count

@@ -5,6 +5,8 @@
 * :func:`collapse_rule`: the paper's Algorithm 5 (Sec. 3.1.5) as both line-of-
   sight predicates (``surface_los`` over the navmesh, ``mesh_los`` over the
   level mesh) apply it; they differ only in the line-of-sight test they pass.
+  With a native rule (:class:`RuleArrays`, ``surface_los``'s in C++) the
+  predicate also carries the core's whole-forest path.
 * :func:`normals_angle_deg`: the normal test.
 * :func:`traffic_ranks`: the walking-flow percentile of each node, for the
   rule's optional traffic test (``max_traffic_step``).
@@ -19,8 +21,11 @@ Conventions: metres, degrees, Y up.
 
 from __future__ import annotations
 
+import itertools
 import math
+import operator
 from collections.abc import Callable, Hashable, Mapping, Sequence
+from dataclasses import dataclass
 
 import networkx as nx
 import numpy as np
@@ -30,6 +35,7 @@ from g2s_core.config import AgentConfig
 from g2s_core.errors import PluginError
 from g2s_core.model import NavMesh
 from g2s_core.plugin import PluginParams
+from g2s_core.simplify import ForestArrays
 from g2s_plugins import traffic
 
 Vec = Sequence[float]
@@ -150,8 +156,31 @@ def traffic_ranks(graph: nx.Graph) -> dict[Hashable, float]:
     return {node: value for node, value, keep in zip(arrays.nodes, rank.tolist(), walked.tolist()) if keep}
 
 
+@dataclass(frozen=True)
+class RuleArrays:
+    """:func:`collapse_rule`'s tests on the rows of a :class:`~g2s_core.simplify.ForestArrays` (n nodes).
+
+    ``on_navmesh`` (n,) bool; ``rank`` (n,) float64 the walking-flow percentile of :func:`traffic_ranks`, NaN for
+    a node without one; ``normals`` (n,3) float64; ``normal_lengths`` (n,) float64 their ``math.hypot`` (the
+    lengths :func:`normals_angle_deg` multiplies, so a native angle is the Python one to the bit); then the
+    tolerances of :class:`CollapseParams`.
+    """
+
+    on_navmesh: np.ndarray
+    rank: np.ndarray
+    normals: np.ndarray
+    normal_lengths: np.ndarray
+    max_step: float | None
+    tolerance_deg: float
+    whole_chain: bool
+
+
+NativeRule = Callable[[ForestArrays, RuleArrays], tuple[np.ndarray, np.ndarray, np.ndarray]]
+"""Algorithm 4 with the rule in native code: the whole-forest answer of :mod:`g2s_core.simplify`."""
+
+
 def collapse_rule(
-    params: CollapseParams, line_of_sight: LineOfSight, graph: nx.Graph | None = None
+    params: CollapseParams, line_of_sight: LineOfSight, graph: nx.Graph | None = None, native: NativeRule | None = None
 ) -> Callable[[nx.DiGraph, int, int, int], bool]:
     """``P(tree, A, B, C)`` of the paper's Algorithm 5 with ``params``' tolerances: True when B may be removed.
 
@@ -185,6 +214,10 @@ def collapse_rule(
     false`` when there *is* line of sight, and its last line sets it true
     unconditionally); its text states the intent implemented here: collapse
     only when A and C see each other on the surface.
+
+    With ``native``, the predicate carries ``whole_forest`` (see
+    :mod:`g2s_core.simplify`): ``native`` given the forest and these tests as
+    :class:`RuleArrays`, which must answer as this predicate does.
 
     Raises:
         PluginError: ``max_traffic_step`` is set and there is no ``graph``.
@@ -228,4 +261,16 @@ def collapse_rule(
                 return False
         return line_of_sight(tuple(map(float, node_a["pos"])), tuple(map(float, node_c["pos"])))
 
+    if native is not None:
+        def whole_forest(forest: ForestArrays) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+            data, n = forest.data, len(forest.data)
+            normals = list(map(operator.itemgetter("normal"), data))
+            return native(forest, RuleArrays(
+                on_navmesh=np.fromiter((bool(node.get("on_navmesh", False)) for node in data), bool, n),
+                rank=np.fromiter((ranks.get(node, math.nan) for node in forest.ids.tolist()), np.float64, n),
+                normals=np.fromiter(itertools.chain.from_iterable(normals), np.float64, 3 * n).reshape(n, 3),
+                normal_lengths=np.fromiter(itertools.starmap(math.hypot, normals), np.float64, n),
+                max_step=max_step, tolerance_deg=tolerance_deg, whole_chain=whole_chain))
+
+        predicate.whole_forest = whole_forest  # type: ignore[attr-defined]
     return predicate

@@ -49,6 +49,7 @@ of CPU on levels of 700-1,400 polygons, 0.18 s at 1,974.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import weakref
 from collections.abc import Callable, Hashable
@@ -116,11 +117,17 @@ def restored(
 
 
 def keeping(predicate: Predicate, kept: set[Hashable]) -> Predicate:
-    """``predicate``, except that a node of ``kept`` is never removed."""
+    """``predicate``, except that a node of ``kept`` is never removed; its whole-forest path
+    (:mod:`g2s_core.simplify`) too, where it has one, given those nodes as fixed ones."""
 
     def keep(tree: nx.DiGraph, a: int, b: int, c: int) -> bool:
         return b not in kept and predicate(tree, a, b, c)
 
+    whole_forest = getattr(predicate, "whole_forest", None)
+    if whole_forest is not None:
+        fixed = np.fromiter(kept, np.int64, len(kept))
+        keep.whole_forest = lambda forest: whole_forest(  # type: ignore[attr-defined]
+            dataclasses.replace(forest, fixed=forest.fixed | np.isin(forest.ids, fixed)))
     return keep
 
 

@@ -27,6 +27,8 @@
 #include <DetourNavMeshQuery.h>
 #include <DetourStatus.h>
 
+#include "forest_simplify.hpp"
+
 #include <algorithm>
 #include <array>
 #include <atomic>
@@ -1011,11 +1013,17 @@ public:
         dtPolyRef startRef = 0;
         dtStatus st = query->findNearestPoly(a, ext, &filter, &startRef, start);
         if (dtStatusFailed(st) || startRef == 0) return {false, 0.0f};
+        return ray_from(startRef, start, b, path);
+    }
+
+    // ray's test once the polygon nearest a (startRef, start: the point on it) is found.
+    std::pair<bool, float> ray_from(dtPolyRef startRef, const float* start, const float* b,
+                                    std::vector<dtPolyRef>& path) const {
         for (;;) {
             dtRaycastHit hit{};
             hit.path = path.data();
             hit.maxPath = static_cast<int>(path.size());
-            st = query->raycast(startRef, start, b, &filter, 0, &hit);
+            const dtStatus st = query->raycast(startRef, start, b, &filter, 0, &hit);
             if (dtStatusFailed(st)) return {false, 0.0f};
             if (dtStatusDetail(st, DT_BUFFER_TOO_SMALL)) {
                 path.resize(path.size() * 2);
@@ -1683,6 +1691,75 @@ void get3(const Vec3In& a, float* out) {
     for (int i = 0; i < 3; ++i) out[i] = static_cast<float>(a[i]);
 }
 
+using IdsIn = nb::ndarray<const int64_t, nb::ndim<1>, nb::c_contig, nb::device::cpu>;
+using MaskIn = nb::ndarray<const bool, nb::ndim<1>, nb::c_contig, nb::device::cpu>;
+using ValuesIn = nb::ndarray<const double, nb::ndim<1>, nb::c_contig, nb::device::cpu>;
+using PairsIn = nb::ndarray<const int64_t, nb::shape<-1, 2>, nb::c_contig, nb::device::cpu>;
+
+// Algorithm 5's collapse rule as g2s_plugins/_surface.py's collapse_rule states it, on the forest's arrays (node
+// indices), with the surface_los predicate's line of sight (the line_of_sight binding's two tests). The same
+// floating-point steps as the Python rule, so the same answers: the normals' lengths come from Python's
+// math.hypot, the angle is acos of the clamped cosine times 180 / pi (math.degrees), the traffic test the
+// difference of two percentiles.
+struct SurfaceRule {
+    const NavMeshCore& nav;
+    const double* points;          // (n,3) positions, the navmesh's local frame
+    const bool* on_navmesh;        // (n,)
+    const double* rank;            // (n,) walking-flow percentile, NaN for a node without one
+    std::optional<double> max_step;
+    const double* normals;         // (n,3)
+    const double* normal_length;   // (n,) math.hypot of each normal
+    double tolerance_deg;
+    bool whole_chain;
+    double step;
+    float horizontal;
+    std::optional<double> max_gap;
+    std::vector<dtPolyRef> path = std::vector<dtPolyRef>(256);
+    // the polygon nearest the last A asked (Algorithm 4 asks every chain from one A in a row): Detour's answer for
+    // a point depends on the point alone
+    int64_t from = -1;
+    dtPolyRef start_ref = 0;
+    float start[3] = {0, 0, 0};
+
+    bool bent(int64_t u, int64_t v) const {
+        const double lengths = normal_length[u] * normal_length[v];
+        if (!(lengths > 0)) return true;  // the Python rule's infinite angle
+        const double* p = normals + 3 * u;
+        const double* q = normals + 3 * v;
+        const double cosine = (p[0] * q[0] + p[1] * q[1] + p[2] * q[2]) / lengths;
+        return std::acos(std::min(1.0, std::max(-1.0, cosine))) * (180.0 / M_PI) > tolerance_deg;
+    }
+
+    bool step_too_large(int64_t a, int64_t b, int64_t c) const {
+        const double rb = rank[b];
+        if (!max_step || std::isnan(rb)) return false;
+        const double ra = std::isnan(rank[a]) ? rb : rank[a], rc = std::isnan(rank[c]) ? rb : rank[c];
+        return std::fabs(ra - rb) > *max_step || std::fabs(rc - rb) > *max_step;
+    }
+
+    bool operator()(int64_t a, int64_t b, int64_t c, bool c_is_leaf) {
+        if (!on_navmesh[c] && c_is_leaf) return false;
+        if (step_too_large(a, b, c) || bent(a, b) || (whole_chain && (bent(b, c) || bent(a, c)))) return false;
+        const double* pa = points + 3 * a;
+        const double* pc = points + 3 * c;
+        const float fc[3] = {static_cast<float>(pc[0]), static_cast<float>(pc[1]), static_cast<float>(pc[2])};
+        if (a != from) {
+            const float fa[3] = {static_cast<float>(pa[0]), static_cast<float>(pa[1]), static_cast<float>(pa[2])};
+            from = a;
+            if (dtStatusFailed(nav.query->findNearestPoly(fa, nav.default_ext, &nav.filter, &start_ref, start))) start_ref = 0;
+        }
+        if (start_ref == 0 || !nav.ray_from(start_ref, start, fc, path).first) return false;
+        return !max_gap || nav.segment_gap(pa, pc, step, horizontal, static_cast<float>(*max_gap)) <= *max_gap;
+    }
+};
+
+nb::object bool_numpy(const std::vector<uint8_t>& src) {  // (N,) numpy bool of 0/1 bytes
+    auto* buf = new uint8_t[src.empty() ? 1 : src.size()];
+    std::copy(src.begin(), src.end(), buf);
+    nb::capsule owner(buf, [](void* p) noexcept { delete[] static_cast<uint8_t*>(p); });
+    return nb::cast(nb::ndarray<nb::numpy, bool>(reinterpret_cast<bool*>(buf), {src.size()}, owner), nb::rv_policy::move);
+}
+
 }  // namespace
 
 NB_MODULE(_recast, m) {
@@ -1802,12 +1879,7 @@ NB_MODULE(_recast, m) {
                      const float b[3] = {static_cast<float>(pb[0]), static_cast<float>(pb[1]), static_cast<float>(pb[2])};
                      return static_cast<uint8_t>(n.ray(a, b, ext, path).first ? 1 : 0);
                  });
-                 const size_t N = out.size();
-                 auto* buf = new uint8_t[N ? N : 1];
-                 std::copy(out.begin(), out.end(), buf);
-                 nb::capsule owner(buf, [](void* p) noexcept { delete[] static_cast<uint8_t*>(p); });
-                 return nb::cast(nb::ndarray<nb::numpy, bool>(reinterpret_cast<bool*>(buf), {N}, owner),
-                                 nb::rv_policy::move);
+                 return bool_numpy(out);
              },
              nb::arg("A"), nb::arg("B"), nb::arg("extents") = nb::none(),
              "(N,) bool: raycast(A[i], B[i]).clear for every row, GIL released")
@@ -1846,6 +1918,45 @@ NB_MODULE(_recast, m) {
              nb::arg("a"), nb::arg("b"), nb::arg("step"), nb::arg("horizontal"), nb::arg("max_gap").none(),
              "raycast(a, b) is clear and, unless max_gap is None, segment_surface_gap(a, b, step, horizontal, "
              "reach=max_gap) <= max_gap: both tests in one call, GIL released (the surface_los predicate's)")
+        .def("collapse_forest",
+             [](const NavMeshCore& n, IdsIn ids, IdsIn parent, IdsIn depth, MaskIn fixed, PairsIn loops, IdsIn roots,
+                PointsIn points, MaskIn on_navmesh, ValuesIn rank, std::optional<double> max_step, PointsIn normals,
+                ValuesIn normal_length, double tolerance_deg, bool whole_chain, double step, float horizontal,
+                std::optional<double> max_gap) {
+                 if (!(step > 0)) throw nb::value_error("step must be positive");
+                 const size_t count = ids.shape(0);
+                 for (size_t rows : {parent.shape(0), depth.shape(0), fixed.shape(0), points.shape(0), on_navmesh.shape(0),
+                                     rank.shape(0), normals.shape(0), normal_length.shape(0)})
+                     if (rows != count) throw nb::value_error("every per-node array must have one row per node");
+                 const int64_t size = static_cast<int64_t>(count);
+                 auto inside = [&](const int64_t* first, size_t length, int64_t low) {
+                     return std::all_of(first, first + length, [&](int64_t i) { return i >= low && i < size; });
+                 };
+                 if (!inside(parent.data(), count, -1) || !inside(loops.data(), 2 * loops.shape(0), 0) ||
+                     !inside(roots.data(), roots.shape(0), 0))
+                     throw nb::value_error("parent, loops and roots must hold node indices");
+                 forest_simplify::Forest f;
+                 f.n = count; f.ids = ids.data(); f.parent = parent.data(); f.depth = depth.data(); f.fixed = fixed.data();
+                 f.m = loops.shape(0); f.loops = loops.data(); f.r = roots.shape(0); f.roots = roots.data();
+                 SurfaceRule rule{n, points.data(), on_navmesh.data(), rank.data(), max_step, normals.data(),
+                                  normal_length.data(), tolerance_deg, whole_chain, step, horizontal, max_gap};
+                 forest_simplify::Simplified s;
+                 {
+                     nb::gil_scoped_release release;
+                     std::lock_guard<std::mutex> lock(n.mutex);
+                     s = forest_simplify::simplify(f, rule);
+                 }
+                 return nb::make_tuple(bool_numpy(s.kept), to_numpy(s.added, s.loop.size(), 2), bool_numpy(s.loop));
+             },
+             nb::arg("ids"), nb::arg("parent"), nb::arg("depth"), nb::arg("fixed"), nb::arg("loops"), nb::arg("roots"),
+             nb::arg("points"), nb::arg("on_navmesh"), nb::arg("rank"), nb::arg("max_step").none(), nb::arg("normals"),
+             nb::arg("normal_length"), nb::arg("tolerance_deg"), nb::arg("whole_chain"), nb::arg("step"),
+             nb::arg("horizontal"), nb::arg("max_gap").none(),
+             "(kept (n,) bool, added (k,2) int64, loop (k,) bool): the paper's Algorithm 4 and the loop pass of "
+             "g2s_core/simplify.py on a rooted forest of n nodes (ids, tree parent index or -1, depth, fixed: never "
+             "removed, loop edges (m,2), root indices), with Algorithm 5's collapse rule (g2s_plugins/_surface.py) "
+             "and line_of_sight(points[a], points[c], step, horizontal, max_gap) as the predicate; the edges added, "
+             "in the order they were added; GIL released")
         .def("nearest_poly",
              [](const NavMeshCore& n, Vec3In p, ExtIn extents) {
                  float pp[3], out[3], ext[3] = {n.default_ext[0], n.default_ext[1], n.default_ext[2]};

@@ -25,7 +25,10 @@ begins.
 Cost per call: one navmesh raycast, O(polygons crossed), and one Detour
 height query per probe point (at most |AC| / probe_step + 1 of them, stopping
 at the first probe out of reach), both in one C++ call
-(:meth:`g2s_plugins.recast.NavMesh.line_of_sight`).
+(:meth:`g2s_plugins.recast.NavMesh.line_of_sight`). The pipeline's
+simplification asks none of them from Python: the predicate carries the
+whole-forest path of :mod:`g2s_core.simplify`, Algorithm 4 with these tests
+in one C++ call (:meth:`g2s_plugins.recast.NavMesh.collapse_forest`).
 """
 
 from __future__ import annotations
@@ -33,11 +36,13 @@ from __future__ import annotations
 from collections.abc import Callable
 
 import networkx as nx
+import numpy as np
 
 from g2s_core.errors import PluginError
 from g2s_core.model import RunContext
 from g2s_core.plugin import hookimpl
-from g2s_plugins._surface import CollapseParams, collapse_rule
+from g2s_core.simplify import ForestArrays
+from g2s_plugins._surface import CollapseParams, RuleArrays, collapse_rule
 from g2s_plugins.heat_guarantee import guaranteed
 
 NAME = "surface_los"
@@ -68,5 +73,10 @@ def g2s_simplify_predicate(
     def line_of_sight(start: tuple[float, ...], end: tuple[float, ...]) -> bool:
         return navmesh.line_of_sight(start, end, step, gap)
 
-    return guaranteed(lambda: collapse_rule(params, line_of_sight, context.graph), params.min_heat_rho, context, forest,
-                      simplified)
+    def native(arrays: ForestArrays, rule: RuleArrays) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        return navmesh.collapse_forest(arrays, rule, step, gap)
+
+    # a navmesh without the C++ path (another implementation of g2s_core.model.NavMesh) is asked chain by chain
+    whole = native if hasattr(navmesh, "collapse_forest") else None
+    return guaranteed(lambda: collapse_rule(params, line_of_sight, context.graph, whole), params.min_heat_rho, context,
+                      forest, simplified)

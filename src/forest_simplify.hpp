@@ -1,0 +1,145 @@
+// The paper's Algorithm 4 and the loop pass of g2s_core/simplify.py on arrays, for a predicate in native code.
+//
+// g2s_core/simplify.py is the reference: this walks the same nodes in the same order and asks the predicate
+// the same chains (A, B, C), so with the same answers it removes the same nodes and adds the same edges, in the
+// same order (tests/test_simplify_arrays.py compares the two). Nodes are indices 0..n-1 of the arrays; ids only
+// order them (children by ascending id, the loop pass's candidates by ascending id).
+//
+// Complexity: O(n + k) predicate calls, k = removals, as the reference; each removal also sorts the removed
+// node's children, O(d log d) for d children, and looks a node up in its parent's children, O(d).
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <deque>
+#include <functional>
+#include <queue>
+#include <utility>
+#include <vector>
+
+namespace forest_simplify {
+
+// A rooted forest (g2s_core.rooted) as the core hands it over: n nodes, m loop edges.
+struct Forest {
+    size_t n = 0;
+    const int64_t* ids = nullptr;     // (n,) node ids
+    const int64_t* parent = nullptr;  // (n,) index of the tree parent, -1 for a root
+    const int64_t* depth = nullptr;   // (n,) depth in the forest (orients the loop edges the loop pass adds)
+    const bool* fixed = nullptr;      // (n,) never removed (terminals; the nodes a later round must keep)
+    size_t m = 0;
+    const int64_t* loops = nullptr;   // (m,2) loop edges u -> v
+    size_t r = 0;
+    const int64_t* roots = nullptr;   // (r,) root indices
+};
+
+// Which nodes stay and the edges added, in the order they were added (loop: an edge the loop pass added).
+struct Simplified {
+    std::vector<uint8_t> kept;
+    std::vector<int64_t> added;  // (k,2) flattened
+    std::vector<uint8_t> loop;   // (k,)
+};
+
+// A node's partner along loop edges: bit OUT set for the edge node -> partner, IN for partner -> node.
+struct Partner {
+    int64_t node;
+    uint8_t ways;
+};
+constexpr uint8_t OUT = 1, IN = 2;
+
+// allows(a, b, c, c_is_leaf): whether b may go, c then joined to a; c_is_leaf: c has no outgoing edge (tree or
+// loop) in the current structure, the leaf test of Algorithm 5's first rule.
+template <typename Allows>
+Simplified simplify(const Forest& f, Allows&& allows) {
+    const size_t n = f.n;
+    std::vector<std::vector<int64_t>> children(n);
+    std::vector<std::vector<Partner>> loops(n);
+    std::vector<int64_t> parent(f.parent, f.parent + n), out(n, 0);
+    for (size_t i = 0; i < n; ++i)
+        if (parent[i] >= 0) { children[parent[i]].push_back(static_cast<int64_t>(i)); ++out[parent[i]]; }
+    auto find = [&](int64_t node, int64_t partner) {
+        return std::find_if(loops[node].begin(), loops[node].end(), [&](const Partner& p) { return p.node == partner; });
+    };
+    auto join = [&](int64_t u, int64_t v) {  // the loop edge u -> v (a DiGraph holds it once)
+        auto it = find(u, v);
+        if (it == loops[u].end()) loops[u].push_back({v, OUT}); else if (!(it->ways & OUT)) { it->ways |= OUT; } else return;
+        it = find(v, u);
+        if (it == loops[v].end()) loops[v].push_back({u, IN}); else it->ways |= IN;
+        ++out[u];
+    };
+    for (size_t e = 0; e < f.m; ++e) join(f.loops[2 * e], f.loops[2 * e + 1]);
+    auto by_id = [&](int64_t x, int64_t y) { return f.ids[x] < f.ids[y]; };
+
+    Simplified s;
+    s.kept.assign(n, 1);
+    std::vector<int64_t> pending, kept, grandchildren;
+    std::deque<int64_t> queue;
+    for (size_t k = 0; k < f.r; ++k) {
+        pending.assign(1, f.roots[k]);
+        while (!pending.empty()) {
+            const int64_t a = pending.back();
+            pending.pop_back();
+            queue.assign(children[a].begin(), children[a].end());
+            std::sort(queue.begin(), queue.end(), by_id);
+            kept.clear();
+            while (!queue.empty()) {
+                const int64_t b = queue.front();
+                queue.pop_front();
+                grandchildren = children[b];
+                std::sort(grandchildren.begin(), grandchildren.end(), by_id);
+                // the reference's rule: a leaf, a terminal, the end of a loop edge, or the parent of a node with a
+                // loop edge to a stays
+                bool removable = !grandchildren.empty() && !f.fixed[b] && loops[b].empty();
+                for (const int64_t c : grandchildren) removable = removable && find(a, c) == loops[a].end();
+                for (const int64_t c : grandchildren) removable = removable && allows(a, b, c, out[c] == 0);
+                if (!removable) { kept.push_back(b); continue; }
+                s.kept[b] = 0;
+                auto& below = children[a];
+                below.erase(std::find(below.begin(), below.end(), b));
+                for (const int64_t c : grandchildren) {
+                    below.push_back(c);
+                    parent[c] = a;
+                    s.added.insert(s.added.end(), {a, c});
+                    s.loop.push_back(0);
+                    queue.push_back(c);
+                }
+                out[a] += static_cast<int64_t>(grandchildren.size()) - 1;
+                children[b].clear();
+            }
+            pending.insert(pending.end(), kept.rbegin(), kept.rend());
+        }
+    }
+
+    // the loop pass: a non-terminal tree leaf b whose only other edge is a loop edge b - q goes when
+    // allows(parent, b, q), and the loop edge parent - q replaces both
+    auto candidate = [&](int64_t b) { return s.kept[b] && !f.fixed[b] && children[b].empty() && loops[b].size() == 1; };
+    auto later = [&](int64_t x, int64_t y) { return f.ids[x] > f.ids[y]; };
+    std::priority_queue<int64_t, std::vector<int64_t>, decltype(later)> heap(later);
+    for (size_t i = 0; i < n; ++i) if (candidate(static_cast<int64_t>(i))) heap.push(static_cast<int64_t>(i));
+    while (!heap.empty()) {
+        const int64_t b = heap.top();
+        heap.pop();
+        if (!candidate(b)) continue;
+        const int64_t a = parent[b], q = loops[b].front().node;
+        if (a < 0 || parent[q] == a || parent[a] == q || find(a, q) != loops[a].end() || !allows(a, b, q, out[q] == 0))
+            continue;
+        s.kept[b] = 0;
+        auto& below = children[a];
+        below.erase(std::find(below.begin(), below.end(), b));
+        --out[a];
+        const auto partner = find(q, b);
+        if (partner->ways & OUT) --out[q];
+        loops[q].erase(partner);
+        loops[b].clear();
+        const bool a_first = std::make_pair(f.depth[a], f.ids[a]) < std::make_pair(f.depth[q], f.ids[q]);
+        const int64_t first = a_first ? a : q, second = a_first ? q : a;
+        join(first, second);
+        s.added.insert(s.added.end(), {first, second});
+        s.loop.push_back(1);
+        heap.push(a);
+        heap.push(q);
+    }
+    return s;
+}
+
+}  // namespace forest_simplify

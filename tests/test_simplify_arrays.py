@@ -1,0 +1,138 @@
+"""The ``surface_los`` predicate's whole-forest path (Algorithm 4 and Algorithm 5's tests in C++,
+src/forest_simplify.hpp) against :func:`g2s_core.simplify.simplify_forest`'s own loop asking the same predicate:
+every node and edge, their attributes and their order, on random rooted forests over two generated levels
+(terrain: slopes; castle: walls, stairs and storeys)."""
+
+from __future__ import annotations
+
+import itertools
+import random
+
+import networkx as nx
+import numpy as np
+import pytest
+
+from g2s_core import pipeline
+from g2s_core.config import PRESETS_DIR, load_config, load_raw_config, parse_config, set_key
+from g2s_core.registry import Registry
+from g2s_core.rooted import root_forest
+from g2s_core.simplify import simplify_forest
+from g2s_plugins import _surface
+from g2s_plugins.heat_guarantee import keeping
+from g2s_plugins.predicates import surface_los
+from g2s_plugins.recast import NavMesh
+
+LEVELS = ("terrain", "castle")
+
+PARAMS = (
+    surface_los.Params(),
+    surface_los.Params(normal_tolerance_deg=45.0, max_traffic_step=30.0),
+    surface_los.Params(normal_tolerance_deg=20.0, whole_chain_normals=False, max_surface_gap=None),
+)
+
+
+@pytest.fixture(scope="module")
+def runs():
+    from g2s_plugins.samples.levels import SAMPLES
+
+    registry = Registry.from_entry_points()
+    plan = pipeline.plan(load_config(PRESETS_DIR / "map_analysis.yaml"), registry)
+    return {name: pipeline.run(plan, registry, SAMPLES[name]().mesh, name, "-") for name in LEVELS}
+
+
+def random_forest(graph: nx.Graph, seed: int) -> nx.DiGraph:
+    """A random spanning forest of ``graph`` with about a tenth of its other edges as loops, rooted at random
+    nodes; about one node in twenty a terminal and one in twenty off the navmesh."""
+    rng = random.Random(seed)
+    ranked = nx.Graph()
+    ranked.add_nodes_from(graph.nodes(data=True))
+    ranked.add_edges_from((u, v, {**data, "rank": rng.random()}) for u, v, data in graph.edges(data=True))
+    structure = nx.minimum_spanning_tree(ranked, weight="rank")
+    structure.add_edges_from((u, v, data) for u, v, data in ranked.edges(data=True)
+                             if not structure.has_edge(u, v) and rng.random() < 0.1)
+    forest = root_forest(structure, {node: rng.random() for node in structure}, centre=np.zeros(3))
+    for data in forest._node.values():
+        data["terminal"], data["on_navmesh"] = rng.random() < 0.05, data["on_navmesh"] and rng.random() > 0.05
+    return forest
+
+
+def through_python(predicate):
+    """``predicate`` without its whole-forest path: simplify_forest asks it chain by chain."""
+    return lambda tree, a, b, c: predicate(tree, a, b, c)
+
+
+def layout(structure: nx.DiGraph) -> tuple:
+    """Everything simplification decides: the graph's attributes, the nodes and their attributes, each node's
+    successors and predecessors with the edges' attributes, all in order."""
+    return (structure.graph, list(structure.nodes(data=True)),
+            [(node, list(structure._succ[node].items()), list(structure._pred[node])) for node in structure])
+
+
+def predicate_for(run, params):
+    predicate = surface_los.g2s_simplify_predicate(params, run.context, run.forest, None)
+    assert callable(getattr(predicate, "whole_forest", None))
+    return predicate
+
+
+@pytest.mark.parametrize("level", LEVELS)
+@pytest.mark.parametrize("params", PARAMS, ids=("defaults", "map_analysis", "paper_like"))
+def test_the_whole_forest_path_builds_the_structure_the_loop_builds(runs, level, params):
+    run = runs[level]
+    predicate = predicate_for(run, params)
+    removed = shortened = 0
+    for seed in range(6):
+        forest = random_forest(run.graph, seed)
+        structure = simplify_forest(forest, predicate)
+        assert layout(structure) == layout(simplify_forest(forest, through_python(predicate)))
+        removed += forest.number_of_nodes() - structure.number_of_nodes()
+        # a loop edge the forest does not have: the loop pass removed a node
+        shortened += sum(1 for u, v, loop in structure.edges(data="loop") if loop and not forest.has_edge(u, v))
+    assert removed > shortened > 0
+
+
+@pytest.mark.parametrize("level", LEVELS)
+def test_the_comparison_sees_one_answer_flipped(runs, level):
+    # a reference whose k-th deciding True answer (B has that one child C, or none: the loop pass) is False keeps
+    # one node more: the layouts above must differ
+    run = runs[level]
+    predicate, forest = predicate_for(run, PARAMS[1]), random_forest(run.graph, 0)
+    native = layout(simplify_forest(forest, predicate))
+    for flipped in (0, 7, 40):
+        count = itertools.count()
+
+        def one_flipped(tree, a, b, c):
+            answer = predicate(tree, a, b, c)
+            return answer and (len(tree._succ[b]) > 1 or next(count) != flipped)
+
+        assert layout(simplify_forest(forest, one_flipped)) != native
+
+
+@pytest.mark.parametrize("level", LEVELS)
+def test_nodes_a_later_heat_round_keeps_stay_on_both_paths(runs, level):
+    run = runs[level]
+    predicate = predicate_for(run, PARAMS[1])
+    for seed in range(4):
+        forest = random_forest(run.graph, seed)
+        kept = set(random.Random(seed).sample(sorted(forest), len(forest) // 5))
+        structure = simplify_forest(forest, keeping(predicate, kept))
+        assert kept <= set(structure)
+        assert layout(structure) == layout(simplify_forest(forest, keeping(through_python(predicate), kept)))
+
+
+def test_the_pipeline_takes_the_whole_forest_path_in_every_heat_round(monkeypatch, runs):
+    # min_heat_rho 0.99 on the castle restores nodes over several rounds; each asks the C++ path once, and the
+    # structure is the one the loop gives with the same predicate
+    from g2s_plugins.samples.levels import SAMPLES
+
+    registry = Registry.from_entry_points()
+    raw = set_key(load_raw_config(PRESETS_DIR / "map_analysis.yaml"), "simplify.params.min_heat_rho", 0.99, "test")
+    plan = pipeline.plan(parse_config(raw), registry)
+    calls = []
+    native = NavMesh.collapse_forest
+    monkeypatch.setattr(NavMesh, "collapse_forest", lambda *args: calls.append(1) or native(*args))
+    structure = pipeline.run(plan, registry, SAMPLES["castle"]().mesh, "castle", "-").structure
+    assert len(calls) >= 2
+    rule = _surface.collapse_rule
+    monkeypatch.setattr(surface_los, "collapse_rule", lambda params, sight, graph, native: rule(params, sight, graph))
+    reference = pipeline.run(plan, registry, SAMPLES["castle"]().mesh, "castle", "-").structure
+    assert len(calls) >= 2 and layout(structure) == layout(reference)
