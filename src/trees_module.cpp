@@ -408,6 +408,96 @@ nb::ndarray<nb::numpy, int64_t, nb::ndim<1>> cover_paths(Int32Array indptr, Int3
     return nb::ndarray<nb::numpy, int64_t, nb::ndim<1>>(out, {added.size()}, owner);
 }
 
+// The greedy spanner of g2s_plugins.loops.spanner.add_loops (Althoefer et al. 1993; see there), its loop
+// over the candidates in C++. Each candidate k joins structure nodes a[k], b[k] by the path a ~> x[k] - y[k]
+// ~> b along the Voronoi search's predecessors; it is added unless b is already within bounds[k] of a along
+// the structure (`structure`, lengths as the structure's own) and the paths added before it (lengths as the
+// graph's, `graph`). The first candidate is added unchecked. The bounded search is a Dijkstra that never
+// queues a node further than the bound; whether it reaches b does not depend on the order it settles equal
+// distances in, since with lengths >= 0 every node's distance is the least of the sums along its paths,
+// each added in path order, whatever the order. O(v b log b) for v candidates and b nodes within a bound.
+nb::tuple greedy_loops(Int32Array s_indptr, Int32Array s_indices, DoubleArray s_lengths, Int32Array g_indptr,
+                       Int32Array g_indices, DoubleArray g_lengths, Int32Array predecessor, Int64Array a, Int64Array b,
+                       Int64Array x, Int64Array y, DoubleArray bounds) {
+    const int64_t n = checked_nodes("greedy_loops", s_indptr, s_indices, s_lengths);
+    if (checked_nodes("greedy_loops", g_indptr, g_indices, g_lengths) != n || static_cast<int64_t>(predecessor.shape(0)) != n)
+        throw nb::value_error("greedy_loops: the structure, the graph and predecessor must have the same n nodes");
+    const size_t k = bounds.shape(0);
+    for (const Int64Array* ends : {&a, &b, &x, &y}) {
+        if (ends->shape(0) != k) throw nb::value_error("greedy_loops: a, b, x, y and bounds must be (k,)");
+        for (size_t i = 0; i < k; ++i)
+            if (ends->data()[i] < 0 || ends->data()[i] >= n) throw nb::value_error("greedy_loops: a node is out of range");
+    }
+    for (int64_t v = 0; v < n; ++v)
+        if (predecessor.data()[v] >= n) throw nb::value_error("greedy_loops: a predecessor is out of range");
+    const int32_t *sp = s_indptr.data(), *gp = g_indptr.data(), *pred = predecessor.data();
+    std::vector<int64_t> accepted, paths, offsets{0};
+    {
+        nb::gil_scoped_release release;
+        std::vector<std::vector<std::pair<int64_t, double>>> joined(static_cast<size_t>(n));
+        std::vector<double> best(static_cast<size_t>(n));
+        std::vector<uint32_t> seen(static_cast<size_t>(n), 0);  // best[v] holds for this search when seen[v] == search
+        uint32_t search = 0;
+        PyHeap heap;
+        auto within = [&](int64_t source, int64_t target, double limit) {
+            ++search;
+            best[source] = 0.0;
+            seen[source] = search;
+            heap.items.clear();
+            heap.push({0.0, source});
+            auto relax = [&](double distance, int64_t other, double length) {
+                const double through = distance + length;
+                if (through <= limit && (seen[other] != search || through < best[other])) {
+                    best[other] = through;
+                    seen[other] = search;
+                    heap.push({through, other});
+                }
+            };
+            while (!heap.items.empty()) {
+                const auto [distance, node] = heap.pop();
+                if (node == target) return true;
+                if (distance > best[node]) continue;
+                for (int32_t e = sp[node]; e < sp[node + 1]; ++e) relax(distance, s_indices.data()[e], s_lengths.data()[e]);
+                for (const auto& [other, length] : joined[node]) relax(distance, other, length);
+            }
+            return false;
+        };
+        auto length_of = [&](int64_t p, int64_t q) {  // the graph's edge p - q (a path edge: it is there)
+            for (int32_t e = gp[p]; e < gp[p + 1]; ++e)
+                if (g_indices.data()[e] == q) return g_lengths.data()[e];
+            return std::numeric_limits<double>::quiet_NaN();
+        };
+        for (size_t i = 0; i < k; ++i) {
+            if (!accepted.empty() && within(a.data()[i], b.data()[i], bounds.data()[i])) continue;
+            accepted.push_back(static_cast<int64_t>(i));
+            const size_t first = paths.size();
+            for (int64_t v = x.data()[i]; ; v = pred[v]) {  // x back to a, then reversed: a ~> x
+                paths.push_back(v);
+                if (pred[v] < 0) break;
+            }
+            std::reverse(paths.begin() + static_cast<std::ptrdiff_t>(first), paths.end());
+            for (int64_t v = y.data()[i]; ; v = pred[v]) {  // y ~> b
+                paths.push_back(v);
+                if (pred[v] < 0) break;
+            }
+            for (size_t j = first + 1; j < paths.size(); ++j) {
+                const int64_t p = paths[j - 1], q = paths[j];
+                const double length = length_of(p, q);
+                joined[p].push_back({q, length});
+                joined[q].push_back({p, length});
+            }
+            offsets.push_back(static_cast<int64_t>(paths.size()));
+        }
+    }
+    auto out = [](const std::vector<int64_t>& values) {
+        auto* data = new int64_t[std::max<size_t>(values.size(), 1)];
+        std::copy(values.begin(), values.end(), data);
+        nb::capsule owner(data, [](void* p) noexcept { delete[] static_cast<int64_t*>(p); });
+        return nb::ndarray<nb::numpy, int64_t, nb::ndim<1>>(data, {values.size()}, owner);
+    };
+    return nb::make_tuple(out(accepted), out(paths), out(offsets));
+}
+
 }  // namespace
 
 NB_MODULE(_trees, m) {
@@ -427,4 +517,14 @@ NB_MODULE(_trees, m) {
           "int32 indices, float64 lengths), from the distances `start` (n,) float64 to the seeds and their\n"
           "predecessors (n,) int32 (negative: none), the far nodes `far` (int64) in the order they are taken\n"
           "from the end: added (k,) int64, the nodes of the paths added, path by path.");
+    m.def("greedy_loops", &greedy_loops, nb::arg("s_indptr"), nb::arg("s_indices"), nb::arg("s_lengths"),
+          nb::arg("g_indptr"), nb::arg("g_indices"), nb::arg("g_lengths"), nb::arg("predecessor"), nb::arg("a"),
+          nb::arg("b"), nb::arg("x"), nb::arg("y"), nb::arg("bounds"),
+          "greedy_loops(s_indptr, s_indices, s_lengths, g_indptr, g_indices, g_lengths, predecessor, a, b, x, y,\n"
+          "bounds) -> (accepted, paths, offsets).\n\n"
+          "The loop of g2s_plugins.loops.spanner.add_loops (see there) over k candidates (int64 (k,) each:\n"
+          "structure nodes a, b, graph edge x - y; float64 bounds), on the structure and the graph in CSR form\n"
+          "over the same n nodes (int32 indptr and indices, float64 lengths >= 0) and the Voronoi search's\n"
+          "predecessors (n,) int32 (negative: a structure node): accepted (j,) int64, the candidates added in\n"
+          "order; the nodes of their paths (a ~> x, y ~> b) in `paths`, path i at offsets[i]:offsets[i + 1].");
 }

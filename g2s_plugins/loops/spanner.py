@@ -29,14 +29,15 @@ tree distances of all candidates at once (lowest common ancestors by binary
 lifting), then, once a path has been added, one Dijkstra on the structure
 bounded by ``max(stretch L, L + min_gain)`` per remaining violator, which
 visits only the structure nodes within that distance: O(v b log b) for v
-violators and b nodes in such a ball, independent of the level's size.
+violators and b nodes in such a ball, independent of the level's size. That
+loop runs in C++ (``g2s_plugins._trees.greedy_loops``, src/trees_module.cpp).
 """
 
 from __future__ import annotations
 
-import heapq
 import itertools
 import math
+import operator
 
 import networkx as nx
 import numpy as np
@@ -45,9 +46,9 @@ from pydantic import Field
 from scipy.sparse import csgraph
 
 from g2s_core.model import RunContext, graph_of
-from g2s_core.rooted import components
 from g2s_core.plugin import PluginParams, hookimpl
-from g2s_plugins.surface_arrays import SurfaceArrays, surface_arrays
+from g2s_plugins import _trees
+from g2s_plugins.surface_arrays import MIN_LENGTH, SurfaceArrays, surface_arrays
 
 NAME = "spanner"
 
@@ -88,25 +89,24 @@ def add_loops(graph: nx.Graph, structure: nx.Graph, stretch: float, min_gain: fl
     distance, predecessor, cell = csgraph.dijkstra(
         arrays.adjacency, directed=False, indices=rows, min_only=True, return_predecessors=True
     )
-    ends = rows[np.column_stack(components(structure, ids)[:2])]  # (e, 2) rows of its edges' ends, in no set order
+    along = _structure_csr(arrays, structure)
+    tails = np.repeat(np.arange(arrays.n), np.diff(along.indptr))
+    ends = np.column_stack([tails, along.indices])[tails <= along.indices]  # (e, 2) rows of its edges' ends
     pairs, paths = _candidates(arrays, structure, ends, distance, cell)
     if len(pairs) == 0:
         return structure
     along_tree = _tree_distances(arrays, structure, ends, pairs)
     bound = np.maximum(stretch * paths, paths + min_gain)
-    violating = np.flatnonzero(along_tree > bound)
+    violating = np.flatnonzero(along_tree > bound)  # candidates are sorted by path length
     if violating.size == 0:
         return structure
-    paths_ids: list[list[int]] = []
-    joined: dict[int, list[tuple[int, float]]] = {}  # the added paths' edges, by node id
-    for k in violating.tolist():  # candidates are sorted by path length
-        a, b, x, y = pairs[k]
-        if paths_ids and _within(structure._adj, joined, arrays.nodes[a], arrays.nodes[b], float(bound[k])):
-            continue
-        paths_ids.append([arrays.nodes[i] for i in _walk(predecessor, x)[::-1] + _walk(predecessor, y)])
-        for p, q in zip(paths_ids[-1], paths_ids[-1][1:]):
-            joined.setdefault(p, []).append((q, graph._adj[p][q]["weight"]))
-            joined.setdefault(q, []).append((p, graph._adj[p][q]["weight"]))
+    a, b, x, y = (np.ascontiguousarray(column) for column in pairs[violating].T)
+    _, rows_of_paths, offsets = _trees.greedy_loops(
+        along.indptr.astype(np.int32), along.indices.astype(np.int32), along.data, *_graph_csr(arrays, graph),
+        predecessor.astype(np.int32), a, b, x, y, bound[violating],
+    )
+    on_paths = list(map(arrays.nodes.__getitem__, rows_of_paths.tolist()))
+    paths_ids = [on_paths[start:end] for start, end in itertools.pairwise(offsets.tolist())]
     # the structure's nodes and edges, then every path's nodes, then every path's edges (the insertion order of
     # adding them path by path), without attributes: the pipeline copies the graph's onto them all at once
     nodes = itertools.chain(structure, (node for path in paths_ids for node in path))
@@ -176,35 +176,27 @@ def _tree_distances(arrays: SurfaceArrays, forest: nx.Graph, edge_rows: np.ndarr
     return np.where(labels[pairs[:, 0]] == labels[pairs[:, 1]], result, np.inf)
 
 
-def _within(
-    adjacency: dict[int, dict[int, dict]], joined: dict[int, list[tuple[int, float]]], source: int, target: int, limit: float
-) -> bool:
-    """Whether ``target`` is at most ``limit`` metres from ``source`` along the structure: its edges (networkx's
-    adjacency dicts, lengths in ``weight``) and the paths ``joined`` to it (node id -> (neighbour, length)).
-
-    A Dijkstra that stops at ``limit``: it visits only the structure nodes
-    within that distance, whatever the size of the level.
-    """
-    best = {source: 0.0}
-    heap = [(0.0, source)]
-    while heap:
-        distance, node = heapq.heappop(heap)
-        if node == target:
-            return True
-        if distance > best[node]:
-            continue
-        along = [(other, data["weight"]) for other, data in adjacency.get(node, {}).items()]
-        for other, length in along + joined.get(node, []):
-            through = distance + length
-            if through <= limit and through < best.get(other, math.inf):
-                best[other] = through
-                heapq.heappush(heap, (through, other))
-    return False
+def _structure_csr(arrays: SurfaceArrays, structure: nx.Graph) -> sp.csr_array:
+    """``structure`` over the rows of ``arrays`` (n, n): each node's neighbours in the order of its adjacency
+    dict, lengths the ``weight`` of its own edges; int32 indices."""
+    adjacency, n = structure._adj, arrays.n
+    tails = np.repeat(arrays.rows(adjacency), np.fromiter(map(len, adjacency.values()), np.int64, len(adjacency)))
+    heads = arrays.rows(itertools.chain.from_iterable(adjacency.values()))
+    lengths = np.fromiter(map(operator.itemgetter("weight"), itertools.chain.from_iterable(map(dict.values, adjacency.values()))),
+                          np.float64, len(heads))
+    order = np.argsort(tails, kind="stable")  # grouped by row, each row in its dict's order
+    indptr = np.r_[0, np.cumsum(np.bincount(tails, minlength=n))].astype(np.int32)
+    return sp.csr_array((lengths[order], heads[order].astype(np.int32), indptr), shape=(n, n))
 
 
-def _walk(predecessor: np.ndarray, node: int) -> list[int]:
-    """Rows from ``node`` back to its structure node along the Voronoi search's predecessors."""
-    path = [int(node)]
-    while predecessor[path[-1]] >= 0:
-        path.append(int(predecessor[path[-1]]))
-    return path
+def _graph_csr(arrays: SurfaceArrays, graph: nx.Graph) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``arrays.adjacency`` as int32 indptr and indices and the edges' own ``weight`` in ``graph`` (the arrays
+    store a length of :data:`~g2s_plugins.surface_arrays.MIN_LENGTH` or less as that: those few are read again)."""
+    adjacency = arrays.adjacency
+    lengths = adjacency.data.copy()
+    odd = np.flatnonzero(~(lengths > MIN_LENGTH))
+    if odd.size:
+        heads = np.repeat(np.arange(arrays.n), np.diff(adjacency.indptr))[odd]
+        lengths[odd] = [graph._adj[arrays.nodes[p]][arrays.nodes[q]]["weight"]
+                        for p, q in zip(heads.tolist(), adjacency.indices[odd].tolist())]
+    return adjacency.indptr.astype(np.int32), adjacency.indices.astype(np.int32), lengths
