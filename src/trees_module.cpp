@@ -411,11 +411,11 @@ nb::ndarray<nb::numpy, int64_t, nb::ndim<1>> cover_paths(Int32Array indptr, Int3
 // The greedy spanner of g2s_plugins.loops.spanner.add_loops (Althoefer et al. 1993; see there), its loop
 // over the candidates in C++. Each candidate k joins structure nodes a[k], b[k] by the path a ~> x[k] - y[k]
 // ~> b along the Voronoi search's predecessors; it is added unless b is already within bounds[k] of a along
-// the structure (`structure`, lengths as the structure's own) and the paths added before it (lengths as the
-// graph's, `graph`). The first candidate is added unchecked. The bounded search is a Dijkstra that never
-// queues a node further than the bound; whether it reaches b does not depend on the order it settles equal
-// distances in, since with lengths >= 0 every node's distance is the least of the sums along its paths,
-// each added in path order, whatever the order. O(v b log b) for v candidates and b nodes within a bound.
+// the structure's edges (`s_*`, edges of the graph) and the paths added before it (their lengths from the
+// graph, `g_*`). The first candidate is added unchecked. The bounded search is a Dijkstra that never queues
+// a node further than the bound; whether it reaches b does not depend on the order it settles equal
+// distances or takes a node's neighbours in, since with lengths >= 0 every node's distance is the least of
+// the sums along its paths, each added in path order. O(v b log b) for v candidates and b nodes within a bound.
 nb::tuple greedy_loops(Int32Array s_indptr, Int32Array s_indices, DoubleArray s_lengths, Int32Array g_indptr,
                        Int32Array g_indices, DoubleArray g_lengths, Int32Array predecessor, Int64Array a, Int64Array b,
                        Int64Array x, Int64Array y, DoubleArray bounds) {

@@ -37,7 +37,6 @@ from __future__ import annotations
 
 import itertools
 import math
-import operator
 
 import networkx as nx
 import numpy as np
@@ -46,6 +45,7 @@ from pydantic import Field
 from scipy.sparse import csgraph
 
 from g2s_core.model import RunContext, graph_of
+from g2s_core.rooted import components
 from g2s_core.plugin import PluginParams, hookimpl
 from g2s_plugins import _trees
 from g2s_plugins.surface_arrays import MIN_LENGTH, SurfaceArrays, surface_arrays
@@ -71,7 +71,7 @@ def add_loops(graph: nx.Graph, structure: nx.Graph, stretch: float, min_gain: fl
 
     Args:
         graph: the initial graph, edges with ``weight`` (metres).
-        structure: the Steiner forest.
+        structure: the Steiner forest (its edges measured by their ``weight`` in ``graph``).
         stretch: >= 1; ``inf`` returns ``structure`` itself.
         min_gain: metres a path must save along the structure to be added.
 
@@ -89,20 +89,26 @@ def add_loops(graph: nx.Graph, structure: nx.Graph, stretch: float, min_gain: fl
     distance, predecessor, cell = csgraph.dijkstra(
         arrays.adjacency, directed=False, indices=rows, min_only=True, return_predecessors=True
     )
-    along = _structure_csr(arrays, structure)
-    tails = np.repeat(np.arange(arrays.n), np.diff(along.indptr))
-    ends = np.column_stack([tails, along.indices])[tails <= along.indices]  # (e, 2) rows of its edges' ends
+    ends = rows[np.column_stack(components(structure, ids)[:2])]  # (e, 2) rows of its edges' ends, in no set order
+    stored = np.asarray(arrays.adjacency[ends[:, 0], ends[:, 1]]).ravel()  # their lengths as the arrays hold them
     pairs, paths = _candidates(arrays, structure, ends, distance, cell)
     if len(pairs) == 0:
         return structure
-    along_tree = _tree_distances(arrays, structure, ends, pairs)
+    along_tree = _tree_distances(arrays, structure, ends, stored, pairs)
     bound = np.maximum(stretch * paths, paths + min_gain)
     violating = np.flatnonzero(along_tree > bound)  # candidates are sorted by path length
     if violating.size == 0:
         return structure
+    # the structure's edges (the graph's, with its lengths) both ways, then the graph's, for the greedy loop
+    lengths = np.tile(_lengths(arrays, graph, ends[:, 0], ends[:, 1], stored), 2)
+    along = sp.csr_array((lengths, (np.concatenate([ends[:, 0], ends[:, 1]]), np.concatenate([ends[:, 1], ends[:, 0]]))),
+                         shape=(arrays.n, arrays.n))
+    adjacency = arrays.adjacency
+    tails = np.repeat(np.arange(arrays.n), np.diff(adjacency.indptr))
     a, b, x, y = (np.ascontiguousarray(column) for column in pairs[violating].T)
     _, rows_of_paths, offsets = _trees.greedy_loops(
-        along.indptr.astype(np.int32), along.indices.astype(np.int32), along.data, *_graph_csr(arrays, graph),
+        along.indptr.astype(np.int32), along.indices.astype(np.int32), along.data, adjacency.indptr.astype(np.int32),
+        adjacency.indices.astype(np.int32), _lengths(arrays, graph, tails, adjacency.indices, adjacency.data),
         predecessor.astype(np.int32), a, b, x, y, bound[violating],
     )
     on_paths = list(map(arrays.nodes.__getitem__, rows_of_paths.tolist()))
@@ -141,11 +147,12 @@ def _candidates(
     return np.column_stack([a, b, x, y])[first], length[first]
 
 
-def _tree_distances(arrays: SurfaceArrays, forest: nx.Graph, edge_rows: np.ndarray, pairs: np.ndarray) -> np.ndarray:
-    """Distance along ``forest`` (its edges' rows ``edge_rows``) between the ends of each pair (inf across
-    trees), by binary lifting."""
+def _tree_distances(
+    arrays: SurfaceArrays, forest: nx.Graph, edge_rows: np.ndarray, lengths: np.ndarray, pairs: np.ndarray
+) -> np.ndarray:
+    """Distance along ``forest`` (its edges' rows ``edge_rows``, their ``lengths``) between the ends of each pair
+    (inf across trees), by binary lifting."""
     n = arrays.n
-    lengths = np.asarray(arrays.adjacency[edge_rows[:, 0], edge_rows[:, 1]]).ravel()
     tree = sp.csr_array(
         (np.concatenate([lengths, lengths]), (np.concatenate(edge_rows.T[::-1]), np.concatenate(edge_rows.T))), shape=(n, n)
     )
@@ -176,27 +183,11 @@ def _tree_distances(arrays: SurfaceArrays, forest: nx.Graph, edge_rows: np.ndarr
     return np.where(labels[pairs[:, 0]] == labels[pairs[:, 1]], result, np.inf)
 
 
-def _structure_csr(arrays: SurfaceArrays, structure: nx.Graph) -> sp.csr_array:
-    """``structure`` over the rows of ``arrays`` (n, n): each node's neighbours in the order of its adjacency
-    dict, lengths the ``weight`` of its own edges; int32 indices."""
-    adjacency, n = structure._adj, arrays.n
-    tails = np.repeat(arrays.rows(adjacency), np.fromiter(map(len, adjacency.values()), np.int64, len(adjacency)))
-    heads = arrays.rows(itertools.chain.from_iterable(adjacency.values()))
-    lengths = np.fromiter(map(operator.itemgetter("weight"), itertools.chain.from_iterable(map(dict.values, adjacency.values()))),
-                          np.float64, len(heads))
-    order = np.argsort(tails, kind="stable")  # grouped by row, each row in its dict's order
-    indptr = np.r_[0, np.cumsum(np.bincount(tails, minlength=n))].astype(np.int32)
-    return sp.csr_array((lengths[order], heads[order].astype(np.int32), indptr), shape=(n, n))
-
-
-def _graph_csr(arrays: SurfaceArrays, graph: nx.Graph) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """``arrays.adjacency`` as int32 indptr and indices and the edges' own ``weight`` in ``graph`` (the arrays
-    store a length of :data:`~g2s_plugins.surface_arrays.MIN_LENGTH` or less as that: those few are read again)."""
-    adjacency = arrays.adjacency
-    lengths = adjacency.data.copy()
+def _lengths(arrays: SurfaceArrays, graph: nx.Graph, tails: np.ndarray, heads: np.ndarray, stored: np.ndarray) -> np.ndarray:
+    """(e,) the ``weight`` in ``graph`` of the edges ``tails`` - ``heads`` (rows of ``arrays``, (e,) each) whose
+    lengths the arrays hold as ``stored``: those, but for a length the arrays store as
+    :data:`~g2s_plugins.surface_arrays.MIN_LENGTH` or less (a zero, a negative or a tiny one), read again."""
+    lengths = np.array(stored, dtype=np.float64)
     odd = np.flatnonzero(~(lengths > MIN_LENGTH))
-    if odd.size:
-        heads = np.repeat(np.arange(arrays.n), np.diff(adjacency.indptr))[odd]
-        lengths[odd] = [graph._adj[arrays.nodes[p]][arrays.nodes[q]]["weight"]
-                        for p, q in zip(heads.tolist(), adjacency.indices[odd].tolist())]
-    return adjacency.indptr.astype(np.int32), adjacency.indices.astype(np.int32), lengths
+    lengths[odd] = [graph._adj[arrays.nodes[p]][arrays.nodes[q]]["weight"] for p, q in zip(tails[odd].tolist(), heads[odd].tolist())]
+    return lengths
