@@ -1,4 +1,6 @@
 // g2s_plugins._trees: shortest-path trees from many sources, and the weight each node carries in them.
+// Also here, each described where it is defined: the coverage selector's cover (cover_paths), the loop
+// adder's greedy loop (greedy_loops) and the Steiner solvers' spanning forest (spanning_forest).
 //
 // The `flow` analyzer and area-weighted betweenness walk the initial graph from
 // hundreds of sources: one shortest-path tree per source, then each node's
@@ -551,7 +553,8 @@ nb::ndarray<nb::numpy, int64_t, nb::ndim<1>> spanning_forest(int64_t size, Int64
 }  // namespace
 
 NB_MODULE(_trees, m) {
-    m.doc() = "Shortest-path trees from many sources and the weight passing through each node (see src/trees_module.cpp).";
+    m.doc() = "Shortest-path trees from many sources and the weight passing through each node, the coverage cover, the loop "
+              "adder's greedy loop and Kruskal's spanning forest (see src/trees_module.cpp).";
     m.def("shortest_path_flow", &shortest_path_flow, nb::arg("indptr"), nb::arg("indices"), nb::arg("weights"),
           nb::arg("sources"), nb::arg("values"), nb::arg("threads"),
           "shortest_path_flow(indptr, indices, weights, sources, values, threads) -> (predecessors, through).\n\n"
