@@ -59,10 +59,10 @@ def component_roots(
     The root is the node with the highest score; ties (see :mod:`g2s_core.ties`) go to the node nearest
     ``centre``, then to the lowest id. Only the nodes with their component's highest score are measured.
     """
-    missing = [n for n in nodes if n not in scores]
+    missing = list(itertools.filterfalse(scores.__contains__, nodes))  # the look-ups in map's C loops, as below
     if missing:
         raise ValueError(f"the root selector gave no score for nodes {missing[:5]}")
-    distinct, inverse = np.unique(np.array([scores[n] for n in nodes], dtype=np.float64), return_inverse=True)
+    distinct, inverse = np.unique(np.fromiter(map(scores.__getitem__, nodes), np.float64, len(nodes)), return_inverse=True)
     score, top = tie_values(distinct)[inverse], np.full(count, -np.inf)  # each distinct score rounded once
     np.maximum.at(top, label, score)
     rows = np.flatnonzero(score == top[label])  # a few per component: their distances alone are rounded
@@ -88,7 +88,7 @@ def root_forest(forest: nx.Graph, scores: Mapping[int, float], centre: np.ndarra
     """
     nodes, node_data, adjacency = sorted(forest), forest._node, forest._adj
     # rows of the (integer, g2s_core.model) ids by one binary search, not a dict look-up per edge end
-    n, (lo, hi, count, label) = len(nodes), components(forest, np.array(nodes, dtype=np.int64))
+    n, (lo, hi, count, label) = len(nodes), components(forest, ids := np.array(nodes, dtype=np.int64))
     best = component_roots(forest, nodes, label, count, scores, centre)  # each component rooted at its best node
     # the forest as an (n+1, n+1) CSR matrix (columns ascending in each row) with a lone virtual node n
     matrix = sp.csr_array((np.ones(2 * len(lo)), (np.r_[lo, hi], np.r_[hi, lo])), shape=(n + 1, n + 1))
@@ -99,16 +99,18 @@ def root_forest(forest: nx.Graph, scores: Mapping[int, float], centre: np.ndarra
     depth, parents = [-1] * (n + 1), parent.tolist()
     for node in order.tolist():
         depth[node] = depth[parents[node]] + 1
-    # networkx's own dicts (as g2s_core.model.graph_of writes them): a view object per node and edge looked up costs more
-    root_of, visited = best[label].tolist(), order.tolist()
-    child = order[parent[order] != n]
-    edges = [(nodes[p], nodes[c], dict(adjacency[nodes[p]][nodes[c]])) for p, c in zip(parent[child].tolist(), child.tolist())]
+    # ids and values in bulk (tolist), networkx's own dicts read by map's C loop (as g2s_core.model.graph_of writes
+    # them): an index or a view object per node and edge looked up cost about 30 ms more on a 100k-polygon level
+    child, visited = order[parent[order] != n], ids[order].tolist()
+    tails, heads = ids[parent[child]].tolist(), ids[child].tolist()
+    edges = list(zip(tails, heads, map(dict, map(dict.__getitem__, map(adjacency.__getitem__, tails), heads))))
     loop = (parent[lo] != hi) & (parent[hi] != lo)  # the loop edges: a tree edge joins a node to its parent
     for u, v in (divmod(k, n) for k in np.sort(lo[loop] * n + hi[loop]).tolist()):
         first, second = (u, v) if depth[u] <= depth[v] else (v, u)
         edges.append((nodes[first], nodes[second], {**adjacency[nodes[u]][nodes[v]], "loop": True}))
+    records = zip(visited, map(node_data.__getitem__, visited), np.array(depth)[order].tolist(), ids[best[label[order]]].tolist())
     return graph_of(nx.DiGraph(roots=[nodes[i] for i in best.tolist()]),
-                    {nodes[i]: {**node_data[nodes[i]], "depth": depth[i], "root": nodes[root_of[i]]} for i in visited}, edges)
+                    {node: dict(data, depth=d, root=root) for node, data, d, root in records}, edges)
 
 
 def tree_parent(forest: nx.DiGraph, node: int) -> int | None:

@@ -52,6 +52,7 @@ for the whole graph and is scaled to unit norm over the whole graph.
 
 from __future__ import annotations
 
+import itertools
 from collections.abc import Hashable, Mapping
 from dataclasses import dataclass
 from typing import Literal
@@ -136,7 +137,7 @@ class _Arrays:
         return len(self.u) == self.n - count
 
     def dict(self, values: np.ndarray) -> dict[Hashable, float]:
-        return dict(zip(self.nodes, (float(x) for x in values)))
+        return dict(zip(self.nodes, np.asarray(values, dtype=np.float64).tolist()))
 
 
 def _undirected(graph: nx.Graph) -> nx.Graph:
@@ -147,21 +148,19 @@ def _arrays(graph: nx.Graph, weighted: bool) -> _Arrays:
     """Index the graph; with ``weighted``, check the weights."""
     graph = _undirected(graph)
     nodes = list(graph.nodes)
-    index = {node: i for i, node in enumerate(nodes)}
-    u: list[int] = []
-    v: list[int] = []
-    weights: list = []
-    # Each undirected edge once, from its lower-index end (self-loops skipped).
-    for a, neighbours in graph.adjacency():
-        ia = index[a]
-        for b, data in neighbours.items():
-            ib = index[b]
-            if ib > ia:
-                u.append(ia)
-                v.append(ib)
-                if weighted:
-                    weights.append(data.get("weight", 1.0))
+    index = dict(zip(nodes, range(len(nodes))))
+    # Each undirected edge once, from its lower-index end (self-loops skipped), in the adjacency's order: the
+    # ends looked up by map's C loop, not an index and a list append per edge in Python (half the time)
+    adjacency = graph._adj
+    ends = np.repeat(np.fromiter(map(index.__getitem__, adjacency), np.int64, len(adjacency)),
+                     np.fromiter(map(len, adjacency.values()), np.int64, len(adjacency)))
+    others = np.fromiter(map(index.__getitem__, itertools.chain.from_iterable(adjacency.values())), np.int64, len(ends))
+    kept = others > ends
+    u, v = ends[kept], others[kept]
     if weighted:
+        weights = list(itertools.compress(
+            (data.get("weight", 1.0) for neighbours in adjacency.values() for data in neighbours.values()), kept.tolist()
+        ))
         try:
             w = np.asarray(weights, dtype=np.float64).reshape(len(u))
         except (TypeError, ValueError):
@@ -178,7 +177,7 @@ def _arrays(graph: nx.Graph, weighted: bool) -> _Arrays:
             )
     else:
         w = np.ones(len(u), dtype=np.float64)
-    return _Arrays(nodes, np.asarray(u, dtype=np.int64), np.asarray(v, dtype=np.int64), w)
+    return _Arrays(nodes, u, v, w)
 
 
 def _blocks(adjacency: sp.csr_array, labels: np.ndarray, count: int, batch: int = 1):

@@ -1,4 +1,6 @@
 // g2s_plugins._trees: shortest-path trees from many sources, and the weight each node carries in them.
+// Also here, each described where it is defined: the coverage selector's cover (cover_paths), the loop
+// adder's greedy loop (greedy_loops) and the Steiner solvers' spanning forest (spanning_forest).
 //
 // The `flow` analyzer and area-weighted betweenness walk the initial graph from
 // hundreds of sources: one shortest-path tree per source, then each node's
@@ -408,10 +410,151 @@ nb::ndarray<nb::numpy, int64_t, nb::ndim<1>> cover_paths(Int32Array indptr, Int3
     return nb::ndarray<nb::numpy, int64_t, nb::ndim<1>>(out, {added.size()}, owner);
 }
 
+// The greedy spanner of g2s_plugins.loops.spanner.add_loops (Althoefer et al. 1993; see there), its loop
+// over the candidates in C++. Each candidate k joins structure nodes a[k], b[k] by the path a ~> x[k] - y[k]
+// ~> b along the Voronoi search's predecessors; it is added unless b is already within bounds[k] of a along
+// the structure's edges (`s_*`, edges of the graph) and the paths added before it (their lengths from the
+// graph, `g_*`). The first candidate is added unchecked. The bounded search is a Dijkstra that never queues
+// a node further than the bound; whether it reaches b does not depend on the order it settles equal
+// distances or takes a node's neighbours in, since with lengths >= 0 every node's distance is the least of
+// the sums along its paths, each added in path order. O(v b log b) for v candidates and b nodes within a bound.
+nb::tuple greedy_loops(Int32Array s_indptr, Int32Array s_indices, DoubleArray s_lengths, Int32Array g_indptr,
+                       Int32Array g_indices, DoubleArray g_lengths, Int32Array predecessor, Int64Array a, Int64Array b,
+                       Int64Array x, Int64Array y, DoubleArray bounds) {
+    const int64_t n = checked_nodes("greedy_loops", s_indptr, s_indices, s_lengths);
+    if (checked_nodes("greedy_loops", g_indptr, g_indices, g_lengths) != n || static_cast<int64_t>(predecessor.shape(0)) != n)
+        throw nb::value_error("greedy_loops: the structure, the graph and predecessor must have the same n nodes");
+    const size_t k = bounds.shape(0);
+    for (const Int64Array* ends : {&a, &b, &x, &y}) {
+        if (ends->shape(0) != k) throw nb::value_error("greedy_loops: a, b, x, y and bounds must be (k,)");
+        for (size_t i = 0; i < k; ++i)
+            if (ends->data()[i] < 0 || ends->data()[i] >= n) throw nb::value_error("greedy_loops: a node is out of range");
+    }
+    for (int64_t v = 0; v < n; ++v)
+        if (predecessor.data()[v] >= n) throw nb::value_error("greedy_loops: a predecessor is out of range");
+    const int32_t *sp = s_indptr.data(), *gp = g_indptr.data(), *pred = predecessor.data();
+    std::vector<int64_t> accepted, paths, offsets{0};
+    {
+        nb::gil_scoped_release release;
+        std::vector<std::vector<std::pair<int64_t, double>>> joined(static_cast<size_t>(n));
+        std::vector<double> best(static_cast<size_t>(n));
+        std::vector<uint32_t> seen(static_cast<size_t>(n), 0);  // best[v] holds for this search when seen[v] == search
+        uint32_t search = 0;
+        PyHeap heap;
+        auto within = [&](int64_t source, int64_t target, double limit) {
+            ++search;
+            best[source] = 0.0;
+            seen[source] = search;
+            heap.items.clear();
+            heap.push({0.0, source});
+            auto relax = [&](double distance, int64_t other, double length) {
+                const double through = distance + length;
+                if (through <= limit && (seen[other] != search || through < best[other])) {
+                    best[other] = through;
+                    seen[other] = search;
+                    heap.push({through, other});
+                }
+            };
+            while (!heap.items.empty()) {
+                const auto [distance, node] = heap.pop();
+                if (node == target) return true;
+                if (distance > best[node]) continue;
+                for (int32_t e = sp[node]; e < sp[node + 1]; ++e) relax(distance, s_indices.data()[e], s_lengths.data()[e]);
+                for (const auto& [other, length] : joined[node]) relax(distance, other, length);
+            }
+            return false;
+        };
+        auto length_of = [&](int64_t p, int64_t q) {  // the graph's edge p - q (a path edge: it is there)
+            for (int32_t e = gp[p]; e < gp[p + 1]; ++e)
+                if (g_indices.data()[e] == q) return g_lengths.data()[e];
+            return std::numeric_limits<double>::quiet_NaN();
+        };
+        for (size_t i = 0; i < k; ++i) {
+            if (!accepted.empty() && within(a.data()[i], b.data()[i], bounds.data()[i])) continue;
+            accepted.push_back(static_cast<int64_t>(i));
+            const size_t first = paths.size();
+            for (int64_t v = x.data()[i]; ; v = pred[v]) {  // x back to a, then reversed: a ~> x
+                paths.push_back(v);
+                if (pred[v] < 0) break;
+            }
+            std::reverse(paths.begin() + static_cast<std::ptrdiff_t>(first), paths.end());
+            for (int64_t v = y.data()[i]; ; v = pred[v]) {  // y ~> b
+                paths.push_back(v);
+                if (pred[v] < 0) break;
+            }
+            for (size_t j = first + 1; j < paths.size(); ++j) {
+                const int64_t p = paths[j - 1], q = paths[j];
+                const double length = length_of(p, q);
+                joined[p].push_back({q, length});
+                joined[q].push_back({p, length});
+            }
+            offsets.push_back(static_cast<int64_t>(paths.size()));
+        }
+    }
+    auto out = [](const std::vector<int64_t>& values) {
+        auto* data = new int64_t[std::max<size_t>(values.size(), 1)];
+        std::copy(values.begin(), values.end(), data);
+        nb::capsule owner(data, [](void* p) noexcept { delete[] static_cast<int64_t*>(p); });
+        return nb::ndarray<nb::numpy, int64_t, nb::ndim<1>>(data, {values.size()}, owner);
+    };
+    return nb::make_tuple(out(accepted), out(paths), out(offsets));
+}
+
+// Kruskal's minimum spanning forest (J. B. Kruskal, "On the shortest spanning subtree of a graph and the
+// traveling salesman problem", Proc. AMS 7(1):48-50, 1956) under the total order (weight, lower end, higher end,
+// position): the unique forest g2s_plugins.steiner._paths.spanning_tree documents. Of parallel edges the first
+// in that order is the one it can take (the others join ends already joined); self-loops never join anything.
+// One sort of the m edges and a union-find with path halving: O(m log m).
+nb::ndarray<nb::numpy, int64_t, nb::ndim<1>> spanning_forest(int64_t size, Int64Array a, Int64Array b, DoubleArray w) {
+    const size_t m = w.shape(0);
+    if (a.shape(0) != m || b.shape(0) != m) throw nb::value_error("spanning_forest: a, b and w must be (m,)");
+    if (size < 0) throw nb::value_error("spanning_forest: size must be >= 0");
+    struct Edge {
+        double weight;
+        int64_t lo, hi, position;
+    };
+    std::vector<Edge> edges;
+    edges.reserve(m);
+    for (size_t i = 0; i < m; ++i) {
+        const int64_t u = a.data()[i], v = b.data()[i];
+        if (u < 0 || u >= size || v < 0 || v >= size) throw nb::value_error("spanning_forest: an end is out of range");
+        if (std::isnan(w.data()[i])) throw nb::value_error("spanning_forest: a weight is NaN");
+        if (u != v) edges.push_back({w.data()[i], std::min(u, v), std::max(u, v), static_cast<int64_t>(i)});
+    }
+    std::vector<int64_t> chosen;
+    {
+        nb::gil_scoped_release release;
+        std::sort(edges.begin(), edges.end(), [](const Edge& x, const Edge& y) {
+            if (x.weight != y.weight) return x.weight < y.weight;
+            if (x.lo != y.lo) return x.lo < y.lo;
+            if (x.hi != y.hi) return x.hi < y.hi;
+            return x.position < y.position;
+        });
+        std::vector<int64_t> up(static_cast<size_t>(size));
+        for (int64_t i = 0; i < size; ++i) up[i] = i;
+        auto find = [&](int64_t x) {
+            while (up[x] != x) x = up[x] = up[up[x]];
+            return x;
+        };
+        for (const Edge& e : edges) {
+            const int64_t ru = find(e.lo), rv = find(e.hi);
+            if (ru == rv) continue;
+            up[std::max(ru, rv)] = std::min(ru, rv);
+            chosen.push_back(e.position);
+        }
+        std::sort(chosen.begin(), chosen.end());
+    }
+    auto* out = new int64_t[std::max<size_t>(chosen.size(), 1)];
+    std::copy(chosen.begin(), chosen.end(), out);
+    nb::capsule owner(out, [](void* p) noexcept { delete[] static_cast<int64_t*>(p); });
+    return nb::ndarray<nb::numpy, int64_t, nb::ndim<1>>(out, {chosen.size()}, owner);
+}
+
 }  // namespace
 
 NB_MODULE(_trees, m) {
-    m.doc() = "Shortest-path trees from many sources and the weight passing through each node (see src/trees_module.cpp).";
+    m.doc() = "Shortest-path trees from many sources and the weight passing through each node, the coverage cover, the loop "
+              "adder's greedy loop and Kruskal's spanning forest (see src/trees_module.cpp).";
     m.def("shortest_path_flow", &shortest_path_flow, nb::arg("indptr"), nb::arg("indices"), nb::arg("weights"),
           nb::arg("sources"), nb::arg("values"), nb::arg("threads"),
           "shortest_path_flow(indptr, indices, weights, sources, values, threads) -> (predecessors, through).\n\n"
@@ -427,4 +570,19 @@ NB_MODULE(_trees, m) {
           "int32 indices, float64 lengths), from the distances `start` (n,) float64 to the seeds and their\n"
           "predecessors (n,) int32 (negative: none), the far nodes `far` (int64) in the order they are taken\n"
           "from the end: added (k,) int64, the nodes of the paths added, path by path.");
+    m.def("greedy_loops", &greedy_loops, nb::arg("s_indptr"), nb::arg("s_indices"), nb::arg("s_lengths"),
+          nb::arg("g_indptr"), nb::arg("g_indices"), nb::arg("g_lengths"), nb::arg("predecessor"), nb::arg("a"),
+          nb::arg("b"), nb::arg("x"), nb::arg("y"), nb::arg("bounds"),
+          "greedy_loops(s_indptr, s_indices, s_lengths, g_indptr, g_indices, g_lengths, predecessor, a, b, x, y,\n"
+          "bounds) -> (accepted, paths, offsets).\n\n"
+          "The loop of g2s_plugins.loops.spanner.add_loops (see there) over k candidates (int64 (k,) each:\n"
+          "structure nodes a, b, graph edge x - y; float64 bounds), on the structure and the graph in CSR form\n"
+          "over the same n nodes (int32 indptr and indices, float64 lengths >= 0) and the Voronoi search's\n"
+          "predecessors (n,) int32 (negative: a structure node): accepted (j,) int64, the candidates added in\n"
+          "order; the nodes of their paths (a ~> x, y ~> b) in `paths`, path i at offsets[i]:offsets[i + 1].");
+    m.def("spanning_forest", &spanning_forest, nb::arg("size"), nb::arg("a"), nb::arg("b"), nb::arg("w"),
+          "spanning_forest(size, a, b, w) -> chosen.\n\n"
+          "The minimum spanning forest of the edges (a[i], b[i]) (int64, vertices 0 .. size-1) weighing w[i]\n"
+          "(float64, no NaN) under the total order (w, min(a, b), max(a, b), i), Kruskal's: chosen (k,) int64,\n"
+          "the indices of its edges, ascending (self-loops never chosen).");
 }

@@ -220,6 +220,16 @@ def test_centre_segments_are_clipped_to_their_polygons():
     assert leave.tolist() == pytest.approx([1 / 3, 0.5]) and enter.tolist() == pytest.approx([0.5, 0.5])
 
 
+def test_first_largest_is_each_runs_argmax():
+    """Runs [1, 3, 3], [2, nan, 5, nan], [0, 0] and [inf]: the first 3 (index 1), the first NaN (4), the first 0 (7),
+    the inf (9), as np.argmax of each run gives them."""
+    values = np.array([1, 3, 3, 2, np.nan, 5, np.nan, 0, 0, np.inf])
+    starts = np.array([0, 3, 7, 9])
+    assert plugin._first_largest(values, starts).tolist() == [1, 4, 7, 9]
+    runs = np.split(values, starts[1:])
+    assert [int(start + np.argmax(run)) for start, run in zip(starts, runs)] == [1, 4, 7, 9]
+
+
 def two_rooms_and_a_passage() -> trimesh.Trimesh:
     """Two 4 x 4 m floors 2 m apart along x, joined along their z = 0 sides by a passage 1.5 m wide (no walls)."""
     return trimesh.util.concatenate([

@@ -886,3 +886,20 @@ def test_bounds_are_each_columns_extremes():
     lo, hi = bounds(points)
     assert lo.tolist() == [-4.0, -2.0, -6.0] and hi.tolist() == [2.0, 5.0, 3.0]
     assert lo.dtype == hi.dtype == np.float32
+
+
+def test_surface_of_a_polygon_without_area_in_plan_or_without_triangles_is_its_vertex_mean():
+    """Polygon 0: the unit square at height 1, one triangle (0,1,0)-(1,1,0)-(0,1,1) under it: centre x, z from
+    the triangle's centroid (1/3, 1/3), lifted to 1. Polygon 1: a wall x = 5, its triangle upright (no area in
+    plan): x, z the mean of its 4 vertices (5, 0.5), the height read off its triangle (no barycentric weights in
+    plan: its third vertex, 1). Polygon 2: no triangle: the mean of its 3 vertices (7, 2/3, 1/3)."""
+    from g2s_plugins.recast.navmesh import _surface
+
+    verts = np.array([[0, 1, 0], [1, 1, 0], [1, 1, 1], [0, 1, 1], [5, 0, 0], [5, 0, 1], [5, 1, 1], [5, 1, 0],
+                      [6, 0, 0], [8, 1, 0], [7, 1, 1]], dtype=np.float64)
+    polys = np.array([[0, 1, 2, 3], [4, 5, 6, 7], [8, 9, 10, -1]])
+    dverts = np.array([[0, 1, 0], [1, 1, 0], [0, 1, 1], [5, 0, 0], [5, 0, 1], [5, 1, 0]], dtype=np.float64)
+    dtris = np.array([[0, 1, 2], [3, 4, 5]])
+    centres, normals, areas = _surface(3, verts, polys, dverts, dtris, np.array([0, 1]))
+    np.testing.assert_allclose(centres, [[1 / 3, 1, 1 / 3], [5, 1, 0.5], [7, 2 / 3, 1 / 3]], rtol=0, atol=1e-15)
+    assert normals.tolist() == [[0, 1, 0], [-1, 0, 0], [0, 1, 0]] and areas.tolist() == [0.5, 0.5, 0]

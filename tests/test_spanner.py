@@ -1,17 +1,48 @@
-"""The loop adder's bounded search along the structure, on a hand-checkable path."""
+"""The loop adder's greedy loop (in C++) and the adder on hand-checkable graphs."""
 
 from __future__ import annotations
 
 import networkx as nx
+import numpy as np
 
-from g2s_plugins.loops.spanner import _within
+from g2s_plugins import _trees
+from g2s_plugins.loops.spanner import add_loops
 
 
-def test_within_follows_the_structure_and_the_joined_paths_up_to_the_limit():
-    structure = nx.Graph()
-    structure.add_weighted_edges_from([(0, 1, 1.0), (1, 2, 2.0)])
-    joined = {2: [(3, 1.5)], 3: [(2, 1.5)]}  # a path 2 - 3 added after the structure was built
-    assert _within(structure._adj, joined, 0, 3, 4.5)
-    assert _within(structure._adj, joined, 3, 0, 4.5)  # from a joined node back onto the structure
-    assert not _within(structure._adj, joined, 0, 3, 4.4)
-    assert not _within(structure._adj, {}, 0, 3, 100.0)  # 3 is on no structure edge
+def csr(n: int, edges: list[tuple[int, int, float]]) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """int32 indptr and indices, float64 lengths of the undirected ``edges`` over nodes 0 .. n-1."""
+    rows = {i: [] for i in range(n)}
+    for u, v, length in edges:
+        rows[u].append((v, length))
+        rows[v].append((u, length))
+    indptr = np.cumsum([0] + [len(rows[i]) for i in range(n)]).astype(np.int32)
+    indices = np.array([v for i in range(n) for v, _ in rows[i]], dtype=np.int32)
+    lengths = np.array([length for i in range(n) for _, length in rows[i]], dtype=np.float64)
+    return indptr, indices, lengths
+
+
+def test_greedy_loops_adds_a_path_unless_the_structure_and_the_paths_added_are_within_the_bound():
+    """Structure 0 - 1 - 2 - 3 (1 m each); the graph adds 0 - 4 - 3 and 1 - 5 - 3 (1 m and 0.5 m edges), 4 in
+    0's cell, 5 in 1's. Candidates in order: (0, 3) by 4 - 3, bound 2.5: the first, added unchecked; (1, 3) by
+    5 - 3, bound 1.9: 2 m along 1 - 2 - 3, 3 m through 0 - 4 - 3, added; (0, 2), bound 2: 2 m along the
+    structure, not added; (0, 3) again, bound 2: 2 m along the path added first (a bound reached exactly
+    counts), not added."""
+    structure = csr(6, [(0, 1, 1.0), (1, 2, 1.0), (2, 3, 1.0)])
+    graph = csr(6, [(0, 1, 1.0), (1, 2, 1.0), (2, 3, 1.0), (0, 4, 1.0), (4, 3, 1.0), (1, 5, 0.5), (5, 3, 0.5)])
+    predecessor = np.array([-9999, -9999, -9999, -9999, 0, 1], dtype=np.int32)
+    a, b, x, y = (np.array(column, dtype=np.int64) for column in zip((0, 3, 4, 3), (1, 3, 5, 3), (0, 2, 1, 2), (0, 3, 4, 3)))
+    accepted, paths, offsets = _trees.greedy_loops(*structure, *graph, predecessor, a, b, x, y, np.array([2.5, 1.9, 2.0, 2.0]))
+    assert accepted.tolist() == [0, 1]
+    assert paths.tolist() == [0, 4, 3, 1, 5, 3] and offsets.tolist() == [0, 3, 6]
+
+
+def test_a_ring_gets_its_missing_edge_back():
+    """A square ring 0 - 1 - 2 - 3 - 0 of 1 m sides; the structure 0 - 1 - 2 - 3 leaves 0 and 3 3 m apart
+    where the ring joins them by 1 m (more than 1.5 times, and by more than 1 m): the edge 0 - 3 comes back."""
+    graph = nx.cycle_graph(4)
+    nx.set_edge_attributes(graph, 1.0, "weight")
+    structure = nx.Graph(graph.edges(data=True))
+    structure.remove_edge(3, 0)
+    looped = add_loops(graph, structure, 1.5, 1.0)
+    assert sorted(map(sorted, looped.edges)) == [[0, 1], [0, 3], [1, 2], [2, 3]]
+    assert add_loops(graph, structure, 1.5, 2.0) is structure  # a gain of 2 m is no more than 2 m

@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 from networkx.algorithms.approximation import steiner_tree as nx_steiner_tree
 
+from g2s_plugins import _trees
 from g2s_plugins.steiner import _paths, kou, mehlhorn
 from g2s_plugins.steiner.kou import kou_steiner_tree
 from g2s_plugins.steiner.mehlhorn import mehlhorn_steiner_tree
@@ -353,6 +354,18 @@ def test_spanning_tree_breaks_ties_by_ends_and_keeps_zeros():
     # Zero weights are kept, and (0, 1) < (0, 2) < (1, 2) among equals.
     chosen = _paths.spanning_tree(3, np.array([0, 1, 0]), np.array([1, 2, 2]), np.array([0.0, 0.0, 0.0]))
     assert chosen.tolist() == [0, 2]
+
+
+def test_spanning_forest_takes_the_lightest_first_of_parallel_edges_and_no_self_loop():
+    """Edges 0: (0, 1), 1: (1, 2), 2: (0, 2), all 1; 3: (2, 3) 5; 4: (3, 2) 2; 5: (3, 3) 0; 6: (2, 3) 2; 7: (4, 5) 3.
+    Kruskal in the order (w, lo, hi, i): 5 is a self-loop; 0 and 2 join 0, 1, 2 ((0, 1) < (0, 2) < (1, 2)), 1 closes
+    a cycle; 4 and 6 tie with the same ends, 4 comes first; 7 is a tree of its own; 3 joins nothing new."""
+    a = np.array([0, 1, 0, 2, 3, 3, 2, 4])
+    b = np.array([1, 2, 2, 3, 2, 3, 3, 5])
+    w = np.array([1.0, 1.0, 1.0, 5.0, 2.0, 0.0, 2.0, 3.0])
+    assert _trees.spanning_forest(6, a, b, w).tolist() == [0, 2, 4, 7]
+    with pytest.raises(ValueError, match="NaN"):
+        _trees.spanning_forest(6, a, b, np.where(w == 5.0, np.nan, w))
 
 
 def test_dense_spanning_tree_matches_sparse_one():

@@ -90,12 +90,10 @@ def navmesh_graph(navmesh: NavMesh, agent: AgentConfig | None = None, max_edge_g
     pairs = portals.pairs
     weights = np.linalg.norm(centres[pairs[:, 1]] - centres[pairs[:, 0]], axis=1) if len(pairs) else np.zeros(0)
 
-    # Plain Python values, converted in bulk (tolist) rather than per element.
-    pos = [tuple(p) for p in centres.tolist()]
-    nrm = [tuple(n) for n in normals.tolist()]
-    area = areas.tolist()
-    nodes = {i: {"pos": pos[i], "normal": nrm[i], "area": area[i], "on_navmesh": True, "polygon": i}
-             for i in range(navmesh.polygon_count)}
+    # Plain Python values, converted in bulk (tolist) and zipped into tuples column by column: no list per row
+    pos, nrm = _rows(centres), _rows(normals)
+    nodes = {i: {"pos": p, "normal": n, "area": a, "on_navmesh": True, "polygon": i}
+             for i, p, n, a in zip(range(navmesh.polygon_count), pos, nrm, areas.tolist())}
     crossing = np.zeros(len(pairs), dtype=bool)
     if max_edge_gap is not None and agent is None:
         raise ValueError("max_edge_gap needs the agent (its radius spaces the probes)")
@@ -106,16 +104,22 @@ def navmesh_graph(navmesh: NavMesh, agent: AgentConfig | None = None, max_edge_g
         gaps = navmesh.segment_surface_gaps(starts, ends, step, reach)
         crossing = (gaps > max_edge_gap) | (_corner_gaps(navmesh, reach) > max_edge_gap)
     direct = ~crossing
+    shared = portals.endpoints[direct]
     graph = graph_of(nx.Graph(), nodes, (
-        (a, b, {"weight": w, "portal": ((e[0], e[1], e[2]), (e[3], e[4], e[5])), "width": wd})
-        for (a, b), w, e, wd in zip(
-            pairs[direct].tolist(), weights[direct].tolist(), portals.endpoints[direct].reshape(-1, 6).tolist(),
+        (a, b, {"weight": w, "portal": portal, "width": width})
+        for a, b, w, portal, width in zip(
+            *pairs[direct].T.tolist(), weights[direct].tolist(), zip(_rows(shared[:, 0]), _rows(shared[:, 1])),
             portals.widths[direct].tolist(),
         )
     ))
     if crossing.any():
         _add_portal_nodes(graph, navmesh, np.flatnonzero(crossing), agent, max_edge_gap)
     return graph
+
+
+def _rows(points: np.ndarray) -> list[tuple[float, float, float]]:
+    """(N,3) ``points`` as N tuples of 3 Python floats."""
+    return list(zip(*points.T.tolist()))
 
 
 def _probe_spacing_and_reach(agent: AgentConfig) -> tuple[float, float]:
@@ -244,21 +248,23 @@ def _add_portal_nodes(
     starts = np.stack([centres[[a for a, _ in pairs]], middles], axis=1).reshape(-1, 3)
     ends = np.stack([middles, centres[[b for _, b in pairs]]], axis=1).reshape(-1, 3)
     halves = _surface_points_between(navmesh, starts, ends, REFINEMENTS, agent, max_edge_gap, extents)
-    nodes: list[tuple[int, dict]] = []
+    chains = [[*halves[2 * k], (polygon, middle), *halves[2 * k + 1]] for k, (polygon, middle) in
+              enumerate(zip(polygons, middles.tolist()))]
+    # the normals of the polygons the new nodes stand on, as tuples in one pass (not the rows of all polygons)
+    normals = iter(_rows(navmesh.normals[[on for chain in chains for on, _ in chain]]))
+    nodes: dict[int, dict] = {}
     edges: list[tuple[int, int, dict]] = []
-    normals, node_data, node = navmesh.normals.tolist(), graph.nodes, navmesh.polygon_count
-    for k, ((a, b), polygon, middle, ends_k) in enumerate(zip(pairs, polygons, middles.tolist(), endpoints.tolist())):
-        attributes = {"portal": tuple(map(tuple, ends_k)), "width": widths[k]}
+    node_data, node = graph._node, navmesh.polygon_count
+    for (a, b), chain, portal, width in zip(pairs, chains, zip(_rows(endpoints[:, 0]), _rows(endpoints[:, 1])), widths):
         previous, previous_pos = a, node_data[a]["pos"]
-        for on, point in [*halves[2 * k], (polygon, middle), *halves[2 * k + 1]]:
+        for _, point in chain:
             pos = tuple(point)
-            nodes.append((node, {"pos": pos, "normal": tuple(normals[on]), "area": 0.0, "on_navmesh": True, "polygon": -1}))
-            edges.append((previous, node, {"weight": math.dist(previous_pos, pos), **attributes}))
+            nodes[node] = {"pos": pos, "normal": next(normals), "area": 0.0, "on_navmesh": True, "polygon": -1}
+            edges.append((previous, node, {"weight": math.dist(previous_pos, pos), "portal": portal, "width": width}))
             previous, previous_pos, node = node, pos, node + 1
-        edges.append((previous, b, {"weight": math.dist(previous_pos, node_data[b]["pos"]), **attributes}))
+        edges.append((previous, b, {"weight": math.dist(previous_pos, node_data[b]["pos"]), "portal": portal, "width": width}))
     # all nodes, then all edges in the order they were made: the same graph as adding them pair by pair
-    graph.add_nodes_from(nodes)
-    graph.add_edges_from(edges)
+    graph_of(graph, nodes, edges)
 
 
 def _surface_points_between(
@@ -284,13 +290,12 @@ def _surface_points_between(
     if not probed:
         return found
     inner = np.array([counts[i] - 1 for i in probed])
-    rows = np.repeat(probed, inner)
-    fraction = np.concatenate([np.arange(1, counts[i]) for i in probed]) / np.repeat([counts[i] for i in probed], inner)
+    rows, first = np.repeat(probed, inner), np.cumsum(inner) - inner
+    fraction = (np.arange(len(rows)) - np.repeat(first, inner) + 1) / np.repeat([counts[i] for i in probed], inner)
     probes = starts[rows] + fraction[:, None] * span[rows]
     gaps = navmesh.segment_surface_gaps(probes, probes, step, reach)
     split, points = [], []
-    for i, first, last in zip(probed, (np.cumsum(inner) - inner).tolist(), np.cumsum(inner).tolist()):
-        worst = first + int(np.argmax(gaps[first:last]))
+    for i, worst in zip(probed, _first_largest(gaps, first).tolist()):
         if not gaps[worst] <= max_edge_gap:
             polygon, point = navmesh.nearest_poly(probes[worst], extents=extents)
             if polygon >= 0:  # else no surface there to follow
@@ -307,6 +312,14 @@ def _surface_points_between(
     for j, ((i, polygon), middle) in enumerate(zip(split, middles.tolist())):
         found[i] = [*pieces[j], (polygon, middle), *pieces[len(split) + j]]
     return found
+
+
+def _first_largest(values: np.ndarray, starts: np.ndarray) -> np.ndarray:
+    """(k,) for each run ``values[starts[j]:starts[j + 1]]`` (the last to the end; none empty) the index of its
+    largest value, the first of equal ones, a NaN above all (``np.argmax`` of each run, without a call per run)."""
+    top = np.repeat(np.maximum.reduceat(values, starts), np.diff(np.r_[starts, len(values)]))  # NaN where a run has one
+    hit = (values == top) | (np.isnan(values) & np.isnan(top))
+    return np.minimum.reduceat(np.where(hit, np.arange(len(values)), len(values)), starts)
 
 
 def overlapping_regions_warning(overlaps: np.ndarray, partition: str) -> str:

@@ -29,12 +29,12 @@ tree distances of all candidates at once (lowest common ancestors by binary
 lifting), then, once a path has been added, one Dijkstra on the structure
 bounded by ``max(stretch L, L + min_gain)`` per remaining violator, which
 visits only the structure nodes within that distance: O(v b log b) for v
-violators and b nodes in such a ball, independent of the level's size.
+violators and b nodes in such a ball, independent of the level's size. That
+loop runs in C++ (``g2s_plugins._trees.greedy_loops``, src/trees_module.cpp).
 """
 
 from __future__ import annotations
 
-import heapq
 import itertools
 import math
 
@@ -47,7 +47,8 @@ from scipy.sparse import csgraph
 from g2s_core.model import RunContext, graph_of
 from g2s_core.rooted import components
 from g2s_core.plugin import PluginParams, hookimpl
-from g2s_plugins.surface_arrays import SurfaceArrays, surface_arrays
+from g2s_plugins import _trees
+from g2s_plugins.surface_arrays import MIN_LENGTH, SurfaceArrays, surface_arrays
 
 NAME = "spanner"
 
@@ -70,7 +71,7 @@ def add_loops(graph: nx.Graph, structure: nx.Graph, stretch: float, min_gain: fl
 
     Args:
         graph: the initial graph, edges with ``weight`` (metres).
-        structure: the Steiner forest.
+        structure: the Steiner forest (its edges measured by their ``weight`` in ``graph``).
         stretch: >= 1; ``inf`` returns ``structure`` itself.
         min_gain: metres a path must save along the structure to be added.
 
@@ -89,24 +90,29 @@ def add_loops(graph: nx.Graph, structure: nx.Graph, stretch: float, min_gain: fl
         arrays.adjacency, directed=False, indices=rows, min_only=True, return_predecessors=True
     )
     ends = rows[np.column_stack(components(structure, ids)[:2])]  # (e, 2) rows of its edges' ends, in no set order
+    stored = np.asarray(arrays.adjacency[ends[:, 0], ends[:, 1]]).ravel()  # their lengths as the arrays hold them
     pairs, paths = _candidates(arrays, structure, ends, distance, cell)
     if len(pairs) == 0:
         return structure
-    along_tree = _tree_distances(arrays, structure, ends, pairs)
+    along_tree = _tree_distances(arrays, structure, ends, stored, pairs)
     bound = np.maximum(stretch * paths, paths + min_gain)
-    violating = np.flatnonzero(along_tree > bound)
+    violating = np.flatnonzero(along_tree > bound)  # candidates are sorted by path length
     if violating.size == 0:
         return structure
-    paths_ids: list[list[int]] = []
-    joined: dict[int, list[tuple[int, float]]] = {}  # the added paths' edges, by node id
-    for k in violating.tolist():  # candidates are sorted by path length
-        a, b, x, y = pairs[k]
-        if paths_ids and _within(structure._adj, joined, arrays.nodes[a], arrays.nodes[b], float(bound[k])):
-            continue
-        paths_ids.append([arrays.nodes[i] for i in _walk(predecessor, x)[::-1] + _walk(predecessor, y)])
-        for p, q in zip(paths_ids[-1], paths_ids[-1][1:]):
-            joined.setdefault(p, []).append((q, graph._adj[p][q]["weight"]))
-            joined.setdefault(q, []).append((p, graph._adj[p][q]["weight"]))
+    # the structure's edges (the graph's, with its lengths) both ways, then the graph's, for the greedy loop
+    lengths = np.tile(_lengths(arrays, graph, ends[:, 0], ends[:, 1], stored), 2)
+    along = sp.csr_array((lengths, (np.concatenate([ends[:, 0], ends[:, 1]]), np.concatenate([ends[:, 1], ends[:, 0]]))),
+                         shape=(arrays.n, arrays.n))
+    adjacency = arrays.adjacency
+    tails = np.repeat(np.arange(arrays.n), np.diff(adjacency.indptr))
+    a, b, x, y = (np.ascontiguousarray(column) for column in pairs[violating].T)
+    _, rows_of_paths, offsets = _trees.greedy_loops(
+        along.indptr.astype(np.int32), along.indices.astype(np.int32), along.data, adjacency.indptr.astype(np.int32),
+        adjacency.indices.astype(np.int32), _lengths(arrays, graph, tails, adjacency.indices, adjacency.data),
+        predecessor.astype(np.int32), a, b, x, y, bound[violating],
+    )
+    on_paths = list(map(arrays.nodes.__getitem__, rows_of_paths.tolist()))
+    paths_ids = [on_paths[start:end] for start, end in itertools.pairwise(offsets.tolist())]
     # the structure's nodes and edges, then every path's nodes, then every path's edges (the insertion order of
     # adding them path by path), without attributes: the pipeline copies the graph's onto them all at once
     nodes = itertools.chain(structure, (node for path in paths_ids for node in path))
@@ -141,11 +147,12 @@ def _candidates(
     return np.column_stack([a, b, x, y])[first], length[first]
 
 
-def _tree_distances(arrays: SurfaceArrays, forest: nx.Graph, edge_rows: np.ndarray, pairs: np.ndarray) -> np.ndarray:
-    """Distance along ``forest`` (its edges' rows ``edge_rows``) between the ends of each pair (inf across
-    trees), by binary lifting."""
+def _tree_distances(
+    arrays: SurfaceArrays, forest: nx.Graph, edge_rows: np.ndarray, lengths: np.ndarray, pairs: np.ndarray
+) -> np.ndarray:
+    """Distance along ``forest`` (its edges' rows ``edge_rows``, their ``lengths``) between the ends of each pair
+    (inf across trees), by binary lifting."""
     n = arrays.n
-    lengths = np.asarray(arrays.adjacency[edge_rows[:, 0], edge_rows[:, 1]]).ravel()
     tree = sp.csr_array(
         (np.concatenate([lengths, lengths]), (np.concatenate(edge_rows.T[::-1]), np.concatenate(edge_rows.T))), shape=(n, n)
     )
@@ -176,35 +183,11 @@ def _tree_distances(arrays: SurfaceArrays, forest: nx.Graph, edge_rows: np.ndarr
     return np.where(labels[pairs[:, 0]] == labels[pairs[:, 1]], result, np.inf)
 
 
-def _within(
-    adjacency: dict[int, dict[int, dict]], joined: dict[int, list[tuple[int, float]]], source: int, target: int, limit: float
-) -> bool:
-    """Whether ``target`` is at most ``limit`` metres from ``source`` along the structure: its edges (networkx's
-    adjacency dicts, lengths in ``weight``) and the paths ``joined`` to it (node id -> (neighbour, length)).
-
-    A Dijkstra that stops at ``limit``: it visits only the structure nodes
-    within that distance, whatever the size of the level.
-    """
-    best = {source: 0.0}
-    heap = [(0.0, source)]
-    while heap:
-        distance, node = heapq.heappop(heap)
-        if node == target:
-            return True
-        if distance > best[node]:
-            continue
-        along = [(other, data["weight"]) for other, data in adjacency.get(node, {}).items()]
-        for other, length in along + joined.get(node, []):
-            through = distance + length
-            if through <= limit and through < best.get(other, math.inf):
-                best[other] = through
-                heapq.heappush(heap, (through, other))
-    return False
-
-
-def _walk(predecessor: np.ndarray, node: int) -> list[int]:
-    """Rows from ``node`` back to its structure node along the Voronoi search's predecessors."""
-    path = [int(node)]
-    while predecessor[path[-1]] >= 0:
-        path.append(int(predecessor[path[-1]]))
-    return path
+def _lengths(arrays: SurfaceArrays, graph: nx.Graph, tails: np.ndarray, heads: np.ndarray, stored: np.ndarray) -> np.ndarray:
+    """(e,) the ``weight`` in ``graph`` of the edges ``tails`` - ``heads`` (rows of ``arrays``, (e,) each) whose
+    lengths the arrays hold as ``stored``: those, but for a length the arrays store as
+    :data:`~g2s_plugins.surface_arrays.MIN_LENGTH` or less (a zero, a negative or a tiny one), read again."""
+    lengths = np.array(stored, dtype=np.float64)
+    odd = np.flatnonzero(~(lengths > MIN_LENGTH))
+    lengths[odd] = [graph._adj[arrays.nodes[p]][arrays.nodes[q]]["weight"] for p, q in zip(tails[odd].tolist(), heads[odd].tolist())]
+    return lengths

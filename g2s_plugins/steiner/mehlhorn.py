@@ -24,7 +24,7 @@ for l leaves of an optimal tree. Running time O(m log m + n log n): the one
 Dijkstra is O(m + n log n), Mehlhorn's bound for the whole algorithm, but here
 the m candidate edges are sorted (the lightest proposal per terminal pair,
 :func:`~g2s_plugins.steiner._paths.lightest_per_key`) and the spanning trees
-of steps 3 and 5 sort their at most m edges (scipy's Kruskal), O(m log m).
+of steps 3 and 5 sort their at most m edges (Kruskal's, in C++), O(m log m).
 
 Determinism: the graph is converted to a CSR matrix in sorted node order and
 the terminals are sorted, so the multi-source search is the same for the same
