@@ -194,7 +194,10 @@ def placement_heat(graph: nx.Graph, structure_nodes: Iterable[Hashable], flow: n
     is its walking flow, and ``rho_ceiling``'s when ``flow`` is the reference.
     """
     structure = sorted(structure_nodes)
-    return heat_map(graph, structure, traffic.gather(graph, structure, traffic.percentile(flow), mean=True), nearest)
+    if nearest is None:  # one search for both: the nodes each structure node stands for are those it is nearest to
+        nearest = _nearest_rows(graph, structure)
+    heat = traffic.gather(graph, structure, traffic.percentile(flow), mean=True, nearest=nearest)
+    return heat_map(graph, structure, heat, nearest)
 
 
 def placement_rho(graph: nx.Graph, structure_nodes: Iterable[Hashable], flow: np.ndarray,

@@ -114,7 +114,8 @@ def distance_to(arrays: SurfaceArrays, sources: np.ndarray) -> tuple[np.ndarray,
 
 
 def gather(
-    graph: nx.Graph, structure_nodes: Iterable[Hashable], values: np.ndarray, mean: bool = False
+    graph: nx.Graph, structure_nodes: Iterable[Hashable], values: np.ndarray, mean: bool = False,
+    nearest: np.ndarray | None = None,
 ) -> dict[Hashable, float]:
     """Per structure node, the sum (or mean) of ``values`` over the graph nodes it stands for.
 
@@ -127,10 +128,14 @@ def gather(
         values: (n,) one value per graph node, in the order of
             :func:`surface_arrays`.
         mean: divide each sum by the number of graph nodes it gathers.
+        nearest: (n,) each graph node's nearest structure node's row, when
+            the caller has it (the second result of :func:`distance_to` from
+            the structure nodes' rows); else searched here.
     """
     arrays = surface_arrays(graph)
     structure = sorted(structure_nodes)
-    _, nearest = distance_to(arrays, arrays.rows(structure))
+    if nearest is None:
+        _, nearest = distance_to(arrays, arrays.rows(structure))
     reached = nearest >= 0
     totals = np.bincount(nearest[reached], weights=np.asarray(values, dtype=np.float64)[reached], minlength=arrays.n)
     if mean:

@@ -507,6 +507,21 @@ def test_percentile_keeps_one_busy_polygon_from_lifting_its_node():
     assert ranked[4] > ranked[1]
 
 
+def test_placement_heat_searches_the_nearest_structure_nodes_once(monkeypatch):
+    """Corridor 0 - 5 and structure nodes 1 and 4: node 1 stands for 0, 1, 2, node 4 for 3, 4, 5; flows 0, 0,
+    100, 10, 11, 12 rank 1.5, 1.5, 6, 3, 4, 5 (percentiles 100 (rank - 0.5) / 6). The heat map gives each node
+    its structure node's mean percentile, after one search from the structure (gather takes its result
+    instead of searching again)."""
+    graph = corridor(6)
+    flow = np.array([0.0, 0.0, 100.0, 10.0, 11.0, 12.0])
+    searches = []
+    search = traffic.distance_to
+    monkeypatch.setattr(traffic, "distance_to", lambda *args: searches.append(args) or search(*args))
+    heat = evaluation.placement_heat(graph, [4, 1], flow)
+    near, far = 100 * (1 + 1 + 5.5) / 6 / 3, 100 * (2.5 + 3.5 + 4.5) / 6 / 3
+    assert heat == pytest.approx([near, near, near, far, far, far]) and len(searches) == 1
+
+
 @pytest.mark.parametrize("values", [
     [], [3.0], [0.0, -0.0, 0.0], [1.0, float("nan"), 2.0], [float("inf"), -float("inf"), 1.0, float("inf")], [0.0] * 7,
     np.random.default_rng(1).integers(0, 5, 1000).astype(float), np.round(np.random.default_rng(2).random(5000), 2),
