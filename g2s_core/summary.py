@@ -52,9 +52,9 @@ def outcome(result: RunResult) -> str:
     analyzer's records (``9 regions, 6 chokepoints``); empty when the run stopped before a graph."""
     _, graph = final_graph(result)
     openings = 0 if result.terminals is None else len(result.terminals.openings)
-    parts = ([] if graph is None else [f"{graph.number_of_nodes()} structure nodes"]) + ([f"{openings} openings"] if openings else [])
-    return ", ".join(parts + [f"{len(records)} {name}" for features in result.features.values()
-                              for name, records in features.items() if isinstance(records, list)])
+    counts = ([] if graph is None else [(graph.number_of_nodes(), "structure nodes")]) + ([(openings, "openings")] if openings else [])
+    counts += [(len(records), name) for features in result.features.values() for name, records in features.items() if isinstance(records, list)]
+    return ", ".join(f"{count} {name[:-1] if count == 1 and name.endswith('s') else name}" for count, name in counts)
 
 
 def metric_lines(result: RunResult) -> list[tuple[str, str]]:
