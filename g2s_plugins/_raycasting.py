@@ -805,6 +805,11 @@ def head_room(caster: RayCaster, ground: np.ndarray, agent: AgentShape) -> np.nd
     return clear_above(caster, ground + EPSILON * UP, agent.height - EPSILON)
 
 
+_CRACK_OFFSETS = np.array([[1.0, 0.0, 0.0], [-1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, 0.0, -1.0]]) / 8.0
+"""Where :func:`walk_segments` looks again for ground under a probe that found none, agent radii (the crack step of
+docs/entry_exit.md, r / 8: 0.05 m for the map-piece agent). Measured: see docs/entry_exit.md, "A ninth round"."""
+
+
 def walk_segments(
     caster: RayCaster,
     starts: np.ndarray,
@@ -866,7 +871,19 @@ def walk_segments(
     ok = np.ones(n, dtype=bool)
     ok[moving] = across.distance >= lengths[moving]
     good = (down.distance <= reach) & caster.walkable_faces(down.face, agent.max_slope_deg)
-    ground_y = np.where(good, line[:, 1] + lift - np.where(good, down.distance, 0.0), line[:, 1])
+    distance = np.where(good, down.distance, 0.0)
+    # A probe over a crack (a grating's 2 cm slots, unwelded tiles laid apart) stands on the floor beside it, as
+    # the agent's foot does: its ground is looked for again one crack step away along each horizontal axis, in
+    # that order. Only probes without ground are cast again; a hole wider than twice the step stays a hole.
+    for offset in _CRACK_OFFSETS * agent.radius:
+        missing = np.flatnonzero(~good)
+        if len(missing) == 0:
+            break
+        (beside,) = caster.first_hits_of([(lifted[missing] + offset, -UP)])
+        found = (beside.distance <= reach) & caster.walkable_faces(beside.face, agent.max_slope_deg)
+        good[missing[found]] = True
+        distance[missing[found]] = beside.distance[found]
+    ground_y = np.where(good, line[:, 1] + lift - distance, line[:, 1])
     above = agent.height - (line[:, 1] + lift - ground_y)
     good[good] = has_room(up.distance[good], above[good])
     if max_gap is not None:
