@@ -578,7 +578,9 @@ def _match_edges(segments: list[np.ndarray], ways: _Ways, s: _Settings, params: 
 
     def fit(samples: np.ndarray) -> tuple[np.ndarray, np.ndarray, float] | None:
         points = ways.edge[samples]
-        centre, direction, residual = _fit_line(points)
+        centre, direction, _ = _fit_line(points)
+        # Straight in plan: a floor curved across the way (a round pipe) ends along an arc in the vertical plane.
+        residual = _fit_line(points[:, [0, 2]])[2]
         straight = float(np.count_nonzero(residual <= tolerance)) / len(points)
         if straight < 0.8 and not _follows(points, ways.tangent[samples], cos_match):
             return None  # the edge points fit no straight edge and no curve along the segment: a corner
