@@ -368,13 +368,13 @@ def _surface_ends(
         hits = caster.first_hits(probes, probe_down)
         missing = (hits.distance > s.lift + s.climb) | ~_walkable(caster, hits.face, s)
         # A probe in a crack running along the way (a grating's slot, the way out within a few degrees of
-        # it) stays in it from one probe to the next: it stands on the surface found a search step to
-        # either side of it.
-        side = _unit(np.cross(np.repeat(directions[part], n_off, axis=0), UP))
-        for sign in (1.0, -1.0):
-            rows = np.flatnonzero(missing)
-            beside = caster.first_hits(probes[rows] + sign * s.delta * side[rows], probe_down[rows])
-            missing[rows] = (beside.distance > s.lift + s.climb) | ~_walkable(caster, beside.face, s)
+        # it) stays in it from one probe to the next: it stands on the surface when surface lies a search
+        # step to both sides of it (beyond an edge oblique to the way, one side at most).
+        rows = np.flatnonzero(missing)
+        side = s.delta * _unit(np.cross(directions[part][rows // n_off], UP))
+        beside = caster.first_hits_of([(probes[rows] + side, probe_down[rows]), (probes[rows] - side, probe_down[rows])])
+        on = [(hit.distance <= s.lift + s.climb) & _walkable(caster, hit.face, s) for hit in beside]
+        missing[rows] = ~(on[0] & on[1])
         missing = missing.reshape(-1, n_off)
         # The surface ends where two probes in a row find none: a crack narrower than a search step
         # (unwelded floor tiles) is no edge, and neither the agent nor Recast's voxels see it.
