@@ -269,6 +269,7 @@ class _Settings:
     snap: float
     delta: float
     walkable_cos: float  # cosine of the agent's steepest walkable slope
+    walkable_tan: float  # its tangent
 
 
 def _settings(params: Params, agent: AgentConfig) -> _Settings:
@@ -280,6 +281,7 @@ def _settings(params: Params, agent: AgentConfig) -> _Settings:
     return _Settings(
         radius=r, height=float(agent.height), climb=climb, step=step, lift=lift, snap=snap, delta=min(step, r) / 4.0,
         walkable_cos=math.cos(math.radians(float(agent.max_slope))),
+        walkable_tan=math.tan(math.radians(float(agent.max_slope))),
     )
 
 
@@ -578,9 +580,13 @@ def _match_edges(segments: list[np.ndarray], ways: _Ways, s: _Settings, params: 
 
     def fit(samples: np.ndarray) -> tuple[np.ndarray, np.ndarray, float] | None:
         points = ways.edge[samples]
-        centre, direction, _ = _fit_line(points)
-        # Straight in plan: a floor curved across the way (a round pipe) ends along an arc in the vertical plane.
-        residual = _fit_line(points[:, [0, 2]])[2]
+        centre, direction, residual = _fit_line(points)
+        # A floor curved across the way (a round pipe) ends along an arc in the vertical plane: such an edge,
+        # whose points climb along it no steeper than the agent walks (one surface), is straight in plan. A
+        # steeper jump is a riser between two surfaces (a wall's top beside a ceiling's), fitted in 3D.
+        rise = np.abs(np.diff(points[:, 1]))
+        if np.all(rise <= s.walkable_tan * np.hypot(*np.diff(points[:, [0, 2]], axis=0).T) + 1e-9):
+            residual = _fit_line(points[:, [0, 2]])[2]
         straight = float(np.count_nonzero(residual <= tolerance)) / len(points)
         if straight < 0.8 and not _follows(points, ways.tangent[samples], cos_match):
             return None  # the edge points fit no straight edge and no curve along the segment: a corner
