@@ -215,10 +215,12 @@ DOOR_STEP = 0.05
 """A door's clear width is looked for at points this far apart across its portal, m: finer than a wall is thick, so
 that one point lies in the doorway (:class:`DoorWidths`)."""
 
-SMALL_ROOM_DOOR = 0.9
+SMALL_ROOM_DOOR = 0.95
 """A small room's door is narrower than the room: under this share of it, both clear widths wall to wall in the
-level's mesh (:class:`DoorWidths`). A niche, or a piece of one, is as wide as its mouth (1.0); a 2.5 m room behind
-a 2 m door is 0.8 (docs/plugins.md, "Doors narrower than their rooms")."""
+level's mesh (:class:`DoorWidths`). Measured (docs/plugins.md, "Doors narrower than their rooms"): niches and pieces
+of them 1.0 (as wide as their mouths), castle nooks 0.97-1.0, pieces of the sewer's walkways 0.96-1.0 and of
+hospital rooms behind their beds 1.0; prison cells 0.10-0.80, rooms of 2-4 m behind 1.5-2 m doors up to 0.8, a
+hallway 1.6 m wide behind a 1.5 m door 0.94."""
 
 EXTENT_DIRECTIONS = 8
 """Directions, evenly spread over 180 degrees, along which a region's longest extent is measured
