@@ -2330,7 +2330,7 @@ def slopes(seed: int) -> trimesh.Trimesh:
 
 def islets(seed: int) -> trimesh.Trimesh:
     """A lake 420 m square of many small islands, most of them out of reach: a main island (a 60 x 40 m
-    octagon 1 m up, six huts one enters through a 1.6 m door, a jetty), 14 clusters of 4-7 islets joined by plank
+    octagon 1 m up, six huts one enters through a 1.6 m door, a bed against the back wall, a jetty), 14 clusters of 4-7 islets joined by plank
     walks 1.8 m wide (one cluster joined to the main island), and 60-80 lone islets no walk reaches; islets are
     flat convex tops 0.3-1.5 m up, 4-12 m across, with a rock or a tree on the larger ones. No water surface.
     """
@@ -2351,7 +2351,8 @@ def islets(seed: int) -> trimesh.Trimesh:
             s.wall((x, z0), (x, z1), 1.0, 3.5, thickness=0.2)
         s.hull(np.array([[x, 3.5, z] for x in (x0 - 0.3, x1 + 0.3) for z in (z0 - 0.3, z1 + 0.3)]
                         + [[x, 3.5 + 2.8 * math.tan(math.radians(50.0)), (z0 + z1) / 2] for x in (x0 - 0.3, x1 + 0.3)]))
-        s.box(x0 + 0.5, x0 + 2.5, 1.0, 1.5, z0 + 0.4, z0 + 1.4)  # a bed
+        bed_z = z1 - 1.4 if facing_z == z0 else z0 + 0.4  # against the back wall: in front of the door it shut four huts
+        s.box(x0 + 0.5, x0 + 2.5, 1.0, 1.5, bed_z, bed_z + 1.0)
     s.ramp(main + np.array([29.0, 0.0]), main + np.array([45.0, 0.0]), 2.4, 1.0, 0.6)  # the jetty
     placed: list[tuple[np.ndarray, float]] = [(main, 36.0), (main + np.array([45.0, 0.0]), 1.5)]
 
