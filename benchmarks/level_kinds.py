@@ -1,4 +1,4 @@
-"""Level kinds of the fifth to eighth held-out rounds (issue 9): generators no preset setting was made on.
+"""Level kinds of the fifth to ninth held-out rounds (issue 9): generators no preset setting was made on.
 
 Fifth round: six kinds, each about 1,000 navmesh polygons with the presets' agent (radius 0.5 m, height 2 m, climb 0.4 m):
 ``subway`` (platforms, track pits 1.2 m lower, stairs up to two concourses), ``archipelago`` (islands joined by
@@ -38,6 +38,15 @@ terraced town whose streets climb as stairs between houses) and ``spaceship`` (t
 spokes, rooms off the rings, airlocks). Doors in walls at an angle are 2 m wide (the spaceship): a 1.6 m door,
 enough on the axes, closes there for the presets' agent. Stairwells' steps are blocks 0.45 m deep (``stairs``'s
 ``depth``), so the flight of the storey below keeps its head room.
+
+Ninth round: six more kinds, 583-1,048 navmesh polygons with that agent (seeds 0-2), each stressing something the
+earlier rounds had not: ``kart`` (a 2.7 km figure-of-eight circuit crossing itself on a bridge, a pit lane, garages,
+a paddock), ``bunker`` (three levels of rooms behind blast doors, crawlways too low for the agent, two stairwells),
+``hall`` (a 240 x 150 m exhibition hall of open floor between sparse pillars), ``slopes`` (ridges whose flanks run
+through the 45-degree limit), ``islets`` (scores of small islands out of reach) and ``catacombs`` (galleries 1.8-2.2
+m wide and about 200 m long). Recast reads surfaces, not solids: a ceiling laid on the tops of solids leaves those
+tops floor under it (:func:`_lid` stops 1 m above them), and the floor stops under every hollow solid one could
+stand inside (the catacombs' rock, the bunker's machines, the paddock's trailers).
 
 Run: ``.venv/bin/python benchmarks/level_kinds.py OUT_DIR [--kinds subway forest] [--seeds 0 1 2]`` writes
 ``OUT_DIR/<kind>_s<seed>.obj``, the files ``benchmarks/analysis_quality.py --levels`` takes (which also takes the
