@@ -231,6 +231,19 @@ def _islands(rng: np.random.Generator, n: int, extent: float) -> tuple[np.ndarra
     return np.array(centres), np.array(radii)
 
 
+def _rock_or_palm(s: _Solids, rng: np.random.Generator, p: np.ndarray, top: float, rock: tuple[float, float],
+                  trunk: float, height: float) -> None:
+    """At plan point ``p`` (x, z) on ground at ``top``: a rock (the hull of 8 points scattered round ``p``, up to
+    U(*rock) m high) or, as often, a palm's trunk (an octagon ``trunk`` m in radius, ``height`` m above the ground)."""
+    if rng.random() < 0.5:
+        size = rng.uniform(*rock)
+        s.hull(np.concatenate([p + rng.normal(0, size / 2, size=(8, 2)), rng.uniform(top - 0.2, top + size, (8, 1))],
+                              axis=1)[:, [0, 2, 1]])
+    else:
+        ring = np.linspace(0, 2 * math.pi, 8, endpoint=False)
+        s.prism(p + trunk * np.stack([np.cos(ring), np.sin(ring)], 1), top - 0.5, top + height)
+
+
 def archipelago(seed: int) -> trimesh.Trimesh:
     """Islands (flat convex tops 0.5-2 m up, rocks and palm trunks on them) joined by narrow railed bridges.
 
@@ -247,14 +260,7 @@ def archipelago(seed: int) -> trimesh.Trimesh:
         plan = c + (r * rng.uniform(0.75, 1.0, size=14))[:, None] * np.stack([np.cos(angles), np.sin(angles)], 1)
         s.prism(plan, top - 3.0, top)
         for _ in range(rng.integers(6, 12)):  # rocks and palms well inside the shore
-            p = c + rng.uniform(-0.5, 0.5, size=2) * r
-            if rng.random() < 0.5:
-                rock = rng.uniform(0.8, 2.2)
-                s.hull(np.concatenate([p + rng.normal(0, rock / 2, size=(8, 2)), rng.uniform(top - 0.2, top + rock, (8, 1))],
-                                      axis=1)[:, [0, 2, 1]])
-            else:
-                angles = np.linspace(0, 2 * math.pi, 8, endpoint=False)
-                s.prism(p + 0.25 * np.stack([np.cos(angles), np.sin(angles)], 1), top - 0.5, top + 6.0)
+            _rock_or_palm(s, rng, c + rng.uniform(-0.5, 0.5, size=2) * r, top, (0.8, 2.2), 0.25, 6.0)
     gaps = np.linalg.norm(centres[:, None] - centres[None], axis=2) - radii[:, None] - radii[None]
     pairs = sorted((gaps[i, j], i, j) for i in range(len(centres)) for j in range(i + 1, len(centres)))
     group = list(range(len(centres)))
@@ -2379,14 +2385,7 @@ def islets(seed: int) -> trimesh.Trimesh:
         a = np.sort(rng.uniform(0, 2 * math.pi, size=10))
         s.prism(c + (r * rng.uniform(0.8, 1.0, size=10))[:, None] * np.stack([np.cos(a), np.sin(a)], 1), top - 2.0, top)
         if r > 3.5:
-            p = c + rng.uniform(-0.3, 0.3, size=2) * r
-            if rng.random() < 0.5:
-                rock = rng.uniform(0.6, 1.5)
-                s.hull(np.concatenate([p + rng.normal(0, rock / 2, size=(8, 2)), rng.uniform(top - 0.2, top + rock, (8, 1))],
-                                      axis=1)[:, [0, 2, 1]])
-            else:
-                ring = np.linspace(0, 2 * math.pi, 8, endpoint=False)
-                s.prism(p + 0.3 * np.stack([np.cos(ring), np.sin(ring)], 1), top - 0.5, top + 5.0)
+            _rock_or_palm(s, rng, c + rng.uniform(-0.3, 0.3, size=2) * r, top, (0.6, 1.5), 0.3, 5.0)
 
     def walk(a: tuple[np.ndarray, float, float], b: tuple[np.ndarray, float, float]) -> None:
         """A plank walk 1.8 m wide from islet ``a`` (centre, radius, top) to ``b``, from 0.5 of a radius in."""
