@@ -140,15 +140,6 @@ class _Loader(yaml.SafeLoader):
                     None, None, f"duplicate key {key.value!r} (first at line {first.start_mark.line + 1})", key.start_mark)
         return super().construct_mapping(node, deep)
 
-    def stale_possible_simple_keys(self) -> None:
-        """Drop the possible keys of earlier lines: as PyYAML's, without YAML's limit of 1024 characters on a key,
-        whose ``could not find expected ':'`` hid a key that is only too long (g2s refuses it as an unknown key)."""
-        for level, key in list(self.possible_simple_keys.items()):
-            if key.line != self.line:
-                if key.required:
-                    raise yaml.scanner.ScannerError("while scanning a simple key", key.mark, "could not find expected ':'", self.get_mark())
-                del self.possible_simple_keys[level]
-
     def _check_depth(self, depth: int) -> None:
         if depth >= MAX_NESTING:
             raise yaml.scanner.ScannerError(
@@ -197,7 +188,10 @@ def _read_yaml(path: Path) -> dict[str, Any]:
         mark = getattr(exc, "problem_mark", None)
         where = f" at line {mark.line + 1}, column {mark.column + 1}" if mark else ""
         problem = getattr(exc, "problem", None) or "not valid YAML"
-        if problem.startswith("but "):  # "but found another document" says what was expected first
+        lines = text.splitlines()
+        if any(m and m.line < len(lines) and len(lines[m.line]) > 1024 for m in (getattr(exc, "context_mark", None), mark)):
+            problem = "a key of more than 1,024 characters, YAML's limit on a key (no g2s key is that long)"
+        elif problem.startswith("but "):  # "but found another document" says what was expected first
             problem = f"{exc.context} {problem}"
         raise ConfigError(f"{path}: invalid YAML{where}: {problem}") from None
     if data is None:
