@@ -177,6 +177,12 @@ def _parse_yaml(text: str, source: str) -> Any:
     return parse_nested(text, lambda t: yaml.load(t, Loader=_Loader), source, ConfigError)
 
 
+def _key_over_limit(text: str, marks: tuple[Any, ...]) -> bool:
+    """Whether one of PyYAML's ``marks`` stands at the start or end of a key of more than YAML's 1,024 characters."""
+    word = r"[^\s:{}\[\],]*"
+    return any(len(re.search(word + "$", text[:m.index])[0]) + len(re.match(word, text[m.index:])[0]) > 1024 for m in marks if m)
+
+
 def _read_yaml(path: Path) -> dict[str, Any]:
     text = read_text(path, "config file", ConfigError)
     try:
@@ -188,8 +194,7 @@ def _read_yaml(path: Path) -> dict[str, Any]:
         mark = getattr(exc, "problem_mark", None)
         where = f" at line {mark.line + 1}, column {mark.column + 1}" if mark else ""
         problem = getattr(exc, "problem", None) or "not valid YAML"
-        lines = text.splitlines()
-        if any(m and m.line < len(lines) and len(lines[m.line]) > 1024 for m in (getattr(exc, "context_mark", None), mark)):
+        if _key_over_limit(text, (getattr(exc, "context_mark", None), mark)):
             problem = "a key of more than 1,024 characters, YAML's limit on a key (no g2s key is that long)"
         elif problem.startswith("but "):  # "but found another document" says what was expected first
             problem = f"{exc.context} {problem}"
