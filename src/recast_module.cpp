@@ -225,24 +225,25 @@ struct TileMesh {
 // One span (world x, floor y, z) of each region of `chf` that holds two spans of one
 // column: a region overlapping itself in plan, which Recast's contours (traced in
 // plan) cannot describe. Regions in order of first sight, scanning rows of columns.
+// O(spans + pairs of spans in a column): a column of one span is passed at once, and the set
+// is asked only about a region found twice (asked for every span, it took twice the time).
 std::vector<float> self_overlapping_regions(const rcCompactHeightfield& chf) {
     std::vector<float> found;
     std::unordered_set<unsigned short> seen;
     for (int z = 0; z < chf.height; ++z) {
         for (int x = 0; x < chf.width; ++x) {
             const rcCompactCell& cell = chf.cells[x + z * chf.width];
+            if (cell.count < 2) continue;
             const int end = static_cast<int>(cell.index + cell.count);
             for (int i = static_cast<int>(cell.index); i < end; ++i) {
                 const unsigned short reg = chf.spans[i].reg;
-                if (reg == 0 || (reg & RC_BORDER_REG) || seen.count(reg)) continue;
-                for (int j = i + 1; j < end; ++j) {
-                    if (chf.spans[j].reg != reg) continue;
-                    seen.insert(reg);
-                    found.insert(found.end(), {chf.bmin[0] + (static_cast<float>(x) + 0.5f) * chf.cs,
-                                               chf.bmin[1] + static_cast<float>(chf.spans[i].y) * chf.ch,
-                                               chf.bmin[2] + (static_cast<float>(z) + 0.5f) * chf.cs});
-                    break;
-                }
+                if (reg == 0 || (reg & RC_BORDER_REG)) continue;
+                int j = i + 1;
+                while (j < end && chf.spans[j].reg != reg) ++j;
+                if (j == end || !seen.insert(reg).second) continue;
+                found.insert(found.end(), {chf.bmin[0] + (static_cast<float>(x) + 0.5f) * chf.cs,
+                                           chf.bmin[1] + static_cast<float>(chf.spans[i].y) * chf.ch,
+                                           chf.bmin[2] + (static_cast<float>(z) + 0.5f) * chf.cs});
             }
         }
     }
