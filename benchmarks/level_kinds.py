@@ -1,4 +1,4 @@
-"""Level kinds of the fifth to eighth held-out rounds (issue 9): generators no preset setting was made on.
+"""Level kinds of the fifth to ninth held-out rounds (issue 9): generators no preset setting was made on.
 
 Fifth round: six kinds, each about 1,000 navmesh polygons with the presets' agent (radius 0.5 m, height 2 m, climb 0.4 m):
 ``subway`` (platforms, track pits 1.2 m lower, stairs up to two concourses), ``archipelago`` (islands joined by
@@ -38,6 +38,15 @@ terraced town whose streets climb as stairs between houses) and ``spaceship`` (t
 spokes, rooms off the rings, airlocks). Doors in walls at an angle are 2 m wide (the spaceship): a 1.6 m door,
 enough on the axes, closes there for the presets' agent. Stairwells' steps are blocks 0.45 m deep (``stairs``'s
 ``depth``), so the flight of the storey below keeps its head room.
+
+Ninth round: six more kinds, 583-1,048 navmesh polygons with that agent (seeds 0-2), each stressing something the
+earlier rounds had not: ``kart`` (a 2.7 km figure-of-eight circuit crossing itself on a bridge, a pit lane, garages,
+a paddock), ``bunker`` (three levels of rooms behind blast doors, crawlways too low for the agent, two stairwells),
+``hall`` (a 240 x 150 m exhibition hall of open floor between sparse pillars), ``slopes`` (ridges whose flanks run
+through the 45-degree limit), ``islets`` (scores of small islands out of reach) and ``catacombs`` (galleries 1.8-2.2
+m wide and about 200 m long). Recast reads surfaces, not solids: a ceiling laid on the tops of solids leaves those
+tops floor under it (:func:`_lid` stops 1 m above them), and the floor stops under every hollow solid one could
+stand inside (the catacombs' rock, the bunker's machines, the paddock's trailers).
 
 Run: ``.venv/bin/python benchmarks/level_kinds.py OUT_DIR [--kinds subway forest] [--seeds 0 1 2]`` writes
 ``OUT_DIR/<kind>_s<seed>.obj``, the files ``benchmarks/analysis_quality.py --levels`` takes (which also takes the
@@ -222,6 +231,19 @@ def _islands(rng: np.random.Generator, n: int, extent: float) -> tuple[np.ndarra
     return np.array(centres), np.array(radii)
 
 
+def _rock_or_palm(s: _Solids, rng: np.random.Generator, p: np.ndarray, top: float, rock: tuple[float, float],
+                  trunk: float, height: float) -> None:
+    """At plan point ``p`` (x, z) on ground at ``top``: a rock (the hull of 8 points scattered round ``p``, up to
+    U(*rock) m high) or, as often, a palm's trunk (an octagon ``trunk`` m in radius, ``height`` m above the ground)."""
+    if rng.random() < 0.5:
+        size = rng.uniform(*rock)
+        s.hull(np.concatenate([p + rng.normal(0, size / 2, size=(8, 2)), rng.uniform(top - 0.2, top + size, (8, 1))],
+                              axis=1)[:, [0, 2, 1]])
+    else:
+        ring = np.linspace(0, 2 * math.pi, 8, endpoint=False)
+        s.prism(p + trunk * np.stack([np.cos(ring), np.sin(ring)], 1), top - 0.5, top + height)
+
+
 def archipelago(seed: int) -> trimesh.Trimesh:
     """Islands (flat convex tops 0.5-2 m up, rocks and palm trunks on them) joined by narrow railed bridges.
 
@@ -238,14 +260,7 @@ def archipelago(seed: int) -> trimesh.Trimesh:
         plan = c + (r * rng.uniform(0.75, 1.0, size=14))[:, None] * np.stack([np.cos(angles), np.sin(angles)], 1)
         s.prism(plan, top - 3.0, top)
         for _ in range(rng.integers(6, 12)):  # rocks and palms well inside the shore
-            p = c + rng.uniform(-0.5, 0.5, size=2) * r
-            if rng.random() < 0.5:
-                rock = rng.uniform(0.8, 2.2)
-                s.hull(np.concatenate([p + rng.normal(0, rock / 2, size=(8, 2)), rng.uniform(top - 0.2, top + rock, (8, 1))],
-                                      axis=1)[:, [0, 2, 1]])
-            else:
-                angles = np.linspace(0, 2 * math.pi, 8, endpoint=False)
-                s.prism(p + 0.25 * np.stack([np.cos(angles), np.sin(angles)], 1), top - 0.5, top + 6.0)
+            _rock_or_palm(s, rng, c + rng.uniform(-0.5, 0.5, size=2) * r, top, (0.8, 2.2), 0.25, 6.0)
     gaps = np.linalg.norm(centres[:, None] - centres[None], axis=2) - radii[:, None] - radii[None]
     pairs = sorted((gaps[i, j], i, j) for i in range(len(centres)) for j in range(i + 1, len(centres)))
     group = list(range(len(centres)))
@@ -2055,12 +2070,407 @@ def spaceship(seed: int) -> trimesh.Trimesh:
                 s.prism(_strip(bunk - (pa - qa) * 0.25, bunk + (pa - qa) * 0.25, 0.9), 0.0, 0.5)
     return s.mesh()
 
+
+def _terrain(s: _Solids, xs: np.ndarray, zs: np.ndarray, heights: np.ndarray) -> None:
+    """Ground over the grid ``xs`` (n,) x ``zs`` (m,) with the heights (n, m), metres: two triangles a cell, and a
+    skirt 0.5 m under it facing down, so the ground is a closed sheet whose top Recast reads as floor."""
+    gx, gz = np.meshgrid(xs, zs, indexing="ij")
+    vertices = np.stack([gx.ravel(), np.asarray(heights, dtype=np.float64).ravel(), gz.ravel()], axis=1)
+    index = np.arange(len(xs) * len(zs)).reshape(len(xs), len(zs))
+    a, b, c, d = index[:-1, :-1].ravel(), index[1:, :-1].ravel(), index[1:, 1:].ravel(), index[:-1, 1:].ravel()
+    ground = trimesh.Trimesh(vertices, np.concatenate([np.stack([a, c, b], 1), np.stack([a, d, c], 1)]), process=False)
+    skirt = ground.copy()
+    skirt.vertices[:, 1] -= 0.5
+    skirt.invert()
+    s.parts += [ground, skirt]
+
+
+def _chaikin(points: np.ndarray, rounds: int) -> np.ndarray:
+    """The closed polygon ``points`` (k, d) with its corners cut ``rounds`` times (Chaikin 1974, corner cutting at
+    1/4 and 3/4 of each side): (k * 2**rounds, d), O(k * 2**rounds)."""
+    for _ in range(rounds):
+        after = np.roll(points, -1, axis=0)
+        points = np.stack([0.75 * points + 0.25 * after, 0.25 * points + 0.75 * after], axis=1).reshape(-1, points.shape[1])
+    return points
+
+
+def kart(seed: int) -> trimesh.Trimesh:
+    """A karting circuit about 2.7 km round, 9-11 m wide, which crosses itself once on a bridge 6 m up (a figure
+    of eight): a closed line through 13 corners jittered 0-6 m, its corners cut three times (:func:`_chaikin`),
+    split into pieces at most 5 m long, each a deck on the line with a wedge filling the outside of each joint; the
+    height rises 6 m and falls again over 90 m of track either side of the crossing's upper pass (8-11 degrees).
+    Barriers 1 m high line both sides (no floor beyond them: the grass is nothing to walk on). Along the start
+    straight, behind its barrier, a pit lane 6 m wide with a lane in and a lane out through gaps in the barrier,
+    twelve garages 5.5 m wide (walls on three sides, open to the pit lane, a kart each) and, behind them, a paddock
+    of up to 25-35 trailers at least 2 m apart (roofs at 50 degrees, no floor inside) reached through a 1.6 m door at the back of every third
+    garage.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    corners = 2.2 * np.array([[0, 0], [300, 0], [360, 60], [330, 140], [180, 140], [140, 210], [230, 270], [250, 40],
+                              [150, 60], [40, 80], [-40, 90], [-70, 40], [-40, 0]], dtype=np.float64)
+    corners[1:] += rng.uniform(-6.0, 6.0, size=(len(corners) - 1, 2))  # the start straight stays on z = 0
+    line = _chaikin(corners, 3)
+    pieces = [line[0]]
+    for a, b in pairwise(np.vstack([line, line[:1]])):  # pieces at most 5 m long
+        n = max(1, math.ceil(np.linalg.norm(b - a) / 5.0))
+        pieces += [a + (b - a) * t for t in np.arange(1, n + 1) / n]
+    line = np.array(pieces[:-1])
+    ahead = np.roll(line, -1, axis=0)
+    lengths = np.linalg.norm(ahead - line, axis=1)
+    along = np.concatenate([[0.0], np.cumsum(lengths)[:-1]])
+    # the crossing: the first pair of pieces far apart along the track whose segments intersect
+    crossing = None
+    for i in range(len(line)):
+        for j in range(i + 3, len(line) - 2 if i == 0 else len(line)):
+            p, r, q, t = line[i], ahead[i] - line[i], line[j], ahead[j] - line[j]
+            den = r[0] * t[1] - r[1] * t[0]
+            if abs(den) > 1e-9:
+                u, v = ((q - p)[0] * t[1] - (q - p)[1] * t[0]) / den, ((q - p)[0] * r[1] - (q - p)[1] * r[0]) / den
+                if 0 <= u <= 1 and 0 <= v <= 1:
+                    crossing = along[j] + v * lengths[j]
+                    break
+        if crossing is not None:
+            break
+    assert crossing is not None, "the circuit's corners make no figure of eight"
+    gap = np.abs(along - crossing)
+    heights = np.where(gap < 90.0, 6.0 * np.cos(np.clip(gap / 90.0, 0, 1) * math.pi / 2) ** 2, 0.0)
+    width = rng.uniform(9.0, 11.0)
+    pit_gaps = [(8.0, 24.0), (276.0, 292.0)]  # x ranges where the start straight's south barrier opens
+    for i in range(len(line)):
+        a, b, ya, yb = line[i], ahead[i], heights[i], heights[(i + 1) % len(line)]
+        s.ramp(a, b, width, ya, yb)
+        nxt = (i + 1) % len(line)
+        after = ahead[nxt]
+        d0, d1 = (b - a) / np.linalg.norm(b - a), (after - b) / np.linalg.norm(after - b)
+        sides = [np.array([-d[1], d[0]]) * width / 2 for d in (d0, d1)]
+        if abs(d0[0] * d1[1] - d0[1] * d1[0]) > 1e-3:  # a wedge where the line turns; none where it runs straight on
+            s.hull(np.array([[*(b + sign * side), y] for side in sides for sign in (-1, 1) for y in (yb - 0.3, yb)])[:, [0, 2, 1]])
+        for sign in (-1, 1):  # the barriers, each piece's own
+            off = np.array([-d0[1], d0[0]]) * sign * (width / 2 + 0.15)
+            mid = (a + b) / 2 + off
+            if abs(mid[1]) < width and mid[1] < 0 and any(x0 < mid[0] < x1 for x0, x1 in pit_gaps):
+                continue
+            s.ramp(a + off, b + off, 0.3, ya + 1.0, yb + 1.0, thickness=1.3)
+    south = -width / 2 - 0.3
+    pit = (south - 4.0, south - 10.0)  # the pit lane's z extent, north to south
+    s.box(20.0, 280.0, -0.3, 0.0, pit[1], pit[0])
+    for a, b in (((10.0, south + 1.0), (26.0, (pit[0] + pit[1]) / 2)), ((274.0, (pit[0] + pit[1]) / 2), (290.0, south + 1.0))):
+        s.ramp(np.array(a), np.array(b), 6.0, 0.0, 0.0)
+    s.wall((26.0, south - 0.1), (274.0, south - 0.1), 0.0, 1.0, thickness=0.3)  # the pit wall behind the barrier's gaps
+    back = pit[1] - 8.0
+    paddock = (back - 50.0, back)
+    x = 40.0
+    for k in range(12):  # garages: a floor, walls at the sides and the back, a kart
+        s.box(x, x + 5.5, -0.3, 0.0, back, pit[1])
+        for wx in (x, x + 5.5):
+            s.wall((wx, back), (wx, pit[1]), 0.0, 3.0)
+        s.wall((x, back), (x + 5.5, back), 0.0, 3.0, [(1.5, 1.6)] if k % 3 == 1 else [])
+        kx = x + rng.uniform(1.0, 2.5)
+        s.box(kx, kx + 1.2, 0.0, 0.6, back + 2.5, back + 4.5)
+        x += 5.5
+    trailers = []
+    for _ in range(int(rng.integers(25, 36))):  # trailers in the paddock, their roofs at 50 degrees
+        tx, tz = rng.uniform(32.0, 108.0), rng.uniform(paddock[0] + 2.0, paddock[1] - 8.0)
+        tw, td = rng.uniform(2.5, 8.0), rng.uniform(2.4, 6.0)
+        if any(tx < b + 2.0 and a < tx + tw + 2.0 and tz < d + 2.0 and c < tz + td + 2.0 for a, b, c, d in trailers):
+            continue  # 2 m apart at least, so no pocket is closed in between
+        trailers.append((tx, tx + tw, tz, tz + td))
+        ridge = 2.8 + td / 2 * math.tan(math.radians(50.0))
+        s.hull(np.array([[x, y, z] for x in (tx, tx + tw) for z in (tz, tz + td) for y in (-0.3, 2.8)]
+                        + [[x, ridge, tz + td / 2] for x in (tx, tx + tw)]))
+    s.ground(30.0, 120.0, paddock[0], paddock[1], 0.0, trailers, thickness=0.3)  # stopping under the trailers
+    for a, b in (((30.0, paddock[0]), (120.0, paddock[0])), ((30.0, paddock[0]), (30.0, paddock[1])),
+                 ((120.0, paddock[0]), (120.0, paddock[1]))):
+        s.wall(a, b, 0.0, 2.0)
+    return s.mesh()
+
+
+def _lid(s: _Solids, x0: float, x1: float, z0: float, z1: float, y: float) -> None:
+    """A ceiling over [x0, x1] x [z0, z1] from height ``y`` up, ridged along x at 50 degrees, so nothing on it is
+    floor. Recast reads surfaces, not solids: the top of a solid reaching ``y`` under it would be floor with the
+    lid's underside as its ceiling, so solids under a lid stop 1 m short of it (less than the agent's height)."""
+    ridge = y + 0.3 + (z1 - z0) / 2 * math.tan(math.radians(50.0))
+    s.hull(np.array([[x, yy, z] for x in (x0, x1) for z in (z0, z1) for yy in (y, y + 0.3)]
+                    + [[x, ridge, (z0 + z1) / 2] for x in (x0, x1)]))
+
+
+def bunker(seed: int) -> trimesh.Trimesh:
+    """An underground bunker of three levels 6 m apart, 110 x 72 m, closed (no way out) under a lid
+    (:func:`_lid`). On each level corridors 3 m wide (a spine along x, cross corridors along z every 20-26 m)
+    between blocks of rooms behind concrete walls 0.6 m thick; every room opens on a corridor through a blast
+    door: a 1.8 m opening with its steel leaf (0.3 m thick, 2 m long) swung open against the wall inside. Rooms side
+    by side in a block are joined by a ventilation crawlway: an opening 1.4 m wide and 1.0 m high in the wall
+    between them, under a solid lintel (too low for the presets' 2 m agent), in half the pairs through a double
+    wall (a crawlway 1.6 m long, a cavity 0.4 m wide between the walls). Furniture: bunks or consoles and lockers
+    against the side walls. The levels are joined by two switchback
+    stairwells (:func:`_switchback`) in stair halls at both ends of the spine's north side (a 3 m opening on the
+    spine); the floor stops under the machines (Recast would find floor inside them).
+    The lowest level holds a generator hall (the north side's second and third blocks, machines 4.2 m high
+    in two rows) and an escape tunnel 2.4 m wide along the south wall, behind the rooms, entered from the last room.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    size_x, size_z, storey, levels, spine_w, cross_w, wall_t = 110.0, 72.0, 6.0, 3, 3.0, 3.0, 0.6
+    spine = (size_z / 2 - spine_w / 2, size_z / 2 + spine_w / 2)
+    crosses = [rng.uniform(20.0, 26.0)]
+    while crosses[-1] < size_x - 40.0:
+        crosses.append(crosses[-1] + cross_w + rng.uniform(20.0, 26.0))
+    edges_x = [0.0, *sum(([c, c + cross_w] for c in crosses), []), size_x]
+    blocks_x = list(zip(edges_x[0::2], edges_x[1::2]))
+    well = _well_length(storey)
+    stair_blocks = (0, len(blocks_x) - 1)
+    wells = [(blocks_x[b][0] + (blocks_x[b][1] - blocks_x[b][0]) / 2 - 2.0, spine[1] + 5.0) for b in stair_blocks]
+    holes = [(x0, x0 + 4.0, z0 + 2.0, z0 + well) for x0, z0 in wells]
+    _lid(s, 0.0, size_x, 0.0, size_z, storey + 0.7)
+    for k in range(levels):
+        y = -k * storey
+        ceiling = y + storey - 0.3
+        solid: list[tuple[float, float, float, float]] = []  # plans of solids the floor stops under
+        for a, b in (((0.0, 0.0), (size_x, 0.0)), ((0.0, size_z), (size_x, size_z)),
+                     ((0.0, 0.0), (0.0, size_z)), ((size_x, 0.0), (size_x, size_z))):
+            s.wall(a, b, y, ceiling, thickness=wall_t)
+        for x0, z0 in wells:  # the stairwell's walls, its door at the landing's end, toward the spine
+            s.wall((x0, z0), (x0 + 4.0, z0), y, ceiling, [(1.2, 1.6)])
+            s.wall((x0, z0 + well), (x0 + 4.0, z0 + well), y, ceiling)
+            for x in (x0, x0 + 4.0):
+                s.wall((x, z0), (x, z0 + well), y, ceiling)
+            if k:
+                _switchback(s, x0, z0, y, storey)
+        if k == levels - 1:  # the escape tunnel along the south wall, entered from the last room
+            s.wall((0.3, 3.0), (size_x - 0.3, 3.0), y, ceiling, [(size_x - 4.5, 2.0)], thickness=wall_t)
+        for side, (z_wall, z_out) in enumerate(((spine[0], 3.3 if k == levels - 1 else 0.3), (spine[1], size_z - 0.3))):
+            z0, z1 = sorted((z_wall, z_out))
+            inward = 1.0 if z_out > z_wall else -1.0
+            for bi, (bx0, bx1) in enumerate(blocks_x):
+                for x in (bx0, bx1):
+                    s.wall((x, z0), (x, z1), y, ceiling, thickness=wall_t)
+                if side == 1 and (bi in stair_blocks or (k == levels - 1 and bi in (1, 2))):  # a stair hall, the generator hall
+                    s.wall((bx0, z_wall), (bx1, z_wall), y, ceiling, [(2.0, 3.0), (bx1 - bx0 - 5.0, 3.0)], thickness=wall_t)
+                    continue
+                cuts = [bx0]
+                while cuts[-1] < bx1 - 9.0:
+                    cuts.append(cuts[-1] + rng.uniform(6.0, 9.0))
+                cuts = [*cuts[:-1], bx1] if len(cuts) > 1 else [bx0, bx1]
+                doors = [((a + b) / 2 - bx0 - 0.9 + rng.uniform(-0.8, 0.8), 1.8) for a, b in pairwise(cuts)]
+                s.wall((bx0, z_wall), (bx1, z_wall), y, ceiling, doors, thickness=wall_t)
+                for (a, b), (start, _) in zip(pairwise(cuts), doors):
+                    lx = bx0 + start + 1.9  # the leaf, swung open inside
+                    s.box(lx, lx + 0.3, y, y + 2.2, *sorted((z_wall + inward * 0.35, z_wall + inward * 2.35)))
+                    if rng.random() < 0.6:  # a bunk or a console against a side wall
+                        zb = (z0 + z1) / 2 + rng.uniform(-4.0, 4.0)
+                        s.box(b - 1.3, b - 0.4, y, y + float(rng.choice([0.6, 1.1])), zb - 1.1, zb + 1.1)
+                    if rng.random() < 0.4:  # lockers against a side wall
+                        zl = (z0 + z1) / 2
+                        s.box(a + 0.4, a + 1.0, y, y + 1.9, zl - 1.0, zl + 1.0)
+                for x in cuts[1:-1]:  # walls between rooms, each with a crawlway under a lintel
+                    zc = rng.uniform(3.0, z1 - z0 - 4.4)
+                    for wx in ((x,) if rng.random() < 0.5 else (x - 0.5, x + 0.5)):  # or a double wall
+                        s.wall((wx, z0), (wx, z1), y, y + 1.0, [(zc, 1.4)], thickness=wall_t)
+                        s.wall((wx, z0), (wx, z1), y + 1.0, ceiling, thickness=wall_t)
+        if k == levels - 1:  # the generator hall's machines, too tall to stand on under the ceiling
+            for hx0, hx1 in blocks_x[1:3]:
+                for mx in np.arange(hx0 + 4.0, hx1 - 6.0, rng.uniform(7.0, 9.0)):
+                    for mz in (spine[1] + 8.0, spine[1] + 20.0):
+                        s.box(mx, mx + 4.0, y - 0.3, y + 4.2, mz, mz + 5.0)
+                        solid.append((mx, mx + 4.0, mz, mz + 5.0))
+        s.ground(0.0, size_x, 0.0, size_z, y, (holes if k < levels - 1 else []) + solid, thickness=0.3)
+    return s.mesh()
+
+
+def hall(seed: int) -> trimesh.Trimesh:
+    """An exhibition hall 230-250 x 140-160 m under one roof, nearly all open floor: pillars 1 m square on a grid
+    of 14-16 m (a tenth of them left out), 4 m entrances in the middle of each wall onto a strip of forecourt 6 m
+    deep, and 8-12 exhibitors' stands (6-12 m square: two back walls 2.5 m high in an L, a counter 1.1 m high, a few
+    display plinths) each in a bay between pillars; pallets of boxes here and there (1.2 m square, 1.5 m high).
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    size_x, size_z, grid = rng.uniform(230.0, 250.0), rng.uniform(140.0, 160.0), rng.uniform(14.0, 16.0)
+    s.box(-6.0, size_x + 6.0, -0.3, 0.0, -6.0, size_z + 6.0)
+    for a, b in (((0.0, 0.0), (size_x, 0.0)), ((0.0, size_z), (size_x, size_z))):
+        s.wall(a, b, 0.0, 12.0, [(size_x / 2 - 2.0, 4.0)], thickness=0.4)
+    for a, b in (((0.0, 0.0), (0.0, size_z)), ((size_x, 0.0), (size_x, size_z))):
+        s.wall(a, b, 0.0, 12.0, [(size_z / 2 - 2.0, 4.0)], thickness=0.4)
+    xs = np.arange(grid, size_x - grid / 2, grid)
+    zs = np.arange(grid, size_z - grid / 2, grid)
+    bays = [(i, j) for i in range(len(xs) - 1) for j in range(len(zs) - 1)]
+    stands = [bays[k] for k in rng.choice(len(bays), size=int(rng.integers(8, 13)), replace=False)]
+    for x in xs:
+        for z in zs:
+            if rng.random() >= 0.1:
+                s.box(x - 0.5, x + 0.5, 0.0, 12.0, z - 0.5, z + 0.5)
+    for i, j in stands:
+        side = rng.uniform(6.0, min(12.0, grid - 2.0))
+        x0, z0 = xs[i] + (grid - side) / 2, zs[j] + (grid - side) / 2
+        s.wall((x0, z0), (x0 + side, z0), 0.0, 2.5, thickness=0.1)
+        s.wall((x0, z0), (x0, z0 + side), 0.0, 2.5, thickness=0.1)
+        s.box(x0 + side - 3.5, x0 + side - 0.5, 0.0, 1.1, z0 + side - 1.2, z0 + side - 0.6)
+        for _ in range(int(rng.integers(1, 4))):
+            px, pz = x0 + rng.uniform(1.0, side - 2.0), z0 + rng.uniform(1.0, side - 3.0)
+            s.box(px, px + 0.8, 0.0, 1.0, pz, pz + 0.8)
+    for _ in range(int(rng.integers(15, 25))):
+        px, pz = rng.uniform(2.0, size_x - 3.0), rng.uniform(2.0, size_z - 3.0)
+        s.box(px, px + 1.2, 0.0, 1.5, pz, pz + 1.2)
+    return s.mesh()
+
+
+def slopes(seed: int) -> trimesh.Trimesh:
+    """Mountain ground 176 x 160 m on a 1 m grid (:func:`_terrain`): four ridges 9 m high along z between five
+    flat valleys, each ridge a crest 4 m wide between two flanks whose slope runs from 32 degrees at z = 0 to 58 at
+    z = 160, through the presets' 45-degree limit near the middle, with ripples of 0.15 m every 8 m (a few degrees
+    either way), so the walkable part of each flank ends raggedly. The crests run the whole length, so they are
+    joined to the valleys only where the flanks are under the limit; boulders lie in the valleys.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    period, height, crest, length = 44.0, 9.0, 4.0, 160.0
+    xs, zs = np.arange(0.0, 4 * period + 0.5, 1.0), np.arange(0.0, length + 0.5, 1.0)
+    gx, gz = np.meshgrid(xs, zs, indexing="ij")
+    phase = rng.uniform(0, 2 * math.pi, size=2)
+    angle = np.radians(32.0 + 26.0 * gz / length + rng.uniform(-1.5, 1.5))
+    from_crest = np.abs((gx % period) - period / 2) - crest / 2  # m from the nearest crest's edge, negative on it
+    ridge = np.clip(height - np.maximum(from_crest, 0.0) * np.tan(angle), 0.0, height)
+    ripple = 0.15 * np.sin(gx * 2 * math.pi / 8.0 + phase[0]) * np.sin(gz * 2 * math.pi / 8.0 + phase[1])
+    ridge[(gx < 1.0) | (gx > 4 * period - 1.0)] = 0.0
+    _terrain(s, xs, zs, ridge + ripple * (ridge > 0.0) * (ridge < height))
+    for _ in range(int(rng.integers(25, 40))):  # boulders in the valleys
+        k = int(rng.integers(0, 5))
+        c = np.array([k * period + rng.uniform(-3.0, 3.0), rng.uniform(5.0, length - 5.0)])
+        c[0] = np.clip(c[0], 3.0, 4 * period - 3.0)
+        r = rng.uniform(0.5, 1.5)
+        s.hull(np.concatenate([c + rng.normal(0, r / 2, size=(8, 2)), rng.uniform(-0.3, r * 1.5, (8, 1))], axis=1)[:, [0, 2, 1]])
+    return s.mesh()
+
+
+def islets(seed: int) -> trimesh.Trimesh:
+    """A lake 420 m square of many small islands, most of them out of reach: a main island (a 60 x 40 m
+    octagon 1 m up, six huts one enters through a 1.6 m door, a bed against the back wall, a jetty), 14 clusters of 4-7 islets joined by plank
+    walks 1.8 m wide (one cluster joined to the main island), and 60-80 lone islets no walk reaches; islets are
+    flat convex tops 0.3-1.5 m up, 4-12 m across, with a rock or a tree on the larger ones. No water surface.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    size = 420.0
+    main = np.array([size / 2, size / 2])
+    angles = np.linspace(0, 2 * math.pi, 8, endpoint=False) + math.pi / 8
+    s.prism(main + np.stack([30.0 * np.cos(angles), 20.0 * np.sin(angles)], 1), -2.0, 1.0)
+    for k in range(6):  # huts round the island's middle, doors facing it
+        a = k * math.pi / 3 + rng.uniform(-0.2, 0.2)
+        c = main + np.array([16.0 * math.cos(a), 9.0 * math.sin(a)])
+        x0, x1, z0, z1 = c[0] - 3.0, c[0] + 3.0, c[1] - 2.5, c[1] + 2.5
+        facing_z = z0 if c[1] > main[1] else z1
+        s.wall((x0, facing_z), (x1, facing_z), 1.0, 3.5, [(2.2, 1.6)], thickness=0.2)
+        s.wall((x0, z0 + z1 - facing_z), (x1, z0 + z1 - facing_z), 1.0, 3.5, thickness=0.2)
+        for x in (x0, x1):
+            s.wall((x, z0), (x, z1), 1.0, 3.5, thickness=0.2)
+        s.hull(np.array([[x, 3.5, z] for x in (x0 - 0.3, x1 + 0.3) for z in (z0 - 0.3, z1 + 0.3)]
+                        + [[x, 3.5 + 2.8 * math.tan(math.radians(50.0)), (z0 + z1) / 2] for x in (x0 - 0.3, x1 + 0.3)]))
+        bed_z = z1 - 1.4 if facing_z == z0 else z0 + 0.4  # against the back wall: in front of the door it shut four huts
+        s.box(x0 + 0.5, x0 + 2.5, 1.0, 1.5, bed_z, bed_z + 1.0)
+    s.ramp(main + np.array([29.0, 0.0]), main + np.array([45.0, 0.0]), 2.4, 1.0, 0.6)  # the jetty
+    placed: list[tuple[np.ndarray, float]] = [(main, 36.0), (main + np.array([45.0, 0.0]), 1.5)]
+
+    def islet(near: np.ndarray | None, spread: float) -> tuple[np.ndarray, float, float] | None:
+        """A new islet's centre, radius and top, at least 5 m of water from every other one (None after 200 tries)."""
+        for _ in range(200):
+            c = (near + rng.uniform(-spread, spread, size=2)) if near is not None else rng.uniform(10.0, size - 10.0, size=2)
+            r = rng.uniform(2.0, 6.0)
+            if 6.0 < c[0] < size - 6.0 and 6.0 < c[1] < size - 6.0 and all(np.linalg.norm(c - d) > r + q + 5.0 for d, q in placed):
+                placed.append((c, r))
+                return c, r, float(rng.uniform(0.3, 1.5))
+        return None
+
+    def build(c: np.ndarray, r: float, top: float) -> None:
+        a = np.sort(rng.uniform(0, 2 * math.pi, size=10))
+        s.prism(c + (r * rng.uniform(0.8, 1.0, size=10))[:, None] * np.stack([np.cos(a), np.sin(a)], 1), top - 2.0, top)
+        if r > 3.5:
+            _rock_or_palm(s, rng, c + rng.uniform(-0.3, 0.3, size=2) * r, top, (0.6, 1.5), 0.3, 5.0)
+
+    def walk(a: tuple[np.ndarray, float, float], b: tuple[np.ndarray, float, float]) -> None:
+        """A plank walk 1.8 m wide from islet ``a`` (centre, radius, top) to ``b``, from 0.5 of a radius in."""
+        along = (b[0] - a[0]) / np.linalg.norm(b[0] - a[0])
+        s.ramp(a[0] + along * a[1] * 0.5, b[0] - along * b[1] * 0.5, 1.8, a[2], b[2])
+
+    for k in range(14):
+        if k == 0:
+            first = (main + np.array([45.0, 0.0]), 1.5, 0.6)  # the jetty's end
+        else:
+            found = islet(None, 0.0)
+            if found is None:
+                continue
+            first = found
+            build(*first)
+        members = [first]
+        for _ in range(int(rng.integers(3, 7))):
+            found = islet(members[-1][0], 16.0)
+            if found is None:
+                break
+            build(*found)
+            walk(members[-1], found)
+            members.append(found)
+    for _ in range(int(rng.integers(60, 81))):
+        found = islet(None, 0.0)
+        if found is not None:
+            build(*found)
+    return s.mesh()
+
+
+def catacombs(seed: int) -> trimesh.Trimesh:
+    """Catacombs cut in rock, one level under a lid (:func:`_lid`), 200-220 x 95-105 m: eight galleries along x,
+    1.8-2.2 m wide and nearly the whole length, 10-13 m apart, joined by 4-7 cross passages (1.8 m) between each
+    pair, staggered; burial niches 0.7 m deep and 2 m long on both sides of the galleries every 4-8 m; 12-16
+    chambers 5-9 m square off the galleries (through a 1.8 m opening), a sarcophagus in some. Rock fills everything
+    else (:meth:`_Solids.ground` with the open plan as holes, 2.8 m high); the floor lies under the open plan only.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    size_x, size_z = rng.uniform(200.0, 220.0), rng.uniform(95.0, 105.0)
+    open_plan: list[tuple[float, float, float, float]] = []
+    galleries = []
+    z = 4.0
+    while z < size_z - 6.0 and len(galleries) < 8:
+        w = rng.uniform(1.8, 2.2)
+        x0, x1 = rng.uniform(3.0, 12.0), size_x - rng.uniform(3.0, 12.0)
+        galleries.append((x0, x1, z, z + w))
+        open_plan.append((x0, x1, z, z + w))
+        x = x0 + rng.uniform(2.0, 6.0)
+        while x < x1 - 3.0:  # niches on both sides
+            for zz in ((z - 0.7, z), (z + w, z + w + 0.7)):
+                if rng.random() < 0.7:
+                    open_plan.append((x, x + 2.0, *zz))
+            x += rng.uniform(4.0, 8.0)
+        z += w + rng.uniform(10.0, 13.0)
+    for (a0, a1, az0, az1), (b0, b1, bz0, bz1) in pairwise(galleries):
+        lo, hi = max(a0, b0) + 2.0, min(a1, b1) - 4.0
+        for x in np.sort(rng.uniform(lo, hi, size=int(rng.integers(4, 8)))):
+            open_plan.append((x, x + 1.8, az1, bz0))
+    for _ in range(int(rng.integers(12, 17))):
+        x0, x1, gz0, gz1 = galleries[int(rng.integers(0, len(galleries)))]
+        side, w, d = rng.choice([-1.0, 1.0]), rng.uniform(5.0, 9.0), rng.uniform(5.0, 9.0)
+        x = rng.uniform(x0 + 3.0, x1 - w - 3.0)
+        z0 = gz1 + 1.0 if side > 0 else gz0 - 1.0 - d
+        if z0 < 1.0 or z0 + d > size_z - 1.0:
+            continue
+        open_plan.append((x, x + w, z0, z0 + d))
+        door = x + rng.uniform(0.5, w - 2.3)
+        open_plan.append((door, door + 1.8, *sorted((z0 if side > 0 else z0 + d, gz1 if side > 0 else gz0))))
+        if rng.random() < 0.5:
+            s.box(x + w / 2 - 1.0, x + w / 2 + 1.0, 0.0, 0.9, z0 + d / 2 - 0.5, z0 + d / 2 + 0.5)
+    for x0, x1, z0, z1 in open_plan:  # floor only where it is open: Recast would find floor inside the rock
+        s.box(x0, x1, -0.3, 0.0, z0, z1)
+    s.ground(0.0, size_x, 0.0, size_z, 2.8, open_plan, thickness=2.8)
+    _lid(s, 0.0, size_x, 0.0, size_z, 3.8)
+    return s.mesh()
+
+
 KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
     "subway": subway, "archipelago": archipelago, "car_park": car_park,
     "forest": forest, "stadium": stadium, "harbour": harbour,
     "school": school, "cathedral": cathedral, "mine": mine, "ship": ship, "village": village, "market": market,
     "office": office, "airport": airport, "sewer": sewer, "lanes": lanes, "prison": prison, "museum": museum,
     "tower": tower, "hospital": hospital, "mall": mall, "canyon": canyon, "hillside": hillside, "spaceship": spaceship,
+    "kart": kart, "bunker": bunker, "hall": hall, "slopes": slopes, "islets": islets, "catacombs": catacombs,
 }
 """Kind name -> generator (seed -> Y-up mesh in metres)."""
 

@@ -62,7 +62,7 @@ def timed_split(result: RunResult, params: Params | None = None) -> tuple[decomp
     with the times of both (:func:`best_times`): ``split_wall``, ``split_cpu``, ``score_wall``, ``score_cpu``, ms."""
     navmesh, structure = result.context.navmesh, result.structure.to_undirected(as_view=True)
     params = params or Params()
-    split_wall, split_cpu, split = best_times(lambda: decomposition.decompose(navmesh, result.context.agent, params))
+    split_wall, split_cpu, split = best_times(lambda: decomposition.decompose(navmesh, result.context.agent, params, result.context.mesh))
     score_wall, score_cpu, (chokepoints, _) = best_times(lambda: decomposition.score(split, structure))
     return split, chokepoints, {"split_wall": 1000 * split_wall, "split_cpu": 1000 * split_cpu,
                                 "score_wall": 1000 * score_wall, "score_cpu": 1000 * score_cpu}

@@ -34,7 +34,7 @@ from g2s_core.registry import installed, plugin_parameters
 from g2s_core.result_folder import interrupts_held, stop_if_interrupted
 from g2s_core.stages import STAGES
 from g2s_core.lazy import lazy_module
-from g2s_core.summary import final_graph, metric_lines, roots_of, stage_rows
+from g2s_core.summary import final_graph, metric_lines, outcome, roots_of, stage_rows
 
 # a run needs them (and trimesh, networkx, scipy through them); listing plugins and checking a config do not
 api, pipeline = lazy_module("g2s_core.api"), lazy_module("g2s_core.pipeline")
@@ -233,6 +233,8 @@ def _run(args: argparse.Namespace, errors: Console, mesh_name: str | None = None
     if not args.quiet:
         console = Output()
         console.print(stage_table(result, title=mesh.name))
+        if said := outcome(result):
+            console.print(f"{mesh.name}: {said}", markup=False, highlight=False, soft_wrap=True)
         for label, measures in metric_lines(result):
             console.print(f"{label}: {measures}", markup=False, highlight=False, soft_wrap=True)
         for path in written:

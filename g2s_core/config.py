@@ -147,14 +147,40 @@ class _Loader(yaml.SafeLoader):
             )
 
 
-# PyYAML follows YAML 1.1, which reads 1e-3 as text; YAML 1.2, JSON and every reader of a config take it as a number
-_Loader.add_implicit_resolver(
-    "tag:yaml.org,2002:float", re.compile(r"^[-+]?(?:[0-9][0-9_]*(?:\.[0-9_]*)?|\.[0-9_]+)[eE][-+]?[0-9]+$"), list("-+.0123456789"))
+# PyYAML reads 1e-3 and +.5 as text; YAML 1.2, JSON and every other reader of a config (and YAML 1.1, +.5) as numbers
+_Loader.add_implicit_resolver("tag:yaml.org,2002:float", re.compile(
+    r"^(?:[-+]?(?:[0-9][0-9_]*(?:\.[0-9_]*)?|\.[0-9_]+)[eE][-+]?[0-9]+|[-+]\.[0-9_]+)$"), list("-+.0123456789"))
+# numbers that YAML 1.1, which PyYAML follows, and YAML 1.2 read differently: 017 is 15 or 17, 1:30 is 90 or text
+_AMBIGUOUS = "tag:g2s,2026:ambiguous-number"
+for _first in "-+0123456789":  # ahead of PyYAML's int and float resolvers, with their patterns
+    _Loader.yaml_implicit_resolvers[_first].insert(0, (_AMBIGUOUS, re.compile(
+        r"^[-+]?(?:0[0-7_]+|[1-9][0-9_]*(?::[0-5]?[0-9])+|[0-9][0-9_]*(?::[0-5]?[0-9])+\.[0-9_]*)$")))
+
+
+def _ambiguous(loader: yaml.SafeLoader, node: yaml.ScalarNode) -> int:
+    """The number both YAML versions read (``007``), else a ConstructorError naming the two readings."""
+    if ":" in node.value:
+        reading = loader.construct_yaml_float(node) if "." in node.value else loader.construct_yaml_int(node)
+        problem = f"{node.value} is {reading:g} in YAML 1.1 (base 60) and text in YAML 1.2; write {reading:g}, or quote it as text"
+    elif (octal := loader.construct_yaml_int(node)) == (decimal := int(node.value.replace("_", ""))):
+        return octal
+    else:
+        problem = f"{node.value} is {octal} in YAML 1.1 (octal) and {decimal} in YAML 1.2; write {decimal} (or {octal}) without the leading 0"
+    raise yaml.constructor.ConstructorError(None, None, problem, node.start_mark)
+
+
+_Loader.add_constructor(_AMBIGUOUS, _ambiguous)
 
 
 def _parse_yaml(text: str, source: str) -> Any:
     """The YAML document ``text``, nested at most :data:`MAX_NESTING` levels (else ConfigError naming ``source``)."""
     return parse_nested(text, lambda t: yaml.load(t, Loader=_Loader), source, ConfigError)
+
+
+def _key_over_limit(text: str, marks: tuple[Any, ...]) -> bool:
+    """Whether one of PyYAML's ``marks`` stands at the start or end of a key of more than YAML's 1,024 characters."""
+    word = r"[^\s:{}\[\],]*"
+    return any(len(re.search(word + "$", text[:m.index])[0]) + len(re.match(word, text[m.index:])[0]) > 1024 for m in marks if m)
 
 
 def _read_yaml(path: Path) -> dict[str, Any]:
@@ -168,7 +194,9 @@ def _read_yaml(path: Path) -> dict[str, Any]:
         mark = getattr(exc, "problem_mark", None)
         where = f" at line {mark.line + 1}, column {mark.column + 1}" if mark else ""
         problem = getattr(exc, "problem", None) or "not valid YAML"
-        if problem.startswith("but "):  # "but found another document" says what was expected first
+        if _key_over_limit(text, (getattr(exc, "context_mark", None), mark)):
+            problem = "a key of more than 1,024 characters, YAML's limit on a key (no g2s key is that long)"
+        elif problem.startswith("but "):  # "but found another document" says what was expected first
             problem = f"{exc.context} {problem}"
         raise ConfigError(f"{path}: invalid YAML{where}: {problem}") from None
     if data is None:

@@ -17,7 +17,7 @@ from g2s_core.config import MeshConfig
 from g2s_core.errors import ConfigError, MeshError
 from g2s_core.input_files import check_regular_file
 from g2s_core.lazy import lazy_module
-from g2s_core.mesh_damage import declared_faces, describe_damage, off_polygons
+from g2s_core.mesh_damage import declared_faces, describe_damage, off_polygons, rows_beyond_header
 from g2s_core.registry import Registry, installed
 
 # loaded with the first mesh read: the CLI and the batch command import this module for its names
@@ -85,6 +85,8 @@ def load_mesh(path: str | Path, config: MeshConfig | None = None) -> tuple[trime
             # trimesh reads an OFF or PLY file cut at a line of its face list as the faces it holds
             if len(getattr(loaded, "faces", ())) < (declared := declared_faces(path.suffix, raw)):
                 raise ValueError(f"the header declares {declared} faces, trimesh read {len(loaded.faces)}")
+            if rows_beyond_header(path.suffix, raw):  # and an ASCII PLY of more rows than declared as the rows declared
+                raise ValueError("more rows than the header declares")
     except Exception as exc:  # trimesh raises many exception types for bad files
         if (damage := describe_damage(path, raw) or (exc if isinstance(exc, MeshError) else None)) or path.suffix.lower() != ".off":
             raise MeshError(f"{path}: {damage or f'cannot read mesh ({type(exc).__name__}: {exc})'}") from None  # MeshError: _files_beside
@@ -254,6 +256,8 @@ def prepare_mesh(loaded: object, config: MeshConfig, source: str) -> trimesh.Tri
     vertices, faces = np.asarray(loaded.vertices, dtype=np.float64), np.asarray(loaded.faces)
     if len(faces) == 0 or len(vertices) == 0:
         raise MeshError(f"{source}: the mesh is empty (no triangles)")
+    if len(vertices) < 3:  # Recast's own precondition, which blamed the graph builder for a file of one degenerate face
+        raise MeshError(f"{source}: the faces use {len(vertices)} vertices in all: every face has zero area; export it again")
     if faces.ndim != 2 or faces.shape[1] != 3:
         raise MeshError(f"{source}: expected triangles, got faces with {faces.shape[-1]} corners")
     if vertices.ndim != 2 or vertices.shape[1] != 3:  # an OBJ's "v x y" lines

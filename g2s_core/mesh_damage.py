@@ -99,6 +99,15 @@ def declared_faces(suffix: str, data: bytes) -> int:
     return int(declared[1]) if suffix.lower() in (".ply", ".off") and declared else 0
 
 
+def rows_beyond_header(suffix: str, data: bytes) -> bool:
+    """Whether an ASCII PLY file has more lines of values than its header declares rows (trimesh drops them unsaid)."""
+    header, _, body = data.partition(b"end_header")
+    if suffix.lower() != ".ply" or not re.search(rb"^format ascii", header, re.MULTILINE):
+        return False
+    declared = sum(int(count) for count in re.findall(rb"^element \S+ (\d+)", header, re.MULTILINE))
+    return bool(body := body.strip()) and body.count(b"\n") + 1 > declared
+
+
 def _json(data: bytes) -> object:
     """JSON text's value, or where and why it is not JSON (a string)."""
     try:
@@ -336,10 +345,12 @@ def _ply_damage(data: bytes) -> str | None:
             return f"header line {number}: expected 'element NAME COUNT' or 'property TYPE NAME', got {_text(b' '.join([key, *values]))!r}"
     body, start = body.partition(b"\n")[2], header.count(b"\n") + 2
     if re.search(rb"^format ascii", header, re.MULTILINE):
-        vertices = next((count for name, count, _ in elements if name == "vertex"), 0)
-        return _declared_rows(_rows(body.splitlines(), start), [
-            (name, count, partial(_ply_row, properties=properties, name=name, vertices=vertices))
-            for name, count, properties in elements])
+        vertices, rows = next((count for name, count, _ in elements if name == "vertex"), 0), _rows(body.splitlines(), start)
+        if problem := _declared_rows(rows, [(name, count, partial(_ply_row, properties=properties, name=name, vertices=vertices))
+                                            for name, count, properties in elements]):
+            return problem
+        extra = [number for number, values in rows[sum(count for _, count, _ in elements):] if values]
+        return f"ASCII PLY has {_many(len(extra), 'row')} more than its header declares (from line {extra[0]})" if extra else None
     order, offset = "big" if b"big_endian" in header else "little", 0
     for name, count, properties in elements:
         row = sum(_ply_size(p[0]) for p in properties if p[0] != b"list")

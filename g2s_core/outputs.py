@@ -17,7 +17,7 @@ from g2s_core.errors import G2SError
 from g2s_core.messages import show
 from g2s_core.model import RunResult
 from g2s_core.registry import PluginInfo, Registry, installed
-from g2s_core.result_folder import check_writable, refuse_inputs, staged
+from g2s_core.result_folder import check_writable, killed_move, refuse_inputs, staged
 
 if TYPE_CHECKING:
     from g2s_core.config import RunConfig
@@ -91,7 +91,8 @@ def check_outdir(
     if folders := [p.name for p in every if p.is_dir()]:  # the move into place would stop there, half done
         raise G2SError(f"{outdir}: {', '.join(folders)}: a folder has the name of a result file; move it or choose another output folder")
     if (existing := sorted(p.name for p in every if p.exists())) and not force:
-        raise G2SError(f"{outdir}: already holds results ({', '.join(existing)}); use --force to replace them")
+        mixed = f"; {killed}" if (killed := killed_move(outdir)) else ""
+        raise G2SError(f"{outdir}: already holds results ({', '.join(existing)}){mixed}; use --force to replace them")
     return names
 
 
@@ -115,6 +116,7 @@ def write_outputs(
     result.formats = tuple(check_outdir(outdir, formats, replace, protect, registry))
     obsolete = [p for p in result_paths(outdir, registry=registry) if p.exists()] if replace else []
     names: list[str] = []
+    killed = killed_move(outdir)  # said once this run's files have replaced what it left
     with staged(outdir, obsolete, protect) as staging:
         for fmt in result.formats:
             if progress is not None:
@@ -122,4 +124,6 @@ def write_outputs(
             names.extend(Path(p).name for p in registry.call(known[fmt], result=result, folder=staging))
         if appeared := sorted(p.name for p in result_paths(outdir, registry=registry) if p.exists() and p not in obsolete):
             raise G2SError(f"{outdir}: another run wrote {', '.join(appeared)} there meanwhile; nothing of this run was written")
+    if killed:
+        result.context.warn(f"{outdir}: {killed}; this run's results replaced them")
     return [outdir / name for name in names]

@@ -145,7 +145,7 @@ class Registry:
         named = entry_point.split(".", 1)[0]
         if named in BY_KEY and named != stage.key:  # it would be missed by a registry that loaded only its stage
             self.manager.unregister(plugin)
-            raise PluginError(f"{where}: the plugin is a {stage.title}, whose entry points are named '{stage.key}.<name>'")
+            raise PluginError(f"{where}: the plugin is {'an' if stage.title[0] in 'AEIOU' else 'a'} {stage.title}, whose entry points are named '{stage.key}.<name>'")
         name = getattr(plugin, "NAME", None)
         if not isinstance(name, str) or not name:
             self.manager.unregister(plugin)

@@ -10,7 +10,10 @@ has finished, moves the files into place:
   atomic rename);
 * it exists (it may hold the user's other files, even the input mesh): the
   staging folder is made inside it and each file is renamed into place, with
-  Ctrl-C held back until the last rename is done.
+  Ctrl-C held back until the last rename is done. SIGKILL or a power loss
+  between those renames leaves the folder holding part of the run's files;
+  the staging folder, renamed with :data:`MOVING_MARK` first, holds the rest
+  and tells the next run (:func:`killed_move`).
 
 When a writer fails (disk full, ``ulimit -f``, Ctrl-C) the staging folder is
 removed, together with any parent folder created for it, and the output
@@ -39,6 +42,9 @@ from g2s_core.errors import G2SError
 
 STAGING_MARK = ".g2s-staging-"
 """Part of every staging folder's name, followed by the writing process's id."""
+
+MOVING_MARK = ".moving"
+"""Ends the name of a staging folder whose files are being renamed into an existing output folder."""
 
 _STAGING_NAME = re.compile(re.escape(STAGING_MARK) + r"(\d+)-")
 
@@ -101,6 +107,8 @@ def staged(outdir: Path, obsolete: Sequence[Path] = (), protect: Sequence[Path] 
         yield results
         stop_if_interrupted()
         with interrupts_held():
+            if inside:  # only a kill can stop the renames below half done; the mark lets the next run say so
+                staging = results = staging.rename(f"{staging}{MOVING_MARK}")
             _move_into_place(results, outdir, obsolete, protect)
             if results != staging:
                 staging.rmdir()  # emptied by the rename
@@ -166,6 +174,15 @@ def _remove_stale(home: Path) -> None:
         match = _STAGING_NAME.search(path.name)
         if match and path.is_dir() and not _process_alive(int(match.group(1))):
             shutil.rmtree(path, ignore_errors=True)
+
+
+def killed_move(outdir: Path) -> str | None:
+    """What a run killed while renaming its files into ``outdir`` left there, in words; ``None`` if no run was."""
+    pids = [int(match.group(1)) for path in (outdir.iterdir() if outdir.is_dir() else ())
+            if path.name.endswith(MOVING_MARK) and (match := _STAGING_NAME.search(path.name))]
+    if dead := sorted(pid for pid in pids if not _process_alive(pid)):
+        return f"a run killed while moving its results in (process {', '.join(map(str, dead))}) left only part of them there"
+    return None
 
 
 def _process_alive(pid: int) -> bool:

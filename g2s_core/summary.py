@@ -47,6 +47,16 @@ def stage_rows(stages: Sequence[StageStats]) -> list[tuple[str, str, str, str, s
     return rows
 
 
+def outcome(result: RunResult) -> str:
+    """What came out, in a designer's words: ``12 structure nodes, 7 openings`` (a map piece's), then each
+    analyzer's records (``9 regions, 6 chokepoints``); empty when the run stopped before a graph."""
+    _, graph = final_graph(result)
+    openings = 0 if result.terminals is None else len(result.terminals.openings)
+    counts = ([] if graph is None else [(graph.number_of_nodes(), "structure nodes")]) + ([(openings, "openings")] if openings else [])
+    counts += [(len(records), name) for features in result.features.values() for name, records in features.items() if isinstance(records, list)]
+    return ", ".join(f"{count} {name[:-1] if count == 1 and name.endswith('s') else name}" for count, name in counts)
+
+
 def metric_lines(result: RunResult) -> list[tuple[str, str]]:
     """``("evaluation (KEY)", "name value, ...")`` for each evaluator's measures, values to 4 significant digits."""
     return [(f"evaluation ({key})", ", ".join(f"{name} {value:.4g}" for name, value in measures.items()))

@@ -805,6 +805,11 @@ def head_room(caster: RayCaster, ground: np.ndarray, agent: AgentShape) -> np.nd
     return clear_above(caster, ground + EPSILON * UP, agent.height - EPSILON)
 
 
+_CRACK_AXES = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
+"""The horizontal axes along which :func:`walk_segments` looks for ground on both sides of a probe that found none,
+one crack step (r / 8, docs/entry_exit.md: 0.05 m for the map-piece agent) away."""
+
+
 def walk_segments(
     caster: RayCaster,
     starts: np.ndarray,
@@ -866,7 +871,21 @@ def walk_segments(
     ok = np.ones(n, dtype=bool)
     ok[moving] = across.distance >= lengths[moving]
     good = (down.distance <= reach) & caster.walkable_faces(down.face, agent.max_slope_deg)
-    ground_y = np.where(good, line[:, 1] + lift - np.where(good, down.distance, 0.0), line[:, 1])
+    distance = np.where(good, down.distance, 0.0)
+    # A probe over a crack (a grating's 2 cm slots, unwelded tiles laid apart) stands on the floor beside it, as
+    # the agent's foot does: where ground lies one crack step away on both sides of it along x, else along z (the
+    # nearer of the two). Beyond a floor's edge ground lies on one side at most; a hole wider than twice the step
+    # stays a hole. Only probes without ground are cast again.
+    for axis in _CRACK_AXES * (agent.radius / 8.0):
+        rows = np.flatnonzero(~good)
+        if len(rows) == 0:
+            break
+        beside = caster.first_hits_of([(lifted[rows] + axis, -UP), (lifted[rows] - axis, -UP)])
+        on = [(hit.distance <= reach) & caster.walkable_faces(hit.face, agent.max_slope_deg) for hit in beside]
+        crack = on[0] & on[1]
+        good[rows[crack]] = True
+        distance[rows[crack]] = np.minimum(beside[0].distance, beside[1].distance)[crack]
+    ground_y = np.where(good, line[:, 1] + lift - distance, line[:, 1])
     above = agent.height - (line[:, 1] + lift - ground_y)
     good[good] = has_room(up.distance[good], above[good])
     if max_gap is not None:

@@ -37,10 +37,12 @@ polygons and their shared edges (portals):
    into their neighbours. A smaller group is a room too when it is walled in
    but for one opening (:class:`Outlines`: at least
    :data:`SMALL_ROOM_ENCLOSURE` of its outline is wall, the portals out of it
-   lie within :data:`SMALL_ROOM_OPENING` of its longest extent, and it holds
-   the agent's footprint): a prison cell or a box room behind its door, not
-   a niche or a bay open over its width, nor a piece of walkway open at both
-   ends. Such a small room is never a passage (step 3).
+   lie within :data:`SMALL_ROOM_OPENING` of its longest extent, it holds
+   the agent's footprint, and its door is narrower than it, both measured wall
+   to wall in the level's mesh: :class:`DoorWidths`): a prison cell or a box
+   room behind its door, not a niche or a bay open over its width, nor a
+   piece of walkway open at both ends. Such a small room is never a passage
+   (step 3).
 3. Passages (:func:`join_passages`). A group whose mean walkable width,
    its area over its longest extent (:func:`longest_extents`), is below
    ``passage_width`` agent diameters is a passage (an aisle, a catwalk, a
@@ -110,7 +112,8 @@ E portals; extents O(V) for V polygon corners; pinches O(C (Q M + Q log B)) for
 C candidates between corridor-like groups, Q grid points within a cut's reach
 (hundreds) and M polygons near it; side strips O(V + C log C) (extents, then
 sorting the candidates' region pairs); openings O(C log C + sum of k^2) for k candidate ends on each small
-hole; small rooms O(k) per look at a group under ``min_region_area`` (k: its polygons and their portals, few);
+hole; small rooms O(k) per look at a group under ``min_region_area`` (k: its polygons and their portals, few), and
+O(k) rays for the groups walled in but for one opening (:class:`DoorWidths`, each polygon and portal cast once);
 wall pieces O(B) and O(B) more per elongated small hole (few: pillars are compact); the merge tree sorts the
 portals and runs one union-find step per portal (a Python loop of O(E alpha(P)): a merge order is sequential by
 nature and no library offers it on a general graph); everything else is
@@ -121,12 +124,14 @@ from __future__ import annotations
 
 import math
 from collections import Counter
-from dataclasses import dataclass
+from dataclasses import dataclass, field
+from functools import cached_property
 from typing import Any
 
 import networkx as nx
 import numpy as np
 import rustworkx as rx
+import trimesh
 from pydantic import Field
 from scipy import sparse
 from scipy.sparse import csgraph
@@ -135,6 +140,7 @@ from scipy.spatial import cKDTree
 from g2s_core.errors import PluginError
 from g2s_core.plugin import PluginParams
 from g2s_plugins import centrality
+from g2s_plugins._raycasting import RayCaster, hit_from_behind
 
 HEIGHT_SCALE = 4.0
 """Height differences count this many times in clearance distances, so a wall 2 m above is 8 m away."""
@@ -204,6 +210,17 @@ each open at both ends; docs/plugins.md, "Small rooms of their own")."""
 
 SMALL_ROOM_FOOTPRINT = 1.0
 """A small room holds at least this many squares of the agent's diameter (its own footprint), m² per m²."""
+
+DOOR_STEP = 0.05
+"""A door's clear width is looked for at points this far apart across its portal, m: finer than a wall is thick, so
+that one point lies in the doorway (:class:`DoorWidths`)."""
+
+SMALL_ROOM_DOOR = 0.95
+"""A small room's door is narrower than the room: under this share of it, both clear widths wall to wall in the
+level's mesh (:class:`DoorWidths`). Measured (docs/plugins.md, "Doors narrower than their rooms"): niches and pieces
+of them 1.0 (as wide as their mouths), castle nooks 0.97-1.0, pieces of the sewer's walkways 0.96-1.0 and of
+hospital rooms behind their beds 1.0; prison cells 0.10-0.80, rooms of 2-4 m behind 1.5-2 m doors up to 0.8, a
+hallway 1.6 m wide behind a 1.5 m door 0.94."""
 
 EXTENT_DIRECTIONS = 8
 """Directions, evenly spread over 180 degrees, along which a region's longest extent is measured
@@ -556,9 +573,77 @@ def outlines(navmesh: Any, pairs: np.ndarray, endpoints: np.ndarray, footprint: 
                     footprint=footprint, enclosure=enclosure)
 
 
+@dataclass
+class DoorWidths:
+    """Clear widths, wall to wall in the level's mesh, of small groups of polygons and of the doors out of them.
+
+    The navmesh is eroded by the agent's radius and rasterised on its cell, so the stubs of wall beside a door
+    (0.2-0.4 m) are within a cell of vanishing and a door's walkable width reads as wide as its room's or wider
+    (docs/plugins.md, "Posts, niches and aisles"). The level's own walls are not: the clear width at a point is the
+    shortest horizontal chord through it over :data:`EXTENT_DIRECTIONS` directions (two rays each, against the
+    mesh, at half the agent's height above the navmesh), exact for a door or a rectangular room whatever the
+    level's yaw. A door's is the shortest at points along its portal's normal through the portal's widest point,
+    up to the agent's diameter either side, :data:`DOOR_STEP` apart (a portal lies up to about a radius and a cell
+    from the doorway, in the room or outside it); a group's, the longest at its polygons' centres. Chords are cast
+    on first use, for the few groups the outline rule keeps apart, and kept: O(k) rays for k polygons and portals
+    asked about (Embree through :class:`g2s_plugins._raycasting.RayCaster`).
+
+    Attributes:
+        mesh: the level, metres, Y up.
+        centres: (P, 3) navmesh polygon centres, m.
+        widest: (E, 3) each portal's point of largest clearance (:class:`Clearances`), m.
+        endpoints: (E, 2, 3) each portal's end points, m.
+        agent: the agent settings (``radius``, ``height``, m).
+    """
+
+    mesh: trimesh.Trimesh
+    centres: np.ndarray
+    widest: np.ndarray
+    endpoints: np.ndarray
+    agent: Any
+    _polygons: dict[int, float] = field(default_factory=dict, init=False, repr=False)
+    _portals: dict[int, float] = field(default_factory=dict, init=False, repr=False)
+
+    @cached_property
+    def _caster(self) -> RayCaster:
+        return RayCaster(self.mesh)
+
+    def chords(self, points: np.ndarray) -> np.ndarray:
+        """(N,) the shortest horizontal chord through each of ``points`` (N, 3), m (inf where a ray leaves the level, or
+        where the point lies inside a solid: a ray meets the back of a wall first)."""
+        angle = np.arange(EXTENT_DIRECTIONS) * (math.pi / EXTENT_DIRECTIONS)
+        directions = np.stack([np.cos(angle), np.zeros(EXTENT_DIRECTIONS), np.sin(angle)], axis=1)
+        origins = np.repeat(points + [0.0, 0.5 * float(self.agent.height), 0.0], EXTENT_DIRECTIONS, axis=0)
+        ahead, behind = self._caster.first_hits_of([(origins, np.tile(directions, (len(points), 1))),
+                                                    (origins, np.tile(-directions, (len(points), 1)))])
+        chord = ahead.distance + behind.distance
+        chord[hit_from_behind(self._caster, ahead) | hit_from_behind(self._caster, behind)] = np.inf  # in a solid
+        return chord.reshape(len(points), EXTENT_DIRECTIONS).min(axis=1)
+
+    def door(self, portal: int) -> float:
+        """The clear width of the door of ``portal`` (the shortest near its widest point, across it), m."""
+        if portal not in self._portals:
+            a, b = self.endpoints[portal]
+            along = np.array([b[0] - a[0], b[2] - a[2]]) / max(math.hypot(b[0] - a[0], b[2] - a[2]), 1e-12)
+            reach = math.ceil(2.0 * float(self.agent.radius) / DOOR_STEP)  # one agent diameter either side
+            offsets = np.arange(-reach, reach + 1) * DOOR_STEP
+            normal = np.array([-along[1], 0.0, along[0]])
+            self._portals[portal] = float(self.chords(self.widest[portal] + offsets[:, None] * normal).min())
+        return self._portals[portal]
+
+    def narrower(self, polygons: list[int], exits: np.ndarray) -> bool:
+        """Whether the door of the group ``polygons`` (its widest exit of ``exits``, portal ids) is narrower than the
+        group: under :data:`SMALL_ROOM_DOOR` of its clear width."""
+        missing = [p for p in polygons if p not in self._polygons]
+        if missing:
+            self._polygons.update(zip(missing, self.chords(self.centres[missing]).tolist()))
+        room = max(self._polygons[p] for p in polygons)
+        return max(self.door(int(e)) for e in exits) < SMALL_ROOM_DOOR * room
+
+
 def _merge_tree(pairs: np.ndarray, portal_clearance: np.ndarray, polygon_clearance: np.ndarray,
                 areas: np.ndarray, narrowness: float, min_area: float,
-                outline: Outlines) -> tuple[np.ndarray, np.ndarray]:
+                outline: Outlines, doors: DoorWidths) -> tuple[np.ndarray, np.ndarray]:
     """(merged, blocked): boolean masks over the portals (step 2 of the module doc)."""
     n = len(polygon_clearance)
     parent = list(range(n))
@@ -576,7 +661,12 @@ def _merge_tree(pairs: np.ndarray, portal_clearance: np.ndarray, polygon_clearan
         return found
 
     def room(root: int) -> bool:
-        return area[root] >= min_area or (area[root] >= outline.footprint and outline.enclosed(members(root)))
+        if area[root] >= min_area:
+            return True
+        if area[root] < outline.footprint:
+            return False
+        group = members(root)
+        return outline.enclosed(group) and doors.narrower(group, outline.exits(group))
 
     def find(x: int) -> int:
         while parent[x] != x:
@@ -790,8 +880,9 @@ def floor_bands(heights: np.ndarray, normals: np.ndarray, areas: np.ndarray, gap
     return band
 
 
-def decompose(navmesh: Any, agent: Any, params: DecompositionParams) -> Decomposition:
-    """Regions and (unscored) chokepoints of ``navmesh`` for ``agent`` (see the module doc).
+def decompose(navmesh: Any, agent: Any, params: DecompositionParams, mesh: trimesh.Trimesh) -> Decomposition:
+    """Regions and (unscored) chokepoints of ``navmesh`` for ``agent`` (see the module doc); ``mesh`` is the level
+    the navmesh was built from (a small room's door and its width are measured wall to wall in it).
 
     Region record: ``id``, ``area`` (m²), ``polygons`` (ids), ``centroid``
     (area-weighted polygon centres, m), ``floor`` (band index, lowest 0),
@@ -809,8 +900,10 @@ def decompose(navmesh: Any, agent: Any, params: DecompositionParams) -> Decompos
     areas = np.asarray(navmesh.areas, dtype=np.float64)
     outline = outlines(navmesh, pairs, np.asarray(portals.endpoints, dtype=np.float64), SMALL_ROOM_FOOTPRINT *
                        (2.0 * float(agent.radius)) ** 2, SMALL_ROOM_ENCLOSURE)
+    doors = DoorWidths(mesh, np.asarray(navmesh.centres, dtype=np.float64), clearance.widest,
+                       np.asarray(portals.endpoints, dtype=np.float64), agent)
     merged, blocked = _merge_tree(pairs, clearance.portals_open, clearance.polygons, areas,
-                                  params.narrowness, params.min_region_area, outline)
+                                  params.narrowness, params.min_region_area, outline, doors)
     n = navmesh.polygon_count
     joined = sparse.coo_array((np.ones(int(merged.sum())), (pairs[merged, 0], pairs[merged, 1])), shape=(n, n))
     count, labels = csgraph.connected_components(joined, directed=False)

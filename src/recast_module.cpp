@@ -33,6 +33,7 @@
 #include <array>
 #include <atomic>
 #include <cfloat>
+#include <climits>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -225,24 +226,25 @@ struct TileMesh {
 // One span (world x, floor y, z) of each region of `chf` that holds two spans of one
 // column: a region overlapping itself in plan, which Recast's contours (traced in
 // plan) cannot describe. Regions in order of first sight, scanning rows of columns.
+// O(spans + pairs of spans in a column): a column of one span is passed at once, and the set
+// is asked only about a region found twice (asked for every span, it took twice the time).
 std::vector<float> self_overlapping_regions(const rcCompactHeightfield& chf) {
     std::vector<float> found;
     std::unordered_set<unsigned short> seen;
     for (int z = 0; z < chf.height; ++z) {
         for (int x = 0; x < chf.width; ++x) {
             const rcCompactCell& cell = chf.cells[x + z * chf.width];
+            if (cell.count < 2) continue;
             const int end = static_cast<int>(cell.index + cell.count);
             for (int i = static_cast<int>(cell.index); i < end; ++i) {
                 const unsigned short reg = chf.spans[i].reg;
-                if (reg == 0 || (reg & RC_BORDER_REG) || seen.count(reg)) continue;
-                for (int j = i + 1; j < end; ++j) {
-                    if (chf.spans[j].reg != reg) continue;
-                    seen.insert(reg);
-                    found.insert(found.end(), {chf.bmin[0] + (static_cast<float>(x) + 0.5f) * chf.cs,
-                                               chf.bmin[1] + static_cast<float>(chf.spans[i].y) * chf.ch,
-                                               chf.bmin[2] + (static_cast<float>(z) + 0.5f) * chf.cs});
-                    break;
-                }
+                if (reg == 0 || (reg & RC_BORDER_REG)) continue;
+                int j = i + 1;
+                while (j < end && chf.spans[j].reg != reg) ++j;
+                if (j == end || !seen.insert(reg).second) continue;
+                found.insert(found.end(), {chf.bmin[0] + (static_cast<float>(x) + 0.5f) * chf.cs,
+                                           chf.bmin[1] + static_cast<float>(chf.spans[i].y) * chf.ch,
+                                           chf.bmin[2] + (static_cast<float>(z) + 0.5f) * chf.cs});
             }
         }
     }
@@ -575,6 +577,67 @@ double detail_floor_gap(const rcPolyMesh& pm, const rcPolyMeshDetail& dm, int me
     return worst;
 }
 
+// The lowest and highest walkable span (cell heights) of each region of `chf`, by region id up to
+// chf.maxRegions ({INT_MAX, INT_MIN}: none). O(spans).
+std::vector<std::array<int, 2>> region_floor_ranges(const rcCompactHeightfield& chf) {
+    std::vector<std::array<int, 2>> range(static_cast<size_t>(chf.maxRegions) + 1, {INT_MAX, INT_MIN});
+    for (int s = 0; s < chf.spanCount; ++s) {
+        const unsigned short reg = chf.spans[s].reg;
+        if (chf.areas[s] == RC_NULL_AREA || reg > chf.maxRegions) continue;
+        range[reg][0] = std::min(range[reg][0], static_cast<int>(chf.spans[s].y));
+        range[reg][1] = std::max(range[reg][1], static_cast<int>(chf.spans[s].y));
+    }
+    return range;
+}
+
+// Whether detail_floor_gap(pm, dm, mesh, i, plane, chf) is certainly at most `limit` (whatever the
+// plane), read without probing: each height it reads on a triangle is a weighted mean of the
+// triangle's corners (to a few ulps), so between the mesh's lowest and highest vertex, and each floor
+// it compares one with is a walkable span of the polygon's region (of any walkable region for a
+// polygon of several) in a column of the mesh's plan box. No gap then exceeds max(highest vertex -
+// lowest span, highest span - lowest vertex) over those spans: first over all the region's spans
+// (`ranges`, region_floor_ranges of chf), then over those in the box, taken a column wider each way
+// for rounding. O(detail vertices), then O(columns of the box x their spans), against
+// detail_floor_gap's probes along and inside every triangle; on the 100k-polygon level the region's
+// range answers for all but a few polygons.
+bool detail_floor_gap_within(const rcPolyMesh& pm, const rcPolyMeshDetail& dm, int mesh, int i,
+                             const rcCompactHeightfield& chf, const std::vector<std::array<int, 2>>& ranges,
+                             double limit) {
+    const unsigned short reg = pm.regs[i];
+    const unsigned int vb = dm.meshes[mesh * 4 + 0], nv = dm.meshes[mesh * 4 + 1];
+    if (nv == 0) return true;
+    double lo_x = DBL_MAX, hi_x = -DBL_MAX, lo_z = DBL_MAX, hi_z = -DBL_MAX, lo_y = DBL_MAX, hi_y = -DBL_MAX;
+    for (unsigned int k = vb; k < vb + nv; ++k) {  // as detail_floor_gap converts them
+        const float* v = &dm.verts[k * 3];
+        const double x = (v[0] - chf.bmin[0]) / chf.cs, y = (v[1] - chf.bmin[1]) / chf.ch - 1.0,
+                     z = (v[2] - chf.bmin[2]) / chf.cs;
+        lo_x = std::min(lo_x, x); hi_x = std::max(hi_x, x);
+        lo_y = std::min(lo_y, y); hi_y = std::max(hi_y, y);
+        lo_z = std::min(lo_z, z); hi_z = std::max(hi_z, z);
+    }
+    auto within = [&](int lo_floor, int hi_floor) {
+        constexpr double rounding = 1e-6;  // far above a few ulps of heights under Recast's 2^13 cell heights
+        return lo_floor > hi_floor ||  // no floor: detail_floor_gap is 0
+               std::max(hi_y - lo_floor, hi_floor - lo_y) + rounding <= limit;
+    };
+    if (reg != RC_MULTIPLE_REGS && reg < ranges.size() && within(ranges[reg][0], ranges[reg][1])) return true;
+    const int x0 = std::max(0, static_cast<int>(std::floor(lo_x)) - 1);
+    const int x1 = std::min(chf.width - 1, static_cast<int>(std::floor(hi_x)) + 1);
+    const int z0 = std::max(0, static_cast<int>(std::floor(lo_z)) - 1);
+    const int z1 = std::min(chf.height - 1, static_cast<int>(std::floor(hi_z)) + 1);
+    int lo_floor = INT_MAX, hi_floor = INT_MIN;
+    for (int cz = z0; cz <= z1; ++cz)
+        for (int cx = x0; cx <= x1; ++cx) {
+            const rcCompactCell& cell = chf.cells[cx + cz * chf.width];
+            for (int s = static_cast<int>(cell.index); s < static_cast<int>(cell.index + cell.count); ++s) {
+                if (chf.areas[s] == RC_NULL_AREA || (reg != RC_MULTIPLE_REGS && chf.spans[s].reg != reg)) continue;
+                lo_floor = std::min(lo_floor, static_cast<int>(chf.spans[s].y));
+                hi_floor = std::max(hi_floor, static_cast<int>(chf.spans[s].y));
+            }
+        }
+    return within(lo_floor, hi_floor);
+}
+
 // Twice the signed plan area of triangle (a, k, b): positive when counter-clockwise (x right, second
 // coordinate up).
 template <typename T>
@@ -712,8 +775,10 @@ std::vector<int32_t> resample_detail_off_floor(LogContext& ctx, const rcPolyMesh
     std::vector<int32_t> changed;
     std::vector<std::unique_ptr<rcPolyMeshDetail, DetailDel>> redone;
     if (c.detailSampleDist <= 0.0f) return changed;
+    const std::vector<std::array<int, 2>> ranges = region_floor_ranges(chf);
     for (int i = 0; i < pm.npolys; ++i) {
         if (std::binary_search(skip.begin(), skip.end(), i)) continue;
+        if (detail_floor_gap_within(pm, *dmesh, i, i, chf, ranges, c.walkableClimb)) continue;  // gap <= climb: kept
         const std::array<double, 3> plane = vertex_plane(pm, i);
         double gap = detail_floor_gap(pm, *dmesh, i, i, plane, chf);
         const double bend = std::max<double>(c.walkableHeight, detail_plane_offset(pm, *dmesh, i, plane));

@@ -422,3 +422,14 @@ def test_a_batch_with_links_to_themselves_is_no_internal_error(tmp_path, capsys,
     assert main(["batch", "graph_only", "levels", "-o", "levels/runs", "-q"]) == 4
     assert capsys.readouterr().err == ("g2s: graph_only on self failed: levels/self.obj: cannot read mesh file "
                                        "(Too many levels of symbolic links)\n")
+
+
+@pytest.mark.parametrize("preset, level, says", [
+    ("map_piece", "sample:straight_corridor", "straight_corridor: 3 structure nodes, 2 openings"),
+    ("level_regions", "sample:two_rooms_one_door", "two_rooms_one_door: 6 structure nodes, 1 chokepoint, 2 regions"),
+])
+def test_run_says_what_came_out_after_the_stage_table(preset, level, says, tmp_path, capsys):
+    # robust7: the table gave step counts only; a designer had to open structure.json for a piece's openings
+    assert main(["run", preset, level, "-o", str(tmp_path / "out")]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    assert says in lines and lines.index(says) == lines.index(next(l for l in lines if l.startswith("wrote "))) - 1

@@ -132,13 +132,18 @@ def test_a_piece_without_axes_keeps_the_openings_at_its_extent() -> None:
     assert min(float(np.linalg.norm(np.subtract(o.position, end))) for o in found) <= 0.05
 
 
+def _room_walls(w: float = 8.0, d: float = 6.0, t: float = 0.3) -> list[trimesh.Trimesh]:
+    """The walls of a room ``w`` x ``d`` m, ``t`` thick, with 1.6 m doorways west and east (z 2.2-3.8), no floor."""
+    return [_box(-t, 0.0, -SLAB, TALL, -t, 2.2), _box(-t, 0.0, -SLAB, TALL, 3.8, d + t),
+            _box(w, w + t, -SLAB, TALL, -t, 2.2), _box(w, w + t, -SLAB, TALL, 3.8, d + t),
+            _box(-t, w + t, -SLAB, TALL, -t, 0.0), _box(-t, w + t, -SLAB, TALL, d, d + t)]
+
+
 def _tiled_room(crack: float) -> trimesh.Trimesh:
     """Room 8 x 6 m, walls 0.3 m, 1.6 m doorways west and east (z 2.2-3.8); its floor 1 m tiles of two triangles each, no
     vertex shared, ``crack`` m apart."""
     w, d, t = 8.0, 6.0, 0.3
-    parts = [_box(-t, 0.0, -SLAB, TALL, -t, 2.2), _box(-t, 0.0, -SLAB, TALL, 3.8, d + t),
-             _box(w, w + t, -SLAB, TALL, -t, 2.2), _box(w, w + t, -SLAB, TALL, 3.8, d + t),
-             _box(-t, w + t, -SLAB, TALL, -t, 0.0), _box(-t, w + t, -SLAB, TALL, d, d + t)]
+    parts = _room_walls(w, d, t)
     for x in np.arange(-t, w + t - 1e-9, 1.0):
         for z in np.arange(-t, d + t - 1e-9, 1.0):
             x1, z1 = min(x + 1.0, w + t) - crack, min(z + 1.0, d + t) - crack
@@ -322,9 +327,10 @@ def test_a_door_half_blocked_inside_its_wall_is_its_free_part(block: str, free: 
 def test_ground_rising_beside_a_terrain_border_leaves_its_openings_whole() -> None:
     # The free part of an opening is measured one search step above the climb; hilly ground rising beside the
     # border within the passage's depth is walked onto, not walked round, so it must not end the free part. When it
-    # did, the sample terrain's two long border openings measured 29.3 and 39.3 m instead of 70.1 and 73.0 m.
+    # did, the sample terrain's two long border openings measured 29.3 and 39.3 m instead of 70.1 and 73.0 m. Its
+    # border climbs over the hills: fitted straight in plan (ninth round), a 1.54 m stretch at a corner is an eighth.
     widths = sorted(o.width for o in _detect(outdoor.terrain().mesh).openings)
-    assert len(widths) == 7
+    assert len(widths) == 8
     assert widths[-2] > 65.0 and widths[-1] > 65.0
 
 
@@ -385,3 +391,81 @@ def test_a_barrier_the_agent_cannot_climb_leaves_both_ends(height: float, at: fl
     # (eighth round's `vault_barrier_corridor`, both routes, every yaw; barriers 0.5-1.0 m high). A floor that
     # leaves the piece at the main floor's level holds openings too.
     _assert_known_turned(_corridor_with_a_barrier(height, at), yaw, [[0.0, 0.0, 1.2], [12.0, 0.0, 1.2]], 2.4)
+
+
+def _hull(points: list) -> trimesh.Trimesh:
+    return trimesh.convex.convex_hull(np.asarray(points, dtype=np.float64))
+
+
+def _attic(ridge: float = 3.5, eaves: float = 1.0) -> trimesh.Trimesh:
+    """Room 8 x 6 m under a roof 0.2 m thick pitched from eaves ``eaves`` m up (side walls along z 0 and 6) to a ridge
+    ``ridge`` m up at z 3; gable walls 0.3 m thick at x -0.3 and 8.3, each with a 1.6 m doorway (z 2.2-3.8) 2.2 m high."""
+    rise = (ridge - eaves) / 3.0  # per metre in from a side wall
+
+    def under_roof(z: float) -> float:
+        return eaves + rise * min(z, 6.0 - z)
+
+    parts = [_box(-0.3, 8.3, -SLAB, 0.0, -0.3, 6.3), _box(0.0, 8.0, -SLAB, eaves, -0.3, 0.0),
+             _box(0.0, 8.0, -SLAB, eaves, 6.0, 6.3)]
+    for z0 in (-0.3, 6.3):
+        parts.append(_hull([[x, y + dy, z] for x in (-0.3, 8.3) for z, y in ((z0, under_roof(z0)), (3.0, ridge))
+                            for dy in (0.0, 0.2)]))
+    for x0 in (-0.3, 8.0):
+        for z0, z1 in ((-0.3, 2.2), (3.8, 6.3)):
+            parts.append(_hull([[x, y, z] for x in (x0, x0 + 0.3) for z in (z0, z1) for y in (-SLAB, under_roof(z))]))
+        parts.append(_hull([[x, y, z] for x in (x0, x0 + 0.3) for z, y in ((2.2, 2.2), (3.8, 2.2), (2.2, under_roof(2.2)),
+                                                                          (3.8, under_roof(3.8)), (3.0, ridge))]))
+    return trimesh.util.concatenate(parts)
+
+
+@pytest.mark.parametrize("yaw", [0.0, 22.0, 45.0])
+def test_a_pitched_roof_is_not_the_main_floor(yaw: float) -> None:
+    # Recast's one polygon over both slopes (walkable at 40 degrees) lies at 1.6 m, less than the agent's height over
+    # the floor at 0.1 m, though the roof's surface stands 2.4-3.85 m up: the fan of the polygon's corners found no
+    # floor under the roof, which was taken for the main floor, its six edges for the openings and the two doorways
+    # missed (ninth round's `pitched_attic`, map_piece, every yaw). The roof is measured on the detail triangles now.
+    _assert_known_turned(_attic(), yaw, [[-0.3, 0.0, 3.0], [8.3, 0.0, 3.0]], 1.6)
+
+
+def _grated_room(gap: float, slat: float = 0.08) -> trimesh.Trimesh:
+    """The room of :func:`_room_walls` over a grating of slats ``slat`` wide, 0.05 m thick, running west-east out to the
+    walls' outer faces, ``gap`` apart, with nothing under it."""
+    parts = _room_walls()
+    parts += [_box(-0.3, 8.3, -0.05, 0.0, z, z + slat) for z in np.arange(-0.3, 6.3 - slat + 1e-9, slat + gap)]
+    return trimesh.util.concatenate(parts)
+
+
+@pytest.mark.parametrize("yaw", [22.0, 45.0])
+def test_a_grating_slot_along_the_way_out_is_no_edge(yaw: float) -> None:
+    # The way out through the east doorway runs within 2 degrees of the 2 cm slots: two probes in a row fell into one
+    # and the floor's end was put 0.3-0.4 m inside the door, which was missed (ninth round's `grated_room`, 22
+    # degrees, navmesh route). A probe without floor stands on the floor a search step to either side of it.
+    _assert_known_turned(_grated_room(0.02), yaw, [[-0.3, 0.0, 3.0], [8.3, 0.0, 3.0]], 1.6)
+
+
+def _pipe(length: float = 12.0, radius: float = 1.6, facets: int = 24) -> trimesh.Trimesh:
+    """A round pipe along x, open at both ends, inner ``radius`` m, 0.2 m thick, ``facets`` flat sides, a corner at the
+    bottom (y 0, z 0)."""
+    angles = -math.pi / 2 + np.arange(facets + 1) * 2 * math.pi / facets
+    parts = []
+    for a0, a1 in zip(angles[:-1], angles[1:]):
+        ring = [(r * math.cos(a), radius + r * math.sin(a)) for r, a in ((radius, a0), (radius, a1),
+                                                                           (radius + 0.2, a1), (radius + 0.2, a0))]
+        parts.append(_hull([[x, y, z] for x in (0.0, length) for z, y in ring]))
+    return trimesh.util.concatenate(parts)
+
+
+@pytest.mark.parametrize("yaw", [0.0, 22.0, 45.0])
+def test_a_round_pipe_gives_both_ends(yaw: float) -> None:
+    # The floor's end at each mouth is an arc across the pipe, 0.19 m off the straight line through its points (the
+    # tolerance is r / 4, 0.1 m): both ends were taken for corners and dropped (ninth round's `sewer_pipe`, navmesh
+    # route, every yaw). An edge is straight in plan now.
+    mesh = _pipe()
+    turn = pieces.yaw_about_centre(mesh, yaw)
+    mesh.apply_transform(turn)
+    found = _detect(mesh).openings
+    assert len(found) == 2
+    for end in trimesh.transform_points(np.array([[0.0, 0.25, 0.0], [12.0, 0.25, 0.0]]), turn):
+        best = min(found, key=lambda o: float(np.linalg.norm(np.subtract(o.position, end))))
+        assert float(np.linalg.norm(np.subtract(best.position, end))) <= 0.1
+        assert 1.8 <= best.width <= 2.4  # the pipe's chord a step above the climb over the edge's points

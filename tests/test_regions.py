@@ -324,6 +324,29 @@ def test_small_rooms_behind_doors_are_regions_and_niches_are_not():
     assert len(regions(run(rooms_off_a_corridor(3.0, 2.0, 3.0)))) == 1
 
 
+@pytest.mark.parametrize("yaw", [0.0, 22.0, 45.0])
+def test_a_niche_as_wide_as_its_mouth_is_no_room_at_any_yaw(yaw):
+    # niches 2 m wide and 3 m deep, open over their whole width: pieces of them (1.2-2.4 m² walkable) are walled in
+    # but for one opening, and were regions at 0 and 45 degrees (2 / 1 and 4 / 3); their mouth is as wide as they are
+    level = rooms_off_a_corridor(2.0, 3.0, 2.0)
+    result = run(SimpleNamespace(mesh=level.mesh.copy().apply_transform(yaw_about_centre(level.mesh, yaw)),
+                                 name=level.name))
+    assert (len(regions(result)), len(chokepoints(result))) == (1, 0)
+
+
+def test_clear_widths_are_wall_to_wall_in_the_mesh_whatever_the_yaw():
+    # a 2 x 3 m room behind a 1.5 m door in a 0.2 m wall, turned by 45 degrees: the navmesh is eroded and rasterised,
+    # the level's walls are not; a point inside a wall has no chord
+    level = rooms_off_a_corridor(2.0, 3.0, 1.5)
+    turn = yaw_about_centre(level.mesh, 45.0)
+    points = trimesh.transform_points(np.array([[5.0, 0.0, 2.6], [5.0, 0.0, 4.2], [4.1, 0.0, 2.6]]), turn)
+    widths = decomposition.DoorWidths(level.mesh.copy().apply_transform(turn), points, points, np.zeros((1, 2, 3)),
+                                      SimpleNamespace(radius=0.5, height=2.0))
+    door, room, wall = widths.chords(points)
+    assert door == pytest.approx(1.5, abs=0.05) and room == pytest.approx(2.0, abs=0.05) and wall == np.inf
+    assert door < decomposition.SMALL_ROOM_DOOR * room
+
+
 def test_wall_share_of_a_group_counts_its_portals_out_only():
     # a 2 x 2 m room (polygon 0, its four edges without neighbour: 8 m of wall) with a 1 m portal to a door (a 1 x
     # 0.2 m polygon 1) that opens on a 6 x 2 m corridor (polygon 2); the portal between the room and the door is

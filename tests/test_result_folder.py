@@ -61,3 +61,42 @@ def test_a_staging_folder_that_cannot_be_removed_is_named(tmp_path, monkeypatch)
     staging = next(tmp_path.iterdir())
     assert str(caught.value) == (f"{tmp_path / 'out'}: cannot write results (Read-only file system); nothing was written "
                                  f"(the staging folder {staging} could not be removed; the next run removes it)")
+
+
+_KILLED_MID_MOVE = """
+import os, signal, sys
+from pathlib import Path
+from g2s_core.cli import main
+out, replace = Path(sys.argv[1]), os.replace
+def replace_then_die(source, target):  # SIGKILL (or a power loss) after the first file is in place
+    replace(source, target)
+    if Path(target).parent == out:
+        os.kill(os.getpid(), signal.SIGKILL)
+os.replace = replace_then_die
+main(["run", "map_piece", "sample:straight_corridor", "-o", str(out), "--format", "json,html", "--force", "-q"])
+"""
+
+
+def test_a_run_killed_between_its_renames_is_said_by_the_next_run(tmp_path, capsys):
+    # robust7: the next run removed the killed run's staging folder without a word, and its "already holds results"
+    # hid that the folder held part of one run's files beside another's
+    import subprocess
+    import sys
+
+    out = tmp_path / "out"
+    assert main(["run", "map_piece", "sample:straight_corridor", "-o", str(out), "--format", "json,html", "-q"]) == 0
+    earlier = {name: (out / name).read_bytes() for name in os.listdir(out)}
+    killed = subprocess.run([sys.executable, "-c", _KILLED_MID_MOVE, str(out)], capture_output=True, timeout=600)
+    assert killed.returncode == -9
+    (moving,) = [name for name in os.listdir(out) if result_folder.STAGING_MARK in name]
+    pid = moving.split(result_folder.STAGING_MARK)[1].split("-")[0]
+    capsys.readouterr()
+    assert main(["run", "map_piece", "sample:straight_corridor", "-o", str(out), "-q"]) == 2
+    said = f"{out}: a run killed while moving its results in (process {pid}) left only part of them there"
+    assert capsys.readouterr().err == (f"g2s: error: {out}: already holds results ({', '.join(sorted(earlier))}); "
+                                       f"{said.split(': ', 1)[1]}; use --force to replace them\n")
+    assert main(["run", "map_piece", "sample:straight_corridor", "-o", str(out), "--force", "-q"]) == 0
+    assert capsys.readouterr().err == f"g2s: warning: {said}; this run's results replaced them\n"
+    assert sorted(os.listdir(out)) == sorted(earlier)  # the staging folder is gone
+    assert main(["run", "map_piece", "sample:straight_corridor", "-o", str(out), "--force", "-q"]) == 0
+    assert capsys.readouterr().err == ""  # said once

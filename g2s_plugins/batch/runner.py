@@ -44,6 +44,7 @@ from typing import TYPE_CHECKING, Any
 from g2s_core import DISTRIBUTION
 from g2s_core.config import find_config, load_raw_config, parse_config, with_evaluators
 from g2s_core.errors import G2SError, PluginFailure
+from g2s_core.input_files import check_regular_file
 from g2s_core.lazy import lazy_module
 from g2s_core.mesh import SAMPLE_PREFIX, SUPPORTED_SUFFIXES
 from g2s_core.model import RunResult
@@ -265,6 +266,8 @@ def expand_inputs(inputs: Sequence[str], exclude: Path | None = None) -> list[tu
                 raise G2SError(f"{item}: the pattern matches no files")
             for file in files:
                 add(file.stem, str(file), item)
+        elif os.path.lexists(item):  # a link to itself or to nothing: said as g2s run says it
+            check_regular_file(item, "mesh file")
         else:
             raise G2SError(f"{item}: no such mesh file, folder or pattern (or {SAMPLE_PREFIX}NAME)")
     return [(name, spec) for name, spec in levels.items()]

@@ -269,6 +269,7 @@ class _Settings:
     snap: float
     delta: float
     walkable_cos: float  # cosine of the agent's steepest walkable slope
+    walkable_tan: float  # its tangent
 
 
 def _settings(params: Params, agent: AgentConfig) -> _Settings:
@@ -280,6 +281,7 @@ def _settings(params: Params, agent: AgentConfig) -> _Settings:
     return _Settings(
         radius=r, height=float(agent.height), climb=climb, step=step, lift=lift, snap=snap, delta=min(step, r) / 4.0,
         walkable_cos=math.cos(math.radians(float(agent.max_slope))),
+        walkable_tan=math.tan(math.radians(float(agent.max_slope))),
     )
 
 
@@ -364,8 +366,18 @@ def _surface_ends(
     for begin in range(0, len(origins), batch):
         part = slice(begin, begin + batch)
         probes = (origins[part, None, :] + directions[part, None, :] * offsets[None, :, None]).reshape(-1, 3)
-        hits = caster.first_hits(probes, np.repeat(down[part], n_off, axis=0))
-        missing = ((hits.distance > s.lift + s.climb) | ~_walkable(caster, hits.face, s)).reshape(-1, n_off)
+        probe_down = np.repeat(down[part], n_off, axis=0)
+        hits = caster.first_hits(probes, probe_down)
+        missing = (hits.distance > s.lift + s.climb) | ~_walkable(caster, hits.face, s)
+        # A probe in a crack running along the way (a grating's slot, the way out within a few degrees of
+        # it) stays in it from one probe to the next: it stands on the surface when surface lies a search
+        # step to both sides of it (beyond an edge oblique to the way, one side at most).
+        rows = np.flatnonzero(missing)
+        side = s.delta * _unit(np.cross(directions[part][rows // n_off], UP))
+        beside = caster.first_hits_of([(probes[rows] + side, probe_down[rows]), (probes[rows] - side, probe_down[rows])])
+        on = [(hit.distance <= s.lift + s.climb) & _walkable(caster, hit.face, s) for hit in beside]
+        missing[rows] = ~(on[0] & on[1])
+        missing = missing.reshape(-1, n_off)
         # The surface ends where two probes in a row find none: a crack narrower than a search step
         # (unwelded floor tiles) is no edge, and neither the agent nor Recast's voxels see it.
         missing[:, :-1] &= missing[:, 1:]
@@ -569,6 +581,12 @@ def _match_edges(segments: list[np.ndarray], ways: _Ways, s: _Settings, params: 
     def fit(samples: np.ndarray) -> tuple[np.ndarray, np.ndarray, float] | None:
         points = ways.edge[samples]
         centre, direction, residual = _fit_line(points)
+        # A floor curved across the way (a round pipe) ends along an arc in the vertical plane: such an edge,
+        # whose points climb along it no steeper than the agent walks (one surface), is straight in plan. A
+        # steeper jump is a riser between two surfaces (a wall's top beside a ceiling's), fitted in 3D.
+        rise = np.abs(np.diff(points[:, 1]))
+        if np.all(rise <= s.walkable_tan * np.hypot(*np.diff(points[:, [0, 2]], axis=0).T) + 1e-9):
+            residual = _fit_line(points[:, [0, 2]])[2]
         straight = float(np.count_nonzero(residual <= tolerance)) / len(points)
         if straight < 0.8 and not _follows(points, ways.tangent[samples], cos_match):
             return None  # the edge points fit no straight edge and no curve along the segment: a corner
@@ -856,17 +874,24 @@ def area_below(navmesh: NavMesh | SampledSurface, label: np.ndarray, height: flo
 
     A roof or a ceiling's top (walkable for Recast, as real exports close their rooms) lies over
     the floor it covers; a floor does not. ``label``: (P,) component of every polygon, C = its
-    largest + 1; ``height``: the agent's height, metres. Each polygon, cut into a fan of triangles,
-    is sampled at four points per triangle weighted by area; from each, a ray cast up from
-    ``height`` above it finds the first navmesh surface there, which it lies under. O(P log P)
-    with the ray caster's BVH.
+    largest + 1; ``height``: the agent's height, metres. Each polygon is cut into triangles: a
+    navmesh's detail triangles (its polygons' corners can lie far off the surface: a pitched roof's
+    one polygon spans both slopes at 1.6 m, its ridge 3.85 m up, over a floor at 0.1 m), else a fan;
+    each sampled at four points weighted by area; from each, a ray cast up from ``height`` above it
+    finds the first navmesh surface there, which it lies under. O(T log T) for T triangles with the
+    ray caster's BVH.
     """
-    polygons = np.asarray(navmesh.polygons)
-    vertices = np.asarray(navmesh.vertices, dtype=np.float64)
-    fan = range(1, polygons.shape[1] - 1)  # triangle (0, j, j + 1) of each polygon with a corner j + 1
-    owners = [np.flatnonzero(polygons[:, j + 1] >= 0) for j in fan]
-    triangles = np.concatenate([polygons[o][:, [0, j, j + 1]] for j, o in zip(fan, owners)])
-    owner = np.concatenate(owners)
+    if hasattr(navmesh, "detail_polygon"):
+        vertices = np.asarray(navmesh.detail_vertices, dtype=np.float64)
+        triangles = np.asarray(navmesh.detail_triangles)
+        owner = np.asarray(navmesh.detail_polygon)
+    else:
+        polygons = np.asarray(navmesh.polygons)
+        vertices = np.asarray(navmesh.vertices, dtype=np.float64)
+        fan = range(1, polygons.shape[1] - 1)  # triangle (0, j, j + 1) of each polygon with a corner j + 1
+        owners = [np.flatnonzero(polygons[:, j + 1] >= 0) for j in fan]
+        triangles = np.concatenate([polygons[o][:, [0, j, j + 1]] for j, o in zip(fan, owners)])
+        owner = np.concatenate(owners)
     corners = vertices[triangles]
     area = 0.5 * np.linalg.norm(np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0]), axis=1)
     points = np.einsum("kj,tjd->tkd", _COVER_POINTS, corners).reshape(-1, 3)

@@ -1,0 +1,78 @@
+"""The ninth round's level kinds (``benchmarks/level_kinds.py``) build the levels their docstrings describe.
+
+Smoke tests of the four quick generators (well under a second each to build and to give a navmesh): the
+connected areas the presets' agent finds are the ones each level is made to have, so a door that closes or a
+crawlway that opens shows here before a benchmark figure moves.
+"""
+
+from __future__ import annotations
+
+import importlib.util
+from pathlib import Path
+from types import SimpleNamespace
+
+import numpy as np
+import pytest
+import scipy.sparse as sp
+from scipy.sparse.csgraph import connected_components
+
+from g2s_plugins.recast import build_navmesh
+
+AGENT = SimpleNamespace(radius=0.5, height=2.0, max_climb=0.4, max_slope=45.0)  # the presets' agent (configs/base.yaml)
+
+
+@pytest.fixture(scope="module")
+def kinds():
+    path = Path(__file__).resolve().parents[1] / "benchmarks" / "level_kinds.py"
+    spec = importlib.util.spec_from_file_location("level_kinds", path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module.KINDS
+
+
+def areas(mesh) -> tuple[np.ndarray, object]:
+    """The connected area of every navmesh polygon (P,) and the navmesh."""
+    nav = build_navmesh(mesh.vertices, mesh.faces, AGENT)
+    rows = np.repeat(np.arange(nav.polygon_count), nav.neighbours.shape[1])
+    cols = nav.neighbours.ravel()
+    ok = cols >= 0
+    graph = sp.coo_matrix((np.ones(ok.sum()), (rows[ok], cols[ok])), shape=(nav.polygon_count,) * 2)
+    return connected_components(graph, directed=False)[1], nav
+
+
+def test_the_same_seed_gives_the_same_level(kinds):
+    for kind in ("hall", "islets"):
+        a, b, other = kinds[kind](0), kinds[kind](0), kinds[kind](1)
+        assert np.array_equal(a.vertices, b.vertices) and np.array_equal(a.faces, b.faces), kind
+        assert len(a.vertices) != len(other.vertices) or not np.array_equal(a.vertices, other.vertices), kind
+
+
+def test_the_bunkers_three_levels_are_one_area(kinds):
+    """Every room opens through its blast door, the tunnel through the last room, and the stairwells join the
+    levels: one area, with floor on each of the three levels (0, -6 and -12 m)."""
+    label, nav = areas(kinds["bunker"](0))
+    assert label.max() == 0
+    floors = np.round(nav.centres[:, 1] - 0.2, 1)
+    for level in (0.0, -6.0, -12.0):
+        assert (floors == level).sum() > 100, level
+
+
+def test_the_hall_is_one_area(kinds):
+    label, _ = areas(kinds["hall"](0))
+    assert label.max() == 0
+
+
+def test_islets_out_of_reach_are_areas_of_their_own(kinds):
+    """The main island with its cluster, 13 more clusters and 60-80 lone islets: scores of areas."""
+    label, _ = areas(kinds["islets"](0))
+    assert 75 <= label.max() + 1 <= 95
+
+
+def test_slopes_crests_are_reached_through_the_flanks_under_45_degrees(kinds):
+    """The crests (9 m up) are in the valleys' area: joined where the flanks are under the limit (the south);
+    the rest of the areas are flank patches the ripples cut off, each a few square metres."""
+    label, nav = areas(kinds["slopes"](0))
+    main = np.bincount(label).argmax()
+    assert nav.centres[label == main, 1].max() > 9.0
+    small = [nav.areas[label == k].sum() for k in range(label.max() + 1) if k != main]
+    assert small and max(small) < 30.0
