@@ -45,7 +45,6 @@ from g2s_core.model import AnalyzerResult, LoadedResult, Terminals
 
 # a plugin's result is checked after the plugin has imported them; listing plugins needs none
 nx, np, trimesh = lazy_module("networkx"), lazy_module("numpy"), lazy_module("trimesh")
-rooted = lazy_module("g2s_core.rooted")
 
 Check = Callable[[Any, Mapping[str, Any], Any], "str | None"]
 """``check(result, hook arguments, plugin object)``: what is wrong with a result, or ``None``."""
@@ -119,21 +118,6 @@ def _not_in(part: nx.Graph, whole: nx.Graph) -> list[Any]:
     return [n for n in part if n not in whole] + [e for e in part.edges if not whole.has_edge(*e)]
 
 
-def _is_tree(graph: nx.Graph) -> bool:
-    """``networkx.is_tree(graph)``; for a simple undirected graph (integer ids, as the initial graph's) by its
-    adjacency sizes and scipy's connected components (networkx's search took 60-75 ms on a 100k-polygon level's
-    Steiner tree). O(n log n + m)."""
-    if len(graph) == 0 or graph.is_directed() or graph.is_multigraph() or set(map(type, graph._adj)) != {int}:
-        return nx.is_tree(graph)
-    # a tree's 2 (n - 1) entries; with a self-loop (one entry) n - 1 other edges at most, too few to connect it
-    if sum(map(len, graph._adj.values())) != 2 * (len(graph) - 1):
-        return False
-    try:
-        return rooted.components(graph, np.sort(np.fromiter(graph._adj, np.int64, len(graph))))[2] == 1
-    except OverflowError:  # an id beyond int64
-        return nx.is_tree(graph)
-
-
 def _tree(value: Any, kwargs: Mapping[str, Any], plugin: Any) -> str | None:
     graph, terminals = kwargs["graph"], kwargs["terminals"]
     if not isinstance(value, nx.Graph):
@@ -144,7 +128,7 @@ def _tree(value: Any, kwargs: Mapping[str, Any], plugin: Any) -> str | None:
     foreign = _not_in(value, graph)
     if foreign:
         return f"a tree with nodes or edges not in the graph: {foreign[:3]}"
-    return None if _is_tree(value) else "a graph that is not a tree"
+    return None if nx.is_tree(value) else "a graph that is not a tree"
 
 
 def _looped(value: Any, kwargs: Mapping[str, Any], plugin: Any) -> str | None:

@@ -46,18 +46,3 @@ def test_a_ring_gets_its_missing_edge_back():
     looped = add_loops(graph, structure, 1.5, 1.0)
     assert sorted(map(sorted, looped.edges)) == [[0, 1], [0, 3], [1, 2], [2, 3]]
     assert add_loops(graph, structure, 1.5, 2.0) is structure  # a gain of 2 m is no more than 2 m
-
-
-def test_the_paths_added_hold_the_graphs_own_attribute_dicts():
-    """The ring of the test above: the looped structure's nodes and edges, the edge 0 - 3 added included, are the
-    graph's own dicts (shared, as the Steiner forest's), which the pipeline then finds there instead of copying."""
-    graph = nx.cycle_graph(4)
-    nx.set_edge_attributes(graph, 1.0, "weight")
-    nx.set_node_attributes(graph, {node: (float(node), 0.0, 0.0) for node in graph}, "pos")
-    structure = nx.Graph()
-    structure.add_nodes_from((node, graph.nodes[node]) for node in graph)
-    structure.add_edges_from((u, v, graph.edges[u, v]) for u, v in [(0, 1), (1, 2), (2, 3)])
-    looped = add_loops(graph, structure, 1.5, 1.0)
-    assert all(looped.nodes[node] is graph.nodes[node] for node in looped)
-    assert all(data is graph.edges[u, v] for u, v, data in looped.edges(data=True))
-    assert looped.edges[0, 3] == {"weight": 1.0}

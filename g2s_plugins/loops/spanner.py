@@ -77,8 +77,8 @@ def add_loops(graph: nx.Graph, structure: nx.Graph, stretch: float, min_gain: fl
 
     Returns:
         A new graph (or ``structure`` when nothing is added) with the added
-        paths' nodes and edges; a new graph's nodes and edges hold
-        ``graph``'s own attribute dicts (shared, not copied: see
+        paths' nodes and edges; a new graph's nodes and edges carry no
+        attributes (the pipeline copies ``graph``'s, see
         :func:`g2s_core.hookspecs.g2s_add_loops`).
     """
     if math.isinf(stretch) or nx.is_empty(structure):
@@ -114,13 +114,10 @@ def add_loops(graph: nx.Graph, structure: nx.Graph, stretch: float, min_gain: fl
     on_paths = list(map(arrays.nodes.__getitem__, rows_of_paths.tolist()))
     paths_ids = [on_paths[start:end] for start, end in itertools.pairwise(offsets.tolist())]
     # the structure's nodes and edges, then every path's nodes, then every path's edges (the insertion order of
-    # adding them path by path), with the graph's own attribute dicts, shared as the Steiner forest shares them
-    # (g2s_core.pipeline.steiner_forest): the pipeline finds them there instead of copying them
+    # adding them path by path), without attributes: the pipeline copies the graph's onto them all at once
     nodes = itertools.chain(structure, (node for path in paths_ids for node in path))
     edges = itertools.chain(structure.edges, ((u, v) for path in paths_ids for u, v in zip(path, path[1:])))
-    node_data, adjacency = graph._node, graph._adj
-    return graph_of(nx.Graph(**structure.graph), {node: node_data[node] for node in nodes},
-                    ((u, v, adjacency[u][v]) for u, v in edges))
+    return graph_of(nx.Graph(**structure.graph), {node: {} for node in nodes}, ((u, v, {}) for u, v in edges))
 
 
 def _candidates(
