@@ -415,7 +415,7 @@ def _grid_candidates(surface: trimesh.Trimesh, spacing: float) -> tuple[np.ndarr
     lo, hi = np.asarray(surface.bounds)
     across = [float(np.floor((hi[i] - lo[i]) / spacing)) + 1 for i in (0, 2)]  # inf for a tiny spacing
     if not across[0] * across[1] <= MAX_CANDIDATES:
-        raise G2SError(f"sampling: spacing {spacing:g} m gives a {across[0]:.4g} x {across[1]:.4g} grid; use a larger spacing")
+        raise G2SError(f"sampling: spacing {spacing:g} m gives a grid of {across[0]:.4g} x {across[1]:.4g} points; use a larger spacing")
     nx_, nz_ = map(int, across)
     # Centre the grid on the surface's footprint.
     x0 = lo[0] + 0.5 * ((hi[0] - lo[0]) - (nx_ - 1) * spacing)

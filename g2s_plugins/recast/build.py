@@ -119,7 +119,7 @@ def check_precision(vertices: np.ndarray, cell_size: float) -> None:
         reach = 2.0 ** (math.floor(math.log2(cell_size / 2)) + 53)
         raise SettingsError(
             f"mesh: vertices lie up to {far:.4g} m from the origin, where double precision keeps only "
-            f"{np.spacing(far):g} m between values, more than half a {cell_size:g} m cell; move the level "
+            f"{np.spacing(far):g} m between values, more than half the cell of {cell_size:g} m; move the level "
             f"within {reach:.4g} m of the origin"
         )
 
@@ -153,7 +153,7 @@ def check_grid(vertices: np.ndarray, settings: dict[str, Any], cell_size_given: 
         raise SettingsError(
             f"{cs_key}: the level ({size}) reaches {far:.4g} m from its local origin (docs/navmesh.md), where "
             f"Recast's single precision keeps only {np.spacing(np.float32(far)):g} m between values, more than "
-            f"half a {cs:g} m cell; {_SCALE_HINT}, or use a larger graph.params.cell_size"
+            f"half the cell of {cs:g} m; {_SCALE_HINT}, or use a larger graph.params.cell_size"
         )
     width, depth = (int(np.floor(e / cs + 0.5)) for e in (extent[0], extent[2]))
     if width < 1 or depth < 1:

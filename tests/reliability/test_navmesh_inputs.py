@@ -217,4 +217,4 @@ def test_level_far_from_the_origin_builds_and_is_refused_only_where_double_preci
     assert code == 0, err
     assert_refused(*run(tmp_path / "far", square("far.obj", 2e15), "", capsys),
                    "far.obj: mesh: vertices lie up to 2e+15 m from the origin, where double precision keeps only "
-                   "0.25 m between values, more than half a 0.25 m cell; move the level within 1.126e+15 m")
+                   "0.25 m between values, more than half the cell of 0.25 m; move the level within 1.126e+15 m")
