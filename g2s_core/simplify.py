@@ -202,10 +202,10 @@ def _from_whole_forest(forest: nx.DiGraph, whole_forest: WholeForest) -> nx.DiGr
     """The structure :func:`simplify_forest` builds, from the answer of a predicate's whole-forest path."""
     arrays = forest_arrays(forest)
     kept, added, loop = whole_forest(arrays)
-    ids, keep = arrays.ids.tolist(), dict(zip(arrays.ids.tolist(), kept.tolist()))
+    ids, both = arrays.ids.tolist(), kept[added].all(axis=1)  # both: the added edges whose ends both stay
+    keep, added, loop = dict(zip(ids, kept.tolist())), added[both], loop[both]
     # the forest's edges whose ends both stay, in its order, then the added edges whose ends both stay, in theirs
     edges = [(a, b, dict(data)) for a, below in forest._succ.items() if keep[a] for b, data in below.items() if keep[b]]
-    added, loop = added[kept[added].all(axis=1)], loop[kept[added].all(axis=1)]
     offset = arrays.points[added[:, 0]] - arrays.points[added[:, 1]]  # the squares summed in _length's order
     lengths = np.sqrt(offset[:, 0] * offset[:, 0] + offset[:, 1] * offset[:, 1] + offset[:, 2] * offset[:, 2]).tolist()
     edges.extend((a, c, {"weight": length, "loop": True} if is_loop else {"weight": length})
