@@ -83,6 +83,11 @@ class _Solids:
         """The convex hull of ``points`` (k, 3), metres."""
         self.parts.append(trimesh.convex.convex_hull(np.asarray(points, dtype=np.float64)))
 
+    def rock(self, rng: np.random.Generator, p: np.ndarray, spread: float, y0: float, y1: float) -> None:
+        """A rock: the hull of 8 points scattered round plan point ``p`` (x, z) with a standard deviation of
+        ``spread`` m, at heights uniform in [y0, y1]."""
+        self.hull(np.concatenate([p + rng.normal(0, spread, size=(8, 2)), rng.uniform(y0, y1, (8, 1))], axis=1)[:, [0, 2, 1]])
+
     def box(self, x0: float, x1: float, y0: float, y1: float, z0: float, z1: float) -> None:
         """An axis-aligned box over [x0, x1] x [y0, y1] x [z0, z1]."""
         self.hull(np.array([[x, y, z] for x in (x0, x1) for y in (y0, y1) for z in (z0, z1)]))
@@ -237,8 +242,7 @@ def _rock_or_palm(s: _Solids, rng: np.random.Generator, p: np.ndarray, top: floa
     U(*rock) m high) or, as often, a palm's trunk (an octagon ``trunk`` m in radius, ``height`` m above the ground)."""
     if rng.random() < 0.5:
         size = rng.uniform(*rock)
-        s.hull(np.concatenate([p + rng.normal(0, size / 2, size=(8, 2)), rng.uniform(top - 0.2, top + size, (8, 1))],
-                              axis=1)[:, [0, 2, 1]])
+        s.rock(rng, p, size / 2, top - 0.2, top + size)
     else:
         ring = np.linspace(0, 2 * math.pi, 8, endpoint=False)
         s.prism(p + trunk * np.stack([np.cos(ring), np.sin(ring)], 1), top - 0.5, top + height)
@@ -779,8 +783,7 @@ def mine(seed: int) -> trimesh.Trimesh:
         for _ in range(int(rng.integers(3, 6))):  # boulders in the cavern
             p = np.array([10.0 + 10.0 * cavern[0], 5.0 + 10.0 * cavern[1]]) + rng.uniform(-6.0, 6.0, size=2) * [1.0, 0.4]
             size = rng.uniform(0.8, 1.6)
-            s.hull(np.concatenate([p + rng.normal(0, size / 2, size=(8, 2)), rng.uniform(y - 0.2, y + size, (8, 1))],
-                                  axis=1)[:, [0, 2, 1]])
+            s.rock(rng, p, size / 2, y - 0.2, y + size)
         west = [(ladder_z[k] - 1.0 - lo_z, 2.0)] if k < levels - 1 else []  # the ladder's top
         if k > 0:
             west.append((ladder_z[k - 1] + 0.7 - lo_z, 2.5))  # the bay the ladder below starts from
@@ -1915,7 +1918,7 @@ def canyon(seed: int) -> trimesh.Trimesh:
     for _ in range(int(rng.integers(200, 260))):  # boulders clear of the stream bed
         c = np.array([rng.uniform(5.0, length - 5.0), rng.choice([rng.uniform(3.5, mid - bed), rng.uniform(mid + bed, width - 3.5)])])
         r = rng.uniform(0.4, 1.2)
-        s.hull(np.concatenate([c + rng.normal(0, r / 2, size=(8, 2)), rng.uniform(-0.3, r * 1.5, (8, 1))], axis=1)[:, [0, 2, 1]])
+        s.rock(rng, c, r / 2, -0.3, r * 1.5)
     return s.mesh()
 
 
@@ -2339,7 +2342,7 @@ def slopes(seed: int) -> trimesh.Trimesh:
         c = np.array([k * period + rng.uniform(-3.0, 3.0), rng.uniform(5.0, length - 5.0)])
         c[0] = np.clip(c[0], 3.0, 4 * period - 3.0)
         r = rng.uniform(0.5, 1.5)
-        s.hull(np.concatenate([c + rng.normal(0, r / 2, size=(8, 2)), rng.uniform(-0.3, r * 1.5, (8, 1))], axis=1)[:, [0, 2, 1]])
+        s.rock(rng, c, r / 2, -0.3, r * 1.5)
     return s.mesh()
 
 

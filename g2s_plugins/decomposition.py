@@ -897,11 +897,11 @@ def decompose(navmesh: Any, agent: Any, params: DecompositionParams, mesh: trime
     clearance = clearances(navmesh, params.obstacle_area, wall_to_wall)
     portals = navmesh.portals()
     pairs = np.asarray(portals.pairs, dtype=np.int64).reshape(-1, 2)
+    ends = np.asarray(portals.endpoints, dtype=np.float64)
     areas = np.asarray(navmesh.areas, dtype=np.float64)
-    outline = outlines(navmesh, pairs, np.asarray(portals.endpoints, dtype=np.float64), SMALL_ROOM_FOOTPRINT *
-                       (2.0 * float(agent.radius)) ** 2, SMALL_ROOM_ENCLOSURE)
-    doors = DoorWidths(mesh, np.asarray(navmesh.centres, dtype=np.float64), clearance.widest,
-                       np.asarray(portals.endpoints, dtype=np.float64), agent)
+    outline = outlines(navmesh, pairs, ends, SMALL_ROOM_FOOTPRINT * (2.0 * float(agent.radius)) ** 2,
+                       SMALL_ROOM_ENCLOSURE)
+    doors = DoorWidths(mesh, np.asarray(navmesh.centres, dtype=np.float64), clearance.widest, ends, agent)
     merged, blocked = _merge_tree(pairs, clearance.portals_open, clearance.polygons, areas,
                                   params.narrowness, params.min_region_area, outline, doors)
     n = navmesh.polygon_count

@@ -245,14 +245,15 @@ def expand_inputs(inputs: Sequence[str], exclude: Path | None = None) -> list[tu
             raise G2SError(f"{origin}: level name {name!r} is also that of {levels[name]}; rename one of the files")
         levels[name] = spec
 
+    # os.path.realpath, not Path.resolve, which raises RuntimeError on a link to itself
+    excluded = None if exclude is None else os.path.realpath(exclude)
     for item in inputs:
         path = Path(item)
         if item.startswith(SAMPLE_PREFIX):
             add(re.sub(r"[^A-Za-z0-9._-]+", "_", item[len(SAMPLE_PREFIX):]).strip("_"), item, item)
         elif path.is_dir():
-            # os.path.realpath, not Path.resolve, which raises RuntimeError on a link to itself
             found = [p for p in _mesh_files(path)
-                     if exclude is None or not Path(os.path.realpath(p)).is_relative_to(os.path.realpath(exclude))]
+                     if excluded is None or not Path(os.path.realpath(p)).is_relative_to(excluded)]
             if not found:
                 raise G2SError(f"{item}: no mesh files in this folder (expected {', '.join(SUPPORTED_SUFFIXES)})")
             for file in found:
@@ -302,11 +303,12 @@ def make_pairs(
         source = str(config_path)
         name = Path(config_path).stem
         found = find_config(config_path)
+        real = os.path.realpath(found)
         if name in seen:
-            if seen[name][1] == os.path.realpath(found):  # the same config twice, as a level given twice: its pairs once
+            if seen[name][1] == real:  # the same config twice, as a level given twice: its pairs once
                 continue
             raise G2SError(f"{source}: config name {name!r} is also that of {seen[name][0]}; rename one of the files")
-        seen[name] = source, os.path.realpath(found)
+        seen[name] = source, real
         raw = with_evaluators(load_raw_config(found), evaluators)
         config = parse_config(raw, source=source)
         pipeline.plan(config, registry, source=source)
