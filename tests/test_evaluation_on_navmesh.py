@@ -7,12 +7,15 @@ import math
 import networkx as nx
 import numpy as np
 import pytest
+import trimesh
 
 from g2s_core import pipeline
-from g2s_core.config import PRESETS_DIR, load_raw_config, parse_config
+from g2s_core.config import PRESETS_DIR, AgentConfig, load_raw_config, parse_config
 from g2s_core.mesh import load_mesh, mesh_sha256
 from g2s_core.registry import Registry
 from g2s_plugins import evaluation, traffic
+from g2s_plugins._raycasting import AgentShape
+from g2s_plugins.graph_builders import sampling
 from g2s_plugins.graph_builders import navmesh as navmesh_builder
 from g2s_plugins.recast import build_navmesh
 from g2s_plugins.samples import levels as samples
@@ -118,3 +121,36 @@ def test_the_sampling_route_is_carried_to_the_polygons_the_samples_stand_on(regi
     quality = evaluation.evaluate(result)
     assert -1 <= quality.rho_navmesh <= 1 and -1 <= quality.rho_navmesh_ceiling <= 1
     assert quality.navmesh_area_left_out == 0.0  # every polygon has a sample on or near it
+
+
+def floors_joined_by_a_ramp(degrees: float) -> tuple[trimesh.Trimesh, np.ndarray]:
+    """Two floors 6 x 4 m (slabs with tops at y = 0 and y = 2 m) joined along x by a 4 m wide ramp of ``degrees``,
+    and the (2,3) middles of the two floors."""
+    run = 2.0 / math.tan(math.radians(degrees))
+    middles = np.array([[-3.0, 0.0, 0.0], [run + 3.0, 2.0, 0.0]])
+    slabs = [trimesh.creation.box(extents=(6.0, 0.2, 4.0), transform=trimesh.transformations.translation_matrix(m - [0, 0.1, 0]))
+             for m in middles]
+    ramp = trimesh.Trimesh(vertices=[[0, 0, -2], [run, 2, -2], [run, 2, 2], [0, 0, 2]], faces=[[0, 2, 1], [0, 3, 2]])
+    return trimesh.util.concatenate([*slabs, ramp]), middles
+
+
+@pytest.mark.parametrize("degrees, default_grid_joins", [(33.0, True), (40.0, False), (44.0, False)])
+def test_the_reference_navmesh_cuts_slopes_under_max_slope_that_the_sampler_walks(degrees, default_grid_joins):
+    # Recast's ledge filter drops a span whose walkable neighbours differ in height by more than the climb: on the
+    # navmesh builder's default grid (cells 0.25 m, climb 3 cells of 0.125 m) a slope that rises more than 0.375 m
+    # across two cells, steeper than atan(0.375 / 0.5) = 36.9 degrees (where the cells' rounding falls worst),
+    # under the presets' 45. The sampler walks up to the agent's 45 degrees, and so does a grid of 0.125 m cells
+    # (limit atan(0.375 / 0.25) = 56.3 degrees). docs/analysis_quality.md, "The sampling route on slopes".
+    mesh, ends = floors_joined_by_a_ramp(degrees)
+    agent = AgentConfig()
+    assert agent.max_slope == 45.0 and agent.radius == 0.5 and agent.max_climb == 0.4
+    sampled = sampling.build_sampled_graph(mesh, sampling.Params(), AgentShape.from_config(agent))
+    nearest = [min(sampled, key=lambda n: math.dist(sampled.nodes[n]["pos"], end)) for end in ends]
+    assert [sampled.nodes[n]["pos"][1] for n in nearest] == pytest.approx(ends[:, 1])  # one on each floor
+    assert nx.has_path(sampled, *nearest)
+    for params, joins in ((navmesh_builder.Params(), default_grid_joins), (navmesh_builder.Params(cell_size=0.125), True)):
+        navmesh = build_navmesh(mesh.vertices, mesh.faces, agent, params)
+        polygons = evaluation.polygons_under(navmesh, ends)
+        assert (polygons >= 0).all()
+        graph = navmesh_builder.navmesh_graph(navmesh, agent, params.max_edge_gap)
+        assert nx.has_path(graph, *polygons.tolist()) is joins, params.cell_size
