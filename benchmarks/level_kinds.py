@@ -2536,10 +2536,12 @@ def _gable(s: _Solids, x0: float, x1: float, z0: float, z1: float, y: float) -> 
 def rooftops(seed: int) -> trimesh.Trimesh:
     """A rooftop run with no street: eight rows of terraced buildings along x (7-10 buildings 8-14 m wide, 12-16 m
     deep, sharing walls), rows 3-5 m apart (alleys with nothing in them). Roofs are flat, 8-20 m up (a row starts at
-    11-17 m); along a row each roof is 0.1-0.35 m above or below the last (toward 14 m seven times in ten) (a step under the presets' 0.4 m climb) or, one time in four,
-    1-2.5 m (a drop, climbed by a flight 1.6 m wide against the higher wall in three of four); one roof in eight
+    11-17 m); along a row each roof is 0.1-0.35 m above or below the last (a step under the presets' 0.4 m climb)
+    or, one time in four, 1-2.5 m (a drop, climbed by a flight 1.6 m wide against the higher wall in three of
+    four), toward 14 m seven times in ten, so facing roofs of two rows are near in height; one roof in eight
     is gabled at 50 degrees (nothing to walk on). Across each alley 5-8 planks 1.8 m wide join facing flat roofs
-    less than 2.5 m apart in height. On the roofs: chimneys, air-conditioning units, water tanks, skylights.
+    less than 2.5 m apart in height. On the roofs: chimneys, air-conditioning units, water tanks under cones and
+    ridged skylights (no flat top out of reach).
     """
     rng = np.random.default_rng(seed)
     s = _Solids()
@@ -2570,11 +2572,14 @@ def rooftops(seed: int) -> trimesh.Trimesh:
                     s.box(px, px + 0.9, h, h + 1.6, pz, pz + 0.9)
                 elif kind == 1:  # air-conditioning unit
                     s.box(px, px + 1.6, h, h + 1.2, pz, pz + 1.0)
-                elif kind == 2:  # water tank
+                elif kind == 2:  # water tank under a cone at 50 degrees (a first draft's flat top was floor out of reach)
                     a = np.linspace(0, 2 * math.pi, 10, endpoint=False)
-                    s.prism(np.array([px + 1.0, pz + 1.0]) + 1.0 * np.stack([np.cos(a), np.sin(a)], 1), h, h + 2.5)
-                else:  # skylight
-                    s.box(px, px + 1.4, h, h + 0.7, pz, pz + 1.4)
+                    ring = np.stack([px + 1.0 + np.cos(a), np.zeros(10), pz + 1.0 + np.sin(a)], 1)
+                    s.hull(np.concatenate([ring + [0.0, h, 0.0], ring + [0.0, h + 2.5, 0.0],
+                                           [[px + 1.0, h + 2.5 + math.tan(math.radians(50.0)), pz + 1.0]]]))
+                else:  # skylight, ridged at 50 degrees
+                    s.hull(np.array([[x, h, z] for x in (px, px + 1.4) for z in (pz, pz + 1.4)]
+                                    + [[x, h + 0.7 * math.tan(math.radians(50.0)), pz + 0.7] for x in (px, px + 1.4)]))
         for (x0, x1, z0, z1, h, gabled), (_, _, _, _, h2, gabled2) in pairwise(row):
             if gabled or gabled2 or not 0.4 < abs(h2 - h) or rng.random() < 0.25:
                 continue
@@ -2600,7 +2605,8 @@ def flooded(seed: int) -> trimesh.Trimesh:
     them (the water is nothing to walk on). Each block is one building mass 9-15 m high under a gabled roof
     (:func:`_gable`), ringed by a pavement 2.4-2.8 m wide, 0.15 m up, broken in 0-2 places where it has
     collapsed (a gap 1.5-3 m long); lamp posts on the pavements' kerbs every 12-16 m. Duckboards 1.8 m wide cross
-    the streets between facing pavements, 1-2 per street side in 80 % of them. One block in four has a shop
+    the streets between facing pavements, 1-2 per street side in 80 % of them, landing at least 1 m from a collapse
+    or a lamp post (a first draft landed some on a collapse, stranding them). One block in four has a shop
     (6-9 x 6 m) entered from its pavement through a 1.6 m door, its floor 0.3 m above the pavement, a counter
     inside.
     """
@@ -2617,6 +2623,12 @@ def flooded(seed: int) -> trimesh.Trimesh:
         zs.append((z, z + d))
         z += d + rng.uniform(9.0, 11.0)
     pave = rng.uniform(2.4, 2.8)
+    kept_clear: list[tuple[float, float, float, float]] = []  # plans of collapses and lamp posts, 1 m round them
+
+    def clear(x0: float, x1: float, z0: float, z1: float) -> bool:
+        """Whether the plan [x0, x1] x [z0, z1] keeps out of every rectangle in ``kept_clear``."""
+        return not any(x0 < h[1] and h[0] < x1 and z0 < h[3] and h[2] < z1 for h in kept_clear)
+
     for bx0, bx1 in xs:
         for bz0, bz1 in zs:
             x0, x1, z0, z1 = bx0 + pave, bx1 - pave, bz0 + pave, bz1 - pave  # the building inside its pavement
@@ -2625,10 +2637,11 @@ def flooded(seed: int) -> trimesh.Trimesh:
             if rng.random() < 0.25:
                 w = rng.uniform(6.0, 9.0)
                 sx = rng.uniform(x0 + 2.0, x1 - w - 2.0)
-                shops.append((sx, sx + w, z0 + 0.2, z0 + 6.2))
+                shops.append((sx, sx + w, z0, z0 + 6.2))  # the mass stops at the front wall, door and all
                 s.box(sx, sx + w, -1.0, 0.45, z0, z0 + 6.2)  # the shop's floor, 0.3 m above the pavement
                 s.wall((sx, z0 + 0.1), (sx + w, z0 + 0.1), 0.45, height, [(w / 2 - 0.8, 1.6)])
                 s.box(sx + 1.0, sx + w - 1.0, 0.45, 1.5, z0 + 4.6, z0 + 5.2)  # the counter
+                kept_clear.append((sx + w / 2 - 2.0, sx + w / 2 + 2.0, bz0 - 1.0, z0))  # the pavement at its door
             s.ground(x0, x1, z0, z1, height - 1.0, shops, thickness=height)
             _gable(s, x0 - 0.3, x1 + 0.3, z0 - 0.3, z1 + 0.3, height)
             sides = [((bx0, bx1), (bz0, bz0 + pave), 0), ((bx0, bx1), (bz1 - pave, bz1), 0),
@@ -2636,10 +2649,17 @@ def flooded(seed: int) -> trimesh.Trimesh:
             collapsed = rng.choice(4, size=int(rng.integers(0, 3)), replace=False)
             for k, ((px0, px1), (pz0, pz1), along) in enumerate(sides):
                 lo, hi = (px0, px1) if along == 0 else (pz0, pz1)
+
+                def plan(a: float, b: float) -> tuple[float, float, float, float]:
+                    """The plan of this pavement between a and b along it, 1 m wider each way."""
+                    return (a - 1.0, b + 1.0, pz0 - 1.0, pz1 + 1.0) if along == 0 else (px0 - 1.0, px1 + 1.0, a - 1.0, b + 1.0)
+
                 cuts = [lo, hi]
                 if k in collapsed:
-                    c = rng.uniform(lo + 2.0, hi - 5.0)
-                    cuts = [lo, c, c + rng.uniform(1.5, 3.0), hi]
+                    c, gap = rng.uniform(lo + 2.0, hi - 5.0), rng.uniform(1.5, 3.0)
+                    if clear(*plan(c, c + gap)):  # never in front of a shop's door
+                        cuts = [lo, c, c + gap, hi]
+                        kept_clear.append(plan(c, c + gap))
                 for c0, c1 in zip(cuts[0::2], cuts[1::2]):
                     if along == 0:
                         s.box(c0, c1, -1.0, 0.15, pz0, pz1)
@@ -2647,7 +2667,8 @@ def flooded(seed: int) -> trimesh.Trimesh:
                         s.box(px0, px1, -1.0, 0.15, c0, c1)
                 kerb = {0: pz0 + 0.2 if k == 0 else pz1 - 0.5, 1: px0 + 0.2 if k == 2 else px1 - 0.5}[along]
                 for p in np.arange(lo + rng.uniform(3.0, 8.0), hi - 3.0, rng.uniform(12.0, 16.0)):
-                    if not any(c0 - 0.5 < p < c1 + 0.5 for c0, c1 in zip(cuts[1::2], cuts[2::2])):
+                    if clear(*plan(p, p + 0.3)):
+                        kept_clear.append(plan(p, p + 0.3))
                         if along == 0:
                             s.box(p, p + 0.3, 0.15, 4.0, kerb, kerb + 0.3)
                         else:
@@ -2655,13 +2676,19 @@ def flooded(seed: int) -> trimesh.Trimesh:
     for (a0, a1), (b0, b1) in pairwise(xs):  # duckboards across the streets along z, between blocks side by side
         for z0, z1 in zs:
             for _ in range(int(rng.integers(1, 3)) if rng.random() < 0.8 else 0):
-                zc = rng.uniform(z0 + 4.0, z1 - 4.0)
-                s.box(a1 - 0.3, b0 + 0.3, -0.5, 0.15, zc - 0.9, zc + 0.9)
+                for _ in range(20):  # landing clear of collapses and lamp posts
+                    zc = rng.uniform(z0 + 4.0, z1 - 4.0)
+                    if clear(a1 - 0.3, b0 + 0.3, zc - 0.9, zc + 0.9):
+                        s.box(a1 - 0.3, b0 + 0.3, -0.5, 0.15, zc - 0.9, zc + 0.9)
+                        break
     for (a0, a1), (b0, b1) in pairwise(zs):  # and across the streets along x
         for x0, x1 in xs:
             for _ in range(int(rng.integers(1, 3)) if rng.random() < 0.8 else 0):
-                xc = rng.uniform(x0 + 4.0, x1 - 4.0)
-                s.box(xc - 0.9, xc + 0.9, -0.5, 0.15, a1 - 0.3, b0 + 0.3)
+                for _ in range(20):
+                    xc = rng.uniform(x0 + 4.0, x1 - 4.0)
+                    if clear(xc - 0.9, xc + 0.9, a1 - 0.3, b0 + 0.3):
+                        s.box(xc - 0.9, xc + 0.9, -0.5, 0.15, a1 - 0.3, b0 + 0.3)
+                        break
     return s.mesh()
 
 
