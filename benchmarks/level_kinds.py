@@ -1,4 +1,4 @@
-"""Level kinds of the fifth to ninth held-out rounds (issue 9): generators no preset setting was made on.
+"""Level kinds of the fifth to tenth held-out rounds (issue 9): generators no preset setting was made on.
 
 Fifth round: six kinds, each about 1,000 navmesh polygons with the presets' agent (radius 0.5 m, height 2 m, climb 0.4 m):
 ``subway`` (platforms, track pits 1.2 m lower, stairs up to two concourses), ``archipelago`` (islands joined by
@@ -47,6 +47,14 @@ through the 45-degree limit), ``islets`` (scores of small islands out of reach) 
 m wide and about 200 m long). Recast reads surfaces, not solids: a ceiling laid on the tops of solids leaves those
 tops floor under it (:func:`_lid` stops 1 m above them), and the floor stops under every hollow solid one could
 stand inside (the catacombs' rock, the bunker's machines, the paddock's trailers).
+
+Tenth round: six more kinds, 545-909 navmesh polygons with that agent (seeds 0-2): ``helix`` (a car park that is one
+helical ramp of six turns round a solid core), ``rooftops`` (roofs at 8-20 m joined by steps under the climb, flights
+and planks, with nothing below), ``flooded`` (a town whose streets hold no floor: pavements, duckboards, shops),
+``cave`` (chambers and tunnels on rolling ground, stalagmites, columns), ``train`` (a station of three platforms
+with two trains of carriages one walks through) and ``ruins`` (three storeys joined only by slabs fallen through
+holes, some too steep, and one stairwell). The same rule again: the top of a solid under a roof is floor unless
+it stops 1 m short (:func:`_gable`), and a flat top out of reach (a tank's, a skylight's) is floor of its own.
 
 Run: ``.venv/bin/python benchmarks/level_kinds.py OUT_DIR [--kinds subway forest] [--seeds 0 1 2]`` writes
 ``OUT_DIR/<kind>_s<seed>.obj``, the files ``benchmarks/analysis_quality.py --levels`` takes (which also takes the
