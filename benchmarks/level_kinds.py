@@ -2533,6 +2533,11 @@ def helix(seed: int) -> trimesh.Trimesh:
     return s.mesh()
 
 
+def _clear(x0: float, x1: float, z0: float, z1: float, rects: list[tuple[float, float, float, float]]) -> bool:
+    """Whether the plan [x0, x1] x [z0, z1] keeps out of every rectangle (x0, x1, z0, z1) of ``rects``."""
+    return not any(x0 < h[1] and h[0] < x1 and z0 < h[3] and h[2] < z1 for h in rects)
+
+
 def _gable(s: _Solids, x0: float, x1: float, z0: float, z1: float, y: float) -> None:
     """A roof over [x0, x1] x [z0, z1] from height ``y`` up, ridged along x at 50 degrees: nothing on it is floor.
     As under :func:`_lid`, the top of a solid under it is floor with the roof's slopes as its ceiling unless it stops
@@ -2633,10 +2638,6 @@ def flooded(seed: int) -> trimesh.Trimesh:
     pave = rng.uniform(2.4, 2.8)
     kept_clear: list[tuple[float, float, float, float]] = []  # plans of collapses and lamp posts, 1 m round them
 
-    def clear(x0: float, x1: float, z0: float, z1: float) -> bool:
-        """Whether the plan [x0, x1] x [z0, z1] keeps out of every rectangle in ``kept_clear``."""
-        return not any(x0 < h[1] and h[0] < x1 and z0 < h[3] and h[2] < z1 for h in kept_clear)
-
     for bx0, bx1 in xs:
         for bz0, bz1 in zs:
             x0, x1, z0, z1 = bx0 + pave, bx1 - pave, bz0 + pave, bz1 - pave  # the building inside its pavement
@@ -2665,7 +2666,7 @@ def flooded(seed: int) -> trimesh.Trimesh:
                 cuts = [lo, hi]
                 if k in collapsed:
                     c, gap = rng.uniform(lo + 2.0, hi - 5.0), rng.uniform(1.5, 3.0)
-                    if clear(*plan(c, c + gap)):  # never in front of a shop's door
+                    if _clear(*plan(c, c + gap), kept_clear):  # never in front of a shop's door
                         cuts = [lo, c, c + gap, hi]
                         kept_clear.append(plan(c, c + gap))
                 for c0, c1 in zip(cuts[0::2], cuts[1::2]):
@@ -2675,7 +2676,7 @@ def flooded(seed: int) -> trimesh.Trimesh:
                         s.box(px0, px1, -1.0, 0.15, c0, c1)
                 kerb = {0: pz0 + 0.2 if k == 0 else pz1 - 0.5, 1: px0 + 0.2 if k == 2 else px1 - 0.5}[along]
                 for p in np.arange(lo + rng.uniform(3.0, 8.0), hi - 3.0, rng.uniform(12.0, 16.0)):
-                    if clear(*plan(p, p + 0.3)):
+                    if _clear(*plan(p, p + 0.3), kept_clear):
                         kept_clear.append(plan(p, p + 0.3))
                         if along == 0:
                             s.box(p, p + 0.3, 0.15, 4.0, kerb, kerb + 0.3)
@@ -2686,7 +2687,7 @@ def flooded(seed: int) -> trimesh.Trimesh:
             for _ in range(int(rng.integers(1, 3)) if rng.random() < 0.8 else 0):
                 for _ in range(20):  # landing clear of collapses and lamp posts
                     zc = rng.uniform(z0 + 4.0, z1 - 4.0)
-                    if clear(a1 - 0.3, b0 + 0.3, zc - 0.9, zc + 0.9):
+                    if _clear(a1 - 0.3, b0 + 0.3, zc - 0.9, zc + 0.9, kept_clear):
                         s.box(a1 - 0.3, b0 + 0.3, -0.5, 0.15, zc - 0.9, zc + 0.9)
                         break
     for (a0, a1), (b0, b1) in pairwise(zs):  # and across the streets along x
@@ -2694,7 +2695,7 @@ def flooded(seed: int) -> trimesh.Trimesh:
             for _ in range(int(rng.integers(1, 3)) if rng.random() < 0.8 else 0):
                 for _ in range(20):
                     xc = rng.uniform(x0 + 4.0, x1 - 4.0)
-                    if clear(xc - 0.9, xc + 0.9, a1 - 0.3, b0 + 0.3):
+                    if _clear(xc - 0.9, xc + 0.9, a1 - 0.3, b0 + 0.3, kept_clear):
                         s.box(xc - 0.9, xc + 0.9, -0.5, 0.15, a1 - 0.3, b0 + 0.3)
                         break
     return s.mesh()
@@ -2880,12 +2881,8 @@ def ruins(seed: int) -> trimesh.Trimesh:
     well_x, well_z = 1.0, 1.0
     well = (well_x, well_x + 4.0, well_z + 2.0, well_z + _well_length(storey))
     _switchback(s, well_x, well_z, 0.0, storey)
-    open_over: dict[int, list[tuple[float, float, float, float]]] = {0: []}  # each storey's holes, and the stairwell's plan
-    clear = (0.0, well_x + 5.0, 0.0, well[3] + 1.0)
-
-    def free(x0: float, x1: float, z0: float, z1: float, k: int) -> bool:
-        """Whether [x0, x1] x [z0, z1] on storey k keeps out of its holes and of the stairwell."""
-        return not any(x0 < h[1] and h[0] < x1 and z0 < h[3] and h[2] < z1 for h in [clear, *open_over[k]])
+    open_over: dict[int, list[tuple[float, float, float, float]]] = {0: []}  # each storey's holes (storey 1's: the well too)
+    stairwell = (0.0, well_x + 5.0, 0.0, well[3] + 1.0)  # kept clear of inner walls and rubble
     for k in (1, 2):
         y = k * storey
         holes: list[tuple[float, float, float, float]] = [well] if k == 1 else []
@@ -2897,7 +2894,7 @@ def ruins(seed: int) -> trimesh.Trimesh:
             long, across = rng.uniform(8.0, 12.0), rng.uniform(4.0, 7.0)
             w, d = (long, across) if along_x else (across, long)
             x0, z0 = rng.uniform(2.0, size_x - w - 2.0), rng.uniform(2.0, size_z - d - 2.0)
-            if any(x0 < h[1] + 2.0 and h[0] < x0 + w + 2.0 and z0 < h[3] + 2.0 and h[2] < z0 + d + 2.0 for h in holes):
+            if not _clear(x0 - 2.0, x0 + w + 2.0, z0 - 2.0, z0 + d + 2.0, holes):
                 continue
             holes.append((x0, x0 + w, z0, z0 + d))
             angle = math.radians(rng.uniform(18.0, 35.0) if ramps < 2 else rng.uniform(18.0, 60.0))
@@ -2931,15 +2928,15 @@ def ruins(seed: int) -> trimesh.Trimesh:
             n, high = rng.uniform(4.0, 12.0), y + storey - 0.3 if k < 2 else y + rng.uniform(1.0, 3.0)
             if rng.random() < 0.5:
                 z, x = float(rng.choice(np.arange(6.0, size_z - 3.0, 6.0))), rng.uniform(0.0, size_x - n)
-                if free(x, x + n, z - 0.1, z + 0.1, k):
+                if _clear(x, x + n, z - 0.1, z + 0.1, [stairwell, *open_over[k]]):
                     s.wall((x, z), (x + n, z), y, high)
             else:
                 x, z = float(rng.choice(np.arange(6.0, size_x - 3.0, 6.0))), rng.uniform(0.0, size_z - n)
-                if free(x - 0.1, x + 0.1, z, z + n, k):
+                if _clear(x - 0.1, x + 0.1, z, z + n, [stairwell, *open_over[k]]):
                     s.wall((x, z), (x, z + n), y, high)
         for _ in range(int(rng.integers(12, 21))):  # rubble
             r, p = rng.uniform(0.6, 1.6), rng.uniform([2.0, 2.0], [size_x - 2.0, size_z - 2.0])
-            if free(p[0] - r, p[0] + r, p[1] - r, p[1] + r, k):
+            if _clear(p[0] - r, p[0] + r, p[1] - r, p[1] + r, [stairwell, *open_over[k]]):
                 s.rock(rng, p, r / 2, y - 0.3, y + r)
     for _ in range(int(rng.integers(10, 16))):  # rubble in the yard
         side = rng.integers(0, 4)
