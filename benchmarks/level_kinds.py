@@ -1,4 +1,4 @@
-"""Level kinds of the fifth to ninth held-out rounds (issue 9): generators no preset setting was made on.
+"""Level kinds of the fifth to tenth held-out rounds (issue 9): generators no preset setting was made on.
 
 Fifth round: six kinds, each about 1,000 navmesh polygons with the presets' agent (radius 0.5 m, height 2 m, climb 0.4 m):
 ``subway`` (platforms, track pits 1.2 m lower, stairs up to two concourses), ``archipelago`` (islands joined by
@@ -47,6 +47,14 @@ through the 45-degree limit), ``islets`` (scores of small islands out of reach) 
 m wide and about 200 m long). Recast reads surfaces, not solids: a ceiling laid on the tops of solids leaves those
 tops floor under it (:func:`_lid` stops 1 m above them), and the floor stops under every hollow solid one could
 stand inside (the catacombs' rock, the bunker's machines, the paddock's trailers).
+
+Tenth round: six more kinds, 545-909 navmesh polygons with that agent (seeds 0-2): ``helix`` (a car park that is one
+helical ramp of six turns round a solid core), ``rooftops`` (roofs at 8-20 m joined by steps under the climb, flights
+and planks, with nothing below), ``flooded`` (a town whose streets hold no floor: pavements, duckboards, shops),
+``cave`` (chambers and tunnels on rolling ground, stalagmites, columns), ``train`` (a station of three platforms
+with two trains of carriages one walks through) and ``ruins`` (three storeys joined only by slabs fallen through
+holes, some too steep, and one stairwell). The same rule again: the top of a solid under a roof is floor unless
+it stops 1 m short (:func:`_gable`), and a flat top out of reach (a tank's, a skylight's) is floor of its own.
 
 Run: ``.venv/bin/python benchmarks/level_kinds.py OUT_DIR [--kinds subway forest] [--seeds 0 1 2]`` writes
 ``OUT_DIR/<kind>_s<seed>.obj``, the files ``benchmarks/analysis_quality.py --levels`` takes (which also takes the
@@ -2467,6 +2475,480 @@ def catacombs(seed: int) -> trimesh.Trimesh:
     return s.mesh()
 
 
+def _sector(r0: float, r1: float, a0: float, a1: float) -> np.ndarray:
+    """The plan (4, 2) of the ring sector between radii r0 < r1 and angles a0 < a1 (radians) about the origin,
+    its arcs cut as chords."""
+    return np.array([[r * math.cos(a), r * math.sin(a)] for r, a in ((r0, a0), (r1, a0), (r1, a1), (r0, a1))])
+
+
+def helix(seed: int) -> trimesh.Trimesh:
+    """A multi-storey car park that is one helical ramp: a deck from radius 9 m (a solid core) to 21-22 m that
+    climbs 3.2 m a turn (a slope of about 2 degrees mid-deck) for six turns, in pieces of 7.5 degrees; a driving
+    lane on the inner 7 m, parking bays on the outer side with cars (4.2 x 1.8 x 1.5 m) in 55-75 % of them,
+    pillars 0.6 m square between lane and bays every 15 degrees, a parapet 1.1 m high on the outer edge. The deck
+    starts on the ground (a plaza 80 m square round the core, which is floor under the first turn where it has
+    head room) and ends 19.2 m up on a flat landing of 60 degrees joined to the core's flat top (the roof); no
+    stairs: a walker goes the whole spiral.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    core, lane_out, outer, pitch, turns, pieces = 9.0, 16.0, rng.uniform(21.0, 22.0), 3.2, 6, 48
+    step = 2 * math.pi / pieces
+    occupied = rng.uniform(0.55, 0.75, size=turns)  # each turn's share of occupied bays
+    top = pitch * turns
+    for k in range(pieces):  # the plaza round the core, as sectors out to the square's edge (its corners on cut lines)
+        a0, a1 = k * step, (k + 1) * step
+        far = [40.0 / max(abs(math.cos(a)), abs(math.sin(a))) for a in (a0, a1)]
+        plan = np.array([[core * math.cos(a0), core * math.sin(a0)], [far[0] * math.cos(a0), far[0] * math.sin(a0)],
+                         [far[1] * math.cos(a1), far[1] * math.sin(a1)], [core * math.cos(a1), core * math.sin(a1)]])
+        s.prism(plan, -0.5, 0.0)
+    ring = np.array([[core * math.cos(k * step), core * math.sin(k * step)] for k in range(pieces)])
+    s.prism(ring, -0.5, top)  # the core, its top the roof
+    for t in range(turns):
+        for k in range(pieces):
+            a0, a1 = k * step, (k + 1) * step
+            y0, y1 = pitch * (t + k / pieces), pitch * (t + (k + 1) / pieces)
+            plan = _sector(core, outer, a0, a1)
+            s.hull(np.array([[x, y + d, z] for (x, z), y in zip(plan, (y0, y0, y1, y1)) for d in (0.0, -0.3)]))
+            wall = _sector(outer - 0.2, outer, a0, a1)
+            s.hull(np.array([[x, y + d, z] for (x, z), y in zip(wall, (y0, y0, y1, y1)) for d in (0.0, 1.1)]))
+            if k % 2 == 0:  # a pillar at the lane's outer edge, up to the deck above
+                c = np.array([lane_out * math.cos(a0), lane_out * math.sin(a0)])
+                s.prism(c + np.array([[-0.3, -0.3], [0.3, -0.3], [0.3, 0.3], [-0.3, 0.3]]), y0 - 0.3, y0 + pitch - 0.3)
+            a = a0 + step / 2  # a bay a piece: 2.4 m of arc mid-bay, a car 1.8 m wide
+            if rng.random() < occupied[t] and not (t == 0 and k < 3):
+                y = pitch * (t + a / (2 * math.pi))
+                radial, tangent = np.array([math.cos(a), math.sin(a)]), np.array([-math.sin(a), math.cos(a)])
+                c = radial * (lane_out + 0.5 + outer - 0.2) / 2
+                plan = np.array([c + radial * dr * 2.1 + tangent * dt * 0.9 for dr, dt in ((-1, -1), (1, -1), (1, 1), (-1, 1))])
+                s.prism(plan, y - 0.3, y + 1.5)
+    landing = 8
+    for k in range(landing):  # the landing at the top, over the first sixth of the last turn
+        s.prism(_sector(core - 0.01, outer, k * step, (k + 1) * step), top - 0.3, top)
+        s.prism(_sector(outer - 0.2, outer, k * step, (k + 1) * step), top, top + 1.1)
+    for _ in range(int(rng.integers(12, 20))):  # bollards on the plaza
+        a, r = rng.uniform(0, 2 * math.pi), rng.uniform(outer + 3.0, 36.0)
+        x, z = r * math.cos(a), r * math.sin(a)
+        s.box(x - 0.15, x + 0.15, 0.0, 1.0, z - 0.15, z + 0.15)
+    return s.mesh()
+
+
+def _clear(x0: float, x1: float, z0: float, z1: float, rects: list[tuple[float, float, float, float]]) -> bool:
+    """Whether the plan [x0, x1] x [z0, z1] keeps out of every rectangle (x0, x1, z0, z1) of ``rects``."""
+    return not any(x0 < h[1] and h[0] < x1 and z0 < h[3] and h[2] < z1 for h in rects)
+
+
+def _gable(s: _Solids, x0: float, x1: float, z0: float, z1: float, y: float) -> None:
+    """A roof over [x0, x1] x [z0, z1] from height ``y`` up, ridged along x at 50 degrees: nothing on it is floor.
+    As under :func:`_lid`, the top of a solid under it is floor with the roof's slopes as its ceiling unless it stops
+    short of ``y`` by less than the agent's height: a solid under a gable stops 1 m below it."""
+    ridge = y + (z1 - z0) / 2 * math.tan(math.radians(50.0))
+    s.hull(np.array([[x, y, z] for x in (x0, x1) for z in (z0, z1)] + [[x, ridge, (z0 + z1) / 2] for x in (x0, x1)]))
+
+
+def rooftops(seed: int) -> trimesh.Trimesh:
+    """A rooftop run with no street: eight rows of terraced buildings along x (7-10 buildings 8-14 m wide, 12-16 m
+    deep, sharing walls), rows 3-5 m apart (alleys with nothing in them). Roofs are flat, 8-20 m up (a row starts at
+    11-17 m); along a row each roof is 0.1-0.35 m above or below the last (a step under the presets' 0.4 m climb)
+    or, one time in four, 1-2.5 m (a drop, climbed by a flight 1.6 m wide against the higher wall in three of
+    four), toward 14 m seven times in ten, so facing roofs of two rows are near in height; one roof in eight
+    is gabled at 50 degrees (nothing to walk on). Across each alley 5-8 planks 1.8 m wide join facing flat roofs
+    less than 2.5 m apart in height. On the roofs: chimneys, air-conditioning units, water tanks under cones and
+    ridged skylights (no flat top out of reach).
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    rows, z = [], 0.0
+    for _ in range(8):
+        depth = rng.uniform(12.0, 16.0)
+        x, h, row = rng.uniform(0.0, 6.0), rng.uniform(11.0, 17.0), []
+        for _ in range(int(rng.integers(7, 11))):
+            width = rng.uniform(8.0, 14.0)
+            gabled = rng.random() < 0.125
+            row.append((x, x + width, z, z + depth, h, gabled))
+            x += width
+            toward = 1.0 if h < 14.0 else -1.0  # back toward 14 m seven times in ten, so rows stay near each other
+            h = float(np.clip(h + (toward if rng.random() < 0.7 else -toward) * (
+                rng.uniform(0.1, 0.35) if rng.random() < 0.75 else rng.uniform(1.0, 2.5)), 8.0, 20.0))
+        rows.append(row)
+        z += depth + rng.uniform(3.0, 5.0)
+    for row in rows:
+        for x0, x1, z0, z1, h, gabled in row:
+            s.box(x0, x1, 0.0, h - 1.0 if gabled else h, z0, z1)
+            if gabled:
+                _gable(s, x0, x1, z0, z1, h)
+                continue
+            for _ in range(int(rng.integers(1, 4))):  # roof furniture at least 1 m in from the edges
+                kind = rng.integers(0, 4)
+                px, pz = rng.uniform(x0 + 1.0, x1 - 3.0), rng.uniform(z0 + 1.0, z1 - 3.0)
+                if kind == 0:  # chimney
+                    s.box(px, px + 0.9, h, h + 1.6, pz, pz + 0.9)
+                elif kind == 1:  # air-conditioning unit
+                    s.box(px, px + 1.6, h, h + 1.2, pz, pz + 1.0)
+                elif kind == 2:  # water tank under a cone at 50 degrees (a first draft's flat top was floor out of reach)
+                    a = np.linspace(0, 2 * math.pi, 10, endpoint=False)
+                    ring = np.stack([px + 1.0 + np.cos(a), np.zeros(10), pz + 1.0 + np.sin(a)], 1)
+                    s.hull(np.concatenate([ring + [0.0, h, 0.0], ring + [0.0, h + 2.5, 0.0],
+                                           [[px + 1.0, h + 2.5 + math.tan(math.radians(50.0)), pz + 1.0]]]))
+                else:  # skylight, ridged at 50 degrees
+                    s.hull(np.array([[x, h, z] for x in (px, px + 1.4) for z in (pz, pz + 1.4)]
+                                    + [[x, h + 0.7 * math.tan(math.radians(50.0)), pz + 0.7] for x in (px, px + 1.4)]))
+        for (x0, x1, z0, z1, h, gabled), (_, _, _, _, h2, gabled2) in pairwise(row):
+            if gabled or gabled2 or not 0.4 < abs(h2 - h) or rng.random() < 0.25:
+                continue
+            low, rise = min(h, h2), abs(h2 - h)  # a flight against the higher wall, climbing toward it
+            heading = np.array([1.0, 0.0]) if h2 > h else np.array([-1.0, 0.0])
+            steps = math.ceil(rise / 0.18)
+            run = steps * 0.28
+            zc = rng.uniform(z0 + 1.5, z1 - 1.5)
+            start = np.array([x1 - run, zc]) if h2 > h else np.array([x1 + run, zc])
+            s.stairs(start, heading, 1.6, low, rise, rise / steps, 0.28)
+    for north, south in pairwise(rows):  # planks across each alley
+        pairs = [(a, b) for a in north for b in south
+                 if not a[5] and not b[5] and abs(a[4] - b[4]) < 2.5 and min(a[1], b[1]) - max(a[0], b[0]) > 3.0]
+        for i in rng.choice(len(pairs), size=min(len(pairs), int(rng.integers(5, 9))), replace=False) if pairs else []:
+            a, b = pairs[i]
+            x = rng.uniform(max(a[0], b[0]) + 1.2, min(a[1], b[1]) - 1.2)
+            s.ramp(np.array([x, a[3] - 0.3]), np.array([x, b[2] + 0.3]), 1.8, a[4], b[4], thickness=0.15)
+    return s.mesh()
+
+
+def flooded(seed: int) -> trimesh.Trimesh:
+    """A flooded town: a grid of 6 x 4 blocks (22-32 x 18-26 m) between streets 9-11 m wide with no floor in
+    them (the water is nothing to walk on). Each block is one building mass 9-15 m high under a gabled roof
+    (:func:`_gable`), ringed by a pavement 2.4-2.8 m wide, 0.15 m up, broken in 0-2 places where it has
+    collapsed (a gap 1.5-3 m long); lamp posts on the pavements' kerbs every 12-16 m. Duckboards 1.8 m wide cross
+    the streets between facing pavements, 1-2 per street side in 80 % of them, landing at least 1 m from a collapse
+    or a lamp post (a first draft landed some on a collapse, stranding them). One block in four has a shop
+    (6-9 x 6 m) entered from its pavement through a 1.6 m door, its floor 0.3 m above the pavement, a counter
+    inside.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    xs, x = [], 0.0
+    for _ in range(6):
+        w = rng.uniform(22.0, 32.0)
+        xs.append((x, x + w))
+        x += w + rng.uniform(9.0, 11.0)
+    zs, z = [], 0.0
+    for _ in range(4):
+        d = rng.uniform(18.0, 26.0)
+        zs.append((z, z + d))
+        z += d + rng.uniform(9.0, 11.0)
+    pave = rng.uniform(2.4, 2.8)
+    kept_clear: list[tuple[float, float, float, float]] = []  # plans of collapses and lamp posts, 1 m round them
+
+    for bx0, bx1 in xs:
+        for bz0, bz1 in zs:
+            x0, x1, z0, z1 = bx0 + pave, bx1 - pave, bz0 + pave, bz1 - pave  # the building inside its pavement
+            height = rng.uniform(9.0, 15.0)
+            shops = []
+            if rng.random() < 0.25:
+                w = rng.uniform(6.0, 9.0)
+                sx = rng.uniform(x0 + 2.0, x1 - w - 2.0)
+                shops.append((sx, sx + w, z0, z0 + 6.2))  # the mass stops at the front wall, door and all
+                s.box(sx, sx + w, -1.0, 0.45, z0, z0 + 6.2)  # the shop's floor, 0.3 m above the pavement
+                s.wall((sx, z0 + 0.1), (sx + w, z0 + 0.1), 0.45, height, [(w / 2 - 0.8, 1.6)])
+                s.box(sx + 1.0, sx + w - 1.0, 0.45, 1.5, z0 + 4.6, z0 + 5.2)  # the counter
+                kept_clear.append((sx + w / 2 - 2.0, sx + w / 2 + 2.0, bz0 - 1.0, z0))  # the pavement at its door
+            s.ground(x0, x1, z0, z1, height - 1.0, shops, thickness=height)
+            _gable(s, x0 - 0.3, x1 + 0.3, z0 - 0.3, z1 + 0.3, height)
+            sides = [((bx0, bx1), (bz0, bz0 + pave), 0), ((bx0, bx1), (bz1 - pave, bz1), 0),
+                     ((bx0, bx0 + pave), (bz0 + pave, bz1 - pave), 1), ((bx1 - pave, bx1), (bz0 + pave, bz1 - pave), 1)]
+            collapsed = rng.choice(4, size=int(rng.integers(0, 3)), replace=False)
+            for k, ((px0, px1), (pz0, pz1), along) in enumerate(sides):
+                lo, hi = (px0, px1) if along == 0 else (pz0, pz1)
+
+                def plan(a: float, b: float) -> tuple[float, float, float, float]:
+                    """The plan of this pavement between a and b along it, 1 m wider each way."""
+                    return (a - 1.0, b + 1.0, pz0 - 1.0, pz1 + 1.0) if along == 0 else (px0 - 1.0, px1 + 1.0, a - 1.0, b + 1.0)
+
+                cuts = [lo, hi]
+                if k in collapsed:
+                    c, gap = rng.uniform(lo + 2.0, hi - 5.0), rng.uniform(1.5, 3.0)
+                    if _clear(*plan(c, c + gap), kept_clear):  # never in front of a shop's door
+                        cuts = [lo, c, c + gap, hi]
+                        kept_clear.append(plan(c, c + gap))
+                for c0, c1 in zip(cuts[0::2], cuts[1::2]):
+                    if along == 0:
+                        s.box(c0, c1, -1.0, 0.15, pz0, pz1)
+                    else:
+                        s.box(px0, px1, -1.0, 0.15, c0, c1)
+                kerb = {0: pz0 + 0.2 if k == 0 else pz1 - 0.5, 1: px0 + 0.2 if k == 2 else px1 - 0.5}[along]
+                for p in np.arange(lo + rng.uniform(3.0, 8.0), hi - 3.0, rng.uniform(12.0, 16.0)):
+                    if _clear(*plan(p, p + 0.3), kept_clear):
+                        kept_clear.append(plan(p, p + 0.3))
+                        if along == 0:
+                            s.box(p, p + 0.3, 0.15, 4.0, kerb, kerb + 0.3)
+                        else:
+                            s.box(kerb, kerb + 0.3, 0.15, 4.0, p, p + 0.3)
+    for (a0, a1), (b0, b1) in pairwise(xs):  # duckboards across the streets along z, between blocks side by side
+        for z0, z1 in zs:
+            for _ in range(int(rng.integers(1, 3)) if rng.random() < 0.8 else 0):
+                for _ in range(20):  # landing clear of collapses and lamp posts
+                    zc = rng.uniform(z0 + 4.0, z1 - 4.0)
+                    if _clear(a1 - 0.3, b0 + 0.3, zc - 0.9, zc + 0.9, kept_clear):
+                        s.box(a1 - 0.3, b0 + 0.3, -0.5, 0.15, zc - 0.9, zc + 0.9)
+                        break
+    for (a0, a1), (b0, b1) in pairwise(zs):  # and across the streets along x
+        for x0, x1 in xs:
+            for _ in range(int(rng.integers(1, 3)) if rng.random() < 0.8 else 0):
+                for _ in range(20):
+                    xc = rng.uniform(x0 + 4.0, x1 - 4.0)
+                    if _clear(xc - 0.9, xc + 0.9, a1 - 0.3, b0 + 0.3, kept_clear):
+                        s.box(xc - 0.9, xc + 0.9, -0.5, 0.15, a1 - 0.3, b0 + 0.3)
+                        break
+    return s.mesh()
+
+
+def cave(seed: int) -> trimesh.Trimesh:
+    """A limestone cave under a lid (:func:`_lid`), ground on a 1 m grid (:func:`_terrain`) 150 x 110 m: 8-11
+    chambers (ellipses 7-15 m in radius, their outlines wobbling by up to 1.5 m) joined by tunnels 3.5-5 m wide
+    along a minimum spanning tree of the chambers' centres and 1-2 more; the floor rolls (each chamber's own
+    height, -2 to 2 m, blended over 12 m, and bumps of up to 1.2 m, at most about 20 degrees) and rock rises
+    outside the open plan in a step steeper than 60 degrees to a flat top 1 m under the lid, where no agent fits.
+    In the open: 60-100 stalagmites (cones 0.3-1.0 m across the base, 1-3.5 m high), 10-18 columns from the floor
+    to the rock's top (8-sided, 0.8-2 m in radius) and 20-30 boulders.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    size_x, size_z = 150.0, 110.0
+    xs, zs = np.arange(0.0, size_x + 0.5, 1.0), np.arange(0.0, size_z + 0.5, 1.0)
+    gx, gz = np.meshgrid(xs, zs, indexing="ij")
+    wanted, centres = int(rng.integers(8, 12)), []
+    for _ in range(5000):  # rejection sampling, keeping fewer if the room runs out
+        if len(centres) == wanted:
+            break
+        c = rng.uniform([18.0, 18.0], [size_x - 18.0, size_z - 18.0])
+        if all(np.linalg.norm(c - d) > 26.0 for d in centres):
+            centres.append(c)
+    centres_a = np.array(centres)
+    radii = rng.uniform(7.0, 15.0, size=(len(centres), 2))
+    wobble = rng.uniform(0, 2 * math.pi, size=(2, 2))
+    edge = 1.5 * np.sin(gx / 9.0 + wobble[0, 0]) * np.sin(gz / 7.0 + wobble[0, 1])  # outlines wobble by 1.5 m
+    inside = np.zeros(gx.shape, dtype=bool)
+    for c, (rx, rz) in zip(centres_a, radii):
+        inside |= np.hypot((gx - c[0]) / rx, (gz - c[1]) / rz) * min(rx, rz) < min(rx, rz) + edge
+    n = len(centres)
+    dist = np.linalg.norm(centres_a[:, None] - centres_a[None], axis=2)
+    tree, joined = [], {0}
+    while len(joined) < n:  # Prim's minimum spanning tree of the centres
+        i, j = min(((i, j) for i in joined for j in range(n) if j not in joined), key=lambda p: dist[p])
+        tree.append((i, j))
+        joined.add(j)
+    extra = [(i, j) for i in range(n) for j in range(i + 1, n) if (i, j) not in tree and (j, i) not in tree]
+    extra.sort(key=lambda p: dist[p])
+    for i, j in tree + extra[:int(rng.integers(1, 3))]:
+        a, b, half = centres_a[i], centres_a[j], rng.uniform(1.75, 2.5)
+        ab = b - a
+        t = np.clip(((gx - a[0]) * ab[0] + (gz - a[1]) * ab[1]) / (ab @ ab), 0.0, 1.0)
+        inside |= np.hypot(gx - a[0] - t * ab[0], gz - a[1] - t * ab[1]) < half + 0.3 * edge
+    bases = rng.uniform(-2.0, 2.0, size=n)
+    weights = np.exp(-((gx[..., None] - centres_a[:, 0]) ** 2 + (gz[..., None] - centres_a[:, 1]) ** 2) / (2 * 12.0 ** 2))
+    floor = (weights * bases).sum(-1) / np.maximum(weights.sum(-1), 1e-9)
+    for _ in range(25):  # bumps
+        c, sigma = rng.uniform([0.0, 0.0], [size_x, size_z]), rng.uniform(3.0, 8.0)
+        floor += rng.uniform(-1.2, 1.2) * np.exp(-((gx - c[0]) ** 2 + (gz - c[1]) ** 2) / (2 * sigma ** 2))
+    rock = float(floor.max()) + 4.0
+    _terrain(s, xs, zs, np.where(inside, floor, rock))
+    _lid(s, 0.0, size_x, 0.0, size_z, rock + 1.0)
+    open_cells = np.argwhere(inside[1:-1, 1:-1]) + 1
+
+    def spot(margin: int) -> tuple[float, float, float] | None:
+        """A grid point of the open plan at least ``margin`` cells from rock, and its floor height."""
+        for _ in range(50):
+            i, j = open_cells[rng.integers(len(open_cells))]
+            if inside[max(i - margin, 0):i + margin + 1, max(j - margin, 0):j + margin + 1].all():
+                return float(xs[i]), float(zs[j]), float(floor[i, j])
+        return None
+
+    a8 = np.linspace(0, 2 * math.pi, 8, endpoint=False)
+    for _ in range(int(rng.integers(60, 101))):  # stalagmites
+        found = spot(2)
+        if found is not None:
+            x, z, y = found
+            r, h = rng.uniform(0.15, 0.5), rng.uniform(1.0, 3.5)
+            s.hull(np.concatenate([np.stack([x + r * np.cos(a8), np.full(8, y - 0.5), z + r * np.sin(a8)], 1), [[x, y + h, z]]]))
+    for _ in range(int(rng.integers(10, 19))):  # columns
+        found = spot(4)
+        if found is not None:
+            x, z, y = found
+            r = rng.uniform(0.8, 2.0)
+            s.prism(np.stack([x + r * np.cos(a8), z + r * np.sin(a8)], 1), y - 0.5, rock)
+    for _ in range(int(rng.integers(20, 31))):  # boulders
+        found = spot(3)
+        if found is not None:
+            x, z, y = found
+            r = rng.uniform(0.5, 1.5)
+            s.rock(rng, np.array([x, z]), r / 2, y - 0.5, y + r * 1.5)
+    return s.mesh()
+
+
+def _carriage(s: _Solids, x0: float, zc: float, floor: float, length: float, gangways: tuple[bool, bool]) -> None:
+    """A passenger carriage from x0 along +x, ``length`` m long and 3 m wide about z = ``zc``, its floor at ``floor``:
+    walls 0.1 m thick up to 2.25 m over the floor under a roof at 50 degrees (:func:`_gable`); at each end a
+    vestibule 2.6 m long with a 1.6 m door in both sides and, where ``gangways`` (west, east) says so, a 1.6 m door in
+    the end wall; a partition with a 1.6 m opening between each vestibule and the saloon, where seats (0.65 m deep
+    across, 0.6 m along, 1.1 m high) line both walls every 1.9 m, leaving an aisle 1.5 m wide."""
+    x1, z0, z1, top = x0 + length, zc - 1.5, zc + 1.5, floor + 2.25
+    s.box(x0, x1, floor - 0.8, floor, z0, z1)
+    for z in (z0 + 0.05, z1 - 0.05):
+        s.wall((x0, z), (x1, z), floor, top, [(0.8, 1.6), (length - 2.4, 1.6)], thickness=0.1)
+    for x, open_ in zip((x0 + 0.05, x1 - 0.05), gangways):
+        s.wall((x, z0), (x, z1), floor, top, [(0.7, 1.6)] if open_ else [], thickness=0.1)
+    for x in (x0 + 2.6, x1 - 2.6):
+        s.wall((x, z0), (x, z1), floor, top, [(0.7, 1.6)], thickness=0.1)
+    _gable(s, x0, x1, z0, z1, top)
+    for x in np.arange(x0 + 3.2, x1 - 3.3, 1.9):
+        for a, b in ((z0 + 0.1, z0 + 0.75), (z1 - 0.75, z1 - 0.1)):
+            s.box(x, x + 0.6, floor, floor + 1.1, a, b)
+
+
+def train(seed: int) -> trimesh.Trimesh:
+    """A station of three platforms 1.1 m high (two 6 m wide on the sides, an island 8 m wide between two tracks
+    with no floor in the track beds), 200-230 m long, a concourse 18 m deep across their west ends, and two trains
+    standing in the station, 6-8 and 4-6 carriages 20 m long (:func:`_carriage`) 0.6 m apart, joined by gangways
+    (a floor and two walls between the end doors), their floors 0.1 m above the platforms, a threshold over the
+    0.2 m gap at every side door: each carriage joins the platforms either side and the next carriage. A
+    footbridge 5.6 m above the platforms crosses the tracks, a flight up to it on each platform; benches, canopy
+    pillars and vending machines on the platforms, ticket machines and a kiosk on the concourse.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    length, deck = rng.uniform(200.0, 230.0), 1.1
+    platforms = [(-6.0, 0.0), (3.4, 11.4), (14.8, 20.8)]
+    tracks = [(0.0, 3.4), (11.4, 14.8)]
+    for z0, z1 in platforms:
+        s.box(0.0, length, -1.0, deck, z0, z1)
+    s.box(-18.0, 0.0, -1.0, deck, -6.0, 20.8)  # the concourse
+    s.wall((-18.0, -6.0), (-18.0, 20.8), deck, deck + 4.0, thickness=0.3)
+    for _ in range(int(rng.integers(3, 6))):  # ticket machines
+        x, z = rng.uniform(-16.0, -3.0), rng.uniform(-4.0, 18.0)
+        s.box(x, x + 0.8, deck, deck + 1.6, z, z + 0.6)
+    kx, kz = rng.uniform(-14.0, -6.0), rng.uniform(2.0, 12.0)
+    s.box(kx, kx + 3.0, deck, deck + 1.6, kz, kz + 2.5)
+    for z in (kz, kz + 2.5):
+        s.wall((kx, z), (kx + 3.0, z), deck + 1.6, deck + 2.6, thickness=0.1)
+    _gable(s, kx, kx + 3.0, kz, kz + 2.5, deck + 2.6)
+    for (z0, z1), cars in zip(tracks, (int(rng.integers(6, 9)), int(rng.integers(4, 7)))):
+        x = rng.uniform(4.0, length - cars * 20.6 - 4.0)
+        zc = (z0 + z1) / 2
+        for k in range(cars):
+            _carriage(s, x, zc, deck + 0.1, 20.0, (k > 0, k < cars - 1))
+            for dx in (0.8, 17.6):  # thresholds over the gaps at the side doors
+                s.box(x + dx, x + dx + 1.6, deck - 0.3, deck + 0.1, z0, z1)
+            if k < cars - 1:  # the gangway to the next carriage
+                s.box(x + 20.0, x + 20.6, deck - 0.7, deck + 0.1, zc - 1.0, zc + 1.0)
+                for z in (zc - 0.9, zc + 0.9):
+                    s.box(x + 19.95, x + 20.65, deck + 0.1, deck + 2.35, z - 0.05, z + 0.05)
+                _gable(s, x + 19.95, x + 20.65, zc - 1.0, zc + 1.0, deck + 2.35)
+            x += 20.6
+    bridge = rng.uniform(0.45, 0.7) * length
+    top = deck + 5.6
+    s.box(bridge, bridge + 3.0, top - 0.4, top, -5.0, 19.8)
+    for z in (-5.0, 19.8):
+        s.wall((bridge, z), (bridge + 3.0, z), top, top + 1.1, thickness=0.1)
+    steps = math.ceil(5.6 / 0.17)
+    for z0, z1 in platforms:  # a flight up to the bridge on each platform, along +x, ending at its west side
+        s.stairs(np.array([bridge - steps * 0.28, (z0 + z1) / 2]), np.array([1.0, 0.0]), 2.0, deck, 5.6, 5.6 / steps, 0.28)
+    for z0, z1 in platforms:
+        zc = (z0 + z1) / 2
+        for x in np.arange(rng.uniform(6.0, 10.0), length - 4.0, 10.0):  # canopy pillars and benches along the middle
+            if abs(x - bridge + steps * 0.14) < steps * 0.14 + 3.0:
+                continue
+            s.box(x, x + 0.4, deck, deck + 4.0, zc - 0.2, zc + 0.2)
+            if rng.random() < 0.5:
+                s.box(x + 2.0, x + 3.8, deck, deck + 0.5, zc - 0.25, zc + 0.25)
+            elif rng.random() < 0.3:
+                s.box(x + 2.0, x + 3.0, deck, deck + 1.9, zc - 0.4, zc + 0.4)
+    return s.mesh()
+
+
+def ruins(seed: int) -> trimesh.Trimesh:
+    """A three-storey building falling down, 56-64 x 36-42 m, storeys 3.6 m apart, no roof, in a yard 12 m wide
+    all round: the floor slabs of the upper two storeys have 3-4 holes each (8-12 m along x or z, 4-7 m across,
+    2 m or more apart), and into each hole a slab has fallen as a ramp from the hole's edge down to the storey
+    below, 3-5.5 m wide: in the first two holes of each storey at 18-35 degrees (walkable), in the others at
+    18-60 degrees (over 45 the presets' agent slides off). Storeys 0 and 1 are also joined by a switchback
+    stairwell (:func:`_switchback`) in one corner; the stairs above it fell. Outer walls 0.3 m thick, 3-5 breaches
+    2-5 m wide in the ground storey's and 2-4 in each upper storey's (openings onto a drop); columns 0.5 m square
+    on a 6 m grid, one in five fallen; standing stretches of inner walls (4-12 m, 8-14 a storey) and rubble heaps.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    size_x, size_z, storey = rng.uniform(56.0, 64.0), rng.uniform(36.0, 42.0), 3.6
+    s.box(-12.0, size_x + 12.0, -0.5, 0.0, -12.0, size_z + 12.0)
+    well_x, well_z = 1.0, 1.0
+    well = (well_x, well_x + 4.0, well_z + 2.0, well_z + _well_length(storey))
+    _switchback(s, well_x, well_z, 0.0, storey)
+    open_over: dict[int, list[tuple[float, float, float, float]]] = {0: []}  # each storey's holes (storey 1's: the well too)
+    stairwell = (0.0, well_x + 5.0, 0.0, well[3] + 1.0)  # kept clear of inner walls and rubble
+    for k in (1, 2):
+        y = k * storey
+        holes: list[tuple[float, float, float, float]] = [well] if k == 1 else []
+        ramps, wanted = 0, int(rng.integers(3, 5))
+        for _ in range(400):
+            if ramps == wanted:
+                break
+            along_x = rng.random() < 0.5
+            long, across = rng.uniform(8.0, 12.0), rng.uniform(4.0, 7.0)
+            w, d = (long, across) if along_x else (across, long)
+            x0, z0 = rng.uniform(2.0, size_x - w - 2.0), rng.uniform(2.0, size_z - d - 2.0)
+            if not _clear(x0 - 2.0, x0 + w + 2.0, z0 - 2.0, z0 + d + 2.0, holes):
+                continue
+            holes.append((x0, x0 + w, z0, z0 + d))
+            angle = math.radians(rng.uniform(18.0, 35.0) if ramps < 2 else rng.uniform(18.0, 60.0))
+            angle = max(angle, math.atan2(storey, long - 0.3))  # the slab reaches the floor below inside the hole
+            run = storey / math.tan(angle)
+            width = rng.uniform(3.0, min(5.5, across - 0.6))
+            if along_x:
+                start, heading = np.array([x0, z0 + d / 2]), np.array([1.0, 0.0])
+            else:
+                start, heading = np.array([x0 + w / 2, z0]), np.array([0.0, 1.0])
+            if rng.random() < 0.5:  # fallen from the other edge
+                start, heading = start + heading * long, -heading
+            s.ramp(start, start + heading * run, width, y, y - storey)
+            ramps += 1
+        s.slab(0.0, size_x, 0.0, size_z, y, holes)
+        open_over[k] = holes
+    for k in range(3):
+        y = k * storey
+        for a, b, along in (((0.0, 0.0), (size_x, 0.0), size_x), ((0.0, size_z), (size_x, size_z), size_x),
+                            ((0.0, 0.0), (0.0, size_z), size_z), ((size_x, 0.0), (size_x, size_z), size_z)):
+            breaches, starts = [], np.sort(rng.uniform(3.0, along - 8.0, size=int(rng.integers(1, 3 if k else 4))))
+            for p in starts:
+                if not breaches or p > breaches[-1][0] + breaches[-1][1] + 1.0:
+                    breaches.append((float(p), float(rng.uniform(2.0, 5.0))))
+            s.wall(a, b, y, y + storey - 0.3, breaches, thickness=0.3)
+        for gx in np.arange(6.0, size_x - 3.0, 6.0):  # columns up to the slab above (none on the top storey)
+            for gz in np.arange(6.0, size_z - 3.0, 6.0):
+                if k < 2 and rng.random() >= 0.2:
+                    s.box(gx - 0.25, gx + 0.25, y, y + storey - 0.3, gz - 0.25, gz + 0.25)
+        for _ in range(int(rng.integers(8, 15))):  # inner walls on the grid lines, 4-12 m long
+            n, high = rng.uniform(4.0, 12.0), y + storey - 0.3 if k < 2 else y + rng.uniform(1.0, 3.0)
+            if rng.random() < 0.5:
+                z, x = float(rng.choice(np.arange(6.0, size_z - 3.0, 6.0))), rng.uniform(0.0, size_x - n)
+                if _clear(x, x + n, z - 0.1, z + 0.1, [stairwell, *open_over[k]]):
+                    s.wall((x, z), (x + n, z), y, high)
+            else:
+                x, z = float(rng.choice(np.arange(6.0, size_x - 3.0, 6.0))), rng.uniform(0.0, size_z - n)
+                if _clear(x - 0.1, x + 0.1, z, z + n, [stairwell, *open_over[k]]):
+                    s.wall((x, z), (x, z + n), y, high)
+        for _ in range(int(rng.integers(12, 21))):  # rubble
+            r, p = rng.uniform(0.6, 1.6), rng.uniform([2.0, 2.0], [size_x - 2.0, size_z - 2.0])
+            if _clear(p[0] - r, p[0] + r, p[1] - r, p[1] + r, [stairwell, *open_over[k]]):
+                s.rock(rng, p, r / 2, y - 0.3, y + r)
+    for _ in range(int(rng.integers(10, 16))):  # rubble in the yard
+        side = rng.integers(0, 4)
+        p = [np.array([rng.uniform(-10.0, size_x + 10.0), rng.uniform(-10.0, -2.0)]),
+             np.array([rng.uniform(-10.0, size_x + 10.0), rng.uniform(size_z + 2.0, size_z + 10.0)]),
+             np.array([rng.uniform(-10.0, -2.0), rng.uniform(0.0, size_z)]),
+             np.array([rng.uniform(size_x + 2.0, size_x + 10.0), rng.uniform(0.0, size_z)])][side]
+        r = rng.uniform(0.8, 2.0)
+        s.rock(rng, p, r / 2, -0.3, r)
+    return s.mesh()
+
+
 KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
     "subway": subway, "archipelago": archipelago, "car_park": car_park,
     "forest": forest, "stadium": stadium, "harbour": harbour,
@@ -2474,6 +2956,7 @@ KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
     "office": office, "airport": airport, "sewer": sewer, "lanes": lanes, "prison": prison, "museum": museum,
     "tower": tower, "hospital": hospital, "mall": mall, "canyon": canyon, "hillside": hillside, "spaceship": spaceship,
     "kart": kart, "bunker": bunker, "hall": hall, "slopes": slopes, "islets": islets, "catacombs": catacombs,
+    "helix": helix, "rooftops": rooftops, "flooded": flooded, "cave": cave, "train": train, "ruins": ruins,
 }
 """Kind name -> generator (seed -> Y-up mesh in metres)."""
 

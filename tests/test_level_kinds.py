@@ -1,8 +1,8 @@
-"""The ninth round's level kinds (``benchmarks/level_kinds.py``) build the levels their docstrings describe.
+"""The ninth and tenth rounds' level kinds (``benchmarks/level_kinds.py``) build the levels their docstrings describe.
 
-Smoke tests of the four quick generators (well under a second each to build and to give a navmesh): the
-connected areas the presets' agent finds are the ones each level is made to have, so a door that closes or a
-crawlway that opens shows here before a benchmark figure moves.
+Smoke tests of quick generators (well under a second each to build and to give a navmesh): the connected areas
+the presets' agent finds are the ones each level is made to have, so a door that closes or a crawlway that
+opens shows here before a benchmark figure moves.
 """
 
 from __future__ import annotations
@@ -41,7 +41,7 @@ def areas(mesh) -> tuple[np.ndarray, object]:
 
 
 def test_the_same_seed_gives_the_same_level(kinds):
-    for kind in ("hall", "islets"):
+    for kind in ("hall", "islets", "helix", "flooded"):
         a, b, other = kinds[kind](0), kinds[kind](0), kinds[kind](1)
         assert np.array_equal(a.vertices, b.vertices) and np.array_equal(a.faces, b.faces), kind
         assert len(a.vertices) != len(other.vertices) or not np.array_equal(a.vertices, other.vertices), kind
@@ -76,3 +76,52 @@ def test_slopes_crests_are_reached_through_the_flanks_under_45_degrees(kinds):
     assert nav.centres[label == main, 1].max() > 9.0
     small = [nav.areas[label == k].sum() for k in range(label.max() + 1) if k != main]
     assert small and max(small) < 30.0
+
+
+def test_the_helix_is_one_area_from_the_plaza_to_the_roof(kinds):
+    """Six turns of one ramp: the plaza (0 m), every turn and the roof (19.2 m) are one area, walked round the
+    whole spiral."""
+    label, nav = areas(kinds["helix"](0))
+    assert label.max() == 0
+    heights = nav.centres[:, 1]
+    assert heights.min() < 0.5 and heights.max() > 19.0
+    assert np.histogram(heights, bins=np.arange(0.0, 19.3, 3.2))[0].min() > 10  # floor on every turn
+
+
+def test_flooded_shops_open_on_their_pavement(kinds):
+    """Each shop's floor (0.3 m above the pavement) is in an area with pavement in it: its door is open (a first
+    draft closed every shop behind a strip of the building's mass)."""
+    for seed in (0, 2):
+        label, nav = areas(kinds["flooded"](seed))
+        shops = set(label[nav.centres[:, 1] > 0.5])
+        assert shops, seed
+        for area in shops:
+            assert (nav.centres[label == area, 1] < 0.5).any(), (seed, area)
+
+
+def test_the_cave_is_one_area_with_no_floor_on_the_rock(kinds):
+    """Chambers and tunnels are one area (stalagmites, columns and boulders close nothing); the rock's top and the
+    columns' tops, 1 m under the lid, hold no floor."""
+    label, nav = areas(kinds["cave"](1))
+    assert label.max() == 0
+    assert nav.centres[:, 1].max() < 4.0
+
+
+def test_the_train_joins_platforms_carriages_and_footbridge(kinds):
+    """One area: both trains' carriages (over the track beds, which have no floor of their own), the three
+    platforms, the concourse and the footbridge 5.6 m over the platforms."""
+    label, nav = areas(kinds["train"](0))
+    assert label.max() == 0
+    x, y, z = nav.centres.T
+    for z0, z1 in ((0.0, 3.4), (11.4, 14.8)):  # inside each train
+        assert ((z > z0) & (z < z1) & (x > 0.0)).sum() > 20, (z0, z1)
+    assert (y > 6.0).any()
+
+
+def test_the_ruins_three_storeys_are_one_area(kinds):
+    """The storeys are joined by the fallen slabs (two of them walkable on each) and one stairwell: one area with
+    floor on each storey (0, 3.6 and 7.2 m)."""
+    label, nav = areas(kinds["ruins"](0))
+    assert label.max() == 0
+    for level in (0.0, 3.6, 7.2):
+        assert (np.abs(nav.centres[:, 1] - 0.2 - level) < 0.3).sum() > 30, level
