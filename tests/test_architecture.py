@@ -192,3 +192,14 @@ def test_the_recast_navmesh_provides_the_navmesh_protocol():
     assert index == 0 and np.allclose(point, navmesh.centres[0], atol=0.5)
     clear, _ = navmesh.raycast(navmesh.centres[0], navmesh.centres[0])
     assert isinstance(clear, bool) and isinstance(navmesh.stats(), dict)
+
+
+def test_the_documented_navmesh_protocol_names_every_query():
+    import inspect
+
+    from g2s_core.model import NavMesh
+
+    text = (PROJECT / "docs" / "architecture.md").read_text()
+    queries = [name for name, member in vars(NavMesh).items()
+               if inspect.isfunction(member) and not name.startswith("_") and name != "polygon_count"]
+    assert queries and [name for name in queries if f"`{name}()`" not in text] == []
