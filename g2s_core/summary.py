@@ -49,10 +49,11 @@ def stage_rows(stages: Sequence[StageStats]) -> list[tuple[str, str, str, str, s
 
 def outcome(result: RunResult) -> str:
     """What came out, in a designer's words: ``12 structure nodes, 7 openings`` (a map piece's), then each
-    analyzer's records (``9 regions, 6 chokepoints``); empty when the run stopped before a graph."""
-    _, graph = final_graph(result)
-    openings = 0 if result.terminals is None else len(result.terminals.openings)
-    counts = ([] if graph is None else [(graph.number_of_nodes(), "structure nodes")]) + ([(openings, "openings")] if openings else [])
+    analyzer's records (``9 regions, 6 chokepoints``); ``83 graph nodes`` when the run stopped after step 1 (no
+    structure was made); empty when the run stopped before a graph."""
+    stage, graph = final_graph(result)
+    counts = [(graph.number_of_nodes(), "graph nodes" if stage == "graph" else "structure nodes")] if graph is not None else []
+    counts += [(len(result.terminals.openings), "openings")] if result.terminals is not None and result.terminals.openings else []
     counts += [(len(records), name) for features in result.features.values() for name, records in features.items() if isinstance(records, list)]
     return ", ".join(f"{count} {name[:-1] if count == 1 and name.endswith('s') else name}" for count, name in counts)
 

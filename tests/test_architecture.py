@@ -55,6 +55,31 @@ def test_the_core_stays_within_its_code_budget():
         "move implementations to plugins rather than raise the budget"
 
 
+def test_the_documented_core_size_is_the_core():
+    """docs/architecture.md's "The core's size, measured" figures: physical lines, lines of code, and the Python
+    API's part of them (`api.py`, `result_folder.py`, `batch.py`), the rest being the minimal core."""
+    text = " ".join((PROJECT / "docs" / "architecture.md").read_text().split())
+    figures = re.search(r"The core's size, measured: ([\d,]+) physical lines and ([\d,]+) lines of code .*? are "
+                        r"([\d,]+) lines of code; the other ([\d,]+) are .*?`api.py` (\d+), `result_folder.py` (\d+) "
+                        r".*?`batch.py` (\d+)", text)
+    assert figures, "docs/architecture.md no longer states the core's size as this test reads it"
+    physical, code, minimal, api_part, api, result_folder, batch = (int(f.replace(",", "")) for f in figures.groups())
+    paths = sorted((PROJECT / "g2s_core").glob("*.py"))
+    counts = {path.name: lines_of_code(path) for path in paths}
+    api_files = [counts["api.py"], counts["result_folder.py"], counts["batch.py"]]
+    assert (physical, code) == (sum(len(path.read_text().splitlines()) for path in paths), sum(counts.values()))
+    assert [api, result_folder, batch] == api_files and api_part == sum(api_files) and minimal == code - api_part
+
+
+def test_the_layer_picture_names_every_core_module():
+    text = (PROJECT / "docs" / "architecture.md").read_text()
+    box = text.split("## Layers", 1)[1].split("\n └", 1)[0]  # the core's box, down to its bottom edge
+    words = set(re.findall(r"\w+", box))
+    missing = [path.stem for path in sorted((PROJECT / "g2s_core").glob("*.py"))
+               if path.stem != "__init__" and path.stem not in words]
+    assert not missing, f"docs/architecture.md's layer picture does not name g2s_core's {missing}"
+
+
 def test_every_kind_has_its_hook_and_every_stage_its_config_section():
     specs = {name for name in dir(hookspecs) if name.startswith("g2s_")}
     assert specs == {stage.hook for stage in STAGES}
@@ -167,3 +192,14 @@ def test_the_recast_navmesh_provides_the_navmesh_protocol():
     assert index == 0 and np.allclose(point, navmesh.centres[0], atol=0.5)
     clear, _ = navmesh.raycast(navmesh.centres[0], navmesh.centres[0])
     assert isinstance(clear, bool) and isinstance(navmesh.stats(), dict)
+
+
+def test_the_documented_navmesh_protocol_names_every_query():
+    import inspect
+
+    from g2s_core.model import NavMesh
+
+    text = (PROJECT / "docs" / "architecture.md").read_text()
+    queries = [name for name, member in vars(NavMesh).items()
+               if inspect.isfunction(member) and not name.startswith("_") and name != "polygon_count"]
+    assert queries and [name for name in queries if f"`{name}()`" not in text] == []

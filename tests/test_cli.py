@@ -427,6 +427,8 @@ def test_a_batch_with_links_to_themselves_is_no_internal_error(tmp_path, capsys,
 @pytest.mark.parametrize("preset, level, says", [
     ("map_piece", "sample:straight_corridor", "straight_corridor: 3 structure nodes, 2 openings"),
     ("level_regions", "sample:two_rooms_one_door", "two_rooms_one_door: 6 structure nodes, 1 chokepoint, 2 regions"),
+    # truth27: graph_only stops at step 1, and said "83 structure nodes" of the initial graph
+    ("graph_only", "sample:dungeon", "dungeon: 83 graph nodes"),
 ])
 def test_run_says_what_came_out_after_the_stage_table(preset, level, says, tmp_path, capsys):
     # robust7: the table gave step counts only; a designer had to open structure.json for a piece's openings

@@ -75,3 +75,42 @@ def test_the_reference_doc_names_every_built_in_plugin(stage: str):
 def test_the_readme_lists_every_doc():
     readme = (PROJECT / "README.md").read_text(encoding="utf-8").split("## Documentation", 1)[1]
     assert [d.name for d in DOCS[1:] if f"`docs/{d.name}`" not in readme] == []
+
+
+FORMER_NAMES = {"g2s_plugins.traffic.subtree_sums"}
+"""Names the docs give as what a thing was called before (docs/performance.md: "then ...; now part of ...")."""
+
+
+def resolves(dotted: str) -> bool:
+    """Whether ``dotted`` (``package.module.attribute...``) names a module or an attribute of one."""
+    import importlib
+
+    parts = dotted.split(".")
+    for split in range(len(parts), 0, -1):
+        try:
+            found = importlib.import_module(".".join(parts[:split]))
+        except ImportError:
+            continue
+        for part in parts[split:]:
+            if not hasattr(found, part):
+                return False
+            found = getattr(found, part)
+        return True
+    return False
+
+
+def test_the_name_check_finds_what_is_not_there():
+    assert resolves("g2s_core.lazy.lazy_module") and resolves("g2s_plugins.batch.runner.run_pair")
+    assert not resolves("g2s_plugins.traffic.no_such_function") and not resolves("g2s_core.no_such_module")
+
+
+@pytest.mark.parametrize("doc", DOCS, ids=lambda path: path.name)
+def test_named_modules_and_functions_exist(doc: Path):
+    names = set(re.findall(r"`((?:g2s_core|g2s_plugins)(?:\.[A-Za-z_]\w*)+)", doc.read_text(encoding="utf-8")))
+    assert sorted(name for name in names - FORMER_NAMES if not resolves(name)) == []
+
+
+def test_named_make_targets_exist():
+    targets = set(re.findall(r"^([a-z][\w-]*):", (PROJECT / "Makefile").read_text(encoding="utf-8"), flags=re.MULTILINE))
+    named = {target for doc in DOCS for target in re.findall(r"`make ([a-z][\w-]*)", doc.read_text(encoding="utf-8"))}
+    assert named and sorted(named - targets) == []

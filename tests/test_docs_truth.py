@@ -285,3 +285,30 @@ SET_DOCS = [doc for doc in DOCS if doc.name != "errors.md" and "--set " in doc.r
 def test_documented_set_examples_are_settings_g2s_takes(doc: Path):
     problems = inline_set_problems(doc.read_text(encoding="utf-8"))
     assert not problems, f"{doc.name}: {problems}"
+
+
+STAGE_PARAMETER = re.compile(r"\b(graph|terminals|steiner|loops|roots|simplify)\.params\.(\w+)")
+"""A plugin parameter named by its config path, in prose or code: `graph.params.cell_size`."""
+
+
+def unknown_stage_parameters(text: str) -> list[str]:
+    """The ``STAGE.params.KEY`` paths of ``text`` whose KEY no installed plugin of that stage takes."""
+    from g2s_core.registry import installed
+
+    registry = installed()
+    taken: dict[str, set[str]] = {}
+    for stage, key in STAGE_PARAMETER.findall(text):
+        if stage not in taken:
+            taken[stage] = {name for info in registry.plugins(stage) for name in info.params_model.model_fields}
+    return sorted({f"{stage}.params.{key}" for stage, key in STAGE_PARAMETER.findall(text) if key not in taken[stage]})
+
+
+def test_the_parameter_path_check_finds_what_no_plugin_takes():
+    assert unknown_stage_parameters("`graph.params.cell_size`, terminals.params.traffic_weight") == []
+    assert unknown_stage_parameters("`graph.params.cel_size` and `simplify.params.min_heat`") == [
+        "graph.params.cel_size", "simplify.params.min_heat"]
+
+
+@pytest.mark.parametrize("doc", DOCS, ids=lambda path: path.name)
+def test_documented_parameter_paths_are_parameters(doc: Path):
+    assert unknown_stage_parameters(doc.read_text(encoding="utf-8")) == []
