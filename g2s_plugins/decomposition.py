@@ -123,7 +123,9 @@ numpy/scipy over arrays, networkx only on the small region graph.
 from __future__ import annotations
 
 import math
+import weakref
 from collections import Counter
+from collections.abc import Hashable
 from dataclasses import dataclass, field
 from functools import cached_property
 from typing import Any
@@ -939,6 +941,36 @@ def decompose(navmesh: Any, agent: Any, params: DecompositionParams, mesh: trime
     chokepoints = _chokepoints(np.flatnonzero(blocked), pairs, labels, portals.endpoints, clearance.widest,
                                2.0 * clearance.portals, floor, params.min_separation, clearance.holes, wall_to_wall)
     return Decomposition(labels, regions, chokepoints)
+
+
+_SPLITS: weakref.WeakKeyDictionary[Any, dict[Hashable, tuple[trimesh.Trimesh, Decomposition]]] = (
+    weakref.WeakKeyDictionary()
+)
+"""Per navmesh object (dropped with it): the :func:`decompose` results :func:`shared_decomposition` computed, by
+the mesh's id, the agent's size and the split settings, each with the mesh it was measured in."""
+
+
+def shared_decomposition(navmesh: Any, agent: Any, params: DecompositionParams, mesh: trimesh.Trimesh) -> Decomposition:
+    """:func:`decompose`, computed once per navmesh object, mesh object, agent size and split settings: the
+    ``chokepoints`` and ``regions`` analyzers of one run, given the same settings, split the level once.
+
+    The key holds every input :func:`decompose` reads: the agent's ``radius`` and ``height`` (the only fields it
+    uses) and the fields of :class:`DecompositionParams` (an analyzer's own others, such as ``top_k``, left out);
+    the navmesh is the cache's weak key and the mesh is held with its entry, so its id names no other mesh while
+    the entry lives. Each call gets its own region and chokepoint records (:func:`score` fills in the regions'
+    ``neighbours`` of the decomposition it is given), with a fresh empty ``neighbours`` list each; the records'
+    other values and the read-only ``labels`` are shared and only read.
+    """
+    key = (id(mesh), float(agent.radius), float(agent.height),
+           *(getattr(params, name) for name in DecompositionParams.model_fields))
+    splits = _SPLITS.setdefault(navmesh, {})
+    if key not in splits:
+        split = decompose(navmesh, agent, params, mesh)
+        split.labels.flags.writeable = False
+        splits[key] = (mesh, split)
+    split = splits[key][1]
+    return Decomposition(split.labels, [region | {"neighbours": []} for region in split.regions],
+                         [dict(chokepoint) for chokepoint in split.chokepoints])
 
 
 def _join_pinches(navmesh: Any, labels: np.ndarray, count: int, pairs: np.ndarray, blocked: np.ndarray,

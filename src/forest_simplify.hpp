@@ -7,13 +7,26 @@
 //
 // Complexity: O(n + k) predicate calls, k = removals, as the reference; each removal also sorts the removed
 // node's children, O(d log d) for d children, and looks a node up in its parent's children, O(d).
+//
+// Threads: Algorithm 4 walks the chains below one kept node A at a time, and what it finds there (the nodes it
+// removes, the edges (A, C) it adds, the children it keeps, each of which is the next such A) reads and writes
+// only the nodes below A, which no other walk touches until A's walk is over: it keeps A's children for later
+// walks, and the predicate's answers depend on the chain alone. So the walks below different kept nodes run
+// on `threads` threads, each with its own copy of the predicate (its caches), a kept node's walk starting once
+// the walk that kept it is done; the edges are then read back in the reference's order. The loop pass, a heap
+// whose every step may change the next, runs on one thread after them.
 #pragma once
 
 #include <algorithm>
+#include <condition_variable>
 #include <cstddef>
 #include <cstdint>
 #include <deque>
+#include <exception>
+#include <mutex>
 #include <queue>
+#include <system_error>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -46,10 +59,19 @@ struct Partner {
 };
 constexpr uint8_t OUT = 1, IN = 2;
 
+// What Algorithm 4 does below one kept node A: the edges (A, C) it adds, flattened, in order, and the children of
+// A it keeps, in order (each walked next, the first first).
+struct Walk {
+    std::vector<int64_t> added;
+    std::vector<int64_t> kept;
+};
+
 // allows(a, b, c, c_is_leaf): whether b may go, c then joined to a; c_is_leaf: c has no outgoing edge (tree or
-// loop) in the current structure, the leaf test of Algorithm 5's first rule.
+// loop) in the current structure, the leaf test of Algorithm 5's first rule. Copied once per thread (`threads`
+// of them, at least one) and once for the loop pass; its answers must not depend on the copy or the order of
+// the calls.
 template <typename Allows>
-Simplified simplify(const Forest& f, Allows&& allows) {
+Simplified simplify(const Forest& f, const Allows& allows, unsigned threads = 1) {
     const size_t n = f.n;
     std::vector<std::vector<int64_t>> children(n);
     std::vector<std::vector<Partner>> loops(n);
@@ -71,46 +93,98 @@ Simplified simplify(const Forest& f, Allows&& allows) {
 
     Simplified s;
     s.kept.assign(n, 1);
-    std::vector<int64_t> pending, kept, grandchildren;
-    std::deque<int64_t> queue;
+    std::vector<Walk> walks(n);
+    // Algorithm 4 below the kept node a (the rows of a, its children and the nodes below them only)
+    auto walk = [&](int64_t a, Allows& rule, std::deque<int64_t>& queue, std::vector<int64_t>& grandchildren) {
+        Walk& done = walks[a];
+        queue.assign(children[a].begin(), children[a].end());
+        std::sort(queue.begin(), queue.end(), by_id);
+        while (!queue.empty()) {
+            const int64_t b = queue.front();
+            queue.pop_front();
+            grandchildren = children[b];
+            std::sort(grandchildren.begin(), grandchildren.end(), by_id);
+            // the reference's rule: a leaf, a terminal, the end of a loop edge, or the parent of a node with a
+            // loop edge to a stays
+            bool removable = !grandchildren.empty() && !f.fixed[b] && loops[b].empty();
+            for (const int64_t c : grandchildren) removable = removable && find(a, c) == loops[a].end();
+            for (const int64_t c : grandchildren) removable = removable && rule(a, b, c, out[c] == 0);
+            if (!removable) { done.kept.push_back(b); continue; }
+            s.kept[b] = 0;
+            auto& below = children[a];
+            below.erase(std::find(below.begin(), below.end(), b));
+            for (const int64_t c : grandchildren) {
+                below.push_back(c);
+                parent[c] = a;
+                done.added.insert(done.added.end(), {a, c});
+                queue.push_back(c);
+            }
+            out[a] += static_cast<int64_t>(grandchildren.size()) - 1;
+            children[b].clear();
+        }
+    };
+    // the walks, each kept node's once the walk that kept it is done, on `threads` threads
+    std::mutex lock;
+    std::condition_variable ready;
+    std::vector<int64_t> todo(f.roots, f.roots + f.r);
+    size_t open = f.r;  // walks to do or in progress
+    bool failed = false;
+    std::exception_ptr failure;
+    auto worker = [&] {
+        Allows rule = allows;
+        std::deque<int64_t> queue;
+        std::vector<int64_t> grandchildren;
+        std::unique_lock<std::mutex> hold(lock);
+        for (;;) {
+            ready.wait(hold, [&] { return failed || open == 0 || !todo.empty(); });
+            if (failed || open == 0) return;
+            const int64_t a = todo.back();
+            todo.pop_back();
+            hold.unlock();
+            try {
+                walk(a, rule, queue, grandchildren);
+            } catch (...) {
+                hold.lock();
+                if (!failed) failure = std::current_exception();
+                failed = true;
+                ready.notify_all();
+                return;
+            }
+            hold.lock();
+            const std::vector<int64_t>& kept = walks[a].kept;
+            todo.insert(todo.end(), kept.rbegin(), kept.rend());
+            open = open + kept.size() - 1;
+            ready.notify_all();
+        }
+    };
+    std::vector<std::thread> pool;
+    for (unsigned t = 1; t < threads; ++t) {
+        try {
+            pool.emplace_back(worker);
+        } catch (const std::system_error&) {  // no thread to be had: the walks on fewer, the same answer
+            break;
+        }
+    }
+    worker();
+    for (std::thread& t : pool) t.join();
+    if (failure) std::rethrow_exception(failure);
+    // the edges in the reference's order: roots in turn, each kept node's walk, then its kept children's, first first
+    std::vector<int64_t> pending;
     for (size_t k = 0; k < f.r; ++k) {
         pending.assign(1, f.roots[k]);
         while (!pending.empty()) {
-            const int64_t a = pending.back();
+            const Walk& done = walks[pending.back()];
             pending.pop_back();
-            queue.assign(children[a].begin(), children[a].end());
-            std::sort(queue.begin(), queue.end(), by_id);
-            kept.clear();
-            while (!queue.empty()) {
-                const int64_t b = queue.front();
-                queue.pop_front();
-                grandchildren = children[b];
-                std::sort(grandchildren.begin(), grandchildren.end(), by_id);
-                // the reference's rule: a leaf, a terminal, the end of a loop edge, or the parent of a node with a
-                // loop edge to a stays
-                bool removable = !grandchildren.empty() && !f.fixed[b] && loops[b].empty();
-                for (const int64_t c : grandchildren) removable = removable && find(a, c) == loops[a].end();
-                for (const int64_t c : grandchildren) removable = removable && allows(a, b, c, out[c] == 0);
-                if (!removable) { kept.push_back(b); continue; }
-                s.kept[b] = 0;
-                auto& below = children[a];
-                below.erase(std::find(below.begin(), below.end(), b));
-                for (const int64_t c : grandchildren) {
-                    below.push_back(c);
-                    parent[c] = a;
-                    s.added.insert(s.added.end(), {a, c});
-                    s.loop.push_back(0);
-                    queue.push_back(c);
-                }
-                out[a] += static_cast<int64_t>(grandchildren.size()) - 1;
-                children[b].clear();
-            }
-            pending.insert(pending.end(), kept.rbegin(), kept.rend());
+            s.added.insert(s.added.end(), done.added.begin(), done.added.end());
+            pending.insert(pending.end(), done.kept.rbegin(), done.kept.rend());
         }
     }
+    s.loop.assign(s.added.size() / 2, 0);
+    std::vector<Walk>().swap(walks);
 
     // the loop pass: a non-terminal tree leaf b whose only other edge is a loop edge b - q goes when
     // allows(parent, b, q), and the loop edge parent - q replaces both
+    Allows rule = allows;
     auto candidate = [&](int64_t b) { return s.kept[b] && !f.fixed[b] && children[b].empty() && loops[b].size() == 1; };
     auto later = [&](int64_t x, int64_t y) { return f.ids[x] > f.ids[y]; };
     std::priority_queue<int64_t, std::vector<int64_t>, decltype(later)> heap(later);
@@ -120,7 +194,7 @@ Simplified simplify(const Forest& f, Allows&& allows) {
         heap.pop();
         if (!candidate(b)) continue;
         const int64_t a = parent[b], q = loops[b].front().node;
-        if (a < 0 || parent[q] == a || parent[a] == q || find(a, q) != loops[a].end() || !allows(a, b, q, out[q] == 0))
+        if (a < 0 || parent[q] == a || parent[a] == q || find(a, q) != loops[a].end() || !rule(a, b, q, out[q] == 0))
             continue;
         s.kept[b] = 0;
         auto& below = children[a];

@@ -2009,7 +2009,7 @@ NB_MODULE(_recast, m) {
                  {
                      nb::gil_scoped_release release;
                      std::lock_guard<std::mutex> lock(n.mutex);
-                     s = forest_simplify::simplify(f, rule);
+                     s = forest_simplify::simplify(f, rule, std::max(1u, std::thread::hardware_concurrency()));
                  }
                  return nb::make_tuple(bool_numpy(s.kept), to_numpy(s.added, s.loop.size(), 2), bool_numpy(s.loop));
              },
@@ -2021,7 +2021,8 @@ NB_MODULE(_recast, m) {
              "g2s_core/simplify.py on a rooted forest of n nodes (ids, tree parent index or -1, depth, fixed: never "
              "removed, loop edges (m,2), root indices), with Algorithm 5's collapse rule (g2s_plugins/_surface.py) "
              "and line_of_sight(points[a], points[c], step, horizontal, max_gap) as the predicate; the edges added, "
-             "in the order they were added; GIL released")
+             "in the order they were added; GIL released, the walks below different kept nodes shared between the "
+             "cores (the same answer on any number)")
         .def("nearest_poly",
              [](const NavMeshCore& n, Vec3In p, ExtIn extents) {
                  float pp[3], out[3], ext[3] = {n.default_ext[0], n.default_ext[1], n.default_ext[2]};

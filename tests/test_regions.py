@@ -407,6 +407,31 @@ def test_top_k_and_separation_are_read_from_yaml():
     assert len(chokepoints(run(level, parse_config(raw)))) == 4  # separation only merges within one region pair
 
 
+def test_both_analyzers_of_a_run_split_the_level_once_and_each_gets_its_own_records(monkeypatch):
+    original, calls = decomposition.decompose, []
+    monkeypatch.setattr(decomposition, "decompose", lambda *args: calls.append(args[2]) or original(*args))
+    level = load_sample("loop_of_four_rooms")
+    result = run(level)
+    assert len(calls) == 1  # chokepoints and regions of level_regions: the same split settings
+    navmesh, agent = result.context.navmesh, result.context.agent
+    alone = original(navmesh, agent, decomposition.DecompositionParams(**calls[0].model_dump(exclude={"top_k"})),
+                     level.mesh)
+    ranked, _ = decomposition.score(alone, result.structure.to_undirected(as_view=True))
+    assert regions(result) == alone.regions and chokepoints(result) == ranked
+    # a caller's records are its own: score's neighbours, or anything else it writes, reach no other caller
+    first = decomposition.shared_decomposition(navmesh, agent, calls[0], level.mesh)
+    first.regions[0]["neighbours"].append("written")
+    first.regions[0]["area"] = -1.0
+    second = decomposition.shared_decomposition(navmesh, agent, calls[0], level.mesh)
+    assert len(calls) == 1 and second.regions[0]["neighbours"] == [] and second.regions[0]["area"] > 0
+    assert second.labels is first.labels and not first.labels.flags.writeable
+    # other split settings are another split
+    raw = load_raw_config(PRESET)
+    raw["analyzers"][2]["params"]["min_separation"] = 100.0
+    run(level, parse_config(raw))
+    assert len(calls) == 3
+
+
 def test_the_sampling_route_is_refused_in_one_line():
     raw = load_raw_config(PRESETS_DIR / "map_analysis_sampling.yaml")
     raw["analyzers"] = [{"plugin": "chokepoints"}]

@@ -6,7 +6,9 @@ structure edges cross (0 elsewhere). Features: ``chokepoints``, a list of
 records sorted by score (``id``, ``position``, ``portal``, ``width``,
 ``regions``, ``floors``, ``articulation``, ``traffic``, ``score``,
 ``polygons``). Cost: that of :func:`g2s_plugins.decomposition.decompose`
-plus the structure's edge betweenness.
+(one split per run for this analyzer and ``regions`` given the same split
+settings: :func:`~g2s_plugins.decomposition.shared_decomposition`) plus the
+structure's edge betweenness.
 """
 
 from __future__ import annotations
@@ -31,7 +33,7 @@ class Params(decomposition.DecompositionParams):
 def g2s_analyze(structure: nx.Graph, params: Params, context: RunContext) -> AnalyzerResult:
     """Chokepoint records and the score near every structure node."""
     navmesh = decomposition.require_navmesh(context, NAME)
-    split = decomposition.decompose(navmesh, context.agent, params, context.mesh)
+    split = decomposition.shared_decomposition(navmesh, context.agent, params, context.mesh)
     chokepoints, values = decomposition.score(split, structure)
     if params.top_k is not None:
         chokepoints = chokepoints[: params.top_k]

@@ -6,7 +6,10 @@ nodes that are not navmesh polygons). Features: ``regions``, one record per
 region by id (``id``, ``area``, ``polygons``, ``centroid``, ``floor``,
 ``height_range``, ``neighbours`` with the ids of the chokepoints between
 them, as the ``chokepoints`` analyzer with the same parameters numbers them).
-Cost: that of :func:`g2s_plugins.decomposition.decompose`.
+Cost: that of :func:`g2s_plugins.decomposition.decompose` (one split per run
+for this analyzer and ``chokepoints`` given the same split settings:
+:func:`~g2s_plugins.decomposition.shared_decomposition`) plus the
+structure's edge betweenness (its chokepoint numbering).
 """
 
 from __future__ import annotations
@@ -28,6 +31,6 @@ class Params(decomposition.DecompositionParams):
 def g2s_analyze(structure: nx.Graph, params: Params, context: RunContext) -> AnalyzerResult:
     """Region records and the region id of every structure node."""
     navmesh = decomposition.require_navmesh(context, NAME)
-    split = decomposition.decompose(navmesh, context.agent, params, context.mesh)
+    split = decomposition.shared_decomposition(navmesh, context.agent, params, context.mesh)
     decomposition.score(split, structure)  # numbers the chokepoints the regions' neighbours refer to
     return AnalyzerResult(decomposition.region_values(split, structure), {"regions": split.regions})

@@ -284,7 +284,8 @@ class NavMesh:
         """The whole-forest answer (kept (n,) bool, added (k,2) int64, loop (k,) bool; :mod:`g2s_core.simplify`)
         of the ``surface_los`` predicate for ``forest`` (a :class:`~g2s_core.simplify.ForestArrays`): the paper's
         Algorithm 4 with Algorithm 5's tests of ``rule`` (a :class:`~g2s_plugins._surface.RuleArrays`) and
-        :meth:`line_of_sight` (``step``, ``max_gap``) in one C++ call (src/forest_simplify.hpp)."""
+        :meth:`line_of_sight` (``step``, ``max_gap``) in one C++ call (src/forest_simplify.hpp), its walks below
+        different kept nodes on all cores (the same answer on any number)."""
         return self._core.collapse_forest(
             forest.ids, forest.parent, forest.depth, forest.fixed, forest.loops, forest.roots,
             self._local_rows(forest.points), rule.on_navmesh, rule.rank, rule.max_step, rule.normals,
