@@ -21,12 +21,13 @@ demo setting) and false. The known answers:
   falls in its cell decides how far Recast's conservative voxels overhang it.
 
 "joined" is a path over Detour's polygon links (:meth:`NavMesh.portals`)
-between the polygons nearest the two floors' middles. Recast's erosion and
-connections (``rcBuildCompactHeightfield`` links two spans only when their
+between the polygons nearest the two floors' middles. Without the ledge
+filter Recast's links and erosion still keep the agent off steps and walls
+over the climb (``rcBuildCompactHeightfield`` links two spans only when their
 floors differ by at most ``walkableClimb``; ``rcErodeWalkableArea`` treats a
-span with a missing link as a border) keep the agent from drops and walls
-without the ledge filter (Recast 1.5.1, ``Recast/Source/RecastRegion.cpp``
-and ``RecastArea.cpp``). This is a benchmark: nothing here asserts.
+span with a missing link as a border), but erosion counts the radius from the
+voxels, which overhang a drop by up to a cell: the clearance table shows it.
+This is a benchmark: nothing here asserts.
 """
 
 from __future__ import annotations
