@@ -1,6 +1,6 @@
 """CPU and wall time of every stage of a preset on a generated dungeon (issue 9's speed target).
 
-Run: ``.venv/bin/python benchmarks/stage_times.py [--rooms 12000] [--preset map_analysis] [--repeat 1]``
+Run: ``.venv/bin/python benchmarks/stage_times.py [--rooms 12000] [--preset map_analysis|my.yaml] [--repeat 1]``
 
 ``samples.dungeon(seed=0, rooms=N)`` (12,000 rooms: 100,781 navmesh
 polygons) runs through the preset in this process. For each stage it prints
@@ -21,7 +21,7 @@ import resource
 import time
 
 from g2s_core import pipeline
-from g2s_core.config import PRESETS_DIR, load_config
+from g2s_core.config import find_config, load_config
 from g2s_core.mesh import mesh_sha256
 from g2s_core.registry import Registry
 from g2s_core.stages import PIPELINE
@@ -50,11 +50,11 @@ def stage_times(plan: pipeline.Plan, registry: Registry, rooms: int) -> tuple[li
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--rooms", type=int, default=12000)
-    parser.add_argument("--preset", default="map_analysis")
+    parser.add_argument("--preset", default="map_analysis", help="a preset name or a config file (e.g. one extending a preset)")
     parser.add_argument("--repeat", type=int, default=1)
     args = parser.parse_args()
     registry = Registry.from_entry_points()
-    plan = pipeline.plan(load_config(PRESETS_DIR / f"{args.preset}.yaml"), registry, args.preset)
+    plan = pipeline.plan(load_config(find_config(args.preset)), registry, args.preset)
     print(f"machine: {platform.machine()}, {os.cpu_count()} cores, Python {platform.python_version()}; "
           f"preset {args.preset}, dungeon of {args.rooms} rooms")
     for run in range(args.repeat):

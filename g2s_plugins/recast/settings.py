@@ -105,7 +105,9 @@ class RecastParams(PluginParams):
     filter_ledge_spans: bool = Field(
         True,
         description="Recast's rcFilterLedgeSpans: drop spans next to a drop deeper than max_climb "
-        "(also removes stair treads whose risers are close to max_climb)",
+        "(also removes stair treads whose risers are close to max_climb, and slopes under max_slope steeper than "
+        "about atan(max_climb / (2 cell_size))); false: the navmesh comes up to one cell closer than the agent's "
+        "radius to a drop (docs/navmesh.md)",
     )
     filter_low_height_spans: bool = Field(
         True, description="Recast's rcFilterWalkableLowHeightSpans: drop spans with less head room than the agent"
