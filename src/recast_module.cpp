@@ -1106,6 +1106,16 @@ public:
         }
     }
 
+    // The surface_los predicate's line of sight from a to b (world coordinates, float64), once the polygon nearest a
+    // is found (startRef, 0 for none; start: the point on it): ray_from's raycast reaches b and, unless max_gap is
+    // none, segment_gap along a -> b stays within max_gap.
+    bool sees(dtPolyRef startRef, const float* start, const double* a, const double* b, double step, float horizontal,
+              std::optional<double> max_gap, std::vector<dtPolyRef>& path) const {
+        const float fb[3] = {static_cast<float>(b[0]), static_cast<float>(b[1]), static_cast<float>(b[2])};
+        if (startRef == 0 || !ray_from(startRef, start, fb, path).first) return false;
+        return !max_gap || segment_gap(a, b, step, horizontal, static_cast<float>(*max_gap)) <= *max_gap;
+    }
+
     // Vertical distance from p to the walkable surface, FLT_MAX when there is none within `reach`:
     // to the detail surface straight above or below p on the polygons p lies over (the nearest
     // in height); over none of them (p beside a polygon's edge), to the nearest boundary point
@@ -1762,8 +1772,8 @@ using ValuesIn = nb::ndarray<const double, nb::ndim<1>, nb::c_contig, nb::device
 using PairsIn = nb::ndarray<const int64_t, nb::shape<-1, 2>, nb::c_contig, nb::device::cpu>;
 
 // Algorithm 5's collapse rule as g2s_plugins/_surface.py's collapse_rule states it, on the forest's arrays (node
-// indices), with the surface_los predicate's line of sight (the line_of_sight binding's two tests). The same
-// floating-point steps as the Python rule, so the same answers: the normals' lengths come from Python's
+// indices), with the surface_los predicate's line of sight (NavMeshCore::sees, the line_of_sight binding's test).
+// The same floating-point steps as the Python rule, so the same answers: the normals' lengths come from Python's
 // math.hypot, the angle is acos of the clamped cosine times 180 / pi (math.degrees), the traffic test the
 // difference of two percentiles.
 struct SurfaceRule {
@@ -1806,15 +1816,12 @@ struct SurfaceRule {
         if (!on_navmesh[c] && c_is_leaf) return false;
         if (step_too_large(a, b, c) || bent(a, b) || (whole_chain && (bent(b, c) || bent(a, c)))) return false;
         const double* pa = points + 3 * a;
-        const double* pc = points + 3 * c;
-        const float fc[3] = {static_cast<float>(pc[0]), static_cast<float>(pc[1]), static_cast<float>(pc[2])};
         if (a != from) {
             const float fa[3] = {static_cast<float>(pa[0]), static_cast<float>(pa[1]), static_cast<float>(pa[2])};
             from = a;
             if (dtStatusFailed(nav.query->findNearestPoly(fa, nav.default_ext, &nav.filter, &start_ref, start))) start_ref = 0;
         }
-        if (start_ref == 0 || !nav.ray_from(start_ref, start, fc, path).first) return false;
-        return !max_gap || nav.segment_gap(pa, pc, step, horizontal, static_cast<float>(*max_gap)) <= *max_gap;
+        return nav.sees(start_ref, start, pa, points + 3 * c, step, horizontal, max_gap, path);
     }
 };
 
@@ -1972,13 +1979,14 @@ NB_MODULE(_recast, m) {
         .def("line_of_sight",
              [](const NavMeshCore& n, Vec3In a, Vec3In b, double step, float horizontal, std::optional<double> max_gap) {
                  if (!(step > 0)) throw nb::value_error("step must be positive");
-                 float pa[3], pb[3];
-                 get3(a, pa); get3(b, pb);
+                 float pa[3], start[3];
+                 get3(a, pa);
                  thread_local std::vector<dtPolyRef> path(256);  // raycast's corridor, kept between the calls
                  nb::gil_scoped_release release;
                  std::lock_guard<std::mutex> lock(n.mutex);
-                 if (!n.ray(pa, pb, n.default_ext, path).first) return false;
-                 return !max_gap || n.segment_gap(a.data(), b.data(), step, horizontal, static_cast<float>(*max_gap)) <= *max_gap;
+                 dtPolyRef start_ref = 0;
+                 if (dtStatusFailed(n.query->findNearestPoly(pa, n.default_ext, &n.filter, &start_ref, start))) start_ref = 0;
+                 return n.sees(start_ref, start, a.data(), b.data(), step, horizontal, max_gap, path);
              },
              nb::arg("a"), nb::arg("b"), nb::arg("step"), nb::arg("horizontal"), nb::arg("max_gap").none(),
              "raycast(a, b) is clear and, unless max_gap is None, segment_surface_gap(a, b, step, horizontal, "
