@@ -518,6 +518,13 @@ std::vector<int32_t> redo_detail_off_storey(LogContext& ctx, const rcPolyMesh& p
 // edge samples far apart across the bend and their insides pass over the trough or under the crest,
 // and nothing checks them.
 
+// Detail vertex k of `dm` in `chf`'s grid: (x, y, z) in columns and cell heights, y one cell height down (Recast puts
+// a detail vertex one cell height up).
+std::array<double, 3> detail_vertex_cells(const rcPolyMeshDetail& dm, unsigned int k, const rcCompactHeightfield& chf) {
+    const float* v = &dm.verts[k * 3];
+    return {(v[0] - chf.bmin[0]) / chf.cs, (v[1] - chf.bmin[1]) / chf.ch - 1.0, (v[2] - chf.bmin[2]) / chf.cs};
+}
+
 // The largest distance (cell heights) of polygon `i`'s detail (mesh `mesh` of `dm`) from the floor
 // under it: at points of each detail triangle (along its edges half a column apart, and over the
 // centre of each column inside it), the triangle's height against the span of the polygon's region
@@ -542,12 +549,12 @@ double detail_floor_gap(const rcPolyMesh& pm, const rcPolyMeshDetail& dm, int me
     };
     const unsigned int vb = dm.meshes[mesh * 4 + 0], tb = dm.meshes[mesh * 4 + 2], nt = dm.meshes[mesh * 4 + 3];
     for (unsigned int t = tb; t < tb + nt; ++t) {
-        double x[3], z[3], y[3];  // columns and cell heights; Recast puts a detail vertex one cell height up
+        double x[3], z[3], y[3];  // columns and cell heights
         for (int k = 0; k < 3; ++k) {
-            const float* v = &dm.verts[(vb + dm.tris[t * 4 + k]) * 3];
-            x[k] = (v[0] - chf.bmin[0]) / chf.cs;
-            y[k] = (v[1] - chf.bmin[1]) / chf.ch - 1.0;
-            z[k] = (v[2] - chf.bmin[2]) / chf.cs;
+            const std::array<double, 3> cells = detail_vertex_cells(dm, vb + dm.tris[t * 4 + k], chf);
+            x[k] = cells[0];
+            y[k] = cells[1];
+            z[k] = cells[2];
         }
         // Along the edges, half a column apart (a sliver may cover no column's centre) ...
         for (int k = 0; k < 3; ++k) {
@@ -608,9 +615,7 @@ bool detail_floor_gap_within(const rcPolyMesh& pm, const rcPolyMeshDetail& dm, i
     if (nv == 0) return true;
     double lo_x = DBL_MAX, hi_x = -DBL_MAX, lo_z = DBL_MAX, hi_z = -DBL_MAX, lo_y = DBL_MAX, hi_y = -DBL_MAX;
     for (unsigned int k = vb; k < vb + nv; ++k) {  // as detail_floor_gap converts them
-        const float* v = &dm.verts[k * 3];
-        const double x = (v[0] - chf.bmin[0]) / chf.cs, y = (v[1] - chf.bmin[1]) / chf.ch - 1.0,
-                     z = (v[2] - chf.bmin[2]) / chf.cs;
+        const auto [x, y, z] = detail_vertex_cells(dm, k, chf);
         lo_x = std::min(lo_x, x); hi_x = std::max(hi_x, x);
         lo_y = std::min(lo_y, y); hi_y = std::max(hi_y, y);
         lo_z = std::min(lo_z, z); hi_z = std::max(hi_z, z);
