@@ -4,6 +4,8 @@
 from __future__ import annotations
 
 import math
+import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -80,3 +82,40 @@ def test_slivers_beside_a_floor_are_not_refused():
 def test_the_check_raises_through_the_api_too():
     with pytest.raises(G2SError, match="the faces have next to no area"):
         g2s_core.run(slivers(20_000, 8.0), "map_analysis", stop_after="graph")
+
+
+def test_an_interrupt_after_the_command_leaves_its_exit_code(tmp_path):
+    # a Ctrl-C (or SIGTERM) while the interpreter wound down after a run (1.3 s after one of 584 polygons) killed g2s
+    # by SIGINT without a word, its results written: a status of 130 over a finished run
+    script = (
+        "import os, signal, sys\n"
+        "from g2s_core import entry\n"
+        f"sys.argv = ['g2s', 'run', 'graph_only', 'sample:straight_corridor', '-q', '-o', {str(tmp_path / 'out')!r}]\n"
+        "code = entry.main()\n"
+        "os.kill(os.getpid(), signal.SIGINT)\n"
+        "os.kill(os.getpid(), signal.SIGTERM)\n"
+        "sys.exit(code)\n"
+    )
+    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=120)
+    assert (done.returncode, done.stderr) == (0, "")
+    assert tree(tmp_path / "out") == ["graph.json"]
+
+
+@pytest.mark.parametrize("data, says", [
+    (b"hello world\n", "not a GLB file: it starts with b'hell', not b'glTF'"),
+    (bytes(range(200, 256)) * 20, "not a GLB file: it starts with b'\\xc8\\xc9\\xca\\xcb', not b'glTF'"),
+    (b'{"asset": {"version": "2.0"}}', "not a GLB file: it starts with b'{\"as', not b'glTF' (glTF's JSON text: name the file .gltf)"),
+])
+def test_a_glb_file_that_is_none_says_so(data, says, tmp_path, capsys):
+    # was "cannot read mesh (ValueError: incorrect header on GLB file)", a Python exception's words
+    path = tmp_path / "level.glb"
+    path.write_bytes(data)
+    outcome = run_g2s(capsys, "run", "graph_only", path, "-o", tmp_path / "out")
+    assert assert_clean_error(outcome) == f"g2s: error: {path}: {says}"
+
+
+def test_the_python_api_names_its_own_formats_parameter(tmp_path):
+    result = g2s_core.run("sample:straight_corridor", "graph_only")
+    with pytest.raises(G2SError, match=r"^formats: unknown output format 'jsno' \(expected some of: "):  # was "--format: ..."
+        result.write(tmp_path / "out", formats=["jsno"])
+    assert not (tmp_path / "out").exists()
