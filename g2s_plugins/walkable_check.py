@@ -61,9 +61,10 @@ MAX_SURFACE_OVER_FACES = 100.0
 """Walkable area a graph builder found over the plan area of the mesh's faces that face up (within the agent's max
 slope) above which the surface is refused (:func:`check_walkable_surface`): Recast marks every cell a face touches,
 so faces with next to no area (corners on a line, to rounding) can cover a level's plan with floor. Measured
-(docs/errors.md, robust8): 0.24 to 0.98 on the 47 sample levels, ``nav_test.obj`` and the shared pieces; 4.3 to 42
-on floors of bars 5 mm to 2 cm wide every 10 to 25 cm (Recast fills the gaps under a cell, a walkable grating);
-10^6 triangles with their corners on a line, alone: 400 m² of navmesh on 1.4e-10 m² of faces, none facing up."""
+(docs/errors.md, robust8): 0.24 to 0.98 on the 47 sample levels, ``nav_test.obj`` and ``Ramp.obj`` (navmesh; 0.29 to
+1.02 sampled); 4.3 to 42 on floors of bars 5 mm to 2 cm wide every 10 to 25 cm (Recast fills the gaps under a cell,
+a walkable grating); 10^6 triangles with their corners on a line, alone: 416 m² of navmesh on 1.4e-10 m² of faces,
+none facing up."""
 
 RAY_START = 1e-3
 """Height over a face's centre the headroom ray of :func:`hidden_floor_bodies` starts at, metres: clear of the face."""
