@@ -1,5 +1,7 @@
-"""Inputs robust8 (4 December 2026) found read silently wrong: a mesh of triangles whose corners lie on a line
-(no area, to rounding) gave a structure, Recast having filled every cell they touch with floor."""
+"""Inputs robust8 (4 December 2026) found read silently wrong or told in other words: a mesh of triangles whose
+corners lie on a line (no area, to rounding) gave a structure, Recast having filled every cell they touch with floor;
+a ``.glb`` that is not one was a Python exception's words; an interrupt while the interpreter wound down after a run
+killed g2s by SIGINT without a word; the Python API's ``write`` named ``--format``."""
 
 from __future__ import annotations
 
