@@ -27,6 +27,8 @@ levels the check costs a sum over the nodes; the inside-out count (20 to
 A walkable surface more than :data:`MAX_SURFACE_OVER_FACES` times the plan
 area of the faces that face up is refused: it stands on faces without area
 (corners on a line), whose every touched cell Recast takes for floor.
+Its cost, the faces' normals and areas: 10 ms of CPU on the 56,268 faces
+of ``dungeon?rooms=400``, 0.6 s on 10^6.
 """
 
 from __future__ import annotations
