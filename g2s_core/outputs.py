@@ -84,7 +84,7 @@ def check_outdir(
             results exist without ``force``, a result file would be an
             input file, or a folder has a result file's name.
     """
-    names = parse_formats(formats, registry=registry)
+    names = parse_formats(formats, "formats", registry=registry)  # the API's parameter: the command line checked its own
     check_writable(outdir)
     every = result_paths(outdir, registry=registry)
     refuse_inputs(outdir, every, protect)

@@ -222,9 +222,7 @@ def _loaded(value: Any, kwargs: Mapping[str, Any], plugin: Any) -> str | None:
 
 
 def _level(value: Any, kwargs: Mapping[str, Any], plugin: Any) -> str | None:
-    if not isinstance(value, trimesh.Trimesh) or len(value.faces) == 0:
-        return f"{type(value).__name__}, not a trimesh.Trimesh with triangles"
-    return None
+    return None if isinstance(value, trimesh.Trimesh) and len(value.faces) else f"{type(value).__name__}, not a trimesh.Trimesh with triangles"
 
 
 STAGES: tuple[Stage, ...] = (

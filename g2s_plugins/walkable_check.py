@@ -23,6 +23,12 @@ inside is wound inwards on purpose and does not count). No correct level
 measured above :data:`SMALL_MESH_FACES` faces is suspicious, so on big
 levels the check costs a sum over the nodes; the inside-out count (20 to
 110 µs a face) runs only on the suspicious path and on the error.
+
+A walkable surface more than :data:`MAX_SURFACE_OVER_FACES` times the plan
+area of the faces that face up is refused: it stands on faces without area
+(corners on a line), whose every touched cell Recast takes for floor.
+Its cost, the faces' normals and areas: 10 ms of CPU on the 56,268 faces
+of ``dungeon?rooms=400``, 0.6 s on 10^6.
 """
 
 from __future__ import annotations
@@ -52,6 +58,15 @@ SMALL_MESH_SHARE = 0.5
 """Walkable share under which a small mesh is looked at for inside-out bodies: the damaged small runs measured
 under it all warn (the inside-out Hallway piece: 0.152); correct ones under it (0.137 to 0.481) pay the count
 and stay silent, as the cause test, not the share, keeps them so (docs/errors.md)."""
+
+MAX_SURFACE_OVER_FACES = 100.0
+"""Walkable area a graph builder found over the plan area of the mesh's faces that face up (within the agent's max
+slope) above which the surface is refused (:func:`check_walkable_surface`): Recast marks every cell a face touches,
+so faces with next to no area (corners on a line, to rounding) can cover a level's plan with floor. Measured
+(docs/errors.md, robust8): 0.24 to 0.98 on the 47 sample levels, ``nav_test.obj`` and ``Ramp.obj`` (navmesh; 0.29 to
+1.02 sampled); 4.3 to 42 on floors of bars 5 mm to 2 cm wide every 10 to 25 cm (Recast fills the gaps under a cell,
+a walkable grating); 10^6 triangles with their corners on a line, alone: 416 m² of navmesh on 1.4e-10 m² of faces,
+none facing up."""
 
 RAY_START = 1e-3
 """Height over a face's centre the headroom ray of :func:`hidden_floor_bodies` starts at, metres: clear of the face."""
@@ -96,6 +111,14 @@ def walkable_share(graph: nx.Graph, mesh: trimesh.Trimesh) -> float:
     footprint = footprint_area(mesh)
     walkable = math.fsum(area for _, area in graph.nodes(data="area", default=0.0))
     return walkable / footprint if footprint > 0 else math.inf
+
+
+def upward_plan_area(mesh: trimesh.Trimesh, max_slope: float) -> float:
+    """Plan area (x by z, m²) of the mesh's faces within ``max_slope`` degrees of facing up; a face without area
+    has no normal (trimesh gives it 0) and adds nothing."""
+    normals_y = np.asarray(mesh.face_normals)[:, 1]
+    up = normals_y >= math.cos(math.radians(max_slope))
+    return float(np.asarray(mesh.area_faces)[up] @ normals_y[up])
 
 
 def height_ratio(mesh: trimesh.Trimesh) -> float:
@@ -221,6 +244,17 @@ UP_AXIS_HINT = ("most flat faces face along z, not y: if the file is Z-up, set `
                 "(or `y` if it is already z)")
 
 
+def has_no_area(mesh: trimesh.Trimesh) -> bool:
+    """Whether no face of ``mesh`` has area in the single precision the graph builders read it in: each face's
+    height (twice its area over its longest edge, m) is at most the spacing of single-precision numbers at the
+    mesh's largest coordinate, so its corners lie on a line or at one point, exactly or to the rounding of the
+    file's digits (10^6 such triangles measured, docs/errors.md robust8)."""
+    triangles = np.asarray(mesh.triangles)
+    longest = np.sqrt(np.max(np.sum((triangles - np.roll(triangles, 1, axis=1)) ** 2, axis=2), axis=1))
+    resolution = np.finfo(np.float32).eps * float(np.max(np.abs(triangles), initial=0.0))
+    return bool(np.all(2 * np.asarray(mesh.area_faces) <= resolution * longest))
+
+
 def likely_causes(mesh: trimesh.Trimesh, agent: AgentConfig, winding: bool = True,
                   graph: nx.Graph | None = None) -> list[str]:
     """What most likely made the walkable surface wrong for ``agent``, each naming the key to change.
@@ -230,7 +264,7 @@ def likely_causes(mesh: trimesh.Trimesh, agent: AgentConfig, winding: bool = Tru
     one that :func:`walks_upright` clears the up axis; without one, only a flat area along z over
     :data:`Z_UP_UNWALKED_RATIO` times that along y names it.
     """
-    if not np.asarray(mesh.area_faces).any():  # a degenerate export, whatever its frame or winding
+    if has_no_area(mesh):  # a degenerate export, whatever its frame or winding
         return [ZERO_AREA_HINT]
     if graph is None:
         z_up = flat_area_ratio(mesh, agent.max_slope) > Z_UP_UNWALKED_RATIO
@@ -270,7 +304,20 @@ def looks_for_winding(share: float, faces: int) -> bool:
 
 
 def check_walkable_surface(graph: nx.Graph, mesh: trimesh.Trimesh, context: RunContext) -> None:
-    """Warn through ``context`` (one line) when ``graph``'s walkable surface looks like a misread mesh (module doc)."""
+    """Warn through ``context`` (one line) when ``graph``'s walkable surface looks like a misread mesh (module doc).
+
+    Raises:
+        G2SError: the surface is more than :data:`MAX_SURFACE_OVER_FACES` times the plan area of the faces
+            that face up: it stands on faces with next to no area, and the file holds no floor to walk on.
+    """
+    walkable = math.fsum(area for _, area in graph.nodes(data="area", default=0.0))
+    faces = upward_plan_area(mesh, context.agent.max_slope)
+    if walkable > MAX_SURFACE_OVER_FACES * faces:
+        raise G2SError(
+            f"the walkable surface found ({walkable:.3g} m²) is more than {MAX_SURFACE_OVER_FACES:g} times the plan "
+            f"area of the faces that face up ({faces:.3g} m²): the faces have next to no area (corners on a line or "
+            "at one point) and the graph builder filled the cells they touch; export the mesh again"
+        )
     share = walkable_share(graph, mesh)
     winding, tall = looks_for_winding(share, len(mesh.faces)), height_ratio(mesh) > MAX_HEIGHT_RATIO
     if not (winding or tall):

@@ -518,6 +518,13 @@ std::vector<int32_t> redo_detail_off_storey(LogContext& ctx, const rcPolyMesh& p
 // edge samples far apart across the bend and their insides pass over the trough or under the crest,
 // and nothing checks them.
 
+// Detail vertex k of `dm` in `chf`'s grid: (x, y, z) in columns and cell heights, y one cell height down (Recast puts
+// a detail vertex one cell height up).
+std::array<double, 3> detail_vertex_cells(const rcPolyMeshDetail& dm, unsigned int k, const rcCompactHeightfield& chf) {
+    const float* v = &dm.verts[k * 3];
+    return {(v[0] - chf.bmin[0]) / chf.cs, (v[1] - chf.bmin[1]) / chf.ch - 1.0, (v[2] - chf.bmin[2]) / chf.cs};
+}
+
 // The largest distance (cell heights) of polygon `i`'s detail (mesh `mesh` of `dm`) from the floor
 // under it: at points of each detail triangle (along its edges half a column apart, and over the
 // centre of each column inside it), the triangle's height against the span of the polygon's region
@@ -542,12 +549,12 @@ double detail_floor_gap(const rcPolyMesh& pm, const rcPolyMeshDetail& dm, int me
     };
     const unsigned int vb = dm.meshes[mesh * 4 + 0], tb = dm.meshes[mesh * 4 + 2], nt = dm.meshes[mesh * 4 + 3];
     for (unsigned int t = tb; t < tb + nt; ++t) {
-        double x[3], z[3], y[3];  // columns and cell heights; Recast puts a detail vertex one cell height up
+        double x[3], z[3], y[3];  // columns and cell heights
         for (int k = 0; k < 3; ++k) {
-            const float* v = &dm.verts[(vb + dm.tris[t * 4 + k]) * 3];
-            x[k] = (v[0] - chf.bmin[0]) / chf.cs;
-            y[k] = (v[1] - chf.bmin[1]) / chf.ch - 1.0;
-            z[k] = (v[2] - chf.bmin[2]) / chf.cs;
+            const std::array<double, 3> cells = detail_vertex_cells(dm, vb + dm.tris[t * 4 + k], chf);
+            x[k] = cells[0];
+            y[k] = cells[1];
+            z[k] = cells[2];
         }
         // Along the edges, half a column apart (a sliver may cover no column's centre) ...
         for (int k = 0; k < 3; ++k) {
@@ -608,9 +615,7 @@ bool detail_floor_gap_within(const rcPolyMesh& pm, const rcPolyMeshDetail& dm, i
     if (nv == 0) return true;
     double lo_x = DBL_MAX, hi_x = -DBL_MAX, lo_z = DBL_MAX, hi_z = -DBL_MAX, lo_y = DBL_MAX, hi_y = -DBL_MAX;
     for (unsigned int k = vb; k < vb + nv; ++k) {  // as detail_floor_gap converts them
-        const float* v = &dm.verts[k * 3];
-        const double x = (v[0] - chf.bmin[0]) / chf.cs, y = (v[1] - chf.bmin[1]) / chf.ch - 1.0,
-                     z = (v[2] - chf.bmin[2]) / chf.cs;
+        const auto [x, y, z] = detail_vertex_cells(dm, k, chf);
         lo_x = std::min(lo_x, x); hi_x = std::max(hi_x, x);
         lo_y = std::min(lo_y, y); hi_y = std::max(hi_y, y);
         lo_z = std::min(lo_z, z); hi_z = std::max(hi_z, z);
@@ -1104,6 +1109,16 @@ public:
             const bool ok = std::fabs(closest[1] - b[1]) <= climb_tolerance;
             return {ok, hit.t};
         }
+    }
+
+    // The surface_los predicate's line of sight from a to b (world coordinates, float64), once the polygon nearest a
+    // is found (startRef, 0 for none; start: the point on it): ray_from's raycast reaches b and, unless max_gap is
+    // none, segment_gap along a -> b stays within max_gap.
+    bool sees(dtPolyRef startRef, const float* start, const double* a, const double* b, double step, float horizontal,
+              std::optional<double> max_gap, std::vector<dtPolyRef>& path) const {
+        const float fb[3] = {static_cast<float>(b[0]), static_cast<float>(b[1]), static_cast<float>(b[2])};
+        if (startRef == 0 || !ray_from(startRef, start, fb, path).first) return false;
+        return !max_gap || segment_gap(a, b, step, horizontal, static_cast<float>(*max_gap)) <= *max_gap;
     }
 
     // Vertical distance from p to the walkable surface, FLT_MAX when there is none within `reach`:
@@ -1762,8 +1777,8 @@ using ValuesIn = nb::ndarray<const double, nb::ndim<1>, nb::c_contig, nb::device
 using PairsIn = nb::ndarray<const int64_t, nb::shape<-1, 2>, nb::c_contig, nb::device::cpu>;
 
 // Algorithm 5's collapse rule as g2s_plugins/_surface.py's collapse_rule states it, on the forest's arrays (node
-// indices), with the surface_los predicate's line of sight (the line_of_sight binding's two tests). The same
-// floating-point steps as the Python rule, so the same answers: the normals' lengths come from Python's
+// indices), with the surface_los predicate's line of sight (NavMeshCore::sees, the line_of_sight binding's test).
+// The same floating-point steps as the Python rule, so the same answers: the normals' lengths come from Python's
 // math.hypot, the angle is acos of the clamped cosine times 180 / pi (math.degrees), the traffic test the
 // difference of two percentiles.
 struct SurfaceRule {
@@ -1806,15 +1821,12 @@ struct SurfaceRule {
         if (!on_navmesh[c] && c_is_leaf) return false;
         if (step_too_large(a, b, c) || bent(a, b) || (whole_chain && (bent(b, c) || bent(a, c)))) return false;
         const double* pa = points + 3 * a;
-        const double* pc = points + 3 * c;
-        const float fc[3] = {static_cast<float>(pc[0]), static_cast<float>(pc[1]), static_cast<float>(pc[2])};
         if (a != from) {
             const float fa[3] = {static_cast<float>(pa[0]), static_cast<float>(pa[1]), static_cast<float>(pa[2])};
             from = a;
             if (dtStatusFailed(nav.query->findNearestPoly(fa, nav.default_ext, &nav.filter, &start_ref, start))) start_ref = 0;
         }
-        if (start_ref == 0 || !nav.ray_from(start_ref, start, fc, path).first) return false;
-        return !max_gap || nav.segment_gap(pa, pc, step, horizontal, static_cast<float>(*max_gap)) <= *max_gap;
+        return nav.sees(start_ref, start, pa, points + 3 * c, step, horizontal, max_gap, path);
     }
 };
 
@@ -1972,13 +1984,14 @@ NB_MODULE(_recast, m) {
         .def("line_of_sight",
              [](const NavMeshCore& n, Vec3In a, Vec3In b, double step, float horizontal, std::optional<double> max_gap) {
                  if (!(step > 0)) throw nb::value_error("step must be positive");
-                 float pa[3], pb[3];
-                 get3(a, pa); get3(b, pb);
+                 float pa[3], start[3];
+                 get3(a, pa);
                  thread_local std::vector<dtPolyRef> path(256);  // raycast's corridor, kept between the calls
                  nb::gil_scoped_release release;
                  std::lock_guard<std::mutex> lock(n.mutex);
-                 if (!n.ray(pa, pb, n.default_ext, path).first) return false;
-                 return !max_gap || n.segment_gap(a.data(), b.data(), step, horizontal, static_cast<float>(*max_gap)) <= *max_gap;
+                 dtPolyRef start_ref = 0;
+                 if (dtStatusFailed(n.query->findNearestPoly(pa, n.default_ext, &n.filter, &start_ref, start))) start_ref = 0;
+                 return n.sees(start_ref, start, a.data(), b.data(), step, horizontal, max_gap, path);
              },
              nb::arg("a"), nb::arg("b"), nb::arg("step"), nb::arg("horizontal"), nb::arg("max_gap").none(),
              "raycast(a, b) is clear and, unless max_gap is None, segment_surface_gap(a, b, step, horizontal, "

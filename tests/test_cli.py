@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import os
+import re
 import signal
 import subprocess
 import sys
@@ -435,3 +436,18 @@ def test_run_says_what_came_out_after_the_stage_table(preset, level, says, tmp_p
     assert main(["run", preset, level, "-o", str(tmp_path / "out")]) == 0
     lines = capsys.readouterr().out.splitlines()
     assert says in lines and lines.index(says) == lines.index(next(l for l in lines if l.startswith("wrote "))) - 1
+
+
+def test_the_outcome_line_counts_the_warnings_above_it(tmp_path, capsys):
+    # robust8: a heat guarantee short of its target (or any warning) was one stderr line above the stage table, and
+    # the last line a new user reads, what came out, did not hint at it
+    def outcome(*overrides: str) -> tuple[str, str]:
+        assert main(["run", "map_analysis", "sample:dungeon", *overrides, "-o", str(tmp_path / str(len(overrides)))]) == 0
+        captured = capsys.readouterr()
+        return next(line for line in captured.out.splitlines() if line.startswith("dungeon: ")), captured.err
+
+    said, warned = outcome()
+    assert re.fullmatch(r"dungeon: \d+ structure nodes", said) and warned == ""
+    said, warned = outcome("--set", "simplify.params.min_heat_rho=1")
+    assert warned.count("g2s: warning: the heat map ranks the polygons") == 1 and warned.count("g2s: warning:") == 1
+    assert re.fullmatch(r"dungeon: \d+ structure nodes; 1 warning above", said)

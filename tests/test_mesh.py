@@ -81,7 +81,7 @@ def test_cleaning_keeps_the_up_facing_side_of_two_sided_floors():
         ("empty.obj", b"", "the file is empty (0 bytes)"),
         ("points.obj", b"v 0 0 0\nv 1 0 0\nv 0 1 0\n", "no triangles"),
         ("nan.obj", b"v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n", "line 2: vertex coordinate 'nan' is not a finite number"),
-        ("junk.glb", b"not a glb file at all", "cannot read mesh"),
+        ("junk.glb", b"not a glb file at all", "not a GLB file: it starts with b'not ', not b'glTF'"),
     ],
 )
 def test_bad_meshes_are_one_line_errors(tmp_path, name, content, message):

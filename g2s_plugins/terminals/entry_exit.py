@@ -823,9 +823,10 @@ def main_floor(
     the polygons whose boundary looks out of the piece (step 2's segments); given, a floor the agent
     can leave comes first, roof or not: a floor walled all round holds no opening whatever its size
     (a bridge's deck lies over the closed trough under it, which the roof test alone would keep); and
-    with a floor that leaves, every other one that leaves too, is no roof and whose lowest point lies
-    within the climb of the main one's: the parts of a corridor cut by a barrier or by a pass
-    narrower than Recast keeps; not a wall's top, a roof or a ravine's floor below a bridge.
+    with a floor that leaves, every other one that leaves too, is no roof and whose lowest polygon lies
+    within the climb of the main one's (a polygon's height is its first corner's, not its lowest): the parts
+    of a corridor cut by a barrier or by a pass narrower than Recast keeps; not a wall's top, a roof or a
+    ravine's floor below a bridge.
     """
     neighbours = np.asarray(navmesh.neighbours)
     if len(neighbours) == 0:
