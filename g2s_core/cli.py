@@ -226,15 +226,17 @@ def _run(args: argparse.Namespace, errors: Console, mesh_name: str | None = None
         Output().out(json.dumps(_summary(result, args.outdir, formats, written), indent=1, sort_keys=True), highlight=False)
         return 0
     if mesh.cleaning and not quiet:  # after the run, so that an error stays the one line on stderr
-        errors.print("cleaning: " + ", ".join(f"{n} {what.replace('_', ' ')}" for what, n in mesh.cleaning.items()), markup=False, highlight=False, soft_wrap=True)
+        counts = ", ".join(f"{count} {what.replace('_', ' ')}" for what, count in mesh.cleaning.items())
+        errors.print(f"cleaning: {counts}", markup=False, highlight=False, soft_wrap=True)
     for warning in () if live else result.warnings:  # else they were shown above the spinner
         _warn(errors, warning)
     if not args.quiet:
         console = Output()
         console.print(stage_table(result, title=mesh.name))
-        if said := outcome(result):  # and how many warnings: on stderr above the stage table, a new user reads past them
-            count = len(result.warnings)
-            console.print(f"{mesh.name}: {said}" + (f"; {count} warning{'s' * (count > 1)} above" if count else ""), markup=False, highlight=False, soft_wrap=True)
+        if said := outcome(result):
+            if count := len(result.warnings):  # they stand on stderr above the stage table, where a new user reads past them
+                said += f"; {count} warning{'s' * (count > 1)} above"
+            console.print(f"{mesh.name}: {said}", markup=False, highlight=False, soft_wrap=True)
         for label, measures in metric_lines(result):
             console.print(f"{label}: {measures}", markup=False, highlight=False, soft_wrap=True)
         for path in written:

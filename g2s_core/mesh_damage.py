@@ -80,9 +80,11 @@ def describe_damage(path: Path, data: bytes) -> str | None:
     announced = int.from_bytes(data[8:GLB_HEADER], "little")
     if suffix == ".glb" and size >= GLB_HEADER and data.startswith(b"glTF") and size < announced:
         return f"the GLB file ends early (its header announces {announced} bytes, the file has {size})"
-    if suffix == ".glb":  # trimesh's "incorrect header on GLB file" named a ValueError
-        return _glb_damage(data, path.parent) if data.startswith(b"glTF") else f"not a GLB file: it starts with {data[:4]!r}, not b'glTF'" + (
-            " (glTF's JSON text: name the file .gltf)" if data.lstrip().startswith(b"{") else "")
+    if suffix == ".glb" and data.startswith(b"glTF"):
+        return _glb_damage(data, path.parent)
+    if suffix == ".glb":  # else trimesh's "incorrect header on GLB file", named as a ValueError
+        hint = " (glTF's JSON text: name the file .gltf)" if data.lstrip().startswith(b"{") else ""
+        return f"not a GLB file: it starts with {data[:4]!r}, not b'glTF'{hint}"
     if suffix == ".gltf":
         document = _json(data)
         return f"not valid glTF JSON ({document})" if isinstance(document, str) else _gltf_damage(document, path.parent, None)

@@ -222,7 +222,9 @@ def _loaded(value: Any, kwargs: Mapping[str, Any], plugin: Any) -> str | None:
 
 
 def _level(value: Any, kwargs: Mapping[str, Any], plugin: Any) -> str | None:
-    return None if isinstance(value, trimesh.Trimesh) and len(value.faces) else f"{type(value).__name__}, not a trimesh.Trimesh with triangles"
+    if not isinstance(value, trimesh.Trimesh) or len(value.faces) == 0:
+        return f"{type(value).__name__}, not a trimesh.Trimesh with triangles"
+    return None
 
 
 STAGES: tuple[Stage, ...] = (

@@ -42,7 +42,7 @@ def stage_rows(stages: Sequence[StageStats]) -> list[tuple[str, str, str, str, s
         if stats is None:
             continue
         nodes = stats.terminals if stage.key == "terminals" else stats.nodes
-        rows.append((stage.step, stage.label, milliseconds(stats.seconds), *("" if n is None else str(n) for n in (nodes, stats.edges))))
+        rows.append((stage.step, stage.label, milliseconds(stats.seconds), _count(nodes), _count(stats.edges)))
     rows.append(("total", "", milliseconds(sum(s.seconds for s in stages)), "", ""))
     return rows
 
@@ -67,3 +67,7 @@ def metric_lines(result: RunResult) -> list[tuple[str, str]]:
 def milliseconds(seconds: float | None) -> str:
     """``seconds`` in milliseconds to 0.1 ms, for the stage tables; empty when unknown (None, NaN, inf)."""
     return "" if seconds is None or not math.isfinite(seconds) else f"{seconds * 1000:.1f}"
+
+
+def _count(value: int | None) -> str:
+    return "" if value is None else str(value)
