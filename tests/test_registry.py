@@ -347,6 +347,24 @@ def test_two_installed_plugins_of_one_name_stop_the_runs_that_ask_for_it(monkeyp
 OTHER_FIRST_K = terminal_plugin("first_k")
 
 
+def test_a_distribution_without_a_name_does_not_stop_the_listing(monkeypatch):
+    # importlib.metadata gives a distribution whose METADATA is missing or half written (a pip install under way)
+    # the name None: sorting None beside a package's name was a TypeError, an internal error of every command
+    import importlib.metadata
+
+    def entry_point(package, name, plugin):
+        return types.SimpleNamespace(name=f"terminals.{name}", value=f"x.{name}", dist=types.SimpleNamespace(name=package),
+                                     load=lambda: plugin)
+
+    found = [entry_point("pkg-a", "first_k", FIRST_K), entry_point(None, "other", OTHER_K)]
+    monkeypatch.setattr(importlib.metadata, "entry_points", lambda group: found)
+    registry = Registry.from_entry_points()
+    assert [(p.name, p.package) for p in registry.plugins()] == [("first_k", "pkg-a"), ("other", "?")]
+
+
+OTHER_K = terminal_plugin("other")
+
+
 def test_entry_points_load_when_their_stage_is_first_asked_for(monkeypatch):
     """``<stage>.<name>`` entry points load with their stage, the others with the first stage asked for;
     a broken one is listed (with every other) once all are asked for, in the order of the entry points."""
