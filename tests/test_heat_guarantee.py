@@ -39,7 +39,7 @@ def simplified(graph: nx.Graph, params: CollapseParams) -> tuple[nx.DiGraph, lis
     flow = traffic.walking_flow(graph, max_sources=traffic.WALKING_SOURCES)
     structure, rhos = None, []
     while (predicate := heat_guarantee.guaranteed(lambda: collapse_rule(params, lambda start, end: True, graph),
-                                                  params.min_heat_rho, context, forest, structure)) is not None:
+                                                  params, context, forest, structure)) is not None:
         structure = simplify_forest(forest, predicate)
         rhos.append(evaluation.placement_rho(graph, structure, flow))
     return structure, rhos
