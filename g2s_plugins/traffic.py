@@ -102,9 +102,10 @@ A distance is a float sum of at most n - 1 non-negative edge lengths, each
 addition rounding by at most eps/2 of a partial sum no larger than the
 whole (eps = 2^-52), so two sums of one exact length (1 + 1 + sqrt 2 and
 sqrt 2 + 1 + 1 on a grid) differ by at most about n eps of it: 2.2e-10 for
-a million nodes. Measured on grid samplings (``benchmarks/tied_paths.py``;
-the relative excess ``(d(v) + length - d(w)) / d(w)`` of every edge from 16
-sources; docs/analysis_quality.md, "Walking flow that splits tied paths"):
+a million nodes. Measured on grid samplings (the relative excess ``(d(v) +
+length - d(w)) / d(w)`` of every edge from 16 sources, by decade;
+``benchmarks/tied_paths.py`` prints it in four bins; docs/analysis_quality.md,
+"Walking flow that splits tied paths"):
 on a generated dungeon's exact geometry the excesses that are not 0 lie at
 1e-15 (rounding) and then from 1e-3 up, nothing between; on nav_test's
 floor (an OBJ file's coordinates) a cluster runs from 1e-12 to 1e-8 (3.6 %
