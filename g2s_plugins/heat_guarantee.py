@@ -74,7 +74,7 @@ rather than the exact one: the most by which that measure exceeded the rho again
 levels of 273-12,854 polygons (0.006-0.027 on the 12 above 2,000; docs/analysis_quality.md, "A guaranteed heat
 map"), rounded up. Measured, not a bound: a level where the gap is larger gets less than it asked for. On the
 sampling route's grid with split ties (``map_analysis_sampling``, ``heat_sources`` 256) the structures kept for 0.9
-gave 0.908-0.923 against the exact flow (nav_test, the 1k dungeons, a 1k building; docs/analysis_quality.md,
+gave 0.908-0.923 against the exact flow (nav_test, the 1k dungeons and buildings; docs/analysis_quality.md,
 "Walking flow that splits tied paths")."""
 
 FLOOR = 10.0
