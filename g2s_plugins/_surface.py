@@ -87,6 +87,13 @@ class CollapseParams(PluginParams):
         description="simplify less where the heat map would rank the polygons with a Spearman rho under this against "
         "walking flow: restore removed nodes until it holds (g2s_plugins/heat_guarantee.py); null: no such check",
     )
+    heat_sources: int = Field(
+        traffic.WALKING_SOURCES, ge=1, description="sources of the walking flow max_traffic_step and min_heat_rho read "
+        "(the heat map's): set as the flow analyzer's max_sources"
+    )
+    heat_ties: traffic.Ties = Field(
+        "first", description="equally short paths in that walking flow (first or split): set as the flow analyzer's ties"
+    )
 
 
 def on_navmesh(navmesh: NavMesh | None, point: Vec, agent: AgentConfig) -> bool:
@@ -136,13 +143,16 @@ def edge_surface_gaps(structure: nx.Graph, navmesh: NavMesh, agent: AgentConfig,
     return dict(zip(edges, gaps.tolist()))
 
 
-def traffic_ranks(graph: nx.Graph) -> dict[Hashable, float]:
+def traffic_ranks(
+    graph: nx.Graph, sources: int = traffic.WALKING_SOURCES, ties: traffic.Ties = "first"
+) -> dict[Hashable, float]:
     """Walking-flow percentile rank (0-100) of each node of ``graph`` that some walk starts at or passes through.
 
     The rank is :func:`g2s_plugins.traffic.percentile` of
-    :func:`g2s_plugins.traffic.walking_flow` with the ``flow`` analyzer's
-    defaults (256 area-sampled sources, seed 0): the array that analyzer and a
-    traffic-aware ``coverage`` use, computed once per graph. A node no walk
+    :func:`g2s_plugins.traffic.walking_flow` of ``sources`` area-sampled
+    sources (seed 0) and ``ties`` (``heat_sources`` and ``heat_ties``, by
+    default the ``flow`` analyzer's defaults): the array that analyzer and a
+    traffic-aware ``coverage`` of the same settings use, computed once per graph. A node no walk
     touches, with no area and no through-flow (an opening the ``entry_exit``
     selector adds: area 0, at the end of the graph), gets no rank: its 0
     says nothing about the traffic around it. A portal node of the
@@ -150,7 +160,7 @@ def traffic_ranks(graph: nx.Graph) -> dict[Hashable, float]:
     walks passing through it.
     """
     arrays = traffic.surface_arrays(graph)
-    flow = traffic.arrays_walking_flow(arrays, max_sources=traffic.WALKING_SOURCES)
+    flow = traffic.arrays_walking_flow(arrays, max_sources=sources, ties=ties)
     rank = traffic.percentile(flow)
     walked = (traffic.origin_weight(arrays) > 0) | (flow > 0)
     return {node: value for node, value, keep in zip(arrays.nodes, rank.tolist(), walked.tolist()) if keep}
@@ -227,7 +237,7 @@ def collapse_rule(
     if max_step is not None:
         if graph is None:
             raise PluginError("max_traffic_step needs the run's initial surface graph")
-        ranks = traffic_ranks(graph)
+        ranks = traffic_ranks(graph, params.heat_sources, params.heat_ties)
     bends: dict[tuple[Vec, Vec], bool] = {}
 
     def bent(u: Vec, v: Vec) -> bool:

@@ -119,6 +119,14 @@ REFERENCE_SOURCES = 512
 """Graphs with more nodes of positive weight than this and than :data:`g2s_plugins.traffic.EXACT_NODES` get a
 sampled reference flow with this many sources; smaller ones the exact flow."""
 
+REFERENCE_TIES: traffic.Ties = "split"
+"""The reference flow splits each pair's weight evenly over all its shortest paths (:mod:`g2s_plugins.traffic`):
+issue 9's walker takes "the shortest path", and where several tie none is more the one than another. Before 4
+December 2026 (evening) it took the first (``first``). On navmesh graphs, whose lengths rarely tie, the two are
+the same: nav_test's and the 1k dungeons' and buildings' exact flows are the same floats either way (nav_test's
+within 1.1e-16 of the largest), so no rho of the navmesh route moved; on a grid of samples the first is a pattern
+of the search's tie rule (docs/analysis_quality.md, "Walking flow that splits tied paths")."""
+
 PLAN_TOLERANCE = 1e-3
 """A sample stands on a polygon when Detour's nearest point on it is this close in plan, m (float32 rounding)."""
 
@@ -155,8 +163,8 @@ class Quality:
 def reference_flow(result: RunResult, max_sources: int = REFERENCE_SOURCES, seed: int = 0) -> np.ndarray:
     """(n,) area-weighted OD flow through each initial-graph node, in graph node order: exact up to
     :data:`g2s_plugins.traffic.EXACT_NODES` (or ``max_sources``) nodes of positive weight, the heat-map
-    guarantee's rule, else from ``max_sources`` sampled sources."""
-    return traffic.walking_flow(result.graph, max_sources, seed, exact_up_to=traffic.EXACT_NODES)
+    guarantee's rule, else from ``max_sources`` sampled sources; ties split (:data:`REFERENCE_TIES`)."""
+    return traffic.walking_flow(result.graph, max_sources, seed, exact_up_to=traffic.EXACT_NODES, ties=REFERENCE_TIES)
 
 
 def nearest_structure_rows(result: RunResult) -> np.ndarray:
@@ -259,7 +267,7 @@ def navmesh_surface(result: RunResult, reference: np.ndarray, max_sources: int =
     polygons = polygons_under(navmesh, _positions(result.graph))
     owner = np.where(polygons >= 0, polygon_rows[np.maximum(polygons, 0)], -1)
     spacing = result.graph.graph.get("sampling_stats", {}).get("spacing", 2.0 * float(context.agent.radius))
-    flow = traffic.walking_flow(graph, max_sources, seed, exact_up_to=traffic.EXACT_NODES)
+    flow = traffic.walking_flow(graph, max_sources, seed, exact_up_to=traffic.EXACT_NODES, ties=REFERENCE_TIES)
     return NavmeshSurface(graph, flow, owner, REACH_SPACINGS * spacing)
 
 

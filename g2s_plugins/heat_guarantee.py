@@ -7,13 +7,14 @@ the heat map gives it. The heat map is the one the run shows: the mean
 percentile, over the nodes its nearest structure node stands for, of the
 walking flow of the ``flow`` analyzer's sources
 (:func:`g2s_plugins.evaluation.placement_heat` of
-:func:`g2s_plugins.traffic.walking_flow` with
-:data:`~g2s_plugins.traffic.WALKING_SOURCES`, the array that analyzer
-with ``aggregate: percentile`` and ``max_traffic_step`` use). The walking
-flow it is ranked against is the exact one on graphs of up to
+:func:`g2s_plugins.traffic.walking_flow` with the predicate's
+``heat_sources`` and ``heat_ties``, which a config sets as that analyzer's
+``max_sources`` and ``ties``: the array that analyzer with ``aggregate:
+percentile`` and ``max_traffic_step`` use). The walking flow it is ranked
+against is the exact one of the same ``ties`` on graphs of up to
 :data:`~g2s_plugins.traffic.EXACT_NODES` nodes with an area (the flow a
 user's own exact reference gives, and the evaluation's reference); above
-that it is the same 256-source sample, whose rho reads higher than the
+that it is the same sample, whose rho reads higher than the
 exact one (its heat map and its reference share the sample's errors), so
 there the target is ``min_heat_rho`` + :data:`MARGIN`. Why not Hoeffding:
 :func:`~g2s_plugins.traffic.flow_error_bound` bounds each node's error by
@@ -28,7 +29,7 @@ point farthest from the simplified line until every point is within the
 tolerance): Algorithm 4 simplifies as it always does and the result is
 measured. While rho is under the target, the removed nodes whose own
 polygon's percentile differs most from the heat the map gives it (by more
-than :data:`FLOOR` points; both on the heat map's 256-source scale, so the
+than :data:`FLOOR` points; both on the heat map's sampled scale, so the
 exact flow decides when to stop, not which nodes come back, and a structure
 changes only where that decision does) are restored, :data:`RESTORED_SHARE`
 of the forest's nodes at a time: the forest is simplified again by the same
@@ -59,6 +60,7 @@ import numpy as np
 
 from g2s_core.model import RunContext
 from g2s_plugins import evaluation, traffic
+from g2s_plugins._surface import CollapseParams
 
 Predicate = Callable[[nx.DiGraph, int, int, int], bool]
 
@@ -70,7 +72,10 @@ MARGIN = 0.03
 :data:`g2s_plugins.traffic.EXACT_NODES` nodes with an area, measured against the run's own 256-source walking flow
 rather than the exact one: the most by which that measure exceeded the rho against the exact flow, 0.027 on 50
 levels of 273-12,854 polygons (0.006-0.027 on the 12 above 2,000; docs/analysis_quality.md, "A guaranteed heat
-map"), rounded up. Measured, not a bound: a level where the gap is larger gets less than it asked for."""
+map"), rounded up. Measured, not a bound: a level where the gap is larger gets less than it asked for. On the
+sampling route's grid with split ties (``map_analysis_sampling``, ``heat_sources`` 256) the structures kept for 0.9
+gave 0.908-0.923 against the exact flow (nav_test, the 1k dungeons and buildings; docs/analysis_quality.md,
+"Walking flow that splits tied paths")."""
 
 FLOOR = 10.0
 """Percentile points: a removed node whose polygon's walking-flow percentile differs from the heat the map gives it
@@ -78,7 +83,8 @@ by no more than this is never restored (the smallest ``max_traffic_step`` measur
 
 
 def restored(
-    graph: nx.Graph, forest: nx.DiGraph, simplified: nx.DiGraph, min_rho: float, context: RunContext
+    graph: nx.Graph, forest: nx.DiGraph, simplified: nx.DiGraph, min_rho: float, context: RunContext,
+    sources: int = traffic.WALKING_SOURCES, ties: traffic.Ties = "first",
 ) -> set[Hashable] | None:
     """The nodes the next simplification of ``forest`` must keep, or ``None`` when ``simplified`` is kept.
 
@@ -86,18 +92,19 @@ def restored(
     ``graph`` (the run's initial graph) with rho >= ``min_rho`` against
     their exact walking flow (up to :data:`~g2s_plugins.traffic.EXACT_NODES`
     nodes with an area; above, rho >= ``min_rho`` + :data:`MARGIN` against
-    the 256-source flow), or rho is undefined (every node's flow alike), or
+    the heat map's own flow of ``sources`` sampled sources; both of
+    ``ties``), or rho is undefined (every node's flow alike), or
     no removed node differs by more than :data:`FLOOR` (a warning gives rho);
     else every node of ``simplified`` and the removed nodes of ``forest``
     whose percentile differs most from their heat, ceil(:data:`RESTORED_SHARE`
     x the forest's nodes) of them, by decreasing difference then node id.
     """
     arrays = traffic.surface_arrays(graph)
-    shown = traffic.arrays_walking_flow(arrays, traffic.WALKING_SOURCES)  # the flow the heat map is made of
-    reference = traffic.arrays_walking_flow(arrays, traffic.WALKING_SOURCES, exact_up_to=traffic.EXACT_NODES)
+    shown = traffic.arrays_walking_flow(arrays, sources, ties=ties)  # the flow the heat map is made of
+    reference = traffic.arrays_walking_flow(arrays, sources, exact_up_to=traffic.EXACT_NODES, ties=ties)
     heat = evaluation.placement_heat(graph, simplified, shown)
     rho = evaluation.spearman(heat, reference)
-    exact = traffic.is_exact(arrays, traffic.WALKING_SOURCES, traffic.EXACT_NODES)
+    exact = traffic.is_exact(arrays, sources, traffic.EXACT_NODES)
     target = min_rho if exact else min_rho + MARGIN
     if not rho < target:
         return None
@@ -105,7 +112,7 @@ def restored(
     difference = np.abs(traffic.percentile(shown) - heat)[arrays.rows(removed)] if removed.size else np.zeros(0)
     above = difference > FLOOR  # NaN (a node reaching no structure node) is not
     if not above.any():
-        measure = "walking flow" if exact else f"walking flow from {traffic.WALKING_SOURCES} sampled sources"
+        measure = "walking flow" if exact else f"walking flow from {sources} sampled sources"
         wanted = f"min_heat_rho {min_rho:g}" + ("" if exact else f" plus the margin {MARGIN:g} a sampled flow needs")
         context.warn(f"the heat map ranks the polygons with Spearman rho {rho:.3f} against {measure}, under {wanted}: "
                      f"no node simplification removed differs from the heat it is given by more than {FLOOR:g} "
@@ -132,20 +139,21 @@ def keeping(predicate: Predicate, kept: set[Hashable]) -> Predicate:
 
 
 def guaranteed(
-    make_predicate: Callable[[], Predicate], min_rho: float | None, context: RunContext, forest: nx.DiGraph | None,
+    make_predicate: Callable[[], Predicate], params: CollapseParams, context: RunContext, forest: nx.DiGraph | None,
     simplified: nx.DiGraph | None,
 ) -> Predicate | None:
-    """What a predicate hook returns with ``min_heat_rho`` (the hookspec's ``simplified`` protocol): the predicate
-    of ``make_predicate`` first, then, after each structure, ``None`` to keep it or that same predicate keeping the
-    nodes of :func:`restored`."""
+    """What a predicate hook returns with ``params.min_heat_rho`` (the hookspec's ``simplified`` protocol): the
+    predicate of ``make_predicate`` first, then, after each structure, ``None`` to keep it or that same predicate
+    keeping the nodes of :func:`restored` (its walking flow: ``params.heat_sources`` and ``params.heat_ties``)."""
     if simplified is None:
         predicate = make_predicate()
         if forest is not None:  # None: asked outside the pipeline, for one predicate
             _FIRST[forest] = predicate
         return predicate
-    if min_rho is None:
+    if params.min_heat_rho is None:
         return None
-    kept = restored(context.graph, forest, simplified, min_rho, context)
+    kept = restored(context.graph, forest, simplified, params.min_heat_rho, context, params.heat_sources,
+                    params.heat_ties)
     return None if kept is None else keeping(_FIRST[forest], kept)
 
 

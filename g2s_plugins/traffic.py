@@ -25,11 +25,31 @@ The flow through node v is the total pair weight of the paths that pass
 
     flow(v) = sum over ordered pairs (s, t), s != v != t, of a_s a_t [v on path(s, t)]
 
-For one source s the shortest paths form a tree (scipy's predecessor tree;
-equal-length alternatives are not split, which matters only on graphs with
-exactly equal path lengths such as regular grids), and the weight passing
-through v is ``a_s * (A_v - a_v)`` with A_v the area of v's subtree. Summed
-over all sources this is exact in O(n (m + n log n)).
+Where a pair has several shortest paths, ``ties`` says which one it takes.
+
+``first``
+    For one source s the shortest paths form a tree (scipy's predecessor
+    tree: of equal-length alternatives, the one through the node settled
+    first), and the weight passing through v is ``a_s * (A_v - a_v)`` with
+    A_v the area of v's subtree. Every pair's whole weight goes one way,
+    however many ways are as short.
+``split``
+    Each pair's weight is split evenly over all its shortest paths, path
+    lengths equal within :data:`TIE_TOLERANCE` (relative) counting as equal:
+    the through-weight of v from s is ``a_s * sum_t a_t sigma_st(v) /
+    sigma_st``, sigma_st the number of shortest s-t paths and sigma_st(v)
+    those through v, accumulated by Brandes's dependency recursion
+    (:func:`split_path_flow`). This is the flow's definition that does not
+    depend on node numbering. It matters where path lengths tie: on a
+    regular grid of samples nearly every pair has many equally short paths
+    (1 + 1 + sqrt 2 and sqrt 2 + 1 + 1), and ``first`` sends all of one
+    source's ties along the lines its tie rule favours, a pattern that
+    changes from source to source, so a sample of sources gives a rough
+    flow. On a navmesh graph, whose lengths run between irregular polygon
+    centres and portals, exact ties are rare and both give nearly the same
+    flow (docs/analysis_quality.md, "Walking flow that splits tied paths").
+
+Summed over all sources either is exact in O(n (m + n log n)).
 
 For big graphs k sources are drawn with replacement with probability
 a_s / A (A = total area) and ``flow ~ (A / k) sum_i through_{s_i}``, an
@@ -52,6 +72,7 @@ from __future__ import annotations
 import math
 import os
 from collections.abc import Hashable, Iterable
+from typing import Literal
 
 import networkx as nx
 import numpy as np
@@ -62,10 +83,40 @@ from g2s_plugins import _trees
 from g2s_plugins.surface_arrays import SurfaceArrays, surface_arrays
 
 __all__ = [
-    "EXACT_NODES", "WALKING_SOURCES", "SurfaceArrays", "arrays_walking_flow", "distance_to", "flow_error_bound",
-    "gather", "is_exact", "od_flow", "origin_weight", "percentile", "represented_area", "shortest_path_flow",
-    "surface_arrays", "tie_tolerance", "walking_flow",
+    "EXACT_NODES", "TIE_TOLERANCE", "WALKING_SOURCES", "SurfaceArrays", "Ties", "arrays_walking_flow", "distance_to",
+    "flow_error_bound", "gather", "is_exact", "od_flow", "origin_weight", "percentile", "represented_area",
+    "shortest_path_flow", "split_path_flow", "surface_arrays", "tie_tolerance", "walking_flow",
 ]
+
+Ties = Literal["first", "split"]
+"""How a walking flow treats a pair's equally short paths: all its weight along one (``first``) or split evenly
+over all of them (``split``); see the module docs."""
+
+TIE_TOLERANCE = 1e-6
+"""Relative difference within which two path lengths tie for ``ties: split`` (:func:`split_path_flow`).
+
+Why this size: it must hold the rounding of two float sums of the same
+exact length, and the noise a level's coordinates put into lengths that are
+meant to be equal, and stay below the differences its real geometry makes.
+A distance is a float sum of at most n - 1 non-negative edge lengths, each
+addition rounding by at most eps/2 of a partial sum no larger than the
+whole (eps = 2^-52), so two sums of one exact length (1 + 1 + sqrt 2 and
+sqrt 2 + 1 + 1 on a grid) differ by at most about n eps of it: 2.2e-10 for
+a million nodes. Measured on grid samplings (the relative excess ``(d(v) +
+length - d(w)) / d(w)`` of every edge from 16 sources, by decade;
+``benchmarks/tied_paths.py`` prints it in four bins; docs/analysis_quality.md,
+"Walking flow that splits tied paths"):
+on a generated dungeon's exact geometry the excesses that are not 0 lie at
+1e-15 (rounding) and then from 1e-3 up, nothing between; on nav_test's
+floor (an OBJ file's coordinates) a cluster runs from 1e-12 to 1e-8 (3.6 %
+of the edges: steps whose lengths differ by micrometres of height), thins
+to 0.11 % in (1e-8, 1e-7] and 0.04 % in (1e-7, 1e-6], and rises again from
+1e-5 (0.45 % in (1e-5, 1e-4]), where slopes begin.
+1e-6 lies in that gap: 1 mm over 1 km of walking, which no walker tells
+apart. On rolling terrain the excesses run on through every size, and the
+tolerance ties only 0.1 % of the edges there, those differing by under
+1e-6.
+"""
 
 BLOCK_ENTRIES = 1 << 22
 """Tree entries computed at once by :func:`od_flow` (32 MB of float64)."""
@@ -251,6 +302,37 @@ def shortest_path_flow(adjacency: sp.csr_array, sources: np.ndarray, values: np.
     )
 
 
+def split_path_flow(adjacency: sp.csr_array, sources: np.ndarray, values: np.ndarray) -> np.ndarray:
+    """(b, n) float64: per source of the (b,) ``sources`` and node v, the sum over targets t != v of ``values[t]``
+    times the share of the source's shortest paths to t that pass through v (``ties: split``, module docs).
+
+    Args:
+        adjacency: (n, n) edge lengths >= 0, CSR; row i holds the edges leaving i.
+        sources: (b,) rows of the sources.
+        values: (n,) the value of each node (its area, m²).
+
+    0 for the source and for unreached nodes. Path lengths within
+    :data:`TIE_TOLERANCE` of each other (relative) count as equal. Brandes's
+    accumulation (U. Brandes, "A faster algorithm for betweenness
+    centrality", J. Mathematical Sociology 25(2):163-177, 2001; target
+    values as in U. Brandes, "On variants of shortest-path betweenness
+    centrality and their generic computation", Social Networks
+    30(2):136-145, 2008): per source one Dijkstra search, O(m log m), then
+    one pass forward over the settled nodes counting shortest paths and one
+    back summing values, O(m) each; memory O(n) per thread beside the
+    (b, n) result. In the C++ extension (``src/trees_module.cpp``) on
+    :data:`THREADS` threads, each source's sums in a fixed order: the same
+    bits for any thread count.
+
+    Raises:
+        ValueError: an index or source out of range, or a negative length.
+    """
+    return _trees.split_path_flow(
+        *extension_csr(adjacency), np.asarray(sources, dtype=np.int32), np.ascontiguousarray(values, dtype=np.float64),
+        TIE_TOLERANCE, THREADS,
+    )
+
+
 def extension_csr(adjacency: sp.csr_array) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """``adjacency``'s CSR arrays as the C++ extension takes them: (n+1,) int32 indptr, (m,) int32 indices, (m,)
     float64 lengths, each contiguous."""
@@ -273,6 +355,7 @@ def od_flow(
     weight: np.ndarray,
     max_sources: int | None = None,
     seed: int = 0,
+    ties: Ties = "first",
 ) -> tuple[np.ndarray, int | None]:
     """Weighted origin-destination flow through every node (see the module docs).
 
@@ -283,6 +366,9 @@ def od_flow(
             are computed exactly; above it, this many sources are sampled.
             ``None``: always exact.
         seed: seed of the source sample.
+        ties: a pair's equally short paths: all its weight along the first
+            (:func:`shortest_path_flow`) or split evenly over all of them
+            (:func:`split_path_flow`).
 
     Returns:
         flow: (n,) pair weight passing through each node (ordered pairs,
@@ -306,7 +392,9 @@ def od_flow(
     for lo in range(0, len(sources), block):
         # adjacency is symmetric: a directed search scans each edge once instead of from both of
         # its stored directions, with the same distances and predecessors
-        kept.append((lo, shortest_path_flow(adjacency, sources[lo:lo + block], weight)[1]))
+        block_sources = sources[lo:lo + block]
+        kept.append((lo, split_path_flow(adjacency, block_sources, weight) if ties == "split"
+                     else shortest_path_flow(adjacency, block_sources, weight)[1]))
         if lo + block >= len(sources) or sum(through.size for _, through in kept) >= KEPT_ENTRIES:
             for start, through in kept:  # block by block, in order: the sum of the products as before
                 flow += factor[start:start + block] @ through
@@ -319,31 +407,34 @@ def origin_weight(arrays: SurfaceArrays) -> np.ndarray:
     return arrays.area if arrays.area.sum() > 0 else np.ones(arrays.n)
 
 
-def walking_flow(graph: nx.Graph, max_sources: int | None = None, seed: int = 0, exact_up_to: int = 0) -> np.ndarray:
+def walking_flow(
+    graph: nx.Graph, max_sources: int | None = None, seed: int = 0, exact_up_to: int = 0, ties: Ties = "first"
+) -> np.ndarray:
     """(n,) :func:`od_flow` of ``graph`` by :func:`origin_weight`, in :func:`surface_arrays` order; read-only.
 
     Exact on graphs with at most ``max(max_sources, exact_up_to)`` nodes of
     positive weight (:func:`is_exact`), else from ``max_sources`` sampled
     sources.
 
-    Cached per graph object and ``(max_sources, seed)`` (neither when exact: the exact flow draws no sample) for as long as its
+    Cached per graph object, ``ties`` and ``(max_sources, seed)`` (neither when exact: the exact flow draws no sample) for as long as its
     :func:`surface_arrays` are (the graph's size unchanged): the selector and
     the analyzer of one run that ask for the same flow get the same array,
     computed once. It is read-only so that no caller can change another's
     values; divide into a new array (``flow / total``).
     """
-    return arrays_walking_flow(surface_arrays(graph), max_sources, seed, exact_up_to)
+    return arrays_walking_flow(surface_arrays(graph), max_sources, seed, exact_up_to, ties)
 
 
 def arrays_walking_flow(
-    arrays: SurfaceArrays, max_sources: int | None = None, seed: int = 0, exact_up_to: int = 0
+    arrays: SurfaceArrays, max_sources: int | None = None, seed: int = 0, exact_up_to: int = 0, ties: Ties = "first"
 ) -> np.ndarray:
     """:func:`walking_flow` of the graph ``arrays`` were made from, for a caller that holds them already (each
     :func:`surface_arrays` look-up counts the graph's edges: 20-30 ms on a 100k-polygon level)."""
     exact = is_exact(arrays, max_sources, exact_up_to)
-    key = ("walking_flow",) if exact else ("walking_flow", max_sources, seed)  # one exact flow for every caller that gets it
+    # one exact flow for every caller that gets it
+    key = ("walking_flow", ties) if exact else ("walking_flow", ties, max_sources, seed)
     if key not in arrays.derived:
-        flow, _ = od_flow(arrays.adjacency, origin_weight(arrays), None if exact else max_sources, seed)
+        flow, _ = od_flow(arrays.adjacency, origin_weight(arrays), None if exact else max_sources, seed, ties)
         flow.flags.writeable = False
         arrays.derived[key] = flow
     return arrays.derived[key]

@@ -1,4 +1,5 @@
-// g2s_plugins._trees: shortest-path trees from many sources, and the weight each node carries in them.
+// g2s_plugins._trees: shortest-path trees from many sources, and the weight each node carries in them; the
+// same weight with every pair's value split evenly over all its shortest paths (split_path_flow, below).
 // Also here, each described where it is defined: the coverage selector's cover (cover_paths), the loop
 // adder's greedy loop (greedy_loops) and the Steiner solvers' spanning forest (spanning_forest).
 //
@@ -242,6 +243,132 @@ class TreeSweep {
     std::vector<int32_t> order_, first_child_, next_child_, children_;
 };
 
+// A number of shortest paths, mantissa x 2^exponent (mantissa in [0.5, 1), or 0): on a grid the count of
+// equally short paths between two places grows like a binomial coefficient, which passes a double's largest
+// value (1.8e308) across a few tens of rooms of tied paths; only ratios of counts are used, and those this
+// form gives without overflow.
+struct PathCount {
+    double mantissa = 0.0;
+    int64_t exponent = 0;
+
+    void add(const PathCount& other) {
+        if (other.mantissa == 0.0) return;
+        if (mantissa == 0.0) {
+            *this = other;
+            return;
+        }
+        const int64_t top = std::max(exponent, other.exponent);
+        int shift = 0;
+        // both terms scaled to the larger exponent: the smaller one loses only bits below the sum's last place
+        mantissa = std::frexp(std::ldexp(mantissa, static_cast<int>(std::max<int64_t>(exponent - top, -1100))) +
+                                  std::ldexp(other.mantissa, static_cast<int>(std::max<int64_t>(other.exponent - top, -1100))),
+                              &shift);
+        exponent = top + shift;
+    }
+    // this / other (other not 0)
+    double over(const PathCount& other) const {
+        return std::ldexp(mantissa / other.mantissa,
+                          static_cast<int>(std::clamp<int64_t>(exponent - other.exponent, -1100, 1100)));
+    }
+};
+
+// One source, every pair's value split evenly over all its shortest paths: Brandes's accumulation (U. Brandes,
+// "A faster algorithm for betweenness centrality", J. Mathematical Sociology 25(2):163-177, 2001) with a value
+// per target (U. Brandes, "On variants of shortest-path betweenness centrality and their generic
+// computation", Social Networks 30(2):136-145, 2008, the weighted-endpoint form):
+//
+//   through(v) = sum over targets t != v of values[t] sigma(v) sigma(v -> t) / sigma(t)
+//              = sum over w with v a predecessor of w of sigma(v) / sigma(w) (values[w] + through(w))
+//
+// sigma(x) the number of shortest paths from the source to x. The distances are a plain Dijkstra search's (the
+// same floats as scipy's); the nodes it settles, in the order it settles them, form a list in which an edge
+// v -> w is a *shortest-path edge* when v comes before w and distance(v) + length <= distance(w) (1 +
+// tolerance): path lengths equal within the relative tolerance tie. Each shortest-path edge points forward in
+// the list, so they form a DAG whatever the tolerance and even with lengths of 0; one pass forward over the
+// list adds up the path counts, one pass back the values, each node's edges in CSR order: the same bits on
+// any thread. O(m log m) for the search, O(m) for each pass.
+class SplitSweep {
+  public:
+    explicit SplitSweep(int32_t n)
+        : distance_(static_cast<size_t>(n)), through_(static_cast<size_t>(n)), count_(static_cast<size_t>(n)),
+          position_(static_cast<size_t>(n)), order_(static_cast<size_t>(n)) {}
+
+    void run(const Graph& g, int32_t source, const double* values, double tolerance, double* through) {
+        constexpr double infinity = std::numeric_limits<double>::infinity();
+        std::fill(distance_.begin(), distance_.end(), infinity);
+        std::fill(position_.begin(), position_.end(), -1);
+        queue_.clear();
+        distance_[source] = 0.0;
+        queue_.push_back({0.0, source});
+        int32_t settled = 0;
+        while (!queue_.empty()) {
+            std::pop_heap(queue_.begin(), queue_.end(), ServedAfter());
+            const Entry v = queue_.back();
+            queue_.pop_back();
+            if (position_[v.node] >= 0 || distance_[v.node] < v.distance) continue;  // settled, or a stale entry
+            position_[v.node] = settled;
+            order_[settled++] = v.node;
+            for (int32_t j = g.indptr[v.node]; j < g.indptr[v.node + 1]; ++j) {
+                const int32_t u = g.indices[j];
+                const double d = v.distance + g.weights[j];  // a NaN length is no edge, as in scipy
+                if (d < distance_[u]) {
+                    distance_[u] = d;
+                    queue_.push_back({d, u});
+                    std::push_heap(queue_.begin(), queue_.end(), ServedAfter());
+                }
+            }
+        }
+        auto shortest = [&](int32_t v, int32_t j) {  // whether the edge j leaving settled v is a shortest-path edge
+            const int32_t w = g.indices[j];
+            return position_[w] > position_[v] &&
+                   distance_[v] + g.weights[j] <= distance_[w] + tolerance * distance_[w];
+        };
+        for (int32_t i = 0; i < settled; ++i) count_[order_[i]] = PathCount{};
+        count_[source] = PathCount{0.5, 1};
+        for (int32_t i = 0; i < settled; ++i) {
+            const int32_t v = order_[i];
+            for (int32_t j = g.indptr[v]; j < g.indptr[v + 1]; ++j)
+                if (shortest(v, j)) count_[g.indices[j]].add(count_[v]);
+        }
+        for (int32_t v = 0; v < g.n; ++v) through[v] = 0.0;  // unreached nodes carry nothing
+        for (int32_t i = settled - 1; i >= 0; --i) {
+            const int32_t v = order_[i];
+            double total = 0.0;
+            for (int32_t j = g.indptr[v]; j < g.indptr[v + 1]; ++j)
+                if (shortest(v, j)) {
+                    const int32_t w = g.indices[j];
+                    total += count_[v].over(count_[w]) * (values[w] + through_[w]);
+                }
+            through_[v] = total;
+            through[v] = total;
+        }
+        through[source] = 0.0;
+    }
+
+  private:
+    std::vector<double> distance_, through_;
+    std::vector<PathCount> count_;
+    std::vector<int32_t> position_, order_;
+    std::vector<Entry> queue_;
+};
+
+// Runs work(worker, row) for rows 0 .. b-1 on `threads` threads (1 or 2), each worker taking whole rows in
+// turn; `make` builds each thread's worker (its buffers). Which thread takes a row changes no value.
+template <typename Make, typename Work>
+void for_each_source(size_t b, int threads, Make make, Work work) {
+    nb::gil_scoped_release release;
+    std::atomic<size_t> next{0};
+    auto run = [&] {
+        auto worker = make();
+        for (size_t row = next++; row < b; row = next++) work(worker, row);
+    };
+    const size_t helpers = std::min<size_t>(static_cast<size_t>(threads), std::max<size_t>(b, 1)) - 1;
+    std::vector<std::thread> pool;
+    for (size_t t = 0; t < helpers; ++t) pool.emplace_back(run);
+    run();
+    for (std::thread& t : pool) t.join();
+}
+
 using Int32Array = nb::ndarray<const int32_t, nb::ndim<1>, nb::c_contig, nb::device::cpu>;
 using DoubleArray = nb::ndarray<const double, nb::ndim<1>, nb::c_contig, nb::device::cpu>;
 
@@ -288,21 +415,30 @@ nb::tuple shortest_path_flow(Int32Array indptr, Int32Array indices, DoubleArray 
     const std::vector<uint8_t> passage = passages(ptr, indices.data(), weights.data(), static_cast<int32_t>(n));
     const bool corridors = std::find(passage.begin(), passage.end(), 1) != passage.end();
     const Graph g{ptr, indices.data(), weights.data(), passage.data(), corridors, static_cast<int32_t>(n)};
-    {
-        nb::gil_scoped_release release;
-        std::atomic<size_t> next{0};
-        auto work = [&] {
-            TreeSweep sweep(g.n);
-            for (size_t row = next++; row < b; row = next++)
-                sweep.run(g, sources.data()[row], values.data(), predecessors + row * n, through + row * n);
-        };
-        const size_t helpers = std::min<size_t>(static_cast<size_t>(threads), std::max<size_t>(b, 1)) - 1;
-        std::vector<std::thread> pool;
-        for (size_t t = 0; t < helpers; ++t) pool.emplace_back(work);
-        work();
-        for (std::thread& t : pool) t.join();
-    }
+    for_each_source(b, threads, [&] { return TreeSweep(g.n); }, [&](TreeSweep& sweep, size_t row) {
+        sweep.run(g, sources.data()[row], values.data(), predecessors + row * n, through + row * n);
+    });
     return nb::make_tuple(pred_out, through_out);
+}
+
+nb::ndarray<nb::numpy, double, nb::ndim<2>> split_path_flow(Int32Array indptr, Int32Array indices, DoubleArray weights,
+                                                            Int32Array sources, DoubleArray values, double tolerance,
+                                                            int threads) {
+    const int64_t n = checked_nodes("split_path_flow", indptr, indices, weights);
+    if (static_cast<int64_t>(values.shape(0)) != n)
+        throw nb::value_error("split_path_flow: indptr must be (n + 1,), values (n,), indices and weights alike");
+    const size_t b = sources.shape(0);
+    for (size_t i = 0; i < b; ++i)
+        if (sources.data()[i] < 0 || sources.data()[i] >= n) throw nb::value_error("split_path_flow: a source is out of range");
+    if (threads < 1 || threads > 2) throw nb::value_error("split_path_flow: threads must be 1 or 2");
+    if (!(tolerance >= 0.0 && tolerance < 1.0)) throw nb::value_error("split_path_flow: tolerance must be in [0, 1)");
+    auto* through = new double[std::max<size_t>(b * static_cast<size_t>(n), 1)];
+    auto through_out = owned(through, b, static_cast<size_t>(n));
+    const Graph g{indptr.data(), indices.data(), weights.data(), nullptr, false, static_cast<int32_t>(n)};
+    for_each_source(b, threads, [&] { return SplitSweep(g.n); }, [&](SplitSweep& sweep, size_t row) {
+        sweep.run(g, sources.data()[row], values.data(), tolerance, through + row * n);
+    });
+    return through_out;
 }
 
 // Python's heapq on a list of (float, int) items, step for step (heappush, heappop and their sifts): the
@@ -563,6 +699,13 @@ NB_MODULE(_trees, m) {
           "exactly, -9999 for the source and unreached nodes; through (b, n) float64, the values summed over\n"
           "each node's subtree of that source's tree minus the node's own value (0 for the source).\n"
           "threads: 1 or 2 worker threads, each running whole sources (the result does not depend on it).");
+    m.def("split_path_flow", &split_path_flow, nb::arg("indptr"), nb::arg("indices"), nb::arg("weights"),
+          nb::arg("sources"), nb::arg("values"), nb::arg("tolerance"), nb::arg("threads"),
+          "split_path_flow(indptr, indices, weights, sources, values, tolerance, threads) -> through.\n\n"
+          "For a graph in CSR form (as shortest_path_flow) and b source nodes: through (b, n) float64, per source\n"
+          "and node v, the sum over targets t != v of values[t] times the share of the source's shortest paths to\n"
+          "t that pass through v (Brandes's dependency; path lengths within the relative tolerance tie); 0 for the\n"
+          "source and unreached nodes. threads: 1 or 2 (the result does not depend on it).");
     m.def("cover_paths", &cover_paths, nb::arg("indptr"), nb::arg("indices"), nb::arg("lengths"), nb::arg("start"),
           nb::arg("predecessor"), nb::arg("far"), nb::arg("radius"),
           "cover_paths(indptr, indices, lengths, start, predecessor, far, radius) -> added.\n\n"

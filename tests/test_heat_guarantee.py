@@ -39,7 +39,7 @@ def simplified(graph: nx.Graph, params: CollapseParams) -> tuple[nx.DiGraph, lis
     flow = traffic.walking_flow(graph, max_sources=traffic.WALKING_SOURCES)
     structure, rhos = None, []
     while (predicate := heat_guarantee.guaranteed(lambda: collapse_rule(params, lambda start, end: True, graph),
-                                                  params.min_heat_rho, context, forest, structure)) is not None:
+                                                  params, context, forest, structure)) is not None:
         structure = simplify_forest(forest, predicate)
         rhos.append(evaluation.placement_rho(graph, structure, flow))
     return structure, rhos
@@ -222,5 +222,22 @@ def test_the_benchmark_reference_is_exact_up_to_the_guarantee_size():
     nx.set_edge_attributes(graph, 1.0, "weight")
     result = types.SimpleNamespace(graph=graph)
     arrays = traffic.surface_arrays(graph)
-    exact, sampled = traffic.od_flow(arrays.adjacency, arrays.area)
+    exact, sampled = traffic.od_flow(arrays.adjacency, arrays.area, ties="split")
     assert sampled is None and np.array_equal(evaluation.reference_flow(result), exact)
+    # the reference splits each pair over its tied paths: on this unit grid not the first-path flow
+    assert not np.array_equal(exact, traffic.od_flow(arrays.adjacency, arrays.area)[0])
+
+
+def test_the_guarantee_measures_the_flow_of_its_heat_settings(monkeypatch):
+    # heat_sources and heat_ties (set as the flow analyzer's max_sources and ties) choose the flow it measures: the
+    # heat map's sample and the exact reference, both of those ties
+    graph = bumpy_grid()
+    forest = nx.DiGraph(nx.bfs_tree(graph, 0))
+    structure = forest.subgraph(np.random.default_rng(0).choice(300, size=200, replace=False).tolist())
+    context = RunContext(mesh=None, agent=AgentConfig(), centre=np.zeros(3), graph=graph)
+    asked, walking = [], traffic.arrays_walking_flow
+    monkeypatch.setattr(traffic, "arrays_walking_flow",
+                        lambda *args, **kwargs: asked.append((args[1:], kwargs)) or walking(*args, **kwargs))
+    params = CollapseParams(min_heat_rho=0.5, heat_sources=64, heat_ties="split")
+    assert heat_guarantee.guaranteed(lambda: None, params, context, forest, structure) is None
+    assert asked == [((64,), {"ties": "split"}), ((64,), {"exact_up_to": traffic.EXACT_NODES, "ties": "split"})]

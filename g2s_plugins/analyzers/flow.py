@@ -16,6 +16,18 @@ against the polygons' own flow, same structures: Spearman 0.89 (sum), 0.94
 (mean), 0.96 (percentile) on nav_test; 0.78, 0.83, 0.88 on a 1k-polygon
 dungeon.
 
+A pair's equally short paths (``ties``): all its weight along the one the
+search settles first (``first``, the default), or split evenly over all of
+them (``split``, Brandes's path counts; :mod:`g2s_plugins.traffic`), which
+makes the flow of a regular grid of samples, whose path lengths nearly all
+tie, independent of node numbering and far less noisy from a sample of
+sources (docs/analysis_quality.md, "Walking flow that splits tied paths").
+The ``min_heat_rho`` and ``max_traffic_step`` of the simplification, and a
+traffic-aware ``coverage``, read a walking flow of their own settings
+(``heat_sources``/``heat_ties``, ``traffic_sources``/``traffic_ties``): set
+them as this analyzer's, so they measure the heat map the run shows and the
+flow is computed once.
+
 Exact up to ``max_sources`` nodes, from that many area-sampled sources
 above, with the Hoeffding bound of :mod:`g2s_plugins.traffic` (0.10 of all
 pair weight per polygon for 256 sources, delta = 0.01; a node's mean is
@@ -45,6 +57,10 @@ class Params(PluginParams):
 
     max_sources: int = Field(traffic.WALKING_SOURCES, ge=1, description="graphs with more nodes than this sample this many area-weighted sources")
     seed: int = Field(0, description="seed of the source sample")
+    ties: traffic.Ties = Field(
+        "first", description="a pair's equally short paths: first (all its weight along one) or split (evenly over all "
+        "of them; for grids of samples, whose path lengths tie)"
+    )
     aggregate: Literal["mean", "sum", "percentile"] = Field(
         "mean", description="a structure node's value: mean (a density) or sum of the through-flow of the polygons it "
         "stands for, or the mean percentile rank (0-100) of their flow"
@@ -54,7 +70,7 @@ class Params(PluginParams):
 @hookimpl
 def g2s_analyze(structure: nx.Graph, params: Params, context: RunContext) -> Mapping[int, float]:
     """Through-flow of the initial graph, averaged, summed or ranked per structure node."""
-    flow = traffic.walking_flow(context.graph, max_sources=params.max_sources, seed=params.seed)
+    flow = traffic.walking_flow(context.graph, max_sources=params.max_sources, seed=params.seed, ties=params.ties)
     if params.aggregate == "percentile":
         return traffic.gather(context.graph, structure, traffic.percentile(flow), mean=True)
     total = traffic.origin_weight(traffic.surface_arrays(context.graph)).sum()

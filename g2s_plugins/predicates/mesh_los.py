@@ -159,5 +159,5 @@ def g2s_simplify_predicate(
     the rounds of :func:`g2s_plugins.heat_guarantee.guaranteed`."""
     params = params if params is not None else Params()
     agent = AgentShape.from_config(context.agent)
-    return guaranteed(lambda: mesh_los_predicate(context.mesh, agent, params, context.graph), params.min_heat_rho,
-                      context, forest, simplified)
+    return guaranteed(lambda: mesh_los_predicate(context.mesh, agent, params, context.graph), params, context, forest,
+                      simplified)

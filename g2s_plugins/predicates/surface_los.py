@@ -78,5 +78,5 @@ def g2s_simplify_predicate(
 
     # a navmesh without the C++ path (another implementation of g2s_core.model.NavMesh) is asked chain by chain
     whole = native if hasattr(navmesh, "collapse_forest") else None
-    return guaranteed(lambda: collapse_rule(params, line_of_sight, context.graph, whole), params.min_heat_rho, context,
-                      forest, simplified)
+    return guaranteed(lambda: collapse_rule(params, line_of_sight, context.graph, whole), params, context, forest,
+                      simplified)

@@ -49,9 +49,10 @@ traffic along each edge::
     length(u, v) + traffic_weight * |p(u) - p(v)|
 
 with p the percentile rank, 0-100, of each node's walking flow
-(:func:`g2s_plugins.traffic.walking_flow` with the ``flow`` analyzer's
-defaults, 256 area-sampled sources, seed 0: the same array that analyzer
-computes, so a run with both computes it once) and ``traffic_weight`` in
+(:func:`g2s_plugins.traffic.walking_flow` of ``traffic_sources``
+area-sampled sources, seed 0, and ``traffic_ties``, by default the ``flow``
+analyzer's defaults: the same array that analyzer computes with the same
+settings, so a run with both computes it once) and ``traffic_weight`` in
 metres per percentile point; its radius is ``traffic_radius``. Where
 traffic steps from busy to quiet, distances grow and the cover puts a node
 on the quiet side. Then the plain cover above runs from that set, so every
@@ -119,6 +120,8 @@ class Params(PluginParams):
     min_area: float | None = Field(None, ge=0, description="walkable areas smaller than this (m²) are reported, not covered; default pi (radius / 2)²")
     traffic_weight: float = Field(0.0, ge=0, description="metres added to each edge per percentile point of walking-flow difference between its ends, for a first cover that puts nodes where traffic changes; 0: the plain cover only")
     traffic_radius: float | None = Field(None, gt=0, description="radius of that traffic-aware cover, in metres of those lengths; default 5/3 radius (10 m for 6 m)")
+    traffic_sources: int = Field(traffic.WALKING_SOURCES, ge=1, description="sources of the walking flow that cover reads: set as the flow analyzer's max_sources")
+    traffic_ties: traffic.Ties = Field("first", description="equally short paths in that walking flow (first or split): set as the flow analyzer's ties")
     leaf_min_depth: float = Field(0.0, ge=0, description="leaves of the navmesh graph less deep than this (m: how far their polygon reaches beyond the edge it shares) are not seeded as terminals, the cover still reaches them; 0: every leaf; leaves without a polygon (the sampling route) always count")
 
 
@@ -157,7 +160,8 @@ def g2s_select_terminals(graph: nx.Graph, params: Params, context: RunContext) -
     if params.traffic_weight > 0:
         traffic_radius = params.traffic_radius if params.traffic_radius is not None else TRAFFIC_RADIUS_SHARE * radius
         # the plain cover below grows from this one, so its radius guarantee holds whatever this one chose
-        seeds = cover_paths(traffic_lengths(arrays, params.traffic_weight), seeds, eligible, traffic_radius)
+        lengths = traffic_lengths(arrays, params.traffic_weight, params.traffic_sources, params.traffic_ties)
+        seeds = cover_paths(lengths, seeds, eligible, traffic_radius)
     cover = cover_paths(adjacency, seeds, eligible, radius)
     waypoints = np.setdiff1d(cover, leaves)
     rows = np.union1d(leaves, waypoints)
@@ -220,14 +224,16 @@ def _plan_distances(points: np.ndarray, start: np.ndarray, end: np.ndarray) -> n
     return np.linalg.norm(offset - t[..., None] * span[None, :, :], axis=2)
 
 
-def traffic_lengths(arrays: traffic.SurfaceArrays, weight: float) -> sp.csr_array:
+def traffic_lengths(
+    arrays: traffic.SurfaceArrays, weight: float, sources: int = traffic.WALKING_SOURCES, ties: traffic.Ties = "first"
+) -> sp.csr_array:
     """(n, n) edge lengths of a graph's ``arrays`` plus ``weight`` x the difference of the walking-flow
-    percentiles of each edge's ends.
+    percentiles (``sources`` sampled sources, ``ties``) of each edge's ends.
 
     Rows as in ``arrays`` (:func:`g2s_plugins.traffic.surface_arrays`);
     ``weight`` in metres per percentile point (0-100). O(m) after the flow.
     """
-    rank = traffic.percentile(traffic.arrays_walking_flow(arrays, max_sources=traffic.WALKING_SOURCES))
+    rank = traffic.percentile(traffic.arrays_walking_flow(arrays, max_sources=sources, ties=ties))
     adjacency = arrays.adjacency
     rows = np.repeat(np.arange(arrays.n), np.diff(adjacency.indptr))
     lengths = adjacency.data + weight * np.abs(rank[rows] - rank[adjacency.indices])

@@ -162,7 +162,7 @@ def test_a_parameter_of_the_wrong_type_is_refused_before_any_work(section, says,
     # each of these valid but extreme values ended in a plugin's failure, or (detail_sample_dist) a segmentation fault
     ("graph_only", "graph.params.cell_height=1e300", "graph.params.cell_height: 1e+300 m is more than Recast's single"),
     ("map_piece", "terminals.params.edge_search_radii=1e300", "terminals.params.edge_search_radii: looking 4e+299 m"),
-    ("map_analysis_sampling", "graph.params.spacing=1e-300", "sampling: spacing 1e-300 m is too small for 1"),
+    ("map_analysis_sampling_paper", "graph.params.spacing=1e-300", "sampling: spacing 1e-300 m is too small for 1"),
     ("map_analysis_sampling", "graph.params.method=grid", "sampling: spacing 4.94066e-324 m gives a grid of inf x inf points"),
     ("map_piece", "terminals.params.sample_step=1e-300", "terminals.params.sample_step: a sample every 1e-300 m along the"),
     ("graph_only", "agent.radius=1e-300", "agent.radius: crest probes every 5e-301 m (half the agent's radius) along"),
