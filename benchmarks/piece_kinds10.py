@@ -113,16 +113,18 @@ def _disc(cx: float, cz: float, r: float, y0: float, y1: float, facets: int = 48
     return _hull([[cx + r * math.cos(a), y, cz + r * math.sin(a)] for a in angles for y in (y0, y1)])
 
 
-def revolving_drum() -> SampleLevel:
-    """Room 8 x 6 m, a west doorway; in the east wall a revolving door's drum (r 1.5 m), wings book-folded."""
-    cx, cz, r = 8.15, 3.0, 1.5
+def revolving_drum(r: float = 1.5) -> SampleLevel:
+    """Room 8 x 6 m, a west doorway; in the east wall a revolving door's drum (inner radius ``r`` m, at most 2.8),
+    wings book-folded."""
+    cx, cz = 8.15, 3.0
     parts = _room(8.0, 6.0, {"W": [(2.2, 3.8, 3.0)], "E": [(cz - r, cz + r, 3.0)]})
     parts.append(_disc(cx, cz, r + 0.05, -SLAB, 0.0))
     parts.append(_disc(cx, cz, r + 0.05, 2.4, 2.6))
     for a0, a1 in ((60.0, 120.0), (240.0, 300.0)):
         parts += _arc_band(cx, cz, r, r + 0.05, a0, a1, 0.0, 2.4)
     parts.append(_box(cx - r, cx + r, 0.0, 2.4, cz - 0.075, cz + 0.075))
-    return _level("revolving_drum", parts, [_opening((-0.3, 0.0, 3.0), _W, 1.6), _opening((cx + r, 0.0, cz), _E, 2.6)])
+    chord = 2.0 * r * math.sin(math.radians(60.0))  # of the mouth's 120 degrees
+    return _level("revolving_drum", parts, [_opening((-0.3, 0.0, 3.0), _W, 1.6), _opening((cx + r, 0.0, cz), _E, chord)])
 
 
 def embrasure_wall() -> SampleLevel:
