@@ -27,6 +27,7 @@ from __future__ import annotations
 
 import math
 import weakref
+from collections.abc import Callable
 from dataclasses import dataclass
 from functools import cached_property
 from typing import Any
@@ -805,9 +806,58 @@ def head_room(caster: RayCaster, ground: np.ndarray, agent: AgentShape) -> np.nd
     return clear_above(caster, ground + EPSILON * UP, agent.height - EPSILON)
 
 
+def ground_across_crack(
+    caster: RayCaster,
+    probes: np.ndarray,
+    down: np.ndarray,
+    sides: list[np.ndarray],
+    reach: float,
+    walkable: Callable[[np.ndarray], np.ndarray],
+) -> tuple[np.ndarray, np.ndarray]:
+    """Which probes that found no ground of their own stand on ground across a crack, and how far below.
+
+    A probe over a crack (a grating's 2 cm slots, unwelded tiles laid apart) stands on the floor
+    beside it, as the agent's foot does: where walkable ground lies within ``reach`` along ``down``
+    from both ``probe + side`` and ``probe - side``, for the first of ``sides`` where it does.
+    Beyond a floor's edge ground lies on one side at most, and a hole wider than twice the side
+    stays a hole. The one crack rule of the walk test (:func:`walk_segments`) and of the
+    ``entry_exit`` selector's search for the floor's end (docs/entry_exit.md, "A ninth round of
+    piece kinds", causes 2 and 3).
+
+    Args:
+        caster: the level's ray caster.
+        probes: (n, 3) ray origins, metres.
+        down: (3,) or (n, 3) the rays' directions.
+        sides: offsets tried in turn, each (3,) or (n, 3), metres: one crack step long.
+        reach: longest ray that finds ground, metres.
+        walkable: (m,) hit faces (-1: none) -> (m,) bool, the faces the caller's agent stands on.
+
+    Returns:
+        ``(on, distance)``: (n,) bool, the probe stands on ground across a crack; (n,) metres along
+        ``down`` to the nearer side's ground (``inf`` where not on).
+
+    Two rays a probe and side tried: O(n len(sides)) rays.
+    """
+    probes = np.asarray(probes, dtype=np.float64).reshape(-1, 3)
+    n = len(probes)
+    down = np.broadcast_to(np.asarray(down, dtype=np.float64), (n, 3))
+    on = np.zeros(n, dtype=bool)
+    distance = np.full(n, np.inf)
+    for side in sides:
+        rows = np.flatnonzero(~on)
+        if len(rows) == 0:
+            break
+        offset = np.broadcast_to(np.asarray(side, dtype=np.float64), (n, 3))[rows]
+        beside = caster.first_hits_of([(probes[rows] + offset, down[rows]), (probes[rows] - offset, down[rows])])
+        both = np.logical_and.reduce([(hit.distance <= reach) & walkable(hit.face) for hit in beside])
+        on[rows[both]] = True
+        distance[rows[both]] = np.minimum(beside[0].distance, beside[1].distance)[both]
+    return on, distance
+
+
 _CRACK_AXES = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
-"""The horizontal axes along which :func:`walk_segments` looks for ground on both sides of a probe that found none,
-one crack step (r / 8, docs/entry_exit.md: 0.05 m for the map-piece agent) away."""
+"""The horizontal axes along which :func:`walk_segments` looks for ground on both sides of a probe that found none
+(:func:`ground_across_crack`), one crack step (r / 8, docs/entry_exit.md: 0.05 m for the map-piece agent) away."""
 
 
 def walk_segments(
@@ -829,7 +879,8 @@ def walk_segments(
       segment finds ground no more than ``max_climb + margin`` below the
       straight line, on a triangle no steeper than the agent's max slope,
       and an upward ray from the same point finds the agent's height of
-      head room above that ground;
+      head room above that ground (a point over a crack stands on the ground
+      one crack step to both sides of it, :func:`ground_across_crack`);
     * between neighbouring points the ground rises or falls by no more than
       the agent's max climb (a step) or its max slope times their distance;
     * with ``max_gap``, the ground under every point lies within ``max_gap``
@@ -872,19 +923,14 @@ def walk_segments(
     ok[moving] = across.distance >= lengths[moving]
     good = (down.distance <= reach) & caster.walkable_faces(down.face, agent.max_slope_deg)
     distance = np.where(good, down.distance, 0.0)
-    # A probe over a crack (a grating's 2 cm slots, unwelded tiles laid apart) stands on the floor beside it, as
-    # the agent's foot does: where ground lies one crack step away on both sides of it along x, else along z (the
-    # nearer of the two). Beyond a floor's edge ground lies on one side at most; a hole wider than twice the step
-    # stays a hole. Only probes without ground are cast again.
-    for axis in _CRACK_AXES * (agent.radius / 8.0):
-        rows = np.flatnonzero(~good)
-        if len(rows) == 0:
-            break
-        beside = caster.first_hits_of([(lifted[rows] + axis, -UP), (lifted[rows] - axis, -UP)])
-        on = [(hit.distance <= reach) & caster.walkable_faces(hit.face, agent.max_slope_deg) for hit in beside]
-        crack = on[0] & on[1]
-        good[rows[crack]] = True
-        distance[rows[crack]] = np.minimum(beside[0].distance, beside[1].distance)[crack]
+    # A probe over a crack stands on the ground one crack step to both sides of it, along x, else along z.
+    rows = np.flatnonzero(~good)
+    crack, beside = ground_across_crack(
+        caster, lifted[rows], -UP, list(_CRACK_AXES * (agent.radius / 8.0)), reach,
+        lambda faces: caster.walkable_faces(faces, agent.max_slope_deg),
+    )
+    good[rows[crack]] = True
+    distance[rows[crack]] = beside[crack]
     ground_y = np.where(good, line[:, 1] + lift - distance, line[:, 1])
     above = agent.height - (line[:, 1] + lift - ground_y)
     good[good] = has_room(up.distance[good], above[good])

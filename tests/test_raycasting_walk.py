@@ -6,7 +6,7 @@ import pytest
 import trimesh
 
 from g2s_core.config import PRESETS_DIR, load_config
-from g2s_plugins._raycasting import AgentShape, RayCaster, walk_segments
+from g2s_plugins._raycasting import UP, AgentShape, RayCaster, ground_across_crack, walk_segments
 
 AGENT = AgentShape.from_config(load_config(PRESETS_DIR / "map_piece_sampling.yaml").agent)
 
@@ -37,3 +37,27 @@ def test_a_gap_wider_than_twice_the_crack_step_is_no_floor() -> None:
     starts, ends = np.array([[3.0, 0.0, 0.3], [3.0, 0.0, 1.1]]), np.array([[3.0, 0.0, 1.9], [5.0, 0.0, 1.1]])
     ok, _ = walk_segments(RayCaster(mesh), starts, ends, AGENT, 0.1)
     assert ok.tolist() == [False, False]
+
+
+def test_the_crack_rule_needs_ground_on_both_sides_along_one_of_its_sides() -> None:
+    # ground_across_crack is the one crack rule of walk_segments and of entry_exit's search for the floor's end.
+    # Probes 0.1 m over: the middle of a 2 cm slot along x (slats across it along z only); 0.03 m past the deck's
+    # end, over a slat (ground on one side along x, none along z); the 0.2 m gap between two decks (none a step away).
+    caster = RayCaster(_grating(0.02))
+    two = trimesh.util.concatenate([trimesh.creation.box(bounds=[[0.0, -0.05, 0.0], [6.0, 0.0, 1.0]]),
+                                    trimesh.creation.box(bounds=[[0.0, -0.05, 1.2], [6.0, 0.0, 2.2]])])
+    step = AGENT.radius / 8.0
+    slot = [2.0, 0.1, 0.09]
+
+    def walkable(faces: np.ndarray) -> np.ndarray:
+        return caster.walkable_faces(faces, AGENT.max_slope_deg)
+
+    along_x, along_z = np.array([step, 0.0, 0.0]), np.array([0.0, 0.0, step])
+    on, distance = ground_across_crack(caster, np.array([slot, slot]), -UP, [along_x], 0.5, walkable)
+    assert on.tolist() == [False, False]  # both sides in the slot
+    on, distance = ground_across_crack(caster, np.array([slot, [6.03, 0.1, 0.54]]), -UP, [along_x, along_z], 0.5,
+                                       walkable)
+    assert on.tolist() == [True, False] and distance[0] == pytest.approx(0.1) and distance[1] == np.inf
+    on, _ = ground_across_crack(RayCaster(two), np.array([[3.0, 0.1, 1.1]]), -UP, [along_z], 0.5,
+                                lambda faces: faces >= 0)
+    assert on.tolist() == [False]

@@ -139,7 +139,7 @@ from g2s_core.config import AgentConfig
 from g2s_core.errors import PluginError
 from g2s_core.model import NavMesh, Opening, RunContext, Terminals, vec3
 from g2s_core.plugin import PluginParams, hookimpl
-from g2s_plugins._raycasting import UP, RayCaster
+from g2s_plugins._raycasting import UP, RayCaster, ground_across_crack
 from g2s_plugins._surface import on_navmesh
 from g2s_plugins.terminals._boundary import BoundaryLoop, LoopSamples, boundary_loops, polygon_components, sample_loops
 from g2s_plugins.terminals._sampled_surface import SampledSurface, sampled_surface
@@ -371,12 +371,12 @@ def _surface_ends(
         missing = (hits.distance > s.lift + s.climb) | ~_walkable(caster, hits.face, s)
         # A probe in a crack running along the way (a grating's slot, the way out within a few degrees of
         # it) stays in it from one probe to the next: it stands on the surface when surface lies a search
-        # step to both sides of it (beyond an edge oblique to the way, one side at most).
+        # step to both sides of it, across the way (beyond an edge oblique to the way, one side at most).
         rows = np.flatnonzero(missing)
         side = s.delta * _unit(np.cross(directions[part][rows // n_off], UP))
-        beside = caster.first_hits_of([(probes[rows] + side, probe_down[rows]), (probes[rows] - side, probe_down[rows])])
-        on = [(hit.distance <= s.lift + s.climb) & _walkable(caster, hit.face, s) for hit in beside]
-        missing[rows] = ~(on[0] & on[1])
+        missing[rows] = ~ground_across_crack(
+            caster, probes[rows], probe_down[rows], [side], s.lift + s.climb, lambda faces: _walkable(caster, faces, s)
+        )[0]
         missing = missing.reshape(-1, n_off)
         # The surface ends where two probes in a row find none: a crack narrower than a search step
         # (unwelded floor tiles) is no edge, and neither the agent nor Recast's voxels see it.
@@ -708,7 +708,8 @@ def _extend(kept: list[_Edge], caster: RayCaster, s: _Settings) -> tuple[np.ndar
     outwards = np.broadcast_to(out[None, :, None, :], (2, n, n_ext, 3)).reshape(-1, 3)
     reach = s.lift + s.climb
     floor = (caster.first_hits(cand, down).distance <= reach).reshape(2, n, n_ext)
-    # One candidate over a crack, with floor on both sides of it, stands on the floor (see _surface_ends).
+    # One candidate over a crack, with floor on both sides of it, stands on the floor: the crack rule of
+    # ground_across_crack, its two sides the neighbouring candidates a search step away (no ray more).
     floor[:, :, :-1] |= np.concatenate([np.ones((2, n, 1), dtype=bool), floor[:, :, :-2]], axis=2) & floor[:, :, 1:]
     beyond = caster.first_hits(cand + outwards * (2.0 * inset), down).distance  # just past the edge line
     edge_goes_on = (beyond > reach).reshape(2, n, n_ext)
