@@ -28,11 +28,8 @@ def registry() -> Registry:
     return Registry.from_entry_points()
 
 
-def run(registry: Registry, mesh, preset: str, method: str | None = None):
-    raw = load_raw_config(PRESETS_DIR / f"{preset}.yaml")
-    if method is not None:
-        raw["graph"]["params"]["method"] = method
-    plan = pipeline.plan(parse_config(raw), registry)
+def run(registry: Registry, mesh, preset: str):
+    plan = pipeline.plan(parse_config(load_raw_config(PRESETS_DIR / f"{preset}.yaml")), registry)
     return pipeline.run(plan, registry, mesh, "level", mesh_sha256(mesh))
 
 
@@ -98,9 +95,7 @@ def inside(point: np.ndarray, outline: np.ndarray) -> bool:
 def test_the_sampling_route_is_carried_to_the_polygons_the_samples_stand_on(registry):
     # a flat level of one floor: a sample stands on the polygon whose outline holds it in plan
     mesh = samples.load_sample("two_rooms_one_door").mesh
-    # Poisson-disk samples lie everywhere, the margin Recast erodes included (the preset's grid, aligned with this
-    # level's walls, has no sample there)
-    result = run(registry, mesh, "map_analysis_sampling", method="poisson")
+    result = run(registry, mesh, "map_analysis_sampling")
     assert result.context.navmesh is None
     surface = evaluation.navmesh_surface(result, evaluation.reference_flow(result))
     navmesh = build_navmesh(mesh.vertices, mesh.faces, result.context.agent, navmesh_builder.Params())

@@ -24,13 +24,6 @@ from g2s_plugins.recast.build import check_grid
 AGENT = types.SimpleNamespace(radius=0.3, height=2.0, max_climb=0.4, max_slope=45.0)
 MM = 1e-3
 
-POISSON = {"graph.params.method": "poisson"}
-"""The sampling route's tests below run Poisson-disk samples: since map_analysis_sampling samples a grid (4 December
-2026), a generated level's walls lie on the grid's lines, and a level moved far gets other samples there
-(sample:dungeon at 10 km: 594 samples, not 589; the grid is placed in world coordinates by the sampling builder,
-docs/sampling.md), which is the builder's to fix; what these tests check (the caster's local frame, ties within
-rounding) holds for samples at generic places."""
-
 
 def moved(mesh: trimesh.Trimesh, shift) -> trimesh.Trimesh:
     return trimesh.Trimesh(vertices=mesh.vertices + np.asarray(shift, dtype=np.float64), faces=mesh.faces,
@@ -205,7 +198,7 @@ def test_the_sampling_route_moved_far_gives_the_same_structure(shift):
     # Before the ray caster's local frame: 118 nodes (4.3 m apart) at 10 km, 128 (5.2 m) at 1,000 km, not 124
     level = generate_level("sample:dungeon")
     shift = np.array(shift)
-    reference, result = (g2s_core.run(moved(level, s), "map_analysis_sampling", **POISSON).structure
+    reference, result = (g2s_core.run(moved(level, s), "map_analysis_sampling").structure
                          for s in (0 * shift, shift))
     assert (result.number_of_nodes(), result.number_of_edges()) == \
            (reference.number_of_nodes(), reference.number_of_edges())
@@ -219,7 +212,7 @@ def test_a_sampled_level_moved_far_ranks_its_walking_flows_as_at_the_origin():
     # from the origin's 387
     level = generate_level("sample:building")
     shift = np.array([1e4, 0.0, -1e4])
-    reference, result = (g2s_core.run(moved(level, s), "map_analysis_sampling", **POISSON).structure
+    reference, result = (g2s_core.run(moved(level, s), "map_analysis_sampling").structure
                          for s in (0 * shift, shift))
     assert (result.number_of_nodes(), result.number_of_edges()) == \
            (reference.number_of_nodes(), reference.number_of_edges())

@@ -410,17 +410,52 @@ def _poisson_candidates(surface: trimesh.Trimesh, spacing: float, params: Params
     return np.asarray(points, dtype=np.float64), np.asarray(faces, dtype=np.int64), area / max(count, 1)
 
 
+GRID_OFFSET = (0.2548776662466927, 0.0698402909980533)
+"""How far (fractions of the spacing, along x and z) the grid lies from the one centred on the footprint.
+
+Centred, with whole-metre extents and a spacing of twice a 0.5 m agent radius, the grid's lines, and the agent
+checks' probes a clearance (half the spacing) from them, fall exactly on a generated level's walls and triangle
+edges, where a ray's hit or miss is decided by rounding: the same level moved 10 km got other samples
+(sample:dungeon: 594, not 589). These fractions (1/g - 1/2 and 1/g^2 - 1/2, g the plastic number 1.3247...) are
+neither simple fractions, nor are their sums and differences with each other and with a half, so neither the
+lines nor their probes meet lines on simple fractions of a metre or at 45 degrees (measured in docs/sampling.md).
+"""
+
+
+GRID_TOLERANCE = 1e-9
+"""Relative: a footprint's width within this of a whole number of spacings counts as that number."""
+
+GRID_QUANTUM = 2.0**-26
+"""Metres (15 nm): the grid's lines lie on its multiples, see :func:`_on_quantum`."""
+
+
+def _on_quantum(start: float, spacing: float, count: int) -> np.ndarray:
+    """(count,) line positions ``start + k spacing`` (m), each rounded to a multiple of ``GRID_QUANTUM``.
+
+    The steps ``k spacing`` are rounded on their own, so the lines' distances to each other are the same bits
+    wherever the level lies: sums of multiples of the quantum below 2^26 m are exact, and a level moved by whole
+    metres gets the same lines moved by exactly as much (only ``start`` may round to its neighbour, a quantum
+    away). Without it, positions 10 km out keep fewer bits than at the origin, and pairs of samples exactly
+    ``connect_radius`` or ``gap_radius`` apart (whole multiples of the spacing) were taken or not by rounding.
+    """
+    steps = np.round(spacing * np.arange(count) / GRID_QUANTUM) * GRID_QUANTUM
+    return float(np.round(start / GRID_QUANTUM)) * GRID_QUANTUM + steps
+
+
 def _grid_candidates(surface: trimesh.Trimesh, spacing: float) -> tuple[np.ndarray, np.ndarray]:
     """Points where a regular XZ grid of vertical lines crosses ``surface``: (points, face index)."""
     lo, hi = np.asarray(surface.bounds)
-    across = [float(np.floor((hi[i] - lo[i]) / spacing)) + 1 for i in (0, 2)]  # inf for a tiny spacing
+    # inf for a tiny spacing. A footprint a whole number of spacings wide gets that many + 1 lines wherever it
+    # lies: 10 km out its width may come out a rounding under (sample:t_junction: 13 x 3 lines at the origin,
+    # 13 x 4 there).
+    across = [float(np.floor((hi[i] - lo[i]) / spacing * (1.0 + GRID_TOLERANCE))) + 1 for i in (0, 2)]
     if not across[0] * across[1] <= MAX_CANDIDATES:
         raise G2SError(f"sampling: spacing {spacing:g} m gives a grid of {across[0]:.4g} x {across[1]:.4g} points; use a larger spacing")
     nx_, nz_ = map(int, across)
-    # Centre the grid on the surface's footprint.
-    x0 = lo[0] + 0.5 * ((hi[0] - lo[0]) - (nx_ - 1) * spacing)
-    z0 = lo[2] + 0.5 * ((hi[2] - lo[2]) - (nz_ - 1) * spacing)
-    gx, gz = np.meshgrid(x0 + spacing * np.arange(nx_), z0 + spacing * np.arange(nz_), indexing="ij")
+    # Centre the grid on the surface's footprint, then move it off the level's own lines (GRID_OFFSET).
+    x0 = lo[0] + 0.5 * ((hi[0] - lo[0]) - (nx_ - 1) * spacing) + GRID_OFFSET[0] * spacing
+    z0 = lo[2] + 0.5 * ((hi[2] - lo[2]) - (nz_ - 1) * spacing) + GRID_OFFSET[1] * spacing
+    gx, gz = np.meshgrid(_on_quantum(x0, spacing, nx_), _on_quantum(z0, spacing, nz_), indexing="ij")
     xz = np.column_stack([gx.ravel(), gz.ravel()])
     column, points, faces = all_hits_down(RayCaster(surface), xz, hi[1] + 1.0)
     if len(points) == 0:
