@@ -35,12 +35,9 @@ from g2s_core.errors import G2SError
 from g2s_core.mesh import mesh_sha256
 from g2s_core.registry import Registry
 from g2s_plugins.samples import pieces
+from g2s_plugins.samples.levels import SLAB_THICKNESS as SLAB  # the floor slabs' thickness, metres
 from g2s_plugins.samples.levels import SampleLevel, _opening
-
-SLAB = 0.2
-"""Thickness of floor slabs, metres."""
-
-_W, _E, _S, _N = (-1.0, 0.0, 0.0), (1.0, 0.0, 0.0), (0.0, 0.0, -1.0), (0.0, 0.0, 1.0)
+from g2s_plugins.samples.pieces import _E, _N, _S, _W
 
 
 def _hull(points) -> trimesh.Trimesh:

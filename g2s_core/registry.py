@@ -100,10 +100,10 @@ class Registry:
     def from_entry_points(cls, group: str = ENTRY_POINT_GROUP) -> Registry:
         """The entry points of ``group`` (sorted by package, then name), each loaded when its stage is first asked for."""
         registry = cls()
-        def package(ep: importlib.metadata.EntryPoint) -> str:  # "?": no distribution, or one whose metadata has no name
+        def package_of(ep: importlib.metadata.EntryPoint) -> str:  # "?": no distribution, or one whose metadata has no name
             return (ep.dist and ep.dist.name) or "?"
-        entries = sorted(importlib.metadata.entry_points(group=group), key=lambda ep: (package(ep), ep.name))
-        unique = {(package(ep), ep.name, ep.value): ep for ep in entries}  # a package found twice
+        entries = sorted(importlib.metadata.entry_points(group=group), key=lambda ep: (package_of(ep), ep.name))
+        unique = {(package_of(ep), ep.name, ep.value): ep for ep in entries}  # a package found twice
         for order, ((package, _, _), ep) in enumerate(unique.items()):
             stage = ep.name.split(".", 1)[0]
             registry._unloaded.setdefault(stage if stage in BY_KEY else None, []).append((order, package, ep))

@@ -92,7 +92,7 @@ class CollapseParams(PluginParams):
         "(the heat map's): set as the flow analyzer's max_sources"
     )
     heat_ties: traffic.Ties = Field(
-        "first", description="equally short paths in that walking flow (first or split): set as the flow analyzer's ties"
+        traffic.WALKING_TIES, description="equally short paths in that walking flow (first or split): set as the flow analyzer's ties"
     )
 
 
@@ -144,7 +144,7 @@ def edge_surface_gaps(structure: nx.Graph, navmesh: NavMesh, agent: AgentConfig,
 
 
 def traffic_ranks(
-    graph: nx.Graph, sources: int = traffic.WALKING_SOURCES, ties: traffic.Ties = "first"
+    graph: nx.Graph, sources: int = traffic.WALKING_SOURCES, ties: traffic.Ties = traffic.WALKING_TIES
 ) -> dict[Hashable, float]:
     """Walking-flow percentile rank (0-100) of each node of ``graph`` that some walk starts at or passes through.
 

@@ -84,7 +84,7 @@ by no more than this is never restored (the smallest ``max_traffic_step`` measur
 
 def restored(
     graph: nx.Graph, forest: nx.DiGraph, simplified: nx.DiGraph, min_rho: float, context: RunContext,
-    sources: int = traffic.WALKING_SOURCES, ties: traffic.Ties = "first",
+    sources: int = traffic.WALKING_SOURCES, ties: traffic.Ties = traffic.WALKING_TIES,
 ) -> set[Hashable] | None:
     """The nodes the next simplification of ``forest`` must keep, or ``None`` when ``simplified`` is kept.
 

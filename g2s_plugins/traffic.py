@@ -83,8 +83,8 @@ from g2s_plugins import _trees
 from g2s_plugins.surface_arrays import SurfaceArrays, surface_arrays
 
 __all__ = [
-    "EXACT_NODES", "TIE_TOLERANCE", "WALKING_SOURCES", "SurfaceArrays", "Ties", "arrays_walking_flow", "distance_to",
-    "flow_error_bound", "gather", "is_exact", "od_flow", "origin_weight", "percentile", "represented_area",
+    "EXACT_NODES", "TIE_TOLERANCE", "WALKING_SOURCES", "WALKING_TIES", "SurfaceArrays", "Ties", "arrays_walking_flow",
+    "distance_to", "flow_error_bound", "gather", "is_exact", "od_flow", "origin_weight", "percentile", "represented_area",
     "shortest_path_flow", "split_path_flow", "surface_arrays", "tie_tolerance", "walking_flow",
 ]
 
@@ -131,6 +131,10 @@ alternating runs, load 2.2; docs/performance.md)."""
 WALKING_SOURCES = 256
 """Sources of the walking flow that the ``flow`` analyzer and a traffic-aware ``coverage`` compute by default
 (one computation per run when both use it: :func:`walking_flow`)."""
+
+WALKING_TIES: Ties = "first"
+"""Ties of that walking flow by default: the ``flow`` analyzer's ``ties``, which the simplification's ``heat_ties``
+and ``coverage``'s ``traffic_ties`` default to as well."""
 
 EXACT_NODES = 2000
 """The heat-map guarantee (:mod:`g2s_plugins.heat_guarantee`) and the evaluation's reference

@@ -290,8 +290,8 @@ struct PathCount {
 class SplitSweep {
   public:
     explicit SplitSweep(int32_t n)
-        : distance_(static_cast<size_t>(n)), through_(static_cast<size_t>(n)), count_(static_cast<size_t>(n)),
-          position_(static_cast<size_t>(n)), order_(static_cast<size_t>(n)) {}
+        : distance_(static_cast<size_t>(n)), count_(static_cast<size_t>(n)), position_(static_cast<size_t>(n)),
+          order_(static_cast<size_t>(n)) {}
 
     void run(const Graph& g, int32_t source, const double* values, double tolerance, double* through) {
         constexpr double infinity = std::numeric_limits<double>::infinity();
@@ -331,22 +331,21 @@ class SplitSweep {
                 if (shortest(v, j)) count_[g.indices[j]].add(count_[v]);
         }
         for (int32_t v = 0; v < g.n; ++v) through[v] = 0.0;  // unreached nodes carry nothing
-        for (int32_t i = settled - 1; i >= 0; --i) {
+        for (int32_t i = settled - 1; i >= 0; --i) {  // each w a shortest-path edge leads to comes later: done
             const int32_t v = order_[i];
             double total = 0.0;
             for (int32_t j = g.indptr[v]; j < g.indptr[v + 1]; ++j)
                 if (shortest(v, j)) {
                     const int32_t w = g.indices[j];
-                    total += count_[v].over(count_[w]) * (values[w] + through_[w]);
+                    total += count_[v].over(count_[w]) * (values[w] + through[w]);
                 }
-            through_[v] = total;
             through[v] = total;
         }
         through[source] = 0.0;
     }
 
   private:
-    std::vector<double> distance_, through_;
+    std::vector<double> distance_;
     std::vector<PathCount> count_;
     std::vector<int32_t> position_, order_;
     std::vector<Entry> queue_;

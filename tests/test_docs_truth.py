@@ -296,11 +296,10 @@ def unknown_stage_parameters(text: str) -> list[str]:
     from g2s_core.registry import installed
 
     registry = installed()
-    taken: dict[str, set[str]] = {}
-    for stage, key in STAGE_PARAMETER.findall(text):
-        if stage not in taken:
-            taken[stage] = {name for info in registry.plugins(stage) for name in info.params_model.model_fields}
-    return sorted({f"{stage}.params.{key}" for stage, key in STAGE_PARAMETER.findall(text) if key not in taken[stage]})
+    paths = set(STAGE_PARAMETER.findall(text))
+    taken = {stage: {name for info in registry.plugins(stage) for name in info.params_model.model_fields}
+             for stage in {stage for stage, _ in paths}}
+    return sorted(f"{stage}.params.{key}" for stage, key in paths if key not in taken[stage])
 
 
 def test_the_parameter_path_check_finds_what_no_plugin_takes():

@@ -58,7 +58,7 @@ class Params(PluginParams):
     max_sources: int = Field(traffic.WALKING_SOURCES, ge=1, description="graphs with more nodes than this sample this many area-weighted sources")
     seed: int = Field(0, description="seed of the source sample")
     ties: traffic.Ties = Field(
-        "first", description="a pair's equally short paths: first (all its weight along one) or split (evenly over all "
+        traffic.WALKING_TIES, description="a pair's equally short paths: first (all its weight along one) or split (evenly over all "
         "of them; for grids of samples, whose path lengths tie)"
     )
     aggregate: Literal["mean", "sum", "percentile"] = Field(

@@ -121,7 +121,7 @@ class Params(PluginParams):
     traffic_weight: float = Field(0.0, ge=0, description="metres added to each edge per percentile point of walking-flow difference between its ends, for a first cover that puts nodes where traffic changes; 0: the plain cover only")
     traffic_radius: float | None = Field(None, gt=0, description="radius of that traffic-aware cover, in metres of those lengths; default 5/3 radius (10 m for 6 m)")
     traffic_sources: int = Field(traffic.WALKING_SOURCES, ge=1, description="sources of the walking flow that cover reads: set as the flow analyzer's max_sources")
-    traffic_ties: traffic.Ties = Field("first", description="equally short paths in that walking flow (first or split): set as the flow analyzer's ties")
+    traffic_ties: traffic.Ties = Field(traffic.WALKING_TIES, description="equally short paths in that walking flow (first or split): set as the flow analyzer's ties")
     leaf_min_depth: float = Field(0.0, ge=0, description="leaves of the navmesh graph less deep than this (m: how far their polygon reaches beyond the edge it shares) are not seeded as terminals, the cover still reaches them; 0: every leaf; leaves without a polygon (the sampling route) always count")
 
 
@@ -225,7 +225,7 @@ def _plan_distances(points: np.ndarray, start: np.ndarray, end: np.ndarray) -> n
 
 
 def traffic_lengths(
-    arrays: traffic.SurfaceArrays, weight: float, sources: int = traffic.WALKING_SOURCES, ties: traffic.Ties = "first"
+    arrays: traffic.SurfaceArrays, weight: float, sources: int = traffic.WALKING_SOURCES, ties: traffic.Ties = traffic.WALKING_TIES
 ) -> sp.csr_array:
     """(n, n) edge lengths of a graph's ``arrays`` plus ``weight`` x the difference of the walking-flow
     percentiles (``sources`` sampled sources, ``ties``) of each edge's ends.
