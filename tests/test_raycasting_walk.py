@@ -54,7 +54,7 @@ def test_the_crack_rule_needs_ground_on_both_sides_along_one_of_its_sides() -> N
 
     along_x, along_z = np.array([step, 0.0, 0.0]), np.array([0.0, 0.0, step])
     on, distance = ground_across_crack(caster, np.array([slot, slot]), -UP, [along_x], 0.5, walkable)
-    assert on.tolist() == [False, False]  # both sides in the slot
+    assert on.tolist() == [False, False] and np.isinf(distance).all()  # both sides in the slot: no ground found
     on, distance = ground_across_crack(caster, np.array([slot, [6.03, 0.1, 0.54]]), -UP, [along_x, along_z], 0.5,
                                        walkable)
     assert on.tolist() == [True, False] and distance[0] == pytest.approx(0.1) and distance[1] == np.inf
