@@ -1,4 +1,4 @@
-"""Level kinds of the fifth to tenth held-out rounds (issue 9): generators no preset setting was made on.
+"""Level kinds of the fifth to eleventh held-out rounds (issue 9): generators no preset setting was made on.
 
 Fifth round: six kinds, each about 1,000 navmesh polygons with the presets' agent (radius 0.5 m, height 2 m, climb 0.4 m):
 ``subway`` (platforms, track pits 1.2 m lower, stairs up to two concourses), ``archipelago`` (islands joined by
@@ -55,6 +55,16 @@ and planks, with nothing below), ``flooded`` (a town whose streets hold no floor
 with two trains of carriages one walks through) and ``ruins`` (three storeys joined only by slabs fallen through
 holes, some too steep, and one stairwell). The same rule again: the top of a solid under a roof is floor unless
 it stops 1 m short (:func:`_gable`), and a flat top out of reach (a tank's, a skylight's) is floor of its own.
+
+Eleventh round: six more kinds, 498-1,035 navmesh polygons with that agent (seeds 0-2): ``library`` (three storeys
+of floor-to-ceiling shelves in rows round a reading hall open to the roof, galleries, a grand flight, two
+stairwells), ``trenches`` (three zig-zag trench lines 2.5 m deep under an open field, communication trenches,
+dugouts, exits, footbridges), ``refinery`` (a yard cut into fields by pipe runs crossed only by crossover stairs,
+tanks whose roofs are reached by stairs wound round their shells, a catwalk), ``cemetery`` (a lattice of graves
+in plots between paths, mausoleums, a chapel over a crypt), ``quarry`` (an open pit of five benches joined only by
+a switchback haul road, berms, machines) and ``stairhall`` (landings 3-12 m up over a hall's floor joined only by
+flights and bridges). A round solid standing on the ground needs the ground to stop under it too
+(:func:`_round_ground`), and a stair that ends on a roof needs a landing: the last step alone joined no tank roof.
 
 Run: ``.venv/bin/python benchmarks/level_kinds.py OUT_DIR [--kinds subway forest] [--seeds 0 1 2]`` writes
 ``OUT_DIR/<kind>_s<seed>.obj``, the files ``benchmarks/analysis_quality.py --levels`` takes (which also takes the
@@ -2949,6 +2959,533 @@ def ruins(seed: int) -> trimesh.Trimesh:
     return s.mesh()
 
 
+def library(seed: int) -> trimesh.Trimesh:
+    """A library of three storeys 4.5 m apart, 60-70 x 40-46 m, under a roof at 50 degrees (:func:`_lid`): a
+    reading hall (20-26 x 14-18 m) in the middle open from the ground to the roof, with reading tables on its floor
+    and a grand flight 2.5 m wide up to the first storey; round it on the upper storeys, galleries behind a rail
+    1.1 m high; two switchback stairwells (:func:`_switchback`) in opposite corners join all three storeys. On every
+    storey the wings east and west of the hall hold blocks of bookshelves 0.6 m deep, floor to ceiling, 5-9 m
+    long, in rows along z with aisles 1.3-1.6 m wide between them and cross aisles 2 m wide; the upper storeys'
+    strips north and south of the hall hold rows of shelves along z with a walk 3 m wide along the rail, and the
+    ground storey's hold reading tables. A main aisle 6 m wide runs from the entrance (a 3 m door in the west wall,
+    onto a forecourt) to the hall on every storey.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    size_x, size_z, storey = rng.uniform(60.0, 70.0), rng.uniform(40.0, 46.0), 4.5
+    hw, hd = rng.uniform(10.0, 13.0), rng.uniform(7.0, 9.0)
+    hall = (size_x / 2 - hw, size_x / 2 + hw, size_z / 2 - hd, size_z / 2 + hd)
+    length = _well_length(storey)
+    wells = [(0.5, 0.5), (size_x - 4.5, size_z - 0.5 - length)]
+    open_wells = [(x, x + 4.0, z + 2.0, z + length) for x, z in wells]
+    steps = math.ceil(storey / 0.18)
+    run = steps * 0.28
+    grand = (hall[1] - run, hall[1], hall[3] - 3.0, hall[3] - 0.5)
+    kept = [(x - 2.5, x + 6.5, z - 2.5, z + length + 1.5) for x, z in wells]  # each well and an apron at its landing
+    kept.append((0.0, hall[0], size_z / 2 - 3.0, size_z / 2 + 3.0))  # the main aisle
+    s.box(-12.0, size_x, -0.5, 0.0, 0.0, size_z)  # the ground storey's floor and the forecourt
+    for x, z in wells:
+        _switchback(s, x, z, 0.0, storey)
+        _switchback(s, x, z, storey, storey)
+    s.stairs(np.array([grand[0], (grand[2] + grand[3]) / 2]), np.array([1.0, 0.0]), 2.5, 0.0, storey, storey / steps,
+             0.28)
+
+    def shelves(x0: float, x1: float, z0: float, z1: float, y: float) -> None:
+        """Rows of shelves along z over the plan [x0, x1] x [z0, z1], from storey ``y`` up to the ceiling, an aisle
+        all round the rows (so every aisle between two rows is open at both ends)."""
+        aisle = rng.uniform(1.3, 1.6)
+        for x in np.arange(x0 + aisle, x1 - 0.6 - aisle, 0.6 + aisle):
+            z = z0 + 1.5
+            while z < z1 - 3.5:
+                n = min(rng.uniform(5.0, 9.0), z1 - 1.5 - z)
+                if n > 2.0 and _clear(x, x + 0.6, z, z + n, kept):
+                    s.box(x, x + 0.6, y, y + storey - 0.3, z, z + n)
+                z += n + 2.0
+
+    for k in range(3):
+        y = k * storey
+        if k:
+            s.slab(0.0, size_x, 0.0, size_z, y, [hall, *open_wells])
+            rail_gap = [(grand[2] - hall[2], grand[3] - grand[2])] if k == 1 else []
+            s.wall((hall[1], hall[2]), (hall[1], hall[3]), y, y + 1.1, rail_gap)
+            s.wall((hall[0], hall[2]), (hall[0], hall[3]), y, y + 1.1)
+            for z in (hall[2], hall[3]):
+                s.wall((hall[0], z), (hall[1], z), y, y + 1.1)
+        top = y + storey - 0.3
+        s.wall((0.0, 0.0), (0.0, size_z), y, top, [(size_z / 2 - 1.5, 3.0)] if k == 0 else [], thickness=0.3)
+        s.wall((size_x, 0.0), (size_x, size_z), y, top, thickness=0.3)
+        for z in (0.0, size_z):
+            s.wall((0.0, z), (size_x, z), y, top, thickness=0.3)
+        shelves(0.3, hall[0] - 3.0, 0.3, size_z - 0.3, y)
+        shelves(hall[1] + 3.0, size_x - 0.3, 0.3, size_z - 0.3, y)
+        if k:
+            shelves(hall[0], hall[1], 0.3, hall[2] - 3.0, y)
+            shelves(hall[0], hall[1], hall[3] + 3.0, size_z - 0.3, y)
+    for z0, z1 in ((1.5, hall[2] - 2.0), (hall[2] + 2.0, hall[3] - 4.5), (hall[3] + 2.0, size_z - 1.5)):
+        for x in np.arange(hall[0] + 2.0, hall[1] - 4.0, rng.uniform(5.0, 6.0)):  # reading tables, 3.6 x 1.2 m
+            for z in np.arange(z0, z1 - 1.2, 3.4):
+                if _clear(x, x + 3.6, z, z + 1.2, [grand]):
+                    s.box(x, x + 3.6, 0.0, 0.75, z, z + 1.2)
+    _lid(s, 0.0, size_x, 0.0, size_z, 3 * storey - 0.3)
+    return s.mesh()
+
+
+def trenches(seed: int) -> trimesh.Trimesh:
+    """A battlefield 150-170 x 110-125 m of open ground with three lines of trench (front, support and reserve,
+    each 2 m wide and 2.5 m deep, running along x 25-35 m apart): fire bays 8-11 m long between traverses, where
+    the trench steps back 3 m round a block of earth 2.5 m wide. Zig-zag communication trenches (legs 7-10 m long
+    along z, jogging 4 m along x) join neighbouring lines in 2-3 places; dugouts (5 x 3 m rooms under a roof 0.25
+    m thick flush with the field, entered by a passage 1.6 m wide) open off the bays of the support and reserve
+    lines; ramps at 23 degrees lead out of the trench, two over the front line's parapet and two behind the
+    reserve line. Wire entanglements (1.2 m high, 6-16 m long) lie in front of the front line; shell-broken stumps
+    and rubble on the field.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    size_x, size_z, depth = rng.uniform(150.0, 170.0), rng.uniform(110.0, 125.0), 2.5
+    holes: list[tuple[float, float, float, float]] = []
+    roofs: list[tuple[float, float, float, float]] = []
+    bridges: list[tuple[float, float, float, float]] = []  # footbridges, so the field between trenches is reached
+    lines = [rng.uniform(28.0, 34.0)]
+    for _ in range(2):
+        lines.append(lines[-1] + rng.uniform(25.0, 35.0))
+    bays: list[list[tuple[float, float]]] = []  # each line's bays (x0, x1)
+    for k, zl in enumerate(lines):
+        x, row = 10.0, []
+        while x < size_x - 25.0:
+            bay = rng.uniform(8.0, 11.0)
+            holes.append((x, x + bay, zl, zl + 2.0))
+            row.append((x, x + bay))
+            xa = x + bay  # the traverse: round a block of earth (xa + 2, xa + 4.5) x (zl, zl + 3)
+            holes += [(xa, xa + 2.0, zl, zl + 5.0), (xa, xa + 6.5, zl + 3.0, zl + 5.0),
+                      (xa + 4.5, xa + 6.5, zl, zl + 5.0)]
+            x = xa + 6.5
+        holes.append((x, x + rng.uniform(8.0, 11.0), zl, zl + 2.0))
+        bays.append(row)
+    for (za, zb), row in zip(pairwise(lines), bays):
+        for _ in range(int(rng.integers(2, 4))):  # communication trenches from a bay down to a bay of the next line
+            x0, x1 = row[int(rng.integers(len(row)))]
+            x, z = rng.uniform(x0 + 1.0, x1 - 3.0), za + 2.0
+            while zb - z > 12.0:
+                leg = rng.uniform(7.0, 10.0)
+                holes.append((x, x + 2.0, z, z + leg + 2.0))
+                z += leg
+                jog = 4.0 if rng.random() < 0.5 else -4.0
+                holes.append((min(x, x + jog), max(x, x + jog) + 2.0, z, z + 2.0))
+                x += jog
+            b0, b1 = min(bays[lines.index(zb)], key=lambda b: abs((b[0] + b[1]) / 2 - x))
+            xt = float(np.clip(x, b0 + 0.5, b1 - 2.5))  # the last leg lands in a bay, not on a traverse's block
+            holes += [(min(x, xt), max(x, xt) + 2.0, z, z + 2.0), (xt, xt + 2.0, z, zb + 1.0)]
+            bridges.append((xt - 1.0, xt + 3.0, (z + zb) / 2 - 1.0, (z + zb) / 2 + 1.0))  # over the last leg
+    for k in (1, 2):  # dugouts behind the support and reserve lines' bays
+        for x0, x1 in bays[k]:
+            if rng.random() < 0.45:
+                xm, zl = (x0 + x1) / 2, lines[k]
+                holes += [(xm - 0.8, xm + 0.8, zl + 2.0, zl + 3.5), (xm - 2.5, xm + 2.5, zl + 3.5, zl + 6.5)]
+                roofs += [(xm - 0.8, xm + 0.8, zl + 2.0, zl + 3.5), (xm - 2.5, xm + 2.5, zl + 3.5, zl + 6.5)]
+    for x0, x1, z0, z1 in holes:
+        s.box(x0, x1, -depth - 0.5, -depth, z0, z1)
+    exits = [(0, -1.0), (0, -1.0), (2, 1.0), (2, 1.0)]  # (line, side: -1 toward the front, +1 behind)
+    for k, side in exits:
+        x0, x1 = bays[k][int(rng.integers(len(bays[k])))]
+        xm = rng.uniform(x0 + 1.5, x1 - 1.5)
+        edge = lines[k] if side < 0 else lines[k] + 2.0
+        far = edge + side * depth / math.tan(math.radians(23.0))
+        holes.append((xm - 1.0, xm + 1.0, min(edge, far), max(edge, far)))
+        s.ramp(np.array([xm, edge]), np.array([xm, far]), 2.0, -depth, 0.0, thickness=depth)
+    for x0, x1, z0, z1 in roofs:
+        s.box(x0, x1, -0.25, 0.0, z0, z1)
+    for x0, x1, z0, z1 in bridges:
+        s.box(x0, x1, -0.2, 0.1, z0, z1)
+    s.ground(0.0, size_x, 0.0, size_z, 0.0, holes, thickness=depth)
+    for _ in range(int(rng.integers(8, 13))):  # wire in front of the front line
+        x, z, n = rng.uniform(5.0, size_x - 20.0), rng.uniform(4.0, lines[0] - 10.0), rng.uniform(6.0, 16.0)
+        s.box(x, x + n, 0.0, 1.2, z, z + 0.6)
+    for _ in range(int(rng.integers(20, 31))):  # stumps and rubble, clear of the trenches
+        p, r = rng.uniform([3.0, 3.0], [size_x - 3.0, size_z - 3.0]), rng.uniform(0.4, 1.2)
+        if _clear(p[0] - r - 1.0, p[0] + r + 1.0, p[1] - r - 1.0, p[1] + r + 1.0, holes):
+            s.rock(rng, p, r / 2, -0.3, r * 1.5)
+    return s.mesh()
+
+
+def _round_ground(s: _Solids, c: np.ndarray, r: float, sides: int, top: float) -> tuple[float, float, float, float]:
+    """Ground 0.5 m thick, its top at ``top``, between the regular ``sides``-gon of radius ``r`` about the plan point
+    ``c`` (x, z; its first corner on +x) and the square round it, in one piece a side (``sides`` a multiple of 8,
+    so the square's corners lie on its rays). Returns the square (x0, x1, z0, z1), a hole to leave in
+    :meth:`_Solids.ground`: under a round solid standing there the ground stops (Recast would find floor inside it)."""
+    a = np.arange(sides + 1) * 2 * math.pi / sides
+    unit = np.stack([np.cos(a), np.sin(a)], 1)
+    far = unit / np.abs(unit).max(axis=1, keepdims=True)
+    for k in range(sides):
+        s.prism(c + r * np.array([unit[k], far[k], far[k + 1], unit[k + 1]]), top - 0.5, top)
+    return c[0] - r, c[0] + r, c[1] - r, c[1] + r
+
+
+def refinery(seed: int) -> trimesh.Trimesh:
+    """A refinery's plant yard 140-160 x 100-115 m cut into six fields by pipe runs 0.9 m high and 1.2 m deep (two
+    along x, one along z, edge to edge), crossed only by crossover stairs (1.6 m wide, 1.2 m up, a platform over
+    the run, down the other side) every 18-35 m. In the fields north and south: storage tanks 6-9 m in radius and
+    8-12 m high, their flat roofs floor, each reached by a stair 2 m wide wound round its shell (risers under
+    0.18 m, treads 0.28 m at mid-stair, steps 0.45 m deep) ending on a landing 1.5 m long (without it the last
+    step alone did not join the roof for the presets' agent). In the middle field: a pipe-rack catwalk 2.4 m
+    wide, 5 m up on posts, crossing the run along z, a flight up at each end; process columns (0.8-2 m in radius,
+    15-35 m high under 50-degree cones), heat exchangers under ridged tops, pumps, and a control room one enters
+    (14 x 9 m, a 1.6 m door, a desk). The ground stops under the tanks and columns (:func:`_round_ground`).
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    size_x, size_z = rng.uniform(140.0, 160.0), rng.uniform(100.0, 115.0)
+    under: list[tuple[float, float, float, float]] = []  # squares round the round solids, no ground there
+    runs_z = [size_z * rng.uniform(0.32, 0.36), size_z * rng.uniform(0.64, 0.68)]  # pipe runs along x at these z
+    run_x = size_x * rng.uniform(0.45, 0.55)  # and one along z
+    for z in runs_z:
+        s.box(0.0, size_x, 0.0, 0.9, z, z + 1.2)
+    s.box(run_x, run_x + 1.2, 0.0, 0.9, 0.0, size_z)
+    flight = 7 * 0.28
+    kept = [(0.0, size_x, z - flight - 1.0, z + 1.2 + flight + 1.0) for z in runs_z]
+    kept.append((run_x - flight - 1.0, run_x + 1.2 + flight + 1.0, 0.0, size_z))
+
+    def crossover(p: np.ndarray, across: np.ndarray) -> None:
+        """Stairs up to a platform over a run and down again: ``p`` (x, z) the middle of the run's near edge,
+        ``across`` the unit plan vector across it."""
+        far = p + across * 1.2
+        s.stairs(p - across * flight, across, 1.6, 0.0, 1.2, 1.2 / 7, 0.28)
+        s.prism(_strip(p, far, 1.6), 0.9, 1.2)
+        s.stairs(far + across * flight, -across, 1.6, 0.0, 1.2, 1.2 / 7, 0.28)
+
+    for z in runs_z:
+        for x in np.arange(rng.uniform(6.0, 14.0), size_x - 6.0, rng.uniform(18.0, 30.0)):
+            if abs(x - run_x - 0.6) > 5.0:
+                crossover(np.array([x, z]), np.array([0.0, 1.0]))
+    for z in np.arange(rng.uniform(6.0, 12.0), size_z - 6.0, rng.uniform(20.0, 35.0)):
+        if all(abs(z - r - 0.6) > 5.0 for r in runs_z):
+            crossover(np.array([run_x, z]), np.array([1.0, 0.0]))
+    a24 = np.linspace(0, 2 * math.pi, 24, endpoint=False)
+    circle = np.stack([np.cos(a24), np.sin(a24)], 1)
+    for z0, z1 in ((0.0, runs_z[0]), (runs_z[1] + 1.2, size_z)):  # tanks in the south and north fields
+        x = rng.uniform(2.0, 8.0)
+        while True:
+            r = rng.uniform(6.0, 9.0)
+            if z1 - z0 < 2 * r + 10.0:
+                r = (z1 - z0 - 10.0) / 2
+            cx = x + r + 2.5
+            if abs(cx - run_x - 0.6) < r + 5.0:
+                x = run_x + 1.2 + 3.0
+                continue
+            if cx + r + 5.0 > size_x:
+                break
+            c = np.array([cx, rng.uniform(z0 + r + 5.0, z1 - r - 5.0)])
+            height = rng.uniform(8.0, 12.0)
+            s.prism(c + r * circle, -0.3, height)
+            under.append(_round_ground(s, c, r, 24, 0.0))
+            steps = math.ceil(height / 0.18)
+            turn, a0 = (1.0 if rng.random() < 0.5 else -1.0) * 0.28 / (r + 1.0), rng.uniform(0, 2 * math.pi)
+            for i in range(steps):  # the stair wound round the shell, each step a block 0.45 m deep
+                a, b = sorted((a0 + turn * i, a0 + turn * (i + 1)))
+                y = height * (i + 1) / steps
+                s.prism(c + _sector(r - 0.2, r + 2.0, a, b), y - 0.45, y)
+            a, b = sorted((a0 + turn * steps, a0 + turn * (steps + 1.5 / 0.28)))  # a landing 1.5 m long at the top
+            s.prism(c + _sector(r - 0.2, r + 2.0, a, b), height - 0.45, height)
+            x = cx + r + rng.uniform(5.0, 9.0)
+    zc = (runs_z[0] + runs_z[1] + 1.2) / 2 + rng.uniform(-3.0, 3.0)  # the catwalk across the middle field
+    xa, xb = rng.uniform(14.0, run_x - 20.0), rng.uniform(run_x + 20.0, size_x - 14.0)
+    s.box(xa, xb, 4.7, 5.0, zc - 1.2, zc + 1.2)
+    for x in np.arange(xa + 0.5, xb, 6.0):
+        for z in (zc - 1.2, zc + 0.9):
+            s.box(x - 0.15, x + 0.15, 0.0, 4.7, z, z + 0.3)
+    steps = math.ceil(5.0 / 0.18)
+    run = steps * 0.28
+    s.stairs(np.array([xa - run, zc]), np.array([1.0, 0.0]), 2.0, 0.0, 5.0, 5.0 / steps, 0.28)
+    s.stairs(np.array([xb + run, zc]), np.array([-1.0, 0.0]), 2.0, 0.0, 5.0, 5.0 / steps, 0.28)
+    kept.append((xa - run - 1.5, xb + run + 1.5, zc - 2.5, zc + 2.5))
+    rx, rz = rng.uniform(3.0, 8.0), runs_z[0] + 4.5
+    room = (rx, rx + 14.0, rz, rz + 9.0)
+    if _clear(*room, kept[-1:]):
+        s.wall((room[0], room[2]), (room[1], room[2]), 0.0, 3.5, [(6.2, 1.6)])
+        s.wall((room[0], room[3]), (room[1], room[3]), 0.0, 3.5)
+        for x in room[:2]:
+            s.wall((x, room[2]), (x, room[3]), 0.0, 3.5)
+        s.box(room[0] + 3.0, room[1] - 3.0, 0.0, 0.8, room[3] - 3.0, room[3] - 2.0)  # the desk
+        _gable(s, room[0] - 0.2, room[1] + 0.2, room[2] - 0.2, room[3] + 0.2, 3.5)
+        kept.append((room[0] - 1.0, room[1] + 1.0, room[2] - 3.0, room[3] + 1.0))
+    z_lo, z_hi = runs_z[0] + 1.2, runs_z[1]
+    placed = 0
+    for _ in range(300):  # process columns, exchangers and pumps in the middle field
+        if placed == 24:
+            break
+        kind = 0 if placed < 5 else (1 if placed < 10 else 2)
+        w, d = ((4.2, 4.2) if kind == 0 else (6.0, 1.6) if kind == 1 else (1.4, 0.9))
+        x, z = rng.uniform(2.0, size_x - w - 2.0), rng.uniform(z_lo + 1.0, z_hi - d - 1.0)
+        if not _clear(x - 1.0, x + w + 1.0, z - 1.0, z + d + 1.0, kept):
+            continue
+        kept.append((x - 1.0, x + w + 1.0, z - 1.0, z + d + 1.0))
+        placed += 1
+        if kind == 0:
+            r, h = rng.uniform(0.8, 2.0), rng.uniform(15.0, 35.0)
+            under.append(_round_ground(s, np.array([x + 2.1, z + 2.1]), r, 8, 0.0))
+            ring = np.insert(np.array([x + 2.1, z + 2.1]) + r * circle[::3], 1, -0.3, axis=1)
+            apex = [[x + 2.1, h + r * math.tan(math.radians(50.0)), z + 2.1]]
+            s.hull(np.concatenate([ring, ring + [0.0, h, 0.0], apex]))
+        elif kind == 1:
+            s.box(x, x + w, 0.0, 1.0, z, z + d)
+            _gable(s, x, x + w, z, z + d, 2.0)
+        else:
+            s.box(x, x + w, 0.0, 1.2, z, z + d)
+    s.ground(0.0, size_x, 0.0, size_z, 0.0, under)
+    return s.mesh()
+
+
+def cemetery(seed: int) -> trimesh.Trimesh:
+    """A walled cemetery 100-120 x 80-90 m (walls 2.5 m high, two gates 3 m wide in the south wall and one in the
+    east): a main path 5 m wide from the south to a chapel at the north end, a cross path 4 m wide, a path 3.5 m
+    wide inside the walls and secondary paths 2.5 m wide cut the ground into 16 plots. Each plot holds rows of
+    graves along x (a ledger 0.9 x 2 m, 0.5 m high, and a headstone to 1.1 m, 1.5 m apart along a row, too close
+    to pass between) with lanes 1.6 m wide between the rows; one grave in eight is missing (a way across to the
+    next lane) and one in twelve is an obelisk under a 50-degree point. Four to six mausoleums (4 x 5 m, a 1.6 m
+    door, a sarcophagus) stand in plots; trees and benches line the main path. The chapel (12 x 16 m, a 2.4 m
+    door, pews either side of an aisle, an altar) has a flight down to a crypt 3.5 m below: a corridor 2.5 m wide
+    under the plots west of it with chambers 3 x 3 m on its south side, a sarcophagus in each.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    size_x, size_z = rng.uniform(100.0, 120.0), rng.uniform(80.0, 90.0)
+    xm, zc = size_x / 2, size_z * rng.uniform(0.42, 0.5)
+    chapel = (xm - 6.0, xm + 6.0, size_z - 20.0, size_z - 4.0)
+    steps = math.ceil(3.5 / 0.18)
+    run = steps * 0.28
+    sx, sz = chapel[1] - 2.0, chapel[3] - 2.0 - run  # the crypt's flight, along +z up to the chapel's floor
+    flight = (sx - 0.9, sx + 0.9, sz, sz + run)
+    corridor = (rng.uniform(8.0, 20.0), sx + 0.9, sz - 2.5, sz)
+    chambers = [(x, x + 3.0, sz - 5.5, sz - 2.5) for x in np.arange(corridor[0] + 1.0, corridor[1] - 4.0, 6.0)]
+    crypt = [corridor, *chambers]
+    s.ground(-2.0, size_x + 2.0, -2.0, size_z + 2.0, 0.0, [*crypt, flight], thickness=0.5)
+    for x0, x1, z0, z1 in crypt:
+        s.box(x0, x1, -4.0, -3.5, z0, z1)
+        s.box(x0, x1, -0.3, 0.0, z0, z1)
+    s.stairs(np.array([sx, sz]), np.array([0.0, 1.0]), 1.8, -3.5, 3.5, 3.5 / steps, 0.28)
+    for x0, x1, z0, z1 in chambers:
+        s.box(x0 + 0.5, x1 - 0.5, -3.5, -2.7, z0 + 0.5, z0 + 1.4)
+    s.wall((0.0, 0.0), (size_x, 0.0), 0.0, 2.5, [(rng.uniform(12.0, 25.0), 3.0), (xm - 1.5, 3.0)], thickness=0.5)
+    s.wall((0.0, size_z), (size_x, size_z), 0.0, 2.5, thickness=0.5)
+    s.wall((0.0, 0.0), (0.0, size_z), 0.0, 2.5, thickness=0.5)
+    s.wall((size_x, 0.0), (size_x, size_z), 0.0, 2.5, [(zc - 1.5, 3.0)], thickness=0.5)
+    top = 6.0  # the chapel
+    s.wall((chapel[0], chapel[2]), (chapel[1], chapel[2]), 0.0, top, [(4.8, 2.4)], thickness=0.3)
+    s.wall((chapel[0], chapel[3]), (chapel[1], chapel[3]), 0.0, top, thickness=0.3)
+    for x in chapel[:2]:
+        s.wall((x, chapel[2]), (x, chapel[3]), 0.0, top, thickness=0.3)
+    _gable(s, chapel[0] - 0.3, chapel[1] + 0.3, chapel[2] - 0.3, chapel[3] + 0.3, top)
+    for z in np.arange(chapel[2] + 2.0, chapel[3] - 6.0, 1.1):  # pews either side of a 2 m aisle
+        s.box(chapel[0] + 1.0, xm - 1.0, 0.0, 0.45, z, z + 0.5)
+        s.box(xm + 1.0, chapel[1] - 3.5, 0.0, 0.45, z, z + 0.5)
+    s.box(xm - 1.5, xm + 1.5, 0.0, 1.0, chapel[3] - 3.0, chapel[3] - 2.0)  # the altar
+    cols = [3.5, xm - 2.5, xm + 2.5, size_x - 3.5]
+    rows = [3.5, zc - 2.0, zc + 2.0, size_z - 3.5]
+    splits_x = [(a, a + rng.uniform(0.4, 0.6) * (b - a)) for a, b in pairwise(cols) if b - a > 10.0]
+    splits_z = [(a, a + rng.uniform(0.4, 0.6) * (b - a)) for a, b in pairwise(rows) if b - a > 10.0]
+    plots = []
+    for (a, b), (_, cut) in zip([(cols[0], cols[1]), (cols[2], cols[3])], splits_x):
+        for x0, x1 in ((a, cut - 1.25), (cut + 1.25, b)):
+            for (c, d), (_, cz) in zip([(rows[0], rows[1]), (rows[2], rows[3])], splits_z):
+                for z0, z1 in ((c, cz - 1.25), (cz + 1.25, d)):
+                    plots.append((x0, x1, z0, z1))
+    kept = [(chapel[0] - 3.0, chapel[1] + 3.0, chapel[2] - 3.0, size_z)]
+    for i in rng.choice(len(plots), size=int(rng.integers(4, 7)), replace=False):  # mausoleums
+        x0, _, z0, _ = plots[i]
+        x0 += rng.uniform(0.5, 4.0)
+        s.wall((x0, z0 + 0.1), (x0 + 4.0, z0 + 0.1), 0.0, 3.0, [(1.2, 1.6)])
+        s.wall((x0, z0 + 5.0), (x0 + 4.0, z0 + 5.0), 0.0, 3.0)
+        for x in (x0 + 0.1, x0 + 3.9):
+            s.wall((x, z0), (x, z0 + 5.0), 0.0, 3.0)
+        _gable(s, x0 - 0.2, x0 + 4.2, z0 - 0.1, z0 + 5.2, 3.0)
+        s.box(x0 + 1.2, x0 + 2.8, 0.0, 0.9, z0 + 3.2, z0 + 4.4)
+        kept.append((x0 - 1.0, x0 + 5.0, z0 - 1.0, z0 + 6.0))
+    for x0, x1, z0, z1 in plots:  # graves
+        for z in np.arange(z0 + 0.3, z1 - 2.0, 3.6):
+            for x in np.arange(x0 + 0.3, x1 - 0.9, 1.5):
+                if rng.random() < 0.125 or not _clear(x, x + 0.9, z, z + 2.0, kept):
+                    continue
+                if rng.random() < 1 / 12:
+                    point = [[x + 0.45, 2.0 + 0.45 * math.tan(math.radians(50.0)), z + 0.95]]
+                    s.hull(np.array([[px, y, pz] for px in (x, x + 0.9) for pz in (z + 0.5, z + 1.4)
+                                     for y in (0.0, 2.0)] + point))
+                else:
+                    s.box(x, x + 0.9, 0.0, 0.5, z, z + 2.0)
+                    s.box(x + 0.05, x + 0.85, 0.5, 1.1, z, z + 0.15)
+    octagon = np.stack([np.cos(np.arange(8) * math.pi / 4), np.sin(np.arange(8) * math.pi / 4)], 1)
+    for z in np.arange(8.0, chapel[2] - 4.0, rng.uniform(9.0, 12.0)):  # trees and benches along the main path
+        if abs(z - zc) > 4.0:
+            for x in (xm - 2.4, xm + 2.0):
+                s.prism(np.array([x + 0.2, z]) + 0.35 * octagon, 0.0, 9.0)
+            s.box(xm - 2.3, xm - 1.8, 0.0, 0.45, z + 3.0, z + 4.8)
+    return s.mesh()
+
+
+def quarry(seed: int) -> trimesh.Trimesh:
+    """An open-pit quarry 150-170 x 110-120 m at the rim: five benches 4 m below one another (faces vertical, each
+    bench 8-11 m wide on each side, the bottom 35-60 m across with a pond in it, no floor over the water), joined
+    only by a haul road 7 m wide at 9 degrees: one ramp a bench, lying on the lower bench along its outer face,
+    alternately on the north and south faces and heading alternately east and west. Safety berms (rocks 1-1.8 m
+    high every 2.8-4 m) line each bench's drop, cut where a ramp meets it; 2-4 haul trucks and excavators (9 x 5
+    or 6 x 3.5 m) under ridged tops and 12-18 rock piles on each bench and the bottom; a yard 25 m wide round the
+    rim with five stockpiles (cones at 38 degrees, which a walker climbs), a site office and a crusher. The ground
+    stops under every ramp, machine and stockpile (Recast would find floor inside them).
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    size_x, size_z, rise = rng.uniform(150.0, 170.0), rng.uniform(110.0, 120.0), 4.0
+    rects = [(0.0, size_x, 0.0, size_z)]  # each level's outline below the rim: bench k is rects[k - 1] less rects[k]
+    for _ in range(4):
+        x0, x1, z0, z1 = rects[-1]
+        w = rng.uniform(8.0, 11.0, size=4)
+        rects.append((x0 + w[0], x1 - w[1], z0 + w[2], z1 - w[3]))
+    bottom = rects[-1]
+    pond_w, pond_d = rng.uniform(0.3, 0.45) * (bottom[1] - bottom[0]), rng.uniform(0.25, 0.35) * (bottom[3] - bottom[2])
+    px = rng.uniform(bottom[0] + 4.0, bottom[1] - pond_w - 4.0)
+    pz = (bottom[2] + bottom[3] - pond_d) / 2
+    kept = [(px, px + pond_w, pz, pz + pond_d)]
+    under: list[list[tuple[float, float, float, float]]] = [[rects[0]], *([r] for r in rects[1:]), [kept[0]]]
+    length = rise / math.tan(math.radians(9.0))
+    for k, (x0, x1, z0, z1) in enumerate(rects):  # the ramp from level k (0: the rim) down to level k + 1
+        start = rng.uniform(x0 + 6.0, x1 - 6.0 - length)
+        a, b = (start, start + length) if k % 4 < 2 else (start + length, start)
+        z = z0 + 3.5 if k % 2 == 0 else z1 - 3.5
+        s.ramp(np.array([a, z]), np.array([b, z]), 7.0, -rise * k, -rise * (k + 1), thickness=rise)
+        under[k + 1].append((min(a, b), max(a, b), z - 3.5, z + 3.5))
+        kept += [(min(a, b) - 1.0, max(a, b) + 1.0, z - 4.5, z + 4.5), (a - 3.0, a + 3.0, z - 6.0, z + 6.0)]
+    for k in range(len(rects) - 1):  # berms along each level's drop into the next, clear of the ramps' ends
+        x0, x1, z0, z1 = rects[k + 1]
+        y = -rise * k
+        for p in np.arange(x0 + rng.uniform(0.0, 3.0), x1, rng.uniform(2.8, 4.0)):
+            for z in (z0 - 1.5, z1 + 1.5):
+                if _clear(p - 1.0, p + 1.0, z - 1.0, z + 1.0, kept):
+                    s.rock(rng, np.array([p, z]), 0.35, y - 0.3, y + rng.uniform(1.0, 1.8))
+        for q in np.arange(z0 + rng.uniform(0.0, 3.0), z1, rng.uniform(2.8, 4.0)):
+            for x in (x0 - 1.5, x1 + 1.5):
+                if _clear(x - 1.0, x + 1.0, q - 1.0, q + 1.0, kept):
+                    s.rock(rng, np.array([x, q]), 0.35, y - 0.3, y + rng.uniform(1.0, 1.8))
+    for k in range(1, len(rects) + 1):  # machines and rock piles on the benches and the bottom
+        outer, inner = rects[k - 1], rects[k] if k < len(rects) else None
+        y = -rise * k
+        for _ in range(int(rng.integers(2, 5))):
+            for _ in range(30):
+                w, d = (9.0, 5.0) if rng.random() < 0.5 else (6.0, 3.5)
+                x, z = rng.uniform(outer[0] + 3.0, outer[1] - w - 3.0), rng.uniform(outer[2] + 3.0, outer[3] - d - 3.0)
+                if inner is not None and not _clear(x - 3.0, x + w + 3.0, z - 3.0, z + d + 3.0, [inner]):
+                    continue
+                if _clear(x - 2.0, x + w + 2.0, z - 2.0, z + d + 2.0, kept):
+                    s.box(x, x + w, y - 0.3, y + 2.0, z, z + d)  # 1 m under its top, as under any gable
+                    _gable(s, x, x + w, z, z + d, y + 3.0)
+                    under[k].append((x, x + w, z, z + d))
+                    kept.append((x - 2.0, x + w + 2.0, z - 2.0, z + d + 2.0))
+                    break
+        for _ in range(int(rng.integers(12, 19))):  # rock piles
+            r = rng.uniform(0.8, 2.0)
+            x, z = rng.uniform(outer[0] + 2.0, outer[1] - 2.0), rng.uniform(outer[2] + 2.0, outer[3] - 2.0)
+            if (inner is None or _clear(x - r - 2.0, x + r + 2.0, z - r - 2.0, z + r + 2.0, [inner])) and \
+                    _clear(x - r - 1.0, x + r + 1.0, z - r - 1.0, z + r + 1.0, kept):
+                s.rock(rng, np.array([x, z]), r / 2, y - 0.3, y + r)
+                kept.append((x - r - 1.0, x + r + 1.0, z - r - 1.0, z + r + 1.0))
+    a16 = np.linspace(0, 2 * math.pi, 16, endpoint=False)
+    ring = np.stack([np.cos(a16), np.sin(a16)], 1)
+    yard = [(-25.0, size_x + 25.0, -25.0, -3.0), (-25.0, size_x + 25.0, size_z + 3.0, size_z + 25.0)]
+    placed = 0
+    for _ in range(200):  # stockpiles, a site office and a crusher in the yard, north and south of the pit
+        if placed == 7:
+            break
+        x0, x1, z0, z1 = yard[int(rng.integers(2))]
+        r = rng.uniform(4.0, 7.0)
+        x, z = rng.uniform(x0 + r + 2.0, x1 - r - 2.0), rng.uniform(z0 + r + 2.0, z1 - r - 2.0)
+        if not _clear(x - r - 2.0, x + r + 2.0, z - r - 2.0, z + r + 2.0, kept):
+            continue
+        kept.append((x - r - 2.0, x + r + 2.0, z - r - 2.0, z + r + 2.0))
+        if placed < 5:
+            base = np.insert(np.array([x, z]) + r * ring, 1, -0.3, axis=1)
+            s.hull(np.concatenate([base, [[x, r * math.tan(math.radians(38.0)), z]]]))
+            under[0].append(_round_ground(s, np.array([x, z]), r, 16, 0.0))
+        else:
+            s.box(x - r, x + r, -0.3, 3.0, z - r / 2, z + r / 2)
+            _gable(s, x - r, x + r, z - r / 2, z + r / 2, 4.0)
+            under[0].append((x - r, x + r, z - r / 2, z + r / 2))
+        placed += 1
+    s.ground(-25.0, size_x + 25.0, -25.0, size_z + 25.0, 0.0, under[0], thickness=rise)
+    for k, r in enumerate(rects):
+        s.ground(*r, -rise * (k + 1), under[k + 1], thickness=rise)
+    return s.mesh()
+
+
+def stairhall(seed: int) -> trimesh.Trimesh:
+    """A hall 58 m square whose only floors above the ground are landings: a 6 x 6 grid of landings 4 m square,
+    3-12 m up (3 m a level), each on four posts, 4.76 m apart, joined only by flights (17 risers of 0.176 m, 0.28 m
+    treads, 2 m wide, blocks 0.45 m deep, so one walks under them) between neighbours a level apart and flat bridges
+    between neighbours at one level. The landings' levels grow as a spanning tree from three or four landings at 3
+    m reached by solid flights from the hall's floor (each landing a level above, at, or below the one it is
+    reached from, upward twice as often), so every landing is reached; a quarter of the other pairs a level apart
+    or less are joined as well. Walls 16 m high close the hall, open to the sky; planters on its floor.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    n, margin, size, storey = 6, 5.0, 4.0, 3.0
+    steps = math.ceil(storey / 0.18)
+    run = steps * 0.28
+    pitch = size + run
+    side = 2 * margin + n * size + (n - 1) * run
+    s.box(0.0, side, -0.5, 0.0, 0.0, side)
+    for a, b in (((0.0, 0.0), (side, 0.0)), ((0.0, side), (side, side)), ((0.0, 0.0), (0.0, side)),
+                 ((side, 0.0), (side, side))):
+        s.wall(a, b, 0.0, 16.0, thickness=0.5)
+    level = np.zeros((n, n), dtype=int)
+    roots = [divmod(int(p), n) for p in rng.choice(n * n, size=int(rng.integers(3, 5)), replace=False)]
+    links: set[tuple[tuple[int, int], tuple[int, int]]] = set()
+    used: set[frozenset] = set()
+    frontier = []
+    for i, j in roots:
+        level[i, j] = 1
+        frontier.append((i, j))
+        di, dj = [(-1, 0), (1, 0), (0, -1), (0, 1)][int(rng.integers(4))]
+        used.add(frozenset([(i, j), (i + di, j + dj)]))
+        x0, z0 = margin + i * pitch, margin + j * pitch
+        heading = np.array([-di, -dj], dtype=np.float64)
+        edge = np.array([x0 + size / 2, z0 + size / 2]) + np.array([di, dj]) * size / 2
+        s.stairs(edge - heading * run, heading, 2.0, 0.0, storey, storey / steps, 0.28)
+    while frontier:
+        i, j = frontier.pop(int(rng.integers(len(frontier))))
+        for di, dj in rng.permutation([(-1, 0), (1, 0), (0, -1), (0, 1)]):
+            a, b = int(i + di), int(j + dj)
+            if 0 <= a < n and 0 <= b < n and level[a, b] == 0 and frozenset([(i, j), (a, b)]) not in used:
+                level[a, b] = int(np.clip(level[i, j] + rng.choice([-1, 0, 1, 1]), 1, 4))
+                links.add(((i, j), (a, b)))
+                used.add(frozenset([(i, j), (a, b)]))
+                frontier.append((a, b))
+    for i in range(n):
+        for j in range(n):
+            for a, b in ((i + 1, j), (i, j + 1)):
+                if a < n and b < n and frozenset([(i, j), (a, b)]) not in used and abs(level[i, j] - level[a, b]) <= 1:
+                    if rng.random() < 0.25:
+                        links.add(((i, j), (a, b)))
+    for i in range(n):
+        for j in range(n):
+            y, x0, z0 = storey * level[i, j], margin + i * pitch, margin + j * pitch
+            s.box(x0, x0 + size, y - 0.3, y, z0, z0 + size)
+            for px in (x0 + 0.2, x0 + size - 0.5):
+                for pz in (z0 + 0.2, z0 + size - 0.5):
+                    s.box(px, px + 0.3, 0.0, y - 0.3, pz, pz + 0.3)
+    for p, q in sorted(links):
+        low, high = (p, q) if level[p] <= level[q] else (q, p)
+        y = storey * level[low]
+        heading = np.array([high[0] - low[0], high[1] - low[1]], dtype=np.float64)
+        edge = np.array([margin + low[0] * pitch + size / 2, margin + low[1] * pitch + size / 2]) + heading * size / 2
+        if level[low] == level[high]:
+            s.prism(_strip(edge, edge + heading * run, 2.0), y - 0.3, y)
+        else:
+            s.stairs(edge, heading, 2.0, y, storey, storey / steps, 0.28, depth=0.45)
+    for _ in range(int(rng.integers(6, 11))):  # planters between the landings
+        i, j = rng.integers(0, n - 1, size=2)
+        x, z = margin + i * pitch + size + run / 2, margin + j * pitch + size + run / 2
+        s.box(x - 1.0, x + 1.0, 0.0, 0.8, z - 1.0, z + 1.0)
+    return s.mesh()
+
+
 KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
     "subway": subway, "archipelago": archipelago, "car_park": car_park,
     "forest": forest, "stadium": stadium, "harbour": harbour,
@@ -2957,6 +3494,8 @@ KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
     "tower": tower, "hospital": hospital, "mall": mall, "canyon": canyon, "hillside": hillside, "spaceship": spaceship,
     "kart": kart, "bunker": bunker, "hall": hall, "slopes": slopes, "islets": islets, "catacombs": catacombs,
     "helix": helix, "rooftops": rooftops, "flooded": flooded, "cave": cave, "train": train, "ruins": ruins,
+    "library": library, "trenches": trenches, "refinery": refinery, "cemetery": cemetery, "quarry": quarry,
+    "stairhall": stairhall,
 }
 """Kind name -> generator (seed -> Y-up mesh in metres)."""
 
