@@ -56,7 +56,7 @@ with two trains of carriages one walks through) and ``ruins`` (three storeys joi
 holes, some too steep, and one stairwell). The same rule again: the top of a solid under a roof is floor unless
 it stops 1 m short (:func:`_gable`), and a flat top out of reach (a tank's, a skylight's) is floor of its own.
 
-Eleventh round: six more kinds, 498-1,035 navmesh polygons with that agent (seeds 0-2): ``library`` (three storeys
+Eleventh round: six more kinds, 548-1,035 navmesh polygons with that agent (seeds 0-2): ``library`` (three storeys
 of floor-to-ceiling shelves in rows round a reading hall open to the roof, galleries, a grand flight, two
 stairwells), ``trenches`` (three zig-zag trench lines 2.5 m deep under an open field, communication trenches,
 dugouts, exits, footbridges), ``refinery`` (a yard cut into fields by pipe runs crossed only by crossover stairs,
