@@ -1,4 +1,4 @@
-"""The ninth and tenth rounds' level kinds (``benchmarks/level_kinds.py``) build the levels their docstrings describe.
+"""The ninth to eleventh rounds' level kinds (``benchmarks/level_kinds.py``) build the levels their docstrings describe.
 
 Smoke tests of quick generators (well under a second each to build and to give a navmesh): the connected areas
 the presets' agent finds are the ones each level is made to have, so a door that closes or a crawlway that
@@ -41,7 +41,7 @@ def areas(mesh) -> tuple[np.ndarray, object]:
 
 
 def test_the_same_seed_gives_the_same_level(kinds):
-    for kind in ("hall", "islets", "helix", "flooded"):
+    for kind in ("hall", "islets", "helix", "flooded", "stairhall", "quarry"):
         a, b, other = kinds[kind](0), kinds[kind](0), kinds[kind](1)
         assert np.array_equal(a.vertices, b.vertices) and np.array_equal(a.faces, b.faces), kind
         assert len(a.vertices) != len(other.vertices) or not np.array_equal(a.vertices, other.vertices), kind
@@ -125,3 +125,53 @@ def test_the_ruins_three_storeys_are_one_area(kinds):
     assert label.max() == 0
     for level in (0.0, 3.6, 7.2):
         assert (np.abs(nav.centres[:, 1] - 0.2 - level) < 0.3).sum() > 30, level
+
+
+def test_the_librarys_three_storeys_are_one_area(kinds):
+    """The grand flight and two stairwells join the storeys, and every aisle between shelves opens at both ends (a
+    first draft shut the top storey's stairwell landings in behind a row of shelves): one area, floor on each
+    storey (0, 4.5 and 9 m)."""
+    label, nav = areas(kinds["library"](0))
+    assert label.max() == 0
+    for level in (0.0, 4.5, 9.0):
+        assert (np.abs(nav.centres[:, 1] - 0.2 - level) < 0.3).sum() > 50, level
+
+
+def test_the_trenches_and_the_field_are_one_area(kinds):
+    """Exits join the trenches (2.5 m down) to the field, and footbridges over the communication trenches join the
+    fields they cut off (a first draft left two pieces of field, 318 and 602 m², out of reach)."""
+    label, nav = areas(kinds["trenches"](1))
+    assert label.max() == 0
+    assert (nav.centres[:, 1] < -2.0).sum() > 100 and (nav.centres[:, 1] > -0.5).sum() > 100
+
+
+def test_every_tank_roof_of_the_refinery_is_reached(kinds):
+    """One area: the stairs wound round the tanks reach their roofs (8-12 m up; a first draft's stairs ended
+    without a landing and joined none), and no floor is left inside a tank or a column."""
+    label, nav = areas(kinds["refinery"](0))
+    assert label.max() == 0
+    assert np.unique(np.round(nav.centres[nav.centres[:, 1] > 8.0, 1], 0)).size >= 4  # roofs at several heights
+
+
+def test_the_cemeterys_crypt_is_reached_from_the_chapel(kinds):
+    """The lanes between grave rows, the mausoleums and the crypt 3.5 m down are one area."""
+    label, nav = areas(kinds["cemetery"](2))
+    assert label.max() == 0
+    assert (nav.centres[:, 1] < -3.0).sum() > 5
+
+
+def test_the_quarrys_benches_are_one_area_down_the_haul_road(kinds):
+    """Rim and five benches (0 to -20 m, 4 m apart) are one area, joined by the ramps only; no floor inside a
+    ramp, a machine or a stockpile."""
+    label, nav = areas(kinds["quarry"](0))
+    assert label.max() == 0
+    for level in range(6):
+        assert (np.abs(nav.centres[:, 1] - 0.2 + 4.0 * level) < 0.3).sum() > 10, level
+
+
+def test_every_landing_of_the_stairhall_is_reached(kinds):
+    """The landings (3, 6, 9 and 12 m) grow as a spanning tree from the ones reached from the floor: one area."""
+    label, nav = areas(kinds["stairhall"](1))
+    assert label.max() == 0
+    for level in (3.0, 6.0, 9.0, 12.0):
+        assert (np.abs(nav.centres[:, 1] - 0.2 - level) < 0.3).any(), level
