@@ -56,7 +56,7 @@ with two trains of carriages one walks through) and ``ruins`` (three storeys joi
 holes, some too steep, and one stairwell). The same rule again: the top of a solid under a roof is floor unless
 it stops 1 m short (:func:`_gable`), and a flat top out of reach (a tank's, a skylight's) is floor of its own.
 
-Eleventh round: six more kinds, 548-1,035 navmesh polygons with that agent (seeds 0-2): ``library`` (three storeys
+Eleventh round: six more kinds, 548-855 navmesh polygons with that agent (seeds 0-2): ``library`` (three storeys
 of floor-to-ceiling shelves in rows round a reading hall open to the roof, galleries, a grand flight, two
 stairwells), ``trenches`` (three zig-zag trench lines 2.5 m deep under an open field, communication trenches,
 dugouts, exits, footbridges), ``refinery`` (a yard cut into fields by pipe runs crossed only by crossover stairs,
@@ -3241,8 +3241,9 @@ def cemetery(seed: int) -> trimesh.Trimesh:
     wide inside the walls and secondary paths 2.5 m wide cut the ground into 16 plots. Each plot holds rows of
     graves along x (a ledger 0.9 x 2 m, 0.5 m high, and a headstone to 1.1 m, 1.5 m apart along a row, too close
     to pass between) with lanes 1.6 m wide between the rows; one grave in eight is missing (a way across to the
-    next lane) and one in twelve is an obelisk under a 50-degree point. Four to six mausoleums (4 x 5 m, a 1.6 m
-    door, a sarcophagus) stand in plots; trees and benches line the main path. The chapel (12 x 16 m, a 2.4 m
+    next lane) and one in twelve carries an obelisk (under a 50-degree point) on its ledger instead of a
+    headstone. Four to six mausoleums (4 x 5 m, a 1.6 m door, a sarcophagus) stand in plots; trees and benches
+    line the main path. The chapel (12 x 16 m, a 2.4 m
     door, pews either side of an aisle, an altar) has a flight down to a crypt 3.5 m below: a corridor 2.5 m wide
     under the plots west of it with chambers 3 x 3 m on its south side, a sarcophagus in each.
     """
@@ -3305,12 +3306,13 @@ def cemetery(seed: int) -> trimesh.Trimesh:
             for x in np.arange(x0 + 0.3, x1 - 0.9, 1.5):
                 if rng.random() < 0.125 or not _clear(x, x + 0.9, z, z + 2.0, kept):
                     continue
+                s.box(x, x + 0.9, 0.0, 0.5, z, z + 2.0)  # the ledger, under an obelisk too (alone, an obelisk left
+                # notches 0.5 m deep either side of it in the row, which the cover took for dead ends)
                 if rng.random() < 1 / 12:
                     point = [[x + 0.45, 2.0 + 0.45 * math.tan(math.radians(50.0)), z + 0.95]]
                     s.hull(np.array([[px, y, pz] for px in (x, x + 0.9) for pz in (z + 0.5, z + 1.4)
-                                     for y in (0.0, 2.0)] + point))
+                                     for y in (0.5, 2.0)] + point))
                 else:
-                    s.box(x, x + 0.9, 0.0, 0.5, z, z + 2.0)
                     s.box(x + 0.05, x + 0.85, 0.5, 1.1, z, z + 0.15)
     octagon = np.stack([np.cos(np.arange(8) * math.pi / 4), np.sin(np.arange(8) * math.pi / 4)], 1)
     for z in np.arange(8.0, chapel[2] - 4.0, rng.uniform(9.0, 12.0)):  # trees and benches along the main path
