@@ -220,6 +220,7 @@ def agent_fits(
     clearance: float,
     triangles: np.ndarray | trimesh.Trimesh | None = None,
     faces: np.ndarray | None = None,
+    rejected: np.ndarray | None = None,
 ) -> np.ndarray:
     """(n,) bool: the agent can stand at each ground point.
 
@@ -240,9 +241,14 @@ def agent_fits(
     (or the triangles across the edges near it), with nothing else near, has
     ground all around without casting (see :class:`_Surroundings`); the
     answer is the same.
+
+    ``rejected``, when given ((n,) int array), receives the check that turned
+    each point away: ``REJECTED_BY``'s index (0: it fits).
     """
     points = np.asarray(points, dtype=np.float64).reshape(-1, 3)
+    why = rejected if rejected is not None else np.zeros(len(points), dtype=np.int8)
     ok = head_room(caster, points, agent)
+    why[:] = np.where(ok, 0, REJECTED_BY.index("head room"))
     if clearance <= 0 or not np.any(ok):
         return ok
     # Each test below only casts for the candidates every earlier test kept (a
@@ -265,6 +271,7 @@ def agent_fits(
         for direction in COMPASS:
             hits = caster.first_hits(points[near] + level * UP, direction)
             wall = (hits.distance < clearance) & ~caster.walkable_faces(hits.face, agent.max_slope_deg)
+            why[near[wall]] = REJECTED_BY.index("wall")
             near = near[~wall]
     idx = np.sort(np.concatenate([idx[far], near]))
 
@@ -294,7 +301,12 @@ def agent_fits(
         above = agent.height - np.where(ground, down.distance, 0.0)
         ground[ground] = clear_above(caster, probe[ground] + reach * UP, above[ground])
         ok[rows] = ground.reshape(len(rows), len(COMPASS)).all(axis=1)
+        why[rows[~ok[rows]]] = REJECTED_BY.index("ledge")
     return ok
+
+
+REJECTED_BY = ("fits", "head room", "wall", "ledge")
+"""What :func:`agent_fits` reports in ``rejected``: the index of the first check a point failed."""
 
 
 SOLID_DIRECTIONS = COMPASS[::2]
