@@ -175,10 +175,20 @@ def grated_room(height: float, slot: float = 0.02, slat: float = 0.08) -> Case:
     return case
 
 
+def split_floor(height: float, gap: float = 0.15) -> Case:
+    """Room 8 x 6 m whose floor is two slabs ``gap`` m apart across its middle (x 4), over nothing: wider than a
+    crack (twice the crack step, r / 4), so the floor's edges along it are ledges."""
+    room = piece_kinds10._room(8.0, 6.0, {"W": [(2.2, 3.8, 3.0)]})
+    x = 4.0 - 0.5 * gap
+    parts = room[1:] + [_box(-0.3, x, -0.2, 0.0, -0.3, 6.3), _box(x + gap, 8.3, -0.2, 0.0, -0.3, 6.3)]
+    return _by_height(parts, height)
+
+
 CASES: dict[str, Callable[[float], Case]] = {
     "plain_room": plain_room,
     "pillar_room": pillar_room,
     "ramp_15": ramp,
+    "split_floor_15cm": split_floor,
     "grating_2cm": grated_room,
     "grating_3cm": lambda height: grated_room(height, slot=0.03),
     "drum_1.5": lambda height: _captured(lambda: piece_kinds10.revolving_drum(1.5), height),

@@ -99,6 +99,8 @@ from g2s_plugins._raycasting import (
     RayCaster,
     all_hits_down,
     clear_above,
+    crack_sides,
+    ground_across_crack,
     head_room,
     hit_from_behind,
     ray_margin,
@@ -296,9 +298,16 @@ def agent_fits(
         rows = idx[begin : begin + MAX_LEDGE_BATCH]
         probe = (points[rows][:, None, :] + clearance * COMPASS[None, :, :]).reshape(-1, 3)
         down = caster.first_hits(probe + reach * UP, -UP)
-        ground = (down.distance <= 2.0 * reach) & caster.walkable_faces(down.face, agent.max_slope_deg)
+        walkable = lambda faces: caster.walkable_faces(faces, agent.max_slope_deg)  # noqa: E731
+        ground = (down.distance <= 2.0 * reach) & walkable(down.face)
+        distance = np.where(ground, down.distance, 0.0)
+        # A probe over a crack (a grating's slot) stands on the ground beside it, as in the walk test.
+        missing = np.flatnonzero(~ground)
+        crack, beside = ground_across_crack(caster, probe[missing] + reach * UP, -UP, crack_sides(agent), 2.0 * reach, walkable)
+        ground[missing[crack]] = True
+        distance[missing[crack]] = beside[crack]
         # Head room over the landing point, from the probe's own origin (see walk_segments).
-        above = agent.height - np.where(ground, down.distance, 0.0)
+        above = agent.height - distance
         ground[ground] = clear_above(caster, probe[ground] + reach * UP, above[ground])
         ok[rows] = ground.reshape(len(rows), len(COMPASS)).all(axis=1)
         why[rows[~ok[rows]]] = REJECTED_BY.index("ledge")
