@@ -299,17 +299,22 @@ def agent_fits(
         probe = (points[rows][:, None, :] + clearance * COMPASS[None, :, :]).reshape(-1, 3)
         down = caster.first_hits(probe + reach * UP, -UP)
         walkable = lambda faces: caster.walkable_faces(faces, agent.max_slope_deg)  # noqa: E731
-        ground = (down.distance <= 2.0 * reach) & walkable(down.face)
-        distance = np.where(ground, down.distance, 0.0)
-        # A probe over a crack (a grating's slot) stands on the ground beside it, as in the walk test.
-        missing = np.flatnonzero(~ground)
-        crack, beside = ground_across_crack(caster, probe[missing] + reach * UP, -UP, crack_sides(agent), 2.0 * reach, walkable)
-        ground[missing[crack]] = True
-        distance[missing[crack]] = beside[crack]
+        ground = ((down.distance <= 2.0 * reach) & walkable(down.face)).reshape(len(rows), len(COMPASS))
+        distance = np.where(ground, down.distance.reshape(ground.shape), 0.0)
+        origins = (probe + reach * UP).reshape(len(rows), len(COMPASS), 3)
+        # A probe over a crack (a grating's slot) stands on the ground beside it, as in the walk test; direction
+        # by direction, only for the points no earlier probe has put out (one probe without ground is enough).
+        kept = np.ones(len(rows), dtype=bool)
+        for k in range(len(COMPASS)):
+            missing = np.flatnonzero(kept & ~ground[:, k])
+            crack, beside = ground_across_crack(caster, origins[missing, k], -UP, crack_sides(agent), 2.0 * reach, walkable)
+            ground[missing[crack], k] = True
+            distance[missing[crack], k] = beside[crack]
+            kept[missing[~crack]] = False
         # Head room over the landing point, from the probe's own origin (see walk_segments).
-        above = agent.height - distance
-        ground[ground] = clear_above(caster, probe[ground] + reach * UP, above[ground])
-        ok[rows] = ground.reshape(len(rows), len(COMPASS)).all(axis=1)
+        tested = ground & kept[:, None]
+        ground[tested] = clear_above(caster, origins[tested], agent.height - distance[tested])
+        ok[rows] = kept & ground.all(axis=1)
         why[rows[~ok[rows]]] = REJECTED_BY.index("ledge")
     return ok
 
