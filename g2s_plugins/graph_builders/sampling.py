@@ -15,7 +15,9 @@ wanted. No Recast is involved: ``context.navmesh`` stays ``None``.
    head room (nothing within the agent height above it); clearance (no wall
    within ``clearance`` metres, horizontal rays at knee, waist and head
    height); no ledge within ``clearance`` (ground found at that distance in 8
-   directions, within a step or the max slope, with head room). This erodes
+   directions, within a step or the max slope, with head room; a probe over a
+   crack, such as a grating's slot, stands on the ground beside it, the walk
+   test's crack rule). This erodes
    the walkable surface by ``clearance`` as Recast erodes it by the radius.
    Rays whose answer the geometry near a candidate already gives are not
    cast (:class:`_Surroundings`); the answers are the same.
@@ -58,7 +60,9 @@ the resolved settings and counts (candidates, samples, rays, ...). The same mesh
 
 Cost, for c candidates, s samples and p sample pairs within
 ``connect_radius``: at most 41 rays a candidate (head room; 8 directions at
-up to 3 heights; 8 ledge rays down and 8 up), fewer where
+up to 3 heights; 8 ledge rays down and 8 up), and 2 or 4 for each ledge probe
+that finds no ground of its own (up to the first that finds none beside it
+either), fewer where
 :class:`_Surroundings` gives the answer; one more upward ray a candidate
 that fits, and 4 horizontal ones where that ray meets a face from behind; the Poisson-disk subset, k-d tree
 queries over the candidates and their pairs within ``spacing``; the pairs,
@@ -230,7 +234,12 @@ def agent_fits(
     ``clearance`` horizontally at knee (max climb + margin), waist (half
     height) and head (height - margin) levels, and in 8 directions at
     ``clearance`` metres walkable ground within a step (or the max slope)
-    of the point, with head room of its own.
+    of the point, with head room of its own. A ledge probe that finds none
+    stands on the ground one crack step to both sides of it, along x, else
+    along z (:func:`~g2s_plugins._raycasting.ground_across_crack` with
+    :func:`~g2s_plugins._raycasting.crack_sides`, the walk test's rule): a
+    grating's slots and tiles laid apart are floor, a gap wider than two
+    crack steps (r / 4) is a ledge.
 
     ``triangles``, when given: the corners of a walkable triangle of the
     caster's mesh that each point lies on, (n, 3, 3); or, with ``faces``
