@@ -34,13 +34,12 @@ from dataclasses import dataclass, field
 import numpy as np
 import trimesh
 from scipy import ndimage
+from scipy.spatial import ConvexHull
 
+import piece_kinds10  # the tenth round's piece kinds and their helpers (this script's folder)
 from g2s_plugins._raycasting import AgentShape, RayCaster
 from g2s_plugins.graph_builders import sampling
 from g2s_plugins.samples import pieces
-
-sys.path.insert(0, str(__import__("pathlib").Path(__file__).resolve().parent))
-import piece_kinds10  # noqa: E402  (the tenth round's piece kinds and their helpers)
 
 _box, _hull = piece_kinds10._box, piece_kinds10._hull
 
@@ -75,21 +74,8 @@ class Case:
 
 
 def _hull2d(xz: np.ndarray) -> np.ndarray:
-    """Convex hull (counter-clockwise in x, z) of plan points (Andrew's monotone chain)."""
-    pts = sorted(set(map(tuple, np.round(xz, 9).tolist())))
-    if len(pts) < 3:
-        return np.asarray(pts)
-
-    def half(points):
-        out: list[tuple[float, float]] = []
-        for p in points:
-            while len(out) >= 2 and (out[-1][0] - out[-2][0]) * (p[1] - out[-2][1]) - (out[-1][1] - out[-2][1]) * (p[0] - out[-2][0]) <= 0:
-                out.pop()
-            out.append(p)
-        return out
-
-    lower, upper = half(pts), half(pts[::-1])
-    return np.asarray(lower[:-1] + upper[:-1])
+    """The convex hull (k, 2) of plan points (n, 2), counter-clockwise in (x, z) (scipy's Qhull)."""
+    return xz[ConvexHull(xz).vertices]
 
 
 def _by_height(parts: list[trimesh.Trimesh], height: float, floor_y: float = 0.0) -> Case:
