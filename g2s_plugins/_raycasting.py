@@ -860,6 +860,12 @@ _CRACK_AXES = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
 (:func:`ground_across_crack`), one crack step (r / 8, docs/entry_exit.md: 0.05 m for the map-piece agent) away."""
 
 
+def crack_sides(agent: AgentShape) -> list[np.ndarray]:
+    """The sides (each (3,), metres) :func:`ground_across_crack` tries for a ground probe of ``agent``: one crack step
+    (r / 8) along x, then along z. The walk test's and the sampling builder's ledge probes' (one rule for both)."""
+    return list(_CRACK_AXES * (agent.radius / 8.0))
+
+
 def walk_segments(
     caster: RayCaster,
     starts: np.ndarray,
@@ -926,7 +932,7 @@ def walk_segments(
     # A probe over a crack stands on the ground one crack step to both sides of it, along x, else along z.
     rows = np.flatnonzero(~good)
     crack, beside = ground_across_crack(
-        caster, lifted[rows], -UP, list(_CRACK_AXES * (agent.radius / 8.0)), reach,
+        caster, lifted[rows], -UP, crack_sides(agent), reach,
         lambda faces: caster.walkable_faces(faces, agent.max_slope_deg),
     )
     good[rows[crack]] = True

@@ -35,7 +35,9 @@ from g2s_plugins._raycasting import (
     _SCENES,
     _row_starts,
     clear_above,
+    crack_sides,
     disk_inside,
+    ground_across_crack,
     head_room,
     walk_segments,
 )
@@ -596,7 +598,8 @@ def test_clearance_disk_may_reach_across_to_the_neighbouring_triangle():
 
 
 def _agent_fits_with_every_ray(caster: RayCaster, points: np.ndarray, agent: AgentShape, clearance: float) -> np.ndarray:
-    """agent_fits without any broad phase: 24 wall rays and 16 ledge rays per point."""
+    """agent_fits without any broad phase: 24 wall rays and 16 ledge rays per point (and 2 or 4 more for each ledge
+    probe that finds no ground: the crack rule)."""
     ok = head_room(caster, points, agent)
     levels = sorted({round(min(agent.max_climb + GROUND_MARGIN, agent.height - EPSILON), 6),
                      round(0.5 * agent.height, 6), round(agent.height - 5 * EPSILON, 6)})
@@ -607,8 +610,13 @@ def _agent_fits_with_every_ray(caster: RayCaster, points: np.ndarray, agent: Age
     reach = float(agent.max_rise(clearance)) + GROUND_MARGIN
     probe = (points[:, None, :] + clearance * COMPASS[None, :, :]).reshape(-1, 3)
     down = caster.first_hits(probe + reach * UP, -UP)
-    ground = (down.distance <= 2.0 * reach) & caster.walkable_faces(down.face, agent.max_slope_deg)
-    ground &= clear_above(caster, probe + reach * UP, agent.height - np.where(ground, down.distance, 0.0))
+    walkable = lambda faces: caster.walkable_faces(faces, agent.max_slope_deg)  # noqa: E731
+    ground = (down.distance <= 2.0 * reach) & walkable(down.face)
+    distance = np.where(ground, down.distance, 0.0)
+    missing = np.flatnonzero(~ground)  # a probe over a crack stands on the ground beside it
+    crack, beside = ground_across_crack(caster, probe[missing] + reach * UP, -UP, crack_sides(agent), 2.0 * reach, walkable)
+    ground[missing[crack]], distance[missing[crack]] = True, beside[crack]
+    ground &= clear_above(caster, probe + reach * UP, agent.height - distance)
     return ok & ground.reshape(len(points), len(COMPASS)).all(axis=1)
 
 

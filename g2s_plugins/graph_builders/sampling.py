@@ -15,7 +15,9 @@ wanted. No Recast is involved: ``context.navmesh`` stays ``None``.
    head room (nothing within the agent height above it); clearance (no wall
    within ``clearance`` metres, horizontal rays at knee, waist and head
    height); no ledge within ``clearance`` (ground found at that distance in 8
-   directions, within a step or the max slope, with head room). This erodes
+   directions, within a step or the max slope, with head room; a probe over a
+   crack, such as a grating's slot, stands on the ground beside it, the walk
+   test's crack rule). This erodes
    the walkable surface by ``clearance`` as Recast erodes it by the radius.
    Rays whose answer the geometry near a candidate already gives are not
    cast (:class:`_Surroundings`); the answers are the same.
@@ -58,7 +60,9 @@ the resolved settings and counts (candidates, samples, rays, ...). The same mesh
 
 Cost, for c candidates, s samples and p sample pairs within
 ``connect_radius``: at most 41 rays a candidate (head room; 8 directions at
-up to 3 heights; 8 ledge rays down and 8 up), fewer where
+up to 3 heights; 8 ledge rays down and 8 up), and 2 or 4 for each ledge probe
+that finds no ground of its own (up to the first that finds none beside it
+either), fewer where
 :class:`_Surroundings` gives the answer; one more upward ray a candidate
 that fits, and 4 horizontal ones where that ray meets a face from behind; the Poisson-disk subset, k-d tree
 queries over the candidates and their pairs within ``spacing``; the pairs,
@@ -99,6 +103,8 @@ from g2s_plugins._raycasting import (
     RayCaster,
     all_hits_down,
     clear_above,
+    crack_sides,
+    ground_across_crack,
     head_room,
     hit_from_behind,
     ray_margin,
@@ -220,6 +226,7 @@ def agent_fits(
     clearance: float,
     triangles: np.ndarray | trimesh.Trimesh | None = None,
     faces: np.ndarray | None = None,
+    rejected: np.ndarray | None = None,
 ) -> np.ndarray:
     """(n,) bool: the agent can stand at each ground point.
 
@@ -227,7 +234,12 @@ def agent_fits(
     ``clearance`` horizontally at knee (max climb + margin), waist (half
     height) and head (height - margin) levels, and in 8 directions at
     ``clearance`` metres walkable ground within a step (or the max slope)
-    of the point, with head room of its own.
+    of the point, with head room of its own. A ledge probe that finds none
+    stands on the ground one crack step to both sides of it, along x, else
+    along z (:func:`~g2s_plugins._raycasting.ground_across_crack` with
+    :func:`~g2s_plugins._raycasting.crack_sides`, the walk test's rule): a
+    grating's slots and tiles laid apart are floor, a gap wider than two
+    crack steps (r / 4) is a ledge.
 
     ``triangles``, when given: the corners of a walkable triangle of the
     caster's mesh that each point lies on, (n, 3, 3); or, with ``faces``
@@ -240,9 +252,14 @@ def agent_fits(
     (or the triangles across the edges near it), with nothing else near, has
     ground all around without casting (see :class:`_Surroundings`); the
     answer is the same.
+
+    ``rejected``, when given ((n,) int array), receives the check that turned
+    each point away: ``REJECTED_BY``'s index (0: it fits).
     """
     points = np.asarray(points, dtype=np.float64).reshape(-1, 3)
+    why = rejected if rejected is not None else np.zeros(len(points), dtype=np.int8)
     ok = head_room(caster, points, agent)
+    why[:] = np.where(ok, 0, REJECTED_BY.index("head room"))
     if clearance <= 0 or not np.any(ok):
         return ok
     # Each test below only casts for the candidates every earlier test kept (a
@@ -265,6 +282,7 @@ def agent_fits(
         for direction in COMPASS:
             hits = caster.first_hits(points[near] + level * UP, direction)
             wall = (hits.distance < clearance) & ~caster.walkable_faces(hits.face, agent.max_slope_deg)
+            why[near[wall]] = REJECTED_BY.index("wall")
             near = near[~wall]
     idx = np.sort(np.concatenate([idx[far], near]))
 
@@ -289,12 +307,29 @@ def agent_fits(
         rows = idx[begin : begin + MAX_LEDGE_BATCH]
         probe = (points[rows][:, None, :] + clearance * COMPASS[None, :, :]).reshape(-1, 3)
         down = caster.first_hits(probe + reach * UP, -UP)
-        ground = (down.distance <= 2.0 * reach) & caster.walkable_faces(down.face, agent.max_slope_deg)
+        walkable = lambda faces: caster.walkable_faces(faces, agent.max_slope_deg)  # noqa: E731
+        ground = ((down.distance <= 2.0 * reach) & walkable(down.face)).reshape(len(rows), len(COMPASS))
+        distance = np.where(ground, down.distance.reshape(ground.shape), 0.0)
+        origins = (probe + reach * UP).reshape(len(rows), len(COMPASS), 3)
+        # A probe over a crack (a grating's slot) stands on the ground beside it, as in the walk test; direction
+        # by direction, only for the points no earlier probe has put out (one probe without ground is enough).
+        kept = np.ones(len(rows), dtype=bool)
+        for k in range(len(COMPASS)):
+            missing = np.flatnonzero(kept & ~ground[:, k])
+            crack, beside = ground_across_crack(caster, origins[missing, k], -UP, crack_sides(agent), 2.0 * reach, walkable)
+            ground[missing[crack], k] = True
+            distance[missing[crack], k] = beside[crack]
+            kept[missing[~crack]] = False
         # Head room over the landing point, from the probe's own origin (see walk_segments).
-        above = agent.height - np.where(ground, down.distance, 0.0)
-        ground[ground] = clear_above(caster, probe[ground] + reach * UP, above[ground])
-        ok[rows] = ground.reshape(len(rows), len(COMPASS)).all(axis=1)
+        tested = ground & kept[:, None]
+        ground[tested] = clear_above(caster, origins[tested], agent.height - distance[tested])
+        ok[rows] = kept & ground.all(axis=1)
+        why[rows[~ok[rows]]] = REJECTED_BY.index("ledge")
     return ok
+
+
+REJECTED_BY = ("fits", "head room", "wall", "ledge")
+"""What :func:`agent_fits` reports in ``rejected``: the index of the first check a point failed."""
 
 
 SOLID_DIRECTIONS = COMPASS[::2]

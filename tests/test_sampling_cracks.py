@@ -1,0 +1,91 @@
+"""GraphBuilder ``sampling``: the ledge test steps over cracks (gratings' slots) as the walk test does, not over gaps."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+import trimesh
+
+from g2s_plugins._raycasting import AgentShape, RayCaster, all_hits_down
+from g2s_plugins.graph_builders import sampling
+
+AGENT = AgentShape(radius=0.5, height=2.0, max_climb=0.4, max_slope_deg=45.0)
+CRACK_STEP = AGENT.radius / 8.0  # 0.0625 m: a gap narrower than twice this is a crack
+
+
+def box(x0: float, x1: float, y0: float, y1: float, z0: float, z1: float) -> trimesh.Trimesh:
+    return trimesh.creation.box(
+        extents=(x1 - x0, y1 - y0, z1 - z0),
+        transform=trimesh.transformations.translation_matrix(((x0 + x1) / 2, (y0 + y1) / 2, (z0 + z1) / 2)),
+    )
+
+
+def split_floor(gap: float) -> trimesh.Trimesh:
+    """Two 0.2 m slabs, 10 x 10 m in all, ``gap`` m apart along x = 0, over nothing."""
+    return trimesh.util.concatenate([box(-5.0, -gap / 2, -0.2, 0.0, -5.0, 5.0), box(gap / 2, 5.0, -0.2, 0.0, -5.0, 5.0)])
+
+
+def fits(mesh: trimesh.Trimesh, points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    rejected = np.zeros(len(points), dtype=np.int8)
+    ok = sampling.agent_fits(RayCaster(mesh), points, AGENT, AGENT.radius, rejected=rejected)
+    return ok, rejected
+
+
+@pytest.mark.parametrize(("gap", "crossed"), [(0.02, True), (0.05, True), (0.11, True), (0.15, False), (0.4, False)])
+def test_a_ledge_probe_over_a_crack_stands_on_the_floor_beside_it(gap: float, crossed: bool):
+    # Points a clearance west of the gap's middle: their east ledge probe falls into it.
+    points = np.array([[-AGENT.radius, 0.0, z] for z in (-1.0, 0.0, 1.3)])
+    ok, rejected = fits(split_floor(gap), points)
+    assert ok.tolist() == [crossed] * 3
+    assert gap < 2 * CRACK_STEP if crossed else gap > 2 * CRACK_STEP
+    expected = 0 if crossed else sampling.REJECTED_BY.index("ledge")
+    assert rejected.tolist() == [expected] * 3
+
+
+def test_a_crack_beside_a_step_is_no_floor_to_stand_on():
+    # A 2 cm crack whose far side is 1 m lower (beyond what the ledge test takes for ground at the clearance: a
+    # step or the max slope, 0.5 m here): the probe's two sides do not both find ground, so the edge stays a ledge.
+    mesh = trimesh.util.concatenate([box(-5.0, -0.01, -0.2, 0.0, -5.0, 5.0), box(0.01, 5.0, -1.2, -1.0, -5.0, 5.0)])
+    ok, rejected = fits(mesh, np.array([[-AGENT.radius, 0.0, 0.0]]))
+    assert not ok[0] and rejected[0] == sampling.REJECTED_BY.index("ledge")
+
+
+def grating(degrees: float, slot: float = 0.02, slat: float = 0.08, size: float = 4.0) -> trimesh.Trimesh:
+    """A square grating ``size`` m across over nothing: slats ``slat`` m wide, ``slot`` m apart, turned by ``degrees``."""
+    slats = []
+    z = -size / 2
+    while z < size / 2 - 1e-9:
+        slats.append(box(-size / 2, size / 2, -0.05, 0.0, z, min(z + slat, size / 2)))
+        z += slat + slot
+    mesh = trimesh.util.concatenate(slats)
+    mesh.apply_transform(trimesh.transformations.rotation_matrix(math.radians(degrees), [0.0, 1.0, 0.0]))
+    return mesh
+
+
+@pytest.mark.parametrize("degrees", [0.0, 22.0, 45.0])
+@pytest.mark.parametrize("slot", [0.02, 0.03])
+def test_every_point_of_a_turned_grating_a_clearance_inside_its_outline_fits(degrees: float, slot: float):
+    mesh = grating(degrees, slot)
+    xz = np.stack(np.meshgrid(np.linspace(-1.9, 1.9, 23), np.linspace(-1.9, 1.9, 23)), axis=-1).reshape(-1, 2)
+    _, points, _ = all_hits_down(RayCaster(mesh), xz, 1.0)
+    points = points[points[:, 1] > -0.01]  # the slats' tops, not their undersides
+    turn = math.radians(degrees)
+    # The points' place in the grating's own frame, and their distance to its outline.
+    own = np.column_stack([points[:, 0] * math.cos(turn) - points[:, 2] * math.sin(turn),
+                           points[:, 0] * math.sin(turn) + points[:, 2] * math.cos(turn)])
+    inside = 2.0 - np.abs(own).max(axis=1)
+    ok, _ = fits(mesh, points)
+    assert len(points) > 250
+    assert ok[inside > AGENT.radius + 0.05].all()
+    assert not ok[inside < AGENT.radius - 0.05].any()
+
+
+def test_rejected_names_the_first_check_a_point_failed():
+    # A low slab over one part of the floor (head room) and a wall (clearance); the open middle fits.
+    mesh = trimesh.util.concatenate([box(-5, 5, -0.2, 0.0, -5, 5), box(-5, -3, 1.5, 1.7, -5, 5), box(3, 3.2, 0.0, 3.0, -5, 5)])
+    points = np.array([[-4.0, 0.0, 0.0], [2.8, 0.0, 0.0], [0.0, 0.0, 0.0], [-0.5, 0.0, 4.7]])
+    ok, rejected = fits(mesh, points)
+    assert ok.tolist() == [False, False, True, False]
+    assert [sampling.REJECTED_BY[code] for code in rejected] == ["head room", "wall", "fits", "ledge"]
