@@ -21,6 +21,7 @@ from g2s_core.cli import Output, named, output_folder
 from g2s_core.config import presets
 from g2s_core.errors import G2SError
 from g2s_core.mesh import SAMPLE_PREFIX, SUPPORTED_SUFFIXES
+from g2s_core.outputs import parse_formats
 from g2s_core.plugin import hookimpl
 from g2s_core.registry import installed
 from g2s_plugins.batch.runner import INSTALL_HINT, Progress, missing_extra, run_batch
@@ -85,6 +86,8 @@ def batch(args: argparse.Namespace) -> int:
             raise G2SError(f"--{option}: the {executor.name} executor takes no {option} (see g2s plugins --stage executors)")
     for name in evaluators:
         registry.get("evaluators", name, key="--evaluate")
+    if args.format is not None:  # run_batch would name its own parameter, "formats"
+        parse_formats(args.format, "--format", registry)
     with missing_extra(), _progress_bar(errors, args.quiet) as show:
         summary = run_batch(configs, inputs, args.outdir, args.executor, workers=args.workers,
                             scheduler=args.scheduler, evaluators=evaluators, formats=args.format, force=args.force,
