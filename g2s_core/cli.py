@@ -39,7 +39,7 @@ from g2s_core.summary import final_graph, metric_lines, outcome, roots_of, stage
 # a run needs them (and trimesh, networkx, scipy through them); listing plugins and checking a config do not
 api, pipeline = lazy_module("g2s_core.api"), lazy_module("g2s_core.pipeline")
 
-EXIT_CODES = ("exit codes: 0 success, 2 bad input or config or a failed plugin (named with its package), 1 internal error, 130 "
+EXIT_CODES = ("exit codes: 0 success, 2 bad input or config, 1 internal error or a failed plugin (named with its package), 130 "
               "interrupted, 141 the reader of the output left early (| head)")
 EXIT_READER_LEFT = 141
 """The exit code when the program reading g2s's standard output closes it early, as a shell reports a process that
@@ -167,8 +167,8 @@ def _add_output_options(command: argparse.ArgumentParser) -> None:
 
 def main(argv: Sequence[str] | None = None) -> int:
     """Run ``g2s`` with ``argv`` (default: the process's arguments) and return the exit code: 0 done, 2 bad input
-    or a plugin's failure (one line, ``g2s: error: ...``), 130 interrupted, 141 the output's reader left early, 1 an
-    internal error."""
+    (one line, ``g2s: error: ...``), 130 interrupted, 141 the output's reader left early, 1 an internal error or a
+    plugin's failure (one line, ``g2s: error: ... plugin 'X' (package 'P') failed ...``)."""
     _answer_version(argv)
     parser, plugged = _parser()
     args = parser.parse_args(argv)
@@ -186,7 +186,7 @@ def main(argv: Sequence[str] | None = None) -> int:
             errors.print(f"g2s: error: {exc}", markup=False, highlight=False, soft_wrap=True)
             if args.verbose:
                 traceback.print_exc()
-            return 2
+            return 1 if isinstance(exc, PluginFailure) else 2  # a plugin's bug is no bad input: scripts must not blame the level
         except KeyboardInterrupt:
             errors.print("g2s: interrupted", markup=False)
             return 130

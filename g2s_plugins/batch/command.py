@@ -41,7 +41,7 @@ def g2s_command(parser: argparse.ArgumentParser) -> Callable[[argparse.Namespace
         f"already finished for the same config and mesh. {INSTALL_HINT}.")
     parser.epilog = ("exit codes: 0 every pair ran, 4 some pairs failed (see the summary's error column), "
                      "2 bad config or input, 130 interrupted (finished pairs are kept), 141 the reader of the output left early, "
-                     "1 internal error of g2s")
+                     "1 internal error of g2s, or a plugin failed outside the pairs (named with its package)")
     parser.add_argument("items", nargs="+", metavar="CONFIG|INPUT", type=named("a preset, a config file or a level"),
                         help="configs (the leading preset names and .yaml/.yml files), then levels: mesh files, folders "
                         f"(searched recursively for {' '.join(SUPPORTED_SUFFIXES)}), glob patterns, or "
