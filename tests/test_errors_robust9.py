@@ -5,8 +5,14 @@ another kind, an OBJ comment after a line's values) were a library's words, a fa
 
 from __future__ import annotations
 
+import base64
+import json
+import struct
+
 import pytest
 
+from g2s_core.errors import MeshError
+from g2s_core.mesh import load_mesh
 from tests.reliability.checks import assert_clean_error, run_g2s, tree
 
 FLOOR = "v 0 0 0\nv 10 0 0\nv 10 0 10\nv 0 0 10\nf 1 3 2\nf 1 4 3\n"
@@ -26,3 +32,98 @@ def test_batch_names_its_format_option(given, says, floor, tmp_path, capsys):
     outcome = run_g2s(capsys, "batch", "graph_only", floor, "--format", given, "-o", tmp_path / "out")
     assert assert_clean_error(outcome).startswith(f"g2s: error: {says}")
     assert tree(tmp_path / "out") == []
+
+
+def binary_ply(faces, vertices=((0, 0, 0), (10, 0, 0), (10, 0, 10), (0, 0, 10)), xyz="x y z") -> bytes:
+    """A binary little-endian PLY of ``vertices`` (float) and ``faces`` (a uchar count, then uint indices each)."""
+    properties = "".join(f"property float {axis}\n" for axis in xyz.split())
+    header = (f"ply\nformat binary_little_endian 1.0\nelement vertex {len(vertices)}\n{properties}element face {len(faces)}\n"
+              "property list uchar uint vertex_indices\nend_header\n")
+    return header.encode() + b"".join(struct.pack(f"<{len(v)}f", *v) for v in vertices) + \
+        b"".join(struct.pack(f"<B{len(f)}I", len(f), *f) for f in faces)
+
+
+def test_a_binary_ply_of_triangles_and_quads_is_read(tmp_path):
+    # Blender writes a face element of triangles and quads; trimesh reads every row as long as the first ("PLY is
+    # unexpected length!"), and g2s said "binary PLY ends early: the header declares 2 faces, the file holds 1"
+    path = tmp_path / "mixed.ply"
+    path.write_bytes(binary_ply([(0, 2, 1), (0, 3, 2, 1)], vertices=((0, 0, 0), (10, 0, 0), (10, 0, 10), (0, 0, 10))))
+    mesh, info = load_mesh(path)
+    assert len(mesh.faces) == 3 and info.faces == 3
+    assert mesh.area == pytest.approx(150.0) and (mesh.face_normals[:, 1] > 0.99).all()  # the quad fanned as trimesh fans one
+
+
+@pytest.mark.parametrize("data, says", [
+    (binary_ply([(0, 2, 1), (0, 2)]), "face 1 (counted from 0) has 2 corners (at least 3 make a face)"),
+    (binary_ply([(0, 2, 1), ()]), "face 1 (counted from 0) has 0 corners (at least 3 make a face)"),
+    (binary_ply([(0, 2, 1), (0, 3, 2, 1)])[:-3], "binary PLY ends early: the header declares 2 faces, the file holds 1"),
+    (binary_ply([(0, 2, 1)], vertices=((0, 0), (10, 0), (10, 10)), xyz="x y"), "the vertex element has no property z (expected x, y and z)"),
+])
+def test_a_damaged_ply_names_what_is_wrong(data, says, tmp_path):
+    # were "binary PLY ends early ..., the file holds 1" for whole files, and "cannot read mesh (KeyError: 'z')"
+    path = tmp_path / "damaged.ply"
+    path.write_bytes(data)
+    with pytest.raises(MeshError) as caught:
+        load_mesh(path)
+    assert str(caught.value) == f"{path}: {says}"
+
+
+def test_an_ascii_stl_cut_short_says_so(tmp_path):
+    # was "the mesh is empty (no triangles)": trimesh reads a solid without its endsolid as nothing
+    path = tmp_path / "cut.stl"
+    path.write_text("solid a\nfacet normal 0 1 0\nouter loop\nvertex 0 0 0\nvertex 0 0 10\nvertex 10 0 0\nendloop\nendfacet\n")
+    with pytest.raises(MeshError, match="the file ends inside a solid, without its endsolid line"):
+        load_mesh(path)
+
+
+def gltf(modes=(4,), nodes=None) -> str:
+    """A glTF of the 10 m floor, one primitive of each of ``modes`` over the same data, in ``nodes`` (default: one)."""
+    data = b"".join(struct.pack("<3f", *v) for v in ((0, 0, 0), (10, 0, 0), (10, 0, 10), (0, 0, 10))) + \
+        struct.pack("<6I", 0, 2, 1, 0, 3, 2)
+    return json.dumps({
+        "asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": nodes or [{"mesh": 0}],
+        "buffers": [{"uri": "data:application/octet-stream;base64," + base64.b64encode(data).decode(), "byteLength": len(data)}],
+        "bufferViews": [{"buffer": 0, "byteLength": 48}, {"buffer": 0, "byteOffset": 48, "byteLength": 24}],
+        "accessors": [{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3", "max": [10, 0, 10], "min": [0, 0, 0]},
+                      {"bufferView": 1, "componentType": 5125, "count": 6, "type": "SCALAR"}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1, "mode": mode} for mode in modes]}]})
+
+
+@pytest.mark.parametrize("text, says", [
+    # trimesh's words, or a false cause
+    (gltf(nodes=[{"mesh": 0, "matrix": [1, 0, 0]}]), "nodes[0].matrix is [1, 0, 0]; expected a list of 16 finite numbers"),
+    (gltf(nodes=[{"mesh": 0, "translation": "x"}]), "nodes[0].translation is 'x'; expected a list of 3 finite numbers"),
+    (gltf(nodes=[{"mesh": 0, "children": [7]}]), "nodes[0].children is [7]; expected a list of indices of the file's 1 node"),
+    (gltf(nodes=[{"mesh": 3}]), "nodes[0].mesh is 3; expected the index of one of the file's 1 mesh"),  # "the mesh is empty"
+    (gltf(modes=[6]), "meshes[0].primitives[0].mode is 6; expected one of 0-5 ("),  # "the mesh is empty"
+    (gltf(modes=["4"]), "meshes[0].primitives[0].mode is '4'; expected one of 0-5 ("),
+    (gltf(modes=[4, 6]), "meshes[0].primitives[1].mode is 6; expected one of 0-5 ("),  # read without the fan, silently
+])
+def test_a_gltf_node_or_primitive_of_another_kind_is_named(text, says, tmp_path):
+    path = tmp_path / "level.gltf"
+    path.write_text(text)
+    with pytest.raises(MeshError) as caught:
+        load_mesh(path)
+    assert str(caught.value).startswith(f"{path}: {says}")
+
+
+def test_valid_gltf_nodes_and_modes_are_read(tmp_path):
+    path = tmp_path / "level.gltf"
+    path.write_text(gltf(modes=[4, 1], nodes=[{"mesh": 0, "translation": [1, 2, 3], "rotation": [0, 0, 0, 1], "scale": [2, 1, 1],
+                                               "children": [1]}, {"matrix": [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1]}]))
+    mesh, _ = load_mesh(path)
+    assert len(mesh.faces) == 2 and mesh.area == pytest.approx(200.0)  # the lines primitive left out, as before
+
+
+@pytest.mark.parametrize("line, commented", [("v 0 0 0", "v 0 0 0 # origin"), ("f 1 3 2", "f 1 3 2 # floor"),
+                                             ("f 1 3 2", "f 1 3 2#floor")])
+def test_an_obj_comment_after_values_is_read_as_a_comment(line, commented, tmp_path):
+    # trimesh read it as values: "cannot read mesh (ValueError: string or file could not be read to its end ...)",
+    # and g2s's check said "line 5: face corner '#' is not a vertex index"
+    path = tmp_path / "commented.obj"
+    path.write_text(FLOOR.replace(line, commented))
+    mesh, _ = load_mesh(path)
+    assert len(mesh.faces) == 2 and mesh.area == pytest.approx(100.0)
+    path.write_text(FLOOR.replace(line, commented).replace("f 1 4 3", "f 1 4 9 # past"))
+    with pytest.raises(MeshError, match="line 6: a face refers to vertex 9; the file has 4 vertices"):
+        load_mesh(path)
