@@ -11,7 +11,8 @@ import struct
 
 import pytest
 
-from g2s_core.errors import MeshError
+from g2s_core.config import PRESETS_DIR, load_config
+from g2s_core.errors import ConfigError, MeshError
 from g2s_core.mesh import load_mesh
 from tests.reliability.checks import assert_clean_error, run_g2s, tree
 
@@ -127,3 +128,17 @@ def test_an_obj_comment_after_values_is_read_as_a_comment(line, commented, tmp_p
     path.write_text(FLOOR.replace(line, commented).replace("f 1 4 3", "f 1 4 9 # past"))
     with pytest.raises(MeshError, match="line 6: a face refers to vertex 9; the file has 4 vertices"):
         load_mesh(path)
+
+
+def test_a_file_named_after_a_preset_extends_it_through_another_file(tmp_path):
+    # was "map_analysis.yaml: extends: cycle map_analysis.yaml -> shared.yaml -> map_analysis.yaml", where the file
+    # extending its own name alone extends the preset
+    (tmp_path / "map_analysis.yaml").write_text("extends: shared.yaml\nagent: {height: 1.5}\n")
+    (tmp_path / "shared.yaml").write_text("extends: map_analysis\nagent: {radius: 0.3}\n")
+    config = load_config(tmp_path / "map_analysis.yaml")
+    assert (config.agent.radius, config.agent.height) == (0.3, 1.5)
+    assert config.terminals.plugin == load_config(PRESETS_DIR / "map_analysis.yaml").terminals.plugin
+    (tmp_path / "a.yaml").write_text("extends: b.yaml\n")
+    (tmp_path / "b.yaml").write_text("extends: a\n")  # no preset of that name: still a cycle
+    with pytest.raises(ConfigError, match=r"a.yaml: extends: cycle a.yaml -> b.yaml -> a.yaml"):
+        load_config(tmp_path / "a.yaml")
