@@ -8,11 +8,12 @@ from __future__ import annotations
 import base64
 import json
 import struct
+import types
 
 import pytest
 
 from g2s_core.config import PRESETS_DIR, load_config
-from g2s_core.errors import ConfigError, MeshError
+from g2s_core.errors import ConfigError, MeshError, PluginFailure
 from g2s_core.mesh import load_mesh
 from tests.reliability.checks import assert_clean_error, run_g2s, tree
 
@@ -142,3 +143,50 @@ def test_a_file_named_after_a_preset_extends_it_through_another_file(tmp_path):
     (tmp_path / "b.yaml").write_text("extends: a\n")  # no preset of that name: still a cycle
     with pytest.raises(ConfigError, match=r"a.yaml: extends: cycle a.yaml -> b.yaml -> a.yaml"):
         load_config(tmp_path / "a.yaml")
+
+
+class _Unprintable(Exception):
+    def __str__(self) -> str:
+        raise RuntimeError("no text")
+
+
+@pytest.mark.parametrize("raised, says", [
+    (SystemExit(0), "raised SystemExit: 0"),  # exit 0, nothing written, no word: g2s ended where the hook called sys.exit
+    (ValueError("first\nsecond\n"), "raised ValueError: first / second"),  # two lines on stderr
+    (ValueError("x" * 100_000), f"raised ValueError: {'x' * 300}... (100,000 characters)"),  # a line of 100 kB
+    (_Unprintable(), "raised _Unprintable: (its message cannot be shown: its str() raised)"),  # internal error: RuntimeError
+])
+def test_a_plugin_raising_in_its_hook_is_one_line_naming_it_and_its_package(raised, says, floor, tmp_path, monkeypatch, capsys):
+    from g2s_core import cli, hookimpl
+    from g2s_core.registry import Registry
+
+    def analyze(structure):
+        raise raised
+
+    registry = Registry.from_entry_points()
+    plugin = types.ModuleType("hostile", "an analyzer that raises")
+    plugin.NAME, plugin.g2s_analyze = "hostile", hookimpl(analyze)
+    registry.register(plugin, package="hostile-pkg", entry_point="analyzers.hostile")
+    monkeypatch.setattr(cli, "installed", lambda: registry)
+    config = tmp_path / "hostile.yaml"
+    config.write_text("extends: map_piece\nanalyzers: [{plugin: hostile}]\n")
+    outcome = run_g2s(capsys, "run", config, floor, "-o", tmp_path / "out", "--format", "json")
+    assert assert_clean_error(outcome, code=1) == f"g2s: error: Analyzer plugin 'hostile' (package 'hostile-pkg') failed: {says}"
+    assert tree(tmp_path / "out") == []
+
+
+def test_a_plugin_that_exits_as_it_loads_is_listed_broken(capsys):
+    # a module calling sys.exit() (argparse at import) ended every g2s command that loaded its stage
+    from g2s_core.registry import Registry
+
+    class Quits:
+        name, value = "analyzers.quits", "quits:plugin"
+
+        def load(self):
+            raise SystemExit(2)
+
+    registry = Registry()
+    registry._unloaded[None] = [(0, "quitting-pkg", Quits())]
+    assert [(b.package, b.reason) for b in registry.broken] == [("quitting-pkg", "SystemExit: 2")]
+    with pytest.raises(PluginFailure, match=r"^Analyzer plugin 'quits' \(package 'quitting-pkg'\) failed to load: SystemExit: 2$"):
+        registry.get("analyzers", "quits")
