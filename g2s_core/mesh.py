@@ -94,7 +94,7 @@ def load_mesh(path: str | Path, config: MeshConfig | None = None) -> tuple[trime
             raise MeshError(f"{path}: {damage or f'cannot read mesh ({type(exc).__name__}: {exc})'}") from None
         vertices, polygons = read
         loaded = trimesh.Trimesh(vertices=vertices, faces=trimesh.geometry.triangulate_quads(polygons), process=False)
-    # trimesh reads a sparse accessor's data without its values, and leaves a triangle fan out: the mesh would be silently wrong
+    # trimesh reads a sparse accessor's data without its values, leaves a triangle fan out, reads no compressed mesh: silently wrong
     if path.suffix.lower() in (".gltf", ".glb") and _GLTF_UNREAD.search(raw) and (damage := describe_damage(path, raw)):
         raise MeshError(f"{path}: {damage}")
     try:
@@ -132,8 +132,9 @@ def _as_trimesh_reads_obj(text: bytes) -> bytes:
     return _absolute_indices(text) if faces_before and _RELATIVE_FACE.search(text, 0, last_vertex) else text
 
 
-_GLTF_UNREAD = re.compile(rb'"sparse"|"mode"\s*:\s*[^0-5\s]')
-"""A glTF's sparse accessor, or a primitive's mode other than 0-5 (a triangle fan, 6)."""
+_GLTF_UNREAD = re.compile(rb'"sparse"|"mode"\s*:\s*[^0-5\s]|"extensionsRequired"')
+"""A glTF's sparse accessor, a primitive's mode other than 0-5 (a triangle fan, 6), or extensions it requires
+(compression: the data trimesh reads may be empty)."""
 
 _COMMENT_AFTER_VALUES = re.compile(rb"^((?:v|vt|vn|f) [^#\n]*?) *#[^\n]*", re.MULTILINE)
 """A vertex or face line's values and the comment after them (``v 0 0 0 # origin``)."""

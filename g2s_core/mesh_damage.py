@@ -43,6 +43,10 @@ GLTF_COMPONENTS = {5120: 1, 5121: 1, 5122: 2, 5123: 2, 5125: 4, 5126: 4}
 GLTF_TYPES = {"SCALAR": 1, "VEC2": 2, "VEC3": 3, "VEC4": 4, "MAT2": 4, "MAT3": 9, "MAT4": 16}
 """A glTF accessor's ``type`` names and the components of each."""
 
+GLTF_COMPRESSED = ("KHR_draco_mesh_compression", "EXT_meshopt_compression")
+"""glTF extensions that compress a mesh's vertices or indices (trimesh reads the uncompressed data only, which a
+file that requires them need not hold)."""
+
 GLTF_LISTS = ("scenes", "nodes", "meshes", "accessors", "bufferViews", "buffers")
 """The glTF document's lists of objects that lead from its scene to the vertices' bytes."""
 
@@ -147,6 +151,11 @@ def _gltf_damage(document: object, folder: Path, binary: int | None) -> str | No
     its scene to the vertices (:func:`_scene_damage`). ``binary``: a GLB's binary chunk's length."""
     if not isinstance(document, dict):
         return "expected a glTF JSON object at the top level"
+    if isinstance(version := (document.get("asset") or {}).get("version") if isinstance(document.get("asset"), dict) else None, str) \
+            and not version.startswith("2."):
+        return f"asset.version is {version!r}; g2s reads glTF 2.0 (convert the file to glTF 2.0)"
+    if compressed := [name for name in document.get("extensionsRequired") or () if name in GLTF_COMPRESSED]:
+        return f"extensionsRequired lists {compressed[0]}: the mesh is compressed, which g2s cannot read; export it without compression"
     for name in GLTF_LISTS:  # trimesh fails on another kind with a TypeError or AttributeError
         if not isinstance(items := document.get(name, []), list):
             return _expected(name, items, "a list of objects")
@@ -237,6 +246,13 @@ def _scene_damage(document: dict) -> str | None:
             if (mode := primitive.get("mode", 4)) not in range(6) or type(mode) is not int:  # trimesh leaves such a primitive out
                 return _expected(f"meshes[{number}].primitives[{index}].mode", mode, "one of 0-5 (4 triangles, 5 a triangle "
                                  "strip; 0-3, points and lines, are left out); g2s cannot read 6, a triangle fan")
+            indices = document["accessors"][primitive["indices"]] if _is_index(primitive.get("indices"), count["accessors"]) else None
+            if "indices" in primitive and not (indices and indices["type"] == "SCALAR" and indices["componentType"] in (5121, 5123, 5125)
+                                               and (mode != 4 or indices["count"] % 3 == 0)):
+                return _expected(f"meshes[{number}].primitives[{index}].indices", primitive["indices"], "the index of an accessor of "
+                                 "SCALAR unsigned integers (componentType 5121, 5123 or 5125), 3 a triangle" + (
+                                     f"; accessors[{primitive['indices']}] holds {indices['count']} {indices['type']} of "
+                                     f"componentType {indices['componentType']}" if indices else ""))
     numbers = lambda size: lambda value: isinstance(value, list) and len(value) == size and all(
         type(item) in (int, float) and math.isfinite(item) for item in value)
     valid = {"mesh": lambda value: _is_index(value, count["meshes"]), "matrix": numbers(16), "translation": numbers(3),

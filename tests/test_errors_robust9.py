@@ -190,3 +190,30 @@ def test_a_plugin_that_exits_as_it_loads_is_listed_broken(capsys):
     assert [(b.package, b.reason) for b in registry.broken] == [("quitting-pkg", "SystemExit: 2")]
     with pytest.raises(PluginFailure, match=r"^Analyzer plugin 'quits' \(package 'quitting-pkg'\) failed to load: SystemExit: 2$"):
         registry.get("analyzers", "quits")
+
+
+@pytest.mark.parametrize("change, says", [
+    # a compressed mesh: trimesh reads the data under it (none: "every face has zero area", or read wrong)
+    (lambda g: g.update(extensionsUsed=["KHR_draco_mesh_compression"], extensionsRequired=["KHR_draco_mesh_compression"]),
+     "extensionsRequired lists KHR_draco_mesh_compression: the mesh is compressed, which g2s cannot read"),
+    (lambda g: g.update(asset={"version": "1.0"}),  # "cannot read mesh (NotImplementedError: only GLTF 2 is supported not `1.0`)"
+     "asset.version is '1.0'; g2s reads glTF 2.0"),
+    (lambda g: g["accessors"][1].update(count=5),  # "cannot read mesh (ValueError: cannot reshape array of size 5 into shape (3))"
+     "meshes[0].primitives[0].indices is 1; expected the index of an accessor of SCALAR unsigned integers"),
+])
+def test_a_gltf_g2s_cannot_read_says_why(change, says, tmp_path):
+    document = json.loads(gltf())
+    change(document)
+    path = tmp_path / "level.gltf"
+    path.write_text(json.dumps(document))
+    with pytest.raises(MeshError) as caught:
+        load_mesh(path)
+    assert str(caught.value).startswith(f"{path}: {says}")
+
+
+def test_an_output_folder_whose_path_is_too_long_is_refused(floor, tmp_path, capsys):
+    # was "internal error: OSError: [Errno 36] File name too long" (exit 1), or, a little shorter, the writer's failure
+    outdir = tmp_path.joinpath(*["d" * 200] * 20)
+    outcome = run_g2s(capsys, "run", "graph_only", floor, "-o", outdir)
+    assert assert_clean_error(outcome).endswith("bytes is too long for the files in it)")
+    assert tree(tmp_path / ("d" * 200)) == []
