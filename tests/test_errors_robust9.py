@@ -12,8 +12,9 @@ import types
 
 import pytest
 
+import g2s_core
 from g2s_core.config import PRESETS_DIR, load_config
-from g2s_core.errors import ConfigError, MeshError, PluginFailure
+from g2s_core.errors import ConfigError, G2SError, MeshError, PluginFailure
 from g2s_core.mesh import load_mesh
 from tests.reliability.checks import assert_clean_error, run_g2s, tree
 
@@ -217,3 +218,18 @@ def test_an_output_folder_whose_path_is_too_long_is_refused(floor, tmp_path, cap
     outcome = run_g2s(capsys, "run", "graph_only", floor, "-o", outdir)
     assert assert_clean_error(outcome).endswith("bytes is too long for the files in it)")
     assert tree(tmp_path / ("d" * 200)) == []
+
+
+@pytest.mark.parametrize("version, says", [
+    (None, "schema_version null is not supported (this g2s reads 1, 2, 3)"),  # Python's None
+    (4, "schema_version 4 is not supported (this g2s reads 1, 2, 3); a newer g2s wrote it: upgrade g2s to read it"),
+    ("missing", "schema_version: required key is missing (this g2s reads 1, 2, 3)"),  # "schema_version None"
+])
+def test_load_result_names_a_schema_version_it_cannot_read(version, says, tmp_path):
+    document = {"format": "g2s-structure", "schema_version": version}
+    if version == "missing":
+        del document["schema_version"]
+    (tmp_path / "structure.json").write_text(json.dumps(document))
+    with pytest.raises(G2SError) as caught:
+        g2s_core.load_result(tmp_path)
+    assert str(caught.value) == f"{tmp_path / 'structure.json'}: {says}"
