@@ -27,7 +27,7 @@ from rich.table import Table
 from g2s_core import version
 from g2s_core.config import parse_assignment, presets, resolve_config
 from g2s_core.errors import ConfigError, G2SError, PluginFailure
-from g2s_core.mesh import SAMPLE_PREFIX
+from g2s_core.mesh import SAMPLE_PREFIX, SUPPORTED_SUFFIXES
 from g2s_core.model import RaisedWarning, RunResult
 from g2s_core.outputs import DEFAULT_FORMATS, check_outdir, chosen_formats, writers
 from g2s_core.registry import installed, plugin_parameters
@@ -202,6 +202,8 @@ def main(argv: Sequence[str] | None = None) -> int:
 def _run(args: argparse.Namespace, errors: Console, mesh_name: str | None = None) -> int:
     """``g2s run`` (and ``g2s demo``, which names its generated level ``mesh_name``)."""
     config_files: list[Path] = []
+    if Path(args.config).suffix.lower() in SUPPORTED_SUFFIXES:  # read as YAML, it was "expected a mapping ..., got 'v 0 0 0 ...'"
+        raise G2SError(f"{args.config}: expected a preset name or a config file, got a mesh file: g2s run takes the config first, then the mesh")
     config, source = resolve_config(args.config, dict(map(parse_assignment, args.overrides)), "--set", config_files)
     formats = chosen_formats(args.format, config, source, "--format")
     inputs = api.input_files(config, config_files, args.mesh)

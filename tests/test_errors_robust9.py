@@ -233,3 +233,14 @@ def test_load_result_names_a_schema_version_it_cannot_read(version, says, tmp_pa
     with pytest.raises(G2SError) as caught:
         g2s_core.load_result(tmp_path)
     assert str(caught.value) == f"{tmp_path / 'structure.json'}: {says}"
+
+
+@pytest.mark.parametrize("suffix", [".obj", ".GLB"])
+def test_a_mesh_given_as_the_config_says_the_config_comes_first(suffix, tmp_path, capsys):
+    # the mesh read as YAML: "floor.obj: expected a mapping of settings at the top level, got 'v 0 0 0 v 10 0 0 ...'",
+    # "level.gltf: asset: unknown key ...", "level.glb: line 1: byte 0xe7 is not UTF-8 (save the config file as UTF-8 text)"
+    mesh = tmp_path / f"floor{suffix}"
+    mesh.write_text(FLOOR)
+    outcome = run_g2s(capsys, "run", mesh, "map_analysis", "-o", tmp_path / "out")
+    assert assert_clean_error(outcome) == (f"g2s: error: {mesh}: expected a preset name or a config file, got a mesh file: "
+                                           "g2s run takes the config first, then the mesh")
