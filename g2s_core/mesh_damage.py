@@ -369,7 +369,7 @@ def _ply_damage(data: bytes) -> str | None:
         return read
     elements, body, start, order = read
     vertex = next(((count, [p[-1] for p in properties]) for name, count, properties in elements if name == "vertex"), (0, []))
-    if missing := [_text(axis) for axis in (b"x", b"y", b"z") if axis not in vertex[1]]:
+    if vertex[1] and (missing := [_text(axis) for axis in (b"x", b"y", b"z") if axis not in vertex[1]]):
         return f"the vertex element has no property {', '.join(missing)} (expected x, y and z)"
     if order is None:
         rows = _rows(body.splitlines(), start)
