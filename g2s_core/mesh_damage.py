@@ -438,20 +438,17 @@ def ply_polygons(data: bytes) -> tuple[list[list[float]], list[list[int]]] | Non
     """A sound binary PLY file's vertices (x y z) and faces (vertex indices from 0, any number of corners each), read
     with :func:`_ply_binary`; ``None`` for another PLY file. :func:`~g2s_core.mesh.load_mesh` reads with this a file
     of triangles and quads, which trimesh refuses ("PLY is unexpected length")."""
-    import numpy as np
+    import numpy as np  # here: the command line imports this module before it reads any mesh
 
-    elements, body, _, order = _ply_header(data)
-    names = [name for name, _, _ in elements]
-    if order is None or "vertex" not in names or "face" not in names or isinstance(walked := _ply_binary(body, elements, order), str):
+    elements, body, _, order = _ply_header(data)  # vertices, then faces, as every exporter writes them
+    if order is None or [name for name, _, _ in elements[:2]] != ["vertex", "face"] or \
+            isinstance(walked := _ply_binary(body, elements, order), str) or "vertex" in walked[1]:
         return None
-    code = {"little": "<", "big": ">"}[order]
-    dtype = lambda kind: np.dtype(code + ("f" if kind.startswith((b"float", b"double")) else "u" if kind.startswith(b"u") else "i") + str(_ply_size(kind)))
-    start = sum(count * sum(_ply_size(p[0]) for p in properties) for _, count, properties in elements[:names.index("vertex")])
-    count, properties = elements[names.index("vertex")][1:]
-    if "vertex" in walked[1] or any(name in walked[1] for name in names[:names.index("vertex")]):
-        return None  # vertices with lists, or after an element of lists: not a file any exporter writes
-    vertices = np.frombuffer(body, np.dtype([(_text(p[-1]), dtype(p[0])) for p in properties]), count, start)
-    item = dtype(next(p[2] for p in elements[names.index("face")][2] if p[0] == b"list"))
+    (_, count, vertex), (_, _, face) = elements[:2]
+    letter = lambda kind: "f" if kind.startswith((b"float", b"double")) else "u" if kind.startswith(b"u") else "i"
+    dtype = lambda kind: np.dtype(f"{'<' if order == 'little' else '>'}{letter(kind)}{_ply_size(kind)}")
+    vertices = np.frombuffer(body, np.dtype([(_text(p[-1]), dtype(p[0])) for p in vertex]), count)
+    item = dtype(next(p[2] for p in face if p[0] == b"list"))
     return (np.stack([vertices[axis] for axis in "xyz"], 1).astype(float).tolist(),
             [np.frombuffer(body, item, items, offset).tolist() for offset, items in walked[1]["face"]])
 
