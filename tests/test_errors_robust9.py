@@ -1,7 +1,10 @@
-"""Inputs robust9 (4 December 2026) found told in other words or refused wrongly: ``g2s batch --format`` named the
-Python API's ``formats``; a plugin's own failure was exit 2, the code of bad input; damaged or unusual mesh files
-(a binary PLY of triangles and quads, a PLY without z, an ASCII STL cut short, glTF nodes and primitive modes of
-another kind, an OBJ comment after a line's values) were a library's words, a false cause or refused."""
+"""Inputs robust9 (4 December 2026) found told in other words, refused wrongly or ending g2s silently: ``g2s batch
+--format`` named the Python API's ``formats``; a plugin's own failure was exit 2, the code of bad input, and a hook
+that called ``sys.exit`` ended g2s with its code; damaged or unusual mesh files (a binary PLY of triangles and quads,
+a PLY without z, an ASCII STL cut short, glTF nodes, primitive modes, indices and compression of another kind, an OBJ
+comment after a line's values) were a library's words, a false cause or refused; a preset extended through two files
+was a cycle; an output path too long was an internal error; ``g2s run MESH CONFIG`` read the mesh as YAML;
+``load_result`` showed a ``schema_version`` as Python writes it."""
 
 from __future__ import annotations
 
