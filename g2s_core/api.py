@@ -182,7 +182,7 @@ def run(
 
     Raises:
         ConfigError, MeshError, G2SError: bad input (what ``g2s`` reports with exit code 2).
-        PluginFailure: a plugin failed (what ``g2s`` reports with exit code 2, naming the plugin).
+        PluginFailure: a plugin failed (what ``g2s`` reports with exit code 1, naming the plugin).
     """
     config_files: list[Path] = []
     run_config, source = resolve_config(config, overrides, sources=config_files)

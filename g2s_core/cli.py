@@ -27,7 +27,7 @@ from rich.table import Table
 from g2s_core import version
 from g2s_core.config import parse_assignment, presets, resolve_config
 from g2s_core.errors import ConfigError, G2SError, PluginFailure
-from g2s_core.mesh import SAMPLE_PREFIX
+from g2s_core.mesh import SAMPLE_PREFIX, SUPPORTED_SUFFIXES
 from g2s_core.model import RaisedWarning, RunResult
 from g2s_core.outputs import DEFAULT_FORMATS, check_outdir, chosen_formats, writers
 from g2s_core.registry import installed, plugin_parameters
@@ -39,7 +39,7 @@ from g2s_core.summary import final_graph, metric_lines, outcome, roots_of, stage
 # a run needs them (and trimesh, networkx, scipy through them); listing plugins and checking a config do not
 api, pipeline = lazy_module("g2s_core.api"), lazy_module("g2s_core.pipeline")
 
-EXIT_CODES = ("exit codes: 0 success, 2 bad input or config or a failed plugin (named with its package), 1 internal error, 130 "
+EXIT_CODES = ("exit codes: 0 success, 2 bad input or config, 1 internal error or a failed plugin (named with its package), 130 "
               "interrupted, 141 the reader of the output left early (| head)")
 EXIT_READER_LEFT = 141
 """The exit code when the program reading g2s's standard output closes it early, as a shell reports a process that
@@ -167,8 +167,8 @@ def _add_output_options(command: argparse.ArgumentParser) -> None:
 
 def main(argv: Sequence[str] | None = None) -> int:
     """Run ``g2s`` with ``argv`` (default: the process's arguments) and return the exit code: 0 done, 2 bad input
-    or a plugin's failure (one line, ``g2s: error: ...``), 130 interrupted, 141 the output's reader left early, 1 an
-    internal error."""
+    (one line, ``g2s: error: ...``), 130 interrupted, 141 the output's reader left early, 1 an internal error or a
+    plugin's failure (one line, ``g2s: error: ... plugin 'X' (package 'P') failed ...``)."""
     _answer_version(argv)
     parser, plugged = _parser()
     args = parser.parse_args(argv)
@@ -186,7 +186,7 @@ def main(argv: Sequence[str] | None = None) -> int:
             errors.print(f"g2s: error: {exc}", markup=False, highlight=False, soft_wrap=True)
             if args.verbose:
                 traceback.print_exc()
-            return 2
+            return 1 if isinstance(exc, PluginFailure) else 2  # a plugin's bug is no bad input: scripts must not blame the level
         except KeyboardInterrupt:
             errors.print("g2s: interrupted", markup=False)
             return 130
@@ -202,6 +202,8 @@ def main(argv: Sequence[str] | None = None) -> int:
 def _run(args: argparse.Namespace, errors: Console, mesh_name: str | None = None) -> int:
     """``g2s run`` (and ``g2s demo``, which names its generated level ``mesh_name``)."""
     config_files: list[Path] = []
+    if Path(args.config).suffix.lower() in SUPPORTED_SUFFIXES:  # read as YAML, it was "expected a mapping ..., got 'v 0 0 0 ...'"
+        raise G2SError(f"{args.config}: expected a preset name or a config file, got a mesh file: g2s run takes the config first, then the mesh")
     config, source = resolve_config(args.config, dict(map(parse_assignment, args.overrides)), "--set", config_files)
     formats = chosen_formats(args.format, config, source, "--format")
     inputs = api.input_files(config, config_files, args.mesh)

@@ -236,7 +236,7 @@ def presets() -> dict[str, str]:
     return purposes
 
 
-def _resolve_extends(name: Any, base_dir: Path, source: Path) -> Path:
+def _resolve_extends(name: Any, base_dir: Path, source: Path, chain: Sequence[Path] = ()) -> Path:
     if not isinstance(name, str) or not name:
         raise ConfigError(f"{source}: extends: expected a config file or preset name, got {show(name)}")
     try:
@@ -245,9 +245,10 @@ def _resolve_extends(name: Any, base_dir: Path, source: Path) -> Path:
         raise ConfigError(
             f"{source}: extends: no config file or preset named {show(name)} (presets: {', '.join(presets())})"
         ) from None
-    # a file named after the preset it extends (my/map_analysis.yaml: extends: map_analysis) can only mean the preset
+    # a file named after the preset it extends (my/map_analysis.yaml: extends: map_analysis), itself or through the
+    # files of its ``chain`` (map_analysis.yaml: extends: shared.yaml; shared.yaml: extends: map_analysis), can only mean the preset
     preset = PRESETS_DIR / f"{Path(name).stem}.yaml"
-    return preset if os.path.realpath(found) == os.path.realpath(source) and preset.is_file() else found
+    return preset if Path(os.path.realpath(found)) in (*chain, Path(os.path.realpath(source))) and preset.is_file() else found
 
 
 def _deep_merge(base: dict[str, Any], override: dict[str, Any]) -> dict[str, Any]:
@@ -292,7 +293,7 @@ def load_raw_config(path: str | Path, sources: list[Path] | None = None) -> dict
         parent = layers[-1].pop("extends", None)
         if parent is None:
             return functools.reduce(_deep_merge, reversed(layers), {})
-        path = _resolve_extends(parent, path.parent, path)
+        path = _resolve_extends(parent, path.parent, path, chain)
 
 
 def _merge_extends(data: dict[str, Any], base_dir: Path, source: str | Path, sources: list[Path] | None = None) -> dict[str, Any]:

@@ -1,8 +1,8 @@
 """Errors that reach the user as one line at the CLI.
 
 :class:`G2SError` and its subclasses are the user's bad input (exit code 2);
-:class:`PluginFailure` is a plugin's own bug (exit code 2 too, naming the plugin); anything else is
-an internal error of g2s (exit code 1).
+:class:`PluginFailure` is a plugin's own bug (exit code 1, as an internal error, in one line naming the plugin and
+its package); anything else is an internal error of g2s (exit code 1).
 """
 
 
@@ -31,5 +31,6 @@ class PluginFailure(Exception):
 
     Neither the user's input nor g2s is at fault, so this is not a
     :class:`G2SError`: the message names the plugin, its stage and its
-    package (whose authors can fix it); the CLI exits with code 2.
+    package (whose authors can fix it); the CLI exits with code 1, as for its own bugs (no input of the user's
+    can fix it: exit code 2 would tell a script to blame the level or the config).
     """

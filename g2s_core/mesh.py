@@ -17,7 +17,7 @@ from g2s_core.config import MeshConfig
 from g2s_core.errors import ConfigError, MeshError
 from g2s_core.input_files import check_regular_file
 from g2s_core.lazy import lazy_module
-from g2s_core.mesh_damage import declared_faces, describe_damage, off_polygons, rows_beyond_header
+from g2s_core.mesh_damage import declared_faces, describe_damage, off_polygons, ply_polygons, rows_beyond_header
 from g2s_core.registry import Registry, installed
 
 # loaded with the first mesh read: the CLI and the batch command import this module for its names
@@ -88,12 +88,14 @@ def load_mesh(path: str | Path, config: MeshConfig | None = None) -> tuple[trime
             if rows_beyond_header(path.suffix, raw):  # and an ASCII PLY of more rows than declared as the rows declared
                 raise ValueError("more rows than the header declares")
     except Exception as exc:  # trimesh raises many exception types for bad files
-        if (damage := describe_damage(path, raw) or (exc if isinstance(exc, MeshError) else None)) or path.suffix.lower() != ".off":
-            raise MeshError(f"{path}: {damage or f'cannot read mesh ({type(exc).__name__}: {exc})'}") from None  # MeshError: _files_beside
-        vertices, polygons = off_polygons(raw)  # a sound OFF file of polygons trimesh cannot fan: fanned as it fans an OBJ's
+        damage = describe_damage(path, raw) or (exc if isinstance(exc, MeshError) else None)  # MeshError: _files_beside
+        # a sound OFF file of polygons trimesh cannot fan, or binary PLY of triangles and quads it cannot read: fanned as it fans an OBJ's
+        if damage or not (read := off_polygons(raw) if path.suffix.lower() == ".off" else ply_polygons(raw) if path.suffix.lower() == ".ply" else None):
+            raise MeshError(f"{path}: {damage or f'cannot read mesh ({type(exc).__name__}: {exc})'}") from None
+        vertices, polygons = read
         loaded = trimesh.Trimesh(vertices=vertices, faces=trimesh.geometry.triangulate_quads(polygons), process=False)
-    # trimesh reads a sparse accessor's data without its values: the mesh would be silently wrong
-    if b'"sparse"' in raw and path.suffix.lower() in (".gltf", ".glb") and (damage := describe_damage(path, raw)):
+    # trimesh reads a sparse accessor's data without its values, leaves a triangle fan out, reads no compressed mesh: silently wrong
+    if path.suffix.lower() in (".gltf", ".glb") and _GLTF_UNREAD.search(raw) and (damage := describe_damage(path, raw)):
         raise MeshError(f"{path}: {damage}")
     try:
         mesh, cleaning = prepare_and_clean(loaded, config, source=str(path))
@@ -107,8 +109,9 @@ def load_mesh(path: str | Path, config: MeshConfig | None = None) -> tuple[trime
 def _as_trimesh_reads_obj(text: bytes) -> bytes:
     """An OBJ file's bytes as trimesh's reader understands them: it takes a UTF-8 byte-order mark for part of the
     first line, splits values on spaces only, lines on ``\\n`` only (an old Mac file ends its lines with ``\\r``),
-    reads a line only if it starts with its keyword, reads a face's vertex index 0 (OBJ numbers them from 1) as 1,
-    and takes a negative index for one counted back from the file's end, not from the face's line (:func:`_absolute_indices`).
+    reads a line only if it starts with its keyword, reads a comment after a line's values as values, reads a face's
+    vertex index 0 (OBJ numbers them from 1) as 1, and takes a negative index for one counted back from the file's
+    end, not from the face's line (:func:`_absolute_indices`).
 
     Raises:
         ValueError: a face names vertex 0 (:func:`~g2s_core.mesh_damage.describe_damage` names its line)."""
@@ -116,6 +119,8 @@ def _as_trimesh_reads_obj(text: bytes) -> bytes:
     text = text if b"\n" in text else text.replace(b"\r", b"\n")
     if b"\n " in text:  # trimesh skips an indented line: a "  v" line was lost and every later vertex index shifted
         text = re.sub(rb"\n +", b"\n", text)
+    if text.count(b"#") > text.count(b"\n#") + text.startswith(b"#"):  # a comment after values, which trimesh reads as values
+        text = _COMMENT_AFTER_VALUES.sub(rb"\1", text)
     last_vertex = text.rfind(b"\nv")
     faces_before = _FACE_LINE.search(text, 0, last_vertex) is not None  # most files list every vertex first
     # a value 0 is mostly an integer coordinate or "s 0": only a face line's is wrong
@@ -126,6 +131,13 @@ def _as_trimesh_reads_obj(text: bytes) -> bytes:
     # vertices, 6 % of one of 100 objects each followed by its faces (CPU time, 420k triangles, 3 December 2026)
     return _absolute_indices(text) if faces_before and _RELATIVE_FACE.search(text, 0, last_vertex) else text
 
+
+_GLTF_UNREAD = re.compile(rb'"sparse"|"mode"\s*:\s*[^0-5\s]|"extensionsRequired"')
+"""A glTF's sparse accessor, a primitive's mode other than 0-5 (a triangle fan, 6), or extensions it requires
+(compression: the data trimesh reads may be empty)."""
+
+_COMMENT_AFTER_VALUES = re.compile(rb"^((?:v|vt|vn|f) [^#\n]*?) *#[^\n]*", re.MULTILINE)
+"""A vertex or face line's values and the comment after them (``v 0 0 0 # origin``)."""
 
 _FACE_LINE = re.compile(rb"^f ", re.MULTILINE)
 

@@ -43,8 +43,18 @@ GLTF_COMPONENTS = {5120: 1, 5121: 1, 5122: 2, 5123: 2, 5125: 4, 5126: 4}
 GLTF_TYPES = {"SCALAR": 1, "VEC2": 2, "VEC3": 3, "VEC4": 4, "MAT2": 4, "MAT3": 9, "MAT4": 16}
 """A glTF accessor's ``type`` names and the components of each."""
 
+GLTF_COMPRESSED = ("KHR_draco_mesh_compression", "EXT_meshopt_compression")
+"""glTF extensions that compress a mesh's vertices or indices (trimesh reads the uncompressed data only, which a
+file that requires them need not hold)."""
+
 GLTF_LISTS = ("scenes", "nodes", "meshes", "accessors", "bufferViews", "buffers")
 """The glTF document's lists of objects that lead from its scene to the vertices' bytes."""
+
+NODE_KEYS = {"mesh": "the index of one of the file's {meshes}", "matrix": "a list of 16 finite numbers",
+             "translation": "a list of 3 finite numbers", "rotation": "a list of 4 finite numbers (a quaternion)",
+             "scale": "a list of 3 finite numbers", "children": "a list of indices of the file's {nodes}"}
+"""What each of a glTF node's keys that trimesh reads must be (trimesh fails on another kind in numpy's words, or
+leaves a mesh it does not find out)."""
 
 STL_KEYWORDS = (b"solid", b"facet", b"outer", b"vertex", b"endloop", b"endfacet", b"endsolid")
 """The words an ASCII STL line starts with (trimesh reads any case)."""
@@ -141,6 +151,11 @@ def _gltf_damage(document: object, folder: Path, binary: int | None) -> str | No
     its scene to the vertices (:func:`_scene_damage`). ``binary``: a GLB's binary chunk's length."""
     if not isinstance(document, dict):
         return "expected a glTF JSON object at the top level"
+    if isinstance(version := (document.get("asset") or {}).get("version") if isinstance(document.get("asset"), dict) else None, str) \
+            and not version.startswith("2."):
+        return f"asset.version is {version!r}; g2s reads glTF 2.0 (convert the file to glTF 2.0)"
+    if compressed := [name for name in document.get("extensionsRequired") or () if name in GLTF_COMPRESSED]:
+        return f"extensionsRequired lists {compressed[0]}: the mesh is compressed, which g2s cannot read; export it without compression"
     for name in GLTF_LISTS:  # trimesh fails on another kind with a TypeError or AttributeError
         if not isinstance(items := document.get(name, []), list):
             return _expected(name, items, "a list of objects")
@@ -211,8 +226,8 @@ def _listed(document: dict, name: str) -> list[tuple[int, dict]]:
 
 def _scene_damage(document: dict) -> str | None:
     """What is wrong on the way from a glTF document's scene to its vertices (trimesh fails on it with a ``TypeError``
-    or ``KeyError``): the scene's index, each scene's node indices, and each mesh primitive's ``POSITION`` accessor,
-    which a valid glTF may leave out but g2s needs."""
+    or ``KeyError``): the scene's index, each scene's node indices, each mesh primitive's ``POSITION`` accessor,
+    which a valid glTF may leave out but g2s needs, and its mode, then each node's mesh, children and transform."""
     count = {name: len(document.get(name, [])) for name in GLTF_LISTS}
     if "scene" in document and not _is_index(document["scene"], count["scenes"]):
         return _expected("scene", document["scene"], f"the index of one of the file's {_many(count['scenes'], 'scene')}")
@@ -228,7 +243,24 @@ def _scene_damage(document: dict) -> str | None:
             if not _is_index(attributes["POSITION"], count["accessors"]):
                 return _expected(f"meshes[{number}].primitives[{index}].attributes.POSITION", attributes["POSITION"],
                                  f"the index of one of the file's {_many(count['accessors'], 'accessor')}")
-    return None
+            if (mode := primitive.get("mode", 4)) not in range(6) or type(mode) is not int:  # trimesh leaves such a primitive out
+                return _expected(f"meshes[{number}].primitives[{index}].mode", mode, "one of 0-5 (4 triangles, 5 a triangle "
+                                 "strip; 0-3, points and lines, are left out); g2s cannot read 6, a triangle fan")
+            indices = document["accessors"][primitive["indices"]] if _is_index(primitive.get("indices"), count["accessors"]) else None
+            if "indices" in primitive and not (indices and indices["type"] == "SCALAR" and indices["componentType"] in (5121, 5123, 5125)
+                                               and (mode != 4 or indices["count"] % 3 == 0)):
+                return _expected(f"meshes[{number}].primitives[{index}].indices", primitive["indices"], "the index of an accessor of "
+                                 "SCALAR unsigned integers (componentType 5121, 5123 or 5125), 3 a triangle" + (
+                                     f"; accessors[{primitive['indices']}] holds {indices['count']} {indices['type']} of "
+                                     f"componentType {indices['componentType']}" if indices else ""))
+    numbers = lambda size: lambda value: isinstance(value, list) and len(value) == size and all(
+        type(item) in (int, float) and math.isfinite(item) for item in value)
+    valid = {"mesh": lambda value: _is_index(value, count["meshes"]), "matrix": numbers(16), "translation": numbers(3),
+             "rotation": numbers(4), "scale": numbers(3),
+             "children": lambda value: isinstance(value, list) and all(_is_index(item, count["nodes"]) for item in value)}
+    return next((_expected(f"nodes[{number}].{key}", node[key], NODE_KEYS[key].format(nodes=_many(count["nodes"], "node"),
+                                                                                      meshes=_many(count["meshes"], "mesh")))
+                 for number, node in _listed(document, "nodes") for key, check in valid.items() if key in node and not check(node[key])), None)
 
 
 def _is_index(value: object, count: int) -> bool:
@@ -244,7 +276,7 @@ def _obj_damage(data: bytes) -> str | None:
     """The first line of an OBJ file that is wrong. Faces number vertices (texture coordinates, normals) from 1, or
     back from their line when negative; ``f 1 2 9`` in a file of 3 vertices is wrong wherever it stands (trimesh
     reads every vertex first)."""
-    rows = _rows(data.removeprefix(codecs.BOM_UTF8).splitlines())
+    rows = _rows(line.partition(b"#")[0] for line in data.removeprefix(codecs.BOM_UTF8).splitlines())
     listed = {key: sum(values[:1] == [key] for _, values in rows) for key in OBJ_VALUES}
     before = dict.fromkeys(OBJ_VALUES, 0)
     for number, line in rows:
@@ -310,8 +342,9 @@ def off_polygons(data: bytes) -> tuple[list[list[float]], list[list[int]]]:
 
 def _stl_ascii_damage(data: bytes) -> str | None:
     """The first line of an ASCII STL file that is wrong: a word the format does not start a line with, a vertex
-    that is not 3 finite numbers, a facet of other than 3 vertices, or an ``endsolid`` without its ``solid``
-    (trimesh reads every ``vertex`` of a solid as one list of numbers, so one bad line failed the whole file)."""
+    that is not 3 finite numbers, a facet of other than 3 vertices, an ``endsolid`` without its ``solid``, or a
+    ``solid`` without its ``endsolid``, a file cut short, which trimesh reads as no triangles (trimesh reads every
+    ``vertex`` of a solid as one list of numbers, so one bad line failed the whole file)."""
     corners, solid = 0, False
     for number, (word, *values) in ((number, line) for number, line in _rows(data.splitlines()) if line):
         if (key := word.lower()) not in STL_KEYWORDS:
@@ -326,12 +359,34 @@ def _stl_ascii_damage(data: bytes) -> str | None:
             corners, solid = 0 if key == b"facet" else corners, {b"solid": True, b"endsolid": False}.get(key, solid)
         if problem:
             return f"line {number}: {problem}"
-    return None
+    return "the file ends inside a solid, without its endsolid line (cut short?)" if solid else None
 
 
 def _ply_damage(data: bytes) -> str | None:
-    """Where a PLY file's data disagrees with its header: an ASCII file's first line at fault, or the element a
-    binary file's data runs short in (a list's length taken from its first row, as trimesh reads it)."""
+    """Where a PLY file's data disagrees with its header: a vertex element without x, y or z, an ASCII file's first
+    line at fault, or the element a binary file's data runs short in (:func:`_ply_binary`)."""
+    if isinstance(read := _ply_header(data), str):
+        return read
+    elements, body, start, order = read
+    vertex = next(((count, [p[-1] for p in properties]) for name, count, properties in elements if name == "vertex"), (0, []))
+    if vertex[1] and (missing := [_text(axis) for axis in (b"x", b"y", b"z") if axis not in vertex[1]]):
+        return f"the vertex element has no property {', '.join(missing)} (expected x, y and z)"
+    if order is None:
+        rows = _rows(body.splitlines(), start)
+        if problem := _declared_rows(rows, [(name, count, partial(_ply_row, properties=properties, name=name, vertices=vertex[0]))
+                                            for name, count, properties in elements]):
+            return problem
+        extra = [number for number, values in rows[sum(count for _, count, _ in elements):] if values]
+        return f"ASCII PLY has {_many(len(extra), 'row')} more than its header declares (from line {extra[0]})" if extra else None
+    if isinstance(walked := _ply_binary(body, elements, order), str):
+        return walked
+    return f"binary PLY has {len(body) - walked[0]} bytes more than its header declares" if len(body) > walked[0] else None
+
+
+def _ply_header(data: bytes) -> tuple[list[tuple[str, int, list[list[bytes]]]], bytes, int, str | None] | str:
+    """A PLY file's elements (name, count, properties: ``[TYPE, NAME]`` or ``[list, COUNT_TYPE, ITEM_TYPE, NAME]``), the
+    bytes after its header, the line they start on, and the byte order of a binary file (``None``: ASCII); or what is
+    wrong with the header."""
     header, found, body = data.partition(b"end_header")
     if not found:
         return "the PLY header has no end_header line"
@@ -343,26 +398,59 @@ def _ply_damage(data: bytes) -> str | None:
         elif key == b"property" and elements and len(values) == (4 if values[:1] == [b"list"] else 2):
             if wrong := next((kind for kind in values[values[0] == b"list":-1] if kind not in PLY_TYPES), None):
                 return f"header line {number}: unknown property type {_text(wrong)!r} (expected one of {_text(b', '.join(PLY_TYPES))})"
-            elements[-1][2].append(values[:-1])
+            elements[-1][2].append(values)
         elif key in (b"element", b"property"):
             return f"header line {number}: expected 'element NAME COUNT' or 'property TYPE NAME', got {_text(b' '.join([key, *values]))!r}"
-    body, start = body.partition(b"\n")[2], header.count(b"\n") + 2
-    if re.search(rb"^format ascii", header, re.MULTILINE):
-        vertices, rows = next((count for name, count, _ in elements if name == "vertex"), 0), _rows(body.splitlines(), start)
-        if problem := _declared_rows(rows, [(name, count, partial(_ply_row, properties=properties, name=name, vertices=vertices))
-                                            for name, count, properties in elements]):
-            return problem
-        extra = [number for number, values in rows[sum(count for _, count, _ in elements):] if values]
-        return f"ASCII PLY has {_many(len(extra), 'row')} more than its header declares (from line {extra[0]})" if extra else None
-    order, offset = "big" if b"big_endian" in header else "little", 0
+    order = None if re.search(rb"^format ascii", header, re.MULTILINE) else "big" if b"big_endian" in header else "little"
+    return elements, body.partition(b"\n")[2], header.count(b"\n") + 2, order
+
+
+def _ply_binary(body: bytes, elements: list[tuple[str, int, list[list[bytes]]]], order: str) -> tuple[int, dict[str, list[tuple[int, int]]]] | str:
+    """The bytes a binary PLY's elements take and, for each element with lists, where its rows' first list lies
+    (the offset of its items, their count), read row by row: a face element may mix triangles and quads (Blender
+    writes such files), and trimesh reads every row as long as the first; or where the data runs short, or a face
+    of fewer than 3 corners. O(rows with lists)."""
+    offset, lists = 0, {}
     for name, count, properties in elements:
-        row = sum(_ply_size(p[0]) for p in properties if p[0] != b"list")
-        for _, length, item in (p for p in properties if p[0] == b"list"):
-            row += _ply_size(length) + _ply_size(item) * int.from_bytes(body[offset + row:offset + row + _ply_size(length)], order)
-        if (holds := (len(body) - offset) // row if row else count) < count:
-            return f"binary PLY ends early: the header declares {_many(count, name)}, the file holds {holds}"
-        offset += count * row
-    return f"binary PLY has {len(body) - offset} bytes more than its header declares" if len(body) > offset else None
+        if all(p[0] != b"list" for p in properties):  # rows of one size
+            row = sum(_ply_size(p[0]) for p in properties)
+            if (holds := (len(body) - offset) // row if row else count) < count:
+                return f"binary PLY ends early: the header declares {_many(count, name)}, the file holds {holds}"
+            offset += count * row
+            continue
+        for number in range(count):
+            first = None
+            for kind, *types in properties:
+                if kind != b"list":
+                    offset += _ply_size(kind)
+                    continue
+                items = int.from_bytes(body[offset:offset + _ply_size(types[0])], order)
+                first, offset = first or (offset + _ply_size(types[0]), items), offset + _ply_size(types[0]) + items * _ply_size(types[1])
+            if offset > len(body):
+                return f"binary PLY ends early: the header declares {_many(count, name)}, the file holds {number}"
+            if name == "face" and first[1] < 3:
+                return f"face {number} (counted from 0) has {_many(first[1], 'corner')} (at least 3 make a face)"
+            lists.setdefault(name, []).append(first)
+    return offset, lists
+
+
+def ply_polygons(data: bytes) -> tuple[list[list[float]], list[list[int]]] | None:
+    """A sound binary PLY file's vertices (x y z) and faces (vertex indices from 0, any number of corners each), read
+    with :func:`_ply_binary`; ``None`` for another PLY file. :func:`~g2s_core.mesh.load_mesh` reads with this a file
+    of triangles and quads, which trimesh refuses ("PLY is unexpected length")."""
+    import numpy as np  # here: the command line imports this module before it reads any mesh
+
+    elements, body, _, order = _ply_header(data)  # vertices, then faces, as every exporter writes them
+    if order is None or [name for name, _, _ in elements[:2]] != ["vertex", "face"] or \
+            isinstance(walked := _ply_binary(body, elements, order), str) or "vertex" in walked[1]:
+        return None
+    (_, count, vertex), (_, _, face) = elements[:2]
+    letter = lambda kind: "f" if kind.startswith((b"float", b"double")) else "u" if kind.startswith(b"u") else "i"
+    dtype = lambda kind: np.dtype(f"{'<' if order == 'little' else '>'}{letter(kind)}{_ply_size(kind)}")
+    vertices = np.frombuffer(body, np.dtype([(_text(p[-1]), dtype(p[0])) for p in vertex]), count)
+    item = dtype(next(p[2] for p in face if p[0] == b"list"))
+    return (np.stack([vertices[axis] for axis in "xyz"], 1).astype(float).tolist(),
+            [np.frombuffer(body, item, items, offset).tolist() for offset, items in walked[1]["face"]])
 
 
 def _ply_row(values: list[bytes], properties: list[list[bytes]], name: str, vertices: int) -> str | None:

@@ -126,8 +126,8 @@ class Registry:
                     loaded = ep.load()
                     for plugin in loaded if isinstance(loaded, (list, tuple)) else [loaded]:
                         self.register(plugin, package=package, entry_point=ep.name)
-                except Exception as exc:  # a broken third-party plugin must not stop the others
-                    reason = str(exc) if isinstance(exc, PluginError) else f"{type(exc).__name__}: {exc}"
+                except (Exception, SystemExit) as exc:  # a broken third-party plugin must not stop the others (nor end g2s)
+                    reason = str(exc) if isinstance(exc, PluginError) else said(exc)
                     self._broken.append((order, BrokenPlugin(package, ep.name, ep.value, reason)))
 
     def register(self, plugin: Any, package: str, entry_point: str) -> PluginInfo:
@@ -262,10 +262,20 @@ def _guarded(info: PluginInfo, function: Callable[..., Any], what: str) -> Calla
             return function(*args, **kwargs)
         except (G2SError, PluginFailure, KeyboardInterrupt, MemoryError):
             raise
-        except Exception as exc:
-            raise info.failure(f"{what} {type(exc).__name__}: {exc}") from exc
+        except BaseException as exc:  # SystemExit too: sys.exit(0) in a hook ended g2s with exit 0 and nothing written
+            raise info.failure(f"{what} {said(exc)}") from exc
 
     return call
+
+
+def said(exc: BaseException) -> str:
+    """``TYPE: message`` of an exception of a plugin's, in one line of at most about 300 characters (its lines joined
+    by ``/``), even when its ``str()`` raises: the rest is in the traceback that ``--verbose`` prints."""
+    try:
+        text = " / ".join(line.strip() for line in str(exc).splitlines() if line.strip())
+    except Exception:  # noqa: BLE001 - the plugin's own __str__ failed
+        text = "(its message cannot be shown: its str() raised)"
+    return f"{type(exc).__name__}: {text if len(text) <= 300 else f'{text[:300]}... ({len(text):,} characters)'}"
 
 
 def _checked_items(info: PluginInfo, items: Iterator[Any], check: Callable[[Any], str | None]) -> Iterator[Any]:

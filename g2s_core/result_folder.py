@@ -66,6 +66,9 @@ def check_writable(outdir: Path) -> None:
         longest = max((len(os.fsencode(folder.name)) for folder in missing), default=0)
         if longest > os.pathconf(base, "PC_NAME_MAX"):
             raise G2SError(f"{outdir}: cannot create the folder (a name of {longest} bytes is too long)")
+        # a path beneath it (the staging folder, its files) adds a name of up to NAME_MAX; the system takes PC_PATH_MAX
+        if (length := len(os.fsencode(outdir.absolute()))) + os.pathconf(base, "PC_NAME_MAX") > os.pathconf(base, "PC_PATH_MAX"):
+            raise G2SError(f"{outdir}: cannot create the folder (a path of {length:,} bytes is too long for the files in it)")
         os.rmdir(tempfile.mkdtemp(dir=base, prefix=f"{STAGING_MARK}{os.getpid()}-"))
     except (OSError, ValueError) as exc:  # a name too long, a NUL byte, a read-only place
         raise G2SError(f"{outdir}: cannot write results there ({getattr(exc, 'strerror', None) or exc})") from None

@@ -49,7 +49,7 @@ def _changed(document: dict, change) -> dict:
     # were read: Python's json takes NaN and Infinity, and True == 1, 2.0 == 2
     (lambda d: d["nodes"][0].__setitem__("position", [float("nan"), 0, 0]), "nodes[0].position[0]: expected a finite number, got nan"),
     (lambda d: d["edges"][0].__setitem__("weight", float("inf")), "edges[0].weight: expected a finite number, got inf"),
-    (lambda d: d.__setitem__("schema_version", True), "schema_version True is not supported (this g2s reads 1, 2, 3)"),
+    (lambda d: d.__setitem__("schema_version", True), "schema_version true is not supported (this g2s reads 1, 2, 3)"),
     (lambda d: d.__setitem__("schema_version", 2.0), "schema_version 2.0 is not supported (this g2s reads 1, 2, 3)"),
     # was "malformed structure file (ValueError: edges[0].target: node 999999 is not in nodes)"
     (lambda d: d["edges"][0].__setitem__("target", 999999), "edges[0].target: node 999999 is not in nodes"),

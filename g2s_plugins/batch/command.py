@@ -21,6 +21,7 @@ from g2s_core.cli import Output, named, output_folder
 from g2s_core.config import presets
 from g2s_core.errors import G2SError
 from g2s_core.mesh import SAMPLE_PREFIX, SUPPORTED_SUFFIXES
+from g2s_core.outputs import parse_formats
 from g2s_core.plugin import hookimpl
 from g2s_core.registry import installed
 from g2s_plugins.batch.runner import INSTALL_HINT, Progress, missing_extra, run_batch
@@ -40,7 +41,7 @@ def g2s_command(parser: argparse.ArgumentParser) -> Callable[[argparse.Namespace
         f"already finished for the same config and mesh. {INSTALL_HINT}.")
     parser.epilog = ("exit codes: 0 every pair ran, 4 some pairs failed (see the summary's error column), "
                      "2 bad config or input, 130 interrupted (finished pairs are kept), 141 the reader of the output left early, "
-                     "1 internal error of g2s")
+                     "1 internal error of g2s, or a plugin failed outside the pairs (named with its package)")
     parser.add_argument("items", nargs="+", metavar="CONFIG|INPUT", type=named("a preset, a config file or a level"),
                         help="configs (the leading preset names and .yaml/.yml files), then levels: mesh files, folders "
                         f"(searched recursively for {' '.join(SUPPORTED_SUFFIXES)}), glob patterns, or "
@@ -85,6 +86,8 @@ def batch(args: argparse.Namespace) -> int:
             raise G2SError(f"--{option}: the {executor.name} executor takes no {option} (see g2s plugins --stage executors)")
     for name in evaluators:
         registry.get("evaluators", name, key="--evaluate")
+    if args.format is not None:  # run_batch would name its own parameter, "formats"
+        parse_formats(args.format, "--format", registry)
     with missing_extra(), _progress_bar(errors, args.quiet) as show:
         summary = run_batch(configs, inputs, args.outdir, args.executor, workers=args.workers,
                             scheduler=args.scheduler, evaluators=evaluators, formats=args.format, force=args.force,

@@ -75,7 +75,10 @@ def load_result(path: str | Path) -> LoadedResult:
     version = document.get("schema_version")
     if type(version) is not int or version not in READABLE_VERSIONS:  # True and 2.0 equal 1 and 2
         readable = ", ".join(map(str, READABLE_VERSIONS))
-        raise G2SError(f"{path}: schema_version {version!r} is not supported (this g2s reads {readable})")
+        newer = "; a newer g2s wrote it: upgrade g2s to read it" if type(version) is int and version > max(READABLE_VERSIONS) else ""
+        if "schema_version" not in document:
+            raise G2SError(f"{path}: schema_version: required key is missing (this g2s reads {readable})")
+        raise G2SError(f"{path}: schema_version {show(version)} is not supported (this g2s reads {readable}){newer}")
     checked = {**document, "schema_version": SCHEMA_VERSION}
     for name, added in _ADDED_IN.items():
         if version < added:
