@@ -17,7 +17,7 @@ from g2s_core.config import MeshConfig
 from g2s_core.errors import ConfigError, MeshError
 from g2s_core.input_files import check_regular_file
 from g2s_core.lazy import lazy_module
-from g2s_core.mesh_damage import declared_faces, describe_damage, off_polygons, ply_polygons, rows_beyond_header
+from g2s_core.mesh_damage import declared_faces, describe_damage, rows_beyond_header
 from g2s_core.registry import Registry, installed
 
 # loaded with the first mesh read: the CLI and the batch command import this module for its names
@@ -89,11 +89,10 @@ def load_mesh(path: str | Path, config: MeshConfig | None = None) -> tuple[trime
                 raise ValueError("more rows than the header declares")
     except Exception as exc:  # trimesh raises many exception types for bad files
         damage = describe_damage(path, raw) or (exc if isinstance(exc, MeshError) else None)  # MeshError: _files_beside
-        # a sound OFF file of polygons trimesh cannot fan, or binary PLY of triangles and quads it cannot read: fanned as it fans an OBJ's
-        if damage or not (read := off_polygons(raw) if path.suffix.lower() == ".off" else ply_polygons(raw) if path.suffix.lower() == ".ply" else None):
-            raise MeshError(f"{path}: {damage or f'cannot read mesh ({type(exc).__name__}: {exc})'}") from None
-        vertices, polygons = read
-        loaded = trimesh.Trimesh(vertices=vertices, faces=trimesh.geometry.triangulate_quads(polygons), process=False)
+        unread = f"cannot read mesh ({type(exc).__name__}: {exc})"
+        if damage or path.suffix.lower() not in POLYGON_SUFFIXES:
+            raise MeshError(f"{path}: {damage or unread}") from None
+        loaded = _read_polygons(path, unread)
     # trimesh reads a sparse accessor's data without its values, leaves a triangle fan out, reads no compressed mesh: silently wrong
     if path.suffix.lower() in (".gltf", ".glb") and _GLTF_UNREAD.search(raw) and (damage := describe_damage(path, raw)):
         raise MeshError(f"{path}: {damage}")
@@ -104,6 +103,28 @@ def load_mesh(path: str | Path, config: MeshConfig | None = None) -> tuple[trime
             raise MeshError(f"{path}: {damage}") from None
         raise
     return mesh, MeshInfo(path.name, hashlib.sha256(raw).hexdigest(), len(mesh.vertices), len(mesh.faces), cleaning)
+
+
+POLYGON_SUFFIXES = (".off", ".ply")
+"""Formats whose sound files trimesh may fail to read where pymeshlab reads them: an OFF face of 5 or more corners
+(trimesh 4.x on numpy 2 fans it from text values: ``TypeError ... string multiply ufunc``) and a binary PLY face
+list mixing triangles and quads, as Blender writes it (trimesh reads every row as long as the first: "PLY is
+unexpected length")."""
+
+
+def _read_polygons(path: Path, unread: str) -> trimesh.Trimesh:
+    """A sound file of :data:`POLYGON_SUFFIXES` that trimesh could not read, read by pymeshlab, which fans each polygon
+    from its first corner as trimesh fans an OBJ's and keeps every vertex in the file's order; ``unread``: trimesh's
+    failure, the message when pymeshlab fails too."""
+    import pymeshlab  # imported here: it takes a second to load and few files need it
+
+    meshset = pymeshlab.MeshSet()
+    try:
+        meshset.load_new_mesh(str(path))
+    except pymeshlab.PyMeshLabException:
+        raise MeshError(f"{path}: {unread}") from None
+    read = meshset.current_mesh()
+    return trimesh.Trimesh(vertices=read.vertex_matrix(), faces=read.face_matrix(), process=False)
 
 
 def _as_trimesh_reads_obj(text: bytes) -> bytes:

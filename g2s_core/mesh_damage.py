@@ -328,18 +328,6 @@ def _off_rows(data: bytes) -> tuple[int, int, Rows] | str:
     return int(counts[0]), int(counts[1]), body
 
 
-def off_polygons(data: bytes) -> tuple[list[list[float]], list[list[int]]]:
-    """A sound OFF file's vertices (x y z) and faces (vertex indices from 0, any number of corners each).
-
-    trimesh fans an OFF polygon of 5 or more corners from its text values, not integers, and fails (trimesh 4.x
-    on numpy 2: ``TypeError ... string multiply ufunc``); :func:`~g2s_core.mesh.load_mesh` reads such a file
-    with this when :func:`describe_damage` finds it sound.
-    """
-    vertices, faces, body = _off_rows(data)
-    return ([[float(value) for value in values[:3]] for _, values in body[:vertices]],
-            [[int(corner) for corner in values[1:1 + int(values[0])]] for _, values in body[vertices:vertices + faces]])
-
-
 def _stl_ascii_damage(data: bytes) -> str | None:
     """The first line of an ASCII STL file that is wrong: a word the format does not start a line with, a vertex
     that is not 3 finite numbers, a facet of other than 3 vertices, an ``endsolid`` without its ``solid``, or a
@@ -378,9 +366,9 @@ def _ply_damage(data: bytes) -> str | None:
             return problem
         extra = [number for number, values in rows[sum(count for _, count, _ in elements):] if values]
         return f"ASCII PLY has {_many(len(extra), 'row')} more than its header declares (from line {extra[0]})" if extra else None
-    if isinstance(walked := _ply_binary(body, elements, order), str):
-        return walked
-    return f"binary PLY has {len(body) - walked[0]} bytes more than its header declares" if len(body) > walked[0] else None
+    if isinstance(size := _ply_binary(body, elements, order), str):
+        return size
+    return f"binary PLY has {len(body) - size} bytes more than its header declares" if len(body) > size else None
 
 
 def _ply_header(data: bytes) -> tuple[list[tuple[str, int, list[list[bytes]]]], bytes, int, str | None] | str:
@@ -405,12 +393,11 @@ def _ply_header(data: bytes) -> tuple[list[tuple[str, int, list[list[bytes]]]], 
     return elements, body.partition(b"\n")[2], header.count(b"\n") + 2, order
 
 
-def _ply_binary(body: bytes, elements: list[tuple[str, int, list[list[bytes]]]], order: str) -> tuple[int, dict[str, list[tuple[int, int]]]] | str:
-    """The bytes a binary PLY's elements take and, for each element with lists, where its rows' first list lies
-    (the offset of its items, their count), read row by row: a face element may mix triangles and quads (Blender
-    writes such files), and trimesh reads every row as long as the first; or where the data runs short, or a face
-    of fewer than 3 corners. O(rows with lists)."""
-    offset, lists = 0, {}
+def _ply_binary(body: bytes, elements: list[tuple[str, int, list[list[bytes]]]], order: str) -> int | str:
+    """The bytes a binary PLY's elements take, read row by row where rows hold lists (a face element may mix
+    triangles and quads, as Blender writes it); or where the data runs short, or a face of fewer than 3 corners.
+    O(rows with lists)."""
+    offset = 0
     for name, count, properties in elements:
         if all(p[0] != b"list" for p in properties):  # rows of one size
             row = sum(_ply_size(p[0]) for p in properties)
@@ -419,38 +406,20 @@ def _ply_binary(body: bytes, elements: list[tuple[str, int, list[list[bytes]]]],
             offset += count * row
             continue
         for number in range(count):
-            first = None
+            corners = None  # the row's first list: a face's vertex indices
             for kind, *types in properties:
                 if kind != b"list":
                     offset += _ply_size(kind)
                     continue
-                items = int.from_bytes(body[offset:offset + _ply_size(types[0])], order)
-                first, offset = first or (offset + _ply_size(types[0]), items), offset + _ply_size(types[0]) + items * _ply_size(types[1])
+                length_size, item_size = _ply_size(types[0]), _ply_size(types[1])
+                items = int.from_bytes(body[offset:offset + length_size], order)
+                corners = items if corners is None else corners
+                offset += length_size + items * item_size
             if offset > len(body):
                 return f"binary PLY ends early: the header declares {_many(count, name)}, the file holds {number}"
-            if name == "face" and first[1] < 3:
-                return f"face {number} (counted from 0) has {_many(first[1], 'corner')} (at least 3 make a face)"
-            lists.setdefault(name, []).append(first)
-    return offset, lists
-
-
-def ply_polygons(data: bytes) -> tuple[list[list[float]], list[list[int]]] | None:
-    """A sound binary PLY file's vertices (x y z) and faces (vertex indices from 0, any number of corners each), read
-    with :func:`_ply_binary`; ``None`` for another PLY file. :func:`~g2s_core.mesh.load_mesh` reads with this a file
-    of triangles and quads, which trimesh refuses ("PLY is unexpected length")."""
-    import numpy as np  # here: the command line imports this module before it reads any mesh
-
-    elements, body, _, order = _ply_header(data)  # vertices, then faces, as every exporter writes them
-    if order is None or [name for name, _, _ in elements[:2]] != ["vertex", "face"] or \
-            isinstance(walked := _ply_binary(body, elements, order), str) or "vertex" in walked[1]:
-        return None
-    (_, count, vertex), (_, _, face) = elements[:2]
-    letter = lambda kind: "f" if kind.startswith((b"float", b"double")) else "u" if kind.startswith(b"u") else "i"
-    dtype = lambda kind: np.dtype(f"{'<' if order == 'little' else '>'}{letter(kind)}{_ply_size(kind)}")
-    vertices = np.frombuffer(body, np.dtype([(_text(p[-1]), dtype(p[0])) for p in vertex]), count)
-    item = dtype(next(p[2] for p in face if p[0] == b"list"))
-    return (np.stack([vertices[axis] for axis in "xyz"], 1).astype(float).tolist(),
-            [np.frombuffer(body, item, items, offset).tolist() for offset, items in walked[1]["face"]])
+            if name == "face" and corners < 3:
+                return f"face {number} (counted from 0) has {_many(corners, 'corner')} (at least 3 make a face)"
+    return offset
 
 
 def _ply_row(values: list[bytes], properties: list[list[bytes]], name: str, vertices: int) -> str | None:
