@@ -411,16 +411,25 @@ int64_t checked_nodes(const char* what, const Int32Array& indptr, const Int32Arr
     return n;
 }
 
+// The number of nodes n of a CSR graph, after checking it, (n,) `values`, the sources and the thread count of
+// one of the flows (`what` names it in errors).
+int64_t checked_flow(const char* what, const Int32Array& indptr, const Int32Array& indices, const DoubleArray& weights,
+                     const Int32Array& sources, const DoubleArray& values, int threads) {
+    const std::string name(what);
+    const int64_t n = checked_nodes(what, indptr, indices, weights);
+    if (static_cast<int64_t>(values.shape(0)) != n)
+        throw nb::value_error((name + ": indptr must be (n + 1,), values (n,), indices and weights alike").c_str());
+    for (size_t i = 0; i < sources.shape(0); ++i)
+        if (sources.data()[i] < 0 || sources.data()[i] >= n) throw nb::value_error((name + ": a source is out of range").c_str());
+    if (threads < 1 || threads > 2) throw nb::value_error((name + ": threads must be 1 or 2").c_str());
+    return n;
+}
+
 nb::tuple shortest_path_flow(Int32Array indptr, Int32Array indices, DoubleArray weights, Int32Array sources,
                              DoubleArray values, int threads) {
-    const int64_t n = checked_nodes("shortest_path_flow", indptr, indices, weights);
-    if (static_cast<int64_t>(values.shape(0)) != n)
-        throw nb::value_error("shortest_path_flow: indptr must be (n + 1,), values (n,), indices and weights alike");
+    const int64_t n = checked_flow("shortest_path_flow", indptr, indices, weights, sources, values, threads);
     const int32_t* ptr = indptr.data();
     const size_t b = sources.shape(0);
-    for (size_t i = 0; i < b; ++i)
-        if (sources.data()[i] < 0 || sources.data()[i] >= n) throw nb::value_error("shortest_path_flow: a source is out of range");
-    if (threads < 1 || threads > 2) throw nb::value_error("shortest_path_flow: threads must be 1 or 2");
 
     const size_t cells = std::max<size_t>(b * static_cast<size_t>(n), 1);
     auto* predecessors = new int32_t[cells];
@@ -439,13 +448,8 @@ nb::tuple shortest_path_flow(Int32Array indptr, Int32Array indices, DoubleArray 
 nb::ndarray<nb::numpy, double, nb::ndim<2>> split_path_flow(Int32Array indptr, Int32Array indices, DoubleArray weights,
                                                             Int32Array sources, DoubleArray values, double tolerance,
                                                             int threads) {
-    const int64_t n = checked_nodes("split_path_flow", indptr, indices, weights);
-    if (static_cast<int64_t>(values.shape(0)) != n)
-        throw nb::value_error("split_path_flow: indptr must be (n + 1,), values (n,), indices and weights alike");
+    const int64_t n = checked_flow("split_path_flow", indptr, indices, weights, sources, values, threads);
     const size_t b = sources.shape(0);
-    for (size_t i = 0; i < b; ++i)
-        if (sources.data()[i] < 0 || sources.data()[i] >= n) throw nb::value_error("split_path_flow: a source is out of range");
-    if (threads < 1 || threads > 2) throw nb::value_error("split_path_flow: threads must be 1 or 2");
     if (!(tolerance >= 0.0 && tolerance < 1.0)) throw nb::value_error("split_path_flow: tolerance must be in [0, 1)");
     auto* through = new double[std::max<size_t>(b * static_cast<size_t>(n), 1)];
     auto through_out = owned(through, b, static_cast<size_t>(n));
