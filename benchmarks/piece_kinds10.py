@@ -63,26 +63,9 @@ def _room(width: float, depth: float, doors: dict[str, list[tuple[float, float, 
     W and E, x on S and N; outer corners included) and the lintel's height above the floor (``height``
     for none).
     """
-    x0, x1, z0, z1 = -wall, width + wall, -wall, depth + wall
-    top = floor + height
-    parts = [_box(x0, x1, floor - SLAB, floor, z0, z1)]
-
-    def part(side: str, a0: float, a1: float, y0: float, y1: float) -> None:
-        box = {"W": (x0, 0.0, a0, a1), "E": (width, x1, a0, a1), "S": (a0, a1, z0, 0.0), "N": (a0, a1, depth, z1)}
-        bx0, bx1, bz0, bz1 = box[side]
-        parts.append(_box(bx0, bx1, y0, y1, bz0, bz1))
-
-    for side in "WESN":
-        along = (z0, z1) if side in "WE" else (x0, x1)
-        gaps = sorted(doors.get(side, ()))
-        cuts = [along[0], *[v for g in gaps for v in g[:2]], along[1]]
-        for a0, a1 in zip(cuts[0::2], cuts[1::2]):
-            if a1 > a0:
-                part(side, a0, a1, floor - SLAB, top)
-        for a0, a1, lintel in gaps:
-            if lintel < height:
-                part(side, a0, a1, floor + lintel, top)
-    return parts
+    gaps = {side: [(a0, a1, 0.0, lintel) for a0, a1, lintel in runs] for side, runs in doors.items()}
+    return [_box(-wall, width + wall, floor - SLAB, floor, -wall, depth + wall)] + [
+        _box(*box) for box in pieces._wall_boxes(width, depth, wall, gaps, height, floor)]
 
 
 def portcullis_raised() -> SampleLevel:

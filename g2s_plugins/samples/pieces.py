@@ -99,42 +99,52 @@ def _door(side: str, centre: float, door: float, width: float, depth: float, wal
     return _opening(position, _HEADING[side], door)
 
 
-def _walls(
-    b: _LevelBuilder, width: float, depth: float, wall: float,
-    gaps: dict[str, list[tuple[float, float, float, float]]], height: float = TALL,
-) -> None:
-    """Walls ``wall`` thick and ``height`` high round the clear floor [0, width] x [0, depth], with gaps.
+def _wall_boxes(
+    width: float, depth: float, wall: float, gaps: dict[str, list[tuple[float, float, float, float]]],
+    height: float = TALL, floor: float = 0.0,
+) -> list[tuple[float, float, float, float, float, float]]:
+    """The boxes ``(x0, x1, y0, y1, z0, z1)``, metres, of walls ``wall`` thick and ``height`` high round the clear
+    floor [0, width] x [0, depth] whose top is at ``floor``, with gaps; from the slab's underside
+    (``SLAB_THICKNESS`` below the floor) up.
 
     ``gaps`` maps a side (``"W"``, ``"E"``, ``"S"``, ``"N"``) to its gaps ``(a0, a1, bottom, top)``,
     metres: the range along the side (world Z on the west and east walls, world X on the others,
     the walls' outer corners included) and the heights above the floor between which the wall is
     open: 0 and ``height`` for a doorway open to the sky, a lintel below ``height``, a sill or a
     threshold step above 0. The gaps of one side must not overlap along it; a side with no gap
-    is a whole wall, one gap spanning it leaves it open.
+    is a whole wall, one gap spanning it leaves it open (no box of no length).
     """
     x0, x1, z0, z1 = -wall, width + wall, -wall, depth + wall
+    across = {"W": (x0, 0.0), "E": (width, x1), "S": (z0, 0.0), "N": (depth, z1)}
+    boxes = []
 
     def part(side: str, a0: float, a1: float, y0: float, y1: float) -> None:
-        if side == "W":
-            _box(b, x0, 0.0, y0, y1, a0, a1)
-        elif side == "E":
-            _box(b, width, x1, y0, y1, a0, a1)
-        elif side == "S":
-            _box(b, a0, a1, y0, y1, z0, 0.0)
-        else:
-            _box(b, a0, a1, y0, y1, depth, z1)
+        c0, c1 = across[side]
+        boxes.append((c0, c1, y0, y1, a0, a1) if side in "WE" else (a0, a1, y0, y1, c0, c1))
 
+    bottom_of_slab, top_of_wall = floor - SLAB_THICKNESS, floor + height
     for side in "WESN":
         along = (z0, z1) if side in "WE" else (x0, x1)
         runs = sorted(gaps.get(side, ()))
         cuts = [along[0], *[v for g in runs for v in g[:2]], along[1]]
         for a0, a1 in zip(cuts[0::2], cuts[1::2]):
-            part(side, a0, a1, -SLAB_THICKNESS, height)
+            if a1 > a0:
+                part(side, a0, a1, bottom_of_slab, top_of_wall)
         for a0, a1, bottom, top in runs:
             if bottom > 0:
-                part(side, a0, a1, -SLAB_THICKNESS, bottom)
+                part(side, a0, a1, bottom_of_slab, floor + bottom)
             if top < height:
-                part(side, a0, a1, top, height)
+                part(side, a0, a1, floor + top, top_of_wall)
+    return boxes
+
+
+def _walls(
+    b: _LevelBuilder, width: float, depth: float, wall: float,
+    gaps: dict[str, list[tuple[float, float, float, float]]], height: float = TALL,
+) -> None:
+    """Adds to ``b`` the walls of :func:`_wall_boxes` round a floor at height 0."""
+    for box in _wall_boxes(width, depth, wall, gaps, height):
+        _box(b, *box)
 
 
 @validate_call
