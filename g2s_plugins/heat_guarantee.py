@@ -21,7 +21,7 @@ meets it there is confirmed (:func:`confirm`) against a second sample of as
 many sources (:data:`CONFIRMING_SEED`): errors independent of the heat
 map's lower a rank correlation instead of raising it (attenuation: C.
 Spearman, Am. J. Psychol. 15(1):72-101, 1904), so that rho reads under the
-exact one (0.018-0.057 under it on the 11 grid levels measured,
+exact one (0.018-0.057 under it on the 10 grid levels measured,
 docs/analysis_quality.md, "An honest guarantee on grids"), and when it is
 under ``min_heat_rho`` the run warns with both figures, the exact rho
 lying between them. The confirmation changes no structure. Why not Hoeffding:
