@@ -109,7 +109,8 @@ def restored(
     ``graph`` (the run's initial graph) with rho >= ``min_rho`` against
     their exact walking flow (up to :data:`~g2s_plugins.traffic.EXACT_NODES`
     nodes with an area; above, rho >= ``min_rho`` + :data:`MARGIN` against
-    the heat map's own flow of ``sources`` sampled sources; both of
+    the heat map's own flow of ``sources`` sampled sources, then
+    :func:`confirm`-ed by another sample; both of
     ``ties``), or rho is undefined (every node's flow alike), or
     no removed node differs by more than :data:`FLOOR` (a warning gives rho);
     else every node of ``simplified`` and the removed nodes of ``forest``
