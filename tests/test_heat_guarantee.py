@@ -213,6 +213,43 @@ def test_above_the_exact_size_the_sampled_measure_must_clear_the_margin(monkeypa
     assert heat_guarantee.MARGIN == 0.03
     assert heat_guarantee.restored(graph, forest, structure, 0.87, context) is None
     assert heat_guarantee.restored(graph, forest, structure, 0.89, context) is not None
+    # the structure that met 0.87 + 0.03 was confirmed by another sample: 0.8857 (the exact flow's 0.8962 lies
+    # between the two samples' figures), over 0.87, so without a word
+    other = traffic.walking_flow(graph, max_sources=traffic.WALKING_SOURCES, seed=heat_guarantee.CONFIRMING_SEED)
+    heat = evaluation.placement_heat(graph, structure, traffic.walking_flow(graph, max_sources=traffic.WALKING_SOURCES))
+    assert evaluation.spearman(heat, other) == pytest.approx(0.8857, abs=1e-4) and not context.warnings
+
+
+def test_a_sampled_heat_map_that_meets_its_target_is_confirmed_by_another_sample(monkeypatch):
+    graph = corridor()
+    forest = root_forest(graph, {i: -i for i in graph}, centre=np.zeros(3))
+    monkeypatch.setattr(traffic, "EXACT_NODES", 1)  # the corridor's nine nodes are above it: samples decide
+    # one source, drawn by area (all 1 m²): seed 0 draws polygon 5, the confirming seed 1 polygon 4; its walkers to
+    # the other eight polygons weigh 9 (all the weight over one source) at each polygon between
+    shown = traffic.walking_flow(graph, max_sources=1)
+    other = traffic.walking_flow(graph, max_sources=1, seed=heat_guarantee.CONFIRMING_SEED)
+    exact = traffic.walking_flow(graph)  # 2 i (8 - i): every source
+    assert shown.tolist() == [0, 9, 18, 27, 36, 0, 18, 9, 0]
+    assert other.tolist() == [0, 9, 18, 27, 0, 27, 18, 9, 0]
+    # every node kept: the heat map is the sample's own percentiles, which that sample ranks at rho 1 (over 0.7 +
+    # the margin), the exact flow at 0.696 (under 0.7) and the other sample at 0.194
+    heat = evaluation.placement_heat(graph, forest, shown)
+    assert evaluation.spearman(heat, shown) == pytest.approx(1.0)
+    assert evaluation.spearman(heat, exact) == pytest.approx(scipy.stats.spearmanr(shown, exact).statistic)
+    assert evaluation.spearman(heat, exact) == pytest.approx(0.6957, abs=1e-4)
+    assert evaluation.spearman(heat, other) == pytest.approx(scipy.stats.spearmanr(shown, other).statistic)
+    assert evaluation.spearman(heat, other) == pytest.approx(0.1938, abs=1e-4)
+    context = RunContext(mesh=None, agent=AgentConfig(), centre=np.zeros(3), graph=graph)
+    assert heat_guarantee.restored(graph, forest, forest, 0.7, context, sources=1) is None
+    (warning,) = context.warnings
+    assert "rho 1.000 against the walking flow of the sample of 1 sources" in warning
+    assert "but 0.194 against another sample of 1, under min_heat_rho 0.7" in warning
+    # a target the other sample meets too: kept without a word
+    context = RunContext(mesh=None, agent=AgentConfig(), centre=np.zeros(3), graph=graph)
+    assert heat_guarantee.restored(graph, forest, forest, 0.15, context, sources=1) is None and not context.warnings
+    # up to the exact size the exact flow decides alone: 0.696 meets 0.6, and the other sample (0.194) is not asked
+    monkeypatch.setattr(traffic, "EXACT_NODES", 9)
+    assert heat_guarantee.restored(graph, forest, forest, 0.6, context, sources=1) is None and not context.warnings
 
 
 def test_the_benchmark_reference_is_exact_up_to_the_guarantee_size():
