@@ -776,10 +776,18 @@ bool shortest_hull_triangulation(const rcPolyMesh& pm, int i, rcPolyMeshDetail& 
     return true;
 }
 
+// Most vertices Recast's detail gives one polygon (MAX_VERTS of buildPolyDetail, RecastMeshDetail.cpp).
+constexpr unsigned int RECAST_DETAIL_MAX_VERTS = 127;
+
 // Rebuilds the detail of each polygon whose detail leaves the floor under it by more than the
 // agent's climb (detail_floor_gap): rcBuildPolyMeshDetail on the polygon alone, retriangulated by
 // shortest_hull_triangulation if all its samples lie on the outline; again with detailSampleDist and
-// detailSampleMaxError halved while the result is still off and the spacing stays at least one cell.
+// detailSampleMaxError halved while the result is still off, the spacing stays at least one cell and
+// the last detail (Recast's, then each rebuild) has fewer than RECAST_DETAIL_MAX_VERTS vertices: a full
+// detail cannot take more vertices from finer samples, and Recast scans every sample for each vertex
+// it adds, so each halving would cost four times the last for little (large bent polygons, as where the
+// ledge filter no longer cuts a valley from its slopes: the slopes level 2.6 -> 0.8 s of CPU,
+// docs/navmesh.md "A ledge filter of our own").
 // It keeps the rebuild nearest the floor if that is nearer than Recast's and no vertex of it lies
 // further from the plane through the polygon's vertices than the agent's height or Recast's farthest
 // (finer samples on a spiral stair can read the region's turn below where the turn above is another
@@ -802,11 +810,13 @@ std::vector<int32_t> resample_detail_off_floor(LogContext& ctx, const rcPolyMesh
         const double bend = std::max<double>(c.walkableHeight, detail_plane_offset(pm, *dmesh, i, plane));
         std::unique_ptr<rcPolyMeshDetail, DetailDel> best;
         rcConfig fine = c;
-        for (; gap > c.walkableClimb && fine.detailSampleDist >= c.cs;
+        bool full = dmesh->meshes[static_cast<size_t>(i) * 4 + 1] >= RECAST_DETAIL_MAX_VERTS;
+        for (; gap > c.walkableClimb && !full && fine.detailSampleDist >= c.cs;
              fine.detailSampleDist /= 2, fine.detailSampleMaxError /= 2) {
             std::unique_ptr<rcPolyMeshDetail, DetailDel> one(rcAllocPolyMeshDetail());
             if (!one) fail("rcAllocPolyMeshDetail failed (out of memory)");
             if (!polygon_detail(ctx, pm, i, chf, fine, *one)) too_big("rcBuildPolyMeshDetail failed");
+            full = static_cast<unsigned int>(one->nverts) >= RECAST_DETAIL_MAX_VERTS;
             shortest_hull_triangulation(pm, i, *one);
             const double rebuilt = detail_floor_gap(pm, *one, 0, i, plane, chf);
             if (rebuilt < gap && detail_plane_offset(pm, *one, 0, plane) <= bend) {
