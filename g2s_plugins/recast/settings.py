@@ -26,6 +26,7 @@ from typing import Any, Literal
 
 import numpy as np
 from pydantic import ConfigDict, Field, field_validator, model_validator
+from pydantic_core import PydanticCustomError
 
 from g2s_core.plugin import PluginParams
 
@@ -149,9 +150,10 @@ class RecastParams(PluginParams):
     @classmethod
     def _replaced_keys(cls, data: Any) -> Any:
         if isinstance(data, dict) and "filter_ledge_spans" in data:
-            raise ValueError(
+            raise PydanticCustomError(
+                "replaced_key",
                 "filter_ledge_spans was replaced by ledge_filter: write ledge_filter: recast for true, off for "
-                "false, or drops for Recast's first rule alone (docs/navmesh.md)"
+                "false, or drops for Recast's first rule alone (docs/navmesh.md)",
             )
         return data
 
