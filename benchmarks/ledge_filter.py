@@ -1,11 +1,12 @@
-"""Recast's ledge filter on and off against generated cases with known answers (docs/navmesh.md, "Ledge filter in
-the presets").
+"""The ledge filters (Recast's, its first rule alone, none) against generated cases with known answers
+(docs/navmesh.md, "Ledge filter in the presets" and "A ledge filter of our own").
 
 Run: ``.venv/bin/python benchmarks/ledge_filter.py``
 
 Every case is built on the two grids of the product presets, each with its
-preset's agent (:data:`GRIDS`), with ``filter_ledge_spans`` true (Recast's
-demo setting) and false. The known answers:
+preset's agent (:data:`GRIDS`), with each ``ledge_filter`` of :data:`FILTERS`:
+``recast`` (Recast's demo setting), ``drops`` (its first rule alone) and
+``off``. The known answers:
 
 - two floors 2 m apart joined by a ramp (4 m wide, open sides) are joined
   iff the ramp is no steeper than the agent's ``max_slope``;
@@ -21,12 +22,13 @@ demo setting) and false. The known answers:
   falls in its cell decides how far Recast's conservative voxels overhang it.
 
 "joined" is a path over Detour's polygon links (:meth:`NavMesh.portals`)
-between the polygons nearest the two floors' middles. Without the ledge
+between the polygons nearest the two floors' middles. Without a ledge
 filter Recast's links and erosion still keep the agent off steps and walls
 over the climb (``rcBuildCompactHeightfield`` links two spans only when their
 floors differ by at most ``walkableClimb``; ``rcErodeWalkableArea`` treats a
 span with a missing link as a border), but erosion counts the radius from the
-voxels, which overhang a drop by up to a cell: the clearance table shows it.
+voxels, which overhang a drop by up to a cell: the clearance table shows it
+(the first rule, kept by ``drops``, removes the overhanging cell).
 This is a benchmark: nothing here asserts.
 """
 
@@ -48,6 +50,8 @@ GRIDS: dict[str, tuple[types.SimpleNamespace, dict[str, Any]]] = {
                   {"cell_size": 0.13333334, "cell_height": 0.05, "region_min_size": 6}),
 }
 """Grid name -> (agent, Recast parameters) of configs/base.yaml + map_analysis.yaml and configs/map_piece.yaml."""
+FILTERS = ("recast", "drops", "off")
+"""The ``ledge_filter`` values compared."""
 
 RAMP_DEGREES = (20.0, 30.0, 36.0, 40.0, 44.0, 46.0, 50.0, 55.0, 58.0, 62.0)
 STAIRS = ((0.15, 0.30), (0.20, 0.25), (0.20, 0.30), (0.25, 0.25), (0.25, 0.35), (0.30, 0.30), (0.35, 0.40),
@@ -102,12 +106,12 @@ def platform(shift: float, size: float = 8.0, height: float = 1.0) -> trimesh.Tr
     return trimesh.util.concatenate([floor(20.0, 20.0, 0.0, 0.0), slab((size, height, size), (shift, height / 2, shift))])
 
 
-def navmesh(mesh: trimesh.Trimesh, grid: str, ledge: bool) -> NavMesh | None:
-    """The navmesh of ``mesh`` with ``grid``'s agent and parameters and the ledge filter on or off; None when nothing
+def navmesh(mesh: trimesh.Trimesh, grid: str, ledge: str) -> NavMesh | None:
+    """The navmesh of ``mesh`` with ``grid``'s agent and parameters and ``ledge_filter`` ``ledge``; None when nothing
     is walkable."""
     agent, params = GRIDS[grid]
     try:
-        return build_navmesh(mesh.vertices, mesh.faces, agent, RecastParams(**params, filter_ledge_spans=ledge))
+        return build_navmesh(mesh.vertices, mesh.faces, agent, RecastParams(**params, ledge_filter=ledge))
     except RuntimeError:  # nothing walkable left
         return None
 
@@ -136,7 +140,7 @@ def edge_clearance(nm: NavMesh | None, shift: float, size: float = 8.0, height: 
     return float((size / 2 - np.abs(top[:, [0, 2]] - shift).max(axis=1)).min())
 
 
-def least_edge_clearance(grid: str, ledge: bool, shifts: int = 8) -> float:
+def least_edge_clearance(grid: str, ledge: str, shifts: int = 8) -> float:
     """Least :func:`edge_clearance` (m) over the platform moved by 0, 1/``shifts``, ... of a cell against the grid."""
     cell = cell_size(grid)
     return min(edge_clearance(navmesh(platform(k * cell / shifts), grid, ledge), k * cell / shifts)
@@ -171,12 +175,12 @@ def main() -> None:
     for grid, (agent, params) in GRIDS.items():
         print(f"\n{grid}: agent radius {agent.radius} m, climb {agent.max_climb} m, max slope {agent.max_slope} deg, "
               f"params {params or 'defaults'}")
-        print(f"{'case':<28} {'known':>8} {'ledge on':>9} {'ledge off':>9}")
-        met = {True: 0, False: 0}
+        print(f"{'case':<28} {'known':>8}" + "".join(f" {ledge:>9}" for ledge in FILTERS))
+        met = dict.fromkeys(FILTERS, 0)
         rows = cases(grid)
         for name, known, built in rows:
             shown = []
-            for ledge in (True, False):
+            for ledge in FILTERS:
                 if isinstance(known, bool):
                     value = joined(navmesh(built[0], grid, ledge), built[1])
                     ok = value is known
@@ -187,9 +191,10 @@ def main() -> None:
                     shown.append(f"{value:7.3f} m{'' if ok else '!'}")
                 met[ledge] += ok
             answer = ("joined" if known else "cut") if isinstance(known, bool) else f">={known:.3f} m"
-            print(f"{name:<28} {answer:>8} {shown[0]:>9} {shown[1]:>9}")
+            print(f"{name:<28} {answer:>8}" + "".join(f" {one:>9}" for one in shown))
         total = len(rows)
-        print(f"known answers met: ledge on {met[True]} / {total}, ledge off {met[False]} / {total} ('!': not met)")
+        print("known answers met: " + ", ".join(f"{ledge} {met[ledge]} / {total}" for ledge in FILTERS)
+              + " ('!': not met)")
 
 
 if __name__ == "__main__":

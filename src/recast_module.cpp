@@ -137,6 +137,18 @@ constexpr Partition AUTO_FALLBACK = Partition::monotone;
 // 3 December 2026). 128 sits 2.4 times above the one and 2.4 times below the other.
 constexpr int AUTO_MAX_REGION_CONTOUR_VERTS = 128;
 
+// Which ledge filter runs after rasterisation: Recast's rcFilterLedgeSpans, our drop_ledge_spans (its first rule
+// alone), or none.
+enum class LedgeFilter { recast, drops, off };
+
+LedgeFilter parse_ledge_filter(const std::string& name) {
+    if (name == "recast") return LedgeFilter::recast;
+    if (name == "drops") return LedgeFilter::drops;
+    if (name == "off") return LedgeFilter::off;
+    throw nb::value_error(
+        ("Recast: ledge_filter must be 'recast', 'drops' or 'off', got '" + name + "'").c_str());
+}
+
 Partition parse_partition(const std::string& name) {
     if (name == "auto") return Partition::automatic;
     if (name == "watershed") return Partition::watershed;
@@ -156,7 +168,8 @@ struct Settings {
     long long max_cells;  // most xz cells rasterised at once (the solo grid, or one tile with its border)
     int tile_size;  // -1: automatic, 0: solo, > 0: tiles of this many cells
     int threads;    // worker threads of a tiled build; 0: hardware concurrency
-    bool filter_low_hanging_obstacles, filter_ledge_spans, filter_low_height_spans;
+    bool filter_low_hanging_obstacles, filter_low_height_spans;
+    LedgeFilter ledge_filter;
     Partition partition;
 };
 
@@ -763,10 +776,18 @@ bool shortest_hull_triangulation(const rcPolyMesh& pm, int i, rcPolyMeshDetail& 
     return true;
 }
 
+// Most vertices Recast's detail gives one polygon (MAX_VERTS of buildPolyDetail, RecastMeshDetail.cpp).
+constexpr unsigned int RECAST_DETAIL_MAX_VERTS = 127;
+
 // Rebuilds the detail of each polygon whose detail leaves the floor under it by more than the
 // agent's climb (detail_floor_gap): rcBuildPolyMeshDetail on the polygon alone, retriangulated by
 // shortest_hull_triangulation if all its samples lie on the outline; again with detailSampleDist and
-// detailSampleMaxError halved while the result is still off and the spacing stays at least one cell.
+// detailSampleMaxError halved while the result is still off, the spacing stays at least one cell and
+// the last detail (Recast's, then each rebuild) has fewer than RECAST_DETAIL_MAX_VERTS vertices: a full
+// detail cannot take more vertices from finer samples, and Recast scans every sample for each vertex
+// it adds, so each halving would cost four times the last for little (large bent polygons, as where the
+// ledge filter no longer cuts a valley from its slopes: the slopes level 2.6 -> 0.8 s of CPU,
+// docs/navmesh.md "A ledge filter of our own").
 // It keeps the rebuild nearest the floor if that is nearer than Recast's and no vertex of it lies
 // further from the plane through the polygon's vertices than the agent's height or Recast's farthest
 // (finer samples on a spiral stair can read the region's turn below where the turn above is another
@@ -789,11 +810,13 @@ std::vector<int32_t> resample_detail_off_floor(LogContext& ctx, const rcPolyMesh
         const double bend = std::max<double>(c.walkableHeight, detail_plane_offset(pm, *dmesh, i, plane));
         std::unique_ptr<rcPolyMeshDetail, DetailDel> best;
         rcConfig fine = c;
-        for (; gap > c.walkableClimb && fine.detailSampleDist >= c.cs;
+        bool full = dmesh->meshes[static_cast<size_t>(i) * 4 + 1] >= RECAST_DETAIL_MAX_VERTS;
+        for (; gap > c.walkableClimb && !full && fine.detailSampleDist >= c.cs;
              fine.detailSampleDist /= 2, fine.detailSampleMaxError /= 2) {
             std::unique_ptr<rcPolyMeshDetail, DetailDel> one(rcAllocPolyMeshDetail());
             if (!one) fail("rcAllocPolyMeshDetail failed (out of memory)");
             if (!polygon_detail(ctx, pm, i, chf, fine, *one)) too_big("rcBuildPolyMeshDetail failed");
+            full = static_cast<unsigned int>(one->nverts) >= RECAST_DETAIL_MAX_VERTS;
             shortest_hull_triangulation(pm, i, *one);
             const double rebuilt = detail_floor_gap(pm, *one, 0, i, plane, chf);
             if (rebuilt < gap && detail_plane_offset(pm, *one, 0, plane) <= bend) {
@@ -807,6 +830,52 @@ std::vector<int32_t> resample_detail_off_floor(LogContext& ctx, const rcPolyMesh
     }
     splice_detail(pm, dmesh, changed, redone);
     return changed;
+}
+
+// The ledge filter's first rule without its second. Recast's rcFilterLedgeSpans (RecastFilter.cpp, Recast
+// Navigation 1.5.1) marks a walkable span unwalkable (1) when the agent, standing on it, could step into a
+// neighbouring column and find the floor there more than walkableClimb below its own, or no floor at all (open
+// space below the column's first span, or beyond the grid), and (2) when the floors within walkableClimb of it in
+// its four neighbours differ among themselves by more than walkableClimb. This is rule 1 alone. It keeps erosion's
+// radius honest at a drop: rasterisation takes the cell a drop's edge crosses as floor, so without it erosion
+// counts the radius from that cell's far side, up to a cell too close to the drop (docs/navmesh.md). Rule 2 is
+// left out because it cuts what the agent may walk: a stair tread between two risers within the climb, and every
+// slope whose rise across two cells exceeds the climb (36.9 degrees on the presets' 0.25 / 0.125 m grid, under
+// their max_slope of 45); the agent's own limits are kept without it, the slope by rcMarkWalkableTriangles and the
+// step by rcBuildCompactHeightfield, which links two spans only when their floors differ by at most
+// walkableClimb. A neighbouring gap counts when the agent fits through it: the overlap of the span's free space
+// (its top to the next span's bottom) and the gap is more than walkableHeight, as in Recast. Only floors below the
+// span matter, and neighbours are read by shape only (their areas are not read), so the order of the spans does
+// not change the result. O(spans x the spans of the four neighbouring columns).
+void drop_ledge_spans(int walkable_height, int walkable_climb, rcHeightfield& hf) {
+    constexpr int open_top = std::numeric_limits<int>::max();  // free space above a column's last span
+    const int w = hf.width, h = hf.height;
+    // Whether a neighbour's column (nx, nz) holds a gap the agent fits into from free space [floor, ceiling)
+    // whose floor is more than walkable_climb below `floor` or missing.
+    auto drop_beside = [&](int floor, int ceiling, int nx, int nz) {
+        if (nx < 0 || nz < 0 || nx >= w || nz >= h) return true;
+        const rcSpan* below = nullptr;  // the span whose top is the gap's floor; none under the first span
+        for (const rcSpan* above = hf.spans[nx + nz * w];; above = above->next) {
+            const int gap_floor = below ? static_cast<int>(below->smax) : floor;  // no floor: only ours bounds it
+            const int gap_ceiling = above ? static_cast<int>(above->smin) : open_top;
+            const bool fits = std::min(ceiling, gap_ceiling) - std::max(floor, gap_floor) > walkable_height;
+            if (fits && (!below || gap_floor < floor - walkable_climb)) return true;
+            if (!above) return false;
+            below = above;
+        }
+    };
+    for (int z = 0; z < h; ++z)
+        for (int x = 0; x < w; ++x)
+            for (rcSpan* s = hf.spans[x + z * w]; s; s = s->next) {
+                if (s->area == RC_NULL_AREA) continue;
+                const int floor = static_cast<int>(s->smax);
+                const int ceiling = s->next ? static_cast<int>(s->next->smin) : open_top;
+                for (int dir = 0; dir < 4; ++dir)
+                    if (drop_beside(floor, ceiling, x + rcGetDirOffsetX(dir), z + rcGetDirOffsetY(dir))) {
+                        s->area = RC_NULL_AREA;
+                        break;
+                    }
+            }
 }
 
 // Input shared by every tile of a build.
@@ -844,7 +913,8 @@ void build_tile(const Input& in, const int* tris, int ntris, const rcConfig& c, 
 
     // 2. Filter walkable surfaces.
     if (s.filter_low_hanging_obstacles) rcFilterLowHangingWalkableObstacles(&ctx, c.walkableClimb, *solid);
-    if (s.filter_ledge_spans) rcFilterLedgeSpans(&ctx, c.walkableHeight, c.walkableClimb, *solid);
+    if (s.ledge_filter == LedgeFilter::recast) rcFilterLedgeSpans(&ctx, c.walkableHeight, c.walkableClimb, *solid);
+    if (s.ledge_filter == LedgeFilter::drops) drop_ledge_spans(c.walkableHeight, c.walkableClimb, *solid);
     if (s.filter_low_height_spans) rcFilterWalkableLowHeightSpans(&ctx, c.walkableHeight, *solid);
 
     // 3. Compact heightfield, erosion by the agent radius.
@@ -1673,13 +1743,13 @@ NavMeshCore* build_navmesh(nb::ndarray<const V, nb::shape<-1, 3>, nb::c_contig, 
                            double region_merge_size, double edge_max_len, double edge_max_error,
                            int verts_per_poly, double detail_sample_dist, double detail_sample_max_error,
                            long long max_cells, std::optional<int> tile_size, int threads,
-                           bool filter_low_hanging_obstacles, bool filter_ledge_spans,
+                           bool filter_low_hanging_obstacles, const std::string& ledge_filter,
                            bool filter_low_height_spans, const std::string& partition) {
     Settings s{cell_size, cell_height, agent_height, agent_radius, agent_max_climb, agent_max_slope,
                region_min_size, region_merge_size, edge_max_len, edge_max_error, verts_per_poly,
                detail_sample_dist, detail_sample_max_error, max_cells,
                tile_size ? *tile_size : -1, threads,
-               filter_low_hanging_obstacles, filter_ledge_spans, filter_low_height_spans,
+               filter_low_hanging_obstacles, filter_low_height_spans, parse_ledge_filter(ledge_filter),
                parse_partition(partition)};
     if (tile_size && *tile_size < 0) throw nb::value_error("Recast: tile_size must be None (automatic), 0 (solo) or >= 16 cells");
     check_settings(s);
@@ -1717,7 +1787,7 @@ void def_build(nb::module_& m) {
           nb::arg("edge_max_error") = 1.3, nb::arg("verts_per_poly") = 6,
           nb::arg("detail_sample_dist") = 6.0, nb::arg("detail_sample_max_error") = 1.0,
           nb::arg("max_cells") = 100000000LL, nb::arg("tile_size") = nb::none(), nb::arg("threads") = 0,
-          nb::arg("filter_low_hanging_obstacles") = true, nb::arg("filter_ledge_spans") = true,
+          nb::arg("filter_low_hanging_obstacles") = true, nb::arg("ledge_filter") = "recast",
           nb::arg("filter_low_height_spans") = true, nb::arg("partition") = "auto",
           nb::rv_policy::take_ownership,
           "Build a navmesh from (N,3) vertices and (M,3) triangle faces. World-unit settings, "
@@ -1726,7 +1796,9 @@ void def_build(nb::module_& m) {
           "else tiles of 256 cells), 0 (solo) or the tile side in cells (>= 16). threads: "
           "worker threads of a tiled build (0: hardware concurrency). max_cells: most xz cells "
           "rasterised at once (the solo grid, or one tile with its border). filter_*: run Recast's "
-          "rcFilterLowHangingWalkableObstacles / rcFilterLedgeSpans / rcFilterWalkableLowHeightSpans. "
+          "rcFilterLowHangingWalkableObstacles / rcFilterWalkableLowHeightSpans. ledge_filter: 'recast' "
+          "(rcFilterLedgeSpans), 'drops' (only its first rule: drop a span beside a drop deeper than the "
+          "climb) or 'off'. "
           "partition: Recast's region partition, 'auto' (watershed; a tile where a region overlaps "
           "itself in plan is redone with monotone), 'watershed' (rcBuildRegions), 'monotone' "
           "(rcBuildRegionsMonotone) or 'layers' (rcBuildLayerRegions).");

@@ -140,7 +140,9 @@ def test_the_reference_navmesh_cuts_slopes_under_max_slope_that_the_sampler_walk
     # navmesh builder's default grid (cells 0.25 m, climb 3 cells of 0.125 m) a slope that rises more than 0.375 m
     # across two cells, steeper than atan(0.375 / 0.5) = 36.9 degrees (where the cells' rounding falls worst),
     # under the presets' 45. The sampler walks up to the agent's 45 degrees, and so does a grid of 0.125 m cells
-    # (limit atan(0.375 / 0.25) = 56.3 degrees). docs/analysis_quality.md, "The sampling route on slopes".
+    # (limit atan(0.375 / 0.25) = 56.3 degrees), and the default grid with the filter's first rule alone
+    # (ledge_filter: drops). docs/analysis_quality.md, "The sampling route on slopes"; docs/navmesh.md, "A ledge
+    # filter of our own".
     mesh, ends = floors_joined_by_a_ramp(degrees)
     agent = AgentConfig()
     assert agent.max_slope == 45.0 and agent.radius == 0.5 and agent.max_climb == 0.4
@@ -148,7 +150,8 @@ def test_the_reference_navmesh_cuts_slopes_under_max_slope_that_the_sampler_walk
     nearest = [min(sampled, key=lambda n: math.dist(sampled.nodes[n]["pos"], end)) for end in ends]
     assert [sampled.nodes[n]["pos"][1] for n in nearest] == pytest.approx(ends[:, 1])  # one on each floor
     assert nx.has_path(sampled, *nearest)
-    for params, joins in ((navmesh_builder.Params(), default_grid_joins), (navmesh_builder.Params(cell_size=0.125), True)):
+    for params, joins in ((navmesh_builder.Params(), default_grid_joins), (navmesh_builder.Params(cell_size=0.125), True),
+                          (navmesh_builder.Params(ledge_filter="drops"), True)):
         navmesh = build_navmesh(mesh.vertices, mesh.faces, agent, params)
         polygons = evaluation.polygons_under(navmesh, ends)
         assert (polygons >= 0).all()

@@ -599,20 +599,22 @@ def floors_joined(mesh: trimesh.Trimesh, deck: float, start: float, width: float
 @pytest.mark.parametrize("riser", [0.245, 0.25])
 def test_ledge_filter_cuts_stairs_and_can_be_switched_off(riser):
     # map-piece agent and grid (configs/map_piece.yaml); measured on 40 stair cases
-    # in docs/navmesh.md: the ledge filter cuts most narrow ones
+    # in docs/navmesh.md: Recast's ledge filter cuts most narrow ones, its first rule alone (drops) none
     mesh, deck, start = stairs(riser)
-    assert not floors_joined(mesh, deck, start, 1.6)
-    assert floors_joined(mesh, deck, start, 1.6, filter_ledge_spans=False)
-    # switching the filter off does not make a step higher than max_climb walkable
+    assert not floors_joined(mesh, deck, start, 1.6, ledge_filter="recast")
+    assert floors_joined(mesh, deck, start, 1.6, ledge_filter="drops")
+    assert floors_joined(mesh, deck, start, 1.6, ledge_filter="off")
+    # neither makes a step higher than max_climb walkable
     high, deck, start = stairs(0.45)
-    assert not floors_joined(high, deck, start, 1.6, filter_ledge_spans=False)
+    assert not floors_joined(high, deck, start, 1.6, ledge_filter="drops")
+    assert not floors_joined(high, deck, start, 1.6, ledge_filter="off")
 
 
 def test_filter_switches_reach_recast():
     # a floor with a 0.3 m box: the ledge filter trims the box top and the floor's rim
     mesh = trimesh.util.concatenate([floor(10, 10), slab((3.0, 0.3, 3.0), (0.0, 0.15, 0.0))])
     on = build(mesh)
-    off = build(mesh, filter_low_hanging_obstacles=False, filter_ledge_spans=False, filter_low_height_spans=False)
+    off = build(mesh, filter_low_hanging_obstacles=False, ledge_filter="off", filter_low_height_spans=False)
     assert off.areas.sum() > on.areas.sum() * 1.02
 
 

@@ -25,7 +25,8 @@ from __future__ import annotations
 from typing import Any, Literal
 
 import numpy as np
-from pydantic import ConfigDict, Field, field_validator
+from pydantic import ConfigDict, Field, field_validator, model_validator
+from pydantic_core import PydanticCustomError
 
 from g2s_core.plugin import PluginParams
 
@@ -102,12 +103,13 @@ class RecastParams(PluginParams):
     filter_low_hanging_obstacles: bool = Field(
         True, description="Recast's rcFilterLowHangingWalkableObstacles: walk onto obstacles up to max_climb high"
     )
-    filter_ledge_spans: bool = Field(
-        True,
-        description="Recast's rcFilterLedgeSpans: drop spans next to a drop deeper than max_climb "
-        "(also removes stair treads whose risers are close to max_climb, and slopes under max_slope steeper than "
-        "about atan(max_climb / (2 cell_size))); false: the navmesh comes up to one cell closer than the agent's "
-        "radius to a drop (docs/navmesh.md)",
+    ledge_filter: Literal["recast", "drops", "off"] = Field(
+        "recast",
+        description="recast: Recast's rcFilterLedgeSpans, drop spans beside a drop deeper than max_climb and spans "
+        "whose walkable neighbours differ by more than max_climb (the second rule also drops stair treads whose "
+        "risers are within max_climb, and slopes under max_slope steeper than about atan(max_climb / (2 "
+        "cell_size))); drops: the first rule alone (our own filter); off: neither (the navmesh comes up to one cell "
+        "closer than the agent's radius to a drop). docs/navmesh.md",
     )
     filter_low_height_spans: bool = Field(
         True, description="Recast's rcFilterWalkableLowHeightSpans: drop spans with less head room than the agent"
@@ -143,6 +145,17 @@ class RecastParams(PluginParams):
         description="tile side, cells (>= 16); None: solo up to 512 x 512 cells when it fits, "
         "else tiles of 256; 0: always solo",
     )
+
+    @model_validator(mode="before")
+    @classmethod
+    def _replaced_keys(cls, data: Any) -> Any:
+        if isinstance(data, dict) and "filter_ledge_spans" in data:
+            raise PydanticCustomError(
+                "replaced_key",
+                "filter_ledge_spans was replaced by ledge_filter: write ledge_filter: recast for true, off for "
+                "false, or drops for Recast's first rule alone (docs/navmesh.md)",
+            )
+        return data
 
     @field_validator("tile_size")
     @classmethod
@@ -228,7 +241,7 @@ def resolve_settings(agent: Any, params: RecastParams | None = None) -> dict[str
         max_cells=int(p.max_cells),
         tile_size=None if p.tile_size is None else int(p.tile_size),
         filter_low_hanging_obstacles=bool(p.filter_low_hanging_obstacles),
-        filter_ledge_spans=bool(p.filter_ledge_spans),
+        ledge_filter=p.ledge_filter,
         filter_low_height_spans=bool(p.filter_low_height_spans),
         partition=p.partition,
     )
