@@ -47,9 +47,9 @@ def counter_doorway() -> SampleLevel:
     return _level("counter_doorway", parts, [_opening((-0.3, 0.0, 3.0), _W, 1.6)])
 
 
-def container_gap() -> SampleLevel:
-    """Two shipping containers (6.06 x 2.44 x 2.59 m) 1.2 m apart on a slab under them and the gap; ribbed faces."""
-    length, width, height, gap = 6.06, 2.44, 2.59, 1.2
+def container_gap(gap: float = 1.2) -> SampleLevel:
+    """Two shipping containers (6.06 x 2.44 x 2.59 m) ``gap`` m apart on a slab under them and the gap; ribbed faces."""
+    length, width, height = 6.06, 2.44, 2.59
     parts = [_box(0.0, length, -SLAB, 0.0, 0.0, 2 * width + gap),
              _box(0.0, length, 0.0, height, 0.0, width), _box(0.0, length, 0.0, height, width + gap, 2 * width + gap)]
     for x in np.arange(0.15, length - 0.1, 0.3):  # corrugation: ribs 0.1 m wide standing 0.03 m out into the gap

@@ -22,8 +22,8 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
    no walkable face, so a crack between floor tiles is no edge). A direction
    is a way out when the edge is found, the ray along it stays clear for
    ``outward_radii * r`` (no wall, jamb or curb higher than ``h`` in the
-   way), the same way ``h`` below the agent's height is clear up to the edge
-   (head room: no lintel lower than the agent), the same way at every search
+   way), the same way a search step below the agent's height is clear up to
+   the edge (head room: no lintel lower than the agent), the same way at every search
    step of height from the climb up to that is clear one agent radius past
    the edge (no rail of a railing between its posts) and, with
    ``leave_footprint``, one agent radius beyond the edge nothing of the piece
@@ -116,7 +116,7 @@ boundary's length / ``sample_step``), k = ``fan_count`` and o openings:
 O(V log V + B log B) to chain the loops; rays, in batches: up to three to snap
 each sample, and per sample and fan direction one outward ray, at most
 ``edge_search_radii * r / d`` downward probes (d = min(``sample_step``,
-r) / 4) and 4 bisection rays to find the surface's end, (agent height - h -
+r) / 4) and 4 bisection rays to find the surface's end, (agent height -
 climb) / d across the way for the directions clear so far, two more beyond it
 with ``leave_footprint``: O(S k (edge_search_radii r + agent height) / d) rays (up to twice
 that with ``step_up``, for the samples searched again from a step's top).
@@ -234,7 +234,7 @@ class Params(PluginParams):
     leave_footprint: bool = Field(
         True,
         description="an exit must lead out of the piece: one agent radius beyond its edge nothing of the "
-        "piece lies straight below, nor above lower than the agent's height less sample_height (false: keep "
+        "piece lies straight below, nor above lower than a search step under the agent's height (false: keep "
         "ledges, holes inside the piece and exits under low canopies)",
     )
     step_up: bool = Field(
@@ -592,7 +592,7 @@ def _match_edges(segments: list[np.ndarray], ways: _Ways, s: _Settings, params: 
         # whose points climb along it no steeper than the agent walks (one surface), is straight in plan. A
         # steeper jump is a riser between two surfaces (a wall's top beside a ceiling's), fitted in 3D; unless
         # the samples climb it too, within the climb: then it is the floor's own step, walked on both sides (a
-        # kerb across a tunnel's end), where the edge drops below no sample.
+        # kerb across a tunnel's end); an edge dropping under samples that stay level is still a riser.
         rise = np.diff(points[:, 1])
         steep = np.abs(rise) > s.walkable_tan * np.hypot(*np.diff(points[:, [0, 2]], axis=0).T) + 1e-9
         walked = (np.abs(rise) <= s.climb) & (np.abs(rise - np.diff(ways.base[samples, 1])) <= s.delta)
