@@ -29,6 +29,7 @@ from g2s_plugins.samples.pieces import _E, _N, _S, _W
 
 
 def _level(name: str, parts: list[trimesh.Trimesh], openings: list) -> SampleLevel:
+    """The tenth round's :func:`piece_kinds10._level`, tagged with this round."""
     return _level10(name, parts, openings, round_=11)
 
 
