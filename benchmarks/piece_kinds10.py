@@ -49,10 +49,11 @@ def _box(x0: float, x1: float, y0: float, y1: float, z0: float, z1: float) -> tr
     return _hull([[x, y, z] for x in (x0, x1) for y in (y0, y1) for z in (z0, z1)])
 
 
-def _level(name: str, parts: list[trimesh.Trimesh], openings: list) -> SampleLevel:
+def _level(name: str, parts: list[trimesh.Trimesh], openings: list, round_: int = 10) -> SampleLevel:
+    """The piece ``name`` made of ``parts`` with its known ``openings``, tagged with the round that added it."""
     mesh = trimesh.util.concatenate(parts)
     mesh.merge_vertices()
-    return SampleLevel(name=name, mesh=mesh, openings=tuple(openings), metadata={"round": 10})
+    return SampleLevel(name=name, mesh=mesh, openings=tuple(openings), metadata={"round": round_})
 
 
 def _room(width: float, depth: float, doors: dict[str, list[tuple[float, float, float]]], wall: float = 0.3,
@@ -277,9 +278,13 @@ def score(level: SampleLevel, openings) -> tuple[int, int, int, int, float]:
     return recalled, len(known) - recalled, correct, len(found) - correct, max(errors, default=float("nan"))
 
 
-def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--kinds", nargs="+", choices=sorted(KINDS), default=list(KINDS))
+def main(argv: list[str] | None = None, kinds: dict[str, Callable[[], SampleLevel]] | None = None,
+         description: str | None = None) -> int:
+    """Run ``kinds`` (default: the tenth round's) through the presets and print the table; the other rounds' scripts
+    call it with theirs."""
+    kinds = KINDS if kinds is None else kinds
+    parser = argparse.ArgumentParser(description=description or __doc__.splitlines()[0])
+    parser.add_argument("--kinds", nargs="+", choices=sorted(kinds), default=list(kinds))
     parser.add_argument("--configs", nargs="+", default=["map_piece", "map_piece_sampling"])
     parser.add_argument("--yaws", type=float, nargs="+", default=[0.0, 22.0, 45.0])
     parser.add_argument("--detail", action="store_true", help="list every detected opening")
@@ -292,7 +297,7 @@ def main(argv: list[str] | None = None) -> int:
         for name in args.kinds:
             cells, worst = [], []
             for yaw in args.yaws:
-                level = KINDS[name]()
+                level = kinds[name]()
                 level = pieces.turned(level, yaw) if yaw else level
                 try:
                     result = pipeline.run(plan, registry, level.mesh, name, mesh_sha256(level.mesh))
@@ -309,7 +314,7 @@ def main(argv: list[str] | None = None) -> int:
                     for o in openings:
                         print(f"    {name} yaw {yaw:g}: at ({o.position[0]:.2f}, {o.position[1]:.2f}, "
                               f"{o.position[2]:.2f}) width {o.width:.2f} score {getattr(o, 'score', float('nan')):.2f}")
-            print(f"  {name:20s} {len(KINDS[name]().openings)}  {'; '.join(cells)}  {max(worst, default=float('nan')):.2f}")
+            print(f"  {name:20s} {len(kinds[name]().openings)}  {'; '.join(cells)}  {max(worst, default=float('nan')):.2f}")
         recalled, missed, correct, other, known = (int(v) for v in totals)
         print(f"  total: precision {correct}/{correct + other}, recall {recalled}/{known}")
     return 0

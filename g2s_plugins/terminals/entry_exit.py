@@ -22,8 +22,8 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
    no walkable face, so a crack between floor tiles is no edge). A direction
    is a way out when the edge is found, the ray along it stays clear for
    ``outward_radii * r`` (no wall, jamb or curb higher than ``h`` in the
-   way), the same way ``h`` below the agent's height is clear up to the edge
-   (head room: no lintel lower than the agent), the same way at every search
+   way), the same way a search step below the agent's height is clear up to
+   the edge (head room: no lintel lower than the agent), the same way at every search
    step of height from the climb up to that is clear one agent radius past
    the edge (no rail of a railing between its posts) and, with
    ``leave_footprint``, one agent radius beyond the edge nothing of the piece
@@ -116,7 +116,7 @@ boundary's length / ``sample_step``), k = ``fan_count`` and o openings:
 O(V log V + B log B) to chain the loops; rays, in batches: up to three to snap
 each sample, and per sample and fan direction one outward ray, at most
 ``edge_search_radii * r / d`` downward probes (d = min(``sample_step``,
-r) / 4) and 4 bisection rays to find the surface's end, (agent height - h -
+r) / 4) and 4 bisection rays to find the surface's end, (agent height -
 climb) / d across the way for the directions clear so far, two more beyond it
 with ``leave_footprint``: O(S k (edge_search_radii r + agent height) / d) rays (up to twice
 that with ``step_up``, for the samples searched again from a step's top).
@@ -234,7 +234,7 @@ class Params(PluginParams):
     leave_footprint: bool = Field(
         True,
         description="an exit must lead out of the piece: one agent radius beyond its edge nothing of the "
-        "piece lies straight below, nor above lower than the agent's height less sample_height (false: keep "
+        "piece lies straight below, nor above lower than a search step under the agent's height (false: keep "
         "ledges, holes inside the piece and exits under low canopies)",
     )
     step_up: bool = Field(
@@ -270,6 +270,7 @@ class _Settings:
     delta: float
     walkable_cos: float  # cosine of the agent's steepest walkable slope
     walkable_tan: float  # its tangent
+    head: float  # height of the head-room rays over the surface: a search step under the agent's height
 
 
 def _settings(params: Params, agent: AgentConfig) -> _Settings:
@@ -278,10 +279,16 @@ def _settings(params: Params, agent: AgentConfig) -> _Settings:
     step = float(params.sample_step) if params.sample_step is not None else r / 2.0
     lift = float(params.sample_height) if params.sample_height is not None else max(0.5 * climb, 0.1)
     snap = float(params.snap_distance) if params.snap_distance is not None else max(climb, 0.1)
+    delta = min(step, r) / 4.0
     return _Settings(
-        radius=r, height=float(agent.height), climb=climb, step=step, lift=lift, snap=snap, delta=min(step, r) / 4.0,
+        radius=r, height=float(agent.height), climb=climb, step=step, lift=lift, snap=snap, delta=delta,
         walkable_cos=math.cos(math.radians(float(agent.max_slope))),
         walkable_tan=math.tan(math.radians(float(agent.max_slope))),
+        # A lintel lower than the agent closes the way, one as high does not (a search step is the detector's
+        # resolution in height, as in length; the map-piece preset's cell height is the same 0.05 m). At the
+        # agent's height less ``lift`` (1.8 m) lintels from 1.8 to 2 m passed (docs/entry_exit.md, "An eleventh
+        # round of piece kinds").
+        head=float(agent.height) - delta,
     )
 
 
@@ -415,11 +422,11 @@ def _fan(
     ok = np.isfinite(edge)
     if ok.any():
         # Head room: the rays at ``lift`` pass under a lintel lower than the agent (a window at floor
-        # level, a vent); the same way ``lift`` below the agent's height must be clear up to the edge.
+        # level, a vent); the same way at ``head`` must be clear up to the edge.
         rows = np.nonzero(ok)[0]
-        head = np.repeat(base + normal * (s.height - s.lift), k, axis=0)[rows]
+        head = np.repeat(base + normal * s.head, k, axis=0)[rows]
         ok[rows[caster.first_hits(head, dirs[rows]).distance <= edge[rows]]] = False
-    heights = np.arange(s.climb + s.delta / 2.0, s.height - s.lift, s.delta)  # none when the agent climbs its height
+    heights = np.arange(s.climb + s.delta / 2.0, s.head, s.delta)  # none when the agent climbs its height
     if ok.any() and len(heights):
         # Bars across the way (a railing's rails between its posts) pass between the rays at ``lift`` and
         # the head-room ray: the way must be clear at every search step of height from the climb up to the
@@ -437,7 +444,7 @@ def _fan(
         below = caster.first_hits(beyond, -UP).distance
         above = caster.first_hits(beyond, UP).distance
         # Above, only what the agent could not stand under blocks the way (the head-room rule): eaves do not.
-        ok[rows[np.isfinite(below) | (above < s.height - s.lift)]] = False
+        ok[rows[np.isfinite(below) | (above < s.head)]] = False
     # The soonest way out; among equals, the one closest to straight out.
     cost = np.where(ok, edge, np.inf).reshape(m, k) + 1e-6 * np.abs(theta)[None, :]
     pick = np.argmin(cost, axis=1)
@@ -583,9 +590,13 @@ def _match_edges(segments: list[np.ndarray], ways: _Ways, s: _Settings, params: 
         centre, direction, residual = _fit_line(points)
         # A floor curved across the way (a round pipe) ends along an arc in the vertical plane: such an edge,
         # whose points climb along it no steeper than the agent walks (one surface), is straight in plan. A
-        # steeper jump is a riser between two surfaces (a wall's top beside a ceiling's), fitted in 3D.
-        rise = np.abs(np.diff(points[:, 1]))
-        if np.all(rise <= s.walkable_tan * np.hypot(*np.diff(points[:, [0, 2]], axis=0).T) + 1e-9):
+        # steeper jump is a riser between two surfaces (a wall's top beside a ceiling's), fitted in 3D; unless
+        # the samples climb it too, within the climb: then it is the floor's own step, walked on both sides (a
+        # kerb across a tunnel's end); an edge dropping under samples that stay level is still a riser.
+        rise = np.diff(points[:, 1])
+        steep = np.abs(rise) > s.walkable_tan * np.hypot(*np.diff(points[:, [0, 2]], axis=0).T) + 1e-9
+        walked = (np.abs(rise) <= s.climb) & (np.abs(rise - np.diff(ways.base[samples, 1])) <= s.delta)
+        if np.all(~steep | walked):
             residual = _fit_line(points[:, [0, 2]])[2]
         straight = float(np.count_nonzero(residual <= tolerance)) / len(points)
         if straight < 0.8 and not _follows(points, ways.tangent[samples], cos_match):
