@@ -253,14 +253,28 @@ def _scene_damage(document: dict) -> str | None:
                                  "SCALAR unsigned integers (componentType 5121, 5123 or 5125), 3 a triangle" + (
                                      f"; accessors[{primitive['indices']}] holds {indices['count']} {indices['type']} of "
                                      f"componentType {indices['componentType']}" if indices else ""))
-    numbers = lambda size: lambda value: isinstance(value, list) and len(value) == size and all(
-        type(item) in (int, float) and math.isfinite(item) for item in value)
-    valid = {"mesh": lambda value: _is_index(value, count["meshes"]), "matrix": numbers(16), "translation": numbers(3),
-             "rotation": numbers(4), "scale": numbers(3),
-             "children": lambda value: isinstance(value, list) and all(_is_index(item, count["nodes"]) for item in value)}
-    return next((_expected(f"nodes[{number}].{key}", node[key], NODE_KEYS[key].format(nodes=_many(count["nodes"], "node"),
-                                                                                      meshes=_many(count["meshes"], "mesh")))
-                 for number, node in _listed(document, "nodes") for key, check in valid.items() if key in node and not check(node[key])), None)
+    return _node_damage(document, count)
+
+
+def _node_damage(document: dict, count: dict[str, int]) -> str | None:
+    """The first of a glTF document's nodes whose mesh, children or transform trimesh would fail on (in numpy's
+    words) or read as no mesh; ``count``: the length of each of :data:`GLTF_LISTS`."""
+    sizes = {"matrix": 16, "translation": 3, "rotation": 4, "scale": 3}
+    for number, node in _listed(document, "nodes"):
+        for key, value in node.items():
+            if key == "mesh":
+                sound = _is_index(value, count["meshes"])
+            elif key == "children":
+                sound = isinstance(value, list) and all(_is_index(item, count["nodes"]) for item in value)
+            elif key in sizes:
+                sound = isinstance(value, list) and len(value) == sizes[key] and all(
+                    type(item) in (int, float) and math.isfinite(item) for item in value)
+            else:
+                continue
+            if not sound:
+                wanted = NODE_KEYS[key].format(nodes=_many(count["nodes"], "node"), meshes=_many(count["meshes"], "mesh"))
+                return _expected(f"nodes[{number}].{key}", value, wanted)
+    return None
 
 
 def _is_index(value: object, count: int) -> bool:
