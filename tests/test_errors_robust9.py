@@ -57,6 +57,12 @@ def test_a_binary_ply_of_triangles_and_quads_is_read(tmp_path):
     mesh, info = load_mesh(path)
     assert len(mesh.faces) == 3 and info.faces == 3
     assert mesh.area == pytest.approx(150.0) and (mesh.face_normals[:, 1] > 0.99).all()  # the quad fanned as trimesh fans one
+    # and a pentagon beside them, fanned from its first corner over the file's own vertex numbers (pymeshlab reads an
+    # OFF pentagon's corners as 0-4 instead, which is why OFF files keep a reader of their own)
+    path.write_bytes(binary_ply([(0, 1, 2), (0, 2, 3), (3, 2, 4, 5), (5, 4, 6, 8, 7)], vertices=(
+        (0, 0, 0), (0, 0, 4), (4, 0, 4), (4, 0, 0), (8, 0, 4), (8, 0, 0), (12, 0, 4), (12, 0, 0), (14, 0, 2))))
+    mesh, info = load_mesh(path)
+    assert (info.faces, mesh.area) == (7, pytest.approx(16 + 16 + 20)) and (mesh.face_normals[:, 1] > 0.99).all()
 
 
 @pytest.mark.parametrize("data, says", [
