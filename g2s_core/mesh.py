@@ -153,7 +153,7 @@ def _as_trimesh_reads_obj(text: bytes) -> bytes:
     return _absolute_indices(text) if faces_before and _RELATIVE_FACE.search(text, 0, last_vertex) else text
 
 
-_GLTF_UNREAD = re.compile(rb'"sparse"|"mode"\s*:\s*[^0-5\s]|"extensionsRequired"')
+_GLTF_UNREAD = re.compile(rb'"sparse"|"mode"\s*:\s*(?![0-5](?![0-9]))|"extensionsRequired"')
 """A glTF's sparse accessor, a primitive's mode other than 0-5 (a triangle fan, 6), or extensions it requires
 (compression: the data trimesh reads may be empty)."""
 

@@ -145,16 +145,16 @@ def _glb_damage(data: bytes, folder: Path) -> str | None:
 
 
 def _gltf_damage(document: object, folder: Path, binary: int | None) -> str | None:
-    """What is wrong with a glTF document: not an object, a buffer that cannot be read (a file missing beside the
-    glTF file or shorter than its ``byteLength``, a data URI that is not base64, a GLB without its binary chunk), or
-    an index to a buffer or buffer view the document lacks, its accessors (:func:`_accessor_damage`), then the way from
-    its scene to the vertices (:func:`_scene_damage`). ``binary``: a GLB's binary chunk's length."""
+    """What is wrong with a glTF document (``binary``: a GLB's binary chunk's length): not an object, an ``asset.version``
+    other than 2.x, a required extension of :data:`GLTF_COMPRESSED`, a buffer that cannot be read (a file missing beside
+    it or shorter than its ``byteLength``, a data URI not in base64, a GLB without its binary chunk), an index to a buffer
+    or view the document lacks, its accessors (:func:`_accessor_damage`), its scene's way to its vertices (:func:`_scene_damage`)."""
     if not isinstance(document, dict):
         return "expected a glTF JSON object at the top level"
-    if isinstance(version := (document.get("asset") or {}).get("version") if isinstance(document.get("asset"), dict) else None, str) \
-            and not version.startswith("2."):
+    asset, required = document.get("asset"), document.get("extensionsRequired")
+    if isinstance(version := asset.get("version") if isinstance(asset, dict) else None, str) and not version.startswith("2."):
         return f"asset.version is {version!r}; g2s reads glTF 2.0 (convert the file to glTF 2.0)"
-    if compressed := [name for name in document.get("extensionsRequired") or () if name in GLTF_COMPRESSED]:
+    if compressed := [name for name in (required if isinstance(required, list) else ()) if name in GLTF_COMPRESSED]:
         return f"extensionsRequired lists {compressed[0]}: the mesh is compressed, which g2s cannot read; export it without compression"
     for name in GLTF_LISTS:  # trimesh fails on another kind with a TypeError or AttributeError
         if not isinstance(items := document.get(name, []), list):
