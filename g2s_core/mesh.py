@@ -17,7 +17,7 @@ from g2s_core.config import MeshConfig
 from g2s_core.errors import ConfigError, MeshError
 from g2s_core.input_files import check_regular_file
 from g2s_core.lazy import lazy_module
-from g2s_core.mesh_damage import declared_faces, describe_damage, rows_beyond_header
+from g2s_core.mesh_damage import declared_faces, describe_damage, off_polygons, rows_beyond_header
 from g2s_core.registry import Registry, installed
 
 # loaded with the first mesh read: the CLI and the batch command import this module for its names
@@ -92,7 +92,7 @@ def load_mesh(path: str | Path, config: MeshConfig | None = None) -> tuple[trime
         unread = f"cannot read mesh ({type(exc).__name__}: {exc})"
         if damage or path.suffix.lower() not in POLYGON_SUFFIXES:
             raise MeshError(f"{path}: {damage or unread}") from None
-        loaded = _read_polygons(path, unread)
+        loaded = _read_polygons(path, raw, unread)
     # trimesh reads a sparse accessor's data without its values, leaves a triangle fan out, reads no compressed mesh: silently wrong
     if path.suffix.lower() in (".gltf", ".glb") and _GLTF_UNREAD.search(raw) and (damage := describe_damage(path, raw)):
         raise MeshError(f"{path}: {damage}")
@@ -106,16 +106,19 @@ def load_mesh(path: str | Path, config: MeshConfig | None = None) -> tuple[trime
 
 
 POLYGON_SUFFIXES = (".off", ".ply")
-"""Formats whose sound files trimesh may fail to read where pymeshlab reads them: an OFF face of 5 or more corners
-(trimesh 4.x on numpy 2 fans it from text values: ``TypeError ... string multiply ufunc``) and a binary PLY face
-list mixing triangles and quads, as Blender writes it (trimesh reads every row as long as the first: "PLY is
-unexpected length")."""
+"""Formats whose sound files trimesh may fail to read: an OFF face of 5 or more corners (trimesh 4.x on numpy 2 fans
+it from text values: ``TypeError ... string multiply ufunc``) and a binary PLY face list mixing triangles and quads,
+as Blender writes it (trimesh reads every row as long as the first: "PLY is unexpected length")."""
 
 
-def _read_polygons(path: Path, unread: str) -> trimesh.Trimesh:
-    """A sound file of :data:`POLYGON_SUFFIXES` that trimesh could not read, read by pymeshlab, which fans each polygon
-    from its first corner as trimesh fans an OBJ's and keeps every vertex in the file's order; ``unread``: trimesh's
-    failure, the message when pymeshlab fails too."""
+def _read_polygons(path: Path, raw: bytes, unread: str) -> trimesh.Trimesh:
+    """A sound file of :data:`POLYGON_SUFFIXES` that trimesh could not read, its bytes ``raw``: an OFF file read by
+    :func:`~g2s_core.mesh_damage.off_polygons`, a PLY file by pymeshlab; each polygon fanned from its first corner as
+    trimesh fans an OBJ's, every vertex kept in the file's order; ``unread``: trimesh's failure, the message when
+    pymeshlab fails too."""
+    if path.suffix.lower() == ".off":  # pymeshlab 2025.7 numbers an OFF polygon's corners from 0 past 4 corners
+        vertices, polygons = off_polygons(raw)
+        return trimesh.Trimesh(vertices=vertices, faces=trimesh.geometry.triangulate_quads(polygons), process=False)
     import pymeshlab  # imported here: it takes a second to load and few files need it
 
     meshset = pymeshlab.MeshSet()

@@ -342,6 +342,14 @@ def _off_rows(data: bytes) -> tuple[int, int, Rows] | str:
     return int(counts[0]), int(counts[1]), body
 
 
+def off_polygons(data: bytes) -> tuple[list[list[float]], list[list[int]]]:
+    """A sound OFF file's vertices (x y z) and faces (vertex indices from 0, any number of corners each), which
+    :func:`~g2s_core.mesh.load_mesh` reads with this when trimesh fails on a polygon of 5 or more corners."""
+    vertices, faces, body = _off_rows(data)
+    return ([[float(value) for value in values[:3]] for _, values in body[:vertices]],
+            [[int(corner) for corner in values[1:1 + int(values[0])]] for _, values in body[vertices:vertices + faces]])
+
+
 def _stl_ascii_damage(data: bytes) -> str | None:
     """The first line of an ASCII STL file that is wrong: a word the format does not start a line with, a vertex
     that is not 3 finite numbers, a facet of other than 3 vertices, an ``endsolid`` without its ``solid``, or a
