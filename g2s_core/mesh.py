@@ -90,13 +90,9 @@ def load_mesh(path: str | Path, config: MeshConfig | None = None) -> tuple[trime
     except Exception as exc:  # trimesh raises many exception types for bad files
         damage = describe_damage(path, raw) or (exc if isinstance(exc, MeshError) else None)  # MeshError: _files_beside
         unread = f"cannot read mesh ({type(exc).__name__}: {exc})"
-        if damage or path.suffix.lower() not in (".off", ".ply"):
+        if damage or path.suffix.lower() not in POLYGON_SUFFIXES:
             raise MeshError(f"{path}: {damage or unread}") from None
-        if path.suffix.lower() == ".off":  # pymeshlab (2025.7) reads an OFF face of 5 or more corners with wrong indices
-            vertices, polygons = off_polygons(raw)
-            loaded = trimesh.Trimesh(vertices=vertices, faces=trimesh.geometry.triangulate_quads(polygons), process=False)
-        else:
-            loaded = _read_polygons(path, unread)
+        loaded = _read_polygons(path, raw, unread)
     # trimesh reads a sparse accessor's data without its values, leaves a triangle fan out, reads no compressed mesh: silently wrong
     if path.suffix.lower() in (".gltf", ".glb") and _GLTF_UNREAD.search(raw) and (damage := describe_damage(path, raw)):
         raise MeshError(f"{path}: {damage}")
@@ -109,11 +105,20 @@ def load_mesh(path: str | Path, config: MeshConfig | None = None) -> tuple[trime
     return mesh, MeshInfo(path.name, hashlib.sha256(raw).hexdigest(), len(mesh.vertices), len(mesh.faces), cleaning)
 
 
-def _read_polygons(path: Path, unread: str) -> trimesh.Trimesh:
-    """A sound binary PLY file whose face list mixes triangles and quads, as Blender writes it, which trimesh cannot
-    read (it reads every row as long as the first: "PLY is unexpected length"), read by pymeshlab, which fans each
-    polygon from its first corner as trimesh fans an OBJ's and keeps every vertex in the file's order; ``unread``:
-    trimesh's failure, the message when pymeshlab fails too."""
+POLYGON_SUFFIXES = (".off", ".ply")
+"""Formats whose sound files trimesh may fail to read: an OFF face of 5 or more corners (trimesh 4.x on numpy 2 fans
+it from text values: ``TypeError ... string multiply ufunc``) and a binary PLY face list mixing triangles and quads,
+as Blender writes it (trimesh reads every row as long as the first: "PLY is unexpected length")."""
+
+
+def _read_polygons(path: Path, raw: bytes, unread: str) -> trimesh.Trimesh:
+    """A sound file of :data:`POLYGON_SUFFIXES` that trimesh could not read, its bytes ``raw``: an OFF file read by
+    :func:`~g2s_core.mesh_damage.off_polygons`, a PLY file by pymeshlab; each polygon fanned from its first corner as
+    trimesh fans an OBJ's, every vertex kept in the file's order; ``unread``: trimesh's failure, the message when
+    pymeshlab fails too."""
+    if path.suffix.lower() == ".off":  # pymeshlab 2025.7 numbers an OFF polygon's corners from 0 past 4 corners
+        vertices, polygons = off_polygons(raw)
+        return trimesh.Trimesh(vertices=vertices, faces=trimesh.geometry.triangulate_quads(polygons), process=False)
     import pymeshlab  # imported here: it takes a second to load and few files need it
 
     meshset = pymeshlab.MeshSet()
@@ -151,7 +156,7 @@ def _as_trimesh_reads_obj(text: bytes) -> bytes:
     return _absolute_indices(text) if faces_before and _RELATIVE_FACE.search(text, 0, last_vertex) else text
 
 
-_GLTF_UNREAD = re.compile(rb'"sparse"|"mode"\s*:\s*[^0-5\s]|"extensionsRequired"')
+_GLTF_UNREAD = re.compile(rb'"sparse"|"mode"\s*:\s*(?![0-5](?![0-9]))|"extensionsRequired"')
 """A glTF's sparse accessor, a primitive's mode other than 0-5 (a triangle fan, 6), or extensions it requires
 (compression: the data trimesh reads may be empty)."""
 

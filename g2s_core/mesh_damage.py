@@ -145,16 +145,16 @@ def _glb_damage(data: bytes, folder: Path) -> str | None:
 
 
 def _gltf_damage(document: object, folder: Path, binary: int | None) -> str | None:
-    """What is wrong with a glTF document: not an object, a buffer that cannot be read (a file missing beside the
-    glTF file or shorter than its ``byteLength``, a data URI that is not base64, a GLB without its binary chunk), or
-    an index to a buffer or buffer view the document lacks, its accessors (:func:`_accessor_damage`), then the way from
-    its scene to the vertices (:func:`_scene_damage`). ``binary``: a GLB's binary chunk's length."""
+    """What is wrong with a glTF document (``binary``: a GLB's binary chunk's length): not an object, an ``asset.version``
+    other than 2.x, a required extension of :data:`GLTF_COMPRESSED`, a buffer that cannot be read (a file missing beside
+    it or shorter than its ``byteLength``, a data URI not in base64, a GLB without its binary chunk), an index to a buffer
+    or view the document lacks, its accessors (:func:`_accessor_damage`), its scene's way to its vertices (:func:`_scene_damage`)."""
     if not isinstance(document, dict):
         return "expected a glTF JSON object at the top level"
-    if isinstance(version := (document.get("asset") or {}).get("version") if isinstance(document.get("asset"), dict) else None, str) \
-            and not version.startswith("2."):
+    asset, required = document.get("asset"), document.get("extensionsRequired")
+    if isinstance(version := asset.get("version") if isinstance(asset, dict) else None, str) and not version.startswith("2."):
         return f"asset.version is {version!r}; g2s reads glTF 2.0 (convert the file to glTF 2.0)"
-    if compressed := [name for name in document.get("extensionsRequired") or () if name in GLTF_COMPRESSED]:
+    if compressed := [name for name in (required if isinstance(required, list) else ()) if name in GLTF_COMPRESSED]:
         return f"extensionsRequired lists {compressed[0]}: the mesh is compressed, which g2s cannot read; export it without compression"
     for name in GLTF_LISTS:  # trimesh fails on another kind with a TypeError or AttributeError
         if not isinstance(items := document.get(name, []), list):
@@ -343,12 +343,8 @@ def _off_rows(data: bytes) -> tuple[int, int, Rows] | str:
 
 
 def off_polygons(data: bytes) -> tuple[list[list[float]], list[list[int]]]:
-    """A sound OFF file's vertices (x y z) and faces (vertex indices from 0, any number of corners each).
-
-    trimesh fans an OFF polygon of 5 or more corners from its text values, not integers, and fails (trimesh 4.x
-    on numpy 2: ``TypeError ... string multiply ufunc``); :func:`~g2s_core.mesh.load_mesh` reads such a file
-    with this when :func:`describe_damage` finds it sound.
-    """
+    """A sound OFF file's vertices (x y z) and faces (vertex indices from 0, any number of corners each), which
+    :func:`~g2s_core.mesh.load_mesh` reads with this when trimesh fails on a polygon of 5 or more corners."""
     vertices, faces, body = _off_rows(data)
     return ([[float(value) for value in values[:3]] for _, values in body[:vertices]],
             [[int(corner) for corner in values[1:1 + int(values[0])]] for _, values in body[vertices:vertices + faces]])

@@ -820,9 +820,10 @@ def ground_across_crack(
     beside it, as the agent's foot does: where walkable ground lies within ``reach`` along ``down``
     from both ``probe + side`` and ``probe - side``, for the first of ``sides`` where it does.
     Beyond a floor's edge ground lies on one side at most, and a hole wider than twice the side
-    stays a hole. The one crack rule of the walk test (:func:`walk_segments`) and of the
-    ``entry_exit`` selector's search for the floor's end (docs/entry_exit.md, "A ninth round of
-    piece kinds", causes 2 and 3).
+    stays a hole. The one crack rule of the walk test (:func:`walk_segments`), of the sampling
+    builder's ledge probes (``agent_fits``, with :func:`crack_sides`) and of the ``entry_exit``
+    selector's search for the floor's end (docs/entry_exit.md, "A ninth round of piece kinds",
+    causes 2 and 3).
 
     Args:
         caster: the level's ray caster.

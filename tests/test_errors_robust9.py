@@ -110,6 +110,7 @@ def gltf(modes=(4,), nodes=None) -> str:
     (gltf(modes=[6]), "meshes[0].primitives[0].mode is 6; expected one of 0-5 ("),  # "the mesh is empty"
     (gltf(modes=["4"]), "meshes[0].primitives[0].mode is '4'; expected one of 0-5 ("),
     (gltf(modes=[4, 6]), "meshes[0].primitives[1].mode is 6; expected one of 0-5 ("),  # read without the fan, silently
+    (gltf(modes=[4, 12]), "meshes[0].primitives[1].mode is 12; expected one of 0-5 ("),  # read without it, silently
 ])
 def test_a_gltf_node_or_primitive_of_another_kind_is_named(text, says, tmp_path):
     path = tmp_path / "level.gltf"
@@ -219,6 +220,18 @@ def test_a_gltf_g2s_cannot_read_says_why(change, says, tmp_path):
     with pytest.raises(MeshError) as caught:
         load_mesh(path)
     assert str(caught.value).startswith(f"{path}: {says}")
+
+
+@pytest.mark.parametrize("required", [5, "KHR_draco_mesh_compression"])
+def test_extensions_required_of_another_kind_are_read_as_trimesh_reads_them(required, tmp_path):
+    # an extensionsRequired that is not a list (not valid glTF, ignored by trimesh) was an internal error:
+    # "TypeError: 'int' object is not iterable" (exit 1)
+    document = json.loads(gltf())
+    document["extensionsRequired"] = required
+    path = tmp_path / "level.gltf"
+    path.write_text(json.dumps(document))
+    mesh, _ = load_mesh(path)
+    assert len(mesh.faces) == 2
 
 
 def test_an_output_folder_whose_path_is_too_long_is_refused(floor, tmp_path, capsys):

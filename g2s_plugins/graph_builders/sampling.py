@@ -303,11 +303,13 @@ def agent_fits(
         plain[plain] = around.plain_ground(points[idx[plain]], floor, on[plain])
         ok[idx[plain]] = True
         idx = idx[~plain]
+    def walkable(faces: np.ndarray) -> np.ndarray:
+        return caster.walkable_faces(faces, agent.max_slope_deg)
+
     for begin in range(0, len(idx), MAX_LEDGE_BATCH):
         rows = idx[begin : begin + MAX_LEDGE_BATCH]
         probe = (points[rows][:, None, :] + clearance * COMPASS[None, :, :]).reshape(-1, 3)
         down = caster.first_hits(probe + reach * UP, -UP)
-        walkable = lambda faces: caster.walkable_faces(faces, agent.max_slope_deg)  # noqa: E731
         ground = ((down.distance <= 2.0 * reach) & walkable(down.face)).reshape(len(rows), len(COMPASS))
         distance = np.where(ground, down.distance.reshape(ground.shape), 0.0)
         origins = (probe + reach * UP).reshape(len(rows), len(COMPASS), 3)
