@@ -124,7 +124,7 @@ def restored(
     exact = traffic.is_exact(arrays, sources, traffic.EXACT_NODES)
     target = min_rho if exact else min_rho + MARGIN
     if not rho < target:
-        if not exact:
+        if not exact and not math.isnan(rho):  # NaN: every node's flow alike, nothing to confirm
             confirm(heat, shown, rho, min_rho, context, arrays, sources, ties)
         return None
     removed = np.array(sorted(node for node in forest if node not in simplified), dtype=np.int64)
@@ -162,10 +162,12 @@ def confirm(
         return
     estimate = against_other / math.sqrt(reliability) if reliability > 0 else math.nan
     if not estimate >= min_rho:
+        said = (f"about {estimate:.3f} against the exact walking flow (corrected for the second sample's errors), "
+                f"under min_heat_rho {min_rho:g}" if reliability > 0 else "the samples disagree, so nothing confirms "
+                f"min_heat_rho {min_rho:g} (more heat_sources make them agree)")
         context.warn(f"the heat map ranks the polygons with Spearman rho {rho:.3f} against the walking flow of the "
                      f"sample of {sources} sources it is drawn from, but {against_other:.3f} against another sample "
-                     f"of {sources}, whose own rho with the first is {reliability:.3f}: about {estimate:.3f} against "
-                     f"the exact walking flow (corrected for the second sample's errors), under min_heat_rho {min_rho:g}")
+                     f"of {sources}, whose own rho with the first is {reliability:.3f}: {said}")
 
 
 def keeping(predicate: Predicate, kept: set[Hashable]) -> Predicate:
