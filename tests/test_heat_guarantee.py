@@ -285,4 +285,3 @@ def test_the_guarantee_measures_the_flow_of_its_heat_settings(monkeypatch):
     params = CollapseParams(min_heat_rho=0.5, heat_sources=64, heat_ties="split")
     assert heat_guarantee.guaranteed(lambda: None, params, context, forest, structure) is None
     assert asked == [((64,), {"ties": "split"}), ((64,), {"exact_up_to": traffic.EXACT_NODES, "ties": "split"})]
-
