@@ -1090,6 +1090,14 @@ def detect_openings(
         heading = e.outward.copy()
         heading[1] = 0.0
         heading = _unit(heading) if np.linalg.norm(heading) > 1e-6 else e.outward
+        # Square to the opening in plan: the horizontal part of ``outward`` (the edge's direction crossed with the
+        # floor's normal) leans along the edge where the floor slopes both along and across it, and the outer
+        # extent is measured along the heading, so a lean of a fraction of a degree over a piece tens of metres
+        # long moves the gap by decimetres (the sample terrain's west border: 0.44 degrees, 0.28 m).
+        plan = (b - a) * np.array([1.0, 0.0, 1.0])
+        if np.linalg.norm(plan) > 1e-6 and heading[1] == 0.0:
+            square = _unit(np.cross(plan, UP))
+            heading = square if np.dot(square, heading) >= 0.0 else -square
         mid = (a + b) / 2.0
         gap = max(0.0, extent_gap(corners_below(corners, mid[1] + s.height), mid, heading, frame))
         if max_gap is not None and gap > max_gap:
