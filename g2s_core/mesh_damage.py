@@ -50,9 +50,12 @@ file that requires them need not hold)."""
 GLTF_LISTS = ("scenes", "nodes", "meshes", "accessors", "bufferViews", "buffers")
 """The glTF document's lists of objects that lead from its scene to the vertices' bytes."""
 
-NODE_KEYS = {"mesh": "the index of one of the file's {meshes}", "matrix": "a list of 16 finite numbers",
-             "translation": "a list of 3 finite numbers", "rotation": "a list of 4 finite numbers (a quaternion)",
-             "scale": "a list of 3 finite numbers", "children": "a list of indices of the file's {nodes}"}
+NODE_TRANSFORM_SIZES = {"matrix": 16, "translation": 3, "rotation": 4, "scale": 3}
+"""How many numbers each of a glTF node's transform keys holds."""
+
+NODE_KEYS = {"mesh": "the index of one of the file's {meshes}", "children": "a list of indices of the file's {nodes}",
+             **{key: f"a list of {size} finite numbers" + (" (a quaternion)" if key == "rotation" else "")
+                for key, size in NODE_TRANSFORM_SIZES.items()}}
 """What each of a glTF node's keys that trimesh reads must be (trimesh fails on another kind in numpy's words, or
 leaves a mesh it does not find out)."""
 
@@ -259,15 +262,14 @@ def _scene_damage(document: dict) -> str | None:
 def _node_damage(document: dict, count: dict[str, int]) -> str | None:
     """The first of a glTF document's nodes whose mesh, children or transform trimesh would fail on (in numpy's
     words) or read as no mesh; ``count``: the length of each of :data:`GLTF_LISTS`."""
-    sizes = {"matrix": 16, "translation": 3, "rotation": 4, "scale": 3}
     for number, node in _listed(document, "nodes"):
         for key, value in node.items():
             if key == "mesh":
                 sound = _is_index(value, count["meshes"])
             elif key == "children":
                 sound = isinstance(value, list) and all(_is_index(item, count["nodes"]) for item in value)
-            elif key in sizes:
-                sound = isinstance(value, list) and len(value) == sizes[key] and all(
+            elif key in NODE_TRANSFORM_SIZES:
+                sound = isinstance(value, list) and len(value) == NODE_TRANSFORM_SIZES[key] and all(
                     type(item) in (int, float) and math.isfinite(item) for item in value)
             else:
                 continue

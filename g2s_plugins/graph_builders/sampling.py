@@ -303,6 +303,7 @@ def agent_fits(
         plain[plain] = around.plain_ground(points[idx[plain]], floor, on[plain])
         ok[idx[plain]] = True
         idx = idx[~plain]
+
     def walkable(faces: np.ndarray) -> np.ndarray:
         return caster.walkable_faces(faces, agent.max_slope_deg)
 
@@ -325,7 +326,7 @@ def agent_fits(
         # Head room over the landing point, from the probe's own origin (see walk_segments).
         tested = ground & kept[:, None]
         ground[tested] = clear_above(caster, origins[tested], agent.height - distance[tested])
-        ok[rows] = kept & ground.all(axis=1)
+        ok[rows] = ground.all(axis=1)  # a probe that put its point out kept no ground
         why[rows[~ok[rows]]] = REJECTED_BY.index("ledge")
     return ok
 
