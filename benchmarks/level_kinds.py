@@ -1,4 +1,4 @@
-"""Level kinds of the fifth to eleventh held-out rounds (issue 9): generators no preset setting was made on.
+"""Level kinds of the fifth to twelfth held-out rounds (issue 9): generators no preset setting was made on.
 
 Fifth round: six kinds, each about 1,000 navmesh polygons with the presets' agent (radius 0.5 m, height 2 m, climb 0.4 m):
 ``subway`` (platforms, track pits 1.2 m lower, stairs up to two concourses), ``archipelago`` (islands joined by
@@ -65,6 +65,16 @@ in plots between paths, mausoleums, a chapel over a crypt), ``quarry`` (an open 
 a switchback haul road, berms, machines) and ``stairhall`` (landings 3-12 m up over a hall's floor joined only by
 flights and bridges). A round solid standing on the ground needs the ground to stop under it too
 (:func:`_round_ground`), and a stair that ends on a roof needs a landing: the last step alone joined no tank roof.
+
+Twelfth round: six more kinds, 557-829 navmesh polygons with that agent (seeds 0-2): ``hotel`` (six storeys of
+rooms off corridors, a stair core with lift shafts open from the ground to the roof, a fire stair, a lobby),
+``theme_park`` (paths looping round fenced rides, queue mazes of folded lanes, a turnstile gate), ``aqueduct`` (a
+lower town under a bridge street 8 m up on an arcade, stairs up its piers, upper towns on terraces), ``warehouse``
+(racking aisles on a dock floor 1.2 m over the yard, a mezzanine, dock doors, a ramp), ``golf`` (rolling lawns cut by
+a creek crossed only by footbridges, ponds, tree clumps) and ``scaffold`` (a concrete frame's slabs, railed, each
+joined through gaps to a scaffold deck round the building, a stair tower). Closed solids stacked on one another
+leave a floor between them: a pier under a bridge's deck now rises to the deck's top (a first draft had floor on
+every pier's top, 7.4 m² each, under the deck), and :func:`_ridged` makes each solid no one enters one convex body.
 
 Run: ``.venv/bin/python benchmarks/level_kinds.py OUT_DIR [--kinds subway forest] [--seeds 0 1 2]`` writes
 ``OUT_DIR/<kind>_s<seed>.obj``, the files ``benchmarks/analysis_quality.py --levels`` takes (which also takes the
@@ -2092,14 +2102,18 @@ def spaceship(seed: int) -> trimesh.Trimesh:
     return s.mesh()
 
 
-def _terrain(s: _Solids, xs: np.ndarray, zs: np.ndarray, heights: np.ndarray) -> None:
+def _terrain(s: _Solids, xs: np.ndarray, zs: np.ndarray, heights: np.ndarray, keep: np.ndarray | None = None) -> None:
     """Ground over the grid ``xs`` (n,) x ``zs`` (m,) with the heights (n, m), metres: two triangles a cell, and a
-    skirt 0.5 m under it facing down, so the ground is a closed sheet whose top Recast reads as floor."""
+    skirt 0.5 m under it facing down, so the ground is a closed sheet whose top Recast reads as floor. With ``keep``
+    (n - 1, m - 1) of bools, only the cells it marks (the rest hold no ground: water, a hole)."""
     gx, gz = np.meshgrid(xs, zs, indexing="ij")
     vertices = np.stack([gx.ravel(), np.asarray(heights, dtype=np.float64).ravel(), gz.ravel()], axis=1)
     index = np.arange(len(xs) * len(zs)).reshape(len(xs), len(zs))
     a, b, c, d = index[:-1, :-1].ravel(), index[1:, :-1].ravel(), index[1:, 1:].ravel(), index[:-1, 1:].ravel()
-    ground = trimesh.Trimesh(vertices, np.concatenate([np.stack([a, c, b], 1), np.stack([a, d, c], 1)]), process=False)
+    faces = np.concatenate([np.stack([a, c, b], 1), np.stack([a, d, c], 1)])
+    if keep is not None:
+        faces = faces[np.tile(np.asarray(keep, dtype=bool).ravel(), 2)]
+    ground = trimesh.Trimesh(vertices, faces, process=False)
     skirt = ground.copy()
     skirt.vertices[:, 1] -= 0.5
     skirt.invert()
@@ -3488,6 +3502,528 @@ def stairhall(seed: int) -> trimesh.Trimesh:
     return s.mesh()
 
 
+def _ridged(s: _Solids, x0: float, x1: float, z0: float, z1: float, y0: float, y1: float) -> tuple[float, float, float, float]:
+    """A solid one does not enter over [x0, x1] x [z0, z1]: walls from ``y0`` to ``y1`` and a roof ridged along x at 50
+    degrees, one convex body, so it has no top face for Recast to read as floor. Returns its plan, a hole for
+    :meth:`_Solids.ground` (the ground inside a closed solid with head room over it would be floor)."""
+    ridge = y1 + (z1 - z0) / 2 * math.tan(math.radians(50.0))
+    s.hull(np.array([[x, y, z] for x in (x0, x1) for y in (y0, y1) for z in (z0, z1)]
+                    + [[x, ridge, (z0 + z1) / 2] for x in (x0, x1)]))
+    return x0, x1, z0, z1
+
+
+def _split(a: float, b: float, width: float) -> np.ndarray:
+    """The cuts (k + 1,) of [a, b] into k equal parts as near ``width`` m wide as whole parts allow (k >= 1)."""
+    return np.linspace(a, b, max(1, round((b - a) / width)) + 1)
+
+
+def hotel(seed: int) -> trimesh.Trimesh:
+    """A hotel of six storeys 3.2 m apart on a 54-62 x 19-21 m plate under a roof at 50 degrees (:func:`_lid`): on the
+    five upper storeys a corridor 2.2 m wide along x between two rows of guest rooms (3.6-4.6 m wide, a 1.6 m door
+    each, a bathroom pod beside the door, 1.8 m high: too low inside to stand); a stair core in the middle (a
+    switchback well, :func:`_switchback`, opening on the corridor, and across the corridor two lift shafts 2.4 m
+    square, walled, open from the ground to the roof: no floor in them on any storey) and a fire stair at the
+    corridor's east end; closets 1.8 m high (no floor in them or on them) fill the pockets behind the fire stair,
+    the lifts and the core's well. The ground storey is a lobby from the west wall to 8-14 m east of the core (columns, a reception counter,
+    sofas, a restaurant behind a wall with a 3 m opening at the west end), staff rooms as the guest rooms east of it,
+    and a 3 m entrance in the south wall onto a forecourt 12 m deep. Every trip between storeys takes the core or
+    the fire stair.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    size_x, size_z, storey, storeys = rng.uniform(54.0, 62.0), rng.uniform(19.0, 21.0), 3.2, 6
+    cz0, cz1 = size_z / 2 - 1.1, size_z / 2 + 1.1
+    length = _well_length(storey)
+    core_x = round(rng.uniform(0.4, 0.5) * size_x, 1)
+    fire_x = size_x - 4.6
+    wells = [(core_x, cz1), (fire_x, cz0)]
+    open_wells = [(x, x + 4.0, z + 2.0, z + length) for x, z in wells]
+    shafts = [(core_x + i * 2.6, core_x + i * 2.6 + 2.4, cz0 - 2.6, cz0 - 0.2) for i in range(2)]
+    lobby_end = round(core_x + rng.uniform(8.0, 14.0), 1)
+    rest = (3.0, 14.0)  # the restaurant at the west end of the lobby
+    entrance = (rest[1] + lobby_end) / 2
+    s.ground(-5.0, size_x + 5.0, -12.0, size_z + 3.0, 0.0, shafts)
+    for y in np.arange(storeys - 1) * storey:
+        for x, z in wells:
+            _switchback(s, x, z, float(y), storey)
+    for k in range(storeys):
+        y = k * storey
+        top = y + storey - 0.3
+        if k:
+            s.slab(0.0, size_x, 0.0, size_z, y, [*open_wells, *shafts])
+        s.wall((0.0, 0.0), (size_x, 0.0), y, top, [(entrance - 1.5, 3.0)] if k == 0 else [], thickness=0.3)
+        s.wall((0.0, size_z), (size_x, size_z), y, top, thickness=0.3)
+        for x in (0.0, size_x):
+            s.wall((x, 0.0), (x, size_z), y, top, thickness=0.3)
+        for x0, x1, z0, z1 in shafts:  # closed on every storey
+            for z in (z0, z1):
+                s.wall((x0 - 0.1, z), (x1 + 0.1, z), y, top)
+            for x in (x0, x1):
+                s.wall((x, z0), (x, z1), y, top)
+        s.wall((core_x, cz1), (core_x, cz1 + length), y, top)  # the core's well, open on the corridor
+        s.wall((core_x + 4.0, cz1), (core_x + 4.0, cz1 + length), y, top)
+        s.wall((core_x, cz1 + length), (core_x + 4.0, cz1 + length), y, top)
+        s.wall((fire_x, cz1), (fire_x, cz0 + length), y, top)  # the fire stair's well, the corridor's east end
+        s.wall((fire_x, cz0 + length), (size_x, cz0 + length), y, top)
+        pockets = [(fire_x + 0.1, size_x - 0.15, cz0 + length + 0.1, size_z - 0.15)]  # closets behind the fire stair
+        if k:  # and behind the lifts and the core's well, between two rooms
+            pockets += [(shafts[0][0] - 0.1, shafts[1][1] + 0.1, 0.15, shafts[0][2] - 0.1),
+                        (core_x + 0.1, core_x + 3.9, cz1 + length + 0.1, size_z - 0.15)]
+        for x0, x1, z0, z1 in pockets:  # 1.8 m high: no floor in them (the slab above is 1.1 m over their tops)
+            s.box(x0, x1, y, y + 1.8, z0, z1)
+        start = lobby_end if k == 0 else 0.15
+        rows = (  # (z of the corridor wall, z of the outer wall, x ranges of rooms)
+            (cz1, size_z - 0.15, [(start, core_x - 0.1), (max(start, core_x + 4.1), fire_x)]),
+            (cz0, 0.15, [(start, shafts[0][0] - 0.2), (max(start, shafts[1][1] + 0.2), size_x - 0.15)]),
+        )
+        for wall_z, outer_z, ranges in rows:
+            side = 1.0 if outer_z > wall_z else -1.0
+            doors = []
+            for a, b in ranges:
+                if b - a < 3.0:
+                    continue
+                cuts = _split(a, b, rng.uniform(3.6, 4.6))
+                for x0, x1 in pairwise(cuts):
+                    doors.append((x0 + 0.3, 1.6))
+                    pod = sorted((wall_z + side * 0.1, wall_z + side * 2.3))
+                    s.box(x0 + 2.1, x1 - 0.1, y, y + 1.8, pod[0], pod[1])
+                for x in cuts:
+                    s.wall((x, wall_z), (x, outer_z), y, top, thickness=0.15)
+            end = fire_x if side > 0 else size_x
+            if k == 0:  # the lobby's side of the corridor is open
+                doors.append((0.0, lobby_end))
+            if side > 0:
+                doors.append((core_x, 4.0))
+            s.wall((0.0, wall_z), (end, wall_z), y, top, sorted(_merge(doors)), thickness=0.15)
+    s.wall((rest[1], 0.0), (rest[1], size_z), 0.0, storey - 0.3, [(size_z / 2 - 1.5, 3.0)], thickness=0.2)
+    for x in np.arange(rest[0], rest[1] - 1.5, 2.6):
+        for z in np.arange(1.5, size_z - 1.5, 2.6):
+            s.box(x, x + 1.0, 0.0, 0.75, z, z + 1.0)
+    for x in np.arange(rest[1] + 5.0, lobby_end - 2.0, 7.0):  # columns
+        for z in (cz0 - 3.0, cz1 + 3.0):
+            if _clear(x, x + 0.5, z, z + 0.5, [(core_x - 1.0, core_x + 6.0, 0.0, size_z)]):
+                s.box(x, x + 0.5, 0.0, storey - 0.3, z, z + 0.5)
+    desk = max(rest[1] + 2.0, core_x - 8.0)
+    s.box(desk, desk + 6.0, 0.0, 1.1, cz1 + 2.0, cz1 + 2.8)  # the reception counter
+    for _ in range(int(rng.integers(5, 9))):  # sofas
+        x, z = rng.uniform(rest[1] + 2.0, lobby_end - 3.0), rng.uniform(1.5, size_z - 2.5)
+        if _clear(x, x + 2.0, z, z + 0.9, [(desk - 1.0, desk + 7.0, cz1 + 1.0, cz1 + 4.0),
+                                           (core_x - 1.0, core_x + 6.0, 0.0, size_z),
+                                           (entrance - 3.0, entrance + 3.0, 0.0, 4.0)]):
+            s.box(x, x + 2.0, 0.0, 0.8, z, z + 0.9)
+    _lid(s, 0.0, size_x, 0.0, size_z, storeys * storey - 0.3)
+    return s.mesh()
+
+
+def _merge(doors: list[tuple[float, float]]) -> list[tuple[float, float]]:
+    """Openings (start, width) along a wall, overlapping ones joined into one."""
+    merged: list[list[float]] = []
+    for a, w in sorted(doors):
+        if merged and a <= merged[-1][1]:
+            merged[-1][1] = max(merged[-1][1], a + w)
+        else:
+            merged.append([a, a + w])
+    return [(a, b - a) for a, b in merged]
+
+
+def theme_park(seed: int) -> trimesh.Trimesh:
+    """A theme park 170 x 115 m behind a fence 2.5 m high, entered from a plaza 15 m deep through a gate of
+    turnstiles (ten gaps 1.6 m wide). Its ground is a 4 x 3 grid of plots (37.5 x 33.3 m) between paths about 10
+    m wide that loop round every plot; each plot holds a ride (three in five), a food court or a garden. A ride is
+    a fenced plot (1.2 m, no way in; the ground stops inside and a tent or tower no one climbs stands there, 16-26 x
+    10-14 m) with a queue maze in front of it (south of it in the two rows nearer the gate, north in the far row): lanes 1.7-1.8 m wide between
+    rails 1 m high, a turn at alternate ends, entered at one corner and ending at the ride's fence (a dead end
+    folded 4-5 times). A food court holds tables and kiosks (ridged roofs, no floor inside); a garden hedges 0.8 m
+    wide and 1.1 m high in rows with gaps, round a fountain no one climbs.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    size_x, size_z, gate_z = 170.0, 130.0, 15.0
+    cols, rows = 4, 3
+    cell_x, cell_z = (size_x - 20.0) / cols, (size_z - gate_z - 15.0) / rows
+    holes: list[tuple[float, float, float, float]] = []
+    for i in range(cols):
+        for j in range(rows):
+            x0, z0 = 10.0 + i * cell_x + 5.0, gate_z + 10.0 + j * cell_z + 5.0
+            x1, z1 = x0 + cell_x - 10.0, z0 + cell_z - 10.0
+            what = rng.choice(["ride", "ride", "ride", "food", "garden"])
+            if what == "ride":
+                w, d, qd = rng.uniform(16.0, x1 - x0 - 1.0), rng.uniform(10.0, 14.0), rng.uniform(7.0, 9.0)
+                rx0 = rng.uniform(x0, x1 - w)
+                side = -1.0 if j < rows / 2 else 1.0  # the queue south of the ride, or north in the far row
+                if side < 0:
+                    far, rz0 = z0, z0 + qd
+                else:
+                    rz0 = z1 - qd - d
+                    far = z1
+                rz1 = rz0 + d
+                near = rz0 if side < 0 else rz1
+                holes.append((rx0, rx0 + w, rz0, rz1))
+                for a, b in (((rx0, rz0), (rx0 + w, rz0)), ((rx0, rz1), (rx0 + w, rz1))):
+                    s.wall(a, b, -0.5, 1.2, thickness=0.1)
+                for x in (rx0, rx0 + w):
+                    s.wall((x, rz0), (x, rz1), -0.5, 1.2, thickness=0.1)
+                if rng.random() < 0.5:
+                    _ridged(s, rx0 + 1.0, rx0 + w - 1.0, rz0 + 1.0, rz1 - 1.0, -0.5, 3.0)
+                else:  # a drop tower: a pyramid no one climbs
+                    c = np.array([rx0 + w / 2, (rz0 + rz1) / 2])
+                    s.hull(np.array([[c[0] + dx, -0.5, c[1] + dz] for dx in (-4.0, 4.0) for dz in (-4.0, 4.0)]
+                                    + [[c[0], 30.0, c[1]]]))
+                qw = rng.uniform(10.0, min(w, 16.0))
+                qx0 = rng.uniform(rx0, rx0 + w - qw)
+                qx1 = qx0 + qw
+                lanes = int(qd // 1.75)
+                pitch = qd / lanes
+                s.wall((qx0, far), (qx1, far), 0.0, 1.0, [(0.0, 1.6)], thickness=0.1)  # entered at the west corner
+                for k in range(lanes - 1):
+                    z = far - side * (k + 1) * pitch
+                    s.wall((qx0, z), (qx1, z), 0.0, 1.0, [(qw - 1.6, 1.6)] if k % 2 == 0 else [(0.0, 1.6)], thickness=0.1)
+                for x in (qx0, qx1):
+                    s.wall((x, min(far, near)), (x, max(far, near)), 0.0, 1.0, thickness=0.1)
+            elif what == "food":
+                kiosks = [(x0 + rng.uniform(0.0, x1 - x0 - 4.0), z0 + rng.uniform(0.0, z1 - z0 - 3.0)) for _ in range(3)]
+                plans = [(x, x + 4.0, z, z + 3.0) for x, z in kiosks]
+                for x, z in kiosks:
+                    if _clear(x, x + 4.0, z, z + 3.0, holes):
+                        holes.append(_ridged(s, x, x + 4.0, z, z + 3.0, -0.5, 2.8))
+                for x in np.arange(x0 + 1.0, x1 - 1.2, 3.0):
+                    for z in np.arange(z0 + 1.0, z1 - 1.2, 3.0):
+                        if _clear(x - 1.0, x + 2.2, z - 1.0, z + 2.2, plans):
+                            s.box(x, x + 1.2, 0.0, 0.75, z, z + 1.2)
+            else:
+                c = np.array([(x0 + x1) / 2, (z0 + z1) / 2])
+                s.hull(np.array([[c[0] + dx, 0.0, c[1] + dz] for dx in (-1.5, 1.5) for dz in (-1.5, 1.5)]
+                                + [[c[0], 4.0, c[1]]]))
+                for z in np.arange(z0 + 2.0, z1 - 1.0, 4.5):
+                    gaps = sorted(rng.uniform(0.0, x1 - x0 - 2.0, size=2))
+                    if abs(z - c[1]) > 2.5:
+                        s.wall((x0, z), (x1, z), 0.0, 1.1, _merge([(g, 2.0) for g in gaps]), thickness=0.8)
+    s.ground(0.0, size_x, 0.0, size_z, 0.0, holes)
+    s.wall((0.0, gate_z), (size_x, gate_z), 0.0, 2.5, [(size_x / 2 - 10.0, 20.0)], thickness=0.3)
+    for k in range(11):  # turnstiles: 10 gaps of 1.6 m between posts 0.4 m wide, walls either side
+        x = size_x / 2 - 10.0 + k * 2.0
+        s.box(x, x + 0.4, 0.0, 1.0, gate_z - 1.5, gate_z + 1.5)
+    for a, b in (((0.0, size_z), (size_x, size_z)), ((0.0, gate_z), (0.0, size_z)), ((size_x, gate_z), (size_x, size_z))):
+        s.wall(a, b, 0.0, 2.5, thickness=0.3)
+    return s.mesh()
+
+
+def aqueduct(seed: int) -> trimesh.Trimesh:
+    """A bridge town: a lower town 140 x 120 m in a valley between two upper towns on terraces 8 m up (40 m wide,
+    cliffs between), joined across the valley by a bridge along x carrying a street 5.5 m wide at 8 m (parapets 1.1
+    m) on an arcade: piers 2.4 m thick every 9-11 m, arches 5 m high between them, through which the lower town's
+    streets along z pass. The lower town's houses (5-8 m wide, ridged, not entered) stand in blocks between streets 5-6 m
+    wide: streets along z through every second or third arch, a lane along each side of the arcade (market stalls 2 x 1.5 m, 0.9 m high, in it), a street
+    along x near each end; nearly one house gap in two is an alley 1.6-2 m wide. Two or three piers carry a switchback
+    stair (:func:`_switchback`, a well 4 m wide beside the arcade) from the lower town to the bridge's street, and a
+    ramp street 4 m wide climbs the west cliff at about 1 in 6 from the lower town to the west terrace. The upper
+    towns are a street on the bridge's line between rows of houses, a back lane 5 m wide behind each row and a
+    second row beyond it, a street along the cliff's edge, and open ground.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    west, east, size_z, high = 30.0, 170.0, 120.0, 8.0
+    zb = rng.uniform(48.0, 56.0)
+    deck = (zb - 2.75, zb + 2.75)
+    pitch = rng.uniform(9.0, 11.0)
+    piers = list(np.arange(west + pitch, east - 3.0, pitch))
+    arches = [(a + 1.2, b - 1.2) for a, b in pairwise([west - 1.2, *piers, east + 1.2])]
+    holes = [(p - 1.2, p + 1.2, *deck) for p in piers]
+    for p in piers:  # up to the deck's top: a pier's top under the deck would be floor with the deck as its ceiling
+        s.box(p - 1.2, p + 1.2, -0.5, high, *deck)
+    s.box(west, east, 5.0, high, *deck)
+    stairs = sorted(rng.choice(range(1, len(piers) - 1), size=int(rng.integers(2, 4)), replace=False))
+    length = _well_length(high)
+    gaps = []
+    kept: list[tuple[float, float, float, float]] = []  # plans clear of houses
+    for k in stairs:
+        x0 = piers[k] - 2.0
+        _switchback(s, x0, deck[1], 0.0, high)
+        s.box(x0, x0 + 4.0, high - 0.3, high, deck[1], deck[1] + 2.0)
+        kept.append((x0 - 0.5, x0 + 4.5, deck[1], deck[1] + length + 0.5))  # no houses in the well
+        gaps.append((x0 - west, 4.0))
+    s.wall((west, deck[1] - 0.15), (east, deck[1] - 0.15), high, high + 1.1, gaps, thickness=0.3)
+    s.wall((west, deck[0] + 0.15), (east, deck[0] + 0.15), high, high + 1.1, thickness=0.3)
+    ramp_z = (size_z - 2.0, deck[1] + 6.0)
+    s.ramp(np.array([west + 2.0, ramp_z[0]]), np.array([west + 2.0, ramp_z[1] + 4.0]), 4.0, 0.0, high)
+    s.box(west, west + 4.0, high - 0.3, high, ramp_z[1], ramp_z[1] + 4.0)  # its landing against the terrace
+    kept.append((west, west + 4.5, ramp_z[1], size_z))
+    # the lower town: streets along z through some arches, lanes beside the arcade, streets along x near the ends
+    through = [arches[i] for i in range(int(rng.integers(0, 2)), len(arches), int(rng.integers(2, 4)))]
+    streets_x = [((a + b) / 2 - 2.75, (a + b) / 2 + 2.75) for a, b in through]
+    bands = [(6.0, deck[0] - 5.5), (deck[1] + 5.5, size_z - 6.0)]
+    edges = [west + 0.5, *sum(streets_x, ()), east - 0.5]
+    for za, zb_ in bands:
+        for xa, xb in zip(edges[0::2], edges[1::2]):
+            if xb - xa < 5.0:
+                continue
+            parts = list(pairwise(_split(za, zb_, 17.0)))  # blocks about 12 m deep, streets 5 m wide between
+            for i, (pa, pb) in enumerate(parts):
+                za_, zb2 = pa + (2.5 if i else 0.0), pb - (2.5 if i < len(parts) - 1 else 0.0)
+                for x0, x1 in pairwise(_split(xa, xb, rng.uniform(5.0, 8.0))):
+                    gap = rng.uniform(1.6, 2.0) if rng.random() < 0.45 else 0.0
+                    if _clear(x0, x1 - gap, za_, zb2, holes + kept):
+                        holes.append(_ridged(s, x0, x1 - gap, za_, zb2, -0.5, rng.uniform(5.0, 9.0)))
+    for _ in range(int(rng.integers(16, 26))):  # market stalls in the lanes beside the arcade, clear of the arches' middles
+        x, z = rng.uniform(west + 2.0, east - 4.0), rng.choice([deck[0] - rng.uniform(2.0, 4.0), deck[1] + rng.uniform(0.5, 2.5)])
+        if _clear(x - 1.0, x + 3.0, z - 0.5, z + 2.0, kept + [(a + 1.0, b - 1.0, 0.0, size_z) for a, b in through]):
+            s.box(x, x + 2.0, 0.0, 0.9, z, z + 1.5)
+    s.ground(west, east, 0.0, size_z, 0.0, holes)
+    # the upper towns: a street on the bridge's line, a row of houses either side, an open square beyond
+    for t0, t1, h0, h1 in ((west - 40.0, west, 1.0, 6.0), (east, east + 40.0, 6.0, 1.0)):  # a street 5 m wide on the cliff
+        houses = []
+        for z0, z1 in ((deck[1] + 0.25, deck[1] + 10.0), (deck[1] + 15.0, deck[1] + 25.0), (deck[0] - 10.0, deck[0] - 0.25),
+                       (deck[0] - 25.0, deck[0] - 15.0)):
+            for x0, x1 in pairwise(_split(t0 + h0, t1 - h1, rng.uniform(6.0, 9.0))):
+                gap = rng.uniform(1.6, 2.0) if rng.random() < 0.45 else 0.0
+                houses.append(_ridged(s, x0, x1 - gap, z0, z1, high - 0.5, high + rng.uniform(5.0, 8.0)))
+        s.ground(t0, t1, 0.0, size_z, high, houses, thickness=high + 0.5)
+    return s.mesh()
+
+
+def warehouse(seed: int) -> trimesh.Trimesh:
+    """A warehouse 110-120 x 58-64 m whose floor is a dock 1.2 m over its yard, under a roof 11 m up (:func:`_lid`).
+    North of a staging strip 16 m deep along the dock wall, racking 9.8 m high (to 1 m under the roof; the floor
+    stops under it) in double rows 2.4 m deep, single rows along the walls, with aisles 3-3.4 m wide along z and two
+    cross aisles 4 m wide; in the north-west corner a mezzanine 4.2 m up (18-24 x 14 m, posts on a 5 m grid, rails,
+    low shelving, one straight flight) over open floor; pallet stacks 1.5 m high, at least 1.2 m apart, on the staging strip. The south
+    wall has 8-10 dock doors 3.5 m wide: the eastern two open on an apron at dock height with a ramp (1 in 10) down
+    to the yard, the rest on the 1.2 m drop, half of them with a trailer backed up (ridged, floating on no
+    wheels), and a row of parked trailers across the yard. A personnel door in the west wall with steps down to the yard. The yard runs 30 m south of the dock
+    wall and 6-10 m round the other sides.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    size_x, size_z, dock, roof = rng.uniform(110.0, 120.0), rng.uniform(58.0, 64.0), 1.2, 11.0
+    s.ground(-10.0, size_x + 12.0, -30.0, size_z + 6.0, 0.0, [(0.0, size_x, 0.0, size_z)])
+    racks: list[tuple[float, float, float, float]] = []
+    mez = (0.3, rng.uniform(18.0, 24.0), size_z - 14.3, size_z - 0.3)
+    aisle = rng.uniform(3.0, 3.4)
+    cross = np.array([0.33, 0.67]) * (size_z - 16.0) + 16.0 + rng.uniform(-3.0, 3.0, size=2)
+    rows, x, depth = [], mez[1] + 3.0, 1.2  # the first row stands alone, and so does the last, on the east wall
+    while x + depth + aisle + 1.2 < size_x - 0.3:
+        rows.append((x, depth))
+        x, depth = x + depth + aisle, 2.4
+    for x, depth in [*rows, (size_x - 1.5, 1.2)]:
+        racks += [(x, x + depth, z0 + 2.0, z1 - 2.0) for z0, z1 in pairwise([14.0, *cross, size_z + 1.7])]
+    for x0, x1, z0, z1 in racks:
+        s.box(x0, x1, 0.0, roof - 1.0, z0, z1)
+    s.ground(0.0, size_x, 0.0, size_z, dock, racks, thickness=dock + 0.5)
+    for a, b in (((0.0, size_z), (size_x, size_z)), ((size_x, 0.0), (size_x, size_z))):
+        s.wall(a, b, dock, roof, thickness=0.3)
+    s.wall((0.0, 0.0), (0.0, size_z), dock, roof, [(8.0, 1.6)], thickness=0.3)
+    steps = 7
+    s.stairs(np.array([-steps * 0.28, 8.8]), np.array([1.0, 0.0]), 1.6, 0.0, dock, dock / steps, 0.28)
+    doors = list(_split(6.0, size_x - 6.0, rng.uniform(8.5, 10.0)))
+    doors = [(a + b) / 2 for a, b in pairwise(doors)]
+    s.wall((0.0, 0.0), (size_x, 0.0), dock, roof, [(x - 1.75, 3.5) for x in doors], thickness=0.3)
+    apron = (doors[-2] - 3.0, doors[-1] + 3.0)
+    s.box(apron[0], apron[1], -0.5, dock, -4.0, 0.0)
+    s.ramp(np.array([apron[1], -2.0]), np.array([apron[1] + 12.0, -2.0]), 3.0, dock, 0.0)
+    for x in doors[:-2]:
+        if rng.random() < 0.5:  # a trailer backed up to the door
+            ridge = 3.6 + 1.25 * math.tan(math.radians(50.0))
+            s.hull(np.array([[xx, y, z] for xx in (x - 1.25, x + 1.25) for y in (1.0, 3.6) for z in (-13.0, -0.4)]
+                            + [[x, ridge, z] for z in (-13.0, -0.4)]))
+    for x in np.arange(rng.uniform(0.0, 3.0), size_x - 3.0, rng.uniform(4.0, 5.0)):  # trailers parked across the yard
+        if rng.random() < 0.7:
+            ridge = 3.6 + 1.25 * math.tan(math.radians(50.0))
+            s.hull(np.array([[xx, y, z] for xx in (x, x + 2.5) for y in (1.0, 3.6) for z in (-28.0, -15.5)]
+                            + [[x + 1.25, ridge, z] for z in (-28.0, -15.5)]))
+    # the mezzanine: a deck on posts, rails on its open sides, low shelving, one flight along +z to its south edge
+    top = dock + 4.2
+    s.box(mez[0], mez[1], top - 0.3, top, mez[2], mez[3])
+    for px in np.arange(mez[0] + 4.0, mez[1] - 0.5, 5.0):
+        for pz in np.arange(mez[2] + 2.0, mez[3] - 0.5, 5.0):
+            s.box(px, px + 0.3, dock, top - 0.3, pz, pz + 0.3)
+    flight_x = mez[0] + rng.uniform(3.0, mez[1] - mez[0] - 5.0)
+    risers = math.ceil(4.2 / 0.18)
+    s.stairs(np.array([flight_x + 1.0, mez[2] - risers * 0.28]), np.array([0.0, 1.0]), 2.0, dock, 4.2, 4.2 / risers, 0.28)
+    s.wall((mez[0], mez[2]), (mez[1], mez[2]), top, top + 1.1, [(flight_x - mez[0], 2.0)], thickness=0.1)
+    s.wall((mez[1], mez[2]), (mez[1], mez[3]), top, top + 1.1, thickness=0.1)
+    for x in np.arange(mez[0] + 2.0, mez[1] - 2.5, 3.2):
+        s.box(x, x + 0.8, top, top + 2.2, mez[2] + 3.0, mez[3] - 2.0)
+    placed = [(px - 0.1, px + 0.4, pz - 0.1, pz + 0.4) for px in np.arange(mez[0] + 4.0, mez[1] - 0.5, 5.0)
+              for pz in np.arange(mez[2] + 2.0, mez[3] - 0.5, 5.0)]
+    for _ in range(int(rng.integers(90, 120))):  # pallet stacks on the staging strip and under the mezzanine, 1.2 m apart
+        x, z = (rng.uniform(2.0, size_x - 3.0), rng.uniform(4.5, 14.0)) if rng.random() < 0.7 else \
+            (rng.uniform(mez[0] + 1.5, mez[1] - 2.7), rng.uniform(mez[2] + 1.0, mez[3] - 2.5))
+        if _clear(x - 1.2, x + 2.4, z - 1.2, z + 2.2, placed):
+            s.box(x, x + 1.2, dock, dock + 1.5, z, z + 1.0)
+            placed.append((x, x + 1.2, z, z + 1.0))
+    _lid(s, 0.0, size_x, 0.0, size_z, roof)
+    return s.mesh()
+
+
+def golf(seed: int) -> trimesh.Trimesh:
+    """A golf course as a park: rolling lawns 220 x 170 m (a 2 m grid, four waves of 40-140 m, slopes under about
+    12 degrees, six to ten sand hollows up to 1 m deep) cut in two by a creek 5-7 m wide from the west edge to the
+    east (no water surface: the ground stops at its banks) crossed only by three footbridges 1.8 m wide, railed
+    over the water, and holding three or four ponds (ellipses 8-22 m across), one of them crossed by a fourth
+    footbridge; 12-18 clumps of 6-14 trees (trunks 0.25-0.45 m, 5 m high); a clubhouse (24 x 14 m, one 2 m door,
+    a gable roof) on the lawn near the south-west corner.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    size_x, size_z, step = 220.0, 170.0, 2.0
+    xs, zs = np.arange(0.0, size_x + step / 2, step), np.arange(0.0, size_z + step / 2, step)
+    waves = [(rng.uniform(0.4, 0.9), rng.uniform(40.0, 140.0), rng.uniform(0, 2 * math.pi), rng.uniform(0, math.pi))
+             for _ in range(4)]
+    hollows = [(rng.uniform(20.0, size_x - 20.0), rng.uniform(20.0, size_z - 20.0), rng.uniform(3.0, 6.0))
+               for _ in range(int(rng.integers(6, 11)))]
+
+    def height(x: np.ndarray, z: np.ndarray) -> np.ndarray:
+        h = sum(a * np.sin(2 * math.pi / length * (x * math.cos(turn) + z * math.sin(turn)) + phase)
+                for a, length, phase, turn in waves)
+        return h - sum(np.exp(-((x - hx) ** 2 + (z - hz) ** 2) / (2 * r * r)) for hx, hz, r in hollows)
+
+    creek_z, bend, creek_phase = rng.uniform(0.4, 0.6) * size_z, rng.uniform(10.0, 18.0), rng.uniform(0, 2 * math.pi)
+    creek_half = rng.uniform(2.5, 3.5)
+
+    def creek(x: np.ndarray) -> np.ndarray:
+        """The creek's centre line, z at ``x``."""
+        return creek_z + bend * np.sin(x * 0.03 + creek_phase)
+
+    x0, z0 = rng.uniform(10.0, 30.0), rng.uniform(10.0, 25.0)
+    club = (x0, x0 + 24.0, z0, z0 + 14.0)
+    taken = [(club[0] - 4.0, club[1] + 4.0, club[2] - 4.0, club[3] + 4.0)]
+    ponds: list[tuple[np.ndarray, np.ndarray]] = []
+    count = int(rng.integers(3, 5))
+    while len(ponds) < count:
+        c = np.array([rng.uniform(25.0, size_x - 25.0), rng.uniform(20.0, size_z - 20.0)])
+        r = rng.uniform(4.0, 11.0, size=2)
+        if abs(c[1] - creek(c[0])) > r.max() + creek_half + 12.0 and all(np.linalg.norm(c - p[0]) > 40.0 for p in ponds) \
+                and _clear(c[0] - r[0] - 6.0, c[0] + r[0] + 6.0, c[1] - r[1] - 6.0, c[1] + r[1] + 6.0, taken):
+            ponds.append((c, r))
+    gx, gz = np.meshgrid(xs, zs, indexing="ij")
+    cx, cz = (gx[:-1, :-1] + gx[1:, 1:]) / 2, (gz[:-1, :-1] + gz[1:, 1:]) / 2
+    water = np.abs(cz - creek(cx)) < creek_half
+    for c, r in ponds:
+        water |= ((cx - c[0]) / r[0]) ** 2 + ((cz - c[1]) / r[1]) ** 2 < 1.0
+    _terrain(s, xs, zs, height(gx, gz), keep=~water)
+    crossings = [(x, np.array([creek(x) - creek_half, creek(x) + creek_half])) for x in
+                 np.array([0.2, 0.5, 0.8]) * size_x + rng.uniform(-10.0, 10.0, size=3)]
+    c, r = ponds[int(rng.integers(len(ponds)))]
+    crossings.append((c[0], np.array([c[1] - r[1], c[1] + r[1]])))
+    for x, (z0, z1) in crossings:
+        column = water[min(int(x // step), water.shape[0] - 1)]
+        wet = zs[:-1][column & (zs[:-1] > z0 - 8.0) & (zs[:-1] < z1 + 8.0)]
+        z0, z1 = wet.min() - 3.0, wet.max() + step + 3.0
+        taken.append((x - 3.0, x + 3.0, z0, z1))
+        ends = [np.array([x, z0]), np.array([x, z1])]
+        ys = [float(height(np.array(p[0]), np.array(p[1]))) + 0.05 for p in ends]
+        s.ramp(ends[0], ends[1], 1.8, ys[0], ys[1], thickness=1.0)
+        t0, t1 = 2.0 / (z1 - z0), 1.0 - 2.0 / (z1 - z0)  # railed over the water, open 2 m from each end
+        for sign in (-1.0, 1.0):
+            a, b = ends[0] + t0 * (ends[1] - ends[0]), ends[0] + t1 * (ends[1] - ends[0])
+            side = np.array([sign * 0.85, 0.0])
+            s.ramp(a + side, b + side, 0.1, ys[0] + t0 * (ys[1] - ys[0]) + 1.0, ys[0] + t1 * (ys[1] - ys[0]) + 1.0,
+                   thickness=1.0)
+    under = height(np.linspace(club[0], club[1], 13)[:, None], np.linspace(club[2], club[3], 8)[None])
+    low, high = float(under.min()) - 0.5, float(under.max()) + 3.5
+    door = rng.uniform(4.0, 18.0)
+    s.wall((club[0], club[2]), (club[1], club[2]), low, high, [(door, 2.0)], thickness=0.3)
+    s.wall((club[0], club[3]), (club[1], club[3]), low, high, thickness=0.3)
+    for x in club[:2]:
+        s.wall((x, club[2]), (x, club[3]), low, high, thickness=0.3)
+    _gable(s, club[0] - 0.3, club[1] + 0.3, club[2] - 0.3, club[3] + 0.3, high)
+    clumps = 0
+    while clumps < int(rng.integers(12, 19)):
+        c = np.array([rng.uniform(10.0, size_x - 10.0), rng.uniform(10.0, size_z - 10.0)])
+        if not _clear(c[0] - 10.0, c[0] + 10.0, c[1] - 10.0, c[1] + 10.0, taken):
+            continue
+        clumps += 1
+        for p in c + rng.normal(0.0, rng.uniform(2.5, 4.5), size=(int(rng.integers(6, 15)), 2)):
+            i, j = int(np.clip(p[0] // step, 0, water.shape[0] - 1)), int(np.clip(p[1] // step, 0, water.shape[1] - 1))
+            if not water[max(i - 1, 0):i + 2, max(j - 1, 0):j + 2].any() and _clear(*np.repeat(p, 2), taken):
+                y = float(height(np.array(p[0]), np.array(p[1])))
+                trunk = rng.uniform(0.25, 0.45)
+                angles = np.linspace(0, 2 * math.pi, 8, endpoint=False)
+                s.prism(p + trunk * np.stack([np.cos(angles), np.sin(angles)], 1), y - 0.5, y + 5.0)
+    return s.mesh()
+
+
+def scaffold(seed: int) -> trimesh.Trimesh:
+    """A building site 90 x 75 m behind a hoarding 2.4 m high (a 6 m gate): a concrete frame of four slabs 3.5 m
+    apart over a 30-36 x 20-24 m plan, on columns every 5-6 m (stubs 1 m above the top slab), no walls, every slab
+    edge railed 1 m high with one or two gaps 2 m wide a side onto the scaffold; a switchback stair in a walled core
+    (:func:`_switchback`) up to the top slab. Round the frame on every slab's level a scaffold deck 1.6 m wide,
+    railed on its outer edge, so each storey's gaps lead out onto a ring round the building; a scaffold stair tower
+    (another switchback, open) on the ring's north side, from the ground to the top. On the ground: site cabins,
+    a crane's mast, skips (all ridged: no floor on or in them), pallets of blocks and bundles of bars.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    site_x, site_z, storey, slabs = 90.0, 75.0, 3.5, 4
+    lx, lz = rng.uniform(30.0, 36.0), rng.uniform(20.0, 24.0)
+    bx0, bz0 = rng.uniform(24.0, 30.0), rng.uniform(18.0, 22.0)
+    bx1, bz1 = bx0 + lx, bz0 + lz
+    length = _well_length(storey)
+    core = (bx0 + round(rng.uniform(0.3, 0.6) * (lx - 4.0), 1), bz0 + 3.0)
+    well = (core[0], core[0] + 4.0, core[1] + 2.0, core[1] + length)
+    tower_x = bx0 + rng.uniform(2.0, lx - 6.0)
+    ring = 1.6
+    for k in range(slabs):
+        _switchback(s, core[0], core[1], k * storey, storey)
+        _switchback(s, tower_x, bz1 + ring, k * storey, storey)
+    columns_x, columns_z = _split(bx0, bx1 - 0.4, rng.uniform(5.0, 6.0)), _split(bz0, bz1 - 0.4, rng.uniform(5.0, 6.0))
+    for x in columns_x:
+        for z in columns_z:
+            if _clear(x, x + 0.4, z, z + 0.4, [(core[0] - 0.3, core[0] + 4.3, core[1] - 0.3, core[1] + length + 0.3)]):
+                s.box(x, x + 0.4, 0.0, slabs * storey + 1.0, z, z + 0.4)
+    for k in range(1, slabs + 1):
+        y = k * storey
+        s.slab(bx0, bx1, bz0, bz1, y, [well])
+        for x0, x1, z0, z1 in ((bx0 - ring, bx1 + ring, bz0 - ring, bz0), (bx0 - ring, bx1 + ring, bz1, bz1 + ring),
+                               (bx0 - ring, bx0, bz0, bz1), (bx1, bx1 + ring, bz0, bz1)):
+            s.box(x0, x1, y - 0.1, y, z0, z1)  # the scaffold's boards
+        s.box(tower_x, tower_x + 4.0, y - 0.3, y, bz1 + ring, bz1 + ring + 2.0)  # the stair tower's landing
+        for a, b in (((bx0, bz0), (bx1, bz0)), ((bx0, bz1), (bx1, bz1)), ((bx0, bz0), (bx0, bz1)), ((bx1, bz0), (bx1, bz1))):
+            side = abs(b[0] - a[0]) + abs(b[1] - a[1])
+            gaps = [(g, 2.0) for g in sorted(rng.uniform(1.0, side - 3.0, size=int(rng.integers(1, 3))))]
+            s.wall(a, b, y, y + 1.0, _merge(gaps), thickness=0.1)  # the slab's edge rail
+        outer = ((bx0 - ring, bz0 - ring), (bx1 + ring, bz0 - ring), (bx1 + ring, bz1 + ring), (bx0 - ring, bz1 + ring))
+        for a, b in pairwise([*outer, outer[0]]):
+            gaps = [(tower_x - (bx0 - ring), 4.0)] if a[1] == b[1] == bz1 + ring else []
+            lo = (min(a[0], b[0]), min(a[1], b[1]))
+            hi = (max(a[0], b[0]), max(a[1], b[1]))
+            s.wall(lo, hi, y, y + 1.0, gaps, thickness=0.1)
+        top = y + storey - 0.3
+        if k < slabs:
+            s.wall((core[0], core[1]), (core[0], core[1] + length), y, top)
+            s.wall((core[0] + 4.0, core[1]), (core[0] + 4.0, core[1] + length), y, top)
+            s.wall((core[0], core[1] + length), (core[0] + 4.0, core[1] + length), y, top)
+        else:  # railed round the well on the top slab
+            s.wall((core[0], well[2]), (core[0], well[3]), y, y + 1.0, thickness=0.1)
+            s.wall((core[0] + 4.0, well[2]), (core[0] + 4.0, well[3]), y, y + 1.0, thickness=0.1)
+            s.wall((core[0], well[3]), (core[0] + 4.0, well[3]), y, y + 1.0, thickness=0.1)
+    s.wall((core[0], core[1]), (core[0], core[1] + length), 0.0, storey - 0.3)
+    s.wall((core[0] + 4.0, core[1]), (core[0] + 4.0, core[1] + length), 0.0, storey - 0.3)
+    s.wall((core[0], core[1] + length), (core[0] + 4.0, core[1] + length), 0.0, storey - 0.3)
+    keep_out = [(bx0 - ring - 3.0, bx1 + ring + 3.0, bz0 - ring - 3.0, bz1 + ring + length + 3.0),
+                (site_x / 2 - 5.0, site_x / 2 + 5.0, 0.0, 8.0)]
+    holes: list[tuple[float, float, float, float]] = []
+    things = [(6.0, 2.5, 2.8)] * int(rng.integers(3, 6)) + [(2.0, 2.0, 30.0)] + [(4.0, 1.8, 1.6)] * int(rng.integers(3, 6))
+    for w, d, h in things:  # cabins, the crane's mast, skips
+        for _ in range(50):
+            x, z = rng.uniform(2.0, site_x - 2.0 - w), rng.uniform(2.0, site_z - 2.0 - d)
+            if _clear(x - 2.0, x + w + 2.0, z - 2.0, z + d + 2.0, keep_out + holes):
+                holes.append(_ridged(s, x, x + w, z, z + d, -0.5, h))
+                break
+    for _ in range(int(rng.integers(25, 40))):  # pallets of blocks (1 m high), bundles of bars (0.6 m wide)
+        w, d = (1.2, 1.0) if rng.random() < 0.6 else (6.0, 0.6)
+        x, z = rng.uniform(2.0, site_x - 2.0 - w), rng.uniform(2.0, site_z - 2.0 - d)
+        if _clear(x - 1.0, x + w + 1.0, z - 1.0, z + d + 1.0, holes + keep_out[1:]) and \
+                _clear(x, x + w, z, z + d, [(core[0] - 1.0, core[0] + 5.0, core[1] - 1.0, core[1] + length),
+                                            (tower_x - 1.0, tower_x + 5.0, bz1, bz1 + ring + length + 1.0)]):
+            s.box(x, x + w, 0.0, 1.0, z, z + d)
+    s.ground(0.0, site_x, 0.0, site_z, 0.0, holes)
+    for a, b in (((0.0, 0.0), (site_x, 0.0)), ((0.0, site_z), (site_x, site_z)), ((0.0, 0.0), (0.0, site_z)),
+                 ((site_x, 0.0), (site_x, site_z))):
+        s.wall(a, b, 0.0, 2.4, [(site_x / 2 - 3.0, 6.0)] if a[1] == b[1] == 0.0 else [], thickness=0.3)
+    return s.mesh()
+
+
 KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
     "subway": subway, "archipelago": archipelago, "car_park": car_park,
     "forest": forest, "stadium": stadium, "harbour": harbour,
@@ -3498,6 +4034,8 @@ KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
     "helix": helix, "rooftops": rooftops, "flooded": flooded, "cave": cave, "train": train, "ruins": ruins,
     "library": library, "trenches": trenches, "refinery": refinery, "cemetery": cemetery, "quarry": quarry,
     "stairhall": stairhall,
+    "hotel": hotel, "theme_park": theme_park, "aqueduct": aqueduct, "warehouse": warehouse, "golf": golf,
+    "scaffold": scaffold,
 }
 """Kind name -> generator (seed -> Y-up mesh in metres)."""
 
