@@ -1,4 +1,4 @@
-"""The ninth to eleventh rounds' level kinds (``benchmarks/level_kinds.py``) build the levels their docstrings describe.
+"""The ninth to twelfth rounds' level kinds (``benchmarks/level_kinds.py``) build the levels their docstrings describe.
 
 Smoke tests of quick generators (well under a second each to build and to give a navmesh): the connected areas
 the presets' agent finds are the ones each level is made to have, so a door that closes or a crawlway that
@@ -41,7 +41,7 @@ def areas(mesh) -> tuple[np.ndarray, object]:
 
 
 def test_the_same_seed_gives_the_same_level(kinds):
-    for kind in ("hall", "islets", "helix", "flooded", "stairhall", "quarry"):
+    for kind in ("hall", "islets", "helix", "flooded", "stairhall", "quarry", "theme_park", "golf"):
         a, b, other = kinds[kind](0), kinds[kind](0), kinds[kind](1)
         assert np.array_equal(a.vertices, b.vertices) and np.array_equal(a.faces, b.faces), kind
         assert len(a.vertices) != len(other.vertices) or not np.array_equal(a.vertices, other.vertices), kind
@@ -175,3 +175,53 @@ def test_every_landing_of_the_stairhall_is_reached(kinds):
     assert label.max() == 0
     for level in (3.0, 6.0, 9.0, 12.0):
         assert (np.abs(nav.centres[:, 1] - 0.2 - level) < 0.3).any(), level
+
+
+def test_the_hotels_six_storeys_are_one_area(kinds):
+    """The stair core and the fire stair join the lobby to the five storeys of rooms, every room opens on its corridor,
+    and the closets behind the fire stair, the lifts and the core's well hold no floor (a first draft left each an
+    area of its own on every storey): one area, floor on each storey (0 to 16 m, 3.2 m apart)."""
+    label, nav = areas(kinds["hotel"](1))
+    assert label.max() == 0
+    for storey in range(6):
+        assert (np.abs(nav.centres[:, 1] - 0.2 - 3.2 * storey) < 0.3).sum() > 50, storey
+
+
+def test_the_theme_parks_queues_open_on_its_paths(kinds):
+    """Every queue maze is entered from the paths and the fenced rides hold no floor: one area, all of it on the
+    ground."""
+    label, nav = areas(kinds["theme_park"](0))
+    assert label.max() == 0
+    assert nav.centres[:, 1].max() < 0.5
+
+
+def test_the_aqueducts_towns_are_joined_by_stairs_and_ramp(kinds):
+    """The lower town (0 m) and the bridge's street and upper towns (8 m) are one area through the pier stairs and
+    the ramp; the piers' tops under the deck hold no floor (a first draft's were areas of their own)."""
+    label, nav = areas(kinds["aqueduct"](0))
+    assert label.max() == 0
+    assert (nav.centres[:, 1] < 0.5).sum() > 100 and (nav.centres[:, 1] > 7.5).sum() > 100
+
+
+def test_the_warehouses_dock_floor_yard_and_mezzanine_are_one_area(kinds):
+    """The yard (0 m), the dock floor (1.2 m, up the apron's ramp or the personnel door's steps) and the mezzanine
+    (5.4 m) are one area; no floor inside the racks (the floor stops under them) or between pallet stacks."""
+    label, nav = areas(kinds["warehouse"](0))
+    assert label.max() == 0
+    for level in (0.0, 1.2, 5.4):
+        assert (np.abs(nav.centres[:, 1] - 0.2 - level) < 0.3).sum() > 10, level
+
+
+def test_the_golf_courses_halves_are_joined_by_its_footbridges(kinds):
+    """The creek cuts the course in two and three footbridges join the halves: one area."""
+    label, _ = areas(kinds["golf"](2))
+    assert label.max() == 0
+
+
+def test_every_slab_of_the_building_site_is_reached(kinds):
+    """The core stair and the scaffold's stair tower join the ground to the four slabs (3.5 to 14 m) and the
+    scaffold decks round them: one area."""
+    label, nav = areas(kinds["scaffold"](1))
+    assert label.max() == 0
+    for storey in range(5):
+        assert (np.abs(nav.centres[:, 1] - 0.2 - 3.5 * storey) < 0.3).sum() > 20, storey
