@@ -3785,7 +3785,7 @@ def warehouse(seed: int) -> trimesh.Trimesh:
     """A warehouse 110-120 x 58-64 m whose floor is a dock 1.2 m over its yard, under a roof 11 m up (:func:`_lid`).
     North of a staging strip 16 m deep along the dock wall, racking 9.8 m high (to 1 m under the roof; the floor
     stops under it) in double rows 2.4 m deep, single rows along the walls, with aisles 3-3.4 m wide along z and two
-    cross aisles 4 m wide; in the north-west corner a mezzanine 4.2 m up (18-24 x 14 m, posts on a 5 m grid, rails,
+    cross aisles 4 m wide (the northern band's rows reach the north wall: its aisles are dead ends); in the north-west corner a mezzanine 4.2 m up (18-24 x 14 m, posts on a 5 m grid, rails,
     low shelving, one straight flight) over open floor; pallet stacks 1.5 m high, at least 1.2 m apart, on the staging strip. The south
     wall has 8-10 dock doors 3.5 m wide: the eastern two open on an apron at dock height with a ramp (1 in 10) down
     to the yard, the rest on the 1.2 m drop, half of them with a trailer backed up (ridged, floating on no
