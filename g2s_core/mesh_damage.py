@@ -34,6 +34,9 @@ triangles; bytes of a GLB's header (``glTF``, the version, then the file's lengt
 OBJ_VALUES = {b"v": "vertex coordinate", b"vt": "texture coordinate", b"vn": "normal coordinate"}
 """The OBJ lines of numbers trimesh reads, and what their values are called in messages."""
 
+OBJ_COMMENT = re.compile(rb"#[^\r\n]*")
+"""OBJ's comments, one rule for the check and the reading: a ``#`` to its line's end, wherever it stands (``f 1 3 2#x``)."""
+
 OBJ_INDEXED = {b"v": "vertex", b"vt": "texture coordinate", b"vn": "normal"}
 """What a face corner's ``v/vt/vn`` indices name, in messages."""
 
@@ -292,7 +295,7 @@ def _obj_damage(data: bytes) -> str | None:
     """The first line of an OBJ file that is wrong. Faces number vertices (texture coordinates, normals) from 1, or
     back from their line when negative; ``f 1 2 9`` in a file of 3 vertices is wrong wherever it stands (trimesh
     reads every vertex first)."""
-    rows = _rows(line.partition(b"#")[0] for line in data.removeprefix(codecs.BOM_UTF8).splitlines())
+    rows = _rows(OBJ_COMMENT.sub(b"", data.removeprefix(codecs.BOM_UTF8)).splitlines())
     listed = {key: sum(values[:1] == [key] for _, values in rows) for key in OBJ_VALUES}
     before = dict.fromkeys(OBJ_VALUES, 0)
     for number, line in rows:
