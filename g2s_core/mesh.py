@@ -93,7 +93,8 @@ def load_mesh(path: str | Path, config: MeshConfig | None = None) -> tuple[trime
         if damage or path.suffix.lower() not in POLYGON_SUFFIXES:
             raise MeshError(f"{path}: {damage or unread}") from None
         loaded = _read_polygons(path, raw, unread)
-    # trimesh reads a sparse accessor's data without its values, leaves a triangle fan out, reads no compressed mesh: silently wrong
+    # trimesh reads a sparse accessor's data without its values, leaves a triangle fan out, reads no compressed mesh, reads
+    # elements overlapping under a stride shorter than they are: silently wrong
     if path.suffix.lower() in (".gltf", ".glb") and _GLTF_UNREAD.search(raw) and (damage := describe_damage(path, raw)):
         raise MeshError(f"{path}: {damage}")
     try:
@@ -158,9 +159,9 @@ def _as_trimesh_reads_obj(text: bytes) -> bytes:
     return _absolute_indices(text) if faces_before and _RELATIVE_FACE.search(text, 0, last_vertex) else text
 
 
-_GLTF_UNREAD = re.compile(rb'"sparse"|"mode"\s*:\s*(?![0-5](?![0-9]))|"extensionsRequired"')
-"""A glTF's sparse accessor, a primitive's mode other than 0-5 (a triangle fan, 6), or extensions it requires
-(compression: the data trimesh reads may be empty)."""
+_GLTF_UNREAD = re.compile(rb'"sparse"|"mode"\s*:\s*(?![0-5](?![0-9]))|"extensionsRequired"|"byteStride"')
+"""A glTF's sparse accessor, a primitive's mode other than 0-5 (a triangle fan, 6), extensions it requires
+(compression: the data trimesh reads may be empty), or a stride (one shorter than its elements is read overlapping)."""
 
 _FACE_LINE = re.compile(rb"^f ", re.MULTILINE)
 

@@ -147,3 +147,48 @@ def test_a_librarys_logged_warning_does_not_reach_stderr(tmp_path):
                            "--format", "png"], capture_output=True, text=True, timeout=300, env=env)
     assert (done.returncode, done.stderr) == (0, "")
     assert tree(tmp_path / "out") == ["heatmap.png"]
+
+
+def _gltf(stride: object) -> str:
+    """A glTF of the 10 m floor whose positions' buffer view has the byte stride ``stride``, each vertex padded to it."""
+    import base64
+    import json
+    import struct
+
+    step = stride if isinstance(stride, int) and stride > 12 else 12
+    positions = b"".join(struct.pack("<3f", *v) + b"\0" * (step - 12) for v in ((0, 0, 0), (10, 0, 0), (10, 0, 10), (0, 0, 10)))
+    data = positions + struct.pack("<6I", 0, 2, 1, 0, 3, 2)
+    return json.dumps({
+        "asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+        "buffers": [{"uri": "data:application/octet-stream;base64," + base64.b64encode(data).decode(), "byteLength": len(data)}],
+        "bufferViews": [{"buffer": 0, "byteLength": len(positions), "byteStride": stride},
+                        {"buffer": 0, "byteOffset": len(positions), "byteLength": 24}],
+        "accessors": [{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3"},
+                      {"bufferView": 1, "componentType": 5125, "count": 6, "type": "SCALAR"}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}]})
+
+
+@pytest.mark.parametrize("stride", [4, 0, -12, "12", 12.5])
+def test_a_gltf_stride_shorter_than_its_elements_is_named(stride, tmp_path):
+    # a stride of 4 read each vertex overlapping the next (refused as "most flat faces face along z, not y"); 0 and -12
+    # were trimesh's "cannot read mesh (AssertionError: byteStride should be positive)"
+    path = tmp_path / "level.gltf"
+    path.write_text(_gltf(stride))
+    with pytest.raises(MeshError, match=rf"bufferViews\[0\]\.byteStride is {stride!r}; expected an integer >= 12, the bytes of one "
+                                        r"element of accessors\[0\] \(VEC3 of 4-byte numbers\)"):
+        load_mesh(path)
+
+
+@pytest.mark.parametrize("stride", [12, 16, 13, 256])  # a multiple of 4 up to 252 in the specification; read right all the same
+def test_a_gltf_stride_of_whole_elements_is_read(stride, tmp_path):
+    path = tmp_path / "level.gltf"
+    path.write_text(_gltf(stride))
+    assert load_mesh(path)[0].area == pytest.approx(100.0)
+
+
+def test_a_glb_of_another_version_is_named(tmp_path):
+    # trimesh's "cannot read mesh (NotImplementedError: only GLTF 2 is supported not `1`)"
+    path = tmp_path / "level.glb"
+    path.write_bytes(b"glTF" + (1).to_bytes(4, "little") + (12).to_bytes(4, "little"))
+    with pytest.raises(MeshError, match=r"the GLB header's version is 1; g2s reads GLB version 2 \(glTF 2.0\)"):
+        load_mesh(path)
