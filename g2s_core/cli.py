@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import logging
 import sys
 import textwrap
 import traceback
@@ -34,6 +35,7 @@ from g2s_core.registry import installed, plugin_parameters
 from g2s_core.result_folder import interrupts_held, stop_if_interrupted
 from g2s_core.stages import STAGES
 from g2s_core.lazy import lazy_module
+from g2s_core.messages import one_line
 from g2s_core.summary import final_graph, metric_lines, outcome, roots_of, stage_rows
 
 # a run needs them (and trimesh, networkx, scipy through them); listing plugins and checking a config do not
@@ -45,6 +47,8 @@ EXIT_READER_LEFT = 141
 """The exit code when the program reading g2s's standard output closes it early, as a shell reports a process that
 SIGPIPE ended: neither bad input (2) nor a bug of g2s (1)."""
 
+_NO_LOG = logging.NullHandler()  # on the root logger, it keeps logging's last resort from printing libraries' records
+
 
 class Output(Console):
     """Standard output through rich, ending the command with :data:`EXIT_READER_LEFT` when its reader leaves."""
@@ -54,6 +58,12 @@ class Output(Console):
             super().on_broken_pipe()  # stops writing to the closed pipe, then exits
         except SystemExit:
             raise SystemExit(EXIT_READER_LEFT) from None
+
+    def _check_buffer(self) -> None:
+        try:  # rich writes here; a closed pipe is on_broken_pipe's, another failure (a full disk) was an internal error
+            super()._check_buffer()
+        except OSError as exc:
+            raise G2SError(f"cannot write to standard output ({exc.strerror or exc})") from None
 
 __all__ = ["EXIT_READER_LEFT", "Output", "main", "named", "output_folder", "stage_table"]
 
@@ -173,6 +183,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     parser, plugged = _parser()
     args = parser.parse_args(argv)
     errors = Console(stderr=True)
+    if not args.verbose:  # a library's logged warning (matplotlib's, under a HOME it cannot write) added lines to stderr
+        logging.getLogger().addHandler(_NO_LOG)
     own = {"run": lambda a: _run(a, errors), "plugins": _plugins, "presets": lambda _: _presets(), "demo": lambda a: _demo(a, errors)}
     with warnings.catch_warnings(), interrupts_held(hold=False):  # numpy's warnings (a 1e300 coordinate overflowing) would add lines to the one line of stderr
         warnings.simplefilter("default" if args.verbose else "ignore", RuntimeWarning)
@@ -183,7 +195,7 @@ def main(argv: Sequence[str] | None = None) -> int:
                 raise command
             return command(args)
         except (G2SError, PluginFailure) as exc:  # the user, or the named plugin's authors, can fix it
-            errors.print(f"g2s: error: {exc}", markup=False, highlight=False, soft_wrap=True)
+            errors.print(one_line(f"g2s: error: {exc}"), markup=False, highlight=False, soft_wrap=True)
             if args.verbose:
                 traceback.print_exc()
             return 1 if isinstance(exc, PluginFailure) else 2  # a plugin's bug is no bad input: scripts must not blame the level
@@ -191,7 +203,7 @@ def main(argv: Sequence[str] | None = None) -> int:
             errors.print("g2s: interrupted", markup=False)
             return 130
         except Exception as exc:  # anything else is our bug: say so, keep the user's data
-            errors.print(f"g2s: internal error: {type(exc).__name__}: {exc}", markup=False, highlight=False, soft_wrap=True)
+            errors.print(one_line(f"g2s: internal error: {type(exc).__name__}: {exc}"), markup=False, highlight=False, soft_wrap=True)
             if args.verbose:
                 traceback.print_exc()
             else:

@@ -18,6 +18,10 @@ def main() -> int:
     SIGTERM (``kill``, a job scheduler's stop) is taken as a Ctrl-C: killed outright, a run left its staging
     folder behind, half written."""
     signal.signal(signal.SIGTERM, signal.default_int_handler)
+    # a name that the terminal's encoding cannot write (LANG of Latin-1, PYTHONIOENCODING=ascii) ended a finished run
+    # in an internal error as it printed the files written
+    if hasattr(sys.stdout, "reconfigure"):  # None when g2s was started with its standard output closed
+        sys.stdout.reconfigure(errors="backslashreplace")
     try:
         from g2s_core.result_folder import interrupts_held, stop_if_interrupted
 

@@ -17,7 +17,7 @@ from g2s_core.config import MeshConfig
 from g2s_core.errors import ConfigError, MeshError
 from g2s_core.input_files import check_regular_file
 from g2s_core.lazy import lazy_module
-from g2s_core.mesh_damage import declared_faces, describe_damage, off_polygons, rows_beyond_header
+from g2s_core.mesh_damage import OBJ_COMMENT, declared_faces, describe_damage, off_polygons, rows_beyond_header
 from g2s_core.registry import Registry, installed
 
 # loaded with the first mesh read: the CLI and the batch command import this module for its names
@@ -93,7 +93,8 @@ def load_mesh(path: str | Path, config: MeshConfig | None = None) -> tuple[trime
         if damage or path.suffix.lower() not in POLYGON_SUFFIXES:
             raise MeshError(f"{path}: {damage or unread}") from None
         loaded = _read_polygons(path, raw, unread)
-    # trimesh reads a sparse accessor's data without its values, leaves a triangle fan out, reads no compressed mesh: silently wrong
+    # trimesh reads a sparse accessor's data without its values, leaves a triangle fan out, reads no compressed mesh, reads
+    # elements overlapping under a stride shorter than they are: silently wrong
     if path.suffix.lower() in (".gltf", ".glb") and _GLTF_UNREAD.search(raw) and (damage := describe_damage(path, raw)):
         raise MeshError(f"{path}: {damage}")
     try:
@@ -133,9 +134,10 @@ def _read_polygons(path: Path, raw: bytes, unread: str) -> trimesh.Trimesh:
 def _as_trimesh_reads_obj(text: bytes) -> bytes:
     """An OBJ file's bytes as trimesh's reader understands them: it takes a UTF-8 byte-order mark for part of the
     first line, splits values on spaces only, lines on ``\\n`` only (an old Mac file ends its lines with ``\\r``),
-    reads a line only if it starts with its keyword, reads a comment after a line's values as values, reads a face's
-    vertex index 0 (OBJ numbers them from 1) as 1, and takes a negative index for one counted back from the file's
-    end, not from the face's line (:func:`_absolute_indices`).
+    reads a line only if it starts with its keyword, reads a comment after a line's values as values and one ending
+    in a backslash as going on over the next line (comments: :data:`~g2s_core.mesh_damage.OBJ_COMMENT`), reads a
+    face's vertex index 0 (OBJ numbers them from 1) as 1, and takes a negative index for one counted back from the
+    file's end, not from the face's line (:func:`_absolute_indices`).
 
     Raises:
         ValueError: a face names vertex 0 (:func:`~g2s_core.mesh_damage.describe_damage` names its line)."""
@@ -143,8 +145,9 @@ def _as_trimesh_reads_obj(text: bytes) -> bytes:
     text = text if b"\n" in text else text.replace(b"\r", b"\n")
     if b"\n " in text:  # trimesh skips an indented line: a "  v" line was lost and every later vertex index shifted
         text = re.sub(rb"\n +", b"\n", text)
-    if text.count(b"#") > text.count(b"\n#") + text.startswith(b"#"):  # a comment after values, which trimesh reads as values
-        text = _COMMENT_AFTER_VALUES.sub(rb"\1", text)
+    # trimesh skips a comment line, but reads a comment after values as values and joins one ending in "\" to the next line
+    if text.count(b"#") > text.count(b"\n#") + text.startswith(b"#") or b"#" in text and b"\\" in text:
+        text = OBJ_COMMENT.sub(b"", text)
     last_vertex = text.rfind(b"\nv")
     faces_before = _FACE_LINE.search(text, 0, last_vertex) is not None  # most files list every vertex first
     # a value 0 is mostly an integer coordinate or "s 0": only a face line's is wrong
@@ -156,12 +159,9 @@ def _as_trimesh_reads_obj(text: bytes) -> bytes:
     return _absolute_indices(text) if faces_before and _RELATIVE_FACE.search(text, 0, last_vertex) else text
 
 
-_GLTF_UNREAD = re.compile(rb'"sparse"|"mode"\s*:\s*(?![0-5](?![0-9]))|"extensionsRequired"')
-"""A glTF's sparse accessor, a primitive's mode other than 0-5 (a triangle fan, 6), or extensions it requires
-(compression: the data trimesh reads may be empty)."""
-
-_COMMENT_AFTER_VALUES = re.compile(rb"^((?:v|vt|vn|f) [^#\n]*?) *#[^\n]*", re.MULTILINE)
-"""A vertex or face line's values and the comment after them (``v 0 0 0 # origin``)."""
+_GLTF_UNREAD = re.compile(rb'"sparse"|"mode"\s*:\s*(?![0-5](?![0-9]))|"extensionsRequired"|"byteStride"')
+"""A glTF's sparse accessor, a primitive's mode other than 0-5 (a triangle fan, 6), extensions it requires
+(compression: the data trimesh reads may be empty), or a stride (one shorter than its elements is read overlapping)."""
 
 _FACE_LINE = re.compile(rb"^f ", re.MULTILINE)
 

@@ -34,6 +34,9 @@ triangles; bytes of a GLB's header (``glTF``, the version, then the file's lengt
 OBJ_VALUES = {b"v": "vertex coordinate", b"vt": "texture coordinate", b"vn": "normal coordinate"}
 """The OBJ lines of numbers trimesh reads, and what their values are called in messages."""
 
+OBJ_COMMENT = re.compile(rb"#[^\r\n]*")
+"""OBJ's comments, one rule for the check and the reading: a ``#`` to its line's end, wherever it stands (``f 1 3 2#x``)."""
+
 OBJ_INDEXED = {b"v": "vertex", b"vt": "texture coordinate", b"vn": "normal"}
 """What a face corner's ``v/vt/vn`` indices name, in messages."""
 
@@ -93,6 +96,8 @@ def describe_damage(path: Path, data: bytes) -> str | None:
     announced = int.from_bytes(data[8:GLB_HEADER], "little")
     if suffix == ".glb" and size >= GLB_HEADER and data.startswith(b"glTF") and size < announced:
         return f"the GLB file ends early (its header announces {announced} bytes, the file has {size})"
+    if suffix == ".glb" and data.startswith(b"glTF") and (version := int.from_bytes(data[4:8], "little")) != 2:
+        return f"the GLB header's version is {version}; g2s reads GLB version 2 (glTF 2.0): convert the file to glTF 2.0"
     if suffix == ".glb" and data.startswith(b"glTF"):
         return _glb_damage(data, path.parent)
     if suffix == ".glb":  # else trimesh's "incorrect header on GLB file", named as a ValueError
@@ -203,8 +208,8 @@ def _gltf_damage(document: object, folder: Path, binary: int | None) -> str | No
 
 def _accessor_damage(number: int, accessor: dict, document: dict) -> str | None:
     """What is wrong with the glTF accessor ``accessors[number]``: a count, component type, type or byte offset
-    of another kind than the glTF specification's, data past its buffer view's end, or sparse values (trimesh
-    reads the data under them only: the mesh would be read silently wrong)."""
+    of another kind than the glTF specification's, a buffer view's stride shorter than its elements, data past its buffer
+    view's end, or sparse values (trimesh reads the data under them only: the mesh would be read silently wrong)."""
     expected = {"count": "an integer >= 1", "componentType": f"one of {', '.join(map(str, GLTF_COMPONENTS))}",
                 "type": f"one of {', '.join(GLTF_TYPES)}", "byteOffset": "an integer >= 0"}
     count, offset = accessor.get("count"), accessor.get("byteOffset", 0)
@@ -216,7 +221,10 @@ def _accessor_damage(number: int, accessor: dict, document: dict) -> str | None:
         return f"accessors[{number}] is sparse, which g2s cannot read (its values would be read as zeros or the data under them)"
     item = GLTF_COMPONENTS[accessor["componentType"]] * GLTF_TYPES[accessor["type"]]
     view = document["bufferViews"][accessor["bufferView"]] if "bufferView" in accessor else None
-    length, stride = (view.get("byteLength"), view.get("byteStride") or item) if isinstance(view, dict) else (None, item)
+    length, stride = (view.get("byteLength"), view.get("byteStride", item)) if isinstance(view, dict) else (None, item)
+    if not (type(stride) is int and stride >= item):  # trimesh read overlapping elements (a stride of 4) or failed (0)
+        return _expected(f"bufferViews[{accessor['bufferView']}].byteStride", stride, f"an integer >= {item}, the bytes of one "
+                         f"element of accessors[{number}] ({accessor['type']} of {GLTF_COMPONENTS[accessor['componentType']]}-byte numbers)")
     if isinstance(length, int) and isinstance(stride, int) and (end := offset + (count - 1) * stride + item) > length:
         return f"accessors[{number}] ends at byte {end} of bufferViews[{accessor['bufferView']}], past its {length} bytes"
     return None
@@ -292,7 +300,7 @@ def _obj_damage(data: bytes) -> str | None:
     """The first line of an OBJ file that is wrong. Faces number vertices (texture coordinates, normals) from 1, or
     back from their line when negative; ``f 1 2 9`` in a file of 3 vertices is wrong wherever it stands (trimesh
     reads every vertex first)."""
-    rows = _rows(line.partition(b"#")[0] for line in data.removeprefix(codecs.BOM_UTF8).splitlines())
+    rows = _rows(OBJ_COMMENT.sub(b"", data.removeprefix(codecs.BOM_UTF8)).splitlines())
     listed = {key: sum(values[:1] == [key] for _, values in rows) for key in OBJ_VALUES}
     before = dict.fromkeys(OBJ_VALUES, 0)
     for number, line in rows:

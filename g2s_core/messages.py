@@ -19,6 +19,15 @@ _TYPE_NAMES = {int: "an integer", float: "a number", bool: "true or false", str:
 
 _LONGEST = 60  # characters of a text, and digits of an integer, shown in full: a megabyte of text was one line
 
+# the characters that end a line (str.splitlines), each written as its escape in a message of one line
+_LINE_BREAKS = {ord(c): repr(c)[1:-1] for c in "\n\r\v\f\x1c\x1d\x1e\x85\u2028\u2029"}
+
+
+def one_line(message: str) -> str:
+    """``message`` as one line of stderr: a line break in it (a file or folder name may hold one) written as its
+    escape, ``\\n``."""
+    return message.translate(_LINE_BREAKS)
+
 
 def show(value: Any) -> str:
     """A value as the user wrote it in YAML, a long text or integer cut short (``'xxx...' (1,000,000 characters)``)."""

@@ -21,6 +21,7 @@ from g2s_core.cli import Output, named, output_folder
 from g2s_core.config import presets
 from g2s_core.errors import G2SError
 from g2s_core.mesh import SAMPLE_PREFIX, SUPPORTED_SUFFIXES
+from g2s_core.messages import one_line
 from g2s_core.outputs import parse_formats
 from g2s_core.plugin import hookimpl
 from g2s_core.registry import installed
@@ -94,7 +95,8 @@ def batch(args: argparse.Namespace) -> int:
                             progress=show)
     failed = summary[summary["status"] != "ok"]
     for row in failed.itertuples():
-        errors.print(f"g2s: {row.config} on {row.level} failed: {row.error}", markup=False, highlight=False, soft_wrap=True)
+        errors.print(one_line(f"g2s: {row.config} on {row.level} failed: {row.error}"), markup=False, highlight=False,
+                     soft_wrap=True)
     if not args.quiet:
         reused = int(summary["reused"].sum())
         Output().print(f"{len(summary)} pairs: {len(summary) - len(failed)} ok ({reused} already finished), "

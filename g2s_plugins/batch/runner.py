@@ -63,6 +63,9 @@ else:  # a pair's run needs them (and trimesh, networkx, scipy through them); `g
 RECORDS = ".g2s-batch"
 """The folder of ``OUTDIR`` holding one row file per finished pair."""
 
+SUMMARIES = ("summary.parquet", "summary.csv")
+"""The summary files of ``OUTDIR``, beside its folder of each config's results."""
+
 INSTALL_HINT = (f"g2s batch needs the 'batch' extra: pip install '{DISTRIBUTION}[batch]' "
                 "(pandas, pyarrow, dask.distributed; from a clone: make setup)")
 
@@ -241,6 +244,7 @@ def expand_inputs(inputs: Sequence[str], exclude: Path | None = None) -> list[tu
     levels: dict[str, str] = {}
 
     def add(name: str, spec: str, origin: str) -> None:
+        _check_folder_name(name, "level", origin)
         if name in levels and levels[name] != spec:
             raise G2SError(f"{origin}: level name {name!r} is also that of {levels[name]}; rename one of the files")
         levels[name] = spec
@@ -274,10 +278,26 @@ def expand_inputs(inputs: Sequence[str], exclude: Path | None = None) -> list[tu
     return [(name, spec) for name, spec in levels.items()]
 
 
+def _check_folder_name(name: str, what: str, origin: str, taken: Sequence[str] = ()) -> None:
+    """Refuse a config's or level's name that cannot name its results folder: ``..`` (a file ``...obj``, a config
+    ``...yaml``) put them beside ``OUTDIR`` or a config's folder, ``.`` into it, and a config named ``summary.csv``
+    (``summary.parquet``, ``.g2s-batch``) took the name of the batch's own file (an internal error after every run)."""
+    if name in (".", "..", *taken):
+        raise G2SError(f"{origin}: {what} name {name!r} cannot name the folder of its results (not "
+                       f"{', '.join(repr(n) for n in ('.', '..', *taken))}); rename the file")
+
+
 def _mesh_files(folder: Path) -> Iterator[Path]:
     """Every entry under ``folder`` named like a mesh file that is not a folder: a link to nothing, a FIFO or a device
-    named ``level.obj`` is a level too, whose pairs fail with the reader's message instead of leaving it out unsaid."""
-    return iter(sorted(p for p in folder.rglob("*") if p.suffix.lower() in SUPPORTED_SUFFIXES and not p.is_dir()))
+    named ``level.obj`` is a level too, whose pairs fail with the reader's message instead of leaving it out unsaid.
+
+    Raises:
+        G2SError: ``folder`` or a folder under it cannot be read (``rglob`` leaves its levels out without a word).
+    """
+    entries = sorted(folder.rglob("*"))
+    if unread := next((p for p in (folder, *entries) if p.is_dir() and not os.access(p, os.R_OK | os.X_OK)), None):
+        raise G2SError(f"{unread}: cannot read this folder (permission denied): its levels would be left out")
+    return iter(p for p in entries if p.suffix.lower() in SUPPORTED_SUFFIXES and not p.is_dir())
 
 
 def make_pairs(
@@ -302,6 +322,7 @@ def make_pairs(
     for config_path in configs:
         source = str(config_path)
         name = Path(config_path).stem
+        _check_folder_name(name, "config", source, taken=(RECORDS, *SUMMARIES))
         found = find_config(config_path)
         real = os.path.realpath(found)
         if name in seen:
@@ -476,8 +497,8 @@ def write_summary(summary: pd.DataFrame, outdir: Path) -> list[Path]:
         G2SError: the storage failed (disk full, file size limit); the earlier summary files are kept and no
             temporary file is left.
     """
-    files = {outdir / name: (outdir / f".{name}.tmp", write) for name, write in (
-        ("summary.parquet", summary.to_parquet), ("summary.csv", summary.to_csv))}
+    files = {outdir / name: (outdir / f".{name}.tmp", write) for name, write in zip(
+        SUMMARIES, (summary.to_parquet, summary.to_csv))}
     try:
         for temporary, write in files.values():
             write(temporary, index=False)
