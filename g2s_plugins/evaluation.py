@@ -53,7 +53,7 @@ The measures (all along the initial walkable graph, distances in metres):
     mapping below is the identity, so these are ``rho`` and
     ``rho_ceiling`` exactly. Otherwise (the sampling route) the navmesh of
     the same mesh is built for the run's agent with the ``navmesh``
-    builder's default parameters (:func:`~g2s_plugins.recast.build_navmesh`,
+    builder's default parameters but :data:`REFERENCE_LEDGE_FILTER` (:func:`~g2s_plugins.recast.build_navmesh`,
     :func:`~g2s_plugins.graph_builders.navmesh.navmesh_graph`) and the heat
     map is carried from the samples to its nodes (:func:`navmesh_surface`,
     :func:`carry`):
@@ -132,6 +132,12 @@ PLAN_TOLERANCE = 1e-3
 
 REACH_SPACINGS = 2.0
 """A navmesh node without a sample takes the nearest sample's heat within this many sample spacings."""
+
+REFERENCE_LEDGE_FILTER = "drops"
+"""The ledge filter of the reference navmesh built for the sampling route, as ``map_analysis`` builds its own:
+Recast's filter (the builder's default) also drops ground of 37-45 degrees the agent and the sampler walk, so the
+reference walked less of the level than the samples (docs/analysis_quality.md, "The sampling route on slopes"). Before
+4 December 2026 (evening) it was the builder's default, ``recast``."""
 
 
 @dataclass(frozen=True)
@@ -256,7 +262,7 @@ def navmesh_surface(result: RunResult, reference: np.ndarray, max_sources: int =
     if result.context.navmesh is not None:  # the run's graph is the navmesh graph: the identity
         return NavmeshSurface(result.graph, reference, np.arange(arrays.n), 0.0)
     context = result.context
-    params = navmesh_builder.Params()
+    params = navmesh_builder.Params(ledge_filter=REFERENCE_LEDGE_FILTER)
     try:
         navmesh = build_navmesh(context.mesh.vertices, context.mesh.faces, context.agent, params)
     except (SettingsError, RuntimeError):

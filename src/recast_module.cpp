@@ -710,24 +710,14 @@ std::vector<std::array<int, 3>> least_diagonal_triangulation(const std::vector<s
     return triangles;
 }
 
-// Recast triangulates a polygon that gets no inside samples with triangulateHull, which walks round
-// the hull greedily and, on a long sliver, fans out from one hull sample: the fan's inner edges run
-// along the polygon, over its bends. This retriangulates the detail `one` (polygon `i` of `pm` alone)
-// when every vertex of it lies on the polygon's outline: the samples in order round the convex polygon,
-// joined by least_diagonal_triangulation (Recast's n <= 127 samples), whose diagonals cross the sliver
-// instead. Returns false, leaving `one` as it was, if a vertex lies inside or no such triangulation exists.
-bool shortest_hull_triangulation(const rcPolyMesh& pm, int i, rcPolyMeshDetail& one) {
+// Whether the `n` detail vertices `v` (x, y, z each; the polygon's own vertices first, as Recast puts them) of
+// polygon `i` of `pm` are at least 4 and all lie on its outline (within a thousandth of a cell in plan): the
+// details shortest_hull_triangulation retriangulates. O(n x the polygon's vertices).
+bool detail_on_outline(const rcPolyMesh& pm, int i, const float* v, int n) {
     const unsigned short* p = &pm.polys[static_cast<size_t>(i) * 2 * pm.nvp];
     int nin = 0;
     while (nin < pm.nvp && p[nin] != RC_MESH_NULL_IDX) ++nin;
-    const int n = static_cast<int>(one.meshes[1]);
-    if (n < 4 || one.meshes[0] != 0) return false;
-    const float* v = one.verts;  // Recast puts the polygon's own vertices first
-    double cx = 0.0, cz = 0.0;
-    for (int k = 0; k < nin; ++k) {
-        cx += v[k * 3] / nin;
-        cz += v[k * 3 + 2] / nin;
-    }
+    if (n < 4) return false;
     const double on_outline = 1e-3 * pm.cs;
     for (int k = nin; k < n; ++k) {
         bool on_edge = false;
@@ -740,6 +730,28 @@ bool shortest_hull_triangulation(const rcPolyMesh& pm, int i, rcPolyMeshDetail& 
         }
         if (!on_edge) return false;
     }
+    return true;
+}
+
+// Recast triangulates a polygon that gets no inside samples with triangulateHull, which walks round
+// the hull greedily and, on a long sliver, fans out from one hull sample: the fan's inner edges run
+// along the polygon, over its bends. This retriangulates the detail `one` (polygon `i` of `pm` alone)
+// when every vertex of it lies on the polygon's outline: the samples in order round the convex polygon,
+// joined by least_diagonal_triangulation (Recast's n <= 127 samples), whose diagonals cross the sliver
+// instead. Returns false, leaving `one` as it was, if a vertex lies inside or no such triangulation exists.
+bool shortest_hull_triangulation(const rcPolyMesh& pm, int i, rcPolyMeshDetail& one) {
+    const unsigned short* p = &pm.polys[static_cast<size_t>(i) * 2 * pm.nvp];
+    int nin = 0;
+    while (nin < pm.nvp && p[nin] != RC_MESH_NULL_IDX) ++nin;
+    const int n = static_cast<int>(one.meshes[1]);
+    const float* v = one.verts;  // Recast puts the polygon's own vertices first
+    if (one.meshes[0] != 0 || !detail_on_outline(pm, i, v, n)) return false;
+    double cx = 0.0, cz = 0.0;
+    for (int k = 0; k < nin; ++k) {
+        cx += v[k * 3] / nin;
+        cz += v[k * 3 + 2] / nin;
+    }
+    const double on_outline = 1e-3 * pm.cs;
     std::vector<int> hull(n);
     std::vector<double> angle(n);
     for (int k = 0; k < n; ++k) {
@@ -781,7 +793,8 @@ constexpr unsigned int RECAST_DETAIL_MAX_VERTS = 127;
 
 // Rebuilds the detail of each polygon whose detail leaves the floor under it by more than the
 // agent's climb (detail_floor_gap): rcBuildPolyMeshDetail on the polygon alone, retriangulated by
-// shortest_hull_triangulation if all its samples lie on the outline; again with detailSampleDist and
+// shortest_hull_triangulation if all its samples lie on the outline (at Recast's spacing only then: otherwise
+// the rebuild would be Recast's detail again); again with detailSampleDist and
 // detailSampleMaxError halved while the result is still off, the spacing stays at least one cell and
 // the last detail (Recast's, then each rebuild) has fewer than RECAST_DETAIL_MAX_VERTS vertices: a full
 // detail cannot take more vertices from finer samples, and Recast scans every sample for each vertex
@@ -810,7 +823,15 @@ std::vector<int32_t> resample_detail_off_floor(LogContext& ctx, const rcPolyMesh
         const double bend = std::max<double>(c.walkableHeight, detail_plane_offset(pm, *dmesh, i, plane));
         std::unique_ptr<rcPolyMeshDetail, DetailDel> best;
         rcConfig fine = c;
-        bool full = dmesh->meshes[static_cast<size_t>(i) * 4 + 1] >= RECAST_DETAIL_MAX_VERTS;
+        const unsigned int* recast = &dmesh->meshes[static_cast<size_t>(i) * 4];
+        bool full = recast[1] >= RECAST_DETAIL_MAX_VERTS;
+        // At Recast's own spacing the rebuild is Recast's detail again (rcBuildPolyMeshDetail details each
+        // polygon on its own), so only shortest_hull_triangulation could change it: start at half the
+        // spacing when it would not.
+        if (!detail_on_outline(pm, i, &dmesh->verts[static_cast<size_t>(recast[0]) * 3], static_cast<int>(recast[1]))) {
+            fine.detailSampleDist /= 2;
+            fine.detailSampleMaxError /= 2;
+        }
         for (; gap > c.walkableClimb && !full && fine.detailSampleDist >= c.cs;
              fine.detailSampleDist /= 2, fine.detailSampleMaxError /= 2) {
             std::unique_ptr<rcPolyMeshDetail, DetailDel> one(rcAllocPolyMeshDetail());

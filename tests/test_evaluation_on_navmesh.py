@@ -98,7 +98,8 @@ def test_the_sampling_route_is_carried_to_the_polygons_the_samples_stand_on(regi
     result = run(registry, mesh, "map_analysis_sampling")
     assert result.context.navmesh is None
     surface = evaluation.navmesh_surface(result, evaluation.reference_flow(result))
-    navmesh = build_navmesh(mesh.vertices, mesh.faces, result.context.agent, navmesh_builder.Params())
+    navmesh = build_navmesh(mesh.vertices, mesh.faces, result.context.agent,
+                            navmesh_builder.Params(ledge_filter=evaluation.REFERENCE_LEDGE_FILTER))
     assert traffic.surface_arrays(surface.graph).n == navmesh.polygon_count  # no crest: no portal node
     positions = np.array([result.graph.nodes[n]["pos"] for n in traffic.surface_arrays(result.graph).nodes])
     outlines = [navmesh.vertices[row[row >= 0]] for row in navmesh.polygons]
@@ -135,14 +136,14 @@ def floors_joined_by_a_ramp(degrees: float) -> tuple[trimesh.Trimesh, np.ndarray
 
 
 @pytest.mark.parametrize("degrees, default_grid_joins", [(33.0, True), (40.0, False), (44.0, False)])
-def test_the_reference_navmesh_cuts_slopes_under_max_slope_that_the_sampler_walks(degrees, default_grid_joins):
+def test_the_default_grid_cuts_slopes_under_max_slope_that_the_sampler_walks(degrees, default_grid_joins):
     # Recast's ledge filter drops a span whose walkable neighbours differ in height by more than the climb: on the
     # navmesh builder's default grid (cells 0.25 m, climb 3 cells of 0.125 m) a slope that rises more than 0.375 m
     # across two cells, steeper than atan(0.375 / 0.5) = 36.9 degrees (where the cells' rounding falls worst),
     # under the presets' 45. The sampler walks up to the agent's 45 degrees, and so does a grid of 0.125 m cells
     # (limit atan(0.375 / 0.25) = 56.3 degrees), and the default grid with the filter's first rule alone
-    # (ledge_filter: drops). docs/analysis_quality.md, "The sampling route on slopes"; docs/navmesh.md, "A ledge
-    # filter of our own".
+    # (ledge_filter: drops, which the evaluator's reference navmesh takes: the test below). docs/analysis_quality.md,
+    # "The sampling route on slopes"; docs/navmesh.md, "A ledge filter of our own".
     mesh, ends = floors_joined_by_a_ramp(degrees)
     agent = AgentConfig()
     assert agent.max_slope == 45.0 and agent.radius == 0.5 and agent.max_climb == 0.4
@@ -157,3 +158,20 @@ def test_the_reference_navmesh_cuts_slopes_under_max_slope_that_the_sampler_walk
         assert (polygons >= 0).all()
         graph = navmesh_builder.navmesh_graph(navmesh, agent, params.max_edge_gap)
         assert nx.has_path(graph, *polygons.tolist()) is joins, params.cell_size
+
+
+@pytest.mark.parametrize("degrees", [33.0, 40.0, 44.0])
+def test_the_reference_navmesh_walks_the_slopes_the_sampler_walks(registry, degrees):
+    # the sampling route's reference navmesh takes the ledge filter's first rule alone (REFERENCE_LEDGE_FILTER, as
+    # map_analysis), so the ramps the builder's default cuts above join its floors, as on the sampled graph
+    mesh, ends = floors_joined_by_a_ramp(degrees)
+    result = run(registry, mesh, "map_analysis_sampling")
+    assert result.context.navmesh is None
+    surface = evaluation.navmesh_surface(result, evaluation.reference_flow(result))
+    params = navmesh_builder.Params(ledge_filter=evaluation.REFERENCE_LEDGE_FILTER)
+    navmesh = build_navmesh(mesh.vertices, mesh.faces, result.context.agent, params)
+    assert nx.utils.graphs_equal(surface.graph, navmesh_builder.navmesh_graph(navmesh, result.context.agent,
+                                                                              params.max_edge_gap))
+    polygons = evaluation.polygons_under(navmesh, ends)  # a polygon node's id is its polygon's index
+    assert (polygons >= 0).all()
+    assert nx.has_path(surface.graph, *polygons.tolist())

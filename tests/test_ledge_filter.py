@@ -37,8 +37,9 @@ def test_the_benchmark_grids_are_the_presets(preset):
         agent.radius, agent.height, agent.max_climb, agent.max_slope)
     given = config.graph.params or {}
     assert {k: given[k] for k in given if k in params} == params and set(params) <= set(given)
-    # map_analysis keeps Recast's filter on CPU time; map_piece takes drops (docs/navmesh.md, "A ledge filter of our own")
-    assert given.get("ledge_filter", "recast") == {"map_analysis": "recast", "map_piece": "drops"}[preset]
+    # both take drops (docs/navmesh.md, "A ledge filter of our own" and "Where the slopes' CPU goes; map_analysis takes
+    # drops"); the builder's default stays Recast's
+    assert given.get("ledge_filter", "recast") == "drops"
 
 
 @pytest.mark.parametrize("grid, degrees, joins", [
