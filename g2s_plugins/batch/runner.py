@@ -239,7 +239,8 @@ def expand_inputs(inputs: Sequence[str], exclude: Path | None = None) -> list[tu
     letters, digits, ``.`` ``_`` ``-`` turned to ``_``.
 
     Raises:
-        G2SError: an input matches nothing, or two levels get the same name.
+        G2SError: an input matches nothing, two levels get the same name, a level's name cannot name its results
+            folder (:func:`_check_folder_name`), or a folder under an input folder cannot be read.
     """
     levels: dict[str, str] = {}
 
@@ -281,8 +282,9 @@ def expand_inputs(inputs: Sequence[str], exclude: Path | None = None) -> list[tu
 def _check_folder_name(name: str, what: str, origin: str, taken: Sequence[str] = ()) -> None:
     """Refuse a config's or level's name that cannot name its results folder: ``..`` (a file ``...obj``, a config
     ``...yaml``) put them beside ``OUTDIR`` or a config's folder, ``.`` into it, and a config named ``summary.csv``
-    (``summary.parquet``, ``.g2s-batch``) took the name of the batch's own file (an internal error after every run)."""
-    if name in (".", "..", *taken):
+    (``summary.parquet``, ``.g2s-batch``) took the name of the batch's own file (an internal error after every run).
+    A folder's level is named by its path in the folder, so each part of it counts (``act1/...obj`` is ``act1/..``)."""
+    if not {".", ".."}.isdisjoint(name.split("/")) or name in taken:
         raise G2SError(f"{origin}: {what} name {name!r} cannot name the folder of its results (not "
                        f"{', '.join(repr(n) for n in ('.', '..', *taken))}); rename the file")
 

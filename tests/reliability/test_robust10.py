@@ -73,6 +73,17 @@ def test_a_batch_refuses_a_name_that_cannot_name_a_results_folder(config, level,
     assert tree(tmp_path / "out") == [] and sorted(os.listdir(tmp_path)) == before
 
 
+@pytest.mark.parametrize("level", ["act1/...obj", "act1/..obj"])
+def test_a_batch_refuses_a_folders_level_whose_path_holds_a_dot_part(level, tmp_path, capsys):
+    # a folder's level is named by its path in the folder: act1/...obj, named "act1/..", wrote its results into its
+    # config's folder itself (review29)
+    (tmp_path / "levels" / "act1").mkdir(parents=True)
+    (tmp_path / "levels" / level).write_text(FLOOR)
+    outcome = run_g2s(capsys, "batch", "graph_only", tmp_path / "levels", "-o", tmp_path / "out", "--executor", "serial")
+    assert "cannot name the folder of its results (not '.', '..'" in assert_clean_error(outcome)
+    assert tree(tmp_path / "out") == []
+
+
 def _bad_level(folder, name: str):
     path = folder / name
     path.write_text("v 0 0 0\nf 1 2 9\n")
