@@ -3769,7 +3769,7 @@ def aqueduct(seed: int) -> trimesh.Trimesh:
         if _clear(x - 1.0, x + 3.0, z - 0.5, z + 2.0, kept + [(a + 1.0, b - 1.0, 0.0, size_z) for a, b in through]):
             s.box(x, x + 2.0, 0.0, 0.9, z, z + 1.5)
     s.ground(west, east, 0.0, size_z, 0.0, holes)
-    # the upper towns: a street on the bridge's line, a row of houses either side, an open square beyond
+    # the upper towns: a street on the bridge's line, two rows of houses either side with a back lane between, open ground beyond
     for t0, t1, h0, h1 in ((west - 40.0, west, 1.0, 6.0), (east, east + 40.0, 6.0, 1.0)):  # a street 5 m wide on the cliff
         houses = []
         for z0, z1 in ((deck[1] + 0.25, deck[1] + 10.0), (deck[1] + 15.0, deck[1] + 25.0), (deck[0] - 10.0, deck[0] - 0.25),
@@ -3786,7 +3786,7 @@ def warehouse(seed: int) -> trimesh.Trimesh:
     North of a staging strip 16 m deep along the dock wall, racking 9.8 m high (to 1 m under the roof; the floor
     stops under it) in double rows 2.4 m deep, single rows along the walls, with aisles 3-3.4 m wide along z and two
     cross aisles 4 m wide (the northern band's rows reach the north wall: its aisles are dead ends); in the north-west corner a mezzanine 4.2 m up (18-24 x 14 m, posts on a 5 m grid, rails,
-    low shelving, one straight flight) over open floor; pallet stacks 1.5 m high, at least 1.2 m apart, on the staging strip. The south
+    low shelving, one straight flight) over open floor; pallet stacks 1.5 m high, at least 1.2 m apart, on the staging strip and under the mezzanine. The south
     wall has 8-10 dock doors 3.5 m wide: the eastern two open on an apron at dock height with a ramp (1 in 10) down
     to the yard, the rest on the 1.2 m drop, half of them with a trailer backed up (ridged, floating on no
     wheels), and a row of parked trailers across the yard. A personnel door in the west wall with steps down to the yard. The yard runs 30 m south of the dock
