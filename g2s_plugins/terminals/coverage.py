@@ -202,6 +202,8 @@ def dead_end_places(adjacency: sp.csr_array, area: np.ndarray, leaves: np.ndarra
     within ``reach`` metres of its entrance; of the leaves of one such piece
     the farthest from the roots stays. O(m + n log n).
     """
+    if len(leaves) < 2:  # nothing to merge
+        return np.sort(leaves)
     n = adjacency.shape[0]
     upper = sp.triu(adjacency, k=1).tocoo()
     graph = rx.PyGraph(multigraph=False)
@@ -212,13 +214,12 @@ def dead_end_places(adjacency: sp.csr_array, area: np.ndarray, leaves: np.ndarra
     if len(bridges):
         keys = upper.row.astype(np.int64) * n + upper.col
         is_bridge = np.isin(keys, bridges[:, 0] * n + bridges[:, 1])
-    kept = ~is_bridge
-    inside = sp.csr_array((np.ones(int(kept.sum())), (upper.row[kept], upper.col[kept])), shape=(n, n))
+    inside = sp.csr_array((np.ones(int((~is_bridge).sum())), (upper.row[~is_bridge], upper.col[~is_bridge])), shape=(n, n))
     blocks, block = csgraph.connected_components(inside, directed=False)
     block_area = np.bincount(block, weights=area, minlength=blocks)
     ends = block[bridges]  # (b, 2) the blocks each bridge joins
     # the tree of blocks plus one extra node joined to the root block of every connected area
-    trees, tree = csgraph.connected_components(
+    _, tree = csgraph.connected_components(
         sp.csr_array((np.ones(len(ends)), (ends[:, 0], ends[:, 1])), shape=(blocks, blocks)), directed=False)
     order = np.lexsort((np.arange(blocks), -block_area, tree))
     roots = order[np.unique(tree[order], return_index=True)[1]]
@@ -236,11 +237,11 @@ def dead_end_places(adjacency: sp.csr_array, area: np.ndarray, leaves: np.ndarra
     for b in visit[::-1]:  # children before parents
         if parent[b] < blocks:
             farthest[parent[b]] = max(farthest[parent[b]], farthest[b])
-    small = (entrance >= 0) & (farthest - distance[np.maximum(entrance, 0)] <= reach)
+    within_reach = (entrance >= 0) & (farthest - distance[np.maximum(entrance, 0)] <= reach)
     place = np.full(blocks, -1, dtype=np.int64)
-    for b in visit.tolist():  # parents before children: a piece inside a small piece takes its place
+    for b in visit.tolist():  # parents before children: a piece inside a piece within reach takes its place
         up = parent[b]
-        place[b] = place[up] if up < blocks and place[up] >= 0 else (b if small[b] else -1)
+        place[b] = place[up] if up < blocks and place[up] >= 0 else (b if within_reach[b] else -1)
     owner = place[block[leaves]]
     alone = leaves[owner < 0]
     grouped = leaves[owner >= 0]
