@@ -65,14 +65,18 @@ def ladder_hole_cellar() -> SampleLevel:
     return _level("ladder_hole_cellar", parts, [_opening((-0.3, 0.0, 3.0), _W, 1.6), _opening((8.3, 0.0, 3.0), _E, 1.6)])
 
 
-def basement_stair() -> SampleLevel:
-    """Room 8 x 6 m at the ground, a west doorway; east a doorway onto ten steps down a trench whose bottom tread,
-    2 m down, is the piece's east edge."""
+def basement_stair(riser: float = 0.2, steps: int = 10, landing: float = 0.0) -> SampleLevel:
+    """Room 8 x 6 m at the ground, a west doorway; east a doorway onto ``steps`` steps down (``riser`` m, 0.3 m
+    treads) in a trench, then a landing ``landing`` m deep; the bottom tread's (or the landing's) end is the piece's
+    east edge."""
     parts = _room(8.0, 6.0, {"W": [(2.2, 3.8, 3.0)], "E": [(2.2, 3.8, 2.2)]})
-    for i in range(10):  # treads 0.3 m deep, tops -0.2 ... -2.0 m
-        parts.append(_box(8.3 + 0.3 * i, 8.6 + 0.3 * i, -2.0 - SLAB, -0.2 * (i + 1), 2.2, 3.8))
-    parts += [_box(8.3, 11.3, -2.0 - SLAB, 1.0, 2.0, 2.2), _box(8.3, 11.3, -2.0 - SLAB, 1.0, 3.8, 4.0)]  # the trench
-    return _level("basement_stair", parts, [_opening((-0.3, 0.0, 3.0), _W, 1.6), _opening((11.3, -2.0, 3.0), _E, 1.6)])
+    bottom, end = -riser * steps, 8.3 + 0.3 * steps + landing
+    for i in range(steps):  # treads 0.3 m deep, tops -riser ... bottom
+        parts.append(_box(8.3 + 0.3 * i, 8.6 + 0.3 * i, bottom - SLAB, -riser * (i + 1), 2.2, 3.8))
+    if landing:
+        parts.append(_box(end - landing, end, bottom - SLAB, bottom, 2.2, 3.8))
+    parts += [_box(8.3, end, bottom - SLAB, 1.0, 2.0, 2.2), _box(8.3, end, bottom - SLAB, 1.0, 3.8, 4.0)]  # the trench
+    return _level("basement_stair", parts, [_opening((-0.3, 0.0, 3.0), _W, 1.6), _opening((end, bottom, 3.0), _E, 1.6)])
 
 
 def edge_bend_corridor() -> SampleLevel:

@@ -313,6 +313,7 @@ class _Ways:
     direction: np.ndarray  # (M,3) the way out (unit, surface plane)
     edge: np.ndarray  # (M,3) where the surface ends along it
     stepped: np.ndarray  # (M,) bool: the way out starts on a step up (``base`` is on its top)
+    drop: np.ndarray  # (M,) how far below ``base`` the way out ends, down steps (else 0), m
 
 
 def _walkable(caster: RayCaster, face: np.ndarray, s: _Settings) -> np.ndarray:
@@ -357,8 +358,10 @@ def _snap(
 
 def _surface_ends(
     caster: RayCaster, origins: np.ndarray, directions: np.ndarray, down: np.ndarray, s: _Settings, reach: float
-) -> np.ndarray:
-    """(n,) distance along each direction where the surface under the lifted origins ends (NaN: not within reach).
+) -> tuple[np.ndarray, np.ndarray]:
+    """(n,) distance along each direction where the surface under the lifted origins ends (NaN: not within reach),
+    and (n,) how far below the origin's ground the surface ends there, m, where the way went down steps
+    (:func:`_down_steps`), else 0.
 
     Only faces the agent can walk count as surface: on a floor sloping down out of the piece the probes,
     cast along its tilted normal, would otherwise meet the slab's own end face below the floor's edge
@@ -369,6 +372,7 @@ def _surface_ends(
     n_off = max(1, int(math.ceil(steps)))
     offsets = s.delta * np.arange(1, n_off + 1)
     lo = np.full(len(origins), np.nan)
+    drop = np.zeros(len(origins))  # how far the ground stood on last lies below the origin's, down a stair only
     batch = max(1, _MAX_PROBE_RAYS // n_off)
     for begin in range(0, len(origins), batch):
         part = slice(begin, begin + batch)
@@ -385,26 +389,61 @@ def _surface_ends(
             caster, probes[rows], probe_down[rows], [side], s.lift + s.climb, lambda faces: _walkable(caster, faces, s)
         )[0]
         missing = missing.reshape(-1, n_off)
+        missing, before = _down_steps(missing, hits.distance.reshape(-1, n_off) - s.lift,
+                                      _walkable(caster, hits.face, s).reshape(-1, n_off), s.climb)
         # The surface ends where two probes in a row find none: a crack narrower than a search step
         # (unwelded floor tiles) is no edge, and neither the agent nor Recast's voxels see it.
         missing[:, :-1] &= missing[:, 1:]
-        lo[part] = np.where(missing.any(axis=1), np.argmax(missing, axis=1) * s.delta, np.nan)
+        end = np.argmax(missing, axis=1)
+        lo[part] = np.where(missing.any(axis=1), end * s.delta, np.nan)
+        drop[part] = before[np.arange(len(end)), end]
     hi = lo + s.delta
     rows = np.nonzero(np.isfinite(lo))[0]
     for _ in range(_REFINE_ROUNDS):  # bisection between the last offset with surface and the first without
         mid = 0.5 * (lo[rows] + hi[rows])
         probe = origins[rows] + directions[rows] * mid[:, None]
         hit = caster.first_hits(probe, down[rows])
-        on = (hit.distance <= s.lift + s.climb) & _walkable(caster, hit.face, s)
+        on = (hit.distance <= s.lift + s.climb + drop[rows]) & _walkable(caster, hit.face, s)
         lo[rows] = np.where(on, mid, lo[rows])
         hi[rows] = np.where(on, hi[rows], mid)
-    return 0.5 * (lo + hi)
+    return 0.5 * (lo + hi), np.where(np.isfinite(lo), drop, 0.0)
+
+
+def _down_steps(
+    missing: np.ndarray, depth: np.ndarray, walkable: np.ndarray, climb: float
+) -> tuple[np.ndarray, np.ndarray]:
+    """The probes of a way out that walk down steps, each within the climb of the ground stood on before it.
+
+    ``missing`` (n, k): the probes finding no ground within the climb of the origin's (along the way, k
+    probes a search step apart); ``depth`` (n, k): how far each probe's ground lies below the origin's, m
+    (inf: none); ``walkable`` (n, k): its face within the agent's slope. A stair going down off the piece's
+    edge drops more than the climb within the search's reach: measured from the origin alone, a sample on
+    its side saw the floor end at the first riser that took it past the climb, one or two treads short of the
+    stair's end, and a segment's edge points lay on several risers (docs/entry_exit.md, "A twelfth round of
+    piece kinds"). Walking the probes in order, one whose ground lies within the climb of the last ground
+    stood on stands on the surface. Returns ``missing`` with those probes found and (n, k) the depth of the
+    last ground stood on before each probe where a probe of its row was found so, else 0 (the reach of the
+    bisection that follows: the same as before for every other row). O(n k).
+    """
+    missing = missing.copy()
+    last = np.zeros(len(depth))  # depth of the last ground stood on
+    before = np.zeros(depth.shape)
+    followed = np.zeros(len(depth), dtype=bool)
+    for j in range(depth.shape[1]):
+        before[:, j] = last
+        grounded = walkable[:, j] & np.isfinite(depth[:, j])
+        down = missing[:, j] & grounded & (depth[:, j] - last <= climb)
+        missing[:, j] &= ~down
+        followed |= down
+        last = np.where(~missing[:, j] & grounded, depth[:, j], last)
+    return missing, np.where(followed[:, None], before, 0.0)
 
 
 def _fan(
     base: np.ndarray, normal: np.ndarray, tangent: np.ndarray, caster: RayCaster, s: _Settings, params: Params
-) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """The way out of each point of ``base`` (step 3): (M,) found, (M,3) direction, (M,) distance to the edge."""
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """The way out of each point of ``base`` (step 3): (M,) found, (M,3) direction, (M,) distance to the edge,
+    (M,) how far below the point's ground the surface ends there (down steps, else 0)."""
     outward = np.cross(tangent, normal)  # the walkable side is on the left of the tangent
     m, k = len(base), int(params.fan_count)
     half = math.radians(float(params.fan_half_angle_deg))
@@ -414,9 +453,9 @@ def _fan(
     lifted = np.repeat(base + normal * s.lift, k, axis=0)
     down = np.repeat(-normal, k, axis=0)
     clear = caster.first_hits(lifted, dirs).distance > float(params.outward_radii) * s.radius
-    edge = np.full(m * k, np.nan)
+    edge, drop = np.full(m * k, np.nan), np.zeros(m * k)
     todo = np.nonzero(clear)[0]
-    edge[todo] = _surface_ends(
+    edge[todo], drop[todo] = _surface_ends(
         caster, lifted[todo], dirs[todo], down[todo], s, float(params.edge_search_radii) * s.radius
     )
     ok = np.isfinite(edge)
@@ -450,7 +489,7 @@ def _fan(
     pick = np.argmin(cost, axis=1)
     found = np.isfinite(cost[np.arange(m), pick])
     chosen = np.arange(m) * k + pick
-    return found, dirs[chosen], np.nan_to_num(edge[chosen])
+    return found, dirs[chosen], np.nan_to_num(edge[chosen]), np.where(found, drop[chosen], 0.0)
 
 
 def _step_tops(
@@ -485,18 +524,19 @@ def _ways_out(
 ) -> _Ways:
     base, normal = _snap(samples, polygon_normals, caster, s)
     tangent = _unit(samples.tangent - np.einsum("ij,ij->i", samples.tangent, normal)[:, None] * normal)
-    found, direction, reach = _fan(base, normal, tangent, caster, s, params)
+    found, direction, reach, drop = _fan(base, normal, tangent, caster, s, params)
     stepped = np.zeros(len(base), dtype=bool)
     if params.step_up:
         rows = np.nonzero(~found)[0]
         near, top = _step_tops(base[rows], normal[rows], np.cross(tangent[rows], normal[rows]), caster, s, params)
         rows, top = rows[near], top[near]
         if len(rows):
-            up_found, up_direction, up_reach = _fan(top, normal[rows], tangent[rows], caster, s, params)
+            up_found, up_direction, up_reach, up_drop = _fan(top, normal[rows], tangent[rows], caster, s, params)
             rows, top = rows[up_found], top[up_found]
             base[rows], found[rows], stepped[rows] = top, True, True
-            direction[rows], reach[rows] = up_direction[up_found], up_reach[up_found]
-    return _Ways(base, normal, tangent, found, direction, base + direction * reach[:, None], stepped)
+            direction[rows], reach[rows], drop[rows] = up_direction[up_found], up_reach[up_found], up_drop[up_found]
+    edge = base + direction * reach[:, None]
+    return _Ways(base, normal, tangent, found, direction, edge, stepped, drop)
 
 
 # --------------------------------------------------------------------------
@@ -749,7 +789,10 @@ def _passages(
     along = _unit(np.cross(nrm, out))
     towards_last = np.einsum("ij,ij->i", along, last - first) >= 0.0
     mid = 0.5 * (first + last)
-    deep = np.array([np.median(np.linalg.norm(ways.edge[e.samples] - ways.base[e.samples], axis=1)) for e in kept])
+    # A way down steps has no wall of one level to measure across (the rays from its end would run into the
+    # treads behind it): its passage is not narrowed.
+    reach = np.where(ways.drop > 0.0, 0.0, np.linalg.norm(ways.edge - ways.base, axis=1))
+    deep = np.array([np.median(reach[e.samples]) for e in kept])
     widths, back, ahead = np.full(len(kept), np.inf), np.full(len(kept), np.inf), np.full(len(kept), np.inf)
     for k in range(1, int(math.ceil(float(deep.max(initial=0.0)) / s.delta)) + 1):
         rows = np.nonzero(k * s.delta <= deep)[0]
