@@ -731,7 +731,28 @@ def _onto_grazed_step(points: np.ndarray, out: np.ndarray, caster: RayCaster, s:
     return raised
 
 
-def _extend(kept: list[_Edge], caster: RayCaster, s: _Settings) -> tuple[np.ndarray, np.ndarray]:
+def _onto_ground_below(points: np.ndarray, out: np.ndarray, depth: np.ndarray, caster: RayCaster,
+                       s: _Settings) -> np.ndarray:
+    """(n,3) ``points`` (on edges) lowered onto the walkable ground just inside them, at most ``depth`` (n,) m below.
+
+    An edge found down steps (:func:`_down_steps`) lies at its samples' heights, a tread or more above the floor
+    that ends there (a stair going down off the piece: 0.4 m above its foot), where the extension's candidates
+    find no floor within the climb. Probed straight down from the rays' height, half a search step inside the edge;
+    ``depth`` 0 leaves a point as it is.
+    """
+    inset = _INSET_STEPS * s.delta
+    rows = np.flatnonzero(depth > 0.0)
+    lowered = points.copy()
+    if not len(rows):
+        return lowered
+    hit = caster.first_hits(points[rows] - out[rows] * inset + UP * s.lift, np.broadcast_to(-UP, (len(rows), 3)).copy())
+    ground = np.isfinite(hit.distance) & (hit.distance <= s.lift + depth[rows]) & _walkable(caster, hit.face, s)
+    lowered[rows[ground], 1] -= hit.distance[ground] - s.lift
+    return lowered
+
+
+def _extend(kept: list[_Edge], caster: RayCaster, s: _Settings,
+            depth: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
     """The ends of each opening, extended along its edge (one batched pass per test): (n,3) and (n,3).
 
     Candidates just inside the edge, beyond both ends: the surface must go on under them, the
@@ -739,6 +760,8 @@ def _extend(kept: list[_Edge], caster: RayCaster, s: _Settings) -> tuple[np.ndar
     above the edge and probe straight down: lifted along a floor's normal that tilts out of the piece
     (a floor sloping down out of it) they would stand ``lift * sin(slope)`` farther out, outside the
     jambs' faces from 7 degrees on, and the extension would run along the walls' outer faces.
+    ``depth`` (n,): how far below its samples each edge's floor may end, down steps (its ends are first
+    lowered onto that ground, :func:`_onto_ground_below`); None: nowhere.
     """
     n = len(kept)
     out = np.array([e.outward for e in kept])
@@ -746,6 +769,9 @@ def _extend(kept: list[_Edge], caster: RayCaster, s: _Settings) -> tuple[np.ndar
     inset = _INSET_STEPS * s.delta  # candidates stand this far inside the edge line
     first = _onto_grazed_step(np.array([e.first for e in kept]), out, caster, s)
     last = _onto_grazed_step(np.array([e.last for e in kept]), out, caster, s)
+    if depth is not None:
+        first = _onto_ground_below(first, out, depth, caster, s)
+        last = _onto_ground_below(last, out, depth, caster, s)
     along = _unit(np.cross(nrm, out))  # walking direction along the edge (interior on the left)
     n_ext = max(1, int(math.ceil((2.0 * s.radius + s.step) / s.delta)))
     steps = s.delta * np.arange(1, n_ext + 1)
@@ -1119,7 +1145,8 @@ def detect_openings(
     kept = _split_at_piers(_match_edges(segments, ways, s, params), ways, caster, s)
     if not kept:
         return Detection((), (), ())
-    p_first, p_last = _extend(kept, caster, s)
+    # How far down steps the edges' samples found the floor ending (the deepest; 0 for a floor's own level).
+    p_first, p_last = _extend(kept, caster, s, np.array([ways.drop[e.samples].max() for e in kept]))
 
     corners = np.asarray(mesh.triangles, dtype=np.float64)
     frame = piece_frame(mesh)
