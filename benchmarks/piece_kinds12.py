@@ -79,13 +79,16 @@ def basement_stair(riser: float = 0.2, steps: int = 10, landing: float = 0.0) ->
     return _level("basement_stair", parts, [_opening((-0.3, 0.0, 3.0), _W, 1.6), _opening((end, bottom, 3.0), _E, 1.6)])
 
 
-def edge_bend_corridor() -> SampleLevel:
-    """Room 8 x 6 m, a west doorway; east a corridor 2.4 m wide to a closed end at the piece's east edge, where it
-    turns right (south): its south wall open over the last 2.4 m, nothing beyond."""
-    parts = _room(8.0, 6.0, {"W": [(2.2, 3.8, 3.0)], "E": [(1.8, 4.2, 3.0)]})
-    parts += [_box(8.3, 14.3, -SLAB, 0.0, 1.5, 4.5), _box(8.3, 14.3, -SLAB, 3.0, 4.2, 4.5),
-              _box(8.3, 11.6, -SLAB, 3.0, 1.5, 1.8), _box(14.0, 14.3, -SLAB, 3.0, 1.5, 4.2)]
-    return _level("edge_bend_corridor", parts, [_opening((-0.3, 0.0, 3.0), _W, 1.6), _opening((12.8, 0.0, 1.5), _S, 2.4)])
+def edge_bend_corridor(width: float = 2.4, depth: float = 6.0) -> SampleLevel:
+    """Room 8 x ``depth`` m, a west doorway; east a corridor ``width`` m wide (centred on the room) to a closed end at
+    the piece's east edge, where it turns right (south): its south wall open over the last ``width`` m, nothing beyond.
+    The room stands out ``(depth - width) / 2`` m beside the mouth."""
+    z0, z1, x1 = depth / 2 - width / 2, depth / 2 + width / 2, 14.0
+    parts = _room(8.0, depth, {"W": [(depth / 2 - 0.8, depth / 2 + 0.8, 3.0)], "E": [(z0, z1, 3.0)]})
+    parts += [_box(8.3, x1 + 0.3, -SLAB, 0.0, z0 - 0.3, z1 + 0.3), _box(8.3, x1 + 0.3, -SLAB, 3.0, z1, z1 + 0.3),
+              _box(8.3, x1 - width, -SLAB, 3.0, z0 - 0.3, z0), _box(x1, x1 + 0.3, -SLAB, 3.0, z0 - 0.3, z1)]
+    return _level("edge_bend_corridor", parts, [_opening((-0.3, 0.0, depth / 2), _W, 1.6),
+                                                _opening((x1 - width / 2, 0.0, z0 - 0.3), _S, width)])
 
 
 def terrace_step(step: float = 0.3) -> SampleLevel:

@@ -1046,6 +1046,25 @@ def corners_below(corners: np.ndarray, top: float) -> np.ndarray:
     return corners[corners[:, :, 1].min(axis=1) <= top].reshape(-1, 3)
 
 
+def straight_ahead(vertices: np.ndarray, a: np.ndarray, b: np.ndarray, heading: np.ndarray, margin: float) -> np.ndarray:
+    """(k, 3) the corners of the triangles among ``vertices`` ((3 m, 3), three corners a triangle, as
+    :func:`corners_below` gives them) that lie straight ahead of the opening from ``a`` to ``b``: whose span along
+    the opening overlaps its own by more than ``margin`` m (a jamb's face, flush with the opening's end, does not).
+
+    A doorway between jambs leads out of the piece whatever stands beside it: a corridor turning at the piece's edge
+    opens sideways with the room it leaves standing out 1.8 m beside its mouth (docs/entry_exit.md, "A twelfth
+    round of piece kinds"). A triangle reaching across the opening's span counts whole, so a large one reaching
+    both ahead and aside counts its farthest corner (the gap is never under-measured for lack of corners).
+    """
+    tri = vertices.reshape(-1, 3, 3)
+    along = np.cross(UP, heading)
+    along = along / max(float(np.linalg.norm(along)), 1e-12)
+    lo, hi = sorted((float(a @ along), float(b @ along)))
+    span = tri @ along
+    keep = (span.max(axis=1) > lo + margin) & (span.min(axis=1) < hi - margin)
+    return tri[keep].reshape(-1, 3)
+
+
 def extent_gap(vertices: np.ndarray, point: np.ndarray, heading: np.ndarray, frame: np.ndarray) -> float:
     """How far ``point`` lies inside the extent of ``vertices`` along the horizontal unit ``heading``, m.
 
@@ -1154,8 +1173,10 @@ def detect_openings(
     max_gap = None if params.extent_heights is None else float(params.extent_heights) * s.height
     max_slope = None if params.max_slope_deg is None else math.radians(float(params.max_slope_deg))
 
-    def scored(e: _Edge, a: np.ndarray, b: np.ndarray) -> Opening | None:
-        """The opening between ``a`` and ``b`` on ``e``'s edge with its score; None when the outer-extent prior drops it."""
+    def scored(e: _Edge, a: np.ndarray, b: np.ndarray, framed: bool) -> Opening | None:
+        """The opening between ``a`` and ``b`` on ``e``'s edge with its score; None when the outer-extent prior drops it.
+
+        ``framed``: between jambs, whose extent is measured over what lies straight ahead of it alone."""
         width = float(np.linalg.norm(b - a))
         heading = e.outward.copy()
         heading[1] = 0.0
@@ -1169,7 +1190,10 @@ def detect_openings(
             square = _unit(np.cross(plan, UP))
             heading = square if np.dot(square, heading) >= 0.0 else -square
         mid = (a + b) / 2.0
-        gap = max(0.0, extent_gap(corners_below(corners, mid[1] + s.height), mid, heading, frame))
+        below = corners_below(corners, mid[1] + s.height)
+        if framed:
+            below = straight_ahead(below, a, b, heading, s.delta)
+        gap = max(0.0, extent_gap(below, mid, heading, frame))
         if max_gap is not None and gap > max_gap:
             return None
         extent_factor = 1.0 if max_gap is None else 1.0 - gap / max_gap
@@ -1189,6 +1213,7 @@ def detect_openings(
     p_first, p_last = _free_part(p_first, p_last, back, ahead)
     found: list[tuple[Opening, tuple[int, ...], tuple[float, float, float]]] = []
     edges: list[_Edge] = []
+    framed_of: list[bool] = []
     for e, a, b, framed, passage in zip(kept, p_first, p_last, jambs, passages):
         if min(float(np.linalg.norm(b - a)), passage) < min_width + _SAME_WIDTH:
             continue
@@ -1197,12 +1222,13 @@ def detect_openings(
         d = b - a
         if max_slope is not None and math.atan2(abs(d[1]), math.hypot(d[0], d[2])) > max_slope + 1e-12:
             continue
-        opening = scored(e, a, b)
+        opening = scored(e, a, b, bool(framed))
         if opening is None:
             continue
         polys = tuple(sorted(set(samples.polygon[e.samples].tolist())))
         found.append((opening, polys, vec3(e.normal)))
         edges.append(e)
+        framed_of.append(bool(framed))
     # An opening found again is one with the wider one, which spans both; again until none is left,
     # since a union can reach one that overlapped none of its parts (a plaza's side on the sampling
     # route: parts 3.28-9.98 and 0.54-3.37 m along it, then one at 0.17-2.80 m). Each pass drops
@@ -1214,12 +1240,13 @@ def detect_openings(
         for i in sorted(set(into[into >= 0].tolist())):
             parts = [found[j] for j in np.flatnonzero(into == i)]
             ends = _union_ends(found[i][0], [f[0] for f in parts])
-            union = None if ends is None else scored(edges[i], *ends)
+            union = None if ends is None else scored(edges[i], *ends, framed_of[i])
             if union is not None:
                 polys = tuple(sorted(set(found[i][1]).union(*(f[1] for f in parts))))
                 found[i] = (union, polys, found[i][2])
         found = [f for f, again in zip(found, into) if again < 0]
         edges = [e for e, again in zip(edges, into) if again < 0]
+        framed_of = [f for f, again in zip(framed_of, into) if again < 0]
     found = [f for f in found if f[0].score >= float(params.min_score) - 1e-12]
     if params.best is not None and len(found) > params.best:
         order = sorted(range(len(found)), key=lambda i: (-found[i][0].score, i))[: params.best]
