@@ -540,3 +540,40 @@ def test_a_stair_down_off_the_edge_gives_its_foot(riser: float, yaw: float) -> N
     # before the extension (at the samples' height it found no floor within the climb: 1.1-1.5 m of 1.6).
     mesh = _stair_down_off_the_edge(riser)
     _assert_known_turned(mesh, yaw, [[-0.3, 0.0, 3.0], [8.3 + 0.3 * 10, -10 * riser, 3.0]], 1.6)
+
+
+def _corridor_turning_at_the_edge(width: float = 2.4, depth: float = 6.0) -> trimesh.Trimesh:
+    """Room 8 x ``depth`` m (walls 0.3 m, a 1.6 m doorway west); east a corridor ``width`` m wide, centred on it, to a
+    closed end at x 14.3 where it turns south: its south wall open over the last ``width`` m, nothing beyond."""
+    z0, z1 = depth / 2 - width / 2, depth / 2 + width / 2
+    gaps = {"W": [(depth / 2 - 0.8, depth / 2 + 0.8, 0.0, TALL)], "E": [(z0, z1, 0.0, TALL)]}
+    parts = [_box(-0.3, 8.3, -SLAB, 0.0, -0.3, depth + 0.3)]
+    parts += [_box(*b) for b in pieces._wall_boxes(8.0, depth, 0.3, gaps, TALL, 0.0)]
+    parts += [_box(8.3, 14.3, -SLAB, 0.0, z0 - 0.3, z1 + 0.3), _box(8.3, 14.3, -SLAB, TALL, z1, z1 + 0.3),
+              _box(8.3, 14.0 - width, -SLAB, TALL, z0 - 0.3, z0), _box(14.0, 14.3, -SLAB, TALL, z0 - 0.3, z1)]
+    return trimesh.util.concatenate(parts)
+
+
+@pytest.mark.parametrize("depth, yaw", [(6.0, 0.0), (6.0, 22.0), (10.0, 45.0)])
+def test_a_corridor_turning_at_the_edge_opens_sideways(depth: float, yaw: float) -> None:
+    # The mouth faces south with the room standing out (depth - 2.4) / 2 m beside it, more than the outer-extent
+    # prior's 1.0 m: it was dropped as inside the piece (twelfth round's `edge_bend_corridor`, both routes, every
+    # yaw). Between jambs, the extent is that of what lies straight ahead of the opening.
+    mesh = _corridor_turning_at_the_edge(depth=depth)
+    turn = pieces.yaw_about_centre(mesh, yaw)
+    mesh.apply_transform(turn)
+    known = trimesh.transform_points(np.array([[-0.3, 0.0, depth / 2], [12.8, 0.0, depth / 2 - 1.5]]), turn)
+    _assert_known(_detect(mesh).openings, list(known), [1.6, 2.4])
+
+
+def test_straight_ahead_keeps_what_lies_across_the_openings_span() -> None:
+    # An opening from x 0 to 2 facing +z: a triangle across it counts, one flush with its end (a jamb's face) and
+    # one beside it do not.
+    tri = np.array([[[0.5, 0.0, 5.0], [1.0, 0.0, 6.0], [1.5, 0.0, 5.0]],  # ahead
+                    [[2.0, 0.0, 0.0], [2.0, 3.0, 0.0], [2.0, 0.0, 4.0]],  # flush with the end at x 2
+                    [[3.0, 0.0, 1.0], [4.0, 0.0, 9.0], [5.0, 0.0, 1.0]],  # beside
+                    [[-4.0, 0.0, 2.0], [6.0, 0.0, 2.0], [6.0, 0.0, 3.0]]])  # reaching across from both sides
+    a, b, heading = np.array([2.0, 0.0, 0.0]), np.array([0.0, 0.0, 0.0]), np.array([0.0, 0.0, 1.0])
+    kept = entry_exit.straight_ahead(tri.reshape(-1, 3), a, b, heading, 0.05).reshape(-1, 3, 3)
+    assert len(kept) == 2
+    assert np.array_equal(kept[0], tri[0]) and np.array_equal(kept[1], tri[3])
