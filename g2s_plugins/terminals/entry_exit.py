@@ -19,7 +19,9 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
    surface ends (the floor's edge, looked for up to ``edge_search_radii * r``
    away: Recast erodes the walkable area by ``r``, so the navmesh boundary
    lies about ``r`` inside the real edge; it ends where two rays in a row meet
-   no walkable face, so a crack between floor tiles is no edge). A direction
+   no walkable face, so a crack between floor tiles is no edge; a ray meets
+   the surface within the climb of the ground the one before it stood on, so
+   the search walks down a stair). A direction
    is a way out when the edge is found, the ray along it stays clear for
    ``outward_radii * r`` (no wall, jamb or curb higher than ``h`` in the
    way), the same way a search step below the agent's height is clear up to
@@ -48,7 +50,8 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
    something stands on it between two free stretches (a pier between two
    doorways the samples saw out through alike), and its ends are raised onto
    a step top just inside them (a riser as high as the rays, which they pass
-   over). The
+   over), or, where its samples walked down steps to it, lowered onto the
+   floor that ends there. The
    opening lies on that line; its ends are extended along the edge while the
    surface goes on inside the edge, ends just outside it, and nothing stands
    in the way or straight out: this undoes the retreat from walls. An
@@ -82,7 +85,10 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
      reaching down to the agent's height over the opening, minus the
      midpoint's: eaves and upper storeys overhanging it do not count; a heading near one of the piece's own horizontal
      axes, taken from its walls, is measured along that axis) must not exceed
-     ``extent_heights`` agent heights.
+     ``extent_heights`` agent heights; an opening between jambs (as for
+     ``step_up``) measures it over the triangles straight ahead of it alone
+     (whose span along the opening overlaps its own), so a room standing out
+     beside a corridor's side mouth does not drop it.
 
    The score is the product of three factors in [0, 1]: the share of edge
    points on the fitted line, ``1 - gap / (extent_heights * height)``, and
@@ -121,7 +127,8 @@ climb) / d across the way for the directions clear so far, two more beyond it
 with ``leave_footprint``: O(S k (edge_search_radii r + agent height) / d) rays (up to twice
 that with ``step_up``, for the samples searched again from a step's top).
 The main floor adds a k-d tree over boundary samples r / 4 apart, the
-repeated openings an O(o^2) comparison, the terminals a k-d tree query each.
+repeated openings an O(o^2) comparison, the openings between jambs O(F) each
+over the mesh's F triangles, the terminals a k-d tree query each.
 """
 
 from __future__ import annotations
