@@ -505,3 +505,75 @@ def test_a_kerb_across_a_tunnels_end_leaves_it_one_opening(kerb: float, yaw: flo
         best = min(found, key=lambda o: float(np.linalg.norm(np.subtract(o.position, end)[[0, 2]])))
         assert float(np.linalg.norm(np.subtract(best.position, end)[[0, 2]])) <= 0.05
         assert best.width == pytest.approx(4.0, abs=0.05)
+
+
+def test_probes_walk_down_steps_within_the_climb_of_the_last_ground() -> None:
+    # Two ways out, probes a search step apart: one down 0.2 m steps (each within the 0.4 m climb of the one
+    # before, 0.6 m below the origin from the third on), then nothing; one off a 0.6 m drop at once.
+    inf = np.inf
+    depth = np.array([[0.0, 0.2, 0.4, 0.6, 0.8, inf, inf], [0.0, 0.6, 0.6, 0.6, inf, inf, inf]])
+    walkable = np.isfinite(depth)
+    missing = ~walkable | (depth > 0.4)
+    found, before = entry_exit._down_steps(missing, depth, walkable, 0.4)
+    assert found[0].tolist() == [False] * 5 + [True, True]  # the stair walked to its end
+    assert found[1].tolist() == missing[1].tolist()  # a drop over the climb stays one
+    assert before[0, 5] == pytest.approx(0.8)  # the bisection reaches the last tread's depth
+    assert not before[1].any()  # rows that walked down nothing keep the origin's reach
+
+
+def _stair_down_off_the_edge(riser: float = 0.2, steps: int = 10) -> trimesh.Trimesh:
+    """Room 8 x 6 m, 1.6 m doorways west and east (z 2.2-3.8); east ``steps`` steps down (0.3 m treads) between
+    trench walls, the bottom tread's end (x 8.3 + 0.3 steps) the piece's edge."""
+    parts = [_box(-0.3, 8.3, -SLAB, 0.0, -0.3, 6.3), *_room_walls()]
+    bottom, end = -riser * steps, 8.3 + 0.3 * steps
+    parts += [_box(8.3 + 0.3 * i, 8.6 + 0.3 * i, bottom - SLAB, -riser * (i + 1), 2.2, 3.8) for i in range(steps)]
+    parts += [_box(8.3, end, bottom - SLAB, 1.0, 2.0, 2.2), _box(8.3, end, bottom - SLAB, 1.0, 3.8, 4.0)]
+    return trimesh.util.concatenate(parts)
+
+
+@pytest.mark.parametrize("riser, yaw", [(0.2, 0.0), (0.2, 22.0), (0.15, 45.0)])
+def test_a_stair_down_off_the_edge_gives_its_foot(riser: float, yaw: float) -> None:
+    # The floor's end was measured from each sample's own height: samples on the flight's sides saw it end at the
+    # first riser past the climb below them, a tread or two short of the foot, and the foot's edge points lay on
+    # several risers, no line (twelfth round's `basement_stair`, both routes, every yaw). The probes now walk down
+    # steps within the climb of the ground stood on before, and the edge's ends are lowered onto the foot's floor
+    # before the extension (at the samples' height it found no floor within the climb: 1.1-1.5 m of 1.6).
+    mesh = _stair_down_off_the_edge(riser)
+    _assert_known_turned(mesh, yaw, [[-0.3, 0.0, 3.0], [8.3 + 0.3 * 10, -10 * riser, 3.0]], 1.6)
+
+
+def _corridor_turning_at_the_edge(width: float = 2.4, depth: float = 6.0) -> trimesh.Trimesh:
+    """Room 8 x ``depth`` m (walls 0.3 m, a 1.6 m doorway west); east a corridor ``width`` m wide, centred on it, to a
+    closed end at x 14.3 where it turns south: its south wall open over the last ``width`` m, nothing beyond."""
+    z0, z1 = depth / 2 - width / 2, depth / 2 + width / 2
+    gaps = {"W": [(depth / 2 - 0.8, depth / 2 + 0.8, 0.0, TALL)], "E": [(z0, z1, 0.0, TALL)]}
+    parts = [_box(-0.3, 8.3, -SLAB, 0.0, -0.3, depth + 0.3)]
+    parts += [_box(*b) for b in pieces._wall_boxes(8.0, depth, 0.3, gaps, TALL, 0.0)]
+    parts += [_box(8.3, 14.3, -SLAB, 0.0, z0 - 0.3, z1 + 0.3), _box(8.3, 14.3, -SLAB, TALL, z1, z1 + 0.3),
+              _box(8.3, 14.0 - width, -SLAB, TALL, z0 - 0.3, z0), _box(14.0, 14.3, -SLAB, TALL, z0 - 0.3, z1)]
+    return trimesh.util.concatenate(parts)
+
+
+@pytest.mark.parametrize("depth, yaw", [(6.0, 0.0), (6.0, 22.0), (10.0, 45.0)])
+def test_a_corridor_turning_at_the_edge_opens_sideways(depth: float, yaw: float) -> None:
+    # The mouth faces south with the room standing out (depth - 2.4) / 2 m beside it, more than the outer-extent
+    # prior's 1.0 m: it was dropped as inside the piece (twelfth round's `edge_bend_corridor`, both routes, every
+    # yaw). Between jambs, the extent is that of what lies straight ahead of the opening.
+    mesh = _corridor_turning_at_the_edge(depth=depth)
+    turn = pieces.yaw_about_centre(mesh, yaw)
+    mesh.apply_transform(turn)
+    known = trimesh.transform_points(np.array([[-0.3, 0.0, depth / 2], [12.8, 0.0, depth / 2 - 1.5]]), turn)
+    _assert_known(_detect(mesh).openings, list(known), [1.6, 2.4])
+
+
+def test_straight_ahead_keeps_what_lies_across_the_openings_span() -> None:
+    # An opening from x 0 to 2 facing +z: a triangle across it counts, one flush with its end (a jamb's face) and
+    # one beside it do not.
+    tri = np.array([[[0.5, 0.0, 5.0], [1.0, 0.0, 6.0], [1.5, 0.0, 5.0]],  # ahead
+                    [[2.0, 0.0, 0.0], [2.0, 3.0, 0.0], [2.0, 0.0, 4.0]],  # flush with the end at x 2
+                    [[3.0, 0.0, 1.0], [4.0, 0.0, 9.0], [5.0, 0.0, 1.0]],  # beside
+                    [[-4.0, 0.0, 2.0], [6.0, 0.0, 2.0], [6.0, 0.0, 3.0]]])  # reaching across from both sides
+    a, b, heading = np.array([2.0, 0.0, 0.0]), np.array([0.0, 0.0, 0.0]), np.array([0.0, 0.0, 1.0])
+    kept = entry_exit.straight_ahead(tri.reshape(-1, 3), a, b, heading, 0.05).reshape(-1, 3, 3)
+    assert len(kept) == 2
+    assert np.array_equal(kept[0], tri[0]) and np.array_equal(kept[1], tri[3])

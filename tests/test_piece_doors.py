@@ -66,7 +66,8 @@ def _ways(directions: np.ndarray, edges: np.ndarray) -> entry_exit._Ways:
     n = len(edges)
     up = np.tile([0.0, 1.0, 0.0], (n, 1))
     tangent = np.tile([0.0, 0.0, -1.0], (n, 1))
-    return entry_exit._Ways(edges.copy(), up, tangent, np.ones(n, bool), directions, edges, np.zeros(n, bool))
+    return entry_exit._Ways(edges.copy(), up, tangent, np.ones(n, bool), directions, edges, np.zeros(n, bool),
+                            np.zeros(n))
 
 
 def test_a_segment_that_walks_round_a_corner_is_fitted_without_the_corner() -> None:

@@ -81,6 +81,19 @@ rooms and drops about half of the leaves of a dungeon turned by 30 degrees,
 but lowers rho on a 1k dungeon from 0.929 to 0.898, so no preset sets it;
 ``0`` (the default) seeds every leaf, unchanged.
 
+Dead-end places (``dead_end_radii`` > 0). A dead end reached through one
+way may hold several leaves: the rim of a round tank roof at the top of its
+stair is cut into 4-6 degree-1 polygons, a dead-end landing into two, where a
+designer marks one dead end. A *dead-end piece* is what hangs beyond a bridge
+of the graph (an edge whose removal parts it; the side away from the block,
+2-edge-connected component, of most area); when every node of the piece lies
+within ``dead_end_radii`` cover radii of its entrance (the bridge's end on
+its side), along the graph, the leaves of the largest such piece are one
+place and only the farthest from its entrance is seeded (ties: lowest row);
+the cover still reaches the others within ``radius``. Measured in
+docs/analysis_quality.md ("Terminals and chokepoints a designer marks").
+``0`` (the default) seeds every leaf, unchanged.
+
 Complexity: O(m + n log n) for step 1 plus, per added path, a Dijkstra over
 the nodes that path brings closer (in practice the area around it); with
 ``traffic_weight`` > 0, that twice, plus the walking flow, O(k (m + n log n))
@@ -93,6 +106,7 @@ import math
 
 import networkx as nx
 import numpy as np
+import rustworkx as rx
 import scipy.sparse as sp
 from pydantic import Field
 from scipy.sparse import csgraph
@@ -122,6 +136,7 @@ class Params(PluginParams):
     traffic_radius: float | None = Field(None, gt=0, description="radius of that traffic-aware cover, in metres of those lengths; default 5/3 radius (10 m for 6 m)")
     traffic_sources: int = Field(traffic.WALKING_SOURCES, ge=1, description="sources of the walking flow that cover reads: set as the flow analyzer's max_sources")
     traffic_ties: traffic.Ties = Field(traffic.WALKING_TIES, description="equally short paths in that walking flow (first or split): set as the flow analyzer's ties")
+    dead_end_radii: float = Field(0.0, ge=0, description="leaves of one dead end (all that hangs beyond one bridge of the graph) reaching no farther than this many cover radii from its entrance are one place: only the farthest is seeded, the cover reaches the rest; 0: every leaf")
     leaf_min_depth: float = Field(0.0, ge=0, description="leaves of the navmesh graph less deep than this (m: how far their polygon reaches beyond the edge it shares) are not seeded as terminals, the cover still reaches them; 0: every leaf; leaves without a polygon (the sampling route) always count")
 
 
@@ -146,6 +161,8 @@ def g2s_select_terminals(graph: nx.Graph, params: Params, context: RunContext) -
     if params.leaf_min_depth > 0:
         depths = leaf_depths(graph, context.navmesh, [arrays.nodes[i] for i in leaves.tolist()])
         leaves = leaves[depths >= params.leaf_min_depth]
+    if params.dead_end_radii > 0:
+        leaves = dead_end_places(adjacency, arrays.area, leaves, params.dead_end_radii * radius)
     has_leaf = np.zeros(count, dtype=bool)
     has_leaf[labels[leaves]] = True
     # a small area with leaves keeps them as terminals (its own tree joins them): only the others are left out
@@ -169,6 +186,68 @@ def g2s_select_terminals(graph: nx.Graph, params: Params, context: RunContext) -
         nodes=tuple(sorted(arrays.nodes[i] for i in rows.tolist())),
         waypoints=tuple(sorted(arrays.nodes[i] for i in waypoints.tolist())),
     )
+
+
+def dead_end_places(adjacency: sp.csr_array, area: np.ndarray, leaves: np.ndarray, reach: float) -> np.ndarray:
+    """The ``leaves`` (rows) left when those of one dead-end place are one: the sorted rows kept.
+
+    ``adjacency``: (n, n) edge lengths, m; ``area``: (n,) m². The graph's
+    bridges (``rustworkx.bridges``) cut it into blocks (2-edge-connected
+    components) joined in a tree; each connected area's tree is rooted at its
+    block of most area (ties: lowest label). A block and all below it are a
+    dead-end piece entered at its bridge's end on its side; distances from
+    the root blocks (one multi-source Dijkstra) less the entrance's are the
+    distances within the piece, since every way in passes the entrance. Each
+    leaf belongs to the largest piece round it whose farthest node lies
+    within ``reach`` metres of its entrance; of the leaves of one such piece
+    the farthest from the roots stays. O(m + n log n).
+    """
+    if len(leaves) < 2:  # nothing to merge
+        return np.sort(leaves)
+    n = adjacency.shape[0]
+    upper = sp.triu(adjacency, k=1).tocoo()
+    graph = rx.PyGraph(multigraph=False)
+    graph.add_nodes_from(range(n))
+    graph.add_edges_from_no_data(list(zip(upper.row.tolist(), upper.col.tolist(), strict=True)))
+    bridges = np.array(sorted(tuple(sorted(edge)) for edge in rx.bridges(graph)), dtype=np.int64).reshape(-1, 2)
+    is_bridge = np.zeros(upper.nnz, dtype=bool)
+    if len(bridges):
+        keys = upper.row.astype(np.int64) * n + upper.col
+        is_bridge = np.isin(keys, bridges[:, 0] * n + bridges[:, 1])
+    inside = sp.csr_array((np.ones(int((~is_bridge).sum())), (upper.row[~is_bridge], upper.col[~is_bridge])), shape=(n, n))
+    blocks, block = csgraph.connected_components(inside, directed=False)
+    block_area = np.bincount(block, weights=area, minlength=blocks)
+    ends = block[bridges]  # (b, 2) the blocks each bridge joins
+    # the tree of blocks plus one extra node joined to the root block of every connected area
+    _, tree = csgraph.connected_components(
+        sp.csr_array((np.ones(len(ends)), (ends[:, 0], ends[:, 1])), shape=(blocks, blocks)), directed=False)
+    order = np.lexsort((np.arange(blocks), -block_area, tree))
+    roots = order[np.unique(tree[order], return_index=True)[1]]
+    hub = np.full(len(roots), blocks)
+    links = np.concatenate([ends, np.column_stack([hub, roots])])
+    forest = sp.csr_array((np.ones(len(links)), (links[:, 0], links[:, 1])), shape=(blocks + 1, blocks + 1))
+    visit, parent = csgraph.breadth_first_order(forest, blocks, directed=False, return_predecessors=True)
+    visit = visit[1:]  # the hub first
+    entrance = np.full(blocks, -1, dtype=np.int64)
+    below = parent[ends[:, 0]] == ends[:, 1]  # the bridge's first block hangs under its second
+    entrance[np.where(below, ends[:, 0], ends[:, 1])] = np.where(below, bridges[:, 0], bridges[:, 1])
+    distance = csgraph.dijkstra(adjacency, directed=False, indices=np.flatnonzero(np.isin(block, roots)), min_only=True)
+    farthest = np.full(blocks, -np.inf)
+    np.maximum.at(farthest, block, distance)
+    for b in visit[::-1]:  # children before parents
+        if parent[b] < blocks:
+            farthest[parent[b]] = max(farthest[parent[b]], farthest[b])
+    within_reach = (entrance >= 0) & (farthest - distance[np.maximum(entrance, 0)] <= reach)
+    place = np.full(blocks, -1, dtype=np.int64)
+    for b in visit.tolist():  # parents before children: a piece inside a piece within reach takes its place
+        up = parent[b]
+        place[b] = place[up] if up < blocks and place[up] >= 0 else (b if within_reach[b] else -1)
+    owner = place[block[leaves]]
+    alone = leaves[owner < 0]
+    grouped = leaves[owner >= 0]
+    by_place = np.lexsort((grouped, -distance[grouped], owner[owner >= 0]))
+    firsts = np.unique(owner[owner >= 0][by_place], return_index=True)[1]
+    return np.sort(np.concatenate([alone, grouped[by_place][firsts]]))
 
 
 def leaf_depths(graph: nx.Graph, navmesh: NavMesh | None, leaves: list) -> np.ndarray:

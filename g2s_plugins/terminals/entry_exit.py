@@ -19,7 +19,9 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
    surface ends (the floor's edge, looked for up to ``edge_search_radii * r``
    away: Recast erodes the walkable area by ``r``, so the navmesh boundary
    lies about ``r`` inside the real edge; it ends where two rays in a row meet
-   no walkable face, so a crack between floor tiles is no edge). A direction
+   no walkable face, so a crack between floor tiles is no edge; a ray meets
+   the surface within the climb of the ground the one before it stood on, so
+   the search walks down a stair). A direction
    is a way out when the edge is found, the ray along it stays clear for
    ``outward_radii * r`` (no wall, jamb or curb higher than ``h`` in the
    way), the same way a search step below the agent's height is clear up to
@@ -48,7 +50,8 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
    something stands on it between two free stretches (a pier between two
    doorways the samples saw out through alike), and its ends are raised onto
    a step top just inside them (a riser as high as the rays, which they pass
-   over). The
+   over), or, where its samples walked down steps to it, lowered onto the
+   floor that ends there. The
    opening lies on that line; its ends are extended along the edge while the
    surface goes on inside the edge, ends just outside it, and nothing stands
    in the way or straight out: this undoes the retreat from walls. An
@@ -82,7 +85,10 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
      reaching down to the agent's height over the opening, minus the
      midpoint's: eaves and upper storeys overhanging it do not count; a heading near one of the piece's own horizontal
      axes, taken from its walls, is measured along that axis) must not exceed
-     ``extent_heights`` agent heights.
+     ``extent_heights`` agent heights; an opening between jambs (as for
+     ``step_up``) measures it over the triangles straight ahead of it alone
+     (whose span along the opening overlaps its own), so a room standing out
+     beside a corridor's side mouth does not drop it.
 
    The score is the product of three factors in [0, 1]: the share of edge
    points on the fitted line, ``1 - gap / (extent_heights * height)``, and
@@ -121,7 +127,8 @@ climb) / d across the way for the directions clear so far, two more beyond it
 with ``leave_footprint``: O(S k (edge_search_radii r + agent height) / d) rays (up to twice
 that with ``step_up``, for the samples searched again from a step's top).
 The main floor adds a k-d tree over boundary samples r / 4 apart, the
-repeated openings an O(o^2) comparison, the terminals a k-d tree query each.
+repeated openings an O(o^2) comparison, the openings between jambs O(F) each
+over the mesh's F triangles, the terminals a k-d tree query each.
 """
 
 from __future__ import annotations
@@ -313,6 +320,7 @@ class _Ways:
     direction: np.ndarray  # (M,3) the way out (unit, surface plane)
     edge: np.ndarray  # (M,3) where the surface ends along it
     stepped: np.ndarray  # (M,) bool: the way out starts on a step up (``base`` is on its top)
+    drop: np.ndarray  # (M,) how far below ``base`` the way out ends, down steps (else 0), m
 
 
 def _walkable(caster: RayCaster, face: np.ndarray, s: _Settings) -> np.ndarray:
@@ -357,8 +365,10 @@ def _snap(
 
 def _surface_ends(
     caster: RayCaster, origins: np.ndarray, directions: np.ndarray, down: np.ndarray, s: _Settings, reach: float
-) -> np.ndarray:
-    """(n,) distance along each direction where the surface under the lifted origins ends (NaN: not within reach).
+) -> tuple[np.ndarray, np.ndarray]:
+    """(n,) distance along each direction where the surface under the lifted origins ends (NaN: not within reach),
+    and (n,) how far below the origin's ground the surface ends there, m, where the way went down steps
+    (:func:`_down_steps`), else 0.
 
     Only faces the agent can walk count as surface: on a floor sloping down out of the piece the probes,
     cast along its tilted normal, would otherwise meet the slab's own end face below the floor's edge
@@ -369,6 +379,7 @@ def _surface_ends(
     n_off = max(1, int(math.ceil(steps)))
     offsets = s.delta * np.arange(1, n_off + 1)
     lo = np.full(len(origins), np.nan)
+    drop = np.zeros(len(origins))  # how far the ground stood on last lies below the origin's, down a stair only
     batch = max(1, _MAX_PROBE_RAYS // n_off)
     for begin in range(0, len(origins), batch):
         part = slice(begin, begin + batch)
@@ -385,26 +396,61 @@ def _surface_ends(
             caster, probes[rows], probe_down[rows], [side], s.lift + s.climb, lambda faces: _walkable(caster, faces, s)
         )[0]
         missing = missing.reshape(-1, n_off)
+        missing, before = _down_steps(missing, hits.distance.reshape(-1, n_off) - s.lift,
+                                      _walkable(caster, hits.face, s).reshape(-1, n_off), s.climb)
         # The surface ends where two probes in a row find none: a crack narrower than a search step
         # (unwelded floor tiles) is no edge, and neither the agent nor Recast's voxels see it.
         missing[:, :-1] &= missing[:, 1:]
-        lo[part] = np.where(missing.any(axis=1), np.argmax(missing, axis=1) * s.delta, np.nan)
+        end = np.argmax(missing, axis=1)
+        lo[part] = np.where(missing.any(axis=1), end * s.delta, np.nan)
+        drop[part] = before[np.arange(len(end)), end]
     hi = lo + s.delta
     rows = np.nonzero(np.isfinite(lo))[0]
     for _ in range(_REFINE_ROUNDS):  # bisection between the last offset with surface and the first without
         mid = 0.5 * (lo[rows] + hi[rows])
         probe = origins[rows] + directions[rows] * mid[:, None]
         hit = caster.first_hits(probe, down[rows])
-        on = (hit.distance <= s.lift + s.climb) & _walkable(caster, hit.face, s)
+        on = (hit.distance <= s.lift + s.climb + drop[rows]) & _walkable(caster, hit.face, s)
         lo[rows] = np.where(on, mid, lo[rows])
         hi[rows] = np.where(on, hi[rows], mid)
-    return 0.5 * (lo + hi)
+    return 0.5 * (lo + hi), np.where(np.isfinite(lo), drop, 0.0)
+
+
+def _down_steps(
+    missing: np.ndarray, depth: np.ndarray, walkable: np.ndarray, climb: float
+) -> tuple[np.ndarray, np.ndarray]:
+    """The probes of a way out that walk down steps, each within the climb of the ground stood on before it.
+
+    ``missing`` (n, k): the probes finding no ground within the climb of the origin's (along the way, k
+    probes a search step apart); ``depth`` (n, k): how far each probe's ground lies below the origin's, m
+    (inf: none); ``walkable`` (n, k): its face within the agent's slope. A stair going down off the piece's
+    edge drops more than the climb within the search's reach: measured from the origin alone, a sample on
+    its side saw the floor end at the first riser that took it past the climb, one or two treads short of the
+    stair's end, and a segment's edge points lay on several risers (docs/entry_exit.md, "A twelfth round of
+    piece kinds"). Walking the probes in order, one whose ground lies within the climb of the last ground
+    stood on stands on the surface. Returns ``missing`` with those probes found and (n, k) the depth of the
+    last ground stood on before each probe where a probe of its row was found so, else 0 (the reach of the
+    bisection that follows: the same as before for every other row). O(n k).
+    """
+    missing = missing.copy()
+    last = np.zeros(len(depth))  # depth of the last ground stood on
+    before = np.zeros(depth.shape)
+    followed = np.zeros(len(depth), dtype=bool)
+    for j in range(depth.shape[1]):
+        before[:, j] = last
+        grounded = walkable[:, j] & np.isfinite(depth[:, j])
+        down = missing[:, j] & grounded & (depth[:, j] - last <= climb)
+        missing[:, j] &= ~down
+        followed |= down
+        last = np.where(~missing[:, j] & grounded, depth[:, j], last)
+    return missing, np.where(followed[:, None], before, 0.0)
 
 
 def _fan(
     base: np.ndarray, normal: np.ndarray, tangent: np.ndarray, caster: RayCaster, s: _Settings, params: Params
-) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """The way out of each point of ``base`` (step 3): (M,) found, (M,3) direction, (M,) distance to the edge."""
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """The way out of each point of ``base`` (step 3): (M,) found, (M,3) direction, (M,) distance to the edge,
+    (M,) how far below the point's ground the surface ends there (down steps, else 0)."""
     outward = np.cross(tangent, normal)  # the walkable side is on the left of the tangent
     m, k = len(base), int(params.fan_count)
     half = math.radians(float(params.fan_half_angle_deg))
@@ -414,9 +460,9 @@ def _fan(
     lifted = np.repeat(base + normal * s.lift, k, axis=0)
     down = np.repeat(-normal, k, axis=0)
     clear = caster.first_hits(lifted, dirs).distance > float(params.outward_radii) * s.radius
-    edge = np.full(m * k, np.nan)
+    edge, drop = np.full(m * k, np.nan), np.zeros(m * k)
     todo = np.nonzero(clear)[0]
-    edge[todo] = _surface_ends(
+    edge[todo], drop[todo] = _surface_ends(
         caster, lifted[todo], dirs[todo], down[todo], s, float(params.edge_search_radii) * s.radius
     )
     ok = np.isfinite(edge)
@@ -450,7 +496,7 @@ def _fan(
     pick = np.argmin(cost, axis=1)
     found = np.isfinite(cost[np.arange(m), pick])
     chosen = np.arange(m) * k + pick
-    return found, dirs[chosen], np.nan_to_num(edge[chosen])
+    return found, dirs[chosen], np.nan_to_num(edge[chosen]), np.where(found, drop[chosen], 0.0)
 
 
 def _step_tops(
@@ -485,18 +531,19 @@ def _ways_out(
 ) -> _Ways:
     base, normal = _snap(samples, polygon_normals, caster, s)
     tangent = _unit(samples.tangent - np.einsum("ij,ij->i", samples.tangent, normal)[:, None] * normal)
-    found, direction, reach = _fan(base, normal, tangent, caster, s, params)
+    found, direction, reach, drop = _fan(base, normal, tangent, caster, s, params)
     stepped = np.zeros(len(base), dtype=bool)
     if params.step_up:
         rows = np.nonzero(~found)[0]
         near, top = _step_tops(base[rows], normal[rows], np.cross(tangent[rows], normal[rows]), caster, s, params)
         rows, top = rows[near], top[near]
         if len(rows):
-            up_found, up_direction, up_reach = _fan(top, normal[rows], tangent[rows], caster, s, params)
+            up_found, up_direction, up_reach, up_drop = _fan(top, normal[rows], tangent[rows], caster, s, params)
             rows, top = rows[up_found], top[up_found]
             base[rows], found[rows], stepped[rows] = top, True, True
-            direction[rows], reach[rows] = up_direction[up_found], up_reach[up_found]
-    return _Ways(base, normal, tangent, found, direction, base + direction * reach[:, None], stepped)
+            direction[rows], reach[rows], drop[rows] = up_direction[up_found], up_reach[up_found], up_drop[up_found]
+    edge = base + direction * reach[:, None]
+    return _Ways(base, normal, tangent, found, direction, edge, stepped, drop)
 
 
 # --------------------------------------------------------------------------
@@ -691,7 +738,28 @@ def _onto_grazed_step(points: np.ndarray, out: np.ndarray, caster: RayCaster, s:
     return raised
 
 
-def _extend(kept: list[_Edge], caster: RayCaster, s: _Settings) -> tuple[np.ndarray, np.ndarray]:
+def _onto_ground_below(points: np.ndarray, out: np.ndarray, depth: np.ndarray, caster: RayCaster,
+                       s: _Settings) -> np.ndarray:
+    """(n,3) ``points`` (on edges) lowered onto the walkable ground just inside them, at most ``depth`` (n,) m below.
+
+    An edge found down steps (:func:`_down_steps`) lies at its samples' heights, a tread or more above the floor
+    that ends there (a stair going down off the piece: 0.4 m above its foot), where the extension's candidates
+    find no floor within the climb. Probed straight down from the rays' height, half a search step inside the edge;
+    ``depth`` 0 leaves a point as it is.
+    """
+    inset = _INSET_STEPS * s.delta
+    rows = np.flatnonzero(depth > 0.0)
+    lowered = points.copy()
+    if not len(rows):
+        return lowered
+    hit = caster.first_hits(points[rows] - out[rows] * inset + UP * s.lift, np.broadcast_to(-UP, (len(rows), 3)).copy())
+    ground = np.isfinite(hit.distance) & (hit.distance <= s.lift + depth[rows]) & _walkable(caster, hit.face, s)
+    lowered[rows[ground], 1] -= hit.distance[ground] - s.lift
+    return lowered
+
+
+def _extend(kept: list[_Edge], caster: RayCaster, s: _Settings,
+            depth: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
     """The ends of each opening, extended along its edge (one batched pass per test): (n,3) and (n,3).
 
     Candidates just inside the edge, beyond both ends: the surface must go on under them, the
@@ -699,6 +767,8 @@ def _extend(kept: list[_Edge], caster: RayCaster, s: _Settings) -> tuple[np.ndar
     above the edge and probe straight down: lifted along a floor's normal that tilts out of the piece
     (a floor sloping down out of it) they would stand ``lift * sin(slope)`` farther out, outside the
     jambs' faces from 7 degrees on, and the extension would run along the walls' outer faces.
+    ``depth`` (n,): how far below its samples each edge's floor may end, down steps (its ends are first
+    lowered onto that ground, :func:`_onto_ground_below`); None: nowhere.
     """
     n = len(kept)
     out = np.array([e.outward for e in kept])
@@ -706,6 +776,9 @@ def _extend(kept: list[_Edge], caster: RayCaster, s: _Settings) -> tuple[np.ndar
     inset = _INSET_STEPS * s.delta  # candidates stand this far inside the edge line
     first = _onto_grazed_step(np.array([e.first for e in kept]), out, caster, s)
     last = _onto_grazed_step(np.array([e.last for e in kept]), out, caster, s)
+    if depth is not None:
+        first = _onto_ground_below(first, out, depth, caster, s)
+        last = _onto_ground_below(last, out, depth, caster, s)
     along = _unit(np.cross(nrm, out))  # walking direction along the edge (interior on the left)
     n_ext = max(1, int(math.ceil((2.0 * s.radius + s.step) / s.delta)))
     steps = s.delta * np.arange(1, n_ext + 1)
@@ -749,7 +822,10 @@ def _passages(
     along = _unit(np.cross(nrm, out))
     towards_last = np.einsum("ij,ij->i", along, last - first) >= 0.0
     mid = 0.5 * (first + last)
-    deep = np.array([np.median(np.linalg.norm(ways.edge[e.samples] - ways.base[e.samples], axis=1)) for e in kept])
+    # A way down steps has no wall of one level to measure across (the rays from its end would run into the
+    # treads behind it): its passage is not narrowed.
+    reach = np.where(ways.drop > 0.0, 0.0, np.linalg.norm(ways.edge - ways.base, axis=1))
+    deep = np.array([np.median(reach[e.samples]) for e in kept])
     widths, back, ahead = np.full(len(kept), np.inf), np.full(len(kept), np.inf), np.full(len(kept), np.inf)
     for k in range(1, int(math.ceil(float(deep.max(initial=0.0)) / s.delta)) + 1):
         rows = np.nonzero(k * s.delta <= deep)[0]
@@ -977,6 +1053,25 @@ def corners_below(corners: np.ndarray, top: float) -> np.ndarray:
     return corners[corners[:, :, 1].min(axis=1) <= top].reshape(-1, 3)
 
 
+def straight_ahead(vertices: np.ndarray, a: np.ndarray, b: np.ndarray, heading: np.ndarray, margin: float) -> np.ndarray:
+    """(k, 3) the corners of the triangles among ``vertices`` ((3 m, 3), three corners a triangle, as
+    :func:`corners_below` gives them) that lie straight ahead of the opening from ``a`` to ``b``: whose span along
+    the opening overlaps its own by more than ``margin`` m (a jamb's face, flush with the opening's end, does not).
+
+    A doorway between jambs leads out of the piece whatever stands beside it: a corridor turning at the piece's edge
+    opens sideways with the room it leaves standing out 1.8 m beside its mouth (docs/entry_exit.md, "A twelfth
+    round of piece kinds"). A triangle reaching across the opening's span counts whole, so a large one reaching
+    both ahead and aside counts its farthest corner (the gap is never under-measured for lack of corners).
+    """
+    tri = vertices.reshape(-1, 3, 3)
+    along = np.cross(UP, heading)
+    along = along / max(float(np.linalg.norm(along)), 1e-12)
+    lo, hi = sorted((float(a @ along), float(b @ along)))
+    span = tri @ along
+    keep = (span.max(axis=1) > lo + margin) & (span.min(axis=1) < hi - margin)
+    return tri[keep].reshape(-1, 3)
+
+
 def extent_gap(vertices: np.ndarray, point: np.ndarray, heading: np.ndarray, frame: np.ndarray) -> float:
     """How far ``point`` lies inside the extent of ``vertices`` along the horizontal unit ``heading``, m.
 
@@ -1076,7 +1171,8 @@ def detect_openings(
     kept = _split_at_piers(_match_edges(segments, ways, s, params), ways, caster, s)
     if not kept:
         return Detection((), (), ())
-    p_first, p_last = _extend(kept, caster, s)
+    # How far down steps the edges' samples found the floor ending (the deepest; 0 for a floor's own level).
+    p_first, p_last = _extend(kept, caster, s, np.array([ways.drop[e.samples].max() for e in kept]))
 
     corners = np.asarray(mesh.triangles, dtype=np.float64)
     frame = piece_frame(mesh)
@@ -1084,8 +1180,10 @@ def detect_openings(
     max_gap = None if params.extent_heights is None else float(params.extent_heights) * s.height
     max_slope = None if params.max_slope_deg is None else math.radians(float(params.max_slope_deg))
 
-    def scored(e: _Edge, a: np.ndarray, b: np.ndarray) -> Opening | None:
-        """The opening between ``a`` and ``b`` on ``e``'s edge with its score; None when the outer-extent prior drops it."""
+    def scored(e: _Edge, a: np.ndarray, b: np.ndarray, framed: bool) -> Opening | None:
+        """The opening between ``a`` and ``b`` on ``e``'s edge with its score; None when the outer-extent prior drops it.
+
+        ``framed``: between jambs, whose extent is measured over what lies straight ahead of it alone."""
         width = float(np.linalg.norm(b - a))
         heading = e.outward.copy()
         heading[1] = 0.0
@@ -1099,7 +1197,10 @@ def detect_openings(
             square = _unit(np.cross(plan, UP))
             heading = square if np.dot(square, heading) >= 0.0 else -square
         mid = (a + b) / 2.0
-        gap = max(0.0, extent_gap(corners_below(corners, mid[1] + s.height), mid, heading, frame))
+        below = corners_below(corners, mid[1] + s.height)
+        if framed:
+            below = straight_ahead(below, a, b, heading, s.delta)
+        gap = max(0.0, extent_gap(below, mid, heading, frame))
         if max_gap is not None and gap > max_gap:
             return None
         extent_factor = 1.0 if max_gap is None else 1.0 - gap / max_gap
@@ -1119,6 +1220,7 @@ def detect_openings(
     p_first, p_last = _free_part(p_first, p_last, back, ahead)
     found: list[tuple[Opening, tuple[int, ...], tuple[float, float, float]]] = []
     edges: list[_Edge] = []
+    framed_of: list[bool] = []
     for e, a, b, framed, passage in zip(kept, p_first, p_last, jambs, passages):
         if min(float(np.linalg.norm(b - a)), passage) < min_width + _SAME_WIDTH:
             continue
@@ -1127,12 +1229,13 @@ def detect_openings(
         d = b - a
         if max_slope is not None and math.atan2(abs(d[1]), math.hypot(d[0], d[2])) > max_slope + 1e-12:
             continue
-        opening = scored(e, a, b)
+        opening = scored(e, a, b, bool(framed))
         if opening is None:
             continue
         polys = tuple(sorted(set(samples.polygon[e.samples].tolist())))
         found.append((opening, polys, vec3(e.normal)))
         edges.append(e)
+        framed_of.append(bool(framed))
     # An opening found again is one with the wider one, which spans both; again until none is left,
     # since a union can reach one that overlapped none of its parts (a plaza's side on the sampling
     # route: parts 3.28-9.98 and 0.54-3.37 m along it, then one at 0.17-2.80 m). Each pass drops
@@ -1144,12 +1247,13 @@ def detect_openings(
         for i in sorted(set(into[into >= 0].tolist())):
             parts = [found[j] for j in np.flatnonzero(into == i)]
             ends = _union_ends(found[i][0], [f[0] for f in parts])
-            union = None if ends is None else scored(edges[i], *ends)
+            union = None if ends is None else scored(edges[i], *ends, framed_of[i])
             if union is not None:
                 polys = tuple(sorted(set(found[i][1]).union(*(f[1] for f in parts))))
                 found[i] = (union, polys, found[i][2])
         found = [f for f, again in zip(found, into) if again < 0]
         edges = [e for e, again in zip(edges, into) if again < 0]
+        framed_of = [f for f, again in zip(framed_of, into) if again < 0]
     found = [f for f in found if f[0].score >= float(params.min_score) - 1e-12]
     if params.best is not None and len(found) > params.best:
         order = sorted(range(len(found)), key=lambda i: (-found[i][0].score, i))[: params.best]
