@@ -386,7 +386,8 @@ def _surface_ends(
         probes = (origins[part, None, :] + directions[part, None, :] * offsets[None, :, None]).reshape(-1, 3)
         probe_down = np.repeat(down[part], n_off, axis=0)
         hits = caster.first_hits(probes, probe_down)
-        missing = (hits.distance > s.lift + s.climb) | ~_walkable(caster, hits.face, s)
+        walkable = _walkable(caster, hits.face, s)
+        missing = (hits.distance > s.lift + s.climb) | ~walkable
         # A probe in a crack running along the way (a grating's slot, the way out within a few degrees of
         # it) stays in it from one probe to the next: it stands on the surface when surface lies a search
         # step to both sides of it, across the way (beyond an edge oblique to the way, one side at most).
@@ -396,8 +397,8 @@ def _surface_ends(
             caster, probes[rows], probe_down[rows], [side], s.lift + s.climb, lambda faces: _walkable(caster, faces, s)
         )[0]
         missing = missing.reshape(-1, n_off)
-        missing, before = _down_steps(missing, hits.distance.reshape(-1, n_off) - s.lift,
-                                      _walkable(caster, hits.face, s).reshape(-1, n_off), s.climb)
+        missing, before = _down_steps(missing, hits.distance.reshape(-1, n_off) - s.lift, walkable.reshape(-1, n_off),
+                                      s.climb)
         # The surface ends where two probes in a row find none: a crack narrower than a search step
         # (unwelded floor tiles) is no edge, and neither the agent nor Recast's voxels see it.
         missing[:, :-1] &= missing[:, 1:]
