@@ -40,6 +40,11 @@ from g2s_plugins.samples.levels import SampleLevel, _opening
 from g2s_plugins.samples.pieces import _E, _N, _S, _W
 
 
+def kinds_by_name(*factories: Callable[[], SampleLevel]) -> dict[str, Callable[[], SampleLevel]]:
+    """Each piece-kind factory under its function's name, as a round lists its kinds."""
+    return {factory.__name__: factory for factory in factories}
+
+
 def _hull(points) -> trimesh.Trimesh:
     """The convex hull of (k, 3) corners, metres."""
     return trimesh.convex.convex_hull(np.asarray(points, dtype=np.float64))
@@ -254,11 +259,9 @@ def shallow_balcony() -> SampleLevel:
     return _level("shallow_balcony", parts, [_opening((-0.3, f, 3.0), _W, 1.6)])
 
 
-KINDS: dict[str, Callable[[], SampleLevel]] = {
-    f.__name__: f for f in (portcullis_raised, revolving_drum, embrasure_wall, sloped_culvert, ceiling_hatch_room,
-                            loading_dock, window_seat_alcove, zigzag_ramp, curved_wall_door, hedge_maze_border,
-                            high_sill_door, shallow_balcony)
-}
+KINDS = kinds_by_name(portcullis_raised, revolving_drum, embrasure_wall, sloped_culvert, ceiling_hatch_room,
+                      loading_dock, window_seat_alcove, zigzag_ramp, curved_wall_door, hedge_maze_border,
+                      high_sill_door, shallow_balcony)
 """Kind name -> factory of the tenth round."""
 
 

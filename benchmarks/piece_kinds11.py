@@ -16,13 +16,12 @@ from __future__ import annotations
 
 import math
 import sys
-from collections.abc import Callable
 
 import numpy as np
 import trimesh
 from piece_kinds10 import SLAB, _box, _hull, _room
 from piece_kinds10 import _level as _level10
-from piece_kinds10 import main as _run_kinds
+from piece_kinds10 import kinds_by_name, main as _run_kinds
 
 from g2s_plugins.samples.levels import SampleLevel, _opening
 from g2s_plugins.samples.pieces import _E, _N, _S, _W
@@ -164,11 +163,9 @@ def open_riser_stair() -> SampleLevel:
     return _level("open_riser_stair", parts, [_opening((-0.3, 0.0, 3.0), _W, 1.6), _opening((8.3, f, 3.0), _E, 1.6)])
 
 
-KINDS: dict[str, Callable[[], SampleLevel]] = {
-    f.__name__: f for f in (screen_wall_door, counter_doorway, container_gap, kerbed_tunnel, low_lintel_door,
-                            side_stair_door, exterior_gallery, turnstile_line, humped_bridge, tapered_corridor,
-                            jettied_storey_door, open_riser_stair)
-}
+KINDS = kinds_by_name(screen_wall_door, counter_doorway, container_gap, kerbed_tunnel, low_lintel_door,
+                      side_stair_door, exterior_gallery, turnstile_line, humped_bridge, tapered_corridor,
+                      jettied_storey_door, open_riser_stair)
 """Kind name -> factory of the eleventh round."""
 
 

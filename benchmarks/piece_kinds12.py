@@ -11,14 +11,13 @@ round's (``benchmarks/piece_kinds10.py``: its helpers, conventions, agent and ta
 from __future__ import annotations
 
 import sys
-from collections.abc import Callable
 from functools import partial
 
 import numpy as np
 import trimesh
 from piece_kinds10 import SLAB, _box, _hull, _room
 from piece_kinds10 import _level as _level10
-from piece_kinds10 import main as _run_kinds
+from piece_kinds10 import kinds_by_name, main as _run_kinds
 
 from g2s_plugins.samples import pieces
 from g2s_plugins.samples.levels import SampleLevel, _opening
@@ -185,11 +184,9 @@ def canal_walkways() -> SampleLevel:
                                             for z in (0.6, 2.8)])
 
 
-KINDS: dict[str, Callable[[], SampleLevel]] = {
-    f.__name__: f for f in (portcullis_half, ladder_hole_cellar, basement_stair, edge_bend_corridor, terrace_step_03,
-                            terrace_step_06, glass_shopfront, crevasse_room, cave_mouth, lean_to_eaves,
-                            bridge_off_platform, canal_walkways)
-}
+KINDS = kinds_by_name(portcullis_half, ladder_hole_cellar, basement_stair, edge_bend_corridor, terrace_step_03,
+                      terrace_step_06, glass_shopfront, crevasse_room, cave_mouth, lean_to_eaves,
+                      bridge_off_platform, canal_walkways)
 """Kind name -> factory of the twelfth round."""
 
 

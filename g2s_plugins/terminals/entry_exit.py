@@ -198,7 +198,9 @@ class Params(PluginParams):
     snap_distance: float | None = Field(
         None,
         gt=0,
-        description="longest ray that snaps a sample onto the mesh, m; None: the agent's max climb, at least 0.1",
+        le=1e6,  # a longer ray meets nothing a level holds, and 1e308 overflowed the rays' ends to inf
+        description="longest ray that snaps a sample onto the mesh, m (at most 1,000 km); None: the agent's max "
+        "climb, at least 0.1",
     )
     fan_count: int = Field(9, ge=1, le=64, description="directions tried from each sample for a way out")
     fan_half_angle_deg: float = Field(

@@ -203,3 +203,12 @@ def test_a_glb_of_another_version_is_named(tmp_path):
     path.write_bytes(b"glTF" + (1).to_bytes(4, "little") + (12).to_bytes(4, "little"))
     with pytest.raises(MeshError, match=r"the GLB header's version is 1; g2s reads GLB version 2 \(glTF 2.0\)"):
         load_mesh(path)
+
+
+def test_a_snap_ray_longer_than_any_level_is_refused_by_its_key(tmp_path, capsys):
+    # 1e308 m overflowed the rays' ends to inf: "entry_exit failed: raised LinAlgError", exit 1
+    config = tmp_path / "long_snap.yaml"
+    config.write_text("extends: map_piece\nterminals:\n  params:\n    snap_distance: 1.0e308\n")
+    assert_clean_error(run_g2s(capsys, "run", config, CORRIDOR, "-o", tmp_path / "out"),
+                       "terminals.params.snap_distance: expected a number or null > 0 and <= 1000000.0, got 1e+308")
+    assert not (tmp_path / "out").exists()
