@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 import scipy.sparse as sp
 
+from g2s_core.config import find_config, load_raw_config
 from g2s_plugins import traffic
 from g2s_plugins._surface import CollapseParams
 from g2s_plugins.analyzers import flow as flow_analyzer
@@ -79,8 +80,13 @@ def test_only_a_sampled_flow_is_scaled():
 
 
 def test_the_settings_that_choose_it():
-    # none by default everywhere: the analyzer, the guarantee's heat flow and the traffic-aware cover
+    # none by default everywhere; the sampling preset sets linear for the analyzer, the guarantee's heat flow and the
+    # traffic-aware cover alike, so the three read one flow
     assert traffic.WALKING_SCALING == "none"
     assert flow_analyzer.Params().scaling == CollapseParams().heat_scaling == coverage.Params().traffic_scaling == "none"
+    raw = load_raw_config(find_config("map_analysis_sampling"))
+    (analyzer,) = (a for a in raw["analyzers"] if a["plugin"] == "flow")
+    assert analyzer["params"]["scaling"] == raw["simplify"]["params"]["heat_scaling"] == "linear"
+    assert raw["terminals"]["params"]["traffic_scaling"] == "linear"
     with pytest.raises(ValueError):
         flow_analyzer.Params(scaling="quadratic")
