@@ -94,6 +94,9 @@ class CollapseParams(PluginParams):
     heat_ties: traffic.Ties = Field(
         traffic.WALKING_TIES, description="equally short paths in that walking flow (first or split): set as the flow analyzer's ties"
     )
+    heat_scaling: traffic.Scaling = Field(
+        traffic.WALKING_SCALING, description="that walking flow's sampled pairs (none or linear): set as the flow analyzer's scaling"
+    )
 
 
 def on_navmesh(navmesh: NavMesh | None, point: Vec, agent: AgentConfig) -> bool:
@@ -144,13 +147,14 @@ def edge_surface_gaps(structure: nx.Graph, navmesh: NavMesh, agent: AgentConfig,
 
 
 def traffic_ranks(
-    graph: nx.Graph, sources: int = traffic.WALKING_SOURCES, ties: traffic.Ties = traffic.WALKING_TIES
+    graph: nx.Graph, sources: int = traffic.WALKING_SOURCES, ties: traffic.Ties = traffic.WALKING_TIES,
+    scaling: traffic.Scaling = traffic.WALKING_SCALING,
 ) -> dict[Hashable, float]:
     """Walking-flow percentile rank (0-100) of each node of ``graph`` that some walk starts at or passes through.
 
     The rank is :func:`g2s_plugins.traffic.percentile` of
     :func:`g2s_plugins.traffic.walking_flow` of ``sources`` area-sampled
-    sources (seed 0) and ``ties`` (``heat_sources`` and ``heat_ties``, by
+    sources (seed 0), ``ties`` and ``scaling`` (``heat_sources``, ``heat_ties`` and ``heat_scaling``, by
     default the ``flow`` analyzer's defaults): the array that analyzer and a
     traffic-aware ``coverage`` of the same settings use, computed once per graph. A node no walk
     touches, with no area and no through-flow (an opening the ``entry_exit``
@@ -160,7 +164,7 @@ def traffic_ranks(
     walks passing through it.
     """
     arrays = traffic.surface_arrays(graph)
-    flow = traffic.arrays_walking_flow(arrays, max_sources=sources, ties=ties)
+    flow = traffic.arrays_walking_flow(arrays, max_sources=sources, ties=ties, scaling=scaling)
     rank = traffic.percentile(flow)
     walked = (traffic.origin_weight(arrays) > 0) | (flow > 0)
     return {node: value for node, value, keep in zip(arrays.nodes, rank.tolist(), walked.tolist()) if keep}
@@ -237,7 +241,7 @@ def collapse_rule(
     if max_step is not None:
         if graph is None:
             raise PluginError("max_traffic_step needs the run's initial surface graph")
-        ranks = traffic_ranks(graph, params.heat_sources, params.heat_ties)
+        ranks = traffic_ranks(graph, params.heat_sources, params.heat_ties, params.heat_scaling)
     bends: dict[tuple[Vec, Vec], bool] = {}
 
     def bent(u: Vec, v: Vec) -> bool:

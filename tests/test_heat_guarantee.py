@@ -273,8 +273,8 @@ def test_the_benchmark_reference_is_exact_up_to_the_guarantee_size():
 
 
 def test_the_guarantee_measures_the_flow_of_its_heat_settings(monkeypatch):
-    # heat_sources and heat_ties (set as the flow analyzer's max_sources and ties) choose the flow it measures: the
-    # heat map's sample and the exact reference, both of those ties
+    # heat_sources, heat_ties and heat_scaling (set as the flow analyzer's max_sources, ties and scaling) choose the
+    # flow it measures: the heat map's sample and the exact reference, both of those ties (an exact flow is not scaled)
     graph = bumpy_grid()
     forest = nx.DiGraph(nx.bfs_tree(graph, 0))
     structure = forest.subgraph(np.random.default_rng(0).choice(300, size=200, replace=False).tolist())
@@ -282,6 +282,7 @@ def test_the_guarantee_measures_the_flow_of_its_heat_settings(monkeypatch):
     asked, walking = [], traffic.arrays_walking_flow
     monkeypatch.setattr(traffic, "arrays_walking_flow",
                         lambda *args, **kwargs: asked.append((args[1:], kwargs)) or walking(*args, **kwargs))
-    params = CollapseParams(min_heat_rho=0.5, heat_sources=64, heat_ties="split")
+    params = CollapseParams(min_heat_rho=0.5, heat_sources=64, heat_ties="split", heat_scaling="linear")
     assert heat_guarantee.guaranteed(lambda: None, params, context, forest, structure) is None
-    assert asked == [((64,), {"ties": "split"}), ((64,), {"exact_up_to": traffic.EXACT_NODES, "ties": "split"})]
+    assert asked == [((64,), {"ties": "split", "scaling": "linear"}),
+                     ((64,), {"exact_up_to": traffic.EXACT_NODES, "ties": "split", "scaling": "linear"})]

@@ -22,11 +22,17 @@ them (``split``, Brandes's path counts; :mod:`g2s_plugins.traffic`), which
 makes the flow of a regular grid of samples, whose path lengths nearly all
 tie, independent of node numbering and far less noisy from a sample of
 sources (docs/analysis_quality.md, "Walking flow that splits tied paths").
+A sampled flow counts each sampled source's pairs whole (``scaling: none``)
+or linearly scaled (``linear``: a pair's weight on a node in proportion to
+how far along its path the node lies, so the nodes round each sampled
+source do not read busy; :mod:`g2s_plugins.traffic`, docs/analysis_quality.md,
+"The sampling preset's held-out misses").
 The ``min_heat_rho`` and ``max_traffic_step`` of the simplification, and a
 traffic-aware ``coverage``, read a walking flow of their own settings
-(``heat_sources``/``heat_ties``, ``traffic_sources``/``traffic_ties``): set
-them as this analyzer's, so they measure the heat map the run shows and the
-flow is computed once.
+(``heat_sources``/``heat_ties``/``heat_scaling``,
+``traffic_sources``/``traffic_ties``/``traffic_scaling``): set them as this
+analyzer's, so they measure the heat map the run shows and the flow is
+computed once.
 
 Exact up to ``max_sources`` nodes, from that many area-sampled sources
 above, with the Hoeffding bound of :mod:`g2s_plugins.traffic` (0.10 of all
@@ -61,6 +67,10 @@ class Params(PluginParams):
         traffic.WALKING_TIES, description="a pair's equally short paths: first (all its weight along one) or split (evenly over all "
         "of them; for grids of samples, whose path lengths tie)"
     )
+    scaling: traffic.Scaling = Field(
+        traffic.WALKING_SCALING, description="a sampled source's pairs: none (each pair's whole weight on its path) or "
+        "linear (weighted by how far along the path a node lies: no busy ring round each sampled source)"
+    )
     aggregate: Literal["mean", "sum", "percentile"] = Field(
         "mean", description="a structure node's value: mean (a density) or sum of the through-flow of the polygons it "
         "stands for, or the mean percentile rank (0-100) of their flow"
@@ -70,7 +80,8 @@ class Params(PluginParams):
 @hookimpl
 def g2s_analyze(structure: nx.Graph, params: Params, context: RunContext) -> Mapping[int, float]:
     """Through-flow of the initial graph, averaged, summed or ranked per structure node."""
-    flow = traffic.walking_flow(context.graph, max_sources=params.max_sources, seed=params.seed, ties=params.ties)
+    flow = traffic.walking_flow(context.graph, max_sources=params.max_sources, seed=params.seed, ties=params.ties,
+                                scaling=params.scaling)
     if params.aggregate == "percentile":
         return traffic.gather(context.graph, structure, traffic.percentile(flow), mean=True)
     total = traffic.origin_weight(traffic.surface_arrays(context.graph)).sum()

@@ -137,6 +137,7 @@ class Params(PluginParams):
     traffic_sources: int = Field(traffic.WALKING_SOURCES, ge=1, description="sources of the walking flow that cover reads: set as the flow analyzer's max_sources")
     traffic_ties: traffic.Ties = Field(traffic.WALKING_TIES, description="equally short paths in that walking flow (first or split): set as the flow analyzer's ties")
     dead_end_radii: float = Field(0.0, ge=0, description="leaves of one dead end (all that hangs beyond one bridge of the graph) reaching no farther than this many cover radii from its entrance are one place: only the farthest is seeded, the cover reaches the rest; 0: every leaf")
+    traffic_scaling: traffic.Scaling = Field(traffic.WALKING_SCALING, description="that walking flow's sampled pairs (none or linear): set as the flow analyzer's scaling")
     leaf_min_depth: float = Field(0.0, ge=0, description="leaves of the navmesh graph less deep than this (m: how far their polygon reaches beyond the edge it shares) are not seeded as terminals, the cover still reaches them; 0: every leaf; leaves without a polygon (the sampling route) always count")
 
 
@@ -177,7 +178,8 @@ def g2s_select_terminals(graph: nx.Graph, params: Params, context: RunContext) -
     if params.traffic_weight > 0:
         traffic_radius = params.traffic_radius if params.traffic_radius is not None else TRAFFIC_RADIUS_SHARE * radius
         # the plain cover below grows from this one, so its radius guarantee holds whatever this one chose
-        lengths = traffic_lengths(arrays, params.traffic_weight, params.traffic_sources, params.traffic_ties)
+        lengths = traffic_lengths(arrays, params.traffic_weight, params.traffic_sources, params.traffic_ties,
+                                  params.traffic_scaling)
         seeds = cover_paths(lengths, seeds, eligible, traffic_radius)
     cover = cover_paths(adjacency, seeds, eligible, radius)
     waypoints = np.setdiff1d(cover, leaves)
@@ -304,15 +306,16 @@ def _plan_distances(points: np.ndarray, start: np.ndarray, end: np.ndarray) -> n
 
 
 def traffic_lengths(
-    arrays: traffic.SurfaceArrays, weight: float, sources: int = traffic.WALKING_SOURCES, ties: traffic.Ties = traffic.WALKING_TIES
+    arrays: traffic.SurfaceArrays, weight: float, sources: int = traffic.WALKING_SOURCES, ties: traffic.Ties = traffic.WALKING_TIES,
+    scaling: traffic.Scaling = traffic.WALKING_SCALING,
 ) -> sp.csr_array:
     """(n, n) edge lengths of a graph's ``arrays`` plus ``weight`` x the difference of the walking-flow
-    percentiles (``sources`` sampled sources, ``ties``) of each edge's ends.
+    percentiles (``sources`` sampled sources, ``ties``, ``scaling``) of each edge's ends.
 
     Rows as in ``arrays`` (:func:`g2s_plugins.traffic.surface_arrays`);
     ``weight`` in metres per percentile point (0-100). O(m) after the flow.
     """
-    rank = traffic.percentile(traffic.arrays_walking_flow(arrays, max_sources=sources, ties=ties))
+    rank = traffic.percentile(traffic.arrays_walking_flow(arrays, max_sources=sources, ties=ties, scaling=scaling))
     adjacency = arrays.adjacency
     rows = np.repeat(np.arange(arrays.n), np.diff(adjacency.indptr))
     lengths = adjacency.data + weight * np.abs(rank[rows] - rank[adjacency.indices])

@@ -1,0 +1,92 @@
+"""A sampled walking flow with linear scaling (``scaling: linear``): by hand on a corridor, unbiased over the sources,
+and the settings that choose it."""
+
+from __future__ import annotations
+
+import networkx as nx
+import numpy as np
+import pytest
+import scipy.sparse as sp
+
+from g2s_core.config import find_config, load_raw_config
+from g2s_plugins import traffic
+from g2s_plugins._surface import CollapseParams
+from g2s_plugins.analyzers import flow as flow_analyzer
+from g2s_plugins.terminals import coverage
+
+
+def corridor(n: int) -> sp.csr_array:
+    """Symmetric unit edge lengths of a corridor 0 - 1 - ... - n-1."""
+    return traffic.surface_arrays(nx.path_graph(n), weighted=False).adjacency
+
+
+def test_the_corridor_by_hand():
+    # from source 0 of a corridor of four 1 m² nodes the plain sum puts both farther nodes' weight on node 1 (2)
+    # and node 3's on node 2 (1); linearly scaled, each pair counts twice the share of its path already walked:
+    # node 1: 2 x 1 x (1/2 + 1/3) = 5/3, node 2: 2 x 2 x 1/3 = 4/3
+    values = np.ones(4)
+    assert traffic.split_path_flow(corridor(4), np.array([0]), values).tolist() == [[0.0, 2.0, 1.0, 0.0]]
+    through = traffic.linear_through(corridor(4), np.array([0]), values, "split")
+    assert through[0].tolist() == pytest.approx([0.0, 5 / 3, 4 / 3, 0.0])
+    # the first-path trees give the same here (one path per pair)
+    assert traffic.linear_through(corridor(4), np.array([0]), values, "first")[0] == pytest.approx(through[0])
+
+
+def test_next_to_a_source_it_reads_less_busy():
+    # the plain sum gives the node beside a corridor's end every walk that starts there (8 of 9 m²); scaled, the far
+    # pairs count little there: 2 x (1/2 + ... + 1/8) = 3.44
+    through = traffic.linear_through(corridor(9), np.array([0]), np.ones(9), "split")[0]
+    assert traffic.split_path_flow(corridor(9), np.array([0]), np.ones(9))[0][1] == 7.0
+    assert through[1] == pytest.approx(2 * sum(1 / t for t in range(2, 9)))
+
+
+def unit_grid() -> tuple[sp.csr_array, np.ndarray]:
+    """A 4 x 5 grid with diagonals (lengths 1 and sqrt 2: many tied paths) and unequal areas."""
+    graph = nx.grid_2d_graph(4, 5)
+    graph.add_edges_from(((x, y), (x + 1, y + d)) for x, y in list(graph) for d in (-1, 1) if (x + 1, y + d) in graph)
+    graph = nx.convert_node_labels_to_integers(graph, ordering="sorted", label_attribute="at")
+    for u, v in graph.edges:
+        (a, b), (c, d) = graph.nodes[u]["at"], graph.nodes[v]["at"]
+        graph.edges[u, v]["weight"] = float(np.hypot(a - c, b - d))
+    area = 1.0 + np.arange(graph.number_of_nodes()) % 3
+    return traffic.surface_arrays(graph).adjacency, area
+
+
+def test_every_source_weighted_by_its_area_gives_the_exact_flow():
+    # the sample draws each source with probability a_s / A and weighs it A / k, so the estimate's expectation is
+    # the sum over every source of a_s x its term: with split ties each pair's two directions add up to 1 along
+    # its paths, so that sum is the exact flow (unbiased)
+    adjacency, area = unit_grid()
+    exact, sampled = traffic.od_flow(adjacency, area, ties="split")
+    assert sampled is None
+    scaled = area @ traffic.linear_through(adjacency, np.arange(len(area)), area, "split")
+    assert scaled == pytest.approx(exact, rel=1e-9)
+    # and the plain sum too, each source's term differently spread
+    plain = area @ traffic.split_path_flow(adjacency, np.arange(len(area)), area)
+    assert plain == pytest.approx(exact, rel=1e-9)
+
+
+def test_only_a_sampled_flow_is_scaled():
+    adjacency, area = unit_grid()
+    exact, _ = traffic.od_flow(adjacency, area, ties="split")
+    assert np.array_equal(traffic.od_flow(adjacency, area, ties="split", scaling="linear")[0], exact)
+    plain, sampled = traffic.od_flow(adjacency, area, 4, ties="split")
+    scaled, _ = traffic.od_flow(adjacency, area, 4, ties="split", scaling="linear")
+    assert sampled == 4 and not np.allclose(plain, scaled)
+    # the same four sources (seed 0), each term scaled: the sum of linear_through weighted as the sample weighs
+    sources, counts = np.unique(np.random.default_rng(0).choice(20, size=4, p=area / area.sum()), return_counts=True)
+    expected = (counts * area.sum() / 4) @ traffic.linear_through(adjacency, sources, area, "split")
+    assert scaled == pytest.approx(expected, rel=1e-12)
+
+
+def test_the_settings_that_choose_it():
+    # none by default everywhere; the sampling preset sets linear for the analyzer, the guarantee's heat flow and the
+    # traffic-aware cover alike, so the three read one flow
+    assert traffic.WALKING_SCALING == "none"
+    assert flow_analyzer.Params().scaling == CollapseParams().heat_scaling == coverage.Params().traffic_scaling == "none"
+    raw = load_raw_config(find_config("map_analysis_sampling"))
+    (analyzer,) = (a for a in raw["analyzers"] if a["plugin"] == "flow")
+    assert analyzer["params"]["scaling"] == raw["simplify"]["params"]["heat_scaling"] == "linear"
+    assert raw["terminals"]["params"]["traffic_scaling"] == "linear"
+    with pytest.raises(ValueError):
+        flow_analyzer.Params(scaling="quadratic")
