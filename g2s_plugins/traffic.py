@@ -73,8 +73,8 @@ That estimate is unbiased but lumpy where it matters for a heat map: every
 walk from a sampled source leaves it through its few neighbours, so the
 nodes next to each sampled source get all of its weight and read busier
 than they are (on grid samplings with split ties, the samples 0.5-1.6 m
-from a sampled source read 2.5-4.4 percentile points high and carry 39-52 %
-of the sample's squared rank error; docs/analysis_quality.md, "The sampling
+from a sampled source read 2.5-6.5 percentile points high and carry 25-52 %
+of the sample's squared rank error on five levels; docs/analysis_quality.md, "The sampling
 preset's held-out misses"). R. Geisberger, P. Sanders and D. Schultes
 ("Better approximation of betweenness centrality", ALENEX 2008, 90-100)
 weight each pair's contribution to v by how far along its path v lies::
