@@ -65,6 +65,7 @@ class Output(Console):
         except OSError as exc:
             raise G2SError(f"cannot write to standard output ({exc.strerror or exc})") from None
 
+
 __all__ = ["EXIT_READER_LEFT", "Output", "main", "named", "output_folder", "stage_table"]
 
 
