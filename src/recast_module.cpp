@@ -710,15 +710,25 @@ std::vector<std::array<int, 3>> least_diagonal_triangulation(const std::vector<s
     return triangles;
 }
 
-// Whether the `n` detail vertices `v` (x, y, z each; the polygon's own vertices first, as Recast puts them) of
-// polygon `i` of `pm` are at least 4 and all lie on its outline (within a thousandth of a cell in plan): the
-// details shortest_hull_triangulation retriangulates. O(n x the polygon's vertices).
-bool detail_on_outline(const rcPolyMesh& pm, int i, const float* v, int n) {
+// The number of vertices of polygon `i` of `pm` (its unused slots hold RC_MESH_NULL_IDX).
+int polygon_vertex_count(const rcPolyMesh& pm, int i) {
     const unsigned short* p = &pm.polys[static_cast<size_t>(i) * 2 * pm.nvp];
     int nin = 0;
     while (nin < pm.nvp && p[nin] != RC_MESH_NULL_IDX) ++nin;
+    return nin;
+}
+
+// How far in plan a detail vertex may lie from a polygon's outline and still count as on it: a thousandth
+// of a cell (detail_on_outline, and the same tolerance for shortest_hull_triangulation's collinear samples).
+double outline_tolerance(const rcPolyMesh& pm) { return 1e-3 * pm.cs; }
+
+// Whether the `n` detail vertices `v` (x, y, z each; the polygon's own vertices first, as Recast puts them) of
+// polygon `i` of `pm` are at least 4 and all lie on its outline (within outline_tolerance in plan): the
+// details shortest_hull_triangulation retriangulates. O(n x the polygon's vertices).
+bool detail_on_outline(const rcPolyMesh& pm, int i, const float* v, int n) {
+    const int nin = polygon_vertex_count(pm, i);
     if (n < 4) return false;
-    const double on_outline = 1e-3 * pm.cs;
+    const double on_outline = outline_tolerance(pm);
     for (int k = nin; k < n; ++k) {
         bool on_edge = false;
         for (int a = 0, b = nin - 1; a < nin && !on_edge; b = a++) {
@@ -740,9 +750,7 @@ bool detail_on_outline(const rcPolyMesh& pm, int i, const float* v, int n) {
 // joined by least_diagonal_triangulation (Recast's n <= 127 samples), whose diagonals cross the sliver
 // instead. Returns false, leaving `one` as it was, if a vertex lies inside or no such triangulation exists.
 bool shortest_hull_triangulation(const rcPolyMesh& pm, int i, rcPolyMeshDetail& one) {
-    const unsigned short* p = &pm.polys[static_cast<size_t>(i) * 2 * pm.nvp];
-    int nin = 0;
-    while (nin < pm.nvp && p[nin] != RC_MESH_NULL_IDX) ++nin;
+    const int nin = polygon_vertex_count(pm, i);
     const int n = static_cast<int>(one.meshes[1]);
     const float* v = one.verts;  // Recast puts the polygon's own vertices first
     if (one.meshes[0] != 0 || !detail_on_outline(pm, i, v, n)) return false;
@@ -751,7 +759,7 @@ bool shortest_hull_triangulation(const rcPolyMesh& pm, int i, rcPolyMeshDetail& 
         cx += v[k * 3] / nin;
         cz += v[k * 3 + 2] / nin;
     }
-    const double on_outline = 1e-3 * pm.cs;
+    const double on_outline = outline_tolerance(pm);
     std::vector<int> hull(n);
     std::vector<double> angle(n);
     for (int k = 0; k < n; ++k) {

@@ -761,8 +761,7 @@ def _onto_ground_below(points: np.ndarray, out: np.ndarray, depth: np.ndarray, c
     return lowered
 
 
-def _extend(kept: list[_Edge], caster: RayCaster, s: _Settings,
-            depth: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
+def _extend(kept: list[_Edge], caster: RayCaster, s: _Settings, depth: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """The ends of each opening, extended along its edge (one batched pass per test): (n,3) and (n,3).
 
     Candidates just inside the edge, beyond both ends: the surface must go on under them, the
@@ -771,7 +770,7 @@ def _extend(kept: list[_Edge], caster: RayCaster, s: _Settings,
     (a floor sloping down out of it) they would stand ``lift * sin(slope)`` farther out, outside the
     jambs' faces from 7 degrees on, and the extension would run along the walls' outer faces.
     ``depth`` (n,): how far below its samples each edge's floor may end, down steps (its ends are first
-    lowered onto that ground, :func:`_onto_ground_below`); None: nowhere.
+    lowered onto that ground, :func:`_onto_ground_below`); 0: at its samples' level.
     """
     n = len(kept)
     out = np.array([e.outward for e in kept])
@@ -779,9 +778,8 @@ def _extend(kept: list[_Edge], caster: RayCaster, s: _Settings,
     inset = _INSET_STEPS * s.delta  # candidates stand this far inside the edge line
     first = _onto_grazed_step(np.array([e.first for e in kept]), out, caster, s)
     last = _onto_grazed_step(np.array([e.last for e in kept]), out, caster, s)
-    if depth is not None:
-        first = _onto_ground_below(first, out, depth, caster, s)
-        last = _onto_ground_below(last, out, depth, caster, s)
+    first = _onto_ground_below(first, out, depth, caster, s)
+    last = _onto_ground_below(last, out, depth, caster, s)
     along = _unit(np.cross(nrm, out))  # walking direction along the edge (interior on the left)
     n_ext = max(1, int(math.ceil((2.0 * s.radius + s.step) / s.delta)))
     steps = s.delta * np.arange(1, n_ext + 1)
