@@ -53,17 +53,29 @@ _NO_LOG = logging.NullHandler()  # on the root logger, it keeps logging's last r
 class Output(Console):
     """Standard output through rich, ending the command with :data:`EXIT_READER_LEFT` when its reader leaves."""
 
+    def __init__(self) -> None:
+        super().__init__(file=_CheckedStdout())
+
     def on_broken_pipe(self) -> None:
         try:
             super().on_broken_pipe()  # stops writing to the closed pipe, then exits
         except SystemExit:
             raise SystemExit(EXIT_READER_LEFT) from None
 
-    def _check_buffer(self) -> None:
-        try:  # rich writes here; a closed pipe is on_broken_pipe's, another failure (a full disk) was an internal error
-            super()._check_buffer()
-        except OSError as exc:
-            raise G2SError(f"cannot write to standard output ({exc.strerror or exc})") from None
+
+class _CheckedStdout:
+    """``sys.stdout`` as it is at each use (pytest replaces it), whose ``write`` and ``flush`` that fail (a full disk)
+    raise a :class:`G2SError`, bad output in one line, rather than an internal error; but for a closed pipe, which
+    rich's :meth:`Console.on_broken_pipe` handles."""
+
+    def __getattr__(self, name: str) -> Any:
+        attribute = getattr(sys.stdout, name)
+        def checked(*text: str) -> Any:
+            try:
+                return attribute(*text)
+            except OSError as exc:
+                raise exc if isinstance(exc, BrokenPipeError) else G2SError(f"cannot write to standard output ({exc.strerror or exc})") from None
+        return checked if name in ("write", "flush") else attribute
 
 
 __all__ = ["EXIT_READER_LEFT", "Output", "main", "named", "output_folder", "stage_table"]

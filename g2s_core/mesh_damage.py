@@ -93,9 +93,9 @@ def describe_damage(path: Path, data: bytes) -> str | None:
             return f"binary STL ends early: the header announces {count} triangles, the file holds {(size - STL_HEADER) // STL_TRIANGLE}"
         if size > expected:
             return f"binary STL has {size - expected} bytes more than the {count} triangles its header announces"
-    announced = int.from_bytes(data[8:GLB_HEADER], "little")
-    if suffix == ".glb" and size >= GLB_HEADER and data.startswith(b"glTF") and size < announced:
-        return f"the GLB file ends early (its header announces {announced} bytes, the file has {size})"
+    announced = int.from_bytes(data[8:GLB_HEADER], "little") if size >= GLB_HEADER else None  # None: cut inside the header
+    if suffix == ".glb" and data.startswith(b"glTF") and (announced is None or size < announced):
+        return f"the GLB file ends early (its header {f'is {GLB_HEADER}' if announced is None else f'announces {announced}'} bytes, the file has {size})"
     if suffix == ".glb" and data.startswith(b"glTF") and (version := int.from_bytes(data[4:8], "little")) != 2:
         return f"the GLB header's version is {version}; g2s reads GLB version 2 (glTF 2.0): convert the file to glTF 2.0"
     if suffix == ".glb" and data.startswith(b"glTF"):

@@ -107,7 +107,7 @@ import scipy.sparse as sp
 from scipy.sparse import csgraph
 
 from g2s_plugins import _trees
-from g2s_plugins.surface_arrays import SurfaceArrays, surface_arrays
+from g2s_plugins.surface_arrays import MIN_LENGTH, SurfaceArrays, surface_arrays
 
 __all__ = [
     "EXACT_NODES", "TIE_TOLERANCE", "WALKING_SCALING", "WALKING_SOURCES", "WALKING_TIES", "Scaling", "SurfaceArrays",
@@ -456,13 +456,17 @@ def linear_through(adjacency: sp.csr_array, sources: np.ndarray, values: np.ndar
     linearly scaled through-weight of the module docs.
 
     Args:
-        adjacency: (n, n) edge lengths >= 0, CSR, symmetric.
+        adjacency: (n, n) edge lengths >= 0, CSR, symmetric; a length under :data:`MIN_LENGTH` (a stored zero:
+            coincident nodes) is read as that, as :func:`surface_arrays` stores it, so that a pair at distance 0
+            still counts (its ratio d(s, v) / d(s, t) then that of the steps between them).
         sources: (b,) rows of the sources.
         values: (n,) the value of each node (its area, m²).
 
     0 for the source and for unreached nodes. Per source one more Dijkstra search, O(m + n log n), and one call of
     :func:`split_path_flow` (or :func:`shortest_path_flow`) with that source's values.
     """
+    if np.any(adjacency.data < MIN_LENGTH):  # else every pair at distance 0 was dropped (its ratio 0 / 0)
+        adjacency = sp.csr_array((np.maximum(adjacency.data, MIN_LENGTH), adjacency.indices, adjacency.indptr), adjacency.shape)
     distance = csgraph.dijkstra(adjacency, directed=True, indices=sources)
     through = np.empty((len(sources), len(values)))
     for row, (source, to) in enumerate(zip(np.asarray(sources).tolist(), distance)):

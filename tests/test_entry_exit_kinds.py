@@ -13,6 +13,7 @@ import pytest
 import trimesh
 
 from g2s_core.config import PRESETS_DIR, load_config
+from g2s_plugins._raycasting import RayCaster
 from g2s_plugins.recast import RecastParams, build_navmesh
 from g2s_plugins.samples import outdoor, pieces
 from g2s_plugins.terminals import entry_exit
@@ -519,6 +520,20 @@ def test_probes_walk_down_steps_within_the_climb_of_the_last_ground() -> None:
     assert found[1].tolist() == missing[1].tolist()  # a drop over the climb stays one
     assert before[0, 5] == pytest.approx(0.8)  # the bisection reaches the last tread's depth
     assert not before[1].any()  # rows that walked down nothing keep the origin's reach
+
+
+def test_a_probe_over_a_crack_walks_down_steps_from_the_ground_beside_it() -> None:
+    # A catwalk's 2 cm slot along the way out, over a floor 0.6 m below that reaches on past the catwalk's end: the
+    # probes in the slot stand on the catwalk (the crack rule), but the walk down steps went on from the floor under
+    # the slot, so the 0.6 m drop off the catwalk's end (the climb is 0.4 m) was walked as no step at all and no end
+    # was found within reach. (The bisection after the probes has no crack rule: in the slot it ends at the last
+    # probe, up to a search step short of the end.)
+    catwalk = [_box(-1.0, 0.6, -SLAB, 0.0, -1.0, -0.01), _box(-1.0, 0.6, -SLAB, 0.0, 0.01, 1.0)]
+    caster = RayCaster(trimesh.util.concatenate([*catwalk, _box(-1.0, 2.0, -0.6 - SLAB, -0.6, -1.0, 1.0)]))
+    s = entry_exit._settings(entry_exit.Params(), CONFIG.agent)
+    end, drop = entry_exit._surface_ends(caster, np.array([[0.0, s.lift, 0.0]]), np.array([[1.0, 0.0, 0.0]]),
+                                         np.array([[0.0, -1.0, 0.0]]), s, 3.0 * s.radius)
+    assert 0.6 - s.delta - 1e-9 <= end[0] <= 0.6 and drop[0] == 0.0
 
 
 def _stair_down_off_the_edge(riser: float = 0.2, steps: int = 10) -> trimesh.Trimesh:

@@ -66,6 +66,25 @@ def test_every_source_weighted_by_its_area_gives_the_exact_flow():
     assert plain == pytest.approx(exact, rel=1e-9)
 
 
+@pytest.mark.parametrize("stored", ["graph", "zeros"])
+def test_coincident_nodes_keep_their_pairs(stored):
+    # a corridor 0 - 1 - 2 - 3 - 4 of 1 m, 0, 0 and 1 m edges (nodes 1, 2, 3 at one position), areas 1-5 m²; the exact
+    # flow through node 2 is 2 x (1 + 2) x (4 + 5) = 54. From source 1 the pair (1, 3) passes node 2 half way (its
+    # zero-length steps counted as the graph's arrays store them, MIN_LENGTH each): 2 x 4 x 1/2 = 4. With the zeros
+    # stored as such that pair lay at distance 0 and was dropped: node 2 summed to 38 over every source
+    graph = nx.Graph()
+    graph.add_weighted_edges_from([(0, 1, 1.0), (1, 2, 0.0), (2, 3, 0.0), (3, 4, 1.0)])
+    rows, cols = [0, 1, 2, 3, 1, 2, 3, 4], [1, 2, 3, 4, 0, 1, 2, 3]
+    adjacency = traffic.surface_arrays(graph).adjacency if stored == "graph" else \
+        sp.csr_array(([1.0, 0.0, 0.0, 1.0] * 2, (rows, cols)), shape=(5, 5))
+    area = np.arange(1.0, 6.0)
+    exact, _ = traffic.od_flow(adjacency, area, ties="split")
+    assert exact.tolist() == [0.0, 24.0, 54.0, 60.0, 0.0]
+    assert traffic.linear_through(adjacency, np.array([1]), area, "split")[0][2] == pytest.approx(4.0)
+    for ties in ("split", "first"):
+        assert area @ traffic.linear_through(adjacency, np.arange(5), area, ties) == pytest.approx(exact, rel=1e-9)
+
+
 def test_only_a_sampled_flow_is_scaled():
     adjacency, area = unit_grid()
     exact, _ = traffic.od_flow(adjacency, area, ties="split")

@@ -395,12 +395,16 @@ def _surface_ends(
         # step to both sides of it, across the way (beyond an edge oblique to the way, one side at most).
         rows = np.flatnonzero(missing)
         side = s.delta * _unit(np.cross(directions[part][rows // n_off], UP))
-        missing[rows] = ~ground_across_crack(
+        across, beside = ground_across_crack(
             caster, probes[rows], probe_down[rows], [side], s.lift + s.climb, lambda faces: _walkable(caster, faces, s)
-        )[0]
+        )
+        missing[rows] = ~across
+        # such a probe stands on the ground beside the crack: the walk down steps goes on from there, not from
+        # whatever lies under the crack (a floor below a catwalk's slot)
+        distance = hits.distance.copy()
+        distance[rows[across]], walkable[rows[across]] = beside[across], True
         missing = missing.reshape(-1, n_off)
-        missing, before = _down_steps(missing, hits.distance.reshape(-1, n_off) - s.lift, walkable.reshape(-1, n_off),
-                                      s.climb)
+        missing, before = _down_steps(missing, distance.reshape(-1, n_off) - s.lift, walkable.reshape(-1, n_off), s.climb)
         # The surface ends where two probes in a row find none: a crack narrower than a search step
         # (unwelded floor tiles) is no edge, and neither the agent nor Recast's voxels see it.
         missing[:, :-1] &= missing[:, 1:]

@@ -162,7 +162,7 @@ def test_gltf_whose_json_is_broken_says_where(data, says, tmp_path, quick_config
     assert tree(tmp_path / "out") == []
 
 
-# --- meshes whose arrays are damaged, and what a mesh file names (found by fuzzing, /tmp/fuzz, 3 December 2026) ---
+# --- meshes whose arrays are damaged, and what a mesh file names (found by fuzzing with a scratch script, 3 December 2026) ---
 
 PLY_HEAD = ("ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
             "element face 2\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n0 0 10\n10 0 10\n10 0 0\n3 0 1 2\n")

@@ -205,6 +205,15 @@ def test_a_glb_of_another_version_is_named(tmp_path):
         load_mesh(path)
 
 
+@pytest.mark.parametrize("size", [4, 7, 11])
+def test_a_glb_cut_inside_its_header_is_named_cut(size, tmp_path):
+    # was named by its version (4 bytes: "version is 0") or its first chunk ("of type ''"), both read from the cut
+    path = tmp_path / "level.glb"
+    path.write_bytes((b"glTF" + (2).to_bytes(4, "little") + (100).to_bytes(4, "little"))[:size])
+    with pytest.raises(MeshError, match=rf"the GLB file ends early \(its header is 12 bytes, the file has {size}\)"):
+        load_mesh(path)
+
+
 def test_a_snap_ray_longer_than_any_level_is_refused_by_its_key(tmp_path, capsys):
     # 1e308 m overflowed the rays' ends to inf: "entry_exit failed: raised LinAlgError", exit 1
     config = tmp_path / "long_snap.yaml"
