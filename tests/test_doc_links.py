@@ -55,6 +55,20 @@ def test_relative_links_and_named_files_exist(doc: Path):
     assert not broken, f"{doc.name}: {broken}"
 
 
+MACHINE_PATH = re.compile(r"(?<![\w.])/(?:work|home|root)/\S*")
+"""A path on some developer's machine: a reader of the project cannot follow it."""
+
+
+@pytest.mark.parametrize("doc", DOCS, ids=lambda path: path.name)
+def test_docs_cite_no_path_outside_the_repository(doc: Path):
+    assert not MACHINE_PATH.findall(doc.read_text(encoding="utf-8")), doc.name
+
+
+def test_the_machine_path_check_finds_them():
+    assert MACHINE_PATH.findall("rules (/work/notes/x.md) and `/root/.cache`, not `g2s_core/rooted.py`") \
+        == ["/work/notes/x.md)", "/root/.cache`,"]
+
+
 REFERENCE = {"terminals": "plugins.md", "loops": "plugins.md", "roots": "plugins.md", "simplify": "plugins.md",
              "analyzers": "plugins.md", "evaluators": "plugins.md", "steiner": "steiner.md", "outputs": "outputs.md",
              "executors": "batch.md", "commands": "batch.md"}
