@@ -1,4 +1,4 @@
-"""Level kinds of the fifth to twelfth held-out rounds (issue 9): generators no preset setting was made on.
+"""Level kinds of the fifth to thirteenth held-out rounds (issue 9): generators no preset setting was made on.
 
 Fifth round: six kinds, each about 1,000 navmesh polygons with the presets' agent (radius 0.5 m, height 2 m, climb 0.4 m):
 ``subway`` (platforms, track pits 1.2 m lower, stairs up to two concourses), ``archipelago`` (islands joined by
@@ -75,6 +75,19 @@ a creek crossed only by footbridges, ponds, tree clumps) and ``scaffold`` (a con
 joined through gaps to a scaffold deck round the building, a stair tower). Closed solids stacked on one another
 leave a floor between them: a pier under a bridge's deck now rises to the deck's top (a first draft had floor on
 every pier's top, 7.4 m² each, under the deck), and :func:`_ridged` makes each solid no one enters one convex body.
+
+Thirteenth round: six more kinds, 459-771 navmesh polygons with that agent (seeds 0-2): ``dry_dock`` (quays round a
+dock 10 m deep with altars, flights down its walls, a ship on keel blocks reached by gangways, a gantry's girder
+walk 14 m up), ``mountain_pass`` (a cliff over the 45-degree limit climbed by a switchback path cut into it, a
+walkable piste beside it, lift stations, huts), ``zoo`` (paths round railed enclosures the ground stops in, viewing
+decks, a walk-through aviary entered by two airlocks), ``skatepark`` (bowls whose walls turn vertical, so only a
+channelled one is entered on foot, quarter pipes, funboxes, stair sets), ``interchange`` (a concourse over three
+metro lines 8, 16 and 24 m down, crossing, joined by banks of three escalators) and ``stepwell`` (a pit of terraces
+1.8 m apart joined by short flights two or one a side, pillars). A flight meets a floor beside it at its first and
+last steps only (Recast's ledge filter: a span whose walkable neighbours differ by more than the climb is a ledge),
+so each flight here ends on a landing or head-on (a first draft's flights down the dock's walls, along the wall,
+joined nothing); the top of a closed solid inside another is floor (the ship's hull under its superstructure, the
+first draft), so covers reach down to the hull's bottom and the hull stops under them.
 
 Run: ``.venv/bin/python benchmarks/level_kinds.py OUT_DIR [--kinds subway forest] [--seeds 0 1 2]`` writes
 ``OUT_DIR/<kind>_s<seed>.obj``, the files ``benchmarks/analysis_quality.py --levels`` takes (which also takes the
@@ -4336,7 +4349,7 @@ def zoo(seed: int) -> trimesh.Trimesh:
     s.prism(_strip(pond_c - direction * (pond_r + 2.0), pond_c + direction * (pond_r + 2.0), 2.0), -0.5, 0.25)
     for _ in range(int(rng.integers(12, 20))):
         p = aviary_c + rng.uniform(-1, 1, size=2) * aviary_r * 0.7
-        if np.linalg.norm(p - pond_c) > pond_r + 1.5 and abs(np.cross(direction, p - pond_c)) > 2.0:
+        if np.linalg.norm(p - pond_c) > pond_r + 1.5 and abs(direction[0] * (p - pond_c)[1] - direction[1] * (p - pond_c)[0]) > 2.0:
             angles = np.linspace(0, 2 * math.pi, 8, endpoint=False)
             s.prism(p + 0.3 * np.stack([np.cos(angles), np.sin(angles)], 1), -0.5, 5.0)
     # the reptile house and the cafe
@@ -4430,7 +4443,7 @@ def skatepark(seed: int) -> trimesh.Trimesh:
             along, across = (gx - c[0]) * math.cos(turn) + (gz - c[1]) * math.sin(turn), \
                 -(gx - c[0]) * math.sin(turn) + (gz - c[1]) * math.cos(turn)
             floor = -depth + np.clip(along - (r - depth), 0.0, None) * math.tan(math.radians(18.0))
-            bowl = np.where((np.abs(across) <= 1.5) & (along >= 0.0), np.minimum(bowl, np.minimum(floor, 0.0)), bowl)
+            bowl = np.where((np.abs(across) <= 1.5) & (along >= 0.0), np.minimum(floor, 0.0), bowl)
         heights = np.minimum(heights, bowl)
     for _ in range(int(rng.integers(3, 6))):  # quarter pipes along x or z
         width, top = rng.uniform(6.0, 10.0), 2.2
@@ -4443,8 +4456,7 @@ def skatepark(seed: int) -> trimesh.Trimesh:
         curve = np.clip(t - bank - 2.5, 0.0, top)
         profile = np.where(t < bank, t * math.tan(math.radians(20.0)), np.where(t <= bank + 2.5, top,
                                                                                 top - np.sqrt(np.clip(top ** 2 - (top - curve) ** 2, 0, None))))
-        profile = np.where((t >= 0.0) & (t <= length), profile, 0.0)
-        heights = np.where(inside, np.maximum(heights, profile), heights)
+        heights = np.where(inside & (t >= 0.0) & (t <= length), np.maximum(heights, profile), heights)
     for _ in range(int(rng.integers(3, 6))):  # funboxes
         top, width, flat = 1.0, rng.uniform(3.0, 4.0), rng.uniform(4.0, 6.0)
         bank = top / math.tan(math.radians(20.0))
