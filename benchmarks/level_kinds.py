@@ -4037,6 +4037,11 @@ def scaffold(seed: int) -> trimesh.Trimesh:
     return s.mesh()
 
 
+def _trunk(s: _Solids, p: np.ndarray, radius: float, y0: float, y1: float) -> None:
+    """A tree's trunk (or a post): an octagonal prism of ``radius`` m about plan point ``p`` (x, z) from y0 to y1."""
+    angles = np.linspace(0, 2 * math.pi, 8, endpoint=False)
+    s.prism(p + radius * np.stack([np.cos(angles), np.sin(angles)], 1), y0, y1)
+
 def dry_dock(seed: int) -> trimesh.Trimesh:
     """A shipyard's dry dock: quays at y = 0 round a dock 110-120 x 36 m cut 10 m down (the quays are 10.5 m thick, so
     the dock's walls are solid), open to the sea at its east end, where a caisson 2.5 m wide, railed, joins the two
@@ -4243,8 +4248,7 @@ def mountain_pass(seed: int) -> trimesh.Trimesh:
         p = np.array([rng.uniform(3.0, size_x - 3.0), rng.choice([rng.uniform(3.0, 60.0), rng.uniform(z_top + 3.0, size_z - 3.0)])])
         if (p[1] > z_top + 2.0 or p[1] < float(base(np.array(p[0]))) - 4.0) and _clear(p[0] - 1.0, p[0] + 1.0, p[1] - 1.0, p[1] + 1.0, path):
             y = ground_at(*p)
-            angles = np.linspace(0, 2 * math.pi, 8, endpoint=False)
-            s.prism(p + 0.3 * np.stack([np.cos(angles), np.sin(angles)], 1), y - 0.5, y + 6.0)
+            _trunk(s, p, 0.3, y - 0.5, y + 6.0)
     for _ in range(int(rng.integers(20, 31))):
         p = np.array([rng.uniform(5.0, size_x - 5.0), rng.choice([rng.uniform(5.0, 55.0), rng.uniform(z_top + 5.0, size_z - 5.0)])])
         if _clear(p[0] - 3.0, p[0] + 3.0, p[1] - 3.0, p[1] + 3.0, path) and (p[1] > z_top or p[1] < float(base(np.array(p[0]))) - 5.0):
@@ -4350,8 +4354,7 @@ def zoo(seed: int) -> trimesh.Trimesh:
     for _ in range(int(rng.integers(12, 20))):
         p = aviary_c + rng.uniform(-1, 1, size=2) * aviary_r * 0.7
         if np.linalg.norm(p - pond_c) > pond_r + 1.5 and abs(direction[0] * (p - pond_c)[1] - direction[1] * (p - pond_c)[0]) > 2.0:
-            angles = np.linspace(0, 2 * math.pi, 8, endpoint=False)
-            s.prism(p + 0.3 * np.stack([np.cos(angles), np.sin(angles)], 1), -0.5, 5.0)
+            _trunk(s, p, 0.3, -0.5, 5.0)
     # the reptile house and the cafe
     s.wall((house[0], house[2]), (house[1], house[2]), -0.3, 3.5)
     s.wall((house[0], house[3]), (house[1], house[3]), -0.3, 3.5)
@@ -4390,8 +4393,7 @@ def zoo(seed: int) -> trimesh.Trimesh:
             break
         p = np.array([rng.uniform(3.0, size_x - 3.0), rng.uniform(3.0, size_z - 3.0)])
         if _clear(p[0] - 1.0, p[0] + 1.0, p[1] - 1.0, p[1] + 1.0, taken):
-            angles = np.linspace(0, 2 * math.pi, 8, endpoint=False)
-            s.prism(p + 0.3 * np.stack([np.cos(angles), np.sin(angles)], 1), -0.5, 5.0)
+            _trunk(s, p, 0.3, -0.5, 5.0)
             taken.append((p[0] - 1.0, p[0] + 1.0, p[1] - 1.0, p[1] + 1.0))
             trees += 1
     _terrain(s, xs, zs, np.zeros((len(xs), len(zs))), keep=keep)
@@ -4633,8 +4635,7 @@ def stepwell(seed: int) -> trimesh.Trimesh:
     for _ in range(int(rng.integers(20, 30))):
         p = np.array([rng.uniform(-rx0 - size + 1.5, rx0 + size - 1.5), rng.uniform(-rz0 - size + 1.5, rz0 + size - 1.5)])
         if _clear(p[0] - 2.0, p[0] + 2.0, p[1] - 2.0, p[1] + 2.0, footprints):
-            angles = np.linspace(0, 2 * math.pi, 8, endpoint=False)
-            s.prism(p + 0.35 * np.stack([np.cos(angles), np.sin(angles)], 1), -0.5, 6.0)
+            _trunk(s, p, 0.35, -0.5, 6.0)
     s.ground(-rx0 - size, rx0 + size, -rz0 - size, rz0 + size, 0.0, footprints, thickness=-bottom)
     return s.mesh()
 
