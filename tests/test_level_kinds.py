@@ -240,8 +240,8 @@ def test_the_dry_docks_floor_altars_deck_and_girder_walk_are_reached(kinds):
 
 
 def test_the_mountain_pass_switchback_climbs_the_cliff(kinds):
-    """One area; on the cliff (x 20-90 m, where it is over 45 degrees) the floor is the switchback's legs alone: in
-    each leg's band of z the polygons' heights rise along x (even legs) or fall (odd ones)."""
+    """One area; on the cliff (x 20-90 m, over 45 degrees) the floor 1.5-20 m up lies at three or more heights about
+    6 m apart: the switchback's legs, one above another (the cliff itself holds none)."""
     label, nav = areas(kinds["mountain_pass"](0))
     assert label.max() == 0
     x, y, z = nav.centres.T
