@@ -1,4 +1,4 @@
-"""Level kinds of the fifth to twelfth held-out rounds (issue 9): generators no preset setting was made on.
+"""Level kinds of the fifth to thirteenth held-out rounds (issue 9): generators no preset setting was made on.
 
 Fifth round: six kinds, each about 1,000 navmesh polygons with the presets' agent (radius 0.5 m, height 2 m, climb 0.4 m):
 ``subway`` (platforms, track pits 1.2 m lower, stairs up to two concourses), ``archipelago`` (islands joined by
@@ -75,6 +75,19 @@ a creek crossed only by footbridges, ponds, tree clumps) and ``scaffold`` (a con
 joined through gaps to a scaffold deck round the building, a stair tower). Closed solids stacked on one another
 leave a floor between them: a pier under a bridge's deck now rises to the deck's top (a first draft had floor on
 every pier's top, 7.4 m² each, under the deck), and :func:`_ridged` makes each solid no one enters one convex body.
+
+Thirteenth round: six more kinds, 459-771 navmesh polygons with that agent (seeds 0-2): ``dry_dock`` (quays round a
+dock 10 m deep with altars, flights down its walls, a ship on keel blocks reached by gangways, a gantry's girder
+walk 14 m up), ``mountain_pass`` (a cliff over the 45-degree limit climbed by a switchback path cut into it, a
+walkable piste beside it, lift stations, huts), ``zoo`` (paths round railed enclosures the ground stops in, viewing
+decks, a walk-through aviary entered by two airlocks), ``skatepark`` (bowls whose walls turn vertical, so only a
+channelled one is entered on foot, quarter pipes, funboxes, stair sets), ``interchange`` (a concourse over three
+metro lines 8, 16 and 24 m down, crossing, joined by banks of three escalators) and ``stepwell`` (a pit of terraces
+1.8 m apart joined by short flights two or one a side, pillars). A flight meets a floor beside it at its first and
+last steps only (Recast's ledge filter: a span whose walkable neighbours differ by more than the climb is a ledge),
+so each flight here ends on a landing or head-on (a first draft's flights down the dock's walls, along the wall,
+joined nothing); the top of a closed solid inside another is floor (the ship's hull under its superstructure, the
+first draft), so covers reach down to the hull's bottom and the hull stops under them.
 
 Run: ``.venv/bin/python benchmarks/level_kinds.py OUT_DIR [--kinds subway forest] [--seeds 0 1 2]`` writes
 ``OUT_DIR/<kind>_s<seed>.obj``, the files ``benchmarks/analysis_quality.py --levels`` takes (which also takes the
@@ -4024,6 +4037,609 @@ def scaffold(seed: int) -> trimesh.Trimesh:
     return s.mesh()
 
 
+def _trunk(s: _Solids, p: np.ndarray, radius: float, y0: float, y1: float) -> None:
+    """A tree's trunk (or a post): an octagonal prism of ``radius`` m about plan point ``p`` (x, z) from y0 to y1."""
+    angles = np.linspace(0, 2 * math.pi, 8, endpoint=False)
+    s.prism(p + radius * np.stack([np.cos(angles), np.sin(angles)], 1), y0, y1)
+
+def dry_dock(seed: int) -> trimesh.Trimesh:
+    """A shipyard's dry dock: quays at y = 0 round a dock 110-120 x 36 m cut 10 m down (the quays are 10.5 m thick, so
+    the dock's walls are solid), open to the sea at its east end, where a caisson 2.5 m wide, railed, joins the two
+    quays. Along each long wall an altar (a ledge 5 m wide, 5 m down; the dock's floor stops under it); two or three
+    stairs down each long wall (a flight 2.4 m wide from the quay down to the altar along the wall, a second from the
+    altar to the floor, 0.179 / 0.28 m steps, each ending on a landing 2.5 m long) and a flight 3 m wide down the head
+    wall. A ship on keel blocks (hull
+    80-90 x 14-16 m, bow east, its deck 2 m over the quays; the blocks leave 1.6 m under the hull, too low to stand),
+    joined to the north quay by two gangways 2.2 m wide, railed; its superstructure and hatches stand under ridged tops
+    and the deck stops under them (no floor on them or in them). A gantry crane across
+    the dock, its girder 14 m up with a railed walk 2.8 m wide on it, reached by an open switchback stair tower on the
+    north quay (:func:`_switchback`). Two workshops, 24-33 containers and 18-25 stacks of plate on the quays, all ridged
+    (the quay stops under them); bollards every 5-6 m along the dock's edges.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    dock_x0, dock_x1, dock_z0, dock_z1 = 30.0, 30.0 + rng.uniform(110.0, 120.0), 40.0, 76.0
+    size_x, size_z, floor, altar, ledge, width = dock_x1 + 2.5, 116.0, -10.0, -5.0, 5.0, 2.4
+    riser, tread = 5.0 / 28, 0.28
+    s.box(dock_x0, dock_x1, floor - 0.5, floor, dock_z0 + ledge, dock_z1 - ledge)
+    for z0, z1 in ((dock_z0, dock_z0 + ledge), (dock_z1 - ledge, dock_z1)):
+        s.box(dock_x0, dock_x1, floor - 0.5, altar, z0, z1)
+    run = 28 * tread
+    s.stairs(np.array([dock_x0 + 2 * run, (dock_z0 + dock_z1) / 2]), np.array([-1.0, 0.0]), 3.0, floor, -floor, riser, tread)
+    for rail_x in (dock_x1, size_x - 0.1):  # the caisson's rails
+        s.box(rail_x, rail_x + 0.1, 0.0, 1.1, dock_z0, dock_z1)
+    hull_x0 = dock_x0 + 2 * run + 3.0
+    hull_x1 = min(hull_x0 + rng.uniform(80.0, 90.0), dock_x1 - 5.0)
+    beam = rng.uniform(14.0, 16.0)
+    mid = (dock_z0 + dock_z1) / 2
+    hz0, hz1 = mid - beam / 2, mid + beam / 2
+    s.prism(np.array([[hull_x1 - 10.0, hz0], [hull_x1, mid], [hull_x1 - 10.0, hz1]]), floor + 1.6, 2.0)  # the bow
+    for x in np.arange(hull_x0 + 3.0, hull_x1 - 8.0, 6.0):  # keel blocks
+        s.box(x, x + 1.2, floor, floor + 1.6, mid - 1.0, mid + 1.0)
+    # the hull stops under the superstructure and the hatches, which reach down to its bottom: an up-facing top
+    # inside a closed solid with head room over it would be floor
+    covers = [_ridged(s, hull_x0, hull_x0 + rng.uniform(12.0, 16.0), hz0 + 1.0, hz1 - 1.0, floor + 1.6, 10.0)]
+    x = hull_x0 + 20.0
+    while x + 12.0 < hull_x1 - 14.0:  # hatches
+        covers.append(_ridged(s, x, x + rng.uniform(8.0, 12.0), hz0 + 3.0, hz1 - 3.0, floor + 1.6, 2.8))
+        x += rng.uniform(14.0, 18.0)
+    s.slab(hull_x0, hull_x1 - 10.0, hz0, hz1, 2.0, covers, thickness=2.0 - floor - 1.6)
+    gangways = sorted(rng.uniform(hull_x0 + 22.0, hull_x1 - 16.0, size=2))
+    if gangways[1] - gangways[0] < 12.0:
+        gangways[1] = gangways[0] + 12.0
+    for gx in gangways:
+        a, b = np.array([gx, dock_z1 + 1.5]), np.array([gx, hz1 - 1.5])
+        s.ramp(a, b, 2.2, 0.0, 2.0)
+        for side in (-1.05, 1.05):
+            s.ramp(a + [side, -1.5], b + [side, 1.0], 0.1, 0.12 + 1.0, 1.85 + 1.0, thickness=1.0)
+    # flights down the long walls, kept clear of the gangways
+    for z_wall, toward in ((dock_z1, -1.0), (dock_z0, 1.0)):
+        xs_flights: list[float] = []
+        while len(xs_flights) < int(rng.integers(2, 4)):
+            x = rng.uniform(dock_x0 + 2 * run + 5.0, dock_x1 - run - 5.0)
+            if all(abs(x - f) > 2 * run + 9.0 for f in xs_flights) and all(abs(x + run / 2 - g) > run / 2 + 6.0 for g in gangways):
+                xs_flights.append(x)
+        for x in xs_flights:
+            heading = np.array([1.0, 0.0]) if rng.random() < 0.5 else np.array([-1.0, 0.0])
+            start = x if heading[0] > 0 else x + run
+            upper, lower = z_wall + toward * width / 2, z_wall + toward * (ledge + width / 2)
+            s.stairs(np.array([start, upper]), heading, width, altar, -altar, riser, tread)
+            s.stairs(np.array([start + heading[0] * run, lower]), -heading, width, floor, altar - floor, riser, tread)
+            # a landing 2.5 m long at each flight's top: a flight meets a floor beside it only at its last step
+            for x_top, y_top, z_mid in ((start + heading[0] * run, 0.0, upper), (start, altar, lower)):
+                x_far = x_top + heading[0] * 2.5 * (1.0 if y_top == 0.0 else -1.0)
+                s.box(min(x_top, x_far), max(x_top, x_far), floor, y_top, z_mid - width / 2, z_mid + width / 2)
+    # the gantry crane and its stair tower on the north quay
+    xc = rng.uniform(dock_x0 + 30.0, dock_x1 - 30.0)
+    while any(abs(xc - g) < 6.0 for g in gangways):
+        xc += 7.0
+    for lx in (xc - 5.0, xc + 4.0):
+        for lz in (dock_z0 - 5.0, dock_z1 + 4.0):
+            s.box(lx, lx + 1.0, 0.0, 13.0, lz, lz + 1.0)
+    tower_z = dock_z1 + 9.0
+    s.box(xc - 1.5, xc + 1.5, 13.0, 14.0, dock_z0 - 6.0, tower_z)
+    for rail_x in (xc - 1.5, xc + 1.4):
+        s.box(rail_x, rail_x + 0.1, 14.0, 15.1, dock_z0 - 6.0, tower_z - 2.0)
+    s.box(xc - 1.5, xc + 1.5, 14.0, 15.1, dock_z0 - 6.0, dock_z0 - 5.9)
+    for storey in range(4):
+        _switchback(s, xc - 2.0, tower_z, 3.5 * storey, 3.5)
+        s.box(xc - 2.0, xc + 2.0, 3.5 * (storey + 1) - 0.45, 3.5 * (storey + 1), tower_z, tower_z + 2.0)
+    # workshops, containers and plate stacks (ridged: the quay stops under them)
+    taken = [(xc - 7.0, xc + 7.0, dock_z1, tower_z + _well_length(3.5) + 2.0), (xc - 7.0, xc + 7.0, dock_z0 - 8.0, dock_z0),
+             *[(g - 3.0, g + 3.0, dock_z1, dock_z1 + 6.0) for g in gangways], (0.0, dock_x0 + 2.0, mid - 4.0, mid + 4.0)]
+    footprints: list[tuple[float, float, float, float]] = []
+    wanted = [(rng.uniform(24.0, 36.0), rng.uniform(14.0, 18.0), 9.0) for _ in range(2)]
+    wanted += [(12.2, 2.5, 2.6) for _ in range(int(rng.integers(24, 34)))]
+    wanted += [(rng.uniform(4.0, 7.0), rng.uniform(2.0, 3.0), 1.2) for _ in range(int(rng.integers(18, 26)))]
+    for size, depth, h in wanted:
+        for _ in range(200):
+            w, d = (depth, size) if size < 13.0 and rng.random() < 0.5 else (size, depth)
+            x0 = rng.uniform(2.0, size_x - w - 2.0)
+            z0 = rng.uniform(2.0, dock_z0 - d - 4.0) if rng.random() < 0.5 else rng.uniform(dock_z1 + 4.0, size_z - d - 2.0)
+            if _clear(x0 - 2.5, x0 + w + 2.5, z0 - 2.5, z0 + d + 2.5, taken):
+                taken.append((x0, x0 + w, z0, z0 + d))
+                footprints.append(_ridged(s, x0, x0 + w, z0, z0 + d, -10.5, h))
+                break
+    s.ground(0.0, size_x, 0.0, size_z, 0.0, [(dock_x0, dock_x1, dock_z0, dock_z1), *footprints], thickness=10.5)
+    for x in np.arange(dock_x0 + 4.0, dock_x1 - 2.0, rng.uniform(5.0, 6.0)):  # bollards along both edges
+        for z in (dock_z0 - 1.4, dock_z1 + 1.0):
+            if _clear(x - 0.5, x + 0.9, z - 0.5, z + 0.9, taken):
+                s.box(x, x + 0.4, 0.0, 0.7, z, z + 0.4)
+    return s.mesh()
+
+
+def mountain_pass(seed: int) -> trimesh.Trimesh:
+    """A mountain pass on a 1 m grid (:func:`_terrain`), 200 x 130 m: a valley floor to the south, a face rising
+    24-30 m along +z to a plateau (the pass) from z = 100, and on the face two ways up. West of x = 110 the face is a
+    cliff at 50-55 degrees, over the presets' 45-degree limit, climbed only by a switchback path: legs 4.5 m wide cut
+    into it and built out from it (flat across, climbing along x at about 10 %, 15-100 m), hairpins joining them
+    at alternate ends, a cut from the valley to the first leg and one from the last to the plateau. East of x = 140
+    the face is a ski piste at 28-32 degrees that one walks anywhere; between the two it turns from one into the other.
+    Ripples of 0.3 m on valley and plateau; a chair lift's stations (platforms 1.2 m over their highest ground, eight
+    steps up from the side away from the face) in the valley and on the plateau with pylons between (no walk along the
+    lift); three huts under ridged roofs in the valley (the ground stops under them) and a mountain hut one enters (a
+    1.6 m door, a gable roof) on the plateau; up to 80-120 spruce trunks in the valley and on the plateau, 20-30
+    boulders.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    size_x, size_z, z_top = 200.0, 130.0, 100.0
+    rise = rng.uniform(24.0, 30.0)
+    cliff, piste = math.radians(rng.uniform(50.0, 55.0)), math.radians(rng.uniform(28.0, 32.0))
+    waves = [(0.15, rng.uniform(25.0, 60.0), rng.uniform(0, 2 * math.pi), rng.uniform(0, math.pi)) for _ in range(2)]
+
+    def base(x: np.ndarray) -> np.ndarray:
+        """The z where the face starts at ``x``."""
+        angle = cliff + (piste - cliff) * np.clip((x - 110.0) / 30.0, 0.0, 1.0)
+        return z_top - rise / np.tan(angle)
+
+    def natural(x: np.ndarray, z: np.ndarray) -> np.ndarray:
+        """The ground's height at plan points (x, z) without the path's cuts."""
+        zb = base(x)
+        ripple = sum(a * np.sin(2 * math.pi / length * (x * math.cos(turn) + z * math.sin(turn)) + phase)
+                     for a, length, phase, turn in waves)
+        return np.clip((z - zb) / (z_top - zb), 0.0, 1.0) * rise + ripple
+
+    xs, zs = np.arange(0.0, size_x + 0.5, 1.0), np.arange(0.0, size_z + 0.5, 1.0)
+    gx, gz = np.meshgrid(xs, zs, indexing="ij")
+    heights = natural(gx, gz)
+    legs = math.ceil(rise / 8.5)
+    west, east = rng.uniform(12.0, 18.0), rng.uniform(95.0, 100.0)
+    face_depth = rise / math.tan(cliff)
+    centres = z_top - face_depth + face_depth * (np.arange(legs) + 0.5) / legs
+    half = 2.25
+    ends = []
+    for i, zc in enumerate(centres):
+        y0, y1 = rise * i / legs, rise * (i + 1) / legs
+        x0, x1 = (west, east) if i % 2 == 0 else (east, west)
+        band = (np.abs(gz - zc) <= half) & (gx >= west - half) & (gx <= east + half)
+        heights[band] = (y0 + (y1 - y0) * np.clip((gx - x0) / (x1 - x0), 0.0, 1.0))[band]
+        ends.append((x1, y1))
+    for i in range(legs - 1):  # hairpins
+        x, y = ends[i]
+        band = (np.abs(gx - x) <= half) & (gz >= centres[i]) & (gz <= centres[i + 1])
+        heights[band] = y
+    foot = (np.abs(gx - west) <= half) & (gz >= centres[0] - face_depth / legs - 4.0) & (gz <= centres[0])
+    heights[foot] = np.minimum(heights[foot], 0.0)
+    x, y = ends[-1]
+    head = (np.abs(gx - x) <= half) & (gz >= centres[-1]) & (gz <= z_top + 4.0)
+    heights[head] = np.maximum(heights[head], rise)
+    path = [(west - 5.0, east + 5.0, z_top - face_depth - 6.0, z_top + 6.0)]
+
+    def ground_at(x: float, z: float) -> float:
+        return float(natural(np.array(x), np.array(z)))
+
+    lift_x = rng.uniform(120.0, 130.0)
+    low_z, high_z = float(base(np.array(lift_x))) - rng.uniform(12.0, 18.0), z_top + rng.uniform(8.0, 12.0)
+    for z0, toward in ((low_z, -1.0), (high_z, 1.0)):  # the stations, steps on the side away from the face
+        y = max(ground_at(x, z) for x in (lift_x - 3.0, lift_x + 3.0) for z in (z0 - 2.0, z0 + 2.0)) + 1.2
+        foot = z0 + toward * (2.0 + 8 * 0.28)
+        y_foot = ground_at(lift_x, foot)
+        s.box(lift_x - 3.0, lift_x + 3.0, y - 3.2, y, z0 - 2.0, z0 + 2.0)
+        s.stairs(np.array([lift_x, foot]), np.array([0.0, -toward]), 2.4, y_foot, y - y_foot, (y - y_foot) / 8, 0.28)
+        path.append((lift_x - 5.0, lift_x + 5.0, z0 - 6.0, z0 + 6.0))
+    for z in np.arange(low_z + 15.0, high_z - 5.0, 15.0):  # pylons
+        y = ground_at(lift_x, z)
+        s.box(lift_x - 0.4, lift_x + 0.4, y - 1.0, y + 9.0, z - 0.4, z + 0.4)
+    hut_x = rng.uniform(20.0, 80.0)
+    hut = (hut_x, hut_x + 10.0, z_top + 10.0, z_top + 17.0)
+    under = [ground_at(x, z) for x in hut[:2] for z in hut[2:]]
+    low, high = min(under) - 0.5, max(under) + 3.0
+    s.wall((hut[0], hut[2]), (hut[1], hut[2]), low, high, [(rng.uniform(2.0, 6.0), 1.6)])
+    s.wall((hut[0], hut[3]), (hut[1], hut[3]), low, high)
+    for x in hut[:2]:
+        s.wall((x, hut[2]), (x, hut[3]), low, high)
+    _gable(s, hut[0] - 0.3, hut[1] + 0.3, hut[2] - 0.3, hut[3] + 0.3, high)
+    path.append((hut[0] - 3.0, hut[1] + 3.0, hut[2] - 3.0, hut[3] + 3.0))
+    keep = np.ones((len(xs) - 1, len(zs) - 1), dtype=bool)
+    huts = 0
+    for _ in range(500):
+        if huts == 3:
+            break
+        x, z = float(rng.integers(5, int(size_x) - 12)), float(rng.integers(5, int(base(np.array(size_x))) - 12))
+        if _clear(x - 3.0, x + 11.0, z - 3.0, z + 9.0, path) and z + 9.0 < float(base(np.array([x, x + 8.0])).min()) - 3.0:
+            y = min(ground_at(x + dx, z + dz) for dx in (0.0, 8.0) for dz in (0.0, 6.0))
+            _ridged(s, x, x + 8.0, z, z + 6.0, y - 1.0, y + 1.8)
+            keep[int(x):int(x) + 8, int(z):int(z) + 6] = False  # the ground stops under the hut
+            path.append((x, x + 8.0, z, z + 6.0))
+            huts += 1
+    _terrain(s, xs, zs, heights, keep=keep)
+    for _ in range(int(rng.integers(80, 121))):
+        p = np.array([rng.uniform(3.0, size_x - 3.0), rng.choice([rng.uniform(3.0, 60.0), rng.uniform(z_top + 3.0, size_z - 3.0)])])
+        if (p[1] > z_top + 2.0 or p[1] < float(base(np.array(p[0]))) - 4.0) and _clear(p[0] - 1.0, p[0] + 1.0, p[1] - 1.0, p[1] + 1.0, path):
+            y = ground_at(*p)
+            _trunk(s, p, 0.3, y - 0.5, y + 6.0)
+    for _ in range(int(rng.integers(20, 31))):
+        p = np.array([rng.uniform(5.0, size_x - 5.0), rng.choice([rng.uniform(5.0, 55.0), rng.uniform(z_top + 5.0, size_z - 5.0)])])
+        if _clear(p[0] - 3.0, p[0] + 3.0, p[1] - 3.0, p[1] + 3.0, path) and (p[1] > z_top or p[1] < float(base(np.array(p[0]))) - 5.0):
+            y = ground_at(*p)
+            s.rock(rng, p, 0.7, y - 0.5, y + 1.5)
+    return s.mesh()
+
+
+def zoo(seed: int) -> trimesh.Trimesh:
+    """A zoo 200 x 150 m on a 1 m grid (:func:`_terrain`, flat) behind a fence 2.5 m high, entered from a forecourt 15
+    m deep through one gate 6 m wide. Its ground is the visitors' paths round 9-12 enclosures, irregular blobs 9-20 m
+    across (an ellipse with two waves on its outline) kept 7 m apart: the ground stops inside each (no visitor goes
+    in) and a rail 1.1 m high follows it 0.8 m out; every third enclosure has a viewing deck 3 m wide, railed,
+    reaching 6 m into it through a gap in its rail. A walk-through aviary, a ring of net walls 6 m high and 28-34 m
+    across, is entered only through two airlocks on opposite sides (a vestibule 3.5 m square: a 2 m opening on the
+    aviary, an outer door 1.6 m wide set off to one side); inside, a pond crossed by a boardwalk 2 m wide, and trees.
+    A reptile house (30 x 10 m under a lid, a 2 m door at each end, a 6 m hall between rows of glass tanks 2 m square
+    under ridged tops), a cafe (a 3 m opening, tables), 12-20 planting beds (ridged, 0.6 m) and 50-80 trees on the
+    paths; the ground stops under tanks and beds.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    size_x, size_z, front = 200.0, 150.0, 15.0
+    xs, zs = np.arange(0.0, size_x + 0.5, 1.0), np.arange(-front, size_z + 0.5, 1.0)
+    gx, gz = np.meshgrid(xs[:-1] + 0.5, zs[:-1] + 0.5, indexing="ij")
+    keep = np.ones(gx.shape, dtype=bool)
+    taken: list[tuple[float, float, float, float]] = [(size_x / 2 - 12.0, size_x / 2 + 12.0, 0.0, 12.0)]  # inside the gate
+    aviary_c = np.array([rng.uniform(40.0, size_x - 40.0), rng.uniform(95.0, size_z - 25.0)])
+    aviary_r = rng.uniform(14.0, 17.0)
+    taken.append((*(aviary_c[0] + np.array([-1, 1]) * (aviary_r + 8.0)), *(aviary_c[1] + np.array([-1, 1]) * (aviary_r + 8.0))))
+    house_x, house_z = float(round(rng.uniform(10.0, 80.0))), float(round(rng.uniform(20.0, 60.0)))
+    house = (house_x, house_x + 30.0, house_z, house_z + 10.0)
+    cafe_x, cafe_z = float(round(rng.uniform(120.0, 170.0))), float(round(rng.uniform(20.0, 50.0)))
+    cafe = (cafe_x, cafe_x + 16.0, cafe_z, cafe_z + 10.0)
+    for r in (house, cafe):
+        taken.append((r[0] - 6.0, r[1] + 6.0, r[2] - 6.0, r[3] + 6.0))
+
+    def outline(c: np.ndarray, radii: np.ndarray, waves: np.ndarray, angle: np.ndarray) -> np.ndarray:
+        """The blob's radius factor at polar angles ``angle`` about its centre."""
+        return 1.0 + waves[0] * np.sin(3 * angle + waves[1]) + waves[2] * np.sin(5 * angle + waves[3])
+
+    blobs = []
+    count = int(rng.integers(9, 13))
+    for _ in range(400):
+        if len(blobs) == count:
+            break
+        c = np.array([rng.uniform(20.0, size_x - 20.0), rng.uniform(20.0, size_z - 15.0)])
+        radii = rng.uniform(4.5, 10.0, size=2)
+        reach = radii.max() * 1.2
+        if all(np.linalg.norm(c - b[0]) > reach + b[1].max() * 1.2 + 7.0 for b in blobs) and \
+                _clear(c[0] - reach - 4.0, c[0] + reach + 4.0, c[1] - reach - 4.0, c[1] + reach + 4.0, taken):
+            blobs.append((c, radii, np.array([rng.uniform(0.05, 0.12), rng.uniform(0, 6.3), rng.uniform(0.0, 0.06),
+                                              rng.uniform(0, 6.3)])))
+    decks = []
+    for k, (c, radii, waves) in enumerate(blobs):
+        angle = np.arctan2((gz - c[1]) / radii[1], (gx - c[0]) / radii[0])
+        rho = np.hypot((gx - c[0]) / radii[0], (gz - c[1]) / radii[1])
+        keep &= rho >= outline(c, radii, waves, angle)
+        deck_angle = rng.uniform(0, 2 * math.pi) if k % 3 == 0 else None
+        points = []
+        for a in np.linspace(0, 2 * math.pi, 33):
+            unit = np.array([math.cos(a) * radii[0], math.sin(a) * radii[1]])
+            edge = c + unit * float(outline(c, radii, waves, np.array(a)))
+            points.append(edge + unit / np.linalg.norm(unit) * 0.8)
+        if deck_angle is not None:
+            unit = np.array([math.cos(deck_angle) * radii[0], math.sin(deck_angle) * radii[1]])
+            edge = c + unit * float(outline(c, radii, waves, np.array(deck_angle)))
+            out = unit / np.linalg.norm(unit)
+            decks.append((edge + out * 1.5, edge - out * 6.0, out))
+        for a, b in pairwise(points):
+            if deck_angle is not None and np.linalg.norm((a + b) / 2 - decks[-1][0]) < 2.6:
+                continue
+            s.prism(_strip(a, b, 0.12), -0.3, 1.1)
+    for start, end, out in decks:
+        s.prism(_strip(start, end, 3.0), -0.5, 0.0)
+        side = np.array([-out[1], out[0]])
+        for sign in (-1.45, 1.45):
+            s.prism(_strip(start + side * sign - out * 0.7, end + side * sign, 0.1), -0.3, 1.1)
+        s.prism(_strip(end - side * 1.5, end + side * 1.5, 0.1), -0.3, 1.1)
+    # the aviary: a ring of 24 net walls, doors at ring segments 0 and 12
+    door_angle = rng.uniform(0, 2 * math.pi)
+    corners = [aviary_c + aviary_r * np.array([math.cos(a), math.sin(a)])
+               for a in door_angle + 2 * math.pi * (np.arange(25) - 0.5) / 24]
+    for k, (a, b) in enumerate(pairwise(corners)):
+        if k % 12 == 0:
+            along = (b - a) / np.linalg.norm(b - a)
+            m = (a + b) / 2
+            s.prism(_strip(a, m - along, 0.2), -0.3, 6.0)
+            s.prism(_strip(m + along, b, 0.2), -0.3, 6.0)
+            out = (m - aviary_c) / np.linalg.norm(m - aviary_c)
+            for sign in (-1.75, 1.75):
+                s.prism(_strip(m + along * sign, m + along * sign + out * 3.5, 0.2), -0.3, 3.0)
+            far = m + out * 3.5
+            s.prism(_strip(far - along * 1.75, far - along * 0.3, 0.2), -0.3, 3.0)
+            s.prism(_strip(far + along * 1.3, far + along * 1.75, 0.2), -0.3, 3.0)
+        else:
+            s.prism(_strip(a, b, 0.2), -0.3, 6.0)
+    pond_c, pond_r = aviary_c + rng.uniform(-2.0, 2.0, size=2), rng.uniform(3.5, 5.0)
+    keep &= np.hypot(gx - pond_c[0], gz - pond_c[1]) >= pond_r
+    walk = rng.uniform(0, math.pi)
+    direction = np.array([math.cos(walk), math.sin(walk)])
+    s.prism(_strip(pond_c - direction * (pond_r + 2.0), pond_c + direction * (pond_r + 2.0), 2.0), -0.5, 0.25)
+    for _ in range(int(rng.integers(12, 20))):
+        p = aviary_c + rng.uniform(-1, 1, size=2) * aviary_r * 0.7
+        if np.linalg.norm(p - pond_c) > pond_r + 1.5 and abs(direction[0] * (p - pond_c)[1] - direction[1] * (p - pond_c)[0]) > 2.0:
+            _trunk(s, p, 0.3, -0.5, 5.0)
+    # the reptile house and the cafe
+    s.wall((house[0], house[2]), (house[1], house[2]), -0.3, 3.5)
+    s.wall((house[0], house[3]), (house[1], house[3]), -0.3, 3.5)
+    for x in house[:2]:
+        s.wall((x, house[2]), (x, house[3]), -0.3, 3.5, [(4.0, 2.0)])
+    solids: list[tuple[float, float, float, float]] = []
+    for z0, z1 in ((house[2], house[2] + 2.0), (house[3] - 2.0, house[3])):
+        for x in np.arange(house[0] + 2.0, house[1] - 2.0, 3.0):
+            solids.append(_ridged(s, float(x), float(x) + 2.0, z0, z1, -0.3, 1.3))
+    _lid(s, house[0], house[1], house[2], house[3], 3.5)
+    s.wall((cafe[0], cafe[2]), (cafe[1], cafe[2]), -0.3, 3.2, [(rng.uniform(2.0, 11.0), 3.0)])
+    s.wall((cafe[0], cafe[3]), (cafe[1], cafe[3]), -0.3, 3.2)
+    for x in cafe[:2]:
+        s.wall((x, cafe[2]), (x, cafe[3]), -0.3, 3.2)
+    _lid(s, cafe[0], cafe[1], cafe[2], cafe[3], 3.2)
+    for x in np.arange(cafe[0] + 2.0, cafe[1] - 1.5, 3.0):
+        for z in np.arange(cafe[2] + 3.0, cafe[3] - 1.5, 3.0):
+            s.box(float(x), float(x) + 0.9, 0.0, 0.75, float(z), float(z) + 0.9)
+    taken += [(c[0] - r.max() * 1.2 - 2.0, c[0] + r.max() * 1.2 + 2.0, c[1] - r.max() * 1.2 - 2.0, c[1] + r.max() * 1.2 + 2.0)
+              for c, r, _ in blobs]
+    beds = 0
+    for _ in range(400):
+        if beds >= int(rng.integers(12, 21)):
+            break
+        w, d = float(rng.integers(3, 8)), float(rng.integers(2, 4))
+        x0, z0 = float(rng.integers(4, int(size_x - w - 4))), float(rng.integers(4, int(size_z - d - 4)))
+        if _clear(x0 - 3.0, x0 + w + 3.0, z0 - 3.0, z0 + d + 3.0, taken):
+            solids.append(_ridged(s, x0, x0 + w, z0, z0 + d, -0.3, 0.6))
+            taken.append(solids[-1])
+            beds += 1
+    for x0, x1, z0, z1 in solids:
+        keep &= ~((gx > x0) & (gx < x1) & (gz > z0) & (gz < z1))
+    trees, wanted = 0, int(rng.integers(50, 81))
+    for _ in range(600):  # trees along the paths
+        if trees == wanted:
+            break
+        p = np.array([rng.uniform(3.0, size_x - 3.0), rng.uniform(3.0, size_z - 3.0)])
+        if _clear(p[0] - 1.0, p[0] + 1.0, p[1] - 1.0, p[1] + 1.0, taken):
+            _trunk(s, p, 0.3, -0.5, 5.0)
+            taken.append((p[0] - 1.0, p[0] + 1.0, p[1] - 1.0, p[1] + 1.0))
+            trees += 1
+    _terrain(s, xs, zs, np.zeros((len(xs), len(zs))), keep=keep)
+    s.wall((0.0, 0.0), (size_x, 0.0), -0.3, 2.5, [(size_x / 2 - 3.0, 6.0)])
+    s.wall((0.0, size_z), (size_x, size_z), -0.3, 2.5)
+    for x in (0.0, size_x):
+        s.wall((x, 0.0), (x, size_z), -0.3, 2.5)
+    return s.mesh()
+
+
+def skatepark(seed: int) -> trimesh.Trimesh:
+    """A skate park 140 x 110 m on a 0.5 m grid (:func:`_terrain`): a plaza at y = 0 holding, kept 4 m apart, three or
+    four bowls (radius 6-9 m, 2.4-3.2 m deep: a flat bottom and a quarter-circle wall as deep as the bowl, which
+    turns vertical at the lip, so only its lowest 29 % is under the 45-degree limit and the bottom is out of reach on
+    foot) of which the first is entered by a channel 3 m wide sloping at 18 degrees down through its wall; three to
+    five quarter pipes (a bank at 20 degrees up to a deck 2.5 m deep, 2.2 m up, then the quarter-circle down to the
+    plaza; steep sides); three to five funboxes (1 m up, 20-degree banks at both ends); two pyramids (25-degree faces
+    to a top 1.2 m up); and two stair sets: a block 1.35 m up with steep sides, climbed by a flight 3 m wide (nine 0.15
+    / 0.30 m steps; the flight covers the block's steep edge). 45-60 ledges (0.45 m high, 0.6 m wide, 3-6 m long) and
+    as many light poles stand on the plaza, benches and ledges along its edges.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    size_x, size_z, step = 140.0, 110.0, 0.5
+    xs, zs = np.arange(0.0, size_x + step / 2, step), np.arange(0.0, size_z + step / 2, step)
+    gx, gz = np.meshgrid(xs, zs, indexing="ij")
+    heights = np.zeros(gx.shape)
+    taken: list[tuple[float, float, float, float]] = []
+
+    def place(w: float, d: float) -> tuple[float, float]:
+        """A free plan corner (x0, z0) for a w x d feature, 4 m from every other and 6 m from the edges."""
+        for _ in range(500):
+            x0, z0 = rng.uniform(6.0, size_x - w - 6.0), rng.uniform(6.0, size_z - d - 6.0)
+            if _clear(x0 - 4.0, x0 + w + 4.0, z0 - 4.0, z0 + d + 4.0, taken):
+                taken.append((x0, x0 + w, z0, z0 + d))
+                return x0, z0
+        raise RuntimeError("no room for a skate park feature")
+
+    for k in range(int(rng.integers(3, 5))):
+        r, depth = rng.uniform(6.0, 9.0), rng.uniform(2.4, 3.2)
+        channel = depth / math.tan(math.radians(18.0))
+        reach = r - depth + channel if k == 0 else r
+        x0, z0 = place(2 * reach, 2 * reach)
+        c = np.array([x0 + reach, z0 + reach])
+        u = np.clip(np.hypot(gx - c[0], gz - c[1]) - (r - depth), 0.0, None)
+        bowl = np.where(u < depth, -np.sqrt(np.clip(depth ** 2 - u ** 2, 0.0, None)), 0.0)
+        if k == 0:
+            turn = rng.integers(4) * math.pi / 2
+            along, across = (gx - c[0]) * math.cos(turn) + (gz - c[1]) * math.sin(turn), \
+                -(gx - c[0]) * math.sin(turn) + (gz - c[1]) * math.cos(turn)
+            floor = -depth + np.clip(along - (r - depth), 0.0, None) * math.tan(math.radians(18.0))
+            bowl = np.where((np.abs(across) <= 1.5) & (along >= 0.0), np.minimum(floor, 0.0), bowl)
+        heights = np.minimum(heights, bowl)
+    for _ in range(int(rng.integers(3, 6))):  # quarter pipes along x or z
+        width, top = rng.uniform(6.0, 10.0), 2.2
+        bank = top / math.tan(math.radians(20.0))
+        length = bank + 2.5 + top
+        along_x = rng.random() < 0.5
+        x0, z0 = place(length, width) if along_x else place(width, length)
+        t = (gx - x0) if along_x else (gz - z0)
+        inside = ((gz >= z0) & (gz <= z0 + width)) if along_x else ((gx >= x0) & (gx <= x0 + width))
+        curve = np.clip(t - bank - 2.5, 0.0, top)
+        profile = np.where(t < bank, t * math.tan(math.radians(20.0)), np.where(t <= bank + 2.5, top,
+                                                                                top - np.sqrt(np.clip(top ** 2 - (top - curve) ** 2, 0, None))))
+        heights = np.where(inside & (t >= 0.0) & (t <= length), np.maximum(heights, profile), heights)
+    for _ in range(int(rng.integers(3, 6))):  # funboxes
+        top, width, flat = 1.0, rng.uniform(3.0, 4.0), rng.uniform(4.0, 6.0)
+        bank = top / math.tan(math.radians(20.0))
+        length = 2 * bank + flat
+        along_x = rng.random() < 0.5
+        x0, z0 = place(length, width) if along_x else place(width, length)
+        t = (gx - x0) if along_x else (gz - z0)
+        inside = ((gz >= z0) & (gz <= z0 + width)) if along_x else ((gx >= x0) & (gx <= x0 + width))
+        profile = np.clip(np.minimum(t, length - t) * math.tan(math.radians(20.0)), 0.0, top)
+        heights = np.where(inside & (t >= 0.0) & (t <= length), np.maximum(heights, profile), heights)
+    for _ in range(2):  # pyramids
+        x0, z0 = place(8.0, 8.0)
+        pyramid = np.clip((4.0 - np.maximum(np.abs(gx - x0 - 4.0), np.abs(gz - z0 - 4.0))) * math.tan(math.radians(25.0)), 0.0, 1.2)
+        heights = np.where(pyramid > 0.0, np.maximum(heights, pyramid), heights)
+    for _ in range(2):  # stair sets: a block, a flight up its south side
+        x0, z0 = (round(v / step) * step for v in place(10.0, 9.0))
+        block = (gx >= x0) & (gx <= x0 + 10.0) & (gz >= z0 + 3.0) & (gz <= z0 + 9.0)
+        heights = np.where(block, 1.35, heights)
+        s.stairs(np.array([x0 + rng.uniform(2.5, 7.5), z0 + 0.5]), np.array([0.0, 1.0]), 3.0, 0.0, 1.35, 0.15, 0.30)
+    _terrain(s, xs, zs, heights)
+    for _ in range(int(rng.integers(45, 61))):  # ledges and light poles on the open plaza
+        length = rng.uniform(3.0, 6.0)
+        x0, z0 = place(length, 0.6) if rng.random() < 0.5 else place(0.6, length)
+        s.box(x0, x0 + (taken[-1][1] - taken[-1][0]), -0.3, 0.45, z0, z0 + (taken[-1][3] - taken[-1][2]))
+        x0, z0 = place(0.3, 0.3)
+        s.box(x0, x0 + 0.3, -0.3, 6.0, z0, z0 + 0.3)
+    for _ in range(int(rng.integers(8, 14))):  # benches and ledges along the edges
+        along_x = rng.random() < 0.5
+        length = rng.uniform(2.0, 6.0)
+        if along_x:
+            x, z = rng.uniform(2.0, size_x - length - 2.0), rng.choice([rng.uniform(0.5, 3.0), rng.uniform(size_z - 3.5, size_z - 1.0)])
+            s.box(x, x + length, -0.3, 0.45, z, z + 0.5)
+        else:
+            x, z = rng.choice([rng.uniform(0.5, 3.0), rng.uniform(size_x - 3.5, size_x - 1.0)]), rng.uniform(2.0, size_z - length - 2.0)
+            s.box(x, x + 0.5, -0.3, 0.45, z, z + length)
+    return s.mesh()
+
+
+def _escalators(s: _Solids, x0: float, z0: float, toward: float, top: float, drop: float) -> None:
+    """A bank of three escalators as ramps 1.6 m wide at 30 degrees, side by side from x0 along +x (5.4 m in all,
+    balustrades 1 m high and 0.15 m thick between and beside them), from plan z ``z0`` at height ``top`` heading along
+    z by ``toward`` (+1 or -1) down ``drop`` m."""
+    length = drop / math.tan(math.radians(30.0))
+    for k in range(4):
+        rail = x0 + k * 1.75 + 0.075
+        s.ramp(np.array([rail, z0]), np.array([rail, z0 + toward * length]), 0.15, top + 1.0, top - drop + 1.0, thickness=1.2)
+    for k in range(3):
+        lane = x0 + 0.15 + k * 1.75 + 0.8
+        s.ramp(np.array([lane, z0]), np.array([lane, z0 + toward * length]), 1.6, top, top - drop)
+
+
+def interchange(seed: int) -> trimesh.Trimesh:
+    """A metro interchange of three lines at three depths, crossing: a concourse at y = 0 (50 x 36 m, walled; a gate
+    line of barriers with eight 1.4 m gaps across it, two street stairs up 4.5 m to dead-end exits); line A's island
+    platform (100 m along x, 12 m wide) 8 m down, line B's (along z, 125 m) 16 m down passing under A, line C's (along
+    x, 100 m) 24 m down passing under B; the tracks either side of each island have no floor. Banks of three
+    escalators (:func:`_escalators`, ramps at 30 degrees) join the concourse to A (two banks), A to B (one bank,
+    beside a fixed flight of 50 0.16 / 0.30 m steps) and B to C (one bank, through a hole in B's platform railed on
+    both sides). Columns 0.6 m square every 4.5-5.5 m in two rows on each platform (stopping 1.7 m under the platform
+    above, so their tops are no floor), benches; C is reached only down its one bank.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    drop = 8.0
+    length = drop / math.tan(math.radians(30.0))
+    cx0, cx1, cz0, cz1 = 25.0, 75.0, 24.0, 60.0
+    a_z, b_x, c_z = (4.0, 16.0), (80.0, 92.0), (70.0, 82.0)
+    banks_a = [rng.uniform(cx0 + 3.0, 45.0), rng.uniform(52.0, cx1 - 7.5)]
+    bank_b, flight_b = b_x[0] + rng.uniform(0.5, 2.5), b_x[1] - 3.0
+    bank_c = rng.uniform(b_x[0] + 1.0, b_x[1] - 6.6)
+    c_start = c_z[0] + 1.0 - length + rng.uniform(0.0, 4.0)
+    # concourse
+    s.box(cx0, cx1, -0.3, 0.0, cz0, cz1)
+    gate_z = rng.uniform(38.0, 46.0)
+    exits = [rng.uniform(cx0 + 3.0, 45.0), rng.uniform(52.0, cx1 - 6.0)]
+    s.wall((cx0, cz1), (cx1, cz1), -0.3, 4.0, [(x - cx0, 3.0) for x in exits])
+    for x in (cx0, cx1):
+        s.wall((x, cz0), (x, cz1), -0.3, 4.0)
+    s.wall((cx0, cz0), (cx1, cz0), 0.0, 1.1, [(x - cx0, 5.4) for x in sorted(banks_a)])
+    barrier_x = cx0 + 12.0
+    s.wall((cx0, gate_z), (barrier_x, gate_z), 0.0, 1.1, thickness=0.6)
+    for _ in range(8):
+        s.box(barrier_x, barrier_x + 1.4, 0.0, 1.1, gate_z - 1.0, gate_z + 1.0)
+        barrier_x += 2.8
+    s.wall((barrier_x, gate_z), (cx1, gate_z), 0.0, 1.1, thickness=0.6)
+    for x in exits:
+        s.stairs(np.array([x + 1.5, cz1]), np.array([0.0, 1.0]), 3.0, 0.0, 4.5, 0.16, 0.30)
+        s.box(x - 1.5, x + 4.5, 4.2, 4.5, cz1 + 8.4, cz1 + 12.4)
+    for x in banks_a:
+        _escalators(s, x, cz0, -1.0, 0.0, drop)
+    # line A along x, B along z under it, C along x under B
+    s.box(0.0, 100.0, -drop - 0.3, -drop, *a_z)
+    _escalators(s, bank_b, a_z[1], 1.0, -drop, drop)
+    s.stairs(np.array([flight_b + 1.25, a_z[0] - 50 * 0.30]), np.array([0.0, 1.0]), 2.5, -2 * drop, drop, 0.16, 0.30)
+    hole = (bank_c - 0.2, bank_c + 5.6, c_start, c_start + length + 1.0)
+    s.slab(b_x[0], b_x[1], -25.0, 100.0, -2 * drop, [hole])
+    for x in (hole[0] - 0.15, hole[1]):
+        s.box(x, x + 0.15, -2 * drop, -2 * drop + 1.1, hole[2], hole[3])
+    s.box(hole[0] - 0.15, hole[1] + 0.15, -2 * drop, -2 * drop + 1.1, hole[3], hole[3] + 0.15)
+    _escalators(s, bank_c, c_start, 1.0, -2 * drop, drop)
+    s.box(10.0, 110.0, -3 * drop - 0.3, -3 * drop, *c_z)
+    keep_out = [(x - 0.5, x + 5.9, a_z[0], cz0) for x in banks_a] + [(bank_b - 0.5, bank_b + 5.9, a_z[0], a_z[1] + length + 1.0),
+                                                                    (flight_b - 0.5, flight_b + 3.0, a_z[0] - 16.0, a_z[0]), hole,
+                                                                    (bank_c - 0.5, bank_c + 5.9, hole[2], hole[3] + 1.5)]
+    # columns and benches
+    spacing = rng.uniform(4.5, 5.5)
+    for level, (lo, hi), along_x, (u0, u1) in ((1, a_z, True, (0.0, 100.0)), (2, b_x, False, (-25.0, 100.0)),
+                                               (3, c_z, True, (10.0, 110.0))):
+        y = -drop * level
+        for across in (lo + 3.0, hi - 3.6):
+            for u in np.arange(u0 + spacing / 2, u1 - 1.0, spacing):
+                x0, z0 = (u, across) if along_x else (across, u)
+                if _clear(x0 - 0.3, x0 + 0.9, z0 - 0.3, z0 + 0.9, keep_out):
+                    s.box(x0, x0 + 0.6, y, y + drop - 2.0 + 0.3, z0, z0 + 0.6)
+                b0, c0 = (u + spacing / 2 - 1.0, across) if along_x else (across, u + spacing / 2 - 1.0)
+                b1, c1 = (b0 + 2.0, c0 + 0.5) if along_x else (b0 + 0.5, c0 + 2.0)
+                if rng.random() < 0.6 and u + spacing / 2 < u1 - 2.0 and _clear(b0 - 0.5, b1 + 0.5, c0 - 0.5, c1 + 0.5, keep_out):
+                    s.box(b0, b1, y, y + 0.45, c0, c1)
+    return s.mesh()
+
+
+def stepwell(seed: int) -> trimesh.Trimesh:
+    """A stepwell: a rectangular pit 60-80 x 52-60 m at the rim, in a plaza 16 m wide round it, stepping down in four
+    or five ring terraces 1.8 m below one another (more than the agent's climb: the terraces' faces are walls) to a
+    pool with no floor (no floor over the water). Each terrace is 5 m wide or more; flights of ten 0.18 / 0.28 m steps,
+    2.4 m wide, stand on a terrace against the face of the one above, square to it (a flight meets a floor beside it
+    at its first and last steps only, so each is entered from the 2.2 m or more in front of its foot): two on each side of the even
+    terraces (at a quarter and three quarters of the side), one in the middle of each side of the odd ones, so the
+    way down zig-zags and every side offers the same choices. A parapet 0.9 m high rings the rim, open at the top
+    flights. A row of pillars (0.6 m square, 3.6 m high, every 2.4-3 m) stands 1.5 m from the face along each side of
+    every terrace, kept 2.4 m from the flights; shrines (ridged, the plaza stops under them) and trees stand in the
+    plaza.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    rz0 = rng.uniform(26.0, 30.0)
+    rx0 = rz0 + rng.uniform(4.0, 10.0)
+    pool = rng.uniform(3.5, 5.0, size=2)
+    rings = min(5, int((rz0 - pool[1]) // 5.0))
+    rise, bottom = 1.8, -1.8 * rings - 1.0
+    half = [np.array([rx0 - (rx0 - pool[0]) * k / rings, rz0 - (rz0 - pool[1]) * k / rings]) for k in range(rings + 1)]
+    spacing = rng.uniform(2.4, 3.0)
+    for k in range(rings):
+        top = -rise * (k + 1)
+        (ox, oz), (ix, iz) = half[k], half[k + 1]
+        s.ground(-ox, ox, -oz, oz, top, [(-ix, ix, -iz, iz)], thickness=top - bottom)
+        for axis in (0, 1):
+            for sign in (-1.0, 1.0):
+                normal = np.zeros(2)
+                normal[axis] = sign
+                tangent = np.array([-normal[1], normal[0]])
+                offsets = (-0.5, 0.5) if k % 2 == 0 else (0.0,)
+                for off in offsets:
+                    start = normal * (half[k][axis] - 2.8) + tangent * off * half[k + 1][1 - axis]
+                    s.stairs(start, normal, 2.4, top, rise, rise / 10, 0.28)
+                flights = [off * half[k + 1][1 - axis] for off in offsets]
+                for u in np.arange(-half[k + 1][1 - axis] + spacing / 2, half[k + 1][1 - axis], spacing):  # pillars
+                    if all(abs(u - f) > 2.4 for f in flights):
+                        p = normal * (half[k][axis] - 1.5) + tangent * u
+                        s.box(p[0] - 0.3, p[0] + 0.3, top, top + 3.6, p[1] - 0.3, p[1] + 0.3)
+    size = 16.0
+    footprints = [(-rx0, rx0, -rz0, rz0)]
+    for x in (-rx0 - 8.0, rx0 + 3.0):
+        for z in (-rz0 - 8.0, rz0 + 3.0):
+            if rng.random() < 0.75:
+                footprints.append(_ridged(s, x, x + 5.0, z, z + 5.0, bottom, 2.5))
+    for axis, r in ((0, rx0), (1, rz0)):
+        other = half[0][1 - axis]
+        gaps = [(other + off * half[1][1 - axis] - 1.5, 3.0) for off in (-0.5, 0.5)]
+        for sign in (-1.0, 1.0):
+            line = sign * (r + 0.15)
+            a, b = ((line, -other), (line, other)) if axis == 0 else ((-other, line), (other, line))
+            s.wall(a, b, 0.0, 0.9, gaps, thickness=0.3)
+    for _ in range(int(rng.integers(20, 30))):
+        p = np.array([rng.uniform(-rx0 - size + 1.5, rx0 + size - 1.5), rng.uniform(-rz0 - size + 1.5, rz0 + size - 1.5)])
+        if _clear(p[0] - 2.0, p[0] + 2.0, p[1] - 2.0, p[1] + 2.0, footprints):
+            _trunk(s, p, 0.35, -0.5, 6.0)
+    s.ground(-rx0 - size, rx0 + size, -rz0 - size, rz0 + size, 0.0, footprints, thickness=-bottom)
+    return s.mesh()
+
+
 KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
     "subway": subway, "archipelago": archipelago, "car_park": car_park,
     "forest": forest, "stadium": stadium, "harbour": harbour,
@@ -4036,6 +4652,8 @@ KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
     "stairhall": stairhall,
     "hotel": hotel, "theme_park": theme_park, "aqueduct": aqueduct, "warehouse": warehouse, "golf": golf,
     "scaffold": scaffold,
+    "dry_dock": dry_dock, "mountain_pass": mountain_pass, "zoo": zoo, "skatepark": skatepark, "interchange": interchange,
+    "stepwell": stepwell,
 }
 """Kind name -> generator (seed -> Y-up mesh in metres)."""
 

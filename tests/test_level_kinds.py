@@ -1,4 +1,4 @@
-"""The ninth to twelfth rounds' level kinds (``benchmarks/level_kinds.py``) build the levels their docstrings describe.
+"""The ninth to thirteenth rounds' level kinds (``benchmarks/level_kinds.py``) build the levels their docstrings describe.
 
 Smoke tests of quick generators (well under a second each to build and to give a navmesh): the connected areas
 the presets' agent finds are the ones each level is made to have, so a door that closes or a crawlway that
@@ -41,7 +41,7 @@ def areas(mesh) -> tuple[np.ndarray, object]:
 
 
 def test_the_same_seed_gives_the_same_level(kinds):
-    for kind in ("hall", "islets", "helix", "flooded", "stairhall", "quarry", "theme_park", "golf"):
+    for kind in ("hall", "islets", "helix", "flooded", "stairhall", "quarry", "theme_park", "golf", "skatepark", "stepwell"):
         a, b, other = kinds[kind](0), kinds[kind](0), kinds[kind](1)
         assert np.array_equal(a.vertices, b.vertices) and np.array_equal(a.faces, b.faces), kind
         assert len(a.vertices) != len(other.vertices) or not np.array_equal(a.vertices, other.vertices), kind
@@ -225,3 +225,66 @@ def test_every_slab_of_the_building_site_is_reached(kinds):
     assert label.max() == 0
     for storey in range(5):
         assert (np.abs(nav.centres[:, 1] - 0.2 - 3.5 * storey) < 0.3).sum() > 20, storey
+
+
+def test_the_dry_docks_floor_altars_deck_and_girder_walk_are_reached(kinds):
+    """The flights down the dock's walls (each ending on a landing) and the head flight join the quays (0 m) to the
+    altars (-5 m) and the floor (-10 m), the gangways join the ship's deck (2 m) and the stair tower the girder walk
+    (14 m): one area but for scraps under 2 m², no floor inside the superstructure or the hatches."""
+    label, nav = areas(kinds["dry_dock"](0))
+    main = np.bincount(label).argmax()
+    assert all(nav.areas[label == k].sum() < 2.0 for k in range(label.max() + 1) if k != main)
+    y = nav.centres[label == main, 1] - 0.2
+    for level in (-10.0, -5.0, 0.0, 2.0, 14.0):
+        assert (np.abs(y - level) < 0.3).sum() >= 3, level
+
+
+def test_the_mountain_pass_switchback_climbs_the_cliff(kinds):
+    """One area; on the cliff (x 20-90 m, over 45 degrees) the floor 1.5-20 m up lies at three or more heights about
+    6 m apart: the switchback's legs, one above another (the cliff itself holds none)."""
+    label, nav = areas(kinds["mountain_pass"](0))
+    assert label.max() == 0
+    x, y, z = nav.centres.T
+    on_cliff = (x > 20.0) & (x < 90.0) & (y > 1.5) & (y < 20.0)
+    assert on_cliff.sum() > 10
+    heights = np.unique(np.round(y[on_cliff] / 6.0))
+    assert heights.size >= 3  # several legs, one above another
+
+
+def test_the_zoos_aviary_opens_through_its_airlocks_only(kinds):
+    """One area, all of it on the ground: the aviary's inside is reached (through the airlocks), no floor inside the
+    enclosures, the tanks or the beds."""
+    label, nav = areas(kinds["zoo"](1))
+    assert label.max() == 0
+    assert nav.centres[:, 1].max() < 0.6
+
+
+def test_the_skateparks_bowls_are_out_of_reach_but_the_channelled_one(kinds):
+    """The plaza is one area with the channelled bowl's bottom in it (y under -2 m); every other bowl's bottom is an
+    area of its own: the wall turns past 45 degrees at 29 % of its height."""
+    label, nav = areas(kinds["skatepark"](0))
+    main = np.bincount(label).argmax()
+    low = nav.centres[:, 1] < -1.5
+    assert (low & (label == main)).any()
+    assert len(set(label[low]) - {main}) >= 2
+
+
+def test_the_interchanges_three_lines_are_reached_from_the_concourse(kinds):
+    """The escalator banks (and the fixed flight A-B) join the concourse (0 m) to lines A (-8 m), B (-16 m) and C
+    (-24 m): one area, floor on each."""
+    label, nav = areas(kinds["interchange"](2))
+    assert label.max() == 0
+    for level in (0.0, -8.0, -16.0, -24.0):
+        assert (np.abs(nav.centres[:, 1] - 0.2 - level) < 0.3).sum() > 30, level
+
+
+def test_the_stepwells_terraces_are_one_area_down_its_flights(kinds):
+    """Every terrace (1.8 m below the one above: walls, not steps) is reached from the plaza down the flights: one
+    area with floor on the plaza and on each terrace."""
+    label, nav = areas(kinds["stepwell"](1))
+    assert label.max() == 0
+    y = nav.centres[:, 1] - 0.2
+    rings = int(round(-y.min() / 1.8))
+    assert rings >= 4
+    for k in range(rings + 1):
+        assert (np.abs(y + 1.8 * k) < 0.3).sum() > 10, k
