@@ -60,12 +60,12 @@ def bead_curtain_door() -> SampleLevel:
     return _level("bead_curtain_door", parts, [_opening((-0.3, 0.0, 3.0), _W, 1.6)])
 
 
-def rough_floor_tunnel(seed: int = 0) -> SampleLevel:
+def rough_floor_tunnel(seed: int = 0, rough: float = 0.2) -> SampleLevel:
     """Tunnel 12 m long and 3.0 m wide, roof 3.2 m up; its floor a height field on a 0.5 m grid, heights uniform in
-    [0, 0.2] m drawn at random (``seed``), on a solid base; both ends open."""
+    [0, ``rough``] m drawn at random (``seed``), on a solid base; both ends open."""
     rng = np.random.default_rng(seed)
     xs, zs = np.arange(0.0, 12.01, 0.5), np.arange(0.0, 3.01, 0.5)
-    heights = rng.uniform(0.0, 0.2, (len(xs), len(zs)))
+    heights = rng.uniform(0.0, rough, (len(xs), len(zs)))
     vertices = [[x, heights[i, j], z] for i, x in enumerate(xs) for j, z in enumerate(zs)]
     n = len(zs)
     faces = []
