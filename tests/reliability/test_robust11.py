@@ -3,10 +3,17 @@ wrong, each test failing on the code before its fix (docs/errors.md, "The hostil
 
 from __future__ import annotations
 
+import base64
+import json
 import os
 import signal
+import struct
 
+import numpy as np
 import pytest
+
+from g2s_core.errors import MeshError
+from g2s_core.mesh import load_mesh
 
 from tests.reliability.checks import CORRIDOR, run_g2s, tree
 
@@ -30,3 +37,54 @@ def test_an_interrupt_that_trimesh_swallows_and_then_fails_on_is_an_interrupt(tm
     outcome = run_g2s(capsys, "run", "graph_only", CORRIDOR, "-o", tmp_path / "out", "-q")
     assert (outcome.code, outcome.stderr) == (130, "g2s: interrupted\n")
     assert tree(tmp_path / "out") == []
+
+
+def _gltf_floor(nodes: list[dict]) -> dict:
+    """A glTF document of a 10 m square floor (mesh 0) under ``nodes``, the first the scene's root."""
+    positions = np.array([(0, 0, 0), (10, 0, 0), (10, 0, 10), (0, 0, 10)], "<f4").tobytes()
+    indices = np.array([0, 2, 1, 0, 3, 2], "<u2").tobytes()
+    data = positions + indices
+    return {
+        "asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": nodes,
+        "buffers": [{"byteLength": len(data), "uri": "data:application/octet-stream;base64," + base64.b64encode(data).decode()}],
+        "bufferViews": [{"buffer": 0, "byteLength": len(positions)},
+                        {"buffer": 0, "byteOffset": len(positions), "byteLength": len(indices)}],
+        "accessors": [{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3", "min": [0, 0, 0], "max": [10, 0, 10]},
+                      {"bufferView": 1, "componentType": 5123, "count": 6, "type": "SCALAR"}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+    }
+
+
+def _chain(count: int, transformed: int) -> list[dict]:
+    """``count`` nodes each the child of the one before, the last holding the mesh; the last ``transformed`` scaled."""
+    nodes = [{"children": [number + 1]} for number in range(count - 1)] + [{"mesh": 0}]
+    for node in nodes[count - transformed:]:
+        node["scale"] = [1.001, 1.001, 1.001]
+    return nodes
+
+
+@pytest.mark.parametrize("suffix", [".gltf", ".glb"])
+def test_a_mesh_under_1000_nested_transforms_is_refused_in_words(suffix, tmp_path):
+    # trimesh multiplies a mesh's transforms with numpy's multi_dot, which orders the product in time of the cube of
+    # their number, recursing as deep: 1,000 nested were `cannot read mesh (RecursionError: maximum recursion depth
+    # exceeded in comparison)`, 10,000 ran for hours (killed after 120 s)
+    path = tmp_path / f"deep{suffix}"
+    document = _gltf_floor(_chain(1000, 1000))
+    if suffix == ".glb":  # the same document in a GLB's JSON chunk (its buffer stays a data URI)
+        chunk = json.dumps(document).encode().ljust(-(-len(json.dumps(document)) // 4) * 4)
+        path.write_bytes(b"glTF" + struct.pack("<II", 2, 20 + len(chunk)) + struct.pack("<I", len(chunk)) + b"JSON" + chunk)
+    else:
+        path.write_text(json.dumps(document))
+    with pytest.raises(MeshError, match=r"deep\.gl(tf|b): nodes\[999\], a mesh's node, sits under 1,000 nested transforms; "
+                                        r"g2s reads at most 256 \("):
+        load_mesh(path)
+
+
+def test_nested_nodes_without_transforms_and_200_transforms_are_read(tmp_path):
+    # only the transforms count, as only they are multiplied: 10,000 nested nodes of identity transforms are read
+    path = tmp_path / "deep.gltf"
+    chain = _chain(10_000, 200)
+    chain[0]["translation"] = [0, 0, 0]  # written, but the identity
+    path.write_text(json.dumps(_gltf_floor(chain)))
+    mesh, _ = load_mesh(path)
+    assert mesh.area == pytest.approx(100 * 1.001 ** 400, rel=1e-4)
