@@ -8,12 +8,14 @@ import json
 import os
 import signal
 import struct
+import types
 
 import numpy as np
 import pytest
 
-from g2s_core.errors import MeshError
+from g2s_core.errors import MeshError, PluginError
 from g2s_core.mesh import load_mesh
+from g2s_core.registry import Registry
 
 from tests.reliability.checks import CORRIDOR, run_g2s, tree
 
@@ -88,3 +90,41 @@ def test_nested_nodes_without_transforms_and_200_transforms_are_read(tmp_path):
     path.write_text(json.dumps(_gltf_floor(chain)))
     mesh, _ = load_mesh(path)
     assert mesh.area == pytest.approx(100 * 1.001 ** 400, rel=1e-4)
+
+
+def _analyzer_module(name: str, source: str) -> types.ModuleType:
+    module = types.ModuleType(name)
+    exec(source, module.__dict__)  # noqa: S102 - a plugin module of the test's own text
+    return module
+
+
+TWIN = '''"""Twin: one value for every node."""
+from g2s_core.plugin import hookimpl
+NAME = "twin"
+
+@hookimpl
+def g2s_analyze(structure):
+    return {node: 1.0 for node in structure}
+'''
+
+
+def test_a_plugin_named_by_two_entry_points_is_told_in_one_short_line():
+    # a package's two entry points naming one module: pluggy's ValueError listed every plugin registered (4 kB in
+    # the run's one line: `Plugin already registered under a different name: ... {'graph2structure:outputs.glb:glb':
+    # LazyWriter(...), ...}`)
+    registry = Registry()
+    module = _analyzer_module("twin_mod", TWIN)
+    registry.register(module, package="twin-plug", entry_point="analyzers.twin")
+    with pytest.raises(PluginError) as raised:
+        registry.register(module, package="twin-plug", entry_point="analyzers.twin2")
+    assert str(raised.value) == ("entry point 'analyzers.twin2' of package 'twin-plug': its plugin is also that of entry "
+                                 "point 'analyzers.twin'; each entry point names a plugin of its own")
+
+
+def test_a_hook_of_a_wrong_argument_is_told_in_one_line():
+    # pluggy's three lines were one line holding two written `\n`
+    module = _analyzer_module("sig_mod", TWIN.replace("(structure)", "(graph)").replace("in structure", "in graph"))
+    with pytest.raises(PluginError) as raised:
+        Registry().register(module, package="sig-plug", entry_point="analyzers.twin")
+    assert "\n" not in str(raised.value) and " / hookimpl definition: g2s_analyze(graph) / Argument(s) {'graph'} are " \
+        "declared in the hookimpl but can not be found in the hookspec" in str(raised.value)
