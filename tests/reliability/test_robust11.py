@@ -13,7 +13,9 @@ import types
 import numpy as np
 import pytest
 
-from g2s_core.errors import MeshError, PluginError
+from g2s_core import load_result
+from g2s_core.cli import main
+from g2s_core.errors import G2SError, MeshError, PluginError
 from g2s_core.mesh import load_mesh
 from g2s_core.registry import Registry
 
@@ -128,3 +130,32 @@ def test_a_hook_of_a_wrong_argument_is_told_in_one_line():
         Registry().register(module, package="sig-plug", entry_point="analyzers.twin")
     assert "\n" not in str(raised.value) and " / hookimpl definition: g2s_analyze(graph) / Argument(s) {'graph'} are " \
         "declared in the hookimpl but can not be found in the hookspec" in str(raised.value)
+
+
+@pytest.fixture(scope="module")
+def structure_document(tmp_path_factory) -> dict:
+    """A real structure.json of a whole run, with edges."""
+    out = tmp_path_factory.mktemp("result")
+    assert main(["run", "map_analysis", "sample:cross_hub", "-o", str(out), "--format", "json", "-q"]) == 0
+    return json.loads((out / "structure.json").read_text())
+
+
+@pytest.mark.parametrize("change, says", [
+    (lambda edges: edges.append({**edges[0], "weight": 99.0}), r"edges\[\d+\]: the edge (\d+) -> (\d+) is given twice \(first at edges\[0\]\)"),
+    (lambda edges: edges.append({**edges[0], "target": edges[0]["source"]}), r"edges\[\d+\]: an edge from node (\d+) to itself"),
+], ids=["given twice", "to itself"])
+def test_a_structure_edge_given_twice_or_to_its_own_node_is_refused(structure_document, change, says, tmp_path):
+    # a tampered structure.json: the second record of an edge replaced the first's weight, and an edge from a node to
+    # itself was read as a loop of it, silently (a node id given twice has been refused since robust6)
+    document = json.loads(json.dumps(structure_document))
+    change(document["edges"])
+    (tmp_path / "structure.json").write_text(json.dumps(document))
+    with pytest.raises(G2SError, match=f"structure.json: {says}$"):
+        load_result(tmp_path)
+    assert load_result_of(structure_document, tmp_path / "sound").structure.number_of_edges() == len(structure_document["edges"])
+
+
+def load_result_of(document: dict, folder):
+    folder.mkdir()
+    (folder / "structure.json").write_text(json.dumps(document))
+    return load_result(folder)
