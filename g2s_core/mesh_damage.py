@@ -124,25 +124,22 @@ def nested_transforms(suffix: str, data: bytes) -> str | None:
     """Which mesh node of a glTF (GLB) file's bytes ``data`` sits under more than :data:`GLTF_MAX_TRANSFORMS`
     transforms, in words; ``None`` when none does or the JSON is not readable (:func:`describe_damage` names that).
     O(nodes)."""
-    chunk = data[20:20 + int.from_bytes(data[12:16], "little")] if suffix.lower() == ".glb" else data
-    document = _json(chunk)
+    document = _json(data[20:20 + int.from_bytes(data[12:16], "little")] if suffix.lower() == ".glb" else data)
     nodes = document.get("nodes") if isinstance(document, dict) else None
     if not (isinstance(nodes, list) and all(isinstance(node, dict) for node in nodes)):
         return None
-    children = {number: [c for c in node.get("children", []) if _is_index(c, len(nodes))]
-                if isinstance(node.get("children"), list) else [] for number, node in enumerate(nodes)}
-    below = {child for listed in children.values() for child in listed}
+    children = [[child for child in node["children"] if _is_index(child, len(nodes))]
+                if isinstance(node.get("children"), list) else [] for node in nodes]
+    below = {child for listed in children for child in listed}
     stack, above = [(number, 0) for number in range(len(nodes)) if number not in below], {}
     while stack:  # depth first from the roots, each node once (a cycle or a second parent is refused elsewhere)
         number, depth = stack.pop()
-        if number in above:
-            continue
-        node = nodes[number]
-        above[number] = depth + any(key in node and node[key] != value for key, value in GLTF_IDENTITY.items())
-        if "mesh" in node and above[number] > GLTF_MAX_TRANSFORMS:
-            return (f"nodes[{number}], a mesh's node, sits under {above[number]:,} nested transforms; g2s reads at most "
-                    f"{GLTF_MAX_TRANSFORMS} (apply the transforms in the exporter, or flatten the node hierarchy)")
-        stack.extend((child, above[number]) for child in children[number])
+        if number not in above:
+            above[number] = depth + any(nodes[number].get(key, value) != value for key, value in GLTF_IDENTITY.items())
+            if "mesh" in nodes[number] and above[number] > GLTF_MAX_TRANSFORMS:
+                return (f"nodes[{number}], a mesh's node, sits under {above[number]:,} nested transforms; g2s reads at "
+                        f"most {GLTF_MAX_TRANSFORMS} (apply the transforms in the exporter, or flatten the node hierarchy)")
+            stack.extend((child, above[number]) for child in children[number])
     return None
 
 
