@@ -18,7 +18,7 @@ that it is the same sample, whose rho reads higher than the
 exact one (its heat map and its reference share the sample's errors), so
 there the target is ``min_heat_rho`` plus the margin :data:`MARGINS` gives
 that sample's ``scaling`` (how far its measure reads high depends on the
-estimator: 0.03 for a plain sample, 0.01 for a linearly scaled one). A structure that
+estimator: 0.03 for a plain sample, 0.02 for a linearly scaled one). A structure that
 meets it there is confirmed (:func:`confirm`) with a second sample of as
 many sources (:data:`CONFIRMING_SEED`): errors independent of the heat
 map's lower a rank correlation instead of raising it, and Spearman's
@@ -77,7 +77,7 @@ Predicate = Callable[[nx.DiGraph, int, int, int], bool]
 RESTORED_SHARE = 0.02
 """Forest nodes restored per round, as a share of the forest's nodes."""
 
-MARGINS: dict[traffic.Scaling, float] = {"none": 0.03, "linear": 0.01}
+MARGINS: dict[traffic.Scaling, float] = {"none": 0.03, "linear": 0.02}
 """Rho above ``min_heat_rho`` a structure must reach when the graph has more than
 :data:`g2s_plugins.traffic.EXACT_NODES` nodes with an area, measured against the run's own 256-source walking flow
 rather than the exact one, by that flow's ``scaling``. Measured, not bounds: a level where the gap is larger gets
@@ -92,9 +92,10 @@ kinds and the bunker kept 0.873 against the exact flow ("The guarantee's sample 
 ``linear`` (the sample linearly scaled, as ``map_analysis_sampling`` draws it: each sampled source's pairs count on
 a node in proportion to how far along their path it lies, which removes the plain sample's overcount round its
 sources): the most by which that measure exceeded the rho against the exact flow at any structure the guarantee
-measured (every round of every run), 0.0088 over 458 measures on 47 grid levels of 3,250-25,487 samples
-(docs/analysis_quality.md, "The sampling preset with linear scaling on every held-out kind"), rounded up. There
-mine and museum still end at the floor (0.9078 and 0.9097 by their own measure, 0.905 and 0.909 exact)."""
+measured (every round of every run), 0.0175 over 498 measures on 50 grid levels of 2,304-25,487 samples
+(the islets, whose islands out of reach split the graph; 0.0097 the next, the cave; docs/analysis_quality.md, "The
+sampling preset with linear scaling on every held-out kind"), rounded up. There mine and museum still end at the
+floor (0.9078 and 0.9097 by their own measure, 0.905 and 0.909 exact)."""
 
 CONFIRMING_SEED = 1
 """Seed of the sample that confirms a sampled heat map that met its target (:func:`confirm`): not 0, the seed of

@@ -238,15 +238,15 @@ def test_a_linearly_scaled_sample_needs_the_smaller_margin_it_measured(monkeypat
     assert evaluation.spearman(heat, exact) == pytest.approx(0.9044, abs=1e-4)
     plain_heat = evaluation.placement_heat(graph, structure, plain)
     assert evaluation.spearman(plain_heat, plain) - evaluation.spearman(plain_heat, exact) == pytest.approx(0.0132, abs=1e-4)
-    assert heat_guarantee.MARGINS == {"none": 0.03, "linear": 0.01}
-    # for 0.89 the plain sample's 0.9093 is under 0.89 + 0.03 (nodes come back; 0.8962 exact), the linear sample's
-    # 0.9065 over 0.89 + 0.01 (kept as it is; 0.9044 exact); for 0.8966 it is under 0.8966 + 0.01
+    assert heat_guarantee.MARGINS == {"none": 0.03, "linear": 0.02}
+    # for 0.88 the plain sample's 0.9093 is under 0.88 + 0.03 (nodes come back; 0.8962 exact), the linear sample's
+    # 0.9065 over 0.88 + 0.02 (kept as it is; 0.9044 exact); for 0.8866 it is under 0.8866 + 0.02
     context = RunContext(mesh=None, agent=AgentConfig(), centre=np.zeros(3), graph=graph)
-    assert heat_guarantee.restored(graph, forest, structure, 0.89, context) is not None
-    assert heat_guarantee.restored(graph, forest, structure, 0.89, context, scaling="linear") is None
-    assert heat_guarantee.restored(graph, forest, structure, 0.8966, context, scaling="linear") is not None
-    # kept for 0.89 without a word: the confirming sample gives 0.9020, the two samples rank each other at 0.9948,
-    # so the estimate is 0.9020 / sqrt(0.9948) = 0.9044, over 0.89
+    assert heat_guarantee.restored(graph, forest, structure, 0.88, context) is not None
+    assert heat_guarantee.restored(graph, forest, structure, 0.88, context, scaling="linear") is None
+    assert heat_guarantee.restored(graph, forest, structure, 0.8866, context, scaling="linear") is not None
+    # kept for 0.88 without a word: the confirming sample gives 0.9020, the two samples rank each other at 0.9948,
+    # so the estimate is 0.9020 / sqrt(0.9948) = 0.9044, over 0.88
     assert not context.warnings
 
 
