@@ -269,7 +269,8 @@ class DecompositionParams(PluginParams):
     )
     passage_width: float = Field(
         1.4, ge=0, description="a region narrower than this on average (walkable area / longest extent, in agent "
-        "diameters) is a passage: it joins the room it leads to when it leads to one only",
+        "diameters) is a passage: it joins the room it leads to when it leads to one only; two openings of one region "
+        "pair side by side, each narrower than this with a passage behind it, are lanes: the two regions join",
     )
     pinch: float = Field(
         0.4, ge=0, le=1, description="a cut between two corridor-like regions (area at least 3 squares of their "
