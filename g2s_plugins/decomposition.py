@@ -90,8 +90,8 @@ polygons and their shared edges (portals):
    them); passages far apart (footbridges, gates) are ways of their own. The project's own rule, set on the
    eleventh round's cemetery and library (docs/plugins.md, "Lanes side by side").
 4. Regions are the groups left (``scipy.sparse.csgraph.connected_components``
-   of the merged portals, joined passages, pinches, side strips and lanes), numbered by their lowest polygon id. Candidates
-   between the same two regions that are chained end to end (one opening:
+   of the merged portals, joined passages, pinches, side strips and lanes), numbered by their lowest polygon id.
+   Candidates between the same two regions that are chained end to end (one opening:
    Recast's region contours may bend across a wide gap), that end on the same
    small hole less than half as wide between them, wall to wall, as the narrower
    of the two (a post in a gap, a slim pier between arches: :func:`_post_links`), or closer than
@@ -238,7 +238,7 @@ LANE_PITCH = 4.0
 """Two passage openings of one region pair at most this many clear widths apart (the wider of the two; at least
 ``min_separation``) are lanes side by side (:func:`lane_mouths`). Measured (docs/plugins.md, "Lanes side by side"),
 the nearest other passage opening of the same region pair in clear widths: neighbouring lanes of the cemetery 2.1
-(10th percentile; a lane every 3.6 m, mouths 1.25-1.5 m clear), the warehouse's racking aisles 2.3, the library's
+(10th percentile; a lane every 3.6 m, mouths 0.2-0.5 m walkable), the warehouse's racking aisles 2.3, the library's
 shelf aisles 2.3-3.9, against 5.0 for two gaps of a pillared dungeon room turned 45 degrees, 5.4 and more on the
 aqueduct, 17 on the scaffold and 41-48 for the golf course's footbridges."""
 
