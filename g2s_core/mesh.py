@@ -6,6 +6,7 @@ import codecs
 import hashlib
 import io
 import logging
+import os
 import re
 from collections.abc import Iterator
 from contextlib import contextmanager
@@ -124,11 +125,13 @@ def _read_polygons(path: Path, raw: bytes, unread: str) -> trimesh.Trimesh:
         return trimesh.Trimesh(vertices=vertices, faces=trimesh.geometry.triangulate_quads(polygons), process=False)
     import pymeshlab  # imported here: it takes a second to load and few files need it
 
-    meshset = pymeshlab.MeshSet()
+    meshset, folder = pymeshlab.MeshSet(), os.getcwd()
     try:
         meshset.load_new_mesh(str(path))
     except pymeshlab.PyMeshLabException:
         raise MeshError(f"{path}: {unread}") from None
+    finally:  # pymeshlab 2025.7 moves the process into the file's folder, and stays there when the file fails
+        os.chdir(folder)
     read = meshset.current_mesh()
     return trimesh.Trimesh(vertices=read.vertex_matrix(), faces=read.face_matrix(), process=False)
 

@@ -645,3 +645,18 @@ def test_an_off_file_of_triangles_quads_and_a_pentagon_is_read_whole(tmp_path):
     with pytest.raises(MeshError) as wrong:
         load_mesh(mesh_file)
     assert str(wrong.value) == f"{mesh_file}: line 16: a face refers to vertex 9; the file has 9 vertices (numbered from 0)"
+
+
+@pytest.mark.parametrize("text", ["garbage\n", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nend_header\n"])
+def test_a_ply_pymeshlab_cannot_read_leaves_the_working_folder_where_it_was(text, tmp_path, monkeypatch):
+    # pymeshlab moved the process into the file's folder and stayed there when it failed: a caller's relative paths
+    # then named other files, and once that folder was deleted every relative path failed (found by the mesh fuzzer)
+    from g2s_core.mesh import _read_polygons
+
+    work = tmp_path / "work"
+    work.mkdir()
+    monkeypatch.chdir(work)
+    (tmp_path / "level.ply").write_text(text)
+    with pytest.raises(MeshError, match="trimesh failed"):
+        _read_polygons(tmp_path / "level.ply", text.encode(), "trimesh failed")
+    assert Path.cwd() == work
