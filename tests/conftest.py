@@ -12,6 +12,22 @@ PROJECT = Path(__file__).resolve().parents[1]
 SHARED_DATA = PROJECT.parent / "shared" / "data"
 
 
+@pytest.fixture(autouse=True)
+def working_folder_kept():
+    """Fails the test that leaves the process in another working folder, or in one that no longer exists: tests
+    that follow it in the same worker name configs by paths relative to the project."""
+    before = os.getcwd()
+    yield
+    try:
+        after = os.getcwd()
+    except FileNotFoundError:
+        os.chdir(before)
+        pytest.fail("the working folder was deleted while this test ran in it")
+    if after != before:
+        os.chdir(before)
+        pytest.fail(f"the test left the working folder at {after}")
+
+
 @pytest.fixture
 def shared_data() -> Path:
     """../shared/data, read in place; tests using it skip when it is absent."""

@@ -8,8 +8,10 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+import trimesh
 
 from g2s_core.config import PRESETS_DIR, load_config
+from g2s_plugins._raycasting import RayCaster
 from g2s_plugins.recast import RecastParams, build_navmesh
 from g2s_plugins.recast.settings import resolve_settings, voxel_config
 from g2s_plugins.samples import pieces
@@ -79,7 +81,8 @@ def test_a_segment_that_walks_round_a_corner_is_fitted_without_the_corner() -> N
     straight = [[1.0, 0.0, -0.94 - 0.2 * i] for i in range(9)]
     ways = _ways(directions, np.array(corner + straight))
     settings = entry_exit._settings(entry_exit.Params(), CONFIG.agent)
-    (edge,) = entry_exit._match_edges([np.arange(13)], ways, settings, entry_exit.Params())
+    floor = RayCaster(trimesh.creation.box(bounds=[[-1.0, -0.2, -3.0], [3.0, 0.0, 1.0]]))  # the edge points' ground
+    (edge,) = entry_exit._match_edges([np.arange(13)], ways, floor, settings, entry_exit.Params())
     assert edge.samples.tolist() == list(range(3, 13))  # the corner's samples looking out 45+ degrees away dropped
     assert edge.outward == pytest.approx([1.0, 0.0, 0.0], abs=0.01)
     assert edge.first[0] == pytest.approx(1.0, abs=0.01) and edge.last[0] == pytest.approx(1.0, abs=0.01)

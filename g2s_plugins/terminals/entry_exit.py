@@ -633,7 +633,22 @@ def _follows(points: np.ndarray, tangents: np.ndarray, cos_match: float) -> bool
     return bool(np.count_nonzero(agree) >= 0.8 * len(points))
 
 
-def _match_edges(segments: list[np.ndarray], ways: _Ways, s: _Settings, params: Params) -> list[_Edge]:
+def _ground_at_edge(points: np.ndarray, inward: np.ndarray, caster: RayCaster, s: _Settings) -> np.ndarray:
+    """(n,) the height of the walkable ground just inside (n,3) edge ``points``, m, else the points' own heights.
+
+    An edge point lies along its sample's way out, in the plane of the surface under the sample: on a floor uneven
+    within the climb (rough rock) that plane, carried a metre out, misses the ground at the edge by up to the
+    unevenness, and two points of one edge a few centimetres apart in plan differ by decimetres. Probed straight
+    down from the climb above, half a search step inside along ``inward`` (n,3); ground within the climb either side.
+    """
+    hit = caster.first_hits(points - inward * (_INSET_STEPS * s.delta) + UP * s.climb,
+                            np.broadcast_to(-UP, points.shape).copy())
+    ground = np.isfinite(hit.distance) & (hit.distance <= 2.0 * s.climb) & _walkable(caster, hit.face, s)
+    return np.where(ground, points[:, 1] + s.climb - hit.distance, points[:, 1])
+
+
+def _match_edges(segments: list[np.ndarray], ways: _Ways, caster: RayCaster, s: _Settings,
+                 params: Params) -> list[_Edge]:
     """Match each segment to the straight (or smoothly curved) edge its samples found; others are dropped."""
     tolerance = max(2.0 * s.delta, float(params.edge_tolerance_radii) * s.radius)
     cos_match = math.cos(math.radians(float(params.match_angle_deg)))
@@ -646,11 +661,18 @@ def _match_edges(segments: list[np.ndarray], ways: _Ways, s: _Settings, params: 
         # whose points climb along it no steeper than the agent walks (one surface), is straight in plan. A
         # steeper jump is a riser between two surfaces (a wall's top beside a ceiling's), fitted in 3D; unless
         # the samples climb it too, within the climb: then it is the floor's own step, walked on both sides (a
-        # kerb across a tunnel's end); an edge dropping under samples that stay level is still a riser.
+        # kerb across a tunnel's end); an edge dropping under samples that stay level is still a riser. A jump
+        # between points carried out in their samples' planes is a riser only where the ground at the edge jumps
+        # too: on a floor uneven within the climb those planes miss the ground at the edge by decimetres.
         rise = np.diff(points[:, 1])
-        steep = np.abs(rise) > s.walkable_tan * np.hypot(*np.diff(points[:, [0, 2]], axis=0).T) + 1e-9
+        run = np.hypot(*np.diff(points[:, [0, 2]], axis=0).T)
+        steep = np.abs(rise) > s.walkable_tan * run + 1e-9
         walked = (np.abs(rise) <= s.climb) & (np.abs(rise - np.diff(ways.base[samples, 1])) <= s.delta)
-        if np.all(~steep | walked):
+        riser = steep & ~walked
+        if riser.any():
+            ground = np.diff(_ground_at_edge(points, ways.direction[samples], caster, s))
+            riser &= np.abs(ground) > s.walkable_tan * run + 1e-9
+        if not riser.any():
             residual = _fit_line(points[:, [0, 2]])[2]
         straight = float(np.count_nonzero(residual <= tolerance)) / len(points)
         if straight < 0.8 and not _follows(points, ways.tangent[samples], cos_match):
@@ -1173,7 +1195,7 @@ def detect_openings(
             looks_out[samples.polygon[g]] = True
         main = main_floor(surface, agent, loops, looks_out)
         segments = [g for g in segments if main[samples.polygon[g]].any()]
-    kept = _split_at_piers(_match_edges(segments, ways, s, params), ways, caster, s)
+    kept = _split_at_piers(_match_edges(segments, ways, caster, s, params), ways, caster, s)
     if not kept:
         return Detection((), (), ())
     # How far down steps the edges' samples found the floor ending (the deepest; 0 for a floor's own level).
