@@ -32,7 +32,7 @@ from g2s_core.mesh import SAMPLE_PREFIX, SUPPORTED_SUFFIXES
 from g2s_core.model import RaisedWarning, RunResult
 from g2s_core.outputs import DEFAULT_FORMATS, check_outdir, chosen_formats, writers
 from g2s_core.registry import installed, plugin_parameters
-from g2s_core.result_folder import interrupts_held, stop_if_interrupted
+from g2s_core.result_folder import interrupted, interrupts_held, stop_if_interrupted
 from g2s_core.stages import STAGES
 from g2s_core.lazy import lazy_module
 from g2s_core.messages import one_line
@@ -212,10 +212,10 @@ def main(argv: Sequence[str] | None = None) -> int:
             if args.verbose:
                 traceback.print_exc()
             return 1 if isinstance(exc, PluginFailure) else 2  # a plugin's bug is no bad input: scripts must not blame the level
-        except KeyboardInterrupt:
-            errors.print("g2s: interrupted", markup=False)
-            return 130
-        except Exception as exc:  # anything else is our bug: say so, keep the user's data
+        except (KeyboardInterrupt, Exception) as exc:  # anything but an interrupt is our bug: say so, keep the user's data
+            if isinstance(exc, KeyboardInterrupt) or interrupted():  # trimesh swallows one as it loads, then fails (TypeError)
+                errors.print("g2s: interrupted", markup=False)
+                return 130
             errors.print(one_line(f"g2s: internal error: {type(exc).__name__}: {exc}"), markup=False, highlight=False, soft_wrap=True)
             if args.verbose:
                 traceback.print_exc()

@@ -17,7 +17,7 @@ from g2s_core.config import MeshConfig
 from g2s_core.errors import ConfigError, MeshError
 from g2s_core.input_files import check_regular_file
 from g2s_core.lazy import lazy_module
-from g2s_core.mesh_damage import OBJ_COMMENT, declared_faces, describe_damage, off_polygons, rows_beyond_header
+from g2s_core.mesh_damage import OBJ_COMMENT, declared_faces, describe_damage, nested_transforms, off_polygons, rows_beyond_header
 from g2s_core.registry import Registry, installed
 
 # loaded with the first mesh read: the CLI and the batch command import this module for its names
@@ -75,6 +75,8 @@ def load_mesh(path: str | Path, config: MeshConfig | None = None) -> tuple[trime
         raw = path.read_bytes()
     except OSError as exc:
         raise MeshError(f"{path}: cannot read mesh file ({exc.strerror})") from None
+    if path.suffix.lower() in (".gltf", ".glb") and b'"children"' in raw and (deep := nested_transforms(path.suffix, raw)):
+        raise MeshError(f"{path}: {deep}")  # trimesh would take hours over 10,000 (a RecursionError at 1,000)
     try:
         with _trimesh_log_silenced():
             text = _as_trimesh_reads_obj(raw) if path.suffix.lower() == ".obj" else raw

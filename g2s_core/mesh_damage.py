@@ -62,6 +62,15 @@ NODE_KEYS = {"mesh": "the index of one of the file's {meshes}", "children": "a l
 """What each of a glTF node's keys that trimesh reads must be (trimesh fails on another kind in numpy's words, or
 leaves a mesh it does not find out)."""
 
+GLTF_MAX_TRANSFORMS = 256
+"""The most transforms a glTF node holding a mesh may sit under, its own counted: trimesh multiplies those of a mesh's
+path with numpy's ``multi_dot``, whose ordering of the product takes time of the cube of their number (0.11 s CPU for
+128, 0.88 s for 256, 7.3 s for 512) and recursion as deep (1,000 fail): 10,000 nested would take hours."""
+
+GLTF_IDENTITY = {"matrix": [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1], "translation": [0, 0, 0], "rotation": [0, 0, 0, 1],
+                 "scale": [1, 1, 1]}
+"""A glTF node's transform keys at their defaults (trimesh leaves such a transform out of the product)."""
+
 STL_KEYWORDS = (b"solid", b"facet", b"outer", b"vertex", b"endloop", b"endfacet", b"endsolid")
 """The words an ASCII STL line starts with (trimesh reads any case)."""
 
@@ -109,6 +118,29 @@ def describe_damage(path: Path, data: bytes) -> str | None:
     readers: dict[str, Callable[[bytes], str | None]] = {".obj": _obj_damage, ".off": _off_damage, ".ply": _ply_damage,
                                                          ".stl": _stl_ascii_damage}
     return readers[suffix](data) if suffix in readers and not binary_stl else None
+
+
+def nested_transforms(suffix: str, data: bytes) -> str | None:
+    """Which mesh node of a glTF (GLB) file's bytes ``data`` sits under more than :data:`GLTF_MAX_TRANSFORMS`
+    transforms, in words; ``None`` when none does or the JSON is not readable (:func:`describe_damage` names that).
+    O(nodes)."""
+    document = _json(data[20:20 + int.from_bytes(data[12:16], "little")] if suffix.lower() == ".glb" else data)
+    nodes = document.get("nodes") if isinstance(document, dict) else None
+    if not (isinstance(nodes, list) and all(isinstance(node, dict) for node in nodes)):
+        return None
+    children = [[child for child in node["children"] if _is_index(child, len(nodes))]
+                if isinstance(node.get("children"), list) else [] for node in nodes]
+    below = {child for listed in children for child in listed}
+    stack, above = [(number, 0) for number in range(len(nodes)) if number not in below], {}
+    while stack:  # depth first from the roots, each node once (a cycle or a second parent is refused elsewhere)
+        number, depth = stack.pop()
+        if number not in above:
+            above[number] = depth + any(nodes[number].get(key, value) != value for key, value in GLTF_IDENTITY.items())
+            if "mesh" in nodes[number] and above[number] > GLTF_MAX_TRANSFORMS:
+                return (f"nodes[{number}], a mesh's node, sits under {above[number]:,} nested transforms; g2s reads at "
+                        f"most {GLTF_MAX_TRANSFORMS} (apply the transforms in the exporter, or flatten the node hierarchy)")
+            stack.extend((child, above[number]) for child in children[number])
+    return None
 
 
 def declared_faces(suffix: str, data: bytes) -> int:

@@ -133,11 +133,14 @@ class Registry:
     def register(self, plugin: Any, package: str, entry_point: str) -> PluginInfo:
         """Register one plugin object; its stage is the single hook of the stage table it implements."""
         where = f"entry point {entry_point!r} of package {package!r}"
+        if self.manager.is_registered(plugin):  # pluggy's ValueError listed every plugin registered, some 4 kB
+            other = self.manager.get_name(plugin).split(":")[1]
+            raise PluginError(f"{where}: its plugin is also that of entry point {other!r}; each entry point names a plugin of its own")
         try:
             self.manager.register(plugin, name=f"{package}:{entry_point}:{getattr(plugin, 'NAME', '')}")
             self.manager.check_pending()
-        except (pluggy.PluginValidationError, ValueError) as exc:
-            raise PluginError(f"{where}: {exc}") from exc
+        except (pluggy.PluginValidationError, ValueError) as exc:  # pluggy's words for a wrong hook span three lines
+            raise PluginError(f"{where}: {' / '.join(str(exc).splitlines())}") from exc
         hooks = sorted(c.name for c in self.manager.get_hookcallers(plugin) or [] if c.name in BY_HOOK)
         if len(hooks) != 1:
             self.manager.unregister(plugin)

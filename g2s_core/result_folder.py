@@ -219,9 +219,14 @@ _TAKEN: list[int] = []
 """The interrupts a command took (:func:`interrupts_held` with ``hold=False``), its KeyboardInterrupt swallowed or not."""
 
 
+def interrupted() -> bool:
+    """Whether the command took an interrupt (SIGINT, SIGTERM), its KeyboardInterrupt swallowed by a library or not."""
+    return bool(_TAKEN)
+
+
 def stop_if_interrupted() -> None:
     """Raise KeyboardInterrupt if the command took an interrupt that a library swallowed."""
-    if _TAKEN:
+    if interrupted():
         raise KeyboardInterrupt
 
 

@@ -171,11 +171,17 @@ def _loaded(document: dict[str, Any], path: Path) -> LoadedResult:
         structure.add_node(node, **attrs)
         for key, value in record["values"].items():
             analysis.setdefault(key, {})[node] = value
+    listed: dict[tuple[int, ...], int] = {}  # an edge's ends (sorted when undirected) -> the index of the record giving it
     for index, record in enumerate(document["edges"]):
         attrs = dict(record["extra"])
         if record["weight"] is not None:
             attrs["weight"] = record["weight"]
         ends = _known_nodes(structure, {end: record[end] for end in ("source", "target")}, f"edges[{index}]")
+        if ends[0] == ends[1]:  # no graph g2s builds has one; networkx would keep it as a loop of the node
+            raise MalformedField(f"edges[{index}]: an edge from node {ends[0]} to itself")
+        if (earlier := listed.setdefault(tuple(ends if directed else sorted(ends)), index)) != index:  # add_edge would merge them
+            raise MalformedField(f"edges[{index}]: the edge {ends[0]} {'->' if directed else '-'} {ends[1]} is given twice "
+                                 f"(first at edges[{earlier}])")
         structure.add_edge(*ends, **attrs)  # add_edge alone would add a missing end as a node without position
     roots = _known_nodes(structure, dict(enumerate(document["roots"])), "roots")
     if directed:
