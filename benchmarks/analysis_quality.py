@@ -25,7 +25,7 @@ a share of the polygons, the run's CPU time (``time.process_time``: the
 machine is shared; the evaluation included), the wall time of every stage
 but the evaluation ("total s") and that of the evaluation, which computes
 the reference flow (exact up to 2,000 nodes, :data:`g2s_plugins.traffic.EXACT_NODES`; 512 area-sampled sources
-above; exact up to 512 before 4 December 2026)
+above, linearly scaled since 5 December 2026; exact up to 512 before 4 December 2026)
 for each run, the number of navmesh regions left overlapping themselves in plan
 ("overlap", :attr:`g2s_plugins.recast.NavMesh.region_overlaps`) and of tiles the
 ``auto`` partition rebuilt because watershed overlapped there ("redone",

@@ -81,9 +81,17 @@ polygons and their shared edges (portals):
    room and its corridor, measured as one group, are narrow on average). The
    project's own rule, set on the held-out level kinds (docs/plugins.md,
    "Level kinds it was not tuned on").
+   Lanes side by side (:func:`lane_mouths`, last): a candidate whose floor on one side, within
+   :data:`PINCH_REACH` clear widths of it, is narrower than ``passage_width`` agent diameters opens a passage;
+   when another candidate of the same two regions opening a passage lies beside it (at least
+   ``min_separation`` and at most :data:`LANE_PITCH` clear widths away), both are mouths of lanes side by
+   side (grave rows, shelving, queue rails) and the two regions join, again on the joined regions until no
+   such pair is left. Two doors off a corridor open no passage (the corridor and the room are wide behind
+   them); passages far apart (footbridges, gates) are ways of their own. The project's own rule, set on the
+   eleventh round's cemetery and library (docs/plugins.md, "Lanes side by side").
 4. Regions are the groups left (``scipy.sparse.csgraph.connected_components``
-   of the merged portals, joined passages, pinches and side strips), numbered by their lowest polygon id. Candidates
-   between the same two regions that are chained end to end (one opening:
+   of the merged portals, joined passages, pinches, side strips and lanes), numbered by their lowest polygon id.
+   Candidates between the same two regions that are chained end to end (one opening:
    Recast's region contours may bend across a wide gap), that end on the same
    small hole less than half as wide between them, wall to wall, as the narrower
    of the two (a post in a gap, a slim pier between arches: :func:`_post_links`), or closer than
@@ -111,7 +119,9 @@ Complexity: clearance O((B + P + E) log B) for B wall pieces, P polygons,
 E portals; extents O(V) for V polygon corners; pinches O(C (Q M + Q log B)) for
 C candidates between corridor-like groups, Q grid points within a cut's reach
 (hundreds) and M polygons near it; side strips O(V + C log C) (extents, then
-sorting the candidates' region pairs); openings O(C log C + sum of k^2) for k candidate ends on each small
+sorting the candidates' region pairs); lanes O(R (C' (Q M + Q log B) + sum of k^2)) for R rounds (joins; 1-4
+measured), C' candidates of region pairs with openings at least ``min_separation`` apart and k passage openings
+per pair; openings O(C log C + sum of k^2) for k candidate ends on each small
 hole; small rooms O(k) per look at a group under ``min_region_area`` (k: its polygons and their portals, few), and
 O(k) rays for the groups walled in but for one opening (:class:`DoorWidths`, each polygon and portal cast once);
 wall pieces O(B) and O(B) more per elongated small hole (few: pillars are compact); the merge tree sorts the
@@ -224,6 +234,14 @@ of them 1.0 (as wide as their mouths), castle nooks 0.97-1.0, pieces of the sewe
 hospital rooms behind their beds 1.0; prison cells 0.10-0.80, rooms of 2-4 m behind 1.5-2 m doors up to 0.8, a
 hallway 1.6 m wide behind a 1.5 m door 0.94."""
 
+LANE_PITCH = 4.0
+"""Two passage openings of one region pair at most this many clear widths apart (the wider of the two; at least
+``min_separation``) are lanes side by side (:func:`lane_mouths`). Measured (docs/plugins.md, "Lanes side by side"),
+the nearest other passage opening of the same region pair in clear widths: neighbouring lanes of the cemetery 2.1
+(10th percentile; a lane every 3.6 m, mouths 0.2-0.5 m walkable), the warehouse's racking aisles 2.3, the library's
+shelf aisles 2.3-3.9, against 5.0 for two gaps of a pillared dungeon room turned 45 degrees, 5.4 and more on the
+aqueduct, 17 on the scaffold and 41-48 for the golf course's footbridges."""
+
 EXTENT_DIRECTIONS = 8
 """Directions, evenly spread over 180 degrees, along which a region's longest extent is measured
 (:func:`longest_extents`: at least cos(90 / 8 degrees) = 98 % of its diameter)."""
@@ -251,7 +269,8 @@ class DecompositionParams(PluginParams):
     )
     passage_width: float = Field(
         1.4, ge=0, description="a region narrower than this on average (walkable area / longest extent, in agent "
-        "diameters) is a passage: it joins the room it leads to when it leads to one only",
+        "diameters) is a passage: it joins the room it leads to when it leads to one only; two openings of one region "
+        "pair side by side, each narrower than this with a passage behind it, are lanes: the two regions join",
     )
     pinch: float = Field(
         0.4, ge=0, le=1, description="a cut between two corridor-like regions (area at least 3 squares of their "
@@ -918,6 +937,7 @@ def decompose(navmesh: Any, agent: Any, params: DecompositionParams, mesh: trime
         count = int(labels.max()) + 1 if len(labels) else 0
     labels = join_side_strips(labels, pairs[blocked], 2.0 * clearance.portals_open[blocked], clearance.widest[blocked],
                               *mean_widths(navmesh, labels, areas), params.narrowness, params.min_separation)
+    labels = _join_lanes(navmesh, labels, pairs, blocked, clearance, float(agent.radius), wall_to_wall, params)
     count = int(labels.max()) + 1 if len(labels) else 0
     blocked &= labels[pairs[:, 0]] != labels[pairs[:, 1]]
 
@@ -987,6 +1007,67 @@ def _join_pinches(navmesh: Any, labels: np.ndarray, count: int, pairs: np.ndarra
     reach = PINCH_REACH * (cut + 2.0 * radius)  # the cut's clear width is its walkable width and the agent's
     local = local_widths(navmesh, labels, clearance.widest[candidates], sides, reach, clearance.open_walls)
     return join_groups(labels, count, sides[pinches(cut, local, params.pinch, params.narrowness)])
+
+
+def _join_lanes(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocked: np.ndarray, clearance: Clearances,
+                radius: float, wall_to_wall: float, params: DecompositionParams) -> np.ndarray:
+    """(P,) the regions ``labels`` with the two regions of every lane mouth (:func:`lane_mouths`) joined, again on the
+    joined regions until no lane mouth is left (step 3 of the module doc); each round joins at least two regions.
+    Only candidates narrower than a passage are looked at: the floor beside a cut is about as wide as the cut."""
+    passage = params.passage_width * 2.0 * radius
+    while True:
+        count = int(labels.max()) + 1 if len(labels) else 0
+        narrow = 2.0 * clearance.portals_open < passage  # a cut's floor near it is at least about as wide as it
+        candidates = np.flatnonzero(blocked & narrow & (labels[pairs[:, 0]] != labels[pairs[:, 1]]))
+        sides = np.sort(labels[pairs[candidates]], axis=1)
+        points = clearance.widest[candidates]
+        _, pair = np.unique(sides, axis=0, return_inverse=True)
+        pair = pair.reshape(-1)
+        several = plan_spreads(points[:, [0, 2]], pair, int(pair.max()) + 1 if len(pair) else 0)[pair]
+        candidates, sides, points = (a[several >= params.min_separation] for a in (candidates, sides, points))
+        if len(candidates) < 2:
+            return labels
+        cut = 2.0 * clearance.portals_open[candidates]
+        local = local_widths(navmesh, labels, points, sides, PINCH_REACH * (cut + 2.0 * radius), clearance.open_walls)
+        mouths = lane_mouths(sides, points, local, passage, cut + wall_to_wall, params.min_separation)
+        if not mouths.any():
+            return labels
+        labels = join_groups(labels, count, sides[mouths])
+
+
+def lane_mouths(sides: np.ndarray, points: np.ndarray, local: np.ndarray, passage: float, clear: np.ndarray,
+                separation: float) -> np.ndarray:
+    """(C,) bool: which chokepoint candidates are mouths of lanes side by side (step 3 of the module doc).
+
+    A candidate opens a passage when the floor on one of its two sides near it is narrower than ``passage``; it is
+    a lane mouth when another candidate between the same two regions that opens a passage lies beside it: at least
+    ``separation`` and at most :data:`LANE_PITCH` times the wider of the two clear widths away in plan. Lanes
+    between grave rows, shelving aisles and queue rails are passages side by side, parted by solids about as wide
+    as themselves; two doors off a corridor lead into one room (wide behind both), and passages far apart (two
+    footbridges, the gates of a wall) are each a way of their own.
+
+    Args:
+        sides: (C, 2) the two regions of every candidate.
+        points: (C, 3) each candidate's widest point, m.
+        local: (C, 2) the walkable width of each side's floor near the candidate (:func:`local_widths`), m.
+        passage: a side narrower than this walkable width near a candidate is a passage, m.
+        clear: (C,) each candidate's clear width (walkable width, the agent's diameter and a navmesh cell), m.
+        separation: candidates closer than this are one opening (``min_separation``), m.
+    """
+    mouth = np.zeros(len(sides), dtype=bool)
+    opens = np.flatnonzero(local.min(axis=1) < passage) if len(sides) else np.zeros(0, dtype=np.int64)
+    if len(opens) < 2:
+        return mouth
+    _, pair = np.unique(np.sort(sides[opens], axis=1), axis=0, return_inverse=True)
+    order = np.argsort(pair.reshape(-1), kind="stable")
+    starts = np.flatnonzero(np.r_[True, np.diff(pair.reshape(-1)[order]) != 0])
+    for group in np.split(opens[order], starts[1:]):  # the passage openings of one region pair: a few
+        if len(group) < 2:
+            continue
+        apart = np.linalg.norm(points[group][:, None, [0, 2]] - points[group][None, :, [0, 2]], axis=2)
+        reach = LANE_PITCH * np.maximum(clear[group][:, None], clear[group][None, :])
+        mouth[group] = ((apart >= separation) & (apart <= reach)).any(axis=1)
+    return mouth
 
 
 def _region_floors(labels: np.ndarray, count: int, band: np.ndarray, areas: np.ndarray,

@@ -312,3 +312,17 @@ def test_the_guarantee_measures_the_flow_of_its_heat_settings(monkeypatch):
     assert heat_guarantee.guaranteed(lambda: None, params, context, forest, structure) is None
     assert asked == [((64,), {"ties": "split", "scaling": "linear"}),
                      ((64,), {"exact_up_to": traffic.EXACT_NODES, "ties": "split", "scaling": "linear"})]
+
+
+def test_above_the_guarantee_size_the_benchmark_reference_is_a_linearly_scaled_sample(monkeypatch):
+    graph = nx.convert_node_labels_to_integers(nx.grid_2d_graph(30, 20), ordering="sorted")
+    for i in graph:
+        graph.nodes[i].update(pos=(float(i // 20), 0.0, float(i % 20)), area=1.0 + (i % 7) / 7)
+    nx.set_edge_attributes(graph, 1.0, "weight")
+    monkeypatch.setattr(traffic, "EXACT_NODES", 100)
+    result = types.SimpleNamespace(graph=graph)
+    arrays = traffic.surface_arrays(graph)
+    reference = evaluation.reference_flow(result, max_sources=64, seed=3)
+    linear, _ = traffic.od_flow(arrays.adjacency, arrays.area, 64, 3, ties="split", scaling="linear")
+    plain, _ = traffic.od_flow(arrays.adjacency, arrays.area, 64, 3, ties="split")
+    assert np.array_equal(reference, linear) and not np.array_equal(reference, plain)

@@ -3,10 +3,13 @@
 from __future__ import annotations
 
 import dataclasses
+import importlib.util
 import json
 import subprocess
 import sys
+from collections import Counter
 from functools import cache
+from pathlib import Path
 from types import SimpleNamespace
 
 import networkx as nx
@@ -633,6 +636,45 @@ def test_a_room_with_two_doors_to_one_corridor_stays_a_room():
         found = [[c for c in chokepoints(result) if near(c["position"], p, 1.0)] for p in at]
         assert [len(f) for f in found] == [1, 1, 1, 1]
         assert tuple(f[0]["articulation"] for f in found) == expected["articulation"]
+
+
+def test_lane_mouths_are_passage_openings_side_by_side():
+    # regions 0-1: three mouths of lanes 0.6 m walkable, 3.6 m apart, onto a path 3 m wide: lane mouths;
+    # 2-3: two doors 4 m apart from a corridor 2.2 m walkable locally into a room: no passage behind either;
+    # 4-5: two footbridges 40 m apart: passages, far apart; 6-7: a passage opening beside a wide one;
+    # 8-9: two portals of one door 1 m apart (closer than min_separation: one opening)
+    sides = np.array([[0, 1], [0, 1], [1, 0], [2, 3], [2, 3], [4, 5], [4, 5], [6, 7], [6, 7], [8, 9], [8, 9]])
+    x = [0.0, 3.6, 7.2, 20.0, 24.0, 40.0, 80.0, 100.0, 103.6, 120.0, 121.0]
+    points = np.array([[v, 0.0, 0.0] for v in x])
+    local = np.array([[3.0, 0.6], [3.0, 0.6], [0.6, 3.0], [3.7, 2.2], [3.6, 2.2], [30.0, 0.8], [0.8, 30.0],
+                      [3.0, 0.6], [3.0, 2.5], [3.0, 0.6], [3.0, 0.6]])
+    clear = np.full(len(sides), 1.65)
+    mouths = decomposition.lane_mouths(sides, points, local, 1.4, clear, 3.0)
+    assert mouths.tolist() == [True] * 3 + [False] * 8
+    assert not decomposition.lane_mouths(sides, points, local, 0.0, clear, 3.0).any()  # passage_width 0: off
+
+
+@cache
+def level_kind(kind: str, seed: int):
+    path = Path(__file__).resolve().parents[1] / "benchmarks" / "level_kinds.py"
+    spec = importlib.util.spec_from_file_location("level_kinds", path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return SimpleNamespace(mesh=module.KINDS[kind](seed), name=f"{kind}_s{seed}")
+
+
+def test_the_cemetery_lanes_are_not_chokepoints_and_its_mausoleum_doors_are():
+    # benchmarks/level_kinds.py cemetery, seed 0: lanes 0.6 m walkable between grave rows, a lane every 3.6 m;
+    # 140 chokepoints before the lane rule, 101 of them between region pairs joined by 2-7 openings side by side
+    # (docs/plugins.md, "Lanes side by side"). The mausoleums (small rooms of 4-5 m² walkable behind 1.6 m doors)
+    # keep their own region and door
+    result = run(level_kind("cemetery", 0))
+    found = chokepoints(result)
+    assert len(found) <= 100  # 87 with the rule
+    pairs = Counter(tuple(c["regions"]) for c in found)
+    assert sum(n for n in pairs.values() if n > 1) <= 75  # 61 with the rule
+    mausoleums = [r for r in regions(result) if r["area"] < 8.0 and len(r["neighbours"]) == 1]
+    assert len(mausoleums) >= 4
 
 
 def test_shelving_aisles_turned_45_degrees_are_part_of_the_hall():

@@ -36,7 +36,7 @@ class Params(PluginParams):
     off_distance: float = Field(5.0, gt=0, description="traffic_off counts the flow farther than this from the structure, metres")
     reference_sources: int = Field(evaluation.REFERENCE_SOURCES, ge=1,
                                    description="graphs with more nodes than this and than traffic.EXACT_NODES (2,000) "
-                                               "sample this many area-weighted sources")
+                                               "sample this many area-weighted sources, linearly scaled")
     seed: int = Field(0, description="seed of the source sample")
 
     @model_validator(mode="after")
