@@ -4042,6 +4042,7 @@ def _trunk(s: _Solids, p: np.ndarray, radius: float, y0: float, y1: float) -> No
     angles = np.linspace(0, 2 * math.pi, 8, endpoint=False)
     s.prism(p + radius * np.stack([np.cos(angles), np.sin(angles)], 1), y0, y1)
 
+
 def dry_dock(seed: int) -> trimesh.Trimesh:
     """A shipyard's dry dock: quays at y = 0 round a dock 110-120 x 36 m cut 10 m down (the quays are 10.5 m thick, so
     the dock's walls are solid), open to the sea at its east end, where a caisson 2.5 m wide, railed, joins the two
@@ -4286,8 +4287,9 @@ def zoo(seed: int) -> trimesh.Trimesh:
     for r in (house, cafe):
         taken.append((r[0] - 6.0, r[1] + 6.0, r[2] - 6.0, r[3] + 6.0))
 
-    def outline(c: np.ndarray, radii: np.ndarray, waves: np.ndarray, angle: np.ndarray) -> np.ndarray:
-        """The blob's radius factor at polar angles ``angle`` about its centre."""
+    def outline(waves: np.ndarray, angle: np.ndarray) -> np.ndarray:
+        """A blob's radius factor at polar angles ``angle`` about its centre; ``waves`` (4,): the amplitude and phase
+        of its three-lobed wave, then of its five-lobed one."""
         return 1.0 + waves[0] * np.sin(3 * angle + waves[1]) + waves[2] * np.sin(5 * angle + waves[3])
 
     blobs = []
@@ -4306,16 +4308,16 @@ def zoo(seed: int) -> trimesh.Trimesh:
     for k, (c, radii, waves) in enumerate(blobs):
         angle = np.arctan2((gz - c[1]) / radii[1], (gx - c[0]) / radii[0])
         rho = np.hypot((gx - c[0]) / radii[0], (gz - c[1]) / radii[1])
-        keep &= rho >= outline(c, radii, waves, angle)
+        keep &= rho >= outline(waves, angle)
         deck_angle = rng.uniform(0, 2 * math.pi) if k % 3 == 0 else None
         points = []
         for a in np.linspace(0, 2 * math.pi, 33):
             unit = np.array([math.cos(a) * radii[0], math.sin(a) * radii[1]])
-            edge = c + unit * float(outline(c, radii, waves, np.array(a)))
+            edge = c + unit * float(outline(waves, np.array(a)))
             points.append(edge + unit / np.linalg.norm(unit) * 0.8)
         if deck_angle is not None:
             unit = np.array([math.cos(deck_angle) * radii[0], math.sin(deck_angle) * radii[1]])
-            edge = c + unit * float(outline(c, radii, waves, np.array(deck_angle)))
+            edge = c + unit * float(outline(waves, np.array(deck_angle)))
             out = unit / np.linalg.norm(unit)
             decks.append((edge + out * 1.5, edge - out * 6.0, out))
         for a, b in pairwise(points):

@@ -1,5 +1,5 @@
-"""README.md and docs/*.md point only at what exists (relative links, their anchors, the repository files they name),
-and the reference docs name every built-in plugin."""
+"""README.md and docs/*.md point only at what exists (relative links, their anchors, the repository files they name)
+and at no path on a developer's machine, and the reference docs name every built-in plugin."""
 
 from __future__ import annotations
 

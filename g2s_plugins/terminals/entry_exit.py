@@ -633,15 +633,16 @@ def _follows(points: np.ndarray, tangents: np.ndarray, cos_match: float) -> bool
     return bool(np.count_nonzero(agree) >= 0.8 * len(points))
 
 
-def _ground_at_edge(points: np.ndarray, inward: np.ndarray, caster: RayCaster, s: _Settings) -> np.ndarray:
+def _ground_at_edge(points: np.ndarray, outward: np.ndarray, caster: RayCaster, s: _Settings) -> np.ndarray:
     """(n,) the height of the walkable ground just inside (n,3) edge ``points``, m, else the points' own heights.
 
     An edge point lies along its sample's way out, in the plane of the surface under the sample: on a floor uneven
     within the climb (rough rock) that plane, carried a metre out, misses the ground at the edge by up to the
     unevenness, and two points of one edge a few centimetres apart in plan differ by decimetres. Probed straight
-    down from the climb above, half a search step inside along ``inward`` (n,3); ground within the climb either side.
+    down from the climb above, half a search step inside, back along ``outward`` (n,3), the ways out; ground within
+    the climb either side.
     """
-    hit = caster.first_hits(points - inward * (_INSET_STEPS * s.delta) + UP * s.climb,
+    hit = caster.first_hits(points - outward * (_INSET_STEPS * s.delta) + UP * s.climb,
                             np.broadcast_to(-UP, points.shape).copy())
     ground = np.isfinite(hit.distance) & (hit.distance <= 2.0 * s.climb) & _walkable(caster, hit.face, s)
     return np.where(ground, points[:, 1] + s.climb - hit.distance, points[:, 1])
