@@ -38,7 +38,8 @@ Exact up to ``max_sources`` nodes, from that many area-sampled sources
 above, with the Hoeffding bound of :mod:`g2s_plugins.traffic` (0.10 of all
 pair weight per polygon for 256 sources, delta = 0.01; a node's mean is
 estimated the same way, each source's term again in [0, A²], so the same
-bound holds for it). Values are shares of all pair weight (``mean``,
+bound holds for it; with ``scaling: linear`` a source's term reaches twice
+that range, and the bound doubles). Values are shares of all pair weight (``mean``,
 ``sum``) or percentiles.
 Cost: O(k (m + n log n)) for k sources on the initial graph.
 """
