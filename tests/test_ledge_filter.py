@@ -4,9 +4,6 @@ our own")."""
 
 from __future__ import annotations
 
-import importlib.util
-from pathlib import Path
-
 import numpy as np
 import pytest
 import trimesh
@@ -14,19 +11,10 @@ from pydantic import ValidationError
 
 from g2s_core.config import PRESETS_DIR, load_config
 from g2s_plugins.recast import RecastParams
+from tests.conftest import benchmark
 from tests.reliability.checks import assert_clean_error, run_g2s
 
-ROOT = Path(__file__).resolve().parents[1]
-
-
-def _load(name: str):
-    spec = importlib.util.spec_from_file_location(name, ROOT / "benchmarks" / f"{name}.py")
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
-
-
-lf = _load("ledge_filter")
+lf = benchmark("ledge_filter")
 
 
 @pytest.mark.parametrize("preset", ["map_analysis", "map_piece"])

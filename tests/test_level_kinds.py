@@ -7,8 +7,6 @@ opens shows here before a benchmark figure moves.
 
 from __future__ import annotations
 
-import importlib.util
-from pathlib import Path
 from types import SimpleNamespace
 
 import numpy as np
@@ -17,17 +15,14 @@ import scipy.sparse as sp
 from scipy.sparse.csgraph import connected_components
 
 from g2s_plugins.recast import build_navmesh
+from tests.conftest import benchmark
 
 AGENT = SimpleNamespace(radius=0.5, height=2.0, max_climb=0.4, max_slope=45.0)  # the presets' agent (configs/base.yaml)
 
 
 @pytest.fixture(scope="module")
 def kinds():
-    path = Path(__file__).resolve().parents[1] / "benchmarks" / "level_kinds.py"
-    spec = importlib.util.spec_from_file_location("level_kinds", path)
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module.KINDS
+    return benchmark("level_kinds").KINDS
 
 
 def areas(mesh) -> tuple[np.ndarray, object]:

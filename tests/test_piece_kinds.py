@@ -9,29 +9,14 @@ degrees of yaw.
 
 from __future__ import annotations
 
-import importlib
-import sys
-from pathlib import Path
-
 import numpy as np
 import pytest
 
 from g2s_plugins._raycasting import UP, RayCaster
 from g2s_plugins.samples import pieces
+from tests.conftest import benchmark
 
-BENCHMARKS = Path(__file__).resolve().parents[1] / "benchmarks"
-
-
-def _kinds(module: str) -> dict:
-    """The ``KINDS`` of a round's benchmark script (the eleventh imports the tenth's helpers as a sibling module)."""
-    sys.path.insert(0, str(BENCHMARKS))
-    try:
-        return importlib.import_module(module).KINDS
-    finally:
-        sys.path.remove(str(BENCHMARKS))
-
-
-KINDS = {name: factory for module in ("piece_kinds10", "piece_kinds11") for name, factory in _kinds(module).items()}
+KINDS = {name: factory for module in ("piece_kinds10", "piece_kinds11") for name, factory in benchmark(module).KINDS.items()}
 
 
 @pytest.mark.parametrize("yaw", [0.0, 22.0])

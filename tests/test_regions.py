@@ -3,13 +3,11 @@
 from __future__ import annotations
 
 import dataclasses
-import importlib.util
 import json
 import subprocess
 import sys
 from collections import Counter
 from functools import cache
-from pathlib import Path
 from types import SimpleNamespace
 
 import networkx as nx
@@ -30,6 +28,7 @@ from g2s_plugins.outputs import colours, heatmap, structure_json
 from g2s_plugins.samples.levels import dungeon, load_sample
 from g2s_plugins.samples.pieces import turned, yaw_about_centre
 from g2s_plugins.samples.rooms import dungeon_shares
+from tests.conftest import benchmark
 from tests.test_gltf import _children, read_glb
 
 PRESET = PRESETS_DIR / "level_regions.yaml"
@@ -656,11 +655,7 @@ def test_lane_mouths_are_passage_openings_side_by_side():
 
 @cache
 def level_kind(kind: str, seed: int):
-    path = Path(__file__).resolve().parents[1] / "benchmarks" / "level_kinds.py"
-    spec = importlib.util.spec_from_file_location("level_kinds", path)
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return SimpleNamespace(mesh=module.KINDS[kind](seed), name=f"{kind}_s{seed}")
+    return SimpleNamespace(mesh=benchmark("level_kinds").KINDS[kind](seed), name=f"{kind}_s{seed}")
 
 
 def test_the_cemetery_lanes_are_not_chokepoints_and_its_mausoleum_doors_are():
