@@ -124,7 +124,7 @@ def nested_transforms(suffix: str, data: bytes) -> str | None:
     """Which mesh node of a glTF (GLB) file's bytes ``data`` sits under more than :data:`GLTF_MAX_TRANSFORMS`
     transforms, in words; ``None`` when none does or the JSON is not readable (:func:`describe_damage` names that).
     O(nodes)."""
-    document = _json(data[20:20 + int.from_bytes(data[12:16], "little")] if suffix.lower() == ".glb" else data)
+    document = _json(_glb_json_chunk(data) if suffix.lower() == ".glb" else data)
     nodes = document.get("nodes") if isinstance(document, dict) else None
     if not (isinstance(nodes, list) and all(isinstance(node, dict) for node in nodes)):
         return None
@@ -170,15 +170,20 @@ def _json(data: bytes) -> object:
             "nested too deeply" if isinstance(exc, RecursionError) else "not UTF-8 text"
 
 
+def _glb_json_chunk(data: bytes) -> bytes:
+    """A GLB file's first chunk, its JSON: after the 12-byte file header, the chunk's length and type."""
+    return data[20:20 + int.from_bytes(data[12:16], "little")]
+
+
 def _glb_damage(data: bytes, folder: Path) -> str | None:
     """What is wrong with a GLB file's chunks: its JSON chunk (the first), then the glTF it holds, whose buffer
     without a ``uri`` is the binary chunk that follows."""
-    length, kind = int.from_bytes(data[12:16], "little"), data[16:20]
+    length, kind = int.from_bytes(data[12:16], "little"), data[16:20]  # the first chunk's header
     if kind != b"JSON":
         return f"the GLB's first chunk is of type {_text(kind)!r}, expected 'JSON'"
     if len(data) < 20 + length:
         return f"the GLB's JSON chunk announces {length} bytes, the file has {len(data) - 20} after the chunk's header"
-    if isinstance(document := _json(data[20:20 + length]), str):
+    if isinstance(document := _json(_glb_json_chunk(data)), str):
         return f"the GLB's JSON chunk is not valid JSON ({document})"
     binary = data[20 + length:]
     return _gltf_damage(document, folder, int.from_bytes(binary[:4], "little") if binary[4:8] == b"BIN\0" else None)

@@ -1015,9 +1015,9 @@ def _join_lanes(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocked: np
     joined regions until no lane mouth is left (step 3 of the module doc); each round joins at least two regions.
     Only candidates narrower than a passage are looked at: the floor beside a cut is about as wide as the cut."""
     passage = params.passage_width * 2.0 * radius
+    narrow = 2.0 * clearance.portals_open < passage  # a cut's floor near it is at least about as wide as it
     while True:
         count = int(labels.max()) + 1 if len(labels) else 0
-        narrow = 2.0 * clearance.portals_open < passage  # a cut's floor near it is at least about as wide as it
         candidates = np.flatnonzero(blocked & narrow & (labels[pairs[:, 0]] != labels[pairs[:, 1]]))
         sides = np.sort(labels[pairs[candidates]], axis=1)
         points = clearance.widest[candidates]

@@ -438,11 +438,8 @@ def od_flow(
         # adjacency is symmetric: a directed search scans each edge once instead of from both of
         # its stored directions, with the same distances and predecessors
         block_sources = sources[lo:lo + block]
-        if sampled is not None and scaling == "linear":
-            kept.append((lo, linear_through(adjacency, block_sources, weight, ties)))
-        else:
-            kept.append((lo, split_path_flow(adjacency, block_sources, weight) if ties == "split"
-                         else shortest_path_flow(adjacency, block_sources, weight)[1]))
+        linear = sampled is not None and scaling == "linear"
+        kept.append((lo, (linear_through if linear else _through)(adjacency, block_sources, weight, ties)))
         if lo + block >= len(sources) or sum(through.size for _, through in kept) >= KEPT_ENTRIES:
             for start, through in kept:  # block by block, in order: the sum of the products as before
                 flow += factor[start:start + block] @ through
@@ -472,11 +469,16 @@ def linear_through(adjacency: sp.csr_array, sources: np.ndarray, values: np.ndar
     for row, (source, to) in enumerate(zip(np.asarray(sources).tolist(), distance)):
         reached = np.isfinite(to) & (to > 0)
         scaled = np.divide(values, to, out=np.zeros(len(values)), where=reached)
-        one = np.array([source])
-        plain = (split_path_flow(adjacency, one, scaled) if ties == "split"
-                 else shortest_path_flow(adjacency, one, scaled)[1])[0]
-        through[row] = 2.0 * np.where(reached, to, 0.0) * plain
+        through[row] = 2.0 * np.where(reached, to, 0.0) * _through(adjacency, np.array([source]), scaled, ties)[0]
     return through
+
+
+def _through(adjacency: sp.csr_array, sources: np.ndarray, values: np.ndarray, ties: Ties) -> np.ndarray:
+    """(b, n) the plain through-weight per source: :func:`split_path_flow` or :func:`shortest_path_flow`, as
+    ``ties`` says."""
+    if ties == "split":
+        return split_path_flow(adjacency, sources, values)
+    return shortest_path_flow(adjacency, sources, values)[1]
 
 
 def origin_weight(arrays: SurfaceArrays) -> np.ndarray:
