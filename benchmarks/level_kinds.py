@@ -4096,7 +4096,8 @@ def dry_dock(seed: int) -> trimesh.Trimesh:
     # flights down the long walls, kept clear of the gangways
     for z_wall, toward in ((dock_z1, -1.0), (dock_z0, 1.0)):
         xs_flights: list[float] = []
-        while len(xs_flights) < int(rng.integers(2, 4)):
+        flights = int(rng.integers(2, 4))
+        while len(xs_flights) < flights:
             x = rng.uniform(dock_x0 + 2 * run + 5.0, dock_x1 - run - 5.0)
             if all(abs(x - f) > 2 * run + 9.0 for f in xs_flights) and all(abs(x + run / 2 - g) > run / 2 + 6.0 for g in gangways):
                 xs_flights.append(x)
@@ -4265,7 +4266,8 @@ def zoo(seed: int) -> trimesh.Trimesh:
     in) and a rail 1.1 m high follows it 0.8 m out; every third enclosure has a viewing deck 3 m wide, railed,
     reaching 6 m into it through a gap in its rail. A walk-through aviary, a ring of net walls 6 m high and 28-34 m
     across, is entered only through two airlocks on opposite sides (a vestibule 3.5 m square: a 2 m opening on the
-    aviary, an outer door 1.6 m wide set off to one side); inside, a pond crossed by a boardwalk 2 m wide, and trees.
+    aviary, an outer door 2 m wide set off to one side; 1.6 m, the first draft's, closed on one airlock of
+    seeds 1 and 2, the ring being at an angle to the axes); inside, a pond crossed by a boardwalk 2 m wide, and trees.
     A reptile house (30 x 10 m under a lid, a 2 m door at each end, a 6 m hall between rows of glass tanks 2 m square
     under ridged tops), a cafe (a 3 m opening, tables), 12-20 planting beds (ridged, 0.6 m) and 50-80 trees on the
     paths; the ground stops under tanks and beds.
@@ -4344,8 +4346,8 @@ def zoo(seed: int) -> trimesh.Trimesh:
             for sign in (-1.75, 1.75):
                 s.prism(_strip(m + along * sign, m + along * sign + out * 3.5, 0.2), -0.3, 3.0)
             far = m + out * 3.5
-            s.prism(_strip(far - along * 1.75, far - along * 0.3, 0.2), -0.3, 3.0)
-            s.prism(_strip(far + along * 1.3, far + along * 1.75, 0.2), -0.3, 3.0)
+            s.prism(_strip(far - along * 1.75, far - along * 0.5, 0.2), -0.3, 3.0)
+            s.prism(_strip(far + along * 1.5, far + along * 1.75, 0.2), -0.3, 3.0)
         else:
             s.prism(_strip(a, b, 0.2), -0.3, 6.0)
     pond_c, pond_r = aviary_c + rng.uniform(-2.0, 2.0, size=2), rng.uniform(3.5, 5.0)
@@ -4377,9 +4379,9 @@ def zoo(seed: int) -> trimesh.Trimesh:
             s.box(float(x), float(x) + 0.9, 0.0, 0.75, float(z), float(z) + 0.9)
     taken += [(c[0] - r.max() * 1.2 - 2.0, c[0] + r.max() * 1.2 + 2.0, c[1] - r.max() * 1.2 - 2.0, c[1] + r.max() * 1.2 + 2.0)
               for c, r, _ in blobs]
-    beds = 0
+    beds, wanted_beds = 0, int(rng.integers(12, 21))
     for _ in range(400):
-        if beds >= int(rng.integers(12, 21)):
+        if beds == wanted_beds:
             break
         w, d = float(rng.integers(3, 8)), float(rng.integers(2, 4))
         x0, z0 = float(rng.integers(4, int(size_x - w - 4))), float(rng.integers(4, int(size_z - d - 4)))

@@ -12,6 +12,7 @@ from types import SimpleNamespace
 import numpy as np
 import pytest
 import scipy.sparse as sp
+import trimesh
 from scipy.sparse.csgraph import connected_components
 
 from g2s_plugins.recast import build_navmesh
@@ -247,11 +248,39 @@ def test_the_mountain_pass_switchback_climbs_the_cliff(kinds):
 
 
 def test_the_zoos_aviary_opens_through_its_airlocks_only(kinds):
-    """One area, all of it on the ground: the aviary's inside is reached (through the airlocks), no floor inside the
-    enclosures, the tanks or the beds."""
-    label, nav = areas(kinds["zoo"](1))
+    """One area, all of it on the ground, no floor inside the enclosures, the tanks or the beds; the aviary's inside
+    is reached through either airlock, and through nothing else: with both airlocks filled by solids (the hull of
+    each one's walls, the only tops 3 m high; the net walls are the only tops 6 m high) the inside is cut off, with
+    either one filled it is not (a first draft's outer doors, 1.6 m wide at an angle to the axes, closed one airlock
+    on seeds 1 and 2)."""
+    for seed in (1, 2):
+        _aviary_is_entered_through_either_airlock_only(kinds["zoo"](seed))
+
+
+def _aviary_is_entered_through_either_airlock_only(mesh) -> None:
+    label, nav = areas(mesh)
     assert label.max() == 0
     assert nav.centres[:, 1].max() < 0.6
+    net = mesh.vertices[np.isclose(mesh.vertices[:, 1], 6.0)][:, [0, 2]]
+    centre = net.mean(axis=0)
+    radius = np.median(np.linalg.norm(net - centre, axis=1))
+    lock = mesh.vertices[np.isclose(mesh.vertices[:, 1], 3.0)][:, [0, 2]]
+    lock = lock[np.linalg.norm(lock - centre, axis=1) < radius + 5.0]
+    first = np.linalg.norm(lock - lock[0], axis=1) < 8.0
+    assert 4 <= first.sum() < len(lock) - 3  # two airlocks, apart
+    plugs = [trimesh.convex.convex_hull(np.concatenate([np.insert(group, 1, y, axis=1) for y in (-0.3, 3.0)]))
+             for group in (lock[first], lock[~first])]
+
+    def cut_off(filled: list) -> bool:
+        label, nav = areas(trimesh.util.concatenate([mesh, *filled]))
+        x, y, z = nav.centres.T
+        far = np.hypot(x - centre[0], z - centre[1])
+        inside, outside = set(label[(y < 0.6) & (far < radius - 1.0)]), set(label[(y < 0.6) & (far > radius + 5.0)])
+        assert inside and outside
+        return not inside & outside
+
+    assert cut_off(plugs)
+    assert not cut_off(plugs[:1]) and not cut_off(plugs[1:])
 
 
 def test_the_skateparks_bowls_are_out_of_reach_but_the_channelled_one(kinds):
