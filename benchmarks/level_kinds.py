@@ -4644,6 +4644,698 @@ def stepwell(seed: int) -> trimesh.Trimesh:
     return s.mesh()
 
 
+def _stile(s: _Solids, p: np.ndarray, normal: np.ndarray, width: float) -> None:
+    """A stile over a fence at plan point ``p`` (x, z), the fence square to the unit ``normal`` (x, z): five 0.18 /
+    0.28 m steps up from each side to a top 0.6 m deep at 0.9 m over the fence line, ``width`` m wide (the fence
+    leaves a gap for it). A flight meets the ground only at its first step, so each is walked onto head-on."""
+    run = 5 * 0.28
+    for side in (-1.0, 1.0):
+        s.stairs(p + normal * side * (0.3 + run), -normal * side, width, 0.0, 0.9, 0.18, 0.28)
+    s.prism(_strip(p - normal * 0.3, p + normal * 0.3, width), -0.3, 0.9)
+
+
+def farm(seed: int) -> trimesh.Trimesh:
+    """A farm 210 x 160 m of flat ground cut by fences (post-and-rail, 1.2 m high) and hedges (1.4 m wide, ridged)
+    into a 3 x 3 grid of fields round a farmyard in the middle. The farmyard opens through a gate 4 m wide onto each
+    of the four fields beside it and onto the lane through the south field; between outer fields a fence holds one
+    or two stiles (:func:`_stile`, 1.8 m wide, 0.9 m up) or nothing, a hedge a gap 2.5 m wide or nothing, and every
+    corner field has at least one way in. In the farmyard a farmhouse (ridged), a silo (an octagon 3 m in radius,
+    pointed) and two barns 20-24 x 12-14 m under a roof at 50 degrees (:func:`_lid`, 6.5 m): a door 4 m wide,
+    machines (ridged), and a loft over half the barn 3.2 m up reached only by a ladder (a board 0.1 m deep no agent
+    climbs), so each loft is an area of its own. Haystacks (ridged), round bales, trees and a pond (no floor) in the
+    fields; the ground stops under every ridged solid and the silo.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    size_x, size_z = 210.0, 160.0
+    xc = [0.0, 70.0 + rng.uniform(-8.0, 8.0), 140.0 + rng.uniform(-8.0, 8.0), size_x]
+    zc = [0.0, 55.0 + rng.uniform(-6.0, 6.0), 105.0 + rng.uniform(-6.0, 6.0), size_z]
+    holes: list[tuple[float, float, float, float]] = []
+    taken: list[tuple[float, float, float, float]] = []
+    # boundaries between fields: (fixed coordinate, axis of the line, lo, hi, hedge, ways); every corner field keeps
+    # at least one way in (the four fields beside the yard open on it through gates)
+    bounds = []
+    for i in (1, 2):
+        for j in range(3):
+            for line, along, lo, hi, pair in ((xc[i], 1, zc[j], zc[j + 1], ((i - 1, j), (i, j))),
+                                              (zc[i], 0, xc[j], xc[j + 1], ((j, i - 1), (j, i)))):
+                length = hi - lo
+                if (1, 1) in pair:
+                    bounds.append([line, along, lo, hi, False, [("gate", rng.uniform(6.0, length - 10.0))], pair])
+                    continue
+                hedge = rng.random() < 0.35
+                if hedge:
+                    ways = [("gap", rng.uniform(6.0, length - 9.0))] if rng.random() < 0.75 else []
+                else:
+                    ways = [("stile", t) for t in np.sort(rng.uniform(8.0, length - 8.0, size=int(rng.choice([0, 1, 1, 2]))))]
+                    if len(ways) == 2 and ways[1][1] - ways[0][1] < 6.0:
+                        ways = ways[:1]
+                bounds.append([line, along, lo, hi, hedge, ways, pair])
+    for corner in ((0, 0), (0, 2), (2, 0), (2, 2)):
+        own = [b for b in bounds if corner in b[6]]
+        if not any(b[5] for b in own):
+            b = own[int(rng.integers(len(own)))]
+            b[5] = [("gap", (b[3] - b[2]) / 2)] if b[4] else [("stile", (b[3] - b[2]) / 2)]
+    widths = {"gate": 4.0, "gap": 2.5, "stile": 1.8}
+    for line, along, lo, hi, hedge, ways, _ in bounds:
+        doors = [(t, widths[kind]) for kind, t in ways]
+        start = (line, lo) if along == 1 else (lo, line)
+        end = (line, hi) if along == 1 else (hi, line)
+        if hedge:
+            cuts = [lo, *sum(([lo + t, lo + t + w] for t, w in doors), []), hi]
+            for c0, c1 in zip(cuts[0::2], cuts[1::2]):
+                rect = (line - 0.7, line + 0.7, c0, c1) if along == 1 else (c0, c1, line - 0.7, line + 0.7)
+                if along == 1:  # a hedge along z: ridged along z
+                    s.hull(np.array([[x, y, z] for x in rect[:2] for y in (-0.5, 1.6) for z in rect[2:]]
+                                    + [[line, 2.4, z] for z in rect[2:]]))
+                else:
+                    _ridged(s, *rect, -0.5, 1.6)
+                holes.append(rect)
+        else:
+            s.wall(start, end, -0.3, 1.2, doors, thickness=0.12)
+            for kind, t in ways:
+                if kind == "stile":
+                    p = np.array([line, lo + t + 0.9]) if along == 1 else np.array([lo + t + 0.9, line])
+                    _stile(s, p, np.array([1.0, 0.0]) if along == 1 else np.array([0.0, 1.0]), 1.8)
+        for t, w in doors:
+            c = lo + t + w / 2
+            taken.append((line - 4.0, line + 4.0, c - 4.0, c + 4.0) if along == 1 else (c - 4.0, c + 4.0, line - 4.0, line + 4.0))
+        taken.append((line - 1.5, line + 1.5, lo, hi) if along == 1 else (lo, hi, line - 1.5, line + 1.5))
+    # the outer fence, the lane's gate in the south one
+    lane = rng.uniform(xc[1] + 8.0, xc[2] - 12.0)
+    s.wall((0.0, 0.0), (size_x, 0.0), -0.3, 1.2, [(lane, 4.0)], thickness=0.12)
+    s.wall((0.0, size_z), (size_x, size_z), -0.3, 1.2, thickness=0.12)
+    for x in (0.0, size_x):
+        s.wall((x, 0.0), (x, size_z), -0.3, 1.2, thickness=0.12)
+    taken.append((lane - 2.0, lane + 6.0, 0.0, zc[1] + 6.0))  # the lane up the south field, kept clear
+    # the farmyard
+    yx0, yx1, yz0, yz1 = xc[1] + 4.0, xc[2] - 4.0, zc[1] + 4.0, zc[2] - 4.0
+    for k, x0 in enumerate((yx0 + 2.0, yx1 - 24.0 - 2.0)):
+        bl, bd = rng.uniform(20.0, 24.0), rng.uniform(12.0, 14.0)
+        z0 = yz1 - bd - 2.0 if k == 0 else yz0 + 2.0
+        x1, z1 = x0 + bl, z0 + bd
+        door_wall = z0 if k == 0 else z1
+        back_wall = z1 if k == 0 else z0
+        s.wall((x0, door_wall), (x1, door_wall), -0.3, 6.5, [(bl / 2 - 2.0, 4.0)])
+        s.wall((x0, back_wall), (x1, back_wall), -0.3, 6.5)
+        for x in (x0, x1):
+            s.wall((x, z0), (x, z1), -0.3, 6.5)
+        loft_x = x0 + bl / 2 if rng.random() < 0.5 else x0
+        s.box(loft_x, loft_x + bl / 2, 2.9, 3.2, z0 + 0.1, z1 - 0.1)
+        edge = loft_x if loft_x > x0 else loft_x + bl / 2
+        s.box(edge - 0.05, edge + 0.05, 0.0, 3.2, (z0 + z1) / 2 - 0.3, (z0 + z1) / 2 + 0.3)  # the ladder
+        for _ in range(int(rng.integers(2, 5))):  # bales on the loft
+            bx = rng.uniform(loft_x + 1.0, loft_x + bl / 2 - 3.0)
+            bz = rng.uniform(z0 + 1.0, z1 - 3.0)
+            s.box(bx, bx + 2.0, 3.2, 4.2, bz, bz + 1.2)
+        ground_x = (x0, x0 + bl / 2) if loft_x > x0 else (x0 + bl / 2, x1)
+        machine_x = rng.uniform(ground_x[0] + 1.5, ground_x[1] - 5.5)
+        holes.append(_ridged(s, machine_x, machine_x + 4.0, z0 + 2.5, z0 + 5.0, -0.5, 2.0))
+        _lid(s, x0, x1, z0, z1, 6.5)
+        taken.append((x0 - 3.0, x1 + 3.0, z0 - 3.0, z1 + 3.0))
+    house_x = rng.uniform(yx0 + 2.0, yx1 - 16.0)
+    house_z = (yz0 + yz1) / 2 - 4.5
+    if _clear(house_x - 3.0, house_x + 15.0, house_z - 3.0, house_z + 12.0, taken):
+        holes.append(_ridged(s, house_x, house_x + 12.0, house_z, house_z + 9.0, -0.5, 6.0))
+        taken.append((house_x - 3.0, house_x + 15.0, house_z - 3.0, house_z + 12.0))
+    for _ in range(100):  # the silo
+        c = np.array([rng.uniform(yx0 + 5.0, yx1 - 5.0), rng.uniform(yz0 + 5.0, yz1 - 5.0)])
+        if _clear(c[0] - 5.0, c[0] + 5.0, c[1] - 5.0, c[1] + 5.0, taken):
+            angles = np.linspace(0, 2 * math.pi, 8, endpoint=False)
+            ring = c + 3.0 * np.stack([np.cos(angles), np.sin(angles)], 1)
+            s.hull(np.array([[p[0], y, p[1]] for p in ring for y in (-0.5, 14.0)] + [[c[0], 18.0, c[1]]]))
+            holes.append((c[0] - 3.0, c[0] + 3.0, c[1] - 3.0, c[1] + 3.0))
+            taken.append((c[0] - 5.0, c[0] + 5.0, c[1] - 5.0, c[1] + 5.0))
+            break
+    for i in range(3):
+        for j in range(3):
+            x0, x1, z0, z1 = xc[i] + 3.0, xc[i + 1] - 3.0, zc[j] + 3.0, zc[j + 1] - 3.0
+            if (i, j) == (1, 1):
+                count = int(rng.integers(6, 10))  # carts and bale stacks in the yard
+            else:
+                count = int(rng.integers(4, 9))
+            if (i, j) != (1, 1) and rng.random() < 0.2:  # a pond
+                c = np.array([rng.uniform(x0 + 12.0, x1 - 12.0), rng.uniform(z0 + 10.0, z1 - 10.0)])
+                if _clear(c[0] - 9.0, c[0] + 9.0, c[1] - 7.0, c[1] + 7.0, taken):
+                    holes.append((c[0] - 7.0, c[0] + 7.0, c[1] - 5.0, c[1] + 5.0))
+                    taken.append((c[0] - 9.0, c[0] + 9.0, c[1] - 7.0, c[1] + 7.0))
+            placed = 0
+            for _ in range(200):
+                if placed == count:
+                    break
+                w, d = rng.uniform(3.0, 6.0), rng.uniform(2.5, 4.0)
+                px, pz = rng.uniform(x0, x1 - w), rng.uniform(z0, z1 - d)
+                if _clear(px - 3.0, px + w + 3.0, pz - 3.0, pz + d + 3.0, taken):
+                    holes.append(_ridged(s, px, px + w, pz, pz + d, -0.5, 2.2))
+                    taken.append((px - 1.0, px + w + 1.0, pz - 1.0, pz + d + 1.0))
+                    placed += 1
+            for _ in range(int(rng.integers(6, 16))):  # round bales (1.5 m, too high to climb) and trees
+                p = np.array([rng.uniform(x0, x1), rng.uniform(z0, z1)])
+                if _clear(p[0] - 1.5, p[0] + 1.5, p[1] - 1.5, p[1] + 1.5, taken):
+                    _trunk(s, p, 0.8 if rng.random() < 0.6 else 0.35, -0.5, 1.5 if rng.random() < 0.6 else 8.0)
+                    taken.append((p[0] - 1.5, p[0] + 1.5, p[1] - 1.5, p[1] + 1.5))
+    s.ground(0.0, size_x, 0.0, size_z, 0.0, holes)
+    return s.mesh()
+
+
+def cruise_ship(seed: int) -> trimesh.Trimesh:
+    """A cruise ship's open decks: five decks 3 m apart (y = 0 to 12), 28-32 m in beam, the lowest 230-250 m long,
+    each deck above starting 12-16 m further forward at the stern and ending 6-10 m further aft at the bow, so each
+    deck's ends are open terraces under the sky. A closed block of cabins about 4 m shorter than the top deck stands
+    from under the lowest deck to the top one (the decks stop at it; its top is the sun deck's floor), leaving on each
+    lower deck a covered promenade 3.5-4.5 m wide along each side, the block cut across every 30-45 m by a passage 2.5 m wide; two flights 2 m wide (17 steps of 0.176 / 0.28 m) climb from each stern
+    terrace head-on onto the stern edge of the deck above and one from each bow terrace onto its bow edge: the only
+    ways between decks. Rails 1.1 m high along every open edge, open at the flights' heads. The top (sun) deck holds
+    two or three pools (lanes 2 m wide, ridged, 0.5 m: no floor inside), rows of loungers (ridged, 0.45 m) and bar
+    counters (0.8 m deep); the funnel's casing, ridged, rises through every deck across the block's width (the block
+    and the decks stop at it); the promenades deck chairs (ridged) along the rails, the stern terraces tables.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    length, half = rng.uniform(230.0, 250.0), rng.uniform(14.0, 16.0)
+    starts = np.cumsum([0.0, *rng.uniform(12.0, 16.0, size=4)])
+    ends = length - np.cumsum([0.0, *rng.uniform(6.0, 10.0, size=4)])
+    steps, rise = 17, 3.0
+    run = steps * 0.28
+    prom = rng.uniform(3.5, 4.5)
+    cx0, cx1 = starts[-1] + 2.0, ends[-1] - 2.0
+    cuts = [cx0]
+    while cuts[-1] + 30.0 < cx1 - 20.0:
+        cuts.append(cuts[-1] + rng.uniform(30.0, 45.0))
+    cuts.append(cx1)
+    blocks = [(a + 1.25 if a > cx0 else a, b - 1.25 if b < cx1 else b, -half + prom, half - prom) for a, b in pairwise(cuts)]
+    # the funnel's casing, a shaft through every deck across the block's width: the blocks stop at it
+    funnel_x = rng.uniform(cx0 + 0.3 * (cx1 - cx0), cx0 + 0.5 * (cx1 - cx0))
+    funnel = _ridged(s, funnel_x, funnel_x + 12.0, -half + prom, half - prom, -0.3, 18.0)
+    blocks = [piece for x0, x1, z0, z1 in blocks
+              for piece in ((x0, min(x1, funnel_x), z0, z1), (max(x0, funnel_x + 12.0), x1, z0, z1)) if piece[1] - piece[0] > 1.0]
+    for x0, x1, z0, z1 in blocks:  # the cabin blocks, from the lowest deck's underside to the sun deck's floor
+        s.box(x0, x1, -0.3, 12.0, z0, z1)
+    for k in range(5):
+        top, x0, x1 = 3.0 * k, starts[k], ends[k]
+        if k < 4:
+            s.slab(x0, x1, -half, half, top, [*blocks, funnel])
+        stern = [rng.uniform(-half + 2.5, -3.0), rng.uniform(3.0, half - 4.5)]  # the flights up from this deck
+        if k < 4:
+            for z in stern:
+                s.stairs(np.array([starts[k + 1] - run, z + 1.0]), np.array([1.0, 0.0]), 2.0, top, rise, rise / steps, 0.28)
+            s.stairs(np.array([ends[k + 1] + run, 0.0]), np.array([-1.0, 0.0]), 2.0, top, rise, rise / steps, 0.28)
+            for _ in range(int(rng.integers(3, 7))):  # tables on the stern terrace, clear of the flights
+                px, pz = rng.uniform(x0 + 1.5, starts[k + 1] - run - 2.5), rng.uniform(-half + 1.5, half - 2.5)
+                if all(abs(pz + 0.5 - (z + 1.0)) > 2.5 for z in stern):
+                    s.box(px, px + 1.0, top, top + 0.75, pz, pz + 1.0)
+            for side in (-1.0, 1.0):  # deck chairs along the rails of the covered promenades
+                for x in np.arange(cx0 + rng.uniform(2.0, 6.0), cx1 - 3.0, rng.uniform(6.0, 9.0)):
+                    if rng.random() < 0.6:
+                        z0 = side * (half - 0.3) - (0.7 if side > 0 else 0.0)
+                        _ridged(s, float(x), float(x) + 1.8, z0, z0 + 0.7, top, top + 0.45)
+        # rails along the open edges: the sides (all along), the stern and bow edges, open at the flights' heads
+        for z in (-half, half):
+            s.wall((x0, z), (x1, z), top, top + 1.1, thickness=0.1)
+        if k > 0:
+            heads = [(z + half, 2.0) for z in prev_stern]
+            s.wall((x0, -half), (x0, half), top, top + 1.1, heads, thickness=0.1)
+            s.wall((x1, -half), (x1, half), top, top + 1.1, [(half - 1.0, 2.0)], thickness=0.1)
+        else:
+            s.wall((x0, -half), (x0, half), top, top + 1.1, thickness=0.1)
+            s.wall((x1, -half), (x1, half), top, top + 1.1, thickness=0.1)
+        prev_stern = stern
+    # the sun deck: pools, a funnel, loungers, bars
+    top, x0, x1 = 12.0, starts[4], ends[4]
+    features: list[tuple[float, float, float, float]] = [funnel]
+    for _ in range(int(rng.integers(2, 4))):
+        for _ in range(100):
+            w, d = rng.uniform(8.0, 14.0), rng.uniform(5.0, 8.0)
+            px, pz = rng.uniform(x0 + 4.0, x1 - w - 4.0), rng.uniform(-half + 4.0, half - d - 4.0)
+            if _clear(px - 4.0, px + w + 4.0, pz - 4.0, pz + d + 4.0, features):
+                for z0, z1 in pairwise(_split(pz, pz + d, 2.0)):  # lanes ridged low enough to hold no floor inside
+                    _ridged(s, px, px + w, z0, z1, top - 0.3, top + 0.5)
+                features.append((px, px + w, pz, pz + d))
+                break
+    for _ in range(int(rng.integers(8, 14))):  # rows of loungers, 0.8 m apart
+        for _ in range(100):
+            n = int(rng.integers(3, 7))
+            px, pz = rng.uniform(x0 + 3.0, x1 - 1.6 * n - 3.0), rng.uniform(-half + 2.5, half - 4.5)
+            if _clear(px - 1.5, px + 1.6 * n + 1.5, pz - 1.5, pz + 3.5, features):
+                for i in range(n):
+                    _ridged(s, px + 1.6 * i, px + 1.6 * i + 0.8, pz, pz + 2.0, top, top + 0.45)
+                features.append((px, px + 1.6 * n, pz, pz + 2.0))
+                break
+    for _ in range(int(rng.integers(2, 4))):  # bars
+        for _ in range(100):
+            px, pz = rng.uniform(x0 + 3.0, x1 - 9.0), rng.uniform(-half + 3.0, half - 6.0)
+            if _clear(px - 2.0, px + 8.0, pz - 2.0, pz + 5.0, features):
+                s.box(px, px + 6.0, top, top + 1.1, pz, pz + 0.8)
+                features.append((px, px + 6.0, pz, pz + 3.0))
+                break
+    s.slab(x0, x1, -half, half, top, [funnel])
+    return s.mesh()
+
+
+def treetops(seed: int) -> trimesh.Trimesh:
+    """A treetop village over a forest floor 140 x 110 m on a 1 m grid (:func:`_terrain`; waves under 1.5 m): 22-28
+    platforms (octagons 3-4.2 m in radius, 0.3 m thick, 4-11 m up) round big trunks at least 11 m apart, joined by
+    bridges 1.8 m wide (ramps, no steeper than 20 degrees, 3-20 m long between platform edges, none passing within
+    1 m of a third platform): a minimum spanning tree of the allowed pairs by length and a quarter of the other
+    allowed pairs. Each group of three or more platforms is reached from the floor by a flight (0.18 / 0.28 m steps)
+    up to its lowest platform, walked onto head-on; a smaller group (a hide) by a ladder only (a board no agent
+    climbs), so a hide is an area of its own. 120-180 other trunks (0.2-0.5 m) and bushes (rocks) stand on the floor,
+    clear of the flights; a ranger's hut (ridged; the ground stops under it).
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    size_x, size_z = 140.0, 110.0
+    phases = rng.uniform(0, 2 * math.pi, size=3)
+
+    def height(x: np.ndarray, z: np.ndarray) -> np.ndarray:
+        """The floor's height (m) at plan points x, z."""
+        return (0.8 * np.sin(2 * math.pi * x / 60.0 + phases[0]) * np.sin(2 * math.pi * z / 50.0 + phases[1])
+                + 0.5 * np.sin(2 * math.pi * (x + z) / 45.0 + phases[2]))
+
+    centres: list[np.ndarray] = []
+    for _ in range(2000):
+        if len(centres) == 28:
+            break
+        c = np.array([rng.uniform(12.0, size_x - 12.0), rng.uniform(12.0, size_z - 12.0)])
+        if all(np.linalg.norm(c - o) > 11.0 for o in centres):
+            centres.append(c)
+    n = int(rng.integers(22, 29))
+    centres = centres[:n]
+    radii = rng.uniform(3.0, 4.2, size=n)
+    heights = np.round(rng.uniform(4.0, 11.0, size=n) * 2) / 2
+    allowed = []
+    for i in range(n):
+        for j in range(i + 1, n):
+            gap = np.linalg.norm(centres[i] - centres[j]) - radii[i] - radii[j]
+            if not 3.0 <= gap <= 20.0 or abs(heights[i] - heights[j]) > gap * math.tan(math.radians(20.0)):
+                continue
+            a, b = centres[i], centres[j]
+            u = (b - a) / np.linalg.norm(b - a)
+            if any(k not in (i, j) and abs(np.dot(centres[k] - a, u)) < np.linalg.norm(b - a)
+                   and np.dot(centres[k] - a, u) > 0 and abs(u[0] * (centres[k] - a)[1] - u[1] * (centres[k] - a)[0]) < radii[k] + 1.9
+                   for k in range(n)):
+                continue
+            allowed.append((gap, i, j))
+    allowed.sort()
+    group = list(range(n))
+
+    def root(i: int) -> int:
+        while group[i] != i:
+            i = group[i]
+        return i
+
+    def crosses(i: int, j: int) -> bool:
+        """Whether the bridge i-j would cross a bridge already chosen, in plan (one would pass under the other), or
+        leave a platform within 40 degrees of one (their ends would overlap at two heights)."""
+        def side(p: np.ndarray, q: np.ndarray, r: np.ndarray) -> float:
+            return float(np.sign((q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0])))
+
+        def heading(p: int, q: int) -> np.ndarray:
+            return (centres[q] - centres[p]) / np.linalg.norm(centres[q] - centres[p])
+        a, b = centres[i], centres[j]
+        for k, m in bridges:
+            if len({i, j, k, m}) == 4:
+                if side(a, b, centres[k]) != side(a, b, centres[m]) and side(centres[k], centres[m], a) != side(centres[k], centres[m], b):
+                    return True
+            else:
+                p = ({i, j} & {k, m}).pop()
+                if np.dot(heading(p, i + j - p), heading(p, k + m - p)) > math.cos(math.radians(40.0)):
+                    return True
+        return False
+
+    bridges: list[tuple[int, int]] = []
+    others = []
+    for gap, i, j in allowed:
+        if root(i) != root(j):
+            if not crosses(i, j):
+                group[root(i)] = root(j)
+                bridges.append((i, j))
+        else:
+            others.append((i, j))
+    for k in rng.permutation(len(others))[:len(others) // 4]:
+        if not crosses(*others[k]):
+            bridges.append(others[k])
+    taken: list[tuple[float, float, float, float]] = []
+    for i, c in enumerate(centres):
+        angles = np.linspace(0, 2 * math.pi, 8, endpoint=False) + math.pi / 8
+        s.prism(c + radii[i] / math.cos(math.pi / 8) * np.stack([np.cos(angles), np.sin(angles)], 1),
+                heights[i] - 0.3, heights[i])
+        _trunk(s, c, 0.7, -1.5, heights[i] + 7.0)
+        taken.append((c[0] - radii[i] - 1.0, c[0] + radii[i] + 1.0, c[1] - radii[i] - 1.0, c[1] + radii[i] + 1.0))
+    for i, j in bridges:
+        a, b = centres[i], centres[j]
+        u = (b - a) / np.linalg.norm(b - a)
+        s.ramp(a + u * (radii[i] - 0.4), b - u * (radii[j] - 0.4), 1.8, heights[i], heights[j])
+    members: dict[int, list[int]] = {}
+    for i in range(n):
+        members.setdefault(root(i), []).append(i)
+    for group_members in members.values():
+        low = min(group_members, key=lambda i: heights[i])
+        c = centres[low]
+        # a flight (or a ladder) from a side clear of the other platforms and of the bridges, along x or z (a flight
+        # at an angle to the axes has cells whose neighbours differ by more than the climb, ledges to Recast)
+        for u in rng.permutation(np.array([[1.0, 0.0], [-1.0, 0.0], [0.0, 1.0], [0.0, -1.0]])):
+            end = c + u * (radii[low] - 0.2)
+            foot_height = float(height(*(end + u * 14.0)))
+            rise = heights[low] - foot_height
+            steps_n = math.ceil(rise / 0.18)
+            run = steps_n * 0.28
+            foot = end + u * run
+            ladder = len(group_members) < 3
+            reach = end + u * (run + 3.0 if not ladder else 1.0)
+            away = [np.dot(u, (centres[j if i == low else i] - c) / np.linalg.norm(centres[j if i == low else i] - c))
+                    for i, j in bridges if low in (i, j)]
+            if all(np.linalg.norm(reach - o) > r + 3.0 for k, (o, r) in enumerate(zip(centres, radii)) if k != low) and \
+                    all(cos < math.cos(math.radians(50.0)) for cos in away) and \
+                    2.0 < reach[0] < size_x - 2.0 and 2.0 < reach[1] < size_z - 2.0:
+                break
+        if ladder:
+            p = c + u * (radii[low] + 0.05)
+            side = np.array([-u[1], u[0]]) * 0.3
+            s.prism(np.array([p - side - u * 0.05, p - side + u * 0.05, p + side + u * 0.05, p + side - u * 0.05]),
+                    float(height(*p)) - 0.5, heights[low])
+        else:
+            foot_height = float(height(*foot))
+            steps_n = math.ceil((heights[low] - foot_height) / 0.18)
+            riser = (heights[low] - foot_height) / steps_n
+            foot = end + u * steps_n * 0.28
+            s.stairs(foot, -u, 2.0, foot_height, heights[low] - foot_height, riser, 0.28)
+            lo, hi = np.minimum(foot, end) - 2.0, np.maximum(foot, end) + 2.0
+            taken.append((lo[0], hi[0], lo[1], hi[1]))
+            taken.append((foot[0] + u[0] * 2.0 - 2.0, foot[0] + u[0] * 2.0 + 2.0, foot[1] + u[1] * 2.0 - 2.0,
+                          foot[1] + u[1] * 2.0 + 2.0))
+    hut = None
+    for _ in range(100):
+        hx, hz = rng.uniform(5.0, size_x - 15.0), rng.uniform(5.0, size_z - 12.0)
+        if _clear(hx - 2.0, hx + 12.0, hz - 2.0, hz + 9.0, taken):
+            hut = _ridged(s, hx, hx + 10.0, hz, hz + 7.0, -2.0, 3.0)
+            taken.append((hx - 2.0, hx + 12.0, hz - 2.0, hz + 9.0))
+            break
+    for _ in range(int(rng.integers(120, 181))):
+        p = np.array([rng.uniform(2.0, size_x - 2.0), rng.uniform(2.0, size_z - 2.0)])
+        spans = [(centres[i], centres[j]) for i, j in bridges]
+        if _clear(p[0] - 1.0, p[0] + 1.0, p[1] - 1.0, p[1] + 1.0, taken) and all(
+                np.linalg.norm(p - (a + np.clip(np.dot(p - a, b - a) / np.dot(b - a, b - a), 0.0, 1.0) * (b - a))) > 2.0
+                for a, b in spans):  # and 2 m or more from every bridge's line
+            if rng.random() < 0.75:
+                _trunk(s, p, rng.uniform(0.2, 0.5), -1.5, 14.0)
+            else:
+                s.rock(rng, p, 0.5, float(height(*p)) - 0.5, float(height(*p)) + 1.2)
+            taken.append((p[0] - 1.0, p[0] + 1.0, p[1] - 1.0, p[1] + 1.0))
+    xs, zs = np.arange(0.0, size_x + 0.5, 1.0), np.arange(0.0, size_z + 0.5, 1.0)
+    gx, gz = np.meshgrid(xs, zs, indexing="ij")
+    keep = None
+    if hut is not None:
+        cx, cz = np.meshgrid(xs[:-1] + 0.5, zs[:-1] + 0.5, indexing="ij")
+        keep = ~((cx > hut[0]) & (cx < hut[1]) & (cz > hut[2]) & (cz < hut[3]))
+    _terrain(s, xs, zs, height(gx, gz), keep=keep)
+    return s.mesh()
+
+
+def beach(seed: int) -> trimesh.Trimesh:
+    """A seaside front 240 m long: a beach of sand on a 1 m grid (:func:`_terrain`) from the waterline (z = 0, y = 0;
+    no floor beyond it) rising 1.6-2.2 m over 70 m with ripples and low dunes (z 45-62 m; none in the 8 m before the wall, where
+    the flights stand), under a sea wall at
+    z = 70 whose promenade (y = 4.5, 14 m deep, railed along the wall) runs the whole front. Timber groynes (0.4 m
+    thick, 3 m over the waterline, too high to step over anywhere) cut the beach into bays 30-48 m wide from the
+    wall out past the waterline; each bay is reached from the promenade only by its own flights down the wall (one,
+    or two in a bay wider than 40 m; 2.4 m wide, walked onto head-on at both ends). A pier 8 m wide at the
+    promenade's height runs 90 m out from it over one bay and the sea on piles (the beach goes on under it, 2 m and
+    more of head room), a pavilion (ridged) on its head. Beach huts (ridged) in rows along the wall's foot,
+    lifeguard towers (a platform 2.5 m up on posts, reached by a ladder only), windbreaks and umbrella poles on the
+    sand; kiosks (ridged; the promenade stops under them), benches and lamp posts on the promenade.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    size_x, wall_z, prom_y, prom_d = 240.0, 70.0, 4.5, 14.0
+    rise = rng.uniform(1.6, 2.2)
+    phases = rng.uniform(0, 2 * math.pi, size=3)
+
+    def height(x: np.ndarray, z: np.ndarray) -> np.ndarray:
+        """The sand's height (m) at plan points x, z: the slope, ripples and dunes near the wall."""
+        dune = np.clip(np.minimum((z - 45.0) / 8.0, (wall_z - 8.0 - z) / 4.0), 0.0, 1.0) * (0.6 + 0.5 * np.sin(2 * math.pi * x / 23.0 + phases[0])
+                                                        * np.sin(2 * math.pi * z / 11.0 + phases[1]))
+        return rise * z / wall_z + 0.12 * np.sin(2 * math.pi * x / 7.0 + phases[2]) * np.clip(z / 10.0, 0.0, 1.0) + dune
+
+    # groynes, bays and their flights
+    groynes = [0.0]
+    while groynes[-1] + 30.0 < size_x:
+        groynes.append(min(groynes[-1] + rng.uniform(30.0, 48.0), size_x))
+    if size_x - groynes[-1] < 30.0:
+        groynes[-1] = size_x
+    taken: list[tuple[float, float, float, float]] = []
+    run = math.ceil(prom_y / 0.18) * 0.28
+    pier_bay = int(rng.integers(1, len(groynes) - 2))
+    pier_x = (groynes[pier_bay] + groynes[pier_bay + 1]) / 2 - 4.0
+    flights: list[float] = []
+    for g in groynes[1:-1]:
+        s.box(g - 0.2, g + 0.2, -1.0, 3.0, -6.0, wall_z)
+        taken.append((g - 2.0, g + 2.0, 0.0, wall_z))
+    for a, b in pairwise(groynes):
+        count = 2 if b - a > 40.0 else 1
+        for k in range(count):
+            x = a + (b - a) * (k + 1) / (count + 1) + rng.uniform(-4.0, 4.0)
+            if a + 4.0 < pier_x + 8.0 and pier_x < b - 4.0 and abs(x - (pier_x + 4.0)) < 8.0:
+                x = pier_x - 6.0 if x < pier_x + 4.0 else pier_x + 14.0
+            foot_z = wall_z - run
+            foot_y = float(height(np.array(x), np.array(foot_z)))
+            steps = math.ceil((prom_y - foot_y) / 0.18)
+            foot_z = wall_z - steps * 0.28
+            foot_y = float(height(np.array(x), np.array(foot_z)))
+            s.stairs(np.array([x, foot_z]), np.array([0.0, 1.0]), 2.4, foot_y, prom_y - foot_y, (prom_y - foot_y) / steps, 0.28)
+            taken.append((x - 3.5, x + 3.5, foot_z - 4.0, wall_z))
+            flights.append(x)
+    s.wall((0.0, wall_z + 0.1), (size_x, wall_z + 0.1), prom_y, prom_y + 1.0,
+           [(x - 1.2, 2.4) for x in flights] + [(pier_x, 8.0)], thickness=0.2)
+    # the pier and its pavilion
+    pz0 = -90.0 + wall_z
+    s.box(pier_x, pier_x + 8.0, prom_y - 0.4, prom_y, pz0, wall_z)
+    pavilion = _ridged(s, pier_x - 2.0, pier_x + 10.0, pz0 - 16.0, pz0 - 6.0, prom_y - 0.4, prom_y + 4.0)
+    s.slab(pier_x - 8.0, pier_x + 16.0, pz0 - 20.0, pz0, prom_y, [pavilion], thickness=0.4)  # its head stops under it
+    for z in np.arange(wall_z - 6.0, pz0 - 20.0, -6.0):
+        for x in (pier_x + 0.5, pier_x + 7.5):
+            _trunk(s, np.array([x, z]), 0.25, -2.0, prom_y - 0.4)
+    for z in (pier_x, pier_x + 8.0):
+        s.box(z - 0.05, z + 0.05, prom_y, prom_y + 1.1, pz0, wall_z)
+    taken.append((pier_x - 2.0, pier_x + 10.0, pz0 - 20.0, wall_z))
+    # huts along the wall's foot, towers, windbreaks and poles on the sand
+    holes = []
+    for a, b in pairwise(groynes):
+        if rng.random() < 0.6:
+            for x in np.arange(a + 3.0, b - 5.0, 3.2):
+                if _clear(x, x + 2.5, wall_z - 3.5, wall_z, taken):
+                    holes.append(_ridged(s, float(x), float(x) + 2.5, wall_z - 3.0, wall_z - 0.5, -1.0, 2.6))
+        if rng.random() < 0.7:  # a lifeguard tower
+            tx, tz = rng.uniform(a + 6.0, b - 8.0), rng.uniform(15.0, 30.0)
+            if _clear(tx - 1.0, tx + 3.0, tz - 1.0, tz + 3.0, taken):
+                for px in (tx, tx + 1.8):
+                    for pz in (tz, tz + 1.8):
+                        s.box(px, px + 0.2, -1.0, 2.5, pz, pz + 0.2)
+                s.box(tx, tx + 2.0, 2.3, 2.5, tz, tz + 2.0)
+                s.box(tx + 0.7, tx + 1.3, -1.0, 2.5, tz - 0.1, tz)  # the ladder
+                taken.append((tx - 1.0, tx + 3.0, tz - 1.0, tz + 3.0))
+    for _ in range(int(rng.integers(60, 90))):
+        p = np.array([rng.uniform(2.0, size_x - 2.0), rng.uniform(3.0, wall_z - 6.0)])
+        if _clear(p[0] - 1.5, p[0] + 1.5, p[1] - 1.5, p[1] + 1.5, taken):
+            y = float(height(*p))
+            if rng.random() < 0.5:  # a windbreak, 3-5 m of canvas on poles
+                w = rng.uniform(3.0, 5.0)
+                s.box(p[0], p[0] + w, y - 1.0, y + 1.3, p[1], p[1] + 0.1)
+                taken.append((p[0] - 1.0, p[0] + w + 1.0, p[1] - 1.0, p[1] + 1.0))
+            else:
+                _trunk(s, p, 0.06, y - 1.0, y + 2.2)
+                taken.append((p[0] - 1.0, p[0] + 1.0, p[1] - 1.0, p[1] + 1.0))
+    # the promenade's kiosks, benches and lamp posts
+    kiosks = [_ridged(s, float(x), float(x) + 4.0, wall_z + 6.0, wall_z + 9.0, -1.0, prom_y + 2.6)
+              for x in np.arange(rng.uniform(4.0, 10.0), size_x - 6.0, rng.uniform(18.0, 26.0)) if not pier_x - 6.0 < x < pier_x + 12.0]
+    s.ground(0.0, size_x, wall_z, wall_z + prom_d, prom_y, kiosks, thickness=prom_y + 1.0)  # the wall and the promenade
+    for x in np.arange(rng.uniform(2.0, 6.0), size_x - 2.0, rng.uniform(9.0, 12.0)):
+        _trunk(s, np.array([x, wall_z + 1.2]), 0.12, prom_y, prom_y + 5.0)
+        if rng.random() < 0.5:
+            s.box(float(x) + 2.0, float(x) + 4.0, prom_y, prom_y + 0.5, wall_z + 12.5, wall_z + 13.2)
+    xs, zs = np.arange(0.0, size_x + 0.5, 1.0), np.arange(0.0, wall_z + 0.5, 1.0)
+    gx, gz = np.meshgrid(xs, zs, indexing="ij")
+    cx, cz = np.meshgrid(xs[:-1] + 0.5, zs[:-1] + 0.5, indexing="ij")
+    keep = np.ones(cx.shape, dtype=bool)
+    for x0, x1, z0, z1 in holes:
+        keep &= ~((cx > x0) & (cx < x1) & (cz > z0) & (cz < z1))
+    _terrain(s, xs, zs, height(gx, gz), keep=keep)
+    return s.mesh()
+
+
+def railyard(seed: int) -> trimesh.Trimesh:
+    """A marshalling yard 240 x 64-76 m of flat ground: 12-14 tracks along x 4.6-5 m apart (rails 0.15 m high, under
+    the climb), each holding strings of wagons (ridged, 3 m wide, 10-18 m long; the ground stops under them) coupled
+    0.8 m apart, the strings broken by gaps of 3-12 m at random, so one crosses the yard through whichever gaps line
+    up. A service road 10 m wide along each long side; a footbridge 6.5 m up across the yard (stairs at both ends,
+    2.4 m wide, along x, and piers between tracks) and an engine shed over the last 40 m of four tracks (walls,
+    open at its west end, a roof at 50 degrees, :func:`_lid`), engines (ridged) inside; a signal box on the north
+    road (ridged) and stacks of sleepers (ridged).
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    size_x, road = 240.0, 10.0
+    tracks = int(rng.integers(12, 15))
+    pitch = rng.uniform(4.6, 5.0)
+    size_z = 2 * road + tracks * pitch
+    holes: list[tuple[float, float, float, float]] = []
+    shed_x = size_x - 40.0
+    shed_tracks = set(range(tracks - 4, tracks)) if rng.random() < 0.5 else set(range(4))
+    fb_x = rng.uniform(60.0, 140.0)
+    for i in range(tracks):
+        zc = road + pitch * (i + 0.5)
+        for dz in (-0.72, 0.72):
+            s.box(0.0, size_x, 0.0, 0.15, zc + dz - 0.04, zc + dz + 0.04)
+        x = rng.uniform(0.0, 12.0)
+        end = shed_x - 2.0 if i in shed_tracks else size_x - 2.0
+        while x < end - 10.0:
+            if rng.random() < 0.3:  # a gap in the string
+                x += rng.uniform(3.0, 12.0)
+                continue
+            length = rng.uniform(10.0, 18.0)
+            if x + length > end:
+                break
+            if not (x < fb_x + 1.0 and fb_x - 1.0 < x + length):  # the footbridge's piers stand between wagons
+                holes.append(_ridged(s, x, x + length, zc - 1.5, zc + 1.5, -0.5, 3.6))
+            x += length + 0.8
+    # the footbridge: a deck 3 m wide along z at x = fb_x, 6.5 m up, flights along x at both ends on the roads
+    deck_y = 6.5
+    steps = math.ceil(deck_y / 0.18)
+    run = steps * 0.28
+    s.box(fb_x - 1.5, fb_x + 1.5, deck_y - 0.4, deck_y, road - 3.0, size_z - road + 3.0)
+    for z0, z1 in ((road - 5.5, road - 3.0), (size_z - road + 3.0, size_z - road + 5.5)):
+        s.box(fb_x - 1.5, fb_x + 1.5, deck_y - 0.4, deck_y, z0, z1)  # landings over the roads
+        s.stairs(np.array([fb_x - 1.5 - run, (z0 + z1) / 2]), np.array([1.0, 0.0]), 2.4, 0.0, deck_y, deck_y / steps, 0.28,
+                 depth=0.45)
+    for i in range(tracks + 1):
+        zc = road + pitch * i
+        s.box(fb_x - 0.3, fb_x + 0.3, -0.5, deck_y - 0.4, zc - 0.3, zc + 0.3)
+    s.box(fb_x - 1.5, fb_x - 1.4, deck_y, deck_y + 1.1, road - 3.0, size_z - road + 3.0)  # rails, open at the flights' heads
+    s.box(fb_x + 1.4, fb_x + 1.5, deck_y, deck_y + 1.1, road - 5.5, size_z - road + 5.5)
+    # the engine shed
+    lo = road + pitch * min(shed_tracks) - 0.4
+    hi = road + pitch * (max(shed_tracks) + 1) + 0.4
+    for z in (lo, hi):
+        s.wall((shed_x, z), (size_x, z), -0.3, 7.0, [(6.0, 2.0), (28.0, 2.0)])
+    s.wall((size_x, lo), (size_x, hi), -0.3, 7.0)
+    _lid(s, shed_x, size_x, lo, hi, 7.0)
+    for i in shed_tracks:
+        zc = road + pitch * (i + 0.5)
+        x = shed_x + rng.uniform(1.0, 6.0)
+        while x + 14.0 < size_x - 1.0:
+            if rng.random() < 0.7:
+                holes.append(_ridged(s, x, x + 14.0, zc - 1.5, zc + 1.5, -0.5, 4.0))
+            x += 14.0 + rng.uniform(1.5, 4.0)
+    # the signal box and stacks of sleepers on the roads
+    bx = rng.uniform(10.0, fb_x - 20.0)
+    holes.append(_ridged(s, bx, bx + 8.0, size_z - road + 2.0, size_z - 1.0, -0.5, 6.0))
+    for _ in range(int(rng.integers(10, 16))):
+        x = rng.uniform(2.0, size_x - 8.0)
+        z0 = rng.uniform(1.0, road - 4.0) if rng.random() < 0.5 else rng.uniform(size_z - road + 1.0, size_z - 4.0)
+        if _clear(x - 2.0, x + 8.0, z0 - 2.0, z0 + 5.0, [*holes, (fb_x - run - 4.0, fb_x + 4.0, 0.0, size_z)]):
+            holes.append(_ridged(s, x, x + 6.0, z0, z0 + 2.6, -0.5, 1.2))
+    bands = [0.0, *(road + pitch * np.arange(tracks + 1)), size_z]
+    for z0, z1 in pairwise(bands):  # the ground band by band, each stopping under its own holes (quick)
+        s.ground(0.0, size_x, z0, z1, 0.0, [h for h in holes if z0 < (h[2] + h[3]) / 2 < z1])
+    return s.mesh()
+
+
+def craters(seed: int) -> trimesh.Trimesh:
+    """A shelled battlefield 170 x 130 m on a 1 m grid (:func:`_terrain`): rolling ground (waves under 1.5 m) pocked
+    by 45-70 shell craters (2.5-7.5 m in radius, 0.15-0.4 of the radius deep, a rim a quarter of the depth high;
+    overlapping craters add up, so the deepest walls pass 45 degrees near the rim and a few bottoms may be out of
+    reach), crossed by three or four lines of sandbags along x (pieces 2 m long, 0.8 m wide, 1.1 m over the highest
+    ground under them: too high to climb) zig-zagging in legs of 8-14 m, each leg open or not at its end by a gap of
+    2.5-4 m, so the lines are crossed only at their gaps; 6-10 wrecked vehicles (ridged; the ground stops under them),
+    two or three ruined houses (walls 3 m high, wide breaches, no roof) and 40-70 shattered stumps.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    size_x, size_z = 170.0, 130.0
+    phases = rng.uniform(0, 2 * math.pi, size=3)
+    n = int(rng.integers(45, 71))
+    centres = np.stack([rng.uniform(5.0, size_x - 5.0, n), rng.uniform(5.0, size_z - 5.0, n)], 1)
+    radii = rng.uniform(2.5, 7.5, n)
+    depths = radii * rng.uniform(0.15, 0.4, n)
+
+    def height(x: np.ndarray, z: np.ndarray) -> np.ndarray:
+        """The ground's height (m) at plan points x, z: waves and every crater's bowl and rim."""
+        x, z = np.asarray(x, dtype=np.float64), np.asarray(z, dtype=np.float64)
+        h = (0.8 * np.sin(2 * math.pi * x / 70.0 + phases[0]) * np.sin(2 * math.pi * z / 55.0 + phases[1])
+             + 0.5 * np.sin(2 * math.pi * (x + z) / 45.0 + phases[2]))
+        for (cx, cz), r, d in zip(centres, radii, depths):
+            t = np.hypot(x - cx, z - cz) / r
+            rim = d / 4
+            h = h + np.where(t < 1.0, -d + (d + rim) * t ** 2, rim * np.exp(-((t - 1.0) / 0.5) ** 2))
+        return h
+
+    xs, zs = np.arange(0.0, size_x + 0.5, 1.0), np.arange(0.0, size_z + 0.5, 1.0)
+    gx, gz = np.meshgrid(xs, zs, indexing="ij")
+    heights = height(gx, gz)
+    cx, cz = np.meshgrid(xs[:-1] + 0.5, zs[:-1] + 0.5, indexing="ij")
+    keep = np.ones(cx.shape, dtype=bool)
+    taken: list[tuple[float, float, float, float]] = []
+
+    def ground_range(points: np.ndarray) -> tuple[float, float]:
+        """The lowest and highest ground (m) under plan points (k, 2)."""
+        h = height(points[:, 0], points[:, 1])
+        return float(h.min()), float(h.max())
+
+    lines = int(rng.integers(3, 5))
+    for k in range(lines):
+        z = size_z * (k + 1) / (lines + 1) + rng.uniform(-6.0, 6.0)
+        x, up = 0.0, rng.random() < 0.5
+        while x < size_x:
+            leg = rng.uniform(8.0, 14.0)
+            dz = rng.uniform(4.0, 8.0) * (1.0 if up else -1.0)
+            a, b = np.array([x, z]), np.array([min(x + leg, size_x), z + dz])
+            gap = rng.uniform(2.5, 4.0) if rng.random() < 0.45 else 0.0
+            length = float(np.linalg.norm(b - a)) - gap
+            u = (b - a) / np.linalg.norm(b - a)
+            for t0 in np.arange(0.0, length, 2.0):
+                p, q = a + u * t0, a + u * min(t0 + 2.0, length)
+                if np.linalg.norm(q - p) < 0.3:
+                    continue
+                lo, hi = ground_range(np.linspace(p, q, 5) + np.array([[0.0, 0.0]]))
+                s.prism(_strip(p, q, 0.8), lo - 0.5, hi + 1.1)
+            taken.append((min(a[0], b[0]) - 2.0, max(a[0], b[0]) + 2.0, min(a[1], b[1]) - 2.0, max(a[1], b[1]) + 2.0))
+            x, z, up = b[0], b[1], not up
+    for _ in range(int(rng.integers(2, 4))):  # ruined houses
+        for _ in range(100):
+            hx, hz = rng.uniform(5.0, size_x - 17.0), rng.uniform(5.0, size_z - 14.0)
+            w, d = rng.uniform(9.0, 12.0), rng.uniform(7.0, 9.0)
+            if _clear(hx - 2.0, hx + w + 2.0, hz - 2.0, hz + d + 2.0, taken):
+                lo, hi = ground_range(np.array([[hx, hz], [hx + w, hz], [hx, hz + d], [hx + w, hz + d], [hx + w / 2, hz + d / 2]]))
+                for a, b, span in (((hx, hz), (hx + w, hz), w), ((hx, hz + d), (hx + w, hz + d), w),
+                                   ((hx, hz), (hx, hz + d), d), ((hx + w, hz), (hx + w, hz + d), d)):
+                    doors = [(rng.uniform(0.5, span - 3.5), rng.uniform(2.0, 3.0))] if rng.random() < 0.75 else []
+                    s.wall(a, b, lo - 0.5, hi + 3.0, doors, thickness=0.4)
+                taken.append((hx - 2.0, hx + w + 2.0, hz - 2.0, hz + d + 2.0))
+                break
+    for _ in range(int(rng.integers(6, 11))):  # wrecks
+        for _ in range(100):
+            along = rng.random() < 0.5
+            w, d = (7.0, 3.6) if along else (3.6, 7.0)
+            wx, wz = rng.uniform(3.0, size_x - w - 3.0), rng.uniform(3.0, size_z - d - 3.0)
+            if _clear(wx - 2.0, wx + w + 2.0, wz - 2.0, wz + d + 2.0, taken):
+                lo, hi = ground_range(np.array([[wx, wz], [wx + w, wz], [wx, wz + d], [wx + w, wz + d]]))
+                if along:
+                    _ridged(s, wx, wx + w, wz, wz + d, lo - 1.0, hi + 1.6)
+                else:  # ridged along z
+                    s.hull(np.array([[x, y, z] for x in (wx, wx + w) for y in (lo - 1.0, hi + 1.6) for z in (wz, wz + d)]
+                                    + [[wx + w / 2, hi + 1.6 + w / 2 * math.tan(math.radians(50.0)), z] for z in (wz, wz + d)]))
+                keep &= ~((cx > wx) & (cx < wx + w) & (cz > wz) & (cz < wz + d))
+                taken.append((wx - 2.0, wx + w + 2.0, wz - 2.0, wz + d + 2.0))
+                break
+    for _ in range(int(rng.integers(40, 71))):  # stumps
+        p = np.array([rng.uniform(2.0, size_x - 2.0), rng.uniform(2.0, size_z - 2.0)])
+        if _clear(p[0] - 1.0, p[0] + 1.0, p[1] - 1.0, p[1] + 1.0, taken):
+            y = float(height(*p))
+            _trunk(s, p, rng.uniform(0.2, 0.45), y - 1.0, y + rng.uniform(1.0, 4.0))
+    _terrain(s, xs, zs, heights, keep=keep)
+    return s.mesh()
+
+
 KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
     "subway": subway, "archipelago": archipelago, "car_park": car_park,
     "forest": forest, "stadium": stadium, "harbour": harbour,
@@ -4658,6 +5350,8 @@ KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
     "scaffold": scaffold,
     "dry_dock": dry_dock, "mountain_pass": mountain_pass, "zoo": zoo, "skatepark": skatepark, "interchange": interchange,
     "stepwell": stepwell,
+    "farm": farm, "cruise_ship": cruise_ship, "treetops": treetops, "beach": beach, "railyard": railyard,
+    "craters": craters,
 }
 """Kind name -> generator (seed -> Y-up mesh in metres)."""
 
