@@ -1,4 +1,4 @@
-"""The ninth to thirteenth rounds' level kinds (``benchmarks/level_kinds.py``) build the levels their docstrings describe.
+"""The ninth to fourteenth rounds' level kinds (``benchmarks/level_kinds.py``) build the levels their docstrings describe.
 
 Smoke tests of quick generators (well under a second each to build and to give a navmesh): the connected areas
 the presets' agent finds are the ones each level is made to have, so a door that closes or a crawlway that
@@ -37,7 +37,8 @@ def areas(mesh) -> tuple[np.ndarray, object]:
 
 
 def test_the_same_seed_gives_the_same_level(kinds):
-    for kind in ("hall", "islets", "helix", "flooded", "stairhall", "quarry", "theme_park", "golf", "skatepark", "stepwell"):
+    for kind in ("hall", "islets", "helix", "flooded", "stairhall", "quarry", "theme_park", "golf", "skatepark", "stepwell",
+                 "railyard", "craters"):
         a, b, other = kinds[kind](0), kinds[kind](0), kinds[kind](1)
         assert np.array_equal(a.vertices, b.vertices) and np.array_equal(a.faces, b.faces), kind
         assert len(a.vertices) != len(other.vertices) or not np.array_equal(a.vertices, other.vertices), kind
@@ -312,3 +313,66 @@ def test_the_stepwells_terraces_are_one_area_down_its_flights(kinds):
     assert rings >= 4
     for k in range(rings + 1):
         assert (np.abs(y + 1.8 * k) < 0.3).sum() > 10, k
+
+
+def test_the_farms_fields_are_one_area_and_its_lofts_apart(kinds):
+    """Gates, gaps in hedges and stiles (0.9 m up over a fence) join every field to the yard: one area with floor in
+    each of the nine fields; the two barn lofts (3.2 m up, reached by ladders only) are areas of their own."""
+    label, nav = areas(kinds["farm"](0))
+    main = np.bincount(label, weights=nav.areas).argmax()
+    x, y, z = nav.centres[label == main].T
+    for x0, x1 in ((0.0, 60.0), (80.0, 130.0), (150.0, 210.0)):
+        for z0, z1 in ((0.0, 48.0), (62.0, 98.0), (112.0, 160.0)):
+            assert ((x > x0) & (x < x1) & (z > z0) & (z < z1)).sum() > 5, (x0, z0)
+    lofts = [k for k in range(label.max() + 1) if k != main]
+    assert len(lofts) == 2
+    for k in lofts:
+        assert nav.areas[label == k].sum() > 50.0 and np.allclose(nav.centres[label == k, 1], 3.4, atol=0.3)
+
+
+def test_the_cruise_ships_five_decks_are_one_area(kinds):
+    """The stern and bow flights join the five decks (0 to 12 m, 3 m apart): one area, floor on each deck; no floor
+    inside the cabin block, the funnel or the pools."""
+    label, nav = areas(kinds["cruise_ship"](1))
+    assert label.max() == 0
+    for deck in range(5):
+        assert (np.abs(nav.centres[:, 1] - 0.2 - 3.0 * deck) < 0.3).sum() > 20, deck
+
+
+def test_the_treetop_platforms_are_reached_from_the_floor_but_the_hides(kinds):
+    """The forest floor, the flights and the platforms joined by bridges are one area; every other area is a hide
+    (up a ladder only): a platform or two over 3.5 m up, under 100 m²."""
+    label, nav = areas(kinds["treetops"](2))
+    main = np.bincount(label, weights=nav.areas).argmax()
+    y = nav.centres[:, 1]
+    assert ((label == main) & (y > 4.0)).sum() > 50 and ((label == main) & (y < 2.0)).sum() > 100
+    for k in set(range(label.max() + 1)) - {main}:
+        assert y[label == k].min() > 3.5 and nav.areas[label == k].sum() < 100.0, k
+
+
+def test_the_beachs_bays_are_reached_down_their_flights(kinds):
+    """Each bay between groynes is a dead end reached from the promenade (4.5 m) only by its own flights: one
+    area with floor in every bay, on the promenade and on the pier's head out over the sea."""
+    label, nav = areas(kinds["beach"](0))
+    assert label.max() == 0
+    x, y, z = nav.centres.T
+    assert (np.abs(y - 4.7) < 0.3).sum() > 20 and ((z < -10.0) & (y > 4.0)).sum() > 3
+    for x0 in range(0, 240, 40):  # sand all along the front
+        assert ((x > x0) & (x < x0 + 40) & (y < 3.0)).sum() > 5, x0
+
+
+def test_the_railyard_is_one_area_over_its_footbridge(kinds):
+    """The gaps between wagons, the roads, the shed and the footbridge (6.5 m) are one area; no floor on a wagon."""
+    label, nav = areas(kinds["railyard"](0))
+    assert label.max() == 0
+    x, y, _ = nav.centres.T
+    deck = np.abs(y - 6.7) < 0.3
+    assert deck.sum() > 3
+    assert (np.abs(x[y > 1.0] - x[deck].mean()) < 14.0).all()  # floor over 1 m up only on the footbridge and its flights
+
+
+def test_the_craters_are_one_area_down_to_their_bottoms(kinds):
+    """The shelled ground, crater bottoms and all, is one area between the sandbag lines' gaps."""
+    label, nav = areas(kinds["craters"](1))
+    assert label.max() == 0
+    assert nav.centres[:, 1].min() < -1.5
