@@ -5168,8 +5168,9 @@ def railyard(seed: int) -> trimesh.Trimesh:
     the climb), each holding strings of wagons (ridged, 3 m wide, 10-18 m long; the ground stops under them) coupled
     0.8 m apart, the strings broken by gaps of 3-12 m at random, so one crosses the yard through whichever gaps line
     up. A service road 10 m wide along each long side; a footbridge 6.5 m up across the yard (stairs at both ends,
-    2.4 m wide, along x, and piers between tracks; wagons stand under it, 0.7 m and more below its deck: a first
-    draft kept them clear of it, which left a lane across the yard under the bridge) and an engine shed over the last 40 m of four tracks (walls,
+    2.4 m wide, along x, and piers on the roads; wagons stand under it, 0.7 m and more below its deck: a first
+    draft kept them clear of it, which left a lane across the yard under the bridge, and piers between
+    tracks, which closed the aisles between wagons there) and an engine shed over the last 40 m of four tracks (walls,
     open at its west end, a roof at 50 degrees, :func:`_lid`), engines (ridged) inside; a signal box on the north
     road (ridged) and stacks of sleepers (ridged).
     """
@@ -5207,8 +5208,7 @@ def railyard(seed: int) -> trimesh.Trimesh:
         s.box(fb_x - 1.5, fb_x + 1.5, deck_y - 0.4, deck_y, z0, z1)  # landings over the roads
         s.stairs(np.array([fb_x - 1.5 - run, (z0 + z1) / 2]), np.array([1.0, 0.0]), 2.4, 0.0, deck_y, deck_y / steps, 0.28,
                  depth=0.45)
-    for i in range(tracks + 1):
-        zc = road + pitch * i
+    for zc in (road - 1.5, size_z - road + 1.5):  # piers on the roads only: one between tracks closed the aisle there
         s.box(fb_x - 0.3, fb_x + 0.3, -0.5, deck_y - 0.4, zc - 0.3, zc + 0.3)
     s.box(fb_x - 1.5, fb_x - 1.4, deck_y, deck_y + 1.1, road - 3.0, size_z - road + 3.0)  # rails, open at the flights' heads
     s.box(fb_x + 1.4, fb_x + 1.5, deck_y, deck_y + 1.1, road - 5.5, size_z - road + 5.5)
