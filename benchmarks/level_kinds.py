@@ -1,4 +1,4 @@
-"""Level kinds of the fifth to thirteenth held-out rounds (issue 9): generators no preset setting was made on.
+"""Level kinds of the fifth to fourteenth held-out rounds (issue 9): generators no preset setting was made on.
 
 Fifth round: six kinds, each about 1,000 navmesh polygons with the presets' agent (radius 0.5 m, height 2 m, climb 0.4 m):
 ``subway`` (platforms, track pits 1.2 m lower, stairs up to two concourses), ``archipelago`` (islands joined by
@@ -88,6 +88,18 @@ last steps only (Recast's ledge filter: a span whose walkable neighbours differ 
 so each flight here ends on a landing or head-on (a first draft's flights down the dock's walls, along the wall,
 joined nothing); the top of a closed solid inside another is floor (the ship's hull under its superstructure, the
 first draft), so covers reach down to the hull's bottom and the hull stops under them.
+
+Fourteenth round: six more kinds, 601-907 navmesh polygons with that agent (seeds 0-2): ``farm`` (fields joined only
+by gates, gaps in hedges and stiles over fences, barn lofts up ladders no agent climbs), ``cruise_ship`` (five open
+decks each stepping back from the one below, joined only at their stern and bow terraces, covered promenades round a
+cabin block), ``treetops`` (platforms 4-11 m up round trunks joined by ramps into a tree over a walkable forest
+floor, one flight up a group, hides by ladder only), ``beach`` (bays between groynes, each reached from one promenade
+only by its own flights, a pier), ``railyard`` (rows of wagons crossed through random gaps, a footbridge) and
+``craters`` (rolling ground pocked by overlapping shell craters, sandbag lines crossed only at gaps). A flight at an
+angle to the axes is cut by Recast's ledge filter (a first draft's treetop flights: its cells' neighbours differ by
+more than the climb), so every flight here runs along x or z; and the top of a deck inside any closed solid standing
+on it is floor (the cruise ship's first draft: its cabin blocks, funnel and pools), so the block rises from under the
+lowest deck and the decks stop at it.
 
 Run: ``.venv/bin/python benchmarks/level_kinds.py OUT_DIR [--kinds subway forest] [--seeds 0 1 2]`` writes
 ``OUT_DIR/<kind>_s<seed>.obj``, the files ``benchmarks/analysis_quality.py --levels`` takes (which also takes the
@@ -5062,7 +5074,8 @@ def beach(seed: int) -> trimesh.Trimesh:
     or two in a bay wider than 40 m; 2.4 m wide, walked onto head-on at both ends). A pier 8 m wide at the
     promenade's height runs 90 m out from it over one bay and the sea on piles (the beach goes on under it, 2 m and
     more of head room), a pavilion (ridged) on its head. Beach huts (ridged) in rows along the wall's foot,
-    lifeguard towers (a platform 2.5 m up on posts, reached by a ladder only), windbreaks and umbrella poles on the
+    lifeguard towers (a platform 2 m square 2.5 m up on posts, a ladder: too small to hold floor for the
+    agent), windbreaks and umbrella poles on the
     sand; kiosks (ridged; the promenade stops under them), benches and lamp posts on the promenade.
     """
     rng = np.random.default_rng(seed)
