@@ -89,7 +89,7 @@ so each flight here ends on a landing or head-on (a first draft's flights down t
 joined nothing); the top of a closed solid inside another is floor (the ship's hull under its superstructure, the
 first draft), so covers reach down to the hull's bottom and the hull stops under them.
 
-Fourteenth round: six more kinds, 601-907 navmesh polygons with that agent (seeds 0-2): ``farm`` (fields joined only
+Fourteenth round: six more kinds, 601-898 navmesh polygons with that agent (seeds 0-2): ``farm`` (fields joined only
 by gates, gaps in hedges and stiles over fences, barn lofts up ladders no agent climbs), ``cruise_ship`` (five open
 decks each stepping back from the one below, joined only at their stern and bow terraces, covered promenades round a
 cabin block), ``treetops`` (platforms 4-11 m up round trunks joined by ramps into a tree over a walkable forest
