@@ -76,7 +76,7 @@ joined through gaps to a scaffold deck round the building, a stair tower). Close
 leave a floor between them: a pier under a bridge's deck now rises to the deck's top (a first draft had floor on
 every pier's top, 7.4 m² each, under the deck), and :func:`_ridged` makes each solid no one enters one convex body.
 
-Thirteenth round: six more kinds, 459-771 navmesh polygons with that agent (seeds 0-2): ``dry_dock`` (quays round a
+Thirteenth round: six more kinds, 459-787 navmesh polygons with that agent (seeds 0-2): ``dry_dock`` (quays round a
 dock 10 m deep with altars, flights down its walls, a ship on keel blocks reached by gangways, a gantry's girder
 walk 14 m up), ``mountain_pass`` (a cliff over the 45-degree limit climbed by a switchback path cut into it, a
 walkable piste beside it, lift stations, huts), ``zoo`` (paths round railed enclosures the ground stops in, viewing
