@@ -4872,7 +4872,7 @@ def cruise_ship(seed: int) -> trimesh.Trimesh:
             s.wall((x0, -half), (x0, half), top, top + 1.1, thickness=0.1)
             s.wall((x1, -half), (x1, half), top, top + 1.1, thickness=0.1)
         prev_stern = stern
-    # the sun deck: pools, a funnel, loungers, bars
+    # the sun deck: pools, loungers, bars (the funnel's casing stands already)
     top, x0, x1 = 12.0, starts[4], ends[4]
     features: list[tuple[float, float, float, float]] = [funnel]
     for _ in range(int(rng.integers(2, 4))):
@@ -5128,8 +5128,8 @@ def beach(seed: int) -> trimesh.Trimesh:
     for z in np.arange(wall_z - 6.0, pz0 - 20.0, -6.0):
         for x in (pier_x + 0.5, pier_x + 7.5):
             _trunk(s, np.array([x, z]), 0.25, -2.0, prom_y - 0.4)
-    for z in (pier_x, pier_x + 8.0):
-        s.box(z - 0.05, z + 0.05, prom_y, prom_y + 1.1, pz0, wall_z)
+    for x in (pier_x, pier_x + 8.0):  # its rails
+        s.box(x - 0.05, x + 0.05, prom_y, prom_y + 1.1, pz0, wall_z)
     taken.append((pier_x - 2.0, pier_x + 10.0, pz0 - 20.0, wall_z))
     # huts along the wall's foot, towers, windbreaks and poles on the sand
     holes = []
@@ -5309,7 +5309,7 @@ def craters(seed: int) -> trimesh.Trimesh:
                 p, q = a + u * t0, a + u * min(t0 + 2.0, length)
                 if np.linalg.norm(q - p) < 0.3:
                     continue
-                lo, hi = ground_range(np.linspace(p, q, 5) + np.array([[0.0, 0.0]]))
+                lo, hi = ground_range(np.linspace(p, q, 5))
                 s.prism(_strip(p, q, 0.8), lo - 0.5, hi + 1.1)
             taken.append((min(a[0], b[0]) - 2.0, max(a[0], b[0]) + 2.0, min(a[1], b[1]) - 2.0, max(a[1], b[1]) + 2.0))
             x, z, up = b[0], b[1], not up
