@@ -333,7 +333,7 @@ def test_two_installed_plugins_of_one_name_stop_the_runs_that_ask_for_it(monkeyp
     import importlib.metadata
 
     def entry_point(package, plugin):
-        return types.SimpleNamespace(name="terminals.first_k", value=f"{package}.first_k",
+        return types.SimpleNamespace(name="terminals.first_k", value=f"{package.replace('-', '_')}.first_k",
                                      dist=types.SimpleNamespace(name=package), load=lambda: plugin)
 
     found = [entry_point("pkg-b", OTHER_FIRST_K), entry_point("pkg-a", FIRST_K)]

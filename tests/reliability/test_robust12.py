@@ -1,0 +1,108 @@
+"""Inputs robust12 (5 December 2026) found ending in an internal error, a library's words, a wrong culprit or lost
+work, each test failing on the code before its fix (docs/errors.md, "The hostile-user pass of robust12")."""
+
+from __future__ import annotations
+
+import os
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from g2s_core.registry import Registry
+
+ANALYZER = '''"""A third-party analyzer."""
+from g2s_core.plugin import hookimpl
+
+NAME = "{name}"
+
+
+@hookimpl
+def {hook}(structure):
+    return {{node: 1.0 for node in structure}}
+'''
+
+
+def third_party(folder: Path, package: str, entry_points: dict[str, str], modules: dict[str, str]) -> Path:
+    """A package installed as a user's hand-made one is: ``modules`` and a ``*.dist-info`` folder declaring
+    ``entry_points`` (name: value) in the ``g2s`` group, in ``folder`` (to put on the path); ``folder``."""
+    folder.mkdir(exist_ok=True)
+    for name, source in modules.items():
+        (folder / f"{name}.py").write_text(source)
+    info = folder / f"{re.sub(r'[^A-Za-z0-9.]', '_', package)}-1.0.dist-info"
+    info.mkdir()
+    (info / "METADATA").write_text(f"Metadata-Version: 2.1\nName: {package}\nVersion: 1.0\n")
+    (info / "entry_points.txt").write_text("[g2s]\n" + "".join(f"{k} = {v}\n" for k, v in entry_points.items()))
+    return folder
+
+
+def g2s_with_path(folder: Path, *args: str) -> subprocess.CompletedProcess:
+    """``g2s ARGS`` in a child process whose ``PYTHONPATH`` holds ``folder``."""
+    env = {**os.environ, "COLUMNS": "300", "PYTHONPATH": os.pathsep.join([str(folder), *sys.path])}
+    return subprocess.run([sys.executable, "-m", "g2s_core.cli", *args], capture_output=True, text=True, env=env,
+                          timeout=120)
+
+
+def broken_of(folder: Path, monkeypatch: pytest.MonkeyPatch) -> dict[str, str]:
+    """``{entry point: reason}`` of every broken plugin once ``folder`` is on the path, the stages loaded as `g2s plugins`
+    loads them (the first stage with the entry points named after no stage)."""
+    monkeypatch.syspath_prepend(str(folder))
+    registry = Registry.from_entry_points()
+    registry.plugins("graph")
+    return {broken.entry_point: broken.reason for broken in registry.broken}
+
+
+def test_a_plugin_whose_hook_is_misspelt_breaks_only_itself(tmp_path, monkeypatch):
+    # pluggy's check of a plugin implementing an unknown `g2s_*` hook (`g2s_analyse`) failed, and the plugin stayed
+    # registered: every plugin loaded after it failed the same check, `g2s plugins` listed 14 of graph2structure's
+    # plugins broken for it, and `g2s run map_analysis` was exit 1 blaming graph2structure's `flow` analyzer
+    folder = third_party(tmp_path / "site", "aaa-typo", {"analyzers.typo": "typo_mod"},
+                         {"typo_mod": ANALYZER.format(name="typo", hook="g2s_analyse")})
+    broken = broken_of(folder, monkeypatch)
+    assert list(broken) == ["analyzers.typo"]
+    assert "unknown hook 'g2s_analyse' in plugin <module 'typo_mod'" in broken["analyzers.typo"]
+
+
+def test_entry_points_named_with_colons_or_of_a_value_of_extra_colons_are_told_by_their_names(tmp_path, monkeypatch):
+    # review30: the registry took an entry point's name back out of pluggy's name for its plugin,
+    # `package:entry point:NAME`, by splitting it at ':', and named `analyzers:odd` as 'analyzers'; a value of two ':'
+    # (`mod:Class:extra`) failed inside importlib in its words, `AttributeError: 'NoneType' object has no attribute
+    # 'group'`, naming neither what is wrong nor what is expected
+    folder = third_party(tmp_path / "site", "colon-plug",
+                         {"analyzers:odd": "colon_mod", "analyzers.colon:x": "colon_mod",
+                          "analyzers.extra": "colon_mod:NAME:extra", "analyzers.empty": "colon_mod:"},
+                         {"colon_mod": ANALYZER.format(name="colon", hook="g2s_analyze")})
+    broken = broken_of(folder, monkeypatch)
+    where = "entry point {!r} of package 'colon-plug': "
+    assert broken == {
+        "analyzers.colon:x": where.format("analyzers.colon:x") + "its plugin is also that of entry point 'analyzers:odd'; "
+                                                                "each entry point names a plugin of its own",
+        "analyzers.empty": where.format("analyzers.empty") + "its value 'colon_mod:' is not of the form 'module' or "
+                                                            "'module:attribute' (dotted names)",
+        "analyzers.extra": where.format("analyzers.extra") + "its value 'colon_mod:NAME:extra' is not of the form "
+                                                            "'module' or 'module:attribute' (dotted names)",
+    }
+
+
+def test_an_entry_point_listing_two_plugins_of_one_name_is_told_in_one_short_line(tmp_path, monkeypatch):
+    # pluggy named each plugin `package:entry point:NAME`, the same for both: its ValueError listed every plugin
+    # registered, a line of 9 kB (`Plugin name already registered: ... {'graph2structure:analyzers.area:area': ...`)
+    twins = ANALYZER.format(name="twin", hook="g2s_analyze") + (
+        "\n\nclass Other:\n    NAME = 'twin'\n    g2s_analyze = staticmethod(g2s_analyze)\n\n\n"
+        "import sys\n\nPAIR = [sys.modules[__name__], Other]\n")
+    folder = third_party(tmp_path / "site", "twin-plug", {"analyzers.twin": "twin_mod:PAIR"}, {"twin_mod": twins})
+    broken = broken_of(folder, monkeypatch)
+    assert broken == {"analyzers.twin": "two plugins provide Analyzer 'twin': package 'twin-plug' (entry point "
+                                        "'analyzers.twin') and package 'twin-plug' (entry point 'analyzers.twin')"}
+
+
+def test_a_plugin_name_holding_rich_markup_is_listed_as_written(tmp_path):
+    # `g2s plugins` printed a broken entry point's name and package through rich's markup: `analyzers.x[/red]` was
+    # `internal error: MarkupError: closing tag '[/red]' at position 39 doesn't match any open tag` (exit 1)
+    folder = third_party(tmp_path / "site", "m[/b]p", {"analyzers.x[/red]": "no_such_module"}, {})
+    listed = g2s_with_path(folder, "plugins", "--stage", "analyzers")
+    assert (listed.returncode, listed.stderr) == (0, "")
+    assert "broken analyzers.x[/red]  (m[/b]p)\n  no_such_module failed to load: ModuleNotFoundError: No module named " \
+        "'no_such_module'" in listed.stdout
