@@ -106,3 +106,54 @@ def test_a_plugin_name_holding_rich_markup_is_listed_as_written(tmp_path):
     assert (listed.returncode, listed.stderr) == (0, "")
     assert "broken analyzers.x[/red]  (m[/b]p)\n  no_such_module failed to load: ModuleNotFoundError: No module named " \
         "'no_such_module'" in listed.stdout
+
+
+DYING = '''"""An analyzer whose process dies as it runs, as one killed for want of memory or crashing in native code does."""
+import os
+import signal
+
+from pydantic import Field
+
+from g2s_core.plugin import PluginParams, hookimpl
+
+NAME = "dies"
+
+
+class Params(PluginParams):
+    """How it dies."""
+
+    signal: str = Field("SIGKILL", description="the signal it sends itself")
+
+
+@hookimpl
+def g2s_analyze(structure, params):
+    os.kill(os.getpid(), getattr(signal, params.signal))
+'''
+
+
+@pytest.mark.parametrize("executor, signal_name", [("local", "SIGKILL"), ("dask", "SIGSEGV")])
+def test_a_pair_whose_worker_dies_fails_alone(executor, signal_name, tmp_path):
+    # a worker that died (the system's out-of-memory killer, a crash in native code) ended the whole batch, exit 1,
+    # `Executor plugin 'local' (package 'graph2structure') failed: its iterator raised BrokenProcessPool: ...` (`'dask'
+    # ... KilledWorker: ...`): the pairs not yet finished were lost, and the process pool's other workers, stopped
+    # with it, left a half-written pair's staging folder in its result folder
+    folder = third_party(tmp_path / "site", "dies-plug", {"analyzers.dies": "dies_mod"}, {"dies_mod": DYING})
+    (tmp_path / "good.yaml").write_text("extends: map_piece\n")
+    (tmp_path / "dies.yaml").write_text(f"extends: map_piece\nanalyzers: [{{plugin: dies, params: {{signal: {signal_name}}}}}]\n")
+    levels = ["sample:straight_corridor", "sample:cross_hub"]
+    out = tmp_path / "out"
+    batch = g2s_with_path(folder, "batch", str(tmp_path / "dies.yaml"), str(tmp_path / "good.yaml"), *levels, "-o", str(out),
+                          "--executor", executor, "--workers", "2", "--format", "json", "-q")
+    died = ("its worker process died as it ran" if executor == "local" else "every Dask worker that held it died")
+    assert batch.returncode == 4, batch.stderr
+    assert batch.stderr.splitlines() == [f"g2s: dies on {level} failed: sample:{level}: {died} (killed, e.g. by the system "
+                                         "for want of memory, or a crash in native code); the batch's other pairs ran"
+                                         for level in ("straight_corridor", "cross_hub")]
+    import pandas as pd
+
+    summary = pd.read_csv(out / "summary.csv")
+    assert sorted(zip(summary["config"], summary["level"], summary["status"])) == [
+        ("dies", "cross_hub", "failed"), ("dies", "straight_corridor", "failed"),
+        ("good", "cross_hub", "ok"), ("good", "straight_corridor", "ok")]
+    assert [p.name for p in out.rglob("*") if "g2s-staging" in p.name] == []
+    assert sorted(p.name for p in (out / "good").iterdir()) == ["cross_hub", "straight_corridor"]
