@@ -13,6 +13,8 @@ import pytest
 
 from g2s_core.registry import Registry
 
+from tests.reliability.checks import CORRIDOR, assert_clean_error, run_g2s, tree
+
 ANALYZER = '''"""A third-party analyzer."""
 from g2s_core.plugin import hookimpl
 
@@ -157,3 +159,21 @@ def test_a_pair_whose_worker_dies_fails_alone(executor, signal_name, tmp_path):
         ("good", "cross_hub", "ok"), ("good", "straight_corridor", "ok")]
     assert [p.name for p in out.rglob("*") if "g2s-staging" in p.name] == []
     assert sorted(p.name for p in (out / "good").iterdir()) == ["cross_hub", "straight_corridor"]
+
+
+def test_a_config_of_millions_of_values_is_refused_before_it_fills_the_memory(tmp_path, monkeypatch, capsys):
+    # a config of 96 MB holding a list of 16 million numbers took 7.3 GB and 9 minutes of PyYAML before the run
+    # refused it; now the value past MAX_YAML_NODES (1,000,000: 23 s and 0.8 GB) stops the reading. Here the limit is
+    # 200 values, so that the test reads a small file (the root, `extends` and its value, `outputs`, its mapping,
+    # `formats` and its list are 7)
+    from g2s_core import config
+
+    monkeypatch.setattr(config, "MAX_YAML_NODES", 200)
+    path = tmp_path / "long.yaml"
+    path.write_text("extends: graph_only\noutputs:\n  formats: [" + ", ".join(["json"] * 193) + "]\n")
+    assert run_g2s(capsys, "run", path, CORRIDOR, "-o", tmp_path / "out", "-q").code == 0
+    path.write_text("extends: graph_only\noutputs:\n  formats: [" + ", ".join(["json"] * 194) + "]\n")
+    outcome = run_g2s(capsys, "run", path, CORRIDOR, "-o", tmp_path / "out2", "-q")
+    assert_clean_error(outcome, f"{path}: invalid YAML at line 3, column 1171: more than 200 values (a config holds hundreds; "
+                                "long lists of points belong in a points file)")
+    assert tree(tmp_path / "out2") == []
