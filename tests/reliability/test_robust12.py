@@ -177,3 +177,19 @@ def test_a_config_of_millions_of_values_is_refused_before_it_fills_the_memory(tm
     assert_clean_error(outcome, f"{path}: invalid YAML at line 3, column 1171: more than 200 values (a config holds hundreds; "
                                 "long lists of points belong in a points file)")
     assert tree(tmp_path / "out2") == []
+
+
+def test_a_small_config_is_read_under_a_memory_limit_the_run_fits_in(tmp_path):
+    # every text input was read with read(256 MiB + 1), which asks for the whole buffer at once: `g2s batch` under
+    # `ulimit -v 600000` (pandas and pyarrow loaded) failed on its 30-byte config, `internal error: MemoryError`
+    path = tmp_path / "small.yaml"
+    path.write_text("extends: graph_only\n")
+    script = (
+        "import resource, sys\n"
+        "from g2s_core.input_files import read_text\n"
+        "size = int(next(l for l in open('/proc/self/status') if l.startswith('VmSize:')).split()[1]) * 1024\n"
+        "resource.setrlimit(resource.RLIMIT_AS, (size + 128 * 2**20, resource.getrlimit(resource.RLIMIT_AS)[1]))\n"
+        "print(read_text(sys.argv[1], 'config file'), end='')\n"
+    )
+    read = subprocess.run([sys.executable, "-c", script, str(path)], capture_output=True, text=True, timeout=60)
+    assert (read.returncode, read.stdout, read.stderr) == (0, "extends: graph_only\n", "")
