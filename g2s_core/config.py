@@ -116,9 +116,9 @@ RunConfig = create_model(
 # --- reading -----------------------------------------------------------------
 
 
+# values (mappings, lists, scalars) a YAML config may hold: 250,000 points of a `points:` list, 23 s of PyYAML and 0.8 GB
+# (500,000 points took 47 s of CPU and 1.5 GB)
 MAX_YAML_NODES = 1_000_000
-"""Values (mappings, lists, scalars) a YAML config may hold: 250,000 points of a ``points:`` list, 23 s of PyYAML and
-0.8 GB (500,000 points took 47 s of CPU, 1.5 GB)."""
 
 
 class _Loader(yaml.SafeLoader):
