@@ -193,3 +193,14 @@ def test_a_small_config_is_read_under_a_memory_limit_the_run_fits_in(tmp_path):
     )
     read = subprocess.run([sys.executable, "-c", script, str(path)], capture_output=True, text=True, timeout=60)
     assert (read.returncode, read.stdout, read.stderr) == (0, "extends: graph_only\n", "")
+
+
+@pytest.mark.parametrize("given, says", [("", "no evaluator given"), (" , ", "no evaluator given"),
+                                         ("traffic,traffic", "traffic is given twice")])
+def test_batch_evaluate_of_no_name_or_a_name_twice_is_refused(given, says, tmp_path, capsys):
+    # `--evaluate "$EVALUATORS"` with the variable unset ran the batch without evaluators (exit 0), as `-o ""` and
+    # `--format ""` are not; `traffic,traffic` was `map_piece: evaluators: two plugins write values named 'traffic';
+    # give one a 'key'`, of a config the user never wrote
+    outcome = run_g2s(capsys, "batch", "map_piece", CORRIDOR, "-o", tmp_path / "out", "--evaluate", given, "-q")
+    assert_clean_error(outcome, f"--evaluate: {says} (expected some of: traffic)")
+    assert tree(tmp_path / "out") == []
