@@ -46,7 +46,6 @@ def g2s_execute(
 ) -> Iterator[dict[str, Any]]:
     """Each item as a Dask task, yielded as it finishes; an item whose workers died running it is ``lost``, the others
     run (Dask tries it on another worker first: ``distributed.scheduler.allowed-failures``, 3 by default)."""
-    import dask
     from dask.distributed import Client, LocalCluster, as_completed
     from distributed.scheduler import KilledWorker
 
@@ -58,9 +57,7 @@ def g2s_execute(
             raise G2SError(f"--scheduler: expected the address of a running Dask scheduler (tcp://host:8786), got "
                            f"{params.scheduler!r}: {' '.join(str(exc).split())}") from exc
     else:
-        # a worker's one thread holds one pair at a time: at Dask's default saturation (1.1) it held two, and a pair
-        # whose worker died (killed for want of memory, a crash) took the one waiting beside it down as lost with it
-        with _children_ignore_interrupt(), dask.config.set({"distributed.scheduler.worker-saturation": 1.0}):
+        with _children_ignore_interrupt():
             # a pair's failure reaches g2s through its future; Dask's own ERROR lines (a worker's heartbeat to a
             # scheduler that Ctrl-C is closing, seen under load) would break the one-line "g2s: interrupted"
             cluster = LocalCluster(
