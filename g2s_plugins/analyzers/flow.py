@@ -54,7 +54,7 @@ from pydantic import Field
 
 from g2s_core.model import RunContext
 from g2s_core.plugin import PluginParams, hookimpl
-from g2s_plugins import traffic
+from g2s_plugins import cross_sections, traffic
 
 NAME = "flow"
 
@@ -72,6 +72,18 @@ class Params(PluginParams):
         traffic.WALKING_SCALING, description="a sampled source's pairs: none (each pair's whole weight on its path) or "
         "linear (weighted by how far along the path a node lies: no busy ring round each sampled source)"
     )
+    across: Literal["node", "section"] = Field(
+        "node", description="each polygon's flow: its own (node) or that of the way's cross-section through it "
+        "(section: the flow of the polygons side by side across the way summed, so the lanes of a gate line or an "
+        "escalator bank and the polygons across a wide slope read as one way; g2s_plugins.cross_sections)"
+    )
+    section_gap: float = Field(
+        2.5, gt=0, description="across: section: stretches of a section at most this far apart are one way (the "
+        "barriers between a gate's gaps with the agent's clearance round them), m"
+    )
+    section_reach: float = Field(
+        30.0, gt=0, description="across: section: a section reaches at most this far either side of a polygon, m"
+    )
     aggregate: Literal["mean", "sum", "percentile"] = Field(
         "mean", description="a structure node's value: mean (a density) or sum of the through-flow of the polygons it "
         "stands for, or the mean percentile rank (0-100) of their flow"
@@ -83,6 +95,10 @@ def g2s_analyze(structure: nx.Graph, params: Params, context: RunContext) -> Map
     """Through-flow of the initial graph, averaged, summed or ranked per structure node."""
     flow = traffic.walking_flow(context.graph, max_sources=params.max_sources, seed=params.seed, ties=params.ties,
                                 scaling=params.scaling)
+    if params.across == "section":
+        flow = cross_sections.walking_section_flow(
+            context.graph, flow, params.max_sources, params.seed, params.section_gap, params.section_reach,
+            context.agent.height)
     if params.aggregate == "percentile":
         return traffic.gather(context.graph, structure, traffic.percentile(flow), mean=True)
     total = traffic.origin_weight(traffic.surface_arrays(context.graph)).sum()

@@ -1,0 +1,91 @@
+"""Walking flow across a way's cross-section (g2s_plugins.cross_sections, the flow analyzer's ``across: section``)."""
+
+from __future__ import annotations
+
+import networkx as nx
+import numpy as np
+import pytest
+
+from g2s_core.config import AgentConfig
+from g2s_core.model import RunContext
+from g2s_plugins import cross_sections, traffic
+from g2s_plugins.analyzers import flow as flow_analyzer
+
+LANE_AREA = 1e-6
+"""The lane nodes' area: pairs with an end in a lane weigh next to nothing, so every trip across is a room's."""
+
+
+def two_rooms(lanes: list[float]) -> nx.Graph:
+    """Rooms of 3 x 3 samples (1 m apart, 1 m² each) at x = -3..-1 and x = 1..3, joined only by lane nodes at x = 0
+    and the plan z of ``lanes``, each linked to its three neighbours on either side (4 and 8 neighbours)."""
+    graph = nx.Graph()
+    room = [(x, z) for x in (-3, -2, -1, 1, 2, 3) for z in (0, 1, 2)]
+    for x, z in room:
+        graph.add_node((x, z), pos=(float(x), 0.0, float(z)), normal=(0.0, 1.0, 0.0), area=1.0)
+    for z in lanes:
+        graph.add_node((0, z), pos=(0.0, 0.0, float(z)), normal=(0.0, 1.0, 0.0), area=LANE_AREA)
+    for a in graph:
+        for b in graph:
+            length = float(np.hypot(a[0] - b[0], a[1] - b[1]))
+            if a < b and length < 1.5:
+                graph.add_edge(a, b, weight=length)
+    return graph
+
+
+def section(graph: nx.Graph) -> dict:
+    flow = traffic.walking_flow(graph)
+    values = cross_sections.walking_section_flow(graph, flow, None, 0, gap=2.5, reach=30.0, height=2.0)
+    return dict(zip(traffic.surface_arrays(graph).nodes, values)), dict(zip(traffic.surface_arrays(graph).nodes, flow))
+
+
+@pytest.mark.parametrize("lanes", [[0.0, 1.0], [0.0, 2.0]])  # one lane two samples wide; two lanes a sample apart
+def test_two_lanes_read_as_hot_as_one_of_double_width(lanes):
+    across, own = section(two_rooms(lanes))
+    trips = 2 * 9 * 9  # ordered pairs of the two rooms' samples, each of weight 1 x 1; every one crosses x = 0
+    for z in lanes:
+        assert across[(0, z)] == pytest.approx(trips, rel=1e-5)
+        assert own[(0, z)] < 0.9 * trips  # one lane alone carries a share of them
+    assert own[(0, lanes[0])] + own[(0, lanes[1])] == pytest.approx(trips, rel=1e-5)
+
+
+def test_lanes_further_apart_than_the_gap_are_ways_of_their_own():
+    graph = two_rooms([0.0, 2.0])
+    flow = traffic.walking_flow(graph)
+    values = cross_sections.walking_section_flow(graph, flow, None, 0, gap=0.5, reach=30.0, height=2.0)
+    rows = traffic.surface_arrays(graph).index
+    for z in (0.0, 2.0):
+        assert values[rows[(0, z)]] == pytest.approx(flow[rows[(0, z)]])
+
+
+def test_a_way_one_node_across_keeps_its_own_flow():
+    graph = nx.Graph()
+    for i in range(5):  # a corridor of five 1 m² samples along x
+        graph.add_node(i, pos=(float(i), 0.0, 0.0), normal=(0.0, 1.0, 0.0), area=1.0)
+    graph.add_edges_from(((i, i + 1, {"weight": 1.0}) for i in range(4)))
+    flow = traffic.walking_flow(graph)
+    values = cross_sections.walking_section_flow(graph, flow, None, 0, gap=2.5, reach=30.0, height=2.0)
+    assert values.tolist() == flow.tolist()
+    axes = cross_sections.flow_axes(traffic.surface_arrays(graph), np.array([[i, 0.0] for i in range(5)]), None)
+    assert np.allclose(np.abs(axes[1:4]), [[1.0, 0.0]] * 3)  # the trips run along x
+
+
+def test_a_floor_above_is_not_on_the_section():
+    graph = two_rooms([0.0, 2.0])
+    graph.nodes[(0, 2.0)]["pos"] = (0.0, 3.0, 2.0)  # the second lane 3 m up: another floor, over the height
+    flow = traffic.walking_flow(graph)
+    values = cross_sections.walking_section_flow(graph, flow, None, 0, gap=2.5, reach=30.0, height=2.0)
+    row = traffic.surface_arrays(graph).index[(0, 0.0)]
+    assert values[row] == pytest.approx(flow[row])
+
+
+def test_the_analyzer_sums_a_section_only_when_asked():
+    graph = two_rooms([0.0, 2.0])
+    context = RunContext(mesh=None, agent=AgentConfig(), centre=np.zeros(3), graph=graph)
+    structure = nx.Graph()
+    structure.add_nodes_from(graph)
+    plain = flow_analyzer.g2s_analyze(structure, flow_analyzer.Params(aggregate="sum"), context)
+    summed = flow_analyzer.g2s_analyze(structure, flow_analyzer.Params(aggregate="sum", across="section"), context)
+    assert summed[(0, 0.0)] == pytest.approx(summed[(0, 2.0)]) and summed[(0, 0.0)] > plain[(0, 0.0)]
+    assert summed[(0, 0.0)] == pytest.approx(2 * 9 * 9 / 18.0**2, rel=1e-5)  # a share of all pair weight
+    with pytest.raises(ValueError):
+        flow_analyzer.Params(across="lane")
