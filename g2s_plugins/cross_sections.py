@@ -11,7 +11,7 @@ corridor of one polygon across that carries fewer trips
 The flow across the section of node v sums the flow of the nodes the
 section crosses:
 
-1. **The way's axis at v** (:func:`flow_axes`): the principal axis, in plan,
+1. **The way's axis at v** (:func:`flow_tensors`, :func:`principal_axes`): the principal axis, in plan,
    of the walking trips through v. Each shortest-path tree of the walking
    flow's sources (the same sources, ``ties: first``) sends the pair weight
    ``a_s (A_w)`` (A_w: the weight of w's subtree, w included) along the edge
@@ -41,84 +41,132 @@ for q nodes within ``reach``.
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import networkx as nx
 import numpy as np
+import scipy.sparse as sp
 from scipy.spatial import cKDTree
 
 from g2s_plugins import traffic
 
-__all__ = ["flow_axes", "section_flow", "walking_section_flow"]
+__all__ = ["Trips", "principal_axes", "section_flow", "walking_section_flow", "walking_trips"]
 
 
-def flow_axes(arrays: traffic.SurfaceArrays, plan: np.ndarray, max_sources: int | None, seed: int = 0) -> np.ndarray:
-    """(n, 2) unit vectors in plan (x, z): the principal axis of the walking trips through each node.
+@dataclass(frozen=True)
+class Trips:
+    """Where the walking trips of a sample go, edge by edge (module docs, step 1).
+
+    Attributes:
+        ends: (m, 2) rows of each edge's two nodes (the edges some tree uses), the lower row first.
+        carried: (m,) the pair weight walking along each edge, both ways.
+        tensors: (n, 3) each node's orientation tensor of the trips along its edges, in plan: xx, xz, zz.
+    """
+
+    ends: np.ndarray
+    carried: np.ndarray
+    tensors: np.ndarray
+
+
+def walking_trips(arrays: traffic.SurfaceArrays, plan: np.ndarray, max_sources: int | None, seed: int = 0) -> Trips:
+    """The :class:`Trips` of the walking flow's sample (:func:`g2s_plugins.traffic.walking_sources`).
 
     Args:
         arrays: the surface graph.
         plan: (n, 2) each node's position in plan (x, z), m.
-        max_sources: the walking flow's sample (:func:`g2s_plugins.traffic.walking_sources`); ``None``: every node
-            with a weight is a source.
+        max_sources: the sample; ``None``: every node with a weight is a source.
         seed: its seed.
 
-    A node no trip passes gets the axis (1, 0). The trees are ``ties: first``'s whatever the flow's ties: the
-    axis only orients the section.
+    The trees are ``ties: first``'s (scipy's predecessor trees), whatever ties the flow takes. A vertical edge adds
+    its weight to no tensor (it has no direction in plan).
     """
     weight = traffic.origin_weight(arrays)
     sources, factor, _ = traffic.walking_sources(weight, max_sources, seed)
     n = arrays.n
-    tensor = np.zeros((3, n))  # xx, xz, zz
+    carried = sp.csr_array((n, n))
     block = max(1, traffic.BLOCK_ENTRIES // max(n, 1))
     for lo in range(0, len(sources), block):
         predecessors, through = traffic.shortest_path_flow(arrays.adjacency, sources[lo:lo + block], weight)
         rows, nodes = np.nonzero(predecessors >= 0)
-        before = predecessors[rows, nodes]
-        carried = factor[lo:lo + block][rows] * (through[rows, nodes] + weight[nodes])
-        step = plan[nodes] - plan[before]
-        length = np.hypot(step[:, 0], step[:, 1])
-        level = length > 0  # a vertical edge has no direction in plan
-        unit = step[level] / length[level, None]
-        carried, ends = carried[level], (nodes[level], before[level])
-        for k, term in enumerate((unit[:, 0] ** 2, unit[:, 0] * unit[:, 1], unit[:, 1] ** 2)):
-            for end in ends:
-                tensor[k] += np.bincount(end, weights=carried * term, minlength=n)
-    angle = 0.5 * np.arctan2(2.0 * tensor[1], tensor[0] - tensor[2])
+        before = predecessors[rows, nodes].astype(np.int64)
+        # the edge from a node's predecessor carries every pair whose target lies in the node's subtree
+        weights = factor[lo:lo + block][rows] * (through[rows, nodes] + weight[nodes])
+        carried = carried + sp.coo_array((weights, (np.minimum(before, nodes), np.maximum(before, nodes))),
+                                         shape=(n, n)).tocsr()
+    edges = sp.coo_array(carried)
+    ends, load = np.stack([edges.row, edges.col], axis=1).astype(np.int64), edges.data
+    step = plan[ends[:, 1]] - plan[ends[:, 0]]
+    length = np.hypot(step[:, 0], step[:, 1])
+    unit = np.divide(step, length[:, None], out=np.zeros_like(step), where=length[:, None] > 0)
+    tensors = np.zeros((n, 3))
+    for k, term in enumerate((unit[:, 0] ** 2, unit[:, 0] * unit[:, 1], unit[:, 1] ** 2)):
+        for end in ends.T:
+            tensors[:, k] += np.bincount(end, weights=load * term, minlength=n)
+    return Trips(ends, load, tensors)
+
+
+def principal_axes(tensors: np.ndarray) -> np.ndarray:
+    """(n, 2) unit vectors in plan (x, z): the principal eigenvector of each of the (n, 3) ``tensors`` (xx, xz, zz);
+    (1, 0) where a tensor is 0 or isotropic."""
+    angle = 0.5 * np.arctan2(2.0 * tensors[:, 1], tensors[:, 0] - tensors[:, 2])
     return np.stack([np.cos(angle), np.sin(angle)], axis=1)
 
 
-def section_flow(positions: np.ndarray, normals: np.ndarray, area: np.ndarray, flow: np.ndarray, axes: np.ndarray,
-                 gap: float, reach: float, height: float) -> np.ndarray:
-    """(n,) the flow across each node's section (module docs, step 2), in units of ``flow``.
+def section_flow(positions: np.ndarray, normals: np.ndarray, area: np.ndarray, trips: Trips, gap: float,
+                 reach: float, height: float) -> np.ndarray:
+    """(n,) the pair weight crossing each node's section (module docs, step 2).
 
     Args:
         positions: (n, 3) node positions, m (y up).
         normals: (n, 3) unit surface normals (y up), for each node's tangent plane.
-        area: (n,) node areas, m²; nodes of no area (portal nodes) add to no other node's section.
-        flow: (n,) the walking flow of each node.
-        axes: (n, 2) each node's way axis in plan (:func:`flow_axes`).
+        area: (n,) node areas, m²; nodes of no area (portal nodes) do not widen another node's section.
+        trips: the trips along the edges (:func:`walking_trips`).
         gap: stretches of the section at most this far apart are one run, m.
         reach: the section reaches at most this far either side of the node, m.
-        height: a node lies on the section within this height of the node's tangent plane, m.
+        height: a node or a crossing lies on the section within this height of the node's tangent plane, m.
+
+    A node on the line itself is taken on either side in turn and the two sums averaged: on a corridor one
+    node across, the mean of the trips into and out of the node.
     """
-    n = len(flow)
+    n = len(area)
     plan = positions[:, [0, 2]]
     half = np.sqrt(np.maximum(area, 0.0)) / 2.0
     counted = np.flatnonzero(area > 0)
-    result = np.asarray(flow, dtype=np.float64).copy()
-    if len(counted) == 0:
-        return result
-    tree = cKDTree(plan[counted])
+    axes = principal_axes(trips.tensors)
+    a, b = trips.ends[:, 0], trips.ends[:, 1]
+    middles = (plan[a] + plan[b]) / 2.0
+    half_length = np.hypot(*(plan[b] - plan[a]).T) / 2.0 if len(a) else np.zeros(0)
+    nodes_near = cKDTree(plan[counted]).query_ball_point(plan, reach + half.max()) if len(counted) else [[]] * n
+    edges_near = cKDTree(middles).query_ball_point(plan, reach + half_length.max()) if len(a) else [[]] * n
     slope = -normals[:, [0, 2]] / np.maximum(normals[:, [1]], 1e-6)  # dy per m along x and z on the tangent plane
-    for v, near in enumerate(tree.query_ball_point(plan, reach + half.max())):
-        near = counted[np.asarray(near, dtype=np.int64)]
+    result = np.zeros(n)
+    for v in range(n):
+        axis, side = axes[v], np.array([-axes[v, 1], axes[v, 0]])
+        near = counted[np.asarray(nodes_near[v], dtype=np.int64)]
         near = near[near != v]
         offset = plan[near] - plan[v]
-        across = offset @ np.array([-axes[v, 1], axes[v, 0]])
-        along = offset @ axes[v]
+        across, along = offset @ side, offset @ axis
         rise = positions[near, 1] - positions[v, 1] - offset @ slope[v]
         on = (np.abs(along) <= half[near]) & (np.abs(rise) <= height) & (np.abs(across) <= reach)
         near, across = near[on], across[on]
         run = _run_members(across - half[near], across + half[near], half[v], gap)
-        result[v] += flow[near[run]].sum()
+        low = min(-half[v], float((across - half[near])[run].min(initial=0.0)))
+        high = max(half[v], float((across + half[near])[run].max(initial=0.0)))
+        edges = np.asarray(edges_near[v], dtype=np.int64)
+        start, end = plan[a[edges]] - plan[v], plan[b[edges]] - plan[v]
+        s0, s1 = start @ axis, end @ axis
+        t = np.divide(s0, s0 - s1, out=np.zeros(len(edges)), where=s0 != s1)
+        at = start + t[:, None] * (end - start)
+        rise = positions[a[edges], 1] + t * (positions[b[edges], 1] - positions[a[edges], 1]) - positions[v, 1] - at @ slope[v]
+        # an edge crossing at a glancing angle is a step of a path along the section (centres staggered either
+        # side of it), not a trip across: only edges within 45 degrees of the axis count
+        steep = np.abs(s1 - s0) >= np.abs((end - start) @ side)
+        inside = (at @ side >= low) & (at @ side <= high) & (np.abs(rise) <= height) & steep
+        total = 0.0
+        for on_line_ahead in (True, False):  # a node on the line counted ahead of it, then behind it
+            ahead0, ahead1 = (s0 >= 0, s1 >= 0) if on_line_ahead else (s0 > 0, s1 > 0)
+            total += float(trips.carried[edges[(ahead0 != ahead1) & inside]].sum())
+        result[v] = total / 2.0
     return result
 
 
@@ -133,15 +181,16 @@ def _run_members(starts: np.ndarray, ends: np.ndarray, own: float, gap: float) -
     return run[:-1] == run[-1]
 
 
-def walking_section_flow(graph: nx.Graph, flow: np.ndarray, max_sources: int | None, seed: int, gap: float,
-                         reach: float, height: float) -> np.ndarray:
-    """(n,) :func:`section_flow` of ``graph``'s walking ``flow`` (:func:`g2s_plugins.traffic.walking_flow` order),
-    with the axes of the same sample (:func:`flow_axes`). Nodes without a ``normal`` are taken as flat."""
+def walking_section_flow(graph: nx.Graph, max_sources: int | None, seed: int, gap: float, reach: float,
+                         height: float) -> np.ndarray:
+    """(n,) :func:`section_flow` of ``graph`` (:func:`g2s_plugins.traffic.surface_arrays` order) for the walking
+    flow's sample (exact up to ``max_sources`` nodes with an area, as :func:`g2s_plugins.traffic.walking_flow`).
+    Nodes without a ``normal`` are taken as flat."""
     arrays = traffic.surface_arrays(graph)
     data = graph.nodes
     positions = np.array([data[node]["pos"] for node in arrays.nodes], dtype=np.float64).reshape(-1, 3)
     normals = np.array([data[node].get("normal", (0.0, 1.0, 0.0)) for node in arrays.nodes],
                        dtype=np.float64).reshape(-1, 3)
     exact = traffic.is_exact(arrays, max_sources)
-    axes = flow_axes(arrays, positions[:, [0, 2]], None if exact else max_sources, seed)
-    return section_flow(positions, normals, arrays.area, flow, axes, gap, reach, height)
+    trips = walking_trips(arrays, positions[:, [0, 2]], None if exact else max_sources, seed)
+    return section_flow(positions, normals, arrays.area, trips, gap, reach, height)

@@ -93,12 +93,12 @@ class Params(PluginParams):
 @hookimpl
 def g2s_analyze(structure: nx.Graph, params: Params, context: RunContext) -> Mapping[int, float]:
     """Through-flow of the initial graph, averaged, summed or ranked per structure node."""
-    flow = traffic.walking_flow(context.graph, max_sources=params.max_sources, seed=params.seed, ties=params.ties,
-                                scaling=params.scaling)
     if params.across == "section":
-        flow = cross_sections.walking_section_flow(
-            context.graph, flow, params.max_sources, params.seed, params.section_gap, params.section_reach,
-            context.agent.height)
+        flow = cross_sections.walking_section_flow(context.graph, params.max_sources, params.seed, params.section_gap,
+                                                   params.section_reach, context.agent.height)
+    else:
+        flow = traffic.walking_flow(context.graph, max_sources=params.max_sources, seed=params.seed, ties=params.ties,
+                                    scaling=params.scaling)
     if params.aggregate == "percentile":
         return traffic.gather(context.graph, structure, traffic.percentile(flow), mean=True)
     total = traffic.origin_weight(traffic.surface_arrays(context.graph)).sum()
