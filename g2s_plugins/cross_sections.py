@@ -49,8 +49,9 @@ import scipy.sparse as sp
 from scipy.spatial import cKDTree
 
 from g2s_plugins import traffic
+from g2s_plugins.recast import NavMesh
 
-__all__ = ["Trips", "principal_axes", "section_flow", "walking_section_flow", "walking_trips"]
+__all__ = ["Trips", "lane_flow", "principal_axes", "section_flow", "walking_lane_flow", "walking_section_flow", "walking_trips"]
 
 
 @dataclass(frozen=True)
@@ -170,6 +171,73 @@ def section_flow(positions: np.ndarray, normals: np.ndarray, area: np.ndarray, t
     return result
 
 
+def lane_flow(navmesh: NavMesh, positions: np.ndarray, flow: np.ndarray, trips: Trips, lane_width: float,
+              gap: float, reach: float, height: float) -> np.ndarray:
+    """(n,) each node's own walking flow plus the trips across the lanes side by side with its own (module docs,
+    ``across: lanes``), in units of ``flow``.
+
+    Args:
+        navmesh: the navmesh ``positions`` stand on (Detour's raycast finds where a lane's floor ends).
+        positions: (n, 3) node positions, m (y up).
+        flow: (n,) each node's walking flow.
+        trips: the trips along the edges (:func:`walking_trips`) of the same sample.
+        lane_width: a stretch of floor along the section narrower than this is a lane, m (walkable).
+        gap: lanes at most this far apart (wall to wall, walkable) are side by side, m.
+        reach: lanes are looked for at most this far either side of the node, m.
+        height: a crossing lies on the section within this height of the node, m.
+
+    A node whose own floor along its section is ``lane_width`` wide or wider keeps its own flow.
+    """
+    plan = positions[:, [0, 2]]
+    axes = principal_axes(trips.tensors)
+    a, b = trips.ends[:, 0], trips.ends[:, 1]
+    middles = (plan[a] + plan[b]) / 2.0
+    half_length = np.hypot(*(plan[b] - plan[a]).T) / 2.0 if len(a) else np.zeros(0)
+    edges_near = cKDTree(middles).query_ball_point(plan, reach + half_length.max()) if len(a) else [[]] * len(flow)
+    result = np.asarray(flow, dtype=np.float64).copy()
+    for v in range(len(flow)):
+        axis, side = axes[v], np.array([-axes[v, 1], axes[v, 0]])
+        across3 = np.array([side[0], 0.0, side[1]])
+        behind, ahead = _floor_either_side(navmesh, positions[v], across3, reach)
+        if behind + ahead >= lane_width:
+            continue
+        edges = np.asarray(edges_near[v], dtype=np.int64)
+        start, end = plan[a[edges]] - plan[v], plan[b[edges]] - plan[v]
+        s0, s1 = start @ axis, end @ axis
+        t = np.divide(s0, s0 - s1, out=np.zeros(len(edges)), where=s0 != s1)
+        at = start + t[:, None] * (end - start)
+        y = positions[a[edges], 1] + t * (positions[b[edges], 1] - positions[a[edges], 1])
+        steep = np.abs(s1 - s0) >= np.abs((end - start) @ side)  # a trip across, not a step along the section
+        keep = ((s0 >= 0) != (s1 >= 0)) & steep & (np.abs(y - positions[v, 1]) <= height)
+        edges, at, y = edges[keep], at[keep], y[keep]
+        for sign, edge_of_own in ((1.0, ahead), (-1.0, behind)):
+            out = sign * (at @ side)  # distance outward along the section
+            reached = edge_of_own
+            for nearest in np.argsort(out, kind="stable"):
+                if out[nearest] <= reached:
+                    continue
+                if out[nearest] > reach:
+                    break
+                point = np.array([plan[v, 0] + at[nearest, 0], y[nearest], plan[v, 1] + at[nearest, 1]])
+                back, forth = _floor_either_side(navmesh, point, sign * across3, reach)
+                if back + forth >= lane_width or out[nearest] - back - reached > gap:
+                    break  # a wide floor beside the lanes, or floor too far off: the way ends
+                lane = (out > out[nearest] - back) & (out <= out[nearest] + forth)
+                result[v] += float(trips.carried[edges[lane]].sum())
+                reached = out[nearest] + forth
+    return result
+
+
+def _floor_either_side(navmesh: NavMesh, point: np.ndarray, direction: np.ndarray, reach: float) -> tuple[float, float]:
+    """How far the floor under ``point`` (3,) runs against and along the plan unit vector ``direction`` (3,) before a
+    wall, each at most ``reach``, m (Detour's raycast; 0 when ``point`` stands on no polygon)."""
+    lengths = []
+    for sign in (-1.0, 1.0):
+        _, t = navmesh.raycast(point, point + sign * reach * direction)
+        lengths.append(reach * min(t, 1.0))
+    return lengths[0], lengths[1]
+
+
 def _run_members(starts: np.ndarray, ends: np.ndarray, own: float, gap: float) -> np.ndarray:
     """(k,) bool: which of k stretches ``[starts, ends]`` along a line lie in the run (stretches at most ``gap``
     apart joined) that holds the node's own stretch ``[-own, own]``. O(k log k)."""
@@ -194,3 +262,14 @@ def walking_section_flow(graph: nx.Graph, max_sources: int | None, seed: int, ga
     exact = traffic.is_exact(arrays, max_sources)
     trips = walking_trips(arrays, positions[:, [0, 2]], None if exact else max_sources, seed)
     return section_flow(positions, normals, arrays.area, trips, gap, reach, height)
+
+
+def walking_lane_flow(graph: nx.Graph, navmesh: NavMesh, flow: np.ndarray, max_sources: int | None, seed: int,
+                      lane_width: float, gap: float, reach: float, height: float) -> np.ndarray:
+    """(n,) :func:`lane_flow` of ``graph`` (a navmesh graph of ``navmesh``) and its walking ``flow``
+    (:func:`g2s_plugins.traffic.walking_flow`, the same sample)."""
+    arrays = traffic.surface_arrays(graph)
+    positions = np.array([graph.nodes[node]["pos"] for node in arrays.nodes], dtype=np.float64).reshape(-1, 3)
+    trips = walking_trips(arrays, positions[:, [0, 2]], None if traffic.is_exact(arrays, max_sources) else max_sources,
+                          seed)
+    return lane_flow(navmesh, positions, flow, trips, lane_width, gap, reach, height)

@@ -52,9 +52,11 @@ from typing import Literal
 import networkx as nx
 from pydantic import Field
 
+from g2s_core.errors import PluginError
 from g2s_core.model import RunContext
 from g2s_core.plugin import PluginParams, hookimpl
 from g2s_plugins import cross_sections, traffic
+from g2s_plugins.decomposition import DecompositionParams
 
 NAME = "flow"
 
@@ -72,17 +74,23 @@ class Params(PluginParams):
         traffic.WALKING_SCALING, description="a sampled source's pairs: none (each pair's whole weight on its path) or "
         "linear (weighted by how far along the path a node lies: no busy ring round each sampled source)"
     )
-    across: Literal["node", "section"] = Field(
-        "node", description="each polygon's flow: its own (node) or that of the way's cross-section through it "
-        "(section: the flow of the polygons side by side across the way summed, so the lanes of a gate line or an "
-        "escalator bank and the polygons across a wide slope read as one way; g2s_plugins.cross_sections)"
+    across: Literal["node", "section", "lanes"] = Field(
+        "node", description="each polygon's flow: its own (node); the trips across the way's cross-section through it "
+        "(section: the polygons side by side across the way summed, so the lanes of a gate line or an escalator bank "
+        "and the polygons across a wide slope read as one way); or its own plus the trips across the lanes side by "
+        "side with its own when it stands in a lane (lanes; the navmesh route only); g2s_plugins.cross_sections"
     )
     section_gap: float = Field(
-        2.5, gt=0, description="across: section: stretches of a section at most this far apart are one way (the "
-        "barriers between a gate's gaps with the agent's clearance round them), m"
+        2.5, gt=0, description="across: section or lanes: stretches of floor along a section at most this far apart "
+        "are one way (the barriers between a gate's gaps with the agent's clearance round them), m"
     )
     section_reach: float = Field(
-        30.0, gt=0, description="across: section: a section reaches at most this far either side of a polygon, m"
+        30.0, gt=0, description="across: section or lanes: a section reaches at most this far either side of a "
+        "polygon, m"
+    )
+    lane_width: float = Field(
+        DecompositionParams.model_fields["passage_width"].default, gt=0, description="across: lanes: floor narrower "
+        "than this along a section is a lane, in agent diameters (walkable; the regions' passage_width)"
     )
     aggregate: Literal["mean", "sum", "percentile"] = Field(
         "mean", description="a structure node's value: mean (a density) or sum of the through-flow of the polygons it "
@@ -99,6 +107,13 @@ def g2s_analyze(structure: nx.Graph, params: Params, context: RunContext) -> Map
     else:
         flow = traffic.walking_flow(context.graph, max_sources=params.max_sources, seed=params.seed, ties=params.ties,
                                     scaling=params.scaling)
+    if params.across == "lanes":
+        if context.navmesh is None:
+            raise PluginError("flow: across: lanes needs a navmesh (the navmesh graph builder); this run has none")
+        flow = cross_sections.walking_lane_flow(
+            context.graph, context.navmesh, flow, params.max_sources, params.seed,
+            params.lane_width * 2.0 * context.agent.radius, params.section_gap, params.section_reach,
+            context.agent.height)
     if params.aggregate == "percentile":
         return traffic.gather(context.graph, structure, traffic.percentile(flow), mean=True)
     total = traffic.origin_weight(traffic.surface_arrays(context.graph)).sum()
