@@ -101,19 +101,16 @@ class Params(PluginParams):
 @hookimpl
 def g2s_analyze(structure: nx.Graph, params: Params, context: RunContext) -> Mapping[int, float]:
     """Through-flow of the initial graph, averaged, summed or ranked per structure node."""
-    if params.across == "section":
-        flow = cross_sections.walking_section_flow(context.graph, params.max_sources, params.seed, params.section_gap,
-                                                   params.section_reach, context.agent.height)
-    else:
-        flow = traffic.walking_flow(context.graph, max_sources=params.max_sources, seed=params.seed, ties=params.ties,
-                                    scaling=params.scaling)
-    if params.across == "lanes":
-        if context.navmesh is None:
+    flow = traffic.walking_flow(context.graph, max_sources=params.max_sources, seed=params.seed, ties=params.ties,
+                                scaling=params.scaling)
+    if params.across != "node":
+        lanes = params.across == "lanes"
+        if lanes and context.navmesh is None:
             raise PluginError("flow: across: lanes needs a navmesh (the navmesh graph builder); this run has none")
-        flow = cross_sections.walking_lane_flow(
-            context.graph, context.navmesh, flow, params.max_sources, params.seed,
-            params.lane_width * 2.0 * context.agent.radius, params.section_gap, params.section_reach,
-            context.agent.height)
+        flow = cross_sections.walking_across(
+            context.graph, flow, params.max_sources, params.seed, params.section_gap, params.section_reach,
+            context.agent.height, context.navmesh if lanes else None,
+            params.lane_width * 2.0 * context.agent.radius if lanes else None)
     if params.aggregate == "percentile":
         return traffic.gather(context.graph, structure, traffic.percentile(flow), mean=True)
     total = traffic.origin_weight(traffic.surface_arrays(context.graph)).sum()
