@@ -5,11 +5,15 @@ from __future__ import annotations
 import networkx as nx
 import numpy as np
 import pytest
+import trimesh
 
 from g2s_core.config import AgentConfig
+from g2s_core.errors import PluginError
 from g2s_core.model import RunContext
 from g2s_plugins import cross_sections, traffic
 from g2s_plugins.analyzers import flow as flow_analyzer
+from g2s_plugins.graph_builders.navmesh import navmesh_graph
+from g2s_plugins.recast import build_navmesh
 
 LANE_AREA = 1e-6
 """The lane nodes' area: pairs with an end in a lane weigh next to nothing, so every trip across is a room's."""
@@ -91,3 +95,50 @@ def test_the_analyzer_sums_a_section_only_when_asked():
     assert summed[(0, 0.0)] == pytest.approx(2 * 9 * 9 / 18.0**2, rel=1e-5)  # a share of all pair weight
     with pytest.raises(ValueError):
         flow_analyzer.Params(across="lane")
+    with pytest.raises(PluginError, match="needs a navmesh"):  # a graph without one: exit 2, not a crash
+        flow_analyzer.g2s_analyze(structure, flow_analyzer.Params(across="lanes"), context)
+
+
+def rooms_through_a_thick_wall(gaps: list[tuple[float, float]]) -> trimesh.Trimesh:
+    """Two rooms 10 x 10 m (z 0-10) at x -12..-2 and 2..12, parted by a wall 4 m thick (x -2..2) with ``gaps`` (z
+    from, to), and walled round."""
+    boxes = [trimesh.creation.box(bounds=[[-12.0, -0.2, 0.0], [12.0, 0.0, 10.0]])]
+    edges = [0.0] + [z for gap in gaps for z in gap] + [10.0]
+    boxes += [trimesh.creation.box(bounds=[[-2.0, 0.0, z0], [2.0, 2.5, z1]]) for z0, z1 in zip(edges[::2], edges[1::2])
+              if z1 > z0]
+    boxes += [trimesh.creation.box(bounds=b) for b in ([[-12.3, 0.0, -0.3], [12.3, 2.5, 0.0]],
+                                                       [[-12.3, 0.0, 10.0], [12.3, 2.5, 10.3]],
+                                                       [[-12.3, 0.0, 0.0], [-12.0, 2.5, 10.0]],
+                                                       [[12.0, 0.0, 0.0], [12.3, 2.5, 10.0]])]
+    return trimesh.util.concatenate(boxes)
+
+
+def lane_values(gaps: list[tuple[float, float]]) -> tuple[np.ndarray, np.ndarray, np.ndarray, float]:
+    """The plain and the ``lanes`` walking flow of the level's navmesh graph, the nodes in the gaps, and the pair
+    weight of the trips between the rooms (ordered pairs of their polygons, by area)."""
+    agent = AgentConfig()
+    mesh = rooms_through_a_thick_wall(gaps)
+    navmesh = build_navmesh(mesh.vertices, mesh.faces, agent)
+    graph = navmesh_graph(navmesh)
+    arrays = traffic.surface_arrays(graph)
+    positions = np.array([graph.nodes[node]["pos"] for node in arrays.nodes])
+    flow = traffic.walking_flow(graph)
+    lanes = cross_sections.walking_across(graph, flow, None, 0, 2.5, 30.0, agent.height, navmesh, 1.4)
+    room = traffic.origin_weight(arrays)[np.abs(positions[:, 0]) > 2.0]
+    rooms = [room[positions[np.abs(positions[:, 0]) > 2.0, 0] < 0].sum(), room[positions[np.abs(positions[:, 0]) > 2.0, 0] > 0].sum()]
+    # the gaps' floor (not the wall's top or the floor shut inside it, which no trip reaches)
+    return flow, lanes, (np.abs(positions[:, 0]) < 2.0) & (flow > 0), 2.0 * rooms[0] * rooms[1]
+
+
+def test_two_lanes_of_a_navmesh_read_as_hot_as_one_of_double_width():
+    # one gap 2.2 m wide (1.2 m walkable: a lane), or two of 1.6 m (0.6 m walkable) 1 m apart (2 m with clearance)
+    wide_flow, wide, in_wide, wide_trips = lane_values([(4.0, 6.2)])
+    two_flow, two, in_two, two_trips = lane_values([(3.2, 4.8), (5.8, 7.4)])
+    assert in_wide.any() and in_two.sum() >= 2
+    # every trip between the rooms crosses the wall in one of the lanes; the lanes' nodes read all of them (and the
+    # few that start or end in the gaps)
+    assert wide[in_wide].min() == pytest.approx(wide_trips, rel=0.1)
+    assert two[in_two].min() == pytest.approx(two_trips, rel=0.1)
+    assert two[in_two].min() == pytest.approx(wide[in_wide].min(), rel=0.05)
+    assert two_flow[in_two].max() < 0.8 * two_trips  # each lane's own flow is a share of them
+    assert (two[~in_two] == two_flow[~in_two]).mean() > 0.5  # the rooms' wide floor keeps its own flow
