@@ -27,6 +27,13 @@ or linearly scaled (``linear``: a pair's weight on a node in proportion to
 how far along its path the node lies, so the nodes round each sampled
 source do not read busy; :mod:`g2s_plugins.traffic`, docs/analysis_quality.md,
 "The sampling preset's held-out misses").
+A polygon's flow is its own through-flow (``across: node``, the default),
+or the trips across a section of the way through it, each counted once
+whichever lane it takes (``across: section``: every polygon; ``across:
+lanes``: the polygons of a lane, the navmesh route only;
+:mod:`g2s_plugins.cross_sections`). Measured against the evaluation's
+reference (docs/analysis_quality.md, "Parallel lanes in the heat map"),
+neither is the presets' heat map: the reference ranks polygons.
 The ``min_heat_rho`` and ``max_traffic_step`` of the simplification, and a
 traffic-aware ``coverage``, read a walking flow of their own settings
 (``heat_sources``/``heat_ties``/``heat_scaling``,
