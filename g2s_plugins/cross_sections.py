@@ -116,7 +116,8 @@ def walking_trips(arrays: traffic.SurfaceArrays, plan: np.ndarray, max_sources: 
     n = arrays.n
     load = sp.csr_array((n, n))
     for _, _, before, nodes, carried in _tree_steps(arrays, sources, factor, weight):
-        load = load + sp.coo_array((carried, (np.minimum(before, nodes), np.maximum(before, nodes))), shape=(n, n)).tocsr()
+        pairs = (np.minimum(before, nodes), np.maximum(before, nodes))
+        load = load + sp.coo_array((carried, pairs), shape=(n, n)).tocsr()
     edges = sp.coo_array(load)
     ends = np.stack([edges.row, edges.col], axis=1).astype(np.int64)
     order = np.lexsort((ends[:, 1], ends[:, 0]))
@@ -160,7 +161,8 @@ class _Crossings:
         s0, s1 = start @ axis, end @ axis
         crosses = np.stack([(s0 >= 0) != (s1 >= 0), (s0 > 0) != (s1 > 0)], axis=1)
         cross = crosses.any(axis=1)
-        edges, start, end, s0, s1, crosses = edges[cross], start[cross], end[cross], s0[cross], s1[cross], crosses[cross]
+        edges, start, end, crosses = edges[cross], start[cross], end[cross], crosses[cross]
+        s0, s1 = s0[cross], s1[cross]
         t = s0 / (s0 - s1)
         at = start + t[:, None] * (end - start)
         y = self.positions[self.a[edges], 1] + t * (self.positions[self.b[edges], 1] - self.positions[self.a[edges], 1])
@@ -210,8 +212,8 @@ def section_edges(positions: np.ndarray, normals: np.ndarray, area: np.ndarray, 
 
 def lane_edges(navmesh: NavMesh, positions: np.ndarray, trips: Trips, lane_width: float, gap: float, reach: float,
                height: float) -> list[tuple[np.ndarray, np.ndarray] | None]:
-    """Per node, the edges of its lanes' section (``across: lanes``, module docs, step 2) and their (k, 2) signs; ``None``
-    for a node whose own floor along its section is ``lane_width`` or wider (it keeps its own flow).
+    """Per node, the edges of its lanes' section (``across: lanes``, module docs, step 2) and their (k, 2) signs;
+    ``None`` for a node whose own floor along its section is ``lane_width`` or wider (it keeps its own flow).
 
     Args:
         navmesh: the navmesh ``positions`` stand on.

@@ -440,7 +440,9 @@ def od_flow(
     return flow, sampled
 
 
-def walking_sources(weight: np.ndarray, max_sources: int | None, seed: int = 0) -> tuple[np.ndarray, np.ndarray, int | None]:
+def walking_sources(
+    weight: np.ndarray, max_sources: int | None, seed: int = 0,
+) -> tuple[np.ndarray, np.ndarray, int | None]:
     """The sources :func:`od_flow` walks from, for ``weight`` (n,) with some weight > 0.
 
     Returns:

@@ -70,8 +70,8 @@ def test_a_way_one_node_across_keeps_its_own_flow():
     values = cross_sections.walking_across(graph, traffic.walking_flow(graph), None, 0, gap=2.5, reach=30.0, height=2.0)
     # the mean of the trips into and out of each sample: its through-flow and its own 4 trips either way
     assert values.tolist() == (flow + 4.0).tolist()
-    axes = cross_sections.principal_axes(
-        cross_sections.walking_trips(traffic.surface_arrays(graph), np.array([[i, 0.0] for i in range(5)]), None).tensors)
+    trips = cross_sections.walking_trips(traffic.surface_arrays(graph), np.array([[i, 0.0] for i in range(5)]), None)
+    axes = cross_sections.principal_axes(trips.tensors)
     assert np.allclose(np.abs(axes[1:4]), [[1.0, 0.0]] * 3)  # the trips run along x
 
 
@@ -124,15 +124,15 @@ def lane_values(gaps: list[tuple[float, float]]) -> tuple[np.ndarray, np.ndarray
     positions = np.array([graph.nodes[node]["pos"] for node in arrays.nodes])
     flow = traffic.walking_flow(graph)
     lanes = cross_sections.walking_across(graph, flow, None, 0, 2.5, 30.0, agent.height, navmesh, 1.4)
-    room = traffic.origin_weight(arrays)[np.abs(positions[:, 0]) > 2.0]
-    rooms = [room[positions[np.abs(positions[:, 0]) > 2.0, 0] < 0].sum(), room[positions[np.abs(positions[:, 0]) > 2.0, 0] > 0].sum()]
+    area = traffic.origin_weight(arrays)
+    rooms = [area[positions[:, 0] < -2.0].sum(), area[positions[:, 0] > 2.0].sum()]
     # the gaps' floor (not the wall's top or the floor shut inside it, which no trip reaches)
     return flow, lanes, (np.abs(positions[:, 0]) < 2.0) & (flow > 0), 2.0 * rooms[0] * rooms[1]
 
 
 def test_two_lanes_of_a_navmesh_read_as_hot_as_one_of_double_width():
     # one gap 2.2 m wide (1.2 m walkable: a lane), or two of 1.6 m (0.6 m walkable) 1 m apart (2 m with clearance)
-    wide_flow, wide, in_wide, wide_trips = lane_values([(4.0, 6.2)])
+    _, wide, in_wide, wide_trips = lane_values([(4.0, 6.2)])
     two_flow, two, in_two, two_trips = lane_values([(3.2, 4.8), (5.8, 7.4)])
     assert in_wide.any() and in_two.sum() >= 2
     # every trip between the rooms crosses the wall in one of the lanes; the lanes' nodes read all of them (and the
