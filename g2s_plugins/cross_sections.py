@@ -58,6 +58,7 @@ product of the sources' edge loads with the sections' edges.
 
 from __future__ import annotations
 
+from collections.abc import Iterator
 from dataclasses import dataclass
 
 import networkx as nx
@@ -90,15 +91,17 @@ class Trips:
     tensors: np.ndarray
 
 
-def _tree_steps(arrays: traffic.SurfaceArrays, sources: np.ndarray, factor: np.ndarray, weight: np.ndarray):
-    """Per block of sources: (rows into the block, predecessor, node, pair weight along predecessor -> node)."""
+def _tree_steps(arrays: traffic.SurfaceArrays, sources: np.ndarray, factor: np.ndarray,
+                weight: np.ndarray) -> Iterator[tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]]:
+    """Per block of sources, per step of their trees: (source's row in the block, predecessor, node, the pair weight
+    walking from the predecessor to the node, with the source's factor)."""
     block = max(1, traffic.BLOCK_ENTRIES // max(arrays.n, 1))
     for lo in range(0, len(sources), block):
         predecessors, through = traffic.shortest_path_flow(arrays.adjacency, sources[lo:lo + block], weight)
         rows, nodes = np.nonzero(predecessors >= 0)
         before = predecessors[rows, nodes].astype(np.int64)
         # the edge into a node carries every pair whose target lies in the node's subtree
-        yield lo, rows, before, nodes, factor[lo:lo + block][rows] * (through[rows, nodes] + weight[nodes])
+        yield rows, before, nodes, factor[lo:lo + block][rows] * (through[rows, nodes] + weight[nodes])
 
 
 def walking_trips(arrays: traffic.SurfaceArrays, plan: np.ndarray, max_sources: int | None, seed: int = 0) -> Trips:
@@ -115,7 +118,7 @@ def walking_trips(arrays: traffic.SurfaceArrays, plan: np.ndarray, max_sources: 
     sources, factor, _ = traffic.walking_sources(weight, max_sources, seed)
     n = arrays.n
     load = sp.csr_array((n, n))
-    for _, _, before, nodes, carried in _tree_steps(arrays, sources, factor, weight):
+    for _, before, nodes, carried in _tree_steps(arrays, sources, factor, weight):
         pairs = (np.minimum(before, nodes), np.maximum(before, nodes))
         load = load + sp.coo_array((carried, pairs), shape=(n, n)).tocsr()
     edges = sp.coo_array(load)
@@ -271,8 +274,10 @@ def trips_across(arrays: traffic.SurfaceArrays, trips: Trips, sections: list[tup
     index = sp.csr_array((np.arange(1, m + 1), (trips.ends[:, 0], trips.ends[:, 1])), shape=(n, n))
     across = np.zeros(len(with_section))
     weight = traffic.origin_weight(arrays)
-    for _, block_rows, before, nodes, carried in _tree_steps(arrays, trips.sources, trips.factor, weight):
+    for block_rows, before, nodes, carried in _tree_steps(arrays, trips.sources, trips.factor, weight):
         edge = np.asarray(index[np.minimum(before, nodes), np.maximum(before, nodes)]).reshape(-1) - 1
+        used = edge >= 0  # a step that carries nothing may have left its edge out of the loads
+        block_rows, edge, before, nodes, carried = block_rows[used], edge[used], before[used], nodes[used], carried[used]
         forward = np.where(before < nodes, 1.0, -1.0)  # the tree walks the edge from ends[0] to ends[1]
         count = int(block_rows.max()) + 1 if len(block_rows) else 0
         steps = sp.csr_array((carried * forward, (block_rows, edge)), shape=(count, m))
