@@ -5,12 +5,15 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+import scipy.sparse as sp
 import trimesh
+from scipy.sparse import csgraph
 
 from g2s_core import pipeline
 from g2s_core.config import find_config, load_raw_config, parse_config
 from g2s_core.errors import ConfigError
 from g2s_core.registry import Registry
+from g2s_plugins.terminals import coverage
 
 
 @pytest.fixture(scope="module")
@@ -72,3 +75,36 @@ def test_recess_params_are_validated(registry):
         raw["terminals"]["params"][key] = value
         with pytest.raises(ConfigError, match=f"terminals.params.{key}: expected {expected}"):
             pipeline.plan(parse_config(raw), registry)
+
+
+def path_lengths(lengths: list[float]) -> sp.csr_array:
+    """(n, n) edge lengths of a path whose k-th edge joins nodes k and k + 1."""
+    n = len(lengths) + 1
+    rows, cols = np.arange(n - 1), np.arange(1, n)
+    return sp.csr_array((np.concatenate([lengths, lengths]), (np.concatenate([rows, cols]), np.concatenate([cols, rows]))),
+                        shape=(n, n))
+
+
+def test_rows_chain_entrances_within_reach_along_the_graph():
+    adjacency = path_lengths([2.0] * 9)  # nodes 0-9, 2 m apart
+    # 0 and 2 are 4 m apart, 2 and 3 2 m, 3 and 8 10 m; 3 is listed twice (two recesses open onto it)
+    labels = coverage.recess_row_labels(adjacency, np.array([0, 2, 3, 3, 8]), 4.0)
+    assert labels[0] == labels[1] == labels[2] == labels[3] != labels[4]
+    labels = coverage.recess_row_labels(adjacency, np.array([0, 2, 3, 3, 8]), 3.9)
+    assert len({labels[0], labels[1], labels[4]}) == 3 and labels[1] == labels[2] == labels[3]
+
+
+@pytest.mark.parametrize("seed", range(5))
+def test_rows_are_single_linkage_of_the_graph_distances(seed):
+    rng = np.random.default_rng(seed)
+    points = rng.uniform(0, 30, size=(120, 2))
+    pairs = np.array([(i, j) for i in range(120) for j in range(i + 1, 120) if np.hypot(*(points[i] - points[j])) < 4.5])
+    lengths = np.hypot(*(points[pairs[:, 0]] - points[pairs[:, 1]]).T)
+    adjacency = sp.csr_array((np.concatenate([lengths, lengths]), (np.concatenate([pairs[:, 0], pairs[:, 1]]),
+                                                                    np.concatenate([pairs[:, 1], pairs[:, 0]]))), shape=(120, 120))
+    entrances = np.sort(rng.choice(120, size=25, replace=False))
+    labels = coverage.recess_row_labels(adjacency, entrances, 6.0)
+    # by hand: every pair within 6 m along the graph joined, chained
+    distance = csgraph.dijkstra(adjacency, directed=False, indices=entrances)[:, entrances]
+    _, expected = csgraph.connected_components(sp.csr_array(distance <= 6.0), directed=False)
+    assert np.array_equal(labels[:, None] == labels[None, :], expected[:, None] == expected[None, :])
