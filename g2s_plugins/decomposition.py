@@ -242,6 +242,21 @@ the nearest other passage opening of the same region pair in clear widths: neigh
 shelf aisles 2.3-3.9, against 5.0 for two gaps of a pillared dungeon room turned 45 degrees, 5.4 and more on the
 aqueduct, 17 on the scaffold and 41-48 for the golf course's footbridges."""
 
+WAY_ROUND = 0.75
+"""An opening between two regions is a way round an obstacle, not a narrowing of a way, when closing it lengthens the
+walk from one of its sides to the other by at most this many times the regions' size: the larger region's longest
+extent, or the smaller's when either is walled in (:func:`_join_ways_round`). Measured (docs/plugins.md, "Ways round
+obstacles"): gaps between containers, enclosures, skate features and grave rows 0.1-0.7 of the larger extent once their
+pieces join; two fields parted by a wall with gaps 1.0 (the detour to the next gap over the larger field's extent), a
+room's two doors onto a corridor 0.5-1.2 but 1.5-3.0 of the room's own extent (walled in), the generated dungeons'
+doors and corridors: none joined at 0.75, some at 1.0."""
+
+WALLED_IN = 0.95
+"""A region at least this share of whose outline is wall (the small holes left out of the clearances not counted:
+pillars and posts stand in it) and which is no passage is walled in: a room behind its doors, whose openings are
+weighed against its own size (:func:`_join_ways_round`). Measured (docs/plugins.md, "Ways round obstacles"): the zoo's
+reptile house and aviary 0.98-0.99, rooms behind doors 0.97-0.99, pieces of open quay between containers 0.59-0.93."""
+
 EXTENT_DIRECTIONS = 8
 """Directions, evenly spread over 180 degrees, along which a region's longest extent is measured
 (:func:`longest_extents`: at least cos(90 / 8 degrees) = 98 % of its diameter)."""
@@ -461,6 +476,8 @@ class Clearances:
         holes: the small holes' boundary (wall pieces too: a piece less than half as wide as the doors beside it
             is a pier in one opening, :func:`_post_links`): their edges' start points, (H,3) m, and the hole of
             each, (H,) int64.
+        left_out: (B,) int64, for each boundary edge (:func:`boundary_edges` order) the small hole it bounds when
+            that hole is left out of the clearances (a pillar, a post: not a wall piece), -1 for the others.
     """
 
     polygons: np.ndarray
@@ -469,6 +486,7 @@ class Clearances:
     widest: np.ndarray
     open_walls: tuple[np.ndarray, np.ndarray]
     holes: tuple[np.ndarray, np.ndarray]
+    left_out: np.ndarray
 
 
 def portal_samples(ends: np.ndarray, spacing: float) -> tuple[np.ndarray, np.ndarray]:
@@ -517,6 +535,7 @@ def clearances(navmesh: Any, obstacle_area: float, wall_to_wall: float) -> Clear
         widest=points[widest],
         open_walls=(start[~obstacle], end[~obstacle]),
         holes=(start[hole >= 0], hole[hole >= 0]),
+        left_out=np.where(obstacle, hole, -1),
     )
 
 
@@ -938,6 +957,8 @@ def decompose(navmesh: Any, agent: Any, params: DecompositionParams, mesh: trime
     labels = join_side_strips(labels, pairs[blocked], 2.0 * clearance.portals_open[blocked], clearance.widest[blocked],
                               *mean_widths(navmesh, labels, areas), params.narrowness, params.min_separation)
     labels = _join_lanes(navmesh, labels, pairs, blocked, clearance, float(agent.radius), wall_to_wall, params)
+    labels = _join_ways_round(navmesh, labels, pairs, blocked, clearance, areas, float(agent.radius), wall_to_wall,
+                              params)
     count = int(labels.max()) + 1 if len(labels) else 0
     blocked &= labels[pairs[:, 0]] != labels[pairs[:, 1]]
 
@@ -1033,6 +1054,120 @@ def _join_lanes(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocked: np
         if not mouths.any():
             return labels
         labels = join_groups(labels, count, sides[mouths])
+
+
+@dataclass(frozen=True)
+class PolygonWalks:
+    """Walks on the navmesh's polygon graph: from a polygon's centre to a portal's middle to the next centre, m.
+
+    Attributes:
+        centres: (P, 3) polygon centres, m.
+        pairs: (E, 2) each portal's two polygons.
+        steps: (E,) the walk across each portal, centre to its middle to centre, m.
+        portals_of: CSR of polygon -> portal ids, ``(indptr (P+1,), portal ids (2E,))``.
+        near: a kd-tree of the centres.
+    """
+
+    centres: np.ndarray
+    pairs: np.ndarray
+    steps: np.ndarray
+    portals_of: tuple[np.ndarray, np.ndarray]
+    near: cKDTree
+
+    @classmethod
+    def of(cls, navmesh: Any, pairs: np.ndarray, endpoints: np.ndarray) -> PolygonWalks:
+        """The walks of ``navmesh`` (``pairs`` (E, 2) and ``endpoints`` (E, 2, 3): its portals)."""
+        centres = np.asarray(navmesh.centres, dtype=np.float64)
+        middle = endpoints.mean(axis=1)
+        steps = (np.linalg.norm(centres[pairs[:, 0]] - middle, axis=1)
+                 + np.linalg.norm(centres[pairs[:, 1]] - middle, axis=1))
+        owner = pairs.reshape(-1)
+        indptr = np.concatenate([[0], np.cumsum(np.bincount(owner, minlength=len(centres)))])
+        return cls(centres, pairs, steps, (indptr, np.argsort(owner, kind="stable") // 2), cKDTree(centres))
+
+    def round_within(self, portal: int, closed: np.ndarray, length: float) -> bool:
+        """Whether a walk of at most ``length`` m joins the two polygons of ``portal`` without crossing the portals
+        ``closed`` (ids). Only polygons within ``length`` of the first one's centre can lie on such a walk, so the
+        search (scipy Dijkstra, bounded by ``length``) runs on those: O(k log k) for k polygons near the portal."""
+        a, b = (int(p) for p in self.pairs[portal])
+        ball = np.asarray(self.near.query_ball_point(self.centres[a], length), dtype=np.int64)
+        if not np.isin(b, ball):
+            return False
+        indptr, ids = self.portals_of
+        touching = np.unique(np.concatenate([ids[indptr[p]:indptr[p + 1]] for p in ball]))
+        local = np.full(len(self.centres), -1, dtype=np.int64)
+        local[ball] = np.arange(len(ball))
+        ends = local[self.pairs[touching]]
+        open_ = (ends >= 0).all(axis=1) & ~np.isin(touching, closed)
+        graph = sparse.coo_array((self.steps[touching[open_]], (ends[open_, 0], ends[open_, 1])),
+                                 shape=(len(ball), len(ball)))
+        return bool(csgraph.dijkstra(graph, directed=False, indices=int(local[a]), limit=length)[local[b]] <= length)
+
+
+def _join_ways_round(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocked: np.ndarray, clearance: Clearances,
+                     areas: np.ndarray, radius: float, wall_to_wall: float, params: DecompositionParams) -> np.ndarray:
+    """(P,) the regions ``labels`` with the two regions of every way round an obstacle joined (step 3 of the module
+    doc), again on the joined regions until none is left.
+
+    Each opening between two regions (the candidates :func:`_chokepoints` would keep as one chokepoint: one
+    :func:`_openings` group, and those of its region pair within ``min_separation``) is closed, with every candidate
+    that ends on a small hole left out of the clearances that one of its candidates ends on (the cuts round a pillar
+    are one cut through it, as the split sees it), and the walk between its widest portal's two polygons is looked for
+    on the polygon graph (:class:`PolygonWalks`). When one of at most :data:`WAY_ROUND` times the regions' size is
+    there, the two regions join: the larger's longest extent is their size, or the smaller's when either is walled in
+    (:data:`WALLED_IN`: a room behind its doors).
+    """
+    ends = np.asarray(navmesh.portals().endpoints, dtype=np.float64)
+    walks = PolygonWalks.of(navmesh, pairs, ends)
+    owner, start, end = polygon_boundary_edges(navmesh)
+    wall = np.linalg.norm(end - start, axis=1) * (clearance.left_out < 0)
+    opening_length = np.linalg.norm(ends[:, 1] - ends[:, 0], axis=1)
+    passage = params.passage_width * 2.0 * radius
+    while True:
+        count = int(labels.max()) + 1 if len(labels) else 0
+        candidates = np.flatnonzero(blocked & (labels[pairs[:, 0]] != labels[pairs[:, 1]]))
+        if len(candidates) == 0:
+            return labels
+        sides = np.sort(labels[pairs[candidates]], axis=1)
+        cut = np.bincount(sides.reshape(-1), weights=np.repeat(opening_length[candidates], 2), minlength=count)
+        walls = np.bincount(labels[owner], weights=wall, minlength=count)
+        mean_width, extent = mean_widths(navmesh, labels, areas)
+        walled_in = (walls >= WALLED_IN * (walls + cut)) & (mean_width >= passage)
+        opening = _openings(candidates, sides, ends, 2.0 * clearance.portals, clearance.holes, wall_to_wall)
+        around = _round_posts(ends[candidates], start, clearance.left_out)
+        points = clearance.widest[candidates]
+        joins = []
+        for group in np.split(np.argsort(opening, kind="stable"),
+                              np.flatnonzero(np.diff(np.sort(opening, kind="stable"))) + 1):
+            a, b = sides[group[0]]
+            same = np.flatnonzero((sides == (a, b)).all(axis=1))
+            near = same[(np.linalg.norm(points[same][:, None] - points[group][None], axis=2)
+                         < params.min_separation).any(axis=1)]
+            closed = candidates[np.union1d(near, np.flatnonzero(np.isin(around, around[group])))]
+            widest = candidates[group[np.argmax(clearance.portals[candidates[group]])]]
+            size = min(extent[a], extent[b]) if walled_in[[a, b]].any() else max(extent[a], extent[b])
+            if walks.round_within(widest, closed, walks.steps[widest] + WAY_ROUND * size):
+                joins.append((a, b))
+        if not joins:
+            return labels
+        labels = join_groups(labels, count, np.array(joins))
+
+
+def _round_posts(ends: np.ndarray, start: np.ndarray, left_out: np.ndarray) -> np.ndarray:
+    """(C,) int64: candidates (their portals' end points ``ends`` (C, 2, 3)) equal when they end on the same small hole
+    left out of the clearances (``left_out`` (B,) of the boundary edges starting at ``start`` (B, 3),
+    :class:`Clearances`), directly or through others (scipy connected components)."""
+    posts = left_out >= 0
+    _, point = np.unique(_point_keys(np.concatenate([ends.reshape(-1, 3), start[posts]])), return_inverse=True)
+    point = point.reshape(-1)
+    hole_at = np.full(int(point.max()) + 1, -1, dtype=np.int64)
+    hole_at[point[2 * len(ends):]] = left_out[posts]
+    hole = hole_at[point[:2 * len(ends)]].reshape(-1, 2)
+    candidate, side = np.nonzero(hole >= 0)
+    n = len(ends)
+    size = n + (int(hole.max()) + 1 if len(candidate) else 0)
+    links = sparse.coo_array((np.ones(len(candidate)), (candidate, n + hole[candidate, side])), shape=(size, size))
+    return csgraph.connected_components(links, directed=False)[1][:n].astype(np.int64)
 
 
 def lane_mouths(sides: np.ndarray, points: np.ndarray, local: np.ndarray, passage: float, clear: np.ndarray,
