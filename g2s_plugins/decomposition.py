@@ -25,8 +25,12 @@ polygons and their shared edges (portals):
    between two openings (:func:`wall_pieces`: long for its width, its ends
    near other walls, its long sides not) counts as a wall, so that a front of
    doors is not one opening as wide as the front. ``width = 2 x clearance``
-   with every wall counted is the walkable width reported for a chokepoint
-   (add the agent's diameter for wall to wall).
+   with every wall counted is the walkable width reported for a chokepoint.
+   Two more widths of a cut are used below and kept apart by name: its
+   *span*, the walkable width and the agent's diameter (the opening the
+   eroded navmesh stands for), and its *clear width*, wall to wall in the
+   level: measured in the mesh (:class:`DoorWidths`) or estimated as the
+   span and a navmesh cell of rasterisation (``wall_to_wall``).
 2. Merge tree (watershed by clearance). Portals are taken widest first and
    join the groups of polygons on their two sides (union-find), except when
    both groups are already *rooms*: they hold at least ``min_region_area`` m²
@@ -61,8 +65,8 @@ polygons and their shared edges (portals):
    a pilaster narrows a corridor for a step and the corridor goes on as
    wide on both sides, so the two groups are one space (a ring or straight
    corridor cut at its pilasters). The local width of a side is twice the
-   largest clearance of that side's floor within :data:`PINCH_REACH` clear
-   widths of the cut (:func:`local_widths`, on a grid one navmesh cell
+   largest clearance of that side's floor within :data:`PINCH_REACH` spans
+   of the cut (:func:`local_widths`, on a grid one navmesh cell
    apart): there a pilaster's corridor has its full width again, while a
    corridor's mouth into a room is as narrow as the cut on the corridor's
    side and the room is wide on the other (the rooms at the corridor's ends
@@ -82,7 +86,7 @@ polygons and their shared edges (portals):
    project's own rule, set on the held-out level kinds (docs/plugins.md,
    "Level kinds it was not tuned on").
    Lanes side by side (:func:`lane_mouths`, last): a candidate whose floor on one side, within
-   :data:`PINCH_REACH` clear widths of it, is narrower than ``passage_width`` agent diameters opens a passage;
+   :data:`PINCH_REACH` spans of it, is narrower than ``passage_width`` agent diameters opens a passage;
    when another candidate of the same two regions opening a passage lies beside it (at least
    ``min_separation`` and at most :data:`LANE_PITCH` clear widths away), both are mouths of lanes side by
    side (grave rows, shelving, queue rails) and the two regions join, again on the joined regions until no
@@ -180,8 +184,9 @@ few agents abreast, however long a hall is (measured: the corridors of the sampl
 docs/plugins.md, "Pinches")."""
 
 PINCH_REACH = 1.5
-"""A side's local width near a cut is measured within this many times the cut's clear width (wall to wall) of it
-(:func:`local_widths`): past a pilaster a corridor is as wide as before within about one clear width, while a room
+"""A side's local width near a cut is measured within this many times the cut's span (its walkable width and the
+agent's diameter) of it (:func:`local_widths`): past a pilaster a corridor is as wide as before within about one span,
+while a room
 beyond a corridor's mouth shows its width only further in. Measured on the generated dungeons and samples against
 1.0 and 2.0 (docs/plugins.md, "Pinches")."""
 
@@ -235,8 +240,8 @@ hospital rooms behind their beds 1.0; prison cells 0.10-0.80, rooms of 2-4 m beh
 hallway 1.6 m wide behind a 1.5 m door 0.94."""
 
 LANE_PITCH = 4.0
-"""Two passage openings of one region pair at most this many clear widths apart (the wider of the two; at least
-``min_separation``) are lanes side by side (:func:`lane_mouths`). Measured (docs/plugins.md, "Lanes side by side"),
+"""Two passage openings of one region pair at most this many clear widths apart (the wider of the two, estimated:
+walkable width, agent's diameter and a navmesh cell; at least ``min_separation``) are lanes side by side (:func:`lane_mouths`). Measured (docs/plugins.md, "Lanes side by side"),
 the nearest other passage opening of the same region pair in clear widths: neighbouring lanes of the cemetery 2.1
 (10th percentile; a lane every 3.6 m, mouths 0.2-0.5 m walkable), the warehouse's racking aisles 2.3, the library's
 shelf aisles 2.3-3.9, against 5.0 for two gaps of a pillared dungeon room turned 45 degrees, 5.4 and more on the
@@ -957,8 +962,7 @@ def decompose(navmesh: Any, agent: Any, params: DecompositionParams, mesh: trime
     labels = join_side_strips(labels, pairs[blocked], 2.0 * clearance.portals_open[blocked], clearance.widest[blocked],
                               *mean_widths(navmesh, labels, areas), params.narrowness, params.min_separation)
     labels = _join_lanes(navmesh, labels, pairs, blocked, clearance, float(agent.radius), wall_to_wall, params)
-    labels = _join_ways_round(navmesh, labels, pairs, blocked, clearance, areas, float(agent.radius), wall_to_wall,
-                              params)
+    labels = _join_ways_round(navmesh, labels, pairs, blocked, clearance, areas, agent, wall_to_wall, params)
     count = int(labels.max()) + 1 if len(labels) else 0
     blocked &= labels[pairs[:, 0]] != labels[pairs[:, 1]]
 
@@ -1025,7 +1029,7 @@ def _join_pinches(navmesh: Any, labels: np.ndarray, count: int, pairs: np.ndarra
     between = (sides[:, 0] != sides[:, 1]) & corridor_like[sides].all(axis=1)
     candidates, sides = candidates[between], sides[between]
     cut = 2.0 * clearance.portals_open[candidates]
-    reach = PINCH_REACH * (cut + 2.0 * radius)  # the cut's clear width is its walkable width and the agent's
+    reach = PINCH_REACH * (cut + 2.0 * radius)  # the cut's span: its walkable width and the agent's diameter
     local = local_widths(navmesh, labels, clearance.widest[candidates], sides, reach, clearance.open_walls)
     return join_groups(labels, count, sides[pinches(cut, local, params.pinch, params.narrowness)])
 
@@ -1049,7 +1053,8 @@ def _join_lanes(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocked: np
         if len(candidates) < 2:
             return labels
         cut = 2.0 * clearance.portals_open[candidates]
-        local = local_widths(navmesh, labels, points, sides, PINCH_REACH * (cut + 2.0 * radius), clearance.open_walls)
+        span = cut + 2.0 * radius  # walkable width and the agent's diameter; a navmesh cell more is the clear width
+        local = local_widths(navmesh, labels, points, sides, PINCH_REACH * span, clearance.open_walls)
         mouths = lane_mouths(sides, points, local, passage, cut + wall_to_wall, params.min_separation)
         if not mouths.any():
             return labels
@@ -1105,7 +1110,7 @@ class PolygonWalks:
 
 
 def _join_ways_round(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocked: np.ndarray, clearance: Clearances,
-                     areas: np.ndarray, radius: float, wall_to_wall: float, params: DecompositionParams) -> np.ndarray:
+                     areas: np.ndarray, agent: Any, wall_to_wall: float, params: DecompositionParams) -> np.ndarray:
     """(P,) the regions ``labels`` with the two regions of every way round an obstacle joined (step 3 of the module
     doc), again on the joined regions until none is left.
 
@@ -1122,7 +1127,9 @@ def _join_ways_round(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocke
     owner, start, end = polygon_boundary_edges(navmesh)
     wall = np.linalg.norm(end - start, axis=1) * (clearance.left_out < 0)
     opening_length = np.linalg.norm(ends[:, 1] - ends[:, 0], axis=1)
-    passage = params.passage_width * 2.0 * radius
+    passage = params.passage_width * 2.0 * float(agent.radius)
+    heights = walks.centres[:, 1]
+    band = floor_bands(heights, navmesh.normals, areas, 0.5 * float(agent.height))
     while True:
         count = int(labels.max()) + 1 if len(labels) else 0
         candidates = np.flatnonzero(blocked & (labels[pairs[:, 0]] != labels[pairs[:, 1]]))
@@ -1133,13 +1140,18 @@ def _join_ways_round(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocke
         walls = np.bincount(labels[owner], weights=wall, minlength=count)
         mean_width, extent = mean_widths(navmesh, labels, areas)
         walled_in = (walls >= WALLED_IN * (walls + cut)) & (mean_width >= passage)
+        region_area = np.bincount(labels, weights=areas, minlength=count)
+        mean_height = np.bincount(labels, weights=areas * heights, minlength=count) / np.maximum(region_area, 1e-12)
+        floor = _region_floors(labels, count, band, areas, heights, mean_height)
         opening = _openings(candidates, sides, ends, 2.0 * clearance.portals, clearance.holes, wall_to_wall)
-        around = _round_posts(ends[candidates], start, clearance.left_out)
+        around = _joined_by(_holes_at(ends[candidates].reshape(-1, 3), start, clearance.left_out).reshape(-1, 2))
         points = clearance.widest[candidates]
         joins = []
         for group in np.split(np.argsort(opening, kind="stable"),
                               np.flatnonzero(np.diff(np.sort(opening, kind="stable"))) + 1):
             a, b = sides[group[0]]
+            if floor[a] != floor[b]:
+                continue
             same = np.flatnonzero((sides == (a, b)).all(axis=1))
             near = same[(np.linalg.norm(points[same][:, None] - points[group][None], axis=2)
                          < params.min_separation).any(axis=1)]
@@ -1153,18 +1165,22 @@ def _join_ways_round(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocke
         labels = join_groups(labels, count, np.array(joins))
 
 
-def _round_posts(ends: np.ndarray, start: np.ndarray, left_out: np.ndarray) -> np.ndarray:
-    """(C,) int64: candidates (their portals' end points ``ends`` (C, 2, 3)) equal when they end on the same small hole
-    left out of the clearances (``left_out`` (B,) of the boundary edges starting at ``start`` (B, 3),
-    :class:`Clearances`), directly or through others (scipy connected components)."""
-    posts = left_out >= 0
-    _, point = np.unique(_point_keys(np.concatenate([ends.reshape(-1, 3), start[posts]])), return_inverse=True)
+def _holes_at(points: np.ndarray, start: np.ndarray, hole: np.ndarray) -> np.ndarray:
+    """(N,) int64: the hole of ``hole`` (B,) (-1: none) whose boundary has a corner at each of ``points`` (N, 3) (equal
+    to 1 cm; the boundary edges start at ``start`` (B, 3)), -1 for points on none."""
+    on = hole >= 0
+    _, point = np.unique(_point_keys(np.concatenate([points, start[on]])), return_inverse=True)
     point = point.reshape(-1)
-    hole_at = np.full(int(point.max()) + 1, -1, dtype=np.int64)
-    hole_at[point[2 * len(ends):]] = left_out[posts]
-    hole = hole_at[point[:2 * len(ends)]].reshape(-1, 2)
+    hole_at = np.full(int(point.max()) + 1 if len(point) else 0, -1, dtype=np.int64)
+    hole_at[point[len(points):]] = hole[on]
+    return hole_at[point[:len(points)]]
+
+
+def _joined_by(hole: np.ndarray) -> np.ndarray:
+    """(C,) int64: candidates equal when they end on the same hole (``hole`` (C, 2): the hole at each end, -1: none),
+    directly or through others (scipy connected components)."""
     candidate, side = np.nonzero(hole >= 0)
-    n = len(ends)
+    n = len(hole)
     size = n + (int(hole.max()) + 1 if len(candidate) else 0)
     links = sparse.coo_array((np.ones(len(candidate)), (candidate, n + hole[candidate, side])), shape=(size, size))
     return csgraph.connected_components(links, directed=False)[1][:n].astype(np.int64)
@@ -1186,7 +1202,8 @@ def lane_mouths(sides: np.ndarray, points: np.ndarray, local: np.ndarray, passag
         points: (C, 3) each candidate's widest point, m.
         local: (C, 2) the walkable width of each side's floor near the candidate (:func:`local_widths`), m.
         passage: a side narrower than this walkable width near a candidate is a passage, m.
-        clear: (C,) each candidate's clear width (walkable width, the agent's diameter and a navmesh cell), m.
+        clear: (C,) each candidate's clear width (estimated: walkable width, the agent's diameter and a navmesh
+            cell), m.
         separation: candidates closer than this are one opening (``min_separation``), m.
     """
     mouth = np.zeros(len(sides), dtype=bool)
