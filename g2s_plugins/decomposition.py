@@ -85,7 +85,7 @@ polygons and their shared edges (portals):
    room and its corridor, measured as one group, are narrow on average). The
    project's own rule, set on the held-out level kinds (docs/plugins.md,
    "Level kinds it was not tuned on").
-   Lanes side by side (:func:`lane_mouths`, last): a candidate whose floor on one side, within
+   Lanes side by side (:func:`lane_mouths`): a candidate whose floor on one side, within
    :data:`PINCH_REACH` spans of it, is narrower than ``passage_width`` agent diameters opens a passage;
    when another candidate of the same two regions opening a passage lies beside it (at least
    ``min_separation`` and at most :data:`LANE_PITCH` clear widths away), both are mouths of lanes side by
@@ -93,8 +93,20 @@ polygons and their shared edges (portals):
    such pair is left. Two doors off a corridor open no passage (the corridor and the room are wide behind
    them); passages far apart (footbridges, gates) are ways of their own. The project's own rule, set on the
    eleventh round's cemetery and library (docs/plugins.md, "Lanes side by side").
+   Ways round obstacles (:func:`_join_ways_round`, last): each opening between two regions on one floor is
+   closed (with the cuts on the far side of a pillar or post it ends on: small holes the split leaves out) and
+   the shortest walk between its two sides is looked for on the polygon graph (:class:`PolygonWalks`: centre,
+   portal middle, centre; Dijkstra). When one of at most :data:`WAY_ROUND` times the regions' size is there, the
+   opening is a way round something standing in open floor (a container on a quay, an enclosure among paths, a
+   feature on a plaza), not a narrowing of a way, and the two regions join, again on the joined regions until no
+   such opening is left. Size is the larger region's longest extent, or the smaller's when either is walled in
+   (:data:`WALLED_IN` of its outline wall, and no passage: a house with a door at each end keeps both). Doors
+   of rooms in a loop, a wall's gaps between two fields and a room's two doors onto a corridor cost walks of one
+   to several regions' sizes. The project's own rule, set on the thirteenth round's kinds (docs/plugins.md,
+   "Ways round obstacles").
 4. Regions are the groups left (``scipy.sparse.csgraph.connected_components``
-   of the merged portals, joined passages, pinches, side strips and lanes), numbered by their lowest polygon id.
+   of the merged portals, joined passages, pinches, side strips, lanes and ways round), numbered by their lowest
+   polygon id.
    Candidates between the same two regions that are chained end to end (one opening:
    Recast's region contours may bend across a wide gap), that end on the same
    small hole less than half as wide between them, wall to wall, as the narrower
@@ -125,7 +137,8 @@ C candidates between corridor-like groups, Q grid points within a cut's reach
 (hundreds) and M polygons near it; side strips O(V + C log C) (extents, then
 sorting the candidates' region pairs); lanes O(R (C' (Q M + Q log B) + sum of k^2)) for R rounds (joins; 1-4
 measured), C' candidates of region pairs with openings at least ``min_separation`` apart and k passage openings
-per pair; openings O(C log C + sum of k^2) for k candidate ends on each small
+per pair; ways round O(R' (V + O K log K)) for R' rounds (1-4 measured), O openings and K polygons within the
+walk's length of an opening (few in rooms, up to a region in open ground); openings O(C log C + sum of k^2) for k candidate ends on each small
 hole; small rooms O(k) per look at a group under ``min_region_area`` (k: its polygons and their portals, few), and
 O(k) rays for the groups walled in but for one opening (:class:`DoorWidths`, each polygon and portal cast once);
 wall pieces O(B) and O(B) more per elongated small hole (few: pillars are compact); the merge tree sorts the
@@ -251,16 +264,17 @@ WAY_ROUND = 0.75
 """An opening between two regions is a way round an obstacle, not a narrowing of a way, when closing it lengthens the
 walk from one of its sides to the other by at most this many times the regions' size: the larger region's longest
 extent, or the smaller's when either is walled in (:func:`_join_ways_round`). Measured (docs/plugins.md, "Ways round
-obstacles"): gaps between containers, enclosures, skate features and grave rows 0.1-0.7 of the larger extent once their
-pieces join; two fields parted by a wall with gaps 1.0 (the detour to the next gap over the larger field's extent), a
-room's two doors onto a corridor 0.5-1.2 but 1.5-3.0 of the room's own extent (walled in), the generated dungeons'
-doors and corridors: none joined at 0.75, some at 1.0."""
+obstacles"; before any join, over the larger extent): the cuts across open floor of the skate park, cemetery,
+interchange and zoo 0.30-0.76 at the median, the dry dock's 1.00 (its quay cut into pieces as small as the walk
+round a container: they join once their neighbours have); two fields parted by a wall with three gaps 0.99-2.18, a
+room's two doors onto a corridor 0.48-1.00 (1.49-3.00 of the room's own extent, walled in), a loop of four rooms
+2.49, the generated dungeons' doors 2.2 and more. 1.0 joins rooms of the 120-room dungeons turned 45 degrees."""
 
 WALLED_IN = 0.95
 """A region at least this share of whose outline is wall (the small holes left out of the clearances not counted:
 pillars and posts stand in it) and which is no passage is walled in: a room behind its doors, whose openings are
 weighed against its own size (:func:`_join_ways_round`). Measured (docs/plugins.md, "Ways round obstacles"): the zoo's
-reptile house and aviary 0.98-0.99, rooms behind doors 0.97-0.99, pieces of open quay between containers 0.59-0.93."""
+reptile house, aviary and cafe 0.97-0.99, pieces of the dry dock's quays between containers and stacks 0.59-0.93."""
 
 EXTENT_DIRECTIONS = 8
 """Directions, evenly spread over 180 degrees, along which a region's longest extent is measured
@@ -1099,7 +1113,8 @@ class PolygonWalks:
         if not np.isin(b, ball):
             return False
         indptr, ids = self.portals_of
-        touching = np.unique(np.concatenate([ids[indptr[p]:indptr[p + 1]] for p in ball]))
+        counts = indptr[ball + 1] - indptr[ball]
+        touching = np.unique(ids[np.repeat(indptr[ball] - np.cumsum(counts) + counts, counts) + np.arange(counts.sum())])
         local = np.full(len(self.centres), -1, dtype=np.int64)
         local[ball] = np.arange(len(ball))
         ends = local[self.pairs[touching]]
@@ -1146,13 +1161,16 @@ def _join_ways_round(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocke
         opening = _openings(candidates, sides, ends, 2.0 * clearance.portals, clearance.holes, wall_to_wall)
         around = _joined_by(_holes_at(ends[candidates].reshape(-1, 3), start, clearance.left_out).reshape(-1, 2))
         points = clearance.widest[candidates]
+        _, pair = np.unique(sides, axis=0, return_inverse=True)
+        pair = pair.reshape(-1)
+        of_pair = np.split(np.argsort(pair, kind="stable"), np.flatnonzero(np.diff(np.sort(pair))) + 1)
         joins = []
         for group in np.split(np.argsort(opening, kind="stable"),
                               np.flatnonzero(np.diff(np.sort(opening, kind="stable"))) + 1):
             a, b = sides[group[0]]
             if floor[a] != floor[b]:
                 continue
-            same = np.flatnonzero((sides == (a, b)).all(axis=1))
+            same = of_pair[pair[group[0]]]
             near = same[(np.linalg.norm(points[same][:, None] - points[group][None], axis=2)
                          < params.min_separation).any(axis=1)]
             closed = candidates[np.union1d(near, np.flatnonzero(np.isin(around, around[group])))]
