@@ -990,7 +990,7 @@ def decompose(navmesh: Any, agent: Any, params: DecompositionParams, mesh: trime
     np.minimum.at(low, labels, centres[:, 1])
     np.maximum.at(high, labels, centres[:, 1])
     band = floor_bands(centres[:, 1], navmesh.normals, areas, 0.5 * float(agent.height))
-    floor = _region_floors(labels, count, band, areas, centres[:, 1], centroid[:, 1])
+    floor = _region_floors(labels, count, band, areas, centres[:, 1])
     members = np.split(np.argsort(labels, kind="stable"), np.cumsum(np.bincount(labels, minlength=count))[:-1])
     regions = [
         {"id": r, "area": float(region_area[r]), "polygons": members[r].tolist(), "centroid": centroid[r].tolist(),
@@ -1155,9 +1155,7 @@ def _join_ways_round(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocke
         walls = np.bincount(labels[owner], weights=wall, minlength=count)
         mean_width, extent = mean_widths(navmesh, labels, areas)
         walled_in = (walls >= WALLED_IN * (walls + cut)) & (mean_width >= passage)
-        region_area = np.bincount(labels, weights=areas, minlength=count)
-        mean_height = np.bincount(labels, weights=areas * heights, minlength=count) / np.maximum(region_area, 1e-12)
-        floor = _region_floors(labels, count, band, areas, heights, mean_height)
+        floor = _region_floors(labels, count, band, areas, heights)
         opening = _openings(candidates, sides, ends, 2.0 * clearance.portals, clearance.holes, wall_to_wall)
         around = _joined_by(_holes_at(ends[candidates].reshape(-1, 3), start, clearance.left_out).reshape(-1, 2))
         points = clearance.widest[candidates]
@@ -1241,7 +1239,12 @@ def lane_mouths(sides: np.ndarray, points: np.ndarray, local: np.ndarray, passag
 
 
 def _region_floors(labels: np.ndarray, count: int, band: np.ndarray, areas: np.ndarray,
-                   heights: np.ndarray, mean_height: np.ndarray) -> np.ndarray:
+                   heights: np.ndarray) -> np.ndarray:
+    """(count,) int64: the floor of each region of ``labels`` (P,): the height band (``band`` (P,), -1 for sloped
+    polygons) holding most of its flat area (``areas`` (P,), m²), else the band nearest its mean height (``heights``
+    (P,), m, area-weighted; 0 for a region of no area)."""
+    mean_height = np.bincount(labels, weights=areas * heights, minlength=count) / np.maximum(
+        np.bincount(labels, weights=areas, minlength=count), 1e-12)
     bands = int(band.max()) + 1 if (band >= 0).any() else 0
     if bands == 0:
         return np.zeros(count, dtype=np.int64)
