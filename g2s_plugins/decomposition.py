@@ -268,7 +268,7 @@ obstacles"; before any join, over the larger extent): the cuts across open floor
 interchange and zoo 0.30-0.76 at the median, the dry dock's 1.00 (its quay cut into pieces as small as the walk
 round a container: they join once their neighbours have); two fields parted by a wall with three gaps 0.99-2.18, a
 room's two doors onto a corridor 0.48-1.00 (1.49-3.00 of the room's own extent, walled in), a loop of four rooms
-2.49, the generated dungeons' doors 2.2 and more. 1.0 joins rooms of the 120-room dungeons turned 45 degrees."""
+2.49, the generated dungeons' doors 2.2 and more. At 1.0 the two fields join, at every yaw."""
 
 WALLED_IN = 0.95
 """A region at least this share of whose outline is wall (the small holes left out of the clearances not counted:
