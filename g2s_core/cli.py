@@ -23,6 +23,7 @@ from pathlib import Path
 from typing import Any, NoReturn
 
 from rich.console import Console
+from rich.markup import escape
 from rich.table import Table
 
 from g2s_core import version
@@ -354,7 +355,7 @@ def _plugins(args: argparse.Namespace) -> int:
     console.print("\n".join(lines), markup=False, highlight=False, soft_wrap=True)
     for broken in registry.broken:
         if args.stage is None or broken.entry_point.split(".")[0] == args.stage:
-            console.print(f"[bold red]broken[/bold red] {broken.entry_point}  ({broken.package})")
+            console.print(f"[bold red]broken[/bold red] {escape(f'{broken.entry_point}  ({broken.package})')}")  # '[/x]' in them
             console.print(f"  {broken.target} failed to load: {broken.reason}", markup=False, highlight=False)
     return 0
 

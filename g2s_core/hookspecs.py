@@ -153,14 +153,19 @@ def g2s_generate_level(params: PluginParams) -> trimesh.Trimesh:
 
 
 @hookspec(firstresult=True)
-def g2s_execute(function: Callable[[Any], dict[str, Any]], items: Sequence[Any], params: PluginParams) -> Iterator[dict[str, Any]]:
+def g2s_execute(function: Callable[[Any], dict[str, Any]], items: Sequence[Any], params: PluginParams,
+                lost: Callable[[Any, str], dict[str, Any]]) -> Iterator[dict[str, Any]]:
     """Executor: ``function(item)`` for every item of a batch, yielded as each finishes (any order).
 
     ``function`` (the batch runner's ``run_pair``) and the items are
     picklable and importable by name, so they may run in other processes or
     on other machines; the function never raises for a failed pair (its row
     says so). Closing the iterator (the batch was interrupted) stops the work
-    not yet started. The items must not be run twice.
+    not yet started. An item whose process died as it ran (killed for want of
+    memory, a crash in native code) has the row ``lost(item, reason)``
+    (recorded as failed): an executor that can tell yields it and runs the other
+    items on; one that raises ends the batch. An item that finished must not
+    run again; one stopped by another's death may.
     """
 
 

@@ -64,8 +64,9 @@ def read_text(path: str | Path, what: str, error: type[G2SError] = G2SError) -> 
         _require_regular(path, info.st_mode, what, error)
         if info.st_size > MAX_TEXT_BYTES:
             raise error(f"{path}: {info.st_size} bytes is too large for a {what} (at most {MAX_TEXT_BYTES})")
-        with open(descriptor, "rb", closefd=False) as handle:  # reads up to the limit or the end
-            data = handle.read(MAX_TEXT_BYTES + 1)
+        with open(descriptor, "rb", closefd=False) as handle:  # reads up to the limit or the end, by the MiB: read(limit)
+            # took 256 MiB of memory at once, and failed with MemoryError under a `ulimit -v` that the run fits in
+            data = b"".join(iter(lambda: handle.read(1 << 20) if handle.tell() <= MAX_TEXT_BYTES else b"", b""))
     except OSError as exc:
         raise error(f"{path}: cannot read {what} ({exc.strerror})") from None
     finally:

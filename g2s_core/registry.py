@@ -123,6 +123,9 @@ class Registry:
             pending = sorted(entry for key in keys for entry in self._unloaded.pop(key, []))
             for order, package, ep in pending:
                 try:
+                    if importlib.metadata.EntryPoint.pattern.match(ep.value) is None:  # ep.load() failed in its words
+                        raise PluginError(f"entry point {ep.name!r} of package {package!r}: its value {ep.value!r} is not "
+                                          "of the form 'module' or 'module:attribute' (dotted names)")
                     loaded = ep.load()
                     for plugin in loaded if isinstance(loaded, (list, tuple)) else [loaded]:
                         self.register(plugin, package=package, entry_point=ep.name)
@@ -134,46 +137,48 @@ class Registry:
         """Register one plugin object; its stage is the single hook of the stage table it implements."""
         where = f"entry point {entry_point!r} of package {package!r}"
         if self.manager.is_registered(plugin):  # pluggy's ValueError listed every plugin registered, some 4 kB
-            other = self.manager.get_name(plugin).split(":")[1]
+            other = next(info.entry_point for info in self._plugins.values() if info.plugin is plugin)
             raise PluginError(f"{where}: its plugin is also that of entry point {other!r}; each entry point names a plugin of its own")
-        try:
-            self.manager.register(plugin, name=f"{package}:{entry_point}:{getattr(plugin, 'NAME', '')}")
+        try:  # under a name unique while it is registered: one made of the names (':' in them too) could be another's
+            self.manager.register(plugin, name=str(id(plugin)))
             self.manager.check_pending()
-        except (pluggy.PluginValidationError, ValueError) as exc:  # pluggy's words for a wrong hook span three lines
-            raise PluginError(f"{where}: {' / '.join(str(exc).splitlines())}") from exc
+            info = self._checked(plugin, package, entry_point, where)
+        except (pluggy.PluginValidationError, ValueError, PluginError) as exc:
+            if self.manager.is_registered(plugin):  # left in, its unknown hook failed every later plugin's check_pending
+                self.manager.unregister(plugin)
+            if isinstance(exc, PluginError):
+                raise
+            raise PluginError(f"{where}: {' / '.join(str(exc).splitlines())}") from exc  # pluggy's words span 3 lines
+        self._plugins[(info.stage, info.name)] = info
+        return info
+
+    def _checked(self, plugin: Any, package: str, entry_point: str, where: str) -> PluginInfo:
+        """The registered ``plugin``'s info once it passes the checks of its stage, else :class:`PluginError`."""
         hooks = sorted(c.name for c in self.manager.get_hookcallers(plugin) or [] if c.name in BY_HOOK)
         if len(hooks) != 1:
-            self.manager.unregister(plugin)
             found = ", ".join(hooks) or "none"
             raise PluginError(f"{where}: a plugin implements exactly one stage hook, found {found}")
         stage = BY_HOOK[hooks[0]]
         named = entry_point.split(".", 1)[0]
         if named in BY_KEY and named != stage.key:  # it would be missed by a registry that loaded only its stage
-            self.manager.unregister(plugin)
             raise PluginError(f"{where}: the plugin is {'an' if stage.title[0] in 'AEIOU' else 'a'} {stage.title}, whose entry points are named '{stage.key}.<name>'")
         name = getattr(plugin, "NAME", None)
         if not isinstance(name, str) or not name:
-            self.manager.unregister(plugin)
             raise PluginError(f"{where}: the plugin has no NAME string")
         params_model = getattr(plugin, "Params", _NoParams)
         if not (isinstance(params_model, type) and issubclass(params_model, PluginParams)):
-            self.manager.unregister(plugin)
             raise PluginError(f"{where}: Params must be a g2s_core.plugin.PluginParams subclass")
         undeclared = [a for a in stage.declares if getattr(plugin, a, None) is None]
         if undeclared:
-            self.manager.unregister(plugin)
             raise PluginError(f"{where}: {stage.title} plugins declare {', '.join(undeclared)}, this one does not")
         existing = self._plugins.get((stage.key, name))
         if existing is not None:
-            self.manager.unregister(plugin)
             raise PluginError(
                 f"two plugins provide {stage.title} {name!r}: package {existing.package!r} "
                 f"(entry point {existing.entry_point!r}) and package {package!r} (entry point {entry_point!r})"
             )
         doc = (getattr(plugin, "__doc__", None) or "").strip()
-        info = PluginInfo(stage.key, name, package, entry_point, plugin, params_model, doc.splitlines()[0] if doc else "")
-        self._plugins[(stage.key, name)] = info
-        return info
+        return PluginInfo(stage.key, name, package, entry_point, plugin, params_model, doc.splitlines()[0] if doc else "")
 
     def plugins(self, stage: str | None = None) -> list[PluginInfo]:
         """Registered plugins in pipeline-stage order, then by name."""

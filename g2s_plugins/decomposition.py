@@ -25,8 +25,12 @@ polygons and their shared edges (portals):
    between two openings (:func:`wall_pieces`: long for its width, its ends
    near other walls, its long sides not) counts as a wall, so that a front of
    doors is not one opening as wide as the front. ``width = 2 x clearance``
-   with every wall counted is the walkable width reported for a chokepoint
-   (add the agent's diameter for wall to wall).
+   with every wall counted is the walkable width reported for a chokepoint.
+   Two more widths of a cut are used below and kept apart by name: its
+   *span*, the walkable width and the agent's diameter (the opening the
+   eroded navmesh stands for), and its *clear width*, wall to wall in the
+   level: measured in the mesh (:class:`DoorWidths`) or estimated as the
+   span and a navmesh cell of rasterisation (``wall_to_wall``).
 2. Merge tree (watershed by clearance). Portals are taken widest first and
    join the groups of polygons on their two sides (union-find), except when
    both groups are already *rooms*: they hold at least ``min_region_area`` m²
@@ -61,8 +65,8 @@ polygons and their shared edges (portals):
    a pilaster narrows a corridor for a step and the corridor goes on as
    wide on both sides, so the two groups are one space (a ring or straight
    corridor cut at its pilasters). The local width of a side is twice the
-   largest clearance of that side's floor within :data:`PINCH_REACH` clear
-   widths of the cut (:func:`local_widths`, on a grid one navmesh cell
+   largest clearance of that side's floor within :data:`PINCH_REACH` spans
+   of the cut (:func:`local_widths`, on a grid one navmesh cell
    apart): there a pilaster's corridor has its full width again, while a
    corridor's mouth into a room is as narrow as the cut on the corridor's
    side and the room is wide on the other (the rooms at the corridor's ends
@@ -81,16 +85,28 @@ polygons and their shared edges (portals):
    room and its corridor, measured as one group, are narrow on average). The
    project's own rule, set on the held-out level kinds (docs/plugins.md,
    "Level kinds it was not tuned on").
-   Lanes side by side (:func:`lane_mouths`, last): a candidate whose floor on one side, within
-   :data:`PINCH_REACH` clear widths of it, is narrower than ``passage_width`` agent diameters opens a passage;
+   Lanes side by side (:func:`lane_mouths`): a candidate whose floor on one side, within
+   :data:`PINCH_REACH` spans of it, is narrower than ``passage_width`` agent diameters opens a passage;
    when another candidate of the same two regions opening a passage lies beside it (at least
    ``min_separation`` and at most :data:`LANE_PITCH` clear widths away), both are mouths of lanes side by
    side (grave rows, shelving, queue rails) and the two regions join, again on the joined regions until no
    such pair is left. Two doors off a corridor open no passage (the corridor and the room are wide behind
    them); passages far apart (footbridges, gates) are ways of their own. The project's own rule, set on the
    eleventh round's cemetery and library (docs/plugins.md, "Lanes side by side").
+   Ways round obstacles (:func:`_join_ways_round`, last): each opening between two regions on one floor is
+   closed (with the cuts on the far side of a pillar or post it ends on: small holes the split leaves out) and
+   the shortest walk between its two sides is looked for on the polygon graph (:class:`PolygonWalks`: centre,
+   portal middle, centre; Dijkstra). When one of at most :data:`WAY_ROUND` times the regions' size is there, the
+   opening is a way round something standing in open floor (a container on a quay, an enclosure among paths, a
+   feature on a plaza), not a narrowing of a way, and the two regions join, again on the joined regions until no
+   such opening is left. Size is the larger region's longest extent, or the smaller's when either is walled in
+   (:data:`WALLED_IN` of its outline wall, and no passage: a house with a door at each end keeps both). Doors
+   of rooms in a loop, a wall's gaps between two fields and a room's two doors onto a corridor cost walks of one
+   to several regions' sizes. The project's own rule, set on the thirteenth round's kinds (docs/plugins.md,
+   "Ways round obstacles").
 4. Regions are the groups left (``scipy.sparse.csgraph.connected_components``
-   of the merged portals, joined passages, pinches, side strips and lanes), numbered by their lowest polygon id.
+   of the merged portals, joined passages, pinches, side strips, lanes and ways round), numbered by their lowest
+   polygon id.
    Candidates between the same two regions that are chained end to end (one opening:
    Recast's region contours may bend across a wide gap), that end on the same
    small hole less than half as wide between them, wall to wall, as the narrower
@@ -121,7 +137,8 @@ C candidates between corridor-like groups, Q grid points within a cut's reach
 (hundreds) and M polygons near it; side strips O(V + C log C) (extents, then
 sorting the candidates' region pairs); lanes O(R (C' (Q M + Q log B) + sum of k^2)) for R rounds (joins; 1-4
 measured), C' candidates of region pairs with openings at least ``min_separation`` apart and k passage openings
-per pair; openings O(C log C + sum of k^2) for k candidate ends on each small
+per pair; ways round O(R' (V + O K log K)) for R' rounds (1-4 measured), O openings and K polygons within the
+walk's length of an opening (few in rooms, up to a region in open ground); openings O(C log C + sum of k^2) for k candidate ends on each small
 hole; small rooms O(k) per look at a group under ``min_region_area`` (k: its polygons and their portals, few), and
 O(k) rays for the groups walled in but for one opening (:class:`DoorWidths`, each polygon and portal cast once);
 wall pieces O(B) and O(B) more per elongated small hole (few: pillars are compact); the merge tree sorts the
@@ -180,8 +197,9 @@ few agents abreast, however long a hall is (measured: the corridors of the sampl
 docs/plugins.md, "Pinches")."""
 
 PINCH_REACH = 1.5
-"""A side's local width near a cut is measured within this many times the cut's clear width (wall to wall) of it
-(:func:`local_widths`): past a pilaster a corridor is as wide as before within about one clear width, while a room
+"""A side's local width near a cut is measured within this many times the cut's span (its walkable width and the
+agent's diameter) of it (:func:`local_widths`): past a pilaster a corridor is as wide as before within about one span,
+while a room
 beyond a corridor's mouth shows its width only further in. Measured on the generated dungeons and samples against
 1.0 and 2.0 (docs/plugins.md, "Pinches")."""
 
@@ -235,12 +253,28 @@ hospital rooms behind their beds 1.0; prison cells 0.10-0.80, rooms of 2-4 m beh
 hallway 1.6 m wide behind a 1.5 m door 0.94."""
 
 LANE_PITCH = 4.0
-"""Two passage openings of one region pair at most this many clear widths apart (the wider of the two; at least
-``min_separation``) are lanes side by side (:func:`lane_mouths`). Measured (docs/plugins.md, "Lanes side by side"),
+"""Two passage openings of one region pair at most this many clear widths apart (the wider of the two, estimated:
+walkable width, agent's diameter and a navmesh cell; at least ``min_separation``) are lanes side by side (:func:`lane_mouths`). Measured (docs/plugins.md, "Lanes side by side"),
 the nearest other passage opening of the same region pair in clear widths: neighbouring lanes of the cemetery 2.1
 (10th percentile; a lane every 3.6 m, mouths 0.2-0.5 m walkable), the warehouse's racking aisles 2.3, the library's
 shelf aisles 2.3-3.9, against 5.0 for two gaps of a pillared dungeon room turned 45 degrees, 5.4 and more on the
 aqueduct, 17 on the scaffold and 41-48 for the golf course's footbridges."""
+
+WAY_ROUND = 0.75
+"""An opening between two regions is a way round an obstacle, not a narrowing of a way, when closing it lengthens the
+walk from one of its sides to the other by at most this many times the regions' size: the larger region's longest
+extent, or the smaller's when either is walled in (:func:`_join_ways_round`). Measured (docs/plugins.md, "Ways round
+obstacles"; before any join, over the larger extent): the cuts across open floor of the skate park, cemetery,
+interchange and zoo 0.30-0.76 at the median, the dry dock's 1.00 (its quay cut into pieces as small as the walk
+round a container: they join once their neighbours have); two fields parted by a wall with three gaps 0.99-2.18, a
+room's two doors onto a corridor 0.48-1.00 (1.49-3.00 of the room's own extent, walled in), a loop of four rooms
+2.49, the generated dungeons' doors 2.2 and more. At 1.0 the two fields join, at every yaw."""
+
+WALLED_IN = 0.95
+"""A region at least this share of whose outline is wall (the small holes left out of the clearances not counted:
+pillars and posts stand in it) and which is no passage is walled in: a room behind its doors, whose openings are
+weighed against its own size (:func:`_join_ways_round`). Measured (docs/plugins.md, "Ways round obstacles"): the zoo's
+reptile house, aviary and cafe 0.97-0.99, pieces of the dry dock's quays between containers and stacks 0.59-0.93."""
 
 EXTENT_DIRECTIONS = 8
 """Directions, evenly spread over 180 degrees, along which a region's longest extent is measured
@@ -461,6 +495,8 @@ class Clearances:
         holes: the small holes' boundary (wall pieces too: a piece less than half as wide as the doors beside it
             is a pier in one opening, :func:`_post_links`): their edges' start points, (H,3) m, and the hole of
             each, (H,) int64.
+        left_out: (B,) int64, for each boundary edge (:func:`boundary_edges` order) the small hole it bounds when
+            that hole is left out of the clearances (a pillar, a post: not a wall piece), -1 for the others.
     """
 
     polygons: np.ndarray
@@ -469,6 +505,7 @@ class Clearances:
     widest: np.ndarray
     open_walls: tuple[np.ndarray, np.ndarray]
     holes: tuple[np.ndarray, np.ndarray]
+    left_out: np.ndarray
 
 
 def portal_samples(ends: np.ndarray, spacing: float) -> tuple[np.ndarray, np.ndarray]:
@@ -517,6 +554,7 @@ def clearances(navmesh: Any, obstacle_area: float, wall_to_wall: float) -> Clear
         widest=points[widest],
         open_walls=(start[~obstacle], end[~obstacle]),
         holes=(start[hole >= 0], hole[hole >= 0]),
+        left_out=np.where(obstacle, hole, -1),
     )
 
 
@@ -938,6 +976,7 @@ def decompose(navmesh: Any, agent: Any, params: DecompositionParams, mesh: trime
     labels = join_side_strips(labels, pairs[blocked], 2.0 * clearance.portals_open[blocked], clearance.widest[blocked],
                               *mean_widths(navmesh, labels, areas), params.narrowness, params.min_separation)
     labels = _join_lanes(navmesh, labels, pairs, blocked, clearance, float(agent.radius), wall_to_wall, params)
+    labels = _join_ways_round(navmesh, labels, pairs, blocked, clearance, areas, agent, wall_to_wall, params)
     count = int(labels.max()) + 1 if len(labels) else 0
     blocked &= labels[pairs[:, 0]] != labels[pairs[:, 1]]
 
@@ -951,7 +990,7 @@ def decompose(navmesh: Any, agent: Any, params: DecompositionParams, mesh: trime
     np.minimum.at(low, labels, centres[:, 1])
     np.maximum.at(high, labels, centres[:, 1])
     band = floor_bands(centres[:, 1], navmesh.normals, areas, 0.5 * float(agent.height))
-    floor = _region_floors(labels, count, band, areas, centres[:, 1], centroid[:, 1])
+    floor = _region_floors(labels, count, band, areas, centres[:, 1])
     members = np.split(np.argsort(labels, kind="stable"), np.cumsum(np.bincount(labels, minlength=count))[:-1])
     regions = [
         {"id": r, "area": float(region_area[r]), "polygons": members[r].tolist(), "centroid": centroid[r].tolist(),
@@ -1004,7 +1043,7 @@ def _join_pinches(navmesh: Any, labels: np.ndarray, count: int, pairs: np.ndarra
     between = (sides[:, 0] != sides[:, 1]) & corridor_like[sides].all(axis=1)
     candidates, sides = candidates[between], sides[between]
     cut = 2.0 * clearance.portals_open[candidates]
-    reach = PINCH_REACH * (cut + 2.0 * radius)  # the cut's clear width is its walkable width and the agent's
+    reach = PINCH_REACH * (cut + 2.0 * radius)  # the cut's span: its walkable width and the agent's diameter
     local = local_widths(navmesh, labels, clearance.widest[candidates], sides, reach, clearance.open_walls)
     return join_groups(labels, count, sides[pinches(cut, local, params.pinch, params.narrowness)])
 
@@ -1028,11 +1067,139 @@ def _join_lanes(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocked: np
         if len(candidates) < 2:
             return labels
         cut = 2.0 * clearance.portals_open[candidates]
-        local = local_widths(navmesh, labels, points, sides, PINCH_REACH * (cut + 2.0 * radius), clearance.open_walls)
+        span = cut + 2.0 * radius  # walkable width and the agent's diameter; a navmesh cell more is the clear width
+        local = local_widths(navmesh, labels, points, sides, PINCH_REACH * span, clearance.open_walls)
         mouths = lane_mouths(sides, points, local, passage, cut + wall_to_wall, params.min_separation)
         if not mouths.any():
             return labels
         labels = join_groups(labels, count, sides[mouths])
+
+
+@dataclass(frozen=True)
+class PolygonWalks:
+    """Walks on the navmesh's polygon graph: from a polygon's centre to a portal's middle to the next centre, m.
+
+    Attributes:
+        centres: (P, 3) polygon centres, m.
+        pairs: (E, 2) each portal's two polygons.
+        steps: (E,) the walk across each portal, centre to its middle to centre, m.
+        portals_of: CSR of polygon -> portal ids, ``(indptr (P+1,), portal ids (2E,))``.
+        near: a kd-tree of the centres.
+    """
+
+    centres: np.ndarray
+    pairs: np.ndarray
+    steps: np.ndarray
+    portals_of: tuple[np.ndarray, np.ndarray]
+    near: cKDTree
+
+    @classmethod
+    def of(cls, navmesh: Any, pairs: np.ndarray, endpoints: np.ndarray) -> PolygonWalks:
+        """The walks of ``navmesh`` (``pairs`` (E, 2) and ``endpoints`` (E, 2, 3): its portals)."""
+        centres = np.asarray(navmesh.centres, dtype=np.float64)
+        middle = endpoints.mean(axis=1)
+        steps = (np.linalg.norm(centres[pairs[:, 0]] - middle, axis=1)
+                 + np.linalg.norm(centres[pairs[:, 1]] - middle, axis=1))
+        owner = pairs.reshape(-1)
+        indptr = np.concatenate([[0], np.cumsum(np.bincount(owner, minlength=len(centres)))])
+        return cls(centres, pairs, steps, (indptr, np.argsort(owner, kind="stable") // 2), cKDTree(centres))
+
+    def round_within(self, portal: int, closed: np.ndarray, length: float) -> bool:
+        """Whether a walk of at most ``length`` m joins the two polygons of ``portal`` without crossing the portals
+        ``closed`` (ids). Only polygons within ``length`` of the first one's centre can lie on such a walk, so the
+        search (scipy Dijkstra, bounded by ``length``) runs on those: O(k log k) for k polygons near the portal."""
+        a, b = (int(p) for p in self.pairs[portal])
+        ball = np.asarray(self.near.query_ball_point(self.centres[a], length), dtype=np.int64)
+        if not np.isin(b, ball):
+            return False
+        indptr, ids = self.portals_of
+        counts = indptr[ball + 1] - indptr[ball]
+        touching = np.unique(ids[np.repeat(indptr[ball] - np.cumsum(counts) + counts, counts) + np.arange(counts.sum())])
+        local = np.full(len(self.centres), -1, dtype=np.int64)
+        local[ball] = np.arange(len(ball))
+        ends = local[self.pairs[touching]]
+        open_ = (ends >= 0).all(axis=1) & ~np.isin(touching, closed)
+        graph = sparse.coo_array((self.steps[touching[open_]], (ends[open_, 0], ends[open_, 1])),
+                                 shape=(len(ball), len(ball)))
+        return bool(csgraph.dijkstra(graph, directed=False, indices=int(local[a]), limit=length)[local[b]] <= length)
+
+
+def _join_ways_round(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocked: np.ndarray, clearance: Clearances,
+                     areas: np.ndarray, agent: Any, wall_to_wall: float, params: DecompositionParams) -> np.ndarray:
+    """(P,) the regions ``labels`` with the two regions of every way round an obstacle joined (step 3 of the module
+    doc), again on the joined regions until none is left.
+
+    Each opening between two regions (the candidates :func:`_chokepoints` would keep as one chokepoint: one
+    :func:`_openings` group, and those of its region pair within ``min_separation``) is closed, with every candidate
+    that ends on a small hole left out of the clearances that one of its candidates ends on (the cuts round a pillar
+    are one cut through it, as the split sees it), and the walk between its widest portal's two polygons is looked for
+    on the polygon graph (:class:`PolygonWalks`). When one of at most :data:`WAY_ROUND` times the regions' size is
+    there, the two regions join: the larger's longest extent is their size, or the smaller's when either is walled in
+    (:data:`WALLED_IN`: a room behind its doors).
+    """
+    ends = np.asarray(navmesh.portals().endpoints, dtype=np.float64)
+    walks = PolygonWalks.of(navmesh, pairs, ends)
+    owner, start, end = polygon_boundary_edges(navmesh)
+    wall = np.linalg.norm(end - start, axis=1) * (clearance.left_out < 0)
+    opening_length = np.linalg.norm(ends[:, 1] - ends[:, 0], axis=1)
+    passage = params.passage_width * 2.0 * float(agent.radius)
+    heights = walks.centres[:, 1]
+    band = floor_bands(heights, navmesh.normals, areas, 0.5 * float(agent.height))
+    while True:
+        count = int(labels.max()) + 1 if len(labels) else 0
+        candidates = np.flatnonzero(blocked & (labels[pairs[:, 0]] != labels[pairs[:, 1]]))
+        if len(candidates) == 0:
+            return labels
+        sides = np.sort(labels[pairs[candidates]], axis=1)
+        cut = np.bincount(sides.reshape(-1), weights=np.repeat(opening_length[candidates], 2), minlength=count)
+        walls = np.bincount(labels[owner], weights=wall, minlength=count)
+        mean_width, extent = mean_widths(navmesh, labels, areas)
+        walled_in = (walls >= WALLED_IN * (walls + cut)) & (mean_width >= passage)
+        floor = _region_floors(labels, count, band, areas, heights)
+        opening = _openings(candidates, sides, ends, 2.0 * clearance.portals, clearance.holes, wall_to_wall)
+        around = _joined_by(_holes_at(ends[candidates].reshape(-1, 3), start, clearance.left_out).reshape(-1, 2))
+        points = clearance.widest[candidates]
+        _, pair = np.unique(sides, axis=0, return_inverse=True)
+        pair = pair.reshape(-1)
+        of_pair = np.split(np.argsort(pair, kind="stable"), np.flatnonzero(np.diff(np.sort(pair))) + 1)
+        joins = []
+        for group in np.split(np.argsort(opening, kind="stable"),
+                              np.flatnonzero(np.diff(np.sort(opening, kind="stable"))) + 1):
+            a, b = sides[group[0]]
+            if floor[a] != floor[b]:
+                continue
+            same = of_pair[pair[group[0]]]
+            near = same[(np.linalg.norm(points[same][:, None] - points[group][None], axis=2)
+                         < params.min_separation).any(axis=1)]
+            closed = candidates[np.union1d(near, np.flatnonzero(np.isin(around, around[group])))]
+            widest = candidates[group[np.argmax(clearance.portals[candidates[group]])]]
+            size = min(extent[a], extent[b]) if walled_in[[a, b]].any() else max(extent[a], extent[b])
+            if walks.round_within(widest, closed, walks.steps[widest] + WAY_ROUND * size):
+                joins.append((a, b))
+        if not joins:
+            return labels
+        labels = join_groups(labels, count, np.array(joins))
+
+
+def _holes_at(points: np.ndarray, start: np.ndarray, hole: np.ndarray) -> np.ndarray:
+    """(N,) int64: the hole of ``hole`` (B,) (-1: none) whose boundary has a corner at each of ``points`` (N, 3) (equal
+    to 1 cm; the boundary edges start at ``start`` (B, 3)), -1 for points on none."""
+    on = hole >= 0
+    _, point = np.unique(_point_keys(np.concatenate([points, start[on]])), return_inverse=True)
+    point = point.reshape(-1)
+    hole_at = np.full(int(point.max()) + 1 if len(point) else 0, -1, dtype=np.int64)
+    hole_at[point[len(points):]] = hole[on]
+    return hole_at[point[:len(points)]]
+
+
+def _joined_by(hole: np.ndarray) -> np.ndarray:
+    """(C,) int64: candidates equal when they end on the same hole (``hole`` (C, 2): the hole at each end, -1: none),
+    directly or through others (scipy connected components)."""
+    candidate, side = np.nonzero(hole >= 0)
+    n = len(hole)
+    size = n + (int(hole.max()) + 1 if len(candidate) else 0)
+    links = sparse.coo_array((np.ones(len(candidate)), (candidate, n + hole[candidate, side])), shape=(size, size))
+    return csgraph.connected_components(links, directed=False)[1][:n].astype(np.int64)
 
 
 def lane_mouths(sides: np.ndarray, points: np.ndarray, local: np.ndarray, passage: float, clear: np.ndarray,
@@ -1051,7 +1218,8 @@ def lane_mouths(sides: np.ndarray, points: np.ndarray, local: np.ndarray, passag
         points: (C, 3) each candidate's widest point, m.
         local: (C, 2) the walkable width of each side's floor near the candidate (:func:`local_widths`), m.
         passage: a side narrower than this walkable width near a candidate is a passage, m.
-        clear: (C,) each candidate's clear width (walkable width, the agent's diameter and a navmesh cell), m.
+        clear: (C,) each candidate's clear width (estimated: walkable width, the agent's diameter and a navmesh
+            cell), m.
         separation: candidates closer than this are one opening (``min_separation``), m.
     """
     mouth = np.zeros(len(sides), dtype=bool)
@@ -1071,7 +1239,12 @@ def lane_mouths(sides: np.ndarray, points: np.ndarray, local: np.ndarray, passag
 
 
 def _region_floors(labels: np.ndarray, count: int, band: np.ndarray, areas: np.ndarray,
-                   heights: np.ndarray, mean_height: np.ndarray) -> np.ndarray:
+                   heights: np.ndarray) -> np.ndarray:
+    """(count,) int64: the floor of each region of ``labels`` (P,): the height band (``band`` (P,), -1 for sloped
+    polygons) holding most of its flat area (``areas`` (P,), m²), else the band nearest its mean height (``heights``
+    (P,), m, area-weighted; 0 for a region of no area)."""
+    mean_height = np.bincount(labels, weights=areas * heights, minlength=count) / np.maximum(
+        np.bincount(labels, weights=areas, minlength=count), 1e-12)
     bands = int(band.max()) + 1 if (band >= 0).any() else 0
     if bands == 0:
         return np.zeros(count, dtype=np.int64)

@@ -113,7 +113,7 @@ __all__ = [
     "EXACT_NODES", "TIE_TOLERANCE", "WALKING_SCALING", "WALKING_SOURCES", "WALKING_TIES", "Scaling", "SurfaceArrays",
     "Ties", "arrays_walking_flow", "distance_to", "flow_error_bound", "gather", "is_exact", "linear_through", "od_flow",
     "origin_weight", "percentile", "represented_area", "shortest_path_flow", "split_path_flow", "surface_arrays",
-    "tie_tolerance", "walking_flow",
+    "tie_tolerance", "walking_flow", "walking_sources",
 ]
 
 Ties = Literal["first", "split"]
@@ -423,16 +423,9 @@ def od_flow(
     weight = np.asarray(weight, dtype=np.float64)
     n = len(weight)
     flow = np.zeros(n)
-    candidates = np.flatnonzero(weight > 0)
-    if n == 0 or candidates.size == 0:
+    if n == 0 or not np.any(weight > 0):
         return flow, None
-    if max_sources is None or candidates.size <= max_sources:
-        sources, factor, sampled = candidates, weight[candidates], None
-    else:
-        rng = np.random.default_rng(seed)
-        draws = rng.choice(candidates, size=max_sources, replace=True, p=weight[candidates] / weight[candidates].sum())
-        sources, counts = np.unique(draws, return_counts=True)
-        factor, sampled = counts * (weight.sum() / max_sources), max_sources
+    sources, factor, sampled = walking_sources(weight, max_sources, seed)
     block, kept = max(1, BLOCK_ENTRIES // n), []
     for lo in range(0, len(sources), block):
         # adjacency is symmetric: a directed search scans each edge once instead of from both of
@@ -445,6 +438,27 @@ def od_flow(
                 flow += factor[start:start + block] @ through
             kept.clear()
     return flow, sampled
+
+
+def walking_sources(
+    weight: np.ndarray, max_sources: int | None, seed: int = 0,
+) -> tuple[np.ndarray, np.ndarray, int | None]:
+    """The sources :func:`od_flow` walks from, for ``weight`` (n,) with some weight > 0.
+
+    Returns:
+        sources: (k,) rows: every node of positive weight when there are at most ``max_sources`` of them (or
+            ``max_sources`` is ``None``), else the distinct nodes of ``max_sources`` draws with replacement in
+            proportion to weight (``numpy.random.default_rng(seed)``).
+        factor: (k,) each source's factor: its weight, or its draws times ``weight.sum() / max_sources``.
+        sampled: the number of draws, or ``None`` when every weighted node is a source.
+    """
+    candidates = np.flatnonzero(weight > 0)
+    if max_sources is None or candidates.size <= max_sources:
+        return candidates, weight[candidates], None
+    rng = np.random.default_rng(seed)
+    draws = rng.choice(candidates, size=max_sources, replace=True, p=weight[candidates] / weight[candidates].sum())
+    sources, counts = np.unique(draws, return_counts=True)
+    return sources, counts * (weight.sum() / max_sources), max_sources
 
 
 def linear_through(adjacency: sp.csr_array, sources: np.ndarray, values: np.ndarray, ties: Ties) -> np.ndarray:

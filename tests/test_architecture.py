@@ -26,7 +26,7 @@ def test_core_never_imports_a_plugin():
                 assert names == EXEMPT_IMPORTS.get(path.name), f"{path.name} imports {names}"
 
 
-CORE_CODE_BUDGET = 2821
+CORE_CODE_BUDGET = 2833
 """Lines of code g2s_core may hold (docs/architecture.md records the count): the core stays minimal."""
 
 
@@ -154,7 +154,7 @@ def test_the_documented_example_plugins_register_and_work(tmp_path, capsys):
     loaded = call("readers", "csv", path=tmp_path)
     assert dict(loaded.structure.nodes(data="pos")) == dict(tree.nodes(data="pos"))
     rows = [{"config": "c", "level": str(n)} for n in range(5)]
-    executed = call("executors", "threads", function=dict, items=rows)
+    executed = call("executors", "threads", function=dict, items=rows, lost=lambda row, reason: {**row, "error": reason})
     assert sorted(executed, key=lambda row: row["level"]) == rows
     mesh.export(tmp_path / "plaza.obj")
     parser = argparse.ArgumentParser(prog="g2s size")

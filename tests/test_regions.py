@@ -579,6 +579,21 @@ def test_local_widths_of_a_corridor_and_of_the_room_it_opens_into():
         assert local[0] == pytest.approx(widths)
 
 
+def test_walks_round_a_block_on_the_polygon_graph():
+    # four polygons round a 2 x 2 m block: A (bottom), B (right), C (top), D (left); closing A-B, the walk from A to
+    # B goes round the block's other side, A-D-C-B: three steps of sqrt(5) + 1 m (centre, portal middle, centre)
+    navmesh = _flat_navmesh([(0.0, 6.0, 0.0, 2.0), (4.0, 6.0, 2.0, 4.0), (0.0, 6.0, 4.0, 6.0), (0.0, 2.0, 2.0, 4.0)])
+    pairs = np.array([[0, 1], [0, 3], [2, 1], [2, 3]])
+    endpoints = np.array([[(4, 0, 2), (6, 0, 2)], [(0, 0, 2), (2, 0, 2)], [(4, 0, 4), (6, 0, 4)],
+                          [(0, 0, 4), (2, 0, 4)]], dtype=float)
+    walks = decomposition.PolygonWalks.of(navmesh, pairs, endpoints)
+    assert walks.steps.tolist() == pytest.approx([np.sqrt(5.0) + 1.0] * 4)
+    round_walk = 3.0 * (np.sqrt(5.0) + 1.0)
+    assert walks.round_within(0, np.array([0]), round_walk + 0.01)
+    assert not walks.round_within(0, np.array([0]), round_walk - 0.01)
+    assert not walks.round_within(0, np.array([0, 1]), 100.0)  # both ways closed
+
+
 def test_passage_systems_join_a_room_only_when_they_lead_to_one():
     # groups 0-5; 1, 2 and 4 are passages. 1-2 are joined (a passage cut in two) and lead to room 0 only;
     # passage 4 leads to rooms 3 and 5, so it stays a region (the corridor the offices open on)
@@ -670,6 +685,20 @@ def test_the_cemetery_lanes_are_not_chokepoints_and_its_mausoleum_doors_are():
     assert sum(n for n in pairs.values() if n > 1) <= 75  # 61 with the rule
     mausoleums = [r for r in regions(result) if r["area"] < 8.0 and len(r["neighbours"]) == 1]
     assert len(mausoleums) >= 4
+
+
+def test_the_zoo_paths_are_one_region_and_its_doors_stay_chokepoints():
+    # benchmarks/level_kinds.py zoo, seed 0: 29 chokepoints before the rule for ways round obstacles, 25 of them
+    # across its open paths between enclosures (docs/plugins.md, "Ways round obstacles"). The paths are one
+    # region; the gate, the reptile house's two doors 30 m apart (a room walled in: measured against its own size,
+    # it keeps them), the aviary's airlocks and the cafe's opening are what is left
+    result = run(level_kind("zoo", 0))
+    found = chokepoints(result)
+    assert len(found) <= 8  # 6 with the rule
+    paths = max(regions(result), key=lambda r: r["area"])["id"]
+    assert all(paths in c["regions"] for c in found)
+    houses = [r for r in regions(result) if 100.0 < r["area"] < 200.0]
+    assert len(houses) == 1 and len(houses[0]["neighbours"][0]["chokepoints"]) == 2
 
 
 def test_shelving_aisles_turned_45_degrees_are_part_of_the_hall():

@@ -263,16 +263,16 @@ def test_an_executor_yields_rows_and_its_failures_name_it():
 
     registry = Registry()
     info = registry.register(make_plugin("flaky", g2s_execute=execute), package="pkg-x", entry_point="e")
-    results = registry.call(info, function=dict, items=rows, params=info.params_model())
+    results = registry.call(info, function=dict, items=rows, params=info.params_model(), lost=lost_row)
     assert [next(results), next(results)] == rows
     with pytest.raises(PluginFailure, match=r"^Executor plugin 'flaky' \(package 'pkg-x'\) failed: "
                                             r"its iterator raised OSError: the cluster went away$"):
         next(results)
-    results = registry.call(info, function=dict, items=rows, params=info.params_model())
+    results = registry.call(info, function=dict, items=rows, params=info.params_model(), lost=lost_row)
     next(results)
     results.close()  # as a batch does on Ctrl-C: the executor's own iterator is closed too
     assert closed == [True, True]
-    lists = registry.call(info, function=lambda item: [item], items=rows, params=info.params_model())
+    lists = registry.call(info, function=lambda item: [item], items=rows, params=info.params_model(), lost=lost_row)
     with pytest.raises(PluginFailure, match="failed: its iterator gave list, not a summary row"):
         next(lists)
 
@@ -282,7 +282,12 @@ def test_an_executor_yields_rows_and_its_failures_name_it():
 
     eager = registry.register(make_plugin("eager", g2s_execute=collect), package="pkg-x", entry_point="eager")
     with pytest.raises(PluginFailure, match="failed: returned list, not an iterator"):
-        registry.call(eager, function=dict, items=rows, params=eager.params_model())
+        registry.call(eager, function=dict, items=rows, params=eager.params_model(), lost=lost_row)
+
+
+def lost_row(row: dict, reason: str) -> dict:
+    """A batch's row of an item whose process died (the executor hook's ``lost``)."""
+    return {**row, "status": "failed", "error": reason}
 
 
 def test_bad_input_found_by_a_plugin_stays_the_users_error():
@@ -333,7 +338,7 @@ def test_two_installed_plugins_of_one_name_stop_the_runs_that_ask_for_it(monkeyp
     import importlib.metadata
 
     def entry_point(package, plugin):
-        return types.SimpleNamespace(name="terminals.first_k", value=f"{package}.first_k",
+        return types.SimpleNamespace(name="terminals.first_k", value=f"{package.replace('-', '_')}.first_k",
                                      dist=types.SimpleNamespace(name=package), load=lambda: plugin)
 
     found = [entry_point("pkg-b", OTHER_FIRST_K), entry_point("pkg-a", FIRST_K)]

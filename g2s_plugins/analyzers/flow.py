@@ -27,6 +27,13 @@ or linearly scaled (``linear``: a pair's weight on a node in proportion to
 how far along its path the node lies, so the nodes round each sampled
 source do not read busy; :mod:`g2s_plugins.traffic`, docs/analysis_quality.md,
 "The sampling preset's held-out misses").
+A polygon's flow is its own through-flow (``across: node``, the default),
+or the trips across a section of the way through it, each counted once
+whichever lane it takes (``across: section``: every polygon; ``across:
+lanes``: the polygons of a lane, the navmesh route only;
+:mod:`g2s_plugins.cross_sections`). Measured against the evaluation's
+reference (docs/analysis_quality.md, "Parallel lanes in the heat map"),
+neither is the presets' heat map: the reference ranks polygons.
 The ``min_heat_rho`` and ``max_traffic_step`` of the simplification, and a
 traffic-aware ``coverage``, read a walking flow of their own settings
 (``heat_sources``/``heat_ties``/``heat_scaling``,
@@ -52,9 +59,11 @@ from typing import Literal
 import networkx as nx
 from pydantic import Field
 
+from g2s_core.errors import PluginError
 from g2s_core.model import RunContext
 from g2s_core.plugin import PluginParams, hookimpl
-from g2s_plugins import traffic
+from g2s_plugins import cross_sections, traffic
+from g2s_plugins.decomposition import DecompositionParams
 
 NAME = "flow"
 
@@ -72,6 +81,24 @@ class Params(PluginParams):
         traffic.WALKING_SCALING, description="a sampled source's pairs: none (each pair's whole weight on its path) or "
         "linear (weighted by how far along the path a node lies: no busy ring round each sampled source)"
     )
+    across: Literal["node", "section", "lanes"] = Field(
+        "node", description="each polygon's flow: its own (node); the trips across the way's cross-section through it "
+        "(section: the polygons side by side across the way summed, so the lanes of a gate line or an escalator bank "
+        "and the polygons across a wide slope read as one way); or its own plus the trips across the lanes side by "
+        "side with its own when it stands in a lane (lanes; the navmesh route only); g2s_plugins.cross_sections"
+    )
+    section_gap: float = Field(
+        2.5, gt=0, description="across: section or lanes: stretches of floor along a section at most this far apart "
+        "are one way (the barriers between a gate's gaps with the agent's clearance round them), m"
+    )
+    section_reach: float = Field(
+        30.0, gt=0, description="across: section or lanes: a section reaches at most this far either side of a "
+        "polygon, m"
+    )
+    lane_width: float = Field(
+        DecompositionParams.model_fields["passage_width"].default, gt=0, description="across: lanes: floor narrower "
+        "than this along a section is a lane, in agent diameters (walkable; the regions' passage_width)"
+    )
     aggregate: Literal["mean", "sum", "percentile"] = Field(
         "mean", description="a structure node's value: mean (a density) or sum of the through-flow of the polygons it "
         "stands for, or the mean percentile rank (0-100) of their flow"
@@ -83,6 +110,14 @@ def g2s_analyze(structure: nx.Graph, params: Params, context: RunContext) -> Map
     """Through-flow of the initial graph, averaged, summed or ranked per structure node."""
     flow = traffic.walking_flow(context.graph, max_sources=params.max_sources, seed=params.seed, ties=params.ties,
                                 scaling=params.scaling)
+    if params.across != "node":
+        lanes = params.across == "lanes"
+        if lanes and context.navmesh is None:
+            raise PluginError("flow: across: lanes needs a navmesh (the navmesh graph builder); this run has none")
+        flow = cross_sections.walking_across(
+            context.graph, flow, params.max_sources, params.seed, params.section_gap, params.section_reach,
+            context.agent.height, context.navmesh if lanes else None,
+            params.lane_width * 2.0 * context.agent.radius if lanes else None)
     if params.aggregate == "percentile":
         return traffic.gather(context.graph, structure, traffic.percentile(flow), mean=True)
     total = traffic.origin_weight(traffic.surface_arrays(context.graph)).sum()

@@ -55,7 +55,7 @@ def g2s_command(parser: argparse.ArgumentParser) -> Callable[[argparse.Namespace
     parser.add_argument("--scheduler", metavar="ADDRESS",
                         help="with --executor dask: the scheduler to use, e.g. tcp://host:8786 "
                         "(default: start a LocalCluster)")
-    parser.add_argument("--evaluate", metavar="NAMES", default="", help="evaluator plugins added to every config, "
+    parser.add_argument("--evaluate", metavar="NAMES", help="evaluator plugins added to every config, "
                         "e.g. traffic: coverage and flow agreement in metric.* columns (costly: docs/batch.md)")
     parser.add_argument("--format", metavar="FORMATS", help="comma-separated output formats for every pair "
                         "(default: each config's outputs.formats)")
@@ -78,7 +78,12 @@ def batch(args: argparse.Namespace) -> int:
         raise G2SError(f"batch: expected one or more levels after the configs ({' '.join(configs)})")
     if args.workers is not None and args.workers < 1:
         raise G2SError(f"--workers: expected an integer >= 1, got {args.workers}")
-    evaluators = [name.strip() for name in args.evaluate.split(",") if name.strip()]
+    evaluators = [name.strip() for name in (args.evaluate or "").split(",") if name.strip()]
+    # `--evaluate "$EVALUATORS"` of an unset variable ran without them; a name twice was "two plugins write values named"
+    if args.evaluate is not None and (not evaluators or len(set(evaluators)) < len(evaluators)):
+        twice = next((name for name in evaluators if evaluators.count(name) > 1), None)
+        raise G2SError(f"--evaluate: {f'{twice} is given twice' if twice else 'no evaluator given'} "
+                       f"(expected some of: {', '.join(p.name for p in installed().plugins('evaluators'))})")
     # named as the options the user gave (run_batch names its own parameters: "executor", "evaluators", "params.workers")
     registry = installed()
     executor = registry.get("executors", args.executor, key="--executor")

@@ -127,10 +127,7 @@ def run_pair(pair: Pair) -> dict[str, Any]:
     ``failed`` with the one-line message ``g2s run`` would print.
     """
     start = time.perf_counter()
-    row: dict[str, Any] = {
-        "config": pair.config, "level": pair.level, "input": pair.spec, "folder": pair.folder,
-        "status": "ok", "error": None, "reused": False, "config_sha256": pair.config_sha256,
-    }
+    row = _first_columns(pair)
     try:
         registry = installed()
         config = parse_config(pair.raw_config, source=pair.source)
@@ -149,6 +146,20 @@ def run_pair(pair: Pair) -> dict[str, Any]:
     except Exception as exc:  # an internal error of g2s on this level: recorded, the batch goes on
         row.update(status="failed", error=f"internal error: {type(exc).__name__}: {exc}")
     row["seconds_total"] = time.perf_counter() - start
+    _write_json(Path(pair.record), row)
+    return row
+
+
+def _first_columns(pair: Pair, error: str | None = None) -> dict[str, Any]:
+    """The row's columns that say which pair it is, and whether it failed (``error``)."""
+    return {"config": pair.config, "level": pair.level, "input": pair.spec, "folder": pair.folder,
+            "status": "ok" if error is None else "failed", "error": error, "reused": False,
+            "config_sha256": pair.config_sha256}
+
+
+def lost_pair(pair: Pair, reason: str) -> dict[str, Any]:
+    """The row (written to its row file) of a pair whose process died as it ran, which the executor tells by ``reason``."""
+    row = _first_columns(pair, error=f"{pair.spec}: {reason}")
     _write_json(Path(pair.record), row)
     return row
 
@@ -433,7 +444,7 @@ def run_batch(
     rows: dict[tuple[str, str], dict[str, Any]] = {}
     started = time.time()
     try:
-        with closing(registry.call(chosen, function=run_pair, items=pairs, params=params)) as finished:
+        with closing(registry.call(chosen, function=run_pair, items=pairs, params=params, lost=lost_pair)) as finished:
             for row in finished:
                 stop_if_interrupted()  # a Ctrl-C that a library swallowed here (importing trimesh) stops the batch
                 rows[row["config"], row["level"]] = row

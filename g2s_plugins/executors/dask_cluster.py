@@ -42,10 +42,12 @@ def _children_ignore_interrupt() -> Iterator[None]:
 
 @hookimpl
 def g2s_execute(
-    function: Callable[[Any], dict[str, Any]], items: Sequence[Any], params: Params
+    function: Callable[[Any], dict[str, Any]], items: Sequence[Any], params: Params, lost: Callable[[Any, str], dict[str, Any]]
 ) -> Iterator[dict[str, Any]]:
-    """Each item as a Dask task, yielded as it finishes."""
+    """Each item as a Dask task, yielded as it finishes; an item whose workers died running it is ``lost``, the others
+    run (Dask tries it on another worker first: ``distributed.scheduler.allowed-failures``, 3 by default)."""
     from dask.distributed import Client, LocalCluster, as_completed
+    from distributed.scheduler import KilledWorker
 
     if params.scheduler:
         cluster = None
@@ -64,10 +66,15 @@ def g2s_execute(
             )
         client = Client(cluster)
     # pure=False: a pair is run again when asked again (resume decides what is finished, not Dask's cache)
-    futures = [client.submit(function, item, pure=False) for item in items]
+    futures = {client.submit(function, item, pure=False): item for item in items}
     try:
         for future in as_completed(futures):
-            yield future.result()
+            try:
+                row = future.result()
+            except KilledWorker:  # which ended the batch, exit 1 blaming this plugin in Dask's 600 characters
+                row = lost(futures[future], "every Dask worker that held it died (killed, e.g. by the system for want of "
+                           "memory, or a crash in native code); the batch's other pairs ran")
+            yield row
     finally:
         client.cancel([f for f in futures if not f.done()])
         client.close()

@@ -1,11 +1,13 @@
-"""A pool of worker processes on this machine (concurrent.futures); Ctrl-C lets the running pairs finish."""
+"""A pool of worker processes on this machine (concurrent.futures); Ctrl-C lets the running pairs finish, and a pair
+whose worker dies (killed for want of memory, a crash in native code) fails alone."""
 
 from __future__ import annotations
 
 import os
 import signal
-from collections.abc import Callable, Iterator, Sequence
+from collections.abc import Callable, Generator, Iterator, Sequence
 from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
+from concurrent.futures.process import BrokenProcessPool
 from multiprocessing import get_context
 from typing import Any
 
@@ -14,6 +16,10 @@ from pydantic import Field
 from g2s_core.plugin import PluginParams, hookimpl
 
 NAME = "local"
+
+DIED = ("its worker process died as it ran (killed, e.g. by the system for want of memory, or a crash in native code); "
+        "the batch's other pairs ran")
+"""Why a pair whose worker died failed: the pool cannot tell a signal's kind."""
 
 
 class Params(PluginParams):
@@ -29,16 +35,40 @@ def _ignore_interrupt() -> None:
 
 @hookimpl
 def g2s_execute(
-    function: Callable[[Any], dict[str, Any]], items: Sequence[Any], params: Params
+    function: Callable[[Any], dict[str, Any]], items: Sequence[Any], params: Params, lost: Callable[[Any, str], dict[str, Any]]
 ) -> Iterator[dict[str, Any]]:
-    """Each item in a worker process, yielded as it finishes."""
+    """Each item in a worker process, yielded as it finishes; an item whose worker died is ``lost``, the others run.
+
+    A worker's death breaks the whole pool (concurrent.futures stops its other workers and fails every item not
+    finished). The item that killed it was one of the first ``workers`` items left unfinished (the pool hands its
+    items out in order, one to each worker): those run again one at a time, in a pool of one worker, where the item
+    whose worker dies is the first one left; then the rest runs in a whole pool again.
+    """
+    size = params.workers or os.cpu_count() or 1
+    waiting = list(items)
+    while waiting:
+        left = yield from _pooled(function, waiting, size)
+        suspects, waiting = left[:size], left[size:]
+        while suspects:
+            left = yield from _pooled(function, suspects, 1)
+            if left:
+                yield lost(left[0], DIED)
+            suspects = left[1:]
+
+
+def _pooled(function: Callable[[Any], dict[str, Any]], items: Sequence[Any], workers: int) -> Generator[dict[str, Any], None, list[Any]]:
+    """Yield ``function(item)`` for ``items`` from a pool of ``workers`` as each finishes; return the items left
+    unfinished, in their order, when a worker died (none when every item ran)."""
     # forkserver: workers start from a clean process, not a copy of one with a progress thread running
-    pool = ProcessPoolExecutor(params.workers or os.cpu_count(), get_context("forkserver"), _ignore_interrupt)
+    pool = ProcessPoolExecutor(workers, get_context("forkserver"), _ignore_interrupt)
     try:
-        pending = {pool.submit(function, item) for item in items}
+        futures = {pool.submit(function, item): item for item in items}
+        pending = set(futures)
         while pending:
             finished, pending = wait(pending, return_when=FIRST_COMPLETED)
             for future in finished:
-                yield future.result()
+                if not isinstance(future.exception(), BrokenProcessPool):
+                    yield future.result()
+        return [item for future, item in futures.items() if isinstance(future.exception(), BrokenProcessPool)]
     finally:  # also on Ctrl-C or when the batch closes the iterator: the running pairs finish, the others are dropped
         pool.shutdown(wait=True, cancel_futures=True)
