@@ -80,14 +80,12 @@ class Trips:
         sources: (k,) rows of the sample's sources (:func:`g2s_plugins.traffic.walking_sources`).
         factor: (k,) their factors.
         ends: (m, 2) rows of each edge some tree uses, the lower row first.
-        load: (m,) the pair weight walking along each edge, both ways.
         tensors: (n, 3) each node's orientation tensor of the trips along its edges, in plan: xx, xz, zz.
     """
 
     sources: np.ndarray
     factor: np.ndarray
     ends: np.ndarray
-    load: np.ndarray
     tensors: np.ndarray
 
 
@@ -132,7 +130,7 @@ def walking_trips(arrays: traffic.SurfaceArrays, plan: np.ndarray, max_sources: 
     for k, term in enumerate((unit[:, 0] ** 2, unit[:, 0] * unit[:, 1], unit[:, 1] ** 2)):
         for end in ends.T:
             tensors[:, k] += np.bincount(end, weights=carried * term, minlength=n)
-    return Trips(sources, factor, ends, carried, tensors)
+    return Trips(sources, factor, ends, tensors)
 
 
 def principal_axes(tensors: np.ndarray) -> np.ndarray:

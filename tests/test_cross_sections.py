@@ -36,9 +36,10 @@ def two_rooms(lanes: list[float]) -> nx.Graph:
     return graph
 
 
-def section(graph: nx.Graph) -> dict:
+def section(graph: nx.Graph) -> tuple[dict, dict]:
+    """Per node of ``graph``: the trips across its section (gap 2.5 m, reach 30 m) and its own walking flow."""
     flow = traffic.walking_flow(graph)
-    values = cross_sections.walking_across(graph, traffic.walking_flow(graph), None, 0, gap=2.5, reach=30.0, height=2.0)
+    values = cross_sections.walking_across(graph, flow, None, 0, gap=2.5, reach=30.0, height=2.0)
     return dict(zip(traffic.surface_arrays(graph).nodes, values)), dict(zip(traffic.surface_arrays(graph).nodes, flow))
 
 
@@ -55,7 +56,7 @@ def test_two_lanes_read_as_hot_as_one_of_double_width(lanes):
 def test_lanes_further_apart_than_the_gap_are_ways_of_their_own():
     graph = two_rooms([0.0, 2.0])
     flow = traffic.walking_flow(graph)
-    values = cross_sections.walking_across(graph, traffic.walking_flow(graph), None, 0, gap=0.5, reach=30.0, height=2.0)
+    values = cross_sections.walking_across(graph, flow, None, 0, gap=0.5, reach=30.0, height=2.0)
     rows = traffic.surface_arrays(graph).index
     for z in (0.0, 2.0):
         assert values[rows[(0, z)]] == pytest.approx(flow[rows[(0, z)]])
@@ -67,7 +68,7 @@ def test_a_way_one_node_across_keeps_its_own_flow():
         graph.add_node(i, pos=(float(i), 0.0, 0.0), normal=(0.0, 1.0, 0.0), area=1.0)
     graph.add_edges_from(((i, i + 1, {"weight": 1.0}) for i in range(4)))
     flow = traffic.walking_flow(graph)
-    values = cross_sections.walking_across(graph, traffic.walking_flow(graph), None, 0, gap=2.5, reach=30.0, height=2.0)
+    values = cross_sections.walking_across(graph, flow, None, 0, gap=2.5, reach=30.0, height=2.0)
     # the mean of the trips into and out of each sample: its through-flow and its own 4 trips either way
     assert values.tolist() == (flow + 4.0).tolist()
     trips = cross_sections.walking_trips(traffic.surface_arrays(graph), np.array([[i, 0.0] for i in range(5)]), None)
@@ -79,7 +80,7 @@ def test_a_floor_above_is_not_on_the_section():
     graph = two_rooms([0.0, 2.0])
     graph.nodes[(0, 2.0)]["pos"] = (0.0, 3.0, 2.0)  # the second lane 3 m up: another floor, over the height
     flow = traffic.walking_flow(graph)
-    values = cross_sections.walking_across(graph, traffic.walking_flow(graph), None, 0, gap=2.5, reach=30.0, height=2.0)
+    values = cross_sections.walking_across(graph, flow, None, 0, gap=2.5, reach=30.0, height=2.0)
     row = traffic.surface_arrays(graph).index[(0, 0.0)]
     assert values[row] == pytest.approx(flow[row])
 

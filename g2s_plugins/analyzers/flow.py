@@ -82,10 +82,11 @@ class Params(PluginParams):
         "linear (weighted by how far along the path a node lies: no busy ring round each sampled source)"
     )
     across: Literal["node", "section", "lanes"] = Field(
-        "node", description="each polygon's flow: its own (node); the trips across the way's cross-section through it "
-        "(section: the polygons side by side across the way summed, so the lanes of a gate line or an escalator bank "
-        "and the polygons across a wide slope read as one way); or its own plus the trips across the lanes side by "
-        "side with its own when it stands in a lane (lanes; the navmesh route only); g2s_plugins.cross_sections"
+        "node", description="each polygon's flow: its own (node); the trips across the way's cross-section through it, "
+        "each counted once whichever polygon of the section it crosses (section: so the lanes of a gate line or an "
+        "escalator bank and the polygons across a wide slope read as one way); or, for a polygon standing in a lane, "
+        "the trips across its lane and the lanes side by side with it, the others keeping their own (lanes; the "
+        "navmesh route only); g2s_plugins.cross_sections"
     )
     section_gap: float = Field(
         2.5, gt=0, description="across: section or lanes: stretches of floor along a section at most this far apart "
@@ -108,12 +109,12 @@ class Params(PluginParams):
 @hookimpl
 def g2s_analyze(structure: nx.Graph, params: Params, context: RunContext) -> Mapping[int, float]:
     """Through-flow of the initial graph, averaged, summed or ranked per structure node."""
+    lanes = params.across == "lanes"
+    if lanes and context.navmesh is None:  # told before any flow is computed
+        raise PluginError("flow: across: lanes needs a navmesh (the navmesh graph builder); this run has none")
     flow = traffic.walking_flow(context.graph, max_sources=params.max_sources, seed=params.seed, ties=params.ties,
                                 scaling=params.scaling)
     if params.across != "node":
-        lanes = params.across == "lanes"
-        if lanes and context.navmesh is None:
-            raise PluginError("flow: across: lanes needs a navmesh (the navmesh graph builder); this run has none")
         flow = cross_sections.walking_across(
             context.graph, flow, params.max_sources, params.seed, params.section_gap, params.section_reach,
             context.agent.height, context.navmesh if lanes else None,
