@@ -139,8 +139,8 @@ class _Loader(yaml.SafeLoader):
     def compose_node(self, parent: yaml.Node | None, index: Any) -> yaml.Node:
         """The next node, refusing the one past :data:`MAX_YAML_NODES` (a list of 16 million numbers, 96 MB, took
         7.3 GB and 9 minutes to read)."""
-        self.nodes = getattr(self, "nodes", 0) + 1
-        if self.nodes > MAX_YAML_NODES:
+        self.nodes_read = getattr(self, "nodes_read", 0) + 1
+        if self.nodes_read > MAX_YAML_NODES:
             raise yaml.composer.ComposerError(None, None, f"more than {MAX_YAML_NODES:,} values (a config holds hundreds; "
                                               "long lists of points belong in a points file)", self.peek_event().start_mark)
         return super().compose_node(parent, index)
