@@ -64,7 +64,7 @@ def main(argv: list[str] | None = None) -> None:
                                                              ties=traffic.WALKING_TIES, scaling=traffic.WALKING_SCALING))
         shallow = depths <= args.depth
         radius = coverage.default_radius(result.context)
-        sizes = np.zeros(0, dtype=np.int64)
+        labels = sizes = np.zeros(0, dtype=np.int64)  # no recess: no row
         if shallow.any():
             labels = coverage.recess_row_labels(arrays.adjacency, entrances[shallow], radius)
             sizes = np.bincount(labels)[labels]
@@ -79,6 +79,7 @@ def main(argv: list[str] | None = None) -> None:
 
 
 def _medians(depths: np.ndarray, area: np.ndarray) -> str:
+    """How many dead ends, and the median of their ``depths`` (k,), m, and ``area`` (k,), m²."""
     return f"{len(depths)}: {np.median(depths):.2f} m, {np.median(area):.1f} m²" if len(depths) else "0"
 
 

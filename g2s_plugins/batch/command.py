@@ -78,14 +78,14 @@ def batch(args: argparse.Namespace) -> int:
         raise G2SError(f"batch: expected one or more levels after the configs ({' '.join(configs)})")
     if args.workers is not None and args.workers < 1:
         raise G2SError(f"--workers: expected an integer >= 1, got {args.workers}")
-    evaluators = [name.strip() for name in (args.evaluate or "").split(",") if name.strip()]
-    # `--evaluate "$EVALUATORS"` of an unset variable ran without them; a name twice was "two plugins write values named"
-    if args.evaluate is not None and (not evaluators or len(set(evaluators)) < len(evaluators)):
-        twice = next((name for name in evaluators if evaluators.count(name) > 1), None)
-        raise G2SError(f"--evaluate: {f'{twice} is given twice' if twice else 'no evaluator given'} "
-                       f"(expected some of: {', '.join(p.name for p in installed().plugins('evaluators'))})")
-    # named as the options the user gave (run_batch names its own parameters: "executor", "evaluators", "params.workers")
     registry = installed()
+    evaluators = [name.strip() for name in (args.evaluate or "").split(",") if name.strip()]
+    twice = next((name for name in evaluators if evaluators.count(name) > 1), None)
+    # `--evaluate "$EVALUATORS"` of an unset variable ran without them; a name twice was "two plugins write values named"
+    if args.evaluate is not None and (not evaluators or twice):
+        raise G2SError(f"--evaluate: {f'{twice} is given twice' if twice else 'no evaluator given'} "
+                       f"(expected some of: {', '.join(p.name for p in registry.plugins('evaluators'))})")
+    # named as the options the user gave (run_batch names its own parameters: "executor", "evaluators", "params.workers")
     executor = registry.get("executors", args.executor, key="--executor")
     for option in ("workers", "scheduler"):
         if getattr(args, option) is not None and option not in executor.params_model.model_fields:
