@@ -1280,18 +1280,15 @@ def _openings(candidates: np.ndarray, sides: np.ndarray, endpoints: np.ndarray, 
     if len(candidates) == 0:
         return np.zeros(0, dtype=np.int64)
     ends = endpoints[candidates].reshape(-1, 3)
-    _, point = np.unique(_point_keys(np.concatenate([ends, holes[0]])), return_inverse=True)
-    point = point.reshape(-1)
-    hole_of = np.full(int(point.max()) + 1, -1, dtype=np.int64)
-    hole_of[point[len(ends):]] = holes[1]
-    point = point[: len(ends)].reshape(-1, 2)
+    _, point = np.unique(_point_keys(ends), return_inverse=True)
+    point = point.reshape(-1, 2)
     _, pair = np.unique(sides, axis=0, return_inverse=True)
     pair = pair.reshape(-1)
-    n = len(hole_of)
     # a candidate joins its two end points, each taken within its region pair
-    _, node = np.unique(pair[:, None] * n + point, return_inverse=True)
+    _, node = np.unique(pair[:, None] * (int(point.max()) + 1) + point, return_inverse=True)
     node = node.reshape(-1, 2)
-    posts = _post_links(pair, hole_of[point], ends.reshape(-1, 2, 3), width[candidates], wall_to_wall)
+    hole = _holes_at(ends, *holes).reshape(-1, 2)
+    posts = _post_links(pair, hole, ends.reshape(-1, 2, 3), width[candidates], wall_to_wall)
     links = np.concatenate([node, np.column_stack([node[posts[:, 0], 0], node[posts[:, 1], 0]])])
     graph = sparse.coo_array((np.ones(len(links)), (links[:, 0], links[:, 1])), shape=(int(node.max()) + 1,) * 2)
     return csgraph.connected_components(graph, directed=False)[1][node[:, 0]].astype(np.int64)
