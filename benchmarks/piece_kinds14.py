@@ -178,22 +178,26 @@ def airlock_vestibule() -> SampleLevel:
     return _level("airlock_vestibule", parts, [_opening((-0.3, 0.0, 3.0), _W, 1.6), _opening((10.6, 0.0, 3.6), _E, 1.2)])
 
 
-def landing_side_door() -> SampleLevel:
-    """Room 8 x 6 m, walls 5 m, a west doorway; a stair along the east wall rising north with a landing 1 m up, and a
-    doorway in the east wall off the landing, over nothing outside."""
-    parts = _room(8.0, 6.0, {"W": [(2.2, 3.8, 2.2)], "E": [(2.0, 3.6, 3.2)]}, height=5.0)
-    parts.append(_box(8.0, 8.3, -SLAB, 1.0, 2.0, 3.6))  # the wall under the doorway, up to the landing
-    parts += [_box(6.8, 8.0, 0.0, 0.2 * (i + 1), 0.3 + 0.3 * i, 0.6 + 0.3 * i) for i in range(4)]
-    parts.append(_box(6.8, 8.0, 0.0, 1.0, 1.5, 3.8))  # the fifth tread and the landing
-    parts += [_box(6.8, 8.0, 0.0, 1.0 + 0.2 * (i + 1), 3.8 + 0.3 * i, 4.1 + 0.3 * i) for i in range(4)]
-    parts.append(_box(6.8, 8.0, 0.0, 2.0, 5.0, 6.0))  # the fifth tread and the top landing
-    return _level("landing_side_door", parts, [_opening((-0.3, 0.0, 3.0), _W, 1.6), _opening((8.3, 1.0, 2.8), _E, 1.6)])
+def landing_side_door(foot: float = 0.3) -> SampleLevel:
+    """Room 8 x 6 m, walls 5 m, a west doorway; a stair along the east wall rising north from ``foot`` m off the south
+    wall (at most 1.3) to a landing 1 m up, 2.3 m long, and on to a top landing 2 m up; a doorway in the east wall
+    off the landing, over nothing outside."""
+    door = foot + 1.7  # the east doorway's south side
+    parts = _room(8.0, 6.0, {"W": [(2.2, 3.8, 2.2)], "E": [(door, door + 1.6, 3.2)]}, height=5.0)
+    parts.append(_box(8.0, 8.3, -SLAB, 1.0, door, door + 1.6))  # the wall under the doorway, up to the landing
+    for base, top, end in ((foot, 0.0, foot + 3.5), (foot + 3.5, 1.0, 6.0)):  # a flight of four 0.2 m risers on 0.3 m
+        # treads, then a landing at the fifth riser's top
+        parts += [_box(6.8, 8.0, 0.0, top + 0.2 * (i + 1), base + 0.3 * i, base + 0.3 * (i + 1)) for i in range(4)]
+        parts.append(_box(6.8, 8.0, 0.0, top + 1.0, base + 1.2, end))
+    return _level("landing_side_door", parts,
+                  [_opening((-0.3, 0.0, 3.0), _W, 1.6), _opening((8.3, 1.0, door + 0.8), _E, 1.6)])
 
 
-def undulating_corridor() -> SampleLevel:
-    """Corridor 12 x 2.4 m, walls 4 m, both ends open; its floor undulates, 0.3 (1 - cos(2 pi x / 5)) m high."""
+def undulating_corridor(amplitude: float = 0.3, period: float = 5.0) -> SampleLevel:
+    """Corridor 12 x 2.4 m, walls 4 m, both ends open; its floor undulates, ``amplitude`` (1 - cos(2 pi x /
+    ``period``)) m high."""
     xs = np.arange(0.0, 12.001, 0.25)
-    ys = 0.3 * (1.0 - np.cos(2.0 * math.pi * xs / 5.0))
+    ys = amplitude * (1.0 - np.cos(2.0 * math.pi * xs / period))
     parts = _corridor(12.0, height=4.0, floor=False)
     parts += [_hull([[x, y, z] for x, top in ((xa, ya), (xb, yb)) for y in (-SLAB, top) for z in (0.0, 2.4)])
               for xa, ya, xb, yb in zip(xs[:-1], ys[:-1], xs[1:], ys[1:])]

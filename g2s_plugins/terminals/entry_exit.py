@@ -167,6 +167,10 @@ grows by twice it: 0.5 steps (0.025 m for the map-piece agent) is 8 times the fo
 (:data:`_REFINE_ROUNDS`); at 2 steps the 0.64 m chamfers of ``chamfered_platform`` measured 0.88 m,
 wider than the agent (docs/entry_exit.md)."""
 
+_END_REACH_STEPS = 2.0
+"""Search steps: how far past a found edge point :func:`_onto_floor_end` looks for the floor going on (0.1 m for
+the map-piece agent, over twice the largest shortfall measured, 0.04 m)."""
+
 _SNAP_SLACK = 0.01
 """Metres added to the snap's downward reach (2 x ``snap_distance``): Recast lifts a navmesh corner to the
 highest span around it, up to the climb above the floor, and single precision and a polygon tilted
@@ -788,6 +792,35 @@ def _onto_ground_below(points: np.ndarray, out: np.ndarray, depth: np.ndarray, c
     return lowered
 
 
+def _onto_floor_end(first: np.ndarray, last: np.ndarray, out: np.ndarray, caster: RayCaster,
+                    s: _Settings) -> tuple[np.ndarray, np.ndarray]:
+    """(n,3) (n,3): the ends ``first`` and ``last`` of edges moved out in plan onto the floor's end where the floor
+    goes on past both, by the lesser of the two shortfalls and at most :data:`_END_REACH_STEPS` search steps.
+
+    An edge point lies where the probes along its sample's normal stop finding floor, in the plane of the surface
+    under the sample. On a floor curving up into the piece (an undulating corridor's end in a trough) that plane,
+    carried out to the edge, passes under the floor there, and the last probes cross the slab's end face below the
+    floor's top: the edge is found a few centimetres short (0.025-0.04 m, against the bisection's 0.003 on a plane),
+    and the extension's test that the floor ends half a search step past the edge line finds floor and stops at
+    once (docs/entry_exit.md, "A fourteenth round of piece kinds"). Such a shortfall lies along the whole edge;
+    where the floor's end is ragged, the line fitted through it lies inside it at one end only, and is left as it
+    is. Probed straight down from the climb above, every quarter search step out along the horizontal part of
+    ``out`` (n,3); ground counts from a search step below the end up to the climb above it (not a lower floor
+    beyond a step down). On a plane no probe finds floor: the ends stay.
+    """
+    horizontal = _unit(out * np.array([1.0, 0.0, 1.0]))
+    offsets = 0.25 * s.delta * np.arange(1, int(round(4 * _END_REACH_STEPS)) + 1)
+    ends = np.concatenate([first, last])
+    away = np.concatenate([horizontal, horizontal])
+    probes = (ends[:, None, :] + away[:, None, :] * offsets[None, :, None] + UP * s.climb).reshape(-1, 3)
+    hit = caster.first_hits(probes, np.broadcast_to(-UP, probes.shape).copy())
+    ground = np.isfinite(hit.distance) & (hit.distance <= s.climb + s.delta) & _walkable(caster, hit.face, s)
+    run = np.cumprod(ground.reshape(len(ends), -1), axis=1).sum(axis=1)  # leading probes on floor, each end
+    shortfall = np.where(run > 0, offsets[np.maximum(run - 1, 0)], 0.0)
+    moved = np.minimum(shortfall[: len(first)], shortfall[len(first):])[:, None] * horizontal
+    return first + moved, last + moved
+
+
 def _extend(kept: list[_Edge], caster: RayCaster, s: _Settings, depth: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """The ends of each opening, extended along its edge (one batched pass per test): (n,3) and (n,3).
 
@@ -805,8 +838,8 @@ def _extend(kept: list[_Edge], caster: RayCaster, s: _Settings, depth: np.ndarra
     inset = _INSET_STEPS * s.delta  # candidates stand this far inside the edge line
     first = _onto_grazed_step(np.array([e.first for e in kept]), out, caster, s)
     last = _onto_grazed_step(np.array([e.last for e in kept]), out, caster, s)
-    first = _onto_ground_below(first, out, depth, caster, s)
-    last = _onto_ground_below(last, out, depth, caster, s)
+    first, last = _onto_floor_end(_onto_ground_below(first, out, depth, caster, s),
+                                  _onto_ground_below(last, out, depth, caster, s), out, caster, s)
     along = _unit(np.cross(nrm, out))  # walking direction along the edge (interior on the left)
     n_ext = max(1, int(math.ceil((2.0 * s.radius + s.step) / s.delta)))
     steps = s.delta * np.arange(1, n_ext + 1)
