@@ -626,3 +626,49 @@ def test_a_rough_floors_end_is_one_opening(seed: int, rough: float, yaw: float) 
         best = min(found, key=lambda o: float(np.linalg.norm(np.subtract(o.position, end)[[0, 2]])))
         assert float(np.linalg.norm(np.subtract(best.position, end)[[0, 2]])) <= 0.1
         assert best.width == pytest.approx(3.0, abs=0.1)
+
+
+def _undulating_corridor(amplitude: float, period: float, length: float = 12.0) -> tuple[trimesh.Trimesh, np.ndarray]:
+    """A corridor ``length`` m long and 2.4 m wide, walls 4 m, open at both ends, whose floor rises and falls as
+    ``amplitude`` (1 - cos(2 pi x / ``period``)) m, in 0.25 m facets: at its west end the floor curves up into it;
+    and (2, 3) its ends' midpoints."""
+    xs = np.arange(0.0, length + 1e-9, 0.25)
+    ys = amplitude * (1.0 - np.cos(2.0 * math.pi * xs / period))
+    facets = [_hull([[x, y, z] for x, top in ((xa, ya), (xb, yb)) for y in (-SLAB, top) for z in (0.0, 2.4)])
+              for xa, ya, xb, yb in zip(xs[:-1], ys[:-1], xs[1:], ys[1:])]
+    mesh = trimesh.util.concatenate(facets + [_box(0, length, -SLAB, 4.0, -0.3, 0.0), _box(0, length, -SLAB, 4.0, 2.4, 2.7)])
+    return mesh, np.array([[0.0, 0.0, 1.2], [length, ys[-1], 1.2]])
+
+
+@pytest.mark.parametrize("amplitude, period, yaw", [(0.3, 5.0, 0.0), (0.3, 5.0, 22.0), (0.4, 4.0, 45.0)])
+def test_an_end_where_the_floor_curves_up_into_the_piece_is_measured_whole(amplitude: float, period: float,
+                                                                          yaw: float) -> None:
+    # The plane under a sample, carried out to the edge, passes under a floor curving up into the piece: the edge
+    # was found 0.025-0.04 m short of the floor's end, the extension's "the floor ends just past the edge" found
+    # floor, and the end measured only its samples' span, 1.88-1.91 m of 2.4 (fourteenth round's
+    # `undulating_corridor`). The edge's ends are moved out onto the floor's end first.
+    mesh, ends = _undulating_corridor(amplitude, period)
+    turn = pieces.yaw_about_centre(mesh, yaw)
+    mesh.apply_transform(turn)
+    found = _detect(mesh).openings
+    assert len(found) == 2
+    for end in trimesh.transform_points(ends, turn):
+        best = min(found, key=lambda o: float(np.linalg.norm(np.subtract(o.position, end)[[0, 2]])))
+        assert float(np.linalg.norm(np.subtract(best.position, end)[[0, 2]])) <= 0.1
+        assert best.width == pytest.approx(2.4, abs=0.05)
+
+
+def test_an_edges_ends_move_onto_the_floors_end_by_the_least_shortfall_along_it() -> None:
+    # A slab whose end is at x = 0 (floor over x >= 0, top at 0), with two arms reaching on to x = -1 at z < 1 and
+    # z > 3 (a recess between them): ends found 0.03 and 0.06 m short move out by the least shortfall of the ends
+    # and the middle, a quarter search step at a time (0.025 m); ends on the floor's end, over a ragged end where
+    # one of them lies past it, or beside the recess's arms (the floor going on past the ends alone) stay.
+    caster = RayCaster(trimesh.util.concatenate([_box(0.0, 4.0, -SLAB, 0.0, 0.0, 4.0), _box(-1.0, 0.0, -SLAB, 0.0, 0.0, 1.0),
+                                                 _box(-1.0, 0.0, -SLAB, 0.0, 3.0, 4.0)]))
+    s = entry_exit._settings(entry_exit.Params(), CONFIG.agent)
+    out = np.array([[-1.0, 0.0, 0.0]] * 4)
+    first = np.array([[0.03, 0.0, 1.5], [0.0, 0.0, 1.5], [0.03, 0.0, 1.5], [0.0, 0.0, 0.9]])
+    last = np.array([[0.06, 0.0, 2.5], [0.0, 0.0, 2.5], [-0.02, 0.0, 2.5], [0.0, 0.0, 3.1]])
+    moved_first, moved_last = entry_exit._onto_floor_end(first, last, out, caster, s)
+    assert np.allclose(moved_first - first, [[-0.025, 0, 0], [0, 0, 0], [0, 0, 0], [0, 0, 0]])
+    assert np.allclose(moved_last - last, moved_first - first)

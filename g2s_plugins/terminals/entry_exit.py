@@ -795,7 +795,8 @@ def _onto_ground_below(points: np.ndarray, out: np.ndarray, depth: np.ndarray, c
 def _onto_floor_end(first: np.ndarray, last: np.ndarray, out: np.ndarray, caster: RayCaster,
                     s: _Settings) -> tuple[np.ndarray, np.ndarray]:
     """(n,3) (n,3): the ends ``first`` and ``last`` of edges moved out in plan onto the floor's end where the floor
-    goes on past both, by the lesser of the two shortfalls and at most :data:`_END_REACH_STEPS` search steps.
+    goes on past them and past the edge's middle, by the least of the three shortfalls and at most
+    :data:`_END_REACH_STEPS` search steps.
 
     An edge point lies where the probes along its sample's normal stop finding floor, in the plane of the surface
     under the sample. On a floor curving up into the piece (an undulating corridor's end in a trough) that plane,
@@ -803,21 +804,22 @@ def _onto_floor_end(first: np.ndarray, last: np.ndarray, out: np.ndarray, caster
     floor's top: the edge is found a few centimetres short (0.025-0.04 m, against the bisection's 0.003 on a plane),
     and the extension's test that the floor ends half a search step past the edge line finds floor and stops at
     once (docs/entry_exit.md, "A fourteenth round of piece kinds"). Such a shortfall lies along the whole edge;
-    where the floor's end is ragged, the line fitted through it lies inside it at one end only, and is left as it
-    is. Probed straight down from the climb above, every quarter search step out along the horizontal part of
+    where the floor's end is ragged the line fitted through it lies inside it at one end only, and where the floor
+    turns out past the edge's ends (a recess) the floor goes on past the ends alone: both are left as they are.
+    Probed straight down from the climb above, every quarter search step out along the horizontal part of
     ``out`` (n,3); ground counts from a search step below the end up to the climb above it (not a lower floor
     beyond a step down). On a plane no probe finds floor: the ends stay.
     """
     horizontal = _unit(out * np.array([1.0, 0.0, 1.0]))
     offsets = 0.25 * s.delta * np.arange(1, int(round(4 * _END_REACH_STEPS)) + 1)
-    ends = np.concatenate([first, last])
-    away = np.concatenate([horizontal, horizontal])
+    ends = np.concatenate([first, 0.5 * (first + last), last])
+    away = np.concatenate([horizontal, horizontal, horizontal])
     probes = (ends[:, None, :] + away[:, None, :] * offsets[None, :, None] + UP * s.climb).reshape(-1, 3)
     hit = caster.first_hits(probes, np.broadcast_to(-UP, probes.shape).copy())
     ground = np.isfinite(hit.distance) & (hit.distance <= s.climb + s.delta) & _walkable(caster, hit.face, s)
-    run = np.cumprod(ground.reshape(len(ends), -1), axis=1).sum(axis=1)  # leading probes on floor, each end
-    shortfall = np.where(run > 0, offsets[np.maximum(run - 1, 0)], 0.0)
-    moved = np.minimum(shortfall[: len(first)], shortfall[len(first):])[:, None] * horizontal
+    run = np.cumprod(ground.reshape(len(ends), -1), axis=1).sum(axis=1)  # leading probes on floor, each point
+    shortfall = np.where(run > 0, offsets[np.maximum(run - 1, 0)], 0.0).reshape(3, -1)
+    moved = shortfall.min(axis=0)[:, None] * horizontal
     return first + moved, last + moved
 
 
