@@ -1108,12 +1108,33 @@ def piece_frame(mesh: trimesh.Trimesh) -> np.ndarray:
 
 
 def corners_below(corners: np.ndarray, top: float) -> np.ndarray:
-    """(k, 3) the corners of the triangles ``corners`` (F, 3, 3) that reach down to ``top`` (m) or lower.
+    """(3 k, 3) the corners of the triangles ``corners`` (F, 3, 3) cut to their parts at ``top`` (m) or lower, three
+    a triangle (a triangle with one corner above ``top`` leaves two).
 
     The piece's extent at an opening is that of what the agent meets there: ``top`` is its head over
-    the opening, and eaves, a roof or an upper storey overhanging the opening do not count.
+    the opening, and eaves, a roof or an upper storey overhanging the opening do not count; nor does the part of a
+    face above the head: a wall leaning out 20 degrees over a door, 3 m high, counted whole, put the door 1.09 m
+    inside the extent, and it was dropped (docs/entry_exit.md, "A fourteenth round of piece kinds"). O(F).
     """
-    return corners[corners[:, :, 1].min(axis=1) <= top].reshape(-1, 3)
+    tri = corners[corners[:, :, 1].min(axis=1) <= top]
+    above = tri[:, :, 1] > top
+    count = above.sum(axis=1)
+
+    def rolled(rows: np.ndarray, first: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        order = (first[:, None] + np.arange(3)[None, :]) % 3  # each triangle's corners from ``first`` on
+        t = np.take_along_axis(tri[rows], order[:, :, None], axis=1)
+        return t[:, 0], t[:, 1], t[:, 2]
+
+    def crossing(p: np.ndarray, q: np.ndarray) -> np.ndarray:  # where p (below) -> q (above) crosses ``top``
+        return p + ((top - p[:, 1]) / (q[:, 1] - p[:, 1]))[:, None] * (q - p)
+
+    one, two = np.flatnonzero(count == 1), np.flatnonzero(count == 2)
+    a, b, c = rolled(one, (np.argmax(above[one], axis=1) + 1) % 3)  # c above: the quad a, b, (b c), (a c)
+    bc, ac = crossing(b, c), crossing(a, c)
+    d, e, f = rolled(two, np.argmin(above[two], axis=1))  # d below: the triangle d, (d e), (d f)
+    parts = [tri[count == 0], np.stack([a, b, bc], axis=1), np.stack([a, bc, ac], axis=1),
+             np.stack([d, crossing(d, e), crossing(d, f)], axis=1)]
+    return np.concatenate(parts).reshape(-1, 3)
 
 
 def straight_ahead(vertices: np.ndarray, a: np.ndarray, b: np.ndarray, heading: np.ndarray, margin: float) -> np.ndarray:
