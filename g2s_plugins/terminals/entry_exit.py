@@ -160,6 +160,11 @@ _SAME_WIDTH = 1e-4
 """Metres: widths this close are equal (an opening between jambs measures their distance to the ray
 caster's single precision: a 0.8 m door 0.8000011 m)."""
 
+_SAME_HEIGHT = 1e-4
+"""Metres: heights this close are equal. Recast's polygon corners lie on whole cells in single precision (0.45000005 m
+for 0.45): a flight's floor whose lowest corner lies exactly the climb above the main floor's (two 0.2 m risers)
+measured 0.40000005 m, and its landing's door was missed (docs/entry_exit.md, "A fourteenth round of piece kinds")."""
+
 _INSET_STEPS = 0.5
 """Search steps: how far inside the edge line the extension's candidates stand. Past an open corner the
 floor goes on under them for about this far again (a chamfer's 135-degree corner), so the measured width
@@ -1006,7 +1011,7 @@ def main_floor(
     height = np.asarray(navmesh.vertices, dtype=np.float64)[np.asarray(navmesh.polygons)[:, 0], 1]
     lowest = np.full(len(area), np.inf)
     np.minimum.at(lowest, label, height)
-    kept = leaves & ~roof & (np.abs(lowest - lowest[best]) <= float(agent.max_climb))
+    kept = leaves & ~roof & (np.abs(lowest - lowest[best]) <= float(agent.max_climb) + _SAME_HEIGHT)
     kept[best] = True
     return kept[label]
 
