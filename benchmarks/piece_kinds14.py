@@ -18,6 +18,7 @@ import trimesh
 from piece_kinds10 import SLAB, _box, _hull, _room
 from piece_kinds10 import _level as _level10
 from piece_kinds10 import kinds_by_name, main as _run_kinds
+from piece_kinds13 import height_field
 
 from g2s_plugins.samples.levels import SampleLevel, _opening
 from g2s_plugins.samples.pieces import _E, _N, _S, _W
@@ -99,25 +100,13 @@ def floor_gap_corridor(gap: float = 0.3) -> SampleLevel:
     return _level("floor_gap_corridor", parts, [_opening((0.0, 0.0, 1.2), _W, 2.4), _opening((12.0, 0.0, 1.2), _E, 2.4)])
 
 
-def _height_field(xs: np.ndarray, zs: np.ndarray, heights: np.ndarray) -> trimesh.Trimesh:
-    """The surface over the grid ``xs`` x ``zs`` (metres) at ``heights`` (len(xs), len(zs)), normals up."""
-    vertices = [[x, heights[i, j], z] for i, x in enumerate(xs) for j, z in enumerate(zs)]
-    n = len(zs)
-    faces = []
-    for i in range(len(xs) - 1):
-        for j in range(n - 1):
-            a, b, c, d = i * n + j, i * n + j + 1, (i + 1) * n + j, (i + 1) * n + j + 1
-            faces += [[a, b, d], [a, d, c]]
-    return trimesh.Trimesh(vertices=vertices, faces=faces, process=False)
-
-
 def scree_cave_mouth(seed: int = 0) -> SampleLevel:
     """A scree apron rising 8.5 degrees east to a cliff face, rough (0.12 m, ``seed``) with four boulders, between
     rock walls; a dead-end cave in the cliff; the apron's foot (west) open."""
     rng = np.random.default_rng(seed)
     xs, zs = np.arange(0.0, 10.01, 0.5), np.arange(0.0, 8.01, 0.5)
     heights = 0.15 * xs[:, None] + rng.uniform(0.0, 0.12, (len(xs), len(zs)))
-    parts = [_height_field(xs, zs, heights), _box(0.0, 10.0, -SLAB, -0.01, 0.0, 8.0),
+    parts = [height_field(xs, zs, heights), _box(0.0, 10.0, -SLAB, -0.01, 0.0, 8.0),
              _box(0.0, 10.0, -SLAB, 4.0, -0.6, 0.0), _box(0.0, 10.0, -SLAB, 4.0, 8.0, 8.6)]
     for x, z, size, tall in ((3.5, 2.0, 1.0, 0.8), (5.0, 6.0, 1.2, 1.0), (6.5, 3.5, 0.8, 0.6), (7.5, 1.0, 1.0, 0.9)):
         base = 0.15 * x

@@ -618,6 +618,12 @@ def test_a_rough_floors_end_is_one_opening(seed: int, rough: float, yaw: float) 
     # riser; the end was fitted in 3D and taken for a corner (thirteenth round's `rough_floor_tunnel`, one end at
     # some yaws on both routes). Where the ground at the edge does not jump, it is no riser.
     mesh, ends = _rough_tunnel(seed, rough)
+    _assert_ends_turned(mesh, ends, yaw, 3.0, 0.1)
+
+
+def _assert_ends_turned(mesh: trimesh.Trimesh, ends: np.ndarray, yaw: float, width: float, tolerance: float) -> None:
+    """``mesh`` turned by ``yaw`` about its centre gives two openings, one within 0.1 m in plan of each of its (2, 3)
+    ``ends`` (turned with it), ``width`` wide within ``tolerance`` m."""
     turn = pieces.yaw_about_centre(mesh, yaw)
     mesh.apply_transform(turn)
     found = _detect(mesh).openings
@@ -625,7 +631,7 @@ def test_a_rough_floors_end_is_one_opening(seed: int, rough: float, yaw: float) 
     for end in trimesh.transform_points(ends, turn):
         best = min(found, key=lambda o: float(np.linalg.norm(np.subtract(o.position, end)[[0, 2]])))
         assert float(np.linalg.norm(np.subtract(best.position, end)[[0, 2]])) <= 0.1
-        assert best.width == pytest.approx(3.0, abs=0.1)
+        assert best.width == pytest.approx(width, abs=tolerance)
 
 
 def _undulating_corridor(amplitude: float, period: float, length: float = 12.0) -> tuple[trimesh.Trimesh, np.ndarray]:
@@ -648,14 +654,7 @@ def test_an_end_where_the_floor_curves_up_into_the_piece_is_measured_whole(ampli
     # floor, and the end measured only its samples' span, 1.88-1.91 m of 2.4 (fourteenth round's
     # `undulating_corridor`). The edge's ends are moved out onto the floor's end first.
     mesh, ends = _undulating_corridor(amplitude, period)
-    turn = pieces.yaw_about_centre(mesh, yaw)
-    mesh.apply_transform(turn)
-    found = _detect(mesh).openings
-    assert len(found) == 2
-    for end in trimesh.transform_points(ends, turn):
-        best = min(found, key=lambda o: float(np.linalg.norm(np.subtract(o.position, end)[[0, 2]])))
-        assert float(np.linalg.norm(np.subtract(best.position, end)[[0, 2]])) <= 0.1
-        assert best.width == pytest.approx(2.4, abs=0.05)
+    _assert_ends_turned(mesh, ends, yaw, 2.4, 0.05)
 
 
 def test_an_edges_ends_move_onto_the_floors_end_by_the_least_shortfall_along_it() -> None:
