@@ -60,21 +60,26 @@ def bead_curtain_door() -> SampleLevel:
     return _level("bead_curtain_door", parts, [_opening((-0.3, 0.0, 3.0), _W, 1.6)])
 
 
-def rough_floor_tunnel(seed: int = 0, rough: float = 0.2) -> SampleLevel:
-    """Tunnel 12 m long and 3.0 m wide, roof 3.2 m up; its floor a height field on a 0.5 m grid, heights uniform in
-    [0, ``rough``] m drawn at random (``seed``), on a solid base; both ends open."""
-    rng = np.random.default_rng(seed)
-    xs, zs = np.arange(0.0, 12.01, 0.5), np.arange(0.0, 3.01, 0.5)
-    heights = rng.uniform(0.0, rough, (len(xs), len(zs)))
+def height_field(xs: np.ndarray, zs: np.ndarray, heights: np.ndarray) -> trimesh.Trimesh:
+    """The surface over the grid ``xs`` x ``zs`` (metres) at ``heights`` (len(xs), len(zs)), two triangles a cell,
+    normals up (+Y)."""
     vertices = [[x, heights[i, j], z] for i, x in enumerate(xs) for j, z in enumerate(zs)]
     n = len(zs)
     faces = []
     for i in range(len(xs) - 1):
         for j in range(n - 1):
             a, b, c, d = i * n + j, i * n + j + 1, (i + 1) * n + j, (i + 1) * n + j + 1
-            faces += [[a, b, d], [a, d, c]]  # normals up (+Y)
-    floor = trimesh.Trimesh(vertices=vertices, faces=faces, process=False)
-    parts = [floor, _box(0.0, 12.0, -SLAB, -0.01, 0.0, 3.0),
+            faces += [[a, b, d], [a, d, c]]
+    return trimesh.Trimesh(vertices=vertices, faces=faces, process=False)
+
+
+def rough_floor_tunnel(seed: int = 0, rough: float = 0.2) -> SampleLevel:
+    """Tunnel 12 m long and 3.0 m wide, roof 3.2 m up; its floor a height field on a 0.5 m grid, heights uniform in
+    [0, ``rough``] m drawn at random (``seed``), on a solid base; both ends open."""
+    rng = np.random.default_rng(seed)
+    xs, zs = np.arange(0.0, 12.01, 0.5), np.arange(0.0, 3.01, 0.5)
+    heights = rng.uniform(0.0, rough, (len(xs), len(zs)))
+    parts = [height_field(xs, zs, heights), _box(0.0, 12.0, -SLAB, -0.01, 0.0, 3.0),
              _box(0.0, 12.0, -SLAB, 3.2, -0.3, 0.0), _box(0.0, 12.0, -SLAB, 3.2, 3.0, 3.3),
              _box(0.0, 12.0, 3.2, 3.4, -0.3, 3.3)]
     return _level("rough_floor_tunnel", parts, [_opening((x, float(heights[i].mean()), 1.5), heading, 3.0)

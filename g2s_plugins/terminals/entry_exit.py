@@ -160,12 +160,21 @@ _SAME_WIDTH = 1e-4
 """Metres: widths this close are equal (an opening between jambs measures their distance to the ray
 caster's single precision: a 0.8 m door 0.8000011 m)."""
 
+_SAME_HEIGHT = 1e-4
+"""Metres: heights this close are equal. Recast's polygon corners lie on whole cells in single precision (0.45000005 m
+for 0.45): a flight's floor whose lowest corner lies exactly the climb above the main floor's (two 0.2 m risers)
+measured 0.40000005 m, and its landing's door was missed (docs/entry_exit.md, "A fourteenth round of piece kinds")."""
+
 _INSET_STEPS = 0.5
 """Search steps: how far inside the edge line the extension's candidates stand. Past an open corner the
 floor goes on under them for about this far again (a chamfer's 135-degree corner), so the measured width
 grows by twice it: 0.5 steps (0.025 m for the map-piece agent) is 8 times the found edge's precision
 (:data:`_REFINE_ROUNDS`); at 2 steps the 0.64 m chamfers of ``chamfered_platform`` measured 0.88 m,
 wider than the agent (docs/entry_exit.md)."""
+
+_END_REACH_STEPS = 2.0
+"""Search steps: how far past a found edge point :func:`_onto_floor_end` looks for the floor going on (0.1 m for
+the map-piece agent, over twice the largest shortfall measured, 0.04 m)."""
 
 _SNAP_SLACK = 0.01
 """Metres added to the snap's downward reach (2 x ``snap_distance``): Recast lifts a navmesh corner to the
@@ -788,6 +797,37 @@ def _onto_ground_below(points: np.ndarray, out: np.ndarray, depth: np.ndarray, c
     return lowered
 
 
+def _onto_floor_end(first: np.ndarray, last: np.ndarray, out: np.ndarray, caster: RayCaster,
+                    s: _Settings) -> tuple[np.ndarray, np.ndarray]:
+    """(n,3) (n,3): the ends ``first`` and ``last`` of edges moved out in plan onto the floor's end where the floor
+    goes on past them and past the edge's middle, by the least of the three shortfalls and at most
+    :data:`_END_REACH_STEPS` search steps.
+
+    An edge point lies where the probes along its sample's normal stop finding floor, in the plane of the surface
+    under the sample. On a floor curving up into the piece (an undulating corridor's end in a trough) that plane,
+    carried out to the edge, passes under the floor there, and the last probes cross the slab's end face below the
+    floor's top: the edge is found a few centimetres short (0.025-0.04 m, against the bisection's 0.003 on a plane),
+    and the extension's test that the floor ends half a search step past the edge line finds floor and stops at
+    once (docs/entry_exit.md, "A fourteenth round of piece kinds"). Such a shortfall lies along the whole edge;
+    where the floor's end is ragged the line fitted through it lies inside it at one end only, and where the floor
+    turns out past the edge's ends (a recess) the floor goes on past the ends alone: both are left as they are.
+    Probed straight down from the climb above, every quarter search step out along the horizontal part of
+    ``out`` (n,3); ground counts from a search step below the end up to the climb above it (not a lower floor
+    beyond a step down). On a plane no probe finds floor: the ends stay.
+    """
+    horizontal = _unit(out * np.array([1.0, 0.0, 1.0]))
+    offsets = 0.25 * s.delta * np.arange(1, int(round(4 * _END_REACH_STEPS)) + 1)
+    ends = np.concatenate([first, 0.5 * (first + last), last])
+    away = np.concatenate([horizontal, horizontal, horizontal])
+    probes = (ends[:, None, :] + away[:, None, :] * offsets[None, :, None] + UP * s.climb).reshape(-1, 3)
+    hit = caster.first_hits(probes, np.broadcast_to(-UP, probes.shape).copy())
+    ground = np.isfinite(hit.distance) & (hit.distance <= s.climb + s.delta) & _walkable(caster, hit.face, s)
+    run = np.cumprod(ground.reshape(len(ends), -1), axis=1).sum(axis=1)  # leading probes on floor, each point
+    shortfall = np.where(run > 0, offsets[np.maximum(run - 1, 0)], 0.0).reshape(3, -1)
+    moved = shortfall.min(axis=0)[:, None] * horizontal
+    return first + moved, last + moved
+
+
 def _extend(kept: list[_Edge], caster: RayCaster, s: _Settings, depth: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """The ends of each opening, extended along its edge (one batched pass per test): (n,3) and (n,3).
 
@@ -805,8 +845,8 @@ def _extend(kept: list[_Edge], caster: RayCaster, s: _Settings, depth: np.ndarra
     inset = _INSET_STEPS * s.delta  # candidates stand this far inside the edge line
     first = _onto_grazed_step(np.array([e.first for e in kept]), out, caster, s)
     last = _onto_grazed_step(np.array([e.last for e in kept]), out, caster, s)
-    first = _onto_ground_below(first, out, depth, caster, s)
-    last = _onto_ground_below(last, out, depth, caster, s)
+    first, last = _onto_floor_end(_onto_ground_below(first, out, depth, caster, s),
+                                  _onto_ground_below(last, out, depth, caster, s), out, caster, s)
     along = _unit(np.cross(nrm, out))  # walking direction along the edge (interior on the left)
     n_ext = max(1, int(math.ceil((2.0 * s.radius + s.step) / s.delta)))
     steps = s.delta * np.arange(1, n_ext + 1)
@@ -971,7 +1011,7 @@ def main_floor(
     height = np.asarray(navmesh.vertices, dtype=np.float64)[np.asarray(navmesh.polygons)[:, 0], 1]
     lowest = np.full(len(area), np.inf)
     np.minimum.at(lowest, label, height)
-    kept = leaves & ~roof & (np.abs(lowest - lowest[best]) <= float(agent.max_climb))
+    kept = leaves & ~roof & (np.abs(lowest - lowest[best]) <= float(agent.max_climb) + _SAME_HEIGHT)
     kept[best] = True
     return kept[label]
 
@@ -1073,12 +1113,33 @@ def piece_frame(mesh: trimesh.Trimesh) -> np.ndarray:
 
 
 def corners_below(corners: np.ndarray, top: float) -> np.ndarray:
-    """(k, 3) the corners of the triangles ``corners`` (F, 3, 3) that reach down to ``top`` (m) or lower.
+    """(3 k, 3) the corners of the triangles ``corners`` (F, 3, 3) cut to their parts at ``top`` (m) or lower, three
+    a triangle (a triangle with one corner above ``top`` leaves two).
 
     The piece's extent at an opening is that of what the agent meets there: ``top`` is its head over
-    the opening, and eaves, a roof or an upper storey overhanging the opening do not count.
+    the opening, and eaves, a roof or an upper storey overhanging the opening do not count; nor does the part of a
+    face above the head: a wall leaning out 20 degrees over a door, 3 m high, counted whole, put the door 1.09 m
+    inside the extent, and it was dropped (docs/entry_exit.md, "A fourteenth round of piece kinds"). O(F).
     """
-    return corners[corners[:, :, 1].min(axis=1) <= top].reshape(-1, 3)
+    tri = corners[corners[:, :, 1].min(axis=1) <= top]
+    above = tri[:, :, 1] > top
+    count = above.sum(axis=1)
+
+    def rolled(rows: np.ndarray, first: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        order = (first[:, None] + np.arange(3)[None, :]) % 3  # each triangle's corners from ``first`` on
+        t = np.take_along_axis(tri[rows], order[:, :, None], axis=1)
+        return t[:, 0], t[:, 1], t[:, 2]
+
+    def crossing(p: np.ndarray, q: np.ndarray) -> np.ndarray:  # where p (below) -> q (above) crosses ``top``
+        return p + ((top - p[:, 1]) / (q[:, 1] - p[:, 1]))[:, None] * (q - p)
+
+    one, two = np.flatnonzero(count == 1), np.flatnonzero(count == 2)
+    a, b, c = rolled(one, (np.argmax(above[one], axis=1) + 1) % 3)  # c above: the quad a, b, (b c), (a c)
+    bc, ac = crossing(b, c), crossing(a, c)
+    d, e, f = rolled(two, np.argmin(above[two], axis=1))  # d below: the triangle d, (d e), (d f)
+    parts = [tri[count == 0], np.stack([a, b, bc], axis=1), np.stack([a, bc, ac], axis=1),
+             np.stack([d, crossing(d, e), crossing(d, f)], axis=1)]
+    return np.concatenate(parts).reshape(-1, 3)
 
 
 def straight_ahead(vertices: np.ndarray, a: np.ndarray, b: np.ndarray, heading: np.ndarray, margin: float) -> np.ndarray:
