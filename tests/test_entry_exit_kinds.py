@@ -17,9 +17,12 @@ from g2s_plugins._raycasting import RayCaster
 from g2s_plugins.recast import RecastParams, build_navmesh
 from g2s_plugins.samples import outdoor, pieces
 from g2s_plugins.terminals import entry_exit
+from tests.conftest import benchmark
 
 CONFIG = load_config(PRESETS_DIR / "map_piece.yaml")
 SLAB, TALL = 0.2, 3.0
+PIECES14 = benchmark("piece_kinds14")
+"""The fourteenth round's piece kinds (benchmarks/piece_kinds14.py), whose faults tests below pin."""
 
 
 def _detect(mesh: trimesh.Trimesh) -> entry_exit.Detection:
@@ -634,18 +637,6 @@ def _assert_ends_turned(mesh: trimesh.Trimesh, ends: np.ndarray, yaw: float, wid
         assert best.width == pytest.approx(width, abs=tolerance)
 
 
-def _undulating_corridor(amplitude: float, period: float, length: float = 12.0) -> tuple[trimesh.Trimesh, np.ndarray]:
-    """A corridor ``length`` m long and 2.4 m wide, walls 4 m, open at both ends, whose floor rises and falls as
-    ``amplitude`` (1 - cos(2 pi x / ``period``)) m, in 0.25 m facets: at its west end the floor curves up into it;
-    and (2, 3) its ends' midpoints."""
-    xs = np.arange(0.0, length + 1e-9, 0.25)
-    ys = amplitude * (1.0 - np.cos(2.0 * math.pi * xs / period))
-    facets = [_hull([[x, y, z] for x, top in ((xa, ya), (xb, yb)) for y in (-SLAB, top) for z in (0.0, 2.4)])
-              for xa, ya, xb, yb in zip(xs[:-1], ys[:-1], xs[1:], ys[1:])]
-    mesh = trimesh.util.concatenate(facets + [_box(0, length, -SLAB, 4.0, -0.3, 0.0), _box(0, length, -SLAB, 4.0, 2.4, 2.7)])
-    return mesh, np.array([[0.0, 0.0, 1.2], [length, ys[-1], 1.2]])
-
-
 @pytest.mark.parametrize("amplitude, period, yaw", [(0.3, 5.0, 0.0), (0.3, 5.0, 22.0), (0.4, 4.0, 45.0)])
 def test_an_end_where_the_floor_curves_up_into_the_piece_is_measured_whole(amplitude: float, period: float,
                                                                           yaw: float) -> None:
@@ -653,14 +644,14 @@ def test_an_end_where_the_floor_curves_up_into_the_piece_is_measured_whole(ampli
     # was found 0.025-0.04 m short of the floor's end, the extension's "the floor ends just past the edge" found
     # floor, and the end measured only its samples' span, 1.88-1.91 m of 2.4 (fourteenth round's
     # `undulating_corridor`). The edge's ends are moved out onto the floor's end first.
-    mesh, ends = _undulating_corridor(amplitude, period)
-    _assert_ends_turned(mesh, ends, yaw, 2.4, 0.05)
+    corridor = PIECES14.undulating_corridor(amplitude, period)
+    _assert_ends_turned(corridor.mesh, np.array([o.position for o in corridor.openings]), yaw, 2.4, 0.05)
 
 
 def test_an_edges_ends_move_onto_the_floors_end_by_the_least_shortfall_along_it() -> None:
     # A slab whose end is at x = 0 (floor over x >= 0, top at 0), with two arms reaching on to x = -1 at z < 1 and
     # z > 3 (a recess between them): ends found 0.03 and 0.06 m short move out by the least shortfall of the ends
-    # and the middle, a quarter search step at a time (0.025 m); ends on the floor's end, over a ragged end where
+    # and the middle, a quarter search step (0.0125 m) at a time: 0.025 m; ends on the floor's end, over a ragged end where
     # one of them lies past it, or beside the recess's arms (the floor going on past the ends alone) stay.
     caster = RayCaster(trimesh.util.concatenate([_box(0.0, 4.0, -SLAB, 0.0, 0.0, 4.0), _box(-1.0, 0.0, -SLAB, 0.0, 0.0, 1.0),
                                                  _box(-1.0, 0.0, -SLAB, 0.0, 3.0, 4.0)]))
@@ -673,27 +664,14 @@ def test_an_edges_ends_move_onto_the_floors_end_by_the_least_shortfall_along_it(
     assert np.allclose(moved_last - last, moved_first - first)
 
 
-def _leaning_wall_room(lean_deg: float) -> trimesh.Trimesh:
-    """Room 8 x 6 m, walls 0.3 m and 3 m, a 1.6 m doorway west (z 2.2-3.8, no lintel); its east wall leans out by
-    ``lean_deg`` (its faces x = 8 + y tan and 8.3 + y tan), with a 1.6 m doorway (z 2.2-3.8) under a lintel from 2.2 m."""
-    g = math.tan(math.radians(lean_deg))
-
-    def leaning(z0: float, z1: float, y0: float, y1: float) -> trimesh.Trimesh:
-        return _hull([[x + g * y, y, z] for x in (8.0, 8.3) for y in (y0, y1) for z in (z0, z1)])
-
-    walls = [_box(-0.3, 0.0, -SLAB, TALL, -0.3, 2.2), _box(-0.3, 0.0, -SLAB, TALL, 3.8, 6.3),
-             _box(-0.3, 8.3, -SLAB, TALL, -0.3, 0.0), _box(-0.3, 8.3, -SLAB, TALL, 6.0, 6.3)]
-    return trimesh.util.concatenate([_box(-0.3, 8.3, -SLAB, 0.0, -0.3, 6.3), *walls, leaning(-0.3, 2.2, 0.0, TALL),
-                                     leaning(3.8, 6.3, 0.0, TALL), leaning(2.2, 3.8, 2.2, TALL)])
-
-
 @pytest.mark.parametrize("lean, yaw", [(20.0, 0.0), (25.0, 22.0), (25.0, 45.0)])
 def test_a_door_in_a_wall_leaning_out_is_an_opening(lean: float, yaw: float) -> None:
     # The extent at an opening counted every triangle reaching down to the agent's head over it whole: the leaning
     # wall's faces, from the floor to their top 3 tan(lean) m out, put the east door 1.09 m or more inside the extent
     # from 20 degrees on, and it was dropped (fourteenth round's `leaning_wall_door`). Only their parts up to the
     # head count now.
-    _assert_known_turned(_leaning_wall_room(lean), yaw, [(-0.3, 0.0, 3.0), (8.3, 0.0, 3.0)], 1.6)
+    room = PIECES14.leaning_wall_door(lean)
+    _assert_known_turned(room.mesh, yaw, [o.position for o in room.openings], 1.6)
 
 
 def test_corners_below_cuts_triangles_at_the_head() -> None:
@@ -707,25 +685,10 @@ def test_corners_below_cuts_triangles_at_the_head() -> None:
     assert np.allclose(cut[3], [[0, 0, 0], [0, 2, 0], [2 / 3, 2, 0]])
 
 
-def _landing_door_room() -> trimesh.Trimesh:
-    """Room 8 x 6 m, walls 0.3 m and 5 m, a 1.6 m doorway west (z 2.2-3.8); along the east wall a solid stair 1.2 m wide
-    rising north from 0.3 m off the south wall, four 0.2 m risers on 0.3 m treads to a landing 1 m up (z 1.5-3.8),
-    four more to a top landing 2 m up; a 1.6 m doorway in the east wall off the landing (z 2.0-3.6), over nothing."""
-    tall = 5.0
-    parts = [_box(-0.3, 8.3, -SLAB, 0.0, -0.3, 6.3), _box(-0.3, 0.0, -SLAB, tall, -0.3, 2.2),
-             _box(-0.3, 0.0, -SLAB, tall, 3.8, 6.3), _box(-0.3, 0.0, 2.2, tall, 2.2, 3.8),
-             _box(-0.3, 8.3, -SLAB, tall, -0.3, 0.0), _box(-0.3, 8.3, -SLAB, tall, 6.0, 6.3),
-             _box(8.0, 8.3, -SLAB, tall, 0.0, 2.0), _box(8.0, 8.3, -SLAB, tall, 3.6, 6.0),
-             _box(8.0, 8.3, -SLAB, 1.0, 2.0, 3.6), _box(8.0, 8.3, 3.2, tall, 2.0, 3.6)]
-    for base, top, end in ((0.3, 0.0, 3.8), (3.8, 1.0, 6.0)):
-        parts += [_box(6.8, 8.0, 0.0, top + 0.2 * (i + 1), base + 0.3 * i, base + 0.3 * (i + 1)) for i in range(4)]
-        parts.append(_box(6.8, 8.0, 0.0, top + 1.0, base + 1.2, end))
-    return trimesh.util.concatenate(parts)
-
-
 @pytest.mark.parametrize("yaw", [0.0, 22.0])
 def test_a_flight_the_climb_above_the_main_floor_keeps_its_landings_door(yaw: float) -> None:
     # Recast keeps the flight from its second riser up, a navmesh component apart from the ground floor's whose
     # lowest corner lies 0.45000005 m up in single precision, 0.40000005 m over the ground floor's: "within the
     # climb" (0.4 m) failed by 5e-8 m and the landing's door was missed (fourteenth round's `landing_side_door`).
-    _assert_known_turned(_landing_door_room(), yaw, [(-0.3, 0.0, 3.0), (8.3, 1.0, 2.8)], 1.6)
+    room = PIECES14.landing_side_door()
+    _assert_known_turned(room.mesh, yaw, [o.position for o in room.openings], 1.6)
