@@ -162,7 +162,7 @@ def g2s_execute(function: Callable[[Any], dict[str, Any]], items: Sequence[Any],
     on other machines; the function never raises for a failed pair (its row
     says so). Closing the iterator (the batch was interrupted) stops the work
     not yet started. An item whose process died as it ran (killed for want of
-    memory, a crash in native code) has the row ``lost(item, reason)``
+    memory, a crash in native code) has the row ``lost(item, reason)``, ``reason`` saying what died
     (recorded as failed): an executor that can tell yields it and runs the other
     items on; one that raises ends the batch. An item that finished must not
     run again; one stopped by another's death may.

@@ -158,8 +158,10 @@ def _first_columns(pair: Pair, error: str | None = None) -> dict[str, Any]:
 
 
 def lost_pair(pair: Pair, reason: str) -> dict[str, Any]:
-    """The row (written to its row file) of a pair whose process died as it ran, which the executor tells by ``reason``."""
-    row = _first_columns(pair, error=f"{pair.spec}: {reason}")
+    """The row (written to its row file) of a pair whose process died as it ran, which the executor tells by ``reason``
+    (what died: "its worker process died as it ran")."""
+    row = _first_columns(pair, error=f"{pair.spec}: {reason} (killed, e.g. by the system for want of memory, or a crash in "
+                         "native code); the batch's other pairs ran")
     _write_json(Path(pair.record), row)
     return row
 

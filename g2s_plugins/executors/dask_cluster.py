@@ -72,8 +72,7 @@ def g2s_execute(
             try:
                 row = future.result()
             except KilledWorker:  # which ended the batch, exit 1 blaming this plugin in Dask's 600 characters
-                row = lost(futures[future], "every Dask worker that held it died (killed, e.g. by the system for want of "
-                           "memory, or a crash in native code); the batch's other pairs ran")
+                row = lost(futures[future], "every Dask worker that held it died")
             yield row
     finally:
         client.cancel([f for f in futures if not f.done()])

@@ -17,8 +17,7 @@ from g2s_core.plugin import PluginParams, hookimpl
 
 NAME = "local"
 
-DIED = ("its worker process died as it ran (killed, e.g. by the system for want of memory, or a crash in native code); "
-        "the batch's other pairs ran")
+DIED = "its worker process died as it ran"
 """Why a pair whose worker died failed: the pool cannot tell a signal's kind."""
 
 
