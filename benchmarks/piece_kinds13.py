@@ -3,9 +3,8 @@
 Run: ``.venv/bin/python benchmarks/piece_kinds13.py [--kinds a b] [--configs map_piece map_piece_sampling]
 [--yaws 0 22 45] [--detail]``
 
-Twelve kinds no earlier round tried (docs/entry_exit.md, "A thirteenth round of piece kinds"); their known
-openings were written down before the detector first ran on them. Built, scored and printed as the tenth
-round's (``benchmarks/piece_kinds10.py``: its helpers, conventions, agent and table).
+Kinds of docs/entry_exit.md, "A thirteenth round of piece kinds", in the tenth round's conventions and table
+(``benchmarks/piece_kinds10.py``).
 """
 
 from __future__ import annotations

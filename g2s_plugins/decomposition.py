@@ -976,11 +976,12 @@ def decompose(navmesh: Any, agent: Any, params: DecompositionParams, mesh: trime
     labels = join_side_strips(labels, pairs[blocked], 2.0 * clearance.portals_open[blocked], clearance.widest[blocked],
                               *mean_widths(navmesh, labels, areas), params.narrowness, params.min_separation)
     labels = _join_lanes(navmesh, labels, pairs, blocked, clearance, float(agent.radius), wall_to_wall, params)
-    labels = _join_ways_round(navmesh, labels, pairs, blocked, clearance, areas, agent, wall_to_wall, params)
+    centres = np.asarray(navmesh.centres, dtype=np.float64)
+    band = floor_bands(centres[:, 1], navmesh.normals, areas, 0.5 * float(agent.height))
+    labels = _join_ways_round(navmesh, labels, pairs, blocked, clearance, areas, band, agent, wall_to_wall, params)
     count = int(labels.max()) + 1 if len(labels) else 0
     blocked &= labels[pairs[:, 0]] != labels[pairs[:, 1]]
 
-    centres = np.asarray(navmesh.centres, dtype=np.float64)
     region_area = np.bincount(labels, weights=areas, minlength=count)
     weight = np.where(region_area > 0, region_area, 1.0)[:, None]
     centroid = np.stack([np.bincount(labels, weights=areas * centres[:, k], minlength=count) for k in range(3)], axis=1)
@@ -989,7 +990,6 @@ def decompose(navmesh: Any, agent: Any, params: DecompositionParams, mesh: trime
     high = np.full(count, -np.inf)
     np.minimum.at(low, labels, centres[:, 1])
     np.maximum.at(high, labels, centres[:, 1])
-    band = floor_bands(centres[:, 1], navmesh.normals, areas, 0.5 * float(agent.height))
     floor = _region_floors(labels, count, band, areas, centres[:, 1])
     members = np.split(np.argsort(labels, kind="stable"), np.cumsum(np.bincount(labels, minlength=count))[:-1])
     regions = [
@@ -1125,7 +1125,8 @@ class PolygonWalks:
 
 
 def _join_ways_round(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocked: np.ndarray, clearance: Clearances,
-                     areas: np.ndarray, agent: Any, wall_to_wall: float, params: DecompositionParams) -> np.ndarray:
+                     areas: np.ndarray, band: np.ndarray, agent: Any, wall_to_wall: float,
+                     params: DecompositionParams) -> np.ndarray:
     """(P,) the regions ``labels`` with the two regions of every way round an obstacle joined (step 3 of the module
     doc), again on the joined regions until none is left.
 
@@ -1135,7 +1136,8 @@ def _join_ways_round(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocke
     are one cut through it, as the split sees it), and the walk between its widest portal's two polygons is looked for
     on the polygon graph (:class:`PolygonWalks`). When one of at most :data:`WAY_ROUND` times the regions' size is
     there, the two regions join: the larger's longest extent is their size, or the smaller's when either is walled in
-    (:data:`WALLED_IN`: a room behind its doors).
+    (:data:`WALLED_IN`: a room behind its doors). Only regions on one floor join: ``band`` (P,) is each polygon's
+    height band (:func:`floor_bands`).
     """
     ends = np.asarray(navmesh.portals().endpoints, dtype=np.float64)
     walks = PolygonWalks.of(navmesh, pairs, ends)
@@ -1144,7 +1146,6 @@ def _join_ways_round(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocke
     opening_length = np.linalg.norm(ends[:, 1] - ends[:, 0], axis=1)
     passage = params.passage_width * 2.0 * float(agent.radius)
     heights = walks.centres[:, 1]
-    band = floor_bands(heights, navmesh.normals, areas, 0.5 * float(agent.height))
     while True:
         count = int(labels.max()) + 1 if len(labels) else 0
         candidates = np.flatnonzero(blocked & (labels[pairs[:, 0]] != labels[pairs[:, 1]]))
