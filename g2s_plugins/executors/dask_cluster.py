@@ -10,6 +10,7 @@ from __future__ import annotations
 import logging
 import os
 import signal
+import time
 from collections.abc import Callable, Iterator, Sequence
 from contextlib import contextmanager
 from typing import Any
@@ -18,6 +19,8 @@ from pydantic import Field
 
 from g2s_core.errors import G2SError
 from g2s_core.plugin import PluginParams, hookimpl
+from g2s_core.result_folder import interrupts_held
+from g2s_plugins.executors import INTERRUPT_POLL
 
 NAME = "dask"
 
@@ -67,15 +70,21 @@ def g2s_execute(
         client = Client(cluster)
     # pure=False: a pair is run again when asked again (resume decides what is finished, not Dask's cache)
     futures = {client.submit(function, item, pure=False): item for item in items}
-    try:
-        for future in as_completed(futures):
-            try:
-                row = future.result()
-            except KilledWorker:  # which ended the batch, exit 1 blaming this plugin in Dask's 600 characters
-                row = lost(futures[future], "every Dask worker that held it died")
-            yield row
-    finally:
-        client.cancel([f for f in futures if not f.done()])
-        client.close()
-        if cluster is not None:
-            cluster.close()
+    with interrupts_held() as interrupts:  # acted on once the cluster is closed (INTERRUPT_POLL)
+        try:
+            completed = as_completed(futures)
+            while not (interrupts or completed.is_empty()):
+                finished = completed.next_batch(block=False)
+                if not finished:
+                    time.sleep(INTERRUPT_POLL)
+                for future in finished:
+                    try:
+                        row = future.result()
+                    except KilledWorker:  # which ended the batch, exit 1 blaming this plugin in Dask's 600 characters
+                        row = lost(futures[future], "every Dask worker that held it died")
+                    yield row
+        finally:
+            client.cancel([f for f in futures if not f.done()])
+            client.close()
+            if cluster is not None:
+                cluster.close()

@@ -14,6 +14,8 @@ from typing import Any
 from pydantic import Field
 
 from g2s_core.plugin import PluginParams, hookimpl
+from g2s_core.result_folder import interrupts_held
+from g2s_plugins.executors import INTERRUPT_POLL
 
 NAME = "local"
 
@@ -57,17 +59,21 @@ def g2s_execute(
 
 def _pooled(function: Callable[[Any], dict[str, Any]], items: Sequence[Any], workers: int) -> Generator[dict[str, Any], None, list[Any]]:
     """Yield ``function(item)`` for ``items`` from a pool of ``workers`` as each finishes; return the items left
-    unfinished, in their order, when a worker died (none when every item ran)."""
-    # forkserver: workers start from a clean process, not a copy of one with a progress thread running
-    pool = ProcessPoolExecutor(workers, get_context("forkserver"), _ignore_interrupt)
-    try:
-        futures = {pool.submit(function, item): item for item in items}
-        pending = set(futures)
-        while pending:
-            finished, pending = wait(pending, return_when=FIRST_COMPLETED)
-            for future in finished:
-                if not isinstance(future.exception(), BrokenProcessPool):
-                    yield future.result()
-        return [item for future, item in futures.items() if isinstance(future.exception(), BrokenProcessPool)]
-    finally:  # also on Ctrl-C or when the batch closes the iterator: the running pairs finish, the others are dropped
-        pool.shutdown(wait=True, cancel_futures=True)
+    unfinished, in their order, when a worker died (none when every item ran).
+
+    A Ctrl-C is taken between waits and acted on once the pool has shut down (:data:`INTERRUPT_POLL`).
+    """
+    with interrupts_held() as interrupts:
+        # forkserver: workers start from a clean process, not a copy of one with a progress thread running
+        pool = ProcessPoolExecutor(workers, get_context("forkserver"), _ignore_interrupt)
+        try:
+            futures = {pool.submit(function, item): item for item in items}
+            pending = set(futures)
+            while pending and not interrupts:
+                finished, pending = wait(pending, timeout=INTERRUPT_POLL, return_when=FIRST_COMPLETED)
+                for future in finished:
+                    if not isinstance(future.exception(), BrokenProcessPool):
+                        yield future.result()
+        finally:  # also on Ctrl-C or when the batch closes the iterator: the running pairs finish, the others are dropped
+            pool.shutdown(wait=True, cancel_futures=True)
+    return [item for future, item in futures.items() if isinstance(future.exception(), BrokenProcessPool)]
