@@ -3952,8 +3952,8 @@ def golf(seed: int) -> trimesh.Trimesh:
     for x in club[:2]:
         s.wall((x, club[2]), (x, club[3]), low, high, thickness=0.3)
     _gable(s, club[0] - 0.3, club[1] + 0.3, club[2] - 0.3, club[3] + 0.3, high)
-    clumps = 0
-    while clumps < int(rng.integers(12, 19)):
+    clumps, target = 0, int(rng.integers(12, 19))
+    while clumps < target:
         c = np.array([rng.uniform(10.0, size_x - 10.0), rng.uniform(10.0, size_z - 10.0)])
         if not _clear(c[0] - 10.0, c[0] + 10.0, c[1] - 10.0, c[1] + 10.0, taken):
             continue
