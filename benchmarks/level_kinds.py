@@ -4910,9 +4910,11 @@ def treetops(seed: int) -> trimesh.Trimesh:
     bridges 1.8 m wide (ramps, no steeper than 20 degrees, 3-20 m long between platform edges, none passing within
     1 m of a third platform): a minimum spanning tree of the allowed pairs by length and a quarter of the other
     allowed pairs. Each group of three or more platforms is reached from the floor by a flight (0.18 / 0.28 m steps)
-    up to its lowest platform, walked onto head-on; a smaller group (a hide) by a ladder only (a board no agent
-    climbs), so a hide is an area of its own. 120-180 other trunks (0.2-0.5 m) and bushes (rocks) stand on the floor,
-    clear of the flights; a ranger's hut (ridged; the ground stops under it).
+    up to its lowest platform with a side (along x or z) clear of the other platforms, of its bridges and of the
+    floor's edge, walked onto head-on; a smaller group (a hide) by a ladder only (a board no agent climbs), so a hide
+    is an area of its own, and so is a group none of whose platforms has a clear side (no flight, no ladder).
+    120-180 other trunks (0.2-0.5 m) and bushes (rocks) stand on the floor, clear of the flights; a ranger's hut
+    (ridged; the ground stops under it).
     """
     rng = np.random.default_rng(seed)
     s = _Solids()
@@ -4931,7 +4933,7 @@ def treetops(seed: int) -> trimesh.Trimesh:
         c = np.array([rng.uniform(12.0, size_x - 12.0), rng.uniform(12.0, size_z - 12.0)])
         if all(np.linalg.norm(c - o) > 11.0 for o in centres):
             centres.append(c)
-    n = int(rng.integers(22, 29))
+    n = min(int(rng.integers(22, 29)), len(centres))  # fewer when fewer than 22-28 fit 11 m apart
     centres = centres[:n]
     radii = rng.uniform(3.0, 4.2, size=n)
     heights = np.round(rng.uniform(4.0, 11.0, size=n) * 2) / 2
@@ -5001,26 +5003,36 @@ def treetops(seed: int) -> trimesh.Trimesh:
     members: dict[int, list[int]] = {}
     for i in range(n):
         members.setdefault(root(i), []).append(i)
-    for group_members in members.values():
-        low = min(group_members, key=lambda i: heights[i])
+
+    def clear_side(low: int, ladder: bool) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
+        """A side of platform ``low`` along x or z (a flight at an angle to the axes has cells whose neighbours differ
+        by more than the climb, ledges to Recast) from which its flight (or ladder) keeps clear of the other
+        platforms, of its bridges and of the floor's edge: the direction u (2,), the flight's top and foot (2,)
+        each, or None when no side is clear. The sides are tried in a random order."""
         c = centres[low]
-        # a flight (or a ladder) from a side clear of the other platforms and of the bridges, along x or z (a flight
-        # at an angle to the axes has cells whose neighbours differ by more than the climb, ledges to Recast)
         for u in rng.permutation(np.array([[1.0, 0.0], [-1.0, 0.0], [0.0, 1.0], [0.0, -1.0]])):
             end = c + u * (radii[low] - 0.2)
-            foot_height = float(height(*(end + u * 14.0)))
-            rise = heights[low] - foot_height
-            steps_n = math.ceil(rise / 0.18)
-            run = steps_n * 0.28
-            foot = end + u * run
-            ladder = len(group_members) < 3
+            run = math.ceil((heights[low] - float(height(*(end + u * 14.0)))) / 0.18) * 0.28
             reach = end + u * (run + 3.0 if not ladder else 1.0)
             away = [np.dot(u, (centres[j if i == low else i] - c) / np.linalg.norm(centres[j if i == low else i] - c))
                     for i, j in bridges if low in (i, j)]
             if all(np.linalg.norm(reach - o) > r + 3.0 for k, (o, r) in enumerate(zip(centres, radii)) if k != low) and \
                     all(cos < math.cos(math.radians(50.0)) for cos in away) and \
                     2.0 < reach[0] < size_x - 2.0 and 2.0 < reach[1] < size_z - 2.0:
+                return u, end, end + u * run
+        return None
+
+    for group_members in members.values():
+        ladder = len(group_members) < 3
+        # the lowest platform with a clear side, the next lowest when none of its sides is clear
+        for low in sorted(group_members, key=lambda i: heights[i]):
+            side_found = clear_side(low, ladder)
+            if side_found is not None:
                 break
+        else:
+            continue  # no platform of the group has a clear side: no way up, an area of its own as a hide is
+        u, end, foot = side_found
+        c = centres[low]
         if ladder:
             p = c + u * (radii[low] + 0.05)
             side = np.array([-u[1], u[0]]) * 0.3
