@@ -4843,6 +4843,7 @@ def cruise_ship(seed: int) -> trimesh.Trimesh:
               for piece in ((x0, min(x1, funnel_x), z0, z1), (max(x0, funnel_x + 12.0), x1, z0, z1)) if piece[1] - piece[0] > 1.0]
     for x0, x1, z0, z1 in blocks:  # the cabin blocks, from the lowest deck's underside to the sun deck's floor
         s.box(x0, x1, -0.3, 12.0, z0, z1)
+    prev_stern: list[float] = []  # the z of the flights up from the deck below (none below the lowest)
     for k in range(5):
         top, x0, x1 = 3.0 * k, starts[k], ends[k]
         if k < 4:
