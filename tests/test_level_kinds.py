@@ -362,13 +362,19 @@ def test_the_beachs_bays_are_reached_down_their_flights(kinds):
 
 
 def test_the_railyard_is_one_area_over_its_footbridge(kinds):
-    """The gaps between wagons, the roads, the shed and the footbridge (6.5 m) are one area; no floor on a wagon."""
+    """The gaps between wagons, the roads, the shed and the footbridge (6.5 m) are one area; no floor on a wagon,
+    under the footbridge or away from it: over the tracks (between the 10 m roads) the only floor over 1 m up is the
+    footbridge's deck, over the roads its flights."""
     label, nav = areas(kinds["railyard"](0))
     assert label.max() == 0
-    x, y, _ = nav.centres.T
+    x, y, z = nav.centres.T
     deck = np.abs(y - 6.7) < 0.3
     assert deck.sum() > 3
-    assert (np.abs(x[y > 1.0] - x[deck].mean()) < 14.0).all()  # floor over 1 m up only on the footbridge and its flights
+    bridge_x = x[deck].mean()
+    tracks = (z > z.min() + 10.0) & (z < z.max() - 10.0)
+    assert (deck & tracks).sum() > 3
+    assert (deck[(y > 1.0) & tracks] & (np.abs(x[(y > 1.0) & tracks] - bridge_x) < 2.0)).all()
+    assert (np.abs(x[(y > 1.0) & ~tracks] - bridge_x) < 14.0).all()  # the flights, 10.4 m long, along x
 
 
 def test_the_craters_are_one_area_down_to_their_bottoms(kinds):
