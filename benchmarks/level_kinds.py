@@ -1,4 +1,4 @@
-"""Level kinds of the fifth to fourteenth held-out rounds (issue 9): generators no preset setting was made on.
+"""Level kinds of the fifth to fifteenth held-out rounds (issue 9): generators no preset setting was made on.
 
 Fifth round: six kinds, each about 1,000 navmesh polygons with the presets' agent (radius 0.5 m, height 2 m, climb 0.4 m):
 ``subway`` (platforms, track pits 1.2 m lower, stairs up to two concourses), ``archipelago`` (islands joined by
@@ -100,6 +100,17 @@ angle to the axes is cut by Recast's ledge filter (a first draft's treetop fligh
 more than the climb), so every flight here runs along x or z; and the top of a deck inside any closed solid standing
 on it is floor (the cruise ship's first draft: its cabin blocks, funnel and pools), so the block rises from under the
 lowest deck and the decks stop at it.
+
+Fifteenth round: six more kinds, 505-696 navmesh polygons with that agent (seeds 0-2): ``oil_rig`` (three decks of
+equipment over the sea joined by flights through openings in the deck above, a bridge to an accommodation platform
+whose block's top is the helideck), ``monastery`` (a compound on a rock with vertical faces reached only by one stair
+of 10-11 flights along two faces), ``night_market`` (stall rows either side of a viaduct whose halves meet only through
+its arches and round its ends), ``cinema`` (auditoria whose raked floors join a foyer 6 m up to exit corridors at the
+ground: parallel stepped links between two storeys), ``estate`` (slab blocks with galleries on three storeys, sky
+bridges and pends) and ``dam`` (a crest between two hilltops over a valley, two switchback stairs up vertical faces).
+A flat top under a ridged deck is floor inside it (a first draft's viaduct piers: 12 areas of 15 m² at 8.2 m), so
+the piers are ridged up into the deck; and a flight standing on a deck is blocks 0.45 m deep (``stairs``'s ``depth``):
+a solid flight would leave the deck's top floor inside it wherever the flight is over 2 m high.
 
 Run: ``.venv/bin/python benchmarks/level_kinds.py OUT_DIR [--kinds subway forest] [--seeds 0 1 2]`` writes
 ``OUT_DIR/<kind>_s<seed>.obj``, the files ``benchmarks/analysis_quality.py --levels`` takes (which also takes the
