@@ -108,9 +108,8 @@ of 10-11 flights along two faces), ``night_market`` (stall rows either side of a
 its arches and round its ends), ``cinema`` (auditoria whose raked floors join a foyer 6 m up to exit corridors at the
 ground: parallel stepped links between two storeys), ``estate`` (slab blocks with galleries on three storeys, sky
 bridges and pends) and ``dam`` (a crest between two hilltops over a valley, two switchback stairs up vertical faces).
-A flat top under a ridged deck is floor inside it (a first draft's viaduct piers: 12 areas of 15 m² at 8.2 m), so
-the piers are ridged up into the deck; and a flight standing on a deck is blocks 0.45 m deep (``stairs``'s ``depth``):
-a solid flight would leave the deck's top floor inside it wherever the flight is over 2 m high.
+A flat top under a ridged deck is floor inside it (a first draft's viaduct piers: 11-12 areas of 15 m² at 8.2 m on
+each seed), so the piers are ridged up into the deck.
 
 Run: ``.venv/bin/python benchmarks/level_kinds.py OUT_DIR [--kinds subway forest] [--seeds 0 1 2]`` writes
 ``OUT_DIR/<kind>_s<seed>.obj``, the files ``benchmarks/analysis_quality.py --levels`` takes (which also takes the
