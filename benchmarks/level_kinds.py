@@ -5606,9 +5606,10 @@ def night_market(seed: int) -> trimesh.Trimesh:
     stores (ridged, the ground stops under them): the market's two halves (14.5-16.5 m deep) meet only through the
     open arches and the two-door shops and round the viaduct's ends. Each half: an aisle 3.5 m wide along the
     viaduct, a double row of stalls (ridged, 2.5-4.5 m long, 2.4 m deep, 2.3 m high), an aisle 3.6-5.6 m wide and a
-    single row of stalls against the site's wall (4 m high), the rows broken every 3-7 stalls by a cross aisle
-    2.5-4 m wide and stopping 16 m short of one end, where a food court of tables (ridged) stands; two or three side
-    streets 4 m wide through each wall onto a pavement 6 m wide outside it, 8 m of street beyond each end.
+    single row of stalls against the site's wall (4 m high); the double row broken every 3-7 stalls by a cross aisle
+    2.5-4 m wide, the single row only at the two or three side streets (4 m wide, through the wall onto a pavement 6
+    m wide outside it; a first draft's gaps in the single row were dead-end bays, all 19 of seed 0's terminals), both
+    stopping 16 m short of one end, where a food court of tables (ridged) stands; 8 m of street beyond each end.
     """
     rng = np.random.default_rng(seed)
     s = _Solids()
@@ -5647,14 +5648,21 @@ def night_market(seed: int) -> trimesh.Trimesh:
         xa, xb = (16.0, length - 2.0) if court_west else (2.0, length - 16.0)
         double = sorted((edge + sign * 3.5, edge + sign * 8.3))
         single = sorted((wall_z - sign * 0.2, wall_z - sign * 2.6))
+        streets = sorted(rng.uniform(20.0, length - 24.0, size=int(rng.integers(2, 4))))
+        streets = [a for k, a in enumerate(streets) if k == 0 or a - streets[k - 1] > 10.0]
+        s.wall((0.0, wall_z), (length, wall_z), -0.3, 4.0, [(a, 4.0) for a in streets], thickness=0.4)
         for r, (lo_z, hi_z) in enumerate((double, single)):
             x = xa + rng.uniform(0.0, 4.0)
             count = int(rng.integers(3, 8))
             while True:
-                if count == 0:
+                if count == 0 and r == 0:  # a cross aisle through the double row
                     x += rng.uniform(2.5, 4.0)
                     count = int(rng.integers(3, 8))
                 w = rng.uniform(2.5, 4.5)
+                street = [a for a in streets if x < a + 4.5 and a - 0.5 < x + w]
+                if r == 1 and street:  # the row against the wall breaks only at the side streets
+                    x = street[0] + 4.5
+                    continue
                 if x + w > xb:
                     break
                 if r == 0:  # back to back
@@ -5665,9 +5673,6 @@ def night_market(seed: int) -> trimesh.Trimesh:
                     holes.append(_ridged(s, x, x + w, lo_z, hi_z, -0.5, 2.3))
                 x += w
                 count -= 1
-        streets = sorted(rng.uniform(20.0, length - 24.0, size=int(rng.integers(2, 4))))
-        streets = [a for k, a in enumerate(streets) if k == 0 or a - streets[k - 1] > 10.0]
-        s.wall((0.0, wall_z), (length, wall_z), -0.3, 4.0, [(a, 4.0) for a in streets], thickness=0.4)
         # the food court: tables 1.2 x 0.8 m in a grid in the 14 m the rows leave at one end
         x_court = 3.0 if court_west else length - 14.0
         lo, hi = sorted((wall_z - sign * 3.5, edge + sign * 1.5))
@@ -5679,14 +5684,14 @@ def night_market(seed: int) -> trimesh.Trimesh:
 
 
 def cinema(seed: int) -> trimesh.Trimesh:
-    """A multiplex cinema: 6-8 auditoria 13-17 m wide side by side along x north of a lobby 14 m deep (y = 0) whose
+    """A multiplex cinema: 9-12 auditoria 13-17 m wide side by side along x north of a lobby 14 m deep (y = 0) whose
     north part is overhung by a foyer (y = 6, 6 m deep) reached by two flights (34 steps of 0.176 / 0.28 m) through
     openings in it. Each auditorium's floor rakes down from a cross aisle at the foyer's height (a 2 m door from the
     foyer) toward the screen: 12-14 tiers 1.1 m deep, each 0.43-0.5 m below the one behind (over the climb), with a
     row of seats (ridged) on each, so one walks only its two stepped aisles (1.4 m wide along the side walls, three
     steps a tier) to a flat front 6 m deep, whence a 2 m side door opens onto an exit corridor 2 m wide between the
     auditoria, which leads back to the lobby (a 2 m door) and out to a service yard behind (a 2 m door). A forecourt
-    15 m deep with parked cars (ridged) and trees in front of the lobby's five entrance doors; the building under a
+    25 m deep with 40-59 parked cars (ridged, where they fit) and trees in front of the lobby's five entrance doors; the building under a
     roof at 50 degrees (:func:`_lid`), the lobby's counters and pillars.
     """
     rng = np.random.default_rng(seed)
@@ -5782,9 +5787,10 @@ def estate(seed: int) -> trimesh.Trimesh:
     along x, 16-20 m apart (courtyards), each closed (flats one does not enter; a roof at 50 degrees) with an open
     gallery 2.4 m wide along its north face on storeys 1-3 (3, 6 and 9 m up, railed), reached by an open switchback
     stair at each end (:func:`_switchback`, 3 m storeys). Through each block but the first a pend 3 m wide at the
-    ground (a passage between courtyards) with a landing on every storey joining its north gallery to the block's
-    south face, where a bridge 3 m wide (railed) crosses the courtyard from the gallery of the block to the south
-    on one or two storeys (the other landings railed): one crosses between blocks in the sky or on the ground. The
+    ground (a passage between courtyards) and, on one or two storeys, a landing through it from its north gallery
+    to the block's south face, where a bridge 3 m wide (railed) crosses the courtyard from the gallery of the block
+    to the south (a first draft's landings on the other storeys, railed, were dead ends 10 m long: 4 of seed 0's 10
+    terminals): one crosses between blocks in the sky or on the ground. The
     courtyards hold play areas (frames 0.3 m high, under the climb), bin stores and parked cars (ridged) and trees.
     """
     rng = np.random.default_rng(seed)
@@ -5823,15 +5829,12 @@ def estate(seed: int) -> trimesh.Trimesh:
             s.wall((bx0 - 4.0, bz1 + gallery), (bx1 + 4.0, bz1 + gallery), y, y + 1.1, openings, thickness=0.1)
             for end in (bx0 - 4.0, bx1 + 4.0):
                 s.wall((end, bz1), (end, bz1 + gallery), y, y + 1.1, thickness=0.1)
-            if pend is not None:
+            if pend is not None and level in bridges[k - 1]:  # a landing through the pend and the bridge
                 s.slab(pend, pend + 3.0, bz0, bz1, y, [])
-                if level in bridges[k - 1]:
-                    z_from = blocks[k - 1][3] + gallery
-                    s.box(pend, pend + 3.0, y - 0.5, y, z_from, bz0)
-                    for rx in (pend, pend + 3.0):
-                        s.box(rx - 0.05, rx + 0.05, y, y + 1.1, z_from, bz0)
-                else:
-                    s.wall((pend, bz0), (pend + 3.0, bz0), y, y + 1.1, thickness=0.1)
+                z_from = blocks[k - 1][3] + gallery
+                s.box(pend, pend + 3.0, y - 0.5, y, z_from, bz0)
+                for rx in (pend, pend + 3.0):
+                    s.box(rx - 0.05, rx + 0.05, y, y + 1.1, z_from, bz0)
         for level in range(3):
             for wx in (bx0 - 4.0, bx1):
                 _switchback(s, wx, bz1 + gallery - 2.0, storey * level, storey)
@@ -5906,7 +5909,9 @@ def dam(seed: int) -> trimesh.Trimesh:
     sx1 = sx0 + sw
     for a, b in ((dx0, sx0), (sx1, dx1)):  # the dam either side of the spillway
         s.box(a, b, -1.0, crest, zd, zd + 8.0)
-    s.hull(np.array([[x, y, z] for x in (sx0, sx1) for y, z in ((crest - 4.0, zd + 8.0), (-1.0, zd + 8.0), (-1.0, zd - 14.0))]))
+    # the chute: 21-24 m down over 16 m, 53-56 degrees (a first draft's, over 22 m, was 44 degrees under a 24 m crest:
+    # walkable, an area of 428 m² on seed 0 no walk joins)
+    s.hull(np.array([[x, y, z] for x in (sx0, sx1) for y, z in ((crest - 4.0, zd + 8.0), (-1.0, zd + 8.0), (-1.0, zd - 8.0))]))
     s.box(sx0, sx1, crest - 0.8, crest, zd, zd + 8.0)  # the road's bridge over the spillway
     for a, b in ((0.0, dx0), (dx1, dx1 + hill)):  # the hilltops
         s.box(a, b, -1.0, crest, 0.0, zd + 30.0)
@@ -5923,8 +5928,8 @@ def dam(seed: int) -> trimesh.Trimesh:
     # the river from the chute's foot down the valley, its bridges
     rw = rng.uniform(10.0, 12.0)
     rx0 = (sx0 + sx1) / 2 - rw / 2
-    river = (rx0, rx0 + rw, 0.0, zd - 14.0)
-    holes = [river, (sx0, sx1, zd - 14.0, zd)]
+    river = (rx0, rx0 + rw, 0.0, zd - 8.0)
+    holes = [river, (sx0, sx1, zd - 8.0, zd)]
     for width, bz in ((2.0, rng.uniform(8.0, 20.0)), (5.0, rng.uniform(28.0, 38.0))):
         s.box(rx0 - 1.5, rx0 + rw + 1.5, -0.5, 0.15, bz, bz + width)
         for rz in (bz, bz + width):
