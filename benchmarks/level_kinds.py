@@ -101,7 +101,7 @@ more than the climb), so every flight here runs along x or z; and the top of a d
 on it is floor (the cruise ship's first draft: its cabin blocks, funnel and pools), so the block rises from under the
 lowest deck and the decks stop at it.
 
-Fifteenth round: six more kinds, 505-696 navmesh polygons with that agent (seeds 0-2): ``oil_rig`` (three decks of
+Fifteenth round: six more kinds, 535-696 navmesh polygons with that agent (seeds 0-2): ``oil_rig`` (three decks of
 equipment over the sea joined by flights through openings in the deck above, a bridge to an accommodation platform
 whose block's top is the helideck), ``monastery`` (a compound on a rock with vertical faces reached only by one stair
 of 10-11 flights along two faces), ``night_market`` (stall rows either side of a viaduct whose halves meet only through
