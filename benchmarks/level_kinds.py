@@ -5476,6 +5476,18 @@ def oil_rig(seed: int) -> trimesh.Trimesh:
     return s.mesh()
 
 
+def _trees(s: _Solids, rng: np.random.Generator, tries: int, size_x: float, size_z: float,
+           taken: list[tuple[float, float, float, float]], radii: tuple[float, float], top: float) -> None:
+    """``tries`` trunks at plan points uniform over [2, size_x - 2] x [2, size_z - 2] m, each placed only 1 m clear of
+    every rectangle of ``taken`` (which then holds it, 1.5 m round), radius uniform in ``radii`` (m), from 0.5 m under
+    the ground to ``top``."""
+    for _ in range(tries):
+        p = np.array([rng.uniform(2.0, size_x - 2.0), rng.uniform(2.0, size_z - 2.0)])
+        if _clear(p[0] - 1.0, p[0] + 1.0, p[1] - 1.0, p[1] + 1.0, taken):
+            _trunk(s, p, rng.uniform(*radii), -0.5, top)
+            taken.append((p[0] - 1.5, p[0] + 1.5, p[1] - 1.5, p[1] + 1.5))
+
+
 def monastery(seed: int) -> trimesh.Trimesh:
     """A monastery on a rock: flat ground 170 x 140 m (a hamlet of houses, ridged, and trees at the foot) round a
     rock 62-70 x 50-54 m with vertical faces, its top 32.4 or 35.6 m up (10 or 11 flights), reached only by one long
@@ -5590,11 +5602,7 @@ def monastery(seed: int) -> trimesh.Trimesh:
                 holes.append(_ridged(s, hx, hx + w, hz, hz + d, -0.5, rng.uniform(3.0, 6.0)))
                 taken.append((hx - 3.0, hx + w + 3.0, hz - 3.0, hz + d + 3.0))
                 break
-    for _ in range(int(rng.integers(80, 120))):
-        p = np.array([rng.uniform(2.0, size_x - 2.0), rng.uniform(2.0, size_z - 2.0)])
-        if _clear(p[0] - 1.0, p[0] + 1.0, p[1] - 1.0, p[1] + 1.0, taken):
-            _trunk(s, p, rng.uniform(0.25, 0.45), -0.5, 6.0)
-            taken.append((p[0] - 1.5, p[0] + 1.5, p[1] - 1.5, p[1] + 1.5))
+    _trees(s, rng, int(rng.integers(80, 120)), size_x, size_z, taken, (0.25, 0.45), 6.0)
     s.ground(0.0, size_x, 0.0, size_z, 0.0, holes)
     return s.mesh()
 
@@ -5852,11 +5860,7 @@ def estate(seed: int) -> trimesh.Trimesh:
                     s.box(cx, cx + w, 0.0, 0.3, cz, cz + d)
                 taken.append((cx - 1.5, cx + w + 1.5, cz - 1.5, cz + d + 1.5))
                 break
-    for _ in range(int(rng.integers(20, 35))):
-        p = np.array([rng.uniform(2.0, size_x - 2.0), rng.uniform(2.0, size_z - 2.0)])
-        if _clear(p[0] - 1.0, p[0] + 1.0, p[1] - 1.0, p[1] + 1.0, taken):
-            _trunk(s, p, rng.uniform(0.25, 0.4), -0.5, 7.0)
-            taken.append((p[0] - 1.5, p[0] + 1.5, p[1] - 1.5, p[1] + 1.5))
+    _trees(s, rng, int(rng.integers(20, 35)), size_x, size_z, taken, (0.25, 0.4), 7.0)
     s.ground(0.0, size_x, 0.0, size_z, 0.0, holes)
     return s.mesh()
 
