@@ -5390,8 +5390,9 @@ def oil_rig(seed: int) -> trimesh.Trimesh:
     apart; the decks stop under them), railed along every edge; two flights (39 steps of 0.179 / 0.28 m, 2 m wide, along x, through openings in
     the deck above, met head-on) between each pair of decks; a flight of 50 steps from a boat landing 3 m up at the
     west edge to the lowest deck. A bridge 2.4 m wide and 40-55 m long, railed, joins the middle deck to the
-    accommodation platform's deck (19 m), where a walkway 3-4.5 m wide rings a closed accommodation block whose top
-    is the helideck (26 m), reached by one flight along the block's south face onto a landing beside it.
+    accommodation platform's deck (19 m), where a walkway 3-3.5 m wide (5-6.5 m on the south, beside the flight) rings
+    a closed accommodation block whose top is the helideck (26 m), reached by one flight along the block's south face
+    onto a landing beside it.
     """
     rng = np.random.default_rng(seed)
     s = _Solids()
@@ -5407,7 +5408,7 @@ def oil_rig(seed: int) -> trimesh.Trimesh:
     wx, wz = rng.uniform(15.0, px - 23.0), rng.uniform(10.0, pz - 18.0)
     well = (wx, wx + 8.0, wz, wz + 8.0)
     flights: list[list[tuple[float, float, float]]] = []  # per deck pair: (x of the foot, z of the axis, heading)
-    for k in range(2):
+    for _ in range(2):
         pair: list[tuple[float, float, float]] = []
         while len(pair) < 2:
             heading = 1.0 if rng.random() < 0.5 else -1.0
@@ -5471,8 +5472,7 @@ def oil_rig(seed: int) -> trimesh.Trimesh:
     fz = block[2] - 1.1
     s.stairs(np.array([fx, fz]), np.array([1.0, 0.0]), 2.0, decks[1], storey, storey / steps, 0.28, depth=0.45)
     s.box(fx + run, fx + run + 2.5, decks[2] - 0.3, decks[2], fz - 1.0, block[2])  # the landing beside the helideck
-    heli = (block[0], block[1], block[2], block[3])
-    _rail_ring(s, *heli, decks[2], {"south": [(fx + run - block[0], 2.5)]})
+    _rail_ring(s, *block, decks[2], {"south": [(fx + run - block[0], 2.5)]})
     return s.mesh()
 
 
@@ -5495,7 +5495,7 @@ def monastery(seed: int) -> trimesh.Trimesh:
     (+x) and round its south-east corner up its east face (+z), to a gate in the wall round the top (2.5 m high, a
     parapet). On the top: a cloister (a walk 3 m wide round a square garth 18 m across, pillars 0.5 m every 3 m on
     the garth's side, a wall on the outer side with a 2 m door on each side), a church north of it (a nave of ridged
-    pews, a door from the cloister and one to the yard), a range of 8-12 cells (3.5-4 m wide, 1.6 m doors) off a
+    pews, a door from the cloister and one to the yard), a range of 9 or 10 cells (3.5-3.9 m wide, 1.6 m doors) off a
     corridor east of the cloister, a refectory west of it (ridged tables), kitchen-garden beds (0.25 m, under the
     climb) and a railed terrace at the west end; rooms are walled (4 m) under roofs at 50 degrees (:func:`_gable`).
     """
@@ -5588,7 +5588,7 @@ def monastery(seed: int) -> trimesh.Trimesh:
         for xx in np.arange(rx0 + 3.0, cx0 - 4.0, 5.0):
             if rng.random() < 0.7:
                 s.box(xx, xx + 3.5, top, top + 0.25, zz, zz + 1.2)
-    for _ in range(int(rng.integers(4, 8))):  # benches and a well in the yard south of the buildings
+    for _ in range(int(rng.integers(4, 8))):  # benches in the yard south of the buildings
         bx = rng.uniform(rx0 + 3.0, rx1 - 6.0)
         _ridged(s, bx, bx + 2.0, rz0 + 3.0, rz0 + 3.6, top, top + 0.5)
     # the hamlet and the trees at the foot, clear of the rock, the stair and the approach
@@ -5729,9 +5729,8 @@ def cinema(seed: int) -> trimesh.Trimesh:
     # the lobby's north wall: a door at each exit corridor (ground) and each auditorium's foyer door (upper)
     for i in range(n):
         a0, a1 = xs[2 * i], xs[2 * i] + widths[i]
-        c0 = a1
         s.wall((a0, z_back), (a1, z_back), -0.3, 10.0, [((a1 - a0) / 2 - 1.0, 2.0)], thickness=0.3)
-        s.wall((c0, z_back), (c0 + corridor, z_back), foyer_y - 0.3, 10.0, thickness=0.3)  # over the corridor's door
+        s.wall((a1, z_back), (a1 + corridor, z_back), foyer_y - 0.3, 10.0, thickness=0.3)  # over the corridor's door
         # side walls of the auditorium (the east one holds the exit door at the front)
         s.wall((a0, z_back), (a0, z_screen), -0.3, 10.0, thickness=0.3)
         s.wall((a1, z_back), (a1, z_screen), -0.3, 10.0, [(depth - 5.0, 2.0)], thickness=0.3)
@@ -5791,7 +5790,7 @@ def cinema(seed: int) -> trimesh.Trimesh:
 
 
 def estate(seed: int) -> trimesh.Trimesh:
-    """A deck-access housing estate ("streets in the sky"): three or four slab blocks 70-90 m long and 10 m deep
+    """A deck-access housing estate ("streets in the sky"): four or five slab blocks 70-90 m long and 10 m deep
     along x, 16-20 m apart (courtyards), each closed (flats one does not enter; a roof at 50 degrees) with an open
     gallery 2.4 m wide along its north face on storeys 1-3 (3, 6 and 9 m up, railed), reached by an open switchback
     stair at each end (:func:`_switchback`, 3 m storeys). Through each block but the first a pend 3 m wide at the

@@ -403,7 +403,7 @@ def test_the_monasterys_top_is_reached_only_by_its_stair(kinds):
     top = y.max()
     assert top > 32.0
     on_top = y > top - 0.5
-    x0, x1, z0, z1 = x[on_top].min(), x[on_top].max(), z[on_top].min(), z[on_top].max()  # the rock's top, walls off
+    x1, z0 = x[on_top].max(), z[on_top].min()  # the rock's top, walls off: its east and south edges
     between = (y > 1.0) & (y < top - 1.0)
     assert between.sum() > 10
     south = (z[between] < z0) & (z[between] > z0 - 3.5)
@@ -426,8 +426,8 @@ def test_the_night_markets_halves_meet_only_round_or_through_the_viaduct(kinds):
 
 
 def test_the_cinemas_foyer_and_lobby_are_one_area(kinds):
-    """The lobby (0 m) and the foyer (6 m) are one area through the foyer's flights and the auditoria's aisles; the
-    raked tiers hold no floor wider than their aisles (seat rows on 1.1 m tiers)."""
+    """The lobby (0 m) and the foyer (6 m) are one area through the foyer's flights and the auditoria's aisles, with
+    floor at both heights."""
     label, nav = areas(kinds["cinema"](0))
     assert label.max() == 0
     y = nav.centres[:, 1] - 0.2
@@ -436,7 +436,7 @@ def test_the_cinemas_foyer_and_lobby_are_one_area(kinds):
 
 def test_the_estates_galleries_are_one_area_with_the_courtyards(kinds):
     """Stairs, pends and bridges join the courtyards (0 m) and the galleries on the three storeys (3, 6 and 9 m):
-    one area with floor on each; nothing else is floor over 0.5 m but the stairs' flights and landings."""
+    one area with floor on each and none over the top galleries (the blocks' roofs are ridged)."""
     label, nav = areas(kinds["estate"](1))
     assert label.max() == 0
     y = nav.centres[:, 1] - 0.2
