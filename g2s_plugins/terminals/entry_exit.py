@@ -1033,7 +1033,8 @@ def area_below(navmesh: NavMesh | SampledSurface, label: np.ndarray, height: flo
     the floor it covers; a floor does not. ``label``: (P,) component of every polygon, C = its
     largest + 1; ``height``: the agent's height, metres. Each polygon is cut into triangles: a
     navmesh's detail triangles (its polygons' corners can lie far off the surface: a pitched roof's
-    one polygon spans both slopes at 1.6 m, its ridge 3.85 m up, over a floor at 0.1 m), else a fan;
+    one polygon spans both slopes at 1.6 m, its ridge 3.85 m up, over a floor at 0.1 m), else a fan
+    (a sampled surface's polygon of two corners: the line between them, weighing its polygon's area);
     each sampled at four points weighted by area; from each, a ray cast up from ``height`` above it
     finds the first navmesh surface there, which it lies under. O(T log T) for T triangles with the
     ray caster's BVH.
@@ -1047,10 +1048,14 @@ def area_below(navmesh: NavMesh | SampledSurface, label: np.ndarray, height: flo
         vertices = np.asarray(navmesh.vertices, dtype=np.float64)
         fan = range(1, polygons.shape[1] - 1)  # triangle (0, j, j + 1) of each polygon with a corner j + 1
         owners = [np.flatnonzero(polygons[:, j + 1] >= 0) for j in fan]
-        triangles = np.concatenate([polygons[o][:, [0, j, j + 1]] for j, o in zip(fan, owners)])
-        owner = np.concatenate(owners)
+        lines = np.flatnonzero(polygons[:, 2] < 0)  # polygons of two corners: single-file samples
+        triangles = np.concatenate([polygons[o][:, [0, j, j + 1]] for j, o in zip(fan, owners)]
+                                   + [polygons[lines][:, [0, 1, 1]]])
+        owner = np.concatenate(owners + [lines])
     corners = vertices[triangles]
     area = 0.5 * np.linalg.norm(np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0]), axis=1)
+    if not hasattr(navmesh, "detail_polygon"):  # a line of samples stands for the band its polygon's area gives
+        area[len(area) - len(lines):] = np.asarray(navmesh.areas, dtype=np.float64)[lines]
     points = np.einsum("kj,tjd->tkd", _COVER_POINTS, corners).reshape(-1, 3)
     caster = RayCaster(trimesh.Trimesh(vertices, triangles, process=False))
     hits = caster.first_hits(points + UP * height, UP)
