@@ -75,23 +75,25 @@ def roundabout_three_exits(radius: float = 6.0, road: float = 4.0, reach: float 
     return _level("roundabout_three_exits", parts, openings)
 
 
-def dogleg_wall_passage() -> SampleLevel:
+def dogleg_wall_passage(chamber: float = 0.8) -> SampleLevel:
     """Room 8 x 6 m, a west doorway; its east wall 2 m thick with a passage 1.2 m wide and 2.4 m high through it that
-    jogs 1 m north half way (a chamber 0.8 m long spanning both halves)."""
+    jogs 1 m north half way (a chamber ``chamber`` m long, at most 2, spanning both halves)."""
     parts = _room(8.0, 6.0, {"W": [(2.2, 3.8, 2.2)], "E": [(-0.3, 6.3, 3.0)]})
     parts.append(_box(8.3, 10.0, -SLAB, 0.0, -0.3, 6.3))
-    for x0, x1, z_lo, z_hi in ((8.0, 8.6, 2.4, 3.6), (8.6, 9.4, 2.4, 4.6), (9.4, 10.0, 3.4, 4.6)):
+    a, b = 9.0 - chamber / 2, 9.0 + chamber / 2
+    for x0, x1, z_lo, z_hi in ((8.0, a, 2.4, 3.6), (a, b, 2.4, 4.6), (b, 10.0, 3.4, 4.6)):
         parts += [_box(x0, x1, 0.0, 3.0, -0.3, z_lo), _box(x0, x1, 0.0, 3.0, z_hi, 6.3)]  # the wall beside the void
     parts.append(_box(8.0, 10.0, 2.4, 3.0, 2.4, 4.6))  # the passage's ceiling
     return _level("dogleg_wall_passage", parts, [_opening((-0.3, 0.0, 3.0), _W, 1.6), _opening((10.0, 0.0, 4.0), _E, 1.2)])
 
 
-def hanging_sign_corridor() -> SampleLevel:
-    """Corridor 12 x 2.4 m, both ends open; at its east end a sign hangs from a beam 2.6 m up down to 1.7 m over the
-    south half."""
-    parts = _corridor(12.0) + [_box(11.8, 11.95, 2.6, 2.7, -0.3, 2.7), _box(11.85, 11.9, 1.7, 2.6, 0.0, 1.2)]
+def hanging_sign_corridor(bottom: float = 1.7, cover: float = 1.2) -> SampleLevel:
+    """Corridor 12 x 2.4 m, both ends open; at its east end a sign hangs from a beam 2.6 m up down to ``bottom`` m over
+    the south ``cover`` m (the end's free part: the rest where the sign hangs lower than the agent's 2 m)."""
+    parts = _corridor(12.0) + [_box(11.8, 11.95, 2.6, 2.7, -0.3, 2.7), _box(11.85, 11.9, bottom, 2.6, 0.0, cover)]
+    free = cover if bottom < 2.0 else 0.0
     return _level("hanging_sign_corridor", parts,
-                  [_opening((0.0, 0.0, 1.2), _W, 2.4), _opening((12.0, 0.0, 1.8), _E, 1.2)])
+                  [_opening((0.0, 0.0, 1.2), _W, 2.4), _opening((12.0, 0.0, (free + 2.4) / 2), _E, 2.4 - free)])
 
 
 def wedge_sill_door(sill: float = 0.15) -> SampleLevel:

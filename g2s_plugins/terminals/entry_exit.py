@@ -880,8 +880,8 @@ def _passages(
     and the erosion), rays each way along the edge from the opening's middle. At the rays' height:
     bars or a grille in the wall leave gaps narrower than the agent however wide the hole. One search
     step above the climb (over what the agent steps onto, such as a low slab of rubble, and not
-    stopped by ground it walks onto): a leaf or a chunk standing in the passage leaves its free
-    part. Returns (n,) the narrowest width at the rays' height, m, and (n,) (n,) how far the
+    stopped by ground it walks onto) and at the head-room rays' height: a leaf or a chunk standing in
+    the passage, or a sign hanging into it lower than the agent, leaves its free part. Returns (n,) the narrowest width at the rays' height, m, and (n,) (n,) how far the
     narrowest free part above the climb reaches from the middle towards ``first`` and towards
     ``last`` (along the edge, m; infinite where nothing stands).
     """
@@ -898,13 +898,16 @@ def _passages(
     for k in range(1, int(math.ceil(float(deep.max(initial=0.0)) / s.delta)) + 1):
         rows = np.nonzero(k * s.delta <= deep)[0]
         inside = mid[rows] - out[rows] * (k * s.delta)
-        points = np.concatenate([inside + UP * s.lift, inside + UP * (s.climb + s.delta)])
-        directions = np.concatenate([along[rows], along[rows]])
+        points = np.concatenate([inside + UP * s.lift, inside + UP * (s.climb + s.delta), inside + UP * s.head])
+        directions = np.concatenate([along[rows], along[rows], along[rows]])
         hits_ahead, hits_back = caster.first_hits(points, directions), caster.first_hits(points, -directions)
-        low, high = slice(0, len(rows)), slice(len(rows), None)
+        m = len(rows)
+        low, high, head = slice(0, m), slice(m, 2 * m), slice(2 * m, None)
         widths[rows] = np.minimum(widths[rows], hits_ahead.distance[low] + hits_back.distance[low])
-        # Above the climb, ground the agent walks onto (a terrain rising beside its border) is in no one's way.
-        forward, backward = (np.where(h.hit[high] & _walkable(caster, h.face[high], s), np.inf, h.distance[high])
+        # Above the climb, ground the agent walks onto (a terrain rising beside its border) is in no one's way; at
+        # the head-room rays' height, what hangs into the passage lower than the agent is (a sign over part of it).
+        forward, backward = (np.minimum(np.where(h.hit[high] & _walkable(caster, h.face[high], s), np.inf,
+                                                 h.distance[high]), h.distance[head])
                              for h in (hits_ahead, hits_back))
         to_last = np.where(towards_last[rows], forward, backward)
         to_first = np.where(towards_last[rows], backward, forward)
