@@ -66,8 +66,9 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
      wide as the agent, which Recast erodes away), and so are openings whose
      clear width across, between their edge and the navmesh, is no wider
      (bars across a doorway); an opening is the narrowest free part of that
-     passage above the climb (a sliding leaf or a rubble chunk in the wall
-     leaves part of the door);
+     passage above the climb and at the head-room rays' height (a sliding
+     leaf or a rubble chunk in the wall, or a sign hanging lower than the
+     agent, leaves part of the door);
    * jambs (``step_up``): an opening found from step tops needs something
      at half the agent's height within two search steps of both its ends
      (a threshold's jambs); a curb along the piece's edge has none;
@@ -881,9 +882,10 @@ def _passages(
     bars or a grille in the wall leave gaps narrower than the agent however wide the hole. One search
     step above the climb (over what the agent steps onto, such as a low slab of rubble, and not
     stopped by ground it walks onto) and at the head-room rays' height: a leaf or a chunk standing in
-    the passage, or a sign hanging into it lower than the agent, leaves its free part. Returns (n,) the narrowest width at the rays' height, m, and (n,) (n,) how far the
-    narrowest free part above the climb reaches from the middle towards ``first`` and towards
-    ``last`` (along the edge, m; infinite where nothing stands).
+    the passage, or a sign hanging into it lower than the agent, leaves its free part. Returns (n,)
+    the narrowest width at the rays' height, m, and (n,) (n,) how far the narrowest free part above
+    the climb reaches from the middle towards ``first`` and towards ``last`` (along the edge, m;
+    infinite where nothing stands).
     """
     out = np.array([e.outward for e in kept])
     nrm = np.array([e.normal for e in kept])
