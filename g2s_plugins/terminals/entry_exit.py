@@ -906,10 +906,11 @@ def _passages(
         m = len(rows)
         low, high, head = slice(0, m), slice(m, 2 * m), slice(2 * m, None)
         widths[rows] = np.minimum(widths[rows], hits_ahead.distance[low] + hits_back.distance[low])
-        # Above the climb, ground the agent walks onto (a terrain rising beside its border) is in no one's way; at
-        # the head-room rays' height, what hangs into the passage lower than the agent is (a sign over part of it).
-        forward, backward = (np.minimum(np.where(h.hit[high] & _walkable(caster, h.face[high], s), np.inf,
-                                                 h.distance[high]), h.distance[head])
+        # Above the climb, ground the agent walks onto (a terrain rising beside its border) is in no one's way, at
+        # either height; at the head-room rays' height, what hangs into the passage lower than the agent is (a sign
+        # over part of it).
+        forward, backward = (np.minimum(*(np.where(h.hit[at] & _walkable(caster, h.face[at], s), np.inf, h.distance[at])
+                                          for at in (high, head)))
                              for h in (hits_ahead, hits_back))
         to_last = np.where(towards_last[rows], forward, backward)
         to_first = np.where(towards_last[rows], backward, forward)
