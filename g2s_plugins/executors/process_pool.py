@@ -3,12 +3,14 @@ whose worker dies (killed for want of memory, a crash in native code) fails alon
 
 from __future__ import annotations
 
+import multiprocessing
 import os
 import signal
+import threading
 from collections.abc import Callable, Generator, Iterator, Sequence
 from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 from concurrent.futures.process import BrokenProcessPool
-from multiprocessing import get_context
+from contextlib import contextmanager
 from typing import Any
 
 from pydantic import Field
@@ -19,6 +21,13 @@ NAME = "local"
 
 DIED = "its worker process died as it ran"
 """Why a pair whose worker died failed: the pool cannot tell a signal's kind."""
+
+WATCH_SECONDS = 1.0
+"""How often the batch looks at the pool's threads while no pair finishes."""
+
+
+class PoolThreadDied(RuntimeError):
+    """A thread of the pool itself died: the pairs it would have handed out never finish."""
 
 
 class Params(PluginParams):
@@ -57,17 +66,41 @@ def g2s_execute(
 
 def _pooled(function: Callable[[Any], dict[str, Any]], items: Sequence[Any], workers: int) -> Generator[dict[str, Any], None, list[Any]]:
     """Yield ``function(item)`` for ``items`` from a pool of ``workers`` as each finishes; return the items left
-    unfinished, in their order, when a worker died (none when every item ran)."""
+    unfinished, in their order, when a worker died (none when every item ran).
+
+    Raises:
+        PoolThreadDied: a thread of the pool died (one that could not start its own under a tight memory limit).
+    """
+    earlier = set(multiprocessing.active_children())
     # forkserver: workers start from a clean process, not a copy of one with a progress thread running
-    pool = ProcessPoolExecutor(workers, get_context("forkserver"), _ignore_interrupt)
+    pool = ProcessPoolExecutor(workers, multiprocessing.get_context("forkserver"), _ignore_interrupt)
+    with _thread_deaths() as deaths:
+        try:
+            futures = {pool.submit(function, item): item for item in items}
+            pending = set(futures)
+            while pending:
+                finished, pending = wait(pending, WATCH_SECONDS, return_when=FIRST_COMPLETED)
+                if deaths:  # under `ulimit -v` the pool's thread could not start the thread that feeds its workers
+                    raise PoolThreadDied(f"a thread of the pool died ({type(deaths[0]).__name__}: {deaths[0]}; under a "
+                                         "memory limit? --executor serial needs no threads)") from deaths[0]
+                for future in finished:
+                    if not isinstance(future.exception(), BrokenProcessPool):
+                        yield future.result()
+            return [item for future, item in futures.items() if isinstance(future.exception(), BrokenProcessPool)]
+        finally:  # also on Ctrl-C or when the batch closes the iterator: the running pairs finish, the others are dropped
+            if deaths:  # its workers wait on a queue no thread feeds any more, and the interpreter's exit on them
+                for process in set(multiprocessing.active_children()) - earlier:
+                    process.terminate()
+            pool.shutdown(wait=True, cancel_futures=True)
+
+
+@contextmanager
+def _thread_deaths() -> Iterator[list[BaseException]]:
+    """The exceptions that end a thread while in the block, kept (not printed as a traceback) for the block to see."""
+    deaths: list[BaseException] = []
+    previous = threading.excepthook
+    threading.excepthook = lambda died: deaths.append(died.exc_value or RuntimeError("a thread died"))
     try:
-        futures = {pool.submit(function, item): item for item in items}
-        pending = set(futures)
-        while pending:
-            finished, pending = wait(pending, return_when=FIRST_COMPLETED)
-            for future in finished:
-                if not isinstance(future.exception(), BrokenProcessPool):
-                    yield future.result()
-        return [item for future, item in futures.items() if isinstance(future.exception(), BrokenProcessPool)]
-    finally:  # also on Ctrl-C or when the batch closes the iterator: the running pairs finish, the others are dropped
-        pool.shutdown(wait=True, cancel_futures=True)
+        yield deaths
+    finally:
+        threading.excepthook = previous
