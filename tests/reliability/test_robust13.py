@@ -130,3 +130,23 @@ def test_a_sound_pair_queued_behind_one_that_kills_its_dask_worker_runs(tmp_path
     summary = pd.read_csv(out / "summary.csv")
     assert dict(zip(summary["level"], summary["status"])) == {"cross_hub": "failed", "straight_corridor": "ok"}
     assert (out / "dies" / "straight_corridor" / "structure.json").is_file()
+
+
+SQUARE_FLOOR = "v 0 0 0\nv 10 0 0\nv 10 0 10\nv 0 0 10\nf 1 3 2\nf 1 4 3\n"
+"""A 10 m square floor, facing up (Y up)."""
+
+
+def test_names_holding_rich_emoji_codes_or_markup_are_printed_as_written(tmp_path, capsys):
+    # rich read every printed line for emoji codes: `g2s: error: level:cat:.obj: no such mesh file` named a file
+    # `level🐱.obj`, and `wrote .../o:fire:/graph.json` a folder that does not exist; the stage table's title, a level
+    # named `[red]x:cat:.obj`, was read as markup too (`x🐱.obj`)
+    config = tmp_path / "quick.yaml"
+    config.write_text(QUICK_CONFIG)
+    missing = run_g2s(capsys, "run", config, tmp_path / "level:cat:.obj", "-o", tmp_path / "out", "-q")
+    assert_clean_error(missing, f"{tmp_path}/level:cat:.obj: no such mesh file")
+    level = tmp_path / "[red]x:cat:.obj"
+    level.write_text(SQUARE_FLOOR)
+    written = run_g2s(capsys, "run", config, level, "-o", tmp_path / "o:fire:")
+    assert written.code == 0, written.stderr
+    assert written.stdout.splitlines()[0].strip() == "[red]x:cat:.obj"
+    assert f"wrote {tmp_path}/o:fire:/graph.json" in written.stdout.splitlines()
