@@ -231,8 +231,9 @@ def stop_if_interrupted() -> None:
 
 
 @contextmanager
-def interrupts_held(hold: bool = True) -> Iterator[None]:
-    """Hold Ctrl-C (SIGINT) and SIGTERM back until the block ends, then act on them.
+def interrupts_held(hold: bool = True) -> Iterator[list[int]]:
+    """Hold Ctrl-C (SIGINT) and SIGTERM back until the block ends, then act on them; the block gets the list of
+    signals taken so far, to stop early at a point of its choosing.
 
     With ``hold`` false (a whole command) they raise KeyboardInterrupt at once and are remembered for
     :func:`stop_if_interrupted`: trimesh, scipy and PIL catch BaseException while they load, and a run whose
@@ -242,7 +243,7 @@ def interrupts_held(hold: bool = True) -> Iterator[None]:
     ignores (a background job's Ctrl-C) stays ignored.
     """
     if threading.current_thread() is not threading.main_thread():
-        yield
+        yield []
         return
     received: list[int] = []
 
@@ -259,7 +260,7 @@ def interrupts_held(hold: bool = True) -> Iterator[None]:
     previous = {sig: signal.signal(sig, take) for sig in (signal.SIGINT, signal.SIGTERM) if signal.getsignal(sig) is not signal.SIG_IGN}
     previous_hook, sys.unraisablehook = sys.unraisablehook, sys.unraisablehook if hold else unraisable
     try:
-        yield
+        yield received
     finally:
         sys.unraisablehook = previous_hook
         for sig, handler in previous.items():

@@ -305,6 +305,32 @@ def test_ctrl_c_stops_cleanly_and_keeps_the_finished_pairs(executor, tmp_path):
     assert list(resumed["reused"]) == [f"dungeon_seed_{seed}_rooms_60" in finished for seed in range(3)]
 
 
+def test_a_ctrl_c_inside_the_pools_wait_is_acted_on_once_the_pool_has_shut_down(monkeypatch):
+    """Raised inside concurrent.futures' wait, a KeyboardInterrupt could leave a lock held and the pool's shutdown
+    waited for ever (the Ctrl-C test above hung on CI): the pool takes it between waits."""
+    from concurrent.futures import wait
+
+    from g2s_plugins.executors import process_pool
+
+    returned = []
+
+    def wait_interrupted(*args, **kwargs):
+        signal.raise_signal(signal.SIGINT)
+        returned.append(wait(*args, **kwargs))
+        return returned[-1]
+
+    monkeypatch.setattr(process_pool, "wait", wait_interrupted)
+    previous = signal.signal(signal.SIGINT, signal.default_int_handler)  # pytest-xdist's workers may ignore SIGINT
+    try:
+        rows = process_pool.g2s_execute(function=abs, items=[-1, -2, -3], params=process_pool.Params(workers=1),
+                                        lost=None)
+        with pytest.raises(KeyboardInterrupt):
+            list(rows)
+    finally:
+        signal.signal(signal.SIGINT, previous)
+    assert len(returned) == 1
+
+
 def test_chokepoints_and_regions_are_summed_up(tmp_path):
     summary = run_batch(["level_regions"], ["sample:dungeon?seed=1&rooms=30"], tmp_path / "out", "serial",
                         formats="json")

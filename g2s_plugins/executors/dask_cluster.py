@@ -10,6 +10,7 @@ from __future__ import annotations
 import logging
 import os
 import signal
+import time
 from collections.abc import Callable, Iterator, Sequence
 from contextlib import contextmanager
 from typing import Any
@@ -18,6 +19,8 @@ from pydantic import Field
 
 from g2s_core.errors import G2SError
 from g2s_core.plugin import PluginParams, hookimpl
+from g2s_core.result_folder import interrupts_held
+from g2s_plugins.executors import INTERRUPT_POLL
 
 NAME = "dask"
 
@@ -70,7 +73,7 @@ def g2s_execute(
                 dashboard_address=":0", silence_logs=logging.CRITICAL,
             )
         client = Client(cluster)
-    waiting, running, finished = list(items), {}, as_completed()
+    waiting, running, completed = list(items), {}, as_completed()
 
     def submit_more() -> None:
         """Items onto the cluster while it has a thread free (one at least, while its workers start or restart)."""
@@ -78,20 +81,25 @@ def g2s_execute(
             item = waiting.pop(0)
             future = client.submit(function, item, pure=False)  # run again when asked again (resume decides, not a cache)
             running[future] = item
-            finished.add(future)
+            completed.add(future)
 
-    try:
-        submit_more()
-        for future in finished:
-            item = running.pop(future)
-            try:
-                row = future.result()
-            except KilledWorker:  # which ended the batch, exit 1 blaming this plugin in Dask's 600 characters
-                row = lost(item, "every Dask worker that held it died")
+    with interrupts_held() as interrupts:  # acted on once the cluster is closed (INTERRUPT_POLL)
+        try:
             submit_more()
-            yield row
-    finally:
-        client.cancel(list(running))
-        client.close()
-        if cluster is not None:
-            cluster.close()
+            while not (interrupts or completed.is_empty()):
+                finished = completed.next_batch(block=False)
+                if not finished:
+                    time.sleep(INTERRUPT_POLL)
+                for future in finished:
+                    item = running.pop(future)
+                    try:
+                        row = future.result()
+                    except KilledWorker:  # which ended the batch, exit 1 blaming this plugin in Dask's 600 characters
+                        row = lost(item, "every Dask worker that held it died")
+                    submit_more()
+                    yield row
+        finally:
+            client.cancel(list(running))
+            client.close()
+            if cluster is not None:
+                cluster.close()

@@ -16,18 +16,17 @@ from typing import Any
 from pydantic import Field
 
 from g2s_core.plugin import PluginParams, hookimpl
+from g2s_core.result_folder import interrupts_held
+from g2s_plugins.executors import INTERRUPT_POLL
 
 NAME = "local"
 
 DIED = "its worker process died as it ran"
 """Why a pair whose worker died failed: the pool cannot tell a signal's kind."""
 
-WATCH_SECONDS = 1.0
-"""How often the batch looks at the pool's threads while no pair finishes."""
-
 
 class PoolThreadDied(RuntimeError):
-    """A thread of the pool itself died: the pairs it would have handed out never finish."""
+    """A thread of the pool itself could not start or died: the pairs it would have handed out never finish."""
 
 
 class Params(PluginParams):
@@ -68,30 +67,39 @@ def _pooled(function: Callable[[Any], dict[str, Any]], items: Sequence[Any], wor
     """Yield ``function(item)`` for ``items`` from a pool of ``workers`` as each finishes; return the items left
     unfinished, in their order, when a worker died (none when every item ran).
 
+    A Ctrl-C is taken between waits and acted on once the pool has shut down (:data:`INTERRUPT_POLL`).
+
     Raises:
-        PoolThreadDied: a thread of the pool died (one that could not start its own under a tight memory limit).
+        PoolThreadDied: a thread of the pool could not start or died (under a tight memory limit: ``ulimit -v``).
     """
     earlier = set(multiprocessing.active_children())
-    # forkserver: workers start from a clean process, not a copy of one with a progress thread running
-    pool = ProcessPoolExecutor(workers, multiprocessing.get_context("forkserver"), _ignore_interrupt)
-    with _thread_deaths() as deaths:
+    with interrupts_held() as interrupts, _thread_deaths() as deaths:
+        # forkserver: workers start from a clean process, not a copy of one with a progress thread running
+        pool = ProcessPoolExecutor(workers, multiprocessing.get_context("forkserver"), _ignore_interrupt)
+        futures: dict[Any, Any] = {}
         try:
-            futures = {pool.submit(function, item): item for item in items}
+            try:
+                futures = {pool.submit(function, item): item for item in items}
+            except BrokenProcessPool:
+                raise
+            except RuntimeError as exc:  # `can't start new thread`: the pool starts its own with the first item
+                deaths.append(exc)
             pending = set(futures)
-            while pending:
-                finished, pending = wait(pending, WATCH_SECONDS, return_when=FIRST_COMPLETED)
-                if deaths:  # under `ulimit -v` the pool's thread could not start the thread that feeds its workers
-                    raise PoolThreadDied(f"a thread of the pool died ({type(deaths[0]).__name__}: {deaths[0]}; under a "
-                                         "memory limit? --executor serial needs no threads)") from deaths[0]
+            # dead, the pool's thread (which could not start the one feeding its workers) left them waiting for ever
+            while pending and not (interrupts or deaths):
+                finished, pending = wait(pending, timeout=INTERRUPT_POLL, return_when=FIRST_COMPLETED)
                 for future in finished:
                     if not isinstance(future.exception(), BrokenProcessPool):
                         yield future.result()
-            return [item for future, item in futures.items() if isinstance(future.exception(), BrokenProcessPool)]
         finally:  # also on Ctrl-C or when the batch closes the iterator: the running pairs finish, the others are dropped
-            if deaths:  # its workers wait on a queue no thread feeds any more, and the interpreter's exit on them
+            if deaths:  # its workers wait on a queue no thread feeds, and the interpreter's exit would wait on them
                 for process in set(multiprocessing.active_children()) - earlier:
                     process.terminate()
-            pool.shutdown(wait=True, cancel_futures=True)
+            pool.shutdown(wait=not deaths, cancel_futures=True)  # a thread that never started cannot be joined
+    if deaths:
+        raise PoolThreadDied(f"the pool cannot run its threads ({type(deaths[0]).__name__}: {deaths[0]}; under a "
+                             "memory limit? --executor serial needs none)") from deaths[0]
+    return [item for future, item in futures.items() if isinstance(future.exception(), BrokenProcessPool)]
 
 
 @contextmanager

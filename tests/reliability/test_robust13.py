@@ -69,8 +69,8 @@ def test_a_pool_that_cannot_start_its_thread_says_so_instead_of_waiting_forever(
     # pairs that nobody handed out. Here the feeder's start fails as it did there
     ran = subprocess.run([sys.executable, "-c", THREADLESS_POOL], capture_output=True, text=True, timeout=60)
     assert (ran.returncode, ran.stderr) == (0, "")
-    assert ran.stdout == ("a thread of the pool died (RuntimeError: can't start new thread; under a memory limit? "
-                          "--executor serial needs no threads)\n")
+    assert ran.stdout == ("the pool cannot run its threads (RuntimeError: can't start new thread; under a memory limit? "
+                          "--executor serial needs none)\n")
 
 
 @pytest.mark.parametrize("spec", [f"{CORRIDOR}#x", f"{CORRIDOR}?width=4#x", f"{CORRIDOR}#", "sample:file:straight_corridor",
