@@ -48,26 +48,31 @@ def test_another_packages_broken_entry_points_are_named_in_one_line(entry_points
 
 
 THREADLESS_POOL = """
+import concurrent.futures.process
 import multiprocessing.queues
 from g2s_plugins.executors import process_pool
 
-def refuse(queue):
+def refuse(thread):
     raise RuntimeError("can't start new thread")
 
-multiprocessing.queues.Queue._start_thread = refuse  # as under `ulimit -v` with pandas and pyarrow loaded
+{refused} = refuse  # as under `ulimit -v` with pandas and pyarrow loaded
 try:
     list(process_pool.g2s_execute(function=abs, items=[-1, -2, -3], params=process_pool.Params(workers=2),
-                                  lost=lambda item, reason: {}))
+                                  lost=lambda item, reason: {{}}))
 except process_pool.PoolThreadDied as exc:
     print(exc)
 """
 
 
-def test_a_pool_that_cannot_start_its_thread_says_so_instead_of_waiting_forever():
+@pytest.mark.parametrize("refused", ["multiprocessing.queues.Queue._start_thread",
+                                     "concurrent.futures.process._ExecutorManagerThread.start"])
+def test_a_pool_that_cannot_start_its_threads_says_so_instead_of_waiting_forever(refused):
     # robust12's leftover: under `ulimit -v 600000` the pool's own thread could not start the thread that feeds its
     # workers (`RuntimeError: can't start new thread`, a traceback on stderr) and died; the batch waited forever for
-    # pairs that nobody handed out. Here the feeder's start fails as it did there
-    ran = subprocess.run([sys.executable, "-c", THREADLESS_POOL], capture_output=True, text=True, timeout=60)
+    # pairs that nobody handed out. A little tighter (560,000), the pool's own thread, started with the first item,
+    # cannot start: the shutdown then failed to join it and left the workers it had started
+    ran = subprocess.run([sys.executable, "-c", THREADLESS_POOL.format(refused=refused)], capture_output=True, text=True,
+                         timeout=60)
     assert (ran.returncode, ran.stderr) == (0, "")
     assert ran.stdout == ("the pool cannot run its threads (RuntimeError: can't start new thread; under a memory limit? "
                           "--executor serial needs none)\n")
