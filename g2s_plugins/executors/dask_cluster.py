@@ -48,12 +48,7 @@ def g2s_execute(
     function: Callable[[Any], dict[str, Any]], items: Sequence[Any], params: Params, lost: Callable[[Any, str], dict[str, Any]]
 ) -> Iterator[dict[str, Any]]:
     """Each item as a Dask task, yielded as it finishes; an item whose workers died running it is ``lost``, the others
-    run (Dask tries it on another worker first: ``distributed.scheduler.allowed-failures``, 3 by default).
-
-    The cluster holds at most as many items as its workers have threads, the others wait here: Dask sends a worker
-    more items than it runs at once (a batch of fewer than twice the threads all at once), and an item waiting on a
-    worker that another item kills is as suspect to Dask as the killer, and was lost with it.
-    """
+    run (Dask tries it on another worker first: ``distributed.scheduler.allowed-failures``, 3 by default)."""
     from dask.distributed import Client, LocalCluster, as_completed
     from distributed.scheduler import KilledWorker
 
@@ -73,33 +68,23 @@ def g2s_execute(
                 dashboard_address=":0", silence_logs=logging.CRITICAL,
             )
         client = Client(cluster)
-    waiting, running, completed = list(items), {}, as_completed()
-
-    def submit_more() -> None:
-        """Items onto the cluster while it has a thread free (one at least, while its workers start or restart)."""
-        while waiting and len(running) < max(1, sum(client.nthreads().values())):
-            item = waiting.pop(0)
-            future = client.submit(function, item, pure=False)  # run again when asked again (resume decides, not a cache)
-            running[future] = item
-            completed.add(future)
-
+    # pure=False: a pair is run again when asked again (resume decides what is finished, not Dask's cache)
+    futures = {client.submit(function, item, pure=False): item for item in items}
     with interrupts_held() as interrupts:  # acted on once the cluster is closed (INTERRUPT_POLL)
         try:
-            submit_more()
+            completed = as_completed(futures)
             while not (interrupts or completed.is_empty()):
                 finished = completed.next_batch(block=False)
                 if not finished:
                     time.sleep(INTERRUPT_POLL)
                 for future in finished:
-                    item = running.pop(future)
                     try:
                         row = future.result()
                     except KilledWorker:  # which ended the batch, exit 1 blaming this plugin in Dask's 600 characters
-                        row = lost(item, "every Dask worker that held it died")
-                    submit_more()
+                        row = lost(futures[future], "every Dask worker that held it died")
                     yield row
         finally:
-            client.cancel(list(running))
+            client.cancel([f for f in futures if not f.done()])
             client.close()
             if cluster is not None:
                 cluster.close()

@@ -11,7 +11,6 @@ from pathlib import Path
 import pytest
 
 from tests.reliability.checks import CORRIDOR, QUICK_CONFIG, assert_clean_error, run_g2s, tree
-from tests.reliability.test_robust12 import g2s_with_path, third_party
 
 CONSOLE_SCRIPT = "import sys; from g2s_core.entry import main; sys.exit(main())"
 """``g2s`` as its console script starts it (:func:`g2s_core.entry.main`), for a child process."""
@@ -89,52 +88,6 @@ def test_a_sample_spec_of_a_fragment_or_a_scheme_is_refused(spec, tmp_path, caps
     assert_clean_error(outcome, f"{spec}: expected sample:NAME?param=value&param=value (no '#', '//' or second ':'; "
                                 "a value's '#' is written %23)")
     assert tree(tmp_path / "out") == []
-
-
-DIES_ON_LARGE_LEVELS = '''"""An analyzer whose process dies on a level of more than `faces` triangles, as one killed for want of memory does."""
-import os
-import signal
-
-from pydantic import Field
-
-from g2s_core.plugin import PluginParams, hookimpl
-
-NAME = "dies"
-
-
-class Params(PluginParams):
-    """Which levels it dies on."""
-
-    faces: int = Field(100, description="it dies on levels of more triangles")
-
-
-@hookimpl
-def g2s_analyze(structure, params, context):
-    if len(context.mesh.faces) > params.faces:
-        os.kill(os.getpid(), signal.SIGKILL)
-    return {node: 1.0 for node in structure}
-'''
-
-
-def test_a_sound_pair_queued_behind_one_that_kills_its_dask_worker_runs(tmp_path):
-    # robust12's leftover: Dask sends a worker more pairs than it runs at once (a batch of fewer pairs than twice the
-    # workers' threads, all at once), and a pair waiting on a worker that another pair kills is as suspect to Dask as
-    # the killer: after four deaths both failed, `every Dask worker that held it died` (here, on one worker, every
-    # time; among 10 sound pairs on 2 workers, 1 sound pair lost in 1 run of 2)
-    folder = third_party(tmp_path / "site", "dies-plug", {"analyzers.dies": "dies_mod"}, {"dies_mod": DIES_ON_LARGE_LEVELS})
-    config = tmp_path / "dies.yaml"
-    config.write_text("extends: map_piece\nanalyzers: [{plugin: dies, params: {faces: 100}}]\n")  # cross_hub: 252
-    out = tmp_path / "out"
-    batch = g2s_with_path(folder, "batch", str(config), "sample:cross_hub", CORRIDOR, "-o", str(out), "--executor", "dask",
-                          "--workers", "1", "--format", "json", "-q", timeout=600)  # 25-40 s
-    assert batch.returncode == 4, batch.stderr
-    assert batch.stderr == ("g2s: dies on cross_hub failed: sample:cross_hub: every Dask worker that held it died (killed, "
-                            "e.g. by the system for want of memory, or a crash in native code); the batch's other pairs ran\n")
-    import pandas as pd
-
-    summary = pd.read_csv(out / "summary.csv")
-    assert dict(zip(summary["level"], summary["status"])) == {"cross_hub": "failed", "straight_corridor": "ok"}
-    assert (out / "dies" / "straight_corridor" / "structure.json").is_file()
 
 
 SQUARE_FLOOR = "v 0 0 0\nv 10 0 0\nv 10 0 10\nv 0 0 10\nf 1 3 2\nf 1 4 3\n"
