@@ -1,4 +1,4 @@
-"""Level kinds of the fifth to fourteenth held-out rounds (issue 9): generators no preset setting was made on.
+"""Level kinds of the fifth to fifteenth held-out rounds (issue 9): generators no preset setting was made on.
 
 Fifth round: six kinds, each about 1,000 navmesh polygons with the presets' agent (radius 0.5 m, height 2 m, climb 0.4 m):
 ``subway`` (platforms, track pits 1.2 m lower, stairs up to two concourses), ``archipelago`` (islands joined by
@@ -100,6 +100,16 @@ angle to the axes is cut by Recast's ledge filter (a first draft's treetop fligh
 more than the climb), so every flight here runs along x or z; and the top of a deck inside any closed solid standing
 on it is floor (the cruise ship's first draft: its cabin blocks, funnel and pools), so the block rises from under the
 lowest deck and the decks stop at it.
+
+Fifteenth round: six more kinds, 535-696 navmesh polygons with that agent (seeds 0-2): ``oil_rig`` (three decks of
+equipment over the sea joined by flights through openings in the deck above, a bridge to an accommodation platform
+whose block's top is the helideck), ``monastery`` (a compound on a rock with vertical faces reached only by one stair
+of 10-11 flights along two faces), ``night_market`` (stall rows either side of a viaduct whose halves meet only through
+its arches and round its ends), ``cinema`` (auditoria whose raked floors join a foyer 6 m up to exit corridors at the
+ground: parallel stepped links between two storeys), ``estate`` (slab blocks with galleries on three storeys, sky
+bridges and pends) and ``dam`` (a crest between two hilltops over a valley, two switchback stairs up vertical faces).
+A flat top under a ridged deck is floor inside it (a first draft's viaduct piers: 11-12 areas of 15 m² at 8.2 m on
+each seed), so the piers are ridged up into the deck.
 
 Run: ``.venv/bin/python benchmarks/level_kinds.py OUT_DIR [--kinds subway forest] [--seeds 0 1 2]`` writes
 ``OUT_DIR/<kind>_s<seed>.obj``, the files ``benchmarks/analysis_quality.py --levels`` takes (which also takes the
@@ -3952,8 +3962,8 @@ def golf(seed: int) -> trimesh.Trimesh:
     for x in club[:2]:
         s.wall((x, club[2]), (x, club[3]), low, high, thickness=0.3)
     _gable(s, club[0] - 0.3, club[1] + 0.3, club[2] - 0.3, club[3] + 0.3, high)
-    clumps = 0
-    while clumps < int(rng.integers(12, 19)):
+    clumps, target = 0, int(rng.integers(12, 19))
+    while clumps < target:
         c = np.array([rng.uniform(10.0, size_x - 10.0), rng.uniform(10.0, size_z - 10.0)])
         if not _clear(c[0] - 10.0, c[0] + 10.0, c[1] - 10.0, c[1] + 10.0, taken):
             continue
@@ -4843,6 +4853,7 @@ def cruise_ship(seed: int) -> trimesh.Trimesh:
               for piece in ((x0, min(x1, funnel_x), z0, z1), (max(x0, funnel_x + 12.0), x1, z0, z1)) if piece[1] - piece[0] > 1.0]
     for x0, x1, z0, z1 in blocks:  # the cabin blocks, from the lowest deck's underside to the sun deck's floor
         s.box(x0, x1, -0.3, 12.0, z0, z1)
+    prev_stern: list[float] = []  # the z of the flights up from the deck below (none below the lowest)
     for k in range(5):
         top, x0, x1 = 3.0 * k, starts[k], ends[k]
         if k < 4:
@@ -4910,9 +4921,11 @@ def treetops(seed: int) -> trimesh.Trimesh:
     bridges 1.8 m wide (ramps, no steeper than 20 degrees, 3-20 m long between platform edges, none passing within
     1 m of a third platform): a minimum spanning tree of the allowed pairs by length and a quarter of the other
     allowed pairs. Each group of three or more platforms is reached from the floor by a flight (0.18 / 0.28 m steps)
-    up to its lowest platform, walked onto head-on; a smaller group (a hide) by a ladder only (a board no agent
-    climbs), so a hide is an area of its own. 120-180 other trunks (0.2-0.5 m) and bushes (rocks) stand on the floor,
-    clear of the flights; a ranger's hut (ridged; the ground stops under it).
+    up to its lowest platform with a side (along x or z) clear of the other platforms, of its bridges and of the
+    floor's edge, walked onto head-on; a smaller group (a hide) by a ladder only (a board no agent climbs), so a hide
+    is an area of its own, and so is a group none of whose platforms has a clear side (no flight, no ladder).
+    120-180 other trunks (0.2-0.5 m) and bushes (rocks) stand on the floor, clear of the flights; a ranger's hut
+    (ridged; the ground stops under it).
     """
     rng = np.random.default_rng(seed)
     s = _Solids()
@@ -4931,7 +4944,7 @@ def treetops(seed: int) -> trimesh.Trimesh:
         c = np.array([rng.uniform(12.0, size_x - 12.0), rng.uniform(12.0, size_z - 12.0)])
         if all(np.linalg.norm(c - o) > 11.0 for o in centres):
             centres.append(c)
-    n = int(rng.integers(22, 29))
+    n = min(int(rng.integers(22, 29)), len(centres))  # fewer when fewer than 22-28 fit 11 m apart
     centres = centres[:n]
     radii = rng.uniform(3.0, 4.2, size=n)
     heights = np.round(rng.uniform(4.0, 11.0, size=n) * 2) / 2
@@ -5001,26 +5014,36 @@ def treetops(seed: int) -> trimesh.Trimesh:
     members: dict[int, list[int]] = {}
     for i in range(n):
         members.setdefault(root(i), []).append(i)
-    for group_members in members.values():
-        low = min(group_members, key=lambda i: heights[i])
+
+    def clear_side(low: int, ladder: bool) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
+        """A side of platform ``low`` along x or z (a flight at an angle to the axes has cells whose neighbours differ
+        by more than the climb, ledges to Recast) from which its flight (or ladder) keeps clear of the other
+        platforms, of its bridges and of the floor's edge: the direction u (2,), the flight's top and foot (2,)
+        each, or None when no side is clear. The sides are tried in a random order."""
         c = centres[low]
-        # a flight (or a ladder) from a side clear of the other platforms and of the bridges, along x or z (a flight
-        # at an angle to the axes has cells whose neighbours differ by more than the climb, ledges to Recast)
         for u in rng.permutation(np.array([[1.0, 0.0], [-1.0, 0.0], [0.0, 1.0], [0.0, -1.0]])):
             end = c + u * (radii[low] - 0.2)
-            foot_height = float(height(*(end + u * 14.0)))
-            rise = heights[low] - foot_height
-            steps_n = math.ceil(rise / 0.18)
-            run = steps_n * 0.28
-            foot = end + u * run
-            ladder = len(group_members) < 3
+            run = math.ceil((heights[low] - float(height(*(end + u * 14.0)))) / 0.18) * 0.28
             reach = end + u * (run + 3.0 if not ladder else 1.0)
             away = [np.dot(u, (centres[j if i == low else i] - c) / np.linalg.norm(centres[j if i == low else i] - c))
                     for i, j in bridges if low in (i, j)]
             if all(np.linalg.norm(reach - o) > r + 3.0 for k, (o, r) in enumerate(zip(centres, radii)) if k != low) and \
                     all(cos < math.cos(math.radians(50.0)) for cos in away) and \
                     2.0 < reach[0] < size_x - 2.0 and 2.0 < reach[1] < size_z - 2.0:
+                return u, end, end + u * run
+        return None
+
+    for group_members in members.values():
+        ladder = len(group_members) < 3
+        # the lowest platform with a clear side, the next lowest when none of its sides is clear
+        for low in sorted(group_members, key=lambda i: heights[i]):
+            side_found = clear_side(low, ladder)
+            if side_found is not None:
                 break
+        else:
+            continue  # no platform of the group has a clear side: no way up, an area of its own as a hide is
+        u, end, foot = side_found
+        c = centres[low]
         if ladder:
             p = c + u * (radii[low] + 0.05)
             side = np.array([-u[1], u[0]]) * 0.3
@@ -5349,6 +5372,607 @@ def craters(seed: int) -> trimesh.Trimesh:
     return s.mesh()
 
 
+def _rail_ring(s: _Solids, x0: float, x1: float, z0: float, z1: float, y: float,
+               openings: dict[str, list[tuple[float, float]]]) -> None:
+    """Rails 1.1 m high, 0.1 m thick, round the rectangle [x0, x1] x [z0, z1] on a floor at ``y``, open over the
+    ``openings`` of each side ("south" z0, "north" z1, "west" x0, "east" x1: (start, width), metres from the side's
+    low end)."""
+    s.wall((x0, z0), (x1, z0), y, y + 1.1, openings.get("south", []), thickness=0.1)
+    s.wall((x0, z1), (x1, z1), y, y + 1.1, openings.get("north", []), thickness=0.1)
+    s.wall((x0, z0), (x0, z1), y, y + 1.1, openings.get("west", []), thickness=0.1)
+    s.wall((x1, z0), (x1, z1), y, y + 1.1, openings.get("east", []), thickness=0.1)
+
+
+def oil_rig(seed: int) -> trimesh.Trimesh:
+    """An offshore oil rig over the sea (no floor below the decks): a production platform 85-95 x 50-56 m of three
+    open decks 7 m apart (12, 19 and 26 m up) on four legs 3 m square, each deck cut by a well bay 8 m square through
+    all three (railed) and crowded with equipment (40-50 ridged modules 2-7 x 2-5 m, 2.5-5 m high, 2.2 m and more
+    apart; the decks stop under them), railed along every edge; two flights (39 steps of 0.179 / 0.28 m, 2 m wide, along x, through openings in
+    the deck above, met head-on) between each pair of decks; a flight of 50 steps from a boat landing 3 m up at the
+    west edge to the lowest deck. A bridge 2.4 m wide and 40-55 m long, railed, joins the middle deck to the
+    accommodation platform's deck (19 m), where a walkway 3-4.5 m wide rings a closed accommodation block whose top
+    is the helideck (26 m), reached by one flight along the block's south face onto a landing beside it.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    px, pz = rng.uniform(85.0, 95.0), rng.uniform(50.0, 56.0)
+    ax0 = px + rng.uniform(40.0, 55.0)
+    ax1, az0, az1 = ax0 + rng.uniform(30.0, 36.0), pz / 2 - 14.0, pz / 2 + 14.0
+    decks, storey = [12.0, 19.0, 26.0], 7.0
+    steps = math.ceil(storey / 0.18)
+    run = steps * 0.28
+    legs = [(x, x + 3.0, z, z + 3.0) for x in (3.0, px - 6.0) for z in (3.0, pz - 6.0)]
+    for x0, x1, z0, z1 in legs:
+        s.box(x0, x1, -20.0, decks[-1], z0, z1)
+    wx, wz = rng.uniform(15.0, px - 23.0), rng.uniform(10.0, pz - 18.0)
+    well = (wx, wx + 8.0, wz, wz + 8.0)
+    flights: list[list[tuple[float, float, float]]] = []  # per deck pair: (x of the foot, z of the axis, heading)
+    for k in range(2):
+        pair: list[tuple[float, float, float]] = []
+        while len(pair) < 2:
+            heading = 1.0 if rng.random() < 0.5 else -1.0
+            fx, fz = rng.uniform(4.0 + run, px - 4.0 - run), rng.uniform(4.0, pz - 4.0)
+            lo, hi = min(fx, fx + heading * run), max(fx, fx + heading * run)
+            box = (lo - 3.0, hi + 3.0, fz - 2.5, fz + 2.5)
+            below = [(min(a, a + h * run) - 3.0, max(a, a + h * run) + 3.0, c - 2.5, c + 2.5) for f in flights for a, c, h in f]
+            if _clear(*box, [well, *legs, *below, *[(min(a, a + h * run) - 3.0, max(a, a + h * run) + 3.0, c - 2.5, c + 2.5)
+                                                   for a, c, h in pair]]):
+                pair.append((fx, fz, heading))
+        flights.append(pair)
+    for k, top in enumerate(decks):
+        holes = [well, *legs]
+        if k > 0:  # the openings over the flights from the deck below
+            holes += [(min(a, a + h * run), max(a, a + h * run), c - 1.0, c + 1.0) for a, c, h in flights[k - 1]]
+        taken = [(h[0] - 2.0, h[1] + 2.0, h[2] - 2.0, h[3] + 2.0) for h in holes]
+        if k < 2:
+            taken += [(min(a, a + h * run) - 3.0, max(a, a + h * run) + 3.0, c - 2.5, c + 2.5) for a, c, h in flights[k]]
+            for a, c, h in flights[k]:
+                s.stairs(np.array([a, c]), np.array([h, 0.0]), 2.0, top, storey, storey / steps, 0.28, depth=0.45)
+        if k == 1:
+            taken.append((px - 8.0, px, pz / 2 - 4.0, pz / 2 + 4.0))  # the bridge's head
+        if k == 0:
+            taken.append((0.0, 6.0, pz / 2 - 4.0, pz / 2 + 4.0))  # the boat landing flight's head
+        for _ in range(int(rng.integers(40, 51))):  # equipment modules, 2.5 m and more from the edges
+            for _ in range(60):
+                w, d = rng.uniform(2.0, 7.0), rng.uniform(2.0, 5.0)
+                mx, mz = rng.uniform(2.5, px - 2.5 - w), rng.uniform(2.5, pz - 2.5 - d)
+                if _clear(mx - 2.2, mx + w + 2.2, mz - 2.2, mz + d + 2.2, taken):
+                    holes.append(_ridged(s, mx, mx + w, mz, mz + d, top - 0.3, top + rng.uniform(2.5, 5.0)))
+                    taken.append((mx - 2.2, mx + w + 2.2, mz - 2.2, mz + d + 2.2))
+                    break
+        s.ground(0.0, px, 0.0, pz, top, holes, thickness=0.3)  # strips, not a grid of cells: many holes
+        openings: dict[str, list[tuple[float, float]]] = {}
+        if k == 1:
+            openings["east"] = [(pz / 2 - 1.2, 2.4)]
+        if k == 0:
+            openings["west"] = [(pz / 2 - 1.0, 2.0)]
+        _rail_ring(s, 0.0, px, 0.0, pz, top, openings)
+        _rail_ring(s, *well, top, {})
+    # the boat landing and its flight up to the lowest deck
+    low_steps = 50
+    low_run = low_steps * 0.28
+    s.box(-low_run - 5.0, -low_run, 2.7, 3.0, pz / 2 - 3.0, pz / 2 + 3.0)
+    s.stairs(np.array([-low_run, pz / 2]), np.array([1.0, 0.0]), 2.0, 3.0, decks[0] - 3.0, (decks[0] - 3.0) / low_steps, 0.28)
+    s.box(-low_run - 5.5, -low_run - 4.0, -20.0, 2.7, pz / 2 - 0.75, pz / 2 + 0.75)  # the landing's pile
+    # the bridge to the accommodation platform
+    s.box(px, ax0, decks[1] - 1.0, decks[1], pz / 2 - 1.2, pz / 2 + 1.2)
+    for side in (-1.0, 1.0):
+        s.box(px, ax0, decks[1], decks[1] + 1.1, pz / 2 + side * 1.2 - 0.05, pz / 2 + side * 1.2 + 0.05)
+    # the accommodation platform: a walkway round a closed block whose top is the helideck
+    for x in (ax0 + 2.0, ax1 - 5.0):
+        for z in (az0 + 2.0, az1 - 5.0):
+            s.box(x, x + 3.0, -20.0, decks[1] - 0.3, z, z + 3.0)
+    south = rng.uniform(3.0, 4.5) + 2.0
+    block = (ax0 + 3.5, ax1 - 3.5, az0 + south, az1 - 3.0)
+    s.box(block[0], block[1], decks[1] - 0.3, decks[2], block[2], block[3])
+    s.slab(ax0, ax1, az0, az1, decks[1], [block])
+    _rail_ring(s, ax0, ax1, az0, az1, decks[1], {"west": [(pz / 2 - 1.2 - az0, 2.4)]})
+    fx = rng.uniform(block[0] + 1.0, block[1] - run - 3.0)
+    fz = block[2] - 1.1
+    s.stairs(np.array([fx, fz]), np.array([1.0, 0.0]), 2.0, decks[1], storey, storey / steps, 0.28, depth=0.45)
+    s.box(fx + run, fx + run + 2.5, decks[2] - 0.3, decks[2], fz - 1.0, block[2])  # the landing beside the helideck
+    heli = (block[0], block[1], block[2], block[3])
+    _rail_ring(s, *heli, decks[2], {"south": [(fx + run - block[0], 2.5)]})
+    return s.mesh()
+
+
+def _trees(s: _Solids, rng: np.random.Generator, tries: int, size_x: float, size_z: float,
+           taken: list[tuple[float, float, float, float]], radii: tuple[float, float], top: float) -> None:
+    """``tries`` trunks at plan points uniform over [2, size_x - 2] x [2, size_z - 2] m, each placed only 1 m clear of
+    every rectangle of ``taken`` (which then holds it, 1.5 m round), radius uniform in ``radii`` (m), from 0.5 m under
+    the ground to ``top``."""
+    for _ in range(tries):
+        p = np.array([rng.uniform(2.0, size_x - 2.0), rng.uniform(2.0, size_z - 2.0)])
+        if _clear(p[0] - 1.0, p[0] + 1.0, p[1] - 1.0, p[1] + 1.0, taken):
+            _trunk(s, p, rng.uniform(*radii), -0.5, top)
+            taken.append((p[0] - 1.5, p[0] + 1.5, p[1] - 1.5, p[1] + 1.5))
+
+
+def monastery(seed: int) -> trimesh.Trimesh:
+    """A monastery on a rock: flat ground 170 x 140 m (a hamlet of houses, ridged, and trees at the foot) round a
+    rock 62-70 x 50-54 m with vertical faces, its top 32.4 or 35.6 m up (10 or 11 flights), reached only by one long
+    stair: flights of 18 steps (0.18 / 0.28 m, 2.4 m wide, solid) with 2.4 m landings along the rock's south face
+    (+x) and round its south-east corner up its east face (+z), to a gate in the wall round the top (2.5 m high, a
+    parapet). On the top: a cloister (a walk 3 m wide round a square garth 18 m across, pillars 0.5 m every 3 m on
+    the garth's side, a wall on the outer side with a 2 m door on each side), a church north of it (a nave of ridged
+    pews, a door from the cloister and one to the yard), a range of 8-12 cells (3.5-4 m wide, 1.6 m doors) off a
+    corridor east of the cloister, a refectory west of it (ridged tables), kitchen-garden beds (0.25 m, under the
+    climb) and a railed terrace at the west end; rooms are walled (4 m) under roofs at 50 degrees (:func:`_gable`).
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    size_x, size_z = 170.0, 140.0
+    width, depth = rng.uniform(62.0, 70.0), rng.uniform(50.0, 54.0)
+    rx0, rz0 = rng.uniform(45.0, size_x - width - 45.0), rng.uniform(40.0, size_z - depth - 30.0)
+    rx1, rz1 = rx0 + width, rz0 + depth
+    n_flights, riser, per = int(rng.integers(10, 12)), 0.18, 18
+    rise, run, landing = per * riser, per * 0.28, 2.4
+    top = n_flights * rise
+    rock = (rx0, rx1, rz0, rz1)
+    s.box(rx0, rx1, -1.0, top, rz0, rz1)
+    # the stair: along the south face (+x), round the corner, up the east face (+z)
+    lane = (rz0 - landing, rz0)
+    x, y, z = rx0 + 4.0, 0.0, rz0
+    heading_x = True
+    for _ in range(n_flights):
+        if heading_x and x + run > rx1:
+            s.box(x - landing, rx1 + landing, y - 0.45, y, lane[0], lane[1])  # on to the corner
+            heading_x, z = False, rz0
+        if heading_x:
+            s.stairs(np.array([x, (lane[0] + lane[1]) / 2]), np.array([1.0, 0.0]), landing, y, rise, riser, 0.28,
+                     depth=0.45)
+            x += run
+            y += rise
+            s.box(x, x + landing, y - 0.45, y, lane[0], lane[1])
+            x += landing
+        else:
+            s.stairs(np.array([rx1 + landing / 2, z]), np.array([0.0, 1.0]), landing, y, rise, riser, 0.28, depth=0.45)
+            z += run
+            y += rise
+            s.box(rx1, rx1 + landing, y - 0.45, y, z, z + landing)
+            z += landing
+    # the wall round the top (a parapet 2.5 m high), the gate at the stair's last landing
+    gates = {"south": [(x - landing - rx0, landing)]} if heading_x else {"east": [(z - landing - rz0, landing)]}
+    for side, (a, b) in {"south": ((rx0, rz0), (rx1, rz0)), "north": ((rx0, rz1), (rx1, rz1)),
+                         "west": ((rx0, rz0), (rx0, rz1)), "east": ((rx1, rz0), (rx1, rz1))}.items():
+        s.wall(a, b, top, top + 2.5, gates.get(side, []), thickness=0.4)
+    # the cloister
+    q, walk = 24.0, 3.0
+    cx0, cz0 = rx0 + 20.0, rz0 + 10.0
+    cx1, cz1 = cx0 + q, cz0 + q
+    s.wall((cx0, cz0), (cx1, cz0), top, top + 4.0, [(q / 2 - 1.0, 2.0)])
+    s.wall((cx0, cz1), (cx1, cz1), top, top + 4.0, [(q / 2 - 1.0, 2.0)])
+    s.wall((cx0, cz0), (cx0, cz1), top, top + 4.0, [(q / 2 - 1.0, 2.0)])
+    s.wall((cx1, cz0), (cx1, cz1), top, top + 4.0, [(q / 2 - 1.0, 2.0)])
+    for t in np.arange(cx0 + walk, cx1 - walk + 0.1, 3.0):
+        for zz in (cz0 + walk, cz1 - walk):
+            s.box(t - 0.25, t + 0.25, top, top + 3.5, zz - 0.25, zz + 0.25)
+    for t in np.arange(cz0 + walk + 3.0, cz1 - walk - 0.1, 3.0):
+        for xx in (cx0 + walk, cx1 - walk):
+            s.box(xx - 0.25, xx + 0.25, top, top + 3.5, t - 0.25, t + 0.25)
+    ring = [(cx0, cx1, cz0, cz0 + walk), (cx0, cx1, cz1 - walk, cz1), (cx0, cx0 + walk, cz0, cz1), (cx1 - walk, cx1, cz0, cz1)]
+    for r in ring:
+        _lid(s, r[0], r[1], r[2], r[3], top + 4.0)
+    # the church, north of the cloister: a door from the cloister walk's north door and one to the yard
+    hz0, hz1 = cz1, cz1 + 11.0
+    s.wall((cx0, hz1), (cx1, hz1), top, top + 6.0)
+    s.wall((cx0, hz0), (cx0, hz1), top, top + 6.0, [(4.0, 2.0)])
+    s.wall((cx1, hz0), (cx1, hz1), top, top + 6.0)
+    for zz in np.arange(hz0 + 2.0, hz1 - 2.0, 1.2):  # pews either side of the nave's aisle
+        _ridged(s, cx0 + 3.0, cx0 + q / 2 - 1.5, zz, zz + 0.5, top, top + 0.45)
+        _ridged(s, cx0 + q / 2 + 1.5, cx1 - 5.0, zz, zz + 0.5, top, top + 0.45)
+    _gable(s, cx0 - 0.3, cx1 + 0.3, hz0 - 0.3, hz1 + 0.3, top + 6.0)
+    # the cells east of the cloister: a corridor along z, the cells off it
+    ex0 = cx1 + 3.0
+    ex1 = min(ex0 + 9.0, rx1 - 3.0)
+    s.wall((ex0, cz0), (ex0, hz1), top, top + 3.5, [(2.0, 2.0), (hz1 - cz0 - 4.0, 2.0)])
+    s.wall((ex1, cz0), (ex1, hz1), top, top + 3.5)
+    s.wall((ex0, cz0), (ex1, cz0), top, top + 3.5)
+    s.wall((ex0, hz1), (ex1, hz1), top, top + 3.5)
+    cells = _split(cz0, hz1, rng.uniform(3.5, 4.0))
+    s.wall((ex0 + 2.0, cz0), (ex0 + 2.0, hz1), top, top + 3.5, [(a - cz0 + 0.6, 1.6) for a in cells[:-1]])
+    for zz in cells[1:-1]:
+        s.wall((ex0 + 2.0, zz), (ex1, zz), top, top + 3.5)
+    _gable(s, ex0 - 0.3, ex1 + 0.3, cz0 - 0.3, hz1 + 0.3, top + 3.5)
+    # the refectory west of the cloister, tables and benches
+    fx0, fx1 = rx0 + 5.0, cx0 - 3.0
+    s.wall((fx0, cz0), (fx1, cz0), top, top + 4.0, [((fx1 - fx0) / 2 - 1.0, 2.0)])
+    s.wall((fx0, cz1), (fx1, cz1), top, top + 4.0)
+    s.wall((fx0, cz0), (fx0, cz1), top, top + 4.0)
+    s.wall((fx1, cz0), (fx1, cz1), top, top + 4.0, [(q / 2 - 1.0, 2.0)])
+    for zz in np.arange(cz0 + 3.0, cz1 - 3.0, 3.5):
+        _ridged(s, fx0 + 2.0, fx1 - 2.5, zz, zz + 0.9, top, top + 0.75)
+    _gable(s, fx0 - 0.3, fx1 + 0.3, cz0 - 0.3, cz1 + 0.3, top + 4.0)
+    # kitchen garden beds in the north-west, a railed terrace at the west end (the parapet is its rail)
+    for zz in np.arange(hz0 + 1.0, rz1 - 2.0, 2.2):
+        for xx in np.arange(rx0 + 3.0, cx0 - 4.0, 5.0):
+            if rng.random() < 0.7:
+                s.box(xx, xx + 3.5, top, top + 0.25, zz, zz + 1.2)
+    for _ in range(int(rng.integers(4, 8))):  # benches and a well in the yard south of the buildings
+        bx = rng.uniform(rx0 + 3.0, rx1 - 6.0)
+        _ridged(s, bx, bx + 2.0, rz0 + 3.0, rz0 + 3.6, top, top + 0.5)
+    # the hamlet and the trees at the foot, clear of the rock, the stair and the approach
+    taken = [(rx0 - 6.0, rx1 + 6.0, rz0 - 6.0, rz1 + 2.0), (rx0 - 10.0, rx0 + 8.0, 0.0, rz0)]
+    holes = [rock]
+    for _ in range(int(rng.integers(26, 36))):
+        for _ in range(50):
+            w, d = rng.uniform(6.0, 12.0), rng.uniform(5.0, 9.0)
+            hx, hz = rng.uniform(3.0, size_x - w - 3.0), rng.uniform(3.0, size_z - d - 3.0)
+            if _clear(hx - 3.0, hx + w + 3.0, hz - 3.0, hz + d + 3.0, taken):
+                holes.append(_ridged(s, hx, hx + w, hz, hz + d, -0.5, rng.uniform(3.0, 6.0)))
+                taken.append((hx - 3.0, hx + w + 3.0, hz - 3.0, hz + d + 3.0))
+                break
+    _trees(s, rng, int(rng.integers(80, 120)), size_x, size_z, taken, (0.25, 0.45), 6.0)
+    s.ground(0.0, size_x, 0.0, size_z, 0.0, holes)
+    return s.mesh()
+
+
+def night_market(seed: int) -> trimesh.Trimesh:
+    """A night market 270-300 m long either side of a railway viaduct along x (a deck 12 m wide, 8 m up, ridged on
+    top: no floor, on piers 2.5 m thick across it every 18.5-22.5 m). The arches between piers are open passages
+    (two in five), shops with a 2 m door in both faces (one in three), shops with one door (a dead end) or closed
+    stores (ridged, the ground stops under them): the market's two halves (14.5-16.5 m deep) meet only through the
+    open arches and the two-door shops and round the viaduct's ends. Each half: an aisle 3.5 m wide along the
+    viaduct, a double row of stalls (ridged, 2.5-4.5 m long, 2.4 m deep, 2.3 m high), an aisle 3.6-5.6 m wide and a
+    single row of stalls against the site's wall (4 m high); the double row broken every 3-7 stalls by a cross aisle
+    2.5-4 m wide, the single row only at the two or three side streets (4 m wide, through the wall onto a pavement 6
+    m wide outside it; a first draft's gaps in the single row were dead-end bays, all 19 of seed 0's terminals), both
+    stopping 16 m short of one end, where a food court of tables (ridged) stands; 8 m of street beyond each end.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    length = rng.uniform(270.0, 300.0)
+    half = rng.uniform(14.5, 16.5, size=2)  # the south and north halves' depths
+    zv0 = float(half[0])
+    zv1, size_z = zv0 + 12.0, zv0 + 12.0 + float(half[1])
+    holes: list[tuple[float, float, float, float]] = []
+    _ridged(s, 0.0, length, zv0, zv1, 8.0, 9.0)
+    piers = [0.0]
+    while piers[-1] + 2.5 + 22.5 < length:
+        piers.append(piers[-1] + 2.5 + rng.uniform(16.0, 20.0))
+    if length - piers[-1] - 2.5 > 6.0:
+        piers.append(length - 2.5)
+    for p in piers:  # ridged up into the deck: a flat top under it would be floor inside it
+        holes.append(_ridged(s, p, p + 2.5, zv0, zv1, -0.5, 8.0))
+    for a, b in pairwise(piers):
+        kind = rng.choice(["open", "through", "shop", "store"], p=[0.4, 0.33, 0.14, 0.13])
+        x0, x1 = a + 2.5, b
+        if x1 - x0 < 10.0:
+            continue  # a short last span is open
+        if kind == "store":
+            holes.append(_ridged(s, x0, x1, zv0, zv1, -0.5, 7.9))
+        elif kind != "open":
+            door = rng.uniform(2.0, x1 - x0 - 4.0)
+            south = kind == "through" or rng.random() < 0.5  # a one-door shop opens to the south or the north
+            s.wall((x0, zv0), (x1, zv0), -0.3, 8.0, [(door, 2.0)] if south else [])
+            s.wall((x0, zv1), (x1, zv1), -0.3, 8.0, [(x1 - x0 - door - 2.0, 2.0)] if kind == "through" or not south else [])
+            for zz in (zv0 + 2.5, zv1 - 3.3):  # shelves along the walls inside
+                holes.append(_ridged(s, x0 + 1.5, x1 - 1.5, zz, zz + 0.8, -0.5, 1.8))
+    for side in (0, 1):
+        sign = -1.0 if side == 0 else 1.0
+        edge = zv0 if side == 0 else zv1  # the viaduct's face on this half
+        wall_z = 0.0 if side == 0 else size_z
+        court_west = rng.random() < 0.5
+        xa, xb = (16.0, length - 2.0) if court_west else (2.0, length - 16.0)
+        double = sorted((edge + sign * 3.5, edge + sign * 8.3))
+        single = sorted((wall_z - sign * 0.2, wall_z - sign * 2.6))
+        streets = sorted(rng.uniform(20.0, length - 24.0, size=int(rng.integers(2, 4))))
+        streets = [a for k, a in enumerate(streets) if k == 0 or a - streets[k - 1] > 10.0]
+        s.wall((0.0, wall_z), (length, wall_z), -0.3, 4.0, [(a, 4.0) for a in streets], thickness=0.4)
+        for r, (lo_z, hi_z) in enumerate((double, single)):
+            x = xa + rng.uniform(0.0, 4.0)
+            count = int(rng.integers(3, 8))
+            while True:
+                if count == 0 and r == 0:  # a cross aisle through the double row
+                    x += rng.uniform(2.5, 4.0)
+                    count = int(rng.integers(3, 8))
+                w = rng.uniform(2.5, 4.5)
+                street = [a for a in streets if x < a + 4.5 and a - 0.5 < x + w]
+                if r == 1 and street:  # the row against the wall breaks only at the side streets
+                    x = street[0] + 4.5
+                    continue
+                if x + w > xb:
+                    break
+                if r == 0:  # back to back
+                    mid = (lo_z + hi_z) / 2
+                    holes.append(_ridged(s, x, x + w, lo_z, mid, -0.5, 2.3))
+                    holes.append(_ridged(s, x, x + w, mid, hi_z, -0.5, 2.3))
+                else:
+                    holes.append(_ridged(s, x, x + w, lo_z, hi_z, -0.5, 2.3))
+                x += w
+                count -= 1
+        # the food court: tables 1.2 x 0.8 m in a grid in the 14 m the rows leave at one end
+        x_court = 3.0 if court_west else length - 14.0
+        lo, hi = sorted((wall_z - sign * 3.5, edge + sign * 1.5))
+        for tx in np.arange(x_court, x_court + 11.0, 3.0):
+            for tz in np.arange(lo, hi - 0.8, 2.6):
+                holes.append(_ridged(s, float(tx), float(tx) + 1.2, float(tz), float(tz) + 0.8, -0.5, 0.75))
+    s.ground(-8.0, length + 8.0, -6.0, size_z + 6.0, 0.0, holes)
+    return s.mesh()
+
+
+def cinema(seed: int) -> trimesh.Trimesh:
+    """A multiplex cinema: 9-12 auditoria 13-17 m wide side by side along x north of a lobby 14 m deep (y = 0) whose
+    north part is overhung by a foyer (y = 6, 6 m deep) reached by two flights (34 steps of 0.176 / 0.28 m) through
+    openings in it. Each auditorium's floor rakes down from a cross aisle at the foyer's height (a 2 m door from the
+    foyer) toward the screen: 12-14 tiers 1.1 m deep, each 0.43-0.5 m below the one behind (over the climb), with a
+    row of seats (ridged) on each, so one walks only its two stepped aisles (1.4 m wide along the side walls, three
+    steps a tier) to a flat front 6 m deep, whence a 2 m side door opens onto an exit corridor 2 m wide between the
+    auditoria, which leads back to the lobby (a 2 m door) and out to a service yard behind (a 2 m door). A forecourt
+    25 m deep with 40-59 parked cars (ridged, where they fit) and trees in front of the lobby's five entrance doors; the building under a
+    roof at 50 degrees (:func:`_lid`), the lobby's counters and pillars.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    n = int(rng.integers(9, 13))
+    widths = rng.uniform(13.0, 17.0, size=n)
+    corridor, foyer_y = 2.0, 6.0
+    tiers = int(rng.integers(12, 15))
+    tread = 1.1
+    depth = 2.0 + tiers * tread + 6.0
+    lobby = 14.0
+    xs = [0.0]
+    for w in widths:
+        xs.append(xs[-1] + w)
+        xs.append(xs[-1] + corridor)
+    width = xs[-1]
+    z_back, z_screen = lobby, lobby + depth
+    holes: list[tuple[float, float, float, float]] = []
+    # the building's walls: south (entrances), north (the service doors), west and east
+    doors = sorted(rng.uniform(3.0, width - 6.0, size=5))
+    doors = [a for k, a in enumerate(doors) if k == 0 or a - doors[k - 1] > 4.0]
+    s.wall((0.0, 0.0), (width, 0.0), -0.3, 10.0, [(a, 2.0) for a in doors], thickness=0.3)
+    exits = [xs[2 * i + 1] for i in range(n)]  # the exit corridors' west edges
+    s.wall((0.0, z_screen), (width, z_screen), -0.3, 10.0, [(x, corridor) for x in exits], thickness=0.3)
+    s.wall((0.0, 0.0), (0.0, z_screen), -0.3, 10.0, thickness=0.3)
+    s.wall((width, 0.0), (width, z_screen), -0.3, 10.0, thickness=0.3)
+    # the lobby's north wall: a door at each exit corridor (ground) and each auditorium's foyer door (upper)
+    for i in range(n):
+        a0, a1 = xs[2 * i], xs[2 * i] + widths[i]
+        c0 = a1
+        s.wall((a0, z_back), (a1, z_back), -0.3, 10.0, [((a1 - a0) / 2 - 1.0, 2.0)], thickness=0.3)
+        s.wall((c0, z_back), (c0 + corridor, z_back), foyer_y - 0.3, 10.0, thickness=0.3)  # over the corridor's door
+        # side walls of the auditorium (the east one holds the exit door at the front)
+        s.wall((a0, z_back), (a0, z_screen), -0.3, 10.0, thickness=0.3)
+        s.wall((a1, z_back), (a1, z_screen), -0.3, 10.0, [(depth - 5.0, 2.0)], thickness=0.3)
+        # the rake: the cross aisle at the foyer's height, then the tiers down to the flat front
+        s.box(a0, a1, -0.3, foyer_y, z_back, z_back + 2.0)
+        for t in range(tiers):
+            y = foyer_y * (tiers - 1 - t) / tiers
+            z0 = z_back + 2.0 + t * tread
+            if t < tiers - 1:
+                s.box(a0 + 1.55, a1 - 1.55, -0.3, y, z0, z0 + tread)
+            _ridged(s, a0 + 1.7, a1 - 1.7, z0 + 0.05, z0 + 0.55, y, y + 0.45)
+        holes.append((a0, a1, z_back, z_back + 2.0 + (tiers - 1) * tread))  # no ground inside the rake's blocks
+        for ax in (a0 + 0.85, a1 - 0.85):  # the stepped aisles, three steps a tier, up from the front
+            s.stairs(np.array([ax, z_back + 2.0 + tiers * tread]), np.array([0.0, -1.0]), 1.4, 0.0, foyer_y,
+                     foyer_y / tiers / 3, tread / 3)
+        # the screen, a low stage in front of it
+        holes.append(_ridged(s, a0 + 1.0, a1 - 1.0, z_screen - 1.5, z_screen - 0.2, -0.5, 0.9))
+    # the foyer over the lobby's north part, the two flights up to it through openings in it
+    run = 34 * 0.28
+    f_lo = rng.uniform(4.0, width / 2 - run - 4.0)
+    f_hi = rng.uniform(width / 2 + 4.0, width - run - 4.0)
+    openings = [(f_lo, f_lo + run, lobby - 6.0, lobby - 3.6), (f_hi, f_hi + run, lobby - 6.0, lobby - 3.6)]
+    s.slab(0.0, width, lobby - 6.0, lobby, foyer_y, openings)
+    for x0, _x1, z0, z1 in openings:
+        s.stairs(np.array([x0, (z0 + z1) / 2]), np.array([1.0, 0.0]), 2.2, 0.0, foyer_y, foyer_y / 34, 0.28, depth=0.45)
+    s.wall((0.0, lobby - 6.0), (width, lobby - 6.0), foyer_y, foyer_y + 1.1, thickness=0.1)
+    for x0, x1, z0, z1 in openings:  # rails round the openings but at the flights' heads
+        s.wall((x0, z0), (x1, z0), foyer_y, foyer_y + 1.1, thickness=0.1)
+        s.wall((x0, z1), (x1, z1), foyer_y, foyer_y + 1.1, thickness=0.1)
+        s.wall((x0, z0), (x0, z1), foyer_y, foyer_y + 1.1, thickness=0.1)
+    # the lobby's counters and pillars, clear of the flights and doors
+    taken = [(x0 - 3.0, x1 + 3.0, z0 - 3.0, z1 + 1.0) for x0, x1, z0, z1 in openings]
+    taken += [(a - 1.0, a + 3.0, 0.0, 4.0) for a in doors]
+    for _ in range(int(rng.integers(3, 6))):
+        for _ in range(50):
+            w = rng.uniform(4.0, 9.0)
+            cx, cz = rng.uniform(2.0, width - w - 2.0), rng.uniform(3.5, lobby - 9.0)
+            if _clear(cx - 2.0, cx + w + 2.0, cz - 2.0, cz + 3.0, taken):
+                holes.append(_ridged(s, cx, cx + w, cz, cz + 0.8, -0.5, 1.1))
+                taken.append((cx - 2.0, cx + w + 2.0, cz - 2.0, cz + 3.0))
+                break
+    for px in np.arange(8.0, width - 4.0, 8.0):
+        if _clear(px - 0.8, px + 0.8, lobby - 6.8, lobby - 5.2, taken):
+            s.box(px - 0.3, px + 0.3, -0.3, foyer_y - 0.3, lobby - 6.3, lobby - 5.7)
+    _lid(s, -0.3, width + 0.3, -0.3, z_screen + 0.3, 10.0)
+    # the forecourt (cars, trees) in front, a service yard 8 m deep behind, a path 4 m wide round each end
+    for _ in range(int(rng.integers(40, 60))):
+        cx, cz = rng.uniform(2.0, width - 6.5), rng.uniform(-24.0, -4.0)
+        if _clear(cx - 0.6, cx + 5.1, cz - 0.6, cz + 2.4, taken):
+            holes.append(_ridged(s, cx, cx + 4.5, cz, cz + 1.8, -0.5, 1.4))
+            taken.append((cx - 0.6, cx + 5.1, cz - 0.6, cz + 2.4))
+    for _ in range(int(rng.integers(8, 14))):
+        p = np.array([rng.uniform(-3.0, width + 3.0), rng.uniform(z_screen + 2.0, z_screen + 7.0)])
+        _trunk(s, p, 0.3, -0.5, 5.0)
+    s.ground(-5.0, width + 5.0, -26.0, z_screen + 8.0, 0.0, holes)
+    return s.mesh()
+
+
+def estate(seed: int) -> trimesh.Trimesh:
+    """A deck-access housing estate ("streets in the sky"): three or four slab blocks 70-90 m long and 10 m deep
+    along x, 16-20 m apart (courtyards), each closed (flats one does not enter; a roof at 50 degrees) with an open
+    gallery 2.4 m wide along its north face on storeys 1-3 (3, 6 and 9 m up, railed), reached by an open switchback
+    stair at each end (:func:`_switchback`, 3 m storeys). Through each block but the first a pend 3 m wide at the
+    ground (a passage between courtyards) and, on one or two storeys, a landing through it from its north gallery
+    to the block's south face, where a bridge 3 m wide (railed) crosses the courtyard from the gallery of the block
+    to the south (a first draft's landings on the other storeys, railed, were dead ends 10 m long: 4 of seed 0's 10
+    terminals): one crosses between blocks in the sky or on the ground. The
+    courtyards hold play areas (frames 0.3 m high, under the climb), bin stores and parked cars (ridged) and trees.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    n = int(rng.integers(4, 6))
+    storey, gallery = 3.0, 2.4
+    well = _well_length(storey)
+    blocks: list[tuple[float, float, float, float]] = []
+    z = 12.0
+    for _ in range(n):
+        length = rng.uniform(70.0, 90.0)
+        bx0 = 12.0 + rng.uniform(-4.0, 4.0)
+        blocks.append((bx0, bx0 + length, z, z + 10.0))
+        z += 10.0 + gallery + rng.uniform(16.0, 20.0)
+    size_x = max(b[1] for b in blocks) + 12.0
+    size_z = blocks[-1][3] + gallery + well + 8.0
+    pends: list[float] = []  # the pend of block k + 1, reached from block k's gallery
+    bridges: list[list[int]] = []  # the storeys of each pend's bridges
+    for k in range(1, n):
+        lo = max(blocks[k][0], blocks[k - 1][0]) + 12.0
+        hi = min(blocks[k][1], blocks[k - 1][1]) - 15.0
+        pends.append(float(rng.uniform(lo, hi)))
+        bridges.append(sorted(int(v) for v in rng.choice([1, 2, 3], size=int(rng.integers(1, 3)), replace=False)))
+    holes: list[tuple[float, float, float, float]] = []
+    for k, (bx0, bx1, bz0, bz1) in enumerate(blocks):
+        pend = pends[k - 1] if k > 0 else None
+        pieces = [(bx0, bx1)] if pend is None else [(bx0, pend), (pend + 3.0, bx1)]
+        for a, b in pieces:
+            holes.append(_ridged(s, a, b, bz0, bz1, -0.5, storey * 4 - 0.3))
+        for level in range(1, 4):
+            y = storey * level
+            s.slab(bx0 - 4.0, bx1 + 4.0, bz1, bz1 + gallery, y, [])  # the gallery and the stairs' landings
+            openings = [(0.0, 4.0), (bx1 - bx0 + 4.0, 4.0)]  # the stairs
+            if k + 1 < n and level in bridges[k]:
+                openings.append((pends[k] - (bx0 - 4.0), 3.0))
+            s.wall((bx0 - 4.0, bz1 + gallery), (bx1 + 4.0, bz1 + gallery), y, y + 1.1, openings, thickness=0.1)
+            for end in (bx0 - 4.0, bx1 + 4.0):
+                s.wall((end, bz1), (end, bz1 + gallery), y, y + 1.1, thickness=0.1)
+            if pend is not None and level in bridges[k - 1]:  # a landing through the pend and the bridge
+                s.slab(pend, pend + 3.0, bz0, bz1, y, [])
+                z_from = blocks[k - 1][3] + gallery
+                s.box(pend, pend + 3.0, y - 0.5, y, z_from, bz0)
+                for rx in (pend, pend + 3.0):
+                    s.box(rx - 0.05, rx + 0.05, y, y + 1.1, z_from, bz0)
+        for level in range(3):
+            for wx in (bx0 - 4.0, bx1):
+                _switchback(s, wx, bz1 + gallery - 2.0, storey * level, storey)
+    # the courtyards: play frames, bin stores, cars, trees, clear of the blocks, their stairs and the pends
+    taken = [(b[0] - 5.0, b[1] + 5.0, b[2] - 1.0, b[3] + gallery + well + 1.0) for b in blocks]
+    taken += [(p - 1.0, p + 4.0, 0.0, size_z) for p in pends]
+    for _ in range(int(rng.integers(50, 70))):
+        for _ in range(30):
+            w, d = rng.uniform(3.0, 6.0), rng.uniform(1.5, 4.0)
+            cx, cz = rng.uniform(2.0, size_x - w - 2.0), rng.uniform(2.0, size_z - d - 2.0)
+            if _clear(cx - 1.5, cx + w + 1.5, cz - 1.5, cz + d + 1.5, taken):
+                if rng.random() < 0.5:
+                    holes.append(_ridged(s, cx, cx + w, cz, cz + d, -0.5, rng.uniform(1.2, 2.0)))
+                else:
+                    s.box(cx, cx + w, 0.0, 0.3, cz, cz + d)
+                taken.append((cx - 1.5, cx + w + 1.5, cz - 1.5, cz + d + 1.5))
+                break
+    _trees(s, rng, int(rng.integers(20, 35)), size_x, size_z, taken, (0.25, 0.4), 7.0)
+    s.ground(0.0, size_x, 0.0, size_z, 0.0, holes)
+    return s.mesh()
+
+
+def _face_switchback(s: _Solids, origin: np.ndarray, along: np.ndarray, out: np.ndarray, flights: int) -> tuple[float, float]:
+    """A switchback up a vertical face in two lanes 2 m wide: flight k (17 steps of 0.176 / 0.28 m, blocks 0.45 m
+    deep, 3 m a flight) climbs from 3k m, the even ones along ``along`` in the lane next to the face from 2 m past
+    ``origin`` (x, z: on the face's foot line), the odd ones back in the outer lane, each onto a landing 2 m long
+    across both lanes (the even flights' 6.76 m past ``origin``, the odd ones' at ``origin``). ``along`` and ``out``
+    (away from the face) are unit plan vectors along x or z. Returns the span (from, to) along ``along``, metres from
+    ``origin``, of the top landing."""
+    run, landing = 17 * 0.28, 2.0
+
+    def box(u0: float, u1: float, y: float) -> None:
+        corners = np.array([origin + along * u + out * v for u in (u0, u1) for v in (0.0, 4.0)])
+        lo, hi = corners.min(axis=0), corners.max(axis=0)
+        s.box(lo[0], hi[0], y - 0.45, y, lo[1], hi[1])
+
+    span = (0.0, landing)
+    for k in range(flights):
+        if k % 2 == 0:
+            s.stairs(origin + along * landing + out * 1.0, along, 2.0, 3.0 * k, 3.0, 3.0 / 17, 0.28, depth=0.45)
+            span = (landing + run, 2 * landing + run)
+        else:
+            s.stairs(origin + along * (landing + run) + out * 3.0, -along, 2.0, 3.0 * k, 3.0, 3.0 / 17, 0.28, depth=0.45)
+            span = (0.0, landing)
+        box(*span, 3.0 * (k + 1))
+    return span
+
+
+def dam(seed: int) -> trimesh.Trimesh:
+    """A gravity dam: a wall 150-180 m long along x and 8 m thick, its crest a road 24 or 27 m up between parapets
+    1.1 m high (lamp posts on the down-stream one), its down-stream face vertical, between two hilltops at the
+    crest's height (40 m wide, 90 m deep, vertical cliffs; a car park and a visitor centre on the west one) over a
+    valley floor at y = 0 down stream (no floor up stream: the reservoir). A spillway 16-20 m wide near the middle
+    (a chute steeper than 45 degrees; the road crosses it on a bridge) feeds a river 10-12 m wide down the valley
+    (no floor), crossed by a footbridge 2 m and a road bridge 5 m wide (railed). The only ways between the valley
+    and the crest: a switchback stair (:func:`_face_switchback`) against the dam's face on one side of the spillway
+    and one against the east hilltop's cliff. A powerhouse (walled, a 2 m door, machines) against the face on the
+    spillway's other side.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    length = rng.uniform(150.0, 180.0)
+    crest = 24.0 if rng.random() < 0.5 else 27.0
+    hill, zd = 40.0, 60.0  # the hilltops' width; the dam's down-stream face (the valley floor from z = 0 to it)
+    dx0, dx1 = hill, hill + length
+    sw = rng.uniform(16.0, 20.0)
+    sx0 = dx0 + length / 2 - sw / 2 + rng.uniform(-10.0, 10.0)
+    sx1 = sx0 + sw
+    for a, b in ((dx0, sx0), (sx1, dx1)):  # the dam either side of the spillway
+        s.box(a, b, -1.0, crest, zd, zd + 8.0)
+    # the chute: 21-24 m down over 16 m, 53-56 degrees (a first draft's, over 22 m, was 44 degrees under a 24 m crest:
+    # walkable, an area of 428 m² on seed 0 no walk joins)
+    s.hull(np.array([[x, y, z] for x in (sx0, sx1) for y, z in ((crest - 4.0, zd + 8.0), (-1.0, zd + 8.0), (-1.0, zd - 8.0))]))
+    s.box(sx0, sx1, crest - 0.8, crest, zd, zd + 8.0)  # the road's bridge over the spillway
+    for a, b in ((0.0, dx0), (dx1, dx1 + hill)):  # the hilltops
+        s.box(a, b, -1.0, crest, 0.0, zd + 30.0)
+    flights = int(crest / 3.0)
+    east = rng.random() < 0.5
+    stair_x = sx1 + 8.0 if east else sx0 - 8.0 - 6.76
+    span = _face_switchback(s, np.array([stair_x, zd]), np.array([1.0, 0.0]), np.array([0.0, -1.0]), flights)
+    s.wall((dx0, zd), (dx1, zd), crest, crest + 1.1, [(stair_x - dx0 + span[0], span[1] - span[0])], thickness=0.3)
+    s.wall((dx0, zd + 8.0), (dx1, zd + 8.0), crest, crest + 1.1, thickness=0.3)
+    for lx in np.arange(dx0 + 8.0, dx1 - 4.0, 16.0):  # lamp posts on the down-stream parapet
+        s.box(lx - 0.15, lx + 0.15, crest, crest + 5.0, zd + 0.15, zd + 0.45)
+    cliff_z = rng.uniform(8.0, zd - 25.0)
+    _face_switchback(s, np.array([dx1, cliff_z]), np.array([0.0, 1.0]), np.array([-1.0, 0.0]), flights)
+    # the river from the chute's foot down the valley, its bridges
+    rw = rng.uniform(10.0, 12.0)
+    rx0 = (sx0 + sx1) / 2 - rw / 2
+    river = (rx0, rx0 + rw, 0.0, zd - 8.0)
+    holes = [river, (sx0, sx1, zd - 8.0, zd)]
+    for width, bz in ((2.0, rng.uniform(8.0, 20.0)), (5.0, rng.uniform(28.0, 38.0))):
+        s.box(rx0 - 1.5, rx0 + rw + 1.5, -0.5, 0.15, bz, bz + width)
+        for rz in (bz, bz + width):
+            s.box(rx0, rx0 + rw, 0.15, 1.25, rz - 0.05, rz + 0.05)
+    # the powerhouse against the face on the spillway's other side: walls, a door, machines
+    px0 = sx0 - 34.0 if east else sx1 + 10.0
+    pz0 = zd - 16.0
+    door = rng.uniform(3.0, 19.0)
+    s.wall((px0, pz0), (px0 + 24.0, pz0), -0.3, 10.0, [(door, 2.0)], thickness=0.3)
+    for x in (px0, px0 + 24.0):
+        s.wall((x, pz0), (x, zd), -0.3, 10.0, thickness=0.3)
+    _gable(s, px0 - 0.3, px0 + 24.3, pz0 - 0.3, zd, 10.0)
+    for k in range(3):
+        holes.append(_ridged(s, px0 + 3.0 + 7.0 * k, px0 + 7.5 + 7.0 * k, zd - 9.0, zd - 4.0, -0.5, 3.0))
+    # the west hilltop: a car park and a visitor centre (a room with a 2 m door)
+    for _ in range(int(rng.integers(10, 18))):
+        cx, cz = rng.uniform(4.0, hill - 8.0), rng.uniform(zd - 30.0, zd - 2.0)
+        _ridged(s, cx, cx + 4.5, cz, cz + 1.8, crest - 0.5, crest + 1.2)  # low: no head room inside
+    vz0 = rng.uniform(6.0, 14.0)
+    s.wall((6.0, vz0), (30.0, vz0), crest, crest + 4.0, thickness=0.3)
+    s.wall((6.0, vz0 + 14.0), (30.0, vz0 + 14.0), crest, crest + 4.0, [(10.0, 2.0)], thickness=0.3)
+    for x in (6.0, 30.0):
+        s.wall((x, vz0), (x, vz0 + 14.0), crest, crest + 4.0, thickness=0.3)
+    _gable(s, 5.7, 30.3, vz0 - 0.3, vz0 + 14.3, crest + 4.0)
+    # rocks and trees on the valley floor
+    taken = [river, (sx0 - 2.0, sx1 + 2.0, zd - 16.0, zd), (px0 - 2.0, px0 + 26.0, pz0 - 4.0, zd),
+             (stair_x - 3.0, stair_x + 10.0, zd - 7.0, zd), (dx1 - 7.0, dx1, cliff_z - 2.0, cliff_z + 11.0)]
+    for _ in range(int(rng.integers(110, 150))):
+        p = np.array([rng.uniform(dx0 + 2.0, dx1 - 2.0), rng.uniform(2.0, zd - 2.0)])
+        if _clear(p[0] - 1.5, p[0] + 1.5, p[1] - 1.5, p[1] + 1.5, taken):
+            if rng.random() < 0.6:
+                _trunk(s, p, rng.uniform(0.25, 0.45), -0.5, 6.0)
+            else:
+                s.rock(rng, p, 0.6, -0.5, 1.0)
+            taken.append((p[0] - 1.5, p[0] + 1.5, p[1] - 1.5, p[1] + 1.5))
+    s.ground(dx0, dx1, 0.0, zd, 0.0, holes)
+    return s.mesh()
+
+
 KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
     "subway": subway, "archipelago": archipelago, "car_park": car_park,
     "forest": forest, "stadium": stadium, "harbour": harbour,
@@ -5365,6 +5989,8 @@ KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
     "stepwell": stepwell,
     "farm": farm, "cruise_ship": cruise_ship, "treetops": treetops, "beach": beach, "railyard": railyard,
     "craters": craters,
+    "oil_rig": oil_rig, "monastery": monastery, "night_market": night_market, "cinema": cinema, "estate": estate,
+    "dam": dam,
 }
 """Kind name -> generator (seed -> Y-up mesh in metres)."""
 

@@ -1,4 +1,4 @@
-"""The ninth to fourteenth rounds' level kinds (``benchmarks/level_kinds.py``) build the levels their docstrings describe.
+"""The ninth to fifteenth rounds' level kinds (``benchmarks/level_kinds.py``) build the levels their docstrings describe.
 
 Smoke tests of quick generators (well under a second each to build and to give a navmesh): the connected areas
 the presets' agent finds are the ones each level is made to have, so a door that closes or a crawlway that
@@ -38,7 +38,7 @@ def areas(mesh) -> tuple[np.ndarray, object]:
 
 def test_the_same_seed_gives_the_same_level(kinds):
     for kind in ("hall", "islets", "helix", "flooded", "stairhall", "quarry", "theme_park", "golf", "skatepark", "stepwell",
-                 "railyard", "craters"):
+                 "railyard", "craters", "monastery", "estate", "dam"):
         a, b, other = kinds[kind](0), kinds[kind](0), kinds[kind](1)
         assert np.array_equal(a.vertices, b.vertices) and np.array_equal(a.faces, b.faces), kind
         assert len(a.vertices) != len(other.vertices) or not np.array_equal(a.vertices, other.vertices), kind
@@ -362,13 +362,19 @@ def test_the_beachs_bays_are_reached_down_their_flights(kinds):
 
 
 def test_the_railyard_is_one_area_over_its_footbridge(kinds):
-    """The gaps between wagons, the roads, the shed and the footbridge (6.5 m) are one area; no floor on a wagon."""
+    """The gaps between wagons, the roads, the shed and the footbridge (6.5 m) are one area; no floor on a wagon,
+    under the footbridge or away from it: over the tracks (between the 10 m roads) the only floor over 1 m up is the
+    footbridge's deck, over the roads its flights."""
     label, nav = areas(kinds["railyard"](0))
     assert label.max() == 0
-    x, y, _ = nav.centres.T
+    x, y, z = nav.centres.T
     deck = np.abs(y - 6.7) < 0.3
     assert deck.sum() > 3
-    assert (np.abs(x[y > 1.0] - x[deck].mean()) < 14.0).all()  # floor over 1 m up only on the footbridge and its flights
+    bridge_x = x[deck].mean()
+    tracks = (z > z.min() + 10.0) & (z < z.max() - 10.0)
+    assert (deck & tracks).sum() > 3
+    assert (deck[(y > 1.0) & tracks] & (np.abs(x[(y > 1.0) & tracks] - bridge_x) < 2.0)).all()
+    assert (np.abs(x[(y > 1.0) & ~tracks] - bridge_x) < 14.0).all()  # the flights, 10.4 m long, along x
 
 
 def test_the_craters_are_one_area_down_to_their_bottoms(kinds):
@@ -376,3 +382,76 @@ def test_the_craters_are_one_area_down_to_their_bottoms(kinds):
     label, nav = areas(kinds["craters"](1))
     assert label.max() == 0
     assert nav.centres[:, 1].min() < -1.5
+
+
+def test_the_oil_rigs_decks_are_one_area_with_the_accommodation_platform(kinds):
+    """The flights join the boat landing (3 m) and the three decks (12, 19 and 26 m), the bridge the accommodation
+    platform's deck (19 m), its flight the helideck (26 m): one area with floor at each height."""
+    label, nav = areas(kinds["oil_rig"](0))
+    assert label.max() == 0
+    y = nav.centres[:, 1] - 0.2
+    for level in (3.0, 12.0, 19.0, 26.0):
+        assert (np.abs(y - level) < 0.3).sum() > (1 if level == 3.0 else 20), level
+
+
+def test_the_monasterys_top_is_reached_only_by_its_stair(kinds):
+    """One area from the hamlet to the top (32.4 or 35.6 m); every floor between 1 m and 1 m under the top lies in
+    the stair's lane (2.4 m wide) along the rock's south face or its east face: no other way up."""
+    label, nav = areas(kinds["monastery"](0))
+    assert label.max() == 0
+    x, y, z = nav.centres.T
+    top = y.max()
+    assert top > 32.0
+    on_top = y > top - 0.5
+    x0, x1, z0, z1 = x[on_top].min(), x[on_top].max(), z[on_top].min(), z[on_top].max()  # the rock's top, walls off
+    between = (y > 1.0) & (y < top - 1.0)
+    assert between.sum() > 10
+    south = (z[between] < z0) & (z[between] > z0 - 3.5)
+    east = (x[between] > x1) & (x[between] < x1 + 3.5)
+    assert (south | east).all()
+
+
+def test_the_night_markets_halves_meet_only_round_or_through_the_viaduct(kinds):
+    """No floor over 1 m (the viaduct's top, its piers and the stalls are ridged); the halves either side are one
+    area through the arches, and two with the viaduct's band filled (1.5 m high) from street to street."""
+    mesh = kinds["night_market"](1)
+    label, nav = areas(mesh)
+    assert label.max() == 0 and nav.centres[:, 1].max() < 1.0
+    eaves = mesh.vertices[np.isclose(mesh.vertices[:, 1], 9.0)]
+    z0, z1, length = eaves[:, 2].min(), eaves[:, 2].max(), eaves[:, 0].max()
+    assert np.isclose(z1 - z0, 12.0)
+    band = trimesh.creation.box(bounds=[[-9.0, -1.0, z0], [length + 9.0, 1.5, z1]])  # 1.5 m: no head room in it
+    label, nav = areas(trimesh.util.concatenate([mesh, band]))
+    assert len(set(label[nav.centres[:, 1] < 1.0])) == 2  # the ground only: the band's top (1.5 m) is floor too
+
+
+def test_the_cinemas_foyer_and_lobby_are_one_area(kinds):
+    """The lobby (0 m) and the foyer (6 m) are one area through the foyer's flights and the auditoria's aisles; the
+    raked tiers hold no floor wider than their aisles (seat rows on 1.1 m tiers)."""
+    label, nav = areas(kinds["cinema"](0))
+    assert label.max() == 0
+    y = nav.centres[:, 1] - 0.2
+    assert (np.abs(y) < 0.3).sum() > 100 and (np.abs(y - 6.0) < 0.3).sum() > 10
+
+
+def test_the_estates_galleries_are_one_area_with_the_courtyards(kinds):
+    """Stairs, pends and bridges join the courtyards (0 m) and the galleries on the three storeys (3, 6 and 9 m):
+    one area with floor on each; nothing else is floor over 0.5 m but the stairs' flights and landings."""
+    label, nav = areas(kinds["estate"](1))
+    assert label.max() == 0
+    y = nav.centres[:, 1] - 0.2
+    for level in (0.0, 3.0, 6.0, 9.0):
+        assert (np.abs(y - level) < 0.3).sum() > 20, level
+    assert y.max() < 9.5
+
+
+def test_the_dams_crest_and_valley_are_one_area(kinds):
+    """The face stairs join the valley floor (0 m) to the crest and the hilltops (24 or 27 m): one area, floor at
+    both heights, none up stream of the dam but on the hilltops."""
+    label, nav = areas(kinds["dam"](2))
+    assert label.max() == 0
+    x, y, z = nav.centres.T
+    top = y.max()
+    assert top > 24.0 and (y < 0.5).sum() > 100 and (y > top - 0.3).sum() > 20
+    hills = (x < 40.0) | (x > x[y < 0.5].max() + 1.0)
+    assert (hills | (z < 68.0)).all()
