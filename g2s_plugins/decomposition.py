@@ -1143,8 +1143,8 @@ def _join_ways_round(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocke
     on the polygon graph (:class:`PolygonWalks`). When one of at most :data:`WAY_ROUND` times the regions' size is
     there, the two regions join: the larger's longest extent is their size, or the smaller's when either is walled in
     (:data:`WALLED_IN`: a room behind its doors) and the widest portal is at most a door wide (:data:`CORRIDOR_WIDTH`
-    agent diameters walkable); past that, the walled-in region's own extent (the smaller's when both are). Only regions on one floor join: ``band`` (P,) is each polygon's
-    height band (:func:`floor_bands`).
+    agent diameters walkable); past that, the walled-in region's own extent (the smaller's when both are). Only regions
+    on one floor join: ``band`` (P,) is each polygon's height band (:func:`floor_bands`).
     """
     ends = np.asarray(navmesh.portals().endpoints, dtype=np.float64)
     walks = PolygonWalks.of(navmesh, pairs, ends)
