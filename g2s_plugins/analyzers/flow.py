@@ -112,8 +112,9 @@ def g2s_analyze(structure: nx.Graph, params: Params, context: RunContext) -> Map
     lanes = params.across == "lanes"
     if lanes and context.navmesh is None:  # told before any flow is computed
         raise PluginError("flow: across: lanes needs a navmesh (the navmesh graph builder); this run has none")
-    flow = traffic.walking_flow(context.graph, max_sources=params.max_sources, seed=params.seed, ties=params.ties,
-                                scaling=params.scaling)
+    # with sections every polygon's value is its section's: the plain flow (ties, scaling) is only the lanes' rest
+    flow = None if params.across == "section" else traffic.walking_flow(
+        context.graph, max_sources=params.max_sources, seed=params.seed, ties=params.ties, scaling=params.scaling)
     if params.across != "node":
         flow = cross_sections.walking_across(
             context.graph, flow, params.max_sources, params.seed, params.section_gap, params.section_reach,
