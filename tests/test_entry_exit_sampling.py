@@ -19,6 +19,7 @@ from g2s_plugins.samples import pieces
 from g2s_plugins.terminals import entry_exit
 from g2s_plugins.terminals._boundary import boundary_loops
 from g2s_plugins.terminals._sampled_surface import sampled_surface
+from tests.conftest import benchmark
 
 CONFIG = load_config("configs/map_piece_sampling.yaml")
 
@@ -96,13 +97,40 @@ def test_a_hole_larger_than_two_spacings_squared_is_open() -> None:
 def test_samples_in_single_file_keep_both_sides_as_boundary() -> None:
     graph = nx.Graph()
     for i in range(4):
-        graph.add_node(i, pos=(float(i), 0.0, 0.0), normal=(0.0, 1.0, 0.0))
+        graph.add_node(i, pos=(float(i), 0.0, 0.0), normal=(0.0, 1.0, 0.0), area=0.2 * (i + 1))
     graph.add_edges_from([(0, 1), (1, 2), (2, 3)])
     surface = sampled_surface(graph, spacing=1.0)
-    assert len(surface.polygons) == 3 and np.allclose(surface.areas, 0.0)
+    # each polygon of two corners weighs half the surface each of its samples stands for
+    assert len(surface.polygons) == 3 and np.allclose(surface.areas, [0.3, 0.5, 0.7])
     (loop,) = boundary_loops(surface.vertices, surface.polygons, surface.neighbours)
     assert loop.edge_count == 6  # out along one side, back along the other
     assert len(surface.joined) == 2  # one floor
+
+
+def test_a_line_of_samples_is_walked_round_both_its_ends() -> None:
+    # Coordinates where the sign of a two-corner polygon's inside, rounding noise, turned both its edges one way
+    # (docs/entry_exit.md, "A fifteenth round of piece kinds"): the loop broke into open chains.
+    graph = nx.Graph()
+    for i, (x, z) in enumerate(((1.37, -4.59), (-4.83, 4.13), (1.07, 0.44))):
+        graph.add_node(i, pos=(x, 0.0, z), normal=(0.0, 1.0, 0.0))
+    graph.add_edges_from([(0, 1), (1, 2)])
+    surface = sampled_surface(graph, spacing=1.0)
+    (loop,) = boundary_loops(surface.vertices, surface.polygons, surface.neighbours)
+    assert loop.closed and loop.edge_count == 4
+    turns = {tuple(np.round(p, 2)) for p in loop.points}
+    assert len(turns) == 3  # out to one end along one side, round it, back along the other side
+
+
+def test_stairs_down_in_single_file_keep_their_foot_on_the_sampling_route() -> None:
+    level = benchmark("piece_kinds12").basement_stair(0.2, 12, 0.0)  # 1.6 m between the trench's walls
+    found, known, _, _ = _openings(level)
+    assert pieces.match_openings(found, known) == (2, 2)
+
+
+def test_walkways_in_single_file_under_a_roof_hold_the_openings() -> None:
+    found, known, _, _ = _openings(benchmark("piece_kinds12").canal_walkways())
+    assert len(found) >= 2 and np.all(found[:, 1] < 0.5)  # none on the tunnel's roof, 3.2 m up
+    assert pieces.match_openings(found, known)[0] == len(found)
 
 
 def test_needs_a_navmesh_or_a_sampled_graph() -> None:

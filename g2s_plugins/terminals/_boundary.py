@@ -73,7 +73,10 @@ def boundary_edges(
     d = vertices[b] - vertices[a]
     left = np.cross(UP, d)  # up x d: the left side seen from above
     inside = np.einsum("ij,ij->i", centre[i] - vertices[a], left)
-    flip = inside < 0
+    # A polygon of two corners (single-file samples of a sampled graph) has no inside: its centre lies on its
+    # edge and the sign above is rounding noise, which turned both of its edges the same way. Its two edges,
+    # one each way, are its two sides, so the loop runs along one, round the line's end and back along the other.
+    flip = (inside < 0) & (counts[i] > 2)
     a, b = np.where(flip, b, a), np.where(flip, a, b)
     keep = a != b
     return a[keep], b[keep], i[keep].astype(np.int64)

@@ -27,7 +27,8 @@ plays the navmesh boundary's part for the entry/exit method.
 
 The polygons are the filled faces (their nodes in walking order), neighbours
 across each edge the filled face on its other side (-1: a boundary edge),
-normals the mean of their nodes' ``normal``, areas their surface area,
+normals the mean of their nodes' ``normal``, areas their surface area (a
+polygon of two corners: half the ``area`` each of its nodes stands for),
 ``joined`` the polygons of one connected part of the graph. They
 have the fields of :class:`g2s_core.model.NavMesh` that
 :func:`g2s_plugins.terminals._boundary.boundary_loops` and
@@ -190,6 +191,12 @@ def sampled_surface(graph: nx.Graph, spacing: float) -> SampledSurface:
     fan = np.cross(corners[:, 1:-1] - corners[:, :1], corners[:, 2:] - corners[:, :1])
     fan *= (valid[:, 2:])[..., None]
     areas = 0.5 * np.linalg.norm(fan, axis=2).sum(axis=1)
+    # A polygon of two corners covers no area, yet its samples stand for the surface round them (a walkway
+    # sampled in single file weighed nothing against the roof over it: docs/entry_exit.md, "A fifteenth round of
+    # piece kinds"): half of each corner's, a sample inside a line sharing its own between its two polygons.
+    bare_rows = np.flatnonzero(polygons[:, 2] < 0)
+    node_areas = np.array([graph.nodes[n].get("area", spacing * spacing) for n in nodes], dtype=np.float64)
+    areas[bare_rows] = 0.5 * node_areas[polygons[bare_rows, :2]].sum(axis=1)
     # Polygons the agent walks between, in pairs: faces apart along single-file samples are one floor.
     links = sparse.coo_array((np.ones(len(edges)), (edges[:, 0], edges[:, 1])), shape=(len(points), len(points)))
     part = csgraph.connected_components(links, directed=False)[1][polygons[:, 0]]

@@ -66,8 +66,9 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
      wide as the agent, which Recast erodes away), and so are openings whose
      clear width across, between their edge and the navmesh, is no wider
      (bars across a doorway); an opening is the narrowest free part of that
-     passage above the climb (a sliding leaf or a rubble chunk in the wall
-     leaves part of the door);
+     passage above the climb and at the head-room rays' height (a sliding
+     leaf or a rubble chunk in the wall, or a sign hanging lower than the
+     agent, leaves part of the door);
    * jambs (``step_up``): an opening found from step tops needs something
      at half the agent's height within two search steps of both its ends
      (a threshold's jambs); a curb along the piece's edge has none;
@@ -880,10 +881,11 @@ def _passages(
     and the erosion), rays each way along the edge from the opening's middle. At the rays' height:
     bars or a grille in the wall leave gaps narrower than the agent however wide the hole. One search
     step above the climb (over what the agent steps onto, such as a low slab of rubble, and not
-    stopped by ground it walks onto): a leaf or a chunk standing in the passage leaves its free
-    part. Returns (n,) the narrowest width at the rays' height, m, and (n,) (n,) how far the
-    narrowest free part above the climb reaches from the middle towards ``first`` and towards
-    ``last`` (along the edge, m; infinite where nothing stands).
+    stopped by ground it walks onto) and at the head-room rays' height: a leaf or a chunk standing in
+    the passage, or a sign hanging into it lower than the agent, leaves its free part. Returns (n,)
+    the narrowest width at the rays' height, m, and (n,) (n,) how far the narrowest free part above
+    the climb reaches from the middle towards ``first`` and towards ``last`` (along the edge, m;
+    infinite where nothing stands).
     """
     out = np.array([e.outward for e in kept])
     nrm = np.array([e.normal for e in kept])
@@ -898,13 +900,17 @@ def _passages(
     for k in range(1, int(math.ceil(float(deep.max(initial=0.0)) / s.delta)) + 1):
         rows = np.nonzero(k * s.delta <= deep)[0]
         inside = mid[rows] - out[rows] * (k * s.delta)
-        points = np.concatenate([inside + UP * s.lift, inside + UP * (s.climb + s.delta)])
-        directions = np.concatenate([along[rows], along[rows]])
+        points = np.concatenate([inside + UP * s.lift, inside + UP * (s.climb + s.delta), inside + UP * s.head])
+        directions = np.concatenate([along[rows], along[rows], along[rows]])
         hits_ahead, hits_back = caster.first_hits(points, directions), caster.first_hits(points, -directions)
-        low, high = slice(0, len(rows)), slice(len(rows), None)
+        m = len(rows)
+        low, high, head = slice(0, m), slice(m, 2 * m), slice(2 * m, None)
         widths[rows] = np.minimum(widths[rows], hits_ahead.distance[low] + hits_back.distance[low])
-        # Above the climb, ground the agent walks onto (a terrain rising beside its border) is in no one's way.
-        forward, backward = (np.where(h.hit[high] & _walkable(caster, h.face[high], s), np.inf, h.distance[high])
+        # Above the climb, ground the agent walks onto (a terrain rising beside its border) is in no one's way, at
+        # either height; at the head-room rays' height, what hangs into the passage lower than the agent is (a sign
+        # over part of it).
+        forward, backward = (np.minimum(*(np.where(h.hit[at] & _walkable(caster, h.face[at], s), np.inf, h.distance[at])
+                                          for at in (high, head)))
                              for h in (hits_ahead, hits_back))
         to_last = np.where(towards_last[rows], forward, backward)
         to_first = np.where(towards_last[rows], backward, forward)
@@ -1033,7 +1039,8 @@ def area_below(navmesh: NavMesh | SampledSurface, label: np.ndarray, height: flo
     the floor it covers; a floor does not. ``label``: (P,) component of every polygon, C = its
     largest + 1; ``height``: the agent's height, metres. Each polygon is cut into triangles: a
     navmesh's detail triangles (its polygons' corners can lie far off the surface: a pitched roof's
-    one polygon spans both slopes at 1.6 m, its ridge 3.85 m up, over a floor at 0.1 m), else a fan;
+    one polygon spans both slopes at 1.6 m, its ridge 3.85 m up, over a floor at 0.1 m), else a fan
+    (a sampled surface's polygon of two corners: the line between them, weighing its polygon's area);
     each sampled at four points weighted by area; from each, a ray cast up from ``height`` above it
     finds the first navmesh surface there, which it lies under. O(T log T) for T triangles with the
     ray caster's BVH.
@@ -1047,10 +1054,14 @@ def area_below(navmesh: NavMesh | SampledSurface, label: np.ndarray, height: flo
         vertices = np.asarray(navmesh.vertices, dtype=np.float64)
         fan = range(1, polygons.shape[1] - 1)  # triangle (0, j, j + 1) of each polygon with a corner j + 1
         owners = [np.flatnonzero(polygons[:, j + 1] >= 0) for j in fan]
-        triangles = np.concatenate([polygons[o][:, [0, j, j + 1]] for j, o in zip(fan, owners)])
-        owner = np.concatenate(owners)
+        lines = np.flatnonzero(polygons[:, 2] < 0)  # polygons of two corners: single-file samples
+        triangles = np.concatenate([polygons[o][:, [0, j, j + 1]] for j, o in zip(fan, owners)]
+                                   + [polygons[lines][:, [0, 1, 1]]])
+        owner = np.concatenate(owners + [lines])
     corners = vertices[triangles]
     area = 0.5 * np.linalg.norm(np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0]), axis=1)
+    if not hasattr(navmesh, "detail_polygon"):  # a line of samples stands for the band its polygon's area gives
+        area[len(area) - len(lines):] = np.asarray(navmesh.areas, dtype=np.float64)[lines]
     points = np.einsum("kj,tjd->tkd", _COVER_POINTS, corners).reshape(-1, 3)
     caster = RayCaster(trimesh.Trimesh(vertices, triangles, process=False))
     hits = caster.first_hits(points + UP * height, UP)
