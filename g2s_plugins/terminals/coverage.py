@@ -117,6 +117,7 @@ with ``recess_depth`` > 0, one more multi-source Dijkstra, limited to
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import networkx as nx
 import numpy as np
@@ -163,9 +164,36 @@ def default_radius(context: RunContext) -> float:
     return float(min(AGENT_RADII * context.agent.radius, EXTENT_SHARE * float(np.hypot(*extent)) or math.inf))
 
 
+@dataclass(frozen=True)
+class Cover:
+    """The rows (of ``arrays``, :func:`g2s_plugins.traffic.surface_arrays`) each step of the cover chose.
+
+    ``leaves``: the seeded leaves, sorted; ``traffic``: the rows the
+    traffic-aware cover holds (the seeds included; equal to the seeds
+    without ``traffic_weight``); ``rows``: all the terminals, sorted. The
+    waypoints are ``rows`` less ``leaves``.
+    """
+
+    arrays: traffic.SurfaceArrays
+    leaves: np.ndarray
+    traffic: np.ndarray
+    rows: np.ndarray
+
+
 @hookimpl
 def g2s_select_terminals(graph: nx.Graph, params: Params, context: RunContext) -> Terminals:
     """Leaves plus the farthest-first cover paths, by ascending id."""
+    chosen = cover(graph, params, context)
+    nodes = chosen.arrays.nodes
+    waypoints = np.setdiff1d(chosen.rows, chosen.leaves)
+    return Terminals(
+        nodes=tuple(sorted(nodes[i] for i in chosen.rows.tolist())),
+        waypoints=tuple(sorted(nodes[i] for i in waypoints.tolist())),
+    )
+
+
+def cover(graph: nx.Graph, params: Params, context: RunContext) -> Cover:
+    """The seeded leaves, the traffic-aware cover and the plain cover of ``graph`` (see the module docs)."""
     radius = params.radius if params.radius is not None else default_radius(context)
     min_area = params.min_area if params.min_area is not None else math.pi * (radius / 2) * (radius / 2)  # ** overflows
     arrays = traffic.surface_arrays(graph)
@@ -199,13 +227,8 @@ def g2s_select_terminals(graph: nx.Graph, params: Params, context: RunContext) -
         lengths = traffic_lengths(arrays, params.traffic_weight, params.traffic_sources, params.traffic_ties,
                                   params.traffic_scaling)
         seeds = cover_paths(lengths, seeds, eligible, traffic_radius)
-    cover = cover_paths(adjacency, seeds, eligible, radius)
-    waypoints = np.setdiff1d(cover, leaves)
-    rows = np.union1d(leaves, waypoints)
-    return Terminals(
-        nodes=tuple(sorted(arrays.nodes[i] for i in rows.tolist())),
-        waypoints=tuple(sorted(arrays.nodes[i] for i in waypoints.tolist())),
-    )
+    rows = np.union1d(leaves, cover_paths(adjacency, seeds, eligible, radius))
+    return Cover(arrays, np.sort(leaves), np.unique(seeds), rows)
 
 
 def dead_end_places(adjacency: sp.csr_array, area: np.ndarray, leaves: np.ndarray, reach: float) -> np.ndarray:
