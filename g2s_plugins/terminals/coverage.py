@@ -156,6 +156,7 @@ class Params(PluginParams):
     leaf_min_depth: float = Field(0.0, ge=0, description="leaves of the navmesh graph less deep than this (m: how far their polygon reaches beyond the edge it shares) are not seeded as terminals, the cover still reaches them; 0: every leaf; leaves without a polygon (the sampling route) always count")
     recess_depth: float = Field(0.0, ge=0, description="a leaf whose dead end (it and the chain of degree-2 nodes behind it) lies within this many metres of its way in is a recess; recesses whose ways in lie within the cover radius of one another along the graph are a row, and a row of at least recess_row seeds one of them, the cover reaches the rest; 0: every leaf; leaves without a polygon (the sampling route) are no recess")
     recess_row: int = Field(3, ge=2, description="the fewest recesses that are a row (recess_depth)")
+    quiet_step: float = Field(0.0, ge=0, description="a leaf whose dead end (it and the chain of degree-2 nodes behind it) is less than this many walking-flow percentile points quieter than the node it opens onto is not seeded, the cover reaches it; 0: every leaf")
 
 
 def default_radius(context: RunContext) -> float:
@@ -208,6 +209,9 @@ def cover(graph: nx.Graph, params: Params, context: RunContext) -> Cover:
         leaves = leaves[depths >= params.leaf_min_depth]
     if params.recess_depth > 0:
         leaves = recess_rows(graph, context.navmesh, arrays, leaves, params.recess_depth, radius, params.recess_row)
+    if params.quiet_step > 0:
+        rank = walking_percentile(arrays, params.traffic_sources, params.traffic_ties, params.traffic_scaling)
+        leaves = loud_dead_ends(arrays, leaves, rank, params.quiet_step)
     if params.dead_end_radii > 0:
         leaves = dead_end_places(adjacency, arrays.area, leaves, params.dead_end_radii * radius)
     has_leaf = np.zeros(count, dtype=bool)
@@ -291,6 +295,29 @@ def dead_end_places(adjacency: sp.csr_array, area: np.ndarray, leaves: np.ndarra
     by_place = np.lexsort((grouped, -distance[grouped], owner[owner >= 0]))
     firsts = np.unique(owner[owner >= 0][by_place], return_index=True)[1]
     return np.sort(np.concatenate([alone, grouped[by_place][firsts]]))
+
+
+def loud_dead_ends(arrays: traffic.SurfaceArrays, leaves: np.ndarray, rank: np.ndarray, step: float) -> np.ndarray:
+    """The ``leaves`` (rows of ``arrays``) whose dead end is at least ``step`` percentile points quieter than the
+    node it opens onto: the sorted rows kept.
+
+    ``rank``: (n,) walking-flow percentiles, 0-100 (:func:`walking_percentile`).
+    A leaf's dead end is it and the chain of degree-2 nodes behind it
+    (:func:`dead_end_chain`), its quiet the mean percentile of those nodes,
+    which the heat map gives them when the leaf is seeded (the ``flow``
+    analyzer's ``aggregate: percentile``); without a node of its own the
+    dead end takes the value of the node it opens onto, so the leaf is
+    kept only where those differ by ``step`` or more. A leaf whose area is
+    one chain (its chain ends at another leaf) is kept. O(k c) for k leaves
+    with chains of c nodes.
+    """
+    degree = np.diff(arrays.adjacency.indptr)
+    kept = []
+    for leaf in np.sort(leaves).tolist():
+        chain, entrance = dead_end_chain(arrays.adjacency, leaf)
+        if entrance < 0 or degree[entrance] < 3 or rank[entrance] - rank[chain].mean() >= step:
+            kept.append(leaf)
+    return np.asarray(kept, dtype=np.int64)
 
 
 def recess_rows(graph: nx.Graph, navmesh: NavMesh | None, arrays: traffic.SurfaceArrays, leaves: np.ndarray,
@@ -446,17 +473,25 @@ def _plan_distances(points: np.ndarray, start: np.ndarray, end: np.ndarray) -> n
     return np.linalg.norm(offset - t[..., None] * span[None, :, :], axis=2)
 
 
+def walking_percentile(arrays: traffic.SurfaceArrays, sources: int = traffic.WALKING_SOURCES,
+                       ties: traffic.Ties = traffic.WALKING_TIES,
+                       scaling: traffic.Scaling = traffic.WALKING_SCALING) -> np.ndarray:
+    """(n,) the percentile, 0-100, of each row's walking flow (``sources`` sampled sources, ``ties``,
+    ``scaling``): what the traffic-aware cover reads."""
+    return traffic.percentile(traffic.arrays_walking_flow(arrays, max_sources=sources, ties=ties, scaling=scaling))
+
+
 def traffic_lengths(
     arrays: traffic.SurfaceArrays, weight: float, sources: int = traffic.WALKING_SOURCES, ties: traffic.Ties = traffic.WALKING_TIES,
     scaling: traffic.Scaling = traffic.WALKING_SCALING,
 ) -> sp.csr_array:
     """(n, n) edge lengths of a graph's ``arrays`` plus ``weight`` x the difference of the walking-flow
-    percentiles (``sources`` sampled sources, ``ties``, ``scaling``) of each edge's ends.
+    percentiles (:func:`walking_percentile` of ``sources``, ``ties``, ``scaling``) of each edge's ends.
 
     Rows as in ``arrays`` (:func:`g2s_plugins.traffic.surface_arrays`);
     ``weight`` in metres per percentile point (0-100). O(m) after the flow.
     """
-    rank = traffic.percentile(traffic.arrays_walking_flow(arrays, max_sources=sources, ties=ties, scaling=scaling))
+    rank = walking_percentile(arrays, sources, ties, scaling)
     adjacency = arrays.adjacency
     rows = np.repeat(np.arange(arrays.n), np.diff(adjacency.indptr))
     lengths = adjacency.data + weight * np.abs(rank[rows] - rank[adjacency.indices])
