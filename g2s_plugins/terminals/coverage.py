@@ -211,7 +211,9 @@ def cover(graph: nx.Graph, params: Params, context: RunContext) -> Cover:
         leaves = recess_rows(graph, context.navmesh, arrays, leaves, params.recess_depth, radius, params.recess_row)
     if params.quiet_step > 0:
         rank = walking_percentile(arrays, params.traffic_sources, params.traffic_ties, params.traffic_scaling)
-        leaves = loud_dead_ends(arrays, leaves, rank, params.quiet_step)
+        # an area too small to cover keeps its leaves: the cover would not reach the ones left out
+        leaves = np.union1d(leaves[small[labels[leaves]]], loud_dead_ends(arrays, leaves[~small[labels[leaves]]], rank,
+                                                                          params.quiet_step, radius))
     if params.dead_end_radii > 0:
         leaves = dead_end_places(adjacency, arrays.area, leaves, params.dead_end_radii * radius)
     has_leaf = np.zeros(count, dtype=bool)
@@ -297,7 +299,8 @@ def dead_end_places(adjacency: sp.csr_array, area: np.ndarray, leaves: np.ndarra
     return np.sort(np.concatenate([alone, grouped[by_place][firsts]]))
 
 
-def loud_dead_ends(arrays: traffic.SurfaceArrays, leaves: np.ndarray, rank: np.ndarray, step: float) -> np.ndarray:
+def loud_dead_ends(arrays: traffic.SurfaceArrays, leaves: np.ndarray, rank: np.ndarray, step: float,
+                   reach: float = math.inf) -> np.ndarray:
     """The ``leaves`` (rows of ``arrays``) whose dead end is at least ``step`` percentile points quieter than the
     node it opens onto: the sorted rows kept.
 
@@ -315,7 +318,8 @@ def loud_dead_ends(arrays: traffic.SurfaceArrays, leaves: np.ndarray, rank: np.n
     kept = []
     for leaf in np.sort(leaves).tolist():
         chain, entrance = dead_end_chain(arrays.adjacency, leaf)
-        if entrance < 0 or degree[entrance] < 3 or rank[entrance] - rank[chain].mean() >= step:
+        if (entrance < 0 or degree[entrance] < 3 or rank[entrance] - rank[chain].mean() >= step
+                or arrays.adjacency[chain, chain[1:] + [entrance]].sum() > reach):
             kept.append(leaf)
     return np.asarray(kept, dtype=np.int64)
 
