@@ -1,5 +1,5 @@
-"""Quiet dead ends (``coverage``'s ``quiet_step``): a leaf is seeded only where its dead end is at least that many
-walking-flow percentile points quieter than the node it opens onto; the cover reaches the others."""
+"""Quiet dead ends (``coverage``'s ``quiet_step``): a leaf is no terminal where its dead end is less than that many
+walking-flow percentile points quieter than the node it opens onto and the cover holds that node within its radius."""
 
 from __future__ import annotations
 
@@ -26,19 +26,22 @@ def star_with_dead_ends() -> SurfaceArrays:
     return SurfaceArrays(list(range(n)), {i: i for i in range(n)}, adjacency, np.ones(n))
 
 
-def test_a_dead_end_is_seeded_only_where_it_is_quieter_than_its_way_in_by_the_step():
+def test_a_dead_end_is_left_to_the_cover_where_it_is_about_as_busy_as_its_way_in_and_the_cover_holds_that():
     arrays = star_with_dead_ends()
     rank = np.zeros(12)
     rank[[0, 1, 2, 3]] = [50, 80, 40, 60]  # the walkway
     rank[4] = 10  # 70 points under its way in (node 1)
     rank[5] = 25  # 15 points under node 2
-    rank[[6, 7]] = [45, 15]  # the chain's mean, 30, is 30 points under node 3
+    rank[[6, 7]] = [45, 15]  # the chain's mean, 30, is 30 points under node 3, 2 m away from its leaf
+    rank[[10, 11]] = [50, 70]  # as busy as their ways in (nodes 0 and 3)
     rank[[8, 9]] = [1, 99]  # an area that is one chain: its leaves stay whatever their flow
     leaves = np.array([4, 5, 7, 8, 9, 10, 11])
-    rank[10], rank[11] = 50, 70  # as busy as their ways in (0 and 3)
-    assert coverage.loud_dead_ends(arrays, leaves, rank, 30.0).tolist() == [4, 7, 8, 9]
-    assert coverage.loud_dead_ends(arrays, leaves, rank, 30.1).tolist() == [4, 8, 9]
-    assert coverage.loud_dead_ends(arrays, leaves, rank, 15.0).tolist() == [4, 5, 7, 8, 9]
+    walkway = np.array([0, 1, 2, 3])
+    assert coverage.quiet_dead_ends(arrays, leaves, rank, 30.0, walkway, 6.0).tolist() == [5, 10, 11]
+    assert coverage.quiet_dead_ends(arrays, leaves, rank, 30.1, walkway, 6.0).tolist() == [5, 7, 10, 11]
+    assert coverage.quiet_dead_ends(arrays, leaves, rank, 30.1, walkway, 1.5).tolist() == [5, 10, 11]
+    # a way in the cover does not hold keeps its leaf: the cover would not reach the dead end within its radius
+    assert coverage.quiet_dead_ends(arrays, leaves, rank, 30.0, np.array([0, 1, 3]), 6.0).tolist() == [10, 11]
 
 
 def test_quiet_step_is_validated():

@@ -156,7 +156,7 @@ class Params(PluginParams):
     leaf_min_depth: float = Field(0.0, ge=0, description="leaves of the navmesh graph less deep than this (m: how far their polygon reaches beyond the edge it shares) are not seeded as terminals, the cover still reaches them; 0: every leaf; leaves without a polygon (the sampling route) always count")
     recess_depth: float = Field(0.0, ge=0, description="a leaf whose dead end (it and the chain of degree-2 nodes behind it) lies within this many metres of its way in is a recess; recesses whose ways in lie within the cover radius of one another along the graph are a row, and a row of at least recess_row seeds one of them, the cover reaches the rest; 0: every leaf; leaves without a polygon (the sampling route) are no recess")
     recess_row: int = Field(3, ge=2, description="the fewest recesses that are a row (recess_depth)")
-    quiet_step: float = Field(0.0, ge=0, description="a leaf whose dead end (it and the chain of degree-2 nodes behind it) is less than this many walking-flow percentile points quieter than the node it opens onto is not seeded, the cover reaches it; 0: every leaf")
+    quiet_step: float = Field(0.0, ge=0, description="a leaf whose dead end (it and the chain of degree-2 nodes behind it) is less than this many walking-flow percentile points quieter than the node it opens onto, which the cover holds within the cover radius, is no terminal; 0: every leaf")
 
 
 def default_radius(context: RunContext) -> float:
@@ -209,11 +209,6 @@ def cover(graph: nx.Graph, params: Params, context: RunContext) -> Cover:
         leaves = leaves[depths >= params.leaf_min_depth]
     if params.recess_depth > 0:
         leaves = recess_rows(graph, context.navmesh, arrays, leaves, params.recess_depth, radius, params.recess_row)
-    if params.quiet_step > 0:
-        rank = walking_percentile(arrays, params.traffic_sources, params.traffic_ties, params.traffic_scaling)
-        # an area too small to cover keeps its leaves: the cover would not reach the ones left out
-        leaves = np.union1d(leaves[small[labels[leaves]]], loud_dead_ends(arrays, leaves[~small[labels[leaves]]], rank,
-                                                                          params.quiet_step, radius))
     if params.dead_end_radii > 0:
         leaves = dead_end_places(adjacency, arrays.area, leaves, params.dead_end_radii * radius)
     has_leaf = np.zeros(count, dtype=bool)
@@ -234,6 +229,11 @@ def cover(graph: nx.Graph, params: Params, context: RunContext) -> Cover:
                                   params.traffic_scaling)
         seeds = cover_paths(lengths, seeds, eligible, traffic_radius)
     rows = np.union1d(leaves, cover_paths(adjacency, seeds, eligible, radius))
+    if params.quiet_step > 0:
+        rank = walking_percentile(arrays, params.traffic_sources, params.traffic_ties, params.traffic_scaling)
+        # an area too small to cover keeps its leaves: the cover does not reach them
+        quiet = quiet_dead_ends(arrays, leaves[~small[labels[leaves]]], rank, params.quiet_step, rows, radius)
+        leaves, seeds, rows = (np.setdiff1d(rows_, quiet) for rows_ in (leaves, seeds, rows))
     return Cover(arrays, np.sort(leaves), np.unique(seeds), rows)
 
 
@@ -299,29 +299,36 @@ def dead_end_places(adjacency: sp.csr_array, area: np.ndarray, leaves: np.ndarra
     return np.sort(np.concatenate([alone, grouped[by_place][firsts]]))
 
 
-def loud_dead_ends(arrays: traffic.SurfaceArrays, leaves: np.ndarray, rank: np.ndarray, step: float,
-                   reach: float = math.inf) -> np.ndarray:
-    """The ``leaves`` (rows of ``arrays``) whose dead end is at least ``step`` percentile points quieter than the
-    node it opens onto: the sorted rows kept.
+def quiet_dead_ends(arrays: traffic.SurfaceArrays, leaves: np.ndarray, rank: np.ndarray, step: float,
+                    cover: np.ndarray, reach: float) -> np.ndarray:
+    """The ``leaves`` (rows of ``arrays``) the ``cover`` (rows) holds without them: the sorted rows of those whose dead
+    end is less than ``step`` percentile points quieter than the node it opens onto, which ``cover`` holds, and
+    lies within ``reach`` metres of it.
 
     ``rank``: (n,) walking-flow percentiles, 0-100 (:func:`walking_percentile`).
     A leaf's dead end is it and the chain of degree-2 nodes behind it
-    (:func:`dead_end_chain`), its quiet the mean percentile of those nodes,
-    which the heat map gives them when the leaf is seeded (the ``flow``
-    analyzer's ``aggregate: percentile``); without a node of its own the
-    dead end takes the value of the node it opens onto, so the leaf is
-    kept only where those differ by ``step`` or more. A leaf whose area is
-    one chain (its chain ends at another leaf) is kept. O(k c) for k leaves
-    with chains of c nodes.
+    (:func:`dead_end_chain`), opening onto a node of degree 3 or more, its
+    entrance. Seeded, the leaf gives the dead end a heat of its own, the
+    mean percentile of its nodes (the ``flow`` analyzer's ``aggregate:
+    percentile``); left out, the dead end takes the value of the structure
+    node at its entrance: the same within ``step`` points. Every way from
+    the leaf to the rest of the graph passes the entrance, so with the
+    entrance in the cover and the dead end within ``reach`` (the cover
+    radius) of it, every node lies as close to the cover without the leaf
+    as the radius asks: no new path is needed. A leaf whose area is one
+    chain (its chain ends at another leaf) stays. O(k c) for k leaves with
+    chains of c nodes.
     """
     degree = np.diff(arrays.adjacency.indptr)
-    kept = []
+    held = np.zeros(arrays.n, dtype=bool)
+    held[cover] = True
+    quiet = []
     for leaf in np.sort(leaves).tolist():
         chain, entrance = dead_end_chain(arrays.adjacency, leaf)
-        if (entrance < 0 or degree[entrance] < 3 or rank[entrance] - rank[chain].mean() >= step
-                or arrays.adjacency[chain, chain[1:] + [entrance]].sum() > reach):
-            kept.append(leaf)
-    return np.asarray(kept, dtype=np.int64)
+        if (entrance >= 0 and degree[entrance] >= 3 and held[entrance] and rank[entrance] - rank[chain].mean() < step
+                and arrays.adjacency[chain, chain[1:] + [entrance]].sum() <= reach):
+            quiet.append(leaf)
+    return np.asarray(quiet, dtype=np.int64)
 
 
 def recess_rows(graph: nx.Graph, navmesh: NavMesh | None, arrays: traffic.SurfaceArrays, leaves: np.ndarray,
