@@ -106,12 +106,28 @@ docs/analysis_quality.md ("Terminals in shallow recesses"): 2 m takes 3.3-
 their polygons and rho falls to 0.898-0.907 (0.889 on a market), so no
 preset sets it; ``0`` (the default) seeds every leaf, unchanged.
 
+Quiet dead ends (``quiet_step`` > 0). A seeded leaf gives its dead end
+(it and the chain of degree-2 nodes behind it) a heat of its own: the
+mean walking-flow percentile of its nodes. Where the node it opens onto
+(its entrance, of degree 3 or more) is about as quiet, that heat is
+nearly what the entrance's node gives it anyway, and the leaf's spur buys
+no rank: the bay between two deck chairs off a quiet stretch of
+promenade, a dent off a back alley. After the cover, a leaf whose dead
+end is less than ``quiet_step`` points quieter than its entrance, whose
+entrance the cover holds and whose dead end lies within ``radius`` of
+that entrance along the graph, is no terminal (:func:`quiet_dead_ends`):
+every way from the dead end passes the entrance, so the radius guarantee
+holds without it and no new path is needed. Leaves of areas too small to
+cover stay. Measured in docs/analysis_quality.md ("Dents along lined
+edges"). ``0`` (the default) keeps every leaf, unchanged.
+
 Complexity: O(m + n log n) for step 1 plus, per added path, a Dijkstra over
 the nodes that path brings closer (in practice the area around it); with
 ``traffic_weight`` > 0, that twice, plus the walking flow, O(k (m + n log n))
 for k = 256 sources, unless the run's ``flow`` analyzer already needs it;
 with ``recess_depth`` > 0, one more multi-source Dijkstra, limited to
-``radius``.
+``radius``; with ``quiet_step`` > 0, the walking flow (once, as above)
+and a walk up each leaf's chain.
 """
 
 from __future__ import annotations
