@@ -55,7 +55,7 @@ class Output(Console):
     """Standard output through rich, ending the command with :data:`EXIT_READER_LEFT` when its reader leaves."""
 
     def __init__(self) -> None:
-        super().__init__(file=_CheckedStdout())
+        super().__init__(file=_CheckedStdout(), emoji=False)  # rich turned a name's `:cat:` into a cat
 
     def on_broken_pipe(self) -> None:
         try:
@@ -196,7 +196,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     _answer_version(argv)
     parser, plugged = _parser()
     args = parser.parse_args(argv)
-    errors = Console(stderr=True)
+    errors = Console(stderr=True, emoji=False)  # `level:fire:.obj: no such mesh file` named the file with a flame
     if not args.verbose:  # a library's logged warning (matplotlib's, under a HOME it cannot write) added lines to stderr
         logging.getLogger().addHandler(_NO_LOG)
     own = {"run": lambda a: _run(a, errors), "plugins": _plugins, "presets": lambda _: _presets(), "demo": lambda a: _demo(a, errors)}
@@ -330,7 +330,7 @@ def _summary(result: RunResult, outdir: Path, formats: Sequence[str], written: S
 
 def stage_table(result: RunResult, title: str = "") -> Table:
     """The per-stage table in the paper's form: time in ms, node/edge/terminal counts."""
-    table = Table(title=title or None)
+    table = Table(title=escape(title) or None)  # a level named `[red]x` was titled `x`
     for column in ("step", "", "t (ms)", "#N", "#E"):
         table.add_column(column, justify="left" if column in ("step", "") else "right")
     for row in stage_rows(result.stages):

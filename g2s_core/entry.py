@@ -35,8 +35,36 @@ def main() -> int:
     except KeyboardInterrupt:  # cli.main answers it itself once its parser is built
         print("g2s: interrupted", file=sys.stderr)
         code = 130
+    except Exception:
+        if (broken := _broken_entry_points()) is None:
+            raise
+        print(f"g2s: error: {broken}", file=sys.stderr)
+        code = 2
     # The command is over, its files written or not: a Ctrl-C while the interpreter winds down (1.3 s after a run of
     # 584 polygons) killed it silently with SIGINT after "wrote ..." lines, and its results stood under a status of 130.
     for sig in (signal.SIGINT, signal.SIGTERM):
         signal.signal(sig, signal.SIG_IGN)
     return code
+
+
+def _broken_entry_points() -> str | None:
+    """One line naming an installed distribution whose ``entry_points.txt`` importlib cannot read, if any.
+
+    pydantic reads every distribution's entry points as g2s's first model is defined (its plugins), the plugin
+    registry as the command line is built: another package's broken file (a line without ``=``, bytes that are not
+    UTF-8, which pip never writes) ended every command, ``g2s --help`` too, in importlib's traceback."""
+    import importlib.metadata
+
+    for dist in importlib.metadata.distributions():
+        try:
+            dist.entry_points
+            continue
+        except UnicodeDecodeError as exc:
+            problem = f"the byte at offset {exc.start} is not UTF-8 text"
+        except Exception as exc:  # noqa: BLE001 - importlib's words (a TypeError of its Pair) name neither file nor line
+            lines = [line.strip() for line in (dist.read_text("entry_points.txt") or "").splitlines()]
+            wrong = [n for n, line in enumerate(lines, 1) if line and line[0] not in "#;[" and "=" not in line]
+            problem = f"line {wrong[0]} is not 'name = value'" if wrong else f"{type(exc).__name__}: {exc}"
+        return (f"installed package {dist.name!r} (in {dist.locate_file('')}): its entry_points.txt cannot be read: "
+                f"{problem} (every package's entry points are read as g2s starts; repair or uninstall that package)")
+    return None

@@ -272,7 +272,11 @@ def generate_level(spec: str, config: MeshConfig | None = None, registry: Regist
         ConfigError: no such generator, or a parameter is unknown or invalid;
             the message starts with ``spec``.
     """
-    parts = urlsplit(spec[len(SAMPLE_PREFIX):] if spec.startswith(SAMPLE_PREFIX) else spec)
+    text = spec[len(SAMPLE_PREFIX):] if spec.startswith(SAMPLE_PREFIX) else spec
+    parts = urlsplit(text)
+    if parts.scheme or parts.netloc or "#" in text:  # read as a URL's, they were dropped unsaid: `#x` ran seed 1
+        raise ConfigError(f"{spec}: expected sample:NAME?param=value&param=value (no '#', '//' or second ':'; "
+                          "a value's '#' is written %23)")
     registry = registry or installed()
     try:
         info = registry.get("levels", parts.path)
@@ -284,9 +288,9 @@ def generate_level(spec: str, config: MeshConfig | None = None, registry: Regist
     except ValueError:
         raise ConfigError(f"{spec}: expected sample:NAME?param=value&param=value") from None
     names = [name for name, _ in query]
-    if len(params := dict(query)) < len(names):  # dict() would keep the last value silently
-        raise ConfigError(f"{spec}: {next(name for name in names if names.count(name) > 1)} is given twice")
-    params = registry.validate_params(info, params, key=f"{SAMPLE_PREFIX}{info.name}", text=True)
+    if (twice := next((name for name in names if names.count(name) > 1), None)) is not None:  # dict() keeps the last
+        raise ConfigError(f"{spec}: {twice} is given twice")
+    params = registry.validate_params(info, dict(query), key=f"{SAMPLE_PREFIX}{info.name}", text=True)
     return prepare_mesh(registry.call(info, params=params), config or MeshConfig(), source=spec)
 
 

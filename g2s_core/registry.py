@@ -139,16 +139,17 @@ class Registry:
         if self.manager.is_registered(plugin):  # pluggy's ValueError listed every plugin registered, some 4 kB
             other = next(info.entry_point for info in self._plugins.values() if info.plugin is plugin)
             raise PluginError(f"{where}: its plugin is also that of entry point {other!r}; each entry point names a plugin of its own")
-        try:  # under a name unique while it is registered: one made of the names (':' in them too) could be another's
-            self.manager.register(plugin, name=str(id(plugin)))
-            self.manager.check_pending()
+        try:
+            try:  # under a name unique while it is registered: one made of the names (':' in them too) could be another's
+                self.manager.register(plugin, name=str(id(plugin)))
+                self.manager.check_pending()
+            except (pluggy.PluginValidationError, ValueError) as exc:  # pluggy's words span 3 lines
+                raise PluginError(f"{where}: {' / '.join(str(exc).splitlines())}") from exc
             info = self._checked(plugin, package, entry_point, where)
-        except (pluggy.PluginValidationError, ValueError, PluginError) as exc:
+        except PluginError:
             if self.manager.is_registered(plugin):  # left in, its unknown hook failed every later plugin's check_pending
                 self.manager.unregister(plugin)
-            if isinstance(exc, PluginError):
-                raise
-            raise PluginError(f"{where}: {' / '.join(str(exc).splitlines())}") from exc  # pluggy's words span 3 lines
+            raise
         self._plugins[(info.stage, info.name)] = info
         return info
 

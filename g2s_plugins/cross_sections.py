@@ -93,13 +93,12 @@ def _tree_steps(arrays: traffic.SurfaceArrays, sources: np.ndarray, factor: np.n
                 weight: np.ndarray) -> Iterator[tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]]:
     """Per block of sources, per step of their trees: (source's row in the block, predecessor, node, the pair weight
     walking from the predecessor to the node, with the source's factor)."""
-    block = max(1, traffic.BLOCK_ENTRIES // max(arrays.n, 1))
-    for lo in range(0, len(sources), block):
-        predecessors, through = traffic.shortest_path_flow(arrays.adjacency, sources[lo:lo + block], weight)
+    for lo, block in traffic.source_blocks(sources, arrays.n):
+        predecessors, through = traffic.shortest_path_flow(arrays.adjacency, block, weight)
         rows, nodes = np.nonzero(predecessors >= 0)
         before = predecessors[rows, nodes].astype(np.int64)
         # the edge into a node carries every pair whose target lies in the node's subtree
-        yield rows, before, nodes, factor[lo:lo + block][rows] * (through[rows, nodes] + weight[nodes])
+        yield rows, before, nodes, factor[lo:lo + len(block)][rows] * (through[rows, nodes] + weight[nodes])
 
 
 def walking_trips(arrays: traffic.SurfaceArrays, plan: np.ndarray, max_sources: int | None, seed: int = 0) -> Trips:
@@ -257,11 +256,11 @@ def lane_edges(navmesh: NavMesh, positions: np.ndarray, trips: Trips, lane_width
 
 
 def trips_across(arrays: traffic.SurfaceArrays, trips: Trips, sections: list[tuple[np.ndarray, np.ndarray] | None],
-                 own: np.ndarray) -> np.ndarray:
+                 own: np.ndarray | None) -> np.ndarray:
     """(n,) per node, the pair weight of the trips across its section (module docs, step 3), or ``own`` (n,) where
-    its section is ``None``."""
+    its section is ``None`` (``own`` ``None``: no section is; 0 where no trip crosses any)."""
     n, m = arrays.n, len(trips.ends)
-    result = np.asarray(own, dtype=np.float64).copy()
+    result = np.zeros(n) if own is None else np.asarray(own, dtype=np.float64).copy()
     with_section = [v for v, section in enumerate(sections) if section is not None]
     if not with_section or m == 0:
         return result
@@ -306,12 +305,16 @@ def _run_members(starts: np.ndarray, ends: np.ndarray, own: float, gap: float) -
     return run[:-1] == run[-1]
 
 
-def walking_across(graph: nx.Graph, flow: np.ndarray, max_sources: int | None, seed: int, gap: float, reach: float,
-                   height: float, navmesh: NavMesh | None = None, lane_width: float | None = None) -> np.ndarray:
+def walking_across(graph: nx.Graph, flow: np.ndarray | None, max_sources: int | None, seed: int, gap: float,
+                   reach: float, height: float, navmesh: NavMesh | None = None,
+                   lane_width: float | None = None) -> np.ndarray:
     """(n,) the trips across each node's section (:func:`section_edges`; with ``navmesh`` and ``lane_width``, its
-    lanes': :func:`lane_edges`, ``flow`` kept off lanes) in ``graph``'s :func:`g2s_plugins.traffic.surface_arrays`
-    order, for the walking flow's sample (exact up to ``max_sources`` nodes with an area, as
-    :func:`g2s_plugins.traffic.walking_flow`). Nodes without a ``normal`` are taken as flat."""
+    lanes': :func:`lane_edges`, ``flow`` (n,) kept off lanes) in ``graph``'s
+    :func:`g2s_plugins.traffic.surface_arrays` order, for the walking flow's sample (exact up to ``max_sources``
+    nodes with an area, as :func:`g2s_plugins.traffic.walking_flow`). Nodes without a ``normal`` are taken as flat.
+
+    ``flow`` is read only for lanes: every node has a section, so a caller of sections need not compute it
+    (``None``; a graph on which no tree uses an edge then reads 0 everywhere, as its walking flow does)."""
     arrays = traffic.surface_arrays(graph)
     data = graph.nodes
     positions = np.array([data[node]["pos"] for node in arrays.nodes], dtype=np.float64).reshape(-1, 3)

@@ -100,7 +100,9 @@ polygons and their shared edges (portals):
    opening is a way round something standing in open floor (a container on a quay, an enclosure among paths, a
    feature on a plaza), not a narrowing of a way, and the two regions join, again on the joined regions until no
    such opening is left. Size is the larger region's longest extent, or the smaller's when either is walled in
-   (:data:`WALLED_IN` of its outline wall, and no passage: a house with a door at each end keeps both). Doors
+   (:data:`WALLED_IN` of its outline wall, and no passage: a house with a door at each end keeps both) and the
+   opening is no wider than a door can be (:data:`CORRIDOR_WIDTH` agent diameters walkable); a wider opening is
+   weighed against the walled-in region itself (a yard's mouths onto a zoo walled in by its fence). Doors
    of rooms in a loop, a wall's gaps between two fields and a room's two doors onto a corridor cost walks of one
    to several regions' sizes. The project's own rule, set on the thirteenth round's kinds (docs/plugins.md,
    "Ways round obstacles").
@@ -194,7 +196,7 @@ samples 1.2-1.9, the ring corridor's pieces 4.1-8.7 (docs/plugins.md, "Pinches")
 CORRIDOR_WIDTH = 4.0
 """A corridor-like group is also at most this many agent diameters wide at its widest (walkable): a corridor holds a
 few agents abreast, however long a hall is (measured: the corridors of the samples 2.1-2.7 diameters, turned or not;
-docs/plugins.md, "Pinches")."""
+docs/plugins.md, "Pinches"). A room's door is no wider either (:func:`_join_ways_round`)."""
 
 PINCH_REACH = 1.5
 """A side's local width near a cut is measured within this many times the cut's span (its walkable width and the
@@ -274,7 +276,11 @@ WALLED_IN = 0.95
 """A region at least this share of whose outline is wall (the small holes left out of the clearances not counted:
 pillars and posts stand in it) and which is no passage is walled in: a room behind its doors, whose openings are
 weighed against its own size (:func:`_join_ways_round`). Measured (docs/plugins.md, "Ways round obstacles"): the zoo's
-reptile house, aviary and cafe 0.97-0.99, pieces of the dry dock's quays between containers and stacks 0.59-0.93."""
+reptile house, aviary and cafe 0.97-0.99, pieces of the dry dock's quays between containers and stacks 0.59-0.93.
+An opening wider than :data:`CORRIDOR_WIDTH` agent diameters (walkable) is no door: it is weighed against the
+walled-in region's own extent, not the smaller region's (docs/plugins.md, "Yards beside walled-in ground": the
+zoo's paths, walled in by its fence at 0.98, and a corner yard of 1,001 m2 beside them, 0.79, at mouths 6.7-11.1
+m)."""
 
 EXTENT_DIRECTIONS = 8
 """Directions, evenly spread over 180 degrees, along which a region's longest extent is measured
@@ -1136,8 +1142,9 @@ def _join_ways_round(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocke
     are one cut through it, as the split sees it), and the walk between its widest portal's two polygons is looked for
     on the polygon graph (:class:`PolygonWalks`). When one of at most :data:`WAY_ROUND` times the regions' size is
     there, the two regions join: the larger's longest extent is their size, or the smaller's when either is walled in
-    (:data:`WALLED_IN`: a room behind its doors). Only regions on one floor join: ``band`` (P,) is each polygon's
-    height band (:func:`floor_bands`).
+    (:data:`WALLED_IN`: a room behind its doors) and the widest portal is at most a door wide (:data:`CORRIDOR_WIDTH`
+    agent diameters walkable); past that, the walled-in region's own extent (the smaller's when both are). Only regions
+    on one floor join: ``band`` (P,) is each polygon's height band (:func:`floor_bands`).
     """
     ends = np.asarray(navmesh.portals().endpoints, dtype=np.float64)
     walks = PolygonWalks.of(navmesh, pairs, ends)
@@ -1145,6 +1152,7 @@ def _join_ways_round(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocke
     wall = np.linalg.norm(end - start, axis=1) * (clearance.left_out < 0)
     opening_length = np.linalg.norm(ends[:, 1] - ends[:, 0], axis=1)
     passage = params.passage_width * 2.0 * float(agent.radius)
+    door = CORRIDOR_WIDTH * 2.0 * float(agent.radius)  # the widest walkable width an opening of a room is a door at
     heights = walks.centres[:, 1]
     while True:
         count = int(labels.max()) + 1 if len(labels) else 0
@@ -1174,7 +1182,12 @@ def _join_ways_round(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocke
                          < params.min_separation).any(axis=1)]
             closed = candidates[np.union1d(near, np.flatnonzero(np.isin(around, around[group])))]
             widest = candidates[group[np.argmax(clearance.portals[candidates[group]])]]
-            size = min(extent[a], extent[b]) if walled_in[[a, b]].any() else max(extent[a], extent[b])
+            if not walled_in[[a, b]].any():
+                size = max(extent[a], extent[b])
+            elif 2.0 * clearance.portals[widest] <= door:
+                size = min(extent[a], extent[b])
+            else:  # wider than any door: weighed against the room it opens, not against a yard beside it
+                size = extent[[a, b]][walled_in[[a, b]]].min()
             if walks.round_within(widest, closed, walks.steps[widest] + WAY_ROUND * size):
                 joins.append((a, b))
         if not joins:

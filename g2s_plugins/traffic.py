@@ -98,7 +98,7 @@ from __future__ import annotations
 
 import math
 import os
-from collections.abc import Hashable, Iterable
+from collections.abc import Hashable, Iterable, Iterator
 from typing import Literal
 
 import networkx as nx
@@ -112,8 +112,8 @@ from g2s_plugins.surface_arrays import MIN_LENGTH, SurfaceArrays, surface_arrays
 __all__ = [
     "EXACT_NODES", "TIE_TOLERANCE", "WALKING_SCALING", "WALKING_SOURCES", "WALKING_TIES", "Scaling", "SurfaceArrays",
     "Ties", "arrays_walking_flow", "distance_to", "flow_error_bound", "gather", "is_exact", "linear_through", "od_flow",
-    "origin_weight", "percentile", "represented_area", "shortest_path_flow", "split_path_flow", "surface_arrays",
-    "tie_tolerance", "walking_flow", "walking_sources",
+    "origin_weight", "percentile", "represented_area", "shortest_path_flow", "source_blocks", "split_path_flow",
+    "surface_arrays", "tie_tolerance", "walking_flow", "walking_sources",
 ]
 
 Ties = Literal["first", "split"]
@@ -152,7 +152,8 @@ tolerance ties only 0.1 % of the edges there, those differing by under
 """
 
 BLOCK_ENTRIES = 1 << 22
-"""Tree entries computed at once by :func:`od_flow` (32 MB of float64)."""
+"""Tree entries computed at once by :func:`od_flow` and :mod:`g2s_plugins.cross_sections` (32 MB of float64;
+:func:`source_blocks`)."""
 
 KEPT_ENTRIES = 1 << 25
 """Tree entries :func:`od_flow` keeps before it sums them into the flow (256 MiB of float64: every block of the
@@ -426,18 +427,25 @@ def od_flow(
     if n == 0 or not np.any(weight > 0):
         return flow, None
     sources, factor, sampled = walking_sources(weight, max_sources, seed)
-    block, kept = max(1, BLOCK_ENTRIES // n), []
-    for lo in range(0, len(sources), block):
+    through_of = linear_through if sampled is not None and scaling == "linear" else _through
+    kept = []
+    for lo, block_sources in source_blocks(sources, n):
         # adjacency is symmetric: a directed search scans each edge once instead of from both of
         # its stored directions, with the same distances and predecessors
-        block_sources = sources[lo:lo + block]
-        linear = sampled is not None and scaling == "linear"
-        kept.append((lo, (linear_through if linear else _through)(adjacency, block_sources, weight, ties)))
-        if lo + block >= len(sources) or sum(through.size for _, through in kept) >= KEPT_ENTRIES:
+        kept.append((lo, through_of(adjacency, block_sources, weight, ties)))
+        if lo + len(block_sources) >= len(sources) or sum(through.size for _, through in kept) >= KEPT_ENTRIES:
             for start, through in kept:  # block by block, in order: the sum of the products as before
-                flow += factor[start:start + block] @ through
+                flow += factor[start:start + len(through)] @ through
             kept.clear()
     return flow, sampled
+
+
+def source_blocks(sources: np.ndarray, n: int) -> Iterator[tuple[int, np.ndarray]]:
+    """The (k,) ``sources`` in order, in blocks whose (b, n) trees on a graph of ``n`` nodes hold at most
+    :data:`BLOCK_ENTRIES` entries (one source at least): each block's first index in ``sources`` and its rows."""
+    block = max(1, BLOCK_ENTRIES // max(n, 1))
+    for lo in range(0, len(sources), block):
+        yield lo, sources[lo:lo + block]
 
 
 def walking_sources(

@@ -445,3 +445,17 @@ def test_a_summary_the_storage_refuses_is_one_line_and_keeps_the_earlier_one(tmp
     assert proc.stdout.strip() == f"{out}: cannot write the summary (File too large); the pairs' results are kept: " \
         "run the batch again to write it"
     assert {path.name: path.read_bytes() for path in out.iterdir()} == earlier
+
+
+def test_a_local_dask_cluster_left_without_workers_loses_its_pairs_instead_of_waiting_for_ever(monkeypatch):
+    """Dask does not start a worker again that died as it started: the batch waited on its pairs for ever."""
+    import dask.distributed
+
+    from g2s_plugins.executors import dask_cluster
+
+    monkeypatch.setattr(dask_cluster, "NO_WORKERS_LIMIT", 1.0)
+    cluster = dask.distributed.LocalCluster
+    monkeypatch.setattr(dask.distributed, "LocalCluster", lambda **options: cluster(**{**options, "n_workers": 0}))
+    rows = dask_cluster.g2s_execute(function=abs, items=[-1, -2], params=dask_cluster.Params(workers=1),
+                                    lost=lambda item, reason: (item, reason))
+    assert sorted(rows) == [(-2, dask_cluster.NO_WORKERS), (-1, dask_cluster.NO_WORKERS)]

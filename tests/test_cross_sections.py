@@ -94,6 +94,10 @@ def test_the_analyzer_sums_a_section_only_when_asked():
     summed = flow_analyzer.g2s_analyze(structure, flow_analyzer.Params(aggregate="sum", across="section"), context)
     assert summed[(0, 0.0)] == pytest.approx(summed[(0, 2.0)]) and summed[(0, 0.0)] > plain[(0, 0.0)]
     assert summed[(0, 0.0)] == pytest.approx(2 * 9 * 9 / 18.0**2, rel=1e-5)  # a share of all pair weight
+    alone = two_rooms([0.0, 2.0])  # sections overwrite every node's own flow: it is not computed at all
+    flow_analyzer.g2s_analyze(structure, flow_analyzer.Params(across="section"),
+                              RunContext(mesh=None, agent=AgentConfig(), centre=np.zeros(3), graph=alone))
+    assert not any(key[0] == "walking_flow" for key in traffic.surface_arrays(alone).derived)
     with pytest.raises(ValueError):
         flow_analyzer.Params(across="lane")
     with pytest.raises(PluginError, match="needs a navmesh"):  # a graph without one: exit 2, not a crash

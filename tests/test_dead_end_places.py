@@ -99,15 +99,19 @@ def tank_yard(radius: float = 6.0, height: float = 1.8, sides: int = 16) -> trim
 
 @pytest.mark.parametrize("radius", [5.0, 6.0])
 def test_a_tank_roof_gets_one_terminal(registry, radius):
-    def roof_terminals(dead_end_radii: float) -> list:
+    def roof_terminals(dead_end_radii: float, quiet_step: float = 0.0, waypoints: bool = False) -> list:
         raw = load_raw_config(find_config("map_analysis"))
         raw["stop_after"] = "terminals"
-        raw["terminals"]["params"]["dead_end_radii"] = dead_end_radii
+        raw["terminals"]["params"].update(dead_end_radii=dead_end_radii, quiet_step=quiet_step)
         result = pipeline.run(pipeline.plan(parse_config(raw), registry), registry, tank_yard(radius), "tank", "-")
-        return [n for n in result.terminals.without_waypoints if result.graph.nodes[n]["pos"][1] > 1.5]
+        nodes = result.terminals.nodes if waypoints else result.terminals.without_waypoints
+        return [n for n in nodes if result.graph.nodes[n]["pos"][1] > 1.5]
 
     assert len(roof_terminals(0.0)) >= 3  # Recast cuts the round roof into several rim polygons, each a leaf
     assert len(roof_terminals(2.0)) == 1
+    # map_analysis's quiet_step: the rim's leaves are as quiet as the roof they open onto, so none is a terminal of
+    # its own, but the cover still holds the roof
+    assert roof_terminals(2.0, 30.0) == [] and roof_terminals(2.0, 30.0, waypoints=True)
 
 
 def test_dead_end_radii_is_validated(registry):

@@ -34,6 +34,14 @@ lanes``: the polygons of a lane, the navmesh route only;
 :mod:`g2s_plugins.cross_sections`). Measured against the evaluation's
 reference (docs/analysis_quality.md, "Parallel lanes in the heat map"),
 neither is the presets' heat map: the reference ranks polygons.
+A leaf of the structure whose polygons no walk passes through (their flow
+0: a recess, a dent between a rail's posts, where the cover put a terminal)
+shows its own value, the bottom of the scale (``dead_ends: own``, the
+default), or that of the node it hangs from (``way``). Measured
+(docs/analysis_quality.md, "A spine walk's heat"): such leaves are what
+reads the beach's promenade cold node by node, and ``way`` lifts it over the
+sand, but leaves of zero flow stand in every room's corners too, and the
+reference ranks them at the bottom: not the presets' heat map.
 The ``min_heat_rho`` and ``max_traffic_step`` of the simplification, and a
 traffic-aware ``coverage``, read a walking flow of their own settings
 (``heat_sources``/``heat_ties``/``heat_scaling``,
@@ -48,12 +56,12 @@ estimated the same way, each source's term again in [0, A²], so the same
 bound holds for it; with ``scaling: linear`` a source's term reaches twice
 that range, and the bound doubles). Values are shares of all pair weight (``mean``,
 ``sum``) or percentiles.
-Cost: O(k (m + n log n)) for k sources on the initial graph.
+Cost: O(k (m + n log n)) for k sources on the initial graph; ``dead_ends: way`` O(n) more.
 """
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Hashable, Mapping
 from typing import Literal
 
 import networkx as nx
@@ -104,6 +112,11 @@ class Params(PluginParams):
         "mean", description="a structure node's value: mean (a density) or sum of the through-flow of the polygons it "
         "stands for, or the mean percentile rank (0-100) of their flow"
     )
+    dead_ends: Literal["own", "way"] = Field(
+        "own", description="a leaf of the structure whose polygons no walk passes through (their flow is 0: a recess, "
+        "a dent between a rail's posts, where the cover put a terminal): its own value (own), the bottom of the "
+        "scale, or that of the structure node it hangs from (way: the recess reads as the way it opens onto)"
+    )
 
 
 @hookimpl
@@ -112,14 +125,31 @@ def g2s_analyze(structure: nx.Graph, params: Params, context: RunContext) -> Map
     lanes = params.across == "lanes"
     if lanes and context.navmesh is None:  # told before any flow is computed
         raise PluginError("flow: across: lanes needs a navmesh (the navmesh graph builder); this run has none")
-    flow = traffic.walking_flow(context.graph, max_sources=params.max_sources, seed=params.seed, ties=params.ties,
-                                scaling=params.scaling)
+    # with sections every polygon's value is its section's: the plain flow (ties, scaling) is only the lanes' rest
+    flow = None if params.across == "section" else traffic.walking_flow(
+        context.graph, max_sources=params.max_sources, seed=params.seed, ties=params.ties, scaling=params.scaling)
     if params.across != "node":
         flow = cross_sections.walking_across(
             context.graph, flow, params.max_sources, params.seed, params.section_gap, params.section_reach,
             context.agent.height, context.navmesh if lanes else None,
             params.lane_width * 2.0 * context.agent.radius if lanes else None)
     if params.aggregate == "percentile":
-        return traffic.gather(context.graph, structure, traffic.percentile(flow), mean=True)
-    total = traffic.origin_weight(traffic.surface_arrays(context.graph)).sum()
-    return traffic.gather(context.graph, structure, flow / max(total**2, 1e-300), mean=params.aggregate == "mean")
+        values = traffic.gather(context.graph, structure, traffic.percentile(flow), mean=True)
+    else:
+        total = traffic.origin_weight(traffic.surface_arrays(context.graph)).sum()
+        values = traffic.gather(context.graph, structure, flow / max(total**2, 1e-300), mean=params.aggregate == "mean")
+    if params.dead_ends == "way":
+        return dead_ends_as_their_way(structure, values, traffic.gather(context.graph, structure, flow))
+    return values
+
+
+def dead_ends_as_their_way(structure: nx.Graph, values: dict[Hashable, float],
+                           passing: Mapping[Hashable, float]) -> dict[Hashable, float]:
+    """``values`` with each leaf of ``structure`` (one neighbour, edges taken both ways) whose ``passing`` flow is 0
+    given its neighbour's value (that neighbour's own, also when it is such a leaf too). O(n)."""
+    ways = structure.to_undirected(as_view=True)
+    result = dict(values)
+    for node in structure:
+        if ways.degree(node) == 1 and passing[node] == 0.0:
+            result[node] = values[next(iter(ways.neighbors(node)))]
+    return result

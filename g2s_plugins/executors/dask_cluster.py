@@ -24,6 +24,12 @@ from g2s_plugins.executors import INTERRUPT_POLL
 
 NAME = "dask"
 
+NO_WORKERS_LIMIT = 60.0
+"""Seconds the LocalCluster may go without a worker before its unfinished pairs are lost: Dask does not start a
+worker again that died as it started (a pair that kills its worker, under load), and the batch waited for ever."""
+
+NO_WORKERS = "the Dask cluster's workers died as they started, and none was left to run it"
+
 
 class Params(PluginParams):
     """Which cluster."""
@@ -73,8 +79,14 @@ def g2s_execute(
     with interrupts_held() as interrupts:  # acted on once the cluster is closed (INTERRUPT_POLL)
         try:
             completed = as_completed(futures)
+            staffed = time.monotonic()
             while not (interrupts or completed.is_empty()):
                 finished = completed.next_batch(block=False)
+                if cluster is None or cluster.scheduler_info.get("workers"):
+                    staffed = time.monotonic()
+                elif time.monotonic() - staffed > NO_WORKERS_LIMIT:
+                    yield from (lost(futures[f], NO_WORKERS) for f in futures if not f.done())
+                    return
                 if not finished:
                     time.sleep(INTERRUPT_POLL)
                 for future in finished:

@@ -3,12 +3,14 @@ whose worker dies (killed for want of memory, a crash in native code) fails alon
 
 from __future__ import annotations
 
+import multiprocessing
 import os
 import signal
+import threading
 from collections.abc import Callable, Generator, Iterator, Sequence
 from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 from concurrent.futures.process import BrokenProcessPool
-from multiprocessing import get_context
+from contextlib import contextmanager
 from typing import Any
 
 from pydantic import Field
@@ -21,6 +23,10 @@ NAME = "local"
 
 DIED = "its worker process died as it ran"
 """Why a pair whose worker died failed: the pool cannot tell a signal's kind."""
+
+
+class PoolThreadDied(RuntimeError):
+    """A thread of the pool itself could not start or died: the pairs it would have handed out never finish."""
 
 
 class Params(PluginParams):
@@ -62,18 +68,47 @@ def _pooled(function: Callable[[Any], dict[str, Any]], items: Sequence[Any], wor
     unfinished, in their order, when a worker died (none when every item ran).
 
     A Ctrl-C is taken between waits and acted on once the pool has shut down (:data:`INTERRUPT_POLL`).
+
+    Raises:
+        PoolThreadDied: a thread of the pool could not start or died (under a tight memory limit: ``ulimit -v``).
     """
-    with interrupts_held() as interrupts:
+    earlier = set(multiprocessing.active_children())
+    with interrupts_held() as interrupts, _thread_deaths() as deaths:
         # forkserver: workers start from a clean process, not a copy of one with a progress thread running
-        pool = ProcessPoolExecutor(workers, get_context("forkserver"), _ignore_interrupt)
+        pool = ProcessPoolExecutor(workers, multiprocessing.get_context("forkserver"), _ignore_interrupt)
+        futures: dict[Any, Any] = {}
         try:
-            futures = {pool.submit(function, item): item for item in items}
+            try:
+                futures = {pool.submit(function, item): item for item in items}
+            except BrokenProcessPool:
+                raise
+            except RuntimeError as exc:  # `can't start new thread`: the pool starts its own with the first item
+                deaths.append(exc)
             pending = set(futures)
-            while pending and not interrupts:
+            # dead, the pool's thread (which could not start the one feeding its workers) left them waiting for ever
+            while pending and not (interrupts or deaths):
                 finished, pending = wait(pending, timeout=INTERRUPT_POLL, return_when=FIRST_COMPLETED)
                 for future in finished:
                     if not isinstance(future.exception(), BrokenProcessPool):
                         yield future.result()
         finally:  # also on Ctrl-C or when the batch closes the iterator: the running pairs finish, the others are dropped
-            pool.shutdown(wait=True, cancel_futures=True)
+            if deaths:  # its workers wait on a queue no thread feeds, and the interpreter's exit would wait on them
+                for process in set(multiprocessing.active_children()) - earlier:
+                    process.terminate()
+            pool.shutdown(wait=not deaths, cancel_futures=True)  # a thread that never started cannot be joined
+    if deaths:
+        raise PoolThreadDied(f"the pool cannot run its threads ({type(deaths[0]).__name__}: {deaths[0]}; under a "
+                             "memory limit? --executor serial needs none)") from deaths[0]
     return [item for future, item in futures.items() if isinstance(future.exception(), BrokenProcessPool)]
+
+
+@contextmanager
+def _thread_deaths() -> Iterator[list[BaseException]]:
+    """The exceptions that end a thread while in the block, kept (not printed as a traceback) for the block to see."""
+    deaths: list[BaseException] = []
+    previous = threading.excepthook
+    threading.excepthook = lambda died: deaths.append(died.exc_value or RuntimeError("a thread died"))
+    try:
+        yield deaths
+    finally:
+        threading.excepthook = previous

@@ -106,17 +106,34 @@ docs/analysis_quality.md ("Terminals in shallow recesses"): 2 m takes 3.3-
 their polygons and rho falls to 0.898-0.907 (0.889 on a market), so no
 preset sets it; ``0`` (the default) seeds every leaf, unchanged.
 
+Quiet dead ends (``quiet_step`` > 0). A seeded leaf gives its dead end
+(it and the chain of degree-2 nodes behind it) a heat of its own: the
+mean walking-flow percentile of its nodes. Where the node it opens onto
+(its entrance, of degree 3 or more) is about as quiet, that heat is
+nearly what the entrance's node gives it anyway, and the leaf's spur buys
+no rank: the bay between two deck chairs off a quiet stretch of
+promenade, a dent off a back alley. After the cover, a leaf whose dead
+end is less than ``quiet_step`` points quieter than its entrance, whose
+entrance the cover holds and whose dead end lies within ``radius`` of
+that entrance along the graph, is no terminal (:func:`quiet_dead_ends`):
+every way from the dead end passes the entrance, so the radius guarantee
+holds without it and no new path is needed. Leaves of areas too small to
+cover stay. Measured in docs/analysis_quality.md ("Dents along lined
+edges"). ``0`` (the default) keeps every leaf, unchanged.
+
 Complexity: O(m + n log n) for step 1 plus, per added path, a Dijkstra over
 the nodes that path brings closer (in practice the area around it); with
 ``traffic_weight`` > 0, that twice, plus the walking flow, O(k (m + n log n))
 for k = 256 sources, unless the run's ``flow`` analyzer already needs it;
 with ``recess_depth`` > 0, one more multi-source Dijkstra, limited to
-``radius``.
+``radius``; with ``quiet_step`` > 0, the walking flow (once, as above)
+and a walk up each leaf's chain.
 """
 
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import networkx as nx
 import numpy as np
@@ -155,6 +172,7 @@ class Params(PluginParams):
     leaf_min_depth: float = Field(0.0, ge=0, description="leaves of the navmesh graph less deep than this (m: how far their polygon reaches beyond the edge it shares) are not seeded as terminals, the cover still reaches them; 0: every leaf; leaves without a polygon (the sampling route) always count")
     recess_depth: float = Field(0.0, ge=0, description="a leaf whose dead end (it and the chain of degree-2 nodes behind it) lies within this many metres of its way in is a recess; recesses whose ways in lie within the cover radius of one another along the graph are a row, and a row of at least recess_row seeds one of them, the cover reaches the rest; 0: every leaf; leaves without a polygon (the sampling route) are no recess")
     recess_row: int = Field(3, ge=2, description="the fewest recesses that are a row (recess_depth)")
+    quiet_step: float = Field(0.0, ge=0, description="a leaf whose dead end (it and the chain of degree-2 nodes behind it) is less than this many walking-flow percentile points quieter than the node it opens onto, which the cover holds within the cover radius, is no terminal; 0: every leaf")
 
 
 def default_radius(context: RunContext) -> float:
@@ -163,9 +181,36 @@ def default_radius(context: RunContext) -> float:
     return float(min(AGENT_RADII * context.agent.radius, EXTENT_SHARE * float(np.hypot(*extent)) or math.inf))
 
 
+@dataclass(frozen=True)
+class Cover:
+    """The rows (of ``arrays``, :func:`g2s_plugins.traffic.surface_arrays`) each step of the cover chose.
+
+    ``leaves``: the seeded leaves, sorted; ``traffic``: the rows the
+    traffic-aware cover holds (the seeds included; equal to the seeds
+    without ``traffic_weight``); ``rows``: all the terminals, sorted. The
+    waypoints are ``rows`` less ``leaves``.
+    """
+
+    arrays: traffic.SurfaceArrays
+    leaves: np.ndarray
+    traffic: np.ndarray
+    rows: np.ndarray
+
+
 @hookimpl
 def g2s_select_terminals(graph: nx.Graph, params: Params, context: RunContext) -> Terminals:
     """Leaves plus the farthest-first cover paths, by ascending id."""
+    chosen = cover(graph, params, context)
+    nodes = chosen.arrays.nodes
+    waypoints = np.setdiff1d(chosen.rows, chosen.leaves)
+    return Terminals(
+        nodes=tuple(sorted(nodes[i] for i in chosen.rows.tolist())),
+        waypoints=tuple(sorted(nodes[i] for i in waypoints.tolist())),
+    )
+
+
+def cover(graph: nx.Graph, params: Params, context: RunContext) -> Cover:
+    """The seeded leaves, the traffic-aware cover and the plain cover of ``graph`` (see the module docs)."""
     radius = params.radius if params.radius is not None else default_radius(context)
     min_area = params.min_area if params.min_area is not None else math.pi * (radius / 2) * (radius / 2)  # ** overflows
     arrays = traffic.surface_arrays(graph)
@@ -199,13 +244,13 @@ def g2s_select_terminals(graph: nx.Graph, params: Params, context: RunContext) -
         lengths = traffic_lengths(arrays, params.traffic_weight, params.traffic_sources, params.traffic_ties,
                                   params.traffic_scaling)
         seeds = cover_paths(lengths, seeds, eligible, traffic_radius)
-    cover = cover_paths(adjacency, seeds, eligible, radius)
-    waypoints = np.setdiff1d(cover, leaves)
-    rows = np.union1d(leaves, waypoints)
-    return Terminals(
-        nodes=tuple(sorted(arrays.nodes[i] for i in rows.tolist())),
-        waypoints=tuple(sorted(arrays.nodes[i] for i in waypoints.tolist())),
-    )
+    rows = np.union1d(leaves, cover_paths(adjacency, seeds, eligible, radius))
+    if params.quiet_step > 0:
+        rank = walking_percentile(arrays, params.traffic_sources, params.traffic_ties, params.traffic_scaling)
+        # an area too small to cover keeps its leaves: the cover does not reach them
+        quiet = quiet_dead_ends(arrays, leaves[~small[labels[leaves]]], rank, params.quiet_step, rows, radius)
+        leaves, seeds, rows = (np.setdiff1d(rows_, quiet) for rows_ in (leaves, seeds, rows))
+    return Cover(arrays, np.sort(leaves), np.unique(seeds), rows)
 
 
 def dead_end_places(adjacency: sp.csr_array, area: np.ndarray, leaves: np.ndarray, reach: float) -> np.ndarray:
@@ -268,6 +313,38 @@ def dead_end_places(adjacency: sp.csr_array, area: np.ndarray, leaves: np.ndarra
     by_place = np.lexsort((grouped, -distance[grouped], owner[owner >= 0]))
     firsts = np.unique(owner[owner >= 0][by_place], return_index=True)[1]
     return np.sort(np.concatenate([alone, grouped[by_place][firsts]]))
+
+
+def quiet_dead_ends(arrays: traffic.SurfaceArrays, leaves: np.ndarray, rank: np.ndarray, step: float,
+                    cover: np.ndarray, reach: float) -> np.ndarray:
+    """The ``leaves`` (rows of ``arrays``) the ``cover`` (rows) holds without them: the sorted rows of those whose dead
+    end is less than ``step`` percentile points quieter than the node it opens onto, which ``cover`` holds, and
+    lies within ``reach`` metres of it.
+
+    ``rank``: (n,) walking-flow percentiles, 0-100 (:func:`walking_percentile`).
+    A leaf's dead end is it and the chain of degree-2 nodes behind it
+    (:func:`dead_end_chain`), opening onto a node of degree 3 or more, its
+    entrance. Seeded, the leaf gives the dead end a heat of its own, the
+    mean percentile of its nodes (the ``flow`` analyzer's ``aggregate:
+    percentile``); left out, the dead end takes the value of the structure
+    node at its entrance: the same within ``step`` points. Every way from
+    the leaf to the rest of the graph passes the entrance, so with the
+    entrance in the cover and the dead end within ``reach`` (the cover
+    radius) of it, every node lies as close to the cover without the leaf
+    as the radius asks: no new path is needed. A leaf whose area is one
+    chain (its chain ends at another leaf) stays. O(k c) for k leaves with
+    chains of c nodes.
+    """
+    degree = np.diff(arrays.adjacency.indptr)
+    held = np.zeros(arrays.n, dtype=bool)
+    held[cover] = True
+    quiet = []
+    for leaf in np.sort(leaves).tolist():
+        chain, entrance = dead_end_chain(arrays.adjacency, leaf)
+        if (entrance >= 0 and degree[entrance] >= 3 and held[entrance] and rank[entrance] - rank[chain].mean() < step
+                and arrays.adjacency[chain, chain[1:] + [entrance]].sum() <= reach):
+            quiet.append(leaf)
+    return np.asarray(quiet, dtype=np.int64)
 
 
 def recess_rows(graph: nx.Graph, navmesh: NavMesh | None, arrays: traffic.SurfaceArrays, leaves: np.ndarray,
@@ -423,17 +500,25 @@ def _plan_distances(points: np.ndarray, start: np.ndarray, end: np.ndarray) -> n
     return np.linalg.norm(offset - t[..., None] * span[None, :, :], axis=2)
 
 
+def walking_percentile(arrays: traffic.SurfaceArrays, sources: int = traffic.WALKING_SOURCES,
+                       ties: traffic.Ties = traffic.WALKING_TIES,
+                       scaling: traffic.Scaling = traffic.WALKING_SCALING) -> np.ndarray:
+    """(n,) the percentile, 0-100, of each row's walking flow (``sources`` sampled sources, ``ties``,
+    ``scaling``): what the traffic-aware cover reads."""
+    return traffic.percentile(traffic.arrays_walking_flow(arrays, max_sources=sources, ties=ties, scaling=scaling))
+
+
 def traffic_lengths(
     arrays: traffic.SurfaceArrays, weight: float, sources: int = traffic.WALKING_SOURCES, ties: traffic.Ties = traffic.WALKING_TIES,
     scaling: traffic.Scaling = traffic.WALKING_SCALING,
 ) -> sp.csr_array:
     """(n, n) edge lengths of a graph's ``arrays`` plus ``weight`` x the difference of the walking-flow
-    percentiles (``sources`` sampled sources, ``ties``, ``scaling``) of each edge's ends.
+    percentiles (:func:`walking_percentile` of ``sources``, ``ties``, ``scaling``) of each edge's ends.
 
     Rows as in ``arrays`` (:func:`g2s_plugins.traffic.surface_arrays`);
     ``weight`` in metres per percentile point (0-100). O(m) after the flow.
     """
-    rank = traffic.percentile(traffic.arrays_walking_flow(arrays, max_sources=sources, ties=ties, scaling=scaling))
+    rank = walking_percentile(arrays, sources, ties, scaling)
     adjacency = arrays.adjacency
     rows = np.repeat(np.arange(arrays.n), np.diff(adjacency.indptr))
     lengths = adjacency.data + weight * np.abs(rank[rows] - rank[adjacency.indices])
