@@ -21,9 +21,11 @@ first analyzer's value, a walking-flow percentile), of the mean reference
 percentile of the polygons each stands for (the value a perfect node there
 would carry) and of the heat of the node their spur joins. Then the
 ceiling (``rho_ceiling``, :func:`g2s_plugins.evaluation.placement_rho`)
-and structure share with every dent spur pruned, and with every room
-spur pruned: what giving those places no node of their own would cost at
-best. This is a benchmark: nothing here asserts a target.
+and structure share with the spurs of each kind (dent, room, open floor)
+pruned, and with each of them cut to the node next to its joint (a node
+at its door): what giving those places no node of their own, or one at
+their door, would cost at best. This is a benchmark: nothing here asserts
+a target.
 """
 
 from __future__ import annotations
