@@ -133,13 +133,16 @@ def g2s_analyze(structure: nx.Graph, params: Params, context: RunContext) -> Map
             context.graph, flow, params.max_sources, params.seed, params.section_gap, params.section_reach,
             context.agent.height, context.navmesh if lanes else None,
             params.lane_width * 2.0 * context.agent.radius if lanes else None)
+    arrays = traffic.surface_arrays(context.graph)
+    _, nearest = traffic.distance_to(arrays, arrays.rows(sorted(structure)))  # searched once: dead_ends reads it too
     if params.aggregate == "percentile":
-        values = traffic.gather(context.graph, structure, traffic.percentile(flow), mean=True)
+        values = traffic.gather(context.graph, structure, traffic.percentile(flow), mean=True, nearest=nearest)
     else:
-        total = traffic.origin_weight(traffic.surface_arrays(context.graph)).sum()
-        values = traffic.gather(context.graph, structure, flow / max(total**2, 1e-300), mean=params.aggregate == "mean")
+        total = traffic.origin_weight(arrays).sum()
+        values = traffic.gather(context.graph, structure, flow / max(total**2, 1e-300), mean=params.aggregate == "mean",
+                                nearest=nearest)
     if params.dead_ends == "way":
-        return dead_ends_as_their_way(structure, values, traffic.gather(context.graph, structure, flow))
+        return dead_ends_as_their_way(structure, values, traffic.gather(context.graph, structure, flow, nearest=nearest))
     return values
 
 
