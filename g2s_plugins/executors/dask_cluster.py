@@ -84,7 +84,7 @@ def g2s_execute(
                 finished = completed.next_batch(block=False)
                 if cluster is None or cluster.scheduler_info.get("workers"):
                     staffed = time.monotonic()
-                elif time.monotonic() - staffed > NO_WORKERS_LIMIT:
+                elif not finished and time.monotonic() - staffed > NO_WORKERS_LIMIT:  # those finished are yielded first
                     yield from (lost(futures[f], NO_WORKERS) for f in futures if not f.done())
                     return
                 if not finished:
