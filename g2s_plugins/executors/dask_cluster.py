@@ -54,7 +54,8 @@ def g2s_execute(
     function: Callable[[Any], dict[str, Any]], items: Sequence[Any], params: Params, lost: Callable[[Any, str], dict[str, Any]]
 ) -> Iterator[dict[str, Any]]:
     """Each item as a Dask task, yielded as it finishes; an item whose workers died running it is ``lost``, the others
-    run (Dask tries it on another worker first: ``distributed.scheduler.allowed-failures``, 3 by default)."""
+    run (Dask tries it on another worker first: ``distributed.scheduler.allowed-failures``, 3 by default), unless the
+    local cluster has gone :data:`NO_WORKERS_LIMIT` seconds without a worker: then every item left is ``lost``."""
     from dask.distributed import Client, LocalCluster, as_completed
     from distributed.scheduler import KilledWorker
 
