@@ -279,7 +279,7 @@ weighed against its own size (:func:`_join_ways_round`). Measured (docs/plugins.
 reptile house, aviary and cafe 0.97-0.99, pieces of the dry dock's quays between containers and stacks 0.59-0.93.
 An opening wider than :data:`CORRIDOR_WIDTH` agent diameters (walkable) is no door: it is weighed against the
 walled-in region's own extent, not the smaller region's (docs/plugins.md, "Yards beside walled-in ground": the
-zoo's paths, walled in by its fence at 0.98, and a corner yard of 1,001 m2 beside them, 0.79, at mouths 6.7-11.1
+zoo's paths, walled in by its fence at 0.98, and a corner yard of 1,001 m² beside them, 0.79, at mouths 6.7-11.1
 m)."""
 
 EXTENT_DIRECTIONS = 8

@@ -113,7 +113,7 @@ class Params(PluginParams):
         "stands for, or the mean percentile rank (0-100) of their flow"
     )
     dead_ends: Literal["own", "way"] = Field(
-        "own", description="a leaf of the structure whose polygons no walk passes through (their flow is 0: a recess, "
+        "own", description="a leaf of the structure whose polygons no walk passes through (their flow, `across`'s, is 0: a recess, "
         "a dent between a rail's posts, where the cover put a terminal): its own value (own), the bottom of the "
         "scale, or that of the structure node it hangs from (way: the recess reads as the way it opens onto)"
     )

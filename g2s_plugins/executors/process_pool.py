@@ -83,6 +83,8 @@ def _pooled(function: Callable[[Any], dict[str, Any]], items: Sequence[Any], wor
             except BrokenProcessPool:
                 raise
             except RuntimeError as exc:  # `can't start new thread`: the pool starts its own with the first item
+                if "can't start new thread" not in str(exc):
+                    raise
                 deaths.append(exc)
             pending = set(futures)
             # dead, the pool's thread (which could not start the one feeding its workers) left them waiting for ever
@@ -104,10 +106,19 @@ def _pooled(function: Callable[[Any], dict[str, Any]], items: Sequence[Any], wor
 
 @contextmanager
 def _thread_deaths() -> Iterator[list[BaseException]]:
-    """The exceptions that end a thread while in the block, kept (not printed as a traceback) for the block to see."""
+    """The exceptions that end a thread started in the block (the pool's), kept (not printed as a traceback) for the
+    block to see; a thread started before it dies as it would have."""
     deaths: list[BaseException] = []
+    earlier = set(threading.enumerate())
     previous = threading.excepthook
-    threading.excepthook = lambda died: deaths.append(died.exc_value or RuntimeError("a thread died"))
+
+    def take(died: Any) -> None:
+        if died.thread in earlier:
+            previous(died)
+        else:
+            deaths.append(died.exc_value or RuntimeError("a thread died"))
+
+    threading.excepthook = take
     try:
         yield deaths
     finally:
