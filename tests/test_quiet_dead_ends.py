@@ -10,6 +10,7 @@ import scipy.sparse as sp
 from g2s_core import pipeline
 from g2s_core.config import find_config, load_raw_config, parse_config
 from g2s_core.errors import ConfigError
+from g2s_core.mesh import generate_level
 from g2s_core.registry import Registry
 from g2s_plugins.surface_arrays import SurfaceArrays
 from g2s_plugins.terminals import coverage
@@ -49,3 +50,20 @@ def test_quiet_step_is_validated():
     raw["terminals"]["params"]["quiet_step"] = -1
     with pytest.raises(ConfigError, match="terminals.params.quiet_step: expected a number"):
         pipeline.plan(parse_config(raw), Registry.from_entry_points())
+
+
+@pytest.mark.parametrize("level", ["sample:pilaster_corridor", "sample:building"])
+def test_the_cover_only_drops_leaves_and_adds_no_path(level):
+    """In the cover (``coverage.cover``): the quiet leaves go, the waypoints and every other terminal stay."""
+    registry = Registry.from_entry_points()
+
+    def terminals(quiet_step: float) -> tuple[set, set]:
+        raw = load_raw_config(find_config("map_analysis"))
+        raw["stop_after"] = "terminals"
+        raw["terminals"]["params"]["quiet_step"] = quiet_step
+        result = pipeline.run(pipeline.plan(parse_config(raw), registry), registry, generate_level(level, registry=registry),
+                              "level", "-")
+        return set(result.terminals.without_waypoints), set(result.terminals.nodes) - set(result.terminals.without_waypoints)
+
+    (leaves, waypoints), (quiet_leaves, quiet_waypoints) = terminals(0.0), terminals(30.0)
+    assert quiet_leaves < leaves and quiet_waypoints == waypoints
