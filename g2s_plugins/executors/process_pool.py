@@ -80,8 +80,6 @@ def _pooled(function: Callable[[Any], dict[str, Any]], items: Sequence[Any], wor
         try:
             try:
                 futures = {pool.submit(function, item): item for item in items}
-            except BrokenProcessPool:
-                raise
             except RuntimeError as exc:  # `can't start new thread`: the pool starts its own with the first item
                 if "can't start new thread" not in str(exc):
                     raise
