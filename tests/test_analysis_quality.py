@@ -307,7 +307,8 @@ def test_traffic_aware_cover_adds_a_waypoint_where_traffic_steps_down():
     flow = traffic.walking_flow(graph, max_sources=traffic.WALKING_SOURCES)
     assert flow.tolist() == [0, 10, 22, 0, 16, 0, 0]
     # weight 0.07 m per point: 1 m per rank step, so length + |rank difference|
-    lengths = coverage.traffic_lengths(traffic.surface_arrays(graph), 0.07)
+    arrays = traffic.surface_arrays(graph)
+    lengths = coverage.traffic_lengths(arrays, coverage.walking_percentile(arrays), 0.07)
     expected = {(0, 1): 3.5, (1, 2): 3.0, (2, 3): 5.5, (2, 4): 2.0, (4, 5): 4.5, (5, 6): 1.0, (4, 6): 4.7}
     assert {edge: lengths[edge] for edge in expected} == pytest.approx(expected)
     # weighted distances from 0 and 3: 1 3.5, 2 5.5, 4 7.5, 5 12, 6 12.2; radius 6: 6 is farthest, its path

@@ -238,15 +238,15 @@ def cover(graph: nx.Graph, params: Params, context: RunContext) -> Cover:
         )
     seeds = np.concatenate([leaves, _seeds(adjacency, labels, has_leaf, small)])
     eligible = ~small[labels]
+    if params.traffic_weight > 0 or params.quiet_step > 0:
+        rank = walking_percentile(arrays, params.traffic_sources, params.traffic_ties, params.traffic_scaling)
     if params.traffic_weight > 0:
         traffic_radius = params.traffic_radius if params.traffic_radius is not None else TRAFFIC_RADIUS_SHARE * radius
         # the plain cover below grows from this one, so its radius guarantee holds whatever this one chose
-        lengths = traffic_lengths(arrays, params.traffic_weight, params.traffic_sources, params.traffic_ties,
-                                  params.traffic_scaling)
+        lengths = traffic_lengths(arrays, rank, params.traffic_weight)
         seeds = cover_paths(lengths, seeds, eligible, traffic_radius)
     rows = np.union1d(leaves, cover_paths(adjacency, seeds, eligible, radius))
     if params.quiet_step > 0:
-        rank = walking_percentile(arrays, params.traffic_sources, params.traffic_ties, params.traffic_scaling)
         # an area too small to cover keeps its leaves: the cover does not reach them
         quiet = quiet_dead_ends(arrays, leaves[~small[labels[leaves]]], rank, params.quiet_step, rows, radius)
         leaves, seeds, rows = (np.setdiff1d(rows_, quiet) for rows_ in (leaves, seeds, rows))
@@ -508,17 +508,13 @@ def walking_percentile(arrays: traffic.SurfaceArrays, sources: int = traffic.WAL
     return traffic.percentile(traffic.arrays_walking_flow(arrays, max_sources=sources, ties=ties, scaling=scaling))
 
 
-def traffic_lengths(
-    arrays: traffic.SurfaceArrays, weight: float, sources: int = traffic.WALKING_SOURCES, ties: traffic.Ties = traffic.WALKING_TIES,
-    scaling: traffic.Scaling = traffic.WALKING_SCALING,
-) -> sp.csr_array:
+def traffic_lengths(arrays: traffic.SurfaceArrays, rank: np.ndarray, weight: float) -> sp.csr_array:
     """(n, n) edge lengths of a graph's ``arrays`` plus ``weight`` x the difference of the walking-flow
-    percentiles (:func:`walking_percentile` of ``sources``, ``ties``, ``scaling``) of each edge's ends.
+    percentiles ``rank`` ((n,), 0-100: :func:`walking_percentile`) of each edge's ends.
 
     Rows as in ``arrays`` (:func:`g2s_plugins.traffic.surface_arrays`);
-    ``weight`` in metres per percentile point (0-100). O(m) after the flow.
+    ``weight`` in metres per percentile point (0-100). O(m).
     """
-    rank = walking_percentile(arrays, sources, ties, scaling)
     adjacency = arrays.adjacency
     rows = np.repeat(np.arange(arrays.n), np.diff(adjacency.indptr))
     lengths = adjacency.data + weight * np.abs(rank[rows] - rank[adjacency.indices])
