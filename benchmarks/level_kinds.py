@@ -5107,18 +5107,22 @@ def beach(seed: int) -> trimesh.Trimesh:
     rise = rng.uniform(1.6, 2.2)
     phases = rng.uniform(0, 2 * math.pi, size=3)
 
-    def height(x: np.ndarray, z: np.ndarray) -> np.ndarray:
-        """The sand's height (m) at plan points x, z: the slope, ripples and dunes near the wall."""
-        dune = np.clip(np.minimum((z - 45.0) / 8.0, (wall_z - 8.0 - z) / 4.0), 0.0, 1.0) * (0.6 + 0.5 * np.sin(2 * math.pi * x / 23.0 + phases[0])
-                                                        * np.sin(2 * math.pi * z / 11.0 + phases[1]))
-        return rise * z / wall_z + 0.12 * np.sin(2 * math.pi * x / 7.0 + phases[2]) * np.clip(z / 10.0, 0.0, 1.0) + dune
-
-    # groynes, bays and their flights
     groynes = [0.0]
     while groynes[-1] + 30.0 < size_x:
         groynes.append(min(groynes[-1] + rng.uniform(30.0, 48.0), size_x))
     if size_x - groynes[-1] < 30.0:
         groynes[-1] = size_x
+
+    def height(x: np.ndarray, z: np.ndarray) -> np.ndarray:
+        """The sand's height (m) at plan points x, z: the slope, ripples and dunes near the wall. The dunes die out
+        over the last 4 m before a groyne (none within 1 m), where the sand stays 0.68 m and more under the
+        groyne's top (a dune reaching within the climb of it joined two bays over it)."""
+        to_groyne = np.min(np.abs(np.asarray(x)[..., None] - np.array(groynes[1:-1])), axis=-1)
+        dune = (np.clip(np.minimum((z - 45.0) / 8.0, (wall_z - 8.0 - z) / 4.0), 0.0, 1.0) * np.clip((to_groyne - 1.0) / 3.0, 0.0, 1.0)
+                * (0.6 + 0.5 * np.sin(2 * math.pi * x / 23.0 + phases[0]) * np.sin(2 * math.pi * z / 11.0 + phases[1])))
+        return rise * z / wall_z + 0.12 * np.sin(2 * math.pi * x / 7.0 + phases[2]) * np.clip(z / 10.0, 0.0, 1.0) + dune
+
+    # bays and their flights
     taken: list[tuple[float, float, float, float]] = []
     run = math.ceil(prom_y / 0.18) * 0.28
     pier_bay = int(rng.integers(1, len(groynes) - 2))

@@ -361,6 +361,23 @@ def test_the_beachs_bays_are_reached_down_their_flights(kinds):
         assert ((x > x0) & (x < x0 + 40) & (y < 3.0)).sum() > 5, x0
 
 
+@pytest.mark.parametrize("seed", [0, 1])
+def test_no_dune_reaches_over_a_groyne(kinds, seed):
+    """Without the promenade and the pier (over 4 m) the sand falls apart into one area per bay (over 100 m²): no
+    dune rises within the climb of a groyne's top (3 m), which seed 0's did twice."""
+    mesh = kinds["beach"](seed)
+    groynes = np.unique(np.round(mesh.vertices[np.isclose(mesh.vertices[:, 1], 3.0), 0] - 0.2, 1))[::2]
+    nav = build_navmesh(mesh.vertices, mesh.faces, AGENT)
+    low = np.flatnonzero(nav.centres[:, 1] < 4.0)
+    inside = np.isin(nav.neighbours, low) & np.isin(np.arange(nav.polygon_count), low)[:, None]
+    rows, slots = np.nonzero(inside)
+    index = np.searchsorted(low, [rows, nav.neighbours[rows, slots]])
+    graph = sp.coo_matrix((np.ones(len(rows)), (index[0], index[1])), shape=(len(low),) * 2)
+    label = connected_components(graph, directed=False)[1]
+    sizes = np.bincount(label, weights=nav.areas[low])
+    assert (sizes > 100.0).sum() == len(groynes) + 1  # (and a few square metres shut in behind a hut)
+
+
 def test_the_railyard_is_one_area_over_its_footbridge(kinds):
     """The gaps between wagons, the roads, the shed and the footbridge (6.5 m) are one area; no floor on a wagon,
     under the footbridge or away from it: over the tracks (between the 10 m roads) the only floor over 1 m up is the
