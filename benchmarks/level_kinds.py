@@ -5990,15 +5990,16 @@ def dam(seed: int) -> trimesh.Trimesh:
 
 
 def garden(seed: int) -> trimesh.Trimesh:
-    """A formal garden inside a wall 3 m high, 150-170 x 110-120 m, entered by one gate 4 m wide in the south wall.
-    Along the north a terrace 1.5 m up (balustraded, the house behind it ridged, no way in) reached by three
-    flights down its front along -z (6 m wide on the axis, 2.4 m at its ends); in the middle a parterre of box beds
-    (ridged, 0.3 m eaves: nothing on them is floor) in a grid of gravel paths 3 m wide round a fountain basin
-    (ridged) on the main axis (6 m wide); a canal 6 m wide along x (no floor) across the south, crossed by a bridge
-    on the axis and one more; in the west a hedge maze of 11-12 x 10-11 cells 2.8 m square (hedges 2.2 m high and
-    0.6 m thick, a perfect maze: one way between any two cells, cut by a depth-first walk; one entrance on its
-    east side, one exit on its south side), a clearing of 2 x 2 cells at its centre; in the south-west a grotto
-    (a chamber 14 x 10 m under a ridged lid at 3.6 m, two openings 2 m wide, rocks and a basin inside); in the east
+    """A formal garden inside a wall 3 m high, 150-170 x 110-120 m, with one gate 4 m wide in the south wall (nothing
+    beyond it). Along the north a terrace 1.5 m up (balustraded, the house behind it ridged, no way in) reached by
+    three flights down its front along -z (6 m wide on the axis, 2.4 m at its ends); in the middle a parterre of box
+    beds (ridged, 0.3 m eaves: nothing on them is floor) in a grid of gravel paths 3 m wide round a fountain basin
+    (ridged) on the main axis (6 m wide); a canal 6 m wide along x (no floor) from wall to wall across the south,
+    crossed only by a bridge on the axis and one more; in the west a hedge maze of 11-12 x 10-11 cells 2.8 m square
+    (hedges 2.2 m high and 0.6 m thick, a perfect maze: one way between any two cells, cut by a depth-first walk;
+    one entrance on its east side, one exit on its south side), a clearing of 2 x 2 cells at its centre; in the
+    south-west a grotto (a chamber 14 x 10 m under a ridged lid at 3.6 m, two openings 2 m wide, rocks and a basin
+    inside); in the east
     a bosquet of trees in a grid with an orangery (ridged) and a belvedere up a flight (a platform 2.5 m up, railed).
     Statues (octagonal plinths) and benches along the paths.
     """
@@ -6032,7 +6033,7 @@ def garden(seed: int) -> trimesh.Trimesh:
             _trunk(s, np.array([x, tz1 - 1.0]), 0.4, 1.5, 2.6)
     # the canal across the south and its bridges
     cz0 = rng.uniform(14.0, 18.0)
-    canal = (6.0, size_x - 6.0, cz0, cz0 + 6.0)
+    canal = (0.0, size_x, cz0, cz0 + 6.0)  # wall to wall: the bridges are the only ways over
     second = rng.uniform(size_x * 0.62, size_x - 20.0)
     for bx, w in ((axis, 6.0), (second, 3.0)):
         holes.append((canal[0], bx - w / 2, canal[2], canal[3]))

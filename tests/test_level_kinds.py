@@ -539,3 +539,15 @@ def test_the_cisterns_walkways_join_its_two_streets(kinds):
     assert (y > 6.0).sum() > 20 and low.sum() > 100
     assert (x[y > 6.0] < 0.0).any() and (x[y > 6.0] > x[low].max()).any()
     assert nav.areas[low].sum() < 0.5 * np.ptp(x[low]) * np.ptp(nav.centres[low, 2])
+
+
+def test_the_gardens_canal_is_crossed_only_on_its_bridges(kinds):
+    """The canal runs from wall to wall: over its 6 m of water there is floor only on the axis bridge (6 m wide) and
+    the second one (3 m)."""
+    mesh = kinds["garden"](1)
+    _, nav = areas(mesh)
+    rails = mesh.vertices[np.isclose(mesh.vertices[:, 1], 1.1)]  # the bridges' rails, 0.5 m past the canal's banks
+    z0, z1 = rails[:, 2].min() + 0.5, rails[:, 2].max() - 0.5
+    over = (nav.centres[:, 2] > z0 + 0.5) & (nav.centres[:, 2] < z1 - 0.5)
+    assert over.any() and nav.areas[over].sum() < (6.0 + 3.0) * (z1 - z0)
+    assert len(np.unique(np.round(nav.centres[over, 0] / 10.0))) <= 2
