@@ -6138,6 +6138,30 @@ def garden(seed: int) -> trimesh.Trimesh:
     return s.mesh()
 
 
+def _stair_tower(s: _Solids, x0: float, z0: float, y0: float, storeys: int, doors: tuple[int, ...] = (0,),
+                 storey: float = 4.0) -> float:
+    """A walled switchback well 4 m wide (:func:`_switchback`) from plan point (x0, z0) along +z, up ``storeys``
+    storeys ``storey`` m apart from ``y0``: a floor over the landing of every storey above the first (the well beyond
+    it open), walls 0.4 m thick round the well, a door 1.6 m wide at the landing's end on each storey of ``doors`` (0
+    the foot; ``storeys``, the top, is walled only when it has a door), and on the top a rail across the lane no
+    flight climbs. Returns the top's height (m)."""
+    well = _well_length(storey)
+    for k in range(storeys + 1):
+        y = y0 + k * storey
+        if k:
+            s.slab(x0, x0 + 4.0, z0, z0 + well, y, [(x0, x0 + 4.0, z0 + 2.0, z0 + well)])
+        if k < storeys:
+            _switchback(s, x0, z0, y, storey)
+        if k < storeys or k in doors:
+            s.wall((x0, z0 - 0.2), (x0 + 4.0, z0 - 0.2), y, y + storey, [(1.2, 1.6)] if k in doors else [], thickness=0.4)
+            s.wall((x0, z0 + well + 0.2), (x0 + 4.0, z0 + well + 0.2), y, y + storey, thickness=0.4)
+            for x in (x0 - 0.2, x0 + 4.2):
+                s.wall((x, z0 - 0.4), (x, z0 + well + 0.4), y, y + storey, thickness=0.4)
+    top = y0 + storeys * storey
+    s.box(x0, x0 + 2.0, top, top + 1.0, z0 + 1.9, z0 + 2.0)
+    return top
+
+
 def lighthouse(seed: int) -> trimesh.Trimesh:
     """A lighthouse on a tidal island at the end of a causeway, the sea (no floor) all round. The mainland, 70 x 110
     m at y = 0: a village street of houses (ridged), a car park of cars (ridged), trees and benches. The causeway, 5 m
@@ -6251,28 +6275,12 @@ def lighthouse(seed: int) -> trimesh.Trimesh:
         s.wall((x0 + 6.0, z0), (x0 + 6.0, z1), y, y + 3.0, [(rng.uniform(0.5, 4.5), 1.6)])
         s.box(x0 + 2.0, x0 + 3.6, y, y + 0.75, (z0 + z1) / 2 - 0.5, (z0 + z1) / 2 + 0.5)
         _gable(s, x0 - 0.3, x1 + 0.3, z0 - 0.3, z1 + 0.3, y + 3.0)
-    # the tower: five storeys of switchback, its door at the foot, the gallery at the top
-    storeys = 5
-    top = y + storeys * 4.0
-    for k in range(storeys + 1):
-        fy = y + k * 4.0
-        if k:
-            s.slab(*tw, fy, [(tw[0], tw[1], tw[2] + 2.0, tw[3])])
-        if k < storeys:
-            _switchback(s, tower_x, tower_z, fy, 4.0)
-            s.wall((tw[0], tw[2] - 0.2), (tw[1], tw[2] - 0.2), fy, fy + 4.0, [(1.2, 1.6)] if k == 0 else [], thickness=0.4)
-            s.wall((tw[0], tw[3] + 0.2), (tw[1], tw[3] + 0.2), fy, fy + 4.0, thickness=0.4)
-            for x in (tw[0] - 0.2, tw[1] + 0.2):
-                s.wall((x, tw[2] - 0.4), (x, tw[3] + 0.4), fy, fy + 4.0, thickness=0.4)
-    ceiling = top + 3.0
-    s.wall((tw[0], tw[2] - 0.2), (tw[1], tw[2] - 0.2), top, ceiling, [(1.2, 1.6)], thickness=0.4)
-    s.wall((tw[0], tw[3] + 0.2), (tw[1], tw[3] + 0.2), top, ceiling, thickness=0.4)
-    for x in (tw[0] - 0.2, tw[1] + 0.2):
-        s.wall((x, tw[2] - 0.4), (x, tw[3] + 0.4), top, ceiling, thickness=0.4)
+    # the tower: five storeys of switchback, its door at the foot, the lantern's door onto the gallery at the top
+    top = _stair_tower(s, tower_x, tower_z, y, 5, doors=(0, 5))
+    ceiling = top + 4.0
     g = (tw[0] - 2.6, tw[1] + 2.6, tw[2] - 2.6, tw[3] + 2.6)
     s.slab(*g, top, [(tw[0] - 0.4, tw[1] + 0.4, tw[2] - 0.4, tw[3] + 0.4)])
     _rail_ring(s, *g, top, {})
-    s.box(tw[0], tw[0] + 2.0, top, top + 1.0, tw[2] + 1.9, tw[2] + 2.0)  # a rail across the lane of no flight up
     _ridged(s, tw[0] - 0.4, tw[1] + 0.4, tw[2] - 0.4, tw[3] + 0.4, ceiling, ceiling + 1.0)
     return s.mesh()
 
@@ -6425,18 +6433,8 @@ def water_park(seed: int) -> trimesh.Trimesh:
             x, z = rng.uniform(4.0, size_x - 30.0), rng.uniform(16.0, size_z - well - 6.0)
             if _clear(x - 3.0, x + 30.0, z - 3.0, z + well + 3.0, taken):
                 break
-        for k in range(3):
-            y = k * 4.0
-            if k:
-                s.slab(x, x + 4.0, z, z + well, y, [(x, x + 4.0, z + 2.0, z + well)])
-            _switchback(s, x, z, y, 4.0)
-            s.wall((x, z - 0.2), (x + 4.0, z - 0.2), y, y + 4.0, [(1.2, 1.6)] if k == 0 else [], thickness=0.4)
-            s.wall((x, z + well + 0.2), (x + 4.0, z + well + 0.2), y, y + 4.0, thickness=0.4)
-            for xx in (x - 0.2, x + 4.2):
-                s.wall((xx, z - 0.4), (xx, z + well + 0.4), y, y + 4.0, thickness=0.4)
-        top = 12.0
-        s.slab(x - 0.4, x + 4.4, z - 0.4, z + well + 0.4, top, [(x, x + 4.0, z + 2.0, z + well)])
-        s.box(x, x + 2.0, top, top + 1.0, z + 1.9, z + 2.0)
+        top = _stair_tower(s, x, z, 0.0, 3)
+        s.slab(x - 0.4, x + 4.4, z - 0.4, z + well + 0.4, top, [(x, x + 4.0, z, z + well)])  # the top platform round it
         _rail_ring(s, x - 0.4, x + 4.4, z - 0.4, z + well + 0.4, top, {})
         s.ramp(np.array([x + 4.4, z + 1.0]), np.array([x + 22.0, z + 1.0]), 0.9, top, 0.8)  # the chute, 33 degrees, 0.9 m wide
         holes.append((x + 22.0, x + 28.0, z - 2.0, z + 4.0))  # its splash pool
