@@ -111,7 +111,7 @@ bridges and pends) and ``dam`` (a crest between two hilltops over a valley, two 
 A flat top under a ridged deck is floor inside it (a first draft's viaduct piers: 11-12 areas of 15 m² at 8.2 m on
 each seed), so the piers are ridged up into the deck.
 
-Sixteenth round: six more kinds, 580-871 navmesh polygons with that agent (seeds 0-2): ``garden`` (a formal garden: a
+Sixteenth round: six more kinds, 580-864 navmesh polygons with that agent (seeds 0-2): ``garden`` (a formal garden: a
 terrace up three flights, a parterre of ridged beds round a fountain, a canal crossed by two bridges, a hedge maze with
 one way between any two cells, a grotto under a lid, a bosquet), ``lighthouse`` (a causeway 200-270 m long over the sea,
 the only way to an island of tide pools round a plinth with keeper's cottages and a tower of five switchback storeys to
