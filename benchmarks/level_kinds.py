@@ -113,7 +113,7 @@ each seed), so the piers are ridged up into the deck.
 
 Sixteenth round: six more kinds, 580-864 navmesh polygons with that agent (seeds 0-2): ``garden`` (a formal garden: a
 terrace up three flights, a parterre of ridged beds round a fountain, a canal crossed by two bridges, a hedge maze with
-one way between any two cells, a grotto under a lid, a bosquet), ``lighthouse`` (a causeway 200-270 m long over the sea,
+one way between any two cells, a grotto under a lid, a bosquet), ``lighthouse`` (a causeway 190-265 m long over the sea,
 the only way to an island of tide pools round a plinth with keeper's cottages and a tower of five switchback storeys to
 a gallery), ``canal_locks`` (a flight of 7-9 locks: two banks stepping up 2 m a lock by flights on the towpaths, joined
 only by the lock gates' footbridges and one road bridge), ``water_park`` (pools and a lazy river round an island in a
