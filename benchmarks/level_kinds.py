@@ -6310,7 +6310,7 @@ def canal_locks(seed: int) -> trimesh.Trimesh:
         y = k * rise
         for z0, z1, lane in ((zc + 3.5, zc + 3.5 + north, (zc + 3.5, zc + 7.0)), (zc - 3.5 - south, zc - 3.5, (zc - 7.0, zc - 3.5))):
             holes: list[tuple[float, float, float, float]] = []
-            taken = [(x0, x0 + chamber + 2.0, *lane), (x1 - run - 3.0, x1, *lane), (x0, x1, *lane)]
+            taken = [(x0, x1, *lane)]  # the towpath kept clear
             if k:  # the lock cottage beside the chamber
                 cz = (z1 - 8.0, z1 - 2.0) if z0 > zc else (z0 + 2.0, z0 + 8.0)
                 cx = x0 + rng.uniform(6.0, chamber - 10.0)
