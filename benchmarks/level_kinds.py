@@ -1,4 +1,4 @@
-"""Level kinds of the fifth to fifteenth held-out rounds (issue 9): generators no preset setting was made on.
+"""Level kinds of the fifth to sixteenth held-out rounds (issue 9): generators no preset setting was made on.
 
 Fifth round: six kinds, each about 1,000 navmesh polygons with the presets' agent (radius 0.5 m, height 2 m, climb 0.4 m):
 ``subway`` (platforms, track pits 1.2 m lower, stairs up to two concourses), ``archipelago`` (islands joined by
@@ -110,6 +110,19 @@ ground: parallel stepped links between two storeys), ``estate`` (slab blocks wit
 bridges and pends) and ``dam`` (a crest between two hilltops over a valley, two switchback stairs up vertical faces).
 A flat top under a ridged deck is floor inside it (a first draft's viaduct piers: 11-12 areas of 15 m² at 8.2 m on
 each seed), so the piers are ridged up into the deck.
+
+Sixteenth round: six more kinds, 580-864 navmesh polygons with that agent (seeds 0-2): ``garden`` (a formal garden: a
+terrace up three flights, a parterre of ridged beds round a fountain, a canal crossed by two bridges, a hedge maze with
+one way between any two cells, a grotto under a lid, a bosquet), ``lighthouse`` (a causeway 190-265 m long over the sea,
+the only way to an island of tide pools round a plinth with keeper's cottages and a tower of five switchback storeys to
+a gallery), ``canal_locks`` (a flight of 7-9 locks: two banks stepping up 2 m a lock by flights on the towpaths, joined
+only by the lock gates' footbridges and one road bridge), ``water_park`` (pools and a lazy river round an island in a
+deck, crossed by 3-4 bridges, turnstile lanes, slide towers whose tops are dead ends, cubicles), ``paddies`` (rice
+terraces whose only floor is a lattice of bunds 1.8 m wide, climbed by flights from bund to bund and a main stair)
+and ``cistern`` (a forest of columns in water under a lid, walkways along a random tree of the aisles' crossings
+between two stair wells down from streets). A closed solid's top inside another is floor again (a first draft's
+garden terrace under its house, 317 m²; the paddies' shrine yard inside the shrine, 25 m²): the house and the shrine
+now rise from under the floor round them, which stops at them.
 
 Run: ``.venv/bin/python benchmarks/level_kinds.py OUT_DIR [--kinds subway forest] [--seeds 0 1 2]`` writes
 ``OUT_DIR/<kind>_s<seed>.obj``, the files ``benchmarks/analysis_quality.py --levels`` takes (which also takes the
@@ -5107,18 +5120,22 @@ def beach(seed: int) -> trimesh.Trimesh:
     rise = rng.uniform(1.6, 2.2)
     phases = rng.uniform(0, 2 * math.pi, size=3)
 
-    def height(x: np.ndarray, z: np.ndarray) -> np.ndarray:
-        """The sand's height (m) at plan points x, z: the slope, ripples and dunes near the wall."""
-        dune = np.clip(np.minimum((z - 45.0) / 8.0, (wall_z - 8.0 - z) / 4.0), 0.0, 1.0) * (0.6 + 0.5 * np.sin(2 * math.pi * x / 23.0 + phases[0])
-                                                        * np.sin(2 * math.pi * z / 11.0 + phases[1]))
-        return rise * z / wall_z + 0.12 * np.sin(2 * math.pi * x / 7.0 + phases[2]) * np.clip(z / 10.0, 0.0, 1.0) + dune
-
-    # groynes, bays and their flights
     groynes = [0.0]
     while groynes[-1] + 30.0 < size_x:
         groynes.append(min(groynes[-1] + rng.uniform(30.0, 48.0), size_x))
     if size_x - groynes[-1] < 30.0:
         groynes[-1] = size_x
+
+    def height(x: np.ndarray, z: np.ndarray) -> np.ndarray:
+        """The sand's height (m) at plan points x, z: the slope, ripples and dunes near the wall. The dunes die out
+        over the last 4 m before a groyne (none within 1 m), where the sand stays 0.68 m and more under the
+        groyne's top (a dune reaching within the climb of it joined two bays over it)."""
+        to_groyne = np.min(np.abs(np.asarray(x)[..., None] - np.array(groynes[1:-1])), axis=-1)
+        dune = (np.clip(np.minimum((z - 45.0) / 8.0, (wall_z - 8.0 - z) / 4.0), 0.0, 1.0) * np.clip((to_groyne - 1.0) / 3.0, 0.0, 1.0)
+                * (0.6 + 0.5 * np.sin(2 * math.pi * x / 23.0 + phases[0]) * np.sin(2 * math.pi * z / 11.0 + phases[1])))
+        return rise * z / wall_z + 0.12 * np.sin(2 * math.pi * x / 7.0 + phases[2]) * np.clip(z / 10.0, 0.0, 1.0) + dune
+
+    # bays and their flights
     taken: list[tuple[float, float, float, float]] = []
     run = math.ceil(prom_y / 0.18) * 0.28
     pier_bay = int(rng.integers(1, len(groynes) - 2))
@@ -5972,6 +5989,641 @@ def dam(seed: int) -> trimesh.Trimesh:
     return s.mesh()
 
 
+def garden(seed: int) -> trimesh.Trimesh:
+    """A formal garden inside a wall 3 m high, 150-170 x 110-120 m, with one gate 4 m wide in the south wall (nothing
+    beyond it). Along the north a terrace 1.5 m up (balustraded, the house behind it ridged, no way in) reached by
+    three flights down its front along -z (6 m wide on the axis, 2.4 m at its ends); in the middle a parterre of box
+    beds (ridged, 0.3 m eaves: nothing on them is floor) in a grid of gravel paths 3 m wide round a fountain basin
+    (ridged) on the main axis (6 m wide); a canal 6 m wide along x (no floor) from wall to wall across the south,
+    crossed only by a bridge on the axis and one more; in the west a hedge maze of 11-12 x 10-11 cells 2.8 m square
+    (hedges 2.2 m high and 0.6 m thick, a perfect maze: one way between any two cells, cut by a depth-first walk;
+    one entrance on its east side, one exit on its south side), a clearing of 2 x 2 cells at its centre; in the
+    south-west a grotto (a chamber 14 x 10 m under a ridged lid at 3.6 m, two openings 2 m wide, rocks and a basin
+    inside); in the east
+    a bosquet of trees in a grid with an orangery (ridged) and a belvedere up a flight (a platform 2.5 m up, railed).
+    Statues (octagonal plinths) and benches along the paths.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    size_x, size_z = rng.uniform(150.0, 170.0), rng.uniform(110.0, 120.0)
+    axis = size_x / 2 + rng.uniform(-5.0, 5.0)
+    holes: list[tuple[float, float, float, float]] = []
+    taken: list[tuple[float, float, float, float]] = []
+    # the wall round, its gate on the axis
+    s.wall((0.0, 0.0), (size_x, 0.0), -0.5, 3.0, [(axis - 2.0, 4.0)], thickness=0.5)
+    s.wall((0.0, size_z), (size_x, size_z), -0.5, 3.0, thickness=0.5)
+    for x in (0.0, size_x):
+        s.wall((x, 0.0), (x, size_z), -0.5, 3.0, thickness=0.5)
+    # the terrace and the house
+    tz0, tz1 = size_z - 22.0, size_z - 8.0
+    run = math.ceil(1.5 / 0.18) * 0.28
+    s.box(0.25, size_x - 0.25, -0.5, 1.5, tz0, tz1)
+    for x0, x1 in ((0.25, axis - 25.0), (axis + 25.0, size_x - 0.25)):  # the terrace stops under the house
+        s.box(x0, x1, -0.5, 1.5, tz1, size_z - 0.25)
+    holes.append((0.0, size_x, tz0, size_z))
+    _ridged(s, axis - 25.0, axis + 25.0, tz1, size_z - 0.25, -0.5, 9.0)
+    flights = [(axis, 6.0), (12.0, 2.4), (size_x - 12.0, 2.4)]
+    for x, w in flights:
+        s.stairs(np.array([x, tz0 - run]), np.array([0.0, 1.0]), w, 0.0, 1.5, 1.5 / math.ceil(1.5 / 0.18), 0.28)
+        taken.append((x - w / 2 - 1.5, x + w / 2 + 1.5, tz0 - run - 3.0, tz0))
+    s.wall((0.25, tz0 + 0.1), (size_x - 0.25, tz0 + 0.1), 1.5, 2.5,
+           sorted((x - w / 2 - 0.25, w) for x, w in flights), thickness=0.2)
+    for x in np.arange(6.0, size_x - 6.0, rng.uniform(7.0, 10.0)):  # urns on the terrace
+        if all(abs(x - fx) > 5.0 for fx, _ in flights) and not axis - 26.0 < x < axis + 26.0:
+            _trunk(s, np.array([x, tz1 - 1.0]), 0.4, 1.5, 2.6)
+    # the canal across the south and its bridges
+    cz0 = rng.uniform(14.0, 18.0)
+    canal = (0.0, size_x, cz0, cz0 + 6.0)  # wall to wall: the bridges are the only ways over
+    second = rng.uniform(size_x * 0.62, size_x - 20.0)
+    for bx, w in ((axis, 6.0), (second, 3.0)):
+        holes.append((canal[0], bx - w / 2, canal[2], canal[3]))
+        canal = (bx + w / 2, canal[1], canal[2], canal[3])
+        for x in (bx - w / 2, bx + w / 2):
+            s.box(x - 0.1, x + 0.1, 0.0, 1.1, cz0 - 0.5, cz0 + 6.5)
+    holes.append(canal)
+    taken.append((0.0, size_x, cz0 - 1.5, cz0 + 7.5))
+    # the parterre: beds in a grid of paths round the fountain on the axis
+    px0, px1, pz0, pz1 = axis - rng.uniform(28.0, 34.0), axis + rng.uniform(28.0, 34.0), cz0 + 12.0, tz0 - run - 6.0
+    cols, rows = int(rng.integers(3, 5)), int(rng.integers(4, 6))
+    xs, zs = np.linspace(px0, px1, 2 * cols + 2), np.linspace(pz0, pz1, rows + 1)
+    for i in range(len(xs) - 1):
+        for a, b in pairwise(zs):
+            x0, x1 = xs[i] + 1.5, xs[i + 1] - 1.5
+            if x1 - x0 < 2.0 or (x0 < axis + 3.0 and x1 > axis - 3.0):
+                continue
+            if rng.random() < 0.2:  # a bed cut in two by a path along x
+                m = (a + b) / 2
+                holes += [_ridged(s, x0, x1, a + 1.5, m - 1.5, -0.5, 0.3), _ridged(s, x0, x1, m + 1.5, b - 1.5, -0.5, 0.3)]
+            else:
+                holes.append(_ridged(s, x0, x1, a + 1.5, b - 1.5, -0.5, 0.3))
+    fz = (pz0 + pz1) / 2
+    holes.append(_ridged(s, axis - 4.0, axis + 4.0, fz - 4.0, fz + 4.0, -0.5, 0.6))
+    taken.append((px0 - 2.0, px1 + 2.0, pz0 - 2.0, pz1 + 2.0))
+    for z in zs:  # statues where the cross paths meet the axis
+        for x in (axis - 4.5, axis + 4.5):
+            _trunk(s, np.array([x, z]), 0.5, -0.5, 2.5)
+    # the hedge maze in the west
+    n, m, cell = int(rng.integers(11, 13)), int(rng.integers(10, 12)), 2.8
+    mx0 = rng.uniform(6.0, max(6.5, px0 - 6.0 - n * cell))
+    mz0 = cz0 + 22.0 + rng.uniform(0.0, max(0.5, pz1 - cz0 - 22.0 - m * cell))  # the grotto goes south of it
+    centre = {(n // 2 - 1 + i, m // 2 - 1 + j) for i in (0, 1) for j in (0, 1)}
+    seen, stack, open_walls = {(0, 0)} | centre, [(0, 0)], set()
+    for c in centre:
+        for d in centre:
+            if abs(c[0] - d[0]) + abs(c[1] - d[1]) == 1:
+                open_walls.add(frozenset((c, d)))
+    door_to_centre = False
+    while stack:
+        i, j = stack[-1]
+        nexts = [(i + di, j + dj) for di, dj in ((1, 0), (-1, 0), (0, 1), (0, -1))
+                 if 0 <= i + di < n and 0 <= j + dj < m
+                 and ((i + di, j + dj) not in seen or ((i + di, j + dj) in centre and not door_to_centre))]
+        if not nexts:
+            stack.pop()
+            continue
+        c = nexts[int(rng.integers(len(nexts)))]
+        open_walls.add(frozenset(((i, j), c)))
+        if c in centre:
+            door_to_centre = True
+            continue
+        seen.add(c)
+        stack.append(c)
+    entrance, exit_ = int(rng.integers(m)), int(rng.integers(n))
+    for i in range(n + 1):  # walls along z at x = mx0 + i * cell
+        for j in range(m):
+            inner = 0 < i < n and frozenset(((i - 1, j), (i, j))) in open_walls
+            if not inner and not (i == n and j == entrance):
+                s.box(mx0 + i * cell - 0.3, mx0 + i * cell + 0.3, -0.5, 2.2, mz0 + j * cell - 0.3, mz0 + (j + 1) * cell + 0.3)
+    for j in range(m + 1):  # walls along x
+        for i in range(n):
+            inner = 0 < j < m and frozenset(((i, j - 1), (i, j))) in open_walls
+            if not inner and not (j == 0 and i == exit_):
+                s.box(mx0 + i * cell - 0.3, mx0 + (i + 1) * cell + 0.3, -0.5, 2.2, mz0 + j * cell - 0.3, mz0 + j * cell + 0.3)
+    taken.append((mx0 - 2.0, mx0 + n * cell + 2.0, mz0 - 2.0, mz0 + m * cell + 2.0))
+    # the grotto in the south-west, between the canal and the maze
+    gx0, gz0 = rng.uniform(8.0, 14.0), cz0 + 9.5
+    gx1, gz1 = gx0 + 14.0, gz0 + 10.0
+    s.wall((gx0, gz0), (gx1, gz0), -0.5, 2.6, thickness=0.8)
+    s.wall((gx0, gz1), (gx1, gz1), -0.5, 2.6, [(rng.uniform(2.0, 10.0), 2.0)], thickness=0.8)
+    s.wall((gx0, gz0), (gx0, gz1), -0.5, 2.6, thickness=0.8)
+    s.wall((gx1, gz0), (gx1, gz1), -0.5, 2.6, [(rng.uniform(2.0, 6.0), 2.0)], thickness=0.8)
+    _lid(s, gx0 - 0.4, gx1 + 0.4, gz0 - 0.4, gz1 + 0.4, 3.6)
+    holes.append(_ridged(s, gx0 + 5.0, gx0 + 8.0, gz0 + 0.4, gz0 + 2.5, -0.5, 0.5))  # the basin
+    for _ in range(4):
+        s.rock(rng, np.array([rng.uniform(gx0 + 2.0, gx1 - 2.0), rng.uniform(gz0 + 4.0, gz1 - 2.5)]), 0.4, -0.5, 1.8)
+    taken.append((gx0 - 2.0, gx1 + 2.0, gz0 - 2.0, gz1 + 2.0))
+    # the bosquet in the east: trees in a grid, the orangery and the belvedere
+    bx0 = px1 + 6.0
+    ox = rng.uniform(bx0 + 2.0, size_x - 22.0)
+    holes.append(_ridged(s, ox, ox + 18.0, tz0 - run - 14.0, tz0 - run - 6.0, -0.5, 4.0))
+    taken.append((ox - 2.0, ox + 20.0, tz0 - run - 16.0, tz0))
+    vx, vz = rng.uniform(bx0 + 2.0, size_x - 12.0), rng.uniform(cz0 + 12.0, cz0 + 20.0)
+    s.box(vx, vx + 6.0, -0.5, 2.5, vz, vz + 6.0)
+    holes.append((vx, vx + 6.0, vz, vz + 6.0))
+    vrun = math.ceil(2.5 / 0.18) * 0.28
+    s.stairs(np.array([vx - vrun, vz + 1.5]), np.array([1.0, 0.0]), 2.0, 0.0, 2.5, 2.5 / math.ceil(2.5 / 0.18), 0.28)
+    _rail_ring(s, vx, vx + 6.0, vz, vz + 6.0, 2.5, {"west": [(0.4, 2.2)]})
+    taken.append((vx - vrun - 2.0, vx + 8.0, vz - 2.0, vz + 8.0))
+    for x in np.arange(bx0 + 2.0, size_x - 3.0, 5.0):
+        for z in np.arange(cz0 + 10.0, tz0 - run - 3.0, 5.0):
+            p = np.array([x, z]) + rng.uniform(-0.8, 0.8, 2)
+            if rng.random() < 0.75 and _clear(p[0] - 1.0, p[0] + 1.0, p[1] - 1.0, p[1] + 1.0, taken):
+                _trunk(s, p, rng.uniform(0.25, 0.4), -0.5, 6.0)
+    for _ in range(int(rng.integers(25, 40))):  # benches along the paths
+        p = np.array([rng.uniform(3.0, size_x - 5.0), rng.uniform(3.0, tz0 - 4.0)])
+        if _clear(p[0] - 1.0, p[0] + 2.8, p[1] - 1.0, p[1] + 1.6, taken):
+            s.box(p[0], p[0] + 1.8, -0.5, 0.5, p[1], p[1] + 0.6)
+            taken.append((p[0] - 1.0, p[0] + 2.8, p[1] - 1.0, p[1] + 1.6))
+    s.ground(0.0, size_x, 0.0, size_z, 0.0, holes)
+    return s.mesh()
+
+
+def _stair_tower(s: _Solids, x0: float, z0: float, y0: float, storeys: int, doors: tuple[int, ...] = (0,),
+                 storey: float = 4.0) -> float:
+    """A walled switchback well 4 m wide (:func:`_switchback`) from plan point (x0, z0) along +z, up ``storeys``
+    storeys ``storey`` m apart from ``y0``: a floor over the landing of every storey above the first (the well beyond
+    it open), walls 0.4 m thick round the well, a door 1.6 m wide at the landing's end on each storey of ``doors`` (0
+    the foot; ``storeys``, the top, is walled only when it has a door), and on the top a rail across the lane no
+    flight climbs. Returns the top's height (m)."""
+    well = _well_length(storey)
+    for k in range(storeys + 1):
+        y = y0 + k * storey
+        if k:
+            s.slab(x0, x0 + 4.0, z0, z0 + well, y, [(x0, x0 + 4.0, z0 + 2.0, z0 + well)])
+        if k < storeys:
+            _switchback(s, x0, z0, y, storey)
+        if k < storeys or k in doors:
+            s.wall((x0, z0 - 0.2), (x0 + 4.0, z0 - 0.2), y, y + storey, [(1.2, 1.6)] if k in doors else [], thickness=0.4)
+            s.wall((x0, z0 + well + 0.2), (x0 + 4.0, z0 + well + 0.2), y, y + storey, thickness=0.4)
+            for x in (x0 - 0.2, x0 + 4.2):
+                s.wall((x, z0 - 0.4), (x, z0 + well + 0.4), y, y + storey, thickness=0.4)
+    top = y0 + storeys * storey
+    s.box(x0, x0 + 2.0, top, top + 1.0, z0 + 1.9, z0 + 2.0)
+    return top
+
+
+def lighthouse(seed: int) -> trimesh.Trimesh:
+    """A lighthouse on a tidal island at the end of a causeway, the sea (no floor) all round. The mainland, 70 x 110
+    m at y = 0: a village street of houses (ridged), a car park of cars (ridged), trees and benches. The causeway, 5 m
+    wide at y = 0 and the only way to the island: 120-160 m out along +x, a dog-leg of 20-35 m along z, 50-70 m on
+    along x, with two passing bays (3 m wider over 10 m) and a refuge (a platform 4 m square 3 m up on legs, railed,
+    up a flight square to the causeway). The island: a rock shelf at y = 0, 72-80 x 60-68 m, pocked by tide
+    pools (holes, no floor) and rocks, round a plinth 3 m high with vertical faces (36 x 30 m), reached by one flight
+    3 m wide from the causeway's side and one 1.6 m wide on the far side, toward a jetty 30-40 m long. On the plinth,
+    inside a wall 1.2 m high open at the flights' heads: two keeper's cottages (a door 1.6 m wide and a room through a
+    second door; gabled), a fog-horn house and an oil store (ridged), and the tower: a switchback well 4 m wide
+    (:func:`_switchback`) up five storeys 4 m apart, walled, entered by a door at its foot; the top storey opens by a
+    door onto a gallery 2.2 m wide round the tower, railed, under the lantern's ridged cap.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    # the mainland: a street of houses, a car park, trees
+    land_x, land_z = 70.0, 110.0
+    zc = rng.uniform(45.0, 65.0)
+    holes: list[tuple[float, float, float, float]] = []
+    taken = [(land_x - 12.0, land_x, zc - 5.0, zc + 10.0)]
+    for z0, z1 in ((zc + 12.0, zc + 22.0), (zc - 22.0, zc - 12.0), (zc + 32.0, zc + 40.0), (zc - 40.0, zc - 32.0)):
+        # houses either side of the street to the causeway, a row behind each
+        x = rng.uniform(2.0, 6.0)
+        while x < land_x - 14.0:
+            w = rng.uniform(6.0, 10.0)
+            holes.append(_ridged(s, x, x + w, z0, z1, -0.5, rng.uniform(4.0, 6.0)))
+            taken.append((x - 1.0, x + w + 1.0, z0 - 1.0, z1 + 1.0))
+            x += w + rng.uniform(1.5, 5.0)
+    cz = rng.uniform(land_z - 30.0, land_z - 24.0)
+    for i in range(int(rng.integers(6, 11))):  # cars in the car park
+        x = 6.0 + i * 3.0
+        if rng.random() < 0.75:
+            holes.append(_ridged(s, x, x + 1.9, cz, cz + 4.4, -0.5, 1.0))
+        taken.append((x - 0.5, x + 2.4, cz - 1.0, cz + 5.4))
+    _trees(s, rng, int(rng.integers(90, 120)), land_x - 4.0, land_z, taken, (0.25, 0.45), 6.0)
+    for _ in range(20):
+        p = np.array([rng.uniform(3.0, land_x - 6.0), rng.uniform(3.0, land_z - 4.0)])
+        if _clear(p[0] - 1.0, p[0] + 2.8, p[1] - 1.0, p[1] + 1.6, taken):
+            s.box(p[0], p[0] + 1.8, -0.5, 0.5, p[1], p[1] + 0.6)
+            taken.append((p[0] - 1.0, p[0] + 2.8, p[1] - 1.0, p[1] + 1.6))
+    s.ground(0.0, land_x, 0.0, land_z, 0.0, holes)
+    # the causeway: out along x, a dog-leg along z, on along x
+    l1, dz, l2 = rng.uniform(120.0, 160.0), rng.choice([-1.0, 1.0]) * rng.uniform(20.0, 35.0), rng.uniform(50.0, 70.0)
+    x1, z1, x2 = land_x + l1, zc + dz, land_x + l1 + l2
+    s.box(land_x, x1 + 2.5, -1.0, 0.0, zc - 2.5, zc + 2.5)
+    s.box(x1 - 2.5, x1 + 2.5, -1.0, 0.0, min(zc, z1) - 2.5, max(zc, z1) + 2.5)
+    s.box(x1 - 2.5, x2, -1.0, 0.0, z1 - 2.5, z1 + 2.5)
+    for f in rng.uniform(0.2, 0.8, 2):  # passing bays on the first leg
+        bx = land_x + f * (l1 - 20.0) + 5.0
+        s.box(bx, bx + 10.0, -1.0, 0.0, zc + 2.5, zc + 5.5)
+    rx = x1 + rng.uniform(0.3, 0.7) * l2  # the refuge, on the last leg
+    side = 1.0 if rng.random() < 0.5 else -1.0
+    steps = 17
+    run = steps * 0.28
+    rz = z1 + side * 2.5
+    s.stairs(np.array([rx, rz]), np.array([0.0, side]), 1.8, 0.0, 3.0, 3.0 / steps, 0.28, depth=0.45)
+    pz0, pz1 = sorted((rz + side * run, rz + side * (run + 4.0)))
+    s.box(rx - 2.0, rx + 2.0, 2.6, 3.0, pz0, pz1)
+    for px in (rx - 1.9, rx + 1.7):
+        for pz in (pz0 + 0.1, pz1 - 0.3):
+            s.box(px, px + 0.2, -1.0, 2.6, pz, pz + 0.2)
+    _rail_ring(s, rx - 2.0, rx + 2.0, pz0, pz1, 3.0, {"south" if side > 0 else "north": [(1.1, 1.8)]})
+    # the island: a shelf with tide pools round the plinth
+    ix0, iw, idp = x2, rng.uniform(72.0, 80.0), rng.uniform(60.0, 68.0)
+    iz0 = z1 - idp / 2 + rng.uniform(-6.0, 6.0)
+    plinth = (ix0 + 16.0, ix0 + 52.0, iz0 + idp / 2 - 15.0, iz0 + idp / 2 + 15.0)
+    shelf: list[tuple[float, float, float, float]] = [plinth]
+    prun = math.ceil(3.0 / 0.18) * 0.28
+    pr = 3.0 / math.ceil(3.0 / 0.18)
+    front_z = (plinth[2] + plinth[3]) / 2 + rng.uniform(-8.0, 8.0)
+    s.stairs(np.array([plinth[0] - prun, front_z]), np.array([1.0, 0.0]), 3.0, 0.0, 3.0, pr, 0.28)
+    back_z = (plinth[2] + plinth[3]) / 2 + rng.uniform(-10.0, 10.0)
+    s.stairs(np.array([plinth[1] + prun, back_z]), np.array([-1.0, 0.0]), 1.6, 0.0, 3.0, pr, 0.28)
+    clear = [(plinth[0] - prun - 3.0, plinth[0], front_z - 3.0, front_z + 3.0),
+             (plinth[1], plinth[1] + prun + 3.0, back_z - 2.0, back_z + 2.0), (ix0, ix0 + 6.0, z1 - 4.0, z1 + 4.0),
+             (plinth[0] - 1.0, plinth[1] + 1.0, plinth[2] - 1.0, plinth[3] + 1.0)]
+    jz = back_z + rng.uniform(-6.0, 6.0)
+    s.box(ix0 + iw - 0.5, ix0 + iw + rng.uniform(30.0, 40.0), -1.0, 0.0, jz - 1.5, jz + 1.5)  # the jetty
+    clear.append((ix0 + iw - 8.0, ix0 + iw, jz - 3.0, jz + 3.0))
+    for _ in range(int(rng.integers(30, 40))):
+        w, d = rng.uniform(2.0, 7.0), rng.uniform(2.0, 6.0)
+        x, z = rng.uniform(ix0 + 2.0, ix0 + iw - w - 2.0), rng.uniform(iz0 + 2.0, iz0 + idp - d - 2.0)
+        if _clear(x - 2.5, x + w + 2.5, z - 2.5, z + d + 2.5, clear + shelf):
+            shelf.append((x, x + w, z, z + d))
+    for _ in range(int(rng.integers(40, 55))):
+        p = np.array([rng.uniform(ix0 + 2.0, ix0 + iw - 2.0), rng.uniform(iz0 + 2.0, iz0 + idp - 2.0)])
+        if _clear(p[0] - 1.5, p[0] + 1.5, p[1] - 1.5, p[1] + 1.5, clear + shelf):
+            s.rock(rng, p, 0.5, -0.5, rng.uniform(0.8, 1.8))
+            clear.append((p[0] - 1.5, p[0] + 1.5, p[1] - 1.5, p[1] + 1.5))
+    s.ground(ix0, ix0 + iw, iz0, iz0 + idp, 0.0, shelf)
+    # the plinth and its compound
+    y = 3.0
+    tower_x, tower_z = plinth[0] + rng.uniform(14.0, 20.0), plinth[2] + rng.uniform(8.0, 12.0)
+    well = _well_length(4.0)
+    tw = (tower_x, tower_x + 4.0, tower_z, tower_z + well)
+    roofs = [(plinth[0] + 2.0, plinth[0] + 12.0, plinth[3] - 9.0, plinth[3] - 2.0),
+             (plinth[0] + 2.0, plinth[0] + 12.0, plinth[2] + 2.0, plinth[2] + 9.0)]
+    ridged = [_ridged(s, plinth[1] - 10.0, plinth[1] - 3.0, plinth[3] - 8.0, plinth[3] - 3.0, y - 0.5, y + 3.5),
+              _ridged(s, plinth[1] - 8.0, plinth[1] - 3.0, plinth[2] + 3.0, plinth[2] + 7.0, y - 0.5, y + 2.8)]
+    s.ground(*plinth, y, ridged, thickness=y + 1.0)
+    s.wall((plinth[0], plinth[2]), (plinth[0], plinth[3]), y, y + 1.2, [(front_z - plinth[2] - 1.5, 3.0)])
+    s.wall((plinth[1], plinth[2]), (plinth[1], plinth[3]), y, y + 1.2, [(back_z - plinth[2] - 0.8, 1.6)])
+    for z in (plinth[2], plinth[3]):
+        s.wall((plinth[0], z), (plinth[1], z), y, y + 1.2)
+    for k, (x0, x1, z0, z1) in enumerate(roofs):  # the cottages, door toward the yard, a back room
+        door_side = z0 if k == 0 else z1
+        s.wall((x0, door_side), (x1, door_side), y, y + 3.0, [(rng.uniform(1.0, 3.0), 1.6)])
+        s.wall((x0, z0 + z1 - door_side), (x1, z0 + z1 - door_side), y, y + 3.0)
+        for x in (x0, x1):
+            s.wall((x, z0), (x, z1), y, y + 3.0)
+        s.wall((x0 + 6.0, z0), (x0 + 6.0, z1), y, y + 3.0, [(rng.uniform(0.5, 4.5), 1.6)])
+        s.box(x0 + 2.0, x0 + 3.6, y, y + 0.75, (z0 + z1) / 2 - 0.5, (z0 + z1) / 2 + 0.5)
+        _gable(s, x0 - 0.3, x1 + 0.3, z0 - 0.3, z1 + 0.3, y + 3.0)
+    # the tower: five storeys of switchback, its door at the foot, the lantern's door onto the gallery at the top
+    top = _stair_tower(s, tower_x, tower_z, y, 5, doors=(0, 5))
+    ceiling = top + 4.0
+    g = (tw[0] - 2.6, tw[1] + 2.6, tw[2] - 2.6, tw[3] + 2.6)
+    s.slab(*g, top, [(tw[0] - 0.4, tw[1] + 0.4, tw[2] - 0.4, tw[3] + 0.4)])
+    _rail_ring(s, *g, top, {})
+    _ridged(s, tw[0] - 0.4, tw[1] + 0.4, tw[2] - 0.4, tw[3] + 0.4, ceiling, ceiling + 1.0)
+    return s.mesh()
+
+
+def canal_locks(seed: int) -> trimesh.Trimesh:
+    """A flight of 7-9 locks lifting a canal 2 m each along +x. The canal is 7 m wide (water: no floor); on each side
+    a bank (a towpath 3.5 m wide along the water, then 8-14 m of land with trees, benches, lock cottages, ridged)
+    stands at its pound's height and steps up 2 m at each lock's lower gate, where a flight 2.4 m wide along x
+    (12 steps of 0.167 / 0.28 m) climbs the towpath only; beside a lock chamber (26 m) the banks are at the upper
+    pound's height. The only ways across the water: a footbridge 2 m wide (railed) on each lock gate, two a lock,
+    and one road bridge 6 m wide over a pound. Narrowboats (ridged) moored in the pounds, bollards on the towpaths.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    locks, rise, chamber = int(rng.integers(7, 10)), 2.0, 26.0
+    steps = math.ceil(rise / 0.18)
+    run = steps * 0.28
+    zc, north, south = 0.0, rng.uniform(11.5, 17.5), rng.uniform(11.5, 15.5)
+    gates = [rng.uniform(22.0, 30.0)]
+    for _ in range(locks - 1):
+        gates.append(gates[-1] + chamber + rng.uniform(18.0, 32.0))
+    end = gates[-1] + chamber + rng.uniform(22.0, 30.0)
+    bounds = [0.0, *gates, end]
+    road_pound = int(rng.integers(1, locks))
+    road_x = rng.uniform(bounds[road_pound] + chamber + 4.0, bounds[road_pound + 1] - run - 10.0)
+    for k, (x0, x1) in enumerate(pairwise(bounds)):  # the banks at pound k's height
+        y = k * rise
+        for z0, z1, lane in ((zc + 3.5, zc + 3.5 + north, (zc + 3.5, zc + 7.0)), (zc - 3.5 - south, zc - 3.5, (zc - 7.0, zc - 3.5))):
+            holes: list[tuple[float, float, float, float]] = []
+            taken = [(x0, x1, *lane)]  # the towpath kept clear
+            if k:  # the lock cottage beside the chamber
+                cz = (z1 - 8.0, z1 - 2.0) if z0 > zc else (z0 + 2.0, z0 + 8.0)
+                cx = x0 + rng.uniform(6.0, chamber - 10.0)
+                holes.append(_ridged(s, cx, cx + 8.0, *cz, y - 0.5, y + 3.0))
+                taken.append((cx - 1.0, cx + 9.0, cz[0] - 1.0, cz[1] + 1.0))
+            if k == road_pound:
+                taken.append((road_x - 4.0, road_x + 4.0, z0, z1))
+            for _ in range(int((x1 - x0) * (z1 - z0) / 90.0)):
+                p = np.array([rng.uniform(x0 + 1.5, x1 - 1.5), rng.uniform(z0 + 1.5, z1 - 1.5)])
+                if _clear(p[0] - 1.0, p[0] + 1.0, p[1] - 1.0, p[1] + 1.0, taken):
+                    if rng.random() < 0.7:
+                        _trunk(s, p, rng.uniform(0.25, 0.45), y - 0.5, y + 6.0)
+                    else:
+                        s.box(p[0], p[0] + 1.8, y - 0.5, y + 0.5, p[1], p[1] + 0.6)
+                    taken.append((p[0] - 1.5, p[0] + 1.5, p[1] - 1.5, p[1] + 1.5))
+            s.ground(x0, x1, z0, z1, y, holes, thickness=y + 1.0)
+            edge = zc + 3.7 if z0 > zc else zc - 3.7
+            for x in np.arange(x0 + chamber + 4.0 if k else x0 + 4.0, x1 - run - 4.0, rng.uniform(9.0, 14.0)):
+                _trunk(s, np.array([x, edge]), 0.15, y - 0.5, y + 0.6)  # bollards
+            if k < locks:  # the flight up the towpath at the next lower gate
+                s.stairs(np.array([x1 - run, (lane[0] + lane[1]) / 2]), np.array([1.0, 0.0]), 2.4, y, rise, rise / steps, 0.28)
+        if k < locks:  # the gates' footbridges at the upper pound's height
+            for gx in (x1, x1 + chamber - 2.0):
+                s.box(gx, gx + 2.0, y + rise - 0.4, y + rise, zc - 3.5, zc + 3.5)
+                for x in (gx, gx + 2.0):
+                    s.box(x - 0.05, x + 0.05, y + rise, y + rise + 1.1, zc - 3.5, zc + 3.5)
+        if k == road_pound:
+            s.box(road_x - 3.0, road_x + 3.0, y - 0.6, y, zc - 3.5, zc + 3.5)
+            for x in (road_x - 3.0, road_x + 3.0):
+                s.box(x - 0.1, x + 0.1, y, y + 1.1, zc - 3.5, zc + 3.5)
+        if rng.random() < 0.7 and k:  # a narrowboat moored in the pound
+            bx = rng.uniform(x0 + chamber + 2.0, max(x0 + chamber + 2.5, x1 - 22.0))
+            if not (k == road_pound and bx - 4.0 < road_x < bx + 22.0):
+                _ridged(s, bx, bx + rng.uniform(14.0, 20.0), zc + 1.2, zc + 3.3, y - 1.5, y + 0.4)
+    return s.mesh()
+
+
+def water_park(seed: int) -> trimesh.Trimesh:
+    """An outdoor water park 150-170 x 110-120 m inside a fence 2.5 m high, entered through a pay hall in the south
+    fence (ridged roof; 4-6 turnstile lanes 1.6 m wide between rails 1.1 m high). The water has no floor: a wave pool
+    (34-40 x 20-24 m), a lap pool (25 x 12 m), a children's pool and splash pools at the slides' feet lie in a deck at
+    y = 0; a lazy river 5 m wide rings an island 50-60 x 34-40 m in the middle (its café ridged, loungers, umbrellas),
+    crossed only by 3-4 bridges 3 m wide (railed). Two slide towers, each a walled switchback well 4 m wide
+    (:func:`_switchback`) up three storeys 4 m apart to a railed top platform (4 x 6 m): the slides' chutes, 0.9 m
+    wide, are too narrow to walk (the agent is 1 m across), so each tower's top is a dead end. Changing rooms (a block of
+    cubicles off a corridor 2.4 m wide, two doors), loungers 0.5 m high in rows, umbrella poles.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    size_x, size_z = rng.uniform(150.0, 170.0), rng.uniform(110.0, 120.0)
+    holes: list[tuple[float, float, float, float]] = []
+    taken: list[tuple[float, float, float, float]] = []
+    gate_x = size_x / 2 + rng.uniform(-20.0, 20.0)
+    # the fence and the pay hall across its gate
+    s.wall((0.0, 0.0), (size_x, 0.0), -0.5, 2.5, [(gate_x - 9.0, 18.0)], thickness=0.3)
+    s.wall((0.0, size_z), (size_x, size_z), -0.5, 2.5, thickness=0.3)
+    for x in (0.0, size_x):
+        s.wall((x, 0.0), (x, size_z), -0.5, 2.5, thickness=0.3)
+    lanes = int(rng.integers(4, 7))
+    s.ground(gate_x - 12.0, gate_x + 12.0, -14.0, 0.0, 0.0, [])  # the forecourt outside
+    hall = (gate_x - 9.0, gate_x + 9.0, 0.0, 10.0)
+    for x in (hall[0], hall[1]):
+        s.wall((x, 0.0), (x, 10.0), -0.5, 3.5, thickness=0.3)
+    lane_x0 = gate_x - lanes * 1.7 / 2
+    for i in range(lanes + 1):
+        x = lane_x0 + i * 1.7
+        s.box(x - 0.05, x + 0.05, 0.0, 1.1, 4.0, 6.0)
+    s.wall((hall[0], 5.0), (lane_x0, 5.0), -0.5, 3.5, thickness=0.3)
+    s.wall((lane_x0 + lanes * 1.7, 5.0), (hall[1], 5.0), -0.5, 3.5, thickness=0.3)
+    _lid(s, hall[0] - 0.3, hall[1] + 0.3, -0.3, 10.3, 4.5)
+    taken.append((hall[0] - 2.0, hall[1] + 2.0, 0.0, 13.0))
+    # the lazy river round the island
+    iw, idp = rng.uniform(50.0, 60.0), rng.uniform(34.0, 40.0)
+    ix0, iz0 = size_x / 2 - iw / 2 + rng.uniform(-8.0, 8.0), size_z / 2 - idp / 2 + rng.uniform(0.0, 8.0)
+    r = (ix0 - 5.0, ix0 + iw + 5.0, iz0 - 5.0, iz0 + idp + 5.0)
+    sides = [("south", r[0], r[1]), ("north", r[0], r[1]), ("west", r[2], r[3]), ("east", r[2], r[3])]
+    bridged = rng.choice(4, size=int(rng.integers(3, 5)), replace=False)
+    for k, (side, a, b) in enumerate(sides):
+        cuts = [a, b]
+        if k in bridged:
+            m = rng.uniform(a + 12.0, b - 15.0)
+            cuts = [a, m, m + 3.0, b]
+        for c0, c1 in zip(cuts[0::2], cuts[1::2]):
+            if side in ("south", "north"):
+                z0 = r[2] if side == "south" else r[3] - 5.0
+                holes.append((c0, c1, z0, z0 + 5.0))
+            else:
+                x0 = r[0] if side == "west" else r[1] - 5.0
+                holes.append((x0, x0 + 5.0, max(c0, r[2] + 5.0), min(c1, r[3] - 5.0)))
+        if len(cuts) == 4:
+            for c in (cuts[1], cuts[2]):
+                if side in ("south", "north"):
+                    z0 = r[2] if side == "south" else r[3] - 5.0
+                    s.box(c - 0.05, c + 0.05, 0.0, 1.1, z0, z0 + 5.0)
+                else:
+                    x0 = r[0] if side == "west" else r[1] - 5.0
+                    s.box(x0, x0 + 5.0, 0.0, 1.1, c - 0.05, c + 0.05)
+    taken.append((r[0] - 2.0, r[1] + 2.0, r[2] - 2.0, r[3] + 2.0))
+    cafe = _ridged(s, ix0 + iw / 2 - 7.0, ix0 + iw / 2 + 7.0, iz0 + idp / 2 - 5.0, iz0 + idp / 2 + 5.0, -0.5, 3.5)
+    holes.append(cafe)
+    island_taken = [(cafe[0] - 2.0, cafe[1] + 2.0, cafe[2] - 2.0, cafe[3] + 2.0)]
+    for _ in range(int(rng.integers(50, 70))):
+        p = np.array([rng.uniform(ix0 + 1.5, ix0 + iw - 3.5), rng.uniform(iz0 + 1.5, iz0 + idp - 3.5)])
+        if _clear(p[0] - 1.2, p[0] + 1.9, p[1] - 1.2, p[1] + 3.2, island_taken):
+            s.box(p[0], p[0] + 0.7, -0.5, 0.5, p[1], p[1] + 2.0)  # a lounger: too narrow a top to stand on
+            island_taken.append((p[0] - 1.2, p[0] + 1.9, p[1] - 1.2, p[1] + 3.2))
+    # pools in the deck round the river
+    pools = [(rng.uniform(36.0, 40.0), rng.uniform(20.0, 24.0)), (25.0, 12.0), (rng.uniform(12.0, 16.0), rng.uniform(10.0, 12.0))]
+    for w, d in pools:
+        for _ in range(200):
+            x, z = rng.uniform(4.0, size_x - w - 4.0), rng.uniform(16.0, size_z - d - 4.0)
+            if _clear(x - 4.0, x + w + 4.0, z - 4.0, z + d + 4.0, taken):
+                holes.append((x, x + w, z, z + d))
+                taken.append((x - 3.0, x + w + 3.0, z - 3.0, z + d + 3.0))
+                break
+    # the slide towers, each with its splash pool and chute
+    well = _well_length(4.0)
+    for _ in range(2):
+        for _ in range(300):
+            x, z = rng.uniform(4.0, size_x - 30.0), rng.uniform(16.0, size_z - well - 6.0)
+            if _clear(x - 3.0, x + 30.0, z - 3.0, z + well + 3.0, taken):
+                break
+        top = _stair_tower(s, x, z, 0.0, 3)
+        s.slab(x - 0.4, x + 4.4, z - 0.4, z + well + 0.4, top, [(x, x + 4.0, z, z + well)])  # the top platform round it
+        _rail_ring(s, x - 0.4, x + 4.4, z - 0.4, z + well + 0.4, top, {})
+        s.ramp(np.array([x + 4.4, z + 1.0]), np.array([x + 22.0, z + 1.0]), 0.9, top, 0.8)  # the chute, 33 degrees, 0.9 m wide
+        holes.append((x + 22.0, x + 28.0, z - 2.0, z + 4.0))  # its splash pool
+        taken.append((x - 3.0, x + 30.0, z - 3.0, z + well + 3.0))
+    # the changing rooms: cubicles off a corridor
+    for _ in range(300):
+        cx, cz = rng.uniform(4.0, size_x - 34.0), rng.uniform(14.0, size_z - 16.0)
+        if _clear(cx - 2.0, cx + 32.0, cz - 2.0, cz + 12.0, taken):
+            break
+    s.wall((cx, cz), (cx + 30.0, cz), -0.5, 2.6, thickness=0.2)
+    s.wall((cx, cz + 10.0), (cx + 30.0, cz + 10.0), -0.5, 2.6, thickness=0.2)
+    s.wall((cx, cz), (cx, cz + 10.0), -0.5, 2.6, [(3.8, 2.4)], thickness=0.2)
+    s.wall((cx + 30.0, cz), (cx + 30.0, cz + 10.0), -0.5, 2.6, [(3.8, 2.4)], thickness=0.2)
+    for zw in (cz + 3.8, cz + 6.2):
+        s.wall((cx, zw), (cx + 30.0, zw), -0.5, 2.6, [(0.2 + 2.0 * i, 1.6) for i in range(15) if rng.random() < 0.8], thickness=0.1)
+    for x in np.arange(cx + 2.0, cx + 30.0, 2.0):
+        for z0, z1 in ((cz, cz + 3.8), (cz + 6.2, cz + 10.0)):
+            s.box(x - 0.05, x + 0.05, -0.5, 2.6, z0, z1)
+    _lid(s, cx - 0.2, cx + 30.2, cz - 0.2, cz + 10.2, 3.6)
+    taken.append((cx - 2.0, cx + 32.0, cz - 2.0, cz + 12.0))
+    for _ in range(int(rng.integers(260, 320))):  # loungers and umbrellas on the deck
+        p = np.array([rng.uniform(2.0, size_x - 4.0), rng.uniform(14.0, size_z - 4.0)])
+        if _clear(p[0] - 1.2, p[0] + 1.9, p[1] - 1.2, p[1] + 3.2, taken + holes):
+            if rng.random() < 0.7:
+                s.box(p[0], p[0] + 0.7, -0.5, 0.5, p[1], p[1] + 2.0)
+            else:
+                _trunk(s, p, 0.06, -0.5, 2.4)
+            taken.append((p[0] - 1.2, p[0] + 1.9, p[1] - 1.2, p[1] + 3.2))
+    s.ground(0.0, size_x, 0.0, size_z, 0.0, holes)
+    return s.mesh()
+
+
+def paddies(seed: int) -> trimesh.Trimesh:
+    """Rice terraces up a hillside along +z: 9-11 terraces 9-13 m deep, each 1.2-1.5 m above the one below, narrower
+    the higher (the lowest 150-170 m wide along x, each next 2-5 m shorter at either end). A terrace is a paddy of
+    water (no floor) between bunds 1.8 m wide: one along its front edge, cross bunds along z every 9-20 m from it to
+    the riser of the next terrace. A bund climbs to the next terrace only by a flight along +z (0.28 m treads, risers
+    under 0.18 m) ending head-on on that terrace's front bund: one to three a terrace, besides the main stair 3 m wide
+    up a cross bund 3 m wide near the west end of every terrace. A village at the foot (ground at y = 0, 30 m deep, houses ridged, a well, trees)
+    and a shrine (ridged) on a yard 20 x 12 m at the top, up its own flight.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    terraces = int(rng.integers(9, 12))
+    bund = 1.8
+    x0, x1, z, y = 0.0, rng.uniform(150.0, 170.0), 30.0, 0.0
+    # the village at the foot
+    holes: list[tuple[float, float, float, float]] = []
+    taken = [(0.0, x1, 26.0, 30.0)]
+    for _ in range(int(rng.integers(12, 18))):
+        w, d = rng.uniform(6.0, 10.0), rng.uniform(5.0, 8.0)
+        hx, hz = rng.uniform(2.0, x1 - w - 2.0), rng.uniform(2.0, 24.0 - d)
+        if _clear(hx - 3.0, hx + w + 3.0, hz - 3.0, hz + d + 3.0, taken):
+            holes.append(_ridged(s, hx, hx + w, hz, hz + d, -0.5, rng.uniform(3.0, 4.5)))
+            taken.append((hx - 0.5, hx + w + 0.5, hz - 0.5, hz + d + 0.5))
+    _trees(s, rng, int(rng.integers(20, 30)), x1, 24.0, taken, (0.25, 0.4), 6.0)
+    s.ground(0.0, x1, 0.0, 30.0, 0.0, holes)
+    shrink = rng.uniform(2.0, 5.0, size=(terraces, 2))
+    shrink[0] = 0.0
+    main_x = x0 + shrink[:, 0].sum() + rng.uniform(6.0, 10.0)  # the main stair's bund, a cross bund 3 m wide
+    prev_flights: list[float] = []
+    for k in range(terraces):
+        depth = rng.uniform(9.0, 13.0)
+        top = y + rng.uniform(1.2, 1.5)
+        steps = math.ceil((top - y) / 0.18)
+        run = steps * 0.28
+        x0, x1 = x0 + shrink[k, 0], x1 - shrink[k, 1]
+        # the flights up to this terrace's front bund, from the bunds of the one below (or the village)
+        for fx in [main_x, *prev_flights]:
+            s.stairs(np.array([fx, z - run]), np.array([0.0, 1.0]), 3.0 if fx == main_x else bund, y, top - y,
+                     (top - y) / steps, 0.28)
+        s.box(x0, x1, top - 3.0, top, z, z + bund)  # the front bund
+        cross = [main_x]
+        s.box(main_x - 1.5, main_x + 1.5, top - 3.0, top, z + bund, z + depth)
+        cx = main_x + rng.uniform(9.0, 20.0)
+        while cx < x1 - 4.0:
+            s.box(cx - bund / 2, cx + bund / 2, top - 3.0, top, z + bund, z + depth)
+            cross.append(cx)
+            cx += rng.uniform(9.0, 20.0)
+        for ex in (x0 + bund / 2, x1 - bund / 2):  # the ends' bunds
+            s.box(ex - bund / 2, ex + bund / 2, top - 3.0, top, z + bund, z + depth)
+        inner = [c for c in cross[1:] if x0 + 12.0 < c < x1 - 12.0]
+        prev_flights = [float(c) for c in rng.choice(inner, size=min(len(inner), int(rng.integers(1, 4))), replace=False)]
+        for _ in range(int(rng.integers(1, 4))):  # a field hut on a widening of the front bund
+            hx = rng.uniform(x0 + 8.0, x1 - 8.0)
+            if all(abs(hx - c) > 4.0 for c in cross):
+                s.box(hx - 2.0, hx + 2.0, top - 3.0, top, z - 2.0, z)
+                _ridged(s, hx - 1.2, hx + 1.2, z - 1.8, z - 0.2, top - 0.5, top + 1.6)
+        y, z = top, z + depth
+    # the shrine's yard at the top, up the main stair
+    top = y + 1.4
+    steps = math.ceil(1.4 / 0.18)
+    run = steps * 0.28
+    sx = (x0 + x1) / 2
+    s.stairs(np.array([main_x, z - run]), np.array([0.0, 1.0]), 3.0, y, 1.4, 1.4 / steps, 0.28)
+    s.box(x0, x1, top - 3.0, top, z, z + bund)
+    shrine = _ridged(s, sx - 4.0, sx + 4.0, z + bund + 6.0, z + bund + 11.0, top - 3.0, top + 3.0)
+    s.ground(sx - 10.0, sx + 10.0, z + bund, z + bund + 12.0, top, [shrine], thickness=3.0)
+    return s.mesh()
+
+
+def cistern(seed: int) -> trimesh.Trimesh:
+    """An underground cistern 100-120 x 60-70 m under a ridged lid 6 m up (:func:`_lid`), between two streets at y = 6
+    (25 m wide, houses ridged, trees): a forest of columns 0.9 m square on a 5 m grid standing in water (no floor),
+    the only floor a network of walkways 2.2 m wide at y = 0 along the aisles between them: a random tree over 70 % of
+    their crossings (grown from the west entrance's until it holds the east one's) and a twentieth of the other
+    links, so most ways are the only way; 3-5 viewing platforms 6 m square at the tree's leaves. From each street a
+    stair house goes down a walled switchback well 4 m wide (:func:`_switchback`, 6 m) to a passage onto the
+    walkways, one at the west wall, one at the east.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    w, d, ceiling, street = rng.uniform(100.0, 120.0), rng.uniform(60.0, 70.0), 6.0, 25.0
+    nx, nz = int(w // 5.0), int(d // 5.0)
+    nodes = {(i, j) for i in range(1, nx) for j in range(1, nz)}
+    # the walkways: a tree grown at random from the west entrance's crossing (Prim's order over random picks) until
+    # it holds the east one's and 70 % of the crossings, and a twentieth of the other links
+    start, goal = (1, int(rng.integers(2, nz - 1))), (nx - 1, int(rng.integers(2, nz - 1)))
+    tree, frontier, links = {start}, [(start, c) for c in ((2, start[1]), (1, start[1] - 1), (1, start[1] + 1))], set()
+    while goal not in tree or len(tree) < 0.7 * len(nodes):
+        a, b = frontier.pop(int(rng.integers(len(frontier))))
+        if b in tree:
+            continue
+        tree.add(b)
+        links.add(frozenset((a, b)))
+        frontier += [(b, c) for c in ((b[0] + 1, b[1]), (b[0] - 1, b[1]), (b[0], b[1] + 1), (b[0], b[1] - 1)) if c in nodes]
+    for i, j in sorted(tree):
+        for c in ((i + 1, j), (i, j + 1)):
+            if c in tree and rng.random() < 0.05:
+                links.add(frozenset(((i, j), c)))
+    for link in links:
+        (i0, j0), (i1, j1) = sorted(link)
+        s.box(5.0 * i0 - 1.1, 5.0 * i1 + 1.1, -0.4, 0.0, 5.0 * j0 - 1.1, 5.0 * j1 + 1.1)
+    degree = {n: sum(n in link for link in links) for n in sorted(tree)}
+    leaves = [n for n in sorted(tree) if degree[n] == 1 and n not in (start, goal)]
+    for k in rng.choice(len(leaves), size=min(len(leaves), int(rng.integers(3, 6))), replace=False):
+        i, j = leaves[k]
+        s.box(5.0 * i - 3.0, 5.0 * i + 3.0, -0.4, 0.0, 5.0 * j - 3.0, 5.0 * j + 3.0)
+    for x in np.arange(2.5, w - 1.0, 5.0):
+        for z in np.arange(2.5, d - 1.0, 5.0):
+            s.box(x - 0.45, x + 0.45, -3.0, ceiling - 1.0, z - 0.45, z + 0.45)
+    # the walls, 1 m short of the lid, and the lid
+    for a, b in (((0.0, -0.25), (w, -0.25)), ((0.0, d + 0.25), (w, d + 0.25))):
+        s.wall(a, b, -3.0, ceiling - 1.0, thickness=0.5)
+    # the two streets and their stair houses
+    exits = {0.0: start[1], w: goal[1]}
+    for edge, j in exits.items():
+        out = -1.0 if edge == 0.0 else 1.0
+        sx0, sx1 = sorted((edge + out * 0.5, edge + out * (street + 0.5)))
+        well = _well_length(ceiling)
+        wx = edge + out * 2.0 if out > 0 else edge - 6.0
+        wz = 5.0 * j - 1.0
+        shaft = (wx, wx + 4.0, wz, wz + well)
+        passage = (min(edge, wx + 4.0 if out < 0 else wx), max(edge, wx + 4.0 if out < 0 else wx), wz, wz + 2.0)
+        s.box(*shaft[:2], -0.4, 0.0, wz, wz + 2.0)  # the landing at the foot
+        s.box(passage[0], passage[1], -0.4, 0.0, passage[2], passage[3])
+        first = 5.0 * (1 if out < 0 else nx - 1)  # on to the walkways' crossing
+        s.box(min(edge, first), max(edge, first), -0.4, 0.0, wz, wz + 2.0)
+        _switchback(s, wx, wz, 0.0, ceiling)
+        hole = (min(wx - 0.6, passage[0]) - 0.2, max(wx + 4.6, passage[1]) + 0.2, wz - 0.6, wz + well + 0.6)
+        s.slab(hole[0], hole[1], wz, wz + 2.0, ceiling, [])  # the top landing, over the door and the passage
+        s.wall((edge, 0.0), (edge, d), -3.0, ceiling - 1.0, [(wz, 2.0)], thickness=0.5)
+        hx0, hx1 = wx - 0.4, wx + 4.4  # the stair house over the well, its door on the street at the landing
+        s.wall((hx0, wz - 0.2), (hx1, wz - 0.2), ceiling, ceiling + 3.0, thickness=0.4)
+        s.wall((hx0, wz + well + 0.2), (hx1, wz + well + 0.2), ceiling, ceiling + 3.0, thickness=0.4)
+        door_x = hx0 if out < 0 else hx1
+        back_x = hx1 if out < 0 else hx0
+        s.wall((door_x, wz - 0.4), (door_x, wz + well + 0.4), ceiling, ceiling + 3.0, [(0.6, 1.6)], thickness=0.4)
+        s.wall((back_x, wz - 0.4), (back_x, wz + well + 0.4), ceiling, ceiling + 3.0, thickness=0.4)
+        _ridged(s, hx0 - 0.2, hx1 + 0.2, wz - 0.6, wz + well + 0.6, ceiling + 3.0, ceiling + 3.5)
+        holes = [hole]
+        taken = list(holes)
+        far = sx0 if out < 0 else sx1 - 10.0
+        z = rng.uniform(1.0, 4.0)
+        while z < d - 8.0:  # houses along the far side of the street
+            hw = rng.uniform(6.0, 10.0)
+            holes.append(_ridged(s, far, far + 10.0, z, min(z + hw, d), ceiling - 1.0, ceiling + rng.uniform(4.0, 7.0)))
+            taken.append((far - 1.0, far + 11.0, z - 1.0, z + hw + 1.0))
+            z += hw + rng.uniform(2.0, 6.0)
+        for _ in range(int(rng.integers(50, 70))):
+            p = np.array([rng.uniform(sx0 + 1.5, sx1 - 1.5), rng.uniform(1.5, d - 1.5)])
+            if _clear(p[0] - 1.0, p[0] + 1.0, p[1] - 1.0, p[1] + 1.0, taken):
+                _trunk(s, p, rng.uniform(0.2, 0.4), ceiling - 0.5, ceiling + 5.0)
+                taken.append((p[0] - 1.5, p[0] + 1.5, p[1] - 1.5, p[1] + 1.5))
+        s.ground(sx0, sx1, 0.0, d, ceiling, holes, thickness=ceiling + 4.0)
+    _lid(s, -0.5, w + 0.5, -0.5, d + 0.5, ceiling)
+    return s.mesh()
+
+
 KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
     "subway": subway, "archipelago": archipelago, "car_park": car_park,
     "forest": forest, "stadium": stadium, "harbour": harbour,
@@ -5990,6 +6642,8 @@ KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
     "craters": craters,
     "oil_rig": oil_rig, "monastery": monastery, "night_market": night_market, "cinema": cinema, "estate": estate,
     "dam": dam,
+    "garden": garden, "lighthouse": lighthouse, "canal_locks": canal_locks, "water_park": water_park, "paddies": paddies,
+    "cistern": cistern,
 }
 """Kind name -> generator (seed -> Y-up mesh in metres)."""
 

@@ -1,4 +1,4 @@
-"""The ninth to fifteenth rounds' level kinds (``benchmarks/level_kinds.py``) build the levels their docstrings describe.
+"""The ninth to sixteenth rounds' level kinds (``benchmarks/level_kinds.py``) build the levels their docstrings describe.
 
 Smoke tests of quick generators (well under a second each to build and to give a navmesh): the connected areas
 the presets' agent finds are the ones each level is made to have, so a door that closes or a crawlway that
@@ -38,7 +38,7 @@ def areas(mesh) -> tuple[np.ndarray, object]:
 
 def test_the_same_seed_gives_the_same_level(kinds):
     for kind in ("hall", "islets", "helix", "flooded", "stairhall", "quarry", "theme_park", "golf", "skatepark", "stepwell",
-                 "railyard", "craters", "monastery", "estate", "dam"):
+                 "railyard", "craters", "monastery", "estate", "dam", "garden", "cistern"):
         a, b, other = kinds[kind](0), kinds[kind](0), kinds[kind](1)
         assert np.array_equal(a.vertices, b.vertices) and np.array_equal(a.faces, b.faces), kind
         assert len(a.vertices) != len(other.vertices) or not np.array_equal(a.vertices, other.vertices), kind
@@ -361,6 +361,23 @@ def test_the_beachs_bays_are_reached_down_their_flights(kinds):
         assert ((x > x0) & (x < x0 + 40) & (y < 3.0)).sum() > 5, x0
 
 
+@pytest.mark.parametrize("seed", [0, 1])
+def test_no_dune_reaches_over_a_groyne(kinds, seed):
+    """Without the promenade and the pier (over 4 m) the sand falls apart into one area per bay (over 100 m²): no
+    dune rises within the climb of a groyne's top (3 m), which seed 0's did twice."""
+    mesh = kinds["beach"](seed)
+    groynes = np.unique(np.round(mesh.vertices[np.isclose(mesh.vertices[:, 1], 3.0), 0] - 0.2, 1))[::2]
+    nav = build_navmesh(mesh.vertices, mesh.faces, AGENT)
+    low = np.flatnonzero(nav.centres[:, 1] < 4.0)
+    inside = np.isin(nav.neighbours, low) & np.isin(np.arange(nav.polygon_count), low)[:, None]
+    rows, slots = np.nonzero(inside)
+    index = np.searchsorted(low, [rows, nav.neighbours[rows, slots]])
+    graph = sp.coo_matrix((np.ones(len(rows)), (index[0], index[1])), shape=(len(low),) * 2)
+    label = connected_components(graph, directed=False)[1]
+    sizes = np.bincount(label, weights=nav.areas[low])
+    assert (sizes > 100.0).sum() == len(groynes) + 1  # (and a few square metres shut in behind a hut)
+
+
 def test_the_railyard_is_one_area_over_its_footbridge(kinds):
     """The gaps between wagons, the roads, the shed and the footbridge (6.5 m) are one area; no floor on a wagon,
     under the footbridge or away from it: over the tracks (between the 10 m roads) the only floor over 1 m up is the
@@ -455,3 +472,82 @@ def test_the_dams_crest_and_valley_are_one_area(kinds):
     assert top > 24.0 and (y < 0.5).sum() > 100 and (y > top - 0.3).sum() > 20
     hills = (x < 40.0) | (x > x[y < 0.5].max() + 1.0)
     assert (hills | (z < 68.0)).all()
+
+
+def test_the_gardens_terrace_belvedere_and_grotto_are_one_area_with_the_parterre(kinds):
+    """The terrace (1.5 m) up its flights, the belvedere (2.5 m) up its own, the maze and the grotto under its lid:
+    one area, and no floor on a bed, the fountain or the house (all ridged)."""
+    label, nav = areas(kinds["garden"](0))
+    assert label.max() == 0
+    y = nav.centres[:, 1] - 0.2
+    assert (np.abs(y - 1.5) < 0.3).sum() > 20 and (np.abs(y - 2.5) < 0.3).sum() >= 1 and y.max() < 3.0
+
+
+def test_the_lighthouses_gallery_is_reached_up_the_tower_from_the_mainland(kinds):
+    """Mainland, causeway, shelf (0 m), plinth (3 m), the tower's landings (7, 11, 15, 19 m) and the gallery (23 m):
+    one area, with floor at each height."""
+    label, nav = areas(kinds["lighthouse"](1))
+    assert label.max() == 0
+    y = nav.centres[:, 1] - 0.2
+    for level in (0.0, 3.0, 7.0, 11.0, 15.0, 19.0, 23.0):
+        assert (np.abs(y - level) < 0.3).sum() >= 1, level
+    assert y.max() < 23.5
+
+
+def test_the_canals_banks_meet_only_on_its_bridges(kinds):
+    """Both banks at every pound's height (0, 2, ... m) are one area; over the water (the canal's 7 m) there is
+    floor only on the gates' footbridges (2 m wide, two a lock) and the road bridge (6 m wide)."""
+    mesh = kinds["canal_locks"](2)
+    label, nav = areas(mesh)
+    assert label.max() == 0
+    y = nav.centres[:, 1] - 0.2
+    top = int(round(y.max() / 2.0))
+    assert 7 <= top <= 9
+    for k in range(top + 1):
+        assert (np.abs(y - 2.0 * k) < 0.3).sum() > 10, k
+    over = np.abs(nav.centres[:, 2]) < 3.0
+    assert nav.areas[over].sum() < (2 * top * 2.0 + 6.0) * 7.0
+
+
+def test_the_water_parks_slide_towers_are_reached_up_their_wells(kinds):
+    """The deck, the island over its bridges, the cubicles and both towers' tops (12 m, up the switchback wells) are
+    one area, with floor on each top and none above."""
+    label, nav = areas(kinds["water_park"](0))
+    assert label.max() == 0
+    y = nav.centres[:, 1] - 0.2
+    assert (np.abs(y - 12.0) < 0.3).sum() >= 2 and y.max() < 12.5
+
+
+def test_the_paddies_bunds_climb_to_the_shrine(kinds):
+    """The village (0 m) and the shrine's yard at the top are one area through the bunds and flights; the paddies
+    hold no floor, so the terraces' floor is narrow: the bunds' 1.8 m (0.8 m of navmesh)."""
+    label, nav = areas(kinds["paddies"](1))
+    assert label.max() == 0
+    y = nav.centres[:, 1] - 0.2
+    assert (np.abs(y) < 0.3).sum() > 20 and y.max() > 12.0
+    terraces = (y > 0.5) & (nav.centres[:, 2] < nav.centres[np.argmax(y), 2] - 20.0)
+    assert nav.areas[terraces].sum() < 0.25 * np.ptp(nav.centres[terraces, 0]) * np.ptp(nav.centres[terraces, 2])
+
+
+def test_the_cisterns_walkways_join_its_two_streets(kinds):
+    """The two streets (6 m) are one area with the walkways (0 m) through the stair wells; the walkways, 2.2 m wide
+    on a 5 m grid, cover under half the hall between the streets."""
+    label, nav = areas(kinds["cistern"](2))
+    assert label.max() == 0
+    x, y, _ = nav.centres.T
+    low = y < 0.5
+    assert (y > 6.0).sum() > 20 and low.sum() > 100
+    assert (x[y > 6.0] < 0.0).any() and (x[y > 6.0] > x[low].max()).any()
+    assert nav.areas[low].sum() < 0.5 * np.ptp(x[low]) * np.ptp(nav.centres[low, 2])
+
+
+def test_the_gardens_canal_is_crossed_only_on_its_bridges(kinds):
+    """The canal runs from wall to wall: over its 6 m of water there is floor only on the axis bridge (6 m wide) and
+    the second one (3 m)."""
+    mesh = kinds["garden"](1)
+    _, nav = areas(mesh)
+    rails = mesh.vertices[np.isclose(mesh.vertices[:, 1], 1.1)]  # the bridges' rails, 0.5 m past the canal's banks
+    z0, z1 = rails[:, 2].min() + 0.5, rails[:, 2].max() - 0.5
+    over = (nav.centres[:, 2] > z0 + 0.5) & (nav.centres[:, 2] < z1 - 0.5)
+    assert over.any() and nav.areas[over].sum() < (6.0 + 3.0) * (z1 - z0)
+    assert len(np.unique(np.round(nav.centres[over, 0] / 10.0))) <= 2
