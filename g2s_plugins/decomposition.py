@@ -282,6 +282,15 @@ walled-in region's own extent, not the smaller region's (docs/plugins.md, "Yards
 zoo's paths, walled in by its fence at 0.98, and a corner yard of 1,001 m² beside them, 0.79, at mouths 6.7-11.1
 m)."""
 
+STAIR_GRADIENT = 0.25
+"""A flight (:func:`stair_runs`) climbs at least this share of its longest plan extent between its two chokepoints: a
+stair rises 0.6-0.7 m a metre along a flight (risers of at most 0.18 m on 0.28 m treads), so a piece of a stair with
+landings as long as its flights still climbs over a quarter, where a ramp or a gallery reached by stairs at its two ends
+climbs much less. Measured (docs/plugins.md, "Stairs in one run"): pieces of the monastery's, dam's, estate's,
+stairhall's, hillside's and cinema's stairs 0.23-0.75; galleries, canyon ledges, tree bridges and quarry benches whose
+two chokepoints lie at different heights 0.01-0.21 (the estate's top gallery, 77 m long with a stair at each end,
+0.04)."""
+
 EXTENT_DIRECTIONS = 8
 """Directions, evenly spread over 180 degrees, along which a region's longest extent is measured
 (:func:`longest_extents`: at least cos(90 / 8 degrees) = 98 % of its diameter)."""
@@ -985,6 +994,7 @@ def decompose(navmesh: Any, agent: Any, params: DecompositionParams, mesh: trime
     centres = np.asarray(navmesh.centres, dtype=np.float64)
     band = floor_bands(centres[:, 1], navmesh.normals, areas, 0.5 * float(agent.height))
     labels = _join_ways_round(navmesh, labels, pairs, blocked, clearance, areas, band, agent, wall_to_wall, params)
+    labels = _join_stair_runs(navmesh, labels, pairs, blocked, clearance, areas, band, agent, wall_to_wall, params)
     count = int(labels.max()) + 1 if len(labels) else 0
     blocked &= labels[pairs[:, 0]] != labels[pairs[:, 1]]
 
@@ -1193,6 +1203,75 @@ def _join_ways_round(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocke
         if not joins:
             return labels
         labels = join_groups(labels, count, np.array(joins))
+
+
+def stair_runs(sides: np.ndarray, heights: np.ndarray, mean_width: np.ndarray, extent: np.ndarray, area: np.ndarray,
+               narrow: float, climb: float) -> np.ndarray:
+    """(K, 2) the region pairs to join so that every run of flights is one region (step 3 of the module doc).
+
+    A *flight* is a region no wider than ``narrow`` on average (``mean_width`` (G,), m) with exactly two
+    chokepoints, to two different regions, at heights at least ``climb`` and :data:`STAIR_GRADIENT` of its extent
+    apart: a piece of a stair between its landings, or a stair between two floors. Flights joined by a chokepoint form a run (scipy connected components);
+    a run of two flights or more whose every other neighbour (the regions at its foot and head) is larger than the
+    whole run (``area`` (G,), m²) is one way between those regions: its flights join and the chokepoints at its
+    landings go, those at its foot and head stay. Landings 4 m square where flights meet from several sides (a
+    lattice of flights) have three chokepoints or more, or are the run's small ends: they stay regions.
+
+    Args:
+        sides: (K, 2) the two regions of every chokepoint.
+        heights: (K,) the height of every chokepoint's widest point, m.
+        mean_width: (G,) each region's mean walkable width (area over longest extent), m.
+        extent: (G,) each region's longest plan extent, m: a flight climbs at least :data:`STAIR_GRADIENT` of it.
+        area: (G,) each region's walkable area, m².
+        narrow: the widest mean walkable width of a flight, m.
+        climb: the least height between a flight's two chokepoints, m.
+    """
+    count = len(area)
+    ends = np.concatenate([sides, sides[:, ::-1]])  # (2K, 2): a region and the region across each of its chokepoints
+    at = np.concatenate([heights, heights])
+    order = np.lexsort((np.arange(len(ends)), ends[:, 0]))
+    ends, at = ends[order], at[order]
+    degree = np.bincount(ends[:, 0], minlength=count)
+    first = np.concatenate([[0], np.cumsum(degree)[:-1]])
+    two = np.flatnonzero(degree == 2)
+    flight = np.zeros(count, dtype=bool)
+    rise = np.abs(at[first[two]] - at[first[two] + 1])
+    flight[two] = ((ends[first[two], 1] != ends[first[two] + 1, 1]) & (mean_width[two] <= narrow) & (rise >= climb)
+                   & (rise >= STAIR_GRADIENT * extent[two]))
+    inside = flight[sides].all(axis=1)
+    links = sparse.coo_array((np.ones(int(inside.sum())), (sides[inside, 0], sides[inside, 1])), shape=(count, count))
+    run = csgraph.connected_components(links, directed=False)[1]
+    run_area = np.bincount(run[flight], weights=area[flight], minlength=count)
+    flights = np.bincount(run[flight], minlength=count)
+    out = flight[ends[:, 0]] & ~flight[ends[:, 1]]  # a run's foot or head: a flight's chokepoint to another region
+    small_end = np.zeros(count, dtype=bool)
+    np.logical_or.at(small_end, run[ends[out, 0]], area[ends[out, 1]] <= run_area[run[ends[out, 0]]])
+    joined = inside & (flights[run[sides[:, 0]]] >= 2) & ~small_end[run[sides[:, 0]]]
+    return sides[joined]
+
+
+def _join_stair_runs(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocked: np.ndarray,
+                     clearance: Clearances, areas: np.ndarray, band: np.ndarray, agent: Any, wall_to_wall: float,
+                     params: DecompositionParams) -> np.ndarray:
+    """(P,) the regions ``labels`` with every run of flights joined (:func:`stair_runs`; step 3 of the module doc).
+
+    The chokepoints are those :func:`_chokepoints` keeps for ``labels`` (one per opening); a flight is at most
+    :data:`CORRIDOR_WIDTH` agent diameters wide on average and climbs at least half the agent's height between
+    its two chokepoints (the floors' height bands split at that gap: ``band`` (P,), :func:`floor_bands`)."""
+    count = int(labels.max()) + 1 if len(labels) else 0
+    candidates = np.flatnonzero(blocked & (labels[pairs[:, 0]] != labels[pairs[:, 1]]))
+    floor = _region_floors(labels, count, band, areas, np.asarray(navmesh.centres, dtype=np.float64)[:, 1])
+    kept = _chokepoints(candidates, pairs, labels, np.asarray(navmesh.portals().endpoints, dtype=np.float64),
+                        clearance.widest, 2.0 * clearance.portals, floor, params.min_separation, clearance.holes,
+                        wall_to_wall)
+    if not kept:
+        return labels
+    sides = np.array([k["regions"] for k in kept], dtype=np.int64)
+    heights = np.array([k["position"][1] for k in kept])
+    mean_width, extent = mean_widths(navmesh, labels, areas)
+    joins = stair_runs(sides, heights, mean_width, extent, np.bincount(labels, weights=areas, minlength=count),
+                       CORRIDOR_WIDTH * 2.0 * float(agent.radius), 0.5 * float(agent.height))
+    return join_groups(labels, count, joins) if len(joins) else labels
 
 
 def _holes_at(points: np.ndarray, start: np.ndarray, hole: np.ndarray) -> np.ndarray:
