@@ -106,9 +106,17 @@ polygons and their shared edges (portals):
    of rooms in a loop, a wall's gaps between two fields and a room's two doors onto a corridor cost walks of one
    to several regions' sizes. The project's own rule, set on the thirteenth round's kinds (docs/plugins.md,
    "Ways round obstacles").
+   Stair runs (:func:`stair_runs`, after the ways round): a *flight* is a region with exactly two chokepoints, to two
+   different regions, no wider than :data:`CORRIDOR_WIDTH` agent diameters on average, whose chokepoints lie at least
+   half the agent's height and :data:`STAIR_GRADIENT` of its longest extent apart in height (a piece of a stair
+   between two landings). Flights joined by chokepoints are a run; a run of two flights or more whose foot and head
+   lie in regions larger than the whole run is one way between them: its flights join, the chokepoints at its
+   landings go and those at its foot and head stay. Landings where flights meet from several sides (a lattice of
+   flights) have three chokepoints or more, or are no larger than the run: they stay regions. The project's own
+   rule, set on the fifteenth round's monastery and dam (docs/plugins.md, "Stairs in one run").
 4. Regions are the groups left (``scipy.sparse.csgraph.connected_components``
-   of the merged portals, joined passages, pinches, side strips, lanes and ways round), numbered by their lowest
-   polygon id.
+   of the merged portals, joined passages, pinches, side strips, lanes, ways round and stair runs), numbered by their
+   lowest polygon id.
    Candidates between the same two regions that are chained end to end (one opening:
    Recast's region contours may bend across a wide gap), that end on the same
    small hole less than half as wide between them, wall to wall, as the narrower
@@ -140,7 +148,8 @@ C candidates between corridor-like groups, Q grid points within a cut's reach
 sorting the candidates' region pairs); lanes O(R (C' (Q M + Q log B) + sum of k^2)) for R rounds (joins; 1-4
 measured), C' candidates of region pairs with openings at least ``min_separation`` apart and k passage openings
 per pair; ways round O(R' (V + O K log K)) for R' rounds (1-4 measured), O openings and K polygons within the
-walk's length of an opening (few in rooms, up to a region in open ground); openings O(C log C + sum of k^2) for k candidate ends on each small
+walk's length of an opening (few in rooms, up to a region in open ground); stair runs O(V + C log C) (extents, the
+chokepoints once more, sorting their ends); openings O(C log C + sum of k^2) for k candidate ends on each small
 hole; small rooms O(k) per look at a group under ``min_region_area`` (k: its polygons and their portals, few), and
 O(k) rays for the groups walled in but for one opening (:class:`DoorWidths`, each polygon and portal cast once);
 wall pieces O(B) and O(B) more per elongated small hole (few: pillars are compact); the merge tree sorts the
@@ -285,11 +294,12 @@ m)."""
 STAIR_GRADIENT = 0.25
 """A flight (:func:`stair_runs`) climbs at least this share of its longest plan extent between its two chokepoints: a
 stair rises 0.6-0.7 m a metre along a flight (risers of at most 0.18 m on 0.28 m treads), so a piece of a stair with
-landings as long as its flights still climbs over a quarter, where a ramp or a gallery reached by stairs at its two ends
-climbs much less. Measured (docs/plugins.md, "Stairs in one run"): pieces of the monastery's, dam's, estate's,
-stairhall's, hillside's and cinema's stairs 0.23-0.75; galleries, canyon ledges, tree bridges and quarry benches whose
-two chokepoints lie at different heights 0.01-0.21 (the estate's top gallery, 77 m long with a stair at each end,
-0.04)."""
+landings about as long as its flights still climbs over a quarter, while a gallery reached by a stair at each end, a
+ledge or a bridge between platforms climbs less. Measured (docs/plugins.md, "Stairs in one run"; regions with two
+chokepoints at least 1 m apart in height): pieces of the monastery's, dam's, estate's and stairhall's stairs
+0.32-0.75, the hillside's flights and the cinema's stepped aisles 0.23-0.41 (none of them in a run); galleries with a
+stair at each end 0.02-0.04 (the estate's top gallery, 77 m long: 0.04), canyon ledges 0.06-0.21, tree bridges
+0.06-0.24."""
 
 EXTENT_DIRECTIONS = 8
 """Directions, evenly spread over 180 degrees, along which a region's longest extent is measured
