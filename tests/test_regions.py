@@ -734,16 +734,18 @@ def test_a_run_of_flights_between_larger_regions_is_one_region():
     assert runs(sides=np.vstack([sides, [2, 4]]), heights=np.append(heights, 6.0)) == []
 
 
-def test_a_switchback_of_six_flights_up_a_face_is_one_region_between_its_foot_and_head(monkeypatch):
+@pytest.mark.parametrize("yaw", [0.0, 45.0])
+def test_a_switchback_of_six_flights_up_a_face_is_one_region_between_its_foot_and_head(monkeypatch, yaw):
     # a block 18 m high beside flat ground, climbed by a switchback of six 3 m flights with a 2 m landing after each
-    # (benchmarks/level_kinds.py's, as on the dam): before the rule for stair runs the stair was cut at a landing
-    # into two regions (4 regions / 3 chokepoints); its lowest flights merge into the ground (the merge tree)
+    # (benchmarks/level_kinds.py's, as on the dam): before the rule for stair runs the stair was cut at its landings
+    # (4 regions / 3 chokepoints, 5 / 4 turned by 45 degrees); its lowest flights merge into the ground (the merge tree)
     kinds = benchmark("level_kinds")
     solids = kinds._Solids()
     solids.box(-20.0, 40.0, -0.5, 0.0, -30.0, 0.0)
     solids.box(-20.0, 40.0, -0.5, 18.0, 0.0, 20.0)
     kinds._face_switchback(solids, np.array([10.0, 0.0]), np.array([1.0, 0.0]), np.array([0.0, -1.0]), 6)
-    level = SimpleNamespace(mesh=solids.mesh(), name="switchback")
+    mesh = solids.mesh().apply_transform(trimesh.transformations.rotation_matrix(np.radians(yaw), [0.0, 1.0, 0.0]))
+    level = SimpleNamespace(mesh=mesh, name="switchback")
     result = run(level)
     found = chokepoints(result)
     assert (len(regions(result)), len(found)) == (3, 2)
@@ -751,8 +753,7 @@ def test_a_switchback_of_six_flights_up_a_face_is_one_region_between_its_foot_an
     heights = sorted(c["position"][1] for c in found)
     assert heights[1] - heights[0] >= 9.0 and max(r["area"] for r in regions(result) if r["id"] == stair) < 100.0
     monkeypatch.setattr(decomposition, "_join_stair_runs", lambda navmesh, labels, *args: labels)
-    result = run(level)
-    assert (len(regions(result)), len(chokepoints(result))) == (4, 3)
+    assert len(chokepoints(run(level))) >= 3
 
 
 def test_shelving_aisles_turned_45_degrees_are_part_of_the_hall():
