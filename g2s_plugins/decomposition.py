@@ -106,9 +106,17 @@ polygons and their shared edges (portals):
    of rooms in a loop, a wall's gaps between two fields and a room's two doors onto a corridor cost walks of one
    to several regions' sizes. The project's own rule, set on the thirteenth round's kinds (docs/plugins.md,
    "Ways round obstacles").
+   Stair runs (:func:`stair_runs`, after the ways round): a *flight* is a region with exactly two chokepoints, to two
+   different regions, no wider than :data:`CORRIDOR_WIDTH` agent diameters on average, whose chokepoints lie at least
+   half the agent's height and :data:`STAIR_GRADIENT` of its longest extent apart in height (a piece of a stair
+   between two landings). Flights joined by chokepoints are a run; a run of two flights or more whose foot and head
+   lie in regions larger than the whole run is one way between them: its flights join, the chokepoints at its
+   landings go and those at its foot and head stay. Landings where flights meet from several sides (a lattice of
+   flights) have three chokepoints or more, or are no larger than the run: they stay regions. The project's own
+   rule, set on the fifteenth round's monastery and dam (docs/plugins.md, "Stairs in one run").
 4. Regions are the groups left (``scipy.sparse.csgraph.connected_components``
-   of the merged portals, joined passages, pinches, side strips, lanes and ways round), numbered by their lowest
-   polygon id.
+   of the merged portals, joined passages, pinches, side strips, lanes, ways round and stair runs), numbered by their
+   lowest polygon id.
    Candidates between the same two regions that are chained end to end (one opening:
    Recast's region contours may bend across a wide gap), that end on the same
    small hole less than half as wide between them, wall to wall, as the narrower
@@ -140,7 +148,8 @@ C candidates between corridor-like groups, Q grid points within a cut's reach
 sorting the candidates' region pairs); lanes O(R (C' (Q M + Q log B) + sum of k^2)) for R rounds (joins; 1-4
 measured), C' candidates of region pairs with openings at least ``min_separation`` apart and k passage openings
 per pair; ways round O(R' (V + O K log K)) for R' rounds (1-4 measured), O openings and K polygons within the
-walk's length of an opening (few in rooms, up to a region in open ground); openings O(C log C + sum of k^2) for k candidate ends on each small
+walk's length of an opening (few in rooms, up to a region in open ground); stair runs O(V + C log C) (extents, the
+chokepoints once more, sorting their ends); openings O(C log C + sum of k^2) for k candidate ends on each small
 hole; small rooms O(k) per look at a group under ``min_region_area`` (k: its polygons and their portals, few), and
 O(k) rays for the groups walled in but for one opening (:class:`DoorWidths`, each polygon and portal cast once);
 wall pieces O(B) and O(B) more per elongated small hole (few: pillars are compact); the merge tree sorts the
@@ -281,6 +290,16 @@ An opening wider than :data:`CORRIDOR_WIDTH` agent diameters (walkable) is no do
 walled-in region's own extent, not the smaller region's (docs/plugins.md, "Yards beside walled-in ground": the
 zoo's paths, walled in by its fence at 0.98, and a corner yard of 1,001 m² beside them, 0.79, at mouths 6.7-11.1
 m)."""
+
+STAIR_GRADIENT = 0.25
+"""A flight (:func:`stair_runs`) climbs at least this share of its longest plan extent between its two chokepoints: a
+stair rises 0.6-0.7 m a metre along a flight (risers of at most 0.18 m on 0.28 m treads), so a piece of a stair with
+landings about as long as its flights still climbs over a quarter, while a gallery reached by a stair at each end, a
+ledge or a bridge between platforms climbs less. Measured (docs/plugins.md, "Stairs in one run"; regions with two
+chokepoints at least 1 m apart in height): pieces of the monastery's, dam's, estate's and stairhall's stairs
+0.32-0.75, the hillside's flights and the cinema's stepped aisles 0.23-0.41 (none of them in a run); galleries with a
+stair at each end 0.02-0.04 (the estate's top gallery, 77 m long: 0.04), canyon ledges 0.06-0.21, tree bridges
+0.06-0.24."""
 
 EXTENT_DIRECTIONS = 8
 """Directions, evenly spread over 180 degrees, along which a region's longest extent is measured
@@ -985,6 +1004,7 @@ def decompose(navmesh: Any, agent: Any, params: DecompositionParams, mesh: trime
     centres = np.asarray(navmesh.centres, dtype=np.float64)
     band = floor_bands(centres[:, 1], navmesh.normals, areas, 0.5 * float(agent.height))
     labels = _join_ways_round(navmesh, labels, pairs, blocked, clearance, areas, band, agent, wall_to_wall, params)
+    labels = _join_stair_runs(navmesh, labels, pairs, blocked, clearance, areas, band, agent, wall_to_wall, params)
     count = int(labels.max()) + 1 if len(labels) else 0
     blocked &= labels[pairs[:, 0]] != labels[pairs[:, 1]]
 
@@ -1193,6 +1213,75 @@ def _join_ways_round(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocke
         if not joins:
             return labels
         labels = join_groups(labels, count, np.array(joins))
+
+
+def stair_runs(sides: np.ndarray, heights: np.ndarray, mean_width: np.ndarray, extent: np.ndarray, area: np.ndarray,
+               narrow: float, climb: float) -> np.ndarray:
+    """(K, 2) the region pairs to join so that every run of flights is one region (step 3 of the module doc).
+
+    A *flight* is a region no wider than ``narrow`` on average (``mean_width`` (G,), m) with exactly two
+    chokepoints, to two different regions, at heights at least ``climb`` and :data:`STAIR_GRADIENT` of its extent
+    apart: a piece of a stair between its landings, or a stair between two floors. Flights joined by a chokepoint form a run (scipy connected components);
+    a run of two flights or more whose every other neighbour (the regions at its foot and head) is larger than the
+    whole run (``area`` (G,), m²) is one way between those regions: its flights join and the chokepoints at its
+    landings go, those at its foot and head stay. Landings 4 m square where flights meet from several sides (a
+    lattice of flights) have three chokepoints or more, or are the run's small ends: they stay regions.
+
+    Args:
+        sides: (K, 2) the two regions of every chokepoint.
+        heights: (K,) the height of every chokepoint's widest point, m.
+        mean_width: (G,) each region's mean walkable width (area over longest extent), m.
+        extent: (G,) each region's longest plan extent, m: a flight climbs at least :data:`STAIR_GRADIENT` of it.
+        area: (G,) each region's walkable area, m².
+        narrow: the widest mean walkable width of a flight, m.
+        climb: the least height between a flight's two chokepoints, m.
+    """
+    count = len(area)
+    ends = np.concatenate([sides, sides[:, ::-1]])  # (2K, 2): a region and the region across each of its chokepoints
+    at = np.concatenate([heights, heights])
+    order = np.lexsort((np.arange(len(ends)), ends[:, 0]))
+    ends, at = ends[order], at[order]
+    degree = np.bincount(ends[:, 0], minlength=count)
+    first = np.concatenate([[0], np.cumsum(degree)[:-1]])
+    two = np.flatnonzero(degree == 2)
+    flight = np.zeros(count, dtype=bool)
+    rise = np.abs(at[first[two]] - at[first[two] + 1])
+    flight[two] = ((ends[first[two], 1] != ends[first[two] + 1, 1]) & (mean_width[two] <= narrow) & (rise >= climb)
+                   & (rise >= STAIR_GRADIENT * extent[two]))
+    inside = flight[sides].all(axis=1)
+    links = sparse.coo_array((np.ones(int(inside.sum())), (sides[inside, 0], sides[inside, 1])), shape=(count, count))
+    run = csgraph.connected_components(links, directed=False)[1]
+    run_area = np.bincount(run[flight], weights=area[flight], minlength=count)
+    flights = np.bincount(run[flight], minlength=count)
+    out = flight[ends[:, 0]] & ~flight[ends[:, 1]]  # a run's foot or head: a flight's chokepoint to another region
+    small_end = np.zeros(count, dtype=bool)
+    np.logical_or.at(small_end, run[ends[out, 0]], area[ends[out, 1]] <= run_area[run[ends[out, 0]]])
+    joined = inside & (flights[run[sides[:, 0]]] >= 2) & ~small_end[run[sides[:, 0]]]
+    return sides[joined]
+
+
+def _join_stair_runs(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocked: np.ndarray,
+                     clearance: Clearances, areas: np.ndarray, band: np.ndarray, agent: Any, wall_to_wall: float,
+                     params: DecompositionParams) -> np.ndarray:
+    """(P,) the regions ``labels`` with every run of flights joined (:func:`stair_runs`; step 3 of the module doc).
+
+    The chokepoints are those :func:`_chokepoints` keeps for ``labels`` (one per opening); a flight is at most
+    :data:`CORRIDOR_WIDTH` agent diameters wide on average and climbs at least half the agent's height between
+    its two chokepoints (the floors' height bands split at that gap: ``band`` (P,), :func:`floor_bands`)."""
+    count = int(labels.max()) + 1 if len(labels) else 0
+    candidates = np.flatnonzero(blocked & (labels[pairs[:, 0]] != labels[pairs[:, 1]]))
+    floor = _region_floors(labels, count, band, areas, np.asarray(navmesh.centres, dtype=np.float64)[:, 1])
+    kept = _chokepoints(candidates, pairs, labels, np.asarray(navmesh.portals().endpoints, dtype=np.float64),
+                        clearance.widest, 2.0 * clearance.portals, floor, params.min_separation, clearance.holes,
+                        wall_to_wall)
+    if not kept:
+        return labels
+    sides = np.array([k["regions"] for k in kept], dtype=np.int64)
+    heights = np.array([k["position"][1] for k in kept])
+    mean_width, extent = mean_widths(navmesh, labels, areas)
+    joins = stair_runs(sides, heights, mean_width, extent, np.bincount(labels, weights=areas, minlength=count),
+                       CORRIDOR_WIDTH * 2.0 * float(agent.radius), 0.5 * float(agent.height))
+    return join_groups(labels, count, joins) if len(joins) else labels
 
 
 def _holes_at(points: np.ndarray, start: np.ndarray, hole: np.ndarray) -> np.ndarray:

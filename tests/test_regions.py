@@ -713,6 +713,49 @@ def test_the_zoo_corner_yard_between_enclosures_is_part_of_the_paths():
     assert max(c["width"] for c in found) < 6.0  # the gate (4.75 m walkable) is the widest: no 6.7-11.1 m mouth
 
 
+def test_a_run_of_flights_between_larger_regions_is_one_region():
+    # regions 0 (ground, 900 m2) and 4 (a top, 400 m2) joined by three flights of 10 m2, 1.5 m walkable on
+    # average and 6 m long, whose chokepoints rise 3 m each: the flights join, the foot and head stay
+    sides = np.array([[0, 1], [1, 2], [2, 3], [3, 4]])
+    heights = np.array([0.0, 3.0, 6.0, 9.0])
+    mean_width, extent = np.array([30.0, 1.5, 1.5, 1.5, 20.0]), np.array([30.0, 6.0, 6.0, 6.0, 20.0])
+    area = np.array([900.0, 10.0, 10.0, 10.0, 400.0])
+
+    def runs(heights=heights, mean_width=mean_width, extent=extent, area=area, sides=sides):
+        return decomposition.stair_runs(sides, heights, mean_width, extent, area, 4.0, 1.0).tolist()
+
+    assert runs() == [[1, 2], [2, 3]]
+    assert runs(heights=np.zeros(4)) == []  # a corridor parted by doors on one floor climbs nothing
+    assert runs(extent=np.array([30.0, 20.0, 20.0, 20.0, 20.0])) == []  # 3 m over 20 m: a gallery, not a flight
+    assert runs(mean_width=np.array([30.0, 5.0, 5.0, 5.0, 20.0])) == []  # wider than a corridor
+    # landings no larger than the run at its ends (a lattice of flights between landings): they stay regions
+    assert runs(area=np.array([25.0, 10.0, 10.0, 10.0, 400.0])) == []
+    # a third chokepoint on the middle flight (a landing with a door) parts the run; one flight alone joins nothing
+    assert runs(sides=np.vstack([sides, [2, 4]]), heights=np.append(heights, 6.0)) == []
+
+
+@pytest.mark.parametrize("yaw", [0.0, 45.0])
+def test_a_switchback_of_six_flights_up_a_face_is_one_region_between_its_foot_and_head(monkeypatch, yaw):
+    # a block 18 m high beside flat ground, climbed by a switchback of six 3 m flights with a 2 m landing after each
+    # (benchmarks/level_kinds.py's, as on the dam): before the rule for stair runs the stair was cut at its landings
+    # (4 regions / 3 chokepoints, 5 / 4 turned by 45 degrees); its lowest flights merge into the ground (the merge tree)
+    kinds = benchmark("level_kinds")
+    solids = kinds._Solids()
+    solids.box(-20.0, 40.0, -0.5, 0.0, -30.0, 0.0)
+    solids.box(-20.0, 40.0, -0.5, 18.0, 0.0, 20.0)
+    kinds._face_switchback(solids, np.array([10.0, 0.0]), np.array([1.0, 0.0]), np.array([0.0, -1.0]), 6)
+    mesh = solids.mesh().apply_transform(trimesh.transformations.rotation_matrix(np.radians(yaw), [0.0, 1.0, 0.0]))
+    level = SimpleNamespace(mesh=mesh, name="switchback")
+    result = run(level)
+    found = chokepoints(result)
+    assert (len(regions(result)), len(found)) == (3, 2)
+    stair = ({*found[0]["regions"]} & {*found[1]["regions"]}).pop()
+    heights = sorted(c["position"][1] for c in found)
+    assert heights[1] - heights[0] >= 9.0 and max(r["area"] for r in regions(result) if r["id"] == stair) < 100.0
+    monkeypatch.setattr(decomposition, "_join_stair_runs", lambda navmesh, labels, *args: labels)
+    assert len(chokepoints(run(level))) >= 3
+
+
 def test_shelving_aisles_turned_45_degrees_are_part_of_the_hall():
     # held out: turned by 45 degrees the 3 m aisle's ends measured 1.41 m walkable against its 1.9 m widest point,
     # so it was a region between two chokepoints (3 regions / 3 chokepoints) before the side-strip rule
