@@ -1,0 +1,37 @@
+"""Inputs robust14 (5 December 2026) found ending in a lost pair, a dropped Ctrl-C, an empty message or a library's
+traceback, each test failing on the code before its fix (docs/errors.md, "The hostile-user pass of robust14")."""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+
+QUEUED_BEHIND_A_KILLER = """
+import os, signal, time
+from g2s_plugins.executors import dask_cluster
+
+def work(item):
+    if item == "killer":
+        os.kill(os.getpid(), signal.SIGKILL)
+    time.sleep(0.5)  # as a pair takes time
+    return {"item": item, "status": "ok"}
+
+rows = dask_cluster.g2s_execute(function=work, items=["killer", *"abcd"],
+                                params=dask_cluster.Params(workers=1), lost=lambda item, why: {"item": item, "status": why})
+print(sorted((row["item"], row["status"]) for row in rows))
+"""
+
+
+def test_a_dask_pair_queued_on_a_worker_another_pair_kills_runs_again_and_ends_with_its_own_row():
+    # robust12's and robust13's leftover: Dask counts a worker's death against every pair the worker held, those
+    # waiting there too, and gives a pair up after 4 deaths (KilledWorker): a sound pair queued behind one that kills
+    # its worker failed with it, `every Dask worker that held it died` (here, before the fix: a sound pair lost in 4
+    # runs of 5). The pairs Dask gave up on now run again one at a time, alone, where only the killer dies
+    # queuing off (Dask's way before 2022.11, a user's setting): every pair is given to the worker at once, as Dask
+    # does with the pairs left when a dead worker's replacement joins (which made the failure a matter of timing)
+    env = {**os.environ, "DASK_DISTRIBUTED__SCHEDULER__WORKER_SATURATION": "inf"}
+    ran = subprocess.run([sys.executable, "-c", QUEUED_BEHIND_A_KILLER], capture_output=True, text=True, timeout=300,
+                         env=env)
+    assert ran.returncode == 0, ran.stderr
+    assert ran.stdout == str([*((sound, "ok") for sound in "abcd"), ("killer", "every Dask worker that held it died")]) + "\n"
