@@ -35,3 +35,40 @@ def test_a_dask_pair_queued_on_a_worker_another_pair_kills_runs_again_and_ends_w
                          env=env)
     assert ran.returncode == 0, ran.stderr
     assert ran.stdout == str([*((sound, "ok") for sound in "abcd"), ("killer", "every Dask worker that held it died")]) + "\n"
+
+
+INTERRUPTED_AS_THE_EXECUTOR_FAILS = '''
+import os, signal, sys, time
+from g2s_plugins.batch import runner
+
+real = runner.run_pair
+
+def failing(pair):
+    if pair.level == "cross_hub":
+        time.sleep(1.0)  # the corridor's pair is done
+        os.kill(int(os.environ["BATCH_PID"]), signal.SIGINT)
+        raise ValueError("the executor failed at the same moment")
+    return real(pair)
+
+if __name__ == "__main__":
+    os.environ["BATCH_PID"] = str(os.getpid())
+    runner.run_pair = failing
+    from g2s_core.cli import main
+    sys.exit(main(["batch", "graph_only", "sample:straight_corridor", "sample:cross_hub", "-o", sys.argv[1],
+                   "--workers", "1", "--format", "json", "-q"]))
+'''
+
+
+def test_a_ctrl_c_the_executor_held_is_not_dropped_when_its_iterator_fails_at_the_same_moment(tmp_path):
+    # robust13's leftover: the pool holds Ctrl-C back while it waits (interrupts_held) and acted on it once the block
+    # ended, but only when it ended well: a Ctrl-C taken as the iterator failed was dropped, and the batch ended as the
+    # executor's failure, exit 1 (`Executor plugin 'local' ... failed: its iterator raised ValueError: ...`)
+    script = tmp_path / "batch.py"  # a file: the pool's workers import the function from it
+    script.write_text(INTERRUPTED_AS_THE_EXECUTOR_FAILS)
+    ran = subprocess.run([sys.executable, str(script), str(tmp_path / "out")], capture_output=True, text=True,
+                         timeout=300)
+    assert (ran.returncode, ran.stderr) == (130, "g2s: interrupted\n")
+    import pandas as pd
+
+    summary = pd.read_csv(tmp_path / "out" / "summary.csv")
+    assert list(zip(summary["level"], summary["status"])) == [("straight_corridor", "ok")]
