@@ -43,7 +43,7 @@ from typing import TYPE_CHECKING, Any
 
 from g2s_core import DISTRIBUTION
 from g2s_core.config import find_config, load_raw_config, parse_config, with_evaluators
-from g2s_core.errors import G2SError, PluginFailure
+from g2s_core.errors import G2SError, PluginFailure, out_of_memory
 from g2s_core.input_files import check_regular_file
 from g2s_core.lazy import lazy_module
 from g2s_core.mesh import SAMPLE_PREFIX, SUPPORTED_SUFFIXES
@@ -143,6 +143,8 @@ def run_pair(pair: Pair) -> dict[str, Any]:
         row["seconds_write"] = time.perf_counter() - start - row["seconds_load"] - result.total_seconds
     except (G2SError, PluginFailure) as exc:
         row.update(status="failed", error=str(exc))
+    except MemoryError as exc:  # under a memory limit: said where it ran out, as `g2s run` says it
+        row.update(status="failed", error=str(out_of_memory(exc)))
     except Exception as exc:  # an internal error of g2s on this level: recorded, the batch goes on
         row.update(status="failed", error=f"internal error: {type(exc).__name__}: {exc}")
     row["seconds_total"] = time.perf_counter() - start

@@ -4,8 +4,14 @@ traceback, each test failing on the code before its fix (docs/errors.md, "The ho
 from __future__ import annotations
 
 import os
+import resource
 import subprocess
 import sys
+
+import pytest
+
+from tests.reliability.checks import CORRIDOR, tree
+from tests.reliability.test_robust12 import third_party
 
 QUEUED_BEHIND_A_KILLER = """
 import os, signal, time
@@ -72,3 +78,58 @@ def test_a_ctrl_c_the_executor_held_is_not_dropped_when_its_iterator_fails_at_th
 
     summary = pd.read_csv(tmp_path / "out" / "summary.csv")
     assert list(zip(summary["level"], summary["status"])) == [("straight_corridor", "ok")]
+
+
+HUNGRY = '''"""An analyzer that runs out of memory, as under a memory limit (`ulimit -v`) Python's allocations do."""
+from g2s_core.plugin import hookimpl
+
+NAME = "hungry"
+
+
+@hookimpl
+def g2s_analyze(structure):
+    raise MemoryError  # Python's own has no message
+'''
+
+LIMIT_KB = 8 << 20
+"""A memory limit (``ulimit -v``) the runs fit in, in KB: the message names it."""
+
+
+def limited() -> None:
+    resource.setrlimit(resource.RLIMIT_AS, (LIMIT_KB << 10, resource.getrlimit(resource.RLIMIT_AS)[1]))
+
+
+@pytest.mark.parametrize("command", ["run", "batch"])
+def test_running_out_of_memory_is_said_in_one_line_naming_the_plugin_and_the_limit(command, tmp_path):
+    # robust12's and robust13's leftover: under a memory limit a run ended in `g2s: internal error: MemoryError: ` (the
+    # message empty, and the --verbose hint), and a batch's pair failed as `internal error: MemoryError: `
+    folder = third_party(tmp_path / "site", "hungry-plug", {"analyzers.hungry": "hungry_mod"}, {"hungry_mod": HUNGRY})
+    (tmp_path / "hungry.yaml").write_text("extends: map_piece\nanalyzers: [{plugin: hungry}]\n")
+    env = {**os.environ, "COLUMNS": "300", "PYTHONPATH": os.pathsep.join([str(folder), *sys.path])}
+    out = tmp_path / "out"
+    arguments = ["--executor", "serial"] if command == "batch" else []
+    ran = subprocess.run([sys.executable, "-m", "g2s_core.cli", command, str(tmp_path / "hungry.yaml"), CORRIDOR, "-o",
+                          str(out), "--format", "json", "-q", *arguments], capture_output=True, text=True, env=env,
+                         timeout=300, preexec_fn=limited)
+    said = (f"out of memory in Analyzer plugin 'hungry' (package 'hungry-plug') under the process's memory limit of "
+            f"{LIMIT_KB:,} KB (ulimit -v) (MemoryError)")
+    if command == "run":
+        assert (ran.returncode, ran.stderr) == (1, f"g2s: error: {said}\n")
+        assert tree(out) == []
+    else:
+        assert (ran.returncode, ran.stderr) == (4, f"g2s: hungry on straight_corridor failed: {said}\n")
+
+
+def test_running_out_of_memory_outside_any_plugin_says_so_and_the_limit():
+    # g2s's own steps and the libraries' imports (trimesh's, under `ulimit -v 450000`) raise Python's MemoryError bare
+    from g2s_core.errors import out_of_memory
+
+    script = ("import resource, sys\n"
+              f"resource.setrlimit(resource.RLIMIT_AS, ({LIMIT_KB << 10}, resource.RLIM_INFINITY))\n"
+              "from g2s_core.errors import out_of_memory\n"
+              "print(out_of_memory(MemoryError()))\n")
+    ran = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=60)
+    assert (ran.returncode, ran.stderr) == (0, "")
+    assert ran.stdout == f"out of memory under the process's memory limit of {LIMIT_KB:,} KB (ulimit -v) (MemoryError)\n"
+    limitless = str(out_of_memory(MemoryError("Unable to allocate 8 GiB"), " in the test"))
+    assert limitless.startswith("out of memory in the test") and limitless.endswith("(MemoryError: Unable to allocate 8 GiB)")
