@@ -12,6 +12,7 @@ import pytest
 
 from tests.reliability.checks import CORRIDOR, tree
 from tests.reliability.test_robust12 import third_party
+from tests.reliability.test_robust13 import another_package
 
 QUEUED_BEHIND_A_KILLER = """
 import os, signal, time
@@ -133,3 +134,22 @@ def test_running_out_of_memory_outside_any_plugin_says_so_and_the_limit():
     assert ran.stdout == f"out of memory under the process's memory limit of {LIMIT_KB:,} KB (ulimit -v) (MemoryError)\n"
     limitless = str(out_of_memory(MemoryError("Unable to allocate 8 GiB"), " in the test"))
     assert limitless.startswith("out of memory in the test") and limitless.endswith("(MemoryError: Unable to allocate 8 GiB)")
+
+
+@pytest.mark.parametrize("entry_points, problem", [
+    (b"[console_scripts]\nother = other:main\nnoequals\n", "line 3 is not 'name = value'"),
+    (b"[console_scripts]\nother = caf\xe9:main\n", "the byte at offset 29 is not UTF-8 text"),
+])
+@pytest.mark.parametrize("call", ["g2s_core.run('graph_only', 'sample:straight_corridor')",
+                                  "__import__('g2s_core.batch').batch.run_batch"])
+def test_the_python_api_names_another_packages_broken_entry_points_in_one_exception(entry_points, problem, call, tmp_path):
+    # robust13's leftover: the console script names the package (robust13), but the Python API failed in importlib's
+    # traceback, `TypeError: Pair.__new__() missing 1 required positional argument: 'value'` (`UnicodeDecodeError`),
+    # raised inside networkx (its backends) or pydantic (its plugins) as g2s_core.api or g2s_core.batch was imported
+    folder = another_package(tmp_path / "site", entry_points)
+    script = f"import g2s_core\nfrom g2s_core.errors import G2SError\ntry:\n    {call}\nexcept G2SError as error:\n    print(error)\n"
+    env = {**os.environ, "PYTHONPATH": os.pathsep.join([str(folder), *sys.path])}
+    ran = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, env=env, timeout=120)
+    assert (ran.returncode, ran.stderr) == (0, "")
+    assert ran.stdout == (f"installed package 'other' (in {folder}): its entry_points.txt cannot be read: {problem} "
+                          "(every package's entry points are read as g2s starts; repair or uninstall that package)\n")
