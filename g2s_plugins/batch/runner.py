@@ -513,6 +513,7 @@ def write_summary(summary: pd.DataFrame, outdir: Path) -> list[Path]:
     Raises:
         G2SError: the storage failed (disk full, file size limit); the earlier summary files are kept and no
             temporary file is left.
+        OutOfMemory: the memory ran out (the same).
     """
     files = {outdir / name: (outdir / f".{name}.tmp", write) for name, write in zip(
         SUMMARIES, (summary.to_parquet, summary.to_csv))}
@@ -525,6 +526,9 @@ def write_summary(summary: pd.DataFrame, outdir: Path) -> list[Path]:
         if isinstance(exc, OSError):  # pyarrow's has the errno, and its own words in strerror
             raise G2SError(f"{outdir}: cannot write the summary ({os.strerror(exc.errno) if exc.errno else exc}); "
                            "the pairs' results are kept: run the batch again to write it") from None
+        if isinstance(exc, MemoryError):  # pyarrow's allocator under `ulimit -v 700000`, every pair written
+            raise out_of_memory(exc, f" writing the summary in {outdir} (the pairs' results are kept: run the batch "
+                                     "again to write it)") from exc
         raise
     for path, (temporary, _) in files.items():
         os.replace(temporary, path)

@@ -153,3 +153,44 @@ def test_the_python_api_names_another_packages_broken_entry_points_in_one_except
     assert (ran.returncode, ran.stderr) == (0, "")
     assert ran.stdout == (f"installed package 'other' (in {folder}): its entry_points.txt cannot be read: {problem} "
                           "(every package's entry points are read as g2s starts; repair or uninstall that package)\n")
+
+
+def test_a_summary_that_runs_out_of_memory_says_so_and_that_the_pairs_are_kept(tmp_path, monkeypatch):
+    # under `ulimit -v 700000` every pair of a batch was written, then pyarrow's allocator failed on the summary
+    # (`ArrowMemoryError: realloc of size 128 failed`, a MemoryError): `g2s: internal error: ...` and the --verbose hint
+    import pandas as pd
+
+    from g2s_core.errors import OutOfMemory
+    from g2s_plugins.batch.runner import write_summary
+
+    def refuse(*_args, **_kwargs):
+        raise MemoryError("realloc of size 128 failed")
+
+    monkeypatch.setattr(pd.DataFrame, "to_parquet", refuse)
+    with pytest.raises(OutOfMemory) as raised:
+        write_summary(pd.DataFrame({"config": ["c"]}), tmp_path)
+    assert str(raised.value).startswith(f"out of memory writing the summary in {tmp_path} (the pairs' results are kept: "
+                                        "run the batch again to write it)")
+    assert str(raised.value).endswith("(MemoryError: realloc of size 128 failed)")
+    assert tree(tmp_path) == []
+
+
+CONSOLE_SCRIPT_SEES = """
+import os, sys
+from g2s_core import cli
+
+cli.main = lambda: print(os.environ.get("OPENBLAS_NUM_THREADS")) or 0  # what a command's libraries would load with
+from g2s_core.entry import main
+sys.exit(main())
+"""
+
+
+@pytest.mark.parametrize("given, seen", [(None, "1"), ("4", "4")])
+def test_the_console_script_runs_openblas_on_one_thread_unless_told_otherwise(given, seen):
+    # under `ulimit -v 450000` `g2s batch` spun for ever before any pair, deaf to Ctrl-C: OpenBLAS starts a thread per
+    # core as scipy loads it, each with a 32 MB buffer, and its allocator retried a failing one without end. With one
+    # thread it ends at once (`out of memory ...`, exit 1); a user's OPENBLAS_NUM_THREADS is kept
+    env = {key: value for key, value in os.environ.items() if key != "OPENBLAS_NUM_THREADS"}
+    ran = subprocess.run([sys.executable, "-c", CONSOLE_SCRIPT_SEES], capture_output=True, text=True, timeout=60,
+                         env=env if given is None else {**env, "OPENBLAS_NUM_THREADS": given})
+    assert (ran.returncode, ran.stdout, ran.stderr) == (0, f"{seen}\n", "")
