@@ -432,6 +432,7 @@ def run_batch(
 
     Raises:
         ConfigError, G2SError: bad configs, inputs or executor parameters, before any pair runs.
+        OutOfMemory: the memory ran out as the summary was made or written (the pairs' results are kept).
     """
     import pandas as pd  # noqa: F401  (the extra is needed before any work starts)
 
@@ -459,9 +460,13 @@ def run_batch(
         for pair in pairs:  # after Ctrl-C: the pairs that finished while the executor stopped
             if (pair.config, pair.level) not in rows and _written_since(Path(pair.record), started):
                 rows[pair.config, pair.level] = json.loads(Path(pair.record).read_text(encoding="utf-8"))
-        summary = _summary([rows[p.config, p.level] for p in pairs if (p.config, p.level) in rows])
-        if rows:
-            write_summary(summary, outdir)
+        try:
+            summary = _summary([rows[p.config, p.level] for p in pairs if (p.config, p.level) in rows])
+            if rows:
+                write_summary(summary, outdir)
+        except MemoryError as exc:  # pyarrow's allocator (pandas' text columns) under `ulimit -v 700000`, every pair written
+            raise out_of_memory(exc, f" making the summary in {outdir} (the pairs' results are kept: run the batch "
+                                     "again to make it)") from exc
     return summary
 
 
@@ -513,7 +518,6 @@ def write_summary(summary: pd.DataFrame, outdir: Path) -> list[Path]:
     Raises:
         G2SError: the storage failed (disk full, file size limit); the earlier summary files are kept and no
             temporary file is left.
-        OutOfMemory: the memory ran out (the same).
     """
     files = {outdir / name: (outdir / f".{name}.tmp", write) for name, write in zip(
         SUMMARIES, (summary.to_parquet, summary.to_csv))}
@@ -526,9 +530,6 @@ def write_summary(summary: pd.DataFrame, outdir: Path) -> list[Path]:
         if isinstance(exc, OSError):  # pyarrow's has the errno, and its own words in strerror
             raise G2SError(f"{outdir}: cannot write the summary ({os.strerror(exc.errno) if exc.errno else exc}); "
                            "the pairs' results are kept: run the batch again to write it") from None
-        if isinstance(exc, MemoryError):  # pyarrow's allocator under `ulimit -v 700000`, every pair written
-            raise out_of_memory(exc, f" writing the summary in {outdir} (the pairs' results are kept: run the batch "
-                                     "again to write it)") from exc
         raise
     for path, (temporary, _) in files.items():
         os.replace(temporary, path)

@@ -10,7 +10,7 @@ import sys
 
 import pytest
 
-from tests.reliability.checks import CORRIDOR, tree
+from tests.reliability.checks import CORRIDOR, assert_clean_error, run_g2s, tree
 from tests.reliability.test_robust12 import third_party
 from tests.reliability.test_robust13 import another_package
 
@@ -155,24 +155,22 @@ def test_the_python_api_names_another_packages_broken_entry_points_in_one_except
                           "(every package's entry points are read as g2s starts; repair or uninstall that package)\n")
 
 
-def test_a_summary_that_runs_out_of_memory_says_so_and_that_the_pairs_are_kept(tmp_path, monkeypatch):
-    # under `ulimit -v 700000` every pair of a batch was written, then pyarrow's allocator failed on the summary
-    # (`ArrowMemoryError: realloc of size 128 failed`, a MemoryError): `g2s: internal error: ...` and the --verbose hint
-    import pandas as pd
+def test_a_summary_that_runs_out_of_memory_says_so_and_that_the_pairs_are_kept(tmp_path, monkeypatch, capsys):
+    # under `ulimit -v 700000` every pair of a batch was written, then pyarrow's allocator failed as pandas made the
+    # summary's text columns (`ArrowMemoryError: realloc of size 128 failed`, a MemoryError): `g2s: internal error: ...`
+    # and the --verbose hint
+    from g2s_plugins.batch import runner
 
-    from g2s_core.errors import OutOfMemory
-    from g2s_plugins.batch.runner import write_summary
-
-    def refuse(*_args, **_kwargs):
+    def refuse(_rows):
         raise MemoryError("realloc of size 128 failed")
 
-    monkeypatch.setattr(pd.DataFrame, "to_parquet", refuse)
-    with pytest.raises(OutOfMemory) as raised:
-        write_summary(pd.DataFrame({"config": ["c"]}), tmp_path)
-    assert str(raised.value).startswith(f"out of memory writing the summary in {tmp_path} (the pairs' results are kept: "
-                                        "run the batch again to write it)")
-    assert str(raised.value).endswith("(MemoryError: realloc of size 128 failed)")
-    assert tree(tmp_path) == []
+    monkeypatch.setattr(runner, "_summary", refuse)
+    out = tmp_path / "out"
+    outcome = run_g2s(capsys, "batch", "graph_only", CORRIDOR, "-o", out, "--executor", "serial", "--format", "json", "-q")
+    line = assert_clean_error(outcome, f"out of memory making the summary in {out} (the pairs' results are kept: run the "
+                                       "batch again to make it)", code=1)
+    assert line.endswith("(MemoryError: realloc of size 128 failed)")
+    assert (out / "graph_only" / "straight_corridor" / "structure.json").is_file() and not (out / "summary.csv").exists()
 
 
 CONSOLE_SCRIPT_SEES = """
