@@ -8,7 +8,6 @@ line under the command's interrupt handling, so that a Ctrl-C at
 any time ends as ``g2s: interrupted``, exit code 130.
 """
 
-import os
 import signal
 import sys
 from collections.abc import Iterator
@@ -21,10 +20,6 @@ def main() -> int:
     SIGTERM (``kill``, a job scheduler's stop) is taken as a Ctrl-C: killed outright, a run left its staging
     folder behind, half written."""
     signal.signal(signal.SIGTERM, signal.default_int_handler)
-    # OpenBLAS (numpy's and scipy's copies) starts a thread per core as it loads, each with a 32 MB buffer: under a
-    # memory limit its allocator retried for ever (ulimit -v 450000: g2s batch spun before any pair, deaf to Ctrl-C).
-    # g2s runs its own threads and a batch one worker per core; one BLAS thread gave the same bits in less CPU
-    os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
     # a name that the terminal's encoding cannot write (LANG of Latin-1, PYTHONIOENCODING=ascii) ended a finished run
     # in an internal error as it printed the files written
     if hasattr(sys.stdout, "reconfigure"):  # None when g2s was started with its standard output closed

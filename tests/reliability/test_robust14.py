@@ -173,27 +173,6 @@ def test_a_summary_that_runs_out_of_memory_says_so_and_that_the_pairs_are_kept(t
     assert (out / "graph_only" / "straight_corridor" / "structure.json").is_file() and not (out / "summary.csv").exists()
 
 
-CONSOLE_SCRIPT_SEES = """
-import os, sys
-from g2s_core import cli
-
-cli.main = lambda: print(os.environ.get("OPENBLAS_NUM_THREADS")) or 0  # what a command's libraries would load with
-from g2s_core.entry import main
-sys.exit(main())
-"""
-
-
-@pytest.mark.parametrize("given, seen", [(None, "1"), ("4", "4")])
-def test_the_console_script_runs_openblas_on_one_thread_unless_told_otherwise(given, seen):
-    # under `ulimit -v 450000` `g2s batch` spun for ever before any pair, deaf to Ctrl-C: OpenBLAS starts a thread per
-    # core as scipy loads it, each with a 32 MB buffer, and its allocator retried a failing one without end. With one
-    # thread it ends at once (`out of memory ...`, exit 1); a user's OPENBLAS_NUM_THREADS is kept
-    env = {key: value for key, value in os.environ.items() if key != "OPENBLAS_NUM_THREADS"}
-    ran = subprocess.run([sys.executable, "-c", CONSOLE_SCRIPT_SEES], capture_output=True, text=True, timeout=60,
-                         env=env if given is None else {**env, "OPENBLAS_NUM_THREADS": given})
-    assert (ran.returncode, ran.stdout, ran.stderr) == (0, f"{seen}\n", "")
-
-
 def test_a_local_dask_cluster_starts_no_more_workers_than_the_batch_has_pairs(monkeypatch):
     # a LocalCluster starts every worker process up front: `g2s batch` of 2 pairs with `--executor dask --workers 8` took
     # 22 s against 6.5 s on 2 workers (and `--workers 1000` would start a thousand processes)
