@@ -286,7 +286,10 @@ def _guarded(info: PluginInfo, function: Callable[..., Any], what: str) -> Calla
 
 def said(exc: BaseException) -> str:
     """``TYPE: message`` of an exception of a plugin's, in one line of at most about 300 characters (its lines joined
-    by ``/``), even when its ``str()`` raises: the rest is in the traceback that ``--verbose`` prints."""
+    by ``/``), even when its ``str()`` raises: the rest is in the traceback that ``--verbose`` prints. Memory run out
+    is said so (a plugin's import under ``ulimit -v 560000`` failed to load as ``MemoryError: ``)."""
+    if isinstance(exc, MemoryError):
+        return str(out_of_memory(exc))
     try:
         text = " / ".join(line.strip() for line in str(exc).splitlines() if line.strip())
     except Exception:  # noqa: BLE001 - the plugin's own __str__ failed

@@ -191,3 +191,14 @@ def test_a_local_dask_cluster_starts_no_more_workers_than_the_batch_has_pairs(mo
     rows = dask_cluster.g2s_execute(function=abs, items=[-1, -2], params=dask_cluster.Params(workers=8),
                                     lost=lambda item, reason: (item, reason))
     assert (sorted(rows), asked) == ([1, 2], [2])
+
+
+def test_a_plugin_whose_import_runs_out_of_memory_is_listed_broken_for_that(tmp_path, monkeypatch):
+    # under `ulimit -v 560000` a built-in plugin's import ran out of memory: `GraphBuilder plugin 'navmesh' (package
+    # 'graph2structure') failed to load: MemoryError: `, the reason empty
+    from tests.reliability.test_robust12 import broken_of
+
+    folder = third_party(tmp_path / "site", "heavy-plug", {"analyzers.heavy": "heavy_mod"},
+                         {"heavy_mod": "raise MemoryError  # as an import under a memory limit does\n"})
+    reason = broken_of(folder, monkeypatch)["analyzers.heavy"]
+    assert reason.startswith("out of memory") and reason.endswith("(MemoryError)"), reason
