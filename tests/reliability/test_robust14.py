@@ -10,6 +10,8 @@ import sys
 
 import pytest
 
+from g2s_plugins.executors.dask_cluster import NO_WORKERS
+
 from tests.reliability.checks import CORRIDOR, assert_clean_error, run_g2s, tree
 from tests.reliability.test_robust12 import third_party
 from tests.reliability.test_robust13 import another_package
@@ -41,7 +43,10 @@ def test_a_dask_pair_queued_on_a_worker_another_pair_kills_runs_again_and_ends_w
     ran = subprocess.run([sys.executable, "-c", QUEUED_BEHIND_A_KILLER], capture_output=True, text=True, timeout=300,
                          env=env)
     assert ran.returncode == 0, ran.stderr
-    assert ran.stdout == str([*((sound, "ok") for sound in "abcd"), ("killer", "every Dask worker that held it died")]) + "\n"
+    # alone, the killer may leave the cluster without a worker (Dask starts none again that died as it started: seen at
+    # load 8), which loses it with NO_WORKERS's words
+    assert ran.stdout.replace(NO_WORKERS, "every Dask worker that held it died") == str(
+        [*((sound, "ok") for sound in "abcd"), ("killer", "every Dask worker that held it died")]) + "\n"
 
 
 INTERRUPTED_AS_THE_EXECUTOR_FAILS = '''
