@@ -43,8 +43,7 @@ from g2s_core.summary import final_graph, metric_lines, outcome, roots_of, stage
 api, pipeline = lazy_module("g2s_core.api"), lazy_module("g2s_core.pipeline")
 
 EXIT_CODES = ("exit codes: 0 success, 2 bad input or config, 1 internal error, a failed plugin (named with its package) or out of "
-              "memory, 130 "
-              "interrupted, 141 the reader of the output left early (| head)")
+              "memory, 130 interrupted, 141 the reader of the output left early (| head)")
 EXIT_READER_LEFT = 141
 """The exit code when the program reading g2s's standard output closes it early, as a shell reports a process that
 SIGPIPE ended: neither bad input (2) nor a bug of g2s (1)."""
