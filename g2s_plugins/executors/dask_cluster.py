@@ -76,7 +76,7 @@ def g2s_execute(
         with _children_ignore_interrupt():
             # a pair's failure reaches g2s through its future; Dask's own ERROR lines (a worker's heartbeat to a
             # scheduler that Ctrl-C is closing, seen under load) would break the one-line "g2s: interrupted"
-            # no more workers than pairs: each starts a process up front (2 pairs on `--workers 8`: 22 s against 6.5)
+            # no more workers than pairs: each starts a process up front (2 pairs on `--workers 8`: 7.9-9.9 s, capped 5.6-5.7)
             cluster = LocalCluster(
                 n_workers=max(1, min(params.workers or os.cpu_count() or 1, len(items))), threads_per_worker=1,
                 processes=True, dashboard_address=":0", silence_logs=logging.CRITICAL,
