@@ -22,16 +22,19 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-import networkx as nx
-import trimesh
-
-from g2s_core import pipeline
-from g2s_core.config import RunConfig, named_files, resolve_config
+from g2s_core.entry import entry_points_readable
 from g2s_core.errors import G2SError, MeshError
-from g2s_core.mesh import SAMPLE_PREFIX, generate_level, load_mesh, mesh_sha256, prepare_and_clean
-from g2s_core.model import LoadedResult, RunResult
-from g2s_core.outputs import DEFAULT_FORMATS, write_outputs
-from g2s_core.registry import Registry, installed
+
+with entry_points_readable():  # another package's broken entry_points.txt is named, not importlib's traceback
+    import networkx as nx
+    import trimesh
+
+    from g2s_core import pipeline
+    from g2s_core.config import RunConfig, named_files, resolve_config
+    from g2s_core.mesh import SAMPLE_PREFIX, generate_level, load_mesh, mesh_sha256, prepare_and_clean
+    from g2s_core.model import LoadedResult, RunResult
+    from g2s_core.outputs import DEFAULT_FORMATS, write_outputs
+    from g2s_core.registry import Registry, installed
 
 MeshLike = str | Path | trimesh.Trimesh
 ConfigLike = str | Path | Mapping[str, Any] | RunConfig

@@ -7,6 +7,9 @@ one module of the core that imports a plugin (tests/test_architecture.py
 names it).
 """
 
-from g2s_plugins.batch.runner import COLUMNS, METRIC_PREFIX, RECORDS, Pair, Progress, expand_inputs, run_batch, run_pair
+from g2s_core.entry import entry_points_readable
+
+with entry_points_readable():  # another package's broken entry_points.txt is named, not importlib's traceback
+    from g2s_plugins.batch.runner import COLUMNS, METRIC_PREFIX, RECORDS, Pair, Progress, expand_inputs, run_batch, run_pair
 
 __all__ = ["COLUMNS", "METRIC_PREFIX", "RECORDS", "Pair", "Progress", "expand_inputs", "run_batch", "run_pair"]

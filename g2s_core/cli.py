@@ -2,9 +2,9 @@
 that plugins add (stage ``commands``, e.g. ``g2s batch``).
 
 Exit codes: 0 success; 2 bad input or config (one line on stderr, no
-traceback), or a plugin that could not be loaded, raised an exception or
-returned a wrong result (one line naming the plugin and its package); 1 internal
-error of g2s (``--verbose`` shows the traceback); 130 interrupted (Ctrl-C, or SIGTERM from the console script);
+traceback); 1 a plugin that could not be loaded, raised an exception or
+returned a wrong result (one line naming the plugin and its package), memory run out (one line saying where and
+under which limit) or an internal error of g2s (``--verbose`` shows the traceback); 130 interrupted (Ctrl-C, or SIGTERM from the console script);
 a plugin's command may add its own (``g2s batch``: 4 when some pairs failed).
 """
 
@@ -28,7 +28,7 @@ from rich.table import Table
 
 from g2s_core import version
 from g2s_core.config import parse_assignment, presets, resolve_config
-from g2s_core.errors import ConfigError, G2SError, PluginFailure
+from g2s_core.errors import ConfigError, G2SError, PluginFailure, out_of_memory
 from g2s_core.mesh import SAMPLE_PREFIX, SUPPORTED_SUFFIXES
 from g2s_core.model import RaisedWarning, RunResult
 from g2s_core.outputs import DEFAULT_FORMATS, check_outdir, chosen_formats, writers
@@ -42,8 +42,8 @@ from g2s_core.summary import final_graph, metric_lines, outcome, roots_of, stage
 # a run needs them (and trimesh, networkx, scipy through them); listing plugins and checking a config do not
 api, pipeline = lazy_module("g2s_core.api"), lazy_module("g2s_core.pipeline")
 
-EXIT_CODES = ("exit codes: 0 success, 2 bad input or config, 1 internal error or a failed plugin (named with its package), 130 "
-              "interrupted, 141 the reader of the output left early (| head)")
+EXIT_CODES = ("exit codes: 0 success, 2 bad input or config, 1 internal error, a failed plugin (named with its package) or out of "
+              "memory, 130 interrupted, 141 the reader of the output left early (| head)")
 EXIT_READER_LEFT = 141
 """The exit code when the program reading g2s's standard output closes it early, as a shell reports a process that
 SIGPIPE ended: neither bad input (2) nor a bug of g2s (1)."""
@@ -208,11 +208,12 @@ def main(argv: Sequence[str] | None = None) -> int:
             if isinstance(command, Exception):
                 raise command
             return command(args)
-        except (G2SError, PluginFailure) as exc:  # the user, or the named plugin's authors, can fix it
-            errors.print(one_line(f"g2s: error: {exc}"), markup=False, highlight=False, soft_wrap=True)
+        except (G2SError, PluginFailure, MemoryError) as exc:  # the user, the named plugin's authors or more memory can fix it
+            said = out_of_memory(exc) if isinstance(exc, MemoryError) else exc
+            errors.print(one_line(f"g2s: error: {said}"), markup=False, highlight=False, soft_wrap=True)
             if args.verbose:
                 traceback.print_exc()
-            return 1 if isinstance(exc, PluginFailure) else 2  # a plugin's bug is no bad input: scripts must not blame the level
+            return 2 if isinstance(exc, G2SError) else 1  # a plugin's bug, or memory, is no bad input: scripts must not blame the level
         except (KeyboardInterrupt, Exception) as exc:  # anything but an interrupt is our bug: say so, keep the user's data
             if isinstance(exc, KeyboardInterrupt) or interrupted():  # trimesh swallows one as it loads, then fails (TypeError)
                 errors.print("g2s: interrupted", markup=False)

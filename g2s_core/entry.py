@@ -10,6 +10,8 @@ any time ends as ``g2s: interrupted``, exit code 130.
 
 import signal
 import sys
+from collections.abc import Iterator
+from contextlib import contextmanager
 
 
 def main() -> int:
@@ -36,7 +38,7 @@ def main() -> int:
         print("g2s: interrupted", file=sys.stderr)
         code = 130
     except Exception:
-        if (broken := _broken_entry_points()) is None:
+        if (broken := broken_entry_points()) is None:
             raise
         print(f"g2s: error: {broken}", file=sys.stderr)
         code = 2
@@ -47,7 +49,7 @@ def main() -> int:
     return code
 
 
-def _broken_entry_points() -> str | None:
+def broken_entry_points() -> str | None:
     """One line naming an installed distribution whose ``entry_points.txt`` importlib cannot read, if any.
 
     pydantic reads every distribution's entry points as g2s's first model is defined (its plugins), the plugin
@@ -68,3 +70,20 @@ def _broken_entry_points() -> str | None:
         return (f"installed package {dist.name!r} (in {dist.locate_file('')}): its entry_points.txt cannot be read: "
                 f"{problem} (every package's entry points are read as g2s starts; repair or uninstall that package)")
     return None
+
+
+@contextmanager
+def entry_points_readable() -> Iterator[None]:
+    """A block importing the Python API's libraries (networkx reads every installed package's entry points for its
+    backends as it loads, pydantic for its plugins): a failure that another package's unreadable ``entry_points.txt``
+    caused is raised as a :class:`~g2s_core.errors.G2SError` naming that package, as the console script names it,
+    not in importlib's traceback.
+    """
+    try:
+        yield
+    except Exception:
+        if (broken := broken_entry_points()) is None:
+            raise
+        from g2s_core.errors import G2SError
+
+        raise G2SError(broken) from None

@@ -2,8 +2,11 @@
 
 :class:`G2SError` and its subclasses are the user's bad input (exit code 2);
 :class:`PluginFailure` is a plugin's own bug (exit code 1, as an internal error, in one line naming the plugin and
-its package); anything else is an internal error of g2s (exit code 1).
+its package); :class:`OutOfMemory` is the machine's memory or limit (exit code 1, one line saying where it ran out);
+anything else is an internal error of g2s (exit code 1).
 """
+
+import resource
 
 
 class G2SError(Exception):
@@ -34,3 +37,19 @@ class PluginFailure(Exception):
     package (whose authors can fix it); the CLI exits with code 1, as for its own bugs (no input of the user's
     can fix it: exit code 2 would tell a script to blame the level or the config).
     """
+
+
+class OutOfMemory(MemoryError):
+    """Memory ran out, said where: neither the user's input nor a bug, but a memory limit (``ulimit -v``) or the
+    machine's memory. Python's own MemoryError mostly has no message: a run under a limit ended in ``internal error:
+    MemoryError: `` (robust14)."""
+
+
+def out_of_memory(exc: MemoryError, where: str = "") -> OutOfMemory:
+    """``exc`` as running out of memory ``where`` (e.g. `` in Analyzer plugin 'x' (package 'p')``), and under which
+    limit; one that says so already, as it is."""
+    if isinstance(exc, OutOfMemory):
+        return exc
+    limit = resource.getrlimit(resource.RLIMIT_AS)[0]
+    under = "" if limit == resource.RLIM_INFINITY else f" under the process's memory limit of {limit >> 10:,} KB (ulimit -v)"
+    return OutOfMemory(f"out of memory{where}{under} ({type(exc).__name__}{f': {exc}' if str(exc) else ''})")

@@ -24,7 +24,7 @@ import pluggy
 from pydantic import ValidationError
 
 from g2s_core import hookspecs
-from g2s_core.errors import ConfigError, G2SError, PluginError, PluginFailure
+from g2s_core.errors import ConfigError, G2SError, OutOfMemory, PluginError, PluginFailure, out_of_memory
 from g2s_core.messages import describe_field, describe_validation_error, show
 from g2s_core.plugin import PROJECT, PluginParams
 from g2s_core.stages import BY_HOOK, BY_KEY, STAGES, Stage
@@ -65,7 +65,12 @@ class PluginInfo:
 
     def failure(self, problem: str) -> PluginFailure:
         """The error for this plugin's own fault: ``<Title> plugin 'x' (package 'p') failed: <problem>``."""
-        return PluginFailure(f"{self.kind.title} plugin {self.name!r} (package {self.package!r}) failed: {problem}")
+        return PluginFailure(f"{self.named} failed: {problem}")
+
+    @property
+    def named(self) -> str:
+        """``<Title> plugin 'x' (package 'p')``."""
+        return f"{self.kind.title} plugin {self.name!r} (package {self.package!r})"
 
 
 @dataclass(frozen=True)
@@ -269,8 +274,10 @@ def _guarded(info: PluginInfo, function: Callable[..., Any], what: str) -> Calla
     def call(*args: Any, **kwargs: Any) -> Any:
         try:
             return function(*args, **kwargs)
-        except (G2SError, PluginFailure, KeyboardInterrupt, MemoryError):
+        except (G2SError, PluginFailure, KeyboardInterrupt, OutOfMemory):
             raise
+        except MemoryError as exc:  # the machine's memory or its limit, not the plugin's bug: said where it ran out
+            raise out_of_memory(exc, f" in {info.named}") from exc
         except BaseException as exc:  # SystemExit too: sys.exit(0) in a hook ended g2s with exit 0 and nothing written
             raise info.failure(f"{what} {said(exc)}") from exc
 
@@ -279,7 +286,10 @@ def _guarded(info: PluginInfo, function: Callable[..., Any], what: str) -> Calla
 
 def said(exc: BaseException) -> str:
     """``TYPE: message`` of an exception of a plugin's, in one line of at most about 300 characters (its lines joined
-    by ``/``), even when its ``str()`` raises: the rest is in the traceback that ``--verbose`` prints."""
+    by ``/``), even when its ``str()`` raises: the rest is in the traceback that ``--verbose`` prints. Memory run out
+    is said so (a plugin's import under ``ulimit -v 560000`` failed to load as ``MemoryError: ``)."""
+    if isinstance(exc, MemoryError):
+        return str(out_of_memory(exc))
     try:
         text = " / ".join(line.strip() for line in str(exc).splitlines() if line.strip())
     except Exception:  # noqa: BLE001 - the plugin's own __str__ failed

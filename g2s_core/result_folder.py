@@ -232,8 +232,9 @@ def stop_if_interrupted() -> None:
 
 @contextmanager
 def interrupts_held(hold: bool = True) -> Iterator[list[int]]:
-    """Hold Ctrl-C (SIGINT) and SIGTERM back until the block ends, then act on them; the block gets the list of
-    signals taken so far, to stop early at a point of its choosing.
+    """Hold Ctrl-C (SIGINT) and SIGTERM back until the block ends, then act on them, also when the block fails (the
+    interrupt then ends it, the failure its context); the block gets the list of signals taken so far, to stop early
+    at a point of its choosing.
 
     With ``hold`` false (a whole command) they raise KeyboardInterrupt at once and are remembered for
     :func:`stop_if_interrupted`: trimesh, scipy and PIL catch BaseException while they load, and a run whose
@@ -267,5 +268,5 @@ def interrupts_held(hold: bool = True) -> Iterator[list[int]]:
             signal.signal(sig, handler)
         if not hold:  # the command is over: a script's next run in this process starts afresh
             _TAKEN.clear()
-    if received and hold:
-        signal.raise_signal(received[0])
+        elif received:  # in the finally, so that one taken as the block failed is not dropped for that failure
+            signal.raise_signal(received[0])

@@ -26,7 +26,7 @@ def test_core_never_imports_a_plugin():
                 assert names == EXEMPT_IMPORTS.get(path.name), f"{path.name} imports {names}"
 
 
-CORE_CODE_BUDGET = 2858
+CORE_CODE_BUDGET = 2889
 """Lines of code g2s_core may hold (docs/architecture.md records the count): the core stays minimal."""
 
 

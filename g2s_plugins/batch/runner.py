@@ -43,7 +43,7 @@ from typing import TYPE_CHECKING, Any
 
 from g2s_core import DISTRIBUTION
 from g2s_core.config import find_config, load_raw_config, parse_config, with_evaluators
-from g2s_core.errors import G2SError, PluginFailure
+from g2s_core.errors import G2SError, PluginFailure, out_of_memory
 from g2s_core.input_files import check_regular_file
 from g2s_core.lazy import lazy_module
 from g2s_core.mesh import SAMPLE_PREFIX, SUPPORTED_SUFFIXES
@@ -143,6 +143,8 @@ def run_pair(pair: Pair) -> dict[str, Any]:
         row["seconds_write"] = time.perf_counter() - start - row["seconds_load"] - result.total_seconds
     except (G2SError, PluginFailure) as exc:
         row.update(status="failed", error=str(exc))
+    except MemoryError as exc:  # under a memory limit: said where it ran out, as `g2s run` says it
+        row.update(status="failed", error=str(out_of_memory(exc)))
     except Exception as exc:  # an internal error of g2s on this level: recorded, the batch goes on
         row.update(status="failed", error=f"internal error: {type(exc).__name__}: {exc}")
     row["seconds_total"] = time.perf_counter() - start
@@ -430,6 +432,7 @@ def run_batch(
 
     Raises:
         ConfigError, G2SError: bad configs, inputs or executor parameters, before any pair runs.
+        OutOfMemory: the memory ran out as the summary was made or written (the pairs' results are kept).
     """
     import pandas as pd  # noqa: F401  (the extra is needed before any work starts)
 
@@ -457,9 +460,13 @@ def run_batch(
         for pair in pairs:  # after Ctrl-C: the pairs that finished while the executor stopped
             if (pair.config, pair.level) not in rows and _written_since(Path(pair.record), started):
                 rows[pair.config, pair.level] = json.loads(Path(pair.record).read_text(encoding="utf-8"))
-        summary = _summary([rows[p.config, p.level] for p in pairs if (p.config, p.level) in rows])
-        if rows:
-            write_summary(summary, outdir)
+        try:
+            summary = _summary([rows[p.config, p.level] for p in pairs if (p.config, p.level) in rows])
+            if rows:
+                write_summary(summary, outdir)
+        except MemoryError as exc:  # pyarrow's allocator (pandas' text columns) under `ulimit -v 700000`, every pair written
+            raise out_of_memory(exc, f" making the summary in {outdir} (the pairs' results are kept: run the batch "
+                                     "again to make it)") from exc
     return summary
 
 

@@ -11,7 +11,7 @@ import logging
 import os
 import signal
 import time
-from collections.abc import Callable, Iterator, Sequence
+from collections.abc import Callable, Generator, Iterator, Sequence
 from contextlib import contextmanager
 from typing import Any
 
@@ -36,7 +36,8 @@ class Params(PluginParams):
 
     scheduler: str | None = Field(None, description="address of a running scheduler, e.g. tcp://host:8786 "
                                   "(default: start a LocalCluster and close it at the end)")
-    workers: int | None = Field(None, ge=1, description="processes of the LocalCluster (default: the CPU count)")
+    workers: int | None = Field(None, ge=1, description="processes of the LocalCluster (default: the CPU count; "
+                                "never more than the batch's pairs)")
 
 
 @contextmanager
@@ -54,10 +55,15 @@ def g2s_execute(
     function: Callable[[Any], dict[str, Any]], items: Sequence[Any], params: Params, lost: Callable[[Any, str], dict[str, Any]]
 ) -> Iterator[dict[str, Any]]:
     """Each item as a Dask task, yielded as it finishes; an item whose workers died running it is ``lost``, the others
-    run (Dask tries it on another worker first: ``distributed.scheduler.allowed-failures``, 3 by default), unless the
-    local cluster has gone :data:`NO_WORKERS_LIMIT` seconds without a worker: then every item left is ``lost``."""
-    from dask.distributed import Client, LocalCluster, as_completed
-    from distributed.scheduler import KilledWorker
+    run, unless the local cluster has gone :data:`NO_WORKERS_LIMIT` seconds without a worker: then every item left is
+    ``lost``.
+
+    Dask tries an item on another worker when its worker dies (``distributed.scheduler.allowed-failures``, 3 by
+    default), and counts a death against every item the worker held, those waiting there too: a sound item queued on
+    the worker of one that kills it failed with it. The items Dask gave up on run again one at a time, alone on the
+    cluster, where the one whose workers die is ``lost``.
+    """
+    from dask.distributed import Client, LocalCluster
 
     if params.scheduler:
         cluster = None
@@ -70,34 +76,62 @@ def g2s_execute(
         with _children_ignore_interrupt():
             # a pair's failure reaches g2s through its future; Dask's own ERROR lines (a worker's heartbeat to a
             # scheduler that Ctrl-C is closing, seen under load) would break the one-line "g2s: interrupted"
+            # no more workers than pairs: each starts a process up front (2 pairs on `--workers 8`: 7.9-9.9 s, capped 5.6-5.7)
             cluster = LocalCluster(
-                n_workers=params.workers or os.cpu_count(), threads_per_worker=1, processes=True,
-                dashboard_address=":0", silence_logs=logging.CRITICAL,
+                n_workers=max(1, min(params.workers or os.cpu_count() or 1, len(items))), threads_per_worker=1,
+                processes=True, dashboard_address=":0", silence_logs=logging.CRITICAL,
             )
         client = Client(cluster)
     # pure=False: a pair is run again when asked again (resume decides what is finished, not Dask's cache)
     futures = {client.submit(function, item, pure=False): item for item in items}
     with interrupts_held() as interrupts:  # acted on once the cluster is closed (INTERRUPT_POLL)
         try:
-            completed = as_completed(futures)
-            staffed = time.monotonic()
-            while not (interrupts or completed.is_empty()):
-                finished = completed.next_batch(block=False)
-                if cluster is None or cluster.scheduler_info.get("workers"):
-                    staffed = time.monotonic()
-                elif not finished and time.monotonic() - staffed > NO_WORKERS_LIMIT:  # those finished are yielded first
-                    yield from (lost(futures[f], NO_WORKERS) for f in futures if not f.done())
-                    return
-                if not finished:
-                    time.sleep(INTERRUPT_POLL)
-                for future in finished:
-                    try:
-                        row = future.result()
-                    except KilledWorker:  # which ended the batch, exit 1 blaming this plugin in Dask's 600 characters
-                        row = lost(futures[future], "every Dask worker that held it died")
-                    yield row
+            suspects = yield from _finished(futures, cluster, interrupts, lost)
+            while suspects and not interrupts:
+                item, *suspects = suspects
+                alone = {client.submit(function, item, pure=False): item}
+                futures.update(alone)  # to be cancelled with the others
+                killed = yield from _finished(alone, cluster, interrupts, lost, later=suspects)
+                if killed is None:  # no worker left: the suspects were lost with it
+                    break
+                if killed:
+                    yield lost(item, "every Dask worker that held it died")
         finally:
             client.cancel([f for f in futures if not f.done()])
             client.close()
             if cluster is not None:
                 cluster.close()
+
+
+def _finished(
+    futures: dict[Any, Any], cluster: Any, interrupts: list[int], lost: Callable[[Any, str], dict[str, Any]],
+    later: Sequence[Any] = (),
+) -> Generator[dict[str, Any], None, list[Any] | None]:
+    """Yield the row of each of ``futures`` (future: item) as it finishes; return the items whose workers all died
+    (Dask's ``KilledWorker``), in the order they did, to run again. Stops early on an interrupt.
+
+    When the local ``cluster`` (``None``: a scheduler's) has gone :data:`NO_WORKERS_LIMIT` seconds without a worker,
+    the items not finished, those to run again and the items ``later`` are ``lost``, and ``None`` is returned."""
+    from dask.distributed import as_completed
+    from distributed.scheduler import KilledWorker
+
+    suspects: list[Any] = []
+    completed = as_completed(futures)
+    staffed = time.monotonic()
+    while not (interrupts or completed.is_empty()):
+        finished = completed.next_batch(block=False)
+        if cluster is None or cluster.scheduler_info.get("workers"):
+            staffed = time.monotonic()
+        elif not finished and time.monotonic() - staffed > NO_WORKERS_LIMIT:  # those finished are yielded first
+            yield from (lost(item, NO_WORKERS) for item in [*(futures[f] for f in futures if not f.done()), *suspects, *later])
+            return None
+        if not finished:
+            time.sleep(INTERRUPT_POLL)
+        for future in finished:
+            try:
+                row = future.result()
+            except KilledWorker:  # it killed its workers, or waited on a worker another item killed
+                suspects.append(futures[future])
+                continue
+            yield row
+    return suspects

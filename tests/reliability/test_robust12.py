@@ -156,13 +156,14 @@ def test_a_pair_whose_worker_dies_fails_alone(executor, signal_name, tmp_path):
 
     summary = pd.read_csv(out / "summary.csv")
     status = {(config, level): state for config, level, state in zip(summary["config"], summary["level"], summary["status"])}
-    # Dask sends a worker more than one pair of a small batch, and a sound pair waiting on a dying worker fails with it
-    # (as often as not at load 15); the process pool runs such a pair again
+    # both executors run again alone the pairs that were on a dying worker (robust14), but a local Dask cluster left
+    # without any worker loses its pairs left (NO_WORKERS, seen under load)
     sound = [("good", level) for level in ("straight_corridor", "cross_hub") if status[("good", level)] == "ok"]
+    assert len(sound) == 2 or NO_WORKERS in batch.stderr, batch.stderr
     assert len(status) == 4 and status[("dies", "cross_hub")] == status[("dies", "straight_corridor")] == "failed"
     # a cluster whose workers all died as they started loses every pair left, seen under load
     stderr = batch.stderr.replace(NO_WORKERS, died)
-    assert (executor == "dask" or len(sound) == 2) and sorted(stderr.splitlines()) == sorted(
+    assert sorted(stderr.splitlines()) == sorted(
         line for line in lines if tuple(line.split(": ")[1].replace(" failed", "").split(" on ")) not in sound)
     assert [p.name for p in out.rglob("*") if "g2s-staging" in p.name] == []
     assert sorted(p.name for p in (out / "good").glob("*") if p.name in {level for _, level in sound}) == sorted(
