@@ -1252,11 +1252,11 @@ def stair_runs(sides: np.ndarray, heights: np.ndarray, mean_width: np.ndarray, e
     links = sparse.coo_array((np.ones(int(inside.sum())), (sides[inside, 0], sides[inside, 1])), shape=(count, count))
     run = csgraph.connected_components(links, directed=False)[1]
     run_area = np.bincount(run[flight], weights=area[flight], minlength=count)
-    flights = np.bincount(run[flight], minlength=count)
     out = flight[ends[:, 0]] & ~flight[ends[:, 1]]  # a run's foot or head: a flight's chokepoint to another region
     small_end = np.zeros(count, dtype=bool)
     np.logical_or.at(small_end, run[ends[out, 0]], area[ends[out, 1]] <= run_area[run[ends[out, 0]]])
-    joined = inside & (flights[run[sides[:, 0]]] >= 2) & ~small_end[run[sides[:, 0]]]
+    # a chokepoint between two flights (a landing) always lies in a run of two flights or more
+    joined = inside & ~small_end[run[sides[:, 0]]]
     return sides[joined]
 
 
