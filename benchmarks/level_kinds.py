@@ -6129,13 +6129,20 @@ def garden(seed: int) -> trimesh.Trimesh:
             p = np.array([x, z]) + rng.uniform(-0.8, 0.8, 2)
             if rng.random() < 0.75 and _clear(p[0] - 1.0, p[0] + 1.0, p[1] - 1.0, p[1] + 1.0, taken):
                 _trunk(s, p, rng.uniform(0.25, 0.4), -0.5, 6.0)
-    for _ in range(int(rng.integers(25, 40))):  # benches along the paths
-        p = np.array([rng.uniform(3.0, size_x - 5.0), rng.uniform(3.0, tz0 - 4.0)])
+    _benches(s, rng, int(rng.integers(25, 40)), size_x - 5.0, tz0 - 4.0, taken)  # along the paths
+    s.ground(0.0, size_x, 0.0, size_z, 0.0, holes)
+    return s.mesh()
+
+
+def _benches(s: _Solids, rng: np.random.Generator, tries: int, x1: float, z1: float,
+             taken: list[tuple[float, float, float, float]]) -> None:
+    """``tries`` benches (1.8 x 0.6 m, 0.5 m high, along x) at plan corners uniform over [3, x1] x [3, z1] m, each
+    placed only 1 m clear of every rectangle of ``taken`` (which then holds it, 1 m round)."""
+    for _ in range(tries):
+        p = np.array([rng.uniform(3.0, x1), rng.uniform(3.0, z1)])
         if _clear(p[0] - 1.0, p[0] + 2.8, p[1] - 1.0, p[1] + 1.6, taken):
             s.box(p[0], p[0] + 1.8, -0.5, 0.5, p[1], p[1] + 0.6)
             taken.append((p[0] - 1.0, p[0] + 2.8, p[1] - 1.0, p[1] + 1.6))
-    s.ground(0.0, size_x, 0.0, size_z, 0.0, holes)
-    return s.mesh()
 
 
 def _stair_tower(s: _Solids, x0: float, z0: float, y0: float, storeys: int, doors: tuple[int, ...] = (0,),
@@ -6197,11 +6204,7 @@ def lighthouse(seed: int) -> trimesh.Trimesh:
             holes.append(_ridged(s, x, x + 1.9, cz, cz + 4.4, -0.5, 1.0))
         taken.append((x - 0.5, x + 2.4, cz - 1.0, cz + 5.4))
     _trees(s, rng, int(rng.integers(90, 120)), land_x - 4.0, land_z, taken, (0.25, 0.45), 6.0)
-    for _ in range(20):
-        p = np.array([rng.uniform(3.0, land_x - 6.0), rng.uniform(3.0, land_z - 4.0)])
-        if _clear(p[0] - 1.0, p[0] + 2.8, p[1] - 1.0, p[1] + 1.6, taken):
-            s.box(p[0], p[0] + 1.8, -0.5, 0.5, p[1], p[1] + 0.6)
-            taken.append((p[0] - 1.0, p[0] + 2.8, p[1] - 1.0, p[1] + 1.6))
+    _benches(s, rng, 20, land_x - 6.0, land_z - 4.0, taken)
     s.ground(0.0, land_x, 0.0, land_z, 0.0, holes)
     # the causeway: out along x, a dog-leg along z, on along x
     l1, dz, l2 = rng.uniform(120.0, 160.0), rng.choice([-1.0, 1.0]) * rng.uniform(20.0, 35.0), rng.uniform(50.0, 70.0)
