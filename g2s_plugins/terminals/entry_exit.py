@@ -1252,11 +1252,13 @@ def _repeated(openings: list[Opening], radius: float, max_turn_deg: float, climb
     opening (the generated ``curb_platform`` turned by 5 to 60 degrees: 2 or 3 per curb gap), and
     an obstacle standing before a doorway splits its samples in two, each seeing part of the door
     (the held-out ``cluttered_room``'s pillar). A narrower opening whose midpoint lies within
-    ``radius`` of a wider one's line in plan and within ``climb`` of it in height, whose extent along
-    it overlaps the wider one's and whose heading is within ``max_turn_deg`` of it is the same opening
-    found again: an edge lies at its samples' height, and samples on a flight's treads see the floor end
-    at its foot within the climb below them (``grand_steps``' foot: a part 0.4 m above the rest on the
-    sampling route, docs/entry_exit.md, "A sixteenth round of piece kinds").
+    ``radius`` of a wider one's line in plan, one of its ends or its midpoint within ``climb`` of it
+    in height, whose extent along it overlaps the wider one's and whose heading is within
+    ``max_turn_deg`` of it is the same opening found again: an edge lies at its samples' heights, and
+    samples on a flight's treads see the floor end at its foot within the climb below them, or down
+    the steps (on the sampling route ``grand_steps``' foot: a part 0.4 m above the rest; a flight of 12
+    risers: a part rising from the foot to 0.82 m above it; docs/entry_exit.md, "A sixteenth round of
+    piece kinds").
     """
     n = len(openings)
     into = np.full(n, -1, dtype=np.int64)
@@ -1273,10 +1275,10 @@ def _repeated(openings: list[Opening], radius: float, max_turn_deg: float, climb
         for j in order[rank + 1 :]:
             if into[j] >= 0 or np.dot(heading[i], heading[j]) < cos_turn:
                 continue
-            mid = 0.5 * (first[j] + last[j]) - first[i]
-            off = mid - np.dot(mid, along) * along
+            points = np.stack([first[j], 0.5 * (first[j] + last[j]), last[j]]) - first[i]  # its ends and middle
+            off = points - np.outer(points @ along, along)
             lo, hi = sorted((np.dot(first[j] - first[i], along), np.dot(last[j] - first[i], along)))
-            near = math.hypot(off[0], off[2]) <= radius and abs(off[1]) <= climb + _SAME_HEIGHT
+            near = math.hypot(off[1, 0], off[1, 2]) <= radius and np.abs(off[:, 1]).min() <= climb + _SAME_HEIGHT
             if near and lo < width[i] and hi > 0.0:
                 into[j] = i
     return into
