@@ -715,3 +715,23 @@ def test_a_sign_above_the_agent_narrows_nothing() -> None:
     level = PIECES15.hanging_sign_corridor(2.1, 1.2)
     widths = sorted(o.width for o in _detect(level.mesh).openings)
     assert len(widths) == 2 and widths[0] > 2.3
+
+
+PIECES13 = benchmark("piece_kinds13")
+
+
+@pytest.mark.parametrize("yaw", [0.0, 22.0])
+def test_a_deck_crossing_over_a_corridor_holds_its_ends_with_the_corridors(yaw: float) -> None:
+    # Two storeys each leaving the piece: the deck's sides closed by its railings, nothing of it dropping into the
+    # piece; before, the one-floor rule kept one level's two ends.
+    level = PIECES13.overpass_crossing()
+    level = pieces.turned(level, yaw) if yaw else level
+    found = np.array([o.position for o in _detect(level.mesh).openings])
+    known = np.array([o.position for o in level.openings])
+    assert pieces.match_openings(found, known) == (4, 4)
+
+
+def test_a_storey_with_ways_off_along_its_sides_holds_no_opening() -> None:
+    # A wall top 3.7 m up, its sides dropping onto the piece's floor: a way out from 60 % of its boundary samples.
+    detection = _detect(pieces.wall_tops().mesh)
+    assert all(o.position[1] < 1.0 for o in detection.openings)
