@@ -732,6 +732,15 @@ def test_a_deck_crossing_over_a_corridor_holds_its_ends_with_the_corridors(yaw: 
 
 
 def test_a_storey_with_ways_off_along_its_sides_holds_no_opening() -> None:
-    # A wall top 3.7 m up, its sides dropping onto the piece's floor: a way out from 60 % of its boundary samples.
+    # A wall top 3.7 m up: its outer side looks out of the piece, its inner one drops onto the piece's floor.
     detection = _detect(pieces.wall_tops().mesh)
     assert all(o.position[1] < 1.0 for o in detection.openings)
+
+
+def test_a_wall_top_dropping_into_the_piece_on_both_sides_is_no_storey_of_its_own() -> None:
+    # A wall 1.6 m thick and 2.5 m high across a yard, its ends at the piece's extent: nothing stands along its
+    # top's sides, which drop into the yard; counted as closed, they would make its two ends openings.
+    parts = [_block(0.0, 12.0, 0.0, 8.0, lambda x: -SLAB, lambda x: 0.0),
+             _block(0.0, 12.0, 3.2, 4.8, lambda x: 0.0, lambda x: 2.5)]
+    detection = _detect(trimesh.util.concatenate(parts))
+    assert detection.openings and all(o.position[1] < 1.0 for o in detection.openings)

@@ -352,6 +352,7 @@ class _Ways:
     edge: np.ndarray  # (M,3) where the surface ends along it
     stepped: np.ndarray  # (M,) bool: the way out starts on a step up (``base`` is on its top)
     drop: np.ndarray  # (M,) how far below ``base`` the way out ends, down steps (else 0), m
+    into_piece: np.ndarray  # (M,) bool: a way reaches the surface's end clear, but the piece lies below beyond it
 
 
 def _walkable(caster: RayCaster, face: np.ndarray, s: _Settings) -> np.ndarray:
@@ -486,10 +487,11 @@ def _down_steps(
 def _fan(
     base: np.ndarray, normal: np.ndarray, tangent: np.ndarray, caster: RayCaster, s: _Settings, params: Params,
     reach: float,
-) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """The way out of each point of ``base`` (step 3), the surface's end looked for up to ``reach`` m along each
     direction: (M,) found, (M,3) direction, (M,) distance to the edge, (M,) how far below the point's ground the
-    surface ends there (down steps, else 0)."""
+    surface ends there (down steps, else 0), and (M,) bool: some direction reaches the surface's end clear but
+    for the piece lying below beyond it (a drop into the piece)."""
     outward = np.cross(tangent, normal)  # the walkable side is on the left of the tangent
     m, k = len(base), int(params.fan_count)
     half = math.radians(float(params.fan_half_angle_deg))
@@ -522,11 +524,13 @@ def _fan(
         hits = caster.first_hits(origins, np.tile(dirs[rows], (len(heights), 1))).distance
         barred = (hits.reshape(len(heights), -1) <= (edge[rows] + s.radius)[None, :]).any(axis=0)
         ok[rows[barred]] = False
+    into_piece = np.zeros(m * k, dtype=bool)
     if params.leave_footprint and ok.any():
         rows = np.nonzero(ok)[0]
         beyond = lifted[rows] + dirs[rows] * (edge[rows] + s.radius)[:, None]
         below = caster.first_hits(beyond, -UP).distance
         above = caster.first_hits(beyond, UP).distance
+        into_piece[rows[np.isfinite(below)]] = True
         # Above, only what the agent could not stand under blocks the way (the head-room rule): eaves do not.
         ok[rows[np.isfinite(below) | (above < s.head)]] = False
     # The soonest way out; among equals, the one closest to straight out.
@@ -534,7 +538,8 @@ def _fan(
     pick = np.argmin(cost, axis=1)
     found = np.isfinite(cost[np.arange(m), pick])
     chosen = np.arange(m) * k + pick
-    return found, dirs[chosen], np.nan_to_num(edge[chosen]), np.where(found, drop[chosen], 0.0)
+    return (found, dirs[chosen], np.nan_to_num(edge[chosen]), np.where(found, drop[chosen], 0.0),
+            into_piece.reshape(m, k).any(axis=1))
 
 
 def _step_tops(
@@ -569,26 +574,27 @@ def _ways_out(
 ) -> _Ways:
     base, normal = _snap(samples, polygon_normals, caster, s)
     tangent = _unit(samples.tangent - np.einsum("ij,ij->i", samples.tangent, normal)[:, None] * normal)
-    found, direction, reach, drop = _fan(base, normal, tangent, caster, s, params, s.search)
+    found, direction, reach, drop, into_piece = _fan(base, normal, tangent, caster, s, params, s.search)
     if s.farther > s.search and not found.all():
         # A sampled surface's boundary stands farther inside the floor than a navmesh's: a sample that finds no
         # way out within the navmesh route's reach looks again as far as the sampling allows.
         rows = np.nonzero(~found)[0]
-        found[rows], direction[rows], reach[rows], drop[rows] = _fan(base[rows], normal[rows], tangent[rows], caster,
-                                                                     s, params, s.farther)
+        far = _fan(base[rows], normal[rows], tangent[rows], caster, s, params, s.farther)
+        found[rows], direction[rows], reach[rows], drop[rows] = far[:4]
+        into_piece[rows] |= far[4]
     stepped = np.zeros(len(base), dtype=bool)
     if params.step_up:
         rows = np.nonzero(~found)[0]
         near, top = _step_tops(base[rows], normal[rows], np.cross(tangent[rows], normal[rows]), caster, s, params)
         rows, top = rows[near], top[near]
         if len(rows):
-            up_found, up_direction, up_reach, up_drop = _fan(top, normal[rows], tangent[rows], caster, s, params,
-                                                             s.search)
+            up_found, up_direction, up_reach, up_drop, _ = _fan(top, normal[rows], tangent[rows], caster, s, params,
+                                                                s.search)
             rows, top = rows[up_found], top[up_found]
             base[rows], found[rows], stepped[rows] = top, True, True
             direction[rows], reach[rows], drop[rows] = up_direction[up_found], up_reach[up_found], up_drop[up_found]
     edge = base + direction * reach[:, None]
-    return _Ways(base, normal, tangent, found, direction, edge, stepped, drop)
+    return _Ways(base, normal, tangent, found, direction, edge, stepped, drop, into_piece)
 
 
 # --------------------------------------------------------------------------
@@ -1016,10 +1022,13 @@ def main_floor(
     with a floor that leaves, every other one that leaves too, is no roof and whose lowest polygon lies
     within the climb of the main one's (a polygon's height is its first corner's, not its lowest): the parts
     of a corridor cut by a barrier or by a pass narrower than Recast keeps; not a wall's top, a roof or a
-    ravine's floor below a bridge. ``closed``: (P, 2) each polygon's boundary samples with a way out and
-    without; given, a floor a storey (the agent's height) or more above or below the main one that leaves the
-    piece, with no way out from at least :data:`_WALKWAY_CLOSED` of its boundary samples (walls or railings
-    along its sides), holds openings too: a railed deck crossing over a corridor, and the corridor under it.
+    ravine's floor below a bridge. ``closed``: (P, 2) each polygon's boundary samples closed by what stands on
+    its floor (no way out, and none reaching the floor's end but for the piece lying below beyond it) and all
+    its boundary samples; given,
+    a floor a storey (the agent's height) or more above or below the main one that leaves the piece, with at
+    least :data:`_WALKWAY_CLOSED` of its boundary samples closed (walls or railings along its sides), holds
+    openings too: a railed deck crossing over a corridor, and the corridor under it; not a wall's top whose
+    sides drop into the piece.
     """
     neighbours = np.asarray(navmesh.neighbours)
     if len(neighbours) == 0:
@@ -1050,21 +1059,21 @@ def main_floor(
     np.minimum.at(lowest, label, height)
     kept = leaves & ~roof & (np.abs(lowest - lowest[best]) <= float(agent.max_climb) + _SAME_HEIGHT)
     if closed is not None:  # a storey of its own, walled or railed along its sides
-        counts = np.zeros((len(area), 2))
+        counts = np.zeros((len(area), 2))  # each floor's closed boundary samples, and all of them
         np.add.at(counts, label, np.asarray(closed, dtype=np.float64))
         storey = np.abs(lowest - lowest[best]) >= float(agent.height) - _SAME_HEIGHT
-        kept |= leaves & storey & (counts[:, 1] >= _WALKWAY_CLOSED * counts.sum(axis=1))
+        kept |= leaves & storey & (counts[:, 0] >= _WALKWAY_CLOSED * counts[:, 1])
     kept[best] = True
     return kept[label]
 
 
-_WALKWAY_CLOSED = 2.0 / 3.0
-"""Share of a floor's boundary samples with no way out from which a floor a storey or more from the main one, leaving
-the piece, holds openings too (:func:`main_floor`): walls or railings along its sides. Measured at 0, 22 and 45
-degrees on both routes over the generated families and the tenth to fifteenth rounds' kinds (docs/entry_exit.md,
-"A sixteenth round of piece kinds"): the railed deck crossing ``overpass_crossing``'s corridor, and the corridor
-under it, 0.74-0.81; every other floor a storey from the main one that leaves the piece (roofs, wall and hedge
-tops, a cliff's top) 0.00-0.59, most of it where their sides drop into the piece."""
+_WALKWAY_CLOSED = 0.6
+"""Share of a floor's boundary samples closed by what stands on it (no way out, none dropping into the piece) from
+which a floor a storey or more from the main one, leaving the piece, holds openings too (:func:`main_floor`): walls or
+railings along its sides. Measured at 0, 22 and 45 degrees on both routes over the generated families and the
+tenth to fifteenth rounds' kinds (docs/entry_exit.md, "A sixteenth round of piece kinds"): the railed deck crossing
+``overpass_crossing``'s corridor, and the corridor under it, 0.74-0.81; every other floor a storey from the main
+one that leaves the piece (roofs, wall and hedge tops, a cliff's top) 0.00-0.44."""
 
 _ROOF_SHARE = 0.1
 """A floor over other floors of at least this share of its own area, an agent's height or more below, is a roof.
@@ -1320,8 +1329,9 @@ def detect_openings(
         looks_out = np.zeros(len(surface.areas), dtype=bool)
         for g in segments:
             looks_out[samples.polygon[g]] = True
-        closed = np.zeros((len(surface.areas), 2))  # each polygon's boundary samples with a way out and without
-        np.add.at(closed, (samples.polygon, (~ways.found).astype(np.int64)), 1.0)
+        # each polygon's boundary samples closed by what stands on the floor, and all of them
+        closed = np.zeros((len(surface.areas), 2))
+        np.add.at(closed, samples.polygon, np.stack([~ways.found & ~ways.into_piece, np.ones(len(ways.found), bool)], 1))
         main = main_floor(surface, agent, loops, looks_out, closed)
         segments = [g for g in segments if main[samples.polygon[g]].any()]
     kept = _split_at_piers(_match_edges(segments, ways, caster, s, params), ways, caster, s)
