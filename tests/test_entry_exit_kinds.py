@@ -744,3 +744,13 @@ def test_a_wall_top_dropping_into_the_piece_on_both_sides_is_no_storey_of_its_ow
              _block(0.0, 12.0, 3.2, 4.8, lambda x: 0.0, lambda x: 2.5)]
     detection = _detect(trimesh.util.concatenate(parts))
     assert detection.openings and all(o.position[1] < 1.0 for o in detection.openings)
+
+
+@pytest.mark.parametrize("yaw", [0.0, 22.0])
+def test_a_vault_coming_down_lower_than_the_agent_narrows_the_ends(yaw: float) -> None:
+    # A vault's underside within the agent's slope, met by the head-room rays along the end: before, taken for ground
+    # the agent walks onto (a face is walkable either side up), and the ends measured the floor's 3.0 m.
+    level = benchmark("piece_kinds16").low_vault_tunnel()
+    level = pieces.turned(level, yaw) if yaw else level
+    widths = sorted(o.width for o in _detect(level.mesh).openings)
+    assert len(widths) == 2 and widths == pytest.approx([2.01, 2.01], abs=0.05)  # the vault 1.95 m high, the rays'

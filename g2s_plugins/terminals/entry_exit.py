@@ -942,16 +942,27 @@ def _passages(
         widths[rows] = np.minimum(widths[rows], hits_ahead.distance[low] + hits_back.distance[low])
         # Above the climb, ground the agent walks onto (a terrain rising beside its border) is in no one's way, at
         # either height; at the head-room rays' height, what hangs into the passage lower than the agent is (a sign
-        # over part of it).
-        forward, backward = (np.minimum(*(np.where(h.hit[at] & _walkable(caster, h.face[at], s), np.inf, h.distance[at])
-                                          for at in (high, head)))
-                             for h in (hits_ahead, hits_back))
+        # over part of it, a vault coming down at its sides).
+        forward, backward = (np.minimum(*(np.where(_ground_ahead(caster, h, at, sign * directions[at], s), np.inf,
+                                                   h.distance[at]) for at in (high, head)))
+                             for h, sign in ((hits_ahead, 1.0), (hits_back, -1.0)))
         to_last = np.where(towards_last[rows], forward, backward)
         to_first = np.where(towards_last[rows], backward, forward)
         narrower = to_first + to_last < back[rows] + ahead[rows]
         rows = rows[narrower]
         back[rows], ahead[rows] = to_first[narrower], to_last[narrower]
     return widths, back, ahead
+
+
+def _ground_ahead(caster: RayCaster, hits, at: slice, directions: np.ndarray, s: _Settings) -> np.ndarray:
+    """(n,) bool: the rays ``at`` of ``hits``, cast along ``directions`` (n,3), met ground the agent walks onto: a face
+    within its slope either side up (meshes are not always wound one way), but not one met on its front that faces
+    down, a ceiling or a vault coming down ahead. A ray starting inside a hill rising beside a terrain's border meets
+    the ground from behind, facing up: ground (its border's openings stay whole)."""
+    faces = np.maximum(hits.face[at], 0)
+    normals = caster.face_normals[faces]
+    ceiling = (np.einsum("ij,ij->i", normals, directions) < 0.0) & (normals @ UP <= -s.walkable_cos)
+    return hits.hit[at] & _walkable(caster, hits.face[at], s) & ~ceiling
 
 
 def _free_part(
