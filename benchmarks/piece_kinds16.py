@@ -14,22 +14,17 @@ import sys
 from functools import partial
 
 import numpy as np
-import trimesh
 from piece_kinds10 import SLAB, _arc_band, _box, _hull, _room
 from piece_kinds10 import _level as _level10
 from piece_kinds10 import kinds_by_name, main as _run_kinds
 from piece_kinds14 import _corridor
+from piece_kinds15 import _prism
 
 from g2s_plugins.samples import pieces
 from g2s_plugins.samples.levels import SampleLevel, _opening
 from g2s_plugins.samples.pieces import _E, _N, _S, _W
 
 _level = partial(_level10, round_=16)  # the tenth round's, tagged with this round
-
-
-def _quad(corners, y0: float, y1: float) -> trimesh.Trimesh:
-    """The vertical prism over the convex plan quadrilateral ``corners`` ((x, z), metres) from ``y0`` to ``y1``."""
-    return _hull([[x, y, z] for x, z in corners for y in (y0, y1)])
 
 
 def catwalk_over_hall() -> SampleLevel:
@@ -103,9 +98,9 @@ def kinked_bridge(width: float = 2.0, turn_deg: float = 45.0) -> SampleLevel:
     left_out, right_out = _mitred(centre, h + 0.1)
     parts = []
     for i in range(2):
-        parts.append(_quad([right[i], right[i + 1], left[i + 1], left[i]], -SLAB, 0.0))
-        parts.append(_quad([left[i], left[i + 1], left_out[i + 1], left_out[i]], -SLAB, 1.0))
-        parts.append(_quad([right[i], right[i + 1], right_out[i + 1], right_out[i]], -SLAB, 1.0))
+        parts.append(_prism([right[i], right[i + 1], left[i + 1], left[i]], -SLAB, 0.0))
+        parts.append(_prism([left[i], left[i + 1], left_out[i + 1], left_out[i]], -SLAB, 1.0))
+        parts.append(_prism([right[i], right[i + 1], right_out[i + 1], right_out[i]], -SLAB, 1.0))
     heading = (math.cos(a), 0.0, math.sin(a))
     return _level("kinked_bridge", parts, [_opening((0.0, 0.0, h), _W, width), _opening((end[0], 0.0, end[1]), heading, width)])
 
