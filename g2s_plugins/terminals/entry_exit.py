@@ -21,11 +21,13 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
    lies about ``r`` inside the real edge; it ends where two rays in a row meet
    no walkable face, so a crack between floor tiles is no edge; a ray meets
    the surface within the climb of the ground the one before it stood on, so
-   the search walks down a stair). A direction
+   the search walks down a stair; on a sampled surface, whose boundary stands
+   farther inside the floor, a sample finding no way out looks again up to
+   the sampling builder's clearance plus 1.5 spacings, :func:`sampled_edge_search`). A direction
    is a way out when the edge is found, the ray along it stays clear for
    ``outward_radii * r`` (no wall, jamb or curb higher than ``h`` in the
    way), the same way a search step below the agent's height is clear up to
-   the edge (head room: no lintel lower than the agent), the same way at every search
+   the edge (head room: no lintel lower than the agent), the same way at every half search
    step of height from the climb up to that is clear one agent radius past
    the edge (no rail of a railing between its posts) and, with
    ``leave_footprint``, one agent radius beyond the edge nothing of the piece
@@ -56,7 +58,8 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
    surface goes on inside the edge, ends just outside it, and nothing stands
    in the way or straight out: this undoes the retreat from walls. An
    opening overlapping a wider one along the same line, facing the same way,
-   is the same opening found twice: the wider one is stretched along its line
+   is the same opening found twice (its middle within ``r`` of the wider one's line in plan, an end or its
+   middle within the climb of it in height): the wider one is stretched along its line
    to span both and the other dropped, again until none overlaps a wider one.
 6. Priors, each measured on the generated pieces of
    :mod:`g2s_plugins.samples.pieces` (docs/entry_exit.md):
@@ -67,8 +70,8 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
      clear width across, between their edge and the navmesh, is no wider
      (bars across a doorway); an opening is the narrowest free part of that
      passage above the climb and at the head-room rays' height (a sliding
-     leaf or a rubble chunk in the wall, or a sign hanging lower than the
-     agent, leaves part of the door);
+     leaf or a rubble chunk in the wall, or a sign hanging or a vault coming
+     down lower than the agent, leaves part of the door);
    * jambs (``step_up``): an opening found from step tops needs something
      at half the agent's height within two search steps of both its ends
      (a threshold's jambs); a curb along the piece's edge has none;
@@ -79,7 +82,10 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
      ``r`` at the same height (Recast's grid cuts narrow passages at some yaws),
      and a floor over others (a closed ceiling's top) is a roof, never the main one;
      other floors leaving the piece at the main floor's level (within the climb)
-     hold openings with it (a corridor cut in two by a barrier);
+     hold openings with it (a corridor cut in two by a barrier), and so do
+     the storeys (an agent's height or more from it) leaving the piece that
+     walls or railings close along most of their boundary (a deck over a
+     corridor);
    * outer extent (``extent_heights``): modular pieces meet their neighbours
      at their outer extent, facing out. The opening's gap to the piece's
      extent along its heading (the largest ``vertex . heading`` over the faces
@@ -236,7 +242,8 @@ class Params(PluginParams):
         gt=0,
         description="how far beyond the navmesh boundary the surface's edge is looked for, agent radii "
         "(Recast's erosion, plus the wall's thickness where it closes a doorway barely wider than the agent: "
-        "up to 1.2 m for walls 0.8 m thick)",
+        "up to 1.2 m for walls 0.8 m thick); on a sampled surface a sample finding nothing within it looks again "
+        "up to the sampling builder's clearance plus 1.5 spacings",
     )
     edge_tolerance_radii: float = Field(
         0.25,
@@ -266,7 +273,8 @@ class Params(PluginParams):
         True,
         description="keep only openings on the navmesh floor of largest area (a component with those whose "
         "boundary comes within one agent radius at the same height: the main floor and what is reachable from it) "
-        "and the floors at its level that leave the piece too; false: every component's",
+        "and the floors at its level that leave the piece too, and the storeys leaving it that walls or railings "
+        "close along most of their boundary; false: every component's",
     )
     extent_heights: float | None = Field(
         0.5,
