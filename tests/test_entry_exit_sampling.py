@@ -234,7 +234,7 @@ def test_a_flights_foot_seen_from_several_treads_is_one_opening() -> None:
 
 
 def test_a_roof_walled_less_than_a_storey_up_holds_no_opening() -> None:
-    # The sloping tunnel's roof, between its walls where they stand above it: no way out from 68 % of its boundary
+    # The sloping tunnel's roof, between its walls where they stand above it: closed along 68 % of its boundary
     # samples at 22 degrees, but 1.8 m over the floor, less than the agent's height: no storey of its own.
     level = pieces.turned(benchmark("piece_kinds15").sloped_ceiling_tunnel(), 22.0)
     found, _, _, _ = _openings(level)
