@@ -287,8 +287,8 @@ class Params(PluginParams):
 
 
 SAMPLED_SEARCH_SPACINGS = 1.5
-"""Sample spacings: on a sampled surface the edge search reaches the builder's clearance plus this many spacings
-(:func:`sampled_edge_search`). The surface's boundary runs between samples, which a Poisson-disk pick over
+"""Sample spacings: on a sampled surface a sample finding no way out within ``edge_search_radii * r`` looks again up
+to the builder's clearance plus this many spacings (:func:`sampled_edge_search`). The surface's boundary runs between samples, which a Poisson-disk pick over
 candidates leaves up to about a spacing inside the eroded floor, and farther where no candidate fell near its
 edge: over the 564 known openings of the generated families and the tenth to fifteenth rounds' kinds at 0, 22
 and 45 degrees, the boundary stood at most the clearance plus 1.46 spacings (1.56 m) from the floor's end
@@ -296,8 +296,8 @@ and 45 degrees, the boundary stood at most the clearance plus 1.46 spacings (1.5
 
 
 def sampled_edge_search(spacing: float, clearance: float) -> float:
-    """How far beyond a sampled surface's boundary, square to it, the floor's end is looked for, m: the builder's
-    ``clearance`` plus :data:`SAMPLED_SEARCH_SPACINGS` sample ``spacing`` (m)."""
+    """How far beyond a sampled surface's boundary a sample finding no way out looks again for the floor's end, m: the
+    builder's ``clearance`` plus :data:`SAMPLED_SEARCH_SPACINGS` sample ``spacing`` (m)."""
     return clearance + SAMPLED_SEARCH_SPACINGS * spacing
 
 
