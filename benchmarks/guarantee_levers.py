@@ -11,15 +11,14 @@ ranks; ``(p)`` after it: a 2,048-source linearly scaled sample stands for it on 
 whether the run warned about its heat map, the area within 6 m of the joined structure and the reference traffic
 more than 5 m from it, the guarantee's rounds, and, over every round (each structure the guarantee measured), the
 largest gap between each reading and the exact rho: ``own`` (the heat map against its own sample, the reading of an
-independent sample with the margin ``MARGINS``), ``pooled`` (against the mean of its own sample and the confirming
-one, the reading of a ``spread`` sample with ``POOLED_MARGINS``). Gaps are given only against an exact flow.
+independent sample with the margin ``MARGINS``), ``pooled`` (against the mean of its own sample and the second one,
+:func:`g2s_plugins.heat_guarantee.second_sample`: the reading of a ``spread`` sample with ``POOLED_MARGINS``). Gaps are given only against an exact flow.
 
 Candidates (each a set of the preset's parameters, the rest as the preset says):
 
 * ``base``: the preset as it is;
 * ``spread``: the heat map's and the ``flow`` analyzer's sample drawn spread (``heat_sampling`` and ``sampling``
-  ``spread``, :mod:`g2s_plugins.traffic`); the guarantee reads it pooled;
-* ``spread512``: ``spread`` with 512 sources (``heat_sources`` and ``max_sources``).
+  ``spread``, :mod:`g2s_plugins.traffic`); the guarantee reads it pooled.
 
 ``--pooled-margin`` sets the guarantee's margin for a pooled reading (``POOLED_MARGINS['linear']``) for this process
 only, to measure what a margin would give. Reference flows are read from and written to the first
@@ -51,7 +50,6 @@ from g2s_plugins import evaluation, heat_guarantee, traffic
 CANDIDATES: dict[str, dict[str, object]] = {
     "base": {},
     "spread": {"heat_sampling": "spread", "sampling": "spread"},
-    "spread512": {"heat_sampling": "spread", "sampling": "spread", "heat_sources": 512, "max_sources": 512},
 }
 """Each candidate's parameters: ``heat_*`` of the ``simplify`` stage, the others of the first analyzer (``flow``)."""
 
@@ -126,9 +124,10 @@ def measure(name: str, mesh: trimesh.Trimesh, candidate: str, plan: pipeline.Pla
     reference, exact = reference_flow(name, graph, directories, exact_up_to)
     simplify = plan.stages["simplify"][0].params
     order = traffic.sampling_order(graph, simplify.heat_sampling)
-    flows = [traffic.arrays_walking_flow(arrays, simplify.heat_sources, seed=seed, ties=simplify.heat_ties,
-                                         scaling=simplify.heat_scaling, order=order) for seed in (0, heat_guarantee.CONFIRMING_SEED)]
-    shown, pooled = flows[0], (flows[0] + flows[1]) / 2.0
+    shown = traffic.arrays_walking_flow(arrays, simplify.heat_sources, ties=simplify.heat_ties,
+                                        scaling=simplify.heat_scaling, order=order)
+    pooled = (shown + heat_guarantee.second_sample(arrays, simplify.heat_sources, simplify.heat_ties,
+                                                   simplify.heat_scaling, order)) / 2.0
     rounds = []
     for nodes in log.structures:
         heat = evaluation.placement_heat(graph, nodes, shown)

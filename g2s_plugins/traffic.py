@@ -496,26 +496,29 @@ def walking_sources(
     Args:
         order: (n,) every row once (:func:`plan_order`): the ``max_sources`` draws are spread along it, the nodes
             whose weights, laid end to end in this order, hold the points ``u + i weight.sum() / max_sources``
-            (i = 0 .. max_sources - 1, one uniform ``u`` below the step); ``None``: drawn independently.
+            (i = 0 .. max_sources - 1, one uniform ``u`` below the step, drawn from the first stream
+            ``numpy.random.SeedSequence(seed).spawn`` gives, so that its errors are independent of those of the
+            independent sample of the same seed); ``None``: drawn independently.
 
     Returns:
         sources: (k,) rows: every node of positive weight when there are at most ``max_sources`` of them (or
             ``max_sources`` is ``None``), else the distinct nodes of ``max_sources`` draws in proportion to weight,
-            with replacement or spread (``numpy.random.default_rng(seed)``).
+            with replacement (``numpy.random.default_rng(seed)``) or spread.
         factor: (k,) each source's factor: its weight, or its draws times ``weight.sum() / max_sources``.
         sampled: the number of draws, or ``None`` when every weighted node is a source.
     """
     candidates = np.flatnonzero(weight > 0)
     if max_sources is None or candidates.size <= max_sources:
         return candidates, weight[candidates], None
-    rng = np.random.default_rng(seed)
     if order is None:
+        rng = np.random.default_rng(seed)
         draws = rng.choice(candidates, size=max_sources, replace=True, p=weight[candidates] / weight[candidates].sum())
-    else:
+    else:  # its start from a stream spawned off the seed's: independent of the independent sample of the same seed
+        start = np.random.default_rng(np.random.SeedSequence(seed).spawn(1)[0]).uniform()
         along = np.asarray(order)[weight[order] > 0]
         ends = np.cumsum(weight[along])
         step = ends[-1] / max_sources
-        points = rng.uniform(0.0, step) + step * np.arange(max_sources)
+        points = (start + np.arange(max_sources)) * step
         draws = along[np.minimum(np.searchsorted(ends, points, side="right"), along.size - 1)]
     sources, counts = np.unique(draws, return_counts=True)
     return sources, counts * (weight.sum() / max_sources), max_sources
