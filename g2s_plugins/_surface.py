@@ -29,7 +29,7 @@ from dataclasses import dataclass
 
 import networkx as nx
 import numpy as np
-from pydantic import Field
+from pydantic import Field, model_validator
 
 from g2s_core.config import AgentConfig
 from g2s_core.errors import PluginError
@@ -101,6 +101,18 @@ class CollapseParams(PluginParams):
         traffic.WALKING_SAMPLING, description="how that walking flow draws its sources (independent or spread): set as "
         "the flow analyzer's sampling"
     )
+
+    @model_validator(mode="after")
+    def _pooled_margin_measured(self) -> CollapseParams:
+        """A spread heat map is read pooled (:data:`g2s_plugins.heat_guarantee.POOLED_MARGINS`), whose margin is
+        measured for some scalings only."""
+        from g2s_plugins.heat_guarantee import POOLED_MARGINS  # it imports this module
+
+        if self.min_heat_rho is not None and self.heat_sampling == "spread" and self.heat_scaling not in POOLED_MARGINS:
+            raise ValueError(f"min_heat_rho with heat_sampling: spread needs heat_scaling {' or '.join(POOLED_MARGINS)} "
+                             f"(the guarantee's margin for a spread heat map is measured for that alone), not "
+                             f"{self.heat_scaling}")
+        return self
 
 
 def on_navmesh(navmesh: NavMesh | None, point: Vec, agent: AgentConfig) -> bool:
