@@ -1,7 +1,7 @@
 """The heat guarantee's rounds on the sampling route, read three ways against the exact walking flow, per candidate.
 
 Run: ``.venv/bin/python benchmarks/guarantee_levers.py [--levels nav_test forest cave islets craters:2 ...]
-[--seeds 0] [--candidates base spread] [--reference-dir DIR ...] [--jsonl OUT.jsonl]``
+[--seeds 0] [--candidates independent spread] [--reference-dir DIR ...] [--jsonl OUT.jsonl] [--noise SEEDS]``
 
 For every level (the names ``benchmarks/analysis_quality.py`` takes; ``name:seed`` for one seed of a generated
 level) and candidate it runs ``--preset`` (``map_analysis_sampling``) in memory, one run at a time, and prints:
@@ -16,9 +16,15 @@ independent sample with the margin ``MARGINS``), ``pooled`` (against the mean of
 
 Candidates (each a set of the preset's parameters, the rest as the preset says):
 
-* ``base``: the preset as it is;
+* ``independent``: the heat map's and the ``flow`` analyzer's sample drawn independently (``heat_sampling`` and
+  ``sampling`` ``independent``: ``map_analysis_sampling`` before 5 December 2026); the guarantee reads it against its
+  own sample;
 * ``spread``: the heat map's and the ``flow`` analyzer's sample drawn spread (``heat_sampling`` and ``sampling``
   ``spread``, :mod:`g2s_plugins.traffic`); the guarantee reads it pooled.
+
+``--noise SEEDS`` prints instead, per level, how close the heat map's sample comes to the reference: the Spearman
+rho over the nodes of its flow, and of the heat map that flow gives the ``independent`` candidate's final structure, drawn
+independently, spread, and as the pool of two independent samples (512 sources), each the mean over SEEDS seeds.
 
 ``--pooled-margin`` sets the guarantee's margin for a pooled reading (``POOLED_MARGINS['linear']``) for this process
 only, to measure what a margin would give. Reference flows are read from and written to the first
@@ -48,7 +54,7 @@ from g2s_core.registry import Registry
 from g2s_plugins import evaluation, heat_guarantee, traffic
 
 CANDIDATES: dict[str, dict[str, object]] = {
-    "base": {},
+    "independent": {"heat_sampling": "independent", "sampling": "independent"},
     "spread": {"heat_sampling": "spread", "sampling": "spread"},
 }
 """Each candidate's parameters: ``heat_*`` of the ``simplify`` stage, the others of the first analyzer (``flow``)."""
@@ -152,6 +158,34 @@ def measure(name: str, mesh: trimesh.Trimesh, candidate: str, plan: pipeline.Pla
     )
 
 
+def sample_noise(name: str, mesh: trimesh.Trimesh, plan: pipeline.Plan, registry: Registry, directories: list[Path],
+                 exact_up_to: int, seeds: int) -> dict:
+    """How close the sample of ``plan`` (the ``independent`` candidate's) comes to the reference, drawn independently,
+    spread, and two independent ones pooled: Spearman rho of each flow against the reference over the nodes, and of
+    the heat map it gives the run's final structure, averaged over ``seeds`` seeds (0, 1, ...; the pool: seeds 2i and 2i + 1)."""
+    result = pipeline.run(plan, registry, mesh, name, mesh_sha256(mesh))
+    graph = result.graph
+    arrays = traffic.surface_arrays(graph)
+    reference, exact = reference_flow(name, graph, directories, exact_up_to)
+    simplify = plan.stages["simplify"][0].params
+    nearest = evaluation.nearest_structure_rows(result)
+
+    def flow(seed: int, order: np.ndarray | None) -> np.ndarray:
+        return traffic.arrays_walking_flow(arrays, simplify.heat_sources, seed=seed, ties=simplify.heat_ties,
+                                           scaling=simplify.heat_scaling, order=order)
+
+    samples = {
+        "independent": [flow(seed, None) for seed in range(seeds)],
+        "spread": [flow(seed, traffic.plan_order(graph)) for seed in range(seeds)],
+        "pooled2": [(flow(2 * seed, None) + flow(2 * seed + 1, None)) / 2.0 for seed in range(seeds)],
+    }
+    row = dict(level=name, samples=arrays.n, exact=exact, share=round(100 * result.structure.number_of_nodes() / arrays.n, 2))
+    for kind, flows in samples.items():
+        row[f"{kind}_nodes"] = round(float(np.mean([evaluation.spearman(f, reference) for f in flows])), 4)
+        row[f"{kind}_heat"] = round(float(np.mean([evaluation.spearman(evaluation.placement_heat(graph, result.structure, f, nearest), reference) for f in flows])), 4)
+    return row
+
+
 def main(argv: list[str] | None = None) -> None:
     """The table for ``argv`` (the command line when None)."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
@@ -159,7 +193,7 @@ def main(argv: list[str] | None = None) -> None:
     parser.add_argument("--levels", nargs="+", default=["nav_test", "forest", "cave", "islets", "craters:2"],
                         help="level names as benchmarks/analysis_quality.py takes them; name:seed for one seed")
     parser.add_argument("--seeds", nargs="+", type=int, default=[0], help="seeds of generated levels named without one")
-    parser.add_argument("--candidates", nargs="+", default=["base", "spread"], choices=sorted(CANDIDATES),
+    parser.add_argument("--candidates", nargs="+", default=["independent", "spread"], choices=sorted(CANDIDATES),
                         help="run one after the other on each level")
     parser.add_argument("--pooled-margin", type=float, default=None,
                         help="the guarantee's margin for a pooled reading (POOLED_MARGINS['linear']) in this process")
@@ -168,11 +202,25 @@ def main(argv: list[str] | None = None) -> None:
     parser.add_argument("--exact-up-to", type=int, default=8000,
                         help="graphs with at most this many nodes get the exact reference, larger ones a proxy")
     parser.add_argument("--jsonl", type=Path, default=None, help="also append every row, with its rounds, here")
+    parser.add_argument("--noise", type=int, default=0, metavar="SEEDS",
+                        help="instead of the candidates' runs: per level, the rho of the preset's own sample against the "
+                             "reference, drawn independently, spread and two independent pooled, over this many seeds")
     args = parser.parse_args(argv)
     if args.pooled_margin is not None:
         heat_guarantee.POOLED_MARGINS["linear"] = args.pooled_margin
     registry = Registry.from_entry_points()
     raw = load_raw_config(find_config(args.preset))
+    if args.noise:
+        plan = candidate_plan(raw, args.preset, CANDIDATES["independent"], registry)
+        kinds = ("independent", "spread", "pooled2")
+        print(f"{'level':<16} {'samples':>7} {'share':>6}  rho of the nodes' flow (" + " / ".join(kinds)
+              + ")  rho of the heat map at the structure (" + " / ".join(kinds) + ")")
+        for name, mesh in level_items(args.levels, args.seeds):
+            row = sample_noise(name, mesh, plan, registry, args.reference_dir, args.exact_up_to, args.noise)
+            print(f"{name:<16} {row['samples']:>7} {row['share']:5.2f}%  "
+                  + " / ".join(f"{row[k + '_nodes']:.4f}" for k in kinds) + ("" if row["exact"] else " (p)") + "  "
+                  + " / ".join(f"{row[k + '_heat']:.4f}" for k in kinds), flush=True)
+        return
     plans = {name: candidate_plan(raw, args.preset, CANDIDATES[name], registry) for name in args.candidates}
     print(f"load average {os.getloadavg()[0]:.1f}; pooled margin {heat_guarantee.POOLED_MARGINS['linear']:g}, "
           f"own margin {heat_guarantee.MARGINS['linear']:g}")
