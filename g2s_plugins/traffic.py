@@ -207,8 +207,8 @@ defaults to as well (a traffic-aware ``coverage`` always draws them independentl
 
 HILBERT_BITS = 16
 """Bits per axis of the grid :func:`plan_order` orders the nodes on: 65,536 cells along the level's longer side in
-plan (1.5 mm a cell on a 100 m level, 15 mm on 1 km), finer than any two samples or polygon centres lie apart, so
-that nodes share a cell only where they lie above one another."""
+plan (1.5 mm a cell on a 100 m level, 15 mm on 1 km, 1.5 m on 100 km). Nodes in one cell (above one another, or
+closer than a cell) keep their row order."""
 
 EXACT_NODES = 2000
 """The heat-map guarantee (:mod:`g2s_plugins.heat_guarantee`) and the evaluation's reference
