@@ -29,7 +29,7 @@ from dataclasses import dataclass
 
 import networkx as nx
 import numpy as np
-from pydantic import Field
+from pydantic import Field, model_validator
 
 from g2s_core.config import AgentConfig
 from g2s_core.errors import PluginError
@@ -97,6 +97,22 @@ class CollapseParams(PluginParams):
     heat_scaling: traffic.Scaling = Field(
         traffic.WALKING_SCALING, description="that walking flow's sampled pairs (none or linear): set as the flow analyzer's scaling"
     )
+    heat_sampling: traffic.Sampling = Field(
+        traffic.WALKING_SAMPLING, description="how that walking flow draws its sources (independent or spread): set as "
+        "the flow analyzer's sampling"
+    )
+
+    @model_validator(mode="after")
+    def _pooled_margin_measured(self) -> CollapseParams:
+        """A spread heat map is read pooled (:data:`g2s_plugins.heat_guarantee.POOLED_MARGINS`), whose margin is
+        measured for some scalings only."""
+        from g2s_plugins.heat_guarantee import POOLED_MARGINS  # it imports this module
+
+        if self.min_heat_rho is not None and self.heat_sampling == "spread" and self.heat_scaling not in POOLED_MARGINS:
+            raise ValueError(f"min_heat_rho with heat_sampling: spread needs heat_scaling {' or '.join(POOLED_MARGINS)} "
+                             f"(the guarantee's margin for a spread heat map is measured for that alone), not "
+                             f"{self.heat_scaling}")
+        return self
 
 
 def on_navmesh(navmesh: NavMesh | None, point: Vec, agent: AgentConfig) -> bool:
@@ -148,13 +164,14 @@ def edge_surface_gaps(structure: nx.Graph, navmesh: NavMesh, agent: AgentConfig,
 
 def traffic_ranks(
     graph: nx.Graph, sources: int = traffic.WALKING_SOURCES, ties: traffic.Ties = traffic.WALKING_TIES,
-    scaling: traffic.Scaling = traffic.WALKING_SCALING,
+    scaling: traffic.Scaling = traffic.WALKING_SCALING, sampling: traffic.Sampling = traffic.WALKING_SAMPLING,
 ) -> dict[Hashable, float]:
     """Walking-flow percentile rank (0-100) of each node of ``graph`` that some walk starts at or passes through.
 
     The rank is :func:`g2s_plugins.traffic.percentile` of
     :func:`g2s_plugins.traffic.walking_flow` of ``sources`` area-sampled
-    sources (seed 0), ``ties`` and ``scaling`` (``heat_sources``, ``heat_ties`` and ``heat_scaling``, by
+    sources (seed 0), ``ties``, ``scaling`` and ``sampling`` (``heat_sources``, ``heat_ties``, ``heat_scaling`` and
+    ``heat_sampling``, by
     default the ``flow`` analyzer's defaults): the array that analyzer and a
     traffic-aware ``coverage`` of the same settings use, computed once per graph. A node no walk
     touches, with no area and no through-flow (an opening the ``entry_exit``
@@ -164,7 +181,8 @@ def traffic_ranks(
     walks passing through it.
     """
     arrays = traffic.surface_arrays(graph)
-    flow = traffic.arrays_walking_flow(arrays, max_sources=sources, ties=ties, scaling=scaling)
+    flow = traffic.arrays_walking_flow(arrays, max_sources=sources, ties=ties, scaling=scaling,
+                                       order=traffic.sampling_order(graph, sampling))
     rank = traffic.percentile(flow)
     walked = (traffic.origin_weight(arrays) > 0) | (flow > 0)
     return {node: value for node, value, keep in zip(arrays.nodes, rank.tolist(), walked.tolist()) if keep}
@@ -241,7 +259,7 @@ def collapse_rule(
     if max_step is not None:
         if graph is None:
             raise PluginError("max_traffic_step needs the run's initial surface graph")
-        ranks = traffic_ranks(graph, params.heat_sources, params.heat_ties, params.heat_scaling)
+        ranks = traffic_ranks(graph, params.heat_sources, params.heat_ties, params.heat_scaling, params.heat_sampling)
     bends: dict[tuple[Vec, Vec], bool] = {}
 
     def bent(u: Vec, v: Vec) -> bool:

@@ -715,3 +715,42 @@ def test_a_sign_above_the_agent_narrows_nothing() -> None:
     level = PIECES15.hanging_sign_corridor(2.1, 1.2)
     widths = sorted(o.width for o in _detect(level.mesh).openings)
     assert len(widths) == 2 and widths[0] > 2.3
+
+
+PIECES13 = benchmark("piece_kinds13")
+
+
+@pytest.mark.parametrize("yaw", [0.0, 22.0])
+def test_a_deck_crossing_over_a_corridor_holds_its_ends_with_the_corridors(yaw: float) -> None:
+    # Two storeys each leaving the piece: the deck's sides closed by its railings, nothing of it dropping into the
+    # piece; before, the one-floor rule kept one level's two ends.
+    level = PIECES13.overpass_crossing()
+    level = pieces.turned(level, yaw) if yaw else level
+    found = np.array([o.position for o in _detect(level.mesh).openings])
+    known = np.array([o.position for o in level.openings])
+    assert pieces.match_openings(found, known) == (4, 4)
+
+
+def test_a_storey_with_ways_off_along_its_sides_holds_no_opening() -> None:
+    # A wall top 3.7 m up: its outer side looks out of the piece, its inner one drops onto the piece's floor.
+    detection = _detect(pieces.wall_tops().mesh)
+    assert all(o.position[1] < 1.0 for o in detection.openings)
+
+
+def test_a_wall_top_dropping_into_the_piece_on_both_sides_is_no_storey_of_its_own() -> None:
+    # A wall 1.6 m thick and 2.5 m high across a yard, its ends at the piece's extent: nothing stands along its
+    # top's sides, which drop into the yard; counted as closed, they would make its two ends openings.
+    parts = [_block(0.0, 12.0, 0.0, 8.0, lambda x: -SLAB, lambda x: 0.0),
+             _block(0.0, 12.0, 3.2, 4.8, lambda x: 0.0, lambda x: 2.5)]
+    detection = _detect(trimesh.util.concatenate(parts))
+    assert detection.openings and all(o.position[1] < 1.0 for o in detection.openings)
+
+
+@pytest.mark.parametrize("yaw", [0.0, 22.0])
+def test_a_vault_coming_down_lower_than_the_agent_narrows_the_ends(yaw: float) -> None:
+    # A vault's underside within the agent's slope, met by the head-room rays along the end: before, taken for ground
+    # the agent walks onto (a face is walkable either side up), and the ends measured the floor's 3.0 m.
+    level = benchmark("piece_kinds16").low_vault_tunnel()
+    level = pieces.turned(level, yaw) if yaw else level
+    widths = sorted(o.width for o in _detect(level.mesh).openings)
+    assert len(widths) == 2 and widths == pytest.approx([2.01, 2.01], abs=0.05)  # the vault 1.95 m high, the rays'

@@ -197,3 +197,45 @@ def test_a_barrier_the_agent_cannot_climb_leaves_both_ends_on_the_sampling_route
         samples._opening((0.0, 0.0, 1.2), (-1.0, 0.0, 0.0), 2.4), samples._opening((12.0, 0.0, 1.2), (1.0, 0.0, 0.0), 2.4)))
     found, known, _, _ = _openings(pieces.turned(level, 22.0))
     assert pieces.match_openings(found, known) == (2, 2) and len(found) == 2
+
+
+def test_the_sampled_edge_search_reaches_the_clearance_and_a_spacing_and_a_half() -> None:
+    assert entry_exit.sampled_edge_search(spacing=0.8, clearance=0.4) == pytest.approx(1.6)
+    assert entry_exit.sampled_edge_search(spacing=2.0, clearance=0.5) == pytest.approx(3.5)
+
+
+@pytest.mark.parametrize("level, yaw", [
+    (lambda: pieces.bridge(width=1.2), 22.0),  # its line's ends 1.36 and 1.1 m from the floor's ends
+    (lambda: benchmark("piece_kinds15").sagging_rope_bridge(), 0.0),
+    (lambda: benchmark("piece_kinds15").winder_stair(), 45.0),  # the top pad's last sample 1.31 m from its end
+])
+def test_a_line_ending_beyond_the_navmesh_routes_search_keeps_its_end(level, yaw: float) -> None:
+    # A sample finding no way out within edge_search_radii * r (1.2 m) looks again as far as the sampling leaves
+    # the boundary from the floor's end (1.6 m): without it one end of each was missed.
+    built = level()
+    found, known, _, _ = _openings(pieces.turned(built, yaw) if yaw else built)
+    assert pieces.match_openings(found, known) == (len(known), len(found))
+
+
+def test_a_rope_rail_thinner_than_a_search_step_closes_the_decks_side() -> None:
+    # The rope (0.04 m) passed between bar rays a search step (0.05 m) apart: a third opening along the side.
+    found, known, _, _ = _openings(benchmark("piece_kinds15").sagging_rope_bridge())
+    assert len(found) == 2 and pieces.match_openings(found, known) == (2, 2)
+
+
+def test_a_flights_foot_seen_from_several_treads_is_one_opening() -> None:
+    # Samples on the treads see the foot within the climb below them, or down the steps along a line rising
+    # through the treads: each part found again lies within the climb of the foot's line at one end at least.
+    found, known, _, terminals = _openings(benchmark("piece_kinds13").grand_steps())
+    east = [o for o in terminals.openings if abs(o.position[0] - 12.4) < 0.05]
+    assert len(east) == 1 and east[0].width == pytest.approx(8.0, abs=0.15)
+    found, known, _, _ = _openings(benchmark("piece_kinds12").basement_stair(0.2, 12, 0.0))
+    assert len(found) == 2
+
+
+def test_a_roof_walled_less_than_a_storey_up_holds_no_opening() -> None:
+    # The sloping tunnel's roof, between its walls where they stand above it: closed along 68 % of its boundary
+    # samples at 22 degrees, but 1.8 m over the floor, less than the agent's height: no storey of its own.
+    level = pieces.turned(benchmark("piece_kinds15").sloped_ceiling_tunnel(), 22.0)
+    found, _, _, _ = _openings(level)
+    assert len(found) == 1 and found[0, 1] < 0.1

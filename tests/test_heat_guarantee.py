@@ -310,7 +310,7 @@ def test_the_guarantee_measures_the_flow_of_its_heat_settings(monkeypatch):
                         lambda *args, **kwargs: asked.append((args[1:], kwargs)) or walking(*args, **kwargs))
     params = CollapseParams(min_heat_rho=0.5, heat_sources=64, heat_ties="split", heat_scaling="linear")
     assert heat_guarantee.guaranteed(lambda: None, params, context, forest, structure) is None
-    assert asked == [((64,), {"ties": "split", "scaling": "linear"}),
+    assert asked == [((64,), {"ties": "split", "scaling": "linear", "order": None}),
                      ((64,), {"exact_up_to": traffic.EXACT_NODES, "ties": "split", "scaling": "linear"})]
 
 

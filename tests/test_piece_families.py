@@ -34,7 +34,14 @@ def test_an_opening_found_again_widens_the_one_it_repeats() -> None:
     wide = Opening((0.6, 0.0, 0.0), (0.0, 0.0, -1.0), 1.2, (0.0, 0.0, 0.0), (1.2, 0.0, 0.0))
     part = Opening((1.4, 0.0, 0.0), (0.0, 0.0, -1.0), 1.2, (0.8, 0.0, 0.0), (2.0, 0.0, 0.0))
     inner = Opening((0.6, 0.0, 0.0), (0.0, 0.0, -1.0), 0.4, (0.4, 0.0, 0.0), (0.8, 0.0, 0.0))
-    assert list(entry_exit._repeated([wide, part], 0.4, 30.0)) == [-1, 0]
+    assert list(entry_exit._repeated([wide, part], 0.4, 30.0, 0.4)) == [-1, 0]
+    # Found again from samples on treads: the part within the climb above the line, or rising from it, repeats it;
+    # one standing higher than the climb along its whole width is another opening.
+    up = Opening((1.4, 0.4, 0.0), (0.0, 0.0, -1.0), 1.2, (0.8, 0.4, 0.0), (2.0, 0.4, 0.0))
+    rising = Opening((1.3, 0.45, 0.0), (0.0, 0.0, -1.0), 1.08, (1.0, 0.0, 0.0), (1.6, 0.9, 0.0))
+    above = Opening((1.4, 0.5, 0.0), (0.0, 0.0, -1.0), 1.2, (0.8, 0.5, 0.0), (2.0, 0.5, 0.0))
+    assert [list(entry_exit._repeated([wide, o], 0.4, 30.0, 0.4)) for o in (up, rising, above)] == [
+        [-1, 0], [-1, 0], [-1, -1]]
     a, b = entry_exit._union_ends(wide, [part])
     assert a == pytest.approx([0.0, 0.0, 0.0]) and b == pytest.approx([2.0, 0.0, 0.0])
     assert entry_exit._union_ends(wide, [inner]) is None  # within it: the wider one stands as it is

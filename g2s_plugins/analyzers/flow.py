@@ -27,6 +27,11 @@ or linearly scaled (``linear``: a pair's weight on a node in proportion to
 how far along its path the node lies, so the nodes round each sampled
 source do not read busy; :mod:`g2s_plugins.traffic`, docs/analysis_quality.md,
 "The sampling preset's held-out misses").
+A sample draws its sources independently (``sampling: independent``) or
+spread along a Hilbert curve over the nodes in plan (``spread``: a
+systematic sample, about as close to the exact flow as twice as many
+independent sources; :mod:`g2s_plugins.traffic`, docs/analysis_quality.md,
+"A heat map with less noise on the sampling route").
 A polygon's flow is its own through-flow (``across: node``, the default),
 or the trips across a section of the way through it, each counted once
 whichever lane it takes (``across: section``: every polygon; ``across:
@@ -44,7 +49,7 @@ sand, but leaves of zero flow stand in every room's corners too, and the
 reference ranks them at the bottom: not the presets' heat map.
 The ``min_heat_rho`` and ``max_traffic_step`` of the simplification, and a
 traffic-aware ``coverage``, read a walking flow of their own settings
-(``heat_sources``/``heat_ties``/``heat_scaling``,
+(``heat_sources``/``heat_ties``/``heat_scaling``/``heat_sampling``,
 ``traffic_sources``/``traffic_ties``/``traffic_scaling``): set them as this
 analyzer's, so they measure the heat map the run shows and the flow is
 computed once.
@@ -89,6 +94,10 @@ class Params(PluginParams):
         traffic.WALKING_SCALING, description="a sampled source's pairs: none (each pair's whole weight on its path) or "
         "linear (weighted by how far along the path a node lies: no busy ring round each sampled source)"
     )
+    sampling: traffic.Sampling = Field(
+        traffic.WALKING_SAMPLING, description="how a sample draws its sources: independent (each in proportion to area) "
+        "or spread (a systematic sample along a Hilbert curve over the nodes in plan: less noise for as many sources)"
+    )
     across: Literal["node", "section", "lanes"] = Field(
         "node", description="each polygon's flow: its own (node); the trips across the way's cross-section through it, "
         "each counted once whichever polygon of the section it crosses (section: so the lanes of a gate line or an "
@@ -127,7 +136,8 @@ def g2s_analyze(structure: nx.Graph, params: Params, context: RunContext) -> Map
         raise PluginError("flow: across: lanes needs a navmesh (the navmesh graph builder); this run has none")
     # with sections every polygon's value is its section's: the plain flow (ties, scaling) is only the lanes' rest
     flow = None if params.across == "section" else traffic.walking_flow(
-        context.graph, max_sources=params.max_sources, seed=params.seed, ties=params.ties, scaling=params.scaling)
+        context.graph, max_sources=params.max_sources, seed=params.seed, ties=params.ties, scaling=params.scaling,
+        sampling=params.sampling)
     if params.across != "node":
         flow = cross_sections.walking_across(
             context.graph, flow, params.max_sources, params.seed, params.section_gap, params.section_reach,

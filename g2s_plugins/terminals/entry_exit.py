@@ -21,11 +21,13 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
    lies about ``r`` inside the real edge; it ends where two rays in a row meet
    no walkable face, so a crack between floor tiles is no edge; a ray meets
    the surface within the climb of the ground the one before it stood on, so
-   the search walks down a stair). A direction
+   the search walks down a stair; on a sampled surface, whose boundary stands
+   farther inside the floor, a sample finding no way out looks again up to
+   the sampling builder's clearance plus 1.5 spacings, :func:`sampled_edge_search`). A direction
    is a way out when the edge is found, the ray along it stays clear for
    ``outward_radii * r`` (no wall, jamb or curb higher than ``h`` in the
    way), the same way a search step below the agent's height is clear up to
-   the edge (head room: no lintel lower than the agent), the same way at every search
+   the edge (head room: no lintel lower than the agent), the same way at every half search
    step of height from the climb up to that is clear one agent radius past
    the edge (no rail of a railing between its posts) and, with
    ``leave_footprint``, one agent radius beyond the edge nothing of the piece
@@ -56,7 +58,8 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
    surface goes on inside the edge, ends just outside it, and nothing stands
    in the way or straight out: this undoes the retreat from walls. An
    opening overlapping a wider one along the same line, facing the same way,
-   is the same opening found twice: the wider one is stretched along its line
+   is the same opening found twice (its middle within ``r`` of the wider one's line in plan, an end or its
+   middle within the climb of it in height): the wider one is stretched along its line
    to span both and the other dropped, again until none overlaps a wider one.
 6. Priors, each measured on the generated pieces of
    :mod:`g2s_plugins.samples.pieces` (docs/entry_exit.md):
@@ -67,8 +70,8 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
      clear width across, between their edge and the navmesh, is no wider
      (bars across a doorway); an opening is the narrowest free part of that
      passage above the climb and at the head-room rays' height (a sliding
-     leaf or a rubble chunk in the wall, or a sign hanging lower than the
-     agent, leaves part of the door);
+     leaf or a rubble chunk in the wall, or a sign hanging or a vault coming
+     down lower than the agent, leaves part of the door);
    * jambs (``step_up``): an opening found from step tops needs something
      at half the agent's height within two search steps of both its ends
      (a threshold's jambs); a curb along the piece's edge has none;
@@ -79,7 +82,10 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
      ``r`` at the same height (Recast's grid cuts narrow passages at some yaws),
      and a floor over others (a closed ceiling's top) is a roof, never the main one;
      other floors leaving the piece at the main floor's level (within the climb)
-     hold openings with it (a corridor cut in two by a barrier);
+     hold openings with it (a corridor cut in two by a barrier), and so do
+     the storeys (an agent's height or more from it) leaving the piece that
+     walls or railings close along most of their boundary (a deck over a
+     corridor);
    * outer extent (``extent_heights``): modular pieces meet their neighbours
      at their outer extent, facing out. The opening's gap to the piece's
      extent along its heading (the largest ``vertex . heading`` over the faces
@@ -236,7 +242,8 @@ class Params(PluginParams):
         gt=0,
         description="how far beyond the navmesh boundary the surface's edge is looked for, agent radii "
         "(Recast's erosion, plus the wall's thickness where it closes a doorway barely wider than the agent: "
-        "up to 1.2 m for walls 0.8 m thick)",
+        "up to 1.2 m for walls 0.8 m thick); on a sampled surface a sample finding nothing within it looks again "
+        "up to the sampling builder's clearance plus 1.5 spacings",
     )
     edge_tolerance_radii: float = Field(
         0.25,
@@ -266,7 +273,8 @@ class Params(PluginParams):
         True,
         description="keep only openings on the navmesh floor of largest area (a component with those whose "
         "boundary comes within one agent radius at the same height: the main floor and what is reachable from it) "
-        "and the floors at its level that leave the piece too; false: every component's",
+        "and the floors at its level that leave the piece too, and the storeys leaving it that walls or railings "
+        "close along most of their boundary; false: every component's",
     )
     extent_heights: float | None = Field(
         0.5,
@@ -276,6 +284,21 @@ class Params(PluginParams):
     )
     min_score: float = Field(0.0, ge=0, le=1, description="drop openings scoring below this")
     best: int | None = Field(None, ge=1, description="keep only the best N openings by score; None: all")
+
+
+SAMPLED_SEARCH_SPACINGS = 1.5
+"""Sample spacings: on a sampled surface a sample finding no way out within ``edge_search_radii * r`` looks again up
+to the builder's clearance plus this many spacings (:func:`sampled_edge_search`). The surface's boundary runs between samples, which a Poisson-disk pick over
+candidates leaves up to about a spacing inside the eroded floor, and farther where no candidate fell near its
+edge: over the 564 known openings of the generated families and the tenth to fifteenth rounds' kinds at 0, 22
+and 45 degrees, the boundary stood at most the clearance plus 1.46 spacings (1.56 m) from the floor's end
+(docs/entry_exit.md, "A sixteenth round of piece kinds")."""
+
+
+def sampled_edge_search(spacing: float, clearance: float) -> float:
+    """How far beyond a sampled surface's boundary a sample finding no way out looks again for the floor's end, m: the
+    builder's ``clearance`` plus :data:`SAMPLED_SEARCH_SPACINGS` sample ``spacing`` (m)."""
+    return clearance + SAMPLED_SEARCH_SPACINGS * spacing
 
 
 @dataclass(frozen=True)
@@ -290,9 +313,11 @@ class _Settings:
     walkable_cos: float  # cosine of the agent's steepest walkable slope
     walkable_tan: float  # its tangent
     head: float  # height of the head-room rays over the surface: a search step under the agent's height
+    search: float  # how far beyond the boundary the edge search looks for the surface's end
+    farther: float  # how far it looks again from a sample that found no way out (a sampled surface's), else 0
 
 
-def _settings(params: Params, agent: AgentConfig) -> _Settings:
+def _settings(params: Params, agent: AgentConfig, farther: float | None = None) -> _Settings:
     r = float(agent.radius)
     climb = float(agent.max_climb)
     step = float(params.sample_step) if params.sample_step is not None else r / 2.0
@@ -308,6 +333,8 @@ def _settings(params: Params, agent: AgentConfig) -> _Settings:
         # agent's height less ``lift`` (1.8 m) lintels from 1.8 to 2 m passed (docs/entry_exit.md, "An eleventh
         # round of piece kinds").
         head=float(agent.height) - delta,
+        search=float(params.edge_search_radii) * r,
+        farther=0.0 if farther is None else float(farther),
     )
 
 
@@ -333,6 +360,7 @@ class _Ways:
     edge: np.ndarray  # (M,3) where the surface ends along it
     stepped: np.ndarray  # (M,) bool: the way out starts on a step up (``base`` is on its top)
     drop: np.ndarray  # (M,) how far below ``base`` the way out ends, down steps (else 0), m
+    into_piece: np.ndarray  # (M,) bool: a way reaches the surface's end clear, but the piece lies below beyond it
 
 
 def _walkable(caster: RayCaster, face: np.ndarray, s: _Settings) -> np.ndarray:
@@ -376,11 +404,12 @@ def _snap(
 
 
 def _surface_ends(
-    caster: RayCaster, origins: np.ndarray, directions: np.ndarray, down: np.ndarray, s: _Settings, reach: float
+    caster: RayCaster, origins: np.ndarray, directions: np.ndarray, down: np.ndarray, s: _Settings,
+    reach: float,
 ) -> tuple[np.ndarray, np.ndarray]:
-    """(n,) distance along each direction where the surface under the lifted origins ends (NaN: not within reach),
-    and (n,) how far below the origin's ground the surface ends there, m, where the way went down steps
-    (:func:`_down_steps`), else 0.
+    """(n,) distance along each direction where the surface under the lifted origins ends (NaN: not within
+    ``reach``, m), and (n,) how far below the origin's ground the surface ends there, m, where the way went
+    down steps (:func:`_down_steps`), else 0.
 
     Only faces the agent can walk count as surface: on a floor sloping down out of the piece the probes,
     cast along its tilted normal, would otherwise meet the slab's own end face below the floor's edge
@@ -464,10 +493,13 @@ def _down_steps(
 
 
 def _fan(
-    base: np.ndarray, normal: np.ndarray, tangent: np.ndarray, caster: RayCaster, s: _Settings, params: Params
-) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-    """The way out of each point of ``base`` (step 3): (M,) found, (M,3) direction, (M,) distance to the edge,
-    (M,) how far below the point's ground the surface ends there (down steps, else 0)."""
+    base: np.ndarray, normal: np.ndarray, tangent: np.ndarray, caster: RayCaster, s: _Settings, params: Params,
+    reach: float,
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """The way out of each point of ``base`` (step 3), the surface's end looked for up to ``reach`` m along each
+    direction: (M,) found, (M,3) direction, (M,) distance to the edge, (M,) how far below the point's ground the
+    surface ends there (down steps, else 0), and (M,) bool: some direction reaches the surface's end clear but
+    for the piece lying below beyond it (a drop into the piece)."""
     outward = np.cross(tangent, normal)  # the walkable side is on the left of the tangent
     m, k = len(base), int(params.fan_count)
     half = math.radians(float(params.fan_half_angle_deg))
@@ -479,9 +511,7 @@ def _fan(
     clear = caster.first_hits(lifted, dirs).distance > float(params.outward_radii) * s.radius
     edge, drop = np.full(m * k, np.nan), np.zeros(m * k)
     todo = np.nonzero(clear)[0]
-    edge[todo], drop[todo] = _surface_ends(
-        caster, lifted[todo], dirs[todo], down[todo], s, float(params.edge_search_radii) * s.radius
-    )
+    edge[todo], drop[todo] = _surface_ends(caster, lifted[todo], dirs[todo], down[todo], s, reach)
     ok = np.isfinite(edge)
     if ok.any():
         # Head room: the rays at ``lift`` pass under a lintel lower than the agent (a window at floor
@@ -489,11 +519,12 @@ def _fan(
         rows = np.nonzero(ok)[0]
         head = np.repeat(base + normal * s.head, k, axis=0)[rows]
         ok[rows[caster.first_hits(head, dirs[rows]).distance <= edge[rows]]] = False
-    heights = np.arange(s.climb + s.delta / 2.0, s.head, s.delta)  # none when the agent climbs its height
+    heights = np.arange(s.climb + s.delta / 4.0, s.head, s.delta / 2.0)  # none when the agent climbs its height
     if ok.any() and len(heights):
         # Bars across the way (a railing's rails between its posts) pass between the rays at ``lift`` and
-        # the head-room ray: the way must be clear at every search step of height from the climb up to the
-        # head-room ray until the agent's body is past the edge, one radius beyond it.
+        # the head-room ray: the way must be clear at every half search step of height from the climb up to
+        # the head-room ray until the agent's body is past the edge, one radius beyond it (a rope 0.04 m thick
+        # passed between rays a whole step apart: docs/entry_exit.md, "A sixteenth round of piece kinds").
         rows = np.nonzero(ok)[0]
         start = np.repeat(base, k, axis=0)[rows]
         up = np.repeat(normal, k, axis=0)[rows]
@@ -501,11 +532,13 @@ def _fan(
         hits = caster.first_hits(origins, np.tile(dirs[rows], (len(heights), 1))).distance
         barred = (hits.reshape(len(heights), -1) <= (edge[rows] + s.radius)[None, :]).any(axis=0)
         ok[rows[barred]] = False
+    into_piece = np.zeros(m * k, dtype=bool)
     if params.leave_footprint and ok.any():
         rows = np.nonzero(ok)[0]
         beyond = lifted[rows] + dirs[rows] * (edge[rows] + s.radius)[:, None]
         below = caster.first_hits(beyond, -UP).distance
         above = caster.first_hits(beyond, UP).distance
+        into_piece[rows[np.isfinite(below)]] = True
         # Above, only what the agent could not stand under blocks the way (the head-room rule): eaves do not.
         ok[rows[np.isfinite(below) | (above < s.head)]] = False
     # The soonest way out; among equals, the one closest to straight out.
@@ -513,7 +546,8 @@ def _fan(
     pick = np.argmin(cost, axis=1)
     found = np.isfinite(cost[np.arange(m), pick])
     chosen = np.arange(m) * k + pick
-    return found, dirs[chosen], np.nan_to_num(edge[chosen]), np.where(found, drop[chosen], 0.0)
+    return (found, dirs[chosen], np.nan_to_num(edge[chosen]), np.where(found, drop[chosen], 0.0),
+            into_piece.reshape(m, k).any(axis=1))
 
 
 def _step_tops(
@@ -548,19 +582,27 @@ def _ways_out(
 ) -> _Ways:
     base, normal = _snap(samples, polygon_normals, caster, s)
     tangent = _unit(samples.tangent - np.einsum("ij,ij->i", samples.tangent, normal)[:, None] * normal)
-    found, direction, reach, drop = _fan(base, normal, tangent, caster, s, params)
+    found, direction, reach, drop, into_piece = _fan(base, normal, tangent, caster, s, params, s.search)
+    if s.farther > s.search and not found.all():
+        # A sampled surface's boundary stands farther inside the floor than a navmesh's: a sample that finds no
+        # way out within the navmesh route's reach looks again as far as the sampling allows.
+        rows = np.nonzero(~found)[0]
+        far = _fan(base[rows], normal[rows], tangent[rows], caster, s, params, s.farther)
+        found[rows], direction[rows], reach[rows], drop[rows] = far[:4]
+        into_piece[rows] |= far[4]
     stepped = np.zeros(len(base), dtype=bool)
     if params.step_up:
         rows = np.nonzero(~found)[0]
         near, top = _step_tops(base[rows], normal[rows], np.cross(tangent[rows], normal[rows]), caster, s, params)
         rows, top = rows[near], top[near]
         if len(rows):
-            up_found, up_direction, up_reach, up_drop = _fan(top, normal[rows], tangent[rows], caster, s, params)
+            up_found, up_direction, up_reach, up_drop, _ = _fan(top, normal[rows], tangent[rows], caster, s, params,
+                                                                s.search)
             rows, top = rows[up_found], top[up_found]
             base[rows], found[rows], stepped[rows] = top, True, True
             direction[rows], reach[rows], drop[rows] = up_direction[up_found], up_reach[up_found], up_drop[up_found]
     edge = base + direction * reach[:, None]
-    return _Ways(base, normal, tangent, found, direction, edge, stepped, drop)
+    return _Ways(base, normal, tangent, found, direction, edge, stepped, drop, into_piece)
 
 
 # --------------------------------------------------------------------------
@@ -793,7 +835,7 @@ def _onto_ground_below(points: np.ndarray, out: np.ndarray, depth: np.ndarray, c
     if not len(rows):
         return lowered
     hit = caster.first_hits(points[rows] - out[rows] * inset + UP * s.lift, np.broadcast_to(-UP, (len(rows), 3)).copy())
-    ground = np.isfinite(hit.distance) & (hit.distance <= s.lift + depth[rows]) & _walkable(caster, hit.face, s)
+    ground = np.isfinite(hit.distance) & (hit.distance <= s.lift + depth[rows] + _SAME_HEIGHT) & _walkable(caster, hit.face, s)
     lowered[rows[ground], 1] -= hit.distance[ground] - s.lift
     return lowered
 
@@ -908,16 +950,27 @@ def _passages(
         widths[rows] = np.minimum(widths[rows], hits_ahead.distance[low] + hits_back.distance[low])
         # Above the climb, ground the agent walks onto (a terrain rising beside its border) is in no one's way, at
         # either height; at the head-room rays' height, what hangs into the passage lower than the agent is (a sign
-        # over part of it).
-        forward, backward = (np.minimum(*(np.where(h.hit[at] & _walkable(caster, h.face[at], s), np.inf, h.distance[at])
-                                          for at in (high, head)))
-                             for h in (hits_ahead, hits_back))
+        # over part of it, a vault coming down at its sides).
+        forward, backward = (np.minimum(*(np.where(_ground_ahead(caster, h, at, sign * directions[at], s), np.inf,
+                                                   h.distance[at]) for at in (high, head)))
+                             for h, sign in ((hits_ahead, 1.0), (hits_back, -1.0)))
         to_last = np.where(towards_last[rows], forward, backward)
         to_first = np.where(towards_last[rows], backward, forward)
         narrower = to_first + to_last < back[rows] + ahead[rows]
         rows = rows[narrower]
         back[rows], ahead[rows] = to_first[narrower], to_last[narrower]
     return widths, back, ahead
+
+
+def _ground_ahead(caster: RayCaster, hits, at: slice, directions: np.ndarray, s: _Settings) -> np.ndarray:
+    """(n,) bool: the rays ``at`` of ``hits``, cast along ``directions`` (n,3), met ground the agent walks onto: a face
+    within its slope either side up (meshes are not always wound one way), but not one met on its front that faces
+    down, a ceiling or a vault coming down ahead. A ray starting inside a hill rising beside a terrain's border meets
+    the ground from behind, facing up: ground (its border's openings stay whole)."""
+    faces = np.maximum(hits.face[at], 0)
+    normals = caster.face_normals[faces]
+    ceiling = (np.einsum("ij,ij->i", normals, directions) < 0.0) & (normals @ UP <= -s.walkable_cos)
+    return hits.hit[at] & _walkable(caster, hits.face[at], s) & ~ceiling
 
 
 def _free_part(
@@ -970,7 +1023,7 @@ class Detection:
 
 def main_floor(
     navmesh: NavMesh | SampledSurface, agent: AgentConfig, loops: list[BoundaryLoop] | None = None,
-    looks_out: np.ndarray | None = None,
+    looks_out: np.ndarray | None = None, closed: np.ndarray | None = None,
 ) -> np.ndarray:
     """(P,) bool: the polygons of the navmesh's main floor: its floor of largest area that is no roof, and those at its level.
 
@@ -988,7 +1041,13 @@ def main_floor(
     with a floor that leaves, every other one that leaves too, is no roof and whose lowest polygon lies
     within the climb of the main one's (a polygon's height is its first corner's, not its lowest): the parts
     of a corridor cut by a barrier or by a pass narrower than Recast keeps; not a wall's top, a roof or a
-    ravine's floor below a bridge.
+    ravine's floor below a bridge. ``closed``: (P, 2) each polygon's boundary samples closed by what stands on
+    its floor (no way out, and none reaching the floor's end but for the piece lying below beyond it) and all
+    its boundary samples; given,
+    a floor a storey (the agent's height) or more above or below the main one that leaves the piece, with at
+    least :data:`_WALKWAY_CLOSED` of its boundary samples closed (walls or railings along its sides), holds
+    openings too: a railed deck crossing over a corridor, and the corridor under it; not a wall's top whose
+    sides drop into the piece.
     """
     neighbours = np.asarray(navmesh.neighbours)
     if len(neighbours) == 0:
@@ -1018,9 +1077,22 @@ def main_floor(
     lowest = np.full(len(area), np.inf)
     np.minimum.at(lowest, label, height)
     kept = leaves & ~roof & (np.abs(lowest - lowest[best]) <= float(agent.max_climb) + _SAME_HEIGHT)
+    if closed is not None:  # a storey of its own, walled or railed along its sides
+        counts = np.zeros((len(area), 2))  # each floor's closed boundary samples, and all of them
+        np.add.at(counts, label, np.asarray(closed, dtype=np.float64))
+        storey = np.abs(lowest - lowest[best]) >= float(agent.height) - _SAME_HEIGHT
+        kept |= leaves & storey & (counts[:, 0] >= _WALKWAY_CLOSED * counts[:, 1])
     kept[best] = True
     return kept[label]
 
+
+_WALKWAY_CLOSED = 0.6
+"""Share of a floor's boundary samples closed by what stands on it (no way out, none dropping into the piece) from
+which a floor a storey or more from the main one, leaving the piece, holds openings too (:func:`main_floor`): walls or
+railings along its sides. Measured at 0, 22 and 45 degrees on both routes over the generated families and the
+tenth to fifteenth rounds' kinds (docs/entry_exit.md, "A sixteenth round of piece kinds"): the railed deck crossing
+``overpass_crossing``'s corridor, and the corridor under it, 0.74-0.81; every other floor a storey from the main
+one that leaves the piece (roofs, wall and hedge tops, a cliff's top) 0.00-0.44."""
 
 _ROOF_SHARE = 0.1
 """A floor over other floors of at least this share of its own area, an agent's height or more below, is a roof.
@@ -1192,7 +1264,7 @@ def extent_gap(vertices: np.ndarray, point: np.ndarray, heading: np.ndarray, fra
     return min(along_heading, float(np.max(vertices @ axis) - point @ axis))
 
 
-def _repeated(openings: list[Opening], radius: float, max_turn_deg: float) -> np.ndarray:
+def _repeated(openings: list[Opening], radius: float, max_turn_deg: float, climb: float) -> np.ndarray:
     """(n,) int: for each opening that overlaps a wider one along the same edge, facing the same way, that one's index; else -1.
 
     Recast's voxel staircase along an edge turned off the grid's axes can cut one opening's
@@ -1200,8 +1272,13 @@ def _repeated(openings: list[Opening], radius: float, max_turn_deg: float) -> np
     opening (the generated ``curb_platform`` turned by 5 to 60 degrees: 2 or 3 per curb gap), and
     an obstacle standing before a doorway splits its samples in two, each seeing part of the door
     (the held-out ``cluttered_room``'s pillar). A narrower opening whose midpoint lies within
-    ``radius`` of a wider one's line, whose extent along it overlaps the wider one's and whose
-    heading is within ``max_turn_deg`` of it is the same opening found again.
+    ``radius`` of a wider one's line in plan, one of its ends or its midpoint within ``climb`` of it
+    in height, whose extent along it overlaps the wider one's and whose heading is within
+    ``max_turn_deg`` of it is the same opening found again: an edge lies at its samples' heights, and
+    samples on a flight's treads see the floor end at its foot within the climb below them, or down
+    the steps (on the sampling route ``grand_steps``' foot: a part 0.4 m above the rest; a flight of 12
+    risers: a part rising from the foot to 0.82 m above it; docs/entry_exit.md, "A sixteenth round of
+    piece kinds").
     """
     n = len(openings)
     into = np.full(n, -1, dtype=np.int64)
@@ -1218,10 +1295,11 @@ def _repeated(openings: list[Opening], radius: float, max_turn_deg: float) -> np
         for j in order[rank + 1 :]:
             if into[j] >= 0 or np.dot(heading[i], heading[j]) < cos_turn:
                 continue
-            mid = 0.5 * (first[j] + last[j]) - first[i]
-            off = np.linalg.norm(mid - np.dot(mid, along) * along)
+            points = np.stack([first[j], 0.5 * (first[j] + last[j]), last[j]]) - first[i]  # its ends and middle
+            off = points - np.outer(points @ along, along)
             lo, hi = sorted((np.dot(first[j] - first[i], along), np.dot(last[j] - first[i], along)))
-            if off <= radius and lo < width[i] and hi > 0.0:
+            near = math.hypot(off[1, 0], off[1, 2]) <= radius and np.abs(off[:, 1]).min() <= climb + _SAME_HEIGHT
+            if near and lo < width[i] and hi > 0.0:
                 into[j] = i
     return into
 
@@ -1242,6 +1320,7 @@ def detect_openings(
     surface: NavMesh | SampledSurface,
     agent: AgentConfig,
     params: Params | None = None,
+    edge_search_farther: float | None = None,
 ) -> Detection:
     """Steps 1-6 of the method: the openings of ``mesh`` for ``agent`` on ``surface``, in detection order.
 
@@ -1252,9 +1331,12 @@ def detect_openings(
             sampled graph of it.
         agent: object with ``radius``, ``height``, ``max_climb``, ``max_slope``.
         params: :class:`Params`; ``None`` for the defaults.
+        edge_search_farther: how far beyond the boundary a sample that finds no floor's end within
+            ``edge_search_radii * r`` looks again, m (on a sampled surface, :func:`sampled_edge_search`); ``None``:
+            not again.
     """
     params = params if params is not None else Params()
-    s = _settings(params, agent)
+    s = _settings(params, agent, edge_search_farther)
     loops = boundary_loops(surface.vertices, surface.polygons, surface.neighbours)
     samples = sample_loops(loops, s.step, "agent.radius" if params.sample_step is None else "terminals.params.sample_step")
     if len(samples.loop) == 0:
@@ -1266,7 +1348,10 @@ def detect_openings(
         looks_out = np.zeros(len(surface.areas), dtype=bool)
         for g in segments:
             looks_out[samples.polygon[g]] = True
-        main = main_floor(surface, agent, loops, looks_out)
+        # each polygon's boundary samples closed by what stands on the floor, and all of them
+        closed = np.zeros((len(surface.areas), 2))
+        np.add.at(closed, samples.polygon, np.stack([~ways.found & ~ways.into_piece, np.ones(len(ways.found), bool)], 1))
+        main = main_floor(surface, agent, loops, looks_out, closed)
         segments = [g for g in segments if main[samples.polygon[g]].any()]
     kept = _split_at_piers(_match_edges(segments, ways, caster, s, params), ways, caster, s)
     if not kept:
@@ -1341,7 +1426,7 @@ def detect_openings(
     # route: parts 3.28-9.98 and 0.54-3.37 m along it, then one at 0.17-2.80 m). Each pass drops
     # one at least: at most n passes of O(n^2) for n openings.
     while True:
-        into = _repeated([f[0] for f in found], s.radius, float(params.max_turn_deg))
+        into = _repeated([f[0] for f in found], s.radius, float(params.max_turn_deg), s.climb)
         if not (into >= 0).any():
             break
         for i in sorted(set(into[into >= 0].tolist())):
@@ -1439,5 +1524,6 @@ def g2s_select_terminals(graph: nx.Graph, params: Params, context: RunContext) -
             "the run has no navigation mesh and no sampled surface to take the boundary from"
         )
     surface = sampled_surface(graph, float(stats["spacing"]))
-    detection = detect_openings(context.mesh, surface, context.agent, params)
+    search = sampled_edge_search(float(stats["spacing"]), float(stats["clearance"]))
+    detection = detect_openings(context.mesh, surface, context.agent, params, search)
     return add_terminals(graph, detection, surface, context.agent)
