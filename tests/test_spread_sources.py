@@ -12,18 +12,7 @@ from g2s_core.model import RunContext
 from g2s_plugins import evaluation, heat_guarantee, traffic
 from g2s_plugins._surface import CollapseParams
 from g2s_plugins.analyzers import flow as flow_analyzer
-
-
-def bumpy_grid(columns: int = 20, rows: int = 15) -> nx.Graph:
-    """A grid of polygons of 0.5-2 m², 0.8-1.2 m apart (seeded), as test_heat_guarantee's."""
-    rng = np.random.default_rng(0)
-    graph = nx.convert_node_labels_to_integers(nx.grid_2d_graph(columns, rows), ordering="sorted")
-    for i in graph:
-        graph.nodes[i].update(pos=(float(i // rows), 0.0, float(i % rows)), area=float(rng.uniform(0.5, 2.0)),
-                              normal=(0.0, 1.0, 0.0), on_navmesh=True)
-    for a, b in graph.edges:
-        graph.edges[a, b]["weight"] = float(rng.uniform(0.8, 1.2))
-    return graph
+from tests.test_heat_guarantee import bumpy_grid  # 300 polygons of 0.5-2 m², 0.8-1.2 m apart
 
 
 def test_the_curve_visits_the_quadrants_in_order_and_steps_to_a_neighbour():

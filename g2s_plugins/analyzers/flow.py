@@ -52,7 +52,9 @@ traffic-aware ``coverage``, read a walking flow of their own settings
 (``heat_sources``/``heat_ties``/``heat_scaling``/``heat_sampling``,
 ``traffic_sources``/``traffic_ties``/``traffic_scaling``): set them as this
 analyzer's, so they measure the heat map the run shows and the flow is
-computed once.
+computed once. The cover always draws its sources independently: beside
+``sampling: spread`` (``map_analysis_sampling``) its flow is a second one,
+which the guarantee's pooled reading takes (:mod:`g2s_plugins.heat_guarantee`).
 
 Exact up to ``max_sources`` nodes, from that many area-sampled sources
 above, with the Hoeffding bound of :mod:`g2s_plugins.traffic` (0.10 of all
