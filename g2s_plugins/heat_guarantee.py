@@ -148,11 +148,13 @@ def restored(
     arrays = traffic.surface_arrays(graph)
     order = traffic.sampling_order(graph, sampling)
     shown = traffic.arrays_walking_flow(arrays, sources, ties=ties, scaling=scaling, order=order)  # the heat map's flow
-    reference = traffic.arrays_walking_flow(arrays, sources, exact_up_to=traffic.EXACT_NODES, ties=ties, scaling=scaling)
     exact = traffic.is_exact(arrays, sources, traffic.EXACT_NODES)
     pooled = not exact and sampling == "spread"
-    if pooled:
+    if pooled:  # half the heat map's errors shared with its reference instead of all of them
         reference = (shown + second_sample(arrays, sources, ties, scaling, order)) / 2.0
+    else:
+        reference = traffic.arrays_walking_flow(arrays, sources, exact_up_to=traffic.EXACT_NODES, ties=ties,
+                                                scaling=scaling)
     heat = evaluation.placement_heat(graph, simplified, shown)
     rho = evaluation.spearman(heat, reference)
     margin = 0.0 if exact else POOLED_MARGINS[scaling] if pooled else MARGINS[scaling]
@@ -164,7 +166,7 @@ def restored(
     difference = np.abs(traffic.percentile(shown) - heat)[arrays.rows(removed)] if removed.size else np.zeros(0)
     above = difference > FLOOR  # NaN (a node reaching no structure node) is not
     if not above.any():
-        measure = ("walking flow" if exact else f"the mean walking flow of two samples of {sources} spread sources"
+        measure = ("walking flow" if exact else f"the mean walking flow of a spread and an independent sample of {sources} sources"
                    if pooled else f"walking flow from {sources} sampled sources")
         wanted = f"min_heat_rho {min_rho:g}" + ("" if exact else f" plus the margin {margin:g} a sampled flow needs")
         context.warn(f"the heat map ranks the polygons with Spearman rho {rho:.3f} against {measure}, under {wanted}: "
