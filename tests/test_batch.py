@@ -459,3 +459,41 @@ def test_a_local_dask_cluster_left_without_workers_loses_its_pairs_instead_of_wa
     rows = dask_cluster.g2s_execute(function=abs, items=[-1, -2], params=dask_cluster.Params(workers=1),
                                     lost=lambda item, reason: (item, reason))
     assert sorted(rows) == [(-2, dask_cluster.NO_WORKERS), (-1, dask_cluster.NO_WORKERS)]
+
+
+def test_a_pair_that_finishes_as_the_cluster_is_found_without_workers_keeps_its_row(monkeypatch):
+    """The no-worker bound lost the pairs not done and returned: one done after Dask's last batch but before that
+    look was neither yielded nor lost, and the batch ended without its row (review33)."""
+    import dask.distributed
+
+    from g2s_plugins.executors import dask_cluster
+
+    class Future:
+        def __init__(self, done: bool) -> None:
+            self._done = done
+
+        def done(self) -> bool:
+            return self._done
+
+        def result(self) -> str:
+            return "its row"
+
+    class NothingReported:  # Dask's as_completed that has not seen the finished future yet
+        def __init__(self, futures) -> None:
+            pass
+
+        def is_empty(self) -> bool:
+            return False
+
+        def next_batch(self, block: bool) -> list:
+            return []
+
+    class WithoutWorkers:
+        scheduler_info = {"workers": {}}
+
+    monkeypatch.setattr(dask.distributed, "as_completed", NothingReported)
+    monkeypatch.setattr(dask_cluster, "NO_WORKERS_LIMIT", 0.0)
+    finished, running = Future(True), Future(False)
+    rows = list(dask_cluster._finished({finished: "a", running: "b"}, WithoutWorkers(), [],
+                                       lambda item, reason: (item, reason), later=["c"]))
+    assert rows == ["its row", ("b", dask_cluster.NO_WORKERS), ("c", dask_cluster.NO_WORKERS)]

@@ -116,22 +116,33 @@ def _finished(
     from distributed.scheduler import KilledWorker
 
     suspects: list[Any] = []
-    completed = as_completed(futures)
-    staffed = time.monotonic()
-    while not (interrupts or completed.is_empty()):
-        finished = completed.next_batch(block=False)
-        if cluster is None or cluster.scheduler_info.get("workers"):
-            staffed = time.monotonic()
-        elif not finished and time.monotonic() - staffed > NO_WORKERS_LIMIT:  # those finished are yielded first
-            yield from (lost(item, NO_WORKERS) for item in [*(futures[f] for f in futures if not f.done()), *suspects, *later])
-            return None
-        if not finished:
-            time.sleep(INTERRUPT_POLL)
+    unread = set(futures)
+
+    def rows(finished: Sequence[Any]) -> Iterator[dict[str, Any]]:
         for future in finished:
+            unread.discard(future)
             try:
                 row = future.result()
             except KilledWorker:  # it killed its workers, or waited on a worker another item killed
                 suspects.append(futures[future])
                 continue
             yield row
+
+    completed = as_completed(futures)
+    staffed = time.monotonic()
+    while not (interrupts or completed.is_empty()):
+        finished = completed.next_batch(block=False)
+        if cluster is None or cluster.scheduler_info.get("workers"):
+            staffed = time.monotonic()
+        elif not finished and time.monotonic() - staffed > NO_WORKERS_LIMIT:
+            # one look at each: a pair that finished since the batch above is yielded, one finishing after it is
+            # lost, none is left without its row
+            done = {future: future.done() for future in futures if future in unread}
+            yield from rows([future for future in done if done[future]])
+            left = [futures[future] for future in done if not done[future]]
+            yield from (lost(item, NO_WORKERS) for item in [*left, *suspects, *later])
+            return None
+        if not finished:
+            time.sleep(INTERRUPT_POLL)
+        yield from rows(finished)
     return suspects
