@@ -6,9 +6,6 @@ its package); :class:`OutOfMemory` is the machine's memory or limit (exit code 1
 anything else is an internal error of g2s (exit code 1).
 """
 
-import resource
-
-
 class G2SError(Exception):
     """Bad input from the user: a mesh, a config or a request that cannot be honoured.
 
@@ -50,6 +47,8 @@ def out_of_memory(exc: MemoryError, where: str = "") -> OutOfMemory:
     limit; one that says so already, as it is."""
     if isinstance(exc, OutOfMemory):
         return exc
+    import resource  # POSIX only, and read only when memory ran out: not at every command's start
+
     limit = resource.getrlimit(resource.RLIMIT_AS)[0]
     under = "" if limit == resource.RLIM_INFINITY else f" under the process's memory limit of {limit >> 10:,} KB (ulimit -v)"
     return OutOfMemory(f"out of memory{where}{under} ({type(exc).__name__}{f': {exc}' if str(exc) else ''})")

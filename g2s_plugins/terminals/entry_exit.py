@@ -404,8 +404,7 @@ def _snap(
 
 
 def _surface_ends(
-    caster: RayCaster, origins: np.ndarray, directions: np.ndarray, down: np.ndarray, s: _Settings,
-    reach: float,
+    caster: RayCaster, origins: np.ndarray, directions: np.ndarray, down: np.ndarray, s: _Settings, reach: float
 ) -> tuple[np.ndarray, np.ndarray]:
     """(n,) distance along each direction where the surface under the lifted origins ends (NaN: not within
     ``reach``, m), and (n,) how far below the origin's ground the surface ends there, m, where the way went
