@@ -39,5 +39,5 @@ def require_open_files(needed: int, what: str) -> None:
         return
     if limit != resource.RLIM_INFINITY and held + needed > limit:
         raise G2SError(f"ulimit -n: {what} needs about {held + needed} open files ({held} open now), more than the "
-                       f"process's limit of {limit}: raise it (ulimit -n 1024), or run fewer --workers or "
-                       "--executor serial (the pairs one by one in this process)")
+                       f"process's limit of {limit}: raise it (ulimit -n 1024), or run fewer workers or the "
+                       "serial executor (the pairs one by one in this process)")
