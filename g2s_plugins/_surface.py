@@ -30,6 +30,7 @@ from dataclasses import dataclass
 import networkx as nx
 import numpy as np
 from pydantic import Field, model_validator
+from pydantic_core import PydanticCustomError
 
 from g2s_core.config import AgentConfig
 from g2s_core.errors import PluginError
@@ -109,9 +110,11 @@ class CollapseParams(PluginParams):
         from g2s_plugins.heat_guarantee import POOLED_MARGINS  # it imports this module
 
         if self.min_heat_rho is not None and self.heat_sampling == "spread" and self.heat_scaling not in POOLED_MARGINS:
-            raise ValueError(f"min_heat_rho with heat_sampling: spread needs heat_scaling {' or '.join(POOLED_MARGINS)} "
-                             f"(the guarantee's margin for a spread heat map is measured for that alone), not "
-                             f"{self.heat_scaling}")
+            # pydantic's custom error: a ValueError's words reached the user as "value error, min_heat_rho ..."
+            raise PydanticCustomError(
+                "pooled_margin", "min_heat_rho with heat_sampling: spread needs heat_scaling {needed} (the guarantee's "
+                "margin for a spread heat map is measured for that alone), not {got}",
+                {"needed": " or ".join(POOLED_MARGINS), "got": self.heat_scaling})
         return self
 
 

@@ -5,6 +5,8 @@ from __future__ import annotations
 import json
 import os
 import re
+import resource
+import shutil
 import signal
 import subprocess
 import sys
@@ -497,3 +499,38 @@ def test_a_pair_that_finishes_as_the_cluster_is_found_without_workers_keeps_its_
     rows = list(dask_cluster._finished({finished: "a", running: "b"}, WithoutWorkers(), [],
                                        lambda item, reason: (item, reason), later=["c"]))
     assert rows == ["its row", ("b", dask_cluster.NO_WORKERS), ("c", dask_cluster.NO_WORKERS)]
+
+
+@pytest.mark.parametrize("executor, workers, limit", [("local", 2, 16), ("local", 1, 12), ("dask", 2, 32)])
+def test_too_small_a_limit_of_open_files_is_one_line_before_any_pair(executor, workers, limit, tmp_path):
+    """Under `ulimit -n` 16 the pool's line was followed by its forkserver's traceback, at 12 it said `No usable
+    temporary directory found`, and Dask said `Nanny failed to start.` (exit 1; robust14's list)."""
+    out = tmp_path / "out"
+    done = subprocess.run(
+        [sys.executable, "-m", "g2s_core.cli", "batch", "graph_only", *SAMPLES, "-o", str(out), "--executor", executor,
+         "--workers", str(workers), "-q"],
+        cwd=PROJECT, capture_output=True, text=True, timeout=300,
+        preexec_fn=lambda: resource.setrlimit(resource.RLIMIT_NOFILE, (limit, limit)))
+    assert_user_error((done.returncode, done.stdout, done.stderr), "ulimit -n: ")
+    assert f"more than the process's limit of {limit}" in done.stderr and not out.exists()
+
+
+def test_a_pair_whose_results_went_with_the_removed_batch_folder_is_not_ok(monkeypatch, tmp_path):
+    """The batch's folder removed (`rm -r`) after a pair finished: the summary listed it `ok`, its files gone
+    (robust14's list)."""
+    import g2s_plugins.batch.runner as runner
+
+    out = tmp_path / "out"
+    run = runner.run_pair
+
+    def then_remove(pair):
+        row = run(pair)
+        if pair.level == "dungeon_seed_1_rooms_12":
+            shutil.rmtree(out)
+        return row
+
+    monkeypatch.setattr(runner, "run_pair", then_remove)
+    summary = run_batch(["graph_only"], SAMPLES, out, "serial")
+    assert list(summary["status"]) == ["failed", "ok"]
+    assert "its results were removed after the pair finished" in summary["error"][0]
+    assert list(pd.read_csv(out / "summary.csv")["status"]) == ["failed", "ok"]

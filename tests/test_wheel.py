@@ -126,3 +126,32 @@ def test_wheel_installs_and_runs_on_its_own(tmp_path):
     api = run_in(bin_dir, work, "python", "-c", API)
     assert api.returncode == 0, api.stderr
     assert int(api.stdout) == 2
+
+
+EDITABLE = """
+import sys
+from scikit_build_core.build import build_editable
+print(build_editable(sys.argv[1], {"build-dir": sys.argv[2]}))
+"""
+
+
+def test_an_editable_install_uninstalls_without_a_trace(tmp_path):
+    """`pip install -e .`, then `pip uninstall graph2structure`: nothing of it stays in site-packages (robust15: an
+    empty g2s_core folder stayed, from a copy of the presets that an editable install never reads, and Python then
+    imported g2s_core as an empty package)."""
+    # the editable wheel pip would build, from the scikit-build-core of this environment (make setup installs it)
+    build = subprocess.run([sys.executable, "-c", EDITABLE, str(tmp_path / "dist"), str(tmp_path / "build")],
+                           cwd=PROJECT, capture_output=True, text=True)
+    assert build.returncode == 0, build.stdout + build.stderr
+    wheel = tmp_path / "dist" / build.stdout.split()[-1]
+    venv = tmp_path / "venv"
+    subprocess.run([sys.executable, "-m", "venv", str(venv)], check=True)
+    pip = [str(venv / "bin" / "python"), "-m", "pip", "-q"]
+    site = next((venv / "lib").glob("python*/site-packages"))
+    before = {path.name for path in site.iterdir()}
+    install = subprocess.run([*pip, "install", "--no-deps", "--no-index", str(wheel)], capture_output=True, text=True)
+    assert install.returncode == 0, install.stderr
+    assert "g2s_plugins" in {path.name for path in site.iterdir()}  # the extensions, in site-packages
+    remove = subprocess.run([*pip, "uninstall", "-y", "graph2structure"], capture_output=True, text=True)
+    assert remove.returncode == 0, remove.stderr
+    assert {path.name for path in site.iterdir()} == before

@@ -226,10 +226,23 @@ def _finished_row(pair: Pair, mesh_sha256: str) -> dict[str, Any] | None:
         earlier = json.loads(Path(pair.record).read_text(encoding="utf-8"))
     except (OSError, ValueError):
         return None
-    files = result_files()
-    complete = all((Path(pair.folder) / name).is_file() for fmt in pair.formats for name in files.get(fmt, ()))
     same = earlier.get("config_sha256") == pair.config_sha256 and earlier.get("mesh_sha256") == mesh_sha256
-    return earlier if same and complete and earlier.get("status") == "ok" else None
+    return earlier if same and _complete(pair) and earlier.get("status") == "ok" else None
+
+
+def _complete(pair: Pair) -> bool:
+    """Whether every result file of the pair's formats is in its folder."""
+    files = result_files()
+    return all((Path(pair.folder) / name).is_file() for fmt in pair.formats for name in files.get(fmt, ()))
+
+
+def _still_there(row: dict[str, Any], pair: Pair) -> dict[str, Any]:
+    """``row``, or, when it says ``ok`` but the pair's result files are gone (the batch's folder removed while it ran,
+    with the pairs finished before), the row failed saying so: the summary claimed ``ok`` for files that were gone."""
+    if row.get("status") != "ok" or _complete(pair):
+        return row
+    return {**row, "status": "failed", "error": f"{pair.folder}: its results were removed after the pair finished (the "
+            "batch's folder removed while it ran?); run the batch again to compute them"}
 
 
 def _write_json(path: Path, data: dict[str, Any]) -> None:
@@ -461,7 +474,7 @@ def run_batch(
             if (pair.config, pair.level) not in rows and _written_since(Path(pair.record), started):
                 rows[pair.config, pair.level] = json.loads(Path(pair.record).read_text(encoding="utf-8"))
         try:
-            summary = _summary([rows[p.config, p.level] for p in pairs if (p.config, p.level) in rows])
+            summary = _summary([_still_there(rows[p.config, p.level], p) for p in pairs if (p.config, p.level) in rows])
             if rows:
                 write_summary(summary, outdir)
         except MemoryError as exc:  # pyarrow's allocator (pandas' text columns) under `ulimit -v 700000`, every pair written

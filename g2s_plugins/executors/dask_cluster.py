@@ -20,13 +20,22 @@ from pydantic import Field
 from g2s_core.errors import G2SError
 from g2s_core.plugin import PluginParams, hookimpl
 from g2s_core.result_folder import interrupts_held
-from g2s_plugins.executors import INTERRUPT_POLL
+from g2s_plugins.executors import INTERRUPT_POLL, require_open_files, workers_named
 
 NAME = "dask"
 
 NO_WORKERS_LIMIT = 60.0
 """Seconds the LocalCluster may go without a worker before its unfinished pairs are lost: Dask does not start a
 worker again that died as it started (a pair that kills its worker, under load), and the batch waited for ever."""
+
+CLUSTER_FILES = 12
+"""Files (sockets, pipes) a LocalCluster opens in this process besides its workers' (:data:`WORKER_FILES`): with 6
+open before, ``graph_only`` on 3 levels ran under ``ulimit -n`` 30 on one worker, 42 on two and 56 on three, and
+under 28, 40 and 48 a nanny failed to start, or the cluster of two waited for ever (robust15)."""
+
+WORKER_FILES = 12
+"""Files a LocalCluster holds in this process for each worker (its nanny's and worker's connections; measured as
+:data:`CLUSTER_FILES`)."""
 
 NO_WORKERS = "the Dask cluster's workers died as they started, and none was left to run it"
 
@@ -73,12 +82,14 @@ def g2s_execute(
             raise G2SError(f"--scheduler: expected the address of a running Dask scheduler (tcp://host:8786), got "
                            f"{params.scheduler!r}: {' '.join(str(exc).split())}") from exc
     else:
+        # no more workers than pairs: each starts a process up front (2 pairs on `--workers 8`: 7.9-9.9 s, capped 5.6-5.7)
+        workers = max(1, min(params.workers or os.cpu_count() or 1, len(items)))
+        require_open_files(CLUSTER_FILES + WORKER_FILES * workers, f"a Dask LocalCluster of {workers_named(workers)}")
         with _children_ignore_interrupt():
             # a pair's failure reaches g2s through its future; Dask's own ERROR lines (a worker's heartbeat to a
             # scheduler that Ctrl-C is closing, seen under load) would break the one-line "g2s: interrupted"
-            # no more workers than pairs: each starts a process up front (2 pairs on `--workers 8`: 7.9-9.9 s, capped 5.6-5.7)
             cluster = LocalCluster(
-                n_workers=max(1, min(params.workers or os.cpu_count() or 1, len(items))), threads_per_worker=1,
+                n_workers=workers, threads_per_worker=1,
                 processes=True, dashboard_address=":0", silence_logs=logging.CRITICAL,
             )
         client = Client(cluster)

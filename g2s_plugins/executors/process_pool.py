@@ -17,9 +17,17 @@ from pydantic import Field
 
 from g2s_core.plugin import PluginParams, hookimpl
 from g2s_core.result_folder import interrupts_held
-from g2s_plugins.executors import INTERRUPT_POLL
+from g2s_plugins.executors import INTERRUPT_POLL, require_open_files, workers_named
 
 NAME = "local"
+
+POOL_FILES = 10
+"""Files (pipes, sockets) the pool opens in this process besides two a worker (:data:`WORKER_FILES`), counting those
+it opens as it starts a worker: with 6 open before, 2 pairs of ``graph_only`` ran under ``ulimit -n`` 18 on one worker
+and 20 on two, and failed under 16 and 18 (the pool then holds 16 and 18 open; 22 on four workers; robust15)."""
+
+WORKER_FILES = 2
+"""Files the pool holds in this process for each worker it starts (measured as :data:`POOL_FILES`)."""
 
 DIED = "its worker process died as it ran"
 """Why a pair whose worker died failed: the pool cannot tell a signal's kind."""
@@ -53,6 +61,9 @@ def g2s_execute(
     """
     size = params.workers or os.cpu_count() or 1
     waiting = list(items)
+    started = min(size, len(waiting))  # the pool starts a worker as an item waits for one, up to ``size``
+    if started:
+        require_open_files(POOL_FILES + WORKER_FILES * started, f"the local executor's pool of {workers_named(started)}")
     while waiting:
         left = yield from _pooled(function, waiting, size)
         suspects, waiting = left[:size], left[size:]
