@@ -139,6 +139,7 @@ from pathlib import Path
 
 import numpy as np
 import trimesh
+from scipy import ndimage
 
 
 def _cut_lines(x0: float, x1: float, z0: float, z1: float,
@@ -6627,6 +6628,202 @@ def cistern(seed: int) -> trimesh.Trimesh:
     return s.mesh()
 
 
+def star_fort(seed: int) -> trimesh.Trimesh:
+    """A bastioned fort: a square enceinte 84-100 m a side whose courtyard (y = 0; barracks, a chapel, a magazine, all
+    ridged) is ringed by ramparts 8 m wide, their walk 4.5 m up behind a parapet 1.2 m high (guns on it), climbed by
+    3-4 ramps 3.5 m wide from the courtyard; a diamond bastion (half-diagonal 15-18 m, its top the walk) on each
+    corner; a dry moat 5 m deep round it all, 12-16 m beyond the bastions' points (its counterscarp a rectangle),
+    crossed only before the gate in the south curtain: a bridge from the glacis to a ravelin (an island at y = 0 in
+    the moat, railed) and a drawbridge (lowered) from it to the gate, a passage 4 m wide under the walk. The moat
+    floor is reached by two flights down the counterscarp, one down the ravelin's side and a postern: a passage 3 m
+    wide under the north rampart and a flight down the scarp. A glacis 20-26 m wide round the moat (y = 0, trees).
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    side, r, moat = rng.uniform(84.0, 100.0), rng.uniform(15.0, 18.0), rng.uniform(12.0, 16.0)
+    walk, deep, band = 4.5, -5.0, 8.0
+    c0, c1 = -r - moat, side + r + moat  # the counterscarp, a square
+    g0, g1 = c0 - rng.uniform(20.0, 26.0), c1 + rng.uniform(20.0, 26.0)
+    gate, postern = side / 2, rng.uniform(r + 8.0, side - r - 8.0)
+    # the ramparts, cut by the gate (south) and the postern (north), with their passages' floors and vaults
+    for x0, x1 in ((0.0, gate - 2.0), (gate + 2.0, side)):
+        s.box(x0, x1, deep - 0.5, walk, 0.0, band)
+    for x0, x1 in ((0.0, postern - 1.5), (postern + 1.5, side)):
+        s.box(x0, x1, deep - 0.5, walk, side - band, side)
+    for x in (0.0, side - band):
+        s.box(x, x + band, deep - 0.5, walk, band, side - band)
+    for x0, x1, z0, z1 in ((gate - 2.0, gate + 2.0, 0.0, band), (postern - 1.5, postern + 1.5, side - band, side)):
+        s.box(x0, x1, deep - 0.5, 0.0, z0, z1)
+        s.box(x0, x1, 2.6, walk, z0, z1)  # the vault: the walk goes on over the passage
+    # the bastions, their parapets on the three outer edges, and the curtains' parapets between them
+    corners = [(cx, cz) for cx in (0.0, side) for cz in (0.0, side)]
+    diamond = np.array([[1.0, 0.0], [0.0, 1.0], [-1.0, 0.0], [0.0, -1.0]])
+    moat_floor: list[np.ndarray] = []
+    for cx, cz in corners:
+        c = np.array([cx, cz])
+        inward = np.array([1.0 if cx == 0.0 else -1.0, 1.0 if cz == 0.0 else -1.0])
+        s.prism(c + r * diamond, deep - 0.5, walk)
+        points = [c + r * d for d in diamond]
+        for a, b in zip(points, points[1:] + points[:1]):
+            if not (np.dot(a - c, inward) > 0 and np.dot(b - c, inward) > 0):  # not the edge inside the square
+                s.prism(_strip(a - 0.3 * (a - c) / r, b - 0.3 * (b - c) / r, 0.4), walk, walk + 1.2)
+        for k in range(4):  # the moat floor round the diamond: the corners of its box outside it and the square
+            corner = np.array([(1.0 if k & 1 else -1.0), (1.0 if k & 2 else -1.0)])
+            if not (corner == inward).all():
+                moat_floor.append(c + r * np.array([corner, [corner[0], 0.0], [0.0, corner[1]]]))
+    for a, b, doors in (((r, 0.2), (side - r, 0.2), [(gate - 2.0 - r, 4.0)]),
+                        ((r, side - 0.2), (side - r, side - 0.2), [(postern - 1.5 - r, 3.0)]),
+                        ((0.2, r), (0.2, side - r), []), ((side - 0.2, r), (side - 0.2, side - r), [])):
+        s.wall(a, b, walk, walk + 1.2, doors, thickness=0.4)
+    for _ in range(int(rng.integers(14, 22))):  # guns along the parapets
+        k, t = int(rng.integers(4)), rng.uniform(r + 3.0, side - r - 3.0)
+        if abs(t - gate) > 4.0 and abs(t - postern) > 4.0:
+            x0, z0 = [(t, 1.0), (t, side - 3.0), (1.0, t), (side - 3.0, t)][k]
+            s.box(x0, x0 + (1.0 if k < 2 else 2.0), walk - 0.3, walk + 1.1, z0, z0 + (2.0 if k < 2 else 1.0))
+    for prism in moat_floor:
+        s.prism(prism, deep - 0.5, deep)
+    # the ravelin in the moat before the gate, its bridges and its flight down to the moat
+    rz0, rz1, rx0, rx1 = c0 + 7.0, -r + 5.0, gate - 12.0, gate + 12.0
+    s.box(rx0, rx1, deep - 0.5, 0.0, rz0, rz1)
+    run = math.ceil(-deep / 0.18) * 0.28
+    s.stairs(np.array([rx1 + run, rz0 + 3.0]), np.array([-1.0, 0.0]), 2.0, deep, -deep, -deep / math.ceil(-deep / 0.18), 0.28)
+    _rail_ring(s, rx0, rx1, rz0, rz1, 0.0, {"south": [(10.0, 4.0)], "north": [(10.0, 4.0)], "east": [(2.0, 2.0)]})
+    for z0, z1 in ((c0, rz0), (rz1, 0.0)):
+        s.box(gate - 2.0, gate + 2.0, -0.6, 0.0, z0, z1)
+        for x in (gate - 2.05, gate + 2.05):
+            s.box(x - 0.05, x + 0.05, 0.0, 1.1, z0, z1)
+    # the flights down the counterscarp (north and east) and the postern's down the scarp
+    steps = math.ceil(-deep / 0.18)
+    fx = rng.uniform(r + 6.0, side - r - 6.0)
+    while abs(fx - postern) < 10.0:
+        fx = rng.uniform(r + 6.0, side - r - 6.0)
+    fz = rng.uniform(r + 6.0, side - r - 6.0)
+    for start, heading in (((fx, c1 - run), (0.0, 1.0)), ((c1 - run, fz), (1.0, 0.0)), ((postern, side + run), (0.0, -1.0))):
+        s.stairs(np.array(start), np.array(heading), 2.4, deep, -deep, -deep / steps, 0.28)
+    s.ground(c0, c1, c0, c1, deep, [(-r, r, -r, r), (side - r, side + r, -r, r), (-r, r, side - r, side + r),
+                                     (side - r, side + r, side - r, side + r), (0.0, side, 0.0, side), (rx0, rx1, rz0, rz1)])
+    # the courtyard and its buildings
+    holes: list[tuple[float, float, float, float]] = []
+    taken = [(gate - 4.0, gate + 4.0, band, band + 14.0), (postern - 3.0, postern + 3.0, side - band - 10.0, side - band)]
+    for k in range(int(rng.integers(3, 5))):  # ramps up to the walk, square to the rampart
+        t = rng.uniform(band + 10.0, side - band - 10.0)
+        a, b = [((band + 22.0, t), (band, t)), ((side - band - 22.0, t), (side - band, t)),
+                ((t, side - band - 22.0), (t, side - band)), ((band + 22.0, t), (band, t))][k]
+        box = (min(a[0], b[0]) - 3.0, max(a[0], b[0]) + 3.0, min(a[1], b[1]) - 3.0, max(a[1], b[1]) + 3.0)
+        if _clear(*box, taken):
+            s.ramp(np.array(a), np.array(b), 3.5, 0.0, walk)
+            taken.append(box)
+    mid = side / 2
+    holes.append(_ridged(s, mid - 7.0, mid + 7.0, mid + 2.0, mid + 18.0, -0.5, 7.0))  # the chapel
+    taken.append((mid - 9.0, mid + 9.0, mid, mid + 20.0))
+    for _ in range(int(rng.integers(6, 10))):  # barracks, stores, the magazine
+        w, d = rng.uniform(8.0, 24.0), rng.uniform(7.0, 10.0)
+        for _ in range(100):
+            x, z = rng.uniform(band + 4.0, side - band - 4.0 - w), rng.uniform(band + 4.0, side - band - 4.0 - d)
+            if _clear(x - 4.0, x + w + 4.0, z - 4.0, z + d + 4.0, taken):
+                holes.append(_ridged(s, x, x + w, z, z + d, -0.5, rng.uniform(4.0, 6.0)))
+                taken.append((x - 1.0, x + w + 1.0, z - 1.0, z + d + 1.0))
+                break
+    _trunk(s, np.array([mid, mid - 10.0]), 0.8, -0.5, 1.0)  # the well on the parade
+    s.ground(band, side - band, band, side - band, 0.0, holes, thickness=5.5)
+    # the glacis, trees on it
+    outside: list[tuple[float, float, float, float]] = [(c0, c1, c0, c1), (gate - 6.0, gate + 6.0, c0 - 8.0, c0)]
+    for _ in range(int(rng.integers(150, 200))):
+        p = np.array([rng.uniform(g0 + 1.0, g1 - 1.0), rng.uniform(g0 + 1.0, g1 - 1.0)])
+        if _clear(p[0] - 1.0, p[0] + 1.0, p[1] - 1.0, p[1] + 1.0, outside):
+            _trunk(s, p, rng.uniform(0.25, 0.5), -0.5, 6.0)
+            outside.append((p[0] - 1.5, p[0] + 1.5, p[1] - 1.5, p[1] + 1.5))
+    s.ground(g0, g1, g0, g1, 0.0, [(c0, c1, c0, c1)])
+    return s.mesh()
+
+
+def glacier(seed: int) -> trimesh.Trimesh:
+    """A glacier tongue 110-130 m wide and 250-290 m long rising along +z at 5-7 degrees (ground undulating by 0.4 m),
+    cut across by crevasses (no floor): slots 1.5-4 m wide along x in bands 14-22 m apart. In two bands of three, 1-3
+    slots 15-70 m long, en echelon, leaving a way 6 m wide somewhere across the band; in the third, slots from edge to
+    edge crossed only on 1-2 snow bridges (2.5-4 m wide, where the slot stops) and perhaps a ladder (a plank deck 1.6
+    m wide). Half way up an icefall: a step of 6 m over 2 m (72 degrees), climbed only by two fixed-rope ramps 2.5 m
+    wide and 22 m long. Seracs and boulders (hulls) scattered; at the snout a camp of tents, at the top a hut (both
+    ridged). :func:`_terrain` builds the ice on a grid cut at every slot's edges, leaving out the slots' cells, those
+    under the hut and the tents, and any ice the slots cut off from the rest.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    width, length = rng.uniform(110.0, 130.0), rng.uniform(250.0, 290.0)
+    grade, step = math.tan(math.radians(rng.uniform(5.0, 7.0))), 6.0
+    fall = length * rng.uniform(0.45, 0.55)  # the icefall's foot
+    bumps = rng.uniform(0.0, 2 * math.pi, 3)
+
+    def height(x: float, z: float) -> float:
+        """The ice's top (m) at plan point x, z (floats or arrays of one shape)."""
+        return (z * grade + step * np.clip((z - fall) / 2.0, 0.0, 1.0)
+                + 0.4 * np.sin(x / 17.0 + bumps[0]) * np.sin(z / 23.0 + bumps[1]) + 0.2 * np.sin(z / 9.0 + bumps[2]))
+
+    slots: list[tuple[float, float, float, float]] = []
+    ladders: list[tuple[float, float, float]] = []  # x, z0, z1
+    z, band = 25.0, 0
+    while z < length - 25.0:
+        if not fall - 26.0 < z < fall + 8.0:  # the ramps' feet and the icefall keep clear
+            w = rng.uniform(1.5, 4.0)
+            if band % 3 == 1:  # edge to edge: snow bridges and perhaps a ladder
+                cuts = sorted(rng.uniform(8.0, width - 8.0, int(rng.integers(1, 3))))
+                x0 = -1.0
+                for c in cuts:
+                    if c > x0:
+                        slots.append((x0, c, z, z + w))
+                        x0 = c + rng.uniform(2.5, 4.0)
+                slots.append((x0, width + 1.0, z, z + w))
+                lx = rng.uniform(6.0, width - 6.0)
+                if all(abs(lx - c) > 8.0 for c in cuts):
+                    ladders.append((lx, z, z + w))
+            else:  # en echelon, clear of a way 6 m wide at gap
+                gap = rng.uniform(5.0, width - 5.0)
+                for _ in range(int(rng.integers(1, 4))):
+                    x0 = rng.uniform(-10.0, width - 10.0)
+                    x1 = min(x0 + rng.uniform(15.0, 70.0), width + 1.0)
+                    dz = rng.uniform(-3.0, 3.0)
+                    for a, b in ((max(x0, -1.0), min(x1, gap - 3.0)), (max(x0, gap + 3.0), x1)):
+                        if b - a > 4.0:
+                            slots.append((a, b, z + dz, z + dz + w))
+            band += 1
+        z += rng.uniform(14.0, 22.0)
+    # the camp's tents and the hut: no ice under them (it would be floor inside)
+    huts: list[tuple[float, float, float, float]] = []
+    for _ in range(int(rng.integers(6, 10))):
+        x, z = rng.uniform(5.0, width - 8.0), rng.uniform(3.0, 16.0)
+        if _clear(x - 1.5, x + 4.5, z - 1.5, z + 4.0, huts):
+            huts.append((x, x + 3.0, z, z + 2.5))
+    hx = rng.uniform(20.0, width - 35.0)
+    huts.append((hx, hx + 12.0, length - 16.0, length - 7.0))
+    cuts = [v for q in slots + huts for v in q]
+    xs = np.unique(np.concatenate([np.linspace(0.0, width, int(width / 4.0) + 1), np.clip(cuts[0::4] + cuts[1::4], 0.0, width)]))
+    zs = np.unique(np.concatenate([np.linspace(0.0, length, int(length / 4.0) + 1), [fall, fall + 2.0], cuts[2::4] + cuts[3::4]]))
+    mx, mz = np.meshgrid((xs[:-1] + xs[1:]) / 2, (zs[:-1] + zs[1:]) / 2, indexing="ij")
+    keep = np.ones(mx.shape, dtype=bool)
+    for x0, x1, z0, z1 in slots + huts:
+        keep &= ~((mx > x0) & (mx < x1) & (mz > z0) & (mz < z1))
+    label, _ = ndimage.label(keep)  # 4-neighbour pieces of ice: only the largest is kept
+    keep = label == np.argmax(np.bincount(label.ravel())[1:]) + 1
+    gx, gz = np.meshgrid(xs, zs, indexing="ij")
+    _terrain(s, xs, zs, height(gx, gz), keep)
+    for x0, x1, z0, z1 in huts:
+        y = float(np.min(height(np.array([x0, x1, x0, x1]), np.array([z0, z0, z1, z1]))))
+        _ridged(s, x0, x1, z0, z1, y - 1.0, y + (0.4 if x1 - x0 < 5.0 else 3.0))
+    for lx, z0, z1 in ladders:  # plank decks on the ice either side
+        s.ramp(np.array([lx, z0 - 0.8]), np.array([lx, z1 + 0.8]), 1.6, height(lx, z0 - 0.8) + 0.05, height(lx, z1 + 0.8) + 0.05)
+    for rx in rng.uniform([8.0, width / 2 + 8.0], [width / 2 - 8.0, width - 8.0]):  # the icefall's fixed-rope ramps
+        s.ramp(np.array([rx, fall - 20.0]), np.array([rx, fall + 2.0]), 2.5, height(rx, fall - 20.0), height(rx, fall + 2.0) + 0.05)
+    # seracs and boulders
+    taken = [(x0 - 1.0, x1 + 1.0, z0 - 1.0, z1 + 1.0) for x0, x1, z0, z1 in slots + huts]
+    taken += [(lx - 2.0, lx + 2.0, z0 - 2.0, z1 + 2.0) for lx, z0, z1 in ladders] + [(0.0, width, fall - 22.0, fall + 6.0)]
+    for _ in range(int(rng.integers(130, 170))):
+        p = np.array([rng.uniform(3.0, width - 3.0), rng.uniform(10.0, length - 20.0)])
+        if _clear(p[0] - 2.0, p[0] + 2.0, p[1] - 2.0, p[1] + 2.0, taken):
+            y = float(height(p[0], p[1]))
+            s.rock(rng, p, rng.uniform(0.5, 1.0), y - 1.0, y + rng.uniform(1.5, 3.0))
+            taken.append((p[0] - 2.5, p[0] + 2.5, p[1] - 2.5, p[1] + 2.5))
+    return s.mesh()
+
 KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
     "subway": subway, "archipelago": archipelago, "car_park": car_park,
     "forest": forest, "stadium": stadium, "harbour": harbour,
@@ -6647,6 +6844,7 @@ KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
     "dam": dam,
     "garden": garden, "lighthouse": lighthouse, "canal_locks": canal_locks, "water_park": water_park, "paddies": paddies,
     "cistern": cistern,
+    "star_fort": star_fort, "glacier": glacier,
 }
 """Kind name -> generator (seed -> Y-up mesh in metres)."""
 
