@@ -6824,6 +6824,128 @@ def glacier(seed: int) -> trimesh.Trimesh:
             taken.append((p[0] - 2.5, p[0] + 2.5, p[1] - 2.5, p[1] + 2.5))
     return s.mesh()
 
+def medina(seed: int) -> trimesh.Trimesh:
+    """An old walled town of alleys: a lattice of 16-18 x 12-14 junctions 9 m apart whose alleys (2.6 m wide) are a
+    random spanning tree of it (a depth-first walk) and a tenth of the other links, so most alleys end blind; every
+    other lattice cell and link is houses (ridged, 5-9 m). Some alleys run under houses (a lid at 3.2 m: covered
+    passages); 10-15 courtyard houses open off an alley through a door 1.8 m wide into a yard with a fountain; a
+    mosque's courtyard of 2 x 2 cells with an arcade of pillars. A wall 6 m high round the town, 3-4 gates (one a
+    side but the north, sometimes there too) where an alley meets it, and a road 12 m wide outside (trees, stalls).
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    n, m, cell, lane = int(rng.integers(16, 19)), int(rng.integers(12, 15)), 9.0, 2.6
+    half = lane / 2
+    # the alleys: a depth-first spanning tree of the junctions and a tenth of the other links
+    links: set[frozenset[tuple[int, int]]] = set()
+    seen, stack = {(0, 0)}, [(0, 0)]
+    while stack:
+        i, j = stack[-1]
+        nexts = [(i + di, j + dj) for di, dj in ((1, 0), (-1, 0), (0, 1), (0, -1))
+                 if 0 <= i + di < n and 0 <= j + dj < m and (i + di, j + dj) not in seen]
+        if not nexts:
+            stack.pop()
+            continue
+        c = nexts[int(rng.integers(len(nexts)))]
+        links.add(frozenset(((i, j), c)))
+        seen.add(c)
+        stack.append(c)
+    for i in range(n):
+        for j in range(m):
+            for c in ((i + 1, j), (i, j + 1)):
+                if c[0] < n and c[1] < m and rng.random() < 0.1:
+                    links.add(frozenset(((i, j), c)))
+    # the mosque's courtyard: 2 x 2 cells open, their junctions and links all joined
+    qi, qj = int(rng.integers(3, n - 5)), int(rng.integers(3, m - 5))
+    court = [(qi + a, qj + b) for a in range(3) for b in range(3)]
+    for a in court:
+        for b in court:
+            if abs(a[0] - b[0]) + abs(a[1] - b[1]) == 1:
+                links.add(frozenset((a, b)))
+    x0, z0 = 16.0, 16.0  # the junction (0, 0); the wall at 4.5 m beyond the outer junctions
+    wx0, wx1, wz0, wz1 = x0 - 4.5 - half, x0 + (n - 1) * cell + 4.5 + half, z0 - 4.5 - half, z0 + (m - 1) * cell + 4.5 + half
+    # the gates: an alley on through the wall from an outer junction, one a side (the north only sometimes)
+    gates = [("south", int(rng.integers(1, n - 1))), ("west", int(rng.integers(1, m - 1))), ("east", int(rng.integers(1, m - 1)))]
+    if rng.random() < 0.5:
+        gates.append(("north", int(rng.integers(1, n - 1))))
+    alleys = []  # open rectangles: the junctions' squares, the links' strips, the gates' passages
+    for i in range(n):
+        for j in range(m):
+            if any((i, j) in link for link in links):
+                alleys.append((x0 + i * cell - half, x0 + i * cell + half, z0 + j * cell - half, z0 + j * cell + half))
+    for link in links:
+        (i0, j0), (i1, j1) = sorted(link)
+        alleys.append((x0 + i0 * cell - half, x0 + i1 * cell + half, z0 + j0 * cell - half, z0 + j1 * cell + half))
+    for side, k in gates:
+        x, z = x0 + k * cell, z0 + k * cell
+        alleys.append({"south": (x - half, x + half, wz0 - 1.0, z0), "north": (x - half, x + half, z0 + (m - 1) * cell, wz1 + 1.0),
+                       "west": (wx0 - 1.0, x0, z - half, z + half), "east": (x0 + (n - 1) * cell, wx1 + 1.0, z - half, z + half)}[side])
+    cx0, cx1, cz0, cz1 = x0 + qi * cell - half, x0 + (qi + 2) * cell + half, z0 + qj * cell - half, z0 + (qj + 2) * cell + half
+    alleys.append((cx0, cx1, cz0, cz1))
+    # houses: every cell of the grid cut at the alleys' edges that is no alley, inside the wall
+    xs, zs = _cut_lines(wx0 + 0.3, wx1 - 0.3, wz0 + 0.3, wz1 - 0.3, alleys)
+    holes: list[tuple[float, float, float, float]] = []
+    yards = int(rng.integers(10, 16))
+    for a, b in pairwise(xs):
+        for c, d in pairwise(zs):
+            mx, mz = (a + b) / 2, (c + d) / 2
+            if any(h[0] < mx < h[1] and h[2] < mz < h[3] for h in alleys):
+                continue
+            door = None
+            if b - a > 5.5 and d - c > 5.5 and yards and rng.random() < 0.25:  # a courtyard house off an alley beside it
+                sides = [k for k, (px, pz) in enumerate(((mx, c - 1.0), (mx, d + 1.0), (a - 1.0, mz), (b + 1.0, mz)))
+                         if any(h[0] < px < h[1] and h[2] < pz < h[3] for h in alleys)]
+                if sides:
+                    door = sides[int(rng.integers(len(sides)))]
+            if door is None:
+                holes.append(_ridged(s, a, b, c, d, -0.5, rng.uniform(5.0, 9.0)))
+                continue
+            yards -= 1
+            top = rng.uniform(5.0, 7.0)
+            for k, (p, q) in enumerate((((a, c), (b, c)), ((a, d), (b, d)), ((a, c), (a, d)), ((b, c), (b, d)))):
+                length = abs(q[0] - p[0]) + abs(q[1] - p[1])
+                s.wall(p, q, -0.5, top, [(length / 2 - 0.9, 1.8)] if k == door else [], thickness=0.6)
+            _trunk(s, np.array([mx, mz]), 0.7, -0.5, 0.8)  # the fountain
+    # covered passages: a lid over a tenth of the links away from the gates
+    for link in sorted(links, key=sorted):
+        (i0, j0), (i1, j1) = sorted(link)
+        ax, az = x0 + i0 * cell, z0 + j0 * cell
+        if rng.random() < 0.1 and not (cx0 < ax < cx1 and cz0 < az < cz1):
+            bx, bz = x0 + i1 * cell, z0 + j1 * cell
+            if i0 == i1:
+                _lid(s, ax - half - 0.3, ax + half + 0.3, az + half + 0.5, bz - half - 0.5, 3.2)
+            else:
+                _lid(s, ax + half + 0.5, bx - half - 0.5, az - half - 0.3, az + half + 0.3, 3.2)
+    # the mosque's arcade round its courtyard, a basin in the middle
+    for x in np.arange(cx0 + 3.0, cx1 - 2.0, 3.0):
+        for z in (cz0 + 2.5, cz1 - 2.5):
+            _trunk(s, np.array([x, z]), 0.3, -0.5, 4.0)
+    holes.append(_ridged(s, (cx0 + cx1) / 2 - 2.0, (cx0 + cx1) / 2 + 2.0, (cz0 + cz1) / 2 - 2.0, (cz0 + cz1) / 2 + 2.0, -0.5, 0.4))
+    # the wall and its gates
+    doors = {side: [] for side in ("south", "north", "west", "east")}
+    for side, k in gates:
+        doors[side].append(((k * cell + x0 - half - wx0) if side in ("south", "north") else (k * cell + z0 - half - wz0), lane))
+    s.wall((wx0, wz0), (wx1, wz0), -0.5, 6.0, doors["south"], thickness=0.6)
+    s.wall((wx0, wz1), (wx1, wz1), -0.5, 6.0, doors["north"], thickness=0.6)
+    s.wall((wx0, wz0), (wx0, wz1), -0.5, 6.0, doors["west"], thickness=0.6)
+    s.wall((wx1, wz0), (wx1, wz1), -0.5, 6.0, doors["east"], thickness=0.6)
+    # the road outside: trees and stalls
+    size_x, size_z = wx1 + 12.0, wz1 + 12.0
+    taken = [(wx0 - 1.0, wx1 + 1.0, wz0 - 1.0, wz1 + 1.0)]
+    taken += [(h[0] - 2.0, h[1] + 2.0, h[2] - 6.0, h[3] + 6.0) for h in alleys if h[2] < wz0 or h[3] > wz1]
+    taken += [(h[0] - 6.0, h[1] + 6.0, h[2] - 2.0, h[3] + 2.0) for h in alleys if h[0] < wx0 or h[1] > wx1]
+    for _ in range(int(rng.integers(40, 60))):
+        p = np.array([rng.uniform(2.0, size_x - 2.0), rng.uniform(2.0, size_z - 2.0)])
+        if _clear(p[0] - 1.5, p[0] + 1.5, p[1] - 1.5, p[1] + 1.5, taken):
+            if rng.random() < 0.5:
+                _trunk(s, p, rng.uniform(0.25, 0.4), -0.5, 6.0)
+            else:
+                holes.append(_ridged(s, p[0] - 1.0, p[0] + 1.0, p[1] - 0.8, p[1] + 0.8, -0.5, 1.0))
+            taken.append((p[0] - 2.5, p[0] + 2.5, p[1] - 2.5, p[1] + 2.5))
+    s.ground(0.0, size_x, 0.0, size_z, 0.0, holes)
+    return s.mesh()
+
+
 KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
     "subway": subway, "archipelago": archipelago, "car_park": car_park,
     "forest": forest, "stadium": stadium, "harbour": harbour,
@@ -6844,7 +6966,7 @@ KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
     "dam": dam,
     "garden": garden, "lighthouse": lighthouse, "canal_locks": canal_locks, "water_park": water_park, "paddies": paddies,
     "cistern": cistern,
-    "star_fort": star_fort, "glacier": glacier,
+    "star_fort": star_fort, "glacier": glacier, "medina": medina,
 }
 """Kind name -> generator (seed -> Y-up mesh in metres)."""
 
