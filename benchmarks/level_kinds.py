@@ -6946,6 +6946,107 @@ def medina(seed: int) -> trimesh.Trimesh:
     return s.mesh()
 
 
+def suburb(seed: int) -> trimesh.Trimesh:
+    """A suburb of cul-de-sacs: a distributor road 9 m wide along x; north of it 5-6 closes 6 m wide and 48-72 m long,
+    each ending in a turning head 16 m across, lined both sides by plots 12 m wide and 24 m deep: a front garden open
+    to the road (a car on the drive of most), a house (ridged) with a side way 2.2 m wide past it, closed by a fence with a gate 1.4 m wide, to a
+    back garden fenced 1.8 m high (a shed in some). Behind the heads a green 24 m deep (trees, a playground's
+    frames) across the whole width, reached from half the heads (at least one) by a footpath 3 m wide between fences;
+    back to back plots of neighbouring closes meet at a fence, and garages (ridged) fill the ground between a short close's head and the green. South of the road a row of shops (ridged) with a car
+    park of parked cars in front, and a playing field fenced 1.8 m high with two gates.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    closes, plot, depth, road = int(rng.integers(5, 7)), 12.0, 24.0, 6.0
+    strip = road + 2 * depth
+    size_x = closes * strip
+    lengths = [float(rng.choice([48.0, 60.0, 72.0])) for _ in range(closes)]
+    rz = 40.0  # the distributor's north edge; it runs from z = 31 to 40
+    gz0 = rz + max(lengths) + 16.0  # the green's south edge
+    size_z = gz0 + 24.0
+    holes: list[tuple[float, float, float, float]] = []
+    paths = [k for k in range(closes) if rng.random() < 0.5] or [int(rng.integers(closes))]
+
+    def plot_at(x_road: float, out: float, z0: float) -> None:
+        """A plot from the road's edge ``x_road`` outward (``out`` = +1 east, -1 west) between z0 and z0 + 12."""
+        xf, xh, xb = x_road + out * 5.0, x_road + out * 14.0, x_road + out * depth
+        holes.append(_ridged(s, min(xf, xh), max(xf, xh), z0 + 2.2, z0 + plot, -0.5, rng.uniform(5.0, 6.5)))
+        s.wall((xf, z0), (xb, z0), -0.5, 1.8, thickness=0.1)  # the side fences: the plot's south and north
+        s.wall((xh, z0 + plot), (xb, z0 + plot), -0.5, 1.8, thickness=0.1)
+        s.wall((xb, z0), (xb, z0 + plot), -0.5, 1.8, thickness=0.1)
+        s.wall((xf + out * 1.0, z0), (xf + out * 1.0, z0 + 2.2), -0.5, 1.8, [(0.4, 1.4)], thickness=0.1)  # the gate
+        if rng.random() < 0.6:  # a car on the drive
+            holes.append(_ridged(s, min(xf, xf - out * 4.5), max(xf, xf - out * 4.5), z0 + 6.0, z0 + 7.8, -0.5, 1.0))
+        if rng.random() < 0.4:
+            xs = xb - out * 3.5
+            holes.append(_ridged(s, min(xs, xs + out * 2.5), max(xs, xs + out * 2.5), z0 + 8.0, z0 + 11.0, -0.5, 2.0))
+
+    for k in range(closes):
+        x0 = k * strip
+        xc0, xc1 = x0 + depth, x0 + depth + road
+        head = rz + lengths[k]
+        for z0 in np.arange(rz, head - 1.0, plot):
+            plot_at(xc0, -1.0, z0)
+            plot_at(xc1, 1.0, z0)
+        # beside the head: fences from the last plots back to the green; the head's far side closed but for a path
+        for xa, xb_ in ((x0, xc0 - 5.0), (xc1 + 5.0, x0 + strip)):
+            s.wall((xa, head), (xb_, head), -0.5, 1.8, thickness=0.1)
+        for x in (xc0 - 5.0, xc1 + 5.0):
+            s.wall((x, head), (x, head + 16.0), -0.5, 1.8, thickness=0.1)
+        far = head + 16.0
+        mid = (xc0 + xc1) / 2
+        if k in paths:
+            s.wall((xc0 - 5.0, far), (xc1 + 5.0, far), -0.5, 1.8, [(mid - 1.5 - xc0 + 5.0, 3.0)], thickness=0.1)
+            for x in (mid - 1.55, mid + 1.55):
+                s.wall((x, far), (x, gz0), -0.5, 1.8, thickness=0.1)
+            walls = ((x0, mid - 1.55), (mid + 1.55, x0 + strip))
+        else:
+            s.wall((xc0 - 5.0, far), (xc1 + 5.0, far), -0.5, 1.8, thickness=0.1)
+            walls = ((x0, x0 + strip),)
+        for xa, xb_ in walls:  # the green's fence
+            s.wall((xa, gz0), (xb_, gz0), -0.5, 1.8, thickness=0.1)
+        if gz0 - far > 1.0:  # a short close: garages fill the ground behind its head (but the path)
+            for xa, xb_ in (((xc0 - 5.0, mid - 1.55), (mid + 1.55, xc1 + 5.0)) if k in paths else ((xc0 - 5.0, xc1 + 5.0),)):
+                holes.append(_ridged(s, xa + 0.5, xb_ - 0.5, far + 0.5, gz0 - 0.5, -0.5, 3.0))
+        # the back-to-back strip behind the head's fences up to the green: closed yards of the corner houses
+        for xa, xb_ in ((x0, xc0 - 5.0), (xc1 + 5.0, x0 + strip)):
+            if gz0 - head > 0.5:
+                holes.append(_ridged(s, xa + 0.5, xb_ - 0.5, head + 0.5, gz0 - 0.5, -0.5, rng.uniform(5.0, 6.5)))
+    s.wall((0.0, rz), (0.0, gz0), -0.5, 1.8, thickness=0.1)
+    s.wall((size_x, rz), (size_x, gz0), -0.5, 1.8, thickness=0.1)
+    # the green: trees and play frames
+    taken = [(0.0, size_x, 0.0, gz0 + 1.0)]
+    _trees(s, rng, int(rng.integers(30, 45)), size_x, size_z, taken, (0.25, 0.45), 6.0)
+    for _ in range(int(rng.integers(4, 7))):
+        p = np.array([rng.uniform(4.0, size_x - 8.0), rng.uniform(gz0 + 4.0, size_z - 6.0)])
+        if _clear(p[0] - 1.0, p[0] + 5.0, p[1] - 1.0, p[1] + 3.0, taken):
+            for dx in (0.0, 4.0):
+                for dz in (0.0, 2.0):
+                    _trunk(s, p + np.array([dx, dz]), 0.1, -0.5, 2.5)
+            for dz in (0.0, 2.0):  # the bars, too thin to stand on
+                s.box(p[0], p[0] + 4.1, 2.5, 2.6, p[1] + dz - 0.05, p[1] + dz + 0.05)
+            taken.append((p[0] - 1.5, p[0] + 5.5, p[1] - 1.5, p[1] + 3.5))
+    # south of the road: shops, the car park, the playing field
+    sx = rng.uniform(10.0, size_x * 0.4)
+    shops = (sx, sx + rng.uniform(40.0, 60.0), 2.0, 14.0)
+    holes.append(_ridged(s, *shops, -0.5, 5.0))
+    for x in np.arange(shops[0] + 2.0, shops[1] - 2.0, 2.6):
+        for z in (17.0, 24.0):
+            if rng.random() < 0.7:
+                holes.append(_ridged(s, x, x + 1.8, z, z + 4.5, -0.5, 1.0))
+    fx0, fx1 = shops[1] + 12.0, min(size_x - 4.0, shops[1] + 12.0 + rng.uniform(60.0, 80.0))
+    gates = [(rng.uniform(2.0, (fx1 - fx0) / 2 - 4.0), 2.0), (rng.uniform((fx1 - fx0) / 2, fx1 - fx0 - 4.0), 2.0)]
+    s.wall((fx0, 27.0), (fx1, 27.0), -0.5, 1.8, gates, thickness=0.1)
+    s.wall((fx0, 3.0), (fx1, 3.0), -0.5, 1.8, thickness=0.1)
+    for x in (fx0, fx1):
+        s.wall((x, 3.0), (x, 27.0), -0.5, 1.8, thickness=0.1)
+    for x in (fx0 + 4.0, fx1 - 4.0):  # goals
+        for z in (12.0, 18.0):
+            _trunk(s, np.array([x, z]), 0.08, -0.5, 2.4)
+    s.ground(0.0, size_x, 0.0, size_z, 0.0, holes)
+    return s.mesh()
+
+
 KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
     "subway": subway, "archipelago": archipelago, "car_park": car_park,
     "forest": forest, "stadium": stadium, "harbour": harbour,
@@ -6967,6 +7068,7 @@ KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
     "garden": garden, "lighthouse": lighthouse, "canal_locks": canal_locks, "water_park": water_park, "paddies": paddies,
     "cistern": cistern,
     "star_fort": star_fort, "glacier": glacier, "medina": medina,
+    "suburb": suburb,
 }
 """Kind name -> generator (seed -> Y-up mesh in metres)."""
 
