@@ -6976,7 +6976,7 @@ def suburb(seed: int) -> trimesh.Trimesh:
         s.wall((xb, z0), (xb, z0 + plot), -0.5, 1.8, thickness=0.1)
         s.wall((xf + out * 1.0, z0), (xf + out * 1.0, z0 + 2.2), -0.5, 1.8, [(0.4, 1.4)], thickness=0.1)  # the gate
         if rng.random() < 0.6:  # a car on the drive
-            holes.append(_ridged(s, min(xf, xf - out * 4.5), max(xf, xf - out * 4.5), z0 + 6.0, z0 + 7.8, -0.5, 1.0))
+            _car(s, min(xf, xf - out * 4.5), max(xf, xf - out * 4.5), z0 + 6.0, z0 + 7.8, 0.0)
         if rng.random() < 0.4:
             xs = xb - out * 3.5
             holes.append(_ridged(s, min(xs, xs + out * 2.5), max(xs, xs + out * 2.5), z0 + 8.0, z0 + 11.0, -0.5, 2.0))
@@ -7033,7 +7033,7 @@ def suburb(seed: int) -> trimesh.Trimesh:
     for x in np.arange(shops[0] + 2.0, shops[1] - 2.0, 2.6):
         for z in (17.0, 24.0):
             if rng.random() < 0.7:
-                holes.append(_ridged(s, x, x + 1.8, z, z + 4.5, -0.5, 1.0))
+                _car(s, x, x + 1.8, z, z + 4.5, 0.0)
     fx0, fx1 = shops[1] + 12.0, min(size_x - 4.0, shops[1] + 12.0 + rng.uniform(60.0, 80.0))
     gates = [(rng.uniform(2.0, (fx1 - fx0) / 2 - 4.0), 2.0), (rng.uniform((fx1 - fx0) / 2, fx1 - fx0 - 4.0), 2.0)]
     s.wall((fx0, 27.0), (fx1, 27.0), -0.5, 1.8, gates, thickness=0.1)
@@ -7044,6 +7044,81 @@ def suburb(seed: int) -> trimesh.Trimesh:
         for z in (12.0, 18.0):
             _trunk(s, np.array([x, z]), 0.08, -0.5, 2.4)
     s.ground(0.0, size_x, 0.0, size_z, 0.0, holes)
+    return s.mesh()
+
+
+def _car(s: _Solids, x0: float, x1: float, z0: float, z1: float, y: float) -> None:
+    """A car on a floor at ``y`` over [x0, x1] x [z0, z1]: a hull from 0.3 m under the floor to a ridge 1.4 m over it
+    along its longer side, so neither its top nor the floor under it (less than the agent's height) is floor."""
+    mx, mz = (x0 + x1) / 2, (z0 + z1) / 2
+    ridge = [[x0, y + 1.4, mz], [x1, y + 1.4, mz]] if x1 - x0 > z1 - z0 else [[mx, y + 1.4, z0], [mx, y + 1.4, z1]]
+    s.hull(np.array([[x, y - 0.3, z] for x in (x0, x1) for z in (z0, z1)] + ridge))
+
+
+def cloverleaf(seed: int) -> trimesh.Trimesh:
+    """A cloverleaf junction over a marsh (no floor but the roads): motorway A along x on a causeway (deck top y = 0),
+    motorway B along z on a viaduct 7.5-8.5 m up crossing over it, each 560-640 m long and two carriageways of 8.5 m
+    split by a barrier 0.9 m high (no gap), so a carriageway of one road meets the other only through the loops: in
+    each quadrant a loop ramp 6 m wide of radius 28-34 m turning 270 degrees, flat where it merges with A and with B
+    (its first and last 25 degrees) and climbing 4 degrees between. A toll plaza across B's north arm (booths 1.5 m
+    wide, lanes 2.6-3 m between them); off A's south carriageway in the west a service area (a deck behind a fence 1.2
+    m high with an entry and an exit, a shop, fuel pumps, parked cars); 70-100 abandoned cars (:func:`_car`) on the roads.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    half_len, top, radius, edge = rng.uniform(280.0, 320.0), rng.uniform(7.5, 8.5), rng.uniform(28.0, 34.0), 9.5
+    s.box(-half_len, half_len, -1.0, 0.0, -edge, edge)  # A
+    s.box(-edge, edge, top - 1.0, top, -half_len, half_len)  # B
+    s.box(-half_len, half_len, 0.0, 0.9, -0.4, 0.4)
+    s.box(-0.4, 0.4, top, top + 0.9, -half_len, half_len)
+    for z in np.arange(-half_len + 20.0, half_len, 40.0):  # B's piers, clear of A
+        if abs(z) > edge + 4.0:
+            s.box(-3.0, 3.0, -12.0, top - 1.0, z - 1.0, z + 1.0)
+    # the loops
+    flat = math.radians(25.0)
+    for sx in (-1.0, 1.0):
+        for sz in (-1.0, 1.0):
+            c = np.array([sx * (edge + radius), sz * (edge + radius)])
+            a_a, a_b = math.atan2(-sz, 0.0), math.atan2(0.0, -sx)
+            turn = -math.copysign(1.0, math.remainder(a_b - a_a, 2 * math.pi)) * 1.5 * math.pi
+            angles = np.linspace(0.0, 1.0, 55)
+            heights = top * np.clip((angles * 1.5 * math.pi - flat) / (1.5 * math.pi - 2 * flat), 0.0, 1.0)
+            for (t0, y0), (t1, y1) in pairwise(zip(angles, heights)):
+                a0, a1 = a_a + turn * t0, a_a + turn * t1
+                corners = [(c + r * np.array([math.cos(a), math.sin(a)]), y) for a, y in ((a0, y0), (a1, y1)) for r in (radius - 3.0, radius + 3.0)]
+                s.hull(np.array([[p[0], y - d, p[1]] for p, y in corners for d in (0.0, 0.3)]))
+    # the toll plaza on B's north arm
+    zt = rng.uniform(edge + 2 * radius + 30.0, half_len - 40.0)
+    for x in np.concatenate([np.arange(-edge + 3.0, -2.0, 4.3), np.arange(3.0, edge - 1.0, 4.3)]):
+        _ridged(s, x, x + 1.5, zt, zt + 6.0, top - 0.5, top + 1.0)  # under 2 m inside
+    # the service area in the west, south of A
+    x0, x1 = -half_len + 30.0, -half_len + 30.0 + rng.uniform(90.0, 110.0)
+    s.wall((x0, -edge - 0.3), (x1, -edge - 0.3), 0.0, 1.2, [(2.0, 10.0), (x1 - x0 - 12.0, 10.0)], thickness=0.2)
+    taken = [(x0 - 1.0, x0 + 13.0, -edge - 8.0, -edge), (x1 - 13.0, x1 + 1.0, -edge - 8.0, -edge)]
+    sx0 = rng.uniform(x0 + 14.0, x1 - 44.0)
+    shop = _ridged(s, sx0, sx0 + 30.0, -edge - 38.0, -edge - 26.0, -1.0, 4.5)
+    s.ground(x0, x1, -edge - 40.0, -edge, 0.0, [shop], thickness=1.0)  # the deck stops under the shop
+    taken.append((sx0 - 2.0, sx0 + 32.0, -edge - 40.0, -edge - 24.0))
+    px = rng.uniform(x0 + 14.0, x1 - 34.0)
+    for x in np.arange(px, px + 20.0, 6.0):  # the pumps
+        for z in (-edge - 14.0, -edge - 20.0):
+            s.box(x, x + 1.2, -1.0, 1.6, z, z + 0.6)
+    taken.append((px - 3.0, px + 23.0, -edge - 23.0, -edge - 11.0))
+    for i, x in enumerate(np.arange(x0 + 2.0, x1 - 3.0, 2.6)):
+        for z in (-edge - 40.0, -edge - 30.0):
+            if i % 6 and rng.random() < 0.6 and _clear(x, x + 1.8, z, z + 4.5, taken):  # an aisle every sixth bay
+                _car(s, x, x + 1.8, z, z + 4.5, 0.0)
+    # abandoned cars: along a road, in a carriageway
+    cars = [(x0 - 5.0, x1 + 5.0, -edge, 0.0), (-edge - 2.0, edge + 2.0, -edge - 2.0, edge + 2.0), (-edge, edge, zt - 8.0, zt + 14.0)]
+    for _ in range(int(rng.integers(70, 101))):  # 1.6-2.2 m clear of the barrier and the edge, 3 m of each other
+        lane = rng.choice([-1.0, 1.0]) * rng.uniform(2.0, 5.5)
+        if rng.random() < 0.35:  # on A
+            x, z, w, d, y = rng.uniform(-half_len + 5.0, half_len - 10.0), min(lane, lane + 1.8), 4.5, 1.8, 0.0
+        else:  # on B
+            x, z, w, d, y = min(lane, lane + 1.8), rng.uniform(-half_len + 5.0, half_len - 10.0), 1.8, 4.5, top
+        if _clear(x - 3.0, x + w + 3.0, z - 3.0, z + d + 3.0, cars):
+            _car(s, x, x + w, z, z + d, y)
+            cars.append((x, x + w, z, z + d))
     return s.mesh()
 
 
@@ -7068,7 +7143,7 @@ KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
     "garden": garden, "lighthouse": lighthouse, "canal_locks": canal_locks, "water_park": water_park, "paddies": paddies,
     "cistern": cistern,
     "star_fort": star_fort, "glacier": glacier, "medina": medina,
-    "suburb": suburb,
+    "suburb": suburb, "cloverleaf": cloverleaf,
 }
 """Kind name -> generator (seed -> Y-up mesh in metres)."""
 
