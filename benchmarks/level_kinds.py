@@ -7122,6 +7122,74 @@ def cloverleaf(seed: int) -> trimesh.Trimesh:
     return s.mesh()
 
 
+def _polar(r: float, a: float) -> np.ndarray:
+    """The plan point (2,) at radius ``r`` (m) and angle ``a`` (radians) about the origin."""
+    return np.array([r * math.cos(a), r * math.sin(a)])
+
+
+def radial_town(seed: int) -> trimesh.Trimesh:
+    """An ideal town of rings and radials (its only floor the streets, y = 0): a round place of radius 18 m round a
+    monument (a pointed octagon 3 m in radius), 8-10 avenues 10 m wide out from it (a row of trees down each), three ring streets 6 m wide 30 m apart
+    (the outer one the town's edge) and, beyond the first ring, lanes 4 m wide half way between the avenues. Between
+    them blocks of houses with ridged roofs (no floor), but one block a ring a garden (floor, trees). Avenues, lanes
+    and rings are straight strips and chords of 3 degrees or less.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    place, ring_w, avenue, lane = 18.0, 6.0, 10.0, 4.0
+    rings = [place + 30.0 * (k + 1) + rng.uniform(-3.0, 3.0) for k in range(3)]
+    n = int(rng.integers(8, 11))
+    turn = rng.uniform(0.0, 2 * math.pi)
+    avenues = [turn + 2 * math.pi * k / n + rng.uniform(-0.08, 0.08) for k in range(n)]
+    lanes = [(a + b) / 2 for a, b in pairwise(avenues + [avenues[0] + 2 * math.pi])]
+    outer = rings[-1] + ring_w / 2
+    # the place, its monument, the rings, the avenues and the lanes
+    sides = np.linspace(0.0, 2 * math.pi, 49)
+    for a0, a1 in pairwise(sides):  # the place stops at the monument (its floor would be inside it)
+        s.prism(np.array([_polar(3.0, a0), _polar(place, a0), _polar(place, a1), _polar(3.0, a1)]), -0.5, 0.0)
+    s.hull(np.concatenate([[[x, y, z] for x, z in (_polar(3.0, a) for a in sides[:-1:6]) for y in (-0.5, 4.0)], [[0.0, 12.0, 0.0]]]))
+    for r in rings:
+        steps = np.linspace(0.0, 2 * math.pi, int(2 * math.pi * r / 5.0) + 1)
+        for a0, a1 in pairwise(steps):
+            s.prism(np.array([_polar(r - ring_w / 2, a0), _polar(r + ring_w / 2, a0), _polar(r + ring_w / 2, a1),
+                              _polar(r - ring_w / 2, a1)]), -0.5, 0.0)
+    for a in avenues:
+        s.prism(_strip(_polar(place - 2.0, a), _polar(outer, a), avenue), -0.5, 0.0)
+        for r in np.arange(place + 6.0, outer - 4.0, 8.0):
+            if all(abs(r - q) > ring_w / 2 + 1.5 for q in rings):
+                _trunk(s, _polar(r, a), 0.35, -0.5, 6.0)
+    for a in lanes:
+        s.prism(_strip(_polar(rings[0], a), _polar(outer, a), lane), -0.5, 0.0)
+    # the blocks: between two radial ways (avenues, and lanes beyond the first ring) and two rings
+    bounds = [(place + 0.0, rings[0] - ring_w / 2)] + [(a + ring_w / 2, b - ring_w / 2) for a, b in pairwise(rings)]
+    for k, (r0, r1) in enumerate(bounds):
+        ways = sorted([(a, avenue) for a in avenues] + ([(a, lane) for a in lanes] if k else []))
+        ways.append((ways[0][0] + 2 * math.pi, ways[0][1]))
+        garden = int(rng.integers(len(ways) - 1))
+        for g, ((a0, w0), (a1, w1)) in enumerate(pairwise(ways)):
+            r_in = max(r0, (w0 + w1) / 2 / math.sin((a1 - a0) / 2) + 1.0)
+            inner = (a0 + math.asin(w0 / 2 / r_in), a1 - math.asin(w1 / 2 / r_in))
+            outer_ = (a0 + math.asin(w0 / 2 / r1), a1 - math.asin(w1 / 2 / r1))
+            m = max(1, math.ceil((outer_[1] - outer_[0]) / math.radians(3.0)))
+            top = rng.uniform(6.0, 12.0)
+            for j in range(m):
+                t0, t1 = j / m, (j + 1) / m
+                quad = np.array([_polar(r_in, inner[0] + t0 * (inner[1] - inner[0])), _polar(r1, outer_[0] + t0 * (outer_[1] - outer_[0])),
+                                 _polar(r1, outer_[0] + t1 * (outer_[1] - outer_[0])), _polar(r_in, inner[0] + t1 * (inner[1] - inner[0]))])
+                if g == garden:
+                    s.prism(quad, -0.5, 0.0)
+                    continue
+                mid_in, mid_out = (quad[0] + quad[3]) / 2, (quad[1] + quad[2]) / 2
+                s.hull(np.concatenate([np.insert(quad, 1, -0.5, axis=1), np.insert(quad, 1, top, axis=1),
+                                       [[mid_in[0], top + 6.0, mid_in[1]], [mid_out[0], top + 6.0, mid_out[1]]]]))
+            if g == garden:
+                for _ in range(int(rng.integers(6, 12))):
+                    r, a = rng.uniform(r_in + 2.0, r1 - 2.0), rng.uniform(*outer_)
+                    if a0 + math.asin((w0 / 2 + 2.0) / r) < a < a1 - math.asin((w1 / 2 + 2.0) / r):
+                        _trunk(s, _polar(r, a), 0.35, -0.5, 6.0)
+    return s.mesh()
+
+
 KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
     "subway": subway, "archipelago": archipelago, "car_park": car_park,
     "forest": forest, "stadium": stadium, "harbour": harbour,
@@ -7143,7 +7211,7 @@ KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
     "garden": garden, "lighthouse": lighthouse, "canal_locks": canal_locks, "water_park": water_park, "paddies": paddies,
     "cistern": cistern,
     "star_fort": star_fort, "glacier": glacier, "medina": medina,
-    "suburb": suburb, "cloverleaf": cloverleaf,
+    "suburb": suburb, "cloverleaf": cloverleaf, "radial_town": radial_town,
 }
 """Kind name -> generator (seed -> Y-up mesh in metres)."""
 
