@@ -1,4 +1,4 @@
-"""Level kinds of the fifth to sixteenth held-out rounds (issue 9): generators no preset setting was made on.
+"""Level kinds of the fifth to seventeenth held-out rounds (issue 9): generators no preset setting was made on.
 
 Fifth round: six kinds, each about 1,000 navmesh polygons with the presets' agent (radius 0.5 m, height 2 m, climb 0.4 m):
 ``subway`` (platforms, track pits 1.2 m lower, stairs up to two concourses), ``archipelago`` (islands joined by
@@ -123,6 +123,18 @@ and ``cistern`` (a forest of columns in water under a lid, walkways along a rand
 between two stair wells down from streets). A closed solid's top inside another is floor again (a first draft's
 garden terrace under its house, 317 m²; the paddies' shrine yard inside the shrine, 25 m²): the house and the shrine
 now rise from under the floor round them, which stops at them.
+
+Seventeenth round: six more kinds, 649-873 navmesh polygons with that agent (seeds 0-2): ``star_fort`` (a square
+enceinte with diamond bastions, ramparts whose walk is climbed by ramps, a dry moat 5 m deep crossed only over a
+ravelin to the gate, flights and a postern down into it, a glacis), ``glacier`` (sloped ice cut by crevasses en
+echelon and edge to edge, crossed on snow bridges and ladders, an icefall climbed by two ramps), ``medina`` (a braid
+maze of alleys 2.6 m wide among houses, courtyard houses, covered passages, a mosque's courtyard, a wall with gates),
+``suburb`` (cul-de-sacs off a distributor road, plots whose fenced back gardens open only through a side gate,
+footpaths to a green), ``cloverleaf`` (two motorways crossing at two heights, each split by an unbroken barrier, joined
+only by four 270-degree loops) and ``radial_town`` (a round place, avenues, lanes and ring streets between ridged
+blocks: the streets are the only floor). The same rules as before: the floor stops under every closed solid one could
+stand inside (the fort's courtyard under its buildings, the service area's deck under its shop), a monument stands in
+a ring of floor, not on it, and a car (:func:`_car`) is a hull too low inside for the agent and too steep on top.
 
 Run: ``.venv/bin/python benchmarks/level_kinds.py OUT_DIR [--kinds subway forest] [--seeds 0 1 2]`` writes
 ``OUT_DIR/<kind>_s<seed>.obj``, the files ``benchmarks/analysis_quality.py --levels`` takes (which also takes the
