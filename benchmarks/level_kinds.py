@@ -6717,17 +6717,19 @@ def star_fort(seed: int) -> trimesh.Trimesh:
     # the courtyard and its buildings
     holes: list[tuple[float, float, float, float]] = []
     taken = [(gate - 4.0, gate + 4.0, band, band + 14.0), (postern - 3.0, postern + 3.0, side - band - 10.0, side - band)]
-    for k in range(int(rng.integers(3, 5))):  # ramps up to the walk, square to the rampart
-        t = rng.uniform(band + 10.0, side - band - 10.0)
-        a, b = [((band + 22.0, t), (band, t)), ((side - band - 22.0, t), (side - band, t)),
-                ((t, side - band - 22.0), (t, side - band)), ((band + 22.0, t), (band, t))][k]
-        box = (min(a[0], b[0]) - 3.0, max(a[0], b[0]) + 3.0, min(a[1], b[1]) - 3.0, max(a[1], b[1]) + 3.0)
-        if _clear(*box, taken):
-            s.ramp(np.array(a), np.array(b), 3.5, 0.0, walk)
-            taken.append(box)
     mid = side / 2
     holes.append(_ridged(s, mid - 7.0, mid + 7.0, mid + 2.0, mid + 18.0, -0.5, 7.0))  # the chapel
     taken.append((mid - 9.0, mid + 9.0, mid, mid + 20.0))
+    for k in range(int(rng.integers(3, 5))):  # ramps up to the walk, square to the rampart (west, east, north, west)
+        for _ in range(100):
+            t = rng.uniform(band + 10.0, side - band - 10.0)
+            a, b = [((band + 22.0, t), (band, t)), ((side - band - 22.0, t), (side - band, t)),
+                    ((t, side - band - 22.0), (t, side - band)), ((band + 22.0, t), (band, t))][k]
+            box = (min(a[0], b[0]) - 3.0, max(a[0], b[0]) + 3.0, min(a[1], b[1]) - 3.0, max(a[1], b[1]) + 3.0)
+            if _clear(*box, taken):
+                s.ramp(np.array(a), np.array(b), 3.5, 0.0, walk)
+                taken.append(box)
+                break
     for _ in range(int(rng.integers(6, 10))):  # barracks, stores, the magazine
         w, d = rng.uniform(8.0, 24.0), rng.uniform(7.0, 10.0)
         for _ in range(100):
@@ -6840,7 +6842,7 @@ def medina(seed: int) -> trimesh.Trimesh:
     """An old walled town of alleys: a lattice of 16-18 x 12-14 junctions 9 m apart whose alleys (2.6 m wide) are a
     random spanning tree of it (a depth-first walk) and a tenth of the other links, so most alleys end blind; every
     other lattice cell and link is houses (ridged, 5-9 m). Some alleys run under houses (a lid at 3.2 m: covered
-    passages); 10-15 courtyard houses open off an alley through a door 1.8 m wide into a yard with a fountain; a
+    passages); 10-15 courtyard houses (drawn among the house cells over 5.5 m square beside an alley) open off an alley through a door 1.8 m wide into a yard with a fountain; a
     mosque's courtyard of 2 x 2 cells with an arcade of pillars. A wall 6 m high round the town, 3-4 gates (one a
     side but the north, sometimes there too) where an alley meets it, and a road 12 m wide outside (trees, stalls).
     """
@@ -6897,22 +6899,22 @@ def medina(seed: int) -> trimesh.Trimesh:
     # houses: every cell of the grid cut at the alleys' edges that is no alley, inside the wall
     xs, zs = _cut_lines(wx0 + 0.3, wx1 - 0.3, wz0 + 0.3, wz1 - 0.3, alleys)
     holes: list[tuple[float, float, float, float]] = []
-    yards = int(rng.integers(10, 16))
+    cells, doors_of = [], []  # the house cells, and the sides of each (0 south, 1 north, 2 west, 3 east) on an alley
     for a, b in pairwise(xs):
         for c, d in pairwise(zs):
             mx, mz = (a + b) / 2, (c + d) / 2
-            if any(h[0] < mx < h[1] and h[2] < mz < h[3] for h in alleys):
-                continue
-            door = None
-            if b - a > 5.5 and d - c > 5.5 and yards and rng.random() < 0.25:  # a courtyard house off an alley beside it
-                sides = [k for k, (px, pz) in enumerate(((mx, c - 1.0), (mx, d + 1.0), (a - 1.0, mz), (b + 1.0, mz)))
-                         if any(h[0] < px < h[1] and h[2] < pz < h[3] for h in alleys)]
-                if sides:
-                    door = sides[int(rng.integers(len(sides)))]
-            if door is None:
-                holes.append(_ridged(s, a, b, c, d, -0.5, rng.uniform(5.0, 9.0)))
-                continue
-            yards -= 1
+            if not any(h[0] < mx < h[1] and h[2] < mz < h[3] for h in alleys):
+                cells.append((a, b, c, d))
+                doors_of.append([k for k, (px, pz) in enumerate(((mx, c - 1.0), (mx, d + 1.0), (a - 1.0, mz), (b + 1.0, mz)))
+                                 if b - a > 5.5 and d - c > 5.5 and any(h[0] < px < h[1] and h[2] < pz < h[3] for h in alleys)])
+    candidates = [i for i, sides in enumerate(doors_of) if sides]
+    yards = set(rng.choice(candidates, size=min(len(candidates), int(rng.integers(10, 16))), replace=False).tolist())
+    for i, (a, b, c, d) in enumerate(cells):
+        mx, mz = (a + b) / 2, (c + d) / 2
+        if i not in yards:
+            holes.append(_ridged(s, a, b, c, d, -0.5, rng.uniform(5.0, 9.0)))
+        else:  # a courtyard house off an alley beside it
+            door = doors_of[i][int(rng.integers(len(doors_of[i])))]
             top = rng.uniform(5.0, 7.0)
             for k, (p, q) in enumerate((((a, c), (b, c)), ((a, d), (b, d)), ((a, c), (a, d)), ((b, c), (b, d)))):
                 length = abs(q[0] - p[0]) + abs(q[1] - p[1])
@@ -7116,7 +7118,7 @@ def cloverleaf(seed: int) -> trimesh.Trimesh:
         for z in (-edge - 14.0, -edge - 20.0):
             s.box(x, x + 1.2, -1.0, 1.6, z, z + 0.6)
     taken.append((px - 3.0, px + 23.0, -edge - 23.0, -edge - 11.0))
-    for i, x in enumerate(np.arange(x0 + 2.0, x1 - 3.0, 2.6)):
+    for i, x in enumerate(np.arange(x0 + 2.0, x1 - 3.0, 2.4)):  # bays 2.4 m: 0.6 m between cars, too narrow to enter
         for z in (-edge - 40.0, -edge - 30.0):
             if i % 6 and rng.random() < 0.6 and _clear(x, x + 1.8, z, z + 4.5, taken):  # an aisle every sixth bay
                 _car(s, x, x + 1.8, z, z + 4.5, 0.0)
