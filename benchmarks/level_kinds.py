@@ -6753,13 +6753,13 @@ def star_fort(seed: int) -> trimesh.Trimesh:
 
 def glacier(seed: int) -> trimesh.Trimesh:
     """A glacier tongue 110-130 m wide and 250-290 m long rising along +z at 5-7 degrees (ground undulating by 0.4 m),
-    cut across by crevasses (no floor): slots 1.5-4 m wide along x in bands 14-22 m apart. In two bands of three, 1-3
-    slots 15-70 m long, en echelon, leaving a way 6 m wide somewhere across the band; in the third, slots from edge to
-    edge crossed only on 1-2 snow bridges (2.5-4 m wide, where the slot stops) and perhaps a ladder (a plank deck 1.6
-    m wide). Half way up an icefall: a step of 6 m over 2 m (72 degrees), climbed only by two fixed-rope ramps 2.5 m
-    wide and 22 m long. Seracs and boulders (hulls) scattered; at the snout a camp of tents, at the top a hut (both
-    ridged). :func:`_terrain` builds the ice on a grid cut at every slot's edges, leaving out the slots' cells, those
-    under the hut and the tents, and any ice the slots cut off from the rest.
+    cut across by crevasses (no floor): slots 1.5-4 m wide along x in bands 14-22 m apart. In two bands of three,
+    1-3 slots 15-70 m long, en echelon, leaving a way 6 m wide somewhere across the band; in the third, slots from
+    edge to edge crossed only on 1-2 snow bridges (2.5-4 m wide, where the slot stops) and perhaps a ladder (a plank
+    deck 1.6 m wide). Half way up an icefall: a step of 6 m over 2 m (72 degrees), climbed only by two fixed-rope
+    ramps 2.5 m wide and 22 m long. Seracs and boulders (hulls) scattered; at the snout a camp of tents, at the top
+    a hut (both ridged). :func:`_terrain` builds the ice on a grid cut at every slot's edges, leaving out the slots'
+    cells, those under the hut and the tents, and any ice the slots cut off from the rest.
     """
     rng = np.random.default_rng(seed)
     s = _Solids()
@@ -6842,9 +6842,10 @@ def medina(seed: int) -> trimesh.Trimesh:
     """An old walled town of alleys: a lattice of 16-18 x 12-14 junctions 9 m apart whose alleys (2.6 m wide) are a
     random spanning tree of it (a depth-first walk) and a tenth of the other links, so most alleys end blind; every
     other lattice cell and link is houses (ridged, 5-9 m). Some alleys run under houses (a lid at 3.2 m: covered
-    passages); 10-15 courtyard houses (drawn among the house cells over 5.5 m square beside an alley) open off an alley through a door 1.8 m wide into a yard with a fountain; a
-    mosque's courtyard of 2 x 2 cells with an arcade of pillars. A wall 6 m high round the town, 3-4 gates (one a
-    side but the north, sometimes there too) where an alley meets it, and a road 12 m wide outside (trees, stalls).
+    passages); 10-15 courtyard houses (drawn among the house cells over 5.5 m square beside an alley) open off an
+    alley through a door 1.8 m wide into a yard with a fountain; a mosque's courtyard of 2 x 2 cells with an arcade
+    of pillars. A wall 6 m high round the town, 3-4 gates (one a side but the north, sometimes there too) where an
+    alley meets it, and a road 12 m wide outside (trees, stalls).
     """
     rng = np.random.default_rng(seed)
     s = _Solids()
@@ -6961,13 +6962,14 @@ def medina(seed: int) -> trimesh.Trimesh:
 
 
 def suburb(seed: int) -> trimesh.Trimesh:
-    """A suburb of cul-de-sacs: a distributor road 9 m wide along x; north of it 5-6 closes 6 m wide and 48-72 m long,
-    each ending in a turning head 16 m across, lined both sides by plots 12 m wide and 24 m deep: a front garden open
-    to the road (a car on the drive of most), a house (ridged) with a side way 2.2 m wide past it, closed by a fence with a gate 1.4 m wide, to a
-    back garden fenced 1.8 m high (a shed in some). Behind the heads a green 24 m deep (trees, a playground's
-    frames) across the whole width, reached from half the heads (at least one) by a footpath 3 m wide between fences;
-    back to back plots of neighbouring closes meet at a fence, and garages (ridged) fill the ground between a short close's head and the green. South of the road a row of shops (ridged) with a car
-    park of parked cars in front, and a playing field fenced 1.8 m high with two gates.
+    """A suburb of cul-de-sacs: a distributor road 9 m wide along x (open ground, as the shops' car park south of it);
+    north of it 5-6 closes 6 m wide and 48-72 m long, each ending in a turning head 16 m across, lined both sides by
+    plots 12 m wide and 24 m deep: a front garden open to the road (a car on the drive of most), a house (ridged) with
+    a side way 2.2 m wide past it, closed by a fence with a gate 1.4 m wide, to a back garden fenced 1.8 m high (a shed
+    in some). Behind the heads a green 24 m deep (trees, a playground's frames) across the whole width, reached from
+    half the heads (at least one) by a footpath 3 m wide between fences; back to back plots of neighbouring closes meet
+    at a fence, and garages (ridged) fill the ground between a short close's head and the green. South of the road a
+    row of shops (ridged) with a car park of parked cars in front, and a playing field fenced 1.8 m high with two gates.
     """
     rng = np.random.default_rng(seed)
     s = _Solids()
@@ -7075,8 +7077,9 @@ def cloverleaf(seed: int) -> trimesh.Trimesh:
     split by a barrier 0.9 m high (no gap), so a carriageway of one road meets the other only through the loops: in
     each quadrant a loop ramp 6 m wide of radius 28-34 m turning 270 degrees, flat where it merges with A and with B
     (its first and last 25 degrees) and climbing 4 degrees between. A toll plaza across B's north arm (booths 1.5 m
-    wide, lanes 2.6-3 m between them); off A's south carriageway in the west a service area (a deck behind a fence 1.2
-    m high with an entry and an exit, a shop, fuel pumps, parked cars); 70-100 abandoned cars (:func:`_car`) on the roads.
+    wide, lanes 2.6-3 m between them); off A's south carriageway in the west a service area (a deck behind a fence
+    1.2 m high with an entry and an exit, a shop, fuel pumps, parked cars); 70-100 abandoned cars (:func:`_car`) on
+    the roads.
     """
     rng = np.random.default_rng(seed)
     s = _Solids()
@@ -7143,10 +7146,10 @@ def _polar(r: float, a: float) -> np.ndarray:
 
 def radial_town(seed: int) -> trimesh.Trimesh:
     """An ideal town of rings and radials (its only floor the streets, y = 0): a round place of radius 18 m round a
-    monument (a pointed octagon 3 m in radius), 8-10 avenues 10 m wide out from it (a row of trees down each), three ring streets 6 m wide 30 m apart
-    (the outer one the town's edge) and, beyond the first ring, lanes 4 m wide half way between the avenues. Between
-    them blocks of houses with ridged roofs (no floor), but one block a ring a garden (floor, trees). Avenues, lanes
-    and rings are straight strips and chords of 3 degrees or less.
+    monument (a pointed octagon 3 m in radius), 8-10 avenues 10 m wide out from it (a row of trees down each), three
+    ring streets 6 m wide 30 m apart (the outer one the town's edge) and, beyond the first ring, lanes 4 m wide half
+    way between the avenues. Between them blocks of houses with ridged roofs (no floor), but one block a ring a
+    garden (floor, trees). Avenues, lanes and rings are straight strips and chords of 3 degrees or less.
     """
     rng = np.random.default_rng(seed)
     s = _Solids()
