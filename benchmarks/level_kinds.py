@@ -6840,12 +6840,12 @@ def glacier(seed: int) -> trimesh.Trimesh:
 
 def medina(seed: int) -> trimesh.Trimesh:
     """An old walled town of alleys: a lattice of 16-18 x 12-14 junctions 9 m apart whose alleys (2.6 m wide) are a
-    random spanning tree of it (a depth-first walk) and a tenth of the other links, so most alleys end blind; every
+    random spanning tree of it (a depth-first walk) and a tenth of the other links, so many alleys end blind; every
     other lattice cell and link is houses (ridged, 5-9 m). Some alleys run under houses (a lid at 3.2 m: covered
     passages); 10-15 courtyard houses (drawn among the house cells over 5.5 m square beside an alley) open off an
     alley through a door 1.8 m wide into a yard with a fountain; a mosque's courtyard of 2 x 2 cells with an arcade
     of pillars. A wall 6 m high round the town, 3-4 gates (one a side but the north, sometimes there too) where an
-    alley meets it, and a road 12 m wide outside (trees, stalls).
+    alley meets it, and a road 10-12 m wide outside (trees, stalls).
     """
     rng = np.random.default_rng(seed)
     s = _Solids()
