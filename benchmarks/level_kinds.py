@@ -124,7 +124,7 @@ between two stair wells down from streets). A closed solid's top inside another 
 garden terrace under its house, 317 m²; the paddies' shrine yard inside the shrine, 25 m²): the house and the shrine
 now rise from under the floor round them, which stops at them.
 
-Seventeenth round: six more kinds, 649-873 navmesh polygons with that agent (seeds 0-2): ``star_fort`` (a square
+Seventeenth round: six more kinds, 647-873 navmesh polygons with that agent (seeds 0-2): ``star_fort`` (a square
 enceinte with diamond bastions, ramparts whose walk is climbed by ramps, a dry moat 5 m deep crossed only over a
 ravelin to the gate, flights and a postern down into it, a glacis), ``glacier`` (sloped ice cut by crevasses en
 echelon and edge to edge, crossed on snow bridges and ladders, an icefall climbed by two ramps), ``medina`` (a braid
