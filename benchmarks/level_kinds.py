@@ -1,4 +1,4 @@
-"""Level kinds of the fifth to sixteenth held-out rounds (issue 9): generators no preset setting was made on.
+"""Level kinds of the fifth to seventeenth held-out rounds (issue 9): generators no preset setting was made on.
 
 Fifth round: six kinds, each about 1,000 navmesh polygons with the presets' agent (radius 0.5 m, height 2 m, climb 0.4 m):
 ``subway`` (platforms, track pits 1.2 m lower, stairs up to two concourses), ``archipelago`` (islands joined by
@@ -124,6 +124,18 @@ between two stair wells down from streets). A closed solid's top inside another 
 garden terrace under its house, 317 m²; the paddies' shrine yard inside the shrine, 25 m²): the house and the shrine
 now rise from under the floor round them, which stops at them.
 
+Seventeenth round: six more kinds, 647-873 navmesh polygons with that agent (seeds 0-2): ``star_fort`` (a square
+enceinte with diamond bastions, ramparts whose walk is climbed by ramps, a dry moat 5 m deep crossed only over a
+ravelin to the gate, flights and a postern down into it, a glacis), ``glacier`` (sloped ice cut by crevasses en
+echelon and edge to edge, crossed on snow bridges and ladders, an icefall climbed by two ramps), ``medina`` (a braid
+maze of alleys 2.6 m wide among houses, courtyard houses, covered passages, a mosque's courtyard, a wall with gates),
+``suburb`` (cul-de-sacs off a distributor road, plots whose fenced back gardens open only through a side gate,
+footpaths to a green), ``cloverleaf`` (two motorways crossing at two heights, each split by an unbroken barrier, joined
+only by four 270-degree loops) and ``radial_town`` (a round place, avenues, lanes and ring streets between ridged
+blocks: the streets are the only floor). The same rules as before: the floor stops under every closed solid one could
+stand inside (the fort's courtyard under its buildings, the service area's deck under its shop), a monument stands in
+a ring of floor, not on it, and a car (:func:`_car`) is a hull too low inside for the agent and too steep on top.
+
 Run: ``.venv/bin/python benchmarks/level_kinds.py OUT_DIR [--kinds subway forest] [--seeds 0 1 2]`` writes
 ``OUT_DIR/<kind>_s<seed>.obj``, the files ``benchmarks/analysis_quality.py --levels`` takes (which also takes the
 kinds' names and builds them with ``--seeds``).
@@ -139,6 +151,7 @@ from pathlib import Path
 
 import numpy as np
 import trimesh
+from scipy import ndimage
 
 
 def _cut_lines(x0: float, x1: float, z0: float, z1: float,
@@ -6627,6 +6640,573 @@ def cistern(seed: int) -> trimesh.Trimesh:
     return s.mesh()
 
 
+def star_fort(seed: int) -> trimesh.Trimesh:
+    """A bastioned fort: a square enceinte 84-100 m a side whose courtyard (y = 0; barracks, a chapel, a magazine, all
+    ridged) is ringed by ramparts 8 m wide, their walk 4.5 m up behind a parapet 1.2 m high (guns on it), climbed by
+    3-4 ramps 3.5 m wide from the courtyard; a diamond bastion (half-diagonal 15-18 m, its top the walk) on each
+    corner; a dry moat 5 m deep round it all, 12-16 m beyond the bastions' points (its counterscarp a rectangle),
+    crossed only before the gate in the south curtain: a bridge from the glacis to a ravelin (an island at y = 0 in
+    the moat, railed) and a drawbridge (lowered) from it to the gate, a passage 4 m wide under the walk. The moat
+    floor is reached by two flights down the counterscarp, one down the ravelin's side and a postern: a passage 3 m
+    wide under the north rampart and a flight down the scarp. A glacis 20-26 m wide round the moat (y = 0, trees).
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    side, r, moat = rng.uniform(84.0, 100.0), rng.uniform(15.0, 18.0), rng.uniform(12.0, 16.0)
+    walk, deep, band = 4.5, -5.0, 8.0
+    c0, c1 = -r - moat, side + r + moat  # the counterscarp, a square
+    g0, g1 = c0 - rng.uniform(20.0, 26.0), c1 + rng.uniform(20.0, 26.0)
+    gate, postern = side / 2, rng.uniform(r + 8.0, side - r - 8.0)
+    # the ramparts, cut by the gate (south) and the postern (north), with their passages' floors and vaults
+    for x0, x1 in ((0.0, gate - 2.0), (gate + 2.0, side)):
+        s.box(x0, x1, deep - 0.5, walk, 0.0, band)
+    for x0, x1 in ((0.0, postern - 1.5), (postern + 1.5, side)):
+        s.box(x0, x1, deep - 0.5, walk, side - band, side)
+    for x in (0.0, side - band):
+        s.box(x, x + band, deep - 0.5, walk, band, side - band)
+    for x0, x1, z0, z1 in ((gate - 2.0, gate + 2.0, 0.0, band), (postern - 1.5, postern + 1.5, side - band, side)):
+        s.box(x0, x1, deep - 0.5, 0.0, z0, z1)
+        s.box(x0, x1, 2.6, walk, z0, z1)  # the vault: the walk goes on over the passage
+    # the bastions, their parapets on the three outer edges, and the curtains' parapets between them
+    corners = [(cx, cz) for cx in (0.0, side) for cz in (0.0, side)]
+    diamond = np.array([[1.0, 0.0], [0.0, 1.0], [-1.0, 0.0], [0.0, -1.0]])
+    moat_floor: list[np.ndarray] = []
+    for cx, cz in corners:
+        c = np.array([cx, cz])
+        inward = np.array([1.0 if cx == 0.0 else -1.0, 1.0 if cz == 0.0 else -1.0])
+        s.prism(c + r * diamond, deep - 0.5, walk)
+        points = [c + r * d for d in diamond]
+        for a, b in zip(points, points[1:] + points[:1]):
+            if not (np.dot(a - c, inward) > 0 and np.dot(b - c, inward) > 0):  # not the edge inside the square
+                s.prism(_strip(a - 0.3 * (a - c) / r, b - 0.3 * (b - c) / r, 0.4), walk, walk + 1.2)
+        for k in range(4):  # the moat floor round the diamond: the corners of its box outside it and the square
+            corner = np.array([(1.0 if k & 1 else -1.0), (1.0 if k & 2 else -1.0)])
+            if not (corner == inward).all():
+                moat_floor.append(c + r * np.array([corner, [corner[0], 0.0], [0.0, corner[1]]]))
+    for a, b, doors in (((r, 0.2), (side - r, 0.2), [(gate - 2.0 - r, 4.0)]),
+                        ((r, side - 0.2), (side - r, side - 0.2), [(postern - 1.5 - r, 3.0)]),
+                        ((0.2, r), (0.2, side - r), []), ((side - 0.2, r), (side - 0.2, side - r), [])):
+        s.wall(a, b, walk, walk + 1.2, doors, thickness=0.4)
+    for _ in range(int(rng.integers(14, 22))):  # guns along the parapets
+        k, t = int(rng.integers(4)), rng.uniform(r + 3.0, side - r - 3.0)
+        if abs(t - gate) > 4.0 and abs(t - postern) > 4.0:
+            x0, z0 = [(t, 1.0), (t, side - 3.0), (1.0, t), (side - 3.0, t)][k]
+            s.box(x0, x0 + (1.0 if k < 2 else 2.0), walk - 0.3, walk + 1.1, z0, z0 + (2.0 if k < 2 else 1.0))
+    for prism in moat_floor:
+        s.prism(prism, deep - 0.5, deep)
+    # the ravelin in the moat before the gate, its bridges and its flight down to the moat
+    rz0, rz1, rx0, rx1 = c0 + 7.0, -r + 5.0, gate - 12.0, gate + 12.0
+    s.box(rx0, rx1, deep - 0.5, 0.0, rz0, rz1)
+    run = math.ceil(-deep / 0.18) * 0.28
+    s.stairs(np.array([rx1 + run, rz0 + 3.0]), np.array([-1.0, 0.0]), 2.0, deep, -deep, -deep / math.ceil(-deep / 0.18), 0.28)
+    _rail_ring(s, rx0, rx1, rz0, rz1, 0.0, {"south": [(10.0, 4.0)], "north": [(10.0, 4.0)], "east": [(2.0, 2.0)]})
+    for z0, z1 in ((c0, rz0), (rz1, 0.0)):
+        s.box(gate - 2.0, gate + 2.0, -0.6, 0.0, z0, z1)
+        for x in (gate - 2.05, gate + 2.05):
+            s.box(x - 0.05, x + 0.05, 0.0, 1.1, z0, z1)
+    # the flights down the counterscarp (north and east) and the postern's down the scarp
+    steps = math.ceil(-deep / 0.18)
+    fx = rng.uniform(r + 6.0, side - r - 6.0)
+    while abs(fx - postern) < 10.0:
+        fx = rng.uniform(r + 6.0, side - r - 6.0)
+    fz = rng.uniform(r + 6.0, side - r - 6.0)
+    for start, heading in (((fx, c1 - run), (0.0, 1.0)), ((c1 - run, fz), (1.0, 0.0)), ((postern, side + run), (0.0, -1.0))):
+        s.stairs(np.array(start), np.array(heading), 2.4, deep, -deep, -deep / steps, 0.28)
+    s.ground(c0, c1, c0, c1, deep, [(-r, r, -r, r), (side - r, side + r, -r, r), (-r, r, side - r, side + r),
+                                     (side - r, side + r, side - r, side + r), (0.0, side, 0.0, side), (rx0, rx1, rz0, rz1)])
+    # the courtyard and its buildings
+    holes: list[tuple[float, float, float, float]] = []
+    taken = [(gate - 4.0, gate + 4.0, band, band + 14.0), (postern - 3.0, postern + 3.0, side - band - 10.0, side - band)]
+    mid = side / 2
+    holes.append(_ridged(s, mid - 7.0, mid + 7.0, mid + 2.0, mid + 18.0, -0.5, 7.0))  # the chapel
+    taken.append((mid - 9.0, mid + 9.0, mid, mid + 20.0))
+    for k in range(int(rng.integers(3, 5))):  # ramps up to the walk, square to the rampart (west, east, north, west)
+        for _ in range(100):
+            t = rng.uniform(band + 10.0, side - band - 10.0)
+            a, b = [((band + 22.0, t), (band, t)), ((side - band - 22.0, t), (side - band, t)),
+                    ((t, side - band - 22.0), (t, side - band)), ((band + 22.0, t), (band, t))][k]
+            box = (min(a[0], b[0]) - 3.0, max(a[0], b[0]) + 3.0, min(a[1], b[1]) - 3.0, max(a[1], b[1]) + 3.0)
+            if _clear(*box, taken):
+                s.ramp(np.array(a), np.array(b), 3.5, 0.0, walk)
+                taken.append(box)
+                break
+    for _ in range(int(rng.integers(6, 10))):  # barracks, stores, the magazine
+        w, d = rng.uniform(8.0, 24.0), rng.uniform(7.0, 10.0)
+        for _ in range(100):
+            x, z = rng.uniform(band + 4.0, side - band - 4.0 - w), rng.uniform(band + 4.0, side - band - 4.0 - d)
+            if _clear(x - 4.0, x + w + 4.0, z - 4.0, z + d + 4.0, taken):
+                holes.append(_ridged(s, x, x + w, z, z + d, -0.5, rng.uniform(4.0, 6.0)))
+                taken.append((x - 1.0, x + w + 1.0, z - 1.0, z + d + 1.0))
+                break
+    _trunk(s, np.array([mid, mid - 10.0]), 0.8, -0.5, 1.0)  # the well on the parade
+    s.ground(band, side - band, band, side - band, 0.0, holes, thickness=5.5)
+    # the glacis, trees on it
+    outside: list[tuple[float, float, float, float]] = [(c0, c1, c0, c1), (gate - 6.0, gate + 6.0, c0 - 8.0, c0)]
+    for _ in range(int(rng.integers(150, 200))):
+        p = np.array([rng.uniform(g0 + 1.0, g1 - 1.0), rng.uniform(g0 + 1.0, g1 - 1.0)])
+        if _clear(p[0] - 1.0, p[0] + 1.0, p[1] - 1.0, p[1] + 1.0, outside):
+            _trunk(s, p, rng.uniform(0.25, 0.5), -0.5, 6.0)
+            outside.append((p[0] - 1.5, p[0] + 1.5, p[1] - 1.5, p[1] + 1.5))
+    s.ground(g0, g1, g0, g1, 0.0, [(c0, c1, c0, c1)])
+    return s.mesh()
+
+
+def glacier(seed: int) -> trimesh.Trimesh:
+    """A glacier tongue 110-130 m wide and 250-290 m long rising along +z at 5-7 degrees (ground undulating by 0.4 m),
+    cut across by crevasses (no floor): slots 1.5-4 m wide along x in bands 14-22 m apart. In two bands of three,
+    1-3 slots 15-70 m long, en echelon, leaving a way 6 m wide somewhere across the band; in the third, slots from
+    edge to edge crossed only on 1-2 snow bridges (2.5-4 m wide, where the slot stops) and perhaps a ladder (a plank
+    deck 1.6 m wide). Half way up an icefall: a step of 6 m over 2 m (72 degrees), climbed only by two fixed-rope
+    ramps 2.5 m wide and 22 m long. Seracs and boulders (hulls) scattered; at the snout a camp of tents, at the top
+    a hut (both ridged). :func:`_terrain` builds the ice on a grid cut at every slot's edges, leaving out the slots'
+    cells, those under the hut and the tents, and any ice the slots cut off from the rest.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    width, length = rng.uniform(110.0, 130.0), rng.uniform(250.0, 290.0)
+    grade, step = math.tan(math.radians(rng.uniform(5.0, 7.0))), 6.0
+    fall = length * rng.uniform(0.45, 0.55)  # the icefall's foot
+    bumps = rng.uniform(0.0, 2 * math.pi, 3)
+
+    def height(x: float, z: float) -> float:
+        """The ice's top (m) at plan point x, z (floats or arrays of one shape)."""
+        return (z * grade + step * np.clip((z - fall) / 2.0, 0.0, 1.0)
+                + 0.4 * np.sin(x / 17.0 + bumps[0]) * np.sin(z / 23.0 + bumps[1]) + 0.2 * np.sin(z / 9.0 + bumps[2]))
+
+    slots: list[tuple[float, float, float, float]] = []
+    ladders: list[tuple[float, float, float]] = []  # x, z0, z1
+    z, band = 25.0, 0
+    while z < length - 25.0:
+        if not fall - 26.0 < z < fall + 8.0:  # the ramps' feet and the icefall keep clear
+            w = rng.uniform(1.5, 4.0)
+            if band % 3 == 1:  # edge to edge: snow bridges and perhaps a ladder
+                cuts = sorted(rng.uniform(8.0, width - 8.0, int(rng.integers(1, 3))))
+                x0 = -1.0
+                for c in cuts:
+                    if c > x0:
+                        slots.append((x0, c, z, z + w))
+                        x0 = c + rng.uniform(2.5, 4.0)
+                slots.append((x0, width + 1.0, z, z + w))
+                lx = rng.uniform(6.0, width - 6.0)
+                if all(abs(lx - c) > 8.0 for c in cuts):
+                    ladders.append((lx, z, z + w))
+            else:  # en echelon, clear of a way 6 m wide at gap
+                gap = rng.uniform(5.0, width - 5.0)
+                for _ in range(int(rng.integers(1, 4))):
+                    x0 = rng.uniform(-10.0, width - 10.0)
+                    x1 = min(x0 + rng.uniform(15.0, 70.0), width + 1.0)
+                    dz = rng.uniform(-3.0, 3.0)
+                    for a, b in ((max(x0, -1.0), min(x1, gap - 3.0)), (max(x0, gap + 3.0), x1)):
+                        if b - a > 4.0:
+                            slots.append((a, b, z + dz, z + dz + w))
+            band += 1
+        z += rng.uniform(14.0, 22.0)
+    # the camp's tents and the hut: no ice under them (it would be floor inside)
+    huts: list[tuple[float, float, float, float]] = []
+    for _ in range(int(rng.integers(6, 10))):
+        x, z = rng.uniform(5.0, width - 8.0), rng.uniform(3.0, 16.0)
+        if _clear(x - 1.5, x + 4.5, z - 1.5, z + 4.0, huts):
+            huts.append((x, x + 3.0, z, z + 2.5))
+    hx = rng.uniform(20.0, width - 35.0)
+    huts.append((hx, hx + 12.0, length - 16.0, length - 7.0))
+    cuts = [v for q in slots + huts for v in q]
+    xs = np.unique(np.concatenate([np.linspace(0.0, width, int(width / 4.0) + 1), np.clip(cuts[0::4] + cuts[1::4], 0.0, width)]))
+    zs = np.unique(np.concatenate([np.linspace(0.0, length, int(length / 4.0) + 1), [fall, fall + 2.0], cuts[2::4] + cuts[3::4]]))
+    mx, mz = np.meshgrid((xs[:-1] + xs[1:]) / 2, (zs[:-1] + zs[1:]) / 2, indexing="ij")
+    keep = np.ones(mx.shape, dtype=bool)
+    for x0, x1, z0, z1 in slots + huts:
+        keep &= ~((mx > x0) & (mx < x1) & (mz > z0) & (mz < z1))
+    label, _ = ndimage.label(keep)  # 4-neighbour pieces of ice: only the largest is kept
+    keep = label == np.argmax(np.bincount(label.ravel())[1:]) + 1
+    gx, gz = np.meshgrid(xs, zs, indexing="ij")
+    _terrain(s, xs, zs, height(gx, gz), keep)
+    for x0, x1, z0, z1 in huts:
+        y = float(np.min(height(np.array([x0, x1, x0, x1]), np.array([z0, z0, z1, z1]))))
+        _ridged(s, x0, x1, z0, z1, y - 1.0, y + (0.4 if x1 - x0 < 5.0 else 3.0))
+    for lx, z0, z1 in ladders:  # plank decks on the ice either side
+        s.ramp(np.array([lx, z0 - 0.8]), np.array([lx, z1 + 0.8]), 1.6, height(lx, z0 - 0.8) + 0.05, height(lx, z1 + 0.8) + 0.05)
+    for rx in rng.uniform([8.0, width / 2 + 8.0], [width / 2 - 8.0, width - 8.0]):  # the icefall's fixed-rope ramps
+        s.ramp(np.array([rx, fall - 20.0]), np.array([rx, fall + 2.0]), 2.5, height(rx, fall - 20.0), height(rx, fall + 2.0) + 0.05)
+    # seracs and boulders
+    taken = [(x0 - 1.0, x1 + 1.0, z0 - 1.0, z1 + 1.0) for x0, x1, z0, z1 in slots + huts]
+    taken += [(lx - 2.0, lx + 2.0, z0 - 2.0, z1 + 2.0) for lx, z0, z1 in ladders] + [(0.0, width, fall - 22.0, fall + 6.0)]
+    for _ in range(int(rng.integers(130, 170))):
+        p = np.array([rng.uniform(3.0, width - 3.0), rng.uniform(10.0, length - 20.0)])
+        if _clear(p[0] - 2.0, p[0] + 2.0, p[1] - 2.0, p[1] + 2.0, taken):
+            y = float(height(p[0], p[1]))
+            s.rock(rng, p, rng.uniform(0.5, 1.0), y - 1.0, y + rng.uniform(1.5, 3.0))
+            taken.append((p[0] - 2.5, p[0] + 2.5, p[1] - 2.5, p[1] + 2.5))
+    return s.mesh()
+
+def medina(seed: int) -> trimesh.Trimesh:
+    """An old walled town of alleys: a lattice of 16-18 x 12-14 junctions 9 m apart whose alleys (2.6 m wide) are a
+    random spanning tree of it (a depth-first walk) and a tenth of the other links, so many alleys end blind; every
+    other lattice cell and link is houses (ridged, 5-9 m). Some alleys run under houses (a lid at 3.2 m: covered
+    passages); 10-15 courtyard houses (drawn among the house cells over 5.5 m square beside an alley) open off an
+    alley through a door 1.8 m wide into a yard with a fountain; a mosque's courtyard of 2 x 2 cells with an arcade
+    of pillars. A wall 6 m high round the town, 3-4 gates (one a side but the north, sometimes there too) where an
+    alley meets it, and a road 10-12 m wide outside (trees, stalls).
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    n, m, cell, lane = int(rng.integers(16, 19)), int(rng.integers(12, 15)), 9.0, 2.6
+    half = lane / 2
+    # the alleys: a depth-first spanning tree of the junctions and a tenth of the other links
+    links: set[frozenset[tuple[int, int]]] = set()
+    seen, stack = {(0, 0)}, [(0, 0)]
+    while stack:
+        i, j = stack[-1]
+        nexts = [(i + di, j + dj) for di, dj in ((1, 0), (-1, 0), (0, 1), (0, -1))
+                 if 0 <= i + di < n and 0 <= j + dj < m and (i + di, j + dj) not in seen]
+        if not nexts:
+            stack.pop()
+            continue
+        c = nexts[int(rng.integers(len(nexts)))]
+        links.add(frozenset(((i, j), c)))
+        seen.add(c)
+        stack.append(c)
+    for i in range(n):
+        for j in range(m):
+            for c in ((i + 1, j), (i, j + 1)):
+                if c[0] < n and c[1] < m and rng.random() < 0.1:
+                    links.add(frozenset(((i, j), c)))
+    # the mosque's courtyard: 2 x 2 cells open, their junctions and links all joined
+    qi, qj = int(rng.integers(3, n - 5)), int(rng.integers(3, m - 5))
+    court = [(qi + a, qj + b) for a in range(3) for b in range(3)]
+    for a in court:
+        for b in court:
+            if abs(a[0] - b[0]) + abs(a[1] - b[1]) == 1:
+                links.add(frozenset((a, b)))
+    x0, z0 = 16.0, 16.0  # the junction (0, 0); the wall at 4.5 m beyond the outer junctions
+    wx0, wx1, wz0, wz1 = x0 - 4.5 - half, x0 + (n - 1) * cell + 4.5 + half, z0 - 4.5 - half, z0 + (m - 1) * cell + 4.5 + half
+    # the gates: an alley on through the wall from an outer junction, one a side (the north only sometimes)
+    gates = [("south", int(rng.integers(1, n - 1))), ("west", int(rng.integers(1, m - 1))), ("east", int(rng.integers(1, m - 1)))]
+    if rng.random() < 0.5:
+        gates.append(("north", int(rng.integers(1, n - 1))))
+    alleys = []  # open rectangles: the junctions' squares, the links' strips, the gates' passages
+    for i in range(n):
+        for j in range(m):
+            if any((i, j) in link for link in links):
+                alleys.append((x0 + i * cell - half, x0 + i * cell + half, z0 + j * cell - half, z0 + j * cell + half))
+    for link in links:
+        (i0, j0), (i1, j1) = sorted(link)
+        alleys.append((x0 + i0 * cell - half, x0 + i1 * cell + half, z0 + j0 * cell - half, z0 + j1 * cell + half))
+    for side, k in gates:
+        x, z = x0 + k * cell, z0 + k * cell
+        alleys.append({"south": (x - half, x + half, wz0 - 1.0, z0), "north": (x - half, x + half, z0 + (m - 1) * cell, wz1 + 1.0),
+                       "west": (wx0 - 1.0, x0, z - half, z + half), "east": (x0 + (n - 1) * cell, wx1 + 1.0, z - half, z + half)}[side])
+    cx0, cx1, cz0, cz1 = x0 + qi * cell - half, x0 + (qi + 2) * cell + half, z0 + qj * cell - half, z0 + (qj + 2) * cell + half
+    alleys.append((cx0, cx1, cz0, cz1))
+    # houses: every cell of the grid cut at the alleys' edges that is no alley, inside the wall
+    xs, zs = _cut_lines(wx0 + 0.3, wx1 - 0.3, wz0 + 0.3, wz1 - 0.3, alleys)
+    holes: list[tuple[float, float, float, float]] = []
+    cells, doors_of = [], []  # the house cells, and the sides of each (0 south, 1 north, 2 west, 3 east) on an alley
+    for a, b in pairwise(xs):
+        for c, d in pairwise(zs):
+            mx, mz = (a + b) / 2, (c + d) / 2
+            if not any(h[0] < mx < h[1] and h[2] < mz < h[3] for h in alleys):
+                cells.append((a, b, c, d))
+                doors_of.append([k for k, (px, pz) in enumerate(((mx, c - 1.0), (mx, d + 1.0), (a - 1.0, mz), (b + 1.0, mz)))
+                                 if b - a > 5.5 and d - c > 5.5 and any(h[0] < px < h[1] and h[2] < pz < h[3] for h in alleys)])
+    candidates = [i for i, sides in enumerate(doors_of) if sides]
+    yards = set(rng.choice(candidates, size=min(len(candidates), int(rng.integers(10, 16))), replace=False).tolist())
+    for i, (a, b, c, d) in enumerate(cells):
+        mx, mz = (a + b) / 2, (c + d) / 2
+        if i not in yards:
+            holes.append(_ridged(s, a, b, c, d, -0.5, rng.uniform(5.0, 9.0)))
+        else:  # a courtyard house off an alley beside it
+            door = doors_of[i][int(rng.integers(len(doors_of[i])))]
+            top = rng.uniform(5.0, 7.0)
+            for k, (p, q) in enumerate((((a, c), (b, c)), ((a, d), (b, d)), ((a, c), (a, d)), ((b, c), (b, d)))):
+                length = abs(q[0] - p[0]) + abs(q[1] - p[1])
+                s.wall(p, q, -0.5, top, [(length / 2 - 0.9, 1.8)] if k == door else [], thickness=0.6)
+            _trunk(s, np.array([mx, mz]), 0.7, -0.5, 0.8)  # the fountain
+    # covered passages: a lid over a tenth of the links away from the gates
+    for link in sorted(links, key=sorted):
+        (i0, j0), (i1, j1) = sorted(link)
+        ax, az = x0 + i0 * cell, z0 + j0 * cell
+        if rng.random() < 0.1 and not (cx0 < ax < cx1 and cz0 < az < cz1):
+            bx, bz = x0 + i1 * cell, z0 + j1 * cell
+            if i0 == i1:
+                _lid(s, ax - half - 0.3, ax + half + 0.3, az + half + 0.5, bz - half - 0.5, 3.2)
+            else:
+                _lid(s, ax + half + 0.5, bx - half - 0.5, az - half - 0.3, az + half + 0.3, 3.2)
+    # the mosque's arcade round its courtyard, a basin in the middle
+    for x in np.arange(cx0 + 3.0, cx1 - 2.0, 3.0):
+        for z in (cz0 + 2.5, cz1 - 2.5):
+            _trunk(s, np.array([x, z]), 0.3, -0.5, 4.0)
+    holes.append(_ridged(s, (cx0 + cx1) / 2 - 2.0, (cx0 + cx1) / 2 + 2.0, (cz0 + cz1) / 2 - 2.0, (cz0 + cz1) / 2 + 2.0, -0.5, 0.4))
+    # the wall and its gates
+    doors = {side: [] for side in ("south", "north", "west", "east")}
+    for side, k in gates:
+        doors[side].append(((k * cell + x0 - half - wx0) if side in ("south", "north") else (k * cell + z0 - half - wz0), lane))
+    s.wall((wx0, wz0), (wx1, wz0), -0.5, 6.0, doors["south"], thickness=0.6)
+    s.wall((wx0, wz1), (wx1, wz1), -0.5, 6.0, doors["north"], thickness=0.6)
+    s.wall((wx0, wz0), (wx0, wz1), -0.5, 6.0, doors["west"], thickness=0.6)
+    s.wall((wx1, wz0), (wx1, wz1), -0.5, 6.0, doors["east"], thickness=0.6)
+    # the road outside: trees and stalls
+    size_x, size_z = wx1 + 12.0, wz1 + 12.0
+    taken = [(wx0 - 1.0, wx1 + 1.0, wz0 - 1.0, wz1 + 1.0)]
+    taken += [(h[0] - 2.0, h[1] + 2.0, h[2] - 6.0, h[3] + 6.0) for h in alleys if h[2] < wz0 or h[3] > wz1]
+    taken += [(h[0] - 6.0, h[1] + 6.0, h[2] - 2.0, h[3] + 2.0) for h in alleys if h[0] < wx0 or h[1] > wx1]
+    for _ in range(int(rng.integers(40, 60))):
+        p = np.array([rng.uniform(2.0, size_x - 2.0), rng.uniform(2.0, size_z - 2.0)])
+        if _clear(p[0] - 1.5, p[0] + 1.5, p[1] - 1.5, p[1] + 1.5, taken):
+            if rng.random() < 0.5:
+                _trunk(s, p, rng.uniform(0.25, 0.4), -0.5, 6.0)
+            else:
+                holes.append(_ridged(s, p[0] - 1.0, p[0] + 1.0, p[1] - 0.8, p[1] + 0.8, -0.5, 1.0))
+            taken.append((p[0] - 2.5, p[0] + 2.5, p[1] - 2.5, p[1] + 2.5))
+    s.ground(0.0, size_x, 0.0, size_z, 0.0, holes)
+    return s.mesh()
+
+
+def suburb(seed: int) -> trimesh.Trimesh:
+    """A suburb of cul-de-sacs: a distributor road 9 m wide along x (open ground, as the shops' car park south of it);
+    north of it 5-6 closes 6 m wide and 48-72 m long, each ending in a turning head 16 m across, lined both sides by
+    plots 12 m wide and 24 m deep: a front garden open to the road (a car on the drive of most), a house (ridged) with
+    a side way 2.2 m wide past it, closed by a fence with a gate 1.4 m wide, to a back garden fenced 1.8 m high (a shed
+    in some). Behind the heads a green 24 m deep (trees, a playground's frames) across the whole width, reached from
+    half the heads (at least one) by a footpath 3 m wide between fences; back to back plots of neighbouring closes meet
+    at a fence, and garages (ridged) fill the ground between a short close's head and the green. South of the road a
+    row of shops (ridged) with a car park of parked cars in front, and a playing field fenced 1.8 m high with two gates.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    closes, plot, depth, road = int(rng.integers(5, 7)), 12.0, 24.0, 6.0
+    strip = road + 2 * depth
+    size_x = closes * strip
+    lengths = [float(rng.choice([48.0, 60.0, 72.0])) for _ in range(closes)]
+    rz = 40.0  # the distributor's north edge; it runs from z = 31 to 40
+    gz0 = rz + max(lengths) + 16.0  # the green's south edge
+    size_z = gz0 + 24.0
+    holes: list[tuple[float, float, float, float]] = []
+    paths = [k for k in range(closes) if rng.random() < 0.5] or [int(rng.integers(closes))]
+
+    def plot_at(x_road: float, out: float, z0: float) -> None:
+        """A plot from the road's edge ``x_road`` outward (``out`` = +1 east, -1 west) between z0 and z0 + 12."""
+        xf, xh, xb = x_road + out * 5.0, x_road + out * 14.0, x_road + out * depth
+        holes.append(_ridged(s, min(xf, xh), max(xf, xh), z0 + 2.2, z0 + plot, -0.5, rng.uniform(5.0, 6.5)))
+        s.wall((xf, z0), (xb, z0), -0.5, 1.8, thickness=0.1)  # the side fences: the plot's south and north
+        s.wall((xh, z0 + plot), (xb, z0 + plot), -0.5, 1.8, thickness=0.1)
+        s.wall((xb, z0), (xb, z0 + plot), -0.5, 1.8, thickness=0.1)
+        s.wall((xf + out * 1.0, z0), (xf + out * 1.0, z0 + 2.2), -0.5, 1.8, [(0.4, 1.4)], thickness=0.1)  # the gate
+        if rng.random() < 0.6:  # a car on the drive
+            _car(s, min(xf, xf - out * 4.5), max(xf, xf - out * 4.5), z0 + 6.0, z0 + 7.8, 0.0)
+        if rng.random() < 0.4:
+            xs = xb - out * 3.5
+            holes.append(_ridged(s, min(xs, xs + out * 2.5), max(xs, xs + out * 2.5), z0 + 8.0, z0 + 11.0, -0.5, 2.0))
+
+    for k in range(closes):
+        x0 = k * strip
+        xc0, xc1 = x0 + depth, x0 + depth + road
+        head = rz + lengths[k]
+        for z0 in np.arange(rz, head - 1.0, plot):
+            plot_at(xc0, -1.0, z0)
+            plot_at(xc1, 1.0, z0)
+        # beside the head: fences from the last plots back to the green; the head's far side closed but for a path
+        for xa, xb_ in ((x0, xc0 - 5.0), (xc1 + 5.0, x0 + strip)):
+            s.wall((xa, head), (xb_, head), -0.5, 1.8, thickness=0.1)
+        for x in (xc0 - 5.0, xc1 + 5.0):
+            s.wall((x, head), (x, head + 16.0), -0.5, 1.8, thickness=0.1)
+        far = head + 16.0
+        mid = (xc0 + xc1) / 2
+        if k in paths:
+            s.wall((xc0 - 5.0, far), (xc1 + 5.0, far), -0.5, 1.8, [(mid - 1.5 - xc0 + 5.0, 3.0)], thickness=0.1)
+            for x in (mid - 1.55, mid + 1.55):
+                s.wall((x, far), (x, gz0), -0.5, 1.8, thickness=0.1)
+            walls = ((x0, mid - 1.55), (mid + 1.55, x0 + strip))
+        else:
+            s.wall((xc0 - 5.0, far), (xc1 + 5.0, far), -0.5, 1.8, thickness=0.1)
+            walls = ((x0, x0 + strip),)
+        for xa, xb_ in walls:  # the green's fence
+            s.wall((xa, gz0), (xb_, gz0), -0.5, 1.8, thickness=0.1)
+        if gz0 - far > 1.0:  # a short close: garages fill the ground behind its head (but the path)
+            for xa, xb_ in (((xc0 - 5.0, mid - 1.55), (mid + 1.55, xc1 + 5.0)) if k in paths else ((xc0 - 5.0, xc1 + 5.0),)):
+                holes.append(_ridged(s, xa + 0.5, xb_ - 0.5, far + 0.5, gz0 - 0.5, -0.5, 3.0))
+        # the back-to-back strip behind the head's fences up to the green: closed yards of the corner houses
+        for xa, xb_ in ((x0, xc0 - 5.0), (xc1 + 5.0, x0 + strip)):
+            if gz0 - head > 0.5:
+                holes.append(_ridged(s, xa + 0.5, xb_ - 0.5, head + 0.5, gz0 - 0.5, -0.5, rng.uniform(5.0, 6.5)))
+    s.wall((0.0, rz), (0.0, gz0), -0.5, 1.8, thickness=0.1)
+    s.wall((size_x, rz), (size_x, gz0), -0.5, 1.8, thickness=0.1)
+    # the green: trees and play frames
+    taken = [(0.0, size_x, 0.0, gz0 + 1.0)]
+    _trees(s, rng, int(rng.integers(30, 45)), size_x, size_z, taken, (0.25, 0.45), 6.0)
+    for _ in range(int(rng.integers(4, 7))):
+        p = np.array([rng.uniform(4.0, size_x - 8.0), rng.uniform(gz0 + 4.0, size_z - 6.0)])
+        if _clear(p[0] - 1.0, p[0] + 5.0, p[1] - 1.0, p[1] + 3.0, taken):
+            for dx in (0.0, 4.0):
+                for dz in (0.0, 2.0):
+                    _trunk(s, p + np.array([dx, dz]), 0.1, -0.5, 2.5)
+            for dz in (0.0, 2.0):  # the bars, too thin to stand on
+                s.box(p[0], p[0] + 4.1, 2.5, 2.6, p[1] + dz - 0.05, p[1] + dz + 0.05)
+            taken.append((p[0] - 1.5, p[0] + 5.5, p[1] - 1.5, p[1] + 3.5))
+    # south of the road: shops, the car park, the playing field
+    sx = rng.uniform(10.0, size_x * 0.4)
+    shops = (sx, sx + rng.uniform(40.0, 60.0), 2.0, 14.0)
+    holes.append(_ridged(s, *shops, -0.5, 5.0))
+    for x in np.arange(shops[0] + 2.0, shops[1] - 2.0, 2.6):
+        for z in (17.0, 24.0):
+            if rng.random() < 0.7:
+                _car(s, x, x + 1.8, z, z + 4.5, 0.0)
+    fx0, fx1 = shops[1] + 12.0, min(size_x - 4.0, shops[1] + 12.0 + rng.uniform(60.0, 80.0))
+    gates = [(rng.uniform(2.0, (fx1 - fx0) / 2 - 4.0), 2.0), (rng.uniform((fx1 - fx0) / 2, fx1 - fx0 - 4.0), 2.0)]
+    s.wall((fx0, 27.0), (fx1, 27.0), -0.5, 1.8, gates, thickness=0.1)
+    s.wall((fx0, 3.0), (fx1, 3.0), -0.5, 1.8, thickness=0.1)
+    for x in (fx0, fx1):
+        s.wall((x, 3.0), (x, 27.0), -0.5, 1.8, thickness=0.1)
+    for x in (fx0 + 4.0, fx1 - 4.0):  # goals
+        for z in (12.0, 18.0):
+            _trunk(s, np.array([x, z]), 0.08, -0.5, 2.4)
+    s.ground(0.0, size_x, 0.0, size_z, 0.0, holes)
+    return s.mesh()
+
+
+def _car(s: _Solids, x0: float, x1: float, z0: float, z1: float, y: float) -> None:
+    """A car on a floor at ``y`` over [x0, x1] x [z0, z1]: a hull from 0.3 m under the floor to a ridge 1.4 m over it
+    along its longer side, so neither its top nor the floor under it (less than the agent's height) is floor."""
+    mx, mz = (x0 + x1) / 2, (z0 + z1) / 2
+    ridge = [[x0, y + 1.4, mz], [x1, y + 1.4, mz]] if x1 - x0 > z1 - z0 else [[mx, y + 1.4, z0], [mx, y + 1.4, z1]]
+    s.hull(np.array([[x, y - 0.3, z] for x in (x0, x1) for z in (z0, z1)] + ridge))
+
+
+def cloverleaf(seed: int) -> trimesh.Trimesh:
+    """A cloverleaf junction over a marsh (no floor but the roads): motorway A along x on a causeway (deck top y = 0),
+    motorway B along z on a viaduct 7.5-8.5 m up crossing over it, each 560-640 m long and two carriageways of 8.5 m
+    split by a barrier 0.9 m high (no gap), so a carriageway of one road meets the other only through the loops: in
+    each quadrant a loop ramp 6 m wide of radius 28-34 m turning 270 degrees, flat where it merges with A and with B
+    (its first and last 25 degrees) and climbing 4 degrees between. A toll plaza across B's north arm (booths 1.5 m
+    wide, lanes 2.6-3 m between them); off A's south carriageway in the west a service area (a deck behind a fence
+    1.2 m high with an entry and an exit, a shop, fuel pumps, parked cars); 70-100 abandoned cars (:func:`_car`) on
+    the roads.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    half_len, top, radius, edge = rng.uniform(280.0, 320.0), rng.uniform(7.5, 8.5), rng.uniform(28.0, 34.0), 9.5
+    s.box(-half_len, half_len, -1.0, 0.0, -edge, edge)  # A
+    s.box(-edge, edge, top - 1.0, top, -half_len, half_len)  # B
+    s.box(-half_len, half_len, 0.0, 0.9, -0.4, 0.4)
+    s.box(-0.4, 0.4, top, top + 0.9, -half_len, half_len)
+    for z in np.arange(-half_len + 20.0, half_len, 40.0):  # B's piers, clear of A
+        if abs(z) > edge + 4.0:
+            s.box(-3.0, 3.0, -12.0, top - 1.0, z - 1.0, z + 1.0)
+    # the loops
+    flat = math.radians(25.0)
+    for sx in (-1.0, 1.0):
+        for sz in (-1.0, 1.0):
+            c = np.array([sx * (edge + radius), sz * (edge + radius)])
+            a_a, a_b = math.atan2(-sz, 0.0), math.atan2(0.0, -sx)
+            turn = -math.copysign(1.0, math.remainder(a_b - a_a, 2 * math.pi)) * 1.5 * math.pi
+            angles = np.linspace(0.0, 1.0, 55)
+            heights = top * np.clip((angles * 1.5 * math.pi - flat) / (1.5 * math.pi - 2 * flat), 0.0, 1.0)
+            for (t0, y0), (t1, y1) in pairwise(zip(angles, heights)):
+                a0, a1 = a_a + turn * t0, a_a + turn * t1
+                corners = [(c + r * np.array([math.cos(a), math.sin(a)]), y) for a, y in ((a0, y0), (a1, y1)) for r in (radius - 3.0, radius + 3.0)]
+                s.hull(np.array([[p[0], y - d, p[1]] for p, y in corners for d in (0.0, 0.3)]))
+    # the toll plaza on B's north arm
+    zt = rng.uniform(edge + 2 * radius + 30.0, half_len - 40.0)
+    for x in np.concatenate([np.arange(-edge + 3.0, -2.0, 4.3), np.arange(3.0, edge - 1.0, 4.3)]):
+        _ridged(s, x, x + 1.5, zt, zt + 6.0, top - 0.5, top + 1.0)  # under 2 m inside
+    # the service area in the west, south of A
+    x0, x1 = -half_len + 30.0, -half_len + 30.0 + rng.uniform(90.0, 110.0)
+    s.wall((x0, -edge - 0.3), (x1, -edge - 0.3), 0.0, 1.2, [(2.0, 10.0), (x1 - x0 - 12.0, 10.0)], thickness=0.2)
+    taken = [(x0 - 1.0, x0 + 13.0, -edge - 8.0, -edge), (x1 - 13.0, x1 + 1.0, -edge - 8.0, -edge)]
+    sx0 = rng.uniform(x0 + 14.0, x1 - 44.0)
+    shop = _ridged(s, sx0, sx0 + 30.0, -edge - 38.0, -edge - 26.0, -1.0, 4.5)
+    s.ground(x0, x1, -edge - 40.0, -edge, 0.0, [shop], thickness=1.0)  # the deck stops under the shop
+    taken.append((sx0 - 2.0, sx0 + 32.0, -edge - 40.0, -edge - 24.0))
+    px = rng.uniform(x0 + 14.0, x1 - 34.0)
+    for x in np.arange(px, px + 20.0, 6.0):  # the pumps
+        for z in (-edge - 14.0, -edge - 20.0):
+            s.box(x, x + 1.2, -1.0, 1.6, z, z + 0.6)
+    taken.append((px - 3.0, px + 23.0, -edge - 23.0, -edge - 11.0))
+    for i, x in enumerate(np.arange(x0 + 2.0, x1 - 3.0, 2.4)):  # bays 2.4 m: 0.6 m between cars, too narrow to enter
+        for z in (-edge - 40.0, -edge - 30.0):
+            if i % 6 and rng.random() < 0.6 and _clear(x, x + 1.8, z, z + 4.5, taken):  # an aisle every sixth bay
+                _car(s, x, x + 1.8, z, z + 4.5, 0.0)
+    # abandoned cars: along a road, in a carriageway
+    cars = [(x0 - 5.0, x1 + 5.0, -edge, 0.0), (-edge - 2.0, edge + 2.0, -edge - 2.0, edge + 2.0), (-edge, edge, zt - 8.0, zt + 14.0)]
+    for _ in range(int(rng.integers(70, 101))):  # 1.6-2.2 m clear of the barrier and the edge, 3 m of each other
+        lane = rng.choice([-1.0, 1.0]) * rng.uniform(2.0, 5.5)
+        if rng.random() < 0.35:  # on A
+            x, z, w, d, y = rng.uniform(-half_len + 5.0, half_len - 10.0), min(lane, lane + 1.8), 4.5, 1.8, 0.0
+        else:  # on B
+            x, z, w, d, y = min(lane, lane + 1.8), rng.uniform(-half_len + 5.0, half_len - 10.0), 1.8, 4.5, top
+        if _clear(x - 3.0, x + w + 3.0, z - 3.0, z + d + 3.0, cars):
+            _car(s, x, x + w, z, z + d, y)
+            cars.append((x, x + w, z, z + d))
+    return s.mesh()
+
+
+def _polar(r: float, a: float) -> np.ndarray:
+    """The plan point (2,) at radius ``r`` (m) and angle ``a`` (radians) about the origin."""
+    return np.array([r * math.cos(a), r * math.sin(a)])
+
+
+def radial_town(seed: int) -> trimesh.Trimesh:
+    """An ideal town of rings and radials (its only floor the streets, y = 0): a round place of radius 18 m round a
+    monument (a pointed octagon 3 m in radius), 8-10 avenues 10 m wide out from it (a row of trees down each), three
+    ring streets 6 m wide 30 m apart (the outer one the town's edge) and, beyond the first ring, lanes 4 m wide half
+    way between the avenues. Between them blocks of houses with ridged roofs (no floor), but one block a ring a
+    garden (floor, trees). Avenues, lanes and rings are straight strips and chords of 3 degrees or less.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    place, ring_w, avenue, lane = 18.0, 6.0, 10.0, 4.0
+    rings = [place + 30.0 * (k + 1) + rng.uniform(-3.0, 3.0) for k in range(3)]
+    n = int(rng.integers(8, 11))
+    turn = rng.uniform(0.0, 2 * math.pi)
+    avenues = [turn + 2 * math.pi * k / n + rng.uniform(-0.08, 0.08) for k in range(n)]
+    lanes = [(a + b) / 2 for a, b in pairwise(avenues + [avenues[0] + 2 * math.pi])]
+    outer = rings[-1] + ring_w / 2
+    # the place, its monument, the rings, the avenues and the lanes
+    sides = np.linspace(0.0, 2 * math.pi, 49)
+    for a0, a1 in pairwise(sides):  # the place stops at the monument (its floor would be inside it)
+        s.prism(np.array([_polar(3.0, a0), _polar(place, a0), _polar(place, a1), _polar(3.0, a1)]), -0.5, 0.0)
+    s.hull(np.concatenate([[[x, y, z] for x, z in (_polar(3.0, a) for a in sides[:-1:6]) for y in (-0.5, 4.0)], [[0.0, 12.0, 0.0]]]))
+    for r in rings:
+        steps = np.linspace(0.0, 2 * math.pi, int(2 * math.pi * r / 5.0) + 1)
+        for a0, a1 in pairwise(steps):
+            s.prism(np.array([_polar(r - ring_w / 2, a0), _polar(r + ring_w / 2, a0), _polar(r + ring_w / 2, a1),
+                              _polar(r - ring_w / 2, a1)]), -0.5, 0.0)
+    for a in avenues:
+        s.prism(_strip(_polar(place - 2.0, a), _polar(outer, a), avenue), -0.5, 0.0)
+        for r in np.arange(place + 6.0, outer - 4.0, 8.0):
+            if all(abs(r - q) > ring_w / 2 + 1.5 for q in rings):
+                _trunk(s, _polar(r, a), 0.35, -0.5, 6.0)
+    for a in lanes:
+        s.prism(_strip(_polar(rings[0], a), _polar(outer, a), lane), -0.5, 0.0)
+    # the blocks: between two radial ways (avenues, and lanes beyond the first ring) and two rings
+    bounds = [(place + 0.0, rings[0] - ring_w / 2)] + [(a + ring_w / 2, b - ring_w / 2) for a, b in pairwise(rings)]
+    for k, (r0, r1) in enumerate(bounds):
+        ways = sorted([(a, avenue) for a in avenues] + ([(a, lane) for a in lanes] if k else []))
+        ways.append((ways[0][0] + 2 * math.pi, ways[0][1]))
+        garden = int(rng.integers(len(ways) - 1))
+        for g, ((a0, w0), (a1, w1)) in enumerate(pairwise(ways)):
+            r_in = max(r0, (w0 + w1) / 2 / math.sin((a1 - a0) / 2) + 1.0)
+            inner = (a0 + math.asin(w0 / 2 / r_in), a1 - math.asin(w1 / 2 / r_in))
+            outer_ = (a0 + math.asin(w0 / 2 / r1), a1 - math.asin(w1 / 2 / r1))
+            m = max(1, math.ceil((outer_[1] - outer_[0]) / math.radians(3.0)))
+            top = rng.uniform(6.0, 12.0)
+            for j in range(m):
+                t0, t1 = j / m, (j + 1) / m
+                quad = np.array([_polar(r_in, inner[0] + t0 * (inner[1] - inner[0])), _polar(r1, outer_[0] + t0 * (outer_[1] - outer_[0])),
+                                 _polar(r1, outer_[0] + t1 * (outer_[1] - outer_[0])), _polar(r_in, inner[0] + t1 * (inner[1] - inner[0]))])
+                if g == garden:
+                    s.prism(quad, -0.5, 0.0)
+                    continue
+                mid_in, mid_out = (quad[0] + quad[3]) / 2, (quad[1] + quad[2]) / 2
+                s.hull(np.concatenate([np.insert(quad, 1, -0.5, axis=1), np.insert(quad, 1, top, axis=1),
+                                       [[mid_in[0], top + 6.0, mid_in[1]], [mid_out[0], top + 6.0, mid_out[1]]]]))
+            if g == garden:
+                for _ in range(int(rng.integers(6, 12))):
+                    r, a = rng.uniform(r_in + 2.0, r1 - 2.0), rng.uniform(*outer_)
+                    if a0 + math.asin((w0 / 2 + 2.0) / r) < a < a1 - math.asin((w1 / 2 + 2.0) / r):
+                        _trunk(s, _polar(r, a), 0.35, -0.5, 6.0)
+    return s.mesh()
+
+
 KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
     "subway": subway, "archipelago": archipelago, "car_park": car_park,
     "forest": forest, "stadium": stadium, "harbour": harbour,
@@ -6647,6 +7227,8 @@ KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
     "dam": dam,
     "garden": garden, "lighthouse": lighthouse, "canal_locks": canal_locks, "water_park": water_park, "paddies": paddies,
     "cistern": cistern,
+    "star_fort": star_fort, "glacier": glacier, "medina": medina,
+    "suburb": suburb, "cloverleaf": cloverleaf, "radial_town": radial_town,
 }
 """Kind name -> generator (seed -> Y-up mesh in metres)."""
 

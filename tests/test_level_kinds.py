@@ -1,4 +1,4 @@
-"""The ninth to sixteenth rounds' level kinds (``benchmarks/level_kinds.py``) build the levels their docstrings describe.
+"""The ninth to seventeenth rounds' level kinds (``benchmarks/level_kinds.py``) build the levels their docstrings describe.
 
 Smoke tests of quick generators (well under a second each to build and to give a navmesh): the connected areas
 the presets' agent finds are the ones each level is made to have, so a door that closes or a crawlway that
@@ -7,6 +7,7 @@ opens shows here before a benchmark figure moves.
 
 from __future__ import annotations
 
+import math
 from types import SimpleNamespace
 
 import numpy as np
@@ -38,7 +39,7 @@ def areas(mesh) -> tuple[np.ndarray, object]:
 
 def test_the_same_seed_gives_the_same_level(kinds):
     for kind in ("hall", "islets", "helix", "flooded", "stairhall", "quarry", "theme_park", "golf", "skatepark", "stepwell",
-                 "railyard", "craters", "monastery", "estate", "dam", "garden", "cistern"):
+                 "railyard", "craters", "monastery", "estate", "dam", "garden", "cistern", "glacier", "medina", "radial_town"):
         a, b, other = kinds[kind](0), kinds[kind](0), kinds[kind](1)
         assert np.array_equal(a.vertices, b.vertices) and np.array_equal(a.faces, b.faces), kind
         assert len(a.vertices) != len(other.vertices) or not np.array_equal(a.vertices, other.vertices), kind
@@ -553,3 +554,74 @@ def test_the_gardens_canal_is_crossed_only_on_its_bridges(kinds):
     # the floor over the water lies in at most two runs along the canal, each no wider than a bridge
     along = np.sort(nav.centres[over, 0])
     assert 1 + np.count_nonzero(np.diff(along) > 6.0) <= 2
+
+
+def test_the_forts_courtyard_walk_and_moat_are_one_area(kinds):
+    """The courtyard and glacis (0 m), the ramparts' walk (4.5 m, up the ramps) and the moat's floor (-5 m, down its
+    flights) are one area; at the ground's height the courtyard meets the glacis only over the ravelin's bridges."""
+    label, nav = areas(kinds["star_fort"](0))
+    assert label.max() == 0
+    y = nav.centres[:, 1] - 0.2
+    for level in (-5.0, 0.0, 4.5):
+        assert (np.abs(y - level) < 0.3).sum() > 20, level
+    ground = np.flatnonzero(np.abs(y) < 0.3)
+    x, z = nav.centres[ground, 0], nav.centres[ground, 2]
+    walk = np.abs(y - 4.5) < 0.3
+    x0, x1, z0 = nav.centres[walk, 0].min(), nav.centres[walk, 0].max(), nav.centres[walk, 2].min()
+    assert ((x > x0) & (x < x1) & (z > 0.0) & (z < nav.centres[walk, 2].max())).sum() > 20  # the courtyard
+    front = (x > x0) & (x < x1) & (z > z0) & (z < 0.0)  # between the bastions' points and the south curtain
+    assert front.any() and (np.abs(x[front] - (x0 + x1) / 2) < 13.0).all()  # the ravelin and drawbridge only
+
+
+def test_the_glacier_is_one_area_holed_by_its_crevasses(kinds):
+    """The lower and upper glacier are one area through the icefall's ramps, its floor climbing over 25 m, and the
+    crevasses hold no floor: the navmesh covers under nine tenths of its plan."""
+    label, nav = areas(kinds["glacier"](1))
+    assert label.max() == 0
+    x, y, z = nav.centres.T
+    assert np.ptp(y) > 25.0
+    assert nav.areas.sum() < 0.9 * np.ptp(x) * np.ptp(z)
+
+
+def test_the_medinas_alleys_and_courtyards_are_one_area_with_the_road_outside(kinds):
+    """The alleys, the courtyard houses (by their doors), the mosque's courtyard and the road outside the wall (by
+    its gates) are one area on the ground, and houses fill most of the walled town: alleys 2.6 m wide on a 9 m
+    lattice leave it under half its plan."""
+    label, nav = areas(kinds["medina"](2))
+    assert label.max() == 0
+    x, y, z = nav.centres.T
+    assert np.ptp(y) < 0.3
+    town = (x > x.min() + 15.0) & (x < x.max() - 15.0) & (z > z.min() + 15.0) & (z < z.max() - 15.0)
+    assert nav.areas[town].sum() < 0.5 * np.ptp(x[town]) * np.ptp(z[town])
+
+
+def test_the_suburbs_gardens_roads_and_green_are_one_area(kinds):
+    """Every back garden opens on its close through its gate, the closes on the distributor road and (some) on the
+    green: one area on the ground, and nothing on a roof, a car or a play frame."""
+    label, nav = areas(kinds["suburb"](1))
+    assert label.max() == 0
+    assert np.ptp(nav.centres[:, 1]) < 0.3
+
+
+def test_the_cloverleafs_roads_meet_only_through_its_loops(kinds):
+    """Motorway A (0 m) and the viaduct B (7.5-8.5 m) are one area through the four loops, the only floor between
+    their heights; no floor on A's barrier (its carriageways meet only through the loops and B)."""
+    label, nav = areas(kinds["cloverleaf"](2))
+    assert label.max() == 0
+    x, y, z = (nav.centres - np.array([0.0, 0.2, 0.0])).T
+    top = y.max()
+    assert 7.5 <= top <= 8.5 and (np.abs(y) < 0.3).sum() > 20
+    between = (y > 0.5) & (y < top - 0.5)
+    assert between.sum() >= 8 and (np.hypot(np.abs(x[between]) - 9.5, np.abs(z[between]) - 9.5) > 9.5).all()
+    assert not ((np.abs(y) < 0.3) & (np.abs(z) < 0.5)).any()
+
+
+def test_the_radial_towns_streets_are_its_only_floor(kinds):
+    """The place, avenues, lanes, rings and the gardens are one area at 0 m, and the blocks (ridged) hold no floor:
+    the streets cover under half the town's disc."""
+    label, nav = areas(kinds["radial_town"](0))
+    assert label.max() == 0
+    x, y, z = nav.centres.T
+    assert np.ptp(y) < 0.3
+    radius = np.hypot(x, z).max()
+    assert nav.areas.sum() < 0.5 * math.pi * radius**2
