@@ -1005,6 +1005,8 @@ def decompose(navmesh: Any, agent: Any, params: DecompositionParams, mesh: trime
     band = floor_bands(centres[:, 1], navmesh.normals, areas, 0.5 * float(agent.height))
     labels = _join_ways_round(navmesh, labels, pairs, blocked, clearance, areas, band, agent, wall_to_wall, params)
     labels = _join_stair_runs(navmesh, labels, pairs, blocked, clearance, areas, band, agent, wall_to_wall, params)
+    labels = _join_way_pieces(navmesh, labels, pairs, blocked, clearance, areas, band, wall_to_wall, params)
+    labels = _way_ends(navmesh, labels, pairs, blocked, clearance, areas, band, wall_to_wall, params)
     count = int(labels.max()) + 1 if len(labels) else 0
     blocked &= labels[pairs[:, 0]] != labels[pairs[:, 1]]
 
@@ -1284,6 +1286,129 @@ def _join_stair_runs(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocke
     return join_groups(labels, count, joins) if len(joins) else labels
 
 
+def way_pieces(sides: np.ndarray, floors: np.ndarray, width: np.ndarray, mean_width: np.ndarray,
+               narrowness: float) -> np.ndarray:
+    """(K,) bool: which chokepoints part two pieces of one way (step 3 of the module doc): the chokepoint keeps at
+    least ``narrowness`` of the mean walkable width of both its regions (``sides`` (K, 2), ``width`` (K,) m,
+    ``mean_width`` (G,) m: area over longest extent), so it is no narrowing of either: a way as wide as its cuts
+    on average, cut only where a bay or a corner widens it for a few metres. Both regions are on one floor
+    (``floors`` (K, 2)): a flight's foot and head stay chokepoints however narrow the ground it climbs from."""
+    if len(sides) == 0:
+        return np.zeros(0, dtype=bool)
+    return (floors[:, 0] == floors[:, 1]) & (width >= narrowness * mean_width[sides].max(axis=1))
+
+
+def _join_way_pieces(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocked: np.ndarray,
+                     clearance: Clearances, areas: np.ndarray, band: np.ndarray, wall_to_wall: float,
+                     params: DecompositionParams) -> np.ndarray:
+    """(P,) the regions ``labels`` with the two regions of every chokepoint between pieces of one way joined
+    (:func:`way_pieces`), again on the joined regions until none is left (step 3 of the module doc)."""
+    ends = np.asarray(navmesh.portals().endpoints, dtype=np.float64)
+    heights = np.asarray(navmesh.centres, dtype=np.float64)[:, 1]
+    while True:
+        count = int(labels.max()) + 1 if len(labels) else 0
+        candidates = np.flatnonzero(blocked & (labels[pairs[:, 0]] != labels[pairs[:, 1]]))
+        floor = _region_floors(labels, count, band, areas, heights)
+        kept = _chokepoints(candidates, pairs, labels, ends, clearance.widest, 2.0 * clearance.portals, floor,
+                            params.min_separation, clearance.holes, wall_to_wall)
+        if not kept:
+            return labels
+        sides = np.array([k["regions"] for k in kept], dtype=np.int64)
+        width = np.array([k["width"] for k in kept])
+        joins = way_pieces(sides, np.array([k["floors"] for k in kept], dtype=np.int64), width,
+                           mean_widths(navmesh, labels, areas)[0], params.narrowness)
+        if not joins.any():
+            return labels
+        labels = join_groups(labels, count, sides[joins])
+
+
+def narrow_stub(portal: int, limit: float, inside: np.ndarray, pairs: np.ndarray, portals_of: tuple[np.ndarray, np.ndarray],
+                polygon_clearance: np.ndarray, portal_clearance: np.ndarray, band: np.ndarray) -> np.ndarray:
+    """(K,) int64 sorted: the polygons of the region ``inside`` (P,) bool that go on from ``portal`` as narrow as
+    ``limit`` (clearance, m): reached from it through portals of clearance at most ``limit`` (``portal_clearance``
+    (E,)), each with a centre as near its walls (``polygon_clearance`` (P,)), on the floor (``band`` (P,), flat
+    polygons only) of the first, and with such a portal onward (a polygon with none is where the floor widens, or
+    a dead end). ``pairs`` (E, 2): each portal's polygons; ``portals_of``: CSR polygon -> portal ids. Depth-first
+    over the polygons, O(k) for k polygons and portals looked at."""
+    indptr, ids = portals_of
+    start = int(pairs[portal, 0] if inside[pairs[portal, 0]] else pairs[portal, 1])
+    grown: set[int] = set()
+    stack = [(start, portal)]
+    while stack:
+        q, came = stack.pop()
+        if q in grown or not inside[q] or polygon_clearance[q] > limit or band[q] < 0 or band[q] != band[start]:
+            continue
+        onward = [int(f) for f in ids[indptr[q]:indptr[q + 1]]
+                  if f != came and portal_clearance[f] <= limit and inside[pairs[f]].all()]
+        if onward:
+            grown.add(q)
+            stack.extend((int(pairs[f, 0] if pairs[f, 1] == q else pairs[f, 1]), f) for f in onward)
+    return np.array(sorted(grown), dtype=np.int64)
+
+
+def _way_ends(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocked: np.ndarray, clearance: Clearances,
+              areas: np.ndarray, band: np.ndarray, wall_to_wall: float, params: DecompositionParams) -> np.ndarray:
+    """(P,) the regions ``labels`` with every way carried on to its ends; ``blocked`` (E,) gains the portals at them.
+
+    A *way* is a region with chokepoints to two regions or more, each keeping at least ``narrowness`` of its mean
+    walkable width (it is as narrow as its openings: no room behind them). Where a chokepoint lies out along the
+    way from its true end (the merge tree cut it at a bay or a corner and merged the stub beyond into the
+    neighbour), the neighbour's polygons that go on as narrow as the chokepoint (clearance at most the
+    chokepoint's over ``narrowness``, with a portal as narrow onward) join the way, with whatever of the neighbour
+    only they reach, and the chokepoint moves to the portals where the floor widens."""
+    ends = np.asarray(navmesh.portals().endpoints, dtype=np.float64)
+    heights = np.asarray(navmesh.centres, dtype=np.float64)[:, 1]
+    count = int(labels.max()) + 1 if len(labels) else 0
+    candidates = np.flatnonzero(blocked & (labels[pairs[:, 0]] != labels[pairs[:, 1]]))
+    floor = _region_floors(labels, count, band, areas, heights)
+    kept = _chokepoints(candidates, pairs, labels, ends, clearance.widest, 2.0 * clearance.portals, floor,
+                        params.min_separation, clearance.holes, wall_to_wall, portal_ids=True)
+    if not kept:
+        return labels
+    sides = np.array([k["regions"] for k in kept], dtype=np.int64)
+    width = np.array([k["width"] for k in kept])
+    mean_width, extent = mean_widths(navmesh, labels, areas)
+    both = np.concatenate([sides, sides[:, ::-1]])
+    narrow_enough = np.concatenate([width, width]) >= params.narrowness * mean_width[both[:, 0]]
+    neighbours = np.unique(both, axis=0)
+    way = ((np.bincount(neighbours[:, 0], minlength=count) >= 2)
+           & (np.bincount(both[:, 0], weights=~narrow_enough, minlength=count) == 0))
+    n = len(labels)
+    indptr = np.concatenate([[0], np.cumsum(np.bincount(pairs.reshape(-1), minlength=n))])
+    portal_of = np.argsort(pairs.reshape(-1), kind="stable") // 2
+    labels = labels.copy()
+    for k, (a, b) in zip(kept, both[:len(kept)].tolist()):
+        for w, other in ((a, b), (b, a)):
+            if not way[w] or way[other]:
+                continue
+            stub = narrow_stub(int(k["portal_id"]), 0.5 * float(k["width"]) / params.narrowness, labels == other,
+                               pairs, (indptr, portal_of), clearance.polygons, clearance.portals_open, band)
+            rest = np.flatnonzero(labels == other)
+            rest = rest[~np.isin(rest, stub)]
+            if len(stub) == 0 or len(rest) == 0:
+                continue
+            local = np.full(n, -1, dtype=np.int64)
+            local[rest] = np.arange(len(rest))
+            inner = (local[pairs] >= 0).all(axis=1)
+            graph = sparse.coo_array((np.ones(int(inner.sum())), (local[pairs[inner, 0]], local[pairs[inner, 1]])),
+                                     shape=(len(rest), len(rest)))
+            parts, part = csgraph.connected_components(graph, directed=False)
+            main_part = int(np.argmax(np.bincount(part, weights=areas[rest])))
+            cut_off = rest[part != main_part]
+            moved = np.concatenate([stub, cut_off])
+            edge = np.isin(pairs, moved).any(axis=1) & (labels[pairs] == other).all(axis=1)
+            edge &= ~np.isin(pairs, moved).all(axis=1)
+            reach = np.linalg.norm(clearance.widest[edge][:, [0, 2]] - np.asarray(k["position"])[[0, 2]], axis=1)
+            group = np.zeros(n, dtype=np.int64)
+            group[moved] = 1
+            if (areas[cut_off].sum() > areas[stub].sum() or not len(reach) or reach.min() < params.min_separation
+                    or longest_extents(navmesh, group, 2)[1] > extent[w]):
+                continue  # a link between two parts of the neighbour, no stub, or a way of its own beyond the cut
+            labels[moved] = w
+            blocked |= edge
+    return join_groups(labels, count, np.zeros((0, 2), dtype=np.int64))
+
+
 def _holes_at(points: np.ndarray, start: np.ndarray, hole: np.ndarray) -> np.ndarray:
     """(N,) int64: the hole of ``hole`` (B,) (-1: none) whose boundary has a corner at each of ``points`` (N, 3) (equal
     to 1 cm; the boundary edges start at ``start`` (B, 3)), -1 for points on none."""
@@ -1431,9 +1556,11 @@ def _post_links(pair: np.ndarray, hole: np.ndarray, ends: np.ndarray, width: np.
 
 def _chokepoints(candidates: np.ndarray, pairs: np.ndarray, labels: np.ndarray, endpoints: np.ndarray,
                  widest: np.ndarray, width: np.ndarray, floor: np.ndarray, separation: float,
-                 holes: tuple[np.ndarray, np.ndarray], wall_to_wall: float) -> list[dict[str, Any]]:
+                 holes: tuple[np.ndarray, np.ndarray], wall_to_wall: float,
+                 portal_ids: bool = False) -> list[dict[str, Any]]:
     """One record per chokepoint: candidates grouped by region pair, widest first; the others of an
-    opening (:func:`_openings`, ``holes`` and ``wall_to_wall`` as there) and near ones dropped."""
+    opening (:func:`_openings`, ``holes`` and ``wall_to_wall`` as there) and near ones dropped. With
+    ``portal_ids`` each record also names its portal (``portal_id``), for the steps of the split that use it."""
     sides = np.sort(labels[pairs[candidates]], axis=1)
     opening = _openings(candidates, sides, endpoints, width, holes, wall_to_wall)
     order = np.lexsort((candidates, -width[candidates], sides[:, 1], sides[:, 0]))
@@ -1456,7 +1583,7 @@ def _chokepoints(candidates: np.ndarray, pairs: np.ndarray, labels: np.ndarray, 
             "regions": [a, b],
             "polygons": [int(pairs[e, 0]), int(pairs[e, 1])],
             "floors": [int(floor[a]), int(floor[b])],
-        })
+        } | ({"portal_id": e} if portal_ids else {}))
     pairs_kept = [tuple(k["regions"]) for k in kept]
     count = max((b for _, b in pairs_kept), default=-1) + 1
     region_graph = rx.PyGraph(multigraph=True)
