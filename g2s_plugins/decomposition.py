@@ -1323,15 +1323,13 @@ def _join_way_pieces(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocke
 
 
 def narrow_stub(portal: int, limit: float, inside: np.ndarray, pairs: np.ndarray, portals_of: tuple[np.ndarray, np.ndarray],
-                polygon_clearance: np.ndarray, portal_clearance: np.ndarray, across: np.ndarray,
-                band: np.ndarray) -> np.ndarray:
+                polygon_clearance: np.ndarray, portal_clearance: np.ndarray, band: np.ndarray) -> np.ndarray:
     """(K,) int64 sorted: the polygons of the region ``inside`` (P,) bool that go on from ``portal`` as narrow as
-    ``limit`` (clearance, m): reached from it through portals across the way (``across`` (E,): both ends on its
-    walls) of clearance at most ``limit`` (``portal_clearance`` (E,)), each with a centre as near its walls
-    (``polygon_clearance`` (P,)), on the floor (``band`` (P,), flat polygons only) of the first, and with such a
-    portal onward (a polygon with none is where the floor widens, or a dead end). ``pairs`` (E, 2): each portal's
-    polygons; ``portals_of``: CSR polygon -> portal ids. Depth-first over the polygons, O(k) for k polygons and
-    portals looked at."""
+    ``limit`` (clearance, m): reached from it through portals of clearance at most ``limit`` (``portal_clearance``
+    (E,)), each with a centre as near its walls (``polygon_clearance`` (P,)), on the floor (``band`` (P,), flat
+    polygons only) of the first, and with such a portal onward (a polygon with none is where the floor widens, or
+    a dead end). ``pairs`` (E, 2): each portal's polygons; ``portals_of``: CSR polygon -> portal ids. Depth-first
+    over the polygons, O(k) for k polygons and portals looked at."""
     indptr, ids = portals_of
     start = int(pairs[portal, 0] if inside[pairs[portal, 0]] else pairs[portal, 1])
     grown: set[int] = set()
@@ -1341,7 +1339,7 @@ def narrow_stub(portal: int, limit: float, inside: np.ndarray, pairs: np.ndarray
         if q in grown or not inside[q] or polygon_clearance[q] > limit or band[q] < 0 or band[q] != band[start]:
             continue
         onward = [int(f) for f in ids[indptr[q]:indptr[q + 1]]
-                  if f != came and across[f] and portal_clearance[f] <= limit and inside[pairs[f]].all()]
+                  if f != came and portal_clearance[f] <= limit and inside[pairs[f]].all()]
         if onward:
             grown.add(q)
             stack.extend((int(pairs[f, 0] if pairs[f, 1] == q else pairs[f, 1]), f) for f in onward)
@@ -1376,10 +1374,6 @@ def _way_ends(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocked: np.n
     way = ((np.bincount(neighbours[:, 0], minlength=count) >= 2)
            & (np.bincount(both[:, 0], weights=~narrow_enough, minlength=count) == 0))
     n = len(labels)
-    wall_start = boundary_edges(navmesh)[0]
-    _, key = np.unique(_point_keys(np.concatenate([ends.reshape(-1, 3), wall_start])), return_inverse=True)
-    key = key.reshape(-1)
-    across = np.isin(key[:2 * len(ends)], key[2 * len(ends):]).reshape(-1, 2).all(axis=1)  # wall to wall
     indptr = np.concatenate([[0], np.cumsum(np.bincount(pairs.reshape(-1), minlength=n))])
     portal_of = np.argsort(pairs.reshape(-1), kind="stable") // 2
     labels = labels.copy()
@@ -1388,7 +1382,7 @@ def _way_ends(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocked: np.n
             if not way[w] or way[other]:
                 continue
             stub = narrow_stub(int(k["portal_id"]), 0.5 * float(k["width"]) / params.narrowness, labels == other,
-                               pairs, (indptr, portal_of), clearance.polygons, clearance.portals_open, across, band)
+                               pairs, (indptr, portal_of), clearance.polygons, clearance.portals_open, band)
             rest = np.flatnonzero(labels == other)
             rest = rest[~np.isin(rest, stub)]
             if len(stub) == 0 or len(rest) == 0:
