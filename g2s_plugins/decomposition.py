@@ -114,9 +114,19 @@ polygons and their shared edges (portals):
    landings go and those at its foot and head stay. Landings where flights meet from several sides (a lattice of
    flights) have three chokepoints or more, or are no larger than the run: they stay regions. The project's own
    rule, set on the fifteenth round's monastery and dam (docs/plugins.md, "Stairs in one run").
+   Ways (last; :func:`way_pieces`, :func:`_way_ends`): a chokepoint between two regions on one floor that keeps at
+   least ``narrowness`` of both regions' mean walkable width parts two pieces of one way (a causeway or a platform
+   cut where a passing bay or a corner widens it for a few metres): the two join, again until none is left. A *way*
+   is then a region with chokepoints to two regions or more, each keeping at least ``narrowness`` of its mean width
+   (as narrow as its openings). Where the merge tree merged the way's last stretch into the region beyond (the
+   stretch is no wider than the way, so no room of its own), that stub, the polygons going on from the chokepoint
+   on its floor as narrow as the chokepoint over ``narrowness`` (:func:`narrow_stub`), joins the way with what of
+   the neighbour only it reaches, and the chokepoint moves to where the floor widens: at least ``min_separation``
+   on, the stub larger than what it cuts off (else it links two parts of the neighbour). The project's own rules,
+   set on the sixteenth round's lighthouse (docs/plugins.md, "Ways and their ends").
 4. Regions are the groups left (``scipy.sparse.csgraph.connected_components``
-   of the merged portals, joined passages, pinches, side strips, lanes, ways round and stair runs), numbered by their
-   lowest polygon id.
+   of the merged portals, joined passages, pinches, side strips, lanes, ways round, stair runs and ways), numbered by
+   their lowest polygon id.
    Candidates between the same two regions that are chained end to end (one opening:
    Recast's region contours may bend across a wide gap), that end on the same
    small hole less than half as wide between them, wall to wall, as the narrower
@@ -149,7 +159,8 @@ sorting the candidates' region pairs); lanes O(R (C' (Q M + Q log B) + sum of k^
 measured), C' candidates of region pairs with openings at least ``min_separation`` apart and k passage openings
 per pair; ways round O(R' (V + O K log K)) for R' rounds (1-4 measured), O openings and K polygons within the
 walk's length of an opening (few in rooms, up to a region in open ground); stair runs O(V + C log C) (extents, the
-chokepoints once more, sorting their ends); openings O(C log C + sum of k^2) for k candidate ends on each small
+chokepoints once more, sorting their ends); ways O(R'' (V + C log C) + S) for R'' rounds of joins (1-2 measured)
+and S polygons of the stubs looked at (each way's chokepoints once); openings O(C log C + sum of k^2) for k candidate ends on each small
 hole; small rooms O(k) per look at a group under ``min_region_area`` (k: its polygons and their portals, few), and
 O(k) rays for the groups walled in but for one opening (:class:`DoorWidths`, each polygon and portal cast once);
 wall pieces O(B) and O(B) more per elongated small hole (few: pillars are compact); the merge tree sorts the
@@ -1354,8 +1365,11 @@ def _way_ends(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocked: np.n
     walkable width (it is as narrow as its openings: no room behind them). Where a chokepoint lies out along the
     way from its true end (the merge tree cut it at a bay or a corner and merged the stub beyond into the
     neighbour), the neighbour's polygons that go on as narrow as the chokepoint (clearance at most the
-    chokepoint's over ``narrowness``, with a portal as narrow onward) join the way, with whatever of the neighbour
-    only they reach, and the chokepoint moves to the portals where the floor widens."""
+    chokepoint's over ``narrowness``, with a portal as narrow onward, on the chokepoint's floor: :func:`narrow_stub`)
+    join the way, with whatever of the neighbour only they reach, and the chokepoint moves to the portals where the
+    floor widens; not when those lie within ``min_separation`` of it (no stub) or when what they cut off is larger
+    than the stub (a link between two parts of the neighbour, not the way's end). A neighbour that is a way itself
+    is left as it is."""
     ends = np.asarray(navmesh.portals().endpoints, dtype=np.float64)
     heights = np.asarray(navmesh.centres, dtype=np.float64)[:, 1]
     count = int(labels.max()) + 1 if len(labels) else 0
@@ -1367,7 +1381,7 @@ def _way_ends(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocked: np.n
         return labels
     sides = np.array([k["regions"] for k in kept], dtype=np.int64)
     width = np.array([k["width"] for k in kept])
-    mean_width, extent = mean_widths(navmesh, labels, areas)
+    mean_width = mean_widths(navmesh, labels, areas)[0]
     both = np.concatenate([sides, sides[:, ::-1]])
     narrow_enough = np.concatenate([width, width]) >= params.narrowness * mean_width[both[:, 0]]
     neighbours = np.unique(both, axis=0)
@@ -1399,11 +1413,8 @@ def _way_ends(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocked: np.n
             edge = np.isin(pairs, moved).any(axis=1) & (labels[pairs] == other).all(axis=1)
             edge &= ~np.isin(pairs, moved).all(axis=1)
             reach = np.linalg.norm(clearance.widest[edge][:, [0, 2]] - np.asarray(k["position"])[[0, 2]], axis=1)
-            group = np.zeros(n, dtype=np.int64)
-            group[moved] = 1
-            if (areas[cut_off].sum() > areas[stub].sum() or not len(reach) or reach.min() < params.min_separation
-                    or longest_extents(navmesh, group, 2)[1] > extent[w]):
-                continue  # a link between two parts of the neighbour, no stub, or a way of its own beyond the cut
+            if areas[cut_off].sum() > areas[stub].sum() or not len(reach) or reach.min() < params.min_separation:
+                continue  # a link between two parts of the neighbour, or no stub: the chokepoint is at the way's end
             labels[moved] = w
             blocked |= edge
     return join_groups(labels, count, np.zeros((0, 2), dtype=np.int64))
