@@ -159,11 +159,11 @@ sorting the candidates' region pairs); lanes O(R (C' (Q M + Q log B) + sum of k^
 measured), C' candidates of region pairs with openings at least ``min_separation`` apart and k passage openings
 per pair; ways round O(R' (V + O K log K)) for R' rounds (1-4 measured), O openings and K polygons within the
 walk's length of an opening (few in rooms, up to a region in open ground); stair runs O(V + C log C) (extents, the
-chokepoints once more, sorting their ends); ways O(R'' (V + C log C) + S) for R'' rounds of joins (1-2 measured)
-and S polygons of the stubs looked at (each way's chokepoints once); openings O(C log C + sum of k^2) for k candidate ends on each small
-hole; small rooms O(k) per look at a group under ``min_region_area`` (k: its polygons and their portals, few), and
-O(k) rays for the groups walled in but for one opening (:class:`DoorWidths`, each polygon and portal cast once);
-wall pieces O(B) and O(B) more per elongated small hole (few: pillars are compact); the merge tree sorts the
+chokepoints once more, sorting their ends); ways O(R'' (V + C log C) + W (P + E)) for R'' rounds of joins and W
+chokepoints of ways (each stub looked for once, and the region it leaves split into its parts); openings
+O(C log C + sum of k^2) for k candidate ends on each small hole; small rooms O(k) per look at a group under
+``min_region_area`` (k: its polygons and their portals, few), and O(k) rays for the groups walled in but for one
+opening (:class:`DoorWidths`, each polygon and portal cast once); wall pieces O(B) and O(B) more per elongated small hole (few: pillars are compact); the merge tree sorts the
 portals and runs one union-find step per portal (a Python loop of O(E alpha(P)): a merge order is sequential by
 nature and no library offers it on a general graph); everything else is
 numpy/scipy over arrays, networkx only on the small region graph.
@@ -650,6 +650,14 @@ class Outlines:
         return self.wall_share(polygons) >= self.enclosure and self.one_opening(polygons)
 
 
+def portals_of(pairs: np.ndarray, count: int) -> tuple[np.ndarray, np.ndarray]:
+    """CSR of polygon -> portal ids for ``count`` polygons and the portals ``pairs`` (E, 2) (each portal's two
+    polygons): ``(indptr (count+1,), portal ids (2E,))``, a polygon's portals in id order."""
+    owner = pairs.reshape(-1)
+    indptr = np.concatenate([[0], np.cumsum(np.bincount(owner, minlength=count))])
+    return indptr, np.argsort(owner, kind="stable") // 2
+
+
 def outlines(navmesh: Any, pairs: np.ndarray, endpoints: np.ndarray, footprint: float,
              enclosure: float) -> Outlines:
     """The :class:`Outlines` of ``navmesh``'s polygons (``pairs`` (E, 2) and ``endpoints`` (E, 2, 3): its portals)."""
@@ -658,12 +666,9 @@ def outlines(navmesh: Any, pairs: np.ndarray, endpoints: np.ndarray, footprint: 
     valid = polygons >= 0
     vertices = np.asarray(navmesh.vertices, dtype=np.float64)
     n = len(polygons)
-    owner = pairs.reshape(-1)
-    order = np.argsort(owner, kind="stable")
-    indptr = np.concatenate([[0], np.cumsum(np.bincount(owner, minlength=n))])
     return Outlines(walls=np.bincount(owner_of_wall, weights=np.linalg.norm(end - start, axis=1), minlength=n),
                     portal_length=np.linalg.norm(endpoints[:, 1] - endpoints[:, 0], axis=1),
-                    portals_of=(indptr, order // 2), pairs=pairs, endpoints=endpoints,
+                    portals_of=portals_of(pairs, n), pairs=pairs, endpoints=endpoints,
                     corners=np.where(valid[..., None], vertices[np.where(valid, polygons, 0)][..., [0, 2]], np.nan),
                     footprint=footprint, enclosure=enclosure)
 
@@ -1139,9 +1144,7 @@ class PolygonWalks:
         middle = endpoints.mean(axis=1)
         steps = (np.linalg.norm(centres[pairs[:, 0]] - middle, axis=1)
                  + np.linalg.norm(centres[pairs[:, 1]] - middle, axis=1))
-        owner = pairs.reshape(-1)
-        indptr = np.concatenate([[0], np.cumsum(np.bincount(owner, minlength=len(centres)))])
-        return cls(centres, pairs, steps, (indptr, np.argsort(owner, kind="stable") // 2), cKDTree(centres))
+        return cls(centres, pairs, steps, portals_of(pairs, len(centres)), cKDTree(centres))
 
     def round_within(self, portal: int, closed: np.ndarray, length: float) -> bool:
         """Whether a walk of at most ``length`` m joins the two polygons of ``portal`` without crossing the portals
@@ -1282,11 +1285,7 @@ def _join_stair_runs(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocke
     :data:`CORRIDOR_WIDTH` agent diameters wide on average and climbs at least half the agent's height between
     its two chokepoints (the floors' height bands split at that gap: ``band`` (P,), :func:`floor_bands`)."""
     count = int(labels.max()) + 1 if len(labels) else 0
-    candidates = np.flatnonzero(blocked & (labels[pairs[:, 0]] != labels[pairs[:, 1]]))
-    floor = _region_floors(labels, count, band, areas, np.asarray(navmesh.centres, dtype=np.float64)[:, 1])
-    kept = _chokepoints(candidates, pairs, labels, np.asarray(navmesh.portals().endpoints, dtype=np.float64),
-                        clearance.widest, 2.0 * clearance.portals, floor, params.min_separation, clearance.holes,
-                        wall_to_wall)
+    kept = _kept_chokepoints(navmesh, labels, pairs, blocked, clearance, areas, band, wall_to_wall, params)
     if not kept:
         return labels
     sides = np.array([k["regions"] for k in kept], dtype=np.int64)
@@ -1295,6 +1294,19 @@ def _join_stair_runs(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocke
     joins = stair_runs(sides, heights, mean_width, extent, np.bincount(labels, weights=areas, minlength=count),
                        CORRIDOR_WIDTH * 2.0 * float(agent.radius), 0.5 * float(agent.height))
     return join_groups(labels, count, joins) if len(joins) else labels
+
+
+def _kept_chokepoints(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocked: np.ndarray,
+                      clearance: Clearances, areas: np.ndarray, band: np.ndarray, wall_to_wall: float,
+                      params: DecompositionParams, portal_ids: bool = False) -> list[dict[str, Any]]:
+    """The chokepoints :func:`_chokepoints` keeps for the regions ``labels`` (P,) (one per opening), of the
+    candidates ``blocked`` (E,) between two of them; floors by ``band`` (P,) (:func:`floor_bands`)."""
+    count = int(labels.max()) + 1 if len(labels) else 0
+    candidates = np.flatnonzero(blocked & (labels[pairs[:, 0]] != labels[pairs[:, 1]]))
+    floor = _region_floors(labels, count, band, areas, np.asarray(navmesh.centres, dtype=np.float64)[:, 1])
+    return _chokepoints(candidates, pairs, labels, np.asarray(navmesh.portals().endpoints, dtype=np.float64),
+                        clearance.widest, 2.0 * clearance.portals, floor, params.min_separation, clearance.holes,
+                        wall_to_wall, portal_ids)
 
 
 def way_pieces(sides: np.ndarray, floors: np.ndarray, width: np.ndarray, mean_width: np.ndarray,
@@ -1314,14 +1326,9 @@ def _join_way_pieces(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocke
                      params: DecompositionParams) -> np.ndarray:
     """(P,) the regions ``labels`` with the two regions of every chokepoint between pieces of one way joined
     (:func:`way_pieces`), again on the joined regions until none is left (step 3 of the module doc)."""
-    ends = np.asarray(navmesh.portals().endpoints, dtype=np.float64)
-    heights = np.asarray(navmesh.centres, dtype=np.float64)[:, 1]
     while True:
         count = int(labels.max()) + 1 if len(labels) else 0
-        candidates = np.flatnonzero(blocked & (labels[pairs[:, 0]] != labels[pairs[:, 1]]))
-        floor = _region_floors(labels, count, band, areas, heights)
-        kept = _chokepoints(candidates, pairs, labels, ends, clearance.widest, 2.0 * clearance.portals, floor,
-                            params.min_separation, clearance.holes, wall_to_wall)
+        kept = _kept_chokepoints(navmesh, labels, pairs, blocked, clearance, areas, band, wall_to_wall, params)
         if not kept:
             return labels
         sides = np.array([k["regions"] for k in kept], dtype=np.int64)
@@ -1333,15 +1340,16 @@ def _join_way_pieces(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocke
         labels = join_groups(labels, count, sides[joins])
 
 
-def narrow_stub(portal: int, limit: float, inside: np.ndarray, pairs: np.ndarray, portals_of: tuple[np.ndarray, np.ndarray],
-                polygon_clearance: np.ndarray, portal_clearance: np.ndarray, band: np.ndarray) -> np.ndarray:
+def narrow_stub(portal: int, limit: float, inside: np.ndarray, pairs: np.ndarray,
+                portals: tuple[np.ndarray, np.ndarray], polygon_clearance: np.ndarray, portal_clearance: np.ndarray,
+                band: np.ndarray) -> np.ndarray:
     """(K,) int64 sorted: the polygons of the region ``inside`` (P,) bool that go on from ``portal`` as narrow as
     ``limit`` (clearance, m): reached from it through portals of clearance at most ``limit`` (``portal_clearance``
     (E,)), each with a centre as near its walls (``polygon_clearance`` (P,)), on the floor (``band`` (P,), flat
     polygons only) of the first, and with such a portal onward (a polygon with none is where the floor widens, or
-    a dead end). ``pairs`` (E, 2): each portal's polygons; ``portals_of``: CSR polygon -> portal ids. Depth-first
-    over the polygons, O(k) for k polygons and portals looked at."""
-    indptr, ids = portals_of
+    a dead end). ``pairs`` (E, 2): each portal's polygons; ``portals``: CSR polygon -> portal ids
+    (:func:`portals_of`). Depth-first over the polygons, O(k) for k polygons and portals looked at."""
+    indptr, ids = portals
     start = int(pairs[portal, 0] if inside[pairs[portal, 0]] else pairs[portal, 1])
     grown: set[int] = set()
     stack = [(start, portal)]
@@ -1359,7 +1367,8 @@ def narrow_stub(portal: int, limit: float, inside: np.ndarray, pairs: np.ndarray
 
 def _way_ends(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocked: np.ndarray, clearance: Clearances,
               areas: np.ndarray, band: np.ndarray, wall_to_wall: float, params: DecompositionParams) -> np.ndarray:
-    """(P,) the regions ``labels`` with every way carried on to its ends; ``blocked`` (E,) gains the portals at them.
+    """(P,) the regions ``labels`` with every way carried on to its ends; the portals at them are set in ``blocked``
+    (E,), in place (they become chokepoint candidates).
 
     A *way* is a region with chokepoints to two regions or more, each keeping at least ``narrowness`` of its mean
     walkable width (it is as narrow as its openings: no room behind them). Where a chokepoint lies out along the
@@ -1370,13 +1379,9 @@ def _way_ends(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocked: np.n
     floor widens; not when those lie within ``min_separation`` of it (no stub) or when what they cut off is larger
     than the stub (a link between two parts of the neighbour, not the way's end). A neighbour that is a way itself
     is left as it is."""
-    ends = np.asarray(navmesh.portals().endpoints, dtype=np.float64)
-    heights = np.asarray(navmesh.centres, dtype=np.float64)[:, 1]
     count = int(labels.max()) + 1 if len(labels) else 0
-    candidates = np.flatnonzero(blocked & (labels[pairs[:, 0]] != labels[pairs[:, 1]]))
-    floor = _region_floors(labels, count, band, areas, heights)
-    kept = _chokepoints(candidates, pairs, labels, ends, clearance.widest, 2.0 * clearance.portals, floor,
-                        params.min_separation, clearance.holes, wall_to_wall, portal_ids=True)
+    kept = _kept_chokepoints(navmesh, labels, pairs, blocked, clearance, areas, band, wall_to_wall, params,
+                             portal_ids=True)
     if not kept:
         return labels
     sides = np.array([k["regions"] for k in kept], dtype=np.int64)
@@ -1388,15 +1393,14 @@ def _way_ends(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocked: np.n
     way = ((np.bincount(neighbours[:, 0], minlength=count) >= 2)
            & (np.bincount(both[:, 0], weights=~narrow_enough, minlength=count) == 0))
     n = len(labels)
-    indptr = np.concatenate([[0], np.cumsum(np.bincount(pairs.reshape(-1), minlength=n))])
-    portal_of = np.argsort(pairs.reshape(-1), kind="stable") // 2
+    csr = portals_of(pairs, n)
     labels = labels.copy()
-    for k, (a, b) in zip(kept, both[:len(kept)].tolist()):
+    for k, (a, b) in zip(kept, sides.tolist()):
         for w, other in ((a, b), (b, a)):
             if not way[w] or way[other]:
                 continue
             stub = narrow_stub(int(k["portal_id"]), 0.5 * float(k["width"]) / params.narrowness, labels == other,
-                               pairs, (indptr, portal_of), clearance.polygons, clearance.portals_open, band)
+                               pairs, csr, clearance.polygons, clearance.portals_open, band)
             rest = np.flatnonzero(labels == other)
             rest = rest[~np.isin(rest, stub)]
             if len(stub) == 0 or len(rest) == 0:
