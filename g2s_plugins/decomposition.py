@@ -164,9 +164,9 @@ chokepoints of ways (each stub looked for once, and the region it leaves split i
 O(C log C + sum of k^2) for k candidate ends on each small hole; small rooms O(k) per look at a group under
 ``min_region_area`` (k: its polygons and their portals, few), and O(k) rays for the groups walled in but for one
 opening (:class:`DoorWidths`, each polygon and portal cast once); wall pieces O(B) and O(B) more per elongated
-small hole (few: pillars are compact); the merge tree sorts the portals and runs one union-find step per portal (a Python loop of O(E alpha(P)): a merge order is sequential by
-nature and no library offers it on a general graph); everything else is
-numpy/scipy over arrays, networkx only on the small region graph.
+small hole (few: pillars are compact); the merge tree sorts the portals and runs one union-find step per portal
+(a Python loop of O(E alpha(P)): a merge order is sequential by nature and no library offers it on a general graph);
+everything else is numpy/scipy over arrays, networkx only on the small region graph.
 """
 
 from __future__ import annotations
