@@ -324,7 +324,8 @@ class DecompositionParams(PluginParams):
         0.75, gt=0, lt=1,
         description="a passage is a chokepoint when its width is at most this fraction of the widest "
         "point of the rooms on both sides; a region whose chokepoints all lead to one region, at both its ends, "
-        "and keep at least this fraction of its mean width joins it (side strips)",
+        "and keep at least this fraction of its mean width joins it (side strips); two regions on one floor whose "
+        "chokepoint keeps this fraction of both their mean widths are pieces of one way and join (ways)",
     )
     obstacle_area: float = Field(
         16.0, ge=0, description="holes in the walkable surface smaller than this (pillars, crates) neither "
