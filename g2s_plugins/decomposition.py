@@ -1022,8 +1022,9 @@ def decompose(navmesh: Any, agent: Any, params: DecompositionParams, mesh: trime
     band = floor_bands(centres[:, 1], navmesh.normals, areas, 0.5 * float(agent.height))
     labels = _join_ways_round(navmesh, labels, pairs, blocked, clearance, areas, band, agent, wall_to_wall, params)
     labels = _join_stair_runs(navmesh, labels, pairs, blocked, clearance, areas, band, agent, wall_to_wall, params)
-    labels = _join_way_pieces(navmesh, labels, pairs, blocked, clearance, areas, band, wall_to_wall, params)
-    labels = _way_ends(navmesh, labels, pairs, blocked, clearance, areas, band, wall_to_wall, params)
+    radius = float(agent.radius)
+    labels = _join_way_pieces(navmesh, labels, pairs, blocked, clearance, areas, band, radius, wall_to_wall, params)
+    labels = _way_ends(navmesh, labels, pairs, blocked, clearance, areas, band, radius, wall_to_wall, params)
     count = int(labels.max()) + 1 if len(labels) else 0
     blocked &= labels[pairs[:, 0]] != labels[pairs[:, 1]]
 
@@ -1311,19 +1312,30 @@ def _kept_chokepoints(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, block
 
 
 def way_pieces(sides: np.ndarray, floors: np.ndarray, width: np.ndarray, mean_width: np.ndarray,
-               narrowness: float) -> np.ndarray:
+               narrowness: float, widest: float) -> np.ndarray:
     """(K,) bool: which chokepoints part two pieces of one way (step 3 of the module doc): the chokepoint keeps at
     least ``narrowness`` of the mean walkable width of both its regions (``sides`` (K, 2), ``width`` (K,) m,
     ``mean_width`` (G,) m: area over longest extent), so it is no narrowing of either: a way as wide as its cuts
-    on average, cut only where a bay or a corner widens it for a few metres. Both regions are on one floor
-    (``floors`` (K, 2)): a flight's foot and head stay chokepoints however narrow the ground it climbs from."""
+    on average, cut only where a bay or a corner widens it for a few metres. Both regions are ways, at most
+    ``widest`` m on average (:func:`way_width`), and on one floor (``floors`` (K, 2)): a flight's foot and head stay
+    chokepoints however narrow the ground it climbs from."""
     if len(sides) == 0:
         return np.zeros(0, dtype=bool)
-    return (floors[:, 0] == floors[:, 1]) & (width >= narrowness * mean_width[sides].max(axis=1))
+    wider = mean_width[sides].max(axis=1)
+    return (floors[:, 0] == floors[:, 1]) & (width >= narrowness * wider) & (wider <= widest)
+
+
+def way_width(radius: float, narrowness: float) -> float:
+    """The widest mean walkable width of a way, m: :data:`CORRIDOR_WIDTH` agent diameters over ``narrowness``, a way
+    as wide as a corridor whose passing bays or corners (as wide again as its cuts over ``narrowness``) make rooms
+    of its pieces to the merge tree. A wider region is a yard or a court, whose openings the merge tree weighs
+    (measured: the lighthouse's causeway 4.0-4.7 m; a castle's courts 11.2-11.9 m; docs/plugins.md, "Ways and their
+    ends")."""
+    return CORRIDOR_WIDTH * 2.0 * radius / narrowness
 
 
 def _join_way_pieces(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocked: np.ndarray,
-                     clearance: Clearances, areas: np.ndarray, band: np.ndarray, wall_to_wall: float,
+                     clearance: Clearances, areas: np.ndarray, band: np.ndarray, radius: float, wall_to_wall: float,
                      params: DecompositionParams) -> np.ndarray:
     """(P,) the regions ``labels`` with the two regions of every chokepoint between pieces of one way joined
     (:func:`way_pieces`), again on the joined regions until none is left (step 3 of the module doc)."""
@@ -1335,7 +1347,8 @@ def _join_way_pieces(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocke
         sides = np.array([k["regions"] for k in kept], dtype=np.int64)
         width = np.array([k["width"] for k in kept])
         joins = way_pieces(sides, np.array([k["floors"] for k in kept], dtype=np.int64), width,
-                           mean_widths(navmesh, labels, areas)[0], params.narrowness)
+                           mean_widths(navmesh, labels, areas)[0], params.narrowness,
+                           way_width(radius, params.narrowness))
         if not joins.any():
             return labels
         labels = join_groups(labels, count, sides[joins])
@@ -1367,12 +1380,14 @@ def narrow_stub(portal: int, limit: float, inside: np.ndarray, pairs: np.ndarray
 
 
 def _way_ends(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocked: np.ndarray, clearance: Clearances,
-              areas: np.ndarray, band: np.ndarray, wall_to_wall: float, params: DecompositionParams) -> np.ndarray:
+              areas: np.ndarray, band: np.ndarray, radius: float, wall_to_wall: float,
+              params: DecompositionParams) -> np.ndarray:
     """(P,) the regions ``labels`` with every way carried on to its ends; the portals at them are set in ``blocked``
     (E,), in place (they become chokepoint candidates).
 
-    A *way* is a region with chokepoints to two regions or more, each keeping at least ``narrowness`` of its mean
-    walkable width (it is as narrow as its openings: no room behind them). Where a chokepoint lies out along the
+    A *way* is a region at most :func:`way_width` wide on average (``radius``: the agent's, m) with chokepoints to
+    two regions or more, each keeping at least ``narrowness`` of its mean walkable width (it is as narrow as its
+    openings: no room behind them). Where a chokepoint lies out along the
     way from its true end (the merge tree cut it at a bay or a corner and merged the stub beyond into the
     neighbour), the neighbour's polygons that go on as narrow as the chokepoint (clearance at most the
     chokepoint's over ``narrowness``, with a portal as narrow onward, on the chokepoint's floor: :func:`narrow_stub`)
@@ -1391,7 +1406,7 @@ def _way_ends(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocked: np.n
     both = np.concatenate([sides, sides[:, ::-1]])
     narrow_enough = np.concatenate([width, width]) >= params.narrowness * mean_width[both[:, 0]]
     neighbours = np.unique(both, axis=0)
-    way = ((np.bincount(neighbours[:, 0], minlength=count) >= 2)
+    way = ((np.bincount(neighbours[:, 0], minlength=count) >= 2) & (mean_width <= way_width(radius, params.narrowness))
            & (np.bincount(both[:, 0], weights=~narrow_enough, minlength=count) == 0))
     n = len(labels)
     csr = portals_of(pairs, n)

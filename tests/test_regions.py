@@ -765,9 +765,15 @@ def test_cuts_as_wide_as_the_way_on_both_sides_part_pieces_of_one_way():
     floors = np.array([[0, 0], [0, 0], [0, 1], [0, 0]])
     width = np.array([3.75, 3.75, 2.0, 1.5])
     mean_width = np.array([40.0, 4.2, 4.0, 2.0, 5.0])
-    assert decomposition.way_pieces(sides, floors, width, mean_width, 0.75).tolist() == [False, True, False, False]
+    widest = decomposition.way_width(0.5, 0.75)  # 5.33 m for the presets' agent
+    assert decomposition.way_pieces(sides, floors, width, mean_width, 0.75, widest).tolist() == [
+        False, True, False, False]
     # as wide as both pieces but on two floors (a flight as wide as the landing above it): stays
-    assert not decomposition.way_pieces(sides[1:2], np.array([[0, 1]]), width[1:2], mean_width, 0.75).any()
+    assert not decomposition.way_pieces(sides[1:2], np.array([[0, 1]]), width[1:2], mean_width, 0.75, widest).any()
+    # two yards 11-12 m wide on average at a 9 m opening: as wide as both, but no way: the merge tree's cut stays
+    yards = decomposition.way_pieces(np.array([[0, 1]]), np.array([[0, 0]]), np.array([9.0]), np.array([11.2, 11.9]),
+                                     0.75, widest)
+    assert not yards.any()
 
 
 def _causeway(yaw: float) -> SimpleNamespace:
