@@ -312,6 +312,13 @@ chokepoints at least 1 m apart in height): pieces of the monastery's, dam's, est
 stair at each end 0.02-0.04 (the estate's top gallery, 77 m long: 0.04), canyon ledges 0.06-0.21, tree bridges
 0.06-0.24."""
 
+WAY_ELONGATION = 10.0
+"""A way's stub is carried on to its end (:func:`_way_ends`) only when the way is at least this many times as long as
+it is wide on average (longest extent over mean walkable width): a causeway, a gallery, a long corridor, not a piece
+of a room between pillars. Measured (docs/plugins.md, "Ways and their ends"): the lighthouse's causeway 25-29, a
+gallery of the estate 32, a corridor of the bunker 52; pieces of pillared dungeon rooms whose gaps keep their mean
+width 5.2-7.3 (grown, they took chokepoints off corridors' mouths)."""
+
 EXTENT_DIRECTIONS = 8
 """Directions, evenly spread over 180 degrees, along which a region's longest extent is measured
 (:func:`longest_extents`: at least cos(90 / 8 degrees) = 98 % of its diameter)."""
@@ -1385,8 +1392,8 @@ def _way_ends(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocked: np.n
     """(P,) the regions ``labels`` with every way carried on to its ends; the portals at them are set in ``blocked``
     (E,), in place (they become chokepoint candidates).
 
-    A *way* is a region at most :func:`way_width` wide on average (``radius``: the agent's, m) with chokepoints to
-    two regions or more, each keeping at least ``narrowness`` of its mean walkable width (it is as narrow as its
+    A *way* is a region at most :func:`way_width` wide on average (``radius``: the agent's, m) and at least
+    :data:`WAY_ELONGATION` times as long as that, with chokepoints to two regions or more, each keeping at least ``narrowness`` of its mean walkable width (it is as narrow as its
     openings: no room behind them). Where a chokepoint lies out along the
     way from its true end (the merge tree cut it at a bay or a corner and merged the stub beyond into the
     neighbour), the neighbour's polygons that go on as narrow as the chokepoint (clearance at most the
@@ -1402,19 +1409,25 @@ def _way_ends(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocked: np.n
         return labels
     sides = np.array([k["regions"] for k in kept], dtype=np.int64)
     width = np.array([k["width"] for k in kept])
-    mean_width = mean_widths(navmesh, labels, areas)[0]
+    mean_width, extent = mean_widths(navmesh, labels, areas)
     both = np.concatenate([sides, sides[:, ::-1]])
     narrow_enough = np.concatenate([width, width]) >= params.narrowness * mean_width[both[:, 0]]
     neighbours = np.unique(both, axis=0)
     way = ((np.bincount(neighbours[:, 0], minlength=count) >= 2) & (mean_width <= way_width(radius, params.narrowness))
+           & (extent >= WAY_ELONGATION * mean_width)
            & (np.bincount(both[:, 0], weights=~narrow_enough, minlength=count) == 0))
     n = len(labels)
     csr = portals_of(pairs, n)
+    points = np.array([k["position"] for k in kept])
+    local = np.zeros((len(kept), 2))
+    look = np.flatnonzero(way[sides].any(axis=1))
+    local[look] = local_widths(navmesh, labels, points[look], sides[look], PINCH_REACH * (width[look] + 2.0 * radius),
+                               clearance.open_walls)  # the pinch rule's floor near a cut
     labels = labels.copy()
-    for k, (a, b) in zip(kept, sides.tolist()):
-        for w, other in ((a, b), (b, a)):
-            if not way[w] or way[other]:
-                continue
+    for k, (a, b), floor_near in zip(kept, sides.tolist(), local):
+        for w, other, beyond in ((a, b, floor_near[1]), (b, a, floor_near[0])):
+            if not way[w] or way[other] or beyond * params.narrowness > float(k["width"]):
+                continue  # no way, or the floor beyond the cut is wider than it: the way ends there
             stub = narrow_stub(int(k["portal_id"]), 0.5 * float(k["width"]) / params.narrowness, labels == other,
                                pairs, csr, clearance.polygons, clearance.portals_open, band)
             rest = np.flatnonzero(labels == other)
