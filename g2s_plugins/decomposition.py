@@ -114,16 +114,18 @@ polygons and their shared edges (portals):
    landings go and those at its foot and head stay. Landings where flights meet from several sides (a lattice of
    flights) have three chokepoints or more, or are no larger than the run: they stay regions. The project's own
    rule, set on the fifteenth round's monastery and dam (docs/plugins.md, "Stairs in one run").
-   Ways (last; :func:`way_pieces`, :func:`_way_ends`): a chokepoint between two regions on one floor that keeps at
-   least ``narrowness`` of both regions' mean walkable width parts two pieces of one way (a causeway or a platform
-   cut where a passing bay or a corner widens it for a few metres): the two join, again until none is left. A *way*
-   is then a region with chokepoints to two regions or more, each keeping at least ``narrowness`` of its mean width
-   (as narrow as its openings). Where the merge tree merged the way's last stretch into the region beyond (the
-   stretch is no wider than the way, so no room of its own), that stub, the polygons going on from the chokepoint
-   on its floor as narrow as the chokepoint over ``narrowness`` (:func:`narrow_stub`), joins the way with what of
-   the neighbour only it reaches, and the chokepoint moves to where the floor widens: at least ``min_separation``
-   on, the stub larger than what it cuts off (else it links two parts of the neighbour). The project's own rules,
-   set on the sixteenth round's lighthouse (docs/plugins.md, "Ways and their ends").
+   Ways (last; :func:`way_pieces`, :func:`_way_ends`): a *way* is a region at most :func:`way_width` wide on
+   average. A chokepoint between two ways on one floor that keeps at least ``narrowness`` of both their mean
+   walkable widths parts two pieces of one way (a causeway or a platform cut where a passing bay or a corner widens
+   it for a few metres): the two join, again until none is left. A way :data:`WAY_ELONGATION` times as long as it
+   is wide whose chokepoints, to two regions or more, each keep at least ``narrowness`` of its mean width (as narrow
+   as its openings) goes on to its ends: where the floor beyond a chokepoint is no wider than the chokepoint over
+   ``narrowness`` (:func:`local_widths`), the merge tree merged the way's last stretch into the region beyond (no
+   wider than the way, so no room of its own); that stub, the polygons going on from the chokepoint on its floor as
+   narrow (:func:`narrow_stub`), joins the way with what of the neighbour only it reaches, and the chokepoint moves
+   to where the floor widens: at least ``min_separation`` on, the stub larger than what it cuts off (else it links
+   two parts of the neighbour). The project's own rules, set on the sixteenth round's lighthouse (docs/plugins.md,
+   "Ways and their ends").
 4. Regions are the groups left (``scipy.sparse.csgraph.connected_components``
    of the merged portals, joined passages, pinches, side strips, lanes, ways round, stair runs and ways), numbered by
    their lowest polygon id.
@@ -1392,16 +1394,17 @@ def _way_ends(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocked: np.n
     """(P,) the regions ``labels`` with every way carried on to its ends; the portals at them are set in ``blocked``
     (E,), in place (they become chokepoint candidates).
 
-    A *way* is a region at most :func:`way_width` wide on average (``radius``: the agent's, m) and at least
-    :data:`WAY_ELONGATION` times as long as that, with chokepoints to two regions or more, each keeping at least ``narrowness`` of its mean walkable width (it is as narrow as its
-    openings: no room behind them). Where a chokepoint lies out along the
-    way from its true end (the merge tree cut it at a bay or a corner and merged the stub beyond into the
-    neighbour), the neighbour's polygons that go on as narrow as the chokepoint (clearance at most the
-    chokepoint's over ``narrowness``, with a portal as narrow onward, on the chokepoint's floor: :func:`narrow_stub`)
-    join the way, with whatever of the neighbour only they reach, and the chokepoint moves to the portals where the
-    floor widens; not when those lie within ``min_separation`` of it (no stub) or when what they cut off is larger
-    than the stub (a link between two parts of the neighbour, not the way's end). A neighbour that is a way itself
-    is left as it is."""
+    A *way* here is a region at most :func:`way_width` wide on average (``radius``: the agent's, m) and at least
+    :data:`WAY_ELONGATION` times as long as that, with chokepoints to two regions or more, each keeping at least
+    ``narrowness`` of its mean walkable width (it is as narrow as its openings: no room behind them). Where the
+    floor beyond one of its chokepoints (:func:`local_widths`, the pinch rule's reach) is no wider than the
+    chokepoint over ``narrowness``, the chokepoint lies out along the way from its true end (the merge tree cut it
+    at a bay or a corner and merged the stub beyond into the neighbour): the neighbour's polygons that go on as
+    narrow (clearance at most the chokepoint's over ``narrowness``, with a portal as narrow onward, on the
+    chokepoint's floor: :func:`narrow_stub`) join the way, with whatever of the neighbour only they reach, and the
+    chokepoint moves to the portals where the floor widens; not when those lie within ``min_separation`` of it (no
+    stub) or when what they cut off is larger than the stub (a link between two parts of the neighbour, not the
+    way's end). A neighbour that is a way itself is left as it is."""
     count = int(labels.max()) + 1 if len(labels) else 0
     kept = _kept_chokepoints(navmesh, labels, pairs, blocked, clearance, areas, band, wall_to_wall, params,
                              portal_ids=True)
