@@ -725,7 +725,12 @@ def _match_edges(segments: list[np.ndarray], ways: _Ways, caster: RayCaster, s: 
             ground = np.diff(_ground_at_edge(points, ways.direction[samples], caster, s))
             riser &= np.abs(ground) > s.walkable_tan * run + 1e-9
         if not riser.any():
-            residual = _fit_line(points[:, [0, 2]])[2]
+            _, plan, residual = _fit_line(points[:, [0, 2]])
+            # A line in one walkable surface is no steeper than the agent walks; a steeper fit is the height of
+            # samples on several treads seeing one floor's end (a flight's foot seen from a line of samples going
+            # down it: a vertical line, no edge at all, at 45 degrees), not the edge's: it is level in plan.
+            if abs(direction[1]) > s.walkable_tan * math.hypot(direction[0], direction[2]) + 1e-9:
+                direction = np.array([plan[0], 0.0, plan[1]])
         straight = float(np.count_nonzero(residual <= tolerance)) / len(points)
         if straight < 0.8 and not _follows(points, ways.tangent[samples], cos_match):
             return None  # the edge points fit no straight edge and no curve along the segment: a corner
@@ -748,12 +753,16 @@ def _match_edges(segments: list[np.ndarray], ways: _Ways, caster: RayCaster, s: 
                 continue
         centre, direction, straight = matched
         points = ways.edge[samples]
-        if np.dot(direction, points[-1] - points[0]) < 0:
-            direction = -direction
         nrm = _unit(ways.normal[samples].mean(axis=0))
         out = _unit(np.cross(direction, nrm))
         if np.dot(out, ways.direction[samples].sum(axis=0)) < 0:
             out = -out
+        # The edge runs from ``first`` to ``last`` the way the boundary walks (the floor on its left), as
+        # :func:`_extend` grows its ends: not in its edge points' order, which runs back where samples at a
+        # single-file line's end look out the other way (``pier_end`` on the sampling route: an end grown
+        # inwards past the other, 1.93 m of 2.2; docs/entry_exit.md, "A seventeenth round of piece kinds").
+        if np.dot(direction, np.cross(nrm, out)) < 0:
+            direction = -direction
         t = (points - centre) @ direction
         kept.append(
             _Edge(samples, centre + direction * t.min(), centre + direction * t.max(), out, nrm, min(1.0, straight))
@@ -825,11 +834,12 @@ def _onto_ground_below(points: np.ndarray, out: np.ndarray, depth: np.ndarray, c
 
     An edge found down steps (:func:`_down_steps`) lies at its samples' heights, a tread or more above the floor
     that ends there (a stair going down off the piece: 0.4 m above its foot), where the extension's candidates
-    find no floor within the climb. Probed straight down from the rays' height, half a search step inside the edge;
-    ``depth`` 0 leaves a point as it is.
+    find no floor within the climb. Probed straight down from the rays' height, half a search step inside the edge
+    (a point a little under the ground, where a line fitted through edge points on several treads runs on past
+    them, is raised onto it); ``depth`` NaN leaves a point as it is.
     """
     inset = _INSET_STEPS * s.delta
-    rows = np.flatnonzero(depth > 0.0)
+    rows = np.flatnonzero(np.isfinite(depth))
     lowered = points.copy()
     if not len(rows):
         return lowered
@@ -870,7 +880,18 @@ def _onto_floor_end(first: np.ndarray, last: np.ndarray, out: np.ndarray, caster
     return first + moved, last + moved
 
 
-def _extend(kept: list[_Edge], caster: RayCaster, s: _Settings, depth: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+def _walked_down_to(samples: np.ndarray, ways: _Ways) -> float:
+    """The height of the lowest floor the ways out of ``samples`` walked down steps to, m; NaN when none did."""
+    down = samples[ways.drop[samples] > 0.0]
+    return float(np.min(ways.edge[down, 1] - ways.drop[down])) if len(down) else math.nan
+
+
+def _above(points: np.ndarray, floor: np.ndarray) -> np.ndarray:
+    """(n,) how far (n,3) ``points`` lie above ``floor`` (n,) heights, m (0 where they lie below it); NaN where the floor is."""
+    return np.maximum(points[:, 1] - floor, 0.0)
+
+
+def _extend(kept: list[_Edge], caster: RayCaster, s: _Settings, floor: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """The ends of each opening, extended along its edge (one batched pass per test): (n,3) and (n,3).
 
     Candidates just inside the edge, beyond both ends: the surface must go on under them, the
@@ -878,8 +899,8 @@ def _extend(kept: list[_Edge], caster: RayCaster, s: _Settings, depth: np.ndarra
     above the edge and probe straight down: lifted along a floor's normal that tilts out of the piece
     (a floor sloping down out of it) they would stand ``lift * sin(slope)`` farther out, outside the
     jambs' faces from 7 degrees on, and the extension would run along the walls' outer faces.
-    ``depth`` (n,): how far below its samples each edge's floor may end, down steps (its ends are first
-    lowered onto that ground, :func:`_onto_ground_below`); 0: at its samples' level.
+    ``floor`` (n,): the height of the lowest floor each edge's ways walked down steps to, m (its ends are first
+    lowered onto the ground below them as far down as that floor, :func:`_onto_ground_below`); NaN: at its samples' level.
     """
     n = len(kept)
     out = np.array([e.outward for e in kept])
@@ -887,8 +908,11 @@ def _extend(kept: list[_Edge], caster: RayCaster, s: _Settings, depth: np.ndarra
     inset = _INSET_STEPS * s.delta  # candidates stand this far inside the edge line
     first = _onto_grazed_step(np.array([e.first for e in kept]), out, caster, s)
     last = _onto_grazed_step(np.array([e.last for e in kept]), out, caster, s)
-    first, last = _onto_floor_end(_onto_ground_below(first, out, depth, caster, s),
-                                  _onto_ground_below(last, out, depth, caster, s), out, caster, s)
+    # Each end may lie as far above that floor as the fitted line leaves it: its samples stand on several treads, and
+    # a line through their edge points climbs along the edge (``basement_stair`` at 22 degrees on the sampling route:
+    # an end 0.84 m above the foot, whose ways walked down 0.8 m at most, was left there, 1.28 m of 1.6).
+    first, last = _onto_floor_end(_onto_ground_below(first, out, _above(first, floor), caster, s),
+                                  _onto_ground_below(last, out, _above(last, floor), caster, s), out, caster, s)
     along = _unit(np.cross(nrm, out))  # walking direction along the edge (interior on the left)
     n_ext = max(1, int(math.ceil((2.0 * s.radius + s.step) / s.delta)))
     steps = s.delta * np.arange(1, n_ext + 1)
@@ -1271,8 +1295,8 @@ def _repeated(openings: list[Opening], radius: float, max_turn_deg: float, climb
     opening (the generated ``curb_platform`` turned by 5 to 60 degrees: 2 or 3 per curb gap), and
     an obstacle standing before a doorway splits its samples in two, each seeing part of the door
     (the held-out ``cluttered_room``'s pillar). A narrower opening whose midpoint lies within
-    ``radius`` of a wider one's line in plan, one of its ends or its midpoint within ``climb`` of it
-    in height, whose extent along it overlaps the wider one's and whose heading is within
+    ``radius`` of a wider one's line in plan, one of its ends or its midpoint within ``climb`` of the
+    line's height there (:func:`_along_line`), whose extent along it overlaps the wider one's and whose heading is within
     ``max_turn_deg`` of it is the same opening found again: an edge lies at its samples' heights, and
     samples on a flight's treads see the floor end at its foot within the climb below them, or down
     the steps (on the sampling route ``grand_steps``' foot: a part 0.4 m above the rest; a flight of 12
@@ -1290,28 +1314,45 @@ def _repeated(openings: list[Opening], radius: float, max_turn_deg: float, climb
     for rank, i in enumerate(order):
         if into[i] >= 0 or width[i] <= 0:
             continue
-        along = (last[i] - first[i]) / width[i]
+        span = last[i] - first[i]
         for j in order[rank + 1 :]:
             if into[j] >= 0 or np.dot(heading[i], heading[j]) < cos_turn:
                 continue
-            points = np.stack([first[j], 0.5 * (first[j] + last[j]), last[j]]) - first[i]  # its ends and middle
-            off = points - np.outer(points @ along, along)
-            lo, hi = sorted((np.dot(first[j] - first[i], along), np.dot(last[j] - first[i], along)))
-            near = math.hypot(off[1, 0], off[1, 2]) <= radius and np.abs(off[:, 1]).min() <= climb + _SAME_HEIGHT
-            if near and lo < width[i] and hi > 0.0:
+            u, plan, rise = _along_line(first[i], span, np.stack([first[j], 0.5 * (first[j] + last[j]), last[j]]))
+            near = plan[1] <= radius and np.abs(rise).min() <= climb + _SAME_HEIGHT
+            if near and min(u[0], u[2]) < 1.0 and max(u[0], u[2]) > 0.0:
                 into[j] = i
     return into
 
 
+def _along_line(start: np.ndarray, span: np.ndarray, points: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Where (k,3) ``points`` lie against the line from ``start`` over ``span`` (3,), m, read in plan and in height.
+
+    Returns (k,) the share of the span each lies along in plan (0 at ``start``, 1 at its end), (k,) its distance
+    from the line in plan, m, and (k,) its height above the line's point there, m. On a sloped line (a ramp's or a
+    stair's edge) a perpendicular in 3D leans along it: its height part is not the height over the line, nor its
+    plan part the distance in plan (docs/entry_exit.md, "A seventeenth round of piece kinds"). A line with no length
+    in plan (a riser's) is read along its span in 3D.
+    """
+    rel = points - start
+    plan_span = span * np.array([1.0, 0.0, 1.0])
+    length = float(np.dot(plan_span, plan_span))
+    reference = plan_span if length > 1e-12 else span
+    u = rel @ reference / float(np.dot(reference, reference))
+    off = rel - np.outer(u, span)
+    return u, np.hypot(off[:, 0], off[:, 2]), off[:, 1]
+
+
 def _union_ends(wide: Opening, parts: list[Opening]) -> tuple[np.ndarray, np.ndarray] | None:
-    """The ends of ``wide`` stretched along its own line over ``parts`` (openings repeating it); None when they lie within it."""
+    """The ends of ``wide`` stretched along its own line over ``parts`` (openings repeating it), each part's ends
+    read along it in plan (:func:`_along_line`); None when they lie within it."""
     p0, p1 = np.asarray(wide.p0, dtype=np.float64), np.asarray(wide.p1, dtype=np.float64)
-    along = (p1 - p0) / wide.width
-    t = [float(np.dot(np.asarray(p, dtype=np.float64) - p0, along)) for o in parts for p in (o.p0, o.p1)]
-    lo, hi = min(0.0, *t), max(wide.width, *t)
-    if lo > -1e-9 and hi < wide.width + 1e-9:
+    ends = np.array([p for o in parts for p in (o.p0, o.p1)], dtype=np.float64)
+    u = _along_line(p0, p1 - p0, ends)[0]
+    lo, hi = min(0.0, float(u.min())), max(1.0, float(u.max()))
+    if lo > -1e-9 / wide.width and hi < 1.0 + 1e-9 / wide.width:
         return None
-    return p0 + along * lo, p0 + along * hi
+    return p0 + (p1 - p0) * lo, p0 + (p1 - p0) * hi
 
 
 def detect_openings(
@@ -1356,7 +1397,7 @@ def detect_openings(
     if not kept:
         return Detection((), (), ())
     # How far down steps the edges' samples found the floor ending (the deepest; 0 for a floor's own level).
-    p_first, p_last = _extend(kept, caster, s, np.array([ways.drop[e.samples].max() for e in kept]))
+    p_first, p_last = _extend(kept, caster, s, np.array([_walked_down_to(e.samples, ways) for e in kept]))
 
     corners = np.asarray(mesh.triangles, dtype=np.float64)
     frame = piece_frame(mesh)
