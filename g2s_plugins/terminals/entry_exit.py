@@ -23,7 +23,8 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
    the surface within the climb of the ground the one before it stood on, so
    the search walks down a stair; on a sampled surface, whose boundary stands
    farther inside the floor, a sample finding no way out looks again up to
-   the sampling builder's clearance plus 1.5 spacings, :func:`sampled_edge_search`). A direction
+   the sampling builder's clearance plus 1.5 spacings, :func:`sampled_edge_search`,
+   from probes cast once as far as that for both looks). A direction
    is a way out when the edge is found, the ray along it stays clear for
    ``outward_radii * r`` (no wall, jamb or curb higher than ``h`` in the
    way), the same way a search step below the agent's height is clear up to
@@ -48,18 +49,23 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
    boundary's direction within ``match_angle_deg`` (a curved edge); a
    segment that fits neither is fitted again without the samples at its ends
    whose way out lies more than ``max_turn_deg`` from its median one (a
-   segment that walked round a corner onto the edge). An edge is cut where
+   segment that walked round a corner onto the edge); a line over one surface
+   fitted steeper than the agent walks runs through edge points on several
+   treads, and is taken level in plan. An edge runs the way its boundary
+   walks. An edge is cut where
    something stands on it between two free stretches (a pier between two
    doorways the samples saw out through alike), and its ends are raised onto
    a step top just inside them (a riser as high as the rays, which they pass
    over), or, where its samples walked down steps to it, lowered onto the
-   floor that ends there. The
+   floor that ends there (as far down as the lowest floor its ways walked
+   down to). The
    opening lies on that line; its ends are extended along the edge while the
    surface goes on inside the edge, ends just outside it, and nothing stands
    in the way or straight out: this undoes the retreat from walls. An
    opening overlapping a wider one along the same line, facing the same way,
    is the same opening found twice (its middle within ``r`` of the wider one's line in plan, an end or its
-   middle within the climb of it in height): the wider one is stretched along its line
+   middle within the climb of the line's height there, read in plan and height on a sloped line too): the wider
+   one is stretched along its line
    to span both and the other dropped, again until none overlaps a wider one.
 6. Priors, each measured on the generated pieces of
    :mod:`g2s_plugins.samples.pieces` (docs/entry_exit.md):
@@ -132,7 +138,8 @@ each sample, and per sample and fan direction one outward ray, at most
 r) / 4) and 4 bisection rays to find the surface's end, (agent height -
 climb) / d across the way for the directions clear so far, two more beyond it
 with ``leave_footprint``: O(S k (edge_search_radii r + agent height) / d) rays (up to twice
-that with ``step_up``, for the samples searched again from a step's top).
+that with ``step_up``, for the samples searched again from a step's top; on a sampled surface the probes reach
+the second look's distance instead, and the tests after them are cast again for the samples it answers).
 The main floor adds a k-d tree over boundary samples r / 4 apart, the
 repeated openings an O(o^2) comparison, the openings between jambs O(F) each
 over the mesh's F triangles, the terminals a k-d tree query each.
@@ -404,22 +411,29 @@ def _snap(
 
 
 def _surface_ends(
-    caster: RayCaster, origins: np.ndarray, directions: np.ndarray, down: np.ndarray, s: _Settings, reach: float
-) -> tuple[np.ndarray, np.ndarray]:
-    """(n,) distance along each direction where the surface under the lifted origins ends (NaN: not within
-    ``reach``, m), and (n,) how far below the origin's ground the surface ends there, m, where the way went
-    down steps (:func:`_down_steps`), else 0.
+    caster: RayCaster, origins: np.ndarray, directions: np.ndarray, down: np.ndarray, s: _Settings,
+    reaches: tuple[float, ...],
+) -> list[tuple[np.ndarray, np.ndarray]]:
+    """Per reach of ``reaches`` (m): (n,) distance along each direction where the surface under the lifted origins
+    ends (NaN: not within that reach, m), and (n,) how far below the origin's ground the surface ends there, m, where
+    the way went down steps (:func:`_down_steps`), else 0.
+
+    The probes are cast once, as far as the farthest reach; each reach reads the first of them (a probe's answer
+    and the walk down steps up to it depend on the probes before it alone), as a search that far and no farther
+    would: its last probe finding no surface is an end (no farther probe shows it a crack).
 
     Only faces the agent can walk count as surface: on a floor sloping down out of the piece the probes,
     cast along its tilted normal, would otherwise meet the slab's own end face below the floor's edge
     and put the edge beyond it (by ``lift * tan(slope)``: 0.05 m at 15 degrees)."""
+    reach = max(reaches)
     if not (steps := reach / s.delta) <= _MAX_PROBE_RAYS:  # a batch could not hold one sample's probes
         raise PluginError(f"terminals.params.edge_search_radii: looking {reach:.4g} m beyond the boundary in steps of "
                           f"{s.delta:.4g} m makes {steps:.3g} probes a sample, more than {_MAX_PROBE_RAYS:,}; use a smaller one")
     n_off = max(1, int(math.ceil(steps)))
+    counts = [max(1, int(math.ceil(r / s.delta))) for r in reaches]  # each reach's probes
     offsets = s.delta * np.arange(1, n_off + 1)
-    lo = np.full(len(origins), np.nan)
-    drop = np.zeros(len(origins))  # how far the ground stood on last lies below the origin's, down a stair only
+    lo = np.full((len(reaches), len(origins)), np.nan)
+    drop = np.zeros((len(reaches), len(origins)))  # how far the ground stood on last lies below the origin's, down a stair only
     batch = max(1, _MAX_PROBE_RAYS // n_off)
     for begin in range(0, len(origins), batch):
         part = slice(begin, begin + batch)
@@ -441,24 +455,37 @@ def _surface_ends(
         # whatever lies under the crack (a floor below a catwalk's slot)
         distance = hits.distance.copy()
         distance[rows[across]], walkable[rows[across]] = beside[across], True
-        missing = missing.reshape(-1, n_off)
-        missing, before = _down_steps(missing, distance.reshape(-1, n_off) - s.lift, walkable.reshape(-1, n_off), s.climb)
-        # The surface ends where two probes in a row find none: a crack narrower than a search step
-        # (unwelded floor tiles) is no edge, and neither the agent nor Recast's voxels see it.
-        missing[:, :-1] &= missing[:, 1:]
-        end = np.argmax(missing, axis=1)
-        lo[part] = np.where(missing.any(axis=1), end * s.delta, np.nan)
-        drop[part] = before[np.arange(len(end)), end]
-    hi = lo + s.delta
-    rows = np.nonzero(np.isfinite(lo))[0]
-    for _ in range(_REFINE_ROUNDS):  # bisection between the last offset with surface and the first without
-        mid = 0.5 * (lo[rows] + hi[rows])
-        probe = origins[rows] + directions[rows] * mid[:, None]
-        hit = caster.first_hits(probe, down[rows])
-        on = (hit.distance <= s.lift + s.climb + drop[rows]) & _walkable(caster, hit.face, s)
-        lo[rows] = np.where(on, mid, lo[rows])
-        hi[rows] = np.where(on, hi[rows], mid)
-    return 0.5 * (lo + hi), np.where(np.isfinite(lo), drop, 0.0)
+        missing, depth, walkable = missing.reshape(-1, n_off), distance.reshape(-1, n_off) - s.lift, walkable.reshape(-1, n_off)
+        for r, count in enumerate(counts):
+            ends, before = _down_steps(missing[:, :count], depth[:, :count], walkable[:, :count], s.climb)
+            # The surface ends where two probes in a row find none: a crack narrower than a search step
+            # (unwelded floor tiles) is no edge, and neither the agent nor Recast's voxels see it.
+            ends[:, :-1] &= ends[:, 1:]
+            end = np.argmax(ends, axis=1)
+            lo[r, part] = np.where(ends.any(axis=1), end * s.delta, np.nan)
+            drop[r, part] = before[np.arange(len(end)), end]
+    results: list[tuple[np.ndarray, np.ndarray]] = []
+    for r in range(len(reaches)):
+        edge = np.full(len(origins), np.nan)
+        rows = np.nonzero(np.isfinite(lo[r]))[0]
+        # a nearer reach's end, from the same probe and the same ground, is bisected alike: read it again
+        same = np.zeros(len(rows), dtype=bool)
+        for q in range(r):
+            again = (lo[q, rows] == lo[r, rows]) & (drop[q, rows] == drop[r, rows]) & ~same
+            edge[rows[again]] = results[q][0][rows[again]]
+            same |= again
+        rows = rows[~same]
+        low, high = lo[r, rows], lo[r, rows] + s.delta
+        for _ in range(_REFINE_ROUNDS):  # bisection between the last offset with surface and the first without
+            mid = 0.5 * (low + high)
+            probe = origins[rows] + directions[rows] * mid[:, None]
+            hit = caster.first_hits(probe, down[rows])
+            on = (hit.distance <= s.lift + s.climb + drop[r, rows]) & _walkable(caster, hit.face, s)
+            low = np.where(on, mid, low)
+            high = np.where(on, high, mid)
+        edge[rows] = 0.5 * (low + high)
+        results.append((edge, np.where(np.isfinite(lo[r]), drop[r], 0.0)))
+    return results
 
 
 def _down_steps(
@@ -493,12 +520,13 @@ def _down_steps(
 
 def _fan(
     base: np.ndarray, normal: np.ndarray, tangent: np.ndarray, caster: RayCaster, s: _Settings, params: Params,
-    reach: float,
+    reaches: tuple[float, ...],
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-    """The way out of each point of ``base`` (step 3), the surface's end looked for up to ``reach`` m along each
-    direction: (M,) found, (M,3) direction, (M,) distance to the edge, (M,) how far below the point's ground the
-    surface ends there (down steps, else 0), and (M,) bool: some direction reaches the surface's end clear but
-    for the piece lying below beyond it (a drop into the piece)."""
+    """The way out of each point of ``base`` (step 3), the surface's end looked for up to the first of ``reaches``
+    (m) along each direction, and for a point with none, up to the next: (M,) found, (M,3) direction, (M,) distance
+    to the edge, (M,) how far below the point's ground the surface ends there (down steps, else 0), and (M,) bool:
+    some direction of a look the point took reaches the surface's end clear but for the piece lying below beyond
+    it (a drop into the piece)."""
     outward = np.cross(tangent, normal)  # the walkable side is on the left of the tangent
     m, k = len(base), int(params.fan_count)
     half = math.radians(float(params.fan_half_angle_deg))
@@ -508,45 +536,55 @@ def _fan(
     lifted = np.repeat(base + normal * s.lift, k, axis=0)
     down = np.repeat(-normal, k, axis=0)
     clear = caster.first_hits(lifted, dirs).distance > float(params.outward_radii) * s.radius
-    edge, drop = np.full(m * k, np.nan), np.zeros(m * k)
     todo = np.nonzero(clear)[0]
-    edge[todo], drop[todo] = _surface_ends(caster, lifted[todo], dirs[todo], down[todo], s, reach)
-    ok = np.isfinite(edge)
-    if ok.any():
-        # Head room: the rays at ``lift`` pass under a lintel lower than the agent (a window at floor
-        # level, a vent); the same way at ``head`` must be clear up to the edge.
-        rows = np.nonzero(ok)[0]
-        head = np.repeat(base + normal * s.head, k, axis=0)[rows]
-        ok[rows[caster.first_hits(head, dirs[rows]).distance <= edge[rows]]] = False
+    looks = _surface_ends(caster, lifted[todo], dirs[todo], down[todo], s, reaches)
+    found, chosen = np.zeros(m, dtype=bool), np.arange(m) * k
+    edge_of, drop_of = np.zeros(m), np.zeros(m)
+    into_piece = np.zeros(m, dtype=bool)
     heights = np.arange(s.climb + s.delta / 4.0, s.head, s.delta / 2.0)  # none when the agent climbs its height
-    if ok.any() and len(heights):
-        # Bars across the way (a railing's rails between its posts) pass between the rays at ``lift`` and
-        # the head-room ray: the way must be clear at every half search step of height from the climb up to
-        # the head-room ray until the agent's body is past the edge, one radius beyond it (a rope 0.04 m thick
-        # passed between rays a whole step apart: docs/entry_exit.md, "A sixteenth round of piece kinds").
-        rows = np.nonzero(ok)[0]
-        start = np.repeat(base, k, axis=0)[rows]
-        up = np.repeat(normal, k, axis=0)[rows]
-        origins = (start[None, :, :] + heights[:, None, None] * up[None, :, :]).reshape(-1, 3)
-        hits = caster.first_hits(origins, np.tile(dirs[rows], (len(heights), 1))).distance
-        barred = (hits.reshape(len(heights), -1) <= (edge[rows] + s.radius)[None, :]).any(axis=0)
-        ok[rows[barred]] = False
-    into_piece = np.zeros(m * k, dtype=bool)
-    if params.leave_footprint and ok.any():
-        rows = np.nonzero(ok)[0]
-        beyond = lifted[rows] + dirs[rows] * (edge[rows] + s.radius)[:, None]
-        below = caster.first_hits(beyond, -UP).distance
-        above = caster.first_hits(beyond, UP).distance
-        into_piece[rows[np.isfinite(below)]] = True
-        # Above, only what the agent could not stand under blocks the way (the head-room rule): eaves do not.
-        ok[rows[np.isfinite(below) | (above < s.head)]] = False
-    # The soonest way out; among equals, the one closest to straight out.
-    cost = np.where(ok, edge, np.inf).reshape(m, k) + 1e-6 * np.abs(theta)[None, :]
-    pick = np.argmin(cost, axis=1)
-    found = np.isfinite(cost[np.arange(m), pick])
-    chosen = np.arange(m) * k + pick
-    return (found, dirs[chosen], np.nan_to_num(edge[chosen]), np.where(found, drop[chosen], 0.0),
-            into_piece.reshape(m, k).any(axis=1))
+    for look_edge, look_drop in looks:
+        looking = np.repeat(~found, k)  # the directions of the points with no way out yet
+        edge, drop = np.full(m * k, np.nan), np.zeros(m * k)
+        edge[todo], drop[todo] = look_edge, look_drop
+        ok = np.isfinite(edge) & looking
+        if ok.any():
+            # Head room: the rays at ``lift`` pass under a lintel lower than the agent (a window at floor
+            # level, a vent); the same way at ``head`` must be clear up to the edge.
+            rows = np.nonzero(ok)[0]
+            head = np.repeat(base + normal * s.head, k, axis=0)[rows]
+            ok[rows[caster.first_hits(head, dirs[rows]).distance <= edge[rows]]] = False
+        if ok.any() and len(heights):
+            # Bars across the way (a railing's rails between its posts) pass between the rays at ``lift`` and
+            # the head-room ray: the way must be clear at every half search step of height from the climb up to
+            # the head-room ray until the agent's body is past the edge, one radius beyond it (a rope 0.04 m thick
+            # passed between rays a whole step apart: docs/entry_exit.md, "A sixteenth round of piece kinds").
+            rows = np.nonzero(ok)[0]
+            start = np.repeat(base, k, axis=0)[rows]
+            up = np.repeat(normal, k, axis=0)[rows]
+            origins = (start[None, :, :] + heights[:, None, None] * up[None, :, :]).reshape(-1, 3)
+            hits = caster.first_hits(origins, np.tile(dirs[rows], (len(heights), 1))).distance
+            barred = (hits.reshape(len(heights), -1) <= (edge[rows] + s.radius)[None, :]).any(axis=0)
+            ok[rows[barred]] = False
+        if params.leave_footprint and ok.any():
+            rows = np.nonzero(ok)[0]
+            beyond = lifted[rows] + dirs[rows] * (edge[rows] + s.radius)[:, None]
+            below = caster.first_hits(beyond, -UP).distance
+            above = caster.first_hits(beyond, UP).distance
+            into = np.zeros(m * k, dtype=bool)
+            into[rows[np.isfinite(below)]] = True
+            into_piece |= into.reshape(m, k).any(axis=1)
+            # Above, only what the agent could not stand under blocks the way (the head-room rule): eaves do not.
+            ok[rows[np.isfinite(below) | (above < s.head)]] = False
+        # The soonest way out; among equals, the one closest to straight out. A point with none keeps its first
+        # direction and how far that look found the surface going along it (0: not within its reach).
+        cost = np.where(ok, edge, np.inf).reshape(m, k) + 1e-6 * np.abs(theta)[None, :]
+        pick = np.argmin(cost, axis=1)
+        now = np.isfinite(cost[np.arange(m), pick])
+        edge_of[~found] = np.nan_to_num(edge[np.flatnonzero(~found) * k])
+        picked = np.arange(m)[now] * k + pick[now]
+        chosen[now], edge_of[now], drop_of[now] = picked, edge[picked], drop[picked]
+        found |= now
+    return found, dirs[chosen], edge_of, drop_of, into_piece
 
 
 def _step_tops(
@@ -581,14 +619,10 @@ def _ways_out(
 ) -> _Ways:
     base, normal = _snap(samples, polygon_normals, caster, s)
     tangent = _unit(samples.tangent - np.einsum("ij,ij->i", samples.tangent, normal)[:, None] * normal)
-    found, direction, reach, drop, into_piece = _fan(base, normal, tangent, caster, s, params, s.search)
-    if s.farther > s.search and not found.all():
-        # A sampled surface's boundary stands farther inside the floor than a navmesh's: a sample that finds no
-        # way out within the navmesh route's reach looks again as far as the sampling allows.
-        rows = np.nonzero(~found)[0]
-        far = _fan(base[rows], normal[rows], tangent[rows], caster, s, params, s.farther)
-        found[rows], direction[rows], reach[rows], drop[rows] = far[:4]
-        into_piece[rows] |= far[4]
+    # A sampled surface's boundary stands farther inside the floor than a navmesh's: a sample that finds no way out
+    # within the navmesh route's reach looks again as far as the sampling allows.
+    reaches = (s.search, s.farther) if s.farther > s.search else (s.search,)
+    found, direction, reach, drop, into_piece = _fan(base, normal, tangent, caster, s, params, reaches)
     stepped = np.zeros(len(base), dtype=bool)
     if params.step_up:
         rows = np.nonzero(~found)[0]
@@ -596,7 +630,7 @@ def _ways_out(
         rows, top = rows[near], top[near]
         if len(rows):
             up_found, up_direction, up_reach, up_drop, _ = _fan(top, normal[rows], tangent[rows], caster, s, params,
-                                                                s.search)
+                                                                (s.search,))
             rows, top = rows[up_found], top[up_found]
             base[rows], found[rows], stepped[rows] = top, True, True
             direction[rows], reach[rows], drop[rows] = up_direction[up_found], up_reach[up_found], up_drop[up_found]
