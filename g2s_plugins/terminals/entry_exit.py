@@ -433,7 +433,8 @@ def _surface_ends(
     counts = [max(1, int(math.ceil(r / s.delta))) for r in reaches]  # each reach's probes
     offsets = s.delta * np.arange(1, n_off + 1)
     lo = np.full((len(reaches), len(origins)), np.nan)
-    drop = np.zeros((len(reaches), len(origins)))  # how far the ground stood on last lies below the origin's, down a stair only
+    # how far the ground stood on last lies below the origin's, down a stair only
+    drop = np.zeros((len(reaches), len(origins)))
     batch = max(1, _MAX_PROBE_RAYS // n_off)
     for begin in range(0, len(origins), batch):
         part = slice(begin, begin + batch)
@@ -455,7 +456,8 @@ def _surface_ends(
         # whatever lies under the crack (a floor below a catwalk's slot)
         distance = hits.distance.copy()
         distance[rows[across]], walkable[rows[across]] = beside[across], True
-        missing, depth, walkable = missing.reshape(-1, n_off), distance.reshape(-1, n_off) - s.lift, walkable.reshape(-1, n_off)
+        missing, walkable = missing.reshape(-1, n_off), walkable.reshape(-1, n_off)
+        depth = distance.reshape(-1, n_off) - s.lift
         for r, count in enumerate(counts):
             ends, before = _down_steps(missing[:, :count], depth[:, :count], walkable[:, :count], s.climb)
             # The surface ends where two probes in a row find none: a crack narrower than a search step
@@ -926,7 +928,8 @@ def _walked_down_to(samples: np.ndarray, ways: _Ways) -> float:
 
 
 def _above(points: np.ndarray, floor: np.ndarray) -> np.ndarray:
-    """(n,) how far (n,3) ``points`` lie above ``floor`` (n,) heights, m (0 where they lie below it); NaN where the floor is."""
+    """(n,) how far (n,3) ``points`` lie above ``floor`` (n,) heights, m (0 where they lie below it); NaN where the
+    floor is."""
     return np.maximum(points[:, 1] - floor, 0.0)
 
 
@@ -939,7 +942,8 @@ def _extend(kept: list[_Edge], caster: RayCaster, s: _Settings, floor: np.ndarra
     (a floor sloping down out of it) they would stand ``lift * sin(slope)`` farther out, outside the
     jambs' faces from 7 degrees on, and the extension would run along the walls' outer faces.
     ``floor`` (n,): the height of the lowest floor each edge's ways walked down steps to, m (its ends are first
-    lowered onto the ground below them as far down as that floor, :func:`_onto_ground_below`); NaN: at its samples' level.
+    lowered onto the ground below them as far down as that floor, :func:`_onto_ground_below`); NaN: at its samples'
+    level.
     """
     n = len(kept)
     out = np.array([e.outward for e in kept])
