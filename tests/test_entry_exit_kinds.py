@@ -754,14 +754,3 @@ def test_a_vault_coming_down_lower_than_the_agent_narrows_the_ends(yaw: float) -
     level = pieces.turned(level, yaw) if yaw else level
     widths = sorted(o.width for o in _detect(level.mesh).openings)
     assert len(widths) == 2 and widths == pytest.approx([2.01, 2.01], abs=0.05)  # the vault 1.95 m high, the rays'
-
-
-@pytest.mark.parametrize("height, yaw", [(0.3, 0.0), (0.38, 22.0), (0.3, 45.0)])
-def test_a_strip_the_agent_steps_onto_leaves_each_end_whole(height: float, yaw: float) -> None:
-    # A strip 0.6 m wide down a corridor's middle, out through both ends, within the climb (0.4 m): the candidates
-    # along the end at the rays' height (0.2 m) met its end face and cut each end in two at it, as at a pier
-    # (0.87-0.90 m halves), and the passage's rays from the end's middle, starting under its top, measured 0.6 m.
-    level = benchmark("piece_kinds17").median_strip_corridor(height)
-    level = pieces.turned(level, yaw) if yaw else level
-    found = _detect(level.mesh).openings
-    assert len(found) == 2 and [o.width for o in found] == pytest.approx([2.4, 2.4], abs=0.05)

@@ -260,9 +260,3 @@ def test_a_flights_foot_seen_from_a_line_down_it_measures_the_flight(riser: floa
     found, known, _, terminals = _openings(pieces.turned(level, yaw) if yaw else level)
     assert len(found) == 2 and pieces.match_openings(found, known) == (2, 2)
     assert all(o.width == pytest.approx(1.6, abs=0.05) for o in terminals.openings)
-
-
-def test_a_strip_higher_than_the_climb_still_cuts_each_end_in_two() -> None:
-    # The pier test at one search step above the climb too: a strip 0.45 m high (the climb is 0.4 m) is no step.
-    found, known, _, terminals = _openings(benchmark("piece_kinds17").median_strip_corridor(0.45))
-    assert len(found) == 4 and all(o.width == pytest.approx(0.9, abs=0.05) for o in terminals.openings)

@@ -813,8 +813,7 @@ def _split_at_piers(kept: list[_Edge], ways: _Ways, caster: RayCaster, s: _Setti
     Recast's grid keeps or closes with its phase), and then the samples along the wall inside see out
     through two neighbouring doorways alike: one segment, one edge spanning both and the pier between,
     whose middle stands in the pier. Candidates every search step along the edge, where
-    :func:`_extend`'s stand (half a step inside the edge line, ``lift`` up; over a step top there, ``lift``
-    above it, :func:`_onto_grazed_step`), are blocked when the way
+    :func:`_extend`'s stand (half a step inside the edge line, ``lift`` up), are blocked when the way
     straight out meets something within ``r``; a blocked run with free candidates on both sides cuts
     the edge, and each part keeps the samples whose edge points lie along it (at least two). Blocked
     runs at the ends (jambs) only end the edge, as before. O(edge length / search step) rays per edge.
@@ -829,12 +828,8 @@ def _split_at_piers(kept: list[_Edge], ways: _Ways, caster: RayCaster, s: _Setti
             continue
         along = (e.last - e.first) / length
         t = s.delta * np.arange(n)
-        outward = np.tile(e.outward, (n, 1))
-        # Each candidate stands on a step top just inside the edge where one rises there (a strip down a corridor's
-        # middle, 0.3 m high, out through its end, which the agent steps onto): from the line's height it would
-        # stand inside the step and meet its end face, as in a pier.
-        points = _onto_grazed_step(e.first + along * t[:, None], outward, caster, s) - outward * inset + UP * s.lift
-        blocked = caster.first_hits(points, outward).distance <= s.radius + inset
+        points = e.first + along * t[:, None] - e.outward * inset + UP * s.lift
+        blocked = caster.first_hits(points, np.tile(e.outward, (n, 1))).distance <= s.radius + inset
         free = np.flatnonzero(~blocked)
         if len(free) < 2 or not blocked[free[0]: free[-1] + 1].any():
             out.append(e)
@@ -991,8 +986,7 @@ def _passages(
     step above the climb (over what the agent steps onto, such as a low slab of rubble, and not
     stopped by ground it walks onto) and at the head-room rays' height: a leaf or a chunk standing in
     the passage, or a sign hanging into it lower than the agent, leaves its free part. Returns (n,)
-    the narrowest width at the rays' height (or one search step above the climb, where wider there), m, and (n,)
-    (n,) how far the narrowest free part above
+    the narrowest width at the rays' height, m, and (n,) (n,) how far the narrowest free part above
     the climb reaches from the middle towards ``first`` and towards ``last`` (along the edge, m;
     infinite where nothing stands).
     """
@@ -1014,10 +1008,7 @@ def _passages(
         hits_ahead, hits_back = caster.first_hits(points, directions), caster.first_hits(points, -directions)
         m = len(rows)
         low, high, head = slice(0, m), slice(m, 2 * m), slice(2 * m, None)
-        # Bars or a grille stand above the climb too; what narrows the way below it alone is stepped onto (a strip
-        # down a corridor's middle, out through its end, whose top the rays from the end's middle start under).
-        widths[rows] = np.minimum(widths[rows], np.maximum(hits_ahead.distance[low] + hits_back.distance[low],
-                                                           hits_ahead.distance[high] + hits_back.distance[high]))
+        widths[rows] = np.minimum(widths[rows], hits_ahead.distance[low] + hits_back.distance[low])
         # Above the climb, ground the agent walks onto (a terrain rising beside its border) is in no one's way, at
         # either height; at the head-room rays' height, what hangs into the passage lower than the agent is (a sign
         # over part of it, a vault coming down at its sides).
