@@ -134,9 +134,9 @@ proof and measurement of association between two things", American Journal
 of Psychology 15:72-101, 1904), so a dead end whose nodes' percentiles p_i
 (0-100) take their entrance's p_e instead adds about
 6 sum((p_e - p_i) / 100)² / n to the loss of rho. After the cover (and
-``quiet_step``), the dents whose entrance the cover holds and whose dead end
-lies within ``radius`` of it are dropped cheapest first (ties: lowest row)
-while their summed estimated loss stays within ``dent_rho_budget``
+``quiet_step``), the dents the cover holds within ``radius`` without them
+(:func:`dent_costs`) are dropped cheapest first (ties: lowest row) while
+their summed estimated loss stays within ``dent_rho_budget``
 (:func:`dents_within_budget`); as with ``quiet_step`` no path is needed.
 Measured in docs/analysis_quality.md ("Dents between posts and corners").
 ``0`` (the default) keeps every dent, unchanged.
@@ -147,8 +147,9 @@ the nodes that path brings closer (in practice the area around it); with
 for k = 256 sources, unless the run's ``flow`` analyzer already needs it;
 with ``recess_depth`` > 0, one more multi-source Dijkstra, limited to
 ``radius``; with ``quiet_step`` > 0, the walking flow (once, as above)
-and a walk up each leaf's chain; with ``dent_rho_budget`` > 0, those and a
-sort of the k dents, O(k c nvp + k log k).
+and a walk up each leaf's chain; with ``dent_rho_budget`` > 0, those, two
+multi-source Dijkstras and a sort of the k dents, O(k c nvp + m + n log n +
+k log k).
 """
 
 from __future__ import annotations
@@ -195,7 +196,7 @@ class Params(PluginParams):
     recess_row: int = Field(3, ge=2, description="the fewest recesses that are a row (recess_depth)")
     quiet_step: float = Field(0.0, ge=0, description="a leaf whose dead end (it and the chain of degree-2 nodes behind it) is less than this many walking-flow percentile points quieter than the node it opens onto, which the cover holds within the cover radius, is no terminal; 0: every leaf")
     dent_depth: float = Field(0.0, ge=0, description="a leaf whose dead end (it and the chain of degree-2 nodes behind it) lies within this many metres of its way in is a dent, which dent_rho_budget may drop; 0: no dents; leaves without a polygon (the sampling route) are no dent")
-    dent_rho_budget: float = Field(0.0, ge=0, le=1, description="dents whose way in the cover holds within the cover radius are no terminal, least first by the Spearman rho their heat map would lose taking their way in's walking-flow percentile, while that estimated loss summed stays within this; 0: every dent")
+    dent_rho_budget: float = Field(0.0, ge=0, le=1, description="dents the cover holds within the cover radius without them are no terminal, least first by the Spearman rho their heat map would lose taking their way in's walking-flow percentile, while that estimated loss summed stays within this; 0: every dent")
 
 
 def default_radius(context: RunContext) -> float:
@@ -382,8 +383,8 @@ def dents_within_budget(graph: nx.Graph, navmesh: NavMesh | None, arrays: traffi
 
     The dents and their costs are :func:`dent_costs`'; they go in ascending
     order of cost (ties: lowest row) while the costs summed stay within
-    ``budget`` (an estimated loss of Spearman rho). O(k c nvp + k log k) for
-    k leaves with chains of c nodes.
+    ``budget`` (an estimated loss of Spearman rho). O(k c nvp + m + n log n +
+    k log k) for k leaves with chains of c nodes.
     """
     dents, costs = dent_costs(graph, navmesh, arrays, leaves, rank, depth, cover, reach)
     order = np.lexsort((dents, costs))
@@ -397,27 +398,41 @@ def dent_costs(graph: nx.Graph, navmesh: NavMesh | None, arrays: traffic.Surface
 
     ``rank``: (n,) walking-flow percentiles, 0-100 (:func:`walking_percentile`).
     A leaf is a dent when its dead end lies within ``depth`` metres of its
-    way in (:func:`dead_end_depths`); the cover holds it without the leaf
-    when it holds the entrance (a node of degree 3 or more) and the dead end
-    lies within ``reach`` metres of it along the graph, as in
-    :func:`quiet_dead_ends`. Left out, the dead end's nodes take the
-    percentile p_e of their entrance instead of their own p_i: with
-    Spearman's rho = 1 - 6 sum(d²) / (n (n² - 1)) and rank differences
-    d = n (p_e - p_i) / 100, the cost is about 6 sum(((p_e - p_i) / 100)²) / n.
-    Without ``navmesh`` there are no dents. O(k c nvp) for chains of c nodes.
+    way in (:func:`dead_end_depths`) and opens onto a node of degree 3 or
+    more, its entrance. The cover holds a dent without it when every node
+    whose nearest row of ``cover`` is the dent's leaf (its cell) lies within
+    ``reach`` metres of the cover less every dent: then whichever dents go,
+    a node of a dropped one's cell is still within ``reach``, and every other
+    node keeps its nearest row. Left out, the dead end's nodes (the leaf and
+    its chain) take the percentile p_e of their entrance instead of their own
+    p_i: with Spearman's rho = 1 - 6 sum(d²) / (n (n² - 1)) and rank
+    differences d = n (p_e - p_i) / 100, the cost is about
+    6 sum(((p_e - p_i) / 100)²) / n. Without ``navmesh`` there are no dents.
+    O(k c nvp + m + n log n) for k leaves with chains of c nodes: two
+    multi-source Dijkstras.
     """
     leaves = np.sort(leaves)
+    none = np.zeros(0, dtype=np.int64), np.zeros(0)
     if navmesh is None or len(leaves) == 0:
-        return np.zeros(0, dtype=np.int64), np.zeros(0)
-    depths, _ = dead_end_depths(graph, navmesh, arrays, leaves)
+        return none
+    depths, entrances = dead_end_depths(graph, navmesh, arrays, leaves)
     degree = np.diff(arrays.adjacency.indptr)
-    held = np.zeros(arrays.n, dtype=bool)
-    held[cover] = True
+    shallow = (depths <= depth) & (entrances >= 0)
+    shallow[shallow] = degree[entrances[shallow]] >= 3
+    candidates, entrances = leaves[shallow], entrances[shallow]
+    rest = np.setdiff1d(cover, candidates)
+    if len(candidates) == 0 or len(rest) == 0:
+        return none
+    _, _, nearest = csgraph.dijkstra(arrays.adjacency, directed=False, indices=cover, min_only=True,
+                                     return_predecessors=True)
+    to_rest = csgraph.dijkstra(arrays.adjacency, directed=False, indices=rest, min_only=True)
+    farthest = np.full(arrays.n, -np.inf)  # per cover row: its cell's farthest node from the cover less the dents
+    reached = nearest >= 0
+    np.maximum.at(farthest, nearest[reached], to_rest[reached])
     dents, costs = [], []
-    for leaf in leaves[depths <= depth].tolist():
-        chain, entrance = dead_end_chain(arrays.adjacency, leaf)
-        if (entrance >= 0 and degree[entrance] >= 3 and held[entrance]
-                and arrays.adjacency[chain, chain[1:] + [entrance]].sum() <= reach):
+    for leaf, entrance in zip(candidates.tolist(), entrances.tolist(), strict=True):
+        if farthest[leaf] <= reach:
+            chain, _ = dead_end_chain(arrays.adjacency, leaf)
             dents.append(leaf)
             costs.append(6.0 * float(np.sum(((rank[entrance] - rank[chain]) / 100.0) ** 2)) / arrays.n)
     return np.asarray(dents, dtype=np.int64), np.asarray(costs, dtype=np.float64)
