@@ -127,14 +127,15 @@ behind it) lies within ``dent_depth`` metres of its way in
 (:func:`dead_end_depths`): the bay between two bollards along a towpath, a
 corner of a parterre's bed, a bay behind a pillar. Its leaf costs a node of
 structure, and what it buys is rank: without it the dead end takes the heat
-of the node at its entrance, up to 60-70 percentile points too high for a
-dent nobody walks through. Spearman's rho over n polygons is
+of a node on the walkway it opens onto, up to 60-70 percentile points too
+high for a dent nobody walks through. Spearman's rho over n polygons is
 1 - 6 sum(d²) / (n (n² - 1)) for rank differences d (C. Spearman, "The
 proof and measurement of association between two things", American Journal
 of Psychology 15:72-101, 1904), so a dead end whose nodes' percentiles p_i
-(0-100) take their entrance's p_e instead adds about
-6 sum((p_e - p_i) / 100)² / n to the loss of rho. After the cover (and
-``quiet_step``), the dents the cover holds within ``radius`` without them
+(0-100) take the percentile p_s of the terminal nearest its entrance
+instead (and so do the nodes of the path between them, which the leaf's
+spur brings in) adds about 6 sum((p_s - p_i) / 100)² / n to the loss of
+rho. After the cover (and ``quiet_step``), the dents the cover holds within ``radius`` without them
 (:func:`dent_costs`) are dropped cheapest first (ties: lowest row) while
 their summed estimated loss stays within ``dent_rho_budget``
 (:func:`dents_within_budget`); as with ``quiet_step`` no path is needed.
@@ -196,7 +197,7 @@ class Params(PluginParams):
     recess_row: int = Field(3, ge=2, description="the fewest recesses that are a row (recess_depth)")
     quiet_step: float = Field(0.0, ge=0, description="a leaf whose dead end (it and the chain of degree-2 nodes behind it) is less than this many walking-flow percentile points quieter than the node it opens onto, which the cover holds within the cover radius, is no terminal; 0: every leaf")
     dent_depth: float = Field(0.0, ge=0, description="a leaf whose dead end (it and the chain of degree-2 nodes behind it) lies within this many metres of its way in is a dent, which dent_rho_budget may drop; 0: no dents; leaves without a polygon (the sampling route) are no dent")
-    dent_rho_budget: float = Field(0.0, ge=0, le=1, description="dents the cover holds within the cover radius without them are no terminal, least first by the Spearman rho their heat map would lose taking their way in's walking-flow percentile, while that estimated loss summed stays within this; 0: every dent")
+    dent_rho_budget: float = Field(0.0, ge=0, le=1, description="dents the cover holds within the cover radius without them are no terminal, least first by the Spearman rho their heat map would lose taking the walking-flow percentile of the terminal nearest their way in, while that estimated loss summed stays within this; 0: every dent")
 
 
 def default_radius(context: RunContext) -> float:
@@ -404,12 +405,15 @@ def dent_costs(graph: nx.Graph, navmesh: NavMesh | None, arrays: traffic.Surface
     ``reach`` metres of the cover less every dent: then whichever dents go,
     a node of a dropped one's cell is still within ``reach``, and every other
     node keeps its nearest row. Left out, the dead end's nodes (the leaf and
-    its chain) take the percentile p_e of their entrance instead of their own
-    p_i: with Spearman's rho = 1 - 6 sum(d²) / (n (n² - 1)) and rank
-    differences d = n (p_e - p_i) / 100, the cost is about
-    6 sum(((p_e - p_i) / 100)²) / n. Without ``navmesh`` there are no dents.
-    O(k c nvp + m + n log n) for k leaves with chains of c nodes: two
-    multi-source Dijkstras.
+    its chain), and the nodes of the shortest path from its entrance to the
+    nearest row of the cover less every dent (the spur the leaf brings into
+    the structure; none where the cover holds the entrance), take the
+    percentile p_s of that row instead of their own p_i: with Spearman's
+    rho = 1 - 6 sum(d²) / (n (n² - 1)) and rank differences
+    d = n (p_s - p_i) / 100, the cost is about 6 sum(((p_s - p_i) / 100)²) / n.
+    Without ``navmesh`` there are no dents. O(k (c + l) nvp + m + n log n)
+    for k leaves with chains of c nodes and paths of l: two multi-source
+    Dijkstras.
     """
     leaves = np.sort(leaves)
     none = np.zeros(0, dtype=np.int64), np.zeros(0)
@@ -425,7 +429,8 @@ def dent_costs(graph: nx.Graph, navmesh: NavMesh | None, arrays: traffic.Surface
         return none
     _, _, nearest = csgraph.dijkstra(arrays.adjacency, directed=False, indices=cover, min_only=True,
                                      return_predecessors=True)
-    to_rest = csgraph.dijkstra(arrays.adjacency, directed=False, indices=rest, min_only=True)
+    to_rest, toward_rest, _ = csgraph.dijkstra(arrays.adjacency, directed=False, indices=rest, min_only=True,
+                                               return_predecessors=True)
     farthest = np.full(arrays.n, -np.inf)  # per cover row: its cell's farthest node from the cover less the dents
     reached = nearest >= 0
     np.maximum.at(farthest, nearest[reached], to_rest[reached])
@@ -433,8 +438,12 @@ def dent_costs(graph: nx.Graph, navmesh: NavMesh | None, arrays: traffic.Surface
     for leaf, entrance in zip(candidates.tolist(), entrances.tolist(), strict=True):
         if farthest[leaf] <= reach:
             chain, _ = dead_end_chain(arrays.adjacency, leaf)
+            row = entrance
+            while toward_rest[row] >= 0:  # up to the nearest row of the cover less the dents
+                chain.append(row)
+                row = int(toward_rest[row])
             dents.append(leaf)
-            costs.append(6.0 * float(np.sum(((rank[entrance] - rank[chain]) / 100.0) ** 2)) / arrays.n)
+            costs.append(6.0 * float(np.sum(((rank[row] - rank[chain]) / 100.0) ** 2)) / arrays.n)
     return np.asarray(dents, dtype=np.int64), np.asarray(costs, dtype=np.float64)
 
 
