@@ -135,9 +135,10 @@ of Psychology 15:72-101, 1904), so a dead end whose nodes' percentiles p_i
 (0-100) take the percentile p_s of the terminal nearest its entrance
 instead (and so do the nodes of the path between them, which the leaf's
 spur brings in) adds about 6 sum((p_s - p_i) / 100)² / n to the loss of
-rho. After the cover (and ``quiet_step``), the dents the cover holds within ``radius`` without them
-(:func:`dent_costs`) are dropped cheapest first (ties: lowest row) while
-their summed estimated loss stays within ``dent_rho_budget``
+rho. After the cover (and ``quiet_step``), the dents the cover holds within
+``radius`` without them (:func:`dent_costs`) are dropped cheapest first
+(ties: lowest row) while their summed estimated loss stays within
+``dent_rho_budget``
 (:func:`dents_within_budget`); as with ``quiet_step`` no path is needed.
 Measured in docs/analysis_quality.md ("Dents between posts and corners").
 ``0`` (the default) keeps every dent, unchanged.
@@ -411,7 +412,7 @@ def dent_costs(graph: nx.Graph, navmesh: NavMesh | None, arrays: traffic.Surface
     percentile p_s of that row instead of their own p_i: with Spearman's
     rho = 1 - 6 sum(d²) / (n (n² - 1)) and rank differences
     d = n (p_s - p_i) / 100, the cost is about 6 sum(((p_s - p_i) / 100)²) / n.
-    Without ``navmesh`` there are no dents. O(k (c + l) nvp + m + n log n)
+    Without ``navmesh`` there are no dents. O(k (c nvp + l) + m + n log n)
     for k leaves with chains of c nodes and paths of l: two multi-source
     Dijkstras.
     """
