@@ -15,6 +15,7 @@ from g2s_core.errors import ConfigError
 from g2s_core.model import RunResult
 from g2s_core.registry import Registry
 from g2s_plugins.terminals import coverage
+from tests.conftest import box
 
 BAYS_FROM = 6.0
 """z (m) beyond which a node stands in a bay between the posts."""
@@ -26,10 +27,6 @@ ROOM_BEFORE = -0.5
 @pytest.fixture(scope="module")
 def registry() -> Registry:
     return Registry.from_entry_points()
-
-
-def box(x0: float, x1: float, y0: float, y1: float, z0: float, z1: float) -> trimesh.Trimesh:
-    return trimesh.creation.box(bounds=[(x0, y0, z0), (x1, y1, z1)])
 
 
 def corridor_lined_with_posts() -> trimesh.Trimesh:
