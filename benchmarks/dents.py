@@ -1,13 +1,16 @@
 """Where the cover's terminals stand, what each costs in structure nodes, and how its heat compares with its polygons.
 
 Run: ``.venv/bin/python benchmarks/dents.py [--levels cruise_ship beach hotel hospital nav_test stepwell my_level.obj]
-[--seeds 0 1 2] [--preset map_analysis]``
+[--seeds 0 1 2] [--preset map_analysis|my.yaml]``
 
 For every level (the names of ``benchmarks/analysis_quality.py``, or mesh
 files) it runs ``--preset`` and reads its terminals by the step of
 ``coverage`` that chose them (:func:`g2s_plugins.terminals.coverage.cover`):
 the seeded leaves, the waypoints of the traffic-aware cover and those of
-the plain cover (the farthest uncovered). Each seeded leaf's dead end (the
+the plain cover (the farthest uncovered), as they stand before
+``dent_rho_budget``, whose drops it counts with the Spearman rho each dent
+the cover holds without it would cost by estimate
+(:func:`~g2s_plugins.terminals.coverage.dent_costs`). Each seeded leaf's dead end (the
 leaf and the chain of degree-2 nodes behind it,
 :func:`~g2s_plugins.terminals.coverage.dead_end_depths`) is a *dent* when
 it reaches at most ``--depth`` metres beyond its way in, else a *room*.
@@ -78,11 +81,16 @@ def main(argv: list[str] | None = None) -> None:
     for name, mesh in levels(args.levels, args.seeds):
         result = pipeline.run(plan, registry, mesh, name, "-")
         graph, navmesh = result.graph, result.context.navmesh
-        chosen = coverage.cover(graph, params, result.context)
+        # the terminals as they stand before the dent budget, so a dent it dropped still reads as a dent
+        chosen = coverage.cover(graph, params.model_copy(update={"dent_rho_budget": 0.0}), result.context)
         arrays = chosen.arrays
         n = arrays.n
         degree = np.diff(arrays.adjacency.indptr)
         leaves = chosen.leaves[degree[chosen.leaves] == 1]
+        rank = coverage.walking_percentile(arrays, params.traffic_sources, params.traffic_ties, params.traffic_scaling)
+        dents, costs = coverage.dent_costs(graph, navmesh, arrays, leaves, rank, args.depth, chosen.rows,
+                                           params.radius or coverage.default_radius(result.context))
+        dropped = np.setdiff1d(chosen.rows, coverage.cover(graph, params, result.context).rows)
         depths, _ = coverage.dead_end_depths(graph, navmesh, arrays, leaves)
         kind = np.zeros(n, dtype=np.int8)  # 0 open floor, 1 in a dent's dead end, 2 in a room's
         for leaf, depth in zip(leaves.tolist(), depths.tolist(), strict=True):
@@ -108,6 +116,10 @@ def main(argv: list[str] | None = None) -> None:
               f"{int((depths <= 2).sum())} / {int((depths <= 3).sum())}), {len(traffic_waypoints)} traffic waypoints "
               f"({int((kind[traffic_waypoints] == 1).sum())} in dents, {int(np.isin(traffic_waypoints, kept).sum())} kept), "
               f"{len(plain_waypoints)} farthest-uncovered waypoints ({int(np.isin(plain_waypoints, kept).sum())} kept)")
+        print(f"  dents the cover holds without them: {len(dents)}, estimated rho each would cost "
+              f"(coverage.dent_costs) median {np.median(costs) if len(costs) else 0:.4f}, all {costs.sum():.4f}; "
+              f"dropped by dent_rho_budget ({params.dent_rho_budget:g}): {len(dropped)}, "
+              f"estimated {costs[np.isin(dents, dropped)].sum():.4f}")
         for k, label in ((1, "dent"), (2, "room"), (0, "open floor")):
             chains = by_kind[k]
             if not chains:

@@ -114,9 +114,21 @@ polygons and their shared edges (portals):
    landings go and those at its foot and head stay. Landings where flights meet from several sides (a lattice of
    flights) have three chokepoints or more, or are no larger than the run: they stay regions. The project's own
    rule, set on the fifteenth round's monastery and dam (docs/plugins.md, "Stairs in one run").
+   Ways (last; :func:`way_pieces`, :func:`_way_ends`): a *way* is a region at most :func:`way_width` wide on
+   average. A chokepoint between two ways on one floor that keeps at least ``narrowness`` of both their mean
+   walkable widths parts two pieces of one way (a causeway or a platform cut where a passing bay or a corner widens
+   it for a few metres): the two join, again until none is left. A way :data:`WAY_ELONGATION` times as long as it
+   is wide whose chokepoints, to two regions or more, each keep at least ``narrowness`` of its mean width (as narrow
+   as its openings) goes on to its ends: where the floor beyond a chokepoint is no wider than the chokepoint over
+   ``narrowness`` (:func:`local_widths`), the merge tree merged the way's last stretch into the region beyond (no
+   wider than the way, so no room of its own); that stub, the polygons going on from the chokepoint on its floor as
+   narrow (:func:`narrow_stub`), joins the way with what of the neighbour only it reaches, and the chokepoint moves
+   to where the floor widens: at least ``min_separation`` on, the stub larger than what it cuts off (else it links
+   two parts of the neighbour). The project's own rules, set on the sixteenth round's lighthouse (docs/plugins.md,
+   "Ways and their ends").
 4. Regions are the groups left (``scipy.sparse.csgraph.connected_components``
-   of the merged portals, joined passages, pinches, side strips, lanes, ways round and stair runs), numbered by their
-   lowest polygon id.
+   of the merged portals, joined passages, pinches, side strips, lanes, ways round, stair runs and ways), numbered by
+   their lowest polygon id.
    Candidates between the same two regions that are chained end to end (one opening:
    Recast's region contours may bend across a wide gap), that end on the same
    small hole less than half as wide between them, wall to wall, as the narrower
@@ -149,13 +161,14 @@ sorting the candidates' region pairs); lanes O(R (C' (Q M + Q log B) + sum of k^
 measured), C' candidates of region pairs with openings at least ``min_separation`` apart and k passage openings
 per pair; ways round O(R' (V + O K log K)) for R' rounds (1-4 measured), O openings and K polygons within the
 walk's length of an opening (few in rooms, up to a region in open ground); stair runs O(V + C log C) (extents, the
-chokepoints once more, sorting their ends); openings O(C log C + sum of k^2) for k candidate ends on each small
-hole; small rooms O(k) per look at a group under ``min_region_area`` (k: its polygons and their portals, few), and
-O(k) rays for the groups walled in but for one opening (:class:`DoorWidths`, each polygon and portal cast once);
-wall pieces O(B) and O(B) more per elongated small hole (few: pillars are compact); the merge tree sorts the
-portals and runs one union-find step per portal (a Python loop of O(E alpha(P)): a merge order is sequential by
-nature and no library offers it on a general graph); everything else is
-numpy/scipy over arrays, networkx only on the small region graph.
+chokepoints once more, sorting their ends); ways O(R'' (V + C log C) + W (P + E)) for R'' rounds of joins and W
+chokepoints of ways (each stub looked for once, and the region it leaves split into its parts); openings
+O(C log C + sum of k^2) for k candidate ends on each small hole; small rooms O(k) per look at a group under
+``min_region_area`` (k: its polygons and their portals, few), and O(k) rays for the groups walled in but for one
+opening (:class:`DoorWidths`, each polygon and portal cast once); wall pieces O(B) and O(B) more per elongated
+small hole (few: pillars are compact); the merge tree sorts the portals and runs one union-find step per portal
+(a Python loop of O(E alpha(P)): a merge order is sequential by nature and no library offers it on a general graph);
+everything else is numpy/scipy over arrays, networkx only on the small region graph.
 """
 
 from __future__ import annotations
@@ -301,6 +314,13 @@ chokepoints at least 1 m apart in height): pieces of the monastery's, dam's, est
 stair at each end 0.02-0.04 (the estate's top gallery, 77 m long: 0.04), canyon ledges 0.06-0.21, tree bridges
 0.06-0.24."""
 
+WAY_ELONGATION = 10.0
+"""A way's stub is carried on to its end (:func:`_way_ends`) only when the way is at least this many times as long as
+it is wide on average (longest extent over mean walkable width): a causeway, a gallery, a long corridor, not a piece
+of a room between pillars. Measured (docs/plugins.md, "Ways and their ends"): the lighthouse's causeway 25-29, a
+gallery of the estate 32, a corridor of the bunker 52; pieces of pillared dungeon rooms whose gaps keep their mean
+width 5.2-7.3 (grown, they took chokepoints off corridors' mouths)."""
+
 EXTENT_DIRECTIONS = 8
 """Directions, evenly spread over 180 degrees, along which a region's longest extent is measured
 (:func:`longest_extents`: at least cos(90 / 8 degrees) = 98 % of its diameter)."""
@@ -313,7 +333,8 @@ class DecompositionParams(PluginParams):
         0.75, gt=0, lt=1,
         description="a passage is a chokepoint when its width is at most this fraction of the widest "
         "point of the rooms on both sides; a region whose chokepoints all lead to one region, at both its ends, "
-        "and keep at least this fraction of its mean width joins it (side strips)",
+        "and keep at least this fraction of its mean width joins it (side strips); two regions on one floor whose "
+        "chokepoint keeps this fraction of both their mean widths are pieces of one way and join (ways)",
     )
     obstacle_area: float = Field(
         16.0, ge=0, description="holes in the walkable surface smaller than this (pillars, crates) neither "
@@ -639,6 +660,14 @@ class Outlines:
         return self.wall_share(polygons) >= self.enclosure and self.one_opening(polygons)
 
 
+def portals_of(pairs: np.ndarray, count: int) -> tuple[np.ndarray, np.ndarray]:
+    """CSR of polygon -> portal ids for ``count`` polygons and the portals ``pairs`` (E, 2) (each portal's two
+    polygons): ``(indptr (count+1,), portal ids (2E,))``, a polygon's portals in id order."""
+    owner = pairs.reshape(-1)
+    indptr = np.concatenate([[0], np.cumsum(np.bincount(owner, minlength=count))])
+    return indptr, np.argsort(owner, kind="stable") // 2
+
+
 def outlines(navmesh: Any, pairs: np.ndarray, endpoints: np.ndarray, footprint: float,
              enclosure: float) -> Outlines:
     """The :class:`Outlines` of ``navmesh``'s polygons (``pairs`` (E, 2) and ``endpoints`` (E, 2, 3): its portals)."""
@@ -647,12 +676,9 @@ def outlines(navmesh: Any, pairs: np.ndarray, endpoints: np.ndarray, footprint: 
     valid = polygons >= 0
     vertices = np.asarray(navmesh.vertices, dtype=np.float64)
     n = len(polygons)
-    owner = pairs.reshape(-1)
-    order = np.argsort(owner, kind="stable")
-    indptr = np.concatenate([[0], np.cumsum(np.bincount(owner, minlength=n))])
     return Outlines(walls=np.bincount(owner_of_wall, weights=np.linalg.norm(end - start, axis=1), minlength=n),
                     portal_length=np.linalg.norm(endpoints[:, 1] - endpoints[:, 0], axis=1),
-                    portals_of=(indptr, order // 2), pairs=pairs, endpoints=endpoints,
+                    portals_of=portals_of(pairs, n), pairs=pairs, endpoints=endpoints,
                     corners=np.where(valid[..., None], vertices[np.where(valid, polygons, 0)][..., [0, 2]], np.nan),
                     footprint=footprint, enclosure=enclosure)
 
@@ -1005,6 +1031,9 @@ def decompose(navmesh: Any, agent: Any, params: DecompositionParams, mesh: trime
     band = floor_bands(centres[:, 1], navmesh.normals, areas, 0.5 * float(agent.height))
     labels = _join_ways_round(navmesh, labels, pairs, blocked, clearance, areas, band, agent, wall_to_wall, params)
     labels = _join_stair_runs(navmesh, labels, pairs, blocked, clearance, areas, band, agent, wall_to_wall, params)
+    radius = float(agent.radius)
+    labels = _join_way_pieces(navmesh, labels, pairs, blocked, clearance, areas, band, radius, wall_to_wall, params)
+    labels = _way_ends(navmesh, labels, pairs, blocked, clearance, areas, band, radius, wall_to_wall, params)
     count = int(labels.max()) + 1 if len(labels) else 0
     blocked &= labels[pairs[:, 0]] != labels[pairs[:, 1]]
 
@@ -1126,9 +1155,7 @@ class PolygonWalks:
         middle = endpoints.mean(axis=1)
         steps = (np.linalg.norm(centres[pairs[:, 0]] - middle, axis=1)
                  + np.linalg.norm(centres[pairs[:, 1]] - middle, axis=1))
-        owner = pairs.reshape(-1)
-        indptr = np.concatenate([[0], np.cumsum(np.bincount(owner, minlength=len(centres)))])
-        return cls(centres, pairs, steps, (indptr, np.argsort(owner, kind="stable") // 2), cKDTree(centres))
+        return cls(centres, pairs, steps, portals_of(pairs, len(centres)), cKDTree(centres))
 
     def round_within(self, portal: int, closed: np.ndarray, length: float) -> bool:
         """Whether a walk of at most ``length`` m joins the two polygons of ``portal`` without crossing the portals
@@ -1269,11 +1296,7 @@ def _join_stair_runs(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocke
     :data:`CORRIDOR_WIDTH` agent diameters wide on average and climbs at least half the agent's height between
     its two chokepoints (the floors' height bands split at that gap: ``band`` (P,), :func:`floor_bands`)."""
     count = int(labels.max()) + 1 if len(labels) else 0
-    candidates = np.flatnonzero(blocked & (labels[pairs[:, 0]] != labels[pairs[:, 1]]))
-    floor = _region_floors(labels, count, band, areas, np.asarray(navmesh.centres, dtype=np.float64)[:, 1])
-    kept = _chokepoints(candidates, pairs, labels, np.asarray(navmesh.portals().endpoints, dtype=np.float64),
-                        clearance.widest, 2.0 * clearance.portals, floor, params.min_separation, clearance.holes,
-                        wall_to_wall)
+    kept = _kept_chokepoints(navmesh, labels, pairs, blocked, clearance, areas, band, wall_to_wall, params)
     if not kept:
         return labels
     sides = np.array([k["regions"] for k in kept], dtype=np.int64)
@@ -1282,6 +1305,155 @@ def _join_stair_runs(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocke
     joins = stair_runs(sides, heights, mean_width, extent, np.bincount(labels, weights=areas, minlength=count),
                        CORRIDOR_WIDTH * 2.0 * float(agent.radius), 0.5 * float(agent.height))
     return join_groups(labels, count, joins) if len(joins) else labels
+
+
+def _kept_chokepoints(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocked: np.ndarray,
+                      clearance: Clearances, areas: np.ndarray, band: np.ndarray, wall_to_wall: float,
+                      params: DecompositionParams, portal_ids: bool = False) -> list[dict[str, Any]]:
+    """The chokepoints :func:`_chokepoints` keeps for the regions ``labels`` (P,) (one per opening), of the
+    candidates ``blocked`` (E,) between two of them; floors by ``band`` (P,) (:func:`floor_bands`)."""
+    count = int(labels.max()) + 1 if len(labels) else 0
+    candidates = np.flatnonzero(blocked & (labels[pairs[:, 0]] != labels[pairs[:, 1]]))
+    floor = _region_floors(labels, count, band, areas, np.asarray(navmesh.centres, dtype=np.float64)[:, 1])
+    return _chokepoints(candidates, pairs, labels, np.asarray(navmesh.portals().endpoints, dtype=np.float64),
+                        clearance.widest, 2.0 * clearance.portals, floor, params.min_separation, clearance.holes,
+                        wall_to_wall, portal_ids)
+
+
+def way_pieces(sides: np.ndarray, floors: np.ndarray, width: np.ndarray, mean_width: np.ndarray,
+               narrowness: float, widest: float) -> np.ndarray:
+    """(K,) bool: which chokepoints part two pieces of one way (step 3 of the module doc): the chokepoint keeps at
+    least ``narrowness`` of the mean walkable width of both its regions (``sides`` (K, 2), ``width`` (K,) m,
+    ``mean_width`` (G,) m: area over longest extent), so it is no narrowing of either: a way as wide as its cuts
+    on average, cut only where a bay or a corner widens it for a few metres. Both regions are ways, at most
+    ``widest`` m on average (:func:`way_width`), and on one floor (``floors`` (K, 2)): a flight's foot and head stay
+    chokepoints however narrow the ground it climbs from."""
+    if len(sides) == 0:
+        return np.zeros(0, dtype=bool)
+    wider = mean_width[sides].max(axis=1)
+    return (floors[:, 0] == floors[:, 1]) & (width >= narrowness * wider) & (wider <= widest)
+
+
+def way_width(radius: float, narrowness: float) -> float:
+    """The widest mean walkable width of a way, m: :data:`CORRIDOR_WIDTH` agent diameters over ``narrowness``, a way
+    as wide as a corridor whose passing bays or corners (as wide again as its cuts over ``narrowness``) make rooms
+    of its pieces to the merge tree. A wider region is a yard or a court, whose openings the merge tree weighs
+    (measured: the lighthouse's causeway 4.0-4.7 m; a castle's courts 11.2-11.9 m; docs/plugins.md, "Ways and their
+    ends")."""
+    return CORRIDOR_WIDTH * 2.0 * radius / narrowness
+
+
+def _join_way_pieces(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocked: np.ndarray,
+                     clearance: Clearances, areas: np.ndarray, band: np.ndarray, radius: float, wall_to_wall: float,
+                     params: DecompositionParams) -> np.ndarray:
+    """(P,) the regions ``labels`` with the two regions of every chokepoint between pieces of one way joined
+    (:func:`way_pieces`), again on the joined regions until none is left (step 3 of the module doc)."""
+    while True:
+        count = int(labels.max()) + 1 if len(labels) else 0
+        kept = _kept_chokepoints(navmesh, labels, pairs, blocked, clearance, areas, band, wall_to_wall, params)
+        if not kept:
+            return labels
+        sides = np.array([k["regions"] for k in kept], dtype=np.int64)
+        width = np.array([k["width"] for k in kept])
+        joins = way_pieces(sides, np.array([k["floors"] for k in kept], dtype=np.int64), width,
+                           mean_widths(navmesh, labels, areas)[0], params.narrowness,
+                           way_width(radius, params.narrowness))
+        if not joins.any():
+            return labels
+        labels = join_groups(labels, count, sides[joins])
+
+
+def narrow_stub(portal: int, limit: float, inside: np.ndarray, pairs: np.ndarray,
+                portals: tuple[np.ndarray, np.ndarray], polygon_clearance: np.ndarray, portal_clearance: np.ndarray,
+                band: np.ndarray) -> np.ndarray:
+    """(K,) int64 sorted: the polygons of the region ``inside`` (P,) bool that go on from ``portal`` as narrow as
+    ``limit`` (clearance, m): reached from it through portals of clearance at most ``limit`` (``portal_clearance``
+    (E,)), each with a centre as near its walls (``polygon_clearance`` (P,)), on the floor (``band`` (P,), flat
+    polygons only) of the first, and with such a portal onward (a polygon with none is where the floor widens, or
+    a dead end). ``pairs`` (E, 2): each portal's polygons; ``portals``: CSR polygon -> portal ids
+    (:func:`portals_of`). Depth-first over the polygons, O(k) for k polygons and portals looked at."""
+    indptr, ids = portals
+    start = int(pairs[portal, 0] if inside[pairs[portal, 0]] else pairs[portal, 1])
+    grown: set[int] = set()
+    stack = [(start, portal)]
+    while stack:
+        q, came = stack.pop()
+        if q in grown or not inside[q] or polygon_clearance[q] > limit or band[q] < 0 or band[q] != band[start]:
+            continue
+        onward = [int(f) for f in ids[indptr[q]:indptr[q + 1]]
+                  if f != came and portal_clearance[f] <= limit and inside[pairs[f]].all()]
+        if onward:
+            grown.add(q)
+            stack.extend((int(pairs[f, 0] if pairs[f, 1] == q else pairs[f, 1]), f) for f in onward)
+    return np.array(sorted(grown), dtype=np.int64)
+
+
+def _way_ends(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocked: np.ndarray, clearance: Clearances,
+              areas: np.ndarray, band: np.ndarray, radius: float, wall_to_wall: float,
+              params: DecompositionParams) -> np.ndarray:
+    """(P,) the regions ``labels`` with every way carried on to its ends; the portals at them are set in ``blocked``
+    (E,), in place (they become chokepoint candidates).
+
+    A *way* here is a region at most :func:`way_width` wide on average (``radius``: the agent's, m) and at least
+    :data:`WAY_ELONGATION` times as long as that, with chokepoints to two regions or more, each keeping at least
+    ``narrowness`` of its mean walkable width (it is as narrow as its openings: no room behind them). Where the
+    floor beyond one of its chokepoints (:func:`local_widths`, the pinch rule's reach) is no wider than the
+    chokepoint over ``narrowness``, the chokepoint lies out along the way from its true end (the merge tree cut it
+    at a bay or a corner and merged the stub beyond into the neighbour): the neighbour's polygons that go on as
+    narrow (clearance at most the chokepoint's over ``narrowness``, with a portal as narrow onward, on the
+    chokepoint's floor: :func:`narrow_stub`) join the way, with whatever of the neighbour only they reach, and the
+    chokepoint moves to the portals where the floor widens; not when those lie within ``min_separation`` of it (no
+    stub) or when what they cut off is larger than the stub (a link between two parts of the neighbour, not the
+    way's end). A neighbour that is a way itself is left as it is."""
+    count = int(labels.max()) + 1 if len(labels) else 0
+    kept = _kept_chokepoints(navmesh, labels, pairs, blocked, clearance, areas, band, wall_to_wall, params,
+                             portal_ids=True)
+    if not kept:
+        return labels
+    sides = np.array([k["regions"] for k in kept], dtype=np.int64)
+    width = np.array([k["width"] for k in kept])
+    mean_width, extent = mean_widths(navmesh, labels, areas)
+    both = np.concatenate([sides, sides[:, ::-1]])
+    narrow_enough = np.concatenate([width, width]) >= params.narrowness * mean_width[both[:, 0]]
+    neighbours = np.unique(both, axis=0)
+    way = ((np.bincount(neighbours[:, 0], minlength=count) >= 2) & (mean_width <= way_width(radius, params.narrowness))
+           & (extent >= WAY_ELONGATION * mean_width)
+           & (np.bincount(both[:, 0], weights=~narrow_enough, minlength=count) == 0))
+    n = len(labels)
+    csr = portals_of(pairs, n)
+    points = np.array([k["position"] for k in kept])
+    local = np.zeros((len(kept), 2))
+    look = np.flatnonzero(way[sides].any(axis=1))
+    local[look] = local_widths(navmesh, labels, points[look], sides[look], PINCH_REACH * (width[look] + 2.0 * radius),
+                               clearance.open_walls)  # the pinch rule's floor near a cut
+    labels = labels.copy()
+    for k, (a, b), floor_near in zip(kept, sides.tolist(), local):
+        for w, other, beyond in ((a, b, floor_near[1]), (b, a, floor_near[0])):
+            if not way[w] or way[other] or beyond * params.narrowness > float(k["width"]):
+                continue  # no way, or the floor beyond the cut is wider than it: the way ends there
+            stub = narrow_stub(int(k["portal_id"]), 0.5 * float(k["width"]) / params.narrowness, labels == other,
+                               pairs, csr, clearance.polygons, clearance.portals_open, band)
+            rest = np.flatnonzero(labels == other)
+            rest = rest[~np.isin(rest, stub)]
+            if len(stub) == 0 or len(rest) == 0:
+                continue
+            local = np.full(n, -1, dtype=np.int64)
+            local[rest] = np.arange(len(rest))
+            inner = (local[pairs] >= 0).all(axis=1)
+            graph = sparse.coo_array((np.ones(int(inner.sum())), (local[pairs[inner, 0]], local[pairs[inner, 1]])),
+                                     shape=(len(rest), len(rest)))
+            parts, part = csgraph.connected_components(graph, directed=False)
+            main_part = int(np.argmax(np.bincount(part, weights=areas[rest])))
+            cut_off = rest[part != main_part]
+            moved = np.concatenate([stub, cut_off])
+            edge = np.isin(pairs, moved).any(axis=1) & (labels[pairs] == other).all(axis=1)
+            edge &= ~np.isin(pairs, moved).all(axis=1)
+            reach = np.linalg.norm(clearance.widest[edge][:, [0, 2]] - np.asarray(k["position"])[[0, 2]], axis=1)
+            if areas[cut_off].sum() > areas[stub].sum() or not len(reach) or reach.min() < params.min_separation:
+                continue  # a link between two parts of the neighbour, or no stub: the chokepoint is at the way's end
+            labels[moved] = w
+            blocked |= edge
+    return join_groups(labels, count, np.zeros((0, 2), dtype=np.int64))
 
 
 def _holes_at(points: np.ndarray, start: np.ndarray, hole: np.ndarray) -> np.ndarray:
@@ -1431,9 +1603,11 @@ def _post_links(pair: np.ndarray, hole: np.ndarray, ends: np.ndarray, width: np.
 
 def _chokepoints(candidates: np.ndarray, pairs: np.ndarray, labels: np.ndarray, endpoints: np.ndarray,
                  widest: np.ndarray, width: np.ndarray, floor: np.ndarray, separation: float,
-                 holes: tuple[np.ndarray, np.ndarray], wall_to_wall: float) -> list[dict[str, Any]]:
+                 holes: tuple[np.ndarray, np.ndarray], wall_to_wall: float,
+                 portal_ids: bool = False) -> list[dict[str, Any]]:
     """One record per chokepoint: candidates grouped by region pair, widest first; the others of an
-    opening (:func:`_openings`, ``holes`` and ``wall_to_wall`` as there) and near ones dropped."""
+    opening (:func:`_openings`, ``holes`` and ``wall_to_wall`` as there) and near ones dropped. With
+    ``portal_ids`` each record also names its portal (``portal_id``), for the steps of the split that use it."""
     sides = np.sort(labels[pairs[candidates]], axis=1)
     opening = _openings(candidates, sides, endpoints, width, holes, wall_to_wall)
     order = np.lexsort((candidates, -width[candidates], sides[:, 1], sides[:, 0]))
@@ -1456,7 +1630,7 @@ def _chokepoints(candidates: np.ndarray, pairs: np.ndarray, labels: np.ndarray, 
             "regions": [a, b],
             "polygons": [int(pairs[e, 0]), int(pairs[e, 1])],
             "floors": [int(floor[a]), int(floor[b])],
-        })
+        } | ({"portal_id": e} if portal_ids else {}))
     pairs_kept = [tuple(k["regions"]) for k in kept]
     count = max((b for _, b in pairs_kept), default=-1) + 1
     region_graph = rx.PyGraph(multigraph=True)

@@ -10,6 +10,7 @@ from pathlib import Path
 from types import ModuleType
 
 import pytest
+import trimesh
 
 PROJECT = Path(__file__).resolve().parents[1]
 SHARED_DATA = PROJECT.parent / "shared" / "data"
@@ -23,6 +24,11 @@ def benchmark(name: str) -> ModuleType:
         return importlib.import_module(name)
     finally:
         sys.path.remove(str(BENCHMARKS))
+
+
+def box(x0: float, x1: float, y0: float, y1: float, z0: float, z1: float) -> trimesh.Trimesh:
+    """An axis-aligned box between x0..x1, y0..y1 (up) and z0..z1 metres: the walls and floors of hand-built levels."""
+    return trimesh.creation.box(bounds=[(x0, y0, z0), (x1, y1, z1)])
 
 
 @pytest.fixture(autouse=True)

@@ -534,8 +534,8 @@ def test_a_probe_over_a_crack_walks_down_steps_from_the_ground_beside_it() -> No
     catwalk = [_box(-1.0, 0.6, -SLAB, 0.0, -1.0, -0.01), _box(-1.0, 0.6, -SLAB, 0.0, 0.01, 1.0)]
     caster = RayCaster(trimesh.util.concatenate([*catwalk, _box(-1.0, 2.0, -0.6 - SLAB, -0.6, -1.0, 1.0)]))
     s = entry_exit._settings(entry_exit.Params(), CONFIG.agent)
-    end, drop = entry_exit._surface_ends(caster, np.array([[0.0, s.lift, 0.0]]), np.array([[1.0, 0.0, 0.0]]),
-                                         np.array([[0.0, -1.0, 0.0]]), s, 3.0 * s.radius)
+    [(end, drop)] = entry_exit._surface_ends(caster, np.array([[0.0, s.lift, 0.0]]), np.array([[1.0, 0.0, 0.0]]),
+                                             np.array([[0.0, -1.0, 0.0]]), s, (3.0 * s.radius,))
     assert 0.6 - s.delta - 1e-9 <= end[0] <= 0.6 and drop[0] == 0.0
 
 

@@ -239,3 +239,24 @@ def test_a_roof_walled_less_than_a_storey_up_holds_no_opening() -> None:
     level = pieces.turned(benchmark("piece_kinds15").sloped_ceiling_tunnel(), 22.0)
     found, _, _, _ = _openings(level)
     assert len(found) == 1 and found[0, 1] < 0.1
+
+
+def test_an_edge_seen_back_against_the_walk_grows_its_ends_outwards() -> None:
+    # The pier's end holds a line of samples; with the second look its last two samples on one side look out the
+    # other way, their edge points after the rest's, back against the walk: the edge's ends, ordered by those
+    # points, grew inwards past each other (1.93 m of the 2.2 m between the rails).
+    found, known, _, terminals = _openings(benchmark("piece_kinds14").pier_end())
+    end = [o for o in terminals.openings if o.position[0] > 13.5]
+    assert len(end) == 1 and end[0].width == pytest.approx(2.2, abs=0.05)
+
+
+@pytest.mark.parametrize("riser, steps, yaw", [(0.2, 10, 22.0), (0.25, 8, 45.0), (0.2, 8, 0.0)])
+def test_a_flights_foot_seen_from_a_line_down_it_measures_the_flight(riser: float, steps: int, yaw: float) -> None:
+    # A line of samples down the flight sees its foot from several treads; the edge through their points climbs
+    # along it (an end 0.84 m above the foot, lowered by the deepest way's 0.8 m only: 0.2 x 10 at 22 degrees,
+    # 1.28 m) or stands vertical (0.25 x 8 at 45: 1.0 m of height over 0.35 m in plan, 1.30 m). With a landing
+    # (0.2 x 8 at 0), a part seen from a tread the climb above it is taken in by the landing's level opening.
+    level = benchmark("piece_kinds12").basement_stair(riser, steps, 0.6 if yaw == 0.0 else 0.0)
+    found, known, _, terminals = _openings(pieces.turned(level, yaw) if yaw else level)
+    assert len(found) == 2 and pieces.match_openings(found, known) == (2, 2)
+    assert all(o.width == pytest.approx(1.6, abs=0.05) for o in terminals.openings)

@@ -7,6 +7,8 @@ not tuned on"), on a small generated case.
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 import pytest
 
@@ -45,6 +47,25 @@ def test_an_opening_found_again_widens_the_one_it_repeats() -> None:
     a, b = entry_exit._union_ends(wide, [part])
     assert a == pytest.approx([0.0, 0.0, 0.0]) and b == pytest.approx([2.0, 0.0, 0.0])
     assert entry_exit._union_ends(wide, [inner]) is None  # within it: the wider one stands as it is
+
+
+def test_an_opening_found_again_on_a_sloped_line_is_read_in_plan_and_height() -> None:
+    # A 2 m edge along X rising 30 degrees (a ramp's side), facing -Z, and parts of it found again from samples
+    # standing above it. A perpendicular in 3D leans along the line: its height part is cos^2 of the height over
+    # the line (0.75 at 30 degrees), so a part 0.5 m above it (more than the climb, 0.4) read 0.375 and was merged.
+    rise = math.tan(math.radians(30.0))
+    wide = Opening((1.0, rise, 0.0), (0.0, 0.0, -1.0), 2.0 / math.cos(math.radians(30.0)), (0.0, 0.0, 0.0),
+                   (2.0, 2.0 * rise, 0.0))
+
+    def part(x0: float, x1: float, above: float) -> Opening:
+        a, b = (x0, x0 * rise + above, 0.0), (x1, x1 * rise + above, 0.0)
+        return Opening(tuple(np.add(a, b) / 2.0), (0.0, 0.0, -1.0), float(np.linalg.norm(np.subtract(b, a))), a, b)
+
+    within, higher = part(1.2, 2.6, 0.35), part(1.2, 2.6, 0.5)
+    assert [list(entry_exit._repeated([wide, o], 0.4, 30.0, 0.4)) for o in (within, higher)] == [[-1, 0], [-1, -1]]
+    # The union runs along the wide one's line to the part's end in plan, at the line's height there.
+    a, b = entry_exit._union_ends(wide, [within])
+    assert a == pytest.approx([0.0, 0.0, 0.0]) and b == pytest.approx([2.6, 2.6 * rise, 0.0])
 
 
 def test_a_pillar_before_a_door_leaves_it_whole() -> None:

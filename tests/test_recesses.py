@@ -14,15 +14,12 @@ from g2s_core.config import find_config, load_raw_config, parse_config
 from g2s_core.errors import ConfigError
 from g2s_core.registry import Registry
 from g2s_plugins.terminals import coverage
+from tests.conftest import box
 
 
 @pytest.fixture(scope="module")
 def registry() -> Registry:
     return Registry.from_entry_points()
-
-
-def box(x0: float, x1: float, y0: float, y1: float, z0: float, z1: float) -> trimesh.Trimesh:
-    return trimesh.creation.box(bounds=[(x0, y0, z0), (x1, y1, z1)])
 
 
 def terrace_with_pillars() -> trimesh.Trimesh:

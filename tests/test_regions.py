@@ -756,6 +756,64 @@ def test_a_switchback_of_six_flights_up_a_face_is_one_region_between_its_foot_an
     assert len(chokepoints(run(level))) >= 3
 
 
+def test_cuts_as_wide_as_the_way_on_both_sides_part_pieces_of_one_way():
+    # regions 0 (the land, 40 m walkable on average), 1 and 2 (pieces of a causeway, 4.2 and 4.0 m), 3 (a flight
+    # up from 2, on floor 1) and 4 (a room behind a 1.5 m door off 2, 5 m): the 3.75 m cut between the two pieces
+    # keeps 0.89 of the wider one's mean width and joins them; the causeway's 3.75 m mouth keeps 0.09 of the land's,
+    # the door 0.3 of the room's; the flight's 2 m foot keeps 0.5 of piece 2 but climbs to another floor
+    sides = np.array([[0, 1], [1, 2], [2, 3], [2, 4]])
+    floors = np.array([[0, 0], [0, 0], [0, 1], [0, 0]])
+    width = np.array([3.75, 3.75, 2.0, 1.5])
+    mean_width = np.array([40.0, 4.2, 4.0, 2.0, 5.0])
+    widest = decomposition.way_width(0.5, 0.75)  # 5.33 m for the presets' agent
+    assert decomposition.way_pieces(sides, floors, width, mean_width, 0.75, widest).tolist() == [
+        False, True, False, False]
+    # as wide as both pieces but on two floors (a flight as wide as the landing above it): stays
+    assert not decomposition.way_pieces(sides[1:2], np.array([[0, 1]]), width[1:2], mean_width, 0.75, widest).any()
+    # two yards 11-12 m wide on average at a 9 m opening: as wide as both, but no way: the merge tree's cut stays
+    yards = decomposition.way_pieces(np.array([[0, 1]]), np.array([[0, 0]]), np.array([9.0]), np.array([11.2, 11.9]),
+                                     0.75, widest)
+    assert not yards.any()
+
+
+def _causeway(yaw: float) -> SimpleNamespace:
+    """Land and an island (40 m square each) joined by a causeway 5 m wide over void: 120 m out along x with two
+    passing bays (3 m wider over 10 m), a dog-leg of 25 m along z, 40 m on along x (the lighthouse's, smaller)."""
+    kinds = benchmark("level_kinds")
+    solids = kinds._Solids()
+    solids.box(0.0, 40.0, -1.0, 0.0, 0.0, 40.0)
+    solids.box(40.0, 162.5, -1.0, 0.0, 17.5, 22.5)
+    for x in (60.0, 100.0):
+        solids.box(x, x + 10.0, -1.0, 0.0, 22.5, 25.5)
+    solids.box(157.5, 162.5, -1.0, 0.0, 17.5, 47.5)
+    solids.box(157.5, 200.0, -1.0, 0.0, 42.5, 47.5)
+    solids.box(200.0, 240.0, -1.0, 0.0, 25.0, 65.0)
+    mesh = solids.mesh().apply_transform(trimesh.transformations.rotation_matrix(np.radians(yaw), [0.0, 1.0, 0.0]))
+    return SimpleNamespace(mesh=mesh, name="causeway", turn=trimesh.transformations.rotation_matrix(
+        np.radians(yaw), [0.0, 1.0, 0.0]))
+
+
+@pytest.mark.parametrize("yaw", [0.0, 45.0])
+def test_a_causeway_is_one_region_with_a_chokepoint_at_each_end(monkeypatch, yaw):
+    # without the rules for ways the causeway was cut at a passing bay and merged into the land for its first 20 m
+    # (3 regions / 2 chokepoints at 0 degrees, one at the bay 20 m out; 4 / 3 turned by 45 degrees, two at bays)
+    level = _causeway(yaw)
+    ends = trimesh.transform_points(np.array([[40.0, 0.0, 20.0], [200.0, 0.0, 45.0]]), level.turn)
+    result = run(level)
+    found = chokepoints(result)
+    assert (len(regions(result)), len(found)) == (3, 2)
+    assert sorted(min(range(2), key=lambda i: np.linalg.norm(np.subtract(c["position"], ends[i])[[0, 2]]))
+                  for c in found) == [0, 1]
+    assert all(min(np.linalg.norm(np.subtract(c["position"], end)[[0, 2]]) for end in ends) < 1.5 for c in found)
+    way = ({*found[0]["regions"]} & {*found[1]["regions"]}).pop()
+    assert 700.0 < next(r["area"] for r in regions(result) if r["id"] == way) < 900.0  # the causeway, all of it
+    monkeypatch.setattr(decomposition, "_join_way_pieces", lambda navmesh, labels, *args: labels)
+    monkeypatch.setattr(decomposition, "_way_ends", lambda navmesh, labels, *args: labels)
+    before = chokepoints(run(level))
+    assert not all(min(np.linalg.norm(np.subtract(c["position"], end)[[0, 2]]) for end in ends) < 1.5
+                   for c in before)
+
+
 def test_shelving_aisles_turned_45_degrees_are_part_of_the_hall():
     # held out: turned by 45 degrees the 3 m aisle's ends measured 1.41 m walkable against its 1.9 m widest point,
     # so it was a region between two chokepoints (3 regions / 3 chokepoints) before the side-strip rule

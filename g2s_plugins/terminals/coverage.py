@@ -121,13 +121,37 @@ holds without it and no new path is needed. Leaves of areas too small to
 cover stay. Measured in docs/analysis_quality.md ("Dents along lined
 edges"). ``0`` (the default) keeps every leaf, unchanged.
 
+Dents within a rank budget (``dent_depth`` > 0 and ``dent_rho_budget`` > 0).
+A dent is a seeded leaf whose dead end (it and the chain of degree-2 nodes
+behind it) lies within ``dent_depth`` metres of its way in
+(:func:`dead_end_depths`): the bay between two bollards along a towpath, a
+corner of a parterre's bed, a bay behind a pillar. Its leaf costs a node of
+structure, and what it buys is rank: without it the dead end takes the heat
+of a node on the walkway it opens onto, up to 60-70 percentile points too
+high for a dent nobody walks through. Spearman's rho over n polygons is
+1 - 6 sum(d²) / (n (n² - 1)) for rank differences d (C. Spearman, "The
+proof and measurement of association between two things", American Journal
+of Psychology 15:72-101, 1904), so a dead end whose nodes' percentiles p_i
+(0-100) take the percentile p_s of the terminal nearest its entrance
+instead (and so do the nodes of the path between them, which the leaf's
+spur brings in) adds about 6 sum((p_s - p_i) / 100)² / n to the loss of
+rho. After the cover (and ``quiet_step``), the dents the cover holds within
+``radius`` without them (:func:`dent_costs`) are dropped cheapest first
+(ties: lowest row) while their summed estimated loss stays within
+``dent_rho_budget``
+(:func:`dents_within_budget`); as with ``quiet_step`` no path is needed.
+Measured in docs/analysis_quality.md ("Dents between posts and corners").
+``0`` (the default) keeps every dent, unchanged.
+
 Complexity: O(m + n log n) for step 1 plus, per added path, a Dijkstra over
 the nodes that path brings closer (in practice the area around it); with
 ``traffic_weight`` > 0, that twice, plus the walking flow, O(k (m + n log n))
 for k = 256 sources, unless the run's ``flow`` analyzer already needs it;
 with ``recess_depth`` > 0, one more multi-source Dijkstra, limited to
 ``radius``; with ``quiet_step`` > 0, the walking flow (once, as above)
-and a walk up each leaf's chain.
+and a walk up each leaf's chain; with ``dent_rho_budget`` > 0, those, two
+multi-source Dijkstras and a sort of the k dents, O(k c nvp + m + n log n +
+k log k).
 """
 
 from __future__ import annotations
@@ -173,6 +197,8 @@ class Params(PluginParams):
     recess_depth: float = Field(0.0, ge=0, description="a leaf whose dead end (it and the chain of degree-2 nodes behind it) lies within this many metres of its way in is a recess; recesses whose ways in lie within the cover radius of one another along the graph are a row, and a row of at least recess_row seeds one of them, the cover reaches the rest; 0: every leaf; leaves without a polygon (the sampling route) are no recess")
     recess_row: int = Field(3, ge=2, description="the fewest recesses that are a row (recess_depth)")
     quiet_step: float = Field(0.0, ge=0, description="a leaf whose dead end (it and the chain of degree-2 nodes behind it) is less than this many walking-flow percentile points quieter than the node it opens onto, which the cover holds within the cover radius, is no terminal; 0: every leaf")
+    dent_depth: float = Field(0.0, ge=0, description="a leaf whose dead end (it and the chain of degree-2 nodes behind it) lies within this many metres of its way in is a dent, which dent_rho_budget may drop; 0: no dents; leaves without a polygon (the sampling route) are no dent")
+    dent_rho_budget: float = Field(0.0, ge=0, le=1, description="dents the cover holds within the cover radius without them are no terminal, least first by the Spearman rho their heat map would lose taking the walking-flow percentile of the terminal nearest their way in, while that estimated loss summed stays within this; 0: every dent")
 
 
 def default_radius(context: RunContext) -> float:
@@ -238,7 +264,8 @@ def cover(graph: nx.Graph, params: Params, context: RunContext) -> Cover:
         )
     seeds = np.concatenate([leaves, _seeds(adjacency, labels, has_leaf, small)])
     eligible = ~small[labels]
-    if params.traffic_weight > 0 or params.quiet_step > 0:
+    drops_dents = params.dent_depth > 0 and params.dent_rho_budget > 0
+    if params.traffic_weight > 0 or params.quiet_step > 0 or drops_dents:
         rank = walking_percentile(arrays, params.traffic_sources, params.traffic_ties, params.traffic_scaling)
     if params.traffic_weight > 0:
         traffic_radius = params.traffic_radius if params.traffic_radius is not None else TRAFFIC_RADIUS_SHARE * radius
@@ -250,6 +277,10 @@ def cover(graph: nx.Graph, params: Params, context: RunContext) -> Cover:
         # an area too small to cover keeps its leaves: the cover does not reach them
         quiet = quiet_dead_ends(arrays, leaves[~small[labels[leaves]]], rank, params.quiet_step, rows, radius)
         leaves, seeds, rows = (np.setdiff1d(rows_, quiet) for rows_ in (leaves, seeds, rows))
+    if drops_dents:
+        dents = dents_within_budget(graph, context.navmesh, arrays, leaves[~small[labels[leaves]]], rank,
+                                    params.dent_depth, rows, radius, params.dent_rho_budget)
+        leaves, seeds, rows = (np.setdiff1d(rows_, dents) for rows_ in (leaves, seeds, rows))
     return Cover(arrays, np.sort(leaves), np.unique(seeds), rows)
 
 
@@ -345,6 +376,76 @@ def quiet_dead_ends(arrays: traffic.SurfaceArrays, leaves: np.ndarray, rank: np.
                 and arrays.adjacency[chain, chain[1:] + [entrance]].sum() <= reach):
             quiet.append(leaf)
     return np.asarray(quiet, dtype=np.int64)
+
+
+def dents_within_budget(graph: nx.Graph, navmesh: NavMesh | None, arrays: traffic.SurfaceArrays, leaves: np.ndarray,
+                        rank: np.ndarray, depth: float, cover: np.ndarray, reach: float, budget: float) -> np.ndarray:
+    """The dents among ``leaves`` (rows of ``arrays``) the ``cover`` (rows) holds without them, within a rank
+    ``budget``: the sorted rows of those dropped.
+
+    The dents and their costs are :func:`dent_costs`'; they go in ascending
+    order of cost (ties: lowest row) while the costs summed stay within
+    ``budget`` (an estimated loss of Spearman rho). O(k c nvp + m + n log n +
+    k log k) for k leaves with chains of c nodes.
+    """
+    dents, costs = dent_costs(graph, navmesh, arrays, leaves, rank, depth, cover, reach)
+    order = np.lexsort((dents, costs))
+    return np.sort(dents[order][np.cumsum(costs[order]) <= budget])
+
+
+def dent_costs(graph: nx.Graph, navmesh: NavMesh | None, arrays: traffic.SurfaceArrays, leaves: np.ndarray,
+               rank: np.ndarray, depth: float, cover: np.ndarray, reach: float) -> tuple[np.ndarray, np.ndarray]:
+    """(k,) the sorted rows of the dents among ``leaves`` (rows of ``arrays``) that the ``cover`` (rows) holds
+    without them, and (k,) the Spearman rho each would cost the heat map.
+
+    ``rank``: (n,) walking-flow percentiles, 0-100 (:func:`walking_percentile`).
+    A leaf is a dent when its dead end lies within ``depth`` metres of its
+    way in (:func:`dead_end_depths`) and opens onto a node of degree 3 or
+    more, its entrance. The cover holds a dent without it when every node
+    whose nearest row of ``cover`` is the dent's leaf (its cell) lies within
+    ``reach`` metres of the cover less every dent: then whichever dents go,
+    a node of a dropped one's cell is still within ``reach``, and every other
+    node keeps its nearest row. Left out, the dead end's nodes (the leaf and
+    its chain), and the nodes of the shortest path from its entrance to the
+    nearest row of the cover less every dent (the spur the leaf brings into
+    the structure; none where the cover holds the entrance), take the
+    percentile p_s of that row instead of their own p_i: with Spearman's
+    rho = 1 - 6 sum(d²) / (n (n² - 1)) and rank differences
+    d = n (p_s - p_i) / 100, the cost is about 6 sum(((p_s - p_i) / 100)²) / n.
+    Without ``navmesh`` there are no dents. O(k (c nvp + l) + m + n log n)
+    for k leaves with chains of c nodes and paths of l: two multi-source
+    Dijkstras.
+    """
+    leaves = np.sort(leaves)
+    none = np.zeros(0, dtype=np.int64), np.zeros(0)
+    if navmesh is None or len(leaves) == 0:
+        return none
+    depths, entrances = dead_end_depths(graph, navmesh, arrays, leaves)
+    degree = np.diff(arrays.adjacency.indptr)
+    shallow = (depths <= depth) & (entrances >= 0)
+    shallow[shallow] = degree[entrances[shallow]] >= 3
+    candidates, entrances = leaves[shallow], entrances[shallow]
+    rest = np.setdiff1d(cover, candidates)
+    if len(candidates) == 0 or len(rest) == 0:
+        return none
+    _, _, nearest = csgraph.dijkstra(arrays.adjacency, directed=False, indices=cover, min_only=True,
+                                     return_predecessors=True)
+    to_rest, toward_rest, _ = csgraph.dijkstra(arrays.adjacency, directed=False, indices=rest, min_only=True,
+                                               return_predecessors=True)
+    farthest = np.full(arrays.n, -np.inf)  # per cover row: its cell's farthest node from the cover less the dents
+    reached = nearest >= 0
+    np.maximum.at(farthest, nearest[reached], to_rest[reached])
+    dents, costs = [], []
+    for leaf, entrance in zip(candidates.tolist(), entrances.tolist(), strict=True):
+        if farthest[leaf] <= reach:
+            chain, _ = dead_end_chain(arrays.adjacency, leaf)
+            row = entrance
+            while toward_rest[row] >= 0:  # up to the nearest row of the cover less the dents
+                chain.append(row)
+                row = int(toward_rest[row])
+            dents.append(leaf)
+            costs.append(6.0 * float(np.sum(((rank[row] - rank[chain]) / 100.0) ** 2)) / arrays.n)
+    return np.asarray(dents, dtype=np.int64), np.asarray(costs, dtype=np.float64)
 
 
 def recess_rows(graph: nx.Graph, navmesh: NavMesh | None, arrays: traffic.SurfaceArrays, leaves: np.ndarray,

@@ -23,7 +23,8 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
    the surface within the climb of the ground the one before it stood on, so
    the search walks down a stair; on a sampled surface, whose boundary stands
    farther inside the floor, a sample finding no way out looks again up to
-   the sampling builder's clearance plus 1.5 spacings, :func:`sampled_edge_search`). A direction
+   the sampling builder's clearance plus 1.5 spacings, :func:`sampled_edge_search`,
+   from probes cast once as far as that for both looks). A direction
    is a way out when the edge is found, the ray along it stays clear for
    ``outward_radii * r`` (no wall, jamb or curb higher than ``h`` in the
    way), the same way a search step below the agent's height is clear up to
@@ -48,18 +49,23 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
    boundary's direction within ``match_angle_deg`` (a curved edge); a
    segment that fits neither is fitted again without the samples at its ends
    whose way out lies more than ``max_turn_deg`` from its median one (a
-   segment that walked round a corner onto the edge). An edge is cut where
+   segment that walked round a corner onto the edge); a line over one surface
+   fitted steeper than the agent walks runs through edge points on several
+   treads, and is taken level in plan. An edge runs the way its boundary
+   walks. An edge is cut where
    something stands on it between two free stretches (a pier between two
    doorways the samples saw out through alike), and its ends are raised onto
    a step top just inside them (a riser as high as the rays, which they pass
    over), or, where its samples walked down steps to it, lowered onto the
-   floor that ends there. The
+   floor that ends there (as far down as the lowest floor its ways walked
+   down to). The
    opening lies on that line; its ends are extended along the edge while the
    surface goes on inside the edge, ends just outside it, and nothing stands
    in the way or straight out: this undoes the retreat from walls. An
    opening overlapping a wider one along the same line, facing the same way,
    is the same opening found twice (its middle within ``r`` of the wider one's line in plan, an end or its
-   middle within the climb of it in height): the wider one is stretched along its line
+   middle within the climb of the line's height there, read in plan and height on a sloped line too): the wider
+   one is stretched along its line
    to span both and the other dropped, again until none overlaps a wider one.
 6. Priors, each measured on the generated pieces of
    :mod:`g2s_plugins.samples.pieces` (docs/entry_exit.md):
@@ -132,7 +138,8 @@ each sample, and per sample and fan direction one outward ray, at most
 r) / 4) and 4 bisection rays to find the surface's end, (agent height -
 climb) / d across the way for the directions clear so far, two more beyond it
 with ``leave_footprint``: O(S k (edge_search_radii r + agent height) / d) rays (up to twice
-that with ``step_up``, for the samples searched again from a step's top).
+that with ``step_up``, for the samples searched again from a step's top; on a sampled surface the probes reach
+the second look's distance instead, and the tests after them are cast again for the samples it answers).
 The main floor adds a k-d tree over boundary samples r / 4 apart, the
 repeated openings an O(o^2) comparison, the openings between jambs O(F) each
 over the mesh's F triangles, the terminals a k-d tree query each.
@@ -404,22 +411,30 @@ def _snap(
 
 
 def _surface_ends(
-    caster: RayCaster, origins: np.ndarray, directions: np.ndarray, down: np.ndarray, s: _Settings, reach: float
-) -> tuple[np.ndarray, np.ndarray]:
-    """(n,) distance along each direction where the surface under the lifted origins ends (NaN: not within
-    ``reach``, m), and (n,) how far below the origin's ground the surface ends there, m, where the way went
-    down steps (:func:`_down_steps`), else 0.
+    caster: RayCaster, origins: np.ndarray, directions: np.ndarray, down: np.ndarray, s: _Settings,
+    reaches: tuple[float, ...],
+) -> list[tuple[np.ndarray, np.ndarray]]:
+    """Per reach of ``reaches`` (m): (n,) distance along each direction where the surface under the lifted origins
+    ends (NaN: not within that reach, m), and (n,) how far below the origin's ground the surface ends there, m, where
+    the way went down steps (:func:`_down_steps`), else 0.
+
+    The probes are cast once, as far as the farthest reach; each reach reads the first of them (a probe's answer
+    and the walk down steps up to it depend on the probes before it alone), as a search that far and no farther
+    would: its last probe finding no surface is an end (no farther probe shows it a crack).
 
     Only faces the agent can walk count as surface: on a floor sloping down out of the piece the probes,
     cast along its tilted normal, would otherwise meet the slab's own end face below the floor's edge
     and put the edge beyond it (by ``lift * tan(slope)``: 0.05 m at 15 degrees)."""
+    reach = max(reaches)
     if not (steps := reach / s.delta) <= _MAX_PROBE_RAYS:  # a batch could not hold one sample's probes
         raise PluginError(f"terminals.params.edge_search_radii: looking {reach:.4g} m beyond the boundary in steps of "
                           f"{s.delta:.4g} m makes {steps:.3g} probes a sample, more than {_MAX_PROBE_RAYS:,}; use a smaller one")
     n_off = max(1, int(math.ceil(steps)))
+    counts = [max(1, int(math.ceil(r / s.delta))) for r in reaches]  # each reach's probes
     offsets = s.delta * np.arange(1, n_off + 1)
-    lo = np.full(len(origins), np.nan)
-    drop = np.zeros(len(origins))  # how far the ground stood on last lies below the origin's, down a stair only
+    lo = np.full((len(reaches), len(origins)), np.nan)
+    # how far the ground stood on last lies below the origin's, down a stair only
+    drop = np.zeros((len(reaches), len(origins)))
     batch = max(1, _MAX_PROBE_RAYS // n_off)
     for begin in range(0, len(origins), batch):
         part = slice(begin, begin + batch)
@@ -441,24 +456,38 @@ def _surface_ends(
         # whatever lies under the crack (a floor below a catwalk's slot)
         distance = hits.distance.copy()
         distance[rows[across]], walkable[rows[across]] = beside[across], True
-        missing = missing.reshape(-1, n_off)
-        missing, before = _down_steps(missing, distance.reshape(-1, n_off) - s.lift, walkable.reshape(-1, n_off), s.climb)
-        # The surface ends where two probes in a row find none: a crack narrower than a search step
-        # (unwelded floor tiles) is no edge, and neither the agent nor Recast's voxels see it.
-        missing[:, :-1] &= missing[:, 1:]
-        end = np.argmax(missing, axis=1)
-        lo[part] = np.where(missing.any(axis=1), end * s.delta, np.nan)
-        drop[part] = before[np.arange(len(end)), end]
-    hi = lo + s.delta
-    rows = np.nonzero(np.isfinite(lo))[0]
-    for _ in range(_REFINE_ROUNDS):  # bisection between the last offset with surface and the first without
-        mid = 0.5 * (lo[rows] + hi[rows])
-        probe = origins[rows] + directions[rows] * mid[:, None]
-        hit = caster.first_hits(probe, down[rows])
-        on = (hit.distance <= s.lift + s.climb + drop[rows]) & _walkable(caster, hit.face, s)
-        lo[rows] = np.where(on, mid, lo[rows])
-        hi[rows] = np.where(on, hi[rows], mid)
-    return 0.5 * (lo + hi), np.where(np.isfinite(lo), drop, 0.0)
+        missing, walkable = missing.reshape(-1, n_off), walkable.reshape(-1, n_off)
+        depth = distance.reshape(-1, n_off) - s.lift
+        for r, count in enumerate(counts):
+            ends, before = _down_steps(missing[:, :count], depth[:, :count], walkable[:, :count], s.climb)
+            # The surface ends where two probes in a row find none: a crack narrower than a search step
+            # (unwelded floor tiles) is no edge, and neither the agent nor Recast's voxels see it.
+            ends[:, :-1] &= ends[:, 1:]
+            end = np.argmax(ends, axis=1)
+            lo[r, part] = np.where(ends.any(axis=1), end * s.delta, np.nan)
+            drop[r, part] = before[np.arange(len(end)), end]
+    results: list[tuple[np.ndarray, np.ndarray]] = []
+    for r in range(len(reaches)):
+        edge = np.full(len(origins), np.nan)
+        rows = np.nonzero(np.isfinite(lo[r]))[0]
+        # a nearer reach's end, from the same probe and the same ground, is bisected alike: read it again
+        same = np.zeros(len(rows), dtype=bool)
+        for q in range(r):
+            again = (lo[q, rows] == lo[r, rows]) & (drop[q, rows] == drop[r, rows]) & ~same
+            edge[rows[again]] = results[q][0][rows[again]]
+            same |= again
+        rows = rows[~same]
+        low, high = lo[r, rows], lo[r, rows] + s.delta
+        for _ in range(_REFINE_ROUNDS):  # bisection between the last offset with surface and the first without
+            mid = 0.5 * (low + high)
+            probe = origins[rows] + directions[rows] * mid[:, None]
+            hit = caster.first_hits(probe, down[rows])
+            on = (hit.distance <= s.lift + s.climb + drop[r, rows]) & _walkable(caster, hit.face, s)
+            low = np.where(on, mid, low)
+            high = np.where(on, high, mid)
+        edge[rows] = 0.5 * (low + high)
+        results.append((edge, np.where(np.isfinite(lo[r]), drop[r], 0.0)))
+    return results
 
 
 def _down_steps(
@@ -493,12 +522,13 @@ def _down_steps(
 
 def _fan(
     base: np.ndarray, normal: np.ndarray, tangent: np.ndarray, caster: RayCaster, s: _Settings, params: Params,
-    reach: float,
+    reaches: tuple[float, ...],
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-    """The way out of each point of ``base`` (step 3), the surface's end looked for up to ``reach`` m along each
-    direction: (M,) found, (M,3) direction, (M,) distance to the edge, (M,) how far below the point's ground the
-    surface ends there (down steps, else 0), and (M,) bool: some direction reaches the surface's end clear but
-    for the piece lying below beyond it (a drop into the piece)."""
+    """The way out of each point of ``base`` (step 3), the surface's end looked for up to the first of ``reaches``
+    (m) along each direction, and for a point with none, up to the next: (M,) found, (M,3) direction, (M,) distance
+    to the edge, (M,) how far below the point's ground the surface ends there (down steps, else 0), and (M,) bool:
+    some direction of a look the point took reaches the surface's end clear but for the piece lying below beyond
+    it (a drop into the piece)."""
     outward = np.cross(tangent, normal)  # the walkable side is on the left of the tangent
     m, k = len(base), int(params.fan_count)
     half = math.radians(float(params.fan_half_angle_deg))
@@ -508,45 +538,55 @@ def _fan(
     lifted = np.repeat(base + normal * s.lift, k, axis=0)
     down = np.repeat(-normal, k, axis=0)
     clear = caster.first_hits(lifted, dirs).distance > float(params.outward_radii) * s.radius
-    edge, drop = np.full(m * k, np.nan), np.zeros(m * k)
     todo = np.nonzero(clear)[0]
-    edge[todo], drop[todo] = _surface_ends(caster, lifted[todo], dirs[todo], down[todo], s, reach)
-    ok = np.isfinite(edge)
-    if ok.any():
-        # Head room: the rays at ``lift`` pass under a lintel lower than the agent (a window at floor
-        # level, a vent); the same way at ``head`` must be clear up to the edge.
-        rows = np.nonzero(ok)[0]
-        head = np.repeat(base + normal * s.head, k, axis=0)[rows]
-        ok[rows[caster.first_hits(head, dirs[rows]).distance <= edge[rows]]] = False
+    looks = _surface_ends(caster, lifted[todo], dirs[todo], down[todo], s, reaches)
+    found, chosen = np.zeros(m, dtype=bool), np.arange(m) * k
+    edge_of, drop_of = np.zeros(m), np.zeros(m)
+    into_piece = np.zeros(m, dtype=bool)
     heights = np.arange(s.climb + s.delta / 4.0, s.head, s.delta / 2.0)  # none when the agent climbs its height
-    if ok.any() and len(heights):
-        # Bars across the way (a railing's rails between its posts) pass between the rays at ``lift`` and
-        # the head-room ray: the way must be clear at every half search step of height from the climb up to
-        # the head-room ray until the agent's body is past the edge, one radius beyond it (a rope 0.04 m thick
-        # passed between rays a whole step apart: docs/entry_exit.md, "A sixteenth round of piece kinds").
-        rows = np.nonzero(ok)[0]
-        start = np.repeat(base, k, axis=0)[rows]
-        up = np.repeat(normal, k, axis=0)[rows]
-        origins = (start[None, :, :] + heights[:, None, None] * up[None, :, :]).reshape(-1, 3)
-        hits = caster.first_hits(origins, np.tile(dirs[rows], (len(heights), 1))).distance
-        barred = (hits.reshape(len(heights), -1) <= (edge[rows] + s.radius)[None, :]).any(axis=0)
-        ok[rows[barred]] = False
-    into_piece = np.zeros(m * k, dtype=bool)
-    if params.leave_footprint and ok.any():
-        rows = np.nonzero(ok)[0]
-        beyond = lifted[rows] + dirs[rows] * (edge[rows] + s.radius)[:, None]
-        below = caster.first_hits(beyond, -UP).distance
-        above = caster.first_hits(beyond, UP).distance
-        into_piece[rows[np.isfinite(below)]] = True
-        # Above, only what the agent could not stand under blocks the way (the head-room rule): eaves do not.
-        ok[rows[np.isfinite(below) | (above < s.head)]] = False
-    # The soonest way out; among equals, the one closest to straight out.
-    cost = np.where(ok, edge, np.inf).reshape(m, k) + 1e-6 * np.abs(theta)[None, :]
-    pick = np.argmin(cost, axis=1)
-    found = np.isfinite(cost[np.arange(m), pick])
-    chosen = np.arange(m) * k + pick
-    return (found, dirs[chosen], np.nan_to_num(edge[chosen]), np.where(found, drop[chosen], 0.0),
-            into_piece.reshape(m, k).any(axis=1))
+    for look_edge, look_drop in looks:
+        looking = np.repeat(~found, k)  # the directions of the points with no way out yet
+        edge, drop = np.full(m * k, np.nan), np.zeros(m * k)
+        edge[todo], drop[todo] = look_edge, look_drop
+        ok = np.isfinite(edge) & looking
+        if ok.any():
+            # Head room: the rays at ``lift`` pass under a lintel lower than the agent (a window at floor
+            # level, a vent); the same way at ``head`` must be clear up to the edge.
+            rows = np.nonzero(ok)[0]
+            head = np.repeat(base + normal * s.head, k, axis=0)[rows]
+            ok[rows[caster.first_hits(head, dirs[rows]).distance <= edge[rows]]] = False
+        if ok.any() and len(heights):
+            # Bars across the way (a railing's rails between its posts) pass between the rays at ``lift`` and
+            # the head-room ray: the way must be clear at every half search step of height from the climb up to
+            # the head-room ray until the agent's body is past the edge, one radius beyond it (a rope 0.04 m thick
+            # passed between rays a whole step apart: docs/entry_exit.md, "A sixteenth round of piece kinds").
+            rows = np.nonzero(ok)[0]
+            start = np.repeat(base, k, axis=0)[rows]
+            up = np.repeat(normal, k, axis=0)[rows]
+            origins = (start[None, :, :] + heights[:, None, None] * up[None, :, :]).reshape(-1, 3)
+            hits = caster.first_hits(origins, np.tile(dirs[rows], (len(heights), 1))).distance
+            barred = (hits.reshape(len(heights), -1) <= (edge[rows] + s.radius)[None, :]).any(axis=0)
+            ok[rows[barred]] = False
+        if params.leave_footprint and ok.any():
+            rows = np.nonzero(ok)[0]
+            beyond = lifted[rows] + dirs[rows] * (edge[rows] + s.radius)[:, None]
+            below = caster.first_hits(beyond, -UP).distance
+            above = caster.first_hits(beyond, UP).distance
+            into = np.zeros(m * k, dtype=bool)
+            into[rows[np.isfinite(below)]] = True
+            into_piece |= into.reshape(m, k).any(axis=1)
+            # Above, only what the agent could not stand under blocks the way (the head-room rule): eaves do not.
+            ok[rows[np.isfinite(below) | (above < s.head)]] = False
+        # The soonest way out; among equals, the one closest to straight out. A point with none keeps its first
+        # direction and how far that look found the surface going along it (0: not within its reach).
+        cost = np.where(ok, edge, np.inf).reshape(m, k) + 1e-6 * np.abs(theta)[None, :]
+        pick = np.argmin(cost, axis=1)
+        now = np.isfinite(cost[np.arange(m), pick])
+        edge_of[~found] = np.nan_to_num(edge[np.flatnonzero(~found) * k])
+        picked = np.arange(m)[now] * k + pick[now]
+        chosen[now], edge_of[now], drop_of[now] = picked, edge[picked], drop[picked]
+        found |= now
+    return found, dirs[chosen], edge_of, drop_of, into_piece
 
 
 def _step_tops(
@@ -581,14 +621,10 @@ def _ways_out(
 ) -> _Ways:
     base, normal = _snap(samples, polygon_normals, caster, s)
     tangent = _unit(samples.tangent - np.einsum("ij,ij->i", samples.tangent, normal)[:, None] * normal)
-    found, direction, reach, drop, into_piece = _fan(base, normal, tangent, caster, s, params, s.search)
-    if s.farther > s.search and not found.all():
-        # A sampled surface's boundary stands farther inside the floor than a navmesh's: a sample that finds no
-        # way out within the navmesh route's reach looks again as far as the sampling allows.
-        rows = np.nonzero(~found)[0]
-        far = _fan(base[rows], normal[rows], tangent[rows], caster, s, params, s.farther)
-        found[rows], direction[rows], reach[rows], drop[rows] = far[:4]
-        into_piece[rows] |= far[4]
+    # A sampled surface's boundary stands farther inside the floor than a navmesh's: a sample that finds no way out
+    # within the navmesh route's reach looks again as far as the sampling allows.
+    reaches = (s.search, s.farther) if s.farther > s.search else (s.search,)
+    found, direction, reach, drop, into_piece = _fan(base, normal, tangent, caster, s, params, reaches)
     stepped = np.zeros(len(base), dtype=bool)
     if params.step_up:
         rows = np.nonzero(~found)[0]
@@ -596,7 +632,7 @@ def _ways_out(
         rows, top = rows[near], top[near]
         if len(rows):
             up_found, up_direction, up_reach, up_drop, _ = _fan(top, normal[rows], tangent[rows], caster, s, params,
-                                                                s.search)
+                                                                (s.search,))
             rows, top = rows[up_found], top[up_found]
             base[rows], found[rows], stepped[rows] = top, True, True
             direction[rows], reach[rows], drop[rows] = up_direction[up_found], up_reach[up_found], up_drop[up_found]
@@ -725,7 +761,12 @@ def _match_edges(segments: list[np.ndarray], ways: _Ways, caster: RayCaster, s: 
             ground = np.diff(_ground_at_edge(points, ways.direction[samples], caster, s))
             riser &= np.abs(ground) > s.walkable_tan * run + 1e-9
         if not riser.any():
-            residual = _fit_line(points[:, [0, 2]])[2]
+            _, plan, residual = _fit_line(points[:, [0, 2]])
+            # A line in one walkable surface is no steeper than the agent walks; a steeper fit is the height of
+            # samples on several treads seeing one floor's end (a flight's foot seen from a line of samples going
+            # down it: a vertical line, no edge at all, at 45 degrees), not the edge's: it is level in plan.
+            if abs(direction[1]) > s.walkable_tan * math.hypot(direction[0], direction[2]) + 1e-9:
+                direction = np.array([plan[0], 0.0, plan[1]])
         straight = float(np.count_nonzero(residual <= tolerance)) / len(points)
         if straight < 0.8 and not _follows(points, ways.tangent[samples], cos_match):
             return None  # the edge points fit no straight edge and no curve along the segment: a corner
@@ -748,12 +789,16 @@ def _match_edges(segments: list[np.ndarray], ways: _Ways, caster: RayCaster, s: 
                 continue
         centre, direction, straight = matched
         points = ways.edge[samples]
-        if np.dot(direction, points[-1] - points[0]) < 0:
-            direction = -direction
         nrm = _unit(ways.normal[samples].mean(axis=0))
         out = _unit(np.cross(direction, nrm))
         if np.dot(out, ways.direction[samples].sum(axis=0)) < 0:
             out = -out
+        # The edge runs from ``first`` to ``last`` the way the boundary walks (the floor on its left), as
+        # :func:`_extend` grows its ends: not in its edge points' order, which runs back where samples at a
+        # single-file line's end look out the other way (``pier_end`` on the sampling route: an end grown
+        # inwards past the other, 1.93 m of 2.2; docs/entry_exit.md, "A seventeenth round of piece kinds").
+        if np.dot(direction, np.cross(nrm, out)) < 0:
+            direction = -direction
         t = (points - centre) @ direction
         kept.append(
             _Edge(samples, centre + direction * t.min(), centre + direction * t.max(), out, nrm, min(1.0, straight))
@@ -825,11 +870,12 @@ def _onto_ground_below(points: np.ndarray, out: np.ndarray, depth: np.ndarray, c
 
     An edge found down steps (:func:`_down_steps`) lies at its samples' heights, a tread or more above the floor
     that ends there (a stair going down off the piece: 0.4 m above its foot), where the extension's candidates
-    find no floor within the climb. Probed straight down from the rays' height, half a search step inside the edge;
-    ``depth`` 0 leaves a point as it is.
+    find no floor within the climb. Probed straight down from the rays' height, half a search step inside the edge
+    (a point a little under the ground, where a line fitted through edge points on several treads runs on past
+    them, is raised onto it); ``depth`` NaN leaves a point as it is.
     """
     inset = _INSET_STEPS * s.delta
-    rows = np.flatnonzero(depth > 0.0)
+    rows = np.flatnonzero(np.isfinite(depth))
     lowered = points.copy()
     if not len(rows):
         return lowered
@@ -870,7 +916,19 @@ def _onto_floor_end(first: np.ndarray, last: np.ndarray, out: np.ndarray, caster
     return first + moved, last + moved
 
 
-def _extend(kept: list[_Edge], caster: RayCaster, s: _Settings, depth: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+def _walked_down_to(samples: np.ndarray, ways: _Ways) -> float:
+    """The height of the lowest floor the ways out of ``samples`` walked down steps to, m; NaN when none did."""
+    down = samples[ways.drop[samples] > 0.0]
+    return float(np.min(ways.edge[down, 1] - ways.drop[down])) if len(down) else math.nan
+
+
+def _above(points: np.ndarray, floor: np.ndarray) -> np.ndarray:
+    """(n,) how far (n,3) ``points`` lie above ``floor`` (n,) heights, m (0 where they lie below it); NaN where the
+    floor is."""
+    return np.maximum(points[:, 1] - floor, 0.0)
+
+
+def _extend(kept: list[_Edge], caster: RayCaster, s: _Settings, floor: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """The ends of each opening, extended along its edge (one batched pass per test): (n,3) and (n,3).
 
     Candidates just inside the edge, beyond both ends: the surface must go on under them, the
@@ -878,8 +936,9 @@ def _extend(kept: list[_Edge], caster: RayCaster, s: _Settings, depth: np.ndarra
     above the edge and probe straight down: lifted along a floor's normal that tilts out of the piece
     (a floor sloping down out of it) they would stand ``lift * sin(slope)`` farther out, outside the
     jambs' faces from 7 degrees on, and the extension would run along the walls' outer faces.
-    ``depth`` (n,): how far below its samples each edge's floor may end, down steps (its ends are first
-    lowered onto that ground, :func:`_onto_ground_below`); 0: at its samples' level.
+    ``floor`` (n,): the height of the lowest floor each edge's ways walked down steps to, m (its ends are first
+    lowered onto the ground below them as far down as that floor, :func:`_onto_ground_below`); NaN: at its samples'
+    level.
     """
     n = len(kept)
     out = np.array([e.outward for e in kept])
@@ -887,8 +946,11 @@ def _extend(kept: list[_Edge], caster: RayCaster, s: _Settings, depth: np.ndarra
     inset = _INSET_STEPS * s.delta  # candidates stand this far inside the edge line
     first = _onto_grazed_step(np.array([e.first for e in kept]), out, caster, s)
     last = _onto_grazed_step(np.array([e.last for e in kept]), out, caster, s)
-    first, last = _onto_floor_end(_onto_ground_below(first, out, depth, caster, s),
-                                  _onto_ground_below(last, out, depth, caster, s), out, caster, s)
+    # Each end may lie as far above that floor as the fitted line leaves it: its samples stand on several treads, and
+    # a line through their edge points climbs along the edge (``basement_stair`` at 22 degrees on the sampling route:
+    # an end 0.84 m above the foot, whose ways walked down 0.8 m at most, was left there, 1.28 m of 1.6).
+    first, last = _onto_floor_end(_onto_ground_below(first, out, _above(first, floor), caster, s),
+                                  _onto_ground_below(last, out, _above(last, floor), caster, s), out, caster, s)
     along = _unit(np.cross(nrm, out))  # walking direction along the edge (interior on the left)
     n_ext = max(1, int(math.ceil((2.0 * s.radius + s.step) / s.delta)))
     steps = s.delta * np.arange(1, n_ext + 1)
@@ -1271,8 +1333,8 @@ def _repeated(openings: list[Opening], radius: float, max_turn_deg: float, climb
     opening (the generated ``curb_platform`` turned by 5 to 60 degrees: 2 or 3 per curb gap), and
     an obstacle standing before a doorway splits its samples in two, each seeing part of the door
     (the held-out ``cluttered_room``'s pillar). A narrower opening whose midpoint lies within
-    ``radius`` of a wider one's line in plan, one of its ends or its midpoint within ``climb`` of it
-    in height, whose extent along it overlaps the wider one's and whose heading is within
+    ``radius`` of a wider one's line in plan, one of its ends or its midpoint within ``climb`` of the
+    line's height there (:func:`_along_line`), whose extent along it overlaps the wider one's and whose heading is within
     ``max_turn_deg`` of it is the same opening found again: an edge lies at its samples' heights, and
     samples on a flight's treads see the floor end at its foot within the climb below them, or down
     the steps (on the sampling route ``grand_steps``' foot: a part 0.4 m above the rest; a flight of 12
@@ -1290,28 +1352,45 @@ def _repeated(openings: list[Opening], radius: float, max_turn_deg: float, climb
     for rank, i in enumerate(order):
         if into[i] >= 0 or width[i] <= 0:
             continue
-        along = (last[i] - first[i]) / width[i]
+        span = last[i] - first[i]
         for j in order[rank + 1 :]:
             if into[j] >= 0 or np.dot(heading[i], heading[j]) < cos_turn:
                 continue
-            points = np.stack([first[j], 0.5 * (first[j] + last[j]), last[j]]) - first[i]  # its ends and middle
-            off = points - np.outer(points @ along, along)
-            lo, hi = sorted((np.dot(first[j] - first[i], along), np.dot(last[j] - first[i], along)))
-            near = math.hypot(off[1, 0], off[1, 2]) <= radius and np.abs(off[:, 1]).min() <= climb + _SAME_HEIGHT
-            if near and lo < width[i] and hi > 0.0:
+            u, plan, rise = _along_line(first[i], span, np.stack([first[j], 0.5 * (first[j] + last[j]), last[j]]))
+            near = plan[1] <= radius and np.abs(rise).min() <= climb + _SAME_HEIGHT
+            if near and min(u[0], u[2]) < 1.0 and max(u[0], u[2]) > 0.0:
                 into[j] = i
     return into
 
 
+def _along_line(start: np.ndarray, span: np.ndarray, points: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Where (k,3) ``points`` lie against the line from ``start`` over ``span`` (3,), m, read in plan and in height.
+
+    Returns (k,) the share of the span each lies along in plan (0 at ``start``, 1 at its end), (k,) its distance
+    from the line in plan, m, and (k,) its height above the line's point there, m. On a sloped line (a ramp's or a
+    stair's edge) a perpendicular in 3D leans along it: its height part is not the height over the line, nor its
+    plan part the distance in plan (docs/entry_exit.md, "A seventeenth round of piece kinds"). A line with no length
+    in plan (a riser's) is read along its span in 3D.
+    """
+    rel = points - start
+    plan_span = span * np.array([1.0, 0.0, 1.0])
+    length = float(np.dot(plan_span, plan_span))
+    reference = plan_span if length > 1e-12 else span
+    u = rel @ reference / float(np.dot(reference, reference))
+    off = rel - np.outer(u, span)
+    return u, np.hypot(off[:, 0], off[:, 2]), off[:, 1]
+
+
 def _union_ends(wide: Opening, parts: list[Opening]) -> tuple[np.ndarray, np.ndarray] | None:
-    """The ends of ``wide`` stretched along its own line over ``parts`` (openings repeating it); None when they lie within it."""
+    """The ends of ``wide`` stretched along its own line over ``parts`` (openings repeating it), each part's ends
+    read along it in plan (:func:`_along_line`); None when they lie within it."""
     p0, p1 = np.asarray(wide.p0, dtype=np.float64), np.asarray(wide.p1, dtype=np.float64)
-    along = (p1 - p0) / wide.width
-    t = [float(np.dot(np.asarray(p, dtype=np.float64) - p0, along)) for o in parts for p in (o.p0, o.p1)]
-    lo, hi = min(0.0, *t), max(wide.width, *t)
-    if lo > -1e-9 and hi < wide.width + 1e-9:
+    ends = np.array([p for o in parts for p in (o.p0, o.p1)], dtype=np.float64)
+    u = _along_line(p0, p1 - p0, ends)[0]
+    lo, hi = min(0.0, float(u.min())), max(1.0, float(u.max()))
+    if lo > -1e-9 / wide.width and hi < 1.0 + 1e-9 / wide.width:
         return None
-    return p0 + along * lo, p0 + along * hi
+    return p0 + (p1 - p0) * lo, p0 + (p1 - p0) * hi
 
 
 def detect_openings(
@@ -1356,7 +1435,7 @@ def detect_openings(
     if not kept:
         return Detection((), (), ())
     # How far down steps the edges' samples found the floor ending (the deepest; 0 for a floor's own level).
-    p_first, p_last = _extend(kept, caster, s, np.array([ways.drop[e.samples].max() for e in kept]))
+    p_first, p_last = _extend(kept, caster, s, np.array([_walked_down_to(e.samples, ways) for e in kept]))
 
     corners = np.asarray(mesh.triangles, dtype=np.float64)
     frame = piece_frame(mesh)
