@@ -90,7 +90,7 @@ def test_the_cheapest_dent_goes_first_and_the_budget_bounds_the_rest(registry):
     dropped = coverage.dents_within_budget(result.graph, result.context.navmesh, arrays, cover.leaves,
                                            coverage.walking_percentile(arrays), 2.0, cover.rows, radius, budget)
     assert 1 <= len(dropped) <= 3 and costs[np.isin(dents, dropped)].sum() <= budget
-    # no dent is deeper than 1 m here: they are all 1.6-1.8 m deep
+    # no leaf is a dent at 1 m here: the bays are all 1.6-1.8 m deep
     assert coverage.dent_costs(result.graph, result.context.navmesh, arrays, cover.leaves, rank, 1.0, cover.rows,
                                radius)[0].size == 0
 

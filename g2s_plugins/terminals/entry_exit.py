@@ -924,7 +924,7 @@ def _walked_down_to(samples: np.ndarray, ways: _Ways) -> float:
 
 def _above(points: np.ndarray, floor: np.ndarray) -> np.ndarray:
     """(n,) how far (n,3) ``points`` lie above ``floor`` (n,) heights, m (0 where they lie below it); NaN where the
-    floor is."""
+    floor is NaN."""
     return np.maximum(points[:, 1] - floor, 0.0)
 
 
