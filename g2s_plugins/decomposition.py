@@ -1422,12 +1422,12 @@ def _way_ends(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocked: np.n
     n = len(labels)
     csr = portals_of(pairs, n)
     points = np.array([k["position"] for k in kept])
-    local = np.zeros((len(kept), 2))
+    beside = np.zeros((len(kept), 2))  # the pinch rule's floor near a cut, each side
     look = np.flatnonzero(way[sides].any(axis=1))
-    local[look] = local_widths(navmesh, labels, points[look], sides[look], PINCH_REACH * (width[look] + 2.0 * radius),
-                               clearance.open_walls)  # the pinch rule's floor near a cut
+    beside[look] = local_widths(navmesh, labels, points[look], sides[look], PINCH_REACH * (width[look] + 2.0 * radius),
+                                clearance.open_walls)
     labels = labels.copy()
-    for k, (a, b), floor_near in zip(kept, sides.tolist(), local):
+    for k, (a, b), floor_near in zip(kept, sides.tolist(), beside):
         for w, other, beyond in ((a, b, floor_near[1]), (b, a, floor_near[0])):
             if not way[w] or way[other] or beyond * params.narrowness > float(k["width"]):
                 continue  # no way, or the floor beyond the cut is wider than it: the way ends there
