@@ -71,13 +71,17 @@ def main(argv: list[str] | None = None) -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--levels", nargs="+", default=["cruise_ship", "beach", "hotel", "hospital", "nav_test", "stepwell"])
     parser.add_argument("--seeds", nargs="+", type=int, default=[0])
-    parser.add_argument("--depth", type=float, default=2.0, help="metres: a dead end within this of its way in is a dent")
+    parser.add_argument("--depth", type=float, default=None,
+                        help="metres: a dead end within this of its way in is a dent (default: the preset's "
+                        "dent_depth, which its drops use too, or 2 m where it sets none)")
     parser.add_argument("--preset", default="map_analysis")
     args = parser.parse_args(argv)
     registry = Registry.from_entry_points()
     config = parse_config(load_raw_config(find_config(args.preset)), args.preset)
     plan = pipeline.plan(config, registry, args.preset)
     params = coverage.Params(**config.terminals.params)
+    if args.depth is None:
+        args.depth = params.dent_depth or 2.0
     for name, mesh in levels(args.levels, args.seeds):
         result = pipeline.run(plan, registry, mesh, name, "-")
         graph, navmesh = result.graph, result.context.navmesh
