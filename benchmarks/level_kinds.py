@@ -150,8 +150,11 @@ from itertools import pairwise
 from pathlib import Path
 
 import numpy as np
+import scipy.sparse as sp
 import trimesh
 from scipy import ndimage
+from scipy.sparse.csgraph import connected_components, minimum_spanning_tree
+from scipy.spatial import Voronoi, cKDTree
 
 
 def _cut_lines(x0: float, x1: float, z0: float, z1: float,
@@ -7209,6 +7212,674 @@ def radial_town(seed: int) -> trimesh.Trimesh:
     return s.mesh()
 
 
+def _inset(poly: np.ndarray, dist: np.ndarray) -> np.ndarray | None:
+    """The convex polygon ``poly`` (k, 2) of x, z, counter-clockwise, with each edge i (vertex i to i + 1) moved
+    ``dist[i]`` m inward: at each vertex the meeting point of its two edges' moved lines (k, 2); None when an edge
+    would shrink under 0.5 m or turn round (the polygon too small for those distances)."""
+    edges = np.roll(poly, -1, axis=0) - poly
+    inward = np.stack([-edges[:, 1], edges[:, 0]], axis=1) / np.linalg.norm(edges, axis=1)[:, None]
+    on_line = poly + inward * np.asarray(dist)[:, None]
+    out = []
+    for i in range(len(poly)):
+        j = i - 1
+        m = np.array([edges[j], -edges[i]]).T
+        if abs(np.linalg.det(m)) < 1e-9:
+            return None
+        t = np.linalg.solve(m, on_line[i] - on_line[j])[0]
+        out.append(on_line[j] + t * edges[j])
+    out = np.array(out)
+    moved = np.roll(out, -1, axis=0) - out
+    lengths = np.linalg.norm(edges, axis=1)
+    if (np.einsum("ij,ij->i", moved, edges) / lengths < 0.5).any():
+        return None
+    return out
+
+
+def bazaar(seed: int) -> trimesh.Trimesh:
+    """A covered bazaar (a souk) 110-130 x 80-95 m under one roof 5.5 m up (:func:`_lid`): stalls of irregular
+    plan, the cells of a Voronoi diagram of a jittered 8.5 m grid of points (about 150), each cell's stall shrunk
+    from its edges by 0.9-2.0 m (drawn a cell), so the alleys between them, 1.8-4 m wide, run at every angle and
+    change width at every junction; about a sixth of the alleys (those whose loss keeps the alleys one network)
+    are built over, leaving blind alleys; 3-4 cells are open courtyards (khans) with a fountain; a cell too small
+    for its insets is an open square. Stalls are solid to 4.5 m (1 m under the roof, so their tops hold no floor);
+    the only floor is the alleys, squares and courtyards. A wall 0.6 m thick round it, open at one gate a side
+    (a border cell left open), and a street 12 m wide outside, uncovered, with trees.
+
+    Expected (written before the first run): the structure covers every alley and blind alley (the blind ones as
+    leaves, with a terminal at each end), the courtyards and the four gates; a designer expects traffic highest on
+    the ways between the gates (the widest, most direct alleys through the middle), on the street outside between
+    neighbouring gates and in the courtyards on those ways; lowest in blind alleys and the bazaar's corners.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    size_x, size_z, roof, stall = rng.uniform(110.0, 130.0), rng.uniform(80.0, 95.0), 5.5, 4.5
+    nx, nz = int(size_x / 8.5), int(size_z / 8.5)
+    gx, gz = np.meshgrid((np.arange(nx) + 0.5) * size_x / nx, (np.arange(nz) + 0.5) * size_z / nz, indexing="ij")
+    points = np.stack([gx.ravel(), gz.ravel()], axis=1) + rng.uniform(-0.3, 0.3, (nx * nz, 2)) * [size_x / nx, size_z / nz]
+    n = len(points)
+    # mirrored over the four sides, so every cell of the points is bounded by the rectangle
+    mirrored = np.concatenate([points, points * [-1, 1], points * [-1, 1] + [2 * size_x, 0],
+                               points * [1, -1], points * [1, -1] + [0, 2 * size_z]])
+    vor, tree = Voronoi(mirrored), cKDTree(mirrored)
+    cells, neighbours = [], []  # each cell's corners (k, 2), counter-clockwise, and the point across each edge (-1: a side)
+    for i in range(n):
+        poly = np.clip(vor.vertices[vor.regions[vor.point_region[i]]], [0.0, 0.0], [size_x, size_z])
+        centre = poly.mean(axis=0)
+        poly = poly[np.argsort(np.arctan2(poly[:, 1] - centre[1], poly[:, 0] - centre[0]))]
+        poly = poly[np.linalg.norm(np.roll(poly, -1, axis=0) - poly, axis=1) > 1e-6]
+        _, near = tree.query((poly + np.roll(poly, -1, axis=0)) / 2, k=2)
+        across = [int(b) if a == i else int(a) for a, b in near]
+        neighbours.append([j if j < n else -1 for j in across])
+        cells.append(poly)
+    half = rng.uniform(0.9, 2.0, n)
+    insets = [_inset(poly, np.array([0.0 if j < 0 else half[i] for j in neighbours[i]])) for i, poly in enumerate(cells)]
+    border = [i for i in range(n) if -1 in neighbours[i]]
+    inner = [i for i in range(n) if i not in border]
+    open_cells = {i for i in range(n) if insets[i] is None and i in inner}
+    gates: list[tuple[int, int]] = []  # (cell, its edge on the side)
+    for side in range(4):
+        t = rng.uniform(0.25, 0.75)
+        target = [(t * size_x, 0.0), (t * size_x, size_z), (0.0, t * size_z), (size_x, t * size_z)][side]
+        best = min(border, key=lambda i: np.linalg.norm(cells[i].mean(axis=0) - target))
+        edge = min((k for k, j in enumerate(neighbours[best]) if j < 0),
+                   key=lambda k: np.linalg.norm((cells[best][k] + cells[best][(k + 1) % len(cells[best])]) / 2 - target))
+        gates.append((best, edge))
+        open_cells.add(best)
+    khans = rng.choice([i for i in inner if i not in open_cells], int(rng.integers(3, 5)), replace=False)
+    open_cells |= {int(k) for k in khans}
+    # the alleys as a graph on the cells' corners; built-over alleys drawn among those whose loss keeps it one
+    key = {}
+
+    def corner(p: np.ndarray) -> int:
+        return key.setdefault((round(p[0], 3), round(p[1], 3)), len(key))
+
+    alleys: dict[frozenset[int], tuple[int, int]] = {}
+    plazas: list[list[int]] = []
+    for i, poly in enumerate(cells):
+        ids = [corner(p) for p in poly]
+        if i in open_cells:
+            plazas.append(ids)
+        for k, j in enumerate(neighbours[i]):
+            if j >= 0:
+                alleys[frozenset((i, j))] = (ids[k], ids[(k + 1) % len(ids)])
+
+    def connected(edges: list[tuple[int, int]]) -> bool:
+        rows = [a for a, _ in edges] + [p[0] for p in plazas for _ in p[1:]]
+        cols = [b for _, b in edges] + [q for p in plazas for q in p[1:]]
+        graph = sp.coo_matrix((np.ones(len(rows)), (rows, cols)), shape=(len(key),) * 2)
+        label = connected_components(graph, directed=False)[1]
+        used = np.unique(rows + cols)
+        return len(np.unique(label[used])) == 1
+
+    closed: set[frozenset[int]] = set()
+    candidates = [e for e in alleys if not e & open_cells]
+    for e in rng.permutation(len(candidates))[: len(candidates) // 6 + 20]:
+        edge = candidates[int(e)]
+        if len(closed) < len(alleys) // 6 and connected([v for k, v in alleys.items() if k not in closed | {edge}]):
+            closed.add(edge)
+    for i, poly in enumerate(cells):
+        if i in open_cells:
+            s.prism(poly, -0.5, 0.0)
+            continue
+        inset = insets[i]
+        if inset is None:  # a border cell too small for its insets: all stall
+            s.prism(poly, -0.5, stall)
+            continue
+        s.prism(inset, -0.5, stall)
+        for k, j in enumerate(neighbours[i]):
+            if j >= 0:
+                band = np.array([poly[k], poly[(k + 1) % len(poly)], inset[(k + 1) % len(poly)], inset[k]])
+                s.prism(band, -0.5, stall if frozenset((i, j)) in closed else 0.0)
+    for k in khans:  # a fountain in each courtyard: a basin 0.8 m high
+        _trunk(s, cells[k].mean(axis=0), 1.2, -0.5, 0.8)
+    # the wall, open over each gate's edge, the roof and the street outside
+    doors: dict[int, list[tuple[float, float]]] = {0: [], 1: [], 2: [], 3: []}
+    for cell, k in gates:
+        a, b = cells[cell][k], cells[cell][(k + 1) % len(cells[cell])]
+        side = 0 if np.isclose(a[1], 0.0) and np.isclose(b[1], 0.0) else 1 if np.isclose(a[1], size_z) and np.isclose(b[1], size_z) \
+            else 2 if np.isclose(a[0], 0.0) else 3
+        lo, hi = sorted((a[0], b[0]) if side < 2 else (a[1], b[1]))
+        doors[side].append((lo + 0.6 + 0.5, hi - lo - 1.0))
+    s.wall((-0.6, -0.3), (size_x + 0.6, -0.3), -0.5, stall, doors[0], thickness=0.6)
+    s.wall((-0.6, size_z + 0.3), (size_x + 0.6, size_z + 0.3), -0.5, stall, doors[1], thickness=0.6)
+    s.wall((-0.3, 0.0), (-0.3, size_z), -0.5, stall, doors[2], thickness=0.6)
+    s.wall((size_x + 0.3, 0.0), (size_x + 0.3, size_z), -0.5, stall, doors[3], thickness=0.6)
+    _lid(s, -0.6, size_x + 0.6, -0.6, size_z + 0.6, roof)
+    for _ in range(int(rng.integers(40, 60))):  # trees along the street, 4-8 m out from the wall
+        t, out, side = rng.uniform(0.0, 1.0), rng.uniform(4.5, 8.0), int(rng.integers(4))
+        p = [(t * size_x, -out), (t * size_x, size_z + out), (-out, t * size_z), (size_x + out, t * size_z)][side]
+        _trunk(s, np.array(p), 0.35, -0.5, 6.0)
+    s.ground(-12.6, size_x + 12.6, -12.6, size_z + 12.6, 0.0, [(-0.6, size_x + 0.6, -0.6, size_z + 0.6)])
+    return s.mesh()
+
+
+def container_port(seed: int) -> trimesh.Trimesh:
+    """A container terminal 230-260 m along its quay (z = 0; the sea, no floor, beyond): an apron 36 m deep under 3-4
+    ship-to-shore cranes (legs 1.2 m square on a 16 x 28 m portal, a girder 40 m up ridged), then a straddle-carrier
+    yard: 18-22 rows along x, each one container wide (2.44 m), cut into blocks of 5-7 slots of 12.2 m (40-foot
+    boxes) by cross aisles 12 m wide, stacked 1-3 high (2.6 m a box; a slot left empty one time in twelve, a pocket
+    joining the lanes either side of it), the rows 1.8-2.4 m apart (the straddle lanes); behind the yard a road 14 m
+    wide, a gate of 6-8 lanes between ridged booths, an office (ridged) and a car park. The containers' tops are flat
+    floor out of reach at 2.6, 5.2 and 7.8 m, hundreds of pieces; the ground stops under every stack.
+
+    Expected (written before the first run): on the ground the structure covers the apron, every straddle lane (long
+    narrow corridors with both ends on a cross aisle), the pockets, the cross aisles, the road, gate lanes and car
+    park; the container tops are covered as pieces of their own (out of reach, so no traffic), those under the
+    cover's smallest area left out with a warning. Traffic highest on the cross aisles and the apron (the ways
+    between the yard's blocks and along the quay) and on the road to the gate; each straddle lane carries little,
+    evenly along its length; the pockets are short cuts between lanes.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    length, apron, box, slot = rng.uniform(230.0, 260.0), 36.0, 2.6, 12.2
+    holes: list[tuple[float, float, float, float]] = []
+    # the cranes on the apron
+    x = rng.uniform(10.0, 30.0)
+    for _ in range(int(rng.integers(3, 5))):
+        if x + 18.0 > length - 10.0:
+            break
+        for dx in (0.0, 16.0):
+            for z in (3.0, 31.0):
+                s.box(x + dx, x + dx + 1.2, -0.5, 40.0, z, z + 1.2)
+                holes.append((x + dx, x + dx + 1.2, z, z + 1.2))
+        _ridged(s, x - 1.0, x + 18.2, -40.0, 40.0, 40.0, 42.0)
+        x += rng.uniform(40.0, 60.0)
+    # the yard: rows of stacks along x, blocks of slots between cross aisles
+    z, rows = apron, int(rng.integers(18, 23))
+    blocks: list[tuple[float, float]] = []
+    xb = 10.0
+    while True:
+        span = int(rng.integers(5, 8)) * slot
+        if xb + span > length - 10.0:
+            break
+        blocks.append((xb, xb + span))
+        xb += span + 12.0
+    for _ in range(rows):
+        z += rng.uniform(1.8, 2.4)
+        for x0, x1 in blocks:
+            for xs in np.arange(x0, x1 - 1.0, slot):
+                if rng.random() < 1.0 / 12.0:
+                    continue
+                h = int(rng.choice([1, 2, 3], p=[0.3, 0.4, 0.3]))
+                s.box(xs, xs + slot, -0.5, h * box, z, z + 2.44)
+                holes.append((xs, xs + slot, z, z + 2.44))
+        z += 2.44
+    z += rng.uniform(1.8, 2.4)
+    # the road, the gate, the office and the car park
+    road = z + 14.0
+    depth = road + 40.0
+    lanes = int(rng.integers(6, 9))
+    gx = rng.uniform(20.0, length - 20.0 - lanes * 5.0)
+    for k in range(lanes + 1):
+        holes.append(_ridged(s, gx + 5.0 * k, gx + 5.0 * k + 1.2, road + 6.0, road + 12.0, -0.5, 1.6))
+    ox = gx + lanes * 5.0 + 15.0 if gx < length / 2 else gx - 45.0
+    holes.append(_ridged(s, ox, ox + 30.0, road + 4.0, road + 16.0, -0.5, 9.0))
+    px = rng.uniform(5.0, length - 60.0)
+    while px < gx + lanes * 5.0 + 5.0 and px + 55.0 > gx - 5.0 or px < ox + 35.0 and px + 55.0 > ox - 5.0:
+        px = rng.uniform(5.0, length - 60.0)
+    for i, xc in enumerate(np.arange(px, px + 52.0, 2.6)):
+        for zc in (road + 22.0, road + 32.0):
+            if i % 5 and rng.random() < 0.7:
+                _car(s, xc, xc + 1.8, zc, zc + 4.5, 0.0)
+    s.wall((0.0, depth), (length, depth), -0.5, 2.4, [(gx - 1.0, lanes * 5.0 + 3.2)], thickness=0.2)
+    for xw in (0.0, length):
+        s.wall((xw, 0.0), (xw, depth), -0.5, 2.4, thickness=0.2)
+    for _ in range(int(rng.integers(10, 16))):  # trucks waiting in the gate lanes and on the road
+        if rng.random() < 0.5:
+            k = int(rng.integers(lanes))
+            _car(s, gx + 5.0 * k + 1.9, gx + 5.0 * k + 4.3, road + 1.0, road + 13.0, 0.0)
+        else:
+            xt = rng.uniform(5.0, length - 20.0)
+            if _clear(xt, xt + 14.0, z + 1.0, z + 4.0, [(gx - 2.0, gx + lanes * 5.0 + 3.0, z, road + 14.0)]):
+                _car(s, xt, xt + 14.0, z + 1.5, z + 4.0, 0.0)
+    s.ground(0.0, length, 0.0, depth, 0.0, holes)
+    return s.mesh()
+
+
+def theatre(seed: int) -> trimesh.Trimesh:
+    """A Greek theatre cut into a hillside: an orchestra 11 m in radius (y = 0) and a cavea over the half turn north
+    of it (x, z = r cos a, r sin a, 0 <= a <= 180 degrees) of seat tiers 0.84 m deep rising 0.45 m each (over the
+    climb, and too shallow for the agent to stand on), 18-22 in the lower section and 12-16 in the upper, with a
+    walkway (the diazoma) 2.6 m wide between them. The only ways up are radial aisles 1.8 m wide, three steps of
+    0.15 / 0.28 m a tier, between rails 0.3 m thick and 0.9 m over the seats (so no seat is a neighbour of an aisle
+    step in Recast's ledge filter): 5-7 in the lower section, twice as many less one in the upper. Above the top
+    tier the hill: a terrace 24 m deep round the cavea (a temple, altars, trees), which ends in a drop of 15-18 m to
+    the plain at z = 0 and is also reached by two straight flights 2.4 m wide from the plain up to its ends. South
+    of the orchestra the plain (y = 0, 160 x 50 m): the stage building (ridged) with a stage 2.5 m high before it
+    (a flight at each end), statues, a stoa and trees. No flight before this one ran off the x and z axes.
+
+    Expected (written before the first run): the structure covers the orchestra, every aisle (as a chain up the
+    cavea), the diazoma (a curved ring), the terrace and the plain with the stage; the seats hold no floor. Traffic
+    highest on the aisles nearest the middle and on the diazoma between them (the ways between plain and terrace
+    besides the two flights), on the orchestra and on the plain between the flights' feet and the orchestra; lowest
+    on the terrace's far corners, the stage and the plain's corners.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    orchestra, depth, rise, aisle, rail = 11.0, 0.84, 0.45, 1.8, 0.3
+    lower, upper, wedges = int(rng.integers(18, 23)), int(rng.integers(12, 17)), int(rng.integers(6, 9))
+    low_aisles = [math.pi * k / wedges for k in range(1, wedges)]
+    up_aisles = [math.pi * k / (2 * wedges) for k in range(1, 2 * wedges)]
+    first = int(rng.integers(10, 74))  # the terrace's temple stands over its 2-degree chords first to first + 5
+    # tiers: (inner radius, seats' outer radius, outer radius, top, aisles' angles); a walkway tier has more beyond
+    # its seat row: the diazoma (its aisles the lower ones) and the terrace (its aisles the upper ones)
+    tiers: list[tuple[float, float, float, float, list[float]]] = []
+    r, y = orchestra, 0.0
+    for i in range(lower + 1 + upper + 1):
+        y += rise
+        aisles = low_aisles if i <= lower else up_aisles
+        beyond = 2.6 if i == lower else 24.0 if i == lower + upper + 1 else 0.0
+        tiers.append((r, r + depth, r + depth + beyond, y, aisles))
+        r += depth + beyond
+    top = y
+    ends = (0.0, math.pi)
+    for r0, r1, r2, y, aisles in tiers:
+        gaps_in = [math.asin((aisle / 2 + rail) / r0) for _ in aisles]
+        gaps_out = [math.asin((aisle / 2 + rail) / r1) for _ in aisles]
+        bounds = [(ends[0], ends[0])] + [(a - g0, a - g1) for a, g0, g1 in zip(aisles, gaps_in, gaps_out)]
+        starts = [(ends[0], ends[0])] + [(a + g0, a + g1) for a, g0, g1 in zip(aisles, gaps_in, gaps_out)]
+        bounds = bounds[1:] + [(ends[1], ends[1])]
+        for (a0_in, a0_out), (a1_in, a1_out) in zip(starts, bounds):  # the seats between aisles, chords of <= 3 degrees
+            m = max(1, math.ceil((a1_out - a0_out) / math.radians(3.0)))
+            for j in range(m):
+                t0, t1 = j / m, (j + 1) / m
+                s.prism(np.array([_polar(r0, a0_in + t0 * (a1_in - a0_in)), _polar(r1, a0_out + t0 * (a1_out - a0_out)),
+                                  _polar(r1, a0_out + t1 * (a1_out - a0_out)), _polar(r0, a0_in + t1 * (a1_in - a0_in))]),
+                        -0.5, y)
+        for a in aisles:  # three steps and a rail either side
+            for j in range(3):
+                s.prism(_strip(_polar(r0 + j * depth / 3, a), _polar(r0 + (j + 1) * depth / 3, a), aisle), -0.5, y - rise + 0.15 * (j + 1))
+            for side in (-1.0, 1.0):
+                offset = np.array([-math.sin(a), math.cos(a)]) * side * (aisle + rail) / 2
+                s.prism(_strip(_polar(r0, a) + offset, _polar(r1, a) + offset, rail), -0.5, y + 0.9)
+        if r2 > r1:  # the walkway beyond the seat row: chords round the whole half turn
+            m = 60 if r2 - r1 < 5.0 else 90  # chords of 3 or 2 degrees
+            for j in range(m):
+                a0, a1 = math.pi * j / m, math.pi * (j + 1) / m
+                bands = [(r1, r2)] if r2 - r1 < 5.0 or not first <= j < first + 6 else [(r1, r1 + 8.0), (r1 + 16.0, r2)]
+                for ra, rb in bands:
+                    s.prism(np.array([_polar(ra, a0), _polar(rb, a0), _polar(rb, a1), _polar(ra, a1)]), -0.5, y)
+    outer = r
+    s.prism(np.array([_polar(orchestra, math.pi * k / 24) for k in range(48)]), -0.5, 0.0)
+    # on the terrace: a temple (the terrace stops under it: its floor would be inside), altars and trees
+    terrace = (outer - 24.0, outer)
+    temple = (math.pi * first / 90, math.pi * (first + 6) / 90, terrace[0] + 8.0, terrace[0] + 16.0)
+    corners = [_polar(rr, aa) for aa in temple[:2] for rr in temple[2:]]
+    ridge = [_polar((temple[2] + temple[3]) / 2, aa) for aa in temple[:2]]
+    s.hull(np.array([[p[0], yy, p[1]] for p in corners for yy in (top - 0.5, top + 6.0)] + [[p[0], top + 12.0, p[1]] for p in ridge]))
+    c = _polar((temple[2] + temple[3]) / 2, (temple[0] + temple[1]) / 2)
+    for _ in range(int(rng.integers(40, 60))):
+        rr, aa = rng.uniform(terrace[0] + 4.0, terrace[1] - 1.5), rng.uniform(0.05, math.pi - 0.05)
+        p = _polar(rr, aa)
+        if np.linalg.norm(p - c) > 12.0 and min(abs(aa - q) for q in up_aisles) * rr > 3.0:
+            if rng.random() < 0.2:
+                s.box(p[0] - 0.6, p[0] + 0.6, top - 0.5, top + 1.0, p[1] - 0.6, p[1] + 0.6)
+            else:
+                _trunk(s, p, rng.uniform(0.25, 0.45), top - 0.5, top + 6.0)
+    # the two flights from the plain up to the terrace's ends (head-on into its end face, along +z)
+    steps = math.ceil(top / 0.18)
+    run = steps * 0.28
+    holes: list[tuple[float, float, float, float]] = []
+    for sign in (-1.0, 1.0):
+        xf = sign * (outer - 8.0)
+        s.stairs(np.array([xf, -run]), np.array([0.0, 1.0]), 2.4, 0.0, top, top / steps, 0.28)
+        holes.append((xf - 1.2, xf + 1.2, -run, 0.0))
+    # the plain: the stage building and stage, a stoa, statues, trees
+    holes.append(_ridged(s, -20.0, 20.0, -30.0, -20.0, -0.5, 9.0))
+    s.box(-16.0, 16.0, -0.5, 2.5, -20.0, -15.0)
+    holes.append((-16.0, 16.0, -20.0, -15.0))
+    stage_steps = math.ceil(2.5 / 0.18)
+    for sign in (-1.0, 1.0):
+        s.stairs(np.array([sign * (16.0 + stage_steps * 0.28), -17.5]), np.array([-sign, 0.0]), 2.0, 0.0, 2.5,
+                 2.5 / stage_steps, 0.28)
+        holes.append((min(sign * 16.0, sign * (16.0 + stage_steps * 0.28)), max(sign * 16.0, sign * (16.0 + stage_steps * 0.28)),
+                      -18.5, -16.5))
+    sx = rng.uniform(-60.0, 20.0)
+    holes.append(_ridged(s, sx, sx + 40.0, -48.0, -42.0, -0.5, 5.0))
+    taken = [(h[0] - 2.0, h[1] + 2.0, h[2] - 2.0, h[3] + 2.0) for h in holes] + [(-orchestra - 2.0, orchestra + 2.0, -orchestra - 2.0, 1.0)]
+    taken += [(sign * (outer - 8.0) - 4.0, sign * (outer - 8.0) + 4.0, -run - 6.0, 0.0) for sign in (-1.0, 1.0)]
+    for _ in range(int(rng.integers(60, 90))):
+        p = np.array([rng.uniform(-78.0, 78.0), rng.uniform(-48.0, -2.0)])
+        if _clear(p[0] - 1.0, p[0] + 1.0, p[1] - 1.0, p[1] + 1.0, taken):
+            if rng.random() < 0.15:
+                s.box(p[0] - 0.8, p[0] + 0.8, -0.5, 2.0, p[1] - 0.8, p[1] + 0.8)
+                holes.append((p[0] - 0.8, p[0] + 0.8, p[1] - 0.8, p[1] + 0.8))
+            else:
+                _trunk(s, p, rng.uniform(0.25, 0.45), -0.5, 6.0)
+            taken.append((p[0] - 1.5, p[0] + 1.5, p[1] - 1.5, p[1] + 1.5))
+    s.ground(-80.0, 80.0, -50.0, 0.0, 0.0, holes)
+    return s.mesh()
+
+
+def _turn(u: np.ndarray, v: np.ndarray, w: np.ndarray) -> float:
+    """Twice the signed area (m²) of the plan triangle u, v, w (each (2,)): > 0 when w is left of u -> v."""
+    return float((v[0] - u[0]) * (w[1] - u[1]) - (v[1] - u[1]) * (w[0] - u[0]))
+
+
+def _crosses(p: np.ndarray, q: np.ndarray, a: np.ndarray, b: np.ndarray) -> bool:
+    """Whether the plan segments p-q and a-b (each end (2,)) cross at a point inside both."""
+    return _turn(p, q, a) * _turn(p, q, b) < 0 and _turn(a, b, p) * _turn(a, b, q) < 0
+
+
+def stilt_village(seed: int) -> trimesh.Trimesh:
+    """A village on stilts over a lagoon 170 x 120 m (water: no floor) off a bank 2.4 m up to the north (z 120-150,
+    trees, huts): 30-36 house platforms 7-11 m square, their tops 2.25-2.55 m up, at least 14 m apart, each with a
+    house of one room (walls 2.6 m high, a door 1.6 m wide on a side drawn, a gable roof) on a verandah 2 m wide, and
+    a market platform 16 x 12 m of stalls. Boardwalks 1.8 m wide, without rails, join them at whatever angle their
+    centres lie: the Euclidean minimum spanning tree of the platforms and three landings on the bank, and about a
+    third of the other pairs under 30 m apart whose walk crosses none already laid; each boardwalk slopes from one
+    platform's top to the other's. Posts under the platforms' corners; 5-7 platforms have a ramp down to a pontoon
+    0.4 m over the water with a boat (ridged) beside it. Decks at random angles over nothing: every earlier round's
+    bridges and boardwalks ran along x or z or round a circle.
+
+    Expected (written before the first run): the structure covers every boardwalk (a chain each), every verandah
+    round its house and the house's room behind its door (a leaf), the market, the pontoons (leaves at their ramps'
+    ends) and the bank. Traffic highest on the tree's trunk boardwalks (those the most platforms reach the bank
+    through: near the bank's landings and the market), lowest on the platforms at the tree's leaves, the pontoons
+    and inside the houses.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    size_x, size_z, bank = 170.0, 120.0, 2.4
+    centres: list[np.ndarray] = [np.array([rng.uniform(50.0, 120.0), rng.uniform(45.0, 80.0)])]
+    halves: list[tuple[float, float]] = [(8.0, 6.0)]  # the market
+    target = int(rng.integers(30, 37))
+    while len(centres) < target:
+        p = np.array([rng.uniform(8.0, size_x - 8.0), rng.uniform(8.0, size_z - 12.0)])
+        if all(np.linalg.norm(p - c) > 14.0 + (6.0 if k == 0 else 0.0) for k, c in enumerate(centres)):
+            h = rng.uniform(3.5, 5.5)
+            centres.append(p)
+            halves.append((h, h))
+    tops = [bank] + [bank + rng.uniform(-0.15, 0.15) for _ in centres[1:]]
+    landings = [np.array([x, size_z]) for x in np.sort(rng.uniform(15.0, size_x - 15.0, 3))]
+    nodes = centres + landings
+    heights = tops + [bank] * 3
+    count = len(nodes)
+    d = np.array([[np.linalg.norm(a - b) for b in nodes] for a in nodes])
+    apart = d.copy()
+    apart[len(centres):, len(centres):] = 0.0  # no walk from landing to landing (0: no edge)
+    tree = minimum_spanning_tree(sp.csr_matrix(apart)).tocoo()
+    walks = [tuple(sorted((int(i), int(j)))) for i, j in zip(tree.row, tree.col)]
+    others = sorted(((d[i, j], i, j) for i in range(count) for j in range(i + 1, count)
+                     if (i, j) not in walks and d[i, j] < 30.0 and not (i >= len(centres) and j >= len(centres))))
+    for _, i, j in others:
+        clear = all(not _crosses(nodes[i], nodes[j], nodes[a], nodes[b]) for a, b in walks if len({a, b, i, j}) == 4)
+        away = all(abs(_turn(nodes[i], nodes[j], nodes[k])) / d[i, j] > max(halves[k]) + 2.0
+                   for k in range(len(centres)) if k not in (i, j)
+                   and 0.0 < np.dot(nodes[k] - nodes[i], nodes[j] - nodes[i]) < d[i, j] ** 2)
+        if clear and away and rng.random() < 0.35:
+            walks.append((i, j))
+
+    def edge_point(k: int, toward: np.ndarray) -> np.ndarray:
+        """Where the walk from node ``k`` toward ``toward`` starts: 1 m inside the platform's edge (a landing's
+        point on the bank, 1 m in)."""
+        u = (toward - nodes[k]) / np.linalg.norm(toward - nodes[k])
+        if k >= len(centres):
+            return nodes[k] + np.array([0.0, 1.0])
+        hx, hz = halves[k]
+        t = min(hx / abs(u[0]) if abs(u[0]) > 1e-9 else math.inf, hz / abs(u[1]) if abs(u[1]) > 1e-9 else math.inf)
+        return nodes[k] + u * (t - 1.0)
+
+    for i, j in walks:
+        a, b = edge_point(i, nodes[j]), edge_point(j, nodes[i])
+        s.ramp(a, b, 1.8, heights[i], heights[j])
+    # the platforms, their houses and posts; the market's stalls
+    for k, (c, (hx, hz), y) in enumerate(zip(centres, halves, tops)):
+        s.box(c[0] - hx, c[0] + hx, y - 0.4, y, c[1] - hz, c[1] + hz)
+        for dx in (-hx + 0.3, hx - 0.3):
+            for dz in (-hz + 0.3, hz - 0.3):
+                _trunk(s, c + np.array([dx, dz]), 0.15, -3.0, y - 0.35)
+        if k == 0:
+            for x in np.arange(c[0] - 6.0, c[0] + 5.0, 4.0):
+                for z in (c[1] - 3.5, c[1] + 2.0):
+                    if rng.random() < 0.8:
+                        _ridged(s, x, x + 2.2, z, z + 1.5, y - 0.3, y + 1.0)
+            continue
+        r = hx - 2.0
+        side = int(rng.integers(4))
+        x0, x1, z0, z1 = c[0] - r, c[0] + r, c[1] - r, c[1] + r
+        door = [(r - 0.8, 1.6)]
+        s.wall((x0, z0), (x1, z0), y, y + 2.6, door if side == 0 else [])
+        s.wall((x0, z1), (x1, z1), y, y + 2.6, door if side == 1 else [])
+        s.wall((x0, z0), (x0, z1), y, y + 2.6, door if side == 2 else [])
+        s.wall((x1, z0), (x1, z1), y, y + 2.6, door if side == 3 else [])
+        _gable(s, x0 - 0.3, x1 + 0.3, z0 - 0.3, z1 + 0.3, y + 2.6)
+    # pontoons: off the side of a platform no walk leaves from, where the water is clear
+    used = 0
+    for k in rng.permutation(np.arange(1, len(centres))):
+        if used >= int(rng.integers(5, 8)):
+            break
+        c, (hx, _), y = centres[k], halves[k], tops[k]
+        leaving = [nodes[j if i == k else i] - c for i, j in walks if k in (i, j)]
+        for u in (np.array([1.0, 0.0]), np.array([-1.0, 0.0]), np.array([0.0, -1.0])):
+            if all(np.dot(u, w) / np.linalg.norm(w) < 0.5 for w in leaving):
+                a, b = c + u * (hx - 1.0), c + u * (hx + 13.0)
+                end = c + u * (hx + 21.0)
+                lo, hi = np.minimum(a, end) - 5.0, np.maximum(a, end) + 5.0
+                if hi[0] < size_x and lo[0] > 0.0 and lo[1] > 0.0 and all(
+                        np.any(np.abs(o - (a + end) / 2) > (hi - lo) / 2 + max(halves[m])) for m, o in enumerate(centres) if m != k) \
+                        and all(not _crosses(a, end, edge_point(i, nodes[j]), edge_point(j, nodes[i])) for i, j in walks):
+                    s.ramp(a, b, 1.6, y, 0.4)
+                    side = np.array([-u[1], u[0]])
+                    p0, p1 = b - side * 1.5, end + side * 1.5
+                    s.box(min(p0[0], p1[0]), max(p0[0], p1[0]), 0.0, 0.4, min(p0[1], p1[1]), max(p0[1], p1[1]))
+                    q0, q1 = b + side * 2.0 + u * 1.0, end + side * 4.5 - u * 1.0
+                    _ridged(s, min(q0[0], q1[0]), max(q0[0], q1[0]), min(q0[1], q1[1]), max(q0[1], q1[1]), -0.5, 0.9)
+                    used += 1
+                    break
+    # the bank: huts and trees
+    holes: list[tuple[float, float, float, float]] = []
+    taken = [(lp[0] - 3.0, lp[0] + 3.0, size_z - 1.0, size_z + 6.0) for lp in landings]
+    for _ in range(int(rng.integers(5, 9))):
+        x, z = rng.uniform(0.0, size_x - 8.0), rng.uniform(size_z + 8.0, size_z + 22.0)
+        if _clear(x - 3.0, x + 11.0, z - 3.0, z + 9.0, taken):
+            holes.append(_ridged(s, x, x + 8.0, z, z + 6.0, bank - 0.5, bank + 3.0))
+            taken.append((x - 1.0, x + 9.0, z - 1.0, z + 7.0))
+    for _ in range(int(rng.integers(50, 80))):
+        p = np.array([rng.uniform(-8.0, size_x + 8.0), rng.uniform(size_z + 2.0, size_z + 28.0)])
+        if _clear(p[0] - 1.0, p[0] + 1.0, p[1] - 1.0, p[1] + 1.0, taken):
+            _trunk(s, p, rng.uniform(0.25, 0.45), bank - 0.5, bank + 6.0)
+            taken.append((p[0] - 1.5, p[0] + 1.5, p[1] - 1.5, p[1] + 1.5))
+    s.ground(-10.0, size_x + 10.0, size_z, size_z + 30.0, bank, holes)
+    return s.mesh()
+
+
+def nursery(seed: int) -> trimesh.Trimesh:
+    """A plant nursery 170 x 125 m behind a fence 1.8 m high (a gate 8 m wide in the south): three glasshouses
+    36-44 x 30-36 m side by side (glass walls 4 m high, a gable roof, a door 2 m wide at each end of a main aisle
+    2.4 m wide along z through the middle, a cross aisle 2.2 m wide along the south wall), each side of the main aisle
+    filled by benches 1.6-1.9 m deep (ridged: trays of plants, no floor) along x to the side wall, so the aisles
+    between them, 1.3-1.7 m wide (drawn a glasshouse), are 10-13 dead ends off the main aisle a side; north of them
+    5-7 polytunnels 8 x 30 m (a door 2 m wide at the south end only, beds either side of a path), south of them
+    standing-out beds (ridged, 1.5 m wide, in blocks between paths 1.6-2.2 m wide), and by the gate a shop (ridged),
+    a car park and a potting shed. Combs of narrow dead-end aisles, sixty and more of them.
+
+    Expected (written before the first run): the structure covers every bench aisle (a leaf each, a terminal at its
+    end), the main and cross aisles, the tunnels' paths (leaves), the paths between beds and the yard. Traffic highest
+    on the yard between the gate and the glasshouses' south doors and on the main aisles; each bench aisle carries
+    little (its own area's share), the far ends of the tunnels and the beds' blocks' far paths least.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    size_x, size_z = 170.0, 125.0
+    holes: list[tuple[float, float, float, float]] = []
+    x = rng.uniform(6.0, 12.0)
+    z0 = 48.0
+    for _ in range(3):
+        w, d = rng.uniform(36.0, 44.0), rng.uniform(30.0, 36.0)
+        x0, x1, z1 = x, x + w, z0 + d
+        xc = (x0 + x1) / 2
+        door = [(xc - 1.0 - x0, 2.0)]
+        s.wall((x0, z0), (x1, z0), -0.5, 4.0, door, thickness=0.1)
+        s.wall((x0, z1), (x1, z1), -0.5, 4.0, door, thickness=0.1)
+        s.wall((x0, z0), (x0, z1), -0.5, 4.0, thickness=0.1)
+        s.wall((x1, z0), (x1, z1), -0.5, 4.0, thickness=0.1)
+        _gable(s, x0 - 0.1, x1 + 0.1, z0 - 0.1, z1 + 0.1, 4.0)
+        bench, gap = rng.uniform(1.6, 1.9), rng.uniform(1.3, 1.7)
+        for zb in np.arange(z0 + 2.2, z1 - bench - 0.05, bench + gap):  # benches to the north wall, a cross aisle south
+            for a, b in ((x0 + 0.05, xc - 1.2), (xc + 1.2, x1 - 0.05)):
+                _ridged(s, a, b, zb, zb + bench, -0.5, 0.5)
+        x = x1 + rng.uniform(6.0, 10.0)
+    # the polytunnels north of the glasshouses
+    x, zt = rng.uniform(4.0, 10.0), z0 + 36.0 + rng.uniform(5.0, 8.0)
+    for _ in range(int(rng.integers(5, 8))):
+        if x + 8.0 > size_x - 4.0 or zt + 30.0 > size_z - 3.0:
+            break
+        s.wall((x, zt), (x + 8.0, zt), -0.5, 2.8, [(3.0, 2.0)], thickness=0.1)
+        s.wall((x, zt + 30.0), (x + 8.0, zt + 30.0), -0.5, 2.8, thickness=0.1)
+        for xw in (x, x + 8.0):
+            s.wall((xw, zt), (xw, zt + 30.0), -0.5, 2.8, thickness=0.1)
+        _gable(s, x - 0.1, x + 8.1, zt - 0.1, zt + 30.1, 2.8)
+        for a, b in ((x + 0.05, x + 3.0), (x + 5.0, x + 7.95)):
+            _ridged(s, a, b, zt + 1.5, zt + 29.95, -0.5, 0.3)
+        x += 8.0 + rng.uniform(2.0, 4.0)
+    # the shop, car park and potting shed by the gate; the standing-out beds
+    gate = rng.uniform(40.0, size_x - 50.0)
+    shop_x = gate + 14.0 if gate < size_x / 2 else gate - 44.0
+    holes.append(_ridged(s, shop_x, shop_x + 30.0, 3.0, 15.0, -0.5, 5.0))
+    for i, xc in enumerate(np.arange(shop_x, shop_x + 30.0, 2.6)):
+        if i % 5 and rng.random() < 0.7:
+            _car(s, xc, xc + 1.8, 19.0, 23.5, 0.0)
+    shed_x = rng.uniform(4.0, size_x - 20.0)
+    while not _clear(shed_x - 2.0, shed_x + 14.0, 0.0, 46.0, [(gate - 4.0, gate + 12.0, 0.0, 46.0), (shop_x - 2.0, shop_x + 32.0, 0.0, 46.0)]):
+        shed_x = rng.uniform(4.0, size_x - 20.0)
+    holes.append(_ridged(s, shed_x, shed_x + 12.0, 36.0, 44.0, -0.5, 3.5))
+    taken = [(gate - 4.0, gate + 12.0, 0.0, 46.0), (shop_x - 2.0, shop_x + 32.0, 0.0, 26.0), (shed_x - 2.0, shed_x + 14.0, 34.0, 46.0)]
+    path = rng.uniform(1.6, 2.2)
+    for xb in np.arange(4.0, size_x - 26.0, 26.0):  # blocks 22 m long, tracks 4 m between them
+        for zb in np.arange(28.0, 44.0 - 1.5, 1.5 + path):
+            if _clear(xb, xb + 22.0, zb, zb + 1.5, taken):
+                _ridged(s, xb, xb + 22.0, zb, zb + 1.5, -0.5, 0.3)
+    s.wall((0.0, 0.0), (size_x, 0.0), -0.5, 1.8, [(gate, 8.0)], thickness=0.1)
+    s.wall((0.0, size_z), (size_x, size_z), -0.5, 1.8, thickness=0.1)
+    for xw in (0.0, size_x):
+        s.wall((xw, 0.0), (xw, size_z), -0.5, 1.8, thickness=0.1)
+    s.ground(-6.0, size_x + 6.0, -10.0, size_z, 0.0, holes)
+    return s.mesh()
+
+
+def _carve(s: _Solids, x0: float, x1: float, z0: float, z1: float, y0: float, y1: float,
+           voids: list[tuple[float, float, float, float, float, float]]) -> None:
+    """Rock over [x0, x1] x [y0, y1] x [z0, z1] but the ``voids``, boxes (x0, x1, y0, y1, z0, z1). The plan is cut at
+    every void's edges; each cell holds one box per height range the voids leave solid, and a run of cells along z
+    with the same ranges one box: no box of rock stands on another (their shared face would be a floor inside the
+    rock, the rule of the twelfth round). About (x cuts) x (z cuts) cells."""
+    xs, zs = _cut_lines(x0, x1, z0, z1, [(v[0], v[1], v[4], v[5]) for v in voids])
+    for a, b in pairwise(xs):
+        mx = (a + b) / 2
+        start, current = None, None
+        for c, d in [*pairwise(zs), (zs[-1], zs[-1])]:
+            mz = (c + d) / 2
+            ranges: list[tuple[float, float]] = []
+            if d > c:
+                y = y0
+                for g0, g1 in sorted((v[2], v[3]) for v in voids if v[0] < mx < v[1] and v[4] < mz < v[5]):
+                    if g0 > y:
+                        ranges.append((y, min(g0, y1)))
+                    y = max(y, g1)
+                if y < y1:
+                    ranges.append((y, y1))
+            if tuple(ranges) != current:
+                for r0, r1 in current or ():
+                    s.box(a, b, r0, r1, start, c)
+                start, current = c, tuple(ranges)
+
+
+def cliff_dwellings(seed: int) -> trimesh.Trimesh:
+    """Dwellings cut into a cliff 140-160 m long (its face the plane z = 0, the rock 24 m deep behind it, its top a
+    plateau 25 m up) over a valley (y = 0, 60 m deep, trees, huts): five storeys 5 m apart (y = 0 to 20), on each
+    above the ground a ledge 3 m deep cut into the face (3 m of head room, no rail; 40-120 m long, drawn a storey),
+    and behind each ledge (on the ground, behind the face) rooms 4-7 m wide and 4-8 m deep, 2.8 m high, each entered
+    from its ledge by one door 1.6 m wide through 0.6 m of rock. The storeys are joined only inside the rock: a stair
+    well of switchbacks (:func:`_switchback`) from the ground to the plateau, entered from each storey's ledge, a
+    second from the first ledge to the third, and a flight up the face (along x, 2.4 m wide) from the valley to the
+    first ledge's end. :func:`_carve` builds the rock as boxes round the voids. Five stacked floors each a narrow
+    ledge over a drop, rooms behind it as dead ends, joined at two or three points.
+
+    Expected (written before the first run): the structure covers every ledge (a chain along it), each room (a leaf
+    at its door), the stair wells' flights and landings (chains through the rock), the valley and the plateau.
+    Traffic highest in the main stair well and on the ledges between it and the second well and the face's flight
+    (the only ways between storeys), the valley before the main well's entrance; lowest in the rooms at the
+    ledges' far ends and on the plateau's far corners.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    length, rock, storey, storeys, ledge = rng.uniform(140.0, 160.0), 24.0, 5.0, 5, 3.0
+    top = storey * storeys
+    well = _well_length(storey)
+    main = rng.uniform(length * 0.35, length * 0.65)
+    steps = math.ceil(storey / 0.18)
+    run = steps * 0.28
+    second = rng.uniform(run + 20.0, length - 16.0)
+    while abs(second - main) < 20.0:
+        second = rng.uniform(run + 20.0, length - 16.0)
+    voids: list[tuple[float, float, float, float, float, float]] = []
+    # the wells: open from their foot to above the top landing, a landing slab on every storey above the foot
+    voids.append((main, main + 4.0, 0.0, top + 3.0, ledge, ledge + well))
+    voids.append((main, main + 4.0, 0.0, 3.0, -0.1, ledge))  # the main well's entrance from the valley
+    voids.append((second, second + 4.0, storey, 3 * storey + 3.0, ledge, ledge + well))
+    for k in range(storeys):
+        _switchback(s, main, ledge, k * storey, storey)
+        if k:
+            s.box(main, main + 4.0, k * storey - 0.45, k * storey, ledge, ledge + 2.0)
+    s.box(main, main + 4.0, top - 0.45, top, ledge, ledge + 2.0)
+    s.box(main, main + 2.0, top, top + 1.0, ledge + 1.9, ledge + 2.0)  # the rail across the lane no flight climbs
+    for k in (1, 2):
+        _switchback(s, second, ledge, k * storey, storey)
+        s.box(second, second + 4.0, (k + 1) * storey - 0.45, (k + 1) * storey, ledge, ledge + 2.0)
+    s.box(second, second + 2.0, 3 * storey, 3 * storey + 1.0, ledge + 1.9, ledge + 2.0)
+    # the flight up the face from the valley, west of the wells, to a landing at the first ledge's west end
+    fx = rng.uniform(6.0, min(main, second) - run - 8.0)
+    s.stairs(np.array([fx, -1.2]), np.array([1.0, 0.0]), 2.4, 0.0, storey, storey / steps, 0.28)
+    landing = fx + run
+    s.box(landing, landing + 2.4, -0.5, storey, -2.4, 0.0)
+    # ledges and rooms
+    for k in range(storeys):
+        y = k * storey
+        needs = [main, main + 4.0] + ([second, second + 4.0] if 1 <= k <= 3 else [])
+        if k:
+            lx0 = landing if k == 1 else max(0.0, min(needs) - rng.uniform(10.0, 40.0))
+            lx1 = min(length, max(max(needs) + rng.uniform(10.0, 40.0), lx0 + 40.0))
+            voids.append((lx0, lx1, y, y + 3.0, -0.1, ledge))
+            front = ledge
+        else:
+            lx0, lx1, front = 0.0, length, 0.0
+        x = lx0 + rng.uniform(1.0, 4.0)
+        while x < lx1 - 5.0:
+            w, d = rng.uniform(4.0, 7.0), rng.uniform(4.0, 8.0)
+            x1 = min(x + w, lx1 - 1.0)
+            clash = [(q - 1.0, q + 5.0) for q in (main, second)] + ([(fx - 1.0, landing + 3.4)] if k == 0 else [])
+            if x1 - x >= 4.0 and all(x1 < a or x > b for a, b in clash):
+                dx = rng.uniform(x, x1 - 1.6)
+                voids.append((x, x1, y, y + 2.8, front + 0.6, front + 0.6 + d))
+                voids.append((dx, dx + 1.6, y, y + 2.2, front - 0.1, front + 0.7))
+                x = x1 + rng.uniform(1.5, 4.0)
+            else:
+                x += 2.0
+    _carve(s, 0.0, length, 0.0, rock, -0.5, top, voids)
+    # the valley: huts and trees; on the plateau, trees
+    holes: list[tuple[float, float, float, float]] = [(fx, landing + 2.4, -2.4, 0.0)]
+    taken = [(fx - 2.0, landing + 2.0, -5.0, 0.0), (main - 3.0, main + 7.0, -8.0, 0.0)]
+    for _ in range(int(rng.integers(6, 10))):
+        x, z = rng.uniform(-5.0, length - 5.0), rng.uniform(-55.0, -12.0)
+        if _clear(x - 3.0, x + 11.0, z - 3.0, z + 9.0, taken):
+            holes.append(_ridged(s, x, x + 8.0, z, z + 6.0, -0.5, 3.0))
+            taken.append((x - 1.0, x + 9.0, z - 1.0, z + 7.0))
+    for _ in range(int(rng.integers(60, 90))):
+        p = np.array([rng.uniform(-8.0, length + 8.0), rng.uniform(-58.0, -4.0)])
+        if _clear(p[0] - 1.0, p[0] + 1.0, p[1] - 1.0, p[1] + 1.0, taken):
+            _trunk(s, p, rng.uniform(0.25, 0.45), -0.5, 6.0)
+            taken.append((p[0] - 1.5, p[0] + 1.5, p[1] - 1.5, p[1] + 1.5))
+    wells = [(main - 1.0, main + 5.0, ledge - 1.0, ledge + well + 1.0)]
+    for _ in range(int(rng.integers(25, 40))):
+        p = np.array([rng.uniform(2.0, length - 2.0), rng.uniform(2.0, rock - 2.0)])
+        if _clear(p[0] - 1.0, p[0] + 1.0, p[1] - 1.0, p[1] + 1.0, wells):
+            _trunk(s, p, rng.uniform(0.25, 0.4), top - 0.5, top + 6.0)
+            wells.append((p[0] - 1.5, p[0] + 1.5, p[1] - 1.5, p[1] + 1.5))
+    s.ground(-10.0, length + 10.0, -60.0, 0.0, 0.0, holes)
+    return s.mesh()
+
+
 KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
     "subway": subway, "archipelago": archipelago, "car_park": car_park,
     "forest": forest, "stadium": stadium, "harbour": harbour,
@@ -7231,6 +7902,8 @@ KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
     "cistern": cistern,
     "star_fort": star_fort, "glacier": glacier, "medina": medina,
     "suburb": suburb, "cloverleaf": cloverleaf, "radial_town": radial_town,
+    "bazaar": bazaar, "container_port": container_port, "theatre": theatre, "stilt_village": stilt_village,
+    "nursery": nursery, "cliff_dwellings": cliff_dwellings,
 }
 """Kind name -> generator (seed -> Y-up mesh in metres)."""
 
