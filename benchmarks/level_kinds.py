@@ -7212,34 +7212,63 @@ def radial_town(seed: int) -> trimesh.Trimesh:
     return s.mesh()
 
 
-def _inset(poly: np.ndarray, dist: np.ndarray) -> np.ndarray | None:
-    """The convex polygon ``poly`` (k, 2) of x, z, counter-clockwise, with each edge i (vertex i to i + 1) moved
-    ``dist[i]`` m inward: at each vertex the meeting point of its two edges' moved lines (k, 2); None when an edge
-    would shrink under 0.5 m or turn round (the polygon too small for those distances)."""
+def _inset(poly: np.ndarray, dist: list[float]) -> np.ndarray | None:
+    """The convex polygon ``poly`` (k, 2) of x, z, counter-clockwise, cut back by ``dist[i]`` m from each edge i
+    (vertex i to i + 1): clipped by each edge's moved line in turn (Sutherland and Hodgman 1974, O(k) a line, O(k²)
+    in all), so a short edge may vanish. None when less than 4 m² is left."""
     edges = np.roll(poly, -1, axis=0) - poly
     inward = np.stack([-edges[:, 1], edges[:, 0]], axis=1) / np.linalg.norm(edges, axis=1)[:, None]
-    on_line = poly + inward * np.asarray(dist)[:, None]
-    out = []
-    for i in range(len(poly)):
-        j = i - 1
-        m = np.array([edges[j], -edges[i]]).T
-        if abs(np.linalg.det(m)) < 1e-9:
+    out = poly
+    for normal, start, d in zip(inward, poly, dist):
+        if d <= 0.0:
+            continue
+        side = (out - start) @ normal - d  # >= 0 inside the moved line
+        kept = []
+        for p, q, sp_, sq in zip(out, np.roll(out, -1, axis=0), side, np.roll(side, -1)):
+            if sp_ >= 0.0:
+                kept.append(p)
+            if sp_ * sq < 0.0:
+                kept.append(p + (q - p) * sp_ / (sp_ - sq))
+        if len(kept) < 3:
             return None
-        t = np.linalg.solve(m, on_line[i] - on_line[j])[0]
-        out.append(on_line[j] + t * edges[j])
-    out = np.array(out)
-    moved = np.roll(out, -1, axis=0) - out
-    lengths = np.linalg.norm(edges, axis=1)
-    if (np.einsum("ij,ij->i", moved, edges) / lengths < 0.5).any():
-        return None
-    return out
+        out = np.array(kept)
+    area = 0.5 * abs(np.sum(out[:, 0] * np.roll(out[:, 1], -1) - np.roll(out[:, 0], -1) * out[:, 1]))
+    return out if area >= 4.0 else None
+
+
+def _ring(outer: np.ndarray, inner: np.ndarray) -> list[np.ndarray]:
+    """Triangles (3, 2) tiling the ring between the convex polygons ``outer`` (k, 2) and ``inner`` (m, 2) inside it,
+    both counter-clockwise: both walked round in the order of their corners' angles about inner's centroid, each step
+    a triangle of the two current corners and the next of the one whose next angle comes first (a merge of two
+    sorted lists, O(k + m))."""
+    c = inner.mean(axis=0)
+
+    def from_first(poly: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        angles = np.arctan2(poly[:, 1] - c[1], poly[:, 0] - c[0])
+        start = int(np.argmin(angles))
+        poly, angles = np.roll(poly, -start, axis=0), np.roll(angles, -start)
+        angles = np.unwrap(angles)
+        return np.vstack([poly, poly[:1]]), np.append(angles, angles[0] + 2 * math.pi)
+
+    o, ao = from_first(outer)
+    n, an = from_first(inner)
+    i = j = 0
+    triangles = []
+    while i < len(outer) or j < len(inner):
+        if j == len(inner) or (i < len(outer) and ao[i + 1] <= an[j + 1]):
+            triangles.append(np.array([o[i], o[i + 1], n[j]]))
+            i += 1
+        else:
+            triangles.append(np.array([o[i], n[j + 1], n[j]]))
+            j += 1
+    return triangles
 
 
 def bazaar(seed: int) -> trimesh.Trimesh:
     """A covered bazaar (a souk) 110-130 x 80-95 m under one roof 5.5 m up (:func:`_lid`): stalls of irregular
-    plan, the cells of a Voronoi diagram of a jittered 8.5 m grid of points (about 150), each cell's stall shrunk
+    plan, the cells of a Voronoi diagram of a jittered 7.5 m grid of points (140-200), each cell's stall shrunk
     from its edges by 0.9-2.0 m (drawn a cell), so the alleys between them, 1.8-4 m wide, run at every angle and
-    change width at every junction; about a sixth of the alleys (those whose loss keeps the alleys one network)
+    change width at every junction; up to a sixth of the alleys (those whose loss keeps the alleys one network)
     are built over, leaving blind alleys; 3-4 cells are open courtyards (khans) with a fountain; a cell too small
     for its insets is an open square. Stalls are solid to 4.5 m (1 m under the roof, so their tops hold no floor);
     the only floor is the alleys, squares and courtyards. A wall 0.6 m thick round it, open at one gate a side
@@ -7253,7 +7282,7 @@ def bazaar(seed: int) -> trimesh.Trimesh:
     rng = np.random.default_rng(seed)
     s = _Solids()
     size_x, size_z, roof, stall = rng.uniform(110.0, 130.0), rng.uniform(80.0, 95.0), 5.5, 4.5
-    nx, nz = int(size_x / 8.5), int(size_z / 8.5)
+    nx, nz = int(size_x / 7.5), int(size_z / 7.5)
     gx, gz = np.meshgrid((np.arange(nx) + 0.5) * size_x / nx, (np.arange(nz) + 0.5) * size_z / nz, indexing="ij")
     points = np.stack([gx.ravel(), gz.ravel()], axis=1) + rng.uniform(-0.3, 0.3, (nx * nz, 2)) * [size_x / nx, size_z / nz]
     n = len(points)
@@ -7272,10 +7301,9 @@ def bazaar(seed: int) -> trimesh.Trimesh:
         neighbours.append([j if j < n else -1 for j in across])
         cells.append(poly)
     half = rng.uniform(0.9, 2.0, n)
-    insets = [_inset(poly, np.array([0.0 if j < 0 else half[i] for j in neighbours[i]])) for i, poly in enumerate(cells)]
     border = [i for i in range(n) if -1 in neighbours[i]]
     inner = [i for i in range(n) if i not in border]
-    open_cells = {i for i in range(n) if insets[i] is None and i in inner}
+    open_cells = {i for i in inner if _inset(cells[i], [half[i]] * len(cells[i])) is None}  # too small: squares
     gates: list[tuple[int, int]] = []  # (cell, its edge on the side)
     for side in range(4):
         t = rng.uniform(0.25, 0.75)
@@ -7317,19 +7345,16 @@ def bazaar(seed: int) -> trimesh.Trimesh:
         edge = candidates[int(e)]
         if len(closed) < len(alleys) // 6 and connected([v for k, v in alleys.items() if k not in closed | {edge}]):
             closed.add(edge)
-    for i, poly in enumerate(cells):
-        if i in open_cells:
-            s.prism(poly, -0.5, 0.0)
-            continue
-        inset = insets[i]
-        if inset is None:  # a border cell too small for its insets: all stall
-            s.prism(poly, -0.5, stall)
+    for i, poly in enumerate(cells):  # a built-over alley: both stalls reach its middle
+        inset = None if i in open_cells else _inset(poly, [0.0 if j < 0 or frozenset((i, j)) in closed else half[i]
+                                                          for j in neighbours[i]])
+        if inset is None:
+            s.prism(poly, -0.5, 0.0 if i in open_cells else stall)
             continue
         s.prism(inset, -0.5, stall)
-        for k, j in enumerate(neighbours[i]):
-            if j >= 0:
-                band = np.array([poly[k], poly[(k + 1) % len(poly)], inset[(k + 1) % len(poly)], inset[k]])
-                s.prism(band, -0.5, stall if frozenset((i, j)) in closed else 0.0)
+        for triangle in _ring(poly, inset):
+            if abs(_turn(*triangle)) > 1e-6:
+                s.prism(triangle, -0.5, 0.0)
     for k in khans:  # a fountain in each courtyard: a basin 0.8 m high
         _trunk(s, cells[k].mean(axis=0), 1.2, -0.5, 0.8)
     # the wall, open over each gate's edge, the roof and the street outside
@@ -7349,7 +7374,7 @@ def bazaar(seed: int) -> trimesh.Trimesh:
         t, out, side = rng.uniform(0.0, 1.0), rng.uniform(4.5, 8.0), int(rng.integers(4))
         p = [(t * size_x, -out), (t * size_x, size_z + out), (-out, t * size_z), (size_x + out, t * size_z)][side]
         _trunk(s, np.array(p), 0.35, -0.5, 6.0)
-    s.ground(-12.6, size_x + 12.6, -12.6, size_z + 12.6, 0.0, [(-0.6, size_x + 0.6, -0.6, size_z + 0.6)])
+    s.ground(-12.6, size_x + 12.6, -12.6, size_z + 12.6, 0.0, [(0.0, size_x, 0.0, size_z)])  # on under the wall
     return s.mesh()
 
 
@@ -7360,7 +7385,7 @@ def container_port(seed: int) -> trimesh.Trimesh:
     boxes) by cross aisles 12 m wide, stacked 1-3 high (2.6 m a box; a slot left empty one time in twelve, a pocket
     joining the lanes either side of it), the rows 1.8-2.4 m apart (the straddle lanes); behind the yard a road 14 m
     wide, a gate of 6-8 lanes between ridged booths, an office (ridged) and a car park. The containers' tops are flat
-    floor out of reach at 2.6, 5.2 and 7.8 m, hundreds of pieces; the ground stops under every stack.
+    floor out of reach at 2.6, 5.2 and 7.8 m, 150-180 pieces; the ground stops under every stack.
 
     Expected (written before the first run): on the ground the structure covers the apron, every straddle lane (long
     narrow corridors with both ends on a cross aisle), the pockets, the cross aisles, the road, gate lanes and car
@@ -7397,12 +7422,13 @@ def container_port(seed: int) -> trimesh.Trimesh:
     for _ in range(rows):
         z += rng.uniform(1.8, 2.4)
         for x0, x1 in blocks:
-            for xs in np.arange(x0, x1 - 1.0, slot):
+            ends = x0 + slot * np.arange(round((x1 - x0) / slot) + 1)  # one sum per end: no sliver between slots
+            for xs, xe in pairwise(ends):
                 if rng.random() < 1.0 / 12.0:
                     continue
                 h = int(rng.choice([1, 2, 3], p=[0.3, 0.4, 0.3]))
-                s.box(xs, xs + slot, -0.5, h * box, z, z + 2.44)
-                holes.append((xs, xs + slot, z, z + 2.44))
+                s.box(xs, xe, -0.5, h * box, z, z + 2.44)
+                holes.append((xs, xe, z, z + 2.44))
         z += 2.44
     z += rng.uniform(1.8, 2.4)
     # the road, the gate, the office and the car park
@@ -7442,7 +7468,7 @@ def theatre(seed: int) -> trimesh.Trimesh:
     climb, and too shallow for the agent to stand on), 18-22 in the lower section and 12-16 in the upper, with a
     walkway (the diazoma) 2.6 m wide between them. The only ways up are radial aisles 1.8 m wide, three steps of
     0.15 / 0.28 m a tier, between rails 0.3 m thick and 0.9 m over the seats (so no seat is a neighbour of an aisle
-    step in Recast's ledge filter): 5-7 in the lower section, twice as many less one in the upper. Above the top
+    step in Recast's ledge filter): 5-7 in the lower section, twice as many and one more in the upper. Above the top
     tier the hill: a terrace 24 m deep round the cavea (a temple, altars, trees), which ends in a drop of 15-18 m to
     the plain at z = 0 and is also reached by two straight flights 2.4 m wide from the plain up to its ends. South
     of the orchestra the plain (y = 0, 160 x 50 m): the stage building (ridged) with a stage 2.5 m high before it
@@ -7688,11 +7714,11 @@ def nursery(seed: int) -> trimesh.Trimesh:
     """A plant nursery 170 x 125 m behind a fence 1.8 m high (a gate 8 m wide in the south): three glasshouses
     36-44 x 30-36 m side by side (glass walls 4 m high, a gable roof, a door 2 m wide at each end of a main aisle
     2.4 m wide along z through the middle, a cross aisle 2.2 m wide along the south wall), each side of the main aisle
-    filled by benches 1.6-1.9 m deep (ridged: trays of plants, no floor) along x to the side wall, so the aisles
-    between them, 1.3-1.7 m wide (drawn a glasshouse), are 10-13 dead ends off the main aisle a side; north of them
+    filled by benches 1.4-1.7 m deep (ridged: trays of plants, no floor) along x to the side wall, so the aisles
+    between them, 1.3-1.7 m wide (drawn a glasshouse), are 8-10 dead ends off the main aisle a side; north of them
     5-7 polytunnels 8 x 30 m (a door 2 m wide at the south end only, beds either side of a path), south of them
     standing-out beds (ridged, 1.5 m wide, in blocks between paths 1.6-2.2 m wide), and by the gate a shop (ridged),
-    a car park and a potting shed. Combs of narrow dead-end aisles, sixty and more of them.
+    a car park and a potting shed. Combs of narrow dead-end aisles, about fifty of them.
 
     Expected (written before the first run): the structure covers every bench aisle (a leaf each, a terminal at its
     end), the main and cross aisles, the tunnels' paths (leaves), the paths between beds and the yard. Traffic highest
@@ -7715,7 +7741,7 @@ def nursery(seed: int) -> trimesh.Trimesh:
         s.wall((x0, z0), (x0, z1), -0.5, 4.0, thickness=0.1)
         s.wall((x1, z0), (x1, z1), -0.5, 4.0, thickness=0.1)
         _gable(s, x0 - 0.1, x1 + 0.1, z0 - 0.1, z1 + 0.1, 4.0)
-        bench, gap = rng.uniform(1.6, 1.9), rng.uniform(1.3, 1.7)
+        bench, gap = rng.uniform(1.4, 1.7), rng.uniform(1.3, 1.7)
         for zb in np.arange(z0 + 2.2, z1 - bench - 0.05, bench + gap):  # benches to the north wall, a cross aisle south
             for a, b in ((x0 + 0.05, xc - 1.2), (xc + 1.2, x1 - 0.05)):
                 _ridged(s, a, b, zb, zb + bench, -0.5, 0.5)
@@ -7730,8 +7756,9 @@ def nursery(seed: int) -> trimesh.Trimesh:
         for xw in (x, x + 8.0):
             s.wall((xw, zt), (xw, zt + 30.0), -0.5, 2.8, thickness=0.1)
         _gable(s, x - 0.1, x + 8.1, zt - 0.1, zt + 30.1, 2.8)
-        for a, b in ((x + 0.05, x + 3.0), (x + 5.0, x + 7.95)):
-            _ridged(s, a, b, zt + 1.5, zt + 29.95, -0.5, 0.3)
+        for a, b in ((x + 0.05, x + 3.0), (x + 5.0, x + 7.95)):  # beds ridged along z, their long side
+            s.hull(np.array([[xx, yy, zz] for xx in (a, b) for yy in (-0.5, 0.3) for zz in (zt + 1.5, zt + 29.95)]
+                            + [[(a + b) / 2, 0.3 + (b - a) / 2 * math.tan(math.radians(50.0)), zz] for zz in (zt + 1.5, zt + 29.95)]))
         x += 8.0 + rng.uniform(2.0, 4.0)
     # the shop, car park and potting shed by the gate; the standing-out beds
     gate = rng.uniform(40.0, size_x - 50.0)
@@ -7747,7 +7774,7 @@ def nursery(seed: int) -> trimesh.Trimesh:
     taken = [(gate - 4.0, gate + 12.0, 0.0, 46.0), (shop_x - 2.0, shop_x + 32.0, 0.0, 26.0), (shed_x - 2.0, shed_x + 14.0, 34.0, 46.0)]
     path = rng.uniform(1.6, 2.2)
     for xb in np.arange(4.0, size_x - 26.0, 26.0):  # blocks 22 m long, tracks 4 m between them
-        for zb in np.arange(28.0, 44.0 - 1.5, 1.5 + path):
+        for zb in np.arange(20.0, 44.0 - 1.5, 1.5 + path):
             if _clear(xb, xb + 22.0, zb, zb + 1.5, taken):
                 _ridged(s, xb, xb + 22.0, zb, zb + 1.5, -0.5, 0.3)
     s.wall((0.0, 0.0), (size_x, 0.0), -0.5, 1.8, [(gate, 8.0)], thickness=0.1)
@@ -7790,7 +7817,7 @@ def cliff_dwellings(seed: int) -> trimesh.Trimesh:
     plateau 25 m up) over a valley (y = 0, 60 m deep, trees, huts): five storeys 5 m apart (y = 0 to 20), on each
     above the ground a ledge 3 m deep cut into the face (3 m of head room, no rail; 40-120 m long, drawn a storey),
     and behind each ledge (on the ground, behind the face) rooms 4-7 m wide and 4-8 m deep, 2.8 m high, each entered
-    from its ledge by one door 1.6 m wide through 0.6 m of rock. The storeys are joined only inside the rock: a stair
+    from its ledge by one door 2 m wide through 0.6 m of rock. The storeys are joined only inside the rock: a stair
     well of switchbacks (:func:`_switchback`) from the ground to the plateau, entered from each storey's ledge, a
     second from the first ledge to the third, and a flight up the face (along x, 2.4 m wide) from the valley to the
     first ledge's end. :func:`_carve` builds the rock as boxes round the voids. Five stacked floors each a narrow
@@ -7850,9 +7877,9 @@ def cliff_dwellings(seed: int) -> trimesh.Trimesh:
             x1 = min(x + w, lx1 - 1.0)
             clash = [(q - 1.0, q + 5.0) for q in (main, second)] + ([(fx - 1.0, landing + 3.4)] if k == 0 else [])
             if x1 - x >= 4.0 and all(x1 < a or x > b for a, b in clash):
-                dx = rng.uniform(x, x1 - 1.6)
+                dx = rng.uniform(x, x1 - 2.0)
                 voids.append((x, x1, y, y + 2.8, front + 0.6, front + 0.6 + d))
-                voids.append((dx, dx + 1.6, y, y + 2.2, front - 0.1, front + 0.7))
+                voids.append((dx, dx + 2.0, y, y + 2.4, front - 0.1, front + 0.7))
                 x = x1 + rng.uniform(1.5, 4.0)
             else:
                 x += 2.0
