@@ -7133,10 +7133,11 @@ def cloverleaf(seed: int) -> trimesh.Trimesh:
     cars = [(x0 - 5.0, x1 + 5.0, -edge, 0.0), (-edge - 2.0, edge + 2.0, -edge - 2.0, edge + 2.0), (-edge, edge, zt - 8.0, zt + 14.0)]
     for _ in range(int(rng.integers(70, 101))):  # 1.6-2.2 m clear of the barrier and the edge, 3 m of each other
         lane = rng.choice([-1.0, 1.0]) * rng.uniform(2.0, 5.5)
+        low = lane if lane > 0.0 else lane - 1.8  # the car's low side: its near side 2.0-5.5 m from the centre line
         if rng.random() < 0.35:  # on A
-            x, z, w, d, y = rng.uniform(-half_len + 5.0, half_len - 10.0), min(lane, lane + 1.8), 4.5, 1.8, 0.0
+            x, z, w, d, y = rng.uniform(-half_len + 5.0, half_len - 10.0), low, 4.5, 1.8, 0.0
         else:  # on B
-            x, z, w, d, y = min(lane, lane + 1.8), rng.uniform(-half_len + 5.0, half_len - 10.0), 1.8, 4.5, top
+            x, z, w, d, y = low, rng.uniform(-half_len + 5.0, half_len - 10.0), 1.8, 4.5, top
         if _clear(x - 3.0, x + w + 3.0, z - 3.0, z + d + 3.0, cars):
             _car(s, x, x + w, z, z + d, y)
             cars.append((x, x + w, z, z + d))
