@@ -1,4 +1,4 @@
-"""Level kinds of the fifth to seventeenth held-out rounds (issue 9): generators no preset setting was made on.
+"""Level kinds of the fifth to eighteenth held-out rounds (issue 9): generators no preset setting was made on.
 
 Fifth round: six kinds, each about 1,000 navmesh polygons with the presets' agent (radius 0.5 m, height 2 m, climb 0.4 m):
 ``subway`` (platforms, track pits 1.2 m lower, stairs up to two concourses), ``archipelago`` (islands joined by
@@ -135,6 +135,21 @@ only by four 270-degree loops) and ``radial_town`` (a round place, avenues, lane
 blocks: the streets are the only floor). The same rules as before: the floor stops under every closed solid one could
 stand inside (the fort's courtyard under its buildings, the service area's deck under its shop), a monument stands in
 a ring of floor, not on it, and a car (:func:`_car`) is a hull too low inside for the agent and too steep on top.
+
+Eighteenth round: six more kinds, 550-1,108 navmesh polygons with that agent (seeds 0-2): ``bazaar`` (a covered souk
+whose stalls are the cells of a Voronoi diagram cut back from their edges, so its alleys run at every angle and change
+width at every junction, some built over, courtyards, four gates), ``container_port`` (an apron under cranes, a
+straddle-carrier yard of rows stacked 1-3 high between lanes 1.8-2.4 m wide, a gate: 150-180 container tops out of
+reach at three heights), ``theatre`` (a Greek theatre in a hillside: seat tiers over the climb, climbed only by radial
+aisle stairs at every angle between rails, a diazoma, a terrace above), ``stilt_village`` (platforms over a lagoon
+joined by boardwalks at whatever angle their centres lie, houses, pontoons), ``nursery`` (glasshouses whose benches
+leave combs of dead-end aisles 1.3-1.7 m wide, polytunnels, beds) and ``cliff_dwellings`` (five storeys of ledges and
+rooms cut into a cliff, joined only by stair wells inside the rock, :func:`_carve`). A flight off the axes climbs when
+no floor it passes is its steps' neighbour (the theatre's rails: no earlier flight ran off the axes); a cell cut back
+from its edges is clipped by each moved edge in turn (:func:`_inset`: a first draft met the moved lines at each
+corner, so an edge the insets shrank under 0.5 m failed the cell, and 51 of seed 0's 84 inner cells became open
+squares); and a door needs floor under it on both sides
+(the bazaar's street first stopped 0.6 m short of its gates: two areas of 5,341 and 4,866 m² on seed 0).
 
 Run: ``.venv/bin/python benchmarks/level_kinds.py OUT_DIR [--kinds subway forest] [--seeds 0 1 2]`` writes
 ``OUT_DIR/<kind>_s<seed>.obj``, the files ``benchmarks/analysis_quality.py --levels`` takes (which also takes the

@@ -1,4 +1,4 @@
-"""The ninth to seventeenth rounds' level kinds (``benchmarks/level_kinds.py``) build the levels their docstrings describe.
+"""The ninth to eighteenth rounds' level kinds (``benchmarks/level_kinds.py``) build the levels their docstrings describe.
 
 Smoke tests of quick generators (well under a second each to build and to give a navmesh): the connected areas
 the presets' agent finds are the ones each level is made to have, so a door that closes or a crawlway that
@@ -39,7 +39,8 @@ def areas(mesh) -> tuple[np.ndarray, object]:
 
 def test_the_same_seed_gives_the_same_level(kinds):
     for kind in ("hall", "islets", "helix", "flooded", "stairhall", "quarry", "theme_park", "golf", "skatepark", "stepwell",
-                 "railyard", "craters", "monastery", "estate", "dam", "garden", "cistern", "glacier", "medina", "radial_town"):
+                 "railyard", "craters", "monastery", "estate", "dam", "garden", "cistern", "glacier", "medina", "radial_town",
+                 "bazaar", "stilt_village", "nursery"):
         a, b, other = kinds[kind](0), kinds[kind](0), kinds[kind](1)
         assert np.array_equal(a.vertices, b.vertices) and np.array_equal(a.faces, b.faces), kind
         assert len(a.vertices) != len(other.vertices) or not np.array_equal(a.vertices, other.vertices), kind
@@ -625,3 +626,72 @@ def test_the_radial_towns_streets_are_its_only_floor(kinds):
     assert np.ptp(y) < 0.3
     radius = np.hypot(x, z).max()
     assert nav.areas.sum() < 0.5 * math.pi * radius**2
+
+
+def test_the_bazaars_alleys_run_at_every_angle_and_join_the_street(kinds):
+    """The alleys, courtyards and the street outside (by the four gates) are one area on the ground, the stalls hold
+    no floor (the alleys cover under half the walled plan), and the alleys' polygons face every way: a fifth of
+    their edges at least 15 degrees off both axes (the Voronoi cells' walls)."""
+    label, nav = areas(kinds["bazaar"](0))
+    assert label.max() == 0
+    x, y, z = nav.centres.T
+    assert np.ptp(y) < 0.3
+    inside = (x > 1.0) & (x < x.max() - 13.0) & (z > 1.0) & (z < z.max() - 13.0)
+    assert nav.areas[inside].sum() < 0.5 * (x.max() - 13.0) * (z.max() - 13.0)
+    ends = [(nav.vertices[p[k]], nav.vertices[p[(k + 1) % np.count_nonzero(p >= 0)]])
+            for p in nav.polygons[inside] for k in range(np.count_nonzero(p >= 0))]
+    angles = np.array([math.degrees(math.atan2(b[2] - a[2], b[0] - a[0])) % 90.0 for a, b in ends])
+    assert np.mean((angles > 15.0) & (angles < 75.0)) > 0.2
+
+
+def test_the_container_ports_tops_are_out_of_reach(kinds):
+    """The ground (apron, straddle lanes, road, gate) is one area; every other area is a container top at 2.6, 5.2
+    or 7.8 m, a hundred and more of them."""
+    label, nav = areas(kinds["container_port"](1))
+    main = np.bincount(label, weights=nav.areas).argmax()
+    y = nav.centres[:, 1] - 0.2
+    assert np.ptp(y[label == main]) < 0.3
+    tops = y[label != main]
+    assert label.max() >= 100 and (np.min(np.abs(tops[:, None] - np.array([2.6, 5.2, 7.8])), axis=1) < 0.2).all()
+
+
+def test_the_theatres_aisles_climb_off_the_axes_to_the_terrace(kinds):
+    """The orchestra and plain (0 m), the diazoma and the terrace (16-18 m) are one area through the radial aisles
+    and the two flights; aisle steps stand at every angle between the axes; the seats hold no floor but pieces of a
+    few square metres (where Recast's erosion leaves a sliver on a tier 0.84 m deep at about 45 degrees)."""
+    label, nav = areas(kinds["theatre"](1))
+    sizes = np.bincount(label, weights=nav.areas)
+    main = sizes.argmax()
+    x, y, z = nav.centres[label == main].T
+    assert y.min() < 0.5 and y.max() > 16.0
+    aisles = (y > 1.0) & (y < y.max() - 1.0) & (z > 1.0)
+    angles = np.degrees(np.arctan2(z[aisles], x[aisles]))
+    assert all(((angles > a) & (angles < a + 30.0)).any() for a in (0.0, 30.0, 60.0, 90.0, 120.0, 150.0))
+    assert np.delete(sizes, main).max() < 10.0
+
+
+def test_the_stilt_village_is_one_area_of_decks_over_the_water(kinds):
+    """Platforms, houses, boardwalks at every angle, pontoons (0.4 m) and the bank (2.4 m) are one area, with no
+    floor at the water's level."""
+    label, nav = areas(kinds["stilt_village"](2))
+    assert label.max() == 0
+    y = nav.centres[:, 1] - 0.2
+    assert y.min() > 0.3 and ((y > 0.3) & (y < 0.6)).sum() >= 5 and y.max() < 2.7
+
+
+def test_the_nurserys_bench_aisles_and_tunnels_open_on_the_yard(kinds):
+    """Every bench aisle, glasshouse, polytunnel and path between beds is one area with the yard (a first draft's
+    tunnel beds, ridged across, closed each tunnel's path)."""
+    label, nav = areas(kinds["nursery"](0))
+    assert label.max() == 0
+    assert np.ptp(nav.centres[:, 1]) < 0.3
+
+
+def test_the_cliff_dwellings_storeys_are_one_area_through_the_rock(kinds):
+    """The valley, the five storeys' ledges and rooms (a first draft's doors, 1.6 m through 0.6 m of rock, shut every
+    room) and the plateau (25 m) are one area, joined by the stair wells and the face's flight."""
+    label, nav = areas(kinds["cliff_dwellings"](0))
+    assert label.max() == 0
+    y = nav.centres[:, 1] - 0.2
+    for level in (0.0, 5.0, 10.0, 15.0, 20.0, 25.0):
+        assert (np.abs(y - level) < 0.3).sum() > 10, level
