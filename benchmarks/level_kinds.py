@@ -144,12 +144,12 @@ reach at three heights), ``theatre`` (a Greek theatre in a hillside: seat tiers 
 aisle stairs at every angle between rails, a diazoma, a terrace above), ``stilt_village`` (platforms over a lagoon
 joined by boardwalks at whatever angle their centres lie, houses, pontoons), ``nursery`` (glasshouses whose benches
 leave combs of dead-end aisles 1.3-1.7 m wide, polytunnels, beds) and ``cliff_dwellings`` (five storeys of ledges and
-rooms cut into a cliff, joined only by stair wells inside the rock, :func:`_carve`). A flight off the axes climbs when
-no floor it passes is its steps' neighbour (the theatre's rails: no earlier flight ran off the axes); a cell cut back
-from its edges is clipped by each moved edge in turn (:func:`_inset`: a first draft met the moved lines at each
-corner, so an edge the insets shrank under 0.5 m failed the cell, and 51 of seed 0's 84 inner cells became open
-squares); and a door needs floor under it on both sides
-(the bazaar's street first stopped 0.6 m short of its gates: two areas of 5,341 and 4,866 m² on seed 0).
+rooms cut into a cliff, joined only by stair wells inside the rock, :func:`_carve`). A flight off the axes climbs
+(no earlier flight ran off them), but seats beside it join the floor unless a rail parts them (the theatre's); a cell
+cut back from its edges is clipped by each moved edge in turn (:func:`_inset`: a first draft met the moved lines at
+each corner, so an edge the insets shrank under 0.5 m failed the cell, and 51 of seed 0's 84 inner cells became open
+squares); and a door needs floor under it on both sides (the bazaar's street first stopped 0.6 m short of its gates:
+two areas of 5,341 and 4,866 m² on seed 0).
 
 Run: ``.venv/bin/python benchmarks/level_kinds.py OUT_DIR [--kinds subway forest] [--seeds 0 1 2]`` writes
 ``OUT_DIR/<kind>_s<seed>.obj``, the files ``benchmarks/analysis_quality.py --levels`` takes (which also takes the
@@ -7481,11 +7481,12 @@ def container_port(seed: int) -> trimesh.Trimesh:
 def theatre(seed: int) -> trimesh.Trimesh:
     """A Greek theatre cut into a hillside: an orchestra 11 m in radius (y = 0) and a cavea over the half turn north
     of it (x, z = r cos a, r sin a, 0 <= a <= 180 degrees) of seat tiers 0.84 m deep rising 0.45 m each (over the
-    climb, and too shallow for the agent to stand on), 18-22 in the lower section and 12-16 in the upper, with a
-    walkway (the diazoma) 2.6 m wide between them. The only ways up are radial aisles 1.8 m wide, three steps of
-    0.15 / 0.28 m a tier, between rails 0.3 m thick and 0.9 m over the seats (so no seat is a neighbour of an aisle
-    step in Recast's ledge filter): 5-7 in the lower section, twice as many and one more in the upper. Above the top
-    tier the hill: a terrace 24 m deep round the cavea (a temple, altars, trees), which ends in a drop of 15-18 m to
+    climb, and too shallow for the agent to stand on but for slivers of 0.5-7 m² where they run diagonally, which
+    Recast's erosion leaves), 18-22 in the lower section and 12-16 in the upper, with a walkway (the diazoma) 2.6 m
+    wide between them. The only ways up the cavea are radial aisles 1.8 m wide, three steps of 0.15 / 0.28 m a tier,
+    between rails 0.3 m thick and 0.9 m over the seats (without them the seats beside the aisles join the floor:
+    585 m² on seed 0, 209 m² of it over 1.5 m from an aisle's line): 5-7 in the lower section, twice as many and one
+    more in the upper. Above the top tier the hill: a terrace 24 m deep round the cavea (a temple, altars, trees), which ends in a drop of 15-18 m to
     the plain at z = 0 and is also reached by two straight flights 2.4 m wide from the plain up to its ends. South
     of the orchestra the plain (y = 0, 160 x 50 m): the stage building (ridged) with a stage 2.5 m high before it
     (a flight at each end), statues, a stoa and trees. No flight before this one ran off the x and z axes.
