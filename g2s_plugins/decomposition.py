@@ -21,7 +21,8 @@ polygons and their shared edges (portals):
    boundary loops of the hole orientation enclosing less than
    ``obstacle_area`` m²: pillars, crates) are left out of the clearances
    that split the level, so they neither make a room as narrow as its doors
-   nor make passages of their own; but a small hole that is a piece of wall
+   nor make passages of their own (with ``through_holes``, a portal that ends
+   on one is measured through it as well: :func:`_through_holes`); but a small hole that is a piece of wall
    between two openings (:func:`wall_pieces`: long for its width, its ends
    near other walls, its long sides not) counts as a wall, so that a front of
    doors is not one opening as wide as the front. ``width = 2 x clearance``
@@ -340,6 +341,13 @@ class DecompositionParams(PluginParams):
         16.0, ge=0, description="holes in the walkable surface smaller than this (pillars, crates) neither "
         "narrow a room nor make a passage, m²",
     )
+    through_holes: bool = Field(
+        False, description="measure a portal that ends on such a small hole through it as well (at least the "
+        "clearance of the hole's centre): a row of trees or posts down an avenue no longer cuts it into pieces (the "
+        "radial town, subway, cemetery, hillside); but the train's carriages join its platforms, the water park's "
+        "island is cut across open deck and fewer rooms of a pillared dungeon have a region of their own "
+        "(docs/plugins.md, \"Cuts through the holes left out\"), so it is off by default",
+    )
     min_region_area: float = Field(
         8.0, ge=0, description="smaller areas (slivers, corners) merge into a neighbour, m², unless walled in but for "
         "one opening (a small room behind its door)",
@@ -533,7 +541,8 @@ class Clearances:
 
     Attributes:
         polygons: (P,) clearance of each polygon centre, small holes ignored.
-        portals_open: (E,) clearance of each portal, small holes ignored.
+        portals_open: (E,) clearance of each portal, small holes ignored (with ``through_holes``, a portal ending on
+            one measured through it: :func:`_through_holes`).
         portals: (E,) clearance of each portal, every wall counted.
         widest: (E,3) each portal's point of largest clearance (every wall counted).
         open_walls: the walls the clearances that split the level are measured to (small holes left out):
@@ -576,31 +585,67 @@ def portal_samples(ends: np.ndarray, spacing: float) -> tuple[np.ndarray, np.nda
     return ends[portal, 0] * (1.0 - t) + ends[portal, 1] * t, portal
 
 
-def clearances(navmesh: Any, obstacle_area: float, wall_to_wall: float) -> Clearances:
+def _through_holes(ends: np.ndarray, start: np.ndarray, left_out: np.ndarray,
+                   walls: tuple[np.ndarray, np.ndarray]) -> np.ndarray:
+    """(E,) the largest clearance (to ``walls``, start and end (B', 3) m: the walls with the small holes left out) at
+    the centres of the left-out small holes each portal ``ends`` (E, 2, 3) ends on (0 for a portal that ends on
+    none); ``start`` (B, 3): the boundary edges' start points, ``left_out`` (B,): the left-out hole each bounds, -1
+    for none (:class:`Clearances`). A hole's centre is the mean of its outline's corners.
+
+    Recast's polygons go round a small hole, so the portals beside a pillar or a tree run from the hole to a wall and
+    do not cross the floor where the hole stands: with the hole left out, the cut there runs on through it (as
+    :func:`_join_ways_round` closes it), and its clearance is at least that of the hole's centre. Without this the
+    portals beside a trunk of a row of trees down an avenue measure 3.04-4.27 m of clearance where the avenue's
+    middle has 4.5 m (the radial town; docs/plugins.md, "Cuts through the holes left out"): narrower than the
+    polygons beside them by ``narrowness`` or not, as Recast placed those polygons' centres, so the avenues were cut
+    at some trees and not at others. O(E + B) and a nearest-wall search per hole.
+    """
+    on_hole = np.flatnonzero(left_out >= 0)
+    through = np.zeros(len(ends))
+    if len(on_hole) == 0 or len(ends) == 0:
+        return through
+    ids, member = np.unique(left_out[on_hole], return_inverse=True)
+    centre = np.zeros((len(ids), 3))
+    np.add.at(centre, member, start[on_hole])
+    centre /= np.bincount(member, minlength=len(ids))[:, None]
+    at_centre = _distance_to(centre, *walls)
+    hole = _holes_at(ends.reshape(-1, 3), start, left_out).reshape(-1, 2)
+    portal, side = np.nonzero(hole >= 0)
+    np.maximum.at(through, portal, at_centre[np.searchsorted(ids, hole[portal, side])])
+    return through
+
+
+def clearances(navmesh: Any, obstacle_area: float, wall_to_wall: float, through_holes: bool) -> Clearances:
     """The clearances of ``navmesh`` (a portal's is the largest of its :func:`portal_samples`, one navmesh cell apart).
 
     Small holes (:func:`small_holes`: pillars, crates; not :func:`wall_pieces`, whose outlines are grown by
     ``wall_to_wall``, m) are left out of the clearances that split the level, so that they neither make a room as
     narrow as its doors nor make passages of their own; the width reported
-    for a chokepoint counts them.
+    for a chokepoint counts them. With ``through_holes``, a portal that ends on such a hole is measured through it
+    too (:func:`_through_holes`).
     """
     start, end = boundary_edges(navmesh)
     hole = small_holes(start, end, obstacle_area)
     obstacle = (hole >= 0) & ~wall_pieces(start, end, hole, wall_to_wall)
-    ends = navmesh.portals().endpoints
+    ends = np.asarray(navmesh.portals().endpoints, dtype=np.float64)
     points, portal = portal_samples(ends, float(navmesh.settings["cell_size"]))
     walls = _distance_to(points, start[~obstacle], end[~obstacle])
     every = np.minimum(walls, _distance_to(points, start[obstacle], end[obstacle]))
     first = np.searchsorted(portal, np.arange(len(ends)))
     widest = np.lexsort((-every, portal))[first]  # each portal's first sample of largest clearance
+    left_out = np.where(obstacle, hole, -1)
+    portals_open = np.maximum.reduceat(walls, first) if len(ends) else np.zeros(0)
+    if through_holes:
+        portals_open = np.maximum(portals_open,
+                                  _through_holes(ends, start, left_out, (start[~obstacle], end[~obstacle])))
     return Clearances(
         polygons=_distance_to(np.asarray(navmesh.centres), start[~obstacle], end[~obstacle]),
-        portals_open=np.maximum.reduceat(walls, first) if len(ends) else np.zeros(0),
+        portals_open=portals_open,
         portals=every[widest],
         widest=points[widest],
         open_walls=(start[~obstacle], end[~obstacle]),
         holes=(start[hole >= 0], hole[hole >= 0]),
-        left_out=np.where(obstacle, hole, -1),
+        left_out=left_out,
     )
 
 
@@ -1004,7 +1049,7 @@ def decompose(navmesh: Any, agent: Any, params: DecompositionParams, mesh: trime
     portal's two polygons), ``floors``, ``articulation``.
     """
     wall_to_wall = 2.0 * float(agent.radius) + float(navmesh.settings["cell_size"])
-    clearance = clearances(navmesh, params.obstacle_area, wall_to_wall)
+    clearance = clearances(navmesh, params.obstacle_area, wall_to_wall, params.through_holes)
     portals = navmesh.portals()
     pairs = np.asarray(portals.pairs, dtype=np.int64).reshape(-1, 2)
     ends = np.asarray(portals.endpoints, dtype=np.float64)

@@ -28,7 +28,7 @@ from g2s_plugins.outputs import colours, heatmap, structure_json
 from g2s_plugins.samples.levels import dungeon, load_sample
 from g2s_plugins.samples.pieces import turned, yaw_about_centre
 from g2s_plugins.samples.rooms import dungeon_shares
-from tests.conftest import benchmark
+from tests.conftest import benchmark, box
 from tests.test_gltf import _children, read_glb
 
 PRESET = PRESETS_DIR / "level_regions.yaml"
@@ -193,6 +193,42 @@ def test_a_post_less_than_half_as_wide_as_the_openings_beside_it_is_one_opening(
     # 3 m doors 0.5 m apart (ends 1.75 m apart): a pier a sixth as wide as the doors, one opening
     ends[3] = ends[2] + [3.5, 0, 0]
     assert decomposition._post_links(pair, hole, ends, width, 1.25).tolist() == [[0, 1], [2, 3]]
+
+
+def street_with_posts(yaw: float) -> SimpleNamespace:
+    """Two squares 30 m across (floor only: its edges are the walls) joined by a street 8 m wide and 60 m long
+    (7 m walkable) with a 0.7 m post every 8 m down its middle, turned ``yaw`` degrees about the vertical."""
+    parts = [box(-15.0, 15.0, -0.5, 0.0, 0.0, 30.0), box(-15.0, 15.0, -0.5, 0.0, 90.0, 120.0),
+             box(-4.0, 4.0, -0.5, 0.0, 29.0, 91.0)]
+    parts += [box(-0.35, 0.35, -0.5, 3.0, z - 0.35, z + 0.35) for z in np.arange(34.0, 88.0, 8.0)]
+    mesh = trimesh.util.concatenate(parts)
+    mesh.apply_transform(trimesh.transformations.rotation_matrix(np.radians(yaw), [0.0, 1.0, 0.0]))
+    return SimpleNamespace(mesh=mesh, name=f"street_with_posts_{yaw:g}")
+
+
+@pytest.mark.parametrize(("yaw", "cut_at_the_posts"), [(0.0, (8, 7)), (22.0, (7, 6)), (45.0, (8, 7))])
+def test_through_holes_keeps_a_row_of_posts_down_a_street_from_cutting_it(yaw, cut_at_the_posts):
+    # Recast's polygons go round each post, so the portals beside it run from the post to the street's edge (2.0-3.4 m
+    # of clearance, 2.3-2.45 m at the median, the post left out) and most read narrower than the street (3.5 m) by
+    # the narrowness: by default (through_holes off) the street is cut at every post or all but one (regions,
+    # chokepoints: cut_at_the_posts, checked on the same navmesh); measured through the post (the clearance of its
+    # centre) it is one way between the squares
+    raw = load_raw_config(PRESET)
+    for analyzer in raw["analyzers"][1:]:
+        analyzer["params"]["through_holes"] = True
+    level = street_with_posts(yaw)
+    result = run(level, parse_config(raw))
+    assert len(regions(result)) == 2 and len(chokepoints(result)) == 1
+    navmesh, agent = result.context.navmesh, result.context.agent
+    default = decomposition.decompose(navmesh, agent, decomposition.DecompositionParams(), level.mesh)
+    assert (len(default.regions), len(default.chokepoints)) == cut_at_the_posts
+    clearance = decomposition.clearances(navmesh, 16.0, 1.25, through_holes=True)
+    start, _ = decomposition.boundary_edges(navmesh)
+    ends = np.asarray(navmesh.portals().endpoints, dtype=np.float64)
+    on_post = (decomposition._holes_at(ends.reshape(-1, 3), start, clearance.left_out).reshape(-1, 2) >= 0).any(axis=1)
+    assert on_post.sum() >= 14  # two or more portals beside each of the seven posts
+    assert (clearance.portals_open[on_post] >= 3.5 - 0.5).all()  # the street's, within two navmesh cells turned
+    assert (clearance.portals[on_post] < clearance.portals_open[on_post] - 0.25).all()  # the post counted: narrower
 
 
 def test_three_posts_in_a_gap_leave_one_chokepoint():
