@@ -56,6 +56,7 @@
 #include <atomic>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <string>
 #include <utility>
 #include <limits>
@@ -285,6 +286,17 @@ class TreeSweep {
     std::vector<int32_t> order_, first_child_, next_child_, children_;
 };
 
+// x 2^k, std::ldexp(x, k) bit for bit without its library call (a fifth of split_path_flow's instructions went to
+// ldexp, callgrind on a grid of samples): where the result is a normal number, as it is for the path counts' x in
+// [0.5, 2) and |k| <= 1000, it is exact, and so is one product by 2^k; other k go to ldexp.
+double times_power_of_two(double x, int k) {
+    if (k < -1000 || k > 1000) return std::ldexp(x, k);
+    const uint64_t bits = static_cast<uint64_t>(k + 1023) << 52;  // 2^k: biased exponent, zero fraction
+    double factor;
+    std::memcpy(&factor, &bits, sizeof factor);
+    return x * factor;
+}
+
 // A number of shortest paths, mantissa x 2^exponent (mantissa in [0.5, 1), or 0): on a grid the count of
 // equally short paths between two places grows like a binomial coefficient, which passes a double's largest
 // value (1.8e308) across a few tens of rooms of tied paths; only ratios of counts are used, and those this
@@ -300,17 +312,23 @@ struct PathCount {
             return;
         }
         const int64_t top = std::max(exponent, other.exponent);
-        int shift = 0;
         // both terms scaled to the larger exponent: the smaller one loses only bits below the sum's last place
-        mantissa = std::frexp(std::ldexp(mantissa, static_cast<int>(std::max<int64_t>(exponent - top, -1100))) +
-                                  std::ldexp(other.mantissa, static_cast<int>(std::max<int64_t>(other.exponent - top, -1100))),
-                              &shift);
-        exponent = top + shift;
+        const double sum = times_power_of_two(mantissa, static_cast<int>(std::max<int64_t>(exponent - top, -1100))) +
+                           times_power_of_two(other.mantissa, static_cast<int>(std::max<int64_t>(other.exponent - top, -1100)));
+        // std::frexp's split of the sum: the term at the top exponent is in [0.5, 1) and the other in [0, 1), so
+        // the sum is in [0.5, 2), and halving it when it is 1 or more is exact
+        if (sum >= 1.0) {
+            mantissa = sum * 0.5;
+            exponent = top + 1;
+        } else {
+            mantissa = sum;
+            exponent = top;
+        }
     }
     // this / other (other not 0)
     double over(const PathCount& other) const {
-        return std::ldexp(mantissa / other.mantissa,
-                          static_cast<int>(std::clamp<int64_t>(exponent - other.exponent, -1100, 1100)));
+        return times_power_of_two(mantissa / other.mantissa,
+                                  static_cast<int>(std::clamp<int64_t>(exponent - other.exponent, -1100, 1100)));
     }
 };
 
@@ -332,7 +350,8 @@ struct PathCount {
 class SplitSweep {
   public:
     explicit SplitSweep(int32_t n)
-        : search_(n), count_(static_cast<size_t>(n)), position_(static_cast<size_t>(n)), order_(static_cast<size_t>(n)) {}
+        : search_(n), count_(static_cast<size_t>(n)), position_(static_cast<size_t>(n)), order_(static_cast<size_t>(n)),
+          first_head_(static_cast<size_t>(n) + 1) {}
 
     void run(const Graph& g, int32_t source, const double* values, double tolerance, double* through) {
         search(g, source);
@@ -363,27 +382,35 @@ class SplitSweep {
     void sum(const Graph& g, int32_t source, const double* values, double tolerance, double* through) {
         const std::vector<double>& distance = search_.distance;
         const int32_t settled = settled_;
-        auto shortest = [&](int32_t v, int32_t j) {  // whether the edge j leaving settled v is a shortest-path edge
+        // whether the edge j leaving settled v is a shortest-path edge
+        auto shortest = [&](int32_t v, int32_t j) __attribute__((always_inline)) {
             const int32_t w = g.indices[j];
             return position_[w] > position_[v] &&
                    distance[v] + g.weights[j] <= distance[w] + tolerance * distance[w];
         };
         for (int32_t i = 0; i < settled; ++i) count_[order_[i]] = PathCount{};
         count_[source] = PathCount{0.5, 1};
+        // the forward pass keeps the shortest-path edges it finds, each node's in CSR order, so that the pass back
+        // reads them instead of testing every edge again (half the kernel's instructions went to that test)
+        heads_.clear();
         for (int32_t i = 0; i < settled; ++i) {
             const int32_t v = order_[i];
+            first_head_[i] = heads_.size();
             for (int32_t j = g.indptr[v]; j < g.indptr[v + 1]; ++j)
-                if (shortest(v, j)) count_[g.indices[j]].add(count_[v]);
+                if (shortest(v, j)) {
+                    heads_.push_back(g.indices[j]);
+                    count_[g.indices[j]].add(count_[v]);
+                }
         }
+        first_head_[settled] = heads_.size();
         for (int32_t v = 0; v < g.n; ++v) through[v] = 0.0;  // unreached nodes carry nothing
         for (int32_t i = settled - 1; i >= 0; --i) {  // each w a shortest-path edge leads to comes later: done
             const int32_t v = order_[i];
             double total = 0.0;
-            for (int32_t j = g.indptr[v]; j < g.indptr[v + 1]; ++j)
-                if (shortest(v, j)) {
-                    const int32_t w = g.indices[j];
-                    total += count_[v].over(count_[w]) * (values[w] + through[w]);
-                }
+            for (size_t k = first_head_[i]; k < first_head_[i + 1]; ++k) {
+                const int32_t w = heads_[k];
+                total += count_[v].over(count_[w]) * (values[w] + through[w]);
+            }
             through[v] = total;
         }
         through[source] = 0.0;
@@ -397,6 +424,9 @@ class SplitSweep {
     std::vector<PathCount> count_;
     std::vector<int32_t> position_, order_;
     int32_t settled_ = 0;  // nodes the last search settled, order_'s first entries
+    // the shortest-path edges' heads, those leaving order_[i] at heads_[first_head_[i] .. first_head_[i + 1])
+    std::vector<int32_t> heads_;
+    std::vector<size_t> first_head_;
 };
 
 // Runs work(worker, row) for rows 0 .. b-1 on `threads` threads (1 or 2), each worker taking whole rows in
