@@ -10,7 +10,7 @@ import scipy.sparse as sp
 from scipy.sparse import csgraph
 
 from g2s_core.config import find_config, load_raw_config
-from g2s_plugins import traffic
+from g2s_plugins import _trees, traffic
 from g2s_plugins._surface import CollapseParams
 from g2s_plugins.analyzers import flow as flow_analyzer
 from g2s_plugins.terminals import coverage
@@ -159,9 +159,15 @@ def test_the_same_bits_on_one_thread_or_two_in_any_source_order(monkeypatch, tie
     assert through[1][22] == pytest.approx(2 * 0.7 * np.sum(area[beyond] / distance[beyond]), rel=1e-12)
 
 
-def test_a_tie_rule_it_does_not_know_is_refused():
+def test_bad_input_is_refused():
     with pytest.raises(ValueError, match="ties"):
         traffic.linear_through(corridor(3), np.array([0]), np.ones(3), "all")  # type: ignore[arg-type]
+    with pytest.raises(ValueError, match="source"):
+        traffic.linear_through(corridor(3), np.array([3]), np.ones(3), "split")
+    # (linear_through floors every length at MIN_LENGTH, so only the extension itself sees a negative one)
+    negative = traffic.extension_csr(sp.csr_array(([-1.0, -1.0], ([0, 1], [1, 0])), shape=(2, 2)))
+    with pytest.raises(ValueError, match="negative"):
+        _trees.linear_path_flow(*negative, np.array([0], dtype=np.int32), np.ones(2), "first", 0.0, 1)
 
 
 def test_the_settings_that_choose_it():
