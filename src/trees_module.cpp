@@ -1,5 +1,6 @@
 // g2s_plugins._trees: shortest-path trees from many sources, and the weight each node carries in them; the
-// same weight with every pair's value split evenly over all its shortest paths (split_path_flow, below).
+// same weight with every pair's value split evenly over all its shortest paths (split_path_flow, below); either
+// linearly scaled by how far along its path a node lies (linear_path_flow).
 // Also here, each described where it is defined: the coverage selector's cover (cover_paths), the loop
 // adder's greedy loop (greedy_loops) and the Steiner solvers' spanning forest (spanning_forest).
 //
