@@ -89,9 +89,9 @@ still unbiased. (With ``first`` the two directions of a tied pair may take
 different paths, and the sum is unbiased only up to that choice.) It is the
 plain sums of :func:`split_path_flow` or :func:`shortest_path_flow` with
 each source's target values divided by their distance, then multiplied by
-d(s, v): one more Dijkstra search per source (for the distances) and one
-kernel call per source. The exact flow (every source) is the same either
-way and is computed plainly.
+d(s, v): in the extension, each source's one search gives the distances that
+scale its values, on the same threads as the plain flow. The exact flow
+(every source) is the same either way and is computed plainly.
 
 Spread sources (``sampling: spread``)
 -------------------------------------
@@ -587,18 +587,17 @@ def linear_through(adjacency: sp.csr_array, sources: np.ndarray, values: np.ndar
         sources: (b,) rows of the sources.
         values: (n,) the value of each node (its area, m²).
 
-    0 for the source and for unreached nodes. Per source one more Dijkstra search, O(m + n log n), and one call of
-    :func:`split_path_flow` (or :func:`shortest_path_flow`) with that source's values.
+    0 for the source and for unreached nodes. In the C++ extension (``src/trees_module.cpp``) on :data:`THREADS`
+    threads, each source one search, O(m log m), whose distances scale the values before the sums of
+    :func:`split_path_flow` (or :func:`shortest_path_flow`) over that search, O(m), and weigh them after: the same bits
+    as scipy's distances with numpy's divisions and products around those functions called per source.
     """
     if np.any(adjacency.data < MIN_LENGTH):  # else every pair at distance 0 was dropped (its ratio 0 / 0)
         adjacency = sp.csr_array((np.maximum(adjacency.data, MIN_LENGTH), adjacency.indices, adjacency.indptr), adjacency.shape)
-    distance = csgraph.dijkstra(adjacency, directed=True, indices=sources)
-    through = np.empty((len(sources), len(values)))
-    for row, (source, to) in enumerate(zip(np.asarray(sources).tolist(), distance)):
-        reached = np.isfinite(to) & (to > 0)
-        scaled = np.divide(values, to, out=np.zeros(len(values)), where=reached)
-        through[row] = 2.0 * np.where(reached, to, 0.0) * _through(adjacency, np.array([source]), scaled, ties)[0]
-    return through
+    return _trees.linear_path_flow(
+        *extension_csr(adjacency), np.asarray(sources, dtype=np.int32), np.ascontiguousarray(values, dtype=np.float64),
+        ties, TIE_TOLERANCE, THREADS,
+    )
 
 
 def _through(adjacency: sp.csr_array, sources: np.ndarray, values: np.ndarray, ties: Ties) -> np.ndarray:

@@ -1,5 +1,6 @@
 // g2s_plugins._trees: shortest-path trees from many sources, and the weight each node carries in them; the
-// same weight with every pair's value split evenly over all its shortest paths (split_path_flow, below).
+// same weight with every pair's value split evenly over all its shortest paths (split_path_flow, below); either
+// linearly scaled by how far along its path a node lies (linear_path_flow).
 // Also here, each described where it is defined: the coverage selector's cover (cover_paths), the loop
 // adder's greedy loop (greedy_loops) and the Steiner solvers' spanning forest (spanning_forest).
 //
@@ -50,11 +51,13 @@
 
 #include <nanobind/nanobind.h>
 #include <nanobind/ndarray.h>
+#include <nanobind/stl/string.h>
 
 #include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <string>
 #include <utility>
 #include <limits>
@@ -190,6 +193,12 @@ class TreeSweep {
           first_child_(static_cast<size_t>(n) + 1), next_child_(static_cast<size_t>(n)), children_(static_cast<size_t>(n)) {}
 
     void run(const Graph& g, int32_t source, const double* values, int32_t* predecessor, double* through) {
+        search(g, source, predecessor);
+        sum(g, source, values, predecessor, through);
+    }
+
+    // The tree from `source` into `predecessor` (n,) and the distances (distance()).
+    void search(const Graph& g, int32_t source, int32_t* predecessor) {
         constexpr double infinity = std::numeric_limits<double>::infinity();
         std::fill(predecessor, predecessor + g.n, NO_PREDECESSOR);
         std::vector<double>& distance = search_.distance;
@@ -227,6 +236,11 @@ class TreeSweep {
                 if (!passage(u) && d < infinity && reach(u, d, from)) search_.queue(d, u);
             }
         });
+    }
+
+    // The sums up the tree search() left in `predecessor`: `values` (n,) summed over each node's subtree minus its
+    // own value, into `through` (n,).
+    void sum(const Graph& g, int32_t source, const double* values, const int32_t* predecessor, double* through) {
         for (int32_t v = 0; v < g.n; ++v) through[v] = values[v] - values[v];  // unreached nodes carry nothing
         // every node's children in increasing index order, by one counting sort of the predecessors: two
         // passes in index order instead of rescanning each settled node's edges (15 % of the whole call on
@@ -264,11 +278,25 @@ class TreeSweep {
         through[source] = 0.0;
     }
 
+    // (n,) the last search's distances from its source, m (infinity: unreached): scipy's, bit for bit
+    const std::vector<double>& distance() const { return search_.distance; }
+
   private:
     Search search_;
     std::vector<double> sums_, buffer_;
     std::vector<int32_t> order_, first_child_, next_child_, children_;
 };
+
+// x 2^k, std::ldexp(x, k) bit for bit without its library call (a fifth of split_path_flow's instructions went to
+// ldexp, callgrind on a grid of samples): where the result is a normal number, as it is for the path counts' x in
+// [0.5, 2) and |k| <= 1000, it is exact, and so is one product by 2^k; other k go to ldexp.
+double times_power_of_two(double x, int k) {
+    if (k < -1000 || k > 1000) return std::ldexp(x, k);
+    const uint64_t bits = static_cast<uint64_t>(k + 1023) << 52;  // 2^k: biased exponent, zero fraction
+    double factor;
+    std::memcpy(&factor, &bits, sizeof factor);
+    return x * factor;
+}
 
 // A number of shortest paths, mantissa x 2^exponent (mantissa in [0.5, 1), or 0): on a grid the count of
 // equally short paths between two places grows like a binomial coefficient, which passes a double's largest
@@ -285,17 +313,23 @@ struct PathCount {
             return;
         }
         const int64_t top = std::max(exponent, other.exponent);
-        int shift = 0;
         // both terms scaled to the larger exponent: the smaller one loses only bits below the sum's last place
-        mantissa = std::frexp(std::ldexp(mantissa, static_cast<int>(std::max<int64_t>(exponent - top, -1100))) +
-                                  std::ldexp(other.mantissa, static_cast<int>(std::max<int64_t>(other.exponent - top, -1100))),
-                              &shift);
-        exponent = top + shift;
+        const double sum = times_power_of_two(mantissa, static_cast<int>(std::max<int64_t>(exponent - top, -1100))) +
+                           times_power_of_two(other.mantissa, static_cast<int>(std::max<int64_t>(other.exponent - top, -1100)));
+        // std::frexp's split of the sum: the term at the top exponent is in [0.5, 1) and the other in [0, 1), so
+        // the sum is in [0.5, 2), and halving it when it is 1 or more is exact
+        if (sum >= 1.0) {
+            mantissa = sum * 0.5;
+            exponent = top + 1;
+        } else {
+            mantissa = sum;
+            exponent = top;
+        }
     }
     // this / other (other not 0)
     double over(const PathCount& other) const {
-        return std::ldexp(mantissa / other.mantissa,
-                          static_cast<int>(std::clamp<int64_t>(exponent - other.exponent, -1100, 1100)));
+        return times_power_of_two(mantissa / other.mantissa,
+                                  static_cast<int>(std::clamp<int64_t>(exponent - other.exponent, -1100, 1100)));
     }
 };
 
@@ -317,9 +351,16 @@ struct PathCount {
 class SplitSweep {
   public:
     explicit SplitSweep(int32_t n)
-        : search_(n), count_(static_cast<size_t>(n)), position_(static_cast<size_t>(n)), order_(static_cast<size_t>(n)) {}
+        : search_(n), count_(static_cast<size_t>(n)), position_(static_cast<size_t>(n)), order_(static_cast<size_t>(n)),
+          first_head_(static_cast<size_t>(n) + 1) {}
 
     void run(const Graph& g, int32_t source, const double* values, double tolerance, double* through) {
+        search(g, source);
+        sum(g, source, values, tolerance, through);
+    }
+
+    // The search from `source`: the distances (distance()) and the order the nodes settle in.
+    void search(const Graph& g, int32_t source) {
         std::vector<double>& distance = search_.distance;
         std::fill(position_.begin(), position_.end(), -1);
         int32_t settled = 0;
@@ -335,36 +376,58 @@ class SplitSweep {
                 }
             }
         });
-        auto shortest = [&](int32_t v, int32_t j) {  // whether the edge j leaving settled v is a shortest-path edge
+        settled_ = settled;
+    }
+
+    // The two passes over the nodes search() settled: `values` (n,) split over the shortest paths, into `through`.
+    void sum(const Graph& g, int32_t source, const double* values, double tolerance, double* through) {
+        const std::vector<double>& distance = search_.distance;
+        const int32_t settled = settled_;
+        // whether the edge j leaving settled v is a shortest-path edge
+        auto shortest = [&](int32_t v, int32_t j) __attribute__((always_inline)) {
             const int32_t w = g.indices[j];
             return position_[w] > position_[v] &&
                    distance[v] + g.weights[j] <= distance[w] + tolerance * distance[w];
         };
         for (int32_t i = 0; i < settled; ++i) count_[order_[i]] = PathCount{};
         count_[source] = PathCount{0.5, 1};
+        // the forward pass keeps the shortest-path edges it finds, each node's in CSR order, so that the pass back
+        // reads them instead of testing every edge again (half the kernel's instructions went to that test)
+        heads_.clear();
         for (int32_t i = 0; i < settled; ++i) {
             const int32_t v = order_[i];
+            first_head_[i] = heads_.size();
             for (int32_t j = g.indptr[v]; j < g.indptr[v + 1]; ++j)
-                if (shortest(v, j)) count_[g.indices[j]].add(count_[v]);
+                if (shortest(v, j)) {
+                    heads_.push_back(g.indices[j]);
+                    count_[g.indices[j]].add(count_[v]);
+                }
         }
+        first_head_[settled] = heads_.size();
         for (int32_t v = 0; v < g.n; ++v) through[v] = 0.0;  // unreached nodes carry nothing
         for (int32_t i = settled - 1; i >= 0; --i) {  // each w a shortest-path edge leads to comes later: done
             const int32_t v = order_[i];
             double total = 0.0;
-            for (int32_t j = g.indptr[v]; j < g.indptr[v + 1]; ++j)
-                if (shortest(v, j)) {
-                    const int32_t w = g.indices[j];
-                    total += count_[v].over(count_[w]) * (values[w] + through[w]);
-                }
+            for (size_t k = first_head_[i]; k < first_head_[i + 1]; ++k) {
+                const int32_t w = heads_[k];
+                total += count_[v].over(count_[w]) * (values[w] + through[w]);
+            }
             through[v] = total;
         }
         through[source] = 0.0;
     }
 
+    // (n,) the last search's distances from its source, m (infinity: unreached): scipy's, bit for bit
+    const std::vector<double>& distance() const { return search_.distance; }
+
   private:
     Search search_;
     std::vector<PathCount> count_;
     std::vector<int32_t> position_, order_;
+    int32_t settled_ = 0;  // nodes the last search settled, order_'s first entries
+    // the shortest-path edges' heads, those leaving order_[i] at heads_[first_head_[i] .. first_head_[i + 1])
+    std::vector<int32_t> heads_;
+    std::vector<size_t> first_head_;
 };
 
 // Runs work(worker, row) for rows 0 .. b-1 on `threads` threads (1 or 2), each worker taking whole rows in
@@ -456,6 +519,71 @@ nb::ndarray<nb::numpy, double, nb::ndim<2>> split_path_flow(Int32Array indptr, I
     const Graph g{indptr.data(), indices.data(), weights.data(), nullptr, false, static_cast<int32_t>(n)};
     for_each_source(b, threads, [&] { return SplitSweep(g.n); }, [&](SplitSweep& sweep, size_t row) {
         sweep.run(g, sources.data()[row], values.data(), tolerance, through + row * n);
+    });
+    return through_out;
+}
+
+// The linearly scaled flow (R. Geisberger, P. Sanders and D. Schultes, "Better approximation of betweenness
+// centrality", ALENEX 2008, 90-100; g2s_plugins.traffic.linear_through): per source s and node v,
+//
+//   2 d(s, v) x (the plain flow of the values divided by their distance: values[t] / d(s, t))
+//
+// the plain flow of shortest_path_flow (ties "first") or split_path_flow ("split"). Each source is one search,
+// whose distances scale its values before the sums run over its tree or path counts and weigh the sums after;
+// the searches' distances are scipy's (the same float sums, each the least over a node's in-edges however the
+// ties settle). Each value divided and each sum multiplied as numpy does it elementwise:
+// values[t] / d(t) where 0 < d(t) < infinity, else 0; then (2 x (d(v), or 0 where that fails)) x sum(v).
+void scale_by_distance(const std::vector<double>& distance, const double* values, double* scaled, int32_t n) {
+    for (int32_t v = 0; v < n; ++v)
+        scaled[v] = distance[v] > 0.0 && distance[v] < std::numeric_limits<double>::infinity() ? values[v] / distance[v] : 0.0;
+}
+void weigh_by_distance(const std::vector<double>& distance, double* through, int32_t n) {
+    for (int32_t v = 0; v < n; ++v) {
+        const double d = distance[v] > 0.0 && distance[v] < std::numeric_limits<double>::infinity() ? distance[v] : 0.0;
+        through[v] = (2.0 * d) * through[v];
+    }
+}
+
+nb::ndarray<nb::numpy, double, nb::ndim<2>> linear_path_flow(Int32Array indptr, Int32Array indices, DoubleArray weights,
+                                                             Int32Array sources, DoubleArray values, const std::string& ties,
+                                                             double tolerance, int threads) {
+    const int64_t n = checked_flow("linear_path_flow", indptr, indices, weights, sources, values, threads);
+    if (ties != "first" && ties != "split") throw nb::value_error("linear_path_flow: ties must be 'first' or 'split'");
+    if (!(tolerance >= 0.0 && tolerance < 1.0)) throw nb::value_error("linear_path_flow: tolerance must be in [0, 1)");
+    const size_t b = sources.shape(0);
+    auto* through = new double[std::max<size_t>(b * static_cast<size_t>(n), 1)];
+    auto through_out = owned(through, b, static_cast<size_t>(n));
+    const size_t nodes = static_cast<size_t>(n);
+    if (ties == "split") {
+        const Graph g{indptr.data(), indices.data(), weights.data(), nullptr, false, static_cast<int32_t>(n)};
+        for_each_source(b, threads, [&] { return std::make_pair(SplitSweep(g.n), std::vector<double>(nodes)); },
+                        [&](std::pair<SplitSweep, std::vector<double>>& worker, size_t row) {
+            auto& [sweep, scaled] = worker;
+            const int32_t source = sources.data()[row];
+            double* out = through + row * nodes;
+            sweep.search(g, source);
+            scale_by_distance(sweep.distance(), values.data(), scaled.data(), g.n);
+            sweep.sum(g, source, scaled.data(), tolerance, out);
+            weigh_by_distance(sweep.distance(), out, g.n);
+        });
+        return through_out;
+    }
+    const std::vector<uint8_t> passage = passages(indptr.data(), indices.data(), weights.data(), static_cast<int32_t>(n));
+    const bool corridors = std::find(passage.begin(), passage.end(), 1) != passage.end();
+    const Graph g{indptr.data(), indices.data(), weights.data(), passage.data(), corridors, static_cast<int32_t>(n)};
+    struct TreeWorker {
+        TreeSweep sweep;
+        std::vector<double> scaled;
+        std::vector<int32_t> predecessor;
+    };
+    for_each_source(b, threads, [&] { return TreeWorker{TreeSweep(g.n), std::vector<double>(nodes), std::vector<int32_t>(nodes)}; },
+                    [&](TreeWorker& worker, size_t row) {
+        const int32_t source = sources.data()[row];
+        double* out = through + row * nodes;
+        worker.sweep.search(g, source, worker.predecessor.data());
+        scale_by_distance(worker.sweep.distance(), values.data(), worker.scaled.data(), g.n);
+        worker.sweep.sum(g, source, worker.scaled.data(), worker.predecessor.data(), out);
+        weigh_by_distance(worker.sweep.distance(), out, g.n);
     });
     return through_out;
 }
@@ -725,6 +853,14 @@ NB_MODULE(_trees, m) {
           "and node v, the sum over targets t != v of values[t] times the share of the source's shortest paths to\n"
           "t that pass through v (Brandes's dependency; path lengths within the relative tolerance tie); 0 for the\n"
           "source and unreached nodes. threads: 1 or 2 (the result does not depend on it).");
+    m.def("linear_path_flow", &linear_path_flow, nb::arg("indptr"), nb::arg("indices"), nb::arg("weights"),
+          nb::arg("sources"), nb::arg("values"), nb::arg("ties"), nb::arg("tolerance"), nb::arg("threads"),
+          "linear_path_flow(indptr, indices, weights, sources, values, ties, tolerance, threads) -> through.\n\n"
+          "For a graph in CSR form (as shortest_path_flow) and b source nodes: through (b, n) float64, per source s\n"
+          "and node v, 2 d(s, v) times the flow through v of shortest_path_flow (ties 'first') or split_path_flow\n"
+          "('split', with the relative tolerance) of the values each divided by its distance d(s, t) (0 where t is\n"
+          "the source, at distance 0 or unreached); 0 for the source and unreached nodes. threads: 1 or 2 (the\n"
+          "result does not depend on it).");
     m.def("cover_paths", &cover_paths, nb::arg("indptr"), nb::arg("indices"), nb::arg("lengths"), nb::arg("start"),
           nb::arg("predecessor"), nb::arg("far"), nb::arg("radius"),
           "cover_paths(indptr, indices, lengths, start, predecessor, far, radius) -> added.\n\n"

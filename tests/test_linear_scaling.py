@@ -7,9 +7,10 @@ import networkx as nx
 import numpy as np
 import pytest
 import scipy.sparse as sp
+from scipy.sparse import csgraph
 
 from g2s_core.config import find_config, load_raw_config
-from g2s_plugins import traffic
+from g2s_plugins import _trees, traffic
 from g2s_plugins._surface import CollapseParams
 from g2s_plugins.analyzers import flow as flow_analyzer
 from g2s_plugins.terminals import coverage
@@ -96,6 +97,77 @@ def test_only_a_sampled_flow_is_scaled():
     sources, counts = np.unique(np.random.default_rng(0).choice(20, size=4, p=area / area.sum()), return_counts=True)
     expected = (counts * area.sum() / 4) @ traffic.linear_through(adjacency, sources, area, "split")
     assert scaled == pytest.approx(expected, rel=1e-12)
+
+
+def brute_force_linear(graph: nx.Graph, source: int, area: np.ndarray, ties: str) -> np.ndarray:
+    """(n,) the linearly scaled through-weight from ``source``, pair by pair: 2 d(s, v) sum_t a_t share_st(v) / d(s, t),
+    the share over networkx's shortest paths (``split``: every one, evenly) or along scipy's predecessor tree
+    (``first``)."""
+    distance = nx.single_source_dijkstra_path_length(graph, source, weight="weight")
+    through = np.zeros(len(graph))
+    if ties == "split":
+        for t in distance:
+            if t == source:
+                continue
+            paths = list(nx.all_shortest_paths(graph, source, t, weight="weight"))
+            for path in paths:
+                for v in path[1:-1]:
+                    through[v] += area[t] / distance[t] / len(paths)
+    else:
+        adjacency = nx.to_scipy_sparse_array(graph, nodelist=range(len(graph)), weight="weight", format="csr")
+        _, predecessor = csgraph.dijkstra(adjacency, indices=source, return_predecessors=True)
+        for t in distance:
+            v = predecessor[t]
+            while t != source and v != source:
+                through[v] += area[t] / distance[t]
+                v = predecessor[v]
+    return np.array([2.0 * distance.get(v, 0.0) * through[v] for v in range(len(graph))])
+
+
+@pytest.mark.parametrize("ties", ["split", "first"])
+@pytest.mark.parametrize("seed", range(4))
+def test_the_extension_is_the_pair_by_pair_sum(seed, ties):
+    # a random graph of integer lengths 1-3 (many tied paths, some nodes out of reach) and random areas: every
+    # source's row against the sum over its pairs, one at a time
+    rng = np.random.default_rng(seed)
+    graph = nx.gnm_random_graph(16, 26, seed=seed)
+    for a, b in graph.edges:
+        graph.edges[a, b]["weight"] = float(rng.integers(1, 4))
+    area = rng.uniform(0.5, 5.0, len(graph))
+    adjacency = nx.to_scipy_sparse_array(graph, nodelist=range(len(graph)), weight="weight", format="csr")
+    through = traffic.linear_through(adjacency, np.arange(len(graph)), area, ties)
+    for source in range(len(graph)):
+        assert through[source] == pytest.approx(brute_force_linear(graph, source, area, ties), rel=1e-12, abs=1e-12)
+
+
+@pytest.mark.parametrize("ties", ["split", "first"])
+def test_the_same_bits_on_one_thread_or_two_in_any_source_order(monkeypatch, ties):
+    # a grid with diagonals (ties everywhere) and a corridor off it (the first-path search walks its passages)
+    adjacency, area = unit_grid()
+    graph = nx.from_scipy_sparse_array(adjacency)
+    nx.add_path(graph, [19, 20, 21, 22, 23], weight=0.7)
+    adjacency = nx.to_scipy_sparse_array(graph, nodelist=range(24), weight="weight", format="csr")
+    area = np.concatenate([area, [0.5, 2.0, 1.5, 3.0]])
+    sources = np.array([3, 23, 0, 11, 19, 7])
+    through = traffic.linear_through(adjacency, sources, area, ties)
+    monkeypatch.setattr(traffic, "THREADS", 1)
+    assert np.array_equal(traffic.linear_through(adjacency, sources, area, ties), through)
+    assert np.array_equal(traffic.linear_through(adjacency, sources[::-1], area, ties), through[::-1])
+    # the corridor's far end by hand: from 23, node 22 carries every other reached node's area over its distance
+    distance = csgraph.dijkstra(adjacency, indices=23)
+    beyond = np.arange(22)
+    assert through[1][22] == pytest.approx(2 * 0.7 * np.sum(area[beyond] / distance[beyond]), rel=1e-12)
+
+
+def test_bad_input_is_refused():
+    with pytest.raises(ValueError, match="ties"):
+        traffic.linear_through(corridor(3), np.array([0]), np.ones(3), "all")  # type: ignore[arg-type]
+    with pytest.raises(ValueError, match="source"):
+        traffic.linear_through(corridor(3), np.array([3]), np.ones(3), "split")
+    # (linear_through floors every length at MIN_LENGTH, so only the extension itself sees a negative one)
+    negative = traffic.extension_csr(sp.csr_array(([-1.0, -1.0], ([0, 1], [1, 0])), shape=(2, 2)))
+    with pytest.raises(ValueError, match="negative"):
+        _trees.linear_path_flow(*negative, np.array([0], dtype=np.int32), np.ones(2), "first", 0.0, 1)
 
 
 def test_the_settings_that_choose_it():
