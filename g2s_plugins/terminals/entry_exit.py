@@ -830,11 +830,12 @@ def _split_at_piers(kept: list[_Edge], ways: _Ways, caster: RayCaster, s: _Setti
         t = s.delta * np.arange(n)
         points = e.first + along * t[:, None] - e.outward * inset + UP * s.lift
         blocked = caster.first_hits(points, np.tile(e.outward, (n, 1))).distance <= s.radius + inset
+        t_edge = (ways.edge[e.samples] - e.first) @ along
+        blocked &= ~_walked_through(blocked, t, t_edge[~ways.stepped[e.samples]])
         free = np.flatnonzero(~blocked)
         if len(free) < 2 or not blocked[free[0]: free[-1] + 1].any():
             out.append(e)
             continue
-        t_edge = (ways.edge[e.samples] - e.first) @ along
         starts = np.r_[0, np.flatnonzero(np.diff(free) > 1) + 1]
         for run in np.split(free, starts[1:]):
             lo, hi = t[run[0]] - s.delta, t[run[-1]] + s.delta
@@ -844,6 +845,23 @@ def _split_at_piers(kept: list[_Edge], ways: _Ways, caster: RayCaster, s: _Setti
             tp = (ways.edge[part] - e.first) @ along
             out.append(replace(e, samples=part, first=e.first + along * tp.min(), last=e.first + along * tp.max()))
     return out
+
+
+def _walked_through(blocked: np.ndarray, t: np.ndarray, t_ways: np.ndarray) -> np.ndarray:
+    """(n,) bool: the candidates of ``blocked`` (n,) runs along an edge that a sample's way out ends within.
+
+    ``t`` (n,): the candidates' places along the edge, m; ``t_ways``: where the ways out of its samples that start
+    on the floor (not on a step up) reach the edge, m along it. A way out is clear at the rays' height up to the
+    edge, so none ends in front of a pier between two doorways; but the candidates stand ``lift`` above the edge's
+    line, and where a strip within the climb runs out through the edge (a median strip down a corridor's middle,
+    its samples walking out along its top) they stand inside it and meet its end face (docs/entry_exit.md, "An
+    eighteenth round of piece kinds"). A way walked over the strip shows the agent goes out there.
+    """
+    walked = np.zeros(len(blocked), dtype=bool)
+    runs = np.flatnonzero(np.diff(np.r_[0, blocked.astype(np.int8), 0]))
+    for lo, hi in zip(runs[::2], runs[1::2]):  # blocked candidates lo .. hi - 1
+        walked[lo:hi] = bool(((t_ways >= t[lo]) & (t_ways <= t[hi - 1])).any())
+    return walked
 
 
 def _onto_grazed_step(points: np.ndarray, out: np.ndarray, caster: RayCaster, s: _Settings) -> np.ndarray:
@@ -1003,7 +1021,10 @@ def _passages(
     for k in range(1, int(math.ceil(float(deep.max(initial=0.0)) / s.delta)) + 1):
         rows = np.nonzero(k * s.delta <= deep)[0]
         inside = mid[rows] - out[rows] * (k * s.delta)
-        points = np.concatenate([inside + UP * s.lift, inside + UP * (s.climb + s.delta), inside + UP * s.head])
+        # The rays at ``lift`` stand on what the agent steps onto there: from the floor's height they would start
+        # inside a strip within the climb running out through the opening's middle and measure its width.
+        on_step = _onto_grazed_step(inside, out[rows], caster, s)
+        points = np.concatenate([on_step + UP * s.lift, inside + UP * (s.climb + s.delta), inside + UP * s.head])
         directions = np.concatenate([along[rows], along[rows], along[rows]])
         hits_ahead, hits_back = caster.first_hits(points, directions), caster.first_hits(points, -directions)
         m = len(rows)
@@ -1235,7 +1256,9 @@ def piece_frame(mesh: trimesh.Trimesh) -> np.ndarray:
     """
     normals = np.asarray(mesh.face_normals, dtype=np.float64)
     areas = np.asarray(mesh.area_faces, dtype=np.float64)
-    wall = (np.abs(normals[:, 1]) <= _WALL_SIN) & (areas > 0)
+    # A face whose corners lie on one line has no normal: trimesh gives it (0, 0, 0), and turned an area of 1e-17 m²
+    # rather than 0 (a triangle soup's slivers, docs/entry_exit.md, "An eighteenth round of piece kinds"); no vote.
+    wall = (np.abs(normals[:, 1]) <= _WALL_SIN) & (np.hypot(normals[:, 0], normals[:, 2]) > 0.5) & (areas > 0)
     u = np.array([1.0, 0.0])
     if wall.any():
         h = normals[wall][:, [0, 2]]
