@@ -18,8 +18,9 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
    either side of straight out. Along each, rays cast down find where the
    surface ends (the floor's edge, looked for up to ``edge_search_radii * r``
    away: Recast erodes the walkable area by ``r``, so the navmesh boundary
-   lies about ``r`` inside the real edge; it ends where two rays in a row meet
-   no walkable face, so a crack between floor tiles is no edge; a ray meets
+   lies about ``r`` inside the real edge; it ends where three rays in a row meet
+   no walkable face, so a gap between floor tiles or planks narrower than two
+   search steps is no edge; a ray meets
    the surface within the climb of the ground the one before it stood on, so
    the search walks down a stair; on a sampled surface, whose boundary stands
    farther inside the floor, a sample finding no way out looks again up to
@@ -460,9 +461,12 @@ def _surface_ends(
         depth = distance.reshape(-1, n_off) - s.lift
         for r, count in enumerate(counts):
             ends, before = _down_steps(missing[:, :count], depth[:, :count], walkable[:, :count], s.climb)
-            # The surface ends where two probes in a row find none: a crack narrower than a search step
-            # (unwelded floor tiles) is no edge, and neither the agent nor Recast's voxels see it.
-            ends[:, :-1] &= ends[:, 1:]
+            # The surface ends where three probes in a row find none: a gap narrower than two search steps
+            # (unwelded floor tiles, planks laid 6 cm apart) is no edge, and neither the agent nor Recast's voxels
+            # see it; at two in a row two probes fell in one 6 cm gap (docs/entry_exit.md, "An eighteenth round of
+            # piece kinds"). A search's last probe finding none is an end, and so are its last two.
+            ends[:, :-2] &= ends[:, 1:-1] & ends[:, 2:]
+            ends[:, -2:-1] &= ends[:, -1:]
             end = np.argmax(ends, axis=1)
             lo[r, part] = np.where(ends.any(axis=1), end * s.delta, np.nan)
             drop[r, part] = before[np.arange(len(end)), end]
