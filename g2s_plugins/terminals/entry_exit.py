@@ -860,9 +860,9 @@ def _walked_through(blocked: np.ndarray, t: np.ndarray, t_ways: np.ndarray, reac
     height up to the edge, so none ends in front of a pier between two doorways; but the candidates stand ``lift``
     above the edge's line, and where a strip within the climb runs out through the edge (a median strip down a
     corridor's middle, its samples walking out along its top) they stand inside it and meet its end face
-    (docs/entry_exit.md, "An eighteenth round of piece kinds"). Ways walked out all along the blocked run show the
-    agent goes out there; one way ending somewhere in a longer run does not (a way past a pier's corner, or onto a
-    ledge along the shared level's 10 m of wall between two openings). O(n x ways).
+    (docs/entry_exit.md, "An eighteenth round of piece kinds"). Ways walked out all along the blocked run, each of
+    its candidates within ``reach`` of one's end, show the agent goes out there; one way ending somewhere in a longer
+    run is not enough. O(n x ways).
     """
     walked = np.zeros(len(blocked), dtype=bool)
     near = (np.abs(t[:, None] - t_ways[None, :]) <= reach).any(axis=1) if len(t_ways) else walked
