@@ -835,7 +835,7 @@ def _split_at_piers(kept: list[_Edge], ways: _Ways, caster: RayCaster, s: _Setti
         points = e.first + along * t[:, None] - e.outward * inset + UP * s.lift
         blocked = caster.first_hits(points, np.tile(e.outward, (n, 1))).distance <= s.radius + inset
         t_edge = (ways.edge[e.samples] - e.first) @ along
-        blocked &= ~_walked_through(blocked, t, t_edge[~ways.stepped[e.samples]], s.step)
+        blocked &= ~_walked_through(blocked, t, t_edge[~ways.stepped[e.samples]])
         free = np.flatnonzero(~blocked)
         if len(free) < 2 or not blocked[free[0]: free[-1] + 1].any():
             out.append(e)
@@ -851,24 +851,22 @@ def _split_at_piers(kept: list[_Edge], ways: _Ways, caster: RayCaster, s: _Setti
     return out
 
 
-def _walked_through(blocked: np.ndarray, t: np.ndarray, t_ways: np.ndarray, reach: float) -> np.ndarray:
-    """(n,) bool: the candidates of ``blocked`` (n,) runs along an edge that the samples' ways out end all along.
+def _walked_through(blocked: np.ndarray, t: np.ndarray, t_ways: np.ndarray) -> np.ndarray:
+    """(n,) bool: the candidates of ``blocked`` (n,) runs along an edge that a sample's way out ends within.
 
     ``t`` (n,): the candidates' places along the edge, m; ``t_ways``: where the ways out of its samples that start
-    on the floor (not on a step up) reach the edge, m along it; ``reach``: how far from a way's end a candidate counts
-    as walked past, m (a sample step: the samples' spacing along the boundary). A way out is clear at the rays'
-    height up to the edge, so none ends in front of a pier between two doorways; but the candidates stand ``lift``
-    above the edge's line, and where a strip within the climb runs out through the edge (a median strip down a
-    corridor's middle, its samples walking out along its top) they stand inside it and meet its end face
-    (docs/entry_exit.md, "An eighteenth round of piece kinds"). Ways walked out all along the blocked run, each of
-    its candidates within ``reach`` of one's end, show the agent goes out there; one way ending somewhere in a longer
-    run is not enough. O(n x ways).
+    on the floor (not on a step up) reach the edge, m along it. A way out is clear at the rays' height up to the
+    edge, so none ends in front of a pier between two doorways; but the candidates stand ``lift`` above the edge's
+    line, and where a strip within the climb runs out through the edge (a median strip down a corridor's middle,
+    its samples walking out along its top) they stand inside it and meet its end face (docs/entry_exit.md, "An
+    eighteenth round of piece kinds"). A way walked over the strip shows the agent goes out there. Ways ending
+    within a sample step of every candidate of a run instead: the 0.2 m pier between ``twin_doors``' doorways lay
+    within that of the doorways' ways, and the doors were one. O(n + runs x ways).
     """
     walked = np.zeros(len(blocked), dtype=bool)
-    near = (np.abs(t[:, None] - t_ways[None, :]) <= reach).any(axis=1) if len(t_ways) else walked
     runs = np.flatnonzero(np.diff(np.r_[0, blocked.astype(np.int8), 0]))
     for lo, hi in zip(runs[::2], runs[1::2]):  # blocked candidates lo .. hi - 1
-        walked[lo:hi] = bool(near[lo:hi].all())
+        walked[lo:hi] = bool(((t_ways >= t[lo]) & (t_ways <= t[hi - 1])).any())
     return walked
 
 
