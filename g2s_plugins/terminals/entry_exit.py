@@ -1024,12 +1024,16 @@ def _passages(
     reach = np.where(ways.drop > 0.0, 0.0, np.linalg.norm(ways.edge - ways.base, axis=1))
     deep = np.array([np.median(reach[e.samples]) for e in kept])
     widths, back, ahead = np.full(len(kept), np.inf), np.full(len(kept), np.inf), np.full(len(kept), np.inf)
-    for k in range(1, int(math.ceil(float(deep.max(initial=0.0)) / s.delta)) + 1):
-        rows = np.nonzero(k * s.delta <= deep)[0]
+    levels = [(k, np.nonzero(k * s.delta <= deep)[0])
+              for k in range(1, int(math.ceil(float(deep.max(initial=0.0)) / s.delta)) + 1)]
+    # The rays at ``lift`` stand on what the agent steps onto there: from the floor's height they would start inside a
+    # strip within the climb running out through the opening's middle and measure its width. Probed for every step
+    # in at once (one batch).
+    on_steps = np.split(_onto_grazed_step(np.concatenate([mid[rows] - out[rows] * (k * s.delta) for k, rows in levels]),
+                                          np.concatenate([out[rows] for _, rows in levels]), caster, s),
+                        np.cumsum([len(rows) for _, rows in levels])[:-1]) if levels else []
+    for (k, rows), on_step in zip(levels, on_steps):
         inside = mid[rows] - out[rows] * (k * s.delta)
-        # The rays at ``lift`` stand on what the agent steps onto there: from the floor's height they would start
-        # inside a strip within the climb running out through the opening's middle and measure its width.
-        on_step = _onto_grazed_step(inside, out[rows], caster, s)
         points = np.concatenate([on_step + UP * s.lift, inside + UP * (s.climb + s.delta), inside + UP * s.head])
         directions = np.concatenate([along[rows], along[rows], along[rows]])
         hits_ahead, hits_back = caster.first_hits(points, directions), caster.first_hits(points, -directions)
