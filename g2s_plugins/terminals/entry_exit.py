@@ -55,7 +55,9 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
    treads, and is taken level in plan. An edge runs the way its boundary
    walks. An edge is cut where
    something stands on it between two free stretches (a pier between two
-   doorways the samples saw out through alike), and its ends are raised onto
+   doorways the samples saw out through alike; not where a way out from the
+   floor ends within it, as over a strip within the climb running out
+   through the edge), and its ends are raised onto
    a step top just inside them (a riser as high as the rays, which they pass
    over), or, where its samples walked down steps to it, lowered onto the
    floor that ends there (as far down as the lowest floor its ways walked
@@ -75,7 +77,8 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
      agent's diameter) are dropped (chamfers, slivers, a door exactly as
      wide as the agent, which Recast erodes away), and so are openings whose
      clear width across, between their edge and the navmesh, is no wider
-     (bars across a doorway); an opening is the narrowest free part of that
+     (bars across a doorway; measured from the step top within the climb
+     there, not from inside a strip running out through the opening); an opening is the narrowest free part of that
      passage above the climb and at the head-room rays' height (a sliding
      leaf or a rubble chunk in the wall, or a sign hanging or a vault coming
      down lower than the agent, leaves part of the door);
