@@ -7,6 +7,7 @@ convex hulls of their corners (metres, Y up), designed for the map-piece agent.
 from __future__ import annotations
 
 import math
+import warnings
 
 import numpy as np
 import pytest
@@ -754,3 +755,65 @@ def test_a_vault_coming_down_lower_than_the_agent_narrows_the_ends(yaw: float) -
     level = pieces.turned(level, yaw) if yaw else level
     widths = sorted(o.width for o in _detect(level.mesh).openings)
     assert len(widths) == 2 and widths == pytest.approx([2.01, 2.01], abs=0.05)  # the vault 1.95 m high, the rays'
+
+
+def _corridor_with_a_strip(height: float, width: float, length: float = 12.0) -> trimesh.Trimesh:
+    """A corridor ``length`` x 2.4 m open at both ends, walls 0.3 m thick; a strip ``width`` m wide and ``height`` m
+    high down its middle the whole length, out through both ends."""
+    a, b = 1.2 - width / 2, 1.2 + width / 2
+    return trimesh.util.concatenate([
+        _box(0.0, length, -SLAB, 0.0, -0.3, 2.7), _box(0.0, length, -SLAB, TALL, -0.3, 0.0),
+        _box(0.0, length, -SLAB, TALL, 2.4, 2.7), _box(0.0, length, 0.0, height, a, b)])
+
+
+@pytest.mark.parametrize("height, width, yaw", [(0.3, 0.6, 0.0), (0.38, 0.3, 22.0), (0.3, 0.6, 45.0)])
+def test_a_strip_within_the_climb_out_through_an_end_leaves_it_whole(height: float, width: float, yaw: float) -> None:
+    # The pier test's candidates stand ``lift`` above the edge's line, inside the strip, and met its end face: each end
+    # was cut in two halves (0.87-0.90 m of 2.4, the seventeenth round's `median_strip_corridor`), and the passage's
+    # rays from the end's middle, inside the strip too, measured its width. The samples on the strip's top walk out
+    # over it, and the passage's rays stand on it.
+    mesh = _corridor_with_a_strip(height, width)
+    turn = pieces.yaw_about_centre(mesh, yaw)
+    mesh.apply_transform(turn)
+    found = _detect(mesh).openings
+    known = trimesh.transform_points(np.array([[0.0, 0.0, 1.2], [12.0, 0.0, 1.2]]), turn)
+    assert len(found) == 2
+    for point in known:
+        best = min(found, key=lambda o: float(np.linalg.norm(np.subtract(o.position, point))))
+        assert float(np.linalg.norm(np.subtract(best.position, point)[[0, 2]])) <= 0.05  # in plan: its line leans
+        assert best.width == pytest.approx(2.4, abs=0.05)
+
+
+@pytest.mark.parametrize("yaw", [22.0, 45.0])
+def test_the_piece_frame_skips_faces_without_a_normal(yaw: float) -> None:
+    # A face whose corners lie on one line has normal (0, 0, 0) in trimesh and, turned, an area of 1e-17 m² rather than
+    # 0: it voted with a direction of 0 / 0 (a triangle soup's slivers, the eighteenth round's `triangle_soup_room`).
+    level = pieces.turned(pieces.doorway_room(), yaw)
+    slivers = np.array([[[0.0, 0.0, z], [0.0, 0.0, z + 0.05], [0.0, 0.0, z + 0.1]] for z in np.arange(0.0, 2.0, 0.1)])
+    turned = trimesh.transform_points(slivers.reshape(-1, 3), pieces.yaw_about_centre(pieces.doorway_room().mesh, yaw))
+    mesh = trimesh.util.concatenate([level.mesh, trimesh.Trimesh(turned, np.arange(len(turned)).reshape(-1, 3),
+                                                                 process=False)])
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        frame = entry_exit.piece_frame(mesh)
+    assert frame == pytest.approx(entry_exit.piece_frame(level.mesh), abs=1e-9)
+
+
+@pytest.mark.parametrize("gap, ends_at", [(0.06, 0.9), (0.09, 0.9), (0.14, 0.38)])
+def test_the_floor_ends_at_a_gap_two_search_steps_wide(gap: float, ends_at: float) -> None:
+    # Two boards ``gap`` m apart, the second from 0.52 to 0.9 m: two probes a search step (0.05 m) apart fell in one
+    # 6 cm gap, and the floor ended there (the sixteenth round's `plank_bridge_gaps`); three in a row fall in none
+    # narrower than two search steps, and a gap as wide as 0.14 m holds three (at 0.40, 0.45 and 0.50 m).
+    caster = RayCaster(trimesh.util.concatenate([_box(-1.0, 0.52 - gap, -SLAB, 0.0, -1.0, 1.0),
+                                                 _box(0.52, 0.9, -SLAB, 0.0, -1.0, 1.0)]))
+    s = entry_exit._settings(entry_exit.Params(), CONFIG.agent)
+    [(end, _)] = entry_exit._surface_ends(caster, np.array([[0.0, s.lift, 0.0]]), np.array([[1.0, 0.0, 0.0]]),
+                                          np.array([[0.0, -1.0, 0.0]]), s, (3.0 * s.radius,))
+    assert end[0] == pytest.approx(ends_at, abs=0.01)
+
+
+@pytest.mark.parametrize("yaw", [0.0, 22.0, 45.0])
+def test_a_bridge_of_planks_6_cm_apart_gives_both_ends(yaw: float) -> None:
+    level = benchmark("piece_kinds16").plank_bridge_gaps(0.06)
+    level = pieces.turned(level, yaw) if yaw else level
+    _assert_known(_detect(level.mesh).openings, [o.position for o in level.openings], [1.8, 1.8])

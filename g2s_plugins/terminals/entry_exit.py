@@ -18,8 +18,9 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
    either side of straight out. Along each, rays cast down find where the
    surface ends (the floor's edge, looked for up to ``edge_search_radii * r``
    away: Recast erodes the walkable area by ``r``, so the navmesh boundary
-   lies about ``r`` inside the real edge; it ends where two rays in a row meet
-   no walkable face, so a crack between floor tiles is no edge; a ray meets
+   lies about ``r`` inside the real edge; it ends where three rays in a row meet
+   no walkable face, so a gap between floor tiles or planks narrower than two
+   search steps is no edge; a ray meets
    the surface within the climb of the ground the one before it stood on, so
    the search walks down a stair; on a sampled surface, whose boundary stands
    farther inside the floor, a sample finding no way out looks again up to
@@ -54,7 +55,9 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
    treads, and is taken level in plan. An edge runs the way its boundary
    walks. An edge is cut where
    something stands on it between two free stretches (a pier between two
-   doorways the samples saw out through alike), and its ends are raised onto
+   doorways the samples saw out through alike; not where a way out from the
+   floor ends within it, as over a strip within the climb running out
+   through the edge), and its ends are raised onto
    a step top just inside them (a riser as high as the rays, which they pass
    over), or, where its samples walked down steps to it, lowered onto the
    floor that ends there (as far down as the lowest floor its ways walked
@@ -74,7 +77,8 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
      agent's diameter) are dropped (chamfers, slivers, a door exactly as
      wide as the agent, which Recast erodes away), and so are openings whose
      clear width across, between their edge and the navmesh, is no wider
-     (bars across a doorway); an opening is the narrowest free part of that
+     (bars across a doorway; measured from the step top within the climb
+     there, not from inside a strip running out through the opening); an opening is the narrowest free part of that
      passage above the climb and at the head-room rays' height (a sliding
      leaf or a rubble chunk in the wall, or a sign hanging or a vault coming
      down lower than the agent, leaves part of the door);
@@ -460,9 +464,12 @@ def _surface_ends(
         depth = distance.reshape(-1, n_off) - s.lift
         for r, count in enumerate(counts):
             ends, before = _down_steps(missing[:, :count], depth[:, :count], walkable[:, :count], s.climb)
-            # The surface ends where two probes in a row find none: a crack narrower than a search step
-            # (unwelded floor tiles) is no edge, and neither the agent nor Recast's voxels see it.
-            ends[:, :-1] &= ends[:, 1:]
+            # The surface ends where three probes in a row find none: a gap narrower than two search steps
+            # (unwelded floor tiles, planks laid 6 cm apart) is no edge, and neither the agent nor Recast's voxels
+            # see it; at two in a row two probes fell in one 6 cm gap (docs/entry_exit.md, "An eighteenth round of
+            # piece kinds"). A search's last probe finding none is an end, and so are its last two.
+            ends[:, :-2] &= ends[:, 1:-1] & ends[:, 2:]
+            ends[:, -2:-1] &= ends[:, -1:]
             end = np.argmax(ends, axis=1)
             lo[r, part] = np.where(ends.any(axis=1), end * s.delta, np.nan)
             drop[r, part] = before[np.arange(len(end)), end]
@@ -830,11 +837,12 @@ def _split_at_piers(kept: list[_Edge], ways: _Ways, caster: RayCaster, s: _Setti
         t = s.delta * np.arange(n)
         points = e.first + along * t[:, None] - e.outward * inset + UP * s.lift
         blocked = caster.first_hits(points, np.tile(e.outward, (n, 1))).distance <= s.radius + inset
+        t_edge = (ways.edge[e.samples] - e.first) @ along
+        blocked &= ~_walked_through(blocked, t, t_edge[~ways.stepped[e.samples]])
         free = np.flatnonzero(~blocked)
         if len(free) < 2 or not blocked[free[0]: free[-1] + 1].any():
             out.append(e)
             continue
-        t_edge = (ways.edge[e.samples] - e.first) @ along
         starts = np.r_[0, np.flatnonzero(np.diff(free) > 1) + 1]
         for run in np.split(free, starts[1:]):
             lo, hi = t[run[0]] - s.delta, t[run[-1]] + s.delta
@@ -844,6 +852,25 @@ def _split_at_piers(kept: list[_Edge], ways: _Ways, caster: RayCaster, s: _Setti
             tp = (ways.edge[part] - e.first) @ along
             out.append(replace(e, samples=part, first=e.first + along * tp.min(), last=e.first + along * tp.max()))
     return out
+
+
+def _walked_through(blocked: np.ndarray, t: np.ndarray, t_ways: np.ndarray) -> np.ndarray:
+    """(n,) bool: the candidates of ``blocked`` (n,) runs along an edge that a sample's way out ends within.
+
+    ``t`` (n,): the candidates' places along the edge, m; ``t_ways``: where the ways out of its samples that start
+    on the floor (not on a step up) reach the edge, m along it. A way out is clear at the rays' height up to the
+    edge, so none ends in front of a pier between two doorways; but the candidates stand ``lift`` above the edge's
+    line, and where a strip within the climb runs out through the edge (a median strip down a corridor's middle,
+    its samples walking out along its top) they stand inside it and meet its end face (docs/entry_exit.md, "An
+    eighteenth round of piece kinds"). A way walked over the strip shows the agent goes out there. Ways ending
+    within a sample step of every candidate of a run instead: the 0.2 m pier between ``twin_doors``' doorways lay
+    within that of the doorways' ways, and the doors were one. O(n + runs x ways).
+    """
+    walked = np.zeros(len(blocked), dtype=bool)
+    runs = np.flatnonzero(np.diff(np.r_[0, blocked.astype(np.int8), 0]))
+    for lo, hi in zip(runs[::2], runs[1::2]):  # blocked candidates lo .. hi - 1
+        walked[lo:hi] = bool(((t_ways >= t[lo]) & (t_ways <= t[hi - 1])).any())
+    return walked
 
 
 def _onto_grazed_step(points: np.ndarray, out: np.ndarray, caster: RayCaster, s: _Settings) -> np.ndarray:
@@ -1000,10 +1027,17 @@ def _passages(
     reach = np.where(ways.drop > 0.0, 0.0, np.linalg.norm(ways.edge - ways.base, axis=1))
     deep = np.array([np.median(reach[e.samples]) for e in kept])
     widths, back, ahead = np.full(len(kept), np.inf), np.full(len(kept), np.inf), np.full(len(kept), np.inf)
-    for k in range(1, int(math.ceil(float(deep.max(initial=0.0)) / s.delta)) + 1):
-        rows = np.nonzero(k * s.delta <= deep)[0]
+    levels = [(k, np.nonzero(k * s.delta <= deep)[0])
+              for k in range(1, int(math.ceil(float(deep.max(initial=0.0)) / s.delta)) + 1)]
+    # The rays at ``lift`` stand on what the agent steps onto there: from the floor's height they would start inside a
+    # strip within the climb running out through the opening's middle and measure its width. Probed for every step
+    # in at once (one batch).
+    on_steps = np.split(_onto_grazed_step(np.concatenate([mid[rows] - out[rows] * (k * s.delta) for k, rows in levels]),
+                                          np.concatenate([out[rows] for _, rows in levels]), caster, s),
+                        np.cumsum([len(rows) for _, rows in levels])[:-1]) if levels else []
+    for (k, rows), on_step in zip(levels, on_steps):
         inside = mid[rows] - out[rows] * (k * s.delta)
-        points = np.concatenate([inside + UP * s.lift, inside + UP * (s.climb + s.delta), inside + UP * s.head])
+        points = np.concatenate([on_step + UP * s.lift, inside + UP * (s.climb + s.delta), inside + UP * s.head])
         directions = np.concatenate([along[rows], along[rows], along[rows]])
         hits_ahead, hits_back = caster.first_hits(points, directions), caster.first_hits(points, -directions)
         m = len(rows)
@@ -1235,7 +1269,9 @@ def piece_frame(mesh: trimesh.Trimesh) -> np.ndarray:
     """
     normals = np.asarray(mesh.face_normals, dtype=np.float64)
     areas = np.asarray(mesh.area_faces, dtype=np.float64)
-    wall = (np.abs(normals[:, 1]) <= _WALL_SIN) & (areas > 0)
+    # A face whose corners lie on one line has no normal: trimesh gives it (0, 0, 0), and turned an area of 1e-17 m²
+    # rather than 0 (a triangle soup's slivers, docs/entry_exit.md, "An eighteenth round of piece kinds"); no vote.
+    wall = (np.abs(normals[:, 1]) <= _WALL_SIN) & (np.hypot(normals[:, 0], normals[:, 2]) > 0.5) & (areas > 0)
     u = np.array([1.0, 0.0])
     if wall.any():
         h = normals[wall][:, [0, 2]]
