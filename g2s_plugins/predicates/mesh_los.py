@@ -33,12 +33,20 @@ node of the tree); any other costs about 2 L / probe_step + 3 rays (L =
 |AC|), through Embree when available. Answers are cached per (A, C) pair,
 and a walk not cached yet is tested in one batch with the walks from A to
 the nodes just below C, which the next calls along the chain ask about
-(``LOOKAHEAD``).
+(``LOOKAHEAD``). Simplification takes the predicate's whole-forest path
+(:mod:`g2s_core.simplify`): Algorithm 4 and Algorithm 5's other tests in
+C++ (src/forest_simplify.hpp, the ``surface_los`` predicate's), which asks
+this walk test back in Python only for the chains those tests let go. The
+heat guarantee's rounds (:mod:`g2s_plugins.heat_guarantee`) simplify the
+whole forest again each time and ask the same predicate, so a later round
+pays for the new walks only; its chains cost C++ steps instead of
+networkx's (docs/performance.md, "The guarantee's rounds in C++").
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
+from typing import NamedTuple
 
 import networkx as nx
 import numpy as np
@@ -46,9 +54,11 @@ from pydantic import Field
 
 from g2s_core.model import RunContext
 from g2s_core.plugin import hookimpl
+from g2s_core.simplify import ForestArrays
 from g2s_plugins._raycasting import GROUND_MARGIN, AgentShape, OpenFloors, RayCaster, walk_segments
-from g2s_plugins._surface import CollapseParams, collapse_rule
+from g2s_plugins._surface import CollapseParams, RuleArrays, collapse_rule
 from g2s_plugins.heat_guarantee import guaranteed
+from g2s_plugins.recast.navmesh import collapse_forest_seeing
 
 NAME = "mesh_los"
 
@@ -68,14 +78,26 @@ Measured on dungeon_1k and building_1k (map_analysis_sampling, simplify CPU): 2.
 1.15-1.5 s for any of 2, 4, 8, 12 or 32, within the shared machine's noise of each other."""
 
 
-def _below(tree: nx.DiGraph, c: int, count: int) -> list[int]:
-    """Up to ``count`` nodes under ``c`` in ``tree``, nearest first (breadth first, by id)."""
-    found: list[int] = []
-    frontier = [c]
-    while frontier and len(found) < count:
-        frontier = sorted(n for node in frontier for n in tree.successors(node))
-        found.extend(frontier[: count - len(found)])
-    return found
+Point = tuple[float, ...]
+
+
+class _Chain(NamedTuple):
+    """The structure a walk test is asked from: its nodes, each node's successors (tree and loop edges) and
+    position, and C of the chain being answered."""
+
+    nodes: Iterable[int]
+    successors: Callable[[int], Iterable[int]]
+    position: Callable[[int], Point]
+    c: int
+
+    def below(self, count: int) -> list[Point]:
+        """The positions of up to ``count`` nodes under C, nearest first (breadth first, by id)."""
+        found: list[int] = []
+        frontier = [self.c]
+        while frontier and len(found) < count:
+            frontier = sorted(n for node in frontier for n in self.successors(node))
+            found.extend(frontier[: count - len(found)])
+        return list(map(self.position, found))
 
 
 def mesh_los_predicate(
@@ -90,24 +112,26 @@ def mesh_los_predicate(
     nodes nearest under C: one ray batch then answers a whole run of removals
     along a chain. Every walk is tested on its own rays, so the answers are
     those of one call per pair; only the number of calls changes.
+
+    The predicate carries the whole-forest path (:mod:`g2s_core.simplify`):
+    :func:`g2s_plugins.recast.navmesh.collapse_forest_seeing` with this walk
+    test, the lookahead reading the forest's own edges (below C they are the
+    structure's while Algorithm 4 runs: C's subtree is not walked yet).
     """
     probe_step = params.probe_step if params.probe_step is not None else 0.5 * agent.radius
     caster: RayCaster | None = None
-    floor_of: dict[tuple[float, ...], int] = {}  # the open floor triangle each node of the tree stands on, or -1
-    walked: dict[tuple[tuple[float, ...], tuple[float, ...]], bool] = {}  # walks tested, start -> end
-    cache: dict[tuple[tuple[float, ...], tuple[float, ...]], bool] = {}  # answers given, for (A, C) and (C, A)
-    chain: tuple[nx.DiGraph, int] | None = None  # the tree and C of the predicate call being answered
+    floor_of: dict[Point, int] = {}  # the open floor triangle each node of the tree stands on, or -1
+    walked: dict[tuple[Point, Point], bool] = {}  # walks tested, start -> end
+    cache: dict[tuple[Point, Point], bool] = {}  # answers given, for (A, C) and (C, A)
+    chain: _Chain | None = None  # where the walk test being answered is asked from
 
-    def position(tree: nx.DiGraph, node: int) -> tuple[float, ...]:
-        return tuple(map(float, tree.nodes[node]["pos"]))
-
-    def start_casting(tree: nx.DiGraph | None) -> RayCaster:
-        """The caster, and the open floor under every node of ``tree`` (built on first use: runs that never
+    def start_casting(chain: _Chain | None) -> RayCaster:
+        """The caster, and the open floor under every node of ``chain`` (built on first use: runs that never
         get here pay nothing; nodes keep their positions while simplification removes some)."""
         caster = RayCaster(mesh)
         floors = OpenFloors(caster, agent, min_inradius=agent.radius)
-        if tree is not None and floors.open.any():
-            positions = list(dict.fromkeys(position(tree, node) for node in tree))
+        if chain is not None and floors.open.any():
+            positions = list(dict.fromkeys(map(chain.position, chain.nodes)))
             faces = floors.faces_under(np.array(positions).reshape(-1, 3), floors.certain_offset(params.margin, params.max_surface_gap))
             floor_of.update(zip(positions, faces.tolist()))
         return caster
@@ -121,14 +145,13 @@ def mesh_los_predicate(
         nonlocal caster
         if (start, end) not in cache:
             if caster is None:
-                caster = start_casting(chain[0] if chain is not None else None)
+                caster = start_casting(chain)
             if certain(start, end):
                 walked[(start, end)] = True
             elif (start, end) not in walked:
                 ends = [end]
                 if chain is not None:
-                    tree, c = chain
-                    ahead = dict.fromkeys(position(tree, node) for node in _below(tree, c, LOOKAHEAD))
+                    ahead = dict.fromkeys(chain.below(LOOKAHEAD))
                     ends += [e for e in ahead if (start, e) not in walked and e != end and not certain(start, e)]
                 ok, _ = walk_segments(
                     caster, np.array([start] * len(ends)), np.array(ends), agent, probe_step, params.margin,
@@ -138,16 +161,38 @@ def mesh_los_predicate(
             cache[(start, end)] = cache[(end, start)] = walked[(start, end)]
         return cache[(start, end)]
 
-    rule = collapse_rule(params, walkable, graph)
+    def native(forest: ForestArrays, rule_arrays: RuleArrays) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        ids, points = forest.ids.tolist(), list(map(tuple, forest.points.tolist()))
+        position = dict(zip(ids, points))
+        successors: dict[int, list[int]] = {node: [] for node in ids}
+        for node, row in zip(ids, forest.parent.tolist()):
+            if row >= 0:
+                successors[ids[row]].append(node)
+        for u, v in forest.loops.tolist():
+            successors[ids[u]].append(ids[v])
+
+        def sees(a: int, c: int) -> bool:  # rows of the forest
+            nonlocal chain
+            chain = _Chain(ids, successors.__getitem__, position.__getitem__, ids[c])
+            try:
+                return walkable(points[a], points[c])
+            finally:
+                chain = None
+
+        return collapse_forest_seeing(forest, rule_arrays, sees)
+
+    rule = collapse_rule(params, walkable, graph, native)
 
     def predicate(tree: nx.DiGraph, a: int, b: int, c: int) -> bool:
         nonlocal chain
-        chain = (tree, c)
+        nodes = tree._node
+        chain = _Chain(tree, tree.successors, lambda node: tuple(map(float, nodes[node]["pos"])), c)
         try:
             return rule(tree, a, b, c)
         finally:
             chain = None
 
+    predicate.whole_forest = rule.whole_forest  # type: ignore[attr-defined]
     return predicate
 
 

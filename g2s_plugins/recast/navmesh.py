@@ -326,6 +326,17 @@ class NavMesh:
 
 # ---------------------------------------------------------------- numpy helpers
 
+def collapse_forest_seeing(forest: Any, rule: Any, sees: Callable[[int, int], bool]) -> tuple[np.ndarray, ...]:
+    """:meth:`NavMesh.collapse_forest`'s answer for ``forest`` (a :class:`~g2s_core.simplify.ForestArrays`) and
+    ``rule`` (a :class:`~g2s_plugins._surface.RuleArrays`) with the line of sight ``sees(a, c)`` (rows of
+    ``forest``) instead of the navmesh's: Algorithm 4 and Algorithm 5's other tests in C++ on one thread
+    (src/forest_simplify.hpp), ``sees`` asked only for the chains those let go (the ``mesh_los`` predicate's walk
+    test; no navmesh needed). Its answers must depend on the two nodes alone, not on the order of the calls."""
+    return _recast.collapse_forest(
+        forest.ids, forest.parent, forest.depth, forest.fixed, forest.loops, forest.roots, rule.on_navmesh, rule.rank,
+        rule.max_step, rule.normals, rule.normal_lengths, float(rule.tolerance_deg), bool(rule.whole_chain), sees)
+
+
 def _vec(p) -> tuple[float, float, float]:
     # unpacking rather than numpy: called once per raycast, on a tuple or (3,) array
     x, y, z = p
