@@ -1878,7 +1878,8 @@ using ValuesIn = nb::ndarray<const double, nb::ndim<1>, nb::c_contig, nb::device
 using PairsIn = nb::ndarray<const int64_t, nb::shape<-1, 2>, nb::c_contig, nb::device::cpu>;
 
 // Algorithm 5's collapse rule as g2s_plugins/_surface.py's collapse_rule states it, on the forest's arrays (node
-// indices), with `Sight` as its line of sight: sight(a, c), asked only when the other tests let b go.
+// indices), with `Sight` as its line of sight: sight(a, c) -> forest_simplify::Answer, asked only when the other
+// tests let b go, and sight.resolve() (forest_simplify's "Batches").
 // The same floating-point steps as the Python rule, so the same answers: the normals' lengths come from Python's
 // math.hypot, the angle is acos of the clamped cosine times 180 / pi (math.degrees), the traffic test the
 // difference of two percentiles.
@@ -1892,6 +1893,7 @@ struct CollapseRule {
     double tolerance_deg;
     bool whole_chain;
     Sight sight;
+    static constexpr bool batches = Sight::batches;
 
     bool bent(int64_t u, int64_t v) const {
         const double lengths = normal_length[u] * normal_length[v];
@@ -1909,11 +1911,14 @@ struct CollapseRule {
         return std::fabs(ra - rb) > *max_step || std::fabs(rc - rb) > *max_step;
     }
 
-    bool operator()(int64_t a, int64_t b, int64_t c, bool c_is_leaf) {
-        if (!on_navmesh[c] && c_is_leaf) return false;
-        if (step_too_large(a, b, c) || bent(a, b) || (whole_chain && (bent(b, c) || bent(a, c)))) return false;
+    forest_simplify::Answer operator()(int64_t a, int64_t b, int64_t c, bool c_is_leaf) {
+        if (!on_navmesh[c] && c_is_leaf) return forest_simplify::Answer::no;
+        if (step_too_large(a, b, c) || bent(a, b) || (whole_chain && (bent(b, c) || bent(a, c))))
+            return forest_simplify::Answer::no;
         return sight(a, c);
     }
+
+    void resolve() const { sight.resolve(); }
 };
 
 // The surface_los predicate's line of sight (NavMeshCore::sees, the line_of_sight binding's test) between the
@@ -1930,27 +1935,54 @@ struct NavMeshSight {
     int64_t from = -1;
     dtPolyRef start_ref = 0;
     float start[3] = {0, 0, 0};
+    static constexpr bool batches = false;
 
-    bool operator()(int64_t a, int64_t c) {
+    forest_simplify::Answer operator()(int64_t a, int64_t c) {
         const double* pa = points + 3 * a;
         if (a != from) {
             const float fa[3] = {static_cast<float>(pa[0]), static_cast<float>(pa[1]), static_cast<float>(pa[2])};
             from = a;
             if (dtStatusFailed(nav.query->findNearestPoly(fa, nav.default_ext, &nav.filter, &start_ref, start))) start_ref = 0;
         }
-        return nav.sees(start_ref, start, pa, points + 3 * c, step, horizontal, max_gap, path);
+        return nav.sees(start_ref, start, pa, points + 3 * c, step, horizontal, max_gap, path)
+                   ? forest_simplify::Answer::yes : forest_simplify::Answer::no;
     }
+
+    void resolve() const {}  // every answer given at once
 };
 
-// A line of sight in Python, sees(a, c) -> bool on node indices (the mesh_los predicate's walk test), called with
-// the GIL held. Borrowed, not owned: forest_simplify copies its rule with the GIL released, which must copy no
-// Python reference; the binding's argument keeps the callable alive.
-struct PythonSight {
-    PyObject* sees;
+// Lines of sight asked of Python in batches (the mesh_los predicate's walk test): the pairs of node indices asked
+// and not answered yet, and the answers so far, for one simplification.
+struct AskedSights {
+    PyObject* sees;  // sees(pairs (k,2) int64) -> (k,) bool; borrowed: the binding's argument keeps it alive
+    std::vector<int64_t> asked;  // (k,2) flattened
+    std::unordered_map<uint64_t, bool> known;  // a * n + c
+    uint64_t n;
+};
 
-    bool operator()(int64_t a, int64_t c) const {
-        nb::gil_scoped_acquire hold;
-        return nb::cast<bool>(nb::handle(sees)(a, c));
+// The line of sight of AskedSights: a pair not answered yet is `later`, and resolve() asks sees() about every such
+// pair in one call. On one thread, with the GIL held (the copies forest_simplify makes share the one AskedSights).
+struct PythonSight {
+    AskedSights* sights;
+    static constexpr bool batches = true;
+
+    forest_simplify::Answer operator()(int64_t a, int64_t c) const {
+        const auto it = sights->known.find(static_cast<uint64_t>(a) * sights->n + static_cast<uint64_t>(c));
+        if (it != sights->known.end()) return it->second ? forest_simplify::Answer::yes : forest_simplify::Answer::no;
+        sights->asked.insert(sights->asked.end(), {a, c});
+        return forest_simplify::Answer::later;
+    }
+
+    void resolve() const {
+        std::vector<int64_t>& asked = sights->asked;
+        const size_t count = asked.size() / 2;
+        const nb::object answers = nb::handle(sights->sees)(to_numpy(asked, count, 2));
+        const auto ok = nb::cast<nb::ndarray<const bool, nb::ndim<1>, nb::c_contig, nb::device::cpu>>(answers);
+        if (ok.shape(0) != count) throw nb::value_error("sees must answer every pair it is given");
+        for (size_t k = 0; k < count; ++k)
+            sights->known[static_cast<uint64_t>(asked[2 * k]) * sights->n + static_cast<uint64_t>(asked[2 * k + 1])] =
+                ok.data()[k];
+        asked.clear();
     }
 };
 
@@ -2209,16 +2241,19 @@ NB_MODULE(_recast, m) {
               const forest_simplify::Forest f = checked_forest(
                   ids, parent, depth, fixed, loops, roots,
                   {on_navmesh.shape(0), rank.shape(0), normals.shape(0), normal_length.shape(0)});
+              AskedSights sights{sees.ptr(), {}, {}, f.n};
               CollapseRule<PythonSight> rule{on_navmesh.data(), rank.data(), max_step, normals.data(),
-                                             normal_length.data(), tolerance_deg, whole_chain, PythonSight{sees.ptr()}};
+                                             normal_length.data(), tolerance_deg, whole_chain, PythonSight{&sights}};
               return simplified_numpy(forest_simplify::simplify(f, rule, 1));
           },
           nb::arg("ids"), nb::arg("parent"), nb::arg("depth"), nb::arg("fixed"), nb::arg("loops"), nb::arg("roots"),
           nb::arg("on_navmesh"), nb::arg("rank"), nb::arg("max_step").none(), nb::arg("normals"),
           nb::arg("normal_length"), nb::arg("tolerance_deg"), nb::arg("whole_chain"), nb::arg("sees"),
-          "NavMesh.collapse_forest's answer with the line of sight sees(a, c) -> bool, a Python callable of two node "
-          "indices, instead of the navmesh's: Algorithm 4 and Algorithm 5's other tests in C++ on one thread, the "
-          "callable asked only when those let b go");
+          "NavMesh.collapse_forest's answer with the line of sight sees(pairs) -> (k,) bool, a Python callable of "
+          "(k,2) int64 rows (a, c) of node indices, instead of the navmesh's: Algorithm 4 and Algorithm 5's other "
+          "tests in C++ on one thread, the callable asked only for the chains those let b go, in batches: every "
+          "walk below a kept node goes on until it is done or needs an answer not given yet, and then the pairs "
+          "they all asked for are given in one call (src/forest_simplify.hpp, \"Batches\")");
 
     def_build<float, int32_t>(m);
     def_build<double, int32_t>(m);

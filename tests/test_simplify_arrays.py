@@ -161,7 +161,7 @@ def test_mesh_los_whole_forest_path_builds_the_loop_structure_in_later_heat_roun
                         or _raycasting.walk_segments(caster, starts, *args, **kwargs))
     seeing = mesh_los.collapse_forest_seeing
     monkeypatch.setattr(mesh_los, "collapse_forest_seeing", lambda forest, rule, sees: seeing(
-        forest, rule, lambda a, c: sights.append((a, c)) or sees(a, c)))
+        forest, rule, lambda pairs: sights.append(len(pairs)) or sees(pairs)))
     params = mesh_los.Params(normal_tolerance_deg=45.0, max_traffic_step=30.0)
     for seed, forest in enumerate([sampled.forest] + [random_forest(sampled.graph, seed) for seed in range(3)]):
         predicate = mesh_los.g2s_simplify_predicate(params, sampled.context, forest, None)
@@ -173,7 +173,7 @@ def test_mesh_los_whole_forest_path_builds_the_loop_structure_in_later_heat_roun
             sights.clear()
             structure = simplify_forest(forest, keeping(predicate, kept))
             tested.append(sum(walks))
-            asked.append(len(sights))
+            asked.append(sum(sights))
             assert kept <= set(structure)
             assert layout(structure) == layout(simplify_forest(forest, keeping(through_python(reference), kept)))
             removed = sorted(set(forest) - set(structure))

@@ -72,7 +72,7 @@ class Params(CollapseParams):
 
 
 LOOKAHEAD = 8
-"""Nodes below C whose walks from A are tested in the same batch as A -> C (see ``mesh_los_predicate``).
+"""Nodes below C whose walks from A are tested in the same batch as A -> C (see :func:`mesh_los_predicate`).
 
 Measured on dungeon_1k and building_1k (map_analysis_sampling, simplify CPU): 2.9-3.0 s without lookahead,
 1.15-1.5 s for any of 2, 4, 8, 12 or 32, within the shared machine's noise of each other."""
@@ -81,19 +81,18 @@ Measured on dungeon_1k and building_1k (map_analysis_sampling, simplify CPU): 2.
 Point = tuple[float, ...]
 
 
-class _Chain(NamedTuple):
-    """The structure a walk test is asked from: its nodes, each node's successors (tree and loop edges) and
-    position, and C of the chain being answered."""
+class _Structure(NamedTuple):
+    """The structure walk tests are asked from: its nodes, each node's successors (tree and loop edges) and
+    position."""
 
     nodes: Iterable[int]
     successors: Callable[[int], Iterable[int]]
     position: Callable[[int], Point]
-    c: int
 
-    def below(self, count: int) -> list[Point]:
-        """The positions of up to ``count`` nodes under C, nearest first (breadth first, by id)."""
+    def below(self, c: int, count: int) -> list[Point]:
+        """The positions of up to ``count`` nodes under ``c``, nearest first (breadth first, by id)."""
         found: list[int] = []
-        frontier = [self.c]
+        frontier = [c]
         while frontier and len(found) < count:
             frontier = sorted(n for node in frontier for n in self.successors(node))
             found.extend(frontier[: count - len(found)])
@@ -106,91 +105,98 @@ def mesh_los_predicate(
     """``P(tree, a, b, c)`` over ``mesh`` for ``agent`` (see the module docstring); ``graph``: the run's
     initial graph, which ``max_traffic_step`` needs (:func:`g2s_plugins._surface.collapse_rule`).
 
-    Simplification asks about one chain at a time, and after removing B it
-    asks about A and each child of C next. So a walk A -> C that is not cached
-    yet is tested in one batch with the walks from A to the ``LOOKAHEAD``
-    nodes nearest under C: one ray batch then answers a whole run of removals
-    along a chain. Every walk is tested on its own rays, so the answers are
-    those of one call per pair; only the number of calls changes.
-
-    The predicate carries the whole-forest path (:mod:`g2s_core.simplify`):
-    :func:`g2s_plugins.recast.navmesh.collapse_forest_seeing` with this walk
-    test, the lookahead reading the forest's own edges (below C they are the
-    structure's while Algorithm 4 runs: C's subtree is not walked yet).
+    Walks are tested in batches, each walk on its own rays, so the answers
+    are those of one test per pair; only the number of ray batches changes.
+    A walk A -> C not cached yet is tested with the walks from A to the
+    ``LOOKAHEAD`` nodes nearest under C, which simplification asks about
+    next if it removes B: one batch then answers a run of removals along a
+    chain. The predicate carries the whole-forest path
+    (:mod:`g2s_core.simplify`): :func:`g2s_plugins.recast.navmesh.collapse_forest_seeing`
+    with this walk test, which asks the walks of every chain waiting for one
+    in a single batch; there the lookahead reads the forest's own edges
+    (below C they are the structure's while Algorithm 4 runs: C's subtree
+    is not walked yet).
     """
     probe_step = params.probe_step if params.probe_step is not None else 0.5 * agent.radius
     caster: RayCaster | None = None
     floor_of: dict[Point, int] = {}  # the open floor triangle each node of the tree stands on, or -1
     walked: dict[tuple[Point, Point], bool] = {}  # walks tested, start -> end
     cache: dict[tuple[Point, Point], bool] = {}  # answers given, for (A, C) and (C, A)
-    chain: _Chain | None = None  # where the walk test being answered is asked from
+    asking: tuple[_Structure, int, int] | None = None  # the structure, A and C of the chain being answered
 
-    def start_casting(chain: _Chain | None) -> RayCaster:
-        """The caster, and the open floor under every node of ``chain`` (built on first use: runs that never
+    def start_casting(structure: _Structure) -> RayCaster:
+        """The caster, and the open floor under every node of ``structure`` (built on first use: runs that never
         get here pay nothing; nodes keep their positions while simplification removes some)."""
         caster = RayCaster(mesh)
         floors = OpenFloors(caster, agent, min_inradius=agent.radius)
-        if chain is not None and floors.open.any():
-            positions = list(dict.fromkeys(map(chain.position, chain.nodes)))
+        if floors.open.any():
+            positions = list(dict.fromkeys(map(structure.position, structure.nodes)))
             faces = floors.faces_under(np.array(positions).reshape(-1, 3), floors.certain_offset(params.margin, params.max_surface_gap))
             floor_of.update(zip(positions, faces.tolist()))
         return caster
 
-    def certain(start: tuple[float, ...], end: tuple[float, ...]) -> bool:
+    def certain(start: Point, end: Point) -> bool:
         """Both ends on the same open floor triangle: the walk passes (:class:`OpenFloors`)."""
         face = floor_of.get(start, -1)
         return face >= 0 and floor_of.get(end, -1) == face
 
-    def walkable(start: tuple[float, ...], end: tuple[float, ...]) -> bool:
+    def walks(structure: _Structure, pairs: list[tuple[int, int]]) -> list[bool]:
+        """Whether the agent walks from A to C, for each pair (A, C) of nodes of ``structure``; the walks not
+        known yet, and those from A to the nodes under C not known either, tested in one batch."""
         nonlocal caster
-        if (start, end) not in cache:
-            if caster is None:
-                caster = start_casting(chain)
+        if caster is None:
+            caster = start_casting(structure)
+        asked = [(structure.position(a), structure.position(c)) for a, c in pairs]
+        tested: dict[tuple[Point, Point], None] = {}
+        for (_, c), (start, end) in zip(pairs, asked):
+            if (start, end) in cache or (start, end) in walked:
+                continue
             if certain(start, end):
                 walked[(start, end)] = True
-            elif (start, end) not in walked:
-                ends = [end]
-                if chain is not None:
-                    ahead = dict.fromkeys(chain.below(LOOKAHEAD))
-                    ends += [e for e in ahead if (start, e) not in walked and e != end and not certain(start, e)]
-                ok, _ = walk_segments(
-                    caster, np.array([start] * len(ends)), np.array(ends), agent, probe_step, params.margin,
-                    params.max_surface_gap,
-                )
-                walked.update(((start, e), answer) for e, answer in zip(ends, ok.tolist()))
-            cache[(start, end)] = cache[(end, start)] = walked[(start, end)]
-        return cache[(start, end)]
+                continue
+            tested[(start, end)] = None
+            tested.update(((start, e), None) for e in structure.below(c, LOOKAHEAD)
+                          if (start, e) not in walked and e != end and not certain(start, e))
+        if tested:
+            starts, ends = zip(*tested)
+            ok, _ = walk_segments(caster, np.array(starts), np.array(ends), agent, probe_step, params.margin,
+                                  params.max_surface_gap)
+            walked.update(zip(tested, ok.tolist()))
+        for start, end in asked:
+            if (start, end) not in cache:
+                cache[(start, end)] = cache[(end, start)] = walked[(start, end)]
+        return [cache[pair] for pair in asked]
+
+    def line_of_sight(start: Point, end: Point) -> bool:
+        """The walk test of the chain being answered (``start`` and ``end``: its A's and C's positions)."""
+        structure, a, c = asking
+        return walks(structure, [(a, c)])[0]
 
     def native(forest: ForestArrays, rule_arrays: RuleArrays) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        ids, points = forest.ids.tolist(), list(map(tuple, forest.points.tolist()))
-        position = dict(zip(ids, points))
+        ids = forest.ids.tolist()
         successors: dict[int, list[int]] = {node: [] for node in ids}
         for node, row in zip(ids, forest.parent.tolist()):
             if row >= 0:
                 successors[ids[row]].append(node)
         for u, v in forest.loops.tolist():
             successors[ids[u]].append(ids[v])
+        structure = _Structure(ids, successors.__getitem__, dict(zip(ids, map(tuple, forest.points.tolist()))).__getitem__)
 
-        def sees(a: int, c: int) -> bool:  # rows of the forest
-            nonlocal chain
-            chain = _Chain(ids, successors.__getitem__, position.__getitem__, ids[c])
-            try:
-                return walkable(points[a], points[c])
-            finally:
-                chain = None
+        def sees(pairs: np.ndarray) -> np.ndarray:  # (k,2) rows of the forest -> (k,) bool
+            return np.array(walks(structure, [(ids[a], ids[c]) for a, c in pairs.tolist()]), dtype=bool)
 
         return collapse_forest_seeing(forest, rule_arrays, sees)
 
-    rule = collapse_rule(params, walkable, graph, native)
+    rule = collapse_rule(params, line_of_sight, graph, native)
 
     def predicate(tree: nx.DiGraph, a: int, b: int, c: int) -> bool:
-        nonlocal chain
+        nonlocal asking
         nodes = tree._node
-        chain = _Chain(tree, tree.successors, lambda node: tuple(map(float, nodes[node]["pos"])), c)
+        asking = (_Structure(tree, tree.successors, lambda node: tuple(map(float, nodes[node]["pos"]))), a, c)
         try:
             return rule(tree, a, b, c)
         finally:
-            chain = None
+            asking = None
 
     predicate.whole_forest = rule.whole_forest  # type: ignore[attr-defined]
     return predicate
