@@ -180,3 +180,30 @@ def test_mesh_los_whole_forest_path_builds_the_loop_structure_in_later_heat_roun
             kept = set(structure) | set(random.Random(seed).sample(removed, len(removed) // 10))
         assert forest.number_of_nodes() > structure.number_of_nodes()
         assert asked[1] > 0 and tested[1] < 0.25 * tested[0]
+
+
+def test_a_batched_line_of_sight_that_fails_or_answers_short_stops_the_simplification(sampled):
+    from g2s_core.simplify import forest_arrays
+    from g2s_plugins.recast.navmesh import collapse_forest_seeing
+
+    forest = forest_arrays(sampled.forest)
+    n = len(forest.ids)
+    rule = _surface.RuleArrays(on_navmesh=np.ones(n, bool), rank=np.full(n, np.nan), normals=np.tile([0.0, 1.0, 0.0], (n, 1)),
+                               normal_lengths=np.ones(n), max_step=None, tolerance_deg=10.0, whole_chain=True)
+    batches = []
+
+    def sees(pairs):
+        batches.append(pairs.copy())
+        return np.ones(len(pairs), bool)
+
+    kept, added, loop = collapse_forest_seeing(forest, rule, sees)
+    # every walk passes: some nodes go
+    assert len(batches) >= 1 and all(pairs.shape[1] == 2 for pairs in batches) and not kept.all()
+
+    def failing(pairs):
+        raise ValueError("no walk")
+
+    with pytest.raises(ValueError, match="no walk"):
+        collapse_forest_seeing(forest, rule, failing)
+    with pytest.raises(ValueError, match="every pair"):
+        collapse_forest_seeing(forest, rule, lambda pairs: np.ones(len(pairs) + 1, bool))
