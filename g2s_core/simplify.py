@@ -29,8 +29,8 @@ in the structure.
 A predicate may carry a whole-forest path, ``predicate.whole_forest``: a
 function of the forest as :class:`ForestArrays` returning what Algorithm 4
 and the loop pass above do with the predicate's answers (which nodes stay,
-which edges they add, in order), computed in one call (the ``surface_los``
-predicate does it in C++, src/forest_simplify.hpp). The structure is then
+which edges they add, in order), computed in one call (both line-of-sight
+predicates do it in C++, src/forest_simplify.hpp). The structure is then
 built from that answer, the same graph as the loop below would build: the
 kept nodes in the forest's order, each node's successors and predecessors
 in the order their edges were made (the forest's first, then the added

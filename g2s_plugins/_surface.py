@@ -5,8 +5,9 @@
 * :func:`collapse_rule`: the paper's Algorithm 5 (Sec. 3.1.5) as both line-of-
   sight predicates (``surface_los`` over the navmesh, ``mesh_los`` over the
   level mesh) apply it; they differ only in the line-of-sight test they pass.
-  With a native rule (:class:`RuleArrays`, ``surface_los``'s in C++) the
-  predicate also carries the core's whole-forest path.
+  With a native rule (:class:`RuleArrays`: both predicates' in C++,
+  src/forest_simplify.hpp) the predicate also carries the core's
+  whole-forest path.
 * :func:`normals_angle_deg`: the normal test.
 * :func:`traffic_ranks`: the walking-flow percentile of each node, for the
   rule's optional traffic test (``max_traffic_step``).

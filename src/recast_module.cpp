@@ -1878,13 +1878,13 @@ using ValuesIn = nb::ndarray<const double, nb::ndim<1>, nb::c_contig, nb::device
 using PairsIn = nb::ndarray<const int64_t, nb::shape<-1, 2>, nb::c_contig, nb::device::cpu>;
 
 // Algorithm 5's collapse rule as g2s_plugins/_surface.py's collapse_rule states it, on the forest's arrays (node
-// indices), with the surface_los predicate's line of sight (NavMeshCore::sees, the line_of_sight binding's test).
+// indices), with `Sight` as its line of sight: sight(a, c) -> forest_simplify::Answer, asked only when the other
+// tests let b go, and sight.resolve() (forest_simplify's "Batches").
 // The same floating-point steps as the Python rule, so the same answers: the normals' lengths come from Python's
 // math.hypot, the angle is acos of the clamped cosine times 180 / pi (math.degrees), the traffic test the
 // difference of two percentiles.
-struct SurfaceRule {
-    const NavMeshCore& nav;
-    const double* points;          // (n,3) positions, the navmesh's local frame
+template <typename Sight>
+struct CollapseRule {
     const bool* on_navmesh;        // (n,)
     const double* rank;            // (n,) walking-flow percentile, NaN for a node without one
     std::optional<double> max_step;
@@ -1892,15 +1892,8 @@ struct SurfaceRule {
     const double* normal_length;   // (n,) math.hypot of each normal
     double tolerance_deg;
     bool whole_chain;
-    double step;
-    float horizontal;
-    std::optional<double> max_gap;
-    std::vector<dtPolyRef> path = std::vector<dtPolyRef>(256);
-    // the polygon nearest the last A asked (Algorithm 4 asks every chain from one A in a row): Detour's answer for
-    // a point depends on the point alone
-    int64_t from = -1;
-    dtPolyRef start_ref = 0;
-    float start[3] = {0, 0, 0};
+    Sight sight;
+    static constexpr bool batches = Sight::batches;
 
     bool bent(int64_t u, int64_t v) const {
         const double lengths = normal_length[u] * normal_length[v];
@@ -1918,24 +1911,112 @@ struct SurfaceRule {
         return std::fabs(ra - rb) > *max_step || std::fabs(rc - rb) > *max_step;
     }
 
-    bool operator()(int64_t a, int64_t b, int64_t c, bool c_is_leaf) {
-        if (!on_navmesh[c] && c_is_leaf) return false;
-        if (step_too_large(a, b, c) || bent(a, b) || (whole_chain && (bent(b, c) || bent(a, c)))) return false;
+    forest_simplify::Answer operator()(int64_t a, int64_t b, int64_t c, bool c_is_leaf) {
+        if (!on_navmesh[c] && c_is_leaf) return forest_simplify::Answer::no;
+        if (step_too_large(a, b, c) || bent(a, b) || (whole_chain && (bent(b, c) || bent(a, c))))
+            return forest_simplify::Answer::no;
+        return sight(a, c);
+    }
+
+    void resolve() const { sight.resolve(); }
+};
+
+// The surface_los predicate's line of sight (NavMeshCore::sees, the line_of_sight binding's test) between the
+// points of two nodes.
+struct NavMeshSight {
+    const NavMeshCore& nav;
+    const double* points;          // (n,3) positions, the navmesh's local frame
+    double step;
+    float horizontal;
+    std::optional<double> max_gap;
+    std::vector<dtPolyRef> path = std::vector<dtPolyRef>(256);
+    // the polygon nearest the last A asked (Algorithm 4 asks every chain from one A in a row): Detour's answer for
+    // a point depends on the point alone
+    int64_t from = -1;
+    dtPolyRef start_ref = 0;
+    float start[3] = {0, 0, 0};
+    static constexpr bool batches = false;
+
+    forest_simplify::Answer operator()(int64_t a, int64_t c) {
         const double* pa = points + 3 * a;
         if (a != from) {
             const float fa[3] = {static_cast<float>(pa[0]), static_cast<float>(pa[1]), static_cast<float>(pa[2])};
             from = a;
             if (dtStatusFailed(nav.query->findNearestPoly(fa, nav.default_ext, &nav.filter, &start_ref, start))) start_ref = 0;
         }
-        return nav.sees(start_ref, start, pa, points + 3 * c, step, horizontal, max_gap, path);
+        return nav.sees(start_ref, start, pa, points + 3 * c, step, horizontal, max_gap, path)
+                   ? forest_simplify::Answer::yes : forest_simplify::Answer::no;
+    }
+
+    void resolve() const {}  // every answer given at once
+};
+
+// Lines of sight asked of Python in batches (the mesh_los predicate's walk test): the pairs of node indices asked
+// and not answered yet, and the answers so far, for one simplification.
+struct AskedSights {
+    PyObject* sees;  // sees(pairs (k,2) int64) -> (k,) bool; borrowed: the binding's argument keeps it alive
+    std::vector<int64_t> asked;  // (k,2) flattened
+    std::unordered_map<uint64_t, bool> known;  // a * n + c
+    uint64_t n;
+};
+
+// The line of sight of AskedSights: a pair not answered yet is `later`, and resolve() asks sees() about every such
+// pair in one call. On one thread, with the GIL held (the copies forest_simplify makes share the one AskedSights).
+struct PythonSight {
+    AskedSights* sights;
+    static constexpr bool batches = true;
+
+    forest_simplify::Answer operator()(int64_t a, int64_t c) const {
+        const auto it = sights->known.find(static_cast<uint64_t>(a) * sights->n + static_cast<uint64_t>(c));
+        if (it != sights->known.end()) return it->second ? forest_simplify::Answer::yes : forest_simplify::Answer::no;
+        sights->asked.insert(sights->asked.end(), {a, c});
+        return forest_simplify::Answer::later;
+    }
+
+    void resolve() const {
+        std::vector<int64_t>& asked = sights->asked;
+        const size_t count = asked.size() / 2;
+        const nb::object answers = nb::handle(sights->sees)(to_numpy(asked, count, 2));
+        const auto ok = nb::cast<nb::ndarray<const bool, nb::ndim<1>, nb::c_contig, nb::device::cpu>>(answers);
+        if (ok.shape(0) != count) throw nb::value_error("sees must answer every pair it is given");
+        for (size_t k = 0; k < count; ++k)
+            sights->known[static_cast<uint64_t>(asked[2 * k]) * sights->n + static_cast<uint64_t>(asked[2 * k + 1])] =
+                ok.data()[k];
+        asked.clear();
     }
 };
+
+// The forest of the collapse_forest bindings' arrays, once every per-node array (`rows`: the others' row counts)
+// has a row per node and parent, loops and roots hold node indices.
+forest_simplify::Forest checked_forest(const IdsIn& ids, const IdsIn& parent, const IdsIn& depth, const MaskIn& fixed,
+                                       const PairsIn& loops, const IdsIn& roots, std::initializer_list<size_t> rows) {
+    const size_t count = ids.shape(0);
+    if (parent.shape(0) != count || depth.shape(0) != count || fixed.shape(0) != count ||
+        std::any_of(rows.begin(), rows.end(), [&](size_t other) { return other != count; }))
+        throw nb::value_error("every per-node array must have one row per node");
+    const int64_t size = static_cast<int64_t>(count);
+    auto inside = [&](const int64_t* first, size_t length, int64_t low) {
+        return std::all_of(first, first + length, [&](int64_t i) { return i >= low && i < size; });
+    };
+    if (!inside(parent.data(), count, -1) || !inside(loops.data(), 2 * loops.shape(0), 0) ||
+        !inside(roots.data(), roots.shape(0), 0))
+        throw nb::value_error("parent, loops and roots must hold node indices");
+    forest_simplify::Forest f;
+    f.n = count; f.ids = ids.data(); f.parent = parent.data(); f.depth = depth.data(); f.fixed = fixed.data();
+    f.m = loops.shape(0); f.loops = loops.data(); f.r = roots.shape(0); f.roots = roots.data();
+    return f;
+}
 
 nb::object bool_numpy(const std::vector<uint8_t>& src) {  // (N,) numpy bool of 0/1 bytes
     auto* buf = new uint8_t[src.empty() ? 1 : src.size()];
     std::copy(src.begin(), src.end(), buf);
     nb::capsule owner(buf, [](void* p) noexcept { delete[] static_cast<uint8_t*>(p); });
     return nb::cast(nb::ndarray<nb::numpy, bool>(reinterpret_cast<bool*>(buf), {src.size()}, owner), nb::rv_policy::move);
+}
+
+// (kept (n,) bool, added (k,2) int64, loop (k,) bool) as numpy arrays: the collapse_forest bindings' answer
+nb::object simplified_numpy(const forest_simplify::Simplified& s) {
+    return nb::make_tuple(bool_numpy(s.kept), to_numpy(s.added, s.loop.size(), 2), bool_numpy(s.loop));
 }
 
 }  // namespace
@@ -2103,29 +2184,19 @@ NB_MODULE(_recast, m) {
                 ValuesIn normal_length, double tolerance_deg, bool whole_chain, double step, float horizontal,
                 std::optional<double> max_gap) {
                  if (!(step > 0)) throw nb::value_error("step must be positive");
-                 const size_t count = ids.shape(0);
-                 for (size_t rows : {parent.shape(0), depth.shape(0), fixed.shape(0), points.shape(0), on_navmesh.shape(0),
-                                     rank.shape(0), normals.shape(0), normal_length.shape(0)})
-                     if (rows != count) throw nb::value_error("every per-node array must have one row per node");
-                 const int64_t size = static_cast<int64_t>(count);
-                 auto inside = [&](const int64_t* first, size_t length, int64_t low) {
-                     return std::all_of(first, first + length, [&](int64_t i) { return i >= low && i < size; });
-                 };
-                 if (!inside(parent.data(), count, -1) || !inside(loops.data(), 2 * loops.shape(0), 0) ||
-                     !inside(roots.data(), roots.shape(0), 0))
-                     throw nb::value_error("parent, loops and roots must hold node indices");
-                 forest_simplify::Forest f;
-                 f.n = count; f.ids = ids.data(); f.parent = parent.data(); f.depth = depth.data(); f.fixed = fixed.data();
-                 f.m = loops.shape(0); f.loops = loops.data(); f.r = roots.shape(0); f.roots = roots.data();
-                 SurfaceRule rule{n, points.data(), on_navmesh.data(), rank.data(), max_step, normals.data(),
-                                  normal_length.data(), tolerance_deg, whole_chain, step, horizontal, max_gap};
+                 const forest_simplify::Forest f = checked_forest(
+                     ids, parent, depth, fixed, loops, roots,
+                     {points.shape(0), on_navmesh.shape(0), rank.shape(0), normals.shape(0), normal_length.shape(0)});
+                 CollapseRule<NavMeshSight> rule{on_navmesh.data(), rank.data(), max_step, normals.data(),
+                                                 normal_length.data(), tolerance_deg, whole_chain,
+                                                 NavMeshSight{n, points.data(), step, horizontal, max_gap}};
                  forest_simplify::Simplified s;
                  {
                      nb::gil_scoped_release release;
                      std::lock_guard<std::mutex> lock(n.mutex);
                      s = forest_simplify::simplify(f, rule, std::max(1u, std::thread::hardware_concurrency()));
                  }
-                 return nb::make_tuple(bool_numpy(s.kept), to_numpy(s.added, s.loop.size(), 2), bool_numpy(s.loop));
+                 return simplified_numpy(s);
              },
              nb::arg("ids"), nb::arg("parent"), nb::arg("depth"), nb::arg("fixed"), nb::arg("loops"), nb::arg("roots"),
              nb::arg("points"), nb::arg("on_navmesh"), nb::arg("rank"), nb::arg("max_step").none(), nb::arg("normals"),
@@ -2162,6 +2233,27 @@ NB_MODULE(_recast, m) {
                  return n.ref_to_index(static_cast<dtPolyRef>(ref));
              },
              nb::arg("ref"), "global polygon index of a Detour dtPolyRef (tile's first index + decodePolyIdPoly); -1 for 0");
+
+    m.def("collapse_forest",
+          [](IdsIn ids, IdsIn parent, IdsIn depth, MaskIn fixed, PairsIn loops, IdsIn roots, MaskIn on_navmesh,
+             ValuesIn rank, std::optional<double> max_step, PointsIn normals, ValuesIn normal_length,
+             double tolerance_deg, bool whole_chain, nb::callable sees) {
+              const forest_simplify::Forest f = checked_forest(
+                  ids, parent, depth, fixed, loops, roots,
+                  {on_navmesh.shape(0), rank.shape(0), normals.shape(0), normal_length.shape(0)});
+              AskedSights sights{sees.ptr(), {}, {}, f.n};
+              CollapseRule<PythonSight> rule{on_navmesh.data(), rank.data(), max_step, normals.data(),
+                                             normal_length.data(), tolerance_deg, whole_chain, PythonSight{&sights}};
+              return simplified_numpy(forest_simplify::simplify(f, rule, 1));
+          },
+          nb::arg("ids"), nb::arg("parent"), nb::arg("depth"), nb::arg("fixed"), nb::arg("loops"), nb::arg("roots"),
+          nb::arg("on_navmesh"), nb::arg("rank"), nb::arg("max_step").none(), nb::arg("normals"),
+          nb::arg("normal_length"), nb::arg("tolerance_deg"), nb::arg("whole_chain"), nb::arg("sees"),
+          "NavMesh.collapse_forest's answer with the line of sight sees(pairs) -> (k,) bool, a Python callable of "
+          "(k,2) int64 rows (a, c) of node indices, instead of the navmesh's: Algorithm 4 and Algorithm 5's other "
+          "tests in C++ on one thread, the callable asked only for the chains those let b go, in batches: every "
+          "walk below a kept node goes on until it is done or needs an answer not given yet, and then the pairs "
+          "they all asked for are given in one call (src/forest_simplify.hpp, \"Batches\")");
 
     def_build<float, int32_t>(m);
     def_build<double, int32_t>(m);

@@ -136,3 +136,74 @@ def test_the_pipeline_takes_the_whole_forest_path_in_every_heat_round(monkeypatc
     monkeypatch.setattr(surface_los, "collapse_rule", lambda params, sight, graph, native: rule(params, sight, graph))
     reference = pipeline.run(plan, registry, SAMPLES["castle"]().mesh, "castle", "-").structure
     assert len(calls) >= 2 and layout(structure) == layout(reference)
+
+
+@pytest.fixture(scope="module")
+def sampled():
+    """``map_analysis_sampling`` on a small generated dungeon (no navmesh: the ``mesh_los`` predicate)."""
+    from g2s_plugins.samples.levels import dungeon
+
+    registry = Registry.from_entry_points()
+    plan = pipeline.plan(load_config(PRESETS_DIR / "map_analysis_sampling.yaml"), registry)
+    return pipeline.run(plan, registry, dungeon(seed=3, rooms=12).mesh, "dungeon", "-")
+
+
+def test_mesh_los_whole_forest_path_builds_the_loop_structure_in_later_heat_rounds_too(monkeypatch, sampled):
+    # mesh_los's whole-forest path (its walk test asked back from C++) against its chain-by-chain calls, on the
+    # run's forest and random ones, in a first round and in a later heat round that keeps the first's structure and
+    # some removed nodes. One predicate for both rounds, as the guarantee asks it: the later round's chains are
+    # asked in C++ again, but its walk test casts rays only for walks no earlier round tested.
+    from g2s_plugins import _raycasting
+    from g2s_plugins.predicates import mesh_los
+
+    walks, sights = [], []
+    monkeypatch.setattr(mesh_los, "walk_segments", lambda caster, starts, *args, **kwargs: walks.append(len(starts))
+                        or _raycasting.walk_segments(caster, starts, *args, **kwargs))
+    seeing = mesh_los.collapse_forest_seeing
+    monkeypatch.setattr(mesh_los, "collapse_forest_seeing", lambda forest, rule, sees: seeing(
+        forest, rule, lambda pairs: sights.append(len(pairs)) or sees(pairs)))
+    params = mesh_los.Params(normal_tolerance_deg=45.0, max_traffic_step=30.0)
+    for seed, forest in enumerate([sampled.forest] + [random_forest(sampled.graph, seed) for seed in range(3)]):
+        predicate = mesh_los.g2s_simplify_predicate(params, sampled.context, forest, None)
+        reference = mesh_los.g2s_simplify_predicate(params, sampled.context, forest, None)
+        kept: set[int] = set()
+        tested, asked = [], []
+        for _ in range(2):  # a first round, then a later one
+            walks.clear()
+            sights.clear()
+            structure = simplify_forest(forest, keeping(predicate, kept))
+            tested.append(sum(walks))
+            asked.append(sum(sights))
+            assert kept <= set(structure)
+            assert layout(structure) == layout(simplify_forest(forest, keeping(through_python(reference), kept)))
+            removed = sorted(set(forest) - set(structure))
+            kept = set(structure) | set(random.Random(seed).sample(removed, len(removed) // 10))
+        assert forest.number_of_nodes() > structure.number_of_nodes()
+        assert asked[1] > 0 and tested[1] < 0.25 * tested[0]
+
+
+def test_a_batched_line_of_sight_that_fails_or_answers_short_stops_the_simplification(sampled):
+    from g2s_core.simplify import forest_arrays
+    from g2s_plugins.recast.navmesh import collapse_forest_seeing
+
+    forest = forest_arrays(sampled.forest)
+    n = len(forest.ids)
+    rule = _surface.RuleArrays(on_navmesh=np.ones(n, bool), rank=np.full(n, np.nan), normals=np.tile([0.0, 1.0, 0.0], (n, 1)),
+                               normal_lengths=np.ones(n), max_step=None, tolerance_deg=10.0, whole_chain=True)
+    batches = []
+
+    def sees(pairs):
+        batches.append(pairs.copy())
+        return np.ones(len(pairs), bool)
+
+    kept, added, loop = collapse_forest_seeing(forest, rule, sees)
+    # every walk passes: some nodes go
+    assert len(batches) >= 1 and all(pairs.shape[1] == 2 for pairs in batches) and not kept.all()
+
+    def failing(pairs):
+        raise ValueError("no walk")
+
+    with pytest.raises(ValueError, match="no walk"):
+        collapse_forest_seeing(forest, rule, failing)
+    with pytest.raises(ValueError, match="every pair"):
+        collapse_forest_seeing(forest, rule, lambda pairs: np.ones(len(pairs) + 1, bool))

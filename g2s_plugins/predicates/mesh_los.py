@@ -30,15 +30,25 @@ Which predicate to use:
 Cost: a walk between two nodes on one open floor triangle passes without a
 ray (:class:`g2s_plugins._raycasting.OpenFloors`, looked up once for every
 node of the tree); any other costs about 2 L / probe_step + 3 rays (L =
-|AC|), through Embree when available. Answers are cached per (A, C) pair,
-and a walk not cached yet is tested in one batch with the walks from A to
-the nodes just below C, which the next calls along the chain ask about
-(``LOOKAHEAD``).
+|AC|), through Embree when available. Answers are cached per (A, C) pair
+for the predicate's life: the heat guarantee's rounds
+(:mod:`g2s_plugins.heat_guarantee`) ask the same predicate, so a later
+round casts rays only for walks no earlier round tested. Simplification
+takes the predicate's whole-forest path (:mod:`g2s_core.simplify`):
+Algorithm 4 and Algorithm 5's other tests in C++ (src/forest_simplify.hpp,
+``surface_los``'s), which asks this walk test back in Python only for the
+chains those tests let go, and in batches: the walks below every kept node
+go on until each needs a walk not known yet, and those walks are tested in
+one ray batch, each with the walks from its A to the nodes just below its C,
+which that walk asks about next if B goes (``LOOKAHEAD``). A ray batch costs
+mostly per call (docs/performance.md, "The sampling route's simplification
+in C++").
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
+from typing import NamedTuple
 
 import networkx as nx
 import numpy as np
@@ -46,9 +56,11 @@ from pydantic import Field
 
 from g2s_core.model import RunContext
 from g2s_core.plugin import hookimpl
+from g2s_core.simplify import ForestArrays
 from g2s_plugins._raycasting import GROUND_MARGIN, AgentShape, OpenFloors, RayCaster, walk_segments
-from g2s_plugins._surface import CollapseParams, collapse_rule
+from g2s_plugins._surface import CollapseParams, RuleArrays, collapse_rule
 from g2s_plugins.heat_guarantee import guaranteed
+from g2s_plugins.recast.navmesh import collapse_forest_seeing
 
 NAME = "mesh_los"
 
@@ -62,20 +74,34 @@ class Params(CollapseParams):
 
 
 LOOKAHEAD = 8
-"""Nodes below C whose walks from A are tested in the same batch as A -> C (see ``mesh_los_predicate``).
+"""Nodes below C whose walks from A are tested in the same batch as A -> C (see :func:`mesh_los_predicate`).
 
-Measured on dungeon_1k and building_1k (map_analysis_sampling, simplify CPU): 2.9-3.0 s without lookahead,
-1.15-1.5 s for any of 2, 4, 8, 12 or 32, within the shared machine's noise of each other."""
+Measured on dungeon_1k and building_1k (map_analysis_sampling, simplify CPU, chain by chain): 2.9-3.0 s without
+lookahead, 1.15-1.5 s for any of 2, 4, 8, 12 or 32, within the shared machine's noise of each other. With the walks
+asked in batches (a 500-room dungeon's first round, before the loop pass asked its chains together): 2,881 ray
+batches of 26,558 walks at 8, 2,691 of 64,865 at 32, 2,683 of 164,019 at 128: the nodes under C are not what the
+batches wait for."""
 
 
-def _below(tree: nx.DiGraph, c: int, count: int) -> list[int]:
-    """Up to ``count`` nodes under ``c`` in ``tree``, nearest first (breadth first, by id)."""
-    found: list[int] = []
-    frontier = [c]
-    while frontier and len(found) < count:
-        frontier = sorted(n for node in frontier for n in tree.successors(node))
-        found.extend(frontier[: count - len(found)])
-    return found
+Point = tuple[float, ...]
+
+
+class _Structure(NamedTuple):
+    """The structure walk tests are asked from: its nodes, each node's successors (tree and loop edges) and
+    position."""
+
+    nodes: Iterable[int]
+    successors: Callable[[int], Iterable[int]]
+    position: Callable[[int], Point]
+
+    def below(self, c: int, count: int) -> list[Point]:
+        """The positions of up to ``count`` nodes under ``c``, nearest first (breadth first, by id)."""
+        found: list[int] = []
+        frontier = [c]
+        while frontier and len(found) < count:
+            frontier = sorted(n for node in frontier for n in self.successors(node))
+            found.extend(frontier[: count - len(found)])
+        return list(map(self.position, found))
 
 
 def mesh_los_predicate(
@@ -84,70 +110,100 @@ def mesh_los_predicate(
     """``P(tree, a, b, c)`` over ``mesh`` for ``agent`` (see the module docstring); ``graph``: the run's
     initial graph, which ``max_traffic_step`` needs (:func:`g2s_plugins._surface.collapse_rule`).
 
-    Simplification asks about one chain at a time, and after removing B it
-    asks about A and each child of C next. So a walk A -> C that is not cached
-    yet is tested in one batch with the walks from A to the ``LOOKAHEAD``
-    nodes nearest under C: one ray batch then answers a whole run of removals
-    along a chain. Every walk is tested on its own rays, so the answers are
-    those of one call per pair; only the number of calls changes.
+    Walks are tested in batches, each walk on its own rays, so the answers
+    are those of one test per pair; only the number of ray batches changes.
+    A walk A -> C not cached yet is tested with the walks from A to the
+    ``LOOKAHEAD`` nodes nearest under C, which simplification asks about
+    next if it removes B: one batch then answers a run of removals along a
+    chain. The predicate carries the whole-forest path
+    (:mod:`g2s_core.simplify`): :func:`g2s_plugins.recast.navmesh.collapse_forest_seeing`
+    with this walk test, which asks the walks of every chain waiting for one
+    in a single batch; there the lookahead reads the forest's own edges
+    (below C they are the structure's while Algorithm 4 runs: C's subtree
+    is not walked yet).
     """
     probe_step = params.probe_step if params.probe_step is not None else 0.5 * agent.radius
     caster: RayCaster | None = None
-    floor_of: dict[tuple[float, ...], int] = {}  # the open floor triangle each node of the tree stands on, or -1
-    walked: dict[tuple[tuple[float, ...], tuple[float, ...]], bool] = {}  # walks tested, start -> end
-    cache: dict[tuple[tuple[float, ...], tuple[float, ...]], bool] = {}  # answers given, for (A, C) and (C, A)
-    chain: tuple[nx.DiGraph, int] | None = None  # the tree and C of the predicate call being answered
+    floor_of: dict[Point, int] = {}  # the open floor triangle each node of the tree stands on, or -1
+    walked: dict[tuple[Point, Point], bool] = {}  # walks tested, start -> end
+    cache: dict[tuple[Point, Point], bool] = {}  # answers given, for (A, C) and (C, A)
+    asking: tuple[_Structure, int, int] | None = None  # the structure, A and C of the chain being answered
 
-    def position(tree: nx.DiGraph, node: int) -> tuple[float, ...]:
-        return tuple(map(float, tree.nodes[node]["pos"]))
-
-    def start_casting(tree: nx.DiGraph | None) -> RayCaster:
-        """The caster, and the open floor under every node of ``tree`` (built on first use: runs that never
+    def start_casting(structure: _Structure) -> RayCaster:
+        """The caster, and the open floor under every node of ``structure`` (built on first use: runs that never
         get here pay nothing; nodes keep their positions while simplification removes some)."""
         caster = RayCaster(mesh)
         floors = OpenFloors(caster, agent, min_inradius=agent.radius)
-        if tree is not None and floors.open.any():
-            positions = list(dict.fromkeys(position(tree, node) for node in tree))
+        if floors.open.any():
+            positions = list(dict.fromkeys(map(structure.position, structure.nodes)))
             faces = floors.faces_under(np.array(positions).reshape(-1, 3), floors.certain_offset(params.margin, params.max_surface_gap))
             floor_of.update(zip(positions, faces.tolist()))
         return caster
 
-    def certain(start: tuple[float, ...], end: tuple[float, ...]) -> bool:
+    def certain(start: Point, end: Point) -> bool:
         """Both ends on the same open floor triangle: the walk passes (:class:`OpenFloors`)."""
         face = floor_of.get(start, -1)
         return face >= 0 and floor_of.get(end, -1) == face
 
-    def walkable(start: tuple[float, ...], end: tuple[float, ...]) -> bool:
+    def walks(structure: _Structure, pairs: list[tuple[int, int]]) -> list[bool]:
+        """Whether the agent walks from A to C, for each pair (A, C) of nodes of ``structure``; the walks not
+        known yet, and those from A to the nodes under C not known either, tested in one batch."""
         nonlocal caster
-        if (start, end) not in cache:
-            if caster is None:
-                caster = start_casting(chain[0] if chain is not None else None)
+        if caster is None:
+            caster = start_casting(structure)
+        asked = [(structure.position(a), structure.position(c)) for a, c in pairs]
+        tested: dict[tuple[Point, Point], None] = {}
+        for (_, c), (start, end) in zip(pairs, asked):
+            if (start, end) in cache or (start, end) in walked:
+                continue
             if certain(start, end):
                 walked[(start, end)] = True
-            elif (start, end) not in walked:
-                ends = [end]
-                if chain is not None:
-                    tree, c = chain
-                    ahead = dict.fromkeys(position(tree, node) for node in _below(tree, c, LOOKAHEAD))
-                    ends += [e for e in ahead if (start, e) not in walked and e != end and not certain(start, e)]
-                ok, _ = walk_segments(
-                    caster, np.array([start] * len(ends)), np.array(ends), agent, probe_step, params.margin,
-                    params.max_surface_gap,
-                )
-                walked.update(((start, e), answer) for e, answer in zip(ends, ok.tolist()))
-            cache[(start, end)] = cache[(end, start)] = walked[(start, end)]
-        return cache[(start, end)]
+                continue
+            tested[(start, end)] = None
+            tested.update(((start, e), None) for e in structure.below(c, LOOKAHEAD)
+                          if (start, e) not in walked and e != end and not certain(start, e))
+        if tested:
+            starts, ends = zip(*tested)
+            ok, _ = walk_segments(caster, np.array(starts), np.array(ends), agent, probe_step, params.margin,
+                                  params.max_surface_gap)
+            walked.update(zip(tested, ok.tolist()))
+        for start, end in asked:
+            if (start, end) not in cache:
+                cache[(start, end)] = cache[(end, start)] = walked[(start, end)]
+        return [cache[pair] for pair in asked]
 
-    rule = collapse_rule(params, walkable, graph)
+    def line_of_sight(start: Point, end: Point) -> bool:
+        """The walk test of the chain being answered (``start`` and ``end``: its A's and C's positions)."""
+        structure, a, c = asking
+        return walks(structure, [(a, c)])[0]
+
+    def native(forest: ForestArrays, rule_arrays: RuleArrays) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        ids = forest.ids.tolist()
+        successors: dict[int, list[int]] = {node: [] for node in ids}
+        for node, row in zip(ids, forest.parent.tolist()):
+            if row >= 0:
+                successors[ids[row]].append(node)
+        for u, v in forest.loops.tolist():
+            successors[ids[u]].append(ids[v])
+        structure = _Structure(ids, successors.__getitem__, dict(zip(ids, map(tuple, forest.points.tolist()))).__getitem__)
+
+        def sees(pairs: np.ndarray) -> np.ndarray:  # (k,2) rows of the forest -> (k,) bool
+            return np.array(walks(structure, [(ids[a], ids[c]) for a, c in pairs.tolist()]), dtype=bool)
+
+        return collapse_forest_seeing(forest, rule_arrays, sees)
+
+    rule = collapse_rule(params, line_of_sight, graph, native)
 
     def predicate(tree: nx.DiGraph, a: int, b: int, c: int) -> bool:
-        nonlocal chain
-        chain = (tree, c)
+        nonlocal asking
+        nodes = tree._node
+        asking = (_Structure(tree, tree.successors, lambda node: tuple(map(float, nodes[node]["pos"]))), a, c)
         try:
             return rule(tree, a, b, c)
         finally:
-            chain = None
+            asking = None
 
+    predicate.whole_forest = rule.whole_forest  # type: ignore[attr-defined]
     return predicate
 
 

@@ -326,6 +326,21 @@ class NavMesh:
 
 # ---------------------------------------------------------------- numpy helpers
 
+def collapse_forest_seeing(
+    forest: Any, rule: Any, sees: Callable[[np.ndarray], np.ndarray]
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """:meth:`NavMesh.collapse_forest`'s answer for ``forest`` (a :class:`~g2s_core.simplify.ForestArrays`) and
+    ``rule`` (a :class:`~g2s_plugins._surface.RuleArrays`) with the line of sight ``sees`` instead of the
+    navmesh's (the ``mesh_los`` predicate's walk test; no navmesh needed): Algorithm 4 and Algorithm 5's other tests
+    in C++ on one thread (src/forest_simplify.hpp), asking ``sees((k,2) int64 rows (a, c) of forest)`` -> (k,) bool
+    only for the chains those let go, in batches: the walks below every kept node go on until each is done or needs
+    an answer not given yet, and then the pairs they all wait for are given in one call. The answers must depend
+    on the pairs alone, not on the batches or their order."""
+    return _recast.collapse_forest(
+        forest.ids, forest.parent, forest.depth, forest.fixed, forest.loops, forest.roots, rule.on_navmesh, rule.rank,
+        rule.max_step, rule.normals, rule.normal_lengths, float(rule.tolerance_deg), bool(rule.whole_chain), sees)
+
+
 def _vec(p) -> tuple[float, float, float]:
     # unpacking rather than numpy: called once per raycast, on a tuple or (3,) array
     x, y, z = p
