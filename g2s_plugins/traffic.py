@@ -397,7 +397,7 @@ def split_path_flow(adjacency: sp.csr_array, sources: np.ndarray, values: np.nda
     centrality and their generic computation", Social Networks
     30(2):136-145, 2008): per source one Dijkstra search, O(m log m), then
     one pass forward over the settled nodes counting shortest paths and one
-    back summing values, O(m) each; memory O(n) per thread beside the
+    back summing values, O(m) each; memory O(n + m) per thread beside the
     (b, n) result. In the C++ extension (``src/trees_module.cpp``) on
     :data:`THREADS` threads, each source's sums in a fixed order: the same
     bits for any thread count.
