@@ -20,8 +20,10 @@ them all and every node of an area with terminals ends up within
 ``radius`` of the structure along the graph. They are *waypoints*:
 simplification may drop them like any node on a path (the structure's
 straight edges still pass there), so they do not bloat the final structure.
-Areas (connected components) smaller than ``min_area`` are reported in a
-warning and get no extra terminals (their leaves stay, as with ``leaves``).
+Areas (connected components) smaller than ``min_area`` get no extra
+terminals: their leaves stay (as with ``leaves``, and a tree of their own
+joins them), and those with no leaf (a single polygon, a ring) are left out
+and named in a warning.
 
 Default ``radius``: 12 agent radii (6 m for the default 0.5 m agent), but
 no more than a tenth of the level's horizontal extent so that small levels
@@ -186,7 +188,7 @@ class Params(PluginParams):
     """Cover radius, the smallest area that is forced in, and the traffic-aware cover before the plain one."""
 
     radius: float | None = Field(None, gt=0, description="every walkable node within this many metres (along the graph) of a terminal; default 12 agent radii, at most 1/10 of the level's extent")
-    min_area: float | None = Field(None, ge=0, description="walkable areas smaller than this (m²) are reported, not covered; default pi (radius / 2)²")
+    min_area: float | None = Field(None, ge=0, description="walkable areas smaller than this (m²) get no extra terminals: their leaves stay, those without a leaf are reported; default pi (radius / 2)²")
     traffic_weight: float = Field(0.0, ge=0, description="metres added to each edge per percentile point of walking-flow difference between its ends, for a first cover that puts nodes where traffic changes; 0: the plain cover only")
     traffic_radius: float | None = Field(None, gt=0, description="radius of that traffic-aware cover, in metres of those lengths; default 5/3 radius (10 m for 6 m)")
     traffic_sources: int = Field(traffic.WALKING_SOURCES, ge=1, description="sources of the walking flow that cover reads: set as the flow analyzer's max_sources")
