@@ -6,6 +6,7 @@ from __future__ import annotations
 import ast
 import os
 import resource
+import signal
 import subprocess
 import sys
 
@@ -80,7 +81,8 @@ def test_a_ctrl_c_the_executor_held_is_not_dropped_when_its_iterator_fails_at_th
     script = tmp_path / "batch.py"  # a file: the pool's workers import the function from it
     script.write_text(INTERRUPTED_AS_THE_EXECUTOR_FAILS)
     ran = subprocess.run([sys.executable, str(script), str(tmp_path / "out")], capture_output=True, text=True,
-                         timeout=300)
+                         timeout=300,
+                         preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))  # as from a terminal, not a background job
     assert (ran.returncode, ran.stderr) == (130, "g2s: interrupted\n")
     import pandas as pd
 
