@@ -1,4 +1,4 @@
-"""Level kinds of the fifth to eighteenth held-out rounds (issue 9): generators no preset setting was made on.
+"""Level kinds of the fifth to nineteenth held-out rounds (issue 9): generators no preset setting was made on.
 
 Fifth round: six kinds, each about 1,000 navmesh polygons with the presets' agent (radius 0.5 m, height 2 m, climb 0.4 m):
 ``subway`` (platforms, track pits 1.2 m lower, stairs up to two concourses), ``archipelago`` (islands joined by
@@ -150,6 +150,21 @@ cut back from its edges is clipped by each moved edge in turn (:func:`_inset`: a
 each corner, so an edge the insets shrank under 0.5 m failed the cell, and 51 of seed 0's 84 inner cells became open
 squares); and a door needs floor under it on both sides (the bazaar's street first stopped 0.6 m short of its gates:
 two areas of 5,341 and 4,866 m² on seed 0).
+
+Nineteenth round: six kinds with features of real game levels no earlier generator had, 337-858 navmesh polygons
+with that agent (seeds 0-2): ``drop_downs`` (terraces whose edges are ledges 1.0-2.6 m high one steps off but cannot
+climb, joined by flights along a spanning tree, one terrace reached only by dropping), ``house`` (two semi-detached
+houses of two storeys: hallways, a narrow stair, rooms behind doors just wider than the agent passes, furniture),
+``pitched_roofs`` (terraces whose roofs at 30-40 degrees are floor, each reached only from a balcony up a flight),
+``kit_arena`` (a symmetric arena of modular 4 m tiles, each piece moved by up to 1.5 cm: seams of up to 3 cm),
+``spiral_towers`` (two towers climbed only by helical stairs of 16-20 wedges a turn, a wall walk between them) and
+``backdrop`` (a town square in a bowl of distant walkable terrain no one reaches, under an inward skybox 1 km
+across). A door through a wall 0.15-0.25 m thick opens for the presets' agent (radius 0.5 m) at every offset to
+Recast's 0.25 m grid from 1.5 m wide, at some from 1.3 m, never at a real house's 0.9-1.0 m; a helical stair holds
+floor only where the turn above clears its treads by the agent's height with a cell or two to spare (a first draft,
+two landing wedges and treads 0.15 m thick at 16 wedges of 0.175 m, held none); a stair tile fills its tile but for
+its foot, so a layout joins runs of tiles through the tile behind each flight (:func:`_kit_layout`; a first draft,
+joining the stair tile's own run, left 20 areas on seed 0, the same with its seams closed).
 
 Run: ``.venv/bin/python benchmarks/level_kinds.py OUT_DIR [--kinds subway forest] [--seeds 0 1 2]`` writes
 ``OUT_DIR/<kind>_s<seed>.obj``, the files ``benchmarks/analysis_quality.py --levels`` takes (which also takes the
@@ -7924,6 +7939,636 @@ def cliff_dwellings(seed: int) -> trimesh.Trimesh:
     return s.mesh()
 
 
+def _flight_to(s: _Solids, edge: np.ndarray, heading: np.ndarray, width: float, y0: float, y1: float,
+               tread: float = 0.30) -> float:
+    """A flight from ``y0`` up to ``y1`` (risers of at most 0.18 m) ending head-on at the plan point ``edge`` (x, z),
+    the middle of its top step's far side, climbing along the unit ``heading`` (x, z). Returns its run (m)."""
+    steps = math.ceil((y1 - y0) / 0.18 - 1e-9)
+    run = steps * tread
+    s.stairs(np.asarray(edge, dtype=np.float64) - np.asarray(heading, dtype=np.float64) * run, heading, width, y0, y1 - y0,
+             (y1 - y0) / steps, tread)
+    return run
+
+
+def drop_downs(seed: int) -> trimesh.Trimesh:
+    """Terraces one steps off but cannot climb: a grid of 5 x 5 solid blocks 15-18 m square, their tops 1 m up at
+    one corner and rising 1.0-1.5 m a block along one axis and 1.6-2.6 m along the other (to 11.4-17.4 m), so every
+    edge between two blocks is a ledge 1.0-2.6 m high an agent steps off (a drop-down: one-way in a game, no link in
+    Recast). Flights (2 m wide, risers of at most 0.18 m, set on the lower block and ending head-on at the edge) join
+    the blocks along a random spanning tree of the grid and about a quarter of the other edges; one block inside the
+    grid has no flight (reached in a game only by dropping onto it and left only by dropping off it: an area of its
+    own for Recast). Cover on every block (crates 1.2 m, low walls 1 m, pillars), a parapet 1.1 m round the grid.
+
+    Expected (written before the first run): the structure covers every block (a terrace, a few nodes each) and each
+    flight (a short chain), the drop-only block as an area of its own with no traffic; the ledges carry nothing, so
+    traffic runs only along the flights' tree: highest on the flights and blocks near the tree's middle (every path
+    between its halves), lowest on the blocks at the tree's leaves, the rest of each block's traffic toward its
+    flights. A designer would mark the drop-downs as the busy short cuts; the heat map cannot, by construction.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    n, cell = 5, rng.uniform(15.0, 18.0)
+    steps_x, steps_z = rng.uniform(1.0, 1.5), rng.uniform(1.6, 2.6)
+    i, j = np.meshgrid(np.arange(n), np.arange(n), indexing="ij")
+    if rng.random() < 0.5:
+        i = n - 1 - i
+    if rng.random() < 0.5:
+        j = n - 1 - j
+    height = 1.0 + steps_x * i + steps_z * j
+    for a in range(n):
+        for b in range(n):
+            s.box(a * cell, (a + 1) * cell, -0.5, height[a, b], b * cell, (b + 1) * cell)
+    isolated = (int(rng.integers(1, n - 1)), int(rng.integers(1, n - 1)))
+    edges = [((a, b), (a + da, b + db)) for a in range(n) for b in range(n) for da, db in ((1, 0), (0, 1))
+             if a + da < n and b + db < n and isolated not in ((a, b), (a + da, b + db))]
+    index = {(a, b): a * n + b for a in range(n) for b in range(n)}
+    weights = rng.uniform(1.0, 2.0, len(edges))
+    tree = minimum_spanning_tree(sp.coo_matrix((weights, ([index[p] for p, _ in edges], [index[q] for _, q in edges])),
+                                               shape=(n * n, n * n))).tocoo()
+    chosen = {(int(r), int(c)) for r, c in zip(tree.row, tree.col)}
+    taken: list[tuple[float, float, float, float]] = []
+    for p, q in edges:
+        if (index[p], index[q]) not in chosen and rng.random() > 0.25:
+            continue
+        low, high = (p, q) if height[p] < height[q] else (q, p)
+        along = 0 if p[0] != q[0] else 1  # the axis the flight climbs along
+        heading = np.array([float(high[0] - low[0]), float(high[1] - low[1])])
+        boundary = max(p[along], q[along]) * cell
+        across = rng.uniform(low[1 - along] * cell + 3.0, (low[1 - along] + 1) * cell - 3.0)
+        edge = np.array([boundary, across]) if along == 0 else np.array([across, boundary])
+        run = _flight_to(s, edge, heading, 2.0, height[low], height[high])
+        foot, top = edge - heading * (run + 2.0), edge + heading * 2.5
+        corners = np.stack([foot, top]) + np.array([[-1.5, -1.5], [1.5, 1.5]]) * (1 - np.abs(heading))
+        taken.append((corners[:, 0].min(), corners[:, 0].max(), corners[:, 1].min(), corners[:, 1].max()))
+    for a in range(n):
+        for b in range(n):
+            y, placed = height[a, b], 0
+            for _ in range(40):
+                if placed >= int(rng.integers(5, 9)):
+                    break
+                kind = rng.integers(3)
+                w, d = ((1.2, 1.2), (rng.uniform(3.0, 5.0), 0.4), (0.8, 0.8))[kind]
+                if rng.random() < 0.5:
+                    w, d = d, w
+                x0, z0 = rng.uniform(a * cell + 1.0, (a + 1) * cell - 1.0 - w), rng.uniform(b * cell + 1.0, (b + 1) * cell - 1.0 - d)
+                if _clear(x0 - 1.2, x0 + w + 1.2, z0 - 1.2, z0 + d + 1.2, taken):
+                    s.box(x0, x0 + w, y - 0.3, y + (1.2, 1.0, 4.0)[kind], z0, z0 + d)
+                    taken.append((x0, x0 + w, z0, z0 + d))
+                    placed += 1
+    side = n * cell
+    for k in range(n):  # the parapet round the grid, a block at a time (each at its block's height)
+        for (a, b), wall in (((k, 0), ((k * cell, 0.0), ((k + 1) * cell, 0.0))),
+                             ((k, n - 1), ((k * cell, side), ((k + 1) * cell, side))),
+                             ((0, k), ((0.0, k * cell), (0.0, (k + 1) * cell))),
+                             ((n - 1, k), ((side, k * cell), (side, (k + 1) * cell)))):
+            s.wall(*wall, height[a, b] - 0.3, height[a, b] + 1.1, thickness=0.3)
+    return s.mesh()
+
+
+def _house_interior(s: _Solids, rng: np.random.Generator, width: float, depth: float) -> float:
+    """One house of :func:`house` over [0, width] x [0, depth] (its front door in the west wall at x = 0, its back
+    door in the back wall at z = depth): walls, the upper floor, the stair, rooms, doors, furniture, the roof. Returns
+    the x (m) of the back door's room's west wall, the back door 1.2 m east of it."""
+    storey, outer = 3.0, 0.3
+    hall0 = rng.uniform(0.4, 0.5) * depth - 1.6
+    hall1 = hall0 + 3.3
+    steps, tread = 17, 0.26
+    run = steps * tread
+    xs = rng.uniform(outer + 3.0, width - outer - run - 3.0)
+    stair = (xs - 0.3, xs + run + 0.3)  # no room door opens on the flight or its well
+    well = (xs, xs + run, hall1 - 1.6, hall1)
+    s.stairs(np.array([xs, hall1 - 0.8]), np.array([1.0, 0.0]), 1.6, 0.0, storey, storey / steps, tread)
+    s.slab(0.0, width, 0.0, depth, storey, [well], thickness=0.25)
+    s.wall((xs, hall1 - 1.65), (xs + run, hall1 - 1.65), storey, storey + 1.0, thickness=0.1)  # the well's rails
+    s.wall((xs - 0.05, hall1 - 1.6), (xs - 0.05, hall1), storey, storey + 1.0, thickness=0.1)
+    _lid(s, -0.3, width + 0.3, -0.3, depth + 0.3, 2 * storey)
+    front_door = rng.uniform(hall0 + 0.2, hall1 - 1.8)
+    s.wall((outer / 2, 0.0), (outer / 2, depth), -0.5, storey, [(front_door, 1.6)], thickness=outer)
+    s.wall((outer / 2, 0.0), (outer / 2, depth), storey, 2 * storey, thickness=outer)
+    s.wall((width - outer / 2, 0.0), (width - outer / 2, depth), -0.5, 2 * storey, thickness=outer)
+    back_room = (0.0, 0.0)
+    for floor in (0.0, storey):
+        top = floor + storey
+        for side, (z0, z1) in enumerate(((outer, hall0 - 0.12), (hall1 + 0.12, depth - outer))):
+            cuts = [outer]
+            while cuts[-1] < width - outer - 6.0:
+                cuts.append(cuts[-1] + rng.uniform(3.0, 4.5))
+            if width - outer - cuts[-1] < 3.0:
+                cuts.pop()
+            cuts.append(width - outer)
+            hall_wall, hall_doors = hall0 - 0.06 if side == 0 else hall1 + 0.06, []
+            if floor == 0.0 and side == 1:
+                back_room = list(pairwise(cuts))[int(rng.integers(len(cuts) - 1))]
+            for k, (x0, x1) in enumerate(pairwise(cuts)):
+                spans = [(a, b) for a, b in ((x0 + 0.2, x1 - 0.2),) if side == 0] or \
+                        [(a, b) for a, b in ((x0 + 0.2, min(x1, stair[0]) - 0.2), (max(x0, stair[1]) + 0.2, x1 - 0.2)) if b - a >= 1.6]
+                doors: list[tuple[float, float]] = []
+                if spans:
+                    a, b = spans[int(rng.integers(len(spans)))]
+                    hall_doors.append((rng.uniform(a, b - 1.6) - outer, rng.uniform(1.5, 1.6)))
+                    doors = [(hall_doors[-1][0] + outer, hall_doors[-1][0] + outer + hall_doors[-1][1])]
+                if k and (not spans or rng.random() < 1.0 / 3.0):  # a door to the west neighbour
+                    dz = rng.uniform(z0 + 0.2, z1 - 1.8)
+                    s.wall((x0, z0), (x0, z1), floor, top, [(dz - z0, rng.uniform(1.5, 1.6))], thickness=0.12)
+                    side_door = (x0 - 1.2, x0 + 1.2, dz, dz + 1.6)
+                else:
+                    if k:
+                        s.wall((x0, z0), (x0, z1), floor, top, thickness=0.12)
+                    side_door = None
+                keep = [(a, b, hall_wall - 1.3, hall_wall + 1.3) for a, b in doors]
+                keep += [side_door] if side_door else []
+                if floor == 0.0 and back_room == (x0, x1):
+                    keep.append((x0 + 1.0, x0 + 3.0, depth - 2.0, depth))
+                placed = 0
+                for _ in range(30):
+                    if placed >= int(rng.integers(3, 8)):
+                        break
+                    w, d, h = [(2.0, 1.6, 0.55), (1.6, 0.9, 0.75), (2.0, 0.9, 0.8), (1.2, 0.6, 2.0), (1.4, 0.7, 0.75),
+                               (1.0, 0.4, 1.8)][int(rng.integers(6))]
+                    if rng.random() < 0.5:
+                        w, d = d, w
+                    if x1 - x0 - 0.4 < w or z1 - z0 - 0.4 < d:
+                        continue
+                    fx, fz = rng.uniform(x0 + 0.15, x1 - 0.15 - w), rng.uniform(z0 + 0.15, z1 - 0.15 - d)
+                    if _clear(fx, fx + w, fz, fz + d, keep):
+                        s.box(fx, fx + w, floor - 0.1, floor + h, fz, fz + d)
+                        keep.append((fx - 0.1, fx + w + 0.1, fz - 0.1, fz + d + 0.1))
+                        placed += 1
+            s.wall((outer, hall_wall), (width - outer, hall_wall), floor, top, hall_doors, thickness=0.12)
+    s.wall((0.0, outer / 2), (width, outer / 2), -0.5, 2 * storey, thickness=outer)
+    s.wall((0.0, depth - outer / 2), (width, depth - outer / 2), -0.5, storey, [(back_room[0] + 1.2, 1.6)], thickness=outer)
+    s.wall((0.0, depth - outer / 2), (width, depth - outer / 2), storey, 2 * storey, thickness=outer)
+    return back_room[0]
+
+
+def house(seed: int) -> trimesh.Trimesh:
+    """A pair of semi-detached houses of two storeys 3 m apart in one garden, each 24-28 x 13-15 m (walls 0.3 m, a
+    roof at 50 degrees over it, :func:`_lid`; the second mirrored about the party wall), built by
+    :func:`_house_interior`: on each storey a hallway along x, 3.3 m wide on the ground (half of it a straight flight
+    1.6 m wide and 17 steps of 0.176 / 0.26 m against its back wall, the narrow stair) and upstairs a passage 1.6 m
+    clear beside the stair's well (railed); rooms 3-4.5 m wide in a row either side, each entered from the hallway by
+    one door 1.5-1.6 m wide (rooms beside the flight through a neighbour), a third of the neighbours joined by a door
+    too; 3-7 pieces of furniture a room (beds, tables, sofas, wardrobes, desks, shelves) clear of the doors. The
+    doors are just wider than the presets' agent passes: through a wall 0.15-0.25 m thick a door of 1.5 m opens at
+    every offset to Recast's grid, 1.3-1.45 m at some, 0.9-1.0 m (a real house's) at none. A front door at the
+    hallway's outer end, a back door; the garden has a hedge with a gate, a shed, trees, shrubs and two patio tables.
+
+    Expected (written before the first run): the structure covers both hallways (chains), the flight (a chain up the
+    well), every room (a leaf at its door, or a node between two doors), the garden round the house; furniture makes
+    rooms' corners dents, no terminals. Traffic highest in the ground hallway between the front door, the flight's
+    foot and the back door, then the flight and the upstairs landing; lowest in the rooms at the hallways' ends and
+    the garden's corners.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    width, depth = rng.uniform(24.0, 28.0), rng.uniform(13.0, 15.0)
+    back_doors = []
+    for k in range(2):  # the second house mirrored about the party wall at x = width
+        half = _Solids()
+        x0 = _house_interior(half, rng, width, depth)
+        if k:
+            s.parts += [trimesh.convex.convex_hull(part.vertices * np.array([-1.0, 1.0, 1.0]) + np.array([2 * width, 0.0, 0.0]))
+                        for part in half.parts]
+            back_doors.append(2 * width - x0 - 2.8)
+        else:
+            s.parts += half.parts
+            back_doors.append(x0 + 1.2)
+    # the garden: a hedge round both plots with a gate, a shed, trees and shrubs, a patio table at each back door
+    g0, g1, h0, h1 = -14.0, 2 * width + 14.0, -16.0, depth + 18.0
+    gate = rng.uniform(g0 + 3.0, g1 - 5.0)
+    s.wall((g0, h0), (g1, h0), -0.5, 1.8, [(gate - g0, 2.0)], thickness=0.8)
+    s.wall((g0, h1), (g1, h1), -0.5, 1.8, thickness=0.8)
+    for gx in (g0, g1):
+        s.wall((gx, h0), (gx, h1), -0.5, 1.8, thickness=0.8)
+    holes = [_ridged(s, g1 - 7.0, g1 - 2.0, h1 - 6.0, h1 - 2.0, -0.5, 2.2)]
+    taken = [(-4.0, 2 * width + 4.0, -1.0, depth + 1.0), (g1 - 8.0, g1 - 1.0, h1 - 7.0, h1 - 1.0),
+             (gate - 2.0, gate + 4.0, h0, h0 + 4.0)]
+    for x in back_doors:
+        s.box(x - 0.7, x + 0.9, -0.3, 0.75, depth + 3.0, depth + 4.0)
+        taken.append((x - 1.2, x + 2.8, depth, depth + 6.0))
+    for _ in range(int(rng.integers(60, 80))):
+        p = np.array([rng.uniform(g0 + 2.0, g1 - 2.0), rng.uniform(h0 + 2.0, h1 - 2.0)])
+        if _clear(p[0] - 1.5, p[0] + 1.5, p[1] - 1.5, p[1] + 1.5, taken):
+            if rng.random() < 0.4:
+                _trunk(s, p, rng.uniform(0.2, 0.35), -0.5, 5.0)
+            else:  # a shrub
+                s.rock(rng, p, 0.5, -0.3, rng.uniform(0.8, 1.5))
+            taken.append((p[0] - 2.0, p[0] + 2.0, p[1] - 2.0, p[1] + 2.0))
+    s.ground(g0, g1, h0, h1, 0.0, holes)
+    return s.mesh()
+
+
+def pitched_roofs(seed: int) -> trimesh.Trimesh:
+    """Two streets 10-14 m wide, 36-40 m apart, each between two terraces of blocks 2.5-4 m apart (alleys to the back
+    yards and the back lane between the streets); a block is 3-5 houses 6-8.5 m wide and 9-11 m deep under one roof
+    pitched at 30-40 degrees (under
+    the presets' 45, so both slopes are floor), ridged along x, its eaves 5.5-7.5 m up (each house one convex body,
+    so the roof is its top). On each block's street side a balcony (4-6 m long, 2.2 m deep, railed on its street and
+    far sides) at the eaves, where the roof's slope starts, reached from the street by a flight along the facade
+    (1.6 m wide, risers of at most 0.18 m): the only way onto the roof. Chimneys on the party walls, dormers (ridged at
+    50 degrees) on the slopes; back yards between garden walls 4-5.5 m long, reached along the alleys; lamp posts and
+    parked cars.
+
+    Expected (written before the first run): the structure covers the street, the alleys and yards, each flight (a
+    chain), balcony and roof (both slopes: a roof is an upper floor whose only way in is its balcony, so its far
+    slope and gable ends are leaves); traffic highest along the street between the alleys and at the flights' feet,
+    then on the flights and balconies, lowest on the roofs' back slopes and far ends and in the yards.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    street, length = rng.uniform(10.0, 14.0), rng.uniform(95.0, 115.0)
+    holes: list[tuple[float, float, float, float]] = []
+    taken: list[tuple[float, float, float, float]] = []
+    back, streets = street / 2, (0.0, street + rng.uniform(36.0, 40.0))  # two streets, back lanes between
+    for centre, out in [(c, o) for c in streets for o in (-1.0, 1.0)]:  # a row's houses lie out * depth deep
+        x = rng.uniform(2.0, 6.0)
+        while x < length - 20.0:
+            houses, eave, pitch = int(rng.integers(3, 6)), rng.uniform(5.5, 7.5), math.radians(rng.uniform(30.0, 40.0))
+            depth = rng.uniform(9.0, 11.0)
+            back = max(back, street / 2 + depth)
+            cuts = np.cumsum([x, *rng.uniform(6.0, 8.5, houses)])
+            if cuts[-1] > length:
+                break
+            front, rear = centre + out * street / 2, centre + out * (street / 2 + depth)
+            ridge = eave + depth / 2 * math.tan(pitch)
+
+            def roof(z: float) -> float:
+                return eave + (depth / 2 - abs(z - (front + rear) / 2)) * math.tan(pitch)
+
+            for x0, x1 in pairwise(cuts):
+                s.hull(np.array([[xx, y, z] for xx in (x0, x1) for y in (-0.5, eave) for z in (front, rear)]
+                                + [[xx, ridge, (front + rear) / 2] for xx in (x0, x1)]))
+                if x0 > cuts[0]:  # a chimney on the party wall at the ridge
+                    s.box(x0 - 0.4, x0 + 0.4, eave, ridge + 1.2, (front + rear) / 2 - 0.4, (front + rear) / 2 + 0.4)
+                for _ in range(int(rng.integers(0, 3))):  # dormers on either slope
+                    dx = rng.uniform(x0 + 1.0, x1 - 2.8)
+                    zc = (front + rear) / 2 + rng.choice([-1.0, 1.0]) * rng.uniform(1.8, depth / 2 - 1.8)
+                    z0, z1 = zc - 0.9, zc + 0.9
+                    _ridged(s, dx, dx + 1.8, z0, z1, min(roof(z0), roof(z1)) - 0.5, max(roof(z0), roof(z1)) + 1.0)
+            holes.append((cuts[0], cuts[-1], min(front, rear), max(front, rear)))
+            # the balcony and its flight along the facade (out = -1: the street is at +z)
+            bw = rng.uniform(4.0, 6.0)
+            steps = math.ceil(eave / 0.18)
+            run = steps * 0.28
+            bx = rng.uniform(cuts[0] + run + 1.0, cuts[-1] - bw - 1.0) if cuts[-1] - cuts[0] > run + bw + 2.0 else None
+            if bx is None:
+                x = cuts[-1] + rng.uniform(2.5, 4.0)
+                continue
+            toward = -out  # from the facade into the street
+            zb0, zb1 = sorted((front, front + toward * 2.2))
+            s.box(bx, bx + bw, eave - 0.3, eave, zb0, zb1)
+            rail_z = front + toward * 2.15
+            s.wall((bx, rail_z), (bx + bw, rail_z), eave, eave + 1.1, thickness=0.1)
+            s.wall((bx + bw - 0.05, zb0), (bx + bw - 0.05, zb1), eave, eave + 1.1, thickness=0.1)
+            _flight_to(s, np.array([bx, front + toward * 0.8]), np.array([1.0, 0.0]), 1.6, 0.0, eave, 0.28)
+            for px in (bx + 0.2, bx + bw - 0.2):  # the balcony's posts
+                s.box(px - 0.1, px + 0.1, -0.3, eave - 0.3, zb0 + 0.1 if toward < 0 else zb1 - 0.3,
+                      zb0 + 0.3 if toward < 0 else zb1 - 0.1)
+            taken.append((bx - run - 1.5, bx + bw + 1.0, zb0 - 2.5, zb1 + 2.5))
+            # garden walls behind the party walls, 6-8 m out into the yards, with a gate at the yard's end
+            for x0 in cuts[1:-1]:
+                reach = rng.uniform(4.0, 5.5)
+                s.wall((x0, rear), (x0, rear + out * reach), -0.5, 1.8, thickness=0.25)
+            x = cuts[-1] + rng.uniform(2.5, 4.0)
+    for _ in range(int(rng.integers(28, 44))):  # lamp posts and parked cars along the kerbs
+        xc, side, centre = rng.uniform(3.0, length - 6.0), rng.choice([-1.0, 1.0]), streets[int(rng.integers(2))]
+        z = centre + side * (street / 2 - 1.2)
+        if rng.random() < 0.4:
+            if _clear(xc - 0.5, xc + 0.5, z - 0.5, z + 0.5, taken):
+                _trunk(s, np.array([xc, z]), 0.12, -0.3, 4.5)
+                taken.append((xc - 0.5, xc + 0.5, z - 0.5, z + 0.5))
+        elif _clear(xc - 0.5, xc + 4.7, z - 1.5, z + 1.5, taken):
+            zc = centre + side * (street / 2 - 2.8)
+            _car(s, xc, xc + 4.2, zc - 0.9, zc + 0.9, 0.0)
+            taken.append((xc - 0.5, xc + 4.7, z - 1.5, z + 1.5))
+    s.ground(-4.0, length + 4.0, -back - 10.0, streets[1] + back + 10.0, 0.0, holes)
+    return s.mesh()
+
+
+def _kit_layout(rng: np.random.Generator, n: int) -> tuple[np.ndarray, dict[tuple[int, int], tuple[int, int]]]:
+    """The levels (n, n) of 0, 1 or 2 of an arena's tiles, symmetric under a half turn (n even), and its stair tiles
+    (tile -> the step (di, dj) toward the higher neighbour it climbs to), drawn again until the stairs join every
+    connected run of tiles of one level: platforms (5-8 rectangles of 2-4 x 2-3 tiles at level 1 in the first half,
+    a smaller one at level 2 on most of the wider ones), each stair tile one level under its higher neighbour with a
+    tile of its own level behind it (the way onto it), joining runs along a random spanning tree and a sixth of the
+    other places, each with its copy turned half round."""
+    while True:
+        level = np.zeros((n, n), dtype=int)
+        for _ in range(int(rng.integers(10, 14))):
+            w, d = int(rng.integers(2, 5)), int(rng.integers(2, 4))
+            i0, j0 = int(rng.integers(0, n - w + 1)), int(rng.integers(1, n // 2 - d + 1))
+            level[i0:i0 + w, j0:j0 + d] = 1
+            if w >= 3 and rng.random() < 0.6:
+                level[i0 + 1:i0 + w - 1, j0:j0 + d - 1] = 2
+        level[:, n // 2:] = level[::-1, n // 2 - 1::-1]
+        labels, count = np.zeros((n, n), dtype=int), 0
+        for lv in range(3):
+            part, k = ndimage.label(level == lv)
+            labels[part > 0] = part[part > 0] + count
+            count += k
+        parent = list(range(count + 1))
+
+        def root(k: int) -> int:
+            while parent[k] != k:
+                parent[k] = parent[parent[k]]
+                k = parent[k]
+            return k
+
+        options = [((i, j), (di, dj)) for i in range(n) for j in range(n // 2) for di, dj in ((1, 0), (-1, 0), (0, 1), (0, -1))
+                   if 0 <= i + di < n and 0 <= j + dj < n and level[i + di, j + dj] == level[i, j] + 1
+                   and 0 <= i - di < n and 0 <= j - dj < n and level[i - di, j - dj] == level[i, j]]
+        stairs: dict[tuple[int, int], tuple[int, int]] = {}
+        for o in rng.permutation(len(options)):
+            (i, j), (di, dj) = options[o]
+            near = [(i, j), (i + di, j + dj), (i - di, j - dj)]
+            if any(t in stairs or (n - 1 - t[0], n - 1 - t[1]) in stairs for t in near):
+                continue
+            a, b = root(labels[i, j]), root(labels[i + di, j + dj])
+            if a != b or rng.random() < 1.0 / 6.0:
+                parent[a] = b
+                parent[root(labels[n - 1 - i, n - 1 - j])] = root(labels[n - 1 - i - di, n - 1 - j - dj])
+                stairs[(i, j)], stairs[(n - 1 - i, n - 1 - j)] = (di, dj), (-di, -dj)
+        # the check: runs of tiles of one level without the stair tiles (a flight fills its tile but for its foot),
+        # joined by each flight from the tile behind it to the tile it climbs to
+        runs, count = np.zeros((n, n), dtype=int), 0
+        for lv in range(3):
+            part, k = ndimage.label((level == lv) & ~np.isin(np.arange(n * n).reshape(n, n), [i * n + j for i, j in stairs]))
+            runs[part > 0] = part[part > 0] + count
+            count += k
+        parent = list(range(count + 1))
+        for (i, j), (di, dj) in stairs.items():
+            parent[root(runs[i - di, j - dj])] = root(runs[i + di, j + dj])
+        if len({root(k) for k in range(1, count + 1)}) == 1:
+            return level, stairs
+
+
+def kit_arena(seed: int) -> trimesh.Trimesh:
+    """A competitive arena built from a modular kit, as real multiplayer maps are: 20 x 20 floor tiles 4 m square,
+    symmetric under a half turn about the centre, laid out by :func:`_kit_layout` (platforms of tiles 2 m and 4 m up,
+    each raised tile a solid block; stair tiles of 12 steps of 0.167 / 0.30 m ending head-on at the higher tile,
+    joining every run of tiles); wall tiles 4 m long round the arena (4 m high), cover walls (1.6 m long, 2.5 m high)
+    on two fifths of the edges between tiles of open floor (a tile whose four neighbours are on its level), half walls
+    (1 m) on the higher tile along a third of the drops, crates 1.2 m in half the tiles of open floor; no cover on a
+    stair tile, the tile behind it or the tile it climbs to. Every piece is
+    placed as a kit piece is: its edges moved by up to 1.5 cm each way, so neighbouring tiles leave gaps and overlaps
+    of up to 3 cm (the seams of a real kit), and its top by up to 5 mm.
+
+    Expected (written before the first run): the seams change nothing a walker sees: one area over the floor, the
+    platforms and the stairs (gaps under Recast's 0.25 m cells), and a structure as symmetric as the arena (up to the
+    seams): the floor's open lanes, each platform (a few nodes) and each stair (a short chain). Traffic highest on
+    the open floor between the two halves and on the stairs of the platforms in the middle, lowest on the 4 m
+    platforms and in the arena's corners.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    n, tile = 20, 4.0
+    size = n * tile
+
+    def placed(x0: float, x1: float, y0: float, y1: float, z0: float, z1: float) -> None:
+        """A kit piece over the box, its edges moved by up to 1.5 cm and its top by up to 5 mm."""
+        dx0, dx1, dz0, dz1 = rng.uniform(-0.015, 0.015, 4)
+        s.box(x0 + dx0, x1 + dx1, y0, y1 + rng.uniform(-0.005, 0.005), z0 + dz0, z1 + dz1)
+
+    def turned(x0: float, x1: float, z0: float, z1: float) -> tuple[float, float, float, float]:
+        return size - x1, size - x0, size - z1, size - z0
+
+    level, stairs = _kit_layout(rng, n)
+    free = set(stairs) | {(i - di, j - dj) for (i, j), (di, dj) in stairs.items()} | \
+        {(i + di, j + dj) for (i, j), (di, dj) in stairs.items()}  # no cover on a flight, its foot or its top
+    for i in range(n):
+        for j in range(n):
+            placed(i * tile, (i + 1) * tile, -0.3, 2.0 * level[i, j], j * tile, (j + 1) * tile)
+            if (i, j) in stairs:
+                heading = np.array(stairs[(i, j)], dtype=np.float64)
+                centre = np.array([(i + 0.5) * tile, (j + 0.5) * tile])
+                _flight_to(s, centre + heading * (tile / 2 + rng.uniform(-0.015, 0.015)), heading, 2.4,
+                           2.0 * level[i, j], 2.0 * level[i, j] + 2.0)
+    for k in range(n):  # the outer wall tiles
+        for x0, x1, z0, z1 in ((k * tile, (k + 1) * tile, -0.4, 0.0), (k * tile, (k + 1) * tile, size, size + 0.4),
+                               (-0.4, 0.0, k * tile, (k + 1) * tile), (size, size + 0.4, k * tile, (k + 1) * tile)):
+            placed(x0, x1, -0.3, 4.0, z0, z1)
+    def open_floor(i: int, j: int) -> bool:
+        """Whether tile (i, j) and its four neighbours are on one level: cover there shuts no way."""
+        return 0 < i < n - 1 and 0 < j < n - 1 and all(level[i + di, j + dj] == level[i, j]
+                                                       for di, dj in ((1, 0), (-1, 0), (0, 1), (0, -1)))
+
+    for i in range(n):  # cover in the first half and turned: half walls on drops, walls and crates on open floor
+        for j in range(n // 2):
+            for di, dj in ((1, 0), (0, 1)):
+                p, q = (i, j), (i + di, j + dj)
+                if q[0] >= n or p in free or q in free:
+                    continue
+                edge = (i + di) * tile if di else (j + dj) * tile
+                if level[p] != level[q] and rng.random() < 1.0 / 3.0:  # on the higher tile, along the drop
+                    inner = (edge - 0.4, edge) if level[p] > level[q] else (edge, edge + 0.4)
+                    height, top = 1.0, 2.0 * max(level[p], level[q])
+                elif level[p] == level[q] and open_floor(*p) and open_floor(*q) and rng.random() < 0.4:
+                    inner, height, top = (edge - 0.2, edge + 0.2), 2.5, 2.0 * level[p]
+                else:
+                    continue
+                box = (inner[0], inner[1], j * tile + 1.2, (j + 1) * tile - 1.2) if di else \
+                    (i * tile + 1.2, (i + 1) * tile - 1.2, inner[0], inner[1])
+                for b in (box, turned(*box)):
+                    placed(b[0], b[1], top - 0.3, top + height, b[2], b[3])
+            if open_floor(i, j) and (i, j) not in free and rng.random() < 0.5:
+                cx, cz = (i + rng.uniform(0.4, 0.6)) * tile, (j + rng.uniform(0.4, 0.6)) * tile
+                for b in ((cx - 0.6, cx + 0.6, cz - 0.6, cz + 0.6), turned(cx - 0.6, cx + 0.6, cz - 0.6, cz + 0.6)):
+                    placed(b[0], b[1], 2.0 * level[i, j] - 0.3, 2.0 * level[i, j] + 1.2, b[2], b[3])
+    return s.mesh()
+
+
+def _spiral_stair(s: _Solids, centre: np.ndarray, storeys: int, storey: float, per_turn: int, hand: float,
+                  start: float) -> list[float]:
+    """A helical stair in a round shaft about plan point ``centre`` (x, z), from the ground (0) up ``storeys`` storeys
+    ``storey`` m apart: a central column 0.5 m in radius, steps 0.1 m thick from it to the shaft's wall at 2.8 m,
+    ``per_turn`` wedges a turn (risers ``storey / per_turn``), turning by ``hand`` (+1 or -1) from the angle ``start``
+    (radians); a full turn a storey, the last step of each joined by a landing of one wedge's arc; the shaft's wall
+    (0.3 m, 24 pieces) open over the landing and a wedge either side. Returns each storey's door angle (radians, the
+    ground's first, then one a landing). A step clears the turn above it by (per_turn - 1) risers less the tread's
+    0.1 m, less a riser and a cell or two where Recast's cells straddle two steps: about 2.1 m for 16 risers of
+    0.172 m, where with a landing of two wedges and treads 0.15 m thick no step of a turn held floor."""
+    sector, riser, pieces = hand * 2 * math.pi / per_turn, storey / per_turn, 24
+    angle, doors = start, [start - sector * 1.5]
+    for k in range(storeys):
+        y = k * storey
+        if k:
+            s.prism(centre + _sector(0.45, 2.85, angle, angle + sector), y - 0.1, y)
+            doors.append(angle + sector / 2)
+            angle += sector
+        for m in range(per_turn):
+            plan = _sector(0.45, 2.85, angle + m * sector, angle + (m + 1.02) * sector)
+            s.prism(centre + plan, y + riser * (m + 1) - 0.1, y + riser * (m + 1))
+        angle += per_turn * sector
+    s.prism(centre + _sector(0.45, 2.85, angle, angle + sector), storeys * storey - 0.1, storeys * storey)  # the top landing
+    doors.append(angle + sector / 2)
+    _trunk(s, centre, 0.5, -0.5, storeys * storey + 1.0)
+    width = 2 * math.pi / pieces
+    for k in range(storeys + 1):
+        for m in range(pieces):
+            if abs(math.remainder((m + 0.5) * width - doors[k], 2 * math.pi)) < abs(sector) * 1.5 + width / 2:
+                continue
+            s.prism(centre + _sector(2.8, 3.1, m * width, (m + 1) * width), k * storey, k * storey + (storey if k < storeys else 1.1))
+    return doors
+
+
+def spiral_towers(seed: int) -> trimesh.Trimesh:
+    """Two round towers (7-8 m in radius, walls 0.6 m) 34-42 m apart in a walled bailey, each of 6-7 storeys climbed
+    only by a helical stair in a central shaft (:func:`_spiral_stair`: 16-20 wedges a turn, the same in both, risers
+    of 0.172-0.18 m, one turn a storey, so storeys 2.75-3.6 m apart; a landing and a door on every storey), the two
+    towers turning opposite ways. Each storey is a ring of floor round the shaft (8-11 tables, chests and beds); the
+    top is a roof behind a parapet. A curtain wall 3 m thick joins the towers, its walk (railed) at the second storey
+    through a door in each tower; each tower opens on the bailey by a door about 2.6 m wide. The bailey holds up to
+    23 ridged buildings, a well and trees.
+
+    Expected (written before the first run): the structure covers each helix as a chain from the ground to the roof
+    (nodes at the landings), each storey's ring (a loop or a few nodes), the wall walk, the bailey. Traffic highest
+    on the bailey between the towers' doors, up both helices to the second storey and along the wall walk (the
+    loop bailey - tower - walk - tower - bailey), lower on each helix above the second storey, lowest on the top
+    storeys and roofs.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    per_turn, gap = int(rng.integers(16, 21)), rng.uniform(34.0, 42.0)
+    storey = per_turn * rng.uniform(0.172, 0.18)
+    holes: list[tuple[float, float, float, float]] = []
+    radii = rng.uniform(7.0, 8.0, 2)
+    walk = (radii[0] - 0.6, gap - radii[1] + 0.6)
+    s.box(walk[0], walk[1], -0.5, 2 * storey, -1.5, 1.5)
+    holes.append((walk[0], walk[1], -1.5, 1.5))
+    for z in (-1.5, 1.5):  # the walk's rails
+        s.wall((walk[0] + 0.3, z - np.sign(z) * 0.05), (walk[1] - 0.3, z - np.sign(z) * 0.05), 2 * storey, 2 * storey + 1.1,
+               thickness=0.1)
+    pieces = 36
+    width = 2 * math.pi / pieces
+    for t, (cx, hand) in enumerate(((0.0, 1.0), (gap, -1.0))):
+        centre, radius = np.array([cx, 0.0]), radii[t]
+        storeys = int(rng.integers(6, 8))
+        toward = 0.0 if t == 0 else math.pi  # the walk's direction
+        outside = rng.uniform(0.5, 1.5) * math.pi * (1 if rng.random() < 0.5 else -1) + toward
+        doors = _spiral_stair(s, centre, storeys, storey, per_turn, hand, rng.uniform(0, 2 * math.pi))
+        for k in range(1, storeys + 1):  # the rings of floor round the shaft
+            for m in range(pieces):
+                s.prism(centre + _sector(3.1, radius - 0.55, m * width, (m + 1) * width), k * storey - 0.25, k * storey)
+        for k in range(storeys + 1):  # the tower's wall, open at the bailey door and the walk's door
+            for m in range(pieces):
+                mid = (m + 0.5) * width
+                if k == 0 and abs(math.remainder(mid - outside, 2 * math.pi)) < 1.3 / radius or \
+                        k == 2 and abs(math.remainder(mid - toward, 2 * math.pi)) < 1.3 / radius:
+                    continue
+                s.prism(centre + _sector(radius - 0.6, radius, m * width, (m + 1) * width), k * storey - (0.5 if k == 0 else 0.0),
+                        k * storey + (storey if k < storeys else 1.2))
+        for k in range(storeys):  # furniture on the rings, away from the doors
+            for _ in range(int(rng.integers(8, 12))):
+                a = rng.uniform(0, 2 * math.pi)
+                if min(abs(math.remainder(a - d, 2 * math.pi)) for d in (doors[k], toward, outside)) < 0.6:
+                    continue
+                radial, tangent = np.array([math.cos(a), math.sin(a)]), np.array([-math.sin(a), math.cos(a)])
+                w, d, h = [(1.6, 0.8, 0.75), (1.0, 0.6, 0.6), (2.0, 1.0, 0.55)][int(rng.integers(3))]
+                c = centre + radial * (radius - 0.6 - d / 2 - 0.05)
+                plan = np.array([c + radial * dr * d / 2 + tangent * dt * w / 2 for dr, dt in ((-1, -1), (1, -1), (1, 1), (-1, 1))])
+                s.prism(plan, k * storey - 0.1, k * storey + h)
+        holes.append((cx - 0.5, cx + 0.5, -0.5, 0.5))  # under the column
+    # the bailey: buildings, a well, trees
+    x0, x1, z0, z1 = -radii[0] - 30.0, gap + radii[1] + 30.0, -40.0, 40.0
+    taken = [(-radii[0] - 3.0, gap + radii[1] + 3.0, -radii.max() - 3.0, radii.max() + 3.0)]
+    for _ in range(int(rng.integers(18, 24))):
+        w, d = rng.uniform(6.0, 12.0), rng.uniform(5.0, 8.0)
+        x, z = rng.uniform(x0 + 2.0, x1 - w - 2.0), rng.uniform(z0 + 2.0, z1 - d - 2.0)
+        if _clear(x - 3.0, x + w + 3.0, z - 3.0, z + d + 3.0, taken):
+            holes.append(_ridged(s, x, x + w, z, z + d, -0.5, 3.0))
+            taken.append((x, x + w, z, z + d))
+    for k in range(int(rng.integers(45, 60))):
+        p = np.array([rng.uniform(x0 + 2.0, x1 - 2.0), rng.uniform(z0 + 2.0, z1 - 2.0)])
+        if _clear(p[0] - 2.0, p[0] + 2.0, p[1] - 2.0, p[1] + 2.0, taken):
+            _trunk(s, p, 1.0 if k == 0 else rng.uniform(0.25, 0.4), -0.5, 1.0 if k == 0 else 6.0)  # the first, the well
+            taken.append((p[0] - 2.0, p[0] + 2.0, p[1] - 2.0, p[1] + 2.0))
+    for a, b in (((x0, z0), (x1, z0)), ((x0, z1), (x1, z1)), ((x0, z0), (x0, z1)), ((x1, z0), (x1, z1))):
+        s.wall(a, b, -0.5, 6.0, thickness=1.0)
+    s.ground(x0, x1, z0, z1, 0.0, holes)
+    return s.mesh()
+
+
+def backdrop(seed: int) -> trimesh.Trimesh:
+    """A play space wrapped in background geometry, as a real level's file is: a town square 70-80 m across (ridged
+    houses, a fountain, crates, a raised terrace up two flights, trees) in a bowl of distant terrain out to 100 m
+    beyond it (a height field on a 6 m grid rising at 63-72 degrees from the square's edge to 12-18 m, then 0.15 m a
+    metre under three waves 8-14 m high, whose slopes cross the 45-degree limit: walkable hillsides and patches no one
+    reaches), cliffs (rock hulls) on it, far houses with flat roofs out of reach, and a skybox: a box 1 km across and
+    200 m high with its faces turned inward and no floor (walls and a ceiling facing down, nothing Recast reads as
+    floor, but the level's bounds grow from 80 m to 1 km).
+
+    Expected (written before the first run): the structure covers the square as any town square (its streets
+    round the houses, the terrace, the flights) and the background's walkable patches as areas of their own, each
+    with its leaves or left out under the cover's smallest area (named in a warning), with no traffic. Traffic
+    highest on the square's middle and between the houses' gaps, lowest on the terrace and in the corners; every
+    background node coldest. A designer marks nothing outside the play space.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    size = rng.uniform(70.0, 80.0)
+    holes: list[tuple[float, float, float, float]] = []
+    taken: list[tuple[float, float, float, float]] = []
+    for _ in range(int(rng.integers(8, 12))):  # houses round the square's edge
+        w, d = rng.uniform(7.0, 12.0), rng.uniform(6.0, 9.0)
+        side = int(rng.integers(4))
+        along = rng.uniform(2.0, size - w - 2.0)
+        x, z = ((along, 1.0), (along, size - d - 1.0), (1.0, along), (size - d - 1.0, along))[side]
+        if side >= 2:
+            w, d = d, w
+        if _clear(x - 3.0, x + w + 3.0, z - 3.0, z + d + 3.0, taken):
+            holes.append(_ridged(s, x, x + w, z, z + d, -0.5, rng.uniform(5.0, 8.0)))
+            taken.append((x, x + w, z, z + d))
+    tx, tz = rng.uniform(20.0, size - 36.0), rng.uniform(20.0, size - 30.0)  # the terrace, 1.8 m up
+    s.box(tx, tx + 16.0, -0.5, 1.8, tz, tz + 10.0)
+    holes.append((tx, tx + 16.0, tz, tz + 10.0))
+    for edge, heading in (((tx, tz + 5.0), (1.0, 0.0)), ((tx + 16.0, tz + 5.0), (-1.0, 0.0))):
+        _flight_to(s, np.array(edge), np.array(heading), 2.4, 0.0, 1.8)
+    taken.append((tx - 6.0, tx + 22.0, tz - 2.0, tz + 12.0))
+    fc = np.array([rng.uniform(15.0, size - 15.0), rng.uniform(15.0, size - 15.0)])
+    if _clear(fc[0] - 4.0, fc[0] + 4.0, fc[1] - 4.0, fc[1] + 4.0, taken):
+        holes.append(_round_ground(s, fc, 3.0, 12, 0.6))
+        taken.append((fc[0] - 4.0, fc[0] + 4.0, fc[1] - 4.0, fc[1] + 4.0))
+    for k in range(int(rng.integers(20, 30))):
+        p = np.array([rng.uniform(3.0, size - 3.0), rng.uniform(3.0, size - 3.0)])
+        if _clear(p[0] - 1.5, p[0] + 1.5, p[1] - 1.5, p[1] + 1.5, taken):
+            if k % 2:
+                s.box(p[0] - 0.6, p[0] + 0.6, -0.3, 1.2, p[1] - 0.6, p[1] + 0.6)
+            else:
+                _trunk(s, p, rng.uniform(0.25, 0.4), -0.5, 6.0)
+            taken.append((p[0] - 1.5, p[0] + 1.5, p[1] - 1.5, p[1] + 1.5))
+    s.ground(0.0, size, 0.0, size, 0.0, holes)
+    # the distant terrain: a bowl rising from the square's edge, hills beyond
+    far, grid = 100.0, 6.0
+    xs = np.concatenate([np.arange(-far, 0.0, grid), [0.0, size], size + np.arange(grid, far + grid / 2, grid)])
+    gx, gz = np.meshgrid(xs, xs, indexing="ij")
+    out = np.maximum(np.maximum(-gx, gx - size), np.maximum(-gz, gz - size)).clip(0.0)
+    rim = rng.uniform(12.0, 18.0)
+    waves = sum(rng.uniform(8.0, 14.0) * np.sin(gx / rng.uniform(14.0, 26.0) + rng.uniform(0, 2 * math.pi))
+                * np.cos(gz / rng.uniform(14.0, 26.0) + rng.uniform(0, 2 * math.pi)) for _ in range(3))
+    heights = np.where(out > 0, rim + 0.15 * (out - grid) + np.where(out > grid, waves, 0.0), 0.0)
+    keep = np.ones((len(xs) - 1, len(xs) - 1), dtype=bool)
+    inside = (xs[:-1] >= 0.0) & (xs[1:] <= size)
+    keep[np.ix_(inside, inside)] = False
+    _terrain(s, xs, xs, heights, keep)
+    for _ in range(int(rng.integers(25, 40))):  # cliffs and far houses on the terrain
+        p = rng.uniform(-far + 10.0, size + far - 10.0, 2)
+        d = max(-p[0], p[0] - size, -p[1], p[1] - size)
+        if d < 20.0:
+            continue
+        y = float(heights[np.abs(xs - p[0]).argmin(), np.abs(xs - p[1]).argmin()])
+        if rng.random() < 0.6:
+            s.rock(rng, p, rng.uniform(3.0, 6.0), y - 2.0, y + rng.uniform(15.0, 30.0))
+        else:
+            w = rng.uniform(8.0, 14.0)
+            s.box(p[0], p[0] + w, y - 6.0, y + rng.uniform(5.0, 10.0), p[1], p[1] + w)
+    # the skybox: five faces turned inward
+    lo, hi = size / 2 - 500.0, size / 2 + 500.0
+    corners = np.array([[x, y, z] for x in (lo, hi) for y in (-20.0, 180.0) for z in (lo, hi)])
+    sky = [[0, 3, 1], [0, 2, 3], [4, 7, 6], [4, 5, 7], [0, 6, 2], [0, 4, 6], [2, 7, 3], [2, 6, 7], [1, 7, 5], [1, 3, 7]]
+    s.parts.append(trimesh.Trimesh(corners, np.array(sky), process=False))
+    return s.mesh()
+
+
 KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
     "subway": subway, "archipelago": archipelago, "car_park": car_park,
     "forest": forest, "stadium": stadium, "harbour": harbour,
@@ -7948,6 +8593,8 @@ KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
     "suburb": suburb, "cloverleaf": cloverleaf, "radial_town": radial_town,
     "bazaar": bazaar, "container_port": container_port, "theatre": theatre, "stilt_village": stilt_village,
     "nursery": nursery, "cliff_dwellings": cliff_dwellings,
+    "drop_downs": drop_downs, "house": house, "pitched_roofs": pitched_roofs, "kit_arena": kit_arena,
+    "spiral_towers": spiral_towers, "backdrop": backdrop,
 }
 """Kind name -> generator (seed -> Y-up mesh in metres)."""
 
