@@ -1,4 +1,4 @@
-"""The ninth to eighteenth rounds' level kinds (``benchmarks/level_kinds.py``) build the levels their docstrings describe.
+"""The ninth to nineteenth rounds' level kinds (``benchmarks/level_kinds.py``) build the levels their docstrings describe.
 
 Smoke tests of quick generators (most well under a second each to build and to give a navmesh; the theatre's and
 the cliff dwellings' thousands of hulls take about 5 s of CPU): the connected areas
@@ -17,7 +17,7 @@ import scipy.sparse as sp
 import trimesh
 from scipy.sparse.csgraph import connected_components
 
-from g2s_plugins.recast import build_navmesh
+from g2s_plugins.recast import RecastParams, build_navmesh
 from tests.conftest import benchmark
 
 AGENT = SimpleNamespace(radius=0.5, height=2.0, max_climb=0.4, max_slope=45.0)  # the presets' agent (configs/base.yaml)
@@ -28,9 +28,9 @@ def kinds():
     return benchmark("level_kinds").KINDS
 
 
-def areas(mesh) -> tuple[np.ndarray, object]:
-    """The connected area of every navmesh polygon (P,) and the navmesh."""
-    nav = build_navmesh(mesh.vertices, mesh.faces, AGENT)
+def areas(mesh, params: RecastParams | None = None) -> tuple[np.ndarray, object]:
+    """The connected area of every navmesh polygon (P,) and the navmesh (Recast's defaults, or ``params``)."""
+    nav = build_navmesh(mesh.vertices, mesh.faces, AGENT, params)
     rows = np.repeat(np.arange(nav.polygon_count), nav.neighbours.shape[1])
     cols = nav.neighbours.ravel()
     ok = cols >= 0
@@ -41,7 +41,7 @@ def areas(mesh) -> tuple[np.ndarray, object]:
 def test_the_same_seed_gives_the_same_level(kinds):
     for kind in ("hall", "islets", "helix", "flooded", "stairhall", "quarry", "theme_park", "golf", "skatepark", "stepwell",
                  "railyard", "craters", "monastery", "estate", "dam", "garden", "cistern", "glacier", "medina", "radial_town",
-                 "bazaar", "stilt_village", "nursery"):
+                 "bazaar", "stilt_village", "nursery", "drop_downs", "house", "kit_arena", "backdrop"):
         a, b, other = kinds[kind](0), kinds[kind](0), kinds[kind](1)
         assert np.array_equal(a.vertices, b.vertices) and np.array_equal(a.faces, b.faces), kind
         assert len(a.vertices) != len(other.vertices) or not np.array_equal(a.vertices, other.vertices), kind
@@ -696,3 +696,70 @@ def test_the_cliff_dwellings_storeys_are_one_area_through_the_rock(kinds):
     y = nav.centres[:, 1] - 0.2
     for level in (0.0, 5.0, 10.0, 15.0, 20.0, 25.0):
         assert (np.abs(y - level) < 0.3).sum() > 10, level
+
+
+def test_the_drop_downs_terraces_are_joined_by_flights_but_the_one_reached_by_dropping(kinds):
+    """The terraces and their flights are one area; the block with no flight, reached in a game only by dropping onto
+    it, is an area of its own, a whole block's top (15-18 m square less its cover) between 1 and 17.4 m up."""
+    label, nav = areas(kinds["drop_downs"](1))
+    sizes = np.bincount(label, weights=nav.areas)
+    assert label.max() == 1
+    assert 150.0 < sizes.min() < 324.0
+    y = nav.centres[label == sizes.argmin(), 1] - 0.2
+    assert np.ptp(y) < 0.3 and 1.0 < y.min() < 17.4
+
+
+def test_the_houses_storeys_rooms_and_garden_are_one_area_through_doors_just_wide_enough(kinds):
+    """Both houses' two storeys (up their narrow stairs), every room (through doors 1.5-1.6 m wide) and the garden are
+    one area; nothing else is walkable but furniture tops of a few square metres."""
+    label, nav = areas(kinds["house"](2))
+    assert label.max() == 0
+    y = nav.centres[:, 1] - 0.2
+    assert nav.areas[np.abs(y) < 0.3].sum() > 1000.0 and nav.areas[np.abs(y - 3.0) < 0.3].sum() > 400.0
+
+
+def test_the_pitched_roofs_are_floor_reached_from_their_balconies(kinds):
+    """With the presets' ledge filter (``drops``) the streets, yards, flights, balconies and roofs at 30-40 degrees
+    are one area, with floor up to the ridges (5.5-7.5 m eaves, 2.6-4.6 m more to the ridge); Recast's own ledge rule
+    cuts the roofs steeper than about 38.7 degrees (atan(0.4 / 0.5)) into pieces."""
+    mesh = kinds["pitched_roofs"](0)
+    label, nav = areas(mesh, RecastParams(ledge_filter="drops"))
+    assert label.max() == 0
+    y = nav.centres[:, 1] - 0.2
+    assert nav.areas[y > 6.0].sum() > 1500.0 and y.max() > 9.0
+    assert areas(mesh)[0].max() > 10
+
+
+def test_the_kit_arenas_seams_leave_one_symmetric_area(kinds):
+    """Floor, platforms 2 and 4 m up and stair tiles are one area although no two tiles meet (seams of up to 3 cm);
+    the arena is symmetric under a half turn, so the walkable area on either side of its centre line is within a few
+    per cent."""
+    label, nav = areas(kinds["kit_arena"](1))
+    assert label.max() == 0
+    y = nav.centres[:, 1] - 0.2
+    for level in (0.0, 2.0, 4.0):
+        assert nav.areas[np.abs(y - level) < 0.3].sum() > 50.0, level
+    low = nav.centres[:, 2] < 40.0
+    assert abs(nav.areas[low].sum() / nav.areas[~low].sum() - 1.0) < 0.05
+
+
+def test_the_spiral_towers_are_climbed_up_their_helices(kinds):
+    """The bailey, both towers' storeys and roofs and the wall walk are one area; the helices hold floor at every
+    height between the storeys (polygon centres inside a shaft, 1.0-2.3 m from its axis)."""
+    label, nav = areas(kinds["spiral_towers"](0))
+    assert label.max() == 0
+    x, y, z = nav.centres.T
+    shaft = np.hypot(x, z) < 2.8  # the first tower's shaft, about the origin
+    assert y.max() > 16.0 and len(np.unique(np.round(y[shaft]))) > 10
+
+
+def test_the_backdrops_square_is_apart_from_the_background_and_the_skybox_holds_no_floor(kinds):
+    """The square (its terrace and flights) is one area with nothing of the background; the background's walkable
+    hillsides are areas of their own, dozens of them; no floor lies on the skybox (its walls and ceiling face in)."""
+    label, nav = areas(kinds["backdrop"](1))
+    x, y, z = nav.centres.T
+    square = (y < 3.0) & (x > 0.0) & (x < 80.0) & (z > 0.0) & (z < 80.0)
+    inside = np.unique(label[square])
+    assert len(inside) == 1 and (label == inside[0]).sum() == square.sum()
+    assert label.max() > 20 and np.abs(x - 40.0).max() < 200.0 and y.max() < 180.0
+
