@@ -151,7 +151,7 @@ each corner, so an edge the insets shrank under 0.5 m failed the cell, and 51 of
 squares); and a door needs floor under it on both sides (the bazaar's street first stopped 0.6 m short of its gates:
 two areas of 5,341 and 4,866 m² on seed 0).
 
-Nineteenth round: six kinds with features of real game levels no earlier generator had, 337-858 navmesh polygons
+Nineteenth round: six kinds with features of real game levels no earlier generator had, 398-858 navmesh polygons
 with that agent (seeds 0-2): ``drop_downs`` (terraces whose edges are ledges 1.0-2.6 m high one steps off but cannot
 climb, joined by flights along a spanning tree, one terrace reached only by dropping), ``house`` (two semi-detached
 houses of two storeys: hallways, a narrow stair, rooms behind doors just wider than the agent passes, furniture),
