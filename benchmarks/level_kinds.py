@@ -164,7 +164,8 @@ Recast's 0.25 m grid from 1.5 m wide, at some from 1.3 m, never at a real house'
 floor only where the turn above clears its treads by the agent's height with a cell or two to spare (a first draft,
 two landing wedges and treads 0.15 m thick at 16 wedges of 0.175 m, held none); a stair tile fills its tile but for
 its foot, so a layout joins runs of tiles through the tile behind each flight (:func:`_kit_layout`; a first draft,
-joining the stair tile's own run, left 20 areas on seed 0, the same with its seams closed).
+whose flights could start against a wall and whose check counted a stair tile as floor of its own level, left 20 areas
+on seed 0, the same with its seams closed).
 
 Run: ``.venv/bin/python benchmarks/level_kinds.py OUT_DIR [--kinds subway forest] [--seeds 0 1 2]`` writes
 ``OUT_DIR/<kind>_s<seed>.obj``, the files ``benchmarks/analysis_quality.py --levels`` takes (which also takes the
