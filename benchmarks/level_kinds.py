@@ -8253,11 +8253,12 @@ def pitched_roofs(seed: int) -> trimesh.Trimesh:
 
 def _kit_layout(rng: np.random.Generator, n: int) -> tuple[np.ndarray, dict[tuple[int, int], tuple[int, int]]]:
     """The levels (n, n) of 0, 1 or 2 of an arena's tiles, symmetric under a half turn (n even), and its stair tiles
-    (tile -> the step (di, dj) toward the higher neighbour it climbs to), drawn again until the stairs join every
-    connected run of tiles of one level: platforms (5-8 rectangles of 2-4 x 2-3 tiles at level 1 in the first half,
-    a smaller one at level 2 on most of the wider ones), each stair tile one level under its higher neighbour with a
-    tile of its own level behind it (the way onto it), joining runs along a random spanning tree and a sixth of the
-    other places, each with its copy turned half round."""
+    (tile -> the step (di, dj) toward the higher neighbour it climbs to): platforms (10-13 rectangles of 2-4 x 2-3
+    tiles at level 1 in the first half, three in five of those 3-4 tiles wide with a smaller one at level 2 on them),
+    each stair tile one level under its higher neighbour with a tile of its own level behind it (the way onto it),
+    placed along a random spanning tree of the runs of tiles of one level and at a sixth of the other places, each
+    with its copy turned half round. Drawn again until the flights join every run, the stair tiles left out of the
+    runs (a flight fills its tile but for its foot), each flight joining the run behind it to the one it climbs to."""
     while True:
         level = np.zeros((n, n), dtype=int)
         for _ in range(int(rng.integers(10, 14))):
