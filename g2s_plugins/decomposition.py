@@ -22,7 +22,8 @@ polygons and their shared edges (portals):
    ``obstacle_area`` m²: pillars, crates) are left out of the clearances
    that split the level, so they neither make a room as narrow as its doors
    nor make passages of their own (with ``through_holes``, a portal that ends
-   on one is measured through it as well: :func:`_through_holes`); but a small hole that is a piece of wall
+   on one, with a gap about as wide beyond it, is measured through it as well: :func:`_through_holes`); but a
+   small hole that is a piece of wall
    between two openings (:func:`wall_pieces`: long for its width, its ends
    near other walls, its long sides not) counts as a wall, so that a front of
    doors is not one opening as wide as the front. ``width = 2 x clearance``
@@ -350,10 +351,11 @@ class DecompositionParams(PluginParams):
     )
     through_holes: bool = Field(
         False, description="measure a portal that ends on such a small hole through it as well (at least the "
-        "clearance of the hole's centre): a row of trees or posts down an avenue no longer cuts it into pieces (the "
-        "radial town, subway, cemetery, hillside); but the train's carriages join its platforms, the water park's "
-        "island is cut across open deck and fewer rooms of a pillared dungeon have a region of their own "
-        "(docs/plugins.md, \"Cuts through the holes left out\"), so it is off by default",
+        "clearance of the hole's centre) when the gap beyond the hole along the portal's line is about as wide as the "
+        "portal's own (two gaps of one opening): a row of trees or posts down an avenue no longer cuts it into pieces "
+        "(the radial town, subway, cemetery); but fewer rooms of a pillared dungeon have a region of their own and "
+        "cuts beside pillars near walls stay (docs/plugins.md, \"Cuts through the holes left out, between two "
+        "gaps\"), so it is off by default",
     )
     min_region_area: float = Field(
         8.0, ge=0, description="smaller areas (slivers, corners) merge into a neighbour, m², unless walled in but for "
@@ -615,11 +617,11 @@ def _between_gaps(ends: np.ndarray, side: np.ndarray, hole: np.ndarray, start: n
     the boundary edges ``start`` -> ``end`` (B, 3) cut into :data:`PIECE` pieces (``left_out`` (B,): the hole of
     each, :class:`Clearances`). The gap beside the hole is the portal, the gap beyond it that stretch of floor; both
     walkable, so each is widened by ``wall_to_wall`` (m) to wall to wall. They are one opening's when the narrower
-    is at least :data:`THROUGH_GAP_SHARE` as wide as the wider. A kd-tree ball query per portal, O(K log B + K q)
-    for q pieces within its reach.
+    is at least :data:`THROUGH_GAP_SHARE` as wide as the wider. O(B log B) to sort the edges by hole and build the
+    kd-tree over their pieces, then per portal a binary search, a ball query and O(h + q) for the hole's h edges and
+    the q pieces within its reach.
     """
     scale = np.array([1.0, HEIGHT_SCALE, 1.0])
-    on_hole = left_out >= 0
     pieces_of = np.maximum(np.ceil(np.linalg.norm(end - start, axis=1) / PIECE), 1).astype(np.int64)
     points = wall_samples(start, end, PIECE)
     last = np.cumsum(pieces_of + 1) - 1
@@ -628,6 +630,8 @@ def _between_gaps(ends: np.ndarray, side: np.ndarray, hole: np.ndarray, start: n
     edge_of = np.repeat(np.arange(len(start)), pieces_of + 1)[first]
     a, b = points[first], points[np.flatnonzero(first) + 1]
     tree = cKDTree(0.5 * (a + b) * scale)
+    by_hole = np.argsort(left_out, kind="stable")  # each hole's edges, found by binary search
+    bounds = np.searchsorted(left_out[by_hole], np.stack([hole, hole + 1]))
     paired = np.zeros(len(ends), dtype=bool)
     for k in range(len(ends)):
         there, other = ends[k, side[k]], ends[k, 1 - side[k]]
@@ -636,13 +640,13 @@ def _between_gaps(ends: np.ndarray, side: np.ndarray, hole: np.ndarray, start: n
         if near < 1e-9:
             continue
         direction /= near
-        own = np.flatnonzero(left_out == hole[k])
+        own = by_hole[bounds[0, k]:bounds[1, k]]
         leaves = _ray_hits(there[[0, 2]] - 1e-6 * direction, direction, start[own][:, [0, 2]], end[own][:, [0, 2]])
         leaves = float(leaves[np.isfinite(leaves)].max()) if np.isfinite(leaves).any() else 0.0
         exit_point = there + leaves * np.array([direction[0], 0.0, direction[1]])
         reach = (near + wall_to_wall) / THROUGH_GAP_SHARE - wall_to_wall  # a farther wall makes the gaps unequal
         near_pieces = np.asarray(tree.query_ball_point(exit_point * scale, reach + PIECE), dtype=np.int64)
-        near_pieces = near_pieces[~(on_hole[edge_of[near_pieces]] & (left_out[edge_of[near_pieces]] == hole[k]))]
+        near_pieces = near_pieces[left_out[edge_of[near_pieces]] != hole[k]]
         far = _ray_hits(exit_point[[0, 2]], direction, a[near_pieces][:, [0, 2]], b[near_pieces][:, [0, 2]])
         far = float(far.min()) if len(far) else np.inf
         gaps = np.array([near, far]) + wall_to_wall
