@@ -519,6 +519,16 @@ def wall_samples(start: np.ndarray, end: np.ndarray, spacing: float) -> np.ndarr
     return start[edge] * (1.0 - t) + end[edge] * t
 
 
+def _pieces(start: np.ndarray, end: np.ndarray, scale: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The segments ``start`` -> ``end`` (B,3 each), their coordinates times ``scale`` (3,), cut into pieces at most
+    :data:`PIECE` long: each piece's start and end points, (K,3) each, and (K,) the segment it is cut from."""
+    ends = wall_samples(start * scale, end * scale, PIECE)
+    count = np.maximum(np.ceil(np.linalg.norm((end - start) * scale, axis=1) / PIECE), 1).astype(np.int64) + 1
+    is_start = np.ones(len(ends), dtype=bool)
+    is_start[np.cumsum(count) - 1] = False  # a piece runs from each sample to the next one of its edge
+    return ends[is_start], ends[np.flatnonzero(is_start) + 1], np.repeat(np.arange(len(start)), count)[is_start]
+
+
 def _distance_to(points: np.ndarray, start: np.ndarray, end: np.ndarray) -> np.ndarray:
     """Distance (m, heights scaled) from each of ``points`` (N,3) to the nearest segment ``start`` -> ``end``
     (B,3 each; inf when there is none).
@@ -530,11 +540,7 @@ def _distance_to(points: np.ndarray, start: np.ndarray, end: np.ndarray) -> np.n
     if len(start) == 0:
         return np.full(len(points), np.inf)
     scale = np.array([1.0, HEIGHT_SCALE, 1.0])
-    ends = wall_samples(start * scale, end * scale, PIECE)
-    last = np.cumsum(np.maximum(np.ceil(np.linalg.norm((end - start) * scale, axis=1) / PIECE), 1).astype(np.int64) + 1)
-    is_start = np.ones(len(ends), dtype=bool)
-    is_start[last - 1] = False  # a piece runs from each sample to the next one of its edge
-    a, b = ends[is_start], ends[np.flatnonzero(is_start) + 1]
+    a, b, _ = _pieces(start, end, scale)
     k = min(NEAREST_PIECES, len(a))
     q = points * scale
     nearest = cKDTree(0.5 * (a + b)).query(q, k=k)[1].reshape(len(q), k)
@@ -622,13 +628,7 @@ def _between_gaps(ends: np.ndarray, side: np.ndarray, hole: np.ndarray, start: n
     the q pieces within its reach.
     """
     scale = np.array([1.0, HEIGHT_SCALE, 1.0])
-    pieces_of = np.maximum(np.ceil(np.linalg.norm(end - start, axis=1) / PIECE), 1).astype(np.int64)
-    points = wall_samples(start, end, PIECE)
-    last = np.cumsum(pieces_of + 1) - 1
-    first = np.ones(len(points), dtype=bool)
-    first[last] = False  # a piece runs from each sample to the next one of its edge
-    edge_of = np.repeat(np.arange(len(start)), pieces_of + 1)[first]
-    a, b = points[first], points[np.flatnonzero(first) + 1]
+    a, b, edge_of = _pieces(start, end, np.ones(3))
     tree = cKDTree(0.5 * (a + b) * scale)
     by_hole = np.argsort(left_out, kind="stable")  # each hole's edges, found by binary search
     bounds = np.searchsorted(left_out[by_hole], np.stack([hole, hole + 1]))
