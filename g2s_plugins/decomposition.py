@@ -22,7 +22,8 @@ polygons and their shared edges (portals):
    ``obstacle_area`` m²: pillars, crates) are left out of the clearances
    that split the level, so they neither make a room as narrow as its doors
    nor make passages of their own (with ``through_holes``, a portal that ends
-   on one is measured through it as well: :func:`_through_holes`); but a small hole that is a piece of wall
+   on one, with a gap about as wide beyond it, is measured through it as well: :func:`_through_holes`); but a
+   small hole that is a piece of wall
    between two openings (:func:`wall_pieces`: long for its width, its ends
    near other walls, its long sides not) counts as a wall, so that a front of
    doors is not one opening as wide as the front. ``width = 2 x clearance``
@@ -250,6 +251,13 @@ wall (:func:`_post_links`): a gate with a post, two arches on a slim pier. At le
 The designer's rule of docs/plugins.md, "Posts, niches and aisles"; measured there on posts of 0.3-1.5 m in gaps of
 4-20 m and on doors of 1.5-3 m 0.5-3 m apart, at 0, 22 and 45 degrees."""
 
+THROUGH_GAP_SHARE = 0.5
+"""With ``through_holes``, a portal ending on a small hole left out of the clearances is measured through it when the
+gap beyond the hole, along the portal's line, and the portal's own gap are each at least this share as wide as the
+other, wall to wall (:func:`_between_gaps`): two gaps of one opening, the hole standing between them. Set before
+measuring, as :data:`POST_SHARE` (a post at most half an opening's width); docs/plugins.md, "Cuts through the holes
+left out, between two gaps", gives 0.33 and 0.67 beside it."""
+
 SMALL_ROOM_ENCLOSURE = 0.85
 """A group under ``min_region_area`` is a room when at least this share of its outline (walls and the portals out of
 it) is wall, its exits are :data:`SMALL_ROOM_OPENING` together and it holds :data:`SMALL_ROOM_FOOTPRINT` (step 2 of the
@@ -343,10 +351,11 @@ class DecompositionParams(PluginParams):
     )
     through_holes: bool = Field(
         False, description="measure a portal that ends on such a small hole through it as well (at least the "
-        "clearance of the hole's centre): a row of trees or posts down an avenue no longer cuts it into pieces (the "
-        "radial town, subway, cemetery, hillside); but the train's carriages join its platforms, the water park's "
-        "island is cut across open deck and fewer rooms of a pillared dungeon have a region of their own "
-        "(docs/plugins.md, \"Cuts through the holes left out\"), so it is off by default",
+        "clearance of the hole's centre) when the gap beyond the hole along the portal's line is about as wide as the "
+        "portal's own (two gaps of one opening): a row of trees or posts down an avenue no longer cuts it into pieces "
+        "(the radial town, subway, cemetery); but fewer rooms of a pillared dungeon have a region of their own and "
+        "cuts beside pillars near walls stay (docs/plugins.md, \"Cuts through the holes left out, between two "
+        "gaps\"), so it is off by default",
     )
     min_region_area: float = Field(
         8.0, ge=0, description="smaller areas (slivers, corners) merge into a neighbour, m², unless walled in but for "
@@ -510,6 +519,16 @@ def wall_samples(start: np.ndarray, end: np.ndarray, spacing: float) -> np.ndarr
     return start[edge] * (1.0 - t) + end[edge] * t
 
 
+def _pieces(start: np.ndarray, end: np.ndarray, scale: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The segments ``start`` -> ``end`` (B,3 each), their coordinates times ``scale`` (3,), cut into pieces at most
+    :data:`PIECE` long: each piece's start and end points, (K,3) each, and (K,) the segment it is cut from."""
+    ends = wall_samples(start * scale, end * scale, PIECE)
+    count = np.maximum(np.ceil(np.linalg.norm((end - start) * scale, axis=1) / PIECE), 1).astype(np.int64) + 1
+    is_start = np.ones(len(ends), dtype=bool)
+    is_start[np.cumsum(count) - 1] = False  # a piece runs from each sample to the next one of its edge
+    return ends[is_start], ends[np.flatnonzero(is_start) + 1], np.repeat(np.arange(len(start)), count)[is_start]
+
+
 def _distance_to(points: np.ndarray, start: np.ndarray, end: np.ndarray) -> np.ndarray:
     """Distance (m, heights scaled) from each of ``points`` (N,3) to the nearest segment ``start`` -> ``end``
     (B,3 each; inf when there is none).
@@ -521,11 +540,7 @@ def _distance_to(points: np.ndarray, start: np.ndarray, end: np.ndarray) -> np.n
     if len(start) == 0:
         return np.full(len(points), np.inf)
     scale = np.array([1.0, HEIGHT_SCALE, 1.0])
-    ends = wall_samples(start * scale, end * scale, PIECE)
-    last = np.cumsum(np.maximum(np.ceil(np.linalg.norm((end - start) * scale, axis=1) / PIECE), 1).astype(np.int64) + 1)
-    is_start = np.ones(len(ends), dtype=bool)
-    is_start[last - 1] = False  # a piece runs from each sample to the next one of its edge
-    a, b = ends[is_start], ends[np.flatnonzero(is_start) + 1]
+    a, b, _ = _pieces(start, end, scale)
     k = min(NEAREST_PIECES, len(a))
     q = points * scale
     nearest = cKDTree(0.5 * (a + b)).query(q, k=k)[1].reshape(len(q), k)
@@ -585,12 +600,67 @@ def portal_samples(ends: np.ndarray, spacing: float) -> tuple[np.ndarray, np.nda
     return ends[portal, 0] * (1.0 - t) + ends[portal, 1] * t, portal
 
 
-def _through_holes(ends: np.ndarray, start: np.ndarray, left_out: np.ndarray,
-                   walls: tuple[np.ndarray, np.ndarray]) -> np.ndarray:
+def _ray_hits(origin: np.ndarray, direction: np.ndarray, start: np.ndarray, end: np.ndarray) -> np.ndarray:
+    """(S,) how far (m) along the ray ``origin`` + t ``direction`` (plan (x, z), t > 0, unit direction) it crosses each
+    segment ``start`` -> ``end`` (S, 2), inf for the segments it misses. O(S)."""
+    edge = end - start
+    offset = start - origin
+    denominator = direction[0] * edge[:, 1] - direction[1] * edge[:, 0]
+    parallel = np.abs(denominator) < 1e-12
+    denominator = np.where(parallel, 1.0, denominator)
+    along = (offset[:, 0] * edge[:, 1] - offset[:, 1] * edge[:, 0]) / denominator
+    across = (offset[:, 0] * direction[1] - offset[:, 1] * direction[0]) / denominator
+    return np.where(~parallel & (along > 1e-9) & (across >= -1e-9) & (across <= 1.0 + 1e-9), along, np.inf)
+
+
+def _between_gaps(ends: np.ndarray, side: np.ndarray, hole: np.ndarray, start: np.ndarray, end: np.ndarray,
+                  left_out: np.ndarray, wall_to_wall: float) -> np.ndarray:
+    """(K,) bool: whether each portal ``ends`` (K, 2, 3), ending at ``side`` (K,) on the left-out small hole ``hole``
+    (K,), is one of two gaps of one opening either side of that hole (:func:`_through_holes`).
+
+    The portal's line is carried on past its end on the hole, through the hole (to where it leaves the hole's
+    outline) and across the floor beyond it to the next boundary edge (a wall or another hole), in plan, over
+    the boundary edges ``start`` -> ``end`` (B, 3) cut into :data:`PIECE` pieces (``left_out`` (B,): the hole of
+    each, :class:`Clearances`). The gap beside the hole is the portal, the gap beyond it that stretch of floor; both
+    walkable, so each is widened by ``wall_to_wall`` (m) to wall to wall. They are one opening's when the narrower
+    is at least :data:`THROUGH_GAP_SHARE` as wide as the wider. O(B log B) to sort the edges by hole and build the
+    kd-tree over their pieces, then per portal a binary search, a ball query and O(h + q) for the hole's h edges and
+    the q pieces within its reach.
+    """
+    scale = np.array([1.0, HEIGHT_SCALE, 1.0])
+    a, b, edge_of = _pieces(start, end, np.ones(3))
+    tree = cKDTree(0.5 * (a + b) * scale)
+    by_hole = np.argsort(left_out, kind="stable")  # each hole's edges, found by binary search
+    bounds = np.searchsorted(left_out[by_hole], np.stack([hole, hole + 1]))
+    paired = np.zeros(len(ends), dtype=bool)
+    for k in range(len(ends)):
+        there, other = ends[k, side[k]], ends[k, 1 - side[k]]
+        direction = (there - other)[[0, 2]]
+        near = float(np.linalg.norm(direction))
+        if near < 1e-9:
+            continue
+        direction /= near
+        own = by_hole[bounds[0, k]:bounds[1, k]]
+        leaves = _ray_hits(there[[0, 2]] - 1e-6 * direction, direction, start[own][:, [0, 2]], end[own][:, [0, 2]])
+        leaves = float(leaves[np.isfinite(leaves)].max()) if np.isfinite(leaves).any() else 0.0
+        exit_point = there + leaves * np.array([direction[0], 0.0, direction[1]])
+        reach = (near + wall_to_wall) / THROUGH_GAP_SHARE - wall_to_wall  # a farther wall makes the gaps unequal
+        near_pieces = np.asarray(tree.query_ball_point(exit_point * scale, reach + PIECE), dtype=np.int64)
+        near_pieces = near_pieces[left_out[edge_of[near_pieces]] != hole[k]]
+        far = _ray_hits(exit_point[[0, 2]], direction, a[near_pieces][:, [0, 2]], b[near_pieces][:, [0, 2]])
+        far = float(far.min()) if len(far) else np.inf
+        gaps = np.array([near, far]) + wall_to_wall
+        paired[k] = bool(np.isfinite(far) and gaps.min() >= THROUGH_GAP_SHARE * gaps.max())
+    return paired
+
+
+def _through_holes(ends: np.ndarray, start: np.ndarray, end: np.ndarray, left_out: np.ndarray,
+                   walls: tuple[np.ndarray, np.ndarray], wall_to_wall: float) -> np.ndarray:
     """(E,) the largest clearance (to ``walls``, start and end (B', 3) m: the walls with the small holes left out) at
-    the centres of the left-out small holes each portal ``ends`` (E, 2, 3) ends on (0 for a portal that ends on
-    none); ``start`` (B, 3): the boundary edges' start points, ``left_out`` (B,): the left-out hole each bounds, -1
-    for none (:class:`Clearances`). A hole's centre is the mean of its outline's corners.
+    the centres of the left-out small holes each portal ``ends`` (E, 2, 3) ends on as one of two gaps either side of
+    the hole (:func:`_between_gaps`; 0 for a portal that ends on none); ``start``, ``end`` (B, 3): the boundary
+    edges, ``left_out`` (B,): the left-out hole each bounds, -1 for none (:class:`Clearances`); ``wall_to_wall``: the
+    agent's diameter and a navmesh cell, m. A hole's centre is the mean of its outline's corners.
 
     Recast's polygons go round a small hole, so the portals beside a pillar or a tree run from the hole to a wall and
     do not cross the floor where the hole stands: with the hole left out, the cut there runs on through it (as
@@ -598,7 +668,11 @@ def _through_holes(ends: np.ndarray, start: np.ndarray, left_out: np.ndarray,
     portals beside a trunk of a row of trees down an avenue measure 3.04-4.27 m of clearance where the avenue's
     middle has 4.5 m (the radial town; docs/plugins.md, "Cuts through the holes left out"): narrower than the
     polygons beside them by ``narrowness`` or not, as Recast placed those polygons' centres, so the avenues were cut
-    at some trees and not at others. O(E + B) and a nearest-wall search per hole.
+    at some trees and not at others. But only a hole with a gap of about the portal's width beyond it stands in
+    the opening the portal crosses (a tree in an avenue, a post in a gate, a bench between two lanes of a
+    platform): a pillar standing before a corridor's mouth, with the room open beyond it, has the room's clearance
+    at its centre, not the corridor's (docs/plugins.md, "Cuts through the holes left out, between two gaps").
+    O(E + B) and a nearest-wall search per hole, and :func:`_between_gaps` per portal on a hole.
     """
     on_hole = np.flatnonzero(left_out >= 0)
     through = np.zeros(len(ends))
@@ -611,6 +685,8 @@ def _through_holes(ends: np.ndarray, start: np.ndarray, left_out: np.ndarray,
     at_centre = _distance_to(centre, *walls)
     hole = _holes_at(ends.reshape(-1, 3), start, left_out).reshape(-1, 2)
     portal, side = np.nonzero(hole >= 0)
+    paired = _between_gaps(ends[portal], side, hole[portal, side], start, end, left_out, wall_to_wall)
+    portal, side = portal[paired], side[paired]
     np.maximum.at(through, portal, at_centre[np.searchsorted(ids, hole[portal, side])])
     return through
 
@@ -637,7 +713,8 @@ def clearances(navmesh: Any, obstacle_area: float, wall_to_wall: float, through_
     portals_open = np.maximum.reduceat(walls, first) if len(ends) else np.zeros(0)
     if through_holes:
         portals_open = np.maximum(portals_open,
-                                  _through_holes(ends, start, left_out, (start[~obstacle], end[~obstacle])))
+                                  _through_holes(ends, start, end, left_out, (start[~obstacle], end[~obstacle]),
+                                                 wall_to_wall))
     return Clearances(
         polygons=_distance_to(np.asarray(navmesh.centres), start[~obstacle], end[~obstacle]),
         portals_open=portals_open,

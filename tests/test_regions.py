@@ -231,6 +231,52 @@ def test_through_holes_keeps_a_row_of_posts_down_a_street_from_cutting_it(yaw, c
     assert (clearance.portals[on_post] < clearance.portals_open[on_post] - 0.25).all()  # the post counted: narrower
 
 
+def test_a_portal_is_measured_through_a_hole_only_between_two_gaps_of_one_opening():
+    # walls along z at x = -4 and x = far, a 1 m square hole round the origin, a portal from the west wall to the
+    # hole: 3.5 m walkable beside it. With the east wall at x = 4 the gap beyond the hole is as wide (a post in one
+    # opening); at x = 12 it is 11.5 m (a pillar with the room open beyond it: 4.75 against 12.75 m wall to wall,
+    # under THROUGH_GAP_SHARE of it)
+    square = np.array([[-0.5, 0.0, -0.5], [0.5, 0.0, -0.5], [0.5, 0.0, 0.5], [-0.5, 0.0, 0.5]])
+    portal = np.array([[[-4.0, 0.0, 0.0], [-0.5, 0.0, 0.0]]])
+    answers = []
+    for far in (4.0, 12.0):
+        start = np.concatenate([[[-4.0, 0.0, -10.0], [far, 0.0, 10.0]], square])
+        end = np.concatenate([[[-4.0, 0.0, 10.0], [far, 0.0, -10.0]], np.roll(square, -1, axis=0)])
+        left_out = np.array([-1, -1, 0, 0, 0, 0])
+        answers.append(bool(decomposition._between_gaps(portal, np.array([1]), np.array([0]), start, end, left_out,
+                                                        1.25)[0]))
+    assert answers == [True, False]
+
+
+def rooms_with_pillars_before_the_corridor(yaw: float) -> SimpleNamespace:
+    """Two rooms 8 x 7 m (floor only: its edges are the walls) joined by a corridor 8 m long and 2.75 m wide, a 1 m
+    pillar 0.8 m from each room's wall straight before the corridor's mouth, turned ``yaw`` degrees."""
+    parts = [box(-8.0, 0.0, -0.5, 0.0, -3.5, 3.5), box(0.0, 8.0, -0.5, 0.0, -1.375, 1.375),
+             box(8.0, 16.0, -0.5, 0.0, -3.5, 3.5), box(-1.8, -0.8, -0.5, 3.0, -0.5, 0.5), box(8.8, 9.8, -0.5, 3.0, -0.5, 0.5)]
+    mesh = trimesh.util.concatenate(parts)
+    mesh.apply_transform(trimesh.transformations.rotation_matrix(np.radians(yaw), [0.0, 1.0, 0.0]))
+    return SimpleNamespace(mesh=mesh, name=f"rooms_with_pillars_before_the_corridor_{yaw:g}")
+
+
+@pytest.mark.parametrize("yaw", [0.0, 45.0])
+def test_through_holes_keeps_a_corridor_apart_from_the_rooms_whose_pillars_stand_before_its_mouths(yaw):
+    # the portals from a mouth's corners to the pillar before it are measured through the pillar only when a gap
+    # of about their width lies beyond it; here the room is open beyond the pillar, whose centre has the room's
+    # clearance. Measured through it anyway (every portal on a hole, as before), at 45 degrees both mouths read as
+    # wide as the rooms and the two rooms were one region (1 / 0); measured along themselves the corridor is cut
+    raw = load_raw_config(PRESET)
+    for analyzer in raw["analyzers"][1:]:
+        analyzer["params"]["through_holes"] = True
+    level = rooms_with_pillars_before_the_corridor(yaw)
+    result = run(level, parse_config(raw))
+    navmesh = result.context.navmesh
+    turn = trimesh.transformations.rotation_matrix(np.radians(yaw), [0.0, 1.0, 0.0])
+    centres = trimesh.transform_points(np.array([[-4.0, 0.0, 0.0], [12.0, 0.0, 0.0]]), turn)
+    region_of = {p: r["id"] for r in regions(result) for p in r["polygons"]}
+    assert len({region_of[navmesh.nearest_poly(c, extents=(1.0, 1.0, 1.0))[0]] for c in centres}) == 2
+    assert chokepoints(result)
+
+
 def test_three_posts_in_a_gap_leave_one_chokepoint():
     # three 0.8 m posts in a 14 m gap, 2.9 m apart: each part is 1.9 m walkable, 1.5-2 m as measured, and the
     # posts' outlines 2 m across; they split the gap into four chokepoints before (parts narrower than the posts'
