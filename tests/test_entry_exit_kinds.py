@@ -846,3 +846,13 @@ def test_a_terrace_dropping_into_the_room_holds_no_opening() -> None:
     # it is no rival of the room (0.06 of its area), whence the agent never walks up onto it.
     level = benchmark("piece_kinds12").terrace_step_06()
     _assert_known(_detect(level.mesh).openings, [o.position for o in level.openings], [1.6])
+
+
+def test_floors_walked_down_to_are_reached_through_every_ledge() -> None:
+    # Floors 0 and 1 both drop into floor 2, which drops into 3; floor 4 is no floor (a roof): 3 does not reach it.
+    # Each of two ledges into one floor counts (a buffered update kept the last link's source alone).
+    links = np.array([[0, 2], [1, 2], [2, 3], [3, 4], [0, 2]])
+    reach = entry_exit._walked_down(links, np.array([True, True, True, True, False]))
+    assert reach.tolist() == [[True, False, True, True, False], [False, True, True, True, False],
+                              [False, False, True, True, False], [False, False, False, True, False],
+                              [False, False, False, False, True]]

@@ -1246,10 +1246,10 @@ def _walked_down(links: np.ndarray, floors: np.ndarray) -> np.ndarray:
     """(C, C) bool: row c, the ``floors`` (C,) bool the agent reaches from floor c walking down ledges (``links`` (D, 2)
     floor pairs (from, to), :func:`_drop_links`), c itself included, through floors only. O(C^2 D) at most."""
     reach = np.eye(len(floors), dtype=bool)
-    links = links[floors[links[:, 0]] & floors[links[:, 1]]]
+    links = np.unique(links[floors[links[:, 0]] & floors[links[:, 1]]], axis=0)
     while True:
         step = reach.copy()
-        step[:, links[:, 1]] |= reach[:, links[:, 0]]
+        np.logical_or.at(step.T, links[:, 1], reach.T[links[:, 0]])  # unbuffered: several links reach one floor
         if (step == reach).all():
             return reach
         reach = step
