@@ -15,22 +15,21 @@ from __future__ import annotations
 
 import math
 import sys
-from functools import partial
 
 import numpy as np
 import trimesh
 from piece_kinds10 import SLAB, _box, _hull, _room
-from piece_kinds10 import _level as _level10
 from piece_kinds10 import kinds_by_name, main as _run_kinds
 from piece_kinds14 import _corridor
 from piece_kinds15 import _prism
+from piece_parts import ROOM_DOORS as _DOORS
+from piece_parts import ROOM_OPENINGS as _ROOM_DOORS
+from piece_parts import round_level
 
 from g2s_plugins.samples.levels import SampleLevel, _opening
 from g2s_plugins.samples.pieces import _E, _N, _S, _W
 
-_level = partial(_level10, round_=18)  # the tenth round's, tagged with this round
-_DOORS = {"W": [(2.2, 3.8, 2.2)], "E": [(2.2, 3.8, 2.2)]}  # 1.6 m doorways under 2.2 m lintels, W and E of a 6 m room
-_ROOM_DOORS = [_opening((-0.3, 0.0, 3.0), _W, 1.6), _opening((8.3, 0.0, 3.0), _E, 1.6)]  # theirs in an 8 x 6 m room
+_level = round_level(18)  # the tenth round's, tagged with this round
 
 
 def crowned_road(crown: float = 0.12) -> SampleLevel:

@@ -817,3 +817,42 @@ def test_a_bridge_of_planks_6_cm_apart_gives_both_ends(yaw: float) -> None:
     level = benchmark("piece_kinds16").plank_bridge_gaps(0.06)
     level = pieces.turned(level, yaw) if yaw else level
     _assert_known(_detect(level.mesh).openings, [o.position for o in level.openings], [1.8, 1.8])
+
+
+def _corridor_dropping(drop: float, length: float = 12.0) -> trimesh.Trimesh:
+    """A corridor ``length`` x 2.4 m open at both ends, walls 0.3 m thick and 3 m high over its upper floor; half-way
+    its floor drops ``drop`` m (more than the climb: walked down, not up)."""
+    half = length / 2
+    return trimesh.util.concatenate([
+        _box(0.0, half, -drop - SLAB, 0.0, 0.0, 2.4), _box(half, length, -drop - SLAB, -drop, 0.0, 2.4),
+        _box(0.0, length, -drop - SLAB, TALL, -0.3, 0.0), _box(0.0, length, -drop - SLAB, TALL, 2.4, 2.7)])
+
+
+@pytest.mark.parametrize("drop, yaw", [(0.6, 0.0), (0.6, 45.0), (1.5, 22.0)])
+def test_a_floor_walked_down_to_inside_a_corridor_holds_its_end(drop: float, yaw: float) -> None:
+    # The two halves are two navmesh components, less than a storey apart, and one end was missed at every yaw (the
+    # eighteenth round's `step_down_corridor`): at 0 degrees Recast measures the lower half 0.19 m² larger, so it was
+    # the main floor, from which the agent never walks up. The upper half, whence the agent walks down to the lower,
+    # is the main floor now, and the lower holds its end with it.
+    mesh = _corridor_dropping(drop)
+    turn = pieces.yaw_about_centre(mesh, yaw)
+    mesh.apply_transform(turn)
+    known = trimesh.transform_points(np.array([[0.0, 0.0, 1.2], [12.0, -drop, 1.2]]), turn)
+    _assert_known(_detect(mesh).openings, list(known), [2.4, 2.4])
+
+
+def test_a_terrace_dropping_into_the_room_holds_no_opening() -> None:
+    # The twelfth round's terrace 0.6 m up beyond a room's east door: the agent walks down off it into the room, but
+    # it is no rival of the room (0.06 of its area), whence the agent never walks up onto it.
+    level = benchmark("piece_kinds12").terrace_step_06()
+    _assert_known(_detect(level.mesh).openings, [o.position for o in level.openings], [1.6])
+
+
+def test_floors_walked_down_to_are_reached_through_every_ledge() -> None:
+    # Floors 0 and 1 both drop into floor 2, which drops into 3; floor 4 is no floor (a roof): 3 does not reach it.
+    # Each of two ledges into one floor counts (a buffered update kept the last link's source alone).
+    links = np.array([[0, 2], [1, 2], [2, 3], [3, 4], [0, 2]])
+    reach = entry_exit._walked_down(links, np.array([True, True, True, True, False]))
+    assert reach.tolist() == [[True, False, True, True, False], [False, True, True, True, False],
+                              [False, False, True, True, False], [False, False, False, True, False],
+                              [False, False, False, False, True]]

@@ -260,3 +260,16 @@ def test_a_flights_foot_seen_from_a_line_down_it_measures_the_flight(riser: floa
     found, known, _, terminals = _openings(pieces.turned(level, yaw) if yaw else level)
     assert len(found) == 2 and pieces.match_openings(found, known) == (2, 2)
     assert all(o.width == pytest.approx(1.6, abs=0.05) for o in terminals.openings)
+
+
+@pytest.mark.parametrize("yaw", [0.0, 45.0])
+def test_a_floor_walked_down_to_holds_its_end_and_a_single_file_one_none(yaw: float) -> None:
+    # A corridor's floor dropping 1.0 m half-way: on the sampled surface the upper half measured 0.56 of the lower's
+    # area, and the lower was the main floor (the west end missed). The canal's channel, 1.0 m down beside its
+    # walkways, is sampled in single file alone: walked down to, it would hold its two ends.
+    corridor = benchmark("piece_kinds18").step_down_corridor(1.0)
+    found, known, _, _ = _openings(pieces.turned(corridor, yaw) if yaw else corridor)
+    assert pieces.match_openings(found, known) == (2, 2) and len(found) == 2
+    canal = benchmark("piece_kinds12").canal_walkways()
+    found, _, _, _ = _openings(pieces.turned(canal, yaw) if yaw else canal)
+    assert len(found) and (found[:, 1] > -0.5).all()

@@ -69,7 +69,7 @@ def _ways(directions: np.ndarray, edges: np.ndarray) -> entry_exit._Ways:
     up = np.tile([0.0, 1.0, 0.0], (n, 1))
     tangent = np.tile([0.0, 0.0, -1.0], (n, 1))
     return entry_exit._Ways(edges.copy(), up, tangent, np.ones(n, bool), directions, edges, np.zeros(n, bool),
-                            np.zeros(n), np.zeros(n, bool))
+                            np.zeros(n), np.zeros(n, bool), np.full((n, 3), np.nan))
 
 
 def test_a_segment_that_walks_round_a_corner_is_fitted_without_the_corner() -> None:

@@ -95,7 +95,10 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
      hold openings with it (a corridor cut in two by a barrier), and so do
      the storeys (an agent's height or more from it) leaving the piece that
      walls or railings close along most of their boundary (a deck over a
-     corridor);
+     corridor), and the floors the agent walks down to off their ledges, less
+     than a storey down (a corridor's far half beyond a 0.6 m drop); of floors
+     of comparable area, the main one is that from which the agent reaches the
+     most, walking down;
    * outer extent (``extent_heights``): modular pieces meet their neighbours
      at their outer extent, facing out. The opening's gap to the piece's
      extent along its heading (the largest ``vertex . heading`` over the faces
@@ -372,6 +375,7 @@ class _Ways:
     stepped: np.ndarray  # (M,) bool: the way out starts on a step up (``base`` is on its top)
     drop: np.ndarray  # (M,) how far below ``base`` the way out ends, down steps (else 0), m
     into_piece: np.ndarray  # (M,) bool: a way reaches the surface's end clear, but the piece lies below beyond it
+    landing: np.ndarray  # (M,3) where the agent walking off that end lands, one radius past it (NaN: no such way)
 
 
 def _walkable(caster: RayCaster, face: np.ndarray, s: _Settings) -> np.ndarray:
@@ -530,12 +534,13 @@ def _down_steps(
 def _fan(
     base: np.ndarray, normal: np.ndarray, tangent: np.ndarray, caster: RayCaster, s: _Settings, params: Params,
     reaches: tuple[float, ...],
-) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """The way out of each point of ``base`` (step 3), the surface's end looked for up to the first of ``reaches``
     (m) along each direction, and for a point with none, up to the next: (M,) found, (M,3) direction, (M,) distance
-    to the edge, (M,) how far below the point's ground the surface ends there (down steps, else 0), and (M,) bool:
+    to the edge, (M,) how far below the point's ground the surface ends there (down steps, else 0), (M,) bool:
     some direction of a look the point took reaches the surface's end clear but for the piece lying below beyond
-    it (a drop into the piece)."""
+    it (a drop into the piece), and (M,3) where the piece lies straight below one radius past that end, along the
+    direction nearest straight out of the first look that met one (NaN: none)."""
     outward = np.cross(tangent, normal)  # the walkable side is on the left of the tangent
     m, k = len(base), int(params.fan_count)
     half = math.radians(float(params.fan_half_angle_deg))
@@ -550,6 +555,7 @@ def _fan(
     found, chosen = np.zeros(m, dtype=bool), np.arange(m) * k
     edge_of, drop_of = np.zeros(m), np.zeros(m)
     into_piece = np.zeros(m, dtype=bool)
+    landing = np.full((m, 3), np.nan)
     heights = np.arange(s.climb + s.delta / 4.0, s.head, s.delta / 2.0)  # none when the agent climbs its height
     for look_edge, look_drop in looks:
         looking = np.repeat(~found, k)  # the directions of the points with no way out yet
@@ -581,7 +587,15 @@ def _fan(
             above = caster.first_hits(beyond, UP).distance
             into = np.zeros(m * k, dtype=bool)
             into[rows[np.isfinite(below)]] = True
-            into_piece |= into.reshape(m, k).any(axis=1)
+            into = into.reshape(m, k)
+            # where the agent walking off the end lands: the direction nearest straight out that drops
+            lands = np.full((m * k, 3), np.nan)
+            drops = np.isfinite(below)
+            lands[rows[drops]] = beyond[drops] - UP * below[drops, None]
+            nearest = np.argmin(np.where(into, np.abs(theta)[None, :], np.inf), axis=1)
+            first = into.any(axis=1) & ~into_piece
+            landing[first] = lands[np.flatnonzero(first) * k + nearest[first]]
+            into_piece |= into.any(axis=1)
             # Above, only what the agent could not stand under blocks the way (the head-room rule): eaves do not.
             ok[rows[np.isfinite(below) | (above < s.head)]] = False
         # The soonest way out; among equals, the one closest to straight out. A point with none keeps its first
@@ -593,7 +607,7 @@ def _fan(
         picked = np.arange(m)[now] * k + pick[now]
         chosen[now], edge_of[now], drop_of[now] = picked, edge[picked], drop[picked]
         found |= now
-    return found, dirs[chosen], edge_of, drop_of, into_piece
+    return found, dirs[chosen], edge_of, drop_of, into_piece, landing
 
 
 def _step_tops(
@@ -631,20 +645,20 @@ def _ways_out(
     # A sampled surface's boundary stands farther inside the floor than a navmesh's: a sample that finds no way out
     # within the navmesh route's reach looks again as far as the sampling allows.
     reaches = (s.search, s.farther) if s.farther > s.search else (s.search,)
-    found, direction, reach, drop, into_piece = _fan(base, normal, tangent, caster, s, params, reaches)
+    found, direction, reach, drop, into_piece, landing = _fan(base, normal, tangent, caster, s, params, reaches)
     stepped = np.zeros(len(base), dtype=bool)
     if params.step_up:
         rows = np.nonzero(~found)[0]
         near, top = _step_tops(base[rows], normal[rows], np.cross(tangent[rows], normal[rows]), caster, s, params)
         rows, top = rows[near], top[near]
         if len(rows):
-            up_found, up_direction, up_reach, up_drop, _ = _fan(top, normal[rows], tangent[rows], caster, s, params,
+            up_found, up_direction, up_reach, up_drop, _, _ = _fan(top, normal[rows], tangent[rows], caster, s, params,
                                                                 (s.search,))
             rows, top = rows[up_found], top[up_found]
             base[rows], found[rows], stepped[rows] = top, True, True
             direction[rows], reach[rows], drop[rows] = up_direction[up_found], up_reach[up_found], up_drop[up_found]
     edge = base + direction * reach[:, None]
-    return _Ways(base, normal, tangent, found, direction, edge, stepped, drop, into_piece)
+    return _Ways(base, normal, tangent, found, direction, edge, stepped, drop, into_piece, landing)
 
 
 # --------------------------------------------------------------------------
@@ -943,6 +957,32 @@ def _onto_floor_end(first: np.ndarray, last: np.ndarray, out: np.ndarray, caster
     return first + moved, last + moved
 
 
+def _drop_links(samples: LoopSamples, ways: _Ways, s: _Settings) -> np.ndarray:
+    """(D, 2) polygon pairs (from, to): a boundary sample's polygon and the polygon of the floor the agent lands on
+    walking off the ledge before it, more than the climb and less than a storey (the agent's height) down.
+
+    The agent lands one radius past the ledge (:func:`_fan`'s ``landing``); the floor there is the surface's whose
+    boundary sample lies nearest in plan within the edge search's reach and within the climb of the landing in
+    height (Recast erodes the lower floor a radius from the riser; a sampled surface stands farther in). O(M log M)
+    for M samples.
+    """
+    base = ways.base[:, 1]
+    depth = base - ways.landing[:, 1]
+    dropping = np.flatnonzero(np.isfinite(depth) & (depth > s.climb) & (depth < s.height - _SAME_HEIGHT))
+    if not len(dropping):
+        return np.zeros((0, 2), dtype=np.int64)
+    reach = max(s.search, s.farther)
+    tree = cKDTree(ways.base[:, [0, 2]])
+    pairs = []
+    for i, near in zip(dropping, tree.query_ball_point(ways.landing[dropping][:, [0, 2]], reach)):
+        near = np.asarray(near, dtype=np.int64)
+        near = near[np.abs(base[near] - ways.landing[i, 1]) <= s.climb]
+        if len(near):
+            plan = np.linalg.norm(ways.base[near][:, [0, 2]] - ways.landing[i, [0, 2]], axis=1)
+            pairs.append((samples.polygon[i], samples.polygon[near[np.argmin(plan)]]))
+    return np.asarray(pairs, dtype=np.int64).reshape(-1, 2)
+
+
 def _walked_down_to(samples: np.ndarray, ways: _Ways) -> float:
     """The height of the lowest floor the ways out of ``samples`` walked down steps to, m; NaN when none did."""
     down = samples[ways.drop[samples] > 0.0]
@@ -1118,7 +1158,7 @@ class Detection:
 
 def main_floor(
     navmesh: NavMesh | SampledSurface, agent: AgentConfig, loops: list[BoundaryLoop] | None = None,
-    looks_out: np.ndarray | None = None, closed: np.ndarray | None = None,
+    looks_out: np.ndarray | None = None, closed: np.ndarray | None = None, drops: np.ndarray | None = None,
 ) -> np.ndarray:
     """(P,) bool: the polygons of the navmesh's main floor: its floor of largest area that is no roof, and those at its level.
 
@@ -1142,7 +1182,13 @@ def main_floor(
     a floor a storey (the agent's height) or more above or below the main one that leaves the piece, with at
     least :data:`_WALKWAY_CLOSED` of its boundary samples closed (walls or railings along its sides), holds
     openings too: a railed deck crossing over a corridor, and the corridor under it; not a wall's top whose
-    sides drop into the piece.
+    sides drop into the piece. ``drops``: (D, 2) polygon pairs (from, to) of :func:`_drop_links`, a ledge the agent
+    walks off and the floor it lands on, more than the climb and less than a storey down; given, the floors the
+    kept ones reach so, down one ledge after another, that leave the piece, are no roof and hold faces (not a sampled
+    surface's single file alone) hold openings too, and a floor of at least :data:`_RIVAL_SHARE` of the largest's
+    area from which the agent reaches more area so is the main floor: a corridor whose floor drops 0.6 m half-way
+    holds both its ends, whichever half is measured larger; a terrace over the climb beyond a room's door, dropping
+    into the room, none (docs/entry_exit.md, "A nineteenth round of piece kinds").
     """
     neighbours = np.asarray(navmesh.neighbours)
     if len(neighbours) == 0:
@@ -1166,6 +1212,20 @@ def main_floor(
     best = np.lexsort((-np.arange(len(area)), area, ~roof, leaves))[-1]
     if looks_out is None or not leaves[best]:
         return label == int(best)
+    floors = ~roof & leaves
+    links = np.zeros((0, 2), dtype=np.int64) if drops is None else label[np.asarray(drops, dtype=np.int64)]
+    # A floor walked down to holds the agent's footprint: faces, not a single file of samples alone (a sampled
+    # surface's two-corner polygons), as the canal's channel 1.0 m wide, where Recast keeps no floor, is on the
+    # sampling route (docs/entry_exit.md, "A nineteenth round of piece kinds").
+    faced = np.bincount(label, weights=np.asarray(navmesh.polygons)[:, 2] >= 0, minlength=len(area)) > 0
+    links = links[faced[links[:, 1]]]
+    reach = _walked_down(links, floors)
+    if len(links):
+        # Floors of comparable area rank by the area the agent reaches from them, down their ledges: the upper half
+        # of a corridor whose floor drops half-way is its main floor, whichever half the surface measures larger.
+        reached = (reach.astype(np.float64) @ area) * (floors & (area >= _RIVAL_SHARE * area[best]))
+        if reached.max() > reached[best]:
+            best = int(np.argmax(reached))
     # Floors at its level that leave the piece too hold openings with it: a barrier higher than the climb, or a pass
     # Recast cuts, splits one floor in two, each part with its own ends (a corridor's far end was missed).
     height = np.asarray(navmesh.vertices, dtype=np.float64)[np.asarray(navmesh.polygons)[:, 0], 1]
@@ -1178,8 +1238,30 @@ def main_floor(
         storey = np.abs(lowest - lowest[best]) >= float(agent.height) - _SAME_HEIGHT
         kept |= leaves & storey & (counts[:, 0] >= _WALKWAY_CLOSED * counts[:, 1])
     kept[best] = True
+    kept |= reach[kept].any(axis=0)  # and the floors the agent walks down to from those, off their ledges
     return kept[label]
 
+
+def _walked_down(links: np.ndarray, floors: np.ndarray) -> np.ndarray:
+    """(C, C) bool: row c, the ``floors`` (C,) bool the agent reaches from floor c walking down ledges (``links`` (D, 2)
+    floor pairs (from, to), :func:`_drop_links`), c itself included, through floors only. O(C^2 D) at most."""
+    reach = np.eye(len(floors), dtype=bool)
+    links = np.unique(links[floors[links[:, 0]] & floors[links[:, 1]]], axis=0)
+    while True:
+        step = reach.copy()
+        np.logical_or.at(step.T, links[:, 1], reach.T[links[:, 0]])  # unbuffered: several links reach one floor
+        if (step == reach).all():
+            return reach
+        reach = step
+
+
+_RIVAL_SHARE = 0.5
+"""Share of the largest floor's area from which a floor ranks with it by the area the agent reaches from it, walking
+down ledges (:func:`main_floor`). Measured on the two halves of a corridor whose floor drops 0.45-1.9 m half-way, at
+0, 22 and 45 degrees on both routes (the halves of one designed area: the smaller over the larger 0.97-1.00 on the
+navmesh, 0.56-0.94 on the sampling route), and on the twelfth round's terrace 0.6 m up beyond a room's doorway, whose
+floor drops into the room and which must not hold an opening (the terrace over the room: 0.03-0.08):
+docs/entry_exit.md, "A nineteenth round of piece kinds"."""
 
 _WALKWAY_CLOSED = 0.6
 """Share of a floor's boundary samples closed by what stands on it (no way out, none dropping into the piece) from
@@ -1465,7 +1547,7 @@ def detect_openings(
         # each polygon's boundary samples closed by what stands on the floor, and all of them
         closed = np.zeros((len(surface.areas), 2))
         np.add.at(closed, samples.polygon, np.stack([~ways.found & ~ways.into_piece, np.ones(len(ways.found), bool)], 1))
-        main = main_floor(surface, agent, loops, looks_out, closed)
+        main = main_floor(surface, agent, loops, looks_out, closed, _drop_links(samples, ways, s))
         segments = [g for g in segments if main[samples.polygon[g]].any()]
     kept = _split_at_piers(_match_edges(segments, ways, caster, s, params), ways, caster, s)
     if not kept:
