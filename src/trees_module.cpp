@@ -129,8 +129,9 @@ class Search {
             settle(v);
         }
     }
-    // always inlined, as the kernels' settle lambdas are: at -Os (nanobind's build flags) a call per queued node
-    // cost 2 % more instructions in both kernels, and an outlined settle up to 0.9 % (callgrind, 20k dungeon)
+    // always inlined, as the kernels' settle lambdas are: at -Os (nanobind's default flags, the module's then) a
+    // call per queued node cost 2 % more instructions in both kernels, and an outlined settle up to 0.9 %
+    // (callgrind, 20k dungeon)
     __attribute__((always_inline)) void queue(double d, int32_t u) {
         queue_.push_back({d, u});
         std::push_heap(queue_.begin(), queue_.end(), ServedAfter());
