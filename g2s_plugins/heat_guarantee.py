@@ -234,8 +234,8 @@ def begin_second_sample(graph: nx.Graph, sources: int, ties: traffic.Ties, scali
                         sampling: traffic.Sampling) -> None:
     """Begin :func:`second_sample`'s walking flow on a thread of its own
     (:func:`~g2s_plugins.traffic.start_walking_flow`) when the heat map of ``graph`` is a sample (more nodes with
-    an area than :data:`~g2s_plugins.traffic.EXACT_NODES`), as the guarantee asks at its first structure: it runs
-    on the core the first simplification leaves idle (its Python, the structure built back, the first measure).
+    an area than :data:`~g2s_plugins.traffic.EXACT_NODES`), as the first simplification is about to start: it runs
+    on the core that simplification leaves idle (its Python, the structure built back, the first measure).
     Its CPU is spent for nothing only when no round meets the target (:func:`restored`'s warning at the floor)."""
     arrays = traffic.surface_arrays(graph)
     if not traffic.is_exact(arrays, sources, traffic.EXACT_NODES):
