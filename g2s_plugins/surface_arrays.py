@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import weakref
 from collections.abc import Hashable, Iterable
+from concurrent.futures import Future
 from dataclasses import dataclass, field
 
 import networkx as nx
@@ -32,6 +33,9 @@ class SurfaceArrays:
         derived: results computed from these arrays, kept with them (so they
             are dropped when the graph changes size), e.g. the walking flows
             of :func:`g2s_plugins.traffic.walking_flow`.
+        begun: results of ``derived`` being computed on a thread of their own,
+            under the same keys, until the first caller that wants one takes
+            it (:func:`g2s_plugins.traffic.start_walking_flow`).
     """
 
     nodes: list[Hashable]
@@ -39,6 +43,7 @@ class SurfaceArrays:
     adjacency: sp.csr_array
     area: np.ndarray
     derived: dict[Hashable, np.ndarray] = field(default_factory=dict, compare=False, repr=False)
+    begun: dict[Hashable, Future[np.ndarray]] = field(default_factory=dict, compare=False, repr=False)
 
     @property
     def n(self) -> int:

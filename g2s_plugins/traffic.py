@@ -120,7 +120,9 @@ from __future__ import annotations
 
 import math
 import os
-from collections.abc import Hashable, Iterable, Iterator
+import threading
+from collections.abc import Callable, Hashable, Iterable, Iterator
+from concurrent.futures import Future
 from typing import Literal
 
 import networkx as nx
@@ -135,8 +137,8 @@ __all__ = [
     "EXACT_NODES", "TIE_TOLERANCE", "WALKING_SAMPLING", "WALKING_SCALING", "WALKING_SOURCES", "WALKING_TIES", "Sampling",
     "Scaling", "SurfaceArrays", "Ties", "arrays_walking_flow", "distance_to", "flow_error_bound", "gather", "is_exact",
     "linear_through", "od_flow", "origin_weight", "percentile", "plan_order", "represented_area", "sampling_order",
-    "shortest_path_flow", "source_blocks", "split_path_flow", "surface_arrays", "tie_tolerance", "walking_flow",
-    "walking_sources",
+    "shortest_path_flow", "source_blocks", "split_path_flow", "start_walking_flow", "surface_arrays", "tie_tolerance",
+    "walking_flow", "walking_sources",
 ]
 
 Ties = Literal["first", "split"]
@@ -640,16 +642,58 @@ def arrays_walking_flow(
     """:func:`walking_flow` of the graph ``arrays`` were made from, for a caller that holds them already (each
     :func:`surface_arrays` look-up counts the graph's edges: 20-30 ms on a 100k-polygon level); ``order``: that
     graph's :func:`sampling_order` (a ``spread`` sample's :func:`plan_order`, the only order the cache knows)."""
+    key, compute = _walking_flow_work(arrays, max_sources, seed, exact_up_to, ties, scaling, order)
+    if key not in arrays.derived:
+        begun = arrays.begun.pop(key, None)
+        arrays.derived[key] = begun.result() if begun is not None else compute()
+    return arrays.derived[key]
+
+
+def start_walking_flow(
+    arrays: SurfaceArrays, max_sources: int | None = None, seed: int = 0, exact_up_to: int = 0, ties: Ties = "first",
+    scaling: Scaling = "none", order: np.ndarray | None = None,
+) -> None:
+    """Begin :func:`arrays_walking_flow` of these arguments on a thread of its own, for a caller that will ask for it
+    later and has work for this thread meanwhile: that call waits for it and gets the array it would have computed
+    (the flow does not depend on the thread or the timing), and an error it raised. Nothing when the flow is
+    computed or begun already.
+
+    Why: the flow's trees run on both cores (:func:`shortest_path_flow`, the GIL released), and the Python a stage
+    runs before it needs the flow keeps one core busy and the other idle; begun ahead, the trees take that idle
+    core. The thread is a daemon: a run stopped meanwhile does not wait for it.
+    """
+    key, compute = _walking_flow_work(arrays, max_sources, seed, exact_up_to, ties, scaling, order)
+    if key in arrays.derived or key in arrays.begun:
+        return
+    future: Future[np.ndarray] = Future()
+
+    def run() -> None:
+        try:
+            future.set_result(compute())
+        except BaseException as exc:  # handed to the caller that takes the flow
+            future.set_exception(exc)
+
+    arrays.begun[key] = future
+    threading.Thread(target=run, name="walking flow", daemon=True).start()
+
+
+def _walking_flow_work(
+    arrays: SurfaceArrays, max_sources: int | None, seed: int, exact_up_to: int, ties: Ties, scaling: Scaling,
+    order: np.ndarray | None,
+) -> tuple[tuple[Hashable, ...], Callable[[], np.ndarray]]:
+    """The cache key of :func:`arrays_walking_flow` of these arguments, and the computation of its read-only array."""
     exact = is_exact(arrays, max_sources, exact_up_to)
     # one exact flow for every caller that gets it
     sampling = "independent" if order is None else "spread"
     key = ("walking_flow", ties) if exact else ("walking_flow", ties, max_sources, seed, scaling, sampling)
-    if key not in arrays.derived:
+
+    def compute() -> np.ndarray:
         flow, _ = od_flow(arrays.adjacency, origin_weight(arrays), None if exact else max_sources, seed, ties, scaling,
                           order)
         flow.flags.writeable = False
-        arrays.derived[key] = flow
-    return arrays.derived[key]
+        return flow
+
+    return key, compute
 
 
 def is_exact(arrays: SurfaceArrays, max_sources: int | None, exact_up_to: int = 0) -> bool:

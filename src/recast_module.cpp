@@ -875,7 +875,8 @@ std::vector<int32_t> resample_detail_off_floor(LogContext& ctx, const rcPolyMesh
 // walkableClimb. A neighbouring gap counts when the agent fits through it: the overlap of the span's free space
 // (its top to the next span's bottom) and the gap is more than walkableHeight, as in Recast. Only floors below the
 // span matter, and neighbours are read by shape only (their areas are not read), so the order of the spans does
-// not change the result. O(spans x the spans of the four neighbouring columns).
+// not change the result. O(spans x the spans of the four neighbouring columns up to the first floor within the
+// climb of the span's own).
 void drop_ledge_spans(int walkable_height, int walkable_climb, rcHeightfield& hf) {
     constexpr int open_top = std::numeric_limits<int>::max();  // free space above a column's last span
     const int w = hf.width, h = hf.height;
@@ -889,7 +890,9 @@ void drop_ledge_spans(int walkable_height, int walkable_climb, rcHeightfield& hf
             const int gap_ceiling = above ? static_cast<int>(above->smin) : open_top;
             const bool fits = std::min(ceiling, gap_ceiling) - std::max(floor, gap_floor) > walkable_height;
             if (fits && (!below || gap_floor < floor - walkable_climb)) return true;
-            if (!above) return false;
+            // a column's spans rise one above the other, so once a gap's floor is within the climb of ours every
+            // gap above it is too: none of them is a drop, and the spans above (a ceiling, a storey) are not read
+            if (!above || static_cast<int>(above->smax) >= floor - walkable_climb) return false;
             below = above;
         }
     };

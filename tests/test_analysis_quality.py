@@ -370,6 +370,37 @@ def test_the_exact_flow_is_computed_once_whatever_seed_its_callers_give(monkeypa
     assert traffic.walking_flow(graph, max_sources=2, seed=1) is not sampled and len(calls) == 3
 
 
+def test_a_walking_flow_begun_ahead_is_the_one_the_caller_would_have_computed(monkeypatch):
+    original, calls = traffic.od_flow, []
+    monkeypatch.setattr(traffic, "od_flow", lambda *args, **kwargs: calls.append(1) or original(*args, **kwargs))
+    arrays = traffic.surface_arrays(spine_and_side_room())
+    traffic.start_walking_flow(arrays, max_sources=2, seed=1)  # 7 nodes of weight > 2 sources: a sample
+    traffic.start_walking_flow(arrays, max_sources=2, seed=1)  # begun already: nothing
+    begun = traffic.arrays_walking_flow(arrays, max_sources=2, seed=1)
+    assert len(calls) == 1 and not arrays.begun and not begun.flags.writeable
+    assert traffic.arrays_walking_flow(arrays, max_sources=2, seed=1) is begun  # kept as any computed flow
+    traffic.start_walking_flow(arrays, max_sources=2, seed=1)  # computed already: nothing
+    assert len(calls) == 1 and not arrays.begun
+    here = traffic.arrays_walking_flow(traffic.surface_arrays(spine_and_side_room()), max_sources=2, seed=1)
+    assert begun.tobytes() == here.tobytes()
+    # an error on the flow's thread reaches the caller that takes the flow
+    monkeypatch.setattr(traffic, "od_flow", lambda *args, **kwargs: 1 / 0)
+    traffic.start_walking_flow(arrays, max_sources=2, seed=2)
+    with pytest.raises(ZeroDivisionError):
+        traffic.arrays_walking_flow(arrays, max_sources=2, seed=2)
+
+
+def test_the_coverage_selector_begins_its_walking_flow_before_its_leaves(monkeypatch):
+    begun = []
+    monkeypatch.setattr(traffic, "start_walking_flow", lambda arrays, **kwargs: begun.append(kwargs))
+    graph = spine_and_side_room()
+    context = RunContext(mesh=None, agent=None, centre=np.zeros(3), graph=graph)
+    coverage.g2s_select_terminals(graph, coverage.Params(radius=3.0), context)
+    assert not begun  # a cover that reads no traffic walks no flow
+    coverage.g2s_select_terminals(graph, coverage.Params(radius=3.0, traffic_weight=0.1, traffic_sources=2), context)
+    assert begun == [{"max_sources": 2, "ties": traffic.WALKING_TIES, "scaling": traffic.WALKING_SCALING}]
+
+
 def test_coverage_traffic_parameters_are_validated(registry):
     for params, key in (({"traffic_weight": -0.1}, "terminals.params.traffic_weight"),
                         ({"traffic_weight": 0.1, "traffic_radius": 0}, "terminals.params.traffic_radius")):

@@ -285,6 +285,27 @@ def test_a_sampled_heat_map_that_meets_its_target_is_confirmed_by_another_sample
     assert heat_guarantee.restored(graph, forest, forest, 0.6, context, sources=1) is None and not context.warnings
 
 
+def test_the_confirming_sample_is_begun_with_the_first_structure_only_above_the_exact_size(monkeypatch):
+    graph = corridor()
+    forest = root_forest(graph, {i: -i for i in graph}, centre=np.zeros(3))
+    context = RunContext(mesh=None, agent=AgentConfig(), centre=np.zeros(3), graph=graph)
+    begun = []
+    monkeypatch.setattr(traffic, "start_walking_flow", lambda arrays, *args, **kwargs: begun.append((args, kwargs)))
+    params = CollapseParams(min_heat_rho=0.7, heat_sources=1, heat_ties="split", heat_scaling="linear")
+    heat_guarantee.guaranteed(lambda: None, params, context, forest, None)
+    assert not begun  # nine nodes with an area, within the exact size: the exact flow decides, no sample to confirm
+    monkeypatch.setattr(traffic, "EXACT_NODES", 1)
+    heat_guarantee.guaranteed(lambda: None, params, context, None, None)
+    assert not begun  # asked outside the pipeline, for one predicate: no rounds follow
+    heat_guarantee.guaranteed(lambda: None, params.model_copy(update={"min_heat_rho": None}), context, forest, None)
+    assert not begun  # no guarantee, no confirmation
+    heat_guarantee.guaranteed(lambda: None, params, context, forest, None)
+    assert begun == [((1,), {"seed": heat_guarantee.CONFIRMING_SEED, "ties": "split", "scaling": "linear"})]
+    # a spread heat map's second sample is the independent one of seed 0
+    heat_guarantee.guaranteed(lambda: None, params.model_copy(update={"heat_sampling": "spread"}), context, forest, None)
+    assert begun[1] == ((1,), {"seed": 0, "ties": "split", "scaling": "linear"})
+
+
 def test_the_benchmark_reference_is_exact_up_to_the_guarantee_size():
     graph = nx.convert_node_labels_to_integers(nx.grid_2d_graph(30, 20), ordering="sorted")  # 600 > 512 sources
     for i in graph:

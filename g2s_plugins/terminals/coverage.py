@@ -242,6 +242,11 @@ def cover(graph: nx.Graph, params: Params, context: RunContext) -> Cover:
     radius = params.radius if params.radius is not None else default_radius(context)
     min_area = params.min_area if params.min_area is not None else math.pi * (radius / 2) * (radius / 2)  # ** overflows
     arrays = traffic.surface_arrays(graph)
+    drops_dents = params.dent_depth > 0 and params.dent_rho_budget > 0
+    reads_traffic = params.traffic_weight > 0 or params.quiet_step > 0 or drops_dents
+    if reads_traffic:  # its trees on a thread of their own while the leaves and dead ends are found here
+        traffic.start_walking_flow(arrays, max_sources=params.traffic_sources, ties=params.traffic_ties,
+                                   scaling=params.traffic_scaling)
     adjacency = arrays.adjacency
     degree = np.diff(adjacency.indptr)
     count, labels = csgraph.connected_components(adjacency, directed=False)
@@ -266,8 +271,7 @@ def cover(graph: nx.Graph, params: Params, context: RunContext) -> Cover:
         )
     seeds = np.concatenate([leaves, _seeds(adjacency, labels, has_leaf, small)])
     eligible = ~small[labels]
-    drops_dents = params.dent_depth > 0 and params.dent_rho_budget > 0
-    if params.traffic_weight > 0 or params.quiet_step > 0 or drops_dents:
+    if reads_traffic:
         rank = walking_percentile(arrays, params.traffic_sources, params.traffic_ties, params.traffic_scaling)
     if params.traffic_weight > 0:
         traffic_radius = params.traffic_radius if params.traffic_radius is not None else TRAFFIC_RADIUS_SHARE * radius
