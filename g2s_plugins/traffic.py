@@ -660,7 +660,9 @@ def start_walking_flow(
 
     Why: the flow's trees run on both cores (:func:`shortest_path_flow`, the GIL released), and the Python a stage
     runs before it needs the flow keeps one core busy and the other idle; begun ahead, the trees take that idle
-    core. The thread is a daemon: a run stopped meanwhile does not wait for it.
+    core. The thread is a daemon: a run stopped meanwhile does not wait for it. A flow begun and never taken (a heat
+    guarantee none of whose rounds meets its target) runs to its end all the same, sharing the cores with
+    whatever the process does next for that while (up to one flow's time: about 3 s of CPU at 100k polygons).
     """
     key, compute = _walking_flow_work(arrays, max_sources, seed, exact_up_to, ties, scaling, order)
     if key in arrays.derived or key in arrays.begun:
