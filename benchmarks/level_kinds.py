@@ -8231,7 +8231,7 @@ def pitched_roofs(seed: int) -> trimesh.Trimesh:
                 s.box(px - 0.1, px + 0.1, -0.3, eave - 0.3, zb0 + 0.1 if toward < 0 else zb1 - 0.3,
                       zb0 + 0.3 if toward < 0 else zb1 - 0.1)
             taken.append((bx - run - 1.5, bx + bw + 1.0, zb0 - 2.5, zb1 + 2.5))
-            # garden walls behind the party walls, 6-8 m out into the yards, with a gate at the yard's end
+            # garden walls behind the party walls, 4-5.5 m out into the yards (6-8 m closed the back lane)
             for x0 in cuts[1:-1]:
                 reach = rng.uniform(4.0, 5.5)
                 s.wall((x0, rear), (x0, rear + out * reach), -0.5, 1.8, thickness=0.25)
