@@ -198,7 +198,7 @@ def reference_flow(result: RunResult, max_sources: int = REFERENCE_SOURCES, seed
                                 scaling=REFERENCE_SCALING)
 
 
-def play_points(result: RunResult) -> list | None:
+def play_points(result: RunResult) -> list[list[float]] | None:
     """The play points the run's ``coverage`` terminals name (``play_points``), None when it names none."""
     terminals = result.config.get("terminals") or {}
     if terminals.get("plugin") != coverage.NAME:

@@ -148,9 +148,10 @@ Measured in docs/analysis_quality.md ("Dents between posts and corners").
 Play space (``play_points``). A level's file often holds more walkable
 ground than its play space: a backdrop of terrain round a town square, roofs,
 ground outside the walls. Measured on the ``backdrop`` level kind
-(benchmarks/level_kinds.py, seeds 0-2, ``map_analysis``), 649 of 710
-structure nodes and 160 of 169 terminals stood on background no one reaches
-from the square, and the background was the largest area. With
+(benchmarks/level_kinds.py, seed 0, ``map_analysis``), 649 of 710
+structure nodes and 918 of 1,039 terminals (waypoints counted) stood on
+background no one reaches from the square; with the square's centre as the
+play point, 64 and 121, none there (docs/plugins.md, ``coverage``). With
 ``play_points`` (points [x, y, z] in the mesh frame, metres) only the
 connected areas of the graph that hold a point get terminals; the others get
 none (their leaves are not seeded), and one warning says how many and how
@@ -183,6 +184,7 @@ from typing import Annotated
 
 import networkx as nx
 import numpy as np
+import numpy.typing as npt
 import rustworkx as rx
 import scipy.sparse as sp
 from pydantic import Field, Strict
@@ -322,7 +324,7 @@ def cover(graph: nx.Graph, params: Params, context: RunContext) -> Cover:
     return Cover(arrays, np.sort(leaves), np.unique(seeds), rows)
 
 
-def play_space(graph: nx.Graph, navmesh: NavMesh | None, points, reach: float) -> np.ndarray:
+def play_space(graph: nx.Graph, navmesh: NavMesh | None, points: npt.ArrayLike, reach: float) -> np.ndarray:
     """(n,) bool per row of :func:`g2s_plugins.traffic.surface_arrays` of ``graph``: the nodes of the connected
     areas that hold one of the (p, 3) ``points`` (mesh frame, metres).
 
