@@ -88,6 +88,16 @@ The measures (all along the initial walkable graph, distances in metres):
     to (no sample that reaches the structure on or near it; on the navmesh
     route: the nodes that reach no structure, which ``rho`` leaves out too).
 
+Play space. A run whose ``coverage`` terminals name ``play_points`` (the
+play space of a level whose file also holds background ground) is measured
+over that space only (:func:`in_play_space`): every measure above is taken
+on the subgraph of the connected areas holding a play point, the rule of
+:func:`g2s_plugins.terminals.coverage.play_space` that chose the terminals,
+so the shares' totals (area, reference flow, nodes) are the play space's and
+the reference flow is walked, and its sources drawn, there alone; off the
+navmesh route the reference navmesh graph is cut by the same rule. Without
+``play_points`` nothing changes.
+
 Cost: two multi-source Dijkstra searches plus the reference flow (see
 :func:`g2s_plugins.traffic.od_flow`). Off the navmesh route the navmesh
 measures add a navmesh build of the mesh (Recast: the ``navmesh`` builder's
@@ -98,6 +108,7 @@ built leaves them out.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from collections.abc import Hashable, Iterable, Mapping
 from dataclasses import dataclass
@@ -110,6 +121,7 @@ from scipy.spatial import cKDTree
 from g2s_core.model import RunResult
 from g2s_plugins import centrality, traffic
 from g2s_plugins.graph_builders import navmesh as navmesh_builder
+from g2s_plugins.terminals import coverage
 from g2s_plugins.recast import NavMesh, SettingsError, build_navmesh
 
 RADII = (3.0, 6.0, 10.0)
@@ -184,6 +196,26 @@ def reference_flow(result: RunResult, max_sources: int = REFERENCE_SOURCES, seed
     split (:data:`REFERENCE_TIES`)."""
     return traffic.walking_flow(result.graph, max_sources, seed, exact_up_to=traffic.EXACT_NODES, ties=REFERENCE_TIES,
                                 scaling=REFERENCE_SCALING)
+
+
+def play_points(result: RunResult) -> list[list[float]] | None:
+    """The play points the run's ``coverage`` terminals name (``play_points``), None when it names none."""
+    terminals = result.config.get("terminals") or {}
+    if terminals.get("plugin") != coverage.NAME:
+        return None
+    return (terminals.get("params") or {}).get("play_points")
+
+
+def in_play_space(result: RunResult) -> RunResult:
+    """The run with its initial graph cut to its play space (:func:`play_points`,
+    :func:`g2s_plugins.terminals.coverage.play_space`); the run itself when it names none. The structure's nodes
+    all lie there: the cover gives the other areas no terminal."""
+    points = play_points(result)
+    if points is None:
+        return result
+    keep = coverage.play_space(result.graph, result.context.navmesh, points, result.context.agent.height)
+    nodes = traffic.surface_arrays(result.graph).nodes
+    return dataclasses.replace(result, graph=result.graph.subgraph([nodes[i] for i in np.flatnonzero(keep)]).copy())
 
 
 def nearest_structure_rows(result: RunResult) -> np.ndarray:
@@ -281,8 +313,14 @@ def navmesh_surface(result: RunResult, reference: np.ndarray, max_sources: int =
     except (SettingsError, RuntimeError):
         return None
     graph = navmesh_builder.navmesh_graph(navmesh, context.agent, params.max_edge_gap)
+    points = play_points(result)
+    if points is not None:  # the level's walking flow in the run's play space, by the rule that chose its terminals
+        keep = coverage.play_space(graph, navmesh, points, context.agent.height)
+        graph = graph.subgraph([node for node, kept in zip(traffic.surface_arrays(graph).nodes, keep) if kept]).copy()
     navmesh_arrays = traffic.surface_arrays(graph)
-    polygon_rows = navmesh_arrays.rows(range(navmesh.polygon_count))
+    polygon_rows = np.full(navmesh.polygon_count, -1, dtype=np.int64)
+    kept_polygons = [polygon for polygon in range(navmesh.polygon_count) if polygon in graph]
+    polygon_rows[kept_polygons] = navmesh_arrays.rows(kept_polygons)
     polygons = polygons_under(navmesh, _positions(result.graph))
     owner = np.where(polygons >= 0, polygon_rows[np.maximum(polygons, 0)], -1)
     spacing = result.graph.graph.get("sampling_stats", {}).get("spacing", 2.0 * float(context.agent.radius))
@@ -395,13 +433,15 @@ def evaluate(
     max_sources: int = REFERENCE_SOURCES,
     seed: int = 0,
 ) -> Quality:
-    """The measures of a run that got to the analysis (see the module docs).
+    """The measures of a run that got to the analysis (see the module docs), over its play space when it names one
+    (:func:`in_play_space`).
 
     Args:
-        reference: :func:`reference_flow` of the same graph, when already known
+        reference: :func:`reference_flow` of the same graph (cut to the play space), when already known
             (it depends only on the graph, not on the preset).
         max_sources, seed: the reference flows' source sample (:func:`reference_flow`).
     """
+    result = in_play_space(result)
     arrays = traffic.surface_arrays(result.graph)
     if reference is None:
         reference = reference_flow(result, max_sources, seed)

@@ -8,7 +8,8 @@ undefined), ``rho_area`` (the same, each node weighted by its area),
 ``rho_area_betweenness``, ``rho_ceiling``, ``structure_share``,
 and ``rho_navmesh``, ``rho_navmesh_ceiling`` and ``navmesh_area_left_out``
 (the heat map against the reference flow on the level's navmesh graph; the
-run's own graph on the navmesh route).
+run's own graph on the navmesh route). A run whose coverage terminals name
+``play_points`` is measured over its play space only.
 Cost: the reference flow (exact up to
 :data:`g2s_plugins.traffic.EXACT_NODES` nodes, one Dijkstra search of the
 initial graph per node; above, ``reference_sources`` searches) and two
@@ -48,8 +49,8 @@ class Params(PluginParams):
 
 @hookimpl
 def g2s_evaluate(result: RunResult, params: Params, context: RunContext) -> dict[str, float]:
-    """The measures of a run that got to simplification (the analyzers' first key is the heat map)."""
-    reference = evaluation.reference_flow(result, params.reference_sources, params.seed)
+    """The measures of a run that got to simplification (the analyzers' first key is the heat map), over its play
+    space when it names one (:func:`g2s_plugins.evaluation.in_play_space`)."""
     radii = tuple(sorted(set(params.radii)))
-    return evaluation.evaluate(result, reference, radii, params.off_distance, params.reference_sources,
+    return evaluation.evaluate(result, None, radii, params.off_distance, params.reference_sources,
                                params.seed).measures()
