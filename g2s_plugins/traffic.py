@@ -660,9 +660,11 @@ def start_walking_flow(
 
     Why: the flow's trees run on both cores (:func:`shortest_path_flow`, the GIL released), and the Python a stage
     runs before it needs the flow keeps one core busy and the other idle; begun ahead, the trees take that idle
-    core. The thread is a daemon: a run stopped meanwhile does not wait for it. A flow begun and never taken (a heat
-    guarantee none of whose rounds meets its target) runs to its end all the same, sharing the cores with
-    whatever the process does next for that while (up to one flow's time: about 3 s of CPU at 100k polygons).
+    core. A flow begun and never taken (a heat guarantee none of whose rounds meets its target, a run stopped by an
+    error or Ctrl-C) runs to its end all the same, sharing the cores with whatever the process does next (up to one
+    flow's time: about 3 s of CPU at 100k polygons). The thread is not a daemon: the interpreter waits for it before
+    it exits, as it would have waited for the flow in the caller's thread; a daemon thread still in the extension
+    when the interpreter finalises is unwound there, which aborts the process (exit -6 in place of 2 or 130).
     """
     key, compute = _walking_flow_work(arrays, max_sources, seed, exact_up_to, ties, scaling, order)
     if key in arrays.derived or key in arrays.begun:
@@ -676,7 +678,7 @@ def start_walking_flow(
             future.set_exception(exc)
 
     arrays.begun[key] = future
-    threading.Thread(target=run, name="walking flow", daemon=True).start()
+    threading.Thread(target=run, name="walking flow").start()
 
 
 def _walking_flow_work(
