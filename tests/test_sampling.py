@@ -420,7 +420,7 @@ _ROUTE_MODULES = {
 
 @pytest.fixture(scope="module")
 def registry() -> Registry:
-    """The installed plugins; those the lead has not registered yet are added from their modules."""
+    """The installed plugins; those not registered as entry points are added from their modules."""
     reg = Registry.from_entry_points()
     for (stage, name), module in _ROUTE_MODULES.items():
         try:
