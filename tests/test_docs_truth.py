@@ -71,12 +71,22 @@ def value_problems(option: str, value: str, config: str | None) -> list[str]:
     return []
 
 
+def without_optional_marks(word: str) -> str:
+    """``word`` without the brackets that mark an optional part of a usage line (``[--workers`` ``N]``); the balanced
+    brackets of a YAML value (``play_points=[[1,0,2]]``) stay."""
+    while word.startswith("[") and word.count("[") > word.count("]"):
+        word = word[1:]
+    while word.endswith("]") and word.count("]") > word.count("["):
+        word = word[:-1]
+    return word
+
+
 def command_problems(command: str) -> list[str]:
     """What the g2s parser, the presets and the installed plugins do not take in ``command``."""
     from g2s_core.config import presets
 
     parser, commands = subcommands()
-    words = [word.strip("[]") for word in shlex.split(command)[1:]]
+    words = [without_optional_marks(word) for word in shlex.split(command)[1:]]
     while words and words[0].startswith("-"):  # g2s's own options, before the command
         if (option := words.pop(0)) not in parser._option_string_actions:
             return [f"g2s has no option {option}"]
@@ -132,6 +142,7 @@ def test_the_check_finds_what_g2s_refuses():
     assert command_problems("g2s batch map_analysis levels/ -o runs --executor dusk --evaluate traffic") != []
     assert command_problems("g2s demo --format json,gbl") != []
     assert command_problems("g2s --verbos run map_analysis level.obj -o out") == ["g2s has no option --verbos"]
+    assert command_problems("g2s run map_analysis l.obj -o out --set 'terminals.params.play_points=[[1,0,2]]'") == []
     assert command_problems("g2s COMMAND --help") == command_problems("g2s batch CONFIG -o OUTDIR [--workers N]") == []
 
 
