@@ -213,9 +213,16 @@ def in_play_space(result: RunResult) -> RunResult:
     points = play_points(result)
     if points is None:
         return result
-    keep = coverage.play_space(result.graph, result.context.navmesh, points, result.context.agent.height)
-    nodes = traffic.surface_arrays(result.graph).nodes
-    return dataclasses.replace(result, graph=result.graph.subgraph([nodes[i] for i in np.flatnonzero(keep)]).copy())
+    return dataclasses.replace(result, graph=_play_space_graph(result.graph, result.context.navmesh, points,
+                                                               result.context.agent.height))
+
+
+def _play_space_graph(graph: nx.Graph, navmesh: NavMesh | None, points: list[list[float]], reach: float) -> nx.Graph:
+    """A copy of ``graph`` cut to the connected areas holding one of ``points``
+    (:func:`g2s_plugins.terminals.coverage.play_space`)."""
+    keep = coverage.play_space(graph, navmesh, points, reach)
+    nodes = traffic.surface_arrays(graph).nodes
+    return graph.subgraph([nodes[i] for i in np.flatnonzero(keep)]).copy()
 
 
 def nearest_structure_rows(result: RunResult) -> np.ndarray:
@@ -315,8 +322,7 @@ def navmesh_surface(result: RunResult, reference: np.ndarray, max_sources: int =
     graph = navmesh_builder.navmesh_graph(navmesh, context.agent, params.max_edge_gap)
     points = play_points(result)
     if points is not None:  # the level's walking flow in the run's play space, by the rule that chose its terminals
-        keep = coverage.play_space(graph, navmesh, points, context.agent.height)
-        graph = graph.subgraph([node for node, kept in zip(traffic.surface_arrays(graph).nodes, keep) if kept]).copy()
+        graph = _play_space_graph(graph, navmesh, points, context.agent.height)
     navmesh_arrays = traffic.surface_arrays(graph)
     polygon_rows = np.full(navmesh.polygon_count, -1, dtype=np.int64)
     kept_polygons = [polygon for polygon in range(navmesh.polygon_count) if polygon in graph]
