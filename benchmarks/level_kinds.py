@@ -8576,6 +8576,656 @@ def backdrop(seed: int) -> trimesh.Trimesh:
     return s.mesh()
 
 
+def _furnish(s: _Solids, rng: np.random.Generator, room: tuple[float, float, float, float], floor: float,
+             keep: list[tuple[float, float, float, float]], count: int) -> None:
+    """Up to ``count`` pieces of furniture (beds, shelves, tables, chests, sideboards) each against one of the walls of
+    the room ``room`` (x0, x1, z0, z1) on the floor at ``floor``, clear of the rectangles ``keep`` (a door's approach)
+    and of each other; a piece that does not fit is left out after ``4 * count`` tries."""
+    x0, x1, z0, z1 = room
+    taken = list(keep)
+    for _ in range(4 * count):
+        if count <= 0:
+            break
+        w, d, h = [(1.8, 0.9, 0.55), (1.2, 0.5, 1.9), (1.6, 0.9, 0.75), (0.9, 0.6, 0.8), (1.6, 0.5, 1.0)][int(rng.integers(5))]
+        against = int(rng.integers(4))  # 0 the low-z wall, 1 the high-z one, 2 the low-x one, 3 the high-x one
+        if against >= 2:
+            w, d = d, w
+        if x1 - x0 < w + 0.6 or z1 - z0 < d + 0.6:
+            continue
+        fx, fz = rng.uniform(x0 + 0.1, x1 - 0.1 - w), rng.uniform(z0 + 0.1, z1 - 0.1 - d)
+        fx, fz = [(fx, z0 + 0.1), (fx, z1 - 0.1 - d), (x0 + 0.1, fz), (x1 - 0.1 - w, fz)][against]
+        if _clear(fx - 0.1, fx + w + 0.1, fz - 0.1, fz + d + 0.1, taken):
+            s.box(fx, fx + w, floor - 0.1, floor + h, fz, fz + d)
+            taken.append((fx - 0.1, fx + w + 0.1, fz - 0.1, fz + d + 0.1))
+            count -= 1
+
+
+def _doored_wall(s: _Solids, a: tuple[float, float], b: tuple[float, float], floor: float, y1: float,
+                 doors: list[tuple[float, float, str, float]], thickness: float = 0.2) -> None:
+    """A wall along x or z from plan point ``a`` to ``b`` from 0.5 m under the floor at ``floor`` up to ``y1`` (as
+    :meth:`_Solids.wall`) whose doorways (start, width, leaf, into) have a lintel from 2.3 m over the floor (at 2.2 m
+    the presets' agent, 2 m tall, does not pass) and a leaf 5 cm thick and 2.15 m high as a level's file keeps it:
+    "closed" fills the doorway on the wall's line, "ajar" stands open at 90 degrees from the hinge at the doorway's
+    start into the side ``into`` (+1 or -1 across the wall), "open" has none."""
+    s.wall(a, b, floor - 0.5, y1, [(start, width) for start, width, _, _ in doors], thickness)
+    along = 0 if a[1] == b[1] else 1
+    lo, fixed = min(a[along], b[along]), a[1 - along]
+
+    def box(u0: float, u1: float, v0: float, v1: float, h0: float, h1: float) -> None:  # u along the wall, v across
+        if along == 0:
+            s.box(u0, u1, h0, h1, v0, v1)
+        else:
+            s.box(v0, v1, h0, h1, u0, u1)
+
+    for start, width, leaf, into in doors:
+        u0, u1 = lo + start, lo + start + width
+        box(u0, u1, fixed - thickness / 2, fixed + thickness / 2, floor + 2.3, y1)
+        if leaf == "closed":
+            box(u0, u1, fixed - 0.025, fixed + 0.025, floor - 0.05, floor + 2.15)
+        elif leaf == "ajar":
+            v0 = fixed + into * thickness / 2
+            box(u0 + 0.02, u0 + 0.07, min(v0, v0 + into * (width - 0.05)), max(v0, v0 + into * (width - 0.05)),
+                floor - 0.05, floor + 2.15)
+
+
+def _door_block(rng: np.random.Generator) -> tuple[_Solids, float, float]:
+    """One block of :func:`closed_doors` from the origin along +x and +z. Returns its solids, width and depth (m)."""
+    s = _Solids()
+    cols = np.cumsum([0.0, *rng.uniform(6.0, 9.0, 7)])
+    width, r, c = cols[-1], rng.uniform(6.0, 8.0), 3.0
+    depth = 4 * r + 2 * c
+    lobby = int(rng.integers(2, 5))
+    leaves = ("closed", "ajar", "open")
+    # the rows (z0, z1, the corridor wall's z, the side the room lies on from that wall)
+    rows = [(0.0, r, r, -1.0), (r + c, 2 * r + c, r + c, 1.0), (2 * r + c, 3 * r + c, 3 * r + c, -1.0),
+            (3 * r + 2 * c, depth, 3 * r + 2 * c, 1.0)]
+    for j, (z0, z1, line, into) in enumerate(rows):
+        inner = j in (1, 2)
+        doors = []
+        for k, (x0, x1) in enumerate(pairwise(cols)):
+            if inner and k == lobby:  # the lobby's west wall
+                _doored_wall(s, (x0, z0), (x0, z1), 0.0, 3.0, [])
+                continue
+            start = rng.uniform(x0 + 0.5, x1 - 2.1)
+            doors.append((start, 1.6, str(rng.choice(leaves, p=[0.4, 0.3, 0.3])), into))
+            keep = [(start - 0.4, start + 2.0, min(line, line + into * 2.0), max(line, line + into * 2.0))]
+            if k and not (inner and k - 1 == lobby):
+                side = []
+                if rng.random() < 0.3:
+                    dz = rng.uniform(z0 + 0.4, z1 - 2.0)
+                    side = [(dz - z0, 1.6, str(rng.choice(leaves, p=[0.4, 0.3, 0.3])), 1.0)]
+                    keep.append((x0 - 2.0, x0 + 2.0, dz - 0.4, dz + 2.0))
+                _doored_wall(s, (x0, z0), (x0, z1), 0.0, 3.0, side)
+            elif inner and k == lobby + 1:  # the lobby's east wall
+                _doored_wall(s, (x0, z0), (x0, z1), 0.0, 3.0, [])
+            _furnish(s, rng, (x0 + 0.1, x1 - 0.1, z0 + 0.1, z1 - 0.1), 0.0, keep, int(rng.integers(1, 5)))
+        if inner:  # the corridor wall, open over the lobby
+            for part in ((0.0, cols[lobby]), (cols[lobby + 1], width)):
+                inside = [(a - part[0], w, leaf, i) for a, w, leaf, i in doors if part[0] <= a < part[1]]
+                _doored_wall(s, (part[0], line), (part[1], line), 0.0, 3.0, inside)
+        else:
+            _doored_wall(s, (0.0, line), (width, line), 0.0, 3.0, doors)
+    for part in ((0.0, cols[lobby]), (cols[lobby + 1], width)):  # between the inner rows, but for the lobby
+        _doored_wall(s, (part[0], 2 * r + c), (part[1], 2 * r + c), 0.0, 3.0, [])
+    for z in (r, 3 * r + c):  # the corridors' fire doors, at a column line away from the lobby
+        k = int(rng.choice([k for k in range(1, 7) if k not in (lobby, lobby + 1)]))
+        _doored_wall(s, (cols[k], z), (cols[k], z + c), 0.0, 3.0,
+                     [(0.6, 1.8, str(rng.choice(leaves, p=[0.5, 0.25, 0.25])), 1.0)])
+    _doored_wall(s, (0.0, 0.0), (width, 0.0), 0.0, 3.0, [], 0.3)
+    _doored_wall(s, (0.0, depth), (width, depth), 0.0, 3.0, [], 0.3)
+    _doored_wall(s, (0.0, 0.0), (0.0, depth), 0.0, 3.0, [(r + 0.5, 2.0, "open", -1.0), (3 * r + c + 0.5, 2.0, "open", -1.0)], 0.3)
+    _doored_wall(s, (width, 0.0), (width, depth), 0.0, 3.0,
+                 [(z + 0.5, 2.0, str(rng.choice(leaves, p=[0.4, 0.3, 0.3])), 1.0) for z in (r, 3 * r + c)], 0.3)
+    return s, width, depth
+
+
+def closed_doors(seed: int) -> trimesh.Trimesh:
+    """Two one-storey blocks 16-22 m apart (:func:`_door_block`) exported with their doors' leaves in place, as a
+    real level's file keeps them. Each block: 7 columns of rooms 6-9 m wide in four rows 6-8 m deep, two corridors 3 m wide along x between the outer and inner rows, joined
+    by a lobby (one column of the inner rows) and entered by an open doorway 2 m wide at each corridor's west end and
+    a door at its east end; a fire door 1.8 m wide across each corridor at a column line away from the lobby. Every
+    room opens on its corridor by a door 1.6 m wide (wider than the presets' agent needs) and on its west neighbour by
+    another with a chance of 0.3; each door's leaf is closed (a chance of 0.4; a fire door 0.5), ajar (standing at 90
+    degrees into the room, 0.3) or gone (0.3); every doorway has a lintel at 2.3 m. Walls 3 m high, 0.2 m thick;
+    1-4 pieces of furniture a room (:func:`_furnish`); a yard 15 m wide round the blocks with trees and cars.
+
+    Expected (written before the first run): for Recast a closed leaf is a wall, so every room whose doors are all
+    closed is an island (seed 0 should have several), covered by a structure of its own with no traffic; a corridor
+    whose fire door is closed is two halves joined only round the yard. What a designer expects is the block as the
+    game plays it (doors open when walked into): traffic highest in the corridors and the lobby between the
+    entrances, lowest in the rooms (leaves at their doors), the yard busy between the entrances. The heat map cannot
+    show that: behind a closed leaf it has no way; within the main area, traffic runs round the closed fire doors
+    through the yard.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    width, depth, gap = 0.0, 0.0, rng.uniform(16.0, 22.0)
+    for k in range(2):  # two blocks, the second north of the first across a yard
+        block, w, d = _door_block(rng)
+        for part in block.parts:
+            s.parts.append(part.apply_translation((0.0, 0.0, depth + gap * k)))
+        width, depth = max(width, w), depth + gap * k + d
+    taken = [(-3.0, width + 3.0, -3.0, depth + 3.0)]
+    for k in range(int(rng.integers(25, 35))):  # trees and parked cars in the yard
+        p = np.array([rng.uniform(-14.0, width + 14.0), rng.uniform(-14.0, depth + 14.0)])
+        if k % 3 == 0 and _clear(p[0] - 0.5, p[0] + 4.7, p[1] - 1.5, p[1] + 1.5, taken):
+            _car(s, p[0], p[0] + 4.2, p[1] - 0.9, p[1] + 0.9, 0.0)
+            taken.append((p[0] - 0.5, p[0] + 4.7, p[1] - 1.5, p[1] + 1.5))
+        elif k % 3 and _clear(p[0] - 1.5, p[0] + 1.5, p[1] - 1.5, p[1] + 1.5, taken):
+            _trunk(s, p, rng.uniform(0.25, 0.4), -0.5, 6.0)
+            taken.append((p[0] - 1.5, p[0] + 1.5, p[1] - 1.5, p[1] + 1.5))
+    s.ground(-15.0, width + 15.0, -15.0, depth + 15.0, 0.0, [])
+    return s.mesh()
+
+
+def _paper(s: _Solids, a: np.ndarray, b: np.ndarray, y0: float, y1: float, flip: bool) -> None:
+    """A paper wall: one quad (two triangles, no thickness, one-sided) standing over the plan segment from ``a`` (x,
+    z) to ``b`` between heights y0 < y1, facing one way or (``flip``) the other."""
+    (ax, az), (bx, bz) = a, b
+    faces = np.array([[0, 1, 2], [0, 2, 3]])
+    s.parts.append(trimesh.Trimesh(np.array([[ax, y0, az], [bx, y0, bz], [bx, y1, bz], [ax, y1, az]]),
+                                   faces[:, ::-1] if flip else faces, process=False))
+
+
+def _paper_run(s: _Solids, rng: np.random.Generator, a: np.ndarray, b: np.ndarray, y0: float, y1: float,
+               gaps: list[tuple[float, float]]) -> None:
+    """Paper walls (:func:`_paper`) along the segment from ``a`` to ``b`` (x, z) between heights about y0 and y1,
+    open over each gap (start, width: metres from ``a``); each piece floats up to 5 cm over ``y0`` or sinks as far
+    into it (as an export's walls do) and faces a random way."""
+    a, b = np.asarray(a, dtype=np.float64), np.asarray(b, dtype=np.float64)
+    length = float(np.linalg.norm(b - a))
+    along = (b - a) / length
+    cuts = [0.0, *sum(([start, start + width] for start, width in sorted(gaps)), []), length]
+    for c0, c1 in zip(cuts[0::2], cuts[1::2]):
+        if c1 - c0 > 1e-6:
+            _paper(s, a + along * c0, a + along * c1, y0 + rng.uniform(-0.05, 0.05), y1, bool(rng.random() < 0.5))
+
+
+def paper_walls(seed: int) -> trimesh.Trimesh:
+    """A walled compound whose walls, fences and railings are paper: single quads with no thickness, one-sided and
+    facing either way, standing up to 5 cm over the floor or sunk as far into it (:func:`_paper_run`), as a real
+    level's file often has them. On closed ground 100-115 m square: 11-14 buildings 9-16 x 7-12 m, each of 2-4 rooms
+    behind paper partitions 3 m high with a gap 1.8 m wide, a paper door in its outer walls (2 m), solid
+    furniture; half of them under a flat paper roof (one quad facing up, 3.2 m up: floor out of reach); a raised deck
+    (a paper floor 3 m up, one quad facing up, on solid posts) 16-24 m long reached by a solid flight at each end,
+    railed by paper railings 1.1 m high; paper fences 1.5 m high across the yard with gaps 2 m wide; a paper wall 3 m
+    high round the compound with two gates.
+
+    Expected (written before the first run): Recast rasterises a vertical quad into the cells it crosses, so a paper
+    wall stops the agent as a solid one does (the same areas, the same doors, the navmesh within a few per cent of
+    the same walls 0.2 m thick); the paper deck is floor reached by its flights, the paper roofs are islands out of
+    reach. Traffic highest in the yard between the gates and the buildings' doors, on the deck's flights and deck
+    (a short cut over the fences), lowest in the buildings' back rooms; the structure covers the yard's lanes between
+    fences, each building (a node or two a room) and the deck as a chain.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    size = rng.uniform(100.0, 115.0)
+    taken: list[tuple[float, float, float, float]] = []
+    deck_length = rng.uniform(16.0, 24.0)  # the deck along x, 2.4 m wide, 3 m up, a flight each end
+    dx, dz = rng.uniform(15.0, size - deck_length - 15.0), rng.uniform(15.0, size - 15.0)
+    run = math.ceil(3.0 / 0.18) * 0.28
+    deck = (dx, dx + deck_length, dz - 1.2, dz + 1.2)
+    s.parts.append(trimesh.Trimesh(np.array([[deck[0], 3.0, deck[2]], [deck[1], 3.0, deck[2]], [deck[1], 3.0, deck[3]],
+                                             [deck[0], 3.0, deck[3]]]), np.array([[0, 2, 1], [0, 3, 2]]), process=False))
+    for x in np.linspace(deck[0] + 0.3, deck[1] - 0.3, 5):  # posts
+        for z in (deck[2] + 0.3, deck[3] - 0.3):
+            s.box(x - 0.15, x + 0.15, -0.3, 2.99, z - 0.15, z + 0.15)
+    for edge, heading in (((deck[0], dz), (1.0, 0.0)), ((deck[1], dz), (-1.0, 0.0))):
+        _flight_to(s, np.array(edge), np.array(heading), 2.0, 0.0, 3.0, 0.28)
+    for z in (deck[2] + 0.05, deck[3] - 0.05):
+        _paper_run(s, rng, np.array([deck[0], z]), np.array([deck[1], z]), 3.0, 4.1, [])
+    taken.append((deck[0] - run - 2.0, deck[1] + run + 2.0, deck[2] - 1.5, deck[3] + 1.5))
+    placed, tries = 0, 0
+    target = int(rng.integers(11, 15))
+    while placed < target and tries < 400:
+        tries += 1
+        w, d = rng.uniform(9.0, 16.0), rng.uniform(7.0, 12.0)
+        x0, z0 = rng.uniform(4.0, size - w - 4.0), rng.uniform(4.0, size - d - 4.0)
+        x1, z1 = x0 + w, z0 + d
+        if not _clear(x0 - 4.0, x1 + 4.0, z0 - 4.0, z1 + 4.0, taken):
+            continue
+        taken.append((x0, x1, z0, z1))
+        placed += 1
+        door_side, door_at = int(rng.integers(4)), rng.uniform(0.8, min(w, d) - 2.8)
+        corners = [(x0, z0), (x1, z0), (x1, z1), (x0, z1)]
+        for k in range(4):
+            _paper_run(s, rng, np.array(corners[k]), np.array(corners[(k + 1) % 4]), 0.0, 3.2,
+                       [(door_at, 2.0)] if k == door_side else [])
+        a, b = np.array(corners[door_side]), np.array(corners[(door_side + 1) % 4])
+        door = a + (b - a) / np.linalg.norm(b - a) * (door_at + 1.0)
+        keep = [(door[0] - 1.8, door[0] + 1.8, door[1] - 1.8, door[1] + 1.8)]  # each gap's approach
+        cuts = _split(x0, x1, rng.uniform(4.0, 6.0)) if w > d else _split(z0, z1, rng.uniform(4.0, 6.0))
+        for cut in cuts[1:-1]:  # partitions across the long side, each with a gap
+            a, b = (np.array([cut, z0]), np.array([cut, z1])) if w > d else (np.array([x0, cut]), np.array([x1, cut]))
+            gap = rng.uniform(0.6, min(w, d) - 2.6)
+            _paper_run(s, rng, a, b, 0.0, 3.0, [(gap, 1.8)])
+            mid = a + (b - a) / np.linalg.norm(b - a) * (gap + 0.9)
+            keep.append((mid[0] - 1.8, mid[0] + 1.8, mid[1] - 1.8, mid[1] + 1.8))
+        for c0, c1 in pairwise(cuts):
+            room = (c0, c1, z0, z1) if w > d else (x0, x1, c0, c1)
+            _furnish(s, rng, (room[0] + 0.05, room[1] - 0.05, room[2] + 0.05, room[3] - 0.05), 0.0, keep,
+                     int(rng.integers(1, 3)))
+        if rng.random() < 0.5:  # a flat paper roof facing up
+            s.parts.append(trimesh.Trimesh(np.array([[x0, 3.2, z0], [x1, 3.2, z0], [x1, 3.2, z1], [x0, 3.2, z1]]),
+                                           np.array([[0, 2, 1], [0, 3, 2]]), process=False))
+    for _ in range(int(rng.integers(5, 8))):  # paper fences across the yard, along x or z, each with a gap or two
+        along = int(rng.integers(2))
+        length = rng.uniform(15.0, 35.0)
+        start, at = rng.uniform(3.0, size - length - 3.0), rng.uniform(3.0, size - 3.0)
+        a, b = (np.array([start, at]), np.array([start + length, at])) if along == 0 else \
+            (np.array([at, start]), np.array([at, start + length]))
+        lo = np.minimum(a, b) - 0.5
+        hi = np.maximum(a, b) + 0.5
+        if not _clear(lo[0], hi[0], lo[1], hi[1], taken):
+            continue
+        gaps = [(rng.uniform(1.0, length / 2 - 3.0), 2.0)] + ([(rng.uniform(length / 2, length - 3.0), 2.0)]
+                                                              if rng.random() < 0.5 else [])
+        _paper_run(s, rng, a, b, 0.0, 1.5, gaps)
+        taken.append((lo[0], hi[0], lo[1], hi[1]))
+    for k in range(int(rng.integers(15, 25))):  # crates and barrels
+        p = rng.uniform(3.0, size - 3.0, 2)
+        if _clear(p[0] - 1.5, p[0] + 1.5, p[1] - 1.5, p[1] + 1.5, taken):
+            if k % 2:
+                s.box(p[0] - 0.6, p[0] + 0.6, -0.3, 1.2, p[1] - 0.6, p[1] + 0.6)
+            else:
+                _trunk(s, p, 0.35, -0.3, 1.0)
+            taken.append((p[0] - 1.5, p[0] + 1.5, p[1] - 1.5, p[1] + 1.5))
+    gates = rng.uniform(10.0, size - 14.0, 2)
+    corners = [(0.0, 0.0), (size, 0.0), (size, size), (0.0, size)]
+    for k in range(4):
+        _paper_run(s, rng, np.array(corners[k]), np.array(corners[(k + 1) % 4]), 0.0, 3.0,
+                   [(gates[k // 2], 4.0)] if k in (0, 2) else [])
+    s.box(-12.0, size + 12.0, -0.5, 0.0, -12.0, size + 12.0)
+    return s.mesh()
+
+
+def _split_house(s: _Solids, rng: np.random.Generator, x_at: float) -> tuple[float, float, float, float]:
+    """One house of :func:`split_level` from x = ``x_at``, its front wall on z = 0: a front wing of three storeys at
+    0, 2h and 4h and a back wing of three at h, 3h and 5h (h 1.3-1.6 m), joined across a stair hall by five flights
+    of 7-9 steps. Returns its plan (x0, x1, z0, z1), a hole for the ground round it."""
+    half = rng.uniform(1.3, 1.6)
+    steps = math.ceil(half / 0.18 - 1e-9)
+    run, width = steps * 0.28, rng.uniform(24.0, 30.0)
+    fd, bd = rng.uniform(9.0, 11.0), rng.uniform(9.0, 11.0)
+    x0, x1 = x_at, x_at + width
+    hall0, hall1 = fd, fd + run  # the stair hall between the wings, z
+    back1 = hall1 + bd
+    lanes = x0 + rng.uniform(4.0, width - 11.0) + np.array([1.1, 3.3, 5.5])  # three lanes' centres, 2 m wide each
+    front_door, back_door = rng.uniform(2.0, width - 4.0), rng.uniform(2.0, width - 4.0)
+    s.box(x0, x1, -0.5, half, hall1, back1)  # the back wing's base
+    s.box(x0, x1, -0.5, 0.0, 0.0, hall1)  # the front wing's and the hall's floor
+    for k in range(5):  # flight k joins storey k (front if even) to storey k + 1, in lane k % 3
+        lane = lanes[k % 3]
+        if k % 2 == 0:
+            s.stairs(np.array([lane, hall0]), np.array([0.0, 1.0]), 2.0, k * half, half, half / steps, 0.28, depth=0.45)
+        else:
+            s.stairs(np.array([lane, hall1]), np.array([0.0, -1.0]), 2.0, k * half, half, half / steps, 0.28, depth=0.45)
+    for k in range(6):
+        y, front = k * half, k % 2 == 0
+        z0, z1 = (0.0, hall0) if front else (hall1, back1)
+        edge = hall0 if front else hall1
+        top = y + (2 * half - 0.2 if k < 4 else 2.6)
+        if k >= 2:
+            s.slab(x0, x1, z0, z1, y, [], thickness=0.2)
+        arriving, leaving = (k - 1) % 3, k % 3  # lanes of the flights ending and starting on this storey
+        if k:  # a rail along the hall, open where this storey's flights (one or two lanes) meet it
+            openings = sorted((lanes[m] - x0 - 1.3, 2.0) for m in {arriving, leaving if k < 5 else arriving})
+            rail = edge - 0.05 if front else edge + 0.05
+            s.wall((x0 + 0.3, rail), (x1 - 0.3, rail), y, y + 1.1, openings, thickness=0.1)
+        # a landing strip 2.2 m deep along the hall, rooms behind it with a door each
+        strip = edge - 2.2 if front else edge + 2.2
+        cuts = _split(x0 + 0.15, x1 - 0.15, rng.uniform(3.5, 5.0))
+        doors, rooms = [], []
+        for a, b in pairwise(cuts):
+            start = rng.uniform(a + 0.3, b - 1.9)
+            doors.append((start - x0 - 0.15, 1.6))
+            rooms.append((a, b, start))
+        s.wall((x0 + 0.15, strip), (x1 - 0.15, strip), y, top, doors, thickness=0.15)
+        for a, b, start in rooms[:-1]:
+            s.wall((b, 0.15 if front else strip), (b, strip if front else back1 - 0.15), y, top, thickness=0.12)
+        for a, b, start in rooms:
+            room = (a + 0.1, b - 0.1, 0.25, strip - 0.1) if front else (a + 0.1, b - 0.1, strip + 0.1, back1 - 0.25)
+            keep = [(start - 0.4, start + 2.0, strip - 2.0, strip + 2.0)]
+            if k < 2:  # the front door's and the back door's approach
+                door = x0 + (front_door if front else back_door)
+                keep.append((door - 0.4, door + 2.0, -1.0, 2.0) if front else (door - 0.4, door + 2.0, back1 - 2.0, back1 + 1.0))
+            _furnish(s, rng, room, y, keep, int(rng.integers(2, 5)))
+    s.wall((x0, 0.15), (x1, 0.15), -0.5, 4 * half + 2.6, [(front_door, 1.6)], thickness=0.3)
+    s.wall((x0, back1 - 0.15), (x1, back1 - 0.15), -0.5, 5 * half + 2.6, [(back_door, 1.6)], thickness=0.3)
+    s.box(x0 + back_door - 0.1, x0 + back_door + 1.7, half + 2.3, 5 * half + 2.6, back1 - 0.3, back1)
+    s.box(x0 + front_door - 0.1, x0 + front_door + 1.7, 2.3, 4 * half + 2.6, 0.0, 0.3)
+    for x in (x0 + 0.15, x1 - 0.15):
+        s.wall((x, 0.0), (x, back1), -0.5, 5 * half + 2.6, thickness=0.3)
+    # the back door's flight down to the garden, head-on
+    _flight_to(s, np.array([x0 + back_door + 0.8, back1]), np.array([0.0, -1.0]), 1.6, 0.0, half, 0.28)
+    return x0, x1, 0.0, back1
+
+
+def split_level(seed: int) -> trimesh.Trimesh:
+    """Two split-level houses 8-12 m apart in a garden, each 24-30 m wide (:func:`_split_house`): a front wing 9-11 m
+    deep of three storeys at 0, 2h and 4h and a back wing 9-11 m deep of three at h, 3h and 5h, the half storey h
+    1.3-1.6 m (its own each house; at 1.2 m a storey keeps 2.15 m of head room, too little for the presets' agent), joined across a stair hall by five short flights of 8-9 steps (risers of at most
+    0.18 m, 2 m wide, three lanes so a flight keeps head room under the one three half storeys above), each storey
+    railed along the hall but at its two flights. On each storey a landing strip 2.2 m deep along the hall and rooms
+    3.5-5 m wide behind it, a door 1.6 m wide each, 2-4 pieces of furniture a room; the top storeys are open roof
+    terraces behind 2.6 m walls. A front door at the ground, a back door on the back wing's first storey (h up) with a
+    flight down to the garden; trees and benches in the garden.
+
+    Expected (written before the first run): the structure covers each house's storeys as a chain of landing strips
+    joined by the flights (a zig-zag up the hall), each room a leaf at its door; the garden round both houses. Traffic
+    highest on the ground strip and the first two flights of each house (between the front door, the back door and
+    the storeys above), falling storey by storey up the zig-zag, lowest in the top storeys' rooms and the rooms at
+    the strips' ends; the garden busy between the houses' front and back doors.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    holes = [_split_house(s, rng, 0.0)]
+    holes.append(_split_house(s, rng, holes[0][1] + rng.uniform(8.0, 12.0)))
+    x1, z1 = holes[1][1] + 14.0, max(h[3] for h in holes) + 14.0
+    taken = [(h[0] - 2.0, h[1] + 2.0, h[2] - 2.0, h[3] + 4.0) for h in holes]
+    for k in range(int(rng.integers(20, 30))):
+        p = np.array([rng.uniform(-12.0, x1 - 2.0), rng.uniform(-12.0, z1 - 2.0)])
+        if _clear(p[0] - 1.5, p[0] + 1.5, p[1] - 1.5, p[1] + 1.5, taken):
+            if k % 3:
+                _trunk(s, p, rng.uniform(0.25, 0.4), -0.5, 6.0)
+            else:
+                s.box(p[0] - 0.9, p[0] + 0.9, -0.3, 0.5, p[1] - 0.3, p[1] + 0.3)
+            taken.append((p[0] - 1.5, p[0] + 1.5, p[1] - 1.5, p[1] + 1.5))
+    s.ground(-14.0, x1, -14.0, z1, 0.0, holes)
+    return s.mesh()
+
+
+def hub_rooms(seed: int) -> trimesh.Trimesh:
+    """A caravanserai: a square courtyard 32-38 m across (the hub) ringed by two storeys of small rooms 5-6.5 m deep,
+    4.5-6 m wide, each entered only from the hub (a door 1.6 m wide in the courtyard wall) or, upstairs, from a
+    gallery 2.5 m deep over an arcade, railed, reached by two flights 2 m wide up from the courtyard (risers of at
+    most 0.18 m, 4 m); the corners solid; a gate passage 3.5 m wide through the middle of the south range out to a
+    street 12 m wide round the building (stalls, trees, carts). In the courtyard a well, trees and crates; 1-3 pieces
+    of furniture a room (:func:`_furnish`); walls 0.3 m thick, the upper rooms open to the sky behind walls 3 m high.
+
+    Expected (written before the first run): hub and spokes. The structure covers the courtyard (a loop or a star),
+    the gallery (a ring), the two flights and the street, each room a leaf at its door (a terminal in nearly every
+    room: 30-40 of them). Traffic highest in the courtyard between the gate and the flights' feet, on the flights and
+    the gallery near them, then the gallery's far side; lowest in the rooms (each a dead end, the same on both
+    storeys) and on the street's far side from the gate.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    size, depth, storey, gallery = rng.uniform(32.0, 38.0), rng.uniform(5.0, 6.5), 4.0, 2.5
+    gate_w = 3.5
+
+    def local(side: int, u0: float, u1: float, v0: float, v1: float, y0: float, y1: float) -> None:
+        """A box over [u0, u1] along side ``side`` (0 south, 1 east, 2 north, 3 west; u from its left end seen from
+        the courtyard) and [v0, v1] outward from the courtyard's edge (negative: over the courtyard)."""
+        pts = [((u, -v), (size + v, u), (size - u, size + v), (-v, size - u))[side] for u in (u0, u1) for v in (v0, v1)]
+        xs, zs = [p[0] for p in pts], [p[1] for p in pts]
+        s.box(min(xs), max(xs), y0, y1, min(zs), max(zs))
+
+    flights = [(int(k), rng.uniform(8.0, size - 10.0)) for k in rng.choice(4, 2, replace=False)]
+    holes: list[tuple[float, float, float, float]] = []  # the ground stops under the solid corners and the well
+    for side in range(4):
+        corner = np.array([((u, -v), (size + v, u), (size - u, size + v), (-v, size - u))[side]
+                           for u in (-depth, 0.0) for v in (0.0, depth)])  # the corner on this side's left: solid, pointed
+        s.hull(np.concatenate([np.insert(corner, 1, y, axis=1) for y in (-0.5, storey + 3.0)]
+                              + [[[corner[:, 0].mean(), storey + 3.0 + depth, corner[:, 1].mean()]]]))
+        holes.append((corner[:, 0].min(), corner[:, 0].max(), corner[:, 1].min(), corner[:, 1].max()))
+        cuts = _split(0.0, size, rng.uniform(4.5, 6.0))
+        for floor in (0.0, storey):
+            top = floor + (storey if floor == 0.0 else 3.0)
+            if floor:
+                local(side, 0.0, size, 0.0, depth, floor - 0.3, floor)  # the rooms' floor
+                local(side, 0.0, size, -gallery, 0.0, floor - 0.3, floor)  # the gallery
+                gaps = [(u - 1.0, u + 1.0) for k, u in flights if k == side]
+                rail = [gallery, *sum(([a, b] for a, b in gaps), []), size - gallery]
+                for a, b in zip(rail[0::2], rail[1::2]):
+                    if b - a > 0.1:
+                        local(side, a, b, -gallery, -gallery + 0.1, floor, floor + 1.1)
+            gated = side == 0 and floor == 0.0
+            for a, b in ((0.0, size / 2 - gate_w / 2), (size / 2 + gate_w / 2, size)) if gated else ((0.0, size),):
+                local(side, a, b, depth - 0.3, depth, floor - 0.5 if floor == 0.0 else floor, top)  # the outer wall
+            if gated:
+                local(side, size / 2 - gate_w / 2, size / 2 + gate_w / 2, depth - 0.3, depth, 3.0, top)
+            for k, (u0, u1) in enumerate(pairwise(cuts)):
+                if k:
+                    local(side, u0 - 0.1, u0 + 0.1, 0.3, depth - 0.3, floor - 0.1, top)
+                if gated and u0 < size / 2 < u1:  # the gate passage: open on the courtyard under a lintel
+                    local(side, u0, u1, 0.0, 0.3, 3.0, top)
+                    continue
+                door = rng.uniform(u0 + 0.4, u1 - 2.0)
+                local(side, u0, door, 0.0, 0.3, floor - 0.1 if floor else -0.5, top)
+                local(side, door + 1.6, u1, 0.0, 0.3, floor - 0.1 if floor else -0.5, top)
+                local(side, door, door + 1.6, 0.0, 0.3, floor + 2.3, top)
+                room_pts = [((u, -v), (size + v, u), (size - u, size + v), (-v, size - u))[side]
+                            for u in (u0 + 0.2, u1 - 0.2) for v in (0.4, depth - 0.4)]
+                door_pts = [((u, -v), (size + v, u), (size - u, size + v), (-v, size - u))[side]
+                            for u in (door - 0.4, door + 2.0) for v in (0.0, 2.0)]
+                room = (min(p[0] for p in room_pts), max(p[0] for p in room_pts), min(p[1] for p in room_pts),
+                        max(p[1] for p in room_pts))
+                keep = [(min(p[0] for p in door_pts), max(p[0] for p in door_pts), min(p[1] for p in door_pts),
+                         max(p[1] for p in door_pts))]
+                _furnish(s, rng, room, floor, keep, int(rng.integers(1, 4)))
+        for u in np.arange(2.0, size - 1.0, 4.0):  # the arcade's posts under the gallery's edge
+            if all(abs(u - f) > 1.6 for k, f in flights if k == side):
+                local(side, u - 0.2, u + 0.2, -gallery + 0.05, -gallery + 0.45, -0.3, storey - 0.3)
+    for side, u in flights:  # each flight from the courtyard up to the gallery's edge, head-on
+        origin = np.array(((u, gallery), (size - gallery, u), (size - u, size - gallery), (gallery, size - u))[side])
+        heading = np.array(((0.0, -1.0), (1.0, 0.0), (0.0, 1.0), (-1.0, 0.0))[side])
+        _flight_to(s, origin, heading, 2.0, 0.0, storey, 0.28)
+    taken = [(-2.0, size + 2.0, -2.0, gallery + 1.0), (-2.0, size + 2.0, size - gallery - 1.0, size + 2.0),
+             (-2.0, gallery + 1.0, -2.0, size + 2.0), (size - gallery - 1.0, size + 2.0, -2.0, size + 2.0),
+             (size / 2 - 3.0, size / 2 + 3.0, -2.0, 6.0)]  # the arcades and the gate's approach
+    for side, u in flights:
+        o = np.array(((u, gallery), (size - gallery, u), (size - u, size - gallery), (gallery, size - u))[side])
+        taken.append((o[0] - 8.0, o[0] + 8.0, o[1] - 8.0, o[1] + 8.0))
+    well = np.array([size / 2, size / 2])  # a well: a round kerb under a pointed cover
+    holes.append(_round_ground(s, well, 1.5, 16, 0.0))
+    ring = well + 1.5 * np.stack([np.cos(np.arange(16) * math.pi / 8), np.sin(np.arange(16) * math.pi / 8)], 1)
+    s.hull(np.concatenate([np.insert(ring, 1, y, axis=1) for y in (-0.5, 0.9)] + [[[well[0], 2.5, well[1]]]]))
+    taken.append((size / 2 - 3.0, size / 2 + 3.0, size / 2 - 3.0, size / 2 + 3.0))
+    out = depth + 12.0
+    for k in range(int(rng.integers(40, 55))):  # trees and crates in the courtyard, stalls and carts on the street
+        p = rng.uniform(-out + 1.0, size + out - 1.0, 2)
+        inside = (0.0 < p).all() and (p < size).all()
+        ring = ((p < -depth - 1.0) | (p > size + depth + 1.0)).any()
+        if not (inside or ring):
+            continue
+        w, d = (1.2, 1.2) if inside or k % 2 else (rng.uniform(2.5, 4.0), rng.uniform(1.8, 2.5))
+        if _clear(p[0] - 1.5, p[0] + w + 1.5, p[1] - 1.5, p[1] + d + 1.5, taken):
+            if inside and k % 3 == 0:
+                _trunk(s, p, 0.3, -0.5, 6.0)
+            else:
+                s.box(p[0], p[0] + w, -0.3, 1.0 if w > 2.0 else 1.2, p[1], p[1] + d)
+            taken.append((p[0] - 1.5, p[0] + w + 1.5, p[1] - 1.5, p[1] + d + 1.5))
+    s.ground(-out, size + out, -out, size + out, 0.0, holes)
+    return s.mesh()
+
+
+def _rect(p: np.ndarray, heading: np.ndarray, length: float, width: float) -> tuple[float, float, float, float]:
+    """The plan (x0, x1, z0, z1) of the strip ``width`` m wide running ``length`` m from plan point ``p`` (x, z)
+    along the unit axis ``heading``."""
+    corners = np.stack([p, p + heading * length]) + np.array([-1.0, 1.0])[:, None] * np.abs(heading[::-1]) * width / 2
+    return corners[:, 0].min(), corners[:, 0].max(), corners[:, 1].min(), corners[:, 1].max()
+
+
+def corridor_shooter(seed: int) -> trimesh.Trimesh:
+    """A linear level: one path of corridors 3-4 m wide and 16-32 m long and arenas 24-32 m square, every third
+    piece an arena entered from the west and left by the middle of its north or south side (at random) along a
+    corridor that turns east into the next (so the path never meets itself); in each arena cover (crates 1.2 m, low
+    walls 1 m, pillars) and a platform 2 m up reached by a flight; side alcoves 3 m wide and 2.5-4 m deep off the corridors (a crate in each), and on a
+    third of the corridors a flight of 7-11 steps across the corridor climbing 1.2-1.9 m: 20-23 pieces from the start
+    (a room 10 m square) to the end (another). Floors are boxes 0.5 m thick; nothing walls the path (its edges drop
+    into the void, as a level's file built to be seen from inside often is).
+
+    Expected (written before the first run): the structure is a chain from start to end with a loop round each
+    arena's cover and leaves at the alcoves and the platforms. Traffic highest on the corridors in the middle third
+    (every path between the halves), falling toward both ends, lowest in the alcoves and on the platforms; in each
+    arena highest on the line between its two openings.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    pieces: list[tuple[float, float, float, float]] = []  # the start room, corridors and arenas
+    alcoves: list[tuple[tuple[float, float, float, float], int]] = []  # each with the number of the piece it is off
+    s.box(-10.0, 0.0, -0.5, 0.0, -5.0, 5.0)  # the start room
+    pieces.append((-10.0, 0.0, -5.0, 5.0))
+    p, heading, y = np.array([0.0, 0.0]), np.array([1.0, 0.0]), 0.0
+    total = int(rng.integers(20, 24))
+    for k in range(total):
+        arena = k % 3 == 2
+        turn = heading if k % 3 == 0 else np.array([1.0, 0.0])  # out of an arena's side, then east into the next
+        for _ in range(20):  # a length clear of the path so far
+            length = rng.uniform(24.0, 32.0) if arena or k % 3 == 1 else rng.uniform(16.0, 32.0)
+            width = length if arena else rng.uniform(3.0, 4.0)
+            rect = _rect(p, turn, length, width)
+            if _clear(rect[0] - 4.0, rect[1] + 4.0, rect[2] - 4.0, rect[3] + 4.0,
+                      pieces[:-1] + [a for a, n in alcoves if n < len(pieces) - 1]):
+                break
+        else:
+            break
+        heading = turn
+        side = np.array([-heading[1], heading[0]])
+        if arena:
+            centre = p + heading * length / 2
+            taken = [_rect(p - heading, heading, length + 2.0, 5.0)]  # the line in
+            away = side * rng.choice([-1.0, 1.0])  # the platform's side of the line in; its flight climbs that way
+            px = centre + away * length / 4 + heading * rng.uniform(-2.0, 2.0)
+            plat = (px[0] - 3.5, px[0] + 3.5, px[1] - 3.5, px[1] + 3.5)
+            s.box(plat[0], plat[1], y - 0.5, y + 2.0, plat[2], plat[3])
+            s.ground(rect[0], rect[1], rect[2], rect[3], y, [plat])  # stopping under the platform
+            _flight_to(s, px - away * 3.5, away, 2.0, y, y + 2.0, 0.28)
+            taken.append(_rect(px - away * 9.0, away, 14.0, 9.0))
+            for _ in range(int(rng.integers(24, 34))):  # cover
+                kind = int(rng.integers(3))
+                w, d = ((1.2, 1.2), (rng.uniform(2.5, 4.0), 0.4), (0.8, 0.8))[kind]
+                if rng.random() < 0.5:
+                    w, d = d, w
+                q = rng.uniform([rect[0] + 1.5, rect[2] + 1.5], [rect[1] - 1.5 - w, rect[3] - 1.5 - d])
+                if _clear(q[0] - 1.3, q[0] + w + 1.3, q[1] - 1.3, q[1] + d + 1.3, taken):
+                    s.box(q[0], q[0] + w, y - 0.3, y + (1.2, 1.0, 4.0)[kind], q[1], q[1] + d)
+                    taken.append((q[0], q[0] + w, q[1], q[1] + d))
+            heading = side * rng.choice([-1.0, 1.0])  # the way out: the middle of a side
+            p = centre + heading * (length / 2 - 0.5)
+            pieces.append(rect)
+            continue
+        rise = rng.random() < 1.0 / 3.0
+        if rise:  # a flight across the corridor halfway
+            climb = rng.uniform(1.2, 1.9)
+            edge = p + heading * length / 2
+            s.box(*_rect(p, heading, length / 2, width)[:2], y - 0.5, y, *_rect(p, heading, length / 2, width)[2:])
+            _flight_to(s, edge, heading, width, y, y + climb, 0.28)
+            far = _rect(edge, heading, length / 2, width)
+            y += climb
+            s.box(far[0], far[1], y - 0.5, y, far[2], far[3])
+        else:
+            s.box(rect[0], rect[1], y - 0.5, y, rect[2], rect[3])
+        for _ in range(int(rng.integers(2, 5))):  # alcoves off the corridor, clear of its flight
+            t, out = rng.uniform(2.0, length - 5.0), rng.choice([-1.0, 1.0])
+            if rise and length / 2 - 3.5 < t < length / 2 + 0.5:
+                continue
+            a = p + heading * t + side * out * (width / 2 - 0.2)
+            alcove = _rect(a + heading * 1.5, side * out, rng.uniform(2.5, 4.0), 3.0)
+            if _clear(alcove[0] - 2.0, alcove[1] + 2.0, alcove[2] - 2.0, alcove[3] + 2.0, pieces + [a for a, _ in alcoves]):
+                alcove_y = y - (climb if rise and t < length / 2 else 0.0)
+                s.box(alcove[0], alcove[1], alcove_y - 0.5, alcove_y, alcove[2], alcove[3])
+                c = np.array([(alcove[0] + alcove[1]) / 2, (alcove[2] + alcove[3]) / 2]) + side * out * 0.6
+                s.box(c[0] - 0.5, c[0] + 0.5, alcove_y - 0.3, alcove_y + 1.0, c[1] - 0.5, c[1] + 0.5)
+                alcoves.append((alcove, len(pieces)))
+        pieces.append(rect)
+        p = p + heading * (length - width / 2)
+    end = _rect(p, heading, 10.0, 10.0)  # the end room
+    s.box(end[0], end[1], y - 0.5, y, end[2], end[3])
+    return s.mesh()
+
+
+def roof_town(seed: int) -> trimesh.Trimesh:
+    """A town of flat roofs out of reach: a grid of 3-4 x 3 blocks 26-36 m square between streets 8-12 m wide,
+    each block cut into buildings 5-11 m wide and deep (so each roof is 20-120 m², walkable after erosion or not)
+    of 1-4 storeys (3.5-14 m), with parapets 0.8 m on a third, roof clutter (air-conditioning units 1.2 m, water
+    tanks on legs, stair huts ridged at 50 degrees); one building in ten has an outside flight up its facade from
+    the street to its roof (risers of at most 0.18 m, on a landing 2 m deep): the only roofs one reaches. Streets
+    hold parked cars, lamp posts and kiosks; courtyards inside the blocks are reached by a passage 3 m wide.
+
+    Expected (written before the first run): the streets and courtyards are one area; every roof out of reach is an
+    area of its own (a hundred and more), those under the cover's smallest area (28 m² for the presets) left out with a
+    warning, the larger ones covered with leaves of their own and no traffic. Traffic highest on the streets through
+    the town's middle, lowest in the courtyards and on the reachable roofs (dead ends up a flight).
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    nx, nz = int(rng.integers(3, 5)), 3
+    street = rng.uniform(8.0, 12.0)
+    xs = np.cumsum([street, *sum(([rng.uniform(26.0, 36.0), street] for _ in range(nx)), [])])
+    zs = np.cumsum([street, *sum(([rng.uniform(26.0, 36.0), street] for _ in range(nz)), [])])
+    holes: list[tuple[float, float, float, float]] = []
+    taken: list[tuple[float, float, float, float]] = []
+    for bx0, bx1 in zip(xs[0:-1:2], xs[1::2]):
+        for bz0, bz1 in zip(zs[0:-1:2], zs[1::2]):
+            # a ring of buildings round a courtyard: cut the block's edges into frontages 5-11 m
+            deep = rng.uniform(7.0, 11.0)
+            passage = int(rng.integers(4))  # the side whose middle holds the passage into the courtyard
+            frames = []
+            for side in range(4):
+                if side in (0, 1):  # the south and north rows run the block's whole width
+                    a0, a1 = bx0, bx1
+                else:  # the west and east rows between them
+                    a0, a1 = bz0 + deep, bz1 - deep
+                cuts = [a0]
+                while cuts[-1] < a1 - 11.0:
+                    cuts.append(cuts[-1] + rng.uniform(5.0, 11.0))
+                cuts.append(a1)
+                mid = (a0 + a1) / 2
+                for c0, c1 in pairwise(cuts):
+                    parts = [(c0, c1)]
+                    if side == passage and c0 < mid < c1:
+                        parts = [(u0, u1) for u0, u1 in ((c0, mid - 1.5), (mid + 1.5, c1)) if u1 - u0 > 3.0]
+                    for u0, u1 in parts:
+                        d = deep if side < 2 else rng.uniform(5.0, deep)
+                        frames.append(((u0, u1, bz0, bz0 + d) if side == 0 else (u0, u1, bz1 - d, bz1) if side == 1 else
+                                       (bx0, bx0 + d, u0, u1) if side == 2 else (bx1 - d, bx1, u0, u1)))
+            for x0, x1, z0, z1 in frames:
+                top = float(rng.choice([3.5, 7.0, 10.5, 14.0], p=[0.3, 0.35, 0.25, 0.1]))
+                s.box(x0, x1, -0.5, top, z0, z1)
+                holes.append((x0, x1, z0, z1))
+                street_side = (z0 == bz0, z1 == bz1)
+                stair = rng.random() < 0.1 and top <= 10.5 and any(street_side) and x1 - x0 > 4.0
+                if not stair and rng.random() < 1.0 / 3.0:  # a parapet
+                    s.wall((x0, z0 + 0.1), (x1, z0 + 0.1), top, top + 0.8, thickness=0.2)
+                    s.wall((x0, z1 - 0.1), (x1, z1 - 0.1), top, top + 0.8, thickness=0.2)
+                    s.wall((x0 + 0.1, z0), (x0 + 0.1, z1), top, top + 0.8, thickness=0.2)
+                    s.wall((x1 - 0.1, z0), (x1 - 0.1, z1), top, top + 0.8, thickness=0.2)
+                for _ in range(int(rng.integers(0, 3))):  # roof clutter
+                    w = rng.uniform(1.0, 2.0)
+                    if x1 - x0 < w + 1.0 or z1 - z0 < w + 1.0:
+                        continue
+                    q = rng.uniform([x0 + 0.5, z0 + 0.5], [x1 - 0.5 - w, z1 - 0.5 - w])
+                    if rng.random() < 0.5:
+                        s.box(q[0], q[0] + w, top - 0.1, top + 1.2, q[1], q[1] + w)
+                    else:
+                        _ridged(s, q[0], q[0] + w, q[1], q[1] + w, top - 0.1, top + 2.2)
+                if stair:  # a flight along x up the street facade to a landing at the roof's edge
+                    run = math.ceil(top / 0.18) * 0.28
+                    zf = z0 - 1.0 if street_side[0] else z1 + 1.0
+                    land = (x1 - 2.0, x1, z0 - 2.0, z0 + 0.01) if street_side[0] else (x1 - 2.0, x1, z1 - 0.01, z1 + 2.0)
+                    s.box(land[0], land[1], -0.5, top, land[2], land[3])
+                    _flight_to(s, np.array([land[0], zf]), np.array([1.0, 0.0]), 1.6, 0.0, top, 0.28)
+                    holes.append(land)
+                    taken.append((land[0] - run - 2.0, land[1] + 1.0, land[2] - 1.0, land[3] + 1.0))
+    for k in range(int(rng.integers(40, 60))):  # cars, lamp posts, kiosks on the streets
+        p = rng.uniform([0.0, 0.0], [xs[-1], zs[-1]])
+        if not _clear(p[0] - 3.0, p[0] + 3.0, p[1] - 3.0, p[1] + 3.0, holes + taken):
+            continue
+        if k % 3 == 0:
+            _car(s, p[0] - 2.1, p[0] + 2.1, p[1] - 0.9, p[1] + 0.9, 0.0)
+        elif k % 3 == 1:
+            _trunk(s, p, 0.12, -0.3, 4.5)
+        else:
+            _ridged(s, p[0] - 1.2, p[0] + 1.2, p[1] - 1.2, p[1] + 1.2, -0.5, 2.5)
+            holes.append((p[0] - 1.2, p[0] + 1.2, p[1] - 1.2, p[1] + 1.2))
+        taken.append((p[0] - 3.0, p[0] + 3.0, p[1] - 3.0, p[1] + 3.0))
+    s.ground(0.0, xs[-1], 0.0, zs[-1], 0.0, holes)
+    return s.mesh()
+
+
 KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
     "subway": subway, "archipelago": archipelago, "car_park": car_park,
     "forest": forest, "stadium": stadium, "harbour": harbour,
@@ -8602,6 +9252,8 @@ KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
     "nursery": nursery, "cliff_dwellings": cliff_dwellings,
     "drop_downs": drop_downs, "house": house, "pitched_roofs": pitched_roofs, "kit_arena": kit_arena,
     "spiral_towers": spiral_towers, "backdrop": backdrop,
+    "closed_doors": closed_doors, "paper_walls": paper_walls, "split_level": split_level, "hub_rooms": hub_rooms,
+    "corridor_shooter": corridor_shooter, "roof_town": roof_town,
 }
 """Kind name -> generator (seed -> Y-up mesh in metres)."""
 
