@@ -8842,9 +8842,9 @@ def paper_walls(seed: int) -> trimesh.Trimesh:
 
 def _split_house(s: _Solids, rng: np.random.Generator, x_at: float) -> tuple[float, float, float, float]:
     """One house of :func:`split_level` from x = ``x_at``, its front wall on z = 0: a front wing of three storeys at
-    0, 2h and 4h and a back wing of three at h, 3h and 5h (h 1.3-1.6 m), joined across a stair hall by five flights
+    0, 2h and 4h and a back wing of three at h, 3h and 5h (h 1.4-1.6 m), joined across a stair hall by five flights
     of 7-9 steps. Returns its plan (x0, x1, z0, z1), a hole for the ground round it."""
-    half = rng.uniform(1.3, 1.6)
+    half = rng.uniform(1.4, 1.6)
     steps = math.ceil(half / 0.18 - 1e-9)
     run, width = steps * 0.28, rng.uniform(24.0, 30.0)
     fd, bd = rng.uniform(9.0, 11.0), rng.uniform(9.0, 11.0)
@@ -8855,12 +8855,14 @@ def _split_house(s: _Solids, rng: np.random.Generator, x_at: float) -> tuple[flo
     front_door, back_door = rng.uniform(2.0, width - 4.0), rng.uniform(2.0, width - 4.0)
     s.box(x0, x1, -0.5, half, hall1, back1)  # the back wing's base
     s.box(x0, x1, -0.5, 0.0, 0.0, hall1)  # the front wing's and the hall's floor
+    for lane in lanes[:2]:  # walls between the lanes
+        s.wall((lane + 1.1, hall0), (lane + 1.1, hall1), -0.5, 5 * half + 2.6)
     for k in range(5):  # flight k joins storey k (front if even) to storey k + 1, in lane k % 3
         lane = lanes[k % 3]
         if k % 2 == 0:
-            s.stairs(np.array([lane, hall0]), np.array([0.0, 1.0]), 2.0, k * half, half, half / steps, 0.28, depth=0.45)
+            s.stairs(np.array([lane, hall0]), np.array([0.0, 1.0]), 2.0, k * half, half, half / steps, 0.28, depth=0.3)
         else:
-            s.stairs(np.array([lane, hall1]), np.array([0.0, -1.0]), 2.0, k * half, half, half / steps, 0.28, depth=0.45)
+            s.stairs(np.array([lane, hall1]), np.array([0.0, -1.0]), 2.0, k * half, half, half / steps, 0.28, depth=0.3)
     for k in range(6):
         y, front = k * half, k % 2 == 0
         z0, z1 = (0.0, hall0) if front else (hall1, back1)
@@ -8905,8 +8907,10 @@ def _split_house(s: _Solids, rng: np.random.Generator, x_at: float) -> tuple[flo
 def split_level(seed: int) -> trimesh.Trimesh:
     """Two split-level houses 8-12 m apart in a garden, each 24-30 m wide (:func:`_split_house`): a front wing 9-11 m
     deep of three storeys at 0, 2h and 4h and a back wing 9-11 m deep of three at h, 3h and 5h, the half storey h
-    1.3-1.6 m (its own each house; at 1.2 m a storey keeps 2.15 m of head room, too little for the presets' agent), joined across a stair hall by five short flights of 8-9 steps (risers of at most
-    0.18 m, 2 m wide, three lanes so a flight keeps head room under the one three half storeys above), each storey
+    1.4-1.6 m (its own each house: a flight's foot under the storey above keeps 2h less a riser and the slab of head
+    room, 2.27 m at h = 1.31 m, which closed it on a first draft), joined across a stair hall by five short flights of
+    8-9 steps (risers of at most
+    0.18 m, 2 m wide, three lanes between walls so a flight keeps head room under the one three half storeys above), each storey
     railed along the hall but at its two flights. On each storey a landing strip 2.2 m deep along the hall and rooms
     3.5-5 m wide behind it, a door 1.6 m wide each, 2-4 pieces of furniture a room; the top storeys are open roof
     terraces behind 2.6 m walls. A front door at the ground, a back door on the back wing's first storey (h up) with a
@@ -9187,7 +9191,10 @@ def roof_town(seed: int) -> trimesh.Trimesh:
                 s.box(x0, x1, -0.5, top, z0, z1)
                 holes.append((x0, x1, z0, z1))
                 street_side = (z0 == bz0, z1 == bz1)
-                stair = rng.random() < 0.1 and top <= 10.5 and any(street_side) and x1 - x0 > 4.0
+                run = math.ceil(top / 0.18) * 0.28
+                mouth = passage == (0 if street_side[0] else 1) and x1 - 2.0 - run < (bx0 + bx1) / 2 + 2.5 and \
+                    x1 > (bx0 + bx1) / 2 - 2.5  # a flight across the passage's mouth would close the courtyard
+                stair = rng.random() < 0.1 and top <= 10.5 and any(street_side) and x1 - x0 > 4.0 and not mouth
                 if not stair and rng.random() < 1.0 / 3.0:  # a parapet
                     s.wall((x0, z0 + 0.1), (x1, z0 + 0.1), top, top + 0.8, thickness=0.2)
                     s.wall((x0, z1 - 0.1), (x1, z1 - 0.1), top, top + 0.8, thickness=0.2)
@@ -9203,7 +9210,6 @@ def roof_town(seed: int) -> trimesh.Trimesh:
                     else:
                         _ridged(s, q[0], q[0] + w, q[1], q[1] + w, top - 0.1, top + 2.2)
                 if stair:  # a flight along x up the street facade to a landing at the roof's edge
-                    run = math.ceil(top / 0.18) * 0.28
                     zf = z0 - 1.0 if street_side[0] else z1 + 1.0
                     land = (x1 - 2.0, x1, z0 - 2.0, z0 + 0.01) if street_side[0] else (x1 - 2.0, x1, z1 - 0.01, z1 + 2.0)
                     s.box(land[0], land[1], -0.5, top, land[2], land[3])
