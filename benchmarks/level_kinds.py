@@ -8745,7 +8745,7 @@ def paper_walls(seed: int) -> trimesh.Trimesh:
     """A walled compound whose walls, fences and railings are paper: single quads with no thickness, one-sided and
     facing either way, standing up to 5 cm over the floor or sunk as far into it (:func:`_paper_run`), as a real
     level's file often has them. On closed ground 100-115 m square: 11-14 buildings 9-16 x 7-12 m, each of 2-4 rooms
-    behind paper partitions 3 m high with a gap 1.8 m wide, a paper door in its outer walls (2 m), solid
+    behind paper partitions 3 m high with a gap 1.8 m wide, a door 2 m wide in an end wall, solid
     furniture; half of them under a flat paper roof (one quad facing up, 3.2 m up: floor out of reach); a raised deck
     (a paper floor 3 m up, one quad facing up, on solid posts) 16-24 m long reached by a solid flight at each end,
     railed by paper railings 1.1 m high; paper fences 1.5 m high across the yard with gaps 2 m wide; a paper wall 3 m
@@ -8783,11 +8783,13 @@ def paper_walls(seed: int) -> trimesh.Trimesh:
         w, d = rng.uniform(9.0, 16.0), rng.uniform(7.0, 12.0)
         x0, z0 = rng.uniform(4.0, size - w - 4.0), rng.uniform(4.0, size - d - 4.0)
         x1, z1 = x0 + w, z0 + d
-        if not _clear(x0 - 4.0, x1 + 4.0, z0 - 4.0, z1 + 4.0, taken):
+        if not _clear(x0 - 1.5, x1 + 1.5, z0 - 1.5, z1 + 1.5, taken):
             continue
-        taken.append((x0, x1, z0, z1))
+        taken.append((x0 - 2.5, x1 + 2.5, z0 - 2.5, z1 + 2.5))  # fences and crates keep 2.5 m from its walls
         placed += 1
-        door_side, door_at = int(rng.integers(4)), rng.uniform(0.8, min(w, d) - 2.8)
+        # the door in an end wall (along the short side, as the partitions run: a first draft's door in a long
+        # wall could meet a partition and close the building)
+        door_side, door_at = int(rng.integers(2)) * 2 + (1 if w > d else 0), rng.uniform(0.8, min(w, d) - 2.8)
         corners = [(x0, z0), (x1, z0), (x1, z1), (x0, z1)]
         for k in range(4):
             _paper_run(s, rng, np.array(corners[k]), np.array(corners[(k + 1) % 4]), 0.0, 3.2,
