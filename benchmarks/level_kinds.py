@@ -1,4 +1,4 @@
-"""Level kinds of the fifth to nineteenth held-out rounds (issue 9): generators no preset setting was made on.
+"""Level kinds of the fifth to twentieth held-out rounds (issue 9): generators no preset setting was made on.
 
 Fifth round: six kinds, each about 1,000 navmesh polygons with the presets' agent (radius 0.5 m, height 2 m, climb 0.4 m):
 ``subway`` (platforms, track pits 1.2 m lower, stairs up to two concourses), ``archipelago`` (islands joined by
@@ -166,6 +166,19 @@ two landing wedges and treads 0.15 m thick at 16 wedges of 0.175 m, held none); 
 its foot, so a layout joins runs of tiles through the tile behind each flight (:func:`_kit_layout`; a first draft,
 whose flights could start against a wall and whose check counted a stair tile as floor of its own level, left 20 areas
 on seed 0, the same with its seams closed).
+
+Twentieth round: six more kinds with features of real exported levels, 431-846 navmesh polygons with that agent (seeds
+0-2): ``closed_doors`` (two blocks of rooms off corridors whose doorways keep their leaves, closed, ajar or gone),
+``paper_walls`` (a compound whose walls, fences, railings, roofs and a deck are one-sided quads with no thickness),
+``split_level`` (two houses of six half storeys 1.4-1.6 m apart joined by short flights across a stair hall),
+``hub_rooms`` (a caravanserai: two storeys of small rooms entered only from a courtyard and its gallery),
+``corridor_shooter`` (one path of corridors, alcoves and arenas) and ``roof_town`` (a town of flat roofs out of reach,
+a few reached by a flight). A lintel 2.25 m over the floor lets the presets' agent (2 m tall) pass at each of three
+offsets to Recast's grid tried, one of 2.15-2.2 m at some, one of 2.1 m (a real door's) at none (:func:`_doored_wall`:
+a first draft's 2.2 m lintels shut every room of the caravanserai, 58 areas on seed 0); a paper wall stops the agent as a solid one
+does (the same areas; 1.4 % more walkable area, the walls' thickness); a flight's foot under a storey keeps two half
+storeys less a riser and the slab of head room (2.26 m at 1.31 m a half storey closed a split-level house's storeys
+into three areas on a first draft's seed 2).
 
 Run: ``.venv/bin/python benchmarks/level_kinds.py OUT_DIR [--kinds subway forest] [--seeds 0 1 2]`` writes
 ``OUT_DIR/<kind>_s<seed>.obj``, the files ``benchmarks/analysis_quality.py --levels`` takes (which also takes the
@@ -8604,7 +8617,7 @@ def _doored_wall(s: _Solids, a: tuple[float, float], b: tuple[float, float], flo
                  doors: list[tuple[float, float, str, float]], thickness: float = 0.2) -> None:
     """A wall along x or z from plan point ``a`` to ``b`` from 0.5 m under the floor at ``floor`` up to ``y1`` (as
     :meth:`_Solids.wall`) whose doorways (start, width, leaf, into) have a lintel from 2.3 m over the floor (at 2.2 m
-    the presets' agent, 2 m tall, does not pass) and a leaf 5 cm thick and 2.15 m high as a level's file keeps it:
+    the presets' agent, 2 m tall, passes at some offsets to Recast's grid only) and a leaf 5 cm thick and 2.15 m high as a level's file keeps it:
     "closed" fills the doorway on the wall's line, "ajar" stands open at 90 degrees from the hinge at the doorway's
     start into the side ``into`` (+1 or -1 across the wall), "open" has none."""
     s.wall(a, b, floor - 0.5, y1, [(start, width) for start, width, _, _ in doors], thickness)
@@ -8910,7 +8923,7 @@ def split_level(seed: int) -> trimesh.Trimesh:
     """Two split-level houses 8-12 m apart in a garden, each 24-30 m wide (:func:`_split_house`): a front wing 9-11 m
     deep of three storeys at 0, 2h and 4h and a back wing 9-11 m deep of three at h, 3h and 5h, the half storey h
     1.4-1.6 m (its own each house: a flight's foot under the storey above keeps 2h less a riser and the slab of head
-    room, 2.27 m at h = 1.31 m, which closed it on a first draft), joined across a stair hall by five short flights of
+    room, 2.26 m at h = 1.31 m, which closed it on a first draft), joined across a stair hall by five short flights of
     8-9 steps (risers of at most
     0.18 m, 2 m wide, three lanes between walls so a flight keeps head room under the one three half storeys above), each storey
     railed along the hall but at its two flights. On each storey a landing strip 2.2 m deep along the hall and rooms

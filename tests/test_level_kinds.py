@@ -1,4 +1,4 @@
-"""The ninth to nineteenth rounds' level kinds (``benchmarks/level_kinds.py``) build the levels their docstrings describe.
+"""The ninth to twentieth rounds' level kinds (``benchmarks/level_kinds.py``) build the levels their docstrings describe.
 
 Smoke tests of quick generators (most well under a second each to build and to give a navmesh; the theatre's and
 the cliff dwellings' thousands of hulls take about 5 s of CPU): the connected areas
@@ -41,7 +41,8 @@ def areas(mesh, params: RecastParams | None = None) -> tuple[np.ndarray, object]
 def test_the_same_seed_gives_the_same_level(kinds):
     for kind in ("hall", "islets", "helix", "flooded", "stairhall", "quarry", "theme_park", "golf", "skatepark", "stepwell",
                  "railyard", "craters", "monastery", "estate", "dam", "garden", "cistern", "glacier", "medina", "radial_town",
-                 "bazaar", "stilt_village", "nursery", "drop_downs", "house", "kit_arena", "backdrop"):
+                 "bazaar", "stilt_village", "nursery", "drop_downs", "house", "kit_arena", "backdrop", "paper_walls",
+                 "corridor_shooter"):
         a, b, other = kinds[kind](0), kinds[kind](0), kinds[kind](1)
         assert np.array_equal(a.vertices, b.vertices) and np.array_equal(a.faces, b.faces), kind
         assert len(a.vertices) != len(other.vertices) or not np.array_equal(a.vertices, other.vertices), kind
@@ -766,3 +767,67 @@ def test_the_backdrops_square_is_apart_from_the_background_and_the_skybox_holds_
     assert len(inside) == 1 and (label == inside[0]).sum() == square.sum()
     assert label.max() > 20 and np.abs(x - 40.0).max() < 200.0 and y.max() < 180.0
 
+
+def test_rooms_behind_closed_leaves_are_islands_and_the_rest_one_area(kinds):
+    """A closed door's leaf is a wall for Recast: the rooms whose every door is closed are islands on the ground (each
+    a room's floor, under 60 m²), five or more on seed 0; the yard, corridors and the other rooms are one area."""
+    label, nav = areas(kinds["closed_doors"](0))
+    sizes = np.bincount(label, weights=nav.areas)
+    main = sizes.argmax()
+    assert sizes[main] > 5000.0 and len(sizes) >= 6
+    assert np.delete(sizes, main).max() < 60.0 and np.ptp(nav.centres[:, 1]) < 0.3
+
+
+def test_paper_walls_stop_the_agent_as_solid_walls_do(kinds, monkeypatch):
+    """Quads with no thickness, one-sided, as walls, fences and railings give the areas that walls 0.2 m thick in their
+    place give, and a walkable area within 3 % of theirs (the walls' thickness); the paper deck (one quad facing up,
+    3 m up) is floor joined by its flights."""
+    module = benchmark("level_kinds")
+    label, nav = areas(module.paper_walls(2))
+    main = np.bincount(label, weights=nav.areas).argmax()
+    assert (nav.centres[label == main, 1] > 3.0).any()
+
+    def solid(s, a, b, y0, y1, flip):
+        s.prism(module._strip(a, b, 0.2), y0, y1)
+
+    monkeypatch.setattr(module, "_paper", solid)
+    solid_label, solid_nav = areas(module.paper_walls(2))
+    assert label.max() == solid_label.max()
+    assert abs(nav.areas.sum() / solid_nav.areas.sum() - 1.0) < 0.03
+
+
+def test_the_split_level_houses_half_storeys_are_one_area(kinds):
+    """Garden, both houses' six half storeys (the front wing's at 0, 2h, 4h, the back wing's at h, 3h, 5h, h 1.4-1.6 m)
+    are one area through the short flights, with floor up to the top back storey (at least 7 m up)."""
+    label, nav = areas(kinds["split_level"](2))
+    assert label.max() == 0
+    assert nav.centres[:, 1].max() > 7.0
+
+
+def test_the_hub_rooms_open_only_on_the_courtyard_and_gallery(kinds):
+    """Street, courtyard, both storeys' rooms (doors 1.6 m wide under lintels 2.3 m up) and the gallery 4 m up are one
+    area (seed 0)."""
+    label, nav = areas(kinds["hub_rooms"](0))
+    assert label.max() == 0
+    y = nav.centres[:, 1] - 0.2
+    assert nav.areas[np.abs(y - 4.0) < 0.3].sum() > 400.0
+
+
+def test_the_corridor_shooter_is_one_path_hundreds_of_metres_long(kinds):
+    """Start, corridors, alcoves, arenas and their platforms are one area running east over 250 m."""
+    label, nav = areas(kinds["corridor_shooter"](1))
+    assert label.max() == 0
+    assert np.ptp(nav.centres[:, 0]) > 250.0 and (nav.centres[:, 1] > 1.5).any()
+
+
+def test_the_roof_towns_roofs_are_islands_over_one_town_of_streets(kinds):
+    """The streets and courtyards are one area on the ground; the other areas (scores) are roofs at 3.5, 7, 10.5 or
+    14 m."""
+    label, nav = areas(kinds["roof_town"](1))
+    sizes = np.bincount(label, weights=nav.areas)
+    main = sizes.argmax()
+    y = nav.centres[:, 1] - 0.2
+    assert np.abs(y[label == main]).max() < 10.7 and (np.abs(y[label == main]) < 0.3).mean() > 0.5
+    assert label.max() >= 50
+    roofs = y[label != main]
+    assert (np.min(np.abs(roofs[:, None] - np.array([3.5, 7.0, 10.5, 14.0])), axis=1) < 0.3).all()
