@@ -167,7 +167,7 @@ its foot, so a layout joins runs of tiles through the tile behind each flight (:
 whose flights could start against a wall and whose check counted a stair tile as floor of its own level, left 20 areas
 on seed 0, the same with its seams closed).
 
-Twentieth round: six more kinds with features of real exported levels, 431-846 navmesh polygons with that agent (seeds
+Twentieth round: six more kinds with features of real exported levels, 423-817 navmesh polygons with that agent (seeds
 0-2): ``closed_doors`` (two blocks of rooms off corridors whose doorways keep their leaves, closed, ajar or gone),
 ``paper_walls`` (a compound whose walls, fences, railings, roofs and a deck are one-sided quads with no thickness),
 ``split_level`` (two houses of six half storeys 1.4-1.6 m apart joined by short flights across a stair hall),
