@@ -8858,7 +8858,7 @@ def paper_walls(seed: int) -> trimesh.Trimesh:
 def _split_house(s: _Solids, rng: np.random.Generator, x_at: float) -> tuple[float, float, float, float]:
     """One house of :func:`split_level` from x = ``x_at``, its front wall on z = 0: a front wing of three storeys at
     0, 2h and 4h and a back wing of three at h, 3h and 5h (h 1.4-1.6 m), joined across a stair hall by five flights
-    of 7-9 steps. Returns its plan (x0, x1, z0, z1), a hole for the ground round it."""
+    of 8-9 steps. Returns its plan (x0, x1, z0, z1), a hole for the ground round it."""
     half = rng.uniform(1.4, 1.6)
     steps = math.ceil(half / 0.18 - 1e-9)
     run, width = steps * 0.28, rng.uniform(24.0, 30.0)
@@ -9163,6 +9163,9 @@ def roof_town(seed: int) -> trimesh.Trimesh:
     tanks on legs, stair huts ridged at 50 degrees); one building in ten has an outside flight up its facade from
     the street to its roof (risers of at most 0.18 m, on a landing 2 m deep): the only roofs one reaches. Streets
     hold parked cars, lamp posts and kiosks; courtyards inside the blocks are reached by a passage 3 m wide.
+    As built, each row's last frontage takes what is left of the block's edge, so some buildings are narrower: on
+    seeds 0 / 1 / 2, 16 / 12 / 21 of them under 5 m (the narrowest 1.35 / 0.63 / 1.1 m, the smallest roofs 11.5 /
+    4.4 / 7.6 m²).
 
     Expected (written before the first run): the streets and courtyards are one area; every roof out of reach is an
     area of its own (a hundred and more), those under the cover's smallest area (28 m² for the presets) left out with a
