@@ -4,6 +4,8 @@ point off the walkable ground refused."""
 
 from __future__ import annotations
 
+import dataclasses
+
 import networkx as nx
 import numpy as np
 import pytest
@@ -15,7 +17,7 @@ from g2s_core.errors import ConfigError
 from g2s_core.mesh import mesh_sha256
 from g2s_core.model import RunContext, RunResult
 from g2s_core.registry import Registry
-from g2s_plugins import traffic
+from g2s_plugins import evaluation, traffic
 from g2s_plugins.play_space import cut_to_play_space
 from tests.conftest import box
 from tests.test_analysis_quality import preset
@@ -38,9 +40,9 @@ def registry() -> Registry:
     return Registry.from_entry_points()
 
 
-def run(registry: Registry, mesh: trimesh.Trimesh, **graph_params) -> RunResult:
-    raw = preset("map_analysis", evaluators=[{"plugin": "traffic"}])
-    raw["graph"] = {**raw["graph"], "params": {**raw["graph"]["params"], **graph_params}}
+def run(registry: Registry, mesh: trimesh.Trimesh, name: str = "map_analysis", **graph_params) -> RunResult:
+    raw = preset(name, evaluators=[{"plugin": "traffic"}])
+    raw["graph"] = {**raw["graph"], "params": {**(raw["graph"].get("params") or {}), **graph_params}}
     return pipeline.run(pipeline.plan(parse_config(raw), registry), registry, mesh, "level", mesh_sha256(mesh))
 
 
@@ -62,6 +64,21 @@ def test_play_points_cut_the_platform_from_the_graph_and_say_so(registry):
         "and are left out"]
     # the room is measured alone: the structure's share of its polygons, not of the level's
     assert played.metrics["traffic"]["structure_share"] == played.structure.number_of_nodes() / len(played.graph)
+
+
+def test_the_sampling_route_s_reference_navmesh_is_cut_by_the_same_rule(registry):
+    played = run(registry, room_and_platform(), "map_analysis_sampling", play_points=[ROOM_CENTRE])
+    assert played.graph.number_of_nodes() > 0 and not on_platform(played, played.graph)
+    reference = evaluation.reference_flow(played)
+    cut = evaluation.navmesh_surface(played, reference)
+    # the same run read without its play points: the level's navmesh graph keeps the platform, on which no sample of
+    # the run stands, so its area would count as left out of the heat map
+    whole = evaluation.navmesh_surface(dataclasses.replace(played, config={**played.config, "graph": {
+        "plugin": "sampling"}}), reference)
+    platform = [node for node, pos in whole.graph.nodes(data="pos") if pos[1] > 2.5]
+    assert platform and not [node for node, pos in cut.graph.nodes(data="pos") if pos[1] > 2.5]
+    assert cut.graph.number_of_nodes() == whole.graph.number_of_nodes() - len(platform)
+    assert played.metrics["traffic"]["navmesh_area_left_out"] == 0.0
 
 
 def test_a_play_point_in_mid_air_is_bad_input(tmp_path):
