@@ -33,7 +33,7 @@ for each run, the number of navmesh regions left overlapping themselves in plan
 detail heights Recast read from another storey, rebuilt ("detail",
 :attr:`g2s_plugins.recast.NavMesh.detail_redone_polygons`; all three "-" without a
 navmesh). ``--presets`` takes preset names or config files (a file extending a
-preset with other parameters; one whose ``coverage`` terminals name ``play_points`` is measured over its play space
+preset with other parameters; one whose graph builder names ``play_points`` is measured over its play space
 alone, "polys" counting its polygons); ``--levels`` also takes mesh files (any format
 ``g2s run`` reads, Y-up metres), so the same table can be made for levels of
 one's own, and the level kinds of ``benchmarks/level_kinds.py`` (each built with ``seed=s``); ``--yaws`` runs every level also turned by those angles (degrees,
@@ -161,7 +161,7 @@ def main(argv: list[str] | None = None, registry: Registry | None = None) -> Non
             rho, rho_area, abw, ceiling, rho_nav, ceiling_nav, nav_out = (q.get(k, float("nan")) for k in (
                 "rho", "rho_area", "rho_area_betweenness", "rho_ceiling", "rho_navmesh", "rho_navmesh_ceiling",
                 "navmesh_area_left_out"))
-            polygons = traffic.surface_arrays(evaluation.in_play_space(result).graph).n  # the nodes the measures count
+            polygons = traffic.surface_arrays(result.graph).n  # the nodes the measures count (the play space's, when named)
             navmesh = result.context.navmesh
             overlaps, redone, detail = ("-", "-", "-") if navmesh is None else (
                 len(navmesh.region_overlaps), len(navmesh.repartitioned_tiles), len(navmesh.detail_redone_polygons))

@@ -88,15 +88,14 @@ The measures (all along the initial walkable graph, distances in metres):
     to (no sample that reaches the structure on or near it; on the navmesh
     route: the nodes that reach no structure, which ``rho`` leaves out too).
 
-Play space. A run whose ``coverage`` terminals name ``play_points`` (the
-play space of a level whose file also holds background ground) is measured
-over that space only (:func:`in_play_space`): every measure above is taken
-on the subgraph of the connected areas holding a play point, the rule of
-:func:`g2s_plugins.terminals.coverage.play_space` that chose the terminals,
-so the shares' totals (area, reference flow, nodes) are the play space's and
-the reference flow is walked, and its sources drawn, there alone; off the
-navmesh route the reference navmesh graph is cut by the same rule. Without
-``play_points`` nothing changes.
+Play space. A run whose graph builder names ``play_points`` (the play space
+of a level whose file also holds background ground) has an initial graph cut
+to that space where it was built (:mod:`g2s_plugins.play_space`), so every
+measure above is the play space's with no rule of its own here: the shares'
+totals (area, reference flow, nodes) are its, and the reference flow is
+walked, and its sources drawn, there alone. Off the navmesh route the
+reference navmesh graph is cut by the same rule
+(:func:`g2s_plugins.play_space.play_space_graph`).
 
 Cost: two multi-source Dijkstra searches plus the reference flow (see
 :func:`g2s_plugins.traffic.od_flow`). Off the navmesh route the navmesh
@@ -108,7 +107,6 @@ built leaves them out.
 
 from __future__ import annotations
 
-import dataclasses
 import math
 from collections.abc import Hashable, Iterable, Mapping
 from dataclasses import dataclass
@@ -119,9 +117,8 @@ from scipy.sparse import csgraph
 from scipy.spatial import cKDTree
 
 from g2s_core.model import RunResult
-from g2s_plugins import centrality, traffic
+from g2s_plugins import centrality, play_space, traffic
 from g2s_plugins.graph_builders import navmesh as navmesh_builder
-from g2s_plugins.terminals import coverage
 from g2s_plugins.recast import NavMesh, SettingsError, build_navmesh
 
 RADII = (3.0, 6.0, 10.0)
@@ -196,33 +193,6 @@ def reference_flow(result: RunResult, max_sources: int = REFERENCE_SOURCES, seed
     split (:data:`REFERENCE_TIES`)."""
     return traffic.walking_flow(result.graph, max_sources, seed, exact_up_to=traffic.EXACT_NODES, ties=REFERENCE_TIES,
                                 scaling=REFERENCE_SCALING)
-
-
-def play_points(result: RunResult) -> list[list[float]] | None:
-    """The play points the run's ``coverage`` terminals name (``play_points``), None when it names none."""
-    terminals = result.config.get("terminals") or {}
-    if terminals.get("plugin") != coverage.NAME:
-        return None
-    return (terminals.get("params") or {}).get("play_points")
-
-
-def in_play_space(result: RunResult) -> RunResult:
-    """The run with its initial graph cut to its play space (:func:`play_points`,
-    :func:`g2s_plugins.terminals.coverage.play_space`); the run itself when it names none. The structure's nodes
-    all lie there: the cover gives the other areas no terminal."""
-    points = play_points(result)
-    if points is None:
-        return result
-    return dataclasses.replace(result, graph=_play_space_graph(result.graph, result.context.navmesh, points,
-                                                               result.context.agent.height))
-
-
-def _play_space_graph(graph: nx.Graph, navmesh: NavMesh | None, points: list[list[float]], reach: float) -> nx.Graph:
-    """A copy of ``graph`` cut to the connected areas holding one of ``points``
-    (:func:`g2s_plugins.terminals.coverage.play_space`)."""
-    keep = coverage.play_space(graph, navmesh, points, reach)
-    nodes = traffic.surface_arrays(graph).nodes
-    return graph.subgraph([nodes[i] for i in np.flatnonzero(keep)]).copy()
 
 
 def nearest_structure_rows(result: RunResult) -> np.ndarray:
@@ -320,9 +290,9 @@ def navmesh_surface(result: RunResult, reference: np.ndarray, max_sources: int =
     except (SettingsError, RuntimeError):
         return None
     graph = navmesh_builder.navmesh_graph(navmesh, context.agent, params.max_edge_gap)
-    points = play_points(result)
-    if points is not None:  # the level's walking flow in the run's play space, by the rule that chose its terminals
-        graph = _play_space_graph(graph, navmesh, points, context.agent.height)
+    points = play_space.play_points(result.config)
+    if points is not None:  # the level's walking flow in the run's play space, by the rule that cut the run's graph
+        graph = play_space.play_space_graph(graph, navmesh, points, context.agent.height)
     navmesh_arrays = traffic.surface_arrays(graph)
     polygon_rows = np.full(navmesh.polygon_count, -1, dtype=np.int64)
     kept_polygons = [polygon for polygon in range(navmesh.polygon_count) if polygon in graph]
@@ -439,15 +409,13 @@ def evaluate(
     max_sources: int = REFERENCE_SOURCES,
     seed: int = 0,
 ) -> Quality:
-    """The measures of a run that got to the analysis (see the module docs), over its play space when it names one
-    (:func:`in_play_space`).
+    """The measures of a run that got to the analysis (see the module docs).
 
     Args:
-        reference: :func:`reference_flow` of the same graph (cut to the play space), when already known
+        reference: :func:`reference_flow` of the same graph, when already known
             (it depends only on the graph, not on the preset).
         max_sources, seed: the reference flows' source sample (:func:`reference_flow`).
     """
-    result = in_play_space(result)
     arrays = traffic.surface_arrays(result.graph)
     if reference is None:
         reference = reference_flow(result, max_sources, seed)

@@ -142,7 +142,7 @@ def test_the_check_finds_what_g2s_refuses():
     assert command_problems("g2s batch map_analysis levels/ -o runs --executor dusk --evaluate traffic") != []
     assert command_problems("g2s demo --format json,gbl") != []
     assert command_problems("g2s --verbos run map_analysis level.obj -o out") == ["g2s has no option --verbos"]
-    assert command_problems("g2s run map_analysis l.obj -o out --set 'terminals.params.play_points=[[1,0,2]]'") == []
+    assert command_problems("g2s run map_analysis l.obj -o out --set 'graph.params.play_points=[[1,0,2]]'") == []
     assert command_problems("g2s COMMAND --help") == command_problems("g2s batch CONFIG -o OUTDIR [--workers N]") == []
 
 

@@ -1,7 +1,10 @@
-"""The play space (``coverage``'s ``play_points``): terminals only in the areas holding a play point, the ``traffic``
-evaluator's measures over those areas only, and a point off the walkable ground refused."""
+"""The play space (``graph.params.play_points``): the initial graph cut to the areas holding a play point where it is
+built, so terminals, walking-flow percentiles and the ``traffic`` evaluator's measures see those areas alone, and a
+point off the walkable ground refused."""
 
 from __future__ import annotations
+
+import dataclasses
 
 import networkx as nx
 import numpy as np
@@ -10,10 +13,12 @@ import trimesh
 
 from g2s_core import pipeline
 from g2s_core.config import AgentConfig, parse_config
+from g2s_core.errors import ConfigError
 from g2s_core.mesh import mesh_sha256
 from g2s_core.model import RunContext, RunResult
 from g2s_core.registry import Registry
-from g2s_plugins import evaluation
+from g2s_plugins import evaluation, traffic
+from g2s_plugins.play_space import cut_to_play_space
 from tests.conftest import box
 from tests.test_analysis_quality import preset
 from tests.test_cli import assert_user_error, g2s
@@ -35,9 +40,9 @@ def registry() -> Registry:
     return Registry.from_entry_points()
 
 
-def run(registry: Registry, mesh: trimesh.Trimesh, **terminal_params) -> RunResult:
-    raw = preset("map_analysis", evaluators=[{"plugin": "traffic"}])
-    raw["terminals"] = {**raw["terminals"], "params": {**raw["terminals"]["params"], **terminal_params}}
+def run(registry: Registry, mesh: trimesh.Trimesh, name: str = "map_analysis", **graph_params) -> RunResult:
+    raw = preset(name, evaluators=[{"plugin": "traffic"}])
+    raw["graph"] = {**raw["graph"], "params": {**(raw["graph"].get("params") or {}), **graph_params}}
     return pipeline.run(pipeline.plan(parse_config(raw), registry), registry, mesh, "level", mesh_sha256(mesh))
 
 
@@ -45,63 +50,78 @@ def on_platform(result: RunResult, nodes) -> list:
     return [node for node in nodes if result.graph.nodes[node]["pos"][1] > 2.5]
 
 
-def test_play_points_leave_the_platform_without_terminals_and_say_so(registry):
+def test_play_points_cut_the_platform_from_the_graph_and_say_so(registry):
     mesh = room_and_platform()
     everywhere = run(registry, mesh)
     assert on_platform(everywhere, everywhere.terminals.nodes) and on_platform(everywhere, everywhere.structure)
     played = run(registry, mesh, play_points=[ROOM_CENTRE])
-    assert not on_platform(played, played.terminals.nodes) and not on_platform(played, played.structure)
-    assert played.terminals.nodes and played.structure.number_of_nodes() > 0
-    left_out = [w for w in played.warnings if "play point" in w]
-    platform_area = sum(a for _, a in played.graph.nodes(data="area") if _ in on_platform(played, played.graph))
-    assert left_out == [f"coverage: 1 walkable area(s) ({platform_area:.3g} m² in all) hold no play point "
-                        "(terminals.params.play_points) and get no terminals"]
+    assert not on_platform(played, played.graph) and played.terminals.nodes and played.structure.number_of_nodes() > 0
+    platform = on_platform(everywhere, everywhere.graph)
+    assert played.graph.number_of_nodes() == everywhere.graph.number_of_nodes() - len(platform)
+    platform_area = sum(everywhere.graph.nodes[node]["area"] for node in platform)
+    assert [w for w in played.warnings if "play point" in w] == [
+        f"graph: 1 walkable area(s) ({platform_area:.3g} m² in all) hold no play point (graph.params.play_points) "
+        "and are left out"]
     # the room is measured alone: the structure's share of its polygons, not of the level's
-    room = [node for node in played.graph if node not in on_platform(played, played.graph)]
-    assert played.metrics["traffic"]["structure_share"] == played.structure.number_of_nodes() / len(room)
+    assert played.metrics["traffic"]["structure_share"] == played.structure.number_of_nodes() / len(played.graph)
+
+
+def test_the_sampling_route_s_reference_navmesh_is_cut_by_the_same_rule(registry):
+    played = run(registry, room_and_platform(), "map_analysis_sampling", play_points=[ROOM_CENTRE])
+    assert played.graph.number_of_nodes() > 0 and not on_platform(played, played.graph)
+    reference = evaluation.reference_flow(played)
+    cut = evaluation.navmesh_surface(played, reference)
+    # the same run read without its play points: the level's navmesh graph keeps the platform, on which no sample of
+    # the run stands, so its area would count as left out of the heat map
+    whole = evaluation.navmesh_surface(dataclasses.replace(played, config={**played.config, "graph": {
+        "plugin": "sampling"}}), reference)
+    platform = [node for node, pos in whole.graph.nodes(data="pos") if pos[1] > 2.5]
+    assert platform and not [node for node, pos in cut.graph.nodes(data="pos") if pos[1] > 2.5]
+    assert cut.graph.number_of_nodes() == whole.graph.number_of_nodes() - len(platform)
+    assert played.metrics["traffic"]["navmesh_area_left_out"] == 0.0
 
 
 def test_a_play_point_in_mid_air_is_bad_input(tmp_path):
     mesh = tmp_path / "level.obj"
     room_and_platform().export(mesh)
     proc = g2s("run", "map_analysis", str(mesh), "-o", str(tmp_path / "out"),
-               "--set", "terminals.params.play_points=[[10, 0, 10], [10, 8, 10]]")
-    assert_user_error(proc, "terminals.params.play_points[1]: (10, 8, 10) has no walkable node within 2 m (the agent's "
+               "--set", "graph.params.play_points=[[10, 0, 10], [10, 8, 10]]")
+    assert_user_error(proc, "graph.params.play_points[1]: (10, 8, 10) has no walkable node within 2 m (the agent's "
                             "height); expected a point on the play space's walkable ground")
 
 
-def two_paths() -> tuple[nx.Graph, trimesh.Trimesh]:
-    """A play path of 10 nodes 1 m apart (rows 0-9, 1 m² each) on a slab 10 m x 4 m, and a background path of 10
-    more (100-109) on a slab 90 m beyond it."""
+def test_the_coverage_selector_takes_no_play_points(registry):
+    raw = preset("map_analysis")
+    raw["terminals"] = {**raw["terminals"], "params": {**raw["terminals"]["params"], "play_points": [ROOM_CENTRE]}}
+    with pytest.raises(ConfigError, match=r"terminals\.params\.play_points: unknown key"):
+        pipeline.plan(parse_config(raw), registry)
+
+
+def two_paths() -> nx.Graph:
+    """A play path of 5 nodes 1 m apart (0-4, 1 m² each) and, 90 m beyond it, a bigger background path of 9 (100-108):
+    on a path of unit areas the exact walking flow through a node is 2 x (nodes left of it) x (nodes right of it)."""
     graph = nx.Graph()
-    for first, x0 in ((0, 0.0), (100, 100.0)):
-        for i in range(10):
+    for first, x0, count in ((0, 0.0, 5), (100, 100.0, 9)):
+        for i in range(count):
             graph.add_node(first + i, pos=(x0 + i + 0.5, 0.0, 2.0), area=1.0)
-        nx.add_path(graph, range(first, first + 10), weight=1.0)
-    mesh = trimesh.util.concatenate([box(0, 10, -0.2, 0, 0, 4), box(100, 110, -0.2, 0, 0, 4)])
-    return graph, mesh
+        nx.add_path(graph, range(first, first + count), weight=1.0)
+    graph.graph["sampling_stats"] = {"spacing": 1.0}
+    return graph
 
 
-def evaluated(graph: nx.Graph, mesh: trimesh.Trimesh, play_points) -> evaluation.Quality:
-    """The measures of a run whose structure is nodes 0 -> 1 (heat 1 and 2) on ``graph``."""
-    params = {} if play_points is None else {"play_points": play_points}
-    result = RunResult(config={"terminals": {"plugin": "coverage", "params": params}}, mesh_name="level",
-                       mesh_sha256="", context=RunContext(mesh=mesh, agent=AgentConfig(), centre=np.zeros(3)),
-                       graph=graph, steiner=nx.Graph([(0, 1)]), structure=nx.DiGraph([(0, 1)]),
-                       analysis={"flow": {0: 1.0, 1: 2.0}})
-    return evaluation.evaluate(result, radii=(3.0,))
-
-
-def test_the_shares_are_the_play_space_s_when_the_run_names_one():
-    graph, mesh = two_paths()
-    level, played = evaluated(graph, mesh, None), evaluated(graph, mesh, [[0.5, 0.0, 2.0]])
-    # nodes 0-4 lie within 3 m of the structure (node 4 is 3 m from node 1): 5 m² of the level's 20, of the play
-    # path's 10; the structure's 2 nodes of 20 and of 10
-    assert (level.area_within[3.0], level.structure_share) == (0.25, 0.1)
-    assert (played.area_within[3.0], played.structure_share) == (0.5, 0.2)
-    # the background path carried flow of its own, all more than 5 m from the structure; over the play space the
-    # shares and rho are those of the play path alone
-    alone = graph.subgraph(range(10)).copy()
-    path_only = evaluated(alone, mesh, None)
-    assert level.traffic_off > played.traffic_off == path_only.traffic_off > 0
-    assert played.rho == path_only.rho
+def test_the_play_space_s_busiest_node_tops_its_percentiles():
+    graph = two_paths()
+    context = RunContext(mesh=trimesh.Trimesh(), agent=AgentConfig(), centre=np.zeros(3))
+    whole = traffic.walking_flow(graph, exact_up_to=traffic.EXACT_NODES)
+    # flows 0, 6, 8, 6, 0 on the play path, 0, 14, 24, 30, 32, ... on the background's: among all 14 nodes the play
+    # path's busiest (8) ranks 7th, above the four zeros and the two 6s, below every background node with flow:
+    # 100 (7 - 0.5) / 14
+    assert traffic.percentile(whole)[2] == pytest.approx(100 * 6.5 / 14)
+    played = cut_to_play_space(graph, [[0.5, 0.0, 2.0]], context)
+    assert list(played) == [0, 1, 2, 3, 4] and played.graph["sampling_stats"] == {"spacing": 1.0}
+    assert context.warnings == ["graph: 1 walkable area(s) (9 m² in all) hold no play point (graph.params.play_points) "
+                                "and are left out"]
+    # over the play space alone it is the top of 5: 100 (5 - 0.5) / 5
+    assert traffic.percentile(traffic.walking_flow(played, exact_up_to=traffic.EXACT_NODES)).tolist() == \
+        [20.0, 60.0, 90.0, 60.0, 20.0]
+    assert cut_to_play_space(graph, None, context) is graph

@@ -8,8 +8,9 @@ undefined), ``rho_area`` (the same, each node weighted by its area),
 ``rho_area_betweenness``, ``rho_ceiling``, ``structure_share``,
 and ``rho_navmesh``, ``rho_navmesh_ceiling`` and ``navmesh_area_left_out``
 (the heat map against the reference flow on the level's navmesh graph; the
-run's own graph on the navmesh route). A run whose coverage terminals name
-``play_points`` is measured over its play space only.
+run's own graph on the navmesh route). A run whose graph builder names
+``play_points`` is measured over its play space only (its graph is cut
+there, :mod:`g2s_plugins.play_space`).
 Cost: the reference flow (exact up to
 :data:`g2s_plugins.traffic.EXACT_NODES` nodes, one Dijkstra search of the
 initial graph per node; above, ``reference_sources`` searches) and two
@@ -49,8 +50,7 @@ class Params(PluginParams):
 
 @hookimpl
 def g2s_evaluate(result: RunResult, params: Params, context: RunContext) -> dict[str, float]:
-    """The measures of a run that got to simplification (the analyzers' first key is the heat map), over its play
-    space when it names one (:func:`g2s_plugins.evaluation.in_play_space`)."""
+    """The measures of a run that got to simplification (the analyzers' first key is the heat map)."""
     radii = tuple(sorted(set(params.radii)))
     return evaluation.evaluate(result, None, radii, params.off_distance, params.reference_sources,
                                params.seed).measures()

@@ -60,14 +60,16 @@ from g2s_core.errors import G2SError
 from g2s_core.model import graph_of
 from g2s_core.plugin import hookimpl
 from g2s_plugins._surface import MAX_SURFACE_GAP
+from g2s_plugins.play_space import PlaySpaceParams, cut_to_play_space
 from g2s_plugins.recast import NavMesh, RecastParams, SettingsError, build_navmesh
 from g2s_plugins.walkable_check import check_walkable_surface, no_walkable_surface
 
 NAME = "navmesh"
 
 
-class Params(RecastParams):
-    """Recast build parameters (see :class:`g2s_plugins.recast.RecastParams`) and the crest rule."""
+class Params(RecastParams, PlaySpaceParams):
+    """Recast build parameters (see :class:`g2s_plugins.recast.RecastParams`), the crest rule and the play space
+    (:class:`g2s_plugins.play_space.PlaySpaceParams`)."""
 
     max_edge_gap: float | None = Field(
         MAX_SURFACE_GAP, gt=0,
@@ -336,7 +338,8 @@ def overlapping_regions_warning(overlaps: np.ndarray, partition: str) -> str:
 
 @hookimpl
 def g2s_build_graph(mesh, params, context):
-    """Build the navmesh of ``mesh`` for ``context.agent`` and return its polygon graph.
+    """Build the navmesh of ``mesh`` for ``context.agent`` and return its polygon graph, cut to the play space
+    when ``params.play_points`` names one (:func:`g2s_plugins.play_space.cut_to_play_space`).
 
     Raises:
         G2SError: a setting or the level's size that Recast cannot handle
@@ -362,4 +365,4 @@ def g2s_build_graph(mesh, params, context):
         context.warn(overlapping_regions_warning(navmesh.region_overlaps, params.partition))
     graph = navmesh_graph(navmesh, context.agent, params.max_edge_gap)
     check_walkable_surface(graph, mesh, context)
-    return graph
+    return cut_to_play_space(graph, params.play_points, context)

@@ -90,7 +90,7 @@ from scipy.spatial import cKDTree
 
 from g2s_core.errors import G2SError
 from g2s_core.model import RunContext
-from g2s_core.plugin import PluginParams, hookimpl
+from g2s_core.plugin import hookimpl
 from g2s_plugins._raycasting import (
     COMPASS,
     EPSILON,
@@ -110,6 +110,7 @@ from g2s_plugins._raycasting import (
     ray_margin,
     walk_segments,
 )
+from g2s_plugins.play_space import PlaySpaceParams, cut_to_play_space
 from g2s_plugins.walkable_check import check_walkable_surface, no_walkable_surface
 
 NAME = "sampling"
@@ -129,8 +130,9 @@ GAP_STRETCH = 2.0
 between them is longer than this many times their distance (see :func:`_gap_pairs`)."""
 
 
-class Params(PluginParams):
-    """Sampling method and density, edge rules and clean-up."""
+class Params(PlaySpaceParams):
+    """Sampling method and density, edge rules, clean-up and the play space
+    (:class:`g2s_plugins.play_space.PlaySpaceParams`)."""
 
     method: Literal["poisson", "grid"] = Field(
         "poisson", description="poisson: Poisson-disk samples; grid: regular XZ grid dropped on the surface"
@@ -801,7 +803,8 @@ def build_sampled_graph(
 
 @hookimpl
 def g2s_build_graph(mesh: trimesh.Trimesh, params: Params, context: RunContext) -> nx.Graph:
-    """Sample the walkable surface of ``mesh`` for ``context.agent`` and join the samples the agent can walk between.
+    """Sample the walkable surface of ``mesh`` for ``context.agent`` and join the samples the agent can walk between;
+    cut to the play space when ``params.play_points`` names one (:func:`g2s_plugins.play_space.cut_to_play_space`).
 
     Raises:
         G2SError: no place on the mesh where this agent fits (a property of the
@@ -811,4 +814,4 @@ def g2s_build_graph(mesh: trimesh.Trimesh, params: Params, context: RunContext) 
     if graph.number_of_nodes() == 0:
         raise no_walkable_surface(mesh, context.agent, "no sample where it fits")
     check_walkable_surface(graph, mesh, context)
-    return graph
+    return cut_to_play_space(graph, params.play_points, context)

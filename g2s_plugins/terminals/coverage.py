@@ -145,31 +145,11 @@ rho. After the cover (and ``quiet_step``), the dents the cover holds within
 Measured in docs/analysis_quality.md ("Dents between posts and corners").
 ``0`` (the default) keeps every dent, unchanged.
 
-Play space (``play_points``). A level's file often holds more walkable
-ground than its play space: a backdrop of terrain round a town square, roofs,
-ground outside the walls. Measured on the ``backdrop`` level kind
-(benchmarks/level_kinds.py, seed 0, ``map_analysis``), 649 of 710
-structure nodes and 918 of 1,039 terminals (waypoints counted) stood on
-background no one reaches from the square; with the square's centre as the
-play point, 64 and 121, none there (docs/plugins.md, ``coverage``). With
-``play_points`` (points [x, y, z] in the mesh frame, metres) only the
-connected areas of the graph that hold a point get terminals; the others get
-none (their leaves are not seeded), and one warning says how many and how
-much area were left out. A point belongs to the area of its nearest node
-within the agent's height in 3D (:func:`play_space`): a node's distance is to
-its navmesh polygon where it has one (Detour's nearest point on it: a
-polygon of a hall may be 20 m across, its centre far from the point), to its
-position otherwise (a sample). A point with no node that near (in mid-air,
-inside a wall, in the wrong frame) is bad input. The ``traffic`` evaluator
-measures a run that names a play space over that space only
-(:func:`g2s_plugins.evaluation.in_play_space`, the same rule).
-
 Complexity: O(m + n log n) for step 1 plus, per added path, a Dijkstra over
 the nodes that path brings closer (in practice the area around it); with
 ``traffic_weight`` > 0, that twice, plus the walking flow, O(k (m + n log n))
 for k = 256 sources, unless the run's ``flow`` analyzer already needs it;
-with ``play_points``, a k-d tree of the nodes and a Detour look-up per
-point, O(n log n + p log n); with ``recess_depth`` > 0, one more multi-source Dijkstra, limited to
+with ``recess_depth`` > 0, one more multi-source Dijkstra, limited to
 ``radius``; with ``quiet_step`` > 0, the walking flow (once, as above)
 and a walk up each leaf's chain; with ``dent_rho_budget`` > 0, those, two
 multi-source Dijkstras and a sort of the k dents, O(k c nvp + m + n log n +
@@ -180,18 +160,14 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Annotated
 
 import networkx as nx
 import numpy as np
-import numpy.typing as npt
 import rustworkx as rx
 import scipy.sparse as sp
-from pydantic import Field, Strict
+from pydantic import Field
 from scipy.sparse import csgraph
-from scipy.spatial import cKDTree
 
-from g2s_core.errors import G2SError
 from g2s_core.model import NavMesh, RunContext, Terminals
 from g2s_core.plugin import PluginParams, hookimpl
 from g2s_plugins import _trees, traffic
@@ -225,12 +201,6 @@ class Params(PluginParams):
     quiet_step: float = Field(0.0, ge=0, description="a leaf whose dead end (it and the chain of degree-2 nodes behind it) is less than this many walking-flow percentile points quieter than the node it opens onto, which the cover holds within the cover radius, is no terminal; 0: every leaf")
     dent_depth: float = Field(0.0, ge=0, description="a leaf whose dead end (it and the chain of degree-2 nodes behind it) lies within this many metres of its way in is a dent, which dent_rho_budget may drop; 0: no dents; leaves without a polygon (the sampling route) are no dent")
     dent_rho_budget: float = Field(0.0, ge=0, le=1, description="dents the cover holds within the cover radius without them are no terminal, least first by the Spearman rho their heat map would lose taking the walking-flow percentile of the terminal nearest their way in, while that estimated loss summed stays within this; 0: every dent")
-    play_points: list[Annotated[tuple[float, float, float], Strict(False)]] | None = Field(
-        None, min_length=1, strict=False,
-        description="points [x, y, z] in the play space (mesh frame, metres): only the connected walkable areas holding "
-                    "a node within the agent's height of one (3D; a navmesh node's distance is to its polygon) get "
-                    "terminals, the others none (a warning says how much was left out), and the traffic evaluator "
-                    "measures those areas only; null: every area")
 
 
 def default_radius(context: RunContext) -> float:
@@ -282,15 +252,7 @@ def cover(graph: nx.Graph, params: Params, context: RunContext) -> Cover:
     count, labels = csgraph.connected_components(adjacency, directed=False)
     component_area = np.bincount(labels, weights=arrays.area, minlength=count)
     small = component_area < min_area
-    outside = np.zeros(count, dtype=bool)
-    if params.play_points is not None:
-        outside = np.bincount(labels, weights=play_space(graph, context.navmesh, params.play_points,
-                                                         context.agent.height), minlength=count) == 0
-        if outside.any():
-            context.warn(f"coverage: {int(outside.sum())} walkable area(s) ({component_area[outside].sum():.3g} m² "
-                         f"in all) hold no play point (terminals.params.play_points) and get no terminals")
     leaves = np.flatnonzero(degree == 1)
-    leaves = leaves[~outside[labels[leaves]]]
     if params.leaf_min_depth > 0:
         depths = leaf_depths(graph, context.navmesh, [arrays.nodes[i] for i in leaves.tolist()])
         leaves = leaves[depths >= params.leaf_min_depth]
@@ -301,14 +263,14 @@ def cover(graph: nx.Graph, params: Params, context: RunContext) -> Cover:
     has_leaf = np.zeros(count, dtype=bool)
     has_leaf[labels[leaves]] = True
     # a small area with leaves keeps them as terminals (its own tree joins them): only the others are left out
-    left_out = small & ~has_leaf & ~outside
+    left_out = small & ~has_leaf
     if left_out.any():
         context.warn(
             f"coverage: {int(left_out.sum())} walkable area(s) smaller than {min_area:.3g} m² "
             f"({component_area[left_out].sum():.3g} m² in all) are not covered"
         )
-    seeds = np.concatenate([leaves, _seeds(adjacency, labels, has_leaf, small | outside)])
-    eligible = ~(small | outside)[labels]
+    seeds = np.concatenate([leaves, _seeds(adjacency, labels, has_leaf, small)])
+    eligible = ~small[labels]
     if reads_traffic:
         rank = walking_percentile(arrays, params.traffic_sources, params.traffic_ties, params.traffic_scaling)
     if params.traffic_weight > 0:
@@ -326,43 +288,6 @@ def cover(graph: nx.Graph, params: Params, context: RunContext) -> Cover:
                                     params.dent_depth, rows, radius, params.dent_rho_budget)
         leaves, seeds, rows = (np.setdiff1d(rows_, dents) for rows_ in (leaves, seeds, rows))
     return Cover(arrays, np.sort(leaves), np.unique(seeds), rows)
-
-
-def play_space(graph: nx.Graph, navmesh: NavMesh | None, points: npt.ArrayLike, reach: float) -> np.ndarray:
-    """(n,) bool per row of :func:`g2s_plugins.traffic.surface_arrays` of ``graph``: the nodes of the connected
-    areas that hold one of the (p, 3) ``points`` (mesh frame, metres).
-
-    A point belongs to the area of its nearest node within ``reach`` metres
-    in 3D (the agent's height): a node's distance is to its ``navmesh``
-    polygon where it has one (``polygon`` >= 0; Detour's nearest point on it,
-    looked for within ``reach`` each way), to its ``pos`` otherwise.
-
-    Raises:
-        G2SError: a point has no node within ``reach``; the message names
-            ``terminals.params.play_points[i]``.
-    O(n log n + p log n).
-    """
-    arrays = traffic.surface_arrays(graph)
-    points = np.asarray(points, dtype=np.float64).reshape(-1, 3)
-    positions = np.array([graph.nodes[node]["pos"] for node in arrays.nodes], dtype=np.float64).reshape(-1, 3)
-    distance, nearest = cKDTree(positions).query(points, distance_upper_bound=reach)
-    if navmesh is not None:
-        row_of_polygon = np.full(navmesh.polygon_count, -1, dtype=np.int64)
-        polygons = np.array([graph.nodes[node].get("polygon", -1) for node in arrays.nodes], dtype=np.int64)
-        row_of_polygon[polygons[polygons >= 0]] = np.flatnonzero(polygons >= 0)
-        for i, point in enumerate(points):
-            polygon, on = navmesh.nearest_poly(point, (reach, reach, reach))
-            gap = float(np.linalg.norm(on - point))
-            if polygon >= 0 and row_of_polygon[polygon] >= 0 and gap < distance[i]:
-                distance[i], nearest[i] = gap, row_of_polygon[polygon]
-    for i, point in enumerate(points):
-        if not distance[i] <= reach:
-            x, y, z = point.tolist()
-            raise G2SError(f"terminals.params.play_points[{i}]: ({x:g}, {y:g}, {z:g}) has no walkable node within "
-                           f"{reach:g} m (the agent's height); expected a point on the play space's walkable ground, "
-                           f"mesh frame, Y up, metres")
-    _, labels = csgraph.connected_components(arrays.adjacency, directed=False)
-    return np.isin(labels, labels[nearest])
 
 
 def dead_end_places(adjacency: sp.csr_array, area: np.ndarray, leaves: np.ndarray, reach: float) -> np.ndarray:

@@ -1,0 +1,129 @@
+"""The play space (``graph.params.play_points``): the initial graph cut to the connected walkable areas holding a
+play point, right where it is built, so that every later stage sees that space alone.
+
+A level's file often holds more walkable ground than its play space: a
+backdrop of terrain round a town square, roofs, ground outside the walls.
+Left in the graph, that ground weighs on everything measured over the graph,
+not only on where terminals go: the walking flow draws its sources in
+proportion to area (on the ``backdrop`` level kind, benchmarks/level_kinds.py,
+4-7 % of 256 draws fell on the square), and a percentile ranks the play
+space's polygons among the background's (the square's spanned 6-32 to
+10-57 points of the level's 0-100 on the navmesh route, 1-15 to 2-45 on the
+sampling route), so that every threshold in percentile points
+(``traffic_weight``, ``quiet_step``, ``max_traffic_step``) and the ``flow``
+analyzer's heat map meant something else on a level with a background
+(docs/plugins.md, "The play space"). Cut once where the graph is built, the
+terminals, the walking flows, their percentiles, the heat guarantee, the
+analyzers and the evaluation all read the play space by construction; a rule
+per stage would have to be repeated in each and kept alike. Both graph
+builders (``navmesh``, ``sampling``) call :func:`cut_to_play_space` last, after
+their own checks of the whole level's walkable surface. The navmesh itself
+(``context.navmesh``) stays whole: its polygon ids are the nodes' ``polygon``
+attributes, which every stage looks up per node, and the background's
+polygons are out of reach of the play space's (another connected area), so a
+Detour raycast from the play space never enters them.
+
+A point belongs to the area of its nearest node within the agent's height in
+3D: a node's distance is to its navmesh polygon where it has one (Detour's
+nearest point on it: a polygon of a hall may be 20 m across, its centre far
+from the point), to its position otherwise (a sample). A point with no node
+that near (in mid-air, inside a wall, in the wrong frame) is bad input.
+
+Complexity: a k-d tree of the nodes, a Detour look-up per point and one
+connected-components pass, O(n log n + p log n + m), plus the subgraph's copy,
+O(n + m).
+"""
+
+from __future__ import annotations
+
+from typing import Annotated
+
+import networkx as nx
+import numpy as np
+import numpy.typing as npt
+from pydantic import Field, Strict
+from scipy.sparse import csgraph
+from scipy.spatial import cKDTree
+
+from g2s_core.errors import G2SError
+from g2s_core.model import NavMesh, RunContext
+from g2s_core.plugin import PluginParams
+from g2s_plugins import traffic
+
+KEY = "graph.params.play_points"
+"""Where a config names the play points: in messages, and where :func:`play_points` reads them."""
+
+
+class PlaySpaceParams(PluginParams):
+    """The play points, a parameter of every graph builder."""
+
+    play_points: list[Annotated[tuple[float, float, float], Strict(False)]] | None = Field(
+        None, min_length=1, strict=False,
+        description="points [x, y, z] in the play space (mesh frame, metres): the initial graph keeps only the "
+                    "connected walkable areas holding a node within the agent's height of one (3D; a navmesh node's "
+                    "distance is to its polygon), so every later stage (terminals, walking flows and their "
+                    "percentiles, the heat guarantee, analyzers, evaluation) sees those areas alone, and a warning "
+                    "says how much was left out; null: every area")
+
+
+def play_points(config: dict) -> list[list[float]] | None:
+    """The play points a run's recorded ``config`` names (:data:`KEY`), None when it names none."""
+    return ((config.get("graph") or {}).get("params") or {}).get("play_points")
+
+
+def play_space(graph: nx.Graph, navmesh: NavMesh | None, points: npt.ArrayLike, reach: float) -> np.ndarray:
+    """(n,) bool per row of :func:`g2s_plugins.traffic.surface_arrays` of ``graph``: the nodes of the connected
+    areas that hold one of the (p, 3) ``points`` (mesh frame, metres).
+
+    A point belongs to the area of its nearest node within ``reach`` metres
+    in 3D (the agent's height): a node's distance is to its ``navmesh``
+    polygon where it has one (``polygon`` >= 0; Detour's nearest point on it,
+    looked for within ``reach`` each way), to its ``pos`` otherwise.
+
+    Raises:
+        G2SError: a point has no node within ``reach``; the message names ``graph.params.play_points[i]``.
+    O(n log n + p log n + m).
+    """
+    arrays = traffic.surface_arrays(graph)
+    points = np.asarray(points, dtype=np.float64).reshape(-1, 3)
+    positions = np.array([graph.nodes[node]["pos"] for node in arrays.nodes], dtype=np.float64).reshape(-1, 3)
+    distance, nearest = cKDTree(positions).query(points, distance_upper_bound=reach)
+    if navmesh is not None:
+        row_of_polygon = np.full(navmesh.polygon_count, -1, dtype=np.int64)
+        polygons = np.array([graph.nodes[node].get("polygon", -1) for node in arrays.nodes], dtype=np.int64)
+        row_of_polygon[polygons[polygons >= 0]] = np.flatnonzero(polygons >= 0)
+        for i, point in enumerate(points):
+            polygon, on = navmesh.nearest_poly(point, (reach, reach, reach))
+            gap = float(np.linalg.norm(on - point))
+            if polygon >= 0 and row_of_polygon[polygon] >= 0 and gap < distance[i]:
+                distance[i], nearest[i] = gap, row_of_polygon[polygon]
+    for i, point in enumerate(points):
+        if not distance[i] <= reach:
+            x, y, z = point.tolist()
+            raise G2SError(f"{KEY}[{i}]: ({x:g}, {y:g}, {z:g}) has no walkable node within {reach:g} m (the agent's "
+                           f"height); expected a point on the play space's walkable ground, mesh frame, Y up, metres")
+    _, labels = csgraph.connected_components(arrays.adjacency, directed=False)
+    return np.isin(labels, labels[nearest])
+
+
+def play_space_graph(graph: nx.Graph, navmesh: NavMesh | None, points: npt.ArrayLike, reach: float) -> nx.Graph:
+    """A copy of ``graph`` (its graph attributes too) cut to the connected areas holding one of ``points``
+    (:func:`play_space`)."""
+    keep = play_space(graph, navmesh, points, reach)
+    nodes = traffic.surface_arrays(graph).nodes
+    return graph.subgraph([nodes[i] for i in np.flatnonzero(keep)]).copy()
+
+
+def cut_to_play_space(graph: nx.Graph, points: npt.ArrayLike | None, context: RunContext) -> nx.Graph:
+    """A graph builder's ``graph`` cut to its play space (:func:`play_space_graph`, reach: the agent's height;
+    ``context.navmesh`` where the builder set one), with one warning saying how many areas and how much area were
+    left out; ``graph`` itself when ``points`` is None."""
+    if points is None:
+        return graph
+    played = play_space_graph(graph, context.navmesh, points, context.agent.height)
+    left = graph.subgraph(node for node in graph if node not in played)
+    if left.number_of_nodes():
+        area = sum(a for _, a in left.nodes(data="area", default=0.0))
+        context.warn(f"graph: {nx.number_connected_components(left)} walkable area(s) ({area:.3g} m² in all) hold no "
+                     f"play point ({KEY}) and are left out")
+    return played
