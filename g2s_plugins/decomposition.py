@@ -1186,9 +1186,14 @@ _SPLITS: weakref.WeakKeyDictionary[Any, dict[Hashable, tuple[trimesh.Trimesh, De
 the mesh's id, the agent's size and the split settings, each with the mesh it was measured in."""
 
 
-def shared_decomposition(navmesh: Any, agent: Any, params: DecompositionParams, mesh: trimesh.Trimesh) -> Decomposition:
+def shared_decomposition(navmesh: Any, agent: Any, params: DecompositionParams, mesh: trimesh.Trimesh,
+                         graph: nx.Graph | None = None) -> Decomposition:
     """:func:`decompose`, computed once per navmesh object, mesh object, agent size and split settings: the
     ``chokepoints`` and ``regions`` analyzers of one run, given the same settings, split the level once.
+
+    ``graph``: the run's initial graph, whose nodes include every polygon of the navmesh unless the graph was cut
+    to a play space (:mod:`g2s_plugins.play_space`); the regions none of whose polygons is one of its nodes, and
+    the chokepoints beside them, are left out, so that the split reports the play space alone. O(P).
 
     The key holds every input :func:`decompose` reads: the agent's ``radius`` and ``height`` (the only fields it
     uses) and the fields of :class:`DecompositionParams` (an analyzer's own others, such as ``top_k``, left out);
@@ -1205,8 +1210,11 @@ def shared_decomposition(navmesh: Any, agent: Any, params: DecompositionParams, 
         split.labels.flags.writeable = False
         splits[key] = (mesh, split)
     split = splits[key][1]
-    return Decomposition(split.labels, [region | {"neighbours": []} for region in split.regions],
-                         [dict(chokepoint) for chokepoint in split.chokepoints])
+    regions = split.regions if graph is None else [
+        region for region in split.regions if any(polygon in graph for polygon in region["polygons"])]
+    kept = {region["id"] for region in regions}
+    return Decomposition(split.labels, [region | {"neighbours": []} for region in regions],
+                         [dict(chokepoint) for chokepoint in split.chokepoints if set(chokepoint["regions"]) <= kept])
 
 
 def _join_pinches(navmesh: Any, labels: np.ndarray, count: int, pairs: np.ndarray, blocked: np.ndarray,

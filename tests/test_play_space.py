@@ -66,6 +66,21 @@ def test_play_points_cut_the_platform_from_the_graph_and_say_so(registry):
     assert played.metrics["traffic"]["structure_share"] == played.structure.number_of_nodes() / len(played.graph)
 
 
+def test_regions_and_chokepoints_are_the_play_space_s(registry):
+    def platform_regions(result: RunResult) -> list:
+        return [r for r in result.features["regions"]["regions"] if r["centroid"][1] > 2.5]
+
+    mesh = room_and_platform()
+    everywhere = run(registry, mesh, "level_regions")
+    assert platform_regions(everywhere)
+    played = run(registry, mesh, "level_regions", play_points=[ROOM_CENTRE])
+    regions = played.features["regions"]["regions"]
+    assert regions and not platform_regions(played)
+    assert len(regions) == len(everywhere.features["regions"]["regions"]) - len(platform_regions(everywhere))
+    kept = {r["id"] for r in regions}
+    assert all(set(k["regions"]) <= kept for k in played.features["chokepoints"]["chokepoints"])
+
+
 def test_the_sampling_route_s_reference_navmesh_is_cut_by_the_same_rule(registry):
     played = run(registry, room_and_platform(), "map_analysis_sampling", play_points=[ROOM_CENTRE])
     assert played.graph.number_of_nodes() > 0 and not on_platform(played, played.graph)

@@ -33,7 +33,7 @@ class Params(decomposition.DecompositionParams):
 def g2s_analyze(structure: nx.Graph, params: Params, context: RunContext) -> AnalyzerResult:
     """Chokepoint records and the score near every structure node."""
     navmesh = decomposition.require_navmesh(context, NAME)
-    split = decomposition.shared_decomposition(navmesh, context.agent, params, context.mesh)
+    split = decomposition.shared_decomposition(navmesh, context.agent, params, context.mesh, context.graph)
     chokepoints, values = decomposition.score(split, structure)
     if params.top_k is not None:
         chokepoints = chokepoints[: params.top_k]

@@ -31,6 +31,6 @@ class Params(decomposition.DecompositionParams):
 def g2s_analyze(structure: nx.Graph, params: Params, context: RunContext) -> AnalyzerResult:
     """Region records and the region id of every structure node."""
     navmesh = decomposition.require_navmesh(context, NAME)
-    split = decomposition.shared_decomposition(navmesh, context.agent, params, context.mesh)
+    split = decomposition.shared_decomposition(navmesh, context.agent, params, context.mesh, context.graph)
     decomposition.score(split, structure)  # numbers the chokepoints the regions' neighbours refer to
     return AnalyzerResult(decomposition.region_values(split, structure), {"regions": split.regions})
