@@ -62,8 +62,9 @@ class PlaySpaceParams(PluginParams):
         description="points [x, y, z] in the play space (mesh frame, metres): the initial graph keeps only the "
                     "connected walkable areas holding a node within the agent's height of one (3D; a navmesh node's "
                     "distance is to its polygon), so every later stage (terminals, walking flows and their "
-                    "percentiles, the heat guarantee, analyzers, evaluation) sees those areas alone, and a warning "
-                    "says how much was left out; null: every area")
+                    "percentiles, the heat guarantee, analyzers, evaluation) sees those areas alone (but entry_exit, "
+                    "which reads openings off the whole navmesh), and a warning says how much was left out; null: "
+                    "every area")
 
 
 def play_points(config: dict) -> list[list[float]] | None:
