@@ -11,6 +11,9 @@ from __future__ import annotations
 from collections.abc import Callable
 from functools import partial
 
+import numpy as np
+import trimesh
+
 from piece_kinds10 import SLAB as SLAB
 from piece_kinds10 import _arc_band as arc_band
 from piece_kinds10 import _box as box
@@ -25,8 +28,8 @@ from piece_kinds15 import _prism as prism
 from g2s_plugins.samples.levels import SampleLevel, _opening
 from g2s_plugins.samples.pieces import _E, _W
 
-__all__ = ["SLAB", "ROOM_DOORS", "ROOM_OPENINGS", "arc_band", "box", "corridor", "hull", "kinds_by_name", "prism",
-           "room", "round_level", "run_kinds"]
+__all__ = ["SLAB", "ROOM_DOORS", "ROOM_OPENINGS", "arc_band", "box", "corridor", "hull", "kinds_by_name", "polygon_room",
+           "prism", "room", "round_level", "run_kinds"]
 
 ROOM_DOORS = {"W": [(2.2, 3.8, 2.2)], "E": [(2.2, 3.8, 2.2)]}
 """1.6 m doorways under 2.2 m lintels in the middle of the west and east walls of a room 6 m deep (:func:`room`)."""
@@ -38,3 +41,47 @@ ROOM_OPENINGS = [_opening((-0.3, 0.0, 3.0), _W, 1.6), _opening((8.3, 0.0, 3.0), 
 def round_level(round_: int) -> Callable[..., SampleLevel]:
     """The tenth round's piece builder (name, parts, known openings), tagging its pieces with ``round_``."""
     return partial(_level10, round_=round_)
+
+
+def polygon_room(corners, doors: dict[int, list[tuple[float, float, float]]], wall: float = 0.3,
+                 height: float = 3.0) -> tuple[list[trimesh.Trimesh], list[tuple[np.ndarray, np.ndarray, np.ndarray]]]:
+    """Floor slab and mitred walls ``wall`` m thick and ``height`` m high round the clear floor whose plan is the convex
+    polygon ``corners`` ((k, 2) (x, z) metres, turning from +x towards +z as the rounds' arcs do), floor at 0.
+
+    ``doors`` maps a side's index (side i runs from corner i to corner i + 1) to its gaps ``(s0, s1, lintel)``: metres
+    along the side's inner face from corner i, and the lintel's height (``height`` for none). Returns the parts and,
+    per side, its inner start point, unit direction and outward unit normal ((2,) each, plan), from which a door's
+    outer midpoint is ``start + direction * s + normal * wall``. O(k + doors) solids.
+    """
+    inner = np.asarray(corners, dtype=np.float64)
+    k = len(inner)
+    frames = []
+    for i in range(k):
+        d = inner[(i + 1) % k] - inner[i]
+        d = d / np.linalg.norm(d)
+        frames.append((inner[i], d, np.array([d[1], -d[0]])))  # outward for corners turning from +x towards +z
+
+    def outer_corner(i: int) -> np.ndarray:  # where the outer faces of sides i - 1 and i meet
+        (p, d, n), (q, e, m) = frames[i - 1], frames[i]
+        a, b = p + n * wall, q + m * wall
+        t = np.linalg.solve(np.column_stack([d, -e]), b - a)[0]
+        return a + d * t
+
+    outer = np.array([outer_corner(i) for i in range(k)])
+    parts = [prism(outer, -SLAB, 0.0)]
+    for i, (p, d, n) in enumerate(frames):
+        length = float(np.dot(inner[(i + 1) % k] - p, d))
+        a0 = float(np.dot(outer[i] - p, d))  # the outer corners along the side, in the inner face's measure
+        a1 = float(np.dot(outer[(i + 1) % k] - p, d))
+
+        def band(s0: float, s1: float, o0: float, o1: float, y0: float, y1: float) -> trimesh.Trimesh:
+            return prism([p + d * s0, p + d * s1, p + d * o1 + n * wall, p + d * o0 + n * wall], y0, y1)
+
+        cuts = [(0.0, a0)] + [((s0, s0), (s1, s1)) for s0, s1, _ in sorted(doors.get(i, ()))] + [(length, a1)]
+        flat = [cuts[0]] + [c for pair in cuts[1:-1] for c in pair] + [cuts[-1]]
+        for (s0, o0), (s1, o1) in zip(flat[0::2], flat[1::2]):
+            parts.append(band(s0, s1, o0, o1, -SLAB, height))
+        for s0, s1, lintel in doors.get(i, ()):
+            if lintel < height:
+                parts.append(band(s0, s1, s0, s1, lintel, height))
+    return parts, frames

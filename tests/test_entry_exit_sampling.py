@@ -17,7 +17,7 @@ from g2s_plugins.graph_builders import sampling
 from g2s_plugins.samples import levels as samples
 from g2s_plugins.samples import pieces
 from g2s_plugins.terminals import entry_exit
-from g2s_plugins.terminals._boundary import boundary_loops
+from g2s_plugins.terminals._boundary import BoundaryLoop, boundary_loops, sample_loops
 from g2s_plugins.terminals._sampled_surface import sampled_surface
 from tests.conftest import benchmark
 
@@ -273,3 +273,28 @@ def test_a_floor_walked_down_to_holds_its_end_and_a_single_file_one_none(yaw: fl
     canal = benchmark("piece_kinds12").canal_walkways()
     found, _, _, _ = _openings(pieces.turned(canal, yaw) if yaw else canal)
     assert len(found) and (found[:, 1] > -0.5).all()
+
+
+def test_a_single_file_lines_tip_holds_samples_looking_ahead() -> None:
+    # A line of two samples 2 m apart: its loop runs out along the line and back. Each tip holds three more
+    # samples, their outward sides turned 45, 90 and 135 degrees from the incoming side's towards the outgoing
+    # one's, in walking order; a loop with area (a square) holds none.
+    line = BoundaryLoop(points=np.array([[0.0, 0.0, 0.0], [2.0, 0.0, 0.0]]), polygons=np.array([0, 0]), closed=True)
+    plain, tipped = sample_loops([line], 0.5), sample_loops([line], 0.5, tips=True)
+    assert len(plain.position) == 8 and len(tipped.position) == 14
+    at_far = np.flatnonzero(np.all(tipped.position == [2.0, 0.0, 0.0], axis=1))
+    assert at_far.tolist() == [7, 8, 9]  # the near tip's 3 (the loop starts there), 4 out along the line, then these
+    outward = np.cross(tipped.tangent[at_far], [0.0, 1.0, 0.0])
+    half = np.sqrt(0.5)
+    assert np.allclose(outward, [[half, 0.0, half], [1.0, 0.0, 0.0], [half, 0.0, -half]])
+    square = boundary_loops(np.array([[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [1.0, 0.0, 1.0], [0.0, 0.0, 1.0]]),
+                            np.array([[0, 3, 2, 1]]), np.full((1, 4), -1))
+    assert len(sample_loops(square, 0.25, tips=True).position) == len(sample_loops(square, 0.25).position)
+
+
+def test_a_pad_at_a_single_file_lines_end_holds_its_opening() -> None:
+    # The open switchback stair's top pad holds one sample, the end of its flight's line; at 22 degrees one loop
+    # sample on its open side found the way out, and a segment needs two: the pad's edge was missed.
+    level = pieces.turned(benchmark("piece_kinds20").open_switchback_stair(), 22.0)
+    found, known, _, _ = _openings(level)
+    assert len(found) == 2 and pieces.match_openings(found, known) == (2, 2)

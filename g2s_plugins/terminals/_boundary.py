@@ -188,11 +188,21 @@ class LoopSamples:
     closed: np.ndarray
 
 
-def sample_loops(loops: list[BoundaryLoop], step: float, setting: str = "step") -> LoopSamples:
+TIP_TURNS_DEG = (45.0, 90.0, 135.0)
+"""Degrees: where a loop goes back along the edge it came (the end of a line of samples in single file on a sampled
+surface), :func:`sample_loops` adds samples at the tip whose outward sides turn this far from the incoming side's
+towards the outgoing one's, so the tip looks ahead as well as to both sides (docs/entry_exit.md, "A twentieth round
+of piece kinds")."""
+
+
+def sample_loops(loops: list[BoundaryLoop], step: float, setting: str = "step", tips: bool = False) -> LoopSamples:
     """Samples every ``step`` metres (rounded so each loop is evenly divided).
 
     Sample k of a loop of length L with n = max(1, round(L / step)) samples
-    lies at arc length (k + 1/2) L / n, so no sample sits on a corner.
+    lies at arc length (k + 1/2) L / n, so no sample sits on a corner. With
+    ``tips``, each point where the loop turns straight back along its last edge
+    (a polygon of two corners: samples in single file) also holds one sample per
+    :data:`TIP_TURNS_DEG`, in walking order; a navmesh's loops have no such point.
 
     Raises:
         G2SError: more than :data:`MAX_BOUNDARY_SAMPLES` samples; the message starts with ``setting``, the
@@ -236,7 +246,30 @@ def sample_loops(loops: list[BoundaryLoop], step: float, setting: str = "step") 
     position = A[edge] + f[:, None] * (B[edge] - A[edge])
     tangent = (B[edge] - A[edge]) / np.where(length[edge] > 0, length[edge], 1.0)[:, None]
     closed = np.array([lp.closed for lp in loops], dtype=bool)
-    return LoopSamples(position, tangent, poly[edge], sample_loop, spacing, closed)
+    polygon = poly[edge]
+    if tips:
+        # each edge's successor in its loop (the first edge after the last in a closed loop; none in an open one)
+        after = np.arange(len(length)) + 1
+        ends = last_edge[loop_of_edge] == np.arange(len(length))
+        after[ends] = np.where(closed[loop_of_edge[ends]], loop_start[loop_of_edge[ends]], -1)
+        back = (after >= 0) & np.all(A[np.maximum(after, 0)] == B, axis=1) & np.all(B[np.maximum(after, 0)] == A, axis=1)
+        back &= length > 0
+        tip = np.flatnonzero(back)
+        if len(tip):
+            t = (B[tip] - A[tip]) / length[tip][:, None]
+            out = np.cross(t, UP)  # the incoming side's outward (interior on the left)
+            turns = np.radians(np.asarray(TIP_TURNS_DEG))
+            # the tangent whose outward side (tangent x up) is cos(a) out + sin(a) t: cos(a) t - sin(a) out
+            extra = (np.cos(turns)[None, :, None] * t[:, None, :]
+                     - np.sin(turns)[None, :, None] * out[:, None, :]).reshape(-1, 3)
+            at = np.where(after[tip] > tip, cum[tip + 1], cum[loop_start[loop_of_edge[tip]]])
+            order = np.lexsort((np.r_[np.zeros(len(s)), np.tile(1.0 + np.arange(len(turns)), len(tip))],
+                                np.r_[s, np.repeat(at, len(turns))]))
+            position = np.concatenate([position, np.repeat(B[tip], len(turns), axis=0)])[order]
+            tangent = np.concatenate([tangent, extra / np.linalg.norm(extra, axis=1)[:, None]])[order]
+            polygon = np.concatenate([polygon, np.repeat(poly[tip], len(turns))])[order]
+            sample_loop = np.concatenate([sample_loop, np.repeat(loop_of_edge[tip], len(turns))])[order]
+    return LoopSamples(position, tangent, polygon, sample_loop, spacing, closed)
 
 
 def polygon_components(neighbours: np.ndarray, joined: np.ndarray | None = None) -> np.ndarray:

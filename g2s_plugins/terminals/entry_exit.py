@@ -1534,7 +1534,8 @@ def detect_openings(
     params = params if params is not None else Params()
     s = _settings(params, agent, edge_search_farther)
     loops = boundary_loops(surface.vertices, surface.polygons, surface.neighbours)
-    samples = sample_loops(loops, s.step, "agent.radius" if params.sample_step is None else "terminals.params.sample_step")
+    samples = sample_loops(loops, s.step, "agent.radius" if params.sample_step is None else "terminals.params.sample_step",
+                           tips=True)
     if len(samples.loop) == 0:
         return Detection((), (), ())
     caster = RayCaster(mesh)
