@@ -77,7 +77,7 @@ def wall_niche_room(depth: float = 1.0) -> SampleLevel:
 def mullion_double_door(leaf: float = 0.9, mullion: float = 0.1) -> SampleLevel:
     """Room 8 x 6 m, a 1.6 m doorway W; east a double doorway (lintel 2.2 m) of two ``leaf`` m gaps either side of a
     central mullion ``mullion`` m wide through the wall's thickness, centred on z 3. Known: the west doorway and the
-    double door as ONE opening, 2 * ``leaf`` + ``mullion`` m (1.9 m), at the mullion, as the fourth round's
+    double door as ONE opening, 2 * ``leaf`` + ``mullion`` m (1.9 m), at the mullion, as the third round's
     ``double_door``: a kit snaps one neighbour to a double door; a mullion narrower than the agent is part of the
     door's frame, not a wall between two doors (each 0.9 m leaf alone is barely wider than the agent's 0.8 m)."""
     half = mullion / 2
