@@ -145,8 +145,8 @@ def _graph_step(step: Step) -> bool | None:
     graph = step.call(mesh=result.context.mesh)
     if graph.number_of_nodes() == 0:
         raise G2SError("no walkable surface found for the agent (the initial graph is empty)")  # named by api.execute
-    step.record.update(nodes=graph.number_of_nodes(), edges=graph.number_of_edges())
-    result.context.graph = result.graph = graph
+    _keep(step, "graph", graph)
+    result.context.graph = graph
 
 
 def _terminals_step(step: Step) -> bool | None:

@@ -107,10 +107,16 @@ def footprint_area(mesh: trimesh.Trimesh) -> float:
     return float((high[0] - low[0]) * (high[2] - low[2]))
 
 
-def walkable_share(graph: nx.Graph, mesh: trimesh.Trimesh) -> float:
-    """The area the graph's nodes stand for (their ``area``, m²) over the :func:`footprint_area`."""
+def walkable_area(graph: nx.Graph) -> float:
+    """The area the graph's nodes stand for: their ``area`` summed, m²."""
+    return math.fsum(area for _, area in graph.nodes(data="area", default=0.0))
+
+
+def walkable_share(graph: nx.Graph, mesh: trimesh.Trimesh, walkable: float | None = None) -> float:
+    """The :func:`walkable_area` of ``graph`` (``walkable`` when the caller has summed it) over the
+    :func:`footprint_area`."""
     footprint = footprint_area(mesh)
-    walkable = math.fsum(area for _, area in graph.nodes(data="area", default=0.0))
+    walkable = walkable_area(graph) if walkable is None else walkable
     return walkable / footprint if footprint > 0 else math.inf
 
 
@@ -328,7 +334,7 @@ def check_walkable_surface(graph: nx.Graph, mesh: trimesh.Trimesh, context: RunC
         G2SError: the surface is more than :data:`MAX_SURFACE_OVER_FACES` times the plan area of the faces
             that face up: it stands on faces with next to no area, and the file holds no floor to walk on.
     """
-    walkable = math.fsum(area for _, area in graph.nodes(data="area", default=0.0))
+    walkable = walkable_area(graph)
     faces = upward_plan_area(mesh, context.agent.max_slope, enough=walkable / MAX_SURFACE_OVER_FACES)
     if walkable > MAX_SURFACE_OVER_FACES * faces:
         raise G2SError(
@@ -336,7 +342,7 @@ def check_walkable_surface(graph: nx.Graph, mesh: trimesh.Trimesh, context: RunC
             f"area of the faces that face up ({faces:.3g} m²): the faces have next to no area (corners on a line or "
             "at one point) and the graph builder filled the cells they touch; export the mesh again"
         )
-    share = walkable_share(graph, mesh)
+    share = walkable_share(graph, mesh, walkable)  # the area summed once
     winding, tall = looks_for_winding(share, len(mesh.faces)), height_ratio(mesh) > MAX_HEIGHT_RATIO
     if not (winding or tall):
         return

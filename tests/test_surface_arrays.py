@@ -46,3 +46,22 @@ def test_the_cache_is_rebuilt_when_an_edge_or_node_comes_or_goes():
     first = surface_arrays(multi)
     multi.add_edge(0, 1)  # a parallel edge leaves the adjacency dicts' sizes as they were
     assert surface_arrays(multi) is not first
+
+
+def test_a_graph_read_from_its_adjacency_gives_the_arrays_of_its_edge_view():
+    """A plain graph is read from its adjacency dicts, a view through its edge view: the same matrix, entry for
+    entry (a missing weight 1.0, a zero one MIN_LENGTH, a self-loop none), rows and areas."""
+    graph = nx.Graph()
+    graph.add_edge((2, "b"), (0, "a"), weight=2.5)
+    graph.add_edge((0, "a"), (1, "c"))  # no weight: 1.0
+    graph.add_edge((1, "c"), (2, "b"), weight=0.0)
+    graph.add_edge((1, "c"), (1, "c"), weight=4.0)
+    graph.add_node((3, "d"), area=2)
+    plain, view = surface_arrays(graph), surface_arrays(graph.subgraph(list(graph)))
+    assert plain.nodes == view.nodes == list(graph) and plain.index == view.index
+    for name in ("indptr", "indices", "data"):
+        assert np.array_equal(getattr(plain.adjacency, name), getattr(view.adjacency, name))
+    # rows (2, "b"), (0, "a"), (1, "c"), (3, "d"): the order the nodes came in
+    assert plain.adjacency.toarray().tolist() == [[0, 2.5, MIN_LENGTH, 0], [2.5, 0, 1.0, 0], [MIN_LENGTH, 1.0, 0, 0],
+                                                  [0, 0, 0, 0]]
+    assert plain.area.tolist() == view.area.tolist() == [0.0, 0.0, 0.0, 2.0]
