@@ -107,7 +107,9 @@ polygons and their shared edges (portals):
    weighed against the walled-in region itself (a yard's mouths onto a zoo walled in by its fence). Doors
    of rooms in a loop, a wall's gaps between two fields and a room's two doors onto a corridor cost walks of one
    to several regions' sizes. The project's own rule, set on the thirteenth round's kinds (docs/plugins.md,
-   "Ways round obstacles").
+   "Ways round obstacles"). Spans (:func:`_spans`) are never joined: two regions whose openings together are
+   narrower than :data:`SPAN_SHARE` of the narrower one's mean walkable width (bridges over a crevasse or a river,
+   planks between roofs) are parted along almost all their front (docs/plugins.md, "Spans").
    Stair runs (:func:`stair_runs`, after the ways round): a *flight* is a region with exactly two chokepoints, to two
    different regions, no wider than :data:`CORRIDOR_WIDTH` agent diameters on average, whose chokepoints lie at least
    half the agent's height and :data:`STAIR_GRADIENT` of its longest extent apart in height (a piece of a stair
@@ -161,7 +163,7 @@ C candidates between corridor-like groups, Q grid points within a cut's reach
 (hundreds) and M polygons near it; side strips O(V + C log C) (extents, then
 sorting the candidates' region pairs); lanes O(R (C' (Q M + Q log B) + sum of k^2)) for R rounds (joins; 1-4
 measured), C' candidates of region pairs with openings at least ``min_separation`` apart and k passage openings
-per pair; ways round O(R' (V + O K log K)) for R' rounds (1-4 measured), O openings and K polygons within the
+per pair; ways round O(R' (V + C + O K log K)) for R' rounds (1-4 measured), O openings and K polygons within the
 walk's length of an opening (few in rooms, up to a region in open ground); stair runs O(V + C log C) (extents, the
 chokepoints once more, sorting their ends); ways O(R'' (V + C log C) + W (P + E)) for R'' rounds of joins and W
 chokepoints of ways (each stub looked for once, and the region it leaves split into its parts); openings
@@ -302,6 +304,15 @@ interchange and zoo 0.30-0.76 at the median, the dry dock's 1.00 (its quay cut i
 round a container: they join once their neighbours have); two fields parted by a wall with three gaps 0.99-2.18, a
 room's two doors onto a corridor 0.48-1.00 (1.49-3.00 of the room's own extent, walled in), a loop of four rooms
 2.49, the generated dungeons' doors 2.2 and more. At 1.0 the two fields join, at every yaw."""
+
+SPAN_SHARE = 0.25
+"""Openings between two regions that together are narrower than this share of the narrower region's mean walkable
+width are spans (:func:`_spans`): the two regions are parted along almost all their common front (a crevasse crossed
+by snow bridges, a river by footbridges, an alley by planks, a sandbag line at its gaps, a fence at its stiles), and
+"Ways round obstacles" never joins them: the walk round by another span is no way round something standing in open
+floor. Set at a quarter before measuring; measured (docs/plugins.md, "Spans"; per region pair joined by the ways
+round on seed 0 of every kind): the glacier's bands 0.058-0.091, the water park's island 0.197, the medina's road and
+alleys at a gate 0.147-0.221; 72 of 574 pairs joined below 0.3, in 35 kinds."""
 
 WALLED_IN = 0.95
 """A region at least this share of whose outline is wall (the small holes left out of the clearances not counted:
@@ -1321,7 +1332,8 @@ def _join_ways_round(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocke
     there, the two regions join: the larger's longest extent is their size, or the smaller's when either is walled in
     (:data:`WALLED_IN`: a room behind its doors) and the widest portal is at most a door wide (:data:`CORRIDOR_WIDTH`
     agent diameters walkable); past that, the walled-in region's own extent (the smaller's when both are). Only regions
-    on one floor join: ``band`` (P,) is each polygon's height band (:func:`floor_bands`).
+    on one floor join: ``band`` (P,) is each polygon's height band (:func:`floor_bands`); spans (:func:`_spans`:
+    openings together narrow against both regions) never do.
     """
     ends = np.asarray(navmesh.portals().endpoints, dtype=np.float64)
     walks = PolygonWalks.of(navmesh, pairs, ends)
@@ -1348,11 +1360,12 @@ def _join_ways_round(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocke
         _, pair = np.unique(sides, axis=0, return_inverse=True)
         pair = pair.reshape(-1)
         of_pair = np.split(np.argsort(pair, kind="stable"), np.flatnonzero(np.diff(np.sort(pair))) + 1)
+        spans = _spans(pair, opening, 2.0 * clearance.portals[candidates], mean_width[sides].min(axis=1))
         joins = []
         for group in np.split(np.argsort(opening, kind="stable"),
                               np.flatnonzero(np.diff(np.sort(opening, kind="stable"))) + 1):
             a, b = sides[group[0]]
-            if floor[a] != floor[b]:
+            if floor[a] != floor[b] or spans[group[0]]:
                 continue
             same = of_pair[pair[group[0]]]
             near = same[(np.linalg.norm(points[same][:, None] - points[group][None], axis=2)
@@ -1370,6 +1383,26 @@ def _join_ways_round(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocke
         if not joins:
             return labels
         labels = join_groups(labels, count, np.array(joins))
+
+
+def _spans(pair: np.ndarray, opening: np.ndarray, width: np.ndarray, mean_width: np.ndarray) -> np.ndarray:
+    """(C,) bool: which chokepoint candidates are spans (:data:`SPAN_SHARE`): the openings between their two regions,
+    each as wide as its widest candidate, are together narrower than :data:`SPAN_SHARE` of the narrower region's mean
+    walkable width. O(C).
+
+    Args:
+        pair: (C,) each candidate's region pair (equal for candidates of one pair).
+        opening: (C,) each candidate's opening (:func:`_openings`).
+        width: (C,) each candidate's walkable width, m.
+        mean_width: (C,) the narrower of each candidate's two regions' mean walkable widths, m.
+    """
+    if len(pair) == 0:
+        return np.zeros(0, dtype=bool)
+    widest = np.zeros(int(opening.max()) + 1)
+    np.maximum.at(widest, opening, width)
+    first = np.unique(opening, return_index=True)[1]  # one candidate of each opening, for its pair
+    together = np.bincount(pair[first], weights=widest[opening[first]], minlength=int(pair.max()) + 1)
+    return together[pair] < SPAN_SHARE * mean_width
 
 
 def stair_runs(sides: np.ndarray, heights: np.ndarray, mean_width: np.ndarray, extent: np.ndarray, area: np.ndarray,

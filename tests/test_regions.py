@@ -795,6 +795,28 @@ def test_the_zoo_corner_yard_between_enclosures_is_part_of_the_paths():
     assert max(c["width"] for c in found) < 6.0  # the gate (4.75 m walkable) is the widest: no 6.7-11.1 m mouth
 
 
+def banks_with_bridges(bridges: list[float]) -> SimpleNamespace:
+    """Two banks 100 x 30 m (x -50..50; z -33..-3 and 3..33) parted by a 6 m gap with no floor, crossed by a
+    bridge 2.5 m wide (1.25 m walkable) at each of ``bridges`` (x, m); a post 0.6 m square every 8 m on the banks
+    (small holes left out of the clearances: they only make Recast's polygons small, as rough ground does)."""
+    parts = [box(-50.0, 50.0, -0.2, 0.0, z0, z1) for z0, z1 in ((-33.0, -3.0), (3.0, 33.0))]
+    parts += [box(x - 1.25, x + 1.25, -0.2, 0.0, -3.2, 3.2) for x in bridges]
+    parts += [box(x - 0.3, x + 0.3, 0.0, 1.5, z - 0.3, z + 0.3)
+              for x in np.arange(-46.0, 50.0, 8.0) for z in (-29.0, -21.0, -13.0, -5.0, 5.0, 13.0, 21.0, 29.0)]
+    return SimpleNamespace(mesh=trimesh.util.concatenate(parts), name="banks_with_bridges")
+
+
+def test_bridges_between_two_banks_stay_chokepoints():
+    # two bridges 10 m apart: closing one, the walk round by the other (about 26 m) is well under the banks' size
+    # (102 m), so "Ways round obstacles" alone joins the banks (1 region, 0 chokepoints); but the two openings
+    # together are 2.5 m walkable against banks about 26 m wide on average: spans over a gap, each a chokepoint
+    # (docs/plugins.md, "Spans")
+    result = run(banks_with_bridges([-5.0, 5.0]))
+    found = chokepoints(result)
+    assert len(regions(result)) == 2 and len(found) == 2
+    assert sorted(round(c["position"][0]) for c in found) == [-5, 5]
+
+
 def test_a_run_of_flights_between_larger_regions_is_one_region():
     # regions 0 (ground, 900 m2) and 4 (a top, 400 m2) joined by three flights of 10 m2, 1.5 m walkable on
     # average and 6 m long, whose chokepoints rise 3 m each: the flights join, the foot and head stay
