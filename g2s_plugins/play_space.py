@@ -1,5 +1,5 @@
 """The play space (``graph.params.play_points``): the initial graph cut to the connected walkable areas holding a
-play point, right where it is built, so that every later stage sees that space alone.
+play point, right where it is built, so that the later stages see that space alone.
 
 A level's file often holds more walkable ground than its play space: a
 backdrop of terrain round a town square, roofs, ground outside the walls.
@@ -15,7 +15,10 @@ analyzer's heat map meant something else on a level with a background
 (docs/plugins.md, "The play space"). Cut once where the graph is built, the
 terminals, the walking flows, their percentiles, the heat guarantee, the
 analyzers and the evaluation all read the play space by construction; a rule
-per stage would have to be repeated in each and kept alike. Both graph
+per stage would have to be repeated in each and kept alike. Two read the
+navmesh itself: the ``regions`` and ``chokepoints`` split reports the regions
+with a polygon in the graph (:func:`g2s_plugins.decomposition.shared_decomposition`);
+``entry_exit`` finds openings on the whole navmesh. Both graph
 builders (``navmesh``, ``sampling``) call :func:`cut_to_play_space` last, after
 their own checks of the whole level's walkable surface. The navmesh itself
 (``context.navmesh``) stays whole: its polygon ids are the nodes' ``polygon``
