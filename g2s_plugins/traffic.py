@@ -66,6 +66,33 @@ at most ``sqrt(ln(2 / delta) / (2 k))`` (0.10 for k = 256, delta = 0.01);
 ``numpy.random.default_rng(seed)``: same graph, same seed, same values.
 Cost: O(k (m + n log n)) plus O(k n) memory in blocks.
 
+Small areas walked exactly
+--------------------------
+
+No path leaves a connected area of the graph (a roof out of reach, an islet,
+a room behind a closed door), so each area's flow comes from its own
+sources alone. Drawn over the whole graph in proportion to area, the k
+sources miss many small areas (a roof of 50 m² in a town of 16,000 m² gets
+one of 256 independent draws with probability 0.55), and every node of an area
+without a source reads 0. So the sample is stratified by area (W. G.
+Cochran, Sampling Techniques, 3rd ed., Wiley 1977, ch. 5): the smallest
+areas are walked exactly, every node of positive weight a source with its
+own weight as factor (:func:`exact_areas` chooses them: smallest first by
+node count n_c while the sum of n_c² stays within one sample's work, k n),
+and the k draws are made over the other areas only, each draw's factor
+``A_R / k`` with A_R the weight of those areas. Each stratum's estimate is
+unbiased (the exact one trivially, the drawn one as above with A_R for A),
+so the whole is unbiased, and the Hoeffding bound above holds with A_R² <=
+A² (the nodes of the exact areas have no error at all). The exact areas'
+trees span their own areas only (:func:`_exact_area_flow`): O(k n) more for
+their sums at most, O(sum_c n_c (m_c + n_c log n_c)) for their searches, and
+O(n + m) to find the areas. A graph of one area (or one whose areas are all
+too big) is sampled exactly as before, bit for bit; where the draws' areas
+hold at most k nodes of positive weight they too are walked whole. Measured
+(docs/analysis_quality.md, "Small areas walked exactly"): a roof town's heat
+map's rho against the exact flow on the navmesh route 0.847-0.907 ->
+0.967-0.982, each now its ceiling (a roof no source fell on read 0).
+
 Linear scaling (``scaling: linear``)
 ------------------------------------
 
