@@ -472,8 +472,9 @@ def od_flow(
         adjacency: (n, n) symmetric edge lengths.
         weight: (n,) origin/destination weight of each node (area, m²).
         max_sources: graphs with at most this many nodes of positive weight
-            are computed exactly; above it, this many sources are sampled.
-            ``None``: always exact.
+            are computed exactly; above it, the smallest connected areas
+            (:func:`exact_areas`) are walked exactly and this many sources
+            are sampled over the rest. ``None``: always exact.
         seed: seed of the source sample.
         ties: a pair's equally short paths: all its weight along the first
             (:func:`shortest_path_flow`) or split evenly over all of them
