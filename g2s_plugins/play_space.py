@@ -77,7 +77,15 @@ def play_points(config: dict) -> list[list[float]] | None:
 
 def play_space(graph: nx.Graph, navmesh: NavMesh | None, points: npt.ArrayLike, reach: float) -> np.ndarray:
     """(n,) bool per row of :func:`g2s_plugins.traffic.surface_arrays` of ``graph``: the nodes of the connected
-    areas that hold one of the (p, 3) ``points`` (mesh frame, metres).
+    areas that hold one of the (p, 3) ``points`` (mesh frame, metres) (:func:`_areas_held`)."""
+    labels, held = _areas_held(graph, navmesh, points, reach)
+    return np.isin(labels, held)
+
+
+def _areas_held(graph: nx.Graph, navmesh: NavMesh | None, points: npt.ArrayLike,
+                reach: float) -> tuple[np.ndarray, np.ndarray]:
+    """(n,) each row's connected area (:func:`g2s_plugins.traffic.surface_arrays` of ``graph``) and the areas that
+    hold one of the (p, 3) ``points`` (mesh frame, metres).
 
     A point belongs to the area of its nearest node within ``reach`` metres
     in 3D (the agent's height): a node's distance is to its ``navmesh``
@@ -107,13 +115,17 @@ def play_space(graph: nx.Graph, navmesh: NavMesh | None, points: npt.ArrayLike, 
             raise G2SError(f"{KEY}[{i}]: ({x:g}, {y:g}, {z:g}) has no walkable node within {reach:g} m (the agent's "
                            f"height); expected a point on the play space's walkable ground, mesh frame, Y up, metres")
     _, labels = csgraph.connected_components(arrays.adjacency, directed=False)
-    return np.isin(labels, labels[nearest])
+    return labels, labels[nearest]
 
 
 def play_space_graph(graph: nx.Graph, navmesh: NavMesh | None, points: npt.ArrayLike, reach: float) -> nx.Graph:
     """A copy of ``graph`` (its graph attributes too) cut to the connected areas holding one of ``points``
     (:func:`play_space`)."""
-    keep = play_space(graph, navmesh, points, reach)
+    return _subgraph(graph, play_space(graph, navmesh, points, reach))
+
+
+def _subgraph(graph: nx.Graph, keep: np.ndarray) -> nx.Graph:
+    """A copy of ``graph`` with the nodes whose rows (:func:`g2s_plugins.traffic.surface_arrays`) ``keep`` holds."""
     nodes = traffic.surface_arrays(graph).nodes
     return graph.subgraph([nodes[i] for i in np.flatnonzero(keep)]).copy()
 
@@ -124,10 +136,10 @@ def cut_to_play_space(graph: nx.Graph, points: npt.ArrayLike | None, context: Ru
     left out; ``graph`` itself when ``points`` is None."""
     if points is None:
         return graph
-    played = play_space_graph(graph, context.navmesh, points, context.agent.height)
-    left = graph.subgraph(node for node in graph if node not in played)
-    if left.number_of_nodes():
-        area = sum(a for _, a in left.nodes(data="area", default=0.0))
-        context.warn(f"graph: {nx.number_connected_components(left)} walkable area(s) ({area:.3g} m² in all) hold no "
+    labels, held = _areas_held(graph, context.navmesh, points, context.agent.height)
+    keep = np.isin(labels, held)
+    if not keep.all():  # the areas and their area from the labels the cut was made by, not searched again
+        area = traffic.surface_arrays(graph).area[~keep].sum()
+        context.warn(f"graph: {np.unique(labels[~keep]).size} walkable area(s) ({area:.3g} m² in all) hold no "
                      f"play point ({KEY}) and are left out")
-    return played
+    return _subgraph(graph, keep)
