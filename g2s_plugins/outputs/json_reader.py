@@ -20,7 +20,7 @@ import networkx as nx
 
 from g2s_core.errors import G2SError
 from g2s_core.input_files import parse_nested, read_text
-from g2s_core.messages import show
+from g2s_core.messages import show, show_key
 from g2s_core.model import LoadedResult, Opening, StageStats, Terminals, vec3
 from g2s_core.plugin import hookimpl
 from g2s_plugins.outputs.structure_json import RUN_FILE, SCHEMA_PATH, SCHEMA_VERSION, STRUCTURE_FILE
@@ -91,9 +91,9 @@ def load_result(path: str | Path) -> LoadedResult:
 
     problem = jsonschema.exceptions.best_match(_schema_validator().iter_errors(checked))
     if problem is not None:
-        where = "".join(f"[{p}]" if isinstance(p, int) else f".{p}" for p in problem.absolute_path).lstrip(".")
+        where = "".join(f"[{p}]" if isinstance(p, int) else f".{show_key(p)}" for p in problem.absolute_path).lstrip(".")
         key, words = _in_words(problem)
-        where = f"{where}.{key}".lstrip(".") if key else where
+        where = f"{where}.{show_key(key)}".lstrip(".") if key else where
         raise G2SError(f"{path}: {where or '(top level)'}: {words}")
     try:
         return _loaded(document, path)
@@ -118,7 +118,7 @@ def _non_finite(value: Any, where: str = "") -> tuple[str, float] | None:
         return where, value
     items = value.items() if isinstance(value, dict) else enumerate(value) if isinstance(value, list) else ()
     for key, item in items:
-        if found := _non_finite(item, f"{where}[{key}]" if isinstance(key, int) else f"{where}.{key}".lstrip(".")):
+        if found := _non_finite(item, f"{where}[{key}]" if isinstance(key, int) else f"{where}.{show_key(key)}".lstrip(".")):
             return found
     return None
 

@@ -56,6 +56,8 @@ CASES = [
     (("roots",), [1.5], "roots[0]"),
     (("warnings",), "one", "warnings"),
     (("stages", 0), 5, "stages[0]"),
+    (("stages", 2), {"\n": None}, "stages[2]"),  # a key holding a newline is quoted, not written raw: one line
+    (("nodes", 0, "a\nb"), 1, "nodes[0].'a\\nb'"),
 ]
 
 
