@@ -9626,8 +9626,8 @@ def prop_pile(seed: int) -> trimesh.Trimesh:
     3 m high. 90-120 clusters of props, each 2.4 m clear of the others: stacks of 2-5 crates (cubes 1.0-1.4 m, turned to
     any angle, sunk 0.05-0.3 m into the floor and up to 0.4 m into one another, a crate on top sunk 0.1-0.3 m into the
     one below), rings of 3-7 barrels (octagons 0.3-0.35 m in radius, 0.9 m high, sunk up to 0.2 m, overlapping), runs
-    of 1-3 pipes lying along x or z (radius 0.2-0.6 m, 4-12 m long, the axis 0.1-0.5 radii under the floor's top,
-    crossing one another), and shipping containers (2.4 x 6 x 2.6 m, along x or z, sunk 0.1 m: closed boxes).
+    of 1-3 pipes lying along x or z (radius 0.2-0.8 m, 4-12 m long, the axis 0.1-0.4 radii under the floor's top, so
+    their tops stand 0.12-0.72 m up, crossing one another), and shipping containers (2.4 x 6 x 2.6 m, along x or z, sunk 0.1 m: closed boxes).
 
     Expected (written before the first run): the yard is one area round the clusters; the crates', barrels' and thick
     pipes' tops hold no floor (under 2 m² after the agent's erosion) and pipes whose top stands under the 0.4 m climb
@@ -9683,12 +9683,12 @@ def prop_pile(seed: int) -> trimesh.Trimesh:
                 _trunk(s, q, rng.uniform(0.3, 0.35), -sink, 0.9 - sink)
         elif kind == 2:  # a run of pipes, crossing
             for k in range(int(rng.integers(1, 4))):
-                radius, off = rng.uniform(0.2, 0.6), rng.uniform(-0.6, 0.6)
+                radius, off = rng.uniform(0.2, 0.8), rng.uniform(-0.6, 0.6)
                 if along_x != (k == 2):  # the third pipe lies across the run
                     a, b = np.array([rect[0], c[1] + off]), np.array([rect[1], c[1] + off])
                 else:
                     a, b = np.array([c[0] + off, rect[2]]), np.array([c[0] + off, rect[3]])
-                _pipe(s, a, b, radius, -radius * rng.uniform(0.1, 0.5))
+                _pipe(s, a, b, radius, -radius * rng.uniform(0.1, 0.4))
         else:  # a shipping container, a closed box sunk 0.1 m
             s.box(rect[0], rect[1], -0.1, 2.5, rect[2], rect[3])
     return s.mesh()
