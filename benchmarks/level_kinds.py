@@ -1,4 +1,4 @@
-"""Level kinds of the fifth to twentieth held-out rounds (issue 9): generators no preset setting was made on.
+"""Level kinds of the fifth to twenty-first held-out rounds (issue 9): generators no preset setting was made on.
 
 Fifth round: six kinds, each about 1,000 navmesh polygons with the presets' agent (radius 0.5 m, height 2 m, climb 0.4 m):
 ``subway`` (platforms, track pits 1.2 m lower, stairs up to two concourses), ``archipelago`` (islands joined by
@@ -179,6 +179,18 @@ a first draft's 2.2 m lintels shut every room of the caravanserai, 58 areas on s
 does (the same areas; 1.4 % more walkable area, the walls' thickness); a flight's foot under a storey keeps two half
 storeys less a riser and the slab of head room (2.26 m at 1.31 m a half storey closed a split-level house's storeys
 into three areas on a first draft's seed 2).
+
+Twenty-first round: six more kinds with features of real exported levels, 523-785 navmesh route graph nodes with
+that agent (seeds 0-2): ``ladders`` (a pump house of three storeys joined only by ladders and lift shafts),
+``jump_gaps`` (platforms over a void joined by walkways broken by gaps 0.8-2 m a player jumps), ``collision_hulls`` (a
+town square exported with the invisible boxes wrapping its statues, stalls, fountain, bandstand and cars, a blocking
+volume over a ledge), ``thresholds`` (shops entered over door steps of 0.05-0.3 m from pavements behind kerbs of
+0.1-0.3 m, sills between rooms), ``prop_pile`` (a yard of crates, barrels, pipes and containers pushed into the floor
+and into one another on overlapping floor tiles) and ``beams`` (roofs joined by balance beams 0.4-0.8 m wide, under the
+presets' agent's diameter, and planks 1.2-1.6 m). A closed prop sunk into the floor leaves the floor inside it (a
+container's, 2.5 m of head room) and its top as floor (:func:`prop_pile`), as a collision hull left in the file does
+(:func:`collision_hulls`); a pipe lying half sunk stops the agent only where its top stands over the 0.4 m climb (a
+first draft's pipes, 0.11-0.44 m up, stopped it at 3 of seed 0's 31).
 
 Run: ``.venv/bin/python benchmarks/level_kinds.py OUT_DIR [--kinds subway forest] [--seeds 0 1 2]`` writes
 ``OUT_DIR/<kind>_s<seed>.obj``, the files ``benchmarks/analysis_quality.py --levels`` takes (which also takes the
