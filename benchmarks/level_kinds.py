@@ -8704,6 +8704,21 @@ def _door_block(rng: np.random.Generator) -> tuple[_Solids, float, float]:
     return s, width, depth
 
 
+def _yard(s: _Solids, rng: np.random.Generator, width: float, depth: float, clear: float, out: float, tries: int) -> None:
+    """``tries`` tries at parked cars (every third) and tree trunks at plan points uniform over [-out, width + out] x
+    [-out, depth + out] m, each kept off the building [-clear, width + clear] x [-clear, depth + clear] and off the
+    others."""
+    taken = [(-clear, width + clear, -clear, depth + clear)]
+    for k in range(tries):
+        p = np.array([rng.uniform(-out, width + out), rng.uniform(-out, depth + out)])
+        if k % 3 == 0 and _clear(p[0] - 0.5, p[0] + 4.7, p[1] - 1.5, p[1] + 1.5, taken):
+            _car(s, p[0], p[0] + 4.2, p[1] - 0.9, p[1] + 0.9, 0.0)
+            taken.append((p[0] - 0.5, p[0] + 4.7, p[1] - 1.5, p[1] + 1.5))
+        elif k % 3 and _clear(p[0] - 1.5, p[0] + 1.5, p[1] - 1.5, p[1] + 1.5, taken):
+            _trunk(s, p, rng.uniform(0.25, 0.4), -0.5, 6.0)
+            taken.append((p[0] - 1.5, p[0] + 1.5, p[1] - 1.5, p[1] + 1.5))
+
+
 def closed_doors(seed: int) -> trimesh.Trimesh:
     """Two one-storey blocks 16-22 m apart (:func:`_door_block`) exported with their doors' leaves in place, as a
     real level's file keeps them. Each block: 7 columns of rooms 6-9 m wide in four rows 6-8 m deep, two corridors 3 m wide along x between the outer and inner rows, joined
@@ -8730,15 +8745,7 @@ def closed_doors(seed: int) -> trimesh.Trimesh:
         for part in block.parts:
             s.parts.append(part.apply_translation((0.0, 0.0, depth + gap * k)))
         width, depth = max(width, w), depth + gap * k + d
-    taken = [(-3.0, width + 3.0, -3.0, depth + 3.0)]
-    for k in range(int(rng.integers(25, 35))):  # trees and parked cars in the yard
-        p = np.array([rng.uniform(-14.0, width + 14.0), rng.uniform(-14.0, depth + 14.0)])
-        if k % 3 == 0 and _clear(p[0] - 0.5, p[0] + 4.7, p[1] - 1.5, p[1] + 1.5, taken):
-            _car(s, p[0], p[0] + 4.2, p[1] - 0.9, p[1] + 0.9, 0.0)
-            taken.append((p[0] - 0.5, p[0] + 4.7, p[1] - 1.5, p[1] + 1.5))
-        elif k % 3 and _clear(p[0] - 1.5, p[0] + 1.5, p[1] - 1.5, p[1] + 1.5, taken):
-            _trunk(s, p, rng.uniform(0.25, 0.4), -0.5, 6.0)
-            taken.append((p[0] - 1.5, p[0] + 1.5, p[1] - 1.5, p[1] + 1.5))
+    _yard(s, rng, width, depth, 3.0, 14.0, int(rng.integers(25, 35)))
     s.ground(-15.0, width + 15.0, -15.0, depth + 15.0, 0.0, [])
     return s.mesh()
 
@@ -9341,15 +9348,7 @@ def ladders(seed: int) -> trimesh.Trimesh:
                 s.box(x, x + w, y - 0.1, y + rng.uniform(1.2, 1.9), z, z + d)
                 taken.append((x, x + w, z, z + d))
     _lid(s, -0.15, width + 0.15, -0.15, depth + 0.15, 3 * storey)
-    taken = [(-1.0, width + 1.0, -1.0, depth + 1.0)]
-    for k in range(int(rng.integers(20, 30))):  # trees and cars in the yard
-        p = rng.uniform([-11.0, -11.0], [width + 11.0, depth + 11.0])
-        if k % 3 == 0 and _clear(p[0] - 0.5, p[0] + 4.7, p[1] - 1.5, p[1] + 1.5, taken):
-            _car(s, p[0], p[0] + 4.2, p[1] - 0.9, p[1] + 0.9, 0.0)
-            taken.append((p[0] - 0.5, p[0] + 4.7, p[1] - 1.5, p[1] + 1.5))
-        elif k % 3 and _clear(p[0] - 1.5, p[0] + 1.5, p[1] - 1.5, p[1] + 1.5, taken):
-            _trunk(s, p, rng.uniform(0.25, 0.4), -0.5, 6.0)
-            taken.append((p[0] - 1.5, p[0] + 1.5, p[1] - 1.5, p[1] + 1.5))
+    _yard(s, rng, width, depth, 1.0, 11.0, int(rng.integers(20, 30)))
     s.ground(-12.0, width + 12.0, -12.0, depth + 12.0, 0.0, [])
     return s.mesh()
 
