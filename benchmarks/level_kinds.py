@@ -9289,7 +9289,7 @@ def ladders(seed: int) -> trimesh.Trimesh:
     degrees (:func:`_lid`) in a yard 12 m wide, whose storeys are joined ONLY by ladders (:func:`_ladder`: 2-3 up to
     each storey, each through a hatch 1.0 x 1.2 m railed on three sides) and by one or two lift shafts (2.4 m square
     inside, walls 0.3 m thick from the ground to the roof, a door 1.6 m wide on every storey, no floor in the shaft
-    above the ground's car): no flight, no ramp. Each storey is 4-5 bays along x and two rows along z, every
+    above the ground's car): no flight, no ramp. Each storey is 4-6 bays along x and two rows along z, every
     partition open by doorways 1.6 m wide; machines (boxes 1-3 m across, 1.2-1.9 m high) in every room. The ground
     storey opens on the yard by two doors 2 m wide; trees and cars in the yard.
 
@@ -9635,9 +9635,10 @@ def prop_pile(seed: int) -> trimesh.Trimesh:
     each other, none trimmed: the floor is tiles 4 m square, 0.3 m thick, each 4.1 m wide (overlapping its neighbours
     by 10 cm) and moved by up to 3 cm in plan and 1 cm in height; the yard's wall is pieces 4.2 m long (overlapping),
     3 m high. 90-120 clusters of props, each 2.4 m clear of the others: stacks of 2-5 crates (cubes 1.0-1.4 m, turned to
-    any angle, sunk 0.05-0.3 m into the floor and up to 0.4 m into one another, a crate on top sunk 0.1-0.3 m into the
-    one below), rings of 3-7 barrels (octagons 0.3-0.35 m in radius, 0.9 m high, sunk up to 0.2 m, overlapping), runs
-    of 1-3 pipes lying along x or z (radius 0.2-0.8 m, 4-12 m long, the axis 0.1-0.4 radii under the floor's top, so
+    any angle, sunk 0.05-0.3 m into the floor and up to 0.4 m into one another, from the third crate on, half of them
+    raised to a base 0.7-0.9 m up, 0.8 m at most off the stack's centre: resting on, sunk up to 0.6 m into or just over
+    the crates below, or held by other raised crates alone), rings of 3-7 barrels (octagons 0.3-0.35 m in radius, 0.9 m high, sunk up to 0.2 m, overlapping), runs
+    of 1-3 pipes lying along x or z (radius 0.2-0.8 m, 4-12 m long, a third one across the run 2 m long, the axis 0.1-0.4 radii under the floor's top, so
     their tops stand 0.12-0.72 m up, crossing one another), and shipping containers (2.4 x 6 x 2.6 m, along x or z, sunk 0.1 m: closed boxes).
 
     Expected (written before the first run): the yard is one area round the clusters; the crates', barrels' and thick
@@ -9707,7 +9708,7 @@ def prop_pile(seed: int) -> trimesh.Trimesh:
 
 def beams(seed: int) -> trimesh.Trimesh:
     """A parkour run over a town's roofs: a 6 x 5 grid of buildings 9-14 m square on plots 17-20 m apart (so 3-11 m
-    of street between them), flat roofs rising from 4 m at the west to 12-15 m at the east (1.5-2 m a column, up to
+    of street between them), flat roofs rising from 4 m at the west to 11.5-15.5 m at the east (1.5-2 m a column, up to
     1.5 m more at random), each closed solid standing in the street's ground. Neighbouring roofs are joined across
     the street by a balance beam 0.4-0.8 m wide (a chance of 0.45), a plank 1.2-1.6 m wide (0.35) or nothing (0.2),
     sloping from roof to roof; where the rise over the gap is steeper than 40 degrees nothing joins them. Roof clutter

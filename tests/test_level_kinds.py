@@ -889,7 +889,7 @@ def test_the_prop_piles_containers_hold_floor_inside_and_on_top(kinds):
     assert ((np.abs(heights - 2.5) < 0.2) | (np.abs(heights) < 0.2)).all()
 
 
-def test_the_beams_join_no_roof_but_the_planks_do(kinds):
+def test_the_beams_hold_no_floor_so_the_roofs_stand_apart(kinds):
     """The street and the start roof (4 m up, by its flight) are one area; beams 0.4-0.8 m wide hold no floor for the
     presets' agent, so roofs joined only by beams are areas of their own (more than five roofs apart)."""
     label, nav = areas(kinds["beams"](0))
