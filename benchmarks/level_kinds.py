@@ -1,4 +1,4 @@
-"""Level kinds of the fifth to twentieth held-out rounds (issue 9): generators no preset setting was made on.
+"""Level kinds of the fifth to twenty-first held-out rounds (issue 9): generators no preset setting was made on.
 
 Fifth round: six kinds, each about 1,000 navmesh polygons with the presets' agent (radius 0.5 m, height 2 m, climb 0.4 m):
 ``subway`` (platforms, track pits 1.2 m lower, stairs up to two concourses), ``archipelago`` (islands joined by
@@ -179,6 +179,18 @@ a first draft's 2.2 m lintels shut every room of the caravanserai, 58 areas on s
 does (the same areas; 1.4 % more walkable area, the walls' thickness); a flight's foot under a storey keeps two half
 storeys less a riser and the slab of head room (2.26 m at 1.31 m a half storey closed a split-level house's storeys
 into three areas on a first draft's seed 2).
+
+Twenty-first round: six more kinds with features of real exported levels, 523-785 navmesh route graph nodes with
+that agent (seeds 0-2): ``ladders`` (a pump house of three storeys joined only by ladders and lift shafts),
+``jump_gaps`` (platforms over a void joined by walkways broken by gaps 0.8-2 m a player jumps), ``collision_hulls`` (a
+town square exported with the invisible boxes wrapping its statues, stalls, fountain, bandstand and cars, a blocking
+volume over a ledge), ``thresholds`` (shops entered over door steps of 0.05-0.3 m from pavements behind kerbs of
+0.1-0.3 m, sills between rooms), ``prop_pile`` (a yard of crates, barrels, pipes and containers pushed into the floor
+and into one another on overlapping floor tiles) and ``beams`` (roofs joined by balance beams 0.4-0.8 m wide, under the
+presets' agent's diameter, and planks 1.2-1.6 m). A closed prop sunk into the floor leaves the floor inside it (a
+container's, 2.5 m of head room) and its top as floor (:func:`prop_pile`), as a collision hull left in the file does
+(:func:`collision_hulls`); a pipe lying half sunk stops the agent only where its top stands over the 0.4 m climb (a
+first draft's pipes, 0.11-0.44 m up, stopped it at 3 of seed 0's 31).
 
 Run: ``.venv/bin/python benchmarks/level_kinds.py OUT_DIR [--kinds subway forest] [--seeds 0 1 2]`` writes
 ``OUT_DIR/<kind>_s<seed>.obj``, the files ``benchmarks/analysis_quality.py --levels`` takes (which also takes the
@@ -8692,6 +8704,21 @@ def _door_block(rng: np.random.Generator) -> tuple[_Solids, float, float]:
     return s, width, depth
 
 
+def _yard(s: _Solids, rng: np.random.Generator, width: float, depth: float, clear: float, out: float, tries: int) -> None:
+    """``tries`` tries at parked cars (every third) and tree trunks at plan points uniform over [-out, width + out] x
+    [-out, depth + out] m, each kept off the building [-clear, width + clear] x [-clear, depth + clear] and off the
+    others."""
+    taken = [(-clear, width + clear, -clear, depth + clear)]
+    for k in range(tries):
+        p = np.array([rng.uniform(-out, width + out), rng.uniform(-out, depth + out)])
+        if k % 3 == 0 and _clear(p[0] - 0.5, p[0] + 4.7, p[1] - 1.5, p[1] + 1.5, taken):
+            _car(s, p[0], p[0] + 4.2, p[1] - 0.9, p[1] + 0.9, 0.0)
+            taken.append((p[0] - 0.5, p[0] + 4.7, p[1] - 1.5, p[1] + 1.5))
+        elif k % 3 and _clear(p[0] - 1.5, p[0] + 1.5, p[1] - 1.5, p[1] + 1.5, taken):
+            _trunk(s, p, rng.uniform(0.25, 0.4), -0.5, 6.0)
+            taken.append((p[0] - 1.5, p[0] + 1.5, p[1] - 1.5, p[1] + 1.5))
+
+
 def closed_doors(seed: int) -> trimesh.Trimesh:
     """Two one-storey blocks 16-22 m apart (:func:`_door_block`) exported with their doors' leaves in place, as a
     real level's file keeps them. Each block: 7 columns of rooms 6-9 m wide in four rows 6-8 m deep, two corridors 3 m wide along x between the outer and inner rows, joined
@@ -8718,15 +8745,7 @@ def closed_doors(seed: int) -> trimesh.Trimesh:
         for part in block.parts:
             s.parts.append(part.apply_translation((0.0, 0.0, depth + gap * k)))
         width, depth = max(width, w), depth + gap * k + d
-    taken = [(-3.0, width + 3.0, -3.0, depth + 3.0)]
-    for k in range(int(rng.integers(25, 35))):  # trees and parked cars in the yard
-        p = np.array([rng.uniform(-14.0, width + 14.0), rng.uniform(-14.0, depth + 14.0)])
-        if k % 3 == 0 and _clear(p[0] - 0.5, p[0] + 4.7, p[1] - 1.5, p[1] + 1.5, taken):
-            _car(s, p[0], p[0] + 4.2, p[1] - 0.9, p[1] + 0.9, 0.0)
-            taken.append((p[0] - 0.5, p[0] + 4.7, p[1] - 1.5, p[1] + 1.5))
-        elif k % 3 and _clear(p[0] - 1.5, p[0] + 1.5, p[1] - 1.5, p[1] + 1.5, taken):
-            _trunk(s, p, rng.uniform(0.25, 0.4), -0.5, 6.0)
-            taken.append((p[0] - 1.5, p[0] + 1.5, p[1] - 1.5, p[1] + 1.5))
+    _yard(s, rng, width, depth, 3.0, 14.0, int(rng.integers(25, 35)))
     s.ground(-15.0, width + 15.0, -15.0, depth + 15.0, 0.0, [])
     return s.mesh()
 
@@ -9250,6 +9269,521 @@ def roof_town(seed: int) -> trimesh.Trimesh:
     return s.mesh()
 
 
+def _ladder(s: _Solids, p: np.ndarray, out: np.ndarray, y0: float, y1: float) -> None:
+    """A ladder 0.5 m wide centred on plan point ``p`` (x, z), standing 0.15 m out along the unit axis ``out`` (x, z)
+    from the face it is fixed to: two rails 0.06 m square from ``y0`` to 1 m over ``y1`` and rungs 0.04 m thick every
+    0.3 m. Too narrow for any agent to stand on; Recast does not climb it."""
+    out = np.asarray(out, dtype=np.float64)
+    side, c = np.abs(out[::-1]), np.asarray(p, dtype=np.float64) + out * 0.15
+    for end in (-0.25, 0.25):
+        q = c + side * end
+        s.box(q[0] - 0.03, q[0] + 0.03, y0, y1 + 1.0, q[1] - 0.03, q[1] + 0.03)
+    lo, hi = c - side * 0.25, c + side * 0.25
+    for y in np.arange(y0 + 0.3, y1 + 0.9, 0.3):
+        s.box(min(lo[0], hi[0]) - 0.02, max(lo[0], hi[0]) + 0.02, y - 0.02, y + 0.02,
+              min(lo[1], hi[1]) - 0.02, max(lo[1], hi[1]) + 0.02)
+
+
+def ladders(seed: int) -> trimesh.Trimesh:
+    """A pump house of three storeys 4.5 m apart (y = 0, 4.5, 9) on a 60-70 x 40-46 m plate under a roof at 50
+    degrees (:func:`_lid`) in a yard 12 m wide, whose storeys are joined ONLY by ladders (:func:`_ladder`: 2-3 up to
+    each storey, each through a hatch 1.0 x 1.2 m railed on three sides) and by one or two lift shafts (2.4 m square
+    inside, walls 0.3 m thick from the ground to the roof, a door 1.6 m wide on every storey, no floor in the shaft
+    above the ground's car): no flight, no ramp. Each storey is 4-6 bays along x and two rows along z, every
+    partition open by doorways 1.6 m wide; machines (boxes 1-3 m across, 1.2-1.9 m high) in every room. The ground
+    storey opens on the yard by two doors 2 m wide; trees and cars in the yard.
+
+    Expected (written before the first run): the navmesh climbs neither ladders nor lift, so the level is three areas:
+    the ground storey with the yard and the lift cars, and each upper storey on its own. A user sees one warning naming
+    the two upper storeys as areas apart (not left out: each is thousands of square metres), and three structures, one
+    a storey; within each the heat map is right for that storey alone: highest in the bays along the middle of the
+    plate and through the doorways between them, lowest in the rooms at the ends. What a designer expects (the ladders
+    and lifts as the only ways up, so busiest at their feet and hatches) the heat map cannot show: nothing joins the
+    storeys, so no traffic runs to a ladder more than to any other place of its storey.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    width, depth, storey = rng.uniform(60.0, 70.0), rng.uniform(40.0, 46.0), 4.5
+    bays = _split(0.0, width, rng.uniform(12.0, 16.0))
+    middle = depth / 2
+    shafts = [float(x) for x in rng.uniform(bays[:-1] + 2.0, bays[1:] - 5.0)[rng.choice(len(bays) - 1, int(rng.integers(1, 3)), replace=False)]]
+    shaft_rects = [(x, x + 3.0, depth - 3.0, depth) for x in shafts]
+    doors_x = {k: [rng.uniform(1.0, middle - 2.6), rng.uniform(middle + 1.0, depth - 4.0)] for k in range(1, len(bays) - 1)}
+    doors_z = [rng.uniform(a + 1.0, b - 2.6) for a, b in pairwise(bays)]
+    keep = [(x - 2.0, x + 2.0, z - 1.0, z + 2.6) for k, zs in doors_x.items() for x in [bays[k]] for z in zs]
+    keep += [(x - 1.0, x + 2.6, middle - 2.0, middle + 2.0) for x in doors_z]
+    keep += [(x - 1.0, x + 4.0, depth - 6.0, depth) for x in shafts]
+    hatches: list[list[tuple[float, float, float, float]]] = [[] for _ in range(3)]
+    for k in (1, 2):  # the hatches up to storey k, in rooms clear of the doorways and of one another
+        while len(hatches[k]) < int(rng.integers(2, 4)):
+            x, z = rng.uniform(2.0, width - 3.0), rng.uniform(2.0, depth - 3.2)
+            if _clear(x - 1.5, x + 2.5, z - 1.5, z + 2.7, keep + hatches[1] + hatches[2]):
+                hatches[k].append((x, x + 1.0, z, z + 1.2))
+    for k in range(3):
+        y = k * storey
+        if k:
+            s.slab(0.0, width, 0.0, depth, y, hatches[k] + [(x + 0.3, x + 2.7, z0 + 0.3, z1 - 0.3) for x, _, z0, z1 in shaft_rects])
+        for x0, x1, z0, z1 in hatches[k]:  # the ladder on the hatch's west side, rails round the other three
+            _ladder(s, np.array([x0, (z0 + z1) / 2]), np.array([1.0, 0.0]), y - storey, y)
+            _rail_ring(s, x0, x1, z0, z1, y, {"west": [(0.0, z1 - z0)]})
+        top = y + storey - 0.3
+        outer = [(rng.uniform(4.0, width - 6.0), 2.0)] if k == 0 else []
+        s.wall((0.0, 0.0), (width, 0.0), y - 0.5, top, outer, thickness=0.3)
+        s.wall((0.0, depth), (width, depth), y - 0.5, top, thickness=0.3)
+        s.wall((0.0, 0.0), (0.0, depth), y - 0.5, top, [(rng.uniform(4.0, depth - 6.0), 2.0)] if k == 0 else [], thickness=0.3)
+        s.wall((width, 0.0), (width, depth), y - 0.5, top, thickness=0.3)
+        for j, zs in doors_x.items():
+            s.wall((bays[j], 0.0), (bays[j], depth), y, top, [(z, 1.6) for z in zs])
+        s.wall((0.0, middle), (width, middle), y, top, [(x, 1.6) for x in doors_z])
+        for x0, x1, z0, z1 in shaft_rects:  # the shaft's walls, its door facing south
+            s.wall((x0, z0 + 0.15), (x1, z0 + 0.15), y, top + 0.3, [(0.7, 1.6)], thickness=0.3)
+            s.wall((x0 + 0.15, z0), (x0 + 0.15, z1), y, top + 0.3, thickness=0.3)
+            s.wall((x1 - 0.15, z0), (x1 - 0.15, z1), y, top + 0.3, thickness=0.3)
+        taken = keep + hatches[k] + (hatches[k + 1] if k < 2 else [])  # clear of the hatch and of the ladder up
+        for _ in range(int(rng.integers(50, 70))):  # machines
+            w, d = rng.uniform(1.0, 3.0, 2)
+            x, z = rng.uniform(0.6, width - 0.6 - w), rng.uniform(0.6, depth - 0.6 - d)
+            if _clear(x - 1.2, x + w + 1.2, z - 1.2, z + d + 1.2, taken + [(b - 0.3, b + 0.3, 0.0, depth) for b in bays]
+                      + [(0.0, width, middle - 0.3, middle + 0.3)]):
+                s.box(x, x + w, y - 0.1, y + rng.uniform(1.2, 1.9), z, z + d)
+                taken.append((x, x + w, z, z + d))
+    _lid(s, -0.15, width + 0.15, -0.15, depth + 0.15, 3 * storey)
+    _yard(s, rng, width, depth, 1.0, 11.0, int(rng.integers(20, 30)))
+    s.ground(-12.0, width + 12.0, -12.0, depth + 12.0, 0.0, [])
+    return s.mesh()
+
+
+def _cover(s: _Solids, rng: np.random.Generator, rect: tuple[float, float, float, float], y: float, tries: int,
+           taken: list[tuple[float, float, float, float]]) -> None:
+    """Up to ``tries`` pieces of cover (crates 1.2 m, low walls 1 m, pillars 4 m) on the floor at ``y`` inside ``rect``
+    (x0, x1, z0, z1), 1 m off its edges and 1.2 m clear of ``taken`` and of one another (added to ``taken``)."""
+    for _ in range(tries):
+        kind = int(rng.integers(3))
+        w, d = ((1.2, 1.2), (rng.uniform(2.5, 4.0), 0.4), (0.8, 0.8))[kind]
+        if rng.random() < 0.5:
+            w, d = d, w
+        if rect[1] - rect[0] < w + 2.0 or rect[3] - rect[2] < d + 2.0:
+            continue
+        q = rng.uniform([rect[0] + 1.0, rect[2] + 1.0], [rect[1] - 1.0 - w, rect[3] - 1.0 - d])
+        if _clear(q[0] - 1.2, q[0] + w + 1.2, q[1] - 1.2, q[1] + d + 1.2, taken):
+            s.box(q[0], q[0] + w, y - 0.3, y + (1.2, 1.0, 4.0)[kind], q[1], q[1] + d)
+            taken.append((q[0], q[0] + w, q[1], q[1] + d))
+
+
+def jump_gaps(seed: int) -> trimesh.Trimesh:
+    """Platforms over a void joined by railed walkways a player runs and jumps: a 6 x 5 grid of platforms 12-16 m
+    square, 28-34 m apart (centres), their tops 8 m up on pillars (nothing below them, as a level built over a kill
+    plane), each joined to its grid neighbours by a walkway 2.5-3.5 m wide with rails 1.1 m high (a grid edge kept with
+    a chance of 0.8); a walkway is broken by a gap 0.8-2.0 m long (a chance of 0.45) somewhere along it, at least 3 m
+    from either end, the rails broken with it. Cover on every platform (crates 1.2 m, low walls 1 m, pillars 4 m); on
+    a third of them a dais 1.6 m high reached by a flight.
+
+    Expected (written before the first run): the navmesh does not jump, so every gap parts its walkway, and the level
+    is as many areas as the unbroken walkways leave (about five to ten on a seed), the walkway's two stubs at a gap
+    dead ends of their platforms' areas. Each area is covered by a structure of its own; the small ones (a lone
+    platform, about 150-250 m²) too. Traffic in each area highest on the walkways and platforms between its ends,
+    lowest on the dais and in the gap stubs. What a designer expects (the jumps as the level's main line, busiest
+    across the gaps that join the halves) the heat map cannot show.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    nx, nz, pitch, y = 6, 5, rng.uniform(28.0, 34.0), 8.0
+    half = rng.uniform(6.0, 8.0, (nx, nz))
+    centre = lambda i, j: np.array([i * pitch, j * pitch])  # noqa: E731 (the grid's plan points)
+    taken: dict[tuple[int, int], list[tuple[float, float, float, float]]] = {(i, j): [] for i in range(nx) for j in range(nz)}
+    for i in range(nx):
+        for j in range(nz):
+            c, h = centre(i, j), half[i, j]
+            s.box(c[0] - h, c[0] + h, y - 0.5, y, c[1] - h, c[1] + h)
+            for dx, dz in ((-1, -1), (-1, 1), (1, -1), (1, 1)):
+                _trunk(s, c + np.array([dx, dz]) * (h - 1.0), 0.4, -20.0, y - 0.5)
+    for i in range(nx):
+        for j in range(nz):
+            for di, dj in ((1, 0), (0, 1)):
+                if i + di >= nx or j + dj >= nz or rng.random() > 0.8:
+                    continue
+                heading = np.array([float(di), float(dj)])
+                a = centre(i, j) + heading * (half[i, j] - 0.2)
+                length = pitch - half[i, j] - half[i + di, j + dj] + 0.4
+                width = rng.uniform(2.5, 3.5)
+                spans = [(0.0, length)]
+                if rng.random() < 0.45:
+                    g0 = rng.uniform(3.0, length - 3.0 - 2.0)
+                    spans = [(0.0, g0), (g0 + rng.uniform(0.8, 2.0), length)]
+                for u0, u1 in spans:
+                    rect = _rect(a + heading * u0, heading, u1 - u0, width)
+                    s.box(rect[0], rect[1], y - 0.4, y, rect[2], rect[3])
+                    for out in (-1.0, 1.0):  # the rails, from the platforms' edges on
+                        r0, r1 = max(u0, 0.4), min(u1, length - 0.4)
+                        line = a + heading * r0 + heading[::-1] * out * (width / 2 - 0.05)
+                        rail = _rect(line, heading, r1 - r0, 0.1)
+                        s.box(rail[0], rail[1], y, y + 1.1, rail[2], rail[3])
+                for sign, (p, q) in ((1.0, (i, j)), (-1.0, (i + di, j + dj))):  # keep the walkway's mouth clear
+                    mouth = centre(p, q) + sign * heading * half[p, q]
+                    taken[p, q].append(_rect(mouth - heading * (4.5 if sign > 0 else 1.5), heading, 6.0, width + 2.0))
+    for i in range(nx):
+        for j in range(nz):
+            c, h = centre(i, j), half[i, j]
+            if rng.random() < 1.0 / 3.0:  # a dais in a corner, its flight climbing along x toward it
+                sx = float(rng.choice([-1.0, 1.0]))
+                dais = (c[0] + sx * (h - 3.5) - 1.5, c[0] + sx * (h - 3.5) + 1.5, c[1] - 1.5, c[1] + 1.5)
+                s.box(dais[0], dais[1], y - 0.3, y + 1.6, dais[2], dais[3])
+                edge = np.array([dais[0] if sx > 0 else dais[1], c[1]])
+                run = _flight_to(s, edge, np.array([sx, 0.0]), 2.0, y, y + 1.6, 0.28)
+                taken[i, j].append((min(edge[0], edge[0] - sx * (run + 1.5)), max(edge[0], edge[0] - sx * (run + 1.5)),
+                                    c[1] - 2.0, c[1] + 2.0))
+                taken[i, j].append(dais)
+            _cover(s, rng, (c[0] - h, c[0] + h, c[1] - h, c[1] + h), y, int(rng.integers(10, 18)), taken[i, j])
+    return s.mesh()
+
+
+def collision_hulls(seed: int) -> trimesh.Trimesh:
+    """A town square 120-140 x 90-100 m exported, as many engines' levels are, with its invisible collision hulls in the
+    same file as the render meshes they wrap (the ground goes on under every hull). Render meshes: house fronts round
+    the square, 10 m deep (ridged), broken by four streets 9 m wide; a terrace 1.6 m up along the
+    north side reached by a flight, with a balustrade 1 m high; 3-5 statues (a plinth 2.5 m square, 1.2 m high, and a
+    figure); 10-16 market stalls (a counter, a canopy on four posts); a fountain (a basin 8 m square with a rim 0.6 m high and a column); a bandstand (a deck 1 m up on posts
+    under a roof, 10 m square, up three steps); trees (trunks); benches; cars in the streets. Collision hulls, each a
+    closed box: one 3.5 m square and 4 m high round each statue; one 3.4 x 2.4 m and 2.8 m high round each stall; one 9 m square and 3 m high over the fountain; one
+    11 m square and 5 m high round the bandstand; a blocking volume 2 m deep and 3 m high along the terrace's edge
+    over the balustrade; one 5 x 2.2 m and 1.7 m high round each car; invisible walls 0.5 m thick and 10 m high across
+    each street 20 m out and along its sides behind the houses.
+
+    Expected (written before the first run): the square, the streets to the invisible walls and the terrace are one
+    area, holed round every hull. Recast reads each hull as the solid it is, so three kinds of floor no player reaches
+    appear: the hulls' tops (the fountain's 81 m², the bandstand's 121 m², the terrace volume's strip 30 m long and 2
+    m wide, each statue's 12 m²; the cars' 11 m² under the agent's height to the ground and eroded to nothing), the
+    render floors inside the hulls with head room (the bandstand's deck, 2.6 m under its hull's roof; the fountain's
+    basin floor, 2.9 m) and the ground inside them (the bandstand's, under its deck: no head room). Those over the
+    cover's smallest area (28 m²) get structures of their own with no traffic, the rest are left out with a warning.
+    Traffic on the main area highest across the square between the street mouths and round the hulls, lowest on the
+    terrace. A designer expects the hulls' tops and insides to hold nothing at all.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    width, depth = rng.uniform(120.0, 140.0), rng.uniform(90.0, 100.0)
+    holes: list[tuple[float, float, float, float]] = []
+    mouths = {"south": rng.uniform(15.0, width - 25.0), "north": rng.uniform(15.0, width - 25.0),
+              "west": rng.uniform(15.0, depth - 35.0), "east": rng.uniform(15.0, depth - 35.0)}
+    street = 9.0
+
+    def local(side: str, u0: float, u1: float, v0: float, v1: float) -> tuple[float, float, float, float]:
+        """The plan (x0, x1, z0, z1) of [u0, u1] along a side of the square and [v0, v1] out from it, metres."""
+        return {"south": (u0, u1, -v1, -v0), "north": (u0, u1, depth + v0, depth + v1),
+                "west": (-v1, -v0, u0, u1), "east": (width + v0, width + v1, u0, u1)}[side]
+
+    for side, at in mouths.items():
+        along = width if side in ("south", "north") else depth
+        for u0, u1 in ((0.0, at), (at + street, along)):  # the house fronts, 10 m deep, ridged
+            for a, b in pairwise(_split(u0, u1, rng.uniform(8.0, 12.0))):
+                _ridged(s, *local(side, a, b, 0.0, 10.0), -0.5, rng.uniform(7.0, 12.0))
+        rect = local(side, at, at + street, 0.0, 20.0)  # the street's ground to an invisible wall across it
+        s.box(rect[0], rect[1], -0.5, 0.0, rect[2], rect[3])
+        for wall in (local(side, at, at + street, 20.0, 20.5), local(side, at - 0.5, at, 10.0, 20.5),
+                     local(side, at + street, at + street + 0.5, 10.0, 20.5)):
+            s.box(wall[0], wall[1], -0.5, 10.0, wall[2], wall[3])
+        for v in (13.0, 17.5):  # cars parked along the street, each in a collision hull 5 x 2.2 m, 1.7 m high
+            car, hull = local(side, at + 1.6, at + 3.4, v - 2.1, v + 2.1), local(side, at + 1.4, at + 3.6, v - 2.5, v + 2.5)
+            _car(s, *car, 0.0)
+            s.box(hull[0], hull[1], -0.5, 1.7, hull[2], hull[3])
+    x0 = rng.uniform(2.0, width - 32.0)  # the terrace, 30 m long, clear of the north street's mouth
+    while x0 < mouths["north"] + street + 1.0 and mouths["north"] - 1.0 < x0 + 30.0:
+        x0 = rng.uniform(2.0, width - 32.0)
+    terrace = (x0, x0 + 30.0, depth - 10.0, depth)
+    s.box(terrace[0], terrace[1], -0.5, 1.6, terrace[2], terrace[3])
+    holes.append(terrace)
+    stair_at = rng.uniform(terrace[0] + 3.0, terrace[1] - 5.0)
+    _flight_to(s, np.array([stair_at + 1.0, terrace[2]]), np.array([0.0, 1.0]), 2.0, 0.0, 1.6, 0.28)
+    s.wall((terrace[0], terrace[2] + 0.1), (terrace[1], terrace[2] + 0.1), 1.6, 2.6, [(stair_at - terrace[0], 2.0)])
+    for u0, u1 in ((terrace[0], stair_at), (stair_at + 2.0, terrace[1])):  # the blocking volume over the balustrade
+        s.box(u0, u1, -0.5, 3.0, terrace[2] - 1.0, terrace[2] + 1.0)
+    taken = [(terrace[0] - 1.0, terrace[1] + 1.0, terrace[2] - 6.0, terrace[3])]
+    taken += [(at - 3.0, at + street + 3.0, -1.0, 12.0) if side == "south" else
+              (at - 3.0, at + street + 3.0, depth - 12.0, depth + 1.0) if side == "north" else
+              (-1.0, 12.0, at - 3.0, at + street + 3.0) if side == "west" else
+              (width - 12.0, width + 1.0, at - 3.0, at + street + 3.0) for side, at in mouths.items()]
+
+    def place(size: float) -> np.ndarray | None:
+        """A plan centre for a square ``size`` m wide, 4 m clear of everything placed, or None."""
+        for _ in range(100):
+            c = rng.uniform([size / 2 + 5.0, size / 2 + 5.0], [width - size / 2 - 5.0, depth - size / 2 - 12.0])
+            rect = (c[0] - size / 2, c[0] + size / 2, c[1] - size / 2, c[1] + size / 2)
+            if _clear(rect[0] - 4.0, rect[1] + 4.0, rect[2] - 4.0, rect[3] + 4.0, taken):
+                taken.append(rect)
+                return c
+        return None
+
+    c = place(11.0)
+    if c is not None:  # the bandstand: a deck 1 m up (three steps), posts, a flat roof 3.6 m over the deck; its hull
+        s.box(c[0] - 5.0, c[0] + 5.0, -0.5, 1.0, c[1] - 5.0, c[1] + 5.0)
+        _flight_to(s, np.array([c[0], c[1] - 5.0]), np.array([0.0, 1.0]), 2.5, 0.0, 1.0, 0.3)
+        for dx in (-4.7, 4.7):
+            for dz in (-4.7, 4.7):
+                _trunk(s, c + np.array([dx, dz]), 0.15, 1.0, 4.6)
+        s.box(c[0] - 5.3, c[0] + 5.3, 4.6, 4.9, c[1] - 5.3, c[1] + 5.3)
+        s.box(c[0] - 5.5, c[0] + 5.5, -0.5, 5.0, c[1] - 5.5, c[1] + 5.5)
+    c = place(9.0)
+    if c is not None:  # the fountain: a basin 8 m square (rim 0.6 m, floor 0.1 m down), a column; its hull 3 m high
+        s.box(c[0] - 4.0, c[0] + 4.0, -0.5, -0.1, c[1] - 4.0, c[1] + 4.0)
+        for wall in ((c[0] - 4.0, c[0] + 4.0, c[1] - 4.0, c[1] - 3.6), (c[0] - 4.0, c[0] + 4.0, c[1] + 3.6, c[1] + 4.0),
+                     (c[0] - 4.0, c[0] - 3.6, c[1] - 3.6, c[1] + 3.6), (c[0] + 3.6, c[0] + 4.0, c[1] - 3.6, c[1] + 3.6)):
+            s.box(wall[0], wall[1], -0.5, 0.6, wall[2], wall[3])
+        _trunk(s, c, 0.5, -0.1, 2.6)
+        s.box(c[0] - 4.5, c[0] + 4.5, -0.5, 3.0, c[1] - 4.5, c[1] + 4.5)
+        holes.append((c[0] - 4.0, c[0] + 4.0, c[1] - 4.0, c[1] + 4.0))  # the basin is its own floor
+    for _ in range(int(rng.integers(3, 6))):  # statues on plinths, each in a hull 3.5 m square, 4 m high
+        c = place(3.5)
+        if c is not None:
+            s.box(c[0] - 1.25, c[0] + 1.25, -0.5, 1.2, c[1] - 1.25, c[1] + 1.25)
+            _trunk(s, c, 0.4, 1.2, 3.4)
+            s.box(c[0] - 1.75, c[0] + 1.75, -0.5, 4.0, c[1] - 1.75, c[1] + 1.75)
+    for _ in range(int(rng.integers(10, 17))):  # market stalls (a counter, a canopy on posts), each in a hull
+        c = place(3.4)
+        if c is not None:
+            s.box(c[0] - 1.4, c[0] + 1.4, -0.1, 0.9, c[1] - 0.2, c[1] + 0.6)
+            for dx in (-1.4, 1.4):
+                for dz in (-0.9, 0.9):
+                    _trunk(s, c + np.array([dx, dz]), 0.05, -0.1, 2.4)
+            s.hull(np.array([[c[0] + dx, 2.4 + 0.3 * (dz > 0) + dy, c[1] + dz] for dx in (-1.6, 1.6) for dz in (-1.1, 1.1)
+                             for dy in (0.0, 0.05)]))
+            s.box(c[0] - 1.7, c[0] + 1.7, -0.5, 2.8, c[1] - 1.2, c[1] + 1.2)
+    for k in range(int(rng.integers(90, 120))):  # trees (trunks) and benches, no hulls
+        c = place(1.0 if k % 2 else 1.8)
+        if c is not None and k % 2:
+            _trunk(s, c, rng.uniform(0.25, 0.4), -0.5, 6.0)
+        elif c is not None:
+            s.box(c[0] - 0.9, c[0] + 0.9, -0.1, 0.5, c[1] - 0.3, c[1] + 0.3)
+    s.ground(0.0, width, 0.0, depth, 0.0, holes)
+    return s.mesh()
+
+
+def thresholds(seed: int) -> trimesh.Trimesh:
+    """A shopping street grid of 3 x 2 blocks 32-40 x 24-30 m between roads 8-10 m wide (y = 0), every step a real
+    town has at its doors and kerbs: each block's pavement, 3 m wide, stands a kerb of 0.10-0.30 m over the road (one
+    height a block), and the block holds two rows of shops back to back, 6-10 m wide, each entered from the pavement
+    by a door 1.6 m wide whose threshold is a step of 0.05-0.30 m up to the shop's floor; a shop's front room opens
+    on its back room by a doorway 1.6 m wide across a sill 0.15 m deep and 0.05-0.15 m high. Walls 0.2 m thick, 3.5 m
+    high under a roof at 50 degrees (:func:`_gable`); 1-3 pieces of furniture a room (:func:`_furnish`); cars parked
+    on the roads, lamp posts on the pavements.
+
+    Expected (written before the first run): every step is under the presets' 0.4 m climb, so the town is one area:
+    roads, pavements and every room. Each kerb and threshold is a border between floors of two heights, so the navmesh
+    has more polygons than the same town flat, but the structure and heat map should not see the steps: traffic
+    highest on the roads and pavements through the middle of the grid, lowest in the back rooms (each a dead end
+    behind its front room), the front rooms between. A designer expects the same.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    road = rng.uniform(8.0, 10.0)
+    xs = np.cumsum([road, *sum(([rng.uniform(32.0, 40.0), road] for _ in range(3)), [])])
+    zs = np.cumsum([road, *sum(([rng.uniform(24.0, 30.0), road] for _ in range(2)), [])])
+    holes: list[tuple[float, float, float, float]] = []
+    for bx0, bx1 in zip(xs[0:-1:2], xs[1::2]):
+        for bz0, bz1 in zip(zs[0:-1:2], zs[1::2]):
+            kerb = rng.uniform(0.10, 0.30)
+            holes.append((bx0, bx1, bz0, bz1))
+            s.ground(bx0, bx1, bz0, bz1, kerb, [(bx0 + 3.0, bx1 - 3.0, bz0 + 3.0, bz1 - 3.0)])
+            for k in range(int(rng.integers(4, 7))):  # lamp posts on the pavement
+                p = np.array([rng.uniform(bx0 + 1.0, bx1 - 1.0), bz0 + 0.5 if k % 2 else bz1 - 0.5])
+                _trunk(s, p, 0.1, kerb - 0.3, kerb + 4.5)
+            middle = (bz0 + bz1) / 2
+            for row, (z0, z1, front) in enumerate(((bz0 + 3.0, middle, bz0 + 3.0), (middle, bz1 - 3.0, bz1 - 3.0))):
+                into = 1.0 if row == 0 else -1.0  # from the pavement into the shop
+                for x0, x1 in pairwise(_split(bx0 + 3.0, bx1 - 3.0, rng.uniform(6.0, 10.0))):
+                    floor = kerb + rng.uniform(0.05, 0.30)
+                    s.box(x0, x1, -0.5, floor, z0, z1)
+                    door = rng.uniform(x0 + 0.6, x1 - 2.2)
+                    s.wall((x0, front), (x1, front), floor - 0.5, floor + 3.5, [(door - x0, 1.6)])
+                    back = front + into * (z1 - z0) * rng.uniform(0.5, 0.6)  # the wall between front and back room
+                    inner = rng.uniform(x0 + 0.6, x1 - 2.2)
+                    s.wall((x0, back), (x1, back), floor, floor + 3.5, [(inner - x0, 1.6)])
+                    sill = rng.uniform(0.05, 0.15)
+                    s.box(inner, inner + 1.6, floor - 0.1, floor + sill, back - 0.075, back + 0.075)
+                    for x in (x0, x1):
+                        s.wall((x, z0), (x, z1), floor - 0.5, floor + 3.5)
+                    _gable(s, x0 - 0.1, x1 + 0.1, z0, z1, floor + 3.5)
+                    far = z1 if row == 0 else z0
+                    keep = [(door - 0.4, door + 2.0, front - 2.0, front + 2.0), (inner - 0.4, inner + 2.0, back - 2.0, back + 2.0)]
+                    for room in ((x0 + 0.1, x1 - 0.1, min(front, back) + 0.1, max(front, back) - 0.1),
+                                 (x0 + 0.1, x1 - 0.1, min(back, far) + 0.1, max(back, far) - 0.1)):
+                        _furnish(s, rng, room, floor, keep, int(rng.integers(1, 4)))
+                s.wall((bx0 + 3.0, middle), (bx1 - 3.0, middle), kerb, kerb + 3.8)  # the rows' shared back wall
+    taken = list(holes)
+    for _ in range(int(rng.integers(16, 24))):  # cars parked along the roads
+        p = rng.uniform([0.0, 0.0], [xs[-1], zs[-1]])
+        along_x = rng.random() < 0.5
+        hx, hz = (2.1, 0.9) if along_x else (0.9, 2.1)
+        if _clear(p[0] - hx - 1.0, p[0] + hx + 1.0, p[1] - hz - 1.0, p[1] + hz + 1.0, taken):
+            _car(s, p[0] - hx, p[0] + hx, p[1] - hz, p[1] + hz, 0.0)
+            taken.append((p[0] - hx - 3.0, p[0] + hx + 3.0, p[1] - hz - 3.0, p[1] + hz + 3.0))
+    s.ground(0.0, xs[-1], 0.0, zs[-1], 0.0, holes)
+    return s.mesh()
+
+
+def _pipe(s: _Solids, a: np.ndarray, b: np.ndarray, radius: float, axis_y: float) -> None:
+    """A pipe lying from plan point ``a`` (x, z) to ``b``: an octagonal prism of ``radius`` m about the horizontal axis
+    at height ``axis_y``."""
+    a, b = np.asarray(a, dtype=np.float64), np.asarray(b, dtype=np.float64)
+    along = (b - a) / np.linalg.norm(b - a)
+    side = np.array([-along[1], along[0]])
+    ring = [(radius * math.cos(t), radius * math.sin(t)) for t in np.linspace(0, 2 * math.pi, 8, endpoint=False)]
+    s.hull(np.array([[p[0] + side[0] * u, axis_y + v, p[1] + side[1] * u] for p in (a, b) for u, v in ring]))
+
+
+def prop_pile(seed: int) -> trimesh.Trimesh:
+    """A loading yard 100-108 x 76-84 m built, as kit-bashed levels are, of modular props pushed into the floor and into
+    each other, none trimmed: the floor is tiles 4 m square, 0.3 m thick, each 4.1 m wide (overlapping its neighbours by
+    10 cm) and moved by up to 3 cm in plan and 1 cm in height; the yard's wall is pieces 4.2 m long (overlapping), 3 m
+    high. 90-120 clusters of props, each 2.4 m clear of the others: stacks of 2-5 crates (cubes 1.0-1.4 m, turned to any
+    angle, sunk 0.05-0.3 m into the floor and up to 0.4 m into one another, from the third crate on, half of them raised
+    to a base 0.7-0.9 m up, 0.8 m at most off the stack's centre: resting on, sunk up to 0.6 m into or just over the
+    crates below, or held by other raised crates alone), rings of 3-7 barrels (octagons 0.3-0.35 m in radius, 0.9 m
+    high, sunk up to 0.2 m, overlapping), runs of 1-3 pipes lying along x or z (radius 0.2-0.8 m, 4-12 m long, a third
+    one across the run 2 m long, the axis 0.1-0.4 radii under the floor's top, so their tops stand 0.12-0.72 m up,
+    crossing one another), and shipping containers (2.4 x 6 x 2.6 m, along x or z, sunk 0.1 m: closed boxes).
+
+    Expected (written before the first run): the yard is one area round the clusters; the crates', barrels' and thick
+    pipes' tops hold no floor (under 2 m² after the agent's erosion) and pipes whose top stands under the 0.4 m climb
+    are stepped over. The containers are the trap: a closed box pushed into the floor leaves the floor inside it with
+    2.5 m of head room, so each container holds an island of floor (about 2 x 5 m, eroded to under 7 m²) as well as its
+    top (eroded to about 7 m²); both are under the cover's smallest area (28 m²), so they are left out with a warning
+    naming them. Traffic highest in the aisles through the yard's middle, lowest in the corners and the pockets
+    between clusters. A designer expects the same, and nothing inside a container.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    nx, nz = int(rng.integers(25, 28)), int(rng.integers(19, 22))
+    width, depth = nx * 4.0, nz * 4.0
+    for i in range(nx):
+        for j in range(nz):
+            dx, dz = rng.uniform(-0.03, 0.03, 2)
+            top = rng.uniform(-0.01, 0.01)
+            s.box(i * 4.0 - 0.05 + dx, i * 4.0 + 4.05 + dx, top - 0.3, top, j * 4.0 - 0.05 + dz, j * 4.0 + 4.05 + dz)
+    for a, b in (((0.0, 0.0), (width, 0.0)), ((0.0, depth), (width, depth)), ((0.0, 0.0), (0.0, depth)), ((width, 0.0), (width, depth))):
+        along = 0 if a[1] == b[1] else 1
+        for u in np.arange(0.0, (width, depth)[along], 4.0):
+            lo, hi = u - 0.1, u + 4.1
+            x0, x1, z0, z1 = (lo, hi, a[1] - 0.15, a[1] + 0.15) if along == 0 else (a[0] - 0.15, a[0] + 0.15, lo, hi)
+            s.box(x0, x1, -0.35, 3.0, z0, z1)
+    taken: list[tuple[float, float, float, float]] = []
+    placed, tries = 0, 0
+    count = int(rng.integers(90, 121))
+    while placed < count and tries < 2000:
+        tries += 1
+        kind = int(rng.choice(4, p=[0.4, 0.25, 0.2, 0.15]))
+        along_x = rng.random() < 0.5
+        w, d = [(3.0, 3.0), (2.4, 2.4), (float(rng.uniform(4.0, 12.0)), 2.0), (6.0, 2.4)][kind]
+        if kind >= 2 and not along_x:
+            w, d = d, w
+        c = rng.uniform([w / 2 + 1.5, d / 2 + 1.5], [width - w / 2 - 1.5, depth - d / 2 - 1.5])
+        rect = (c[0] - w / 2, c[0] + w / 2, c[1] - d / 2, c[1] + d / 2)
+        if not _clear(rect[0] - 2.4, rect[1] + 2.4, rect[2] - 2.4, rect[3] + 2.4, taken):
+            continue
+        taken.append(rect)
+        placed += 1
+        if kind == 0:  # a stack of crates
+            for k in range(int(rng.integers(2, 6))):
+                size, turn = rng.uniform(1.0, 1.4), rng.uniform(0.0, math.pi / 2)
+                q = c + rng.uniform(-0.8, 0.8, 2)
+                corners = q + size / 2 * np.array([[math.cos(turn + t), math.sin(turn + t)]
+                                                    for t in np.arange(4) * math.pi / 2 + math.pi / 4]) * math.sqrt(2)
+                base = -rng.uniform(0.05, 0.3) if k < 2 or rng.random() < 0.5 else 1.0 - rng.uniform(0.1, 0.3)
+                s.prism(corners, base, base + size)
+        elif kind == 1:  # a ring of barrels
+            for k in range(int(rng.integers(3, 8))):
+                q = c + 0.55 * np.array([math.cos(k * 0.9), math.sin(k * 0.9)]) + rng.uniform(-0.1, 0.1, 2)
+                sink = rng.uniform(0.0, 0.2)
+                _trunk(s, q, rng.uniform(0.3, 0.35), -sink, 0.9 - sink)
+        elif kind == 2:  # a run of pipes, crossing
+            for k in range(int(rng.integers(1, 4))):
+                radius, off = rng.uniform(0.2, 0.8), rng.uniform(-0.6, 0.6)
+                if along_x != (k == 2):  # the third pipe lies across the run
+                    a, b = np.array([rect[0], c[1] + off]), np.array([rect[1], c[1] + off])
+                else:
+                    a, b = np.array([c[0] + off, rect[2]]), np.array([c[0] + off, rect[3]])
+                _pipe(s, a, b, radius, -radius * rng.uniform(0.1, 0.4))
+        else:  # a shipping container, a closed box sunk 0.1 m
+            s.box(rect[0], rect[1], -0.1, 2.5, rect[2], rect[3])
+    return s.mesh()
+
+
+def beams(seed: int) -> trimesh.Trimesh:
+    """A parkour run over a town's roofs: a 6 x 5 grid of buildings 9-14 m square on plots 17-20 m apart (so 3-11 m
+    of street between them), flat roofs rising from 4 m at the west to 11.5-15.5 m at the east (1.5-2 m a column, up to
+    1.5 m more at random), each closed solid standing in the street's ground. Neighbouring roofs are joined across
+    the street by a balance beam 0.4-0.8 m wide (a chance of 0.45), a plank 1.2-1.6 m wide (0.35) or nothing (0.2),
+    sloping from roof to roof; where the rise over the gap is steeper than 40 degrees nothing joins them. Roof clutter
+    (air-conditioning units 1.2 m, ridged skylights); one roof of the west column, 4 m up, is reached from the street
+    by a flight; the street holds cars and lamp posts.
+
+    Expected (written before the first run): the presets' agent (radius 0.5 m) fits on no beam, so beams hold no floor
+    and join nothing; the planks (over 1 m wide) do. So the street and the roofs joined to the start roof through
+    planks are one area; every other group of roofs joined by planks is an area of its own (about five to ten, most of
+    one or two roofs, 80-400 m²). Traffic highest in the street, then on the start roof and across the planks near
+    it, nothing on the roofs apart. A designer expects the run along the beams from the start roof east to the top as
+    the busiest line; the heat map cannot show it, and a user sees a warning naming the roofs apart.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    nx, nz, pitch = 6, 5, rng.uniform(17.0, 20.0)
+    half = rng.uniform(4.5, 7.0, (nx, nz))
+    rise = rng.uniform(1.5, 2.0)
+    height = np.round(4.0 + rise * np.arange(nx)[:, None] + rng.uniform(0.0, 1.5, (nx, nz)), 1)
+    start = int(rng.integers(nz))
+    height[0, start], half[0, start] = 4.0, max(half[0, start], 6.0)
+    centre = np.stack(np.meshgrid(np.arange(nx), np.arange(nz), indexing="ij"), -1) * pitch + pitch / 2
+    holes: list[tuple[float, float, float, float]] = []
+    for i in range(nx):
+        for j in range(nz):
+            c, h, y = centre[i, j], half[i, j], height[i, j]
+            s.box(c[0] - h, c[0] + h, -0.5, y, c[1] - h, c[1] + h)
+            holes.append((c[0] - h, c[0] + h, c[1] - h, c[1] + h))
+            taken: list[tuple[float, float, float, float]] = []
+            for _ in range(int(rng.integers(1, 4))):  # roof clutter, in the roof's middle
+                w = rng.uniform(1.0, 2.0)
+                q = rng.uniform(c - h + 2.5, c + h - 2.5 - w)
+                if _clear(q[0] - 1.5, q[0] + w + 1.5, q[1] - 1.5, q[1] + w + 1.5, taken):
+                    if rng.random() < 0.5:
+                        s.box(q[0], q[0] + w, y - 0.1, y + 1.2, q[1], q[1] + w)
+                    else:
+                        _ridged(s, q[0], q[0] + w, q[1], q[1] + w, y - 0.1, y + 0.6)
+                    taken.append((q[0], q[0] + w, q[1], q[1] + w))
+    for i in range(nx):
+        for j in range(nz):
+            for di, dj in ((1, 0), (0, 1)):
+                if i + di >= nx or j + dj >= nz:
+                    continue
+                link = rng.choice(3, p=[0.45, 0.35, 0.2])  # a beam, a plank or nothing
+                heading = np.array([float(di), float(dj)])
+                a = centre[i, j] + heading * (half[i, j] - 0.3)
+                b = centre[i + di, j + dj] - heading * (half[i + di, j + dj] - 0.3)
+                ya, yb = height[i, j], height[i + di, j + dj]
+                if link == 2 or abs(yb - ya) > math.tan(math.radians(40.0)) * (np.linalg.norm(b - a) - 0.6):
+                    continue
+                across = rng.uniform(-1.0, 1.0) * (min(half[i, j], half[i + di, j + dj]) - 2.0) * heading[::-1]
+                width = rng.uniform(0.4, 0.8) if link == 0 else rng.uniform(1.2, 1.6)
+                s.ramp(a + across, b + across, width, ya, yb, 0.2)
+    c, h = centre[0, start], half[0, start]  # the flight from the street up along the start building's west face
+    run = math.ceil(4.0 / 0.18) * 0.28
+    land = (c[0] - h - 1.8, c[0] - h + 0.01, c[1] - h + run + 1.0, c[1] - h + run + 3.0)
+    _flight_to(s, np.array([c[0] - h - 0.9, land[2]]), np.array([0.0, 1.0]), 1.6, 0.0, 4.0, 0.28)
+    s.box(land[0], land[1], -0.5, 4.0, land[2], land[3])
+    holes.append(land)
+    taken = list(holes) + [(land[0] - 1.0, land[0] + 2.0, land[2] - run - 2.0, land[2])]
+    side = nx * pitch
+    for k in range(int(rng.integers(24, 34))):  # cars and lamp posts in the street
+        p = rng.uniform([-5.0, -5.0], [side + 5.0, nz * pitch + 5.0])
+        if not _clear(p[0] - 2.6, p[0] + 2.6, p[1] - 1.5, p[1] + 1.5, taken):
+            continue
+        if k % 2:
+            _car(s, p[0] - 2.1, p[0] + 2.1, p[1] - 0.9, p[1] + 0.9, 0.0)
+        else:
+            _trunk(s, p, 0.12, -0.3, 4.5)
+        taken.append((p[0] - 3.0, p[0] + 3.0, p[1] - 2.0, p[1] + 2.0))
+    s.ground(-6.0, side + 6.0, -6.0, nz * pitch + 6.0, 0.0, holes)
+    return s.mesh()
+
+
 KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
     "subway": subway, "archipelago": archipelago, "car_park": car_park,
     "forest": forest, "stadium": stadium, "harbour": harbour,
@@ -9278,6 +9812,8 @@ KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
     "spiral_towers": spiral_towers, "backdrop": backdrop,
     "closed_doors": closed_doors, "paper_walls": paper_walls, "split_level": split_level, "hub_rooms": hub_rooms,
     "corridor_shooter": corridor_shooter, "roof_town": roof_town,
+    "ladders": ladders, "jump_gaps": jump_gaps, "collision_hulls": collision_hulls, "thresholds": thresholds,
+    "prop_pile": prop_pile, "beams": beams,
 }
 """Kind name -> generator (seed -> Y-up mesh in metres)."""
 

@@ -1,4 +1,4 @@
-"""The ninth to twentieth rounds' level kinds (``benchmarks/level_kinds.py``) build the levels their docstrings describe.
+"""The ninth to twenty-first rounds' level kinds (``benchmarks/level_kinds.py``) build the levels their docstrings describe.
 
 Smoke tests of quick generators (most well under a second each to build and to give a navmesh; the theatre's and
 the cliff dwellings' thousands of hulls take about 5 s of CPU): the connected areas
@@ -831,3 +831,70 @@ def test_the_roof_towns_roofs_are_islands_over_one_town_of_streets(kinds):
     assert label.max() >= 50
     roofs = y[label != main]
     assert (np.min(np.abs(roofs[:, None] - np.array([3.5, 7.0, 10.5, 14.0])), axis=1) < 0.3).all()
+
+
+def test_the_ladders_storeys_are_three_areas_no_ladder_or_lift_joins(kinds):
+    """Ladders and lift shafts are the only links between the storeys (0, 4.5 and 9 m): three areas, one a storey,
+    each over 1,500 m², the ground's with the yard."""
+    label, nav = areas(kinds["ladders"](1))
+    assert label.max() == 2
+    for k in range(3):
+        y = nav.centres[label == k, 1] - 0.2
+        assert np.ptp(y) < 0.3 and nav.areas[label == k].sum() > 1500.0
+    storeys = np.sort([np.median(nav.centres[label == k, 1]) - 0.2 for k in range(3)])
+    assert np.abs(storeys - np.array([0.0, 4.5, 9.0])).max() < 0.2
+
+
+def test_the_jump_gaps_part_the_walkways_into_areas_over_the_void(kinds):
+    """Every floor is a platform's or a walkway's top 8 m up or a dais's flight and top (nothing below); gaps 0.8-2 m
+    part the walkways, so the level is several areas, none a sliver (each a platform or more, over 100 m²)."""
+    label, nav = areas(kinds["jump_gaps"](1))
+    y = nav.centres[:, 1] - 0.2
+    assert (y > 7.8).all() and (y < 9.9).all() and (np.abs(y - 8.0) < 0.3).mean() > 0.9
+    sizes = np.bincount(label, weights=nav.areas)
+    assert len(sizes) >= 3 and sizes.min() > 100.0
+
+
+def test_collision_hulls_hold_floor_on_their_tops_and_inside(kinds):
+    """The square is one area holding nearly all the floor; Recast reads each hull as a solid, so the bandstand's hull
+    holds floor on its top (5 m up) and its deck inside (1 m up), each an area of its own."""
+    label, nav = areas(kinds["collision_hulls"](1))
+    sizes = np.bincount(label, weights=nav.areas)
+    main = sizes.argmax()
+    assert sizes[main] > 0.95 * sizes.sum() and len(sizes) > 5
+    y = nav.centres[:, 1] - 0.2
+    for height in (5.0, 1.0):
+        on = (np.abs(y - height) < 0.1) & (label != main)
+        assert nav.areas[on].sum() > 50.0, height
+
+
+def test_the_thresholds_kerbs_and_sills_are_climbed_into_one_area(kinds):
+    """Kerbs of 0.10-0.30 m, door steps of 0.05-0.30 m and sills 0.05-0.15 m high, all under the 0.4 m climb: the
+    roads, pavements and every shop's rooms are one area at floors from 0 to 0.6 m."""
+    label, nav = areas(kinds["thresholds"](2))
+    assert label.max() == 0
+    assert (nav.centres[:, 1] - 0.2 > 0.3).sum() > 100
+
+
+def test_the_prop_piles_containers_hold_floor_inside_and_on_top(kinds):
+    """The yard round the interpenetrating props is one area; every other area is a container's top (2.5 m up) or the
+    floor inside a container (a closed box sunk into the floor), each under 10 m²."""
+    label, nav = areas(kinds["prop_pile"](1))
+    sizes = np.bincount(label, weights=nav.areas)
+    main = sizes.argmax()
+    others = np.delete(np.arange(len(sizes)), main)
+    assert len(others) >= 4 and sizes[others].max() < 10.0
+    heights = np.array([nav.centres[label == k, 1].mean() - 0.2 for k in others])
+    assert (np.abs(heights - 2.5) < 0.2).any() and (np.abs(heights) < 0.2).any()
+    assert ((np.abs(heights - 2.5) < 0.2) | (np.abs(heights) < 0.2)).all()
+
+
+def test_the_beams_hold_no_floor_so_the_roofs_stand_apart(kinds):
+    """The street and the start roof (4 m up, by its flight) are one area; beams 0.4-0.8 m wide hold no floor for the
+    presets' agent, so roofs joined only by beams are areas of their own (more than five roofs apart)."""
+    label, nav = areas(kinds["beams"](0))
+    sizes = np.bincount(label, weights=nav.areas)
+    main = sizes.argmax()
+    y = nav.centres[:, 1] - 0.2
+    assert (np.abs(y[label == main] - 4.0) < 0.1).any()
+    assert len({int(k) for k in label[y > 3.0]} - {int(main)}) > 5
