@@ -9637,10 +9637,11 @@ def prop_pile(seed: int) -> trimesh.Trimesh:
     high. 90-120 clusters of props, each 2.4 m clear of the others: stacks of 2-5 crates (cubes 1.0-1.4 m, turned to any
     angle, sunk 0.05-0.3 m into the floor and up to 0.4 m into one another, from the third crate on, half of them raised
     to a base 0.7-0.9 m up, 0.8 m at most off the stack's centre: resting on, sunk up to 0.6 m into or just over the
-    crates below, or held by other raised crates alone), rings of 3-7 barrels (octagons 0.3-0.35 m in radius, 0.9 m
-    high, sunk up to 0.2 m, overlapping), runs of 1-3 pipes lying along x or z (radius 0.2-0.8 m, 4-12 m long, a third
-    one across the run 2 m long, the axis 0.1-0.4 radii under the floor's top, so their tops stand 0.12-0.72 m up,
-    crossing one another), and shipping containers (2.4 x 6 x 2.6 m, along x or z, sunk 0.1 m: closed boxes).
+    crates below, held by other raised crates alone or, rarely, in the air), rings of 3-7 barrels (octagons 0.3-0.35 m
+    in radius, 0.9 m high, sunk up to 0.2 m, overlapping), runs of 1-3 pipes lying along x or z (radius 0.2-0.8 m, 4-12
+    m long, a third one across the run 2 m long, the axis 0.1-0.4 radii under the floor's top, so their tops stand
+    0.12-0.72 m up, crossing one another), and shipping containers (2.4 x 6 x 2.6 m, along x or z, sunk 0.1 m: closed
+    boxes).
 
     Expected (written before the first run): the yard is one area round the clusters; the crates', barrels' and thick
     pipes' tops hold no floor (under 2 m² after the agent's erosion) and pipes whose top stands under the 0.4 m climb
