@@ -75,6 +75,16 @@ def play_points(config: dict) -> list[list[float]] | None:
     return ((config.get("graph") or {}).get("params") or {}).get("play_points")
 
 
+def held_polygons(graph: nx.Graph, polygon_count: int) -> np.ndarray:
+    """(polygon_count,) bool: the navmesh polygons that are nodes of ``graph`` (a node's ``polygon`` attribute):
+    every one of a navmesh graph's, but those :func:`cut_to_play_space` left out. O(n)."""
+    held = np.zeros(polygon_count, dtype=bool)
+    polygons = np.fromiter((data.get("polygon", -1) for _, data in graph.nodes(data=True)), dtype=np.int64,
+                           count=graph.number_of_nodes())
+    held[polygons[polygons >= 0]] = True
+    return held
+
+
 def play_space(graph: nx.Graph, navmesh: NavMesh | None, points: npt.ArrayLike, reach: float) -> np.ndarray:
     """(n,) bool per row of :func:`g2s_plugins.traffic.surface_arrays` of ``graph``: the nodes of the connected
     areas that hold one of the (p, 3) ``points`` (mesh frame, metres) (:func:`_areas_held`)."""

@@ -96,6 +96,30 @@ def test_the_sampling_route_s_reference_navmesh_is_cut_by_the_same_rule(registry
     assert played.metrics["traffic"]["navmesh_area_left_out"] == 0.0
 
 
+def room_beside_lower_ground() -> trimesh.Trimesh:
+    """A room 8 m x 6 m (floor at y 0, walls 0.3 m thick and 3 m high) with a 1.6 m doorway in the middle of its west
+    and east walls and, 4 m north of it, ground 8 m x 20 m 1 m lower that no one in the room reaches: a backdrop
+    larger than the piece, whose own edges read as openings."""
+    parts = [box(0, 8, -0.2, 0, 0, 6), box(-0.3, 0, 0, 3, 0, 2.2), box(-0.3, 0, 0, 3, 3.8, 6), box(8, 8.3, 0, 3, 0, 2.2),
+             box(8, 8.3, 0, 3, 3.8, 6), box(-0.3, 8.3, 0, 3, -0.3, 0), box(-0.3, 8.3, 0, 3, 6, 6.3),
+             box(0, 8, -1.2, -1, 10, 30)]
+    return trimesh.util.concatenate(parts)
+
+
+@pytest.mark.parametrize("name", ["map_piece", "map_piece_sampling"])
+def test_entry_exit_finds_the_play_space_s_openings(registry, name):
+    mesh = room_beside_lower_ground()
+    everywhere = run(registry, mesh, name)
+    # the whole level: the ground is the main floor (the larger), its west, east and north edges the openings
+    assert sorted(round(o.width) for o in everywhere.terminals.openings) == [8, 20, 20]
+    assert all(o.position[1] == pytest.approx(-1, abs=0.01) for o in everywhere.terminals.openings)
+    played = run(registry, mesh, name, play_points=[[4, 0, 3]])
+    # the room's boundary alone: its two doorways, each the width of the doorway, at its middle
+    doors = sorted(played.terminals.openings, key=lambda o: o.position[0])
+    assert [round(o.position[0]) for o in doors] == [0, 8] and all(o.width == pytest.approx(1.6, abs=0.06) for o in doors)
+    assert all(o.position[1] == pytest.approx(0, abs=0.01) and o.position[2] == pytest.approx(3, abs=0.05) for o in doors)
+
+
 def test_a_play_point_in_mid_air_is_bad_input(tmp_path):
     mesh = tmp_path / "level.obj"
     room_and_platform().export(mesh)
