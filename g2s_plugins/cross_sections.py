@@ -142,7 +142,9 @@ def walking_trips(arrays: traffic.SurfaceArrays, plan: np.ndarray, max_sources: 
     direction in plan).
     """
     weight = traffic.origin_weight(arrays)
-    sources, factor, _, area = traffic.stratified_sources(arrays.adjacency, weight, max_sources, seed)
+    sources, factor, _, area = traffic.stratified_sources(
+        arrays.adjacency, weight, max_sources, seed, areas=None if max_sources is None else traffic.arrays_exact_areas(
+            arrays, max_sources))
     n = arrays.n
     load = sp.csr_array((n, n))
     for _, before, nodes, carried in _tree_steps(arrays, sources, factor, weight, area, max_sources or 0):
