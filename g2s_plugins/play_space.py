@@ -36,9 +36,9 @@ where a rule per stage would have to be repeated in each and kept alike:
   (``context.navmesh``, or the mesh), drawn as the level.
 
 What reads the whole level: the source mesh as geometry (``entry_exit``'s
-rays and its outer extent, whose backdrop beyond a piece's opening drops
-the opening: ``extent_heights: null`` for such a file, docs/entry_exit.md,
-Limits; ``mesh_los``'s sight lines; ``coverage``'s default cover radius,
+rays, its outer extent and ``leave_footprint``, so that a backdrop beyond a
+piece's opening or below it drops the opening: docs/entry_exit.md, Limits;
+``mesh_los``'s sight lines; ``coverage``'s default cover radius,
 from the mesh's bounds) and Detour's queries (``surface_los``'s raycast,
 which never leaves the connected area it starts in). Both graph
 builders (``navmesh``, ``sampling``) call :func:`cut_to_play_space` last, after

@@ -5,6 +5,7 @@ point off the walkable ground refused."""
 from __future__ import annotations
 
 import dataclasses
+import types
 
 import networkx as nx
 import numpy as np
@@ -19,6 +20,7 @@ from g2s_core.model import RunContext, RunResult
 from g2s_core.registry import Registry
 from g2s_plugins import evaluation, traffic
 from g2s_plugins.play_space import cut_to_play_space
+from g2s_plugins.terminals import entry_exit
 from tests.conftest import box
 from tests.test_analysis_quality import preset
 from tests.test_cli import assert_user_error, g2s
@@ -118,6 +120,25 @@ def test_entry_exit_finds_the_play_space_s_openings(registry, name):
     doors = sorted(played.terminals.openings, key=lambda o: o.position[0])
     assert [round(o.position[0]) for o in doors] == [0, 8] and all(o.width == pytest.approx(1.6, abs=0.06) for o in doors)
     assert all(o.position[1] == pytest.approx(0, abs=0.01) and o.position[2] == pytest.approx(3, abs=0.05) for o in doors)
+
+
+def test_the_held_navmesh_is_the_graph_s_polygons_alone():
+    # three unit squares in a row along x (polygons 0, 1, 2), two detail triangles each; the graph holds 1 and 2
+    vertices = np.array([[x, 0.0, z] for x in range(4) for z in (0.0, 1.0)])
+    polygons = np.array([[2 * i, 2 * i + 1, 2 * i + 3, 2 * i + 2] for i in range(3)], dtype=np.int32)
+    neighbours = np.array([[-1, 1, -1, -1], [-1, 2, -1, 0], [-1, -1, -1, 1]], dtype=np.int32)
+    navmesh = types.SimpleNamespace(
+        vertices=vertices, polygons=polygons, neighbours=neighbours, normals=np.tile([0.0, 1.0, 0.0], (3, 1)),
+        areas=np.ones(3), detail_vertices=vertices, detail_triangles=np.concatenate([p[[[0, 1, 2], [0, 2, 3]]] for p in polygons]),
+        detail_polygon=np.repeat(np.arange(3, dtype=np.int32), 2), polygon_count=3)
+    graph = nx.Graph([(1, 2), (2, 3)])
+    nx.set_node_attributes(graph, {1: 1, 2: 2, 3: -1}, "polygon")  # node 3: a portal node, no polygon
+    held = entry_exit.held_navmesh(navmesh, graph)
+    assert held.ids.tolist() == [1, 2] and held.polygons.tolist() == polygons[1:].tolist()
+    # polygon 1's neighbour 0 is not held: a boundary edge now; 1 and 2 are rows 0 and 1
+    assert held.neighbours.tolist() == [[-1, 1, -1, -1], [-1, -1, -1, 0]]
+    assert held.detail_polygon.tolist() == [0, 0, 1, 1] and held.detail_triangles.tolist() == \
+        navmesh.detail_triangles[2:].tolist()
 
 
 def test_a_play_point_in_mid_air_is_bad_input(tmp_path):

@@ -131,11 +131,14 @@ selector returns no terminals and the pipeline stops with a warning. Every
 batch of rays (one per step and bisection round) is one call of the shared
 :class:`g2s_plugins._raycasting.RayCaster`, never one call per ray.
 
-Runs on the navigation mesh the ``navmesh`` graph builder leaves in
-``context.navmesh``; without one, on the surface the ``sampling`` builder's
-graph covers (:mod:`._sampled_surface`): its faces stand for the navmesh
-polygons (normals, the main floor, the nodes an opening is joined to). Every
-step and rule is the same on both.
+Runs on the surface the graph covers: the polygons of the navigation mesh
+the ``navmesh`` graph builder leaves in ``context.navmesh`` that the graph
+holds (:func:`held_navmesh`: every one, or those of the play space when the
+builder was given ``play_points``); without a navmesh, the ``sampling``
+builder's graph's own faces (:mod:`._sampled_surface`), which stand for the
+navmesh polygons (normals, the main floor, the nodes an opening is joined
+to). Every step and rule is the same on both. The rays, the outer extent
+and ``leave_footprint`` read the whole mesh (``context.mesh``).
 
 Cost, for a navmesh of V vertices and B boundary edges, S samples (the
 boundary's length / ``sample_step``), k = ``fan_count`` and o openings:
@@ -1182,14 +1185,15 @@ def held_navmesh(navmesh: NavMesh, graph: nx.Graph) -> HeldNavMesh:
     on no floor of the reachability prior. O(P + DT)."""
     held = held_polygons(graph, navmesh.polygon_count)
     ids = np.flatnonzero(held)
-    row = np.full(navmesh.polygon_count + 1, -1, dtype=np.int64)  # index -1 (no neighbour) reads the last: -1
+    row = np.full(navmesh.polygon_count, -1, dtype=np.int64)
     row[ids] = np.arange(len(ids))
     neighbours = np.asarray(navmesh.neighbours)[ids]
     detail_polygon = np.asarray(navmesh.detail_polygon)
     kept = held[detail_polygon]
     return HeldNavMesh(
         np.asarray(navmesh.vertices), np.asarray(navmesh.polygons)[ids],
-        row[neighbours].astype(neighbours.dtype), np.asarray(navmesh.normals)[ids], np.asarray(navmesh.areas)[ids],
+        np.where(neighbours >= 0, row[neighbours], -1).astype(neighbours.dtype), np.asarray(navmesh.normals)[ids],
+        np.asarray(navmesh.areas)[ids],
         np.asarray(navmesh.detail_vertices), np.asarray(navmesh.detail_triangles)[kept],
         row[detail_polygon[kept]].astype(detail_polygon.dtype), ids)
 
