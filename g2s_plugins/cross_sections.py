@@ -10,9 +10,12 @@ of the trips that cross a section of the way through it instead:
 
 1. **The way's axis** (:func:`walking_trips`, :func:`principal_axes`): each
    shortest-path tree of the walking flow's sources (the same sample,
-   ``ties: first``) sends the pair weight ``f_s A_w`` (f_s: the source's
-   factor, A_w: the weight of w's subtree, w included) along the edge from
-   w's predecessor to w. Summed over the sources that is the edge's load; a
+   stratified alike: the smallest areas walked exactly beside the draws,
+   their trees on their own areas, so that an area no draw falls on has
+   its trips too: :func:`g2s_plugins.traffic.stratified_sources`; ``ties:
+   first``) sends the pair weight ``f_s A_w`` (f_s: the source's factor,
+   A_w: the weight of w's subtree, w included) along the edge from w's
+   predecessor to w. Summed over the sources that is the edge's load; a
    node's orientation tensor sums its edges' loads times ``u u^T`` (u: the
    edge's unit direction in plan), and the axis is the tensor's principal
    eigenvector (the orientation tensor of directional statistics: N. I.
@@ -50,7 +53,8 @@ of the trips that cross a section of the way through it instead:
    one node across, the mean of the trips into and out of the node (its
    through-flow and half the trips that start or end in it).
 
-Cost: the trees twice, O(k (m + n log n)) each for k sources, plus per node a
+Cost: the trees twice, O(k (m + n log n)) each for k sources (and the exact
+areas' as :func:`g2s_plugins.traffic.od_flow` walks them), plus per node a
 ball query and a sort of the q nodes and edges within ``reach``,
 O(n q log q) (and four raycasts per lane for ``lanes``), and one sparse
 product of the sources' edge loads with the sections' edges.
@@ -77,28 +81,52 @@ class Trips:
     """The walking flow's sample and where its trips go, edge by edge (module docs, step 1).
 
     Attributes:
-        sources: (k,) rows of the sample's sources (:func:`g2s_plugins.traffic.walking_sources`).
+        sources: (k,) rows of the sample's sources (:func:`g2s_plugins.traffic.stratified_sources`).
         factor: (k,) their factors.
         ends: (m, 2) rows of each edge some tree uses, the lower row first.
         tensors: (n, 3) each node's orientation tensor of the trips along its edges, in plan: xx, xz, zz.
+        area: (n,) the areas walked exactly beside the draws (:func:`g2s_plugins.traffic.exact_areas`), whose
+            sources' trees span their own area alone; ``None``: none.
+        group_nodes: those areas are walked in groups of about this many nodes
+            (:func:`g2s_plugins.traffic.exact_area_groups`).
     """
 
     sources: np.ndarray
     factor: np.ndarray
     ends: np.ndarray
     tensors: np.ndarray
+    area: np.ndarray | None = None
+    group_nodes: int = 0
 
 
-def _tree_steps(arrays: traffic.SurfaceArrays, sources: np.ndarray, factor: np.ndarray,
-                weight: np.ndarray) -> Iterator[tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]]:
-    """Per block of sources, per step of their trees: (source's row in the block, predecessor, node, the pair weight
-    walking from the predecessor to the node, with the source's factor)."""
-    for lo, block in traffic.source_blocks(sources, arrays.n):
-        predecessors, through = traffic.shortest_path_flow(arrays.adjacency, block, weight)
-        rows, nodes = np.nonzero(predecessors >= 0)
-        before = predecessors[rows, nodes].astype(np.int64)
-        # the edge into a node carries every pair whose target lies in the node's subtree
-        yield rows, before, nodes, factor[lo:lo + len(block)][rows] * (through[rows, nodes] + weight[nodes])
+def _tree_steps(arrays: traffic.SurfaceArrays, sources: np.ndarray, factor: np.ndarray, weight: np.ndarray,
+                area: np.ndarray | None, group_nodes: int) -> Iterator[tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]]:
+    """Per block of the (k,) ``sources`` with ``factor`` (k,), per step of their trees: (source's row in the block,
+    predecessor, node, the pair weight walking from the predecessor to the node, with the source's factor). The
+    sources in the exact ``area`` (:class:`Trips`) come last, their trees on their group of areas' graph alone
+    (:func:`g2s_plugins.traffic.exact_area_groups`), as :func:`g2s_plugins.traffic.od_flow` walks them."""
+    alone = np.zeros(len(sources), dtype=bool) if area is None else area[sources] >= 0
+    drawn = np.flatnonzero(~alone)
+    for lo, block in traffic.source_blocks(sources[drawn], arrays.n):
+        yield _steps(arrays.adjacency, block, weight, factor[drawn[lo:lo + len(block)]])
+    if alone.any():
+        walked = np.flatnonzero(alone)
+        for rows, graph, which, local in traffic.exact_area_groups(arrays.adjacency, area, sources[walked], group_nodes):
+            for lo, block in traffic.source_blocks(local, len(rows)):
+                block_rows, before, nodes, carried = _steps(graph, block, weight[rows],
+                                                            factor[walked[which[lo:lo + len(block)]]])
+                yield block_rows, rows[before], rows[nodes], carried
+
+
+def _steps(adjacency: sp.csr_array, block: np.ndarray, weight: np.ndarray,
+           factor: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """The steps of the trees of the (b,) ``block`` of sources with ``factor`` (b,) on ``adjacency`` (n, n) for
+    ``weight`` (n,): :func:`_tree_steps`' tuple, rows of ``adjacency``."""
+    predecessors, through = traffic.shortest_path_flow(adjacency, block, weight)
+    rows, nodes = np.nonzero(predecessors >= 0)
+    before = predecessors[rows, nodes].astype(np.int64)
+    # the edge into a node carries every pair whose target lies in the node's subtree
+    return rows, before, nodes, factor[rows] * (through[rows, nodes] + weight[nodes])
 
 
 def walking_trips(arrays: traffic.SurfaceArrays, plan: np.ndarray, max_sources: int | None, seed: int = 0) -> Trips:
@@ -108,14 +136,18 @@ def walking_trips(arrays: traffic.SurfaceArrays, plan: np.ndarray, max_sources: 
         arrays: the surface graph.
         plan: (n, 2) each node's position in plan (x, z), m.
 
-    The trees are ``ties: first``'s (scipy's predecessor trees), whatever ties the flow takes. A vertical edge adds
-    to no tensor (it has no direction in plan).
+    The sample is the walking flow's (:func:`g2s_plugins.traffic.stratified_sources`): the smallest areas walked
+    exactly beside the draws, so an area no draw falls on has its trips too. The trees are ``ties: first``'s
+    (scipy's predecessor trees), whatever ties the flow takes. A vertical edge adds to no tensor (it has no
+    direction in plan).
     """
     weight = traffic.origin_weight(arrays)
-    sources, factor, _ = traffic.walking_sources(weight, max_sources, seed)
+    sources, factor, _, area = traffic.stratified_sources(
+        arrays.adjacency, weight, max_sources, seed, areas=None if max_sources is None else traffic.arrays_exact_areas(
+            arrays, max_sources))
     n = arrays.n
     load = sp.csr_array((n, n))
-    for _, before, nodes, carried in _tree_steps(arrays, sources, factor, weight):
+    for _, before, nodes, carried in _tree_steps(arrays, sources, factor, weight, area, max_sources or 0):
         pairs = (np.minimum(before, nodes), np.maximum(before, nodes))
         load = load + sp.coo_array((carried, pairs), shape=(n, n)).tocsr()
     edges = sp.coo_array(load)
@@ -129,7 +161,7 @@ def walking_trips(arrays: traffic.SurfaceArrays, plan: np.ndarray, max_sources: 
     for k, term in enumerate((unit[:, 0] ** 2, unit[:, 0] * unit[:, 1], unit[:, 1] ** 2)):
         for end in ends.T:
             tensors[:, k] += np.bincount(end, weights=carried * term, minlength=n)
-    return Trips(sources, factor, ends, tensors)
+    return Trips(sources, factor, ends, tensors, area, max_sources or 0)
 
 
 def principal_axes(tensors: np.ndarray) -> np.ndarray:
@@ -271,7 +303,8 @@ def trips_across(arrays: traffic.SurfaceArrays, trips: Trips, sections: list[tup
     index = sp.csr_array((np.arange(1, m + 1), (trips.ends[:, 0], trips.ends[:, 1])), shape=(n, n))
     across = np.zeros(len(with_section))
     weight = traffic.origin_weight(arrays)
-    for block_rows, before, nodes, carried in _tree_steps(arrays, trips.sources, trips.factor, weight):
+    for block_rows, before, nodes, carried in _tree_steps(arrays, trips.sources, trips.factor, weight, trips.area,
+                                                          trips.group_nodes):
         edge = np.asarray(index[np.minimum(before, nodes), np.maximum(before, nodes)]).reshape(-1) - 1
         used = edge >= 0  # a step that carries nothing may have left its edge out of the loads
         block_rows, edge, before, nodes, carried = block_rows[used], edge[used], before[used], nodes[used], carried[used]

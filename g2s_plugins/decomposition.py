@@ -198,6 +198,7 @@ from g2s_core.errors import PluginError
 from g2s_core.plugin import PluginParams
 from g2s_plugins import centrality
 from g2s_plugins._raycasting import RayCaster, hit_from_behind
+from g2s_plugins.play_space import held_polygons
 
 HEIGHT_SCALE = 4.0
 """Height differences count this many times in clearance distances, so a wall 2 m above is 8 m away."""
@@ -1203,7 +1204,7 @@ def shared_decomposition(navmesh: Any, agent: Any, params: DecompositionParams, 
     ``chokepoints`` and ``regions`` analyzers of one run, given the same settings, split the level once.
 
     ``graph``: the run's initial graph, whose nodes include every polygon of the navmesh unless the graph was cut
-    to a play space (:mod:`g2s_plugins.play_space`); the regions none of whose polygons is one of its nodes, and
+    to a play space (:func:`g2s_plugins.play_space.held_polygons`); the regions none of whose polygons it holds, and
     the chokepoints beside them, are left out, so that the split reports the play space alone. O(P).
 
     The key holds every input :func:`decompose` reads: the agent's ``radius`` and ``height`` (the only fields it
@@ -1221,8 +1222,8 @@ def shared_decomposition(navmesh: Any, agent: Any, params: DecompositionParams, 
         split.labels.flags.writeable = False
         splits[key] = (mesh, split)
     split = splits[key][1]
-    regions = split.regions if graph is None else [
-        region for region in split.regions if any(polygon in graph for polygon in region["polygons"])]
+    held = None if graph is None else held_polygons(graph, navmesh.polygon_count)
+    regions = split.regions if held is None else [region for region in split.regions if held[region["polygons"]].any()]
     kept = {region["id"] for region in regions}
     return Decomposition(split.labels, [region | {"neighbours": []} for region in regions],
                          [dict(chokepoint) for chokepoint in split.chokepoints if set(chokepoint["regions"]) <= kept])

@@ -12,13 +12,35 @@ space's polygons among the background's (the square's spanned 6-32 to
 sampling route), so that every threshold in percentile points
 (``traffic_weight``, ``quiet_step``, ``max_traffic_step``) and the ``flow``
 analyzer's heat map meant something else on a level with a background
-(docs/plugins.md, "The play space"). Cut once where the graph is built, the
-terminals, the walking flows, their percentiles, the heat guarantee, the
-analyzers and the evaluation all read the play space by construction; a rule
-per stage would have to be repeated in each and kept alike. Two read the
-navmesh itself: the ``regions`` and ``chokepoints`` split reports the regions
-with a polygon in the graph (:func:`g2s_plugins.decomposition.shared_decomposition`);
-``entry_exit`` finds openings on the whole navmesh. Both graph
+(docs/plugins.md, "The play space"). Cut once where the graph is built, every
+stage of a run after the graph builder reads the play space by construction,
+where a rule per stage would have to be repeated in each and kept alike:
+
+* ``terminals``: every selector picks among the graph's nodes; ``entry_exit``
+  takes the boundary of the surface the graph covers (on the navmesh route
+  the polygons the graph holds, :func:`held_polygons`; on the sampling
+  route the graph's own faces), so the background holds no opening and
+  weighs on no floor of its reachability prior;
+* ``steiner``, ``loops``, ``roots``: over the graph and the terminals;
+* ``simplify``: the predicates' rules over the structure, the walking flows
+  and percentiles of ``max_traffic_step`` and the heat guarantee over the
+  graph;
+* ``analyzers``: ``flow`` (and its cross sections) over the graph, the
+  others over the structure; ``regions`` and ``chokepoints`` split the
+  whole navmesh once and report the regions holding one of the graph's
+  polygons (:func:`held_polygons`, :func:`g2s_plugins.decomposition.shared_decomposition`)
+  and the chokepoints between them;
+* ``evaluators``: ``traffic`` measures over the graph, and its reference
+  navmesh graph is cut by the same rule;
+* ``outputs``: the graph and the structure, over the level's whole surface
+  (``context.navmesh``, or the mesh), drawn as the level.
+
+What reads the whole level: the source mesh as geometry (``entry_exit``'s
+rays, its outer extent and ``leave_footprint``, so that a backdrop beyond a
+piece's opening or below it drops the opening: docs/entry_exit.md, Limits;
+``mesh_los``'s sight lines; ``coverage``'s default cover radius,
+from the mesh's bounds) and Detour's queries (``surface_los``'s raycast,
+which never leaves the connected area it starts in). Both graph
 builders (``navmesh``, ``sampling``) call :func:`cut_to_play_space` last, after
 their own checks of the whole level's walkable surface. The navmesh itself
 (``context.navmesh``) stays whole: its polygon ids are the nodes' ``polygon``
@@ -64,15 +86,25 @@ class PlaySpaceParams(PluginParams):
         None, min_length=1, strict=False,
         description="points [x, y, z] in the play space (mesh frame, metres): the initial graph keeps only the "
                     "connected walkable areas holding a node within the agent's height of one (3D; a navmesh node's "
-                    "distance is to its polygon), so every later stage (terminals, walking flows and their "
-                    "percentiles, the heat guarantee, analyzers, evaluation) sees those areas alone (but entry_exit, "
-                    "which reads openings off the whole navmesh), and a warning says how much was left out; null: "
-                    "every area")
+                    "distance is to its polygon), so every later stage (terminals, entry_exit's openings among them, the "
+                    "tree, loops, roots, simplification, walking flows and their percentiles, the heat guarantee, "
+                    "analyzers, regions and chokepoints, evaluators) sees those areas alone (the mesh's geometry and the "
+                    "drawn navmesh stay whole), and a warning says how much was left out; null: every area")
 
 
 def play_points(config: dict) -> list[list[float]] | None:
     """The play points a run's recorded ``config`` names (:data:`KEY`), None when it names none."""
     return ((config.get("graph") or {}).get("params") or {}).get("play_points")
+
+
+def held_polygons(graph: nx.Graph, polygon_count: int) -> np.ndarray:
+    """(polygon_count,) bool: the navmesh polygons that are nodes of ``graph`` (a node's ``polygon`` attribute):
+    every one of a navmesh graph's, but those :func:`cut_to_play_space` left out. O(n)."""
+    held = np.zeros(polygon_count, dtype=bool)
+    polygons = np.fromiter((data.get("polygon", -1) for _, data in graph.nodes(data=True)), dtype=np.int64,
+                           count=graph.number_of_nodes())
+    held[polygons[polygons >= 0]] = True
+    return held
 
 
 def play_space(graph: nx.Graph, navmesh: NavMesh | None, points: npt.ArrayLike, reach: float) -> np.ndarray:

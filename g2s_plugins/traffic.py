@@ -465,6 +465,7 @@ def od_flow(
     ties: Ties = "first",
     scaling: Scaling = "none",
     order: np.ndarray | None = None,
+    areas: np.ndarray | None = None,
 ) -> tuple[np.ndarray, int | None]:
     """Weighted origin-destination flow through every node (see the module docs).
 
@@ -485,6 +486,8 @@ def od_flow(
         order: (n,) every row once, the order along which a sample's
             sources are spread (``sampling: spread``, :func:`plan_order`);
             ``None``: drawn independently. An exact flow ignores it.
+        areas: (n,) :func:`exact_areas` of ``adjacency`` for ``max_sources``, when the caller holds them
+            (:func:`arrays_exact_areas`); ``None``: found here when a sample needs them.
 
     Returns:
         flow: (n,) pair weight passing through each node (ordered pairs,
@@ -496,9 +499,7 @@ def od_flow(
     flow = np.zeros(n)
     if n == 0 or not np.any(weight > 0):
         return flow, None
-    area = None if max_sources is None or np.count_nonzero(weight > 0) <= max_sources else exact_areas(
-        adjacency, max_sources)
-    sources, factor, sampled = walking_sources(weight, max_sources, seed, order, None if area is None else area >= 0)
+    sources, factor, sampled, area = stratified_sources(adjacency, weight, max_sources, seed, order, areas)
     if area is not None and np.any(area >= 0):
         alone = area[sources] >= 0
         _exact_area_flow(flow, adjacency, weight, area, sources[alone], factor[alone], ties, max_sources)
@@ -514,6 +515,24 @@ def od_flow(
                 flow += factor[start:start + len(through)] @ through
             kept.clear()
     return flow, sampled
+
+
+def stratified_sources(
+    adjacency: sp.csr_array, weight: np.ndarray, max_sources: int | None, seed: int = 0,
+    order: np.ndarray | None = None, areas: np.ndarray | None = None,
+) -> tuple[np.ndarray, np.ndarray, int | None, np.ndarray | None]:
+    """The sources of :func:`od_flow`'s sample on ``adjacency`` (n, n) for ``weight`` (n,) with some weight > 0: the
+    smallest areas walked exactly beside ``max_sources`` draws over the rest (module docs, "Small areas walked
+    exactly"), ``order`` as :func:`walking_sources` takes it, ``areas`` as :func:`od_flow` does.
+
+    Returns :func:`walking_sources`' ``sources``, ``factor`` and ``sampled``, and (n,) the :func:`exact_areas`
+    (``None`` when every node of positive weight is a source, which no area then needs). O(n + m) beside the draws.
+    """
+    if max_sources is None or np.count_nonzero(weight > 0) <= max_sources:
+        area = None
+    else:
+        area = exact_areas(adjacency, max_sources) if areas is None else areas
+    return *walking_sources(weight, max_sources, seed, order, None if area is None else area >= 0), area
 
 
 def exact_areas(adjacency: sp.csr_array, max_sources: int) -> np.ndarray:
@@ -533,27 +552,50 @@ def exact_areas(adjacency: sp.csr_array, max_sources: int) -> np.ndarray:
     return np.where(taken[label], label, -1).astype(np.int64)
 
 
+def arrays_exact_areas(arrays: SurfaceArrays, max_sources: int) -> np.ndarray:
+    """:func:`exact_areas` of ``arrays``' adjacency for ``max_sources``, read-only, cached with the arrays (so dropped
+    when the graph changes size): the cover's, the heat guarantee's, the ``flow`` analyzer's and the evaluation's
+    samples of one graph, which differ in seed, ties or scaling but not in ``max_sources``, find the areas once
+    (a connected-components pass, about 17 ms at 100k polygons)."""
+    key = ("exact_areas", max_sources)
+    if key not in arrays.derived:  # two threads may both compute it: the same array, either kept
+        area = exact_areas(arrays.adjacency, max_sources)
+        area.flags.writeable = False
+        arrays.derived[key] = area
+    return arrays.derived[key]
+
+
 def _exact_area_flow(
     flow: np.ndarray, adjacency: sp.csr_array, weight: np.ndarray, area: np.ndarray, sources: np.ndarray,
     factor: np.ndarray, ties: Ties, group_nodes: int,
 ) -> None:
     """Add to ``flow`` (n,) the exact flow of the areas :func:`exact_areas` marks in ``area`` (n,), from their
-    ``sources`` (every node of positive weight, rows in ascending order) with ``factor`` (their weights), on the graph
-    of those areas alone.
+    ``sources`` (every node of positive weight, rows in ascending order) with ``factor`` (their weights), each group
+    of :func:`exact_area_groups` on its own graph (one call of the extension per block of :func:`source_blocks`, not
+    per area: a level may hold thousands of islands). Cost O(sum_c n_c max(group_nodes, n_c)) for the sums, <=
+    O(group_nodes n + sum_c n_c²) (with :func:`od_flow`'s ``group_nodes = max_sources`` and :func:`exact_areas`'
+    bound, two samples' worth), and O(sum_c n_c (m_c + n_c log n_c)) for the searches.
+    """
+    for rows, graph, which, local in exact_area_groups(adjacency, area, sources, group_nodes):
+        for lo, block in source_blocks(local, len(rows)):
+            flow[rows] += factor[which[lo:lo + len(block)]] @ _through(graph, block, weight[rows], ties)
 
-    No path leaves an area, so each area's flow is its own sources' and the trees need not span the rest of the
-    graph: the areas are walked in groups (smallest first) of at most ``max(group_nodes, n_c)`` nodes, n_c the
-    group's largest area, each group's trees (b, group nodes) in blocks of :func:`source_blocks` (one call of the
-    extension per block, not per area: a level may hold thousands of islands). Cost O(sum_c n_c max(group_nodes,
-    n_c)) for the sums, <= O(group_nodes n + sum_c n_c²) (with :func:`od_flow`'s ``group_nodes = max_sources`` and
-    :func:`exact_areas`' bound, two samples' worth), and O(sum_c n_c (m_c + n_c log n_c)) for the searches.
+
+def exact_area_groups(
+    adjacency: sp.csr_array, area: np.ndarray, sources: np.ndarray, group_nodes: int,
+) -> Iterator[tuple[np.ndarray, sp.csr_array, np.ndarray, np.ndarray]]:
+    """The areas :func:`exact_areas` marks in ``area`` (n,) in groups (smallest first) of at most ``max(group_nodes,
+    n_c)`` nodes, n_c the group's largest area, with their ``sources`` (rows of those areas, ascending).
+
+    No path leaves an area, so each area's trees need not span the rest of the graph. Yields per group (g,) its rows,
+    each area's in row order (the trees' tie order as on the whole graph), (g, g) its ``adjacency``, (j,) the indices
+    into ``sources`` of its sources and (j,) their rows in the group. O(n + m) for the subgraph.
     """
     rows = np.flatnonzero(area >= 0)
     size = np.bincount(area[rows])
-    # the areas' nodes smallest area first, each area's in row order (the trees' tie order as on the whole graph)
     rows = rows[np.lexsort((rows, area[rows], size[area[rows]]))]
     sub = sp.csr_array(adjacency[rows][:, rows])
-    local = np.full(len(weight), -1, dtype=np.int64)
+    local = np.full(len(area), -1, dtype=np.int64)
     local[rows] = np.arange(rows.size)
     sources = local[sources]
     area_ends = np.flatnonzero(np.r_[area[rows][1:] != area[rows][:-1], True]) + 1
@@ -563,10 +605,7 @@ def _exact_area_flow(
         if not last and area_ends[end_index + 1] - start <= max(group_nodes, area_ends[end_index + 1] - end):
             continue  # the next area fits in this group
         group = np.flatnonzero((sources >= start) & (sources < end))
-        graph = sub[start:end][:, start:end]
-        for lo, block in source_blocks(sources[group] - start, end - start):
-            flow[rows[start:end]] += factor[group[lo:lo + len(block)]] @ _through(graph, block, weight[rows[start:end]],
-                                                                                 ties)
+        yield rows[start:end], sub[start:end][:, start:end], group, sources[group] - start
         start = end
 
 
@@ -796,7 +835,7 @@ def _walking_flow_work(
 
     def compute() -> np.ndarray:
         flow, _ = od_flow(arrays.adjacency, origin_weight(arrays), None if exact else max_sources, seed, ties, scaling,
-                          order)
+                          order, None if exact else arrays_exact_areas(arrays, max_sources))
         flow.flags.writeable = False
         return flow
 

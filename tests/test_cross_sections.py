@@ -147,3 +147,20 @@ def test_two_lanes_of_a_navmesh_read_as_hot_as_one_of_double_width():
     assert two[in_two].min() == pytest.approx(wide[in_wide].min(), rel=0.05)
     assert two_flow[in_two].max() < 0.8 * two_trips  # each lane's own flow is a share of them
     assert (two[~in_two] == two_flow[~in_two]).mean() > 0.5  # the rooms' wide floor keeps its own flow
+
+
+def test_a_small_area_no_draw_falls_on_has_its_trips():
+    graph = nx.Graph()
+    for first, z, count in ((0, 0.0, 20), (100, 50.0, 3)):  # a corridor of 20 samples, 50 m away one of 3, 1 m² each
+        for i in range(count):
+            graph.add_node(first + i, pos=(float(i), 0.0, z), normal=(0.0, 1.0, 0.0), area=1.0)
+        nx.add_path(graph, range(first, first + count), weight=1.0)
+    arrays = traffic.surface_arrays(graph)
+    small = arrays.rows([100, 101, 102])
+    # 4 draws over the whole level in proportion to area, seed 0: none on the small corridor (3 of 23 m²)
+    assert not np.isin(traffic.walking_sources(arrays.area, 4, 0)[0], small).any()
+    # the walking flow's stratified sample walks it exactly (3² <= 4 x 23 nodes²; the long one's 20² is over):
+    # its trips across are its through-flow (0, 2, 0) plus half its own 4 trips to and from each sample
+    values = cross_sections.walking_across(graph, None, 4, 0, gap=2.5, reach=30.0, height=2.0)
+    assert values[small].tolist() == pytest.approx([2.0, 4.0, 2.0])
+    assert (values[arrays.rows(range(1, 19))] > 0).all()  # the long one from its 4 draws

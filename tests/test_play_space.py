@@ -5,6 +5,7 @@ point off the walkable ground refused."""
 from __future__ import annotations
 
 import dataclasses
+import types
 
 import networkx as nx
 import numpy as np
@@ -19,6 +20,7 @@ from g2s_core.model import RunContext, RunResult
 from g2s_core.registry import Registry
 from g2s_plugins import evaluation, traffic
 from g2s_plugins.play_space import cut_to_play_space
+from g2s_plugins.terminals import entry_exit
 from tests.conftest import box
 from tests.test_analysis_quality import preset
 from tests.test_cli import assert_user_error, g2s
@@ -94,6 +96,49 @@ def test_the_sampling_route_s_reference_navmesh_is_cut_by_the_same_rule(registry
     assert platform and not [node for node, pos in cut.graph.nodes(data="pos") if pos[1] > 2.5]
     assert cut.graph.number_of_nodes() == whole.graph.number_of_nodes() - len(platform)
     assert played.metrics["traffic"]["navmesh_area_left_out"] == 0.0
+
+
+def room_beside_lower_ground() -> trimesh.Trimesh:
+    """A room 8 m x 6 m (floor at y 0, walls 0.3 m thick and 3 m high) with a 1.6 m doorway in the middle of its west
+    and east walls and, 4 m north of it, ground 8 m x 20 m 1 m lower that no one in the room reaches: a backdrop
+    larger than the piece, whose own edges read as openings."""
+    parts = [box(0, 8, -0.2, 0, 0, 6), box(-0.3, 0, 0, 3, 0, 2.2), box(-0.3, 0, 0, 3, 3.8, 6), box(8, 8.3, 0, 3, 0, 2.2),
+             box(8, 8.3, 0, 3, 3.8, 6), box(-0.3, 8.3, 0, 3, -0.3, 0), box(-0.3, 8.3, 0, 3, 6, 6.3),
+             box(0, 8, -1.2, -1, 10, 30)]
+    return trimesh.util.concatenate(parts)
+
+
+@pytest.mark.parametrize("name", ["map_piece", "map_piece_sampling"])
+def test_entry_exit_finds_the_play_space_s_openings(registry, name):
+    mesh = room_beside_lower_ground()
+    everywhere = run(registry, mesh, name)
+    # the whole level: the ground is the main floor (the larger), its west, east and north edges the openings
+    assert sorted(round(o.width) for o in everywhere.terminals.openings) == [8, 20, 20]
+    assert all(o.position[1] == pytest.approx(-1, abs=0.01) for o in everywhere.terminals.openings)
+    played = run(registry, mesh, name, play_points=[[4, 0, 3]])
+    # the room's boundary alone: its two doorways, each the width of the doorway, at its middle
+    doors = sorted(played.terminals.openings, key=lambda o: o.position[0])
+    assert [round(o.position[0]) for o in doors] == [0, 8] and all(o.width == pytest.approx(1.6, abs=0.06) for o in doors)
+    assert all(o.position[1] == pytest.approx(0, abs=0.01) and o.position[2] == pytest.approx(3, abs=0.05) for o in doors)
+
+
+def test_the_held_navmesh_is_the_graph_s_polygons_alone():
+    # three unit squares in a row along x (polygons 0, 1, 2), two detail triangles each; the graph holds 1 and 2
+    vertices = np.array([[x, 0.0, z] for x in range(4) for z in (0.0, 1.0)])
+    polygons = np.array([[2 * i, 2 * i + 1, 2 * i + 3, 2 * i + 2] for i in range(3)], dtype=np.int32)
+    neighbours = np.array([[-1, 1, -1, -1], [-1, 2, -1, 0], [-1, -1, -1, 1]], dtype=np.int32)
+    navmesh = types.SimpleNamespace(
+        vertices=vertices, polygons=polygons, neighbours=neighbours, normals=np.tile([0.0, 1.0, 0.0], (3, 1)),
+        areas=np.ones(3), detail_vertices=vertices, detail_triangles=np.concatenate([p[[[0, 1, 2], [0, 2, 3]]] for p in polygons]),
+        detail_polygon=np.repeat(np.arange(3, dtype=np.int32), 2), polygon_count=3)
+    graph = nx.Graph([(1, 2), (2, 3)])
+    nx.set_node_attributes(graph, {1: 1, 2: 2, 3: -1}, "polygon")  # node 3: a portal node, no polygon
+    held = entry_exit.held_navmesh(navmesh, graph)
+    assert held.ids.tolist() == [1, 2] and held.polygons.tolist() == polygons[1:].tolist()
+    # polygon 1's neighbour 0 is not held: a boundary edge now; 1 and 2 are rows 0 and 1
+    assert held.neighbours.tolist() == [[-1, 1, -1, -1], [-1, -1, -1, 0]]
+    assert held.detail_polygon.tolist() == [0, 0, 1, 1] and held.detail_triangles.tolist() == \
+        navmesh.detail_triangles[2:].tolist()
 
 
 def test_a_play_point_in_mid_air_is_bad_input(tmp_path):

@@ -131,11 +131,14 @@ selector returns no terminals and the pipeline stops with a warning. Every
 batch of rays (one per step and bisection round) is one call of the shared
 :class:`g2s_plugins._raycasting.RayCaster`, never one call per ray.
 
-Runs on the navigation mesh the ``navmesh`` graph builder leaves in
-``context.navmesh``; without one, on the surface the ``sampling`` builder's
-graph covers (:mod:`._sampled_surface`): its faces stand for the navmesh
-polygons (normals, the main floor, the nodes an opening is joined to). Every
-step and rule is the same on both.
+Runs on the surface the graph covers: the polygons of the navigation mesh
+the ``navmesh`` graph builder leaves in ``context.navmesh`` that the graph
+holds (:func:`held_navmesh`: every one, or those of the play space when the
+builder was given ``play_points``); without a navmesh, the ``sampling``
+builder's graph's own faces (:mod:`._sampled_surface`), which stand for the
+navmesh polygons (normals, the main floor, the nodes an opening is joined
+to). Every step and rule is the same on both. The rays, the outer extent
+and ``leave_footprint`` read the whole mesh (``context.mesh``).
 
 Cost, for a navmesh of V vertices and B boundary edges, S samples (the
 boundary's length / ``sample_step``), k = ``fan_count`` and o openings:
@@ -169,6 +172,7 @@ from g2s_core.model import NavMesh, Opening, RunContext, Terminals, vec3
 from g2s_core.plugin import PluginParams, hookimpl
 from g2s_plugins._raycasting import UP, RayCaster, ground_across_crack
 from g2s_plugins._surface import on_navmesh
+from g2s_plugins.play_space import held_polygons
 from g2s_plugins.terminals._boundary import BoundaryLoop, LoopSamples, boundary_loops, polygon_components, sample_loops
 from g2s_plugins.terminals._sampled_surface import SampledSurface, sampled_surface
 
@@ -1148,6 +1152,53 @@ def _between_jambs(
 
 
 @dataclass(frozen=True)
+class HeldNavMesh:
+    """A navmesh cut to the polygons a graph holds (:func:`held_navmesh`): the fields :func:`detect_openings` reads,
+    its polygons renumbered 0..H-1 in the navmesh's order.
+
+    Attributes:
+        vertices: (V,3) the navmesh's vertices, metres (all of them: the polygons index them).
+        polygons: (H,nvp) the held polygons' rows of the navmesh's.
+        neighbours: (H,nvp) the held polygon across each edge, -1 at the boundary and where the navmesh's
+            neighbour is not held.
+        normals: (H,3) and areas (H,), m²: the navmesh's.
+        detail_vertices: (DV,3) the navmesh's; detail_triangles (DT',3) those of the held polygons, in the navmesh's
+            order, and detail_polygon (DT',) their polygons.
+        ids: (H,) the navmesh polygon of each row, ascending.
+    """
+
+    vertices: np.ndarray
+    polygons: np.ndarray
+    neighbours: np.ndarray
+    normals: np.ndarray
+    areas: np.ndarray
+    detail_vertices: np.ndarray
+    detail_triangles: np.ndarray
+    detail_polygon: np.ndarray
+    ids: np.ndarray
+
+
+def held_navmesh(navmesh: NavMesh, graph: nx.Graph) -> HeldNavMesh:
+    """``navmesh`` cut to the polygons ``graph`` holds (:func:`g2s_plugins.play_space.held_polygons`): the play
+    space, when the graph builder was given play points, else every polygon. Its boundary runs round the held
+    polygons alone, so an area the play space left out (a backdrop, a skybox's floor) holds no opening and weighs
+    on no floor of the reachability prior. O(P + DT)."""
+    held = held_polygons(graph, navmesh.polygon_count)
+    ids = np.flatnonzero(held)
+    row = np.full(navmesh.polygon_count, -1, dtype=np.int64)
+    row[ids] = np.arange(len(ids))
+    neighbours = np.asarray(navmesh.neighbours)[ids]
+    detail_polygon = np.asarray(navmesh.detail_polygon)
+    kept = held[detail_polygon]
+    return HeldNavMesh(
+        np.asarray(navmesh.vertices), np.asarray(navmesh.polygons)[ids],
+        np.where(neighbours >= 0, row[neighbours], -1).astype(neighbours.dtype), np.asarray(navmesh.normals)[ids],
+        np.asarray(navmesh.areas)[ids],
+        np.asarray(navmesh.detail_vertices), np.asarray(navmesh.detail_triangles)[kept],
+        row[detail_polygon[kept]].astype(detail_polygon.dtype), ids)
+
+
+@dataclass(frozen=True)
 class Detection:
     """What :func:`detect_openings` found: the openings and the navmesh polygons each runs along."""
 
@@ -1157,7 +1208,7 @@ class Detection:
 
 
 def main_floor(
-    navmesh: NavMesh | SampledSurface, agent: AgentConfig, loops: list[BoundaryLoop] | None = None,
+    navmesh: NavMesh | HeldNavMesh | SampledSurface, agent: AgentConfig, loops: list[BoundaryLoop] | None = None,
     looks_out: np.ndarray | None = None, closed: np.ndarray | None = None, drops: np.ndarray | None = None,
 ) -> np.ndarray:
     """(P,) bool: the polygons of the navmesh's main floor: its floor of largest area that is no roof, and those at its level.
@@ -1281,7 +1332,7 @@ Hallway's roof 0.07-0.34; every other floor of the generated and shared pieces (
 _COVER_POINTS = np.array([[1 / 3, 1 / 3, 1 / 3], [2 / 3, 1 / 6, 1 / 6], [1 / 6, 2 / 3, 1 / 6], [1 / 6, 1 / 6, 2 / 3]])
 
 
-def area_below(navmesh: NavMesh | SampledSurface, label: np.ndarray, height: float) -> np.ndarray:
+def area_below(navmesh: NavMesh | HeldNavMesh | SampledSurface, label: np.ndarray, height: float) -> np.ndarray:
     """(C,) the area of other components lying under each component, at least ``height`` lower, over its own area.
 
     A roof or a ceiling's top (walkable for Recast, as real exports close their rooms) lies over
@@ -1513,7 +1564,7 @@ def _union_ends(wide: Opening, parts: list[Opening]) -> tuple[np.ndarray, np.nda
 
 def detect_openings(
     mesh: trimesh.Trimesh,
-    surface: NavMesh | SampledSurface,
+    surface: NavMesh | HeldNavMesh | SampledSurface,
     agent: AgentConfig,
     params: Params | None = None,
     edge_search_farther: float | None = None,
@@ -1712,8 +1763,10 @@ def g2s_select_terminals(graph: nx.Graph, params: Params, context: RunContext) -
     (:mod:`._sampled_surface`).
     """
     if context.navmesh is not None:
-        detection = detect_openings(context.mesh, context.navmesh, context.agent, params)
-        return add_terminals(graph, detection, context.navmesh, context.agent)
+        held = held_navmesh(context.navmesh, graph)
+        detection = detect_openings(context.mesh, held, context.agent, params)
+        polygons = tuple(tuple(held.ids[list(polys)].tolist()) for polys in detection.polygons)
+        return add_terminals(graph, replace(detection, polygons=polygons), context.navmesh, context.agent)
     stats = graph.graph.get("sampling_stats")
     if not stats or "spacing" not in stats:
         raise PluginError(
