@@ -52,7 +52,10 @@ A point belongs to the area of its nearest node within the agent's height in
 3D: a node's distance is to its navmesh polygon where it has one (Detour's
 nearest point on it: a polygon of a hall may be 20 m across, its centre far
 from the point), to its position otherwise (a sample). A point with no node
-that near (in mid-air, inside a wall, in the wrong frame) is bad input.
+that near (in mid-air, inside a wall, in the wrong frame) is bad input; the
+message tells one on the mesh's walkable ground apart (an area the graph
+builder dropped, too small or too narrow for the agent) and names the
+builder's setting that drops small areas.
 
 Complexity: a k-d tree of the nodes, a Detour look-up per point and one
 connected-components pass, O(n log n + p log n + m), plus the subgraph's copy,
@@ -61,11 +64,13 @@ O(n + m).
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import Annotated
 
 import networkx as nx
 import numpy as np
 import numpy.typing as npt
+import trimesh
 from pydantic import Field, Strict
 from scipy.sparse import csgraph
 from scipy.spatial import cKDTree
@@ -74,6 +79,7 @@ from g2s_core.errors import G2SError
 from g2s_core.model import NavMesh, RunContext
 from g2s_core.plugin import PluginParams
 from g2s_plugins import traffic
+from g2s_plugins._raycasting import UP, RayCaster
 
 KEY = "graph.params.play_points"
 """Where a config names the play points: in messages, and where :func:`play_points` reads them."""
@@ -114,8 +120,8 @@ def play_space(graph: nx.Graph, navmesh: NavMesh | None, points: npt.ArrayLike, 
     return np.isin(labels, held)
 
 
-def _areas_held(graph: nx.Graph, navmesh: NavMesh | None, points: npt.ArrayLike,
-                reach: float) -> tuple[np.ndarray, np.ndarray]:
+def _areas_held(graph: nx.Graph, navmesh: NavMesh | None, points: npt.ArrayLike, reach: float,
+                ground: Ground | None = None) -> tuple[np.ndarray, np.ndarray]:
     """(n,) each row's connected area (:func:`g2s_plugins.traffic.surface_arrays` of ``graph``) and the areas that
     hold one of the (p, 3) ``points`` (mesh frame, metres).
 
@@ -125,7 +131,8 @@ def _areas_held(graph: nx.Graph, navmesh: NavMesh | None, points: npt.ArrayLike,
     looked for within ``reach`` each way), to its ``pos`` otherwise.
 
     Raises:
-        G2SError: a point has no node within ``reach``; the message names ``graph.params.play_points[i]``.
+        G2SError: a point has no node within ``reach``; the message names ``graph.params.play_points[i]``, and,
+            with ``ground``, whether the point stands on the mesh's walkable ground all the same (:func:`_no_node`).
     O(n log n + p log n + m).
     """
     arrays = traffic.surface_arrays(graph)
@@ -143,11 +150,42 @@ def _areas_held(graph: nx.Graph, navmesh: NavMesh | None, points: npt.ArrayLike,
                 distance[i], nearest[i] = gap, row_of_polygon[polygon]
     for i, point in enumerate(points):
         if not distance[i] <= reach:
-            x, y, z = point.tolist()
-            raise G2SError(f"{KEY}[{i}]: ({x:g}, {y:g}, {z:g}) has no walkable node within {reach:g} m (the agent's "
-                           f"height); expected a point on the play space's walkable ground, mesh frame, Y up, metres")
+            raise _no_node(i, point, reach, ground)
     _, labels = csgraph.connected_components(arrays.adjacency, directed=False)
     return labels, labels[nearest]
+
+
+@dataclass(frozen=True)
+class Ground:
+    """The level a graph was built on, to tell a play point on its ground from one off it: ``mesh`` (metres, Y up),
+    the agent's ``max_slope`` (degrees) and ``setting``, the graph builder's key that drops the smallest areas."""
+
+    mesh: trimesh.Trimesh
+    max_slope: float
+    setting: str
+
+
+def _no_node(i: int, point: np.ndarray, reach: float, ground: Ground | None) -> G2SError:
+    """The error of play point ``i`` (3,) with no node within ``reach`` metres: off the walkable ground (in mid-air,
+    inside a solid, another frame), or on ``ground``'s walkable faces where the graph builder kept no area (one too
+    small or too narrow for the agent: Recast's ``region_min_size``, the sampling builder's ``min_region_area``).
+
+    On the ground: the first face a ray straight down from ``reach`` above the point meets lies within ``reach`` of
+    it and no steeper than ``max_slope``. One ray, cast only on this error's path.
+    """
+    x, y, z = point.tolist()
+    where = f"{KEY}[{i}]: ({x:g}, {y:g}, {z:g}) has no walkable node within {reach:g} m (the agent's height)"
+    bounds = None if ground is None or len(ground.mesh.faces) == 0 else ground.mesh.bounds
+    if bounds is not None and np.all(point >= bounds[0] - reach) and np.all(point <= bounds[1] + reach):
+        caster = RayCaster(ground.mesh)
+        hits = caster.first_hits((point + reach * UP)[None, :], -UP)
+        if hits.distance[0] <= 2 * reach and caster.walkable_faces(hits.face, ground.max_slope)[0]:
+            return G2SError(
+                f"{where}, though it stands on the mesh's walkable ground (at y = {float(hits.points[0, 1]):g}): "
+                f"the graph builder kept no area there, one too small or too narrow for the agent "
+                f"({ground.setting}, agent.radius); put the point on an area the graph holds, or lower "
+                f"{ground.setting}")
+    return G2SError(f"{where}; expected a point on the play space's walkable ground, mesh frame, Y up, metres")
 
 
 def play_space_graph(graph: nx.Graph, navmesh: NavMesh | None, points: npt.ArrayLike, reach: float) -> nx.Graph:
@@ -168,7 +206,9 @@ def cut_to_play_space(graph: nx.Graph, points: npt.ArrayLike | None, context: Ru
     left out; ``graph`` itself when ``points`` is None."""
     if points is None:
         return graph
-    labels, held = _areas_held(graph, context.navmesh, points, context.agent.height)
+    setting = "graph.params.region_min_size" if context.navmesh is not None else "graph.params.min_region_area"
+    labels, held = _areas_held(graph, context.navmesh, points, context.agent.height,
+                               Ground(context.mesh, context.agent.max_slope, setting))
     keep = np.isin(labels, held)
     if not keep.all():  # the areas and their area from the labels the cut was made by, not searched again
         area = traffic.surface_arrays(graph).area[~keep].sum()

@@ -324,3 +324,19 @@ def test_a_watershed_navmesh_lost_to_overlaps_names_the_partition():
     assert str(error.value).startswith("graph.params.partition: watershed: Recast: no walkable polygons (1 region(s) "
                                        "overlap themselves in plan and Recast made no polygon of them; partition "
                                        "'auto' rebuilds such regions)")
+
+
+def test_islands_recast_removes_whole_name_the_settings_that_keep_them():
+    """Nine squares of 2.5 m, 3 m apart: once the agent's radius (and the ledges) are taken off, each is under the
+    default region_min_size (8² cells of 0.25 m); Recast keeps no region, and the line names both settings that
+    decide it, not only Recast's question. region_min_size 3 keeps them (each square about 1 m²)."""
+    islands = trimesh.util.concatenate([slab((2.5, 0.2, 2.5), (5.5 * i, -0.1, 5.5 * j))
+                                        for i in range(3) for j in range(3)])
+    with pytest.raises(G2SError) as error:
+        run(islands, agent=BASE_AGENT)
+    assert ("Recast: no walkable polygons (no contours; regions too small?): each walkable area left once the agent's "
+            "radius is taken off is under graph.params.region_min_size (8² cells of 0.25 m, 4 m²), which Recast "
+            "removes, or too small to outline in cells of 0.25 m; try a smaller graph.params.region_min_size or "
+            "cell_size; the level is") in str(error.value)
+    graph, _ = run(islands, plugin.Params(region_min_size=3), agent=BASE_AGENT)
+    assert nx.number_connected_components(graph) == 9

@@ -14,7 +14,7 @@ import trimesh
 
 from g2s_core import pipeline
 from g2s_core.config import AgentConfig, parse_config
-from g2s_core.errors import ConfigError
+from g2s_core.errors import ConfigError, G2SError
 from g2s_core.mesh import mesh_sha256
 from g2s_core.model import RunContext, RunResult
 from g2s_core.registry import Registry
@@ -185,3 +185,18 @@ def test_the_play_space_s_busiest_node_tops_its_percentiles():
     assert traffic.percentile(traffic.walking_flow(played, exact_up_to=traffic.EXACT_NODES)).tolist() == \
         [20.0, 60.0, 90.0, 60.0, 20.0]
     assert cut_to_play_space(graph, None, context) is graph
+
+
+def test_a_play_point_on_ground_the_graph_builder_dropped_names_the_setting_that_dropped_it():
+    """A point on the mesh's floor where the graph holds no node (an area too small for the builder) is told apart
+    from one in mid-air: the first names the builder's setting, the second asks for a point on the ground."""
+    graph = two_paths()  # nodes along z = 2 at x 0.5-4.5 and 100.5-108.5, y = 0
+    pad = trimesh.Trimesh([[50, 0, 0], [52, 0, 0], [52, 0, 2], [50, 0, 2]], [[0, 2, 1], [0, 3, 2]])  # faces up
+    context = RunContext(mesh=pad, agent=AgentConfig(), centre=np.zeros(3))
+    with pytest.raises(G2SError, match=r"^graph\.params\.play_points\[1\]: \(51, 0\.5, 1\) has no walkable node within "
+                                       r"2 m \(the agent's height\), though it stands on the mesh's walkable ground "
+                                       r"\(at y = 0\): .*lower graph\.params\.min_region_area$"):
+        cut_to_play_space(graph, [[0.5, 0.0, 2.0], [51.0, 0.5, 1.0]], context)
+    for off_ground in ([51.0, 8.0, 1.0], [51.0, -3.0, 1.0], [60.0, 0.0, 1.0], [1e308, 0.0, 1.0]):
+        with pytest.raises(G2SError, match=r"; expected a point on the play space's walkable ground"):
+            cut_to_play_space(graph, [off_ground], context)

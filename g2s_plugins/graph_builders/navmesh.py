@@ -62,6 +62,7 @@ from g2s_core.plugin import hookimpl
 from g2s_plugins._surface import MAX_SURFACE_GAP
 from g2s_plugins.play_space import PlaySpaceParams, cut_to_play_space
 from g2s_plugins.recast import NavMesh, RecastParams, SettingsError, build_navmesh
+from g2s_plugins.recast.settings import resolve_settings
 from g2s_plugins.walkable_check import check_walkable_surface, no_walkable_surface
 
 NAME = "navmesh"
@@ -336,6 +337,24 @@ def overlapping_regions_warning(overlaps: np.ndarray, partition: str) -> str:
     )
 
 
+def no_polygons_reason(reason: str, agent: AgentConfig, params: Params) -> str:
+    """Recast's ``reason`` for a navmesh without polygons, with the settings that decide it where Recast kept no
+    region (``no contours``): the walkable areas left once the agent's radius is taken off (levels of small islands,
+    a pad) are each under ``region_min_size``² cells, which Recast removes, or too small to outline in cells of
+    ``cell_size``; both settings are named, in the level's metres."""
+    if "no contours" not in reason:
+        return reason
+    settings = resolve_settings(agent, params)
+    cell, size = settings["cell_size"], settings["region_min_size"]
+    outline = f"too small to outline in cells of {cell:g} m"
+    if math.trunc(size * size) == 0:  # Recast removed no region for its size
+        return f"{reason}: each walkable area left once the agent's radius is taken off is {outline}; try a smaller " \
+               f"graph.params.cell_size"
+    return (f"{reason}: each walkable area left once the agent's radius is taken off is under "
+            f"graph.params.region_min_size ({size:g}² cells of {cell:g} m, {math.trunc(size * size) * cell * cell:.3g} "
+            f"m²), which Recast removes, or {outline}; try a smaller graph.params.region_min_size or cell_size")
+
+
 @hookimpl
 def g2s_build_graph(mesh, params, context):
     """Build the navmesh of ``mesh`` for ``context.agent`` and return its polygon graph, cut to the play space
@@ -359,7 +378,7 @@ def g2s_build_graph(mesh, params, context):
             raise G2SError(
                 f"graph.params: {exc}; try another cell_size or tile_size (see docs/navmesh.md)"
             ) from exc
-        raise no_walkable_surface(mesh, context.agent, str(exc)) from exc
+        raise no_walkable_surface(mesh, context.agent, no_polygons_reason(str(exc), context.agent, params)) from exc
     context.navmesh = navmesh
     if len(navmesh.region_overlaps):
         context.warn(overlapping_regions_warning(navmesh.region_overlaps, params.partition))
