@@ -150,10 +150,11 @@ def test_a_play_point_in_mid_air_is_bad_input(tmp_path):
                             "height); expected a point on the play space's walkable ground")
 
 
-def test_the_coverage_selector_takes_no_play_points(registry):
+def test_the_coverage_selector_takes_no_play_points_and_says_where_they_went(registry):
     raw = preset("map_analysis")
     raw["terminals"] = {**raw["terminals"], "params": {**raw["terminals"]["params"], "play_points": [ROOM_CENTRE]}}
-    with pytest.raises(ConfigError, match=r"terminals\.params\.play_points: unknown key"):
+    with pytest.raises(ConfigError, match=r"terminals\.params: play_points is a parameter of the graph builder now: "
+                                          r"set graph\.params\.play_points$"):
         pipeline.plan(parse_config(raw), registry)
 
 

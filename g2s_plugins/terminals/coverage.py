@@ -165,7 +165,8 @@ import networkx as nx
 import numpy as np
 import rustworkx as rx
 import scipy.sparse as sp
-from pydantic import Field
+from pydantic import Field, model_validator
+from pydantic_core import PydanticCustomError
 from scipy.sparse import csgraph
 
 from g2s_core.model import NavMesh, RunContext, Terminals
@@ -201,6 +202,14 @@ class Params(PluginParams):
     quiet_step: float = Field(0.0, ge=0, description="a leaf whose dead end (it and the chain of degree-2 nodes behind it) is less than this many walking-flow percentile points quieter than the node it opens onto, which the cover holds within the cover radius, is no terminal; 0: every leaf")
     dent_depth: float = Field(0.0, ge=0, description="a leaf whose dead end (it and the chain of degree-2 nodes behind it) lies within this many metres of its way in is a dent, which dent_rho_budget may drop; 0: no dents; leaves without a polygon (the sampling route) are no dent")
     dent_rho_budget: float = Field(0.0, ge=0, le=1, description="dents the cover holds within the cover radius without them are no terminal, least first by the Spearman rho their heat map would lose taking the walking-flow percentile of the terminal nearest their way in, while that estimated loss summed stays within this; 0: every dent")
+
+    @model_validator(mode="before")
+    @classmethod
+    def _play_points_moved(cls, data: object) -> object:
+        # A parameter of this selector until 5 December 2026: the play space is now cut where the graph is built
+        if isinstance(data, dict) and "play_points" in data:
+            raise PydanticCustomError("moved", "play_points is a parameter of the graph builder now: set graph.params.play_points")
+        return data
 
 
 def default_radius(context: RunContext) -> float:
