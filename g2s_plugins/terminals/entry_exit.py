@@ -1174,7 +1174,7 @@ def main_floor(
     can leave comes first, roof or not: a floor walled all round holds no opening whatever its size
     (a bridge's deck lies over the closed trough under it, which the roof test alone would keep); and
     with a floor that leaves, every other one that leaves too, is no roof and whose lowest polygon lies
-    within the climb of the main one's (its lowest corner): the parts
+    within the climb of the main one's (a polygon's height is its first corner's, not its lowest): the parts
     of a corridor cut by a barrier or by a pass narrower than Recast keeps; not a wall's top, a roof or a
     ravine's floor below a bridge. ``closed``: (P, 2) each polygon's boundary samples closed by what stands on
     its floor (no way out, and none reaching the floor's end but for the piece lying below beyond it) and all
@@ -1228,13 +1228,9 @@ def main_floor(
             best = int(np.argmax(reached))
     # Floors at its level that leave the piece too hold openings with it: a barrier higher than the climb, or a pass
     # Recast cuts, splits one floor in two, each part with its own ends (a corridor's far end was missed).
-    # Each floor's lowest corner: a flight Recast keeps as one polygon from its second riser up, cut from the room
-    # where the first riser meets a lintel's head room, has its first corner at the top (docs/entry_exit.md, "A
-    # twenty-first round of piece kinds").
-    polygons = np.asarray(navmesh.polygons)
-    corner_heights = np.asarray(navmesh.vertices, dtype=np.float64)[np.maximum(polygons, 0), 1]
+    height = np.asarray(navmesh.vertices, dtype=np.float64)[np.asarray(navmesh.polygons)[:, 0], 1]
     lowest = np.full(len(area), np.inf)
-    np.minimum.at(lowest, label, np.where(polygons >= 0, corner_heights, np.inf).min(axis=1))
+    np.minimum.at(lowest, label, height)
     kept = leaves & ~roof & (np.abs(lowest - lowest[best]) <= float(agent.max_climb) + _SAME_HEIGHT)
     if closed is not None:  # a storey of its own, walled or railed along its sides
         counts = np.zeros((len(area), 2))  # each floor's closed boundary samples, and all of them
