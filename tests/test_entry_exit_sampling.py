@@ -298,3 +298,13 @@ def test_a_pad_at_a_single_file_lines_end_holds_its_opening() -> None:
     level = pieces.turned(benchmark("piece_kinds20").open_switchback_stair(), 22.0)
     found, known, _, _ = _openings(level)
     assert len(found) == 2 and pieces.match_openings(found, known) == (2, 2)
+
+
+def test_a_pivot_leaf_across_a_doorway_cuts_its_edge_in_two() -> None:
+    # The nineteenth round's pivot door, its 0.05 m leaf turned open across the 2.4 m doorway's middle: at 22 degrees
+    # one segment saw out through both gaps, and no candidate of the pier test, 0.05 m apart along the edge, met the
+    # leaf straight out (one stood inside it and saw its far end); the edge, measured from its middle at the leaf, was
+    # 0.05 m wide and dropped. A ray along the edge between two candidates meets the leaf: two openings of 1.175 m.
+    level = pieces.turned(benchmark("piece_kinds19").pivot_door_open(), 22.0)
+    found, known, _, _ = _openings(level)
+    assert len(found) == 3 and pieces.match_openings(found, known) == (3, 3)

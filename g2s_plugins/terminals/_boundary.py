@@ -192,7 +192,9 @@ TIP_TURNS_DEG = (45.0, 90.0, 135.0)
 """Degrees: where a loop goes back along the edge it came (the end of a line of samples in single file on a sampled
 surface), :func:`sample_loops` adds samples at the tip whose outward sides turn this far from the incoming side's
 towards the outgoing one's, so the tip looks ahead as well as to both sides (docs/entry_exit.md, "A twentieth round
-of piece kinds")."""
+of piece kinds"). Measured against one turn (90) and five (30-150) over rounds 10-21 on the sampling route: one
+recalls as many known openings (852 of 876), five two more but as slivers of a revolving drum's mouth, losing a
+ledge's end (docs/entry_exit.md, "A twenty-first round of piece kinds")."""
 
 
 def sample_loops(loops: list[BoundaryLoop], step: float, setting: str = "step", tips: bool = False) -> LoopSamples:

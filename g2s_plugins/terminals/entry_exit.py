@@ -839,9 +839,13 @@ def _split_at_piers(kept: list[_Edge], ways: _Ways, caster: RayCaster, s: _Setti
     through two neighbouring doorways alike: one segment, one edge spanning both and the pier between,
     whose middle stands in the pier. Candidates every search step along the edge, where
     :func:`_extend`'s stand (half a step inside the edge line, ``lift`` up), are blocked when the way
-    straight out meets something within ``r``; a blocked run with free candidates on both sides cuts
-    the edge, and each part keeps the samples whose edge points lie along it (at least two). Blocked
-    runs at the ends (jambs) only end the edge, as before. O(edge length / search step) rays per edge.
+    straight out meets something within ``r``, or when a ray along the edge from it, above the climb,
+    meets something not walkable before the next candidate and neither is blocked so (a leaf thinner
+    than a search step standing across the edge, between the rays straight out; not ground rising
+    along a terrain's border); a blocked run with free candidates
+    on both sides cuts the edge, and each part keeps the samples whose edge points lie along it (at
+    least two). Blocked runs at the ends (jambs) only end the edge, as before. O(edge length / search
+    step) rays per edge.
     """
     inset = _INSET_STEPS * s.delta
     out: list[_Edge] = []
@@ -855,6 +859,14 @@ def _split_at_piers(kept: list[_Edge], ways: _Ways, caster: RayCaster, s: _Setti
         t = s.delta * np.arange(n)
         points = e.first + along * t[:, None] - e.outward * inset + UP * s.lift
         blocked = caster.first_hits(points, np.tile(e.outward, (n, 1))).distance <= s.radius + inset
+        # and where something thinner than a search step stands across the edge between two free candidates, above the
+        # climb (not a strip the agent steps onto) and not walkable (not ground rising along a terrain's border), which
+        # neither ray straight out meets: a pivot leaf turned open across a doorway's middle (docs/entry_exit.md, "A
+        # twenty-first round of piece kinds")
+        over = points[:-1] + UP * (s.climb + s.delta - s.lift)
+        hits = caster.first_hits(over, np.tile(along, (n - 1, 1)))
+        across = (hits.distance <= s.delta) & ~_walkable(caster, np.maximum(hits.face, 0), s)
+        blocked[:-1] |= across & ~blocked[:-1] & ~blocked[1:]
         t_edge = (ways.edge[e.samples] - e.first) @ along
         blocked &= ~_walked_through(blocked, t, t_edge[~ways.stepped[e.samples]])
         free = np.flatnonzero(~blocked)
