@@ -1,5 +1,5 @@
 """The ledge filters (Recast's, its first rule alone, none) against generated cases with known answers
-(docs/navmesh.md, "Ledge filter in the presets" and "A ledge filter of our own").
+(docs/navmesh.md, "Ledge filter in the presets" and "The drops-only ledge filter").
 
 Run: ``.venv/bin/python benchmarks/ledge_filter.py``
 

@@ -143,7 +143,7 @@ def test_the_default_grid_cuts_slopes_under_max_slope_that_the_sampler_walks(deg
     # under the presets' 45. The sampler walks up to the agent's 45 degrees, and so does a grid of 0.125 m cells
     # (limit atan(0.375 / 0.25) = 56.3 degrees), and the default grid with the filter's first rule alone
     # (ledge_filter: drops, which the evaluator's reference navmesh takes: the test below). docs/analysis_quality.md,
-    # "The sampling route on slopes"; docs/navmesh.md, "A ledge filter of our own".
+    # "The sampling route on slopes"; docs/navmesh.md, "The drops-only ledge filter".
     mesh, ends = floors_joined_by_a_ramp(degrees)
     agent = AgentConfig()
     assert agent.max_slope == 45.0 and agent.radius == 0.5 and agent.max_climb == 0.4

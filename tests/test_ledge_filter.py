@@ -25,7 +25,7 @@ def test_the_benchmark_grids_are_the_presets(preset):
         agent.radius, agent.height, agent.max_climb, agent.max_slope)
     given = config.graph.params or {}
     assert {k: given[k] for k in given if k in params} == params and set(params) <= set(given)
-    # both take drops (docs/navmesh.md, "A ledge filter of our own" and "Where the slopes' CPU goes; map_analysis takes
+    # both take drops (docs/navmesh.md, "The drops-only ledge filter" and "Where the slopes' CPU goes; map_analysis takes
     # drops"); the builder's default stays Recast's
     assert given.get("ledge_filter", "recast") == "drops"
 
