@@ -180,9 +180,10 @@ def restored(
         measure = ("walking flow" if exact else f"the mean walking flow of a spread and an independent sample of {sources} sources"
                    if pooled else f"walking flow from {sources} sampled sources")
         wanted = f"min_heat_rho {min_rho:g}" + ("" if exact else f" plus the margin {margin:g} a sampled flow needs")
-        context.warn(f"the heat map ranks the polygons with Spearman rho {rho:.3f} against {measure}, under {wanted}: "
-                     f"no node simplification removed differs from the heat it is given by more than {FLOOR:g} "
-                     "percentile points")
+        within = " within each connected area" if within_areas else ""
+        context.warn(f"the heat map ranks the polygons with Spearman rho{within} {rho:.3f} against {measure}, "
+                     f"under {wanted}: no node simplification removed differs from the heat it is given by more than "
+                     f"{FLOOR:g} percentile points")
         return None
     ranked = np.lexsort((removed[above], -difference[above]))
     count = math.ceil(RESTORED_SHARE * forest.number_of_nodes())
