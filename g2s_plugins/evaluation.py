@@ -55,17 +55,19 @@ The measures (all along the initial walkable graph, distances in metres):
     docs/analysis_quality.md, "A twenty-first round of level kinds"). Ranks
     within an area remove that order and keep each area's own. On a level
     of one area it is ``rho`` (percentile ranks are the mid-ranks over a
-    constant; equal up to rounding). Pooled, it is the average of the
-    areas' own rank correlations weighted by their rank variances: with no
-    ties an area of n nodes weighs n - 1/n (a node, about, like ``rho``),
-    and areas too small for a rho of their own (one or two nodes) or with
-    one value throughout weigh nothing or only in one variable. Why this
-    form: the mean of the areas' own rho needs a rule for each area where
-    rho is undefined and, weighted by walkable area, would let one wide
-    hall outweigh many small rooms, unlike ``rho``; the largest area's rho
-    ignores every other area (a level of storeys joined only by ladders has
-    three of like size). A Spearman rho of the pooled percentiles would rank
-    them again across areas, and lose the exact decomposition above.
+    constant; equal up to rounding). With no ties it is the mean of the
+    areas' own Spearman rho weighted by n - 1/n for an area of n nodes
+    (each area's rank variance times its count: about one a node, as in
+    ``rho``); an area of one node weighs nothing, and an area where one of
+    the two is constant adds to the other's spread only, which lowers the
+    figure (a heat map that varies where the flow does not). Why this
+    form: a mean of the areas' own rho needs a rule for each area where it
+    is undefined (one or two nodes, a constant), and weighted by walkable
+    area it would let one wide hall outweigh many small rooms, unlike
+    ``rho``; the largest area's rho ignores every other area (a level of
+    storeys joined only by ladders has three of like size). A Spearman rho
+    of the pooled percentiles would rank them again across areas and lose
+    the exact decomposition above.
 ``rho_within_ceiling``
     ``rho_within`` of ``rho_ceiling``'s heat map: what the structure's node
     placement allows within each area.
