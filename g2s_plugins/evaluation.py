@@ -438,7 +438,8 @@ def within_area_rho(heat: np.ndarray, reference: np.ndarray, area: np.ndarray) -
 
     A rank is the mid-rank of :func:`weighted_spearman` (equal weights) among the entries of its area, over their
     count: (rank - 0.5) / count, whose mean is 1/2 in every area, so the pooled correlation is that of deviations
-    from each area's own mean (the pooled within-group correlation of the areas' ranks). O(n log n).
+    from each area's own mean (the pooled within-group correlation of the areas' ranks). O(n log n), one sort per
+    area.
     """
     ok = np.isfinite(heat)
     if ok.sum() < 3:
