@@ -16,7 +16,9 @@ given the value of its nearest structure node), the same with every polygon
 weighted by its area ("rho_a", :func:`g2s_plugins.evaluation.weighted_spearman`), of area-weighted
 betweenness on the structure and of the best values the structure's nodes
 could carry (the ceiling: the mean traffic of the polygons each stands
-for) against that traffic, the same heat map and ceiling against the
+for) against that traffic, rho and the ceiling within each connected area ("rho in", "ceil in": ranks taken
+within each area, so the order between areas, which an area apart gets right trivially, does not count;
+``rho_within``, ``rho_within_ceiling``), the same heat map and ceiling against the
 reference traffic on the level's navmesh graph ("rho nav", "ceil nav": the
 run's own graph on the navmesh route, the heat map carried from the samples
 to the polygons on the sampling route) and the share of the navmesh's area
@@ -139,7 +141,7 @@ def main(argv: list[str] | None = None, registry: Registry | None = None) -> Non
     plans = {Path(p).stem: pipeline.plan(parse_config(with_evaluators(load_raw_config(find_config(p)), ["traffic"]), p),
                                          registry, p) for p in args.presets}
     header = (f"{'level':<18} {'preset':<28} {'polys':>7} {'<=3m':>6} {'<=6m':>6} {'<=10m':>6} {'off>5m':>7} "
-              f"{'rho':>6} {'rho_a':>6} {'rho_abw':>7} {'ceiling':>7} {'rho nav':>7} {'ceil nav':>8} {'nav out':>7} {'struct':>7} {'overlap':>7} {'redone':>6} {'detail':>6} {'cpu s':>7} {'total s':>8} {'eval s':>7}  stages (s)")
+              f"{'rho':>6} {'rho_a':>6} {'rho_abw':>7} {'ceiling':>7} {'rho in':>6} {'ceil in':>7} {'rho nav':>7} {'ceil nav':>8} {'nav out':>7} {'struct':>7} {'overlap':>7} {'redone':>6} {'detail':>6} {'cpu s':>7} {'total s':>8} {'eval s':>7}  stages (s)")
     print(header)
     for name, mesh in turned(levels(args.levels, args.seeds), args.yaws):
         for preset, plan in plans.items():
@@ -158,15 +160,16 @@ def main(argv: list[str] | None = None, registry: Registry | None = None) -> Non
             evaluating = seconds.pop("evaluation")
             stages = " ".join(f"{k}={v:.2f}" for k, v in seconds.items())
             within = " ".join(f"{100 * q[f'area_within_{r:g}m']:5.1f}%" for r in evaluation.RADII)
-            rho, rho_area, abw, ceiling, rho_nav, ceiling_nav, nav_out = (q.get(k, float("nan")) for k in (
-                "rho", "rho_area", "rho_area_betweenness", "rho_ceiling", "rho_navmesh", "rho_navmesh_ceiling",
-                "navmesh_area_left_out"))
+            rho, rho_area, abw, ceiling, rho_in, ceiling_in, rho_nav, ceiling_nav, nav_out = (
+                q.get(k, float("nan")) for k in ("rho", "rho_area", "rho_area_betweenness", "rho_ceiling", "rho_within",
+                                                 "rho_within_ceiling", "rho_navmesh", "rho_navmesh_ceiling",
+                                                 "navmesh_area_left_out"))
             polygons = traffic.surface_arrays(result.graph).n  # the nodes the measures count (the play space's, when named)
             navmesh = result.context.navmesh
             overlaps, redone, detail = ("-", "-", "-") if navmesh is None else (
                 len(navmesh.region_overlaps), len(navmesh.repartitioned_tiles), len(navmesh.detail_redone_polygons))
             print(f"{name:<18} {preset:<28} {polygons:>7} {within} {100 * q['traffic_off']:6.1f}% "
-                  f"{rho:6.3f} {rho_area:6.3f} {abw:7.3f} {ceiling:7.3f} {rho_nav:7.3f} {ceiling_nav:8.3f} {100 * nav_out:6.1f}% "
+                  f"{rho:6.3f} {rho_area:6.3f} {abw:7.3f} {ceiling:7.3f} {rho_in:6.3f} {ceiling_in:7.3f} {rho_nav:7.3f} {ceiling_nav:8.3f} {100 * nav_out:6.1f}% "
                   f"{100 * q['structure_share']:6.1f}% "
                   f"{overlaps:>7} {redone:>6} {detail:>6} {cpu:7.2f} {sum(seconds.values()):8.2f} {evaluating:7.2f}  {stages}", flush=True)
 

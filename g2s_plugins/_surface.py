@@ -89,6 +89,11 @@ class CollapseParams(PluginParams):
         description="simplify less where the heat map would rank the polygons with a Spearman rho under this against "
         "walking flow: restore removed nodes until it holds (g2s_plugins/heat_guarantee.py); null: no such check",
     )
+    heat_rho_within_areas: bool = Field(
+        False, description="min_heat_rho reads rho with ranks taken within each connected area (the traffic "
+        "evaluator's rho_within), so that an area apart, low in the flow and the heat map as a whole, gets no credit "
+        "for that; false: rho over the whole graph"
+    )
     heat_sources: int = Field(
         traffic.WALKING_SOURCES, ge=1, description="sources of the walking flow max_traffic_step and min_heat_rho read "
         "(the heat map's): set as the flow analyzer's max_sources"

@@ -41,6 +41,36 @@ The measures (all along the initial walkable graph, distances in metres):
     tiny graphs. The ``flow`` analyzer with ``aggregate: percentile``
     computes these values (from its own source sample on big graphs): its
     rho is this figure by construction.
+``rho_within``
+    ``rho`` within each connected area of the initial graph: the Pearson
+    correlation, pooled over the areas, of the heat map's and the reference
+    flow's percentile ranks within their own area (each node's mid-rank
+    among the nodes of its area that reach the structure, over their
+    count; :func:`within_area_rho`). Same nodes as ``rho``. ``rho`` also
+    ranks the areas against one another: an area apart holds few pairs,
+    so all its nodes sit low in the flow and, when the heat map is right
+    about that, low in the heat map too, which counts as agreement however
+    the area's own nodes are ordered (a level of a street and 17 roofs
+    apart read ``rho`` 0.957-0.974 where the street alone read 0.828-0.878:
+    docs/analysis_quality.md, "A twenty-first round of level kinds"). Ranks
+    within an area remove that order and keep each area's own. On a level
+    of one area it is ``rho`` (percentile ranks are the mid-ranks over a
+    constant; equal up to rounding). With no ties it is the mean of the
+    areas' own Spearman rho weighted by n - 1/n for an area of n nodes
+    (each area's rank variance times its count: about one a node, as in
+    ``rho``); an area of one node weighs nothing, and an area where one of
+    the two is constant adds to the other's spread only, which lowers the
+    figure (a heat map that varies where the flow does not). Why this
+    form: a mean of the areas' own rho needs a rule for each area where it
+    is undefined (one or two nodes, a constant), and weighted by walkable
+    area it would let one wide hall outweigh many small rooms, unlike
+    ``rho``; the largest area's rho ignores every other area (a level of
+    storeys joined only by ladders has three of like size). A Spearman rho
+    of the pooled percentiles would rank them again across areas and lose
+    the exact decomposition above.
+``rho_within_ceiling``
+    ``rho_within`` of ``rho_ceiling``'s heat map: what the structure's node
+    placement allows within each area.
 ``structure_share``
     final structure nodes / initial graph nodes.
 ``rho_navmesh``, ``rho_navmesh_ceiling``
@@ -174,13 +204,17 @@ class Quality:
     rho_navmesh_ceiling: float = float("nan")
     navmesh_area_left_out: float = float("nan")
     rho_area: float = float("nan")
+    rho_within: float = float("nan")
+    rho_within_ceiling: float = float("nan")
 
     def measures(self) -> dict[str, float]:
         """The measures by name, as the ``traffic`` evaluator reports them (``area_within_6m``,
-        ``traffic_off``, ``rho``, ``rho_area``, ``rho_area_betweenness``, ``rho_ceiling``, ``structure_share``,
-        ``rho_navmesh``, ``rho_navmesh_ceiling``, ``navmesh_area_left_out``); NaN ones left out."""
+        ``traffic_off``, ``rho``, ``rho_area``, ``rho_area_betweenness``, ``rho_ceiling``, ``rho_within``,
+        ``rho_within_ceiling``, ``structure_share``, ``rho_navmesh``, ``rho_navmesh_ceiling``,
+        ``navmesh_area_left_out``); NaN ones left out."""
         named = {**{f"area_within_{r:g}m": v for r, v in self.area_within.items()}, "traffic_off": self.traffic_off,
                  "rho": self.rho, "rho_area": self.rho_area, "rho_area_betweenness": self.rho_area_betweenness, "rho_ceiling": self.rho_ceiling,
+                 "rho_within": self.rho_within, "rho_within_ceiling": self.rho_within_ceiling,
                  "structure_share": self.structure_share, "rho_navmesh": self.rho_navmesh,
                  "rho_navmesh_ceiling": self.rho_navmesh_ceiling, "navmesh_area_left_out": self.navmesh_area_left_out}
         return {name.replace(".", "_"): value for name, value in named.items() if math.isfinite(value)}
@@ -341,10 +375,16 @@ def carry(values: np.ndarray, area: np.ndarray, positions: np.ndarray, surface: 
         carried[empty[near]] = values[valued][nearest[near]]
     # an area of the navmesh that no valued sample stands on (an island inside a crate, which the sampler leaves
     # out) is left out: its nearest sample lies across a wall, where the reference walks
-    _, component = csgraph.connected_components(traffic.surface_arrays(surface.graph).adjacency, directed=False)
+    component = area_labels(surface.graph)
     held = np.bincount(component[owner], minlength=len(component)) > 0
     carried[~held[component]] = np.nan
     return carried
+
+
+def area_labels(graph: nx.Graph) -> np.ndarray:
+    """(n,) the connected area of each node of ``graph``, in :func:`~g2s_plugins.traffic.surface_arrays` order:
+    labels 0 .. areas - 1 (scipy's connected components, O(n + m))."""
+    return csgraph.connected_components(traffic.surface_arrays(graph).adjacency, directed=False)[1]
 
 
 def _positions(graph: nx.Graph) -> np.ndarray:
@@ -388,8 +428,38 @@ def weighted_spearman(x: np.ndarray, y: np.ndarray, weight: np.ndarray) -> float
     """
     if not weight.sum() > 0:
         return float("nan")
-    ranks = [_weighted_midranks(values, weight) for values in (x, y)]
-    covariance = np.cov(ranks[0], ranks[1], aweights=weight)
+    return _pearson(_weighted_midranks(x, weight), _weighted_midranks(y, weight), weight)
+
+
+def within_area_rho(heat: np.ndarray, reference: np.ndarray, area: np.ndarray) -> float:
+    """``rho_within`` (see the module docs): the Pearson correlation of (n,) ``heat`` and ``reference`` turned into
+    percentile ranks within each connected area of (n,) labels ``area``, over the entries where ``heat`` is finite
+    (NaN: fewer than three, or either rank constant within every area).
+
+    A rank is the mid-rank of :func:`weighted_spearman` (equal weights) among the entries of its area, over their
+    count: (rank - 0.5) / count, whose mean is 1/2 in every area, so the pooled correlation is that of deviations
+    from each area's own mean (the pooled within-group correlation of the areas' ranks). O(n log n), one sort per
+    area.
+    """
+    ok = np.isfinite(heat)
+    if ok.sum() < 3:
+        return float("nan")
+    labels = area[ok]
+    order = np.argsort(labels, kind="stable")
+    groups = np.split(order, np.flatnonzero(np.diff(labels[order])) + 1)
+    ranks = []
+    for values in (heat[ok], reference[ok]):
+        within = np.empty(len(values))
+        for rows in groups:
+            within[rows] = _weighted_midranks(values[rows], np.ones(len(rows))) / len(rows)
+        ranks.append(within)
+    return _pearson(ranks[0], ranks[1], np.ones(len(labels)))
+
+
+def _pearson(x: np.ndarray, y: np.ndarray, weight: np.ndarray) -> float:
+    """The weighted Pearson correlation of (n,) ``x`` and ``y`` (``numpy.cov`` with ``aweights``; NaN when either
+    is constant)."""
+    covariance = np.cov(x, y, aweights=weight)
     if not (covariance[0, 0] > 0 and covariance[1, 1] > 0):
         return float("nan")
     return float(covariance[0, 1] / math.sqrt(covariance[0, 0] * covariance[1, 1]))
@@ -431,6 +501,9 @@ def evaluate(
     first = next(iter(result.analysis.values()), None)
     heat = heat_map(result.graph, result.structure, first, nearest) if first is not None else None
     rho = spearman(heat, reference) if heat is not None else float("nan")
+    areas = area_labels(result.graph)
+    rho_within = within_area_rho(heat, reference, areas) if heat is not None else float("nan")
+    ceiling_heat = placement_heat(result.graph, result.structure, reference, nearest)
     rho_area = float("nan")
     if heat is not None and np.isfinite(rho):
         ok = np.isfinite(heat)
@@ -459,7 +532,9 @@ def evaluate(
         rho=rho,
         rho_area=rho_area,
         rho_area_betweenness=spearman(heat_map(result.graph, result.structure, betweenness, nearest), reference),
-        rho_ceiling=placement_rho(result.graph, result.structure, reference, nearest),
+        rho_ceiling=spearman(ceiling_heat, reference),
+        rho_within=rho_within,
+        rho_within_ceiling=within_area_rho(ceiling_heat, reference, areas),
         structure_share=result.structure.number_of_nodes() / arrays.n,
         rho_navmesh=rho_navmesh,
         rho_navmesh_ceiling=rho_navmesh_ceiling,

@@ -133,6 +133,7 @@ def restored(
     graph: nx.Graph, forest: nx.DiGraph, simplified: nx.DiGraph, min_rho: float, context: RunContext,
     sources: int = traffic.WALKING_SOURCES, ties: traffic.Ties = traffic.WALKING_TIES,
     scaling: traffic.Scaling = traffic.WALKING_SCALING, sampling: traffic.Sampling = traffic.WALKING_SAMPLING,
+    within_areas: bool = False,
 ) -> set[Hashable] | None:
     """The nodes the next simplification of ``forest`` must keep, or ``None`` when ``simplified`` is kept.
 
@@ -147,6 +148,10 @@ def restored(
     else every node of ``simplified`` and the removed nodes of ``forest``
     whose percentile differs most from their heat, ceil(:data:`RESTORED_SHARE`
     x the forest's nodes) of them, by decreasing difference then node id.
+
+    ``within_areas``: rho is :func:`~g2s_plugins.evaluation.within_area_rho` over the connected areas of ``graph``
+    instead (docs/analysis_quality.md, "The heat map within each connected area"); which nodes come back is the
+    same rule. Above the exact size the margin and the confirmation are those measured for the level-wide rho.
     """
     arrays = traffic.surface_arrays(graph)
     order = traffic.sampling_order(graph, sampling)
@@ -159,7 +164,10 @@ def restored(
         reference = traffic.arrays_walking_flow(arrays, sources, exact_up_to=traffic.EXACT_NODES, ties=ties,
                                                 scaling=scaling)
     heat = evaluation.placement_heat(graph, simplified, shown)
-    rho = evaluation.spearman(heat, reference)
+    if within_areas:
+        rho = evaluation.within_area_rho(heat, reference, evaluation.area_labels(graph))
+    else:
+        rho = evaluation.spearman(heat, reference)
     margin = 0.0 if exact else POOLED_MARGINS[scaling] if pooled else MARGINS[scaling]
     if not rho < min_rho + margin:
         if not exact and not math.isnan(rho):  # NaN: every node's flow alike, nothing to confirm
@@ -172,9 +180,10 @@ def restored(
         measure = ("walking flow" if exact else f"the mean walking flow of a spread and an independent sample of {sources} sources"
                    if pooled else f"walking flow from {sources} sampled sources")
         wanted = f"min_heat_rho {min_rho:g}" + ("" if exact else f" plus the margin {margin:g} a sampled flow needs")
-        context.warn(f"the heat map ranks the polygons with Spearman rho {rho:.3f} against {measure}, under {wanted}: "
-                     f"no node simplification removed differs from the heat it is given by more than {FLOOR:g} "
-                     "percentile points")
+        within = " within each connected area" if within_areas else ""
+        context.warn(f"the heat map ranks the polygons with Spearman rho{within} {rho:.3f} against {measure}, "
+                     f"under {wanted}: no node simplification removed differs from the heat it is given by more than "
+                     f"{FLOOR:g} percentile points")
         return None
     ranked = np.lexsort((removed[above], -difference[above]))
     count = math.ceil(RESTORED_SHARE * forest.number_of_nodes())
@@ -265,7 +274,7 @@ def guaranteed(
     """What a predicate hook returns with ``params.min_heat_rho`` (the hookspec's ``simplified`` protocol): the
     predicate of ``make_predicate`` first, then, after each structure, ``None`` to keep it or that same predicate
     keeping the nodes of :func:`restored` (its walking flow: ``params.heat_sources``, ``params.heat_ties`` and
-    ``params.heat_scaling``)."""
+    ``params.heat_scaling``; its rho within areas with ``params.heat_rho_within_areas``)."""
     if simplified is None:
         predicate = make_predicate()
         if forest is not None:  # None: asked outside the pipeline, for one predicate
@@ -277,7 +286,7 @@ def guaranteed(
     if params.min_heat_rho is None:
         return None
     kept = restored(context.graph, forest, simplified, params.min_heat_rho, context, params.heat_sources,
-                    params.heat_ties, params.heat_scaling, params.heat_sampling)
+                    params.heat_ties, params.heat_scaling, params.heat_sampling, params.heat_rho_within_areas)
     return None if kept is None else keeping(_FIRST[forest], kept)
 
 

@@ -822,6 +822,7 @@ def test_the_traffic_evaluator_puts_the_evaluation_in_the_run_result(registry):
     assert result.metrics == {"traffic": {
         "area_within_2_5m": quality.area_within[2.5], "area_within_6m": quality.area_within[6.0],
         "rho": quality.rho, "rho_area": quality.rho_area, "rho_area_betweenness": quality.rho_area_betweenness, "rho_ceiling": quality.rho_ceiling,
+        "rho_within": quality.rho_within, "rho_within_ceiling": quality.rho_within_ceiling,
         "structure_share": quality.structure_share, "traffic_off": quality.traffic_off,
         "rho_navmesh": quality.rho, "rho_navmesh_ceiling": quality.rho_ceiling,
         "navmesh_area_left_out": quality.navmesh_area_left_out}}
@@ -830,6 +831,6 @@ def test_the_traffic_evaluator_puts_the_evaluation_in_the_run_result(registry):
     bare = run(registry, mesh, {**evaluated, "analyzers": []})
     assert sorted(bare.metrics["traffic"]) == ["area_within_2_5m", "area_within_6m", "navmesh_area_left_out",
                                                "rho_area_betweenness", "rho_ceiling", "rho_navmesh_ceiling",
-                                               "structure_share", "traffic_off"]
+                                               "rho_within_ceiling", "structure_share", "traffic_off"]
     assert bare.stages[-1].stage == "evaluation" and not bare.analysis
     assert not run(registry, mesh, {**evaluated, "stop_after": "analyzers"}).metrics

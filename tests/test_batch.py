@@ -243,7 +243,8 @@ def test_evaluated_pairs_get_the_metric_columns_of_their_structure_json(tmp_path
     evaluated = run_batch([CONFIG], SAMPLES, out, "serial", formats="json", evaluators=["traffic"])
     assert not evaluated["reused"].any()  # another config: the evaluator is part of it
     names = ["area_within_10m", "area_within_3m", "area_within_6m", "navmesh_area_left_out", "rho",
-             "rho_area", "rho_area_betweenness", "rho_ceiling", "rho_navmesh", "rho_navmesh_ceiling", "structure_share", "traffic_off"]
+             "rho_area", "rho_area_betweenness", "rho_ceiling", "rho_navmesh", "rho_navmesh_ceiling", "rho_within",
+             "rho_within_ceiling", "structure_share", "traffic_off"]
     assert [c for c in evaluated.columns if c.startswith(METRIC_PREFIX)] == [f"metric.traffic.{n}" for n in names]
     for row in evaluated.to_dict("records"):
         metrics = json.loads((Path(row["folder"]) / "structure.json").read_text())["metrics"]["traffic"]

@@ -72,6 +72,26 @@ def test_a_fixed_step_under_the_target_gets_its_nodes_back_until_it_holds():
     assert evaluation.placement_heat(graph, structure, traffic.walking_flow(graph)) == pytest.approx(heat, abs=0.05)
 
 
+def test_within_areas_the_islands_lend_the_corridor_no_rho():
+    # the corridor and 12 polygons apart, each an area of its own: their flow is 0 and so is their heat's rank,
+    # which the level-wide rho counts as agreement (0.937 after one round) while the corridor's own order reads
+    # 0.8725; read within areas (where an area of one node weighs nothing) the guarantee restores one node more
+    graph = corridor()
+    for island in range(9, 21):
+        graph.add_node(island, pos=(float(island), 0.0, 5.0), area=1.0, normal=(0.0, 1.0, 0.0), on_navmesh=True)
+    flow = traffic.walking_flow(graph, max_sources=traffic.WALKING_SOURCES)
+    areas = evaluation.area_labels(graph)
+    level, level_rhos = simplified(graph, CollapseParams(max_traffic_step=60.0, min_heat_rho=0.9))
+    within, within_rhos = simplified(graph, CollapseParams(max_traffic_step=60.0, min_heat_rho=0.9,
+                                                           heat_rho_within_areas=True))
+    assert level_rhos == pytest.approx([0.8874, 0.9371], abs=1e-4)
+    assert evaluation.within_area_rho(evaluation.placement_heat(graph, level, flow), flow, areas) == pytest.approx(
+        0.8725, abs=1e-4)
+    assert set(within) == set(level) | {6} and len(within_rhos) == 3
+    assert evaluation.within_area_rho(evaluation.placement_heat(graph, within, flow), flow, areas) == pytest.approx(
+        0.9353, abs=1e-4)
+
+
 def test_a_structure_that_holds_is_kept_as_it_is():
     graph = corridor()
     plain, _ = simplified(graph, CollapseParams(max_traffic_step=60.0))
