@@ -64,6 +64,7 @@ O(n + m).
 
 from __future__ import annotations
 
+from collections.abc import Collection, Hashable
 from dataclasses import dataclass
 from typing import Annotated
 
@@ -107,10 +108,15 @@ def held_polygons(graph: nx.Graph, polygon_count: int) -> np.ndarray:
     """(polygon_count,) bool: the navmesh polygons that are nodes of ``graph`` (a node's ``polygon`` attribute):
     every one of a navmesh graph's, but those :func:`cut_to_play_space` left out. O(n)."""
     held = np.zeros(polygon_count, dtype=bool)
-    polygons = np.fromiter((data.get("polygon", -1) for _, data in graph.nodes(data=True)), dtype=np.int64,
-                           count=graph.number_of_nodes())
+    polygons = _node_polygons(graph, graph.nodes)
     held[polygons[polygons >= 0]] = True
     return held
+
+
+def _node_polygons(graph: nx.Graph, nodes: Collection[Hashable]) -> np.ndarray:
+    """(len(nodes),) int64: the navmesh polygon of each of ``nodes`` (its ``polygon`` attribute), -1 for a node with
+    none (a portal node, a sample). O(n)."""
+    return np.fromiter((graph.nodes[node].get("polygon", -1) for node in nodes), dtype=np.int64, count=len(nodes))
 
 
 def play_space(graph: nx.Graph, navmesh: NavMesh | None, points: npt.ArrayLike, reach: float) -> np.ndarray:
@@ -141,7 +147,7 @@ def _areas_held(graph: nx.Graph, navmesh: NavMesh | None, points: npt.ArrayLike,
     distance, nearest = cKDTree(positions).query(points, distance_upper_bound=reach)
     if navmesh is not None:
         row_of_polygon = np.full(navmesh.polygon_count, -1, dtype=np.int64)
-        polygons = np.array([graph.nodes[node].get("polygon", -1) for node in arrays.nodes], dtype=np.int64)
+        polygons = _node_polygons(graph, arrays.nodes)
         row_of_polygon[polygons[polygons >= 0]] = np.flatnonzero(polygons >= 0)
         for i, point in enumerate(points):
             polygon, on = navmesh.nearest_poly(point, (reach, reach, reach))
