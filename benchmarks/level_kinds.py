@@ -1,4 +1,4 @@
-"""Level kinds of the fifth to twenty-first held-out rounds (issue 9): generators no preset setting was made on.
+"""Level kinds of the fifth to twenty-second held-out rounds (issue 9): generators no preset setting was made on.
 
 Fifth round: six kinds, each about 1,000 navmesh polygons with the presets' agent (radius 0.5 m, height 2 m, climb 0.4 m):
 ``subway`` (platforms, track pits 1.2 m lower, stairs up to two concourses), ``archipelago`` (islands joined by
@@ -191,6 +191,18 @@ presets' agent's diameter, and planks 1.2-1.6 m). A closed prop sunk into the fl
 container's, 2.5 m of head room) and its top as floor (:func:`prop_pile`), as a collision hull left in the file does
 (:func:`collision_hulls`); a pipe lying half sunk stops the agent only where its top stands over the 0.4 m climb (a
 first draft's pipes, 0.11-0.44 m up, stopped it at 3 of seed 0's 31).
+
+Twenty-second round: six kinds of game levels designers ship that no earlier generator made, 452-873 navmesh
+polygons with that agent (seeds 0-2): ``moba`` (three lanes between two bases, a river, jungles of winding paths
+and camps, drawn on 2 m tiles, :func:`_tiles`), ``capture_flag`` (two mirrored bases with a flag room upstairs, a mid
+field of cover, two flank tunnels under it, :func:`_mirrored`), ``platform_tower`` (a square spiral of small platforms
+round a core joined by ramps and flights over a void, dead-end perches), ``diagonal_dungeon`` (rooms joined by
+corridors one 2 m tile wide, at 45 degrees a staircase of tiles, :func:`_paint`), ``battle_royale`` (rolling ground
+240 m square with small houses of 1-3 rooms and rock clusters) and ``arena_shooter`` (three storeys holed by atria
+and joined by 6-8 ramps a storey). A rock tile is one solid from under the floor up (a first draft's turrets, ridged
+blocks standing on the MOBA's floor tiles, left the floor inside each as an area of 8 m²: six a seed), and a crate on a
+platform keeps off the line its joins arrive on (a first draft's crates at the spiral's corners parted the tower into
+6 / 5 / 7 areas, seeds 0-2).
 
 Run: ``.venv/bin/python benchmarks/level_kinds.py OUT_DIR [--kinds subway forest] [--seeds 0 1 2]`` writes
 ``OUT_DIR/<kind>_s<seed>.obj``, the files ``benchmarks/analysis_quality.py --levels`` takes (which also takes the
@@ -9785,6 +9797,455 @@ def beams(seed: int) -> trimesh.Trimesh:
     return s.mesh()
 
 
+
+def _tiles(s: _Solids, floor: np.ndarray, cell: float, wall_top: float) -> None:
+    """A level drawn on a grid of square tiles ``cell`` m wide from the origin: tile (i, j) covers [i cell, (i + 1)
+    cell] along x and [j cell, (j + 1) cell] along z. ``floor`` (n, m) holds each tile's floor height (m), NaN for a
+    tile of rock: every run along x of tiles of one height is one box from 0.5 m under the lowest floor up to that
+    height, every run of rock one solid ridged along x (:func:`_ridged`) up to ``wall_top``, so nothing stands on the
+    rock and no floor runs under it. O(n m) solids at most, one a run.
+    """
+    base = float(np.nanmin(floor)) - 0.5
+    for j in range(floor.shape[1]):
+        row, i = floor[:, j], 0
+        while i < len(row):
+            k = i + 1
+            while k < len(row) and (row[k] == row[i] or (np.isnan(row[k]) and np.isnan(row[i]))):
+                k += 1
+            if np.isnan(row[i]):
+                _ridged(s, i * cell, k * cell, j * cell, (j + 1) * cell, base, wall_top)
+            else:
+                s.box(i * cell, k * cell, base, float(row[i]), j * cell, (j + 1) * cell)
+            i = k
+
+
+def _paint(mask: np.ndarray, a: np.ndarray, b: np.ndarray, half: int) -> None:
+    """Marks in ``mask`` (n, m) the tiles within ``half`` tiles (a square brush) of the 4-connected run of tiles from
+    tile ``a`` (i, j) to ``b``: steps along i and j alternate while both remain, so a run at 45 degrees is a staircase
+    of tiles that share edges, as a tile editor draws it. O(|b - a| half^2).
+    """
+    p, b = np.array(a, dtype=int), np.array(b, dtype=int)
+    n, m = mask.shape
+    axis = 0
+    while True:
+        mask[max(p[0] - half, 0):min(p[0] + half + 1, n), max(p[1] - half, 0):min(p[1] + half + 1, m)] = True
+        if (p == b).all():
+            return
+        if p[axis] == b[axis]:
+            axis = 1 - axis
+        p[axis] += int(np.sign(b[axis] - p[axis]))
+        axis = 1 - axis
+
+
+def moba(seed: int) -> trimesh.Trimesh:
+    """A MOBA map on a grid of 2 m tiles (:func:`_tiles`), 71-79 tiles a side (142-158 m), symmetric under a half turn
+    about its centre: two bases 24-28 m square in opposite corners (south-west and north-east), three lanes between them
+    8-10 m wide (a top lane up the west edge and along the north edge, a bottom lane along the south edge and up the
+    east edge, a mid lane straight along the diagonal as a staircase of tiles), a river 10 m wide along the other
+    diagonal 0.3 m below the lanes (under the climb) from the top lane's corner to the bottom lane's, and in the four
+    jungles between lanes and river a tree of winding paths 6 m wide (a random spanning tree of junctions 6-10 m apart,
+    each leg a staircase of tiles) with 3-4 camps a half (clearings 10 m square) and 4-6 openings a half, each onto the
+    nearest of a side lane, the mid lane and the river. Everything else is rock ridged at 50 degrees over 2.5 m walls;
+    the bases hold turrets (rock tiles 4 m square) in their lane mouths and a fountain (the same) in the far corner.
+
+    Expected (written before the first run): one area. Traffic highest on the mid lane and where the river crosses it
+    (the map's centre), then on the river and the side lanes; the jungle paths middling where they join lanes to the
+    river, lowest in the camps and the jungle's dead ends; the bases' far corners coldest. A designer expects the
+    structure to follow the three lanes, the river and the jungle's tree, with terminals in the camps and the bases; the
+    staircase edges of the diagonals (2 m steps) should not show in the structure as nodes of their own.
+    """
+    rng = np.random.default_rng(seed)
+    n, cell = int(rng.integers(71, 80)), 2.0
+    walk = np.zeros((n, n), dtype=bool)
+    base = int(rng.integers(13, 16))
+    walk[1:base, 1:base] = True
+    lane = int(rng.integers(4, 6))
+    walk[1:1 + lane, 1:n - 1] = True  # top lane: up the west edge, along the north edge
+    walk[1:n - 1, n - 1 - lane:n - 1] = True
+    _paint(walk, np.array([base - 3, base - 3]), np.array([n - base + 2, n - base + 2]), lane // 2)  # mid lane
+    river = np.zeros((n, n), dtype=bool)
+    _paint(river, np.array([1 + lane, n - 2 - lane]), np.array([n - 2 - lane, 1 + lane]), 2)
+    junctions = [(i, j) for i in range(lane + 4, n - lane - 3, 4) for j in range(lane + 4, n - lane - 3, 4)
+                 if i + 4 < j and abs(i + j - (n - 1)) > 6]  # the jungle north of the mid lane (the south by the turn)
+    jitter = rng.integers(-1, 2, (len(junctions), 2))
+    points = np.array(junctions) + jitter
+    jungle = np.zeros((n, n), dtype=bool)
+    tree = minimum_spanning_tree(sp.csr_matrix(np.triu(
+        np.linalg.norm(points[:, None] - points[None], axis=2) * rng.uniform(1.0, 1.6, (len(points),) * 2)
+        * (np.linalg.norm(points[:, None] - points[None], axis=2) < 7.0)))).tocoo()
+    for u, v in zip(tree.row, tree.col):
+        _paint(jungle, points[u], points[v], 1)
+    ends = rng.choice(len(points), size=min(len(points), int(rng.integers(3, 5))), replace=False)
+    for k in ends:  # camps
+        jungle[points[k][0] - 2:points[k][0] + 3, points[k][1] - 2:points[k][1] + 3] = True
+    for k in rng.choice(len(points), size=int(rng.integers(4, 7)), replace=False):  # openings onto a lane or the river
+        i, j = points[k]
+        target = min([(i, n - 1 - lane), (lane, j), (i, i + 1), (i, n - 1 - i)],
+                     key=lambda t: abs(t[0] - i) + abs(t[1] - j))
+        _paint(jungle, np.array([i, j]), np.array(target), 1)
+    walk |= jungle | river
+    walk |= walk[::-1, ::-1]
+    river |= river[::-1, ::-1]
+    for i, j, w in ((base - 4, 2, 2), (2, base - 4, 2), (base - 6, base - 6, 2), (1, 1, 2)):  # turrets, fountain
+        walk[i:i + w, j:j + w] = False
+    walk &= walk[::-1, ::-1]
+    walk[[0, -1], :] = walk[:, [0, -1]] = False
+    floor = np.where(walk, np.where(river, -0.3, 0.0), np.nan)
+    _tiles(s := _Solids(), floor, cell, 2.5)
+    return s.mesh()
+
+
+def _mirrored(half: _Solids, length: float) -> list[trimesh.Trimesh]:
+    """The solids of ``half`` and their mirror images in the plane x = ``length`` / 2 (faces turned back outward)."""
+    mirror = np.diag([-1.0, 1.0, 1.0, 1.0])
+    mirror[0, 3] = length
+    images = [part.copy() for part in half.parts]
+    for image in images:
+        image.apply_transform(mirror)
+    return half.parts + images
+
+
+def capture_flag(seed: int) -> trimesh.Trimesh:
+    """A capture-the-flag map 190-210 x 70-78 m (walls 4 m high all round), mirrored in its middle plane x = L / 2. Each
+    end holds a base (y = 0): a hall 30-34 m deep along x and 28-32 m wide under a ridged lid 8 m up (:func:`_lid`),
+    open to the field through two doorways 3 m wide in its front wall and one 2.5 m wide in each side wall; across its
+    back an upper storey 12-14 m deep at y = 4, reached by one flight up its edge (risers 0.174 m, railed), holding the
+    flag room (9 x 10 m, one door 1.6 m wide under a lintel 2.3 m up, :func:`_doored_wall`; the flag a ridged plinth).
+    Between the bases the mid field (y = 0) of up to 26-34 low walls and rocks (ridged, 1.2-1.8 m) a half, mirrored. Two
+    flank tunnels 4 m wide and 4 m high under the field, 6 m in from its long sides, run from base yard to base yard:
+    each end is a flight of 25 risers of 0.18 m (7.5 m) down through a railed hole in the field beside a base, so a
+    tunnel is 91-119 m long with no way up between its ends.
+
+    Expected (written before the first run): one area. Traffic highest across the mid field on the lines between the
+    bases' front doors, then in the doorways and the halls; the tunnels carry the flank traffic, middling and even along
+    their length (no junction) but high near their stairs; the flag rooms (dead ends up a flight) and the upper storeys
+    low, the field's corners lowest. A designer expects the structure to show the field's lanes between the cover, both
+    tunnels as single long edges under the field, the flights to the upper storeys, and a terminal in each flag room.
+    """
+    rng = np.random.default_rng(seed)
+    length, width = rng.uniform(190.0, 210.0), rng.uniform(70.0, 78.0)
+    deep, half_wide, upper = rng.uniform(30.0, 34.0), rng.uniform(14.0, 16.0), rng.uniform(12.0, 14.0)
+    west = _Solids()
+    bx0, bx1, bz0, bz1, zc = 4.0, 4.0 + deep, width / 2 - half_wide, width / 2 + half_wide, width / 2
+    west.wall((bx0, bz0), (bx0, bz1), -0.5, 8.0)
+    front = [(half_wide / 2 - 1.5, 3.0), (1.5 * half_wide - 1.5, 3.0)]
+    west.wall((bx1, bz0), (bx1, bz1), -0.5, 8.0, front)
+    for z in (bz0, bz1):
+        west.wall((bx0, z), (bx1, z), -0.5, 8.0, [(deep * 0.6, 2.5)])
+    _lid(west, bx0 - 0.1, bx1 + 0.1, bz0 - 0.1, bz1 + 0.1, 8.0)
+    west.box(bx0, bx0 + upper, 3.7, 4.0, bz0, bz1)  # the upper storey
+    stair_z = zc - half_wide / 2
+    _flight_to(west, np.array([bx0 + upper, stair_z]), np.array([-1.0, 0.0]), 2.4, 0.0, 4.0)
+    west.wall((bx0 + upper, bz0), (bx0 + upper, bz1), 4.0, 5.1, [(stair_z - 1.2 - bz0, 2.4)], thickness=0.1)
+    room_z0, room_x1 = zc + 1.0, bx0 + 9.0
+    _doored_wall(west, (bx0, room_z0), (room_x1, room_z0), 4.0, 7.0, [])
+    _doored_wall(west, (room_x1, room_z0), (room_x1, room_z0 + 10.0), 4.0, 7.0,
+                 [(rng.uniform(2.0, 6.0), 1.6, "open", 1)])
+    _doored_wall(west, (bx0, room_z0 + 10.0), (room_x1, room_z0 + 10.0), 4.0, 7.0, [])
+    _ridged(west, bx0 + 4.0, bx0 + 5.0, room_z0 + 4.5, room_z0 + 5.5, 3.9, 5.0)  # the flag's plinth
+    holes, taken = [], [(bx0 - 2.0, bx1 + 3.0, bz0 - 2.0, bz1 + 2.0)]
+    run = 25 * 0.3
+    for zt in (6.0, width - 6.0):  # the tunnels' stairs down, railed
+        xs = bx1 + 4.0
+        _flight_to(west, np.array([xs, zt]), np.array([-1.0, 0.0]), 3.0, -4.5, 0.0)
+        holes.append((xs, xs + run, zt - 1.5, zt + 1.5))
+        taken.append((xs - 2.0, xs + run + 2.0, zt - 4.0, zt + 4.0))
+        for z in (zt - 1.6, zt + 1.6):
+            west.wall((xs, z), (xs + run + 0.1, z), 0.0, 1.1, thickness=0.1)
+        west.wall((xs + run + 0.1, zt - 1.6), (xs + run + 0.1, zt + 1.6), 0.0, 1.1, thickness=0.1)
+        west.box(xs + run - 0.05, length / 2, -5.0, -4.5, zt - 2.0, zt + 2.0)  # the tunnel's floor, walls and end
+        for z in (zt - 2.1, zt + 2.1):
+            west.box(xs - 0.2, length / 2, -5.0, -0.5, z - 0.1, z + 0.1)
+        west.box(xs - 0.3, xs, -5.0, -0.5, zt - 2.0, zt + 2.0)
+    cover = int(rng.integers(26, 35))
+    for _ in range(cover * 3):  # cover on the field, kept 3 m apart
+        w, d = (rng.uniform(2.0, 4.0), rng.uniform(0.6, 1.0)) if rng.random() < 0.5 else (rng.uniform(1.5, 3.0),) * 2
+        if rng.random() < 0.5:
+            w, d = d, w
+        p = rng.uniform([bx1 + 5.0, 4.0], [length / 2 - w - 1.0, width - 4.0 - d])
+        if len(taken) < cover + 3 and _clear(p[0] - 3.0, p[0] + w + 3.0, p[1] - 3.0, p[1] + d + 3.0, taken):
+            _ridged(west, p[0], p[0] + w, p[1], p[1] + d, -0.1, rng.uniform(1.2, 1.8))
+            taken.append((p[0], p[0] + w, p[1], p[1] + d))
+    s = _Solids()
+    s.parts = _mirrored(west, length)
+    s.ground(0.0, length, 0.0, width, 0.0, holes + [(length - h[1], length - h[0], h[2], h[3]) for h in holes])
+    for a, b in (((0.0, 0.0), (length, 0.0)), ((0.0, width), (length, width)), ((0.0, 0.0), (0.0, width)),
+                 ((length, 0.0), (length, width))):
+        s.wall(a, b, -0.5, 4.0, thickness=0.4)
+    return s.mesh()
+
+
+def platform_tower(seed: int) -> trimesh.Trimesh:
+    """A platformer's tower: a solid core 10-12 m square (pointed at 50 degrees on top) ringed by a square spiral of
+    platforms over a void, seven or eight turns of 16 (a platform at each corner of a square ring 30-34 m across and
+    three between), each platform 4-5 m square and 0.4 m thick, 0.8-1.8 m above the one before it. Each join runs along
+    the ring's side over the gap between two platforms: a ramp 2 m wide, or a flight 2 m wide whose risers (at most 0.18
+    m) and long treads span the gap. A quarter of the side platforms hold a perch: a flight out from the core up 1-2 m
+    to a dead-end platform 3 m square; some other side platforms hold a crate (ridged, 1 m) on the core's side, off the
+    joins' line. The spiral starts on a plaza (y = 0, 5 m wide round the ring, 3 m out from it) by a strip to its first
+    platform.
+
+    Expected (written before the first run): one area (every platform joined to the next; the perches dead ends).
+    Traffic highest on the plaza and the lowest turn, falling steadily up the spiral (every path above passes every join
+    below it): the top turn and the perches coldest. A designer expects the structure to be a single chain of nodes up
+    the spiral (one to three per platform and join) with short spurs to the perches, terminals on the perches and at the
+    top; nothing joins turns vertically.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    core, ring = rng.uniform(5.0, 6.0), rng.uniform(15.0, 17.0)
+    turns, per_side = int(rng.integers(7, 9)), 4
+    sides = [np.array(v) for v in ((1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0))]
+    corners = [np.array(v) * ring for v in ((-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0))]
+    centres = [corners[k] + sides[k] * ring * 2 * t / per_side for _ in range(turns) for k in range(4)
+               for t in range(per_side)]
+    headings = [sides[k] for _ in range(turns) for k in range(4) for t in range(per_side)]
+    size = rng.uniform(4.0, 5.0, len(centres))
+    height = np.concatenate([[0.0], np.cumsum(np.round(rng.uniform(0.8, 1.8, len(centres) - 1), 2))])
+    for k, (c, h, y) in enumerate(zip(centres, size, height)):
+        s.box(c[0] - h / 2, c[0] + h / 2, y - 0.4, y, c[1] - h / 2, c[1] + h / 2)
+        if k + 1 < len(centres):  # the join to the next platform, along this side
+            heading, nxt = headings[k], centres[k + 1]
+            a, b = c + heading * h / 2, nxt - heading * size[k + 1] / 2
+            if rng.random() < 0.5:
+                s.ramp(a, b, 2.0, y, height[k + 1], 0.4)
+            else:
+                steps = math.ceil((height[k + 1] - y) / 0.18 - 1e-9)
+                _flight_to(s, b, heading, 2.0, y, height[k + 1], float(np.linalg.norm(b - a)) / steps)
+        out = np.array([-headings[k][1], headings[k][0]]) * -1.0  # away from the core (the ring runs anticlockwise)
+        if k % per_side in (1, 2) and rng.random() < 1 / 4:
+            rise = round(float(rng.uniform(1.0, 2.0)), 2)
+            edge = c + out * (h / 2 + math.ceil(rise / 0.18 - 1e-9) * 0.3)
+            _flight_to(s, edge, out, 1.8, y, y + rise)
+            p = edge + out * 1.5
+            s.box(p[0] - 1.5, p[0] + 1.5, y + rise - 0.4, y + rise, p[1] - 1.5, p[1] + 1.5)
+        elif rng.random() < 0.3 and k % per_side:  # not on a corner, where the joins turn
+            q = c - out * (h / 2 - 1.0) + headings[k] * rng.uniform(-0.5, 0.5) * (h - 2.0)  # off the joins' line
+            _ridged(s, q[0] - 0.5, q[0] + 0.5, q[1] - 0.5, q[1] + 0.5, y - 0.1, y + 1.0)
+    top = height[-1] + 6.0
+    _ridged(s, -core, core, -core, core, -0.5, top)
+    c0 = centres[0]
+    s.box(c0[0] - 1.0, c0[0] + 1.0, -0.4, 0.0, -ring - 8.0, c0[1])
+    s.ground(-ring - 8.0, ring + 8.0, -ring - 8.0, ring + 8.0, 0.0,
+             [(-ring - 3.0, ring + 3.0, -ring - 3.0, ring + 3.0)])
+    return s.mesh()
+
+def diagonal_dungeon(seed: int) -> trimesh.Trimesh:
+    """A dungeon crawler's level on a grid of 2 m tiles (:func:`_tiles`), 100 x 79 tiles (200 x 158 m): a 6 x 5 lattice
+    of rooms, each 5-9 tiles a side at a random place in its lattice cell (16 x 15 tiles), 0-3 rock pillars (one tile)
+    in the rooms of 7 tiles or more a side. Corridors one tile wide (2 m) join the rooms along a random spanning tree of
+    the lattice's eight-neighbour graph and a quarter of its other edges: each runs from one room's centre at 45
+    degrees until level with the other's row or column, then straight, and a run at 45 degrees is a staircase of tiles
+    that share edges (:func:`_paint`), as a tile editor draws it. Corridors cross where they meet. Everything else is
+    rock ridged at 50 degrees over 3 m walls.
+
+    Expected (written before the first run): one area; a diagonal corridor passes the presets' agent (1 m across) down
+    its staircase of 2 m tiles. Traffic highest on the corridors of the middle rows joining the lattice's middle rooms,
+    lowest in the corner rooms and on the tree's dead-end rooms. A designer expects one node a room (two or three in a
+    large room round its pillars) and each corridor as one edge, straight or with one bend, not a chain of nodes along
+    each staircase.
+    """
+    rng = np.random.default_rng(seed)
+    n, m, cols, rows, pitch_x, pitch_z = 100, 79, 6, 5, 16, 15
+    walk = np.zeros((n, m), dtype=bool)
+    centre = np.zeros((cols, rows, 2), dtype=int)
+    for a in range(cols):
+        for b in range(rows):
+            w, d = rng.integers(5, 10, 2)
+            i0 = 2 + a * pitch_x + int(rng.integers(0, pitch_x - w - 1))
+            j0 = 2 + b * pitch_z + int(rng.integers(0, pitch_z - d - 1))
+            walk[i0:i0 + w, j0:j0 + d] = True
+            centre[a, b] = i0 + w // 2, j0 + d // 2
+            if w > 6 and d > 6:
+                for _ in range(int(rng.integers(0, 4))):
+                    walk[i0 + int(rng.integers(2, w - 2)), j0 + int(rng.integers(2, d - 2))] = False
+    cells = [(a, b) for a in range(cols) for b in range(rows)]
+    index = {c: k for k, c in enumerate(cells)}
+    edges = [(index[a, b], index[a + da, b + db]) for a, b in cells for da, db in ((1, 0), (0, 1), (1, 1), (1, -1))
+             if (a + da, b + db) in index]
+    weight = sp.coo_matrix((rng.uniform(1.0, 2.0, len(edges)), tuple(np.array(edges).T)), shape=(len(cells),) * 2)
+    tree = minimum_spanning_tree(weight.tocsr()).tocoo()
+    chosen = set(zip(tree.row.tolist(), tree.col.tolist()))
+    chosen |= {e for e in edges if e not in chosen and rng.random() < 0.25}
+    for u, v in sorted(chosen):
+        p, q = centre[cells[u]], centre[cells[v]]
+        step = min(abs(q[0] - p[0]), abs(q[1] - p[1]))
+        bend = p + np.sign(q - p) * step
+        _paint(walk, p, bend, 0)
+        _paint(walk, bend, q, 0)
+    s = _Solids()
+    _tiles(s, np.where(walk, 0.0, np.nan), 2.0, 3.0)
+    return s.mesh()
+
+
+def battle_royale(seed: int) -> trimesh.Trimesh:
+    """An open battle-royale field 240 m square on a 2 m grid (:func:`_terrain`): rolling ground (four waves 60-140 m
+    long and 1-2.5 m high, slopes under about 15 degrees), 14-18 small houses and 12-18 rock clusters, kept 12 m apart.
+    A house is 8-14 x 8-12 m on ground levelled round it (flat within 3 m of its walls, blended back over 8 m), its
+    floor 0.15 m over that ground on a block the ground stops at, walls 0.25 m thick and 3 m high under a roof ridged at
+    50 degrees (:func:`_gable`): one door 1.6 m wide in a random outside wall and 1-3 rooms in a row joined by doors 1.6
+    m wide (lintels 2.3 m up, :func:`_doored_wall`). A rock cluster is 3-6 rocks (hulls of 8 points,
+    :meth:`_Solids.rock`) from 0.5 m under the ground to 0.8-1.9 m over it, so the ground inside one keeps under the
+    agent's height; up to 60-90 trunks stand at random.
+
+    Expected (written before the first run): one area of ground and houses, and a few small areas on rock tops out of
+    reach. Traffic highest across the middle of the field, spread thin (no paths: every line between two places is
+    open), lowest in the field's corners and in the houses' inner rooms. A designer expects few structure nodes on the
+    open ground (a coarse net between the houses and rock clusters), a node and terminal in each house's inner room and
+    an edge through each door.
+    """
+    rng = np.random.default_rng(seed)
+    size, step = 240.0, 2.0
+    xs = zs = np.arange(0.0, size + step / 2, step)
+    gx, gz = np.meshgrid(xs, zs, indexing="ij")
+    heights = np.zeros_like(gx)
+    for _ in range(4):
+        angle, wave = rng.uniform(0.0, math.pi), rng.uniform(60.0, 140.0)
+        along = gx * math.cos(angle) + gz * math.sin(angle)
+        heights += rng.uniform(1.0, 2.5) * np.sin(2 * math.pi * along / wave + rng.uniform(0.0, 2 * math.pi))
+    s = _Solids()
+    keep = np.ones((len(xs) - 1, len(zs) - 1), dtype=bool)
+    taken: list[tuple[float, float, float, float]] = []
+    houses = []
+    for _ in range(200):
+        if len(houses) == int(rng.integers(14, 19)):
+            break
+        w, d = 2 * rng.integers(4, 8), 2 * rng.integers(4, 7)
+        x0, z0 = 2 * rng.integers(8, int(size / 2) - 8 - w // 2, 2)
+        if _clear(x0 - 12, x0 + w + 12, z0 - 12, z0 + d + 12, taken):
+            taken.append((x0, x0 + w, z0, z0 + d))
+            houses.append((float(x0), float(x0 + w), float(z0), float(z0 + d)))
+    for x0, x1, z0, z1 in houses:  # level the ground round each house
+        out = np.maximum(np.maximum(x0 - gx, gx - x1), np.maximum(z0 - gz, gz - z1))
+        level = float(heights[(out <= 3.0)].mean())
+        blend = np.clip((out - 3.0) / 8.0, 0.0, 1.0)
+        heights = level * (1 - blend) + heights * blend
+    for x0, x1, z0, z1 in houses:
+        out = np.maximum(np.maximum(x0 - gx, gx - x1), np.maximum(z0 - gz, gz - z1))
+        floor = float(heights[out <= 3.0].mean()) + 0.15
+        keep[int(x0 / step):int(x1 / step), int(z0 / step):int(z1 / step)] = False
+        s.box(x0, x1, floor - 1.5, floor, z0, z1)
+        rooms = int(rng.integers(1, 4))
+        cuts = np.linspace(x0, x1, rooms + 1)
+        door_side = int(rng.integers(4))
+        walls = [((x0, z0), (x1, z0)), ((x0, z1), (x1, z1)), ((x0, z0), (x0, z1)), ((x1, z0), (x1, z1))]
+        for k, (a, b) in enumerate(walls):
+            span = abs(b[0] - a[0]) + abs(b[1] - a[1])
+            room = cuts[1] - x0 if k < 2 else span  # a door along x opens into the first room
+            doors = [(rng.uniform(0.5, room - 2.1), 1.6, "open", 1)] if k == door_side else []
+            _doored_wall(s, a, b, floor, floor + 3.0, doors, 0.25)
+        for c in cuts[1:-1]:
+            _doored_wall(s, (c, z0), (c, z1), floor, floor + 3.0,
+                         [(rng.uniform(1.0, z1 - z0 - 2.6), 1.6, "open", 1)], 0.25)
+        _gable(s, x0 - 0.3, x1 + 0.3, z0 - 0.3, z1 + 0.3, floor + 3.0)
+    rocks = 0
+    for _ in range(200):
+        if rocks == int(rng.integers(12, 19)):
+            break
+        p = rng.uniform(10.0, size - 10.0, 2)
+        if not _clear(p[0] - 10, p[0] + 10, p[1] - 10, p[1] + 10, taken):
+            continue
+        taken.append((p[0] - 4, p[0] + 4, p[1] - 4, p[1] + 4))
+        rocks += 1
+        for _ in range(int(rng.integers(3, 7))):
+            q = p + rng.normal(0.0, 2.0, 2)
+            y = float(heights[int(round(q[0] / step)), int(round(q[1] / step))])
+            s.rock(rng, q, 0.9, y - 0.5, y + rng.uniform(0.8, 1.9))
+    for _ in range(int(rng.integers(60, 91))):
+        p = rng.uniform(4.0, size - 4.0, 2)
+        if _clear(p[0] - 2, p[0] + 2, p[1] - 2, p[1] + 2, taken):
+            y = float(heights[int(round(p[0] / step)), int(round(p[1] / step))])
+            _trunk(s, p, 0.3, y - 1.0, y + 7.0)
+    _terrain(s, xs, zs, heights, keep)
+    return s.mesh()
+
+
+def arena_shooter(seed: int) -> trimesh.Trimesh:
+    """An arena shooter's map: three storeys 4.5 m apart (y = 0, 4.5, 9) on a 110-124 x 76-86 m plan inside walls 13 m
+    high, open to the sky. The upper two slabs (0.3 m) are holed by 4-5 atria 10-18 m across, each railed (1.1 m), and
+    joined to the storey below by 6-8 ramps each (3 m wide, at 25-30 degrees, 7.8-9.7 m long, along x or z), every ramp
+    rising through a hole in the slab above over its whole plan and meeting the upper storey head-on at the hole's far
+    end (rails 1.1 m along the hole's other three sides). Ramps, atria and each other keep 2 m apart on both storeys
+    they touch. Each storey holds up to 12-18 pieces of cover (ridged, 1.2-1.6 m; fewer where they do not fit) and up to
+    three pillars 1.5 m square rise through all three (the ground and slabs stop at them).
+
+    Expected (written before the first run): one area. Many loops at three heights: each pair of storeys is joined by
+    6-8 ramps, so every storey is a ring of ways up and down round the atria. Traffic highest on the middle storey and
+    on the ramps near the plan's middle, lowest in the ground storey's corners and under the atria's far sides. A
+    designer expects the structure to hold every ramp as an edge, loops on every storey round the atria, and few
+    terminals (the map has few dead ends: corners only).
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    width, depth, storey = rng.uniform(110.0, 124.0), rng.uniform(76.0, 86.0), 4.5
+    for a, b in (((0.0, 0.0), (width, 0.0)), ((0.0, depth), (width, depth)), ((0.0, 0.0), (0.0, depth)),
+                 ((width, 0.0), (width, depth))):
+        s.wall(a, b, -0.5, 13.0, thickness=0.4)
+    plans: dict[int, list[tuple[float, float, float, float]]] = {0: [], 1: [], 2: []}  # kept-clear plans a storey
+    holes: dict[int, list[tuple[float, float, float, float]]] = {1: [], 2: []}
+    for level in (1, 2):
+        for _ in range(100):
+            if len(holes[level]) == int(rng.integers(4, 6)):
+                break
+            w, d = rng.uniform(10.0, 18.0, 2)
+            p = rng.uniform([4.0, 4.0], [width - 4.0 - w, depth - 4.0 - d])
+            atrium = (p[0], p[0] + w, p[1], p[1] + d)
+            if _clear(atrium[0] - 2, atrium[1] + 2, atrium[2] - 2, atrium[3] + 2, plans[level]):
+                holes[level].append(atrium)
+                plans[level].append(atrium)
+                _rail_ring(s, *atrium, level * storey, {})
+    for level in (1, 2):
+        y0, y1 = (level - 1) * storey, level * storey
+        ramps = 0
+        for _ in range(300):
+            if ramps == int(rng.integers(6, 9)):
+                break
+            run = storey / math.tan(math.radians(rng.uniform(25.0, 30.0)))
+            heading = [np.array(v) for v in ((1.0, 0.0), (-1.0, 0.0), (0.0, 1.0), (0.0, -1.0))][int(rng.integers(4))]
+            foot = rng.uniform([3.0, 3.0], [width - 3.0, depth - 3.0])
+            top = foot + heading * run
+            side = np.array([-heading[1], heading[0]]) * 1.5
+            corners = np.array([foot - side, foot + side, top - side, top + side])
+            lo, hi = corners.min(axis=0), corners.max(axis=0)
+            plan = (lo[0], hi[0], lo[1], hi[1])
+            if lo.min() < 3.0 or hi[0] > width - 3.0 or hi[1] > depth - 3.0:
+                continue
+            reach = (plan[0] - 2, plan[1] + 2, plan[2] - 2, plan[3] + 2)
+            ahead = (min(top[0], top[0] + heading[0] * 3) - 1.5, max(top[0], top[0] + heading[0] * 3) + 1.5,
+                     min(top[1], top[1] + heading[1] * 3) - 1.5, max(top[1], top[1] + heading[1] * 3) + 1.5)
+            if not (_clear(*reach, plans[level - 1]) and _clear(*reach, plans[level]) and _clear(*ahead, holes[level])):
+                continue
+            s.ramp(foot, top, 3.0, y0, y1, 0.3)
+            holes[level].append(plan)
+            plans[level - 1].append(plan)
+            plans[level].append(plan)
+            open_side = {(1.0, 0.0): "east", (-1.0, 0.0): "west", (0.0, 1.0): "north", (0.0, -1.0): "south"}
+            _rail_ring(s, plan[0] - 0.1, plan[1] + 0.1, plan[2] - 0.1, plan[3] + 0.1, y1,
+                       {open_side[tuple(heading)]: [(0.0, 40.0)]})
+            ramps += 1
+    pillars: list[tuple[float, float, float, float]] = []
+    for level in (0, 1, 2):
+        y = level * storey
+        for k in range(int(rng.integers(12, 19)) + 3):
+            w, d = rng.uniform(1.0, 4.0, 2)
+            p = rng.uniform([2.0, 2.0], [width - 2.0 - w, depth - 2.0 - d])
+            if not _clear(p[0] - 2.0, p[0] + w + 2.0, p[1] - 2.0, p[1] + d + 2.0, plans[level]):
+                continue
+            if k < 3 and level == 0:  # pillars through every storey, the slabs stop at them
+                _ridged(s, p[0], p[0] + 1.5, p[1], p[1] + 1.5, -0.5, 14.0)
+                for up in (1, 2):
+                    holes[up].append((p[0], p[0] + 1.5, p[1], p[1] + 1.5))
+                    plans[up].append((p[0] - 1.0, p[0] + 2.5, p[1] - 1.0, p[1] + 2.5))
+                plans[0].append((p[0], p[0] + 1.5, p[1], p[1] + 1.5))
+                pillars.append((p[0], p[0] + 1.5, p[1], p[1] + 1.5))
+            else:
+                _ridged(s, p[0], p[0] + w, p[1], p[1] + d, y - 0.1, y + rng.uniform(1.2, 1.6))
+                plans[level].append((p[0], p[0] + w, p[1], p[1] + d))
+    s.ground(0.0, width, 0.0, depth, 0.0, pillars)
+    for level in (1, 2):
+        s.slab(0.0, width, 0.0, depth, level * storey, holes[level])
+    return s.mesh()
+
 KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
     "subway": subway, "archipelago": archipelago, "car_park": car_park,
     "forest": forest, "stadium": stadium, "harbour": harbour,
@@ -9815,6 +10276,8 @@ KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
     "corridor_shooter": corridor_shooter, "roof_town": roof_town,
     "ladders": ladders, "jump_gaps": jump_gaps, "collision_hulls": collision_hulls, "thresholds": thresholds,
     "prop_pile": prop_pile, "beams": beams,
+    "moba": moba, "capture_flag": capture_flag, "platform_tower": platform_tower,
+    "diagonal_dungeon": diagonal_dungeon, "battle_royale": battle_royale, "arena_shooter": arena_shooter,
 }
 """Kind name -> generator (seed -> Y-up mesh in metres)."""
 
