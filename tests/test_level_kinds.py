@@ -1,4 +1,4 @@
-"""The ninth to twenty-first rounds' level kinds (``benchmarks/level_kinds.py``) build the levels their docstrings describe.
+"""The ninth to twenty-second rounds' level kinds (``benchmarks/level_kinds.py``) build the levels their docstrings describe.
 
 Smoke tests of quick generators (most well under a second each to build and to give a navmesh; the theatre's and
 the cliff dwellings' thousands of hulls take about 5 s of CPU): the connected areas
@@ -30,7 +30,7 @@ SAME_SEED_KINDS = (
     "hall", "islets", "helix", "flooded", "stairhall", "quarry", "theme_park", "golf", "skatepark", "stepwell",
     "railyard", "craters", "monastery", "estate", "dam", "garden", "cistern", "glacier", "medina", "radial_town",
     "bazaar", "stilt_village", "nursery", "drop_downs", "house", "kit_arena", "backdrop", "paper_walls",
-    "corridor_shooter",
+    "corridor_shooter", "moba", "capture_flag", "platform_tower", "diagonal_dungeon", "battle_royale", "arena_shooter",
 )
 
 
@@ -925,3 +925,69 @@ def test_the_beams_hold_no_floor_so_the_roofs_stand_apart(kinds):
     y = nav.centres[:, 1] - 0.2
     assert (np.abs(y[label == main] - 4.0) < 0.1).any()
     assert len({int(k) for k in label[y > 3.0]} - {int(main)}) > 5
+
+
+def test_a_tile_run_at_45_degrees_is_a_staircase_of_tiles_sharing_edges():
+    """``_paint`` with no brush marks, from tile (0, 0) to (2, 2), the five tiles of a staircase: each shares an edge
+    with the one before it, steps along i and j alternating."""
+    paint = benchmark("level_kinds")._paint
+    mask = np.zeros((4, 4), dtype=bool)
+    paint(mask, np.array([0, 0]), np.array([2, 2]), 0)
+    assert sorted(zip(*np.nonzero(mask))) == [(0, 0), (1, 0), (1, 1), (2, 1), (2, 2)]
+
+
+def test_the_mobas_lanes_river_and_jungle_are_one_area_symmetric_under_a_half_turn(kinds):
+    """One area with floor on the river (0.3 m under the lanes); the map's solids map onto themselves under a half
+    turn about the centre of its square."""
+    mesh = kinds["moba"](0)
+    label, nav = areas(mesh)
+    assert label.max() == 0
+    y = nav.centres[:, 1] - 0.2
+    assert (np.abs(y + 0.3) < 0.1).sum() > 10 and (np.abs(y) < 0.1).sum() > 100
+    side = mesh.vertices[:, 0].max() + mesh.vertices[:, 0].min()
+    points = {tuple(v) for v in np.round(mesh.vertices, 3)}
+    turned = {tuple(v) for v in np.round(mesh.vertices * [-1.0, 1.0, -1.0] + [side, 0.0, side], 3)}
+    assert points == turned
+
+
+def test_the_capture_flag_bases_meet_over_the_field_and_through_both_tunnels(kinds):
+    """One area: the field, both bases' halls and flag rooms (4 m up) and the two tunnels 4.5 m under the field, each
+    floor over 90 m long."""
+    label, nav = areas(kinds["capture_flag"](1))
+    assert label.max() == 0
+    x, y, z = nav.centres.T
+    tunnel = np.abs(y - 0.2 + 4.5) < 0.2
+    for half in (z < z.mean(), z > z.mean()):
+        assert np.ptp(x[tunnel & half]) > 90.0
+    upper = np.abs(y - 0.2 - 4.0) < 0.2
+    assert (upper & (x < x.mean())).sum() > 3 and (upper & (x > x.mean())).sum() > 3
+
+
+def test_the_platform_towers_spiral_is_one_area_over_the_void(kinds):
+    """Every join (ramp or flight) lands on the next platform: one area climbing over 100 m from the plaza."""
+    label, nav = areas(kinds["platform_tower"](0))
+    assert label.max() == 0 and nav.centres[:, 1].max() > 100.0
+
+
+def test_the_diagonal_dungeons_staircase_corridors_join_every_room(kinds):
+    """Corridors one 2 m tile wide, at 45 degrees a staircase of tiles, pass the presets' agent: one area."""
+    label, _ = areas(kinds["diagonal_dungeon"](1))
+    assert label.max() == 0
+
+
+def test_the_battle_royale_field_and_houses_are_one_area_but_rock_tops(kinds):
+    """The rolling field and every house (floors 0.15 m up through doors 1.6 m wide) are one area of nearly all the
+    floor; any other area is a rock's top, under 10 m²."""
+    label, nav = areas(kinds["battle_royale"](0))
+    sizes = np.bincount(label, weights=nav.areas)
+    assert sizes.max() > 50000.0 and np.sort(sizes)[:-1].max(initial=0.0) < 10.0
+
+
+def test_the_arena_shooters_three_storeys_are_one_area_up_its_ramps(kinds):
+    """Ramps through holes in the slabs join the ground (0), the middle storey (4.5 m) and the top (9 m): one area with
+    over 5,000 m² on each storey."""
+    label, nav = areas(kinds["arena_shooter"](0))
+    assert label.max() == 0
+    y = nav.centres[:, 1] - 0.2
+    for storey in (0.0, 4.5, 9.0):
+        assert nav.areas[np.abs(y - storey) < 0.2].sum() > 5000.0, storey
