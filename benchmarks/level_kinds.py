@@ -9801,23 +9801,34 @@ def beams(seed: int) -> trimesh.Trimesh:
 def _tiles(s: _Solids, floor: np.ndarray, cell: float, wall_top: float) -> None:
     """A level drawn on a grid of square tiles ``cell`` m wide from the origin: tile (i, j) covers [i cell, (i + 1)
     cell] along x and [j cell, (j + 1) cell] along z. ``floor`` (n, m) holds each tile's floor height (m), NaN for a
-    tile of rock: every run along x of tiles of one height is one box from 0.5 m under the lowest floor up to that
-    height, every run of rock one solid ridged along x (:func:`_ridged`) up to ``wall_top``, so nothing stands on the
-    rock and no floor runs under it. O(n m) solids at most, one a run.
+    tile of rock. Each run along x of tiles of one height, joined with the same run of the rows after it into one
+    rectangle, is one box from 0.5 m under the lowest floor up to that height, each rectangle of rock one solid ridged
+    along x (:func:`_ridged`) up to ``wall_top``, so nothing stands on the rock and no floor runs under it. O(n m).
     """
     base = float(np.nanmin(floor)) - 0.5
-    for j in range(floor.shape[1]):
-        row, i = floor[:, j], 0
-        while i < len(row):
-            k = i + 1
-            while k < len(row) and (row[k] == row[i] or (np.isnan(row[k]) and np.isnan(row[i]))):
-                k += 1
-            if np.isnan(row[i]):
-                _ridged(s, i * cell, k * cell, j * cell, (j + 1) * cell, base, wall_top)
-            else:
-                s.box(i * cell, k * cell, base, float(row[i]), j * cell, (j + 1) * cell)
-            i = k
+    key = np.where(np.isnan(floor), np.inf, floor)  # rock compares equal to rock
+    open_runs: dict[tuple[int, int, float], int] = {}  # (first tile, end tile, height) -> the row it started on
 
+    def emit(i: int, k: int, height: float, j0: int, j1: int) -> None:
+        if height == np.inf:
+            _ridged(s, i * cell, k * cell, j0 * cell, j1 * cell, base, wall_top)
+        else:
+            s.box(i * cell, k * cell, base, height, j0 * cell, j1 * cell)
+
+    for j in range(floor.shape[1] + 1):
+        runs: set[tuple[int, int, float]] = set()
+        if j < floor.shape[1]:
+            row, i = key[:, j], 0
+            while i < len(row):
+                k = i + 1
+                while k < len(row) and row[k] == row[i]:
+                    k += 1
+                runs.add((i, k, float(row[i])))
+                i = k
+        for run in sorted(set(open_runs) - runs):
+            emit(*run, open_runs.pop(run), j)
+        for run in runs - set(open_runs):
+            open_runs[run] = j
 
 def _paint(mask: np.ndarray, a: np.ndarray, b: np.ndarray, half: int) -> None:
     """Marks in ``mask`` (n, m) the tiles within ``half`` tiles (a square brush) of the 4-connected run of tiles from
@@ -10243,7 +10254,7 @@ def arena_shooter(seed: int) -> trimesh.Trimesh:
                 plans[level].append((p[0], p[0] + w, p[1], p[1] + d))
     s.ground(0.0, width, 0.0, depth, 0.0, pillars)
     for level in (1, 2):
-        s.slab(0.0, width, 0.0, depth, level * storey, holes[level])
+        s.ground(0.0, width, 0.0, depth, level * storey, holes[level], 0.3)  # one box a run: the slab's 5-6 x fewer solids
     return s.mesh()
 
 KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
