@@ -73,7 +73,7 @@ import numpy as np
 import numpy.typing as npt
 import trimesh
 from pydantic import Field, Strict
-from scipy.sparse import csgraph
+from scipy.sparse import coo_matrix, csgraph
 from scipy.spatial import cKDTree
 
 from g2s_core.errors import G2SError
@@ -220,4 +220,107 @@ def cut_to_play_space(graph: nx.Graph, points: npt.ArrayLike | None, context: Ru
         area = traffic.surface_arrays(graph).area[~keep].sum()
         context.warn(f"graph: {np.unique(labels[~keep]).size} walkable area(s) ({area:.3g} m² in all) hold no "
                      f"play point ({KEY}) and are left out")
-    return _subgraph(graph, keep)
+    cut = _subgraph(graph, keep)
+    cut.graph[PLAY_POINTS] = np.asarray(points, dtype=np.float64).reshape(-1, 3).tolist()
+    return cut
+
+
+PLAY_POINTS = "play_points"
+"""The graph attribute (``graph.graph[PLAY_POINTS]``) holding the play points of a graph :func:`cut_to_play_space` cut:
+what tells the stages after it that the graph is a play space, not the whole level."""
+
+_WELD = 1e-6
+"""Metres: vertices this close (on a grid of this step) are one where :func:`mesh_parts` joins faces into parts."""
+
+_PAIR_BATCH = 200_000
+"""Face pairs tested at once by :func:`play_space_faces` (each pair holds 12 corner and 12 edge tests)."""
+
+
+def mesh_parts(mesh: trimesh.Trimesh) -> np.ndarray:
+    """(F,) int64: each face's part, the connected components of the faces joined by shared corners (corners on one
+    :data:`_WELD` grid point are shared, whether the file welded them or not). O(F + V log V)."""
+    faces = np.asarray(mesh.faces, dtype=np.int64)
+    if len(faces) == 0:
+        return np.zeros(0, dtype=np.int64)
+    _, vertex = np.unique(np.round(np.asarray(mesh.vertices, dtype=np.float64) / _WELD).astype(np.int64), axis=0,
+                          return_inverse=True)
+    corner = vertex.reshape(-1)[faces]
+    count = len(faces) + int(corner.max()) + 1
+    rows = np.repeat(np.arange(len(faces)), 3)
+    links = coo_matrix((np.ones(rows.size, dtype=np.int8), (rows, len(faces) + corner.reshape(-1))), (count, count))
+    return csgraph.connected_components(links, directed=False)[1][: len(faces)].astype(np.int64)
+
+
+def _segments_cross(triangles: np.ndarray, p: np.ndarray, q: np.ndarray) -> np.ndarray:
+    """(n,) bool: segment ``p[i]``-``q[i]`` ((n, 3) each) crosses triangle ``triangles[i]`` ((n, 3, 3)), ends included
+    (Moller and Trumbore, "Fast, minimum storage ray-triangle intersection", 1997, over the segment). O(n)."""
+    a, e1, e2 = triangles[:, 0], triangles[:, 1] - triangles[:, 0], triangles[:, 2] - triangles[:, 0]
+    d = q - p
+    h = np.cross(d, e2)
+    det = np.einsum("ij,ij->i", e1, h)
+    ok = np.abs(det) > 1e-12 * np.maximum(1.0, np.linalg.norm(d, axis=1)) ** 3
+    inv = np.where(ok, 1.0 / np.where(ok, det, 1.0), 0.0)
+    s = p - a
+    u = np.einsum("ij,ij->i", s, h) * inv
+    r = np.cross(s, e1)
+    v = np.einsum("ij,ij->i", d, r) * inv
+    t = np.einsum("ij,ij->i", e2, r) * inv
+    return ok & (u >= 0) & (v >= 0) & (u + v <= 1) & (t >= 0) & (t <= 1)
+
+
+def _touching(first: np.ndarray, second: np.ndarray, gap: float) -> np.ndarray:
+    """(n,) bool: triangle ``first[i]`` touches ``second[i]`` ((n, 3, 3) each, metres): a corner of either lies within
+    ``gap`` m of the other, or an edge of either crosses the other. Two triangles crossing edge to edge within ``gap``
+    with no corner that near, or crossing within one plane, do not touch by this test. O(n)."""
+    near = np.zeros(len(first), dtype=bool)
+    for this, that in ((first, second), (second, first)):
+        for k in range(3):
+            closest = trimesh.triangles.closest_point(this, that[:, k])
+            near |= np.linalg.norm(closest - that[:, k], axis=1) <= gap
+            near |= _segments_cross(this, that[:, k], that[:, (k + 1) % 3])
+    return near
+
+
+def play_space_faces(mesh: trimesh.Trimesh, footing: np.ndarray, reach: float, gap: float) -> np.ndarray:
+    """(F,) bool: the faces of the piece the play space is: the parts of ``mesh`` (:func:`mesh_parts`) the play space
+    stands on, and every part touching a kept one, in turn (:func:`_touching` within ``gap`` m).
+
+    ``footing``: (n, 3) points on the play space's walkable surface (metres, mesh frame); the part of the first face
+    straight below each, within ``2 reach`` of ``reach`` above it, is stood on. A backdrop or a skybox the play space
+    leaves out, apart from the piece, is dropped; a piece built of separate parts (walls standing on a slab, a lintel
+    between walls, a canopy on its posts) is kept whole, as are parts laid a crack apart (floor tiles, planks) up to
+    ``gap``. A backdrop touching the piece (terrain it stands on) is kept, and so is whatever touches that; a part of
+    the piece touching nothing kept (a canopy on posts ending in the air off the slab) is dropped.
+
+    Cost: one ray per footing point; an R-tree of the faces' boxes (Guttman, "R-trees: a dynamic index structure for
+    spatial searching", 1984), queried once per kept face with its box widened by ``gap``, and the corner and edge tests
+    of each pair of boxes so found, O(F log F + pairs).
+    """
+    faces = np.asarray(mesh.faces)
+    kept_faces = np.zeros(len(faces), dtype=bool)
+    footing = np.asarray(footing, dtype=np.float64).reshape(-1, 3)
+    if len(faces) == 0 or len(footing) == 0:
+        return kept_faces
+    part = mesh_parts(mesh)
+    hits = RayCaster(mesh).first_hits(footing + reach * UP, -UP)
+    kept = np.zeros(int(part.max()) + 1, dtype=bool)
+    kept[part[hits.face[hits.hit & (hits.distance <= 2.0 * reach)]]] = True
+    triangles = np.asarray(mesh.triangles, dtype=np.float64)
+    low, high = triangles.min(axis=1), triangles.max(axis=1)
+    tree = trimesh.util.bounds_tree(np.hstack([low, high]))
+    frontier = np.flatnonzero(kept[part])
+    while len(frontier):
+        found, counts = tree.intersection_v(low[frontier] - gap, high[frontier] + gap)
+        found = np.asarray(found, dtype=np.int64)
+        mine = np.repeat(frontier, np.asarray(counts, dtype=np.int64))
+        other = ~kept[part[found]]
+        mine, found = mine[other], found[other]
+        joined = np.zeros_like(kept)
+        for start in range(0, len(found), _PAIR_BATCH):
+            batch = slice(start, start + _PAIR_BATCH)
+            touch = _touching(triangles[mine[batch]], triangles[found[batch]], gap)
+            joined[part[found[batch][touch]]] = True
+        kept |= joined
+        frontier = np.flatnonzero(joined[part])
+    kept_faces[:] = kept[part]
+    return kept_faces
