@@ -20,7 +20,10 @@ where a rule per stage would have to be repeated in each and kept alike:
   takes the boundary of the surface the graph covers (on the navmesh route
   the polygons the graph holds, :func:`held_polygons`; on the sampling
   route the graph's own faces), so the background holds no opening and
-  weighs on no floor of its reachability prior;
+  weighs on no floor of its reachability prior, and casts its rays and
+  measures the piece's extent over the parts of the mesh the play space
+  stands on and those touching them (:func:`play_space_faces`), so a
+  backdrop apart from the piece hides none of its openings;
 * ``steiner``, ``loops``, ``roots``: over the graph and the terminals;
 * ``simplify``: the predicates' rules over the structure, the walking flows
   and percentiles of ``max_traffic_step`` and the heat guarantee over the
@@ -35,11 +38,10 @@ where a rule per stage would have to be repeated in each and kept alike:
 * ``outputs``: the graph and the structure, over the level's whole surface
   (``context.navmesh``, or the mesh), drawn as the level.
 
-What reads the whole level: the source mesh as geometry (``entry_exit``'s
-rays, its outer extent and ``leave_footprint``, so that a backdrop beyond a
-piece's opening or below it drops the opening: docs/entry_exit.md, Limits;
-``mesh_los``'s sight lines; ``coverage``'s default cover radius,
-from the mesh's bounds) and Detour's queries (``surface_los``'s raycast,
+What reads the whole level: the source mesh as geometry (``mesh_los``'s
+sight lines; ``coverage``'s default cover radius, from the mesh's bounds;
+``entry_exit`` reads the parts touching the play space, a backdrop touching
+the piece among them: docs/entry_exit.md, Limits) and Detour's queries (``surface_los``'s raycast,
 which never leaves the connected area it starts in). Both graph
 builders (``navmesh``, ``sampling``) call :func:`cut_to_play_space` last, after
 their own checks of the whole level's walkable surface. The navmesh itself
@@ -95,7 +97,8 @@ class PlaySpaceParams(PluginParams):
                     "connected walkable areas holding a node within the agent's height of one (3D; a navmesh node's "
                     "distance is to its polygon), so every later stage (terminals, entry_exit's openings among them, the "
                     "tree, loops, roots, simplification, walking flows and their percentiles, the heat guarantee, "
-                    "analyzers, regions and chokepoints, evaluators) sees those areas alone (the mesh's geometry and the "
+                    "analyzers, regions and chokepoints, evaluators) sees those areas alone (entry_exit's rays read the "
+                    "mesh's parts the play space stands on and those touching them; the mesh's other readers and the "
                     "drawn navmesh stay whole), and a warning says how much was left out; null: every area")
 
 

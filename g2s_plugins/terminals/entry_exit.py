@@ -138,7 +138,10 @@ builder was given ``play_points``); without a navmesh, the ``sampling``
 builder's graph's own faces (:mod:`._sampled_surface`), which stand for the
 navmesh polygons (normals, the main floor, the nodes an opening is joined
 to). Every step and rule is the same on both. The rays, the outer extent
-and ``leave_footprint`` read the whole mesh (``context.mesh``).
+and ``leave_footprint`` read the whole mesh (``context.mesh``), or, when the
+builder was given ``play_points``, the piece the play space stands on
+(:func:`play_space_piece`: its parts and those touching them), so a backdrop
+or a skybox apart from it hides none of its openings.
 
 Cost, for a navmesh of V vertices and B boundary edges, S samples (the
 boundary's length / ``sample_step``), k = ``fan_count`` and o openings:
