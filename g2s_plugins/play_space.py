@@ -292,16 +292,17 @@ def play_space_faces(mesh: trimesh.Trimesh, footing: np.ndarray, reach: float, g
     """(F,) bool: the faces of the piece the play space is: the parts of ``mesh`` (:func:`mesh_parts`) the play space
     stands on, and every part touching a kept one, in turn (:func:`_touching` within ``gap`` m).
 
-    ``footing``: (n, 3) points on the play space's walkable surface (metres, mesh frame); the part of the first face
-    straight below each, within ``2 reach`` of ``reach`` above it, is stood on. A backdrop or a skybox the play space
+    ``footing``: (n, 3) points on the play space's walkable surface (metres, mesh frame); the parts of the faces
+    within ``reach`` m of one are stood on (a face, not the face straight below: under a node over a grating's slot
+    there is none). A backdrop or a skybox the play space
     leaves out, apart from the piece, is dropped; a piece built of separate parts (walls standing on a slab, a lintel
     between walls, a canopy on its posts) is kept whole, as are parts laid a crack apart (floor tiles, planks) up to
     ``gap``. A backdrop touching the piece (terrain it stands on) is kept, and so is whatever touches that; a part of
     the piece touching nothing kept (a canopy on posts ending in the air off the slab) is dropped.
 
-    Cost: one ray per footing point; an R-tree of the faces' boxes (Guttman, "R-trees: a dynamic index structure for
-    spatial searching", 1984), queried once per kept face with its box widened by ``gap``, and the corner and edge tests
-    of each pair of boxes so found, O(F log F + pairs).
+    Cost: an R-tree of the faces' boxes (Guttman, "R-trees: a dynamic index structure for spatial searching", 1984),
+    queried once per footing point with a box ``reach`` m round it and once per kept face with its box widened by
+    ``gap``, and the distance, corner and edge tests of each pair so found, O((F + n) log F + pairs).
     """
     faces = np.asarray(mesh.faces)
     kept_faces = np.zeros(len(faces), dtype=bool)
@@ -309,12 +310,17 @@ def play_space_faces(mesh: trimesh.Trimesh, footing: np.ndarray, reach: float, g
     if len(faces) == 0 or len(footing) == 0:
         return kept_faces
     part = mesh_parts(mesh)
-    hits = RayCaster(mesh).first_hits(footing + reach * UP, -UP)
-    kept = np.zeros(int(part.max()) + 1, dtype=bool)
-    kept[part[hits.face[hits.hit & (hits.distance <= 2.0 * reach)]]] = True
     triangles = np.asarray(mesh.triangles, dtype=np.float64)
     low, high = triangles.min(axis=1), triangles.max(axis=1)
     tree = trimesh.util.bounds_tree(np.hstack([low, high]))
+    kept = np.zeros(int(part.max()) + 1, dtype=bool)
+    for start in range(0, len(footing), _QUERY_BATCH):
+        points = footing[start: start + _QUERY_BATCH]
+        found, counts = tree.intersection_v(points - reach, points + reach)
+        found = np.asarray(found, dtype=np.int64)
+        point = np.repeat(points, np.asarray(counts, dtype=np.int64), axis=0)
+        near = np.linalg.norm(trimesh.triangles.closest_point(triangles[found], point) - point, axis=1) <= reach
+        kept[part[found[near]]] = True
     frontier = np.flatnonzero(kept[part])
     while len(frontier):
         joined = np.zeros_like(kept)

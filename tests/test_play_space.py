@@ -180,8 +180,14 @@ def test_the_play_space_s_faces_are_the_parts_it_stands_on_and_those_touching_th
     keep = play_space.play_space_faces(mesh, np.array([[2.0, 0.0, 2.0]]), 0.4, 0.1)
     assert keep.reshape(6, 12).all(axis=1).tolist() == [True, True, True, True, False, False]
     assert not keep.reshape(6, 12)[4:].any()
-    # a point standing on nothing of the mesh keeps nothing
+    # a point 0.3 m beyond the slab's side, over nothing within reach straight below (a node over a grating's slot):
+    # the slab is the face within reach
+    assert (play_space.play_space_faces(mesh, np.array([[2.0, 0.0, 4.3]]), 0.4, 0.1) == keep).all()
+    # a point with no face within reach keeps nothing, and the selector then reads the whole mesh
     assert not play_space.play_space_faces(mesh, np.array([[2.0, 5.0, 2.0]]), 0.4, 0.1).any()
+    graph = nx.Graph()
+    graph.add_node(0, pos=(2.0, 5.0, 2.0))
+    assert entry_exit.play_space_piece(mesh, graph, AgentConfig(), entry_exit.Params()) is mesh
 
 
 def test_the_cut_graph_names_its_play_points(registry):

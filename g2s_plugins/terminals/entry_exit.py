@@ -1777,12 +1777,15 @@ def add_terminals(
 
 def play_space_piece(mesh: trimesh.Trimesh, graph: nx.Graph, agent: AgentConfig, params: Params) -> trimesh.Trimesh:
     """The faces of ``mesh`` that make the piece ``graph``'s play space is (:func:`g2s_plugins.play_space.play_space_faces`):
-    the parts its nodes stand on (found within the snap distance) and those touching them, parts a crack up to
+    the parts with a face within the snap distance of one of its nodes and those touching them, parts a crack up to
     :data:`_TOUCH_STEPS` search steps apart included; the rays, the outer extent and ``leave_footprint`` read them
-    alone, so a backdrop or a skybox apart from the piece hides none of its openings. O(F log F + pairs)."""
+    alone, so a backdrop or a skybox apart from the piece hides none of its openings. ``mesh`` itself when no face
+    lies that near a node (none was measured: a node stands on the walkable surface). O((F + n) log F + pairs)."""
     footing = np.array([pos for _, pos in graph.nodes(data="pos") if pos is not None], dtype=np.float64)
     s = _settings(params, agent)
     keep = play_space_faces(mesh, footing, s.snap, _TOUCH_STEPS * s.delta)
+    if not keep.any():
+        return mesh
     return trimesh.Trimesh(np.asarray(mesh.vertices), np.asarray(mesh.faces)[keep], process=False)
 
 
