@@ -20,7 +20,10 @@ where a rule per stage would have to be repeated in each and kept alike:
   takes the boundary of the surface the graph covers (on the navmesh route
   the polygons the graph holds, :func:`held_polygons`; on the sampling
   route the graph's own faces), so the background holds no opening and
-  weighs on no floor of its reachability prior;
+  weighs on no floor of its reachability prior, and casts its rays and
+  measures the piece's extent over the parts of the mesh the play space
+  stands on and those touching them (:func:`play_space_faces`), so a
+  backdrop apart from the piece hides none of its openings;
 * ``steiner``, ``loops``, ``roots``: over the graph and the terminals;
 * ``simplify``: the predicates' rules over the structure, the walking flows
   and percentiles of ``max_traffic_step`` and the heat guarantee over the
@@ -35,11 +38,10 @@ where a rule per stage would have to be repeated in each and kept alike:
 * ``outputs``: the graph and the structure, over the level's whole surface
   (``context.navmesh``, or the mesh), drawn as the level.
 
-What reads the whole level: the source mesh as geometry (``entry_exit``'s
-rays, its outer extent and ``leave_footprint``, so that a backdrop beyond a
-piece's opening or below it drops the opening: docs/entry_exit.md, Limits;
-``mesh_los``'s sight lines; ``coverage``'s default cover radius,
-from the mesh's bounds) and Detour's queries (``surface_los``'s raycast,
+What reads the whole level: the source mesh as geometry (``mesh_los``'s
+sight lines; ``coverage``'s default cover radius, from the mesh's bounds;
+``entry_exit`` reads the parts touching the play space, a backdrop touching
+the piece among them: docs/entry_exit.md, Limits) and Detour's queries (``surface_los``'s raycast,
 which never leaves the connected area it starts in). Both graph
 builders (``navmesh``, ``sampling``) call :func:`cut_to_play_space` last, after
 their own checks of the whole level's walkable surface. The navmesh itself
@@ -73,7 +75,7 @@ import numpy as np
 import numpy.typing as npt
 import trimesh
 from pydantic import Field, Strict
-from scipy.sparse import csgraph
+from scipy.sparse import coo_matrix, csgraph
 from scipy.spatial import cKDTree
 
 from g2s_core.errors import G2SError
@@ -95,7 +97,8 @@ class PlaySpaceParams(PluginParams):
                     "connected walkable areas holding a node within the agent's height of one (3D; a navmesh node's "
                     "distance is to its polygon), so every later stage (terminals, entry_exit's openings among them, the "
                     "tree, loops, roots, simplification, walking flows and their percentiles, the heat guarantee, "
-                    "analyzers, regions and chokepoints, evaluators) sees those areas alone (the mesh's geometry and the "
+                    "analyzers, regions and chokepoints, evaluators) sees those areas alone (entry_exit's rays read the "
+                    "mesh's parts the play space stands on and those touching them; the mesh's other readers and the "
                     "drawn navmesh stay whole), and a warning says how much was left out; null: every area")
 
 
@@ -220,4 +223,119 @@ def cut_to_play_space(graph: nx.Graph, points: npt.ArrayLike | None, context: Ru
         area = traffic.surface_arrays(graph).area[~keep].sum()
         context.warn(f"graph: {np.unique(labels[~keep]).size} walkable area(s) ({area:.3g} m² in all) hold no "
                      f"play point ({KEY}) and are left out")
-    return _subgraph(graph, keep)
+    cut = _subgraph(graph, keep)
+    cut.graph[PLAY_POINTS] = np.asarray(points, dtype=np.float64).reshape(-1, 3).tolist()
+    return cut
+
+
+PLAY_POINTS = "play_points"
+"""The graph attribute (``graph.graph[PLAY_POINTS]``) holding the play points of a graph :func:`cut_to_play_space` cut:
+what tells the stages after it that the graph is a play space, not the whole level."""
+
+_WELD = 1e-6
+"""Metres: vertices this close (on a grid of this step) are one where :func:`mesh_parts` joins faces into parts."""
+
+_PAIR_BATCH = 200_000
+"""Face pairs tested at once by :func:`play_space_faces` (each pair holds 6 corner and 6 edge tests)."""
+
+_QUERY_BATCH = 50_000
+"""Kept faces whose neighbours :func:`play_space_faces` asks the R-tree for at once (a welded level's floor of a
+million faces would otherwise return tens of millions of pairs in one array)."""
+
+
+def mesh_parts(mesh: trimesh.Trimesh) -> np.ndarray:
+    """(F,) int64: each face's part, the connected components of the faces joined by shared corners (corners on one
+    :data:`_WELD` grid point are shared, whether the file welded them or not). O(F + V log V)."""
+    faces = np.asarray(mesh.faces, dtype=np.int64)
+    if len(faces) == 0:
+        return np.zeros(0, dtype=np.int64)
+    _, vertex = np.unique(np.round(np.asarray(mesh.vertices, dtype=np.float64) / _WELD).astype(np.int64), axis=0,
+                          return_inverse=True)
+    corner = vertex.reshape(-1)[faces]
+    count = len(faces) + int(corner.max()) + 1
+    rows = np.repeat(np.arange(len(faces)), 3)
+    links = coo_matrix((np.ones(rows.size, dtype=np.int8), (rows, len(faces) + corner.reshape(-1))), (count, count))
+    return csgraph.connected_components(links, directed=False)[1][: len(faces)].astype(np.int64)
+
+
+def _segments_cross(triangles: np.ndarray, p: np.ndarray, q: np.ndarray) -> np.ndarray:
+    """(n,) bool: segment ``p[i]``-``q[i]`` ((n, 3) each) crosses triangle ``triangles[i]`` ((n, 3, 3)), ends included
+    (Moller and Trumbore, "Fast, minimum storage ray-triangle intersection", 1997, over the segment). O(n)."""
+    a, e1, e2 = triangles[:, 0], triangles[:, 1] - triangles[:, 0], triangles[:, 2] - triangles[:, 0]
+    d = q - p
+    h = np.cross(d, e2)
+    det = np.einsum("ij,ij->i", e1, h)
+    ok = np.abs(det) > 1e-12 * np.maximum(1.0, np.linalg.norm(d, axis=1)) ** 3
+    inv = np.where(ok, 1.0 / np.where(ok, det, 1.0), 0.0)
+    s = p - a
+    u = np.einsum("ij,ij->i", s, h) * inv
+    r = np.cross(s, e1)
+    v = np.einsum("ij,ij->i", d, r) * inv
+    t = np.einsum("ij,ij->i", e2, r) * inv
+    return ok & (u >= 0) & (v >= 0) & (u + v <= 1) & (t >= 0) & (t <= 1)
+
+
+def _touching(first: np.ndarray, second: np.ndarray, gap: float) -> np.ndarray:
+    """(n,) bool: triangle ``first[i]`` touches ``second[i]`` ((n, 3, 3) each, metres): a corner of either lies within
+    ``gap`` m of the other, or an edge of either crosses the other. Two triangles crossing edge to edge within ``gap``
+    with no corner that near, or crossing within one plane, do not touch by this test. O(n)."""
+    near = np.zeros(len(first), dtype=bool)
+    for this, that in ((first, second), (second, first)):
+        for k in range(3):
+            closest = trimesh.triangles.closest_point(this, that[:, k])
+            near |= np.linalg.norm(closest - that[:, k], axis=1) <= gap
+            near |= _segments_cross(this, that[:, k], that[:, (k + 1) % 3])
+    return near
+
+
+def play_space_faces(mesh: trimesh.Trimesh, footing: np.ndarray, reach: float, gap: float) -> np.ndarray:
+    """(F,) bool: the faces of the piece the play space is: the parts of ``mesh`` (:func:`mesh_parts`) the play space
+    stands on, and every part touching a kept one, in turn (:func:`_touching` within ``gap`` m).
+
+    ``footing``: (n, 3) points on the play space's walkable surface (metres, mesh frame); the parts of the faces
+    within ``reach`` m of one are stood on (a face, not the face straight below: under a node over a grating's slot
+    there is none). A backdrop or a skybox the play space
+    leaves out, apart from the piece, is dropped; a piece built of separate parts (walls standing on a slab, a lintel
+    between walls, a canopy on its posts) is kept whole, as are parts laid a crack apart (floor tiles, planks) up to
+    ``gap``. A backdrop touching the piece (terrain it stands on) is kept, and so is whatever touches that; a part of
+    the piece touching nothing kept (a canopy on posts ending in the air off the slab) is dropped.
+
+    Cost: an R-tree of the faces' boxes (Guttman, "R-trees: a dynamic index structure for spatial searching", 1984),
+    queried once per footing point with a box ``reach`` m round it and once per kept face with its box widened by
+    ``gap``, and the distance, corner and edge tests of each pair so found, O((F + n) log F + pairs).
+    """
+    faces = np.asarray(mesh.faces)
+    kept_faces = np.zeros(len(faces), dtype=bool)
+    footing = np.asarray(footing, dtype=np.float64).reshape(-1, 3)
+    if len(faces) == 0 or len(footing) == 0:
+        return kept_faces
+    part = mesh_parts(mesh)
+    triangles = np.asarray(mesh.triangles, dtype=np.float64)
+    low, high = triangles.min(axis=1), triangles.max(axis=1)
+    tree = trimesh.util.bounds_tree(np.hstack([low, high]))
+    kept = np.zeros(int(part.max()) + 1, dtype=bool)
+    for start in range(0, len(footing), _QUERY_BATCH):
+        points = footing[start: start + _QUERY_BATCH]
+        found, counts = tree.intersection_v(points - reach, points + reach)
+        found = np.asarray(found, dtype=np.int64)
+        point = np.repeat(points, np.asarray(counts, dtype=np.int64), axis=0)
+        near = np.linalg.norm(trimesh.triangles.closest_point(triangles[found], point) - point, axis=1) <= reach
+        kept[part[found[near]]] = True
+    frontier = np.flatnonzero(kept[part])
+    while len(frontier):
+        joined = np.zeros_like(kept)
+        for start in range(0, len(frontier), _QUERY_BATCH):
+            asked = frontier[start: start + _QUERY_BATCH]
+            found, counts = tree.intersection_v(low[asked] - gap, high[asked] + gap)
+            found = np.asarray(found, dtype=np.int64)
+            mine = np.repeat(asked, np.asarray(counts, dtype=np.int64))
+            other = ~kept[part[found]] & ~joined[part[found]]
+            mine, found = mine[other], found[other]
+            for first in range(0, len(found), _PAIR_BATCH):
+                batch = slice(first, first + _PAIR_BATCH)
+                touch = _touching(triangles[mine[batch]], triangles[found[batch]], gap)
+                joined[part[found[batch][touch]]] = True
+        kept |= joined
+        frontier = np.flatnonzero(joined[part])
+    kept_faces[:] = kept[part]
+    return kept_faces

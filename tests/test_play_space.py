@@ -18,7 +18,7 @@ from g2s_core.errors import ConfigError, G2SError
 from g2s_core.mesh import mesh_sha256
 from g2s_core.model import RunContext, RunResult
 from g2s_core.registry import Registry
-from g2s_plugins import evaluation, traffic
+from g2s_plugins import evaluation, play_space, traffic
 from g2s_plugins.play_space import cut_to_play_space
 from g2s_plugins.terminals import entry_exit
 from tests.conftest import box
@@ -98,14 +98,17 @@ def test_the_sampling_route_s_reference_navmesh_is_cut_by_the_same_rule(registry
     assert played.metrics["traffic"]["navmesh_area_left_out"] == 0.0
 
 
+def room_with_two_doors() -> list[trimesh.Trimesh]:
+    """A room 8 m x 6 m (floor at y 0, walls 0.3 m thick and 3 m high) with a 1.6 m doorway (z 2.2-3.8) in the middle of
+    its west and east walls, open to the walls' top: its slab and six walls, each a box of its own (unwelded)."""
+    return [box(0, 8, -0.2, 0, 0, 6), box(-0.3, 0, 0, 3, 0, 2.2), box(-0.3, 0, 0, 3, 3.8, 6), box(8, 8.3, 0, 3, 0, 2.2),
+            box(8, 8.3, 0, 3, 3.8, 6), box(-0.3, 8.3, 0, 3, -0.3, 0), box(-0.3, 8.3, 0, 3, 6, 6.3)]
+
+
 def room_beside_lower_ground() -> trimesh.Trimesh:
-    """A room 8 m x 6 m (floor at y 0, walls 0.3 m thick and 3 m high) with a 1.6 m doorway in the middle of its west
-    and east walls and, 4 m north of it, ground 8 m x 20 m 1 m lower that no one in the room reaches: a backdrop
-    larger than the piece, whose own edges read as openings."""
-    parts = [box(0, 8, -0.2, 0, 0, 6), box(-0.3, 0, 0, 3, 0, 2.2), box(-0.3, 0, 0, 3, 3.8, 6), box(8, 8.3, 0, 3, 0, 2.2),
-             box(8, 8.3, 0, 3, 3.8, 6), box(-0.3, 8.3, 0, 3, -0.3, 0), box(-0.3, 8.3, 0, 3, 6, 6.3),
-             box(0, 8, -1.2, -1, 10, 30)]
-    return trimesh.util.concatenate(parts)
+    """:func:`room_with_two_doors` and, 4 m north of it, ground 8 m x 20 m 1 m lower that no one in the room reaches: a
+    backdrop larger than the piece, whose own edges read as openings."""
+    return trimesh.util.concatenate(room_with_two_doors() + [box(0, 8, -1.2, -1, 10, 30)])
 
 
 @pytest.mark.parametrize("name", ["map_piece", "map_piece_sampling"])
@@ -120,6 +123,77 @@ def test_entry_exit_finds_the_play_space_s_openings(registry, name):
     doors = sorted(played.terminals.openings, key=lambda o: o.position[0])
     assert [round(o.position[0]) for o in doors] == [0, 8] and all(o.width == pytest.approx(1.6, abs=0.06) for o in doors)
     assert all(o.position[1] == pytest.approx(0, abs=0.01) and o.position[2] == pytest.approx(3, abs=0.05) for o in doors)
+
+
+def inward_skybox() -> trimesh.Trimesh:
+    """A box 40 x 35.2 x 40 m round the room, its faces turned inward (its floor's top 5 m under the room's)."""
+    sky = box(-16, 24, -5.2, 30, -17, 23)
+    sky.invert()
+    return sky
+
+
+BACKDROPS = {
+    # ground 1 m lower reaching 9.7 m past each doorway's wall: the piece's extent along the doors' headings
+    "ground_past_the_doors": [box(-10, 18, -1.2, -1, 10, 30)],
+    # ground 10 x 26 m 1 m lower on either side of the room, 1.7 m beyond its west and east walls
+    "ground_beside": [box(-12, -2, -1.2, -1, -10, 16), box(10, 20, -1.2, -1, -10, 16)],
+    # ground 5 m straight below beyond each doorway: "the piece below" to leave_footprint
+    "inward_skybox": [inward_skybox()],
+}
+
+
+@pytest.mark.parametrize("backdrop", sorted(BACKDROPS))
+@pytest.mark.parametrize("name", ["map_piece", "map_piece_sampling"])
+def test_a_backdrop_apart_from_the_play_space_hides_none_of_its_doors(registry, name, backdrop):
+    mesh = trimesh.util.concatenate(room_with_two_doors() + BACKDROPS[backdrop])
+    played = run(registry, mesh, name, play_points=[[4, 0, 3]])
+    # before, the backdrop counted in the outer extent or as the piece below: no opening
+    doors = sorted(played.terminals.openings, key=lambda o: o.position[0])
+    assert [round(o.position[0]) for o in doors] == [0, 8] and all(o.width == pytest.approx(1.6, abs=0.06) for o in doors)
+
+
+UNWELDED = {
+    # a lintel 1.9-2.9 m up (under the agent's height less a search step), a box of its own between the west door's
+    # walls sharing no corner with them
+    "lintel_west": ([box(-0.3, 0, 1.9, 2.9, 2.2, 3.8)], [8]),
+    # a canopy 1.8 m up and 2 m deep against the east wall's outer face over its doorway: no way out under it
+    "canopy_east": ([box(8.3, 10.3, 1.8, 1.9, 1.8, 4.2)], [0]),
+}
+
+
+@pytest.mark.parametrize("extra", sorted(UNWELDED))
+@pytest.mark.parametrize("name", ["map_piece", "map_piece_sampling"])
+def test_the_piece_s_own_unwelded_parts_still_close_its_doors(registry, name, extra):
+    parts, doors = UNWELDED[extra]
+    played = run(registry, trimesh.util.concatenate(room_with_two_doors() + parts), name, play_points=[[4, 0, 3]])
+    assert [round(o.position[0]) for o in played.terminals.openings] == doors
+
+
+def test_the_play_space_s_faces_are_the_parts_it_stands_on_and_those_touching_them():
+    # a slab; a wall standing on it (unwelded); a beam through the wall, no corner of it on any face of the wall;
+    # a post 0.05 m off the beam's end; a block 0.2 m off the slab's side; a floor 3 m under all of them
+    parts = [box(0, 4, -0.2, 0, 0, 4), box(0.1, 0.4, 0, 3, 0, 4), box(-0.5, 0.8, 2, 2.2, 1.9, 2.1),
+             box(-0.6, -0.55, 0, 2.2, 1.9, 2.1), box(4.2, 5, -0.2, 1, 0, 4), box(-10, 10, -3.2, -3, -10, 10)]
+    mesh = trimesh.util.concatenate(parts)
+    part = play_space.mesh_parts(mesh)
+    assert [len(set(part[12 * i: 12 * i + 12])) for i in range(6)] == [1] * 6 and len(set(part)) == 6
+    keep = play_space.play_space_faces(mesh, np.array([[2.0, 0.0, 2.0]]), 0.4, 0.1)
+    assert keep.reshape(6, 12).all(axis=1).tolist() == [True, True, True, True, False, False]
+    assert not keep.reshape(6, 12)[4:].any()
+    # a point 0.3 m beyond the slab's side, over nothing within reach straight below (a node over a grating's slot):
+    # the slab is the face within reach
+    assert (play_space.play_space_faces(mesh, np.array([[2.0, 0.0, 4.3]]), 0.4, 0.1) == keep).all()
+    # a point with no face within reach keeps nothing, and the selector then reads the whole mesh
+    assert not play_space.play_space_faces(mesh, np.array([[2.0, 5.0, 2.0]]), 0.4, 0.1).any()
+    graph = nx.Graph()
+    graph.add_node(0, pos=(2.0, 5.0, 2.0))
+    assert entry_exit.play_space_piece(mesh, graph, AgentConfig(), entry_exit.Params()) is mesh
+
+
+def test_the_cut_graph_names_its_play_points(registry):
+    played = run(registry, room_beside_lower_ground(), "map_piece", play_points=[[4, 0, 3]])
+    assert played.graph.graph[play_space.PLAY_POINTS] == [[4.0, 0.0, 3.0]]
+    assert play_space.PLAY_POINTS not in run(registry, room_beside_lower_ground(), "map_piece").graph.graph
 
 
 def test_the_held_navmesh_is_the_graph_s_polygons_alone():

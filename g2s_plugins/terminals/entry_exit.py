@@ -138,7 +138,10 @@ builder was given ``play_points``); without a navmesh, the ``sampling``
 builder's graph's own faces (:mod:`._sampled_surface`), which stand for the
 navmesh polygons (normals, the main floor, the nodes an opening is joined
 to). Every step and rule is the same on both. The rays, the outer extent
-and ``leave_footprint`` read the whole mesh (``context.mesh``).
+and ``leave_footprint`` read the whole mesh (``context.mesh``), or, when the
+builder was given ``play_points``, the piece the play space stands on
+(:func:`play_space_piece`: its parts and those touching them), so a backdrop
+or a skybox apart from it hides none of its openings.
 
 Cost, for a navmesh of V vertices and B boundary edges, S samples (the
 boundary's length / ``sample_step``), k = ``fan_count`` and o openings:
@@ -172,7 +175,7 @@ from g2s_core.model import NavMesh, Opening, RunContext, Terminals, vec3
 from g2s_core.plugin import PluginParams, hookimpl
 from g2s_plugins._raycasting import UP, RayCaster, ground_across_crack
 from g2s_plugins._surface import on_navmesh
-from g2s_plugins.play_space import held_polygons
+from g2s_plugins.play_space import PLAY_POINTS, held_polygons, play_space_faces
 from g2s_plugins.terminals._boundary import BoundaryLoop, LoopSamples, boundary_loops, polygon_components, sample_loops
 from g2s_plugins.terminals._sampled_surface import SampledSurface, sampled_surface
 
@@ -206,6 +209,11 @@ _SNAP_SLACK = 0.01
 highest span around it, up to the climb above the floor, and single precision and a polygon tilted
 towards that corner then put the floor a fraction of a millimetre beyond the reach (0.80017 m for 0.8 m:
 ``curb_platform curb=0.35`` turned by 30 to 60 degrees); the smallest cell height allowed."""
+
+_TOUCH_STEPS = 2.0
+"""Search steps: with play points, parts of the mesh this close touch, one piece (:func:`play_space_piece`): the gap
+in a floor the probes step over (three probes in a row must find no floor), so parts the method already reads as one
+floor (unwelded tiles or planks laid a crack apart) stay one piece."""
 
 _MAX_PROBE_RAYS = 1_000_000
 """Probe rays cast per batch when looking for the surface's end (a level's whole boundary at once, samples x fan
@@ -1767,6 +1775,20 @@ def add_terminals(
     return Terminals(nodes=tuple(nodes), openings=detection.openings)
 
 
+def play_space_piece(mesh: trimesh.Trimesh, graph: nx.Graph, agent: AgentConfig, params: Params) -> trimesh.Trimesh:
+    """The faces of ``mesh`` that make the piece ``graph``'s play space is (:func:`g2s_plugins.play_space.play_space_faces`):
+    the parts with a face within the snap distance of one of its nodes and those touching them, parts a crack up to
+    :data:`_TOUCH_STEPS` search steps apart included; the rays, the outer extent and ``leave_footprint`` read them
+    alone, so a backdrop or a skybox apart from the piece hides none of its openings. ``mesh`` itself when no face
+    lies that near a node (none was measured: a node stands on the walkable surface). O((F + n) log F + pairs)."""
+    footing = np.array([pos for _, pos in graph.nodes(data="pos") if pos is not None], dtype=np.float64)
+    s = _settings(params, agent)
+    keep = play_space_faces(mesh, footing, s.snap, _TOUCH_STEPS * s.delta)
+    if not keep.any():
+        return mesh
+    return trimesh.Trimesh(np.asarray(mesh.vertices), np.asarray(mesh.faces)[keep], process=False)
+
+
 @hookimpl
 def g2s_select_terminals(graph: nx.Graph, params: Params, context: RunContext) -> Terminals:
     """Find the piece's entries/exits, add one terminal node per opening and return them.
@@ -1774,9 +1796,11 @@ def g2s_select_terminals(graph: nx.Graph, params: Params, context: RunContext) -
     On a navmesh when the run has one; else on the surface the ``sampling`` builder's graph covers
     (:mod:`._sampled_surface`).
     """
+    mesh = context.mesh if graph.graph.get(PLAY_POINTS) is None else play_space_piece(context.mesh, graph, context.agent,
+                                                                                      params)
     if context.navmesh is not None:
         held = held_navmesh(context.navmesh, graph)
-        detection = detect_openings(context.mesh, held, context.agent, params)
+        detection = detect_openings(mesh, held, context.agent, params)
         polygons = tuple(tuple(held.ids[list(polys)].tolist()) for polys in detection.polygons)
         return add_terminals(graph, replace(detection, polygons=polygons), context.navmesh, context.agent)
     stats = graph.graph.get("sampling_stats")
@@ -1787,5 +1811,5 @@ def g2s_select_terminals(graph: nx.Graph, params: Params, context: RunContext) -
         )
     surface = sampled_surface(graph, float(stats["spacing"]))
     search = sampled_edge_search(float(stats["spacing"]), float(stats["clearance"]))
-    detection = detect_openings(context.mesh, surface, context.agent, params, search)
+    detection = detect_openings(mesh, surface, context.agent, params, search)
     return add_terminals(graph, detection, surface, context.agent)
