@@ -16,9 +16,7 @@ given the value of its nearest structure node), the same with every polygon
 weighted by its area ("rho_a", :func:`g2s_plugins.evaluation.weighted_spearman`), of area-weighted
 betweenness on the structure and of the best values the structure's nodes
 could carry (the ceiling: the mean traffic of the polygons each stands
-for) against that traffic, rho and the ceiling within each connected area ("rho in", "ceil in": ranks taken
-within each area, so the order between areas, which an area apart gets right trivially, does not count;
-``rho_within``, ``rho_within_ceiling``), the same heat map and ceiling against the
+for) against that traffic, the same heat map and ceiling against the
 reference traffic on the level's navmesh graph ("rho nav", "ceil nav": the
 run's own graph on the navmesh route, the heat map carried from the samples
 to the polygons on the sampling route) and the share of the navmesh's area
@@ -34,9 +32,11 @@ for each run, the number of navmesh regions left overlapping themselves in plan
 :attr:`g2s_plugins.recast.NavMesh.repartitioned_tiles`) and of polygons whose
 detail heights Recast read from another storey, rebuilt ("detail",
 :attr:`g2s_plugins.recast.NavMesh.detail_redone_polygons`; all three "-" without a
-navmesh). ``--presets`` takes preset names or config files (a file extending a
-preset with other parameters; one whose graph builder names ``play_points`` is measured over its play space
-alone, "polys" counting its polygons); ``--levels`` also takes mesh files (any format
+navmesh) and, last (after the columns of earlier versions of the table, which keep their places), rho and the
+ceiling within each connected area ("rho in", "ceil in": ranks taken within each area, so the order between areas,
+which an area apart gets right trivially, does not count; ``rho_within``, ``rho_within_ceiling``). ``--presets``
+takes preset names or config files (a file extending a preset with other parameters; one whose graph builder names
+``play_points`` is measured over its play space alone, "polys" counting its polygons); ``--levels`` also takes mesh files (any format
 ``g2s run`` reads, Y-up metres), so the same table can be made for levels of
 one's own, and the level kinds of ``benchmarks/level_kinds.py`` (each built with ``seed=s``); ``--yaws`` runs every level also turned by those angles (degrees,
 about the vertical axis through the centre of its bounds), to check that the
@@ -141,7 +141,7 @@ def main(argv: list[str] | None = None, registry: Registry | None = None) -> Non
     plans = {Path(p).stem: pipeline.plan(parse_config(with_evaluators(load_raw_config(find_config(p)), ["traffic"]), p),
                                          registry, p) for p in args.presets}
     header = (f"{'level':<18} {'preset':<28} {'polys':>7} {'<=3m':>6} {'<=6m':>6} {'<=10m':>6} {'off>5m':>7} "
-              f"{'rho':>6} {'rho_a':>6} {'rho_abw':>7} {'ceiling':>7} {'rho in':>6} {'ceil in':>7} {'rho nav':>7} {'ceil nav':>8} {'nav out':>7} {'struct':>7} {'overlap':>7} {'redone':>6} {'detail':>6} {'cpu s':>7} {'total s':>8} {'eval s':>7}  stages (s)")
+              f"{'rho':>6} {'rho_a':>6} {'rho_abw':>7} {'ceiling':>7} {'rho nav':>7} {'ceil nav':>8} {'nav out':>7} {'struct':>7} {'overlap':>7} {'redone':>6} {'detail':>6} {'cpu s':>7} {'total s':>8} {'eval s':>7} {'rho in':>6} {'ceil in':>7}  stages (s)")
     print(header)
     for name, mesh in turned(levels(args.levels, args.seeds), args.yaws):
         for preset, plan in plans.items():
@@ -169,9 +169,9 @@ def main(argv: list[str] | None = None, registry: Registry | None = None) -> Non
             overlaps, redone, detail = ("-", "-", "-") if navmesh is None else (
                 len(navmesh.region_overlaps), len(navmesh.repartitioned_tiles), len(navmesh.detail_redone_polygons))
             print(f"{name:<18} {preset:<28} {polygons:>7} {within} {100 * q['traffic_off']:6.1f}% "
-                  f"{rho:6.3f} {rho_area:6.3f} {abw:7.3f} {ceiling:7.3f} {rho_in:6.3f} {ceiling_in:7.3f} {rho_nav:7.3f} {ceiling_nav:8.3f} {100 * nav_out:6.1f}% "
+                  f"{rho:6.3f} {rho_area:6.3f} {abw:7.3f} {ceiling:7.3f} {rho_nav:7.3f} {ceiling_nav:8.3f} {100 * nav_out:6.1f}% "
                   f"{100 * q['structure_share']:6.1f}% "
-                  f"{overlaps:>7} {redone:>6} {detail:>6} {cpu:7.2f} {sum(seconds.values()):8.2f} {evaluating:7.2f}  {stages}", flush=True)
+                  f"{overlaps:>7} {redone:>6} {detail:>6} {cpu:7.2f} {sum(seconds.values()):8.2f} {evaluating:7.2f} {rho_in:6.3f} {ceiling_in:7.3f}  {stages}", flush=True)
 
 
 if __name__ == "__main__":

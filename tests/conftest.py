@@ -32,9 +32,12 @@ def box(x0: float, x1: float, y0: float, y1: float, z0: float, z1: float) -> tri
 
 
 def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
-    """The ``wheel`` tests (over a minute each) first, the others in their order: pytest-xdist hands tests out in
-    this order, and as the last two collected they could both go to one worker at the end while the other waited
-    (5 December 2026, ``-n 2``: 87 s and 72 s, one after the other, on one worker)."""
+    """The ``wheel`` tests (over a minute each) first, the others in their order. pytest-xdist's default scheduling
+    (3.8) sends each worker a first chunk of consecutive tests (a quarter of its share), then further chunks of those
+    left as its queue runs low: both wheel tests go to the first worker at the start, one after the other, while the
+    other worker runs the next chunk, and the rest is shared out as the workers' queues empty. As the last two
+    collected they went to one worker at the end while the other waited (5 December 2026, ``-n 2``: 87 s and 72 s,
+    one after the other)."""
     items.sort(key=lambda item: item.get_closest_marker("wheel") is None)
 
 

@@ -52,6 +52,7 @@ from g2s_core.outputs import chosen_formats, result_files
 from g2s_core.registry import installed
 from g2s_core.result_folder import check_writable, stop_if_interrupted
 from g2s_core.stages import PIPELINE
+from g2s_plugins.outputs.writers import text_of_name
 
 if TYPE_CHECKING:
     import pandas as pd
@@ -493,7 +494,9 @@ def _written_since(path: Path, moment: float) -> bool:
 def _summary(rows: Iterable[dict[str, Any]]) -> pd.DataFrame:
     import pandas as pd
 
-    frame = pd.DataFrame(list(rows))
+    # a name that is not UTF-8 (a level's, a config's, in the paths and messages) as text a CSV and Parquet can hold
+    frame = pd.DataFrame([{key: text_of_name(value) if isinstance(value, str) else value for key, value in row.items()}
+                          for row in rows])
     extra = sorted(c for c in frame.columns if c not in COLUMNS)
     frame = frame.reindex(columns=[*COLUMNS, *extra])
     for column in frame.columns:
