@@ -239,9 +239,13 @@ class RayCaster:
         directions = np.asarray(directions, dtype=np.float64)
         if directions.ndim == 1:  # one direction for every ray: normalised once, as a row
             directions = directions[None, :]
-        else:
+        elif directions.shape != origins.shape:
             directions = np.broadcast_to(directions, origins.shape)
-        unit = np.broadcast_to(directions / np.linalg.norm(directions, axis=1, keepdims=True), origins.shape)
+        # numpy.linalg.norm's sum of squares along the rows, without its Python-level dispatch (a walk test's
+        # rays go through here in batches of about a thousand, where that dispatch is a tenth of the cost)
+        unit = directions / np.sqrt(np.add.reduce(directions * directions, axis=1, keepdims=True))
+        if unit.shape != origins.shape:
+            unit = np.broadcast_to(unit, origins.shape)
         local = self.frame.to_local(origins)
         face, distance, grazing = self._cast(local, unit)
         if np.any(grazing):
@@ -266,9 +270,11 @@ class RayCaster:
         if sum(sizes) > JOINT_CALL_MAX_RAYS:
             return [self.first_hits(origins, directions) for origins, directions in batches]
         origins = np.concatenate([np.asarray(o, dtype=np.float64).reshape(-1, 3) for o, _ in batches])
-        directions = np.concatenate([np.broadcast_to(d, (len(o), 3)) for o, d in batches])
-        hits = self.first_hits(origins, directions)
         ends = np.cumsum(sizes).tolist()
+        directions = np.empty(origins.shape)
+        for start, end, (_, direction) in zip([0, *ends[:-1]], ends, batches):
+            directions[start:end] = direction  # a row or one per ray
+        hits = self.first_hits(origins, directions)
         return [
             Hits(hits.face[a:b], hits.distance[a:b], hits.origins[a:b], hits.unit[a:b])
             for a, b in zip([0, *ends[:-1]], ends)
@@ -313,7 +319,7 @@ class RayCaster:
             return np.asarray(self.intersector.intersects_first(origins, np.ascontiguousarray(unit)), dtype=np.int64)
         one_direction = unit.strides[0] == 0
         directions = util.unitize(np.array(unit[:1] if one_direction else unit, dtype=np.float32))
-        face = self._embree.run(origins.astype(np.float32), np.broadcast_to(directions, unit.shape))
+        face = self._embree.run(origins.astype(np.float32), np.broadcast_to(directions, unit.shape) if one_direction else directions)
         return np.asarray(face, dtype=np.int64)
 
     def _cast(self, origins: np.ndarray, unit: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -932,12 +938,13 @@ def walk_segments(
     distance = np.where(good, down.distance, 0.0)
     # A probe over a crack stands on the ground one crack step to both sides of it, along x, else along z.
     rows = np.flatnonzero(~good)
-    crack, beside = ground_across_crack(
-        caster, lifted[rows], -UP, crack_sides(agent), reach,
-        lambda faces: caster.walkable_faces(faces, agent.max_slope_deg),
-    )
-    good[rows[crack]] = True
-    distance[rows[crack]] = beside[crack]
+    if len(rows):
+        crack, beside = ground_across_crack(
+            caster, lifted[rows], -UP, crack_sides(agent), reach,
+            lambda faces: caster.walkable_faces(faces, agent.max_slope_deg),
+        )
+        good[rows[crack]] = True
+        distance[rows[crack]] = beside[crack]
     ground_y = np.where(good, line[:, 1] + lift - distance, line[:, 1])
     above = agent.height - (line[:, 1] + lift - ground_y)
     good[good] = has_room(up.distance[good], above[good])

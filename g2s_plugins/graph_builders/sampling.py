@@ -89,7 +89,7 @@ from scipy.sparse import csgraph
 from scipy.spatial import cKDTree
 
 from g2s_core.errors import G2SError
-from g2s_core.model import RunContext
+from g2s_core.model import RunContext, graph_of
 from g2s_core.plugin import hookimpl
 from g2s_plugins._raycasting import (
     COMPASS,
@@ -784,16 +784,18 @@ def build_sampled_graph(
     pos = [tuple(p) for p in samples.tolist()]
     nrm = [tuple(v) for v in sample_normals.tolist()]
     area_list = areas.astype(np.float64).tolist()
-    graph.add_nodes_from(
-        (i, {"pos": pos[i], "normal": nrm[i], "area": area_list[i], "on_navmesh": True, "polygon": -1})
-        for i in range(len(pos))
+    # the graph add_nodes_from and add_edges_from make (the edges are unique), written straight into its dicts
+    graph_of(
+        graph,
+        {i: {"pos": p, "normal": v, "area": a, "on_navmesh": True, "polygon": -1}
+         for i, (p, v, a) in enumerate(zip(pos, nrm, area_list))},
+        zip(*edges.T.tolist(), [{"weight": w} for w in weights.tolist()]),
     )
-    graph.add_edges_from((a, b, {"weight": w}) for (a, b), w in zip(edges.tolist(), weights.tolist()))
     lap("graph")
     stats.update(
         samples=int(len(small)),
         nodes=graph.number_of_nodes(),
-        edges=graph.number_of_edges(),
+        edges=int(len(edges)),
         regions_dropped=dropped,
         rays=caster.rays_cast,
     )
