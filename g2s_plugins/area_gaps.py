@@ -46,9 +46,9 @@ import trimesh
 from scipy.spatial import cKDTree
 
 from g2s_core.config import AgentConfig
-from g2s_core.disconnected import xyz
+from g2s_core.disconnected import area_summary, xyz
 from g2s_core.model import NavMesh
-from g2s_plugins._raycasting import AgentShape, RayCaster
+from g2s_plugins._raycasting import COMPASS, EPSILON, UP, RayCaster, hit_from_behind
 from g2s_plugins.play_space import _node_polygons
 
 Rim = Callable[[nx.Graph, Sequence[int]], tuple[np.ndarray, np.ndarray]]
@@ -129,26 +129,43 @@ def areas_cause(graph: nx.Graph, largest: Sequence[int], others: Sequence[Sequen
     """The likely cause between ``largest`` and the nearest of ``others`` (node lists of areas of ``graph``) and
     where, e.g. ``a step of about 0.6 m, ..., e.g. between (x, y, z m) and (x, y, z m)``.
 
-    With ``mesh``, a nearest area on the largest one's floor whose closest place lies inside a closed solid of
-    ``mesh`` (:func:`g2s_plugins.graph_builders.sampling.inside_closed_solids`) is named as such: Recast keeps
-    the floor inside a closed box taller than the agent (a collision hull exported with the level).
+    With ``mesh``, a nearest area whose closest place or middle (:func:`g2s_core.disconnected.area_summary`) is
+    shut inside a closed solid of ``mesh`` (:func:`shut_in`) is named as such: Recast keeps the floor inside a
+    closed box with head room, and either route a render floor inside a collision hull exported with the level.
     """
-    gap, step, here, there = min((closest_step_for(graph, largest, other, rim, agent) for other in others),
-                                 key=lambda pair: math.hypot(pair[0], pair[1]))
+    (gap, step, here, there), nearest = min(((closest_step_for(graph, largest, other, rim, agent), other) for other in others),
+                                            key=lambda pair: math.hypot(pair[0][0], pair[0][1]))
     cause = likely_cause(step, gap, agent)
-    if mesh is not None and step <= float(agent.max_climb):
-        from g2s_plugins.graph_builders.sampling import inside_closed_solids  # that builder imports this module
-        if inside_closed_solids(RayCaster(mesh), there[None], AgentShape.from_config(agent))[0]:
-            cause = ("a floor shut inside a closed solid (a box or collision hull exported with the level, "
-                     f"whose sides stand between their ground, about {gap:.1f} m apart)")
+    if mesh is not None:
+        # its closest place and its middle: a render post or column inside the solid may face the rays from one
+        if shut_in(RayCaster(mesh), np.stack([there, area_summary(graph, nearest)[1]]), agent).any():
+            rise = float(there[1] - here[1])
+            level = "at the same height" if round(abs(rise), 1) == 0 else f"{abs(rise):.1f} m {'higher' if rise > 0 else 'lower'}"
+            cause = (f"a floor shut inside a closed solid (a box or collision hull exported with the level), {level}, "
+                     f"its ground about {gap:.1f} m from the other's")
     return f"{cause}, e.g. between ({xyz(here)}) and ({xyz(there)})"
+
+
+def shut_in(caster: RayCaster, points: np.ndarray, agent: AgentConfig) -> np.ndarray:
+    """(n,) bool: each ground point (n,3) lies inside a closed solid of the caster's mesh: of the first faces
+    straight up from it and along +x, +z, -x and -z from half the agent's height over it, at most one is met from
+    the front (the rays of :func:`g2s_plugins.graph_builders.sampling.inside_closed_solids`, which needs all five).
+
+    A render object inside a collision hull faces one of them (the bandstand's roof over its deck, the fountain's
+    column beside its basin, benchmarks/level_kinds.py ``collision_hulls``); a place meant to be walked sees its
+    room's walls and ceiling from the front. Five rays a point.
+    """
+    points = np.asarray(points, dtype=np.float64).reshape(-1, 3)
+    hits = [caster.first_hits(points + EPSILON * UP, UP)]
+    hits += [caster.first_hits(points + 0.5 * float(agent.height) * UP, direction) for direction in COMPASS[::2]]
+    return sum(hit_from_behind(caster, hit).astype(int) for hit in hits) >= len(hits) - 1
 
 
 def likely_cause_of(agent: AgentConfig, navmesh: NavMesh | None = None, clearance: float = 0.0,
                     mesh: trimesh.Trimesh | None = None) -> Callable[[nx.Graph, Sequence[int], Sequence[Sequence[int]]], str]:
     """:func:`areas_cause` over a graph builder's ground: ``navmesh``'s polygons, eroded by Recast's
     ``ceil(radius / cell_size)`` cells, or samples kept ``clearance`` metres from walls and ledges; ``mesh`` to
-    name floors shut inside closed solids (the sampling builder drops those itself)."""
+    name floors shut inside closed solids."""
     cell = np.float32(navmesh.settings["cell_size"]) if navmesh is not None else None
     erosion = clearance if cell is None else float(np.ceil(np.float32(agent.radius) / cell) * cell)  # as Recast's float
     return partial(areas_cause, agent=agent, rim=partial(ground_rim, navmesh=navmesh, erosion=erosion), mesh=mesh)

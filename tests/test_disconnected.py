@@ -82,8 +82,8 @@ def test_the_floor_inside_a_closed_box_is_named_as_such():
     mesh = trimesh.util.concatenate([floor, box])
     navmesh, graph = navmesh_of([(0.5, 9.5, 0.5, 29.5, 0.0), (10.5, 15.5, 10.5, 15.5, 0.0)])
     message = disconnected_warning(graph, areas(graph), 2, likely_cause_of(AgentConfig(), navmesh, mesh=mesh))
-    assert "Likely cause: a floor shut inside a closed solid (a box or collision hull exported with the level, whose " \
-           "sides stand between their ground, about 0.0 m apart), e.g. between (9.5, 0.0, " in message
+    assert "Likely cause: a floor shut inside a closed solid (a box or collision hull exported with the level), at the " \
+           "same height, its ground about 0.0 m from the other's, e.g. between (9.5, 0.0, " in message
     top, graph = navmesh_of([(0.5, 9.5, 0.5, 29.5, 0.0), (10.5, 15.5, 10.5, 15.5, 3.0)])  # the box's top instead
     message = disconnected_warning(graph, areas(graph), 2, likely_cause_of(AgentConfig(), top, mesh=mesh))
     assert "Likely cause: separate floors (3.0 m apart)" in message
