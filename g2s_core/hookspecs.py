@@ -28,7 +28,9 @@ def g2s_build_graph(mesh: trimesh.Trimesh, params: PluginParams, context: RunCon
 
     ``mesh`` is in metres with Y up. Return a graph that follows the
     conventions of :mod:`g2s_core.model`. A builder that makes a navigation
-    mesh stores it in ``context.navmesh`` (a :class:`~g2s_core.model.NavMesh`).
+    mesh stores it in ``context.navmesh`` (a :class:`~g2s_core.model.NavMesh`);
+    one that can tell what parts the areas of its surface sets
+    ``context.likely_cause`` for the disconnected-areas warning.
     """
 
 

@@ -252,6 +252,10 @@ class RunContext:
         navmesh: the :class:`NavMesh` the graph builder made, or ``None`` when
             the graph was built without one.
         graph: the initial surface graph, once stage 1 has run.
+        likely_cause: set by the graph builder: ``likely_cause(graph, largest area, next areas)`` (node lists)
+            names what most likely parts the largest area from the nearest of the next ones on its surface, and
+            where, for the disconnected-areas warning (:mod:`g2s_core.disconnected`); ``None``: the warning
+            names no cause.
         warnings: messages for the user collected during the run.
         progress: the run's progress callback, which :meth:`warn` also tells each warning as a
             :class:`RaisedWarning`, before a costly step rather than after the run.
@@ -262,6 +266,7 @@ class RunContext:
     centre: np.ndarray
     navmesh: NavMesh | None = None
     graph: nx.Graph | None = None
+    likely_cause: Callable[[nx.Graph, Sequence[int], Sequence[Sequence[int]]], str] | None = None
     warnings: list[str] = field(default_factory=list)
     progress: Callable[[str], None] = lambda _message: None
 

@@ -250,7 +250,7 @@ def steiner_forest(
         groups.setdefault(index, []).append(terminal)
     areas = {index: ids[label == index].tolist() for index in groups} if len(groups) > 1 else {}
     if areas:
-        context.warn(disconnected_warning(graph, areas, sum(map(len, groups.values())), context.agent))
+        context.warn(disconnected_warning(graph, areas, sum(map(len, groups.values())), context.likely_cause))
     nodes, edges = [], []
     for index, group in sorted(groups.items()):
         # a subgraph view is slow to iterate: with a single group of terminals

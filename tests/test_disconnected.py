@@ -1,12 +1,20 @@
-"""The disconnected-areas warning on hand-made graphs whose separation is known."""
+"""The disconnected-areas warning on hand-made graphs and navmeshes whose separation is known."""
 
 from __future__ import annotations
 
+from types import SimpleNamespace
+
 import networkx as nx
+import numpy as np
 import pytest
+import trimesh
 
 from g2s_core.config import AgentConfig
 from g2s_core.disconnected import LISTED_AREAS, area_summary, disconnected_warning
+from g2s_plugins.area_gaps import likely_cause_of
+
+SAMPLED = likely_cause_of(AgentConfig())
+"""The cause over nodes that each stand for a square of their area, none eroded."""
 
 
 def slab(graph: nx.Graph, x0: float, y: float, cells: int, first: int) -> list[int]:
@@ -22,19 +30,63 @@ def areas(graph: nx.Graph) -> dict[int, list[int]]:
     return {i: sorted(c) for i, c in enumerate(nx.connected_components(graph))}
 
 
+def navmesh_of(rectangles: list[tuple[float, float, float, float, float]]) -> tuple[SimpleNamespace, nx.Graph]:
+    """A navmesh of one polygon per rectangle (x0, x1, z0, z1, y; none joined, cells of 0.25 m) and its graph."""
+    vertices = np.array([[x, y, z] for x0, x1, z0, z1, y in rectangles for x, z in ((x0, z0), (x0, z1), (x1, z1), (x1, z0))])
+    polygons = np.arange(len(vertices)).reshape(-1, 4)
+    navmesh = SimpleNamespace(vertices=vertices, polygons=polygons, neighbours=np.full(polygons.shape, -1),
+                              settings={"cell_size": 0.25})
+    graph = nx.Graph()
+    for i, (x0, x1, z0, z1, y) in enumerate(rectangles):
+        graph.add_node(i, pos=((x0 + x1) / 2, y, (z0 + z1) / 2), area=(x1 - x0) * (z1 - z0), polygon=i)
+    return navmesh, graph
+
+
 @pytest.mark.parametrize("rise, cause", [
     (0.6, "a step of about 0.6 m, higher than agent.max_climb (0.4 m)"),  # a step the agent cannot climb
     (4.0, "separate floors (4.0 m apart)"),                                 # a floor above the other
-    (0.0, "a gap or passage too narrow for the agent (agent.radius 0.5 m), or a wall, between places about 2.0 m apart"),
+    (0.0, "a gap or passage too narrow for the agent (agent.radius 0.5 m), or a wall, where their ground lies about 1.0 m apart"),
 ])
 def test_the_likely_cause_follows_the_step_between_the_closest_areas(rise, cause):
     graph = nx.Graph()
     slab(graph, 0.0, 0.0, 10, 0)
     slab(graph, 11.0 if rise == 0.0 else 10.0, rise, 4, 100)
-    message = disconnected_warning(graph, areas(graph), 5, AgentConfig())
+    message = disconnected_warning(graph, areas(graph), 5, SAMPLED)
     assert message.startswith("5 terminals lie in 2 disconnected areas")
     assert "Largest areas: 10 m² near (4.5, 0.0, 0.5 m); 4 m²" in message
     assert cause in message
+
+
+def test_a_jump_gap_reads_the_gap_between_the_platforms_edges():
+    """Platforms 10 m long 0.8 m apart, each eroded by the agent's 0.5 m (two cells) as Recast erodes: the navmesh's
+    edges are 1.8 m apart, its polygons' centres 10.8 m (what the warning read before)."""
+    navmesh, graph = navmesh_of([(0.5, 9.5, 0.5, 5.5, 8.0), (11.3, 20.3, 0.5, 5.5, 8.0)])
+    message = disconnected_warning(graph, areas(graph), 2, likely_cause_of(AgentConfig(), navmesh))
+    assert "or a wall, where their ground lies about 0.8 m apart, e.g. between (9.5, 8.0, " in message
+
+
+def test_a_narrow_door_reads_the_wall_between_the_rooms():
+    """Two rooms 9 m deep on either side of a wall 0.2 m thick whose door the agent does not fit: the ground of
+    the rooms meets across the wall's thickness, not the 10.3 m between the rooms' middles."""
+    navmesh, graph = navmesh_of([(0.5, 9.4, 0.5, 9.5, 0.0), (10.6, 19.5, 0.5, 9.5, 0.0)])
+    message = disconnected_warning(graph, areas(graph), 2, likely_cause_of(AgentConfig(), navmesh))
+    assert "a gap or passage too narrow for the agent (agent.radius 0.5 m), or a wall, where their ground lies " \
+           "about 0.2 m apart, e.g. between (9.4, 0.0, " in message
+
+
+def test_the_floor_inside_a_closed_box_is_named_as_such():
+    """A box 6 m square and 3 m high standing closed on a floor: Recast keeps the floor inside it (head room 3 m),
+    an area of its own 1 m of eroded ground from the floor outside."""
+    floor = trimesh.creation.box((30, 0.3, 30), trimesh.transformations.translation_matrix((15, -0.15, 15)))
+    box = trimesh.creation.box((6, 3, 6), trimesh.transformations.translation_matrix((13, 1.5, 13)))
+    mesh = trimesh.util.concatenate([floor, box])
+    navmesh, graph = navmesh_of([(0.5, 9.5, 0.5, 29.5, 0.0), (10.5, 15.5, 10.5, 15.5, 0.0)])
+    message = disconnected_warning(graph, areas(graph), 2, likely_cause_of(AgentConfig(), navmesh, mesh=mesh))
+    assert "Likely cause: a floor shut inside a closed solid (a box or collision hull exported with the level), at the " \
+           "same height, its ground about 0.0 m from the other's, e.g. between (9.5, 0.0, " in message
+    top, graph = navmesh_of([(0.5, 9.5, 0.5, 29.5, 0.0), (10.5, 15.5, 10.5, 15.5, 3.0)])  # the box's top instead
+    message = disconnected_warning(graph, areas(graph), 2, likely_cause_of(AgentConfig(), top, mesh=mesh))
+    assert "Likely cause: separate floors (3.0 m apart)" in message
 
 
 def test_a_room_shut_above_a_deck_is_named_by_its_door_not_the_storeys():
@@ -46,8 +98,8 @@ def test_a_room_shut_above_a_deck_is_named_by_its_door_not_the_storeys():
     office = slab(graph, 0.0, 3.5, 10, 100)
     graph.add_edge(deck[0], office[0])  # the ramp
     slab(graph, 14.0, 3.5, 4, 200)
-    message = disconnected_warning(graph, areas(graph), 5, AgentConfig())
-    assert "a gap or passage too narrow for the agent (agent.radius 0.5 m), or a wall, between places about 5.0 m apart" in message
+    message = disconnected_warning(graph, areas(graph), 5, SAMPLED)
+    assert "a gap or passage too narrow for the agent (agent.radius 0.5 m), or a wall, where their ground lies about 4.0 m apart" in message
     assert "between (9.5, 3.5, 0.5 m) and (14.5, 3.5, 0.5 m)" in message
 
 
@@ -55,7 +107,7 @@ def test_hundreds_of_areas_give_one_short_line():
     graph = nx.Graph()
     for index in range(600):
         slab(graph, 3.0 * index, 0.0, 1 + index % 3, 10 * index)
-    message = disconnected_warning(graph, areas(graph), 600, AgentConfig())
+    message = disconnected_warning(graph, areas(graph), 600, SAMPLED)
     assert len(message) < 500 and "\n" not in message
     assert message.count("m² near") == LISTED_AREAS
     assert f"; {600 - LISTED_AREAS} more with" in message
@@ -80,7 +132,7 @@ def test_places_near_zero_print_without_a_minus_sign():
     graph = nx.Graph()
     slab(graph, -0.54, -0.04, 1, 0)  # its one node at (-0.04, -0.04, 0.5)
     slab(graph, 5.0, 0.0, 2, 100)
-    message = disconnected_warning(graph, areas(graph), 2, AgentConfig())
+    message = disconnected_warning(graph, areas(graph), 2, SAMPLED)
     assert "-0.0" not in message and "(0.0, 0.0, 0.5 m)" in message
 
 
@@ -91,6 +143,6 @@ def test_a_rise_far_from_the_areas_edges_is_no_step():
     graph = nx.Graph()
     slab(graph, 0.0, 0.0, 10, 0)
     slab(graph, 28.0, 0.6, 4, 100)
-    message = disconnected_warning(graph, areas(graph), 5, AgentConfig())
-    assert "Likely cause: a gap or passage too narrow for the agent (agent.radius 0.5 m), or a wall, between places about " \
-           "19.0 m apart, e.g. between (9.5, 0.0, 0.5 m) and (28.5, 0.6, 0.5 m)." in message
+    message = disconnected_warning(graph, areas(graph), 5, SAMPLED)
+    assert "Likely cause: a gap or passage too narrow for the agent (agent.radius 0.5 m), or a wall, where their ground " \
+           "lies about 18.0 m apart, e.g. between (9.5, 0.0, 0.5 m) and (28.5, 0.6, 0.5 m)." in message

@@ -60,6 +60,7 @@ from g2s_core.errors import G2SError
 from g2s_core.model import graph_of
 from g2s_core.plugin import hookimpl
 from g2s_plugins._surface import MAX_SURFACE_GAP
+from g2s_plugins.area_gaps import likely_cause_of
 from g2s_plugins.play_space import PlaySpaceParams, cut_to_play_space
 from g2s_plugins.recast import NavMesh, RecastParams, SettingsError, build_navmesh
 from g2s_plugins.recast.settings import resolve_settings
@@ -379,7 +380,7 @@ def g2s_build_graph(mesh, params, context):
                 f"graph.params: {exc}; try another cell_size or tile_size (see docs/navmesh.md)"
             ) from exc
         raise no_walkable_surface(mesh, context.agent, no_polygons_reason(str(exc), context.agent, params)) from exc
-    context.navmesh = navmesh
+    context.navmesh, context.likely_cause = navmesh, likely_cause_of(context.agent, navmesh, mesh=mesh)
     if len(navmesh.region_overlaps):
         context.warn(overlapping_regions_warning(navmesh.region_overlaps, params.partition))
     graph = navmesh_graph(navmesh, context.agent, params.max_edge_gap)

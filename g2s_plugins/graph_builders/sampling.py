@@ -110,6 +110,7 @@ from g2s_plugins._raycasting import (
     ray_margin,
     walk_segments,
 )
+from g2s_plugins.area_gaps import likely_cause_of
 from g2s_plugins.play_space import PlaySpaceParams, cut_to_play_space
 from g2s_plugins.walkable_check import check_walkable_surface, no_walkable_surface
 
@@ -816,4 +817,5 @@ def g2s_build_graph(mesh: trimesh.Trimesh, params: Params, context: RunContext) 
     if graph.number_of_nodes() == 0:
         raise no_walkable_surface(mesh, context.agent, "no sample where it fits")
     check_walkable_surface(graph, mesh, context)
+    context.likely_cause = likely_cause_of(context.agent, clearance=graph.graph["sampling_stats"]["clearance"], mesh=mesh)
     return cut_to_play_space(graph, params.play_points, context)
