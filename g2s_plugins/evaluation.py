@@ -433,27 +433,31 @@ def weighted_spearman(x: np.ndarray, y: np.ndarray, weight: np.ndarray) -> float
 
 def within_area_rho(heat: np.ndarray, reference: np.ndarray, area: np.ndarray) -> float:
     """``rho_within`` (see the module docs): the Pearson correlation of (n,) ``heat`` and ``reference`` turned into
-    percentile ranks within each connected area of (n,) labels ``area``, over the entries where ``heat`` is finite
-    (NaN: fewer than three, or either rank constant within every area).
+    percentile ranks within each connected area of (n,) labels ``area`` (:func:`within_area_percentiles`), over the
+    entries where ``heat`` is finite (NaN: fewer than three, or either rank constant within every area).
 
-    A rank is the mid-rank of :func:`weighted_spearman` (equal weights) among the entries of its area, over their
-    count: (rank - 0.5) / count, whose mean is 1/2 in every area, so the pooled correlation is that of deviations
-    from each area's own mean (the pooled within-group correlation of the areas' ranks). O(n log n), one sort per
-    area.
+    A rank's mean is 50 in every area, so the pooled correlation is that of deviations from each area's own mean
+    (the pooled within-group correlation of the areas' ranks). O(n log n), one sort per area.
     """
     ok = np.isfinite(heat)
     if ok.sum() < 3:
         return float("nan")
-    labels = area[ok]
+    heat_ranks, reference_ranks = (within_area_percentiles(values, area, ok)[ok] for values in (heat, reference))
+    return _pearson(heat_ranks, reference_ranks, np.ones(int(ok.sum())))
+
+
+def within_area_percentiles(values: np.ndarray, area: np.ndarray, counted: np.ndarray) -> np.ndarray:
+    """(n,) each ``counted`` entry of (n,) ``values``' percentile rank, 0-100, among the counted entries of its area
+    (equal labels of (n,) ``area``): ``100 (rank - 0.5) / count``, ties averaged (the mid-rank of
+    :func:`weighted_spearman` with equal weights); NaN where not ``counted``. The ranks :func:`within_area_rho`
+    correlates, on :func:`~g2s_plugins.traffic.percentile`'s scale. O(n log n), one sort per area."""
+    rows = np.flatnonzero(counted)
+    labels = area[rows]
     order = np.argsort(labels, kind="stable")
-    groups = np.split(order, np.flatnonzero(np.diff(labels[order])) + 1)
-    ranks = []
-    for values in (heat[ok], reference[ok]):
-        within = np.empty(len(values))
-        for rows in groups:
-            within[rows] = _weighted_midranks(values[rows], np.ones(len(rows))) / len(rows)
-        ranks.append(within)
-    return _pearson(ranks[0], ranks[1], np.ones(len(labels)))
+    percentiles = np.full(len(values), np.nan)
+    for group in np.split(rows[order], np.flatnonzero(np.diff(labels[order])) + 1):
+        percentiles[group] = 100.0 * _weighted_midranks(values[group], np.ones(len(group))) / len(group)
+    return percentiles
 
 
 def _pearson(x: np.ndarray, y: np.ndarray, weight: np.ndarray) -> float:

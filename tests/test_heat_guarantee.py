@@ -92,6 +92,44 @@ def test_within_areas_the_islands_lend_the_corridor_no_rho():
         0.9353, abs=1e-4)
 
 
+def two_corridors() -> nx.Graph:
+    """Corridors of 7 and 5 polygons of 1 m², 1 m apart, 5 m from each other: two connected areas, rows 0-6 and
+    7-11."""
+    graph = nx.disjoint_union(corridor(7), corridor(5))
+    for i in range(7, 12):
+        graph.nodes[i]["pos"] = (float(i - 7), 0.0, 5.0)
+    return graph
+
+
+def test_within_areas_the_node_restored_is_the_one_its_area_ranks_worst():
+    # flow 2 i (n - 1 - i) in each corridor: 0 10 16 18 16 10 0 and 0 6 8 6 0. Kept {0, 3, 6} and {7, 8, 11}: node
+    # 1 has the heat of 0 (mean of 0 and 1), node 10 that of 11. Level-wide the short corridor's flows all sit low,
+    # so its errors look small: 1 is 25 points off its heat (66.7 against 41.7), 10 only 12.5 (41.7 against 29.2),
+    # and 1 comes back. Ranked within each area (as rho within areas reads them) 1 is 14.3 points off (42.9 against
+    # the rank 28.6 of its heat among its corridor's), 10 is 20 off (60 against 40), and 10 comes back: it lifts
+    # rho within areas from 0.8526 to 0.9000, the most any one node does, where 1 lifts it to 0.8756
+    graph = two_corridors()
+    areas = evaluation.area_labels(graph)
+    forest = nx.DiGraph([(i, i + 1) for i in range(11) if i != 6])
+    kept = {0, 3, 6, 7, 8, 11}
+    flow = traffic.walking_flow(graph)
+    heat = evaluation.placement_heat(graph, kept, flow)
+    reached = np.isfinite(heat)
+    assert evaluation.within_area_percentiles(flow, areas, reached) == pytest.approx(
+        [14.29, 42.86, 71.43, 92.86, 71.43, 42.86, 14.29, 20, 60, 90, 60, 20], abs=0.01)
+    assert evaluation.within_area_percentiles(heat, areas, reached) == pytest.approx(
+        [28.57, 28.57, 78.57, 78.57, 78.57, 28.57, 28.57, 10, 80, 80, 40, 40], abs=0.01)
+    context = RunContext(mesh=None, agent=AgentConfig(), centre=np.zeros(3), graph=graph)
+    level = heat_guarantee.restored(graph, forest, forest.subgraph(kept), 0.95, context)
+    within = heat_guarantee.restored(graph, forest, forest.subgraph(kept), 0.95, context, within_areas=True)
+    assert level == kept | {1} and within == kept | {10}
+    rho_within = {node: evaluation.within_area_rho(evaluation.placement_heat(graph, kept | {node}, flow), flow, areas)
+                  for node in set(graph) - kept}
+    assert evaluation.within_area_rho(heat, flow, areas) == pytest.approx(0.8526, abs=1e-4)
+    assert rho_within[10] == pytest.approx(0.9, abs=1e-4) and rho_within[1] == pytest.approx(0.8756, abs=1e-4)
+    assert max(rho_within, key=rho_within.get) == 10
+
+
 def test_a_structure_that_holds_is_kept_as_it_is():
     graph = corridor()
     plain, _ = simplified(graph, CollapseParams(max_traffic_step=60.0))
