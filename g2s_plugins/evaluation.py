@@ -255,18 +255,21 @@ def heat_map(graph: nx.Graph, structure_nodes: Iterable[Hashable], values: Mappi
 
 
 def placement_heat(graph: nx.Graph, structure_nodes: Iterable[Hashable], flow: np.ndarray,
-                   nearest: np.ndarray | None = None) -> np.ndarray:
+                   nearest: np.ndarray | None = None, areas: np.ndarray | None = None) -> np.ndarray:
     """(n,) the heat map whose structure nodes carry the mean percentile of ``flow`` over the nodes they stand for.
 
     Each node of ``graph`` gets its nearest structure node's mean of
     :func:`~g2s_plugins.traffic.percentile` of the (n,) ``flow``: the
     ``flow`` analyzer's heat map with ``aggregate: percentile`` when ``flow``
     is its walking flow, and ``rho_ceiling``'s when ``flow`` is the reference.
+    With (n,) ``areas`` (:func:`area_labels`) the percentiles are those within each connected area
+    (:func:`within_area_percentiles`; a structure node stands only for nodes of its own area).
     """
     structure = sorted(structure_nodes)
     if nearest is None:  # one search for both: the nodes each structure node stands for are those it is nearest to
         nearest = _nearest_rows(graph, structure)
-    heat = traffic.gather(graph, structure, traffic.percentile(flow), mean=True, nearest=nearest)
+    percentiles = traffic.percentile(flow) if areas is None else within_area_percentiles(flow, areas)
+    heat = traffic.gather(graph, structure, percentiles, mean=True, nearest=nearest)
     return heat_map(graph, structure, heat, nearest)
 
 
@@ -442,21 +445,18 @@ def within_area_rho(heat: np.ndarray, reference: np.ndarray, area: np.ndarray) -
     ok = np.isfinite(heat)
     if ok.sum() < 3:
         return float("nan")
-    heat_ranks, reference_ranks = (within_area_percentiles(values, area, ok)[ok] for values in (heat, reference))
+    heat_ranks, reference_ranks = (within_area_percentiles(values[ok], area[ok]) for values in (heat, reference))
     return _pearson(heat_ranks, reference_ranks, np.ones(int(ok.sum())))
 
 
-def within_area_percentiles(values: np.ndarray, area: np.ndarray, counted: np.ndarray) -> np.ndarray:
-    """(n,) each ``counted`` entry of (n,) ``values``' percentile rank, 0-100, among the counted entries of its area
-    (equal labels of (n,) ``area``): ``100 (rank - 0.5) / count``, ties averaged (the mid-rank of
-    :func:`weighted_spearman` with equal weights); NaN where not ``counted``. The ranks :func:`within_area_rho`
-    correlates, on :func:`~g2s_plugins.traffic.percentile`'s scale. O(n log n), one sort per area."""
-    rows = np.flatnonzero(counted)
-    labels = area[rows]
-    order = np.argsort(labels, kind="stable")
-    percentiles = np.full(len(values), np.nan)
-    for group in np.split(rows[order], np.flatnonzero(np.diff(labels[order])) + 1):
-        percentiles[group] = 100.0 * _weighted_midranks(values[group], np.ones(len(group))) / len(group)
+def within_area_percentiles(values: np.ndarray, area: np.ndarray) -> np.ndarray:
+    """(n,) each of (n,) ``values``' :func:`~g2s_plugins.traffic.percentile` (0-100, ``100 (rank - 0.5) / count``,
+    ties within rounding averaged) among the entries of its area (equal labels of (n,) ``area``): on a graph of one
+    area, ``traffic.percentile(values)`` bit for bit. O(n log n), one sort per area."""
+    order = np.argsort(area, kind="stable")
+    percentiles = np.empty(len(values))
+    for group in np.split(order, np.flatnonzero(np.diff(area[order])) + 1):
+        percentiles[group] = traffic.percentile(values[group])
     return percentiles
 
 

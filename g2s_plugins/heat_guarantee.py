@@ -44,9 +44,9 @@ measured. While rho is under the target, the removed nodes whose own
 polygon's percentile differs most from the heat the map gives it (by more
 than :data:`FLOOR` points; both on the heat map's sampled scale, so the
 exact flow decides when to stop, not which nodes come back, and a structure
-changes only where that decision does; with ``heat_rho_within_areas`` both
-ranked within the node's connected area, as that rho ranks them) are
-restored, :data:`RESTORED_SHARE`
+changes only where that decision does; with ``heat_rho_within_areas`` the
+percentiles within the node's connected area and the heat drawn from them,
+the same on a graph of one area) are restored, :data:`RESTORED_SHARE`
 of the forest's nodes at a time: the forest is simplified again by the same
 predicate, which now keeps them and every node the last structure kept
 (:func:`keeping`), so each round's structure holds the last one's. A
@@ -152,11 +152,12 @@ def restored(
     x the forest's nodes) of them, by decreasing difference then node id.
 
     ``within_areas``: rho is :func:`~g2s_plugins.evaluation.within_area_rho` over the connected areas of ``graph``
-    instead (docs/analysis_quality.md, "The heat map within each connected area"), and the percentiles a removed
-    node's difference compares are those it reads, :func:`~g2s_plugins.evaluation.within_area_percentiles` of the
-    flow and of the heat among the nodes of its area that reach the structure (a heat right across areas and wrong
-    within one is what that rho counts). Above the exact size the margin and the confirmation are those measured
-    for the level-wide rho.
+    instead (docs/analysis_quality.md, "The heat map within each connected area"), and a removed node's
+    difference is between its flow's percentile within its area (:func:`~g2s_plugins.evaluation.within_area_percentiles`,
+    the scale that rho ranks the flow on) and the heat the map gives it when drawn from those percentiles: a heat
+    right across areas and wrong within one is what that rho counts. On a graph of one area both are the level-wide
+    ones, so the same nodes come back. Above the exact size the margin and the confirmation are those measured for
+    the level-wide rho.
     """
     arrays = traffic.surface_arrays(graph)
     order = traffic.sampling_order(graph, sampling)
@@ -179,8 +180,9 @@ def restored(
     removed = np.array(sorted(node for node in forest if node not in simplified), dtype=np.int64)
     if areas is None:
         own, given = traffic.percentile(shown), heat
-    else:  # the ranks the measure reads: within each area, among the nodes that reach the structure
-        own, given = (evaluation.within_area_percentiles(values, areas, np.isfinite(heat)) for values in (shown, heat))
+    else:  # the flow's percentiles within each area, as rho within areas ranks it, and the heat drawn from them
+        own, given = (evaluation.within_area_percentiles(shown, areas),
+                      evaluation.placement_heat(graph, simplified, shown, areas=areas))
     difference = np.abs(own - given)[arrays.rows(removed)] if removed.size else np.zeros(0)
     above = difference > FLOOR  # NaN (a node reaching no structure node) is not
     if not above.any():
