@@ -138,7 +138,7 @@ built leaves them out.
 from __future__ import annotations
 
 import math
-from collections.abc import Hashable, Iterable, Mapping
+from collections.abc import Callable, Hashable, Iterable, Mapping
 from dataclasses import dataclass
 
 import networkx as nx
@@ -436,8 +436,9 @@ def weighted_spearman(x: np.ndarray, y: np.ndarray, weight: np.ndarray) -> float
 
 def within_area_rho(heat: np.ndarray, reference: np.ndarray, area: np.ndarray) -> float:
     """``rho_within`` (see the module docs): the Pearson correlation of (n,) ``heat`` and ``reference`` turned into
-    percentile ranks within each connected area of (n,) labels ``area`` (:func:`within_area_percentiles`), over the
-    entries where ``heat`` is finite (NaN: fewer than three, or either rank constant within every area).
+    percentile ranks within each connected area of (n,) labels ``area`` (:func:`within_area_percentiles` with exact
+    ties, as :func:`spearman` ranks), over the entries where ``heat`` is finite (NaN: fewer than three, or either rank
+    constant within every area).
 
     A rank's mean is 50 in every area, so the pooled correlation is that of deviations from each area's own mean
     (the pooled within-group correlation of the areas' ranks). O(n log n), one sort per area.
@@ -445,19 +446,27 @@ def within_area_rho(heat: np.ndarray, reference: np.ndarray, area: np.ndarray) -
     ok = np.isfinite(heat)
     if ok.sum() < 3:
         return float("nan")
-    heat_ranks, reference_ranks = (within_area_percentiles(values[ok], area[ok]) for values in (heat, reference))
+    heat_ranks, reference_ranks = (within_area_percentiles(values[ok], area[ok], _exact_percentiles)
+                                   for values in (heat, reference))
     return _pearson(heat_ranks, reference_ranks, np.ones(int(ok.sum())))
 
 
-def within_area_percentiles(values: np.ndarray, area: np.ndarray) -> np.ndarray:
-    """(n,) each of (n,) ``values``' :func:`~g2s_plugins.traffic.percentile` (0-100, ``100 (rank - 0.5) / count``,
-    ties within rounding averaged) among the entries of its area (equal labels of (n,) ``area``): on a graph of one
-    area, ``traffic.percentile(values)`` bit for bit. O(n log n), one sort per area."""
+def within_area_percentiles(values: np.ndarray, area: np.ndarray,
+                            percentile: Callable[[np.ndarray], np.ndarray] = traffic.percentile) -> np.ndarray:
+    """(n,) each of (n,) ``values``' percentile rank (0-100, ``100 (rank - 0.5) / count``, ties averaged) among the
+    entries of its area (equal labels of (n,) ``area``), by ``percentile``: by default
+    :func:`~g2s_plugins.traffic.percentile` (ties within rounding, the heat map's scale), so that on a graph of one
+    area it is ``traffic.percentile(values)`` bit for bit. O(n log n), one sort per area."""
     order = np.argsort(area, kind="stable")
     percentiles = np.empty(len(values))
     for group in np.split(order, np.flatnonzero(np.diff(area[order])) + 1):
-        percentiles[group] = traffic.percentile(values[group])
+        percentiles[group] = percentile(values[group])
     return percentiles
+
+
+def _exact_percentiles(values: np.ndarray) -> np.ndarray:
+    """(n,) ``100 (rank - 0.5) / n`` of (n,) ``values``, only exactly equal values tied (:func:`spearman`'s ranks)."""
+    return 100.0 * _weighted_midranks(values, np.ones(len(values))) / len(values)
 
 
 def _pearson(x: np.ndarray, y: np.ndarray, weight: np.ndarray) -> float:
