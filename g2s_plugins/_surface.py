@@ -92,7 +92,8 @@ class CollapseParams(PluginParams):
     heat_rho_within_areas: bool = Field(
         False, description="min_heat_rho reads rho with ranks taken within each connected area (the traffic "
         "evaluator's rho_within), so that an area apart, low in the flow and the heat map as a whole, gets no credit "
-        "for that; false: rho over the whole graph"
+        "for that, and restores the removed nodes whose flow's percentile within their area differs most from the heat "
+        "drawn from those percentiles; false: rho and percentiles over the whole graph"
     )
     heat_sources: int = Field(
         traffic.WALKING_SOURCES, ge=1, description="sources of the walking flow max_traffic_step and min_heat_rho read "

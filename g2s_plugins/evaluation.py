@@ -138,7 +138,7 @@ built leaves them out.
 from __future__ import annotations
 
 import math
-from collections.abc import Hashable, Iterable, Mapping
+from collections.abc import Callable, Hashable, Iterable, Mapping
 from dataclasses import dataclass
 
 import networkx as nx
@@ -255,18 +255,21 @@ def heat_map(graph: nx.Graph, structure_nodes: Iterable[Hashable], values: Mappi
 
 
 def placement_heat(graph: nx.Graph, structure_nodes: Iterable[Hashable], flow: np.ndarray,
-                   nearest: np.ndarray | None = None) -> np.ndarray:
+                   nearest: np.ndarray | None = None, areas: np.ndarray | None = None) -> np.ndarray:
     """(n,) the heat map whose structure nodes carry the mean percentile of ``flow`` over the nodes they stand for.
 
     Each node of ``graph`` gets its nearest structure node's mean of
     :func:`~g2s_plugins.traffic.percentile` of the (n,) ``flow``: the
     ``flow`` analyzer's heat map with ``aggregate: percentile`` when ``flow``
     is its walking flow, and ``rho_ceiling``'s when ``flow`` is the reference.
+    With (n,) ``areas`` (:func:`area_labels`) the percentiles are those within each connected area
+    (:func:`within_area_percentiles`; a structure node stands only for nodes of its own area).
     """
     structure = sorted(structure_nodes)
     if nearest is None:  # one search for both: the nodes each structure node stands for are those it is nearest to
         nearest = _nearest_rows(graph, structure)
-    heat = traffic.gather(graph, structure, traffic.percentile(flow), mean=True, nearest=nearest)
+    percentiles = traffic.percentile(flow) if areas is None else within_area_percentiles(flow, areas)
+    heat = traffic.gather(graph, structure, percentiles, mean=True, nearest=nearest)
     return heat_map(graph, structure, heat, nearest)
 
 
@@ -433,27 +436,37 @@ def weighted_spearman(x: np.ndarray, y: np.ndarray, weight: np.ndarray) -> float
 
 def within_area_rho(heat: np.ndarray, reference: np.ndarray, area: np.ndarray) -> float:
     """``rho_within`` (see the module docs): the Pearson correlation of (n,) ``heat`` and ``reference`` turned into
-    percentile ranks within each connected area of (n,) labels ``area``, over the entries where ``heat`` is finite
-    (NaN: fewer than three, or either rank constant within every area).
+    percentile ranks within each connected area of (n,) labels ``area`` (:func:`within_area_percentiles` with exact
+    ties, as :func:`spearman` ranks), over the entries where ``heat`` is finite (NaN: fewer than three, or either rank
+    constant within every area).
 
-    A rank is the mid-rank of :func:`weighted_spearman` (equal weights) among the entries of its area, over their
-    count: (rank - 0.5) / count, whose mean is 1/2 in every area, so the pooled correlation is that of deviations
-    from each area's own mean (the pooled within-group correlation of the areas' ranks). O(n log n), one sort per
-    area.
+    A rank's mean is 50 in every area, so the pooled correlation is that of deviations from each area's own mean
+    (the pooled within-group correlation of the areas' ranks). O(n log n), one sort per area.
     """
     ok = np.isfinite(heat)
     if ok.sum() < 3:
         return float("nan")
-    labels = area[ok]
-    order = np.argsort(labels, kind="stable")
-    groups = np.split(order, np.flatnonzero(np.diff(labels[order])) + 1)
-    ranks = []
-    for values in (heat[ok], reference[ok]):
-        within = np.empty(len(values))
-        for rows in groups:
-            within[rows] = _weighted_midranks(values[rows], np.ones(len(rows))) / len(rows)
-        ranks.append(within)
-    return _pearson(ranks[0], ranks[1], np.ones(len(labels)))
+    heat_ranks, reference_ranks = (within_area_percentiles(values[ok], area[ok], _exact_percentiles)
+                                   for values in (heat, reference))
+    return _pearson(heat_ranks, reference_ranks, np.ones(int(ok.sum())))
+
+
+def within_area_percentiles(values: np.ndarray, area: np.ndarray,
+                            percentile: Callable[[np.ndarray], np.ndarray] = traffic.percentile) -> np.ndarray:
+    """(n,) each of (n,) ``values``' percentile rank (0-100, ``100 (rank - 0.5) / count``, ties averaged) among the
+    entries of its area (equal labels of (n,) ``area``), by ``percentile``: by default
+    :func:`~g2s_plugins.traffic.percentile` (ties within rounding, the heat map's scale), so that on a graph of one
+    area it is ``traffic.percentile(values)`` bit for bit. O(n log n), one sort per area."""
+    order = np.argsort(area, kind="stable")
+    percentiles = np.empty(len(values))
+    for group in np.split(order, np.flatnonzero(np.diff(area[order])) + 1):
+        percentiles[group] = percentile(values[group])
+    return percentiles
+
+
+def _exact_percentiles(values: np.ndarray) -> np.ndarray:
+    """(n,) ``100 (rank - 0.5) / n`` of (n,) ``values``, only exactly equal values tied (:func:`spearman`'s ranks)."""
+    return 100.0 * _weighted_midranks(values, np.ones(len(values))) / len(values)
 
 
 def _pearson(x: np.ndarray, y: np.ndarray, weight: np.ndarray) -> float:

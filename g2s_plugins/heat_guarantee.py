@@ -44,7 +44,9 @@ measured. While rho is under the target, the removed nodes whose own
 polygon's percentile differs most from the heat the map gives it (by more
 than :data:`FLOOR` points; both on the heat map's sampled scale, so the
 exact flow decides when to stop, not which nodes come back, and a structure
-changes only where that decision does) are restored, :data:`RESTORED_SHARE`
+changes only where that decision does; with ``heat_rho_within_areas`` the
+percentiles within the node's connected area and the heat drawn from them,
+the same on a graph of one area) are restored, :data:`RESTORED_SHARE`
 of the forest's nodes at a time: the forest is simplified again by the same
 predicate, which now keeps them and every node the last structure kept
 (:func:`keeping`), so each round's structure holds the last one's. A
@@ -150,8 +152,12 @@ def restored(
     x the forest's nodes) of them, by decreasing difference then node id.
 
     ``within_areas``: rho is :func:`~g2s_plugins.evaluation.within_area_rho` over the connected areas of ``graph``
-    instead (docs/analysis_quality.md, "The heat map within each connected area"); which nodes come back is the
-    same rule. Above the exact size the margin and the confirmation are those measured for the level-wide rho.
+    instead (docs/analysis_quality.md, "The heat map within each connected area"), and a removed node's
+    difference is between its flow's percentile within its area (:func:`~g2s_plugins.evaluation.within_area_percentiles`,
+    the scale that rho ranks the flow on) and the heat the map gives it when drawn from those percentiles: a heat
+    right across areas and wrong within one is what that rho counts. On a graph of one area both are the level-wide
+    ones, so the same nodes come back. Above the exact size the margin and the confirmation are those measured for
+    the level-wide rho.
     """
     arrays = traffic.surface_arrays(graph)
     order = traffic.sampling_order(graph, sampling)
@@ -164,26 +170,29 @@ def restored(
         reference = traffic.arrays_walking_flow(arrays, sources, exact_up_to=traffic.EXACT_NODES, ties=ties,
                                                 scaling=scaling)
     heat = evaluation.placement_heat(graph, simplified, shown)
-    if within_areas:
-        rho = evaluation.within_area_rho(heat, reference, evaluation.area_labels(graph))
-    else:
-        rho = evaluation.spearman(heat, reference)
+    areas = evaluation.area_labels(graph) if within_areas else None
+    rho = evaluation.spearman(heat, reference) if areas is None else evaluation.within_area_rho(heat, reference, areas)
     margin = 0.0 if exact else POOLED_MARGINS[scaling] if pooled else MARGINS[scaling]
     if not rho < min_rho + margin:
         if not exact and not math.isnan(rho):  # NaN: every node's flow alike, nothing to confirm
             confirm(heat, shown, rho, min_rho, context, arrays, sources, ties, scaling, order)
         return None
     removed = np.array(sorted(node for node in forest if node not in simplified), dtype=np.int64)
-    difference = np.abs(traffic.percentile(shown) - heat)[arrays.rows(removed)] if removed.size else np.zeros(0)
+    if areas is None:
+        own, given = traffic.percentile(shown), heat
+    else:  # the flow's percentiles within each area, as rho within areas ranks it, and the heat drawn from them
+        own, given = (evaluation.within_area_percentiles(shown, areas),
+                      evaluation.placement_heat(graph, simplified, shown, areas=areas))
+    difference = np.abs(own - given)[arrays.rows(removed)] if removed.size else np.zeros(0)
     above = difference > FLOOR  # NaN (a node reaching no structure node) is not
     if not above.any():
         measure = ("walking flow" if exact else f"the mean walking flow of a spread and an independent sample of {sources} sources"
                    if pooled else f"walking flow from {sources} sampled sources")
         wanted = f"min_heat_rho {min_rho:g}" + ("" if exact else f" plus the margin {margin:g} a sampled flow needs")
-        within = " within each connected area" if within_areas else ""
+        within = " within each connected area" if areas is not None else ""
         context.warn(f"the heat map ranks the polygons with Spearman rho{within} {rho:.3f} against {measure}, "
                      f"under {wanted}: no node simplification removed differs from the heat it is given by more than "
-                     f"{FLOOR:g} percentile points")
+                     f"{FLOOR:g} percentile points{' within its area' if within else ''}")
         return None
     ranked = np.lexsort((removed[above], -difference[above]))
     count = math.ceil(RESTORED_SHARE * forest.number_of_nodes())

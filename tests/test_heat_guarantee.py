@@ -74,8 +74,9 @@ def test_a_fixed_step_under_the_target_gets_its_nodes_back_until_it_holds():
 
 def test_within_areas_the_islands_lend_the_corridor_no_rho():
     # the corridor and 12 polygons apart, each an area of its own: their flow is 0 and so is their heat's rank,
-    # which the level-wide rho counts as agreement (0.937 after one round) while the corridor's own order reads
-    # 0.8725; read within areas (where an area of one node weighs nothing) the guarantee restores one node more
+    # which the level-wide rho counts as agreement (0.937 after one round, {0, 4, 8} and 1) while the corridor's own
+    # order reads 0.8725; read within areas (where an area of one node weighs nothing) the guarantee restores 6,
+    # then 2, as on the corridor alone (the percentiles within its area are the corridor's own)
     graph = corridor()
     for island in range(9, 21):
         graph.add_node(island, pos=(float(island), 0.0, 5.0), area=1.0, normal=(0.0, 1.0, 0.0), on_navmesh=True)
@@ -87,9 +88,61 @@ def test_within_areas_the_islands_lend_the_corridor_no_rho():
     assert level_rhos == pytest.approx([0.8874, 0.9371], abs=1e-4)
     assert evaluation.within_area_rho(evaluation.placement_heat(graph, level, flow), flow, areas) == pytest.approx(
         0.8725, abs=1e-4)
-    assert set(within) == set(level) | {6} and len(within_rhos) == 3
+    assert sorted(node for node in level if node < 9) == [0, 1, 4, 8]
+    assert sorted(node for node in within if node < 9) == [0, 2, 4, 6, 8] and len(within_rhos) == 3
     assert evaluation.within_area_rho(evaluation.placement_heat(graph, within, flow), flow, areas) == pytest.approx(
         0.9353, abs=1e-4)
+
+
+def two_corridors() -> nx.Graph:
+    """Corridors of 7 and 5 polygons of 1 m², 1 m apart, 5 m from each other: two connected areas, rows 0-6 and
+    7-11."""
+    graph = nx.disjoint_union(corridor(7), corridor(5))
+    for i in range(7, 12):
+        graph.nodes[i]["pos"] = (float(i - 7), 0.0, 5.0)
+    return graph
+
+
+def test_within_areas_the_node_restored_is_the_one_its_area_ranks_worst():
+    # flow 2 i (n - 1 - i) in each corridor: 0 10 16 18 16 10 0 and 0 6 8 6 0. Kept {0, 3, 6} and {7, 8, 11}: node
+    # 1 has the heat of 0 (mean of 0 and 1), node 10 that of 11. Level-wide the short corridor's flows all sit low,
+    # so its errors look small: 1 is 25 points off its heat (66.7 against 41.7), 10 only 12.5 (41.7 against 29.2),
+    # and 1 comes back. With percentiles within each area (the scale rho within areas ranks the flow on) 1 is 14.3
+    # points off (42.9 against 28.6), 10 is 20 off (60 against 40, the mean of 60 and 20), and 10 comes back: it lifts
+    # rho within areas from 0.8526 to 0.9000, the most any one node does, where 1 lifts it to 0.8756
+    graph = two_corridors()
+    areas = evaluation.area_labels(graph)
+    forest = nx.DiGraph([(i, i + 1) for i in range(11) if i != 6])
+    kept = {0, 3, 6, 7, 8, 11}
+    flow = traffic.walking_flow(graph)
+    assert evaluation.within_area_percentiles(flow, areas) == pytest.approx(
+        [14.29, 42.86, 71.43, 92.86, 71.43, 42.86, 14.29, 20, 60, 90, 60, 20], abs=0.01)
+    assert evaluation.placement_heat(graph, kept, flow, areas=areas) == pytest.approx(
+        [28.57, 28.57, 78.57, 78.57, 78.57, 28.57, 28.57, 20, 75, 75, 40, 40], abs=0.01)
+    context = RunContext(mesh=None, agent=AgentConfig(), centre=np.zeros(3), graph=graph)
+    level = heat_guarantee.restored(graph, forest, forest.subgraph(kept), 0.95, context)
+    within = heat_guarantee.restored(graph, forest, forest.subgraph(kept), 0.95, context, within_areas=True)
+    assert level == kept | {1} and within == kept | {10}
+    rho_within = {node: evaluation.within_area_rho(evaluation.placement_heat(graph, kept | {node}, flow), flow, areas)
+                  for node in set(graph) - kept}
+    assert evaluation.within_area_rho(evaluation.placement_heat(graph, kept, flow), flow, areas) == pytest.approx(
+        0.8526, abs=1e-4)
+    assert rho_within[10] == pytest.approx(0.9, abs=1e-4) and rho_within[1] == pytest.approx(0.8756, abs=1e-4)
+    assert max(rho_within, key=rho_within.get) == 10
+
+
+def test_on_one_area_within_areas_restores_what_the_level_wide_rule_does():
+    # within each area of a graph of one area the percentiles are the level-wide ones bit for bit, so the rule picks
+    # the same nodes: on the corridor, kept {0, 3, 8}, node 6 (33.3 against its own 55.6)
+    graph = corridor()
+    flow = traffic.walking_flow(graph)
+    areas = evaluation.area_labels(graph)
+    assert np.array_equal(evaluation.within_area_percentiles(flow, areas), traffic.percentile(flow))
+    forest = root_forest(graph, {i: -i for i in graph}, centre=np.zeros(3))
+    context = RunContext(mesh=None, agent=AgentConfig(), centre=np.zeros(3), graph=graph)
+    structure = forest.subgraph({0, 3, 8})
+    level = heat_guarantee.restored(graph, forest, structure, 0.9, context)
+    assert level == {0, 3, 6, 8} == heat_guarantee.restored(graph, forest, structure, 0.9, context, within_areas=True)
 
 
 def test_a_structure_that_holds_is_kept_as_it_is():
