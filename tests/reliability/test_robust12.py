@@ -215,3 +215,11 @@ def test_batch_evaluate_of_no_name_or_a_name_twice_is_refused(given, says, tmp_p
     outcome = run_g2s(capsys, "batch", "map_piece", CORRIDOR, "-o", tmp_path / "out", "--evaluate", given, "-q")
     assert_clean_error(outcome, f"--evaluate: {says} (expected some of: traffic)")
     assert tree(tmp_path / "out") == []
+
+
+@pytest.mark.parametrize("command", ["run", "batch"])
+def test_a_format_given_twice_is_refused_as_an_evaluator_given_twice_is(command, tmp_path, capsys):
+    # names39 (5 December 2026): `json,JSON` wrote json once without a word, where `--evaluate traffic,traffic` is refused
+    outcome = run_g2s(capsys, command, "graph_only", CORRIDOR, "-o", tmp_path / "out", "--format", "json,html,JSON", "-q")
+    assert_clean_error(outcome, "--format: 'json' is given twice (expected some of: ")
+    assert tree(tmp_path / "out") == []
