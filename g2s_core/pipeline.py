@@ -243,7 +243,7 @@ def steiner_forest(
     terminals (with the whole graph when all terminals share one component); a component with one terminal gives a single-node tree. When
     terminals lie in several components a warning places the largest and names
     the likely cause (:mod:`g2s_core.disconnected`); it counts the terminals
-    less the ``waypoints``, as the outputs do. The forest's nodes and edges share the graph's attribute dicts.
+    and the ``waypoints`` apart, as the outputs do. The forest's nodes and edges share the graph's attribute dicts.
     """
     ids = np.sort(np.fromiter(graph._node, np.int64, len(graph)))
     label = components(graph, ids)[3]
@@ -252,7 +252,8 @@ def steiner_forest(
         groups.setdefault(index, []).append(terminal)
     areas = {index: ids[label == index].tolist() for index in groups} if len(groups) > 1 else {}
     if areas:
-        context.warn(disconnected_warning(graph, areas, len(set(wanted) - set(waypoints)), context.likely_cause))
+        joined_waypoints = len(set(waypoints).intersection(wanted))
+        context.warn(disconnected_warning(graph, areas, len(wanted) - joined_waypoints, context.likely_cause, joined_waypoints))
     nodes, edges = [], []
     for index, group in sorted(groups.items()):
         # a subgraph view is slow to iterate: with a single group of terminals
