@@ -39,21 +39,25 @@ def area_summary(graph: nx.Graph, nodes: Sequence[int]) -> tuple[float, np.ndarr
 
 
 def disconnected_warning(graph: nx.Graph, areas: Mapping[Any, Sequence[int]], terminal_count: int,
-                         likely_cause: Callable[[nx.Graph, Sequence[int], Sequence[Sequence[int]]], str] | None) -> str:
-    """The warning for terminals spread over the connected ``areas`` (area id -> its nodes) of ``graph``.
+                         likely_cause: Callable[[nx.Graph, Sequence[int], Sequence[Sequence[int]]], str] | None,
+                         waypoint_count: int = 0) -> str:
+    """The warning for terminals (and a selector's waypoints) spread over the connected ``areas`` (area id -> its
+    nodes) of ``graph``; the counts are those the outputs give, a count of zero left out of the message.
 
     ``likely_cause(graph, largest area, next areas)`` names what most likely parts them and where; without it
     the cause is left out, and without node positions (an abstract graph) the places too.
     """
+    apart = " and ".join(f"{count} {noun}{'s' * (count != 1)}" for count, noun in
+                         ((terminal_count, "terminal"), (waypoint_count, "waypoint")) if count)
     if not all("pos" in graph.nodes[n] for nodes in areas.values() for n in nodes):
         sizes = sorted((len(nodes) for nodes in areas.values()), reverse=True)
-        return (f"{terminal_count} terminals lie in {len(sizes)} disconnected areas, so they are joined by one tree "
+        return (f"{apart} lie in {len(sizes)} disconnected areas, so they are joined by one tree "
                 f"per area (the largest have {', '.join(map(str, sizes[:LISTED_AREAS]))} nodes).")
     summaries = sorted((area_summary(graph, nodes) + (nodes,) for nodes in areas.values()), key=lambda s: -s[0])
     listed = "; ".join(f"{size:.0f} m² near ({xyz(where)})" for size, where, _ in summaries[:LISTED_AREAS])
     rest = summaries[LISTED_AREAS:]
     more = f"; {len(rest)} more with {sum(s[0] for s in rest):.0f} m² in all" if rest else ""
-    message = (f"{terminal_count} terminals lie in {len(summaries)} disconnected areas, so they are joined by "
+    message = (f"{apart} lie in {len(summaries)} disconnected areas, so they are joined by "
                f"one tree per area. Largest areas: {listed}{more}.")
     if likely_cause is None or len(summaries) < 2:
         return message

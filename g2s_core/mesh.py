@@ -44,6 +44,13 @@ class MeshInfo:
     cleaning: dict[str, int] | None = None
 
 
+def text_of_name(name: str) -> str:
+    """A file name as text that a UTF-8 file (JSON, HTML, GraphML, CSV, Parquet) can hold: its bytes that are not
+    UTF-8, which Python keeps as lone surrogates (``'m\\udcff.obj'``), as ``\\xNN`` escapes (``'m\\xff.obj'``); other
+    names unchanged. :func:`load_mesh` names a mesh file so, and every result, output and summary line with it."""
+    return os.fsencode(name).decode("utf-8", "backslashreplace")
+
+
 def mesh_sha256(mesh: trimesh.Trimesh) -> str:
     """Hex SHA-256 of an in-memory mesh's vertex and face arrays (float64, int64)."""
     digest = hashlib.sha256()
@@ -106,7 +113,7 @@ def load_mesh(path: str | Path, config: MeshConfig | None = None) -> tuple[trime
         if str(exc).startswith(f"{path}:") and (damage := describe_damage(path, raw)):
             raise MeshError(f"{path}: {damage}") from None
         raise
-    return mesh, MeshInfo(path.name, hashlib.sha256(raw).hexdigest(), len(mesh.vertices), len(mesh.faces), cleaning)
+    return mesh, MeshInfo(text_of_name(path.name), hashlib.sha256(raw).hexdigest(), len(mesh.vertices), len(mesh.faces), cleaning)
 
 
 POLYGON_SUFFIXES = (".off", ".ply")

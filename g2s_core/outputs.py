@@ -37,17 +37,20 @@ def result_files(registry: Registry | None = None) -> dict[str, tuple[str, ...]]
 
 
 def parse_formats(formats: str | Sequence[str], source: str = "--format", registry: Registry | None = None) -> list[str]:
-    """Format names from ``"json,html"`` or a list: stripped, lower-cased, duplicates dropped, order kept.
+    """Format names from ``"json,html"`` or a list: stripped, lower-cased, empty items dropped, order kept.
 
     Raises:
-        G2SError: a name is not an installed writer, or none is given; the message starts with ``source``.
+        G2SError: a name is not an installed writer, is given twice (as ``--evaluate`` refuses a name twice), or none
+            is given; the message starts with ``source``.
     """
     known = writers(registry)
     items = formats.split(",") if isinstance(formats, str) else list(formats)
-    names = list(dict.fromkeys(name for name in (str(item).strip().lower() for item in items) if name))  # once each
-    for name in names:
+    names = [name for name in (str(item).strip().lower() for item in items) if name]
+    for index, name in enumerate(names):
         if name not in known:
             raise G2SError(f"{source}: unknown output format {show(name)} (expected some of: {', '.join(known)})")
+        if name in names[:index]:
+            raise G2SError(f"{source}: {show(name)} is given twice (expected some of: {', '.join(known)})")
     if not names:
         raise G2SError(f"{source}: no output format given (expected some of: {', '.join(known)})")
     return names

@@ -5,7 +5,7 @@ from __future__ import annotations
 import gc
 import math
 import time
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Collection, Sequence
 from dataclasses import dataclass
 from typing import Any
 
@@ -174,7 +174,7 @@ def _keep(step: Step, name: str, graph: nx.Graph) -> None:
 def _steiner_step(step: Step) -> bool | None:
     result = step.result
     _keep(step, "steiner", steiner_forest(result.graph, result.terminals.nodes, lambda sub, terms: step.call(
-        graph=sub, terminals=terms), result.context))
+        graph=sub, terminals=terms), result.context, result.terminals.waypoints))
 
 
 def _loops_step(step: Step) -> bool | None:
@@ -235,13 +235,15 @@ def steiner_forest(
     terminals: Sequence[int],
     solve: Callable[[nx.Graph, list[int]], nx.Graph],
     context: RunContext,
+    waypoints: Collection[int] = (),
 ) -> nx.Graph:
-    """One Steiner tree per connected component of ``graph`` that holds terminals.
+    """One Steiner tree per connected component of ``graph`` that holds terminals (``waypoints`` among them).
 
     ``solve(subgraph, terminals)`` is called for components with two or more
     terminals (with the whole graph when all terminals share one component); a component with one terminal gives a single-node tree. When
     terminals lie in several components a warning places the largest and names
-    the likely cause (:mod:`g2s_core.disconnected`). The forest's nodes and edges share the graph's attribute dicts.
+    the likely cause (:mod:`g2s_core.disconnected`); it counts the terminals
+    and the ``waypoints`` apart, as the outputs do. The forest's nodes and edges share the graph's attribute dicts.
     """
     ids = np.sort(np.fromiter(graph._node, np.int64, len(graph)))
     label = components(graph, ids)[3]
@@ -250,7 +252,8 @@ def steiner_forest(
         groups.setdefault(index, []).append(terminal)
     areas = {index: ids[label == index].tolist() for index in groups} if len(groups) > 1 else {}
     if areas:
-        context.warn(disconnected_warning(graph, areas, sum(map(len, groups.values())), context.likely_cause))
+        joined_waypoints = len(set(waypoints).intersection(wanted))
+        context.warn(disconnected_warning(graph, areas, len(wanted) - joined_waypoints, context.likely_cause, joined_waypoints))
     nodes, edges = [], []
     for index, group in sorted(groups.items()):
         # a subgraph view is slow to iterate: with a single group of terminals

@@ -1,6 +1,7 @@
 """Inputs robust17 (5 December 2026) found ending in an internal error: a level or config whose file name is not
 UTF-8 (bytes Python keeps as lone surrogates, ``'m\\udcff.obj'``), which no UTF-8 output can hold. The name is
-written with such bytes as ``\\xNN`` escapes (``m\\xff.obj``), the file itself read as any other."""
+made text once, where the core reads the mesh file, with such bytes as ``\\xNN`` escapes (``m\\xff.obj``), the file
+itself read as any other. Assertion messages show such names through ``ascii`` so that a failure prints."""
 
 from __future__ import annotations
 
@@ -10,7 +11,7 @@ import shutil
 
 import pytest
 
-from g2s_plugins.outputs.writers import text_of_name
+from g2s_core.mesh import text_of_name
 from tests.reliability.checks import CORRIDOR, run_g2s
 
 NOT_UTF8 = os.fsdecode(b"level\xff")
@@ -33,12 +34,21 @@ def test_a_name_that_is_not_utf8_becomes_escaped_text_and_others_stay_as_they_ar
 
 
 def test_a_level_whose_name_is_not_utf8_runs_and_its_results_name_it(level_not_utf8, tmp_path, capsys):
-    # json alone: the writers are handed the name in one place (LazyWriter), and the others' imports cost seconds
+    # json alone: every writer gets the name from the result, and the others' imports cost seconds
     out = tmp_path / "out"
-    outcome = run_g2s(capsys, "run", "map_analysis", level_not_utf8, "-o", out, "--format", "json", "-q")
-    assert outcome.code == 0, outcome.stderr
-    for name in ("structure.json", "run.json"):
-        assert json.loads((out / name).read_text(encoding="utf-8"))["mesh"]["name"] == "level\\xff.obj"
+    outcome = run_g2s(capsys, "run", "map_analysis", level_not_utf8, "-o", out, "--format", "json", "--json")
+    assert outcome.code == 0, ascii(outcome.stderr)
+    names = [json.loads((out / name).read_text(encoding="utf-8"))["mesh"]["name"] for name in ("structure.json", "run.json")]
+    assert names == ["level\\xff.obj"] * 2, ascii(names)
+    printed = json.loads(outcome.stdout)["mesh"]
+    assert printed == names[0], ascii(printed)
+
+
+def test_the_python_api_names_such_a_level_as_its_outputs_do(level_not_utf8):
+    from g2s_core import api
+
+    result = api.run(level_not_utf8, "graph_only")
+    assert result.mesh_name == "level\\xff.obj", ascii(result.mesh_name)
 
 
 def test_a_batch_over_a_level_and_a_config_whose_names_are_not_utf8_writes_its_summary(level_not_utf8, tmp_path, capsys):
@@ -46,7 +56,7 @@ def test_a_batch_over_a_level_and_a_config_whose_names_are_not_utf8_writes_its_s
     config.write_text("extends: graph_only\n")
     out = tmp_path / "out"
     outcome = run_g2s(capsys, "batch", config, level_not_utf8, "-o", out, "--executor", "serial", "-q")
-    assert outcome.code == 0, outcome.stderr
+    assert outcome.code == 0, ascii(outcome.stderr)
     row = (out / "summary.csv").read_text(encoding="utf-8").splitlines()[1]
-    assert row.startswith("level\\xff,level\\xff,") and "ok" in row.split(","), row
+    assert row.startswith("level\\xff,level\\xff,") and "ok" in row.split(","), ascii(row)
     shutil.rmtree(out)

@@ -544,7 +544,9 @@ def test_html_report_marks_the_terminals_not_the_waypoints(waypoint_result):
 
 
 def test_parse_formats():
-    assert parse_formats("json, html,json,,PNG") == ["json", "html", "png"]
+    assert parse_formats("json, html,,PNG") == ["json", "html", "png"]
+    with pytest.raises(G2SError, match="--format: 'json' is given twice"):  # as --evaluate refuses a name twice
+        parse_formats("json,html,JSON")
     assert parse_formats(["glb"]) == ["glb"]
     with pytest.raises(G2SError, match="--format: unknown output format 'pdf'"):
         parse_formats("json,pdf")

@@ -440,6 +440,23 @@ def test_plugin_module_through_registry_and_pipeline(module):
     assert 8 in forest and forest.degree(8) == 0
 
 
+def test_the_disconnected_areas_warning_counts_the_terminals_without_the_waypoints():
+    """Terminals 1 and 8 and the coverage waypoints 2 and 7 in two components: the forest joins all four, the warning
+    counts the terminals and the waypoints apart, as the outputs do (it said "854 terminals" of 39 terminals and 815
+    waypoints on a generated level); without terminals, the waypoints alone."""
+    from g2s_core.model import RunContext
+    from g2s_core.pipeline import steiner_forest
+
+    graph = weighted([(0, 1, 1.0), (0, 2, 1.0), (7, 8, 1.0), (8, 9, 1.0)])
+    context = RunContext(mesh=None, agent=None, centre=np.zeros(3))
+    forest = steiner_forest(graph, [1, 2, 7, 8], lambda sub, terms: mehlhorn.mehlhorn_steiner_tree(sub, terms), context,
+                            waypoints=[2, 7])
+    assert edge_set(forest) == {(0, 1), (0, 2), (7, 8)}
+    steiner_forest(graph, [2, 7], lambda sub, terms: mehlhorn.mehlhorn_steiner_tree(sub, terms), context, waypoints=[2, 7])
+    assert context.warnings == [f"{joined} lie in 2 disconnected areas, so they are joined by one tree per area (the "
+                                f"largest have 3, 3 nodes)." for joined in ("2 terminals and 2 waypoints", "2 waypoints")]
+
+
 def test_the_steiner_forest_shares_the_graphs_attribute_dicts():
     """The forest's nodes and edges hold the graph's own attribute dicts, in the graph's key order, as a subgraph
     view would; one lone terminal of another component as well."""

@@ -46,13 +46,12 @@ from g2s_core.config import find_config, load_raw_config, parse_config, with_eva
 from g2s_core.errors import G2SError, PluginFailure, out_of_memory
 from g2s_core.input_files import check_regular_file
 from g2s_core.lazy import lazy_module
-from g2s_core.mesh import SAMPLE_PREFIX, SUPPORTED_SUFFIXES
+from g2s_core.mesh import SAMPLE_PREFIX, SUPPORTED_SUFFIXES, text_of_name
 from g2s_core.model import RunResult
 from g2s_core.outputs import chosen_formats, result_files
 from g2s_core.registry import installed
 from g2s_core.result_folder import check_writable, stop_if_interrupted
 from g2s_core.stages import PIPELINE
-from g2s_plugins.outputs.writers import text_of_name
 
 if TYPE_CHECKING:
     import pandas as pd

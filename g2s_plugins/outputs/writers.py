@@ -3,16 +3,13 @@
 Each writer is a small object with the plugin's ``NAME`` (the format),
 ``FILES`` and summary; its module is imported when it first writes, because
 plotly and matplotlib take a while to import and most commands never write
-those formats. Each writes with CPython's cyclic collector paused (:func:`collector_paused`), and is given the
-mesh's name as text a UTF-8 file can hold (:func:`text_of_name`).
+those formats. Each writes with CPython's cyclic collector paused (:func:`collector_paused`).
 """
 
 from __future__ import annotations
 
-import dataclasses
 import gc
 import importlib
-import os
 from collections.abc import Iterator
 from contextlib import contextmanager
 from pathlib import Path
@@ -32,20 +29,11 @@ class LazyWriter:
 
     @hookimpl
     def g2s_write_output(self, result: RunResult, folder: Path) -> list[Path]:
-        named = dataclasses.replace(result, mesh_name=text_of_name(result.mesh_name))
         with collector_paused():
-            return importlib.import_module(self.module).write(named, folder)
+            return importlib.import_module(self.module).write(result, folder)
 
     def __repr__(self) -> str:
         return f"LazyWriter({self.NAME!r}, {self.module})"
-
-
-def text_of_name(name: str) -> str:
-    """A file name as text that a UTF-8 file (JSON, HTML, GraphML, CSV, Parquet) can hold: its bytes that are not
-    UTF-8, which Python keeps as lone surrogates (``'m\\udcff.obj'``), as ``\\xNN`` escapes (``'m\\xff.obj'``); other
-    names unchanged. Such a name ended a finished run (its structure.json) and a batch (its summary) in an error
-    until robust17 (5 December 2026)."""
-    return os.fsencode(name).decode("utf-8", "backslashreplace")
 
 
 @contextmanager

@@ -181,7 +181,8 @@ def test_a_config_of_millions_of_values_is_refused_before_it_fills_the_memory(tm
 
     monkeypatch.setattr(config, "MAX_YAML_NODES", 200)
     path = tmp_path / "long.yaml"
-    path.write_text("extends: graph_only\noutputs:\n  formats: [" + ", ".join(["json"] * 193) + "]\n")
+    # json and 192 empty names, which a format list drops (json twice is refused)
+    path.write_text("extends: graph_only\noutputs:\n  formats: [json, " + ", ".join(['""'] * 192) + "]\n")
     assert run_g2s(capsys, "run", path, CORRIDOR, "-o", tmp_path / "out", "-q").code == 0
     path.write_text("extends: graph_only\noutputs:\n  formats: [" + ", ".join(["json"] * 194) + "]\n")
     outcome = run_g2s(capsys, "run", path, CORRIDOR, "-o", tmp_path / "out2", "-q")
@@ -214,4 +215,12 @@ def test_batch_evaluate_of_no_name_or_a_name_twice_is_refused(given, says, tmp_p
     # give one a 'key'`, of a config the user never wrote
     outcome = run_g2s(capsys, "batch", "map_piece", CORRIDOR, "-o", tmp_path / "out", "--evaluate", given, "-q")
     assert_clean_error(outcome, f"--evaluate: {says} (expected some of: traffic)")
+    assert tree(tmp_path / "out") == []
+
+
+@pytest.mark.parametrize("command", ["run", "batch"])
+def test_a_format_given_twice_is_refused_as_an_evaluator_given_twice_is(command, tmp_path, capsys):
+    # names39 (5 December 2026): `json,JSON` wrote json once without a word, where `--evaluate traffic,traffic` is refused
+    outcome = run_g2s(capsys, command, "graph_only", CORRIDOR, "-o", tmp_path / "out", "--format", "json,html,JSON", "-q")
+    assert_clean_error(outcome, "--format: 'json' is given twice (expected some of: ")
     assert tree(tmp_path / "out") == []
