@@ -49,7 +49,7 @@ from g2s_core.config import AgentConfig
 from g2s_core.disconnected import area_summary, xyz
 from g2s_core.model import NavMesh
 from g2s_plugins._raycasting import COMPASS, EPSILON, UP, RayCaster, hit_from_behind
-from g2s_plugins.play_space import _node_polygons
+from g2s_plugins.play_space import node_polygons
 
 Rim = Callable[[nx.Graph, Sequence[int]], tuple[np.ndarray, np.ndarray]]
 """``(graph, nodes) -> (points (k,3), reach (k,))``: :func:`ground_rim` of a graph builder's surface."""
@@ -63,7 +63,7 @@ def ground_rim(graph: nx.Graph, nodes: Sequence[int], navmesh: NavMesh | None, e
     A navmesh polygon's edges are those no polygon of ``nodes`` lies across, a point every ``cell_size`` along each
     (its ends included). O(edges + points).
     """
-    polygons = _node_polygons(graph, nodes) if navmesh is not None else np.full(len(nodes), -1)
+    polygons = node_polygons(graph, nodes) if navmesh is not None else np.full(len(nodes), -1)
     points = np.asarray([graph.nodes[n]["pos"] for n, p in zip(nodes, polygons) if p < 0], dtype=np.float64).reshape(-1, 3)
     reach = [np.asarray([math.sqrt(float(graph.nodes[n].get("area", 0.0))) / 2 + erosion
                          for n, p in zip(nodes, polygons) if p < 0])]

@@ -111,12 +111,12 @@ def held_polygons(graph: nx.Graph, polygon_count: int) -> np.ndarray:
     """(polygon_count,) bool: the navmesh polygons that are nodes of ``graph`` (a node's ``polygon`` attribute):
     every one of a navmesh graph's, but those :func:`cut_to_play_space` left out. O(n)."""
     held = np.zeros(polygon_count, dtype=bool)
-    polygons = _node_polygons(graph, graph.nodes)
+    polygons = node_polygons(graph, graph.nodes)
     held[polygons[polygons >= 0]] = True
     return held
 
 
-def _node_polygons(graph: nx.Graph, nodes: Collection[Hashable]) -> np.ndarray:
+def node_polygons(graph: nx.Graph, nodes: Collection[Hashable]) -> np.ndarray:
     """(len(nodes),) int64: the navmesh polygon of each of ``nodes`` (its ``polygon`` attribute), -1 for a node with
     none (a portal node, a sample). O(n)."""
     return np.fromiter((graph.nodes[node].get("polygon", -1) for node in nodes), dtype=np.int64, count=len(nodes))
@@ -150,7 +150,7 @@ def _areas_held(graph: nx.Graph, navmesh: NavMesh | None, points: npt.ArrayLike,
     distance, nearest = cKDTree(positions).query(points, distance_upper_bound=reach)
     if navmesh is not None:
         row_of_polygon = np.full(navmesh.polygon_count, -1, dtype=np.int64)
-        polygons = _node_polygons(graph, arrays.nodes)
+        polygons = node_polygons(graph, arrays.nodes)
         row_of_polygon[polygons[polygons >= 0]] = np.flatnonzero(polygons >= 0)
         for i, point in enumerate(points):
             polygon, on = navmesh.nearest_poly(point, (reach, reach, reach))
