@@ -62,6 +62,17 @@ def test_one_area_gives_rho_and_nodes_out_of_reach_are_left_out():
     assert outside == pytest.approx(evaluation.spearman(heat, reference), abs=1e-12)
 
 
+def test_one_area_ranks_values_one_ulp_apart_as_rho_does():
+    # a heat map of means holds values one ulp apart (a level's 78.57142857142858 twice and 78.57142857142857):
+    # spearman ties only exact equals, so rho within one area must too, or the two read apart
+    low = 78.57142857142857
+    high = np.nextafter(low, np.inf)
+    heat = np.array([high, high, low, 10.0, 90.0, 50.0])
+    reference = np.array([3.0, 1.0, 2.0, 0.0, 5.0, 4.0])
+    rho = evaluation.spearman(heat, reference)
+    assert evaluation.within_area_rho(heat, reference, np.zeros(6, dtype=np.int64)) == pytest.approx(rho, abs=1e-12)
+
+
 def test_undefined_when_no_area_has_an_order():
     area = np.array([0, 0, 1, 1])
     assert np.isnan(evaluation.within_area_rho(np.array([1.0, 1.0, 5.0, 5.0]), np.arange(4.0), area))
