@@ -84,12 +84,12 @@ def ground_rim(graph: nx.Graph, nodes: Sequence[int], navmesh: NavMesh | None, e
     return points, np.concatenate(reach)
 
 
-def closest_step(graph: nx.Graph, a: Sequence[int], b: Sequence[int], rim: Rim,
+def closest_step(a: tuple[np.ndarray, np.ndarray], b: tuple[np.ndarray, np.ndarray],
                  climb_weight: float = 1.0) -> tuple[float, float, np.ndarray, np.ndarray]:
-    """``(gap, vertical step, point of a, point of b)`` of the closest edge points of ``a``'s and ``b``'s ground
-    (``rim``; metres, vertical offsets counted ``climb_weight`` times): the gap is their horizontal distance less
-    the ground's reach past each, at least 0."""
-    (pa, ra), (pb, rb) = rim(graph, a), rim(graph, b)
+    """``(gap, vertical step, point of a, point of b)`` of the closest edge points of two areas' ground, each given
+    as its :func:`ground_rim` ``(points, reach)`` (metres, vertical offsets counted ``climb_weight`` times): the gap
+    is their horizontal distance less the ground's reach past each, at least 0."""
+    (pa, ra), (pb, rb) = a, b
     scale = np.array([1.0, climb_weight, 1.0])
     distance, index = cKDTree(pb * scale).query(pa * scale)
     best = int(np.argmin(distance))
@@ -99,14 +99,14 @@ def closest_step(graph: nx.Graph, a: Sequence[int], b: Sequence[int], rim: Rim,
     return max(gap, 0.0), float(abs(offset[1])), pa[best], pb[there]
 
 
-def closest_step_for(graph: nx.Graph, a: Sequence[int], b: Sequence[int], rim: Rim,
+def closest_step_for(a: tuple[np.ndarray, np.ndarray], b: tuple[np.ndarray, np.ndarray],
                      agent: AgentConfig) -> tuple[float, float, np.ndarray, np.ndarray]:
     """:func:`closest_step`, or the closest pair on one floor when the plain one is a floor above another and the
     one-floor pair is closer with vertical offsets counted ``agent.height / agent.max_climb`` times."""
-    plain = closest_step(graph, a, b, rim)
+    plain = closest_step(a, b)
     if plain[1] <= float(agent.max_climb) or float(agent.max_climb) <= 0:
         return plain
-    weighted = closest_step(graph, a, b, rim, float(agent.height) / float(agent.max_climb))
+    weighted = closest_step(a, b, float(agent.height) / float(agent.max_climb))
     return weighted if weighted[1] <= float(agent.max_climb) else plain
 
 
@@ -133,7 +133,8 @@ def areas_cause(graph: nx.Graph, largest: Sequence[int], others: Sequence[Sequen
     shut inside a closed solid of ``mesh`` (:func:`shut_in`) is named as such: Recast keeps the floor inside a
     closed box with head room, and either route a render floor inside a collision hull exported with the level.
     """
-    (gap, step, here, there), nearest = min(((closest_step_for(graph, largest, other, rim, agent), other) for other in others),
+    ground = rim(graph, largest)  # once, however many areas it is compared with
+    (gap, step, here, there), nearest = min(((closest_step_for(ground, rim(graph, other), agent), other) for other in others),
                                             key=lambda pair: math.hypot(pair[0][0], pair[0][1]))
     cause = likely_cause(step, gap, agent)
     if mesh is not None:
