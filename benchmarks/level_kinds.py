@@ -1,4 +1,4 @@
-"""Level kinds of the fifth to twenty-second held-out rounds (issue 9): generators no preset setting was made on.
+"""Level kinds of the fifth to twenty-third held-out rounds (issue 9): generators no preset setting was made on.
 
 Fifth round: six kinds, each about 1,000 navmesh polygons with the presets' agent (radius 0.5 m, height 2 m, climb 0.4 m):
 ``subway`` (platforms, track pits 1.2 m lower, stairs up to two concourses), ``archipelago`` (islands joined by
@@ -203,6 +203,20 @@ and joined by 6-8 ramps a storey). A rock tile is one solid from under the floor
 blocks standing on the MOBA's floor tiles, left the floor inside each as an area of 8 m²: six a seed), and a crate on a
 platform keeps off the line its joins arrive on (a first draft's crates at the spiral's corners parted the tower into
 6 / 5 / 7 areas, seeds 0-2).
+
+Twenty-third round: six more kinds of shipped game levels, 389-594 navmesh polygons with that agent (seeds 0-2):
+``stealth_mansion`` (a house of two storeys on a plinth over a crawlspace, a hall and a parallel servants' corridor on
+each, vents too low to walk, grand and servants' stairs, hedged parterres), ``defusal`` (a bomb-defusal map: two
+bombsites, a mid lane, long and short routes, connectors, spawn yards at both ends, side rooms), ``payload`` (one road
+winding 340-370 m through a town on rolling ground, side alleys, flanking buildings, shops), ``metroidvania`` (a grid of
+rooms 9-11 across and 5-6 storeys joined by doors, flights and ramps along a spanning tree and loops),
+``tower_defence`` (one lane switching back 10-12 times between wall strips notched by build pads) and ``hub_world`` (a
+round plaza whose four portals lead down wings to dead-end zones: rooms, pillars, a stepped hill, a maze, caves). A
+room carved beside a route opens only onto the route's open floor (:func:`_tile_rooms`: a first draft's side room
+opened onto a doorway's frame, an area of 61 m² on the defusal map's seed 1), and a flight rising through a room's
+slab stands against its wall with a doorway at its top (:func:`stealth_mansion`: a first draft's grand stair, its
+rails 1.5 m from the walls, cut a strip of the room above off, 40 m² on seed 1; against the wall but arriving at the
+hall's wall with no doorway, it cut off the room, 49-50 m² on every seed).
 
 Run: ``.venv/bin/python benchmarks/level_kinds.py OUT_DIR [--kinds subway forest] [--seeds 0 1 2]`` writes
 ``OUT_DIR/<kind>_s<seed>.obj``, the files ``benchmarks/analysis_quality.py --levels`` takes (which also takes the
@@ -8638,10 +8652,11 @@ def _furnish(s: _Solids, rng: np.random.Generator, room: tuple[float, float, flo
 
 
 def _doored_wall(s: _Solids, a: tuple[float, float], b: tuple[float, float], floor: float, y1: float,
-                 doors: list[tuple[float, float, str, float]], thickness: float = 0.2) -> None:
+                 doors: list[tuple[float, float, str, float]], thickness: float = 0.2, lintel: float = 2.3) -> None:
     """A wall along x or z from plan point ``a`` to ``b`` from 0.5 m under the floor at ``floor`` up to ``y1`` (as
-    :meth:`_Solids.wall`) whose doorways (start, width, leaf, into) have a lintel from 2.3 m over the floor (at 2.2 m
-    the presets' agent, 2 m tall, passes at some offsets to Recast's grid only) and a leaf 5 cm thick and 2.15 m high as a level's file keeps it:
+    :meth:`_Solids.wall`) whose doorways (start, width, leaf, into) have a lintel from ``lintel`` m over the floor (2.3
+    m for a door: at 2.2 m the presets' agent, 2 m tall, passes at some offsets to Recast's grid only; under 2 m a
+    vent or grate) and a leaf 5 cm thick and 2.15 m high as a level's file keeps it:
     "closed" fills the doorway on the wall's line, "ajar" stands open at 90 degrees from the hinge at the doorway's
     start into the side ``into`` (+1 or -1 across the wall), "open" has none."""
     s.wall(a, b, floor - 0.5, y1, [(start, width) for start, width, _, _ in doors], thickness)
@@ -8656,7 +8671,7 @@ def _doored_wall(s: _Solids, a: tuple[float, float], b: tuple[float, float], flo
 
     for start, width, leaf, into in doors:
         u0, u1 = lo + start, lo + start + width
-        box(u0, u1, fixed - thickness / 2, fixed + thickness / 2, floor + 2.3, y1)
+        box(u0, u1, fixed - thickness / 2, fixed + thickness / 2, floor + lintel, y1)
         if leaf == "closed":
             box(u0, u1, fixed - 0.025, fixed + 0.025, floor - 0.05, floor + 2.15)
         elif leaf == "ajar":
@@ -10257,6 +10272,572 @@ def arena_shooter(seed: int) -> trimesh.Trimesh:
         s.ground(0.0, width, 0.0, depth, level * storey, holes[level], 0.3)  # one box a run: the slab's 5-6 x fewer solids
     return s.mesh()
 
+
+def _rolling(rng: np.random.Generator, shape: tuple[int, int], riser: float = 0.15) -> np.ndarray:
+    """Floor heights (n, m) of tiles on gently rolling ground, in whole risers of ``riser`` m: two waves 40-80 tiles long
+    whose sum changes by under half a riser a tile each, floored to risers, so tiles sharing an edge differ by at most
+    one riser (0.15 m, under the presets' 0.4 m climb) and tiles sharing a corner by two; up to about 1.3 m of relief.
+    O(n m)."""
+    gi, gj = np.meshgrid(np.arange(shape[0]), np.arange(shape[1]), indexing="ij")
+    field = np.zeros(shape)
+    for _ in range(2):
+        angle, wave = rng.uniform(0.0, math.pi), rng.uniform(40.0, 80.0)
+        along = gi * math.cos(angle) + gj * math.sin(angle)
+        field += 0.45 * wave / (2 * math.pi) * np.sin(2 * math.pi * along / wave + rng.uniform(0.0, 2 * math.pi))
+    return np.floor(field) * riser
+
+
+def _tile_crates(rng: np.random.Generator, walk: np.ndarray, rects: list[tuple[int, int, int, int]]) -> None:
+    """Crates one tile square against the walls of routes drawn on tiles: along each rectangle (i0, i1, j0, j1) of
+    tiles of ``walk`` (n, m) 3 or more tiles wide, from 3 tiles after its start to 3 before its end, one every 4-7
+    tiles on alternate sides, each where rock stands behind it (so no crate closes another route's mouth); each
+    leaves two tiles of the route open beside it. O(total length)."""
+    for i0, i1, j0, j1 in rects:
+        along = 0 if i1 - i0 >= j1 - j0 else 1
+        (lo, hi), (c0, c1) = ((i0, i1), (j0, j1)) if along == 0 else ((j0, j1), (i0, i1))
+        if c1 - c0 < 3:
+            continue
+        k, side = lo + 3 + int(rng.integers(0, 3)), int(rng.integers(2))
+        while k < hi - 3:
+            c, behind = (c0, c0 - 1) if side == 0 else (c1 - 1, c1)
+            tile, back = ((k, c), (k, behind)) if along == 0 else ((c, k), (behind, k))
+            if 0 <= back[0] < walk.shape[0] and 0 <= back[1] < walk.shape[1] and not walk[back]:
+                walk[tile] = False
+            k, side = k + int(rng.integers(4, 8)), 1 - side
+
+def _tile_rooms(rng: np.random.Generator, walk: np.ndarray, rects: list[tuple[int, int, int, int]], tries: int) -> None:
+    """Side rooms off routes drawn on tiles: ``tries`` times, a room 3-5 x 3-4 tiles one tile of rock beyond a random
+    long side of a random rectangle (i0, i1, j0, j1) of ``rects``, opened to it by a door one tile wide, made in
+    ``walk`` (n, m) only where the room and a tile round it are all rock (so rooms never join anything but their
+    route) and the door opens onto open floor of the route (not a doorway's frame). O(tries)."""
+    n, m = walk.shape
+    for _ in range(tries):
+        i0, i1, j0, j1 = rects[int(rng.integers(len(rects)))]
+        along = 0 if i1 - i0 >= j1 - j0 else 1
+        (lo, hi), (c0, c1) = ((i0, i1), (j0, j1)) if along == 0 else ((j0, j1), (i0, i1))
+        w, d = int(rng.integers(3, 6)), int(rng.integers(3, 5))
+        if hi - lo < w + 2:
+            continue
+        k = int(rng.integers(lo + 1, hi - w))
+        e0, e1 = (c0 - 1 - d, c0 - 1) if rng.random() < 0.5 else (c1 + 1, c1 + 1 + d)  # the room's rows across
+        room = (k, k + w, e0, e1) if along == 0 else (e0, e1, k, k + w)
+        if room[0] < 2 or room[2] < 2 or room[1] > n - 2 or room[3] > m - 2:
+            continue
+        if walk[room[0] - 1:room[1] + 1, room[2] - 1:room[3] + 1].any():
+            continue
+        door, wall = k + int(rng.integers(w)), (c0 - 1 if e1 == c0 - 1 else c1)
+        inside = (c0 if wall == c0 - 1 else c1 - 1)  # the route's tile the door opens onto
+        if not walk[(door, inside) if along == 0 else (inside, door)]:
+            continue
+        walk[room[0]:room[1], room[2]:room[3]] = True
+        walk[(door, wall) if along == 0 else (wall, door)] = True
+
+def defusal(seed: int) -> trimesh.Trimesh:
+    """A bomb-defusal map on 2 m tiles (:func:`_tiles`), 92-100 x 86-94 tiles (184-200 x 172-188 m): the attackers' spawn
+    (a yard 12-14 x 7 tiles) in the middle of the south edge, the defenders' (10-12 x 6) in the middle of the north edge,
+    bombsite A (11-13 tiles square) in the north-west on a plateau 0.9 m up (six risers of 0.15 m, one a tile, on every
+    way in) and bombsite B (12-14 tiles square) in the north-east, each holding 5-8 crates (rock tiles 1-2 tiles a side).
+    Routes 4-6 m wide (2-3 tiles) unless named narrower: the mid lane straight north from spawn to spawn, narrowed to
+    one tile (a doorway, 2 m) at the mid doors; long A along the west edge from the attackers' yard, through a doorway
+    of one tile; short A (a catwalk 1 tile wide) from mid to the plateau's south-east corner; B tunnels from the yard
+    east and north, bent twice, into B's south side; a mid-to-B connector one tile wide; the defenders' ways to each
+    site. Along the routes 3 tiles wide, crates against the walls (:func:`_tile_crates`), and off every route up to
+    120 tries of side rooms behind one-tile doors (:func:`_tile_rooms`: corners, closets, a designer's "pit" or "car").
+    The rest is rock ridged at 50 degrees over 3 m walls.
+
+    Expected (written before the first run): one area. Traffic highest on the mid lane (the one straight way from spawn
+    to spawn) and in the defenders' and attackers' yards where every route fans out, then on the routes into the sites;
+    the sites' corners behind crates and the doorways' ends lowest. A designer expects the structure to show the five
+    routes between the yards as separate edges or chains (long A, short A, mid, connector, B tunnels), a junction where
+    each joins a site or mid, and chokepoints at the one-tile doorways; the sites' crates should leave loops round them.
+    """
+    rng = np.random.default_rng(seed)
+    n, m = int(rng.integers(92, 101)), int(rng.integers(86, 95))
+    walk, height = np.zeros((n, m), dtype=bool), np.zeros((n, m))
+    mid = n // 2 + int(rng.integers(-2, 3))
+    t_half, ct_half = int(rng.integers(6, 8)), int(rng.integers(5, 7))
+    walk[mid - t_half:mid + t_half, 1:8] = True  # the attackers' yard
+    walk[mid - ct_half:mid + ct_half, m - 7:m - 1] = True  # the defenders' yard
+    a_size, b_size = int(rng.integers(11, 14)), int(rng.integers(12, 15))
+    a0, aj = 2, m - 8 - a_size - int(rng.integers(2, 5))  # site A's south-west tile
+    b0, bj = n - 2 - b_size, m - 8 - b_size - int(rng.integers(4, 8))
+    walk[a0:a0 + a_size, aj:aj + a_size] = True
+    walk[b0:b0 + b_size, bj:bj + b_size] = True
+    for i0, j0, size in ((a0, aj, a_size), (b0, bj, b_size)):  # crates, kept off the sites' rims
+        for _ in range(int(rng.integers(5, 9))):
+            w, d = rng.integers(1, 3, 2)
+            ci, cj = i0 + int(rng.integers(3, size - 3 - w)), j0 + int(rng.integers(3, size - 3 - d))
+            walk[ci:ci + w, cj:cj + d] = False
+    doors_j = int(rng.integers(m // 2 + 3, m // 2 + 7))
+    lane = [(mid - 1, mid + 2, 8, m - 7)]  # rectangles (i0, i1, j0, j1) of routes 2-3 tiles wide
+    lane.append((2, 5, 3, aj))  # long A up the west edge
+    lane.append((2, mid - t_half, 3, 6))  # from the yard west to it
+    cross = int(rng.integers(m // 3, m // 2))
+    lane.append((mid + t_half, b0 + 4, cross - 6, cross - 3))  # B tunnels: north from the yard, east ...
+    lane.append((mid + t_half, mid + t_half + 4, 2, cross - 3))
+    lane.append((b0 + 2, b0 + 5, cross - 6, bj))  # ... then north into B
+    lane.append((mid - 2, mid + 2, m - 7, m - 6))
+    lane.append((a0 + a_size, mid - ct_half, m - 6, m - 3))  # the defenders' ways to A and B
+    lane.append((mid + ct_half, b0 + 3, m - 6, m - 3))
+    lane.append((b0 + 3, b0 + 6, bj + b_size, m - 3))
+    lane.append((a0 + 4, a0 + 7, aj + a_size, m - 3))
+    for i0, i1, j0, j1 in lane:
+        walk[i0:i1, j0:j1] = True
+    walk[mid - 1:mid + 2, doors_j] = False  # the mid doors: one tile open
+    walk[mid, doors_j] = True
+    walk[2:5, aj - 6] = False  # long A's doorway
+    walk[3, aj - 6] = True
+    short_j = cross + int(rng.integers(1, 3))
+    _paint(walk, np.array([mid - 2, short_j]), np.array([a0 + a_size + 1, short_j]), 0)  # short A, then north
+    _paint(walk, np.array([a0 + a_size + 1, short_j]), np.array([a0 + a_size + 1, aj + 1]), 0)
+    _paint(walk, np.array([a0 + a_size + 1, aj + 1]), np.array([a0 + a_size - 1, aj + 1]), 0)
+    conn_j = int(rng.integers(max(doors_j + 2, bj + 1), bj + b_size - 2))
+    _paint(walk, np.array([mid + 2, conn_j]), np.array([b0 - 1, conn_j]), 0)  # mid to B
+    walk[[0, -1], :] = walk[:, [0, -1]] = False
+    _tile_rooms(rng, walk, lane, 120)
+    _tile_crates(rng, walk, lane)
+    height[a0:a0 + a_size, aj:aj + a_size] = 0.9
+    for k in range(1, 7):  # six risers down every way off the plateau
+        ring = np.zeros_like(walk)
+        ring[max(a0 - k, 0):a0 + a_size + k, max(aj - k, 0):aj + a_size + k] = True
+        height[ring & (height == 0.0)] = round(0.9 - 0.15 * k, 2)
+    floor = np.where(walk, np.maximum(height, 0.0), np.nan)
+    _tiles(s := _Solids(), floor, 2.0, 3.0)
+    return s.mesh()
+
+
+def payload(seed: int) -> trimesh.Trimesh:
+    """A payload (escort) map on 2 m tiles (:func:`_tiles`) over gently rolling ground (:func:`_rolling`: up to about
+    1.3 m of relief, every step between tiles 0.15 m), 170-185 x 50-56 tiles (340-370 x 100-112 m): one road 10 m wide
+    (5 tiles) winding from the attackers' spawn yard at the west edge to the defenders' base at the east, legs along x
+    of 12-20 tiles and jogs along z of 6-12, widened into two checkpoint squares (8 tiles) a third and two thirds of
+    the way along it. Along most legs (each with probability 0.8) a side route: an alley 2 m wide 8 tiles (16 m) to
+    one side of the road's middle, joined to the road at both ends by cross alleys, and between road and alley 1-3
+    flanking buildings (rooms 4-6 x 3 tiles) each entered by a one-tile door from the road and another from the alley;
+    2-4 crates (rock tiles) in each checkpoint square, crates against the road's walls (:func:`_tile_crates`) and up to
+    200 tries of shops off it behind one-tile doors (:func:`_tile_rooms`). The rest is town blocks: rock ridged at 50
+    degrees over 3 m walls.
+
+    Expected (written before the first run): one area. Traffic highest along the road, above all on its middle third
+    (every trip between the two halves passes it), lower on the side routes and lowest in the flanking buildings' rooms
+    and the spawn's and base's far corners; the checkpoint squares busy. A designer expects the structure to follow the
+    road as one chain with loops where each side route leaves and rejoins it, a node in each flanking building on its
+    loop, and no terminals but in the yards' corners and the checkpoints' crate bays.
+    """
+    rng = np.random.default_rng(seed)
+    n, m = int(rng.integers(170, 186)), int(rng.integers(50, 57))
+    walk = np.zeros((n, m), dtype=bool)
+    points, x, z = [np.array([8, m // 2])], 8, m // 2
+    while x < n - 14:
+        x = min(x + int(rng.integers(12, 21)), n - 10)
+        points.append(np.array([x, z]))
+        if x < n - 14:
+            z = int(np.clip(z + rng.choice([-1, 1]) * int(rng.integers(6, 13)), 9, m - 10))
+            points.append(np.array([x, z]))
+    for a, b in pairwise(points):
+        _paint(walk, a, b, 2)
+    walk[1:9, m // 2 - 7:m // 2 + 7] = True  # the spawn yard
+    walk[n - 11:n - 1, z - 6:z + 6] = True  # the base
+    lengths = np.cumsum([0] + [int(np.abs(b - a).sum()) for a, b in pairwise(points)])
+    for share in (1 / 3, 2 / 3):  # the checkpoints, with crates
+        k = int(np.searchsorted(lengths, share * lengths[-1])) - 1
+        a, b = points[k], points[k + 1]
+        c = a + (b - a) * (share * lengths[-1] - lengths[k]) / max(lengths[k + 1] - lengths[k], 1)
+        ci, cj = int(c[0]), int(c[1])
+        walk[ci - 4:ci + 4, cj - 4:cj + 4] = True
+        for _ in range(int(rng.integers(2, 5))):
+            walk[ci + int(rng.integers(-3, 3)), cj + rng.choice([-3, 2])] = False
+    for a, b in pairwise(points):
+        if a[1] != b[1] or b[0] - a[0] < 12 or rng.random() > 0.8:
+            continue
+        side = int(rng.choice([-1, 1]))
+        j = a[1] + side * 8
+        if not 2 <= j < m - 2:
+            continue
+        i0, i1 = a[0] + 2, b[0] - 2
+        _paint(walk, np.array([i0, j]), np.array([i1, j]), 0)  # the alley
+        for i in (i0, i1):  # the cross alleys
+            _paint(walk, np.array([i, j]), np.array([i, a[1]]), 0)
+        edge = a[1] + side * 3  # the road's first tile row of rock on that side
+        i = i0 + 2
+        for _ in range(int(rng.integers(1, 4))):
+            w = int(rng.integers(4, 7))
+            if i + w > i1 - 1:
+                break
+            rows = sorted((edge + side, edge + side * 3))
+            walk[i:i + w, rows[0]:rows[1] + 1] = True
+            walk[i + int(rng.integers(0, w)), edge] = True  # door from the road
+            walk[i + int(rng.integers(0, w)), edge + side * 4] = True  # door onto the alley through its wall row
+            i += w + int(rng.integers(1, 3))
+    walk[[0, -1], :] = walk[:, [0, -1]] = False
+    road = [(min(a[0], b[0]) - 2, max(a[0], b[0]) + 3, min(a[1], b[1]) - 2, max(a[1], b[1]) + 3)
+            for a, b in pairwise(points)]
+    _tile_rooms(rng, walk, road, 200)
+    _tile_crates(rng, walk, road)
+    height = _rolling(rng, (n, m))
+    floor = np.where(walk, height, np.nan)
+    _tiles(s := _Solids(), floor, 2.0, float(height.max()) + 3.0)
+    return s.mesh()
+
+
+def tower_defence(seed: int) -> trimesh.Trimesh:
+    """A tower-defence maze on 2 m tiles (:func:`_tiles`): one lane 6 m wide (3 tiles) in 11-13 legs along x, each 40-46
+    tiles (80-92 m) long, switching back at alternate ends through the wall strips (3 tiles, 6 m thick) between legs,
+    from a spawn gate at the west end of the first leg to a base (8 x 6 tiles) past the end of the last. Build pads 2
+    tiles square, raised 0.3 m (one step, under the climb), are notched 2 tiles deep into the wall strips, every 3-5
+    tiles along them, alternately from the leg below and the leg above, so each is a dead-end bay off one leg. The
+    rest is rock ridged at 50 degrees over 3 m walls.
+
+    Expected (written before the first run): one area, one long chain with no loop. Traffic, all-pairs walking flow on a
+    chain, peaks in the middle legs and falls towards the spawn and the base (as on the platform tower of the
+    twenty-second round); the pads lowest. A designer expects the structure to be one chain of nodes down the lane,
+    a node at each turn, with a short spur (or terminal) into each pad, and nothing crossing the wall strips.
+    """
+    rng = np.random.default_rng(seed)
+    legs, length, w, t = int(rng.integers(11, 14)), int(rng.integers(40, 47)), 3, 3
+    n, m = 1 + w + length + w + 1, 1 + legs * w + (legs - 1) * t + 7
+    floor = np.full((n, m), np.nan)
+    for r in range(legs):
+        j0 = 1 + r * (w + t)
+        floor[1 + w:1 + w + length, j0:j0 + w] = 0.0
+        if r + 1 < legs:  # the turn to the next leg, at the east end after an even leg
+            i0 = 1 + w + length if r % 2 == 0 else 1
+            floor[i0:i0 + w, j0:j0 + 2 * w + t] = 0.0
+    floor[1:1 + w, 1:1 + w] = 0.0  # the spawn gate
+    last = 1 + (legs - 1) * (w + t)
+    base_i = 1 + w + length if (legs - 1) % 2 == 0 else 1
+    floor[base_i:base_i + w, last:m - 1] = 0.0
+    floor[base_i - 5 if base_i > 1 else 1:base_i + w if base_i > 1 else 9, m - 7:m - 1] = 0.0  # the base
+    for r in range(legs - 1):
+        j_low = 1 + r * (w + t) + w  # the strip's first row
+        i, below = 1 + w + int(rng.integers(1, 4)), bool(rng.integers(2))
+        while i + 2 <= w + length - 1:
+            j0 = j_low if below else j_low + t - 2
+            floor[i:i + 2, j0:j0 + 2] = 0.3
+            i, below = i + int(rng.integers(3, 6)), not below
+    _tiles(s := _Solids(), floor, 2.0, 3.0)
+    return s.mesh()
+
+
+def _hub_zone(rng: np.random.Generator, kind: str, size: int) -> np.ndarray:
+    """A themed zone of :func:`hub_world`: floor heights (size, size) of 2 m tiles, NaN for rock, entered from the middle
+    of its edge j = 0. ``kind`` "rooms" (a 3 x 3 grid of rooms 5 tiles square behind walls of one tile, joined by
+    one-tile doors along a random spanning tree: dead ends), "pillars" (open floor, 12 % of it single rock tiles),
+    "terraces" (a stepped hill rising a riser of 0.15 m a tile from the rim to 1.5 m, two rocks on it), "maze" (a
+    perfect maze of corridors one tile wide: a random spanning tree of cells two tiles apart) or "caves" (a random
+    spanning tree of tunnels three tiles wide between junctions on a jittered 5-tile lattice, chambers at three of
+    them). O(size^2 log size)."""
+    floor = np.full((size, size), np.nan)
+    centre = size // 2
+    if kind == "pillars":
+        floor[1:-1, 1:-1] = 0.0
+        rocks = rng.random((size, size)) < 0.12
+        rocks[centre - 2:centre + 3, :4] = False
+        floor[rocks] = np.nan
+    elif kind == "terraces":
+        floor[1:-1, 1:-1] = 0.0
+        gi, gj = np.meshgrid(np.arange(size), np.arange(size), indexing="ij")
+        rim = np.minimum.reduce([gi - 1, gj - 1, size - 2 - gi, size - 2 - gj])
+        floor[1:-1, 1:-1] = np.minimum(rim[1:-1, 1:-1], 10) * 0.15
+        for _ in range(2):
+            p = rng.integers(4, size - 4, 2)
+            floor[p[0]:p[0] + 2, p[1]:p[1] + 2] = np.nan
+    else:
+        step, first, brush = {"rooms": (6, 1, 0), "maze": (2, 1, 0), "caves": (5, 2, 1)}[kind]
+        span = range(first, first + 3 * step, step) if kind == "rooms" else range(first, size - 2, step)
+        cells = [(a, b) for a in span for b in span]
+        index = {c: k for k, c in enumerate(cells)}
+        edges = [(index[c], index[c[0] + da, c[1] + db]) for c in cells for da, db in ((step, 0), (0, step))
+                 if (c[0] + da, c[1] + db) in index]
+        weight = sp.coo_matrix((rng.uniform(1.0, 2.0, len(edges)), tuple(np.array(edges).T)), shape=(len(cells),) * 2)
+        tree = minimum_spanning_tree(weight.tocsr()).tocoo()
+        walk = np.zeros((size, size), dtype=bool)
+        points = np.array(cells) + (rng.integers(-1, 2, (len(cells), 2)) if kind == "caves"
+                                    else 2 if kind == "rooms" else 0)  # rooms: their centres
+        for u, v in zip(tree.row, tree.col):
+            _paint(walk, points[u], points[v], brush)
+        if kind == "rooms":
+            for a, b in cells:
+                walk[a:a + 5, b:b + 5] = True
+        if kind == "caves":
+            for k in rng.choice(len(cells), size=3, replace=False):
+                walk[points[k][0] - 2:points[k][0] + 3, points[k][1] - 2:points[k][1] + 3] = True
+        near = points[np.argmin(np.abs(points[:, 0] - centre) + points[:, 1])]
+        _paint(walk, np.array([centre, 1]), near, brush)
+        walk[[0, -1], :] = walk[:, [0, -1]] = False
+        floor[walk] = 0.0
+    floor[centre - 1:centre + 1, :2] = 0.0  # the entrance, two tiles wide
+    return floor
+
+
+def hub_world(seed: int) -> trimesh.Trimesh:
+    """A hub world on 2 m tiles (:func:`_tiles`): a round plaza 10-12 tiles in radius (40-48 m across) with a fountain
+    (rock 2 tiles square) in its middle and four portals on its rim, one a side: each an arch (a lintel 2.6 m up,
+    ridged at 50 degrees) over a wing 2 tiles wide and 8-12 long out to a themed zone 26-30 tiles square
+    (:func:`_hub_zone`), a dead-end cluster of one of five kinds (rooms behind doors, a pillar field, a stepped hill,
+    a maze, caves), four of the five drawn at random, one a wing. The rest is rock ridged at 50 degrees over 3 m walls.
+
+    Expected (written before the first run): one area, a tree of five parts joined only at the plaza. Traffic highest
+    on the plaza and in the four wings (every trip between zones crosses the plaza through two wings), then at each
+    zone's entrance; lowest in the zones' dead ends (the maze's and rooms' far ends, the hill's top). A designer
+    expects the structure to be a star: a loop or hub round the fountain, each wing one edge through its portal (a
+    chokepoint), and in each zone its own pattern: a tree in the maze and caves, a node a room, a coarse net among the
+    pillars and on the hill.
+    """
+    rng = np.random.default_rng(seed)
+    radius, wing, size = int(rng.integers(10, 13)), int(rng.integers(8, 13)), int(rng.integers(26, 31))
+    half = radius + wing + size + 1
+    n = 2 * half + 1
+    floor = np.full((n, n), np.nan)
+    gi, gj = np.meshgrid(np.arange(n), np.arange(n), indexing="ij")
+    floor[(gi - half) ** 2 + (gj - half) ** 2 <= radius ** 2] = 0.0
+    floor[half - 1:half + 1, half - 1:half + 1] = np.nan  # the fountain
+    kinds = rng.permutation(["rooms", "pillars", "terraces", "maze", "caves"])[:4]
+    s = _Solids()
+    for turn, kind in enumerate(kinds):
+        local = np.full((n, n), np.nan)  # the wing and zone built south of the plaza (j < half), then turned
+        local[half - 1:half + 1, half - radius - wing:half - radius + 1] = 0.0
+        zone = _hub_zone(rng, str(kind), size)
+        z0 = half - radius - wing - size
+        local[half - size // 2:half - size // 2 + size, z0:z0 + size] = zone[:, ::-1]
+        turned = np.rot90(local, turn)
+        floor = np.where(np.isnan(floor), turned, floor)
+        # the portal's arch on the plaza's rim, turned with the wing: (x0, x1, z0, z1) in tiles about the centre
+        rect = np.array([[half - 1, half - radius - 1], [half + 1, half - radius]], dtype=float)
+        for _ in range(turn):
+            rect = np.array([[n - r[1], r[0]] for r in rect])
+        lo, hi = rect.min(axis=0) * 2.0, rect.max(axis=0) * 2.0
+        _ridged(s, lo[0], hi[0], lo[1], hi[1], 2.6, 3.0)
+    floor[[0, -1], :] = floor[:, [0, -1]] = np.nan
+    _tiles(s, floor, 2.0, 3.0)
+    return s.mesh()
+
+
+def _flight_through(s: _Solids, foot: np.ndarray, heading: np.ndarray, width: float, y0: float, y1: float,
+                    holes: list[tuple[float, float, float, float]]) -> tuple[float, float, float, float]:
+    """A flight from ``y0`` up to ``y1`` (risers of at most 0.18 m, treads 0.30 m) along the unit ``heading`` (x or z)
+    from the plan point ``foot`` (the middle of its first step's near side), rising through a hole it adds to
+    ``holes`` (the upper slab's), whose rails (1.1 m, :func:`_rail_ring`) are open only at its top, where it meets the
+    upper floor head-on. Returns the flight's plan (x0, x1, z0, z1)."""
+    steps = math.ceil((y1 - y0) / 0.18 - 1e-9)
+    top = foot + heading * 0.30 * steps
+    run = _flight_to(s, top, heading, width, y0, y1)
+    side = np.array([-heading[1], heading[0]]) * width / 2
+    corners = np.array([foot - side, foot + side, top - side, top + side])
+    (x0, z0), (x1, z1) = corners.min(axis=0), corners.max(axis=0)
+    holes.append((x0, x1, z0, z1))
+    open_side = {(1.0, 0.0): "east", (-1.0, 0.0): "west", (0.0, 1.0): "north", (0.0, -1.0): "south"}
+    _rail_ring(s, x0 - 0.1, x1 + 0.1, z0 - 0.1, z1 + 0.1, y1, {open_side[tuple(heading)]: [(0.0, run + width)]})
+    return x0, x1, z0, z1
+
+
+def metroidvania(seed: int) -> trimesh.Trimesh:
+    """A metroidvania's castle as a grid of cells, 9-11 across (x) and 5-6 storeys (y, 5 m apart), each cell a room 16 m
+    along x and 12 m deep (z), inside outer walls. Cells are joined along a random spanning tree of the grid plus a
+    quarter of the other neighbour pairs (the backtracking loops): side by side through a doorway 2 m wide in the
+    partition (lintel 2.3 m up, :func:`_doored_wall`) or, with probability 0.3, by no partition at all (a hall two
+    cells long); one above the other by a flight (risers 0.18 m, 28 of them, 8.4 m) or, a third of the time, a ramp
+    at 25 degrees (10.7 m), both 2.4 m wide along the lower cell's back wall (from an even storey) or front wall (from
+    an odd one, so a cell's flight up never stands in the hole of its flight from below) and rising through a railed
+    hole in the slab above (:func:`_flight_through`). Each cell holds 0-2 crates (ridged, 1.2 m) clear of its doors and
+    shafts.
+
+    Expected (written before the first run): one area. Traffic highest on the vertical links of the middle columns and
+    on the cells of the middle storeys that the spanning tree makes cut vertices, lowest in dead-end cells (a cell of
+    one link); with the loops few cells are dead ends. A designer expects one structure node or two a room, an edge
+    through every door and up every flight or ramp (a chokepoint where a link is a bridge of the tree), loops where
+    the extra links close them, and a terminal in each dead-end cell.
+    """
+    rng = np.random.default_rng(seed)
+    cols, storeys, cell_x, cell_z, storey = int(rng.integers(9, 12)), int(rng.integers(5, 7)), 16.0, 12.0, 5.0
+    cells = [(c, r) for c in range(cols) for r in range(storeys)]
+    index = {c: k for k, c in enumerate(cells)}
+    pairs = [(index[c, r], index[c + dc, r + dr]) for c, r in cells for dc, dr in ((1, 0), (0, 1))
+             if (c + dc, r + dr) in index]
+    weight = sp.coo_matrix((rng.uniform(1.0, 2.0, len(pairs)), tuple(np.array(pairs).T)), shape=(len(cells),) * 2)
+    tree = minimum_spanning_tree(weight.tocsr()).tocoo()
+    links = set(zip(tree.row.tolist(), tree.col.tolist()))
+    links |= {p for p in pairs if p not in links and (p[1], p[0]) not in links and rng.random() < 0.25}
+    links = {tuple(sorted(p)) for p in links}
+    s = _Solids()
+    width, depth = cols * cell_x, cell_z
+    holes: dict[int, list[tuple[float, float, float, float]]] = {r: [] for r in range(storeys)}
+    keep: dict[tuple[int, int], list[tuple[float, float, float, float]]] = {c: [] for c in cells}
+    for u, v in sorted(links):
+        (c, r), (c2, r2) = cells[u], cells[v]
+        if r2 == r + 1:  # a flight or ramp along the back wall (even storeys) or front wall (odd) of the lower cell
+            heading = np.array([1.0, 0.0]) if rng.random() < 0.5 else np.array([-1.0, 0.0])
+            x_start = c * cell_x + (2.5 if heading[0] > 0 else cell_x - 2.5)
+            foot = np.array([x_start, depth - 1.7 if r % 2 == 0 else 1.7])
+            y0, y1 = r * storey, (r + 1) * storey
+            if rng.random() < 1 / 3:
+                run = storey / math.tan(math.radians(25.0))
+                top = foot + heading * run
+                s.ramp(foot, top, 2.4, y0, y1)
+                x0, x1 = sorted((foot[0], top[0]))
+                plan = (x0, x1, foot[1] - 1.2, foot[1] + 1.2)
+                holes[r + 1].append(plan)
+                _rail_ring(s, x0 - 0.1, x1 + 0.1, plan[2] - 0.1, plan[3] + 0.1, y1,
+                           {"east" if heading[0] > 0 else "west": [(0.0, 40.0)]})
+            else:
+                plan = _flight_through(s, foot, heading, 2.4, y0, y1, holes[r + 1])
+            for level in (r, r + 1):
+                keep[c, level].append((plan[0] - 2.0, plan[1] + 2.0, plan[2] - 2.0, plan[3] + 2.0))
+    for r in range(storeys):
+        y = r * storey
+        for c in range(1, cols):  # partitions
+            x = c * cell_x
+            link = tuple(sorted((index[c - 1, r], index[c, r])))
+            if link in links and rng.random() < 0.3:
+                continue
+            doors = []
+            if link in links:
+                start = float(rng.uniform(1.0, depth - 4.5))
+                doors = [(start, 2.0, "open", 1)]
+                for cc in (c - 1, c):
+                    keep[cc, r].append((x - 3.0, x + 3.0, start - 1.0, start + 3.0))
+            _doored_wall(s, (x, 0.0), (x, depth), y, y + storey - 0.3, doors)
+        for c in range(cols):
+            for _ in range(int(rng.integers(0, 3))):
+                p = rng.uniform([c * cell_x + 1.5, 1.0], [(c + 1) * cell_x - 3.0, depth - 4.0])
+                if _clear(p[0] - 1.5, p[0] + 3.0, p[1] - 1.5, p[1] + 3.0, keep[c, r]):
+                    _ridged(s, p[0], p[0] + 1.5, p[1], p[1] + 1.5, y - 0.1, y + 1.2)
+                    keep[c, r].append((p[0], p[0] + 1.5, p[1], p[1] + 1.5))
+        s.ground(0.0, width, 0.0, depth, y, holes[r], 0.3)
+    for a, b in (((0.0, 0.0), (width, 0.0)), ((0.0, depth), (width, depth)), ((0.0, 0.0), (0.0, depth)),
+                 ((width, 0.0), (width, depth))):
+        s.wall(a, b, -0.5, storeys * storey, thickness=0.4)
+    return s.mesh()
+
+
+def stealth_mansion(seed: int) -> trimesh.Trimesh:
+    """A stealth game's mansion in its grounds, 120-140 x 80-95 m inside a boundary wall 3 m high with a gate 4 m wide
+    in its south side. The house, 64-74 x 22.2 m, has two storeys 4 m apart on a plinth: its ground floor is 1.08 m up
+    (six risers of 0.18 m up the front steps, the same down the back steps from the servants' corridor by the
+    kitchen), over a crawlspace 0.78 m high whose grates (openings 0.9 m wide, 0.6 m high) pierce the plinth's front
+    and back every 7-10 m. On each storey, along x: front rooms 9.5 m deep (7-11 m wide; the entrance hall, 10 m, behind
+    the front door), the hall 4 m wide the whole length, back rooms 6.8 m deep, and behind them the servants'
+    corridor 1.7 m wide, joined to the hall only by a service passage 4 m wide at the west end and to every back room
+    by a door; doors 1.6 m wide (lintels 2.3 m up, :func:`_doored_wall`) from each front room to the hall, from 60 % of
+    the back rooms to the hall, between neighbouring rooms 40 % of the time; half the other partitions hold a vent
+    (an opening 0.8 m wide and 0.9 m high, too low for the agent). Two flights (risers 0.18 m, 1.6 m wide) rise
+    through railed holes (:func:`_flight_through`): the grand stair in the entrance hall against its east partition,
+    arriving head-on at a doorway into the upper hall, and the servants' stair in the service passage, arriving at the
+    upper servants' corridor. Rooms are furnished (:func:`_furnish`), under a roof ridged at 50 degrees
+    (:func:`_gable`). The front garden holds four hedged parterres (hedges 1.8 m high, ridged, each entered by one gap
+    2 m wide, a statue in the middle) either side of the drive; the grounds 20-30 trees (where they fit) and, behind
+    the house, two outbuildings (rooms 8 x 6 m, one door each).
+
+    Expected (written before the first run): one area for the grounds and both storeys (the crawlspace and the vents
+    hold no floor: no way under the house or through a vent). Traffic highest on the drive and the front steps, the
+    ground floor's hall (the spine of the house), the grand stair and the back steps (the second way in); the
+    servants' corridors middling, a parallel way to each hall; lowest in the parterres, the outbuildings and the end
+    rooms reached through other rooms, and on the upper storey, reached by two stairs only. A designer expects the
+    structure to follow each hall and servants' corridor as two parallel chains joined through the back rooms and the
+    service passage, a node in each room and each parterre, an edge up each stair, and the garden as a coarse net
+    round the house.
+    """
+    rng = np.random.default_rng(seed)
+    s = _Solids()
+    gx, gz = rng.uniform(120.0, 140.0), rng.uniform(80.0, 95.0)
+    w, d, floor, storey = rng.uniform(64.0, 74.0), 22.2, 1.08, 4.0
+    upper, y1 = floor + storey, floor + 2 * storey - 0.3  # the upper storey's floor, the walls' top
+    hx0, hz0 = (gx - w) / 2, gz * 0.45
+    hx1, hz1 = hx0 + w, hz0 + d
+    door_x = (hx0 + hx1) / 2 + rng.uniform(-6.0, 6.0)
+    for a, b, doors in (((0.0, 0.0), (gx, 0.0), [(gx / 2 - 2.0, 4.0)]), ((0.0, gz), (gx, gz), []),
+                        ((0.0, 0.0), (0.0, gz), []), ((gx, 0.0), (gx, gz), [])):
+        s.wall(a, b, -0.5, 3.0, doors, thickness=0.4)
+    for z in (hz0, hz1):  # the plinth's long sides, pierced by grates into the crawlspace
+        grates = [(float(u), 0.9, "open", 1) for u in np.arange(rng.uniform(2.0, 5.0), w - 2.0, rng.uniform(7.0, 10.0))]
+        _doored_wall(s, (hx0, z), (hx1, z), 0.0, floor - 0.3, grates, 0.4, lintel=0.6)
+    for x in (hx0, hx1):
+        s.wall((x, hz0), (x, hz1), -0.5, floor - 0.3, thickness=0.4)
+    s.box(hx0, hx1, floor - 0.3, floor, hz0, hz1)  # the ground floor's slab over the crawlspace
+    front, hall, back = hz0 + 9.5, hz0 + 13.5, hz0 + 20.3
+    kitchen_x, stair_x, passage = hx1 - 4.0, door_x + 4.1, hx0 + 4.0  # the grand stair against the partition
+    _flight_to(s, np.array([door_x, hz0]), np.array([0.0, 1.0]), 3.0, 0.0, floor)
+    _flight_to(s, np.array([kitchen_x, hz1]), np.array([0.0, -1.0]), 2.0, 0.0, floor)
+    holes: list[tuple[float, float, float, float]] = []
+    grand = _flight_through(s, np.array([stair_x, hz0 + 1.8]), np.array([0.0, 1.0]), 1.6, floor, upper, holes)
+    service = _flight_through(s, np.array([hx0 + 1.0, hall - 0.5]), np.array([0.0, 1.0]), 1.6, floor, upper, holes)
+    s.ground(hx0, hx1, hz0, hz1, upper, holes, 0.3)
+    for level, y in enumerate((floor, upper)):
+        top = y + storey - 0.3 if level == 0 else y1
+        outer = ([[(door_x - 1.0 - hx0, 2.0, "open", 1)], [(kitchen_x - 0.8 - hx0, 1.6, "open", 1)]] if level == 0
+                 else [[], []])
+        _doored_wall(s, (hx0, hz0), (hx1, hz0), y, top, outer[0], 0.4)
+        _doored_wall(s, (hx0, hz1), (hx1, hz1), y, top, outer[1], 0.4)
+        for x in (hx0, hx1):
+            _doored_wall(s, (x, hz0), (x, hz1), y, top, [], 0.4)
+
+        def cuts(x0: float, x1: float) -> list[float]:
+            """Partitions from x0 to x1 at 7-11 m, the last room up to 14 m wide."""
+            xs = [x0]
+            while x1 - xs[-1] > 14.0:
+                xs.append(xs[-1] + rng.uniform(7.0, 11.0))
+            return [*xs, x1]
+
+        entrance = (door_x - 5.0, door_x + 5.0)  # the entrance hall (the grand stair's landing above it)
+        west = [2 * entrance[0] - x for x in cuts(entrance[0], 2 * entrance[0] - hx0)][::-1]  # mirrored from hx0
+        front_xs = [*west, *cuts(entrance[1], hx1)]
+        doors: dict[float, list[tuple[float, float, str, float]]] = {front: [], hall: [], back: []}  # wall z -> doors
+        for z0, z1, xs in ((hz0, front, front_xs), (hall, back, cuts(passage, hx1))):
+            for x0, x1 in pairwise(xs):
+                approach = [(h[0] - 1.0, h[1] + 1.0, h[2] - 1.5, h[3] + 1.0) for h in (grand, service)]
+                if z0 == hz0 or rng.random() < 0.6:  # a door to the hall
+                    u = rng.uniform(x0 + 0.6, (door_x - 2.6) if (x0, x1) == entrance else x1 - 2.2)
+                    doors[z1 if z0 == hz0 else z0].append((u, 1.6, "open", 1))
+                    approach.append((u - 0.5, u + 2.1, z1 - 1.5, z1) if z0 == hz0 else (u - 0.5, u + 2.1, z0, z0 + 1.5))
+                if level and (x0, x1) == entrance:  # the grand stair's doorway, head-on at its top
+                    doors[front].append((stair_x - 0.9, 1.8, "open", 1))
+                if z0 == hall:  # a door to the servants' corridor
+                    u = rng.uniform(x0 + 0.6, x1 - 2.2)
+                    doors[back].append((u, 1.6, "open", 1))
+                    approach.append((u - 0.5, u + 2.1, z1 - 1.5, z1))
+                if level == 0 and (x0, x1) == entrance:
+                    approach.append((door_x - 1.5, door_x + 1.5, z0, z0 + 2.5))
+                _furnish(s, rng, (x0, x1, z0, z1), y, approach, int(rng.integers(2, 5)))
+            for x in xs[1:-1]:  # partitions: a door, a vent too low to walk, or neither
+                pick, u = rng.random(), rng.uniform(0.8, z1 - z0 - 2.4)
+                if pick < 0.4:
+                    _doored_wall(s, (x, z0), (x, z1), y, top, [(u, 1.6, "open", 1)])
+                else:
+                    _doored_wall(s, (x, z0), (x, z1), y, top, [(u, 0.8, "open", 1)] if pick < 0.7 else [], lintel=0.9)
+        for z, x0 in ((front, hx0), (hall, passage), (back, passage)):
+            _doored_wall(s, (x0, z), (hx1, z), y, top, [(u - x0, wd, leaf, into) for u, wd, leaf, into in doors[z]])
+        s.wall((passage, hall), (passage, back), y - 0.5, top)  # the service passage's side
+    _gable(s, hx0 - 0.3, hx1 + 0.3, hz0 - 0.3, hz1 + 0.3, y1)
+    holes: list[tuple[float, float, float, float]] = []  # the ground runs on under the house: the crawlspace
+    taken = [(hx0 - 4.0, hx1 + 4.0, hz0 - 8.0, hz1 + 5.0), (gx / 2 - 5.0, gx / 2 + 5.0, 0.0, hz0)]
+    for side in (-1, 1):  # the parterres either side of the drive
+        for row in range(2):
+            x0 = gx / 2 + side * 8.0 if side > 0 else gx / 2 - 8.0 - 16.0
+            z0 = 6.0 + row * (hz0 - 12.0) / 2
+            x1, z1 = x0 + 16.0, z0 + (hz0 - 12.0) / 2 - 4.0
+            gap = rng.uniform(x0 + 2.0, x1 - 4.0)
+            for c0, c1, z in ((x0 - 0.4, x1 + 0.4, z0), (x0 - 0.4, gap, z1), (gap + 2.0, x1 + 0.4, z1)):
+                _ridged(s, c0, c1, z - 0.4, z + 0.4, -0.1, 1.8)
+            for x in (x0, x1):
+                _ridged(s, x - 0.4, x + 0.4, z0 + 0.4, z1 - 0.4, -0.1, 1.8)
+            _ridged(s, (x0 + x1) / 2 - 0.5, (x0 + x1) / 2 + 0.5, (z0 + z1) / 2 - 0.5, (z0 + z1) / 2 + 0.5, -0.1, 2.5)
+            taken.append((x0 - 1.0, x1 + 1.0, z0 - 1.0, z1 + 1.0))
+    for k in range(2):  # the outbuildings behind the house
+        for _ in range(50):
+            x0, z0 = rng.uniform(4.0, gx - 12.0), rng.uniform(hz1 + 6.0, gz - 10.0)
+            if _clear(x0 - 3.0, x0 + 11.0, z0 - 3.0, z0 + 9.0, taken):
+                break
+        taken.append((x0 - 3.0, x0 + 11.0, z0 - 3.0, z0 + 9.0))
+        _doored_wall(s, (x0, z0), (x0 + 8.0, z0), 0.0, 3.0, [(rng.uniform(1.0, 5.4), 1.6, "open", 1)])
+        _doored_wall(s, (x0, z0 + 6.0), (x0 + 8.0, z0 + 6.0), 0.0, 3.0, [])
+        for x in (x0, x0 + 8.0):
+            _doored_wall(s, (x, z0), (x, z0 + 6.0), 0.0, 3.0, [])
+        _gable(s, x0 - 0.3, x0 + 8.3, z0 - 0.3, z0 + 6.3, 3.0)
+    _trees(s, rng, int(rng.integers(20, 31)), gx, gz, taken, (0.2, 0.4), 8.0)
+    s.ground(0.0, gx, 0.0, gz, 0.0, holes)
+    return s.mesh()
+
+
 KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
     "subway": subway, "archipelago": archipelago, "car_park": car_park,
     "forest": forest, "stadium": stadium, "harbour": harbour,
@@ -10289,6 +10870,8 @@ KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
     "prop_pile": prop_pile, "beams": beams,
     "moba": moba, "capture_flag": capture_flag, "platform_tower": platform_tower,
     "diagonal_dungeon": diagonal_dungeon, "battle_royale": battle_royale, "arena_shooter": arena_shooter,
+    "stealth_mansion": stealth_mansion, "defusal": defusal, "payload": payload, "metroidvania": metroidvania,
+    "tower_defence": tower_defence, "hub_world": hub_world,
 }
 """Kind name -> generator (seed -> Y-up mesh in metres)."""
 
