@@ -1,4 +1,4 @@
-"""The ninth to twenty-second rounds' level kinds (``benchmarks/level_kinds.py``) build the levels their docstrings describe.
+"""The ninth to twenty-third rounds' level kinds (``benchmarks/level_kinds.py``) build the levels their docstrings describe.
 
 Smoke tests of quick generators (most well under a second each to build and to give a navmesh; the theatre's and
 the cliff dwellings' thousands of hulls take about 5 s of CPU): the connected areas
@@ -31,6 +31,7 @@ SAME_SEED_KINDS = (
     "railyard", "craters", "monastery", "estate", "dam", "garden", "cistern", "glacier", "medina", "radial_town",
     "bazaar", "stilt_village", "nursery", "drop_downs", "house", "kit_arena", "backdrop", "paper_walls",
     "corridor_shooter", "moba", "capture_flag", "platform_tower", "diagonal_dungeon", "battle_royale", "arena_shooter",
+    "stealth_mansion", "defusal", "payload", "metroidvania", "tower_defence", "hub_world",
 )
 
 
@@ -991,3 +992,55 @@ def test_the_arena_shooters_three_storeys_are_one_area_up_its_ramps(kinds):
     y = nav.centres[:, 1] - 0.2
     for storey in (0.0, 4.5, 9.0):
         assert nav.areas[np.abs(y - storey) < 0.2].sum() > 5000.0, storey
+
+
+def test_the_mansions_grounds_and_two_storeys_are_one_area_and_its_crawlspace_holds_no_floor(kinds):
+    """One area: the grounds, the ground floor (1.08 m) and the upper storey (5.08 m, up the grand and servants'
+    stairs); the crawlspace under the house (0.78 m high) and the vents (0.9 m) hold no floor, so no polygon lies
+    under the ground floor inside the house's plan."""
+    label, nav = areas(kinds["stealth_mansion"](0))
+    assert label.max() == 0
+    y = nav.centres[:, 1] - 0.2
+    assert nav.areas[np.abs(y - 1.08) < 0.15].sum() > 600.0 and nav.areas[np.abs(y - 5.08) < 0.15].sum() > 600.0
+    house = np.abs(y - 5.08) < 0.15
+    x, z = nav.centres[:, 0], nav.centres[:, 2]
+    inside = (x > x[house].min()) & (x < x[house].max()) & (z > z[house].min()) & (z < z[house].max())
+    assert not (inside & (y < 0.5)).any()
+
+
+def test_the_defusal_maps_routes_sites_and_side_rooms_are_one_area(kinds):
+    """One area with floor on bombsite A's plateau (0.9 m up six risers of 0.15 m) and on the ground: no side room
+    opens onto a doorway's frame."""
+    label, nav = areas(kinds["defusal"](1))
+    assert label.max() == 0
+    y = nav.centres[:, 1] - 0.2
+    assert nav.areas[np.abs(y - 0.9) < 0.1].sum() > 300.0
+
+
+def test_the_payload_road_winds_over_300_m_as_one_area(kinds):
+    """The road, its side alleys, flanking buildings and shops are one area from the spawn yard to the base over 300 m
+    apart, on rolling ground whose tiles differ by at most a riser of 0.15 m."""
+    label, nav = areas(kinds["payload"](0))
+    assert label.max() == 0 and np.ptp(nav.centres[:, 0]) > 300.0
+
+
+def test_the_metroidvanias_cells_are_one_area_on_every_storey(kinds):
+    """Doors, flights and ramps join every cell: one area with floor on each storey 5 m apart."""
+    label, nav = areas(kinds["metroidvania"](1))
+    assert label.max() == 0
+    y = nav.centres[:, 1] - 0.2
+    for storey in range(5):
+        assert nav.areas[np.abs(y - 5.0 * storey) < 0.2].sum() > 500.0, storey
+
+
+def test_the_tower_defence_lane_is_one_area_with_its_pads(kinds):
+    """One lane switching back between wall strips: one area, and the build pads (0.3 m up, one step) in it."""
+    label, nav = areas(kinds["tower_defence"](0))
+    assert label.max() == 0
+    assert (np.abs(nav.centres[:, 1] - 0.2 - 0.3) < 0.05).sum() > 20
+
+
+def test_the_hub_worlds_plaza_and_zones_are_one_area(kinds):
+    """The plaza, four wings through their portals (lintels 2.6 m up) and four dead-end zones: one area."""
+    label, _ = areas(kinds["hub_world"](1))
+    assert label.max() == 0
