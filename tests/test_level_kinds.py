@@ -1,9 +1,9 @@
 """The ninth to twenty-third rounds' level kinds (``benchmarks/level_kinds.py``) build the levels their docstrings describe.
 
 Smoke tests of quick generators (most well under a second each to build and to give a navmesh; the theatre's and
-the cliff dwellings' thousands of hulls take about 5 s of CPU): the connected areas
-the presets' agent finds are the ones each level is made to have, so a door that closes or a crawlway that
-opens shows here before a benchmark figure moves.
+the cliff dwellings' thousands of hulls take about 5 s of CPU, the metroidvania's flights 1-2 s a build): the connected
+areas the presets' agent finds are the ones each level is made to have, so a door that closes or a crawlway that opens
+shows here before a benchmark figure moves.
 """
 
 from __future__ import annotations
