@@ -62,6 +62,7 @@ import networkx as nx
 import numpy as np
 import trimesh
 from scipy import sparse
+from scipy.sparse.csgraph import breadth_first_order, connected_components
 from scipy.spatial import cKDTree
 from scipy.spatial.distance import pdist, squareform
 
@@ -221,7 +222,7 @@ def where_between(caster: RayCaster, closest: Closest, agent: AgentConfig) -> st
         middles = pairs.mean(axis=1)
         apart = squareform(pdist(middles[:, [0, 2]]))
         linked = apart < width + closest.spacing.max()
-        run = sparse.csgraph.breadth_first_order(sparse.csr_matrix(linked), 0, return_predecessors=False)
+        run = breadth_first_order(sparse.csr_matrix(linked), 0, return_predecessors=False)
         within = apart[np.ix_(run, run)]
         first, last = run[np.array(np.unravel_index(int(np.argmax(within)), within.shape))]
         if apart[first, last] >= width:
@@ -317,7 +318,7 @@ def body_winding(mesh: trimesh.Trimesh) -> np.ndarray:
     forward = np.bincount(edge, weights=directed[:, 0] < directed[:, 1], minlength=len(edges))
     owner = np.repeat(np.arange(len(faces)), 3)
     incidence = sparse.csr_matrix((np.ones(len(edge)), (owner, edge)), shape=(len(faces), len(edges)))
-    bodies, body = sparse.csgraph.connected_components(incidence @ incidence.T, directed=False)
+    bodies, body = connected_components(incidence @ incidence.T, directed=False)
     sound = np.bincount(body[owner], weights=(uses[edge] != 2) | (forward[edge] != 1), minlength=bodies) == 0
     corners = np.asarray(mesh.triangles, dtype=np.float64)
     corners = corners - corners.reshape(-1, 3).mean(axis=0)  # about the middle: the volumes' sums lose less
