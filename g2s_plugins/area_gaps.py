@@ -29,9 +29,26 @@ deck), the pair on one floor is named if it is closer with vertical offsets
 counted ``height / max_climb`` times: a designer fixes the door, not the
 storeys.
 
+*The place* (:func:`where_between`): along a wall every edge point is about
+as close to the other side as any, so the closest pair alone is any of them
+(a wall's corner 4 m from the door the agent does not fit). On one floor,
+the pairs within a spacing of the closest are tested with rays
+(:func:`open_between`): the closest that faces an opening (nothing across at
+half the agent's height, ground all along under it) is named, a door or a
+plank narrower than the agent; with none, the run of such pairs, a wall or
+a chasm, from end to end. Measured on generated rooms parted by a wall 10-30
+m long with one door 0.6 or 0.8 m wide, planks over a chasm, and walls and
+chasms with no way across (docs/analysis_quality.md, "The place the
+disconnected-areas warning names"). *A floor shut inside a closed solid*
+(:func:`shut_in`) is read from the closed bodies' own winding
+(:func:`body_winding`), so that a mesh exported inside out reads as the same
+mesh wound right.
+
 Complexity: O(e log e) for the e edge points of the compared areas (a k-d
 tree per pair of areas), e = the areas' polygon perimeter / ``cell_size`` on
-the navmesh route, their sample count on the sampling route.
+the navmesh route, their sample count on the sampling route; with the mesh,
+O(m log m) for its m faces' bodies and up to 9 rays for each of at most
+``MAX_PLACE_CANDIDATES`` pairs.
 """
 
 from __future__ import annotations
@@ -39,34 +56,79 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Sequence
 from functools import partial
+from typing import NamedTuple
 
 import networkx as nx
 import numpy as np
 import trimesh
+from scipy import sparse
+from scipy.sparse.csgraph import breadth_first_order, connected_components
 from scipy.spatial import cKDTree
+from scipy.spatial.distance import pdist, squareform
 
 from g2s_core.config import AgentConfig
 from g2s_core.disconnected import area_summary, xyz
 from g2s_core.model import NavMesh
-from g2s_plugins._raycasting import COMPASS, EPSILON, UP, RayCaster, hit_from_behind
+from g2s_plugins._raycasting import COMPASS, EPSILON, UP, Hits, RayCaster, hit_from_behind
 from g2s_plugins.play_space import node_polygons
 
-Rim = Callable[[nx.Graph, Sequence[int]], tuple[np.ndarray, np.ndarray]]
-"""``(graph, nodes) -> (points (k,3), reach (k,))``: :func:`ground_rim` of a graph builder's surface."""
+Ground = tuple[np.ndarray, np.ndarray, np.ndarray]
+"""``(points (k,3), reach (k,), spacing (k,))``, metres: :func:`ground_rim` of an area."""
+
+Rim = Callable[[nx.Graph, Sequence[int]], Ground]
+"""``(graph, nodes) -> ground``: :func:`ground_rim` of a graph builder's surface."""
+
+MAX_PLACE_CANDIDATES = 1024
+"""Edge pairs at most that :func:`where_between` tests (more, which takes 256 m of edge points a cell apart all within
+a cell of the closest pair, are thinned evenly along the edges)."""
+
+GROUND_RAYS = 8
+"""Rays at most down onto the stretch between two areas' ground (:func:`open_between`): a half spacing of the edge
+points apart (0.125 m on the navmesh route's cells of 0.25 m; 0.5 m between samples 1 m apart) up to this many."""
 
 
-def ground_rim(graph: nx.Graph, nodes: Sequence[int], navmesh: NavMesh | None, erosion: float) -> tuple[np.ndarray, np.ndarray]:
-    """(k,3) points on the edges of the walkable surface of ``nodes`` (metres) and (k,) how far the level's ground
+class Closest(NamedTuple):
+    """Where two areas' ground comes closest (:func:`closest_step`).
+
+    Attributes:
+        gap: metres between the ground's edges, horizontal, at least 0.
+        step: metres of rise between the closest edge points.
+        pairs: (c, 2, 3) edge points of the first area and the second's nearest to each, metres: the closest pair
+            first, then every pair within a spacing of the edge points (a cell; a sample's side) of it, nearer first.
+        reach: (c, 2) metres the ground reaches past each point of :attr:`pairs` (:func:`ground_rim`).
+        spacing: (c,) metres, the larger spacing of each pair's points along their edges.
+    """
+
+    gap: float
+    step: float
+    pairs: np.ndarray
+    reach: np.ndarray
+    spacing: np.ndarray
+
+    @property
+    def here(self) -> np.ndarray:
+        """(3,) the first area's closest edge point."""
+        return self.pairs[0, 0]
+
+    @property
+    def there(self) -> np.ndarray:
+        """(3,) the second area's closest edge point."""
+        return self.pairs[0, 1]
+
+
+def ground_rim(graph: nx.Graph, nodes: Sequence[int], navmesh: NavMesh | None, erosion: float) -> Ground:
+    """(k,3) points on the edges of the walkable surface of ``nodes`` (metres), (k,) how far the level's ground
     reaches past each, metres: ``erosion`` past a navmesh polygon's edge, half a square of the node's ``area``
-    more past a node without a polygon (a sample; a portal point, area 0).
+    more past a node without a polygon (a sample; a portal point, area 0), and (k,) how far apart the points lie
+    along the edge, metres: ``cell_size`` on a polygon's edge, the side of the node's square.
 
     A navmesh polygon's edges are those no polygon of ``nodes`` lies across, a point every ``cell_size`` along each
     (its ends included). O(edges + points).
     """
     polygons = node_polygons(graph, nodes) if navmesh is not None else np.full(len(nodes), -1)
     points = np.asarray([graph.nodes[n]["pos"] for n, p in zip(nodes, polygons) if p < 0], dtype=np.float64).reshape(-1, 3)
-    reach = [np.asarray([math.sqrt(float(graph.nodes[n].get("area", 0.0))) / 2 + erosion
-                         for n, p in zip(nodes, polygons) if p < 0])]
+    spacing = [np.asarray([math.sqrt(float(graph.nodes[n].get("area", 0.0))) for n, p in zip(nodes, polygons) if p < 0])]
+    reach = [spacing[0] / 2 + erosion]
     if navmesh is not None and (held := np.unique(polygons[polygons >= 0])).size:
         corners = np.asarray(navmesh.polygons)[held]
         valid = corners >= 0
@@ -76,38 +138,101 @@ def ground_rim(graph: nx.Graph, nodes: Sequence[int], navmesh: NavMesh | None, e
         vertices = np.asarray(navmesh.vertices, dtype=np.float64)
         start = vertices[corners[rows, column]]
         end = vertices[corners[rows, (column + 1) % valid.sum(axis=1)[rows]]]
-        count = np.ceil(np.linalg.norm(end - start, axis=1) / float(navmesh.settings["cell_size"])).astype(np.int64) + 1
+        cell = float(navmesh.settings["cell_size"])
+        count = np.ceil(np.linalg.norm(end - start, axis=1) / cell).astype(np.int64) + 1
         edge = np.repeat(np.arange(len(start)), count)
         along = (np.arange(len(edge)) - np.repeat(np.cumsum(count) - count, count)) / (count[edge] - 1)
         points = np.concatenate([points, start[edge] + along[:, None] * (end - start)[edge]])
         reach.append(np.full(len(edge), erosion))
-    return points, np.concatenate(reach)
+        spacing.append(np.full(len(edge), cell))
+    return points, np.concatenate(reach), np.concatenate(spacing)
 
 
-def closest_step(a: tuple[np.ndarray, np.ndarray], b: tuple[np.ndarray, np.ndarray],
-                 climb_weight: float = 1.0) -> tuple[float, float, np.ndarray, np.ndarray]:
-    """``(gap, vertical step, point of a, point of b)`` of the closest edge points of two areas' ground, each given
-    as its :func:`ground_rim` ``(points, reach)`` (metres, vertical offsets counted ``climb_weight`` times): the gap
-    is their horizontal distance less the ground's reach past each, at least 0."""
-    (pa, ra), (pb, rb) = a, b
+def closest_step(a: Ground, b: Ground, climb_weight: float = 1.0) -> Closest:
+    """Where the edges of two areas' ground, each its :func:`ground_rim`, come closest (vertical offsets counted
+    ``climb_weight`` times): the gap is the closest points' horizontal distance less the ground's reach past each.
+    O((ka + kb) log kb) for their ka and kb points (a k-d tree of b's)."""
+    (pa, ra, sa), (pb, rb, sb) = a, b
     scale = np.array([1.0, climb_weight, 1.0])
     distance, index = cKDTree(pb * scale).query(pa * scale)
     best = int(np.argmin(distance))
     there = int(index[best])
     offset = pb[there] - pa[best]
     gap = float(np.hypot(offset[0], offset[2])) - float(ra[best]) - float(rb[there])
-    return max(gap, 0.0), float(abs(offset[1])), pa[best], pb[there]
+    near = np.flatnonzero(distance <= distance[best] + max(float(sa[best]), float(sb[there])))
+    if len(near) > MAX_PLACE_CANDIDATES:
+        near = np.union1d(near[:: math.ceil(len(near) / MAX_PLACE_CANDIDATES)], [best])
+    near = near[np.argsort(distance[near], kind="stable")]  # the closest first: argmin's, the first of equals
+    return Closest(max(gap, 0.0), float(abs(offset[1])), np.stack([pa[near], pb[index[near]]], axis=1),
+                   np.stack([ra[near], rb[index[near]]], axis=1), np.maximum(sa[near], sb[index[near]]))
 
 
-def closest_step_for(a: tuple[np.ndarray, np.ndarray], b: tuple[np.ndarray, np.ndarray],
-                     agent: AgentConfig) -> tuple[float, float, np.ndarray, np.ndarray]:
+def closest_step_for(a: Ground, b: Ground, agent: AgentConfig) -> Closest:
     """:func:`closest_step`, or the closest pair on one floor when the plain one is a floor above another and the
     one-floor pair is closer with vertical offsets counted ``agent.height / agent.max_climb`` times."""
     plain = closest_step(a, b)
-    if plain[1] <= float(agent.max_climb) or float(agent.max_climb) <= 0:
+    if plain.step <= float(agent.max_climb) or float(agent.max_climb) <= 0:
         return plain
     weighted = closest_step(a, b, float(agent.height) / float(agent.max_climb))
-    return weighted if weighted[1] <= float(agent.max_climb) else plain
+    return weighted if weighted.step <= float(agent.max_climb) else plain
+
+
+def open_between(caster: RayCaster, closest: Closest, agent: AgentConfig) -> np.ndarray:
+    """(c,) bool: each pair of :attr:`Closest.pairs` faces an opening: the straight segment between the two points
+    raised half the agent's height meets no face (a wall, not a door), and ground lies under the stretch between
+    the two areas' ground (past each point's reach) within ``agent.max_climb`` of the two points' heights (a plank
+    or a doorway's floor; not a chasm, nor a sill): the first face down from the raised segment at the middles of
+    up to ``GROUND_RAYS`` equal parts of that stretch, each at most half the pair's spacing long (the stretch's
+    middle where the reaches overlap). At most 1 + ``GROUND_RAYS`` rays a pair.
+    """
+    pairs, lift = closest.pairs, 0.5 * float(agent.height) * UP
+    start, end = pairs[:, 0] + lift, pairs[:, 1] + lift
+    length = np.linalg.norm(end - start, axis=1)
+    plan = np.hypot(*(end - start)[:, [0, 2]].T)
+    # the stretch between the reaches, as fractions of the segment (plan distances: the reach is horizontal)
+    lo = np.minimum(closest.reach[:, 0] / np.maximum(plan, 1e-12), 0.5)
+    hi = np.maximum(1 - closest.reach[:, 1] / np.maximum(plan, 1e-12), 0.5)
+    parts = np.clip(np.ceil((hi - lo) * plan / np.maximum(closest.spacing / 2, EPSILON)), 1, GROUND_RAYS).astype(np.int64)
+    owner = np.repeat(np.arange(len(pairs)), parts)
+    part = np.arange(len(owner)) - np.repeat(np.cumsum(parts) - parts, parts)
+    along = lo[owner] + (hi - lo)[owner] * (part + 0.5) / parts[owner]
+    below = start[owner] + along[:, None] * (end - start)[owner]
+    # a pair on one plan point has no segment to cast along: its ground test alone decides
+    across, down = caster.first_hits_of([(start, np.where(length[:, None] > 0, end - start, UP)), (below, -UP)])
+    ground = below[:, 1] - down.distance  # -inf where nothing lies under it
+    climb = float(agent.max_climb)
+    grounded = (ground >= pairs[owner, :, 1].min(axis=1) - climb) & (ground <= pairs[owner, :, 1].max(axis=1) + climb)
+    return ((length == 0) | (across.distance >= length)) & (np.bincount(owner, weights=~grounded, minlength=len(pairs)) == 0)
+
+
+def where_between(caster: RayCaster, closest: Closest, agent: AgentConfig) -> str:
+    """Where two areas on one floor nearly meet, as the warning names it: ``e.g. between (x, y, z m) and (x, y, z m)``
+    for the closest of the pairs (:attr:`Closest.pairs`) that faces an opening (:func:`open_between`: a door or
+    plank too narrow for the agent); else ``along L m from (x, y, z m) to (x, y, z m)``, the run of a wall or
+    chasm: the pairs' middles linked to the closest pair's through middles less than the agent's width apart past
+    the pairs' spacing (a break in the run too narrow for the agent), and of those the two farthest apart in plan;
+    the closest pair when those lie within the agent's width.
+    Among pairs about as close (the points along a wall) the closest alone is any of them.
+    O(c²) for the c <= ``MAX_PLACE_CANDIDATES`` pairs, and :func:`open_between`'s rays.
+    """
+    pairs, width = closest.pairs, 2 * float(agent.radius)
+    opening = open_between(caster, closest, agent)
+    chosen = int(np.argmax(opening))  # the first, the closest, that faces one
+    if not opening[chosen]:
+        middles = pairs.mean(axis=1)
+        apart = squareform(pdist(middles[:, [0, 2]]))
+        linked = apart < width + closest.spacing.max()
+        run = breadth_first_order(sparse.csr_matrix(linked), 0, return_predecessors=False)
+        within = apart[np.ix_(run, run)]
+        first, last = run[np.array(np.unravel_index(int(np.argmax(within)), within.shape))]
+        if apart[first, last] >= width:
+            return f"along {apart[first, last]:.1f} m from ({xyz(middles[first])}) to ({xyz(middles[last])})"
+    return between(pairs[chosen])
+
+
+def between(pair: np.ndarray) -> str:
+    """``e.g. between (x, y, z m) and (x, y, z m)`` for a pair of points (2,3)."""
+    return f"e.g. between ({xyz(pair[0])}) and ({xyz(pair[1])})"
 
 
 def likely_cause(step: float, gap: float, agent: AgentConfig) -> str:
@@ -132,34 +257,74 @@ def areas_cause(graph: nx.Graph, largest: Sequence[int], others: Sequence[Sequen
     With ``mesh``, a nearest area whose closest place or middle (:func:`g2s_core.disconnected.area_summary`) is
     shut inside a closed solid of ``mesh`` (:func:`shut_in`) is named as such: Recast keeps the floor inside a
     closed box with head room, and either route a render floor inside a collision hull exported with the level.
+    Else, on one floor (a rise up to the agent's height), the place is the one :func:`where_between` names: the
+    door or plank too narrow for the agent, or the run of a wall or chasm.
     """
     ground = rim(graph, largest)  # once, however many areas it is compared with
-    (gap, step, here, there), nearest = min(((closest_step_for(ground, rim(graph, other), agent), other) for other in others),
-                                            key=lambda pair: math.hypot(pair[0][0], pair[0][1]))
-    cause = likely_cause(step, gap, agent)
-    if mesh is not None:
-        # its closest place and its middle: a render post or column inside the solid may face the rays from one
-        if shut_in(RayCaster(mesh), np.stack([there, area_summary(graph, nearest)[1]]), agent).any():
-            rise = float(there[1] - here[1])
-            level = "at the same height" if round(abs(rise), 1) == 0 else f"{abs(rise):.1f} m {'higher' if rise > 0 else 'lower'}"
-            cause = (f"a floor shut inside a closed solid (a box or collision hull exported with the level), {level}, "
-                     f"its ground about {gap:.1f} m from the other's")
-    return f"{cause}, e.g. between ({xyz(here)}) and ({xyz(there)})"
+    closest, nearest = min(((closest_step_for(ground, rim(graph, other), agent), other) for other in others),
+                           key=lambda pair: math.hypot(pair[0].gap, pair[0].step))
+    cause = likely_cause(closest.step, closest.gap, agent)
+    if mesh is None:
+        return f"{cause}, {between(closest.pairs[0])}"
+    caster = RayCaster(mesh)
+    # its closest place and its middle: a render post or column inside the solid may face the rays from one
+    if shut_in(caster, np.stack([closest.there, area_summary(graph, nearest)[1]]), agent, body_winding(mesh)).any():
+        rise = float(closest.there[1] - closest.here[1])
+        level = "at the same height" if round(abs(rise), 1) == 0 else f"{abs(rise):.1f} m {'higher' if rise > 0 else 'lower'}"
+        return (f"a floor shut inside a closed solid (a box or collision hull exported with the level), {level}, "
+                f"its ground about {closest.gap:.1f} m from the other's, {between(closest.pairs[0])}")
+    if closest.step > float(agent.height):
+        return f"{cause}, {between(closest.pairs[0])}"
+    return f"{cause}, {where_between(caster, closest, agent)}"
 
 
-def shut_in(caster: RayCaster, points: np.ndarray, agent: AgentConfig) -> np.ndarray:
+def shut_in(caster: RayCaster, points: np.ndarray, agent: AgentConfig, winding: np.ndarray) -> np.ndarray:
     """(n,) bool: each ground point (n,3) lies inside a closed solid of the caster's mesh: of the first faces
-    straight up from it and along +x, +z, -x and -z from half the agent's height over it, at most one is met from
-    the front (the rays of :func:`g2s_plugins.graph_builders.sampling.inside_closed_solids`, which needs all five).
+    straight up from it and along +x, +z, -x and -z from half the agent's height over it, at least four are faces
+    of closed bodies met from inside (:func:`met_from_inside`; the rays of
+    :func:`g2s_plugins.graph_builders.sampling.inside_closed_solids`, which needs all five met from behind).
 
-    A render object inside a collision hull faces one of them (the bandstand's roof over its deck, the fountain's
+    A render object inside a collision hull meets one of them (the bandstand's roof over its deck, the fountain's
     column beside its basin, benchmarks/level_kinds.py ``collision_hulls``); a place meant to be walked sees its
-    room's walls and ceiling from the front. Five rays a point.
+    room's walls and ceiling from outside them. ``winding``: :func:`body_winding` of the caster's mesh, so that a
+    mesh wound inside out reads as it would wound right. Five rays a point.
     """
     points = np.asarray(points, dtype=np.float64).reshape(-1, 3)
     hits = [caster.first_hits(points + EPSILON * UP, UP)]
     hits += [caster.first_hits(points + 0.5 * float(agent.height) * UP, direction) for direction in COMPASS[::2]]
-    return sum(hit_from_behind(caster, hit).astype(int) for hit in hits) >= len(hits) - 1
+    return sum(met_from_inside(caster, hit, winding).astype(int) for hit in hits) >= len(hits) - 1
+
+
+def met_from_inside(caster: RayCaster, hits: Hits, winding: np.ndarray) -> np.ndarray:
+    """(n,) bool: each ray of ``hits`` met a face of a closed body (``winding`` != 0, :func:`body_winding`) from
+    the body's inside: from behind on a body wound outward, from the front on one wound inside out."""
+    sign = np.where(hits.hit, winding[np.maximum(hits.face, 0)], 0)
+    return (sign != 0) & (hit_from_behind(caster, hits) == (sign > 0))
+
+
+def body_winding(mesh: trimesh.Trimesh) -> np.ndarray:
+    """(m,) int8 for each face of ``mesh``: +1 on a closed body wound outward (its signed volume positive), -1 on
+    one wound inside out (negative: a solid exported with flipped normals, or a room modelled as a box seen from
+    inside), 0 on an open body or one not wound consistently. A body is the faces joined by shared edges, a closed
+    consistently wound one each edge of which two of its faces share, once in each direction; coincident
+    vertices are joined first (exact duplicates: a file's split vertices at seams). O(m log m): sorts of the 3m
+    edges and of the vertices.
+    """
+    faces = np.unique(np.asarray(mesh.vertices), axis=0, return_inverse=True)[1].reshape(-1)[np.asarray(mesh.faces)]
+    directed = faces[:, [0, 1, 1, 2, 2, 0]].reshape(-1, 2)
+    edges, edge = np.unique(np.sort(directed, axis=1), axis=0, return_inverse=True)
+    edge = edge.reshape(-1)
+    uses = np.bincount(edge, minlength=len(edges))
+    forward = np.bincount(edge, weights=directed[:, 0] < directed[:, 1], minlength=len(edges))
+    owner = np.repeat(np.arange(len(faces)), 3)
+    incidence = sparse.csr_matrix((np.ones(len(edge)), (owner, edge)), shape=(len(faces), len(edges)))
+    bodies, body = connected_components(incidence @ incidence.T, directed=False)
+    sound = np.bincount(body[owner], weights=(uses[edge] != 2) | (forward[edge] != 1), minlength=bodies) == 0
+    corners = np.asarray(mesh.triangles, dtype=np.float64)
+    corners = corners - corners.reshape(-1, 3).mean(axis=0)  # about the middle: the volumes' sums lose less
+    volume = np.bincount(body, weights=np.einsum("ij,ij->i", corners[:, 0], np.cross(corners[:, 1], corners[:, 2])),
+                         minlength=bodies)
+    return np.where(sound[body], np.sign(volume[body]), 0).astype(np.int8)
 
 
 def likely_cause_of(agent: AgentConfig, navmesh: NavMesh | None = None, clearance: float = 0.0,

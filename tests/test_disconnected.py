@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 from types import SimpleNamespace
 
 import networkx as nx
@@ -11,7 +12,8 @@ import trimesh
 
 from g2s_core.config import AgentConfig
 from g2s_core.disconnected import LISTED_AREAS, area_summary, disconnected_warning
-from g2s_plugins.area_gaps import likely_cause_of
+from g2s_plugins._raycasting import RayCaster
+from g2s_plugins.area_gaps import body_winding, likely_cause_of, shut_in
 
 SAMPLED = likely_cause_of(AgentConfig())
 """The cause over nodes that each stand for a square of their area, none eroded."""
@@ -87,6 +89,84 @@ def test_the_floor_inside_a_closed_box_is_named_as_such():
     top, graph = navmesh_of([(0.5, 9.5, 0.5, 29.5, 0.0), (10.5, 15.5, 10.5, 15.5, 3.0)])  # the box's top instead
     message = disconnected_warning(graph, areas(graph), 2, likely_cause_of(AgentConfig(), top, mesh=mesh))
     assert "Likely cause: separate floors (3.0 m apart)" in message
+
+
+def boxes(*extents: tuple[float, float, float, float, float, float]) -> trimesh.Trimesh:
+    """Closed boxes over [x0, x1] x [y0, y1] x [z0, z1] each, wound outward, in one mesh."""
+    return trimesh.util.concatenate([trimesh.creation.box(bounds=[(x0, y0, z0), (x1, y1, z1)])
+                                     for x0, x1, y0, y1, z0, z1 in extents])
+
+
+def flipped(mesh: trimesh.Trimesh) -> trimesh.Trimesh:
+    """``mesh`` with every face wound the other way, as an export with flipped normals."""
+    return trimesh.Trimesh(mesh.vertices, mesh.faces[:, ::-1], process=False)
+
+
+def rooms_either_side_of(wall: list[tuple[float, float]]) -> tuple[trimesh.Trimesh, SimpleNamespace, nx.Graph]:
+    """Two rooms 20 x 10 m on a floor, parted by a wall 0.2 m thick and 3 m high along z = 10 over the x ranges
+    ``wall``; the navmesh of each room eroded by the agent's 0.5 m, as Recast leaves it when the door is too narrow."""
+    mesh = boxes((-1, 21, -0.3, 0, -1, 21), *((x0, x1, 0, 3, 9.9, 10.1) for x0, x1 in wall))
+    navmesh, graph = navmesh_of([(0.5, 19.5, 0.5, 9.4, 0.0), (0.5, 19.5, 10.6, 19.5, 0.0)])
+    return mesh, navmesh, graph
+
+
+def test_a_narrow_door_is_named_where_it_is_not_at_a_corner_of_the_wall():
+    """A door 0.8 m wide (x 16.1-16.9) in the wall between two rooms, too narrow for the agent's 1 m: every edge
+    point along the wall is as close to the other room as the door's, and the closest pair alone was the first of
+    them, at the wall's end 16 m from the door. The pair named now faces the door."""
+    mesh, navmesh, graph = rooms_either_side_of([(-1, 16.1), (16.9, 21)])
+    message = disconnected_warning(graph, areas(graph), 2, likely_cause_of(AgentConfig(), navmesh, mesh=mesh))
+    named = re.search(r"or a wall, where their ground lies about 0\.2 m apart, e\.g\. between \((.*) m\) and \((.*) m\)\.$", message)
+    assert named and "\n" not in message
+    here, there = (np.array(place.split(", "), dtype=float) for place in named.groups())
+    for point in (here, there):
+        assert np.hypot(point[0] - 16.5, point[2] - 10.0) < 1.0
+    assert here[2] == 9.4 and there[2] == 10.6  # across the wall
+
+
+def test_a_wall_with_no_door_is_named_along_its_run():
+    """The same rooms with no door: no pair faces an opening, so none is named as if it were the way through;
+    the warning names the wall's run between the rooms' ground, 19 m."""
+    mesh, navmesh, graph = rooms_either_side_of([(-1, 21)])
+    message = disconnected_warning(graph, areas(graph), 2, likely_cause_of(AgentConfig(), navmesh, mesh=mesh))
+    assert "or a wall, where their ground lies about 0.2 m apart, along 19.0 m from (0.5, 0.0, 10.0 m) to (19.5, 0.0, " in message
+    assert "e.g." not in message
+
+
+def test_a_plank_narrower_than_the_agent_is_named_over_the_chasm():
+    """Platforms 2 m apart at 8 m over a void, joined by a plank 0.6 m wide (z 14.0-14.6): the pair named crosses
+    the plank, not the void beside it."""
+    mesh = boxes((0, 10, 7.7, 8, 0, 20), (12, 22, 7.7, 8, 0, 20), (10, 12, 7.8, 8, 14.0, 14.6))
+    navmesh, graph = navmesh_of([(0.5, 9.5, 0.5, 19.5, 8.0), (12.5, 21.5, 0.5, 19.5, 8.0)])
+    message = disconnected_warning(graph, areas(graph), 2, likely_cause_of(AgentConfig(), navmesh, mesh=mesh))
+    assert "where their ground lies about 2.0 m apart, e.g. between (9.5, 8.0, 14.5 m) and (12.5, 8.0, 14.5 m)" in message
+    chasm = boxes((0, 10, 7.7, 8, 0, 20), (12, 22, 7.7, 8, 0, 20))
+    message = disconnected_warning(graph, areas(graph), 2, likely_cause_of(AgentConfig(), navmesh, mesh=chasm))
+    assert message.endswith("about 2.0 m apart, along 19.0 m from (11.0, 8.0, 19.5 m) to (10.9, 8.0, 0.5 m).")
+
+
+def test_body_winding_tells_closed_bodies_wound_outward_and_inside_out_from_open_ones():
+    box = boxes((0, 1, 0, 1, 0, 1))
+    plane = trimesh.Trimesh([[0, 0, 0], [1, 0, 0], [0, 0, 1]], [[0, 2, 1]])
+    split = trimesh.Trimesh(box.triangles.reshape(-1, 3), np.arange(36).reshape(-1, 3), process=False)  # OBJ seams
+    assert body_winding(box).tolist() == [1] * 12 and body_winding(flipped(box)).tolist() == [-1] * 12
+    assert body_winding(plane).tolist() == [0] and body_winding(split).tolist() == [1] * 12
+
+
+def test_a_mesh_wound_inside_out_reads_as_wound_right():
+    """A point on the floor inside a closed box is shut in; one in a room with a roof, walls and a door is not.
+    With every face wound the other way the first faces each ray meets are seen from the other side, which read
+    the room as shut and the box as open; the bodies' own winding reads both as the mesh wound right."""
+    agent = AgentConfig()
+    box = boxes((-5, 25, -0.3, 0, -5, 25), (10, 16, 0, 3, 10, 16))
+    room = boxes((-5, 25, -0.3, 0, -5, 25), (0, 10, 3, 3.3, 0, 10), (-0.2, 0, 0, 3, 0, 10), (10, 10.2, 0, 3, 0, 10),
+                 (0, 10, 0, 3, -0.2, 0), (0, 4.5, 0, 3, 10, 10.2), (5.5, 10, 0, 3, 10, 10.2))
+    for mesh, point, inside in ((box, (13.0, 0.0, 13.0), True), (room, (5.0, 0.0, 5.0), False)):
+        for wound in (mesh, flipped(mesh)):
+            assert shut_in(RayCaster(wound), np.array([point]), agent, body_winding(wound)).tolist() == [inside]
+    floor, box_only = navmesh_of([(0.5, 9.5, 0.5, 24.5, 0.0), (10.5, 15.5, 10.5, 15.5, 0.0)])
+    message = disconnected_warning(box_only, areas(box_only), 2, likely_cause_of(AgentConfig(), floor, mesh=flipped(box)))
+    assert "Likely cause: a floor shut inside a closed solid (a box or collision hull exported with the level)" in message
 
 
 def test_a_room_shut_above_a_deck_is_named_by_its_door_not_the_storeys():
