@@ -46,6 +46,7 @@
 #include <stdexcept>
 #include <string>
 #include <thread>
+#include <tuple>
 #include <unordered_map>
 #include <unordered_set>
 #include <vector>
@@ -1924,14 +1925,50 @@ struct CollapseRule {
     void resolve() const { sight.resolve(); }
 };
 
+// Lines of sight NavMeshSight answered before, kept between collapse_forest calls of one navmesh and one probe
+// setting (the heat guarantee's later rounds ask about 98 % of their chains again on the 100k-polygon level): the
+// answer for a segment depends on its two end points alone, so a segment's six coordinates (their bits) key it.
+// During a call the threads only read `known` and add what they test to `found` (under `mutex`); the call then
+// moves `found` into `known` (under `mutex` too: len() may be asked from another Python thread).
+struct SightMemo {
+    using Segment = std::array<double, 6>;
+    struct Hash {
+        size_t operator()(const Segment& s) const {
+            uint64_t h = 1469598103934665603ull;  // FNV-1a over the coordinates' bits
+            for (double x : s) {
+                uint64_t bits;
+                std::memcpy(&bits, &x, sizeof bits);
+                h = (h ^ bits) * 1099511628211ull;
+            }
+            return static_cast<size_t>(h ^ (h >> 32));
+        }
+    };
+    struct Same {
+        bool operator()(const Segment& x, const Segment& y) const { return std::memcmp(x.data(), y.data(), sizeof x) == 0; }
+    };
+    std::unordered_map<Segment, bool, Hash, Same> known;
+    std::vector<std::pair<Segment, bool>> found;
+    std::atomic<size_t> hits{0};  // tests answered from `known`
+    std::optional<std::tuple<const NavMeshCore*, double, float, std::optional<double>>> setting;  // of the first call
+    std::mutex mutex;
+
+    void keep_found() {
+        std::lock_guard<std::mutex> lock(mutex);
+        known.reserve(known.size() + found.size());
+        for (const auto& [segment, clear] : found) known.emplace(segment, clear);
+        found.clear();
+    }
+};
+
 // The surface_los predicate's line of sight (NavMeshCore::sees, the line_of_sight binding's test) between the
-// points of two nodes.
+// points of two nodes; with a memo, each segment's answer is looked up there first and kept there once found.
 struct NavMeshSight {
     const NavMeshCore& nav;
     const double* points;          // (n,3) positions, the navmesh's local frame
     double step;
     float horizontal;
     std::optional<double> max_gap;
+    SightMemo* memo = nullptr;
     std::vector<dtPolyRef> path = std::vector<dtPolyRef>(256);
     // the polygon nearest the last A asked (Algorithm 4 asks every chain from one A in a row): Detour's answer for
     // a point depends on the point alone
@@ -1942,13 +1979,26 @@ struct NavMeshSight {
 
     forest_simplify::Answer operator()(int64_t a, int64_t c) {
         const double* pa = points + 3 * a;
+        const double* pc = points + 3 * c;
+        const SightMemo::Segment segment{pa[0], pa[1], pa[2], pc[0], pc[1], pc[2]};
+        if (memo != nullptr) {
+            const auto it = memo->known.find(segment);
+            if (it != memo->known.end()) {
+                ++memo->hits;
+                return it->second ? forest_simplify::Answer::yes : forest_simplify::Answer::no;
+            }
+        }
         if (a != from) {
             const float fa[3] = {static_cast<float>(pa[0]), static_cast<float>(pa[1]), static_cast<float>(pa[2])};
             from = a;
             if (dtStatusFailed(nav.query->findNearestPoly(fa, nav.default_ext, &nav.filter, &start_ref, start))) start_ref = 0;
         }
-        return nav.sees(start_ref, start, pa, points + 3 * c, step, horizontal, max_gap, path)
-                   ? forest_simplify::Answer::yes : forest_simplify::Answer::no;
+        const bool clear = nav.sees(start_ref, start, pa, pc, step, horizontal, max_gap, path);
+        if (memo != nullptr) {
+            std::lock_guard<std::mutex> lock(memo->mutex);
+            memo->found.emplace_back(segment, clear);
+        }
+        return clear ? forest_simplify::Answer::yes : forest_simplify::Answer::no;
     }
 
     void resolve() const {}  // every answer given at once
@@ -2026,6 +2076,17 @@ nb::object simplified_numpy(const forest_simplify::Simplified& s) {
 
 NB_MODULE(_recast, m) {
     m.doc() = "Recast/Detour (solo or tiled navmesh) bindings for g2s; see g2s_plugins.recast.";
+
+    nb::class_<SightMemo>(m, "SightMemo",
+                          "Lines of sight collapse_forest answered, by segment, kept for its later calls with the "
+                          "same navmesh, step, horizontal and max_gap")
+        .def(nb::init<>())
+        .def("__len__", [](SightMemo& memo) {
+            std::lock_guard<std::mutex> lock(memo.mutex);
+            return memo.known.size();
+        }, "segments answered")
+        .def_prop_ro("hits", [](const SightMemo& memo) { return memo.hits.load(); },
+                     "tests answered from the memo instead of Detour");
 
     nb::class_<NavMeshCore>(m, "NavMeshCore",
                             "A built navmesh (solo or tiled): copied mesh arrays and Detour queries.")
@@ -2185,32 +2246,41 @@ NB_MODULE(_recast, m) {
              [](const NavMeshCore& n, IdsIn ids, IdsIn parent, IdsIn depth, MaskIn fixed, PairsIn loops, IdsIn roots,
                 PointsIn points, MaskIn on_navmesh, ValuesIn rank, std::optional<double> max_step, PointsIn normals,
                 ValuesIn normal_length, double tolerance_deg, bool whole_chain, double step, float horizontal,
-                std::optional<double> max_gap) {
+                std::optional<double> max_gap, SightMemo* memo) {
                  if (!(step > 0)) throw nb::value_error("step must be positive");
                  const forest_simplify::Forest f = checked_forest(
                      ids, parent, depth, fixed, loops, roots,
                      {points.shape(0), on_navmesh.shape(0), rank.shape(0), normals.shape(0), normal_length.shape(0)});
+                 if (memo != nullptr) {
+                     const auto setting = std::make_tuple(&n, step, horizontal, max_gap);
+                     if (!memo->setting) memo->setting = setting;
+                     if (*memo->setting != setting)
+                         throw nb::value_error("a sight memo holds the answers of one navmesh, step, horizontal and max_gap");
+                 }
                  CollapseRule<NavMeshSight> rule{on_navmesh.data(), rank.data(), max_step, normals.data(),
                                                  normal_length.data(), tolerance_deg, whole_chain,
-                                                 NavMeshSight{n, points.data(), step, horizontal, max_gap}};
+                                                 NavMeshSight{n, points.data(), step, horizontal, max_gap, memo}};
                  forest_simplify::Simplified s;
                  {
                      nb::gil_scoped_release release;
                      std::lock_guard<std::mutex> lock(n.mutex);
                      s = forest_simplify::simplify(f, rule, std::max(1u, std::thread::hardware_concurrency()));
+                     if (memo != nullptr) memo->keep_found();
                  }
                  return simplified_numpy(s);
              },
              nb::arg("ids"), nb::arg("parent"), nb::arg("depth"), nb::arg("fixed"), nb::arg("loops"), nb::arg("roots"),
              nb::arg("points"), nb::arg("on_navmesh"), nb::arg("rank"), nb::arg("max_step").none(), nb::arg("normals"),
              nb::arg("normal_length"), nb::arg("tolerance_deg"), nb::arg("whole_chain"), nb::arg("step"),
-             nb::arg("horizontal"), nb::arg("max_gap").none(),
+             nb::arg("horizontal"), nb::arg("max_gap").none(), nb::arg("memo").none() = nb::none(),
              "(kept (n,) bool, added (k,2) int64, loop (k,) bool): the paper's Algorithm 4 and the loop pass of "
              "g2s_core/simplify.py on a rooted forest of n nodes (ids, tree parent index or -1, depth, fixed: never "
              "removed, loop edges (m,2), root indices), with Algorithm 5's collapse rule (g2s_plugins/_surface.py) "
              "and line_of_sight(points[a], points[c], step, horizontal, max_gap) as the predicate; the edges added, "
              "in the order they were added; GIL released, the walks below different kept nodes shared between the "
-             "cores (the same answer on any number)")
+             "cores (the same answer on any number). memo (a SightMemo or None): lines of sight answered by earlier "
+             "calls with the same navmesh, step, horizontal and max_gap, looked up before each test and added to "
+             "(ValueError for a memo of other settings)")
         .def("nearest_poly",
              [](const NavMeshCore& n, Vec3In p, ExtIn extents) {
                  float pp[3], out[3], ext[3] = {n.default_ext[0], n.default_ext[1], n.default_ext[2]};

@@ -5,7 +5,9 @@ every node and edge, their attributes and their order, on random rooted forests 
 
 from __future__ import annotations
 
+import dataclasses
 import itertools
+import math
 import random
 
 import networkx as nx
@@ -16,7 +18,7 @@ from g2s_core import pipeline
 from g2s_core.config import PRESETS_DIR, load_config, load_raw_config, parse_config, set_key
 from g2s_core.registry import Registry
 from g2s_core.rooted import root_forest
-from g2s_core.simplify import simplify_forest
+from g2s_core.simplify import forest_arrays, simplify_forest
 from g2s_plugins import _surface
 from g2s_plugins.heat_guarantee import keeping
 from g2s_plugins.predicates import surface_los
@@ -117,6 +119,31 @@ def test_nodes_a_later_heat_round_keeps_stay_on_both_paths(runs, level):
         structure = simplify_forest(forest, keeping(predicate, kept))
         assert kept <= set(structure)
         assert layout(structure) == layout(simplify_forest(forest, keeping(through_python(predicate), kept)))
+
+
+@pytest.mark.parametrize("level", LEVELS)
+def test_a_sight_memo_answers_a_later_round_s_repeated_lines_of_sight_as_detour_does(runs, level):
+    # a later heat round (more fixed nodes) asks many of the first round's lines of sight again: with the memo they
+    # are answered from it, and every round's answer is the one the same call gives without a memo
+    run, navmesh = runs[level], runs[level].context.navmesh
+    arrays = forest_arrays(random_forest(run.graph, 0))
+    rule = _surface.RuleArrays(
+        on_navmesh=np.array([bool(d.get("on_navmesh", False)) for d in arrays.data]),
+        rank=np.full(len(arrays.ids), np.nan), normals=np.array([d["normal"] for d in arrays.data], dtype=float),
+        normal_lengths=np.array([math.hypot(*d["normal"]) for d in arrays.data]), max_step=None,
+        tolerance_deg=45.0, whole_chain=True)
+    memo = navmesh.sight_memo()
+    first = navmesh.collapse_forest(arrays, rule, 0.1, 0.3, memo)
+    asked, hits = len(memo), memo.hits
+    assert asked > 100
+    later = dataclasses.replace(arrays, fixed=arrays.fixed | (np.random.default_rng(0).random(len(arrays.ids)) < 0.2))
+    second = navmesh.collapse_forest(later, rule, 0.1, 0.3, memo)
+    assert memo.hits - hits > len(memo) - asked > 0  # mostly answered from the memo, a few tested anew
+    for answer, reference in ((first, navmesh.collapse_forest(arrays, rule, 0.1, 0.3)),
+                              (second, navmesh.collapse_forest(later, rule, 0.1, 0.3))):
+        assert all(np.array_equal(x, y) for x, y in zip(answer, reference))
+    with pytest.raises(ValueError, match="sight memo"):  # its answers hold for one probe step and gap
+        navmesh.collapse_forest(arrays, rule, 0.2, 0.3, memo)
 
 
 def test_the_pipeline_takes_the_whole_forest_path_in_every_heat_round(monkeypatch, runs):

@@ -73,10 +73,13 @@ def g2s_simplify_predicate(
     def line_of_sight(start: tuple[float, ...], end: tuple[float, ...]) -> bool:
         return navmesh.line_of_sight(start, end, step, gap)
 
-    def native(arrays: ForestArrays, rule: RuleArrays) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        return navmesh.collapse_forest(arrays, rule, step, gap)
+    # a navmesh without the C++ path (another implementation of g2s_core.model.NavMesh) is asked chain by chain;
+    # one memo of lines of sight for every round of this predicate: the heat guarantee's later rounds ask most again
+    memo = navmesh.sight_memo() if hasattr(navmesh, "collapse_forest") else None
 
-    # a navmesh without the C++ path (another implementation of g2s_core.model.NavMesh) is asked chain by chain
-    whole = native if hasattr(navmesh, "collapse_forest") else None
+    def native(arrays: ForestArrays, rule: RuleArrays) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        return navmesh.collapse_forest(arrays, rule, step, gap, memo)
+
+    whole = native if memo is not None else None
     return guaranteed(lambda: collapse_rule(params, line_of_sight, context.graph, whole), params, context, forest,
                       simplified)

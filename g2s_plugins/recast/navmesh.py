@@ -280,17 +280,27 @@ class NavMesh:
         return self._core.line_of_sight(self._local(a), self._local(b), float(step), float(self.settings["cell_size"]),
                                         None if max_gap is None else float(max_gap))
 
-    def collapse_forest(self, forest: Any, rule: Any, step: float, max_gap: float | None) -> tuple[np.ndarray, ...]:
+    def collapse_forest(self, forest: Any, rule: Any, step: float, max_gap: float | None,
+                        memo: Any = None) -> tuple[np.ndarray, ...]:
         """The whole-forest answer (kept (n,) bool, added (k,2) int64, loop (k,) bool; :mod:`g2s_core.simplify`)
         of the ``surface_los`` predicate for ``forest`` (a :class:`~g2s_core.simplify.ForestArrays`): the paper's
         Algorithm 4 with Algorithm 5's tests of ``rule`` (a :class:`~g2s_plugins._surface.RuleArrays`) and
         :meth:`line_of_sight` (``step``, ``max_gap``) in one C++ call (src/forest_simplify.hpp), its walks below
-        different kept nodes on all cores (the same answer on any number)."""
+        different kept nodes on all cores (the same answer on any number). ``memo`` (from :meth:`sight_memo`, or
+        ``None``): the lines of sight of earlier calls with the same ``step`` and ``max_gap``, each segment's answer
+        looked up there before it is tested and kept there after (a segment's answer depends on its ends alone);
+        ``ValueError`` for a memo of another navmesh or other settings."""
         return self._core.collapse_forest(
             forest.ids, forest.parent, forest.depth, forest.fixed, forest.loops, forest.roots,
             self._local_rows(forest.points), rule.on_navmesh, rule.rank, rule.max_step, rule.normals,
             rule.normal_lengths, float(rule.tolerance_deg), bool(rule.whole_chain), float(step),
-            float(self.settings["cell_size"]), None if max_gap is None else float(max_gap))
+            float(self.settings["cell_size"]), None if max_gap is None else float(max_gap), memo)
+
+    @staticmethod
+    def sight_memo() -> Any:
+        """An empty memo of lines of sight for :meth:`collapse_forest` (``len()``: the segments answered; ``hits``:
+        the tests it answered)."""
+        return _recast.SightMemo()
 
     def poly_ref(self, index: int) -> int:
         """Detour ``dtPolyRef`` of polygon ``index``."""
