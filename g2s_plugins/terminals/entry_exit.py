@@ -215,6 +215,12 @@ _TOUCH_STEPS = 2.0
 in a floor the probes step over (three probes in a row must find no floor), so parts the method already reads as one
 floor (unwelded tiles or planks laid a crack apart) stay one piece."""
 
+_SIDES_OPEN_STEPS = 1.0
+"""Search steps: a passage read past its samples ends where its free width grows by more than this (its sides open
+out into the room behind the wall, metres at once; a reveal splaying inwards by 45 degrees a side grows two steps
+a step, one splaying less reads no narrower for going on). Rays along a straight jamb agree to the ray caster's
+precision."""
+
 _MAX_PROBE_RAYS = 1_000_000
 """Probe rays cast per batch when looking for the surface's end (a level's whole boundary at once, samples x fan
 directions x search steps, held 1.9 GB on a 274 x 226 m level)."""
@@ -1066,13 +1072,55 @@ def _extend(kept: list[_Edge], caster: RayCaster, s: _Settings, floor: np.ndarra
     return first - along * ext[0][:, None], last + along * ext[1][:, None]
 
 
+def _onto_floor_along(kept: list[_Edge], first: np.ndarray, last: np.ndarray, caster: RayCaster,
+                      s: _Settings) -> tuple[np.ndarray, np.ndarray]:
+    """(n,3) (n,3): each opening's ends ``first`` and ``last`` moved up or down onto the floor that ends along it.
+
+    An edge point lies along its sample's way out in the plane of the surface under the sample, and the line through
+    a segment's points at their mean height: where the samples stand on several treads within the climb of the floor
+    that ends (a doorway three 0.15 m steps down, its samples on the two lower treads), the opening lay between
+    them, 0.08 m over its floor on the navmesh and 0.15 m on the sampling route (docs/entry_exit.md, "An opening's
+    width and height as a designer reads them"). The floor is probed straight down from the climb above the line,
+    every search step along it from a step inside each end and half a search step inside the edge (ground within the
+    climb either side, walkable), and the line is laid on it: the least-squares line through the ground's heights
+    along the opening (its slope kept where the floor slopes along the edge, a ramp's side). Ends moving less than
+    :data:`_SAME_HEIGHT`, or with no ground found, stay. O(opening length / search step) rays each, in one batch.
+    """
+    inset = _INSET_STEPS * s.delta
+    lengths = np.linalg.norm(last - first, axis=1)
+    spots = [s.delta * np.arange(1, max(2, int(length / s.delta))) if length > 2.0 * s.delta else np.array([0.5 * length])
+             for length in lengths]
+    rows = np.repeat(np.arange(len(kept)), [len(t) for t in spots])
+    t = np.concatenate(spots)
+    along = (last - first) / np.maximum(lengths, 1e-12)[:, None]
+    out = np.array([e.outward for e in kept])
+    line = first[rows] + along[rows] * t[:, None]
+    hit = caster.first_hits(line - out[rows] * inset + UP * s.climb, np.broadcast_to(-UP, line.shape).copy())
+    ground = np.isfinite(hit.distance) & (hit.distance <= 2.0 * s.climb) & _walkable(caster, hit.face, s)
+    rise = s.climb - hit.distance  # the ground's height over the line, m
+    first, last = first.copy(), last.copy()
+    for i in range(len(kept)):
+        on = (rows == i) & ground
+        if not on.any():
+            continue
+        u, v = t[on], rise[on]
+        slope = 0.0 if np.ptp(u) <= 0.0 else float(np.polyfit(u, v, 1)[0])
+        at_first = float(np.mean(v) - slope * np.mean(u))
+        at_last = at_first + slope * lengths[i]
+        if max(abs(at_first), abs(at_last)) > _SAME_HEIGHT:
+            first[i, 1] += at_first
+            last[i, 1] += at_last
+    return first, last
+
+
 def _passages(
     kept: list[_Edge], first: np.ndarray, last: np.ndarray, ways: _Ways, caster: RayCaster, s: _Settings
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """The narrowest clear width across each opening between its edge and the navmesh, and its free part.
 
     At every search step in from the edge, as deep as its samples stand from it (the wall's thickness
-    and the erosion), rays each way along the edge from the opening's middle. At the rays' height:
+    and the erosion) and on while the passage's sides close in or run on, up to the edge search's reach
+    (:func:`_through_the_wall`), rays each way along the edge from the opening's middle. At the rays' height:
     bars or a grille in the wall leave gaps narrower than the agent however wide the hole. One search
     step above the climb (over what the agent steps onto, such as a low slab of rubble, and not
     stopped by ground it walks onto) and at the head-room rays' height: a leaf or a chunk standing in
@@ -1090,35 +1138,117 @@ def _passages(
     # treads behind it): its passage is not narrowed.
     reach = np.where(ways.drop > 0.0, 0.0, np.linalg.norm(ways.edge - ways.base, axis=1))
     deep = np.array([np.median(reach[e.samples]) for e in kept])
+    limit = np.where(deep > 0.0, np.maximum(deep, s.search), 0.0)
     widths, back, ahead = np.full(len(kept), np.inf), np.full(len(kept), np.inf), np.full(len(kept), np.inf)
-    levels = [(k, np.nonzero(k * s.delta <= deep)[0])
-              for k in range(1, int(math.ceil(float(deep.max(initial=0.0)) / s.delta)) + 1)]
+    levels = [(k, np.nonzero(k * s.delta <= limit)[0])
+              for k in range(1, int(math.ceil(float(limit.max(initial=0.0)) / s.delta)) + 1)]
     # The rays at ``lift`` stand on what the agent steps onto there: from the floor's height they would start inside a
     # strip within the climb running out through the opening's middle and measure its width. Probed for every step
     # in at once (one batch).
-    on_steps = np.split(_onto_grazed_step(np.concatenate([mid[rows] - out[rows] * (k * s.delta) for k, rows in levels]),
-                                          np.concatenate([out[rows] for _, rows in levels]), caster, s),
-                        np.cumsum([len(rows) for _, rows in levels])[:-1]) if levels else []
-    for (k, rows), on_step in zip(levels, on_steps):
+    splits = np.cumsum([len(rows) for _, rows in levels])[:-1]
+    insides = np.concatenate([mid[rows] - out[rows] * (k * s.delta) for k, rows in levels]) if levels else np.zeros((0, 3))
+    on_steps = np.split(_onto_grazed_step(insides, np.concatenate([out[rows] for _, rows in levels]), caster, s), splits)
+    # Past its samples the passage is read while the floor goes on within the climb of the opening's, the rays
+    # standing on it (steps up through a thick wall: rays at the opening's height would graze the treads, and run in
+    # the solid under a room floor higher than the climb); not over a drop. Probed from twice the climb above.
+    below = caster.first_hits(insides + UP * (2.0 * s.climb), np.broadcast_to(-UP, insides.shape).copy())
+    floored = np.isfinite(below.distance) & (np.abs(below.distance - 2.0 * s.climb) <= s.climb) & _walkable(
+        caster, below.face, s)
+    grounds = np.split(np.where(floored, insides[:, 1] + 2.0 * s.climb - below.distance, np.nan), splits)
+    ended = np.zeros(len(kept), dtype=bool)  # the passage's sides opened out (the room behind the wall)
+    floor_at = mid[:, 1].copy()  # the floor's height at each passage's last step read, m
+    came_out = np.zeros(len(kept), dtype=bool)  # its sides opened out: it came out of the wall
+    samples_read = np.full((3, len(kept)), np.inf)  # widths, back and ahead as deep as the samples stand
+    for (k, rows), on_step, ground in zip(levels, on_steps, grounds):
+        live = ~ended[rows]
+        on_step, ground, rows = on_step[live], ground[live], rows[live]
+        beyond = k * s.delta > deep[rows]
+        off = beyond & np.isnan(ground)
+        # and where something stands across the way in within a step and a half of the last step read (a wall closing
+        # a pad's back): a step read in its face's plane grazes it, and its rays along the face meet it anywhere
+        going_on = np.flatnonzero(beyond & ~off)
+        if len(going_on):
+            last_read = mid[rows[going_on]] - out[rows[going_on]] * ((k - 1) * s.delta)
+            last_read[:, 1] = floor_at[rows[going_on]]
+            off[going_on] = _closed_ahead(last_read, -out[rows[going_on]], caster, s)
+        ended[rows[off]] = True
+        on_step, ground, beyond, rows = on_step[~off], ground[~off], beyond[~off], rows[~off]
         inside = mid[rows] - out[rows] * (k * s.delta)
-        points = np.concatenate([on_step + UP * s.lift, inside + UP * (s.climb + s.delta), inside + UP * s.head])
-        directions = np.concatenate([along[rows], along[rows], along[rows]])
-        hits_ahead, hits_back = caster.first_hits(points, directions), caster.first_hits(points, -directions)
-        m = len(rows)
-        low, high, head = slice(0, m), slice(m, 2 * m), slice(2 * m, None)
-        widths[rows] = np.minimum(widths[rows], hits_ahead.distance[low] + hits_back.distance[low])
-        # Above the climb, ground the agent walks onto (a terrain rising beside its border) is in no one's way, at
-        # either height; at the head-room rays' height, what hangs into the passage lower than the agent is (a sign
-        # over part of it, a vault coming down at its sides).
-        forward, backward = (np.minimum(*(np.where(_ground_ahead(caster, h, at, sign * directions[at], s), np.inf,
-                                                   h.distance[at]) for at in (high, head)))
-                             for h, sign in ((hits_ahead, 1.0), (hits_back, -1.0)))
-        to_last = np.where(towards_last[rows], forward, backward)
-        to_first = np.where(towards_last[rows], backward, forward)
-        narrower = to_first + to_last < back[rows] + ahead[rows]
-        rows = rows[narrower]
-        back[rows], ahead[rows] = to_first[narrower], to_last[narrower]
-    return widths, back, ahead
+        inside[beyond, 1] = ground[beyond]
+        floor_at[rows] = inside[:, 1]
+        low = on_step + UP * s.lift
+        across = caster.first_hits(low, along[rows]).distance + caster.first_hits(low, -along[rows]).distance
+        to_first, to_last = _free_across(inside, along[rows], towards_last[rows], caster, s)
+        opened = _through_the_wall(to_first + to_last, back[rows] + ahead[rows], s)
+        ended[rows[opened]] = True
+        came_out[rows[opened]] = True
+        widths[rows[~opened]] = np.minimum(widths[rows[~opened]], across[~opened])
+        narrower = ~opened & (to_first + to_last < back[rows] + ahead[rows])
+        back[rows[narrower]], ahead[rows[narrower]] = to_first[narrower], to_last[narrower]
+        within = rows[~beyond]
+        samples_read[:, within] = widths[within], back[within], ahead[within]
+        # Where the sides opened between this step and the one before, the narrowest part lies between them (at a
+        # splay's inner face): bisected as the floor's end is.
+        rows, height = rows[opened], inside[opened, 1]
+        lo, hi = np.full(len(rows), (k - 1) * s.delta), np.full(len(rows), k * s.delta)
+        for _ in range(_REFINE_ROUNDS if k > 1 else 0):
+            depth = 0.5 * (lo + hi)
+            between = mid[rows] - out[rows] * depth[:, None]
+            between[:, 1] = height
+            to_first, to_last = _free_across(between, along[rows], towards_last[rows], caster, s)
+            opened = _through_the_wall(to_first + to_last, back[rows] + ahead[rows], s)
+            narrower = ~opened & (to_first + to_last < back[rows] + ahead[rows])
+            back[rows[narrower]], ahead[rows[narrower]] = to_first[narrower], to_last[narrower]
+            lo, hi = np.where(opened, lo, depth), np.where(opened, depth, hi)
+    # What was read past the samples counts where the passage came out of the wall: a corridor running on (tapering,
+    # or flaring to its mouth) is read as deep as its samples stand, as before.
+    return tuple(np.where(came_out, past, read) for past, read in zip((widths, back, ahead), samples_read))
+
+
+def _closed_ahead(points: np.ndarray, inward: np.ndarray, caster: RayCaster, s: _Settings) -> np.ndarray:
+    """(n,) bool: something stands across the way on from (n,3) ``points`` (on the floor) along (n,3) ``inward`` within
+    one and a half search steps, a search step above the climb or at the head-room rays' height."""
+    rays = np.concatenate([points + UP * (s.climb + s.delta), points + UP * s.head])
+    near = caster.first_hits(rays, np.concatenate([inward, inward])).distance <= 1.5 * s.delta
+    return near[: len(points)] | near[len(points):]
+
+
+def _free_across(inside: np.ndarray, along: np.ndarray, towards_last: np.ndarray, caster: RayCaster,
+                 s: _Settings) -> tuple[np.ndarray, np.ndarray]:
+    """(n,) (n,): how far the passage is free from (n,3) ``inside`` (on the floor, in from an opening's middle) towards
+    its first and its last end, m (infinite where nothing stands), along the edge's (n,3) unit ``along`` (towards the
+    last end where ``towards_last`` (n,) bool). The nearer of two rays each way: a search step above the climb (over
+    what the agent steps onto) and at the head-room rays' height (what hangs into the passage lower than the agent: a
+    sign over part of it, a vault coming down at its sides). Above the climb, ground the agent walks onto (a terrain
+    rising beside its border) is in no one's way, at either height."""
+    points = np.concatenate([inside + UP * (s.climb + s.delta), inside + UP * s.head])
+    directions = np.concatenate([along, along])
+    m = len(inside)
+    free = []
+    for sign in (1.0, -1.0):
+        hits = caster.first_hits(points, sign * directions)
+        reach = [np.where(_ground_ahead(caster, hits, at, sign * directions[at], s), np.inf, hits.distance[at])
+                 for at in (slice(0, m), slice(m, None))]
+        free.append(np.minimum(*reach))
+    forward, backward = free
+    return np.where(towards_last, backward, forward), np.where(towards_last, forward, backward)
+
+
+def _through_the_wall(free: np.ndarray, narrowest: np.ndarray, s: _Settings) -> np.ndarray:
+    """(n,) bool: the passage has come out of the wall: its free width ``free`` (n,) is more than
+    :data:`_SIDES_OPEN_STEPS` search steps wider than the narrowest read so far, ``narrowest`` (n,) (m; infinite:
+    none yet).
+
+    A designer sizes a doorway by its narrowest clear width through the wall. The samples stand where Recast's
+    erosion leaves them, ``r`` inside the floor's end on the navmesh: a reveal splaying from 1.2 m at the inner face of
+    a wall 1 m thick to 2.2 m at the outer was read 0.4-0.8 m in, 1.40-1.80 m wide with the yaw (docs/entry_exit.md,
+    "An opening's width and height as a designer reads them"). The passage is read in from the edge while its sides
+    close in or run on (a splay, radial jambs, a stop in the wall), as deep as its samples stand or the edge search
+    reaches out (``edge_search_radii * r``), whichever is deeper, and no farther than where they open out: the room
+    behind the wall, whose furniture is no part of the doorway; a corridor running on past the edge search's reach
+    is no longer its end's reveal.
+    """
+    return free > narrowest + _SIDES_OPEN_STEPS * s.delta
 
 
 def _ground_ahead(caster: RayCaster, hits, at: slice, directions: np.ndarray, s: _Settings) -> np.ndarray:
@@ -1625,7 +1755,8 @@ def detect_openings(
     if not kept:
         return Detection((), (), ())
     # How far down steps the edges' samples found the floor ending (the deepest; 0 for a floor's own level).
-    p_first, p_last = _extend(kept, caster, s, np.array([_walked_down_to(e.samples, ways) for e in kept]))
+    p_first, p_last = _onto_floor_along(
+        kept, *_extend(kept, caster, s, np.array([_walked_down_to(e.samples, ways) for e in kept])), caster, s)
 
     corners = np.asarray(mesh.triangles, dtype=np.float64)
     frame = piece_frame(mesh)
