@@ -64,7 +64,10 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
    down to). The
    opening lies on that line; its ends are extended along the edge while the
    surface goes on inside the edge, ends just outside it, and nothing stands
-   in the way or straight out: this undoes the retreat from walls. An
+   in the way or straight out: this undoes the retreat from walls. The line
+   is then laid on the floor ending along it (the least-squares line through
+   the ground's heights probed along it): samples on treads within the climb
+   of that floor leave their edge points at their own heights. An
    opening overlapping a wider one along the same line, facing the same way,
    is the same opening found twice (its middle within ``r`` of the wider one's line in plan, an end or its
    middle within the climb of the line's height there, read in plan and height on a sloped line too): the wider
@@ -81,7 +84,10 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
      there, not from inside a strip running out through the opening); an opening is the narrowest free part of that
      passage above the climb and at the head-room rays' height (a sliding
      leaf or a rubble chunk in the wall, or a sign hanging or a vault coming
-     down lower than the agent, leaves part of the door);
+     down lower than the agent, leaves part of the door), the passage read
+     through the wall, past the samples up to the edge search's reach, to
+     where its sides open out (a reveal splaying out to the face is as wide
+     as its inner face);
    * jambs (``step_up``): an opening found from step tops needs something
      at half the agent's height within two search steps of both its ends
      (a threshold's jambs); a curb along the piece's edge has none;
@@ -153,8 +159,9 @@ climb) / d across the way for the directions clear so far, two more beyond it
 with ``leave_footprint``: O(S k (edge_search_radii r + agent height) / d) rays (up to twice
 that with ``step_up``, for the samples searched again from a step's top; on a sampled surface the probes reach
 the second look's distance instead, and the tests after them are cast again for the samples it answers).
-The main floor adds a k-d tree over boundary samples r / 4 apart, the
-repeated openings an O(o^2) comparison, the openings between jambs O(F) each
+The main floor adds a k-d tree over boundary samples r / 4 apart, each opening's passage up to
+max(its samples' depth, ``edge_search_radii * r``) / d steps of a few rays each (and a floor laid along it, its
+length / d rays), the repeated openings an O(o^2) comparison, the openings between jambs O(F) each
 over the mesh's F triangles, the terminals a k-d tree query each.
 """
 
@@ -210,10 +217,13 @@ highest span around it, up to the climb above the floor, and single precision an
 towards that corner then put the floor a fraction of a millimetre beyond the reach (0.80017 m for 0.8 m:
 ``curb_platform curb=0.35`` turned by 30 to 60 degrees); the smallest cell height allowed."""
 
-_TOUCH_STEPS = 2.0
-"""Search steps: with play points, parts of the mesh this close touch, one piece (:func:`play_space_piece`): the gap
-in a floor the probes step over (three probes in a row must find no floor), so parts the method already reads as one
-floor (unwelded tiles or planks laid a crack apart) stay one piece."""
+_TOUCH_RADII = 2.0
+"""Agent radii: with play points, parts of the mesh closer than this touch, one piece (:func:`play_space_piece`): a
+gap the agent cannot pass through (its diameter, 0.8 m for the map-piece agent) parts nothing it walks, so parts the
+method reads as one floor (unwelded tiles or planks a crack apart) stay one piece, and so does a canopy on posts
+ending in the air 0.4 m off a wall, which the whole mesh reads as closing its doorway. At two search steps (0.1 m,
+until 6 December 2026) that canopy was dropped and its doorway found; the backdrops measured stand 1.7 m or more off
+the piece (docs/entry_exit.md, "An opening's width and height as a designer reads them")."""
 
 _SIDES_OPEN_STEPS = 1.0
 """Search steps: a passage read past its samples ends where its free width grows by more than this (its sides open
@@ -1142,11 +1152,13 @@ def _passages(
     widths, back, ahead = np.full(len(kept), np.inf), np.full(len(kept), np.inf), np.full(len(kept), np.inf)
     levels = [(k, np.nonzero(k * s.delta <= limit)[0])
               for k in range(1, int(math.ceil(float(limit.max(initial=0.0)) / s.delta)) + 1)]
+    if not levels:  # every opening's ways walked down steps: nothing narrows them
+        return widths, back, ahead
     # The rays at ``lift`` stand on what the agent steps onto there: from the floor's height they would start inside a
     # strip within the climb running out through the opening's middle and measure its width. Probed for every step
     # in at once (one batch).
     splits = np.cumsum([len(rows) for _, rows in levels])[:-1]
-    insides = np.concatenate([mid[rows] - out[rows] * (k * s.delta) for k, rows in levels]) if levels else np.zeros((0, 3))
+    insides = np.concatenate([mid[rows] - out[rows] * (k * s.delta) for k, rows in levels])
     on_steps = np.split(_onto_grazed_step(insides, np.concatenate([out[rows] for _, rows in levels]), caster, s), splits)
     # Past its samples the passage is read while the floor goes on within the climb of the opening's, the rays
     # standing on it (steps up through a thick wall: rays at the opening's height would graze the treads, and run in
@@ -1245,8 +1257,8 @@ def _through_the_wall(free: np.ndarray, narrowest: np.ndarray, s: _Settings) -> 
     "An opening's width and height as a designer reads them"). The passage is read in from the edge while its sides
     close in or run on (a splay, radial jambs, a stop in the wall), as deep as its samples stand or the edge search
     reaches out (``edge_search_radii * r``), whichever is deeper, and no farther than where they open out: the room
-    behind the wall, whose furniture is no part of the doorway; a corridor running on past the edge search's reach
-    is no longer its end's reveal.
+    behind the wall, whose furniture is no part of the doorway. What is read past the samples counts only where they
+    do open out within that reach: a corridor running on past it (tapering, or flaring to its mouth) is no reveal.
     """
     return free > narrowest + _SIDES_OPEN_STEPS * s.delta
 
@@ -1908,13 +1920,13 @@ def add_terminals(
 
 def play_space_piece(mesh: trimesh.Trimesh, graph: nx.Graph, agent: AgentConfig, params: Params) -> trimesh.Trimesh:
     """The faces of ``mesh`` that make the piece ``graph``'s play space is (:func:`g2s_plugins.play_space.play_space_faces`):
-    the parts with a face within the snap distance of one of its nodes and those touching them, parts a crack up to
-    :data:`_TOUCH_STEPS` search steps apart included; the rays, the outer extent and ``leave_footprint`` read them
+    the parts with a face within the snap distance of one of its nodes and those touching them, parts up to
+    :data:`_TOUCH_RADII` agent radii apart included; the rays, the outer extent and ``leave_footprint`` read them
     alone, so a backdrop or a skybox apart from the piece hides none of its openings. ``mesh`` itself when no face
     lies that near a node (none was measured: a node stands on the walkable surface). O((F + n) log F + pairs)."""
     footing = np.array([pos for _, pos in graph.nodes(data="pos") if pos is not None], dtype=np.float64)
     s = _settings(params, agent)
-    keep = play_space_faces(mesh, footing, s.snap, _TOUCH_STEPS * s.delta)
+    keep = play_space_faces(mesh, footing, s.snap, _TOUCH_RADII * s.radius)
     if not keep.any():
         return mesh
     return trimesh.Trimesh(np.asarray(mesh.vertices), np.asarray(mesh.faces)[keep], process=False)
