@@ -1157,90 +1157,96 @@ def _passages(
     # The rays at ``lift`` stand on what the agent steps onto there: from the floor's height they would start inside a
     # strip within the climb running out through the opening's middle and measure its width. Probed for every step
     # in at once (one batch).
-    splits = np.cumsum([len(rows) for _, rows in levels])[:-1]
-    insides = np.concatenate([mid[rows] - out[rows] * (k * s.delta) for k, rows in levels])
-    on_steps = np.split(_onto_grazed_step(insides, np.concatenate([out[rows] for _, rows in levels]), caster, s), splits)
+    starts = np.cumsum([0] + [len(rows) for _, rows in levels])
+    row_of = np.concatenate([rows for _, rows in levels])  # each (step, opening) entry's opening
+    depth_of = np.concatenate([np.full(len(rows), k * s.delta) for k, rows in levels])
+    insides = mid[row_of] - out[row_of] * depth_of[:, None]
+    on_steps = _onto_grazed_step(insides, out[row_of], caster, s)
     # Past its samples the passage is read while the floor goes on within the climb of the opening's, the rays
     # standing on it (steps up through a thick wall: rays at the opening's height would graze the treads, and run in
     # the solid under a room floor higher than the climb); not over a drop. Probed from twice the climb above.
     below = caster.first_hits(insides + UP * (2.0 * s.climb), np.broadcast_to(-UP, insides.shape).copy())
     floored = np.isfinite(below.distance) & (np.abs(below.distance - 2.0 * s.climb) <= s.climb) & _walkable(
         caster, below.face, s)
-    grounds = np.split(np.where(floored, insides[:, 1] + 2.0 * s.climb - below.distance, np.nan), splits)
-    ended = np.zeros(len(kept), dtype=bool)  # the passage's sides opened out (the room behind the wall)
-    floor_at = mid[:, 1].copy()  # the floor's height at each passage's last step read, m
+    beyond = depth_of > deep[row_of]
+    insides[beyond & floored, 1] = (insides[:, 1] + 2.0 * s.climb - below.distance)[beyond & floored]
+    # Every step's rays in one batch (the rays at ``lift`` from the step top, the free part's, and the way on inward
+    # from each step and from the edge: something standing across it within a step and a half, a wall closing a
+    # pad's back, ends the passage before a step read in its face's plane, whose rays along the face meet it anywhere).
+    low = on_steps + UP * s.lift
+    n = len(row_of)
+    hits = caster.first_hits(
+        np.concatenate([low, low, *_free_rays(insides, along[row_of], s)[0], insides + UP * (s.climb + s.delta),
+                        insides + UP * s.head, mid + UP * (s.climb + s.delta), mid + UP * s.head]),
+        np.concatenate([along[row_of], -along[row_of], *_free_rays(insides, along[row_of], s)[1], -out[row_of],
+                        -out[row_of], -out, -out]))
+    across = hits.distance[:n] + hits.distance[n: 2 * n]
+    to_first_of, to_last_of = _free_reads(hits, 2 * n, along[row_of], towards_last[row_of], caster, s)
+    near = hits.distance[6 * n:] <= 1.5 * s.delta
+    closed_of = near[:n] | near[n: 2 * n]  # the way on from each entry's step
+    closed = near[2 * n: 2 * n + len(kept)] | near[2 * n + len(kept):]  # from each opening's last step read: the edge
+    ended = np.zeros(len(kept), dtype=bool)  # the passage's sides opened out (the room behind the wall), or it ended
     came_out = np.zeros(len(kept), dtype=bool)  # its sides opened out: it came out of the wall
     samples_read = np.full((3, len(kept)), np.inf)  # widths, back and ahead as deep as the samples stand
-    for (k, rows), on_step, ground in zip(levels, on_steps, grounds):
-        live = ~ended[rows]
-        on_step, ground, rows = on_step[live], ground[live], rows[live]
-        beyond = k * s.delta > deep[rows]
-        off = beyond & np.isnan(ground)
-        # and where something stands across the way in within a step and a half of the last step read (a wall closing
-        # a pad's back): a step read in its face's plane grazes it, and its rays along the face meet it anywhere
-        going_on = np.flatnonzero(beyond & ~off)
-        if len(going_on):
-            last_read = mid[rows[going_on]] - out[rows[going_on]] * ((k - 1) * s.delta)
-            last_read[:, 1] = floor_at[rows[going_on]]
-            off[going_on] = _closed_ahead(last_read, -out[rows[going_on]], caster, s)
+    opened_at = np.zeros(len(kept), dtype=np.int64)  # the entry at which its sides opened out
+    for k in range(len(levels)):
+        entries = np.arange(starts[k], starts[k + 1])
+        entries = entries[~ended[row_of[entries]]]
+        rows = row_of[entries]
+        off = beyond[entries] & (~floored[entries] | closed[rows])
         ended[rows[off]] = True
-        on_step, ground, beyond, rows = on_step[~off], ground[~off], beyond[~off], rows[~off]
-        inside = mid[rows] - out[rows] * (k * s.delta)
-        inside[beyond, 1] = ground[beyond]
-        floor_at[rows] = inside[:, 1]
-        low = on_step + UP * s.lift
-        across = caster.first_hits(low, along[rows]).distance + caster.first_hits(low, -along[rows]).distance
-        to_first, to_last = _free_across(inside, along[rows], towards_last[rows], caster, s)
+        entries, rows = entries[~off], rows[~off]
+        closed[rows] = closed_of[entries]
+        to_first, to_last = to_first_of[entries], to_last_of[entries]
         opened = _through_the_wall(to_first + to_last, back[rows] + ahead[rows], s)
-        ended[rows[opened]] = True
-        came_out[rows[opened]] = True
-        widths[rows[~opened]] = np.minimum(widths[rows[~opened]], across[~opened])
+        ended[rows[opened]] = came_out[rows[opened]] = True
+        opened_at[rows[opened]] = entries[opened]
+        widths[rows[~opened]] = np.minimum(widths[rows[~opened]], across[entries[~opened]])
         narrower = ~opened & (to_first + to_last < back[rows] + ahead[rows])
         back[rows[narrower]], ahead[rows[narrower]] = to_first[narrower], to_last[narrower]
-        within = rows[~beyond]
+        within = rows[~beyond[entries]]
         samples_read[:, within] = widths[within], back[within], ahead[within]
-        # Where the sides opened between this step and the one before, the narrowest part lies between them (at a
-        # splay's inner face): bisected as the floor's end is.
-        rows, height = rows[opened], inside[opened, 1]
-        lo, hi = np.full(len(rows), (k - 1) * s.delta), np.full(len(rows), k * s.delta)
-        for _ in range(_REFINE_ROUNDS if k > 1 else 0):
-            depth = 0.5 * (lo + hi)
-            between = mid[rows] - out[rows] * depth[:, None]
-            between[:, 1] = height
-            to_first, to_last = _free_across(between, along[rows], towards_last[rows], caster, s)
-            opened = _through_the_wall(to_first + to_last, back[rows] + ahead[rows], s)
-            narrower = ~opened & (to_first + to_last < back[rows] + ahead[rows])
-            back[rows[narrower]], ahead[rows[narrower]] = to_first[narrower], to_last[narrower]
-            lo, hi = np.where(opened, lo, depth), np.where(opened, depth, hi)
+    # Where the sides opened between a step and the one before, the narrowest part lies between them (at a splay's
+    # inner face): bisected as the floor's end is, all such openings at once.
+    rows = np.flatnonzero(came_out & (depth_of[opened_at] > 1.5 * s.delta))
+    lo, hi = depth_of[opened_at[rows]] - s.delta, depth_of[opened_at[rows]]
+    for _ in range(_REFINE_ROUNDS):
+        depth = 0.5 * (lo + hi)
+        between = mid[rows] - out[rows] * depth[:, None]
+        between[:, 1] = insides[opened_at[rows], 1]
+        origins, directions = _free_rays(between, along[rows], s)
+        to_first, to_last = _free_reads(caster.first_hits(np.concatenate(origins), np.concatenate(directions)), 0,
+                                        along[rows], towards_last[rows], caster, s)
+        opened = _through_the_wall(to_first + to_last, back[rows] + ahead[rows], s)
+        narrower = ~opened & (to_first + to_last < back[rows] + ahead[rows])
+        back[rows[narrower]], ahead[rows[narrower]] = to_first[narrower], to_last[narrower]
+        lo, hi = np.where(opened, lo, depth), np.where(opened, depth, hi)
     # What was read past the samples counts where the passage came out of the wall: a corridor running on (tapering,
     # or flaring to its mouth) is read as deep as its samples stand, as before.
     return tuple(np.where(came_out, past, read) for past, read in zip((widths, back, ahead), samples_read))
 
 
-def _closed_ahead(points: np.ndarray, inward: np.ndarray, caster: RayCaster, s: _Settings) -> np.ndarray:
-    """(n,) bool: something stands across the way on from (n,3) ``points`` (on the floor) along (n,3) ``inward`` within
-    one and a half search steps, a search step above the climb or at the head-room rays' height."""
-    rays = np.concatenate([points + UP * (s.climb + s.delta), points + UP * s.head])
-    near = caster.first_hits(rays, np.concatenate([inward, inward])).distance <= 1.5 * s.delta
-    return near[: len(points)] | near[len(points):]
+def _free_rays(inside: np.ndarray, along: np.ndarray, s: _Settings) -> tuple[list[np.ndarray], list[np.ndarray]]:
+    """The rays reading how far a passage is free from (n,3) ``inside`` (on the floor, in from an opening's middle)
+    along (n,3) ``along`` and back: origins and directions, four blocks of n each (a search step above the climb, over
+    what the agent steps onto, ahead and back; at the head-room rays' height, what hangs into the passage lower than
+    the agent, a sign over part of it or a vault coming down at its sides, ahead and back), read by
+    :func:`_free_reads`."""
+    high, head = inside + UP * (s.climb + s.delta), inside + UP * s.head
+    return [high, high, head, head], [along, -along, along, -along]
 
 
-def _free_across(inside: np.ndarray, along: np.ndarray, towards_last: np.ndarray, caster: RayCaster,
-                 s: _Settings) -> tuple[np.ndarray, np.ndarray]:
-    """(n,) (n,): how far the passage is free from (n,3) ``inside`` (on the floor, in from an opening's middle) towards
-    its first and its last end, m (infinite where nothing stands), along the edge's (n,3) unit ``along`` (towards the
-    last end where ``towards_last`` (n,) bool). The nearer of two rays each way: a search step above the climb (over
-    what the agent steps onto) and at the head-room rays' height (what hangs into the passage lower than the agent: a
-    sign over part of it, a vault coming down at its sides). Above the climb, ground the agent walks onto (a terrain
-    rising beside its border) is in no one's way, at either height."""
-    points = np.concatenate([inside + UP * (s.climb + s.delta), inside + UP * s.head])
-    directions = np.concatenate([along, along])
-    m = len(inside)
+def _free_reads(hits, at: int, along: np.ndarray, towards_last: np.ndarray, caster: RayCaster,
+                s: _Settings) -> tuple[np.ndarray, np.ndarray]:
+    """(n,) (n,): how far the passage is free towards each opening's first and last end (m, infinite where nothing
+    stands), from the :func:`_free_rays` of (n,3) ``along`` cast as ``hits`` from index ``at`` on; the nearer of the
+    two heights each way, towards the last end along ``along`` where ``towards_last`` (n,) bool. Above the climb,
+    ground the agent walks onto (a terrain rising beside its border) is in no one's way, at either height."""
+    n = len(along)
     free = []
-    for sign in (1.0, -1.0):
-        hits = caster.first_hits(points, sign * directions)
-        reach = [np.where(_ground_ahead(caster, hits, at, sign * directions[at], s), np.inf, hits.distance[at])
-                 for at in (slice(0, m), slice(m, None))]
+    for block, direction in ((0, along), (n, -along)):
+        reach = [np.where(_ground_ahead(caster, hits, rays, direction, s), np.inf, hits.distance[rays])
+                 for rays in (np.arange(at + block, at + block + n), np.arange(at + 2 * n + block, at + 3 * n + block))]
         free.append(np.minimum(*reach))
     forward, backward = free
     return np.where(towards_last, backward, forward), np.where(towards_last, forward, backward)
