@@ -298,7 +298,8 @@ def play_space_faces(mesh: trimesh.Trimesh, footing: np.ndarray, reach: float, g
     leaves out, apart from the piece, is dropped; a piece built of separate parts (walls standing on a slab, a lintel
     between walls, a canopy on its posts) is kept whole, as are parts laid a crack apart (floor tiles, planks) up to
     ``gap``. A backdrop touching the piece (terrain it stands on) is kept, and so is whatever touches that; a part of
-    the piece touching nothing kept (a canopy on posts ending in the air off the slab) is dropped.
+    the piece touching nothing kept within ``gap`` (a canopy on posts ending in the air, farther off the walls) is
+    dropped.
 
     Cost: an R-tree of the faces' boxes (Guttman, "R-trees: a dynamic index structure for spatial searching", 1984),
     queried once per footing point with a box ``reach`` m round it and once per kept face with its box widened by

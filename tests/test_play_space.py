@@ -158,6 +158,10 @@ UNWELDED = {
     "lintel_west": ([box(-0.3, 0, 1.9, 2.9, 2.2, 3.8)], [8]),
     # a canopy 1.8 m up and 2 m deep against the east wall's outer face over its doorway: no way out under it
     "canopy_east": ([box(8.3, 10.3, 1.8, 1.9, 1.8, 4.2)], [0]),
+    # the same canopy 0.4 m off the east wall on two posts ending 0.3 m over nothing: closer than the agent's diameter
+    # to the wall, one piece with it (two search steps apart dropped it, and the east doorway was found)
+    "canopy_on_posts_in_the_air": ([box(8.7, 10.7, 1.8, 1.9, 1.8, 4.2), box(10.5, 10.7, 0.3, 1.8, 1.8, 2.0),
+                                    box(10.5, 10.7, 0.3, 1.8, 4.0, 4.2)], [0]),
 }
 
 

@@ -64,7 +64,10 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
    down to). The
    opening lies on that line; its ends are extended along the edge while the
    surface goes on inside the edge, ends just outside it, and nothing stands
-   in the way or straight out: this undoes the retreat from walls. An
+   in the way or straight out: this undoes the retreat from walls. The line
+   is then laid on the floor ending along it (the least-squares line through
+   the ground's heights probed along it): samples on treads within the climb
+   of that floor leave their edge points at their own heights. An
    opening overlapping a wider one along the same line, facing the same way,
    is the same opening found twice (its middle within ``r`` of the wider one's line in plan, an end or its
    middle within the climb of the line's height there, read in plan and height on a sloped line too): the wider
@@ -81,7 +84,10 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
      there, not from inside a strip running out through the opening); an opening is the narrowest free part of that
      passage above the climb and at the head-room rays' height (a sliding
      leaf or a rubble chunk in the wall, or a sign hanging or a vault coming
-     down lower than the agent, leaves part of the door);
+     down lower than the agent, leaves part of the door), the passage read
+     through the wall, past the samples up to the edge search's reach, to
+     where its sides open out (a reveal splaying out to the face is as wide
+     as its inner face);
    * jambs (``step_up``): an opening found from step tops needs something
      at half the agent's height within two search steps of both its ends
      (a threshold's jambs); a curb along the piece's edge has none;
@@ -153,8 +159,9 @@ climb) / d across the way for the directions clear so far, two more beyond it
 with ``leave_footprint``: O(S k (edge_search_radii r + agent height) / d) rays (up to twice
 that with ``step_up``, for the samples searched again from a step's top; on a sampled surface the probes reach
 the second look's distance instead, and the tests after them are cast again for the samples it answers).
-The main floor adds a k-d tree over boundary samples r / 4 apart, the
-repeated openings an O(o^2) comparison, the openings between jambs O(F) each
+The main floor adds a k-d tree over boundary samples r / 4 apart, each opening's passage up to
+max(its samples' depth, ``edge_search_radii * r``) / d steps of a few rays each (and a floor laid along it, its
+length / d rays), the repeated openings an O(o^2) comparison, the openings between jambs O(F) each
 over the mesh's F triangles, the terminals a k-d tree query each.
 """
 
@@ -210,10 +217,19 @@ highest span around it, up to the climb above the floor, and single precision an
 towards that corner then put the floor a fraction of a millimetre beyond the reach (0.80017 m for 0.8 m:
 ``curb_platform curb=0.35`` turned by 30 to 60 degrees); the smallest cell height allowed."""
 
-_TOUCH_STEPS = 2.0
-"""Search steps: with play points, parts of the mesh this close touch, one piece (:func:`play_space_piece`): the gap
-in a floor the probes step over (three probes in a row must find no floor), so parts the method already reads as one
-floor (unwelded tiles or planks laid a crack apart) stay one piece."""
+_TOUCH_RADII = 2.0
+"""Agent radii: with play points, parts of the mesh closer than this touch, one piece (:func:`play_space_piece`): a
+gap the agent cannot pass through (its diameter, 0.8 m for the map-piece agent) parts nothing it walks, so parts the
+method reads as one floor (unwelded tiles or planks a crack apart) stay one piece, and so does a canopy on posts
+ending in the air 0.4 m off a wall, which the whole mesh reads as closing its doorway. At two search steps (0.1 m,
+until 6 December 2026) that canopy was dropped and its doorway found; the backdrops measured stand 1.7 m or more off
+the piece (docs/entry_exit.md, "An opening's width and height as a designer reads them")."""
+
+_SIDES_OPEN_STEPS = 1.0
+"""Search steps: a passage read past its samples ends where its free width grows by more than this (its sides open
+out into the room behind the wall, metres at once; a reveal splaying inwards by 45 degrees a side grows two steps
+a step, one splaying less reads no narrower for going on). Rays along a straight jamb agree to the ray caster's
+precision."""
 
 _MAX_PROBE_RAYS = 1_000_000
 """Probe rays cast per batch when looking for the surface's end (a level's whole boundary at once, samples x fan
@@ -1066,13 +1082,55 @@ def _extend(kept: list[_Edge], caster: RayCaster, s: _Settings, floor: np.ndarra
     return first - along * ext[0][:, None], last + along * ext[1][:, None]
 
 
+def _onto_floor_along(kept: list[_Edge], first: np.ndarray, last: np.ndarray, caster: RayCaster,
+                      s: _Settings) -> tuple[np.ndarray, np.ndarray]:
+    """(n,3) (n,3): each opening's ends ``first`` and ``last`` moved up or down onto the floor that ends along it.
+
+    An edge point lies along its sample's way out in the plane of the surface under the sample, and the line through
+    a segment's points at their mean height: where the samples stand on several treads within the climb of the floor
+    that ends (a doorway three 0.15 m steps down, its samples on the two lower treads), the opening lay between
+    them, 0.08 m over its floor on the navmesh and 0.15 m on the sampling route (docs/entry_exit.md, "An opening's
+    width and height as a designer reads them"). The floor is probed straight down from the climb above the line,
+    every search step along it from a step inside each end and half a search step inside the edge (ground within the
+    climb either side, walkable), and the line is laid on it: the least-squares line through the ground's heights
+    along the opening (its slope kept where the floor slopes along the edge, a ramp's side). Ends moving less than
+    :data:`_SAME_HEIGHT`, or with no ground found, stay. O(opening length / search step) rays each, in one batch.
+    """
+    inset = _INSET_STEPS * s.delta
+    lengths = np.linalg.norm(last - first, axis=1)
+    spots = [s.delta * np.arange(1, max(2, int(length / s.delta))) if length > 2.0 * s.delta else np.array([0.5 * length])
+             for length in lengths]
+    rows = np.repeat(np.arange(len(kept)), [len(t) for t in spots])
+    t = np.concatenate(spots)
+    along = (last - first) / np.maximum(lengths, 1e-12)[:, None]
+    out = np.array([e.outward for e in kept])
+    line = first[rows] + along[rows] * t[:, None]
+    hit = caster.first_hits(line - out[rows] * inset + UP * s.climb, np.broadcast_to(-UP, line.shape).copy())
+    ground = np.isfinite(hit.distance) & (hit.distance <= 2.0 * s.climb) & _walkable(caster, hit.face, s)
+    rise = s.climb - hit.distance  # the ground's height over the line, m
+    first, last = first.copy(), last.copy()
+    for i in range(len(kept)):
+        on = (rows == i) & ground
+        if not on.any():
+            continue
+        u, v = t[on], rise[on]
+        slope = 0.0 if np.ptp(u) <= 0.0 else float(np.polyfit(u, v, 1)[0])
+        at_first = float(np.mean(v) - slope * np.mean(u))
+        at_last = at_first + slope * lengths[i]
+        if max(abs(at_first), abs(at_last)) > _SAME_HEIGHT:
+            first[i, 1] += at_first
+            last[i, 1] += at_last
+    return first, last
+
+
 def _passages(
     kept: list[_Edge], first: np.ndarray, last: np.ndarray, ways: _Ways, caster: RayCaster, s: _Settings
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """The narrowest clear width across each opening between its edge and the navmesh, and its free part.
 
     At every search step in from the edge, as deep as its samples stand from it (the wall's thickness
-    and the erosion), rays each way along the edge from the opening's middle. At the rays' height:
+    and the erosion) and on while the passage's sides close in or run on, up to the edge search's reach
+    (:func:`_through_the_wall`), rays each way along the edge from the opening's middle. At the rays' height:
     bars or a grille in the wall leave gaps narrower than the agent however wide the hole. One search
     step above the climb (over what the agent steps onto, such as a low slab of rubble, and not
     stopped by ground it walks onto) and at the head-room rays' height: a leaf or a chunk standing in
@@ -1090,35 +1148,125 @@ def _passages(
     # treads behind it): its passage is not narrowed.
     reach = np.where(ways.drop > 0.0, 0.0, np.linalg.norm(ways.edge - ways.base, axis=1))
     deep = np.array([np.median(reach[e.samples]) for e in kept])
+    limit = np.where(deep > 0.0, np.maximum(deep, s.search), 0.0)
     widths, back, ahead = np.full(len(kept), np.inf), np.full(len(kept), np.inf), np.full(len(kept), np.inf)
-    levels = [(k, np.nonzero(k * s.delta <= deep)[0])
-              for k in range(1, int(math.ceil(float(deep.max(initial=0.0)) / s.delta)) + 1)]
+    levels = [(k, np.nonzero(k * s.delta <= limit)[0])
+              for k in range(1, int(math.ceil(float(limit.max(initial=0.0)) / s.delta)) + 1)]
+    if not levels:  # every opening's ways walked down steps: nothing narrows them
+        return widths, back, ahead
     # The rays at ``lift`` stand on what the agent steps onto there: from the floor's height they would start inside a
     # strip within the climb running out through the opening's middle and measure its width. Probed for every step
     # in at once (one batch).
-    on_steps = np.split(_onto_grazed_step(np.concatenate([mid[rows] - out[rows] * (k * s.delta) for k, rows in levels]),
-                                          np.concatenate([out[rows] for _, rows in levels]), caster, s),
-                        np.cumsum([len(rows) for _, rows in levels])[:-1]) if levels else []
-    for (k, rows), on_step in zip(levels, on_steps):
-        inside = mid[rows] - out[rows] * (k * s.delta)
-        points = np.concatenate([on_step + UP * s.lift, inside + UP * (s.climb + s.delta), inside + UP * s.head])
-        directions = np.concatenate([along[rows], along[rows], along[rows]])
-        hits_ahead, hits_back = caster.first_hits(points, directions), caster.first_hits(points, -directions)
-        m = len(rows)
-        low, high, head = slice(0, m), slice(m, 2 * m), slice(2 * m, None)
-        widths[rows] = np.minimum(widths[rows], hits_ahead.distance[low] + hits_back.distance[low])
-        # Above the climb, ground the agent walks onto (a terrain rising beside its border) is in no one's way, at
-        # either height; at the head-room rays' height, what hangs into the passage lower than the agent is (a sign
-        # over part of it, a vault coming down at its sides).
-        forward, backward = (np.minimum(*(np.where(_ground_ahead(caster, h, at, sign * directions[at], s), np.inf,
-                                                   h.distance[at]) for at in (high, head)))
-                             for h, sign in ((hits_ahead, 1.0), (hits_back, -1.0)))
-        to_last = np.where(towards_last[rows], forward, backward)
-        to_first = np.where(towards_last[rows], backward, forward)
-        narrower = to_first + to_last < back[rows] + ahead[rows]
-        rows = rows[narrower]
-        back[rows], ahead[rows] = to_first[narrower], to_last[narrower]
-    return widths, back, ahead
+    starts = np.cumsum([0] + [len(rows) for _, rows in levels])
+    row_of = np.concatenate([rows for _, rows in levels])  # each (step, opening) entry's opening
+    depth_of = np.concatenate([np.full(len(rows), k * s.delta) for k, rows in levels])
+    insides = mid[row_of] - out[row_of] * depth_of[:, None]
+    on_steps = _onto_grazed_step(insides, out[row_of], caster, s)
+    # Past its samples the passage is read while the floor goes on within the climb of the opening's, the rays
+    # standing on it (steps up through a thick wall: rays at the opening's height would graze the treads, and run in
+    # the solid under a room floor higher than the climb); not over a drop. Probed from twice the climb above.
+    below = caster.first_hits(insides + UP * (2.0 * s.climb), np.broadcast_to(-UP, insides.shape).copy())
+    floored = np.isfinite(below.distance) & (np.abs(below.distance - 2.0 * s.climb) <= s.climb) & _walkable(
+        caster, below.face, s)
+    beyond = depth_of > deep[row_of]
+    insides[beyond & floored, 1] = (insides[:, 1] + 2.0 * s.climb - below.distance)[beyond & floored]
+    # Every step's rays in one batch (the rays at ``lift`` from the step top, the free part's, and the way on inward
+    # from each step and from the edge: something standing across it within a step and a half, a wall closing a
+    # pad's back, ends the passage before a step read in its face's plane, whose rays along the face meet it anywhere).
+    low = on_steps + UP * s.lift
+    n = len(row_of)
+    hits = caster.first_hits(
+        np.concatenate([low, low, *_free_rays(insides, along[row_of], s)[0], insides + UP * (s.climb + s.delta),
+                        insides + UP * s.head, mid + UP * (s.climb + s.delta), mid + UP * s.head]),
+        np.concatenate([along[row_of], -along[row_of], *_free_rays(insides, along[row_of], s)[1], -out[row_of],
+                        -out[row_of], -out, -out]))
+    across = hits.distance[:n] + hits.distance[n: 2 * n]
+    to_first_of, to_last_of = _free_reads(hits, 2 * n, along[row_of], towards_last[row_of], caster, s)
+    near = hits.distance[6 * n:] <= 1.5 * s.delta
+    closed_of = near[:n] | near[n: 2 * n]  # the way on from each entry's step
+    closed = near[2 * n: 2 * n + len(kept)] | near[2 * n + len(kept):]  # from each opening's last step read: the edge
+    ended = np.zeros(len(kept), dtype=bool)  # the passage's sides opened out (the room behind the wall), or it ended
+    came_out = np.zeros(len(kept), dtype=bool)  # its sides opened out: it came out of the wall
+    samples_read = np.full((3, len(kept)), np.inf)  # widths, back and ahead as deep as the samples stand
+    opened_at = np.zeros(len(kept), dtype=np.int64)  # the entry at which its sides opened out
+    for k in range(len(levels)):
+        entries = np.arange(starts[k], starts[k + 1])
+        entries = entries[~ended[row_of[entries]]]
+        rows = row_of[entries]
+        off = beyond[entries] & (~floored[entries] | closed[rows])
+        ended[rows[off]] = True
+        entries, rows = entries[~off], rows[~off]
+        closed[rows] = closed_of[entries]
+        to_first, to_last = to_first_of[entries], to_last_of[entries]
+        opened = _through_the_wall(to_first + to_last, back[rows] + ahead[rows], s)
+        ended[rows[opened]] = came_out[rows[opened]] = True
+        opened_at[rows[opened]] = entries[opened]
+        widths[rows[~opened]] = np.minimum(widths[rows[~opened]], across[entries[~opened]])
+        narrower = ~opened & (to_first + to_last < back[rows] + ahead[rows])
+        back[rows[narrower]], ahead[rows[narrower]] = to_first[narrower], to_last[narrower]
+        within = rows[~beyond[entries]]
+        samples_read[:, within] = widths[within], back[within], ahead[within]
+    # Where the sides opened between a step and the one before, the narrowest part lies between them (at a splay's
+    # inner face): bisected as the floor's end is, all such openings at once.
+    rows = np.flatnonzero(came_out & (depth_of[opened_at] > 1.5 * s.delta))
+    lo, hi = depth_of[opened_at[rows]] - s.delta, depth_of[opened_at[rows]]
+    for _ in range(_REFINE_ROUNDS):
+        depth = 0.5 * (lo + hi)
+        between = mid[rows] - out[rows] * depth[:, None]
+        between[:, 1] = insides[opened_at[rows], 1]
+        origins, directions = _free_rays(between, along[rows], s)
+        to_first, to_last = _free_reads(caster.first_hits(np.concatenate(origins), np.concatenate(directions)), 0,
+                                        along[rows], towards_last[rows], caster, s)
+        opened = _through_the_wall(to_first + to_last, back[rows] + ahead[rows], s)
+        narrower = ~opened & (to_first + to_last < back[rows] + ahead[rows])
+        back[rows[narrower]], ahead[rows[narrower]] = to_first[narrower], to_last[narrower]
+        lo, hi = np.where(opened, lo, depth), np.where(opened, depth, hi)
+    # What was read past the samples counts where the passage came out of the wall: a corridor running on (tapering,
+    # or flaring to its mouth) is read as deep as its samples stand, as before.
+    return tuple(np.where(came_out, past, read) for past, read in zip((widths, back, ahead), samples_read))
+
+
+def _free_rays(inside: np.ndarray, along: np.ndarray, s: _Settings) -> tuple[list[np.ndarray], list[np.ndarray]]:
+    """The rays reading how far a passage is free from (n,3) ``inside`` (on the floor, in from an opening's middle)
+    along (n,3) ``along`` and back: origins and directions, four blocks of n each (a search step above the climb, over
+    what the agent steps onto, ahead and back; at the head-room rays' height, what hangs into the passage lower than
+    the agent, a sign over part of it or a vault coming down at its sides, ahead and back), read by
+    :func:`_free_reads`."""
+    high, head = inside + UP * (s.climb + s.delta), inside + UP * s.head
+    return [high, high, head, head], [along, -along, along, -along]
+
+
+def _free_reads(hits, at: int, along: np.ndarray, towards_last: np.ndarray, caster: RayCaster,
+                s: _Settings) -> tuple[np.ndarray, np.ndarray]:
+    """(n,) (n,): how far the passage is free towards each opening's first and last end (m, infinite where nothing
+    stands), from the :func:`_free_rays` of (n,3) ``along`` cast as ``hits`` from index ``at`` on; the nearer of the
+    two heights each way, towards the last end along ``along`` where ``towards_last`` (n,) bool. Above the climb,
+    ground the agent walks onto (a terrain rising beside its border) is in no one's way, at either height."""
+    n = len(along)
+    free = []
+    for block, direction in ((0, along), (n, -along)):
+        reach = [np.where(_ground_ahead(caster, hits, rays, direction, s), np.inf, hits.distance[rays])
+                 for rays in (np.arange(at + block, at + block + n), np.arange(at + 2 * n + block, at + 3 * n + block))]
+        free.append(np.minimum(*reach))
+    forward, backward = free
+    return np.where(towards_last, backward, forward), np.where(towards_last, forward, backward)
+
+
+def _through_the_wall(free: np.ndarray, narrowest: np.ndarray, s: _Settings) -> np.ndarray:
+    """(n,) bool: the passage has come out of the wall: its free width ``free`` (n,) is more than
+    :data:`_SIDES_OPEN_STEPS` search steps wider than the narrowest read so far, ``narrowest`` (n,) (m; infinite:
+    none yet).
+
+    A designer sizes a doorway by its narrowest clear width through the wall. The samples stand where Recast's
+    erosion leaves them, ``r`` inside the floor's end on the navmesh: a reveal splaying from 1.2 m at the inner face of
+    a wall 1 m thick to 2.2 m at the outer was read 0.4-0.8 m in, 1.40-1.80 m wide with the yaw (docs/entry_exit.md,
+    "An opening's width and height as a designer reads them"). The passage is read in from the edge while its sides
+    close in or run on (a splay, radial jambs, a stop in the wall), as deep as its samples stand or the edge search
+    reaches out (``edge_search_radii * r``), whichever is deeper, and no farther than where they open out: the room
+    behind the wall, whose furniture is no part of the doorway. What is read past the samples counts only where they
+    do open out within that reach: a corridor running on past it (tapering, or flaring to its mouth) is no reveal.
+    """
+    return free > narrowest + _SIDES_OPEN_STEPS * s.delta
 
 
 def _ground_ahead(caster: RayCaster, hits, at: slice, directions: np.ndarray, s: _Settings) -> np.ndarray:
@@ -1625,7 +1773,8 @@ def detect_openings(
     if not kept:
         return Detection((), (), ())
     # How far down steps the edges' samples found the floor ending (the deepest; 0 for a floor's own level).
-    p_first, p_last = _extend(kept, caster, s, np.array([_walked_down_to(e.samples, ways) for e in kept]))
+    p_first, p_last = _onto_floor_along(
+        kept, *_extend(kept, caster, s, np.array([_walked_down_to(e.samples, ways) for e in kept])), caster, s)
 
     corners = np.asarray(mesh.triangles, dtype=np.float64)
     frame = piece_frame(mesh)
@@ -1777,13 +1926,13 @@ def add_terminals(
 
 def play_space_piece(mesh: trimesh.Trimesh, graph: nx.Graph, agent: AgentConfig, params: Params) -> trimesh.Trimesh:
     """The faces of ``mesh`` that make the piece ``graph``'s play space is (:func:`g2s_plugins.play_space.play_space_faces`):
-    the parts with a face within the snap distance of one of its nodes and those touching them, parts a crack up to
-    :data:`_TOUCH_STEPS` search steps apart included; the rays, the outer extent and ``leave_footprint`` read them
+    the parts with a face within the snap distance of one of its nodes and those touching them, parts up to
+    :data:`_TOUCH_RADII` agent radii apart included; the rays, the outer extent and ``leave_footprint`` read them
     alone, so a backdrop or a skybox apart from the piece hides none of its openings. ``mesh`` itself when no face
     lies that near a node (none was measured: a node stands on the walkable surface). O((F + n) log F + pairs)."""
     footing = np.array([pos for _, pos in graph.nodes(data="pos") if pos is not None], dtype=np.float64)
     s = _settings(params, agent)
-    keep = play_space_faces(mesh, footing, s.snap, _TOUCH_STEPS * s.delta)
+    keep = play_space_faces(mesh, footing, s.snap, _TOUCH_RADII * s.radius)
     if not keep.any():
         return mesh
     return trimesh.Trimesh(np.asarray(mesh.vertices), np.asarray(mesh.faces)[keep], process=False)
