@@ -31,7 +31,8 @@ with entry_points_readable():  # another package's broken entry_points.txt is na
 
     from g2s_core import pipeline
     from g2s_core.config import RunConfig, named_files, resolve_config
-    from g2s_core.mesh import SAMPLE_PREFIX, generate_level, load_mesh, mesh_sha256, prepare_and_clean
+    from g2s_core.input_files import given_path
+    from g2s_core.mesh import SAMPLE_PREFIX, generate_level, load_mesh, mesh_sha256, prepare_and_clean, text_of_name
     from g2s_core.model import LoadedResult, RunResult
     from g2s_core.outputs import DEFAULT_FORMATS, write_outputs
     from g2s_core.registry import Registry, installed
@@ -74,15 +75,19 @@ def open_mesh(mesh: MeshLike, config: RunConfig, name: str | None = None, regist
         config: its ``mesh`` settings (up axis, scale; cleaning for files and
             in-memory meshes) are applied.
         name: the name recorded for the mesh (default: the file name, the
-            sample spec, or ``"mesh"``).
+            sample spec, or ``"mesh"``), made text as a file's name is (:func:`~g2s_core.mesh.text_of_name`).
         registry: the plugins that generate sample levels (default: the installed ones).
 
     Raises:
-        MeshError: ``mesh`` is none of these, or the file is missing or not a usable triangle mesh.
+        MeshError: ``mesh`` is none of these (an empty name, which is the working folder, too), the file is missing
+            or not a usable triangle mesh, or ``name`` is no text.
         ConfigError: no such level generator, or bad parameters for it.
     """
-    if not isinstance(mesh, (str, Path, trimesh.Trimesh)):  # a Scene is what trimesh.load gives for a glTF
-        raise MeshError(f"mesh: expected a mesh file, {SAMPLE_PREFIX}NAME or a trimesh.Trimesh, got {type(mesh).__name__}")
+    if not isinstance(mesh, trimesh.Trimesh):  # a Scene is what trimesh.load gives for a glTF
+        given_path(mesh, "mesh", f"a mesh file, {SAMPLE_PREFIX}NAME or a trimesh.Trimesh", MeshError)
+    if name is not None and not isinstance(name, str):
+        raise MeshError(f"mesh_name: expected a text, got {type(name).__name__}")
+    name = name and text_of_name(name)  # a name that is not UTF-8 (the Python API's mesh_name) as the outputs hold it
     if isinstance(mesh, trimesh.Trimesh):
         name = name or "mesh"
         prepared, cleaning = prepare_and_clean(mesh, config.mesh, source=name)
@@ -187,6 +192,8 @@ def run(
         ConfigError, MeshError, G2SError: bad input (what ``g2s`` reports with exit code 2).
         PluginFailure: a plugin failed (what ``g2s`` reports with exit code 1, naming the plugin).
     """
+    if progress is not None and not callable(progress):
+        raise G2SError(f"progress: expected a function of one argument or None, got {type(progress).__name__}")
     config_files: list[Path] = []
     run_config, source = resolve_config(config, overrides, sources=config_files)
     registry = installed()
@@ -213,13 +220,13 @@ def write_result(
     or removed.
 
     Raises:
-        G2SError: unknown format, or the folder cannot take the results
-            (checked before anything is written).
+        G2SError: ``outdir`` is no folder path (an empty name, the working folder, too), an unknown format, or the
+            folder cannot take the results (checked before anything is written).
     """
     default = result.config.get("outputs", {}).get("formats", DEFAULT_FORMATS)
     chosen = default if formats is None else formats
     return write_outputs(
-        result, Path(outdir), chosen, replace=force, progress=progress, registry=registry, protect=result.inputs
+        result, given_path(outdir, "outdir", "a folder"), chosen, replace=force, progress=progress, registry=registry, protect=result.inputs
     )
 
 
@@ -230,10 +237,11 @@ def load_result(path: str | Path, format: str = "json", registry: Registry | Non
     :class:`~g2s_core.model.RunResult` from :func:`run`.
 
     Raises:
-        G2SError: the file is missing or not a g2s ``structure.json``
+        G2SError: ``path`` is no path (an empty name too), the file is missing or not a g2s ``structure.json``
             (ConfigError: no reader of ``format`` is installed).
     """
+    path = given_path(path, "path", "a result folder or its structure.json")
     registry = registry or installed()
-    loaded = registry.call(registry.get("readers", format, key="format"), path=Path(path))
+    loaded = registry.call(registry.get("readers", format, key="format"), path=path)
     _put_values(loaded.structure, loaded.analysis)
     return loaded

@@ -29,7 +29,7 @@ from rich.table import Table
 from g2s_core import version
 from g2s_core.config import parse_assignment, presets, resolve_config
 from g2s_core.errors import ConfigError, G2SError, PluginFailure, out_of_memory
-from g2s_core.mesh import SAMPLE_PREFIX, SUPPORTED_SUFFIXES
+from g2s_core.mesh import SAMPLE_PREFIX, SUPPORTED_SUFFIXES, text_of_name
 from g2s_core.model import RaisedWarning, RunResult
 from g2s_core.outputs import DEFAULT_FORMATS, check_outdir, chosen_formats, writers
 from g2s_core.registry import installed, plugin_parameters
@@ -90,21 +90,18 @@ class CommandParser(argparse.ArgumentParser):
         self.exit(2, f"g2s: error: {message} (see {self.prog} --help)\n")
 
 
-def output_folder(text: str) -> Path:
-    """An ``-o`` argument: a folder, never empty (an unset shell variable would put results in the working folder)."""
-    if not text.strip():
-        raise argparse.ArgumentTypeError("expected a folder, got an empty name")
-    return Path(text)
-
-
-def named(what: str) -> Callable[[str], str]:
-    """The type of an argument naming ``what``, refusing an empty one: ``Path("")`` is the working folder, which
-    was then named as the config or mesh (``.: expected a config file, got a folder``)."""
-    def given(text: str) -> str:
+def named(what: str, kind: Callable[[str], Any] = str) -> Callable[[str], Any]:
+    """The type of an argument naming ``what``, read as ``kind``, refusing an empty one: ``Path("")`` is the working
+    folder, which was then named as the config or mesh (``.: expected a config file, got a folder``)."""
+    def given(text: str) -> Any:
         if not text.strip():
             raise argparse.ArgumentTypeError(f"expected {what}, got an empty name")
-        return text
+        return kind(text)
     return given
+
+
+# an ``-o`` argument: an unset shell variable, an empty name, would put the results in the working folder
+output_folder = named("a folder", Path)
 
 
 def _parser() -> tuple[argparse.ArgumentParser, dict[str, Callable[[argparse.Namespace], int] | G2SError | PluginFailure]]:
@@ -306,14 +303,15 @@ def _warn(errors: Console, message: str) -> None:
 
 
 def _summary(result: RunResult, outdir: Path, formats: Sequence[str], written: Sequence[Path]) -> dict[str, Any]:
-    """The --json summary."""
+    """The --json summary; paths as text, as the mesh's name is (a folder whose name is not UTF-8 was a lone
+    surrogate, ``"out\\udcff"``, that strict JSON readers refuse)."""
     stage, graph = final_graph(result)
     return {
         "mesh": result.mesh_name,
         "mesh_sha256": result.mesh_sha256,
-        "outdir": str(outdir),
+        "outdir": text_of_name(str(outdir)),
         "formats": list(formats),
-        "files": [str(p) for p in written],
+        "files": [text_of_name(str(p)) for p in written],
         "stages": [vars(s) for s in result.stages],
         "total_seconds": result.total_seconds,
         "final": {

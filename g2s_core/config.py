@@ -121,6 +121,10 @@ RunConfig = create_model(
 MAX_YAML_NODES = 1_000_000
 
 
+# what PyYAML's scanner passes over before a line break or a token: spaces, then a comment to the end of its line
+_SPACES_AND_COMMENT = re.compile("[ ]*(?:#[^\0\r\n\x85\u2028\u2029]*)?")
+
+
 class _Loader(yaml.SafeLoader):
     """``yaml.SafeLoader`` that stops at :data:`MAX_NESTING` levels as soon as it scans them.
 
@@ -135,6 +139,18 @@ class _Loader(yaml.SafeLoader):
     def add_indent(self, column: int) -> bool:
         self._check_depth(len(self.indents))
         return super().add_indent(column)
+
+    def scan_to_next_token(self) -> None:
+        """PyYAML's, but a comment passed over in one step where PyYAML's moved a character at a time (a config of one
+        comment line of 50 MB took 21 s of CPU); the text is all in ``self.buffer`` (:func:`_parse_yaml` reads text)."""
+        while True:  # a byte-order mark at the very start, as PyYAML's, then spaces and a comment
+            start = self.pointer
+            end = _SPACES_AND_COMMENT.match(self.buffer, start + (self.index == 0 and self.peek() == "\uFEFF")).end()
+            self.pointer, self.index = end, self.index + end - start
+            self.column += end - start - self.buffer.count("\uFEFF", start, end)  # forward() counts no mark in a column
+            if not self.scan_line_break():
+                return
+            self.allow_simple_key = self.allow_simple_key or not self.flow_level  # a new line allows one in a block
 
     def compose_node(self, parent: yaml.Node | None, index: Any) -> yaml.Node:
         """The next node, refusing the one past :data:`MAX_YAML_NODES` (a list of 16 million numbers, 96 MB, took
@@ -383,7 +399,7 @@ def resolve_config(
         name as given).
 
     Raises:
-        ConfigError: no such file or preset, an override's key is unknown, or
+        ConfigError: no such file or preset (an empty name), an override's key is unknown, or
             the result does not validate.
     """
     if isinstance(config, RunConfig):
@@ -396,13 +412,12 @@ def resolve_config(
         if nesting_depth(config, MAX_NESTING) > MAX_NESTING:
             raise ConfigError(f"{source}: nested deeper than {MAX_NESTING} levels of mappings and lists")
         raw = _merge_extends(copy.deepcopy(dict(config)), Path.cwd(), source, sources)
-    elif isinstance(config, (str, Path)):
+    elif isinstance(config, (str, Path)) and str(config).strip():
         source = str(config)
         raw = load_raw_config(find_config(config), sources=sources)
-    else:
-        raise ConfigError(
-            f"config: expected a config file, a preset name, a mapping or a RunConfig, got {type(config).__name__}"
-        )
+    else:  # an empty name was the working folder (".: expected a config file, got a folder")
+        raise ConfigError("config: expected a config file, a preset name, a mapping or a RunConfig, got "
+                          + ("an empty name" if isinstance(config, str) else type(config).__name__))
     for key, value in (overrides or {}).items():
         raw = set_key(raw, key, value, source=f"{overrides_source} {show_key(key)}")
     return parse_config(raw, source=source), source

@@ -82,6 +82,18 @@ def read_text(path: str | Path, what: str, error: type[G2SError] = G2SError) -> 
         ) from None
 
 
+def given_path(value: Any, what: str, expected: str, error: type[G2SError] = G2SError) -> Path:
+    """``value``, an argument of the Python API named ``what``, as a path: a ``str`` or an ``os.PathLike``, not empty
+    (``Path("")`` is the working folder, where results were written).
+
+    Raises:
+        error: ``what: expected EXPECTED, got TYPE`` (``got an empty name``), not pathlib's ``TypeError``.
+    """
+    if not isinstance(value, (str, os.PathLike)) or not str(value).strip():
+        raise error(f"{what}: expected {expected}, got {type(value).__name__ if not isinstance(value, str) else 'an empty name'}")
+    return Path(value)
+
+
 def check_regular_file(path: str | Path, what: str, error: type[G2SError] = G2SError) -> None:
     """Refuse a path that is missing or not a regular file (a FIFO, a device, a folder) without opening it.
 

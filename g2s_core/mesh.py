@@ -45,10 +45,15 @@ class MeshInfo:
 
 
 def text_of_name(name: str) -> str:
-    """A file name as text that a UTF-8 file (JSON, HTML, GraphML, CSV, Parquet) can hold: its bytes that are not
-    UTF-8, which Python keeps as lone surrogates (``'m\\udcff.obj'``), as ``\\xNN`` escapes (``'m\\xff.obj'``); other
-    names unchanged. :func:`load_mesh` names a mesh file so, and every result, output and summary line with it."""
-    return os.fsencode(name).decode("utf-8", "backslashreplace")
+    """A file name or path as text that a UTF-8 file (JSON, HTML, GraphML, CSV, Parquet) can hold: its bytes that are
+    not UTF-8, which Python keeps as lone surrogates (``'m\\udcff.obj'``), as ``\\xNN`` escapes (``'m\\xff.obj'``);
+    other names unchanged. :func:`load_mesh` names a mesh file so, and every result, output and summary line with it;
+    so are ``mesh_name`` (:func:`g2s_core.api.open_mesh`), the paths ``g2s run --json`` prints and a batch's rows.
+    A lone surrogate that stands for no byte (``'\\ud800'``, from Python code only) is written ``\\ud800``."""
+    return _SURROGATE.sub(lambda s: f"\\x{ord(s[0]) - 0xDC00:02x}" if "\udc80" <= s[0] <= "\udcff" else f"\\u{ord(s[0]):04x}", name)
+
+
+_SURROGATE = re.compile("[\ud800-\udfff]")
 
 
 def mesh_sha256(mesh: trimesh.Trimesh) -> str:

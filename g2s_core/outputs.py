@@ -40,9 +40,11 @@ def parse_formats(formats: str | Sequence[str], source: str = "--format", regist
     """Format names from ``"json,html"`` or a list: stripped, lower-cased, empty items dropped, order kept.
 
     Raises:
-        G2SError: a name is not an installed writer, is given twice (as ``--evaluate`` refuses a name twice), or none
-            is given; the message starts with ``source``.
+        G2SError: ``formats`` is neither a text nor a list (or tuple), a name is not an installed writer, is given
+            twice (as ``--evaluate`` refuses a name twice), or none is given; the message starts with ``source``.
     """
+    if not isinstance(formats, (str, list, tuple)):  # the Python API's: an int failed in Python's words, b"json" as '106'
+        raise G2SError(f"{source}: expected names, comma-separated or in a list, got {type(formats).__name__}")
     known = writers(registry)
     items = formats.split(",") if isinstance(formats, str) else list(formats)
     names = [name for name in (str(item).strip().lower() for item in items) if name]

@@ -28,6 +28,7 @@ pyarrow and dask.distributed.
 
 from __future__ import annotations
 
+import functools
 import glob
 import hashlib
 import json
@@ -44,11 +45,12 @@ from typing import TYPE_CHECKING, Any
 from g2s_core import DISTRIBUTION
 from g2s_core.config import find_config, load_raw_config, parse_config, with_evaluators
 from g2s_core.errors import G2SError, PluginFailure, out_of_memory
-from g2s_core.input_files import check_regular_file
+from g2s_core.input_files import check_regular_file, given_path
 from g2s_core.lazy import lazy_module
 from g2s_core.mesh import SAMPLE_PREFIX, SUPPORTED_SUFFIXES, text_of_name
+from g2s_core.messages import show
 from g2s_core.model import RunResult
-from g2s_core.outputs import chosen_formats, result_files
+from g2s_core.outputs import chosen_formats, parse_formats, result_files
 from g2s_core.registry import installed
 from g2s_core.result_folder import check_writable, stop_if_interrupted
 from g2s_core.stages import PIPELINE
@@ -246,11 +248,19 @@ def _still_there(row: dict[str, Any], pair: Pair) -> dict[str, Any]:
 
 
 def _write_json(path: Path, data: dict[str, Any]) -> None:
-    """Write ``data`` so that the file is either absent, the old one, or complete."""
+    """Write ``data`` (its texts as :func:`_as_text` makes them) so that the file is either absent, the old one, or
+    complete."""
     path.parent.mkdir(parents=True, exist_ok=True)
     temporary = path.with_name(f".{path.name}.{os.getpid()}.tmp")
-    temporary.write_text(json.dumps(data, sort_keys=True, allow_nan=True), encoding="utf-8")
+    temporary.write_text(json.dumps(_as_text(data), sort_keys=True, allow_nan=True), encoding="utf-8")
     os.replace(temporary, path)
+
+
+def _as_text(row: Mapping[str, Any]) -> dict[str, Any]:
+    """``row`` with each text as :func:`~g2s_core.mesh.text_of_name` makes it: a name or path that is not UTF-8 (a
+    level's, a config's, the batch's folder, in the paths and messages) as text that JSON, CSV and Parquet can hold (the
+    row file held ``"out\\udcff"``, a lone surrogate strict JSON readers refuse)."""
+    return {key: text_of_name(value) if isinstance(value, str) else value for key, value in row.items()}
 
 
 # --- the pairs of a batch -----------------------------------------------------
@@ -444,11 +454,21 @@ def run_batch(
         ``KeyboardInterrupt`` propagates.
 
     Raises:
-        ConfigError, G2SError: bad configs, inputs or executor parameters, before any pair runs.
+        ConfigError, G2SError: bad configs, inputs, formats or executor parameters, or an argument of the wrong type
+            (``configs="map_analysis"``, a text where a list is expected), before any pair runs.
         OutOfMemory: the memory ran out as the summary was made or written (the pairs' results are kept).
     """
     import pandas as pd  # noqa: F401  (the extra is needed before any work starts)
 
+    configs = _listed(configs, "configs", "preset names or config files", "a preset name or a config file")
+    inputs = _listed(inputs, "inputs", f"mesh files, folders, patterns or {SAMPLE_PREFIX}NAME",
+                     f"a mesh file, a folder, a pattern or {SAMPLE_PREFIX}NAME")
+    outdir = given_path(outdir, "outdir", "a folder")
+    evaluators = _listed(evaluators, "evaluators", "evaluator names")
+    if formats is not None:
+        parse_formats(formats, "formats")
+    if progress is not None and not callable(progress):
+        raise G2SError(f"progress: expected a function of one argument or None, got {type(progress).__name__}")
     registry = installed()
     chosen = registry.get("executors", executor, key="executor")
     given = {"workers": workers, "scheduler": scheduler}
@@ -456,7 +476,6 @@ def run_batch(
     params = registry.validate_params(chosen, options, f"executor {executor!r} params")
     for name in evaluators:
         registry.get("evaluators", name, key="evaluators")
-    outdir = Path(outdir)
     pairs = make_pairs(configs, [str(i) for i in inputs], outdir, formats, force, evaluators)
     counts = Progress(len(pairs))
     rows: dict[tuple[str, str], dict[str, Any]] = {}
@@ -483,6 +502,19 @@ def run_batch(
     return summary
 
 
+def _listed(given: Any, what: str, each: str, one: str | None = None) -> list[Any]:
+    """The Python API's argument ``what``, a list of ``each``, as a list, each item a path or a name (``one``) when
+    ``one`` is given; a text refused, which Python reads letter by letter (``configs="graph_only"`` ran the config
+    ``g``: ``g: no such config file or preset``)."""
+    if isinstance(given, (str, bytes, os.PathLike)) or not isinstance(given, Iterable):
+        got = f"the text {show(given)}" if isinstance(given, str) else type(given).__name__
+        raise G2SError(f"{what}: expected a list of {each}, got {got}")
+    for index, item in enumerate(items := list(given)):
+        if one is not None:
+            given_path(item, f"{what}[{index}]", one)  # a dict or a trimesh.Trimesh was pathlib's TypeError, 5 the file '5'
+    return items
+
+
 def _written_since(path: Path, moment: float) -> bool:
     try:
         return path.stat().st_mtime >= moment
@@ -493,9 +525,7 @@ def _written_since(path: Path, moment: float) -> bool:
 def _summary(rows: Iterable[dict[str, Any]]) -> pd.DataFrame:
     import pandas as pd
 
-    # a name that is not UTF-8 (a level's, a config's, in the paths and messages) as text a CSV and Parquet can hold
-    frame = pd.DataFrame([{key: text_of_name(value) if isinstance(value, str) else value for key, value in row.items()}
-                          for row in rows])
+    frame = pd.DataFrame([_as_text(row) for row in rows])
     extra = sorted(c for c in frame.columns if c not in COLUMNS)
     frame = frame.reindex(columns=[*COLUMNS, *extra])
     for column in frame.columns:
@@ -535,7 +565,7 @@ def write_summary(summary: pd.DataFrame, outdir: Path) -> list[Path]:
             temporary file is left.
     """
     files = {outdir / name: (outdir / f".{name}.tmp", write) for name, write in zip(
-        SUMMARIES, (summary.to_parquet, summary.to_csv))}
+        SUMMARIES, (functools.partial(_to_parquet, summary), summary.to_csv))}
     try:
         for temporary, write in files.values():
             write(temporary, index=False)
@@ -549,6 +579,13 @@ def write_summary(summary: pd.DataFrame, outdir: Path) -> list[Path]:
     for path, (temporary, _) in files.items():
         os.replace(temporary, path)
     return list(files)
+
+
+def _to_parquet(summary: pd.DataFrame, path: Path, **options: Any) -> None:
+    """``summary.to_parquet(path)`` through a file Python opens: pyarrow encodes a path as UTF-8, and a batch's folder
+    whose name is not UTF-8 (bytes Python keeps as lone surrogates) ended the batch in an internal error."""
+    with open(path, "wb") as handle:
+        summary.to_parquet(handle, **options)
 
 
 @contextmanager
