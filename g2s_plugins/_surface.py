@@ -54,7 +54,44 @@ structures must never exceed.
 """
 
 
-class CollapseParams(PluginParams):
+class HeatFlowParams(PluginParams):
+    """A heat-map target, ``min_heat_rho`` (each plugin says what it does to meet it), and the walking flow it reads:
+    the heat map's, as the ``flow`` analyzer computes it (:mod:`g2s_plugins.heat_guarantee`)."""
+
+    min_heat_rho: float | None = Field(
+        None, ge=-1, le=1, description="the Spearman rho the heat map must reach against walking flow; null: none"
+    )
+    heat_sources: int = Field(
+        traffic.WALKING_SOURCES, ge=1, description="sources of the walking flow max_traffic_step and min_heat_rho read "
+        "(the heat map's): set as the flow analyzer's max_sources"
+    )
+    heat_ties: traffic.Ties = Field(
+        traffic.WALKING_TIES, description="equally short paths in that walking flow (first or split): set as the flow analyzer's ties"
+    )
+    heat_scaling: traffic.Scaling = Field(
+        traffic.WALKING_SCALING, description="that walking flow's sampled pairs (none or linear): set as the flow analyzer's scaling"
+    )
+    heat_sampling: traffic.Sampling = Field(
+        traffic.WALKING_SAMPLING, description="how that walking flow draws its sources (independent or spread): set as "
+        "the flow analyzer's sampling"
+    )
+
+    @model_validator(mode="after")
+    def _pooled_margin_measured(self) -> HeatFlowParams:
+        """A spread heat map is read pooled (:data:`g2s_plugins.heat_guarantee.POOLED_MARGINS`), whose margin is
+        measured for some scalings only."""
+        from g2s_plugins.heat_guarantee import POOLED_MARGINS  # it imports this module
+
+        if self.min_heat_rho is not None and self.heat_sampling == "spread" and self.heat_scaling not in POOLED_MARGINS:
+            # pydantic's custom error: a ValueError's words reached the user as "value error, min_heat_rho ..."
+            raise PydanticCustomError(
+                "pooled_margin", "min_heat_rho with heat_sampling: spread needs heat_scaling {needed} (the guarantee's "
+                "margin for a spread heat map is measured for that alone), not {got}",
+                {"needed": " or ".join(POOLED_MARGINS), "got": self.heat_scaling})
+        return self
+
+
+class CollapseParams(HeatFlowParams):
     """Algorithm 5's tolerances, the same for both line-of-sight predicates.
 
     ``max_surface_gap: null`` with ``whole_chain_normals: false`` is the
@@ -95,34 +132,6 @@ class CollapseParams(PluginParams):
         "for that, and restores the removed nodes whose flow's percentile within their area differs most from the heat "
         "drawn from those percentiles; false: rho and percentiles over the whole graph"
     )
-    heat_sources: int = Field(
-        traffic.WALKING_SOURCES, ge=1, description="sources of the walking flow max_traffic_step and min_heat_rho read "
-        "(the heat map's): set as the flow analyzer's max_sources"
-    )
-    heat_ties: traffic.Ties = Field(
-        traffic.WALKING_TIES, description="equally short paths in that walking flow (first or split): set as the flow analyzer's ties"
-    )
-    heat_scaling: traffic.Scaling = Field(
-        traffic.WALKING_SCALING, description="that walking flow's sampled pairs (none or linear): set as the flow analyzer's scaling"
-    )
-    heat_sampling: traffic.Sampling = Field(
-        traffic.WALKING_SAMPLING, description="how that walking flow draws its sources (independent or spread): set as "
-        "the flow analyzer's sampling"
-    )
-
-    @model_validator(mode="after")
-    def _pooled_margin_measured(self) -> CollapseParams:
-        """A spread heat map is read pooled (:data:`g2s_plugins.heat_guarantee.POOLED_MARGINS`), whose margin is
-        measured for some scalings only."""
-        from g2s_plugins.heat_guarantee import POOLED_MARGINS  # it imports this module
-
-        if self.min_heat_rho is not None and self.heat_sampling == "spread" and self.heat_scaling not in POOLED_MARGINS:
-            # pydantic's custom error: a ValueError's words reached the user as "value error, min_heat_rho ..."
-            raise PydanticCustomError(
-                "pooled_margin", "min_heat_rho with heat_sampling: spread needs heat_scaling {needed} (the guarantee's "
-                "margin for a spread heat map is measured for that alone), not {got}",
-                {"needed": " or ".join(POOLED_MARGINS), "got": self.heat_scaling})
-        return self
 
 
 def on_navmesh(navmesh: NavMesh | None, point: Vec, agent: AgentConfig) -> bool:

@@ -54,6 +54,13 @@ structure that meets the target is the one Algorithm 4 gave, unchanged;
 when no removed node differs by more than the floor and rho is still
 under the target, the last structure is kept with a warning that says so.
 
+Restoring gives back at most the whole forest, so where the forest's own
+heat map reads under the target no round meets it. The loop adder
+(``loops.params.min_heat_rho`` of ``spanner``) reads that before rooting
+and, there alone, joins the nodes the forest's heat map ranks worst to it
+(:func:`spurs`), the same measure and floor; Algorithm 4 never removes a
+leaf, so each spur's end stays in the structure.
+
 Complexity: a round is one simplification (its predicate calls) and one
 measure (a multi-source Dijkstra over the initial graph, O(m + n log n),
 and two sorts); each round but the last restores ceil(share x forest
@@ -74,10 +81,11 @@ from __future__ import annotations
 import dataclasses
 import math
 import weakref
-from collections.abc import Callable, Hashable
+from collections.abc import Callable, Hashable, Iterable
 
 import networkx as nx
 import numpy as np
+from scipy.sparse import csgraph
 
 from g2s_core.model import RunContext
 from g2s_plugins import evaluation, traffic
@@ -126,6 +134,9 @@ not 0, the seed of the heat map's own sample (the ``flow`` analyzer's default ``
 errors are independent. A spread heat map is confirmed by the independent sample of its own seed instead
 (:func:`second_sample`)."""
 
+SPUR_SHARE = 0.01
+"""Nodes :func:`spurs` joins to the forest per round, as a share of the graph's nodes."""
+
 FLOOR = 10.0
 """Percentile points: a removed node whose polygon's walking-flow percentile differs from the heat the map gives it
 by no more than this is never restored (the smallest ``max_traffic_step`` measured, docs/analysis_quality.md)."""
@@ -159,20 +170,10 @@ def restored(
     ones, so the same nodes come back. Above the exact size the margin and the confirmation are those measured for
     the level-wide rho.
     """
-    arrays = traffic.surface_arrays(graph)
-    order = traffic.sampling_order(graph, sampling)
-    shown = traffic.arrays_walking_flow(arrays, sources, ties=ties, scaling=scaling, order=order)  # the heat map's flow
-    exact = traffic.is_exact(arrays, sources, traffic.EXACT_NODES)
-    pooled = not exact and sampling == "spread"
-    if pooled:  # half the heat map's errors shared with its reference instead of all of them
-        reference = (shown + second_sample(arrays, sources, ties, scaling, order)) / 2.0
-    else:
-        reference = traffic.arrays_walking_flow(arrays, sources, exact_up_to=traffic.EXACT_NODES, ties=ties,
-                                                scaling=scaling)
-    heat = evaluation.placement_heat(graph, simplified, shown)
     areas = evaluation.area_labels(graph) if within_areas else None
-    rho = evaluation.spearman(heat, reference) if areas is None else evaluation.within_area_rho(heat, reference, areas)
-    margin = 0.0 if exact else POOLED_MARGINS[scaling] if pooled else MARGINS[scaling]
+    reading = heat_reading(graph, simplified, sources, ties, scaling, sampling, areas)
+    arrays, shown, heat, rho, margin = reading.arrays, reading.shown, reading.heat, reading.rho, reading.margin
+    exact, pooled, order = reading.exact, reading.pooled, reading.order
     if not rho < min_rho + margin:
         if not exact and not math.isnan(rho):  # NaN: every node's flow alike, nothing to confirm
             confirm(heat, shown, rho, min_rho, context, arrays, sources, ties, scaling, order)
@@ -197,6 +198,103 @@ def restored(
     ranked = np.lexsort((removed[above], -difference[above]))
     count = math.ceil(RESTORED_SHARE * forest.number_of_nodes())
     return set(simplified) | set(removed[above][ranked[:count]].tolist())
+
+
+@dataclasses.dataclass(frozen=True)
+class HeatReading:
+    """How a structure's heat map ranks the nodes of a run's initial graph, as the guarantee reads it.
+
+    ``arrays``: the graph's :func:`~g2s_plugins.traffic.surface_arrays`; ``shown`` (n,) the heat map's walking flow;
+    ``heat`` (n,) the heat map (:func:`~g2s_plugins.evaluation.placement_heat` of ``shown``); ``rho`` its Spearman
+    rho against the reference (the exact flow when ``exact``, the mean of ``shown`` and :func:`second_sample` when
+    ``pooled``, else ``shown`` itself); ``margin`` the rho over a target that reading must reach (:data:`MARGINS`,
+    :data:`POOLED_MARGINS`, 0 when exact); ``order`` the sample's :func:`~g2s_plugins.traffic.sampling_order`."""
+
+    arrays: traffic.SurfaceArrays
+    shown: np.ndarray
+    heat: np.ndarray
+    rho: float
+    margin: float
+    exact: bool
+    pooled: bool
+    order: np.ndarray | None
+
+
+def heat_reading(
+    graph: nx.Graph, structure_nodes: Iterable[Hashable], sources: int, ties: traffic.Ties, scaling: traffic.Scaling,
+    sampling: traffic.Sampling, areas: np.ndarray | None = None,
+) -> HeatReading:
+    """The guarantee's reading of the heat map of ``structure_nodes`` over ``graph`` (the run's initial graph), whose
+    walking flow is of ``sources``, ``ties``, ``scaling`` and ``sampling``; with (n,) ``areas``
+    (:func:`~g2s_plugins.evaluation.area_labels`) rho within each area. One multi-source Dijkstra and two sorts, once
+    the flows are computed (each once per graph)."""
+    arrays = traffic.surface_arrays(graph)
+    order = traffic.sampling_order(graph, sampling)
+    shown = traffic.arrays_walking_flow(arrays, sources, ties=ties, scaling=scaling, order=order)  # the heat map's flow
+    exact = traffic.is_exact(arrays, sources, traffic.EXACT_NODES)
+    pooled = not exact and sampling == "spread"
+    if pooled:  # half the heat map's errors shared with its reference instead of all of them
+        reference = (shown + second_sample(arrays, sources, ties, scaling, order)) / 2.0
+    else:
+        reference = traffic.arrays_walking_flow(arrays, sources, exact_up_to=traffic.EXACT_NODES, ties=ties,
+                                                scaling=scaling)
+    heat = evaluation.placement_heat(graph, structure_nodes, shown)
+    rho = evaluation.spearman(heat, reference) if areas is None else evaluation.within_area_rho(heat, reference, areas)
+    margin = 0.0 if exact else POOLED_MARGINS[scaling] if pooled else MARGINS[scaling]
+    return HeatReading(arrays, shown, heat, rho, margin, exact, pooled, order)
+
+
+def spurs(
+    graph: nx.Graph, forest_nodes: Iterable[Hashable], min_rho: float, headroom: float,
+    sources: int = traffic.WALKING_SOURCES, ties: traffic.Ties = traffic.WALKING_TIES,
+    scaling: traffic.Scaling = traffic.WALKING_SCALING, sampling: traffic.Sampling = traffic.WALKING_SAMPLING,
+) -> list[list[Hashable]]:
+    """Paths of ``graph`` (the run's initial graph) from the nodes the heat map of ``forest_nodes`` ranks worst to
+    the forest, when that heat map, every node of the forest kept, reads under the guarantee's target
+    (``min_rho`` plus the reading's margin, :func:`heat_reading`): no simplification of that forest can meet it,
+    since restoring removed nodes gives back at most the whole forest. Then, round by round, the nodes outside the
+    forest whose own percentile of the heat map's flow differs most from the heat they are given (by more than
+    :data:`FLOOR` points; by decreasing difference, then row), ceil(:data:`SPUR_SHARE` x the graph's nodes) of them,
+    are joined to it by their shortest paths to its nearest node, until the reading reaches the target plus
+    ``headroom`` (which leaves simplification room to remove nodes) or no node differs by more than the floor.
+    Empty when the forest meets the target. Each path runs from a forest node out; the paths of one round are
+    branches of one shortest-path tree, so they add no loop.
+
+    Why: on a level whose walking flow steps by 50 percentile points or more between neighbouring nodes (a line of
+    through traffic across a small platform, its dead-end sides beside it), a structure node on the line stands for
+    the quiet nodes beside it, and no node of the forest sits there (docs/analysis_quality.md, "Spurs where the
+    heat map ranks worst").
+
+    Complexity: per round one multi-source Dijkstra for the paths and one reading, O(m + n log n); each round adds
+    at least one node.
+    """
+    nodes = set(forest_nodes)
+    reading = heat_reading(graph, nodes, sources, ties, scaling, sampling)
+    target = min_rho + reading.margin
+    if not reading.rho < target:
+        return []
+    arrays, paths = reading.arrays, []
+    own = traffic.percentile(reading.shown)
+    while reading.rho < target + headroom:
+        rows = arrays.rows(sorted(nodes))
+        _, predecessor, _ = csgraph.dijkstra(arrays.adjacency, directed=False, indices=rows, min_only=True,
+                                             return_predecessors=True)
+        difference = np.abs(own - reading.heat)
+        difference[rows] = np.nan
+        outside = np.flatnonzero(difference > FLOOR)  # NaN (the forest's own nodes, nodes reaching none) is not
+        if outside.size == 0:
+            break
+        for row in outside[np.lexsort((outside, -difference[outside]))][:math.ceil(SPUR_SHARE * arrays.n)].tolist():
+            if arrays.nodes[row] in nodes:  # on a path this round added
+                continue
+            path = [row]
+            while predecessor[path[-1]] >= 0 and arrays.nodes[path[-1]] not in nodes:
+                path.append(int(predecessor[path[-1]]))
+            path_nodes = [arrays.nodes[r] for r in reversed(path)]
+            paths.append(path_nodes)
+            nodes.update(path_nodes)
+        reading = heat_reading(graph, nodes, sources, ties, scaling, sampling)
+    return paths
 
 
 def confirm(

@@ -1,11 +1,13 @@
-"""The loop adder's greedy loop (in C++) and the adder on hand-checkable graphs."""
+"""The loop adder's greedy loop (in C++), the adder and its heat-map spurs on hand-checkable graphs."""
 
 from __future__ import annotations
 
 import networkx as nx
 import numpy as np
+import pytest
 
-from g2s_plugins import _trees
+from g2s_plugins import _trees, evaluation, heat_guarantee, traffic
+from g2s_plugins.loops import spanner
 from g2s_plugins.loops.spanner import add_loops
 
 
@@ -46,3 +48,37 @@ def test_a_ring_gets_its_missing_edge_back():
     looped = add_loops(graph, structure, 1.5, 1.0)
     assert sorted(map(sorted, looped.edges)) == [[0, 1], [0, 3], [1, 2], [2, 3]]
     assert add_loops(graph, structure, 1.5, 2.0) is structure  # a gain of 2 m is no more than 2 m
+
+
+def corridor_with_pocket() -> nx.Graph:
+    """A corridor 0 - 1 - ... - 8 and a dead-end pocket 4 - 9 - 10 beside its middle: 1 m² nodes, 1 m edges."""
+    graph = nx.path_graph(9)
+    graph.add_edges_from([(4, 9), (9, 10)])
+    for i in graph:
+        graph.nodes[i].update(pos=(float(i), 0.0, 0.0) if i < 9 else (4.0, 0.0, i - 8.0), area=1.0,
+                              normal=(0.0, 1.0, 0.0), on_navmesh=True)
+    nx.set_edge_attributes(graph, 1.0, "weight")
+    return graph
+
+
+def test_the_forest_gets_a_spur_into_the_pocket_its_heat_map_cannot_rank():
+    # ordered pairs through each node of the tree: 0, 18, 32, 42, 64, 42, 32, 18, 0 along the corridor, 18 and 0 in
+    # the pocket; percentiles 13.6 (flow 0), 40.9 (18), 63.6 (32), 81.8 (42), 95.5 (64). The corridor alone as the
+    # forest: 4 stands for 4, 9 and 10, heat 50.0, and rho reads 0.758 (exact flow: 11 nodes), under 0.9. Of the
+    # nodes outside the forest 10 differs by 36.4 points (13.6 against 50.0), 9 by 9.1, under the floor of 10; one
+    # node a round (ceil of 1 % of 11): the path 4 - 9 - 10, after which every node has its own heat (rho 1)
+    graph = corridor_with_pocket()
+    flow = traffic.walking_flow(graph, max_sources=traffic.WALKING_SOURCES)
+    assert flow.tolist() == [0, 18, 32, 42, 64, 42, 32, 18, 0, 18, 0]
+    assert evaluation.placement_rho(graph, range(9), flow) == pytest.approx(0.7583, abs=1e-4)
+    assert heat_guarantee.spurs(graph, range(9), 0.9, 0.03) == [[4, 9, 10]]
+    assert heat_guarantee.spurs(graph, range(9), 0.75, 0.03) == []  # the forest meets the target: no spur
+
+
+def test_the_loop_adder_adds_the_spurs_only_with_a_heat_target():
+    graph = corridor_with_pocket()
+    corridor = nx.Graph(graph.subgraph(range(9)).edges)
+    with_target = spanner.g2s_add_loops(graph, corridor, spanner.Params(min_heat_rho=0.9), None)
+    assert sorted(map(sorted, with_target.edges)) == [[0, 1], [1, 2], [2, 3], [3, 4], [4, 5], [4, 9], [5, 6], [6, 7],
+                                                      [7, 8], [9, 10]]
+    assert spanner.g2s_add_loops(graph, corridor, spanner.Params(), None) is corridor  # no target, no loop: as given

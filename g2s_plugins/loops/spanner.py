@@ -46,24 +46,47 @@ from scipy.sparse import csgraph
 
 from g2s_core.model import RunContext, graph_of
 from g2s_core.rooted import components
-from g2s_core.plugin import PluginParams, hookimpl
-from g2s_plugins import _trees
+from g2s_core.plugin import hookimpl
+from g2s_plugins import _trees, heat_guarantee
+from g2s_plugins._surface import HeatFlowParams
 from g2s_plugins.surface_arrays import MIN_LENGTH, SurfaceArrays, surface_arrays
 
 NAME = "spanner"
 
+HEAT_HEADROOM = 0.03
+"""Default ``heat_headroom``: on the platform towers of ``benchmarks/level_kinds.py`` (seeds 0-2, the levels whose
+looped forest read under the target) 0.01 / 0.02 / 0.03 / 0.04 / 0.06 left 37.3-40.1 / 35.7-38.5 / 35.0-37.3 /
+35.0-37.0 / 35.2-36.7 % of the samples in the structure at rho 0.910-0.918 (docs/analysis_quality.md, "Spurs where
+the heat map ranks worst"): less headroom leaves the guarantee to restore more nodes, more adds spurs for little."""
 
-class Params(PluginParams):
-    """When a loop path is worth adding."""
+
+class Params(HeatFlowParams):
+    """When a loop path is worth adding, and the heat map's target the looped forest must be able to meet."""
 
     stretch: float = Field(1.5, ge=1, description="add a path when the structure is more than this many times longer between its ends")
     min_gain: float = Field(3.0, ge=0, description="and the structure is longer by more than this, metres")
+    min_heat_rho: float | None = Field(
+        None, ge=-1, le=1, description="when the heat map of the looped forest, every node kept, ranks the nodes under "
+        "this (plus the sampled flow's margin) against walking flow, join the nodes it ranks worst to it by their "
+        "shortest paths until it reaches this plus heat_headroom (g2s_plugins/heat_guarantee.py, spurs); set as the "
+        "simplification's min_heat_rho; null: no such paths"
+    )
+    heat_headroom: float = Field(
+        HEAT_HEADROOM, ge=0, le=1, description="rho over that target the paths lift the looped forest's heat map to, "
+        "so that simplification can remove nodes and still meet it"
+    )
 
 
 @hookimpl
 def g2s_add_loops(graph: nx.Graph, forest: nx.Graph, params: Params, context: RunContext) -> nx.Graph:
-    """LoopAdder: greedy spanner paths between the forest's nodes (Althoefer et al. 1993)."""
-    return add_loops(graph, forest, params.stretch, params.min_gain)
+    """LoopAdder: greedy spanner paths between the forest's nodes (Althoefer et al. 1993), then, with
+    ``min_heat_rho``, the heat guarantee's spurs (:func:`g2s_plugins.heat_guarantee.spurs`)."""
+    looped = add_loops(graph, forest, params.stretch, params.min_gain)
+    if params.min_heat_rho is None:
+        return looped
+    paths = heat_guarantee.spurs(graph, looped, params.min_heat_rho, params.heat_headroom, params.heat_sources,
+                                 params.heat_ties, params.heat_scaling, params.heat_sampling)
+    return with_paths(looped, paths) if paths else looped
 
 
 def add_loops(graph: nx.Graph, structure: nx.Graph, stretch: float, min_gain: float) -> nx.Graph:
@@ -112,11 +135,14 @@ def add_loops(graph: nx.Graph, structure: nx.Graph, stretch: float, min_gain: fl
         predecessor.astype(np.int32), a, b, x, y, bound[violating],
     )
     on_paths = list(map(arrays.nodes.__getitem__, rows_of_paths.tolist()))
-    paths_ids = [on_paths[start:end] for start, end in itertools.pairwise(offsets.tolist())]
-    # the structure's nodes and edges, then every path's nodes, then every path's edges (the insertion order of
-    # adding them path by path), without attributes: the pipeline copies the graph's onto them all at once
-    nodes = itertools.chain(structure, (node for path in paths_ids for node in path))
-    edges = itertools.chain(structure.edges, ((u, v) for path in paths_ids for u, v in zip(path, path[1:])))
+    return with_paths(structure, [on_paths[start:end] for start, end in itertools.pairwise(offsets.tolist())])
+
+
+def with_paths(structure: nx.Graph, paths: list[list[int]]) -> nx.Graph:
+    """A new graph: ``structure``'s nodes and edges, then every path's nodes, then every path's edges (the insertion
+    order of adding them path by path), without attributes: the pipeline copies the graph's onto them all at once."""
+    nodes = itertools.chain(structure, (node for path in paths for node in path))
+    edges = itertools.chain(structure.edges, ((u, v) for path in paths for u, v in zip(path, path[1:])))
     return graph_of(nx.Graph(**structure.graph), {node: {} for node in nodes}, ((u, v, {}) for u, v in edges))
 
 
