@@ -264,14 +264,17 @@ def test_walks_on_one_open_floor_pass_with_every_ray_cast(name: str, scale: floa
         face = rng.choice(np.nonzero(floors.open)[0], 3000)
         weights = np.concatenate([rng.dirichlet([1, 1, 1], 2000), rng.dirichlet([0.2, 0.2, 0.2], 1000)])
         points = np.einsum("ni,nij->nj", weights, caster.triangles[face]) + rng.uniform(-0.012, 0.012, (3000, 1)) * UP
-        under = floors.faces_under(points, floors.certain_offset(margin, gap))
-        assert ((under == -1) | (under == face)).all()
-        on = rng.permutation(np.nonzero(under >= 0)[0])
-        on = on[np.argsort(under[on], kind="stable")]  # by triangle, in random order on each
-        starts, ends = np.concatenate([on[:-1], on[:-2]]), np.concatenate([on[1:], on[2:]])
-        same = under[starts] == under[ends]
-        ok, _ = walk_segments(caster, points[starts[same]], points[ends[same]], agent, 0.25, margin, gap)
-        assert same.sum() > 100 and ok.all()
+        # and, for the sampling builder's edges, with side lines (half_width) over points that far inside too
+        for half_width in (0.0, 0.9 * radius):
+            under = floors.faces_under(points, floors.certain_offset(margin, gap), room=half_width)
+            assert ((under == -1) | (under == face)).all()
+            on = rng.permutation(np.nonzero(under >= 0)[0])
+            on = on[np.argsort(under[on], kind="stable")]  # by triangle, in random order on each
+            starts, ends = np.concatenate([on[:-1], on[:-2]]), np.concatenate([on[1:], on[2:]])
+            same = under[starts] == under[ends]
+            ok, _ = walk_segments(caster, points[starts[same]], points[ends[same]], agent, 0.25, margin, gap,
+                                  half_width=half_width)
+            assert same.sum() > 100 and ok.all()
 
 
 def test_open_floor_answers_save_walk_tests_not_answers(monkeypatch: pytest.MonkeyPatch) -> None:
