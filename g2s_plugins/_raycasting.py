@@ -893,10 +893,11 @@ def walk_segments(
     * the segment lifted by half the agent height crosses no triangle, nor,
       with ``half_width`` (metres, > 0), do its two copies moved by
       ``half_width`` to either side, horizontally at right angles to it: a
-      disk that wide travels along it through no wall, jamb or pillar
-      (a plan's straight edges and corners meet the swept disk exactly when
-      they meet one of its three lines or lie wholly between two of them;
-      an obstacle narrower than ``half_width`` between the lines is missed);
+      disk that wide travels along it through no wall, jamb or pillar (at
+      that height, a solid meets the band the disk sweeps between the two
+      ends exactly when it meets one of the three lines or lies wholly
+      between two of them: one narrower than ``half_width`` is missed; the
+      ends' own disks are the caller's to check);
     * under evenly spaced points along it (at most ``probe_step`` apart
       horizontally, both ends included) a short downward ray from the lifted
       segment finds ground no more than ``max_climb + margin`` below the

@@ -138,8 +138,8 @@ DISK_SHARE = 0.9
 (:func:`~g2s_plugins._raycasting.walk_segments`' ``half_width``): just under cos 22.5 degrees (0.924), the least
 distance from a straight wall at which the agent checks' 8 compass rays accept a sample, so an edge along a wall
 between two accepted samples is not stopped by that wall. At 1.0, an edge 0.46 m from a wall of a 1.9 m corridor
-of the 1k dungeon is stopped and two samples are cut off; at 0.9 every door up to 1.0 m wide is closed and every one
-from 1.4 m open (docs/sampling.md, "Doors narrower than the agent")."""
+of the 1k dungeon is stopped and two samples are cut off; at 0.9, in a 0.2 m wall turned 0, 22 and 45 degrees, every
+door up to 1.0 m wide is closed and every one from 1.4 m open (docs/sampling.md, "Doors narrower than the agent")."""
 
 
 class Params(PlaySpaceParams):
