@@ -705,9 +705,12 @@ class OpenFloors:
         shared = (cells_of(floors) @ cells_of(np.arange(len(xz))).T).tocoo()
         return shared.row.astype(np.int64), shared.col.astype(np.int64)
 
-    def faces_under(self, points: np.ndarray, max_offset: float = EPSILON) -> np.ndarray:
+    def faces_under(self, points: np.ndarray, max_offset: float = EPSILON, room: float = 0.0) -> np.ndarray:
         """(n,) int64: the open triangle each point stands on (see the class; ``max_offset`` in metres, at most
-        ``EPSILON``), -1 where there is none. One downward ray per point, from ``2 EPSILON`` above it."""
+        ``EPSILON``), -1 where there is none; with ``room`` (metres), only where the point lies that much farther
+        inside the triangle's edges, so that a walk of :func:`walk_segments` with ``half_width`` up to ``room``
+        between two such points also passes (its side lines stay over the triangle). One downward ray per point,
+        from ``2 EPSILON`` above it."""
         points = np.asarray(points, dtype=np.float64).reshape(-1, 3)
         faces = np.full(len(points), -1, dtype=np.int64)
         if not self.open.any() or len(points) == 0:
@@ -720,7 +723,7 @@ class OpenFloors:
         offset = points[rows] - triangles[:, 0]
         # Height above the plane: the normal's Y is positive (a walkable triangle).
         above = np.einsum("ij,ij->i", offset, normal) / normal[:, 1]
-        good = disk_inside(points[rows], triangles, 2.0 * self.margin) & (np.abs(above) <= min(max_offset, EPSILON))
+        good = disk_inside(points[rows], triangles, 2.0 * self.margin + room) & (np.abs(above) <= min(max_offset, EPSILON))
         faces[rows[good]] = face[good]
         return faces
 
@@ -881,12 +884,20 @@ def walk_segments(
     probe_step: float,
     margin: float = GROUND_MARGIN,
     max_gap: float | None = None,
+    half_width: float = 0.0,
 ) -> tuple[np.ndarray, np.ndarray]:
     """Whether the agent can walk straight from ``starts[i]`` to ``ends[i]`` (ground points).
 
     A segment is walkable when
 
-    * the segment lifted by half the agent height crosses no triangle;
+    * the segment lifted by half the agent height crosses no triangle, nor,
+      with ``half_width`` (metres, > 0), do its two copies moved by
+      ``half_width`` to either side, horizontally at right angles to it: a
+      disk that wide travels along it through no wall, jamb or pillar (at
+      that height, a solid meets the band the disk sweeps between the two
+      ends exactly when it meets one of the three lines or lies wholly
+      between two of them: one narrower than ``half_width`` is missed; the
+      ends' own disks are the caller's to check);
     * under evenly spaced points along it (at most ``probe_step`` apart
       horizontally, both ends included) a short downward ray from the lifted
       segment finds ground no more than ``max_climb + margin`` below the
@@ -931,9 +942,20 @@ def walk_segments(
     # The lifted segments, then down and up from each lifted probe point: the
     # same vertical line (the downward ray found nothing between it and the ground).
     lifted = line + lift * UP
-    across, down, up = caster.first_hits_of([(low[moving], vectors[moving]), (lifted, -UP), (lifted, UP)])
+    sideways = moving & (horizontal > 1e-9) if half_width > 0 else np.zeros(n, dtype=bool)
+    side = np.zeros((int(sideways.sum()), 3))
+    side[:, 0], side[:, 2] = -delta[sideways, 2], delta[sideways, 0]
+    side *= (half_width / horizontal[sideways])[:, None]
+    across, down, up, left, right = caster.first_hits_of(
+        [(low[moving], vectors[moving]), (lifted, -UP), (lifted, UP),
+         (low[sideways] + side, vectors[sideways]), (low[sideways] - side, vectors[sideways])]
+    )
     ok = np.ones(n, dtype=bool)
     ok[moving] = across.distance >= lengths[moving]
+    # A side line that meets walkable ground (a floor rising beside the walk) is not stopped, as the agent checks'
+    # wall rays are not (the sampling builder's ``agent_fits``).
+    for side_hits in (left, right):
+        ok[sideways] &= (side_hits.distance >= lengths[sideways]) | caster.walkable_faces(side_hits.face, agent.max_slope_deg)
     good = (down.distance <= reach) & caster.walkable_faces(down.face, agent.max_slope_deg)
     distance = np.where(good, down.distance, 0.0)
     # A probe over a crack stands on the ground one crack step to both sides of it, along x, else along z.

@@ -258,20 +258,27 @@ def test_walks_on_one_open_floor_pass_with_every_ray_cast(name: str, scale: floa
     mesh.vertices = mesh.vertices + np.array([offset, 0.01 * offset, -offset])
     caster = RayCaster(mesh)
     rng = np.random.default_rng(7)
+    walks = {0.0: 0, 0.45: 0, 0.18: 0}
     for radius, height, climb, slope, margin, gap in [(0.5, 2.0, 0.4, 45.0, 0.1, 0.4), (0.2, 1.0, 0.2, 20.0, 0.0, 0.005)]:
         agent = AgentShape.from_config(AgentConfig(radius=radius, height=height, max_climb=climb, max_slope=slope))
         floors = OpenFloors(caster, agent)
         face = rng.choice(np.nonzero(floors.open)[0], 3000)
         weights = np.concatenate([rng.dirichlet([1, 1, 1], 2000), rng.dirichlet([0.2, 0.2, 0.2], 1000)])
         points = np.einsum("ni,nij->nj", weights, caster.triangles[face]) + rng.uniform(-0.012, 0.012, (3000, 1)) * UP
-        under = floors.faces_under(points, floors.certain_offset(margin, gap))
-        assert ((under == -1) | (under == face)).all()
-        on = rng.permutation(np.nonzero(under >= 0)[0])
-        on = on[np.argsort(under[on], kind="stable")]  # by triangle, in random order on each
-        starts, ends = np.concatenate([on[:-1], on[:-2]]), np.concatenate([on[1:], on[2:]])
-        same = under[starts] == under[ends]
-        ok, _ = walk_segments(caster, points[starts[same]], points[ends[same]], agent, 0.25, margin, gap)
-        assert same.sum() > 100 and ok.all()
+        # and, for the sampling builder's edges, with side lines (half_width) over points that far inside too
+        for half_width in (0.0, round(0.9 * radius, 2)):
+            under = floors.faces_under(points, floors.certain_offset(margin, gap), room=half_width)
+            assert ((under == -1) | (under == face)).all()
+            on = rng.permutation(np.nonzero(under >= 0)[0])
+            on = on[np.argsort(under[on], kind="stable")]  # by triangle, in random order on each
+            starts, ends = np.concatenate([on[:-1], on[:-2]]), np.concatenate([on[1:], on[2:]])
+            same = under[starts] == under[ends]
+            ok, _ = walk_segments(caster, points[starts[same]], points[ends[same]], agent, 0.25, margin, gap,
+                                  half_width=half_width)
+            assert ok.all()
+            walks[half_width] += int(same.sum())
+    # cluttered_room has no open triangle wide enough for the side lines' room: its wide walks are none
+    assert walks[0.0] > 200 and (walks[0.45] + walks[0.18] > 100 or name == "cluttered_room")
 
 
 def test_open_floor_answers_save_walk_tests_not_answers(monkeypatch: pytest.MonkeyPatch) -> None:
