@@ -119,9 +119,9 @@ def _parser() -> tuple[argparse.ArgumentParser, dict[str, Callable[[argparse.Nam
     commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
 
     run = commands.add_parser(
-        "run", parents=[common], help="run a config (a preset or a YAML file) on a mesh file",
+        "run", parents=[common], help="run a config (a preset or a YAML file) on a mesh",
         description="Run a config (a preset or a YAML file) on a mesh.",
-        epilog=f"{EXIT_CODES}\n\npresets:\n" + "\n".join(_columns(list(presets().items()), width=80, indent=2)),
+        epilog=f"{textwrap.fill(EXIT_CODES, 80)}\n\npresets:\n" + "\n".join(_columns(list(presets().items()), width=80, indent=2)),
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     run.add_argument("config", type=named("a preset name or a config file"), help="preset name (see `g2s presets`) or YAML config file")

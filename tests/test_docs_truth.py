@@ -2,7 +2,8 @@
 ones g2s takes: every `g2s ...` line of a code block and every inline `g2s ...` names an existing command, options
 that command has, presets that exist, installed formats, stages, executors and evaluators, and `--set` keys and
 values its config accepts; every YAML block is a valid config; every `sample:NAME?param=value` is a level an installed
-generator makes, and every `--set KEY=VALUE` in prose a setting a preset takes. (Links and the files the docs name:
+generator makes, and every `--set KEY=VALUE` in prose a setting a preset takes; and, the other way, every command
+and option g2s takes is shown. (Links and the files the docs name:
 tests/test_doc_links.py; the Python examples: tests/test_python_docs.py, tests/test_architecture.py,
 tests/test_batch.py, and docs/outputs.md's and docs/samples.md's here.)"""
 
@@ -322,3 +323,37 @@ def test_the_parameter_path_check_finds_what_no_plugin_takes():
 @pytest.mark.parametrize("doc", DOCS, ids=lambda path: path.name)
 def test_documented_parameter_paths_are_parameters(doc: Path):
     assert unknown_stage_parameters(doc.read_text(encoding="utf-8")) == []
+
+
+def undocumented_options(text_of: dict[str, str]) -> list[str]:
+    """The commands and options of `g2s --help` and each command's `--help` that no doc shows: g2s's own options and
+    commands in README.md (``text_of["README.md"]``), a plugin's command's options in the doc of its kind
+    (``text_of["batch.md"]``, tests/test_doc_links.py's REFERENCE). An option counts as shown by any of its spellings
+    (`-o` or `--outdir`)."""
+    from g2s_core.registry import installed
+
+    parser, commands = subcommands()
+    plugged = {info.name for info in installed().plugins("commands")} - {"run", "presets", "plugins", "demo"}
+    missing = [f"g2s {name}" for name in commands if name not in plugged and f"g2s {name}" not in text_of["README.md"]]
+    for name, command in [("g2s", parser), *commands.items()]:
+        text = text_of["batch.md" if name in plugged else "README.md"]
+        for action in command._actions:
+            spellings = [option for option in action.option_strings if option not in ("-h", "--help")]
+            if spellings and not any(re.search(rf"(?<![\w-]){re.escape(option)}(?![\w-])", text) for option in spellings):
+                missing.append(f"{name} {'/'.join(spellings)}")
+    return missing
+
+
+def test_the_option_check_finds_what_no_doc_shows():
+    shown = {"README.md": "`g2s run x.obj -o out --format json` and `g2s presets`", "batch.md": "`--workers N`"}
+    missing = undocumented_options(shown)
+    assert "run --set" in missing and "demo --rooms" in missing and "g2s plugins" in missing
+    assert "run -o/--outdir" not in missing and "run --format" not in missing and "g2s presets" not in missing
+    assert "batch --workers" not in missing and "batch --scheduler" in missing
+
+
+def test_every_command_and_option_g2s_takes_is_documented():
+    """README.md's "Use" shows every command and option of `g2s --help` (docs/batch.md those of `g2s batch`)."""
+    text_of = {name: (PROJECT / ("README.md" if name == "README.md" else f"docs/{name}")).read_text(encoding="utf-8")
+               for name in ("README.md", "batch.md")}
+    assert undocumented_options(text_of) == []
