@@ -357,3 +357,19 @@ def test_every_command_and_option_g2s_takes_is_documented():
     text_of = {name: (PROJECT / ("README.md" if name == "README.md" else f"docs/{name}")).read_text(encoding="utf-8")
                for name in ("README.md", "batch.md")}
     assert undocumented_options(text_of) == []
+
+
+def cut_summaries() -> list[str]:
+    """The installed plugins whose summary in `g2s plugins` (its docstring's first line, docs/plugins.md "Writing a
+    plugin of your own") stops short of the docstring's first paragraph: a sentence cut at the line's end."""
+    import inspect
+
+    from g2s_core.registry import installed
+    from g2s_core.stages import STAGES
+
+    return [f"{stage.key} {info.name}: {info.summary!r}" for stage in STAGES for info in installed().plugins(stage.key)
+            if " ".join((inspect.getdoc(info.plugin) or "").split("\n\n")[0].split()) != info.summary.strip()]
+
+
+def test_plugin_summaries_are_whole_sentences():
+    assert cut_summaries() == []

@@ -1,5 +1,7 @@
-"""A pool of worker processes on this machine (concurrent.futures); Ctrl-C lets the running pairs finish, and a pair
-whose worker dies (killed for want of memory, a crash in native code) fails alone."""
+"""A pool of worker processes on this machine (concurrent.futures).
+
+Ctrl-C lets the running pairs finish, and a pair whose worker dies (killed for want of memory, a crash in native code)
+fails alone."""
 
 from __future__ import annotations
 
