@@ -213,6 +213,33 @@ def test_a_loop_adder_must_keep_the_forest_and_add_only_graph_edges():
     assert nx.cycle_basis(closed)
 
 
+def test_a_steiner_solver_must_return_a_tree():
+    import networkx as nx
+
+    graph = nx.Graph([(0, 1), (1, 2), (2, 3), (3, 0), (2, 4)])
+
+    @hookimpl
+    def cycle(graph, terminals):  # four nodes, four edges
+        return nx.Graph([(0, 1), (1, 2), (2, 3), (3, 0)])
+
+    @hookimpl
+    def apart(graph, terminals):  # five nodes, four edges, yet two components: a cycle and 4 alone
+        return nx.union(nx.cycle_graph(4), nx.empty_graph([4]))
+
+    @hookimpl
+    def path(graph, terminals):
+        return nx.Graph([(0, 1), (1, 2), (2, 4)])
+
+    registry = Registry()
+    infos = [registry.register(make_plugin(name, g2s_steiner_tree=hook), package="pkg-s", entry_point=name)
+             for name, hook in (("cycle", cycle), ("apart", apart), ("path", path))]
+    for info in infos[:2]:
+        with pytest.raises(PluginFailure, match="returned a graph that is not a tree"):
+            registry.call(info, graph=graph, terminals=[0, 3], params=info.params_model(), context=None)
+    assert sorted(registry.call(infos[2], graph=graph, terminals=[0, 4], params=infos[2].params_model(),
+                                context=None).edges) == [(0, 1), (1, 2), (2, 4)]
+
+
 def test_a_predicate_that_returns_none_or_raises_fails_as_itself():
     @hookimpl
     def predicate():
