@@ -108,12 +108,15 @@ def pit_bridge_room() -> SampleLevel:
     return _level("pit_bridge_room", parts, [_opening((-0.3, 0.0, 3.0), _W, 1.6), _opening((10.3, 0.0, 3.0), _E, 1.6)])
 
 
-def end_grate_corridor() -> SampleLevel:
+def end_grate_corridor(bar: float = 0.04, slot: float = 0.04) -> SampleLevel:
     """Corridor 12 x 2.4 m, walls 0.3 m and 3 m high, both ends open; its floor ends at x 10.8, and its last 1.2 m
-    to the east end is a grate over nothing: 15 bars 0.04 m wide and 0.05 m deep across the corridor, 0.04 m apart,
-    the last one ending at x 12.0. Known: both ends, 2.4 m, the east one on the grate's last bar."""
+    to the east end is a grate over nothing: bars ``bar`` m wide and 0.05 m deep across the corridor, ``slot`` m
+    apart (15 bars 0.04 m apart by default), the last one ending at x 12.0. Known: both ends, 2.4 m, the east one on
+    the grate's last bar."""
+    pitch = bar + slot
+    count = int(math.floor((1.2 - pitch) / pitch + 1e-9)) + 1  # bars from x 10.8 + slot on
     parts = corridor(12.0, floor=False) + [box(0.0, 10.8, -SLAB, 0.0, 0.0, 2.4)]
-    parts += [box(10.84 + 0.08 * k, 10.88 + 0.08 * k, -0.05, 0.0, 0.0, 2.4) for k in range(15)]
+    parts += [box(12.0 - bar - pitch * k, 12.0 - pitch * k, -0.05, 0.0, 0.0, 2.4) for k in range(count)]
     return _level("end_grate_corridor", parts, [_opening((0.0, 0.0, 1.2), _W, 2.4), _opening((12.0, 0.0, 1.2), _E, 2.4)])
 
 
