@@ -1,7 +1,7 @@
 """A twenty-third round of map-piece kinds with their known openings, run through both map-piece routes.
 
-Run: ``.venv/bin/python benchmarks/piece_kinds23.py [--kinds a b] [--configs map_piece map_piece_sampling]
-[--yaws 0 22 45] [--detail]``
+Run: ``.venv/bin/python benchmarks/piece_kinds23.py [--grates] [--kinds a b] [--configs map_piece
+map_piece_sampling] [--yaws 0 22 45] [--detail]``
 
 Eight kinds of docs/entry_exit.md, "A twenty-third round of piece kinds", each with its known openings written in
 its docstring before the detector first ran on them: the pieces of a level designer's modular kit none of the
@@ -9,13 +9,15 @@ earlier rounds built. A T-junction whose branch a portcullis half down closes in
 open sidelights over kick panels, a stair tower with a doorway on each of three landings, a room whose pit a bridge
 crosses, a corridor whose open end is a floor grate, a yard in a picket fence whose gate leaf stands open outward,
 two corridors crossing at 45 degrees, and a hall whose gallery a curved ramp reaches. Built with :mod:`piece_parts`,
-in the earlier rounds' conventions.
+in the earlier rounds' conventions. ``--grates`` runs, in their place, the end grate with bars 0.01-0.06 m wide and
+0.02-0.08 m apart (:data:`GRATES`).
 """
 
 from __future__ import annotations
 
 import math
 import sys
+from functools import partial
 
 import numpy as np
 import trimesh
@@ -206,6 +208,12 @@ KINDS = kinds_by_name(t_junction_portcullis, sidelight_door, stair_tower_three_l
                       end_grate_corridor, picket_fence_gate, oblique_crossing, curved_ramp_gallery)
 """Kind name -> factory of the twenty-third round."""
 
+GRATES = {f"end_grate_{round(bar * 100)}_{round(slot * 100)}cm": partial(end_grate_corridor, bar, slot)
+          for bar, slot in ((0.04, 0.04), (0.02, 0.02), (0.03, 0.05), (0.02, 0.08), (0.06, 0.04), (0.01, 0.03))}
+"""``end_grate_<bar>_<slot>cm`` -> :func:`end_grate_corridor` with bars that many centimetres wide and apart."""
+
 
 if __name__ == "__main__":
-    sys.exit(run_kinds(kinds=KINDS, description=__doc__.splitlines()[0]))
+    grates = "--grates" in sys.argv[1:]
+    sys.exit(run_kinds([a for a in sys.argv[1:] if a != "--grates"], kinds=GRATES if grates else KINDS,
+                       description=__doc__.splitlines()[0]))
