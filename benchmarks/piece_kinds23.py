@@ -119,7 +119,8 @@ def end_grate_corridor(bar: float = 0.04, slot: float = 0.04) -> SampleLevel:
     count = int(math.floor((1.2 - pitch) / pitch + 1e-9)) + 1  # bars from x 10.8 + slot on
     parts = corridor(12.0, floor=False) + [box(0.0, 10.8, -SLAB, 0.0, 0.0, 2.4)]
     parts += [box(12.0 - bar - pitch * k, 12.0 - pitch * k, -0.05, 0.0, 0.0, 2.4) for k in range(count)]
-    return _level("end_grate_corridor", parts, [_opening((0.0, 0.0, 1.2), _W, 2.4), _opening((12.0, 0.0, 1.2), _E, 2.4)])
+    return _level("end_grate_corridor", parts, [_opening((0.0, 0.0, 1.2), _W, 2.4),
+                                                _opening((12.0, 0.0, 1.2), _E, 2.4)])
 
 
 def picket_fence_gate() -> SampleLevel:
@@ -137,7 +138,8 @@ def picket_fence_gate() -> SampleLevel:
     parts += [box(-0.11, 0.01, 0.0, 1.3, z, z + 0.12) for z in (2.88, 5.0)]
     parts += [box(9.99, 10.11, 0.0, 1.3, z, z + 0.12) for z in (3.28, 4.6)]
     parts += picket_run(10.12, 11.32, (3.40, 3.45), along_x=True, height=0.95, ground=0.05)
-    return _level("picket_fence_gate", parts, [_opening((-0.1, 0.0, 4.0), _W, 2.0), _opening((10.1, 0.0, 4.0), _E, 1.2)])
+    return _level("picket_fence_gate", parts, [_opening((-0.1, 0.0, 4.0), _W, 2.0),
+                                               _opening((10.1, 0.0, 4.0), _E, 1.2)])
 
 
 def oblique_crossing(length: float = 7.0) -> SampleLevel:
