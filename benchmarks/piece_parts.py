@@ -28,8 +28,8 @@ from piece_kinds15 import _prism as prism
 from g2s_plugins.samples.levels import SampleLevel, _opening
 from g2s_plugins.samples.pieces import _E, _W
 
-__all__ = ["SLAB", "ROOM_DOORS", "ROOM_OPENINGS", "arc_band", "box", "corridor", "hull", "kinds_by_name", "polygon_room",
-           "prism", "room", "round_level", "run_kinds"]
+__all__ = ["SLAB", "ROOM_DOORS", "ROOM_OPENINGS", "arc_band", "box", "corridor", "flight", "hull", "kinds_by_name",
+           "picket_run", "polygon_room", "prism", "room", "round_level", "run_kinds"]
 
 ROOM_DOORS = {"W": [(2.2, 3.8, 2.2)], "E": [(2.2, 3.8, 2.2)]}
 """1.6 m doorways under 2.2 m lintels in the middle of the west and east walls of a room 6 m deep (:func:`room`)."""
@@ -85,3 +85,39 @@ def polygon_room(corners, doors: dict[int, list[tuple[float, float, float]]], wa
             if lintel < height:
                 parts.append(band(s0, s1, s0, s1, lintel, height))
     return parts, frames
+
+
+def flight(start: tuple[float, float], direction: tuple[float, float], across: tuple[float, float], steps: int,
+           tread: float, riser: float, base: float, solid: bool = True,
+           underside: float = 0.3) -> list[trimesh.Trimesh]:
+    """A straight flight of ``steps`` boxes rising ``riser`` m each from ``base`` m (the first step's top at
+    ``base + riser``), ``tread`` m deep along the unit axis ``direction`` ((1, 0), (-1, 0), (0, 1) or (0, -1) in
+    (x, z)) from ``start`` ((x, z) of the first step's back edge on that axis), spanning ``across`` ((lo, hi) on the
+    other axis). Each step reaches down to ``base - SLAB`` when ``solid``, else ``underside`` m under its top (a
+    flight carried on a sawtooth slab with head room under it). O(steps) solids."""
+    (sx, sz), (dx, dz) = start, direction
+    out = []
+    for i in range(steps):
+        top = base + (i + 1) * riser
+        bottom = base - SLAB if solid else top - underside
+        a0, a1 = sorted((i * tread, (i + 1) * tread))
+        if dx:
+            x0, x1 = sorted((sx + dx * a0, sx + dx * a1))
+            out.append(box(x0, x1, bottom, top, *across))
+        else:
+            z0, z1 = sorted((sz + dz * a0, sz + dz * a1))
+            out.append(box(*across, bottom, top, z0, z1))
+    return out
+
+
+def picket_run(a0: float, a1: float, line: tuple[float, float], along_x: bool, height: float = 1.0,
+               picket: float = 0.08, gap: float = 0.08, ground: float = 0.0) -> list[trimesh.Trimesh]:
+    """A picket fence along x (``along_x``) or z from ``a0`` to ``a1`` m, its pickets ``picket`` m wide with ``gap``
+    m between them over the band ``line`` ((lo, hi) across the fence), from ``ground`` to ``height`` m above it,
+    and two rails 0.08 m high (0.2 and 0.75 m up) along the same band. O((a1 - a0) / (picket + gap)) solids."""
+    starts = np.arange(a0, a1 - picket + 1e-9, picket + gap)
+    spans = [(a, a + picket, ground, ground + height) for a in starts]
+    spans += [(a0, a1, ground + y, ground + y + 0.08) for y in (0.2, 0.75)]
+    if along_x:
+        return [box(s0, s1, y0, y1, *line) for s0, s1, y0, y1 in spans]
+    return [box(*line, y0, y1, s0, s1) for s0, s1, y0, y1 in spans]
