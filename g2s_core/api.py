@@ -14,8 +14,8 @@ The ``g2s`` command is built from the same functions (:func:`open_mesh`,
 command line give the same files. Those are its building blocks and ``g2s
 batch``'s, not the Python API (``docs/python.md``; :data:`__all__`): they take
 the objects :func:`run` makes (a :class:`~g2s_core.config.RunConfig`, a
-:class:`~g2s_core.model.RunResult`) and check no argument that the command
-line cannot get wrong.
+:class:`~g2s_core.model.RunResult`) and check only what a user can get wrong
+through the command line.
 """
 
 from __future__ import annotations
@@ -137,7 +137,7 @@ def execute(
     try:
         result = pipeline.run(plan, registry, source.mesh, source.name, source.sha256, progress=progress)
     except G2SError as exc:  # the stages do not know the file: their errors are named here, once
-        if not str(exc).startswith(f"{source.name}: "):  # an in-memory mesh's name, "mesh", leads the builders' lines
+        if not str(exc).startswith(f"{source.name}: "):  # said once: an in-memory mesh is "mesh", as builders' lines begin
             exc.args = (f"{source.name}: {exc}",)  # the same exception, of a plugin's own G2SError class too
         raise
     # pipeline.run switches CPython's cyclic collector back on with the run's objects all young: the next
