@@ -11,7 +11,11 @@
 
 The ``g2s`` command is built from the same functions (:func:`open_mesh`,
 :func:`execute`, :func:`write_result`), so a run from Python and one from the
-command line give the same files. See ``docs/python.md``.
+command line give the same files. Those are its building blocks and ``g2s
+batch``'s, not the Python API (``docs/python.md``; :data:`__all__`): they take
+the objects :func:`run` makes (a :class:`~g2s_core.config.RunConfig`, a
+:class:`~g2s_core.model.RunResult`) and check only what a user can get wrong
+through the command line.
 """
 
 from __future__ import annotations
@@ -40,7 +44,7 @@ with entry_points_readable():  # another package's broken entry_points.txt is na
 MeshLike = str | Path | trimesh.Trimesh
 ConfigLike = str | Path | Mapping[str, Any] | RunConfig
 
-__all__ = ["MeshSource", "execute", "input_files", "load_result", "open_mesh", "run", "write_result"]
+__all__ = ["load_result", "run"]
 
 
 @dataclass(frozen=True)
@@ -133,7 +137,8 @@ def execute(
     try:
         result = pipeline.run(plan, registry, source.mesh, source.name, source.sha256, progress=progress)
     except G2SError as exc:  # the stages do not know the file: their errors are named here, once
-        exc.args = (f"{source.name}: {exc}",)  # the same exception, of a plugin's own G2SError class too
+        if not str(exc).startswith(f"{source.name}: "):  # said once: an in-memory mesh is "mesh", as builders' lines begin
+            exc.args = (f"{source.name}: {exc}",)  # the same exception, of a plugin's own G2SError class too
         raise
     # pipeline.run switches CPython's cyclic collector back on with the run's objects all young: the next
     # allocations would scan each of them three times over, in a gen-0, a gen-1 and a full collection (0.9 s
@@ -223,8 +228,7 @@ def write_result(
         G2SError: ``outdir`` is no folder path (an empty name, the working folder, too), an unknown format, or the
             folder cannot take the results (checked before anything is written).
     """
-    default = result.config.get("outputs", {}).get("formats", DEFAULT_FORMATS)
-    chosen = default if formats is None else formats
+    chosen = result.config.get("outputs", {}).get("formats", DEFAULT_FORMATS) if formats is None else formats
     return write_outputs(
         result, given_path(outdir, "outdir", "a folder"), chosen, replace=force, progress=progress, registry=registry, protect=result.inputs
     )

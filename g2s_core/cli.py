@@ -52,10 +52,11 @@ _NO_LOG = logging.NullHandler()  # on the root logger, it keeps logging's last r
 
 
 class Output(Console):
-    """Standard output through rich, ending the command with :data:`EXIT_READER_LEFT` when its reader leaves."""
+    """Standard output (or error) through rich, as :class:`_Stream` writes it; ending the command with
+    :data:`EXIT_READER_LEFT` when its reader leaves."""
 
-    def __init__(self) -> None:
-        super().__init__(file=_CheckedStdout(), emoji=False)  # rich turned a name's `:cat:` into a cat
+    def __init__(self, stderr: bool = False) -> None:
+        super().__init__(file=_Stream("stderr" if stderr else "stdout"), emoji=False)  # rich turned a name's `:cat:` into a cat
 
     def on_broken_pipe(self) -> None:
         try:
@@ -64,19 +65,25 @@ class Output(Console):
             raise SystemExit(EXIT_READER_LEFT) from None
 
 
-class _CheckedStdout:
-    """``sys.stdout`` as it is at each use (pytest replaces it), whose ``write`` and ``flush`` that fail (a full disk)
-    raise a :class:`G2SError`, bad output in one line, rather than an internal error; but for a closed pipe, which
-    rich's :meth:`Console.on_broken_pipe` handles."""
+class _Stream:
+    """``sys.stdout`` or ``sys.stderr`` as it is at each use (pytest replaces them), writing a path that is not UTF-8 as
+    the files and ``--json`` do (``o\\xff``; it was Python's ``o\\udcff``, :func:`~g2s_core.mesh.text_of_name`). A
+    ``write`` or ``flush`` of standard output that fails (a full disk, the output closed) raises a :class:`G2SError`,
+    bad output in one line, not an internal error (a closed pipe is left to rich's :meth:`Console.on_broken_pipe`);
+    one of standard error is dropped, nothing can be said there, so that the exit code stands."""
+
+    def __init__(self, name: str) -> None:
+        self.name = name
 
     def __getattr__(self, name: str) -> Any:
-        attribute = getattr(sys.stdout, name)
         def checked(*text: str) -> Any:
-            try:
-                return attribute(*text)
-            except OSError as exc:
-                raise exc if isinstance(exc, BrokenPipeError) else G2SError(f"cannot write to standard output ({exc.strerror or exc})") from None
-        return checked if name in ("write", "flush") else attribute
+            try:  # a closed stream is None (AttributeError): `g2s plugins >&-` was an internal error
+                return getattr(getattr(sys, self.name), name)(*map(text_of_name, text))
+            except (OSError, AttributeError) as exc:  # standard error's is dropped: the exit code stands
+                if self.name == "stdout":
+                    raise exc if isinstance(exc, BrokenPipeError) else G2SError(
+                        f"cannot write to standard output ({getattr(exc, 'strerror', None) or 'it is closed'})") from None
+        return checked if name in ("write", "flush") else getattr(getattr(sys, self.name), name)
 
 
 __all__ = ["EXIT_READER_LEFT", "Output", "main", "named", "output_folder", "stage_table"]
@@ -84,10 +91,17 @@ __all__ = ["EXIT_READER_LEFT", "Output", "main", "named", "output_folder", "stag
 
 class CommandParser(argparse.ArgumentParser):
     """argparse's parser (its commands' too), whose usage errors are one line, as every other error, with the
-    exit code of bad input."""
+    exit code of bad input, and whose help and version are written as every other line (:class:`_Stream`): argparse
+    dropped a failed write, and `g2s --help > /dev/full` ended with exit 0, the help lost."""
 
     def error(self, message: str) -> NoReturn:
         self.exit(2, f"g2s: error: {message} (see {self.prog} --help)\n")
+
+    def _print_message(self, message: str, file: Any = None) -> None:
+        try:  # help to a closed output is said so, as any line
+            print(message, end="", file=_Stream("stderr" if file is sys.stderr else "stdout"), flush=True)
+        except G2SError as exc:
+            self.exit(2, f"g2s: error: {exc}\n")
 
 
 def named(what: str, kind: Callable[[str], Any] = str) -> Callable[[str], Any]:
@@ -106,11 +120,8 @@ output_folder = named("a folder", Path)
 
 def _parser() -> tuple[argparse.ArgumentParser, dict[str, Callable[[argparse.Namespace], int] | G2SError | PluginFailure]]:
     """The parser, and the run function of each plugin's command (or why it cannot run)."""
-    parser = CommandParser(
-        prog="g2s",
-        description="Graph2Structure: extract a hierarchical structure of navigable paths from level geometry.",
-        epilog=f"{EXIT_CODES}; a plugin's command may add its own (g2s COMMAND --help)",
-    )
+    parser = CommandParser(prog="g2s", epilog=f"{EXIT_CODES}; a plugin's command may add its own (g2s COMMAND --help)",
+                           description="Graph2Structure: extract a hierarchical structure of navigable paths from level geometry.")
     _add_main_options(parser)
     # -v is accepted after the command too; SUPPRESS keeps a -v given before it
     common = argparse.ArgumentParser(add_help=False)
@@ -118,12 +129,9 @@ def _parser() -> tuple[argparse.ArgumentParser, dict[str, Callable[[argparse.Nam
                         help="show tracebacks of internal errors")
     commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
 
-    run = commands.add_parser(
-        "run", parents=[common], help="run a config (a preset or a YAML file) on a mesh",
-        description="Run a config (a preset or a YAML file) on a mesh.",
-        epilog=f"{textwrap.fill(EXIT_CODES, 80)}\n\npresets:\n" + "\n".join(_columns(list(presets().items()), width=80, indent=2)),
-        formatter_class=argparse.RawDescriptionHelpFormatter,
-    )
+    run = commands.add_parser("run", parents=[common], help="run a config (a preset or a YAML file) on a mesh",
+                              description="Run a config (a preset or a YAML file) on a mesh.", formatter_class=argparse.RawDescriptionHelpFormatter,
+                              epilog=f"{textwrap.fill(EXIT_CODES, 80)}\n\npresets:\n" + "\n".join(_columns(list(presets().items()), width=80, indent=2)))
     run.add_argument("config", type=named("a preset name or a config file"), help="preset name (see `g2s presets`) or YAML config file")
     run.add_argument("mesh", type=named(f"a mesh file or {SAMPLE_PREFIX}NAME"), help=f"mesh file (.obj .glb .gltf .ply .stl .off) or {SAMPLE_PREFIX}NAME[?param=value&...] "
                      "for a level from an installed level generator (see `g2s plugins --stage levels`)")
@@ -163,7 +171,7 @@ def _add_main_options(parser: argparse.ArgumentParser) -> None:
 def _answer_version(argv: Sequence[str] | None) -> None:
     """Print the version and exit when ``argv`` asks for it before any command, as the full parser would, but
     before the plugins (whose commands it lists) load; anything else, errors included, is left to the full parser."""
-    early = argparse.ArgumentParser(prog="g2s", add_help=False, allow_abbrev=False, exit_on_error=False)
+    early = CommandParser(prog="g2s", add_help=False, allow_abbrev=False, exit_on_error=False)
     _add_main_options(early)
     early.add_argument("command", nargs=argparse.REMAINDER)
     with suppress(argparse.ArgumentError):
@@ -171,13 +179,9 @@ def _answer_version(argv: Sequence[str] | None) -> None:
 
 
 def _add_output_options(command: argparse.ArgumentParser) -> None:
-    command.add_argument(
-        "--format",
-        metavar="FORMATS",
-        help=f"comma-separated output formats, overriding the config's outputs.formats: any installed writer "
-        f"({', '.join(writers())}) "
-        f"(default: the config's, else {','.join(DEFAULT_FORMATS)})",
-    )
+    command.add_argument("--format", metavar="FORMATS", help=f"comma-separated output formats, overriding the config's "
+                         f"outputs.formats: any installed writer ({', '.join(writers())}) (default: the config's, else "
+                         f"{','.join(DEFAULT_FORMATS)})")
     command.add_argument("--set", action="append", default=[], metavar="KEY=VALUE", dest="overrides",
                          help="override a config value, e.g. --set agent.radius=0.4 --set mesh.scale=0.01 "
                          "(repeatable; the value is read as YAML)")
@@ -193,7 +197,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     _answer_version(argv)
     parser, plugged = _parser()
     args = parser.parse_args(argv)
-    errors = Console(stderr=True, emoji=False)  # `level:fire:.obj: no such mesh file` named the file with a flame
+    errors = Output(stderr=True)  # no emoji: `level:fire:.obj: no such mesh file` named the file with a flame
     if not args.verbose:  # a library's logged warning (matplotlib's, under a HOME it cannot write) added lines to stderr
         logging.getLogger().addHandler(_NO_LOG)
     own = {"run": lambda a: _run(a, errors), "plugins": _plugins, "presets": lambda _: _presets(), "demo": lambda a: _demo(a, errors)}

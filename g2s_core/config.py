@@ -44,8 +44,6 @@ class _Section(BaseModel):
 class AgentConfig(_Section):
     """The agent whose walkable space is extracted."""
 
-    model_config = ConfigDict(allow_inf_nan=False)
-
     radius: float = Field(0.5, gt=0, description="agent radius, metres")
     height: float = Field(2.0, gt=0, description="agent height (head room needed), metres")
     max_climb: float = Field(0.4, ge=0, description="highest step the agent climbs, metres")
@@ -54,8 +52,6 @@ class AgentConfig(_Section):
 
 class MeshConfig(_Section):
     """How the input mesh is read."""
-
-    model_config = ConfigDict(allow_inf_nan=False)
 
     up_axis: Literal["y", "z"] = Field("y", description="the file's up axis; z-up files are turned to y-up")
     scale: float = Field(1.0, gt=0, description="factor that converts the file's units to metres")
@@ -447,7 +443,9 @@ def set_key(data: dict[str, Any], key: str, value: Any, source: str) -> dict[str
     """A copy of the raw config ``data`` with the dotted ``key`` set to ``value``.
 
     A mapping ``value`` merges into a mapping already there (not a stage
-    section naming another plugin, which it replaces); list items are
+    section naming another plugin, which it replaces, as does a stage's
+    ``plugin`` set to another one: ``terminals.plugin=metric`` kept
+    ``coverage``'s parameters, refused as unknown to ``metric``); list items are
     addressed by index (``analyzers.0.params``). Keys are checked against
     :class:`RunConfig` down to the plugins' ``params``, which the plugin's own
     model checks later.
@@ -458,6 +456,8 @@ def set_key(data: dict[str, Any], key: str, value: Any, source: str) -> dict[str
     """
     path = tuple(int(part) if re.fullmatch("[0-9]{1,18}", part) else part for part in key.split("."))  # not "²", 5000 digits
     _check_key(path, source)
+    if path[-1] == "plugin" and len(path) > 1 and _field_at(RunConfig, path) is not None:
+        path, value = path[:-1], {"plugin": value}
     data = copy.deepcopy(data)
     container: Any = data
     for depth, part in enumerate(path):

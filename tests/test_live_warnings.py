@@ -11,6 +11,7 @@ from rich.console import Console
 
 from g2s_core import api, cli
 from g2s_core.model import RaisedWarning, RunContext
+from g2s_plugins.batch import command as batch_command  # noqa: F401  (imported before cli.Output is patched, it keeps the real one)
 from g2s_plugins.steiner import kou
 
 NO_TERMINALS = "the 'entry_exit' terminal selector found no terminals in closed_room"
@@ -58,7 +59,7 @@ def test_the_progress_callback_hears_each_warning_as_it_is_raised():
 
 def _run_on(errors: Console, monkeypatch, tmp_path, *options: str) -> str:
     """What ``g2s run`` prints on ``errors`` (its stderr console) for a run that warns."""
-    monkeypatch.setattr(cli, "Console", lambda stderr=False, **_: errors if stderr else Console(file=io.StringIO()))
+    monkeypatch.setattr(cli, "Output", lambda stderr=False, **_: errors if stderr else Console(file=io.StringIO()))
     assert cli.main(["run", "map_piece", "sample:closed_room", "-o", str(tmp_path / "out"), *options]) == 0
     return errors.file.getvalue()
 

@@ -66,7 +66,7 @@ def g2s_command(parser: argparse.ArgumentParser) -> Callable[[argparse.Namespace
 
 def batch(args: argparse.Namespace) -> int:
     """``g2s batch``: the batch's summary, a line per failed pair on stderr; exit code 4 when some pairs failed."""
-    errors = Console(stderr=True, emoji=False)  # a level's `:cat:` was a cat
+    errors = Output(stderr=True)  # no emoji: a level's `:cat:` was a cat
     names = presets()
     configs = list(itertools.takewhile(
         lambda item: Path(item).suffix.lower() in (".yaml", ".yml") or item in names, args.items))

@@ -284,9 +284,11 @@ def expand_inputs(inputs: Sequence[str], exclude: Path | None = None) -> list[tu
 
     def add(name: str, spec: str, origin: str) -> None:
         _check_folder_name(name, "level", origin)
-        if name in levels and levels[name] != spec:
+        # one file by two spellings (`slab.obj ./lv/../slab.obj`) runs once, as one spelling given twice does: it was
+        # refused as two files of one level name, "rename one of the files"
+        if name in levels and os.path.realpath(levels[name]) != os.path.realpath(spec):
             raise G2SError(f"{origin}: level name {name!r} is also that of {levels[name]}; rename one of the files")
-        levels[name] = spec
+        levels.setdefault(name, spec)  # the first spelling is the one the summary shows
 
     # os.path.realpath, not Path.resolve, which raises RuntimeError on a link to itself
     excluded = None if exclude is None else os.path.realpath(exclude)
@@ -504,12 +506,15 @@ def run_batch(
 
 def _listed(given: Any, what: str, each: str, one: str | None = None) -> list[Any]:
     """The Python API's argument ``what``, a list of ``each``, as a list, each item a path or a name (``one``) when
-    ``one`` is given; a text refused, which Python reads letter by letter (``configs="graph_only"`` ran the config
-    ``g``: ``g: no such config file or preset``)."""
+    ``one`` is given, and then not empty (``run_batch([], ...)`` returned an empty summary, nothing run or said, where
+    ``g2s batch`` asks for a config and a level); a text refused, which Python reads letter by letter
+    (``configs="graph_only"`` ran the config ``g``: ``g: no such config file or preset``)."""
     if isinstance(given, (str, bytes, os.PathLike)) or not isinstance(given, Iterable):
         got = f"the text {show(given)}" if isinstance(given, str) else type(given).__name__
         raise G2SError(f"{what}: expected a list of {each}, got {got}")
-    for index, item in enumerate(items := list(given)):
+    if not (items := list(given)) and one is not None:
+        raise G2SError(f"{what}: expected a list of {each}, got an empty list")
+    for index, item in enumerate(items):
         if one is not None:
             given_path(item, f"{what}[{index}]", one)  # a dict or a trimesh.Trimesh was pathlib's TypeError, 5 the file '5'
     return items
