@@ -11168,16 +11168,16 @@ def hive(seed: int) -> trimesh.Trimesh:
 
 
 def tavern(seed: int) -> trimesh.Trimesh:
-    """A tavern's interior and its yard: an inn 42-48 x 24-28 m (walls 0.3 m thick, floors 0.15 m over the street) of
+    """A tavern's interior and its yard: an inn 54-60 x 24-28 m (walls 0.3 m thick, floors 0.15 m over the street) of
     three storeys 3.6 m apart under a gable (:func:`_gable`), standing in a yard 14 m wide all round. On the ground
-    floor the taproom (the front 18-22 m of the house): 18-24 groups of a table (0.75 m high) between two benches (0.45
+    floor the taproom (the front 18-22 m of the house): 26-34 groups of a table (0.75 m high) between two benches (0.45
     m, over the climb) 1.3 m or more apart, a hearth, and a bar counter 1.1 m high from the west wall with room behind it
     (2 m to the shelves, 2.45 m to the wall) entered round its east end; behind the taproom's back wall a kitchen (door
     from behind the bar, a back door to the yard, a flight down through its floor to a cellar 3 m below under the
     kitchen and the taproom's back, with barrels) and a snug (door from the taproom, furniture). The front door is 2 m
     wide. On each upper storey a gallery 3-5 m wide round a well over the taproom open to the roof (rails 1.1 m round
     it); two flights (1.6 m wide, 20 risers of 0.18 m) climb the east wall one beyond the other, ground to first storey
-    and first to second, and off each gallery 6-9 bedrooms along the back and 3-4 along the west side open by doors 1.6
+    and first to second, and off each gallery 8-12 bedrooms along the back and 3-4 along the west side open by doors 1.6
     m wide (lintels 2.3 m up, :func:`_doored_wall`), each with furniture (:func:`_furnish`).
 
     Expected (written before the first run): one area (no table top nor counter holds floor after the agent's radius).
@@ -11187,7 +11187,7 @@ def tavern(seed: int) -> trimesh.Trimesh:
     gallery, a terminal in each bedroom, and a chain down to the cellar through the kitchen.
     """
     rng = np.random.default_rng(seed)
-    width, depth = float(rng.integers(42, 49)), float(rng.integers(24, 29))
+    width, depth = float(rng.integers(54, 61)), float(rng.integers(24, 29))
     ground, uppers, roof = 0.15, (3.75, 7.35), 10.95
     upper = uppers[0]
     back = depth - 6.0  # the taproom's back wall
@@ -11232,7 +11232,7 @@ def tavern(seed: int) -> trimesh.Trimesh:
              (0.0, 1.6, 4.4, 8.0)]
     groups = 0
     for _ in range(600):
-        if groups == int(rng.integers(18, 25)):
+        if groups == int(rng.integers(26, 35)):
             break
         gx, gz = rng.uniform(1.5, width - 4.0), rng.uniform(1.2, back - 4.0)
         if _clear(gx - 0.65, gx + 1.4 + 0.65, gz - 0.65, gz + 1.9 + 0.65, taken):
