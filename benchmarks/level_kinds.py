@@ -218,15 +218,18 @@ slab stands against its wall with a doorway at its top (:func:`stealth_mansion`:
 rails 1.5 m from the walls, cut a strip of the room above off, 40 m² on seed 1; against the wall but arriving at the
 hall's wall with no doorway, it cut off the room, 49-50 m² on every seed).
 
-Twenty-fourth round: five more kinds of shipped game levels, 325-827 navmesh polygons with that agent (seeds 0-2):
+Twenty-fourth round: six more kinds of shipped game levels, 409-827 navmesh polygons with that agent (seeds 0-2):
 ``tavern`` (an inn of three storeys: a taproom of table groups, a bar, a kitchen over a cellar, galleries round a well
 open to the roof, two flights, bedrooms), ``military_base`` (a battle-royale compound: a fence with 3-4 gates, a hangar,
 buildings and sheds with loot rooms, :func:`_tile_building`), ``king_of_hill`` (a stepped hill of four terraces 1.2 m
 apart, each step climbed by two ramps, round a capture point), ``favela`` (bands of houses up a hillside whose roofs
-are the alley above's floor, climbed by stair lanes) and ``hive`` (hexagonal cells whose walls run at 60 degrees,
-doorways along a spanning tree and loops, a queen's chamber, :func:`_wall_line`). A first draft's tavern put the
-second flight's foot 0.8 m past the first's head: the first storey's gallery was an area of its own (391 / 383 / 380
-m² on seeds 0-2); the feet are now 8 m apart.
+are the alley above's floor, climbed by stair lanes), ``hive`` (hexagonal cells whose walls run at 60 degrees,
+doorways along a spanning tree and loops, a queen's chamber, :func:`_wall_line`) and ``western_town`` (a main street
+between rows of one- and two-storey buildings on boardwalks, balconies joined over alleys by bridges, alley flights,
+corrals). A first draft's tavern put the second flight's foot 0.8 m past the first's head: the first storey's gallery
+was an area of its own (391 / 383 / 380 m² on seeds 0-2); the feet are now 8 m apart. A flight 1.4 m wide between
+drops (the western town's first draft, inside and up its alleys) holds no floor past its first steps: the ledge
+filter and the agent's radius take both sides (upper storeys apart, 6 / 5 / 5 areas); at 2 m wide each climbs.
 
 Run: ``.venv/bin/python benchmarks/level_kinds.py OUT_DIR [--kinds subway forest] [--seeds 0 1 2]`` writes
 ``OUT_DIR/<kind>_s<seed>.obj``, the files ``benchmarks/analysis_quality.py --levels`` takes (which also takes the
@@ -11259,6 +11262,90 @@ def tavern(seed: int) -> trimesh.Trimesh:
     _gable(s, -0.3, width + 0.3, -0.3, depth + 0.3, roof)
     return s.mesh()
 
+def _western_row(s: _Solids, rng: np.random.Generator, length: float, north: bool,
+                 yards: list[tuple[float, float, float, float]]) -> None:
+    """One side of the western town's street (:func:`western_town`): buildings along x from 0 to ``length``, their
+    fronts 13 m from the street's axis on the ``north`` (+z) or south side, each adding its plan to ``yards`` (holes
+    for the ground)."""
+    sign = 1.0 if north else -1.0
+
+    def z_of(a: float, b: float) -> tuple[float, float]:  # distances a < b from the axis -> z0 < z1 on this side
+        return (a, b) if north else (-b, -a)
+
+    floor, upper, roof = 0.3, 3.8, 7.4
+    x, previous_upper = 2.0, None
+    while x < length - 10.0:
+        w, d = float(rng.integers(8, 13)), float(rng.integers(10, 13))
+        two = rng.random() < 0.6
+        z0, z1 = z_of(13.0, 13.0 + d)
+        yards.append((x, x + w, z0, z1))
+        s.box(x, x + w, floor - 0.5, floor, z0, z1)
+        bz0, bz1 = z_of(10.0, 13.0)
+        s.box(x, x + w, floor - 0.5, floor, bz0, bz1)  # the boardwalk
+        top = upper if two else floor + 3.6
+        front, back = (z0, z1) if north else (z1, z0)
+        _doored_wall(s, (x, front), (x + w, front), floor, top, [(w / 2 - 0.9, 1.8, "open", 1)], 0.25)
+        _doored_wall(s, (x, back), (x + w, back), floor, roof if two else top, [(1.0, 1.6, "open", 1)], 0.25)
+        for wx in (x, x + w):
+            s.wall((wx, z0), (wx, z1), floor - 0.5, roof if two else top, thickness=0.25)
+        if two:
+            holes: list[tuple[float, float, float, float]] = []
+            _flight_through(s, np.array([x + w - 1.2, front + sign * 1.5]), np.array([0.0, sign]), 2.0, floor, upper, holes)
+            s.slab(x, x + w, z0, z1, upper, holes)
+            _doored_wall(s, (x, front), (x + w, front), upper, roof, [(w / 2 - 0.8, 1.6, "open", 1)], 0.25)
+            s.box(x, x + w, upper - 0.3, upper, bz0, bz1)  # the balcony over the boardwalk, railed at its front
+            s.wall((x, 10.0 * sign), (x + w, 10.0 * sign), upper, upper + 1.1, thickness=0.1)
+            if previous_upper is not None and previous_upper < x:  # a bridge over the alley from the last balcony
+                s.box(previous_upper, x, upper - 0.3, upper, bz0, bz1)
+                s.wall((previous_upper, 10.0 * sign), (x, 10.0 * sign), upper, upper + 1.1, thickness=0.1)
+                if rng.random() < 0.7:  # a flight up the alley onto the bridge, arriving head-on at its back
+                    _flight_to(s, np.array([(previous_upper + x) / 2, 13.0 * sign]), np.array([0.0, -sign]), 2.0, 0.0,
+                               upper)
+            previous_upper = x + w
+        else:
+            previous_upper = None
+        _gable(s, x - 0.2, x + w + 0.2, z0 - 0.2, z1 + 0.2, roof if two else top)
+        x += w + (float(rng.uniform(3.5, 5.0)) if rng.random() < 0.6 else 0.0)
+
+
+def western_town(seed: int) -> trimesh.Trimesh:
+    """A western town's main street 20 m wide and 130-150 m long between two rows of buildings (:func:`_western_row`),
+    each 8-12 m wide and 10-12 m deep, one house after another or across alleys 3.5-5 m wide (six in ten): each on a
+    boardwalk 3 m deep and 0.3 m up (one step) along its front, entered by a front door 1.8 m wide and a back door to the
+    yards behind; three in five have an upper storey (3.8 m up), reached inside by a flight 2 m wide (risers of at most
+    0.18 m) up the east wall, whose front door opens onto a balcony over the boardwalk (railed, 1.1 m): balconies of
+    neighbours meet, or over an alley by a bridge, seven in ten of those bridges reached by a flight 2 m wide up the
+    alley. Roofs are gables at 50 degrees (:func:`_gable`); the ground runs 17 m past the rows into the yards, with up to
+    4-6 corrals 12 x 10 m, 3 m or more apart (rails 1.1 m high, a gate 2 m wide facing the rows), and 10-16 water troughs
+    and covered wagons (0.9-1.6 m high, ridged at 50 degrees, :func:`_ridged`) on the street off its middle.
+
+    Expected (written before the first run): one area. Traffic highest along the street's middle and at the alley
+    mouths, then on the boardwalks; the balconies, the upper rooms and the corrals lowest; the alleys with flights
+    middling (they join the yards, the street and the balconies). A designer expects the structure to show the street
+    as a chain or net, an edge through each alley to a loop round the rows by the yards, the balconies as chains joined
+    down each alley flight and inside stair, and a terminal in each upper room.
+    """
+    rng = np.random.default_rng(seed)
+    length = float(rng.integers(130, 151))
+    s = _Solids()
+    yards: list[tuple[float, float, float, float]] = []
+    _western_row(s, rng, length, True, yards)
+    _western_row(s, rng, length, False, yards)
+    corrals: list[tuple[float, float, float, float]] = []
+    for _ in range(40):  # corrals in the yards, 3 m or more apart
+        if len(corrals) == int(rng.integers(4, 7)):
+            break
+        x0, north = float(rng.uniform(4.0, length - 20.0)), rng.random() < 0.5
+        z0 = 30.0 if north else -40.0
+        if _clear(x0 - 3.0, x0 + 15.0, z0, z0 + 10.0, corrals):
+            corrals.append((x0, x0 + 12.0, z0, z0 + 10.0))
+            _rail_ring(s, x0, x0 + 12.0, z0, z0 + 10.0, 0.0, {"south" if north else "north": [(5.0, 2.0)]})
+    for _ in range(int(rng.integers(10, 17))):  # troughs and covered wagons on the street, off its middle, ridged
+        x0, z0 = float(rng.uniform(4.0, length - 6.0)), float(rng.choice([-8.0, 5.5]))
+        _ridged(s, x0, x0 + float(rng.uniform(1.8, 3.5)), z0, z0 + 2.5, -0.5, float(rng.uniform(0.9, 1.6)))
+    s.ground(-5.0, length + 5.0, -42.0, 42.0, 0.0, yards)
+    return s.mesh()
+
 
 KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
     "subway": subway, "archipelago": archipelago, "car_park": car_park,
@@ -11295,6 +11382,7 @@ KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
     "stealth_mansion": stealth_mansion, "defusal": defusal, "payload": payload, "metroidvania": metroidvania,
     "tower_defence": tower_defence, "hub_world": hub_world,
     "tavern": tavern, "military_base": military_base, "king_of_hill": king_of_hill, "favela": favela, "hive": hive,
+    "western_town": western_town,
 }
 """Kind name -> generator (seed -> Y-up mesh in metres)."""
 
