@@ -10644,7 +10644,7 @@ def _flight_through(s: _Solids, foot: np.ndarray, heading: np.ndarray, width: fl
     return x0, x1, z0, z1
 
 
-def metroidvania(seed: int) -> trimesh.Trimesh:
+def metroidvania(seed: int, across: tuple[int, int] = (9, 12)) -> trimesh.Trimesh:
     """A metroidvania's castle as a grid of cells, 9-11 across (x) and 5-6 storeys (y, 5 m apart), each cell a room 16 m
     along x and 12 m deep (z), inside outer walls. Cells are joined along a random spanning tree of the grid plus a
     quarter of the other neighbour pairs (the backtracking loops): side by side through a doorway 2 m wide in the
@@ -10660,9 +10660,12 @@ def metroidvania(seed: int) -> trimesh.Trimesh:
     one link); with the loops few cells are dead ends. A designer expects one structure node or two a room, an edge
     through every door and up every flight or ramp (a chokepoint where a link is a bridge of the tree), loops where
     the extra links close them, and a terminal in each dead-end cell.
+
+    ``across`` bounds the cells across (low inclusive, high exclusive): a smaller castle of the same rules (the same
+    level for the default, the one the docstring describes).
     """
     rng = np.random.default_rng(seed)
-    cols, storeys, cell_x, cell_z, storey = int(rng.integers(9, 12)), int(rng.integers(5, 7)), 16.0, 12.0, 5.0
+    cols, storeys, cell_x, cell_z, storey = int(rng.integers(*across)), int(rng.integers(5, 7)), 16.0, 12.0, 5.0
     cells = [(c, r) for c in range(cols) for r in range(storeys)]
     index = {c: k for k, c in enumerate(cells)}
     pairs = [(index[c, r], index[c + dc, r + dr]) for c, r in cells for dc, dr in ((1, 0), (0, 1))
@@ -10891,6 +10894,23 @@ def _tile_building(rng: np.random.Generator, walk: np.ndarray, rect: tuple[int, 
     return True
 
 
+def _tile_cover(rng: np.random.Generator, walk: np.ndarray, count: int, tries: int, margin: int,
+                allowed: Callable[[tuple[slice, slice]], bool]) -> None:
+    """Up to ``count`` cover blocks of rock, 1 x 2 or 2 x 1 tiles, in ``walk`` (n, m) from ``tries`` random places: each
+    where the box of tiles ``margin`` round it is all open floor and ``allowed`` (given that box's slices) holds, so no
+    block closes a way another leaves open. O(tries margin^2)."""
+    n, m = walk.shape
+    for _ in range(tries):
+        if count == 0:
+            break
+        i, j = int(rng.integers(2, n - 3)), int(rng.integers(2, m - 3))
+        di, dj = (1, 2) if rng.random() < 0.5 else (2, 1)
+        box = (slice(i - margin, i + di + margin), slice(j - margin, j + dj + margin))
+        if walk[box].all() and allowed(box):
+            walk[i:i + di, j:j + dj] = False
+            count -= 1
+
+
 def military_base(seed: int) -> trimesh.Trimesh:
     """A battle-royale compound on 2 m tiles (:func:`_tiles`) on flat ground, 100-110 x 90-100 tiles (200-220 x 180-200 m): in its middle a fenced compound 50-60 x 40-48
     tiles (its yard paved 0.15 m up, one step) inside a fence one tile thick, open at 3-4 gates 2 tiles (4 m) wide on different sides; in the compound a
@@ -10948,15 +10968,8 @@ def military_base(seed: int) -> trimesh.Trimesh:
         i, j = int(rng.integers(3, n - 3 - w)), int(rng.integers(3, m - 3 - d))
         if outside[i - 2:i + w + 2, j - 2:j + d + 2].all():
             sheds += _tile_building(rng, walk, (i, i + w, j, j + d), 1)
-    cover, target = 0, int(rng.integers(40, 61))
-    for _ in range(20 * target):
-        if cover == target:
-            break
-        i, j = int(rng.integers(2, n - 3)), int(rng.integers(2, m - 3))
-        di, dj = (1, 2) if rng.random() < 0.5 else (2, 1)
-        if walk[i - 2:i + di + 2, j - 2:j + dj + 2].all():
-            walk[i:i + di, j:j + dj] = False
-            cover += 1
+    target = int(rng.integers(40, 61))
+    _tile_cover(rng, walk, target, 20 * target, 2, lambda box: True)
     floor = np.where(walk, 0.0, np.nan)
     floor[inside & walk] = 0.15  # the compound's yard, paved one step up
     _tiles(s := _Solids(), floor, 2.0, 4.0)
@@ -11014,16 +11027,8 @@ def king_of_hill(seed: int) -> trimesh.Trimesh:
         walk[[c - 5, c + 4], rows] = False
         walk[c - 3:c - 1, wall] = walk[c + 1:c + 3, wall] = True
         keep[c - 7:c + 7, max(rows.start - 2, 0):rows.stop + 2] = True
-    cover, target = 0, int(rng.integers(50, 71))
-    for _ in range(30 * target):
-        if cover == target:
-            break
-        i, j = int(rng.integers(2, n - 3)), int(rng.integers(2, n - 3))
-        di, dj = (1, 2) if rng.random() < 0.5 else (2, 1)
-        box = (slice(i - 1, i + di + 1), slice(j - 1, j + dj + 1))
-        if walk[box].all() and not keep[box].any() and np.ptp(height[box]) == 0.0:
-            walk[i:i + di, j:j + dj] = False
-            cover += 1
+    target = int(rng.integers(50, 71))
+    _tile_cover(rng, walk, target, 30 * target, 1, lambda box: not keep[box].any() and np.ptp(height[box]) == 0.0)
     floor = np.where(walk, height, np.nan)
     _tiles(s := _Solids(), floor, 2.0, 9.0)
     return s.mesh()
