@@ -10419,7 +10419,7 @@ def defusal(seed: int) -> trimesh.Trimesh:
     return s.mesh()
 
 
-def payload(seed: int) -> trimesh.Trimesh:
+def payload(seed: int, along: tuple[int, int] = (170, 186)) -> trimesh.Trimesh:
     """A payload (escort) map on 2 m tiles (:func:`_tiles`) over gently rolling ground (:func:`_rolling`: up to about
     1.3 m of relief, every step between tiles 0.15 m), 170-185 x 50-56 tiles (340-370 x 100-112 m): one road 10 m wide
     (5 tiles) winding from the attackers' spawn yard at the west edge to the defenders' base at the east, legs along x
@@ -10436,9 +10436,12 @@ def payload(seed: int) -> trimesh.Trimesh:
     and the spawn's and base's far corners; the checkpoint squares busy. A designer expects the structure to follow the
     road as one chain with loops where each side route leaves and rejoins it, a node in each flanking building on its
     loop, and no terminals but in the yards' corners and the checkpoints' crate bays.
+
+    ``along`` bounds the map's tiles along x (low inclusive, high exclusive): a shorter road by the same rules (the same
+    level for the default, the one the docstring describes).
     """
     rng = np.random.default_rng(seed)
-    n, m = int(rng.integers(170, 186)), int(rng.integers(50, 57))
+    n, m = int(rng.integers(*along)), int(rng.integers(50, 57))
     walk = np.zeros((n, m), dtype=bool)
     points, x, z = [np.array([8, m // 2])], 8, m // 2
     while x < n - 14:
@@ -11313,7 +11316,7 @@ def _western_row(s: _Solids, rng: np.random.Generator, length: float, north: boo
         x += w + (float(rng.uniform(3.5, 5.0)) if rng.random() < 0.6 else 0.0)
 
 
-def western_town(seed: int) -> trimesh.Trimesh:
+def western_town(seed: int, street: tuple[int, int] = (130, 151)) -> trimesh.Trimesh:
     """A western town's main street 20 m wide and 130-150 m long between two rows of buildings (:func:`_western_row`),
     each 8-12 m wide and 10-12 m deep, one house after another or across alleys 3.5-5 m wide (six in ten): each on a
     boardwalk 3 m deep and 0.3 m up (one step) along its front, entered by a front door 1.8 m wide and a back door to the
@@ -11329,9 +11332,12 @@ def western_town(seed: int) -> trimesh.Trimesh:
     middling (they join the yards, the street and the balconies). A designer expects the structure to show the street
     as a chain or net, an edge through each alley to a loop round the rows by the yards, the balconies as chains joined
     down each alley flight and inside stair, and a terminal in each upper room.
+
+    ``street`` bounds the street's length in metres (low inclusive, high exclusive): a shorter town by the same rules
+    (the same level for the default, the one the docstring describes).
     """
     rng = np.random.default_rng(seed)
-    length = float(rng.integers(130, 151))
+    length = float(rng.integers(*street))
     s = _Solids()
     yards: list[tuple[float, float, float, float]] = []
     _western_row(s, rng, length, True, yards)
