@@ -260,6 +260,14 @@ def _cut_lines(x0: float, x1: float, z0: float, z1: float,
     return xs, zs
 
 
+def _pieces(lo: float, hi: float, gaps: list[tuple[float, float]]) -> list[tuple[float, float]]:
+    """The spans (start, end) of the line from ``lo`` to ``hi`` left between the gaps (start, width), each start in
+    metres from ``lo``: a wall's solid pieces (:meth:`_Solids.wall`, :func:`_wall_line`), none shorter than a
+    micrometre. O(gaps log gaps)."""
+    cuts = [lo, *sum(([lo + start, lo + start + width] for start, width in sorted(gaps)), []), hi]
+    return [(c0, c1) for c0, c1 in zip(cuts[0::2], cuts[1::2]) if c1 - c0 > 1e-6]
+
+
 class _Solids:
     """Convex solids gathered into one mesh."""
 
@@ -344,15 +352,14 @@ class _Solids:
     def wall(self, a: tuple[float, float], b: tuple[float, float], y0: float, y1: float,
              doors: list[tuple[float, float]] = (), thickness: float = 0.2) -> None:
         """A wall along x or along z from plan point ``a`` (x, z) to ``b``, between heights y0 < y1, open over each
-        door (start, width), metres from ``a`` along the wall; ``thickness`` centred on the line."""
+        door (start, width), metres along the wall from its end of lower x (or z); ``thickness`` centred on the line.
+        Each piece between the doors (:func:`_pieces`) is one box; :func:`_wall_line` draws a wall at any other angle."""
         along = 0 if a[1] == b[1] else 1
         lo, hi = sorted((a[along], b[along]))
-        cuts = [lo, *sum(([lo + start, lo + start + width] for start, width in sorted(doors)), []), hi]
         fixed, half = a[1 - along], thickness / 2
-        for c0, c1 in zip(cuts[0::2], cuts[1::2]):
-            if c1 - c0 > 1e-6:
-                x0, x1, z0, z1 = (c0, c1, fixed - half, fixed + half) if along == 0 else (fixed - half, fixed + half, c0, c1)
-                self.box(x0, x1, y0, y1, z0, z1)
+        for c0, c1 in _pieces(lo, hi, doors):
+            x0, x1, z0, z1 = (c0, c1, fixed - half, fixed + half) if along == 0 else (fixed - half, fixed + half, c0, c1)
+            self.box(x0, x1, y0, y1, z0, z1)
 
     def mesh(self) -> trimesh.Trimesh:
         """Every solid in one mesh, coincident vertices merged."""
@@ -10921,7 +10928,9 @@ def military_base(seed: int) -> trimesh.Trimesh:
     the field outside up to 12 sheds 5-6 tiles square, each a shell of rock round one or two rooms (the inner one a loot
     room behind a one-tile door) entered by 1-2 doors one tile wide (:func:`_tile_building`), kept two tiles apart;
     watchtowers (rock 2 tiles square) inside the fence's corners and 40-60 cover tiles (rock, 1 x 1 or 1 x 2) where the
-    tiles round them are open. Rock stands as walls 4 m high ridged at 50 degrees.
+    tiles round them are open. Rock stands as walls 4 m high ridged at 50 degrees. Unlike round 22's
+    :func:`battle_royale` (houses and rock clusters on open rolling ground, no way between two places shut), every way
+    into the compound goes through a gate of its fence, on flat ground.
 
     Expected (written before the first run): one area. Traffic highest through the gates (every way between the field
     and the compound goes through 3-4 openings 4 m wide) and on the compound's open ground between them, then on the
@@ -11084,16 +11093,15 @@ def favela(seed: int) -> trimesh.Trimesh:
 def _wall_line(s: _Solids, p: np.ndarray, q: np.ndarray, y0: float, y1: float, thickness: float,
                gaps: list[tuple[float, float]]) -> None:
     """A wall at any angle from plan point ``p`` (x, z) to ``q`` between heights y0 < y1, ``thickness`` m thick about
-    the line, open over each gap (start, width), metres from ``p`` along it: one prism a solid piece."""
+    the line, open over each gap (start, width), metres from ``p`` along it: each piece between the gaps
+    (:func:`_pieces`) one prism."""
     p, q = np.asarray(p, dtype=np.float64), np.asarray(q, dtype=np.float64)
     length = float(np.linalg.norm(q - p))
     along = (q - p) / length
     side = np.array([-along[1], along[0]]) * thickness / 2
-    cuts = [0.0, *sum(([start, start + width] for start, width in sorted(gaps)), []), length]
-    for c0, c1 in zip(cuts[0::2], cuts[1::2]):
-        if c1 - c0 > 1e-6:
-            a, b = p + along * c0, p + along * c1
-            s.prism(np.array([a - side, b - side, b + side, a + side]), y0, y1)
+    for c0, c1 in _pieces(0.0, length, gaps):
+        a, b = p + along * c0, p + along * c1
+        s.prism(np.array([a - side, b - side, b + side, a + side]), y0, y1)
 
 
 def _spire(s: _Solids, c: np.ndarray, radius: float, top: float) -> None:
@@ -11269,6 +11277,7 @@ def tavern(seed: int) -> trimesh.Trimesh:
             _furnish(s, rng, (0.15, 4.9, a + 0.1, b - 0.1), y0, [(3.5, 5.0, (a + b) / 2 - 1.3, (a + b) / 2 + 1.3)], 2)
     _gable(s, -0.3, width + 0.3, -0.3, depth + 0.3, roof)
     return s.mesh()
+
 
 def _western_row(s: _Solids, rng: np.random.Generator, length: float, north: bool,
                  yards: list[tuple[float, float, float, float]]) -> None:
