@@ -10921,7 +10921,7 @@ def _tile_cover(rng: np.random.Generator, walk: np.ndarray, count: int, tries: i
             count -= 1
 
 
-def military_base(seed: int) -> trimesh.Trimesh:
+def military_base(seed: int, scale: float = 1.0) -> trimesh.Trimesh:
     """A battle-royale compound on 2 m tiles (:func:`_tiles`) on flat ground, 100-110 x 90-100 tiles (200-220 x 180-200 m): in its middle a fenced compound 50-60 x 40-48
     tiles (its yard paved 0.15 m up, one step) inside a fence one tile thick, open at 3-4 gates 2 tiles (4 m) wide on different sides; in the compound a
     hangar (14-16 x 10-12 tiles, a door 3 tiles wide, a parted-off workshop) and up to 7 buildings 7-11 x 6-8 tiles, in
@@ -10937,12 +10937,19 @@ def military_base(seed: int) -> trimesh.Trimesh:
     field's ring round the fence; lowest in the loot rooms, the sheds and the field's corners. A designer expects the
     structure to show each gate as a chokepoint (a node or an edge through it), a loop round the fence outside and a
     net between the buildings inside, a terminal in each loot room and shed, and edges through the doors.
+
+    ``scale`` multiplies the bounds in tiles of the field, the compound and the hangar (each rounded): a smaller base by
+    the same rules (the same level at 1, the one the docstring describes).
     """
     rng = np.random.default_rng(seed)
-    n, m = int(rng.integers(100, 111)), int(rng.integers(90, 101))
+
+    def tiles(low: int, high: int) -> int:  # a size in tiles drawn in [low, high) times ``scale``
+        return int(rng.integers(round(low * scale), round(high * scale)))
+
+    n, m = tiles(100, 111), tiles(90, 101)
     walk = np.ones((n, m), dtype=bool)
     walk[[0, -1], :] = walk[:, [0, -1]] = False
-    cw, cd = int(rng.integers(50, 61)), int(rng.integers(40, 49))
+    cw, cd = tiles(50, 61), tiles(40, 49)
     ci0, cj0 = (n - cw) // 2 + int(rng.integers(-3, 4)), (m - cd) // 2 + int(rng.integers(-3, 4))
     ci1, cj1 = ci0 + cw, cj0 + cd
     inside = np.zeros_like(walk)
@@ -10960,7 +10967,7 @@ def military_base(seed: int) -> trimesh.Trimesh:
             walk[ci0 if side == 2 else ci1 - 1, j:j + 2] = True
     for i, j in ((ci0 + 2, cj0 + 2), (ci0 + 2, cj1 - 4), (ci1 - 4, cj0 + 2), (ci1 - 4, cj1 - 4)):  # watchtowers
         walk[i:i + 2, j:j + 2] = False
-    hw, hd = int(rng.integers(14, 17)), int(rng.integers(10, 13))
+    hw, hd = tiles(14, 17), tiles(10, 13)
     for _ in range(40):  # the hangar first, then the buildings
         i, j = int(rng.integers(ci0 + 4, ci1 - 4 - hw)), int(rng.integers(cj0 + 4, cj1 - 4 - hd))
         if _tile_building(rng, walk, (i, i + hw, j, j + hd), 1, 3):
@@ -11046,7 +11053,7 @@ def king_of_hill(seed: int) -> trimesh.Trimesh:
     return s.mesh()
 
 
-def favela(seed: int) -> trimesh.Trimesh:
+def favela(seed: int, along: tuple[int, int] = (84, 93)) -> trimesh.Trimesh:
     """A favela on a hillside, on 2 m tiles (:func:`_tiles`), 84-92 tiles along x and 6-7 bands of 12 tiles up the
     slope (z): each band an alley 3 tiles wide at 3 m a band up (the lowest the road) and above it a row of houses 9
     tiles deep, 3-6 tiles wide, whose flat roofs are floor at the next alley's height (so the alley above runs out over
@@ -11061,9 +11068,12 @@ def favela(seed: int) -> trimesh.Trimesh:
     in the corners of the road. A designer expects the structure to be a ladder: each alley-and-roofs plateau a chain or
     net of nodes joined to the next by one edge up each stair lane; tanks and tall houses leave holes in the roof
     plateaus that the structure loops round.
+
+    ``along`` bounds the tiles along x (low inclusive, high exclusive): a shorter hillside by the same rules (the same
+    level for the default, the one the docstring describes).
     """
     rng = np.random.default_rng(seed)
-    n, bands = int(rng.integers(84, 93)), int(rng.integers(6, 8))
+    n, bands = int(rng.integers(*along)), int(rng.integers(6, 8))
     m = 12 * bands + 5
     floor = np.full((n, m), np.nan)
     for b in range(bands + 1):
@@ -11112,7 +11122,7 @@ def _spire(s: _Solids, c: np.ndarray, radius: float, top: float) -> None:
     s.hull(np.array([[p[0], y, p[1]] for p in base for y in (-0.5, 0.0)] + [[c[0], top, c[1]]]))
 
 
-def hive(seed: int) -> trimesh.Trimesh:
+def hive(seed: int, columns: tuple[int, int] = (9, 11)) -> trimesh.Trimesh:
     """An alien hive of hexagonal cells (flat-topped, 7 m from centre to corner, walls 0.3 m thick and 3.5 m high, so
     every wall but those along x runs at 60 degrees to them), 9-10 columns of 7-8 cells, each cell a floor
     of its own (a hexagonal slab: no floor outside the hive). Neighbouring cells are joined along a random spanning tree
@@ -11127,9 +11137,12 @@ def hive(seed: int) -> trimesh.Trimesh:
     cells that join big subtrees (cut cells near the middle), lowest in dead-end cells at the rim. A designer expects one
     structure node in each cell (more round a pod), an edge through each doorway, loops where the extra doorways close
     them, and no node in a doorway; walls at 60 degrees should read as well as those along the axes.
+
+    ``columns`` bounds the columns of cells (low inclusive, high exclusive): a narrower hive by the same rules (the same
+    level for the default, the one the docstring describes).
     """
     rng = np.random.default_rng(seed)
-    cols, rows, radius = int(rng.integers(9, 11)), int(rng.integers(7, 9)), 7.0
+    cols, rows, radius = int(rng.integers(*columns)), int(rng.integers(7, 9)), 7.0
     centres = {(q, r): np.array([1.5 * radius * q, math.sqrt(3.0) * radius * (r + 0.5 * (q % 2))])
                for q in range(cols) for r in range(rows)}
     corner = [radius * np.array([math.cos(math.radians(60 * k)), math.sin(math.radians(60 * k))]) for k in range(6)]
@@ -11186,7 +11199,7 @@ def hive(seed: int) -> trimesh.Trimesh:
     return s.mesh()
 
 
-def tavern(seed: int) -> trimesh.Trimesh:
+def tavern(seed: int, wide: tuple[int, int] = (54, 61)) -> trimesh.Trimesh:
     """A tavern's interior and its yard: an inn 54-60 x 24-28 m (walls 0.3 m thick, floors 0.15 m over the street) of
     three storeys 3.6 m apart under a gable (:func:`_gable`), standing in a yard 14 m wide all round. On the ground
     floor the taproom (the front 18-22 m of the house): 26-34 groups of a table (0.75 m high) between two benches (0.45
@@ -11204,9 +11217,12 @@ def tavern(seed: int) -> trimesh.Trimesh:
     flights and the galleries' east sides; the bedrooms, the cellar and the snug lowest. A designer expects the
     structure to show the taproom as a net round the table groups, each flight as one edge up to a loop round its
     gallery, a terminal in each bedroom, and a chain down to the cellar through the kitchen.
+
+    ``wide`` bounds the inn's width in metres (low inclusive, high exclusive): a narrower inn by the same rules (the same
+    level for the default, the one the docstring describes).
     """
     rng = np.random.default_rng(seed)
-    width, depth = float(rng.integers(54, 61)), float(rng.integers(24, 29))
+    width, depth = float(rng.integers(*wide)), float(rng.integers(24, 29))
     ground, uppers, roof = 0.15, (3.75, 7.35), 10.95
     upper = uppers[0]
     back = depth - 6.0  # the taproom's back wall

@@ -41,6 +41,8 @@ SAME_SEED_KINDS = (
 # of a full level are most of the module's time for a slow generator.
 SAME_SEED_SIZES: dict[str, dict[str, object]] = {
     "metroidvania": {"across": (3, 4)}, "payload": {"along": (60, 61)}, "western_town": {"street": (50, 51)},
+    "tavern": {"wide": (24, 27)}, "military_base": {"scale": 0.5}, "favela": {"along": (40, 45)},
+    "hive": {"columns": (4, 6)},
 }
 
 
