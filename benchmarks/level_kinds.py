@@ -1,4 +1,4 @@
-"""Level kinds of the fifth to twenty-third held-out rounds (issue 9): generators no preset setting was made on.
+"""Level kinds of the fifth to twenty-fourth held-out rounds (issue 9): generators no preset setting was made on.
 
 Fifth round: six kinds, each about 1,000 navmesh polygons with the presets' agent (radius 0.5 m, height 2 m, climb 0.4 m):
 ``subway`` (platforms, track pits 1.2 m lower, stairs up to two concourses), ``archipelago`` (islands joined by
@@ -218,6 +218,19 @@ slab stands against its wall with a doorway at its top (:func:`stealth_mansion`:
 rails 1.5 m from the walls, cut a strip of the room above off, 40 m² on seed 1; against the wall but arriving at the
 hall's wall with no doorway, it cut off the room, 49-50 m² on every seed).
 
+Twenty-fourth round: six more kinds of shipped game levels, 409-827 navmesh polygons with that agent (seeds 0-2):
+``tavern`` (an inn of three storeys: a taproom of table groups, a bar, a kitchen over a cellar, galleries round a well
+open to the roof, two flights, bedrooms), ``military_base`` (a battle-royale compound: a fence with 3-4 gates, a hangar,
+buildings and sheds with loot rooms, :func:`_tile_building`), ``king_of_hill`` (a stepped hill of four terraces 1.2 m
+apart, each step climbed by two ramps, round a capture point), ``favela`` (bands of houses up a hillside whose roofs
+are the alley above's floor, climbed by stair lanes), ``hive`` (hexagonal cells whose walls run at 60 degrees,
+doorways along a spanning tree and loops, a queen's chamber, :func:`_wall_line`) and ``western_town`` (a main street
+between rows of one- and two-storey buildings on boardwalks, balconies joined over alleys by bridges, alley flights,
+corrals). A first draft's tavern put the second flight's foot 0.8 m past the first's head: the first storey's gallery
+was an area of its own (391 / 383 / 380 m² on seeds 0-2); the feet are now 8 m apart. A flight 1.4 m wide between
+drops (the western town's first draft, inside and up its alleys) holds no floor past its first steps: the ledge
+filter and the agent's radius take both sides (upper storeys apart, 6 / 5 / 5 areas); at 2 m wide each climbs.
+
 Run: ``.venv/bin/python benchmarks/level_kinds.py OUT_DIR [--kinds subway forest] [--seeds 0 1 2]`` writes
 ``OUT_DIR/<kind>_s<seed>.obj``, the files ``benchmarks/analysis_quality.py --levels`` takes (which also takes the
 kinds' names and builds them with ``--seeds``).
@@ -245,6 +258,14 @@ def _cut_lines(x0: float, x1: float, z0: float, z1: float,
     xs = np.unique(np.clip([x0, x1, *[h[i] for h in holes for i in (0, 1)]], x0, x1))
     zs = np.unique(np.clip([z0, z1, *[h[i] for h in holes for i in (2, 3)]], z0, z1))
     return xs, zs
+
+
+def _pieces(lo: float, hi: float, gaps: list[tuple[float, float]]) -> list[tuple[float, float]]:
+    """The spans (start, end) of the line from ``lo`` to ``hi`` left between the gaps (start, width), each start in
+    metres from ``lo``: a wall's solid pieces (:meth:`_Solids.wall`, :func:`_wall_line`), none shorter than a
+    micrometre. O(gaps log gaps)."""
+    cuts = [lo, *sum(([lo + start, lo + start + width] for start, width in sorted(gaps)), []), hi]
+    return [(c0, c1) for c0, c1 in zip(cuts[0::2], cuts[1::2]) if c1 - c0 > 1e-6]
 
 
 class _Solids:
@@ -331,15 +352,14 @@ class _Solids:
     def wall(self, a: tuple[float, float], b: tuple[float, float], y0: float, y1: float,
              doors: list[tuple[float, float]] = (), thickness: float = 0.2) -> None:
         """A wall along x or along z from plan point ``a`` (x, z) to ``b``, between heights y0 < y1, open over each
-        door (start, width), metres from ``a`` along the wall; ``thickness`` centred on the line."""
+        door (start, width), metres along the wall from its end of lower x (or z); ``thickness`` centred on the line.
+        Each piece between the doors (:func:`_pieces`) is one box; :func:`_wall_line` draws a wall at any other angle."""
         along = 0 if a[1] == b[1] else 1
         lo, hi = sorted((a[along], b[along]))
-        cuts = [lo, *sum(([lo + start, lo + start + width] for start, width in sorted(doors)), []), hi]
         fixed, half = a[1 - along], thickness / 2
-        for c0, c1 in zip(cuts[0::2], cuts[1::2]):
-            if c1 - c0 > 1e-6:
-                x0, x1, z0, z1 = (c0, c1, fixed - half, fixed + half) if along == 0 else (fixed - half, fixed + half, c0, c1)
-                self.box(x0, x1, y0, y1, z0, z1)
+        for c0, c1 in _pieces(lo, hi, doors):
+            x0, x1, z0, z1 = (c0, c1, fixed - half, fixed + half) if along == 0 else (fixed - half, fixed + half, c0, c1)
+            self.box(x0, x1, y0, y1, z0, z1)
 
     def mesh(self) -> trimesh.Trimesh:
         """Every solid in one mesh, coincident vertices merged."""
@@ -10406,7 +10426,7 @@ def defusal(seed: int) -> trimesh.Trimesh:
     return s.mesh()
 
 
-def payload(seed: int) -> trimesh.Trimesh:
+def payload(seed: int, along: tuple[int, int] = (170, 186)) -> trimesh.Trimesh:
     """A payload (escort) map on 2 m tiles (:func:`_tiles`) over gently rolling ground (:func:`_rolling`: up to about
     1.3 m of relief, every step between tiles 0.15 m), 170-185 x 50-56 tiles (340-370 x 100-112 m): one road 10 m wide
     (5 tiles) winding from the attackers' spawn yard at the west edge to the defenders' base at the east, legs along x
@@ -10423,9 +10443,12 @@ def payload(seed: int) -> trimesh.Trimesh:
     and the spawn's and base's far corners; the checkpoint squares busy. A designer expects the structure to follow the
     road as one chain with loops where each side route leaves and rejoins it, a node in each flanking building on its
     loop, and no terminals but in the yards' corners and the checkpoints' crate bays.
+
+    ``along`` bounds the map's tiles along x (low inclusive, high exclusive): a shorter road by the same rules (the same
+    level for the default, the one the docstring describes).
     """
     rng = np.random.default_rng(seed)
-    n, m = int(rng.integers(170, 186)), int(rng.integers(50, 57))
+    n, m = int(rng.integers(*along)), int(rng.integers(50, 57))
     walk = np.zeros((n, m), dtype=bool)
     points, x, z = [np.array([8, m // 2])], 8, m // 2
     while x < n - 14:
@@ -10631,7 +10654,7 @@ def _flight_through(s: _Solids, foot: np.ndarray, heading: np.ndarray, width: fl
     return x0, x1, z0, z1
 
 
-def metroidvania(seed: int) -> trimesh.Trimesh:
+def metroidvania(seed: int, across: tuple[int, int] = (9, 12)) -> trimesh.Trimesh:
     """A metroidvania's castle as a grid of cells, 9-11 across (x) and 5-6 storeys (y, 5 m apart), each cell a room 16 m
     along x and 12 m deep (z), inside outer walls. Cells are joined along a random spanning tree of the grid plus a
     quarter of the other neighbour pairs (the backtracking loops): side by side through a doorway 2 m wide in the
@@ -10647,9 +10670,12 @@ def metroidvania(seed: int) -> trimesh.Trimesh:
     one link); with the loops few cells are dead ends. A designer expects one structure node or two a room, an edge
     through every door and up every flight or ramp (a chokepoint where a link is a bridge of the tree), loops where
     the extra links close them, and a terminal in each dead-end cell.
+
+    ``across`` bounds the cells across (low inclusive, high exclusive): a smaller castle of the same rules (the same
+    level for the default, the one the docstring describes).
     """
     rng = np.random.default_rng(seed)
-    cols, storeys, cell_x, cell_z, storey = int(rng.integers(9, 12)), int(rng.integers(5, 7)), 16.0, 12.0, 5.0
+    cols, storeys, cell_x, cell_z, storey = int(rng.integers(*across)), int(rng.integers(5, 7)), 16.0, 12.0, 5.0
     cells = [(c, r) for c in range(cols) for r in range(storeys)]
     index = {c: k for k, c in enumerate(cells)}
     pairs = [(index[c, r], index[c + dc, r + dr]) for c, r in cells for dc, dr in ((1, 0), (0, 1))
@@ -10838,6 +10864,525 @@ def stealth_mansion(seed: int) -> trimesh.Trimesh:
     return s.mesh()
 
 
+def _tile_building(rng: np.random.Generator, walk: np.ndarray, rect: tuple[int, int, int, int], doors: int,
+                   door_width: int = 1) -> bool:
+    """A building of one or two rooms drawn on tiles: the rectangle ``rect`` (i0, i1, j0, j1) of ``walk`` (n, m) becomes
+    a shell of rock one tile thick round its inside; an inside 7 or more tiles along i is parted across i by a wall of
+    rock with a door one tile wide (the inner room a dead end behind the outer), and ``doors`` openings
+    ``door_width`` tiles wide go through the shell at random places on the outer room's sides, each onto an open tile
+    outside. Drawn only where the rectangle and a ring of two tiles round it are all open floor; returns whether it was.
+    O(rect's area)."""
+    i0, i1, j0, j1 = rect
+    n, m = walk.shape
+    if i0 < 3 or j0 < 3 or i1 > n - 3 or j1 > m - 3 or not walk[i0 - 2:i1 + 2, j0 - 2:j1 + 2].all():
+        return False
+    walk[i0:i1, j0:j1] = False
+    walk[i0 + 1:i1 - 1, j0 + 1:j1 - 1] = True
+    outer = (i0, i1)  # the outer room's span along i
+    if i1 - i0 - 2 >= 7:
+        cut = i0 + 1 + int(rng.integers(3, i1 - i0 - 5))
+        walk[cut, j0 + 1:j1 - 1] = False
+        walk[cut, int(rng.integers(j0 + 1, j1 - 1))] = True
+        outer = (cut, i1) if rng.random() < 0.5 else (i0, cut + 1)
+    made = 0
+    for _ in range(20 * doors):
+        if made == doors:
+            break
+        side = int(rng.integers(4))
+        if side < 2:  # through a wall along i (the j0 or the j1 side)
+            if outer[1] - outer[0] - 2 < door_width:
+                continue
+            i = int(rng.integers(outer[0] + 1, outer[1] - door_width))
+            walk[i:i + door_width, j0 if side == 0 else j1 - 1] = True
+            made += 1
+        else:  # through an end wall (2 the low-i one, 3 the high-i one) of the outer room
+            if outer[side - 2] != (i0, i1)[side - 2] or j1 - j0 - 2 < door_width:
+                continue
+            j = int(rng.integers(j0 + 1, j1 - door_width))
+            walk[i0 if side == 2 else i1 - 1, j:j + door_width] = True
+            made += 1
+    return True
+
+
+def _tile_cover(rng: np.random.Generator, walk: np.ndarray, count: int, tries: int, margin: int,
+                allowed: Callable[[tuple[slice, slice]], bool]) -> None:
+    """Up to ``count`` cover blocks of rock, 1 x 2 or 2 x 1 tiles, in ``walk`` (n, m) from ``tries`` random places: each
+    where the box of tiles ``margin`` round it is all open floor and ``allowed`` (given that box's slices) holds, so no
+    block closes a way another leaves open. O(tries margin^2)."""
+    n, m = walk.shape
+    for _ in range(tries):
+        if count == 0:
+            break
+        i, j = int(rng.integers(2, n - 3)), int(rng.integers(2, m - 3))
+        di, dj = (1, 2) if rng.random() < 0.5 else (2, 1)
+        box = (slice(i - margin, i + di + margin), slice(j - margin, j + dj + margin))
+        if walk[box].all() and allowed(box):
+            walk[i:i + di, j:j + dj] = False
+            count -= 1
+
+
+def military_base(seed: int, scale: float = 1.0) -> trimesh.Trimesh:
+    """A battle-royale compound on 2 m tiles (:func:`_tiles`) on flat ground, 100-110 x 90-100 tiles (200-220 x 180-200 m): in its middle a fenced compound 50-60 x 40-48
+    tiles (its yard paved 0.15 m up, one step) inside a fence one tile thick, open at 3-4 gates 2 tiles (4 m) wide on different sides; in the compound a
+    hangar (14-16 x 10-12 tiles, a door 3 tiles wide, a parted-off workshop) and up to 7 buildings 7-11 x 6-8 tiles, in
+    the field outside up to 12 sheds 5-6 tiles square, each a shell of rock round one or two rooms (the inner one a loot
+    room behind a one-tile door) entered by 1-2 doors one tile wide (:func:`_tile_building`), kept two tiles apart;
+    watchtowers (rock 2 tiles square) inside the fence's corners and 40-60 cover tiles (rock, 1 x 1 or 1 x 2) where the
+    tiles round them are open. Rock stands as walls 4 m high ridged at 50 degrees. Unlike round 22's
+    :func:`battle_royale` (houses and rock clusters on open rolling ground, no way between two places shut), every way
+    into the compound goes through a gate of its fence, on flat ground.
+
+    Expected (written before the first run): one area. Traffic highest through the gates (every way between the field
+    and the compound goes through 3-4 openings 4 m wide) and on the compound's open ground between them, then on the
+    field's ring round the fence; lowest in the loot rooms, the sheds and the field's corners. A designer expects the
+    structure to show each gate as a chokepoint (a node or an edge through it), a loop round the fence outside and a
+    net between the buildings inside, a terminal in each loot room and shed, and edges through the doors.
+
+    ``scale`` multiplies the bounds in tiles of the field, the compound and the hangar (each rounded): a smaller base by
+    the same rules (the same level at 1, the one the docstring describes).
+    """
+    rng = np.random.default_rng(seed)
+
+    def tiles(low: int, high: int) -> int:  # a size in tiles drawn in [low, high) times ``scale``
+        return int(rng.integers(round(low * scale), round(high * scale)))
+
+    n, m = tiles(100, 111), tiles(90, 101)
+    walk = np.ones((n, m), dtype=bool)
+    walk[[0, -1], :] = walk[:, [0, -1]] = False
+    cw, cd = tiles(50, 61), tiles(40, 49)
+    ci0, cj0 = (n - cw) // 2 + int(rng.integers(-3, 4)), (m - cd) // 2 + int(rng.integers(-3, 4))
+    ci1, cj1 = ci0 + cw, cj0 + cd
+    inside = np.zeros_like(walk)
+    inside[ci0 + 1:ci1 - 1, cj0 + 1:cj1 - 1] = True
+    outside = walk.copy()
+    outside[ci0 - 3:ci1 + 3, cj0 - 3:cj1 + 3] = False  # sheds keep 3 tiles off the fence
+    walk[ci0:ci1, [cj0, cj1 - 1]] = False  # the fence
+    walk[[ci0, ci1 - 1], cj0:cj1] = False
+    for side in rng.choice(4, size=int(rng.integers(3, 5)), replace=False):  # the gates
+        if side < 2:
+            i = int(rng.integers(ci0 + 4, ci1 - 6))
+            walk[i:i + 2, cj0 if side == 0 else cj1 - 1] = True
+        else:
+            j = int(rng.integers(cj0 + 4, cj1 - 6))
+            walk[ci0 if side == 2 else ci1 - 1, j:j + 2] = True
+    for i, j in ((ci0 + 2, cj0 + 2), (ci0 + 2, cj1 - 4), (ci1 - 4, cj0 + 2), (ci1 - 4, cj1 - 4)):  # watchtowers
+        walk[i:i + 2, j:j + 2] = False
+    hw, hd = tiles(14, 17), tiles(10, 13)
+    for _ in range(40):  # the hangar first, then the buildings
+        i, j = int(rng.integers(ci0 + 4, ci1 - 4 - hw)), int(rng.integers(cj0 + 4, cj1 - 4 - hd))
+        if _tile_building(rng, walk, (i, i + hw, j, j + hd), 1, 3):
+            break
+    built = 0
+    for _ in range(200):
+        if built == 7:
+            break
+        w, d = int(rng.integers(7, 12)), int(rng.integers(6, 9))
+        i, j = int(rng.integers(ci0 + 4, ci1 - 4 - w)), int(rng.integers(cj0 + 4, cj1 - 4 - d))
+        built += _tile_building(rng, walk, (i, i + w, j, j + d), int(rng.integers(1, 3)))
+    sheds = 0
+    for _ in range(300):
+        if sheds == 12:
+            break
+        w, d = int(rng.integers(5, 7)), int(rng.integers(5, 7))
+        i, j = int(rng.integers(3, n - 3 - w)), int(rng.integers(3, m - 3 - d))
+        if outside[i - 2:i + w + 2, j - 2:j + d + 2].all():
+            sheds += _tile_building(rng, walk, (i, i + w, j, j + d), 1)
+    target = int(rng.integers(40, 61))
+    _tile_cover(rng, walk, target, 20 * target, 2, lambda box: True)
+    floor = np.where(walk, 0.0, np.nan)
+    floor[inside & walk] = 0.15  # the compound's yard, paved one step up
+    _tiles(s := _Solids(), floor, 2.0, 4.0)
+    return s.mesh()
+
+
+def king_of_hill(seed: int) -> trimesh.Trimesh:
+    """A king-of-the-hill map on 2 m tiles (:func:`_tiles`), 66-74 tiles square (132-148 m) inside rock walls: in the
+    middle a stepped hill of four square terraces 1.2 m apart (three times the climb: each edge a ledge one drops off but
+    cannot climb), each ring 5-6 tiles wide, round a capture point on the top (4.8 m up, 8-10 tiles square); each step
+    is climbed only by two ramps 2 tiles (4 m) wide on two different sides of it, three tiles of 0.3 m risers running
+    out from the step onto the ring below. Two spawn rooms (8 x 6 tiles behind a wall of rock with two openings 2 tiles
+    wide) at the middles of opposite walls; cover tiles (rock, 1 x 1 or 1 x 2) on every ring, the top and the field,
+    kept off the ramps and their approaches. Rock stands as walls 9 m high ridged at 50 degrees.
+
+    Expected (written before the first run): one area. Traffic highest on the field's ring round the hill's foot between
+    the two spawns (the way round is shorter than over the top) and at the spawns' openings, then on the first
+    terrace's ramps; the capture point and the upper rings low (a dead end for walking flow, however much a designer
+    wants players there). A designer expects the structure to show the rings as loops, each ramp as an edge between
+    two rings, a node or two on the top, and a chokepoint at each spawn's openings.
+    """
+    rng = np.random.default_rng(seed)
+    n = int(rng.integers(66, 75))
+    height = np.zeros((n, n))
+    walk = np.ones((n, n), dtype=bool)
+    walk[[0, -1], :] = walk[:, [0, -1]] = False
+    c = n // 2
+    radii = [int(rng.integers(4, 6))]  # half sizes of the top and then of each ring outwards
+    for _ in range(3):
+        radii.append(radii[-1] + int(rng.integers(5, 7)))
+    gi, gj = np.meshgrid(np.arange(n) - c, np.arange(n) - c, indexing="ij")
+    reach = np.maximum(np.abs(gi), np.abs(gj))
+    for k, r in enumerate(radii[::-1]):  # terrace k + 1 out to half size r
+        height[reach <= r] = 1.2 * (k + 1)
+    keep = np.zeros_like(walk)  # the ramps and their approaches, kept clear of cover
+    for step in range(4):  # the ramps up to terrace 4 - step (half size radii[step]), on the ring below
+        r = radii[step]
+        for side in rng.choice(4, size=2, replace=False):
+            along = int(rng.integers(-r + 1, r - 2))
+            for t in range(3):  # t = 0 the ramp's top tile, next to the step
+                out = r + 1 + t
+                tiles = [(c + out * (1 if side == 0 else -1), c + along + u) for u in (0, 1)] if side < 2 else \
+                    [(c + along + u, c + out * (1 if side == 2 else -1)) for u in (0, 1)]
+                for i, j in tiles:
+                    height[i, j] = 1.2 * (4 - step) - 0.3 * (t + 1)
+            lo = (c + (r + 1) * (1 if side in (0, 2) else -1), c + (r + 6) * (1 if side in (0, 2) else -1))
+            span = slice(min(lo) - 1, max(lo) + 2)
+            wide = slice(c + along - 2, c + along + 4)
+            if side < 2:
+                keep[span, wide] = True
+            else:
+                keep[wide, span] = True
+    for wall, rows in ((7, slice(1, 8)), (n - 8, slice(n - 8, n - 1))):  # the spawn rooms
+        walk[c - 5:c + 5, wall] = False
+        walk[[c - 5, c + 4], rows] = False
+        walk[c - 3:c - 1, wall] = walk[c + 1:c + 3, wall] = True
+        keep[c - 7:c + 7, max(rows.start - 2, 0):rows.stop + 2] = True
+    target = int(rng.integers(50, 71))
+    _tile_cover(rng, walk, target, 30 * target, 1, lambda box: not keep[box].any() and np.ptp(height[box]) == 0.0)
+    floor = np.where(walk, height, np.nan)
+    _tiles(s := _Solids(), floor, 2.0, 9.0)
+    return s.mesh()
+
+
+def favela(seed: int, along: tuple[int, int] = (84, 93)) -> trimesh.Trimesh:
+    """A favela on a hillside, on 2 m tiles (:func:`_tiles`), 84-92 tiles along x and 6-7 bands of 12 tiles up the
+    slope (z): each band an alley 3 tiles wide at 3 m a band up (the lowest the road) and above it a row of houses 9
+    tiles deep, 3-6 tiles wide, whose flat roofs are floor at the next alley's height (so the alley above runs out over
+    the roofs below it), each roof flush, a riser (0.3 m) lower or higher, or, one house in six, a taller house of rock
+    whose top is out of reach (ridged at 50 degrees); 2-3 stair lanes 2 tiles wide a band climb through the row of houses
+    from alley to alley in risers of 0.3 m a tile, and a water tank (rock, one tile) stands on one roof in five. The
+    houses' fronts are ledges 2.7-3.3 m high one drops off but cannot climb. Rock stands as walls 3 m over the top
+    alley, ridged at 50 degrees.
+
+    Expected (written before the first run): one area (each roof meets the alley above it). Traffic highest on the stair
+    lanes (the only ways up a band) and on the alleys between their heads and feet, lowest on roofs far from a stair and
+    in the corners of the road. A designer expects the structure to be a ladder: each alley-and-roofs plateau a chain or
+    net of nodes joined to the next by one edge up each stair lane; tanks and tall houses leave holes in the roof
+    plateaus that the structure loops round.
+
+    ``along`` bounds the tiles along x (low inclusive, high exclusive): a shorter hillside by the same rules (the same
+    level for the default, the one the docstring describes).
+    """
+    rng = np.random.default_rng(seed)
+    n, bands = int(rng.integers(*along)), int(rng.integers(6, 8))
+    m = 12 * bands + 5
+    floor = np.full((n, m), np.nan)
+    for b in range(bands + 1):
+        floor[1:n - 1, 12 * b + 1:12 * b + 4] = 3.0 * b  # the alleys
+    for b in range(bands):
+        rows = slice(12 * b + 4, 12 * b + 13)
+        i = 1
+        while i < n - 1:  # the row of houses
+            w = min(int(rng.integers(3, 7)), n - 1 - i)
+            kind = rng.random()
+            roof = np.nan if kind < 1 / 6 else 3.0 * (b + 1) + (0.3 if kind > 0.85 else -0.3 if kind > 0.7 else 0.0)
+            floor[i:i + w, rows] = roof
+            if not np.isnan(roof) and rng.random() < 0.2:
+                ti, tj = i + int(rng.integers(0, w)), 12 * b + int(rng.integers(5, 11))
+                floor[ti, tj] = np.nan
+            i += w
+        lanes = int(rng.integers(2, 4))
+        edges = np.linspace(2, n - 4, lanes + 1).astype(int)
+        for a, z in pairwise(edges):
+            i = int(rng.integers(a, max(a + 1, z - 2)))
+            for t in range(9):
+                floor[i:i + 2, 12 * b + 4 + t] = 3.0 * b + 0.3 * (t + 1)
+    _tiles(s := _Solids(), floor, 2.0, 3.0 * bands + 3.0)
+    return s.mesh()
+
+
+def _wall_line(s: _Solids, p: np.ndarray, q: np.ndarray, y0: float, y1: float, thickness: float,
+               gaps: list[tuple[float, float]]) -> None:
+    """A wall at any angle from plan point ``p`` (x, z) to ``q`` between heights y0 < y1, ``thickness`` m thick about
+    the line, open over each gap (start, width), metres from ``p`` along it: each piece between the gaps
+    (:func:`_pieces`) one prism."""
+    p, q = np.asarray(p, dtype=np.float64), np.asarray(q, dtype=np.float64)
+    length = float(np.linalg.norm(q - p))
+    along = (q - p) / length
+    side = np.array([-along[1], along[0]]) * thickness / 2
+    for c0, c1 in _pieces(0.0, length, gaps):
+        a, b = p + along * c0, p + along * c1
+        s.prism(np.array([a - side, b - side, b + side, a + side]), y0, y1)
+
+
+def _spire(s: _Solids, c: np.ndarray, radius: float, top: float) -> None:
+    """A hexagonal pyramid on the plan point ``c`` (x, z), ``radius`` m from its axis to its base's corners, from 0.5 m
+    under the floor at 0 up to its apex at ``top``: steep enough that nothing on it is floor when ``top`` is over 1.2
+    times ``radius``."""
+    base = [c + radius * np.array([math.cos(math.radians(60 * k)), math.sin(math.radians(60 * k))]) for k in range(6)]
+    s.hull(np.array([[p[0], y, p[1]] for p in base for y in (-0.5, 0.0)] + [[c[0], top, c[1]]]))
+
+
+def hive(seed: int, columns: tuple[int, int] = (9, 11)) -> trimesh.Trimesh:
+    """An alien hive of hexagonal cells (flat-topped, 7 m from centre to corner, walls 0.3 m thick and 3.5 m high, so
+    every wall but those along x runs at 60 degrees to them), 9-10 columns of 7-8 cells, each cell a floor
+    of its own (a hexagonal slab: no floor outside the hive). Neighbouring cells are joined along a random spanning tree
+    of the cells plus a quarter of the other neighbour pairs by a doorway 2.2 m wide in the middle of their shared
+    wall; the cell nearest the middle and its six neighbours are one chamber (the queen's, no walls between them) round
+    a pillar (:func:`_spire`). In other cells: with probability 0.35 a pod (a hexagonal pyramid 2 m from its axis to its base's
+    corners, 5 m high, too steep to stand on) in the middle, else with probability 0.4 a cluster of 3-6 eggs (rocks 0.6-1.4 m high) off the
+    middle. Two entrances, doorways in the outer wall of a westmost cell (facing north-west) and an eastmost cell (facing
+    south-east), onto a landing outside each.
+
+    Expected (written before the first run): one area. Traffic highest in the queen's chamber and on the spanning tree's
+    cells that join big subtrees (cut cells near the middle), lowest in dead-end cells at the rim. A designer expects one
+    structure node in each cell (more round a pod), an edge through each doorway, loops where the extra doorways close
+    them, and no node in a doorway; walls at 60 degrees should read as well as those along the axes.
+
+    ``columns`` bounds the columns of cells (low inclusive, high exclusive): a narrower hive by the same rules (the same
+    level for the default, the one the docstring describes).
+    """
+    rng = np.random.default_rng(seed)
+    cols, rows, radius = int(rng.integers(*columns)), int(rng.integers(7, 9)), 7.0
+    centres = {(q, r): np.array([1.5 * radius * q, math.sqrt(3.0) * radius * (r + 0.5 * (q % 2))])
+               for q in range(cols) for r in range(rows)}
+    corner = [radius * np.array([math.cos(math.radians(60 * k)), math.sin(math.radians(60 * k))]) for k in range(6)]
+    s = _Solids()
+    for c in centres.values():
+        s.prism(np.array([c + v for v in corner]), -0.5, 0.0)
+    middle = np.mean(list(centres.values()), axis=0)
+    queen = min(centres, key=lambda k: float(np.linalg.norm(centres[k] - middle)))
+    keys = list(centres)
+    index = {k: i for i, k in enumerate(keys)}
+    at = {tuple(np.round(c, 3)): k for k, c in centres.items()}
+    edges: dict[tuple[int, int], tuple[int, int]] = {}  # (cell, neighbour; -1 - side outside) -> (cell, side)
+    for k in keys:
+        for e in range(6):  # the wall between corners e and e + 1 faces the direction 60 e + 30 degrees
+            other = at.get(tuple(np.round(centres[k] + corner[e] + corner[(e + 1) % 6], 3)))
+            if other is None:
+                edges[index[k], -1 - e] = (index[k], e)
+            elif index[other] > index[k]:
+                edges[index[k], index[other]] = (index[k], e)
+    near = [(a, b) for a, b in edges if b >= 0]
+    weights = rng.uniform(1.0, 2.0, len(near))
+    graph = sp.coo_matrix((weights, ([a for a, _ in near], [b for _, b in near])), shape=(len(keys),) * 2)
+    tree = {tuple(sorted(p)) for p in zip(*minimum_spanning_tree(graph.tocsr()).nonzero())}
+    open_pairs = {p for p in near if tuple(sorted(p)) in tree or rng.random() < 0.25}
+    chamber = {index[queen]} | {b if a == index[queen] else a for a, b in near if index[queen] in (a, b)}
+    west = min(keys, key=lambda k: (centres[k][0], abs(k[1] - rows // 2)))
+    east = max(keys, key=lambda k: (centres[k][0], -abs(k[1] - rows // 2)))
+    entrances = {(index[west], -1 - 2), (index[east], -1 - 5)}
+    for (a, b), (cell, e) in edges.items():
+        if a in chamber and b in chamber:
+            continue
+        p, q = centres[keys[cell]] + corner[e], centres[keys[cell]] + corner[(e + 1) % 6]
+        gaps = [(radius / 2 - 1.1, 2.2)] if (a, b) in open_pairs or (a, b) in entrances else []
+        _wall_line(s, p, q, -0.5, 3.5, 0.3, gaps)
+    for key in (west, east):  # landings outside the entrances
+        e = 2 if key == west else 5
+        c = centres[key]
+        out = (corner[e] + corner[(e + 1) % 6]) / np.linalg.norm(corner[e] + corner[(e + 1) % 6])
+        mid = c + (corner[e] + corner[(e + 1) % 6]) / 2
+        along = np.array([-out[1], out[0]])
+        s.prism(np.array([mid - along * 3, mid + along * 3, mid + along * 3 + out * 6, mid - along * 3 + out * 6]),
+                -0.5, 0.0)
+    _spire(s, centres[queen], 1.75, 8.0)  # the queen's pillar
+    for k in keys:
+        if index[k] in chamber:
+            continue
+        c = centres[k]
+        if rng.random() < 0.35:
+            _spire(s, c, 2.0, 5.0)
+        elif rng.random() < 0.4:
+            spot = c + rng.uniform(-2.5, 2.5, 2)
+            for _ in range(int(rng.integers(3, 7))):
+                s.rock(rng, spot + rng.normal(0.0, 0.6, 2), 0.3, -0.2, rng.uniform(0.6, 1.4))
+    return s.mesh()
+
+
+def tavern(seed: int, wide: tuple[int, int] = (54, 61)) -> trimesh.Trimesh:
+    """A tavern's interior and its yard: an inn 54-60 x 24-28 m (walls 0.3 m thick, floors 0.15 m over the street) of
+    three storeys 3.6 m apart under a gable (:func:`_gable`), standing in a yard 14 m wide all round. On the ground
+    floor the taproom (the front 18-22 m of the house): 26-34 groups of a table (0.75 m high) between two benches (0.45
+    m, over the climb) 1.3 m or more apart, a hearth, and a bar counter 1.1 m high from the west wall with room behind it
+    (2 m to the shelves, 2.45 m to the wall) entered round its east end; behind the taproom's back wall a kitchen (door
+    from behind the bar, a back door to the yard, a flight down through its floor to a cellar 3 m below under the
+    kitchen and the taproom's back, with barrels) and a snug (door from the taproom, furniture). The front door is 2 m
+    wide. On each upper storey a gallery 3-5 m wide round a well over the taproom open to the roof (rails 1.1 m round
+    it); two flights (1.6 m wide, 20 risers of 0.18 m) climb the east wall one beyond the other, ground to first storey
+    and first to second, and off each gallery 8-12 bedrooms along the back and 3-4 along the west side open by doors 1.6
+    m wide (lintels 2.3 m up, :func:`_doored_wall`), each with furniture (:func:`_furnish`).
+
+    Expected (written before the first run): one area (no table top nor counter holds floor after the agent's radius).
+    Traffic highest on the taproom's floor between the front door, the bar's end and the foot of the stair, and on the
+    flights and the galleries' east sides; the bedrooms, the cellar and the snug lowest. A designer expects the
+    structure to show the taproom as a net round the table groups, each flight as one edge up to a loop round its
+    gallery, a terminal in each bedroom, and a chain down to the cellar through the kitchen.
+
+    ``wide`` bounds the inn's width in metres (low inclusive, high exclusive): a narrower inn by the same rules (the same
+    level for the default, the one the docstring describes).
+    """
+    rng = np.random.default_rng(seed)
+    width, depth = float(rng.integers(*wide)), float(rng.integers(24, 29))
+    ground, uppers, roof = 0.15, (3.75, 7.35), 10.95
+    upper = uppers[0]
+    back = depth - 6.0  # the taproom's back wall
+    s = _Solids()
+    s.ground(-14.0, width + 14.0, -14.0, depth + 14.0, 0.0, [(0.0, width, 0.0, depth)])
+    cellar_holes: list[tuple[float, float, float, float]] = []
+    kitchen_x = float(rng.integers(14, 18))
+    _flight_through(s, np.array([kitchen_x - 2.0, depth - 1.2]), np.array([-1.0, 0.0]), 1.4, ground - 3.0, ground,
+                    cellar_holes)
+    s.slab(0.0, width, 0.0, depth, ground, cellar_holes)
+    s.box(0.0, kitchen_x, ground - 3.5, ground - 3.0, back - 6.0, depth)  # the cellar's floor and its walls
+    for a, b in (((0.0, back - 6.0), (kitchen_x, back - 6.0)), ((0.0, depth), (kitchen_x, depth)),
+                 ((0.0, back - 6.0), (0.0, depth)), ((kitchen_x, back - 6.0), (kitchen_x, depth))):
+        s.wall(a, b, ground - 3.5, ground - 0.3, thickness=0.3)
+    for _ in range(int(rng.integers(6, 11))):  # barrels
+        p = np.array([rng.uniform(0.8, kitchen_x - 0.8), rng.uniform(back - 5.2, back - 2.0)])
+        s.prism(p + 0.45 * np.array([[math.cos(a), math.sin(a)] for a in np.linspace(0, 2 * math.pi, 9)[:-1]]),
+                ground - 3.1, ground - 3.0 + 1.0)
+    well = (8.0, width - 5.0, 3.5, back - 3.0)
+    stair = (0.0, 0.0, 0.0, 0.0)
+    for k, (y0, y1) in enumerate(pairwise((ground, *uppers))):  # flights up the east wall, the second beyond the first
+        holes = [well]
+        flight = _flight_through(s, np.array([width - 1.0, 2.5 + 8.0 * k]), np.array([0.0, 1.0]), 1.6, y0, y1, holes)
+        stair = flight if k == 0 else stair
+        s.slab(0.0, width, 0.0, depth, y1, holes)
+        _rail_ring(s, *well, y1, {})
+    front = float(rng.uniform(8.0, width - 12.0))
+    _doored_wall(s, (0.0, 0.0), (width, 0.0), ground, roof, [(front, 2.0, "open", 1)], 0.3)
+    _doored_wall(s, (0.0, depth), (width, depth), ground, roof, [(2.0, 1.6, "open", 1)], 0.3)
+    for x in (0.0, width):
+        s.wall((x, 0.0), (x, depth), ground - 0.5, roof, thickness=0.3)
+    _doored_wall(s, (0.0, back), (width, back), ground, upper, [(4.0, 1.6, "open", 1), (kitchen_x + 4.0, 1.6, "open", 1)])
+    s.wall((kitchen_x, back), (kitchen_x, depth), ground - 0.5, upper)
+    bar_end = kitchen_x - 3.0
+    s.box(0.0, bar_end, ground - 0.1, ground + 1.1, back - 3.1, back - 2.5)  # the counter
+    s.box(6.2, bar_end - 1.0, ground - 0.1, ground + 2.0, back - 0.5, back - 0.15)  # the shelves behind it
+    s.box(0.15, 0.95, ground - 0.1, ground + 1.4, 5.0, 7.4)  # the hearth
+    _furnish(s, rng, (kitchen_x + 0.15, width - 0.15, back + 0.1, depth - 0.15), ground, [(kitchen_x + 3.5, kitchen_x + 6.5, back, back + 1.5)], 4)
+    _furnish(s, rng, (0.15, kitchen_x - 0.1, back + 0.1, depth - 0.15), ground,
+             [(0.0, 6.5, back, back + 1.5), (1.5, 4.0, depth - 1.5, depth), (kitchen_x - 8.5, kitchen_x, depth - 2.3, depth)], 3)
+    taken = [(0.0, bar_end + 1.6, back - 4.6, back), (width - 2.6, width, 0.0, stair[3] + 1.6), (front - 1.0, front + 3.0, 0.0, 3.0),
+             (0.0, 1.6, 4.4, 8.0)]
+    groups = 0
+    for _ in range(600):
+        if groups == int(rng.integers(26, 35)):
+            break
+        gx, gz = rng.uniform(1.5, width - 4.0), rng.uniform(1.2, back - 4.0)
+        if _clear(gx - 0.65, gx + 1.4 + 0.65, gz - 0.65, gz + 1.9 + 0.65, taken):
+            taken.append((gx - 0.65, gx + 1.4 + 0.65, gz - 0.65, gz + 1.9 + 0.65))
+            s.box(gx, gx + 1.4, ground - 0.1, ground + 0.45, gz, gz + 0.35)
+            s.box(gx, gx + 1.4, ground - 0.1, ground + 0.75, gz + 0.55, gz + 1.35)
+            s.box(gx, gx + 1.4, ground - 0.1, ground + 0.45, gz + 1.55, gz + 1.9)
+            groups += 1
+    for y0, y1 in pairwise((*uppers, roof)):  # bedrooms on each upper storey
+        rooms = _split(5.0, width, float(rng.uniform(4.6, 6.0)))  # along the back, the first reaching to x = 0
+        doors = [(a + b) / 2 for a, b in pairwise(rooms)]
+        _doored_wall(s, (0.0, back), (width, back), y0, y1, [(x - 0.8, 1.6, "open", 1) for x in doors])
+        for x in rooms[1:-1]:
+            s.wall((x, back), (x, depth), y0 - 0.5, y1)
+        rooms[0] = 0.0
+        side = _split(0.0, back, 6.0)
+        _doored_wall(s, (5.0, 0.0), (5.0, back), y0, y1, [(a + (b - a) / 2 - 0.8, 1.6, "open", -1) for a, b in pairwise(side)])
+        for z in side[1:-1]:
+            s.wall((0.0, z), (5.0, z), y0 - 0.5, y1)
+        for (a, b), x in zip(pairwise(rooms), doors):
+            _furnish(s, rng, (a + 0.1, b - 0.1, back + 0.1, depth - 0.15), y0, [(x - 1.3, x + 1.3, back, back + 1.5)], 2)
+        for a, b in pairwise(side):
+            _furnish(s, rng, (0.15, 4.9, a + 0.1, b - 0.1), y0, [(3.5, 5.0, (a + b) / 2 - 1.3, (a + b) / 2 + 1.3)], 2)
+    _gable(s, -0.3, width + 0.3, -0.3, depth + 0.3, roof)
+    return s.mesh()
+
+
+def _western_row(s: _Solids, rng: np.random.Generator, length: float, north: bool,
+                 yards: list[tuple[float, float, float, float]]) -> None:
+    """One side of the western town's street (:func:`western_town`): buildings along x from 0 to ``length``, their
+    fronts 13 m from the street's axis on the ``north`` (+z) or south side, each adding its plan to ``yards`` (holes
+    for the ground)."""
+    sign = 1.0 if north else -1.0
+
+    def z_of(a: float, b: float) -> tuple[float, float]:  # distances a < b from the axis -> z0 < z1 on this side
+        return (a, b) if north else (-b, -a)
+
+    floor, upper, roof = 0.3, 3.8, 7.4
+    x, previous_upper = 2.0, None
+    while x < length - 10.0:
+        w, d = float(rng.integers(8, 13)), float(rng.integers(10, 13))
+        two = rng.random() < 0.6
+        z0, z1 = z_of(13.0, 13.0 + d)
+        yards.append((x, x + w, z0, z1))
+        s.box(x, x + w, floor - 0.5, floor, z0, z1)
+        bz0, bz1 = z_of(10.0, 13.0)
+        s.box(x, x + w, floor - 0.5, floor, bz0, bz1)  # the boardwalk
+        top = upper if two else floor + 3.6
+        front, back = (z0, z1) if north else (z1, z0)
+        _doored_wall(s, (x, front), (x + w, front), floor, top, [(w / 2 - 0.9, 1.8, "open", 1)], 0.25)
+        _doored_wall(s, (x, back), (x + w, back), floor, roof if two else top, [(1.0, 1.6, "open", 1)], 0.25)
+        for wx in (x, x + w):
+            s.wall((wx, z0), (wx, z1), floor - 0.5, roof if two else top, thickness=0.25)
+        if two:
+            holes: list[tuple[float, float, float, float]] = []
+            _flight_through(s, np.array([x + w - 1.2, front + sign * 1.5]), np.array([0.0, sign]), 2.0, floor, upper, holes)
+            s.slab(x, x + w, z0, z1, upper, holes)
+            _doored_wall(s, (x, front), (x + w, front), upper, roof, [(w / 2 - 0.8, 1.6, "open", 1)], 0.25)
+            s.box(x, x + w, upper - 0.3, upper, bz0, bz1)  # the balcony over the boardwalk, railed at its front
+            s.wall((x, 10.0 * sign), (x + w, 10.0 * sign), upper, upper + 1.1, thickness=0.1)
+            if previous_upper is not None and previous_upper < x:  # a bridge over the alley from the last balcony
+                s.box(previous_upper, x, upper - 0.3, upper, bz0, bz1)
+                s.wall((previous_upper, 10.0 * sign), (x, 10.0 * sign), upper, upper + 1.1, thickness=0.1)
+                if rng.random() < 0.7:  # a flight up the alley onto the bridge, arriving head-on at its back
+                    _flight_to(s, np.array([(previous_upper + x) / 2, 13.0 * sign]), np.array([0.0, -sign]), 2.0, 0.0,
+                               upper)
+            previous_upper = x + w
+        else:
+            previous_upper = None
+        _gable(s, x - 0.2, x + w + 0.2, z0 - 0.2, z1 + 0.2, roof if two else top)
+        x += w + (float(rng.uniform(3.5, 5.0)) if rng.random() < 0.6 else 0.0)
+
+
+def western_town(seed: int, street: tuple[int, int] = (130, 151)) -> trimesh.Trimesh:
+    """A western town's main street 20 m wide and 130-150 m long between two rows of buildings (:func:`_western_row`),
+    each 8-12 m wide and 10-12 m deep, one house after another or across alleys 3.5-5 m wide (six in ten): each on a
+    boardwalk 3 m deep and 0.3 m up (one step) along its front, entered by a front door 1.8 m wide and a back door to the
+    yards behind; three in five have an upper storey (3.8 m up), reached inside by a flight 2 m wide (risers of at most
+    0.18 m) up the east wall, whose front door opens onto a balcony over the boardwalk (railed, 1.1 m): balconies of
+    neighbours meet, or over an alley by a bridge, seven in ten of those bridges reached by a flight 2 m wide up the
+    alley. Roofs are gables at 50 degrees (:func:`_gable`); the ground runs 17 m past the rows into the yards, with up to
+    4-6 corrals 12 x 10 m, 3 m or more apart (rails 1.1 m high, a gate 2 m wide facing the rows), and 10-16 water troughs
+    and covered wagons (0.9-1.6 m high, ridged at 50 degrees, :func:`_ridged`) on the street off its middle.
+
+    Expected (written before the first run): one area. Traffic highest along the street's middle and at the alley
+    mouths, then on the boardwalks; the balconies, the upper rooms and the corrals lowest; the alleys with flights
+    middling (they join the yards, the street and the balconies). A designer expects the structure to show the street
+    as a chain or net, an edge through each alley to a loop round the rows by the yards, the balconies as chains joined
+    down each alley flight and inside stair, and a terminal in each upper room.
+
+    ``street`` bounds the street's length in metres (low inclusive, high exclusive): a shorter town by the same rules
+    (the same level for the default, the one the docstring describes).
+    """
+    rng = np.random.default_rng(seed)
+    length = float(rng.integers(*street))
+    s = _Solids()
+    yards: list[tuple[float, float, float, float]] = []
+    _western_row(s, rng, length, True, yards)
+    _western_row(s, rng, length, False, yards)
+    corrals: list[tuple[float, float, float, float]] = []
+    for _ in range(40):  # corrals in the yards, 3 m or more apart
+        if len(corrals) == int(rng.integers(4, 7)):
+            break
+        x0, north = float(rng.uniform(4.0, length - 20.0)), rng.random() < 0.5
+        z0 = 30.0 if north else -40.0
+        if _clear(x0 - 3.0, x0 + 15.0, z0, z0 + 10.0, corrals):
+            corrals.append((x0, x0 + 12.0, z0, z0 + 10.0))
+            _rail_ring(s, x0, x0 + 12.0, z0, z0 + 10.0, 0.0, {"south" if north else "north": [(5.0, 2.0)]})
+    for _ in range(int(rng.integers(10, 17))):  # troughs and covered wagons on the street, off its middle, ridged
+        x0, z0 = float(rng.uniform(4.0, length - 6.0)), float(rng.choice([-8.0, 5.5]))
+        _ridged(s, x0, x0 + float(rng.uniform(1.8, 3.5)), z0, z0 + 2.5, -0.5, float(rng.uniform(0.9, 1.6)))
+    s.ground(-5.0, length + 5.0, -42.0, 42.0, 0.0, yards)
+    return s.mesh()
+
+
 KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
     "subway": subway, "archipelago": archipelago, "car_park": car_park,
     "forest": forest, "stadium": stadium, "harbour": harbour,
@@ -10872,6 +11417,8 @@ KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
     "diagonal_dungeon": diagonal_dungeon, "battle_royale": battle_royale, "arena_shooter": arena_shooter,
     "stealth_mansion": stealth_mansion, "defusal": defusal, "payload": payload, "metroidvania": metroidvania,
     "tower_defence": tower_defence, "hub_world": hub_world,
+    "tavern": tavern, "military_base": military_base, "king_of_hill": king_of_hill, "favela": favela, "hive": hive,
+    "western_town": western_town,
 }
 """Kind name -> generator (seed -> Y-up mesh in metres)."""
 
