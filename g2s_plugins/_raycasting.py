@@ -885,8 +885,9 @@ def _slices_meet_bands(triangles: np.ndarray, origin: np.ndarray, along: np.ndar
     The triangle's corners in the frame (s, t, d) of the parallelogram (metres along ``along``, ``side`` and their
     normal) give the segment where it crosses d = 0: from the edge joining the corners of least and greatest d, to
     the edge of the middle corner on the other side. It passes through only with corners more than ``inset`` to
-    both sides (a box whose top lies in the plane, as a floor rising beside the walk, does not). A Liang-Barsky
-    clip of that segment against the shrunk rectangle follows. O(k).
+    both sides: the side of a box whose top lies in the plane does not, as the side lines skimming that walkable
+    top are not stopped. Then the segment is clipped against the shrunk rectangle (Y.-D. Liang and B. A. Barsky,
+    "A new concept and method for line clipping", ACM Transactions on Graphics 3(1), 1984). O(k).
     """
     normal = np.cross(along, side)
     length, width = np.linalg.norm(along, axis=1), np.linalg.norm(side, axis=1)
@@ -939,8 +940,8 @@ def bands_meet_walls(caster: RayCaster, low: np.ndarray, along: np.ndarray, side
     origin = np.minimum(band_lo.min(axis=0), wall_lo.min(axis=0))
     cell = max(float(np.median(band_hi - band_lo, axis=0)[[0, 2]].max()), 1e-3)
     while True:
-        band_first, band_last = np.floor((band_lo - origin) / cell).astype(np.int64), np.floor((band_hi - origin) / cell).astype(np.int64)
-        wall_first, wall_last = np.floor((wall_lo - origin) / cell).astype(np.int64), np.floor((wall_hi - origin) / cell).astype(np.int64)
+        band_first, band_last = (np.floor((corner - origin) / cell).astype(np.int64) for corner in (band_lo, band_hi))
+        wall_first, wall_last = (np.floor((corner - origin) / cell).astype(np.int64) for corner in (wall_lo, wall_hi))
         if int(np.prod(wall_last - wall_first + 1, axis=1).sum()) <= MAX_FLOOR_CELL_ENTRIES:
             break
         cell *= 2.0
@@ -954,7 +955,8 @@ def bands_meet_walls(caster: RayCaster, low: np.ndarray, along: np.ndarray, side
         across, up = spans[owner, 2], spans[owner, 1] * spans[owner, 2]
         i, j, m = first[owner, 0] + k // up, first[owner, 1] + k % up // across, first[owner, 2] + k % across
         key = (i * shape[1] + j) * shape[2] + m
-        return sparse.csr_array((np.ones(len(owner), dtype=np.int32), (owner, key)), shape=(len(first), int(np.prod(shape))))
+        cells = int(np.prod(shape))
+        return sparse.csr_array((np.ones(len(owner), dtype=np.int32), (owner, key)), shape=(len(first), cells))
 
     shared = (cells_of(band_first, band_last) @ cells_of(wall_first, wall_last).T).tocoo()
     band, wall = shared.row.astype(np.int64), shared.col.astype(np.int64)
@@ -1075,7 +1077,8 @@ def walk_segments(
     # lines, tested exactly, where every other test passed.
     rows = np.flatnonzero(sideways)
     clear = ok[rows]
-    ok[rows[clear]] = ~bands_meet_walls(caster, low[rows[clear]], vectors[rows[clear]], side[clear], agent.max_slope_deg)
+    rows = rows[clear]
+    ok[rows] = ~bands_meet_walls(caster, low[rows], vectors[rows], side[clear], agent.max_slope_deg)
     rise = np.maximum.reduceat(np.concatenate([dy, [0.0]]), first)
     rise[~has_ground] = np.inf
     return ok, rise

@@ -84,7 +84,8 @@ def opening_with_post(slot: float, post: float) -> trimesh.Trimesh:
 
 
 @pytest.mark.parametrize("slot, post, joined", [(0.8, 0.2, False), (0.8, 0.1, False), (1.4, 0.2, True)])
-def test_a_post_between_the_edge_lines_splits_slots_narrower_than_the_agent(slot: float, post: float, joined: bool) -> None:
+def test_a_post_between_the_edge_lines_splits_slots_narrower_than_the_agent(slot: float, post: float,
+                                                                             joined: bool) -> None:
     # Before the band test the 0.8 m slots' grid edges passed the post between two of their lines 0.45 m apart:
     # one area (docs/sampling.md, "A post between the edge's lines").
     assert rooms_joined(opening_with_post(slot, post)) is joined
@@ -101,9 +102,9 @@ def test_the_band_test_finds_a_post_that_no_line_meets() -> None:
         assert caster.first_hits(lifted + [0.0, 0.0, offset], along).distance[0] > 2.0
     assert bands_meet_walls(caster, lifted, along, side, 45.0).tolist() == [True]
     assert walk_segments(caster, starts, ends, agent, 0.25, half_width=0.45)[0].tolist() == [False]
-    assert walk_segments(caster, starts + [0, 0, 2.0], ends + [0, 0, 2.0], agent, 0.25, half_width=0.45)[0].tolist() == [False]
-    clear = starts + [0.0, 0.0, 3.0], ends + [0.0, 0.0, 3.0]  # through the wall: the lines find it
-    assert bands_meet_walls(caster, clear[0] + [0.0, 1.0, 0.0], along, side, 45.0).tolist() == [True]
+    through_wall = starts + [0.0, 0.0, 3.0], ends + [0.0, 0.0, 3.0]  # the lines find the wall, and so does the band
+    assert walk_segments(caster, *through_wall, agent, 0.25, half_width=0.45)[0].tolist() == [False]
+    assert bands_meet_walls(caster, through_wall[0] + [0.0, 1.0, 0.0], along, side, 45.0).tolist() == [True]
     # along the wall in the west room, the band's near side 0.5 m from its face
     beside, north, east = np.array([[-1.0, 1.0, -3.0]]), np.array([[0.0, 0.0, 2.0]]), np.array([[0.4, 0.0, 0.0]])
     assert bands_meet_walls(caster, beside, north, east, 45.0).tolist() == [False]
