@@ -876,6 +876,97 @@ def crack_sides(agent: AgentShape) -> list[np.ndarray]:
     return list(_CRACK_AXES * (agent.radius / 8.0))
 
 
+def _slices_meet_bands(triangles: np.ndarray, origin: np.ndarray, along: np.ndarray, side: np.ndarray,
+                       inset: float) -> np.ndarray:
+    """(k,) bool: triangle ``triangles[i]`` ((k, 3, 3) corners, m) passes through the parallelogram ``origin[i] +
+    s along[i] + t side[i]`` (s in (0, 1), t in (-1, 1); ``along`` and ``side`` (k, 3) at right angles), shrunk by
+    ``inset`` (m) on every side.
+
+    The triangle's corners in the frame (s, t, d) of the parallelogram (metres along ``along``, ``side`` and their
+    normal) give the segment where it crosses d = 0: from the edge joining the corners of least and greatest d, to
+    the edge of the middle corner on the other side. It passes through only with corners more than ``inset`` to
+    both sides: the side of a box whose top lies in the plane does not, as the side lines skimming that walkable
+    top are not stopped. Then the segment is clipped against the shrunk rectangle (Y.-D. Liang and B. A. Barsky,
+    "A new concept and method for line clipping", ACM Transactions on Graphics 3(1), 1984). O(k).
+    """
+    normal = np.cross(along, side)
+    length, width = np.linalg.norm(along, axis=1), np.linalg.norm(side, axis=1)
+    axes = np.stack([along / length[:, None], side / width[:, None],
+                     normal / np.linalg.norm(normal, axis=1, keepdims=True)], axis=1)  # (k, 3 axes, 3)
+    frame = np.einsum("kcj,kaj->kca", triangles - origin[:, None, :], axes)  # (k, 3 corners, metres along each axis)
+    frame = np.take_along_axis(frame, np.argsort(frame[:, :, 2], axis=1)[:, :, None], axis=1)
+    low, middle, high = frame[:, 0], frame[:, 1], frame[:, 2]
+    crossing = (low[:, 2] < -inset) & (high[:, 2] > inset)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        start = (low + (high - low) * (-low[:, 2] / (high[:, 2] - low[:, 2]))[:, None])[:, :2]
+        beyond = middle[:, 2] >= 0.0  # the middle corner on the high side: the other end lies on the low-middle edge
+        first, second = np.where(beyond[:, None], low, middle), np.where(beyond[:, None], middle, high)
+        end = (first + (second - first) * (-first[:, 2] / (second[:, 2] - first[:, 2]))[:, None])[:, :2]
+    step = end - start
+    enter, leave = np.zeros(len(triangles)), np.ones(len(triangles))
+    for axis, (lowest, highest) in enumerate([(inset, length - inset), (inset - width, width - inset)]):
+        with np.errstate(divide="ignore", invalid="ignore"):
+            u_low, u_high = (lowest - start[:, axis]) / step[:, axis], (highest - start[:, axis]) / step[:, axis]
+        flat = step[:, axis] == 0.0
+        enter = np.where(flat, enter, np.maximum(enter, np.minimum(u_low, u_high)))
+        leave = np.where(flat, leave, np.minimum(leave, np.maximum(u_low, u_high)))
+        crossing &= ~flat | ((start[:, axis] > lowest) & (start[:, axis] < highest))
+    return crossing & (enter < leave)
+
+
+def bands_meet_walls(caster: RayCaster, low: np.ndarray, along: np.ndarray, side: np.ndarray,
+                     max_slope_deg: float, inset: float = GRAZE_NUDGE) -> np.ndarray:
+    """(n,) bool: a triangle of the caster's mesh steeper than ``max_slope_deg`` passes through the band ``low[i] +
+    s along[i] + t side[i]`` (s in (0, 1), t in (-1, 1), shrunk by ``inset`` m on every side; ``side`` horizontal
+    and at right angles to ``along``, all (n, 3) m): the strip a disk of radius ``|side|`` sweeps at the lifted
+    segment's height, tested exactly, so that a post or a mullion standing wholly between two of
+    :func:`walk_segments`' lines is found however thin it is. Walkable triangles are left out, as the side lines
+    leave them.
+
+    Broad phase: the boxes of the bands and of the steep triangles on a 3-D grid (cells as large as the bands'
+    median box in plan, doubled while the triangles would fill more than ``MAX_FLOOR_CELL_ENTRIES`` cells; a
+    sparse product gives the pairs sharing a cell), then their boxes; narrow phase :func:`_slices_meet_bands`
+    (:class:`OpenFloors` uses the same grid and product in 2-D). O(cells the boxes cover + pairs sharing a cell).
+    """
+    n = len(low)
+    meets = np.zeros(n, dtype=bool)
+    steep = np.nonzero(~caster.walkable_faces(np.arange(len(caster.triangles)), max_slope_deg))[0]
+    if n == 0 or len(steep) == 0:
+        return meets
+    corners = np.stack([low - side, low + side, low + along + side, low + along - side], axis=1)
+    band_lo, band_hi = corners.min(axis=1), corners.max(axis=1)
+    walls = caster.triangles[steep]
+    wall_lo, wall_hi = walls.min(axis=1), walls.max(axis=1)
+    origin = np.minimum(band_lo.min(axis=0), wall_lo.min(axis=0))
+    cell = max(float(np.median(band_hi - band_lo, axis=0)[[0, 2]].max()), 1e-3)
+    while True:
+        band_first, band_last = (np.floor((corner - origin) / cell).astype(np.int64) for corner in (band_lo, band_hi))
+        wall_first, wall_last = (np.floor((corner - origin) / cell).astype(np.int64) for corner in (wall_lo, wall_hi))
+        if int(np.prod(wall_last - wall_first + 1, axis=1).sum()) <= MAX_FLOOR_CELL_ENTRIES:
+            break
+        cell *= 2.0
+    shape = np.maximum(band_last.max(axis=0), wall_last.max(axis=0)) + 1
+
+    def cells_of(first: np.ndarray, last: np.ndarray) -> sparse.csr_array:
+        spans = last - first + 1
+        total = np.prod(spans, axis=1)
+        owner = np.repeat(np.arange(len(first)), total)
+        k = np.arange(int(total.sum())) - np.repeat(np.cumsum(total) - total, total)
+        across, up = spans[owner, 2], spans[owner, 1] * spans[owner, 2]
+        i, j, m = first[owner, 0] + k // up, first[owner, 1] + k % up // across, first[owner, 2] + k % across
+        key = (i * shape[1] + j) * shape[2] + m
+        cells = int(np.prod(shape))
+        return sparse.csr_array((np.ones(len(owner), dtype=np.int32), (owner, key)), shape=(len(first), cells))
+
+    shared = (cells_of(band_first, band_last) @ cells_of(wall_first, wall_last).T).tocoo()
+    band, wall = shared.row.astype(np.int64), shared.col.astype(np.int64)
+    near = np.all((band_lo[band] <= wall_hi[wall]) & (wall_lo[wall] <= band_hi[band]), axis=1)
+    band, wall = band[near], wall[near]
+    hit = _slices_meet_bands(walls[wall], low[band], along[band], side[band], inset)
+    meets[band[hit]] = True
+    return meets
+
+
 def walk_segments(
     caster: RayCaster,
     starts: np.ndarray,
@@ -893,11 +984,12 @@ def walk_segments(
     * the segment lifted by half the agent height crosses no triangle, nor,
       with ``half_width`` (metres, > 0), do its two copies moved by
       ``half_width`` to either side, horizontally at right angles to it: a
-      disk that wide travels along it through no wall, jamb or pillar (at
-      that height, a solid meets the band the disk sweeps between the two
-      ends exactly when it meets one of the three lines or lies wholly
-      between two of them: one narrower than ``half_width`` is missed; the
-      ends' own disks are the caller's to check);
+      disk that wide travels along it through no wall, jamb or pillar; and,
+      as a solid narrower than ``half_width`` can stand wholly between two of
+      the lines (a post, a mullion), no triangle steeper than the agent's
+      max slope passes through the band between the side lines
+      (:func:`bands_meet_walls`, exact; asked only where every other test
+      passed). The ends' own disks are the caller's to check;
     * under evenly spaced points along it (at most ``probe_step`` apart
       horizontally, both ends included) a short downward ray from the lifted
       segment finds ground no more than ``max_climb + margin`` below the
@@ -981,6 +1073,12 @@ def walk_segments(
     dh = np.repeat(horizontal / intervals, counts)[1:]
     steep = np.concatenate([dy > agent.max_rise(dh) + 1e-6, [False]])
     ok &= ~np.logical_or.reduceat(steep, first)
+    # A solid wholly between two of the lines (a post, a mullion) meets none of them: the band between the side
+    # lines, tested exactly, where every other test passed.
+    rows = np.flatnonzero(sideways)
+    clear = ok[rows]
+    rows = rows[clear]
+    ok[rows] = ~bands_meet_walls(caster, low[rows], vectors[rows], side[clear], agent.max_slope_deg)
     rise = np.maximum.reduceat(np.concatenate([dy, [0.0]]), first)
     rise[~has_ground] = np.inf
     return ok, rise

@@ -9,7 +9,7 @@ import trimesh
 
 from g2s_core.config import AgentConfig
 from g2s_core.model import RunContext
-from g2s_plugins._raycasting import AgentShape, RayCaster, walk_segments
+from g2s_plugins._raycasting import AgentShape, RayCaster, _slices_meet_bands, bands_meet_walls, walk_segments
 from g2s_plugins.graph_builders import sampling
 
 AGENT = AgentConfig(radius=0.5, height=2.0, max_climb=0.4, max_slope=45.0)
@@ -69,3 +69,57 @@ def test_the_side_lines_stop_a_walk_through_a_slot_and_not_beside_rising_ground(
     hits = hillside.first_hits(starts + side + [0.0, 0.4, 0.0], ends - starts)
     assert hits.distance[0] < np.linalg.norm(ends - starts) and hillside.walkable_faces(hits.face, 45.0).tolist() == [True]
     assert walk_segments(hillside, starts, ends, low, 0.25, half_width=0.45)[0].tolist() == [True]
+
+
+def opening_with_post(slot: float, post: float) -> trimesh.Trimesh:
+    """:func:`two_rooms`' wall with an opening of two ``slot`` m slots either side of a ``post`` m square post at
+    the origin."""
+    half = slot + post / 2
+    return trimesh.util.concatenate([
+        box((-8, -0.2, -6), (8, 0, 6)),
+        box((-0.1, 0, -7), (0.1, 3, -half)),
+        box((-0.1, 0, half), (0.1, 3, 7)),
+        box((-post / 2, 0, -post / 2), (post / 2, 3, post / 2)),
+    ])
+
+
+@pytest.mark.parametrize("slot, post, joined", [(0.8, 0.2, False), (0.8, 0.1, False), (1.4, 0.2, True)])
+def test_a_post_between_the_edge_lines_splits_slots_narrower_than_the_agent(slot: float, post: float,
+                                                                             joined: bool) -> None:
+    # Before the band test the 0.8 m slots' grid edges passed the post between two of their lines 0.45 m apart:
+    # one area (docs/sampling.md, "A post between the edge's lines").
+    assert rooms_joined(opening_with_post(slot, post)) is joined
+
+
+def test_the_band_test_finds_a_post_that_no_line_meets() -> None:
+    # Hand-checkable: a walk along x at z = 0.25 past the 0.2 m post (z -0.1 to 0.1): its line at z = 0.25 and side
+    # lines at -0.2 and 0.7 all pass through the 0.8 m slots (jambs at z = +-0.9); the post lies between two of them.
+    agent = AgentShape.from_config(AGENT)
+    caster = RayCaster(opening_with_post(0.8, 0.2))
+    starts, ends = np.array([[-1.0, 0.0, 0.25]]), np.array([[1.0, 0.0, 0.25]])
+    lifted, along, side = starts + [0.0, 1.0, 0.0], ends - starts, np.array([[0.0, 0.0, 0.45]])
+    for offset in (0.0, 0.45, -0.45):
+        assert caster.first_hits(lifted + [0.0, 0.0, offset], along).distance[0] > 2.0
+    assert bands_meet_walls(caster, lifted, along, side, 45.0).tolist() == [True]
+    assert walk_segments(caster, starts, ends, agent, 0.25, half_width=0.45)[0].tolist() == [False]
+    through_wall = starts + [0.0, 0.0, 3.0], ends + [0.0, 0.0, 3.0]  # the lines find the wall, and so does the band
+    assert walk_segments(caster, *through_wall, agent, 0.25, half_width=0.45)[0].tolist() == [False]
+    assert bands_meet_walls(caster, through_wall[0] + [0.0, 1.0, 0.0], along, side, 45.0).tolist() == [True]
+    # along the wall in the west room, the band's near side 0.5 m from its face
+    beside, north, east = np.array([[-1.0, 1.0, -3.0]]), np.array([[0.0, 0.0, 2.0]]), np.array([[0.4, 0.0, 0.0]])
+    assert bands_meet_walls(caster, beside, north, east, 45.0).tolist() == [False]
+
+
+def test_a_face_meets_the_band_only_passing_through_it() -> None:
+    # The band: 2 m along x from the origin, 0.45 m either side, in the plane y = 0; a thin vertical triangle at
+    # (x, z) spanning y -1..1 meets it inside the rectangle; one whose top edge lies in the plane (a box's side
+    # under a walkable top at the lifted height) does not pass through it.
+    origin, along, side = np.zeros((1, 3)), np.array([[2.0, 0.0, 0.0]]), np.array([[0.0, 0.0, 0.45]])
+
+    def upright(x: float, z: float, top: float = 1.0) -> np.ndarray:
+        return np.array([[[x, -1.0, z], [x, top, z], [x, -1.0, z + 0.1]]])
+
+    for x, z, meets in [(1.0, 0.0, True), (1.0, 0.3, True), (0.05, -0.3, True), (1.0, 0.5, False), (2.1, 0.0, False),
+                        (-0.1, 0.0, False), (1.0, -0.6, False)]:
+        assert _slices_meet_bands(upright(x, z), origin, along, side, 1e-4).tolist() == [meets]
+    assert _slices_meet_bands(upright(1.0, 0.0, top=0.0), origin, along, side, 1e-4).tolist() == [False]

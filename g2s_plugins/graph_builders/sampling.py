@@ -38,8 +38,9 @@ wanted. No Recast is involved: ``context.navmesh`` stays ``None``.
 5. *Edges*: pairs closer than ``connect_radius`` (scipy cKDTree) that pass
    :func:`g2s_plugins._raycasting.walk_segments` (the segment lifted by half
    the agent height hits nothing, nor do its copies moved ``DISK_SHARE`` ×
-   ``clearance`` to either side, so that a door or a slot between pillars
-   narrower than the agent is not crossed; the ground under evenly spaced
+   ``clearance`` to either side, nor does a steep face pass through the band
+   between those two, so that a door, a slot between pillars or a slot beside
+   a post narrower than the agent is not crossed; the ground under evenly spaced
    points is walkable, has head room and changes height by at most a step
    or the max slope); a pair on one open floor triangle, both samples that
    far inside its edges, passes without a ray
