@@ -610,6 +610,39 @@ MAX_FLOOR_CELL_ENTRIES = 4_000_000
 """(triangle, cell) pairs at most in :class:`OpenFloors`' broad phase; more and the cells are made larger."""
 
 
+def box_pairs(lo: np.ndarray, hi: np.ndarray, other_lo: np.ndarray, other_hi: np.ndarray,
+              cell: float) -> tuple[np.ndarray, np.ndarray]:
+    """``(i, j)`` int64 arrays: pairs of a box ``lo[i]..hi[i]`` ((n, d) m) and a box ``other_lo[j]..other_hi[j]``
+    ((m, d) m) that share a cell of a d-dimensional grid of cubes ``cell`` metres across, doubled while the other
+    boxes would fill more than ``MAX_FLOOR_CELL_ENTRIES`` cells. A broad phase: every pair of overlapping boxes is
+    among them, in no particular order. The cells each box covers are rows of a sparse matrix, and one sparse
+    product gives the pairs: O(cells the boxes cover + pairs sharing a cell).
+    """
+    origin = np.minimum(lo.min(axis=0), other_lo.min(axis=0))
+    while True:
+        other_first, other_last = (np.floor((corner - origin) / cell).astype(np.int64) for corner in (other_lo, other_hi))
+        if int(np.prod(other_last - other_first + 1, axis=1).sum()) <= MAX_FLOOR_CELL_ENTRIES:
+            break
+        cell *= 2.0
+    first, last = (np.floor((corner - origin) / cell).astype(np.int64) for corner in (lo, hi))
+    shape = tuple(int(size) for size in np.maximum(last.max(axis=0), other_last.max(axis=0)) + 1)
+
+    def cells_of(first: np.ndarray, last: np.ndarray) -> sparse.csr_array:
+        spans = last - first + 1
+        total = np.prod(spans, axis=1)
+        owner = np.repeat(np.arange(len(first)), total)
+        k = np.arange(int(total.sum())) - np.repeat(np.cumsum(total) - total, total)
+        index = np.empty((len(owner), len(shape)), dtype=np.int64)
+        for axis in reversed(range(len(shape))):  # k counts the box's cells with the last axis fastest
+            index[:, axis] = first[owner, axis] + k % spans[owner, axis]
+            k = k // spans[owner, axis]
+        key = np.ravel_multi_index(tuple(index.T), shape)
+        return sparse.csr_array((np.ones(len(owner), dtype=np.int32), (owner, key)), shape=(len(first), math.prod(shape)))
+
+    shared = (cells_of(first, last) @ cells_of(other_first, other_last).T).tocoo()
+    return shared.row.astype(np.int64), shared.col.astype(np.int64)
+
+
 class OpenFloors:
     """Walkable triangles with nothing else near them up to the agent's height: open floor, where a walk needs no ray.
 
@@ -682,28 +715,8 @@ class OpenFloors:
         share a cell of a 2-D grid (a broad phase: every overlapping pair is among them)."""
         xz = self.caster.triangles[:, :, [0, 2]]
         lo, hi = xz.min(axis=1) - self.margin, xz.max(axis=1) + self.margin
-        origin = lo.min(axis=0)
-        extent = float((hi.max(axis=0) - origin).max())
-        cell = max(float(np.median(hi - lo)), extent / 4096.0, 1e-6)
-        while True:
-            first, last = np.floor((lo - origin) / cell).astype(np.int64), np.floor((hi - origin) / cell).astype(np.int64)
-            spans = last - first + 1
-            if int((spans[:, 0] * spans[:, 1]).sum()) <= MAX_FLOOR_CELL_ENTRIES:
-                break
-            cell *= 2.0
-        columns = int(last[:, 1].max()) + 1
-
-        def cells_of(rows: np.ndarray) -> sparse.csr_array:
-            count = spans[rows, 0] * spans[rows, 1]
-            owner = np.repeat(np.arange(len(rows)), count)
-            k = np.arange(int(count.sum())) - np.repeat(np.cumsum(count) - count, count)
-            i = first[rows, 0][owner] + k // spans[rows, 1][owner]
-            j = first[rows, 1][owner] + k % spans[rows, 1][owner]
-            cells = (int(last[:, 0].max()) + 1) * columns
-            return sparse.csr_array((np.ones(len(owner), dtype=np.int32), (owner, i * columns + j)), shape=(len(rows), cells))
-
-        shared = (cells_of(floors) @ cells_of(np.arange(len(xz))).T).tocoo()
-        return shared.row.astype(np.int64), shared.col.astype(np.int64)
+        extent = float((hi.max(axis=0) - lo.min(axis=0)).max())
+        return box_pairs(lo[floors], hi[floors], lo, hi, max(float(np.median(hi - lo)), extent / 4096.0, 1e-6))
 
     def faces_under(self, points: np.ndarray, max_offset: float = EPSILON, room: float = 0.0) -> np.ndarray:
         """(n,) int64: the open triangle each point stands on (see the class; ``max_offset`` in metres, at most
@@ -923,10 +936,9 @@ def bands_meet_walls(caster: RayCaster, low: np.ndarray, along: np.ndarray, side
     :func:`walk_segments`' lines is found however thin it is. Walkable triangles are left out, as the side lines
     leave them.
 
-    Broad phase: the boxes of the bands and of the steep triangles on a 3-D grid (cells as large as the bands'
-    median box in plan, doubled while the triangles would fill more than ``MAX_FLOOR_CELL_ENTRIES`` cells; a
-    sparse product gives the pairs sharing a cell), then their boxes; narrow phase :func:`_slices_meet_bands`
-    (:class:`OpenFloors` uses the same grid and product in 2-D). O(cells the boxes cover + pairs sharing a cell).
+    Broad phase: the boxes of the bands and of the steep triangles sharing a cell of :func:`box_pairs`' 3-D grid
+    (cells as large as the bands' median box in plan), then their boxes; narrow phase :func:`_slices_meet_bands`.
+    O(cells the boxes cover + pairs sharing a cell).
     """
     n = len(low)
     meets = np.zeros(n, dtype=bool)
@@ -937,29 +949,8 @@ def bands_meet_walls(caster: RayCaster, low: np.ndarray, along: np.ndarray, side
     band_lo, band_hi = corners.min(axis=1), corners.max(axis=1)
     walls = caster.triangles[steep]
     wall_lo, wall_hi = walls.min(axis=1), walls.max(axis=1)
-    origin = np.minimum(band_lo.min(axis=0), wall_lo.min(axis=0))
-    cell = max(float(np.median(band_hi - band_lo, axis=0)[[0, 2]].max()), 1e-3)
-    while True:
-        band_first, band_last = (np.floor((corner - origin) / cell).astype(np.int64) for corner in (band_lo, band_hi))
-        wall_first, wall_last = (np.floor((corner - origin) / cell).astype(np.int64) for corner in (wall_lo, wall_hi))
-        if int(np.prod(wall_last - wall_first + 1, axis=1).sum()) <= MAX_FLOOR_CELL_ENTRIES:
-            break
-        cell *= 2.0
-    shape = np.maximum(band_last.max(axis=0), wall_last.max(axis=0)) + 1
-
-    def cells_of(first: np.ndarray, last: np.ndarray) -> sparse.csr_array:
-        spans = last - first + 1
-        total = np.prod(spans, axis=1)
-        owner = np.repeat(np.arange(len(first)), total)
-        k = np.arange(int(total.sum())) - np.repeat(np.cumsum(total) - total, total)
-        across, up = spans[owner, 2], spans[owner, 1] * spans[owner, 2]
-        i, j, m = first[owner, 0] + k // up, first[owner, 1] + k % up // across, first[owner, 2] + k % across
-        key = (i * shape[1] + j) * shape[2] + m
-        cells = int(np.prod(shape))
-        return sparse.csr_array((np.ones(len(owner), dtype=np.int32), (owner, key)), shape=(len(first), cells))
-
-    shared = (cells_of(band_first, band_last) @ cells_of(wall_first, wall_last).T).tocoo()
-    band, wall = shared.row.astype(np.int64), shared.col.astype(np.int64)
+    band, wall = box_pairs(band_lo, band_hi, wall_lo, wall_hi,
+                           max(float(np.median(band_hi - band_lo, axis=0)[[0, 2]].max()), 1e-3))
     near = np.all((band_lo[band] <= wall_hi[wall]) & (wall_lo[wall] <= band_hi[band]), axis=1)
     band, wall = band[near], wall[near]
     hit = _slices_meet_bands(walls[wall], low[band], along[band], side[band], inset)

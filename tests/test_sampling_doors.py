@@ -9,7 +9,8 @@ import trimesh
 
 from g2s_core.config import AgentConfig
 from g2s_core.model import RunContext
-from g2s_plugins._raycasting import AgentShape, RayCaster, _slices_meet_bands, bands_meet_walls, walk_segments
+from g2s_plugins._raycasting import (AgentShape, RayCaster, _slices_meet_bands, bands_meet_walls, box_pairs,
+                                     walk_segments)
 from g2s_plugins.graph_builders import sampling
 
 AGENT = AgentConfig(radius=0.5, height=2.0, max_climb=0.4, max_slope=45.0)
@@ -123,3 +124,15 @@ def test_a_face_meets_the_band_only_passing_through_it() -> None:
                         (-0.1, 0.0, False), (1.0, -0.6, False)]:
         assert _slices_meet_bands(upright(x, z), origin, along, side, 1e-4).tolist() == [meets]
     assert _slices_meet_bands(upright(1.0, 0.0, top=0.0), origin, along, side, 1e-4).tolist() == [False]
+
+
+def test_box_pairs_finds_every_overlapping_pair_in_2d_and_3d():
+    # 2-D: unit squares at x = 0, 2, 4 against one box spanning x 1.5..2.5 and one far away
+    lo = np.array([[0.0, 0.0], [2.0, 0.0], [4.0, 0.0]])
+    other_lo, other_hi = np.array([[1.5, 0.2], [9.0, 9.0]]), np.array([[2.5, 0.8], [9.5, 9.5]])
+    pairs = set(zip(*box_pairs(lo, lo + 1.0, other_lo, other_hi, cell=1.0)))
+    assert (1, 0) in pairs and (0, 1) not in pairs and (2, 1) not in pairs
+    # 3-D: boxes apart in height only share no cell; a cell as large as the whole scene keeps every pair
+    lo3, other3 = np.array([[0.0, 0.0, 0.0]]), np.array([[0.0, 5.0, 0.0]])
+    assert len(box_pairs(lo3, lo3 + 1.0, other3, other3 + 1.0, cell=1.0)[0]) == 0
+    assert set(zip(*box_pairs(lo3, lo3 + 1.0, other3, other3 + 1.0, cell=16.0))) == {(0, 0)}
