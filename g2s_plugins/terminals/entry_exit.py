@@ -1175,10 +1175,11 @@ def _passages(
     # pad's back, ends the passage before a step read in its face's plane, whose rays along the face meet it anywhere).
     low = on_steps + UP * s.lift
     n = len(row_of)
+    free_origins, free_directions = _free_rays(insides, along[row_of], s)
     hits = caster.first_hits(
-        np.concatenate([low, low, *_free_rays(insides, along[row_of], s)[0], insides + UP * (s.climb + s.delta),
+        np.concatenate([low, low, *free_origins, insides + UP * (s.climb + s.delta),
                         insides + UP * s.head, mid + UP * (s.climb + s.delta), mid + UP * s.head]),
-        np.concatenate([along[row_of], -along[row_of], *_free_rays(insides, along[row_of], s)[1], -out[row_of],
+        np.concatenate([along[row_of], -along[row_of], *free_directions, -out[row_of],
                         -out[row_of], -out, -out]))
     across = hits.distance[:n] + hits.distance[n: 2 * n]
     to_first_of, to_last_of = _free_reads(hits, 2 * n, along[row_of], towards_last[row_of], caster, s)
