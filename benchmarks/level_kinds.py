@@ -11383,6 +11383,571 @@ def western_town(seed: int, street: tuple[int, int] = (130, 151)) -> trimesh.Tri
     return s.mesh()
 
 
+def _divide(rng: np.random.Generator, box: tuple[int, int, int, int], walls: list[list], loops: float) -> None:
+    """Recursive division (Buck, *Mazes for Programmers*, 2015, ch. 11) of the rectangle ``box`` (i0, i1, j0, j1) of
+    2 m cells into rooms of 3-5 cells a side: a region 6 or more cells along its longer side is cut across it on a
+    cell boundary 3 or more cells from each end by a wall with one door (the cell it opens, a second one with
+    probability ``loops``), and each part is divided again. Walls lie on cell boundaries and doors within cells, so a
+    wall ending on another never meets its door's cell edge-on and no door is closed. Appends each wall as [axis (0:
+    the wall runs along z at i = index, 1: along x at j = index), index, lo, hi, door cells] to ``walls``.
+    O(cells)."""
+    i0, i1, j0, j1 = box
+    along_i = i1 - i0 >= j1 - j0
+    lo, hi = (i0, i1) if along_i else (j0, j1)
+    if hi - lo < 6:
+        return
+    cut = int(rng.integers(lo + 3, hi - 2))
+    span = (j0, j1) if along_i else (i0, i1)
+    doors = [int(rng.integers(*span))]
+    if rng.random() < loops and span[1] - span[0] > 1:
+        doors.append(int(rng.choice([c for c in range(*span) if c != doors[0]])))
+    walls.append([0 if along_i else 1, cut, span[0], span[1], doors])
+    for part in ((i0, cut, j0, j1), (cut, i1, j0, j1)) if along_i else ((i0, i1, j0, cut), (i0, i1, cut, j1)):
+        _divide(rng, part, walls, loops)
+
+
+def killhouse(seed: int, cells: tuple[int, int] = (28, 33)) -> trimesh.Trimesh:
+    """A training killhouse in a hall: a block of roofless rooms 28-32 x 20-25 cells of 2 m (56-64 x 40-50 m) walled by
+    plywood 0.2 m thick and 2.4 m high, divided recursively into rooms of 3-5 cells (:func:`_divide`: one door 1.8 m
+    wide a wall, a second in a third of the walls), entered by 3-4 doors in its outer wall from an aisle 8 m wide
+    round it inside the hall's walls (8 m high); crates (ridged, 1.2 m) in the rooms of 3 x 3 cells or more. Over the
+    walls an observation catwalk 2 m wide, its top 4.2 m up: a ring over the outer wall and two spans over the first
+    two dividing walls (one across each way), reached only by two flights up the hall's west and east walls, each
+    with a landing and a bridge over the aisle to the ring. No earlier kind laid a walkable level over the tops of
+    another's walls: the catwalk's spans are a second net over the rooms, joined to the ground at two points only.
+
+    Expected (written before the first run): one area. Traffic highest in the aisle round the block between its
+    doors and in the rooms strung between two doors (the loops through the block), lowest on the catwalk (its only
+    ways up are the two flights; a dead end for walking flow but at its two ends) and in rooms with one door. A
+    designer expects the structure to show the aisle as a loop, a node per room with edges through the doors, the
+    catwalk as a ring with spans and two edges down the flights, and terminals in the one-door rooms.
+
+    ``cells`` bounds the block's width in cells along x (its depth is 3/4 of it); a smaller killhouse by the same
+    rules (the same level at the default)."""
+    rng = np.random.default_rng(seed)
+    w = int(rng.integers(*cells))
+    d = int(round(w * 0.75)) + int(rng.integers(-1, 2))
+    aisle, cell, top = 8.0, 2.0, 4.2
+    x0, z0 = aisle, aisle  # the block's corner; the hall runs from 0 to the block's far side plus the aisle
+    x1, z1 = x0 + w * cell, z0 + d * cell
+    hx, hz = x1 + aisle, z1 + aisle
+    s = _Solids()
+    s.box(-0.5, hx + 0.5, -0.5, 0.0, -0.5, hz + 0.5)  # the hall's floor
+    for a, b, c, e in ((-0.5, 0.0, -0.5, hz + 0.5), (hx, hx + 0.5, -0.5, hz + 0.5), (0.0, hx, -0.5, 0.0),
+                       (0.0, hx, hz, hz + 0.5)):
+        s.box(a, b, -0.5, 8.0, c, e)
+    walls: list[list] = []
+    _divide(rng, (0, w, 0, d), walls, 1.0 / 3.0)
+    outer: list[list] = [[0, 0, 0, d, []], [0, w, 0, d, []], [1, 0, 0, w, []], [1, d, 0, w, []]]
+    for side in rng.choice(4, size=int(rng.integers(3, 5)), replace=False):
+        outer[side][4].append(int(rng.integers(1, outer[side][3] - 1)))
+    for axis, index, lo, hi, doors in walls + outer:
+        gaps = [((c - lo) * cell + 0.1, 1.8) for c in doors]
+        if axis == 0:
+            s.wall((x0 + index * cell, z0 + lo * cell), (x0 + index * cell, z0 + hi * cell), 0.0, 2.4, gaps)
+        else:
+            s.wall((x0 + lo * cell, z0 + index * cell), (x0 + hi * cell, z0 + index * cell), 0.0, 2.4, gaps)
+    rooms = [(0, w, 0, d)]
+    for axis, index, lo, hi, _ in walls:  # the leaf rooms: each wall cuts the region it spans (walls in preorder)
+        for k, (i0, i1, j0, j1) in enumerate(rooms):
+            if axis == 0 and i0 < index < i1 and (j0, j1) == (lo, hi):
+                rooms[k:k + 1] = [(i0, index, j0, j1), (index, i1, j0, j1)]
+                break
+            if axis == 1 and j0 < index < j1 and (i0, i1) == (lo, hi):
+                rooms[k:k + 1] = [(i0, i1, j0, index), (i0, i1, index, j1)]
+                break
+    for i0, i1, j0, j1 in rooms:  # a crate near the middle of each room 3 x 3 cells or more
+        if i1 - i0 >= 3 and j1 - j0 >= 3:
+            cx = x0 + (i0 + i1) / 2 * cell + rng.uniform(-0.8, 0.8)
+            cz = z0 + (j0 + j1) / 2 * cell + rng.uniform(-0.8, 0.8)
+            _ridged(s, cx - 0.6, cx + 0.6, cz - 0.6, cz + 0.6, -0.3, 1.0)
+
+    def catwalk(axis: int, at: float, lo: float, hi: float) -> None:  # 2 m wide over the wall line ``at``
+        if axis == 0:
+            s.box(at - 1.0, at + 1.0, top - 0.3, top, lo - 1.0, hi + 1.0)
+        else:
+            s.box(lo - 1.0, hi + 1.0, top - 0.3, top, at - 1.0, at + 1.0)
+
+    for a, b, axis in ((x0, x1, 1), (z0, z1, 0)):
+        for at in ((z0, z1) if axis == 1 else (x0, x1)):
+            catwalk(axis, at, a, b)
+    for axis in (0, 1):  # the first dividing wall each way
+        first = next((wall for wall in walls if wall[0] == axis), None)
+        if first is not None:
+            _, index, lo, hi, _ = first
+            catwalk(axis, (x0 if axis == 0 else z0) + index * cell, (z0 if axis == 0 else x0) + lo * cell,
+                    (z0 if axis == 0 else x0) + hi * cell)
+    for west in (True, False):  # a flight up the hall's wall, a landing, a bridge over the aisle to the ring
+        fx0, fx1 = (0.5, 2.5) if west else (hx - 2.5, hx - 0.5)
+        foot = z0 + rng.uniform(0.2, 0.5) * (z1 - z0)
+        run = _flight_to(s, np.array([(fx0 + fx1) / 2, foot + 7.2]), np.array([0.0, 1.0]), 2.0, 0.0, top)
+        edge = foot + run
+        if west:
+            s.box(fx0, x0, top - 0.3, top, edge, edge + 2.0)
+        else:
+            s.box(x1, fx1, top - 0.3, top, edge, edge + 2.0)
+    return s.mesh()
+
+
+def supermarket(seed: int, aisles: tuple[int, int] = (12, 16)) -> trimesh.Trimesh:
+    """A supermarket and its car park on 2 m tiles (:func:`_tiles`), the store's floor 0.15 m up (one step): 12-15
+    gondolas (rock, one tile thick) along z with aisles one tile (2 m) wide between them, cut by a cross aisle two
+    tiles wide, side aisles three tiles wide and a back aisle two; at the front an aisle three tiles wide, then a bank of 6-9
+    checkout counters (one tile wide, three long, a lane of one tile between two), an entry gap two tiles wide at
+    one end of the bank and a service desk closing the rest, a lobby three tiles deep and two entrances two tiles
+    wide onto the car park. Behind the back wall, entered by two doors one tile wide, a storeroom seven tiles deep of
+    pallets (cover) with a dock door two tiles wide onto a service yard, which joins the car park down both sides of
+    the store. The car park (14-16 tiles deep) holds rows of cars (rock, 1 x 2 tiles) between driving lanes, trolley
+    bays and kerb islands. Rock stands as walls 3 m high ridged at 50 degrees.
+
+    Expected (written before the first run): one area. Traffic highest through the checkout lanes and the entry gap
+    (every way between the shop floor and the entrances), in the lobby and the front aisle along the bank, then the
+    cross aisle and the side aisles; the gondola aisles and the storeroom low, the service yard lowest but for the
+    way round the store's sides. A designer expects the structure to show the checkout bank as a row of parallel
+    edges (or a chokepoint), each gondola aisle as an edge between the front (or cross) aisle and the back one, the
+    car park as a net between the cars, and the way round the building to the service yard as a loop.
+
+    ``aisles`` bounds the number of gondolas: a smaller store by the same rules (the same level at the default)."""
+    rng = np.random.default_rng(seed)
+    count = int(rng.integers(*aisles))
+    run = int(rng.integers(14, 18))  # a gondola's length in tiles, the cross aisle included
+    inner = 2 + 2 * count + 1 + 2  # the store's inside along i: side aisles and gondolas with aisles between
+    side, park, yard = 4, int(rng.integers(14, 17)), 8
+    n = 1 + side + 1 + inner + 1 + side + 1
+    si0, si1 = 1 + side + 1, 1 + side + 1 + inner  # the store's inside along i
+    sj0 = 1 + park + 1  # the store's inside begins (the front wall at sj0 - 1)
+    lobby, bank, front, back, store = 3, 3, 3, 2, 7
+    sj1 = sj0 + lobby + bank + front + run + back  # the back wall at sj1
+    rj0, rj1 = sj1 + 1, sj1 + 1 + store  # the storeroom, its back wall at rj1
+    m = rj1 + 1 + yard + 1
+    walk = np.ones((n, m), dtype=bool)
+    walk[[0, -1], :] = walk[:, [0, -1]] = False
+    indoor = np.zeros_like(walk)
+    indoor[si0:si1, sj0:sj1] = indoor[si0:si1, rj0:rj1] = True
+    walk[si0 - 1:si1 + 1, sj0 - 1:rj1 + 1] = False  # the building's shell and its inside, opened below
+    walk[indoor] = True
+    walk[si0:si1, sj1] = False  # the back wall between shop floor and storeroom
+    for i in rng.choice(np.arange(si0 + 1, si1 - 1), size=2, replace=False):
+        walk[i, sj1] = True  # the storeroom's doors
+    dock = int(rng.integers(si0 + 1, si1 - 3))
+    walk[dock:dock + 2, rj1] = True
+    for i in (si0 + 2 + int(rng.integers(0, 3)), si1 - 4 - int(rng.integers(0, 3))):
+        walk[i:i + 2, sj0 - 1] = True  # the entrances
+    bj = sj0 + lobby  # the checkout bank's rows bj .. bj + 2
+    tills = int(rng.integers(6, 10))
+    left = bool(rng.random() < 0.5)  # the bank's end the entry gap is at
+    i = si0 + 2 if left else si1 - 2 - (2 * tills + 1)
+    gap = (i - 2, i) if left else (i + 2 * tills + 1, i + 2 * tills + 3)
+    walk[si0:si1, bj:bj + bank] = False  # the service desk, opened at the lanes and the gap
+    walk[gap[0]:gap[1], bj:bj + bank] = True
+    for k in range(tills):
+        walk[i + 2 * k + 1, bj:bj + bank] = True  # lane k beside counter k (i + 2 k)
+    gj0 = bj + bank + front  # the gondolas' rows
+    cross = gj0 + int(rng.integers(run // 3, 2 * run // 3))
+    for k in range(count):
+        gi = si0 + 2 + 2 * k + 1
+        walk[gi, gj0:gj0 + run] = False
+        walk[gi, cross:cross + 2] = True
+    inside_store = np.zeros_like(walk)
+    inside_store[si0:si1, rj0:rj1] = True
+    _tile_cover(rng, walk, int(rng.integers(8, 13)), 400, 1, lambda box: inside_store[box].all())  # pallets
+    for row in range(3, park - 3, 5):  # car rows: pairs of bays back to back along i, a lane of 3 tiles after
+        for i in range(3, n - 3, 2):
+            if rng.random() < 0.55:
+                walk[i, row:row + 2] = False
+    islands = np.zeros_like(walk)
+    islands[2:n - 2, 2:park - 1] = True
+    _tile_cover(rng, walk, int(rng.integers(4, 8)), 300, 1, lambda box: islands[box].all())  # trolley bays
+    floor = np.where(walk, 0.0, np.nan)
+    floor[indoor & walk] = 0.15
+    doors = floor[si0:si1, sj1]  # the storeroom's doors, a view
+    doors[walk[si0:si1, sj1]] = 0.15
+    _tiles(s := _Solids(), floor, 2.0, 3.0)
+    return s.mesh()
+
+
+def rts_map(seed: int, size: tuple[int, int] = (96, 107)) -> trimesh.Trimesh:
+    """A two-player real-time-strategy map on 2 m tiles (:func:`_tiles`), 96-106 tiles square (192-212 m), the same
+    under a half turn about its middle: each player's main base a plateau 18-21 tiles square 2.4 m up in a corner,
+    left by one ramp two tiles wide (risers of 0.3 m a tile) down to a natural expansion 1.2 m up, whose ramp three
+    tiles wide leads to the low ground (0 m); mineral lines (a row of rock one tile thick along the base's back
+    edge) and gas geysers (rock 2 x 2) in each base; on the low ground two third bases a player, a central plateau
+    1.2 m up (10-12 tiles square, a watchtower) climbed by four ramps, 6-8 unpathable doodads (rock 2-4 tiles) and
+    cover a player. Every plateau's edge is a cliff (a ledge over the climb). Rock stands as walls 4 m high ridged
+    at 50 degrees. Unlike round 22's :func:`moba` (lanes between two bases), the way out of each base is one ramp
+    and then one more: two chokepoints in series before the open low ground.
+
+    Expected (written before the first run): one area. Traffic highest on the low ground's middle between the two
+    naturals' ramps (round both sides of the central plateau), on the naturals' ramps and across the naturals
+    between their two ramps; the main ramps and the mains themselves low (a dead end each, behind one ramp), the
+    central plateau low, the third bases' mineral pockets lowest. A designer expects the structure to show each
+    main ramp and each natural ramp as a chokepoint (a node or an edge through it), the low ground as a net round
+    the central plateau and the doodads, and terminals in the mains' and the bases' corners.
+
+    ``size`` bounds the map's side in tiles: a smaller map by the same rules (the same level at the default)."""
+    rng = np.random.default_rng(seed)
+    n = int(rng.integers(*size))
+    height = np.zeros((n, n))
+    walk = np.ones((n, n), dtype=bool)
+    keep = np.zeros_like(walk)  # ramps, their approaches and the bases' mining ground: no doodads or cover
+    main = int(rng.integers(18, 22))
+    height[1:1 + main, 1:1 + main] = 2.4
+    nat_w, nat_d = int(rng.integers(14, 17)), int(rng.integers(12, 15))
+    ni0 = 1 + main  # the natural east of the main, along the map's south edge
+    height[ni0:ni0 + nat_w, 1:1 + nat_d] = 1.2
+    rj = int(rng.integers(3, min(main, nat_d) - 3))  # the main ramp, down along +i onto the natural
+    for t in range(4):
+        height[ni0 + t, rj:rj + 2] = 2.4 - 0.3 * (t + 1)
+    keep[ni0 - 3:ni0 + 7, rj - 2:rj + 4] = True
+    ri = int(rng.integers(ni0 + 2, ni0 + nat_w - 5))  # the natural ramp, down along +j onto the low ground
+    for t in range(4):
+        height[ri:ri + 3, 1 + nat_d + t] = 1.2 - 0.3 * (t + 1)
+    keep[ri - 2:ri + 5, nat_d - 3:nat_d + 8] = True
+    walk[3:3 + main - 6, 2] = False  # the main's mineral line along its back (south) edge
+    walk[2, 5:7] = walk[3, 5:7] = False  # its gas geyser
+    walk[ni0 + 3:ni0 + nat_w - 3, 2] = False  # the natural's mineral line
+    walk[ni0 + nat_w - 3:ni0 + nat_w - 1, 4:6] = False
+    keep[1:1 + main, 1:6] = keep[ni0:ni0 + nat_w, 1:5] = True
+    c, half = n // 2, int(rng.integers(5, 7))
+    height[c - half:c + half, c - half:c + half] = 1.2  # the central plateau
+    walk[c - 1:c + 1, c - 1:c + 1] = False  # its watchtower
+    for along in (0, 1):  # its ramps on the south and west sides (the half turn gives north and east)
+        at = c - half + int(rng.integers(1, 2 * half - 3))
+        for t in range(4):
+            if along == 0:
+                height[at:at + 2, c - half - 1 - t] = 1.2 - 0.3 * (t + 1)
+                keep[at - 2:at + 4, c - half - 7:c - half + 1] = True
+            else:
+                height[c - half - 1 - t, at:at + 2] = 1.2 - 0.3 * (t + 1)
+                keep[c - half - 7:c - half + 1, at - 2:at + 4] = True
+    for _ in range(2):  # third bases on the low ground: a mineral line against the map's west edge or a pocket
+        for _ in range(50):
+            j = int(rng.integers(main + 6, n - 16))
+            if not keep[1:6, j - 2:j + 10].any() and (height[1:6, j - 2:j + 10] == 0).all():
+                walk[2, j:j + 8] = False
+                keep[1:8, j - 2:j + 10] = True
+                break
+    lower = np.add.outer(np.arange(n), np.arange(n)) < n - 1  # the half the rest is drawn on
+    doodads, wanted = 0, int(rng.integers(3, 5))
+    for _ in range(400):
+        if doodads == wanted:
+            break
+        i, j = int(rng.integers(2, n - 6)), int(rng.integers(2, n - 6))
+        di, dj = int(rng.integers(2, 5)), int(rng.integers(2, 5))
+        box = (slice(i - 2, i + di + 2), slice(j - 2, j + dj + 2))
+        if lower[box].all() and not keep[box].any() and (height[box] == 0).all() and walk[box].all():
+            walk[i:i + di, j:j + dj] = False
+            doodads += 1
+    target = int(rng.integers(10, 16))
+    _tile_cover(rng, walk, target, 40 * target, 1,
+                lambda box: lower[box].all() and not keep[box].any() and np.ptp(height[box]) == 0.0)
+    floor = np.where(walk, height, np.nan)
+    floor = np.where(lower | np.eye(n, dtype=bool)[:, ::-1], floor, floor[::-1, ::-1])
+    floor[[0, -1], :] = floor[:, [0, -1]] = np.nan
+    _tiles(s := _Solids(), floor, 2.0, 4.0)
+    return s.mesh()
+
+
+def _step_pyramid(height: np.ndarray, walk: np.ndarray, centre: tuple[int, int], halves: list[int], rise: float,
+                  facing: tuple[int, int]) -> list[tuple[np.ndarray, np.ndarray, float, float]]:
+    """A step pyramid drawn on 2 m tiles: square tiers about the tile corner ``centre`` (i, j) of half sizes
+    ``halves`` (decreasing, tiles) raised ``rise`` m a tier in ``height`` (n, m), and on the top a temple made in
+    ``walk``: a shell of rock one tile thick, at most 6 x 6 tiles inside, its door two tiles wide in the middle of
+    the side ``facing`` (a unit step along i or j). Returns the flights up the middle of that face, one a tier, each
+    (the plan point (x, z) where its top meets the tier's edge head-on, its unit heading (x, z), the height it climbs
+    from, the height it climbs to), for :func:`_flight_to`. O(tiers x half^2)."""
+    ci, cj = centre
+    di, dj = facing
+    flights = []
+    for k, h in enumerate(halves):
+        height[ci - h:ci + h, cj - h:cj + h] = rise * (k + 1)
+        edge = np.array([ci + di * h, cj + dj * h], dtype=np.float64) * 2.0
+        flights.append((edge, -np.array(facing, dtype=np.float64), rise * k, rise * (k + 1)))
+    t = min(halves[-1] - 1, 3)
+    walk[ci - t - 1:ci + t + 1, cj - t - 1:cj + t + 1] = False
+    walk[ci - t:ci + t, cj - t:cj + t] = True
+    if di:
+        walk[ci + t if di > 0 else ci - t - 1, cj - 1:cj + 1] = True
+    else:
+        walk[ci - 1:ci + 1, cj + t if dj > 0 else cj - t - 1] = True
+    return flights
+
+
+def ziggurat(seed: int, across: tuple[int, int] = (74, 81)) -> trimesh.Trimesh:
+    """A temple city in a jungle clearing on 2 m tiles (:func:`_tiles`), 74-80 x 70-78 tiles (148-160 x 140-156 m): a main
+    step pyramid of four tiers 2.1 m apart (half sizes 14, 11, 8, 5 tiles: each terrace a ring 6 m wide, each edge a
+    ledge) with a temple on its top, climbed only by four flights 4 m wide up the middle of its south face over the
+    plaza (:func:`_step_pyramid`, :func:`_flight_to`: risers 0.175 m, one flight a tier, each ending head-on at the
+    tier's edge); two or three smaller pyramids of two tiers (half sizes 6 and 3) west and east of the plaza, each
+    climbed by one stair facing it to a temple; a ball court (two rock walls two tiles thick and 12 tiles long, a
+    playing alley four tiles wide between); a causeway one riser (0.3 m) up and three tiles wide from the plaza south to
+    a market square; stelae (rock, 1 x 2 tiles) on the plaza; and a jungle band round it all, rock two tiles deep and
+    then four tiles of open ground among trees (rock, 1 x 2 tiles, kept a tile apart). Rock stands as walls 12 m high
+    ridged at 50 degrees. Unlike round 24's :func:`king_of_hill` (each step climbed by two ramps on different sides),
+    every terrace of a pyramid is reached only from its one stair: each pyramid is a chain of dead-end rings.
+
+    Expected (written before the first run): one area. Traffic highest on the plaza between the causeway's head and
+    the pyramids' stairs, on the causeway and the market square's way to it; the stairs' lower flights moderate,
+    the upper terraces and the temples low (chains of dead ends), the jungle band and the ball court's far end
+    lowest. A designer expects the structure to show the plaza as a net, each stair as a chain of edges up the
+    terraces (a node on each), the terraces' rings as dead-end loops, a terminal in each temple, and the causeway
+    as one edge.
+
+    ``across`` bounds the clearing's width in tiles (x): a narrower one by the same rules (the same level at the
+    default)."""
+    rng = np.random.default_rng(seed)
+    n = int(rng.integers(*across))
+    m = int(rng.integers(70, 79))
+    height = np.zeros((n, m))
+    walk = np.ones((n, m), dtype=bool)
+    walk[:2, :] = walk[-2:, :] = walk[:, :2] = walk[:, -2:] = False
+    band = np.zeros_like(walk)
+    band[:6, :] = band[-6:, :] = band[:, :6] = band[:, -6:] = True
+    taken = np.zeros_like(walk)
+    rise = 2.1
+    ci, cj = n // 2 + int(rng.integers(-2, 3)), m - 6 - 15  # the main pyramid against the north jungle
+    flights = _step_pyramid(height, walk, (ci, cj), [14, 11, 8, 5], rise, (0, -1))
+    taken[ci - 16:ci + 16, cj - 19:] = True
+    plaza_j = cj - 16  # the plaza runs from the causeway's head up to the main pyramid
+    market = (n // 2 - 8, n // 2 + 8, 6, 14)  # the market square (i0, i1, j0, j1) against the south jungle
+    taken[market[0]:market[1], market[2]:market[3]] = True
+    cw = int(rng.integers(n // 2 - 4, n // 2 + 2))
+    height[cw:cw + 3, market[3]:plaza_j - 2] = 0.3  # the causeway; its ends a riser off the ground
+    taken[cw - 2:cw + 5, market[3]:plaza_j] = True
+    for _ in range(40):  # the ball court, south-west of the plaza
+        bi, bj = int(rng.integers(7, n // 2 - 12)), int(rng.integers(7, 12))
+        if not taken[bi - 2:bi + 10, bj - 2:bj + 14].any():
+            walk[bi:bi + 2, bj:bj + 12] = walk[bi + 6:bi + 8, bj:bj + 12] = False
+            taken[bi - 2:bi + 10, bj - 2:bj + 14] = True
+            break
+    smaller, wanted = 0, int(rng.integers(2, 4))
+    for _ in range(200):  # the smaller pyramids west and east of the plaza, facing it
+        if smaller == wanted:
+            break
+        halves = [6, 3]
+        h0 = halves[0]
+        west = bool(rng.random() < 0.5)
+        pi = int(rng.integers(7 + h0, n // 2 - h0 - 4)) if west else int(rng.integers(n // 2 + h0 + 4, n - 7 - h0))
+        pj = int(rng.integers(14 + h0, m - 7 - h0))
+        box = (slice(pi - h0 - 3, pi + h0 + 3), slice(pj - h0 - 3, pj + h0 + 3))
+        if taken[box].any():
+            continue
+        taken[box] = True
+        flights += _step_pyramid(height, walk, (pi, pj), halves, rise, (1, 0) if west else (-1, 0))
+        smaller += 1
+    inner = band.copy()
+    inner[:2, :] = inner[-2:, :] = inner[:, :2] = inner[:, -2:] = False
+    _tile_cover(rng, walk, 60, 2000, 1, lambda box: inner[box].all() and not taken[box].any())  # trees
+    stelae = np.zeros_like(walk)
+    stelae[8:-8, plaza_j - 8:plaza_j + 2] = True
+    _tile_cover(rng, walk, int(rng.integers(6, 10)), 300, 2, lambda box: stelae[box].all() and not taken[box].any())
+    floor = np.where(walk, height, np.nan)
+    _tiles(s := _Solids(), floor, 2.0, 12.0)
+    for edge, heading, y0, y1 in flights:
+        _flight_to(s, edge, heading, 4.0, y0, y1)
+    return s.mesh()
+
+
+def _ring(s: _Solids, radius: float, width: float, top: float, sides: int) -> None:
+    """A flat ring ``width`` m wide about the circle of ``radius`` m round the origin, its top at ``top`` (0.3 m
+    thick): ``sides`` chords (:func:`_wall_line`), each overlapping the next at its ends."""
+    corners = [radius * np.array([math.cos(2 * math.pi * k / sides), math.sin(2 * math.pi * k / sides)])
+               for k in range(sides + 1)]
+    for p, q in zip(corners[:-1], corners[1:]):
+        along = (q - p) / np.linalg.norm(q - p) * width * math.tan(math.pi / sides) / 2
+        _wall_line(s, p - along, q + along, top - 0.3, top, width, [])
+
+
+def reactor(seed: int, levels: tuple[int, int] = (6, 8)) -> trimesh.Trimesh:
+    """A reactor hall: a round hall 28-32 m in radius (24 wall chords, 0.5 m thick) round a core pillar 4 m in radius (16
+    sides, pointed on top), with 6-7 levels 6 m apart: the ground floor (a chorded ring stopping under the core), on
+    which 10-14 machines stand (ridged, 2-4 x 1.6-2.4 m, 1 m to the eaves: the ground runs on inside them, but too
+    little of it under 2 m of head room to hold a floor), and on each level above a gallery 4 m wide against the wall
+    and a ring 3 m wide round the core, both chorded (:func:`_ring`), joined by 2-3 radial bridges 2.4 m wide at random
+    angles (at least 30 degrees apart); two stair towers outside the wall, east and west, each a switchback well
+    (:func:`_switchback`) whose landing on every level opens through a doorway 1.8 m wide onto the gallery (a threshold
+    under it). No earlier kind stacked round galleries over one void joined across it only by bridges at every angle:
+    the levels meet only in the two towers.
+
+    Expected (written before the first run): one area. Traffic highest in the two stair towers (every way between
+    levels) and on the galleries' arcs between the towers' doorways, on the ground floor's way between the two
+    towers; the bridges and the core rings low (a bridge helps only between its gallery's far sides), the machines'
+    corners lowest. A designer expects the structure to show each gallery as a loop, each core ring as a loop joined
+    by an edge per bridge, each tower as a chain of edges between the levels, and chokepoints at the doorways.
+
+    ``levels`` bounds the number of levels, the ground floor counted: a lower hall by the same rules (the same level
+    at the default)."""
+    rng = np.random.default_rng(seed)
+    radius = float(rng.uniform(28.0, 32.0))
+    count = int(rng.integers(*levels))
+    storey, sides = 6.0, 24
+    s = _Solids()
+    top = storey * (count - 1)
+    chord = radius * math.cos(math.pi / sides)  # the wall chords' distance from the middle
+    _ring(s, (radius + 4.0) / 2, radius - 4.0, 0.0, sides)  # the ground floor, stopping under the core
+    corners = [radius * np.array([math.cos(2 * math.pi * (k + 0.5) / sides), math.sin(2 * math.pi * (k + 0.5) / sides)])
+               for k in range(sides + 1)]
+    for k, (p, q) in enumerate(zip(corners[:-1], corners[1:])):
+        if k not in (sides - 1, sides // 2 - 1):  # the chords facing east and west are the towers' walls
+            _wall_line(s, p, q, -0.5, top + 4.0, 0.5, [])
+    core = [4.0 * np.array([math.cos(2 * math.pi * k / 16), math.sin(2 * math.pi * k / 16)]) for k in range(16)]
+    s.hull(np.array([[p[0], y, p[1]] for p in core for y in (-0.5, top + 3.0)] + [[0.0, top + 9.0, 0.0]]))
+    placed: list[np.ndarray] = []
+    machines = int(rng.integers(10, 15))
+    for _ in range(200):  # machines on the ground floor, between the core and the gallery's shadow
+        if len(placed) == machines:
+            break
+        r, a = rng.uniform(8.0, radius - 7.0), rng.uniform(0.0, 2 * math.pi)
+        c = r * np.array([math.cos(a), math.sin(a)])
+        half = np.array([rng.uniform(1.0, 2.0), rng.uniform(0.8, 1.2)])  # too shallow along z to hold floor inside
+        if abs(c[1]) < 8.0 and abs(c[0]) > radius - 12.0:
+            continue  # the way to each tower's door kept clear
+        if all(np.abs(c - o).max() > 6.0 for o in placed):
+            _ridged(s, c[0] - half[0], c[0] + half[0], c[1] - half[1], c[1] + half[1], -0.3, 1.0)
+            placed.append(c)
+    for level in range(1, count):
+        y = storey * level
+        _ring(s, radius - 2.25, 4.0, y, sides)
+        _ring(s, 5.5, 3.0, y, 16)
+        angles: list[float] = []
+        bridges = int(rng.integers(2, 4))
+        for _ in range(100):
+            if len(angles) == bridges:
+                break
+            a = float(rng.uniform(0.0, 2 * math.pi))
+            if all(abs((a - b + math.pi) % (2 * math.pi) - math.pi) > math.radians(30.0) for b in angles):
+                angles.append(a)
+        for a in angles:
+            u = np.array([math.cos(a), math.sin(a)])
+            _wall_line(s, u * 6.5, u * (radius - 3.75), y - 0.3, y, 2.4, [])
+    well = _well_length(storey)
+    for east in (True, False):
+        wall_x = chord if east else -chord  # the tower's side on the hall
+        x0 = wall_x + 0.25 if east else wall_x - 0.25 - 4.0
+        z0 = 0.5 - radius * math.sin(math.pi / sides)  # the tower's wall starts at the chord's end
+        for level in range(count):
+            y = storey * level
+            if level < count - 1:
+                _switchback(s, x0, z0, y, storey)
+            s.box(x0, x0 + 4.0, y - 0.45, y, z0, z0 + 2.0)  # the landing
+            a, b = (wall_x - 1.5, x0 + 1.0) if east else (x0 + 3.0, wall_x + 1.5)
+            s.box(a, b, y - 0.3, y, z0 + 0.1, z0 + 1.9)  # the threshold through the doorway
+            s.wall((wall_x, z0 - 0.5), (wall_x, z0 + well + 0.5), y, y + storey, [(0.6, 1.8)], thickness=0.5)
+        s.box(x0 - 0.3 if not east else x0 + 4.0, x0 if not east else x0 + 4.3, -0.5, top + 4.0, z0 - 0.5,
+              z0 + well + 0.5)  # the tower's outer wall
+        s.box(min(x0, wall_x), max(x0 + 4.0, wall_x), -0.5, top + 4.0, z0 - 0.8, z0 - 0.5)
+        s.box(min(x0, wall_x), max(x0 + 4.0, wall_x), -0.5, top + 4.0, z0 + well + 0.5, z0 + well + 0.8)
+    return s.mesh()
+
+
+def gorge_bridge(seed: int, span: tuple[float, float] = (180.0, 211.0)) -> trimesh.Trimesh:
+    """A road bridge over a gorge (no floor below it): a deck 14 m wide and 180-210 m long, its top 20 m up, between
+    parapets 1.1 m high, strewn with 20-30 wrecked cars (:func:`_car`) and 4-6 barricades (ridged, 0.9 m), holed by a
+    railed blast crater 4-5 x 5-7 m; under the deck, 3.4 m below its underside, a maintenance catwalk 2.4 m wide
+    along its middle, widening at each of 3-4 piers (two columns each, outside the catwalk) into a landing 8 m long;
+    from 2-3 of those landings a flight (2 m wide, risers of at most 0.18 m) climbs through a railed hole in the deck
+    (:func:`_flight_through`); at each end the catwalk meets a landing under the bank and a flight up through it.
+    Each bank is a plateau 80-90 x 90 m at the deck's height, a checkpoint town of 10-14 houses (ridged, 6-10 m; the
+    ground stops under them) and
+    sandbag lines (ridged, 0.9 m) in the open ground. No earlier kind ran two parallel ways, one over the other, the
+    whole length of a level, joined only at a few points.
+
+    Expected (written before the first run): one area. Traffic highest on the deck (the shortest way between the
+    banks), through the gaps between its wrecks and round the crater, and on the banks' ground between the town and
+    the bridge's ends; the catwalk low but for the stretches between the flights near each end, the banks' far
+    corners lowest. A designer expects the structure to show the deck as a chain of edges (two round the crater),
+    the catwalk as a parallel chain joined to it by an edge up each flight, and the banks as nets round their houses.
+
+    ``span`` bounds the deck's length (m): a shorter bridge by the same rules (the same level at the default)."""
+    rng = np.random.default_rng(seed)
+    length = float(rng.uniform(*span))
+    deck, walk_y, half = 20.0, 16.0, 7.0
+    bank = float(rng.uniform(80.0, 90.0))
+    s = _Solids()
+    piers = int(rng.integers(3, 5))
+    pier_x = [length * (k + 1) / (piers + 1) + float(rng.uniform(-4.0, 4.0)) for k in range(piers)]
+    holes: list[tuple[float, float, float, float]] = []
+    climbs = set(int(k) for k in rng.choice(piers, size=int(rng.integers(2, 4)) if piers > 2 else 2, replace=False))
+    for k, px in enumerate(pier_x):
+        s.box(px - 4.0, px + 4.0, walk_y - 0.3, walk_y, -4.0, 4.0)  # the landing
+        for side in (-1.0, 1.0):  # the pier's columns, up into the deck
+            s.box(px - 1.0, px + 1.0, -10.0, deck, side * 5.0 - 1.0, side * 5.0 + 1.0)
+        if k in climbs:
+            heading = np.array([1.0 if rng.random() < 0.5 else -1.0, 0.0])
+            _flight_through(s, np.array([px - 3.5 * heading[0], 2.5]), heading, 2.0, walk_y, deck, holes)
+    cx = float(rng.uniform(0.3, 0.7)) * length
+    while min(abs(cx - px) for px in pier_x) < 10.0:
+        cx = float(rng.uniform(0.3, 0.7)) * length
+    cz = float(rng.uniform(-2.0, 2.0))
+    cw, cd = float(rng.uniform(5.0, 7.0)), float(rng.uniform(4.0, 5.0))
+    crater = (cx - cw / 2, cx + cw / 2, cz - cd / 2, cz + cd / 2)
+    _rail_ring(s, crater[0] - 0.1, crater[1] + 0.1, crater[2] - 0.1, crater[3] + 0.1, deck, {})
+    ends = []
+    for west in (True, False):  # the catwalk's end landings under the banks and their flights up
+        x0, x1 = (-12.0, 0.5) if west else (length - 0.5, length + 12.0)
+        s.box(x0, x1, walk_y - 0.3, walk_y, -4.0, 4.0)
+        heading = np.array([-1.0 if west else 1.0, 0.0])
+        foot = np.array([(-1.0 if west else length + 1.0), 2.5])
+        ends.append(_flight_through(s, foot, heading, 2.0, walk_y, deck, []))
+    s.box(0.0, length, walk_y - 0.3, walk_y, -1.2, 1.2)  # the catwalk
+    s.slab(0.0, length, -half, half, deck, holes + [crater], thickness=0.6)
+    for side in (-1.0, 1.0):
+        s.wall((0.0, side * (half - 0.15)), (length, side * (half - 0.15)), deck, deck + 1.1, [], thickness=0.3)
+    blocked = [crater] + holes
+
+    def clear(box: tuple[float, float, float, float], gap: float) -> bool:
+        return all(box[1] + gap < o[0] or o[1] + gap < box[0] or box[3] + gap < o[2] or o[3] + gap < box[2]
+                   for o in blocked)
+
+    cars, wanted = 0, int(rng.integers(20, 31))
+    for _ in range(600):
+        if cars == wanted:
+            break
+        x, z = float(rng.uniform(3.0, length - 7.5)), float(rng.uniform(-half + 0.6, half - 2.6))
+        box = (x, x + 4.5, z, z + 2.0) if rng.random() < 0.8 else (x, x + 2.0, z - 1.0, z + 3.5)
+        if box[2] > -half + 0.3 and box[3] < half - 0.3 and clear(box, 1.5):
+            _car(s, *box, deck)
+            blocked.append(box)
+            cars += 1
+    for _ in range(int(rng.integers(4, 7))):
+        for _ in range(100):
+            x, z = float(rng.uniform(5.0, length - 8.0)), float(rng.uniform(-half + 0.5, 0.0))
+            box = (x, x + 0.8, z, z + float(rng.uniform(3.0, 6.0)))
+            if box[3] < half - 0.3 and clear(box, 1.5):
+                _ridged(s, *box, deck - 0.3, deck + 0.9)
+                blocked.append(box)
+                break
+    for west in (True, False):  # the banks, the ground stopping under the houses and open over the end flights
+        bx0, bx1 = (-bank, 0.0) if west else (length, length + bank)
+        houses = [ends[0 if west else 1]]
+        taken = [ends[0 if west else 1], (bx0 + (bank - 16.0 if west else 0.0), bx0 + (bank if west else 16.0), -9.0,
+                                          9.0)]
+        placed, wanted = 0, int(rng.integers(10, 15))
+        for _ in range(300):
+            if placed == wanted:
+                break
+            w, d = float(rng.uniform(6.0, 10.0)), float(rng.uniform(6.0, 10.0))
+            x, z = float(rng.uniform(bx0 + 2.0, bx1 - 2.0 - w)), float(rng.uniform(-43.0, 43.0 - d))
+            box = (x, x + w, z, z + d)
+            if all(box[1] + 4.0 < o[0] or o[1] + 4.0 < box[0] or box[3] + 4.0 < o[2] or o[3] + 4.0 < box[2]
+                   for o in taken):
+                houses.append(_ridged(s, *box, deck - 0.6, deck + 3.0))
+                taken.append(box)
+                placed += 1
+        s.ground(bx0, bx1, -45.0, 45.0, deck, houses, thickness=0.6)
+        for _ in range(int(rng.integers(3, 6))):  # sandbag lines
+            for _ in range(100):
+                x, z = float(rng.uniform(bx0 + 2.0, bx1 - 6.0)), float(rng.uniform(-43.0, 37.0))
+                box = (x, x + 0.8, z, z + float(rng.uniform(3.0, 6.0))) if rng.random() < 0.5 else \
+                    (x, x + float(rng.uniform(3.0, 6.0)), z, z + 0.8)
+                if all(box[1] + 2.0 < o[0] or o[1] + 2.0 < box[0] or box[3] + 2.0 < o[2] or o[3] + 2.0 < box[2]
+                       for o in taken):
+                    _ridged(s, *box, deck - 0.3, deck + 0.9)
+                    taken.append(box)
+                    break
+    return s.mesh()
+
+
 KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
     "subway": subway, "archipelago": archipelago, "car_park": car_park,
     "forest": forest, "stadium": stadium, "harbour": harbour,
@@ -11419,6 +11984,8 @@ KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
     "tower_defence": tower_defence, "hub_world": hub_world,
     "tavern": tavern, "military_base": military_base, "king_of_hill": king_of_hill, "favela": favela, "hive": hive,
     "western_town": western_town,
+    "killhouse": killhouse, "supermarket": supermarket, "rts_map": rts_map, "ziggurat": ziggurat, "reactor": reactor,
+    "gorge_bridge": gorge_bridge,
 }
 """Kind name -> generator (seed -> Y-up mesh in metres)."""
 
