@@ -1,4 +1,4 @@
-"""Level kinds of the fifth to twenty-fourth held-out rounds (issue 9): generators no preset setting was made on.
+"""Level kinds of the fifth to twenty-fifth held-out rounds (issue 9): generators no preset setting was made on.
 
 Fifth round: six kinds, each about 1,000 navmesh polygons with the presets' agent (radius 0.5 m, height 2 m, climb 0.4 m):
 ``subway`` (platforms, track pits 1.2 m lower, stairs up to two concourses), ``archipelago`` (islands joined by
@@ -230,6 +230,19 @@ corrals). A first draft's tavern put the second flight's foot 0.8 m past the fir
 was an area of its own (391 / 383 / 380 m² on seeds 0-2); the feet are now 8 m apart. A flight 1.4 m wide between
 drops (the western town's first draft, inside and up its alleys) holds no floor past its first steps: the ledge
 filter and the agent's radius take both sides (upper storeys apart, 6 / 5 / 5 areas); at 2 m wide each climbs.
+
+Twenty-fifth round: six more kinds of game levels, 377-594 navmesh polygons with that agent (seeds 0-2):
+``killhouse`` (roofless plywood rooms divided recursively, :func:`_divide`, under an observation catwalk over the
+walls reached by two flights), ``supermarket`` (gondola aisles, a bank of checkout lanes, a storeroom, a car park, on
+2 m tiles), ``rts_map`` (a real-time-strategy map the same under a half turn: each main a plateau left by one ramp
+to a natural expansion and one more to the low ground), ``ziggurat`` (a temple city: step pyramids whose terraces are
+reached only up one stair of flights on one face, :func:`_step_pyramid`, a ball court, a causeway), ``reactor``
+(round galleries on 6-7 levels over one void, bridges at random angles to rings round a core, two stair towers,
+:func:`_ring`) and ``gorge_bridge`` (a deck over a gorge, a catwalk under it joined by flights at its piers, banks
+with houses). The floor stops under closed solids again: a first draft's reactor kept the ground inside its core
+pillar and inside two machines (4 areas on seed 0), the bridge's banks ran on inside their houses (15 areas), and a
+pyramid's terraces 4 m wide, the flight up each starting 0.4 m from the one below's top, left its upper tiers apart
+(3 / 5 / 3 areas on seeds 0-2); with terraces 6 m wide each tier climbs.
 
 Run: ``.venv/bin/python benchmarks/level_kinds.py OUT_DIR [--kinds subway forest] [--seeds 0 1 2]`` writes
 ``OUT_DIR/<kind>_s<seed>.obj``, the files ``benchmarks/analysis_quality.py --levels`` takes (which also takes the
@@ -11876,8 +11889,12 @@ def gorge_bridge(seed: int, span: tuple[float, float] = (180.0, 211.0)) -> trime
             heading = np.array([1.0 if rng.random() < 0.5 else -1.0, 0.0])
             _flight_through(s, np.array([px - 3.5 * heading[0], 2.5]), heading, 2.0, walk_y, deck, holes)
     cx = float(rng.uniform(0.3, 0.7)) * length
-    while min(abs(cx - px) for px in pier_x) < 10.0:
+    for _ in range(100):  # 10 m or more from every pier; a short span may leave no such place in the middle
+        if min(abs(cx - px) for px in pier_x) >= 10.0:
+            break
         cx = float(rng.uniform(0.3, 0.7)) * length
+    else:
+        cx = (pier_x[0] + pier_x[1]) / 2
     cz = float(rng.uniform(-2.0, 2.0))
     cw, cd = float(rng.uniform(5.0, 7.0)), float(rng.uniform(4.0, 5.0))
     crater = (cx - cw / 2, cx + cw / 2, cz - cd / 2, cz + cd / 2)

@@ -1,4 +1,4 @@
-"""The ninth to twenty-fourth rounds' level kinds (``benchmarks/level_kinds.py``) build the levels their docstrings describe.
+"""The ninth to twenty-fifth rounds' level kinds (``benchmarks/level_kinds.py``) build the levels their docstrings describe.
 
 Smoke tests of quick generators (most well under a second each to build and to give a navmesh; the theatre's and
 the cliff dwellings' thousands of hulls take about 5 s of CPU, the metroidvania's flights 1-2 s a build): the connected
@@ -33,6 +33,7 @@ SAME_SEED_KINDS = (
     "corridor_shooter", "moba", "capture_flag", "platform_tower", "diagonal_dungeon", "battle_royale", "arena_shooter",
     "stealth_mansion", "defusal", "payload", "metroidvania", "tower_defence", "hub_world",
     "tavern", "military_base", "king_of_hill", "favela", "hive", "western_town",
+    "killhouse", "supermarket", "rts_map", "ziggurat", "reactor", "gorge_bridge",
 )
 
 
@@ -42,7 +43,7 @@ SAME_SEED_KINDS = (
 SAME_SEED_SIZES: dict[str, dict[str, object]] = {
     "metroidvania": {"across": (3, 4)}, "payload": {"along": (60, 61)}, "western_town": {"street": (50, 51)},
     "tavern": {"wide": (24, 27)}, "military_base": {"scale": 0.5}, "favela": {"along": (40, 45)},
-    "hive": {"columns": (4, 6)},
+    "hive": {"columns": (4, 6)}, "reactor": {"levels": (3, 4)},
 }
 
 
@@ -1112,3 +1113,57 @@ def test_the_western_towns_street_yards_and_balconies_are_one_area(kinds):
     assert label.max() == 0
     y = nav.centres[:, 1] - 0.2
     assert nav.areas[np.abs(y - 3.8) < 0.1].sum() > 300.0 and nav.areas[np.abs(y - 0.3) < 0.05].sum() > 300.0
+
+
+def test_the_killhouses_rooms_aisle_and_catwalk_are_one_area(kinds):
+    """Doors 1.8 m wide in plywood walls 0.2 m thick join every room to the aisle, and the two flights join the
+    catwalk over the walls (4.2 m): one area, with floor on the catwalk and none on a wall's top (2.4 m)."""
+    label, nav = areas(kinds["killhouse"](0))
+    assert label.max() == 0
+    y = nav.centres[:, 1] - 0.2
+    assert nav.areas[np.abs(y - 4.2) < 0.15].sum() > 150.0 and not (np.abs(y - 2.4) < 0.3).any()
+
+
+def test_the_supermarkets_shop_floor_storeroom_and_car_park_are_one_area(kinds):
+    """The shop floor and storeroom (0.15 m), through the checkout lanes and the entry gap, and the car park and
+    service yard (0 m) are one area."""
+    label, nav = areas(kinds["supermarket"](1))
+    assert label.max() == 0
+    y = nav.centres[:, 1] - 0.2
+    assert nav.areas[np.abs(y - 0.15) < 0.05].sum() > 2000.0 and nav.areas[np.abs(y) < 0.05].sum() > 2000.0
+
+
+def test_the_rts_maps_mains_naturals_and_low_ground_are_one_area_down_their_ramps(kinds):
+    """Each main (2.4 m) is left only down one ramp to its natural (1.2 m), each natural down one more to the low
+    ground: one area, with floor on all three heights."""
+    label, nav = areas(kinds["rts_map"](2))
+    assert label.max() == 0
+    held = [nav.areas[np.abs(nav.centres[:, 1] - 0.2 - height) < 0.1].sum() for height in (0.0, 1.2, 2.4)]
+    assert min(held) > 500.0, held
+
+
+def test_the_ziggurats_terraces_and_temples_are_one_area_up_their_stairs(kinds):
+    """One flight a tier (risers 0.175 m) climbs each pyramid's face: one area, with floor on each of the main
+    pyramid's four terraces (2.1-8.4 m)."""
+    label, nav = areas(kinds["ziggurat"](0))
+    assert label.max() == 0
+    held = [nav.areas[np.abs(nav.centres[:, 1] - 0.2 - 2.1 * tier) < 0.1].sum() for tier in range(1, 5)]
+    assert min(held) > 50.0, held
+
+
+def test_the_reactors_levels_are_one_area_through_its_stair_towers(generators):
+    """The galleries, bridges and core rings of each level meet the others only in the two stair towers: one area,
+    with floor on every level 6 m apart (a hall of three levels, the same rules)."""
+    label, nav = areas(generators["reactor"](1, levels=(3, 4)))
+    assert label.max() == 0
+    held = [nav.areas[np.abs(nav.centres[:, 1] - 0.2 - 6.0 * level) < 0.3].sum() for level in range(3)]
+    assert min(held) > 200.0, held
+
+
+def test_the_gorge_bridges_deck_catwalk_and_banks_are_one_area(kinds):
+    """The catwalk under the deck (16 m) meets the deck and the banks (20 m) only up the flights at its piers and
+    ends: one area, with floor on both."""
+    label, nav = areas(kinds["gorge_bridge"](2))
+    assert label.max() == 0
+    y = nav.centres[:, 1] - 0.2
+    assert nav.areas[np.abs(y - 16.0) < 0.1].sum() > 300.0 and nav.areas[np.abs(y - 20.0) < 0.1].sum() > 5000.0
