@@ -11397,7 +11397,7 @@ def western_town(seed: int, street: tuple[int, int] = (130, 151)) -> trimesh.Tri
 
 
 def _divide(rng: np.random.Generator, box: tuple[int, int, int, int], walls: list[list], loops: float) -> None:
-    """Recursive division (Buck, *Mazes for Programmers*, 2015, ch. 11) of the rectangle ``box`` (i0, i1, j0, j1) of
+    """Recursive division (Buck, *Mazes for Programmers*, 2015) of the rectangle ``box`` (i0, i1, j0, j1) of
     2 m cells into rooms of 3-5 cells a side: a region 6 or more cells along its longer side is cut across it on a
     cell boundary 3 or more cells from each end by a wall with one door (the cell it opens, a second one with
     probability ``loops``), and each part is divided again. Walls lie on cell boundaries and doors within cells, so a
