@@ -1167,3 +1167,16 @@ def test_the_gorge_bridges_deck_catwalk_and_banks_are_one_area(kinds):
     assert label.max() == 0
     y = nav.centres[:, 1] - 0.2
     assert nav.areas[np.abs(y - 16.0) < 0.1].sum() > 300.0 and nav.areas[np.abs(y - 20.0) < 0.1].sum() > 5000.0
+
+
+def test_recursive_division_cuts_a_region_six_cells_long_once_in_its_middle():
+    """By hand: a region 6 x 3 cells is cut once, across its longer side at cell 3 (the only line 3 or more cells from
+    both ends), by a wall with one or two doors in distinct cells of its span; a region 5 x 5 is not cut."""
+    divide = benchmark("level_kinds")._divide
+    walls: list[list] = []
+    divide(np.random.default_rng(0), (0, 6, 0, 3), walls, 0.5)
+    assert len(walls) == 1 and walls[0][:4] == [0, 3, 0, 3]
+    assert 1 <= len(walls[0][4]) == len(set(walls[0][4])) <= 2 and all(0 <= c < 3 for c in walls[0][4])
+    walls = []
+    divide(np.random.default_rng(0), (0, 5, 0, 5), walls, 0.5)
+    assert walls == []
