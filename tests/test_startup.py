@@ -72,3 +72,10 @@ def test_plugins_of_one_stage_load_that_stage_alone(stage, modules):
     assert answer["code"] == 0 and answer["out"].startswith(f"{stage}\n")
     assert {name for name in answer["modules"] if name.startswith("g2s_plugins.")} == COMMANDS_AND_WRITERS | modules
     assert not [name for name in answer["modules"] if not name.startswith("g2s_plugins")]
+
+
+def test_the_sample_levels_are_listed_without_trimesh_or_scipy():
+    """Their parameters are their factories' signatures; the sample modules import trimesh and scipy where they build."""
+    answer = imported("plugins", "--stage", "levels")
+    assert answer["code"] == 0 and "\n  dungeon  (graph2structure)\n" in answer["out"]
+    assert {name.partition(".")[0] for name in answer["modules"]} == {"g2s_plugins", "numpy"}
