@@ -21,7 +21,8 @@ from pydantic import NonNegativeFloat, NonNegativeInt, PositiveFloat, validate_c
 
 from g2s_plugins.samples.levels import DESIGN_AGENT, SampleLevel, _LevelBuilder, _plan_hexahedra, _turned_rectangle
 
-if TYPE_CHECKING:  # trimesh and scipy are imported where used, as in levels.py: `g2s plugins` lists these levels without them
+# trimesh and scipy are imported where used, as in levels.py: `g2s plugins` lists these levels without them
+if TYPE_CHECKING:
     import trimesh
 
 _HILL_AREA = 400.0  # m² of map per hill or hollow
