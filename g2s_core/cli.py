@@ -356,10 +356,9 @@ def _plugins(args: argparse.Namespace) -> int:
                           for name, accepted, default, description in plugin_parameters(info)]
             lines.extend(_columns(parameters, console.width, indent=6))
     console.print("\n".join(lines), markup=False, highlight=False, soft_wrap=True)
-    for broken in registry.broken:
-        if args.stage is None or broken.entry_point.split(".")[0] == args.stage:
-            console.print(f"[bold red]broken[/bold red] {escape(f'{broken.entry_point}  ({broken.package})')}")  # '[/x]' in them
-            console.print(f"  {broken.target} failed to load: {broken.reason}", markup=False, highlight=False)
+    for broken in registry.broken(args.stage):
+        console.print(f"[bold red]broken[/bold red] {escape(f'{broken.entry_point}  ({broken.package})')}")  # '[/x]' in them
+        console.print(f"  {broken.target} failed to load: {broken.reason}", markup=False, highlight=False)
     return 0
 
 

@@ -90,7 +90,8 @@ class Registry:
     ``<stage>.<anything>`` when that stage's plugins are first asked for, and
     the entry points named otherwise with the first stage asked for: ``g2s
     --help`` loads only the commands (and output writers it names), a config
-    error needs no plugin, ``g2s plugins`` and :attr:`broken` load them all.
+    error needs no plugin, ``g2s plugins`` and :meth:`broken` load them all (``--stage`` and ``broken(stage)``
+    that stage's).
     """
 
     def __init__(self) -> None:
@@ -114,11 +115,12 @@ class Registry:
             registry._unloaded.setdefault(stage if stage in BY_KEY else None, []).append((order, package, ep))
         return registry
 
-    @property
-    def broken(self) -> list[BrokenPlugin]:
-        """Every entry point that could not be loaded or registered, in the order of the entry points."""
-        self._load(None)
-        return [broken for _, broken in sorted(self._broken, key=lambda pair: pair[0])]
+    def broken(self, stage: str | None = None) -> list[BrokenPlugin]:
+        """The entry points named ``<stage>.<anything>`` (every one when ``None``) that could not be loaded or
+        registered, in the order of the entry points; only those entry points are loaded."""
+        self._load(stage)
+        return [broken for _, broken in sorted(self._broken, key=lambda pair: pair[0])
+                if stage is None or broken.entry_point.split(".", 1)[0] == stage]
 
     def _load(self, stage: str | None) -> None:
         """Load the entry points of ``stage`` (of every stage when ``None``) and those named after no stage,

@@ -200,7 +200,7 @@ def test_a_plugin_that_exits_as_it_loads_is_listed_broken(capsys):
 
     registry = Registry()
     registry._unloaded[None] = [(0, "quitting-pkg", Quits())]
-    assert [(b.package, b.reason) for b in registry.broken] == [("quitting-pkg", "SystemExit: 2")]
+    assert [(b.package, b.reason) for b in registry.broken()] == [("quitting-pkg", "SystemExit: 2")]
     with pytest.raises(PluginFailure, match=r"^Analyzer plugin 'quits' \(package 'quitting-pkg'\) failed to load: SystemExit: 2$"):
         registry.get("analyzers", "quits")
 

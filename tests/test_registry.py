@@ -350,8 +350,8 @@ def test_a_plugin_that_fails_to_load_is_kept_aside(monkeypatch):
     monkeypatch.setattr(importlib.metadata, "entry_points", lambda group: [good, bad])
     registry = Registry.from_entry_points()
     assert [p.name for p in registry.plugins()] == ["first_k"]
-    assert [(b.entry_point, b.target) for b in registry.broken] == [("terminals.gone", "no_such_package_g2s.plugin")]
-    assert "No module named 'no_such_package_g2s'" in registry.broken[0].reason
+    assert [(b.entry_point, b.target) for b in registry.broken()] == [("terminals.gone", "no_such_package_g2s.plugin")]
+    assert "No module named 'no_such_package_g2s'" in registry.broken()[0].reason
     with pytest.raises(PluginFailure, match=r"^TerminalSelector plugin 'gone' \(package '\?'\) failed to load: "):
         registry.get("terminals", "gone")
     with pytest.raises(ConfigError, match=r"failed to load: terminals.gone of package '\?', see `g2s plugins`"):
@@ -371,7 +371,7 @@ def test_two_installed_plugins_of_one_name_stop_the_runs_that_ask_for_it(monkeyp
     found = [entry_point("pkg-b", OTHER_FIRST_K), entry_point("pkg-a", FIRST_K)]
     monkeypatch.setattr(importlib.metadata, "entry_points", lambda group: found)
     registry = Registry.from_entry_points()
-    assert [(b.package, b.entry_point) for b in registry.broken] == [("pkg-b", "terminals.first_k")]
+    assert [(b.package, b.entry_point) for b in registry.broken()] == [("pkg-b", "terminals.first_k")]
     with pytest.raises(PluginFailure, match=r"two plugins provide TerminalSelector 'first_k': package 'pkg-a'"):
         registry.get("terminals", "first_k")
 
@@ -426,7 +426,7 @@ def test_entry_points_load_when_their_stage_is_first_asked_for(monkeypatch):
     assert [p.name for p in registry.plugins("terminals")] == ["any_k", "first_k"]
     assert sorted(loaded) == ["anything", "terminals.first_k", "terminals.gone"]
     assert registry.get("analyzers", "depth").stage == "analyzers"
-    assert [b.entry_point for b in registry.broken] == ["analyzers.gone", "terminals.gone"]
+    assert [b.entry_point for b in registry.broken()] == ["analyzers.gone", "terminals.gone"]
     assert sorted(loaded) == ["analyzers.depth", "analyzers.gone", "anything", "terminals.first_k", "terminals.gone"]
 
 

@@ -1,6 +1,7 @@
 """What the answers that need no computation import (docs/performance.md, "Start-up"): `g2s --version` no plugin
 and no heavy library; `--help`, a config error and `g2s presets` only the plugins they name, none of trimesh, scipy,
-networkx, numpy. Each case runs in a fresh interpreter, so the test sees exactly what that command imported."""
+networkx, numpy; `g2s plugins --stage KEY` only that stage's plugins. Each case runs in a fresh interpreter, so the
+test sees exactly what that command imported."""
 
 from __future__ import annotations
 
@@ -12,6 +13,9 @@ import pytest
 
 from tests.conftest import PROJECT
 
+COMMANDS_AND_WRITERS = {"g2s_plugins.batch", "g2s_plugins.batch.command", "g2s_plugins.batch.runner",
+                        "g2s_plugins.outputs", "g2s_plugins.outputs.writers"}
+"""The plugin modules the parser needs: the commands it offers and the writers `g2s run --help` names."""
 HEAVY = ("trimesh", "scipy", "networkx", "numpy", "pymeshlab", "rustworkx", "igraph", "plotly", "matplotlib", "PIL")
 
 PROBE = """
@@ -46,8 +50,7 @@ def test_help_and_presets_load_only_the_commands_and_writers_they_show(argv):
     answer = imported(*argv)
     assert answer["code"] == 0 and answer["out"]
     plugins = {name for name in answer["modules"] if name.startswith("g2s_plugins.")}
-    assert plugins <= {"g2s_plugins.batch", "g2s_plugins.batch.command", "g2s_plugins.batch.runner",
-                       "g2s_plugins.outputs", "g2s_plugins.outputs.writers"}
+    assert plugins <= COMMANDS_AND_WRITERS
     assert not [name for name in answer["modules"] if not name.startswith("g2s_plugins")]
 
 
@@ -57,3 +60,23 @@ def test_a_config_error_is_found_before_any_heavy_library_loads(tmp_path):
     answer = imported("run", str(config), "level.obj", "-o", str(tmp_path / "out"))
     assert answer["code"] == 2 and "agnet: unknown key" in answer["err"]
     assert not [name for name in answer["modules"] if not name.startswith("g2s_plugins")]
+
+
+@pytest.mark.parametrize(("stage", "modules"), [
+    ("outputs", set()),
+    ("executors", {"g2s_plugins.executors", "g2s_plugins.executors.dask_cluster", "g2s_plugins.executors.process_pool",
+                   "g2s_plugins.executors.serial"}),
+])
+def test_plugins_of_one_stage_load_that_stage_alone(stage, modules):
+    """The broken plugins it lists are that stage's too, so no other stage (trimesh and scipy with them) loads."""
+    answer = imported("plugins", "--stage", stage)
+    assert answer["code"] == 0 and answer["out"].startswith(f"{stage}\n")
+    assert {name for name in answer["modules"] if name.startswith("g2s_plugins.")} == COMMANDS_AND_WRITERS | modules
+    assert not [name for name in answer["modules"] if not name.startswith("g2s_plugins")]
+
+
+def test_the_sample_levels_are_listed_without_trimesh_or_scipy():
+    """Their parameters are their factories' signatures; the sample modules import trimesh and scipy where they build."""
+    answer = imported("plugins", "--stage", "levels")
+    assert answer["code"] == 0 and "\n  dungeon  (graph2structure)\n" in answer["out"]
+    assert {name.partition(".")[0] for name in answer["modules"]} == {"g2s_plugins", "numpy"}

@@ -15,13 +15,16 @@ import inspect
 import re
 import typing
 from collections.abc import Callable
+from typing import TYPE_CHECKING
 
-import trimesh
 from pydantic import Field, create_model
 
 from g2s_core.errors import G2SError
 from g2s_core.plugin import PluginParams, hookimpl
 from g2s_plugins.samples.levels import SAMPLES, SampleLevel
+
+if TYPE_CHECKING:
+    import trimesh
 
 
 class SampleGenerator:

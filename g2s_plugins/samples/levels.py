@@ -36,15 +36,17 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Annotated, Any
+from typing import TYPE_CHECKING, Annotated, Any
 
 import numpy as np
-import trimesh
 from pydantic import Field, NonNegativeFloat, NonNegativeInt, PositiveFloat, PositiveInt, validate_call
-from scipy.sparse import coo_matrix
-from scipy.sparse.csgraph import minimum_spanning_tree
 
 from g2s_core.model import Opening, Vec3, vec3
+
+# trimesh and scipy are imported in the functions that build with them, here and in the other sample modules:
+# `g2s plugins` lists every sample level (its factory's signature) without them (docs/performance.md, "Start-up")
+if TYPE_CHECKING:
+    import trimesh
 
 WALL_HEIGHT = 3.0
 """Height of every wall above the floor it bounds, metres."""
@@ -192,6 +194,8 @@ def _turned_rectangle(cx: float, cz: float, half_x: float, half_z: float, angle:
 
 def _hexahedra_mesh(corners: np.ndarray) -> trimesh.Trimesh:
     """One mesh from hexahedra (n, 8, 3), 12 outward triangles each, vertices merged."""
+    import trimesh
+
     n = len(corners)
     vertices = corners.reshape(-1, 3)
     faces = (_HEX_FACES[None, :, :] + 8 * np.arange(n, dtype=np.int64)[:, None, None]).reshape(-1, 3)
@@ -751,6 +755,9 @@ def _spanning_tree_plus_loops(
     """Indices of the chosen ``pairs``: a random spanning tree of the n rooms, then
     ``round(loops * n)`` (at least 1 when ``loops > 0``, as far as there are spare pairs)
     other pairs. Returns (indices, number of extra pairs)."""
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import minimum_spanning_tree
+
     weights = 1.0 + rng.random(len(pairs))
     in_tree = np.zeros(len(pairs), dtype=bool)
     if n > 1:

@@ -15,8 +15,6 @@ from typing import Annotated, Any
 
 import numpy as np
 from pydantic import Field, NonNegativeInt, PositiveFloat, validate_call
-from scipy import sparse
-from scipy.sparse import csgraph
 
 from g2s_plugins.samples.levels import SLAB_THICKNESS, WALL_HEIGHT, WALL_THICKNESS, Probability, SampleLevel, _LevelBuilder
 
@@ -130,6 +128,9 @@ def _wall_islands(east: np.ndarray, south: np.ndarray) -> int:
     south wall from (i, j + 1) to (i + 1, j + 1). The outer wall joins every
     boundary corner, so those count as one group, which is no hole.
     """
+    from scipy import sparse  # imported here, as in levels.py: `g2s plugins` lists the mazes without scipy
+    from scipy.sparse import csgraph
+
     cells = east.shape[1]
     ei, ej = np.nonzero(east)
     si, sj = np.nonzero(south)

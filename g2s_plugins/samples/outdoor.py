@@ -14,14 +14,16 @@ from __future__ import annotations
 
 import dataclasses
 import math
+from typing import TYPE_CHECKING
 
 import numpy as np
-import trimesh
 from pydantic import NonNegativeFloat, NonNegativeInt, PositiveFloat, validate_call
-from scipy.sparse import coo_matrix
-from scipy.sparse.csgraph import connected_components
 
 from g2s_plugins.samples.levels import DESIGN_AGENT, SampleLevel, _LevelBuilder, _plan_hexahedra, _turned_rectangle
+
+# trimesh and scipy are imported where used, as in levels.py: `g2s plugins` lists these levels without them
+if TYPE_CHECKING:
+    import trimesh
 
 _HILL_AREA = 400.0  # m² of map per hill or hollow
 _HILL_SIGMA = (6.0, 18.0)  # m, range of a hill's Gaussian width
@@ -204,6 +206,8 @@ def terrain(
         "largest_component_share": largest,
         "cycles": None,
     })
+    import trimesh
+
     mesh = trimesh.util.concatenate([ground, level.mesh])
     mesh.merge_vertices()
     return dataclasses.replace(level, mesh=mesh)
@@ -214,6 +218,8 @@ def _ground(axis: np.ndarray, height: np.ndarray, n: int) -> tuple[trimesh.Trime
 
     Triangle 2 (i n + j) and 2 (i n + j) + 1 are the two halves of grid square (i, j), both facing up.
     """
+    import trimesh
+
     gx, gz = np.meshgrid(axis, axis, indexing="ij")
     vertices = np.column_stack([gx.ravel(), height.ravel(), gz.ravel()])
     index = np.arange((n + 1) ** 2).reshape(n + 1, n + 1)
@@ -268,6 +274,9 @@ def _walkable_boundary(walkable: np.ndarray, step: float, n: int) -> float:
 
 def _components(walkable: np.ndarray, area: np.ndarray, n: int) -> tuple[int, float]:
     """(number of connected regions of walkable triangles, the largest one's share of their area)."""
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
+
     t0, t1, _ = _triangle_edges(n)
     keep = walkable[t0] & walkable[t1]
     graph = coo_matrix((np.ones(int(keep.sum())), (t0[keep], t1[keep])), shape=(len(walkable),) * 2)

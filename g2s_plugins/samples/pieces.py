@@ -46,15 +46,17 @@ from __future__ import annotations
 
 import math
 from dataclasses import replace
-from typing import Annotated
+from typing import TYPE_CHECKING, Annotated
 
 import numpy as np
-import trimesh
 from pydantic import Field, NonNegativeFloat, PositiveFloat, PositiveInt, validate_call
 
 from g2s_core.model import Vec3, vec3
 
 from g2s_plugins.samples.levels import SLAB_THICKNESS, SampleLevel, _LevelBuilder, _opening, _rect, _sloped_blocks
+
+if TYPE_CHECKING:
+    import trimesh
 
 PIECE_AGENT: dict[str, float] = {"radius": 0.4, "height": 2.0, "max_climb": 0.4, "max_slope_deg": 60.0}
 """The agent the pieces are designed for (metres, degrees): that of ``configs/map_piece.yaml``."""
@@ -864,12 +866,16 @@ def yaw_about_centre(mesh: trimesh.Trimesh, degrees: float) -> np.ndarray:
     kit exported at another heading, or a piece placed turned in a level and
     exported in world space, reaches the detector.
     """
+    import trimesh  # imported where used, as in levels.py: `g2s plugins` lists the pieces without it
+
     centre = np.asarray(mesh.bounds, dtype=np.float64).mean(axis=0)
     return trimesh.transformations.rotation_matrix(np.radians(degrees), [0.0, 1.0, 0.0], point=centre)
 
 
 def turned(level: SampleLevel, degrees: float) -> SampleLevel:
     """``level`` turned by ``degrees`` about its vertical centre line (:func:`yaw_about_centre`), openings with it."""
+    import trimesh
+
     matrix = yaw_about_centre(level.mesh, degrees)
     mesh = level.mesh.copy()
     mesh.apply_transform(matrix)

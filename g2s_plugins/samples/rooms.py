@@ -44,7 +44,6 @@ from collections.abc import Callable
 from typing import Any
 
 import numpy as np
-import trimesh
 from pydantic import PositiveFloat, PositiveInt, validate_call
 
 from g2s_plugins.samples.levels import (
@@ -627,6 +626,8 @@ def dungeon_shares(level: SampleLevel, chokepoints: list[dict[str, Any]], region
     :func:`g2s_plugins.samples.pieces.yaw_about_centre`), so the layout is
     turned with it; None when the level was analysed as generated.
     """
+    import trimesh  # imported where used, as in levels.py: `g2s plugins` lists the rooms without it
+
     turn = np.eye(4) if turn is None else np.asarray(turn, dtype=np.float64)
     labels = np.full(navmesh.polygon_count, -1)
     for region in regions:

@@ -54,7 +54,7 @@ def broken_of(folder: Path, monkeypatch: pytest.MonkeyPatch) -> dict[str, str]:
     monkeypatch.syspath_prepend(str(folder))
     registry = Registry.from_entry_points()
     registry.plugins("graph")
-    return {broken.entry_point: broken.reason for broken in registry.broken}
+    return {broken.entry_point: broken.reason for broken in registry.broken()}
 
 
 def test_a_plugin_whose_hook_is_misspelt_breaks_only_itself(tmp_path, monkeypatch):
