@@ -240,7 +240,7 @@ def test_a_chain_of_a_thousand_extends_is_read(tmp_path):
 
 def test_map_analysis_leaves_the_traffic_step_to_its_heat_guarantee():
     # docs/analysis_quality.md, "Where the structure's nodes come from": with min_heat_rho 0.9 the step kept nodes for
-    # rho over the target (0.1-5.5 points of structure); level_regions has no guarantee, so it keeps the step
+    # rho over the target (1.2 points of structure on the median level); level_regions has no guarantee, so keeps it
     for preset in ("map_analysis", "demo"):
         params = load_config(PRESETS_DIR / f"{preset}.yaml").simplify.params
         assert params.get("max_traffic_step") is None and params["min_heat_rho"] == 0.9
