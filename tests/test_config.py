@@ -236,13 +236,3 @@ def test_a_chain_of_a_thousand_extends_is_read(tmp_path):
     assert config.agent.radius == 0.3 and config.terminals.plugin == "entry_exit"
     (tmp_path / "c1000.yaml").write_text("extends: c500\n")
     assert error_of(tmp_path / "c0.yaml").endswith("c1000.yaml -> c500.yaml")  # a cycle is still one
-
-
-def test_map_analysis_leaves_the_traffic_step_to_its_heat_guarantee():
-    # docs/analysis_quality.md, "Where the structure's nodes come from": with min_heat_rho 0.9 the step kept nodes for
-    # rho over the target (1.2 points of structure on the median level); level_regions has no guarantee, so keeps it
-    for preset in ("map_analysis", "demo"):
-        params = load_config(PRESETS_DIR / f"{preset}.yaml").simplify.params
-        assert params.get("max_traffic_step") is None and params["min_heat_rho"] == 0.9
-    regions = load_config(PRESETS_DIR / "level_regions.yaml").simplify.params
-    assert regions["min_heat_rho"] is None and regions["max_traffic_step"] == 60.0
