@@ -98,10 +98,11 @@ class CommandParser(argparse.ArgumentParser):
         self.exit(2, f"g2s: error: {message} (see {self.prog} --help)\n")
 
     def _print_message(self, message: str, file: Any = None) -> None:
-        try:  # help to a closed output is said so, as any line
-            print(message, end="", file=_Stream("stderr" if file is sys.stderr else "stdout"), flush=True)
-        except G2SError as exc:
-            self.exit(2, f"g2s: error: {exc}\n")
+        try:  # help to a closed output is said so, as any line; both streams closed are both None: help went to stderr's
+            print(message, end="", file=_Stream("stdout" if file is sys.stdout else "stderr"), flush=True)
+        except G2SError as exc:  # not through exit(), which prints here: an exit's message with both closed came back
+            print(f"g2s: error: {exc}", file=_Stream("stderr"), flush=True)
+            raise SystemExit(2) from None
 
 
 def named(what: str, kind: Callable[[str], Any] = str) -> Callable[[str], Any]:
@@ -352,9 +353,8 @@ def _plugins(args: argparse.Namespace) -> int:
             lines.append(f"  {info.name}  ({info.package})")
             if info.summary:
                 lines.extend(_columns([("", info.summary)], console.width, indent=4))
-            parameters = [(f"{name}:", f"{accepted}, default {default}. {description}")
-                          for name, accepted, default, description in plugin_parameters(info)]
-            lines.extend(_columns(parameters, console.width, indent=6))
+            lines.extend(_columns([(f"{name}:", f"{accepted}, default {default}. {description}") for name, accepted,
+                                   default, description in plugin_parameters(info)], console.width, indent=6))
     console.print("\n".join(lines), markup=False, highlight=False, soft_wrap=True)
     for broken in registry.broken:
         if args.stage is None or broken.entry_point.split(".")[0] == args.stage:
