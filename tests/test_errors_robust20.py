@@ -1,13 +1,20 @@
 """Inputs robust20 (6 December 2026) found breaking docs/errors.md's rules: ``g2s --help`` and ``--version`` with
-both standard streams closed (exit 0, the help sent to the closed standard error's stream)."""
+both standard streams closed (exit 0, the help sent to the closed standard error's stream); a glTF file of no scene
+(trimesh's ``IndexError``, or "the mesh is empty" for a file holding a mesh)."""
 
 from __future__ import annotations
 
+import base64
+import json
+import struct
 import sys
+from pathlib import Path
 
 import pytest
 
 from g2s_core.cli import main
+from g2s_core.errors import MeshError
+from g2s_core.mesh import load_mesh
 
 
 def exit_code(args: list[str]) -> int:
@@ -33,3 +40,29 @@ def test_help_with_standard_error_closed_is_written_and_a_usage_error_is_not(mon
     assert capsys.readouterr().out.startswith("usage: g2s ")
     assert exit_code(["run"]) == 2
     assert capsys.readouterr().out == ""  # the error line does not go to standard output
+
+
+def gltf_of_one_triangle(path: Path, **document: object) -> Path:
+    """A glTF file of one triangle (its buffer a data URI), one node placing it, and ``document``'s keys over those."""
+    corners = struct.pack("<9f", 0, 0, 0, 1, 0, 0, 0, 0, 1)
+    path.write_text(json.dumps({
+        "asset": {"version": "2.0"}, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+        "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [0, 0, 0], "max": [1, 0, 1]}],
+        "bufferViews": [{"buffer": 0, "byteLength": len(corners)}],
+        "buffers": [{"byteLength": len(corners), "uri": "data:application/octet-stream;base64," + base64.b64encode(corners).decode()}],
+        **document}))
+    return path
+
+
+@pytest.mark.parametrize("scenes", [[], None])
+def test_a_gltf_of_no_scene_is_named_so(scenes, tmp_path):
+    # `scenes: []` was "cannot read mesh (IndexError: list index out of range)", trimesh's words; no `scenes` at all (a
+    # valid glTF: a library of meshes) "the mesh is empty (no triangles)", though the file holds a mesh
+    path = gltf_of_one_triangle(tmp_path / "level.gltf", scenes=scenes)
+    if scenes is None:
+        path.write_text(json.dumps({key: value for key, value in json.loads(path.read_text()).items() if key != "scenes"}))
+    with pytest.raises(MeshError) as raised:
+        load_mesh(path)
+    assert str(raised.value) == f"{path}: the file lists no scene, so none of its 1 mesh is placed; expected a scene of the level's nodes"
+    assert load_mesh(gltf_of_one_triangle(tmp_path / "sound.gltf"))[1].faces == 1
