@@ -241,8 +241,9 @@ def _run(args: argparse.Namespace, errors: Console, mesh_name: str | None = None
     plan = pipeline.plan(config, registry, source=source)
     mesh = api.open_mesh(args.mesh, config, name=mesh_name, registry=registry)
     quiet = args.quiet or args.json
-    # progress on a terminal only, so that an error stays the one line on stderr that scripts can rely on
-    live = not quiet and errors.is_terminal
+    # progress on a terminal only, so that an error stays the one line on stderr that scripts can rely on; the stream's
+    # own word, as rich takes FORCE_COLOR (colours, which CI logs ask for) for a terminal: a spinner came before the line
+    live = not quiet and errors.is_terminal and getattr(errors.file, "isatty", bool)()
     with errors.status("running") if live else nullcontext() as spinner:
         def say(message: str) -> None:  # the step on the spinner; a warning above it as raised, before a costly step
             stop_if_interrupted()  # a Ctrl-C that a library swallowed (importing trimesh) stops the run at its next step

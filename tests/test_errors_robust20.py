@@ -66,3 +66,12 @@ def test_a_gltf_of_no_scene_is_named_so(scenes, tmp_path):
         load_mesh(path)
     assert str(raised.value) == f"{path}: the file lists no scene, so none of its 1 mesh is placed; expected a scene of the level's nodes"
     assert load_mesh(gltf_of_one_triangle(tmp_path / "sound.gltf"))[1].faces == 1
+
+
+def test_force_color_shows_no_spinner_on_a_standard_error_that_is_no_terminal(monkeypatch, capsys, tmp_path):
+    # rich takes FORCE_COLOR (colours, as CI logs ask for) for a terminal: the spinner's frames, in escape codes, came
+    # before the error's line (two lines in a file)
+    monkeypatch.setenv("FORCE_COLOR", "1")
+    assert exit_code(["run", "graph_only", "sample:straight_corridor", "-o", str(tmp_path / "out"), "--set", "agent.radius=50"]) == 2
+    said = capsys.readouterr().err
+    assert said.startswith("g2s: error: straight_corridor: no walkable surface for the agent") and said.count("\n") == 1, said
