@@ -1,6 +1,7 @@
 """Inputs robust20 (6 December 2026) found breaking docs/errors.md's rules: ``g2s --help`` and ``--version`` with
 both standard streams closed (exit 0, the help sent to the closed standard error's stream); a glTF file of no scene
-(trimesh's ``IndexError``, or "the mesh is empty" for a file holding a mesh)."""
+(trimesh's ``IndexError``, or "the mesh is empty" for a file holding a mesh); ``FORCE_COLOR`` drawing the spinner on
+a standard error that is no terminal; an ``MPLBACKEND`` that matplotlib does not know, blamed on the writers."""
 
 from __future__ import annotations
 
@@ -15,6 +16,7 @@ import pytest
 from g2s_core.cli import main
 from g2s_core.errors import MeshError
 from g2s_core.mesh import load_mesh
+from tests.reliability.checks import CORRIDOR, assert_clean_error, run_g2s_process
 
 
 def exit_code(args: list[str]) -> int:
@@ -75,3 +77,13 @@ def test_force_color_shows_no_spinner_on_a_standard_error_that_is_no_terminal(mo
     assert exit_code(["run", "graph_only", "sample:straight_corridor", "-o", str(tmp_path / "out"), "--set", "agent.radius=50"]) == 2
     said = capsys.readouterr().err
     assert said.startswith("g2s: error: straight_corridor: no walkable surface for the agent") and said.count("\n") == 1, said
+
+
+def test_an_mplbackend_matplotlib_does_not_know_is_named_not_blamed_on_the_writer(monkeypatch, tmp_path):
+    # was exit 1, "OutputWriter plugin 'png' (package 'graph2structure') failed: raised ValueError: Key backend:
+    # 'nosuch' is not a valid value for backend; ...": matplotlib refuses it as it loads (a child process, where
+    # matplotlib is not loaded yet)
+    monkeypatch.setenv("MPLBACKEND", "nosuch")
+    outcome = run_g2s_process("run", "graph_only", CORRIDOR, "-o", tmp_path / "out", "--format", "json,png")
+    assert_clean_error(outcome, "MPLBACKEND: expected a backend matplotlib knows (e.g. agg), got 'nosuch'", "png output")
+    assert not (tmp_path / "out").exists()
