@@ -436,9 +436,8 @@ def _ply_damage(data: bytes) -> str | None:
             return problem
         extra = [number for number, values in rows[sum(count for _, count, _ in elements):] if values]
         return f"ASCII PLY has {_many(len(extra), 'row')} more than its header declares (from line {extra[0]})" if extra else None
-    if isinstance(size := _ply_binary(body, elements, order), str):
-        return size
-    return f"binary PLY has {len(body) - size} bytes more than its header declares" if len(body) > size else None
+    size = _ply_binary(body, elements, order)  # or where its data runs short
+    return size if isinstance(size, str) else f"binary PLY has {len(body) - size} bytes more than its header declares" if len(body) > size else None
 
 
 def _ply_header(data: bytes) -> tuple[list[tuple[str, int, list[list[bytes]]]], bytes, int, str | None] | str:

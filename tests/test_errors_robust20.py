@@ -87,3 +87,12 @@ def test_an_mplbackend_matplotlib_does_not_know_is_named_not_blamed_on_the_write
     outcome = run_g2s_process("run", "graph_only", CORRIDOR, "-o", tmp_path / "out", "--format", "json,png")
     assert_clean_error(outcome, "MPLBACKEND: expected a backend matplotlib knows (e.g. agg), got 'nosuch'", "png output")
     assert not (tmp_path / "out").exists()
+
+
+def test_networkx_settings_in_the_environment_that_it_refuses_are_named(monkeypatch, tmp_path):
+    # was exit 1, "internal error: ValueError: Unknown backend when setting 'algos': 'nosuch'": networkx refuses them as
+    # the Python API imports it (a child process, where networkx is not loaded yet)
+    monkeypatch.setenv("NETWORKX_BACKEND_PRIORITY", "nosuch")
+    outcome = run_g2s_process("run", "graph_only", CORRIDOR, "-o", tmp_path / "out")
+    assert_clean_error(outcome, "NETWORKX_BACKEND_PRIORITY='nosuch': networkx refused the environment's setting as it loaded "
+                       "(Unknown backend when setting 'algos': 'nosuch')")
