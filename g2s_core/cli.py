@@ -98,10 +98,11 @@ class CommandParser(argparse.ArgumentParser):
         self.exit(2, f"g2s: error: {message} (see {self.prog} --help)\n")
 
     def _print_message(self, message: str, file: Any = None) -> None:
-        try:  # help to a closed output is said so, as any line
-            print(message, end="", file=_Stream("stderr" if file is sys.stderr else "stdout"), flush=True)
-        except G2SError as exc:
-            self.exit(2, f"g2s: error: {exc}\n")
+        try:  # help to a closed output is said so, as any line; both streams closed are both None: help went to stderr's
+            print(message, end="", file=_Stream("stdout" if file is sys.stdout else "stderr"), flush=True)
+        except G2SError as exc:  # not through exit(), which prints here: an exit's message with both closed came back
+            print(f"g2s: error: {exc}", file=_Stream("stderr"), flush=True)
+            raise SystemExit(2) from None
 
 
 def named(what: str, kind: Callable[[str], Any] = str) -> Callable[[str], Any]:
@@ -240,8 +241,9 @@ def _run(args: argparse.Namespace, errors: Console, mesh_name: str | None = None
     plan = pipeline.plan(config, registry, source=source)
     mesh = api.open_mesh(args.mesh, config, name=mesh_name, registry=registry)
     quiet = args.quiet or args.json
-    # progress on a terminal only, so that an error stays the one line on stderr that scripts can rely on
-    live = not quiet and errors.is_terminal
+    # progress on a terminal only, so that an error stays the one line on stderr that scripts can rely on; the stream's
+    # own word, as rich takes FORCE_COLOR (colours, which CI logs ask for) for a terminal: a spinner came before the line
+    live = not quiet and errors.is_terminal and getattr(errors.file, "isatty", bool)()
     with errors.status("running") if live else nullcontext() as spinner:
         def say(message: str) -> None:  # the step on the spinner; a warning above it as raised, before a costly step
             stop_if_interrupted()  # a Ctrl-C that a library swallowed (importing trimesh) stops the run at its next step
@@ -352,9 +354,8 @@ def _plugins(args: argparse.Namespace) -> int:
             lines.append(f"  {info.name}  ({info.package})")
             if info.summary:
                 lines.extend(_columns([("", info.summary)], console.width, indent=4))
-            parameters = [(f"{name}:", f"{accepted}, default {default}. {description}")
-                          for name, accepted, default, description in plugin_parameters(info)]
-            lines.extend(_columns(parameters, console.width, indent=6))
+            lines.extend(_columns([(f"{name}:", f"{accepted}, default {default}. {description}") for name, accepted,
+                                   default, description in plugin_parameters(info)], console.width, indent=6))
     console.print("\n".join(lines), markup=False, highlight=False, soft_wrap=True)
     for broken in registry.broken(args.stage):
         console.print(f"[bold red]broken[/bold red] {escape(f'{broken.entry_point}  ({broken.package})')}")  # '[/x]' in them

@@ -3,15 +3,18 @@
 Loading the command line (:mod:`g2s_core.cli`, with pydantic, pluggy, rich
 and YAML) takes about half a second; a Ctrl-C then printed a traceback. This
 module, like the package's ``__init__``, imports only the standard library (and
-:mod:`g2s_core.result_folder`, which needs no more) and loads the command
+:mod:`g2s_core.result_folder` and :mod:`g2s_core.errors`, which need no more) and loads the command
 line under the command's interrupt handling, so that a Ctrl-C at
 any time ends as ``g2s: interrupted``, exit code 130.
 """
 
+import os
 import signal
 import sys
 from collections.abc import Iterator
 from contextlib import contextmanager
+
+from g2s_core.errors import G2SError
 
 
 def main() -> int:
@@ -29,7 +32,7 @@ def main() -> int:
 
         # remembered, as in the command: a Ctrl-C that lands in the import system's weakref callback was printed
         # as "Exception ignored in ..." and lost, and the run went on and wrote its results
-        with interrupts_held(hold=False):
+        with interrupts_held(hold=False), entry_points_readable():
             from g2s_core import cli
 
             stop_if_interrupted()
@@ -37,10 +40,8 @@ def main() -> int:
     except KeyboardInterrupt:  # cli.main answers it itself once its parser is built
         print("g2s: interrupted", file=sys.stderr)
         code = 130
-    except Exception:
-        if (broken := broken_entry_points()) is None:
-            raise
-        print(f"g2s: error: {broken}", file=sys.stderr)
+    except G2SError as exc:  # the environment's, as the command line loads (cli.main answers its own)
+        print(f"g2s: error: {exc}", file=sys.stderr)
         code = 2
     # The command is over, its files written or not: a Ctrl-C while the interpreter winds down (1.3 s after a run of
     # 584 polygons) killed it silently with SIGINT after "wrote ..." lines, and its results stood under a status of 130.
@@ -74,16 +75,17 @@ def broken_entry_points() -> str | None:
 
 @contextmanager
 def entry_points_readable() -> Iterator[None]:
-    """A block importing the Python API's libraries (networkx reads every installed package's entry points for its
-    backends as it loads, pydantic for its plugins): a failure that another package's unreadable ``entry_points.txt``
-    caused is raised as a :class:`~g2s_core.errors.G2SError` naming that package, as the console script names it,
-    not in importlib's traceback.
+    """A block importing the command line or the Python API's libraries (networkx reads every installed package's
+    entry points for its backends as it loads, pydantic for its plugins): a failure that another package's unreadable
+    ``entry_points.txt`` caused is raised as a :class:`~g2s_core.errors.G2SError` naming that package, not in
+    importlib's traceback; one that networkx raises for its settings in the environment (``NETWORKX_BACKEND_PRIORITY``
+    naming a backend not installed: a ``ValueError``, exit 1 as an internal error) naming them.
     """
     try:
         yield
-    except Exception:
-        if (broken := broken_entry_points()) is None:
+    except Exception as exc:
+        settings = ", ".join(f"{name}={value!r}" for name, value in sorted(os.environ.items()) if name.startswith("NETWORKX_"))
+        if not (broken := broken_entry_points() or isinstance(exc, ValueError) and settings and f"{settings}: networkx "
+                f"refused the environment's setting as it loaded ({exc}); unset it or name an installed networkx backend"):
             raise
-        from g2s_core.errors import G2SError
-
         raise G2SError(broken) from None

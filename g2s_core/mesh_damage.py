@@ -279,6 +279,8 @@ def _scene_damage(document: dict) -> str | None:
     count = {name: len(document.get(name, [])) for name in GLTF_LISTS}
     if "scene" in document and not _is_index(document["scene"], count["scenes"]):
         return _expected("scene", document["scene"], f"the index of one of the file's {_many(count['scenes'], 'scene')}")
+    if not count["scenes"] and count["meshes"]:  # a library of meshes: trimesh read "the mesh is empty" (`scenes: []` an IndexError)
+        return f"the file lists no scene, so none of its {_many(count['meshes'], 'mesh')} is placed; expected a scene of the level's nodes"
     for number, scene in _listed(document, "scenes"):
         if not (isinstance(nodes := scene.get("nodes", []), list) and all(_is_index(node, count["nodes"]) for node in nodes)):
             return _expected(f"scenes[{number}].nodes", nodes, f"a list of indices of the file's {_many(count['nodes'], 'node')}")
@@ -361,9 +363,8 @@ def _obj_damage(data: bytes) -> str | None:
 def _named_item(index: int, before: int, listed: int, name: str) -> str:
     """Why the OBJ face index ``index`` names no ``name`` (vertex ...), ``before`` of the file's ``listed`` preceding
     its line."""
-    if index == 0:
-        return f"; OBJ numbers {_many(2, name).partition(' ')[2]} from 1"
-    return f"; the file has {_many(listed, name)}" if index > 0 else \
+    return f"; OBJ numbers {_many(2, name).partition(' ')[2]} from 1" if index == 0 else \
+        f"; the file has {_many(listed, name)}" if index > 0 else \
         f", counted back from its line, but the file lists {_many(before, name)} before it"
 
 
@@ -435,9 +436,8 @@ def _ply_damage(data: bytes) -> str | None:
             return problem
         extra = [number for number, values in rows[sum(count for _, count, _ in elements):] if values]
         return f"ASCII PLY has {_many(len(extra), 'row')} more than its header declares (from line {extra[0]})" if extra else None
-    if isinstance(size := _ply_binary(body, elements, order), str):
-        return size
-    return f"binary PLY has {len(body) - size} bytes more than its header declares" if len(body) > size else None
+    size = _ply_binary(body, elements, order)  # or where its data runs short
+    return size if isinstance(size, str) else f"binary PLY has {len(body) - size} bytes more than its header declares" if len(body) > size else None
 
 
 def _ply_header(data: bytes) -> tuple[list[tuple[str, int, list[list[bytes]]]], bytes, int, str | None] | str:
@@ -506,9 +506,8 @@ def _ply_row(values: list[bytes], properties: list[list[bytes]], name: str, vert
 
 def _vertex(values: list[bytes]) -> str | None:
     """What is wrong with an OBJ or OFF vertex's values (x y z, then optional values such as a colour)."""
-    if problem := _not_numbers(values, "vertex coordinate", finite=True):
-        return problem
-    return f"a vertex of {len(values)} coordinates (expected x y z)" if len(values) < 3 else None
+    return _not_numbers(values, "vertex coordinate", finite=True) or \
+        (f"a vertex of {len(values)} coordinates (expected x y z)" if len(values) < 3 else None)
 
 
 def _face(values: list[bytes], vertices: int) -> str | None:
@@ -520,8 +519,8 @@ def _face(values: list[bytes], vertices: int) -> str | None:
         return f"a face of {_many(count, 'corner')}" + (" (at least 3 make a face)" if count < 3 else f" lists {len(corners)}")
     if wrong := next((corner for corner in corners if not corner.isdigit()), None):
         return f"face corner {_text(wrong)!r} is not a vertex index"
-    wrong_index = next((int(corner) for corner in corners if int(corner) >= vertices), None)
-    return None if wrong_index is None else f"a face refers to vertex {wrong_index}; the file has {_many(vertices, 'vertex')} (numbered from 0)"
+    return next((f"a face refers to vertex {index}; the file has {_many(vertices, 'vertex')} (numbered from 0)"
+                 for index in map(int, corners) if index >= vertices), None)
 
 
 def _declared_rows(rows: Rows, elements: list[tuple[str, int, Callable[[list[bytes]], str | None]]]) -> str | None:
@@ -561,7 +560,7 @@ def _ply_size(kind: bytes) -> int:
 
 def _many(count: int, name: str) -> str:
     """``1 vertex``, ``2 vertices``, ``0 faces``."""
-    return f"{count} {name if count == 1 else {'vertex': 'vertices'}.get(name, f'{name}s')}"
+    return f"{count} {name if count == 1 else {'vertex': 'vertices', 'mesh': 'meshes'}.get(name, f'{name}s')}"
 
 
 def _text(value: bytes) -> str:

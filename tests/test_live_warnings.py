@@ -57,6 +57,13 @@ def test_the_progress_callback_hears_each_warning_as_it_is_raised():
     assert told.index(raised[0]) == told.index("Step 2: terminals") + 1  # during step 2, not after the run
 
 
+class Terminal(io.StringIO):
+    """A stream that is a terminal, as it says."""
+
+    def isatty(self) -> bool:
+        return True
+
+
 def _run_on(errors: Console, monkeypatch, tmp_path, *options: str) -> str:
     """What ``g2s run`` prints on ``errors`` (its stderr console) for a run that warns."""
     monkeypatch.setattr(cli, "Output", lambda stderr=False, **_: errors if stderr else Console(file=io.StringIO()))
@@ -65,7 +72,7 @@ def _run_on(errors: Console, monkeypatch, tmp_path, *options: str) -> str:
 
 
 def test_a_terminal_shows_the_warning_above_the_spinner_once(monkeypatch, tmp_path):
-    shown = _run_on(Console(file=io.StringIO(), force_terminal=True, width=300), monkeypatch, tmp_path)
+    shown = _run_on(Console(file=Terminal(), force_terminal=True, width=300), monkeypatch, tmp_path)
     assert shown.count("g2s: warning: " + NO_TERMINALS) == 1
 
 

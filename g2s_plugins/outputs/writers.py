@@ -10,10 +10,12 @@ from __future__ import annotations
 
 import gc
 import importlib
+import os
 from collections.abc import Iterator
 from contextlib import contextmanager
 from pathlib import Path
 
+from g2s_core.errors import G2SError
 from g2s_core.model import RunResult
 from g2s_core.plugin import hookimpl
 
@@ -30,10 +32,29 @@ class LazyWriter:
     @hookimpl
     def g2s_write_output(self, result: RunResult, folder: Path) -> list[Path]:
         with collector_paused():
-            return importlib.import_module(self.module).write(result, folder)
+            try:
+                return importlib.import_module(self.module).write(result, folder)
+            except ValueError:
+                if (backend := refused_backend()) is None:
+                    raise
+                raise G2SError(f"MPLBACKEND: expected a backend matplotlib knows (e.g. agg), got {backend!r}: the "
+                               f"environment's, which matplotlib reads as it loads to draw the {self.NAME} output") from None
 
     def __repr__(self) -> str:
         return f"LazyWriter({self.NAME!r}, {self.module})"
+
+
+def refused_backend() -> str | None:
+    """The environment's ``MPLBACKEND`` when matplotlib refuses it as it loads, else ``None``: the ``ValueError`` of
+    its import failed the writers that draw with matplotlib (``png``, and ``html`` and ``glb`` for their colour scale),
+    exit 1, blaming them; the writers draw on Agg's canvas, without pyplot, whatever backend it names."""
+    if (backend := os.environ.get("MPLBACKEND")) is None:
+        return None
+    try:
+        importlib.import_module("matplotlib")
+    except ValueError:
+        return backend
+    return None
 
 
 @contextmanager
