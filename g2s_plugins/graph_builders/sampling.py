@@ -44,7 +44,17 @@ wanted. No Recast is involved: ``context.navmesh`` stays ``None``.
    points is walkable, has head room and changes height by at most a step
    or the max slope); a pair on one open floor triangle, both samples that
    far inside its edges, passes without a ray
-   (:class:`g2s_plugins._raycasting.OpenFloors`). Then the *gaps*
+   (:class:`g2s_plugins._raycasting.OpenFloors`). Then *passages the samples
+   miss* (:func:`moved_into_passages`): a passage a little wider than the
+   agent leaves its centre a band narrower than the spacing, which no grid
+   line may cross; the candidates turned away by a wall or a ledge with no
+   candidate that fits near them, or only ones of several parts of the graph
+   or of a part too small to keep, are moved straight off the nearest wall or
+   ledge by what they lack of the clearance, the band is followed both ways
+   out of the passage's mouths and into its turns, and the points where the
+   agent fits with its whole width (:func:`nearest_wall`, ground in
+   ``GROUND_DIRECTIONS`` directions) are added (area 0: they stand for no
+   candidate's cell) and joined by the same walk test. Then the *gaps*
    (:func:`_gap_pairs`): in a passage only slightly wider than twice the
    clearance the samples form a thin band, where the pick can leave two
    consecutive ones farther apart than ``connect_radius``; pairs up to
@@ -57,7 +67,7 @@ wanted. No Recast is involved: ``context.navmesh`` stays ``None``.
 Nodes (ids 0..n-1, ordered by x, then z, then y): ``pos`` (on the surface),
 ``normal`` (of the triangle under the sample), ``area`` (the walkable surface
 the sample stands for: the candidates nearest to it for ``poisson``,
-spacing² / cos(slope) for ``grid``), ``on_navmesh=True`` ("on the walkable
+spacing² / cos(slope) for ``grid``, 0 for a sample added in a passage), ``on_navmesh=True`` ("on the walkable
 surface"), ``polygon=-1``. Connected parts whose area is below
 ``min_region_area`` are dropped. ``graph.graph["sampling_stats"]`` holds
 the resolved settings and counts (candidates, samples, rays, ...). The same mesh and parameters always give the same graph.
@@ -76,6 +86,10 @@ not on one open floor triangle; the gaps, a k-d tree query within
 bounded Dijkstra search from the pairs left, tile by tile, and the walk
 test for the pairs that have no short way. Each ray is a search of Embree's bounding
 volume hierarchy (trimesh's own intersector without Embree).
+The passages: for s stranded candidates, up to ``MOVE_ROUNDS`` x (24 + 32
+rays and the ledge halvings) each, then the agent checks at up to
+2 x (``REACH_STEPS`` + ``END_HALVINGS``) points along each band, and the walk
+test for the added samples' pairs.
 """
 
 from __future__ import annotations
@@ -394,10 +408,12 @@ def inside_closed_solids(caster: RayCaster, points: np.ndarray, agent: AgentShap
 
 
 STRANDED_REACH = math.sqrt(2.0)
-"""Spacings: a candidate turned away by a wall or a ledge with no candidate that fits this near it is *stranded*
-(:func:`moved_into_passages`). Beside one straight wall or ledge of open floor some grid neighbour (8 of them, at
-most sqrt 2 spacings away) stands the clearance or more from it and fits, so the stranded are those of a passage
-whose free band no line of the grid crosses, a nook, or a top too small for the agent."""
+"""Spacings: a candidate turned away by a wall or a ledge is *stranded* (:func:`moved_into_passages`) when the
+candidates that fit this near it (``STRANDED_NEIGHBOURS`` at most) are none, or stand in more than one connected part
+of the graph, or in a part too small to keep. Beside one straight wall or ledge of open floor some grid neighbour (8
+of them, at most sqrt 2 spacings away) stands the clearance or more from it and fits, in the floor's part, so the
+stranded are those of a passage whose band no line of the grid crosses (or crosses only here and there, at a slant,
+leaving pieces of it apart), a nook, or a top too small for the agent."""
 
 STRANDED_NEIGHBOURS = 8
 """The candidates that fit nearest a turned-away one (within ``STRANDED_REACH`` spacings) that decide whether it is
@@ -535,22 +551,26 @@ def moved_into_passages(
     :data:`REJECTED_BY` index from :func:`agent_fits`, ``part`` (f,) the connected part of the sample each candidate
     that fits stands in, -1 for a part too small to keep, :func:`_joined_parts`).
 
-    1. *Moved*: each stranded candidate goes straight away from the wall or ledge nearest it, along the compass
-       direction with the least room (:func:`ledge_room`), until that direction's room is the clearance (and
-       ``EPSILON``), onto the ground there, up to ``MOVE_ROUNDS`` times (a wall on the other side moves it back, so
-       a passage the agent does not fit in stays empty).
-    2. *Followed*: from each one that moved, the band is followed both ways along the wall that moved it last (or
-       across the direction it moved, off a ledge), ``REACH_STEPS`` steps of half a spacing, each on the ground
+    1. *Moved*: each stranded candidate goes straight away from the nearer of the nearest wall (off its nearest
+       point, :func:`nearest_wall`) and the nearest ledge (back along the direction with the least room,
+       :func:`ledge_room`) until it stands the clearance (and ``EPSILON``) from it, onto the ground there, up to
+       ``MOVE_ROUNDS`` times (a wall on the other side moves it back, so a passage the agent does not fit in stays
+       empty).
+    2. *Followed*: from each one that moved, the band is followed both ways across its last move (along the wall
+       or ledge it moved off), ``REACH_STEPS`` steps of half a spacing, each on the ground
        and kept while the agent fits; where it stops fitting, the last place it fits is found by halving
        (``END_HALVINGS``). These reach out of a passage's mouth onto the floor beyond and, at a turn, into the
        corner where the two legs' bands cross, which straight edges from a sample a spacing away would cut.
 
-    Every point is kept where :func:`agent_fits` passes and no closed solid holds it, none of the moved or followed
-    ones within half a spacing of a candidate that fits or of an earlier one (the ends of the bands: within
-    ``EPSILON`` of an earlier end). The edges' walk test then decides, as for every sample, where the agent walks.
+    Every point is kept where the agent fits with its whole width (:func:`_fits_clear`: :func:`agent_fits`, no wall
+    nearer than the clearance, ground at the clearance all round, no closed solid), none of the moved or followed
+    ones within half a spacing of an earlier one (the ends of the bands: within ``EPSILON`` of an earlier end; a
+    followed point near a grid sample is kept, since where a leg the grid samples meets a missed one only the point
+    where their bands cross joins them). The edges' walk test then decides, as for every sample, where the agent
+    walks.
 
-    Cost: for s stranded candidates (none on open floor), ``MOVE_ROUNDS`` x (32 rays and the halvings) each, the
-    agent checks at up to 2 x (``REACH_STEPS`` + ``END_HALVINGS``) points each; one k-d tree query over the
+    Cost: for s stranded candidates (none on open floor), ``MOVE_ROUNDS`` x (24 + 32 rays and the halvings) each,
+    the checks at up to 2 x (``REACH_STEPS`` + ``END_HALVINGS``) points each; one k-d tree query over the
     turned-away candidates.
     """
     none = np.zeros((0, 3)), np.zeros(0, dtype=np.int64), np.zeros(0, dtype=np.int64)
