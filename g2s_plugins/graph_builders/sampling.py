@@ -44,7 +44,17 @@ wanted. No Recast is involved: ``context.navmesh`` stays ``None``.
    points is walkable, has head room and changes height by at most a step
    or the max slope); a pair on one open floor triangle, both samples that
    far inside its edges, passes without a ray
-   (:class:`g2s_plugins._raycasting.OpenFloors`). Then the *gaps*
+   (:class:`g2s_plugins._raycasting.OpenFloors`). Then *passages the samples
+   miss* (:func:`moved_into_passages`): a passage a little wider than the
+   agent leaves its centre a band narrower than the spacing, which no grid
+   line may cross; the candidates turned away by a wall or a ledge with no
+   candidate that fits near them, or only ones of several parts of the graph
+   or of a part too small to keep, are moved straight off the nearest wall or
+   ledge by what they lack of the clearance, the band is followed both ways
+   out of the passage's mouths and into its turns, and the points where the
+   agent fits with its whole width (:func:`nearest_wall`, ground in
+   ``GROUND_DIRECTIONS`` directions) are added (area 0: they stand for no
+   candidate's cell) and joined by the same walk test. Then the *gaps*
    (:func:`_gap_pairs`): in a passage only slightly wider than twice the
    clearance the samples form a thin band, where the pick can leave two
    consecutive ones farther apart than ``connect_radius``; pairs up to
@@ -57,7 +67,7 @@ wanted. No Recast is involved: ``context.navmesh`` stays ``None``.
 Nodes (ids 0..n-1, ordered by x, then z, then y): ``pos`` (on the surface),
 ``normal`` (of the triangle under the sample), ``area`` (the walkable surface
 the sample stands for: the candidates nearest to it for ``poisson``,
-spacing² / cos(slope) for ``grid``), ``on_navmesh=True`` ("on the walkable
+spacing² / cos(slope) for ``grid``, 0 for a sample added in a passage), ``on_navmesh=True`` ("on the walkable
 surface"), ``polygon=-1``. Connected parts whose area is below
 ``min_region_area`` are dropped. ``graph.graph["sampling_stats"]`` holds
 the resolved settings and counts (candidates, samples, rays, ...). The same mesh and parameters always give the same graph.
@@ -76,6 +86,10 @@ not on one open floor triangle; the gaps, a k-d tree query within
 bounded Dijkstra search from the pairs left, tile by tile, and the walk
 test for the pairs that have no short way. Each ray is a search of Embree's bounding
 volume hierarchy (trimesh's own intersector without Embree).
+The passages: for s stranded candidates, up to ``MOVE_ROUNDS`` x (24 + 32
+rays and the ledge halvings) each, then the agent checks at up to
+2 x (``REACH_STEPS`` + ``END_HALVINGS``) points along each band, and the walk
+test for the added samples' pairs.
 """
 
 from __future__ import annotations
@@ -284,13 +298,7 @@ def agent_fits(
     around = _Surroundings(caster, agent, clearance)
 
     # Walls and obstacles: horizontal rays; a walkable (ramp) face hit is ground, not a wall.
-    levels = sorted(
-        {
-            round(min(agent.max_climb + GROUND_MARGIN, agent.height - EPSILON), 6),
-            round(0.5 * agent.height, 6),
-            round(agent.height - 5 * EPSILON, 6),
-        }
-    )
+    levels = wall_levels(agent)
     far = around.steep.columns_free(points[idx], levels[0], levels[-1])
     near = idx[~far]
     for level in levels:
@@ -346,6 +354,18 @@ def agent_fits(
     return ok
 
 
+def wall_levels(agent: AgentShape) -> list[float]:
+    """Heights (m over a ground point, ascending) of :func:`agent_fits`' horizontal wall rays: knee (max climb and the
+    ground margin), waist (half the height) and head (the height less 5 cm)."""
+    return sorted(
+        {
+            round(min(agent.max_climb + GROUND_MARGIN, agent.height - EPSILON), 6),
+            round(0.5 * agent.height, 6),
+            round(agent.height - 5 * EPSILON, 6),
+        }
+    )
+
+
 REJECTED_BY = ("fits", "head room", "wall", "ledge")
 """What :func:`agent_fits` reports in ``rejected``: the index of the first check a point failed."""
 
@@ -385,6 +405,244 @@ def inside_closed_solids(caster: RayCaster, points: np.ndarray, agent: AgentShap
     inside[:] = False
     inside[rows] = True
     return inside
+
+
+STRANDED_REACH = math.sqrt(2.0)
+"""Spacings: a candidate turned away by a wall or a ledge is *stranded* (:func:`moved_into_passages`) when the
+candidates that fit this near it (``STRANDED_NEIGHBOURS`` at most) are none, or stand in more than one connected part
+of the graph, or in a part too small to keep. Beside one straight wall or ledge of open floor some grid neighbour (8
+of them, at most sqrt 2 spacings away) stands the clearance or more from it and fits, in the floor's part, so the
+stranded are those of a passage whose band no line of the grid crosses (or crosses only here and there, at a slant,
+leaving pieces of it apart), a nook, or a top too small for the agent."""
+
+STRANDED_NEIGHBOURS = 8
+"""The candidates that fit nearest a turned-away one (within ``STRANDED_REACH`` spacings) that decide whether it is
+stranded: a grid candidate's 8 neighbours."""
+
+MOVE_ROUNDS = 3
+"""Moves at most per stranded candidate (:func:`moved_into_passages`): one off a straight wall, one per wall it
+meets in a corner."""
+
+GROUND_DIRECTIONS = 32
+"""Level directions in which :func:`ledge_room` looks for a ledge and an added point needs ground at the clearance
+(:func:`_fits_clear`): a straight ledge is 360 / 64 degrees or less off one of them, so a band between ledges
+narrower than the agent by more than 1 - cos 5.625 degrees (0.5 %) holds no such point, and a move along the one
+with least room puts a point that far from the ledge (:func:`agent_fits`' 8 directions let a point stand 0.46 m from
+a ledge 22 degrees off them)."""
+
+AROUND = np.array(
+    [[math.cos(a), 0.0, math.sin(a)] for a in np.arange(GROUND_DIRECTIONS) * (2.0 * math.pi / GROUND_DIRECTIONS)]
+)
+"""(GROUND_DIRECTIONS, 3) unit level vectors, counter-clockwise from +x in plan."""
+
+LEDGE_HALVINGS = 6
+"""Halvings that place a ledge along a direction (:func:`ledge_room`): to a 64th of the clearance (8 mm for 0.5 m)."""
+
+REACH_STEPS = 4
+"""Steps of half a spacing a moved sample's band is followed each way (:func:`moved_into_passages`): two spacings,
+from a passage's first samples out past its mouth (a clearance deep) onto the floor it opens on."""
+
+END_HALVINGS = 6
+"""Halvings that place the last point of a band the agent fits at (:func:`moved_into_passages`): to a 128th of a
+spacing (8 mm for 1 m), finer than the band of a passage 5 cm wider than the agent."""
+
+
+def nearest_wall(caster: RayCaster, points: np.ndarray, agent: AgentShape, clearance: float) -> tuple[np.ndarray, np.ndarray]:
+    """``(distance, away)``: (n,) metres from each ground point ((n, 3)) to the nearest steep triangle that a compass
+    ray at a wall ray's height (:func:`wall_levels`) meets within ``clearance`` / cos 22.5 degrees (inf: none), and
+    (n, 3) the level unit direction from that triangle's nearest point to the point.
+
+    The distance is to the triangle, not along the ray: a wall 22 degrees off a compass direction that
+    :func:`agent_fits`' rays read 0.5 m away stands 0.46 m off, and the agent, 0.5 m wide each side, does not fit
+    there; at a passage's mouth the rays meet the wall's end face beside it, whose nearest point is its corner.
+    24 rays a point, the nearest points by ``trimesh.triangles.closest_point``.
+    """
+    points = np.asarray(points, dtype=np.float64).reshape(-1, 3)
+    distance = np.full(len(points), np.inf)
+    away = np.zeros((len(points), 3))
+    reach = clearance / math.cos(math.pi / len(COMPASS))
+    for level in wall_levels(agent):
+        origins = points + level * UP
+        for direction in COMPASS:
+            hits = caster.first_hits(origins, direction)
+            wall = np.flatnonzero((hits.distance < reach) & ~caster.walkable_faces(hits.face, agent.max_slope_deg))
+            if len(wall) == 0:
+                continue
+            nearest = trimesh.triangles.closest_point(np.asarray(caster.mesh.triangles)[hits.face[wall]], origins[wall])
+            level_offset = (origins[wall] - nearest) * [1.0, 0.0, 1.0]
+            length = np.linalg.norm(level_offset, axis=1)
+            nearer = length < distance[wall]
+            rows = wall[nearer]
+            distance[rows] = length[nearer]
+            away[rows] = np.where((length[nearer] > 0)[:, None], level_offset[nearer] / np.maximum(length[nearer], 1e-12)[:, None], -direction)
+    return distance, away
+
+
+def ledge_room(caster: RayCaster, points: np.ndarray, agent: AgentShape, clearance: float) -> np.ndarray:
+    """(n, ``GROUND_DIRECTIONS``) metres, at most ``clearance``: how far each ground point ((n, 3)) may go along each
+    of the ``AROUND`` directions before a ledge: where a downward ray from a step or the max slope over the clearance (and the ground margin) above
+    the point's height finds no walkable face within twice that. Where the probe at the clearance finds none, the
+    last probe that does is found by halving (``LEDGE_HALVINGS``); a probe inside a wall finds none either, so a
+    wall's foot reads as a ledge too. Plain rays (no crack, no head room over the landing): the answer places a point,
+    :func:`agent_fits` decides on it. ``GROUND_DIRECTIONS`` downward rays a point and ``LEDGE_HALVINGS`` more for each
+    direction with a ledge.
+    """
+    points = np.asarray(points, dtype=np.float64).reshape(-1, 3)
+    room = np.full((len(points), GROUND_DIRECTIONS), float(clearance))
+    rows, dirs = np.divmod(np.arange(room.size), GROUND_DIRECTIONS)
+    edge = ~_ground_at(caster, agent, clearance, points[rows] + clearance * AROUND[dirs])[0]
+    rows, dirs = rows[edge], dirs[edge]
+    low, high = np.zeros(len(rows)), np.full(len(rows), float(clearance))
+    for _ in range(LEDGE_HALVINGS):
+        middle = 0.5 * (low + high)
+        found = _ground_at(caster, agent, clearance, points[rows] + middle[:, None] * AROUND[dirs])[0]
+        low, high = np.where(found, middle, low), np.where(found, high, middle)
+    room[rows, dirs] = low
+    return room
+
+
+def _ground_at(caster: RayCaster, agent: AgentShape, clearance: float, points: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``(found, ground, face)``: (n,) bool, walkable ground within a step or the max slope over ``clearance`` of each
+    point's ((n, 3)) height; (n, 3) the point moved onto it; (n,) its face (-1: none). One downward ray each."""
+    reach = float(agent.max_rise(clearance)) + GROUND_MARGIN
+    down = caster.first_hits(points + reach * UP, -UP)
+    found = (down.distance <= 2.0 * reach) & caster.walkable_faces(down.face, agent.max_slope_deg)
+    ground = points + np.where(found, reach - down.distance, 0.0)[:, None] * UP
+    return found, ground, np.where(found, down.face, -1)
+
+
+def _fits_clear(caster: RayCaster, agent: AgentShape, clearance: float, points: np.ndarray) -> np.ndarray:
+    """(n,) bool: the agent fits at each ground point ((n, 3); :func:`agent_fits`), no steep triangle its rays meet
+    lies nearer than ``clearance`` (:func:`nearest_wall`), there is ground at the clearance in ``GROUND_DIRECTIONS``
+    directions (:func:`_ground_at`) and no closed solid holds it (:func:`inside_closed_solids`)."""
+    ok = agent_fits(caster, points, agent, clearance)
+    ok[ok] = nearest_wall(caster, points[ok], agent, clearance)[0] >= clearance
+    rows = np.flatnonzero(ok)
+    probes = (points[rows][:, None, :] + clearance * AROUND[None, :, :]).reshape(-1, 3)
+    ok[rows] = _ground_at(caster, agent, clearance, probes)[0].reshape(len(rows), GROUND_DIRECTIONS).all(axis=1)
+    ok[ok] = ~inside_closed_solids(caster, points[ok], agent)
+    return ok
+
+
+def _fit_on_ground(caster: RayCaster, agent: AgentShape, clearance: float, points: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``(ok, ground, face)`` as :func:`_ground_at`, ``ok`` also requiring :func:`_fits_clear` there."""
+    ok, ground, face = _ground_at(caster, agent, clearance, points)
+    ok[ok] = _fits_clear(caster, agent, clearance, ground[ok])
+    return ok, ground, face
+
+
+def moved_into_passages(
+    caster: RayCaster,
+    agent: AgentShape,
+    clearance: float,
+    spacing: float,
+    candidates: np.ndarray,
+    fits: np.ndarray,
+    rejected: np.ndarray,
+    part: np.ndarray,
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``(points, faces, stranded)``: points added where a passage's band holds no candidate that fits, (k, 3) m;
+    (k,) the caster's faces under them; the indices of the stranded candidates (below) they were found from.
+
+    A passage only a little wider than the agent leaves its centre a band narrower than the spacing, which the
+    grid's lines (or the Poisson candidates) may all miss: the passage then holds no sample and the floors it joins
+    are apart (the band of a flight 1.4 m wide, 0.4 m, missed by a 1 m grid's rows 0.07 m each side). Its candidates
+    are stranded (``STRANDED_REACH``; ``candidates`` (n, 3), ``fits`` (n,) bool, ``rejected`` (n,) the
+    :data:`REJECTED_BY` index from :func:`agent_fits`, ``part`` (f,) the connected part of the sample each candidate
+    that fits stands in, -1 for a part too small to keep, :func:`_joined_parts`).
+
+    1. *Moved*: each stranded candidate goes straight away from the nearer of the nearest wall (off its nearest
+       point, :func:`nearest_wall`) and the nearest ledge (back along the direction with the least room,
+       :func:`ledge_room`) until it stands the clearance (and ``EPSILON``) from it, onto the ground there, up to
+       ``MOVE_ROUNDS`` times (a wall on the other side moves it back, so a passage the agent does not fit in stays
+       empty).
+    2. *Followed*: from each one that moved, the band is followed both ways across its last move (along the wall
+       or ledge it moved off), ``REACH_STEPS`` steps of half a spacing, each on the ground
+       and kept while the agent fits; where it stops fitting, the last place it fits is found by halving
+       (``END_HALVINGS``). These reach out of a passage's mouth onto the floor beyond and, at a turn, into the
+       corner where the two legs' bands cross, which straight edges from a sample a spacing away would cut.
+
+    Every point is kept where the agent fits with its whole width (:func:`_fits_clear`: :func:`agent_fits`, no wall
+    nearer than the clearance, ground at the clearance all round, no closed solid), none of the moved or followed
+    ones within half a spacing of an earlier one (the ends of the bands: within ``EPSILON`` of an earlier end; a
+    followed point near a grid sample is kept, since where a leg the grid samples meets a missed one only the point
+    where their bands cross joins them). The edges' walk test then decides, as for every sample, where the agent
+    walks.
+
+    Cost: for s stranded candidates (none on open floor), ``MOVE_ROUNDS`` x (24 + 32 rays and the halvings) each,
+    the checks at up to 2 x (``REACH_STEPS`` + ``END_HALVINGS``) points each; one k-d tree query over the
+    turned-away candidates.
+    """
+    none = np.zeros((0, 3)), np.zeros(0, dtype=np.int64), np.zeros(0, dtype=np.int64)
+    turned = np.flatnonzero(np.isin(rejected, (REJECTED_BY.index("wall"), REJECTED_BY.index("ledge"))))
+    if clearance <= 0 or len(turned) == 0:
+        return none
+    fitting = cKDTree(candidates[fits]) if np.any(fits) else None
+    if fitting is not None:
+        near = fitting.query(candidates[turned], k=STRANDED_NEIGHBOURS, distance_upper_bound=STRANDED_REACH * spacing * (1.0 + 1e-9))[1]
+        found = near < len(part)
+        label = np.where(found, np.concatenate([part, [-1]])[near], -1)
+        lowest = np.where(found, label, np.iinfo(np.int64).max).min(axis=1)
+        highest = label.max(axis=1)
+        small = np.any(found & (label < 0), axis=1)
+        turned = turned[~found.any(axis=1) | small | (lowest != highest)]
+    landed, points, face = _ground_at(caster, agent, clearance, candidates[turned])
+    points, face = points[landed], face[landed]
+    along = np.zeros((len(points), 3))  # the band's direction where a point moved (0: it did not)
+    moving = np.arange(len(points))
+    for _ in range(MOVE_ROUNDS):
+        if len(moving) == 0:
+            break
+        # away from the nearer of the nearest wall (straight off it) and the nearest ledge (along the compass ray)
+        wall, off_wall = nearest_wall(caster, points[moving], agent, clearance)
+        room = ledge_room(caster, points[moving], agent, clearance)
+        worst = np.argmin(room, axis=1)
+        ledge = room[np.arange(len(moving)), worst]
+        off_wall_first = wall <= ledge + clearance / 2**LEDGE_HALVINGS  # a wall's foot reads as a ledge too
+        short = clearance - np.where(off_wall_first, wall, ledge)
+        away = np.where(off_wall_first[:, None], off_wall, -AROUND[worst])
+        move = short > 0
+        moving, short, away = moving[move], short[move], away[move]
+        along[moving] = np.cross(away, UP)
+        landed, points[moving], face[moving] = _ground_at(caster, agent, clearance, points[moving] + (short + EPSILON)[:, None] * away)
+        face[moving[~landed]] = -1
+        moving = moving[landed]
+    ok = face >= 0
+    ok[ok] = _fits_clear(caster, agent, clearance, points[ok])
+    moved, moved_face, along = points[ok], face[ok], along[ok]
+
+    # Followed: both ways from each moved point along its band.
+    starts = np.flatnonzero(np.any(along != 0.0, axis=1))
+    last = np.concatenate([moved[starts], moved[starts]])
+    heading = np.concatenate([along[starts], -along[starts]])
+    steps: list[tuple[np.ndarray, np.ndarray]] = []
+    going = np.arange(len(last))
+    stopped = np.zeros(0, dtype=np.int64)
+    step = 0.5 * spacing
+    for _ in range(REACH_STEPS):
+        fit, ground, under = _fit_on_ground(caster, agent, clearance, last[going] + step * heading[going])
+        steps.append((ground[fit], under[fit]))
+        stopped = np.concatenate([stopped, going[~fit]])
+        last[going[fit]] = ground[fit]
+        going = going[fit]
+    low, high = np.zeros(len(stopped)), np.full(len(stopped), step)
+    end, end_face = last[stopped].copy(), np.full(len(stopped), -1, dtype=np.int64)
+    for _ in range(END_HALVINGS):
+        middle = 0.5 * (low + high)
+        fit, ground, under = _fit_on_ground(caster, agent, clearance, last[stopped] + middle[:, None] * heading[stopped])
+        end[fit], end_face[fit] = ground[fit], under[fit]
+        low, high = np.where(fit, middle, low), np.where(fit, high, middle)
+    end, end_face = end[end_face >= 0], end_face[end_face >= 0]
+    if len(end) > 1:
+        first = np.sort(_throw_darts(end, EPSILON))
+        end, end_face = end[first], end_face[first]
+
+    points = np.concatenate([moved, *(p for p, _ in steps)])
+    face = np.concatenate([moved_face, *(f for _, f in steps)])
+    if len(points) > 1:
+        first = np.sort(_throw_darts(points, 0.5 * spacing))
+        points, face = points[first], face[first]
+    return np.concatenate([points, end]), np.concatenate([face, end_face]), turned
 
 
 class _Surroundings:
@@ -580,6 +838,14 @@ def _throw_darts(points: np.ndarray, radius: float) -> np.ndarray:
     return np.asarray(taken, dtype=np.int64)
 
 
+def _joined_parts(count: int, edges: np.ndarray, areas: np.ndarray, min_area: float) -> np.ndarray:
+    """(count,) the connected part of each sample along ``edges`` ((m, 2) ids), -1 for a part standing for less than
+    ``min_area`` m² (``areas``: (count,) m²) in all."""
+    links = sparse.coo_array((np.ones(len(edges), dtype=np.int8), (edges[:, 0], edges[:, 1])), shape=(count, count))
+    parts, part = csgraph.connected_components(links, directed=False)
+    return np.where(np.bincount(part, weights=areas, minlength=parts)[part] < min_area, -1, part)
+
+
 def _small_regions(count: int, edges: np.ndarray, areas: np.ndarray, min_area: float) -> tuple[np.ndarray, int]:
     """``(small, parts)``: (count,) bool, the samples of connected parts standing for less than ``min_area``
     m² in all; and how many such parts there are (none if ``min_area`` is 0).
@@ -750,7 +1016,8 @@ def build_sampled_graph(
         candidates, faces = _grid_candidates(surface, spacing)
         candidate_area = 0.0
     lap("candidates")
-    fits = agent_fits(caster, candidates, agent, clearance, surface, faces)
+    rejected = np.zeros(len(candidates), dtype=np.int8)
+    fits = agent_fits(caster, candidates, agent, clearance, surface, faces, rejected)
     lap("agent_checks")
     # Before the Poisson-disk pick, not after: a candidate inside a solid could
     # otherwise block one outside it or add to a sample's area.
@@ -769,34 +1036,59 @@ def build_sampled_graph(
         areas = np.bincount(owner, minlength=len(samples)) * candidate_area
     else:
         samples, sample_normals = kept, normals
+        owner = np.arange(len(kept))
         areas = spacing**2 / np.maximum(sample_normals[:, 1], 1e-6)
     lap("samples")
 
     # Deterministic node order: by x, then z, then y.
     order = np.lexsort((samples[:, 1], samples[:, 2], samples[:, 0]))
     samples, sample_normals, areas = samples[order], sample_normals[order], areas[order]
-    sample_normals = sample_normals / np.linalg.norm(sample_normals, axis=1, keepdims=True)
+    owner = np.argsort(order)[owner]  # each candidate that fits: its sample's id
 
     pairs = cKDTree(samples).query_pairs(connect, output_type="ndarray") if len(samples) > 1 else np.zeros((0, 2), int)
     pairs = np.sort(np.asarray(pairs, dtype=np.int64).reshape(-1, 2), axis=1)
     pairs = pairs[np.lexsort((pairs[:, 1], pairs[:, 0]))]
     floors = OpenFloors(caster, agent, min_inradius=0.5 * spacing)
     half_width = DISK_SHARE * clearance
-    floor = floors.faces_under(samples, floors.certain_offset(GROUND_MARGIN, None), room=half_width)
+    offset = floors.certain_offset(GROUND_MARGIN, None)
+    floor = floors.faces_under(samples, offset, room=half_width)
     edges = pairs[_walkable_pairs(caster, agent, samples, floor, pairs, probe_step, half_width)]
+    candidate_edges = len(pairs)
     lap("edges")
+
+    min_area = params.min_region_area if params.min_region_area is not None else 16.0 * agent.radius**2
+    part = _joined_parts(len(samples), edges, areas, min_area)[owner]
+    added, added_faces, stranded = moved_into_passages(caster, agent, clearance, spacing, candidates, fits, rejected, part)
+    stats["candidates_stranded"] = int(len(stranded))
+    stats["samples_added"] = int(len(added))
+    if len(added):
+        # The added samples' edges (pairs with one of them at least), then the node order again.
+        count = len(samples)
+        samples = np.concatenate([samples, added])
+        sample_normals = np.concatenate([sample_normals, caster.face_normals[added_faces]])
+        areas = np.concatenate([areas, np.zeros(len(added))])  # the candidates they come from stand where the agent does not
+        floor = np.concatenate([floor, floors.faces_under(added, offset, room=half_width)])
+        pairs = np.sort(np.asarray(cKDTree(samples).query_pairs(connect, output_type="ndarray"), dtype=np.int64).reshape(-1, 2), axis=1)
+        pairs = pairs[pairs[:, 1] >= count]
+        edges = np.concatenate([edges, pairs[_walkable_pairs(caster, agent, samples, floor, pairs, probe_step, half_width)]])
+        candidate_edges += len(pairs)
+        order = np.lexsort((samples[:, 1], samples[:, 2], samples[:, 0]))
+        samples, sample_normals, areas, floor = samples[order], sample_normals[order], areas[order], floor[order]
+        edges = np.sort(np.argsort(order)[edges], axis=1)
+        edges = edges[np.lexsort((edges[:, 1], edges[:, 0]))]
+    sample_normals = sample_normals / np.linalg.norm(sample_normals, axis=1, keepdims=True)
+    lap("passages")
     gaps = _gap_pairs(samples, edges, connect, gap)
     gaps = gaps[_walkable_pairs(caster, agent, samples, floor, gaps, probe_step, half_width)]
     if len(gaps):
         edges = np.concatenate([edges, gaps])
         edges = edges[np.lexsort((edges[:, 1], edges[:, 0]))]
     lap("gaps")
-    stats["candidate_edges"] = int(len(pairs))
+    stats["candidate_edges"] = int(candidate_edges)
     stats["gap_edges"] = int(len(gaps))
 
     lengths = np.linalg.norm(samples[edges[:, 1]] - samples[edges[:, 0]], axis=1)
     weights = lengths + params.slope_penalty * np.abs(samples[edges[:, 1], 1] - samples[edges[:, 0], 1])
-    min_area = params.min_region_area if params.min_region_area is not None else 16.0 * agent.radius**2
     small, dropped = _small_regions(len(samples), edges, areas, min_area)
     if dropped:
         # Ids stay in order (0..k-1 among the kept samples), edges in their sorted order.

@@ -1,0 +1,77 @@
+"""Sampling: passages a little wider than the agent that the grid's lines miss are joined, narrower ones are not.
+
+Levels from ``benchmarks/narrow_flights.py`` (two floors joined by one passage ``1 + extra`` m wide, the presets'
+agent of radius 0.5 m, so the band its centre may stand in is ``extra`` m wide); the distances and directions in
+the last two tests are checked by hand.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+import trimesh
+
+from g2s_core.config import AgentConfig
+from g2s_plugins._raycasting import AgentShape, RayCaster
+from g2s_plugins.graph_builders import sampling
+from tests.conftest import benchmark, box
+
+AGENT = AgentShape.from_config(AgentConfig(radius=0.5))
+
+
+def _joined(extra: float, offset: float, profile: str, sides: str, yaw: float, shape: str = "straight") -> tuple[bool, dict]:
+    flights = benchmark("narrow_flights")
+    mesh, middles, _ = flights.passage_level(extra, offset, profile, shape, sides)
+    turn = flights._turn(yaw)
+    mesh.apply_transform(turn)
+    graph = sampling.build_sampled_graph(mesh, sampling.Params(method="grid"), AGENT)
+    return flights.joined(graph, middles @ turn[:3, :3].T), graph.graph["sampling_stats"]
+
+
+@pytest.mark.parametrize(
+    ("extra", "offset", "profile", "sides", "yaw", "shape"),
+    [
+        (0.4, 0.5, "flat", "walls", 0.0, "straight"),  # a corridor 1.4 m wide whose band (z from 0.3 to 0.7) no grid row crosses
+        (0.4, 0.5, "stepped", "drops", 0.0, "straight"),  # the tavern's cellar flight: 1.4 m wide between drops
+        (0.05, 0.0, "flat", "walls", 22.0, "straight"),  # 5 cm to spare, turned off the grid's axes
+        (0.2, 0.0, "flat", "walls", 0.0, "turning"),  # an L: the corner where the two legs' bands cross
+    ],
+)
+def test_a_passage_the_grid_misses_is_joined(extra, offset, profile, sides, yaw, shape):
+    joined, stats = _joined(extra, offset, profile, sides, yaw, shape)
+    assert stats["samples_added"] > 0
+    assert joined
+
+
+@pytest.mark.parametrize(("sides", "yaw"), [("walls", 22.0), ("drops", 22.0), ("walls", 0.0)])
+def test_a_passage_narrower_than_the_agent_stays_apart(sides, yaw):
+    # 0.95 m: the 8 compass rays of the agent checks let a point stand 0.46 m from a wall 22 degrees off them, so a
+    # moved point could have fitted there; the added points need the whole clearance
+    assert not _joined(-0.05, 0.25, "flat", sides, yaw)[0]
+
+
+def test_nearest_wall_is_the_distance_to_the_triangle_not_along_the_ray():
+    # a wall face on x = 0.3 (a block from x = 0.3 to 1.3) turned 22 degrees; the point 0.4 m from it
+    wall = box(0.3, 1.3, 0.0, 3.0, -5.0, 5.0)
+    floor = box(-5.0, 5.0, -0.2, 0.0, -5.0, 5.0)
+    mesh = trimesh.util.concatenate([floor, wall])
+    angle = math.radians(22.0)
+    mesh.apply_transform(trimesh.transformations.rotation_matrix(angle, (0.0, 1.0, 0.0)))
+    point = np.array([[-0.1, 0.0, 0.0]]) @ trimesh.transformations.rotation_matrix(angle, (0.0, 1.0, 0.0))[:3, :3].T
+    distance, away = sampling.nearest_wall(RayCaster(mesh), point, AGENT, 0.5)
+    assert distance[0] == pytest.approx(0.4, abs=1e-6)  # along the +x-most compass ray it reads 0.4 / cos 22 = 0.431
+    assert away[0] == pytest.approx([-math.cos(angle), 0.0, math.sin(angle)], abs=1e-6)
+
+
+def test_ledge_room_finds_the_edge_along_each_direction():
+    # a slab whose edge is x = 0.2; from the origin the ledge lies 0.2 m along +x, 0.2 / cos 45 = 0.283 m along the
+    # diagonals next to it, found to the halvings' step (0.5 / 64 m), and beyond the clearance elsewhere
+    mesh = box(-5.0, 0.2, -0.2, 0.0, -5.0, 5.0)
+    room = sampling.ledge_room(RayCaster(mesh), np.zeros((1, 3)), AGENT, 0.5)[0]
+    step = 0.5 / 2**sampling.LEDGE_HALVINGS
+    assert room[0] == pytest.approx(0.2, abs=step)
+    quarter = sampling.GROUND_DIRECTIONS // 8
+    assert room[quarter] == pytest.approx(0.2 * math.sqrt(2.0), abs=step)
+    assert room[sampling.GROUND_DIRECTIONS // 2] == 0.5  # -x: floor all the way
