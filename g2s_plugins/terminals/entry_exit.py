@@ -596,9 +596,11 @@ def _narrow_gap_at(
     under = probes + down * (ground + s.delta / 16.0)[:, None]
     ahead, behind = caster.first_hits_of([(under, directions), (under, -directions)])
     # each side's distance across it (square to the face met): a way along a slot meets its sides far off
-    across = [np.where(hit.face >= 0, np.minimum(hit.distance, np.finfo(float).max)
-                       * np.abs(np.einsum("ij,ij->i", caster.face_normals[np.maximum(hit.face, 0)], directions)), np.inf)
-              for hit in (ahead, behind)]
+    across = []
+    for hit in (ahead, behind):
+        met = np.isfinite(hit.distance)
+        cos = np.abs(np.einsum("ij,ij->i", caster.face_normals[np.maximum(hit.face, 0)], directions))
+        across.append(np.where(met, np.where(met, hit.distance, 0.0) * cos, np.inf))
     rows = np.flatnonzero(across[0] + across[1] < 2.0 * s.delta)
     if not len(rows):
         return on, distance
