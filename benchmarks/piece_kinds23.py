@@ -21,8 +21,8 @@ from functools import partial
 
 import numpy as np
 import trimesh
-from piece_parts import (ROOM_OPENINGS, SLAB, box, corridor, flight, hull, kinds_by_name, picket_run,
-                         prism, room, round_level, run_kinds)
+from piece_parts import (ROOM_OPENINGS, SLAB, arm_junction, box, corridor, flight, hull, kinds_by_name, picket_run,
+                         room, round_level, run_kinds)
 
 from g2s_plugins.samples import pieces
 from g2s_plugins.samples.levels import SampleLevel, _opening
@@ -147,27 +147,8 @@ def oblique_crossing(length: float = 7.0) -> SampleLevel:
     each arm ``length`` m from the crossing to its open end (cut square to the arm); walls 0.3 m thick and 3 m high
     meeting at the crossing's four inner corners (3.14 m from the centre in the 45-degree angles, 1.30 m in the
     135-degree ones). Known: the four ends, on the arms' axes ``length`` m out, 2.4 m, facing along the arms."""
-    half, wall = 1.2, 0.3
-    axes = [np.array([math.cos(a), math.sin(a)]) for a in np.radians([0.0, 45.0, 180.0, 225.0])]
-
-    def left(d: np.ndarray) -> np.ndarray:  # the unit normal on the side of increasing angle
-        return np.array([-d[1], d[0]])
-
-    def corner(d: np.ndarray, e: np.ndarray, offset: float) -> np.ndarray:
-        """Where the line ``offset`` m left of axis ``d`` meets the one ``offset`` m right of the next axis ``e``."""
-        t = np.linalg.solve(np.column_stack([d, -e]), -left(e) * offset - left(d) * offset)
-        return left(d) * offset + d * t[0]
-
-    inner = [corner(d, e, half) for d, e in zip(axes, axes[1:] + axes[:1])]  # inner[k]: between arms k and k + 1
-    outer = [corner(d, e, half + wall) for d, e in zip(axes, axes[1:] + axes[:1])]
-    parts = [prism(inner, -SLAB, 0.0)]
-    for k, d in enumerate(axes):
-        n, c_left, c_right = left(d), inner[k], inner[k - 1]
-        parts.append(prism([c_right, d * length - n * half, d * length + n * half, c_left], -SLAB, 0.0))
-        parts.append(prism([inner[k], d * length + n * half, d * length + n * (half + wall), outer[k]], -SLAB, 3.0))
-        parts.append(prism([inner[k - 1], d * length - n * half, d * length - n * (half + wall), outer[k - 1]],
-                           -SLAB, 3.0))
-    ends = [_opening((d[0] * length, 0.0, d[1] * length), (d[0], 0.0, d[1]), 2 * half) for d in axes]
+    parts, arms = arm_junction([0.0, 45.0, 180.0, 225.0], [1.2] * 4, [length] * 4)
+    ends = [_opening((d[0] * length, 0.0, d[1] * length), (d[0], 0.0, d[1]), 2 * half) for d, half in arms]
     return _level("oblique_crossing", parts, ends)
 
 

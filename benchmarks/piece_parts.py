@@ -1,13 +1,15 @@
 """What the later rounds of map-piece kinds build with, in one module (``benchmarks/piece_kinds18.py`` onwards).
 
 The tenth round's solids, room, table and runner (``benchmarks/piece_kinds10.py``), the fourteenth's corridor and
-the fifteenth's prism, under the names the later rounds import, and the room with two doorways several rounds start
-from. Conventions of those rounds: metres, Y up, X east, Z north; solids are convex hulls of their corners; floors'
-tops at their height over slabs ``SLAB`` (0.2 m) thick; walls 0.3 m thick and 3 m high unless said.
+the fifteenth's prism, under the names the later rounds import, the room with two doorways several rounds start
+from, and the later rounds' own shared parts (flights, picket fences, corridors meeting at any angles).
+Conventions of those rounds: metres, Y up, X east, Z north; solids are convex hulls of their corners; floors' tops
+at their height over slabs ``SLAB`` (0.2 m) thick; walls 0.3 m thick and 3 m high unless said.
 """
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 from functools import partial
 
@@ -28,8 +30,8 @@ from piece_kinds15 import _prism as prism
 from g2s_plugins.samples.levels import SampleLevel, _opening
 from g2s_plugins.samples.pieces import _E, _W
 
-__all__ = ["SLAB", "ROOM_DOORS", "ROOM_OPENINGS", "arc_band", "box", "corridor", "flight", "hull", "kinds_by_name",
-           "picket_run", "polygon_room", "prism", "room", "round_level", "run_kinds"]
+__all__ = ["SLAB", "ROOM_DOORS", "ROOM_OPENINGS", "arc_band", "arm_junction", "box", "corridor", "flight", "hull",
+           "kinds_by_name", "picket_run", "polygon_room", "prism", "room", "round_level", "run_kinds"]
 
 ROOM_DOORS = {"W": [(2.2, 3.8, 2.2)], "E": [(2.2, 3.8, 2.2)]}
 """1.6 m doorways under 2.2 m lintels in the middle of the west and east walls of a room 6 m deep (:func:`room`)."""
@@ -121,3 +123,34 @@ def picket_run(a0: float, a1: float, line: tuple[float, float], along_x: bool, h
     if along_x:
         return [box(s0, s1, y0, y1, *line) for s0, s1, y0, y1 in spans]
     return [box(*line, y0, y1, s0, s1) for s0, s1, y0, y1 in spans]
+
+
+def arm_junction(angles_deg: list[float], halves: list[float], lengths: list[float], wall: float = 0.3,
+                 height: float = 3.0) -> tuple[list[trimesh.Trimesh], list[tuple[np.ndarray, float]]]:
+    """Straight corridors ("arms") meeting at the origin, floor at 0: arm k along the plan angle ``angles_deg[k]``
+    (degrees from +x towards +z, increasing; less than 180 degrees between neighbours), ``2 * halves[k]`` m wide
+    and ``lengths[k]`` m from the origin to its open end, cut square to it; walls ``wall`` m thick and ``height`` m
+    high meeting at the inner corners, where the wall lines of neighbouring arms cross. Returns the parts and, per
+    arm, its unit axis ((2,) (x, z)) and half width, from which its end's midpoint is ``axis * length``. O(arms)
+    solids."""
+    axes = [np.array([math.cos(a), math.sin(a)]) for a in np.radians(angles_deg)]
+
+    def left(d: np.ndarray) -> np.ndarray:  # the unit normal on the side of increasing angle
+        return np.array([-d[1], d[0]])
+
+    def corner(d: np.ndarray, e: np.ndarray, offset_d: float, offset_e: float) -> np.ndarray:
+        """Where the line ``offset_d`` m left of axis ``d`` meets the one ``offset_e`` m right of the next axis ``e``."""
+        t = np.linalg.solve(np.column_stack([d, -e]), -left(e) * offset_e - left(d) * offset_d)
+        return left(d) * offset_d + d * t[0]
+
+    nxt = list(range(1, len(axes))) + [0]
+    inner = [corner(axes[k], axes[j], halves[k], halves[j]) for k, j in enumerate(nxt)]  # between arms k and k + 1
+    outer = [corner(axes[k], axes[j], halves[k] + wall, halves[j] + wall) for k, j in enumerate(nxt)]
+    parts = [prism(inner, -SLAB, 0.0)]
+    for k, (d, half, length) in enumerate(zip(axes, halves, lengths)):
+        n = left(d)
+        parts.append(prism([inner[k - 1], d * length - n * half, d * length + n * half, inner[k]], -SLAB, 0.0))
+        parts.append(prism([inner[k], d * length + n * half, d * length + n * (half + wall), outer[k]], -SLAB, height))
+        parts.append(prism([inner[k - 1], d * length - n * half, d * length - n * (half + wall), outer[k - 1]],
+                           -SLAB, height))
+    return parts, list(zip(axes, halves))

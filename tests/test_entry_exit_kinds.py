@@ -813,6 +813,49 @@ def test_the_floor_ends_at_a_gap_two_search_steps_wide(gap: float, ends_at: floa
     assert end[0] == pytest.approx(ends_at, abs=0.01)
 
 
+def _grate_end(origin: list[float], heading: list[float], bar: float = 0.04, slot: float = 0.04) -> float:
+    """Where the floor ends along ``heading`` from ``origin`` ((x, y, z), its ground's height) on the twenty-third
+    round's corridor whose last 1.2 m is a grate of bars ``bar`` m wide ``slot`` m apart, the last ending at x 12, m
+    (NaN: not within the preset's reach)."""
+    caster = RayCaster(benchmark("piece_kinds23").end_grate_corridor(bar, slot).mesh)
+    s = entry_exit._settings(entry_exit.Params(), CONFIG.agent)
+    [(end, _)] = entry_exit._surface_ends(caster, np.array([origin]) + [0.0, s.lift, 0.0], np.array([heading]),
+                                          np.array([[0.0, -1.0, 0.0]]), s, (3.0 * s.radius,))
+    return float(end[0])
+
+
+def test_a_grate_ends_at_its_last_bar() -> None:
+    # A way 10 degrees off straight from a sample at the navmesh's height (0.05 m over the bars) put probes on the
+    # last bar but one (x 11.906), in the last slot (11.955) and past the grate: three in a row found no ground, and
+    # the end was bisected at the slot's start (x 11.919), 0.08 m short of the last bar's end (the twenty-third
+    # round's `end_grate_corridor`, 2.15 m of 2.4 on `map_piece`). The slot, measured along the way square to its
+    # sides, is 0.04 m wide: the probe in it stands on the grate.
+    a = math.radians(10.0)
+    end = _grate_end([10.96666715, 0.05, 1.96666694], [math.cos(a), 0.0, math.sin(a)])
+    assert 10.96666715 + end * math.cos(a) == pytest.approx(12.0, abs=0.005)
+
+
+def test_a_way_whose_probes_all_fall_in_slots_reaches_the_grate_s_end() -> None:
+    # A sample over a 3 cm slot between bars 1 cm wide finds no ground of its own and stays at the navmesh's height;
+    # a way 36.2 degrees off straight steps 0.0404 m across the bars a probe, about their 0.04 m pitch, and every
+    # probe fell in a slot: the way ended at the sample (0.002 m out), and the grate's end was cut in pieces
+    # (`--grates`, bars 1 cm wide at 45 degrees). Where no probe of the way stood on the ground, the slots are
+    # measured a search step lower too (the navmesh's cell height): 0.03 m wide, and the way reaches the last bar.
+    heading = [0.80710533, 0.0, 0.59040747]
+    end = _grate_end([11.64914956, 0.05, 1.69258545], heading, bar=0.01, slot=0.03)
+    assert 11.64914956 + end * heading[0] == pytest.approx(12.0, abs=0.005)
+
+
+def test_the_edge_search_reaches_its_radii_in_whole_steps() -> None:
+    # 3.0 x 0.4 m is 1.2000000000000002 m, which a ceiling in floating point made 25 search steps (1.25 m) for 24:
+    # a floor ending 1.22 m out was found within the documented 1.2 m reach.
+    caster = RayCaster(_box(-1.0, 1.22, -SLAB, 0.0, -1.0, 1.0))
+    s = entry_exit._settings(entry_exit.Params(), CONFIG.agent)
+    [(end, _)] = entry_exit._surface_ends(caster, np.array([[0.0, s.lift, 0.0]]), np.array([[1.0, 0.0, 0.0]]),
+                                          np.array([[0.0, -1.0, 0.0]]), s, (3.0 * s.radius,))
+    assert math.isnan(end[0])
+
+
 @pytest.mark.parametrize("yaw", [0.0, 22.0, 45.0])
 def test_a_bridge_of_planks_6_cm_apart_gives_both_ends(yaw: float) -> None:
     level = benchmark("piece_kinds16").plank_bridge_gaps(0.06)

@@ -231,6 +231,10 @@ out into the room behind the wall, metres at once; a reveal splaying inwards by 
 a step, one splaying less reads no narrower for going on). Rays along a straight jamb agree to the ray caster's
 precision."""
 
+_STEP_DIGITS = 9
+"""Decimal places to which a reach in search steps is rounded before it is counted up to whole steps: far finer
+than a step, coarser than floating point's error on a product of two parameters."""
+
 _MAX_PROBE_RAYS = 1_000_000
 """Probe rays cast per batch when looking for the surface's end (a level's whole boundary at once, samples x fan
 directions x search steps, held 1.9 GB on a 274 x 226 m level)."""
@@ -465,12 +469,15 @@ def _surface_ends(
     if not (steps := reach / s.delta) <= _MAX_PROBE_RAYS:  # a batch could not hold one sample's probes
         raise PluginError(f"terminals.params.edge_search_radii: looking {reach:.4g} m beyond the boundary in steps of "
                           f"{s.delta:.4g} m makes {steps:.3g} probes a sample, more than {_MAX_PROBE_RAYS:,}; use a smaller one")
-    n_off = max(1, int(math.ceil(steps)))
-    counts = [max(1, int(math.ceil(r / s.delta))) for r in reaches]  # each reach's probes
+    # whole search steps, counted in decimal as the parameters are written: 3.0 * 0.4 m is 1.2000000000000002 m,
+    # which a ceiling in floating point made 25 steps (1.25 m) for 24
+    n_off = max(1, math.ceil(round(steps, _STEP_DIGITS)))
+    counts = [max(1, math.ceil(round(r / s.delta, _STEP_DIGITS))) for r in reaches]  # each reach's probes
     offsets = s.delta * np.arange(1, n_off + 1)
     lo = np.full((len(reaches), len(origins)), np.nan)
     # how far the ground stood on last lies below the origin's, down a stair only
     drop = np.zeros((len(reaches), len(origins)))
+    ground_at_end = np.full((len(reaches), len(origins)), np.nan)  # the ground stood on nearest the end, m down
     batch = max(1, _MAX_PROBE_RAYS // n_off)
     for begin in range(0, len(origins), batch):
         part = slice(begin, begin + batch)
@@ -482,11 +489,19 @@ def _surface_ends(
         # A probe in a crack running along the way (a grating's slot, the way out within a few degrees of
         # it) stays in it from one probe to the next: it stands on the surface when surface lies a search
         # step to both sides of it, across the way (beyond an edge oblique to the way, one side at most).
+        ground = _nearest_ground(~missing.reshape(-1, n_off), hits.distance.reshape(-1, n_off)).ravel()
         rows = np.flatnonzero(missing)
         side = s.delta * _unit(np.cross(directions[part][rows // n_off], UP))
         across, beside = ground_across_crack(
             caster, probes[rows], probe_down[rows], [side], s.lift + s.climb, lambda faces: _walkable(caster, faces, s)
         )
+        # ... and a probe over a gap across the way stands on the surface where the gap is narrower than two
+        # search steps, measured (:func:`_over_narrow_gap`)
+        still = rows[~across]
+        over, beyond = _over_narrow_gap(caster, probes[still], directions[part][still // n_off], probe_down[still],
+                                        ground[still], s)
+        gapped = np.flatnonzero(~across)
+        across[gapped], beside[gapped] = over, beyond
         missing[rows] = ~across
         # such a probe stands on the ground beside the crack: the walk down steps goes on from there, not from
         # whatever lies under the crack (a floor below a catwalk's slot)
@@ -496,6 +511,7 @@ def _surface_ends(
         depth = distance.reshape(-1, n_off) - s.lift
         for r, count in enumerate(counts):
             ends, before = _down_steps(missing[:, :count], depth[:, :count], walkable[:, :count], s.climb)
+            stood = _nearest_ground(~ends, depth[:, :count] + s.lift)
             # The surface ends where three probes in a row find none: a gap narrower than two search steps
             # (unwelded floor tiles, planks laid 6 cm apart) is no edge, and neither the agent nor Recast's voxels
             # see it; at two in a row two probes fell in one 6 cm gap (docs/entry_exit.md, "An eighteenth round of
@@ -505,6 +521,7 @@ def _surface_ends(
             end = np.argmax(ends, axis=1)
             lo[r, part] = np.where(ends.any(axis=1), end * s.delta, np.nan)
             drop[r, part] = before[np.arange(len(end)), end]
+            ground_at_end[r, part] = stood[np.arange(len(end)), np.maximum(end - 1, 0)]
     results: list[tuple[np.ndarray, np.ndarray]] = []
     for r in range(len(reaches)):
         edge = np.full(len(origins), np.nan)
@@ -522,11 +539,81 @@ def _surface_ends(
             probe = origins[rows] + directions[rows] * mid[:, None]
             hit = caster.first_hits(probe, down[rows])
             on = (hit.distance <= s.lift + s.climb + drop[r, rows]) & _walkable(caster, hit.face, s)
+            off = np.flatnonzero(~on)
+            on[off] = _over_narrow_gap(caster, probe[off], directions[rows[off]], down[rows[off]],
+                                       ground_at_end[r, rows[off]], s)[0]
             low = np.where(on, mid, low)
             high = np.where(on, high, mid)
         edge[rows] = 0.5 * (low + high)
         results.append((edge, np.where(np.isfinite(lo[r]), drop[r], 0.0)))
     return results
+
+
+def _nearest_ground(on: np.ndarray, distance: np.ndarray) -> np.ndarray:
+    """(n, k): along each row of probes, the ``distance`` ((n, k) m) of the last one ``on`` ((n, k) bool) the
+    ground at or before each, else of the first after it, NaN where the row has none. A sample over a slot
+    finds no ground of its own and stays at the navmesh's height, up to a cell over the floor's top: the ground a
+    probe beyond it stands on is the one to measure from. O(n k)."""
+    k = on.shape[1]
+    last = np.maximum.accumulate(np.where(on, np.arange(k)[None, :], -1), axis=1)
+    first = np.minimum.accumulate(np.where(on, np.arange(k)[None, :], k)[:, ::-1], axis=1)[:, ::-1]
+    near = np.where(last >= 0, last, first)
+    return np.where(near < k, np.take_along_axis(distance, np.minimum(near, k - 1), axis=1), np.nan)
+
+
+def _over_narrow_gap(
+    caster: RayCaster, probes: np.ndarray, directions: np.ndarray, down: np.ndarray, ground: np.ndarray, s: _Settings
+) -> tuple[np.ndarray, np.ndarray]:
+    """Which of the (n,3) ``probes`` that found no ground stand over a gap across the way narrower than two search
+    steps, and how far along ``down`` ((n,3)) from them the ground beside it lies ((n,) m, inf where not).
+
+    The gap is measured, not sampled: rays along the way (``directions``, (n,3)) and back, a sixteenth of a step
+    under the ground's top (``ground`` (n,) m along ``down`` from each probe; NaN where no probe of the way stood
+    on any: then at the origin's ground and a search step, the navmesh's cell height, lower), reach its sides, each
+    side's distance is taken square to the face met, and walkable ground within the climb must lie just past both.
+    Probes a search step apart sample a grate's bars narrower than a step as they fall: three in a row missed the
+    last bars of one (bars 0.04 m wide, 0.04 m apart) and put its end 0.08 m short, and a search's last probe in a
+    slot was an end (docs/entry_exit.md, "A twenty-third round of piece kinds" and "A twenty-fourth round"). A
+    floor's end has no side ahead within two steps; faces of no thickness give no side (three probes in a row stay
+    the rule there). Two rays a probe, two more where the gap is narrow (twice, where the ground is unknown): O(n).
+    """
+    known = np.isfinite(ground)
+    on, distance = _narrow_gap_at(caster, probes, directions, down, np.where(known, ground, s.lift), s)
+    lower = np.flatnonzero(~known & ~on)
+    if len(lower):
+        on[lower], distance[lower] = _narrow_gap_at(caster, probes[lower], directions[lower], down[lower],
+                                                    np.full(len(lower), s.lift + s.delta), s)
+    return on, distance
+
+
+def _narrow_gap_at(
+    caster: RayCaster, probes: np.ndarray, directions: np.ndarray, down: np.ndarray, ground: np.ndarray, s: _Settings
+) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`_over_narrow_gap` with the ground's top known, ``ground`` ((n,) m) along ``down`` from each probe."""
+    on, distance = np.zeros(len(probes), dtype=bool), np.full(len(probes), np.inf)
+    if not len(probes):
+        return on, distance
+    under = probes + down * (ground + s.delta / 16.0)[:, None]
+    ahead, behind = caster.first_hits_of([(under, directions), (under, -directions)])
+    # each side's distance across it (square to the face met): a way along a slot meets its sides far off
+    across = []
+    for hit in (ahead, behind):
+        met = np.isfinite(hit.distance)
+        cos = np.abs(np.einsum("ij,ij->i", caster.face_normals[np.maximum(hit.face, 0)], directions))
+        across.append(np.where(met, np.where(met, hit.distance, 0.0) * cos, np.inf))
+    rows = np.flatnonzero(across[0] + across[1] < 2.0 * s.delta)
+    if not len(rows):
+        return on, distance
+    past = s.delta / 16.0  # onto each side's top, past its edge
+    sides = caster.first_hits_of([
+        (probes[rows] + directions[rows] * (ahead.distance[rows] + past)[:, None], down[rows]),
+        (probes[rows] - directions[rows] * (behind.distance[rows] + past)[:, None], down[rows]),
+    ])
+    reach = ground[rows] + s.climb
+    both = np.logical_and.reduce([(hit.distance <= reach) & _walkable(caster, hit.face, s) for hit in sides])
+    on[rows[both]] = True
+    distance[rows[both]] = np.minimum(sides[0].distance, sides[1].distance)[both]
+    return on, distance
 
 
 def _down_steps(
