@@ -17,7 +17,7 @@ so 1.0 m wide, clearance 0.5 m, spacing 1 m; ``sampling``'s defaults with
   ``post`` m square, 1.2 m high (and, in the ``low`` rows, 0.5, 0.7 or 0.9 m:
   above the agent's 0.4 m step, under half its 2 m height),
   ``slot`` m apart, from wall to wall (closed 3 m walls all round);
-  ``crates``: the same row of 0.8 m square crates;
+  ``crates``: the same row of 0.8 m square crates, 1.2 m high or, in the ``low`` rows, lower;
 * ``low wall``: the same walled floor crossed along z = 0, wall to wall, by a
   wall 0.2 m thick and as high as the row says (0.3 m: a step the agent climbs).
 
@@ -156,6 +156,7 @@ CASES: list[Case] = [
     ("gap post", post_level, [(g * AGENT_WIDTH, 0.2) for g in GAP_SHARES], 3.0, 3.0),
     ("gap column", column_level, [(2 * g * AGENT_WIDTH + 0.2, 0.2) for g in GAP_SHARES], 6.0, 3.0),
     ("gap bollards", bollard_level, [(g * AGENT_WIDTH, 0.2) for g in GAP_SHARES], 3.0, 1.2),
+    ("crates", bollard_level, [(0.6, 0.8), (1.2, 0.8)], 3.0, 1.2),
     *[(f"low bollards {h:.1f} m", partial(bollard_level, height=h), [(0.6, 0.2)], 3.0, h) for h in LOW_HEIGHTS],
     *[(f"low crates {h:.1f} m", partial(bollard_level, height=h), [(0.6, 0.8), (1.2, 0.8)], 3.0, h) for h in LOW_HEIGHTS],
     *[(f"low wall {h:.1f} m", lambda slot, post, h=h: low_wall_level(h), [(0.0, 0.2)], 3.0, h) for h in (0.3, *LOW_HEIGHTS)],
