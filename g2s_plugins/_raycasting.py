@@ -979,7 +979,8 @@ def _slabs_meet_triangles(triangles: np.ndarray, origin: np.ndarray, along: np.n
                 crossed = (run != 0.0) & (u >= 0.0) & (u <= 1.0)
                 u = np.where(crossed, u, 0.0)
                 spans.append((t[:, i] + u * (t[:, j] - t[:, i]))[:, None])
-                valid.append((crossed & inside(other, frame[other][:, i] + u * (frame[other][:, j] - frame[other][:, i])))[:, None])
+                across = frame[other][:, i] + u * (frame[other][:, j] - frame[other][:, i])
+                valid.append((crossed & inside(other, across))[:, None])
     first_a, first_h = a[:, 1] - a[:, 0], h[:, 1] - h[:, 0]
     second_a, second_h = a[:, 2] - a[:, 0], h[:, 2] - h[:, 0]
     determinant = first_a * second_h - first_h * second_a
@@ -1007,8 +1008,8 @@ def bands_meet_walls(caster: RayCaster, low: np.ndarray, along: np.ndarray, side
     segment's height, tested exactly, so that a post or a mullion standing wholly between two of
     :func:`walk_segments`' lines is found however thin it is. With ``heights`` ((n, 2) or (2,): below and above,
     m up from the line ``low`` + s ``along``) the band is the slab between those heights, the body of an agent above
-    its step, so that a bollard or a crate lower than ``low`` is found too. Walkable triangles are left out, as the side lines leave
-    them.
+    its step, so that a bollard or a crate lower than ``low`` is found too. Walkable triangles are left out, as the
+    side lines leave them.
 
     Broad phase: the boxes of the bands and of the steep triangles sharing a cell of :func:`box_pairs`' 3-D grid
     (cells as large as the bands' median box in plan), then their boxes; narrow phase :func:`_slices_meet_bands`

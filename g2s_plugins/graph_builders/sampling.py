@@ -41,9 +41,9 @@ wanted. No Recast is involved: ``context.navmesh`` stays ``None``.
    ``clearance`` to either side, nor does a steep face pass through the slab
    those two sweep from above the agent's step to its head, so that a door, a
    slot between pillars or a slot beside a post narrower than the agent is not
-   crossed, nor a row of bollards or crates lower than the lifted segment; the ground under evenly spaced
-   points is walkable, has head room and changes height by at most a step
-   or the max slope); a pair on one open floor triangle, both samples that
+   crossed, nor a row of bollards or crates lower than the lifted segment; the
+   ground under evenly spaced points is walkable, has head room and changes
+   height by at most a step or the max slope); a pair on one open floor triangle, both samples that
    far inside its edges, passes without a ray
    (:class:`g2s_plugins._raycasting.OpenFloors`). Then the *gaps*
    (:func:`_gap_pairs`): in a passage only slightly wider than twice the
