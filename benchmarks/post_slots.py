@@ -33,7 +33,7 @@ normal) lie in one connected part of the graph; with ``--navmesh`` the
 agent fits when a slot (a passage) is at least its width, 1.0 m, or the
 obstacle is no higher than its step (``max_climb``, 0.4 m). This is a
 benchmark: nothing here asserts a target; the figures are in docs/sampling.md
-("A post between the edge's lines").
+("A post between the edge's lines", "The agent's body between the edge's lines").
 """
 
 from __future__ import annotations
