@@ -802,6 +802,13 @@ class AgentShape:
         """Largest height change over ``horizontal`` metres: a step (max climb) or the steepest slope."""
         return np.maximum(self.max_climb, self.tan_slope * np.asarray(horizontal))
 
+    @property
+    def body(self) -> tuple[float, float]:
+        """``(knee, head)``, metres above the agent's ground: the slab in which a steep face stops it, from above its
+        step (max climb + ``GROUND_MARGIN``) to just under its height (5 ``EPSILON``); the lowest and highest of the
+        sampling builder's wall rays."""
+        return min(self.max_climb + GROUND_MARGIN, self.height - EPSILON), self.height - 5 * EPSILON
+
 
 def clear_above(caster: RayCaster, origins: np.ndarray, needed: np.ndarray | float) -> np.ndarray:
     """(n,) bool: nothing lies within ``needed`` metres straight above each origin (one upward ray each)."""
@@ -927,18 +934,86 @@ def _slices_meet_bands(triangles: np.ndarray, origin: np.ndarray, along: np.ndar
     return crossing & (enter < leave)
 
 
+_TRIANGLE_EDGES = ((0, 1), (1, 2), (2, 0))
+
+
+def _slabs_meet_triangles(triangles: np.ndarray, origin: np.ndarray, along: np.ndarray, side: np.ndarray,
+                          heights: np.ndarray, inset: float) -> np.ndarray:
+    """(k,) bool: triangle ``triangles[i]`` ((k, 3, 3) corners, m) passes through the slab ``origin[i] + s along[i]
+    + t side[i] + h UP`` (s in (0, 1), t in (-1, 1), h from ``heights[i, 0]`` to ``heights[i, 1]`` (m); ``side``
+    (k, 3) horizontal and at right angles to ``along``'s plan), shrunk by ``inset`` (m) on every side: a box sheared
+    along a sloping walk.
+
+    In the frame (a, t, h) (metres along ``along``'s plan, along ``side``, and up from the line ``origin`` +
+    s ``along``), an affine image of the space, the slab is the box a in [0, plan length], h in ``heights``, |t| <=
+    ``|side|``. The part of the triangle in the prism a, h in range (any t) is a convex polygon whose corners, and so
+    the ends of its span along t, are among: the triangle's corners inside; its edges' crossings of the prism's
+    four faces; the crossings of the prism's four edges (lines along t) with the triangle, by barycentric
+    coordinates in the (a, h) plane (a triangle parallel to t has its span's ends on its edges). The triangle meets
+    the slab when that span reaches within ``|side|`` - ``inset`` of the middle. O(k).
+    """
+    offset = triangles - origin[:, None, :]
+    plan = along[:, [0, 2]]
+    length = np.linalg.norm(plan, axis=1)
+    unit_along = plan / length[:, None]
+    unit_side = side[:, [0, 2]] / np.linalg.norm(side[:, [0, 2]], axis=1, keepdims=True)
+    a = np.einsum("kcj,kj->kc", offset[:, :, [0, 2]], unit_along)
+    t = np.einsum("kcj,kj->kc", offset[:, :, [0, 2]], unit_side)
+    h = offset[:, :, 1] - a / length[:, None] * along[:, 1, None]
+    heights = np.broadcast_to(np.asarray(heights, dtype=np.float64), (len(a), 2))
+    bounds = {"a": (np.full(len(a), inset), length - inset), "h": (heights[:, 0] + inset, heights[:, 1] - inset)}
+    frame = {"a": a, "h": h}
+
+    def inside(name: str, values: np.ndarray) -> np.ndarray:
+        lowest, highest = bounds[name]
+        return (values >= lowest - 1e-9) & (values <= highest + 1e-9)
+
+    spans, valid = [t], [np.stack([inside("a", a[:, c]) & inside("h", h[:, c]) for c in range(3)], axis=1)]
+    for i, j in _TRIANGLE_EDGES:
+        for name, other in (("a", "h"), ("h", "a")):
+            for plane in bounds[name]:
+                plane = np.broadcast_to(plane, a[:, 0].shape)
+                run = frame[name][:, j] - frame[name][:, i]
+                with np.errstate(divide="ignore", invalid="ignore"):
+                    u = (plane - frame[name][:, i]) / run
+                crossed = (run != 0.0) & (u >= 0.0) & (u <= 1.0)
+                u = np.where(crossed, u, 0.0)
+                spans.append((t[:, i] + u * (t[:, j] - t[:, i]))[:, None])
+                across = frame[other][:, i] + u * (frame[other][:, j] - frame[other][:, i])
+                valid.append((crossed & inside(other, across))[:, None])
+    first_a, first_h = a[:, 1] - a[:, 0], h[:, 1] - h[:, 0]
+    second_a, second_h = a[:, 2] - a[:, 0], h[:, 2] - h[:, 0]
+    determinant = first_a * second_h - first_h * second_a
+    flat = np.abs(determinant) <= 1e-12 * (np.abs(first_a * second_h) + np.abs(first_h * second_a) + 1e-300)
+    for corner_a in bounds["a"]:
+        for corner_h in bounds["h"]:
+            to_a, to_h = corner_a - a[:, 0], corner_h - h[:, 0]
+            with np.errstate(divide="ignore", invalid="ignore"):
+                u = np.where(flat, -1.0, (to_a * second_h - to_h * second_a) / determinant)
+                v = np.where(flat, -1.0, (first_a * to_h - first_h * to_a) / determinant)
+            pierced = (u >= 0.0) & (v >= 0.0) & (u + v <= 1.0)
+            spans.append(np.where(pierced, t[:, 0] + u * (t[:, 1] - t[:, 0]) + v * (t[:, 2] - t[:, 0]), 0.0)[:, None])
+            valid.append(pierced[:, None])
+    span, found = np.concatenate(spans, axis=1), np.concatenate(valid, axis=1)
+    reach = np.linalg.norm(side, axis=1) - inset
+    return (np.where(found, span, np.inf).min(axis=1) < reach) & (np.where(found, span, -np.inf).max(axis=1) > -reach)
+
+
 def bands_meet_walls(caster: RayCaster, low: np.ndarray, along: np.ndarray, side: np.ndarray,
-                     max_slope_deg: float, inset: float = GRAZE_NUDGE) -> np.ndarray:
+                     max_slope_deg: float, inset: float = GRAZE_NUDGE,
+                     heights: np.ndarray | None = None) -> np.ndarray:
     """(n,) bool: a triangle of the caster's mesh steeper than ``max_slope_deg`` passes through the band ``low[i] +
     s along[i] + t side[i]`` (s in (0, 1), t in (-1, 1), shrunk by ``inset`` m on every side; ``side`` horizontal
     and at right angles to ``along``, all (n, 3) m): the strip a disk of radius ``|side|`` sweeps at the lifted
     segment's height, tested exactly, so that a post or a mullion standing wholly between two of
-    :func:`walk_segments`' lines is found however thin it is. Walkable triangles are left out, as the side lines
-    leave them.
+    :func:`walk_segments`' lines is found however thin it is. With ``heights`` ((n, 2) or (2,): below and above,
+    m up from the line ``low`` + s ``along``) the band is the slab between those heights, the body of an agent above
+    its step, so that a bollard or a crate lower than ``low`` is found too. Walkable triangles are left out, as the
+    side lines leave them.
 
     Broad phase: the boxes of the bands and of the steep triangles sharing a cell of :func:`box_pairs`' 3-D grid
-    (cells as large as the bands' median box in plan), then their boxes; narrow phase :func:`_slices_meet_bands`.
-    O(cells the boxes cover + pairs sharing a cell).
+    (cells as large as the bands' median box in plan), then their boxes; narrow phase :func:`_slices_meet_bands`
+    or :func:`_slabs_meet_triangles`. O(cells the boxes cover + pairs sharing a cell).
     """
     n = len(low)
     meets = np.zeros(n, dtype=bool)
@@ -946,6 +1021,10 @@ def bands_meet_walls(caster: RayCaster, low: np.ndarray, along: np.ndarray, side
     if n == 0 or len(steep) == 0:
         return meets
     corners = np.stack([low - side, low + side, low + along + side, low + along - side], axis=1)
+    if heights is not None:
+        heights = np.broadcast_to(np.asarray(heights, dtype=np.float64), (n, 2))
+        corners = np.concatenate([corners + heights[:, 0, None, None] * UP, corners + heights[:, 1, None, None] * UP],
+                                 axis=1)
     band_lo, band_hi = corners.min(axis=1), corners.max(axis=1)
     walls = caster.triangles[steep]
     wall_lo, wall_hi = walls.min(axis=1), walls.max(axis=1)
@@ -953,7 +1032,10 @@ def bands_meet_walls(caster: RayCaster, low: np.ndarray, along: np.ndarray, side
                            max(float(np.median(band_hi - band_lo, axis=0)[[0, 2]].max()), 1e-3))
     near = np.all((band_lo[band] <= wall_hi[wall]) & (wall_lo[wall] <= band_hi[band]), axis=1)
     band, wall = band[near], wall[near]
-    hit = _slices_meet_bands(walls[wall], low[band], along[band], side[band], inset)
+    if heights is None:
+        hit = _slices_meet_bands(walls[wall], low[band], along[band], side[band], inset)
+    else:
+        hit = _slabs_meet_triangles(walls[wall], low[band], along[band], side[band], heights[band], inset)
     meets[band[hit]] = True
     return meets
 
@@ -967,6 +1049,7 @@ def walk_segments(
     margin: float = GROUND_MARGIN,
     max_gap: float | None = None,
     half_width: float = 0.0,
+    body: bool = False,
 ) -> tuple[np.ndarray, np.ndarray]:
     """Whether the agent can walk straight from ``starts[i]`` to ``ends[i]`` (ground points).
 
@@ -980,7 +1063,11 @@ def walk_segments(
       the lines (a post, a mullion), no triangle steeper than the agent's
       max slope passes through the band between the side lines
       (:func:`bands_meet_walls`, exact; asked only where every other test
-      passed). The ends' own disks are the caller's to check;
+      passed). With ``body``, that band is the slab of the agent's body,
+      from above its step to its head (:attr:`AgentShape.body`), so that a
+      bollard or a crate lower than the lifted segment, which the ground
+      probes under the middle line miss, stops the walk too. The ends' own
+      disks are the caller's to check;
     * under evenly spaced points along it (at most ``probe_step`` apart
       horizontally, both ends included) a short downward ray from the lifted
       segment finds ground no more than ``max_climb + margin`` below the
@@ -1069,7 +1156,13 @@ def walk_segments(
     rows = np.flatnonzero(sideways)
     clear = ok[rows]
     rows = rows[clear]
-    ok[rows] = ~bands_meet_walls(caster, low[rows], vectors[rows], side[clear], agent.max_slope_deg)
+    # The slab's floor: the agent's knee over the higher end, everywhere along the walk (a riser of the stair it
+    # climbs is a step, not a wall, even where it stands above the knee over the straight line), and never above
+    # the lifted segment, which the band without ``body`` tests.
+    knee, head = agent.body
+    floor = np.minimum(knee + np.abs(vectors[rows, 1]), lift) - lift
+    heights = np.stack([floor, np.full(len(rows), head - lift)], axis=1) if body else None
+    ok[rows] = ~bands_meet_walls(caster, low[rows], vectors[rows], side[clear], agent.max_slope_deg, heights=heights)
     rise = np.maximum.reduceat(np.concatenate([dy, [0.0]]), first)
     rise[~has_ground] = np.inf
     return ok, rise

@@ -38,11 +38,12 @@ wanted. No Recast is involved: ``context.navmesh`` stays ``None``.
 5. *Edges*: pairs closer than ``connect_radius`` (scipy cKDTree) that pass
    :func:`g2s_plugins._raycasting.walk_segments` (the segment lifted by half
    the agent height hits nothing, nor do its copies moved ``DISK_SHARE`` ×
-   ``clearance`` to either side, nor does a steep face pass through the band
-   between those two, so that a door, a slot between pillars or a slot beside
-   a post narrower than the agent is not crossed; the ground under evenly spaced
-   points is walkable, has head room and changes height by at most a step
-   or the max slope); a pair on one open floor triangle, both samples that
+   ``clearance`` to either side, nor does a steep face pass through the slab
+   those two sweep from above the agent's step to its head, so that a door, a
+   slot between pillars or a slot beside a post narrower than the agent is not
+   crossed, nor a row of bollards or crates lower than the lifted segment; the
+   ground under evenly spaced points is walkable, has head room and changes
+   height by at most a step or the max slope); a pair on one open floor triangle, both samples that
    far inside its edges, passes without a ray
    (:class:`g2s_plugins._raycasting.OpenFloors`). Then *passages the samples
    miss* (:func:`moved_into_passages`): a passage a little wider than the
@@ -355,15 +356,9 @@ def agent_fits(
 
 
 def wall_levels(agent: AgentShape) -> list[float]:
-    """Heights (m over a ground point, ascending) of :func:`agent_fits`' horizontal wall rays: knee (max climb and the
-    ground margin), waist (half the height) and head (the height less 5 cm)."""
-    return sorted(
-        {
-            round(min(agent.max_climb + GROUND_MARGIN, agent.height - EPSILON), 6),
-            round(0.5 * agent.height, 6),
-            round(agent.height - 5 * EPSILON, 6),
-        }
-    )
+    """Heights (m over a ground point, ascending) of :func:`agent_fits`' horizontal wall rays: knee and head (the
+    agent's body, :attr:`AgentShape.body`) and waist (half the height)."""
+    return sorted({round(level, 6) for level in (*agent.body, 0.5 * agent.height)})
 
 
 REJECTED_BY = ("fits", "head room", "wall", "ledge")
@@ -888,7 +883,8 @@ def _walkable_pairs(
     half_width: float,
 ) -> np.ndarray:
     """(m,) bool: the agent walks straight between the two samples of each of ``pairs`` ((m, 2) ids), a disk
-    of ``half_width`` (m) travelling along the way through no wall.
+    of ``half_width`` (m) travelling along the way through no wall, and no steep face in the slab it sweeps from
+    above the agent's step to its head (:func:`~g2s_plugins._raycasting.walk_segments` with ``body``).
 
     A pair on one open floor triangle (``floor``: each sample's, from
     :meth:`~g2s_plugins._raycasting.OpenFloors.faces_under` with ``room`` at least ``half_width``; -1 for none)
@@ -899,7 +895,8 @@ def _walkable_pairs(
     for begin in range(0, len(tested), MAX_EDGE_BATCH):
         rows = tested[begin : begin + MAX_EDGE_BATCH]
         keep[rows] = walk_segments(
-            caster, samples[pairs[rows, 0]], samples[pairs[rows, 1]], agent, probe_step, half_width=half_width
+            caster, samples[pairs[rows, 0]], samples[pairs[rows, 1]], agent, probe_step, half_width=half_width,
+            body=True,
         )[0]
     return keep
 

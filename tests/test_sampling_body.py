@@ -1,0 +1,65 @@
+"""The sampling builder's edges sweep the agent's body, from above its step to its head: an obstacle above the step
+and lower than half the agent's height (a bollard, a crate, a low wall), under the lifted segment, stops them."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+import trimesh
+
+from g2s_plugins._raycasting import AgentShape, RayCaster, _slabs_meet_triangles, bands_meet_walls, walk_segments
+from tests.test_sampling_doors import AGENT, box, rooms_joined
+
+
+def bollard_row(height: float) -> trimesh.Trimesh:
+    """A 16 x 12 m floor split at x = 0 by a row of bollards 0.2 m square and ``height`` m high, 0.6 m apart (centres
+    every 0.8 m along z from 0), running past the floor (no way round)."""
+    bollards = [box((-0.1, 0, z - 0.1), (0.1, height, z + 0.1)) for z in np.arange(-8.8, 8.81, 0.8)]
+    return trimesh.util.concatenate([box((-8, -0.2, -6), (8, 0, 6)), *bollards])
+
+
+def test_a_row_of_bollards_above_the_step_splits_the_rooms() -> None:
+    # Before the body's slab a 0.7 m row (under the edges' lifted segment at 1 m) joined the two halves; a 0.3 m row
+    # is a step the agent climbs (docs/sampling.md, "The agent's body between the edge's lines").
+    assert [rooms_joined(bollard_row(height)) for height in (0.7, 0.3)] == [False, True]
+
+
+def test_the_body_slab_stops_a_walk_between_low_bollards() -> None:
+    # Hand-checkable: a walk along x through the middle of the gap at z = 0.4 between the bollards at z = 0 and 0.8;
+    # its side lines (z -0.05 and 0.85) pass over the 0.7 m bollards at 1 m, which stand in the slab from 0.5 m (a
+    # 0.4 m step and the 0.1 m ground margin) to 1.95 m. A 0.45 m row lies under the slab.
+    agent = AgentShape.from_config(AGENT)
+    starts, ends = np.array([[-1.0, 0.0, 0.4]]), np.array([[1.0, 0.0, 0.4]])
+    assert agent.body == pytest.approx((0.5, 1.95))
+    for height, passes in [(0.7, False), (0.45, True)]:
+        caster = RayCaster(bollard_row(height))
+        assert walk_segments(caster, starts, ends, agent, 0.25, half_width=0.45)[0].tolist() == [True]
+        assert walk_segments(caster, starts, ends, agent, 0.25, half_width=0.45, body=True)[0].tolist() == [passes]
+    lifted, along, side = starts + [0.0, 1.0, 0.0], ends - starts, np.array([[0.0, 0.0, 0.45]])
+    caster = RayCaster(bollard_row(0.7))
+    assert bands_meet_walls(caster, lifted, along, side, 45.0).tolist() == [False]
+    assert bands_meet_walls(caster, lifted, along, side, 45.0, heights=(-0.5, 0.95)).tolist() == [True]
+
+
+def test_a_face_meets_the_slab_only_inside_it() -> None:
+    # The slab: 2 m along x from the origin, 0.45 m either side, 0.5-1.95 m up from the line; a thin upright triangle
+    # at (x, z) from y = bottom to top, 0.1 m wide at its foot, narrowing to nothing at its top.
+    origin, along, side = np.zeros((1, 3)), np.array([[2.0, 0.0, 0.0]]), np.array([[0.0, 0.0, 0.45]])
+
+    def upright(x: float, z: float, bottom: float = -1.0, top: float = 1.0) -> np.ndarray:
+        return np.array([[[x, bottom, z], [x, top, z], [x, bottom, z + 0.1]]])
+
+    # at 0.5 m up the triangle spans z to z + 0.025: z -0.5 stays 0.025 m outside the side
+    for corners, meets in [((1.0, 0.0), True), ((1.0, 0.4), True), ((1.0, 0.46), False), ((1.0, -0.5), False),
+                           ((2.1, 0.0), False), ((1.0, 0.0, -1.0, 0.49), False), ((1.0, 0.0, -1.0, 0.6), True),
+                           ((1.0, 0.0, 1.9, 3.0), True), ((1.0, 0.0, 1.96, 3.0), False)]:
+        assert _slabs_meet_triangles(upright(*corners), origin, along, side, (0.5, 1.95), 1e-4).tolist() == [meets]
+    # A wall across the walk, its corners all outside the slab: met through the slab's edges.
+    across = np.array([[[1.0, -5.0, -5.0], [1.0, -5.0, 5.0], [1.0, 10.0, 0.0]]])
+    assert _slabs_meet_triangles(across, origin, along, side, (0.5, 1.95), 1e-4).tolist() == [True]
+    # A walk rising 1 m over its 2 m: at x = 1 its line is 0.5 m up, so a post 0.9 m high stands 0.4 m above it
+    # (under the slab) and one 1.1 m high 0.6 m (in it).
+    rising = np.array([[2.0, 1.0, 0.0]])
+    for top, meets in [(0.9, False), (1.1, True)]:
+        post = upright(1.0, 0.0, 0.0, top)
+        assert _slabs_meet_triangles(post, origin, rising, side, (0.5, 1.95), 1e-4).tolist() == [meets]
