@@ -187,6 +187,25 @@ def test_mesh_los_keeps_b_when_a_to_c_runs_under_the_ground() -> None:
     assert predicate(mesh)(tree, 0, 1, 2) is False
 
 
+def test_mesh_los_keeps_b_where_a_to_c_passes_a_corner_closer_than_the_agent_could() -> None:
+    # A 3 m block fills x, z in [0, 3]; A -> C runs along x + z = -0.3, 0.21 m from its corner at the origin, and
+    # meets nothing: one line sees C. The agent's disk, 0.9 x its 0.5 m radius = 0.45 m either side, would hit
+    # the corner, so B, out at (-1.5, -1.5), stays. With the sampling builder's clearance at 0.2 m (the graph's
+    # sampling_stats) the band is 0.18 m, which clears the corner.
+    from g2s_plugins._raycasting import AgentShape
+
+    mesh = level(FLOOR, box((0.0, 0.0, 0.0), (3.0, 3.0, 3.0)))
+    tree = chain(((-2.0, 0, 1.7), UP, True), ((-1.5, 0, -1.5), UP, True), ((1.7, 0, -2.0), UP, True))
+    assert predicate(mesh, clearance=0.0)(tree, 0, 1, 2) is True  # one line: B went, before
+    assert predicate(mesh)(tree, 0, 1, 2) is False
+    sampled = nx.Graph(sampling_stats={"clearance": 0.2})
+    agent = AgentShape.from_config(AGENT)
+    assert mesh_los.walk_half_width(mesh_los.Params(), agent, sampled) == pytest.approx(0.18)
+    assert mesh_los.mesh_los_predicate(mesh, agent, mesh_los.Params(), sampled)(tree, 0, 1, 2) is True
+    assert mesh_los.walk_half_width(mesh_los.Params(), agent, None) == pytest.approx(0.45)
+    assert mesh_los.walk_half_width(mesh_los.Params(clearance=1.0), agent, sampled) == pytest.approx(0.9)
+
+
 def test_lookahead_batches_walks_without_changing_answers(monkeypatch: pytest.MonkeyPatch) -> None:
     # The tree a sampled dungeon gives, simplified with and without testing the walks below C ahead.
     from g2s_core import pipeline
@@ -300,7 +319,7 @@ def test_open_floor_answers_save_walk_tests_not_answers(monkeypatch: pytest.Monk
         return walk_segments(caster, starts, *args, **kwargs)
 
     class NoOpenFloors(OpenFloors):
-        def faces_under(self, points, max_offset=0.0):
+        def faces_under(self, points, max_offset=0.0, room=0.0):
             return np.full(len(points), -1)
 
     monkeypatch.setattr(mesh_los, "walk_segments", counting)

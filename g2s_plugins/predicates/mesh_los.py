@@ -8,14 +8,18 @@ surface, with ``max_traffic_step`` set a step in walking traffic at B, the
 chain's normals bending by more than ``normal_tolerance_deg``, or no line
 of sight: B stays), with this line of sight: the agent can walk
 the straight segment A -> C over ``context.mesh``. The segment lifted by half
-the agent height hits no triangle, and under each of the points spaced at
+the agent height hits no triangle, nor do its copies moved ``DISK_SHARE`` x
+``clearance`` to either side, nor does a face steeper than the max slope pass
+through the band between them (the sampling builder's test of its own edges,
+so that a simplified edge cuts no corner and crosses no door the agent could
+not: :func:`walk_half_width`); and under each of the points spaced at
 most ``probe_step`` apart along it a short downward ray finds walkable ground
 with head room, within ``max_surface_gap`` above or below the segment and
 within ``max_climb + margin`` below it, and the ground between two
 neighbouring points rises or falls no more than a step (max climb) or the max
-slope allows (:func:`g2s_plugins._raycasting.walk_segments`). The defaults
-are ``surface_los``'s, so the two predicates differ only in how they test the
-line of sight.
+slope allows (:func:`g2s_plugins._raycasting.walk_segments`). The tolerances'
+defaults are ``surface_los``'s, so the two predicates differ only in how they
+test the line of sight.
 
 Which predicate to use:
 
@@ -24,14 +28,19 @@ Which predicate to use:
   also respects Recast's erosion by the agent radius.
 * ``mesh_los`` when it has none (``sampling`` builder, a third-party
   builder), or to test against the true geometry rather than Recast's
-  voxelised approximation. It tests a line of zero width: it does not keep
-  the agent radius away from walls the segment passes beside.
+  voxelised approximation. It keeps 0.9 x the clearance away from walls the
+  segment passes beside (``clearance: 0``: a line of zero width, as before
+  6 December 2026), where Recast erodes by the whole agent radius.
 
-Cost: a walk between two nodes on one open floor triangle passes without a
-ray (:class:`g2s_plugins._raycasting.OpenFloors`, looked up once for every
-node of the tree); any other costs about 2 L / probe_step + 3 rays (L =
-|AC|), through Embree when available. Answers are cached per (A, C) pair
-for the predicate's life: the heat guarantee's rounds
+Cost: a walk between two nodes on one open floor triangle, both that band's
+half-width farther inside its edges, passes without a ray
+(:class:`g2s_plugins._raycasting.OpenFloors`, looked up once for every node
+of the tree); any other costs about 2 L / probe_step + 5 rays (L = |AC|),
+through Embree when available, and, where those pass, its share of one band
+test per batch (:func:`g2s_plugins._raycasting.bands_meet_walls`, which
+looks at every steep triangle of the level on each call: most of this
+predicate's CPU, docs/sampling.md, "Simplified edges as wide as the agent").
+Answers are cached per (A, C) pair for the predicate's life: the heat guarantee's rounds
 (:mod:`g2s_plugins.heat_guarantee`) ask the same predicate, so a later
 round casts rays only for walks no earlier round tested. Simplification
 takes the predicate's whole-forest path (:mod:`g2s_core.simplify`):
@@ -59,6 +68,7 @@ from g2s_core.plugin import hookimpl
 from g2s_core.simplify import ForestArrays
 from g2s_plugins._raycasting import GROUND_MARGIN, AgentShape, OpenFloors, RayCaster, walk_segments
 from g2s_plugins._surface import CollapseParams, RuleArrays, collapse_rule
+from g2s_plugins.graph_builders.sampling import DISK_SHARE
 from g2s_plugins.heat_guarantee import guaranteed
 from g2s_plugins.recast.navmesh import collapse_forest_seeing
 
@@ -71,6 +81,21 @@ class Params(CollapseParams):
     margin: float = Field(
         GROUND_MARGIN, ge=0, le=10, description="ground may lie this much further below the line than the max climb, m"
     )
+    clearance: float | None = Field(
+        None, ge=0, le=100, description="the walk A -> C sweeps a disk of 0.9 x this through no wall, as the sampling "
+        "builder's edges do, m; default the sampling builder's clearance, else the agent radius; 0: one line"
+    )
+
+
+def walk_half_width(params: Params, agent: AgentShape, graph: nx.Graph | None) -> float:
+    """Metres to either side of A -> C the walk test's side lines and band reach: ``DISK_SHARE`` x the clearance
+    (``params.clearance``, else the sampling builder's from ``graph``'s ``sampling_stats``, else the agent radius),
+    the builder's rule for its own edges, so a walk between two samples along a wall passes where the builder's
+    edges do."""
+    clearance = params.clearance
+    if clearance is None:
+        clearance = (graph.graph.get("sampling_stats") or {}).get("clearance") if graph is not None else None
+    return DISK_SHARE * float(clearance if clearance is not None else agent.radius)
 
 
 LOOKAHEAD = 8
@@ -123,6 +148,7 @@ def mesh_los_predicate(
     is not walked yet).
     """
     probe_step = params.probe_step if params.probe_step is not None else 0.5 * agent.radius
+    half_width = walk_half_width(params, agent, graph)
     caster: RayCaster | None = None
     floor_of: dict[Point, int] = {}  # the open floor triangle each node of the tree stands on, or -1
     walked: dict[tuple[Point, Point], bool] = {}  # walks tested, start -> end
@@ -136,7 +162,8 @@ def mesh_los_predicate(
         floors = OpenFloors(caster, agent, min_inradius=agent.radius)
         if floors.open.any():
             positions = list(dict.fromkeys(map(structure.position, structure.nodes)))
-            faces = floors.faces_under(np.array(positions).reshape(-1, 3), floors.certain_offset(params.margin, params.max_surface_gap))
+            faces = floors.faces_under(np.array(positions).reshape(-1, 3),
+                                       floors.certain_offset(params.margin, params.max_surface_gap), room=half_width)
             floor_of.update(zip(positions, faces.tolist()))
         return caster
 
@@ -168,7 +195,7 @@ def mesh_los_predicate(
         if tested:
             starts, ends = zip(*tested)
             ok, _ = walk_segments(caster, np.array(starts), np.array(ends), agent, probe_step, params.margin,
-                                  params.max_surface_gap)
+                                  params.max_surface_gap, half_width)
             walked.update(zip(tested, ok.tolist()))
         for start, end in asked:
             if (start, end) not in cache:
