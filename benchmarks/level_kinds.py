@@ -238,7 +238,7 @@ walls reached by two flights), ``supermarket`` (gondola aisles, a bank of checko
 to a natural expansion and one more to the low ground), ``ziggurat`` (a temple city: step pyramids whose terraces are
 reached only up one stair of flights on one face, :func:`_step_pyramid`, a ball court, a causeway), ``reactor``
 (round galleries on 6-7 levels over one void, bridges at random angles to rings round a core, two stair towers,
-:func:`_ring`) and ``gorge_bridge`` (a deck over a gorge, a catwalk under it joined by flights at its piers, banks
+:func:`_chorded_ring`) and ``gorge_bridge`` (a deck over a gorge, a catwalk under it joined by flights at its piers, banks
 with houses). The floor stops under closed solids again: a first draft's reactor kept the ground inside its core
 pillar and inside two machines (4 areas on seed 0), the bridge's banks ran on inside their houses (15 areas), and a
 pyramid's terraces 4 m wide, the flight up each starting 0.4 m from the one below's top, left its upper tiers apart
@@ -11761,7 +11761,7 @@ def ziggurat(seed: int, across: tuple[int, int] = (74, 81)) -> trimesh.Trimesh:
     return s.mesh()
 
 
-def _ring(s: _Solids, radius: float, width: float, top: float, sides: int) -> None:
+def _chorded_ring(s: _Solids, radius: float, width: float, top: float, sides: int) -> None:
     """A flat ring ``width`` m wide about the circle of ``radius`` m round the origin, its top at ``top`` (0.3 m
     thick): ``sides`` chords (:func:`_wall_line`), each overlapping the next at its ends."""
     corners = [radius * np.array([math.cos(2 * math.pi * k / sides), math.sin(2 * math.pi * k / sides)])
@@ -11776,7 +11776,7 @@ def reactor(seed: int, levels: tuple[int, int] = (6, 8)) -> trimesh.Trimesh:
     sides, pointed on top), with 6-7 levels 6 m apart: the ground floor (a chorded ring stopping under the core), on
     which 10-14 machines stand (ridged, 2-4 x 1.6-2.4 m, 1 m to the eaves: the ground runs on inside them, but too
     little of it under 2 m of head room to hold a floor), and on each level above a gallery 4 m wide against the wall
-    and a ring 3 m wide round the core, both chorded (:func:`_ring`), joined by 2-3 radial bridges 2.4 m wide at random
+    and a ring 3 m wide round the core, both chorded (:func:`_chorded_ring`), joined by 2-3 radial bridges 2.4 m wide at random
     angles (at least 30 degrees apart); two stair towers outside the wall, east and west, each a switchback well
     (:func:`_switchback`) whose landing on every level opens through a doorway 1.8 m wide onto the gallery (a threshold
     under it). No earlier kind stacked round galleries over one void joined across it only by bridges at every angle:
@@ -11797,7 +11797,7 @@ def reactor(seed: int, levels: tuple[int, int] = (6, 8)) -> trimesh.Trimesh:
     s = _Solids()
     top = storey * (count - 1)
     chord = radius * math.cos(math.pi / sides)  # the wall chords' distance from the middle
-    _ring(s, (radius + 4.0) / 2, radius - 4.0, 0.0, sides)  # the ground floor, stopping under the core
+    _chorded_ring(s, (radius + 4.0) / 2, radius - 4.0, 0.0, sides)  # the ground floor, stopping under the core
     corners = [radius * np.array([math.cos(2 * math.pi * (k + 0.5) / sides), math.sin(2 * math.pi * (k + 0.5) / sides)])
                for k in range(sides + 1)]
     for k, (p, q) in enumerate(zip(corners[:-1], corners[1:])):
@@ -11820,8 +11820,8 @@ def reactor(seed: int, levels: tuple[int, int] = (6, 8)) -> trimesh.Trimesh:
             placed.append(c)
     for level in range(1, count):
         y = storey * level
-        _ring(s, radius - 2.25, 4.0, y, sides)
-        _ring(s, 5.5, 3.0, y, 16)
+        _chorded_ring(s, radius - 2.25, 4.0, y, sides)
+        _chorded_ring(s, 5.5, 3.0, y, 16)
         angles: list[float] = []
         bridges = int(rng.integers(2, 4))
         for _ in range(100):
