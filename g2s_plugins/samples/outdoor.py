@@ -95,6 +95,8 @@ def terrain(
     triangles, obstacles ignored), ``largest_component_share`` (of the
     walkable ground area), ``cycles`` (None: not counted).
     """
+    import trimesh
+
     params = {"seed": seed, "size": size, "relief": relief, "obstacles": obstacles, "cliffs": cliffs,
               "ruins": ruins, "cell": cell}
     n = max(1, round(size / cell))
@@ -206,8 +208,6 @@ def terrain(
         "largest_component_share": largest,
         "cycles": None,
     })
-    import trimesh
-
     mesh = trimesh.util.concatenate([ground, level.mesh])
     mesh.merge_vertices()
     return dataclasses.replace(level, mesh=mesh)
