@@ -526,6 +526,11 @@ def _fit_on_ground(caster: RayCaster, agent: AgentShape, clearance: float, point
     return ok, ground, face
 
 
+ADDED_LATTICE = 2.0**-20
+"""Metres: the lattice :func:`moved_into_passages` puts its points on (a power of two, so whole metres plus a lattice
+step are exact in float64 for any level within 10^9 m of the origin)."""
+
+
 def moved_into_passages(
     caster: RayCaster,
     agent: AgentShape,
@@ -637,7 +642,10 @@ def moved_into_passages(
     if len(points) > 1:
         first = np.sort(_throw_darts(points, 0.5 * spacing))
         points, face = points[first], face[first]
-    return np.concatenate([points, end]), np.concatenate([face, end_face]), turned
+    # on a binary lattice of the caster's frame (whole metres from the world's origin), so that a level moved far
+    # keeps every distance between its samples bit for bit, and with them the ties its later stages break
+    local = np.round(caster.frame.to_local(np.concatenate([points, end])) / ADDED_LATTICE) * ADDED_LATTICE
+    return caster.frame.to_world(local), np.concatenate([face, end_face]), turned
 
 
 class _Surroundings:
