@@ -56,11 +56,11 @@ wanted. No Recast is involved: ``context.navmesh`` stays ``None``.
    agent fits with its whole width (:func:`nearest_wall`, ground in
    ``GROUND_DIRECTIONS`` directions) are added (area 0: they stand for no
    candidate's cell) and joined by the same walk test with the whole
-   clearance as its half width (``DISK_SHARE`` is for edges between grid
-   samples that stand off a wall by cos 22.5 degrees of it; an added point
-   stands off by the whole clearance, and a square crossing of a passage the
-   agent fits keeps that width, while a crossing of a slot it does not fit
-   only nearly square would pass the narrower band). Then the *gaps*
+   clearance as its half width (``DISK_SHARE`` of it is for grid samples,
+   which the compass rays let stand that near a wall; an added point stands
+   the whole clearance off, a square crossing of a passage the agent fits
+   keeps that width, and the narrower band let crossings 1-4 degrees off
+   square pass slots narrower than the agent). Then the *gaps*
    (:func:`_gap_pairs`): in a passage only slightly wider than twice the
    clearance the samples form a thin band, where the pick can leave two
    consecutive ones farther apart than ``connect_radius``; pairs up to
@@ -160,7 +160,8 @@ DISK_SHARE = 0.9
 distance from a straight wall at which the agent checks' 8 compass rays accept a sample, so an edge along a wall
 between two accepted samples is not stopped by that wall. At 1.0, an edge 0.46 m from a wall of a 1.9 m corridor
 of the 1k dungeon is stopped and two samples are cut off; at 0.9, in a 0.2 m wall turned 0, 22 and 45 degrees, every
-door up to 1.0 m wide is closed and every one from 1.4 m open (docs/sampling.md, "Doors narrower than the agent")."""
+door up to 1.0 m wide is closed and every one from 1.4 m open (docs/sampling.md, "Doors narrower than the agent").
+An edge with a sample added in a passage is walked with the whole clearance instead (:func:`_walkable_pairs_of`)."""
 
 
 class Params(PlaySpaceParams):
