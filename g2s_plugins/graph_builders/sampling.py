@@ -925,7 +925,7 @@ def _walkable_pairs_of(
 
     An added sample stands where the agent fits with its whole width (:func:`moved_into_passages`), so a passage
     the agent fits is crossed square at the full width; the narrower band is there for grid samples accepted by
-    the compass rays, and let added samples cross slots narrower than the agent 1-4 degrees off square
+    the compass rays, and it let added samples cross slots narrower than the agent 1-4 degrees off square
     (docs/sampling.md, "Passages a little wider than the agent").
     """
     wide = added[pairs].any(axis=1)
