@@ -75,3 +75,16 @@ def test_ledge_room_finds_the_edge_along_each_direction():
     quarter = sampling.GROUND_DIRECTIONS // 8
     assert room[quarter] == pytest.approx(0.2 * math.sqrt(2.0), abs=step)
     assert room[sampling.GROUND_DIRECTIONS // 2] == 0.5  # -x: floor all the way
+
+
+@pytest.mark.parametrize("offset", [0.0, 0.3])
+def test_added_samples_do_not_cross_a_slot_narrower_than_the_agent(offset):
+    # benchmarks/post_slots.py's 0.95 m slots beside a 0.2 m post, turned 22 degrees: the samples added at the slots'
+    # mouths (area 0) are walked with the whole clearance, so a crossing 1-4 degrees off square that a band of
+    # DISK_SHARE x clearance (0.45 m each side) fits through the slot is refused
+    slots = benchmark("post_slots")
+    mesh, matrix = slots._placed(slots.post_level(0.95, 0.2), 22.0, offset)
+    graph = sampling.build_sampled_graph(mesh, sampling.Params(method="grid"), AGENT)
+    ends = (np.array([[0.0, 0.0, -3.0, 1.0], [0.0, 0.0, 3.0, 1.0]]) @ matrix.T)[:, :3]
+    assert graph.graph["sampling_stats"]["samples_added"] > 0
+    assert not slots.joined(*slots._arrays(graph), ends)

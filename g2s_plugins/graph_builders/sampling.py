@@ -55,7 +55,12 @@ wanted. No Recast is involved: ``context.navmesh`` stays ``None``.
    out of the passage's mouths and into its turns, and the points where the
    agent fits with its whole width (:func:`nearest_wall`, ground in
    ``GROUND_DIRECTIONS`` directions) are added (area 0: they stand for no
-   candidate's cell) and joined by the same walk test. Then the *gaps*
+   candidate's cell) and joined by the same walk test with the whole
+   clearance as its half width (``DISK_SHARE`` of it is for grid samples,
+   which the compass rays let stand that near a wall; an added point stands
+   the whole clearance off, a square crossing of a passage the agent fits
+   keeps that width, and the narrower band let crossings 1-4 degrees off
+   square pass slots narrower than the agent). Then the *gaps*
    (:func:`_gap_pairs`): in a passage only slightly wider than twice the
    clearance the samples form a thin band, where the pick can leave two
    consecutive ones farther apart than ``connect_radius``; pairs up to
@@ -155,7 +160,8 @@ DISK_SHARE = 0.9
 distance from a straight wall at which the agent checks' 8 compass rays accept a sample, so an edge along a wall
 between two accepted samples is not stopped by that wall. At 1.0, an edge 0.46 m from a wall of a 1.9 m corridor
 of the 1k dungeon is stopped and two samples are cut off; at 0.9, in a 0.2 m wall turned 0, 22 and 45 degrees, every
-door up to 1.0 m wide is closed and every one from 1.4 m open (docs/sampling.md, "Doors narrower than the agent")."""
+door up to 1.0 m wide is closed and every one from 1.4 m open (docs/sampling.md, "Doors narrower than the agent").
+An edge with a sample added in a passage is walked with the whole clearance instead (:func:`_walkable_pairs_of`)."""
 
 
 class Params(PlaySpaceParams):
@@ -909,6 +915,38 @@ def _walkable_pairs(
     return keep
 
 
+def _walkable_pairs_of(
+    caster: RayCaster,
+    agent: AgentShape,
+    floors: OpenFloors,
+    offset: float,
+    samples: np.ndarray,
+    floor: np.ndarray,
+    added: np.ndarray,
+    pairs: np.ndarray,
+    probe_step: float,
+    clearance: float,
+) -> np.ndarray:
+    """(m,) bool: :func:`_walkable_pairs` for ``pairs`` ((m, 2) ids), a band of ``DISK_SHARE`` x ``clearance``
+    (m) between two grid samples (``floor``: theirs, with that room) and of the whole ``clearance`` for a pair
+    with an added sample (``added``: (n,) bool per sample; their open floor triangles found here with that room).
+
+    An added sample stands where the agent fits with its whole width (:func:`moved_into_passages`), so a passage
+    the agent fits is crossed square at the full width; the narrower band is there for grid samples accepted by
+    the compass rays, and it let added samples cross slots narrower than the agent 1-4 degrees off square
+    (docs/sampling.md, "Passages a little wider than the agent").
+    """
+    wide = added[pairs].any(axis=1)
+    keep = np.zeros(len(pairs), dtype=bool)
+    keep[~wide] = _walkable_pairs(caster, agent, samples, floor, pairs[~wide], probe_step, DISK_SHARE * clearance)
+    if wide.any():
+        ends = np.unique(pairs[wide])
+        wide_floor = np.full(len(samples), -1, dtype=np.int64)
+        wide_floor[ends] = floors.faces_under(samples[ends], offset, room=clearance)
+        keep[wide] = _walkable_pairs(caster, agent, samples, wide_floor, pairs[wide], probe_step, clearance)
+    return keep
+
+
 def _gap_pairs(samples: np.ndarray, edges: np.ndarray, connect: float, gap: float) -> np.ndarray:
     """(k, 2) sample ids, each row and the rows ascending: pairs farther apart than ``connect`` but at most ``gap`` (m) whose way along
     ``edges`` ((m, 2) ids) is missing or longer than ``GAP_STRETCH`` times their distance.
@@ -1066,25 +1104,30 @@ def build_sampled_graph(
     added, added_faces, stranded = moved_into_passages(caster, agent, clearance, spacing, candidates, fits, rejected, part)
     stats["candidates_stranded"] = int(len(stranded))
     stats["samples_added"] = int(len(added))
+    is_added = np.zeros(len(samples), dtype=bool)
     if len(added):
         # The added samples' edges (pairs with one of them at least), then the node order again.
         count = len(samples)
         samples = np.concatenate([samples, added])
         sample_normals = np.concatenate([sample_normals, caster.face_normals[added_faces]])
         areas = np.concatenate([areas, np.zeros(len(added))])  # the candidates they come from stand where the agent does not
-        floor = np.concatenate([floor, floors.faces_under(added, offset, room=half_width)])
+        floor = np.concatenate([floor, np.full(len(added), -1, dtype=np.int64)])  # their pairs find theirs wider
+        is_added = np.arange(len(samples)) >= count
         pairs = np.sort(np.asarray(cKDTree(samples).query_pairs(connect, output_type="ndarray"), dtype=np.int64).reshape(-1, 2), axis=1)
         pairs = pairs[pairs[:, 1] >= count]
-        edges = np.concatenate([edges, pairs[_walkable_pairs(caster, agent, samples, floor, pairs, probe_step, half_width)]])
+        edges = np.concatenate([edges, pairs[_walkable_pairs_of(
+            caster, agent, floors, offset, samples, floor, is_added, pairs, probe_step, clearance,
+        )]])
         candidate_edges += len(pairs)
         order = np.lexsort((samples[:, 1], samples[:, 2], samples[:, 0]))
         samples, sample_normals, areas, floor = samples[order], sample_normals[order], areas[order], floor[order]
+        is_added = is_added[order]
         edges = np.sort(np.argsort(order)[edges], axis=1)
         edges = edges[np.lexsort((edges[:, 1], edges[:, 0]))]
     sample_normals = sample_normals / np.linalg.norm(sample_normals, axis=1, keepdims=True)
     lap("passages")
     gaps = _gap_pairs(samples, edges, connect, gap)
-    gaps = gaps[_walkable_pairs(caster, agent, samples, floor, gaps, probe_step, half_width)]
+    gaps = gaps[_walkable_pairs_of(caster, agent, floors, offset, samples, floor, is_added, gaps, probe_step, clearance)]
     if len(gaps):
         edges = np.concatenate([edges, gaps])
         edges = edges[np.lexsort((edges[:, 1], edges[:, 0]))]
