@@ -1087,9 +1087,11 @@ def bands_meet_walls(caster: RayCaster, low: np.ndarray, along: np.ndarray, side
     its step, so that a bollard or a crate lower than ``low`` is found too. Walkable triangles are left out, as the
     side lines leave them.
 
-    Broad phase: the boxes of the bands and of the steep triangles sharing a cell of :func:`box_pairs`' 3-D grid
-    (cells as large as the bands' median box in plan), then their boxes; narrow phase :func:`_slices_meet_bands`
-    or :func:`_slabs_meet_triangles`. O(cells the boxes cover + pairs sharing a cell).
+    Broad phase: the bands' boxes looked up in the steep triangles' 3-D :class:`BoxGrid`, built once per mesh and
+    max slope (:meth:`RayCaster.steep_faces`), then the boxes of the pairs sharing a cell; narrow phase
+    :func:`_slices_meet_bands` or :func:`_slabs_meet_triangles`. Per call O(C log K + P) for the C cells the
+    bands' boxes cover, the K cells the steep triangles occupy and the P pairs sharing a cell, whatever the number
+    of steep triangles (the first call of a max slope also builds the grid, O(E log E) for its E entries).
     """
     n = len(low)
     meets = np.zeros(n, dtype=bool)

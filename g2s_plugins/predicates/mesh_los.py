@@ -38,8 +38,8 @@ half-width farther inside its edges, passes without a ray
 of the tree); any other costs about 2 L / probe_step + 5 rays (L = |AC|),
 through Embree when available, and, where those pass, its share of one band
 test per batch (:func:`g2s_plugins._raycasting.bands_meet_walls`, which
-looks at every steep triangle of the level on each call: most of this
-predicate's CPU, docs/sampling.md, "Simplified edges as wide as the agent").
+looks the band up in the steep triangles' grid, built once per mesh:
+docs/sampling.md, "Simplified edges as wide as the agent").
 Answers are cached per (A, C) pair for the predicate's life: the heat guarantee's rounds
 (:mod:`g2s_plugins.heat_guarantee`) ask the same predicate, so a later
 round casts rays only for walks no earlier round tested. Simplification
