@@ -30,7 +30,10 @@ Which predicate to use:
   builder), or to test against the true geometry rather than Recast's
   voxelised approximation. It keeps 0.9 x the clearance away from walls the
   segment passes beside (``clearance: 0``: a line of zero width, as before
-  6 December 2026), where Recast erodes by the whole agent radius.
+  6 December 2026), where Recast erodes by the whole agent radius, and
+  tests the agent's body between its side lines from knee to head
+  (``walk_segments(..., body=True)``, as the builder's edges), so a walk
+  does not pass over a crate the builder's edges stop at.
 
 Cost: a walk between two nodes on one open floor triangle, both that band's
 half-width farther inside its edges, passes without a ray
@@ -195,7 +198,7 @@ def mesh_los_predicate(
         if tested:
             starts, ends = zip(*tested)
             ok, _ = walk_segments(caster, np.array(starts), np.array(ends), agent, probe_step, params.margin,
-                                  params.max_surface_gap, half_width)
+                                  params.max_surface_gap, half_width, body=True)
             walked.update(zip(tested, ok.tolist()))
         for start, end in asked:
             if (start, end) not in cache:
