@@ -28,7 +28,7 @@ from __future__ import annotations
 import math
 import weakref
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from functools import cached_property
 from typing import Any
 
@@ -98,6 +98,7 @@ class _Scene:
         centroids: (m, 3) float64, each triangle's centroid, local frame.
         face_normals: (m, 3) float64, unit normals.
         twin: (m,) int64, :func:`_reversed_twins`.
+        steep: max slope (degrees) -> :class:`SteepFaces`, filled on first use (:meth:`RayCaster.steep_faces`).
     """
 
     triangles: np.ndarray
@@ -108,6 +109,7 @@ class _Scene:
     centroids: np.ndarray
     face_normals: np.ndarray
     twin: np.ndarray
+    steep: dict[float, SteepFaces] = field(default_factory=dict, compare=False)
 
     @cached_property
     def extent(self) -> tuple[float, float]:
@@ -356,6 +358,14 @@ class RayCaster:
         ok = faces >= 0
         ok[ok] = self.face_normals[faces[ok], 1] >= math.cos(math.radians(max_slope_deg)) - 1e-9
         return ok
+
+    def steep_faces(self, max_slope_deg: float) -> SteepFaces:
+        """The mesh's triangles steeper than ``max_slope_deg``, binned once per mesh and max slope (kept in
+        :attr:`scene`, which every caster of the mesh shares)."""
+        found = self.scene.steep.get(max_slope_deg)
+        if found is None:
+            found = self.scene.steep[max_slope_deg] = SteepFaces.of(self, max_slope_deg)
+        return found
 
 
 class BoxOccupancy:
@@ -610,37 +620,75 @@ MAX_FLOOR_CELL_ENTRIES = 4_000_000
 """(triangle, cell) pairs at most in :class:`OpenFloors`' broad phase; more and the cells are made larger."""
 
 
-def box_pairs(lo: np.ndarray, hi: np.ndarray, other_lo: np.ndarray, other_hi: np.ndarray,
-              cell: float) -> tuple[np.ndarray, np.ndarray]:
-    """``(i, j)`` int64 arrays: pairs of a box ``lo[i]..hi[i]`` ((n, d) m) and a box ``other_lo[j]..other_hi[j]``
-    ((m, d) m) that share a cell of a d-dimensional grid of cubes ``cell`` metres across, doubled while the other
-    boxes would fill more than ``MAX_FLOOR_CELL_ENTRIES`` cells. A broad phase: every pair of overlapping boxes is
-    among them, in no particular order. The cells each box covers are rows of a sparse matrix, and one sparse
-    product gives the pairs: O(cells the boxes cover + pairs sharing a cell).
-    """
-    origin = np.minimum(lo.min(axis=0), other_lo.min(axis=0))
-    while True:
-        other_first, other_last = (np.floor((corner - origin) / cell).astype(np.int64) for corner in (other_lo, other_hi))
-        if int(np.prod(other_last - other_first + 1, axis=1).sum()) <= MAX_FLOOR_CELL_ENTRIES:
-            break
-        cell *= 2.0
-    first, last = (np.floor((corner - origin) / cell).astype(np.int64) for corner in (lo, hi))
-    shape = tuple(int(size) for size in np.maximum(last.max(axis=0), other_last.max(axis=0)) + 1)
+class BoxGrid:
+    """Boxes ``lo[j]..hi[j]`` ((m, d) m) binned once into the cells of a d-dimensional grid of cubes, for a broad
+    phase asked many times (:meth:`pairs`): every box overlapping one of them shares a cell with it.
 
-    def cells_of(first: np.ndarray, last: np.ndarray) -> sparse.csr_array:
+    Args:
+        lo, hi: (m, d) metres, the boxes' lowest and highest corners.
+        cell: edge of a cell, metres; doubled while the boxes would fill more than ``MAX_FLOOR_CELL_ENTRIES``
+            cells.
+
+    Only the occupied cells are kept (their keys sorted, and a sparse cells x boxes matrix): built in
+    O(E log E) for the E (box, cell) entries, whatever the grid's extent.
+    """
+
+    def __init__(self, lo: np.ndarray, hi: np.ndarray, cell: float) -> None:
+        self.origin = lo.min(axis=0) if len(lo) else np.zeros(lo.shape[1])
+        while True:
+            first, last = self._span(lo, hi, cell)
+            if int(np.prod(last - first + 1, axis=1).sum()) <= MAX_FLOOR_CELL_ENTRIES:
+                break
+            cell *= 2.0
+        self.cell = cell
+        """Metres, the cells' edge after doubling."""
+        self.shape = tuple(int(size) for size in last.max(axis=0, initial=0) + 1)
+        owner, key = self._cells_of(first, last)
+        self._keys, column = np.unique(key, return_inverse=True)
+        self._boxes = sparse.csr_array((np.ones(len(owner), dtype=np.int32), (column.reshape(-1), owner)),
+                                       shape=(len(self._keys), len(lo)))
+
+    def _span(self, lo: np.ndarray, hi: np.ndarray, cell: float) -> tuple[np.ndarray, np.ndarray]:
+        """(n, d) int64 each: the first and last cell each box covers along each axis."""
+        return tuple(np.floor((corner - self.origin) / cell).astype(np.int64) for corner in (lo, hi))
+
+    def _cells_of(self, first: np.ndarray, last: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """``(owner, key)``: one row per (box, cell) it covers, the box's index and the cell's flat index."""
         spans = last - first + 1
         total = np.prod(spans, axis=1)
         owner = np.repeat(np.arange(len(first)), total)
         k = np.arange(int(total.sum())) - np.repeat(np.cumsum(total) - total, total)
-        index = np.empty((len(owner), len(shape)), dtype=np.int64)
-        for axis in reversed(range(len(shape))):  # k counts the box's cells with the last axis fastest
+        index = np.empty((len(owner), len(self.shape)), dtype=np.int64)
+        for axis in reversed(range(len(self.shape))):  # k counts the box's cells with the last axis fastest
             index[:, axis] = first[owner, axis] + k % spans[owner, axis]
             k = k // spans[owner, axis]
-        key = np.ravel_multi_index(tuple(index.T), shape)
-        return sparse.csr_array((np.ones(len(owner), dtype=np.int32), (owner, key)), shape=(len(first), math.prod(shape)))
+        return owner, np.ravel_multi_index(tuple(index.T), self.shape)
 
-    shared = (cells_of(first, last) @ cells_of(other_first, other_last).T).tocoo()
-    return shared.row.astype(np.int64), shared.col.astype(np.int64)
+    def pairs(self, lo: np.ndarray, hi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """``(i, j)`` int64 arrays: pairs of a box ``lo[i]..hi[i]`` ((n, d) m) and a binned box ``j`` that share a
+        cell, in no particular order; every overlapping pair is among them. The boxes are clipped to the grid
+        (the binned boxes lie within it) and their cells looked up among the occupied ones; one sparse product
+        gives the pairs: O(C log K + pairs sharing a cell) for the C cells the clipped boxes cover and the K
+        occupied cells."""
+        if len(self._keys) == 0:
+            return np.zeros(0, dtype=np.int64), np.zeros(0, dtype=np.int64)
+        first, last = self._span(lo, hi, self.cell)
+        inside = np.flatnonzero(np.all((last >= 0) & (first < self.shape), axis=1))
+        top = np.array(self.shape) - 1
+        owner, key = self._cells_of(np.clip(first[inside], 0, top), np.clip(last[inside], 0, top))
+        column = np.minimum(np.searchsorted(self._keys, key), len(self._keys) - 1)
+        occupied = self._keys[column] == key
+        cells = sparse.csr_array((np.ones(int(occupied.sum()), dtype=np.int32), (inside[owner[occupied]],
+                                  column[occupied])), shape=(len(lo), len(self._keys)))
+        shared = (cells @ self._boxes).tocoo()
+        return shared.row.astype(np.int64), shared.col.astype(np.int64)
+
+
+def box_pairs(lo: np.ndarray, hi: np.ndarray, other_lo: np.ndarray, other_hi: np.ndarray,
+              cell: float) -> tuple[np.ndarray, np.ndarray]:
+    """``(i, j)`` int64 arrays: :meth:`BoxGrid.pairs` of the boxes ``lo..hi`` ((n, d) m) with a :class:`BoxGrid`
+    of ``other_lo..other_hi`` ((m, d) m) and ``cell`` metres, for a single query."""
+    return BoxGrid(other_lo, other_hi, cell).pairs(lo, hi)
 
 
 class OpenFloors:
@@ -999,6 +1047,34 @@ def _slabs_meet_triangles(triangles: np.ndarray, origin: np.ndarray, along: np.n
     return (np.where(found, span, np.inf).min(axis=1) < reach) & (np.where(found, span, -np.inf).max(axis=1) > -reach)
 
 
+@dataclass(frozen=True)
+class SteepFaces:
+    """The triangles of a caster's mesh steeper than a max slope and a :class:`BoxGrid` of their 3-D boxes, for
+    :func:`bands_meet_walls`.
+
+    Attributes:
+        triangles: (k, 3, 3) float64, their corners, metres.
+        lo, hi: (k, 3) float64, their boxes.
+        grid: the boxes binned in cubes of the boxes' median extent in plan (their larger side seen from above),
+            at least a 4096th of the mesh's extent.
+    """
+
+    triangles: np.ndarray
+    lo: np.ndarray
+    hi: np.ndarray
+    grid: BoxGrid
+
+    @classmethod
+    def of(cls, caster: RayCaster, max_slope_deg: float) -> SteepFaces:
+        """Built in O(k log k) plus :class:`BoxGrid`'s build."""
+        steep = np.nonzero(~caster.walkable_faces(np.arange(len(caster.triangles)), max_slope_deg))[0]
+        triangles = caster.triangles[steep]
+        lo, hi = triangles.min(axis=1), triangles.max(axis=1)
+        plan = (hi - lo)[:, [0, 2]].max(axis=1)
+        cell = max(float(np.median(plan)) if len(plan) else 1.0, caster.scene.extent[0] / 4096.0, 1e-3)
+        return cls(triangles, lo, hi, BoxGrid(lo, hi, cell))
+
+
 def bands_meet_walls(caster: RayCaster, low: np.ndarray, along: np.ndarray, side: np.ndarray,
                      max_slope_deg: float, inset: float = GRAZE_NUDGE,
                      heights: np.ndarray | None = None) -> np.ndarray:
@@ -1011,14 +1087,16 @@ def bands_meet_walls(caster: RayCaster, low: np.ndarray, along: np.ndarray, side
     its step, so that a bollard or a crate lower than ``low`` is found too. Walkable triangles are left out, as the
     side lines leave them.
 
-    Broad phase: the boxes of the bands and of the steep triangles sharing a cell of :func:`box_pairs`' 3-D grid
-    (cells as large as the bands' median box in plan), then their boxes; narrow phase :func:`_slices_meet_bands`
-    or :func:`_slabs_meet_triangles`. O(cells the boxes cover + pairs sharing a cell).
+    Broad phase: the bands' boxes looked up in the steep triangles' 3-D :class:`BoxGrid`, built once per mesh and
+    max slope (:meth:`RayCaster.steep_faces`), then the boxes of the pairs sharing a cell; narrow phase
+    :func:`_slices_meet_bands` or :func:`_slabs_meet_triangles`. Per call O(C log K + P) for the C cells the
+    bands' boxes cover, the K cells the steep triangles occupy and the P pairs sharing a cell, whatever the number
+    of steep triangles (the first call of a max slope also builds the grid, O(E log E) for its E entries).
     """
     n = len(low)
     meets = np.zeros(n, dtype=bool)
-    steep = np.nonzero(~caster.walkable_faces(np.arange(len(caster.triangles)), max_slope_deg))[0]
-    if n == 0 or len(steep) == 0:
+    steep = caster.steep_faces(max_slope_deg)
+    if n == 0 or len(steep.triangles) == 0:
         return meets
     corners = np.stack([low - side, low + side, low + along + side, low + along - side], axis=1)
     if heights is not None:
@@ -1026,10 +1104,8 @@ def bands_meet_walls(caster: RayCaster, low: np.ndarray, along: np.ndarray, side
         corners = np.concatenate([corners + heights[:, 0, None, None] * UP, corners + heights[:, 1, None, None] * UP],
                                  axis=1)
     band_lo, band_hi = corners.min(axis=1), corners.max(axis=1)
-    walls = caster.triangles[steep]
-    wall_lo, wall_hi = walls.min(axis=1), walls.max(axis=1)
-    band, wall = box_pairs(band_lo, band_hi, wall_lo, wall_hi,
-                           max(float(np.median(band_hi - band_lo, axis=0)[[0, 2]].max()), 1e-3))
+    walls, wall_lo, wall_hi = steep.triangles, steep.lo, steep.hi
+    band, wall = steep.grid.pairs(band_lo, band_hi)
     near = np.all((band_lo[band] <= wall_hi[wall]) & (wall_lo[wall] <= band_hi[band]), axis=1)
     band, wall = band[near], wall[near]
     if heights is None:

@@ -331,3 +331,17 @@ def test_open_floor_answers_save_walk_tests_not_answers(monkeypatch: pytest.Monk
         simplified[floors] = (sorted(tree.edges(data="weight")), sum(walks))
     assert simplified[OpenFloors][0] == simplified[NoOpenFloors][0]
     assert simplified[OpenFloors][1] < 0.5 * simplified[NoOpenFloors][1]
+
+
+def test_mesh_los_stops_a_walk_over_low_bollards_with_the_bodys_slab() -> None:
+    # The row of tests/test_sampling_body.py: 0.7 m bollards 0.2 m square, centres 0.8 m apart along z at x = 0. A
+    # walk A -> C along x at z = 0.4 passes between two of them; its side lines (z -0.05 and 0.85, 0.45 m off) pass
+    # over them at 1 m, but they stand in the body's slab (0.5-1.95 m), which the default surface gap (0.4 m, under
+    # the 0.5 m knee) lets the walk test. Without a surface gap (the paper's rule) no slab is tested; a 0.45 m row
+    # lies under the slab.
+    from tests.test_sampling_body import bollard_row
+
+    tree = chain(((-3, 0, 0.4), UP, True), ((0, 0, 3), UP, True), ((3, 0, 0.4), UP, True))
+    assert predicate(bollard_row(0.7))(tree, 0, 1, 2) is False
+    assert predicate(bollard_row(0.7), max_surface_gap=None)(tree, 0, 1, 2) is True
+    assert predicate(bollard_row(0.45))(tree, 0, 1, 2) is True

@@ -132,7 +132,10 @@ def test_box_pairs_finds_every_overlapping_pair_in_2d_and_3d():
     other_lo, other_hi = np.array([[1.5, 0.2], [9.0, 9.0]]), np.array([[2.5, 0.8], [9.5, 9.5]])
     pairs = set(zip(*box_pairs(lo, lo + 1.0, other_lo, other_hi, cell=1.0)))
     assert (1, 0) in pairs and (0, 1) not in pairs and (2, 1) not in pairs
-    # 3-D: boxes apart in height only share no cell; a cell as large as the whole scene keeps every pair
+    # 3-D: boxes apart in height only share no cell; a box reaching into the grid from outside it (clipped to
+    # the grid) still meets the box it overlaps, and one wholly outside it meets none, whatever the cell
     lo3, other3 = np.array([[0.0, 0.0, 0.0]]), np.array([[0.0, 5.0, 0.0]])
     assert len(box_pairs(lo3, lo3 + 1.0, other3, other3 + 1.0, cell=1.0)[0]) == 0
-    assert set(zip(*box_pairs(lo3, lo3 + 1.0, other3, other3 + 1.0, cell=16.0))) == {(0, 0)}
+    assert len(box_pairs(lo3, lo3 + 1.0, other3, other3 + 1.0, cell=16.0)[0]) == 0
+    reaching = np.array([[-10.0, -10.0, -10.0]]), np.array([[0.5, 5.5, 0.5]])
+    assert set(zip(*box_pairs(*reaching, other3, other3 + 1.0, cell=1.0))) == {(0, 0)}

@@ -30,7 +30,12 @@ Which predicate to use:
   builder), or to test against the true geometry rather than Recast's
   voxelised approximation. It keeps 0.9 x the clearance away from walls the
   segment passes beside (``clearance: 0``: a line of zero width, as before
-  6 December 2026), where Recast erodes by the whole agent radius.
+  6 December 2026), where Recast erodes by the whole agent radius, and
+  tests the agent's body between its side lines from knee to head
+  (``walk_segments(..., body=True)``, as the builder's edges), so a walk
+  does not pass over a crate the builder's edges stop at; only with a
+  ``max_surface_gap`` no larger than the knee's height, which keeps the
+  ground under the line below the slab.
 
 Cost: a walk between two nodes on one open floor triangle, both that band's
 half-width farther inside its edges, passes without a ray
@@ -38,8 +43,8 @@ half-width farther inside its edges, passes without a ray
 of the tree); any other costs about 2 L / probe_step + 5 rays (L = |AC|),
 through Embree when available, and, where those pass, its share of one band
 test per batch (:func:`g2s_plugins._raycasting.bands_meet_walls`, which
-looks at every steep triangle of the level on each call: most of this
-predicate's CPU, docs/sampling.md, "Simplified edges as wide as the agent").
+looks the band up in the steep triangles' grid, built once per mesh:
+docs/sampling.md, "Simplified edges as wide as the agent").
 Answers are cached per (A, C) pair for the predicate's life: the heat guarantee's rounds
 (:mod:`g2s_plugins.heat_guarantee`) ask the same predicate, so a later
 round casts rays only for walks no earlier round tested. Simplification
@@ -155,6 +160,11 @@ def mesh_los_predicate(
     cache: dict[tuple[Point, Point], bool] = {}  # answers given, for (A, C) and (C, A)
     asking: tuple[_Structure, int, int] | None = None  # the structure, A and C of the chain being answered
 
+    # The body's slab stands on the straight line A -> C: it is the agent's body only where the ground under the
+    # line stays below its knee, which a surface gap no larger than the knee keeps at every probe (without one,
+    # the paper's rule, the line may run through a hill and the slab meet the hill's own faces).
+    body = params.max_surface_gap is not None and params.max_surface_gap <= agent.body[0]
+
     def start_casting(structure: _Structure) -> RayCaster:
         """The caster, and the open floor under every node of ``structure`` (built on first use: runs that never
         get here pay nothing; nodes keep their positions while simplification removes some)."""
@@ -195,7 +205,7 @@ def mesh_los_predicate(
         if tested:
             starts, ends = zip(*tested)
             ok, _ = walk_segments(caster, np.array(starts), np.array(ends), agent, probe_step, params.margin,
-                                  params.max_surface_gap, half_width)
+                                  params.max_surface_gap, half_width, body=body)
             walked.update(zip(tested, ok.tolist()))
         for start, end in asked:
             if (start, end) not in cache:
