@@ -4,7 +4,7 @@
 from __future__ import annotations
 
 import pytest
-from conftest import benchmark
+from tests.conftest import benchmark
 
 from g2s_core import pipeline
 from g2s_core.config import find_config, load_raw_config
