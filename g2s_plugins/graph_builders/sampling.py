@@ -469,7 +469,7 @@ def nearest_wall(caster: RayCaster, points: np.ndarray, agent: AgentShape, clear
             wall = np.flatnonzero((hits.distance < reach) & ~caster.walkable_faces(hits.face, agent.max_slope_deg))
             if len(wall) == 0:
                 continue
-            nearest = trimesh.triangles.closest_point(np.asarray(caster.mesh.triangles)[hits.face[wall]], origins[wall])
+            nearest = trimesh.triangles.closest_point(caster.triangles[hits.face[wall]], origins[wall])
             level_offset = (origins[wall] - nearest) * [1.0, 0.0, 1.0]
             length = np.linalg.norm(level_offset, axis=1)
             nearer = length < distance[wall]
