@@ -1,7 +1,7 @@
 """Where the navmesh route's structure nodes come from, and what each lever that removes them costs.
 
 Run: ``.venv/bin/python benchmarks/structure_sources.py [--preset map_analysis] [--levels nav_test dungeon_1k hotel
-...] [--seeds 0 1 2] [--jsonl OUT.jsonl]``
+...] [--seeds 0 1 2] [--terminal-levers preset "radius 8 m" ...] [--jsonl OUT.jsonl]``
 
 For every level (the names ``benchmarks/analysis_quality.py`` takes) it runs ``--preset`` (a ``coverage`` terminal
 selector and a ``surface_los`` simplification, as ``map_analysis``) in memory and prints two tables.
@@ -29,7 +29,10 @@ level), for the terminals of the preset, of the preset with every dent the cover
 alone (``traffic_weight: 0``) and with a cover radius of 8 m, each simplified as above and with the traffic step or
 the guarantee alone left out; then the lowest share of a point that meets rho >= 0.9, 95 % within 6 m and at most
 5 % of the traffic more than 5 m away, and the highest rho of a point at 35 % or under (``always`` and ``raycast``
-left out of both: their edges need not stay on the walkable surface).
+left out of both: their edges need not stay on the walkable surface). The simplification levers also drop the
+structure's leaves that are no terminal (``surface_los``'s ``leaf_cover_radius``, :mod:`g2s_plugins.structure_leaves`),
+holding every node within the cover's radius and 5 m of the structure, the radius alone, or nothing (a bound);
+``--terminal-levers`` runs only the terminal levers named (the preset's always runs).
 
 This is a benchmark: nothing here asserts a target (docs/analysis_quality.md, "Where the structure's nodes come
 from").
@@ -42,7 +45,7 @@ import copy
 import json
 import os
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Collection
 from typing import Any
 
 import networkx as nx
@@ -74,8 +77,14 @@ goes, no predicate), each adding one test to the one before."""
 LEVERS: dict[str, dict[str, Any] | None] = {
     "no traffic step": {"max_traffic_step": None},
     "no guarantee": {"min_heat_rho": None},
+    "leaves dropped": {"leaf_cover_radius": "cover"},
+    "leaves dropped, radius only": {"leaf_cover_radius": "cover", "leaf_near_distance": "cover"},
+    "leaves dropped, unbounded": {"leaf_cover_radius": 1e9, "leaf_near_distance": 1e9},
 }
-"""Further simplifications of the front: the preset with one test left out."""
+"""Further simplifications of the front: the preset with one test left out, or with the structure's leaves that are
+no terminal dropped (``leaf_cover_radius``, :mod:`g2s_plugins.structure_leaves`) where every node within the cover's
+radius (``"cover"``: the run's ``coverage`` radius) and 5 m of the structure stays so, within the radius alone, or
+everywhere (a bound: no distance held)."""
 
 TERMINAL_LEVERS: dict[str, dict[str, Any]] = {
     "preset": {},
@@ -150,12 +159,13 @@ def measures(result: RunResult, structure: nx.DiGraph, plan: pipeline.Plan, regi
             "traffic_off": quality.traffic_off}
 
 
-def level_report(name: str, mesh: trimesh.Trimesh, raw: dict, preset: str, registry: Registry) -> dict[str, Any]:
+def level_report(name: str, mesh: trimesh.Trimesh, raw: dict, preset: str, registry: Registry,
+                 terminal_levers: Collection[str] = tuple(TERMINAL_LEVERS)) -> dict[str, Any]:
     """Sources and front of one level (see the module docs)."""
     report: dict[str, Any] = {"level": name}
     reference: np.ndarray | None = None
     base = plan_with(raw, preset, {}, registry).stages["simplify"][0].params
-    for lever, terminals in TERMINAL_LEVERS.items():
+    for lever, terminals in ((k, v) for k, v in TERMINAL_LEVERS.items() if k in terminal_levers):
         plan = plan_with(raw, preset, terminals, registry)
         cpu = time.process_time()
         result = pipeline.run(plan, registry, mesh, name, mesh_sha256(mesh))
@@ -164,7 +174,9 @@ def level_report(name: str, mesh: trimesh.Trimesh, raw: dict, preset: str, regis
             reference = evaluation.reference_flow(result)
         polygons = traffic.surface_arrays(result.graph).n
         structures: dict[str, nx.DiGraph] = {}
+        radius = plan.stages["terminals"][0].params.radius or coverage.default_radius(result.context)
         for step, change in {**SIMPLIFICATIONS, **LEVERS}.items():
+            change = None if change is None else {k: radius if v == "cover" else v for k, v in change.items()}
             params = None if change is None else base.model_copy(update=change)
             structures[step], rounds = simplified(result, params)
             report.setdefault("front", {}).setdefault(lever, {})[step] = measures(result, structures[step], plan,
@@ -225,13 +237,15 @@ def main(argv: list[str] | None = None) -> None:
     parser.add_argument("--preset", default="map_analysis")
     parser.add_argument("--levels", nargs="+", default=["nav_test", "dungeon_1k"])
     parser.add_argument("--seeds", nargs="+", type=int, default=[0])
+    parser.add_argument("--terminal-levers", nargs="+", choices=list(TERMINAL_LEVERS), default=list(TERMINAL_LEVERS),
+                        help="the terminal levers of the front (the preset's always runs)")
     parser.add_argument("--jsonl", help="also append each level's report to this file, a JSON object a line")
     args = parser.parse_args(argv)
     print(f"load average {os.getloadavg()[0]:.1f}", flush=True)
     registry = Registry.from_entry_points()
     raw = load_raw_config(find_config(args.preset))
     for name, mesh in levels(args.levels, args.seeds):
-        report = level_report(name, mesh, raw, args.preset, registry)
+        report = level_report(name, mesh, raw, args.preset, registry, {"preset", *args.terminal_levers})
         print_report(report, lambda line: print(line, flush=True))
         if args.jsonl:
             with open(args.jsonl, "a", encoding="utf-8") as out:

@@ -8,7 +8,9 @@ The measures (all along the initial walkable graph, distances in metres):
     r metres of the structure, for each r of ``radii``. "The structure" is
     every node of the Steiner stage's forest with its loop paths
     (``RunResult.looped``, else ``steiner``): the final
-    structure's edges stand for those chains of polygons.
+    structure's edges stand for those chains of polygons; less the
+    branches of the leaves simplification dropped
+    (:func:`g2s_plugins.structure_leaves.standing_for`).
 ``traffic_off``
     share of the reference flow (:func:`reference_flow`) through nodes more
     than ``off_distance`` metres from the structure.
@@ -147,7 +149,7 @@ from scipy.sparse import csgraph
 from scipy.spatial import cKDTree
 
 from g2s_core.model import RunResult
-from g2s_plugins import centrality, play_space, traffic
+from g2s_plugins import centrality, play_space, structure_leaves, traffic
 from g2s_plugins.graph_builders import navmesh as navmesh_builder
 from g2s_plugins.recast import NavMesh, SettingsError, build_navmesh
 
@@ -505,7 +507,8 @@ def evaluate(
     area = traffic.origin_weight(arrays)
     if result.structure is None:  # no terminals: nothing was joined
         return Quality({r: 0.0 for r in radii}, 1.0, float("nan"), float("nan"), float("nan"), 0.0)
-    joined = result.looped if result.looped is not None else result.steiner
+    joined = (structure_leaves.standing_for(result.forest, result.structure) if result.forest is not None
+              else result.looped if result.looped is not None else result.steiner)
     distance, _ = traffic.distance_to(arrays, arrays.rows(sorted(joined)))
     within = {r: float(area[distance <= r].sum() / area.sum()) for r in radii}
     total_flow = reference.sum()

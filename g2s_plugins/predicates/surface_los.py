@@ -37,11 +37,13 @@ from collections.abc import Callable
 
 import networkx as nx
 import numpy as np
+from pydantic import Field
 
 from g2s_core.errors import PluginError
 from g2s_core.model import RunContext
 from g2s_core.plugin import hookimpl
 from g2s_core.simplify import ForestArrays
+from g2s_plugins import structure_leaves, traffic
 from g2s_plugins._surface import CollapseParams, RuleArrays, collapse_rule
 from g2s_plugins.heat_guarantee import guaranteed
 
@@ -49,7 +51,18 @@ NAME = "surface_los"
 
 
 class Params(CollapseParams):
-    """How much the surface may bend at a removed node, and how far a new edge may stray from the navmesh surface."""
+    """How much the surface may bend at a removed node, how far a new edge may stray from the navmesh surface, and
+    which leaves that are no terminal go (:mod:`g2s_plugins.structure_leaves`)."""
+
+    leaf_cover_radius: float | None = Field(
+        None, gt=0, description="after Algorithm 4, drop the structure's leaves that are no terminal (a cover's "
+        "waypoints at the ends of its paths) while every node within this many metres, along the graph, of the "
+        "polygons the structure stands for stays so (set it to the cover's radius); null: every leaf stays"
+    )
+    leaf_near_distance: float = Field(
+        5.0, gt=0, description="with leaf_cover_radius, a leaf also stays when dropping it would take a node within "
+        "this many metres of those polygons farther (the distance at which traffic counts as passing the structure)"
+    )
 
 
 @hookimpl
@@ -78,8 +91,15 @@ def g2s_simplify_predicate(
     memo = navmesh.sight_memo() if hasattr(navmesh, "collapse_forest") else None
 
     def native(arrays: ForestArrays, rule: RuleArrays) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        return navmesh.collapse_forest(arrays, rule, step, gap, memo)
+        kept, added, loop = navmesh.collapse_forest(arrays, rule, step, gap, memo)
+        if params.leaf_cover_radius is not None:  # the leaves that are no terminal, where the cover holds without them
+            graph = traffic.surface_arrays(context.graph)
+            kept = structure_leaves.pruned(arrays, kept, added, loop, graph, params.leaf_cover_radius,
+                                           params.leaf_near_distance, rule.rank, rule.max_step)
+        return kept, added, loop
 
     whole = native if memo is not None else None
+    if whole is None and params.leaf_cover_radius is not None:  # the core's loop of predicate calls removes no leaf
+        raise PluginError("leaf_cover_radius needs a navmesh with the native simplification (collapse_forest)")
     return guaranteed(lambda: collapse_rule(params, line_of_sight, context.graph, whole), params, context, forest,
                       simplified)
