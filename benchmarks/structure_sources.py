@@ -26,7 +26,9 @@ structure's size. The seeded leaves the preset's
 away (:func:`g2s_plugins.evaluation.evaluate`, the ``traffic`` evaluator's measures, against one reference flow per
 level), for the terminals of the preset, of the preset with every dent the cover holds dropped
 (``dent_rho_budget: 1``), with every leaf the cover holds dropped as well (``quiet_step: 100``), with the plain cover
-alone (``traffic_weight: 0``) and with a cover radius of 8 m, each simplified as above and with the traffic step or
+alone (``traffic_weight: 0``), with a cover radius of 8 m and with the leaves alone (every leaf seeded, no cover:
+an unbounded radius, no traffic weight, no dead-end places, quiet dead ends or dents; a seed per area without a
+leaf), the terminals that any choice of the cover's waypoints adds to, each simplified as above and with the traffic step or
 the guarantee alone left out; then the lowest share of a point that meets rho >= 0.9, 95 % within 6 m and at most
 5 % of the traffic more than 5 m away, and the highest rho of a point at 35 % or under (``always`` and ``raycast``
 left out of both: their edges need not stay on the walkable surface). The simplification levers also drop the
@@ -92,6 +94,7 @@ TERMINAL_LEVERS: dict[str, dict[str, Any]] = {
     "held leaves dropped": {"dent_rho_budget": 1.0, "quiet_step": 100.0},
     "plain cover": {"traffic_weight": 0.0},
     "radius 8 m": {"radius": 8.0},
+    "leaves alone": {"radius": 1e9, "traffic_weight": 0.0, "dead_end_radii": 0.0, "quiet_step": 0.0, "dent_rho_budget": 0.0},
 }
 """The terminal selections of the front, as the parameters of the preset's ``coverage`` they change."""
 
