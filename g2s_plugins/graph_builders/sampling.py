@@ -60,7 +60,9 @@ wanted. No Recast is involved: ``context.navmesh`` stays ``None``.
    which the compass rays let stand that near a wall; an added point stands
    the whole clearance off, a square crossing of a passage the agent fits
    keeps that width, and the narrower band let crossings 1-4 degrees off
-   square pass slots narrower than the agent). Then the *gaps*
+   square pass slots narrower than the agent), on the way or on it moved
+   sideways by what ``DISK_SHARE`` leaves of the clearance (a corner on one
+   side passed that near, as grid samples' edges pass it). Then the *gaps*
    (:func:`_gap_pairs`): in a passage only slightly wider than twice the
    clearance the samples form a thin band, where the pick can leave two
    consecutive ones farther apart than ``connect_radius``; pairs up to
@@ -161,7 +163,8 @@ distance from a straight wall at which the agent checks' 8 compass rays accept a
 between two accepted samples is not stopped by that wall. At 1.0, an edge 0.46 m from a wall of a 1.9 m corridor
 of the 1k dungeon is stopped and two samples are cut off; at 0.9, in a 0.2 m wall turned 0, 22 and 45 degrees, every
 door up to 1.0 m wide is closed and every one from 1.4 m open (docs/sampling.md, "Doors narrower than the agent").
-An edge with a sample added in a passage is walked with the whole clearance instead (:func:`_walkable_pairs_of`)."""
+An edge with a sample added in a passage is walked with the whole clearance instead, on the way or beside it
+(:func:`_walkable_pairs_of`)."""
 
 
 class Params(PlaySpaceParams):
@@ -895,23 +898,35 @@ def _walkable_pairs(
     pairs: np.ndarray,
     probe_step: float,
     half_width: float,
+    shift: float = 0.0,
 ) -> np.ndarray:
     """(m,) bool: the agent walks straight between the two samples of each of ``pairs`` ((m, 2) ids), a disk
     of ``half_width`` (m) travelling along the way through no wall, and no steep face in the slab it sweeps from
-    above the agent's step to its head (:func:`~g2s_plugins._raycasting.walk_segments` with ``body``).
+    above the agent's step to its head (:func:`~g2s_plugins._raycasting.walk_segments` with ``body``); with
+    ``shift`` (m), along the way moved that far sideways, horizontally at right angles to it (to the left of the
+    walk from the first sample to the second; negative: to the right), and lengthened by ``half_width`` past both
+    samples, so that the band also covers the disks at its ends: :func:`walk_segments` leaves the ends' disks to
+    the caller, and the moved ends are not the samples the caller checked, nor does every added sample clear a
+    thin post between its compass rays (in ``benchmarks/post_slots.py``'s 0.95 m slots turned 22 degrees one
+    stands 0.35 m off the post, and a moved band ending there crossed the slot).
 
-    A pair on one open floor triangle (``floor``: each sample's, from
+    Unmoved, a pair on one open floor triangle (``floor``: each sample's, from
     :meth:`~g2s_plugins._raycasting.OpenFloors.faces_under` with ``room`` at least ``half_width``; -1 for none)
     passes without a ray; the others get :func:`walk_segments`, a batch at a time.
     """
-    keep = (floor[pairs[:, 0]] >= 0) & (floor[pairs[:, 0]] == floor[pairs[:, 1]])
+    keep = np.zeros(len(pairs), dtype=bool) if shift else (floor[pairs[:, 0]] >= 0) & (floor[pairs[:, 0]] == floor[pairs[:, 1]])
     tested = np.nonzero(~keep)[0]
     for begin in range(0, len(tested), MAX_EDGE_BATCH):
         rows = tested[begin : begin + MAX_EDGE_BATCH]
-        keep[rows] = walk_segments(
-            caster, samples[pairs[rows, 0]], samples[pairs[rows, 1]], agent, probe_step, half_width=half_width,
-            body=True,
-        )[0]
+        starts, ends = samples[pairs[rows, 0]], samples[pairs[rows, 1]]
+        if shift:
+            along = ends - starts
+            left = np.stack([-along[:, 2], np.zeros(len(rows)), along[:, 0]], axis=1)
+            length = np.linalg.norm(left, axis=1, keepdims=True)
+            left = np.divide(left, length, out=np.zeros_like(left), where=length > 0)  # a vertical pair: none
+            longer = np.divide(half_width * along, length, out=np.zeros_like(along), where=length > 0)
+            starts, ends = starts + shift * left - longer, ends + shift * left + longer
+        keep[rows] = walk_segments(caster, starts, ends, agent, probe_step, half_width=half_width, body=True)[0]
     return keep
 
 
@@ -929,21 +944,31 @@ def _walkable_pairs_of(
 ) -> np.ndarray:
     """(m,) bool: :func:`_walkable_pairs` for ``pairs`` ((m, 2) ids), a band of ``DISK_SHARE`` x ``clearance``
     (m) between two grid samples (``floor``: theirs, with that room) and of the whole ``clearance`` for a pair
-    with an added sample (``added``: (n,) bool per sample; their open floor triangles found here with that room).
+    with an added sample (``added``: (n,) bool per sample), along the way or, where that fails, along it moved
+    sideways by (1 - ``DISK_SHARE``) x ``clearance`` to the left, then to the right.
 
     An added sample stands where the agent fits with its whole width (:func:`moved_into_passages`), so a passage
     the agent fits is crossed square at the full width; the narrower band is there for grid samples accepted by
-    the compass rays, and it let added samples cross slots narrower than the agent 1-4 degrees off square
-    (docs/sampling.md, "Passages a little wider than the agent").
+    the compass rays, and it let added samples cross slots narrower than the agent 1-4 degrees off square. A band
+    as wide as the agent crosses no such slot wherever it is moved, while moved it passes a corner on one side of
+    the way that only the narrower band cleared, as the grid samples' edges pass it: the band on the way alone
+    refused 11 of the lecture hall's edges from added samples, each passing an end panel's corner 0.41-0.4999 m
+    off (docs/sampling.md, "Passages a little wider than the agent", "A miss it brings"). Their open floor
+    triangles are found here with the whole clearance as room. Two more walk tests at most for each pair the band
+    on the way refuses.
     """
     wide = added[pairs].any(axis=1)
     keep = np.zeros(len(pairs), dtype=bool)
     keep[~wide] = _walkable_pairs(caster, agent, samples, floor, pairs[~wide], probe_step, DISK_SHARE * clearance)
     if wide.any():
+        slack = (1.0 - DISK_SHARE) * clearance
         ends = np.unique(pairs[wide])
         wide_floor = np.full(len(samples), -1, dtype=np.int64)
         wide_floor[ends] = floors.faces_under(samples[ends], offset, room=clearance)
-        keep[wide] = _walkable_pairs(caster, agent, samples, wide_floor, pairs[wide], probe_step, clearance)
+        rows = np.flatnonzero(wide)
+        for shift in (0.0, slack, -slack):
+            rows = rows[~keep[rows]]
+            keep[rows] = _walkable_pairs(caster, agent, samples, wide_floor, pairs[rows], probe_step, clearance, shift)
     return keep
 
 
