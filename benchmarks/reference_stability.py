@@ -2,7 +2,7 @@
 map comes to a walking flow that depends on no tessellation.
 
 Run: ``.venv/bin/python benchmarks/reference_stability.py [--levels nav_test dungeon_1k terrain_1k castle_1k
-market my_level.obj] [--seeds 0 1] [--cell 0.25] [--pairs 128 64] [--jobs 1]``
+market my_level.obj] [--seeds 0 1] [--cell 0.25] [--pairs 1024 16] [--stability-pairs 256 16] [--jobs 1]``
 
 Issue 9's reference flow counts the area-weighted origin-destination walkers through each navmesh *polygon*
 (:func:`g2s_plugins.evaluation.reference_flow` on the ``navmesh`` builder's graph). How a polygon is cut is
@@ -26,7 +26,7 @@ Spearman's rho over the cells both have (each cell counts alike, so each square 
   :data:`WALKER_REACH` of it (in plan; a height difference counts :data:`HEIGHT_SCALE` as much, so a storey
   above is out of reach). It counts walkers per square metre, not per polygon; its own dependence on the
   tessellation (the corridor) is measured the same way (``pulled`` under each tessellation against the
-  default's, the same pairs of cells), and its sampling noise by another draw of as many pairs (``pulled, other
+  default's, the same ``--stability-pairs``, a subset of those pairs), and its sampling noise by another draw of as many pairs (``pulled, other
   pairs``, on the default navmesh) against the first.
 * ``sampled``: the sampling route's own walking flow (its initial graph of ``map_analysis_sampling``, its
   evaluation's reference: :func:`g2s_plugins.evaluation.reference_flow`), each cell taking the flow of the
@@ -36,14 +36,16 @@ Then the heat maps, on the same raster: ``map_analysis`` (each cell its polygon'
 its nearest structure node, as issue 9 measures) and ``map_analysis_sampling`` (each cell its nearest sample's), each
 against ``poly`` (default), ``pulled`` (default) and ``sampled``; beside them the issue's own measures of the
 sampling run (``rho``, against its own graph, and ``rho nav``, against the default navmesh, per polygon:
-:mod:`g2s_plugins.evaluation`). Cost per level: six navmesh builds and their flows, ``(1 + 6) S`` Dijkstra
-searches of the polygon graph (one block per tessellation) and ``S T`` funnels, one Detour look-up per cell
-and tessellation, and one run of each preset. This is a benchmark: nothing here asserts a target.
+:mod:`g2s_plugins.evaluation`). Cost per level: six navmesh builds and their flows, ``2 S`` Dijkstra
+searches of the polygon graph and ``2 S T`` funnels (the pairs and the other draw), ``6 S' T'`` of each for the
+``--stability-pairs``, each funnel's path read against a k-d tree of the raster, one Detour look-up per cell and
+tessellation, and one run of each preset: on the 1k dungeon of seed 0 (96,133 cells) 258 s of CPU, nearly all of it the 57,344 funnels and their paths. This is a benchmark: nothing here asserts a target.
 """
 
 from __future__ import annotations
 
 import argparse
+import itertools
 import math
 import multiprocessing
 import os
@@ -173,32 +175,29 @@ def funnel(start: np.ndarray, end: np.ndarray, lefts: np.ndarray, rights: np.nda
     lefts = np.vstack([lefts, end])
     rights = np.vstack([rights, end])
     corners, corner_portals = [start], [-1]
-    apex, left, right = start, start, start
-    apex_index = left_index = right_index = -1
+    apex, apex_index = start, -1
+    sides = [(start, -1), (start, -1)]  # the funnel's left and right edges: (point, portal)
     i = 0
     while i < len(lefts):
-        new_left, new_right = lefts[i], rights[i]
-        if _cross(apex, right, new_right) <= 0.0:  # the right side tightens
-            if np.array_equal(apex, right) or _cross(apex, left, new_right) > 0.0:
-                right, right_index = new_right, i
-            else:  # it crosses the left side: the left point is a corner
-                corners.append(left)
-                corner_portals.append(left_index)
-                apex, apex_index = left, left_index
-                left, right, left_index, right_index = apex, apex, apex_index, apex_index
-                i = apex_index + 1
+        restarted = False
+        # the right side, then the left: the same rule mirrored (the sign of every area flips)
+        for side, sign, news in ((1, 1.0, rights), (0, -1.0, lefts)):
+            (point, _), (other, other_index) = sides[side], sides[1 - side]
+            if sign * _cross(apex, point, news[i]) > 0.0:
+                continue  # this side widens: no change
+            if np.array_equal(apex, point) or sign * _cross(apex, other, news[i]) > 0.0:
+                sides[side] = (news[i], i)  # it tightens
                 continue
-        if _cross(apex, left, new_left) >= 0.0:  # the left side tightens
-            if np.array_equal(apex, left) or _cross(apex, right, new_left) < 0.0:
-                left, left_index = new_left, i
-            else:
-                corners.append(right)
-                corner_portals.append(right_index)
-                apex, apex_index = right, right_index
-                left, right, left_index, right_index = apex, apex, apex_index, apex_index
-                i = apex_index + 1
-                continue
-        i += 1
+            # it crosses the other side: that side's point is a corner, and the funnel starts again there
+            corners.append(other)
+            corner_portals.append(other_index)
+            apex, apex_index = other, other_index
+            sides = [(apex, apex_index), (apex, apex_index)]
+            i = apex_index + 1
+            restarted = True
+            break
+        if not restarted:
+            i += 1
     corners.append(end)
     corner_portals.append(len(lefts) - 1)
     path = [start]
@@ -221,12 +220,13 @@ def _crossing(a: np.ndarray, b: np.ndarray, left: np.ndarray, right: np.ndarray)
 
 
 def densified(path: np.ndarray) -> np.ndarray:
-    """(k,3) points along the polyline ``path`` at most :data:`PATH_STEP` apart in plan, heights linear."""
-    pieces = [path[:1]]
-    for a, b in zip(path[:-1], path[1:]):
-        steps = max(1, math.ceil(math.hypot(b[0] - a[0], b[2] - a[2]) / PATH_STEP))
-        pieces.append(a + np.outer(np.arange(1, steps + 1) / steps, b - a))
-    return np.concatenate(pieces)
+    """(k,3) points along the (p,3) polyline ``path`` (p >= 2) at most :data:`PATH_STEP` apart in plan, heights
+    linear."""
+    starts, ends = path[:-1], path[1:]
+    steps = np.maximum(1, np.ceil(np.hypot(*(ends - starts)[:, [0, 2]].T) / PATH_STEP)).astype(np.int64)
+    segment = np.repeat(np.arange(len(starts)), steps)
+    along = (np.arange(steps.sum()) - np.repeat(np.cumsum(steps) - steps, steps) + 1) / np.repeat(steps, steps)
+    return np.vstack([path[:1], starts[segment] + along[:, None] * (ends - starts)[segment]])
 
 
 def pulled_flow(tessellated: Tessellated, origins: np.ndarray, destinations: np.ndarray) -> np.ndarray:
@@ -248,6 +248,7 @@ def pulled_flow(tessellated: Tessellated, origins: np.ndarray, destinations: np.
     origins, destinations = origins[on], destinations[on]
     _, predecessors = csgraph.dijkstra(adjacency, indices=polygon[origins], return_predecessors=True)
     for row, origin in enumerate(origins):
+        paths = []
         for destination in destinations[row]:
             corridor = [int(polygon[destination])]
             if corridor[0] < 0:
@@ -265,10 +266,14 @@ def pulled_flow(tessellated: Tessellated, origins: np.ndarray, destinations: np.
                 right_first = _cross(centres[p], e1, e0) > 0.0
                 lefts.append(e1 if right_first else e0)
                 rights.append(e0 if right_first else e1)
-            path = funnel(cells[origin], cells[destination], np.array(lefts).reshape(-1, 3),
-                          np.array(rights).reshape(-1, 3))
-            reached = tree.query_ball_point(scaled(densified(path)), WALKER_REACH)
-            walkers[np.unique(np.concatenate([np.asarray(r, dtype=np.int64) for r in reached]))] += 1.0
+            paths.append(densified(funnel(cells[origin], cells[destination], np.array(lefts).reshape(-1, 3),
+                                          np.array(rights).reshape(-1, 3))))
+        if paths:  # one k-d tree query for the origin's paths; each walker counts once on a cell
+            reached = tree.query_ball_point(scaled(np.concatenate(paths)), WALKER_REACH, return_sorted=False)
+            counts = np.fromiter(map(len, reached), dtype=np.int64, count=len(reached))
+            hits = np.fromiter(itertools.chain.from_iterable(reached), dtype=np.int64, count=int(counts.sum()))
+            walker = np.repeat(np.repeat(np.arange(len(paths)), [len(p) for p in paths]), counts)
+            walkers += np.bincount(np.unique(walker * len(cells) + hits) % len(cells), minlength=len(cells))
     return walkers
 
 
@@ -298,15 +303,16 @@ def heat(result: RunResult) -> np.ndarray:
     return evaluation.heat_map(result.graph, result.structure, first)
 
 
-def measure(job: tuple[str, trimesh.Trimesh, float, tuple[int, int]]) -> list[str]:
+def measure(job: tuple[str, trimesh.Trimesh, float, tuple[int, int], tuple[int, int]]) -> list[str]:
     """The table's lines for one level (see the module docs)."""
-    name, mesh, cell, (sources, targets) = job
+    name, mesh, cell, (sources, targets), (few_sources, few_targets) = job
     started = time.process_time()
     registry = Registry.from_entry_points()
     runs = {}
     for preset in PRESETS:
         config = parse_config(load_raw_config(find_config(preset)), preset)
         runs[preset] = pipeline.run(pipeline.plan(config, registry, preset), registry, mesh, name, mesh_sha256(mesh))
+    presets_done = time.process_time()
     agent = runs["map_analysis_sampling"].context.agent
     default_navmesh = build_navmesh(mesh.vertices, mesh.faces, agent,
                                     navmesh_builder.Params(ledge_filter=evaluation.REFERENCE_LEDGE_FILTER))
@@ -315,8 +321,10 @@ def measure(job: tuple[str, trimesh.Trimesh, float, tuple[int, int]]) -> list[st
     origins, destinations = rng.choice(len(raster), sources), rng.choice(len(raster), (sources, targets))
     tessellations = {t: tessellate(mesh, agent, raster, parameters, yaw)
                      for t, (parameters, yaw) in TESSELLATIONS.items()}
-    pulled = {t: pulled_flow(tessellated, origins, destinations) for t, tessellated in tessellations.items()}
-    base, base_pulled = tessellations["default"].poly_flow, pulled["default"]
+    tessellated_done = time.process_time()
+    base, base_pulled = tessellations["default"].poly_flow, pulled_flow(tessellations["default"], origins, destinations)
+    few = (origins[:few_sources], destinations[:few_sources, :few_targets])
+    pulled = {t: pulled_flow(tessellated, *few) for t, tessellated in tessellations.items()}
     sampling = runs["map_analysis_sampling"]
     spacing = sampling.graph.graph.get("sampling_stats", {}).get("spacing", 2.0 * float(agent.radius))
     reach = evaluation.REACH_SPACINGS * spacing
@@ -346,18 +354,20 @@ def measure(job: tuple[str, trimesh.Trimesh, float, tuple[int, int]]) -> list[st
              f"pulled against another draw of as many pairs {reliability:.3f}"]
     for t, tessellated in tessellations.items():
         lines.append(row(f"poly {t}", str(tessellated.navmesh.polygon_count), tessellated.poly_flow,
-                         f"{rho(pulled[t], base_pulled):.3f}", own=t))
+                         f"{rho(pulled[t], pulled['default']):.3f}", own=t))
     lines.append(row("sampled flow", str(len(positions)), sampled))
     lines.append(row("heat map_analysis", "", np.where(under >= 0, by_polygon[np.maximum(under, 0)], np.nan)))
     lines.append(row("heat map_analysis_sampling", "", on_raster_by_sample(heat(sampling), positions, raster, reach),
                      note=f"issue's rho: own graph {quality.rho:.3f}, navmesh {quality.rho_navmesh:.3f}"))
-    lines.append(f"{name:<16} cpu {time.process_time() - started:.1f} s")
+    lines.append(f"{name:<16} cpu {time.process_time() - started:.1f} s: presets {presets_done - started:.1f} s, "
+                 f"navmeshes and their flows on the raster {tessellated_done - presets_done:.1f} s")
     return lines
 
 
-def jobs(names: list[str], seeds: list[int], cell: float, pairs: tuple[int, int]) -> Iterator[tuple]:
+def jobs(names: list[str], seeds: list[int], cell: float, pairs: tuple[int, int],
+         stability_pairs: tuple[int, int]) -> Iterator[tuple]:
     for name, mesh in levels(names, seeds):
-        yield name, mesh, cell, pairs
+        yield name, mesh, cell, pairs, stability_pairs
 
 
 def main(argv: list[str] | None = None) -> None:
@@ -369,19 +379,22 @@ def main(argv: list[str] | None = None) -> None:
                                             "flow; v pull*, that over the square root of the pulled flow's "
                                             "agreement with another draw of pairs (corrected for its noise, "
                                             "Spearman 1904); pull v, that tessellation's pulled flow against the "
-                                            "default's (the same pairs); v samp, against the sampled graph's flow")
+                                            "default's (the same --stability-pairs); v samp, against the sampled graph's flow")
     parser.add_argument("--levels", nargs="+", default=["nav_test", "dungeon_1k", "terrain_1k", "castle_1k", "market"],
                         help="as benchmarks/analysis_quality.py's --levels")
     parser.add_argument("--seeds", nargs="+", type=int, default=[0, 1], help="seeds of the generated levels")
     parser.add_argument("--cell", type=float, default=0.25, help="raster cell side, m")
     parser.add_argument("--pairs", nargs=2, type=int, default=[1024, 16], metavar=("S", "T"),
                         help="origin cells of the string-pulled flow and destination cells of each")
+    parser.add_argument("--stability-pairs", nargs=2, type=int, default=[256, 16], metavar=("S", "T"),
+                        help="the first S of those origins and T of each one's destinations: the pairs walked under "
+                             "every tessellation")
     parser.add_argument("--jobs", type=int, default=1, help="levels measured at once (processes)")
     args = parser.parse_args(argv)
     print(f"machine: {platform.machine()}, {os.cpu_count()} cores, load average {os.getloadavg()[0]:.1f}")
     print(f"{'level':<16} {'flow':<22} {'nodes':>6} {'v poly':>7} {'v other poly':>12} {'v pull':>7} {'v pull*':>7} "
           f"{'pull v':>7} {'v samp':>7}")
-    work = jobs(args.levels, args.seeds, args.cell, tuple(args.pairs))
+    work = jobs(args.levels, args.seeds, args.cell, tuple(args.pairs), tuple(args.stability_pairs))
     if args.jobs == 1:
         results = map(measure, work)
     else:
