@@ -26,8 +26,8 @@ Spearman's rho over the cells both have (each cell counts alike, so each square 
   :data:`WALKER_REACH` of it (in plan; a height difference counts :data:`HEIGHT_SCALE` as much, so a storey
   above is out of reach). It counts walkers per square metre, not per polygon; its own dependence on the
   tessellation (the corridor) is measured the same way (``pulled`` under each tessellation against the
-  default's, the same ``--stability-pairs``, a subset of those pairs), and its sampling noise by another draw of as many pairs (``pulled, other
-  pairs``, on the default navmesh) against the first.
+  default's, the same ``--stability-pairs``, a subset of those pairs), and its sampling noise by another draw of
+  as many pairs on the default navmesh against the first (printed on the ``raster`` line).
 * ``sampled``: the sampling route's own walking flow (its initial graph of ``map_analysis_sampling``, its
   evaluation's reference: :func:`g2s_plugins.evaluation.reference_flow`), each cell taking the flow of the
   nearest sample (3D, heights scaled by :data:`HEIGHT_SCALE`) within two sample spacings.
@@ -39,7 +39,9 @@ sampling run (``rho``, against its own graph, and ``rho nav``, against the defau
 :mod:`g2s_plugins.evaluation`). Cost per level: six navmesh builds and their flows, ``2 S`` Dijkstra
 searches of the polygon graph and ``2 S T`` funnels (the pairs and the other draw), ``6 S' T'`` of each for the
 ``--stability-pairs``, each funnel's path read against a k-d tree of the raster, one Detour look-up per cell and
-tessellation, and one run of each preset: on the 1k dungeon of seed 0 (96,133 cells) 258 s of CPU, nearly all of it the 57,344 funnels and their paths. This is a benchmark: nothing here asserts a target.
+tessellation, and one run of each preset: on the 1k dungeon of seed 0 (96,133 cells) 258 s of CPU, of which
+3.9 s the presets and 4.7 s the navmeshes and their flows on the raster (the rest: the 57,344 funnels and their
+paths, and the sampling run's own measures). This is a benchmark: nothing here asserts a target.
 """
 
 from __future__ import annotations
@@ -379,7 +381,8 @@ def main(argv: list[str] | None = None) -> None:
                                             "flow; v pull*, that over the square root of the pulled flow's "
                                             "agreement with another draw of pairs (corrected for its noise, "
                                             "Spearman 1904); pull v, that tessellation's pulled flow against the "
-                                            "default's (the same --stability-pairs); v samp, against the sampled graph's flow")
+                                            "default's (the same --stability-pairs); v samp, against the sampled "
+                                            "graph's flow")
     parser.add_argument("--levels", nargs="+", default=["nav_test", "dungeon_1k", "terrain_1k", "castle_1k", "market"],
                         help="as benchmarks/analysis_quality.py's --levels")
     parser.add_argument("--seeds", nargs="+", type=int, default=[0, 1], help="seeds of the generated levels")

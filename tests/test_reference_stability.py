@@ -15,7 +15,8 @@ def point(x: float, z: float, y: float = 0.0) -> np.ndarray:
     return np.array([x, y, z])
 
 
-def corridor_portals(centres: list[np.ndarray], portals: list[tuple[np.ndarray, np.ndarray]]) -> tuple[np.ndarray, np.ndarray]:
+def corridor_portals(centres: list[np.ndarray],
+                     portals: list[tuple[np.ndarray, np.ndarray]]) -> tuple[np.ndarray, np.ndarray]:
     """The portals' (left, right) ends as :func:`pulled_flow` orders them, seen from each polygon's centre."""
     lefts, rights = [], []
     for centre, (e0, e1) in zip(centres, portals):
@@ -52,7 +53,8 @@ def test_a_straight_walk_crosses_each_portal_at_its_height() -> None:
 
 def test_the_raster_counts_each_cell_of_a_square_once() -> None:
     # a 1 m square of two triangles sharing a diagonal, 0.5 m up: 4 x 4 cells of 0.25 m, none twice
-    square = SimpleNamespace(detail_vertices=np.array([point(0, 0, 0.5), point(1, 0, 0.5), point(1, 1, 0.5), point(0, 1, 0.5)]),
+    corners = [point(0, 0, 0.5), point(1, 0, 0.5), point(1, 1, 0.5), point(0, 1, 0.5)]
+    square = SimpleNamespace(detail_vertices=np.array(corners),
                              detail_triangles=np.array([[0, 1, 2], [0, 2, 3]]))
     cells = stability.floor_raster(square, 0.25)
     assert len(cells) == 16
