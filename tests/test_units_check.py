@@ -45,15 +45,21 @@ def test_the_gap_of_a_room_with_a_flight_is_its_walls_height():
     assert storey_gap(box((0, -0.2, 0), (2000, 0, 2000))) is None
 
 
+COARSE = {"navmesh": "cell_size", "sampling": "spacing"}
+"""The parameter that sets how finely each graph builder reads the level, metres."""
+
+
+@pytest.mark.parametrize("builder", ["navmesh", "sampling"])
 @pytest.mark.parametrize("scale, warned", [(1.0, False), (100.0, True)])
-def test_a_small_level_in_centimetres_warns_naming_the_file_and_the_scale(tmp_path, scale, warned):
-    """A 4 m room with three steps, written in metres and in centimetres, through the navmesh builder (cells ten
-    times coarser in the 400 m room the centimetres make, so that it builds in a second): the centimetre file's
-    steps stand 20 m apart, 10 agent heights (over :data:`MAX_STOREY_HEIGHTS`), and the run warns once, naming the
-    file and ``mesh.scale: 0.01``; a result all the same (exit 0)."""
+def test_a_small_level_in_centimetres_warns_naming_the_file_and_the_scale(tmp_path, builder, scale, warned):
+    """A 4 m room with three steps, written in metres and in centimetres, through each graph builder (navmesh cells
+    of 2.5 m, samples every 20 m, in the 400 m room the centimetres make, so that it builds in a second): the
+    centimetre file's steps stand 20 m apart, 10 agent heights (over :data:`MAX_STOREY_HEIGHTS`), and the run
+    warns once, naming the file and ``mesh.scale: 0.01``; a result all the same (exit 0)."""
     path = tmp_path / f"room_{scale:g}.obj"
     stair_room(4.0, 3, scale=scale).export(path)
-    result = g2s_core.run(path, "graph_only", **{"graph.params.cell_size": 0.25 if scale == 1 else 2.5})
+    params = {} if scale == 1 else {COARSE[builder]: 2.5 if builder == "navmesh" else 20.0}
+    result = g2s_core.run(path, "graph_only", graph={"plugin": builder, "params": params})
     told = [warning for warning in result.warnings if "mesh.scale: 0.01" in warning]
     assert result.graph.number_of_nodes() > 0
     assert len(told) == warned
