@@ -251,6 +251,7 @@ class RunContext:
         centre: (3,) float64, centre of the mesh's axis-aligned bounding box.
         navmesh: the :class:`NavMesh` the graph builder made, or ``None`` when
             the graph was built without one.
+        mesh_name: the file or sample name of the mesh, as the outputs record it, for plugins' warnings.
         graph: the initial surface graph, once stage 1 has run.
         likely_cause: set by the graph builder: ``likely_cause(graph, largest area, next areas)`` (node lists)
             names what most likely parts the largest area from the nearest of the next ones on its surface, and
@@ -265,6 +266,7 @@ class RunContext:
     agent: AgentConfig
     centre: np.ndarray
     navmesh: NavMesh | None = None
+    mesh_name: str = "mesh"
     graph: nx.Graph | None = None
     likely_cause: Callable[[nx.Graph, Sequence[int], Sequence[Sequence[int]]], str] | None = None
     warnings: list[str] = field(default_factory=list)

@@ -97,8 +97,7 @@ def run(
     """
     config = plan_.config
     say = progress or (lambda _message: None)
-    bounds = np.asarray(mesh.bounds, dtype=np.float64)
-    context = RunContext(mesh=mesh, agent=config.agent, centre=bounds.mean(axis=0), progress=say)
+    context = RunContext(mesh, config.agent, mesh.bounds.mean(axis=0), mesh_name=mesh_name, progress=say)
     result = RunResult(config=config.record(), mesh_name=mesh_name, mesh_sha256=mesh_sha256, context=context)
     # CPython's cyclic collector stays off while the stages run: they build hundreds of thousands of
     # networkx dicts, and every collection their allocations trigger rescans all the live ones (about an

@@ -64,6 +64,7 @@ from g2s_plugins.area_gaps import likely_cause_of
 from g2s_plugins.play_space import PlaySpaceParams, cut_to_play_space
 from g2s_plugins.recast import NavMesh, RecastParams, SettingsError, build_navmesh
 from g2s_plugins.recast.settings import resolve_settings
+from g2s_plugins.units_check import check_units
 from g2s_plugins.walkable_check import check_walkable_surface, no_walkable_surface
 
 NAME = "navmesh"
@@ -368,6 +369,7 @@ def g2s_build_graph(mesh, params, context):
             settings, not failures of the program.
     """
     params = params if params is not None else Params()
+    check_units(mesh, context)  # before the build, which a level in centimetres makes long
     try:
         navmesh = build_navmesh(mesh.vertices, mesh.faces, context.agent, params)
     except SettingsError as exc:

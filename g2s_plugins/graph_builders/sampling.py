@@ -138,6 +138,7 @@ from g2s_plugins._raycasting import (
 )
 from g2s_plugins.area_gaps import likely_cause_of
 from g2s_plugins.play_space import PlaySpaceParams, cut_to_play_space
+from g2s_plugins.units_check import check_units
 from g2s_plugins.walkable_check import check_walkable_surface, no_walkable_surface
 
 NAME = "sampling"
@@ -1200,6 +1201,7 @@ def g2s_build_graph(mesh: trimesh.Trimesh, params: Params, context: RunContext) 
         G2SError: no place on the mesh where this agent fits (a property of the
             input and the settings, not a failure of the program).
     """
+    check_units(mesh, context)  # before the build, which a level in centimetres makes long
     graph = build_sampled_graph(mesh, params, AgentShape.from_config(context.agent))
     if graph.number_of_nodes() == 0:
         raise no_walkable_surface(mesh, context.agent, "no sample where it fits")
