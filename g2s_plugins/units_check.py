@@ -52,9 +52,10 @@ metres measured reach 4.8 (a backdrop's 9.6 m, docs/errors.md), the rooms of the
 centimetres the levels whose gap at their true size is over 0.14 m warn, 394 of 425 measured."""
 
 SAMPLED_FACES = 1 << 17
-"""Faces the check reads at most: every k-th face of a larger mesh (k the smallest stride that fits), so that the
-check costs 0.07 s of CPU, not 0.37 s, on the 1.7 M faces of the 100k-polygon level; a stride leaves some heights
-out, which widens gaps that are many to a metre on such a mesh (the 1 km terrain: 0.74 m, 0.89 m from every face)."""
+"""Faces the check reads at most: a seeded random choice of a larger mesh's faces, so that the check costs about
+0.07 s of CPU, not 0.37 s, on the 1.7 M faces of the 100k-polygon level. Random, not every k-th face: a level built
+of one repeated module has a period in its face order, which a stride can meet so that it reads no roof at all (a
+city of 12,000 box houses, 144,012 faces, read every 2nd face: no level face)."""
 
 
 def storey_gap(mesh: trimesh.Trimesh) -> float | None:
@@ -64,7 +65,8 @@ def storey_gap(mesh: trimesh.Trimesh) -> float | None:
     Complexity: O(n log n) for the n faces read (at most :data:`SAMPLED_FACES`).
     """
     faces = np.asarray(mesh.faces)
-    faces = faces[::max(1, math.ceil(len(faces) / SAMPLED_FACES))]
+    if len(faces) > SAMPLED_FACES:
+        faces = faces[np.sort(np.random.default_rng(0).choice(len(faces), SAMPLED_FACES, replace=False))]
     vertices = np.asarray(mesh.vertices, dtype=np.float64)
     corners = vertices[faces]  # (n, 3, 3)
     cross = np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0])  # twice the area, along the normal

@@ -66,3 +66,16 @@ def test_a_small_level_in_centimetres_warns_naming_the_file_and_the_scale(tmp_pa
     if warned:
         assert told[0].startswith(f"mesh: {path.name}: ") and "20 m" in told[0]
         assert f"{20 / 2:.0f} times the agent's height" in told[0] and 20 / 2 > MAX_STOREY_HEIGHTS
+
+
+def test_a_level_of_one_repeated_module_is_read_past_its_period(monkeypatch):
+    """A town of 100 box houses 3 m tall on a slab: each house's 12 faces repeat, its roof at places 7 and 9 of
+    each twelve (trimesh's box, as the slab's top), so reading every 2nd face would read no level face at all; the
+    seeded random choice of faces reads roofs and finds the houses' 3 m (300 m from centimetres)."""
+    monkeypatch.setattr("g2s_plugins.units_check.SAMPLED_FACES", 606)
+    houses = [box((8 * (k % 10), 0, 8 * (k // 10)), (8 * (k % 10) + 4, 3, 8 * (k // 10) + 4)) for k in range(100)]
+    town = trimesh.util.concatenate([box((0, -0.2, 0), (80, 0, 80)), *houses])
+    assert len(town.faces) == 1212
+    assert storey_gap(town) == pytest.approx(3.0)
+    town.apply_scale(100)
+    assert storey_gap(town) == pytest.approx(300.0)
