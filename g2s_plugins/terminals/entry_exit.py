@@ -1968,7 +1968,7 @@ def detect_openings(
     # one at least: at most n passes of O(n^2) for n openings. A part stretches it by its floor's ends alone: an end
     # moved in onto its passage's side lies where that part's line, a degree or two off the wall's, meets the side
     # as deep as the narrowest width stands (a splayed reveal's inner face, 1 m in: 1.234 m for 1.2 on the sampling
-    # route, the extremes of 16 parts' ends; docs/entry_exit.md, "Since the passage rule").
+    # route, the extremes of 15 parts' ends; docs/entry_exit.md, "Since the passage rule").
     while True:
         into = _repeated([f[0] for f in found], s.radius, float(params.max_turn_deg), s.climb)
         if not (into >= 0).any():
