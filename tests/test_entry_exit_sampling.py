@@ -5,6 +5,9 @@ docs/entry_exit.md, "Openings on the sampling route (3 December 2026)".
 
 from __future__ import annotations
 
+import math
+from dataclasses import replace
+
 import networkx as nx
 import numpy as np
 import pytest
@@ -262,21 +265,30 @@ def test_a_flights_foot_seen_from_a_line_down_it_measures_the_flight(riser: floa
     assert all(o.width == pytest.approx(1.6, abs=0.05) for o in terminals.openings)
 
 
-# since the sampling builder's passage rule (docs/sampling.md, "Passages a little wider than the agent") the canal's
-# channel, 1.0 m down and 1.0 m wide, holds openings (found at y = -1 on both yaws): the pieces' agent (0.4 m
-# clearance) fits it, and the rule samples it as a floor (42 samples, none in single file), which it walks down to
-@pytest.mark.xfail(strict=True, reason="the canal's channel holds openings since the passage rule")
 @pytest.mark.parametrize("yaw", [0.0, 45.0])
-def test_a_floor_walked_down_to_holds_its_end_and_a_single_file_one_none(yaw: float) -> None:
+def test_a_floor_walked_down_to_holds_its_end_and_a_channel_the_agent_barely_fits_none(yaw: float) -> None:
     # A corridor's floor dropping 1.0 m half-way: on the sampled surface the upper half measured 0.56 of the lower's
     # area, and the lower was the main floor (the west end missed). The canal's channel, 1.0 m down beside its
-    # walkways, is sampled in single file alone: walked down to, it would hold its two ends.
+    # walkways, was sampled in single file; since the sampling builder's passage rule it is a band of faces 0.18 m
+    # across (the agent's 0.8 m in 1.0 m), which held its two ends at y = -1 until a floor walked down to had to be
+    # 0.6 agent radii across (the navmesh keeps no floor there).
     corridor = benchmark("piece_kinds18").step_down_corridor(1.0)
     found, known, _, _ = _openings(pieces.turned(corridor, yaw) if yaw else corridor)
     assert pieces.match_openings(found, known) == (2, 2) and len(found) == 2
     canal = benchmark("piece_kinds12").canal_walkways()
     found, _, _, _ = _openings(pieces.turned(canal, yaw) if yaw else canal)
     assert len(found) and (found[:, 1] > -0.5).all()
+
+
+def test_a_polygons_width_is_its_widest_fan_triangle_across() -> None:
+    # A strip 2 x 0.2 m: each fan triangle is 0.2 m across its 2.01 m diagonal (twice 0.2 m^2 over it); a polygon of
+    # two corners (samples in single file) has none; a unit square 1 / sqrt 2 (its fan triangles' diagonal).
+    surface = sampled_surface(nx.Graph(), 1.0)
+    vertices = np.array([[0, 0, 0], [2, 0, 0], [2, 0, 0.2], [0, 0, 0.2], [5, 0, 0], [6, 0, 0], [6, 0, 1], [5, 0, 1]],
+                        dtype=np.float64)
+    polygons = np.array([[0, 1, 2, 3], [0, 1, -1, -1], [4, 5, 6, 7]])
+    widths = entry_exit.polygon_widths(replace(surface, vertices=vertices, polygons=polygons))
+    assert widths == pytest.approx([0.4 / math.hypot(2.0, 0.2), 0.0, math.sqrt(0.5)])
 
 
 def test_a_single_file_lines_tip_holds_samples_looking_ahead() -> None:

@@ -44,9 +44,10 @@ def test_an_opening_found_again_widens_the_one_it_repeats() -> None:
     above = Opening((1.4, 0.5, 0.0), (0.0, 0.0, -1.0), 1.2, (0.8, 0.5, 0.0), (2.0, 0.5, 0.0))
     assert [list(entry_exit._repeated([wide, o], 0.4, 30.0, 0.4)) for o in (up, rising, above)] == [
         [-1, 0], [-1, 0], [-1, -1]]
-    a, b = entry_exit._union_ends(wide, [part])
+    a, b = entry_exit._union_ends(wide, np.array([part.p0, part.p1]))
     assert a == pytest.approx([0.0, 0.0, 0.0]) and b == pytest.approx([2.0, 0.0, 0.0])
-    assert entry_exit._union_ends(wide, [inner]) is None  # within it: the wider one stands as it is
+    assert entry_exit._union_ends(wide, np.array([inner.p0, inner.p1])) is None  # within it: the wider one stands
+    assert entry_exit._union_ends(wide, np.zeros((0, 3))) is None  # no floor's end to stretch it over
 
 
 def test_an_opening_found_again_on_a_sloped_line_is_read_in_plan_and_height() -> None:
@@ -64,7 +65,7 @@ def test_an_opening_found_again_on_a_sloped_line_is_read_in_plan_and_height() ->
     within, higher = part(1.2, 2.6, 0.35), part(1.2, 2.6, 0.5)
     assert [list(entry_exit._repeated([wide, o], 0.4, 30.0, 0.4)) for o in (within, higher)] == [[-1, 0], [-1, -1]]
     # The union runs along the wide one's line to the part's end in plan, at the line's height there.
-    a, b = entry_exit._union_ends(wide, [within])
+    a, b = entry_exit._union_ends(wide, np.array([within.p0, within.p1]))
     assert a == pytest.approx([0.0, 0.0, 0.0]) and b == pytest.approx([2.6, 2.6 * rise, 0.0])
 
 

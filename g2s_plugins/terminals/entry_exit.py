@@ -1491,8 +1491,9 @@ def main_floor(
     openings too: a railed deck crossing over a corridor, and the corridor under it; not a wall's top whose
     sides drop into the piece. ``drops``: (D, 2) polygon pairs (from, to) of :func:`_drop_links`, a ledge the agent
     walks off and the floor it lands on, more than the climb and less than a storey down; given, the floors the
-    kept ones reach so, down one ledge after another, that leave the piece, are no roof and hold faces (not a sampled
-    surface's single file alone) hold openings too, and a floor of at least :data:`_RIVAL_SHARE` of the largest's
+    kept ones reach so, down one ledge after another, that leave the piece, are no roof and are somewhere
+    :data:`_FOOTPRINT_RADII` agent radii across (:func:`polygon_widths`; not a sampled surface's single file, nor a
+    channel the agent barely fits) hold openings too, and a floor of at least :data:`_RIVAL_SHARE` of the largest's
     area from which the agent reaches more area so is the main floor: a corridor whose floor drops 0.6 m half-way
     holds both its ends, whichever half is measured larger; a terrace over the climb beyond a room's door, dropping
     into the room, none (docs/entry_exit.md, "A nineteenth round of piece kinds").
@@ -1521,11 +1522,12 @@ def main_floor(
         return label == int(best)
     floors = ~roof & leaves
     links = np.zeros((0, 2), dtype=np.int64) if drops is None else label[np.asarray(drops, dtype=np.int64)]
-    # A floor walked down to holds the agent's footprint: faces, not a single file of samples alone (a sampled
-    # surface's two-corner polygons), as the canal's channel 1.0 m wide, where Recast keeps no floor, is on the
-    # sampling route (docs/entry_exit.md, "A nineteenth round of piece kinds").
-    faced = np.bincount(label, weights=np.asarray(navmesh.polygons)[:, 2] >= 0, minlength=len(area)) > 0
-    links = links[faced[links[:, 1]]]
+    # A floor walked down to holds the agent's footprint: somewhere wider than a passage the agent barely fits (the
+    # canal's channel 1.0 m wide, where Recast keeps no floor: a single file of samples, or since the sampling
+    # builder's passage rule a band 0.2 m wide; docs/entry_exit.md, "Since the passage rule").
+    widest = np.zeros(len(area))
+    np.maximum.at(widest, label, polygon_widths(navmesh))
+    links = links[widest[links[:, 1]] >= _FOOTPRINT_RADII * radius]
     reach = _walked_down(links, floors)
     if len(links):
         # Floors of comparable area rank by the area the agent reaches from them, down their ledges: the upper half
@@ -1549,6 +1551,24 @@ def main_floor(
     return kept[label]
 
 
+def polygon_widths(navmesh: NavMesh | HeldNavMesh | SampledSurface) -> np.ndarray:
+    """(P,) each polygon's width in plan, m: the widest of its fan triangles (corners 0, j, j + 1) across, twice its
+    area over its longest side (the narrowest strip holding it); 0 for a polygon of two corners (samples in single
+    file). On a navmesh, or a sampled surface, eroded by the agent's radius from walls and ledges, a floor W wide is
+    about W - 2 r across. O(P k) for P polygons of at most k corners."""
+    polygons = np.asarray(navmesh.polygons)
+    plan = np.asarray(navmesh.vertices, dtype=np.float64)[:, [0, 2]]
+    widths = np.zeros(len(polygons))
+    for j in range(1, polygons.shape[1] - 1):
+        rows = np.flatnonzero(polygons[:, j + 1] >= 0)
+        first = plan[polygons[rows, 0]]
+        b, c = plan[polygons[rows, j]] - first, plan[polygons[rows, j + 1]] - first
+        twice_area = np.abs(b[:, 0] * c[:, 1] - b[:, 1] * c[:, 0])
+        longest = np.max(np.linalg.norm(np.stack([b, c, c - b]), axis=2), axis=0)
+        widths[rows] = np.maximum(widths[rows], twice_area / np.maximum(longest, 1e-12))
+    return widths
+
+
 def _walked_down(links: np.ndarray, floors: np.ndarray) -> np.ndarray:
     """(C, C) bool: row c, the ``floors`` (C,) bool the agent reaches from floor c walking down ledges (``links`` (D, 2)
     floor pairs (from, to), :func:`_drop_links`), c itself included, through floors only. O(C^2 D) at most."""
@@ -1569,6 +1589,14 @@ down ledges (:func:`main_floor`). Measured on the two halves of a corridor whose
 navmesh, 0.56-0.94 on the sampling route), and on the twelfth round's terrace 0.6 m up beyond a room's doorway, whose
 floor drops into the room and which must not hold an opening (the terrace over the room: 0.03-0.08):
 docs/entry_exit.md, "A nineteenth round of piece kinds"."""
+
+_FOOTPRINT_RADII = 0.6
+"""Agent radii a floor walked down to is across somewhere, eroded by the agent's radius (:func:`polygon_widths`),
+from which it holds openings (:func:`main_floor`). Measured on a canal whose channel 1.0 m deep is 0.9-2.0 m wide
+beside its walkways, and a corridor dropping 1.0 m onto a narrower one, at 0, 22 and 45 degrees on both routes
+(docs/entry_exit.md, "Since the passage rule"): the navmesh keeps the lower floor from 1.2 m (1.1 m
+at 45 degrees), 0.27-0.38 m across (0.67-0.94 r; two of the preset's cells of r / 3 at least); the sampling route's
+band in a 1.0 m channel, W - 2 r = 0.2 m (0.5 r), measures 0.18 m, in a 1.1 m one 0.28 m."""
 
 _WALKWAY_CLOSED = 0.6
 """Share of a floor's boundary samples closed by what stands on it (no way out, none dropping into the piece) from
@@ -1806,11 +1834,13 @@ def _along_line(start: np.ndarray, span: np.ndarray, points: np.ndarray) -> tupl
     return u, np.hypot(off[:, 0], off[:, 2]), off[:, 1]
 
 
-def _union_ends(wide: Opening, parts: list[Opening]) -> tuple[np.ndarray, np.ndarray] | None:
-    """The ends of ``wide`` stretched along its own line over ``parts`` (openings repeating it), each part's ends
-    read along it in plan (:func:`_along_line`); None when they lie within it."""
+def _union_ends(wide: Opening, ends: np.ndarray) -> tuple[np.ndarray, np.ndarray] | None:
+    """The ends of ``wide`` stretched along its own line over ``ends`` (k,3), m (the floor's ends of openings repeating
+    it), each read along it in plan (:func:`_along_line`); None when they lie within it (or there are none)."""
     p0, p1 = np.asarray(wide.p0, dtype=np.float64), np.asarray(wide.p1, dtype=np.float64)
-    ends = np.array([p for o in parts for p in (o.p0, o.p1)], dtype=np.float64)
+    ends = np.asarray(ends, dtype=np.float64).reshape(-1, 3)
+    if not len(ends):
+        return None
     u = _along_line(p0, p1 - p0, ends)[0]
     lo, hi = min(0.0, float(u.min())), max(1.0, float(u.max()))
     if lo > -1e-9 / wide.width and hi < 1.0 + 1e-9 / wide.width:
@@ -1907,11 +1937,16 @@ def detect_openings(
 
     jambs = _between_jambs(kept, p_first, p_last, caster, s)
     passages, back, ahead = _passages(kept, p_first, p_last, ways, caster, s)
+    half = 0.5 * np.linalg.norm(p_last - p_first, axis=1)
+    # Each end moved in onto the passage's side (a jamb); one the free part reaches to the ray caster's precision is
+    # the floor's (a yard's open side turned 22 degrees: its parts' ends 4e-6 m short of their free part's).
+    at_side = np.stack([back < half - _SAME_WIDTH, ahead < half - _SAME_WIDTH], axis=1)
     p_first, p_last = _free_part(p_first, p_last, back, ahead)
     found: list[tuple[Opening, tuple[int, ...], tuple[float, float, float]]] = []
     edges: list[_Edge] = []
     framed_of: list[bool] = []
-    for e, a, b, framed, passage in zip(kept, p_first, p_last, jambs, passages):
+    floor_ends_of: list[np.ndarray] = []  # each opening's ends that are the floor's, not a side of its passage
+    for e, a, b, framed, passage, sides in zip(kept, p_first, p_last, jambs, passages, at_side):
         if min(float(np.linalg.norm(b - a)), passage) < min_width + _SAME_WIDTH:
             continue
         if ways.stepped[e.samples].mean() > 0.5 and not framed:
@@ -1926,24 +1961,30 @@ def detect_openings(
         found.append((opening, polys, vec3(e.normal)))
         edges.append(e)
         framed_of.append(bool(framed))
+        floor_ends_of.append(np.array([a, b])[~sides])
     # An opening found again is one with the wider one, which spans both; again until none is left,
     # since a union can reach one that overlapped none of its parts (a plaza's side on the sampling
     # route: parts 3.28-9.98 and 0.54-3.37 m along it, then one at 0.17-2.80 m). Each pass drops
-    # one at least: at most n passes of O(n^2) for n openings.
+    # one at least: at most n passes of O(n^2) for n openings. A part stretches it by its floor's ends alone: an end
+    # moved in onto its passage's side lies where that part's line, a degree or two off the wall's, meets the side
+    # as deep as the narrowest width stands (a splayed reveal's inner face, 1 m in: 1.234 m for 1.2 on the sampling
+    # route, the extremes of 15 parts' ends; docs/entry_exit.md, "Since the passage rule").
     while True:
         into = _repeated([f[0] for f in found], s.radius, float(params.max_turn_deg), s.climb)
         if not (into >= 0).any():
             break
         for i in sorted(set(into[into >= 0].tolist())):
-            parts = [found[j] for j in np.flatnonzero(into == i)]
-            ends = _union_ends(found[i][0], [f[0] for f in parts])
+            parts = np.flatnonzero(into == i)
+            ends = _union_ends(found[i][0], np.concatenate([floor_ends_of[j] for j in parts]))
             union = None if ends is None else scored(edges[i], *ends, framed_of[i])
             if union is not None:
-                polys = tuple(sorted(set(found[i][1]).union(*(f[1] for f in parts))))
+                polys = tuple(sorted(set(found[i][1]).union(*(found[j][1] for j in parts))))
                 found[i] = (union, polys, found[i][2])
+                floor_ends_of[i] = np.concatenate([floor_ends_of[i], *(floor_ends_of[j] for j in parts)])
         found = [f for f, again in zip(found, into) if again < 0]
         edges = [e for e, again in zip(edges, into) if again < 0]
         framed_of = [f for f, again in zip(framed_of, into) if again < 0]
+        floor_ends_of = [f for f, again in zip(floor_ends_of, into) if again < 0]
     found = [f for f in found if f[0].score >= float(params.min_score) - 1e-12]
     if params.best is not None and len(found) > params.best:
         order = sorted(range(len(found)), key=lambda i: (-found[i][0].score, i))[: params.best]
