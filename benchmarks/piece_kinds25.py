@@ -1,7 +1,7 @@
 """A twenty-fifth round of map-piece kinds with their known openings, run through both map-piece routes.
 
-Run: ``.venv/bin/python benchmarks/piece_kinds25.py [--kinds a b] [--configs map_piece map_piece_sampling]
-[--yaws 0 22 45] [--detail]``
+Run: ``.venv/bin/python benchmarks/piece_kinds25.py [--feet] [--kinds a b] [--configs map_piece
+map_piece_sampling] [--yaws 0 22 45] [--detail]``
 
 Eight kinds of docs/entry_exit.md, "A twenty-fifth round of piece kinds", each with its known openings (count,
 place, width, height) written in its docstring before the detector first ran on them: the pieces of a level
@@ -9,13 +9,16 @@ designer's modular kit none of the earlier rounds built. A corridor with a door 
 wall, a gate closed by its leaf with a wicket door cut in it, twin tunnels joined by a cross passage, a timber-framed
 doorway with knee braces in its upper corners, an open pavilion on four corner posts, a door whose leaf stands ajar
 into the room, a door under a flight of stairs beside the flight's own upper door, and a road closed by a boom
-barrier beside a gap for walkers. Built with :mod:`piece_parts`, in the earlier rounds' conventions.
+barrier beside a gap for walkers. Built with :mod:`piece_parts`, in the earlier rounds' conventions. ``--feet``
+runs, in their place, the door under the stair with the flight's foot 0.3-1.2 m off the wall in front of it
+(:data:`FEET`).
 """
 
 from __future__ import annotations
 
 import math
 import sys
+from functools import partial
 
 from piece_parts import ROOM_DOORS, SLAB, box, flight, hull, kinds_by_name, room, round_level, run_kinds
 
@@ -113,7 +116,7 @@ def ajar_leaf_door(open_deg: float = 60.0) -> SampleLevel:
     return _level("ajar_leaf_door", parts, [_opening((-0.3, 0.0, 3.0), _W, 1.2), _opening((8.3, 0.0, 3.0), _E, 1.6)])
 
 
-def door_under_stair() -> SampleLevel:
+def door_under_stair(foot: float = 0.3) -> SampleLevel:
     """Hall 8 x 8 m (clear x 0-8, z 0-8), walls 0.3 m thick and 7 m high, no roof; along the east wall (x 6.6-8.0)
     a flight of 20 steps 0.28 m deep and 0.2 m high rising north from z 0.3 (the last one's top 4.0 m up at z 5.9),
     carried on a sawtooth slab 0.3 m under its treads (head room under it), open on its west side; a landing 4.0 m up
@@ -122,14 +125,18 @@ def door_under_stair() -> SampleLevel:
     underside over it 2.3-3.1 m up); east from the landing, 1.2 m (z 6.4-7.6), its sill 4.0 m up, lintel 2.2 m over
     it. Known: three, at the walls' outer faces: the west one, 1.6 m at (-0.3, 4.0) at y 0; the one under the flight,
     1.2 m at (8.3, 4.4) at y 0; the landing's, 1.2 m at (8.3, 7.0) 4.0 m up. None along the flight's or the landing's
-    open sides (they drop into the piece's own hall)."""
-    landing = 4.0
-    parts = room(8.0, 8.0, {"W": [(3.2, 4.8, 2.2)], "E": [(-0.3, 8.3, 7.0)]}, height=7.0)  # east wall below
+    open sides (they drop into the piece's own hall).
+
+    ``foot``: where the flight starts (z, metres off the south wall's inner face), its 20 treads sharing the run to
+    z 5.9; 0.3 builds the piece above, the others measure what the foot's room in front of the wall does
+    (:data:`FEET`)."""
+    landing, top = 4.0, 5.9
+    parts = room(8.0, 8.0, {"W": [(3.2, 4.8, 2.2)], "E": [(-0.3, 8.3, 7.0)]}, height=7.0)  # east wall: below
     parts += [box(8.0, 8.3, -SLAB, 7.0, z0, z1) for z0, z1 in ((-0.3, 3.8), (5.0, 6.4), (7.6, 8.3))]
     parts += [box(8.0, 8.3, 2.2, 7.0, 3.8, 5.0)]
     parts += [box(8.0, 8.3, landing + 2.2, 7.0, 6.4, 7.6), box(8.0, 8.3, -SLAB, landing, 6.4, 7.6)]
-    parts += flight((6.6, 0.3), (0, 1), (6.6, 8.0), 20, 0.28, 0.2, 0.0, solid=False)
-    parts += [box(6.6, 8.0, landing - 0.3, landing, 5.9, 8.0)]
+    parts += flight((6.6, foot), (0, 1), (6.6, 8.0), 20, (top - foot) / 20, 0.2, 0.0, solid=False)
+    parts += [box(6.6, 8.0, landing - 0.3, landing, top, 8.0)]
     return _level("door_under_stair", parts, [_opening((-0.3, 0.0, 4.0), _W, 1.6),
                                              _opening((8.3, 0.0, 4.4), _E, 1.2),
                                              _opening((8.3, landing, 7.0), _E, 1.2)])
@@ -145,13 +152,21 @@ def boom_barrier_road() -> SampleLevel:
     parts = [box(0.0, 12.0, -SLAB, 0.0, 0.0, 6.0), box(0.0, 12.0, -SLAB, 3.0, -0.3, 0.0)]
     parts += [box(0.0, 12.0, -SLAB, 3.0, 6.0, 6.3), box(11.7, 12.0, 0.0, 1.1, 1.5, 1.8)]
     parts += [box(11.8, 11.9, 0.95, 1.05, 1.8, 6.0)]
-    return _level("boom_barrier_road", parts, [_opening((0.0, 0.0, 3.0), _W, 6.0), _opening((12.0, 0.0, 0.75), _E, 1.5)])
+    return _level("boom_barrier_road", parts, [_opening((0.0, 0.0, 3.0), _W, 6.0),
+                                              _opening((12.0, 0.0, 0.75), _E, 1.5)])
 
 
 KINDS = kinds_by_name(side_and_end_door_corridor, wicket_gate_door, twin_bore_cross_passage, braced_frame_door,
                       pavilion_four_posts, ajar_leaf_door, door_under_stair, boom_barrier_road)
 """Kind name -> factory of the twenty-fifth round."""
 
+FEET = {f"door_under_stair_foot_{round(foot * 100)}cm": partial(door_under_stair, foot)
+        for foot in (0.3, 0.5, 0.7, 0.9, 1.2)}
+"""``door_under_stair_foot_<n>cm`` -> :func:`door_under_stair` with the flight's foot that many centimetres off the
+south wall."""
+
 
 if __name__ == "__main__":
-    sys.exit(run_kinds(sys.argv[1:], kinds=KINDS, description=__doc__.splitlines()[0]))
+    feet = "--feet" in sys.argv[1:]
+    sys.exit(run_kinds([a for a in sys.argv[1:] if a != "--feet"], kinds=FEET if feet else KINDS,
+                       description=__doc__.splitlines()[0]))
