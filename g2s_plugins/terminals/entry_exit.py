@@ -98,7 +98,9 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
      ``r`` at the same height (Recast's grid cuts narrow passages at some yaws),
      and a floor over others (a closed ceiling's top) is a roof, never the main one;
      other floors leaving the piece at the main floor's level (within the climb)
-     hold openings with it (a corridor cut in two by a barrier), and so do
+     that are no roof, or rise a storey from there, hold openings with it (a
+     corridor cut in two by a barrier, a flight carried over the hall and cut
+     from it at its foot), and so do
      the storeys (an agent's height or more from it) leaving the piece that
      walls or railings close along most of their boundary (a deck over a
      corridor), and the floors the agent walks down to off their ledges, less
@@ -1480,12 +1482,13 @@ def main_floor(
     the polygons whose boundary looks out of the piece (step 2's segments); given, a floor the agent
     can leave comes first, roof or not: a floor walled all round holds no opening whatever its size
     (a bridge's deck lies over the closed trough under it, which the roof test alone would keep); and
-    with a floor that leaves, every other one that leaves too, is no roof and whose lowest polygon lies
-    within the climb of the main one's (a polygon's height is its first corner's, not its lowest): the parts
-    of a corridor cut by a barrier or by a pass narrower than Recast keeps; not a wall's top, a roof or a
-    ravine's floor below a bridge. ``closed``: (P, 2) each polygon's boundary samples closed by what stands on
-    its floor (no way out, and none reaching the floor's end but for the piece lying below beyond it) and all
-    its boundary samples; given,
+    with a floor that leaves, every other one that leaves too, whose lowest polygon lies within the climb of
+    the main one's (a polygon's height is its first corner's, not its lowest) and that is no roof or rises the
+    agent's height or more from there: the parts of a corridor cut by a barrier or by a pass narrower than
+    Recast keeps, a flight carried over the hall it rises from and cut from it at its foot; not a wall's top,
+    a ravine's floor below a bridge or a flat roof at the main floor's level (a tunnel's). ``closed``: (P, 2)
+    each polygon's boundary samples closed by what stands on its floor (no way out, and none reaching the floor's
+    end but for the piece lying below beyond it) and all its boundary samples; given,
     a floor a storey (the agent's height) or more above or below the main one that leaves the piece, with at
     least :data:`_WALKWAY_CLOSED` of its boundary samples closed (walls or railings along its sides), holds
     openings too: a railed deck crossing over a corridor, and the corridor under it; not a wall's top whose
@@ -1540,7 +1543,15 @@ def main_floor(
     height = np.asarray(navmesh.vertices, dtype=np.float64)[np.asarray(navmesh.polygons)[:, 0], 1]
     lowest = np.full(len(area), np.inf)
     np.minimum.at(lowest, label, height)
-    kept = leaves & ~roof & (np.abs(lowest - lowest[best]) <= float(agent.max_climb) + _SAME_HEIGHT)
+    # A "roof" rising a storey from the main floor's level is a flight carried over the hall it rises from, cut from it
+    # at its foot; a ceiling's top there lies flat (a tunnel's roof at the ground, a container's top) and stays out
+    # (docs/entry_exit.md, "A twenty-fifth round of piece kinds").
+    corners = np.asarray(navmesh.polygons)
+    top = np.full(len(area), -np.inf)
+    np.maximum.at(top, np.broadcast_to(label[:, None], corners.shape)[corners >= 0],
+                  np.asarray(navmesh.vertices, dtype=np.float64)[corners[corners >= 0], 1])
+    rises = top - lowest >= float(agent.height)
+    kept = leaves & (~roof | rises) & (np.abs(lowest - lowest[best]) <= float(agent.max_climb) + _SAME_HEIGHT)
     if closed is not None:  # a storey of its own, walled or railed along its sides
         counts = np.zeros((len(area), 2))  # each floor's closed boundary samples, and all of them
         np.add.at(counts, label, np.asarray(closed, dtype=np.float64))
