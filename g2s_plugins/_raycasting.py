@@ -648,8 +648,8 @@ class BoxGrid:
         self._boxes = owner[np.argsort(column, kind="stable")]
         """(E,) int64: the boxes of occupied cell k are ``_boxes[_offsets[k]:_offsets[k + 1]]``."""
         self._offsets = np.concatenate([[0], np.cumsum(np.bincount(column, minlength=len(self._keys)))])
-        self.count = len(lo)
-        """The binned boxes."""
+        self._first = first
+        """(m, d) int64: the first cell of each binned box along each axis."""
 
     def _span(self, lo: np.ndarray, hi: np.ndarray, cell: float) -> tuple[np.ndarray, np.ndarray]:
         """(n, d) int64 each: the first and last cell each box covers along each axis."""
@@ -671,23 +671,27 @@ class BoxGrid:
         """``(i, j)`` int64 arrays: the pairs of a box ``lo[i]..hi[i]`` ((n, d) m) and a binned box ``j`` that share
         a cell, each once, in no particular order; every overlapping pair is among them. The boxes are clipped to
         the grid (the binned boxes lie within it), their cells looked up among the occupied ones and each such
-        cell's boxes gathered: O(C log K + P log P) for the C cells the clipped boxes cover, the K occupied cells
-        and the P (box, binned box) entries sharing a cell, whatever the number of binned boxes (a sparse product
-        of cells x boxes matrices would allocate a row of all of them per call)."""
+        cell's boxes gathered; a pair is kept in one cell of the several it may share, the one with the lowest
+        index along every axis (the larger of the two boxes' first cells). O(C log K + P) for the C cells the
+        clipped boxes cover, the K occupied cells and the P (box, binned box) entries sharing a cell, whatever the
+        number of binned boxes (a sparse product of cells x boxes matrices would allocate a row of all of them per
+        call)."""
         if len(self._keys) == 0:
             return np.zeros(0, dtype=np.int64), np.zeros(0, dtype=np.int64)
         first, last = self._span(lo, hi, self.cell)
         inside = np.flatnonzero(np.all((last >= 0) & (first < self.shape), axis=1))
         top = np.array(self.shape) - 1
-        owner, key = self._cells_of(np.clip(first[inside], 0, top), np.clip(last[inside], 0, top))
+        first = np.clip(first[inside], 0, top)
+        owner, key = self._cells_of(first, np.clip(last[inside], 0, top))
         column = np.minimum(np.searchsorted(self._keys, key), len(self._keys) - 1)
         occupied = self._keys[column] == key
-        column = column[occupied]
+        owner, key, column = owner[occupied], key[occupied], column[occupied]
         begin, count = self._offsets[column], self._offsets[column + 1] - self._offsets[column]
         entry = np.arange(int(count.sum())) + np.repeat(begin - (np.cumsum(count) - count), count)
-        # a box and a binned box sharing several cells: once
-        shared = np.unique(np.repeat(inside[owner[occupied]], count) * self.count + self._boxes[entry])
-        return shared // self.count, shared % self.count
+        row, box = np.repeat(owner, count), self._boxes[entry]
+        lowest = np.ravel_multi_index(tuple(np.maximum(first[row], self._first[box]).T), self.shape)
+        once = lowest == np.repeat(key, count)
+        return inside[row[once]], box[once]
 
 
 def box_pairs(lo: np.ndarray, hi: np.ndarray, other_lo: np.ndarray, other_hi: np.ndarray,
