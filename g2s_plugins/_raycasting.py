@@ -642,37 +642,42 @@ class BoxGrid:
         self.cell = cell
         """Metres, the cells' edge after doubling."""
         self.shape = tuple(int(size) for size in last.max(axis=0, initial=0) + 1)
-        owner, key = self._cells_of(first, last)
+        owner, key, at_first = self._cells_of(first, last)
         self._keys, column = np.unique(key, return_inverse=True)
         column = column.reshape(-1)
-        self._boxes = owner[np.argsort(column, kind="stable")]
-        """(E,) int64: the boxes of occupied cell k are ``_boxes[_offsets[k]:_offsets[k + 1]]``."""
+        order = np.argsort(column, kind="stable")
+        self._boxes, self._at_first = owner[order], at_first[order]
+        """(E,) int64 and uint8: the boxes of occupied cell k are ``_boxes[_offsets[k]:_offsets[k + 1]]``, with
+        :meth:`_cells_of`'s bits of the axes along which that cell is the box's first."""
         self._offsets = np.concatenate([[0], np.cumsum(np.bincount(column, minlength=len(self._keys)))])
-        self._first = first
-        """(m, d) int64: the first cell of each binned box along each axis."""
 
     def _span(self, lo: np.ndarray, hi: np.ndarray, cell: float) -> tuple[np.ndarray, np.ndarray]:
         """(n, d) int64 each: the first and last cell each box covers along each axis."""
         return tuple(np.floor((corner - self.origin) / cell).astype(np.int64) for corner in (lo, hi))
 
-    def _cells_of(self, first: np.ndarray, last: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """``(owner, key)``: one row per (box, cell) it covers, the box's index and the cell's flat index."""
+    def _cells_of(self, first: np.ndarray, last: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """``(owner, key, at_first)``: one row per (box, cell) it covers, the box's index, the cell's flat index and
+        a uint8 with bit ``axis`` set where the cell is the box's first along that axis."""
         spans = last - first + 1
         total = np.prod(spans, axis=1)
         owner = np.repeat(np.arange(len(first)), total)
         k = np.arange(int(total.sum())) - np.repeat(np.cumsum(total) - total, total)
         index = np.empty((len(owner), len(self.shape)), dtype=np.int64)
+        at_first = np.zeros(len(owner), dtype=np.uint8)
         for axis in reversed(range(len(self.shape))):  # k counts the box's cells with the last axis fastest
-            index[:, axis] = first[owner, axis] + k % spans[owner, axis]
+            step = k % spans[owner, axis]
+            index[:, axis] = first[owner, axis] + step
+            at_first |= (step == 0).astype(np.uint8) << axis
             k = k // spans[owner, axis]
-        return owner, np.ravel_multi_index(tuple(index.T), self.shape)
+        return owner, np.ravel_multi_index(tuple(index.T), self.shape), at_first
 
     def pairs(self, lo: np.ndarray, hi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """``(i, j)`` int64 arrays: the pairs of a box ``lo[i]..hi[i]`` ((n, d) m) and a binned box ``j`` that share
         a cell, each once, in no particular order; every overlapping pair is among them. The boxes are clipped to
         the grid (the binned boxes lie within it), their cells looked up among the occupied ones and each such
         cell's boxes gathered; a pair is kept in one cell of the several it may share, the one with the lowest
-        index along every axis (the larger of the two boxes' first cells). O(C log K + P) for the C cells the
+        index along every axis (the larger of the two boxes' first cells: along each axis the cell is one box's
+        first or the other's). O(C log K + P) for the C cells the
         clipped boxes cover, the K occupied cells and the P (box, binned box) entries sharing a cell, whatever the
         number of binned boxes (a sparse product of cells x boxes matrices would allocate a row of all of them per
         call)."""
@@ -681,17 +686,14 @@ class BoxGrid:
         first, last = self._span(lo, hi, self.cell)
         inside = np.flatnonzero(np.all((last >= 0) & (first < self.shape), axis=1))
         top = np.array(self.shape) - 1
-        first = np.clip(first[inside], 0, top)
-        owner, key = self._cells_of(first, np.clip(last[inside], 0, top))
+        owner, key, at_first = self._cells_of(np.clip(first[inside], 0, top), np.clip(last[inside], 0, top))
         column = np.minimum(np.searchsorted(self._keys, key), len(self._keys) - 1)
         occupied = self._keys[column] == key
-        owner, key, column = owner[occupied], key[occupied], column[occupied]
+        owner, at_first, column = owner[occupied], at_first[occupied], column[occupied]
         begin, count = self._offsets[column], self._offsets[column + 1] - self._offsets[column]
         entry = np.arange(int(count.sum())) + np.repeat(begin - (np.cumsum(count) - count), count)
-        row, box = np.repeat(owner, count), self._boxes[entry]
-        lowest = np.ravel_multi_index(tuple(np.maximum(first[row], self._first[box]).T), self.shape)
-        once = lowest == np.repeat(key, count)
-        return inside[row[once]], box[once]
+        once = (np.repeat(at_first, count) | self._at_first[entry]) == (1 << len(self.shape)) - 1
+        return inside[np.repeat(owner, count)[once]], self._boxes[entry[once]]
 
 
 def box_pairs(lo: np.ndarray, hi: np.ndarray, other_lo: np.ndarray, other_hi: np.ndarray,
