@@ -677,10 +677,9 @@ class BoxGrid:
         the grid (the binned boxes lie within it), their cells looked up among the occupied ones and each such
         cell's boxes gathered; a pair is kept in one cell of the several it may share, the one with the lowest
         index along every axis (the larger of the two boxes' first cells: along each axis the cell is one box's
-        first or the other's). O(C log K + P) for the C cells the
-        clipped boxes cover, the K occupied cells and the P (box, binned box) entries sharing a cell, whatever the
-        number of binned boxes (a sparse product of cells x boxes matrices would allocate a row of all of them per
-        call)."""
+        first or the other's). O(C log K + P) for the C cells the clipped boxes cover, the K occupied cells and the
+        P (box, binned box) entries sharing a cell, whatever the number of binned boxes (a sparse product of cells
+        x boxes matrices would allocate a row of all of them per call)."""
         if len(self._keys) == 0:
             return np.zeros(0, dtype=np.int64), np.zeros(0, dtype=np.int64)
         first, last = self._span(lo, hi, self.cell)
