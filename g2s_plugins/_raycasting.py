@@ -34,7 +34,6 @@ from typing import Any
 
 import numpy as np
 import trimesh
-from scipy import sparse
 from trimesh import util
 
 from g2s_plugins.local_frame import LocalFrame
@@ -629,8 +628,8 @@ class BoxGrid:
         cell: edge of a cell, metres; doubled while the boxes would fill more than ``MAX_FLOOR_CELL_ENTRIES``
             cells.
 
-    Only the occupied cells are kept (their keys sorted, and a sparse cells x boxes matrix): built in
-    O(E log E) for the E (box, cell) entries, whatever the grid's extent.
+    Only the occupied cells are kept (their keys sorted, and each one's boxes, in CSR form: offsets into one array
+    of box indices): built in O(E log E) for the E (box, cell) entries, whatever the grid's extent.
     """
 
     def __init__(self, lo: np.ndarray, hi: np.ndarray, cell: float) -> None:
@@ -643,45 +642,57 @@ class BoxGrid:
         self.cell = cell
         """Metres, the cells' edge after doubling."""
         self.shape = tuple(int(size) for size in last.max(axis=0, initial=0) + 1)
-        owner, key = self._cells_of(first, last)
+        owner, key, at_first = self._cells_of(first, last)
         self._keys, column = np.unique(key, return_inverse=True)
-        self._boxes = sparse.csr_array((np.ones(len(owner), dtype=np.int32), (column.reshape(-1), owner)),
-                                       shape=(len(self._keys), len(lo)))
+        column = column.reshape(-1)
+        order = np.argsort(column, kind="stable")
+        self._boxes, self._at_first = owner[order], at_first[order]
+        """(E,) int64 and uint8: the boxes of occupied cell k are ``_boxes[_offsets[k]:_offsets[k + 1]]``, with
+        :meth:`_cells_of`'s bits of the axes along which that cell is the box's first."""
+        self._offsets = np.concatenate([[0], np.cumsum(np.bincount(column, minlength=len(self._keys)))])
 
     def _span(self, lo: np.ndarray, hi: np.ndarray, cell: float) -> tuple[np.ndarray, np.ndarray]:
         """(n, d) int64 each: the first and last cell each box covers along each axis."""
         return tuple(np.floor((corner - self.origin) / cell).astype(np.int64) for corner in (lo, hi))
 
-    def _cells_of(self, first: np.ndarray, last: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """``(owner, key)``: one row per (box, cell) it covers, the box's index and the cell's flat index."""
+    def _cells_of(self, first: np.ndarray, last: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """``(owner, key, at_first)``: one row per (box, cell) it covers, the box's index, the cell's flat index and
+        a uint8 with bit ``axis`` set where the cell is the box's first along that axis."""
         spans = last - first + 1
         total = np.prod(spans, axis=1)
         owner = np.repeat(np.arange(len(first)), total)
         k = np.arange(int(total.sum())) - np.repeat(np.cumsum(total) - total, total)
         index = np.empty((len(owner), len(self.shape)), dtype=np.int64)
+        at_first = np.zeros(len(owner), dtype=np.uint8)
         for axis in reversed(range(len(self.shape))):  # k counts the box's cells with the last axis fastest
-            index[:, axis] = first[owner, axis] + k % spans[owner, axis]
+            step = k % spans[owner, axis]
+            index[:, axis] = first[owner, axis] + step
+            at_first |= (step == 0).astype(np.uint8) << axis
             k = k // spans[owner, axis]
-        return owner, np.ravel_multi_index(tuple(index.T), self.shape)
+        return owner, np.ravel_multi_index(tuple(index.T), self.shape), at_first
 
     def pairs(self, lo: np.ndarray, hi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """``(i, j)`` int64 arrays: pairs of a box ``lo[i]..hi[i]`` ((n, d) m) and a binned box ``j`` that share a
-        cell, in no particular order; every overlapping pair is among them. The boxes are clipped to the grid
-        (the binned boxes lie within it) and their cells looked up among the occupied ones; one sparse product
-        gives the pairs: O(C log K + pairs sharing a cell) for the C cells the clipped boxes cover and the K
-        occupied cells."""
+        """``(i, j)`` int64 arrays: the pairs of a box ``lo[i]..hi[i]`` ((n, d) m) and a binned box ``j`` that share
+        a cell, each once, in no particular order; every overlapping pair is among them. The boxes are clipped to
+        the grid (the binned boxes lie within it), their cells looked up among the occupied ones and each such
+        cell's boxes gathered; a pair is kept in one cell of the several it may share, the one with the lowest
+        index along every axis (the larger of the two boxes' first cells: along each axis the cell is one box's
+        first or the other's). O(C log K + P) for the C cells the clipped boxes cover, the K occupied cells and the
+        P (box, binned box) entries sharing a cell, whatever the number of binned boxes (a sparse product of cells
+        x boxes matrices would allocate a row of all of them per call)."""
         if len(self._keys) == 0:
             return np.zeros(0, dtype=np.int64), np.zeros(0, dtype=np.int64)
         first, last = self._span(lo, hi, self.cell)
         inside = np.flatnonzero(np.all((last >= 0) & (first < self.shape), axis=1))
         top = np.array(self.shape) - 1
-        owner, key = self._cells_of(np.clip(first[inside], 0, top), np.clip(last[inside], 0, top))
+        owner, key, at_first = self._cells_of(np.clip(first[inside], 0, top), np.clip(last[inside], 0, top))
         column = np.minimum(np.searchsorted(self._keys, key), len(self._keys) - 1)
         occupied = self._keys[column] == key
-        cells = sparse.csr_array((np.ones(int(occupied.sum()), dtype=np.int32), (inside[owner[occupied]],
-                                  column[occupied])), shape=(len(lo), len(self._keys)))
-        shared = (cells @ self._boxes).tocoo()
-        return shared.row.astype(np.int64), shared.col.astype(np.int64)
+        owner, at_first, column = owner[occupied], at_first[occupied], column[occupied]
+        begin, count = self._offsets[column], self._offsets[column + 1] - self._offsets[column]
+        entry = np.arange(int(count.sum())) + np.repeat(begin - (np.cumsum(count) - count), count)
+        once = (np.repeat(at_first, count) | self._at_first[entry]) == (1 << len(self.shape)) - 1
+        return inside[np.repeat(owner, count)[once]], self._boxes[entry[once]]
 
 
 def box_pairs(lo: np.ndarray, hi: np.ndarray, other_lo: np.ndarray, other_hi: np.ndarray,

@@ -139,3 +139,6 @@ def test_box_pairs_finds_every_overlapping_pair_in_2d_and_3d():
     assert len(box_pairs(lo3, lo3 + 1.0, other3, other3 + 1.0, cell=16.0)[0]) == 0
     reaching = np.array([[-10.0, -10.0, -10.0]]), np.array([[0.5, 5.5, 0.5]])
     assert set(zip(*box_pairs(*reaching, other3, other3 + 1.0, cell=1.0))) == {(0, 0)}
+    # boxes sharing six cells (3 x 2 of 1 m) make one pair, not six
+    wide = np.array([[0.5, 0.5]]), np.array([[2.5, 1.5]])
+    assert [pair.tolist() for pair in box_pairs(*wide, *wide, cell=1.0)] == [[0], [0]]

@@ -125,6 +125,7 @@ from g2s_plugins._raycasting import (
     AgentShape,
     BoxOccupancy,
     FloorTriangles,
+    Hits,
     OpenFloors,
     RayCaster,
     all_hits_down,
@@ -267,6 +268,7 @@ def agent_fits(
     triangles: np.ndarray | trimesh.Trimesh | None = None,
     faces: np.ndarray | None = None,
     rejected: np.ndarray | None = None,
+    clear_of_walls: np.ndarray | None = None,
 ) -> np.ndarray:
     """(n,) bool: the agent can stand at each ground point.
 
@@ -295,11 +297,19 @@ def agent_fits(
 
     ``rejected``, when given ((n,) int array), receives the check that turned
     each point away: ``REJECTED_BY``'s index (0: it fits).
+
+    ``clear_of_walls``, when given ((n,) bool array), receives for each point
+    that fits whether :func:`nearest_wall` puts it the clearance or more from
+    a wall, read from the wall rays cast here (the same 24 rays; a point none
+    were cast for has no steep triangle within the clearance of its column,
+    so none nearer).
     """
     points = np.asarray(points, dtype=np.float64).reshape(-1, 3)
     why = rejected if rejected is not None else np.zeros(len(points), dtype=np.int8)
     ok = head_room(caster, points, agent)
     why[:] = np.where(ok, 0, REJECTED_BY.index("head room"))
+    if clear_of_walls is not None:
+        clear_of_walls[:] = True  # no wall is nearer than a clearance of 0
     if clearance <= 0 or not np.any(ok):
         return ok
     # Each test below only casts for the candidates every earlier test kept (a
@@ -312,13 +322,21 @@ def agent_fits(
     levels = wall_levels(agent)
     far = around.steep.columns_free(points[idx], levels[0], levels[-1])
     near = idx[~far]
+    wall_distance = np.full(len(points), np.inf) if clear_of_walls is not None else None
     for level in levels:
         for direction in COMPASS:
             hits = caster.first_hits(points[near] + level * UP, direction)
             wall = (hits.distance < clearance) & ~caster.walkable_faces(hits.face, agent.max_slope_deg)
             why[near[wall]] = REJECTED_BY.index("wall")
+            if wall_distance is not None:
+                rows, length, _ = _steep_offsets(caster, hits, agent, clearance)
+                stays = ~wall[rows]
+                kept = near[rows[stays]]
+                wall_distance[kept] = np.minimum(wall_distance[kept], length[stays])
             near = near[~wall]
     idx = np.sort(np.concatenate([idx[far], near]))
+    if clear_of_walls is not None:
+        clear_of_walls[:] = wall_distance >= clearance
 
     # Ledges: ground in every direction at the clearance distance, a batch of
     # candidates at a time (8 rays each; one batch for all would hold several
@@ -465,22 +483,27 @@ def nearest_wall(caster: RayCaster, points: np.ndarray, agent: AgentShape, clear
     points = np.asarray(points, dtype=np.float64).reshape(-1, 3)
     distance = np.full(len(points), np.inf)
     away = np.zeros((len(points), 3))
-    reach = clearance / math.cos(math.pi / len(COMPASS))
     for level in wall_levels(agent):
-        origins = points + level * UP
         for direction in COMPASS:
-            hits = caster.first_hits(origins, direction)
-            wall = np.flatnonzero((hits.distance < reach) & ~caster.walkable_faces(hits.face, agent.max_slope_deg))
+            wall, length, level_offset = _steep_offsets(caster, caster.first_hits(points + level * UP, direction), agent, clearance)
             if len(wall) == 0:
                 continue
-            nearest = trimesh.triangles.closest_point(caster.triangles[hits.face[wall]], origins[wall])
-            level_offset = (origins[wall] - nearest) * [1.0, 0.0, 1.0]
-            length = np.linalg.norm(level_offset, axis=1)
             nearer = length < distance[wall]
             rows = wall[nearer]
             distance[rows] = length[nearer]
             away[rows] = np.where((length[nearer] > 0)[:, None], level_offset[nearer] / np.maximum(length[nearer], 1e-12)[:, None], -direction)
     return distance, away
+
+
+def _steep_offsets(caster: RayCaster, hits: Hits, agent: AgentShape, clearance: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``(rows, length, offset)`` of the level rays ``hits`` that meet a steep triangle within ``clearance`` / cos
+    22.5 degrees (:func:`nearest_wall`'s reach): their (k,) indices, (k,) the level distance (m) from that triangle's
+    nearest point (``trimesh.triangles.closest_point``) to the ray's origin and (k, 3) the level offset itself."""
+    reach = clearance / math.cos(math.pi / len(COMPASS))
+    rows = np.flatnonzero((hits.distance < reach) & ~caster.walkable_faces(hits.face, agent.max_slope_deg))
+    origins = hits.origins[rows]
+    offset = (origins - trimesh.triangles.closest_point(caster.triangles[hits.face[rows]], origins)) * [1.0, 0.0, 1.0]
+    return rows, np.linalg.norm(offset, axis=1), offset
 
 
 def ledge_room(caster: RayCaster, points: np.ndarray, agent: AgentShape, clearance: float) -> np.ndarray:
@@ -520,8 +543,9 @@ def _fits_clear(caster: RayCaster, agent: AgentShape, clearance: float, points: 
     """(n,) bool: the agent fits at each ground point ((n, 3); :func:`agent_fits`), no steep triangle its rays meet
     lies nearer than ``clearance`` (:func:`nearest_wall`), there is ground at the clearance in ``GROUND_DIRECTIONS``
     directions (:func:`_ground_at`) and no closed solid holds it (:func:`inside_closed_solids`)."""
-    ok = agent_fits(caster, points, agent, clearance)
-    ok[ok] = nearest_wall(caster, points[ok], agent, clearance)[0] >= clearance
+    clear_of_walls = np.zeros(len(points), dtype=bool)
+    ok = agent_fits(caster, points, agent, clearance, clear_of_walls=clear_of_walls)
+    ok &= clear_of_walls
     rows = np.flatnonzero(ok)
     probes = (points[rows][:, None, :] + clearance * AROUND[None, :, :]).reshape(-1, 3)
     ok[rows] = _ground_at(caster, agent, clearance, probes)[0].reshape(len(rows), GROUND_DIRECTIONS).all(axis=1)
