@@ -21,8 +21,8 @@ can be told reach 4.8 agent heights, and 394 of them read from centimetres
 reach more than :data:`MAX_STOREY_HEIGHTS`, all of them from millimetres. A
 level with a single flat height (a flat plane, a slab) cannot be told.
 
-Cost: one pass over at most :data:`SAMPLED_FACES` faces (a stride through the
-mesh's faces), 0.07 s of CPU on the 1.7 M faces of the 100k-polygon level.
+Cost: one pass over at most :data:`SAMPLED_FACES` faces (a seeded random choice
+of a larger mesh's faces), 0.07 s of CPU on the 1.7 M faces of the 100k-polygon level.
 """
 
 from __future__ import annotations
