@@ -79,3 +79,16 @@ def test_the_passage_comes_out_of_the_wall_where_its_sides_open_out() -> None:
     free = np.array([1.25, 1.30, 1.31, 5.0, np.inf, 1.2])
     narrowest = np.array([1.25, 1.25, 1.25, 1.2, 1.2, np.inf])
     assert entry_exit._through_the_wall(free, narrowest, s).tolist() == [False, False, True, True, True, False]
+
+
+def test_an_open_side_between_posts_reads_its_posts_as_its_ends() -> None:
+    # Twenty-fifth round's pavilion on four corner posts 0.25 m square, turned 22 degrees, on the sampling route: its
+    # north side is found as a few parts, one of them with its end on a post, read 0.05-0.23 m in from the floor's
+    # edge. Its line runs as near the wall's as its floor's end does, and the union of the parts reads 5.48 m for the
+    # 5.5 between the posts; taken for a splayed reveal's jamb, read 1 m in (whose transport to the face along its
+    # part's line, a degree or two off the wall's, reads up to 0.026 m past it), the post was no end: 5.22 m.
+    level = pieces.turned(benchmark("piece_kinds25").pavilion_four_posts(), 22.0)
+    found = _openings(level, "sampling")
+    for known in level.openings:
+        near = [o for o in found if np.linalg.norm(np.subtract(o.position, known.position)) <= pieces.MATCH_DISTANCE]
+        assert len(near) == 1 and near[0].width == pytest.approx(known.width, abs=0.05)

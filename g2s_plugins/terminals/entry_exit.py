@@ -1224,9 +1224,9 @@ def _passages(
     step above the climb (over what the agent steps onto, such as a low slab of rubble, and not
     stopped by ground it walks onto) and at the head-room rays' height: a leaf or a chunk standing in
     the passage, or a sign hanging into it lower than the agent, leaves its free part. Returns (n,)
-    the narrowest width at the rays' height, m, and (n,) (n,) how far the narrowest free part above
+    the narrowest width at the rays' height, m, (n,) (n,) how far the narrowest free part above
     the climb reaches from the middle towards ``first`` and towards ``last`` (along the edge, m;
-    infinite where nothing stands).
+    infinite where nothing stands), and (n,) how deep in from the edge that free part was read (m).
     """
     out = np.array([e.outward for e in kept])
     nrm = np.array([e.normal for e in kept])
@@ -1277,8 +1277,9 @@ def _passages(
     closed = near[2 * n: 2 * n + len(kept)] | near[2 * n + len(kept):]  # from each opening's last step read: the edge
     ended = np.zeros(len(kept), dtype=bool)  # the passage's sides opened out (the room behind the wall), or it ended
     came_out = np.zeros(len(kept), dtype=bool)  # its sides opened out: it came out of the wall
-    samples_read = np.full((3, len(kept)), np.inf)  # widths, back and ahead as deep as the samples stand
+    samples_read = np.full((4, len(kept)), np.inf)  # widths, back, ahead and where read, as deep as the samples stand
     opened_at = np.zeros(len(kept), dtype=np.int64)  # the entry at which its sides opened out
+    narrowest_at = np.zeros(len(kept))  # how deep in from the edge the narrowest free part was read, m
     for k in range(len(levels)):
         entries = np.arange(starts[k], starts[k + 1])
         entries = entries[~ended[row_of[entries]]]
@@ -1294,8 +1295,9 @@ def _passages(
         widths[rows[~opened]] = np.minimum(widths[rows[~opened]], across[entries[~opened]])
         narrower = ~opened & (to_first + to_last < back[rows] + ahead[rows])
         back[rows[narrower]], ahead[rows[narrower]] = to_first[narrower], to_last[narrower]
+        narrowest_at[rows[narrower]] = depth_of[entries[narrower]]
         within = rows[~beyond[entries]]
-        samples_read[:, within] = widths[within], back[within], ahead[within]
+        samples_read[:, within] = widths[within], back[within], ahead[within], narrowest_at[within]
     # Where the sides opened between a step and the one before, the narrowest part lies between them (at a splay's
     # inner face): bisected as the floor's end is, all such openings at once.
     rows = np.flatnonzero(came_out & (depth_of[opened_at] > 1.5 * s.delta))
@@ -1310,10 +1312,12 @@ def _passages(
         opened = _through_the_wall(to_first + to_last, back[rows] + ahead[rows], s)
         narrower = ~opened & (to_first + to_last < back[rows] + ahead[rows])
         back[rows[narrower]], ahead[rows[narrower]] = to_first[narrower], to_last[narrower]
+        narrowest_at[rows[narrower]] = depth[narrower]
         lo, hi = np.where(opened, lo, depth), np.where(opened, depth, hi)
     # What was read past the samples counts where the passage came out of the wall: a corridor running on (tapering,
     # or flaring to its mouth) is read as deep as its samples stand, as before.
-    return tuple(np.where(came_out, past, read) for past, read in zip((widths, back, ahead), samples_read))
+    read_past = (widths, back, ahead, narrowest_at)
+    return tuple(np.where(came_out, past, read) for past, read in zip(read_past, samples_read))
 
 
 def _free_rays(inside: np.ndarray, along: np.ndarray, s: _Settings) -> tuple[list[np.ndarray], list[np.ndarray]]:
@@ -1947,11 +1951,15 @@ def detect_openings(
         return Opening(vec3(mid), vec3(heading), width, vec3(p0), vec3(p1), score, reason)
 
     jambs = _between_jambs(kept, p_first, p_last, caster, s)
-    passages, back, ahead = _passages(kept, p_first, p_last, ways, caster, s)
+    passages, back, ahead, sides_at = _passages(kept, p_first, p_last, ways, caster, s)
     half = 0.5 * np.linalg.norm(p_last - p_first, axis=1)
-    # Each end moved in onto the passage's side (a jamb); one the free part reaches to the ray caster's precision is
-    # the floor's (a yard's open side turned 22 degrees: its parts' ends 4e-6 m short of their free part's).
-    at_side = np.stack([back < half - _SAME_WIDTH, ahead < half - _SAME_WIDTH], axis=1)
+    # Each end moved in onto the passage's side (a jamb) read deeper than the agent's radius, the floor's end's own
+    # depth on the navmesh; one the free part reaches to the ray caster's precision is the floor's (a yard's open side
+    # turned 22 degrees: its parts' ends 4e-6 m short of their free part's), as is a side read no deeper (a post at
+    # an open side's corner, 0.05-0.23 m in: a pavilion's side at 22 degrees on the sampling route read 5.22 m for
+    # 5.5 without it; a splayed reveal's jambs are read 0.98-1.01 m in, 60 of 62 parts at 0, 22 and 45 degrees).
+    in_side = (sides_at > s.radius)[:, None]
+    at_side = np.stack([back < half - _SAME_WIDTH, ahead < half - _SAME_WIDTH], axis=1) & in_side
     p_first, p_last = _free_part(p_first, p_last, back, ahead)
     found: list[tuple[Opening, tuple[int, ...], tuple[float, float, float]]] = []
     edges: list[_Edge] = []
@@ -1977,9 +1985,9 @@ def detect_openings(
     # since a union can reach one that overlapped none of its parts (a plaza's side on the sampling
     # route: parts 3.28-9.98 and 0.54-3.37 m along it, then one at 0.17-2.80 m). Each pass drops
     # one at least: at most n passes of O(n^2) for n openings. A part stretches it by its floor's ends alone: an end
-    # moved in onto its passage's side lies where that part's line, a degree or two off the wall's, meets the side
-    # as deep as the narrowest width stands (a splayed reveal's inner face, 1 m in: 1.234 m for 1.2 on the sampling
-    # route, the extremes of 15 parts' ends; docs/entry_exit.md, "Since the passage rule").
+    # moved in onto its passage's side deep in the wall lies where that part's line, a degree or two off the wall's,
+    # meets the side as deep as the narrowest width stands (a splayed reveal's inner face, 1 m in: 1.234 m for 1.2 on
+    # the sampling route, the extremes of 15 parts' ends; docs/entry_exit.md, "Since the passage rule").
     while True:
         into = _repeated([f[0] for f in found], s.radius, float(params.max_turn_deg), s.climb)
         if not (into >= 0).any():
