@@ -33,7 +33,7 @@ Candidates are taken by ascending node id; when B goes, A is examined in
 turn (it may have become such a leaf). Test 3 is local: only the nodes
 whose nearest represented node lay in B's branch (its cell of the graph's
 Voronoi partition) can move, and their new distances come from a Dijkstra
-seeded at the cell's boundary. The line of sight asks nothing: no edge is
+(``scipy.sparse.csgraph``) seeded at the cell's boundary. The line of sight asks nothing: no edge is
 added.
 
 Complexity: O(n) for the subtree counts (n forest nodes), one multi-source
@@ -49,6 +49,7 @@ from collections.abc import Hashable
 
 import networkx as nx
 import numpy as np
+from scipy import sparse
 from scipy.sparse import csgraph
 
 from g2s_core.simplify import ForestArrays, forest_arrays
@@ -109,7 +110,6 @@ def pruned(
 
     rows = arrays.rows(forest.ids.tolist())
     adjacency = arrays.adjacency
-    indptr, indices, lengths = adjacency.indptr, adjacency.indices, adjacency.data
     distance, _, nearest = csgraph.dijkstra(adjacency, directed=False, indices=rows[holds], min_only=True,
                                             return_predecessors=True)
     owner = np.full(arrays.n, -1, dtype=np.int64)  # the forest row of each graph node's nearest represented node
@@ -144,7 +144,7 @@ def pruned(
             if step > max_step:  # NaN is not compared
                 continue
         cell = np.array(sorted({node for row in branch for node in members[row] if owner[node] == row}), np.int64)
-        moved = _moved(cell, owner, distance, indptr, indices, lengths, radius, near)
+        moved = _moved(cell, owner, distance, adjacency, radius, near)
         if moved is None:
             continue
         new_distance, new_owner = moved
@@ -161,39 +161,35 @@ def pruned(
 
 
 def _moved(
-    cell: np.ndarray, owner: np.ndarray, distance: np.ndarray, indptr: np.ndarray, indices: np.ndarray,
-    lengths: np.ndarray, radius: float, near: float,
+    cell: np.ndarray, owner: np.ndarray, distance: np.ndarray, adjacency: sparse.csr_array, radius: float, near: float,
 ) -> tuple[np.ndarray, np.ndarray] | None:
     """The distances and nearest represented nodes (forest rows) of the graph nodes of ``cell`` (those whose nearest
     represented node lies in a branch) once the branch stands for nothing; ``None`` when one of them would leave
-    ``radius`` or ``near``."""
-    inside = dict(zip(cell.tolist(), range(len(cell))))
-    best = np.full(len(cell), np.inf)
-    source = np.full(len(cell), -1, dtype=np.int64)
-    heap: list[tuple[float, int, int]] = []
-    for i, node in enumerate(cell.tolist()):  # seeded from the cell's neighbours outside it, whose distances stay
-        for k in range(indptr[node], indptr[node + 1]):
-            other = int(indices[k])
-            if other not in inside and owner[other] >= 0:
-                reach = distance[other] + lengths[k]
-                if reach < best[i]:
-                    best[i], source[i] = reach, owner[other]
-        if np.isfinite(best[i]):
-            heap.append((float(best[i]), node, int(source[i])))
-    heapq.heapify(heap)
-    done = np.zeros(len(cell), dtype=bool)
-    while heap:
-        reach, node, origin = heapq.heappop(heap)
-        i = inside[node]
-        if done[i]:
-            continue
-        done[i] = True
-        for k in range(indptr[node], indptr[node + 1]):
-            j = inside.get(int(indices[k]))
-            if j is not None and not done[j] and reach + lengths[k] < best[j]:
-                best[j], source[j] = reach + lengths[k], origin
-                heapq.heappush(heap, (float(best[j]), int(indices[k]), origin))
+    ``radius`` or ``near``. One multi-source Dijkstra (``csgraph.dijkstra``) over the cell's subgraph of
+    ``adjacency`` and one source node per represented node next to it, joined to the cell's nodes by their
+    distance (which stays) plus the edge into the cell."""
+    c = len(cell)
+    inside = np.full(adjacency.shape[0], -1, dtype=np.int64)
+    inside[cell] = np.arange(c)
+    edges = adjacency[cell].tocoo()
+    into, other, length = edges.row, edges.col, edges.data
+    within = inside[other] >= 0
+    seeds = ~within & (owner[other] >= 0)
+    origins, origin_of = np.unique(owner[other[seeds]], return_inverse=True)
+    rows = np.concatenate([into[within], c + origin_of.reshape(-1)])
+    cols = np.concatenate([inside[other[within]], into[seeds]])
+    weights = np.concatenate([length[within], distance[other[seeds]] + length[seeds]])
+    order = np.lexsort((weights, cols, rows))  # the shortest of parallel seed edges, which a sparse matrix would sum
+    first = np.ones(len(order), dtype=bool)
+    first[1:] = (np.diff(rows[order]) != 0) | (np.diff(cols[order]) != 0)
+    order = order[first]
+    graph = sparse.csr_array((weights[order], (rows[order], cols[order])), shape=(c + len(origins),) * 2)
+    reach, _, source = csgraph.dijkstra(graph, directed=True, indices=np.arange(c, c + len(origins)), min_only=True,
+                                       return_predecessors=True)
+    best, nearest = reach[:c], np.full(c, -1, dtype=np.int64)
+    seeded = source[:c] >= c
+    nearest[seeded] = origins[source[:c][seeded] - c]
     before = distance[cell]
     if np.any((before <= radius) & ~(best <= radius)) or np.any((before <= near) & ~(best <= near)):
         return None
-    return best, source
+    return best, nearest
