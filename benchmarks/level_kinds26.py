@@ -183,7 +183,7 @@ def holed_mill(seed: int) -> trimesh.Trimesh:
             x, z = float(rng.uniform(2.5, length - 2.5 - w)), float(rng.uniform(2.5, depth - 2.5 - d))
             if _spaced((x, x + w, z, z + d), holes, 2.5) and _spaced((x, x + w, z, z + d), keep_clear, 0.0):
                 holes.append((x, x + w, z, z + d))
-        s.slab(0.0, length, 0.0, depth + 0.2, k * storey, holes)
+        s.ground(0.0, length, 0.0, depth + 0.2, k * storey, holes, thickness=0.3)
     return s.mesh()
 
 
