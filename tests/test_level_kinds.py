@@ -1,4 +1,4 @@
-"""The ninth to twenty-fifth rounds' level kinds (``benchmarks/level_kinds.py``) build the levels their docstrings describe.
+"""The level kinds of rounds 9-26 (``benchmarks/level_kinds.py``, ``level_kinds26.py``) build the levels they describe.
 
 Smoke tests of quick generators (most well under a second each to build and to give a navmesh; the theatre's and
 the cliff dwellings' thousands of hulls take about 5 s of CPU, the metroidvania's flights 1-2 s a build): the connected
