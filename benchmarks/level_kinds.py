@@ -12007,18 +12007,21 @@ KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
 """Kind name -> generator (seed -> Y-up mesh in metres)."""
 
 
-def main(argv: list[str] | None = None) -> None:
-    """Write the OBJ files ``argv`` asks for (the command line when None)."""
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+def main(argv: list[str] | None = None, kinds: dict[str, Callable[[int], trimesh.Trimesh]] | None = None,
+         description: str | None = None) -> None:
+    """Write the OBJ files ``argv`` asks for (the command line when None) of ``kinds`` (this module's KINDS when None;
+    a later round's module passes its own), ``description`` heading the help."""
+    kinds = KINDS if kinds is None else kinds
+    parser = argparse.ArgumentParser(description=description or __doc__.splitlines()[0])
     parser.add_argument("out", type=Path, help="directory for the OBJ files")
-    parser.add_argument("--kinds", nargs="+", default=list(KINDS), choices=list(KINDS))
+    parser.add_argument("--kinds", nargs="+", default=list(kinds), choices=list(kinds))
     parser.add_argument("--seeds", nargs="+", type=int, default=[0, 1, 2])
     args = parser.parse_args(argv)
     args.out.mkdir(parents=True, exist_ok=True)
     for kind in args.kinds:
         for seed in args.seeds:
             path = args.out / f"{kind}_s{seed}.obj"
-            KINDS[kind](seed).export(path)
+            kinds[kind](seed).export(path)
             print(path)
 
 

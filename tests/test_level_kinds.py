@@ -1,4 +1,4 @@
-"""The ninth to twenty-fifth rounds' level kinds (``benchmarks/level_kinds.py``) build the levels their docstrings describe.
+"""The level kinds of rounds 9-26 (``benchmarks/level_kinds.py``, ``level_kinds26.py``) build the levels they describe.
 
 Smoke tests of quick generators (most well under a second each to build and to give a navmesh; the theatre's and
 the cliff dwellings' thousands of hulls take about 5 s of CPU, the metroidvania's flights 1-2 s a build): the connected
@@ -1180,3 +1180,61 @@ def test_recursive_division_cuts_a_region_six_cells_long_once_in_its_middle():
     walls = []
     divide(np.random.default_rng(0), (0, 5, 0, 5), walls, 0.5)
     assert walls == []
+
+
+@pytest.fixture(scope="module")
+def round_26() -> dict[str, Callable[[int], trimesh.Trimesh]]:
+    """``benchmarks/level_kinds26.py``'s KINDS (the twenty-sixth round): each call builds its level anew."""
+    return benchmark("level_kinds26").KINDS
+
+
+def test_the_paintball_fields_low_cover_is_walked_over_and_no_bunker_holds_floor(round_26):
+    """Hundreds of pieces of low cover (0.15-0.38 m, under the 0.4 m climb) leave the field one area, and no tall
+    bunker's top (pyramids, cones, ridges over 45 degrees) holds floor: nothing walkable over 0.5 m."""
+    label, nav = areas(round_26["paintball"](0))
+    assert label.max() == 0
+    assert (nav.centres[:, 1] - 0.2 < 0.5).all() and nav.areas.sum() > 12000.0
+
+
+def test_the_holed_mills_three_storeys_are_one_area_through_its_stair_towers(round_26):
+    """The upper floors, holed by 24-34 collapses each, are reached only up the two stair towers: one area, with floor
+    on every storey (0, 4, 8 m)."""
+    label, nav = areas(round_26["holed_mill"](1))
+    assert label.max() == 0
+    held = [nav.areas[np.abs(nav.centres[:, 1] - 0.2 - 4.0 * k) < 0.1].sum() for k in range(3)]
+    assert min(held) > 1000.0, held
+
+
+def test_the_vineyards_risers_are_walked_with_the_presets_ledge_filter(round_26):
+    """Risers at 33-42 degrees: with the presets' ``ledge_filter: drops`` the valley is one area from its floor to the
+    top terraces (over 15 m up); Recast's own ledge rule, which cuts slopes of about 37 degrees and over on this grid,
+    parts the terraces."""
+    mesh = round_26["vineyard"](2)
+    label, nav = areas(mesh, RecastParams(ledge_filter="drops"))
+    assert label.max() == 0 and np.ptp(nav.centres[:, 1]) > 15.0
+    assert areas(mesh)[0].max() > 0
+
+
+def test_the_catwalk_halls_three_heights_are_one_area_over_no_floor(round_26):
+    """Railed catwalks 1.8 m wide hold floor at each height (6, 10, 14 m), joined by the stair towers: one area, and
+    no floor under 5 m (the hall has none)."""
+    label, nav = areas(round_26["catwalk_hall"](0))
+    assert label.max() == 0 and (nav.centres[:, 1] > 5.0).all()
+    held = [nav.areas[np.abs(nav.centres[:, 1] - 0.2 - height) < 0.1].sum() for height in (6.0, 10.0, 14.0)]
+    assert min(held) > 150.0, held
+
+
+def test_the_double_door_rooms_are_one_area_through_their_open_doors(round_26):
+    """Every room is joined along a spanning tree by a double door whose leaves stand open at 90 degrees, and beds
+    stand only along walls with no doorway: one area of rooms and yard."""
+    label, nav = areas(round_26["double_doors"](1))
+    assert label.max() == 0 and nav.areas.sum() > 1500.0
+
+
+def test_the_split_decks_are_one_area_up_the_ramps_spiralling_round_the_well(round_26):
+    """The two halves' decks, 1.5 m apart, meet only by ramps across the light well: one area, with floor on every
+    deck (0-10.5 m on seed 2)."""
+    label, nav = areas(round_26["split_decks"](2))
+    assert label.max() == 0
+    held = [nav.areas[np.abs(nav.centres[:, 1] - 0.2 - 1.5 * k) < 0.1].sum() for k in range(8)]
+    assert min(held) > 400.0, held
