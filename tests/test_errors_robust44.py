@@ -1,11 +1,62 @@
-"""Inputs robust44 (6 December 2026) found breaking docs/errors.md's rules: ``g2s batch`` with a networkx setting of
-the environment that networkx refuses, an internal error (exit 1)."""
+"""Inputs robust44 (6 December 2026) found breaking docs/errors.md's rules: a mesh file whose suffix is not its
+format (a binary or ASCII STL, a PLY, an OFF or a GLB named ``.obj``) refused as "the mesh is empty (no triangles)",
+and ``g2s batch`` with a networkx setting of the environment that networkx refuses, an internal error (exit 1)."""
 
 from __future__ import annotations
 
 import pytest
+import trimesh
 
-from tests.reliability.checks import CORRIDOR, assert_clean_error, run_g2s_process, tree
+from g2s_core.errors import MeshError
+from g2s_core.mesh import load_mesh
+from tests.reliability.checks import CORRIDOR, assert_clean_error, run_g2s, run_g2s_process, tree
+
+FLOOR = trimesh.Trimesh(vertices=[[0, 0, 0], [0, 0, 10], [10, 0, 10], [10, 0, 0]], faces=[[0, 1, 2], [0, 2, 3]])
+"""A 10 m square floor, Y up, wound to face up."""
+
+CONTENTS = {
+    "binary STL": (FLOOR.export(file_type="stl"), ".stl", "a binary STL, by its size: an 80-byte header, then the 2 triangles it announces"),
+    "ASCII STL": (FLOOR.export(file_type="stl_ascii").encode(), ".stl", "ASCII STL, by its first bytes b'solid'"),
+    "binary PLY": (FLOOR.export(file_type="ply"), ".ply", "PLY, by its first bytes b'ply\\nf'"),
+    "ASCII PLY": (FLOOR.export(file_type="ply", encoding="ascii"), ".ply", "PLY, by its first bytes b'ply\\nf'"),
+    "OFF": (FLOOR.export(file_type="off").encode(), ".off", "OFF, by its first bytes b'OFF\\n4'"),
+    "GLB": (FLOOR.export(file_type="glb"), ".glb", "GLB (binary glTF), by its first bytes b'glTF\\x02'"),
+}
+"""Each format's file of the floor: its bytes, its own suffix and how the message names it."""
+
+NAMES = {".obj": "OBJ", ".glb": "GLB (binary glTF)", ".gltf": "glTF JSON", ".ply": "PLY", ".stl": "STL", ".off": "OFF"}
+
+
+@pytest.mark.parametrize("kind", CONTENTS)
+def test_each_format_named_obj_is_named_by_its_content(kind, tmp_path, capsys):
+    # was "the mesh is empty (no triangles)": read as OBJ text, the file holds no `v` or `f` line
+    data, suffix, named = CONTENTS[kind]
+    (level := tmp_path / "level.obj").write_bytes(data)
+    outcome = run_g2s(capsys, "run", "graph_only", level, "-o", tmp_path / "out")
+    assert assert_clean_error(outcome) == f"g2s: error: {level}: the file's content is not OBJ but {named}; rename it level{suffix}"
+    assert tree(tmp_path / "out") == []
+
+
+@pytest.mark.parametrize("kind", CONTENTS)
+@pytest.mark.parametrize("given", [".obj", ".glb", ".gltf", ".ply", ".stl", ".off"])
+def test_a_file_whose_suffix_is_another_format_is_named_by_its_content(kind, given, tmp_path):
+    # were the suffix's own reader's words: OBJ's "the mesh is empty", PLY's "the PLY header has no end_header line",
+    # STL's "binary STL ends early: the header announces 1313818956 triangles", glTF's "not valid glTF JSON (not UTF-8 text)"
+    data, suffix, named = CONTENTS[kind]
+    (level := tmp_path / f"level{given}").write_bytes(data)
+    if given == suffix:  # its own suffix: read
+        assert len(load_mesh(level)[0].faces) == 2
+        return
+    with pytest.raises(MeshError) as refused:
+        load_mesh(level)
+    assert str(refused.value) == f"{level}: the file's content is not {NAMES[given]} but {named}; rename it level{suffix}"
+
+
+def test_a_file_of_its_own_format_cut_short_is_still_named_by_its_damage(tmp_path):
+    # the content check names another format only: a binary STL cut short is no STL of another size
+    (level := tmp_path / "level.stl").write_bytes(CONTENTS["binary STL"][0][:-10])
+    with pytest.raises(MeshError, match="binary STL ends early: the header announces 2 triangles, the file holds 1"):
+        load_mesh(level)
 
 
 @pytest.mark.parametrize("name, value, says", [
