@@ -105,6 +105,8 @@ def describe_damage(path: Path, data: bytes) -> str | None:
         return "the file is empty (0 bytes)"
     if (content := _content_format(data)) and content[0] != suffix:  # read as the suffix says, it was "the mesh is empty"
         return f"the file's content is not {FORMATS[suffix]} but {content[1]}; rename it {path.with_suffix(content[0]).name}"
+    if suffix == ".stl" and size < STL_HEADER and not b"solid".startswith(data[:5]):  # read as ASCII STL: "line 1: ..."
+        return f"binary STL ends early: the file has {_many(size, 'byte')}, its header alone takes {STL_HEADER}"
     # ASCII STL starts with "solid", never holds a NUL
     if binary_stl := suffix == ".stl" and size >= STL_HEADER and (not data.startswith(b"solid") or b"\0" in data[:STL_HEADER]):
         count = int.from_bytes(data[80:STL_HEADER], "little")
@@ -113,7 +115,7 @@ def describe_damage(path: Path, data: bytes) -> str | None:
         if size > expected:
             return f"binary STL has {size - expected} bytes more than the {count} triangles its header announces"
     announced = int.from_bytes(data[8:GLB_HEADER], "little") if size >= GLB_HEADER else None  # None: cut inside the header
-    if suffix == ".glb" and data.startswith(b"glTF") and (announced is None or size < announced):
+    if suffix == ".glb" and b"glTF".startswith(data[:4]) and (announced is None or size < announced):  # cut in b"glTF" too
         return f"the GLB file ends early (its header {f'is {GLB_HEADER}' if announced is None else f'announces {announced}'} bytes, the file has {size})"
     if suffix == ".glb" and data.startswith(b"glTF") and (version := int.from_bytes(data[4:8], "little")) != 2:
         return f"the GLB header's version is {version}; g2s reads GLB version 2 (glTF 2.0): convert the file to glTF 2.0"

@@ -70,3 +70,27 @@ def test_a_batch_with_networkx_settings_that_it_refuses_names_them(name, value, 
     outcome = run_g2s_process("batch", "graph_only", CORRIDOR, "-o", tmp_path / "out", "--executor", "serial")
     assert_clean_error(outcome, f"{name}={value!r}: networkx refused the environment's setting as it loaded ({says}")
     assert tree(tmp_path / "out") == []
+
+
+@pytest.mark.parametrize("kind, cut, says", [
+    ("binary STL", 1, "binary STL ends early: the file has 1 byte, its header alone takes 84"),
+    ("binary STL", 12, "binary STL ends early: the file has 12 bytes, its header alone takes 84"),
+    ("binary STL", 83, "binary STL ends early: the file has 83 bytes, its header alone takes 84"),
+    ("GLB", 1, "the GLB file ends early (its header is 12 bytes, the file has 1)"),
+    ("GLB", 3, "the GLB file ends early (its header is 12 bytes, the file has 3)"),
+])
+def test_a_binary_file_cut_inside_its_header_says_so(kind, cut, says, tmp_path):
+    # found by this pass's fuzzing (cuts at random offsets of each format): a binary STL cut inside its 84-byte header
+    # was read as ASCII STL, "line 1: a line starts with '\x00\x00' (expected one of solid, ...)"; a GLB cut inside its
+    # first 4 bytes "not a GLB file: it starts with b'gl', not b'glTF'"
+    data, suffix, _ = CONTENTS[kind]
+    (level := tmp_path / f"level{suffix}").write_bytes(data[:cut])
+    with pytest.raises(MeshError) as refused:
+        load_mesh(level)
+    assert str(refused.value) == f"{level}: {says}"
+
+
+def test_an_ascii_stl_cut_inside_its_first_word_is_read_as_ascii(tmp_path):
+    (level := tmp_path / "level.stl").write_bytes(b"so")
+    with pytest.raises(MeshError, match="line 1: a line starts with 'so'"):
+        load_mesh(level)
