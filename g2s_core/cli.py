@@ -173,6 +173,8 @@ def _answer_version(argv: Sequence[str] | None) -> None:
 
 
 def add_output_options(command: argparse.ArgumentParser) -> None:
+    """``g2s run``'s options of what a run writes and how its config is changed, for a command that runs a config as
+    it does (``g2s demo``): ``--format``, ``--set``, ``--force``, ``-q``, ``--json``."""
     command.add_argument("--format", metavar="FORMATS", help=f"comma-separated output formats, overriding the config's "
                          f"outputs.formats: any installed writer ({', '.join(writers())}) (default: the config's, else "
                          f"{','.join(DEFAULT_FORMATS)})")
@@ -222,8 +224,8 @@ def main(argv: Sequence[str] | None = None) -> int:
 
 
 def run_command(args: argparse.Namespace, errors: Console, mesh_name: str | None = None) -> int:
-    """``g2s run`` (and the ``demo`` command plugin's, which names its generated level ``mesh_name``): ``args`` as
-    :func:`add_output_options` and ``run``'s ``config``, ``mesh`` and ``-o`` leave them."""
+    """``g2s run`` (and the ``demo`` command plugin's, which names its generated level ``mesh_name``): ``args`` holds
+    ``config``, ``mesh``, ``outdir`` and the options of :func:`add_output_options`; ``errors`` is standard error's."""
     config_files: list[Path] = []
     if Path(args.config).suffix.lower() in SUPPORTED_SUFFIXES:  # read as YAML, it was "expected a mapping ..., got 'v 0 0 0 ...'"
         raise G2SError(f"{args.config}: expected a preset name or a config file, got a mesh file: g2s run takes the config first, then the mesh")
