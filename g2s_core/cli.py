@@ -1,5 +1,5 @@
-"""The ``g2s`` command line: run a config on a mesh, list presets and plugins, run the demo, and the commands
-that plugins add (stage ``commands``, e.g. ``g2s batch``).
+"""The ``g2s`` command line: run a config on a mesh, list presets and plugins, and the commands that plugins add
+(stage ``commands``: ``g2s demo``, ``g2s batch``).
 
 Exit codes: 0 success; 2 bad input or config (one line on stderr, no
 traceback); 1 a plugin that could not be loaded, raised an exception or
@@ -28,7 +28,7 @@ from rich.table import Table
 
 from g2s_core import version
 from g2s_core.config import parse_assignment, presets, resolve_config
-from g2s_core.errors import ConfigError, G2SError, PluginFailure, out_of_memory
+from g2s_core.errors import G2SError, PluginFailure, out_of_memory
 from g2s_core.mesh import SAMPLE_PREFIX, SUPPORTED_SUFFIXES, text_of_name
 from g2s_core.model import RaisedWarning, RunResult
 from g2s_core.outputs import DEFAULT_FORMATS, check_outdir, chosen_formats, writers
@@ -86,7 +86,7 @@ class _Stream:
         return checked if name in ("write", "flush") else getattr(getattr(sys, self.name), name)
 
 
-__all__ = ["EXIT_READER_LEFT", "Output", "main", "named", "output_folder", "stage_table"]
+__all__ = ["EXIT_CODES", "EXIT_READER_LEFT", "Output", "add_output_options", "main", "named", "output_folder", "run_command", "stage_table"]
 
 
 class CommandParser(argparse.ArgumentParser):
@@ -137,20 +137,13 @@ def _parser() -> tuple[argparse.ArgumentParser, dict[str, Callable[[argparse.Nam
     run.add_argument("mesh", type=named(f"a mesh file or {SAMPLE_PREFIX}NAME"), help=f"mesh file (.obj .glb .gltf .ply .stl .off) or {SAMPLE_PREFIX}NAME[?param=value&...] "
                      "for a level from an installed level generator (see `g2s plugins --stage levels`)")
     run.add_argument("-o", "--outdir", type=output_folder, required=True, help="folder for the results")
-    _add_output_options(run)
+    add_output_options(run)
 
     commands.add_parser("presets", parents=[common], help="list the preset configs and what each is for",
                         description="List the preset configs and what each is for.", epilog=EXIT_CODES)
     plugins = commands.add_parser("plugins", parents=[common], help="list installed plugins and their parameters, and "
                                   "broken ones", description="List installed plugins and their parameters, and broken ones.", epilog=EXIT_CODES)
     plugins.add_argument("--stage", choices=[stage.key for stage in STAGES], help="only this stage")
-
-    demo = commands.add_parser("demo", parents=[common], help="run the full pipeline on the built-in dungeon sample",
-                               description="Run the full pipeline on the built-in dungeon sample.", epilog=EXIT_CODES)
-    demo.add_argument("-o", "--outdir", type=output_folder, default=Path("g2s-demo"), help="folder for the results (default: g2s-demo)")
-    demo.add_argument("--rooms", type=int, default=12, help="rooms in the generated dungeon (default: 12)")
-    demo.add_argument("--seed", type=int, default=0, help="seed of the generated dungeon (default: 0)")
-    _add_output_options(demo)
 
     registry, plugged = installed(), {}
     for info in registry.plugins("commands"):
@@ -179,7 +172,9 @@ def _answer_version(argv: Sequence[str] | None) -> None:
         early.parse_known_args(argv)
 
 
-def _add_output_options(command: argparse.ArgumentParser) -> None:
+def add_output_options(command: argparse.ArgumentParser) -> None:
+    """``g2s run``'s options of what a run writes and how its config is changed, for a command that runs a config as
+    it does (``g2s demo``): ``--format``, ``--set``, ``--force``, ``-q``, ``--json``."""
     command.add_argument("--format", metavar="FORMATS", help=f"comma-separated output formats, overriding the config's "
                          f"outputs.formats: any installed writer ({', '.join(writers())}) (default: the config's, else "
                          f"{','.join(DEFAULT_FORMATS)})")
@@ -201,7 +196,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     errors = Output(stderr=True)  # no emoji: `level:fire:.obj: no such mesh file` named the file with a flame
     if not args.verbose:  # a library's logged warning (matplotlib's, under a HOME it cannot write) added lines to stderr
         logging.getLogger().addHandler(_NO_LOG)
-    own = {"run": lambda a: _run(a, errors), "plugins": _plugins, "presets": lambda _: _presets(), "demo": lambda a: _demo(a, errors)}
+    own = {"run": lambda a: run_command(a, errors), "plugins": _plugins, "presets": lambda _: _presets()}
     with warnings.catch_warnings(), interrupts_held(hold=False):  # numpy's warnings (a 1e300 coordinate overflowing) would add lines to the one line of stderr
         warnings.simplefilter("default" if args.verbose else "ignore", RuntimeWarning)
         try:
@@ -228,8 +223,9 @@ def main(argv: Sequence[str] | None = None) -> int:
             return 1
 
 
-def _run(args: argparse.Namespace, errors: Console, mesh_name: str | None = None) -> int:
-    """``g2s run`` (and ``g2s demo``, which names its generated level ``mesh_name``)."""
+def run_command(args: argparse.Namespace, errors: Console, mesh_name: str | None = None) -> int:
+    """``g2s run`` (and the ``demo`` command plugin's, which names its generated level ``mesh_name``): ``args`` holds
+    ``config``, ``mesh``, ``outdir`` and the options of :func:`add_output_options`; ``errors`` is standard error's."""
     config_files: list[Path] = []
     if Path(args.config).suffix.lower() in SUPPORTED_SUFFIXES:  # read as YAML, it was "expected a mapping ..., got 'v 0 0 0 ...'"
         raise G2SError(f"{args.config}: expected a preset name or a config file, got a mesh file: g2s run takes the config first, then the mesh")
@@ -274,34 +270,6 @@ def _run(args: argparse.Namespace, errors: Console, mesh_name: str | None = None
         for path in written:
             console.print(f"wrote {path}", markup=False, highlight=False, soft_wrap=True)
     return 0
-
-
-def _demo(args: argparse.Namespace, errors: Console) -> int:
-    try:  # the dungeon generator's own bounds, named as the options the user gave ("rooms: ..." -> "--rooms: ...")
-        installed().validate_params(installed().get("levels", "dungeon"), {"rooms": args.rooms, "seed": args.seed}, key="")
-    except ConfigError as exc:
-        raise ConfigError(f"--{exc}") from None
-    args.config, args.mesh = "demo", f"{SAMPLE_PREFIX}dungeon?seed={args.seed}&rooms={args.rooms}"
-    code = _run(args, errors, mesh_name=f"dungeon (seed {args.seed}, {args.rooms} rooms)")
-    if code == 0 and not (args.quiet or args.json):
-        Output().print(_demo_hint(args.outdir), markup=False, highlight=False, soft_wrap=True)
-    return code
-
-
-_DEMO_HINTS = (
-    ("report.html", "open {path} in a web browser (works offline) for the interactive 3D report"),
-    ("heatmap.png", "{path}: top-down heat map of the analysis"),
-    ("structure.glb", "{path}: level, navmesh and structure for any glTF viewer or Blender"),
-    ("structure.json", "{path}: the structure as data (see docs/outputs.md)"),
-    ("structure.graphml", "{path}, {graphml}: for networkx, Gephi, yEd"),
-)
-"""What to do with each file the demo may write, in the order the hint lists them."""
-
-
-def _demo_hint(outdir: Path) -> str:
-    hints = ("  " + hint.format(path=outdir / name, graphml=outdir / "graph.graphml") for name, hint in _DEMO_HINTS
-             if (outdir / name).exists())
-    return "\n".join([f"the demo's results are in {outdir}/", *hints])
 
 
 def _warn(errors: Console, message: str) -> None:

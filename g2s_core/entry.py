@@ -86,6 +86,6 @@ def entry_points_readable() -> Iterator[None]:
     except Exception as exc:
         settings = ", ".join(f"{name}={value!r}" for name, value in sorted(os.environ.items()) if name.startswith("NETWORKX_"))
         if not (broken := broken_entry_points() or isinstance(exc, ValueError) and settings and f"{settings}: networkx "
-                f"refused the environment's setting as it loaded ({exc}); unset it or name an installed networkx backend"):
+                f"refused the environment's setting as it loaded ({exc}); unset it or give it a value networkx accepts"):
             raise
         raise G2SError(broken) from None

@@ -18,13 +18,13 @@ from g2s_core.config import MeshConfig
 from g2s_core.errors import ConfigError, MeshError
 from g2s_core.input_files import check_regular_file
 from g2s_core.lazy import lazy_module
-from g2s_core.mesh_damage import OBJ_COMMENT, declared_faces, describe_damage, nested_transforms, off_polygons, rows_beyond_header
+from g2s_core.mesh_damage import FORMATS, OBJ_COMMENT, declared_faces, describe_damage, nested_transforms, off_polygons, rows_beyond_header
 from g2s_core.registry import Registry, installed
 
 # loaded with the first mesh read: the CLI and the batch command import this module for its names
 np, trimesh = lazy_module("numpy"), lazy_module("trimesh")
 
-SUPPORTED_SUFFIXES = (".obj", ".glb", ".gltf", ".ply", ".stl", ".off")
+SUPPORTED_SUFFIXES = tuple(FORMATS)
 
 SAMPLE_PREFIX = "sample:"
 """A mesh argument ``sample:NAME?param=value&...`` asks the level generator NAME for a level."""

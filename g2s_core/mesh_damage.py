@@ -78,6 +78,13 @@ PLY_TYPES = (b"char", b"uchar", b"short", b"ushort", b"int", b"uint", b"float", 
              b"uint16", b"int32", b"uint32", b"int64", b"uint64", b"float16", b"float32", b"float64")
 """The PLY property types trimesh reads."""
 
+FORMATS = {".obj": "OBJ", ".glb": "GLB (binary glTF)", ".gltf": "glTF JSON", ".ply": "PLY", ".stl": "STL", ".off": "OFF"}
+"""Each mesh file suffix g2s reads and the name of its format in messages."""
+
+SIGNATURES = ((b"glTF", ".glb"), (b"ply", ".ply"), (b"OFF", ".off"), (b"solid", ".stl"), (b"{", ".gltf"))
+"""The first bytes of a mesh format's files (an ASCII STL's ``solid``, a glTF's JSON object) and its suffix; a
+binary STL, which has none, is told by its size (:func:`_content_format`)."""
+
 Rows = list[tuple[int, list[bytes]]]
 """A text file's lines as (line number from 1, whitespace-separated values)."""
 
@@ -86,7 +93,8 @@ def describe_damage(path: Path, data: bytes) -> str | None:
     """Why the bytes ``data`` of the mesh file ``path`` hold no mesh, or not the one they should, in words;
     ``None`` when none of the checks below finds it.
 
-    Text formats are checked line by line (OBJ, OFF, ASCII PLY: values that
+    A file whose content is another format's, by its first bytes or a binary STL's size, is named so
+    (:func:`_content_format`). Text formats are checked line by line (OBJ, OFF, ASCII PLY: values that
     are not numbers, vertices of fewer than 3 coordinates, faces of fewer than
     3 corners or naming a vertex the file lacks, fewer rows than the header
     declares); binary formats by their size against their header; glTF and
@@ -95,6 +103,10 @@ def describe_damage(path: Path, data: bytes) -> str | None:
     suffix, size = path.suffix.lower(), len(data)
     if size == 0:
         return "the file is empty (0 bytes)"
+    if (content := _content_format(data)) and content[0] != suffix:  # read as the suffix says, it was "the mesh is empty"
+        return f"the file's content is not {FORMATS[suffix]} but {content[1]}; rename it {path.with_suffix(content[0]).name}"
+    if suffix == ".stl" and size < STL_HEADER and not b"solid".startswith(data[:5]):  # read as ASCII STL: "line 1: ..."
+        return f"binary STL ends early: the file has {_many(size, 'byte')}, its header alone takes {STL_HEADER}"
     # ASCII STL starts with "solid", never holds a NUL
     if binary_stl := suffix == ".stl" and size >= STL_HEADER and (not data.startswith(b"solid") or b"\0" in data[:STL_HEADER]):
         count = int.from_bytes(data[80:STL_HEADER], "little")
@@ -103,21 +115,30 @@ def describe_damage(path: Path, data: bytes) -> str | None:
         if size > expected:
             return f"binary STL has {size - expected} bytes more than the {count} triangles its header announces"
     announced = int.from_bytes(data[8:GLB_HEADER], "little") if size >= GLB_HEADER else None  # None: cut inside the header
-    if suffix == ".glb" and data.startswith(b"glTF") and (announced is None or size < announced):
+    if suffix == ".glb" and b"glTF".startswith(data[:4]) and (announced is None or size < announced):  # cut in b"glTF" too
         return f"the GLB file ends early (its header {f'is {GLB_HEADER}' if announced is None else f'announces {announced}'} bytes, the file has {size})"
     if suffix == ".glb" and data.startswith(b"glTF") and (version := int.from_bytes(data[4:8], "little")) != 2:
         return f"the GLB header's version is {version}; g2s reads GLB version 2 (glTF 2.0): convert the file to glTF 2.0"
     if suffix == ".glb" and data.startswith(b"glTF"):
         return _glb_damage(data, path.parent)
     if suffix == ".glb":  # else trimesh's "incorrect header on GLB file", named as a ValueError
-        hint = " (glTF's JSON text: name the file .gltf)" if data.lstrip().startswith(b"{") else ""
-        return f"not a GLB file: it starts with {data[:4]!r}, not b'glTF'{hint}"
+        return f"not a GLB file: it starts with {data[:4]!r}, not b'glTF'"
     if suffix == ".gltf":
         document = _json(data)
         return f"not valid glTF JSON ({document})" if isinstance(document, str) else _gltf_damage(document, path.parent, None)
     readers: dict[str, Callable[[bytes], str | None]] = {".obj": _obj_damage, ".off": _off_damage, ".ply": _ply_damage,
                                                          ".stl": _stl_ascii_damage}
     return readers[suffix](data) if suffix in readers and not binary_stl else None
+
+
+def _content_format(data: bytes) -> tuple[str, str] | None:
+    """The suffix of the mesh format whose files start as the bytes ``data`` do (:data:`SIGNATURES`), or whose size
+    is that of a binary STL by the triangle count in its header, and that format in words; ``None`` for none."""
+    if len(data) >= STL_HEADER and len(data) == STL_HEADER + STL_TRIANGLE * (count := int.from_bytes(data[80:STL_HEADER], "little")):
+        return ".stl", f"a binary STL, by its size: an 80-byte header, then the {count} triangles it announces"
+    head = data[:1024].lstrip()  # a text format's first line may follow blank ones
+    found = next((suffix for start, suffix in SIGNATURES if head.startswith(start)), None)
+    return found and (found, f"{'ASCII STL' if found == '.stl' else FORMATS[found]}, by its first bytes {head[:5]!r}")
 
 
 def nested_transforms(suffix: str, data: bytes) -> str | None:

@@ -31,8 +31,3 @@ def tie_values(values: Iterable[float]) -> np.ndarray:
     values the rooting of a 100k-polygon level ranks).
     """
     return np.fromiter(map(float, map(_ROUNDED, np.asarray(values, dtype=np.float64).reshape(-1).tolist())), dtype=np.float64)
-
-
-def rank_key(node: int, value: float) -> tuple[float, int]:
-    """Sort key that ranks higher ``value`` first and breaks (rounded) ties by lower node id."""
-    return (-tie_value(value), node)

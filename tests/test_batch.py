@@ -409,7 +409,7 @@ def test_ctrl_c_that_a_library_swallows_still_stops_the_batch(tmp_path, swallowe
     loaded them was lost and the batch ran to its end (exit 0; 2,400 rooms: 11 s after a Ctrl-C at 2 s)."""
     from g2s_plugins.batch import runner
 
-    swallowed_ctrl_c(runner, "pipeline")
+    swallowed_ctrl_c(runner, "api")  # the pipeline is taken through the API (robust44)
     out = tmp_path / "out"
     code, _, err = g2s(capsys, "batch", "graph_only", "sample:t_hub", "-o", str(out), "--executor", "serial", "-q")
     assert (code, err.strip()) == (130, "g2s: interrupted")

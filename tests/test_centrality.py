@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from g2s_core.errors import G2SError
-from g2s_core.ties import rank_key
+from g2s_plugins.terminals.metric import rank_key
 from g2s_plugins import centrality, traffic
 
 

@@ -106,7 +106,9 @@ def test_an_interrupt_after_the_command_leaves_its_exit_code(tmp_path):
 @pytest.mark.parametrize("data, says", [
     (b"hello world\n", "not a GLB file: it starts with b'hell', not b'glTF'"),
     (bytes(range(200, 256)) * 20, "not a GLB file: it starts with b'\\xc8\\xc9\\xca\\xcb', not b'glTF'"),
-    (b'{"asset": {"version": "2.0"}}', "not a GLB file: it starts with b'{\"as', not b'glTF' (glTF's JSON text: name the file .gltf)"),
+    # robust44: the glTF JSON is named by the check of every file whose content is another format's
+    (b'{"asset": {"version": "2.0"}}', "the file's content is not GLB (binary glTF) but glTF JSON, by its first bytes "
+                                       "b'{\"ass'; rename it level.gltf"),
 ])
 def test_a_glb_file_that_is_none_says_so(data, says, tmp_path, capsys):
     # was "cannot read mesh (ValueError: incorrect header on GLB file)", a Python exception's words

@@ -58,9 +58,11 @@ from g2s_core.stages import PIPELINE
 if TYPE_CHECKING:
     import pandas as pd
 
-    from g2s_core import api, pipeline
-else:  # a pair's run needs them (and trimesh, networkx, scipy through them); `g2s --help` lists the command without
-    api, pipeline = lazy_module("g2s_core.api"), lazy_module("g2s_core.pipeline")
+    from g2s_core import api
+else:  # a pair's run needs it (and trimesh, networkx, scipy through it); `g2s --help` lists the command without. The
+    # pipeline is taken through it (api.pipeline): the API's import names the networkx settings of the environment that
+    # networkx refuses as it loads (NETWORKX_BACKEND_PRIORITY=nosuch, exit 2), which the pipeline's own import did not
+    api = lazy_module("g2s_core.api")
 
 RECORDS = ".g2s-batch"
 """The folder of ``OUTDIR`` holding one row file per finished pair."""
@@ -133,7 +135,7 @@ def run_pair(pair: Pair) -> dict[str, Any]:
     try:
         registry = installed()
         config = parse_config(pair.raw_config, source=pair.source)
-        plan = pipeline.plan(config, registry, source=pair.source)
+        plan = api.pipeline.plan(config, registry, source=pair.source)
         mesh = api.open_mesh(pair.spec, config, registry=registry)
         row.update(mesh_sha256=mesh.sha256, seconds_load=time.perf_counter() - start)
         earlier = _finished_row(pair, mesh.sha256)
@@ -374,7 +376,7 @@ def make_pairs(
         seen[name] = source, real
         raw = with_evaluators(load_raw_config(found), evaluators)
         config = parse_config(raw, source=source)
-        pipeline.plan(config, registry, source=source)
+        api.pipeline.plan(config, registry, source=source)
         chosen = tuple(chosen_formats(formats, config, source))
         digest = hashlib.sha256(json.dumps([config.model_dump(mode="json"), chosen], sort_keys=True).encode()).hexdigest()
         for level, spec in levels:

@@ -37,7 +37,7 @@ from pydantic_core import PydanticCustomError
 
 from g2s_core.model import RunContext, Terminals
 from g2s_core.plugin import PluginParams, hookimpl
-from g2s_core.ties import rank_key
+from g2s_core.ties import tie_value
 from g2s_plugins import centrality
 
 NAME = "metric"
@@ -79,6 +79,11 @@ class Params(PluginParams):
             )
         return self
 
+
+
+def rank_key(node: int, value: float) -> tuple[float, int]:
+    """Sort key that ranks higher ``value`` first and breaks ties (:func:`~g2s_core.ties.tie_value`) by lower node id."""
+    return (-tie_value(value), node)
 
 def _passes_degree(degree: int, params: Params) -> bool:
     if params.min_degree is not None and degree < params.min_degree:
