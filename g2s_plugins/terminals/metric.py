@@ -80,10 +80,10 @@ class Params(PluginParams):
         return self
 
 
-
 def rank_key(node: int, value: float) -> tuple[float, int]:
     """Sort key that ranks higher ``value`` first and breaks ties (:func:`~g2s_core.ties.tie_value`) by lower node id."""
     return (-tie_value(value), node)
+
 
 def _passes_degree(degree: int, params: Params) -> bool:
     if params.min_degree is not None and degree < params.min_degree:
