@@ -537,7 +537,9 @@ def test_html_report_marks_the_terminals_not_the_waypoints(waypoint_result):
     heads = {text.split("<br>")[0] for trace in markers for text in trace.text or ()}
     waypoint_heads = {head for head in heads if head.split(" (")[0] in {f"node {w}" for w in WAYPOINTS}}
     assert waypoint_heads and not any("terminal" in head for head in waypoint_heads)  # hovered, not a terminal
-    assert "<dt>terminals</dt><dd>5</dd>" in html_report.render(waypoint_result)
+    # the count is of terminals; the waypoints step 2's #N also counts are named beside it
+    assert (f"<dt>terminals</dt><dd>5 (and {len(set(WAYPOINTS))} waypoints the structure also joins)</dd>"
+            in html_report.render(waypoint_result))
 
 
 # --- folders and formats ------------------------------------------------------------------

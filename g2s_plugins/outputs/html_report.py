@@ -181,7 +181,10 @@ def _summary(result: RunResult) -> list[tuple[str, str]]:
         if roots:
             summary.append(("trees", f"{len(roots)} (roots {', '.join(map(str, roots[:12]))}{' ...' if len(roots) > 12 else ''})"))
     if result.terminals is not None:
-        summary.append(("terminals", str(len(terminal_ids(result)))))
+        # a cover's waypoints are joined as terminals are (step 2's #N counts both), so the count says so
+        waypoints = len(set(result.terminals.waypoints))
+        summary.append(("terminals", str(len(terminal_ids(result)))
+                        + (f" (and {waypoints} waypoints the structure also joins)" if waypoints else "")))
     if result.analysis:
         summary.append(("analysis values", ", ".join(result.analysis)))
     return summary + metric_lines(result)
@@ -236,7 +239,8 @@ def _stage_table(result: RunResult) -> str:
             f'<td class="n">{html.escape(v)}</td>' for v in (ms, nodes, edges))
         rows.append(f"<tr{css}>{cells}</tr>")
     return (f'<table id="stages"><thead><tr>{head}</tr></thead><tbody>{"".join(rows)}</tbody></table>\n'
-            '<p class="hint">#N is the number of terminals for step 2, of nodes otherwise (as in the paper\'s tables).</p>')
+            '<p class="hint">#N is, for step 2, the number of nodes the Steiner tree joins (the terminals and any '
+            'waypoints), of nodes otherwise (as in the paper\'s tables).</p>')
 
 
 # --- the 3D figure -----------------------------------------------------------------
