@@ -703,3 +703,23 @@ def test_demo_writes_all_five_formats_and_they_agree(tmp_path, capsys):
     graph = nx.read_graphml(out_dir / "structure.graphml", node_type=int)
     assert sorted(graph.edges) == sorted(loaded.structure.edges)
     assert {n: d["value_flow"] for n, d in graph.nodes(data=True)} == loaded.analysis["flow"]
+
+
+def test_heatmap_colour_bar_ticks_whole_numbers_for_whole_number_values():
+    """A depth scale 0-3 shows ticks 0, 1, 2, 3, not 0.5 ... 2.5 (map_piece on the shared Hallway did, 6 December 2026)."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.colors import Normalize
+    from matplotlib.figure import Figure
+
+    def ticks(values: list[float]) -> list[float]:
+        figure = Figure()
+        FigureCanvasAgg(figure)
+        ax = figure.subplots()
+        points = ax.scatter(values, values, c=values, norm=Normalize(min(values), max(values)))
+        bar = heatmap.colour_bar(figure, points, [ax], "depth", values)
+        figure.canvas.draw()
+        low, high = min(values), max(values)
+        return [t for t in bar.get_ticks() if low <= t <= high]
+
+    assert ticks([0.0, 1.0, 2.0, 3.0]) == [0.0, 1.0, 2.0, 3.0]
+    assert any(not t.is_integer() for t in ticks([0.0, 0.25, 1.5, 3.0]))  # a real-valued scale keeps its ticks
