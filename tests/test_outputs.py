@@ -723,3 +723,17 @@ def test_heatmap_colour_bar_ticks_whole_numbers_for_whole_number_values():
 
     assert ticks([0.0, 1.0, 2.0, 3.0]) == [0.0, 1.0, 2.0, 3.0]
     assert any(not t.is_integer() for t in ticks([0.0, 0.25, 1.5, 3.0]))  # a real-valued scale keeps its ticks
+
+
+def test_colour_bars_say_the_flow_heat_map_is_percentile_ranks():
+    """The map-analysis presets' flow is a percentile rank (0-100), not a count; other values keep their name."""
+    from types import SimpleNamespace
+
+    from g2s_core.config import resolve_config
+
+    config = resolve_config("map_analysis")[0].model_dump(mode="json")
+    ranked = SimpleNamespace(config=config)
+    assert common.value_title(ranked, "flow") == "flow, percentile rank 0-100"
+    assert common.value_title(ranked, "betweenness") == "betweenness"
+    config["analyzers"][0]["params"]["aggregate"] = "mean"
+    assert common.value_title(ranked, "flow") == "flow"  # a mean of shares has no such unit

@@ -64,6 +64,7 @@ from g2s_plugins.outputs.common import (
     roots_of,
     terminal_ids,
     triangle_regions,
+    value_title,
 )
 from g2s_plugins.outputs.files import atomic_write
 
@@ -144,7 +145,8 @@ def render(result: RunResult) -> bytes:
             ax.grid(True, color="#e6e6e6", linewidth=0.6)
             ax.set_axisbelow(True)
     if mappable is not None:
-        colour_bar(figure, mappable, axes.ravel().tolist(), f"{key} ({colours.VALUE_SCALE_LABEL})", finite)
+        label = f"{value_title(result, key)} ({colours.VALUE_SCALE_LABEL})"
+        colour_bar(figure, mappable, axes.ravel().tolist(), label, finite)
     handles = _legend_handles(result, graph, groups)
     if handles:
         figure.legend(handles=handles, loc="outside lower center", ncols=len(handles), fontsize="small", frameon=False)

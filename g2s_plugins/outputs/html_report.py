@@ -86,6 +86,7 @@ from g2s_plugins.outputs.common import (
     stage_rows,
     terminal_ids,
     triangle_regions,
+    value_title,
 )
 from g2s_plugins.outputs.files import atomic_write
 
@@ -166,7 +167,7 @@ li.none {{ color: #666; list-style: none; }}
 
 def _legend_hint(result: RunResult) -> str:
     keys = list(result.analysis)
-    values = (f"Analysis: {keys[0]} on viridis ({colours.VALUE_SCALE_LABEL}). " if keys else "")
+    values = (f"Analysis: {value_title(result, keys[0])} on viridis ({colours.VALUE_SCALE_LABEL}). " if keys else "")
     return ("Click a legend entry to show or hide that layer, double-click to show it alone; drag to rotate, "
             f"scroll to zoom. {values}Tree edges by depth: red = 1, yellow = 2, then green, cyan, blue, magenta. "
             "Roots: black diamonds; terminals and openings: vermilion. Y is up; lengths in metres.")
@@ -493,7 +494,7 @@ def _analysis_layer(graph: nx.Graph, key: str, result: RunResult, visible: bool)
     nodes = sorted(n for n in graph.nodes if n in values)
     marker_values = np.asarray([values[n] if np.isfinite(values[n]) else low for n in nodes], dtype=np.float32)
     node_trace = _node_trace(graph, nodes, name, result, 5, marker_values, visible)
-    node_trace.marker.update(showscale=True, colorbar=dict(title=dict(text=key), x=1.0, len=0.6), **scale)
+    node_trace.marker.update(showscale=True, colorbar=dict(title=dict(text=value_title(result, key)), x=1.0, len=0.6), **scale)
     return [lines, node_trace]
 
 
