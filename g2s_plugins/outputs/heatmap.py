@@ -65,6 +65,7 @@ from g2s_plugins.outputs.common import (
     terminal_ids,
     triangle_regions,
     value_title,
+    whole_numbers,
 )
 from g2s_plugins.outputs.files import atomic_write
 
@@ -156,10 +157,9 @@ def render(result: RunResult) -> bytes:
 
 
 def colour_bar(figure: Figure, mappable: ScalarMappable, axes: list, label: str, finite: list[float]) -> Colorbar:
-    """The value scale beside the panels; whole-number values (depth, degree) get whole-number ticks only,
-    as a tick at 0.5 on a depth scale would name a value no node can have."""
+    """The value scale beside the panels; whole-number values (depth, degree) get whole-number ticks only."""
     bar = figure.colorbar(mappable, ax=axes, shrink=0.8)
-    if finite and all(float(v).is_integer() for v in finite):
+    if whole_numbers(finite):
         bar.ax.yaxis.set_major_locator(MaxNLocator(integer=True))
     bar.set_label(label)
     return bar

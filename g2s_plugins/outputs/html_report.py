@@ -87,6 +87,7 @@ from g2s_plugins.outputs.common import (
     terminal_ids,
     triangle_regions,
     value_title,
+    whole_numbers,
 )
 from g2s_plugins.outputs.files import atomic_write
 
@@ -494,7 +495,10 @@ def _analysis_layer(graph: nx.Graph, key: str, result: RunResult, visible: bool)
     nodes = sorted(n for n in graph.nodes if n in values)
     marker_values = np.asarray([values[n] if np.isfinite(values[n]) else low for n in nodes], dtype=np.float32)
     node_trace = _node_trace(graph, nodes, name, result, 5, marker_values, visible)
-    node_trace.marker.update(showscale=True, colorbar=dict(title=dict(text=value_title(result, key)), x=1.0, len=0.6), **scale)
+    colour_bar = dict(title=dict(text=value_title(result, key)), x=1.0, len=0.6)
+    if whole_numbers([v for v in values.values() if np.isfinite(v)]):
+        colour_bar.update(tickmode="linear", tick0=0, dtick=max(1, math.ceil((high - low) / 10)))
+    node_trace.marker.update(showscale=True, colorbar=colour_bar, **scale)
     return [lines, node_trace]
 
 
