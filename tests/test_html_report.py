@@ -219,3 +219,20 @@ def test_a_level_far_from_the_origin_is_drawn_in_its_local_frame_and_read_in_wor
     assert [reference[f"{a}axis"]["title"]["text"] for a in "xyz"] == ["X (m)", "Y (m, up)", "Z (m)"]
     for axis in ("xaxis", "yaxis", "zaxis"):
         assert scene[axis]["range"] == pytest.approx(reference[axis]["range"], abs=1e-6)
+
+
+def test_stage_hint_says_step_2_counts_terminals_and_waypoints():
+    """Step 2's #N counts terminals and waypoints (a cover's 32 and 107 on nav_test: 139), not terminals alone."""
+    text = html_report.render(make_result())
+    assert "#N is, for step 2, the number of nodes the Steiner tree joins (the terminals and any waypoints)" in text
+    assert "<dt>terminals</dt><dd>5</dd>" in text  # no waypoints, nothing added
+
+
+def test_colour_bar_of_whole_numbers_ticks_whole_numbers():
+    """The report's degree bar (whole numbers) ticks 0, 1, 2 ...; betweenness (real) keeps plotly's own ticks."""
+    figure = html_report.build_figure(make_result())
+    bars = {trace.name: trace.marker.colorbar for trace in figure.data
+            if getattr(trace, "mode", "") == "markers" and trace.name.startswith("Analysis: ")}
+    degree = bars[html_report.LAYER_ANALYSIS.format(key="degree")]
+    assert (degree.tickmode, degree.tick0, degree.dtick) == ("linear", 0, 1)
+    assert bars[html_report.LAYER_ANALYSIS.format(key="betweenness")].dtick is None

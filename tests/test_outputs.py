@@ -537,7 +537,9 @@ def test_html_report_marks_the_terminals_not_the_waypoints(waypoint_result):
     heads = {text.split("<br>")[0] for trace in markers for text in trace.text or ()}
     waypoint_heads = {head for head in heads if head.split(" (")[0] in {f"node {w}" for w in WAYPOINTS}}
     assert waypoint_heads and not any("terminal" in head for head in waypoint_heads)  # hovered, not a terminal
-    assert "<dt>terminals</dt><dd>5</dd>" in html_report.render(waypoint_result)
+    # the count is of terminals; the waypoints step 2's #N also counts are named beside it
+    assert (f"<dt>terminals</dt><dd>5 (and {len(set(WAYPOINTS))} waypoints the structure also joins)</dd>"
+            in html_report.render(waypoint_result))
 
 
 # --- folders and formats ------------------------------------------------------------------
@@ -701,3 +703,37 @@ def test_demo_writes_all_five_formats_and_they_agree(tmp_path, capsys):
     graph = nx.read_graphml(out_dir / "structure.graphml", node_type=int)
     assert sorted(graph.edges) == sorted(loaded.structure.edges)
     assert {n: d["value_flow"] for n, d in graph.nodes(data=True)} == loaded.analysis["flow"]
+
+
+def test_heatmap_colour_bar_ticks_whole_numbers_for_whole_number_values():
+    """A depth scale 0-3 shows ticks 0, 1, 2, 3, not 0.5 ... 2.5 (map_piece on the shared Hallway did, 6 December 2026)."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.colors import Normalize
+    from matplotlib.figure import Figure
+
+    def ticks(values: list[float]) -> list[float]:
+        figure = Figure()
+        FigureCanvasAgg(figure)
+        ax = figure.subplots()
+        points = ax.scatter(values, values, c=values, norm=Normalize(min(values), max(values)))
+        bar = heatmap.colour_bar(figure, points, [ax], "depth", values)
+        figure.canvas.draw()
+        low, high = min(values), max(values)
+        return [t for t in bar.get_ticks() if low <= t <= high]
+
+    assert ticks([0.0, 1.0, 2.0, 3.0]) == [0.0, 1.0, 2.0, 3.0]
+    assert any(not t.is_integer() for t in ticks([0.0, 0.25, 1.5, 3.0]))  # a real-valued scale keeps its ticks
+
+
+def test_colour_bars_say_the_flow_heat_map_is_percentile_ranks():
+    """The map-analysis presets' flow is a percentile rank (0-100), not a count; other values keep their name."""
+    from types import SimpleNamespace
+
+    from g2s_core.config import resolve_config
+
+    config = resolve_config("map_analysis")[0].model_dump(mode="json")
+    ranked = SimpleNamespace(config=config)
+    assert common.value_title(ranked, "flow") == "flow, percentile rank 0-100"
+    assert common.value_title(ranked, "betweenness") == "betweenness"
+    config["analyzers"][0]["params"]["aggregate"] = "mean"
+    assert common.value_title(ranked, "flow") == "flow"  # a mean of shares has no such unit

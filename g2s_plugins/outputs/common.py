@@ -241,6 +241,23 @@ def floors(heights: Sequence[float], gap: float, ground: np.ndarray | None = Non
     return [np.sort(part) for part in np.split(order, breaks)]
 
 
+def whole_numbers(values: Sequence[float]) -> bool:
+    """Whether every one of ``values`` (finite) is a whole number, as depth and degree are: a colour bar of them
+    ticks whole numbers only, a tick at 0.5 naming a value no node can have."""
+    return bool(values) and all(float(v).is_integer() for v in values)
+
+
+def value_title(result: RunResult, key: str) -> str:
+    """The analysis value ``key`` as a colour bar names it: the ``flow`` analyzer's ``aggregate: percentile``
+    (the map-analysis presets' heat map) gives ranks 0-100, which read as counts of walkers without the unit."""
+    for entry in result.config.get("analyzers") or ():
+        if not isinstance(entry, dict) or (entry.get("key") or entry.get("plugin")) != key:
+            continue
+        if entry.get("plugin") == "flow" and (entry.get("params") or {}).get("aggregate") == "percentile":
+            return f"{key}, percentile rank 0-100"
+    return key
+
+
 def feature_records(result: RunResult, kind: str) -> list[dict[str, Any]]:
     """The records named ``kind`` (``"chokepoints"``, ``"regions"``) that the first analyzer
     returning them gave (``[]`` when none did)."""

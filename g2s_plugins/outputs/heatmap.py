@@ -43,11 +43,14 @@ import networkx as nx
 import numpy as np
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.collections import LineCollection, PolyCollection
+from matplotlib.cm import ScalarMappable
+from matplotlib.colorbar import Colorbar
 from matplotlib.colors import Normalize
 from matplotlib.figure import Figure
 from matplotlib.artist import Artist
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
+from matplotlib.ticker import MaxNLocator
 
 from g2s_core.model import RunResult
 from g2s_plugins.outputs import colours
@@ -61,6 +64,8 @@ from g2s_plugins.outputs.common import (
     roots_of,
     terminal_ids,
     triangle_regions,
+    value_title,
+    whole_numbers,
 )
 from g2s_plugins.outputs.files import atomic_write
 
@@ -141,14 +146,23 @@ def render(result: RunResult) -> bytes:
             ax.grid(True, color="#e6e6e6", linewidth=0.6)
             ax.set_axisbelow(True)
     if mappable is not None:
-        bar = figure.colorbar(mappable, ax=axes.ravel().tolist(), shrink=0.8)
-        bar.set_label(f"{key} ({colours.VALUE_SCALE_LABEL})")
+        label = f"{value_title(result, key)} ({colours.VALUE_SCALE_LABEL})"
+        colour_bar(figure, mappable, axes.ravel().tolist(), label, finite)
     handles = _legend_handles(result, graph, groups)
     if handles:
         figure.legend(handles=handles, loc="outside lower center", ncols=len(handles), fontsize="small", frameon=False)
     buffer = io.BytesIO()
     figure.savefig(buffer, format="png", dpi=DPI, metadata={"Software": None})
     return buffer.getvalue()
+
+
+def colour_bar(figure: Figure, mappable: ScalarMappable, axes: list, label: str, finite: list[float]) -> Colorbar:
+    """The value scale beside the panels; whole-number values (depth, degree) get whole-number ticks only."""
+    bar = figure.colorbar(mappable, ax=axes, shrink=0.8)
+    if whole_numbers(finite):
+        bar.ax.yaxis.set_major_locator(MaxNLocator(integer=True))
+    bar.set_label(label)
+    return bar
 
 
 def _ground(result: RunResult, graph: nx.Graph, groups: list[list[int]], triangles: np.ndarray) -> list[np.ndarray]:

@@ -86,6 +86,8 @@ from g2s_plugins.outputs.common import (
     stage_rows,
     terminal_ids,
     triangle_regions,
+    value_title,
+    whole_numbers,
 )
 from g2s_plugins.outputs.files import atomic_write
 
@@ -166,7 +168,7 @@ li.none {{ color: #666; list-style: none; }}
 
 def _legend_hint(result: RunResult) -> str:
     keys = list(result.analysis)
-    values = (f"Analysis: {keys[0]} on viridis ({colours.VALUE_SCALE_LABEL}). " if keys else "")
+    values = (f"Analysis: {value_title(result, keys[0])} on viridis ({colours.VALUE_SCALE_LABEL}). " if keys else "")
     return ("Click a legend entry to show or hide that layer, double-click to show it alone; drag to rotate, "
             f"scroll to zoom. {values}Tree edges by depth: red = 1, yellow = 2, then green, cyan, blue, magenta. "
             "Roots: black diamonds; terminals and openings: vermilion. Y is up; lengths in metres.")
@@ -181,7 +183,10 @@ def _summary(result: RunResult) -> list[tuple[str, str]]:
         if roots:
             summary.append(("trees", f"{len(roots)} (roots {', '.join(map(str, roots[:12]))}{' ...' if len(roots) > 12 else ''})"))
     if result.terminals is not None:
-        summary.append(("terminals", str(len(terminal_ids(result)))))
+        # a cover's waypoints are joined as terminals are (step 2's #N counts both), so the count says so
+        waypoints = len(set(result.terminals.waypoints))
+        summary.append(("terminals", str(len(terminal_ids(result)))
+                        + (f" (and {waypoints} waypoints the structure also joins)" if waypoints else "")))
     if result.analysis:
         summary.append(("analysis values", ", ".join(result.analysis)))
     return summary + metric_lines(result)
@@ -236,7 +241,8 @@ def _stage_table(result: RunResult) -> str:
             f'<td class="n">{html.escape(v)}</td>' for v in (ms, nodes, edges))
         rows.append(f"<tr{css}>{cells}</tr>")
     return (f'<table id="stages"><thead><tr>{head}</tr></thead><tbody>{"".join(rows)}</tbody></table>\n'
-            '<p class="hint">#N is the number of terminals for step 2, of nodes otherwise (as in the paper\'s tables).</p>')
+            '<p class="hint">#N is, for step 2, the number of nodes the Steiner tree joins (the terminals and any '
+            'waypoints), of nodes otherwise (as in the paper\'s tables).</p>')
 
 
 # --- the 3D figure -----------------------------------------------------------------
@@ -489,7 +495,10 @@ def _analysis_layer(graph: nx.Graph, key: str, result: RunResult, visible: bool)
     nodes = sorted(n for n in graph.nodes if n in values)
     marker_values = np.asarray([values[n] if np.isfinite(values[n]) else low for n in nodes], dtype=np.float32)
     node_trace = _node_trace(graph, nodes, name, result, 5, marker_values, visible)
-    node_trace.marker.update(showscale=True, colorbar=dict(title=dict(text=key), x=1.0, len=0.6), **scale)
+    colour_bar = dict(title=dict(text=value_title(result, key)), x=1.0, len=0.6)
+    if whole_numbers([v for v in values.values() if np.isfinite(v)]):
+        colour_bar.update(tickmode="linear", tick0=0, dtick=max(1, math.ceil((high - low) / 10)))
+    node_trace.marker.update(showscale=True, colorbar=colour_bar, **scale)
     return [lines, node_trace]
 
 
