@@ -1,7 +1,7 @@
 """A twenty-sixth round of map-piece kinds with their known openings, run through both map-piece routes.
 
 Run: ``.venv/bin/python benchmarks/piece_kinds26.py [--kinds a b] [--configs map_piece map_piece_sampling] [--yaws 0
-22 45] [--detail]``
+22 45] [--detail] [--one-to-one]``
 
 Eight kinds of docs/entry_exit.md, "A twenty-sixth round of piece kinds", each with its known openings (count, place,
 width, height) written in its docstring before the detector first ran on them: the pieces of a level designer's
