@@ -9,8 +9,6 @@ under the rounds' count and other under ``--one-to-one``.
 
 from __future__ import annotations
 
-import numpy as np
-
 from g2s_core import pipeline
 from g2s_core.config import PRESETS_DIR, load_config
 from g2s_core.mesh import mesh_sha256
@@ -24,13 +22,12 @@ def test_a_corridor_ending_in_a_grating_of_bars_along_the_way_keeps_its_end() ->
     level = benchmark("piece_kinds26").bar_grating_end()
     registry = Registry.from_entry_points()
     plan = pipeline.plan(load_config(PRESETS_DIR / "map_piece.yaml"), registry)
-    result = pipeline.run(plan, registry, level.mesh, "bar_grating_end", mesh_sha256(level.mesh))
-    found = sorted(result.terminals.openings, key=lambda o: o.position[0])
-    assert len(found) == 2
-    for opening, known in zip(found, sorted(level.openings, key=lambda o: o.position[0])):
-        assert np.linalg.norm(np.subtract(opening.position, known.position)) < 0.1  # the bars' ends, x 12
-        assert abs(opening.width - known.width) < 0.05
-        assert np.dot(opening.heading, known.heading) > 0.99
+    openings = list(pipeline.run(plan, registry, level.mesh, level.name, mesh_sha256(level.mesh)).terminals.openings)
+    recalled, missed, correct, other, width_error = benchmark("piece_kinds10").score(level, openings, one_to_one=True)
+    assert (recalled, missed, correct, other) == (2, 0, 2, 0)
+    assert width_error < 0.05
+    east = max(openings, key=lambda o: o.position[0])
+    assert abs(east.position[0] - 12.0) < 0.05 and abs(east.position[1]) < 0.01  # the bars' ends, at the floor
 
 
 def test_the_one_to_one_count_makes_a_second_opening_near_a_known_one_other() -> None:
