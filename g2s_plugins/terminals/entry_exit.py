@@ -566,18 +566,21 @@ def _nearest_ground(on: np.ndarray, distance: np.ndarray) -> np.ndarray:
 def _over_narrow_gap(
     caster: RayCaster, probes: np.ndarray, directions: np.ndarray, down: np.ndarray, ground: np.ndarray, s: _Settings
 ) -> tuple[np.ndarray, np.ndarray]:
-    """Which of the (n,3) ``probes`` that found no ground stand over a gap across the way narrower than two search
-    steps, and how far along ``down`` ((n,3)) from them the ground beside it lies ((n,) m, inf where not).
+    """Which of the (n,3) ``probes`` that found no ground stand over a gap across the way, or a slot along it,
+    narrower than two search steps, and how far along ``down`` ((n,3)) from them the ground beside it lies ((n,) m,
+    inf where not).
 
     The gap is measured, not sampled: rays along the way (``directions``, (n,3)) and back, a sixteenth of a step
     under the ground's top (``ground`` (n,) m along ``down`` from each probe; NaN where no probe of the way stood
-    on any: then at the origin's ground and a search step, the navmesh's cell height, lower), reach its sides, each
+    on any: then at the origin's ground and a search step, the navmesh's cell height, lower), and where they find
+    no narrow gap, rays square to the way (:func:`_narrow_gap_at`), reach its sides, each
     side's distance is taken square to the face met, and walkable ground within the climb must lie just past both.
     Probes a search step apart sample a grate's bars narrower than a step as they fall: three in a row missed the
     last bars of one (bars 0.04 m wide, 0.04 m apart) and put its end 0.08 m short, and a search's last probe in a
     slot was an end (docs/entry_exit.md, "A twenty-third round of piece kinds" and "A twenty-fourth round"). A
     floor's end has no side ahead within two steps; faces of no thickness give no side (three probes in a row stay
-    the rule there). Two rays a probe, two more where the gap is narrow (twice, where the ground is unknown): O(n).
+    the rule there). Two rays a probe, two more square to the way where those find no narrow gap, two more where
+    the gap is narrow (all twice, where the ground is unknown): O(n).
     """
     known = np.isfinite(ground)
     on, distance = _narrow_gap_at(caster, probes, directions, down, np.where(known, ground, s.lift), s)
@@ -591,7 +594,26 @@ def _over_narrow_gap(
 def _narrow_gap_at(
     caster: RayCaster, probes: np.ndarray, directions: np.ndarray, down: np.ndarray, ground: np.ndarray, s: _Settings
 ) -> tuple[np.ndarray, np.ndarray]:
-    """:func:`_over_narrow_gap` with the ground's top known, ``ground`` ((n,) m) along ``down`` from each probe."""
+    """:func:`_over_narrow_gap` with the ground's top known, ``ground`` ((n,) m) along ``down`` from each probe: the
+    gap measured along the way, then, where that finds none, square to it. A slot running along the way (a grating
+    of bars along it) has no sides ahead, and the crack rule's ground a search step to both sides of the probe
+    falls in the next slots where they are as wide as the bars and their pitch is more than a step and less than
+    two (bars 0.03 m wide, 0.03 m apart: a probe in a slot never has bars a step to both sides), so probes along
+    the slots ended the floor where the grating began (docs/entry_exit.md, "A twenty-sixth round of piece
+    kinds"). O(n) rays, twice as many where the way meets no narrow gap."""
+    on, distance = _narrow_gap_along(caster, probes, directions, down, ground, s)
+    slot = np.flatnonzero(~on)
+    if len(slot):
+        square = _unit(np.cross(directions[slot], UP))
+        on[slot], distance[slot] = _narrow_gap_along(caster, probes[slot], square, down[slot], ground[slot], s)
+    return on, distance
+
+
+def _narrow_gap_along(
+    caster: RayCaster, probes: np.ndarray, directions: np.ndarray, down: np.ndarray, ground: np.ndarray, s: _Settings
+) -> tuple[np.ndarray, np.ndarray]:
+    """Which probes stand over a gap narrower than two search steps measured along ``directions`` ((n,3)) and back,
+    and how far along ``down`` the ground beside it lies (:func:`_over_narrow_gap`)."""
     on, distance = np.zeros(len(probes), dtype=bool), np.full(len(probes), np.inf)
     if not len(probes):
         return on, distance
@@ -1159,7 +1181,15 @@ def _extend(kept: list[_Edge], caster: RayCaster, s: _Settings, floor: np.ndarra
     down = np.broadcast_to(-UP, (2 * n * n_ext, 3))
     outwards = np.broadcast_to(out[None, :, None, :], (2, n, n_ext, 3)).reshape(-1, 3)
     reach = s.lift + s.climb
-    floor = (caster.first_hits(cand, down).distance <= reach).reshape(2, n, n_ext)
+    floor = caster.first_hits(cand, down).distance <= reach
+    # A candidate over a gap narrower than two search steps, measured, stands on the floor, as a probe of the way
+    # out does (:func:`_over_narrow_gap`): along the edge, a step apart, two or three candidates in a row fall into
+    # the slots of a grating of bars along the way 0.06 m apart (docs/entry_exit.md, "A twenty-sixth round of piece
+    # kinds"), more than the one the crack rule below steps over.
+    gaps = np.flatnonzero(~floor)
+    floor[gaps] = _over_narrow_gap(caster, cand[gaps], np.broadcast_to(direction[:, :, None, :], (2, n, n_ext, 3))
+                                   .reshape(-1, 3)[gaps], down[gaps], np.full(len(gaps), np.nan), s)[0]
+    floor = floor.reshape(2, n, n_ext)
     # One candidate over a crack, with floor on both sides of it, stands on the floor: the crack rule of
     # ground_across_crack, its two sides the neighbouring candidates a search step away (no ray more).
     floor[:, :, :-1] |= np.concatenate([np.ones((2, n, 1), dtype=bool), floor[:, :, :-2]], axis=2) & floor[:, :, 1:]
