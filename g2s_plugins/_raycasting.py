@@ -36,6 +36,7 @@ import numpy as np
 import trimesh
 from trimesh import util
 
+from g2s_plugins import _slabs
 from g2s_plugins.local_frame import LocalFrame
 
 UP = np.array([0.0, 1.0, 0.0])
@@ -993,9 +994,6 @@ def _slices_meet_bands(triangles: np.ndarray, origin: np.ndarray, along: np.ndar
     return crossing & (enter < leave)
 
 
-_TRIANGLE_EDGES = ((0, 1), (1, 2), (2, 0))
-
-
 def _slabs_meet_triangles(triangles: np.ndarray, origin: np.ndarray, along: np.ndarray, side: np.ndarray,
                           heights: np.ndarray, inset: float) -> np.ndarray:
     """(k,) bool: triangle ``triangles[i]`` ((k, 3, 3) corners, m) passes through the slab ``origin[i] + s along[i]
@@ -1009,53 +1007,15 @@ def _slabs_meet_triangles(triangles: np.ndarray, origin: np.ndarray, along: np.n
     the ends of its span along t, are among: the triangle's corners inside; its edges' crossings of the prism's
     four faces; the crossings of the prism's four edges (lines along t) with the triangle, by barycentric
     coordinates in the (a, h) plane (a triangle parallel to t has its span's ends on its edges). The triangle meets
-    the slab when that span reaches within ``|side|`` - ``inset`` of the middle. O(k).
+    the slab when that span reaches within ``|side|`` - ``inset`` of the middle. O(k), in the C++ extension
+    (``src/slabs_module.cpp``: a numpy formulation cost about 250 array operations a call, most of it per call, not
+    per pair; the extension gives its answers bit for bit).
     """
-    offset = triangles - origin[:, None, :]
-    plan = along[:, [0, 2]]
-    length = np.linalg.norm(plan, axis=1)
-    unit_along = plan / length[:, None]
-    unit_side = side[:, [0, 2]] / np.linalg.norm(side[:, [0, 2]], axis=1, keepdims=True)
-    a = np.einsum("kcj,kj->kc", offset[:, :, [0, 2]], unit_along)
-    t = np.einsum("kcj,kj->kc", offset[:, :, [0, 2]], unit_side)
-    h = offset[:, :, 1] - a / length[:, None] * along[:, 1, None]
-    heights = np.broadcast_to(np.asarray(heights, dtype=np.float64), (len(a), 2))
-    bounds = {"a": (np.full(len(a), inset), length - inset), "h": (heights[:, 0] + inset, heights[:, 1] - inset)}
-    frame = {"a": a, "h": h}
-
-    def inside(name: str, values: np.ndarray) -> np.ndarray:
-        lowest, highest = bounds[name]
-        return (values >= lowest - 1e-9) & (values <= highest + 1e-9)
-
-    spans, valid = [t], [np.stack([inside("a", a[:, c]) & inside("h", h[:, c]) for c in range(3)], axis=1)]
-    for i, j in _TRIANGLE_EDGES:
-        for name, other in (("a", "h"), ("h", "a")):
-            for plane in bounds[name]:
-                plane = np.broadcast_to(plane, a[:, 0].shape)
-                run = frame[name][:, j] - frame[name][:, i]
-                with np.errstate(divide="ignore", invalid="ignore"):
-                    u = (plane - frame[name][:, i]) / run
-                crossed = (run != 0.0) & (u >= 0.0) & (u <= 1.0)
-                u = np.where(crossed, u, 0.0)
-                spans.append((t[:, i] + u * (t[:, j] - t[:, i]))[:, None])
-                across = frame[other][:, i] + u * (frame[other][:, j] - frame[other][:, i])
-                valid.append((crossed & inside(other, across))[:, None])
-    first_a, first_h = a[:, 1] - a[:, 0], h[:, 1] - h[:, 0]
-    second_a, second_h = a[:, 2] - a[:, 0], h[:, 2] - h[:, 0]
-    determinant = first_a * second_h - first_h * second_a
-    flat = np.abs(determinant) <= 1e-12 * (np.abs(first_a * second_h) + np.abs(first_h * second_a) + 1e-300)
-    for corner_a in bounds["a"]:
-        for corner_h in bounds["h"]:
-            to_a, to_h = corner_a - a[:, 0], corner_h - h[:, 0]
-            with np.errstate(divide="ignore", invalid="ignore"):
-                u = np.where(flat, -1.0, (to_a * second_h - to_h * second_a) / determinant)
-                v = np.where(flat, -1.0, (first_a * to_h - first_h * to_a) / determinant)
-            pierced = (u >= 0.0) & (v >= 0.0) & (u + v <= 1.0)
-            spans.append(np.where(pierced, t[:, 0] + u * (t[:, 1] - t[:, 0]) + v * (t[:, 2] - t[:, 0]), 0.0)[:, None])
-            valid.append(pierced[:, None])
-    span, found = np.concatenate(spans, axis=1), np.concatenate(valid, axis=1)
-    reach = np.linalg.norm(side, axis=1) - inset
-    return (np.where(found, span, np.inf).min(axis=1) < reach) & (np.where(found, span, -np.inf).max(axis=1) > -reach)
+    k = len(triangles)
+    rows = (np.ascontiguousarray(np.asarray(values, dtype=np.float64).reshape(k, 3)) for values in (origin, along, side))
+    return _slabs.slabs_meet_triangles(
+        np.ascontiguousarray(triangles, dtype=np.float64).reshape(k, 3, 3), *rows,
+        np.ascontiguousarray(np.broadcast_to(np.asarray(heights, dtype=np.float64), (k, 2))), float(inset))
 
 
 @dataclass(frozen=True)
