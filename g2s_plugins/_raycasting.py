@@ -771,12 +771,21 @@ class OpenFloors:
         return crowded
 
     def _neighbours(self, floors: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """``(floor, other)``: pairs of an index into ``floors`` and a triangle whose XZ boxes (grown by the margin)
-        share a cell of a 2-D grid (a broad phase: every overlapping pair is among them)."""
+        """``(floor, other)``: the pairs of an index into ``floors`` and a triangle whose XZ boxes, grown by the
+        margin, overlap (a broad phase: a triangle whose box lies apart from a floor's lies farther than two margins
+        from it, and from the floor shrunk by the margin, which :func:`_separated` tells too).
+
+        The floors are binned, in cells of half their boxes' median larger side, every triangle's box looked up and
+        the pairs sharing a cell kept where the boxes overlap: the floors asked about are the few large ones (on the
+        2,000-room dungeon 8,578 of 280,704 triangles), and binning all the triangles in cells of their own median
+        size cost 0.49 s of CPU there against 0.08 s."""
         xz = self.caster.triangles[:, :, [0, 2]]
         lo, hi = xz.min(axis=1) - self.margin, xz.max(axis=1) + self.margin
         extent = float((hi.max(axis=0) - lo.min(axis=0)).max())
-        return box_pairs(lo[floors], hi[floors], lo, hi, max(float(np.median(hi - lo)), extent / 4096.0, 1e-6))
+        cell = max(0.5 * float(np.median((hi[floors] - lo[floors]).max(axis=1))), extent / 4096.0, 1e-6)
+        other, floor = box_pairs(lo, hi, lo[floors], hi[floors], cell)
+        overlap = np.all((lo[other] <= hi[floors[floor]]) & (lo[floors[floor]] <= hi[other]), axis=1)
+        return floor[overlap], other[overlap]
 
     def faces_under(self, points: np.ndarray, max_offset: float = EPSILON, room: float = 0.0) -> np.ndarray:
         """(n,) int64: the open triangle each point stands on (see the class; ``max_offset`` in metres, at most
@@ -1077,8 +1086,11 @@ def bands_meet_walls(caster: RayCaster, low: np.ndarray, along: np.ndarray, side
     band_lo, band_hi = corners.min(axis=1), corners.max(axis=1)
     walls, wall_lo, wall_hi = steep.triangles, steep.lo, steep.hi
     band, wall = steep.grid.pairs(band_lo, band_hi)
-    near = np.all((band_lo[band] <= wall_hi[wall]) & (wall_lo[wall] <= band_hi[band]), axis=1)
-    band, wall = band[near], wall[near]
+    # The boxes' overlap one axis at a time, each on the pairs the axes before it kept: about one pair in a hundred
+    # sharing a cell overlaps (a wall's long triangles fill the cells along it), and the first axis drops most.
+    for axis in (0, 2, 1):
+        near = (band_lo[band, axis] <= wall_hi[wall, axis]) & (wall_lo[wall, axis] <= band_hi[band, axis])
+        band, wall = band[near], wall[near]
     if heights is None:
         hit = _slices_meet_bands(walls[wall], low[band], along[band], side[band], inset)
     else:

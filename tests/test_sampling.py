@@ -536,6 +536,38 @@ def test_box_occupancy_never_frees_a_column_that_meets_a_widened_box():
     assert BoxOccupancy(np.zeros((0, 3, 3)), widen, cell=0.25).columns_free(points, low, high).all()
 
 
+def test_surroundings_are_built_once_per_caster_agent_and_clearance():
+    mesh = generate_level("sample:two_rooms_one_door")
+    agent = AgentShape.from_config(AGENT)
+    caster = RayCaster(mesh)
+    first = sampling._Surroundings.of(caster, agent, 0.5)
+    assert sampling._Surroundings.of(caster, agent, 0.5) is first
+    assert sampling._Surroundings.of(caster, agent, 0.25) is not first
+    assert sampling._Surroundings.of(RayCaster(mesh), agent, 0.5) is not first  # another caster, its own
+    other = AgentShape(0.5, 2.0, 0.4, 30.0)
+    assert sampling._Surroundings.of(caster, other, 0.5).steep.occupied.sum() >= first.steep.occupied.sum()
+    kept = len(sampling._SURROUNDINGS)
+    del caster
+    gc.collect()
+    assert len(sampling._SURROUNDINGS) == kept - 1  # the entry leaves with its caster
+
+
+@pytest.mark.parametrize("name", ["building", "stair_deck", "cluttered_room"])
+def test_open_floors_neighbours_are_the_floors_and_triangles_whose_grown_boxes_overlap(name):
+    from g2s_plugins._raycasting import OpenFloors
+
+    caster = RayCaster(generate_level(f"sample:{name}"))
+    floors = OpenFloors(caster, AgentShape.from_config(AGENT))
+    asked = np.flatnonzero(caster.walkable_faces(np.arange(len(caster.triangles)), AGENT.max_slope))[::3]
+    floor, other = floors._neighbours(asked)
+    xz = caster.triangles[:, :, [0, 2]]
+    lo, hi = xz.min(axis=1) - floors.margin, xz.max(axis=1) + floors.margin
+    overlap = np.all((lo[None, :] <= hi[asked][:, None]) & (lo[asked][:, None] <= hi[None, :]), axis=2)
+    expected = set(zip(*np.nonzero(overlap)))
+    assert len(expected) > len(asked)  # each floor with itself and its neighbours at least
+    assert sorted(zip(floor.tolist(), other.tolist())) == sorted((int(i), int(j)) for i, j in expected)
+
+
 def test_disk_inside_its_triangle():
     triangle = np.array([[0.0, 0.0, 0.0], [4.0, 0.0, 0.0], [0.0, 0.0, 4.0]])
     points = np.array([[1.0, 0.0, 1.0], [0.4, 0.0, 1.0], [1.0, 0.0, 0.4], [1.8, 0.0, 1.8], [5.0, 0.0, 5.0]])

@@ -104,6 +104,7 @@ from __future__ import annotations
 
 import math
 import time
+import weakref
 from typing import Literal
 
 import networkx as nx
@@ -316,7 +317,7 @@ def agent_fits(
     # point is out at its first wall), one direction per batch; lowest level first,
     # since most walls reach the knee.
     idx = np.nonzero(ok)[0]
-    around = _Surroundings(caster, agent, clearance)
+    around = _Surroundings.of(caster, agent, clearance)
 
     # Walls and obstacles: horizontal rays; a walkable (ramp) face hit is ground, not a wall.
     levels = wall_levels(agent)
@@ -719,6 +720,18 @@ class _Surroundings:
         # Cells half as high as the ledge rays start above a floor (before any growing): its own cell seldom reaches there.
         self.walkable = BoxOccupancy(corners[walkable], widen, np.array([cell, min(cell, 0.5 * (self.reach - self.margin)), cell]))
 
+    @classmethod
+    def of(cls, caster: RayCaster, agent: AgentShape, clearance: float) -> _Surroundings:
+        """The surroundings of ``caster``'s mesh for this agent and clearance, built on the first call and kept
+        while the caster lives: :func:`moved_into_passages` asks :func:`agent_fits` about a few points at a time,
+        up to 12 times a build, and grids of the whole mesh built each time were a fifth of the 100k level's step 1
+        (docs/performance.md)."""
+        kept = _SURROUNDINGS.setdefault(caster, {})
+        found = kept.get((agent, clearance))
+        if found is None:
+            found = kept[(agent, clearance)] = cls(caster, agent, clearance)
+        return found
+
     def plain_ground(self, points: np.ndarray, floor: FloorTriangles, faces: np.ndarray) -> np.ndarray:
         """(n,) bool: the ledge test certainly passes at ``points`` (each on its triangle ``faces[i]`` of ``floor``).
 
@@ -741,6 +754,11 @@ class _Surroundings:
         plain[plain] = self.steep.columns_free(points[plain], -drop[plain] - self.margin, top)
         plain[plain] = self.walkable.columns_free(points[plain], self.reach, top)
         return plain
+
+
+_SURROUNDINGS: weakref.WeakKeyDictionary[RayCaster, dict[tuple[AgentShape, float], _Surroundings]] = weakref.WeakKeyDictionary()
+"""Each caster's :class:`_Surroundings` by agent and clearance (:meth:`_Surroundings.of`); an entry leaves with its
+caster."""
 
 
 def _poisson_candidates(surface: trimesh.Trimesh, spacing: float, params: Params) -> tuple[np.ndarray, np.ndarray, float]:
