@@ -105,7 +105,7 @@ def describe_damage(path: Path, data: bytes) -> str | None:
         return "the file is empty (0 bytes)"
     if (content := _content_format(data)) and content[0] != suffix:  # read as the suffix says, it was "the mesh is empty"
         return f"the file's content is not {FORMATS[suffix]} but {content[1]}; rename it {path.with_suffix(content[0]).name}"
-    if suffix == ".stl" and size < STL_HEADER and not b"solid".startswith(data[:5]):  # read as ASCII STL: "line 1: ..."
+    if suffix == ".stl" and size < STL_HEADER and not b"solid".startswith(data.lstrip()[:5]):  # read as ASCII STL: "line 1: ..."
         return f"binary STL ends early: the file has {_many(size, 'byte')}, its header alone takes {STL_HEADER}"
     # ASCII STL starts with "solid", never holds a NUL
     if binary_stl := suffix == ".stl" and size >= STL_HEADER and (not data.startswith(b"solid") or b"\0" in data[:STL_HEADER]):

@@ -94,3 +94,12 @@ def test_an_ascii_stl_cut_inside_its_first_word_is_read_as_ascii(tmp_path):
     (level := tmp_path / "level.stl").write_bytes(b"so")
     with pytest.raises(MeshError, match="line 1: a line starts with 'so'"):
         load_mesh(level)
+
+
+def test_a_tiny_ascii_stl_after_blank_space_is_not_called_a_cut_binary_stl(tmp_path):
+    # review: the cut-header rule read the first five bytes as they were, so " solid x" (a leading space) was told
+    # "binary STL ends early"; the ASCII STL reader, which skips that space, says what is wrong with it
+    (level := tmp_path / "level.stl").write_bytes(b" solid x\nendsolid x\n")
+    with pytest.raises(MeshError) as refused:
+        load_mesh(level)
+    assert "binary STL" not in str(refused.value)
