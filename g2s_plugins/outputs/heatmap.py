@@ -90,7 +90,14 @@ def floor_groups(graph: nx.Graph, gap: float, ground: np.ndarray | None = None) 
 
 
 def render(result: RunResult) -> bytes:
-    """The PNG's bytes."""
+    """The PNG's bytes (:func:`figure_of`)."""
+    buffer = io.BytesIO()
+    figure_of(result).savefig(buffer, format="png", dpi=DPI, metadata={"Software": None})
+    return buffer.getvalue()
+
+
+def figure_of(result: RunResult) -> Figure:
+    """The heatmap's figure on an Agg canvas (see the module doc), not yet drawn."""
     _, graph = final_graph(result)
     keys = list(result.analysis)
     key = keys[0] if keys else None
@@ -151,9 +158,26 @@ def render(result: RunResult) -> bytes:
     handles = _legend_handles(result, graph, groups)
     if handles:
         figure.legend(handles=handles, loc="outside lower center", ncols=len(handles), fontsize="small", frameon=False)
-    buffer = io.BytesIO()
-    figure.savefig(buffer, format="png", dpi=DPI, metadata={"Software": None})
-    return buffer.getvalue()
+    _settle_limits(figure, axes.ravel().tolist())
+    return figure
+
+
+def _settle_limits(figure: Figure, panels: list) -> None:
+    """Fix each panel's limits to the ones its laid-out box gives at equal aspect, then keep that aspect by the box.
+
+    With ``adjustable="datalim"`` the limits follow the box's shape, while the constrained layout measures the tick
+    labels at one box and then moves it: the new limits can bring a wider tick label into view (a minus sign is
+    ~10 px at this size) after the margins were set, and the y label is pushed past the canvas's edge
+    (matplotlib issue 30230). With the limits fixed the last layout measures the labels that are drawn; keeping the
+    aspect by the box then costs a panel only the few pixels that label needs. One layout pass, O(panels) text
+    measurements.
+    """
+    figure.get_layout_engine().execute(figure)
+    for ax in panels:
+        ax.apply_aspect()  # the limits for the box the layout gave it
+        ax.set_xlim(ax.get_xlim())
+        ax.set_ylim(ax.get_ylim())
+        ax.set_adjustable("box")
 
 
 def colour_bar(figure: Figure, mappable: ScalarMappable, axes: list, label: str, finite: list[float]) -> Colorbar:
