@@ -163,21 +163,29 @@ def figure_of(result: RunResult) -> Figure:
 
 
 def _settle_limits(figure: Figure, panels: list) -> None:
-    """Fix each panel's limits to the ones its laid-out box gives at equal aspect, then keep that aspect by the box.
+    """Lay the figure out for the tick labels that will be drawn, then fix the layout and keep each panel's equal
+    aspect by shrinking its box inwards.
 
     With ``adjustable="datalim"`` the limits follow the box's shape, while the constrained layout measures the tick
     labels at one box and then moves it: the new limits can bring a wider tick label into view (a minus sign is
-    ~10 px at this size) after the margins were set, and the y label is pushed past the canvas's edge
-    (matplotlib issue 30230). With the limits fixed the last layout measures the labels that are drawn; keeping the
-    aspect by the box then costs a panel only the few pixels that label needs. One layout pass, O(panels) text
-    measurements.
+    ~10 px at this size) after the margins were set, pushing the y label past the canvas's edge (matplotlib issue
+    30230). ``adjustable="box"`` under the layout fails the other way: the layout counts a narrowed box's inset as
+    room for the labels. So: one layout pass gives each panel's equal-aspect limits; with those limits fixed (and
+    the aspect free) a second pass measures exactly the labels that are drawn; then the layout stops and each box
+    shrinks about its centre to equal aspect, moving its labels only inwards, by the few pixels the second pass
+    changed it. Two layout passes, O(panels) text measurements each.
     """
-    figure.get_layout_engine().execute(figure)
+    engine = figure.get_layout_engine()
+    engine.execute(figure)
     for ax in panels:
-        ax.apply_aspect()  # the limits for the box the layout gave it
+        ax.apply_aspect()  # the limits for the box the first pass gave it
         ax.set_xlim(ax.get_xlim())
         ax.set_ylim(ax.get_ylim())
-        ax.set_adjustable("box")
+        ax.set_aspect("auto")
+    engine.execute(figure)
+    figure.set_layout_engine("none")
+    for ax in panels:
+        ax.set_aspect("equal", adjustable="box", anchor="C")
 
 
 def colour_bar(figure: Figure, mappable: ScalarMappable, axes: list, label: str, finite: list[float]) -> Colorbar:
