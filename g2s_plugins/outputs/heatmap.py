@@ -30,7 +30,8 @@ a white diamond labelled with its id and walkable width. Regions go to floors
 as the ground does, chokepoints as the terminals do; the legend names both.
 
 The file is deterministic: matplotlib's Agg canvas (pyplot is not used), fixed size and DPI, no
-date or software tag in the PNG metadata.
+date or software tag in the PNG metadata. No label, tick label, title, colour bar or legend falls past the
+canvas's edges (:func:`_settle_limits`).
 """
 
 from __future__ import annotations
