@@ -158,9 +158,21 @@ def figure_of(result: RunResult) -> Figure:
         colour_bar(figure, mappable, axes.ravel().tolist(), label, finite)
     handles = _legend_handles(result, graph, groups)
     if handles:
-        figure.legend(handles=handles, loc="outside lower center", ncols=len(handles), fontsize="small", frameon=False)
+        _legend_below(figure, handles)
     _settle_limits(figure, axes.ravel().tolist())
     return figure
+
+
+def _legend_below(figure: Figure, handles: list[Artist]) -> None:
+    """The legend under the panels: its entries in one row, or in the fewest rows that fit the canvas's width
+    (one panel cannot hold five entries side by side). At most len(handles) trial layouts of the legend alone."""
+    renderer = figure.canvas.get_renderer()
+    for columns in range(len(handles), 0, -1):
+        legend = figure.legend(handles=handles, loc="outside lower center", ncols=columns, fontsize="small",
+                               frameon=False)
+        if columns == 1 or legend.get_window_extent(renderer).width <= figure.bbox.width:
+            return
+        legend.remove()
 
 
 def _settle_limits(figure: Figure, panels: list) -> None:
