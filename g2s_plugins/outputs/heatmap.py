@@ -31,7 +31,7 @@ as the ground does, chokepoints as the terminals do; the legend names both.
 
 The file is deterministic: matplotlib's Agg canvas (pyplot is not used), fixed size and DPI, no
 date or software tag in the PNG metadata. No label, tick label, title, colour bar or legend falls past the
-canvas's edges (:func:`_settle_limits`).
+canvas's edges (:func:`_settle_limits`, :func:`_legend_below`).
 """
 
 from __future__ import annotations
@@ -49,6 +49,7 @@ from matplotlib.colorbar import Colorbar
 from matplotlib.colors import Normalize
 from matplotlib.figure import Figure
 from matplotlib.artist import Artist
+from matplotlib.axes import Axes
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
 from matplotlib.ticker import MaxNLocator
@@ -175,16 +176,17 @@ def _legend_below(figure: Figure, handles: list[Artist]) -> None:
         legend.remove()
 
 
-def _settle_limits(figure: Figure, panels: list) -> None:
+def _settle_limits(figure: Figure, panels: list[Axes]) -> None:
     """Lay the figure out for the tick labels that will be drawn, then fix the layout and keep each panel's equal
     aspect by shrinking its box inwards.
 
     With ``adjustable="datalim"`` the limits follow the box's shape, while the constrained layout measures the tick
     labels at one box and then moves it: the new limits can bring a wider tick label into view (a minus sign is
-    ~10 px at this size) after the margins were set, pushing the y label past the canvas's edge (matplotlib issue
-    30230). ``adjustable="box"`` under the layout fails the other way: the layout counts a narrowed box's inset as
-    room for the labels. So: one layout pass gives each panel's equal-aspect limits; with those limits fixed (and
-    the aspect free) a second pass measures exactly the labels that are drawn; then the layout stops and each box
+    ~10 px at this size) after the margins were set, pushing the y label past the canvas's edge (the layout does
+    not model ``datalim``; matplotlib's maintainers advise against the pair in its issue 30230).
+    ``adjustable="box"`` under the layout fails the other way: the layout counts a narrowed box's inset as room
+    for the labels. So: one layout pass gives each panel's equal-aspect limits; with those limits fixed (and the
+    aspect free) a second pass measures exactly the labels that are drawn; then the layout stops and each box
     shrinks about its centre to equal aspect, moving its labels only inwards, by the few pixels the second pass
     changed it. Two layout passes, O(panels) text measurements each.
     """
