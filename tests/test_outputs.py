@@ -737,3 +737,31 @@ def test_colour_bars_say_the_flow_heat_map_is_percentile_ranks():
     assert common.value_title(ranked, "betweenness") == "betweenness"
     config["analyzers"][0]["params"]["aggregate"] = "mean"
     assert common.value_title(ranked, "flow") == "flow"  # a mean of shares has no such unit
+
+
+@pytest.mark.parametrize("mesh, preset, floors", [
+    ("sample:straight_corridor", "map_piece", 1), ("sample:two_floors", "map_piece", 2),
+    ("sample:two_storey", "map_piece", 2), ("sample:building", "map_piece", 3),
+    ("sample:building?floors=4", "map_piece", 4), ("sample:building?floors=5", "map_analysis", 5),
+    ("Ramp.obj", "map_piece", 3), ("Ramp.obj", "demo", 2), ("sample:dungeon?seed=0&rooms=8", "demo", 1),
+    ("sample:dungeon?seed=1", "level_regions", 1)])
+def test_heatmap_draws_no_text_past_the_canvas(mesh, preset, floors, shared_data):
+    """Every panel's, the colour bar's and the legend's tight box lies on the canvas after a draw, for 1 to 5
+    floors (panels in one row and in two, with and without a colour bar). Before: the shared Ramp.obj's y label
+    started 5.4 px left of the canvas (10.4 px with the demo preset), a ``−10.0`` tick label having come into view
+    after the layout had set the margins; keeping the aspect by the box under the layout instead cut the demo
+    preset's 8-room dungeon by 4.8 px; the legend's five entries in one row overran a one-panel canvas by
+    39.4 px on each side (level_regions, dungeon seed 1)."""
+    from g2s_core import api
+
+    source = str(shared_data / "pieces" / mesh) if mesh.endswith(".obj") else mesh
+    figure = heatmap.figure_of(api.run(source, preset))
+    figure.canvas.draw()
+    renderer = figure.canvas.get_renderer()
+    shown = [ax for ax in figure.axes if ax.get_visible()]
+    assert len([ax for ax in shown if ax.get_label() != "<colorbar>"]) == floors
+    assert len(figure.legends) == 1
+    for part in shown + list(figure.legends):
+        box = part.get_tightbbox(renderer)
+        assert min(box.x0, box.y0) >= 0.0 and box.x1 <= figure.bbox.width and box.y1 <= figure.bbox.height, (
+            mesh, part, box)

@@ -30,7 +30,8 @@ a white diamond labelled with its id and walkable width. Regions go to floors
 as the ground does, chokepoints as the terminals do; the legend names both.
 
 The file is deterministic: matplotlib's Agg canvas (pyplot is not used), fixed size and DPI, no
-date or software tag in the PNG metadata.
+date or software tag in the PNG metadata. No label, tick label, title, colour bar or legend falls past the
+canvas's edges (:func:`_settle_limits`, :func:`_legend_below`).
 """
 
 from __future__ import annotations
@@ -48,6 +49,7 @@ from matplotlib.colorbar import Colorbar
 from matplotlib.colors import Normalize
 from matplotlib.figure import Figure
 from matplotlib.artist import Artist
+from matplotlib.axes import Axes
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
 from matplotlib.ticker import MaxNLocator
@@ -90,7 +92,14 @@ def floor_groups(graph: nx.Graph, gap: float, ground: np.ndarray | None = None) 
 
 
 def render(result: RunResult) -> bytes:
-    """The PNG's bytes."""
+    """The PNG's bytes (:func:`figure_of`)."""
+    buffer = io.BytesIO()
+    figure_of(result).savefig(buffer, format="png", dpi=DPI, metadata={"Software": None})
+    return buffer.getvalue()
+
+
+def figure_of(result: RunResult) -> Figure:
+    """The heatmap's figure on an Agg canvas (see the module doc), not yet drawn."""
     _, graph = final_graph(result)
     keys = list(result.analysis)
     key = keys[0] if keys else None
@@ -150,10 +159,48 @@ def render(result: RunResult) -> bytes:
         colour_bar(figure, mappable, axes.ravel().tolist(), label, finite)
     handles = _legend_handles(result, graph, groups)
     if handles:
-        figure.legend(handles=handles, loc="outside lower center", ncols=len(handles), fontsize="small", frameon=False)
-    buffer = io.BytesIO()
-    figure.savefig(buffer, format="png", dpi=DPI, metadata={"Software": None})
-    return buffer.getvalue()
+        _legend_below(figure, handles)
+    _settle_limits(figure, axes.ravel().tolist())
+    return figure
+
+
+def _legend_below(figure: Figure, handles: list[Artist]) -> None:
+    """The legend under the panels: its entries in one row, or in the fewest rows that fit the canvas's width
+    (one panel cannot hold five entries side by side). At most len(handles) trial layouts of the legend alone."""
+    renderer = figure.canvas.get_renderer()
+    for columns in range(len(handles), 0, -1):
+        legend = figure.legend(handles=handles, loc="outside lower center", ncols=columns, fontsize="small",
+                               frameon=False)
+        if columns == 1 or legend.get_window_extent(renderer).width <= figure.bbox.width:
+            return
+        legend.remove()
+
+
+def _settle_limits(figure: Figure, panels: list[Axes]) -> None:
+    """Lay the figure out for the tick labels that will be drawn, then fix the layout and keep each panel's equal
+    aspect by shrinking its box inwards.
+
+    With ``adjustable="datalim"`` the limits follow the box's shape, while the constrained layout measures the tick
+    labels at one box and then moves it: the new limits can bring a wider tick label into view (a minus sign is
+    ~10 px at this size) after the margins were set, pushing the y label past the canvas's edge (the layout does
+    not model ``datalim``; matplotlib's maintainers advise against the pair in its issue 30230).
+    ``adjustable="box"`` under the layout fails the other way: the layout counts a narrowed box's inset as room
+    for the labels. So: one layout pass gives each panel's equal-aspect limits; with those limits fixed (and the
+    aspect free) a second pass measures exactly the labels that are drawn; then the layout stops and each box
+    shrinks about its centre to equal aspect, moving its labels only inwards, by the few pixels the second pass
+    changed it. Two layout passes, O(panels) text measurements each.
+    """
+    engine = figure.get_layout_engine()
+    engine.execute(figure)
+    for ax in panels:
+        ax.apply_aspect()  # the limits for the box the first pass gave it
+        ax.set_xlim(ax.get_xlim())
+        ax.set_ylim(ax.get_ylim())
+        ax.set_aspect("auto")
+    engine.execute(figure)
+    figure.set_layout_engine("none")
+    for ax in panels:
+        ax.set_aspect("equal", adjustable="box", anchor="C")
 
 
 def colour_bar(figure: Figure, mappable: ScalarMappable, axes: list, label: str, finite: list[float]) -> Colorbar:
