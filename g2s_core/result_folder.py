@@ -60,8 +60,9 @@ def check_writable(outdir: Path) -> None:
     try:
         base, missing = _missing_folders(outdir)
         if not base.is_dir():
-            if base == outdir:
-                raise G2SError(f"{outdir}: exists and is not a folder")
+            if base == outdir:  # a dangling link exists as a name only: say where it points
+                raise G2SError(f"{outdir}: exists and is not a folder" if base.exists()
+                               else f"{outdir}: a link to {os.readlink(base)}, which does not exist")
             raise G2SError(f"{outdir}: cannot create the folder, {base} is not a folder")
         longest = max((len(os.fsencode(folder.name)) for folder in missing), default=0)
         if longest > os.pathconf(base, "PC_NAME_MAX"):

@@ -103,3 +103,11 @@ def test_a_tiny_ascii_stl_after_blank_space_is_not_called_a_cut_binary_stl(tmp_p
     with pytest.raises(MeshError) as refused:
         load_mesh(level)
     assert "binary STL" not in str(refused.value)
+
+
+def test_a_dangling_link_as_the_output_folder_says_where_it_points(tmp_path):
+    # was "dangling: exists and is not a folder": the link exists, the folder it names does not
+    (link := tmp_path / "dangling").symlink_to(tmp_path / "gone")
+    outcome = run_g2s_process("run", "graph_only", CORRIDOR, "-o", link)
+    assert_clean_error(outcome, f"{link}: a link to {tmp_path / 'gone'}, which does not exist")
+    assert link.is_symlink() and not (tmp_path / "gone").exists()
