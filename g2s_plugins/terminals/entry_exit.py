@@ -2030,10 +2030,8 @@ def detect_openings(
                 polys = tuple(sorted(set(found[i][1]).union(*(found[j][1] for j in parts))))
                 found[i] = (union, polys, found[i][2])
                 floor_ends_of[i] = np.concatenate([floor_ends_of[i], *(floor_ends_of[j] for j in parts)])
-        found = [f for f, again in zip(found, into) if again < 0]
-        edges = [e for e, again in zip(edges, into) if again < 0]
-        framed_of = [f for f, again in zip(framed_of, into) if again < 0]
-        floor_ends_of = [f for f, again in zip(floor_ends_of, into) if again < 0]
+        found, edges, framed_of, floor_ends_of = ([item for item, again in zip(items, into) if again < 0]
+                                                  for items in (found, edges, framed_of, floor_ends_of))
     found = [f for f in found if f[0].score >= float(params.min_score) - 1e-12]
     if params.best is not None and len(found) > params.best:
         order = sorted(range(len(found)), key=lambda i: (-found[i][0].score, i))[: params.best]
