@@ -23,7 +23,10 @@ image is a cell:
     reads before any structure): the two separate what polygons of unequal size do to the flow.
 (c) ``heat``: the heat map, rasterized the same way: each polygon takes the first analyzer's value of its nearest
     structure node (:func:`g2s_plugins.evaluation.heat_map`); on the sampling route the samples' heat carried to the
-    navmesh's polygons as ``rho_navmesh`` carries it (:func:`g2s_plugins.evaluation.carry`).
+    navmesh's polygons as ``rho_navmesh`` carries it (:func:`g2s_plugins.evaluation.carry`). ``ceiling`` is the same
+    for ``rho_ceiling``'s heat map (each structure node the mean percentile of the run's reference flow over the
+    nodes it stands for, :func:`g2s_plugins.evaluation.placement_heat`): what the structure's placement alone does
+    to the reference's symmetry, before the analyzer's own flow (a sample of 256 sources) does more.
 (d) ``paired``: the share of structure nodes with a structure node within :data:`PAIR_RADIUS` m of their image
     (plan distance, height within :data:`HEIGHT_TOLERANCE`), and ``node rho``: Spearman rho of the values of each
     such node and its nearest one.
@@ -161,15 +164,18 @@ def measure(result: RunResult, centre: np.ndarray, symmetry: str) -> dict[str, f
     flow = polygon_values(surface.graph, surface.flow, navmesh.polygon_count)
     first = next(iter(result.analysis.values()))
     heat = evaluation.heat_map(result.graph, result.structure, first)
+    ceiling = evaluation.placement_heat(result.graph, result.structure, reference)
     if result.context.navmesh is None:
         arrays = traffic.surface_arrays(result.graph)
-        heat = evaluation.carry(heat, arrays.area, evaluation._positions(result.graph), surface)
-    heat = polygon_values(surface.graph, heat, navmesh.polygon_count)
+        heat, ceiling = (evaluation.carry(values, arrays.area, evaluation._positions(result.graph), surface)
+                         for values in (heat, ceiling))
+    heat, ceiling = (polygon_values(surface.graph, values, navmesh.polygon_count) for values in (heat, ceiling))
     with np.errstate(divide="ignore", invalid="ignore"):
         per_area = np.where(areas > 0, flow / areas, np.nan)
     measures = {"cover": float((partner >= 0).mean()),
                 "flow/poly": paired_rho(flow[owner], partner),
                 "flow/m2": paired_rho(per_area[owner], partner),
+                "ceiling": paired_rho(ceiling[owner], partner),
                 "heat": paired_rho(heat[owner], partner)}
     nodes = sorted(result.structure)
     positions = np.array([result.graph.nodes[node]["pos"] for node in nodes], dtype=np.float64)
@@ -204,7 +210,7 @@ def main(argv: list[str] | None = None, registry: Registry | None = None) -> Non
           f"commit {commit}; {time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime())}")
     registry = registry or Registry.from_entry_points()
     plans = {p: pipeline.plan(parse_config(load_raw_config(find_config(p)), p), registry, p) for p in args.presets}
-    columns = ("cover", "flow/poly", "flow/m2", "heat", "paired", "node rho", "samples", "s flow")
+    columns = ("cover", "flow/poly", "flow/m2", "ceiling", "heat", "paired", "node rho", "samples", "s flow")
     print(f"{'level':<16} {'symmetry':<9} {'mesh err':>8} {'preset':<22} {'nodes':>6} "
           + " ".join(f"{c:>9}" for c in columns) + f" {'cpu s':>7}")
     generate: dict[str, Callable] = KINDS
