@@ -95,10 +95,11 @@ TESSELLATIONS: dict[str, tuple[dict, float]] = {
 PRESETS = ("map_analysis", "map_analysis_sampling")
 
 
-def floor_raster(navmesh: NavMesh, cell: float) -> np.ndarray:
-    """(M,3) the centres of the ``cell``-metre plan grid (cells aligned to the world origin) inside the detail
-    triangles of ``navmesh``, lifted onto them; a centre on an edge of two triangles counted once. O(M + DT)."""
-    corners = navmesh.detail_vertices[navmesh.detail_triangles]  # (DT,3,3)
+def floor_raster(navmesh: NavMesh, cell: float, corner: tuple[float, float] = (0.0, 0.0)) -> np.ndarray:
+    """(M,3) the centres of the ``cell``-metre plan grid (a cell's corner at the plan point ``corner``, x and z; the
+    world origin by default) inside the detail triangles of ``navmesh``, lifted onto them; a centre on an edge of two
+    triangles counted once. O(M + DT)."""
+    corners = navmesh.detail_vertices[navmesh.detail_triangles] - [corner[0], 0.0, corner[1]]  # (DT,3,3)
     points = []
     for a, b, c in corners:
         low, high = np.minimum(np.minimum(a, b), c), np.maximum(np.maximum(a, b), c)
@@ -117,7 +118,7 @@ def floor_raster(navmesh: NavMesh, cell: float) -> np.ndarray:
     raster = np.concatenate(points)
     _, first = np.unique(np.column_stack([np.floor(raster[:, [0, 2]] / cell), np.round(raster[:, 1] / 0.05)]),
                          axis=0, return_index=True)
-    return raster[np.sort(first)]
+    return raster[np.sort(first)] + [corner[0], 0.0, corner[1]]
 
 
 def scaled(points: np.ndarray) -> np.ndarray:

@@ -11,11 +11,12 @@ largest distance from a vertex's image to the nearest vertex, m). For every leve
 by stage, how far the output is from its image, with the level's centre and cell grid chosen so that every cell's
 image is a cell:
 
-(a) ``cover``: the navmesh itself. Every detail triangle of every polygon is rasterized in plan on cells of
-    :data:`CELL` m (a cell is covered when its centre lies in the triangle; its height is the triangle's there);
-    the share of covered cells whose image is covered too (within :data:`HEIGHT_TOLERANCE` in height, so decks over
-    one another stay apart). Recast's voxel grid, regions and polygons are built in the level's frame, not its
-    symmetry's: this is the cut's cost.
+(a) ``cover``: the navmesh itself. Its detail triangles are rasterized in plan on cells of :data:`CELL` m
+    (:func:`reference_stability.floor_raster`: a cell is covered when its centre lies in a triangle, at the
+    triangle's height there), each cell in the polygon Detour finds under it
+    (:func:`g2s_plugins.evaluation.polygons_under`); the share of covered cells whose image is covered too (within
+    :data:`HEIGHT_TOLERANCE` in height, so decks over one another stay apart). Recast's voxel grid, regions and
+    polygons are built in the level's frame, not its symmetry's: this is the cut's cost.
 (b) ``flow/m2``: the walking flow per unit area on that raster: each cell takes its polygon's reference flow
     (:func:`g2s_plugins.evaluation.reference_flow` on the navmesh graph: exact up to 2,000 nodes) over the polygon's
     area; Spearman rho between a cell's value and its image's, over the covered cells whose image is covered.
@@ -37,7 +38,8 @@ of the sample nearest their image); on the navmesh route "-". A stage that reads
 symmetry that its input had. This is a benchmark: nothing here asserts a target.
 
 Cost per level: the preset's run, one more reference flow (on the sampling route a navmesh build and its flow, as
-the ``traffic`` evaluator's), and the rasterization, O(cells) for about 1.6e5-4e5 cells of 0.25 m.
+the ``traffic`` evaluator's), and the rasterization, O(cells) with one Detour look-up per cell, about 1.6e5-4e5
+cells of 0.25 m.
 """
 
 from __future__ import annotations
@@ -53,6 +55,7 @@ from pathlib import Path
 import networkx as nx
 import numpy as np
 from analysis_quality import KINDS
+from reference_stability import floor_raster, node_positions
 from scipy.spatial import cKDTree
 
 from g2s_core import pipeline
@@ -62,7 +65,7 @@ from g2s_core.model import RunResult
 from g2s_core.registry import Registry
 from g2s_plugins import evaluation, traffic
 from g2s_plugins.graph_builders import navmesh as navmesh_builder
-from g2s_plugins.recast import NavMesh, build_navmesh
+from g2s_plugins.recast import build_navmesh
 
 CELL = 0.25
 """Raster cell, m."""
@@ -86,40 +89,6 @@ def image(points: np.ndarray, centre: np.ndarray, symmetry: str) -> np.ndarray:
     if symmetry == HALF_TURN:
         turned[:, 2] = 2.0 * centre[1] - turned[:, 2]
     return turned
-
-
-def rasterize(navmesh: NavMesh, centre: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """The navmesh's detail triangles on cells of :data:`CELL` m whose corners lie on ``centre`` + k CELL.
-
-    Returns (c, 3) cell centres (x, height, z; m) and (c,) the polygon each lies in. A cell under two triangles (a deck
-    over another) is listed once for each. O(triangles + cells).
-    """
-    triangles = navmesh.detail_vertices[navmesh.detail_triangles[:, :3]]
-    owners = navmesh.detail_polygon
-    points, polygons = [], []
-    for triangle, owner in zip(triangles, owners):
-        (ax, ay, az), (bx, by, bz), (cx, cy, cz) = triangle
-        det = (bz - cz) * (ax - cx) + (cx - bx) * (az - cz)
-        if abs(det) < 1e-12:
-            continue
-        i0, i1 = (np.floor((np.array([min(ax, bx, cx), max(ax, bx, cx)]) - centre[0]) / CELL)).astype(int)
-        k0, k1 = (np.floor((np.array([min(az, bz, cz), max(az, bz, cz)]) - centre[1]) / CELL)).astype(int)
-        x, z = np.meshgrid(centre[0] + (np.arange(i0, i1 + 1) + 0.5) * CELL,
-                           centre[1] + (np.arange(k0, k1 + 1) + 0.5) * CELL, indexing="ij")
-        x, z = x.ravel(), z.ravel()
-        l0 = ((bz - cz) * (x - cx) + (cx - bx) * (z - cz)) / det
-        l1 = ((cz - az) * (x - cx) + (ax - cx) * (z - cz)) / det
-        l2 = 1.0 - l0 - l1
-        inside = (l0 >= 0) & (l1 >= 0) & (l2 >= 0)
-        if inside.any():
-            y = l0 * ay + l1 * by + l2 * cy
-            points.append(np.stack([x[inside], y[inside], z[inside]], axis=1))
-            polygons.append(np.full(int(inside.sum()), owner))
-    cells, owner_of = np.concatenate(points), np.concatenate(polygons)
-    # a cell on the shared edge of two triangles of one polygon counts once
-    index = np.floor((cells[:, [0, 2]] - centre) / CELL)
-    _, first = np.unique(np.column_stack([index, owner_of]), axis=0, return_index=True)
-    return cells[first], owner_of[first]
 
 
 def image_rows(points: np.ndarray, centre: np.ndarray, symmetry: str, radius: float) -> np.ndarray:
@@ -158,7 +127,9 @@ def measure(result: RunResult, centre: np.ndarray, symmetry: str) -> dict[str, f
     else:  # the reference navmesh navmesh_surface measures on, built again for its polygons
         navmesh = build_navmesh(result.context.mesh.vertices, result.context.mesh.faces, result.context.agent,
                                 navmesh_builder.Params(ledge_filter=evaluation.REFERENCE_LEDGE_FILTER))
-    cells, owner = rasterize(navmesh, centre)
+    cells = floor_raster(navmesh, CELL, tuple(centre))
+    owner = evaluation.polygons_under(navmesh, cells)
+    cells, owner = cells[owner >= 0], owner[owner >= 0]
     partner = image_rows(cells, centre, symmetry, CELL / 2)
     areas = polygon_values(surface.graph, traffic.surface_arrays(surface.graph).area, navmesh.polygon_count)
     flow = polygon_values(surface.graph, surface.flow, navmesh.polygon_count)
@@ -167,7 +138,7 @@ def measure(result: RunResult, centre: np.ndarray, symmetry: str) -> dict[str, f
     ceiling = evaluation.placement_heat(result.graph, result.structure, reference)
     if result.context.navmesh is None:
         arrays = traffic.surface_arrays(result.graph)
-        heat, ceiling = (evaluation.carry(values, arrays.area, evaluation._positions(result.graph), surface)
+        heat, ceiling = (evaluation.carry(values, arrays.area, node_positions(result), surface)
                          for values in (heat, ceiling))
     heat, ceiling = (polygon_values(surface.graph, values, navmesh.polygon_count) for values in (heat, ceiling))
     with np.errstate(divide="ignore", invalid="ignore"):
@@ -185,9 +156,9 @@ def measure(result: RunResult, centre: np.ndarray, symmetry: str) -> dict[str, f
     measures["samples"] = measures["s flow"] = float("nan")
     if result.context.navmesh is None:
         spacing = result.graph.graph.get("sampling_stats", {}).get("spacing", 2.0 * float(result.context.agent.radius))
-        sample_partner = image_rows(evaluation._positions(result.graph), centre, symmetry, spacing / 10)
+        sample_partner = image_rows(node_positions(result), centre, symmetry, spacing / 10)
         measures["samples"] = float((sample_partner >= 0).mean())
-        nearest = image_rows(evaluation._positions(result.graph), centre, symmetry, spacing)
+        nearest = image_rows(node_positions(result), centre, symmetry, spacing)
         measures["s flow"] = paired_rho(reference, nearest)
     return measures
 
