@@ -29,7 +29,8 @@ image is a cell:
     nodes it stands for, :func:`g2s_plugins.evaluation.placement_heat`): what the structure's placement alone does
     to the reference's symmetry, before the analyzer's own flow (a sample of 256 sources) does more.
 (d) ``paired``: the share of structure nodes with a structure node within :data:`PAIR_RADIUS` m of their image
-    (plan distance, height within :data:`HEIGHT_TOLERANCE`), and ``node rho``: Spearman rho of the values of each
+    (a height difference counting ``PAIR_RADIUS / HEIGHT_TOLERANCE`` times: a node 1 m over the image's place is 3 m
+    from it), and ``node rho``: Spearman rho of the values of each
     such node and its nearest one.
 
 On the sampling route two more columns read the run's own graph: ``samples`` (the share of samples with a sample
@@ -49,7 +50,6 @@ import os
 import platform
 import subprocess
 import time
-from collections.abc import Callable
 from pathlib import Path
 
 import networkx as nx
@@ -60,6 +60,7 @@ from scipy.spatial import cKDTree
 
 from g2s_core import pipeline
 from g2s_core.config import find_config, load_raw_config, parse_config
+from g2s_core.errors import G2SError
 from g2s_core.mesh import mesh_sha256
 from g2s_core.model import RunResult
 from g2s_core.registry import Registry
@@ -175,19 +176,21 @@ def main(argv: list[str] | None = None, registry: Registry | None = None) -> Non
     parser.add_argument("--seeds", nargs="+", type=int, default=[0])
     parser.add_argument("--presets", nargs="+", default=["map_analysis", "map_analysis_sampling"])
     args = parser.parse_args(argv)
+    registry = registry or Registry.from_entry_points()
+    try:
+        plans = {p: pipeline.plan(parse_config(load_raw_config(find_config(p)), p), registry, p) for p in args.presets}
+    except G2SError as error:  # a preset name or config file that does not load: one line, exit 2
+        parser.exit(2, f"{error}\n")
     commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True, text=True,
                             cwd=Path(__file__).parent).stdout.strip()
     print(f"machine: {platform.machine()}, {os.cpu_count()} cores, load average {os.getloadavg()[0]:.1f}; "
           f"commit {commit}; {time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime())}")
-    registry = registry or Registry.from_entry_points()
-    plans = {p: pipeline.plan(parse_config(load_raw_config(find_config(p)), p), registry, p) for p in args.presets}
     columns = ("cover", "flow/poly", "flow/m2", "ceiling", "heat", "paired", "node rho", "samples", "s flow")
     print(f"{'level':<16} {'symmetry':<9} {'mesh err':>8} {'preset':<22} {'nodes':>6} "
           + " ".join(f"{c:>9}" for c in columns) + f" {'cpu s':>7}")
-    generate: dict[str, Callable] = KINDS
     for name in args.levels:
         for seed in args.seeds:
-            mesh = generate[name](seed)
+            mesh = KINDS[name](seed)
             lo, hi = mesh.bounds
             centre = np.array([(lo[0] + hi[0]) / 2, (lo[2] + hi[2]) / 2])
             symmetry = SYMMETRIES[name]
