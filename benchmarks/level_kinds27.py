@@ -1,0 +1,302 @@
+"""Level kinds of the twenty-seventh held-out round (issue 9): generators no preset setting was made on.
+
+Six kinds of shipped game levels that stress what no earlier round did, each about 400-1,200 navmesh polygons with the
+presets' agent (radius 0.5 m, height 2 m, climb 0.4 m, slope 45 degrees), seeds 0-2, built from the solids and
+helpers of ``benchmarks/level_kinds.py`` (imported, not copied): ``container_maze`` (blocks of shipping containers one
+walks *through*, their ends open or shut, a second tier of short containers on some roofs, the roofs joined by planks
+and reached by two flights), ``listing_ferry`` (a ferry's car deck, cabin deck and open deck, the whole ship rolled
+8-14 degrees and pitched 1-3: no floor level, no wall upright), ``pipe_network`` (round sewer pipes whose walkable
+width is set by the slope of their curved floors and the head room under their curved tops, chambers at their
+crossings, under a street), ``boardwalk`` (a marsh with no ground crossed by boardwalks at any angle, each thousands of
+planks with gaps of 1-3 cm, platforms, bird hides), ``car_lot`` (a surface car park whose cars stand with gaps of
+0.3-1.3 m, about the agent's 1 m width, so a row is a wall or not by chance) and ``festival_camp`` (a field of
+marquees at random angles, each a room entered by one door, small tents, stages, stalls inside a fence with gates).
+
+Run: ``.venv/bin/python benchmarks/level_kinds27.py OUT_DIR [--kinds boardwalk car_lot] [--seeds 0 1 2]`` writes
+``OUT_DIR/<kind>_s<seed>.obj``; ``benchmarks/analysis_quality.py --levels`` takes the kinds' names too.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+
+import numpy as np
+import trimesh
+from level_kinds import _car, _ridged, _Solids, _stair_tower, _well_length
+from level_kinds import main as write_kinds
+from scipy.sparse.csgraph import minimum_spanning_tree
+from scipy.spatial import Delaunay
+
+CONTAINER = (12.2, 2.44, 2.59)
+"""A 40-foot container's length, width and height (m); a 20-foot one is half as long."""
+
+
+def _container(s: _Solids, x0: float, z0: float, y: float, length: float, ends: tuple[bool, bool]) -> None:
+    """A container along x from plan point (x0, z0) (its south-west corner) on a floor at ``y``: a floor 0.15 m thick
+    on top of ``y``, side walls and a roof 0.1 m thick (2.24 m clear inside, 2.34 m of head room), and at each end
+    (west, east) a door wall when ``ends`` says shut, nothing when open (the doors swung back against the sides)."""
+    _, width, height = CONTAINER
+    x1, z1, top = x0 + length, z0 + width, y + height
+    s.box(x0, x1, y, y + 0.15, z0, z1)
+    s.box(x0, x1, top - 0.1, top, z0, z1)
+    for z in (z0, z1 - 0.1):
+        s.box(x0, x1, y, top, z, z + 0.1)
+    for x, shut in ((x0, ends[0]), (x1 - 0.1, ends[1])):
+        if shut:
+            s.box(x, x + 0.1, y, top, z0, z1)
+
+
+def container_maze(seed: int) -> trimesh.Trimesh:
+    """A container yard (a shooter's "shipment" map) 4-5 x 4-5 blocks of 40-foot containers (12.2 x 2.44 x 2.59 m)
+    laid side by side, 2-4 to a block, lanes 3-5 m wide between the blocks, on flat ground with a fence 3 m high round
+    it. Each container's west end is open with a chance of 0.7, else shut by its doors, and its east end then open
+    with a chance of 0.7 (never both shut: a shut box keeps a floor inside it one cannot reach), so most are
+    tunnels one walks through (1.24 m wide for the agent); a 20-foot container stands on the west half of up to two
+    of a block's roofs (never on its southmost), its west end (over the lane) shut, its east end open onto the roof,
+    under a tarpaulin ridged at 50 degrees (no floor on top). The blocks' roofs (2.59 m up) are one walk: planks 2 m wide
+    across the lanes join neighbouring blocks along a spanning tree of the blocks' grid and 30 % of the other
+    neighbours, and two flights (riser 0.152 m) climb from the ground head-on to a block's end on the west and on the east edge
+    (the container under the flight's head open at its other end).
+
+    Expected (written before the first run): one area (ground, tunnels and roofs; a tunnel with both ends shut is a
+    closed box; none is built). Traffic highest on the lanes through the middle of the yard and on the open tunnels that
+    cut a block's length, lowest in tunnels open at one end only (dead ends) and on roofs far from the flights. A
+    designer expects the structure to pass through open tunnels (an edge along each one walked, never through a shut
+    end or a side wall), to show the roof walk as a layer over the lanes joined only at the flights, and no structure
+    in a shut container."""
+    rng = np.random.default_rng(seed)
+    length, width, height = CONTAINER
+    nbx, nbz = int(rng.integers(4, 6)), int(rng.integers(4, 6))
+    wide = rng.integers(2, 5, size=(nbx, nbz))
+    lanes_x = rng.uniform(3.0, 5.0, size=nbx + 1)
+    lanes_x[[0, -1]] = 7.0  # room for a flight 5.2 m long at both ends
+    lanes_z = rng.uniform(3.0, 5.0, size=nbz + 1)
+    xs = lanes_x[0] + np.concatenate([[0.0], np.cumsum(length + lanes_x[1:-1])])  # each block column's west end
+    row_depth = wide.max(axis=0) * width
+    zs = lanes_z[0] + np.concatenate([[0.0], np.cumsum(row_depth[:-1] + lanes_z[1:-1])])  # each block row's south side
+    size_x, size_z = xs[-1] + length + lanes_x[-1], zs[-1] + row_depth[-1] + lanes_z[-1]
+    s = _Solids()
+    s.box(-1.0, size_x + 1.0, -0.5, 0.0, -1.0, size_z + 1.0)
+    for a, b in (((0.0, 0.0), (size_x, 0.0)), ((0.0, size_z), (size_x, size_z)), ((0.0, 0.0), (0.0, size_z)),
+                 ((size_x, 0.0), (size_x, size_z))):
+        s.wall(a, b, 0.0, 3.0, thickness=0.2)
+    flights = []  # (block column, row, slot, heading): one up to a west end on the west edge, one to an east end
+    for i, heading in ((0, 1.0), (nbx - 1, -1.0)):
+        j = int(rng.integers(nbz))
+        flights.append((i, j, int(rng.integers(int(wide[i, j]))), heading))
+    upper: dict[tuple[int, int], set[int]] = {}  # block -> slots holding a 20-foot container on the roof
+    for i in range(nbx):
+        for j in range(nbz):
+            for k in range(int(wide[i, j])):
+                west_shut = bool(rng.random() > 0.7)  # never both ends shut: a shut box keeps floor inside
+                east_shut = not west_shut and rng.random() > 0.7
+                if (i, j, k, 1.0) in flights or (i, j, k, -1.0) in flights:  # a flight blocks one end: the other opens
+                    west_shut = east_shut = False
+                _container(s, xs[i], zs[j] + k * width, 0.0, length, (west_shut, east_shut))
+            slots = 1 + rng.permutation(int(wide[i, j]) - 1)[:int(rng.integers(0, 3))]  # slot 0 stays free for planks
+            upper[(i, j)] = {int(k) for k in slots}
+            for k in upper[(i, j)]:
+                _container(s, xs[i], zs[j] + k * width, height, length / 2, (True, False))
+                _ridged(s, xs[i], xs[i] + length / 2, zs[j] + k * width, zs[j] + (k + 1) * width, 2 * height - 0.1,
+                        2 * height + 0.6)  # a tarpaulin over the upper container: its roof is no floor
+    node = np.arange(nbx * nbz).reshape(nbx, nbz)
+    pairs = [(node[i, j], node[i + 1, j]) for i in range(nbx - 1) for j in range(nbz)]
+    pairs += [(node[i, j], node[i, j + 1]) for i in range(nbx) for j in range(nbz - 1)]
+    weights = np.zeros((nbx * nbz, nbx * nbz))
+    for a, b in pairs:
+        weights[a, b] = rng.uniform(1.0, 2.0)
+    tree = minimum_spanning_tree(weights).toarray() > 0
+    for a, b in pairs:
+        if not (tree[a, b] or tree[b, a] or rng.random() < 0.3):
+            continue
+        (ia, ja), (ib, jb) = divmod(int(a), nbz), divmod(int(b), nbz)
+        if ia != ib:  # across the lane east of block a, into block b's west end at a slot with no upper container
+            reach = min(int(wide[ia, ja]), int(wide[ib, jb]))
+            free = [k for k in range(reach) if k not in upper[(ib, jb)]]
+            zc = zs[ja] + (int(rng.choice(free)) + 0.5) * width
+            s.box(xs[ia] + length - 0.3, xs[ib] + 0.3, height - 0.1, height, zc - 1.0, zc + 1.0)
+        else:  # across the lane north of block a, on the roofs' east halves
+            xc = float(rng.uniform(xs[ia] + length / 2 + 1.5, xs[ia] + length - 1.5))
+            s.box(xc - 1.0, xc + 1.0, height - 0.1, height, zs[ja] + wide[ia, ja] * width - 0.3, zs[jb] + 0.3)
+    for i, j, k, heading in flights:
+        end = xs[i] if heading > 0 else xs[i] + length
+        s.stairs(np.array([end - heading * 17 * 0.3, zs[j] + (k + 0.5) * width]), np.array([heading, 0.0]), 1.6, 0.0,
+                 height, height / 17)
+    return s.mesh()
+
+
+def listing_ferry(seed: int, roll: tuple[float, float] = (8.0, 14.0)) -> trimesh.Trimesh:
+    """A ro-ro ferry 110-130 m long and 20-22 m wide (a sinking-ship level) built upright and then rolled ``roll``
+    degrees (8-14, to port or starboard) about its long axis and pitched 1-3 degrees about its beam: a car deck at 0 m
+    (cars in four lanes, the bow and stern doors shut), a cabin deck at 4 m (a lounge along the south side round the stair towers, a corridor 2 m
+    wide along the ship entered from it by four doors 2.4 m wide, cabins 3 m wide and 5.2-7.2 m deep north of the
+    corridor through doors 1.5 m wide, a boxed two-tier bunk in each), an
+    open deck at 8 m (lifeboats on chocks along both sides but in front of the towers' doors, benches, a rail 1.1 m high), and two switchback stair
+    towers (:func:`level_kinds._stair_tower`, storeys 4 m) amidships fore and aft, a door onto each deck. Every floor
+    is sloped 8-14 degrees across the ship, every wall leans; a step of the flights climbs 0.15 m plus or minus
+    0.04-0.07 m. ``roll=(0, 0)`` builds the same ship upright but for its pitch.
+
+    Expected (written before the first run): one area (all slopes under 45 degrees, every step under the climb). A
+    designer expects the same reading as the ship upright: traffic highest in the two stair towers and the lounge
+    between them, then the corridors, lowest in the cabins (dead ends) and the car deck's far corners; the
+    structure one path along the corridor with a short spur into each cabin or a cover of several, and nothing
+    through a leaning wall."""
+    rng = np.random.default_rng(seed)
+    length, beam = float(rng.uniform(110.0, 130.0)), float(rng.uniform(20.0, 22.0))
+    storey, well = 4.0, _well_length(4.0)
+    s = _Solids()
+    towers = [float(rng.uniform(length * 0.25, length * 0.3)), float(rng.uniform(length * 0.65, length * 0.7))]
+    z_tower = 5.0  # each tower's doors face south, onto the lounge and the car deck's south lane
+    tower_plans = [(x0 - 0.4, x0 + 4.4, z_tower, z_tower + well + 0.4) for x0 in towers]  # the decks run under the doors
+    s.box(0.0, length, -0.3, 0.0, 0.0, beam)
+    for y in (storey, 2 * storey):
+        s.slab(0.0, length, 0.0, beam, y, tower_plans)
+    for x0 in towers:
+        _stair_tower(s, x0, z_tower, 0.0, 2, (0, 1, 2), storey)
+    for z in (0.0, beam):  # the hull's sides up to the open deck's rail, its bow and stern
+        s.wall((0.0, z), (length, z), -0.3, 2 * storey + 1.1, thickness=0.3)
+    for x in (0.0, length):
+        s.wall((x, 0.0), (x, beam), -0.3, 2 * storey + 1.1, thickness=0.3)
+    for lane in range(4):  # the car deck: cars nose to tail in four lanes, leaving the towers' feet clear
+        zc = 1.5 + (beam - 3.0) * (lane + 0.5) / 4
+        x = 2.0
+        while x < length - 6.5:
+            car = (x, x + float(rng.uniform(4.2, 4.9)), zc - 0.9, zc + 0.9)
+            clear = all(car[1] < p[0] - 1.5 or p[1] + 1.5 + 3.0 < car[0] or car[3] < p[2] - 1.0 or p[3] < car[2]
+                        for p in tower_plans)
+            if clear and rng.random() < 0.8:
+                _car(s, *car, 0.0)
+            x = car[1] + float(rng.uniform(0.6, 1.2))
+    y = storey  # the cabin deck: a lounge round the towers (their doors face it), a corridor, cabins to the north
+    lounge_wall, cabin_wall = z_tower + well + 0.6, z_tower + well + 2.6
+    s.wall((0.0, lounge_wall), (length, lounge_wall), y, y + storey,
+           [(float(d), 2.4) for d in rng.uniform(3.0, length - 5.4, size=4)], thickness=0.15)
+    s.wall((3.0, cabin_wall), (length - 3.0, cabin_wall), y, y + storey,
+           [(float(x) + 0.75, 1.5) for x in np.arange(0.0, length - 8.9, 3.0)], thickness=0.15)
+    for x in np.arange(3.0, length - 2.9, 3.0):  # the cabins' walls and a two-tier bunk, boxed in to 2.1 m, along each west wall
+        s.wall((float(x), cabin_wall), (float(x), beam), y, y + storey, thickness=0.15)
+        if x < length - 5.9:
+            s.box(float(x) + 0.1, float(x) + 1.0, y, y + 2.1, cabin_wall + 1.3, beam - 0.2)  # 1.6 m under the deck
+    for _ in range(int(rng.integers(8, 13))):  # lounge tables, clear of the towers and their doors
+        x, z = float(rng.uniform(2.0, length - 3.2)), float(rng.uniform(0.5, lounge_wall - 1.7))
+        if all(x + 1.2 < p[0] - 1.0 or p[1] + 1.0 < x or z + 1.2 < p[2] - 2.0 or p[3] < z for p in tower_plans):
+            s.box(x, x + 1.2, y, y + 0.75, z, z + 1.2)
+    y = 2 * storey  # the open deck: lifeboats on chocks along both sides, benches amidships
+    for z0, z1 in ((0.8, 3.0), (beam - 3.0, beam - 0.8)):
+        for x in np.arange(6.0, length - 12.0, 12.0):
+            if z0 > 1.0 or all(x + 8.0 < p[0] - 2.0 or p[1] + 2.0 < x for p in tower_plans):  # none by a door
+                _ridged(s, float(x), float(x) + 8.0, z0, z1, y, y + 1.2)
+    for _ in range(int(rng.integers(6, 10))):
+        x, z = float(rng.uniform(4.0, length - 7.0)), float(rng.uniform(4.5, beam - 5.5))
+        if all(x + 2.5 < p[0] - 1.0 or p[1] + 1.0 < x or z + 0.6 < p[2] - 1.0 or p[3] + 1.0 < z for p in tower_plans):
+            s.box(x, x + 2.5, y, y + 0.45, z, z + 0.6)
+    mesh = s.mesh()
+    tilt = trimesh.transformations.rotation_matrix(math.radians(float(rng.uniform(*roll)) * rng.choice([-1.0, 1.0])),
+                                                   [1.0, 0.0, 0.0], [length / 2, 0.0, beam / 2])
+    pitch = trimesh.transformations.rotation_matrix(math.radians(float(rng.uniform(1.0, 3.0))), [0.0, 0.0, 1.0],
+                                                    [length / 2, 0.0, beam / 2])
+    return mesh.apply_transform(pitch @ tilt)
+
+
+def _pipe(s: _Solids, a: np.ndarray, b: np.ndarray, radius: float, floor: float, staves: int = 18) -> None:
+    """A round pipe along x or z from plan point ``a`` to ``b`` whose inside is ``radius`` m round, its lowest point
+    at ``floor``: ``staves`` plates 0.15 m thick (one convex body each, 360 / staves degrees of the ring), the bottom
+    one flat, so the plates tilt 0, 20, 40, 60 ... degrees for 18 staves (floor up to 40 degrees, walls beyond)."""
+    a, b = np.asarray(a, dtype=np.float64), np.asarray(b, dtype=np.float64)
+    along = (b - a) / np.linalg.norm(b - a)
+    side = np.array([-along[1], along[0]])
+    centre = floor + radius * math.cos(math.pi / staves)  # the bottom plate's inner face lies at ``floor``
+    step = 2 * math.pi / staves
+    for k in range(staves):
+        ring = []
+        for angle in ((k - 0.5) * step, (k + 0.5) * step):  # angles from straight down, round the pipe
+            for r in (radius, radius + 0.15 / math.cos(step / 2)):
+                offset, up = r * math.sin(angle), -r * math.cos(angle)
+                ring += [[p[0] + side[0] * offset, centre + up, p[1] + side[1] * offset] for p in (a, b)]
+        s.hull(np.array(ring))
+
+
+def pipe_network(seed: int) -> trimesh.Trimesh:
+    """A storm-drain network (a sewer level) under a street: a grid of 7-8 x 5-6 chambers 5 m square (floor at 0 m,
+    walls 0.3 m thick) 15-19 m apart, joined by round pipes (:func:`_pipe`, 18 staves) along a spanning tree of the
+    grid's edges and 40 % of the rest, each 1.6-1.9 m round inside: the pipe's floor is the plates at 0, 20 and 40
+    degrees, about 2.1-2.5 m wide, and the head room under its curved top falls under the agent's 2 m beyond 1.0-1.4 m
+    from its middle, so the walkable lane is set by the curve, not by a wall. The western chambers open through outfall pipes onto a yard at the chambers'
+    floor (an open channel bank 12 m wide); a street 0.5 m thick lies 0.35 m over the pipes' tops and covers the
+    chambers, reached from the yard by a ramp 24 m long (about 11 degrees) to a landing at its edge; a few kiosks
+    stand on the street.
+
+    Expected (written before the first run): one area (yard, pipes, chambers and street). Traffic highest on the street (most of the area, walked end to end) and on the ramp, then in the
+    western chambers and the pipes that join the outfalls to the rest, lowest in the far chambers on spurs of the
+    tree. A designer expects the structure to follow each pipe along its middle (one edge down a straight pipe, no
+    node on its curved walls), a node in each chamber where pipes meet, and nothing under the street joined to the
+    street but through the yard and the ramp."""
+    rng = np.random.default_rng(seed)
+    nx, nz = int(rng.integers(7, 9)), int(rng.integers(5, 7))
+    pitch = float(rng.uniform(15.0, 19.0))
+    yard = 12.0
+    xs, zs = yard + 4.0 + pitch * np.arange(nx), 4.0 + pitch * np.arange(nz)  # the chambers' centres
+    size_x, size_z = xs[-1] + 6.0, zs[-1] + 6.0
+    radius_max = 1.9
+    street = 2 * radius_max + 0.15 + 0.35 + 0.5  # its top; 0.35 m of void between the widest pipe and its underside
+    s = _Solids()
+    s.box(0.0, yard, -0.5, 0.0, 0.0, size_z)  # the yard; under the street only the chambers and pipes hold floor
+    node = np.arange(nx * nz).reshape(nx, nz)
+    edges = [(node[i, j], node[i + 1, j]) for i in range(nx - 1) for j in range(nz)]
+    edges += [(node[i, j], node[i, j + 1]) for i in range(nx) for j in range(nz - 1)]
+    weights = np.zeros((nx * nz, nx * nz))
+    for a, b in edges:
+        weights[a, b] = rng.uniform(1.0, 2.0)
+    tree = minimum_spanning_tree(weights).toarray() > 0
+    openings: dict[tuple[int, str], float] = {}  # (chamber, side) -> the radius of the pipe through that wall
+    pipes: list[tuple[np.ndarray, np.ndarray, float]] = []
+    for a, b in edges:
+        (ia, ja), (ib, jb) = divmod(int(a), nz), divmod(int(b), nz)
+        if not (tree[a, b] or tree[b, a] or rng.random() < 0.4):
+            continue
+        radius = float(rng.uniform(1.6, 1.9))
+        along_x = ia != ib
+        pa = np.array([xs[ia] + 2.5, zs[ja]]) if along_x else np.array([xs[ia], zs[ja] + 2.5])
+        pb = np.array([xs[ib] - 2.5, zs[jb]]) if along_x else np.array([xs[ib], zs[jb] - 2.5])
+        pipes.append((pa, pb, radius))
+        openings[(int(a), "east" if along_x else "north")] = radius
+        openings[(int(b), "west" if along_x else "south")] = radius
+    for j in range(nz):  # each western chamber's outfall to the yard
+        radius = float(rng.uniform(1.6, 1.9))
+        pipes.append((np.array([yard, zs[j]]), np.array([xs[0] - 2.5, zs[j]]), radius))
+        openings[(int(node[0, j]), "west")] = radius
+    for pa, pb, radius in pipes:
+        _pipe(s, pa, pb, radius, 0.0)
+    top = street - 0.5  # the street's underside: the chambers' walls rise to it
+    for i in range(nx):
+        for j in range(nz):
+            x0, x1, z0, z1 = xs[i] - 2.5, xs[i] + 2.5, zs[j] - 2.5, zs[j] + 2.5
+            s.box(x0, x1, -0.5, 0.0, z0, z1)
+            for side, a, b in (("south", (x0, z0), (x1, z0)), ("north", (x0, z1), (x1, z1)),
+                               ("west", (x0, z0), (x0, z1)), ("east", (x1, z0), (x1, z1))):
+                radius = openings.get((int(node[i, j]), side))
+                gap = [] if radius is None else [(2.5 - radius, 2 * radius)]
+                s.wall(a, b, 0.0, top, gap, thickness=0.3)  # the pipe's own plates close the gap above its mouth
+    s.box(yard, size_x, top, street, 0.0, size_z)
+    s.wall((yard, 0.0), (yard, size_z), 0.0, top, [(zs[j] - 1.9, 3.8) for j in range(nz)], thickness=0.3)
+    for j in range(nz):  # the retaining wall over each outfall's mouth, down to the pipe's top
+        s.box(yard - 0.15, yard + 0.15, 2 * radius_max + 0.15, top, zs[j] - 1.9, zs[j] + 1.9)
+    ramp_z0 = float(rng.uniform(2.0, size_z - 32.0))
+    s.ramp(np.array([yard - 3.0, ramp_z0]), np.array([yard - 3.0, ramp_z0 + 24.0]), 3.0, 0.0, street)
+    s.box(yard - 4.5, yard + 0.3, street - 0.3, street, ramp_z0 + 24.0, ramp_z0 + 27.0)  # the landing onto the street
+    for _ in range(int(rng.integers(4, 8))):
+        x, z = float(rng.uniform(yard + 3.0, size_x - 5.0)), float(rng.uniform(2.0, size_z - 4.0))
+        _ridged(s, x, x + 3.0, z, z + 2.0, street - 0.1, street + 2.5)
+    return s.mesh()
+
+
+KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
+    "container_maze": container_maze, "listing_ferry": listing_ferry,
+    "pipe_network": pipe_network,
+}
+"""Kind name -> generator (seed -> Y-up mesh in metres) of the twenty-seventh round."""
+
+
+if __name__ == "__main__":
+    write_kinds(kinds=KINDS, description=__doc__.splitlines()[0])
