@@ -291,9 +291,99 @@ def pipe_network(seed: int) -> trimesh.Trimesh:
     return s.mesh()
 
 
+def _plank_walk(s: _Solids, rng: np.random.Generator, a: np.ndarray, b: np.ndarray, ya: float, yb: float,
+                width: float) -> None:
+    """A boardwalk ``width`` m wide from plan point ``a`` (its top at ``ya``) to ``b`` (at ``yb``): planks across it
+    0.25-0.3 m wide and 0.05 m thick with gaps of 0.01-0.03 m between them, each one convex body, on joists (two
+    beams 0.1 m square along its edges, 0.05 m under the planks)."""
+    a, b = np.asarray(a, dtype=np.float64), np.asarray(b, dtype=np.float64)
+    span = float(np.linalg.norm(b - a))
+    along = (b - a) / span
+    side = np.array([-along[1], along[0]]) * width / 2
+    t = 0.0
+    while t < span:
+        t1 = min(t + float(rng.uniform(0.25, 0.3)), span)
+        y0, y1 = ya + (yb - ya) * t / span, ya + (yb - ya) * t1 / span
+        p0, p1 = a + along * t, a + along * t1
+        s.hull(np.array([[p[0] + sg * side[0], y + dy, p[1] + sg * side[1]]
+                         for p, y in ((p0, y0), (p1, y1)) for sg in (-1, 1) for dy in (-0.05, 0.0)]))
+        t = t1 + float(rng.uniform(0.01, 0.03))
+    for sg in (-0.9, 0.9):
+        e0, e1 = a + sg * side, b + sg * side
+        s.hull(np.array([[e[0] + dx, y + dy, e[1] + dz] for e, y in ((e0, ya), (e1, yb))
+                         for dx, dz in ((0.05, 0.05), (-0.05, -0.05), (0.05, -0.05), (-0.05, 0.05)) for dy in (-0.15, -0.05)]))
+
+
+def boardwalk(seed: int) -> trimesh.Trimesh:
+    """A marsh nature reserve 200-220 x 160-180 m with no ground to walk (open water and reeds): 36-44 platforms (18 m apart at least,
+    (octagons 5-8 m across, decks 0.5-1.2 m over the water) joined by boardwalks 2.2-2.6 m wide (:func:`_plank_walk`:
+    planks with gaps of 1-3 cm, each one solid, at whatever angle the two platforms lie) along the Delaunay
+    triangulation's minimum spanning tree and 35 % of its other edges whose walk is 8 m or longer, each walk sloping gently
+    from one platform's height to the other's; a visitor centre's forecourt (20 x 14 m of ground) on the south shore
+    joined to the nearest platform; bird hides (a room 3 m square, walls 2.4 m, roofed, one door 1.6 m wide facing the walk) on
+    three dead-end platforms. Every walking surface but the forecourt is planks.
+
+    Expected (written before the first run): one area (thousands of separate planks read as one deck: their gaps are
+    a tenth of Recast's cell). Traffic highest on the walks of the tree's trunk between the forecourt and the
+    middle of the marsh, lowest on the far platforms and in the hides; the structure should run along each walk's
+    middle, one edge or a few per straight walk, and through each hide's door, never across the water between two
+    walks."""
+    rng = np.random.default_rng(seed)
+    size_x, size_z = float(rng.uniform(200.0, 220.0)), float(rng.uniform(160.0, 180.0))
+    centres: list[np.ndarray] = []
+    for _ in range(3000):
+        if len(centres) == int(rng.integers(36, 45)):
+            break
+        c = np.array([rng.uniform(8.0, size_x - 8.0), rng.uniform(24.0, size_z - 8.0)])
+        if all(np.linalg.norm(c - o) > 18.0 for o in centres):
+            centres.append(c)
+    points = np.array(centres)
+    radii = rng.uniform(2.5, 4.0, len(points))
+    heights = rng.uniform(0.5, 1.2, len(points))
+    triangles = Delaunay(points).simplices
+    pairs = {tuple(sorted((int(p), int(q)))) for tri in triangles for p, q in ((tri[0], tri[1]), (tri[1], tri[2]), (tri[0], tri[2]))}
+    weights = np.zeros((len(points), len(points)))
+    for p, q in pairs:
+        weights[p, q] = np.linalg.norm(points[p] - points[q])
+    tree = minimum_spanning_tree(weights).toarray() > 0
+    s = _Solids()
+    walks: dict[int, list[np.ndarray]] = {k: [] for k in range(len(points))}  # each platform's walks' headings
+    for c, r, y in zip(points, radii, heights):
+        s.prism(c + r * np.array([[math.cos(a), math.sin(a)] for a in (np.arange(8) + 0.5) * math.pi / 4]), y - 0.3, y)
+    for p, q in sorted(pairs):
+        gap = weights[p, q] - radii[p] - radii[q]
+        if not (tree[p, q] or tree[q, p] or (gap >= 8.0 and rng.random() < 0.35)):
+            continue
+        u = (points[q] - points[p]) / weights[p, q]
+        walks[p].append(u)
+        walks[q].append(-u)
+        _plank_walk(s, rng, points[p] + u * (radii[p] - 0.5), points[q] - u * (radii[q] - 0.5), heights[p], heights[q],
+                    float(rng.uniform(2.2, 2.6)))
+    forecourt = np.array([size_x / 2, 8.0])
+    s.box(forecourt[0] - 10.0, forecourt[0] + 10.0, -0.5, 0.3, 4.0, 15.0)
+    nearest = int(np.argmin(np.linalg.norm(points - forecourt, axis=1)))
+    start = np.array([np.clip(points[nearest][0], forecourt[0] - 8.0, forecourt[0] + 8.0), 14.7])  # its north edge
+    u = points[nearest] - start
+    u = u / np.linalg.norm(u)
+    _plank_walk(s, rng, start, points[nearest] - u * (radii[nearest] - 0.5), 0.3, heights[nearest], 2.4)
+    _ridged(s, forecourt[0] - 6.0, forecourt[0] + 6.0, 1.0, 4.0, -0.5, 4.0)  # the visitor centre, closed
+    leaves = [k for k in range(len(points)) if len(walks[k]) == 1]
+    for k in rng.permutation(leaves)[:3]:  # hides: a room 3 m square on a dead-end platform, away from its one walk
+        c, y, u = points[k], heights[k], walks[k][0]
+        x0, z0 = c - u * 1.2 - 1.5
+        x1, z1 = x0 + 3.0, z0 + 3.0
+        door = int(np.argmax(np.abs(u)))  # its door in the wall facing the walk
+        for side, (a, b) in ((0, ((x0, z0), (x0, z1))), (0, ((x1, z0), (x1, z1))), (1, ((x0, z0), (x1, z0))),
+                             (1, ((x0, z1), (x1, z1)))):
+            facing = side == door and (a[side] - c[side]) * u[side] > 0
+            s.wall(a, b, y, y + 2.4, [(0.7, 1.6)] if facing else [], thickness=0.15)
+        _ridged(s, x0 - 0.2, x1 + 0.2, z0 - 0.2, z1 + 0.2, y + 2.4, y + 2.5)
+    return s.mesh()
+
+
 KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
     "container_maze": container_maze, "listing_ferry": listing_ferry,
-    "pipe_network": pipe_network,
+    "pipe_network": pipe_network, "boardwalk": boardwalk,
 }
 """Kind name -> generator (seed -> Y-up mesh in metres) of the twenty-seventh round."""
 
