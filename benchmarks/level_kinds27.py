@@ -381,9 +381,138 @@ def boardwalk(seed: int) -> trimesh.Trimesh:
     return s.mesh()
 
 
+def car_lot(seed: int) -> trimesh.Trimesh:
+    """A supermarket's surface car park 90-100 x 60-70 m: 5 double rows of bays 2.5 m wide and 5 m deep along x,
+    nose to nose over a kerb 0.15 m high, aisles 6.5 m wide between the double rows, a footway 4 m wide along the
+    shop's front (north) with its two doors, a fence round the rest with two road gates. A car stands in 75-95 % of
+    the bays: 1.75-1.95 m wide and 4.2-4.9 m long, off the bay's middle by up to 0.3 m across and turned up to 4
+    degrees (a hull ridged 1.4 m up, :func:`level_kinds._car`'s shape at an angle), so the gaps between neighbours
+    are 0.3-1.3 m, about the agent's 1 m: whether a walker slips between two cars is chance.
+
+    Expected (written before the first run): one area (the aisles join at both ends of every row). Traffic highest
+    on the footway between the doors and along the aisles' ends (the walk from any bay to the shop goes down its
+    aisle to the footway), lowest in the rows' middles far from the shop; walkers squeeze between cars where a gap
+    opens, so a designer expects the structure along each aisle's middle and a few edges through the rows where
+    gaps are, none through a car."""
+    rng = np.random.default_rng(seed)
+    length, rows = float(rng.uniform(90.0, 100.0)), 5
+    s = _Solids()
+    depth = 4.0 + rows * 10.0 + (rows + 1) * 6.5 + 4.0
+    s.box(-1.0, length + 1.0, -0.5, 0.0, -1.0, depth + 1.0)
+    s.wall((0.0, 0.0), (length, 0.0), 0.0, 2.0, [(float(rng.uniform(5.0, length / 2 - 12.0)), 7.0),
+                                                   (float(rng.uniform(length / 2, length - 12.0)), 7.0)], thickness=0.1)
+    for x in (0.0, length):
+        s.wall((x, 0.0), (x, depth), 0.0, 2.0, thickness=0.1)
+    shop = depth
+    s.wall((0.0, shop), (length, shop), 0.0, 6.0, [(length * 0.3, 3.0), (length * 0.65, 3.0)], thickness=0.3)
+    s.box(length * 0.3 - 1.0, length * 0.65 + 4.0, 0.0, 0.15, shop + 0.15, shop + 20.0)  # the shop floor, a step up
+    s.wall((length * 0.3 - 1.0, shop + 20.0), (length * 0.65 + 4.0, shop + 20.0), 0.0, 6.0, thickness=0.3)
+    for x in (length * 0.3 - 1.0, length * 0.65 + 4.0):
+        s.wall((x, shop), (x, shop + 20.0), 0.0, 6.0, thickness=0.3)
+    for r in range(rows):
+        z_kerb = 6.5 + r * 16.5 + 5.0  # the double row's middle: bays 5 m deep on each side of the kerb
+        s.box(6.0, length - 6.0, 0.0, 0.15, z_kerb - 0.3, z_kerb + 0.3)
+        for side in (-1.0, 1.0):
+            for x in np.arange(6.0, length - 8.4, 2.5):
+                if rng.random() > rng.uniform(0.75, 0.95):
+                    continue
+                w, l = float(rng.uniform(1.75, 1.95)), float(rng.uniform(4.2, 4.9))
+                centre = np.array([x + 1.25 + rng.uniform(-0.3, 0.3), z_kerb + side * (0.3 + 2.5)])
+                angle = math.pi / 2 + math.radians(float(rng.uniform(-4.0, 4.0)))
+                u, v = np.array([math.cos(angle), math.sin(angle)]), np.array([-math.sin(angle), math.cos(angle)])
+                corners = [centre + su * l / 2 * u + sv * w / 2 * v for su in (-1, 1) for sv in (-1, 1)]
+                ridge = [centre + su * l / 2 * u for su in (-1, 1)]
+                s.hull(np.array([[p[0], -0.3, p[1]] for p in corners] + [[p[0], 1.4, p[1]] for p in ridge]))
+    for _ in range(int(rng.integers(6, 10))):  # trolley bays and lamp posts in the aisles' ends
+        x, z = float(rng.choice([2.0, length - 4.0])), float(rng.uniform(2.0, depth - 6.0))
+        s.box(x, x + 0.4, 0.0, 5.0, z, z + 0.4)
+    return s.mesh()
+
+
+def festival_camp(seed: int) -> trimesh.Trimesh:
+    """A music festival's camp field 130-150 x 100-110 m inside a fence 2 m high with three gates: 40-50 marquees
+    (4-7 x 5-9 m, canvas walls 0.05 m thick and 2.3 m high under a roof ridged at 50 degrees, one door 2.2 m wide in
+    a gable end) each turned to a random angle, 120-160 small tents (closed hulls 2.2-3 x 1.4-2.4 m, 1.2 m high, at
+    any angle, 0.8 m clear of one another), two stages (ridged blocks 12 x 8 m one does not climb) with a standing
+    area before each, and a row of food stalls (closed, ridged). Every marquee is a room at an angle to the axes,
+    entered by its one door, a dead end.
+
+    Expected (written before the first run): one area (every marquee's door 2.2 m wide, wider than the 2 m an angled
+    door needs). Traffic highest between the gates and the stages' standing areas, lowest inside the marquees and
+    among the small tents at the far corners; a designer expects the structure to enter each marquee through its door
+    (or to cover it from outside through the door), never through canvas, and to weave between the small tents."""
+    rng = np.random.default_rng(seed)
+    size_x, size_z = float(rng.uniform(130.0, 150.0)), float(rng.uniform(100.0, 110.0))
+    s = _Solids()
+    s.wall((0.0, 0.0), (size_x, 0.0), 0.0, 2.0, [(float(rng.uniform(10.0, size_x - 20.0)), 6.0)], thickness=0.1)
+    s.wall((0.0, size_z), (size_x, size_z), 0.0, 2.0, [(float(rng.uniform(10.0, size_x - 20.0)), 6.0)], thickness=0.1)
+    s.wall((0.0, 0.0), (0.0, size_z), 0.0, 2.0, [(float(rng.uniform(10.0, size_z - 20.0)), 6.0)], thickness=0.1)
+    s.wall((size_x, 0.0), (size_x, size_z), 0.0, 2.0, thickness=0.1)
+    taken: list[tuple[np.ndarray, float]] = []  # (centre, clearance radius) of everything placed
+    closed: list[tuple[float, float, float, float]] = []  # plans of the closed solids the ground stops under
+
+    def free(c: np.ndarray, r: float) -> bool:
+        return all(np.linalg.norm(c - o) > r + ro for o, ro in taken) and r + 1.5 < min(c[0], c[1], size_x - c[0], size_z - c[1])
+
+    for x0 in (float(rng.uniform(10.0, size_x / 2 - 25.0)), float(rng.uniform(size_x / 2 + 5.0, size_x - 25.0))):
+        z0 = size_z - 12.0
+        closed.append(_ridged(s, x0, x0 + 12.0, z0, z0 + 8.0, -0.5, 1.5))  # a stage; its standing area kept clear
+        taken += [(np.array([x0 + 6.0, z0 + 4.0]), 7.5), (np.array([x0 + 6.0, z0 - 9.0]), 9.0)]
+    x = float(rng.uniform(20.0, size_x - 60.0))
+    for k in range(8):  # the food stalls in a row along the south fence
+        closed.append(_ridged(s, x + 5.0 * k, x + 5.0 * k + 3.5, 3.0, 6.0, -0.5, 2.4))
+    taken += [(np.array([x + 20.0, 4.5]), 21.0)]
+    s.ground(-1.0, size_x + 1.0, -1.0, size_z + 1.0, 0.0, closed)  # none inside a stage or a stall
+
+    def turned(c: np.ndarray, angle: float, dx: float, dz: float) -> np.ndarray:
+        u, v = np.array([math.cos(angle), math.sin(angle)]), np.array([-math.sin(angle), math.cos(angle)])
+        return c + dx * u + dz * v
+
+    marquees, wanted = 0, int(rng.integers(40, 51))
+    for _ in range(3000):  # the marquees: length along their local x, the door in the gable end at +x
+        if marquees == wanted:
+            break
+        w, l = float(rng.uniform(4.0, 7.0)), float(rng.uniform(5.0, 9.0))
+        c = np.array([rng.uniform(8.0, size_x - 8.0), rng.uniform(8.0, size_z - 8.0)])
+        r = math.hypot(w, l) / 2 + 1.5
+        if not free(c, r):
+            continue
+        taken.append((c, r))
+        marquees += 1
+        angle = float(rng.uniform(0.0, 2 * math.pi))
+        half_w, half_l = w / 2, l / 2
+        walls = [((-half_l, -half_w), (half_l, -half_w)), ((-half_l, half_w), (half_l, half_w)), ((-half_l, -half_w), (-half_l, half_w))]
+        door_lo, door_hi = -1.1, 1.1  # the door's jambs along the +x gable, metres from its middle
+        walls += [((half_l, -half_w), (half_l, door_lo)), ((half_l, door_hi), (half_l, half_w))]
+        for (ax, az), (bx, bz) in walls:
+            a, b = turned(c, angle, ax, az), turned(c, angle, bx, bz)
+            n = np.array([-(b - a)[1], (b - a)[0]]) / np.linalg.norm(b - a) * 0.025  # half the canvas's thickness
+            s.hull(np.array([[p[0] + sn * n[0], y, p[1] + sn * n[1]] for p in (a, b) for sn in (-1, 1) for y in (0.0, 2.3)]))
+        ridge = 2.3 + half_w * math.tan(math.radians(50.0))
+        eaves = [turned(c, angle, sx * half_l, sz * half_w) for sx in (-1, 1) for sz in (-1, 1)]
+        ridge_ends = [turned(c, angle, sx * half_l, 0.0) for sx in (-1, 1)]
+        s.hull(np.array([[p[0], y, p[1]] for p in eaves for y in (2.3, 2.35)] + [[p[0], ridge, p[1]] for p in ridge_ends]))
+    tents = 0
+    for _ in range(6000):  # the small tents
+        if tents == int(rng.integers(120, 161)):
+            break
+        w, l = float(rng.uniform(1.4, 2.4)), float(rng.uniform(2.2, 3.0))
+        c = np.array([rng.uniform(3.0, size_x - 3.0), rng.uniform(3.0, size_z - 3.0)])
+        if not free(c, math.hypot(w, l) / 2 + 0.4):
+            continue
+        taken.append((c, math.hypot(w, l) / 2 + 0.4))
+        tents += 1
+        angle = float(rng.uniform(0.0, 2 * math.pi))
+        floor = [turned(c, angle, sx * l / 2, sz * w / 2) for sx in (-1, 1) for sz in (-1, 1)]
+        ridge = [turned(c, angle, sx * l / 2, 0.0) for sx in (-1, 1)]
+        s.hull(np.array([[p[0], -0.3, p[1]] for p in floor] + [[p[0], 1.2, p[1]] for p in ridge]))
+    return s.mesh()
+
+
 KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
     "container_maze": container_maze, "listing_ferry": listing_ferry,
     "pipe_network": pipe_network, "boardwalk": boardwalk,
+    "car_lot": car_lot, "festival_camp": festival_camp,
 }
 """Kind name -> generator (seed -> Y-up mesh in metres) of the twenty-seventh round."""
 
