@@ -314,7 +314,7 @@ def _plank_walk(s: _Solids, rng: np.random.Generator, a: np.ndarray, b: np.ndarr
                          for dx, dz in ((0.05, 0.05), (-0.05, -0.05), (0.05, -0.05), (-0.05, 0.05)) for dy in (-0.15, -0.05)]))
 
 
-def boardwalk(seed: int) -> trimesh.Trimesh:
+def boardwalk(seed: int, scale: float = 1.0) -> trimesh.Trimesh:
     """A marsh nature reserve 200-220 x 160-180 m with no ground to walk (open water and reeds): 36-44 platforms (18 m apart at least,
     (octagons 5-8 m across, decks 0.5-1.2 m over the water) joined by boardwalks 2.2-2.6 m wide (:func:`_plank_walk`:
     planks with gaps of 1-3 cm, each one solid, at whatever angle the two platforms lie) along the Delaunay
@@ -327,12 +327,13 @@ def boardwalk(seed: int) -> trimesh.Trimesh:
     a tenth of Recast's cell). Traffic highest on the walks of the tree's trunk between the forecourt and the
     middle of the marsh, lowest on the far platforms and in the hides; the structure should run along each walk's
     middle, one edge or a few per straight walk, and through each hide's door, never across the water between two
-    walks."""
+    walks. ``scale`` multiplies the marsh's sides (and the platforms' count by its square): 0.5 builds a smaller marsh
+    by the same rules."""
     rng = np.random.default_rng(seed)
-    size_x, size_z = float(rng.uniform(200.0, 220.0)), float(rng.uniform(160.0, 180.0))
+    size_x, size_z = scale * float(rng.uniform(200.0, 220.0)), scale * float(rng.uniform(160.0, 180.0))
     centres: list[np.ndarray] = []
     for _ in range(3000):
-        if len(centres) == int(rng.integers(36, 45)):
+        if len(centres) == int(scale ** 2 * rng.integers(36, 45)):
             break
         c = np.array([rng.uniform(8.0, size_x - 8.0), rng.uniform(24.0, size_z - 8.0)])
         if all(np.linalg.norm(c - o) > 18.0 for o in centres):
