@@ -23,7 +23,7 @@ from collections.abc import Callable
 
 import numpy as np
 import trimesh
-from level_kinds import _car, _ridged, _Solids, _stair_tower, _well_length
+from level_kinds import _car, _crosses, _ridged, _Solids, _stair_tower, _well_length
 from level_kinds import main as write_kinds
 from scipy.sparse.csgraph import minimum_spanning_tree
 from scipy.spatial import Delaunay
@@ -319,8 +319,8 @@ def boardwalk(seed: int, scale: float = 1.0) -> trimesh.Trimesh:
     (octagons 5-8 m across, decks 0.5-1.2 m over the water) joined by boardwalks 2.2-2.6 m wide (:func:`_plank_walk`:
     planks with gaps of 1-3 cm, each one solid, at whatever angle the two platforms lie) along the Delaunay
     triangulation's minimum spanning tree and 35 % of its other edges whose walk is 8 m or longer, each walk sloping gently
-    from one platform's height to the other's; a visitor centre's forecourt (20 x 14 m of ground) on the south shore
-    joined to the nearest platform; bird hides (a room 3 m square, walls 2.4 m, roofed, one door 1.6 m wide facing the walk) on
+    from one platform's height to the other's; a visitor centre's forecourt (20 x 11 m of ground) on the south shore
+    joined to the nearest platform whose walk from it crosses no other walk; bird hides (a room 3 m square, walls 2.4 m, roofed, one door 1.6 m wide facing the walk) on
     three dead-end platforms. Every walking surface but the forecourt is planks.
 
     Expected (written before the first run): one area (thousands of separate planks read as one deck: their gaps are
@@ -349,6 +349,7 @@ def boardwalk(seed: int, scale: float = 1.0) -> trimesh.Trimesh:
     tree = minimum_spanning_tree(weights).toarray() > 0
     s = _Solids()
     walks: dict[int, list[np.ndarray]] = {k: [] for k in range(len(points))}  # each platform's walks' headings
+    laid: list[tuple[int, int]] = []  # the platforms each walk joins
     for c, r, y in zip(points, radii, heights):
         s.prism(c + r * np.array([[math.cos(a), math.sin(a)] for a in (np.arange(8) + 0.5) * math.pi / 4]), y - 0.3, y)
     for p, q in sorted(pairs):
@@ -356,14 +357,27 @@ def boardwalk(seed: int, scale: float = 1.0) -> trimesh.Trimesh:
         if not (tree[p, q] or tree[q, p] or (gap >= 8.0 and rng.random() < 0.35)):
             continue
         u = (points[q] - points[p]) / weights[p, q]
+        laid.append((p, q))
         walks[p].append(u)
         walks[q].append(-u)
         _plank_walk(s, rng, points[p] + u * (radii[p] - 0.5), points[q] - u * (radii[q] - 0.5), heights[p], heights[q],
                     float(rng.uniform(2.2, 2.6)))
     forecourt = np.array([size_x / 2, 8.0])
     s.box(forecourt[0] - 10.0, forecourt[0] + 10.0, -0.5, 0.3, 4.0, 15.0)
-    nearest = int(np.argmin(np.linalg.norm(points - forecourt, axis=1)))
-    start = np.array([np.clip(points[nearest][0], forecourt[0] - 8.0, forecourt[0] + 8.0), 14.7])  # its north edge
+    def crosses_a_walk(k: int, start: np.ndarray) -> bool:
+        """Whether the way from ``start`` to platform ``k`` crosses a walk not ending there (its middle or an edge)."""
+        for p, q in laid:
+            along = (points[q] - points[p]) / weights[p, q]
+            edge = np.array([-along[1], along[0]]) * 1.5
+            if k not in (p, q) and any(_crosses(start, points[k], points[p] + o * edge, points[q] + o * edge)
+                                       for o in (-1.0, 0.0, 1.0)):
+                return True
+        return False
+
+    for nearest in np.argsort(np.linalg.norm(points - forecourt, axis=1)):  # the nearest platform reached crossing
+        start = np.array([np.clip(points[nearest][0], forecourt[0] - 8.0, forecourt[0] + 8.0), 14.7])  # no walk
+        if not crosses_a_walk(int(nearest), start):
+            break
     u = points[nearest] - start
     u = u / np.linalg.norm(u)
     _plank_walk(s, rng, start, points[nearest] - u * (radii[nearest] - 0.5), 0.3, heights[nearest], 2.4)
