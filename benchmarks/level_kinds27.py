@@ -48,23 +48,23 @@ def _container(s: _Solids, x0: float, z0: float, y: float, length: float, ends: 
 
 
 def container_maze(seed: int) -> trimesh.Trimesh:
-    """A container yard (a shooter's "shipment" map) 4-5 x 4-5 blocks of 40-foot containers (12.2 x 2.44 x 2.59 m)
-    laid side by side, 2-4 to a block, lanes 3-5 m wide between the blocks, on flat ground with a fence 3 m high round
-    it. Each container's west end is open with a chance of 0.7, else shut by its doors, and its east end then open
-    with a chance of 0.7 (never both shut: a shut box keeps a floor inside it one cannot reach), so most are
-    tunnels one walks through (1.24 m wide for the agent); a 20-foot container stands on the west half of up to two
-    of a block's roofs (never on its southmost), its west end (over the lane) shut, its east end open onto the roof,
-    under a tarpaulin ridged at 50 degrees (no floor on top). The blocks' roofs (2.59 m up) are one walk: planks 2 m wide
-    across the lanes join neighbouring blocks along a spanning tree of the blocks' grid and 30 % of the other
-    neighbours, and two flights (riser 0.152 m) climb from the ground head-on to a block's end on the west and on the east edge
-    (the container under the flight's head open at its other end).
+    """A container yard (a shooter's "shipment" map) 4-5 x 4-5 blocks of 40-foot containers (12.2 x 2.44 x 2.59 m) laid
+    side by side, 2-4 to a block, lanes 3-5 m wide between the blocks, on flat ground with a fence 3 m high round it.
+    Each container's west end is open with a chance of 0.7, else shut by its doors, and its east end then open with a
+    chance of 0.7 (never both shut: a shut box keeps a floor inside it one cannot reach), so most are tunnels one walks
+    through (1.24 m wide for the agent); a 20-foot container stands on the west half of up to two of a block's roofs
+    (never on its southmost), its west end (over the lane) shut, its east end open onto the roof, under a tarpaulin
+    ridged at 50 degrees (no floor on top). The blocks' roofs (2.59 m up) are one walk: planks 2 m wide across the lanes
+    join neighbouring blocks along a spanning tree of the blocks' grid and 30 % of the other neighbours, and two flights
+    (riser 0.152 m) climb from the ground head-on to a block's end on the west and on the east edge (the container under
+    the flight's head open at its other end).
 
     Expected (written before the first run): one area (ground, tunnels and roofs; a tunnel with both ends shut is a
     closed box; none is built). Traffic highest on the lanes through the middle of the yard and on the open tunnels that
     cut a block's length, lowest in tunnels open at one end only (dead ends) and on roofs far from the flights. A
-    designer expects the structure to pass through open tunnels (an edge along each one walked, never through a shut
-    end or a side wall), to show the roof walk as a layer over the lanes joined only at the flights, and no structure
-    in a shut container."""
+    designer expects the structure to pass through open tunnels (an edge along each one walked, never through a shut end
+    or a side wall), to show the roof walk as a layer over the lanes joined only at the flights, and no structure in a
+    shut container."""
     rng = np.random.default_rng(seed)
     length, width, height = CONTAINER
     nbx, nbz = int(rng.integers(4, 6)), int(rng.integers(4, 6))
@@ -129,26 +129,27 @@ def container_maze(seed: int) -> trimesh.Trimesh:
 def listing_ferry(seed: int, roll: tuple[float, float] = (8.0, 14.0)) -> trimesh.Trimesh:
     """A ro-ro ferry 110-130 m long and 20-22 m wide (a sinking-ship level) built upright and then rolled ``roll``
     degrees (8-14, to port or starboard) about its long axis and pitched 1-3 degrees about its beam: a car deck at 0 m
-    (cars in four lanes, the bow and stern doors shut), a cabin deck at 4 m (a lounge along the south side round the stair towers, a corridor 2 m
-    wide along the ship entered from it by four doors 2.4 m wide, cabins 3 m wide and 5.2-7.2 m deep north of the
-    corridor through doors 1.5 m wide, a boxed two-tier bunk in each), an
-    open deck at 8 m (lifeboats on chocks along both sides but in front of the towers' doors, benches, a rail 1.1 m high), and two switchback stair
-    towers (:func:`level_kinds._stair_tower`, storeys 4 m) amidships fore and aft, a door onto each deck. Every floor
-    is sloped 8-14 degrees across the ship, every wall leans; a step of the flights climbs 0.15 m plus or minus
-    0.04-0.07 m. ``roll=(0, 0)`` builds the same ship upright but for its pitch.
+    (cars in four lanes, the bow and stern doors shut), a cabin deck at 4 m (a lounge along the south side round the
+    stair towers, a corridor 2 m wide along the ship entered from it by four doors 2.4 m wide, cabins 3 m wide and
+    5.2-7.2 m deep north of the corridor through doors 1.5 m wide, a boxed two-tier bunk in each), an open deck at 8 m
+    (lifeboats on chocks along both sides but in front of the towers' doors, benches, a rail 1.1 m high), and two
+    switchback stair towers (:func:`level_kinds._stair_tower`, storeys 4 m) amidships fore and aft, a door onto each
+    deck. Every floor is sloped 8-14 degrees across the ship, every wall leans; a step of the flights climbs 0.15 m plus
+    or minus 0.04-0.07 m. ``roll=(0, 0)`` builds the same ship upright but for its pitch.
 
     Expected (written before the first run): one area (all slopes under 45 degrees, every step under the climb). A
     designer expects the same reading as the ship upright: traffic highest in the two stair towers and the lounge
-    between them, then the corridors, lowest in the cabins (dead ends) and the car deck's far corners; the
-    structure one path along the corridor with a short spur into each cabin or a cover of several, and nothing
-    through a leaning wall."""
+    between them, then the corridors, lowest in the cabins (dead ends) and the car deck's far corners; the structure one
+    path along the corridor with a short spur into each cabin or a cover of several, and nothing through a leaning wall.
+    """
     rng = np.random.default_rng(seed)
     length, beam = float(rng.uniform(110.0, 130.0)), float(rng.uniform(20.0, 22.0))
     storey, well = 4.0, _well_length(4.0)
     s = _Solids()
     towers = [float(rng.uniform(length * 0.25, length * 0.3)), float(rng.uniform(length * 0.65, length * 0.7))]
     z_tower = 5.0  # each tower's doors face south, onto the lounge and the car deck's south lane
-    tower_plans = [(x0 - 0.4, x0 + 4.4, z_tower, z_tower + well + 0.4) for x0 in towers]  # the decks run under the doors
+    # each tower's plan, a hole in the decks; from z_tower, not its wall's outer face, so the decks run under its doors
+    tower_plans = [(x0 - 0.4, x0 + 4.4, z_tower, z_tower + well + 0.4) for x0 in towers]
     s.box(0.0, length, -0.3, 0.0, 0.0, beam)
     for y in (storey, 2 * storey):
         s.slab(0.0, length, 0.0, beam, y, tower_plans)
@@ -174,7 +175,7 @@ def listing_ferry(seed: int, roll: tuple[float, float] = (8.0, 14.0)) -> trimesh
            [(float(d), 2.4) for d in rng.uniform(3.0, length - 5.4, size=4)], thickness=0.15)
     s.wall((3.0, cabin_wall), (length - 3.0, cabin_wall), y, y + storey,
            [(float(x) + 0.75, 1.5) for x in np.arange(0.0, length - 8.9, 3.0)], thickness=0.15)
-    for x in np.arange(3.0, length - 2.9, 3.0):  # the cabins' walls and a two-tier bunk, boxed in to 2.1 m, along each west wall
+    for x in np.arange(3.0, length - 2.9, 3.0):  # the cabins' walls; a two-tier bunk boxed to 2.1 m by each west one
         s.wall((float(x), cabin_wall), (float(x), beam), y, y + storey, thickness=0.15)
         if x < length - 5.9:
             s.box(float(x) + 0.1, float(x) + 1.0, y, y + 2.1, cabin_wall + 1.3, beam - 0.2)  # 1.6 m under the deck
@@ -222,16 +223,16 @@ def pipe_network(seed: int) -> trimesh.Trimesh:
     walls 0.3 m thick) 15-19 m apart, joined by round pipes (:func:`_pipe`, 18 staves) along a spanning tree of the
     grid's edges and 40 % of the rest, each 1.6-1.9 m round inside: the pipe's floor is the plates at 0, 20 and 40
     degrees, about 2.1-2.5 m wide, and the head room under its curved top falls under the agent's 2 m beyond 1.0-1.4 m
-    from its middle, so the walkable lane is set by the curve, not by a wall. The western chambers open through outfall pipes onto a yard at the chambers'
-    floor (an open channel bank 12 m wide); a street 0.5 m thick lies 0.35 m over the pipes' tops and covers the
-    chambers, reached from the yard by a ramp 24 m long (about 11 degrees) to a landing at its edge; a few kiosks
-    stand on the street.
+    from its middle, so the walkable lane is set by the curve, not by a wall. The western chambers open through outfall
+    pipes onto a yard at the chambers' floor (an open channel bank 12 m wide); a street 0.5 m thick lies 0.35 m over the
+    pipes' tops and covers the chambers, reached from the yard by a ramp 24 m long (about 11 degrees) to a landing at
+    its edge; a few kiosks stand on the street.
 
-    Expected (written before the first run): one area (yard, pipes, chambers and street). Traffic highest on the street (most of the area, walked end to end) and on the ramp, then in the
-    western chambers and the pipes that join the outfalls to the rest, lowest in the far chambers on spurs of the
-    tree. A designer expects the structure to follow each pipe along its middle (one edge down a straight pipe, no
-    node on its curved walls), a node in each chamber where pipes meet, and nothing under the street joined to the
-    street but through the yard and the ramp."""
+    Expected (written before the first run): one area (yard, pipes, chambers and street). Traffic highest on the street
+    (most of the area, walked end to end) and on the ramp, then in the western chambers and the pipes that join the
+    outfalls to the rest, lowest in the far chambers on spurs of the tree. A designer expects the structure to follow
+    each pipe along its middle (one edge down a straight pipe, no node on its curved walls), a node in each chamber
+    where pipes meet, and nothing under the street joined to the street but through the yard and the ramp."""
     rng = np.random.default_rng(seed)
     nx, nz = int(rng.integers(7, 9)), int(rng.integers(5, 7))
     pitch = float(rng.uniform(15.0, 19.0))
@@ -311,24 +312,26 @@ def _plank_walk(s: _Solids, rng: np.random.Generator, a: np.ndarray, b: np.ndarr
     for sg in (-0.9, 0.9):
         e0, e1 = a + sg * side, b + sg * side
         s.hull(np.array([[e[0] + dx, y + dy, e[1] + dz] for e, y in ((e0, ya), (e1, yb))
-                         for dx, dz in ((0.05, 0.05), (-0.05, -0.05), (0.05, -0.05), (-0.05, 0.05)) for dy in (-0.15, -0.05)]))
+                         for dx, dz in ((0.05, 0.05), (-0.05, -0.05), (0.05, -0.05), (-0.05, 0.05))
+                         for dy in (-0.15, -0.05)]))
 
 
 def boardwalk(seed: int, scale: float = 1.0) -> trimesh.Trimesh:
-    """A marsh nature reserve 200-220 x 160-180 m with no ground to walk (open water and reeds): 36-44 platforms (18 m apart at least,
-    (octagons 5-8 m across, decks 0.5-1.2 m over the water) joined by boardwalks 2.2-2.6 m wide (:func:`_plank_walk`:
-    planks with gaps of 1-3 cm, each one solid, at whatever angle the two platforms lie) along the Delaunay
-    triangulation's minimum spanning tree and 35 % of its other edges whose walk is 8 m or longer, each walk sloping gently
-    from one platform's height to the other's; a visitor centre's forecourt (20 x 11 m of ground) on the south shore
-    joined to the nearest platform whose walk from it crosses no other walk; bird hides (a room 3 m square, walls 2.4 m, roofed, one door 1.6 m wide facing the walk) on
-    three dead-end platforms. Every walking surface but the forecourt is planks.
+    """A marsh nature reserve 200-220 x 160-180 m with no ground to walk (open water and reeds): 36-44 platforms (18 m
+    apart at least, (octagons 5-8 m across, decks 0.5-1.2 m over the water) joined by boardwalks 2.2-2.6 m wide
+    (:func:`_plank_walk`: planks with gaps of 1-3 cm, each one solid, at whatever angle the two platforms lie) along the
+    Delaunay triangulation's minimum spanning tree and 35 % of its other edges whose walk is 8 m or longer, each walk
+    sloping gently from one platform's height to the other's; a visitor centre's forecourt (20 x 11 m of ground) on the
+    south shore joined to the nearest platform whose walk from it crosses no other walk; bird hides (a room 3 m square,
+    walls 2.4 m, roofed, one door 1.6 m wide facing the walk) on three dead-end platforms. Every walking surface but the
+    forecourt is planks.
 
-    Expected (written before the first run): one area (thousands of separate planks read as one deck: their gaps are
-    a tenth of Recast's cell). Traffic highest on the walks of the tree's trunk between the forecourt and the
-    middle of the marsh, lowest on the far platforms and in the hides; the structure should run along each walk's
-    middle, one edge or a few per straight walk, and through each hide's door, never across the water between two
-    walks. ``scale`` multiplies the marsh's sides (and the platforms' count by its square): 0.5 builds a smaller marsh
-    by the same rules."""
+    Expected (written before the first run): one area (thousands of separate planks read as one deck: their gaps are a
+    tenth of Recast's cell). Traffic highest on the walks of the tree's trunk between the forecourt and the middle of
+    the marsh, lowest on the far platforms and in the hides; the structure should run along each walk's middle, one edge
+    or a few per straight walk, and through each hide's door, never across the water between two walks. ``scale``
+    multiplies the marsh's sides (and the platforms' count by its square): 0.5 builds a smaller marsh by the same rules.
+    """
     rng = np.random.default_rng(seed)
     size_x, size_z = scale * float(rng.uniform(200.0, 220.0)), scale * float(rng.uniform(160.0, 180.0))
     centres: list[np.ndarray] = []
@@ -342,7 +345,8 @@ def boardwalk(seed: int, scale: float = 1.0) -> trimesh.Trimesh:
     radii = rng.uniform(2.5, 4.0, len(points))
     heights = rng.uniform(0.5, 1.2, len(points))
     triangles = Delaunay(points).simplices
-    pairs = {tuple(sorted((int(p), int(q)))) for tri in triangles for p, q in ((tri[0], tri[1]), (tri[1], tri[2]), (tri[0], tri[2]))}
+    pairs = {tuple(sorted((int(p), int(q)))) for tri in triangles
+             for p, q in ((tri[0], tri[1]), (tri[1], tri[2]), (tri[0], tri[2]))}
     weights = np.zeros((len(points), len(points)))
     for p, q in pairs:
         weights[p, q] = np.linalg.norm(points[p] - points[q])
@@ -467,7 +471,9 @@ def festival_camp(seed: int) -> trimesh.Trimesh:
     closed: list[tuple[float, float, float, float]] = []  # plans of the closed solids the ground stops under
 
     def free(c: np.ndarray, r: float) -> bool:
-        return all(np.linalg.norm(c - o) > r + ro for o, ro in taken) and r + 1.5 < min(c[0], c[1], size_x - c[0], size_z - c[1])
+        """Whether a disc of radius ``r`` round plan point ``c`` clears all placed and lies 1.5 m inside the fence."""
+        inside = r + 1.5 < min(c[0], c[1], size_x - c[0], size_z - c[1])
+        return inside and all(np.linalg.norm(c - o) > r + ro for o, ro in taken)
 
     for x0 in (float(rng.uniform(10.0, size_x / 2 - 25.0)), float(rng.uniform(size_x / 2 + 5.0, size_x - 25.0))):
         z0 = size_z - 12.0
@@ -480,6 +486,7 @@ def festival_camp(seed: int) -> trimesh.Trimesh:
     s.ground(-1.0, size_x + 1.0, -1.0, size_z + 1.0, 0.0, closed)  # none inside a stage or a stall
 
     def turned(c: np.ndarray, angle: float, dx: float, dz: float) -> np.ndarray:
+        """Plan point (2,): ``dx`` m along and ``dz`` m across a frame at ``c`` turned by ``angle`` radians."""
         u, v = np.array([math.cos(angle), math.sin(angle)]), np.array([-math.sin(angle), math.cos(angle)])
         return c + dx * u + dz * v
 
@@ -496,17 +503,20 @@ def festival_camp(seed: int) -> trimesh.Trimesh:
         marquees += 1
         angle = float(rng.uniform(0.0, 2 * math.pi))
         half_w, half_l = w / 2, l / 2
-        walls = [((-half_l, -half_w), (half_l, -half_w)), ((-half_l, half_w), (half_l, half_w)), ((-half_l, -half_w), (-half_l, half_w))]
+        walls = [((-half_l, -half_w), (half_l, -half_w)), ((-half_l, half_w), (half_l, half_w)),
+                 ((-half_l, -half_w), (-half_l, half_w))]
         door_lo, door_hi = -1.1, 1.1  # the door's jambs along the +x gable, metres from its middle
         walls += [((half_l, -half_w), (half_l, door_lo)), ((half_l, door_hi), (half_l, half_w))]
         for (ax, az), (bx, bz) in walls:
             a, b = turned(c, angle, ax, az), turned(c, angle, bx, bz)
             n = np.array([-(b - a)[1], (b - a)[0]]) / np.linalg.norm(b - a) * 0.025  # half the canvas's thickness
-            s.hull(np.array([[p[0] + sn * n[0], y, p[1] + sn * n[1]] for p in (a, b) for sn in (-1, 1) for y in (0.0, 2.3)]))
+            s.hull(np.array([[p[0] + sn * n[0], y, p[1] + sn * n[1]]
+                             for p in (a, b) for sn in (-1, 1) for y in (0.0, 2.3)]))
         ridge = 2.3 + half_w * math.tan(math.radians(50.0))
         eaves = [turned(c, angle, sx * half_l, sz * half_w) for sx in (-1, 1) for sz in (-1, 1)]
         ridge_ends = [turned(c, angle, sx * half_l, 0.0) for sx in (-1, 1)]
-        s.hull(np.array([[p[0], y, p[1]] for p in eaves for y in (2.3, 2.35)] + [[p[0], ridge, p[1]] for p in ridge_ends]))
+        s.hull(np.array([[p[0], y, p[1]] for p in eaves for y in (2.3, 2.35)]
+                        + [[p[0], ridge, p[1]] for p in ridge_ends]))
     tents = 0
     for _ in range(6000):  # the small tents
         if tents == int(rng.integers(120, 161)):
