@@ -23,7 +23,7 @@ from collections.abc import Callable
 
 import numpy as np
 import trimesh
-from level_kinds import _car, _crosses, _ridged, _Solids, _stair_tower, _well_length
+from level_kinds import _car, _crosses, _grid_edges, _random_tree, _ridged, _Solids, _stair_tower, _well_length
 from level_kinds import main as write_kinds
 from scipy.sparse.csgraph import minimum_spanning_tree
 from scipy.spatial import Delaunay
@@ -100,15 +100,10 @@ def container_maze(seed: int) -> trimesh.Trimesh:
                 _container(s, xs[i], zs[j] + k * width, height, length / 2, (True, False))
                 _ridged(s, xs[i], xs[i] + length / 2, zs[j] + k * width, zs[j] + (k + 1) * width, 2 * height - 0.1,
                         2 * height + 0.6)  # a tarpaulin over the upper container: its roof is no floor
-    node = np.arange(nbx * nbz).reshape(nbx, nbz)
-    pairs = [(node[i, j], node[i + 1, j]) for i in range(nbx - 1) for j in range(nbz)]
-    pairs += [(node[i, j], node[i, j + 1]) for i in range(nbx) for j in range(nbz - 1)]
-    weights = np.zeros((nbx * nbz, nbx * nbz))
+    _, pairs = _grid_edges(nbx, nbz)
+    tree = _random_tree(rng, nbx * nbz, pairs)
     for a, b in pairs:
-        weights[a, b] = rng.uniform(1.0, 2.0)
-    tree = minimum_spanning_tree(weights).toarray() > 0
-    for a, b in pairs:
-        if not (tree[a, b] or tree[b, a] or rng.random() < 0.3):
+        if not (tree[a, b] or rng.random() < 0.3):
             continue
         (ia, ja), (ib, jb) = divmod(int(a), nbz), divmod(int(b), nbz)
         if ia != ib:  # across the lane east of block a, into block b's west end at a slot with no upper container
@@ -243,18 +238,13 @@ def pipe_network(seed: int) -> trimesh.Trimesh:
     street = 2 * radius_max + 0.15 + 0.35 + 0.5  # its top; 0.35 m of void between the widest pipe and its underside
     s = _Solids()
     s.box(0.0, yard, -0.5, 0.0, 0.0, size_z)  # the yard; under the street only the chambers and pipes hold floor
-    node = np.arange(nx * nz).reshape(nx, nz)
-    edges = [(node[i, j], node[i + 1, j]) for i in range(nx - 1) for j in range(nz)]
-    edges += [(node[i, j], node[i, j + 1]) for i in range(nx) for j in range(nz - 1)]
-    weights = np.zeros((nx * nz, nx * nz))
-    for a, b in edges:
-        weights[a, b] = rng.uniform(1.0, 2.0)
-    tree = minimum_spanning_tree(weights).toarray() > 0
+    node, edges = _grid_edges(nx, nz)
+    tree = _random_tree(rng, nx * nz, edges)
     openings: dict[tuple[int, str], float] = {}  # (chamber, side) -> the radius of the pipe through that wall
     pipes: list[tuple[np.ndarray, np.ndarray, float]] = []
     for a, b in edges:
         (ia, ja), (ib, jb) = divmod(int(a), nz), divmod(int(b), nz)
-        if not (tree[a, b] or tree[b, a] or rng.random() < 0.4):
+        if not (tree[a, b] or rng.random() < 0.4):
             continue
         radius = float(rng.uniform(1.6, 1.9))
         along_x = ia != ib
