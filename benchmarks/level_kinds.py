@@ -5531,6 +5531,25 @@ def _rail_ring(s: _Solids, x0: float, x1: float, z0: float, z1: float, y: float,
     s.wall((x1, z0), (x1, z1), y, y + 1.1, openings.get("east", []), thickness=0.1)
 
 
+def _grid_edges(nx: int, nz: int) -> tuple[np.ndarray, list[tuple[int, int]]]:
+    """The ids (nx, nz) of an nx x nz grid's junctions and its edges, those along x first, then those along z."""
+    node = np.arange(nx * nz).reshape(nx, nz)
+    edges = [(node[i, j], node[i + 1, j]) for i in range(nx - 1) for j in range(nz)]
+    edges += [(node[i, j], node[i, j + 1]) for i in range(nx) for j in range(nz - 1)]
+    return node, edges
+
+
+def _random_tree(rng: np.random.Generator, n: int, edges: list[tuple[int, int]]) -> np.ndarray:
+    """(n, n) symmetric bool: the edges of a random spanning tree of the graph of ``n`` nodes and ``edges``, the minimum
+    spanning tree (scipy's) for weights uniform in [1, 2) drawn from ``rng`` in the edges' order. O(n^2) for the dense
+    weight matrix."""
+    weights = np.zeros((n, n))
+    for a, b in edges:
+        weights[a, b] = rng.uniform(1.0, 2.0)
+    tree = minimum_spanning_tree(weights).toarray() > 0
+    return tree | tree.T
+
+
 def oil_rig(seed: int) -> trimesh.Trimesh:
     """An offshore oil rig over the sea (no floor below the decks): a production platform 85-95 x 50-56 m of three
     open decks 7 m apart (12, 19 and 26 m up) on four legs 3 m square, each deck cut by a well bay 8 m square through

@@ -22,9 +22,9 @@ from collections.abc import Callable
 
 import numpy as np
 import trimesh
-from level_kinds import _car, _doored_wall, _rail_ring, _ridged, _Solids, _stair_tower, _terrain, _well_length
+from level_kinds import (_car, _doored_wall, _grid_edges, _rail_ring, _random_tree, _ridged, _Solids, _stair_tower,
+                         _terrain, _well_length)
 from level_kinds import main as write_kinds
-from scipy.sparse.csgraph import minimum_spanning_tree
 
 
 def _half_turn(points: np.ndarray, length: float, width: float) -> np.ndarray:
@@ -274,15 +274,10 @@ def catwalk_hall(seed: int) -> trimesh.Trimesh:
     s = _Solids()
     storey, heights = 4.0, (6.0, 10.0, 14.0)
     tower_columns = sorted(rng.choice(np.arange(nx), size=2, replace=False))
-    node = np.arange(nx * nz).reshape(nx, nz)
-    edges = [(node[i, j], node[i + 1, j]) for i in range(nx - 1) for j in range(nz)]
-    edges += [(node[i, j], node[i, j + 1]) for i in range(nx) for j in range(nz - 1)]
+    node, edges = _grid_edges(nx, nz)
     for y in heights:
-        weights = np.zeros((nx * nz, nx * nz))
-        for a, b in edges:
-            weights[a, b] = rng.uniform(1.0, 2.0)
-        tree = minimum_spanning_tree(weights).toarray() > 0
-        kept = [(a, b) for a, b in edges if tree[a, b] or tree[b, a] or rng.random() < 0.25]
+        tree = _random_tree(rng, nx * nz, edges)
+        kept = [(a, b) for a, b in edges if tree[a, b] or rng.random() < 0.25]
         openings: dict[int, dict[str, list[tuple[float, float]]]] = {k: {} for k in range(nx * nz)}
         for a, b in kept:
             (ia, ja), (ib, jb) = divmod(int(a), nz), divmod(int(b), nz)
@@ -365,13 +360,8 @@ def double_doors(seed: int) -> trimesh.Trimesh:
     zs = np.concatenate([[0.0], np.cumsum(rng.uniform(4.5, 6.0, nz))])
     s = _Solids()
     s.box(-4.0, xs[-1] + 4.0, -0.5, 0.0, -4.0, zs[-1] + 4.0)
-    node = np.arange(nx * nz).reshape(nx, nz)
-    walls = [(node[i, j], node[i + 1, j]) for i in range(nx - 1) for j in range(nz)]
-    walls += [(node[i, j], node[i, j + 1]) for i in range(nx) for j in range(nz - 1)]
-    weights = np.zeros((nx * nz, nx * nz))
-    for a, b in walls:
-        weights[a, b] = rng.uniform(1.0, 2.0)
-    tree = minimum_spanning_tree(weights).toarray() > 0
+    node, walls = _grid_edges(nx, nz)
+    tree = _random_tree(rng, nx * nz, walls)
     doored: set[tuple[int, str]] = set()  # (room, side) of every wall holding a doorway
     for a, b in walls:
         (ia, ja), (ib, jb) = divmod(int(a), nz), divmod(int(b), nz)
@@ -379,7 +369,7 @@ def double_doors(seed: int) -> trimesh.Trimesh:
             line, span, sides = ((xs[ib], zs[ja]), (xs[ib], zs[ja + 1])), zs[ja + 1] - zs[ja], ("east", "west")
         else:
             line, span, sides = ((xs[ia], zs[jb]), (xs[ia + 1], zs[jb])), xs[ia + 1] - xs[ia], ("north", "south")
-        if tree[a, b] or tree[b, a]:
+        if tree[a, b]:
             leaves = ("open", "open")
         elif rng.random() < 0.3:
             leaves = [("open", "open"), ("open", "closed"), ("closed", "closed")][int(rng.integers(3))]

@@ -1,4 +1,4 @@
-"""The level kinds of rounds 9-26 (``benchmarks/level_kinds.py``, ``level_kinds26.py``) build the levels they describe.
+"""The level kinds of rounds 9-27 (``benchmarks/level_kinds.py``, ``level_kinds26.py``, ``level_kinds27.py``) build the levels they describe.
 
 Smoke tests of quick generators (most well under a second each to build and to give a navmesh; the theatre's and
 the cliff dwellings' thousands of hulls take about 5 s of CPU, the metroidvania's flights 1-2 s a build): the connected
@@ -1238,3 +1238,61 @@ def test_the_split_decks_are_one_area_up_the_ramps_spiralling_round_the_well(rou
     assert label.max() == 0
     held = [nav.areas[np.abs(nav.centres[:, 1] - 0.2 - 1.5 * k) < 0.1].sum() for k in range(8)]
     assert min(held) > 400.0, held
+
+
+DROPS = RecastParams(ledge_filter="drops")  # the presets' ledge rule (configs/map_analysis.yaml), as the benchmark builds
+
+
+@pytest.fixture(scope="module")
+def round_27() -> dict[str, Callable[..., trimesh.Trimesh]]:
+    """``benchmarks/level_kinds27.py``'s KINDS (the twenty-seventh round): each call builds its level anew."""
+    return benchmark("level_kinds27").KINDS
+
+
+def test_the_container_maze_is_one_area_through_its_open_containers_and_over_its_roofs(round_27):
+    """Containers walked through (never shut at both ends), the roofs joined by planks and reached by two flights:
+    one area, with floor inside the containers (under 2.5 m, in their plan) and on the roofs (2.59 m up)."""
+    label, nav = areas(round_27["container_maze"](0), DROPS)
+    assert label.max() == 0
+    roofs = nav.areas[np.abs(nav.centres[:, 1] - 0.2 - 2.59) < 0.15].sum()
+    assert roofs > 300.0, roofs
+
+
+def test_the_listing_ferrys_three_decks_are_one_area_rolled_and_upright(round_27):
+    """Rolled 8-14 degrees and pitched 1-3, every floor sloped and every wall leaning, the car deck, cabin deck and open
+    deck stay one area through the stair towers (seed 1; as the same ship built upright), over 8 m of height."""
+    for roll in ((8.0, 14.0), (0.0, 0.0)):
+        label, nav = areas(round_27["listing_ferry"](1, roll=roll), DROPS)
+        assert label.max() == 0 and np.ptp(nav.centres[:, 1]) > 8.0, roll
+
+
+def test_the_pipe_networks_pipes_chambers_and_street_are_one_area(round_27):
+    """Round pipes whose curved floors hold the walk, chambers, the outfall yard and the street over them (reached by
+    the ramp): one area, with over 1,500 m² under the street (pipes and chambers, under 1 m) and over 5,000 on it."""
+    label, nav = areas(round_27["pipe_network"](0), DROPS)
+    assert label.max() == 0
+    low, street = nav.areas[nav.centres[:, 1] < 1.0].sum(), nav.areas[nav.centres[:, 1] > 4.5].sum()
+    assert low > 1500.0 and street > 5000.0, (low, street)
+
+
+def test_the_boardwalks_planks_with_gaps_are_one_deck(round_27):
+    """Thousands of planks 1-3 cm apart, walks at every angle over no ground: one area (a half-size marsh, seed 0), all
+    its floor on the decks (0.5-1.2 m up) but the forecourt's (0.3 m, at the south shore, z under 15 m) and the foot
+    of the walk rising from it."""
+    label, nav = areas(round_27["boardwalk"](0, scale=0.5), DROPS)
+    assert label.max() == 0
+    low = nav.centres[:, 1] - 0.2 < 0.45
+    assert (nav.centres[low, 2] < 20.0).all() and nav.areas[~low].sum() > 200.0
+
+
+def test_the_car_lots_rows_of_cars_leave_one_area(round_27):
+    """Cars with gaps of 0.3-1.3 m between them part no aisle from the footway: one area of over 5,000 m²."""
+    label, nav = areas(round_27["car_lot"](0), DROPS)
+    assert label.max() == 0 and nav.areas.sum() > 5000.0
+
+
+def test_the_festival_camps_marquees_are_entered_through_their_angled_doors(round_27):
+    """40-50 marquees at random angles, each a room whose ground is floor: one area, so every marquee is entered
+    through its door 2.2 m wide (a marquee whose door shut would be an area of its own)."""
+    label, nav = areas(round_27["festival_camp"](0), DROPS)
+    assert label.max() == 0 and nav.areas.sum() > 9000.0
