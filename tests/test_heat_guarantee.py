@@ -380,7 +380,7 @@ def test_the_confirming_sample_is_begun_with_the_first_structure_only_above_the_
 
 
 def test_the_pipeline_begins_the_confirming_sample_once_step_2_has_run(shared_data, monkeypatch):
-    # so that it runs beside the one-core Python of steps 3-4 (docs/performance.md, 6 December 2026, 14:20 UTC on)
+    # so that it runs beside the one-core Python of steps 3-4 (docs/performance.md, "the confirming walking flow begun beside steps 3-4")
     registry = Registry.from_entry_points()
     mesh = load_mesh(shared_data / "nav_test.obj")[0]
     events: list = []
