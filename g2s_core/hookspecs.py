@@ -1,8 +1,10 @@
 """Every hook a plugin may implement, as pluggy hook specifications.
 
-A plugin implements exactly one of these hooks; the kind of plugin (its stage)
-is the hook it implements. :mod:`g2s_core.stages` lists them in one table with
-what each must return and how the result is checked. g2s calls only the plugin
+A plugin implements exactly one of the stage hooks (every hook here but
+``g2s_begin_ahead``, which a pipeline stage's plugin may implement beside its
+own); the kind of plugin (its stage) is the stage hook it implements.
+:mod:`g2s_core.stages` lists them in one table with what each must return and
+how the result is checked. g2s calls only the plugin
 the config (or the command line) chose, so every hook is ``firstresult``. A
 hook implementation may take any subset of the named arguments.
 """
@@ -100,6 +102,17 @@ def g2s_simplify_predicate(
     ``P`` may carry ``P.whole_forest``, the whole forest's simplification
     in one call (:mod:`g2s_core.simplify`), which must answer as Algorithm 4
     asking ``P`` chain by chain does; the pipeline then takes it.
+    """
+
+
+@hookspec(firstresult=True)
+def g2s_begin_ahead(params: PluginParams, context: RunContext) -> None:
+    """Optional beside a pipeline stage's hook: begin, on threads of the plugin's own, work its stage will need,
+    once step 2 has chosen the terminals (``context.graph`` exists); asked of every plugin the run planned.
+
+    Steps 3-4 run Python on one core, so work begun here takes the other (the heat guarantee's confirming walking
+    flow, :mod:`g2s_plugins.heat_guarantee`). What is begun changes no result: the stage later takes the values it
+    would have computed itself, and an error raised there reaches the stage that takes them.
     """
 
 

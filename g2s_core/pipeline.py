@@ -117,6 +117,9 @@ def run(
             result.stages.append(StageStats(stage.timing, time.perf_counter() - start, **record))
             if not go_on:
                 break
+            if stage.key == "terminals":  # the planned plugins may begin work ahead of steps 3-4 (hookspecs)
+                for planned in (chosen for stage_plugins in plan_.stages.values() for chosen in stage_plugins):
+                    registry.begin_ahead(planned.plugin, params=planned.params, context=context)
     finally:
         if collecting:
             gc.enable()

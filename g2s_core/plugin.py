@@ -7,7 +7,7 @@ entry-point group. It declares
 * ``Params``: a :class:`PluginParams` subclass describing its parameters
   (types, defaults, one-line docs, ranges); omitted means "no parameters",
 * exactly one stage hook from :mod:`g2s_core.hookspecs`, marked with
-  :data:`hookimpl`.
+  :data:`hookimpl` (a pipeline stage's plugin may add ``g2s_begin_ahead``).
 
 The module docstring's first line is the plugin's summary in ``g2s plugins``.
 """

@@ -239,9 +239,7 @@ class Registry:
         results (and, unless the stage says otherwise, exceptions) are checked the same way; the wrapper
         carries the function's own attributes, each callable one guarded as the function is.
         """
-        others = [p for p in self.manager.get_plugins() if p is not info.plugin]
-        caller = self.manager.subset_hook_caller(info.kind.hook, remove_plugins=others)
-        value = _guarded(info, caller, "raised")(**kwargs)
+        value = _guarded(info, self._alone(info, info.kind.hook), "raised")(**kwargs)
         problem = info.kind.check(value, kwargs, info.plugin)
         if problem is not None:
             raise info.failure(f"returned {problem}")
@@ -263,6 +261,16 @@ class Registry:
         checked.__dict__.update({name: _guarded(info, attribute, "its function raised") if callable(attribute) else attribute
                                  for name, attribute in getattr(value, "__dict__", {}).items()})
         return checked
+
+    def begin_ahead(self, info: PluginInfo, **kwargs: Any) -> None:
+        """Call ``info``'s ``g2s_begin_ahead`` (:mod:`g2s_core.hookspecs`) if it has one; an exception it raises other
+        than a :class:`~g2s_core.errors.G2SError` becomes ``info.failure(...)``, as in :meth:`call`."""
+        _guarded(info, self._alone(info, hookspecs.g2s_begin_ahead.__name__), "raised")(**kwargs)
+
+    def _alone(self, info: PluginInfo, hook: str) -> Callable[..., Any]:
+        """The caller of ``hook`` with ``info``'s plugin alone."""
+        others = [p for p in self.manager.get_plugins() if p is not info.plugin]
+        return self.manager.subset_hook_caller(hook, remove_plugins=others)
 
     def takes(self, info: PluginInfo, argument: str) -> bool:
         """Whether ``info``'s hook implementation takes the named ``argument`` (it may take any subset of them)."""

@@ -69,9 +69,10 @@ A structure that meets the target costs one measure, and above the exact
 size one more sampled walking flow (the confirmation's, once per run; a
 spread heat map's second sample from the first round on, which in
 ``map_analysis_sampling`` is the cover's flow, computed already), begun on a
-thread of its own as the first simplification starts
-(:func:`begin_second_sample`), so that it takes the core that simplification's
-Python leaves idle. The exact flow is
+thread of its own once step 2 has run (:func:`begin_ahead`, the predicate
+plugins' ``g2s_begin_ahead``; at the latest as the first simplification starts,
+:func:`begin_second_sample`), so that it takes the core that the Python of
+steps 3-4 leaves idle. The exact flow is
 computed once per run, on the first measure: O(n (m + n log n)), 0.02-0.13 s
 of CPU on levels of 700-1,400 polygons, 0.18 s at 1,974.
 """
@@ -350,13 +351,24 @@ def begin_second_sample(graph: nx.Graph, sources: int, ties: traffic.Ties, scali
                         sampling: traffic.Sampling) -> None:
     """Begin :func:`second_sample`'s walking flow on a thread of its own
     (:func:`~g2s_plugins.traffic.start_walking_flow`) when the heat map of ``graph`` is a sample (more nodes with
-    an area than :data:`~g2s_plugins.traffic.EXACT_NODES`), as the first simplification is about to start: it runs
-    on the core that simplification leaves idle (its Python, the structure built back, the first measure).
+    an area than :data:`~g2s_plugins.traffic.EXACT_NODES`), once step 2 has run (:func:`begin_ahead`) or as the first
+    simplification is about to start: it runs on the core that steps 3-4 (their Python) or that simplification (its
+    Python, the structure built back, the first measure) leave idle.
     Its CPU is spent for nothing only when no round meets the target (:func:`restored`'s warning at the floor)."""
     arrays = traffic.surface_arrays(graph)
     if not traffic.is_exact(arrays, sources, traffic.EXACT_NODES):
         traffic.start_walking_flow(arrays, sources, seed=_second_seed(traffic.sampling_order(graph, sampling)),
                                    ties=ties, scaling=scaling)
+
+
+def begin_ahead(params: CollapseParams, context: RunContext) -> None:
+    """What a predicate plugin with ``params.min_heat_rho`` begins ahead (its ``g2s_begin_ahead``,
+    :mod:`g2s_core.hookspecs`, which the pipeline asks for once step 2 has run): :func:`begin_second_sample` of its
+    heat map's settings, so that the confirming flow runs beside steps 3-4, whose Python leaves a core idle, instead
+    of beside step 5's. Nothing without a guarantee or a graph."""
+    if params.min_heat_rho is not None and context.graph is not None:
+        begin_second_sample(context.graph, params.heat_sources, params.heat_ties, params.heat_scaling,
+                            params.heat_sampling)
 
 
 def keeping(predicate: Predicate, kept: set[Hashable]) -> Predicate:
@@ -386,9 +398,7 @@ def guaranteed(
         predicate = make_predicate()
         if forest is not None:  # None: asked outside the pipeline, for one predicate
             _FIRST[forest] = predicate
-            if params.min_heat_rho is not None:
-                begin_second_sample(context.graph, params.heat_sources, params.heat_ties, params.heat_scaling,
-                                    params.heat_sampling)
+            begin_ahead(params, context)  # begun already when the pipeline asked for it after step 2
         return predicate
     if params.min_heat_rho is None:
         return None

@@ -36,7 +36,8 @@ class SurfaceArrays:
             of :func:`g2s_plugins.traffic.walking_flow`.
         begun: results of ``derived`` being computed on a thread of their own,
             under the same keys, until the first caller that wants one takes
-            it (:func:`g2s_plugins.traffic.start_walking_flow`).
+            it (:func:`g2s_plugins.traffic.start_walking_flow`; each a
+            :class:`g2s_plugins.traffic.BegunFlow`, whose ``taken`` it sets).
     """
 
     nodes: list[Hashable]

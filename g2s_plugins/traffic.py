@@ -165,7 +165,7 @@ __all__ = [
     "Scaling", "SurfaceArrays", "Ties", "arrays_walking_flow", "distance_to", "flow_error_bound", "gather", "is_exact",
     "linear_through", "od_flow", "origin_weight", "percentile", "plan_order", "represented_area", "sampling_order",
     "shortest_path_flow", "source_blocks", "split_path_flow", "start_walking_flow", "surface_arrays", "tie_tolerance",
-    "walking_flow", "walking_sources",
+    "tree_threads", "walking_flow", "walking_sources",
 ]
 
 Ties = Literal["first", "split"]
@@ -248,7 +248,8 @@ rho above the exact flow on levels of 700-1,400 polygons, whose exact flow costs
 map")."""
 
 THREADS = min(2, os.cpu_count() or 1)
-"""Threads of :func:`shortest_path_flow` (each runs whole sources; the values do not depend on it)."""
+"""Threads of :func:`shortest_path_flow` (each runs whole sources; the values do not depend on it), but one on a
+flow begun ahead that no caller waits for yet (:func:`start_walking_flow`)."""
 
 
 def distance_to(arrays: SurfaceArrays, sources: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -390,7 +391,7 @@ def shortest_path_flow(adjacency: sp.csr_array, sources: np.ndarray, values: np.
             descendants in that tree (its subtree without itself); 0 for the
             source and for unreached nodes.
 
-    In the C++ extension (``src/trees_module.cpp``) on :data:`THREADS`
+    In the C++ extension (``src/trees_module.cpp``) on :func:`tree_threads`
     threads: per source O(m log m) for the search (which queues only the
     nodes that are not passages of a corridor, two neighbours each, and walks
     through those) and O(m) for the sums,
@@ -405,7 +406,7 @@ def shortest_path_flow(adjacency: sp.csr_array, sources: np.ndarray, values: np.
     """
     return _trees.shortest_path_flow(
         *extension_csr(adjacency), np.asarray(sources, dtype=np.int32), np.ascontiguousarray(values, dtype=np.float64),
-        THREADS,
+        tree_threads(),
     )
 
 
@@ -428,7 +429,7 @@ def split_path_flow(adjacency: sp.csr_array, sources: np.ndarray, values: np.nda
     one pass forward over the settled nodes counting shortest paths and one
     back summing values, O(m) each; memory O(n + m) per thread beside the
     (b, n) result. In the C++ extension (``src/trees_module.cpp``) on
-    :data:`THREADS` threads, each source's sums in a fixed order: the same
+    :func:`tree_threads` threads, each source's sums in a fixed order: the same
     bits for any thread count.
 
     Raises:
@@ -436,7 +437,7 @@ def split_path_flow(adjacency: sp.csr_array, sources: np.ndarray, values: np.nda
     """
     return _trees.split_path_flow(
         *extension_csr(adjacency), np.asarray(sources, dtype=np.int32), np.ascontiguousarray(values, dtype=np.float64),
-        TIE_TOLERANCE, THREADS,
+        TIE_TOLERANCE, tree_threads(),
     )
 
 
@@ -731,7 +732,7 @@ def linear_through(adjacency: sp.csr_array, sources: np.ndarray, values: np.ndar
         sources: (b,) rows of the sources.
         values: (n,) the value of each node (its area, m²).
 
-    0 for the source and for unreached nodes. In the C++ extension (``src/trees_module.cpp``) on :data:`THREADS`
+    0 for the source and for unreached nodes. In the C++ extension (``src/trees_module.cpp``) on :func:`tree_threads`
     threads, each source one search, O(m log m), whose distances scale the values before the sums of
     :func:`split_path_flow` (or :func:`shortest_path_flow`) over that search, O(m), and weigh them after: the same bits
     as scipy's distances with numpy's divisions and products around those functions called per source.
@@ -740,7 +741,7 @@ def linear_through(adjacency: sp.csr_array, sources: np.ndarray, values: np.ndar
         adjacency = sp.csr_array((np.maximum(adjacency.data, MIN_LENGTH), adjacency.indices, adjacency.indptr), adjacency.shape)
     return _trees.linear_path_flow(
         *extension_csr(adjacency), np.asarray(sources, dtype=np.int32), np.ascontiguousarray(values, dtype=np.float64),
-        ties, TIE_TOLERANCE, THREADS,
+        ties, TIE_TOLERANCE, tree_threads(),
     )
 
 
@@ -787,6 +788,8 @@ def arrays_walking_flow(
     key, compute = _walking_flow_work(arrays, max_sources, seed, exact_up_to, ties, scaling, order)
     if key not in arrays.derived:
         begun = arrays.begun.pop(key, None)
+        if begun is not None:  # its next trees on THREADS threads: this thread now waits for them
+            begun.taken.set()
         arrays.derived[key] = begun.result() if begun is not None else compute()
     return arrays.derived[key]
 
@@ -802,7 +805,9 @@ def start_walking_flow(
 
     Why: the flow's trees run on both cores (:func:`shortest_path_flow`, the GIL released), and the Python a stage
     runs before it needs the flow keeps one core busy and the other idle; begun ahead, the trees take that idle
-    core. A flow begun and never taken (a heat guarantee none of whose rounds meets its target, a run stopped by an
+    core. They take that core alone (one thread, :func:`tree_threads`) until a caller waits for the flow, then both
+    again from its next block of sources on: two tree threads beside the caller's Python would share two cores
+    three ways and slow that Python, the run's longest chain, by up to a third. A flow begun and never taken (a heat guarantee none of whose rounds meets its target, a run stopped by an
     error or Ctrl-C) runs to its end all the same, sharing the cores with whatever the process does next (up to one
     flow's time: about 3 s of CPU at 100k polygons). The thread is not a daemon: the interpreter waits for it before
     it exits, as it would have waited for the flow in the caller's thread; a daemon thread still in the extension
@@ -811,9 +816,10 @@ def start_walking_flow(
     key, compute = _walking_flow_work(arrays, max_sources, seed, exact_up_to, ties, scaling, order)
     if key in arrays.derived or key in arrays.begun:
         return
-    future: Future[np.ndarray] = Future()
+    future = BegunFlow()
 
     def run() -> None:
+        _AHEAD.flow = future  # its trees on one thread until a caller takes it (tree_threads)
         try:
             future.set_result(compute())
         except BaseException as exc:  # handed to the caller that takes the flow
@@ -821,6 +827,27 @@ def start_walking_flow(
 
     arrays.begun[key] = future
     threading.Thread(target=run, name="walking flow").start()
+
+
+class BegunFlow(Future):
+    """A walking flow being computed on a thread of its own (:func:`start_walking_flow`); ``taken`` is set once a
+    caller waits for it (:func:`arrays_walking_flow`)."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.taken = threading.Event()
+
+
+_AHEAD = threading.local()
+"""``flow``: on a thread that computes a flow begun ahead, its :class:`BegunFlow`."""
+
+
+def tree_threads() -> int:
+    """Threads of the extension's next call of trees: 1 on the thread of a flow begun ahead that no caller waits for
+    yet (the caller's own thread holds the other core: :func:`start_walking_flow`), else :data:`THREADS`. The values
+    do not depend on it."""
+    begun = getattr(_AHEAD, "flow", None)
+    return 1 if begun is not None and not begun.taken.is_set() else THREADS
 
 
 def _walking_flow_work(

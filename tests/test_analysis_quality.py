@@ -6,6 +6,7 @@ import hashlib
 import heapq
 import json
 import math
+import threading
 from types import SimpleNamespace
 
 import networkx as nx
@@ -388,6 +389,30 @@ def test_a_walking_flow_begun_ahead_is_the_one_the_caller_would_have_computed(mo
     traffic.start_walking_flow(arrays, max_sources=2, seed=2)
     with pytest.raises(ZeroDivisionError):
         traffic.arrays_walking_flow(arrays, max_sources=2, seed=2)
+
+
+def test_a_flow_begun_ahead_walks_on_one_thread_until_a_caller_waits_for_it(monkeypatch):
+    # one thread beside the caller's Python, which holds the other core; both once the caller waits (traffic.py)
+    monkeypatch.setattr(traffic, "THREADS", 2)
+    monkeypatch.setattr(traffic, "BLOCK_ENTRIES", 1)  # one source a block: seven blocks on these seven nodes
+    arrays = traffic.surface_arrays(spine_and_side_room())
+    through, threads, second = traffic._through, [], threading.Event()
+
+    def recording(*args):
+        threads.append(traffic.tree_threads())
+        if len(threads) == 2:  # the second block goes on once the caller waits for the flow
+            second.set()
+            assert traffic._AHEAD.flow.taken.wait(30)  # this thread's flow
+        return through(*args)
+
+    monkeypatch.setattr(traffic, "_through", recording)
+    traffic.start_walking_flow(arrays)  # the exact flow: every node a source
+    assert traffic.tree_threads() == 2  # the caller's own thread
+    assert second.wait(30)
+    flow = traffic.arrays_walking_flow(arrays)
+    assert threads == [1, 1, 2, 2, 2, 2, 2]  # the block under way when the caller came finishes on its one thread
+    arrays = traffic.surface_arrays(spine_and_side_room())
+    assert flow.tobytes() == traffic.arrays_walking_flow(arrays).tobytes() and threads[7:] == [2] * 7
 
 
 def test_the_coverage_selector_begins_its_walking_flow_before_its_leaves(monkeypatch):

@@ -379,6 +379,26 @@ def test_the_confirming_sample_is_begun_with_the_first_structure_only_above_the_
     assert begun[1] == ((1,), {"seed": 0, "ties": "split", "scaling": "linear"})
 
 
+def test_the_pipeline_begins_the_confirming_sample_once_step_2_has_run(shared_data, monkeypatch):
+    # so that it runs beside the one-core Python of steps 3-4 (docs/performance.md, "the confirming walking flow begun beside steps 3-4")
+    registry = Registry.from_entry_points()
+    mesh = load_mesh(shared_data / "nav_test.obj")[0]
+    events: list = []
+    start = traffic.start_walking_flow
+    monkeypatch.setattr(traffic, "EXACT_NODES", 1)  # nav_test's heat map read as a sample's, and confirmed
+    monkeypatch.setattr(traffic, "start_walking_flow", lambda arrays, *args, **kwargs: events.append(
+        ("begun", args, kwargs)) or start(arrays, *args, **kwargs))
+    raw = load_raw_config(PRESETS_DIR / "map_analysis.yaml")
+    raw["simplify"]["params"]["heat_sources"] = 16
+    pipeline.run(pipeline.plan(parse_config(raw), registry), registry, mesh, "nav_test", mesh_sha256(mesh),
+                 progress=lambda message: events.append(message) if isinstance(message, str) else None)
+    steps = [event for event in events if isinstance(event, str) and event.startswith("Step ")]  # not warnings
+    confirming = ("begun", (16,), {"seed": heat_guarantee.CONFIRMING_SEED, "ties": "first", "scaling": "none"})
+    # first asked after step 2, before step 3 (the first simplification asks again and finds it begun)
+    assert events.index(steps[1]) < events.index(confirming) < events.index(steps[2])
+    assert steps[1].startswith("Step 2:") and steps[2].startswith("Step 3:")
+
+
 def test_the_benchmark_reference_is_exact_up_to_the_guarantee_size():
     graph = nx.convert_node_labels_to_integers(nx.grid_2d_graph(30, 20), ordering="sorted")  # 600 > 512 sources
     for i in graph:

@@ -84,6 +84,34 @@ def test_a_plugin_implements_exactly_one_stage():
         registry.register(make_plugin("neither"), package="p", entry_point="e")
 
 
+def test_begin_ahead_reaches_only_that_plugin_and_its_failures_name_it():
+    begun = []
+
+    @hookimpl
+    def begin(params, context):
+        begun.append(context)
+
+    @hookimpl
+    def begin_broken(context):
+        raise KeyError("settings")
+
+    registry = Registry()
+    eager = registry.register(make_plugin("eager", g2s_select_terminals=select_first, g2s_begin_ahead=begin),
+                              package="p", entry_point="a")
+    plain = registry.register(terminal_plugin("plain"), package="p", entry_point="b")
+    broken = registry.register(make_plugin("broken", g2s_select_terminals=select_first, g2s_begin_ahead=begin_broken),
+                               package="pkg-b", entry_point="c")
+    assert eager.stage == "terminals"  # g2s_begin_ahead is no stage hook
+    registry.begin_ahead(plain, params=None, context="run")  # no g2s_begin_ahead: nothing asked
+    registry.begin_ahead(eager, params=None, context="run")
+    assert begun == ["run"]
+    with pytest.raises(PluginFailure, match=r"^TerminalSelector plugin 'broken' \(package 'pkg-b'\) failed: "
+                                            r"raised KeyError: 'settings'$"):
+        registry.begin_ahead(broken, params=None, context="run")
+    with pytest.raises(PluginError, match="found none"):  # alone it makes no plugin
+        registry.register(make_plugin("ahead", g2s_begin_ahead=begin), package="p", entry_point="d")
+
+
 def test_unknown_hook_and_missing_name_are_errors():
     @hookimpl
     def g2s_no_such_stage():

@@ -74,7 +74,7 @@ from g2s_core.simplify import ForestArrays
 from g2s_plugins._raycasting import GROUND_MARGIN, AgentShape, OpenFloors, RayCaster, walk_segments
 from g2s_plugins._surface import CollapseParams, RuleArrays, collapse_rule
 from g2s_plugins.graph_builders.sampling import DISK_SHARE
-from g2s_plugins.heat_guarantee import guaranteed
+from g2s_plugins.heat_guarantee import begin_ahead, guaranteed
 from g2s_plugins.recast.navmesh import collapse_forest_seeing
 
 NAME = "mesh_los"
@@ -257,3 +257,10 @@ def g2s_simplify_predicate(
     agent = AgentShape.from_config(context.agent)
     return guaranteed(lambda: mesh_los_predicate(context.mesh, agent, params, context.graph), params, context, forest,
                       simplified)
+
+
+@hookimpl
+def g2s_begin_ahead(params: Params, context: RunContext) -> None:
+    """With ``min_heat_rho``, the heat guarantee's confirming walking flow begun beside steps 3-4
+    (:func:`g2s_plugins.heat_guarantee.begin_ahead`)."""
+    begin_ahead(params, context)

@@ -45,7 +45,7 @@ from g2s_core.plugin import hookimpl
 from g2s_core.simplify import ForestArrays
 from g2s_plugins import structure_leaves, traffic
 from g2s_plugins._surface import CollapseParams, RuleArrays, collapse_rule
-from g2s_plugins.heat_guarantee import guaranteed
+from g2s_plugins.heat_guarantee import begin_ahead, guaranteed
 
 NAME = "surface_los"
 
@@ -103,3 +103,10 @@ def g2s_simplify_predicate(
         raise PluginError("leaf_cover_radius needs a navmesh with the native simplification (collapse_forest)")
     return guaranteed(lambda: collapse_rule(params, line_of_sight, context.graph, whole), params, context, forest,
                       simplified)
+
+
+@hookimpl
+def g2s_begin_ahead(params: Params, context: RunContext) -> None:
+    """With ``min_heat_rho``, the heat guarantee's confirming walking flow begun beside steps 3-4
+    (:func:`g2s_plugins.heat_guarantee.begin_ahead`)."""
+    begin_ahead(params, context)
