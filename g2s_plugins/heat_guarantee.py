@@ -55,11 +55,13 @@ when no removed node differs by more than the floor and rho is still
 under the target, the last structure is kept with a warning that says so.
 
 Restoring gives back at most the whole forest, so where the forest's own
-heat map reads under the target no round meets it. The loop adder
+heat map reads under the target no round meets it, and just over it only
+nearly the whole forest does. The loop adder
 (``loops.params.min_heat_rho`` of ``spanner``) reads that before rooting
-and, there alone, joins the nodes the forest's heat map ranks worst to it
-(:func:`spurs`), the same measure and floor; Algorithm 4 never removes a
-leaf, so each spur's end stays in the structure.
+and, where it reads under the target plus a headroom, joins the nodes the
+forest's heat map ranks worst to it (:func:`spurs`), the same measure and
+floor; Algorithm 4 never removes a leaf, so each spur's end stays in the
+structure.
 
 Complexity: a round is one simplification (its predicate calls) and one
 measure (a multi-source Dijkstra over the initial graph, O(m + n log n),
@@ -252,19 +254,23 @@ def spurs(
 ) -> list[list[Hashable]]:
     """Paths of ``graph`` (the run's initial graph) from the nodes the heat map of ``forest_nodes`` ranks worst to
     the forest, when that heat map, every node of the forest kept, reads under the guarantee's target
-    (``min_rho`` plus the reading's margin, :func:`heat_reading`): no simplification of that forest can meet it,
-    since restoring removed nodes gives back at most the whole forest. Then, round by round, the nodes outside the
-    forest whose own percentile of the heat map's flow differs most from the heat they are given (by more than
-    :data:`FLOOR` points; by decreasing difference, then row), ceil(:data:`SPUR_SHARE` x the graph's nodes) of them,
-    are joined to it by their shortest paths to its nearest node, until the reading reaches the target plus
-    ``headroom`` (which leaves simplification room to remove nodes) or no node differs by more than the floor.
-    Empty when the forest meets the target. Each path runs from a forest node out; the paths of one round are
-    branches of one shortest-path tree, so they add no loop.
+    (``min_rho`` plus the reading's margin, :func:`heat_reading`) plus ``headroom``. Then, round by round, the
+    nodes outside the forest whose own percentile of the heat map's flow differs most from the heat they are given
+    (by more than :data:`FLOOR` points; by decreasing difference, then row), ceil(:data:`SPUR_SHARE` x the graph's
+    nodes) of them, are joined to it by their shortest paths to its nearest node, until the reading reaches the
+    target plus ``headroom`` or no node differs by more than the floor. Empty when the forest reads the target plus
+    ``headroom``. Each path runs from a forest node out; the paths of one round are branches of one shortest-path
+    tree, so they add no loop.
 
-    Why: on a level whose walking flow steps by 50 percentile points or more between neighbouring nodes (a line of
-    through traffic across a small platform, its dead-end sides beside it), a structure node on the line stands for
-    the quiet nodes beside it, and no node of the forest sits there (docs/analysis_quality.md, "Spurs where the
-    heat map ranks worst").
+    Why: under the target no simplification of the forest can meet it, since restoring removed nodes gives back at
+    most the whole forest: on a level whose walking flow steps by 50 percentile points or more between
+    neighbouring nodes (a line of through traffic across a small platform, its dead-end sides beside it), a
+    structure node on the line stands for the quiet nodes beside it, and no node of the forest sits there
+    (docs/analysis_quality.md, "Spurs where the heat map ranks worst"). Just over the target the guarantee can meet
+    it only by giving back nearly the whole forest: behind a wall with gaps (vine rows, double doors, galleries)
+    the flow runs as a busy line from gap to gap beside quiet floor, and the forest's paths cross both, so its
+    removed nodes each mend little; the spurs reach the samples ranked worst, and as leaves they stay
+    (docs/analysis_quality.md, "Walls with gaps on the sampling route").
 
     Complexity: per round one multi-source Dijkstra for the paths and one reading, O(m + n log n); each round adds
     at least one node.
@@ -272,7 +278,7 @@ def spurs(
     nodes = set(forest_nodes)
     reading = heat_reading(graph, nodes, sources, ties, scaling, sampling)
     target = min_rho + reading.margin
-    if not reading.rho < target:
+    if not reading.rho < target + headroom:
         return []
     arrays, paths = reading.arrays, []
     own = traffic.percentile(reading.shown)

@@ -72,7 +72,43 @@ def test_the_forest_gets_a_spur_into_the_pocket_its_heat_map_cannot_rank():
     assert flow.tolist() == [0, 18, 32, 42, 64, 42, 32, 18, 0, 18, 0]
     assert evaluation.placement_rho(graph, range(9), flow) == pytest.approx(0.7583, abs=1e-4)
     assert heat_guarantee.spurs(graph, range(9), 0.9, 0.03) == [[4, 9, 10]]
-    assert heat_guarantee.spurs(graph, range(9), 0.75, 0.03) == []  # the forest meets the target: no spur
+    assert heat_guarantee.spurs(graph, range(9), 0.72, 0.03) == []  # the forest meets the target plus headroom
+
+
+def wall_with_two_gaps() -> nx.Graph:
+    """Node ``10 z + x``: a floor of two rows of seven 1 m² samples (z 0 and 1, 1 m apart along x, 1.5 m across),
+    a wall (row 2) open only at x 1 and 5 (samples 21 and 25), and behind it a lane of seven (row 3)."""
+    graph = nx.Graph()
+    nodes = [10 * z + x for z in (0, 1, 3) for x in range(7)] + [21, 25]
+    for node in nodes:
+        graph.add_node(node, pos=(float(node % 10), 0.0, 1.5 * (node // 10)), area=1.0, normal=(0.0, 1.0, 0.0),
+                       on_navmesh=True)
+    graph.add_weighted_edges_from([(node, node + 1, 1.0) for node in nodes if node + 1 in nodes and node % 10 < 6]
+                                  + [(node, node + 10, 1.5) for node in nodes if node + 10 in nodes])
+    return graph
+
+
+def test_a_wall_with_two_gaps_gets_a_spur_though_its_forest_meets_the_target():
+    # walking-flow percentiles (split ties, linearly scaled, 256 sources: every one of the 23), lane, gaps, floor:
+    #    4.3  73.9  52.2  45.7  52.2  73.9   4.3
+    #          65.2                    65.2
+    #   21.7  95.7  87.0  80.4  87.0  95.7  21.7    the busy line from gap to gap
+    #   13.0  30.4  39.1  58.7  39.1  30.4  13.0    the quiet floor
+    # The forest: the quiet row, the lane and the two gaps down to the line (11, 15). 10, 12 are 1 m from 11 and
+    # 1.5 m from 0, 2, so 11 stands for 10 - 12 (heat 68.1, their mean) as 15 for 14 - 16; 13 is 1.5 m from 3 and
+    # 2 m from 11 and 15, so 3 stands for 3 and 13 (69.6): rho 0.755. The quiet corner 10 is given the busy line's
+    # heat, 46.4 points over its own (16 the same; 10 first, by row); joined (ceil of 1 % of 23: one a round),
+    # the reading passes 0.78. Over the target 0.75, no simplification of this forest needs more, but a target of
+    # 0.75 asks for 0.78 of it (the headroom 0.03): the restore rounds would keep most of the forest instead.
+    graph = wall_with_two_gaps()
+    flow = traffic.walking_flow(graph, max_sources=traffic.WALKING_SOURCES, ties="split", scaling="linear")
+    forest = [0, 1, 2, 3, 4, 5, 6, 30, 31, 32, 33, 34, 35, 36, 21, 25, 11, 15]
+    heat = evaluation.placement_heat(graph, forest, flow)
+    rows = traffic.surface_arrays(graph).rows([10, 11, 12, 13, 14, 3])
+    assert heat[rows] == pytest.approx([68.1, 68.1, 68.1, 69.6, 68.1, 69.6], abs=0.05)
+    assert evaluation.spearman(heat, flow) == pytest.approx(0.755, abs=1e-3)
+    assert heat_guarantee.spurs(graph, forest, 0.75, 0.03, ties="split", scaling="linear") == [[11, 10]]
+    assert heat_guarantee.spurs(graph, forest, 0.72, 0.03, ties="split", scaling="linear") == []
 
 
 def test_the_loop_adder_adds_the_spurs_only_with_a_heat_target():

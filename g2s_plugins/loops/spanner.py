@@ -67,13 +67,13 @@ class Params(HeatFlowParams):
     min_gain: float = Field(3.0, ge=0, description="and the structure is longer by more than this, metres")
     min_heat_rho: float | None = Field(
         None, ge=-1, le=1, description="when the heat map of the looped forest, every node kept, ranks the nodes under "
-        "this (plus the sampled flow's margin) against walking flow, join the nodes it ranks worst to it by their "
-        "shortest paths until it reaches this plus heat_headroom (g2s_plugins/heat_guarantee.py, spurs); set as the "
+        "this (plus the sampled flow's margin) plus heat_headroom against walking flow, join the nodes it ranks worst "
+        "to it by their shortest paths until it reaches that (g2s_plugins/heat_guarantee.py, spurs); set as the "
         "simplification's min_heat_rho; null: no such paths"
     )
     heat_headroom: float = Field(
-        HEAT_HEADROOM, ge=0, le=1, description="rho over that target the paths lift the looped forest's heat map to, "
-        "so that simplification can remove nodes and still meet it"
+        HEAT_HEADROOM, ge=0, le=1, description="rho over that target under which the paths are added and to which they "
+        "lift the looped forest's heat map, so that simplification can remove nodes and still meet it"
     )
 
 
