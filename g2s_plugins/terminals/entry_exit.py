@@ -1111,8 +1111,8 @@ def _onto_floor_end(first: np.ndarray, last: np.ndarray, out: np.ndarray, caster
 def _seams(samples: LoopSamples, ways: _Ways, s: _Settings) -> np.ndarray:
     """(M,) bool: the boundary samples facing another stretch of boundary less than the agent's radius away in plan,
     within the climb: seams between parts of one floor, which :func:`main_floor` joins (boundaries within a radius),
-    not the floor's sides. Two samples face each other when each lies ahead of the other along its outward
-    direction in plan and those directions are opposed. A wall between two floors leaves them at least the agent's
+    not the floor's sides. Two samples face each other when each lies ahead of the other, within 60 degrees
+    of its outward direction in plan (:data:`_SEAM_AHEAD`), and those directions are opposed. A wall between two floors leaves them at least the agent's
     diameter and the wall apart, so only a cut in the surface makes a seam: a sampled surface broken into pieces in
     a passage barely wider than the agent (the twenty-seventh round's hatch lid 0.95 m in front of a door wall), a
     floor Recast cuts at a pinch. O(M log M + P) for the P pairs within the radius (a k-d tree)."""
@@ -1122,12 +1122,23 @@ def _seams(samples: LoopSamples, ways: _Ways, s: _Settings) -> np.ndarray:
     pairs = cKDTree(position[:, [0, 2]]).query_pairs(s.radius, output_type="ndarray").reshape(-1, 2)
     i, j = pairs[:, 0], pairs[:, 1]
     gap = (position[j] - position[i]) * np.array([1.0, 0.0, 1.0])
-    facing = ((np.abs(position[i, 1] - position[j, 1]) <= s.climb) & (np.einsum("ij,ij->i", gap, outward[i]) > 0.0)
-              & (np.einsum("ij,ij->i", gap, outward[j]) < 0.0) & (np.einsum("ij,ij->i", outward[i], outward[j]) < 0.0))
+    ahead = _SEAM_AHEAD * np.linalg.norm(gap, axis=1)
+    facing = ((np.abs(position[i, 1] - position[j, 1]) <= s.climb) & (np.einsum("ij,ij->i", gap, outward[i]) > ahead)
+              & (np.einsum("ij,ij->i", gap, outward[j]) < -ahead) & (np.einsum("ij,ij->i", outward[i], outward[j]) < 0.0))
     seam = np.zeros(len(position), dtype=bool)
     seam[i[facing]] = True
     seam[j[facing]] = True
     return seam
+
+
+
+_SEAM_AHEAD = 0.5
+"""Cosine of the widest angle off a boundary sample's outward direction (in plan) at which another sample lies ahead of
+it, facing it across a seam (:func:`_seams`): 60 degrees. The two sides of a single file of samples (a polygon of two
+corners, whose boundary runs along both its sides) lie along the line from each other, 90 degrees off, and are no
+seam; with no angle the rounding of their positions made about half of them seams (``catwalk_over_hall`` at 45
+degrees on the sampling route: 87 -> 53 samples counted; docs/entry_exit.md, "A twenty-seventh round of piece
+kinds")."""
 
 
 def _drop_links(samples: LoopSamples, ways: _Ways, s: _Settings) -> np.ndarray:
