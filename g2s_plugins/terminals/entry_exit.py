@@ -1111,11 +1111,12 @@ def _onto_floor_end(first: np.ndarray, last: np.ndarray, out: np.ndarray, caster
 def _seams(samples: LoopSamples, ways: _Ways, s: _Settings) -> np.ndarray:
     """(M,) bool: the boundary samples facing another stretch of boundary less than the agent's radius away in plan,
     within the climb: seams between parts of one floor, which :func:`main_floor` joins (boundaries within a radius),
-    not the floor's sides. Two samples face each other when each lies ahead of the other, within 60 degrees
-    of its outward direction in plan (:data:`_SEAM_AHEAD`), and those directions are opposed. A wall between two floors leaves them at least the agent's
-    diameter and the wall apart, so only a cut in the surface makes a seam: a sampled surface broken into pieces in
-    a passage barely wider than the agent (the twenty-seventh round's hatch lid 0.95 m in front of a door wall), a
-    floor Recast cuts at a pinch. O(M log M + P) for the P pairs within the radius (a k-d tree)."""
+    not the floor's sides. Two samples face each other when each lies ahead of the other, within 60 degrees of its
+    outward direction in plan (:data:`_SEAM_AHEAD`), and those directions are opposed. A wall between two floors
+    leaves them at least the agent's diameter and the wall apart, so only a cut in the surface makes a seam: a
+    sampled surface broken into pieces in a passage barely wider than the agent (the twenty-seventh round's hatch
+    lid 0.95 m in front of a door wall), a floor Recast cuts at a pinch. O(M log M + P) for the P pairs within the
+    radius (a k-d tree)."""
     outward = np.cross(ways.tangent, ways.normal) * np.array([1.0, 0.0, 1.0])
     outward /= np.maximum(np.linalg.norm(outward, axis=1, keepdims=True), 1e-12)
     position = samples.position
@@ -1129,7 +1130,6 @@ def _seams(samples: LoopSamples, ways: _Ways, s: _Settings) -> np.ndarray:
     seam[i[facing]] = True
     seam[j[facing]] = True
     return seam
-
 
 
 _SEAM_AHEAD = 0.5
@@ -1965,7 +1965,8 @@ def detect_openings(
         # all of them
         side = ~_seams(samples, ways, s)
         closed = np.zeros((len(surface.areas), 2))
-        np.add.at(closed, samples.polygon[side], np.stack([~ways.found & ~ways.into_piece, np.ones(len(ways.found), bool)], 1)[side])
+        counted = np.stack([~ways.found & ~ways.into_piece, np.ones(len(ways.found), bool)], 1)
+        np.add.at(closed, samples.polygon[side], counted[side])
         main = main_floor(surface, agent, loops, looks_out, closed, _drop_links(samples, ways, s))
         segments = [g for g in segments if main[samples.polygon[g]].any()]
     kept = _split_at_piers(_match_edges(segments, ways, caster, s, params), ways, caster, s)
