@@ -1108,6 +1108,39 @@ def _onto_floor_end(first: np.ndarray, last: np.ndarray, out: np.ndarray, caster
     return first + moved, last + moved
 
 
+def _seams(samples: LoopSamples, ways: _Ways, s: _Settings) -> np.ndarray:
+    """(M,) bool: the boundary samples facing another stretch of boundary less than the agent's radius away in plan,
+    within the climb: seams between parts of one floor, which :func:`main_floor` joins (boundaries within a radius),
+    not the floor's sides. Two samples face each other when each lies ahead of the other, within 60 degrees of its
+    outward direction in plan (:data:`_SEAM_AHEAD`), and those directions are opposed. A wall between two floors
+    leaves them at least the agent's diameter and the wall apart, so only a cut in the surface makes a seam: a
+    sampled surface broken into pieces in a passage barely wider than the agent (the twenty-seventh round's hatch
+    lid 0.95 m in front of a door wall), a floor Recast cuts at a pinch. O(M log M + P) for the P pairs within the
+    radius (a k-d tree)."""
+    outward = np.cross(ways.tangent, ways.normal) * np.array([1.0, 0.0, 1.0])
+    outward /= np.maximum(np.linalg.norm(outward, axis=1, keepdims=True), 1e-12)
+    position = samples.position
+    pairs = cKDTree(position[:, [0, 2]]).query_pairs(s.radius, output_type="ndarray").reshape(-1, 2)
+    i, j = pairs[:, 0], pairs[:, 1]
+    gap = (position[j] - position[i]) * np.array([1.0, 0.0, 1.0])
+    ahead = _SEAM_AHEAD * np.linalg.norm(gap, axis=1)
+    facing = ((np.abs(position[i, 1] - position[j, 1]) <= s.climb) & (np.einsum("ij,ij->i", gap, outward[i]) > ahead)
+              & (np.einsum("ij,ij->i", gap, outward[j]) < -ahead) & (np.einsum("ij,ij->i", outward[i], outward[j]) < 0.0))
+    seam = np.zeros(len(position), dtype=bool)
+    seam[i[facing]] = True
+    seam[j[facing]] = True
+    return seam
+
+
+_SEAM_AHEAD = 0.5
+"""Cosine of the widest angle off a boundary sample's outward direction (in plan) at which another sample lies ahead of
+it, facing it across a seam (:func:`_seams`): 60 degrees. The two sides of a single file of samples (a polygon of two
+corners, whose boundary runs along both its sides) lie along the line from each other, 90 degrees off, and are no
+seam; with no angle the rounding of their positions made about half of them seams (``catwalk_over_hall`` at 45
+degrees on the sampling route: 87 -> 53 samples counted; docs/entry_exit.md, "A twenty-seventh round of piece
+kinds")."""
+
+
 def _drop_links(samples: LoopSamples, ways: _Ways, s: _Settings) -> np.ndarray:
     """(D, 2) polygon pairs (from, to): a boundary sample's polygon and the polygon of the floor the agent lands on
     walking off the ledge before it, more than the climb and less than a storey (the agent's height) down.
@@ -1521,8 +1554,9 @@ def main_floor(
     agent's height or more from there: the parts of a corridor cut by a barrier or by a pass narrower than
     Recast keeps, a flight carried over the hall it rises from and cut from it at its foot; not a wall's top,
     a ravine's floor below a bridge or a flat roof at the main floor's level (a tunnel's). ``closed``: (P, 2)
-    each polygon's boundary samples closed by what stands on its floor (no way out, and none reaching the floor's
-    end but for the piece lying below beyond it) and all its boundary samples; given,
+    each polygon's boundary samples on the floor's sides (not its seams, :func:`_seams`) closed by what stands on its
+    floor (no way out, and none reaching the floor's end but for the piece lying below beyond it), and all of them;
+    given,
     a floor a storey (the agent's height) or more above or below the main one that leaves the piece, with at
     least :data:`_WALKWAY_CLOSED` of its boundary samples closed (walls or railings along its sides), holds
     openings too: a railed deck crossing over a corridor, and the corridor under it; not a wall's top whose
@@ -1927,9 +1961,12 @@ def detect_openings(
         looks_out = np.zeros(len(surface.areas), dtype=bool)
         for g in segments:
             looks_out[samples.polygon[g]] = True
-        # each polygon's boundary samples closed by what stands on the floor, and all of them
+        # each polygon's boundary samples on the floor's sides (not its seams) closed by what stands on the floor, and
+        # all of them
+        side = ~_seams(samples, ways, s)
         closed = np.zeros((len(surface.areas), 2))
-        np.add.at(closed, samples.polygon, np.stack([~ways.found & ~ways.into_piece, np.ones(len(ways.found), bool)], 1))
+        counted = np.stack([~ways.found & ~ways.into_piece, np.ones(len(ways.found), bool)], 1)
+        np.add.at(closed, samples.polygon[side], counted[side])
         main = main_floor(surface, agent, loops, looks_out, closed, _drop_links(samples, ways, s))
         segments = [g for g in segments if main[samples.polygon[g]].any()]
     kept = _split_at_piers(_match_edges(segments, ways, caster, s, params), ways, caster, s)
