@@ -71,9 +71,9 @@ none facing up."""
 
 MAX_AGAINST_NEIGHBOURS = 0.05
 """Share of the edges joining two faces that run the same way in both (faces wound against their neighbours: normals
-a modeller left flipped) above which a misread run names it (:func:`wound_against_neighbours`): 0 on every sample
-level, level kind and shared mesh measured, 0.26 to 0.33 on the same with every other face flipped (docs/errors.md,
-robust45)."""
+a modeller left flipped) above which a misread run names it (:func:`wound_against_neighbours`): 0 on each of the 47
+sample levels, ``nav_test.obj`` and the two shared pieces, 0.26 to 0.89 on the same with every other face flipped
+(docs/errors.md, robust45)."""
 
 RAY_START = 1e-3
 """Height over a face's centre the headroom ray of :func:`hidden_floor_bodies` starts at, metres: clear of the face."""
