@@ -235,7 +235,9 @@ def _read_yaml(path: Path) -> dict[str, Any]:
 def find_config(name: str | Path, base_dir: Path = Path()) -> Path:
     """The config file ``name`` names: a file (relative to ``base_dir``), else a preset.
 
-    ``name`` may leave out ``.yaml``; a file of that name wins over a preset.
+    ``name`` may leave out ``.yaml``; a file of that name wins over a preset. Where no such file is, the relative path
+    ``configs/X.yaml`` names the preset ``X``: the repository keeps its presets in
+    ``configs/``, and its docs run them so, from an installed package too.
     When neither matches but ``name`` is there as something other than a
     file (a folder, a FIFO, a device), that path is returned for the reader
     to refuse saying what it is.
@@ -244,7 +246,8 @@ def find_config(name: str | Path, base_dir: Path = Path()) -> Path:
         ConfigError: neither a file nor a preset has that name.
     """
     given = base_dir / name
-    candidates = [given, base_dir / f"{name}.yaml", PRESETS_DIR / name, PRESETS_DIR / f"{name}.yaml"]
+    preset = Path(name).name if Path(name).parent == Path("configs") else name  # configs/X.yaml: the repository's, a wheel's presets
+    candidates = [given, base_dir / f"{name}.yaml", PRESETS_DIR / preset, PRESETS_DIR / f"{preset}.yaml"]
     for candidate in candidates:
         if _is_file(candidate):  # not Path.is_file: a name too long for the file system raises
             return candidate

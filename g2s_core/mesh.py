@@ -340,12 +340,12 @@ def prepare_and_clean(loaded: object, config: MeshConfig, source: str) -> tuple[
 
 def clean_mesh(mesh: trimesh.Trimesh, source: str = "mesh") -> tuple[trimesh.Trimesh, dict[str, int]]:
     """Merge close vertices and drop zero-area faces with pymeshlab, drop duplicate faces (of a two-sided
-    face its up-facing side stays), then turn closed bodies wound inside out the right way
-    (:func:`flip_inside_out_bodies`).
+    face its up-facing side stays), wind each body's faces one way (:func:`wind_bodies_one_way`), then turn closed
+    bodies wound inside out the right way (:func:`flip_inside_out_bodies`).
 
     Returns:
         The cleaned mesh and the count of what each step removed or flipped
-        (``merged_vertices``, ``duplicate_faces``, ``zero_area_faces``, ``flipped_bodies``).
+        (``merged_vertices``, ``duplicate_faces``, ``zero_area_faces``, ``rewound_faces``, ``flipped_bodies``).
 
     Raises:
         MeshError: no triangle is left; the message starts with ``source``.
@@ -371,8 +371,24 @@ def clean_mesh(mesh: trimesh.Trimesh, source: str = "mesh") -> tuple[trimesh.Tri
     result.update_faces(kept)
     if len(result.faces) == 0:
         raise MeshError(f"{source}: mesh.clean removed every triangle (each had zero area, or corners merged into one)")
+    result, rewound = wind_bodies_one_way(result)
     result, flipped = flip_inside_out_bodies(result)
-    return result, {"merged_vertices": merged, "duplicate_faces": len(order) - len(kept), "zero_area_faces": zero_area, "flipped_bodies": len(flipped)}
+    return result, {"merged_vertices": merged, "duplicate_faces": len(order) - len(kept), "zero_area_faces": zero_area, "rewound_faces": rewound, "flipped_bodies": len(flipped)}
+
+
+def wind_bodies_one_way(mesh: trimesh.Trimesh) -> tuple[trimesh.Trimesh, int]:
+    """A copy of ``mesh`` whose faces wound against their neighbours (normals a modeller left flipped) are wound as
+    most of their body's area is, and how many faces turned.
+
+    trimesh's ``fix_winding`` winds each body (faces joined by edges of two faces) as its first face in a breadth-first
+    walk is; a body most of whose area that turns is turned back whole, so that the file's winding wins its majority
+    (an open floor has no volume to tell its up from). O(faces log faces)."""
+    trimesh.repair.fix_winding(wound := mesh.copy())
+    turned = np.any(wound.faces != mesh.faces, axis=1)
+    bodies = trimesh.graph.connected_components(mesh.face_adjacency, nodes=np.arange(len(mesh.faces)))
+    back = [face for body in bodies if 2 * mesh.area_faces[body][turned[body]].sum() > mesh.area_faces[body].sum() for face in body]
+    turned[back] = ~turned[back]
+    return trimesh.Trimesh(mesh.vertices, np.where(turned[:, None], mesh.faces[:, ::-1], mesh.faces), process=False), int(turned.sum())
 
 
 def flip_inside_out_bodies(mesh: trimesh.Trimesh) -> tuple[trimesh.Trimesh, list[np.ndarray]]:

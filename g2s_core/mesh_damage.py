@@ -85,6 +85,9 @@ SIGNATURES = ((b"glTF", ".glb"), (b"ply", ".ply"), (b"OFF", ".off"), (b"solid", 
 """The first bytes of a mesh format's files (an ASCII STL's ``solid``, a glTF's JSON object) and its suffix; a
 binary STL, which has none, is told by its size (:func:`_content_format`)."""
 
+OBJ_STATEMENTS = frozenset((b"v", b"vt", b"vn", b"vp", b"f", b"l", b"p", b"o", b"g", b"s", b"mg", b"usemtl", b"mtllib"))
+"""The statements of an OBJ file's polygonal geometry, groups and materials: those the exporters write."""
+
 Rows = list[tuple[int, list[bytes]]]
 """A text file's lines as (line number from 1, whitespace-separated values)."""
 
@@ -138,7 +141,18 @@ def _content_format(data: bytes) -> tuple[str, str] | None:
         return ".stl", f"a binary STL, by its size: an 80-byte header, then the {count} triangles it announces"
     head = data[:1024].lstrip()  # a text format's first line may follow blank ones
     found = next((suffix for start, suffix in SIGNATURES if head.startswith(start)), None)
-    return found and (found, f"{'ASCII STL' if found == '.stl' else FORMATS[found]}, by its first bytes {head[:5]!r}")
+    return (found, f"{'ASCII STL' if found == '.stl' else FORMATS[found]}, by its first bytes {head[:5]!r}") if found else _obj_text(data)
+
+
+def _obj_text(data: bytes) -> tuple[str, str] | None:
+    """``.obj`` and the OBJ statements (:data:`OBJ_STATEMENTS`) that start the lines of the first 64 KiB of ``data``
+    (comments and blank lines aside) in words, when every line there starts with one, a ``v`` among them, and a line
+    of the file is a face; else ``None``. An OBJ has no first bytes of its own: any statement may come first.
+    O(size) for the face search."""
+    lines = data[:65536].removeprefix(codecs.BOM_UTF8).splitlines()[:-1 if len(data) > 65536 else None]  # a cut last line
+    found = {values[0] for values in (OBJ_COMMENT.sub(b"", line).split() for line in lines) if values}
+    is_obj = b"v" in found and found <= OBJ_STATEMENTS and re.search(rb"^\s*f\s", data, re.MULTILINE)
+    return (".obj", f"OBJ text, by the statements its lines start with ({b', '.join(sorted(found)).decode()})") if is_obj else None
 
 
 def nested_transforms(suffix: str, data: bytes) -> str | None:

@@ -71,8 +71,10 @@ def check_writable(outdir: Path) -> None:
         if (length := len(os.fsencode(outdir.absolute()))) + os.pathconf(base, "PC_NAME_MAX") > os.pathconf(base, "PC_PATH_MAX"):
             raise G2SError(f"{outdir}: cannot create the folder (a path of {length:,} bytes is too long for the files in it)")
         os.rmdir(tempfile.mkdtemp(dir=base, prefix=f"{STAGING_MARK}{os.getpid()}-"))
-    except (OSError, ValueError) as exc:  # a name too long, a NUL byte, a read-only place
-        raise G2SError(f"{outdir}: cannot write results there ({getattr(exc, 'strerror', None) or exc})") from None
+    except (OSError, ValueError) as exc:  # a name too long, a NUL byte, a read-only place, a file system of no blocks
+        pseudo = isinstance(exc, FileNotFoundError) and os.statvfs(base).f_blocks == 0  # /proc: "No such file or directory"
+        raise G2SError(f"{outdir}: cannot write results there ("
+                       + (f"{base} takes no new folders; give a folder on a disk" if pseudo else f"{getattr(exc, 'strerror', None) or exc}") + ")") from None
 
 
 @contextmanager

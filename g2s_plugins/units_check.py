@@ -97,5 +97,5 @@ def check_units(mesh: trimesh.Trimesh, context: RunContext) -> None:
     context.warn(
         f"mesh: {context.mesh_name}: its level surfaces (floors, treads, wall tops) lie {gap:.3g} m over one another "
         f"(upper quartile), {gap / context.agent.height:.0f} times the agent's height of {context.agent.height:g} m, "
-        "as in a file in centimetres read as metres; if it is one, set mesh.scale: 0.01 (millimetres: 0.001)"
+        "as in a file in centimetres read as metres; if it is one, set mesh.scale: 0.01 (millimetres: 0.001; inches: 0.0254)"
     )

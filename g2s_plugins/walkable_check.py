@@ -69,6 +69,12 @@ so faces with next to no area (corners on a line, to rounding) can cover a level
 a walkable grating); 10^6 triangles with their corners on a line, alone: 416 m² of navmesh on 1.4e-10 m² of faces,
 none facing up."""
 
+MAX_AGAINST_NEIGHBOURS = 0.05
+"""Share of the edges joining two faces that run the same way in both (faces wound against their neighbours: normals
+a modeller left flipped) above which a misread run names it (:func:`wound_against_neighbours`): 0 on each of the 47
+sample levels, ``nav_test.obj`` and the two shared pieces, 0.26 to 0.89 on the same with every other face flipped
+(docs/errors.md, robust45)."""
+
 RAY_START = 1e-3
 """Height over a face's centre the headroom ray of :func:`hidden_floor_bodies` starts at, metres: clear of the face."""
 
@@ -299,7 +305,19 @@ def likely_causes(mesh: trimesh.Trimesh, agent: AgentConfig, winding: bool = Tru
     if bodies:
         causes.append(f"{bodies} closed bod{'y is' if bodies == 1 else 'ies are'} wound inside out "
                       "(walkable faces must face up): set `mesh: {clean: true}` to flip them")
+    if winding and (against := wound_against_neighbours(mesh)) > MAX_AGAINST_NEIGHBOURS:
+        causes.append(f"{100 * against:.0f} % of the edges between two faces join faces wound opposite ways (normals "
+                      "flipped in the modeller; walkable faces must face up): set `mesh: {clean: true}` to wind each body one way")
     return causes
+
+
+def wound_against_neighbours(mesh: trimesh.Trimesh) -> float:
+    """Share of the edges joining exactly two faces of ``mesh`` (coincident vertices merged, on a copy) that run the
+    same way in both, whose faces are wound opposite ways; 0 when no edge joins two faces. O(faces log faces)."""
+    merged = trimesh.Trimesh(np.asarray(mesh.vertices), np.asarray(mesh.faces), process=True)
+    pairs = trimesh.grouping.group_rows(merged.edges_sorted, require_count=2)
+    edges = merged.edges[pairs]  # (pairs, 2 faces, 2 corners): wound one way, the second face runs the edge backwards
+    return float(np.mean(np.all(edges[:, 0] == edges[:, 1], axis=1))) if len(pairs) else 0.0
 
 
 def level_size(mesh: trimesh.Trimesh) -> str:
