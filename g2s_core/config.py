@@ -55,7 +55,7 @@ class MeshConfig(_Section):
 
     up_axis: Literal["y", "z"] = Field("y", description="the file's up axis; z-up files are turned to y-up")
     scale: float = Field(1.0, gt=0, description="factor that converts the file's units to metres")
-    clean: bool = Field(False, description="merge close vertices, drop duplicate and zero-area faces, flip inside-out solids")
+    clean: bool = Field(False, description="merge close vertices, drop duplicate and zero-area faces, wind each body one way, flip inside-out solids")
 
 
 class StageConfig(_Section):
