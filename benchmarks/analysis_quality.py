@@ -58,11 +58,12 @@ from level_kinds26 import KINDS as ROUND_26_KINDS
 from level_kinds27 import KINDS as ROUND_27_KINDS
 
 from g2s_core import pipeline
-from g2s_core.config import find_config, load_raw_config, parse_config, with_evaluators
+from g2s_core.config import find_config, load_raw_config, parse_config
 from g2s_core.errors import G2SError
 from g2s_core.mesh import load_mesh, mesh_sha256
 from g2s_core.registry import Registry
 from g2s_plugins import evaluation, traffic
+from g2s_plugins.batch.runner import with_evaluators
 from g2s_plugins.samples import levels as samples
 from g2s_plugins.samples.pieces import yaw_about_centre
 

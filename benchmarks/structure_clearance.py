@@ -37,11 +37,12 @@ import numpy as np
 from analysis_quality import levels
 
 from g2s_core import pipeline
-from g2s_core.config import find_config, load_raw_config, parse_config, with_evaluators
+from g2s_core.config import find_config, load_raw_config, parse_config
 from g2s_core.mesh import mesh_sha256
 from g2s_core.registry import Registry
 from g2s_core.stages import PIPELINE
 from g2s_plugins._raycasting import UP, AgentShape, RayCaster, bands_meet_walls
+from g2s_plugins.batch.runner import with_evaluators
 
 SIMPLIFY_START = next(f"{stage.step}: {stage.label}" for stage in PIPELINE if stage.timing == "simplify")
 STAGE_STARTS = {f"{stage.step}: {stage.label}" for stage in PIPELINE}

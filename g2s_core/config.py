@@ -333,16 +333,6 @@ def _merge_extends(data: dict[str, Any], base_dir: Path, source: str | Path, sou
     return _deep_merge(load_raw_config(_resolve_extends(parent_name, base_dir, source), sources), data)
 
 
-def with_evaluators(raw: dict[str, Any], names: Sequence[str]) -> dict[str, Any]:
-    """The raw config with each evaluator of ``names`` (default parameters) added to its ``evaluators:``
-    unless one of that key is listed already (a malformed section is left for validation to report)."""
-    listed = raw.get("evaluators") or []
-    if not isinstance(listed, list):
-        return raw
-    keys = {e.get("key") or e.get("plugin") for e in listed if isinstance(e, dict)}
-    return {**raw, "evaluators": listed + [{"plugin": name} for name in names if name not in keys]}
-
-
 def load_config(path: str | Path) -> RunConfig:
     """Read, merge and validate a config file (plugin parameters are validated by the registry)."""
     return parse_config(load_raw_config(path), source=str(path))

@@ -39,12 +39,6 @@ if TYPE_CHECKING:  # annotations only: importing them here would slow every comm
 Vec3 = tuple[float, float, float]
 
 
-def vec3(values: Any) -> Vec3:
-    """Return ``values`` (any 3-sequence) as a tuple of 3 Python floats."""
-    x, y, z = (float(v) for v in values)
-    return (x, y, z)
-
-
 def graph_of(graph: nx.Graph, nodes: Mapping[Hashable, dict], edges: Iterable[tuple[Hashable, Hashable, dict]]) -> nx.Graph:
     """The empty ``graph`` given ``nodes`` (id -> its own attribute dict), then ``edges`` (u, v, their own dict).
 

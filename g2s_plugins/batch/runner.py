@@ -43,7 +43,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from g2s_core import DISTRIBUTION
-from g2s_core.config import find_config, load_raw_config, parse_config, with_evaluators
+from g2s_core.config import find_config, load_raw_config, parse_config
 from g2s_core.errors import G2SError, PluginFailure, out_of_memory
 from g2s_core.input_files import check_regular_file, given_path
 from g2s_core.lazy import lazy_module
@@ -342,6 +342,16 @@ def _mesh_files(folder: Path) -> Iterator[Path]:
     if unread := next((p for p in (folder, *entries) if p.is_dir() and not os.access(p, os.R_OK | os.X_OK)), None):
         raise G2SError(f"{unread}: cannot read this folder (permission denied): its levels would be left out")
     return iter(p for p in entries if p.suffix.lower() in SUPPORTED_SUFFIXES and not p.is_dir())
+
+
+def with_evaluators(raw: dict[str, Any], names: Sequence[str]) -> dict[str, Any]:
+    """The raw config with each evaluator of ``names`` (``g2s batch --evaluate``; default parameters) added to its
+    ``evaluators:`` unless one of that key is listed already (a malformed section is left for validation to report)."""
+    listed = raw.get("evaluators") or []
+    if not isinstance(listed, list):
+        return raw
+    keys = {e.get("key") or e.get("plugin") for e in listed if isinstance(e, dict)}
+    return {**raw, "evaluators": listed + [{"plugin": name} for name in names if name not in keys]}
 
 
 def make_pairs(

@@ -21,9 +21,10 @@ import networkx as nx
 from g2s_core.errors import G2SError
 from g2s_core.input_files import parse_nested, read_text
 from g2s_core.messages import show, show_key
-from g2s_core.model import LoadedResult, Opening, StageStats, Terminals, vec3
+from g2s_core.model import LoadedResult, Opening, StageStats, Terminals
 from g2s_core.plugin import hookimpl
 from g2s_plugins.outputs.structure_json import RUN_FILE, SCHEMA_PATH, SCHEMA_VERSION, STRUCTURE_FILE
+from g2s_plugins.vectors import vec3
 
 NAME = "json"
 

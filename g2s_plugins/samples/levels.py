@@ -41,7 +41,8 @@ from typing import TYPE_CHECKING, Annotated, Any
 import numpy as np
 from pydantic import Field, NonNegativeFloat, NonNegativeInt, PositiveFloat, PositiveInt, validate_call
 
-from g2s_core.model import Opening, Vec3, vec3
+from g2s_core.model import Opening, Vec3
+from g2s_plugins.vectors import vec3
 
 # trimesh and scipy are imported in the functions that build with them, here and in the other sample modules:
 # `g2s plugins` lists every sample level (its factory's signature) without them (docs/performance.md, "Start-up")

@@ -51,9 +51,10 @@ from typing import TYPE_CHECKING, Annotated
 import numpy as np
 from pydantic import Field, NonNegativeFloat, PositiveFloat, PositiveInt, validate_call
 
-from g2s_core.model import Vec3, vec3
+from g2s_core.model import Vec3
 
 from g2s_plugins.samples.levels import SLAB_THICKNESS, SampleLevel, _LevelBuilder, _opening, _rect, _sloped_blocks
+from g2s_plugins.vectors import vec3
 
 if TYPE_CHECKING:
     import trimesh

@@ -180,13 +180,14 @@ from scipy.spatial import cKDTree
 
 from g2s_core.config import AgentConfig
 from g2s_core.errors import PluginError
-from g2s_core.model import NavMesh, Opening, RunContext, Terminals, vec3
+from g2s_core.model import NavMesh, Opening, RunContext, Terminals
 from g2s_core.plugin import PluginParams, hookimpl
 from g2s_plugins._raycasting import UP, RayCaster, ground_across_crack
 from g2s_plugins._surface import on_navmesh
 from g2s_plugins.play_space import PLAY_POINTS, held_polygons, play_space_faces
 from g2s_plugins.terminals._boundary import BoundaryLoop, LoopSamples, boundary_loops, polygon_components, sample_loops
 from g2s_plugins.terminals._sampled_surface import SampledSurface, sampled_surface
+from g2s_plugins.vectors import vec3
 
 NAME = "entry_exit"
 

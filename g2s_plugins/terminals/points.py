@@ -34,9 +34,10 @@ from scipy.spatial import cKDTree
 
 from g2s_core.errors import G2SError
 from g2s_core.input_files import parse_nested, read_text
-from g2s_core.model import RunContext, Terminals, vec3
+from g2s_core.model import RunContext, Terminals
 from g2s_core.plugin import PluginParams, hookimpl
 from g2s_plugins._surface import on_navmesh
+from g2s_plugins.vectors import vec3
 
 NAME = "points"
 
