@@ -33,8 +33,6 @@ from g2s_plugins.outputs.structure_json import structure_document
 from g2s_plugins.samples import levels as samples
 from g2s_plugins.terminals import coverage
 
-NAV_TEST = "../shared/data/nav_test.obj"
-
 
 @pytest.fixture(scope="module")
 def registry() -> Registry:
@@ -693,8 +691,8 @@ PAPER_STRUCTURE_SHA256 = "7d0d88e6c161dcabe593221c3aa90c695d68052702a23e6388e8b1
 nav_test.obj before issue 9 (55 nodes, 45 edges); later stronger line-of-sight tests must not move it."""
 
 
-def test_paper_preset_reproduces_the_former_map_analysis(registry):
-    mesh, _ = load_mesh(NAV_TEST)
+def test_paper_preset_reproduces_the_former_map_analysis(registry, shared_data):
+    mesh, _ = load_mesh(shared_data / "nav_test.obj")
     document = structure_document(run(registry, mesh, preset("map_analysis_paper"), "nav_test.obj"))
     part = {key: document[key] for key in ("nodes", "edges", "roots", "trees", "graphs", "terminals", "analysis_keys")}
     assert (len(part["nodes"]), len(part["edges"])) == (55, 45)
@@ -704,8 +702,8 @@ def test_paper_preset_reproduces_the_former_map_analysis(registry):
     assert len(structure_document(run(registry, mesh, default, "nav_test.obj"))["nodes"]) != 55
 
 
-def test_new_preset_covers_nav_test_and_keeps_a_skeleton(registry):
-    mesh, _ = load_mesh(NAV_TEST)
+def test_new_preset_covers_nav_test_and_keeps_a_skeleton(registry, shared_data):
+    mesh, _ = load_mesh(shared_data / "nav_test.obj")
     result = run(registry, mesh, preset("map_analysis"))
     quality = evaluation.evaluate(result)
     assert quality.area_within[6.0] > 0.95

@@ -20,8 +20,6 @@ from g2s_plugins.graph_builders import navmesh as navmesh_builder
 from g2s_plugins.recast import build_navmesh
 from g2s_plugins.samples import levels as samples
 
-NAV_TEST = "../shared/data/nav_test.obj"
-
 
 @pytest.fixture(scope="module")
 def registry() -> Registry:
@@ -34,9 +32,9 @@ def run(registry: Registry, mesh, preset: str):
 
 
 @pytest.mark.parametrize("preset", ["map_analysis", "map_analysis_paper"])
-def test_on_the_navmesh_route_the_mapping_is_the_identity(registry, preset):
+def test_on_the_navmesh_route_the_mapping_is_the_identity(registry, preset, shared_data):
     # map_analysis's graph has portal nodes (179 nodes for 173 polygons); the paper's heat map is not its ceiling
-    result = run(registry, load_mesh(NAV_TEST)[0], preset)
+    result = run(registry, load_mesh(shared_data / "nav_test.obj")[0], preset)
     quality = evaluation.evaluate(result)
     assert math.isfinite(quality.rho) and math.isfinite(quality.rho_ceiling)
     assert quality.rho_navmesh == quality.rho and quality.rho_navmesh_ceiling == quality.rho_ceiling
