@@ -73,8 +73,8 @@ def check_writable(outdir: Path) -> None:
         os.rmdir(tempfile.mkdtemp(dir=base, prefix=f"{STAGING_MARK}{os.getpid()}-"))
     except (OSError, ValueError) as exc:  # a name too long, a NUL byte, a read-only place, a file system of no blocks
         pseudo = isinstance(exc, FileNotFoundError) and os.statvfs(base).f_blocks == 0  # /proc: "No such file or directory"
-        raise G2SError(f"{outdir}: cannot write results there ("
-                       + (f"{base} takes no new folders; give a folder on a disk" if pseudo else f"{getattr(exc, 'strerror', None) or exc}") + ")") from None
+        reason = f"{base} takes no new folders; give a folder on a disk" if pseudo else getattr(exc, "strerror", None) or exc
+        raise G2SError(f"{outdir}: cannot write results there ({reason})") from None
 
 
 @contextmanager
