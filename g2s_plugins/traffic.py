@@ -211,12 +211,6 @@ BLOCK_ENTRIES = 1 << 22
 """Tree entries computed at once by :func:`od_flow` and :mod:`g2s_plugins.cross_sections` (32 MB of float64;
 :func:`source_blocks`)."""
 
-AHEAD_SOURCES = 4
-"""Sources per call of the trees while a flow begun ahead walks on one thread (:func:`tree_threads`): a caller that
-starts waiting for it gets both threads after at most this many more sources (about 40 ms of CPU at 100k polygons),
-not after the rest of a block of up to 40 (0.3 s of CPU on one thread while the other core idled, docs/performance.md,
-6 December 2026, "navfast46")."""
-
 KEPT_ENTRIES = 1 << 25
 """Tree entries :func:`od_flow` keeps before it sums them into the flow (256 MiB of float64: every block of the
 100k-polygon level's 255 sources). Each sum is a matrix product, after which OpenBLAS's worker thread spins for
@@ -516,29 +510,12 @@ def od_flow(
     for lo, block_sources in source_blocks(sources, n):
         # adjacency is symmetric: a directed search scans each edge once instead of from both of
         # its stored directions, with the same distances and predecessors
-        kept.append((lo, block_through(through_of, adjacency, block_sources, weight, ties)))
+        kept.append((lo, through_of(adjacency, block_sources, weight, ties)))
         if lo + len(block_sources) >= len(sources) or sum(through.size for _, through in kept) >= KEPT_ENTRIES:
             for start, through in kept:  # block by block, in order: the sum of the products as before
                 flow += factor[start:start + len(through)] @ through
             kept.clear()
     return flow, sampled
-
-
-def block_through(
-    through_of: Callable[[sp.csr_array, np.ndarray, np.ndarray, Ties], np.ndarray], adjacency: sp.csr_array,
-    sources: np.ndarray, weight: np.ndarray, ties: Ties,
-) -> np.ndarray:
-    """(b, n) ``through_of`` for the (b,) ``sources``: in one call, or, while this thread walks a flow begun ahead on
-    one thread (:func:`walking_ahead_alone`), :data:`AHEAD_SOURCES` sources a call until a caller waits for it, then the
-    rest in one call on both threads. Each row depends on its source alone, so the rows, and the products
-    :func:`od_flow` sums them by, are the same bits either way."""
-    parts, done = [], 0
-    while done < len(sources) and walking_ahead_alone():
-        parts.append(through_of(adjacency, sources[done:done + AHEAD_SOURCES], weight, ties))
-        done += AHEAD_SOURCES
-    if done < len(sources) or not parts:
-        parts.append(through_of(adjacency, sources[done:], weight, ties))
-    return parts[0] if len(parts) == 1 else np.concatenate(parts)
 
 
 def stratified_sources(
@@ -869,13 +846,8 @@ def tree_threads() -> int:
     """Threads of the extension's next call of trees: 1 on the thread of a flow begun ahead that no caller waits for
     yet (the caller's own thread holds the other core: :func:`start_walking_flow`), else :data:`THREADS`. The values
     do not depend on it."""
-    return 1 if walking_ahead_alone() else THREADS
-
-
-def walking_ahead_alone() -> bool:
-    """Whether this thread computes a flow begun ahead that no caller waits for yet (:func:`start_walking_flow`)."""
     begun = getattr(_AHEAD, "flow", None)
-    return begun is not None and not begun.taken.is_set()
+    return 1 if begun is not None and not begun.taken.is_set() else THREADS
 
 
 def _walking_flow_work(

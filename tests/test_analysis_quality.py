@@ -413,29 +413,6 @@ def test_a_flow_begun_ahead_walks_on_one_thread_until_a_caller_waits_for_it(monk
     assert flow.tobytes() == traffic.arrays_walking_flow(arrays).tobytes() and threads[7:] == [2] * 7
 
 
-def test_a_flow_begun_ahead_walks_its_block_a_few_sources_a_call_until_a_caller_waits(monkeypatch):
-    # within one block of all seven sources: two at a time on one thread, then the rest in one call on two
-    monkeypatch.setattr(traffic, "THREADS", 2)
-    monkeypatch.setattr(traffic, "AHEAD_SOURCES", 2)
-    arrays = traffic.surface_arrays(spine_and_side_room())
-    through, calls, second = traffic._through, [], threading.Event()
-
-    def recording(adjacency, sources, *rest):
-        calls.append((len(sources), traffic.tree_threads()))
-        if len(calls) == 2:  # the caller waits for the flow while its second call runs
-            second.set()
-            assert traffic._AHEAD.flow.taken.wait(30)
-        return through(adjacency, sources, *rest)
-
-    monkeypatch.setattr(traffic, "_through", recording)
-    traffic.start_walking_flow(arrays)  # the exact flow: every node a source, one block
-    assert second.wait(30)
-    flow = traffic.arrays_walking_flow(arrays)
-    assert calls == [(2, 1), (2, 1), (3, 2)]
-    here = traffic.arrays_walking_flow(traffic.surface_arrays(spine_and_side_room()))  # one call of seven
-    assert calls[3:] == [(7, 2)] and flow.tobytes() == here.tobytes()
-
-
 def test_the_coverage_selector_begins_its_walking_flow_before_its_leaves(monkeypatch):
     begun = []
     monkeypatch.setattr(traffic, "start_walking_flow", lambda arrays, **kwargs: begun.append(kwargs))
