@@ -1410,7 +1410,7 @@ def _in_the_doorway(rows: np.ndarray, sides_opened: np.ndarray, mid: np.ndarray,
     to_first, to_last = _free_reads(caster.first_hits(np.concatenate(origins), np.concatenate(directions)), 0,
                                     along[row_of], towards_last[row_of], caster, s)
     for free, side in ((to_first, back), (to_last, ahead)):
-        nearer = free < side[row_of] - _SAME_WIDTH
+        nearer = free < side[row_of] - _SIDES_OPEN_STEPS * s.delta  # narrower by a search step, as sides open out
         order = np.argsort(-free[nearer], kind="stable")  # the nearest written last
         narrowest_at[row_of[nearer][order]] = depth[nearer][order]
         np.minimum.at(side, row_of[nearer], free[nearer])
