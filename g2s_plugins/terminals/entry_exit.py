@@ -1378,10 +1378,53 @@ def _passages(
         back[rows[narrower]], ahead[rows[narrower]] = to_first[narrower], to_last[narrower]
         narrowest_at[rows[narrower]] = depth[narrower]
         lo, hi = np.where(opened, lo, depth), np.where(opened, depth, hi)
+    sides_opened = depth_of[opened_at]
+    sides_opened[rows] = hi
+    _flush_with_the_face(np.flatnonzero(came_out), sides_opened, mid, out, along, towards_last,
+                         insides[opened_at, 1], (back, ahead, narrowest_at), caster, s)
     # What was read past the samples counts where the passage came out of the wall: a corridor running on (tapering,
     # or flaring to its mouth) is read as deep as its samples stand, as before.
     read_past = (widths, back, ahead, narrowest_at)
     return tuple(np.where(came_out, past, read) for past, read in zip(read_past, samples_read))
+
+
+_FLUSH_STEPS = (0.5, 1.0)
+"""Search steps past the face where a passage's sides open out at which :func:`_flush_with_the_face` reads what stands
+flush with it (a sliding leaf hung 0.02 m off the face spans 0.4-1.2 steps), against a read half a step before it."""
+
+
+def _flush_with_the_face(rows: np.ndarray, sides_opened: np.ndarray, mid: np.ndarray, out: np.ndarray,
+                         along: np.ndarray, towards_last: np.ndarray, floor: np.ndarray,
+                         read: tuple[np.ndarray, np.ndarray, np.ndarray], caster: RayCaster, s: _Settings) -> None:
+    """Narrows the free part of the openings ``rows`` (indices into the (n,) arrays) by what stands flush with the face
+    where their passage's sides opened out, ``sides_opened`` (n,) m in from the edge, across the way: a side read
+    :data:`_FLUSH_STEPS` search steps past the face nearer, by more than the depth between the reads, than half a step
+    before it (steeper than 45 degrees to the way, as the splay rule's sides; the nearest such read counts). A sliding
+    leaf hung 0.02 m off a wall's inner face and slid half across the doorway leaves the agent only the way between
+    its end, square to the way, and the far jamb (``benchmarks/piece_kinds28.py``'s barn door: 0.9 m, read 1.53-1.58
+    m). A wall running on past the face (a curved corridor's outer wall, a cave's) and a leaf swung into the room
+    (the twenty-fifth round's ajar leaf, 30 degrees to the way) run along the way: the room's, not the doorway's.
+    ``mid``, ``out``, ``along`` (n,3), ``towards_last`` (n,) bool and the floor's height ``floor`` (n,) as in
+    :func:`_passages`; ``read`` its (back, ahead, narrowest_at) (n,) each, updated in place where the way narrows.
+    One batch of :func:`_free_rays`, O(len(rows)) rays."""
+    if not len(rows):
+        return
+    back, ahead, narrowest_at = read
+    offsets = np.array([-0.5, *_FLUSH_STEPS]) * s.delta  # before the face, then past it
+    every = np.tile(rows, len(offsets))
+    depth = sides_opened[every] + np.repeat(offsets, len(rows))
+    at = mid[every] - out[every] * depth[:, None]
+    at[:, 1] = floor[every]
+    origins, directions = _free_rays(at, along[every], s)
+    reads = _free_reads(caster.first_hits(np.concatenate(origins), np.concatenate(directions)), 0, along[every],
+                        towards_last[every], caster, s)
+    for free, side in zip((r.reshape(len(offsets), len(rows)) for r in reads), (back, ahead)):
+        across = free[1:] < free[0] - (offsets[1:] - offsets[0])[:, None]
+        nearest = np.where(across, free[1:], np.inf)
+        k = np.argmin(nearest, axis=0)
+        nearer = nearest[k, np.arange(len(rows))] < side[rows]
+        side[rows[nearer]] = nearest[k, np.arange(len(rows))][nearer]
+        narrowest_at[rows[nearer]] = sides_opened[rows[nearer]] + offsets[1:][k[nearer]]
 
 
 def _free_rays(inside: np.ndarray, along: np.ndarray, s: _Settings) -> tuple[list[np.ndarray], list[np.ndarray]]:
