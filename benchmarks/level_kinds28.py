@@ -489,13 +489,14 @@ def grand_stair(seed: int) -> trimesh.Trimesh:
 
 
 def data_hall(seed: int) -> trimesh.Trimesh:
-    """A data centre's two halls, each 70-80 x 40-48 m on a raised floor 0.6 m up, walls 4 m high, north and south of a
-    corridor 4 m wide (floor at 0) and each entered from it through two openings: one up a ramp 1.5 m wide at 1 in 12
-    onto a landing, one up 4 steps of 0.15 m (each in a quarter of the corridor's length of its own). In each hall rows
-    of racks (closed boxes 1.2 m deep, 2.2 m high) along x in 3-4 runs split by cross aisles 2.4 m wide along z,
-    alternately facing across *cold aisles 1.8-2.4 m wide* and backing onto *hot aisles 1.2-1.8 m wide*, about what the
-    agent's 1 m needs on Recast's cells of 0.25 m (1.5 m), so whether a hot aisle holds floor is chance; a perimeter
-    aisle 2.5-3 m wide round the rows, cooling units (1 x 2.5 m, 2 m high) every 5-6 m along the east and west walls.
+    """A data centre's two halls, each 70-80 x 40-48 m on a raised floor 0.6 m up, walls and ceiling 4 m high (the
+    ceiling a closed body ridged at 50 degrees), north and south of a corridor 4 m wide (floor at 0) and each entered
+    from it through two openings: one up a ramp 1.5 m wide at 1 in 12 onto a landing, one up 4 steps of 0.15 m (each in
+    a quarter of the corridor's length of its own). In each hall rows of racks (closed boxes 1.2 m deep, 2.2 m high)
+    along x in 3-4 runs split by cross aisles 2.4 m wide along z, alternately facing across *cold aisles 1.8-2.4 m wide*
+    and backing onto *hot aisles 1.2-1.8 m wide*, about what the agent's 1 m needs on Recast's cells of 0.25 m (1.5 m),
+    so whether a hot aisle holds floor is chance; a perimeter aisle 2.5-3 m wide round the rows, cooling units (1 x 2.5
+    m, 2 m high) every 5-6 m along the east and west walls.
 
     Expected (written before the first run): one area (every cold aisle open at both ends onto a cross or perimeter
     aisle; a hot aisle too narrow holds no floor, not an area apart). Traffic highest in the corridor and on each
@@ -520,6 +521,8 @@ def data_hall(seed: int) -> trimesh.Trimesh:
 
         size_z, margin = float(rng.uniform(40.0, 48.0)), float(rng.uniform(2.5, 3.0))
         box(0.0, size_x, -0.5, floor, 0.0, size_z)
+        z0, z1 = sorted((at(0.0), at(size_z)))
+        _ridged(s, -0.1, size_x + 0.1, z0 - 0.1, z1 + 0.1, 4.0, 4.2)  # the ceiling: 1.2 m over the racks: none is floor
         quarter = size_x / 4  # the entrances in the corridor's quarters: the north hall's ramp in the first and steps
         ramp_q, steps_q = (0, 2) if sign > 0 else (3, 1)  # in the third, the south hall's in the fourth and second
         ramp_x = float(rng.uniform(ramp_q * quarter + 2.0, (ramp_q + 1) * quarter - 11.6))
