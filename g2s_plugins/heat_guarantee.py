@@ -238,9 +238,9 @@ def heat_reading(
     pooled = not exact and sampling == "spread"
     if pooled:  # half the heat map's errors shared with its reference instead of all of them
         reference = (shown + second_sample(arrays, sources, ties, scaling, order)) / 2.0
-    else:
-        reference = traffic.arrays_walking_flow(arrays, sources, exact_up_to=traffic.EXACT_NODES, ties=ties,
-                                                scaling=scaling)
+    else:  # exact: the evaluation's reference, whose ties split whatever the heat map's do; else the heat map's sample
+        reference = traffic.arrays_walking_flow(arrays, sources, exact_up_to=traffic.EXACT_NODES,
+                                                ties=evaluation.REFERENCE_TIES if exact else ties, scaling=scaling)
     heat = evaluation.placement_heat(graph, structure_nodes, shown)
     rho = evaluation.spearman(heat, reference) if areas is None else evaluation.within_area_rho(heat, reference, areas)
     margin = 0.0 if exact else POOLED_MARGINS[scaling] if pooled else MARGINS[scaling]
