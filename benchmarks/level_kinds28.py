@@ -281,7 +281,8 @@ def fallen_giants(seed: int) -> trimesh.Trimesh:
     heights = height(gx, gz)
     cx, cz = (gx[:-1, :-1] + gx[1:, 1:]) / 2, (gz[:-1, :-1] + gz[1:, 1:]) / 2
     keep = np.abs(cx - middle(cz)) > gorge_w / 2
-    _terrain(s := _Solids(), xs, zs, heights, keep)
+    s = _Solids()
+    _terrain(s, xs, zs, heights, keep)
     crossings = int(rng.integers(3, 5))
     for z in (np.arange(crossings) + 0.5) / crossings * size_z + rng.uniform(-4.0, 4.0, crossings):
         z = float(np.clip(z, 8.0, size_z - 8.0))
@@ -344,8 +345,8 @@ def canal_city(seed: int) -> trimesh.Trimesh:
     lanes), crossing a canal only on a bridge, never over the water or through a building."""
     rng = np.random.default_rng(seed)
     nx, nz = int(rng.integers(4, 6)), int(rng.integers(3, 5))
-    canal = rng.uniform(7.0, 10.0, (nx + 1, nz + 1))  # [i, :] the canal west of block column i, [:, j] south of row j
-    canal_x, canal_z = canal[:, 0], canal[0, :]
+    canal = rng.uniform(7.0, 10.0, (nx + 1, nz + 1))  # widths drawn as one grid, of which only its first column and row
+    canal_x, canal_z = canal[:, 0], canal[0, :]  # are read: [i] the canal west of block column i, [j] south of row j
     block_x, block_z = rng.uniform(30.0, 42.0, nx), rng.uniform(30.0, 42.0, nz)
     x_edges = np.concatenate([[0.0], np.cumsum(np.ravel(np.column_stack([canal_x[:-1], block_x])))])  # canal, block...
     z_edges = np.concatenate([[0.0], np.cumsum(np.ravel(np.column_stack([canal_z[:-1], block_z])))])
