@@ -428,6 +428,25 @@ def test_the_guarantee_measures_the_flow_of_its_heat_settings(monkeypatch):
                      ((64,), {"exact_up_to": traffic.EXACT_NODES, "ties": "split", "scaling": "linear"})]
 
 
+def test_an_exact_reference_splits_ties_whatever_the_heat_maps_ties_are(monkeypatch):
+    # map_analysis's heat map takes the first of tied paths; the exact flow it is ranked against splits them, as the
+    # evaluation's reference does: on a unit grid, whose lengths tie, the reading is the rho against the split flow
+    graph = nx.convert_node_labels_to_integers(nx.grid_2d_graph(12, 10), ordering="sorted")
+    for i in graph:
+        graph.nodes[i].update(pos=(float(i // 10), 0.0, float(i % 10)), area=1.0)
+    nx.set_edge_attributes(graph, 1.0, "weight")
+    structure = list(range(0, 120, 3))
+    asked, walking = [], traffic.arrays_walking_flow
+    monkeypatch.setattr(traffic, "arrays_walking_flow",
+                        lambda *args, **kwargs: asked.append((args[1:], kwargs)) or walking(*args, **kwargs))
+    reading = heat_guarantee.heat_reading(graph, structure, 64, "first", "none", "independent")
+    assert asked[1] == ((64,), {"exact_up_to": traffic.EXACT_NODES, "ties": "split", "scaling": "none"})
+    split = traffic.walking_flow(graph, exact_up_to=traffic.EXACT_NODES, ties="split")
+    first = traffic.walking_flow(graph, exact_up_to=traffic.EXACT_NODES, ties="first")
+    assert not np.array_equal(split, first) and reading.exact
+    assert reading.rho == evaluation.spearman(reading.heat, split) != evaluation.spearman(reading.heat, first)
+
+
 def test_above_the_guarantee_size_the_benchmark_reference_is_a_linearly_scaled_sample(monkeypatch):
     graph = nx.convert_node_labels_to_integers(nx.grid_2d_graph(30, 20), ordering="sorted")
     for i in graph:

@@ -1,4 +1,5 @@
-"""The level kinds of rounds 9-27 (``benchmarks/level_kinds.py``, ``level_kinds26.py``, ``level_kinds27.py``) build the levels they describe.
+"""The level kinds of rounds 9-28 (``benchmarks/level_kinds.py``, ``level_kinds26.py``, ``level_kinds27.py``,
+``level_kinds28.py``) build the levels they describe.
 
 Smoke tests of quick generators (most well under a second each to build and to give a navmesh; the theatre's and
 the cliff dwellings' thousands of hulls take about 5 s of CPU, the metroidvania's flights 1-2 s a build): the connected
@@ -1296,3 +1297,65 @@ def test_the_festival_camps_marquees_are_entered_through_their_angled_doors(roun
     through its door 2.2 m wide (a marquee whose door shut would be an area of its own)."""
     label, nav = areas(round_27["festival_camp"](0), DROPS)
     assert label.max() == 0 and nav.areas.sum() > 9000.0
+
+
+@pytest.fixture(scope="module")
+def round_28() -> dict[str, Callable[..., trimesh.Trimesh]]:
+    """``benchmarks/level_kinds28.py``'s KINDS (the twenty-eighth round): each call builds its level anew."""
+    return benchmark("level_kinds28").KINDS
+
+
+def test_the_double_helix_reaches_every_deck_up_both_ramps(round_28):
+    """Two helical ramps interleaved in one well, a storey a half turn: one area with floor on the ground and on each of
+    the 5 decks (seed 0), and ramp floor inside the well at heights between the decks on both its east and west
+    halves."""
+    label, nav = areas(round_28["double_helix"](0), DROPS)
+    assert label.max() == 0
+    y = nav.centres[:, 1] - 0.2
+    for deck in range(6):
+        assert nav.areas[np.abs(y - 3.0 * deck) < 0.1].sum() > 500.0, deck
+    well = np.abs(nav.centres[:, 0] - np.median(nav.centres[:, 0])) < 20.0
+    between = well & (np.abs(y / 3.0 - np.round(y / 3.0)) > 0.2)
+    assert between.sum() > 20
+
+
+def test_the_low_stations_modules_are_one_area_through_hatches_under_low_ceilings(round_28):
+    """Modules joined by corridors whose ceilings stand 2.3-2.4 m up, through hatches with sills: one area, every
+    polygon on the floor (none on a ridged roof), over 2,000 m²."""
+    label, nav = areas(round_28["low_station"](0), DROPS)
+    assert label.max() == 0 and nav.centres[:, 1].max() < 0.5 and nav.areas.sum() > 2000.0
+
+
+def test_the_fallen_giants_cross_the_gorge_and_climb_the_plateau(round_28):
+    """The gorge crossed only by fallen trunks and the plateau reached only up leaning ones: one area, with floor on
+    the plateau (over 3.5 m up) of over 500 m²."""
+    label, nav = areas(round_28["fallen_giants"](0), DROPS)
+    assert label.max() == 0 and nav.areas[nav.centres[:, 1] > 3.5].sum() > 500.0
+
+
+def test_the_canal_citys_blocks_are_one_area_over_its_step_bridges(round_28):
+    """Blocks between canals, quays along both banks, joined only by humped bridges (decks 2 m up): one area, and floor
+    on the bridges' decks."""
+    label, nav = areas(round_28["canal_city"](0), DROPS)
+    assert label.max() == 0 and (nav.centres[:, 1] > 1.9).any()
+
+
+def test_the_grand_stairs_two_mirrored_flights_both_reach_the_gallery(round_28):
+    """An imperial staircase: one area with over 300 m² upstairs (4.5 m), and floor on the side flights' steps (between
+    the half landing's 2.25 m and the gallery's 4.5 m) west and east of the hall's middle alike."""
+    label, nav = areas(round_28["grand_stair"](0), DROPS)
+    assert label.max() == 0
+    y = nav.centres[:, 1] - 0.2
+    assert nav.areas[np.abs(y - 4.5) < 0.1].sum() > 300.0
+    flights = (y > 2.5) & (y < 4.3) & (nav.centres[:, 2] > 5.0)
+    middle = np.median(nav.centres[np.abs(y - 4.5) < 0.1, 0])
+    west = nav.areas[flights & (nav.centres[:, 0] < middle)].sum()
+    east = nav.areas[flights & (nav.centres[:, 0] > middle)].sum()
+    assert west > 3.0 and east > 3.0 and abs(west - east) < 0.25 * max(west, east), (west, east)
+
+
+def test_the_data_halls_cold_aisles_hold_floor_between_the_rack_rows(round_28):
+    """Rows of racks 1.2 m deep with cold aisles 1.8-2.4 m wide between them: one area, and over 2,000 m² on the raised
+    floor (0.6 m up) of both halls."""
+    label, nav = areas(round_28["data_hall"](0), DROPS)
+    assert label.max() == 0 and nav.areas[nav.centres[:, 1] > 0.7].sum() > 2000.0
