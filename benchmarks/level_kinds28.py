@@ -5,8 +5,9 @@ presets' agent (radius 0.5 m, height 2 m, climb 0.4 m, slope 45 degrees), seeds 
 helpers of ``benchmarks/level_kinds.py`` (imported, not copied): ``double_helix`` (a car park whose decks are joined by
 two helical ramps interleaved in one round well, each a storey a half turn, a storey apart over one another),
 ``low_station`` (a space station of modules and corridors whose ceilings stand 2.3-2.4 m over the floor, tight ones
-2.05-2.2 m, just over the agent's 2 m, pipe runs lowering one side, hatches with sills, ducts 1.8 m high no one walks), ``fallen_giants`` (a
-jungle floor split by a gorge crossed only by giant fallen trunks, and a plateau reached only up leaning trunks),
+2.05-2.2 m, just over the agent's 2 m, pipe runs lowering one side, hatches with sills, ducts 1.8 m high no one
+walks), ``fallen_giants`` (a jungle floor split by a gorge crossed only by giant fallen trunks, and a plateau reached
+only up leaning trunks),
 ``canal_city`` (a city of blocks between canals, quays along both banks, few humped step bridges: long parallel lanes
 a canal apart), ``grand_stair`` (a mansion's hall whose imperial staircase splits at a half landing into two mirrored
 flights meeting at a gallery: tied ways up) and ``data_hall`` (a data centre's raised floor of rack rows whose aisles
