@@ -2005,22 +2005,42 @@ struct NavMeshSight {
 };
 
 // Lines of sight asked of Python in batches (the mesh_los predicate's walk test): the pairs of node indices asked
-// and not answered yet, and the answers so far, for one simplification.
+// and not answered yet, and the answers so far, for one simplification; with a memo, the answers sees() gave in
+// earlier calls too, by segment (the forest's points of a and c), both ways round.
 struct AskedSights {
     PyObject* sees;  // sees(pairs (k,2) int64) -> (k,) bool; borrowed: the binding's argument keeps it alive
     std::vector<int64_t> asked;  // (k,2) flattened
     std::unordered_map<uint64_t, bool> known;  // a * n + c
     uint64_t n;
+    const double* points = nullptr;  // (n,3), the memo's keys
+    SightMemo* memo = nullptr;
+
+    SightMemo::Segment segment(int64_t from, int64_t to) const {
+        const double* p = points + 3 * from;
+        const double* q = points + 3 * to;
+        return {p[0], p[1], p[2], q[0], q[1], q[2]};
+    }
 };
 
 // The line of sight of AskedSights: a pair not answered yet is `later`, and resolve() asks sees() about every such
 // pair in one call. On one thread, with the GIL held (the copies forest_simplify makes share the one AskedSights).
+// The memo serves the heat guarantee's later rounds, which ask about most of their chains again (a pair answered
+// before waits for no batch, and a batch of such pairs alone costs no call): it holds an answer both ways round,
+// as the predicate's own cache does (g2s_plugins/predicates/mesh_los.py), so it answers what sees() would.
 struct PythonSight {
     AskedSights* sights;
     static constexpr bool batches = true;
 
     forest_simplify::Answer operator()(int64_t a, int64_t c) const {
-        const auto it = sights->known.find(static_cast<uint64_t>(a) * sights->n + static_cast<uint64_t>(c));
+        const uint64_t key = static_cast<uint64_t>(a) * sights->n + static_cast<uint64_t>(c);
+        auto it = sights->known.find(key);
+        if (it == sights->known.end() && sights->memo != nullptr) {
+            const auto remembered = sights->memo->known.find(sights->segment(a, c));
+            if (remembered != sights->memo->known.end()) {
+                ++sights->memo->hits;
+                it = sights->known.emplace(key, remembered->second).first;
+            }
+        }
         if (it != sights->known.end()) return it->second ? forest_simplify::Answer::yes : forest_simplify::Answer::no;
         sights->asked.insert(sights->asked.end(), {a, c});
         return forest_simplify::Answer::later;
@@ -2032,9 +2052,15 @@ struct PythonSight {
         const nb::object answers = nb::handle(sights->sees)(to_numpy(asked, count, 2));
         const auto ok = nb::cast<nb::ndarray<const bool, nb::ndim<1>, nb::c_contig, nb::device::cpu>>(answers);
         if (ok.shape(0) != count) throw nb::value_error("sees must answer every pair it is given");
-        for (size_t k = 0; k < count; ++k)
-            sights->known[static_cast<uint64_t>(asked[2 * k]) * sights->n + static_cast<uint64_t>(asked[2 * k + 1])] =
-                ok.data()[k];
+        for (size_t k = 0; k < count; ++k) {
+            const int64_t a = asked[2 * k], c = asked[2 * k + 1];
+            sights->known[static_cast<uint64_t>(a) * sights->n + static_cast<uint64_t>(c)] = ok.data()[k];
+            if (sights->memo != nullptr) {
+                std::lock_guard<std::mutex> lock(sights->memo->mutex);
+                sights->memo->known.emplace(sights->segment(a, c), ok.data()[k]);
+                sights->memo->known.emplace(sights->segment(c, a), ok.data()[k]);
+            }
+        }
         asked.clear();
     }
 };
@@ -2310,11 +2336,17 @@ NB_MODULE(_recast, m) {
     m.def("collapse_forest",
           [](IdsIn ids, IdsIn parent, IdsIn depth, MaskIn fixed, PairsIn loops, IdsIn roots, MaskIn on_navmesh,
              ValuesIn rank, std::optional<double> max_step, PointsIn normals, ValuesIn normal_length,
-             double tolerance_deg, bool whole_chain, nb::callable sees) {
+             double tolerance_deg, bool whole_chain, nb::callable sees, PointsIn points, SightMemo* memo) {
               const forest_simplify::Forest f = checked_forest(
                   ids, parent, depth, fixed, loops, roots,
-                  {on_navmesh.shape(0), rank.shape(0), normals.shape(0), normal_length.shape(0)});
-              AskedSights sights{sees.ptr(), {}, {}, f.n};
+                  {on_navmesh.shape(0), rank.shape(0), normals.shape(0), normal_length.shape(0), points.shape(0)});
+              if (memo != nullptr) {  // a navmesh's memo names its navmesh; one of sees() answers, none
+                  const decltype(memo->setting) none_setting{std::make_tuple(nullptr, 0.0, 0.0f, std::nullopt)};
+                  if (!memo->setting) memo->setting = none_setting;
+                  if (memo->setting != none_setting)
+                      throw nb::value_error("a sight memo of a navmesh's collapse_forest holds no answers of sees");
+              }
+              AskedSights sights{sees.ptr(), {}, {}, f.n, points.data(), memo};
               CollapseRule<PythonSight> rule{on_navmesh.data(), rank.data(), max_step, normals.data(),
                                              normal_length.data(), tolerance_deg, whole_chain, PythonSight{&sights}};
               return simplified_numpy(forest_simplify::simplify(f, rule, 1));
@@ -2322,11 +2354,14 @@ NB_MODULE(_recast, m) {
           nb::arg("ids"), nb::arg("parent"), nb::arg("depth"), nb::arg("fixed"), nb::arg("loops"), nb::arg("roots"),
           nb::arg("on_navmesh"), nb::arg("rank"), nb::arg("max_step").none(), nb::arg("normals"),
           nb::arg("normal_length"), nb::arg("tolerance_deg"), nb::arg("whole_chain"), nb::arg("sees"),
+          nb::arg("points"), nb::arg("memo").none() = nb::none(),
           "NavMesh.collapse_forest's answer with the line of sight sees(pairs) -> (k,) bool, a Python callable of "
           "(k,2) int64 rows (a, c) of node indices, instead of the navmesh's: Algorithm 4 and Algorithm 5's other "
           "tests in C++ on one thread, the callable asked only for the chains those let b go, in batches: every "
           "walk below a kept node goes on until it is done or needs an answer not given yet, and then the pairs "
-          "they all asked for are given in one call (src/forest_simplify.hpp, \"Batches\")");
+          "they all asked for are given in one call (src/forest_simplify.hpp, \"Batches\"). points (n,3): the nodes' "
+          "positions; memo (a SightMemo or None): what sees answered in earlier calls for the same segments (points "
+          "of a and c, either way round), looked up before a pair is asked and added to; ValueError for a navmesh's");
 
     def_build<float, int32_t>(m);
     def_build<double, int32_t>(m);

@@ -187,8 +187,8 @@ def test_mesh_los_whole_forest_path_builds_the_loop_structure_in_later_heat_roun
     monkeypatch.setattr(mesh_los, "walk_segments", lambda caster, starts, *args, **kwargs: walks.append(len(starts))
                         or _raycasting.walk_segments(caster, starts, *args, **kwargs))
     seeing = mesh_los.collapse_forest_seeing
-    monkeypatch.setattr(mesh_los, "collapse_forest_seeing", lambda forest, rule, sees: seeing(
-        forest, rule, lambda pairs: sights.append(len(pairs)) or sees(pairs)))
+    monkeypatch.setattr(mesh_los, "collapse_forest_seeing", lambda forest, rule, sees, memo: seeing(
+        forest, rule, lambda pairs: sights.append(len(pairs)) or sees(pairs), memo))
     params = mesh_los.Params(normal_tolerance_deg=45.0, max_traffic_step=30.0)
     for seed, forest in enumerate([sampled.forest] + [random_forest(sampled.graph, seed) for seed in range(3)]):
         predicate = mesh_los.g2s_simplify_predicate(params, sampled.context, forest, None)
@@ -234,3 +234,46 @@ def test_a_batched_line_of_sight_that_fails_or_answers_short_stops_the_simplific
         collapse_forest_seeing(forest, rule, failing)
     with pytest.raises(ValueError, match="every pair"):
         collapse_forest_seeing(forest, rule, lambda pairs: np.ones(len(pairs) + 1, bool))
+
+
+def test_a_memo_asks_a_batched_line_of_sight_about_each_segment_once_and_answers_as_it_did(runs, sampled):
+    # a later heat round (more fixed nodes) asks many of the first round's chains again: with a memo they are
+    # answered from it, by segment and either way round (a pair (c, a) after (a, c) is asked no more), and every
+    # round's answer is the one the same call gives without a memo
+    from g2s_core.simplify import forest_arrays
+    from g2s_plugins.recast.navmesh import collapse_forest_seeing
+
+    forest = forest_arrays(random_forest(sampled.graph, 1))
+    n = len(forest.ids)
+    rule = _surface.RuleArrays(on_navmesh=np.ones(n, bool), rank=np.full(n, np.nan), normals=np.tile([0.0, 1.0, 0.0], (n, 1)),
+                               normal_lengths=np.ones(n), max_step=None, tolerance_deg=10.0, whole_chain=True)
+    clear = np.random.default_rng(0).random((n, n)) < 0.7
+    clear &= clear.T  # the same answer both ways round, as the memo needs
+    asked: list[tuple[int, int]] = []
+
+    def sees(pairs):
+        asked.extend(map(tuple, pairs.tolist()))
+        return clear[pairs[:, 0], pairs[:, 1]]
+
+    memo = NavMesh.sight_memo()
+    later = dataclasses.replace(forest, fixed=forest.fixed | (np.random.default_rng(1).random(n) < 0.2))
+    answers = [collapse_forest_seeing(forest, rule, sees, memo)]
+    first = len(asked)
+    answers.append(collapse_forest_seeing(later, rule, sees, memo))
+    segments = {frozenset(pair) for pair in asked[:first]}
+    assert first > 100 and len(asked) > first  # the later round asks a few chains anew
+    assert not any(frozenset(pair) in segments for pair in asked[first:])  # none asked before, either way round
+    assert len(memo) == 2 * len({frozenset(pair) for pair in asked}) and memo.hits > len(asked) - first
+    for answer, arrays in zip(answers, (forest, later)):
+        assert all(np.array_equal(x, y) for x, y in zip(answer, collapse_forest_seeing(arrays, rule, sees)))
+    # a navmesh's memo holds Detour's answers, this one those of sees: neither call takes the other's
+    navmesh, navmesh_forest = runs["castle"].context.navmesh, forest_arrays(random_forest(runs["castle"].graph, 0))
+    m = len(navmesh_forest.ids)
+    navmesh_rule = dataclasses.replace(rule, on_navmesh=np.ones(m, bool), rank=np.full(m, np.nan),
+                                       normals=np.tile([0.0, 1.0, 0.0], (m, 1)), normal_lengths=np.ones(m))
+    with pytest.raises(ValueError, match="sight memo"):
+        navmesh.collapse_forest(navmesh_forest, navmesh_rule, 0.1, 0.3, memo)
+    detour = navmesh.sight_memo()
+    navmesh.collapse_forest(navmesh_forest, navmesh_rule, 0.1, 0.3, detour)
+    with pytest.raises(ValueError, match="sight memo"):
+        collapse_forest_seeing(forest, rule, sees, detour)

@@ -47,7 +47,10 @@ looks the band up in the steep triangles' grid, built once per mesh:
 docs/sampling.md, "Simplified edges as wide as the agent").
 Answers are cached per (A, C) pair for the predicate's life: the heat guarantee's rounds
 (:mod:`g2s_plugins.heat_guarantee`) ask the same predicate, so a later
-round casts rays only for walks no earlier round tested. Simplification
+round casts rays only for walks no earlier round tested, and on the
+whole-forest path below the C++ forest walk keeps the answers too (a
+``SightMemo``), so a later round asks Python only about chains no earlier
+round asked. Simplification
 takes the predicate's whole-forest path (:mod:`g2s_core.simplify`):
 Algorithm 4 and Algorithm 5's other tests in C++ (src/forest_simplify.hpp,
 ``surface_los``'s), which asks this walk test back in Python only for the
@@ -75,7 +78,7 @@ from g2s_plugins._raycasting import GROUND_MARGIN, AgentShape, OpenFloors, RayCa
 from g2s_plugins._surface import CollapseParams, RuleArrays, collapse_rule
 from g2s_plugins.graph_builders.sampling import DISK_SHARE
 from g2s_plugins.heat_guarantee import begin_ahead, guaranteed
-from g2s_plugins.recast.navmesh import collapse_forest_seeing
+from g2s_plugins.recast.navmesh import NavMesh, collapse_forest_seeing
 
 NAME = "mesh_los"
 
@@ -159,6 +162,7 @@ def mesh_los_predicate(
     walked: dict[tuple[Point, Point], bool] = {}  # walks tested, start -> end
     cache: dict[tuple[Point, Point], bool] = {}  # answers given, for (A, C) and (C, A)
     asking: tuple[_Structure, int, int] | None = None  # the structure, A and C of the chain being answered
+    memo = NavMesh.sight_memo()  # ``cache`` as the C++ forest walk reads it, so a later round asks no answered pair
 
     # The body's slab stands on the straight line A -> C: it is the agent's body only where the ground under the
     # line stays below its knee, which a surface gap no larger than the knee keeps at every probe (without one,
@@ -230,7 +234,7 @@ def mesh_los_predicate(
         def sees(pairs: np.ndarray) -> np.ndarray:  # (k,2) rows of the forest -> (k,) bool
             return np.array(walks(structure, [(ids[a], ids[c]) for a, c in pairs.tolist()]), dtype=bool)
 
-        return collapse_forest_seeing(forest, rule_arrays, sees)
+        return collapse_forest_seeing(forest, rule_arrays, sees, memo)
 
     rule = collapse_rule(params, line_of_sight, graph, native)
 

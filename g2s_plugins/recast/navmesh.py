@@ -337,7 +337,7 @@ class NavMesh:
 # ---------------------------------------------------------------- numpy helpers
 
 def collapse_forest_seeing(
-    forest: Any, rule: Any, sees: Callable[[np.ndarray], np.ndarray]
+    forest: Any, rule: Any, sees: Callable[[np.ndarray], np.ndarray], memo: Any = None
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """:meth:`NavMesh.collapse_forest`'s answer for ``forest`` (a :class:`~g2s_core.simplify.ForestArrays`) and
     ``rule`` (a :class:`~g2s_plugins._surface.RuleArrays`) with the line of sight ``sees`` instead of the
@@ -345,10 +345,14 @@ def collapse_forest_seeing(
     in C++ on one thread (src/forest_simplify.hpp), asking ``sees((k,2) int64 rows (a, c) of forest)`` -> (k,) bool
     only for the chains those let go, in batches: the walks below every kept node go on until each is done or needs
     an answer not given yet, and then the pairs they all wait for are given in one call. The answers must depend
-    on the pairs alone, not on the batches or their order."""
+    on the pairs alone, not on the batches or their order. ``memo`` (a :meth:`NavMesh.sight_memo` of no navmesh, or
+    None): what ``sees`` answered in earlier calls, by the segment between the two nodes' ``forest.points`` (either
+    way round), asked of it no more (the heat guarantee's later rounds ask about most of their chains again); the
+    answers must then depend on the segment alone, and be the same both ways round."""
     return _recast.collapse_forest(
         forest.ids, forest.parent, forest.depth, forest.fixed, forest.loops, forest.roots, rule.on_navmesh, rule.rank,
-        rule.max_step, rule.normals, rule.normal_lengths, float(rule.tolerance_deg), bool(rule.whole_chain), sees)
+        rule.max_step, rule.normals, rule.normal_lengths, float(rule.tolerance_deg), bool(rule.whole_chain), sees,
+        np.ascontiguousarray(forest.points, dtype=np.float64), memo)
 
 
 def _vec(p) -> tuple[float, float, float]:
