@@ -109,10 +109,11 @@ less than it asked for, and a structure that meets its target is confirmed again
 ``none``: the most by which that measure exceeded the rho against the exact flow (split ties, the evaluation's
 reference), rounded up: 0.0346 on the castle of seed 1 of ``benchmarks/analysis_quality.py``'s ``castle_20k``
 (21,292 polygons), whose structure met the margin 0.03 of before with 0.899 against the exact flow; 0.0325 on seed 0,
-0.006-0.008 on the 20k dungeons (docs/analysis_quality.md, "The guarantee's margin on 20k levels (6 December
-2026)"). The 0.03 of before was 0.027 on 50 levels of 273-12,854 polygons rounded up ("A guaranteed heat map"),
-none of them a 20k castle. On the sampling route's grid with split ties it does not hold: the gap reached 0.049 on the held-out
-kinds and the bunker kept 0.873 against the exact flow ("The guarantee's sample on grids").
+0.0321 on seed 2, 0.0063-0.0073 on the 20k dungeons, 0.0134-0.0150 on the 20k terrains (seeds 0-2) and 0.0124 on
+the 20k building of seed 0 (docs/analysis_quality.md, "The guarantee's margin on 20k levels (6 December 2026)").
+The 0.03 of before was 0.027 on 50 levels of 273-12,854 polygons rounded up ("A guaranteed heat map"), none of them
+a 20k castle. On the sampling route's grid with split ties a plain sample's gap reached 0.049 on the held-out kinds
+and the bunker kept 0.873 against the exact flow ("The guarantee's sample on grids").
 
 ``linear`` (the sample linearly scaled, as ``map_analysis_sampling`` draws it: each sampled source's pairs count on
 a node in proportion to how far along their path it lies, which removes the plain sample's overcount round its
