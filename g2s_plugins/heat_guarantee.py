@@ -23,7 +23,7 @@ that it is the same sample, whose rho reads higher than the
 exact one (its heat map and its reference share the sample's errors), so
 there the target is ``min_heat_rho`` plus the margin :data:`MARGINS` gives
 that sample's ``scaling`` (how far its measure reads high depends on the
-estimator: 0.03 for a plain sample, 0.02 for a linearly scaled one). A heat map
+estimator: 0.04 for a plain sample, 0.02 for a linearly scaled one). A heat map
 whose sample is spread (``heat_sampling: spread``, a systematic sample:
 :mod:`g2s_plugins.traffic`) is ranked there instead against the mean of its
 sample and an independent one (:func:`second_sample`), with the margin
@@ -104,17 +104,21 @@ Predicate = Callable[[nx.DiGraph, int, int, int], bool]
 RESTORED_SHARE = 0.02
 """Forest nodes restored per round, as a share of the forest's nodes."""
 
-MARGINS: dict[traffic.Scaling, float] = {"none": 0.03, "linear": 0.02}
+MARGINS: dict[traffic.Scaling, float] = {"none": 0.04, "linear": 0.02}
 """Rho above ``min_heat_rho`` a structure must reach when the graph has more than
 :data:`g2s_plugins.traffic.EXACT_NODES` nodes with an area, measured against the run's own 256-source walking flow
 rather than the exact one, by that flow's ``scaling``. Measured, not bounds: a level where the gap is larger gets
 less than it asked for, and a structure that meets its target is confirmed against another sample
 (:func:`confirm`), which warns where the estimate is under ``min_heat_rho`` ("An honest guarantee on grids").
 
-``none``: the most by which that measure exceeded the rho against the exact flow, 0.027 on 50 levels of
-273-12,854 polygons (0.006-0.027 on the 12 above 2,000; docs/analysis_quality.md, "A guaranteed heat map"),
-rounded up. On the sampling route's grid with split ties it does not hold: the gap reached 0.049 on the held-out
-kinds and the bunker kept 0.873 against the exact flow ("The guarantee's sample on grids").
+``none``: the most by which that measure exceeded the rho against the exact flow (split ties, the evaluation's
+reference), rounded up: 0.0346 on the castle of seed 1 of ``benchmarks/analysis_quality.py``'s ``castle_20k``
+(21,292 polygons), whose structure met the margin 0.03 of before with 0.899 against the exact flow; 0.0325 on seed 0,
+0.0321 on seed 2, 0.0063-0.0073 on the 20k dungeons, 0.0134-0.0150 on the 20k terrains (seeds 0-2) and 0.0124 on
+the 20k building of seed 0 (docs/analysis_quality.md, "The guarantee's margin on 20k levels (6 December 2026)").
+The 0.03 of before was 0.027 on 50 levels of 273-12,854 polygons rounded up ("A guaranteed heat map"), none of them
+a 20k castle. On the sampling route's grid with split ties a plain sample's gap reached 0.049 on the held-out kinds
+and the bunker kept 0.873 against the exact flow ("The guarantee's sample on grids").
 
 ``linear`` (the sample linearly scaled, as ``map_analysis_sampling`` draws it: each sampled source's pairs count on
 a node in proportion to how far along their path it lies, which removes the plain sample's overcount round its

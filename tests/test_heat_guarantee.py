@@ -282,13 +282,13 @@ def test_above_the_exact_size_the_sampled_measure_must_clear_the_margin(monkeypa
     structure = forest.subgraph(np.random.default_rng(0).choice(300, size=200, replace=False).tolist())
     context = RunContext(mesh=None, agent=AgentConfig(), centre=np.zeros(3), graph=graph)
     monkeypatch.setattr(traffic, "EXACT_NODES", 256)  # the grid's 300 nodes are above it: the sample decides
-    # 0.9093 by the sample: it meets 0.87 + 0.03, not 0.89 + 0.03
-    assert heat_guarantee.MARGINS["none"] == 0.03
-    assert heat_guarantee.restored(graph, forest, structure, 0.87, context) is None
-    assert heat_guarantee.restored(graph, forest, structure, 0.89, context) is not None
-    # the structure that met 0.87 + 0.03 was confirmed by another sample: 0.8857 against it, and the two samples
+    # 0.9093 by the sample: it meets 0.86 + 0.04, not 0.88 + 0.04
+    assert heat_guarantee.MARGINS["none"] == 0.04
+    assert heat_guarantee.restored(graph, forest, structure, 0.86, context) is None
+    assert heat_guarantee.restored(graph, forest, structure, 0.88, context) is not None
+    # the structure that met 0.86 + 0.04 was confirmed by another sample: 0.8857 against it, and the two samples
     # rank each other at 0.9770, so the estimate is 0.8857 / sqrt(0.9770) = 0.8961 (the exact flow's: 0.8962), over
-    # 0.87, so without a word
+    # 0.86, so without a word
     shown = traffic.walking_flow(graph, max_sources=traffic.WALKING_SOURCES)
     other = traffic.walking_flow(graph, max_sources=traffic.WALKING_SOURCES, seed=heat_guarantee.CONFIRMING_SEED)
     heat = evaluation.placement_heat(graph, structure, shown)
@@ -311,8 +311,8 @@ def test_a_linearly_scaled_sample_needs_the_smaller_margin_it_measured(monkeypat
     assert evaluation.spearman(heat, exact) == pytest.approx(0.9044, abs=1e-4)
     plain_heat = evaluation.placement_heat(graph, structure, plain)
     assert evaluation.spearman(plain_heat, plain) - evaluation.spearman(plain_heat, exact) == pytest.approx(0.0132, abs=1e-4)
-    assert heat_guarantee.MARGINS == {"none": 0.03, "linear": 0.02}
-    # for 0.88 the plain sample's 0.9093 is under 0.88 + 0.03 (nodes come back; 0.8962 exact), the linear sample's
+    assert heat_guarantee.MARGINS == {"none": 0.04, "linear": 0.02}
+    # for 0.88 the plain sample's 0.9093 is under 0.88 + 0.04 (nodes come back; 0.8962 exact), the linear sample's
     # 0.9065 over 0.88 + 0.02 (kept as it is; 0.9044 exact); for 0.8866 it is under 0.8866 + 0.02
     context = RunContext(mesh=None, agent=AgentConfig(), centre=np.zeros(3), graph=graph)
     assert heat_guarantee.restored(graph, forest, structure, 0.88, context) is not None
