@@ -1162,6 +1162,10 @@ def build_sampled_graph(
         clock = now
 
     caster = RayCaster(mesh)
+    # The open floors need the mesh alone: found on a second thread while the candidates are made and checked.
+    aside = ThreadPoolExecutor(1)
+    open_floors = aside.submit(OpenFloors, caster, agent, min_inradius=0.5 * spacing)
+    aside.shutdown(wait=False)  # its one thread ends with that task
     surface = walkable_surface(mesh, agent)
     lap("surface")
     stats: dict[str, object] = {
@@ -1218,7 +1222,7 @@ def build_sampled_graph(
     pairs = cKDTree(samples).query_pairs(connect, output_type="ndarray") if len(samples) > 1 else np.zeros((0, 2), int)
     pairs = np.sort(np.asarray(pairs, dtype=np.int64).reshape(-1, 2), axis=1)
     pairs = pairs[np.lexsort((pairs[:, 1], pairs[:, 0]))]
-    floors = OpenFloors(caster, agent, min_inradius=0.5 * spacing)
+    floors = open_floors.result()
     half_width = DISK_SHARE * clearance
     offset = floors.certain_offset(GROUND_MARGIN, None)
     floor = floors.faces_under(samples, offset, room=half_width)
