@@ -20,7 +20,9 @@ wanted. No Recast is involved: ``context.navmesh`` stays ``None``.
    test's crack rule). This erodes
    the walkable surface by ``clearance`` as Recast erodes it by the radius.
    Rays whose answer the geometry near a candidate already gives are not
-   cast (:class:`_Surroundings`); the answers are the same.
+   cast (:class:`_Surroundings`); the answers are the same. The wall and
+   ledge rays, and the edges' walk tests below, are cast in batches by two
+   threads (:func:`_each_batch`), the same answers again.
    *Closed solids* (:func:`inside_closed_solids`): a candidate that passed
    those checks is dropped when the first triangles above it and along
    ±x, ±z are all met from behind (the inside of an outward-wound block
