@@ -20,7 +20,9 @@ wanted. No Recast is involved: ``context.navmesh`` stays ``None``.
    test's crack rule). This erodes
    the walkable surface by ``clearance`` as Recast erodes it by the radius.
    Rays whose answer the geometry near a candidate already gives are not
-   cast (:class:`_Surroundings`); the answers are the same.
+   cast (:class:`_Surroundings`); the answers are the same. The wall and
+   ledge rays, and the edges' walk tests below, are cast in batches by two
+   threads (:func:`_each_batch`), the same answers again.
    *Closed solids* (:func:`inside_closed_solids`): a candidate that passed
    those checks is dropped when the first triangles above it and along
    ±x, ±z are all met from behind (the inside of an outward-wound block
@@ -102,10 +104,15 @@ test for the added samples' pairs.
 
 from __future__ import annotations
 
+import copy
 import math
+import os
+import threading
 import time
 import weakref
-from typing import Literal
+from collections.abc import Callable, Sequence
+from concurrent.futures import ThreadPoolExecutor
+from typing import Literal, TypeVar
 
 import networkx as nx
 import numpy as np
@@ -153,6 +160,16 @@ MAX_EDGE_BATCH = 200_000
 
 MAX_LEDGE_BATCH = 50_000
 """Candidate points whose ledge rays (8 each) are cast per batch (bounds memory on large levels)."""
+
+MAX_WALL_BATCH = 100_000
+"""Candidate points whose wall rays (24 each at most) one thread casts at a time (:func:`agent_fits`)."""
+
+RAY_THREADS = min(2, os.cpu_count() or 1)
+"""Threads that cast a build's batches of rays (:func:`_each_batch`). Embree's calls and numpy's loops over
+whole arrays let go of the GIL, so a second thread keeps a second core busy; the Python round them does not,
+so more threads gain little (docs/performance.md, 6 December 2026, samp1_46)."""
+
+Batch = TypeVar("Batch")
 
 
 GAP_STRETCH = 2.0
@@ -261,6 +278,40 @@ def walkable_surface(mesh: trimesh.Trimesh, agent: AgentShape) -> trimesh.Trimes
 # --- candidates and the agent checks ----------------------------------------------------
 
 
+def _each_batch(caster: RayCaster, work: Callable[[RayCaster, Batch], None], batches: Sequence[Batch]) -> None:
+    """``work(cast, batch)`` for every one of ``batches``, on :data:`RAY_THREADS` threads when there are several.
+
+    Each thread casts through a copy of ``caster`` (the same scene and Embree intersector: Embree answers rays
+    from several threads at once), whose rays are added to ``caster.rays_cast`` at the end. ``work`` writes its
+    answers only where no other batch writes (the rows of its batch), and a ray's answer does not depend on the
+    rays cast beside it, so the answers are the same whichever thread took a batch and when. The first batch runs
+    alone when ``caster`` has cast nothing yet (Embree commits its scene on the first ray).
+    """
+    batches = list(batches)
+    if caster.rays_cast == 0 and batches:
+        work(caster, batches.pop(0))
+    if RAY_THREADS < 2 or len(batches) < 2:
+        for batch in batches:
+            work(caster, batch)
+        return
+    casters: list[RayCaster] = []
+
+    def run(batch: Batch) -> None:
+        # one caster per thread, made on its first batch
+        cast = getattr(own, "caster", None)
+        if cast is None:
+            cast = own.caster = copy.copy(caster)
+            cast.rays_cast = 0
+            casters.append(cast)
+        work(cast, batch)
+
+    own = threading.local()
+    with ThreadPoolExecutor(RAY_THREADS) as pool:
+        for done in [pool.submit(run, batch) for batch in batches]:
+            done.result()
+    caster.rays_cast += sum(cast.rays_cast for cast in casters)
+
+
 def agent_fits(
     caster: RayCaster,
     points: np.ndarray,
@@ -324,18 +375,25 @@ def agent_fits(
     far = around.steep.columns_free(points[idx], levels[0], levels[-1])
     near = idx[~far]
     wall_distance = np.full(len(points), np.inf) if clear_of_walls is not None else None
-    for level in levels:
-        for direction in COMPASS:
-            hits = caster.first_hits(points[near] + level * UP, direction)
-            wall = (hits.distance < clearance) & ~caster.walkable_faces(hits.face, agent.max_slope_deg)
-            why[near[wall]] = REJECTED_BY.index("wall")
-            if wall_distance is not None:
-                rows, length, _ = _steep_offsets(caster, hits, agent, clearance)
-                stays = ~wall[rows]
-                kept = near[rows[stays]]
-                wall_distance[kept] = np.minimum(wall_distance[kept], length[stays])
-            near = near[~wall]
-    idx = np.sort(np.concatenate([idx[far], near]))
+    clear = np.zeros(len(points), dtype=bool)
+
+    def walls(cast: RayCaster, near: np.ndarray) -> None:
+        for level in levels:
+            for direction in COMPASS:
+                hits = cast.first_hits(points[near] + level * UP, direction)
+                wall = (hits.distance < clearance) & ~cast.walkable_faces(hits.face, agent.max_slope_deg)
+                why[near[wall]] = REJECTED_BY.index("wall")
+                if wall_distance is not None:
+                    rows, length, _ = _steep_offsets(cast, hits, agent, clearance)
+                    stays = ~wall[rows]
+                    kept = near[rows[stays]]
+                    wall_distance[kept] = np.minimum(wall_distance[kept], length[stays])
+                near = near[~wall]
+        clear[near] = True
+
+    _each_batch(caster, walls, [near[begin : begin + MAX_WALL_BATCH] for begin in range(0, len(near), MAX_WALL_BATCH)])
+    clear[idx[far]] = True
+    idx = np.flatnonzero(clear)
     if clear_of_walls is not None:
         clear_of_walls[:] = wall_distance >= clearance
 
@@ -360,10 +418,9 @@ def agent_fits(
     def walkable(faces: np.ndarray) -> np.ndarray:
         return caster.walkable_faces(faces, agent.max_slope_deg)
 
-    for begin in range(0, len(idx), MAX_LEDGE_BATCH):
-        rows = idx[begin : begin + MAX_LEDGE_BATCH]
+    def ledges(cast: RayCaster, rows: np.ndarray) -> None:
         probe = (points[rows][:, None, :] + clearance * COMPASS[None, :, :]).reshape(-1, 3)
-        down = caster.first_hits(probe + reach * UP, -UP)
+        down = cast.first_hits(probe + reach * UP, -UP)
         ground = ((down.distance <= 2.0 * reach) & walkable(down.face)).reshape(len(rows), len(COMPASS))
         distance = np.where(ground, down.distance.reshape(ground.shape), 0.0)
         origins = (probe + reach * UP).reshape(len(rows), len(COMPASS), 3)
@@ -372,15 +429,17 @@ def agent_fits(
         kept = np.ones(len(rows), dtype=bool)
         for k in range(len(COMPASS)):
             missing = np.flatnonzero(kept & ~ground[:, k])
-            crack, beside = ground_across_crack(caster, origins[missing, k], -UP, crack_sides(agent), 2.0 * reach, walkable)
+            crack, beside = ground_across_crack(cast, origins[missing, k], -UP, crack_sides(agent), 2.0 * reach, walkable)
             ground[missing[crack], k] = True
             distance[missing[crack], k] = beside[crack]
             kept[missing[~crack]] = False
         # Head room over the landing point, from the probe's own origin (see walk_segments).
         tested = ground & kept[:, None]
-        ground[tested] = clear_above(caster, origins[tested], agent.height - distance[tested])
+        ground[tested] = clear_above(cast, origins[tested], agent.height - distance[tested])
         ok[rows] = ground.all(axis=1)  # a probe that put its point out kept no ground
         why[rows[~ok[rows]]] = REJECTED_BY.index("ledge")
+
+    _each_batch(caster, ledges, [idx[begin : begin + MAX_LEDGE_BATCH] for begin in range(0, len(idx), MAX_LEDGE_BATCH)])
     return ok
 
 
@@ -959,8 +1018,8 @@ def _walkable_pairs(
     """
     keep = np.zeros(len(pairs), dtype=bool) if shift else (floor[pairs[:, 0]] >= 0) & (floor[pairs[:, 0]] == floor[pairs[:, 1]])
     tested = np.nonzero(~keep)[0]
-    for begin in range(0, len(tested), MAX_EDGE_BATCH):
-        rows = tested[begin : begin + MAX_EDGE_BATCH]
+
+    def walks(cast: RayCaster, rows: np.ndarray) -> None:
         starts, ends = samples[pairs[rows, 0]], samples[pairs[rows, 1]]
         if shift:
             along = ends - starts
@@ -969,7 +1028,9 @@ def _walkable_pairs(
             left = np.divide(left, length, out=np.zeros_like(left), where=length > 0)  # a vertical pair: none
             longer = np.divide(half_width * along, length, out=np.zeros_like(along), where=length > 0)
             starts, ends = starts + shift * left - longer, ends + shift * left + longer
-        keep[rows] = walk_segments(caster, starts, ends, agent, probe_step, half_width=half_width, body=True)[0]
+        keep[rows] = walk_segments(cast, starts, ends, agent, probe_step, half_width=half_width, body=True)[0]
+
+    _each_batch(caster, walks, [tested[begin : begin + MAX_EDGE_BATCH] for begin in range(0, len(tested), MAX_EDGE_BATCH)])
     return keep
 
 
@@ -1103,6 +1164,10 @@ def build_sampled_graph(
         clock = now
 
     caster = RayCaster(mesh)
+    # The open floors need the mesh alone: found on a second thread while the candidates are made and checked.
+    aside = ThreadPoolExecutor(1)
+    open_floors = aside.submit(OpenFloors, caster, agent, min_inradius=0.5 * spacing)
+    aside.shutdown(wait=False)  # its one thread ends with that task
     surface = walkable_surface(mesh, agent)
     lap("surface")
     stats: dict[str, object] = {
@@ -1159,7 +1224,7 @@ def build_sampled_graph(
     pairs = cKDTree(samples).query_pairs(connect, output_type="ndarray") if len(samples) > 1 else np.zeros((0, 2), int)
     pairs = np.sort(np.asarray(pairs, dtype=np.int64).reshape(-1, 2), axis=1)
     pairs = pairs[np.lexsort((pairs[:, 1], pairs[:, 0]))]
-    floors = OpenFloors(caster, agent, min_inradius=0.5 * spacing)
+    floors = open_floors.result()
     half_width = DISK_SHARE * clearance
     offset = floors.certain_offset(GROUND_MARGIN, None)
     floor = floors.faces_under(samples, offset, room=half_width)
