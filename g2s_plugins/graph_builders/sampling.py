@@ -278,6 +278,11 @@ def walkable_surface(mesh: trimesh.Trimesh, agent: AgentShape) -> trimesh.Trimes
 # --- candidates and the agent checks ----------------------------------------------------
 
 
+def _in_batches(rows: np.ndarray, size: int) -> list[np.ndarray]:
+    """``rows`` (n,) cut into consecutive batches of at most ``size``, in order."""
+    return [rows[begin : begin + size] for begin in range(0, len(rows), size)]
+
+
 def _each_batch(caster: RayCaster, work: Callable[[RayCaster, Batch], None], batches: Sequence[Batch]) -> None:
     """``work(cast, batch)`` for every one of ``batches``, on :data:`RAY_THREADS` threads when there are several.
 
@@ -391,7 +396,7 @@ def agent_fits(
                 near = near[~wall]
         clear[near] = True
 
-    _each_batch(caster, walls, [near[begin : begin + MAX_WALL_BATCH] for begin in range(0, len(near), MAX_WALL_BATCH)])
+    _each_batch(caster, walls, _in_batches(near, MAX_WALL_BATCH))
     clear[idx[far]] = True
     idx = np.flatnonzero(clear)
     if clear_of_walls is not None:
@@ -439,7 +444,7 @@ def agent_fits(
         ok[rows] = ground.all(axis=1)  # a probe that put its point out kept no ground
         why[rows[~ok[rows]]] = REJECTED_BY.index("ledge")
 
-    _each_batch(caster, ledges, [idx[begin : begin + MAX_LEDGE_BATCH] for begin in range(0, len(idx), MAX_LEDGE_BATCH)])
+    _each_batch(caster, ledges, _in_batches(idx, MAX_LEDGE_BATCH))
     return ok
 
 
@@ -1030,7 +1035,7 @@ def _walkable_pairs(
             starts, ends = starts + shift * left - longer, ends + shift * left + longer
         keep[rows] = walk_segments(cast, starts, ends, agent, probe_step, half_width=half_width, body=True)[0]
 
-    _each_batch(caster, walks, [tested[begin : begin + MAX_EDGE_BATCH] for begin in range(0, len(tested), MAX_EDGE_BATCH)])
+    _each_batch(caster, walks, _in_batches(tested, MAX_EDGE_BATCH))
     return keep
 
 
