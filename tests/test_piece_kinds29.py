@@ -13,44 +13,26 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from g2s_core import pipeline
-from g2s_core.config import PRESETS_DIR, load_config
-from g2s_core.mesh import mesh_sha256
-from g2s_core.registry import Registry
-from tests.conftest import benchmark
-
-
-def _found_one_to_one(kind: str, preset: str = "map_piece", width_tolerance: float = 0.05) -> list:
-    """The openings ``preset`` finds on the round's ``kind`` at 0 degrees, checked to be its known ones, one each,
-    nothing else, within ``width_tolerance`` m of their widths."""
-    level = getattr(benchmark("piece_kinds29"), kind)()
-    registry = Registry.from_entry_points()
-    plan = pipeline.plan(load_config(PRESETS_DIR / f"{preset}.yaml"), registry)
-    openings = list(pipeline.run(plan, registry, level.mesh, level.name, mesh_sha256(level.mesh)).terminals.openings)
-    known = len(level.openings)
-    recalled, missed, correct, other, width_error = benchmark("piece_kinds10").score(level, openings, one_to_one=True)
-    assert (recalled, missed, correct, other) == (known, 0, known, 0)
-    assert width_error < width_tolerance
-    return openings
+from tests.conftest import round_openings
 
 
 @pytest.mark.parametrize("preset", ["map_piece", "map_piece_sampling"])
 def test_a_portcullis_whose_spikes_hang_under_the_agents_head_closes_the_end(preset: str) -> None:
-    (only,) = _found_one_to_one("spiked_portcullis_end", preset)
+    (only,) = round_openings("piece_kinds29", "spiked_portcullis_end", preset)
     assert abs(only.position[0]) < 0.05  # the west end; nothing at the portcullis 12 m east
 
 
 def test_a_doorway_stepping_down_just_inside_opens_on_its_threshold() -> None:
-    east = max(_found_one_to_one("raised_threshold_step"), key=lambda o: o.position[0])
+    east = max(round_openings("piece_kinds29", "raised_threshold_step"), key=lambda o: o.position[0])
     assert abs(east.position[1] - 0.3) < 0.01 and abs(east.position[0] - 8.3) < 0.05
 
 
 def test_an_arcade_onto_the_street_in_the_same_piece_holds_no_opening_at_its_arches() -> None:
-    openings = _found_one_to_one("arcade_onto_street")
+    openings = round_openings("piece_kinds29", "arcade_onto_street")
     assert all(abs(o.position[2] + 0.5) > 1.0 for o in openings)  # none on the arcade's face (z -0.5)
 
 
 def test_a_trapdoor_over_nothing_is_no_opening() -> None:
-    openings = _found_one_to_one("trapdoor_over_nothing")
+    openings = round_openings("piece_kinds29", "trapdoor_over_nothing")
     hatch = np.array([5.6, 0.0, 4.8])
     assert min(np.linalg.norm(np.asarray(o.position) - hatch) for o in openings) > 2.0
