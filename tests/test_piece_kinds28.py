@@ -12,39 +12,22 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from g2s_core import pipeline
-from g2s_core.config import PRESETS_DIR, load_config
-from g2s_core.mesh import mesh_sha256
-from g2s_core.registry import Registry
-from tests.conftest import benchmark
-
-
-def _found_one_to_one(kind: str, preset: str = "map_piece", width_tolerance: float = 0.05) -> list:
-    """The openings ``preset`` finds on the round's ``kind`` at 0 degrees, checked to be its known ones, one each,
-    nothing else, within ``width_tolerance`` m of their widths."""
-    level = getattr(benchmark("piece_kinds28"), kind)()
-    registry = Registry.from_entry_points()
-    plan = pipeline.plan(load_config(PRESETS_DIR / f"{preset}.yaml"), registry)
-    openings = list(pipeline.run(plan, registry, level.mesh, level.name, mesh_sha256(level.mesh)).terminals.openings)
-    known = len(level.openings)
-    recalled, missed, correct, other, width_error = benchmark("piece_kinds10").score(level, openings, one_to_one=True)
-    assert (recalled, missed, correct, other) == (known, 0, known, 0)
-    assert width_error < width_tolerance
-    return openings
+from tests.conftest import round_openings
 
 
 @pytest.mark.parametrize("preset", ["map_piece", "map_piece_sampling"])
 def test_a_barn_door_slid_half_across_leaves_the_part_beside_it(preset: str) -> None:
-    east = max(_found_one_to_one("barn_door_slid_open", preset), key=lambda o: o.position[0])
+    east = max(round_openings("piece_kinds28", "barn_door_slid_open", preset), key=lambda o: o.position[0])
     assert abs(east.width - 0.9) < 0.05 and abs(east.position[2] - 3.35) < 0.05  # between the leaf's end and the jamb
 
 
 def test_of_two_arches_springing_at_1_6_m_only_the_one_the_agent_stands_up_in_is_an_opening() -> None:
-    openings = _found_one_to_one("low_spring_arches", width_tolerance=0.2)  # the arch's 1.44 m at the head-room rays
+    # the arch's 1.44 m at the head-room rays
+    openings = round_openings("piece_kinds28", "low_spring_arches", width_tolerance=0.2)
     narrow = np.array([8.3, 0.0, 4.3])
     assert min(np.linalg.norm(np.asarray(o.position) - narrow) for o in openings) > 1.0
 
 
 def test_a_stair_down_through_the_floor_leads_to_the_only_opening() -> None:
-    (only,) = _found_one_to_one("stair_hole_only_exit")
+    (only,) = round_openings("piece_kinds28", "stair_hole_only_exit")
     assert abs(only.position[1] + 3.0) < 0.01 and abs(only.position[0] - 10.3) < 0.05
