@@ -137,17 +137,20 @@ def cubicle_farm(seed: int) -> trimesh.Trimesh:
     partition (1.5 m: a low wall), a desk or through a wall."""
     rng = np.random.default_rng(seed)
     size_x, size_z = float(rng.uniform(72.0, 80.0)), float(rng.uniform(40.0, 46.0))
-    s = _Solids()
-    s.box(-0.2, size_x + 0.2, -0.3, 0.0, -8.0, size_z + 0.2)  # the floor and the lift lobby's (z from -8 to 0)
-    _lid(s, -0.2, size_x + 0.2, -8.0, size_z + 0.2, 3.2)
     lobby = float(rng.uniform(size_x / 2 - 8.0, size_x / 2 + 2.0))
+    shafts = [(x, x + 3.0, -7.9, -5.0) for x in (lobby - 6.0, lobby + 9.0)]
+    s = _Solids()
+    # the floor and the lift lobby's (z from -8 to 0), none inside the shafts (closed boxes 2.2 m high: the sampling
+    # route reads the floor inside one, under 2.2 m of head room, as an area apart; a first draft's did)
+    s.ground(-0.2, size_x + 0.2, -8.0, size_z + 0.2, 0.0, shafts, thickness=0.3)
+    _lid(s, -0.2, size_x + 0.2, -8.0, size_z + 0.2, 3.2)
     s.wall((0.0, 0.0), (size_x, 0.0), 0.0, 3.2, [(lobby, 6.0)], thickness=0.25)
     s.wall((0.0, size_z), (size_x, size_z), 0.0, 3.2, thickness=0.25)
     for x in (0.0, size_x):
         s.wall((x, -8.0), (x, size_z), 0.0, 3.2, thickness=0.25)
     s.wall((0.0, -8.0), (size_x, -8.0), 0.0, 3.2, thickness=0.25)
-    for x in (lobby - 6.0, lobby + 9.0):  # lift shafts, walled all round (no floor in them)
-        s.box(x, x + 3.0, 0.0, 2.2, -7.9, -5.0)
+    for x0, x1, z0, z1 in shafts:  # lift shafts, closed (no floor in them)
+        s.box(x0, x1, -0.3, 2.2, z0, z1)
     rooms = int(rng.integers(4, 7))  # meeting rooms along the north wall, then a kitchen bay
     x = 0.0
     for _ in range(rooms):
