@@ -2,9 +2,9 @@
 
 Six kinds of shipped game levels that stress what no earlier round did, each about 400-1,200 navmesh polygons with the
 presets' agent (radius 0.5 m, height 2 m, climb 0.4 m, slope 45 degrees), seeds 0-2, built from the solids and
-helpers of ``benchmarks/level_kinds.py`` (imported, not copied): ``hedge_maze`` (a perfect maze of hedges, one way in
-and a clearing at its heart: a tree of corridors, half its floor in dead ends, places a hedge apart a long walk
-apart), ``cubicle_farm`` (an open-plan office floor of cubicle pods, each cubicle a dead end entered through an opening
+helpers of ``benchmarks/level_kinds.py`` (imported, not copied): ``lava_tubes`` (a cave system of tubes 6 m wide
+whose floors climb and fall from one chamber to the next, the floors spanning 6-10 m of height, every floor
+uneven), ``cubicle_farm`` (an open-plan office floor of cubicle pods, each cubicle a dead end entered through an opening
 1.6-2.0 m wide between partitions 1.5 m high), ``football_terrace`` (a football ground's standing terraces whose steps
 rise 0.30-0.38 m, just under the agent's 0.4 m climb, crossed by staggered crush barriers), ``hypostyle_hall`` (a
 temple hall of a dense grid of columns whose gaps, 1.2-2.3 m, straddle what the agent's 1 m needs), ``opera_house``
@@ -12,7 +12,7 @@ temple hall of a dense grid of columns whose gaps, 1.2-2.3 m, straddle what the 
 and ``dune_sea`` (a desert of crescent dunes whose slip faces stand at 38-52 degrees, about the agent's 45-degree
 limit, walked round by their backs and horns).
 
-Run: ``.venv/bin/python benchmarks/level_kinds29.py OUT_DIR [--kinds hedge_maze dune_sea] [--seeds 0 1 2]`` writes
+Run: ``.venv/bin/python benchmarks/level_kinds29.py OUT_DIR [--kinds lava_tubes dune_sea] [--seeds 0 1 2]`` writes
 ``OUT_DIR/<kind>_s<seed>.obj``; ``benchmarks/analysis_quality.py --levels`` takes the kinds' names too.
 """
 
@@ -23,100 +23,74 @@ from collections.abc import Callable
 
 import numpy as np
 import trimesh
-from level_kinds import _lid, _ridged, _Solids, _stair_tower, _terrain, _trunk, _well_length
+from level_kinds import _lid, _paint, _ridged, _Solids, _stair_tower, _terrain, _tiles, _trunk, _well_length
 from level_kinds import main as write_kinds
+from scipy.sparse.csgraph import minimum_spanning_tree
 
 
-def _hedge(s: _Solids, x0: float, x1: float, z0: float, z1: float, height: float) -> None:
-    """A hedge over the plan [x0, x1] x [z0, z1] (long along x or z) from 0.3 m under the ground to ``height``: a
-    prism ridged along its length at 60 degrees, one convex body, so its top is no floor."""
-    along_x = x1 - x0 >= z1 - z0
-    half = (z1 - z0 if along_x else x1 - x0) / 2
-    ridge = height + half * math.tan(math.radians(60.0))
-    base = [[x, y, z] for x in (x0, x1) for z in (z0, z1) for y in (-0.3, height)]
-    top = [[x, ridge, (z0 + z1) / 2] for x in (x0, x1)] if along_x else [[(x0 + x1) / 2, ridge, z] for z in (z0, z1)]
-    s.hull(np.array(base + top))
+def lava_tubes(seed: int) -> trimesh.Trimesh:
+    """A lava-tube cave system (a survival game's caves, open to the sky through collapsed roofs) on 2 m tiles
+    (:func:`level_kinds._tiles`), 96 x 72 tiles (192 x 144 m): 9-12 chambers (ellipses 3-5 tiles in radius, their
+    outlines wobbling by a tile) *at several heights*, joined by tubes 3 tiles (6 m) wide along the minimum spanning tree
+    of the chambers' centres (no loop: a draft's extra tubes crossed others at other heights), each tube's floor
+    climbing or falling 0.12-0.2 m a tile (3.5-6 degrees, mostly up from the first chamber; every tile a flat step, so a
+    tile's edge is a step of at most about 0.25 m, under the agent's 0.4 m climb) from one chamber's floor to the
+    other's, so the floors span 6-10 m of height. Every floor is uneven: waves of 0.3 m over the whole map (steps of a
+    few centimetres tile to tile), 2-4 boulders (0.8-2 m high) in each chamber. The rock round the open tiles rises 6 m
+    over the highest floor (ridged: no floor on it), so no tube is walked but along its floor.
 
-
-def hedge_maze(seed: int) -> trimesh.Trimesh:
-    """A garden's hedge maze (a Hampton Court level, a horror game's labyrinth): a *perfect maze* (a spanning tree of
-    the cells carved by a randomised depth-first walk, so no loops and one way between any two places) of 20-23 x
-    18-21 cells 3.2-3.6 m square, the hedges 0.8 m thick and 2.2-2.6 m high (ridged), leaving corridors 2.4-2.8 m wide.
-    One way in, in the south hedge at a random column, from a lawn 12 m deep across the maze's width (two benches on
-    it); the middle 2 x 2 cells are one clearing round a statue on a plinth 1.2 m square (the goal).
-
-    Expected (written before the first run): one area. Traffic highest on the lawn before the way in and on the
-    corridors of the tree's trunk (the way from the entrance to the clearing and its branches with the most floor
-    behind them), lowest in the dead ends' tips; a designer expects the structure to follow the corridors (a leaf or
-    a dent in each dead end of more than a cell or two), never through a hedge even where two corridors a hedge apart
-    are far apart on foot."""
+    Expected (written before its first run): one area. Traffic highest in the tubes of the tree's trunk and the
+    chambers between them, lowest in leaf chambers; a designer expects the structure along each tube's floor, rising
+    and falling with it, never through the rock between two tubes or chambers at different heights."""
     rng = np.random.default_rng(seed)
-    nx, nz = int(rng.integers(20, 24)), int(rng.integers(18, 22))
-    pitch, thick, height = float(rng.uniform(3.2, 3.6)), 0.8, float(rng.uniform(2.2, 2.6))
-    # walls: east[i, j] between cells (i, j) and (i + 1, j); north[i, j] between (i, j) and (i, j + 1)
-    east = np.ones((nx - 1, nz), dtype=bool)
-    north = np.ones((nx, nz - 1), dtype=bool)
-    seen = np.zeros((nx, nz), dtype=bool)
-    start = (int(rng.integers(nx)), int(rng.integers(nz)))
-    stack, seen[start] = [start], True
-    while stack:  # the randomised depth-first walk: O(cells)
-        i, j = stack[-1]
-        steps = [(i + di, j + dj) for di, dj in ((1, 0), (-1, 0), (0, 1), (0, -1))
-                 if 0 <= i + di < nx and 0 <= j + dj < nz and not seen[i + di, j + dj]]
-        if not steps:
-            stack.pop()
-            continue
-        a, b = steps[int(rng.integers(len(steps)))]
-        if a != i:
-            east[min(a, i), j] = False
-        else:
-            north[i, min(b, j)] = False
-        seen[a, b] = True
-        stack.append((a, b))
-    ci, cj = nx // 2 - 1, nz // 2 - 1  # the clearing's cells (ci, cj) to (ci + 1, cj + 1), one room
-    east[ci, cj:cj + 2] = False
-    north[ci:ci + 2, cj] = False
-    door = int(rng.integers(nx))
-    size_x, size_z = nx * pitch, nz * pitch
+    n, m = 96, 72
+    count = int(rng.integers(9, 13))
+    centres: list[np.ndarray] = []
+    while len(centres) < count:
+        c = np.array([rng.integers(9, n - 9), rng.integers(9, m - 9)])
+        if all(np.linalg.norm(c - d) > 20.0 for d in centres) or rng.random() < 0.02:
+            centres.append(c)
+    radii = rng.uniform(3.0, 5.0, (count, 2))
+    apart = np.array([[np.linalg.norm(a - b) for b in centres] for a in centres])
+    tree = minimum_spanning_tree(apart).tocoo()
+    edges = [(int(a), int(b)) for a, b in zip(tree.row, tree.col)]
+    heights = np.full(count, np.nan)
+    heights[0] = 0.0
+
+    def run(a: int, b: int) -> float:
+        """The length (tiles) of the tube from chamber ``a`` to ``b`` outside both chambers' smaller radii."""
+        return max(float(apart[a, b] - radii[a].min() - radii[b].min()), 1.0)
+
+    while np.isnan(heights).any():  # each chamber from its tree neighbour, 0.12-0.2 m a tile of tube apart, mostly up
+        for a, b in edges:
+            for p, q in ((a, b), (b, a)):
+                if not np.isnan(heights[p]) and np.isnan(heights[q]):
+                    heights[q] = heights[p] + float(rng.choice([-1.0, 1.0], p=[0.3, 0.7]) * rng.uniform(0.12, 0.2)) * run(p, q)
+    gi, gj = np.meshgrid(np.arange(n) + 0.5, np.arange(m) + 0.5, indexing="ij")
+    waves = rng.normal(size=(3, 4))
+    uneven = sum(0.1 * np.sin(gi * (0.1 + 0.1 * abs(w[0])) + w[1] * 3) * np.cos(gj * (0.1 + 0.1 * abs(w[2])) + w[3] * 3)
+                 for w in waves)
+    floor = np.full((n, m), np.nan)
+    for a, b in edges:  # the tubes, each tile at its place along the tube between the chambers' edges
+        mask = np.zeros((n, m), dtype=bool)
+        _paint(mask, centres[a], centres[b], 1)
+        d = (centres[b] - centres[a]).astype(float)
+        along = ((gi - centres[a][0] - 0.5) * d[0] + (gj - centres[a][1] - 0.5) * d[1]) / float(np.linalg.norm(d))
+        t = np.clip((along - radii[a].min()) / run(a, b), 0.0, 1.0)
+        fresh = mask & np.isnan(floor)
+        floor[fresh] = (heights[a] + t * (heights[b] - heights[a]))[fresh]
+    wobble = rng.uniform(0.0, 2 * math.pi, (count, 3))
     s = _Solids()
-    s.ground(-4.0, size_x + 4.0, -12.0, 0.0, 0.0, [])  # the lawn; beyond the maze's other hedges nothing
-    s.ground(-0.4, size_x + 0.4, 0.0, size_z + 0.4, 0.0, [])
-    runs: list[tuple[float, float, float, float]] = []
-    for j in range(nz + 1):  # hedges along x, merged into runs
-        z = j * pitch
-        open_ = [j == 0 and i == door or 0 < j < nz and not north[i, j - 1] for i in range(nx)]
-        i = 0
-        while i < nx:
-            if open_[i]:
-                i += 1
-                continue
-            k = i
-            while k < nx and not open_[k]:
-                k += 1
-            runs.append((i * pitch - thick / 2, k * pitch + thick / 2, z - thick / 2, z + thick / 2))
-            i = k
-    for i in range(nx + 1):  # hedges along z
-        x = i * pitch
-        open_ = [0 < i < nx and not east[i - 1, j] for j in range(nz)]
-        j = 0
-        while j < nz:
-            if open_[j]:
-                j += 1
-                continue
-            k = j
-            while k < nz and not open_[k]:
-                k += 1
-            runs.append((x - thick / 2, x + thick / 2, j * pitch - thick / 2, k * pitch + thick / 2))
-            j = k
-    for run in runs:
-        _hedge(s, *run, height)
-    mx, mz = (ci + 1) * pitch, (cj + 1) * pitch
-    s.box(mx - 0.6, mx + 0.6, 0.0, 0.8, mz - 0.6, mz + 0.6)  # the plinth
-    _trunk(s, np.array([mx, mz]), 0.3, 0.8, 2.6)  # the statue, too narrow to stand on
-    for k in range(2):  # benches on the lawn, clear of the way in
-        x = float(rng.uniform(2.0, size_x - 4.0))
-        if abs(x + 1.0 - (door + 0.5) * pitch) > 4.0:
-            s.box(x, x + 2.0, 0.0, 0.45, -8.0 + 4.0 * k, -7.5 + 4.0 * k)
+    for k, c in enumerate(centres):  # the chambers over the tubes' ends
+        angle = np.arctan2(gj - c[1] - 0.5, gi - c[0] - 0.5)
+        r = np.hypot((gi - c[0] - 0.5) / radii[k, 0], (gj - c[1] - 0.5) / radii[k, 1])
+        inside = r < 1.0 + 0.15 * np.sin(3 * angle + wobble[k, 0]) + 0.1 * np.sin(5 * angle + wobble[k, 1])
+        floor[inside] = heights[k]
+        for _ in range(int(rng.integers(2, 5))):  # boulders, clear of the chamber's middle
+            p = (c + 0.5 + radii[k] * 0.6 * np.array([math.cos(a := float(rng.uniform(0, 2 * math.pi))), math.sin(a)])) * 2.0
+            s.rock(rng, p, 0.5, heights[k] + uneven[c[0], c[1]], heights[k] + float(rng.uniform(0.8, 2.0)))
+    floor = np.round((floor + uneven) / 0.05) * 0.05  # whole 5 cm steps, so runs of one height merge into boxes
+    _tiles(s, floor, 2.0, float(np.nanmax(floor)) + 6.0)
     return s.mesh()
 
 
@@ -473,7 +447,7 @@ def dune_sea(seed: int) -> trimesh.Trimesh:
 
 
 KINDS: dict[str, Callable[[int], trimesh.Trimesh]] = {
-    "hedge_maze": hedge_maze, "cubicle_farm": cubicle_farm, "football_terrace": football_terrace,
+    "lava_tubes": lava_tubes, "cubicle_farm": cubicle_farm, "football_terrace": football_terrace,
     "hypostyle_hall": hypostyle_hall, "opera_house": opera_house, "dune_sea": dune_sea,
 }
 """Kind name -> generator (seed -> Y-up mesh in metres) of the twenty-ninth round."""
