@@ -1359,3 +1359,66 @@ def test_the_data_halls_cold_aisles_hold_floor_between_the_rack_rows(round_28):
     floor (0.6 m up) of both halls."""
     label, nav = areas(round_28["data_hall"](0), DROPS)
     assert label.max() == 0 and nav.areas[nav.centres[:, 1] > 0.7].sum() > 2000.0
+
+
+@pytest.fixture(scope="module")
+def round_29() -> dict[str, Callable[..., trimesh.Trimesh]]:
+    """``benchmarks/level_kinds29.py``'s KINDS (the twenty-ninth round): each call builds its level anew."""
+    return benchmark("level_kinds29").KINDS
+
+
+def test_the_lava_tubes_chambers_at_several_heights_are_one_area(round_29):
+    """Chambers joined by tubes whose floors climb at most 0.2 m a 2 m tile: one area, its floor spanning over 5 m of
+    height (the chambers at several heights all reached up and down the tubes)."""
+    label, nav = areas(round_29["lava_tubes"](0), DROPS)
+    assert label.max() == 0 and np.ptp(nav.centres[:, 1]) > 5.0
+
+
+def test_the_cubicle_farms_cubicles_open_onto_the_aisles(round_29):
+    """Cubicles behind partitions 1.5 m high, each entered through an opening 1.6-2.0 m wide: one area (a cubicle whose
+    opening closed for the agent would be an area apart), over 1,800 m² on the floor and none on a desk or partition."""
+    label, nav = areas(round_29["cubicle_farm"](0), DROPS)
+    assert label.max() == 0 and nav.areas.sum() > 1800.0 and nav.centres[:, 1].max() < 0.5
+
+
+def test_the_football_terraces_risers_under_the_climb_are_walked_on_all_four_stands(round_29):
+    """Terraces whose risers are 0.30-0.38 m (under the 0.4 m climb): one area, and over 150 m² of floor between 1 and 4
+    m up on each of the four stands (a stand whose risers the agent could not climb would hold none: its treads are
+    under the agent's width)."""
+    label, nav = areas(round_29["football_terrace"](0), DROPS)
+    assert label.max() == 0
+    x, y, z = nav.centres.T
+    raised = (y > 1.0) & (y < 4.0)
+    x0, x1, z0, z1 = x[raised].min(), x[raised].max(), z[raised].min(), z[raised].max()
+    along_x, along_z = (x > x0 + 20.0) & (x < x1 - 20.0), (z > z0 + 20.0) & (z < z1 - 20.0)
+    for side in (along_x & (z < z0 + 12.0), along_x & (z > z1 - 12.0), along_z & (x < x0 + 12.0),
+                 along_z & (x > x1 - 12.0)):
+        assert nav.areas[raised & side].sum() > 150.0
+
+
+def test_the_hypostyle_halls_floor_runs_between_its_columns(round_29):
+    """A hall of a dense grid of columns (gaps 1.2-2.4 m): one area, and floor among the columns on both sides of the
+    processional way, over 300 m² a side (the way's 6 m left out)."""
+    label, nav = areas(round_29["hypostyle_hall"](0), DROPS)
+    assert label.max() == 0
+    hall = (nav.centres[:, 2] > 1.0) & (nav.centres[:, 1] < 0.5)
+    mid = np.median(nav.centres[hall & (nav.centres[:, 2] < 20.0), 0])
+    assert nav.areas[hall & (nav.centres[:, 0] < mid - 6.0)].sum() > 300.0
+    assert nav.areas[hall & (nav.centres[:, 0] > mid + 6.0)].sum() > 300.0
+
+
+def test_the_opera_houses_boxes_on_every_tier_are_reached(round_29):
+    """Tiers of boxes 3.5 m apart round the void, each off its tier's corridor, joined by two stair towers: one area,
+    and over 120 m² of floor on each tier (seed 0: three tiers and the gallery over them, 3.5-14 m)."""
+    label, nav = areas(round_29["opera_house"](0), DROPS)
+    assert label.max() == 0
+    y = nav.centres[:, 1] - 0.2
+    for tier in range(1, 4):
+        assert nav.areas[np.abs(y - 3.5 * tier) < 0.15].sum() > 120.0, tier
+
+
+def test_the_dune_seas_backs_and_crests_are_walked(round_29):
+    """Crescent dunes whose backs rise at 10-16 degrees to crests 3-9 m up: one area (each dune walked round its horns
+    and over its back), with over 1,000 m² of floor over 3 m up."""
+    label, nav = areas(round_29["dune_sea"](0), DROPS)
+    assert label.max() == 0 and nav.areas[nav.centres[:, 1] > 3.0].sum() > 1000.0
