@@ -165,7 +165,7 @@ __all__ = [
     "Scaling", "SurfaceArrays", "Ties", "arrays_walking_flow", "distance_to", "flow_error_bound", "gather", "is_exact",
     "linear_through", "od_flow", "origin_weight", "percentile", "plan_order", "represented_area", "sampling_order",
     "shortest_path_flow", "source_blocks", "split_path_flow", "start_walking_flow", "surface_arrays", "tie_tolerance",
-    "tree_threads", "walking_flow", "walking_sources",
+    "tree_threads", "waiting_flag", "walking_flow", "walking_sources",
 ]
 
 Ties = Literal["first", "split"]
@@ -406,7 +406,7 @@ def shortest_path_flow(adjacency: sp.csr_array, sources: np.ndarray, values: np.
     """
     return _trees.shortest_path_flow(
         *extension_csr(adjacency), np.asarray(sources, dtype=np.int32), np.ascontiguousarray(values, dtype=np.float64),
-        tree_threads(),
+        tree_threads(), waiting_flag(),
     )
 
 
@@ -437,7 +437,7 @@ def split_path_flow(adjacency: sp.csr_array, sources: np.ndarray, values: np.nda
     """
     return _trees.split_path_flow(
         *extension_csr(adjacency), np.asarray(sources, dtype=np.int32), np.ascontiguousarray(values, dtype=np.float64),
-        TIE_TOLERANCE, tree_threads(),
+        TIE_TOLERANCE, tree_threads(), waiting_flag(),
     )
 
 
@@ -741,7 +741,7 @@ def linear_through(adjacency: sp.csr_array, sources: np.ndarray, values: np.ndar
         adjacency = sp.csr_array((np.maximum(adjacency.data, MIN_LENGTH), adjacency.indices, adjacency.indptr), adjacency.shape)
     return _trees.linear_path_flow(
         *extension_csr(adjacency), np.asarray(sources, dtype=np.int32), np.ascontiguousarray(values, dtype=np.float64),
-        ties, TIE_TOLERANCE, tree_threads(),
+        ties, TIE_TOLERANCE, tree_threads(), waiting_flag(),
     )
 
 
@@ -788,8 +788,8 @@ def arrays_walking_flow(
     key, compute = _walking_flow_work(arrays, max_sources, seed, exact_up_to, ties, scaling, order)
     if key not in arrays.derived:
         begun = arrays.begun.pop(key, None)
-        if begun is not None:  # its next trees on THREADS threads: this thread now waits for them
-            begun.taken.set()
+        if begun is not None:  # its trees on THREADS threads from its next source on: this thread now waits for them
+            begun.take()
         arrays.derived[key] = begun.result() if begun is not None else compute()
     return arrays.derived[key]
 
@@ -806,8 +806,8 @@ def start_walking_flow(
     Why: the flow's trees run on both cores (:func:`shortest_path_flow`, the GIL released), and the Python a stage
     runs before it needs the flow keeps one core busy and the other idle; begun ahead, the trees take that idle
     core. They take that core alone (one thread, :func:`tree_threads`) until a caller waits for the flow, then both
-    again from its next block of sources on: two tree threads beside the caller's Python would share two cores
-    three ways and slow that Python, the run's longest chain, by up to a third. A flow begun and never taken (a heat guarantee none of whose rounds meets its target, a run stopped by an
+    again from its next source on (:func:`waiting_flag`): two tree threads beside the caller's Python would share
+    two cores three ways and slow that Python, the run's longest chain, by up to a third. A flow begun and never taken (a heat guarantee none of whose rounds meets its target, a run stopped by an
     error or Ctrl-C) runs to its end all the same, sharing the cores with whatever the process does next (up to one
     flow's time: about 3 s of CPU at 100k polygons). The thread is not a daemon: the interpreter waits for it before
     it exits, as it would have waited for the flow in the caller's thread; a daemon thread still in the extension
@@ -831,11 +831,19 @@ def start_walking_flow(
 
 class BegunFlow(Future):
     """A walking flow being computed on a thread of its own (:func:`start_walking_flow`); ``taken`` is set once a
-    caller waits for it (:func:`arrays_walking_flow`)."""
+    caller waits for it (:meth:`take`), and ``waiting`` with it: the extension's copy of that event, which its call
+    under way reads between sources without the GIL."""
 
     def __init__(self) -> None:
         super().__init__()
         self.taken = threading.Event()
+        self.waiting = _trees.Waiting()
+
+    def take(self) -> None:
+        """Mark the flow as waited for (:func:`arrays_walking_flow`): its trees on :data:`THREADS` threads from its
+        next source on, in the extension's call under way too (:func:`waiting_flag`)."""
+        self.waiting.set()
+        self.taken.set()
 
 
 _AHEAD = threading.local()
@@ -848,6 +856,17 @@ def tree_threads() -> int:
     do not depend on it."""
     begun = getattr(_AHEAD, "flow", None)
     return 1 if begun is not None and not begun.taken.is_set() else THREADS
+
+
+def waiting_flag() -> _trees.Waiting | None:
+    """What the extension's next call of trees takes as ``waiting``: on the thread of a flow begun ahead, its
+    :class:`BegunFlow`'s ``waiting``, so that a call on one thread (:func:`tree_threads`) takes a second from its
+    next source on once a caller waits for the flow, instead of finishing its block of sources (39 at 100k polygons,
+    about 0.4 s of CPU) on one core while the other idles; else (or on a one-core machine) ``None``. Given whether or
+    not the flow is taken yet (a call on two threads ignores it), so that a caller that comes between the two
+    look-ups still gets both threads. The values do not depend on it."""
+    begun = getattr(_AHEAD, "flow", None)
+    return begun.waiting if begun is not None and THREADS > 1 else None
 
 
 def _walking_flow_work(

@@ -488,20 +488,39 @@ class SplitSweep {
     std::vector<size_t> first_head_;
 };
 
+// Set by the Python thread that starts to wait for a flow computed on one worker (g2s_plugins.traffic's flow begun
+// ahead): the call under way reads it between sources, without the GIL, and takes a second worker from its next
+// source on, so that the rest of its block does not run on one core while the other idles (up to a block of 39
+// sources, about 0.4 s of CPU, at 100k polygons: docs/performance.md).
+struct Waiting {
+    std::atomic<bool> set{false};
+};
+
 // Runs work(worker, row) for rows 0 .. b-1 on `threads` threads (1 or 2), each worker taking whole rows in
-// turn; `make` builds each thread's worker (its buffers). Which thread takes a row changes no value.
+// turn; `make` builds each thread's worker (its buffers). With one thread and a `waiting` flag, a second worker
+// starts once the flag is set, before the first takes its next row. Which thread takes a row changes no value.
 template <typename Make, typename Work>
-void for_each_source(size_t b, int threads, Make make, Work work) {
+void for_each_source(size_t b, int threads, const Waiting* waiting, Make make, Work work) {
     nb::gil_scoped_release release;
     std::atomic<size_t> next{0};
+    std::vector<std::thread> pool;
     auto run = [&] {
         auto worker = make();
         for (size_t row = next++; row < b; row = next++) work(worker, row);
     };
+    auto run_until_waited_for = [&] {
+        auto worker = make();
+        for (size_t row = next++; row < b; row = next++) {
+            if (pool.empty() && row + 1 < b && waiting->set.load(std::memory_order_acquire)) pool.emplace_back(run);
+            work(worker, row);
+        }
+    };
     const size_t helpers = std::min<size_t>(static_cast<size_t>(threads), std::max<size_t>(b, 1)) - 1;
-    std::vector<std::thread> pool;
     for (size_t t = 0; t < helpers; ++t) pool.emplace_back(run);
-    run();
+    if (waiting != nullptr && helpers == 0)
+        run_until_waited_for();
+    else
+        run();
     for (std::thread& t : pool) t.join();
 }
 
@@ -547,7 +566,7 @@ int64_t checked_flow(const char* what, const Int32Array& indptr, const Int32Arra
 }
 
 nb::tuple shortest_path_flow(Int32Array indptr, Int32Array indices, DoubleArray weights, Int32Array sources,
-                             DoubleArray values, int threads) {
+                             DoubleArray values, int threads, const Waiting* waiting) {
     const int64_t n = checked_flow("shortest_path_flow", indptr, indices, weights, sources, values, threads);
     const int32_t* ptr = indptr.data();
     const size_t b = sources.shape(0);
@@ -560,7 +579,7 @@ nb::tuple shortest_path_flow(Int32Array indptr, Int32Array indices, DoubleArray 
     const std::vector<uint8_t> passage = passages(ptr, indices.data(), weights.data(), static_cast<int32_t>(n));
     const bool corridors = std::find(passage.begin(), passage.end(), 1) != passage.end();
     const Graph g{ptr, indices.data(), weights.data(), passage.data(), corridors, static_cast<int32_t>(n)};
-    for_each_source(b, threads, [&] { return TreeSweep(g.n); }, [&](TreeSweep& sweep, size_t row) {
+    for_each_source(b, threads, waiting, [&] { return TreeSweep(g.n); }, [&](TreeSweep& sweep, size_t row) {
         sweep.run(g, sources.data()[row], values.data(), predecessors + row * n, through + row * n);
     });
     return nb::make_tuple(pred_out, through_out);
@@ -568,14 +587,14 @@ nb::tuple shortest_path_flow(Int32Array indptr, Int32Array indices, DoubleArray 
 
 nb::ndarray<nb::numpy, double, nb::ndim<2>> split_path_flow(Int32Array indptr, Int32Array indices, DoubleArray weights,
                                                             Int32Array sources, DoubleArray values, double tolerance,
-                                                            int threads) {
+                                                            int threads, const Waiting* waiting) {
     const int64_t n = checked_flow("split_path_flow", indptr, indices, weights, sources, values, threads);
     const size_t b = sources.shape(0);
     if (!(tolerance >= 0.0 && tolerance < 1.0)) throw nb::value_error("split_path_flow: tolerance must be in [0, 1)");
     auto* through = new double[std::max<size_t>(b * static_cast<size_t>(n), 1)];
     auto through_out = owned(through, b, static_cast<size_t>(n));
     const Graph g{indptr.data(), indices.data(), weights.data(), nullptr, false, static_cast<int32_t>(n)};
-    for_each_source(b, threads, [&] { return SplitSweep(g.n); }, [&](SplitSweep& sweep, size_t row) {
+    for_each_source(b, threads, waiting, [&] { return SplitSweep(g.n); }, [&](SplitSweep& sweep, size_t row) {
         sweep.run(g, sources.data()[row], values.data(), tolerance, through + row * n);
     });
     return through_out;
@@ -604,7 +623,7 @@ void weigh_by_distance(const std::vector<double>& distance, double* through, int
 
 nb::ndarray<nb::numpy, double, nb::ndim<2>> linear_path_flow(Int32Array indptr, Int32Array indices, DoubleArray weights,
                                                              Int32Array sources, DoubleArray values, const std::string& ties,
-                                                             double tolerance, int threads) {
+                                                             double tolerance, int threads, const Waiting* waiting) {
     const int64_t n = checked_flow("linear_path_flow", indptr, indices, weights, sources, values, threads);
     if (ties != "first" && ties != "split") throw nb::value_error("linear_path_flow: ties must be 'first' or 'split'");
     if (!(tolerance >= 0.0 && tolerance < 1.0)) throw nb::value_error("linear_path_flow: tolerance must be in [0, 1)");
@@ -614,7 +633,7 @@ nb::ndarray<nb::numpy, double, nb::ndim<2>> linear_path_flow(Int32Array indptr, 
     const size_t nodes = static_cast<size_t>(n);
     if (ties == "split") {
         const Graph g{indptr.data(), indices.data(), weights.data(), nullptr, false, static_cast<int32_t>(n)};
-        for_each_source(b, threads, [&] { return std::make_pair(SplitSweep(g.n), std::vector<double>(nodes)); },
+        for_each_source(b, threads, waiting, [&] { return std::make_pair(SplitSweep(g.n), std::vector<double>(nodes)); },
                         [&](std::pair<SplitSweep, std::vector<double>>& worker, size_t row) {
             auto& [sweep, scaled] = worker;
             const int32_t source = sources.data()[row];
@@ -634,7 +653,7 @@ nb::ndarray<nb::numpy, double, nb::ndim<2>> linear_path_flow(Int32Array indptr, 
         std::vector<double> scaled;
         std::vector<int32_t> predecessor;
     };
-    for_each_source(b, threads, [&] { return TreeWorker{TreeSweep(g.n), std::vector<double>(nodes), std::vector<int32_t>(nodes)}; },
+    for_each_source(b, threads, waiting, [&] { return TreeWorker{TreeSweep(g.n), std::vector<double>(nodes), std::vector<int32_t>(nodes)}; },
                     [&](TreeWorker& worker, size_t row) {
         const int32_t source = sources.data()[row];
         double* out = through + row * nodes;
@@ -896,29 +915,38 @@ nb::ndarray<nb::numpy, int64_t, nb::ndim<1>> spanning_forest(int64_t size, Int64
 NB_MODULE(_trees, m) {
     m.doc() = "Shortest-path trees from many sources and the weight passing through each node, the coverage cover, the loop "
               "adder's greedy loop and Kruskal's spanning forest (see src/trees_module.cpp).";
+    nb::class_<Waiting>(m, "Waiting",
+                        "Waiting(): a flag the flows below read between sources; set() once a caller waits for a call\n"
+                        "running on one thread, which then takes a second worker from its next source on.")
+        .def(nb::init<>())
+        .def("set", [](Waiting& w) { w.set.store(true, std::memory_order_release); })
+        .def("is_set", [](const Waiting& w) { return w.set.load(std::memory_order_acquire); });
     m.def("shortest_path_flow", &shortest_path_flow, nb::arg("indptr"), nb::arg("indices"), nb::arg("weights"),
-          nb::arg("sources"), nb::arg("values"), nb::arg("threads"),
-          "shortest_path_flow(indptr, indices, weights, sources, values, threads) -> (predecessors, through).\n\n"
+          nb::arg("sources"), nb::arg("values"), nb::arg("threads"), nb::arg("waiting").none() = nb::none(),
+          "shortest_path_flow(indptr, indices, weights, sources, values, threads, waiting=None) -> (predecessors, through).\n\n"
           "For a graph in CSR form (int32 indptr (n + 1,), int32 indices and float64 weights (m,); edge i -> j)\n"
           "and b source nodes: predecessors (b, n) int32, scipy.sparse.csgraph.dijkstra's (directed=True)\n"
           "exactly, -9999 for the source and unreached nodes; through (b, n) float64, the values summed over\n"
           "each node's subtree of that source's tree minus the node's own value (0 for the source).\n"
-          "threads: 1 or 2 worker threads, each running whole sources (the result does not depend on it).");
+          "threads: 1 or 2 worker threads, each running whole sources (the result does not depend on it); waiting:\n"
+          "None or a Waiting flag, with which one thread becomes two from the next source on once it is set.");
     m.def("split_path_flow", &split_path_flow, nb::arg("indptr"), nb::arg("indices"), nb::arg("weights"),
           nb::arg("sources"), nb::arg("values"), nb::arg("tolerance"), nb::arg("threads"),
-          "split_path_flow(indptr, indices, weights, sources, values, tolerance, threads) -> through.\n\n"
+          nb::arg("waiting").none() = nb::none(),
+          "split_path_flow(indptr, indices, weights, sources, values, tolerance, threads, waiting=None) -> through.\n\n"
           "For a graph in CSR form (as shortest_path_flow) and b source nodes: through (b, n) float64, per source\n"
           "and node v, the sum over targets t != v of values[t] times the share of the source's shortest paths to\n"
           "t that pass through v (Brandes's dependency; path lengths within the relative tolerance tie); 0 for the\n"
-          "source and unreached nodes. threads: 1 or 2 (the result does not depend on it).");
+          "source and unreached nodes. threads and waiting: as shortest_path_flow's.");
     m.def("linear_path_flow", &linear_path_flow, nb::arg("indptr"), nb::arg("indices"), nb::arg("weights"),
           nb::arg("sources"), nb::arg("values"), nb::arg("ties"), nb::arg("tolerance"), nb::arg("threads"),
-          "linear_path_flow(indptr, indices, weights, sources, values, ties, tolerance, threads) -> through.\n\n"
+          nb::arg("waiting").none() = nb::none(),
+          "linear_path_flow(indptr, indices, weights, sources, values, ties, tolerance, threads, waiting=None) -> through.\n\n"
           "For a graph in CSR form (as shortest_path_flow) and b source nodes: through (b, n) float64, per source s\n"
           "and node v, 2 d(s, v) times the flow through v of shortest_path_flow (ties 'first') or split_path_flow\n"
           "('split', with the relative tolerance) of the values each divided by its distance d(s, t) (0 where t is\n"
-          "the source, at distance 0 or unreached); 0 for the source and unreached nodes. threads: 1 or 2 (the\n"
-          "result does not depend on it).");
+          "the source, at distance 0 or unreached); 0 for the source and unreached nodes. threads and waiting: as\n"
+          "shortest_path_flow's.");
     m.def("cover_paths", &cover_paths, nb::arg("indptr"), nb::arg("indices"), nb::arg("lengths"), nb::arg("start"),
           nb::arg("predecessor"), nb::arg("far"), nb::arg("radius"),
           "cover_paths(indptr, indices, lengths, start, predecessor, far, radius) -> added.\n\n"

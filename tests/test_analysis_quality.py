@@ -6,6 +6,7 @@ import hashlib
 import heapq
 import json
 import math
+import os
 import threading
 from types import SimpleNamespace
 
@@ -25,7 +26,7 @@ from g2s_core.model import RunContext
 from g2s_core.registry import Registry
 from g2s_core.rooted import root_forest
 from g2s_core.simplify import simplify_forest
-from g2s_plugins import centrality, evaluation, traffic
+from g2s_plugins import _trees, centrality, evaluation, traffic
 from g2s_plugins.analyzers import betweenness as betweenness_analyzer
 from g2s_plugins.analyzers import flow as flow_analyzer
 from g2s_plugins.outputs import gltf, heatmap, html_report
@@ -408,9 +409,49 @@ def test_a_flow_begun_ahead_walks_on_one_thread_until_a_caller_waits_for_it(monk
     assert traffic.tree_threads() == 2  # the caller's own thread
     assert second.wait(30)
     flow = traffic.arrays_walking_flow(arrays)
-    assert threads == [1, 1, 2, 2, 2, 2, 2]  # the block under way when the caller came finishes on its one thread
+    # the block under way when the caller came was begun on one thread (the extension's call then takes a second
+    # from its next source on: the test below); the next blocks begin on two
+    assert threads == [1, 1, 2, 2, 2, 2, 2]
     arrays = traffic.surface_arrays(spine_and_side_room())
     assert flow.tobytes() == traffic.arrays_walking_flow(arrays).tobytes() and threads[7:] == [2] * 7
+
+
+def _threads_of_a_call(call) -> int:
+    """The most threads of this process seen at once while ``call`` runs on a thread of its own (Linux's
+    /proc/self/task, polled while the call has let go of the GIL), less the threads there were before it."""
+    before = len(os.listdir("/proc/self/task"))
+    thread = threading.Thread(target=call)
+    thread.start()
+    most = 0
+    while thread.is_alive():
+        most = max(most, len(os.listdir("/proc/self/task")))
+    thread.join()
+    return most - before
+
+
+@pytest.mark.skipif(not os.path.isdir("/proc/self/task"), reason="counts threads in /proc/self/task")
+def test_a_flow_call_on_one_thread_takes_a_second_once_its_waiting_flag_is_set():
+    # a flow begun ahead runs on one thread; once a caller waits for it, the extension's call under way takes a
+    # second thread from its next source on (traffic.waiting_flag), the same bits as on one or two threads
+    graph = grid_lengths(40, 40, np.random.default_rng(3))
+    sources, values = np.arange(0, 1600, 2), np.random.default_rng(4).uniform(0.0, 1.0, 1600)
+    one = traffic.shortest_path_flow(graph, sources, values)
+    out = {}
+    waiting = _trees.Waiting()
+    csr = traffic.extension_csr(graph)
+    sources32 = sources.astype(np.int32)
+
+    def flow(name, threads, flag):
+        return lambda: out.setdefault(name, _trees.shortest_path_flow(*csr, sources32, values, threads, flag))
+
+    assert _threads_of_a_call(flow("unset", 1, waiting)) == 1  # the caller's thread alone: nobody waits
+    assert not waiting.is_set()
+    waiting.set()
+    # set before the call: the second thread starts at its first source; the call lasts long enough to be seen
+    # (800 searches), else the poll is tried again
+    assert any(_threads_of_a_call(flow(f"set {attempt}", 1, waiting)) == 2 for attempt in range(5))
+    for name, (predecessors, through) in out.items():
+        assert predecessors.tobytes() == one[0].tobytes() and through.tobytes() == one[1].tobytes(), name
 
 
 def test_the_coverage_selector_begins_its_walking_flow_before_its_leaves(monkeypatch):
