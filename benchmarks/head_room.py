@@ -3,9 +3,11 @@ edge").
 
 Four generated cases join two open pads 5 x 5 m by a way 2.4 m wide under a ceiling ``head`` metres over its floor
 (measured vertically): ``corridor`` (8 m long, flat), ``doorway`` (a wall 0.3 m thick across one floor, a doorway
-1.6 m wide under a lintel at ``head``), ``ramp`` (a corridor rising 1.5 m over 8 m, 10.6 degrees, its ceiling
-parallel) and ``stair`` (a flight of 9 risers of 0.16 m and treads of 0.3 m, 28.1 degrees, its ceiling parallel to the
-line through the nosings). Each is turned by ``yaw`` about the vertical and raised by ``lift`` over the slabs' common
+2 m wide under a lintel at ``head``), ``ramp`` (a corridor rising 1.5 m over 8 m, 10.6 degrees, its ceiling
+parallel) and ``stair`` (a flight of 8 steps, risers 0.16 m and treads 0.3 m, 28.1 degrees, its ceiling parallel to
+the line through the nosings, ``head`` over it). A fifth, ``deck_edge``, is a car park's ramp passing under the edge
+of the deck above: a ramp 3 m wide rising 3 m over 9 m (18.4 degrees) from a ground floor to an upper deck, open at
+its sides, and over its first 3 m a deck whose edge stands ``head`` over the ramp. Each is turned by ``yaw`` about the vertical and raised by ``lift`` over the slabs' common
 underside, so that its floor lies on or off a multiple of the cell height over the level's lowest point (Recast's
 grid starts there). A way is walked by the navmesh when a Detour ray from one pad's middle reaches the other's; by the
 sampling route when its graph joins the samples nearest the two pads' middles. Built from ``benchmarks/piece_parts.py``'s
@@ -31,7 +33,7 @@ from g2s_plugins._raycasting import AgentShape
 from g2s_plugins.graph_builders import sampling
 from g2s_plugins.recast import RecastParams, build_navmesh
 
-KINDS = ("corridor", "doorway", "ramp", "stair")
+KINDS = ("corridor", "doorway", "ramp", "stair", "deck_edge")
 HEADS = (1.95, 2.0, 2.05, 2.1, 2.15, 2.2, 2.3)
 YAWS = (0.0, 22.0, 45.0)
 LIFTS = (0.0, 0.02, 0.0625, 0.1)
@@ -61,6 +63,7 @@ def _sloped_ceiling(length: float, at: Callable[[float], float]) -> trimesh.Trim
 def case_mesh(kind: str, head: float, yaw_deg: float = 0.0, lift: float = 0.0) -> tuple[trimesh.Trimesh, np.ndarray]:
     """The case ``kind`` with head room ``head`` (m), turned by ``yaw_deg`` and its floors raised by ``lift`` (m) over
     the slabs' underside (kept at :data:`BASE`). Returns the mesh and the two pads' middles ((2, 3), metres)."""
+    wide = WIDTH
     if kind == "corridor":
         length, rise = 8.0, 0.0
         parts = [box(0.0, length, BASE, 0.0, 0.0, WIDTH), _sloped_ceiling(length, lambda x: head)]
@@ -88,11 +91,16 @@ def case_mesh(kind: str, head: float, yaw_deg: float = 0.0, lift: float = 0.0) -
             parts.append(hull([[x, nosing(x) + head + dy, z] for x in (a, b) for dy in (0.0, 0.2)
                                for z in (-WALL, WIDTH + WALL)]))
         parts += _pads_and_walls(length, rise + head + 0.2, rise)
+    elif kind == "deck_edge":  # no walls: the ramp's sides and the decks' rims are open
+        length, rise, wide = 9.0, 3.0, 3.0
+        parts = [hull([[x, y, z] for x in (0.0, length) for y in (BASE, rise * x / length) for z in (0.0, wide)]),
+                 box(-PAD, 0.0, BASE, 0.0, 0.0, wide), box(length, length + PAD, BASE, rise, 0.0, wide),
+                 box(-PAD, 3.0, 1.0 + head, 1.2 + head, 0.0, wide)]
     else:
         raise ValueError(f"unknown kind {kind!r}; expected one of {KINDS}")
     mesh = trimesh.util.concatenate(parts)
     mesh.merge_vertices()
-    mids = np.array([[-PAD / 2, 0.0, WIDTH / 2], [length + PAD / 2, rise, WIDTH / 2]])
+    mids = np.array([[-PAD / 2, 0.0, wide / 2], [length + PAD / 2, rise, wide / 2]])
     lifted = mesh.vertices.copy()
     lifted[:, 1] = np.where(lifted[:, 1] > BASE + 1e-9, lifted[:, 1] + lift, lifted[:, 1])
     mids[:, 1] += lift
