@@ -948,7 +948,13 @@ void build_tile(const Input& in, const int* tris, int ntris, const rcConfig& c, 
     if (s.filter_low_hanging_obstacles) rcFilterLowHangingWalkableObstacles(&ctx, c.walkableClimb, *solid);
     if (s.ledge_filter == LedgeFilter::recast) rcFilterLedgeSpans(&ctx, c.walkableHeight, c.walkableClimb, *solid);
     if (s.ledge_filter == LedgeFilter::drops) drop_ledge_spans(c.walkableHeight, c.walkableClimb, *solid);
-    if (s.filter_low_height_spans) rcFilterWalkableLowHeightSpans(&ctx, c.walkableHeight, *solid);
+    // Recast documents walkableHeight as the least head room an agent stands under, and rcBuildCompactHeightfield
+    // links two spans whose shared gap is at least that, but rcFilterWalkableLowHeightSpans (RecastFilter.cpp, 1.5.1)
+    // drops a span whose gap is at most walkableHeight cells: one cell more than the agent's height was needed, on
+    // top of the rounding (a floor's top rounded up, a flat one by a whole cell, a ceiling's underside down). Passed
+    // one cell less, it keeps gaps of walkableHeight cells: a ceiling less than the agent's height over a flat floor
+    // still never holds floor, and one cell height over it always does (docs/navmesh.md, "Head room under an edge").
+    if (s.filter_low_height_spans) rcFilterWalkableLowHeightSpans(&ctx, c.walkableHeight - 1, *solid);
 
     // 3. Compact heightfield, erosion by the agent radius.
     std::unique_ptr<rcCompactHeightfield, CompactDel> chf(rcAllocCompactHeightfield());

@@ -112,7 +112,8 @@ class RecastParams(PluginParams):
         "closer than the agent's radius to a drop). docs/navmesh.md",
     )
     filter_low_height_spans: bool = Field(
-        True, description="Recast's rcFilterWalkableLowHeightSpans: drop spans with less head room than the agent"
+        True, description="Recast's rcFilterWalkableLowHeightSpans: drop spans with less head room than the agent, "
+        "in cells (called with one cell less than the agent's height: Recast's own needs a cell more; docs/navmesh.md)"
     )
     partition: Literal["auto", "watershed", "monotone", "layers"] = Field(
         "auto",
