@@ -74,7 +74,7 @@ from pydantic import Field
 from g2s_core.model import RunContext
 from g2s_core.plugin import hookimpl
 from g2s_core.simplify import ForestArrays
-from g2s_plugins._raycasting import GROUND_MARGIN, AgentShape, OpenFloors, RayCaster, walk_segments
+from g2s_plugins._raycasting import GROUND_MARGIN, AgentShape, OpenFloors, RayCaster, walks_in_batch
 from g2s_plugins._surface import CollapseParams, RuleArrays, collapse_rule
 from g2s_plugins.graph_builders.sampling import DISK_SHARE
 from g2s_plugins.heat_guarantee import begin_ahead, guaranteed
@@ -208,7 +208,7 @@ def mesh_los_predicate(
                           if (start, e) not in walked and e != end and not certain(start, e))
         if tested:
             starts, ends = zip(*tested)
-            ok, _ = walk_segments(caster, np.array(starts), np.array(ends), agent, probe_step, params.margin,
+            ok, _ = walks_in_batch(caster, np.array(starts), np.array(ends), agent, probe_step, params.margin,
                                   params.max_surface_gap, half_width, body=body)
             walked.update(zip(tested, ok.tolist()))
         for start, end in asked:
