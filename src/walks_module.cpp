@@ -30,6 +30,7 @@ using Rows3 = nb::ndarray<const double, nb::shape<-1, 3>, nb::c_contig, nb::devi
 using Faces = nb::ndarray<const int64_t, nb::ndim<1>, nb::c_contig, nb::device::cpu>;
 using Rows = nb::ndarray<const int64_t, nb::ndim<1>, nb::c_contig, nb::device::cpu>;
 using Values = nb::ndarray<const double, nb::ndim<1>, nb::c_contig, nb::device::cpu>;
+using Point = nb::ndarray<const double, nb::shape<3>, nb::c_contig, nb::device::cpu>;
 
 constexpr double INF = std::numeric_limits<double>::infinity();
 constexpr double DOWN[3] = {-0.0, -1.0, -0.0};  // -UP, as numpy negates it
@@ -77,7 +78,7 @@ struct Rays {
     }
     size_t size() const { return face.size(); }
 
-    nb::tuple local(std::optional<Rows3> shift) const {  // (origins shifted by -shift unless None, unit)
+    nb::tuple local(std::optional<Point> shift) const {  // (origins shifted by -shift unless None, unit)
         std::vector<double> shifted = origins;
         if (shift) {
             const double* o = shift->data();
@@ -211,7 +212,7 @@ class WalkBatch {
 
     // The walks' rays: (R, 3) origins in the frame shifted by `shift` (RayCaster.frame.to_local; None: not
     // shifted), (R, 3) unit directions
-    nb::tuple rays(std::optional<Rows3> shift) const { return rays_.local(shift); }
+    nb::tuple rays(std::optional<Point> shift) const { return rays_.local(shift); }
 
     // The intersector's faces (R,) of rays() -> rows of the rays grazing their triangle
     nb::ndarray<nb::numpy, int64_t> hit(Faces faces, Rows3 local, Rows3 normals, Rows3 plane_points, Rows3 centroids,
@@ -241,8 +242,8 @@ class WalkBatch {
 
     // ground_across_crack's rays for the probes `rows` still without ground and one side (3,): downward from each
     // lifted probe moved by +side, then by -side; (origins shifted as rays(), unit directions)
-    nb::tuple crack_rays(Rows rows, nb::ndarray<const double, nb::shape<3>, nb::c_contig, nb::device::cpu> side,
-                         std::optional<Rows3> shift) {
+    nb::tuple crack_rays(Rows rows, Point side,
+                         std::optional<Point> shift) {
         crack_ = Rays{};
         crack_rows_.clear();
         const double* offset = side.data();
