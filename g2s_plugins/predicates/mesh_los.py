@@ -44,7 +44,10 @@ of the tree); any other costs about 2 L / probe_step + 5 rays (L = |AC|),
 through Embree when available, and, where those pass, its share of one band
 test per batch (:func:`g2s_plugins._raycasting.bands_meet_walls`, which
 looks the band up in the steep triangles' grid, built once per mesh:
-docs/sampling.md, "Simplified edges as wide as the agent").
+docs/sampling.md, "Simplified edges as wide as the agent"). A batch is
+:func:`g2s_plugins._raycasting.walks_in_batch`: ``walk_segments``' answers bit
+for bit, its arithmetic in the C++ extension round the same ray casts (a
+batch of a few dozen walks cost numpy's per-call overhead, about 0.75 ms).
 Answers are cached per (A, C) pair for the predicate's life: the heat guarantee's rounds
 (:mod:`g2s_plugins.heat_guarantee`) ask the same predicate, so a later
 round casts rays only for walks no earlier round tested, and on the
