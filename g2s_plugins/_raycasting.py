@@ -36,7 +36,7 @@ import numpy as np
 import trimesh
 from trimesh import util
 
-from g2s_plugins import _slabs
+from g2s_plugins import _slabs, _walks
 from g2s_plugins.local_frame import LocalFrame
 
 UP = np.array([0.0, 1.0, 0.0])
@@ -122,6 +122,11 @@ class _Scene:
         # the frame's shift is monotonic, so the bounds' extreme in it is the extreme of the shifted corners
         return float((bounds[1] - bounds[0]).max()), float(np.abs(self.frame.to_local(bounds)).max())
 
+    @cached_property
+    def normal_y(self) -> np.ndarray:
+        """(m,) float64, contiguous: the normals' y, which :func:`walks_in_batch`'s extension reads per call."""
+        return np.ascontiguousarray(self.face_normals[:, 1])
+
     @classmethod
     def of_mesh(cls, mesh: trimesh.Trimesh) -> _Scene:
         """Built from ``mesh``: O(m log m) for the twin pairing; Embree's own build waits for the first ray."""
@@ -132,7 +137,7 @@ class _Scene:
         intersector, backend = _make_intersector(local)
         local_triangles = frame.to_local(triangles)
         return cls(
-            triangles, frame, intersector, backend, local_triangles[:, 0, :], local_triangles.mean(axis=1),
+            triangles, frame, intersector, backend, np.ascontiguousarray(local_triangles[:, 0, :]), local_triangles.mean(axis=1),
             np.asarray(mesh.face_normals, dtype=np.float64), _reversed_twins(triangles),
         )
 
@@ -251,14 +256,18 @@ class RayCaster:
         local = self.frame.to_local(origins)
         face, distance, grazing = self._cast(local, unit)
         if np.any(grazing):
-            aside = np.cross(unit[grazing], _SKEW)
-            aside /= np.linalg.norm(aside, axis=1, keepdims=True)
-            face_a, distance_a, _ = self._cast(local[grazing] + GRAZE_NUDGE * aside, unit[grazing])
-            face_b, distance_b, _ = self._cast(local[grazing] - GRAZE_NUDGE * aside, unit[grazing])
-            take_b = distance_b > distance_a
-            face[grazing] = np.where(take_b, face_b, face_a)
-            distance[grazing] = np.where(take_b, distance_b, distance_a)
+            face[grazing], distance[grazing] = self._cast_aside(local[grazing], unit[grazing])
         return Hits(face, distance, origins, unit)
+
+    def _cast_aside(self, local: np.ndarray, unit: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """(face, distance) of rays that grazed a triangle (``local`` (g, 3) origins in the local frame, ``unit``
+        (g, 3)), each cast again ``GRAZE_NUDGE`` to either side of it: the farther hit (:meth:`first_hits`)."""
+        aside = np.cross(unit, _SKEW)
+        aside /= np.linalg.norm(aside, axis=1, keepdims=True)
+        face_a, distance_a, _ = self._cast(local + GRAZE_NUDGE * aside, unit)
+        face_b, distance_b, _ = self._cast(local - GRAZE_NUDGE * aside, unit)
+        take_b = distance_b > distance_a
+        return np.where(take_b, face_b, face_a), np.where(take_b, distance_b, distance_a)
 
     def first_hits_of(self, batches: list[tuple[np.ndarray, np.ndarray]]) -> list[Hits]:
         """:meth:`first_hits` of several ``(origins, directions)`` batches, in that order.
@@ -1054,6 +1063,14 @@ class SteepFaces:
         cell = max(float(np.median(plan)) if len(plan) else 1.0, caster.scene.extent[0] / 4096.0, 1e-3)
         return cls(triangles, lo, hi, BoxGrid(lo, hi, cell))
 
+    @cached_property
+    def slab_grid(self) -> _slabs.WallGrid:
+        """The same triangles in the C++ extension's grid (:attr:`grid`'s origin and cell), for the body slab's
+        whole test in one call (:func:`walks_in_batch`); built on first use, O(E) for its E entries."""
+        return _slabs.WallGrid(np.ascontiguousarray(self.triangles, dtype=np.float64), np.ascontiguousarray(self.lo),
+                               np.ascontiguousarray(self.hi), np.ascontiguousarray(self.grid.origin, dtype=np.float64),
+                               float(self.grid.cell))
+
 
 def bands_meet_walls(caster: RayCaster, low: np.ndarray, along: np.ndarray, side: np.ndarray,
                      max_slope_deg: float, inset: float = GRAZE_NUDGE,
@@ -1225,3 +1242,66 @@ def walk_segments(
     rise = np.maximum.reduceat(np.concatenate([dy, [0.0]]), first)
     rise[~has_ground] = np.inf
     return ok, rise
+
+
+def walks_in_batch(
+    caster: RayCaster,
+    starts: np.ndarray,
+    ends: np.ndarray,
+    agent: AgentShape,
+    probe_step: float,
+    margin: float = GROUND_MARGIN,
+    max_gap: float | None = None,
+    half_width: float = 0.0,
+    body: bool = False,
+) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`walk_segments`' answers, bit for bit, with its arithmetic in the C++ extension
+    (``src/walks_module.cpp``): a few extension calls a batch round the same ray casts (one intersector call, the
+    rays grazing a triangle and the probes over a crack cast again as there) and the same band test, where
+    :func:`walk_segments` runs a few hundred numpy operations, each costing more per call than per walk on the
+    mesh_los predicate's batches of a few dozen walks. Arguments and answer as :func:`walk_segments`'; O(rays)."""
+    starts = np.ascontiguousarray(starts, dtype=np.float64).reshape(-1, 3)
+    ends = np.ascontiguousarray(ends, dtype=np.float64).reshape(-1, 3)
+    n = len(starts)
+    if n == 0:
+        return np.zeros(0, dtype=bool), np.zeros(0)
+    lift = 0.5 * agent.height
+    batch = _walks.WalkBatch(starts, ends, lift, probe_step, half_width)
+    shift = caster.frame.origin if caster.frame.shifted else None
+    _cast_batch(caster, *batch.rays(shift), batch.hit, batch.set_hits)
+    normal_y = caster.scene.normal_y
+    least_y = math.cos(math.radians(agent.max_slope_deg)) - 1e-9  # RayCaster.walkable_faces' bound
+    reach = lift + agent.max_climb + margin
+    missing = batch.ground(reach, normal_y, least_y)
+    # a probe over a crack stands on the ground one crack step to both sides of it (ground_across_crack's rule)
+    for side in crack_sides(agent):
+        if len(missing) == 0:
+            break
+        _cast_batch(caster, *batch.crack_rays(missing, side, shift), batch.crack_hit, batch.set_crack_hits)
+        missing = batch.crack_ground(reach, normal_y, least_y)
+    knee, head = agent.body
+    ok, rise, rows, low, along, side, heights = batch.verdict(
+        normal_y, least_y, agent.height, agent.max_climb, agent.tan_slope, HEIGHT_TOLERANCE, max_gap, knee, head, body)
+    if len(rows) and heights is not None:  # the body's slab: broad and narrow phase in one extension call
+        steep = caster.steep_faces(agent.max_slope_deg)
+        if len(steep.triangles):
+            ok[rows] = ~steep.slab_grid.meets(low, along, side, heights, GRAZE_NUDGE)
+    elif len(rows):
+        ok[rows] = ~bands_meet_walls(caster, low, along, side, agent.max_slope_deg)
+    return ok, rise
+
+
+def _cast_batch(caster: RayCaster, local: np.ndarray, unit: np.ndarray,
+                hit: Callable[..., np.ndarray], set_hits: Callable[..., None]) -> None:
+    """:meth:`RayCaster.first_hits` of rays a :class:`_walks.WalkBatch` made (``local`` (R, 3) origins in the
+    caster's frame, ``unit`` (R, 3)), their answers handed back to it: ``hit`` the intersector's faces, then
+    ``set_hits`` the grazing rays' cast aside."""
+    if len(local) == 0 or len(caster.mesh.faces) == 0:
+        return
+    scene = caster.scene
+    faces = caster._first_faces(local, unit).reshape(len(local))
+    caster.rays_cast += len(local)
+    grazing = hit(np.ascontiguousarray(faces, dtype=np.int64), local, scene.face_normals, scene.plane_points,
+                  scene.centroids, scene.twin)
+    if len(grazing):
+        set_hits(grazing, *caster._cast_aside(local[grazing], unit[grazing]))

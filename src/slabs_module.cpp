@@ -17,6 +17,8 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <unordered_map>
+#include <vector>
 
 namespace nb = nanobind;
 
@@ -109,6 +111,119 @@ nb::ndarray<nb::numpy, bool, nb::ndim<1>> slabs_meet_triangles(Corners triangles
     return nb::ndarray<nb::numpy, bool, nb::ndim<1>>(meets, {k}, owner);
 }
 
+// The steep triangles of a mesh binned in a 3-D grid of cubes (BoxGrid's origin and cell), for the whole of
+// bands_meet_walls with the body's slab in one call: each slab's box (its eight corners'), the triangles of the cells
+// it covers whose boxes overlap it (each pair once: in the cell that is, along each axis, the later of the two
+// boxes' first cells), and the exact test above on those. Two closed boxes that overlap share a cell (a cell's index
+// is the floor of a monotone function of the coordinate), so the pairs tested are exactly the overlapping ones, as
+// bands_meet_walls' BoxGrid.pairs and box filter give them, and a slab's answer (whether any pair meets) is the
+// same. Built in O(E) for the E (triangle, cell) entries; a call O(C + P) for the C cells the slabs cover and the P
+// (slab, triangle) entries sharing a cell.
+class WallGrid {
+  public:
+    WallGrid(Corners triangles, Rows3 lo, Rows3 hi, nb::ndarray<const double, nb::shape<3>, nb::c_contig, nb::device::cpu> origin,
+             double cell)
+        : cell_(cell) {
+        const size_t k = triangles.shape(0);
+        if (lo.shape(0) != k || hi.shape(0) != k) throw nb::value_error("WallGrid: triangles (k, 3, 3), lo and hi (k, 3)");
+        if (!(cell > 0.0)) throw nb::value_error("WallGrid: cell must be positive");
+        triangles_.assign(triangles.data(), triangles.data() + 9 * k);
+        lo_.assign(lo.data(), lo.data() + 3 * k);
+        hi_.assign(hi.data(), hi.data() + 3 * k);
+        for (int a = 0; a < 3; ++a) origin_[a] = origin.data()[a];
+        first_.resize(3 * k);
+        std::vector<int64_t> last(3 * k);
+        for (size_t w = 0; w < k; ++w)
+            for (int a = 0; a < 3; ++a) {
+                first_[3 * w + a] = index(lo_[3 * w + a], a);
+                last[3 * w + a] = index(hi_[3 * w + a], a);
+                shape_[a] = std::max(shape_[a], last[3 * w + a] + 1);
+            }
+        for (size_t w = 0; w < k; ++w)
+            for (int64_t x = first_[3 * w]; x <= last[3 * w]; ++x)
+                for (int64_t y = first_[3 * w + 1]; y <= last[3 * w + 1]; ++y)
+                    for (int64_t z = first_[3 * w + 2]; z <= last[3 * w + 2]; ++z)
+                        cells_[key(x, y, z)].push_back(static_cast<int64_t>(w));
+    }
+
+    // (n,) bool: a triangle passes through slab i (slabs_meet_triangles' slab: low (n, 3), along, side, heights
+    // (n, 2), shrunk by inset), as bands_meet_walls answers with heights
+    nb::ndarray<nb::numpy, bool, nb::ndim<1>> meets(Rows3 low, Rows3 along, Rows3 side, Rows2 heights, double inset) const {
+        const size_t n = low.shape(0);
+        if (along.shape(0) != n || side.shape(0) != n || heights.shape(0) != n)
+            throw nb::value_error("WallGrid.meets: low, along and side (n, 3), heights (n, 2)");
+        auto* meets = new bool[n > 0 ? n : 1];
+        nb::capsule owner(meets, [](void* p) noexcept { delete[] static_cast<bool*>(p); });
+        {
+            nb::gil_scoped_release release;
+            for (size_t i = 0; i < n; ++i)
+                meets[i] = slab_meets_any(low.data() + 3 * i, along.data() + 3 * i, side.data() + 3 * i,
+                                          heights.data() + 2 * i, inset);
+        }
+        return nb::ndarray<nb::numpy, bool, nb::ndim<1>>(meets, {n}, owner);
+    }
+
+  private:
+    int64_t index(double value, int axis) const {
+        return static_cast<int64_t>(std::floor((value - origin_[axis]) / cell_));
+    }
+    int64_t key(int64_t x, int64_t y, int64_t z) const { return (x * shape_[1] + y) * shape_[2] + z; }
+
+    bool slab_meets_any(const double* low, const double* along, const double* side, const double* heights,
+                        double inset) const {
+        if (triangles_.empty()) return false;
+        // the slab's corners as bands_meet_walls stacks them: low -/+ side, low + along +/- side, each at both heights
+        double box_lo[3], box_hi[3];
+        std::fill(box_lo, box_lo + 3, std::numeric_limits<double>::infinity());
+        std::fill(box_hi, box_hi + 3, -std::numeric_limits<double>::infinity());
+        for (int level = 0; level < 2; ++level) {
+            const double lifts[3] = {heights[level] * 0.0, heights[level] * 1.0, heights[level] * 0.0};
+            for (int corner = 0; corner < 4; ++corner)
+                for (int a = 0; a < 3; ++a) {
+                    const double base = corner < 2 ? low[a] : low[a] + along[a];
+                    const double plan = (corner == 0 || corner == 3) ? base - side[a] : base + side[a];
+                    const double value = plan + lifts[a];
+                    box_lo[a] = std::min(box_lo[a], value);
+                    box_hi[a] = std::max(box_hi[a], value);
+                }
+        }
+        int64_t first[3], last[3];
+        for (int a = 0; a < 3; ++a) {
+            first[a] = index(box_lo[a], a);
+            last[a] = index(box_hi[a], a);
+            if (last[a] < 0 || first[a] >= shape_[a]) return false;  // no triangle's box reaches it
+            first[a] = std::max<int64_t>(first[a], 0);
+            last[a] = std::min<int64_t>(last[a], shape_[a] - 1);
+        }
+        for (int64_t x = first[0]; x <= last[0]; ++x)
+            for (int64_t y = first[1]; y <= last[1]; ++y)
+                for (int64_t z = first[2]; z <= last[2]; ++z) {
+                    const auto cell = cells_.find(key(x, y, z));
+                    if (cell == cells_.end()) continue;
+                    const int64_t at[3] = {x, y, z};
+                    for (const int64_t w : cell->second) {
+                        const int64_t* own = &first_[3 * w];
+                        bool once = true;
+                        for (int a = 0; a < 3; ++a) once = once && at[a] == std::max(first[a], own[a]);
+                        if (!once) continue;
+                        const double* lo = &lo_[3 * w];
+                        const double* hi = &hi_[3 * w];
+                        bool overlap = true;
+                        for (const int a : {0, 2, 1}) overlap = overlap && box_lo[a] <= hi[a] && lo[a] <= box_hi[a];
+                        if (overlap && slab_meets_triangle(&triangles_[9 * w], low, along, side, heights, inset)) return true;
+                    }
+                }
+        return false;
+    }
+
+    double cell_;
+    double origin_[3];
+    int64_t shape_[3] = {0, 0, 0};
+    std::vector<double> triangles_, lo_, hi_;
+    std::vector<int64_t> first_;
+    std::unordered_map<int64_t, std::vector<int64_t>> cells_;
+};
+
 }  // namespace
 
 NB_MODULE(_slabs, m) {
@@ -119,4 +234,10 @@ NB_MODULE(_slabs, m) {
           "meets (k,) bool: triangle i (float64 (k, 3, 3) corners, m) passes through the slab origin[i] +\n"
           "s along[i] + t side[i] + h UP (s in (0, 1), t in (-1, 1), h in heights[i] (k, 2); origin, along, side\n"
           "float64 (k, 3), side horizontal and at right angles to along's plan), shrunk by inset (m) on every side.");
+    nb::class_<WallGrid>(m, "WallGrid", "steep triangles binned for bands_meet_walls with heights in one call")
+        .def(nb::init<Corners, Rows3, Rows3, nb::ndarray<const double, nb::shape<3>, nb::c_contig, nb::device::cpu>,
+                      double>(),
+             nb::arg("triangles"), nb::arg("lo"), nb::arg("hi"), nb::arg("origin"), nb::arg("cell"))
+        .def("meets", &WallGrid::meets, nb::arg("low"), nb::arg("along"), nb::arg("side"), nb::arg("heights"),
+             nb::arg("inset"), "(n,) bool: a triangle passes through slab i (slabs_meet_triangles' slabs)");
 }

@@ -212,7 +212,7 @@ def test_lookahead_batches_walks_without_changing_answers(monkeypatch: pytest.Mo
     from g2s_core.config import PRESETS_DIR, load_raw_config, parse_config
     from g2s_core.mesh import mesh_sha256
     from g2s_core.registry import Registry
-    from g2s_plugins._raycasting import walk_segments
+    from g2s_plugins._raycasting import walks_in_batch
     from g2s_plugins.samples.levels import dungeon
 
     registry = Registry.from_entry_points()
@@ -223,9 +223,9 @@ def test_lookahead_batches_walks_without_changing_answers(monkeypatch: pytest.Mo
 
     def counting(caster, starts, *args, **kwargs):
         batches.append(len(starts))
-        return walk_segments(caster, starts, *args, **kwargs)
+        return walks_in_batch(caster, starts, *args, **kwargs)
 
-    monkeypatch.setattr(mesh_los, "walk_segments", counting)
+    monkeypatch.setattr(mesh_los, "walks_in_batch", counting)
     simplified = {}
     for lookahead in (0, mesh_los.LOOKAHEAD):
         monkeypatch.setattr(mesh_los, "LOOKAHEAD", lookahead)
@@ -306,7 +306,7 @@ def test_open_floor_answers_save_walk_tests_not_answers(monkeypatch: pytest.Monk
     from g2s_core.config import PRESETS_DIR, MeshConfig, load_raw_config, parse_config
     from g2s_core.mesh import generate_level, mesh_sha256
     from g2s_core.registry import Registry
-    from g2s_plugins._raycasting import OpenFloors, walk_segments
+    from g2s_plugins._raycasting import OpenFloors, walks_in_batch
 
     registry = Registry.from_entry_points()
     config = parse_config(load_raw_config(PRESETS_DIR / "map_analysis_sampling.yaml"), "test")
@@ -316,13 +316,13 @@ def test_open_floor_answers_save_walk_tests_not_answers(monkeypatch: pytest.Monk
 
     def counting(caster, starts, *args, **kwargs):
         walks.append(len(starts))
-        return walk_segments(caster, starts, *args, **kwargs)
+        return walks_in_batch(caster, starts, *args, **kwargs)
 
     class NoOpenFloors(OpenFloors):
         def faces_under(self, points, max_offset=0.0, room=0.0):
             return np.full(len(points), -1)
 
-    monkeypatch.setattr(mesh_los, "walk_segments", counting)
+    monkeypatch.setattr(mesh_los, "walks_in_batch", counting)
     simplified = {}
     for floors in (NoOpenFloors, OpenFloors):
         monkeypatch.setattr(mesh_los, "OpenFloors", floors)

@@ -184,8 +184,8 @@ def test_mesh_los_whole_forest_path_builds_the_loop_structure_in_later_heat_roun
     from g2s_plugins.predicates import mesh_los
 
     walks, sights = [], []
-    monkeypatch.setattr(mesh_los, "walk_segments", lambda caster, starts, *args, **kwargs: walks.append(len(starts))
-                        or _raycasting.walk_segments(caster, starts, *args, **kwargs))
+    monkeypatch.setattr(mesh_los, "walks_in_batch", lambda caster, starts, *args, **kwargs: walks.append(len(starts))
+                        or _raycasting.walks_in_batch(caster, starts, *args, **kwargs))
     seeing = mesh_los.collapse_forest_seeing
     monkeypatch.setattr(mesh_los, "collapse_forest_seeing", lambda forest, rule, sees, memo: seeing(
         forest, rule, lambda pairs: sights.append(len(pairs)) or sees(pairs), memo))

@@ -29,6 +29,7 @@ API = """
 import g2s_core
 import g2s_plugins._trees  # the second extension (the flow's shortest-path trees) ships too
 import g2s_plugins._slabs  # and the third (the walk test's body slab)
+import g2s_plugins._walks  # and the fourth (the walk test's arithmetic round its rays)
 result = g2s_core.run("sample:cross_hub", "map_piece", agent={"radius": 0.4})
 assert result.structure.number_of_nodes() > 0
 assert sum(terminal for _, terminal in result.structure.nodes(data="terminal")) >= 4
@@ -41,13 +42,13 @@ print(len(written))
 
 def missing_from_wheel(names: set[str]) -> list[str]:
     """What an installed g2s reads by path that a wheel holding ``names`` lacks: each preset of configs/ (as
-    g2s_core/presets/), every file of the two packages that is not Python (the JSON schemas), the three extensions."""
+    g2s_core/presets/), every file of the two packages that is not Python (the JSON schemas), the four extensions."""
     needed = {f"g2s_core/presets/{preset.name}" for preset in (PROJECT / "configs").glob("*.yaml")}
     needed |= {path.relative_to(PROJECT).as_posix() for package in ("g2s_core", "g2s_plugins")
                for path in (PROJECT / package).rglob("*")
                if path.is_file() and path.suffix not in (".py", ".pyc", ".so") and "__pycache__" not in path.parts}
     missing = sorted(needed - names)
-    for extension in ("g2s_plugins/_trees", "g2s_plugins/_slabs", "g2s_plugins/recast/_recast"):
+    for extension in ("g2s_plugins/_trees", "g2s_plugins/_slabs", "g2s_plugins/_walks", "g2s_plugins/recast/_recast"):
         if not any(name.startswith(f"{extension}.") and name.endswith(".so") for name in names):
             missing.append(f"{extension}.*.so")
     return missing

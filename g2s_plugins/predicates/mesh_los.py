@@ -44,7 +44,10 @@ of the tree); any other costs about 2 L / probe_step + 5 rays (L = |AC|),
 through Embree when available, and, where those pass, its share of one band
 test per batch (:func:`g2s_plugins._raycasting.bands_meet_walls`, which
 looks the band up in the steep triangles' grid, built once per mesh:
-docs/sampling.md, "Simplified edges as wide as the agent").
+docs/sampling.md, "Simplified edges as wide as the agent"). A batch is
+:func:`g2s_plugins._raycasting.walks_in_batch`: ``walk_segments``' answers bit
+for bit, its arithmetic in the C++ extension round the same ray casts (a
+batch of a few dozen walks cost numpy's per-call overhead, about 0.75 ms).
 Answers are cached per (A, C) pair for the predicate's life: the heat guarantee's rounds
 (:mod:`g2s_plugins.heat_guarantee`) ask the same predicate, so a later
 round casts rays only for walks no earlier round tested, and on the
@@ -74,7 +77,7 @@ from pydantic import Field
 from g2s_core.model import RunContext
 from g2s_core.plugin import hookimpl
 from g2s_core.simplify import ForestArrays
-from g2s_plugins._raycasting import GROUND_MARGIN, AgentShape, OpenFloors, RayCaster, walk_segments
+from g2s_plugins._raycasting import GROUND_MARGIN, AgentShape, OpenFloors, RayCaster, walks_in_batch
 from g2s_plugins._surface import CollapseParams, RuleArrays, collapse_rule
 from g2s_plugins.graph_builders.sampling import DISK_SHARE
 from g2s_plugins.heat_guarantee import begin_ahead, guaranteed
@@ -208,7 +211,7 @@ def mesh_los_predicate(
                           if (start, e) not in walked and e != end and not certain(start, e))
         if tested:
             starts, ends = zip(*tested)
-            ok, _ = walk_segments(caster, np.array(starts), np.array(ends), agent, probe_step, params.margin,
+            ok, _ = walks_in_batch(caster, np.array(starts), np.array(ends), agent, probe_step, params.margin,
                                   params.max_surface_gap, half_width, body=body)
             walked.update(zip(tested, ok.tolist()))
         for start, end in asked:
