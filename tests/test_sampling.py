@@ -776,20 +776,22 @@ def test_row_starts_pick_each_distinct_row_once():
 
 
 def test_batches_on_two_threads_build_the_graph_of_one(monkeypatch: pytest.MonkeyPatch):
-    """The candidates' wall and ledge rays and the edges' walk tests, cast in batches by two threads
-    (``sampling._each_batch``), give the graph and the ray count of one thread and of one batch each."""
+    """The candidates' wall and ledge rays, the stranded candidates' ledge rays and the edges' walk tests, cast in
+    batches by two threads (``sampling._each_batch``), give the graph and the ray count of one thread and of one
+    batch each."""
     mesh = samples.dungeon(seed=1, rooms=12).mesh
 
     def graph_with(threads: int, batch: int | None) -> tuple[list, list, list, dict]:
         monkeypatch.setattr(sampling, "RAY_THREADS", threads)
         if batch is not None:  # many small batches: each thread takes several, in whatever order they come
-            for name in ("MAX_WALL_BATCH", "MAX_LEDGE_BATCH", "MAX_EDGE_BATCH"):
+            for name in ("MAX_WALL_BATCH", "MAX_LEDGE_BATCH", "MAX_EDGE_BATCH", "MAX_ROOM_BATCH"):
                 monkeypatch.setattr(sampling, name, batch)
         graph = build(mesh)
         return (list(graph.nodes(data=True)), list(graph.edges(data=True)), [list(graph.adj[n]) for n in graph],
                 graph.graph["sampling_stats"])
 
     whole = graph_with(1, None)
-    assert whole[3]["candidates"] > 8 * 97 and whole[3]["candidate_edges"] > 8 * 97  # several batches of 97 below
+    # several batches of 97 below
+    assert min(whole[3][name] for name in ("candidates", "candidate_edges", "candidates_stranded")) > 8 * 97
     assert graph_with(2, 97) == whole
     assert graph_with(1, 97) == whole

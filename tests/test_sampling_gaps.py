@@ -5,6 +5,9 @@ from __future__ import annotations
 import networkx as nx
 import numpy as np
 import trimesh
+from scipy import sparse
+from scipy.sparse import csgraph
+from scipy.spatial import cKDTree
 
 from g2s_core.config import AgentConfig
 from g2s_core.model import RunContext
@@ -79,6 +82,33 @@ def test_gap_pairs_are_those_without_a_short_way():
     assert sampling._gap_pairs(detour, np.array([[0, 2], [2, 3], [1, 3]]), 2.0, 3.0).tolist() == [[0, 1]]
     # Off (gap_radius at most connect_radius): nothing.
     assert sampling._gap_pairs(line, np.array([[0, 1]]), 2.0, 2.0).shape == (0, 2)
+
+
+def test_bounded_ways_by_tiles_are_the_ways_of_the_whole_graph():
+    # 3,000 samples on a 150 m x 150 m square (6 x 6 tiles of 24 m for a limit of 6 m), joined within 2.2 m, and
+    # every pair within 6 m: each way, found tile by tile on a renumbered part of the graph, has the bits of
+    # scipy's Dijkstra on the whole graph (inf beyond the limit)
+    rng = np.random.default_rng(5)
+    samples = np.column_stack([rng.uniform(0, 150, 3000), rng.uniform(0, 0.5, 3000), rng.uniform(0, 150, 3000)])
+    edges = cKDTree(samples).query_pairs(2.2, output_type="ndarray")
+    lengths = np.linalg.norm(samples[edges[:, 1]] - samples[edges[:, 0]], axis=1)
+    links = sparse.csr_array((lengths, (edges[:, 0], edges[:, 1])), shape=(3000, 3000))
+    links = links + links.T
+    pairs = cKDTree(samples).query_pairs(6.0, output_type="ndarray")
+    way = sampling._bounded_ways(samples, links, pairs, 6.0)
+    whole = csgraph.dijkstra(links, directed=False)[pairs[:, 0], pairs[:, 1]]
+    expected = np.where(whole <= 6.0, whole, np.inf)
+    assert 0 < np.count_nonzero(np.isinf(expected)) < len(pairs)
+    np.testing.assert_array_equal(way.view(np.int64), expected.view(np.int64))
+
+
+def test_runs_graph_keeps_the_runs_rows_and_columns():
+    # rows and columns 1, 2 and 4 of a 6 x 6 matrix (runs [1, 3) and [4, 5), an empty one [3, 3) between)
+    graph = sparse.csr_array(np.arange(36, dtype=float).reshape(6, 6) + 1.0)
+    part, local = sampling._runs_graph(graph, np.array([[1, 3], [3, 3], [4, 5]]))
+    kept = [1, 2, 4]
+    np.testing.assert_array_equal(part.toarray(), graph.toarray()[np.ix_(kept, kept)])
+    assert local(np.array([4, 1, 2])).tolist() == [2, 0, 1]
 
 
 def test_the_new_edges_never_cross_a_wall():

@@ -78,6 +78,28 @@ def test_ledge_room_finds_the_edge_along_each_direction():
     assert room[sampling.GROUND_DIRECTIONS // 2] == 0.5  # -x: floor all the way
 
 
+def test_ledge_room_in_batches_on_two_threads_is_that_of_one_call(monkeypatch: pytest.MonkeyPatch):
+    # points on a 0.13 m lattice round the mouth of a flight 1.2 m wide between drops, turned 22 degrees: many of
+    # them near a ledge, so the halvings run; batches of 7 points taken by two threads in any order
+    mesh, _, _ = benchmark("narrow_flights").passage_level(0.2, 0.0, "flat", "straight", "drops")
+    mesh.apply_transform(trimesh.transformations.rotation_matrix(math.radians(22.0), (0.0, 1.0, 0.0)))
+    x, z = np.meshgrid(np.arange(-3.0, 3.0, 0.13), np.arange(-2.0, 2.0, 0.13))
+    points = np.column_stack([x.ravel(), np.zeros(x.size), z.ravel()])
+
+    def room(threads: int, batch: int) -> tuple[np.ndarray, int]:
+        monkeypatch.setattr(sampling, "RAY_THREADS", threads)
+        monkeypatch.setattr(sampling, "MAX_ROOM_BATCH", batch)
+        caster = RayCaster(mesh)
+        return sampling.ledge_room(caster, points, AGENT, 0.5), caster.rays_cast
+
+    whole, rays = room(1, len(points))
+    assert 0 < np.count_nonzero(whole < 0.5) < whole.size  # ledges found by halving, and open directions
+    for threads in (2, 1):
+        batched, batched_rays = room(threads, 7)
+        np.testing.assert_array_equal(batched, whole)
+        assert batched_rays == rays
+
+
 @pytest.mark.parametrize("offset", [0.0, 0.3])
 def test_added_samples_do_not_cross_a_slot_narrower_than_the_agent(offset):
     # benchmarks/post_slots.py's 0.95 m slots beside a 0.2 m post, turned 22 degrees: the samples added at the slots'

@@ -21,8 +21,9 @@ wanted. No Recast is involved: ``context.navmesh`` stays ``None``.
    the walkable surface by ``clearance`` as Recast erodes it by the radius.
    Rays whose answer the geometry near a candidate already gives are not
    cast (:class:`_Surroundings`); the answers are the same. The wall and
-   ledge rays, and the edges' walk tests below, are cast in batches by two
-   threads (:func:`_each_batch`), the same answers again.
+   ledge rays, and the edges' walk tests and the passages' ledge rays
+   (:func:`ledge_room`) below, are cast in batches by two threads
+   (:func:`_each_batch`), the same answers again.
    *Closed solids* (:func:`inside_closed_solids`): a candidate that passed
    those checks is dropped when the first triangles above it and along
    ±x, ±z are all met from behind (the inside of an outward-wound block
@@ -163,6 +164,9 @@ MAX_LEDGE_BATCH = 50_000
 
 MAX_WALL_BATCH = 100_000
 """Candidate points whose wall rays (24 each at most) one thread casts at a time (:func:`agent_fits`)."""
+
+MAX_ROOM_BATCH = 10_000
+"""Points whose :func:`ledge_room` rays (``GROUND_DIRECTIONS`` each and their halvings) one thread casts at a time."""
 
 RAY_THREADS = min(2, os.cpu_count() or 1)
 """Threads that cast a build's batches of rays (:func:`_each_batch`). Embree's calls and numpy's loops over
@@ -582,15 +586,20 @@ def ledge_room(caster: RayCaster, points: np.ndarray, agent: AgentShape, clearan
     """
     points = np.asarray(points, dtype=np.float64).reshape(-1, 3)
     room = np.full((len(points), GROUND_DIRECTIONS), float(clearance))
-    rows, dirs = np.divmod(np.arange(room.size), GROUND_DIRECTIONS)
-    edge = ~_ground_at(caster, agent, clearance, points[rows] + clearance * AROUND[dirs])[0]
-    rows, dirs = rows[edge], dirs[edge]
-    low, high = np.zeros(len(rows)), np.full(len(rows), float(clearance))
-    for _ in range(LEDGE_HALVINGS):
-        middle = 0.5 * (low + high)
-        found = _ground_at(caster, agent, clearance, points[rows] + middle[:, None] * AROUND[dirs])[0]
-        low, high = np.where(found, middle, low), np.where(found, high, middle)
-    room[rows, dirs] = low
+
+    def measure(cast: RayCaster, batch: np.ndarray) -> None:
+        rows, dirs = np.divmod(np.arange(len(batch) * GROUND_DIRECTIONS), GROUND_DIRECTIONS)
+        rows = batch[rows]
+        edge = ~_ground_at(cast, agent, clearance, points[rows] + clearance * AROUND[dirs])[0]
+        rows, dirs = rows[edge], dirs[edge]
+        low, high = np.zeros(len(rows)), np.full(len(rows), float(clearance))
+        for _ in range(LEDGE_HALVINGS):
+            middle = 0.5 * (low + high)
+            found = _ground_at(cast, agent, clearance, points[rows] + middle[:, None] * AROUND[dirs])[0]
+            low, high = np.where(found, middle, low), np.where(found, high, middle)
+        room[rows, dirs] = low
+
+    _each_batch(caster, measure, _in_batches(np.arange(len(points)), MAX_ROOM_BATCH))
     return room
 
 
@@ -1126,7 +1135,11 @@ def _bounded_ways(samples: np.ndarray, links: sparse.csr_array, pairs: np.ndarra
     search from the sources in one XZ tile (side 4 x ``limit``) needs only the
     samples of that tile and the eight around it: scipy's Dijkstra on that
     part of the graph, its table (sources x part) small, its cost growing
-    with the level's area, not its square.
+    with the level's area, not its square. ``links`` is put in the order of
+    the tiles' keys once, so that a part is three runs of consecutive rows
+    (:func:`_runs_graph`). Numbered so, a part gives each way the same bits:
+    with positive weights, Dijkstra's distance to a sample is the least of its
+    neighbours' distances plus their edges, in whatever order it settles them.
     """
     side = 4.0 * limit
     tile = np.floor(samples[:, [0, 2]] / side).astype(np.int64)
@@ -1135,16 +1148,49 @@ def _bounded_ways(samples: np.ndarray, links: sparse.csr_array, pairs: np.ndarra
     key = (tile[:, 0] + 1) * width + tile[:, 1] + 1  # a margin of one tile all round keeps the 3 x 3 keys apart
     order = np.argsort(key, kind="stable")
     starts = np.searchsorted(key[order], np.arange((int(tile[:, 0].max()) + 3) * width + 1))
+    position = np.empty(len(samples), dtype=np.int64)
+    position[order] = np.arange(len(samples))
+    ordered = links[order][:, order]
     way = np.full(len(pairs), np.inf)
-    source_key = key[pairs[:, 0]]
-    for home in np.unique(source_key):
-        block = [order[starts[k] : starts[k + 1]] for dx in (-1, 0, 1) for k in home + dx * width + np.arange(-1, 2)]
-        part = np.sort(np.concatenate(block))
-        mine = np.nonzero(source_key == home)[0]
-        sources, row = np.unique(np.searchsorted(part, pairs[mine, 0]), return_inverse=True)
-        table = csgraph.dijkstra(links[part][:, part], directed=False, indices=sources, limit=limit)
-        way[mine] = table[row, np.searchsorted(part, pairs[mine, 1])]
+    by_home = np.argsort(key[pairs[:, 0]], kind="stable")
+    homes, first = np.unique(key[pairs[by_home, 0]], return_index=True)
+    for home, mine in zip(homes.tolist(), np.split(by_home, first[1:])):
+        # the tiles home + dx width - 1 .. home + dx width + 1 for dx = -1, 0, 1: three runs of consecutive rows
+        runs = starts[np.add.outer(home + width * np.arange(-1, 2), [-1, 2])]
+        part, local = _runs_graph(ordered, runs)
+        sources, row = np.unique(local(position[pairs[mine, 0]]), return_inverse=True)
+        # directed (scipy's default): ``links`` holds each edge both ways already, and an undirected search would
+        # make the transpose of every part for the same ways (a third of this function's time on the 100k level)
+        table = csgraph.dijkstra(part, indices=sources, limit=limit)
+        way[mine] = table[row, local(position[pairs[mine, 1]])]
     return way
+
+
+def _runs_graph(graph: sparse.csr_array, runs: np.ndarray) -> tuple[sparse.csr_array, Callable[[np.ndarray], np.ndarray]]:
+    """``(part, local)``: the rows and columns of ``graph`` (a square CSR array) in ``runs`` ((r, 2) ``[begin,
+    end)`` ranges of rows, ascending and apart), numbered from 0 in that order; and the map from ``graph``'s row
+    numbers in the runs ((k,) int) to ``part``'s. O(the runs' rows and entries), where scipy's indexing by columns
+    makes a table of all of ``graph``'s columns each time."""
+    begin, end = runs[:, 0], runs[:, 1]
+    offset = np.cumsum(end - begin) - (end - begin)
+
+    def local(rows: np.ndarray) -> np.ndarray:
+        run = np.searchsorted(begin, rows, side="right") - 1
+        return rows - begin[run] + offset[run]
+
+    pointers = graph.indptr
+    entries = np.concatenate([np.arange(pointers[a], pointers[b]) for a, b in runs.tolist()])  # the runs' rows' entries
+    row_ends = np.cumsum(np.concatenate([np.diff(pointers[a : b + 1]) for a, b in runs.tolist()]))  # in ``entries``
+    columns = graph.indices[entries]
+    run = np.searchsorted(begin, columns, side="right") - 1
+    inside = (run >= 0) & (columns < end[np.maximum(run, 0)])
+    kept_before = np.concatenate([[0], np.cumsum(inside)])  # the entries kept before each of ``entries``
+    count = int(offset[-1] + end[-1] - begin[-1])
+    part = sparse.csr_array(
+        (graph.data[entries[inside]], (columns - begin[run] + offset[run])[inside], kept_before[np.concatenate([[0], row_ends])]),
+        shape=(count, count),
+    )
+    return part, local
 
 
 # --- the hook ---------------------------------------------------------------------------
@@ -1282,8 +1328,9 @@ def build_sampled_graph(
         kept_edge = ~small[edges[:, 0]]
         samples, sample_normals, areas = samples[~small], sample_normals[~small], areas[~small]
         edges, weights = new_id[edges[kept_edge]], weights[kept_edge]
-    pos = [tuple(p) for p in samples.tolist()]
-    nrm = [tuple(v) for v in sample_normals.tolist()]
+    # each node's position and normal as a tuple, zipped from the columns: of the 680,329 nodes' graph, 1.9 s of
+    # CPU against 2.9 s with a tuple made from each row (docs/performance.md, 6 December 2026, samp1_47)
+    pos, nrm = list(zip(*samples.T.tolist())), list(zip(*sample_normals.T.tolist()))
     area_list = areas.astype(np.float64).tolist()
     # the graph add_nodes_from and add_edges_from make (the edges are unique), written straight into its dicts
     graph_of(
