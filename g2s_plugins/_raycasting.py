@@ -1156,7 +1156,8 @@ def walk_segments(
       straight line, on a triangle no steeper than the agent's max slope,
       and an upward ray from the same point finds the agent's height of
       head room above that ground (a point over a crack stands on the ground
-      one crack step to both sides of it, :func:`ground_across_crack`);
+      within one crack step on both sides of it, :func:`ground_across_crack`
+      with :data:`CRACK_STEPS`);
     * between neighbouring points the ground rises or falls by no more than
       the agent's max climb (a step) or its max slope times their distance;
     * with ``max_gap``, the ground under every point lies within ``max_gap``
@@ -1210,7 +1211,7 @@ def walk_segments(
         ok[sideways] &= (side_hits.distance >= lengths[sideways]) | caster.walkable_faces(side_hits.face, agent.max_slope_deg)
     good = (down.distance <= reach) & caster.walkable_faces(down.face, agent.max_slope_deg)
     distance = np.where(good, down.distance, 0.0)
-    # A probe over a crack stands on the ground one crack step to both sides of it, along x, else along z.
+    # A probe over a crack stands on the ground within a crack step on both sides of it, along x, else along z.
     rows = np.flatnonzero(~good)
     if len(rows):
         crack, beside = ground_across_crack(

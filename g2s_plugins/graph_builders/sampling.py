@@ -335,9 +335,11 @@ def agent_fits(
     height) and head (height - margin) levels, and in 8 directions at
     ``clearance`` metres walkable ground within a step (or the max slope)
     of the point, with head room of its own. A ledge probe that finds none
-    stands on the ground one crack step to both sides of it, along x, else
-    along z (:func:`~g2s_plugins._raycasting.ground_across_crack` with
-    :func:`~g2s_plugins._raycasting.crack_sides`, the walk test's rule): a
+    stands on the ground within one crack step on both sides of it (each side
+    tried apart at half a step and a step), along x, else along z
+    (:func:`~g2s_plugins._raycasting.ground_across_crack` with
+    :func:`~g2s_plugins._raycasting.crack_sides` and
+    :data:`~g2s_plugins._raycasting.CRACK_STEPS`, the walk test's rule): a
     grating's slots and tiles laid apart are floor, a gap wider than two
     crack steps (r / 4) is a ledge.
 
