@@ -128,6 +128,7 @@ from g2s_core.model import RunContext, graph_of
 from g2s_core.plugin import hookimpl
 from g2s_plugins._raycasting import (
     COMPASS,
+    CRACK_STEPS,
     EPSILON,
     GROUND_MARGIN,
     UP,
@@ -338,9 +339,11 @@ def agent_fits(
     height) and head (height - margin) levels, and in 8 directions at
     ``clearance`` metres walkable ground within a step (or the max slope)
     of the point, with head room of its own. A ledge probe that finds none
-    stands on the ground one crack step to both sides of it, along x, else
-    along z (:func:`~g2s_plugins._raycasting.ground_across_crack` with
-    :func:`~g2s_plugins._raycasting.crack_sides`, the walk test's rule): a
+    stands on the ground within one crack step on both sides of it (each side
+    tried apart at half a step and a step), along x, else along z
+    (:func:`~g2s_plugins._raycasting.ground_across_crack` with
+    :func:`~g2s_plugins._raycasting.crack_sides` and
+    :data:`~g2s_plugins._raycasting.CRACK_STEPS`, the walk test's rule): a
     grating's slots and tiles laid apart are floor, a gap wider than two
     crack steps (r / 4) is a ledge.
 
@@ -438,7 +441,8 @@ def agent_fits(
         kept = np.ones(len(rows), dtype=bool)
         for k in range(len(COMPASS)):
             missing = np.flatnonzero(kept & ~ground[:, k])
-            crack, beside = ground_across_crack(cast, origins[missing, k], -UP, crack_sides(agent), 2.0 * reach, walkable)
+            crack, beside = ground_across_crack(cast, origins[missing, k], -UP, crack_sides(agent), 2.0 * reach,
+                                                walkable, CRACK_STEPS)
             ground[missing[crack], k] = True
             distance[missing[crack], k] = beside[crack]
             kept[missing[~crack]] = False
