@@ -920,17 +920,24 @@ def ground_across_crack(
     sides: list[np.ndarray],
     reach: float,
     walkable: Callable[[np.ndarray], np.ndarray],
+    steps: tuple[float, ...] = (1.0,),
 ) -> tuple[np.ndarray, np.ndarray]:
     """Which probes that found no ground of their own stand on ground across a crack, and how far below.
 
-    A probe over a crack (a grating's 2 cm slots, unwelded tiles laid apart) stands on the floor
-    beside it, as the agent's foot does: where walkable ground lies within ``reach`` along ``down``
-    from both ``probe + side`` and ``probe - side``, for the first of ``sides`` where it does.
-    Beyond a floor's edge ground lies on one side at most, and a hole wider than twice the side
-    stays a hole. The one crack rule of the walk test (:func:`walk_segments`), of the sampling
-    builder's ledge probes (``agent_fits``, with :func:`crack_sides`) and of the ``entry_exit``
-    selector's search for the floor's end (docs/entry_exit.md, "A ninth round of piece kinds",
-    causes 2 and 3).
+    A probe over a crack (a grating's slots, unwelded tiles laid apart) stands on the floor beside
+    it, as the agent's foot does: where walkable ground lies within ``reach`` along ``down`` on
+    both sides of it, for the first of ``sides`` where it does. Each side is tried apart, at
+    ``probe + f side`` and at ``probe - f side`` for each fraction ``f`` of ``steps`` in turn until
+    one finds ground; with the default ``steps`` the two sides are tried as a pair, one side long
+    (the ``entry_exit`` selector's search for the floor's end, docs/entry_exit.md, "A ninth round of
+    piece kinds", causes 2 and 3). The sampling route's walk test (:func:`walk_segments`) and
+    ledge probes (the sampling builder's ``agent_fits``) try :data:`CRACK_STEPS` of
+    :func:`crack_sides`: across slots of a period just over a crack step (bars and slots 0.03 m,
+    the step 0.05 m) a step either way lands in a slot on one side or the other wherever the probe
+    stands in a slot, and half a step finds the bar the step overshoots (docs/entry_exit.md,
+    "The grating's end on the sampling route"). Beyond a floor's edge ground lies on one side at
+    most, and a hole wider than twice the longest step (r / 4 for :func:`crack_sides`) stays a
+    hole: a probe in it lies more than a step from ground on one side at least.
 
     Args:
         caster: the level's ray caster.
@@ -939,12 +946,14 @@ def ground_across_crack(
         sides: offsets tried in turn, each (3,) or (n, 3), metres: one crack step long.
         reach: longest ray that finds ground, metres.
         walkable: (m,) hit faces (-1: none) -> (m,) bool, the faces the caller's agent stands on.
+        steps: fractions of each side at which its two sides are tried, nearest first.
 
     Returns:
         ``(on, distance)``: (n,) bool, the probe stands on ground across a crack; (n,) metres along
         ``down`` to the nearer side's ground (``inf`` where not on).
 
-    Two rays a probe and side tried: O(n len(sides)) rays.
+    Two rays a probe, side and step at most (a side that found ground tries no further step):
+    O(n len(sides) len(steps)) rays.
     """
     probes = np.asarray(probes, dtype=np.float64).reshape(-1, 3)
     n = len(probes)
@@ -956,10 +965,17 @@ def ground_across_crack(
         if len(rows) == 0:
             break
         offset = np.broadcast_to(np.asarray(side, dtype=np.float64), (n, 3))[rows]
-        beside = caster.first_hits_of([(probes[rows] + offset, down[rows]), (probes[rows] - offset, down[rows])])
-        both = np.logical_and.reduce([(hit.distance <= reach) & walkable(hit.face) for hit in beside])
+        found = np.full((2, len(rows)), np.inf)  # metres along down to the ground found ahead of and behind side
+        for fraction in steps:
+            looking = [np.flatnonzero(np.isinf(found[k])) for k in range(2)]
+            beside = caster.first_hits_of([(probes[rows[looking[k]]] + sign * fraction * offset[looking[k]],
+                                            down[rows[looking[k]]]) for k, sign in enumerate((1.0, -1.0))])
+            for k, hit in enumerate(beside):
+                ground = (hit.distance <= reach) & walkable(hit.face)
+                found[k, looking[k][ground]] = hit.distance[ground]
+        both = np.isfinite(found).all(axis=0)
         on[rows[both]] = True
-        distance[rows[both]] = np.minimum(beside[0].distance, beside[1].distance)[both]
+        distance[rows[both]] = found.min(axis=0)[both]
     return on, distance
 
 
@@ -967,10 +983,17 @@ _CRACK_AXES = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
 """The horizontal axes along which :func:`walk_segments` looks for ground on both sides of a probe that found none
 (:func:`ground_across_crack`), one crack step (r / 8, docs/entry_exit.md: 0.05 m for the map-piece agent) away."""
 
+CRACK_STEPS = (0.5, 1.0)
+"""The fractions of a crack step at which the sampling route's ground probes try each side of a crack apart
+(:func:`ground_across_crack`'s ``steps``): half a step, then a whole one. At most two rays more a side than a
+pair at a step, for a probe that finds no ground of its own (docs/entry_exit.md, "The grating's end on the
+sampling route")."""
+
 
 def crack_sides(agent: AgentShape) -> list[np.ndarray]:
     """The sides (each (3,), metres) :func:`ground_across_crack` tries for a ground probe of ``agent``: one crack step
-    (r / 8) along x, then along z. The walk test's and the sampling builder's ledge probes' (one rule for both)."""
+    (r / 8) along x, then along z, each tried apart at :data:`CRACK_STEPS`. The walk test's and the sampling
+    builder's ledge probes' (one rule for both)."""
     return list(_CRACK_AXES * (agent.radius / 8.0))
 
 
@@ -1209,7 +1232,7 @@ def walk_segments(
     if len(rows):
         crack, beside = ground_across_crack(
             caster, lifted[rows], -UP, crack_sides(agent), reach,
-            lambda faces: caster.walkable_faces(faces, agent.max_slope_deg),
+            lambda faces: caster.walkable_faces(faces, agent.max_slope_deg), CRACK_STEPS,
         )
         good[rows[crack]] = True
         distance[rows[crack]] = beside[crack]

@@ -6,7 +6,7 @@ import pytest
 import trimesh
 
 from g2s_core.config import PRESETS_DIR, load_config
-from g2s_plugins._raycasting import UP, AgentShape, RayCaster, ground_across_crack, walk_segments
+from g2s_plugins._raycasting import CRACK_STEPS, UP, AgentShape, RayCaster, ground_across_crack, walk_segments
 
 AGENT = AgentShape.from_config(load_config(PRESETS_DIR / "map_piece_sampling.yaml").agent)
 
@@ -61,3 +61,35 @@ def test_the_crack_rule_needs_ground_on_both_sides_along_one_of_its_sides() -> N
     on, _ = ground_across_crack(RayCaster(two), np.array([[3.0, 0.1, 1.1]]), -UP, [along_z], 0.5,
                                 lambda faces: faces >= 0)
     assert on.tolist() == [False]
+
+
+def _hole_across(gap: float) -> trimesh.Trimesh:
+    """A walkway 6 m (x) by 2.2 m + ``gap`` (z), 0.05 m thick, cut across by a hole ``gap`` wide from z 1.0."""
+    return trimesh.util.concatenate([trimesh.creation.box(bounds=[[0.0, -0.05, 0.0], [6.0, 0.0, 1.0]]),
+                                     trimesh.creation.box(bounds=[[0.0, -0.05, 1.0 + gap], [6.0, 0.0, 2.2 + gap]])])
+
+
+def test_the_sampling_route_tries_each_side_of_a_crack_apart() -> None:
+    # Slots as wide as the bars (0.03 m, a period of 0.06 m, just over the crack step r / 8 = 0.05 m): a step either
+    # way from a slot's middle lands in the next slots on both sides, so the pair at a step found no floor and a walk
+    # along the slot, or across the bars through it, was no walk (docs/entry_exit.md, "The grating's end on the
+    # sampling route"). Each side tried apart, half a step then a step (CRACK_STEPS), finds a bar on both sides.
+    slot = 0.03 + 0.03 + 0.015  # the middle of the second slot, z 0.06-0.09
+    starts, ends = np.array([[0.5, 0.0, slot], [0.5, 0.0, 0.3]]), np.array([[5.5, 0.0, slot], [0.5, 0.0, 2.0]])
+    ok, _ = walk_segments(RayCaster(_grating(0.03, slat=0.03)), starts, ends, AGENT, 0.2)
+    assert ok.tolist() == [True, True]
+
+
+@pytest.mark.parametrize("gap, floor", [(0.04, True), (0.11, False), (0.15, False)])
+def test_a_hole_across_a_walkway_wider_than_two_crack_steps_stays_a_hole(gap: float, floor: bool) -> None:
+    # The rule's width limit: a probe in a gap stands on floor only where floor lies within a step (r / 8 = 0.05 m)
+    # of it on both sides. Every probe in a gap narrower than a step does; in one wider than two steps (r / 4 =
+    # 0.1 m), 0.15 m where a foot goes through, none does, wherever in it (every 7 mm or so across, and a walk over it
+    # probed every 2 cm): it stays a hole.
+    caster = RayCaster(_hole_across(gap))
+    probes = np.stack([np.full(15, 3.0), np.full(15, 0.1), 1.0 + np.linspace(0.002, gap - 0.002, 15)], axis=1)
+    on, _ = ground_across_crack(caster, probes, -UP, [np.array([0.0, 0.0, AGENT.radius / 8.0])], 0.5,
+                                lambda faces: faces >= 0, CRACK_STEPS)
+    assert on.all() if floor else not on.any()
+    ok, _ = walk_segments(caster, np.array([[3.0, 0.0, 0.3]]), np.array([[3.0, 0.0, 1.9 + gap]]), AGENT, 0.02)
+    assert ok.tolist() == [floor]

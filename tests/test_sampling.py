@@ -25,6 +25,7 @@ from g2s_core.model import RunContext
 from g2s_core.registry import Registry
 from g2s_plugins._raycasting import (
     COMPASS,
+    CRACK_STEPS,
     EPSILON,
     GROUND_MARGIN,
     UP,
@@ -630,8 +631,8 @@ def test_clearance_disk_may_reach_across_to_the_neighbouring_triangle():
 
 
 def _agent_fits_with_every_ray(caster: RayCaster, points: np.ndarray, agent: AgentShape, clearance: float) -> np.ndarray:
-    """agent_fits without any broad phase: 24 wall rays and 16 ledge rays per point (and 2 or 4 more for each ledge
-    probe that finds no ground: the crack rule)."""
+    """agent_fits without any broad phase: 24 wall rays and 16 ledge rays per point (and 2 to 8 more for each ledge
+    probe that finds no ground: the crack rule, 2 to 4 a side)."""
     ok = head_room(caster, points, agent)
     levels = sorted({round(min(agent.max_climb + GROUND_MARGIN, agent.height - EPSILON), 6),
                      round(0.5 * agent.height, 6), round(agent.height - 5 * EPSILON, 6)})
@@ -646,7 +647,8 @@ def _agent_fits_with_every_ray(caster: RayCaster, points: np.ndarray, agent: Age
     ground = (down.distance <= 2.0 * reach) & walkable(down.face)
     distance = np.where(ground, down.distance, 0.0)
     missing = np.flatnonzero(~ground)  # a probe over a crack stands on the ground beside it
-    crack, beside = ground_across_crack(caster, probe[missing] + reach * UP, -UP, crack_sides(agent), 2.0 * reach, walkable)
+    crack, beside = ground_across_crack(caster, probe[missing] + reach * UP, -UP, crack_sides(agent), 2.0 * reach, walkable,
+                                        CRACK_STEPS)
     ground[missing[crack]], distance[missing[crack]] = True, beside[crack]
     ground &= clear_above(caster, probe + reach * UP, agent.height - distance)
     return ok & ground.reshape(len(points), len(COMPASS)).all(axis=1)

@@ -127,6 +127,7 @@ from g2s_core.model import RunContext, graph_of
 from g2s_core.plugin import hookimpl
 from g2s_plugins._raycasting import (
     COMPASS,
+    CRACK_STEPS,
     EPSILON,
     GROUND_MARGIN,
     UP,
@@ -434,7 +435,8 @@ def agent_fits(
         kept = np.ones(len(rows), dtype=bool)
         for k in range(len(COMPASS)):
             missing = np.flatnonzero(kept & ~ground[:, k])
-            crack, beside = ground_across_crack(cast, origins[missing, k], -UP, crack_sides(agent), 2.0 * reach, walkable)
+            crack, beside = ground_across_crack(cast, origins[missing, k], -UP, crack_sides(agent), 2.0 * reach,
+                                                walkable, CRACK_STEPS)
             ground[missing[crack], k] = True
             distance[missing[crack], k] = beside[crack]
             kept[missing[~crack]] = False
