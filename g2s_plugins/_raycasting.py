@@ -1173,7 +1173,8 @@ def walks_in_batch(
       straight line, on a triangle no steeper than the agent's max slope,
       and an upward ray from the same point finds the agent's height of
       head room above that ground (a point over a crack stands on the ground
-      one crack step to both sides of it, :func:`ground_across_crack`);
+      within one crack step on both sides of it, :func:`ground_across_crack`
+      with :data:`CRACK_STEPS`);
     * between neighbouring points the ground rises or falls by no more than
       the agent's max climb (a step) or its max slope times their distance;
     * with ``max_gap``, the ground under every point lies within ``max_gap``
