@@ -728,7 +728,7 @@ class OpenFloors:
     would seldom hold both ends of one (a level of 1 m floor tiles).
 
     For two points A, C on the same open T, every ray of
-    :func:`walk_segments` (lifted by half the agent height, more than
+    :func:`walks_in_batch` (lifted by half the agent height, more than
     ``2 (EPSILON + margin)``) between them stays at least a margin away from
     every other triangle over T, and from T itself: the lifted segment meets
     nothing within its length, each downward ray lands on T (walkable), at
@@ -799,7 +799,7 @@ class OpenFloors:
     def faces_under(self, points: np.ndarray, max_offset: float = EPSILON, room: float = 0.0) -> np.ndarray:
         """(n,) int64: the open triangle each point stands on (see the class; ``max_offset`` in metres, at most
         ``EPSILON``), -1 where there is none; with ``room`` (metres), only where the point lies that much farther
-        inside the triangle's edges, so that a walk of :func:`walk_segments` with ``half_width`` up to ``room``
+        inside the triangle's edges, so that a walk of :func:`walks_in_batch` with ``half_width`` up to ``room``
         between two such points also passes (its side lines stay over the triangle). One downward ray per point,
         from ``2 EPSILON`` above it."""
         points = np.asarray(points, dtype=np.float64).reshape(-1, 3)
@@ -819,7 +819,7 @@ class OpenFloors:
         return faces
 
     def certain_offset(self, margin: float, max_gap: float | None) -> float:
-        """Metres a point may lie off its open triangle's plane for :func:`walk_segments` (``margin``, ``max_gap``)
+        """Metres a point may lie off its open triangle's plane for :func:`walks_in_batch` (``margin``, ``max_gap``)
         to pass between any two such points on it (a millionth of a metre kept for rounding)."""
         limit = min(EPSILON, self.agent.max_climb + margin, max_gap if max_gap is not None else math.inf)
         return limit - 1e-6
@@ -930,7 +930,7 @@ def ground_across_crack(
     ``probe + f side`` and at ``probe - f side`` for each fraction ``f`` of ``steps`` in turn until
     one finds ground; with the default ``steps`` the two sides are tried as a pair, one side long
     (the ``entry_exit`` selector's search for the floor's end, docs/entry_exit.md, "A ninth round of
-    piece kinds", causes 2 and 3). The sampling route's walk test (:func:`walk_segments`) and
+    piece kinds", causes 2 and 3). The sampling route's walk test (:func:`walks_in_batch`) and
     ledge probes (the sampling builder's ``agent_fits``) try :data:`CRACK_STEPS` of
     :func:`crack_sides`: across slots of a period just over a crack step (bars and slots 0.03 m,
     the step 0.05 m) a step either way lands in a slot on one side or the other wherever the probe
@@ -980,7 +980,7 @@ def ground_across_crack(
 
 
 _CRACK_AXES = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
-"""The horizontal axes along which :func:`walk_segments` looks for ground on both sides of a probe that found none
+"""The horizontal axes along which :func:`walks_in_batch` looks for ground on both sides of a probe that found none
 (:func:`ground_across_crack`), one crack step (r / 8, docs/entry_exit.md: 0.05 m for the map-piece agent) away."""
 
 CRACK_STEPS = (0.5, 1.0)
@@ -1102,7 +1102,7 @@ def bands_meet_walls(caster: RayCaster, low: np.ndarray, along: np.ndarray, side
     s along[i] + t side[i]`` (s in (0, 1), t in (-1, 1), shrunk by ``inset`` m on every side; ``side`` horizontal
     and at right angles to ``along``, all (n, 3) m): the strip a disk of radius ``|side|`` sweeps at the lifted
     segment's height, tested exactly, so that a post or a mullion standing wholly between two of
-    :func:`walk_segments`' lines is found however thin it is. With ``heights`` ((n, 2) or (2,): below and above,
+    :func:`walks_in_batch`' lines is found however thin it is. With ``heights`` ((n, 2) or (2,): below and above,
     m up from the line ``low`` + s ``along``) the band is the slab between those heights, the body of an agent above
     its step, so that a bollard or a crate lower than ``low`` is found too. Walkable triangles are left out, as the
     side lines leave them.
@@ -1139,7 +1139,7 @@ def bands_meet_walls(caster: RayCaster, low: np.ndarray, along: np.ndarray, side
     return meets
 
 
-def walk_segments(
+def walks_in_batch(
     caster: RayCaster,
     starts: np.ndarray,
     ends: np.ndarray,
@@ -1181,109 +1181,31 @@ def walk_segments(
       above or below the straight segment (it does not cut under a ramp or
       over a drop).
 
+    The arithmetic runs in the C++ extension (``src/walks_module.cpp``,
+    :class:`_walks.WalkBatch`): a few extension calls a batch round the ray
+    casts (one intersector call, the rays grazing a triangle cast again aside
+    as :meth:`RayCaster.first_hits` does), the probes over a crack handed to
+    :func:`ground_across_crack` (the one crack rule, with the ledge probes'),
+    and the band test; a numpy formulation ran a few hundred array operations
+    a batch, each costing more per call than per walk on the batches of a few
+    dozen walks that the builder and the mesh_los predicate ask (docs/performance.md,
+    samp5_47 and walks47). O(rays) a batch, plus the band test's.
+
+    Args:
+        caster: the level's ray caster.
+        starts, ends: (n, 3) ground points, metres.
+        agent: the walking agent.
+        probe_step: longest horizontal distance between probe points, metres.
+        margin: metres the ground may lie below the lifted probe's reach past the agent's climb.
+        max_gap: metres the ground may lie off the straight segment (``None``: no limit).
+        half_width: half the width of the band the side lines bound, metres (0: the middle line only).
+        body: the band is the agent's body's slab rather than the lifted segment's strip.
+
     Returns:
         ``(ok, rise)``: (n,) bool, and (n,) float, the largest height change
         between neighbouring points of each segment (metres; ``inf`` where
         ground is missing).
     """
-    starts = np.asarray(starts, dtype=np.float64).reshape(-1, 3)
-    ends = np.asarray(ends, dtype=np.float64).reshape(-1, 3)
-    n = len(starts)
-    if n == 0:
-        return np.zeros(0, dtype=bool), np.zeros(0)
-    lift = 0.5 * agent.height
-    low, high = starts + lift * UP, ends + lift * UP
-    vectors = high - low
-    lengths = np.linalg.norm(vectors, axis=1)
-    moving = lengths > 1e-9
-
-    # Probe points: k_i intervals per segment, k_i + 1 points (ends included).
-    delta = ends - starts
-    horizontal = np.hypot(delta[:, 0], delta[:, 2])
-    intervals = np.maximum(1, np.ceil(horizontal / probe_step - 1e-9).astype(np.int64))
-    counts = intervals + 1
-    segment = np.repeat(np.arange(n), counts)
-    first = np.concatenate([[0], np.cumsum(counts)[:-1]])
-    step_index = np.arange(len(segment)) - np.repeat(first, counts)
-    t = step_index / np.repeat(intervals, counts)
-    line = starts[segment] + t[:, None] * delta[segment]
-    reach = lift + agent.max_climb + margin
-
-    # The lifted segments, then down and up from each lifted probe point: the
-    # same vertical line (the downward ray found nothing between it and the ground).
-    lifted = line + lift * UP
-    sideways = moving & (horizontal > 1e-9) if half_width > 0 else np.zeros(n, dtype=bool)
-    side = np.zeros((int(sideways.sum()), 3))
-    side[:, 0], side[:, 2] = -delta[sideways, 2], delta[sideways, 0]
-    side *= (half_width / horizontal[sideways])[:, None]
-    across, down, up, left, right = caster.first_hits_of(
-        [(low[moving], vectors[moving]), (lifted, -UP), (lifted, UP),
-         (low[sideways] + side, vectors[sideways]), (low[sideways] - side, vectors[sideways])]
-    )
-    ok = np.ones(n, dtype=bool)
-    ok[moving] = across.distance >= lengths[moving]
-    # A side line that meets walkable ground (a floor rising beside the walk) is not stopped, as the agent checks'
-    # wall rays are not (the sampling builder's ``agent_fits``).
-    for side_hits in (left, right):
-        ok[sideways] &= (side_hits.distance >= lengths[sideways]) | caster.walkable_faces(side_hits.face, agent.max_slope_deg)
-    good = (down.distance <= reach) & caster.walkable_faces(down.face, agent.max_slope_deg)
-    distance = np.where(good, down.distance, 0.0)
-    # A probe over a crack stands on the ground within a crack step on both sides of it, along x, else along z.
-    rows = np.flatnonzero(~good)
-    if len(rows):
-        crack, beside = ground_across_crack(
-            caster, lifted[rows], -UP, crack_sides(agent), reach,
-            lambda faces: caster.walkable_faces(faces, agent.max_slope_deg), CRACK_STEPS,
-        )
-        good[rows[crack]] = True
-        distance[rows[crack]] = beside[crack]
-    ground_y = np.where(good, line[:, 1] + lift - distance, line[:, 1])
-    above = agent.height - (line[:, 1] + lift - ground_y)
-    good[good] = has_room(up.distance[good], above[good])
-    if max_gap is not None:
-        good &= np.abs(ground_y - line[:, 1]) <= max_gap
-    has_ground = np.logical_and.reduceat(good, first)
-    ok &= has_ground
-
-    # Height change between neighbouring probe points of the same segment.
-    same = segment[1:] == segment[:-1]
-    dy = np.where(same, np.abs(np.diff(ground_y)), 0.0)
-    dh = np.repeat(horizontal / intervals, counts)[1:]
-    steep = np.concatenate([dy > agent.max_rise(dh) + 1e-6, [False]])
-    ok &= ~np.logical_or.reduceat(steep, first)
-    # A solid wholly between two of the lines (a post, a mullion) meets none of them: the band between the side
-    # lines, tested exactly, where every other test passed.
-    rows = np.flatnonzero(sideways)
-    clear = ok[rows]
-    rows = rows[clear]
-    # The slab's floor: the agent's knee over the higher end, everywhere along the walk (a riser of the stair it
-    # climbs is a step, not a wall, even where it stands above the knee over the straight line), and never above
-    # the lifted segment, which the band without ``body`` tests.
-    knee, head = agent.body
-    floor = np.minimum(knee + np.abs(vectors[rows, 1]), lift) - lift
-    heights = np.stack([floor, np.full(len(rows), head - lift)], axis=1) if body else None
-    ok[rows] = ~bands_meet_walls(caster, low[rows], vectors[rows], side[clear], agent.max_slope_deg, heights=heights)
-    rise = np.maximum.reduceat(np.concatenate([dy, [0.0]]), first)
-    rise[~has_ground] = np.inf
-    return ok, rise
-
-
-def walks_in_batch(
-    caster: RayCaster,
-    starts: np.ndarray,
-    ends: np.ndarray,
-    agent: AgentShape,
-    probe_step: float,
-    margin: float = GROUND_MARGIN,
-    max_gap: float | None = None,
-    half_width: float = 0.0,
-    body: bool = False,
-) -> tuple[np.ndarray, np.ndarray]:
-    """:func:`walk_segments`' answers, bit for bit, with its arithmetic in the C++ extension
-    (``src/walks_module.cpp``): a few extension calls a batch round the same ray casts (one intersector call, the
-    rays grazing a triangle and the probes over a crack cast again as there) and the same band test, where
-    :func:`walk_segments` runs a few hundred numpy operations, each costing more per call than per walk on the
-    mesh_los predicate's batches of a few dozen walks. Arguments and answer as :func:`walk_segments`'; O(rays)."""
     starts = np.ascontiguousarray(starts, dtype=np.float64).reshape(-1, 3)
     ends = np.ascontiguousarray(ends, dtype=np.float64).reshape(-1, 3)
     n = len(starts)
@@ -1297,12 +1219,12 @@ def walks_in_batch(
     least_y = math.cos(math.radians(agent.max_slope_deg)) - 1e-9  # RayCaster.walkable_faces' bound
     reach = lift + agent.max_climb + margin
     missing = batch.ground(reach, normal_y, least_y)
-    # a probe over a crack stands on the ground one crack step to both sides of it (ground_across_crack's rule)
-    for side in crack_sides(agent):
-        if len(missing) == 0:
-            break
-        _cast_batch(caster, *batch.crack_rays(missing, side, shift), batch.crack_hit, batch.set_crack_hits)
-        missing = batch.crack_ground(reach, normal_y, least_y)
+    if len(missing):  # a probe over a crack: the one crack rule, the ledge probes' too
+        crack, beside = ground_across_crack(
+            caster, batch.probe_points(missing), -UP, crack_sides(agent), reach,
+            lambda faces: caster.walkable_faces(faces, agent.max_slope_deg), CRACK_STEPS,
+        )
+        batch.set_ground(missing[crack], beside[crack])
     knee, head = agent.body
     ok, rise, rows, low, along, side, heights = batch.verdict(
         normal_y, least_y, agent.height, agent.max_climb, agent.tan_slope, HEIGHT_TOLERANCE, max_gap, knee, head, body)

@@ -1,15 +1,17 @@
-// g2s_plugins._walks: the arithmetic of one batch of g2s_plugins._raycasting.walk_segments round its ray casts
-// (the probe points and rays, the hits' distances, the ground, head-room, gap and rise tests), for the mesh_los
-// predicate's walk test (g2s_plugins._raycasting.walks_in_batch states the steps and calls Embree between them).
+// g2s_plugins._walks: the arithmetic of one batch of the walk test round its ray casts (the probe points and rays,
+// the hits' distances, the ground, head-room, gap and rise tests), for the sampling builder's edges and the mesh_los
+// predicate (g2s_plugins._raycasting.walks_in_batch states the rule and the steps, and calls Embree and the crack
+// rule, ground_across_crack, between them: the probes without ground of their own leave here as points and come
+// back as ground distances, so the crack rule is stated once, in Python).
 //
 // Why C++: the simplification of the sampling route asks about 79,000 batches of a few dozen walks on the
 // 100k-polygon level, and in numpy each batch ran a few hundred array operations whose cost is per call, not per
 // walk (docs/performance.md, "6 December 2026, 19:20-20:50 UTC"). Here one loop per walk or per ray, each
-// floating-point operation in the numpy formulation's order and rounding, so the answers are walk_segments' bit for
-// bit: numpy's norm of a row of three sums ((x0 x0 + x1 x1) + x2 x2), its einsum "ij,ij->i" of three sums
-// ((p0 + p2) + p1) (both checked on 200,000 random rows for the numpy this project pins), a sum with UP's zero
-// components is kept (x + 0.0), and no flag of this build contracts a product and a sum into one rounding
-// (-ffp-contract=off). O(rays) a batch.
+// floating-point operation in the order and rounding of the numpy formulation it replaced (walk_segments, removed
+// in walks47), so the structures are those of before, bit for bit: numpy's norm of a row of three sums
+// ((x0 x0 + x1 x1) + x2 x2), its einsum "ij,ij->i" of three sums ((p0 + p2) + p1) (both checked on 200,000 random
+// rows for the numpy this project pins), a sum with UP's zero components is kept (x + 0.0), and no flag of this
+// build contracts a product and a sum into one rounding (-ffp-contract=off). O(rays) a batch.
 
 #include <nanobind/nanobind.h>
 #include <nanobind/ndarray.h>
@@ -135,8 +137,8 @@ struct Rays {
     }
 };
 
-// One batch of walks from starts[i] to ends[i] (walk_segments' arguments), its probe points and rays, then their
-// hits and the tests on them. Rays, in walk_segments' order: the lifted segments of the moving walks, the probes'
+// One batch of walks from starts[i] to ends[i] (walks_in_batch's arguments), its probe points and rays, then their
+// hits and the tests on them. Rays, in this order: the lifted segments of the moving walks, the probes'
 // downward then upward rays, the side lines' left then right copies of the walks with sides.
 class WalkBatch {
   public:
@@ -186,7 +188,7 @@ class WalkBatch {
                 segment_[p] = i;
             }
         }
-        // the rays' origins and directions, each batch in walk_segments' order
+        // the rays' origins and directions, each batch in the order above
         for (size_t i = 0; i < n_; ++i)
             if (moving_[i]) rays_.add(&low_[3 * i], &vectors_[3 * i]);
         down_ = rays_.size();
@@ -240,53 +242,29 @@ class WalkBatch {
         return numpy_of(missing, {missing.size()});
     }
 
-    // ground_across_crack's rays for the probes `rows` still without ground and one side (3,): downward from each
-    // lifted probe moved by +side, then by -side; (origins shifted as rays(), unit directions)
-    nb::tuple crack_rays(Rows rows, Point side,
-                         std::optional<Point> shift) {
-        crack_ = Rays{};
-        crack_rows_.clear();
-        const double* offset = side.data();
-        for (size_t k = 0; k < rows.shape(0); ++k) crack_rows_.push_back(checked(rows.data()[k], segment_.size()));
-        for (const double sign : {1.0, -1.0})
-            for (const size_t p : crack_rows_) {
-                const double* o = &rays_.origins[3 * (down_ + p)];
-                const double moved[3] = {sign > 0 ? o[0] + offset[0] : o[0] - offset[0],
-                                         sign > 0 ? o[1] + offset[1] : o[1] - offset[1],
-                                         sign > 0 ? o[2] + offset[2] : o[2] - offset[2]};
-                crack_.add(moved, DOWN);
-            }
-        return crack_.local(shift);
-    }
-
-    nb::ndarray<nb::numpy, int64_t> crack_hit(Faces faces, Rows3 local, Rows3 normals, Rows3 plane_points,
-                                              Rows3 centroids, Faces twin) {
-        return crack_.hit(faces, local, normals, plane_points, centroids, twin);
-    }
-
-    void set_crack_hits(Rows rows, Faces faces, Values distances) { crack_.set(rows, faces, distances); }
-
-    // The crack rays' probes with walkable ground within `reach` on both sides stand on the nearer; the rows of the
-    // others, for the next side
-    nb::ndarray<nb::numpy, int64_t> crack_ground(double reach, Values normal_y, double least_y) {
-        const size_t k = crack_rows_.size();
-        std::vector<int64_t> still;
-        for (size_t j = 0; j < k; ++j) {
-            bool both = true;
-            for (const size_t r : {j, k + j})
-                both = both && crack_.distance[r] <= reach && walkable(crack_.face[r], normal_y, least_y);
-            const size_t p = crack_rows_[j];
-            if (both) {
-                good_[p] = 1;
-                ground_distance_[p] = minimum(crack_.distance[j], crack_.distance[k + j]);
-            } else {
-                still.push_back(static_cast<int64_t>(p));
-            }
+    // The lifted probe points (world frame, (k, 3): the origins of their downward rays) of
+    // `rows`, the probes ground() found without ground, which the caller tries across a crack (ground_across_crack)
+    nb::ndarray<nb::numpy, double> probe_points(Rows rows) const {
+        std::vector<double> points;
+        points.reserve(3 * rows.shape(0));
+        for (size_t k = 0; k < rows.shape(0); ++k) {
+            const double* o = &rays_.origins[3 * (down_ + checked(rows.data()[k], segment_.size()))];
+            points.insert(points.end(), o, o + 3);
         }
-        return numpy_of(still, {still.size()});
+        return numpy_of(points, {rows.shape(0), 3});
     }
 
-    // walk_segments' tests after the ground: the lifted and side lines, head room, the gap and the rise between
+    // The probes `rows` stand on ground across a crack, `distances` (metres) below their lifted points
+    void set_ground(Rows rows, Values distances) {
+        if (distances.shape(0) != rows.shape(0)) throw nb::value_error("WalkBatch: one distance per row");
+        for (size_t k = 0; k < rows.shape(0); ++k) {
+            const size_t p = checked(rows.data()[k], segment_.size());
+            good_[p] = 1;
+            ground_distance_[p] = distances.data()[k];
+        }
+    }
+
+    // The walk test after the ground: the lifted and side lines, head room, the gap and the rise between
     // neighbouring probes. (ok (n,) bool before the band test, rise (n,) float64, the rows of the walks the band
     // test is still to ask about, and their low (k, 3), along (k, 3), side (k, 3) and, with `body`, heights (k, 2))
     nb::tuple verdict(Values normal_y, double least_y, double height, double max_climb, double tan_slope,
@@ -353,7 +331,6 @@ class WalkBatch {
     static bool walkable(int64_t face, const Values& normal_y, double least_y) {
         return face >= 0 && normal_y.data()[face] >= least_y;
     }
-    static double minimum(double a, double b) { return std::isnan(a) || std::isnan(b) ? NAN : std::min(a, b); }
     static size_t checked(int64_t row, size_t size) {
         if (row < 0 || static_cast<size_t>(row) >= size) throw nb::value_error("WalkBatch: row out of range");
         return static_cast<size_t>(row);
@@ -366,8 +343,7 @@ class WalkBatch {
     std::vector<size_t> first_, segment_;
     std::vector<uint8_t> moving_, sideways_, good_;
     std::vector<double> ground_distance_;
-    Rays rays_, crack_;
-    std::vector<size_t> crack_rows_;
+    Rays rays_;
     size_t across_ = 0, down_ = 0, up_ = 0, left_ = 0, right_ = 0;
 };
 
@@ -375,7 +351,7 @@ class WalkBatch {
 
 NB_MODULE(_walks, m) {
     m.doc() = "One batch of the walk test's arithmetic round its ray casts (see src/walks_module.cpp).";
-    nb::class_<WalkBatch>(m, "WalkBatch", "walk_segments' probe points, rays and tests of one batch of walks")
+    nb::class_<WalkBatch>(m, "WalkBatch", "the walk test's probe points, rays and tests of one batch of walks")
         .def(nb::init<Rows3, Rows3, double, double, double>(), nb::arg("starts"), nb::arg("ends"), nb::arg("lift"),
              nb::arg("probe_step"), nb::arg("half_width"))
         .def("rays", &WalkBatch::rays, nb::arg("shift").none(),
@@ -385,13 +361,10 @@ NB_MODULE(_walks, m) {
         .def("set_hits", &WalkBatch::set_hits, nb::arg("rows"), nb::arg("faces"), nb::arg("distances"))
         .def("ground", &WalkBatch::ground, nb::arg("reach"), nb::arg("normal_y"), nb::arg("least_y"),
              "rows of the probes without walkable ground within reach")
-        .def("crack_rays", &WalkBatch::crack_rays, nb::arg("rows"), nb::arg("side"), nb::arg("shift").none(),
-             "(origins, unit directions) of the crack rays of probes rows and side (3,)")
-        .def("crack_hit", &WalkBatch::crack_hit, nb::arg("faces"), nb::arg("local"), nb::arg("normals"),
-             nb::arg("plane_points"), nb::arg("centroids"), nb::arg("twin"), "as hit, of crack_rays()")
-        .def("set_crack_hits", &WalkBatch::set_crack_hits, nb::arg("rows"), nb::arg("faces"), nb::arg("distances"))
-        .def("crack_ground", &WalkBatch::crack_ground, nb::arg("reach"), nb::arg("normal_y"), nb::arg("least_y"),
-             "rows of the probes still without ground")
+        .def("probe_points", &WalkBatch::probe_points, nb::arg("rows"),
+             "the lifted probe points (k, 3) of rows, world frame, for ground_across_crack")
+        .def("set_ground", &WalkBatch::set_ground, nb::arg("rows"), nb::arg("distances"),
+             "the probes rows stand on ground across a crack, distances below their lifted points")
         .def("verdict", &WalkBatch::verdict, nb::arg("normal_y"), nb::arg("least_y"), nb::arg("height"),
              nb::arg("max_climb"), nb::arg("tan_slope"), nb::arg("height_tolerance"), nb::arg("max_gap").none(),
              nb::arg("knee"), nb::arg("head"), nb::arg("body"),

@@ -267,11 +267,11 @@ def test_open_floor_is_a_walkable_triangle_with_nothing_near_it_up_to_the_agent_
     ("building?seed=2", 2.0, 1e7),
 ])
 def test_walks_on_one_open_floor_pass_with_every_ray_cast(name: str, scale: float, offset: float) -> None:
-    # The claim OpenFloors makes, against walk_segments casting every ray, on random points (some off the
+    # The claim OpenFloors makes, against walks_in_batch casting every ray, on random points (some off the
     # plane, some near the edges) and agents; /tmp-style sweeps of it over all generators found no exception.
     from g2s_core.config import MeshConfig
     from g2s_core.mesh import generate_level
-    from g2s_plugins._raycasting import AgentShape, OpenFloors, RayCaster, walk_segments
+    from g2s_plugins._raycasting import AgentShape, OpenFloors, RayCaster, walks_in_batch
 
     mesh = generate_level(f"sample:{name}", MeshConfig(scale=scale))
     mesh.vertices = mesh.vertices + np.array([offset, 0.01 * offset, -offset])
@@ -292,8 +292,8 @@ def test_walks_on_one_open_floor_pass_with_every_ray_cast(name: str, scale: floa
             on = on[np.argsort(under[on], kind="stable")]  # by triangle, in random order on each
             starts, ends = np.concatenate([on[:-1], on[:-2]]), np.concatenate([on[1:], on[2:]])
             same = under[starts] == under[ends]
-            ok, _ = walk_segments(caster, points[starts[same]], points[ends[same]], agent, 0.25, margin, gap,
-                                  half_width=half_width)
+            ok, _ = walks_in_batch(caster, points[starts[same]], points[ends[same]], agent, 0.25, margin, gap,
+                                   half_width=half_width)
             assert ok.all()
             walks[half_width] += int(same.sum())
     # cluttered_room has no open triangle wide enough for the side lines' room: its wide walks are none

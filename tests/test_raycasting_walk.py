@@ -1,4 +1,4 @@
-"""``walk_segments`` over floors with cracks: a grating's slots are stepped over, a hole is not."""
+"""``walks_in_batch`` over floors with cracks: a grating's slots are stepped over, a hole is not."""
 from __future__ import annotations
 
 import numpy as np
@@ -6,7 +6,7 @@ import pytest
 import trimesh
 
 from g2s_core.config import PRESETS_DIR, load_config
-from g2s_plugins._raycasting import CRACK_STEPS, UP, AgentShape, RayCaster, ground_across_crack, walk_segments
+from g2s_plugins._raycasting import CRACK_STEPS, UP, AgentShape, RayCaster, ground_across_crack, walks_in_batch
 
 AGENT = AgentShape.from_config(load_config(PRESETS_DIR / "map_piece_sampling.yaml").agent)
 
@@ -26,7 +26,7 @@ def test_a_walk_along_a_grating_slot_steps_over_it(gap: float) -> None:
     slot = 0.08 + gap / 2.0  # the middle of the first slot
     starts = np.array([[0.5, 0.0, slot], [0.5, 0.0, 0.3], [0.5, 0.0, 0.2]])
     ends = np.array([[5.5, 0.0, slot], [5.5, 0.0, 2.0], [3.0, 0.0, 2.2]])
-    ok, _ = walk_segments(RayCaster(_grating(gap)), starts, ends, AGENT, 0.2)
+    ok, _ = walks_in_batch(RayCaster(_grating(gap)), starts, ends, AGENT, 0.2)
     assert ok.tolist() == [True, True, True]
 
 
@@ -35,12 +35,12 @@ def test_a_gap_wider_than_twice_the_crack_step_is_no_floor() -> None:
     mesh = trimesh.util.concatenate([trimesh.creation.box(bounds=[[0.0, -0.05, 0.0], [6.0, 0.0, 1.0]]),
                                      trimesh.creation.box(bounds=[[0.0, -0.05, 1.2], [6.0, 0.0, 2.2]])])
     starts, ends = np.array([[3.0, 0.0, 0.3], [3.0, 0.0, 1.1]]), np.array([[3.0, 0.0, 1.9], [5.0, 0.0, 1.1]])
-    ok, _ = walk_segments(RayCaster(mesh), starts, ends, AGENT, 0.1)
+    ok, _ = walks_in_batch(RayCaster(mesh), starts, ends, AGENT, 0.1)
     assert ok.tolist() == [False, False]
 
 
 def test_the_crack_rule_needs_ground_on_both_sides_along_one_of_its_sides() -> None:
-    # ground_across_crack is the one crack rule of walk_segments and of entry_exit's search for the floor's end.
+    # ground_across_crack is the one crack rule of walks_in_batch and of entry_exit's search for the floor's end.
     # Probes 0.1 m over: the middle of a 2 cm slot along x (slats across it along z only); 0.03 m past the deck's
     # end, over a slat (ground on one side along x, none along z); the 0.2 m gap between two decks (none a step away).
     caster = RayCaster(_grating(0.02))
@@ -76,7 +76,7 @@ def test_the_sampling_route_tries_each_side_of_a_crack_apart() -> None:
     # sampling route"). Each side tried apart, half a step then a step (CRACK_STEPS), finds a bar on both sides.
     slot = 0.03 + 0.03 + 0.015  # the middle of the second slot, z 0.06-0.09
     starts, ends = np.array([[0.5, 0.0, slot], [0.5, 0.0, 0.3]]), np.array([[5.5, 0.0, slot], [0.5, 0.0, 2.0]])
-    ok, _ = walk_segments(RayCaster(_grating(0.03, slat=0.03)), starts, ends, AGENT, 0.2)
+    ok, _ = walks_in_batch(RayCaster(_grating(0.03, slat=0.03)), starts, ends, AGENT, 0.2)
     assert ok.tolist() == [True, True]
 
 
@@ -91,5 +91,5 @@ def test_a_hole_across_a_walkway_wider_than_two_crack_steps_stays_a_hole(gap: fl
     on, _ = ground_across_crack(caster, probes, -UP, [np.array([0.0, 0.0, AGENT.radius / 8.0])], 0.5,
                                 lambda faces: faces >= 0, CRACK_STEPS)
     assert on.all() if floor else not on.any()
-    ok, _ = walk_segments(caster, np.array([[3.0, 0.0, 0.3]]), np.array([[3.0, 0.0, 1.9 + gap]]), AGENT, 0.02)
+    ok, _ = walks_in_batch(caster, np.array([[3.0, 0.0, 0.3]]), np.array([[3.0, 0.0, 1.9 + gap]]), AGENT, 0.02)
     assert ok.tolist() == [floor]

@@ -40,7 +40,7 @@ from g2s_plugins._raycasting import (
     disk_inside,
     ground_across_crack,
     head_room,
-    walk_segments,
+    walks_in_batch,
 )
 from g2s_plugins.graph_builders import sampling
 
@@ -319,13 +319,13 @@ def test_steep_slope_is_not_walkable():
     assert nx.number_connected_components(graph) == 2
 
 
-def test_walk_segments_batch():
+def test_walks_in_batch_on_a_floor_with_a_wall():
     mesh = level(floor(), box((-0.1, -0.2, -5.0), (0.1, 3.0, 0.0)))
     caster = RayCaster(mesh)
     agent = AgentShape.from_config(AGENT)
     starts = np.array([[-3.0, 0.0, 2.0], [-3.0, 0.0, -2.0], [-3.0, 0.0, 2.0]])
     ends = np.array([[3.0, 0.0, 2.0], [3.0, 0.0, -2.0], [-3.0, 0.0, 7.0]])  # clear, wall, off the floor
-    ok, rise = walk_segments(caster, starts, ends, agent, probe_step=0.25)
+    ok, rise = walks_in_batch(caster, starts, ends, agent, probe_step=0.25)
     assert ok.tolist() == [True, False, False]
     assert rise[0] == pytest.approx(0.0, abs=1e-6) and math.isinf(rise[2])
     hits = caster.first_hits(np.array([[0.0, 4.0, -3.0], [0.0, 1.0, 3.0], [0.0, 1.0, 9.0]]), np.array([0.0, -2.0, 0.0]))
@@ -347,7 +347,7 @@ def test_python_intersector_gives_the_embree_answers(monkeypatch: pytest.MonkeyP
 
     def answers(caster: RayCaster) -> list[np.ndarray]:
         down, sideways = caster.first_hits(origins, [0.0, -1.0, 0.0]), caster.first_hits(origins, directions)
-        ok, rise = walk_segments(caster, starts, ends, agent, probe_step=0.25)
+        ok, rise = walks_in_batch(caster, starts, ends, agent, probe_step=0.25)
         return [down.face, down.distance, sideways.face, sideways.distance, ok, rise]
 
     with_embree = RayCaster(mesh)

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 import trimesh
 
-from g2s_plugins._raycasting import AgentShape, RayCaster, _slabs_meet_triangles, bands_meet_walls, walk_segments
+from g2s_plugins._raycasting import AgentShape, RayCaster, _slabs_meet_triangles, bands_meet_walls, walks_in_batch
 from tests.test_sampling_doors import AGENT, box, rooms_joined
 
 
@@ -33,8 +33,8 @@ def test_the_body_slab_stops_a_walk_between_low_bollards() -> None:
     assert agent.body == pytest.approx((0.5, 1.95))
     for height, passes in [(0.7, False), (0.45, True)]:
         caster = RayCaster(bollard_row(height))
-        assert walk_segments(caster, starts, ends, agent, 0.25, half_width=0.45)[0].tolist() == [True]
-        assert walk_segments(caster, starts, ends, agent, 0.25, half_width=0.45, body=True)[0].tolist() == [passes]
+        assert walks_in_batch(caster, starts, ends, agent, 0.25, half_width=0.45)[0].tolist() == [True]
+        assert walks_in_batch(caster, starts, ends, agent, 0.25, half_width=0.45, body=True)[0].tolist() == [passes]
     lifted, along, side = starts + [0.0, 1.0, 0.0], ends - starts, np.array([[0.0, 0.0, 0.45]])
     caster = RayCaster(bollard_row(0.7))
     assert bands_meet_walls(caster, lifted, along, side, 45.0).tolist() == [False]

@@ -10,7 +10,7 @@ import trimesh
 from g2s_core.config import AgentConfig
 from g2s_core.model import RunContext
 from g2s_plugins._raycasting import (AgentShape, RayCaster, _slices_meet_bands, bands_meet_walls, box_pairs,
-                                     walk_segments)
+                                     walks_in_batch)
 from g2s_plugins.graph_builders import sampling
 
 AGENT = AgentConfig(radius=0.5, height=2.0, max_climb=0.4, max_slope=45.0)
@@ -54,9 +54,9 @@ def test_the_side_lines_stop_a_walk_through_a_slot_and_not_beside_rising_ground(
     agent = AgentShape.from_config(AGENT)
     starts, ends = np.array([[-1.0, 0.0, 0.0]]), np.array([[1.0, 0.0, 0.0]])
     narrow, wide = RayCaster(two_rooms(0.8)), RayCaster(two_rooms(1.2))
-    assert walk_segments(narrow, starts, ends, agent, 0.25)[0].tolist() == [True]  # a line passes 0.4 m from a jamb
-    assert walk_segments(narrow, starts, ends, agent, 0.25, half_width=0.45)[0].tolist() == [False]
-    assert walk_segments(wide, starts, ends, agent, 0.25, half_width=0.45)[0].tolist() == [True]  # 0.6 m from each
+    assert walks_in_batch(narrow, starts, ends, agent, 0.25)[0].tolist() == [True]  # a line passes 0.4 m from a jamb
+    assert walks_in_batch(narrow, starts, ends, agent, 0.25, half_width=0.45)[0].tolist() == [False]
+    assert walks_in_batch(wide, starts, ends, agent, 0.25, half_width=0.45)[0].tolist() == [True]  # 0.6 m from each
     # A walk towards the foot of a 44-degree slope, ending 2 cm from it, for an agent 0.8 m tall: its side line
     # 0.45 m out, 0.4 m up, meets the slope near its end (0.415 m high 0.43 m past the foot): walkable ground rising
     # beside the walk, not a wall, as the agent checks' wall rays take it.
@@ -69,7 +69,7 @@ def test_the_side_lines_stop_a_walk_through_a_slot_and_not_beside_rising_ground(
     side = 0.45 * np.array([-0.28, 0.0, 4.0]) / np.hypot(0.28, 4.0)
     hits = hillside.first_hits(starts + side + [0.0, 0.4, 0.0], ends - starts)
     assert hits.distance[0] < np.linalg.norm(ends - starts) and hillside.walkable_faces(hits.face, 45.0).tolist() == [True]
-    assert walk_segments(hillside, starts, ends, low, 0.25, half_width=0.45)[0].tolist() == [True]
+    assert walks_in_batch(hillside, starts, ends, low, 0.25, half_width=0.45)[0].tolist() == [True]
 
 
 def opening_with_post(slot: float, post: float) -> trimesh.Trimesh:
@@ -102,9 +102,9 @@ def test_the_band_test_finds_a_post_that_no_line_meets() -> None:
     for offset in (0.0, 0.45, -0.45):
         assert caster.first_hits(lifted + [0.0, 0.0, offset], along).distance[0] > 2.0
     assert bands_meet_walls(caster, lifted, along, side, 45.0).tolist() == [True]
-    assert walk_segments(caster, starts, ends, agent, 0.25, half_width=0.45)[0].tolist() == [False]
+    assert walks_in_batch(caster, starts, ends, agent, 0.25, half_width=0.45)[0].tolist() == [False]
     through_wall = starts + [0.0, 0.0, 3.0], ends + [0.0, 0.0, 3.0]  # the lines find the wall, and so does the band
-    assert walk_segments(caster, *through_wall, agent, 0.25, half_width=0.45)[0].tolist() == [False]
+    assert walks_in_batch(caster, *through_wall, agent, 0.25, half_width=0.45)[0].tolist() == [False]
     assert bands_meet_walls(caster, through_wall[0] + [0.0, 1.0, 0.0], along, side, 45.0).tolist() == [True]
     # along the wall in the west room, the band's near side 0.5 m from its face
     beside, north, east = np.array([[-1.0, 1.0, -3.0]]), np.array([[0.0, 0.0, 2.0]]), np.array([[0.4, 0.0, 0.0]])

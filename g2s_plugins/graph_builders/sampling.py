@@ -39,7 +39,7 @@ wanted. No Recast is involved: ``context.navmesh`` stays ``None``.
    from a process-wide random generator that cannot be seeded from Python,
    so the same input gives a different sample on every call.
 5. *Edges*: pairs closer than ``connect_radius`` (scipy cKDTree) that pass
-   :func:`g2s_plugins._raycasting.walk_segments` (the segment lifted by half
+   :func:`g2s_plugins._raycasting.walks_in_batch` (the segment lifted by half
    the agent height hits nothing, nor do its copies moved ``DISK_SHARE`` ×
    ``clearance`` to either side, nor does a steep face pass through the slab
    those two sweep from above the agent's step to its head, so that a door, a
@@ -145,7 +145,7 @@ from g2s_plugins._raycasting import (
     head_room,
     hit_from_behind,
     ray_margin,
-    walk_segments,
+    walks_in_batch,
 )
 from g2s_plugins.area_gaps import likely_cause_of
 from g2s_plugins.play_space import PlaySpaceParams, cut_to_play_space
@@ -183,7 +183,7 @@ between them is longer than this many times their distance (see :func:`_gap_pair
 
 DISK_SHARE = 0.9
 """An edge is kept only where a disk of this share of ``clearance`` travels along it through no wall
-(:func:`~g2s_plugins._raycasting.walk_segments`' ``half_width``): just under cos 22.5 degrees (0.924), the least
+(:func:`~g2s_plugins._raycasting.walks_in_batch`' ``half_width``): just under cos 22.5 degrees (0.924), the least
 distance from a straight wall at which the agent checks' 8 compass rays accept a sample, so an edge along a wall
 between two accepted samples is not stopped by that wall. At 1.0, an edge 0.46 m from a wall of a 1.9 m corridor
 of the 1k dungeon is stopped and two samples are cut off; at 0.9, in a 0.2 m wall turned 0, 22 and 45 degrees, every
@@ -446,7 +446,7 @@ def agent_fits(
             ground[missing[crack], k] = True
             distance[missing[crack], k] = beside[crack]
             kept[missing[~crack]] = False
-        # Head room over the landing point, from the probe's own origin (see walk_segments).
+        # Head room over the landing point, from the probe's own origin (see walks_in_batch).
         tested = ground & kept[:, None]
         ground[tested] = clear_above(cast, origins[tested], agent.height - distance[tested])
         ok[rows] = ground.all(axis=1)  # a probe that put its point out kept no ground
@@ -1022,17 +1022,17 @@ def _walkable_pairs(
 ) -> np.ndarray:
     """(m,) bool: the agent walks straight between the two samples of each of ``pairs`` ((m, 2) ids), a disk
     of ``half_width`` (m) travelling along the way through no wall, and no steep face in the slab it sweeps from
-    above the agent's step to its head (:func:`~g2s_plugins._raycasting.walk_segments` with ``body``); with
+    above the agent's step to its head (:func:`~g2s_plugins._raycasting.walks_in_batch` with ``body``); with
     ``shift`` (m), along the way moved that far sideways, horizontally at right angles to it (to the left of the
     walk from the first sample to the second; negative: to the right), and lengthened by ``half_width`` past both
-    samples, so that the band also covers the disks at its ends: :func:`walk_segments` leaves the ends' disks to
+    samples, so that the band also covers the disks at its ends: :func:`walks_in_batch` leaves the ends' disks to
     the caller, and the moved ends are not the samples the caller checked, nor does every added sample clear a
     thin post between its compass rays (in ``benchmarks/post_slots.py``'s 0.95 m slots turned 22 degrees one
     stands 0.35 m off the post, and a moved band ending there crossed the slot).
 
     Unmoved, a pair on one open floor triangle (``floor``: each sample's, from
     :meth:`~g2s_plugins._raycasting.OpenFloors.faces_under` with ``room`` at least ``half_width``; -1 for none)
-    passes without a ray; the others get :func:`walk_segments`, a batch at a time.
+    passes without a ray; the others get :func:`walks_in_batch`, a batch at a time.
     """
     keep = np.zeros(len(pairs), dtype=bool) if shift else (floor[pairs[:, 0]] >= 0) & (floor[pairs[:, 0]] == floor[pairs[:, 1]])
     tested = np.nonzero(~keep)[0]
@@ -1046,7 +1046,7 @@ def _walkable_pairs(
             left = np.divide(left, length, out=np.zeros_like(left), where=length > 0)  # a vertical pair: none
             longer = np.divide(half_width * along, length, out=np.zeros_like(along), where=length > 0)
             starts, ends = starts + shift * left - longer, ends + shift * left + longer
-        keep[rows] = walk_segments(cast, starts, ends, agent, probe_step, half_width=half_width, body=True)[0]
+        keep[rows] = walks_in_batch(cast, starts, ends, agent, probe_step, half_width=half_width, body=True)[0]
 
     _each_batch(caster, walks, _in_batches(tested, MAX_EDGE_BATCH))
     return keep

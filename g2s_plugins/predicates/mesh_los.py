@@ -17,7 +17,7 @@ most ``probe_step`` apart along it a short downward ray finds walkable ground
 with head room, within ``max_surface_gap`` above or below the segment and
 within ``max_climb + margin`` below it, and the ground between two
 neighbouring points rises or falls no more than a step (max climb) or the max
-slope allows (:func:`g2s_plugins._raycasting.walk_segments`). The tolerances'
+slope allows (:func:`g2s_plugins._raycasting.walks_in_batch`). The tolerances'
 defaults are ``surface_los``'s, so the two predicates differ only in how they
 test the line of sight.
 
@@ -32,7 +32,7 @@ Which predicate to use:
   segment passes beside (``clearance: 0``: a line of zero width, as before
   6 December 2026), where Recast erodes by the whole agent radius, and
   tests the agent's body between its side lines from knee to head
-  (``walk_segments(..., body=True)``, as the builder's edges), so a walk
+  (``walks_in_batch(..., body=True)``, as the builder's edges), so a walk
   does not pass over a crate the builder's edges stop at; only with a
   ``max_surface_gap`` no larger than the knee's height, which keeps the
   ground under the line below the slab.
@@ -45,9 +45,9 @@ through Embree when available, and, where those pass, its share of one band
 test per batch (:func:`g2s_plugins._raycasting.bands_meet_walls`, which
 looks the band up in the steep triangles' grid, built once per mesh:
 docs/sampling.md, "Simplified edges as wide as the agent"). A batch is
-:func:`g2s_plugins._raycasting.walks_in_batch`: ``walk_segments``' answers bit
-for bit, its arithmetic in the C++ extension round the same ray casts (a
-batch of a few dozen walks cost numpy's per-call overhead, about 0.75 ms).
+:func:`g2s_plugins._raycasting.walks_in_batch`, the builder's walk test, its
+arithmetic in the C++ extension round the ray casts (in numpy a batch of a
+few dozen walks cost its per-call overhead, about 0.75 ms).
 Answers are cached per (A, C) pair for the predicate's life: the heat guarantee's rounds
 (:mod:`g2s_plugins.heat_guarantee`) ask the same predicate, so a later
 round casts rays only for walks no earlier round tested, and on the
