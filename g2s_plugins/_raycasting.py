@@ -893,6 +893,27 @@ def hit_from_behind(caster: RayCaster, hits: Hits) -> np.ndarray:
     return behind
 
 
+def net_crossings(caster: RayCaster, origins: np.ndarray, direction: np.ndarray) -> np.ndarray:
+    """(n,) int64: along each ray, the triangles met on their back side minus those met from the front, over every
+    crossing to the ray's end (:meth:`RayCaster.all_hits`).
+
+    For closed outward-wound bodies this is the winding number of the ray's start, the number of bodies holding it,
+    whatever the direction: entering a body and leaving it again cancel, leaving the one the start lies in does not.
+    A triangle with a reversed twin (a two-sided surface) and one the ray runs along count 0.
+
+    Args:
+        origins: (n, 3) ray starts, metres.
+        direction: (3,) the rays' direction (any non-zero length).
+
+    Cost: one multiple-hit query, one intersector pass per crossing depth (O(crossings) rays).
+    """
+    origins = np.asarray(origins, dtype=np.float64).reshape(-1, 3)
+    ray, _, face, _ = caster.all_hits(origins, direction)
+    facing = caster.face_normals[face] @ (np.asarray(direction, dtype=np.float64) / np.linalg.norm(direction))
+    sign = np.where(caster.scene.twin[face] >= 0, 0, np.sign(np.where(np.abs(facing) < 1e-9, 0.0, facing)))
+    return np.bincount(ray, weights=sign, minlength=len(origins)).round().astype(np.int64)
+
+
 def has_room(distance: np.ndarray, needed: np.ndarray | float) -> np.ndarray:
     """(n,) bool: upward rays that hit at ``distance`` (metres, ``inf``: nothing) leave ``needed`` metres free."""
     return distance >= np.asarray(needed, dtype=np.float64) - HEIGHT_TOLERANCE
