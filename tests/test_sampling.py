@@ -42,6 +42,7 @@ from g2s_plugins._raycasting import (
     walk_segments,
 )
 from g2s_plugins.graph_builders import sampling
+from tests.conftest import benchmark
 
 AGENT = AgentConfig(radius=0.5, height=2.0, max_climb=0.4, max_slope=45.0)
 CONFIGS = Path(__file__).resolve().parents[1] / "configs"
@@ -263,6 +264,33 @@ def test_inside_closed_solids_needs_back_faces_all_round():
     expected = {solid: [True, False], inverted: [False, False], bridge: [False, False], shell: [True, False]}
     for mesh, answer in expected.items():
         np.testing.assert_array_equal(sampling.inside_closed_solids(RayCaster(mesh), points, agent), answer)
+
+
+def test_closed_solid_overlapping_a_wall_a_ceiling_or_another_is_inside():
+    # The box's own face lies buried in the other solid, so along that way the first face met is the other solid's,
+    # seen from the front: only the crossings beyond it tell that the point is inside.
+    agent = AgentShape.from_config(AGENT)
+    ground = floor(-10, 10, -10, 10)
+    shaft = box((0.0, 0.0, 0.0), (4.0, 3.0, 4.0))
+    wall = box((-10.0, 0.0, -0.25), (10.0, 3.2, 0.1))  # overlaps the shaft's south 0.1 m
+    pillar = box((0.0, -0.1, 0.0), (4.0, 3.3, 4.0))  # through the floor and the ceiling slab
+    ceiling = box((-10.0, 3.2, -10.0), (10.0, 3.4, 10.0))
+    crate = box((3.0, 0.0, 3.0), (7.0, 3.0, 7.0))  # overlaps the shaft's north-east corner
+    points = np.array([[2.0, 0.0, 2.0], [2.0, 0.0, 6.0], [-5.0, 0.0, 5.0], [5.0, 0.0, 5.0]])
+    expected = {
+        level(ground, shaft, wall): [True, False, False, False],
+        level(ground, pillar, ceiling): [True, False, False, False],
+        level(ground, shaft, wall, ceiling): [True, False, False, False],
+        level(ground, shaft, crate): [True, False, False, True],
+    }
+    for mesh, answer in expected.items():
+        np.testing.assert_array_equal(sampling.inside_closed_solids(RayCaster(mesh), points, agent), answer)
+
+
+def test_box_overlapping_a_wall_keeps_no_sample_inside():
+    overlaps = benchmark("closed_solid_overlaps")
+    for case in ("overlapping a wall", "pillar, floor to ceiling"):
+        assert overlaps.measure(case, 0.0)["inside"] == 0, case
 
 
 def test_hole_in_the_floor_is_not_crossed():
