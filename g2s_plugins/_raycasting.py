@@ -893,25 +893,40 @@ def hit_from_behind(caster: RayCaster, hits: Hits) -> np.ndarray:
     return behind
 
 
-def net_crossings(caster: RayCaster, origins: np.ndarray, direction: np.ndarray) -> np.ndarray:
-    """(n,) int64: along each ray, the triangles met on their back side minus those met from the front, over every
-    crossing to the ray's end (:meth:`RayCaster.all_hits`).
+def back_face_lead(caster: RayCaster, origins: np.ndarray, direction: np.ndarray) -> np.ndarray:
+    """(n,) int64: along each ray, the most by which the triangles met on their back side outnumber those met from
+    the front, over the first k crossings, for every k up to the ray's end (:meth:`RayCaster.all_hits`); 0 when they
+    never do.
 
-    For closed outward-wound bodies this is the winding number of the ray's start, the number of bodies holding it,
-    whatever the direction: entering a body and leaving it again cancel, leaving the one the start lies in does not.
-    A triangle with a reversed twin (a two-sided surface) and one the ray runs along count 0.
+    Seen from inside outward-wound closed bodies, a crossing from behind leaves one and one from the front enters
+    one, so the count after k crossings is how many bodies the start lies in less how many the k-th crossing's far
+    side lies in: it reaches 1 or more where the ray has left a body holding its start, whatever other bodies it
+    entered and left on the way (the first crossing is that body's own face unless the face lies buried in another
+    body). The lead, not the count at the ray's end: a level's open meshes (a flight of single-sided risers, a
+    rock missing its back) add crossings far from the start that no body pairs. A triangle with a reversed twin (a
+    two-sided surface) and one the ray runs along count 0.
 
     Args:
         origins: (n, 3) ray starts, metres.
         direction: (3,) the rays' direction (any non-zero length).
 
-    Cost: one multiple-hit query, one intersector pass per crossing depth (O(crossings) rays).
+    Cost: one multiple-hit query, one intersector pass per crossing depth (O(crossings) rays), and an
+    O(c log c) sort of the c crossings.
     """
     origins = np.asarray(origins, dtype=np.float64).reshape(-1, 3)
-    ray, _, face, _ = caster.all_hits(origins, direction)
+    ray, distance, face, _ = caster.all_hits(origins, direction)
+    lead = np.zeros(len(origins), dtype=np.int64)
+    if len(ray) == 0:
+        return lead
+    order = np.lexsort((distance, ray))
+    ray, face = ray[order], face[order]
     facing = caster.face_normals[face] @ (np.asarray(direction, dtype=np.float64) / np.linalg.norm(direction))
-    sign = np.where(caster.scene.twin[face] >= 0, 0, np.sign(np.where(np.abs(facing) < 1e-9, 0.0, facing)))
-    return np.bincount(ray, weights=sign, minlength=len(origins)).round().astype(np.int64)
+    sign = np.where((caster.scene.twin[face] >= 0) | (np.abs(facing) < 1e-9), 0, np.sign(facing)).astype(np.int64)
+    count = np.cumsum(sign)
+    starts = np.flatnonzero(np.r_[True, ray[1:] != ray[:-1]])
+    count -= np.repeat(count[starts] - sign[starts], np.diff(np.r_[starts, len(ray)]))  # restart at each ray
+    lead[ray[starts]] = np.maximum(np.maximum.reduceat(count, starts), 0)
+    return lead
 
 
 def has_room(distance: np.ndarray, needed: np.ndarray | float) -> np.ndarray:

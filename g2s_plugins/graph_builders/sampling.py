@@ -141,7 +141,7 @@ from g2s_plugins._raycasting import (
     crack_sides,
     ground_across_crack,
     head_room,
-    net_crossings,
+    back_face_lead,
     ray_margin,
     walk_segments,
 )
@@ -467,20 +467,19 @@ def inside_closed_solids(caster: RayCaster, points: np.ndarray, agent: AgentShap
 
     A point is inside when, straight up from it and along +x, +z, -x and -z
     from half the agent's height over it (rays of unlimited length), the
-    triangles met on their back side outnumber those met from the front
-    (:func:`~g2s_plugins._raycasting.net_crossings`). From inside an
-    outward-wound closed body the ray leaves that body (one back face) and
-    enters and leaves any other body it passes (one of each), so every
-    direction counts one or more, also where the body's own face lies buried
-    in a wall, a floor, a ceiling or another body it overlaps: there the
-    first triangle met is that other body's face, seen from the front. A
-    place meant to be walked is seen from the front: a room's walls face into
-    it, whether they are single quads (-1) or wall slabs (-1 then +1), and
-    the underside of a bridge or a slab faces down at it (-1 then +1). A
-    single-sided upper floor (a quad facing up) counts +1 above a room, but
-    the room's walls do not, so its floor stays. A ray that meets nothing
-    counts 0 and leaves the point outside. A level wound inside out counts
-    below 0 everywhere, so it loses no point here and
+    triangles met on their back side come to outnumber those met from the
+    front (:func:`~g2s_plugins._raycasting.back_face_lead`): a closed body
+    wound outwards, seen from within. Its own face met first is one back
+    face; where that face lies buried in a wall, a floor, a ceiling or
+    another body it overlaps, the first face met is that other body's, seen
+    from the front, and its back face, past the buried one, makes the lead.
+    A place meant to be walked is seen from the front: a room's walls face
+    into it, a single quad (-1, never made up) or a wall slab (-1 then +1),
+    and the underside of a bridge or a slab faces down at it (-1 then +1).
+    A single-sided upper floor (a quad facing up) is met from behind above a
+    room, but the room's walls are not, so its floor stays. A ray that meets
+    nothing leaves the point outside. A level wound inside out is met from
+    the front first everywhere, so it loses no point here and
     :mod:`g2s_plugins.walkable_check` still speaks about it.
 
     The agent checks cannot tell: a solid taller than the agent and wider
@@ -489,12 +488,12 @@ def inside_closed_solids(caster: RayCaster, points: np.ndarray, agent: AgentShap
 
     Cost: one multiple-hit upward ray a point (one intersector pass per
     triangle crossed above it, and one more), and four multiple-hit
-    horizontal rays for the points that count above 0 upwards.
+    horizontal rays for the points with a lead upwards.
     """
     points = np.asarray(points, dtype=np.float64).reshape(-1, 3)
-    rows = np.nonzero(net_crossings(caster, points + EPSILON * UP, UP) > 0)[0]
+    rows = np.nonzero(back_face_lead(caster, points + EPSILON * UP, UP) > 0)[0]
     for direction in SOLID_DIRECTIONS:
-        rows = rows[net_crossings(caster, points[rows] + 0.5 * agent.height * UP, direction) > 0]
+        rows = rows[back_face_lead(caster, points[rows] + 0.5 * agent.height * UP, direction) > 0]
     inside = np.zeros(len(points), dtype=bool)
     inside[rows] = True
     return inside
