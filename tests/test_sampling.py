@@ -287,6 +287,20 @@ def test_closed_solid_overlapping_a_wall_a_ceiling_or_another_is_inside():
         np.testing.assert_array_equal(sampling.inside_closed_solids(RayCaster(mesh), points, agent), answer)
 
 
+def test_closed_bodies_are_welded_closed_and_wound_one_way():
+    crate = box((0.0, 0.0, 0.0), (1.0, 1.0, 1.0))  # 12 triangles, welded
+    unwelded = trimesh.Trimesh(crate.triangles.reshape(-1, 3), np.arange(36).reshape(12, 3), process=False)
+    lidless = trimesh.Trimesh(crate.vertices, crate.faces[crate.face_normals[:, 1] < 0.5], process=False)
+    flipped = crate.copy()
+    flipped.faces[0] = flipped.faces[0][::-1]  # one triangle wound the wrong way
+    sheet = trimesh.Trimesh([[0, 2, 0], [1, 2, 0], [1, 2, 1], [0, 2, 1]], [[0, 2, 1], [0, 3, 2]], process=False)
+    two_sided = trimesh.Trimesh(sheet.vertices, np.vstack([sheet.faces, sheet.faces[:, ::-1]]), process=False)
+    for mesh, closed in [(crate, 12), (unwelded, 12), (lidless, 0), (flipped, 0), (sheet, 0), (two_sided, 0)]:
+        assert int(RayCaster(mesh).scene.closed.sum()) == closed
+    both = level(crate, sheet)  # a closed body and an open quad in one mesh
+    np.testing.assert_array_equal(RayCaster(both).scene.closed, [True] * 12 + [False] * 2)
+
+
 def test_box_overlapping_a_wall_keeps_no_sample_inside():
     overlaps = benchmark("closed_solid_overlaps")
     for case in ("overlapping a wall", "pillar, floor to ceiling"):
