@@ -137,11 +137,11 @@ from g2s_plugins._raycasting import (
     OpenFloors,
     RayCaster,
     all_hits_down,
+    back_face_lead,
     clear_above,
     crack_sides,
     ground_across_crack,
     head_room,
-    back_face_lead,
     ray_margin,
     walk_segments,
 )
