@@ -469,12 +469,16 @@ def _closed_bodies(triangles: np.ndarray, twin: np.ndarray) -> np.ndarray:
     m = len(triangles)
     if m == 0:
         return np.zeros(0, dtype=bool)
-    _, corner = np.unique(triangles.reshape(-1, 3), axis=0, return_inverse=True)
+    # one id per distinct corner position (a lexicographic sort: several times faster than numpy's unique rows)
+    corners = triangles.reshape(-1, 3)
+    by_position = np.lexsort(corners.T[::-1])
+    ordered = corners[by_position]
+    corner = np.empty(3 * m, dtype=np.int64)
+    corner[by_position] = np.cumsum(np.r_[True, (ordered[1:] != ordered[:-1]).any(axis=1)]) - 1
     corner = corner.reshape(m, 3)
     start, end = corner.reshape(-1), corner[:, [1, 2, 0]].reshape(-1)  # edge k of face k // 3, walked start -> end
     low, high = np.minimum(start, end), np.maximum(start, end)
-    _, edge, count = np.unique(np.stack([low, high], axis=1), axis=0, return_inverse=True, return_counts=True)
-    edge = edge.reshape(-1)
+    _, edge, count = np.unique(low * (int(corner.max()) + 1) + high, return_inverse=True, return_counts=True)
     forward = np.bincount(edge, weights=start < end, minlength=len(count))
     good = (count == 2) & (forward == 1)  # two triangles, one walking it each way
     face = np.arange(3 * m) // 3
