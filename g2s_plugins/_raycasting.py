@@ -34,6 +34,8 @@ from typing import Any
 
 import numpy as np
 import trimesh
+from scipy import sparse
+from scipy.sparse import csgraph
 from trimesh import util
 
 from g2s_plugins import _slabs, _walks
@@ -126,6 +128,11 @@ class _Scene:
     def normal_y(self) -> np.ndarray:
         """(m,) float64, contiguous: the normals' y, which :func:`walks_in_batch`'s extension reads per call."""
         return np.ascontiguousarray(self.face_normals[:, 1])
+
+    @cached_property
+    def closed(self) -> np.ndarray:
+        """(m,) bool: :func:`_closed_bodies` of the triangles (once per mesh, on first use)."""
+        return _closed_bodies(self.triangles, self.twin)
 
     @classmethod
     def of_mesh(cls, mesh: trimesh.Trimesh) -> _Scene:
@@ -457,6 +464,45 @@ def _reversed_twins(triangles: np.ndarray) -> np.ndarray:
     down = np.where(normal_first < 0, first, second)[facing]
     twin[down] = np.where(normal_first < 0, second, first)[facing]
     return twin
+
+
+def _closed_bodies(triangles: np.ndarray, twin: np.ndarray) -> np.ndarray:
+    """(m,) bool: each triangle belongs to a closed body wound one way: a set of triangles joined along shared edges
+    (corners at the same coordinates, welded or not) in which every edge is walked once each way, by two triangles.
+
+    A crate, a wall slab or a pillar exported as a closed solid is one; a single-sided quad, an open-ended tube, a
+    box missing a face, a body with a triangle wound the wrong way, a degenerate triangle's body and a two-sided
+    face (:func:`_reversed_twins`, a flat "body" of two) are not. Cost: sorts of the 3m corners and edges,
+    O(m log m), and one connected-components pass (scipy's union-find over the edges, O(m)).
+    """
+    m = len(triangles)
+    if m == 0:
+        return np.zeros(0, dtype=bool)
+    # one id per distinct corner position (a lexicographic sort: several times faster than numpy's unique rows)
+    corners = triangles.reshape(-1, 3)
+    by_position = np.lexsort(corners.T[::-1])
+    ordered = corners[by_position]
+    corner = np.empty(3 * m, dtype=np.int64)
+    corner[by_position] = np.cumsum(np.r_[True, (ordered[1:] != ordered[:-1]).any(axis=1)]) - 1
+    corner = corner.reshape(m, 3)
+    start, end = corner.reshape(-1), corner[:, [1, 2, 0]].reshape(-1)  # edge k of face k // 3, walked start -> end
+    low, high = np.minimum(start, end), np.maximum(start, end)
+    _, edge, count = np.unique(low * (int(corner.max()) + 1) + high, return_inverse=True, return_counts=True)
+    forward = np.bincount(edge, weights=start < end, minlength=len(count))
+    good = (count == 2) & (forward == 1)  # two triangles, one walking it each way
+    face = np.arange(3 * m) // 3
+    bad_face = np.zeros(m, dtype=bool)
+    bad_face[face[~good[edge]]] = True
+    bad_face[twin >= 0] = True
+    bad_face[twin[twin >= 0]] = True
+    # the two triangles on each good edge: neighbours in the edges' order
+    order = np.argsort(edge, kind="stable")
+    at = np.flatnonzero((edge[order[1:]] == edge[order[:-1]]) & good[edge[order[1:]]])
+    join = sparse.coo_matrix((np.ones(len(at)), (face[order[at]], face[order[at + 1]])), shape=(m, m))
+    _, body = csgraph.connected_components(join, directed=False)
+    open_body = np.zeros(body.max() + 1, dtype=bool)
+    open_body[body[bad_face]] = True
+    return ~open_body[body]
 
 
 def ray_margin(caster: RayCaster, reach: float) -> float:
@@ -900,6 +946,52 @@ def hit_from_behind(caster: RayCaster, hits: Hits) -> np.ndarray:
     behind = hits.hit
     behind[behind] = np.einsum("ij,ij->i", caster.face_normals[hits.face[behind]], hits.unit[behind]) > 0.0
     return behind
+
+
+def back_face_lead(caster: RayCaster, origins: np.ndarray, direction: np.ndarray) -> np.ndarray:
+    """(n,) int64: along each ray, the most by which the triangles met on their back side outnumber those met from
+    the front, over its first k crossings (:meth:`RayCaster.all_hits`), k from 1 up to and including the first
+    crossing of a triangle of no closed body (:func:`_closed_bodies`; the ray's end if none); 0 when they never do.
+
+    Seen from inside outward-wound closed bodies, a crossing from behind leaves one and one from the front enters
+    one, so the count after k crossings is how many bodies the start lies in less how many the k-th crossing's far
+    side lies in: it reaches 1 where the ray leaves a body holding its start, whatever other bodies it entered and
+    left on the way (the first crossing is that body's own face unless the face lies buried in another body: a
+    wall, a floor, a ceiling, a crate it overlaps). A triangle of no closed body (a single-sided quad, a flight of
+    open risers) pairs with nothing, so the count stops at the first one: its side is its answer, as for a first
+    hit. Of a two-sided face the up-facing side counts (:meth:`RayCaster.first_hits`' rule); a triangle the ray
+    runs along counts 0.
+
+    Args:
+        origins: (n, 3) ray starts, metres.
+        direction: (3,) the rays' direction (any non-zero length).
+
+    Cost: one multiple-hit query, one intersector pass per crossing depth (O(crossings) rays), and an
+    O(c log c) sort of the c crossings.
+    """
+    origins = np.asarray(origins, dtype=np.float64).reshape(-1, 3)
+    ray, distance, face, _ = caster.all_hits(origins, direction)
+    lead = np.zeros(len(origins), dtype=np.int64)
+    if len(ray) == 0:
+        return lead
+    order = np.lexsort((distance, ray))
+    ray, face = ray[order], face[order]
+    face = np.where(caster.scene.twin[face] >= 0, caster.scene.twin[face], face)
+    facing = caster.face_normals[face] @ (np.asarray(direction, dtype=np.float64) / np.linalg.norm(direction))
+    sign = np.where(np.abs(facing) < 1e-9, 0, np.sign(facing)).astype(np.int64)
+    starts = np.flatnonzero(np.r_[True, ray[1:] != ray[:-1]])
+    lengths = np.diff(np.r_[starts, len(ray)])
+
+    def running(values: np.ndarray) -> np.ndarray:
+        """Each ray's running sum of ``values`` (one a crossing, in order along the ray)."""
+        total = np.cumsum(values)
+        return total - np.repeat(total[starts] - values[starts], lengths)
+
+    unpaired = ~caster.scene.closed[face]
+    counted = running(unpaired.astype(np.int64)) - unpaired <= 0  # up to the first unpaired crossing
+    count = np.where(counted, running(sign), np.iinfo(np.int64).min)
+    lead[ray[starts]] = np.maximum(np.maximum.reduceat(count, starts), 0)
+    return lead
 
 
 def has_room(distance: np.ndarray, needed: np.ndarray | float) -> np.ndarray:

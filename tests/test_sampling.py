@@ -43,6 +43,7 @@ from g2s_plugins._raycasting import (
     walks_in_batch,
 )
 from g2s_plugins.graph_builders import sampling
+from tests.conftest import benchmark
 
 AGENT = AgentConfig(radius=0.5, height=2.0, max_climb=0.4, max_slope=45.0)
 CONFIGS = Path(__file__).resolve().parents[1] / "configs"
@@ -264,6 +265,47 @@ def test_inside_closed_solids_needs_back_faces_all_round():
     expected = {solid: [True, False], inverted: [False, False], bridge: [False, False], shell: [True, False]}
     for mesh, answer in expected.items():
         np.testing.assert_array_equal(sampling.inside_closed_solids(RayCaster(mesh), points, agent), answer)
+
+
+def test_closed_solid_overlapping_a_wall_a_ceiling_or_another_is_inside():
+    # The box's own face lies buried in the other solid, so along that way the first face met is the other solid's,
+    # seen from the front: only the crossings beyond it tell that the point is inside.
+    agent = AgentShape.from_config(AGENT)
+    ground = floor(-10, 10, -10, 10)
+    shaft = box((0.0, 0.0, 0.0), (4.0, 3.0, 4.0))
+    wall = box((-10.0, 0.0, -0.25), (10.0, 3.2, 0.1))  # overlaps the shaft's south 0.1 m
+    pillar = box((0.0, -0.1, 0.0), (4.0, 3.3, 4.0))  # through the floor and the ceiling slab
+    ceiling = box((-10.0, 3.2, -10.0), (10.0, 3.4, 10.0))
+    crate = box((3.0, 0.0, 3.0), (7.0, 3.0, 7.0))  # overlaps the shaft's north-east corner
+    points = np.array([[2.0, 0.0, 2.0], [2.0, 0.0, 6.0], [-5.0, 0.0, 5.0], [5.0, 0.0, 5.0]])
+    expected = {
+        level(ground, shaft, wall): [True, False, False, False],
+        level(ground, pillar, ceiling): [True, False, False, False],
+        level(ground, shaft, wall, ceiling): [True, False, False, False],
+        level(ground, shaft, crate): [True, False, False, True],
+    }
+    for mesh, answer in expected.items():
+        np.testing.assert_array_equal(sampling.inside_closed_solids(RayCaster(mesh), points, agent), answer)
+
+
+def test_closed_bodies_are_welded_closed_and_wound_one_way():
+    crate = box((0.0, 0.0, 0.0), (1.0, 1.0, 1.0))  # 12 triangles, welded
+    unwelded = trimesh.Trimesh(crate.triangles.reshape(-1, 3), np.arange(36).reshape(12, 3), process=False)
+    lidless = trimesh.Trimesh(crate.vertices, crate.faces[crate.face_normals[:, 1] < 0.5], process=False)
+    flipped = crate.copy()
+    flipped.faces[0] = flipped.faces[0][::-1]  # one triangle wound the wrong way
+    sheet = trimesh.Trimesh([[0, 2, 0], [1, 2, 0], [1, 2, 1], [0, 2, 1]], [[0, 2, 1], [0, 3, 2]], process=False)
+    two_sided = trimesh.Trimesh(sheet.vertices, np.vstack([sheet.faces, sheet.faces[:, ::-1]]), process=False)
+    for mesh, closed in [(crate, 12), (unwelded, 12), (lidless, 0), (flipped, 0), (sheet, 0), (two_sided, 0)]:
+        assert int(RayCaster(mesh).scene.closed.sum()) == closed
+    both = level(crate, sheet)  # a closed body and an open quad in one mesh
+    np.testing.assert_array_equal(RayCaster(both).scene.closed, [True] * 12 + [False] * 2)
+
+
+def test_box_overlapping_a_wall_keeps_no_sample_inside():
+    overlaps = benchmark("closed_solid_overlaps")
+    for case in ("overlapping a wall", "pillar, floor to ceiling"):
+        assert overlaps.measure(case, 0.0)["inside"] == 0, case
 
 
 def test_hole_in_the_floor_is_not_crossed():

@@ -139,11 +139,11 @@ from g2s_plugins._raycasting import (
     OpenFloors,
     RayCaster,
     all_hits_down,
+    back_face_lead,
     clear_above,
     crack_sides,
     ground_across_crack,
     head_room,
-    hit_from_behind,
     ray_margin,
     walks_in_batch,
 )
@@ -473,32 +473,36 @@ SOLID_DIRECTIONS = COMPASS[::2]
 def inside_closed_solids(caster: RayCaster, points: np.ndarray, agent: AgentShape) -> np.ndarray:
     """(n,) bool: each ground point lies inside a closed solid (a building block standing on the floor).
 
-    A point is inside when the first triangle straight above it and the
-    first ones along +x, +z, -x and -z from half the agent's height over it
-    (rays of unlimited length) are all met on their back side
-    (:func:`~g2s_plugins._raycasting.hit_from_behind`): a closed body wound
-    outwards, seen from within. A place meant to be walked is seen from the
-    front: a room's walls face into it, whether they are single quads or
-    the faces of wall slabs, and the underside of a bridge or a slab faces
-    down at it. A single-sided upper floor (a quad facing up) is met from
-    behind above a room, but the room's walls are not, so its floor stays.
-    A ray that meets nothing leaves the point outside. A level wound inside
-    out is met from the front everywhere, so it loses no point here and
+    A point is inside when, straight up from it and along +x, +z, -x and -z
+    from half the agent's height over it (rays of unlimited length), the
+    triangles met on their back side come to outnumber those met from the
+    front (:func:`~g2s_plugins._raycasting.back_face_lead`): a closed body
+    wound outwards, seen from within. Its own face met first is one back
+    face; where that face lies buried in a wall, a floor, a ceiling or
+    another body it overlaps, the first face met is that other body's, seen
+    from the front, and its back face, past the buried one, makes the lead.
+    A place meant to be walked is seen from the front: a room's walls face
+    into it, a single quad (-1, never made up) or a wall slab (-1 then +1),
+    and the underside of a bridge or a slab faces down at it (-1 then +1).
+    A single-sided upper floor (a quad facing up) is met from behind above a
+    room, but the room's walls are not, so its floor stays. A ray that meets
+    nothing leaves the point outside. A level wound inside out is met from
+    the front first everywhere, so it loses no point here and
     :mod:`g2s_plugins.walkable_check` still speaks about it.
 
     The agent checks cannot tell: a solid taller than the agent and wider
     than twice the clearance leaves its floor's middle with head room and
     no wall or ledge within the clearance.
 
-    Cost: one upward ray a point, and up to four horizontal rays for the
-    points whose first triangle above is met from behind.
+    Cost: one multiple-hit upward ray a point (one intersector pass per
+    triangle crossed above it, and one more), and four multiple-hit
+    horizontal rays for the points with a lead upwards.
     """
     points = np.asarray(points, dtype=np.float64).reshape(-1, 3)
-    inside = hit_from_behind(caster, caster.first_hits(points + EPSILON * UP, UP))
-    rows = np.nonzero(inside)[0]
+    rows = np.nonzero(back_face_lead(caster, points + EPSILON * UP, UP) > 0)[0]
     for direction in SOLID_DIRECTIONS:
-        rows = rows[hit_from_behind(caster, caster.first_hits(points[rows] + 0.5 * agent.height * UP, direction))]
-    inside[:] = False
+        rows = rows[back_face_lead(caster, points[rows] + 0.5 * agent.height * UP, direction) > 0]
+    inside = np.zeros(len(points), dtype=bool)
     inside[rows] = True
     return inside
 
