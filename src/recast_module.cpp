@@ -172,6 +172,7 @@ struct Settings {
     bool filter_low_hanging_obstacles, filter_low_height_spans;
     LedgeFilter ledge_filter;
     Partition partition;
+    bool recast_head_room;  // the low-height filter as Recast ships it: one cell more head room than the agent's
 };
 
 // Limits of Recast 1.5.1's voxel settings: compact spans store their height in
@@ -954,7 +955,8 @@ void build_tile(const Input& in, const int* tris, int ntris, const rcConfig& c, 
     // top of the rounding (a floor's top rounded up, a flat one by a whole cell, a ceiling's underside down). Passed
     // one cell less, it keeps gaps of walkableHeight cells: a ceiling less than the agent's height over a flat floor
     // still never holds floor, and one cell height over it always does (docs/navmesh.md, "Head room under an edge").
-    if (s.filter_low_height_spans) rcFilterWalkableLowHeightSpans(&ctx, c.walkableHeight - 1, *solid);
+    if (s.filter_low_height_spans)
+        rcFilterWalkableLowHeightSpans(&ctx, s.recast_head_room ? c.walkableHeight : c.walkableHeight - 1, *solid);
 
     // 3. Compact heightfield, erosion by the agent radius.
     std::unique_ptr<rcCompactHeightfield, CompactDel> chf(rcAllocCompactHeightfield());
@@ -1783,13 +1785,14 @@ NavMeshCore* build_navmesh(nb::ndarray<const V, nb::shape<-1, 3>, nb::c_contig, 
                            int verts_per_poly, double detail_sample_dist, double detail_sample_max_error,
                            long long max_cells, std::optional<int> tile_size, int threads,
                            bool filter_low_hanging_obstacles, const std::string& ledge_filter,
-                           bool filter_low_height_spans, const std::string& partition) {
+                           bool filter_low_height_spans, const std::string& partition,
+                           bool recast_head_room) {
     Settings s{cell_size, cell_height, agent_height, agent_radius, agent_max_climb, agent_max_slope,
                region_min_size, region_merge_size, edge_max_len, edge_max_error, verts_per_poly,
                detail_sample_dist, detail_sample_max_error, max_cells,
                tile_size ? *tile_size : -1, threads,
                filter_low_hanging_obstacles, filter_low_height_spans, parse_ledge_filter(ledge_filter),
-               parse_partition(partition)};
+               parse_partition(partition), recast_head_room};
     if (tile_size && *tile_size < 0) throw nb::value_error("Recast: tile_size must be None (automatic), 0 (solo) or >= 16 cells");
     check_settings(s);
     const size_t nv = vertices.shape(0), nt = faces.shape(0);
@@ -1828,6 +1831,7 @@ void def_build(nb::module_& m) {
           nb::arg("max_cells") = 100000000LL, nb::arg("tile_size") = nb::none(), nb::arg("threads") = 0,
           nb::arg("filter_low_hanging_obstacles") = true, nb::arg("ledge_filter") = "recast",
           nb::arg("filter_low_height_spans") = true, nb::arg("partition") = "auto",
+          nb::arg("recast_head_room") = false,
           nb::rv_policy::take_ownership,
           "Build a navmesh from (N,3) vertices and (M,3) triangle faces. World-unit settings, "
           "derived into Recast's voxel configuration as Recast's demo does. tile_size: None "

@@ -12,12 +12,12 @@ from tests.conftest import benchmark
 head_room = benchmark("head_room")
 
 
-def walks(preset: str, head: float, lift: float) -> bool:
-    """Whether the navmesh of ``preset`` joins the two ends of a flat corridor under ``head`` m of head room, its
-    floor ``lift`` m over a multiple of the cell height."""
+def walks(preset: str, head: float, lift: float, **params) -> bool:
+    """Whether the navmesh of ``preset`` (its graph's ``params`` overridden) joins the two ends of a flat corridor
+    under ``head`` m of head room, its floor ``lift`` m over a multiple of the cell height."""
     config = load_config(PRESETS_DIR / f"{preset}.yaml")
     mesh, ends = head_room.case_mesh("corridor", head, 0.0, lift)
-    return head_room.navmesh_walks(mesh, ends, config.agent, RecastParams(**config.graph.params))
+    return head_room.navmesh_walks(mesh, ends, config.agent, RecastParams(**{**config.graph.params, **params}))
 
 
 @pytest.mark.parametrize("preset, lift", [("map_piece", 0.0), ("map_analysis", 0.1)])
@@ -33,3 +33,10 @@ def test_a_corridor_a_little_over_the_agent_holds_floor(preset, lift):
 def test_a_corridor_under_the_agent_holds_none(preset, lift):
     assert not walks(preset, 1.9, lift)
     assert not walks(preset, 1.95, lift)
+
+
+@pytest.mark.parametrize("preset, lift", [("map_piece", 0.0), ("map_analysis", 0.1)])
+def test_recasts_own_filter_stays_for_the_paper_preset(preset, lift):
+    # `head_room: recast` (map_analysis_paper) keeps the filter as Recast ships it: a cell more than the agent
+    assert not walks(preset, 2.05, lift, head_room="recast")
+    assert walks(preset, 2.3, lift, head_room="recast")

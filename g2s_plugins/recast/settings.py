@@ -115,6 +115,12 @@ class RecastParams(PluginParams):
         True, description="Recast's rcFilterWalkableLowHeightSpans: drop spans with less head room than the agent, "
         "in cells (called with one cell less than the agent's height: Recast's own needs a cell more; docs/navmesh.md)"
     )
+    head_room: Literal["agent", "recast"] = Field(
+        "agent",
+        description="agent: a gap of the agent's height in cells holds floor; recast: the low-height filter as "
+        "Recast ships it, one cell more (the paper preset, to build the navmesh the paper's method was measured on; "
+        "docs/navmesh.md, Head room a little over the agent's height)",
+    )
     partition: Literal["auto", "watershed", "monotone", "layers"] = Field(
         "auto",
         description="Recast's region partition: auto (watershed, and a tile where a watershed region overlaps "
@@ -245,6 +251,7 @@ def resolve_settings(agent: Any, params: RecastParams | None = None) -> dict[str
         ledge_filter=p.ledge_filter,
         filter_low_height_spans=bool(p.filter_low_height_spans),
         partition=p.partition,
+        recast_head_room=p.head_room == "recast",
     )
     _check_voxels(settings, keys, cs_given=p.cell_size is not None, ch_given=p.cell_height is not None)
     return settings
