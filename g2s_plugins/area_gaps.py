@@ -282,7 +282,8 @@ def shut_in(caster: RayCaster, points: np.ndarray, agent: AgentConfig, winding: 
     """(n,) bool: each ground point (n,3) lies inside a closed solid of the caster's mesh: of the first faces
     straight up from it and along +x, +z, -x and -z from half the agent's height over it, at least four are faces
     of closed bodies met from inside (:func:`met_from_inside`; the rays of
-    :func:`g2s_plugins.graph_builders.sampling.inside_closed_solids`, which needs back faces to come to outnumber front faces along all five).
+    :func:`g2s_plugins.graph_builders.sampling.inside_closed_solids`, which needs back faces to come to outnumber
+    front faces along all five).
 
     A render object inside a collision hull meets one of them (the bandstand's roof over its deck, the fountain's
     column beside its basin, benchmarks/level_kinds.py ``collision_hulls``); a place meant to be walked sees its
