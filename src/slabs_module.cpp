@@ -95,20 +95,27 @@ bool slab_meets_triangle(const double* corner, const double* origin, const doubl
     return !undefined && low < reach && high > -reach;
 }
 
+// (n,) bool: answer(i) for each i, computed without the GIL into an array numpy owns
+template <typename Answer>
+nb::ndarray<nb::numpy, bool, nb::ndim<1>> answers(size_t n, const Answer& answer) {
+    auto* out = new bool[n > 0 ? n : 1];
+    nb::capsule owner(out, [](void* p) noexcept { delete[] static_cast<bool*>(p); });
+    {
+        nb::gil_scoped_release release;
+        for (size_t i = 0; i < n; ++i) out[i] = answer(i);
+    }
+    return nb::ndarray<nb::numpy, bool, nb::ndim<1>>(out, {n}, owner);
+}
+
 nb::ndarray<nb::numpy, bool, nb::ndim<1>> slabs_meet_triangles(Corners triangles, Rows3 origin, Rows3 along,
                                                                Rows3 side, Rows2 heights, double inset) {
     const size_t k = triangles.shape(0);
     if (origin.shape(0) != k || along.shape(0) != k || side.shape(0) != k || heights.shape(0) != k)
         throw nb::value_error("slabs_meet_triangles: triangles (k, 3, 3), origin, along and side (k, 3), heights (k, 2)");
-    auto* meets = new bool[k > 0 ? k : 1];
-    nb::capsule owner(meets, [](void* p) noexcept { delete[] static_cast<bool*>(p); });
-    {
-        nb::gil_scoped_release release;
-        for (size_t i = 0; i < k; ++i)
-            meets[i] = slab_meets_triangle(triangles.data() + 9 * i, origin.data() + 3 * i, along.data() + 3 * i,
-                                           side.data() + 3 * i, heights.data() + 2 * i, inset);
-    }
-    return nb::ndarray<nb::numpy, bool, nb::ndim<1>>(meets, {k}, owner);
+    return answers(k, [&](size_t i) {
+        return slab_meets_triangle(triangles.data() + 9 * i, origin.data() + 3 * i, along.data() + 3 * i,
+                                   side.data() + 3 * i, heights.data() + 2 * i, inset);
+    });
 }
 
 // The steep triangles of a mesh binned in a 3-D grid of cubes (BoxGrid's origin and cell), for the whole of
@@ -152,15 +159,10 @@ class WallGrid {
         const size_t n = low.shape(0);
         if (along.shape(0) != n || side.shape(0) != n || heights.shape(0) != n)
             throw nb::value_error("WallGrid.meets: low, along and side (n, 3), heights (n, 2)");
-        auto* meets = new bool[n > 0 ? n : 1];
-        nb::capsule owner(meets, [](void* p) noexcept { delete[] static_cast<bool*>(p); });
-        {
-            nb::gil_scoped_release release;
-            for (size_t i = 0; i < n; ++i)
-                meets[i] = slab_meets_any(low.data() + 3 * i, along.data() + 3 * i, side.data() + 3 * i,
-                                          heights.data() + 2 * i, inset);
-        }
-        return nb::ndarray<nb::numpy, bool, nb::ndim<1>>(meets, {n}, owner);
+        return answers(n, [&](size_t i) {
+            return slab_meets_any(low.data() + 3 * i, along.data() + 3 * i, side.data() + 3 * i,
+                                  heights.data() + 2 * i, inset);
+        });
     }
 
   private:
