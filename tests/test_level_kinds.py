@@ -1,5 +1,5 @@
-"""The level kinds of rounds 9-28 (``benchmarks/level_kinds.py``, ``level_kinds26.py``, ``level_kinds27.py``,
-``level_kinds28.py``) build the levels they describe.
+"""The level kinds of rounds 9-30 (``benchmarks/level_kinds.py``, ``level_kinds26.py`` ... ``level_kinds30.py``) build
+the levels they describe.
 
 Smoke tests of quick generators (most well under a second each to build and to give a navmesh; the theatre's and
 the cliff dwellings' thousands of hulls take about 5 s of CPU, the metroidvania's flights 1-2 s a build): the connected
@@ -1422,3 +1422,67 @@ def test_the_dune_seas_backs_and_crests_are_walked(round_29):
     and over its back), with over 1,000 m² of floor over 3 m up."""
     label, nav = areas(round_29["dune_sea"](0), DROPS)
     assert label.max() == 0 and nav.areas[nav.centres[:, 1] > 3.0].sum() > 1000.0
+
+
+@pytest.fixture(scope="module")
+def round_30() -> dict[str, Callable[..., trimesh.Trimesh]]:
+    """``benchmarks/level_kinds30.py``'s KINDS (the thirtieth round): each call builds its level anew."""
+    return benchmark("level_kinds30").KINDS
+
+
+def test_the_aircraft_carriers_hangar_and_flight_deck_are_one_area_through_the_trunks(round_30):
+    """A flight deck 8 m over a hangar, joined only by two stair trunks (the lifts are floor at one level each): one
+    area, with over 3,000 m² on the hangar deck (under 0.5 m) and over 6,000 m² on the flight deck (7.5-8.5 m)."""
+    label, nav = areas(round_30["aircraft_carrier"](0), DROPS)
+    assert label.max() == 0
+    y = nav.centres[:, 1] - 0.2
+    assert nav.areas[y < 0.5].sum() > 3000.0 and nav.areas[(y > 7.5) & (y < 8.5)].sum() > 6000.0
+
+
+def test_the_submarines_hatches_join_its_compartments_on_all_three_decks(round_30):
+    """Compartments in a line whose bulkheads are crossed through hatches (sills 0.30-0.36 m, 2.15-2.30 m clear over
+    them), three decks joined by steep flights: one area, with floor along more than 100 m of each deck."""
+    label, nav = areas(round_30["submarine"](0), DROPS)
+    assert label.max() == 0
+    y = nav.centres[:, 1] - 0.2
+    for floor in (0.0, 2.9, 5.8):
+        on = np.abs(y - floor) < 0.1
+        assert np.ptp(nav.centres[on, 0]) > 100.0, floor
+
+
+def test_the_velodromes_bends_banked_under_the_limit_are_walked(round_30):
+    """A banked track whose bends stand at 40-44 degrees, reached through a tunnel under it: one area, floor in the
+    tunnel (over 2 m down) and high on the banking of both bends (polygons whose middles stand over 4 m up, west and
+    east of the middle; the straights' banking reaches under 2 m)."""
+    label, nav = areas(round_30["velodrome"](0), DROPS)
+    assert label.max() == 0
+    x, y = nav.centres[:, 0], nav.centres[:, 1] - 0.2
+    assert (y < -2.0).any() and (y[x < 0.0] > 4.0).any() and (y[x > 0.0] > 4.0).any()
+
+
+def test_the_drained_pools_floors_are_reached_down_their_steps(round_30):
+    """Pools sunk into the deck, each entered only by its steps or ramp: one area, floor on the diving pool's bottom
+    (4.5 m down) and on the main pool's break between 1.6 and 3.4 m down."""
+    label, nav = areas(round_30["drained_pools"](0), DROPS)
+    assert label.max() == 0
+    y = nav.centres[:, 1] - 0.2
+    assert nav.areas[y < -4.0].sum() > 30.0 and ((y > -3.4) & (y < -1.6)).any()
+
+
+def test_the_mogul_pistes_slopes_under_the_limit_join_its_terraces(round_30):
+    """Two pitches at 36-41 degrees between three terraces: one area, holding floor on the top terrace (over 60 m up)
+    and on the base terrace."""
+    label, nav = areas(round_30["mogul_piste"](0), DROPS)
+    assert label.max() == 0
+    y = nav.centres[:, 1] - 0.2
+    assert nav.areas[y > 60.0].sum() > 500.0 and nav.areas[y < 0.1].sum() > 1000.0
+
+
+def test_the_marinas_five_pontoons_are_reached_down_their_gangways(round_30):
+    """Five pontoons 0.4 m over the water, each reached down a gangway from a quay 2.2 m up: one area, with floor on
+    each pontoon (five runs of floor 0.4 m up more than 20 m out from the quay, apart along x)."""
+    label, nav = areas(round_30["marina"](0), DROPS)
+    assert label.max() == 0
+    x, y, z = nav.centres.T
+    out = np.sort(x[(np.abs(y - 0.2 - 0.4) < 0.1) & (z < -20.0)])
+    assert 1 + (np.diff(out) > 15.0).sum() == 5, out
