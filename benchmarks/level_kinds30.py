@@ -423,8 +423,8 @@ def drained_pools(seed: int) -> trimesh.Trimesh:
     pools = [main, dive, leisure, learner, spa]
     s.slab(0.0, size_x, 0.0, size_z, 0.0, pools, thickness=0.3)
     for x0, x1, z0, z1 in pools:  # each pool's walls round its hole, down to under its deepest floor
-        for a, b in (((x0 - 0.3, z0 - 0.3), (x1 + 0.3, z0 - 0.3)), ((x0 - 0.3, z1 + 0.3), (x1 + 0.3, z1 + 0.3))):
-            s.box(a[0], b[0], -5.0, 0.0, a[1] - 0.15, a[1] + 0.15)
+        for z in (z0 - 0.15, z1 + 0.15):
+            s.box(x0 - 0.3, x1 + 0.3, -5.0, 0.0, z - 0.15, z + 0.15)
         for x in (x0 - 0.15, x1 + 0.15):
             s.box(x - 0.15, x + 0.15, -5.0, 0.0, z0, z1)
     # the main pool: shallow slope, the break, the deep end
