@@ -1,22 +1,21 @@
 """Level kinds of the thirtieth held-out round (issue 9): generators no preset setting was made on.
 
 Six kinds of shipped game levels that stress what no earlier round did, each about 400-1,200 navmesh polygons with the
-presets' agent (radius 0.5 m, height 2 m, climb 0.4 m, slope 45 degrees), seeds 0-2, built from the solids and
-helpers of ``benchmarks/level_kinds.py`` (imported, not copied): ``aircraft_carrier`` (a flight deck over a hangar
-joined by two stair trunks, deck-edge lifts that are floor at one level only, helicopters whose drooping rotor blades
-hang 1.7-2.6 m over the deck, about the agent's 2 m), ``submarine`` (three decks of compartments in a line, every
-bulkhead crossed through a hatch whose sill, 0.30-0.36 m, stands just under the agent's 0.4 m climb and whose clear
-height over the sill, 2.05-2.25 m, just over its 2 m height), ``velodrome`` (a banked oval track whose bends stand at
-40-44 degrees, just under the agent's 45-degree limit, reached from outside through a tunnel under it),
-``drained_pools`` (a leisure centre's emptied pools sunk 0.9-4.5 m into the deck, entered only by their steps and a
-beach ramp, the main pool's floor breaking down to its deep end at 30-42 degrees), ``mogul_piste`` (a ski slope at
-36-41 degrees whose mogul field's lee faces pass 45 degrees, snow fences across it, chalets on its
-terraces) and ``marina`` (five pontoons reached down gangways, each with finger berths 1.2-1.8 m wide, about the 1.5 m the
-agent's 1 m needs on Recast's cells of 0.25 m, between moored boats).
+presets' agent (radius 0.5 m, height 2 m, climb 0.4 m, slope 45 degrees), seeds 0-2, built from the solids and helpers
+of ``benchmarks/level_kinds.py`` (imported, not copied): ``aircraft_carrier`` (a flight deck over a hangar joined by two
+stair trunks, deck-edge lifts that are floor at one level only, helicopters whose drooping rotor blades hang 1.7-2.6 m
+over the deck, about the agent's 2 m), ``submarine`` (three decks of compartments in a line, every bulkhead crossed
+through a hatch whose sill, 0.30-0.36 m, stands just under the agent's 0.4 m climb and whose clear height over the sill,
+2.05-2.25 m, just over its 2 m height), ``velodrome`` (a banked oval track whose bends stand at 40-44 degrees, just
+under the agent's 45-degree limit, reached from outside through a tunnel under it), ``drained_pools`` (a leisure
+centre's emptied pools sunk 0.9-4.5 m into the deck, entered only by their steps and a beach ramp, the main pool's floor
+breaking down to its deep end at 30-42 degrees), ``mogul_piste`` (a ski slope at 36-41 degrees whose mogul field's lee
+faces pass 45 degrees, snow fences across it, chalets on its terraces) and ``marina`` (five pontoons reached down
+gangways, each with finger berths 1.2-1.8 m wide, about the 1.5 m the agent's 1 m needs on Recast's cells of 0.25 m,
+between moored boats).
 
 Run: ``.venv/bin/python benchmarks/level_kinds30.py OUT_DIR [--kinds velodrome marina] [--seeds 0 1 2]`` writes
-``OUT_DIR/<kind>_s<seed>.obj``; ``benchmarks/analysis_quality.py --levels`` takes the kinds' names too.
-"""
+``OUT_DIR/<kind>_s<seed>.obj``; ``benchmarks/analysis_quality.py --levels`` takes the kinds' names too."""
 
 from __future__ import annotations
 
@@ -67,10 +66,10 @@ def _jet(s: _Solids, p: np.ndarray, heading: np.ndarray, y: float) -> None:
 
 
 def _helicopter(s: _Solids, p: np.ndarray, heading: np.ndarray, y: float, tip: float, spin: float) -> None:
-    """A helicopter at plan point ``p`` (x, z) facing the unit ``heading`` on a deck at ``y``: a ridged body 12 m long,
-    2.4 m wide, 0.5 m to its eaves (its ridge 1.9 m up: the deck inside it is no floor), a mast to a hub 4.0 m up and four blades 0.5 m in chord and 7 m long turned ``spin`` radians,
-    each drooping from the hub to its tip's underside ``tip`` m over the deck (under a blade tip under 2 m the agent
-    does not stand; a blade is too narrow to hold floor)."""
+    """A helicopter at plan point ``p`` (x, z) facing the unit ``heading`` on a deck at ``y``: a ridged body 12 m long, 2.4
+    m wide, 0.5 m to its eaves (its ridge 1.9 m up: the deck inside it is no floor), a mast to a hub 4.0 m up and four
+    blades 0.5 m in chord and 7 m long turned ``spin`` radians, each drooping from the hub to its tip's underside
+    ``tip`` m over the deck (under a blade tip under 2 m the agent does not stand; a blade is too narrow to hold floor)."""
     _ridged_strip(s, p - heading * 6.0, p + heading * 6.0, 2.4, y - 0.3, y + 0.5)
     s.box(p[0] - 0.3, p[0] + 0.3, y + 1.0, y + 4.2, p[1] - 0.3, p[1] + 0.3)
     for k in range(4):
@@ -83,8 +82,8 @@ def _helicopter(s: _Solids, p: np.ndarray, heading: np.ndarray, y: float, tip: f
 
 
 def aircraft_carrier(seed: int) -> trimesh.Trimesh:
-    """An aircraft carrier (a naval shooter's or a spy game's ship) 240-260 m long, 36-40 m in beam: a flight deck 8 m
-    over the sea (nothing under the ship is floor) with an angled deck sponsoned out to port aft, over a hangar 0.2-0.8 of
+    """An aircraft carrier (a naval shooter's or a spy game's ship) 240-260 m long, 36-40 m in beam: a flight deck 8 m over
+    the sea (nothing under the ship is floor) with an angled deck sponsoned out to port aft, over a hangar 0.2-0.8 of
     its length under 7.5 m of head room, walled, whose floor is the hangar deck (y = 0). Three deck-edge lifts 14 x 10 m
     outside the hull, each through an opening 14 m wide in the hangar's side wall: two at the flight deck's height, one
     (drawn) lowered to the hangar deck's, so each is floor at one level only (the lifts are not walked up or down); a
@@ -92,10 +91,10 @@ def aircraft_carrier(seed: int) -> trimesh.Trimesh:
     island (ridged, 26-30 x 8 m) on the starboard edge between the starboard lifts; two stair trunks
     (:func:`level_kinds._stair_tower`, two storeys of 4 m) inside the hangar along its port wall, doors onto the hangar
     and onto the flight deck (a deckhouse): the only ways between the two decks. Parked on the flight deck 16-20 jets
-    (:func:`_jet`, wings folded), 6-8 helicopters (:func:`_helicopter`) whose four blades droop to a tip 1.7-2.6 m
-    over the deck, drawn per helicopter (about the agent's 2 m), and 10-14 tow tractors; in the hangar 7-9 jets and 3-4
+    (:func:`_jet`, wings folded), 6-8 helicopters (:func:`_helicopter`) whose four blades droop to a tip 1.7-2.6 m over
+    the deck, drawn per helicopter (about the agent's 2 m), and 10-14 tow tractors; in the hangar 7-9 jets and 3-4
     helicopters (as many as fit of each, 9 m and 7.6 m clear of each other's middles).
-
+    
     Expected (written before the first run): one area (the two decks joined by the trunks alone); the lowered lifts
     floor of the hangar, the raised ones of the flight deck, the centre-line lift's hole and the hangar's openings onto
     the raised lifts' shafts drops a designer expects the structure never to cross. Floor under a blade whose tip is
@@ -166,25 +165,24 @@ def submarine(seed: int) -> trimesh.Trimesh:
     """A missile submarine's pressure hull (a submarine level) 120-140 m long along x, three decks inside it 2.9 m apart,
     each under 2.6 m of head room: the lower deck (y = 0) 5.6-6.4 m wide, the middle (2.9) 8.4 m, the upper (5.8) 7.6 m
     (a closed lid over it, :func:`level_kinds._lid`), the hull's sides vertical walls at each deck's width. Bulkheads
-    0.4 m thick cut it into 8-9 compartments 11-17 m long (the missile compartment 22-26 m); each bulkhead is crossed
-    on each deck by one hatch 1.6 m wide (a real one is nearer 0.8 m, but the agent is 1 m wide) on the deck's centre
-    line: *a sill 0.30-0.36 m high* (just under the agent's 0.4 m climb) 0.5 m deep, and over it *a clear height of
-    2.15-2.30 m* (0.15-0.3 m over the agent's 2 m) under a lintel, both drawn per hatch. On each deck a passage 1.8-2.0 m wide
-    along the centre line: on the lower deck machinery, racks and tanks (blocks 0.8-1.2 m deep, 1-2.2 m high) along
-    both hull sides, on the decks above cabins and offices (3-4.5 m wide, doors 1.6 m, a bunk or desk each) along both
-    sides, but in the control room and the mess (open, consoles or tables). The missile compartment holds two rows of
-    6-8 tubes (octagons 1.1 m in radius through every deck, stopping 1 m under the lid) either side of the passage,
-    closed blocks 1.6 m high between them and the hull on every deck (the tubes' access, no floor). Four
-    steep flights (10 steps of 0.29 / 0.30 m, about 44 degrees, 1.6 m wide, walled from the passage, railed round their
-    hole) join the decks: lower to middle in the control room and the engine room, middle to upper in the mess and the
-    torpedo room.
-
+    0.4 m thick cut it into 8-9 compartments 11-17 m long (the missile compartment 22-26 m); each bulkhead is crossed on
+    each deck by one hatch 1.6 m wide (a real one is nearer 0.8 m, but the agent is 1 m wide) on the deck's centre line:
+    *a sill 0.30-0.36 m high* (just under the agent's 0.4 m climb) 0.5 m deep, and over it *a clear height of 2.15-2.30
+    m* (0.15-0.3 m over the agent's 2 m) under a lintel, both drawn per hatch. On each deck a passage 1.8-2.0 m wide
+    along the centre line: on the lower deck machinery, racks and tanks (blocks 0.8-1.2 m deep, 1-2.2 m high) along both
+    hull sides, on the decks above cabins and offices (3-4.5 m wide, doors 1.6 m, a bunk or desk each) along both sides,
+    but in the control room and the mess (open, consoles or tables). The missile compartment holds two rows of 6-8 tubes
+    (octagons 1.1 m in radius through every deck, stopping 1 m under the lid) either side of the passage, closed blocks
+    1.6 m high between them and the hull on every deck (the tubes' access, no floor). Four steep flights (10 steps of
+    0.29 / 0.30 m, about 44 degrees, 1.6 m wide, walled from the passage, railed round their hole) join the decks: lower
+    to middle in the control room and the engine room, middle to upper in the mess and the torpedo room.
+    
     Expected (written before the first run): one area (every hatch's sill climbed and its clear height over the agent's;
     docs/navmesh.md, "Head room a little over the agent's height", walks every doorway from 2.15 m on this grid, and a
     draft's hatches of 2.05-2.25 m closed where its rule says, so the clear height is drawn from 2.15 m; a sill over
-    0.375 m, Recast's three cells of climb, would close a hatch too, which none is drawn to be). Traffic highest along the decks' centre lines through the hatches and at the
-    flights, lowest in the cabins and at the bow and stern ends; the structure through each hatch, never through a
-    bulkhead or a tube."""
+    0.375 m, Recast's three cells of climb, would close a hatch too, which none is drawn to be). Traffic highest along
+    the decks' centre lines through the hatches and at the flights, lowest in the cabins and at the bow and stern ends;
+    the structure through each hatch, never through a bulkhead or a tube."""
     rng = np.random.default_rng(seed)
     length = float(rng.uniform(120.0, 140.0))
     decks = [(0.0, float(rng.uniform(2.8, 3.2))), (2.9, 4.2), (5.8, 3.8)]  # (floor, half width)
@@ -271,20 +269,21 @@ def submarine(seed: int) -> trimesh.Trimesh:
 
 
 def velodrome(seed: int) -> trimesh.Trimesh:
-    """A velodrome (a cycling or racing game's track): a banked oval of two straights 36-44 m long joined by two bends
-    of 20-24 m radius at the track's inner edge, the track 7-8 m wide, its surface a ruled sheet rising from the inner
-    edge (y = 0, a flat apron 1 m wide inside it) to the outer one at the banking of each point: 10-13 degrees on the
+    """A velodrome (a cycling or racing game's track): a banked oval of two straights 36-44 m long joined by two bends of
+    20-24 m radius at the track's inner edge, the track 7-8 m wide, its surface a ruled sheet rising from the inner edge
+    (y = 0, a flat apron 1 m wide inside it) to the outer one at the banking of each point: 10-13 degrees on the
     straights and *40-44 degrees in the bends* (drawn per bend, just under the agent's 45-degree limit), each change
     eased over 20 m of the inner edge; a wall 0.3 m thick stands round the outer edge to 1.1 m over it. The infield
     (ground at 0, team cabins, benches) lies inside the inner edge, the grounds (ground at 0, trees, parked cars, a car
-    park of rows of cars in the north-east corner, a fence 2 m high round them) outside the wall; the only way between them is a tunnel 3 m wide under the south straight,
-    its floor 3 m down, reached by a flight of 20 steps (0.15 / 0.30 m) at each end.
-
-    Expected (written before the first run): one area (the tunnel the way between the infield and the grounds; the
-    track joined to the infield along the whole apron). The whole track walked, bends included (each under 45 degrees),
-    up to its outer wall; no floor on the wall, under the track or on a cabin. Traffic highest through the tunnel and on
-    the infield's and the grounds' ways to it, lowest on the bends' upper banking; a designer expects the structure
-    through the tunnel, never through the track's sheet or over the outer wall."""
+    park of rows of cars in the north-east corner, a fence 2 m high round them) outside the wall; the only way between
+    them is a tunnel 3 m wide under the south straight, its floor 3 m down, reached by a flight of 20 steps (0.15 / 0.30
+    m) at each end.
+    
+    Expected (written before the first run): one area (the tunnel the way between the infield and the grounds; the track
+    joined to the infield along the whole apron). The whole track walked, bends included (each under 45 degrees), up to
+    its outer wall; no floor on the wall, under the track or on a cabin. Traffic highest through the tunnel and on the
+    infield's and the grounds' ways to it, lowest on the bends' upper banking; a designer expects the structure through
+    the tunnel, never through the track's sheet or over the outer wall."""
     rng = np.random.default_rng(seed)
     straight, radius, width = float(rng.uniform(36.0, 44.0)), float(rng.uniform(20.0, 24.0)), float(rng.uniform(7.0, 8.0))
     banks = [math.tan(math.radians(float(rng.uniform(40.0, 44.0)))) for _ in range(2)]
@@ -417,8 +416,10 @@ def drained_pools(seed: int) -> trimesh.Trimesh:
     main = (west + 4.0, west + 29.0, 3.0, 3.0 + main_w)
     dive_side = float(rng.uniform(9.0, 10.0))
     dive = (main[1] + 4.0, main[1] + 4.0 + dive_side, 4.0, 4.0 + dive_side)
-    leisure = (west + 4.0, west + 4.0 + float(rng.uniform(16.0, 18.0)), size_z - 18.0, size_z - 18.0 + float(rng.uniform(10.0, 12.0)))
-    learner = (leisure[1] + 4.0, leisure[1] + 4.0 + float(rng.uniform(12.0, 14.0)), size_z - 17.0, size_z - 17.0 + float(rng.uniform(8.0, 9.0)))
+    leisure = (west + 4.0, west + 4.0 + float(rng.uniform(16.0, 18.0)), size_z - 18.0,
+               size_z - 18.0 + float(rng.uniform(10.0, 12.0)))
+    learner = (leisure[1] + 4.0, leisure[1] + 4.0 + float(rng.uniform(12.0, 14.0)), size_z - 17.0,
+               size_z - 17.0 + float(rng.uniform(8.0, 9.0)))
     spa = (learner[1] + 4.0, learner[1] + 9.0, size_z - 15.0, size_z - 10.0)
     pools = [main, dive, leisure, learner, spa]
     s.slab(0.0, size_x, 0.0, size_z, 0.0, pools, thickness=0.3)
@@ -520,7 +521,8 @@ def mogul_piste(seed: int) -> trimesh.Trimesh:
     on_pitch = ((gz > bounds[1] + 2.0) & (gz < bounds[2] - 2.0)) | ((gz > bounds[3] + 2.0) & (gz < bounds[4] - 2.0))
     field = on_pitch & (gx > size_x / 3) & (gx < 2 * size_x / 3)
     spacing, bump = float(rng.uniform(3.8, 4.6)), float(rng.uniform(0.3, 0.5))
-    moguls = bump * np.maximum(np.sin(2 * math.pi * (gx + gz) / spacing / 1.414) * np.sin(2 * math.pi * (gx - gz) / spacing / 1.414), 0.0)
+    moguls = bump * np.maximum(np.sin(2 * math.pi * (gx + gz) / spacing / 1.414)
+                               * np.sin(2 * math.pi * (gx - gz) / spacing / 1.414), 0.0)
     heights = heights + np.where(field, moguls, 0.0)
     s = _Solids()
 
@@ -549,7 +551,9 @@ def mogul_piste(seed: int) -> trimesh.Trimesh:
     _terrain(s, xs, zs, heights, ~under)
     for p in range(2):  # snow fences across the groomed slope east of the field, each on the slope at its middle
         for _ in range(int(rng.integers(3, 6))):
-            x, z, long = float(rng.uniform(2 * size_x / 3 + 2.0, size_x - 20.0)), float(rng.uniform(bounds[2 * p + 1] + 8.0, bounds[2 * p + 2] - 8.0)), float(rng.uniform(8.0, 14.0))
+            x = float(rng.uniform(2 * size_x / 3 + 2.0, size_x - 20.0))
+            z = float(rng.uniform(bounds[2 * p + 1] + 8.0, bounds[2 * p + 2] - 8.0))
+            long = float(rng.uniform(8.0, 14.0))
             y = ground_at(x + long / 2, z)
             s.box(x, x + long, y - 1.0, y + 1.2, z - 0.05, z + 0.05)
     for z in np.arange(bounds[1] + 6.0, bounds[4], 18.0):  # lift pylons up the east edge
@@ -562,20 +566,20 @@ def mogul_piste(seed: int) -> trimesh.Trimesh:
 
 
 def marina(seed: int) -> trimesh.Trimesh:
-    """A marina (an open-world coast's harbour, a heist's getaway) in a basin 190-210 m wide along x: a quay 20 m deep
-    (its top 2.2 m over the water, no floor on the water) along the north with 4-6 buildings (ridged) and bollards; from
-    it 5 main pontoons 2.4-3.0 m wide and 60-80 m long run south, decks 0.4 m over the water, each reached down a
-    gangway 1.8 m wide, railed (1 m), 8-9 m long (10-12 degrees) from the quay's edge to the pontoon's head; each pontoon
-    ends in a T-head 3 m wide and 18-22 m long, and along both its sides finger berths 8-11 m long every 5-6 m whose
-    *width, 1.2-1.8 m drawn per pontoon, straddles the 1.5 m the agent's 1 m needs on Recast's cells of 0.25 m*; a
-    boat (a ridged hull 3-4 m wide, 8-10 m long) in 70 % of the berths; a fuel kiosk at one T-head's east end.
-
+    """A marina (an open-world coast's harbour, a heist's getaway) in a basin 190-210 m wide along x: a quay 20 m deep (its
+    top 2.2 m over the water, no floor on the water) along the north with 4-6 buildings (ridged) and bollards; from it 5
+    main pontoons 2.4-3.0 m wide and 60-80 m long run south, decks 0.4 m over the water, each reached down a gangway 1.8
+    m wide, railed (1 m), 8-9 m long (10-12 degrees) from the quay's edge to the pontoon's head; each pontoon ends in a
+    T-head 3 m wide and 18-22 m long, and along both its sides finger berths 8-11 m long every 5-6 m whose *width,
+    1.2-1.8 m drawn per pontoon, straddles the 1.5 m the agent's 1 m needs on Recast's cells of 0.25 m*; a boat (a
+    ridged hull 3-4 m wide, 8-10 m long) in 70 % of the berths; a fuel kiosk at one T-head's east end.
+    
     Expected (written before the first run): one area (every pontoon reached down its gangway); a pontoon's fingers
-    floor where wider than the agent's need and none where narrower (a designer would see those berths left out, a
-    real limit of the agent's size, not a fault); traffic highest on the quay and the gangways, then down the main
-    pontoons, lowest at the fingers' tips and the T-heads' ends; a designer expects the structure along the pontoons
-    with leaves onto the fingers, never across the water between two fingers, two pontoons or a pontoon and the quay
-    but down a gangway."""
+    floor where wider than the agent's need and none where narrower (a designer would see those berths left out, a real
+    limit of the agent's size, not a fault); traffic highest on the quay and the gangways, then down the main pontoons,
+    lowest at the fingers' tips and the T-heads' ends; a designer expects the structure along the pontoons with leaves
+    onto the fingers, never across the water between two fingers, two pontoons or a pontoon and the quay but down a
+    gangway."""
     rng = np.random.default_rng(seed)
     size_x = float(rng.uniform(190.0, 210.0))
     quay_z, quay_y, deck = 0.0, 2.2, 0.4
