@@ -1190,7 +1190,11 @@ def _extend(kept: list[_Edge], caster: RayCaster, s: _Settings, floor: np.ndarra
     jambs' faces from 7 degrees on, and the extension would run along the walls' outer faces.
     ``floor`` (n,): the height of the lowest floor each edge's ways walked down steps to, m (its ends are first
     lowered onto the ground below them as far down as that floor, :func:`_onto_ground_below`); NaN: at its samples'
-    level.
+    level. The candidates reach two agent radii and a sample step past each end (a navmesh's boundary stands a
+    radius in from the jambs), and on a sampled surface as far as a sample looks again for the floor's end
+    (``s.farther``): its boundary stands up to that far inside the floor's end along the edge too, and a wide end
+    covered by a few samples near its middle (a bridge's end between railings, 1.12 m of its 2.4 m reached from
+    them at 0 degrees) was left short by the difference (docs/entry_exit.md, "A thirtieth round of piece kinds").
     """
     n = len(kept)
     out = np.array([e.outward for e in kept])
@@ -1204,7 +1208,7 @@ def _extend(kept: list[_Edge], caster: RayCaster, s: _Settings, floor: np.ndarra
     first, last = _onto_floor_end(_onto_ground_below(first, out, _above(first, floor), caster, s),
                                   _onto_ground_below(last, out, _above(last, floor), caster, s), out, caster, s)
     along = _unit(np.cross(nrm, out))  # walking direction along the edge (interior on the left)
-    n_ext = max(1, int(math.ceil((2.0 * s.radius + s.step) / s.delta)))
+    n_ext = max(1, int(math.ceil(max(2.0 * s.radius + s.step, s.farther) / s.delta)))
     steps = s.delta * np.arange(1, n_ext + 1)
     ends = np.stack([first, last])  # (2, n, 3)
     sign = np.array([-1.0, 1.0])[:, None, None]
