@@ -1234,6 +1234,12 @@ def _extend(kept: list[_Edge], caster: RayCaster, s: _Settings, floor: np.ndarra
     beyond = caster.first_hits(cand + outwards * (2.0 * inset), down).distance  # just past the edge line
     edge_goes_on = (beyond > reach).reshape(2, n, n_ext)
     open_out = (caster.first_hits(cand, outwards).distance > s.radius + inset).reshape(2, n, n_ext)
+    if s.farther > 0.0:
+        # On a sampled surface the candidates run farther than a sample stood, and the samples stand only where the
+        # agent has its head room: so must the candidates (a keystone hanging to 1.7 m in a doorway's middle, under
+        # which the rays at ``lift`` run on, put the middle of one half's extended end under it, read 0 m wide there).
+        above = caster.first_hits(cand, np.broadcast_to(UP, cand.shape).copy()).distance
+        open_out &= (above > s.head - s.lift).reshape(2, n, n_ext)
     run = np.cumprod(floor & edge_goes_on & open_out, axis=2).sum(axis=2)  # leading valid candidates
     ext = np.minimum(np.where(run < n_ext, run + 0.5, run) * s.delta, d_along)
     return first - along * ext[0][:, None], last + along * ext[1][:, None]
