@@ -57,7 +57,8 @@ def railed_bridge_outer_ledges(ledge: float = 0.4, post_every: float = 1.5) -> S
     parts = [box(0.0, 12.0, -0.3, 0.0, -0.1 - ledge, 2.5 + ledge)]
     for z0, z1 in ((-0.1, 0.0), (2.4, 2.5)):
         parts += [box(x, x + 0.1, 0.0, 1.1, z0, z1) for x in np.arange(0.0, 12.0 - 0.1 + 1e-9, post_every)]
-        parts += [box(11.9, 12.0, 0.0, 1.1, z0, z1), box(0.0, 12.0, 1.0, 1.1, z0, z1), box(0.0, 12.0, 0.45, 0.55, z0, z1)]
+        parts += [box(11.9, 12.0, 0.0, 1.1, z0, z1), box(0.0, 12.0, 1.0, 1.1, z0, z1),
+                  box(0.0, 12.0, 0.45, 0.55, z0, z1)]
     return _level("railed_bridge_outer_ledges", parts,
                   [_opening((0.0, 0.0, 1.2), _W, 2.4), _opening((12.0, 0.0, 1.2), _E, 2.4)])
 
@@ -144,7 +145,8 @@ def kerbed_pit_room(depth: float = 1.5, kerb: float = 0.3, steps: int = 5) -> Sa
     parts += [box(-0.3, 10.3, bottom, 0.0, -0.3, 2.0), box(-0.3, 10.3, bottom, 0.0, 6.0, 8.3),
               box(-0.3, 3.0, bottom, 0.0, 2.0, 6.0), box(7.0, 10.3, bottom, 0.0, 2.0, 6.0),
               box(3.0, 7.0, bottom, -depth, 2.0, 6.0)]  # the floor round the pit, and the pit's floor
-    parts += [box(2.8, 4.4, 0.0, kerb, 1.8, 2.0), box(5.6, 7.2, 0.0, kerb, 1.8, 2.0), box(2.8, 7.2, 0.0, kerb, 6.0, 6.2),
+    parts += [box(2.8, 4.4, 0.0, kerb, 1.8, 2.0), box(5.6, 7.2, 0.0, kerb, 1.8, 2.0),
+              box(2.8, 7.2, 0.0, kerb, 6.0, 6.2),
               box(2.8, 3.0, 0.0, kerb, 2.0, 6.0), box(7.0, 7.2, 0.0, kerb, 2.0, 6.0)]
     riser = depth / (steps + 1)
     parts += [box(4.4, 5.6, bottom, -(i + 1) * riser, 2.0 + 0.3 * i, 2.3 + 0.3 * i) for i in range(steps)]
