@@ -1190,7 +1190,11 @@ def _extend(kept: list[_Edge], caster: RayCaster, s: _Settings, floor: np.ndarra
     jambs' faces from 7 degrees on, and the extension would run along the walls' outer faces.
     ``floor`` (n,): the height of the lowest floor each edge's ways walked down steps to, m (its ends are first
     lowered onto the ground below them as far down as that floor, :func:`_onto_ground_below`); NaN: at its samples'
-    level.
+    level. The candidates reach two agent radii and a sample step past each end (a navmesh's boundary stands a
+    radius in from the jambs), and on a sampled surface as far as a sample looks again for the floor's end
+    (``s.farther``): its boundary stands up to that far inside the floor's end along the edge too, and a wide end
+    covered by a few samples near its middle (a bridge's end between railings, 1.12 m of its 2.4 m reached from
+    them at 0 degrees) was left short by the difference (docs/entry_exit.md, "A thirtieth round of piece kinds").
     """
     n = len(kept)
     out = np.array([e.outward for e in kept])
@@ -1204,7 +1208,7 @@ def _extend(kept: list[_Edge], caster: RayCaster, s: _Settings, floor: np.ndarra
     first, last = _onto_floor_end(_onto_ground_below(first, out, _above(first, floor), caster, s),
                                   _onto_ground_below(last, out, _above(last, floor), caster, s), out, caster, s)
     along = _unit(np.cross(nrm, out))  # walking direction along the edge (interior on the left)
-    n_ext = max(1, int(math.ceil((2.0 * s.radius + s.step) / s.delta)))
+    n_ext = max(1, int(math.ceil(max(2.0 * s.radius + s.step, s.farther) / s.delta)))
     steps = s.delta * np.arange(1, n_ext + 1)
     ends = np.stack([first, last])  # (2, n, 3)
     sign = np.array([-1.0, 1.0])[:, None, None]
@@ -1230,6 +1234,12 @@ def _extend(kept: list[_Edge], caster: RayCaster, s: _Settings, floor: np.ndarra
     beyond = caster.first_hits(cand + outwards * (2.0 * inset), down).distance  # just past the edge line
     edge_goes_on = (beyond > reach).reshape(2, n, n_ext)
     open_out = (caster.first_hits(cand, outwards).distance > s.radius + inset).reshape(2, n, n_ext)
+    if s.farther > 0.0:
+        # On a sampled surface the candidates run farther than a sample stood, and the samples stand only where the
+        # agent has its head room: so must the candidates (a keystone hanging to 1.7 m in a doorway's middle, under
+        # which the rays at ``lift`` run on, put the middle of one half's extended end under it, read 0 m wide there).
+        above = caster.first_hits(cand, np.broadcast_to(UP, cand.shape).copy()).distance
+        open_out &= (above > s.head - s.lift).reshape(2, n, n_ext)
     run = np.cumprod(floor & edge_goes_on & open_out, axis=2).sum(axis=2)  # leading valid candidates
     ext = np.minimum(np.where(run < n_ext, run + 0.5, run) * s.delta, d_along)
     return first - along * ext[0][:, None], last + along * ext[1][:, None]
