@@ -118,7 +118,10 @@ plain sums of :func:`split_path_flow` or :func:`shortest_path_flow` with
 each source's target values divided by their distance, then multiplied by
 d(s, v): in the extension, each source's one search gives the distances that
 scale its values, on the same threads as the plain flow. The exact flow
-(every source) is the same either way and is computed plainly.
+(every source) is the same either way and is computed plainly. A sampled
+flow of this kind with ``ties: split`` runs on the graph renumbered along
+its Hilbert curve in plan (:func:`flow_layout`, below): the same bits, with
+a node's neighbours close to it in memory.
 
 Spread sources (``sampling: spread``)
 -------------------------------------
