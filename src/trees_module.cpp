@@ -638,9 +638,10 @@ void weigh_by_distance(const std::vector<double>& distance, const double* sums, 
 // A graph the caller renumbered for the split flow's kernel (g2s_plugins.traffic.flow_layout): node v of its CSR
 // arrays is node original[v] of the caller's numbering, in which the sources, the values and the result's columns
 // stay. Why: a search settles nodes ring by ring round its source, and where the numbering keeps the nodes of a
-// neighbourhood apart (a sampled graph's x-major rows) nearly every node's row and its neighbours' entries miss the
-// caches; renumbered along a space-filling curve they lie close together. Same bits: the search breaks ties by the
-// caller's index (Graph::key), each renumbered row keeps its entries' order, so every node settles, every
+// neighbourhood apart (a sampled graph's x-major rows) the kernel waits on memory; renumbered along a space-filling
+// curve they lie close together: 10 % less CPU a source on the sampling route's 100k level (docs/performance.md,
+// locality48), the renumbering's own O(n) a call spread over a block of sources. Same bits: the search breaks ties
+// by the caller's index (Graph::key), each renumbered row keeps its entries' order, so every node settles, every
 // shortest-path edge is found and every sum is added in the same order as in the caller's numbering. O(n) a call.
 class Renumbering {
   public:
