@@ -8,7 +8,7 @@ analyses all read the same arrays.
 from __future__ import annotations
 
 import weakref
-from collections.abc import Hashable, Iterable
+from collections.abc import Callable, Hashable, Iterable
 from concurrent.futures import Future
 from dataclasses import dataclass, field
 from itertools import chain, repeat
@@ -38,6 +38,10 @@ class SurfaceArrays:
             under the same keys, until the first caller that wants one takes
             it (:func:`g2s_plugins.traffic.start_walking_flow`; each a
             :class:`g2s_plugins.traffic.BegunFlow`, whose ``taken`` it sets).
+        graph: the graph the arrays were made from, while it lives (a weak
+            reference; ``None`` when made without one): what a result derived
+            from the nodes' attributes reads them from (the walking flow's
+            :func:`g2s_plugins.traffic.flow_layout`).
     """
 
     nodes: list[Hashable]
@@ -46,6 +50,7 @@ class SurfaceArrays:
     area: np.ndarray
     derived: dict[Hashable, np.ndarray] = field(default_factory=dict, compare=False, repr=False)
     begun: dict[Hashable, Future[np.ndarray]] = field(default_factory=dict, compare=False, repr=False)
+    graph: Callable[[], nx.Graph | None] = field(default=lambda: None, compare=False, repr=False)
 
     @property
     def n(self) -> int:
@@ -86,7 +91,7 @@ def surface_arrays(graph: nx.Graph, weighted: bool = True) -> SurfaceArrays:
     # the matrix is canonical (rows' columns sorted, one entry each) whatever order its entries come in
     adjacency = sp.csr_array((np.maximum(w[keep], MIN_LENGTH), (u[keep], v[keep])), shape=(n, n))
     area = np.fromiter(map(dict.get, map(graph._node.__getitem__, nodes), repeat("area"), repeat(0.0)), np.float64, n)
-    arrays = SurfaceArrays(nodes, index, adjacency, area)
+    arrays = SurfaceArrays(nodes, index, adjacency, area, graph=weakref.ref(graph))
     _CACHE[graph] = (signature, arrays)
     return arrays
 

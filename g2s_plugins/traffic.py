@@ -118,7 +118,10 @@ plain sums of :func:`split_path_flow` or :func:`shortest_path_flow` with
 each source's target values divided by their distance, then multiplied by
 d(s, v): in the extension, each source's one search gives the distances that
 scale its values, on the same threads as the plain flow. The exact flow
-(every source) is the same either way and is computed plainly.
+(every source) is the same either way and is computed plainly. A sampled
+flow of this kind with ``ties: split`` runs on the graph renumbered along
+its Hilbert curve in plan (:func:`flow_layout`, below): the same bits, with
+a node's neighbours close to it in memory.
 
 Spread sources (``sampling: spread``)
 -------------------------------------
@@ -150,6 +153,7 @@ import os
 import threading
 from collections.abc import Callable, Hashable, Iterable, Iterator
 from concurrent.futures import Future
+from itertools import repeat
 from typing import Literal
 
 import networkx as nx
@@ -158,14 +162,16 @@ import scipy.sparse as sp
 from scipy.sparse import csgraph
 
 from g2s_plugins import _trees
+from g2s_plugins.flow_layout import FlowLayout, renumbered
 from g2s_plugins.surface_arrays import MIN_LENGTH, SurfaceArrays, surface_arrays
 
 __all__ = [
     "EXACT_NODES", "TIE_TOLERANCE", "WALKING_SAMPLING", "WALKING_SCALING", "WALKING_SOURCES", "WALKING_TIES", "Sampling",
-    "Scaling", "SurfaceArrays", "Ties", "arrays_walking_flow", "distance_to", "flow_error_bound", "gather", "is_exact",
-    "linear_through", "od_flow", "origin_weight", "percentile", "plan_order", "represented_area", "sampling_order",
-    "shortest_path_flow", "source_blocks", "split_path_flow", "start_walking_flow", "surface_arrays", "tie_tolerance",
-    "tree_threads", "waiting_flag", "walking_flow", "walking_sources",
+    "Scaling", "SurfaceArrays", "Ties", "arrays_walking_flow", "at_least_min_length", "distance_to", "flow_error_bound",
+    "flow_layout", "gather", "is_exact", "linear_through", "od_flow", "origin_weight", "percentile", "plan_order",
+    "represented_area", "sampling_order", "shortest_path_flow", "source_blocks", "split_path_flow",
+    "start_walking_flow", "surface_arrays", "tie_tolerance", "tree_threads", "waiting_flag", "walking_flow",
+    "walking_sources",
 ]
 
 Ties = Literal["first", "split"]
@@ -467,6 +473,7 @@ def od_flow(
     scaling: Scaling = "none",
     order: np.ndarray | None = None,
     areas: np.ndarray | None = None,
+    layout: FlowLayout | None = None,
 ) -> tuple[np.ndarray, int | None]:
     """Weighted origin-destination flow through every node (see the module docs).
 
@@ -489,6 +496,8 @@ def od_flow(
             ``None``: drawn independently. An exact flow ignores it.
         areas: (n,) :func:`exact_areas` of ``adjacency`` for ``max_sources``, when the caller holds them
             (:func:`arrays_exact_areas`); ``None``: found here when a sample needs them.
+        layout: ``adjacency`` renumbered (:func:`flow_layout`), on which a sample's linearly scaled split flow runs
+            (the same values, in less time); ``None``: it runs on ``adjacency``.
 
     Returns:
         flow: (n,) pair weight passing through each node (ordered pairs,
@@ -505,12 +514,14 @@ def od_flow(
         alone = area[sources] >= 0
         _exact_area_flow(flow, adjacency, weight, area, sources[alone], factor[alone], ties, max_sources)
         sources, factor = sources[~alone], factor[~alone]
-    through_of = linear_through if sampled is not None and scaling == "linear" else _through
+    linear = sampled is not None and scaling == "linear"
     kept = []
     for lo, block_sources in source_blocks(sources, n):
         # adjacency is symmetric: a directed search scans each edge once instead of from both of
         # its stored directions, with the same distances and predecessors
-        kept.append((lo, through_of(adjacency, block_sources, weight, ties)))
+        through = (linear_through(adjacency, block_sources, weight, ties, layout) if linear
+                   else _through(adjacency, block_sources, weight, ties))
+        kept.append((lo, through))
         if lo + len(block_sources) >= len(sources) or sum(through.size for _, through in kept) >= KEPT_ENTRIES:
             for start, through in kept:  # block by block, in order: the sum of the products as before
                 flow += factor[start:start + len(through)] @ through
@@ -687,6 +698,20 @@ def plan_order(graph: nx.Graph) -> np.ndarray:
     return arrays.derived["plan_order"]
 
 
+def flow_layout(arrays: SurfaceArrays) -> FlowLayout | None:
+    """``arrays``' graph renumbered along its :func:`plan_order` for the walking flow's kernel
+    (:mod:`g2s_plugins.flow_layout`: the same values in less time), its lengths at least :data:`MIN_LENGTH`; ``None``
+    when the graph is gone or has nodes without a ``pos``. Cached with the arrays, once per graph for every sampled
+    split flow of a run (the cover's, the loops', the simplification's and the ``flow`` analyzer's). O(n log n) for
+    the order (shared with a ``spread`` sample), O(n + m) for the arrays."""
+    if "flow_layout" not in arrays.derived:  # two threads may both make it: the same arrays, either kept
+        graph = arrays.graph()
+        placed = graph is not None and all(map(dict.__contains__, map(graph._node.__getitem__, arrays.nodes),
+                                               repeat("pos")))
+        arrays.derived["flow_layout"] = renumbered(at_least_min_length(arrays.adjacency), plan_order(graph)) if placed else None
+    return arrays.derived["flow_layout"]
+
+
 def hilbert_index(points: np.ndarray, bits: int) -> np.ndarray:
     """(n,) int64 position along a Hilbert curve of each of the (n, 2) ``points`` (m), scaled by their bounds' longer
     side onto a square grid of 2^``bits`` cells a side (``bits`` <= 31). The curve's recursion, quadrant by quadrant
@@ -720,29 +745,42 @@ def sampling_order(graph: nx.Graph, sampling: Sampling) -> np.ndarray | None:
     return plan_order(graph) if sampling == "spread" else None
 
 
-def linear_through(adjacency: sp.csr_array, sources: np.ndarray, values: np.ndarray, ties: Ties) -> np.ndarray:
+def linear_through(
+    adjacency: sp.csr_array, sources: np.ndarray, values: np.ndarray, ties: Ties, layout: FlowLayout | None = None,
+) -> np.ndarray:
     """(b, n) float64: per source s of the (b,) ``sources`` and node v, 2 d(s, v) times the sum over targets t != v
     of ``values[t]`` / d(s, t) times the share of the source's shortest paths to t through v (``ties``): the
     linearly scaled through-weight of the module docs.
 
     Args:
-        adjacency: (n, n) edge lengths >= 0, CSR, symmetric; a length under :data:`MIN_LENGTH` (a stored zero:
-            coincident nodes) is read as that, as :func:`surface_arrays` stores it, so that a pair at distance 0
-            still counts (its ratio d(s, v) / d(s, t) then that of the steps between them).
+        adjacency: (n, n) edge lengths >= 0, CSR, symmetric; a length under :data:`MIN_LENGTH` is read as that
+            (:func:`at_least_min_length`: a pair at distance 0 still counts, its ratio d(s, v) / d(s, t) then that
+            of the steps between them).
         sources: (b,) rows of the sources.
         values: (n,) the value of each node (its area, m²).
+        layout: ``adjacency`` renumbered (:func:`flow_layout`; its lengths at least :data:`MIN_LENGTH`), for ``ties``
+            ``split``: the kernel runs on it, with the same bits; ``None``: on ``adjacency``.
 
     0 for the source and for unreached nodes. In the C++ extension (``src/trees_module.cpp``) on :func:`tree_threads`
     threads, each source one search, O(m log m), whose distances scale the values before the sums of
     :func:`split_path_flow` (or :func:`shortest_path_flow`) over that search, O(m), and weigh them after: the same bits
     as scipy's distances with numpy's divisions and products around those functions called per source.
     """
-    if np.any(adjacency.data < MIN_LENGTH):  # else every pair at distance 0 was dropped (its ratio 0 / 0)
-        adjacency = sp.csr_array((np.maximum(adjacency.data, MIN_LENGTH), adjacency.indices, adjacency.indptr), adjacency.shape)
-    return _trees.linear_path_flow(
-        *extension_csr(adjacency), np.asarray(sources, dtype=np.int32), np.ascontiguousarray(values, dtype=np.float64),
-        ties, TIE_TOLERANCE, tree_threads(), waiting_flag(),
-    )
+    sources, values = np.asarray(sources, dtype=np.int32), np.ascontiguousarray(values, dtype=np.float64)
+    if layout is not None and ties == "split":
+        return _trees.linear_path_flow(layout.indptr, layout.indices, layout.lengths, sources, values, ties,
+                                       TIE_TOLERANCE, tree_threads(), waiting_flag(), layout.original)
+    return _trees.linear_path_flow(*extension_csr(at_least_min_length(adjacency)), sources, values, ties, TIE_TOLERANCE,
+                                   tree_threads(), waiting_flag())
+
+
+def at_least_min_length(adjacency: sp.csr_array) -> sp.csr_array:
+    """``adjacency`` with every stored length under :data:`MIN_LENGTH` (a stored zero: coincident nodes) read as that,
+    as :func:`surface_arrays` stores it, so that a linearly scaled flow's pair at distance 0 still counts (else it is
+    dropped: its ratio 0 / 0). O(m)."""
+    if np.any(adjacency.data < MIN_LENGTH):
+        return sp.csr_array((np.maximum(adjacency.data, MIN_LENGTH), adjacency.indices, adjacency.indptr), adjacency.shape)
+    return adjacency
 
 
 def _through(adjacency: sp.csr_array, sources: np.ndarray, values: np.ndarray, ties: Ties) -> np.ndarray:
@@ -880,8 +918,9 @@ def _walking_flow_work(
     key = ("walking_flow", ties) if exact else ("walking_flow", ties, max_sources, seed, scaling, sampling)
 
     def compute() -> np.ndarray:
+        layout = flow_layout(arrays) if not exact and ties == "split" and scaling == "linear" else None
         flow, _ = od_flow(arrays.adjacency, origin_weight(arrays), None if exact else max_sources, seed, ties, scaling,
-                          order, None if exact else arrays_exact_areas(arrays, max_sources))
+                          order, None if exact else arrays_exact_areas(arrays, max_sources), layout)
         flow.flags.writeable = False
         return flow
 

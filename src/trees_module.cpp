@@ -51,6 +51,7 @@
 
 #include <nanobind/nanobind.h>
 #include <nanobind/ndarray.h>
+#include <nanobind/stl/optional.h>
 #include <nanobind/stl/string.h>
 
 #include <algorithm>
@@ -61,6 +62,7 @@
 #include <string>
 #include <utility>
 #include <limits>
+#include <optional>
 #include <thread>
 #include <vector>
 
@@ -93,32 +95,35 @@ double pairwise_sum(const double* a, int64_t n) {
 }
 
 // An entry of the search's queue. Queued earlier than `other` means: nearer, or as near with a higher
-// index (scipy's order, see the file comment).
+// index (scipy's order, see the file comment) in the caller's numbering: `key`, the node's index there (Graph::key;
+// it fills the padding, so an entry is 16 bytes as without it).
 struct Entry {
     double distance;
     int32_t node;
+    int32_t key;
 };
 // "a is served after b", the comparison std::push_heap/pop_heap take to keep the first-served entry on top.
 struct ServedAfter {
     bool operator()(const Entry& a, const Entry& b) const {
-        return a.distance > b.distance || (a.distance == b.distance && a.node < b.node);
+        return a.distance > b.distance || (a.distance == b.distance && a.key < b.key);
     }
 };
 
 // Dijkstra's search from one source in scipy's order (see the file comment), its buffers kept from source to
-// source: run(source, settle) calls settle(v) once for each node v = {distance, node} as the search settles it,
-// nearest first and, as near, highest index first; settle looks along v's edges, lowers `distance` of each node
-// it reaches nearer and queues it (queue). O(m log m) with a settle that queues each node reached nearer.
+// source: run(source, key, settle) calls settle(v) once for each node v = {distance, node, key} as the search
+// settles it, nearest first and, as near, highest key (index in the caller's numbering) first; settle looks along
+// v's edges, lowers `distance` of each node it reaches nearer and queues it with its key (queue). O(m log m) with a
+// settle that queues each node reached nearer.
 class Search {
   public:
     explicit Search(int32_t n) : distance(static_cast<size_t>(n)) {}
 
     template <typename Settle>
-    void run(int32_t source, Settle settle) {
+    void run(int32_t source, int32_t key, Settle settle) {
         std::fill(distance.begin(), distance.end(), std::numeric_limits<double>::infinity());
         queue_.clear();
         distance[source] = 0.0;
-        queue_.push_back({0.0, source});
+        queue_.push_back({0.0, source, key});
         while (!queue_.empty()) {
             std::pop_heap(queue_.begin(), queue_.end(), ServedAfter());
             const Entry v = queue_.back();
@@ -132,8 +137,8 @@ class Search {
     // always inlined, as the kernels' settle lambdas are: at -Os (nanobind's default flags, the module's then) a
     // call per queued node cost 2 % more instructions in both kernels, and an outlined settle up to 0.9 %
     // (callgrind, 20k dungeon)
-    __attribute__((always_inline)) void queue(double d, int32_t u) {
-        queue_.push_back({d, u});
+    __attribute__((always_inline)) void queue(double d, int32_t u, int32_t key) {
+        queue_.push_back({d, u, key});
         std::push_heap(queue_.begin(), queue_.end(), ServedAfter());
     }
 
@@ -153,6 +158,12 @@ struct Graph {
     const uint8_t* passage;  // (n,) 1: a passage node (see the file comment), which the search walks through
     bool corridors;          // any passage node: the search walks corridors and applies the tie rule itself
     int32_t n;
+    // (n,) each node's index in the caller's numbering, where the caller renumbered the graph for the kernel
+    // (Renumbering); nullptr: the same numbering
+    const int32_t* original = nullptr;
+
+    // The node's index in the caller's numbering: the searches' tie order.
+    __attribute__((always_inline)) int32_t key(int32_t v) const { return original != nullptr ? original[v] : v; }
 };
 
 // Asks the memory for node v's row of the CSR arrays (its neighbours and their lengths), which a kernel will read
@@ -236,7 +247,7 @@ class TreeSweep {
         };
         // the source is where the search starts, never a node to walk through
         auto passage = [&](int32_t u) { return g.passage[u] && u != source; };
-        search_.run(source, [&](const Entry& v) __attribute__((always_inline)) {
+        search_.run(source, source, [&](const Entry& v) __attribute__((always_inline)) {
             // 5-12 % less CPU a source on the 100k-polygon level's navmesh graph (docs/performance.md, 6 December
             // 2026, 15:43-15:56 UTC); a corridor's passages cannot be asked for ahead, each found from the last
             prefetch_next_row(g, search_);
@@ -252,7 +263,7 @@ class TreeSweep {
                     d += g.weights[k];
                     u = g.indices[k];
                 }
-                if (!passage(u) && d < infinity && reach(u, d, from)) search_.queue(d, u);
+                if (!passage(u) && d < infinity && reach(u, d, from)) search_.queue(d, u, u);
             }
         });
     }
@@ -393,7 +404,7 @@ class SplitSweep {
         std::vector<double>& distance = search_.distance;
         std::fill(position_.begin(), position_.end(), -1);
         int32_t settled = 0;
-        search_.run(source, [&](const Entry& v) __attribute__((always_inline)) {
+        search_.run(source, g.key(source), [&](const Entry& v) __attribute__((always_inline)) {
             prefetch_next_row(g, search_);
             position_[v.node] = settled;
             order_[settled++] = v.node;
@@ -402,7 +413,7 @@ class SplitSweep {
                 const double d = v.distance + g.weights[j];  // a NaN length is no edge, as in scipy
                 if (d < distance[u]) {
                     distance[u] = d;
-                    search_.queue(d, u);
+                    search_.queue(d, u, g.key(u));
                 }
             }
         });
@@ -614,34 +625,91 @@ void scale_by_distance(const std::vector<double>& distance, const double* values
     for (int32_t v = 0; v < n; ++v)
         scaled[v] = distance[v] > 0.0 && distance[v] < std::numeric_limits<double>::infinity() ? values[v] / distance[v] : 0.0;
 }
-void weigh_by_distance(const std::vector<double>& distance, double* through, int32_t n) {
+// `sums` (n,) weighed into `through`, node v's into column original[v] (v's own with no renumbering, where `sums`
+// may be `through`).
+void weigh_by_distance(const std::vector<double>& distance, const double* sums, int32_t n, const int32_t* original,
+                       double* through) {
     for (int32_t v = 0; v < n; ++v) {
         const double d = distance[v] > 0.0 && distance[v] < std::numeric_limits<double>::infinity() ? distance[v] : 0.0;
-        through[v] = (2.0 * d) * through[v];
+        through[original != nullptr ? original[v] : v] = (2.0 * d) * sums[v];
     }
 }
 
+// A graph the caller renumbered for the split flow's kernel (g2s_plugins.traffic.flow_layout): node v of its CSR
+// arrays is node original[v] of the caller's numbering, in which the sources, the values and the result's columns
+// stay. Why: a search settles nodes ring by ring round its source, and where the numbering keeps the nodes of a
+// neighbourhood apart (a sampled graph's x-major rows) the kernel waits on memory; renumbered along a space-filling
+// curve they lie close together: 10 % less CPU a source on the sampling route's 100k level (docs/performance.md,
+// locality48), the renumbering's own O(n) a call spread over a block of sources. Same bits: the search breaks ties
+// by the caller's index (Graph::key), each renumbered row keeps its entries' order, so every node settles, every
+// shortest-path edge is found and every sum is added in the same order as in the caller's numbering. O(n) a call.
+class Renumbering {
+  public:
+    Renumbering(const char* what, const std::optional<Int32Array>& original, int64_t n, const double* values) {
+        if (!original) {
+            values_ = values;
+            return;
+        }
+        const std::string name(what);
+        if (static_cast<int64_t>(original->shape(0)) != n) throw nb::value_error((name + ": original must be (n,)").c_str());
+        original_ = original->data();
+        node_.assign(static_cast<size_t>(n), -1);
+        renumbered_values_.resize(static_cast<size_t>(n));
+        for (int32_t v = 0; v < n; ++v) {
+            const int32_t caller = original_[v];
+            if (caller < 0 || caller >= n || node_[caller] >= 0)
+                throw nb::value_error((name + ": original must hold every node once").c_str());
+            node_[caller] = v;
+            renumbered_values_[v] = values[caller];
+        }
+        values_ = renumbered_values_.data();
+    }
+
+    bool renumbered() const { return original_ != nullptr; }
+    // (n,) each node's index in the caller's numbering, or nullptr: not renumbered
+    const int32_t* original() const { return original_; }
+    // The kernel's number of the caller's node `caller`.
+    int32_t node(int32_t caller) const { return original_ != nullptr ? node_[caller] : caller; }
+    // (n,) the values in the kernel's numbering.
+    const double* values() const { return values_; }
+
+  private:
+    const int32_t* original_ = nullptr;
+    const double* values_ = nullptr;
+    std::vector<int32_t> node_;
+    std::vector<double> renumbered_values_;
+};
+
 nb::ndarray<nb::numpy, double, nb::ndim<2>> linear_path_flow(Int32Array indptr, Int32Array indices, DoubleArray weights,
                                                              Int32Array sources, DoubleArray values, const std::string& ties,
-                                                             double tolerance, int threads, const Waiting* waiting) {
+                                                             double tolerance, int threads, const Waiting* waiting,
+                                                             const std::optional<Int32Array>& original) {
     const int64_t n = checked_flow("linear_path_flow", indptr, indices, weights, sources, values, threads);
     if (ties != "first" && ties != "split") throw nb::value_error("linear_path_flow: ties must be 'first' or 'split'");
     if (!(tolerance >= 0.0 && tolerance < 1.0)) throw nb::value_error("linear_path_flow: tolerance must be in [0, 1)");
+    if (original && ties != "split") throw nb::value_error("linear_path_flow: original is taken with ties 'split' only");
+    const Renumbering renumbering("linear_path_flow", original, n, values.data());
     const size_t b = sources.shape(0);
     auto* through = new double[std::max<size_t>(b * static_cast<size_t>(n), 1)];
     auto through_out = owned(through, b, static_cast<size_t>(n));
     const size_t nodes = static_cast<size_t>(n);
     if (ties == "split") {
-        const Graph g{indptr.data(), indices.data(), weights.data(), nullptr, false, static_cast<int32_t>(n)};
-        for_each_source(b, threads, waiting, [&] { return std::make_pair(SplitSweep(g.n), std::vector<double>(nodes)); },
-                        [&](std::pair<SplitSweep, std::vector<double>>& worker, size_t row) {
-            auto& [sweep, scaled] = worker;
-            const int32_t source = sources.data()[row];
+        const Graph g{indptr.data(), indices.data(), weights.data(), nullptr, false, static_cast<int32_t>(n),
+                      renumbering.original()};
+        struct SplitWorker {
+            SplitSweep sweep;
+            std::vector<double> scaled, sums;  // sums: the kernel's numbering's, when renumbered
+        };
+        const size_t sums = renumbering.renumbered() ? nodes : 0;
+        for_each_source(b, threads, waiting, [&] { return SplitWorker{SplitSweep(g.n), std::vector<double>(nodes), std::vector<double>(sums)}; },
+                        [&](SplitWorker& worker, size_t row) {
+            const int32_t source = renumbering.node(sources.data()[row]);
             double* out = through + row * nodes;
-            sweep.search(g, source);
-            scale_by_distance(sweep.distance(), values.data(), scaled.data(), g.n);
-            sweep.sum(g, source, scaled.data(), tolerance, out);
-            weigh_by_distance(sweep.distance(), out, g.n);
+            double* summed = renumbering.renumbered() ? worker.sums.data() : out;
+            worker.sweep.search(g, source);
+            scale_by_distance(worker.sweep.distance(), renumbering.values(), worker.scaled.data(), g.n);
+            worker.sweep.sum(g, source, worker.scaled.data(), tolerance, summed);
+            weigh_by_distance(worker.sweep.distance(), summed, g.n, g.original, out);
         });
         return through_out;
     }
@@ -660,7 +728,7 @@ nb::ndarray<nb::numpy, double, nb::ndim<2>> linear_path_flow(Int32Array indptr, 
         worker.sweep.search(g, source, worker.predecessor.data());
         scale_by_distance(worker.sweep.distance(), values.data(), worker.scaled.data(), g.n);
         worker.sweep.sum(g, source, worker.scaled.data(), worker.predecessor.data(), out);
-        weigh_by_distance(worker.sweep.distance(), out, g.n);
+        weigh_by_distance(worker.sweep.distance(), out, g.n, nullptr, out);
     });
     return through_out;
 }
@@ -940,13 +1008,15 @@ NB_MODULE(_trees, m) {
           "source and unreached nodes. threads and waiting: as shortest_path_flow's.");
     m.def("linear_path_flow", &linear_path_flow, nb::arg("indptr"), nb::arg("indices"), nb::arg("weights"),
           nb::arg("sources"), nb::arg("values"), nb::arg("ties"), nb::arg("tolerance"), nb::arg("threads"),
-          nb::arg("waiting").none() = nb::none(),
-          "linear_path_flow(indptr, indices, weights, sources, values, ties, tolerance, threads, waiting=None) -> through.\n\n"
+          nb::arg("waiting").none() = nb::none(), nb::arg("original").none() = nb::none(),
+          "linear_path_flow(indptr, indices, weights, sources, values, ties, tolerance, threads, waiting=None,\n"
+          "original=None) -> through.\n\n"
           "For a graph in CSR form (as shortest_path_flow) and b source nodes: through (b, n) float64, per source s\n"
           "and node v, 2 d(s, v) times the flow through v of shortest_path_flow (ties 'first') or split_path_flow\n"
           "('split', with the relative tolerance) of the values each divided by its distance d(s, t) (0 where t is\n"
           "the source, at distance 0 or unreached); 0 for the source and unreached nodes. threads and waiting: as\n"
-          "shortest_path_flow's.");
+          "shortest_path_flow's. original: None, or (n,) int32 for a graph renumbered (ties 'split' only): node v of\n"
+          "the CSR arrays is node original[v] of the sources, values and through, whose bits do not depend on it.");
     m.def("cover_paths", &cover_paths, nb::arg("indptr"), nb::arg("indices"), nb::arg("lengths"), nb::arg("start"),
           nb::arg("predecessor"), nb::arg("far"), nb::arg("radius"),
           "cover_paths(indptr, indices, lengths, start, predecessor, far, radius) -> added.\n\n"
