@@ -1045,30 +1045,52 @@ def ground_across_crack(
         ``down`` to the nearer side's ground (``inf`` where not on).
 
     Two rays a probe, side and step at most (a side that found ground tries no further step):
-    O(n len(sides) len(steps)) rays.
+    O(n len(sides) len(steps)) rays. A batch of at most ``JOINT_CALL_MAX_RAYS`` rays for all of them
+    (the walk test's: a few dozen probes) casts every side, step and direction in one call instead,
+    the rays the rule would not have needed too: such a batch costs mostly per call (up to four calls
+    of 0.8 ms a batch before, docs/performance.md, samp5_48), and a ray's answer is its own however
+    it is cast (:meth:`RayCaster.first_hits_of`), so the rule's answer is the same.
     """
     probes = np.asarray(probes, dtype=np.float64).reshape(-1, 3)
     n = len(probes)
     down = np.broadcast_to(np.asarray(down, dtype=np.float64), (n, 3))
-    on = np.zeros(n, dtype=bool)
-    distance = np.full(n, np.inf)
-    for side in sides:
-        rows = np.flatnonzero(~on)
+    offsets = [np.broadcast_to(np.asarray(side, dtype=np.float64), (n, 3)) for side in sides]
+    # metres along down to walkable ground within reach, by side, step, direction (ahead of and behind the side)
+    # and probe: inf where the ray found none, or was not cast because the rule did not need it
+    along = np.full((len(sides), len(steps), 2, n), np.inf)
+    if along.size <= JOINT_CALL_MAX_RAYS:
+        hits = caster.first_hits_of([(probes + sign * fraction * offset, down) for offset in offsets for fraction in steps
+                                     for sign in (1.0, -1.0)])
+        face, distance = np.concatenate([hit.face for hit in hits]), np.concatenate([hit.distance for hit in hits])
+        ground = (distance <= reach) & walkable(face)
+        along.reshape(-1)[ground] = distance[ground]
+    for s, offset in enumerate(offsets if along.size > JOINT_CALL_MAX_RAYS else ()):  # only the rays needed
+        rows = np.flatnonzero(~_crack_ground(along[:s])[0])
         if len(rows) == 0:
             break
-        offset = np.broadcast_to(np.asarray(side, dtype=np.float64), (n, 3))[rows]
-        found = np.full((2, len(rows)), np.inf)  # metres along down to the ground found ahead of and behind side
-        for fraction in steps:
-            looking = [np.flatnonzero(np.isinf(found[k])) for k in range(2)]
-            beside = caster.first_hits_of([(probes[rows[looking[k]]] + sign * fraction * offset[looking[k]],
-                                            down[rows[looking[k]]]) for k, sign in enumerate((1.0, -1.0))])
+        for f, fraction in enumerate(steps):
+            looking = [rows[np.isinf(along[s, :f, k][:, rows]).all(axis=0)] for k in range(2)]
+            beside = caster.first_hits_of([(probes[looking[k]] + sign * fraction * offset[looking[k]], down[looking[k]])
+                                           for k, sign in enumerate((1.0, -1.0))])
             for k, hit in enumerate(beside):
                 ground = (hit.distance <= reach) & walkable(hit.face)
-                found[k, looking[k][ground]] = hit.distance[ground]
-        both = np.isfinite(found).all(axis=0)
-        on[rows[both]] = True
-        distance[rows[both]] = found.min(axis=0)[both]
-    return on, distance
+                along[s, f, k, looking[k][ground]] = hit.distance[ground]
+    return _crack_ground(along)
+
+
+def _crack_ground(along: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`ground_across_crack`'s answer from ``along`` ((sides, steps, 2, n) metres to the ground each ray found,
+    inf: none): each direction of a side takes the ground of its first step that found some, and a probe stands on
+    the first side whose two directions both found ground, at the nearer of the two."""
+    n = along.shape[-1]
+    if len(along) == 0:  # no side tried yet
+        return np.zeros(n, dtype=bool), np.full(n, np.inf)
+    first = np.argmax(np.isfinite(along), axis=1)[:, None]  # (sides, 1, 2, n): 0 where no step found ground
+    found = np.take_along_axis(along, first, axis=1)[:, 0]
+    both = np.isfinite(found).all(axis=1)  # (sides, n)
+    on = both.any(axis=0)
+    side = np.argmax(both, axis=0)
+    return on, np.where(on, found.min(axis=1)[side, np.arange(n)], np.inf)
 
 
 _CRACK_AXES = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
