@@ -101,6 +101,7 @@ class _Scene:
         face_normals: (m, 3) float64, unit normals.
         twin: (m,) int64, :func:`_reversed_twins`.
         steep: max slope (degrees) -> :class:`SteepFaces`, filled on first use (:meth:`RayCaster.steep_faces`).
+        open_floors: (agent, least inradius) -> :attr:`OpenFloors.open`, filled on first use.
     """
 
     triangles: np.ndarray
@@ -112,6 +113,7 @@ class _Scene:
     face_normals: np.ndarray
     twin: np.ndarray
     steep: dict[float, SteepFaces] = field(default_factory=dict, compare=False)
+    open_floors: dict[tuple[AgentShape, float], np.ndarray] = field(default_factory=dict, compare=False)
 
     @cached_property
     def extent(self) -> tuple[float, float]:
@@ -790,12 +792,19 @@ class OpenFloors:
         self.caster, self.agent, self.min_inradius = caster, agent, min_inradius
         self.margin = ray_margin(caster, agent.height + 2.0 * EPSILON)
         """Metres (:func:`ray_margin` over the highest ray start, the agent's height over the floor)."""
-        walkable = np.nonzero(caster.walkable_faces(np.arange(len(caster.triangles)), agent.max_slope_deg))[0]
-        tall_enough = 0.5 * agent.height > 2.0 * (EPSILON + self.margin)
-        self.open = np.zeros(len(caster.triangles), dtype=bool)
-        """(m,) bool per triangle of the caster's mesh."""
-        if tall_enough and len(walkable):
-            self.open[walkable[~self._crowded(walkable)]] = True
+        self.open = caster.scene.open_floors.get((agent, min_inradius))
+        """(m,) bool per triangle of the caster's mesh, read-only: found once per mesh, agent and ``min_inradius``
+        (kept in :attr:`RayCaster.scene`; the sampling builder's and the ``mesh_los`` predicate's are the same with
+        the builder's default spacing, and the predicate took 0.9 s of CPU to find them again on a 20k-polygon
+        level: docs/performance.md, samp5_48)."""
+        if self.open is None:
+            walkable = np.nonzero(caster.walkable_faces(np.arange(len(caster.triangles)), agent.max_slope_deg))[0]
+            tall_enough = 0.5 * agent.height > 2.0 * (EPSILON + self.margin)
+            found = np.zeros(len(caster.triangles), dtype=bool)
+            if tall_enough and len(walkable):
+                found[walkable[~self._crowded(walkable)]] = True
+            found.flags.writeable = False
+            self.open = caster.scene.open_floors[(agent, min_inradius)] = found
 
     def _crowded(self, floors: np.ndarray) -> np.ndarray:
         """(k,) bool: the walkable triangles ``floors`` that are too small or that another triangle comes near."""
