@@ -1058,7 +1058,8 @@ def ground_across_crack(
     (the walk test's: a few dozen probes) casts every side, step and direction in one call instead,
     the rays the rule would not have needed too: such a batch costs mostly per call (up to four calls
     of 0.8 ms a batch before, docs/performance.md, samp5_48), and a ray's answer is its own however
-    it is cast (:meth:`RayCaster.first_hits_of`), so the rule's answer is the same.
+    it is cast (:meth:`RayCaster.first_hits_of`), so the rule's answer is the same; ``caster.rays_cast``
+    counts the rays the rule needs either way, so a count does not depend on how the probes were batched.
     """
     probes = np.asarray(probes, dtype=np.float64).reshape(-1, 3)
     n = len(probes)
@@ -1073,6 +1074,7 @@ def ground_across_crack(
         face, distance = np.concatenate([hit.face for hit in hits]), np.concatenate([hit.distance for hit in hits])
         ground = (distance <= reach) & walkable(face)
         along.reshape(-1)[ground] = distance[ground]
+        caster.rays_cast -= along.size - _rays_needed(along)  # counted as the rule's rays, whatever the batches
     for s, offset in enumerate(offsets if along.size > JOINT_CALL_MAX_RAYS else ()):  # only the rays needed
         rows = np.flatnonzero(~_crack_ground(along[:s])[0])
         if len(rows) == 0:
@@ -1085,6 +1087,15 @@ def ground_across_crack(
                 ground = (hit.distance <= reach) & walkable(hit.face)
                 along[s, f, k, looking[k][ground]] = hit.distance[ground]
     return _crack_ground(along)
+
+
+def _rays_needed(along: np.ndarray) -> int:
+    """How many of the rays of ``along`` (see :func:`_crack_ground`) the crack rule casts ray by ray: a side's rays
+    for the probes no earlier side put on ground, a step's for the directions no earlier step found ground in."""
+    found = np.isfinite(along)
+    earlier = np.cumsum(found, axis=1) - found > 0  # (sides, steps, 2, n): an earlier step of the side found ground
+    off = np.stack([~_crack_ground(along[:s])[0] for s in range(len(along))])[:, None, None, :]  # not on before it
+    return int((off & ~earlier).sum())
 
 
 def _crack_ground(along: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

@@ -100,11 +100,11 @@ def test_the_crack_rule_answers_alike_in_one_call_and_ray_by_ray() -> None:
 
     rays_each = 2 * len(crack_sides(AGENT)) * len(CRACK_STEPS)
     on, distance, cast = rule(probes)
-    assert on.tolist() == known and cast == rays_each * len(probes)  # one call: every ray
+    assert on.tolist() == known and cast < rays_each * len(probes)  # counted: the rays the rule needs
     assert distance[:10] == pytest.approx(np.full(10, 0.1)) and np.isinf(distance[10:]).all()
     copies = JOINT_CALL_MAX_RAYS // (rays_each * len(probes)) + 1
     many_on, many_distance, many_cast = rule(np.tile(probes, (copies, 1)))
-    assert many_on.tolist() == known * copies and many_cast < rays_each * len(probes) * copies  # the rays needed
+    assert many_on.tolist() == known * copies and many_cast == cast * copies  # the rays needed, ray by ray
     assert many_distance.tolist() == np.tile(distance, copies).tolist()
 
 
