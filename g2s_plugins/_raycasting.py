@@ -101,6 +101,7 @@ class _Scene:
         face_normals: (m, 3) float64, unit normals.
         twin: (m,) int64, :func:`_reversed_twins`.
         steep: max slope (degrees) -> :class:`SteepFaces`, filled on first use (:meth:`RayCaster.steep_faces`).
+        open_floors: (agent, least inradius) -> :attr:`OpenFloors.open`, filled on first use.
     """
 
     triangles: np.ndarray
@@ -112,6 +113,7 @@ class _Scene:
     face_normals: np.ndarray
     twin: np.ndarray
     steep: dict[float, SteepFaces] = field(default_factory=dict, compare=False)
+    open_floors: dict[tuple[AgentShape, float], np.ndarray] = field(default_factory=dict, compare=False)
 
     @cached_property
     def extent(self) -> tuple[float, float]:
@@ -790,12 +792,19 @@ class OpenFloors:
         self.caster, self.agent, self.min_inradius = caster, agent, min_inradius
         self.margin = ray_margin(caster, agent.height + 2.0 * EPSILON)
         """Metres (:func:`ray_margin` over the highest ray start, the agent's height over the floor)."""
-        walkable = np.nonzero(caster.walkable_faces(np.arange(len(caster.triangles)), agent.max_slope_deg))[0]
-        tall_enough = 0.5 * agent.height > 2.0 * (EPSILON + self.margin)
-        self.open = np.zeros(len(caster.triangles), dtype=bool)
-        """(m,) bool per triangle of the caster's mesh."""
-        if tall_enough and len(walkable):
-            self.open[walkable[~self._crowded(walkable)]] = True
+        self.open = caster.scene.open_floors.get((agent, min_inradius))
+        """(m,) bool per triangle of the caster's mesh, read-only: found once per mesh, agent and ``min_inradius``
+        (kept in :attr:`RayCaster.scene`; the sampling builder's and the ``mesh_los`` predicate's are the same with
+        the builder's default spacing, and the predicate took 0.9 s of CPU to find them again on a 20k-polygon
+        level: docs/performance.md, samp5_48)."""
+        if self.open is None:
+            walkable = np.nonzero(caster.walkable_faces(np.arange(len(caster.triangles)), agent.max_slope_deg))[0]
+            tall_enough = 0.5 * agent.height > 2.0 * (EPSILON + self.margin)
+            found = np.zeros(len(caster.triangles), dtype=bool)
+            if tall_enough and len(walkable):
+                found[walkable[~self._crowded(walkable)]] = True
+            found.flags.writeable = False
+            self.open = caster.scene.open_floors[(agent, min_inradius)] = found
 
     def _crowded(self, floors: np.ndarray) -> np.ndarray:
         """(k,) bool: the walkable triangles ``floors`` that are too small or that another triangle comes near."""
@@ -1045,30 +1054,63 @@ def ground_across_crack(
         ``down`` to the nearer side's ground (``inf`` where not on).
 
     Two rays a probe, side and step at most (a side that found ground tries no further step):
-    O(n len(sides) len(steps)) rays.
+    O(n len(sides) len(steps)) rays. A batch of at most ``JOINT_CALL_MAX_RAYS`` rays for all of them
+    (the walk test's: a few dozen probes) casts every side, step and direction in one call instead,
+    the rays the rule would not have needed too: such a batch costs mostly per call (up to four calls
+    of 0.8 ms a batch before, docs/performance.md, samp5_48), and a ray's answer is its own however
+    it is cast (:meth:`RayCaster.first_hits_of`), so the rule's answer is the same; ``caster.rays_cast``
+    counts the rays the rule needs either way, so a count does not depend on how the probes were batched.
     """
     probes = np.asarray(probes, dtype=np.float64).reshape(-1, 3)
     n = len(probes)
     down = np.broadcast_to(np.asarray(down, dtype=np.float64), (n, 3))
-    on = np.zeros(n, dtype=bool)
-    distance = np.full(n, np.inf)
-    for side in sides:
-        rows = np.flatnonzero(~on)
+    offsets = [np.broadcast_to(np.asarray(side, dtype=np.float64), (n, 3)) for side in sides]
+    # metres along down to walkable ground within reach, by side, step, direction (ahead of and behind the side)
+    # and probe: inf where the ray found none, or was not cast because the rule did not need it
+    along = np.full((len(sides), len(steps), 2, n), np.inf)
+    if along.size <= JOINT_CALL_MAX_RAYS:
+        hits = caster.first_hits_of([(probes + sign * fraction * offset, down) for offset in offsets for fraction in steps
+                                     for sign in (1.0, -1.0)])
+        face, distance = np.concatenate([hit.face for hit in hits]), np.concatenate([hit.distance for hit in hits])
+        ground = (distance <= reach) & walkable(face)
+        along.reshape(-1)[ground] = distance[ground]
+        caster.rays_cast -= along.size - _rays_needed(along)  # counted as the rule's rays, whatever the batches
+    for s, offset in enumerate(offsets if along.size > JOINT_CALL_MAX_RAYS else ()):  # only the rays needed
+        rows = np.flatnonzero(~_crack_ground(along[:s])[0])
         if len(rows) == 0:
             break
-        offset = np.broadcast_to(np.asarray(side, dtype=np.float64), (n, 3))[rows]
-        found = np.full((2, len(rows)), np.inf)  # metres along down to the ground found ahead of and behind side
-        for fraction in steps:
-            looking = [np.flatnonzero(np.isinf(found[k])) for k in range(2)]
-            beside = caster.first_hits_of([(probes[rows[looking[k]]] + sign * fraction * offset[looking[k]],
-                                            down[rows[looking[k]]]) for k, sign in enumerate((1.0, -1.0))])
+        for f, fraction in enumerate(steps):
+            looking = [rows[np.isinf(along[s, :f, k][:, rows]).all(axis=0)] for k in range(2)]
+            beside = caster.first_hits_of([(probes[looking[k]] + sign * fraction * offset[looking[k]], down[looking[k]])
+                                           for k, sign in enumerate((1.0, -1.0))])
             for k, hit in enumerate(beside):
                 ground = (hit.distance <= reach) & walkable(hit.face)
-                found[k, looking[k][ground]] = hit.distance[ground]
-        both = np.isfinite(found).all(axis=0)
-        on[rows[both]] = True
-        distance[rows[both]] = found.min(axis=0)[both]
-    return on, distance
+                along[s, f, k, looking[k][ground]] = hit.distance[ground]
+    return _crack_ground(along)
+
+
+def _rays_needed(along: np.ndarray) -> int:
+    """How many of the rays of ``along`` (see :func:`_crack_ground`) the crack rule casts ray by ray: a side's rays
+    for the probes no earlier side put on ground, a step's for the directions no earlier step found ground in."""
+    found = np.isfinite(along)
+    earlier = np.cumsum(found, axis=1) - found > 0  # (sides, steps, 2, n): an earlier step of the side found ground
+    off = np.stack([~_crack_ground(along[:s])[0] for s in range(len(along))])[:, None, None, :]  # not on before it
+    return int((off & ~earlier).sum())
+
+
+def _crack_ground(along: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`ground_across_crack`'s answer from ``along`` ((sides, steps, 2, n) metres to the ground each ray found,
+    inf: none): each direction of a side takes the ground of its first step that found some, and a probe stands on
+    the first side whose two directions both found ground, at the nearer of the two."""
+    n = along.shape[-1]
+    if len(along) == 0:  # no side tried yet
+        return np.zeros(n, dtype=bool), np.full(n, np.inf)
+    first = np.argmax(np.isfinite(along), axis=1)[:, None]  # (sides, 1, 2, n): 0 where no step found ground
+    found = np.take_along_axis(along, first, axis=1)[:, 0]
+    both = np.isfinite(found).all(axis=1)  # (sides, n)
+    on = both.any(axis=0)
+    side = np.argmax(both, axis=0)
+    return on, np.where(on, found.min(axis=1)[side, np.arange(n)], np.inf)
 
 
 _CRACK_AXES = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])

@@ -6,7 +6,9 @@ import pytest
 import trimesh
 
 from g2s_core.config import PRESETS_DIR, load_config
-from g2s_plugins._raycasting import CRACK_STEPS, UP, AgentShape, RayCaster, ground_across_crack, walks_in_batch
+from g2s_plugins._raycasting import (
+    CRACK_STEPS, JOINT_CALL_MAX_RAYS, UP, AgentShape, RayCaster, crack_sides, ground_across_crack, walks_in_batch,
+)
 
 AGENT = AgentShape.from_config(load_config(PRESETS_DIR / "map_piece_sampling.yaml").agent)
 
@@ -78,6 +80,32 @@ def test_the_sampling_route_tries_each_side_of_a_crack_apart() -> None:
     starts, ends = np.array([[0.5, 0.0, slot], [0.5, 0.0, 0.3]]), np.array([[5.5, 0.0, slot], [0.5, 0.0, 2.0]])
     ok, _ = walks_in_batch(RayCaster(_grating(0.03, slat=0.03)), starts, ends, AGENT, 0.2)
     assert ok.tolist() == [True, True]
+
+
+def test_the_crack_rule_answers_alike_in_one_call_and_ray_by_ray() -> None:
+    # A batch of at most JOINT_CALL_MAX_RAYS rays for every side, step and direction casts them all in one call (the
+    # walk test's small batches), a larger one only the rays the rule needs: the same answers. Bars and slots 0.03 m:
+    # a probe 0.1 m over a slot's middle stands on the bars 0.1 m below (half a step along z, a bar either side);
+    # one 0.1 m over nothing, 0.2 m past either end of the deck, finds ground within a step on one side at most.
+    caster = RayCaster(_grating(0.03, slat=0.03))
+    slots = [[2.0, 0.1, 0.03 + 0.06 * k + 0.015] for k in range(10)]
+    probes = np.array(slots + [[6.2, 0.1, 1.0], [-0.2, 0.1, 0.5]])
+    known = [True] * 10 + [False, False]
+
+    def rule(points: np.ndarray) -> tuple[np.ndarray, np.ndarray, int]:
+        before = caster.rays_cast
+        on, distance = ground_across_crack(caster, points, -UP, crack_sides(AGENT), 0.5,
+                                           lambda faces: caster.walkable_faces(faces, AGENT.max_slope_deg), CRACK_STEPS)
+        return on, distance, caster.rays_cast - before
+
+    rays_each = 2 * len(crack_sides(AGENT)) * len(CRACK_STEPS)
+    on, distance, cast = rule(probes)
+    assert on.tolist() == known and cast < rays_each * len(probes)  # counted: the rays the rule needs
+    assert distance[:10] == pytest.approx(np.full(10, 0.1)) and np.isinf(distance[10:]).all()
+    copies = JOINT_CALL_MAX_RAYS // (rays_each * len(probes)) + 1
+    many_on, many_distance, many_cast = rule(np.tile(probes, (copies, 1)))
+    assert many_on.tolist() == known * copies and many_cast == cast * copies  # the rays needed, ray by ray
+    assert many_distance.tolist() == np.tile(distance, copies).tolist()
 
 
 @pytest.mark.parametrize("gap, floor", [(0.04, True), (0.11, False), (0.15, False)])

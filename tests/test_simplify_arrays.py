@@ -122,6 +122,22 @@ def test_nodes_a_later_heat_round_keeps_stay_on_both_paths(runs, level):
 
 
 @pytest.mark.parametrize("level", LEVELS)
+def test_the_rule_s_arrays_are_read_again_for_a_forest_whose_nodes_are_new(runs, level):
+    # The rule's arrays are read once for a forest asked about again with the same ids and node dicts (the heat
+    # guarantee's rounds); a forest of the same ids whose node dicts are new ones (a copy, every other node's normal
+    # turned level) is read again: its structure is a fresh predicate's, not the first forest's.
+    run = runs[level]
+    predicate, forest = predicate_for(run, PARAMS[1]), random_forest(run.graph, 0)
+    first = layout(simplify_forest(forest, predicate))
+    assert layout(simplify_forest(forest, predicate)) == first
+    turned = forest.copy()
+    for node in list(turned)[::2]:
+        turned.nodes[node]["normal"] = (1.0, 0.0, 0.0)
+    again = layout(simplify_forest(turned, predicate))
+    assert again == layout(simplify_forest(turned, predicate_for(run, PARAMS[1]))) and again != first
+
+
+@pytest.mark.parametrize("level", LEVELS)
 def test_a_sight_memo_answers_a_later_round_s_repeated_lines_of_sight_as_detour_does(runs, level):
     # a later heat round (more fixed nodes) asks many of the first round's lines of sight again: with the memo they
     # are answered from it, and every round's answer is the one the same call gives without a memo

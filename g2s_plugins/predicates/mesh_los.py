@@ -224,7 +224,14 @@ def mesh_los_predicate(
         structure, a, c = asking
         return walks(structure, [(a, c)])[0]
 
-    def native(forest: ForestArrays, rule_arrays: RuleArrays) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    built: list[tuple[ForestArrays, list[int], _Structure]] = []  # the last forest asked about, as ``native`` reads it
+
+    def forest_structure(forest: ForestArrays) -> tuple[list[int], _Structure]:
+        """``forest``'s ids and the :class:`_Structure` of its edges, built once: a forest of the same ids, edges and
+        positions as the last one (the heat guarantee's later rounds) takes the one built then."""
+        if built and all(np.array_equal(getattr(built[0][0], name), getattr(forest, name))
+                         for name in ("ids", "parent", "loops", "points")):
+            return built[0][1], built[0][2]
         ids = forest.ids.tolist()
         successors: dict[int, list[int]] = {node: [] for node in ids}
         for node, row in zip(ids, forest.parent.tolist()):
@@ -233,6 +240,11 @@ def mesh_los_predicate(
         for u, v in forest.loops.tolist():
             successors[ids[u]].append(ids[v])
         structure = _Structure(ids, successors.__getitem__, dict(zip(ids, map(tuple, forest.points.tolist()))).__getitem__)
+        built[:] = [(forest, ids, structure)]
+        return ids, structure
+
+    def native(forest: ForestArrays, rule_arrays: RuleArrays) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        ids, structure = forest_structure(forest)
 
         def sees(pairs: np.ndarray) -> np.ndarray:  # (k,2) rows of the forest -> (k,) bool
             return np.array(walks(structure, [(ids[a], ids[c]) for a, c in pairs.tolist()]), dtype=bool)
