@@ -101,6 +101,8 @@ class _Scene:
         face_normals: (m, 3) float64, unit normals.
         twin: (m,) int64, :func:`_reversed_twins`.
         steep: max slope (degrees) -> :class:`SteepFaces`, filled on first use (:meth:`RayCaster.steep_faces`).
+        open_floors: (agent, min inradius) -> :attr:`OpenFloors.open`, filled by the first :class:`OpenFloors` of
+            those arguments (the sampling builder's and ``mesh_los``'s, the same by default).
     """
 
     triangles: np.ndarray
@@ -112,6 +114,7 @@ class _Scene:
     face_normals: np.ndarray
     twin: np.ndarray
     steep: dict[float, SteepFaces] = field(default_factory=dict, compare=False)
+    open_floors: dict[tuple[AgentShape, float], np.ndarray] = field(default_factory=dict, compare=False)
 
     @cached_property
     def extent(self) -> tuple[float, float]:
@@ -790,12 +793,18 @@ class OpenFloors:
         self.caster, self.agent, self.min_inradius = caster, agent, min_inradius
         self.margin = ray_margin(caster, agent.height + 2.0 * EPSILON)
         """Metres (:func:`ray_margin` over the highest ray start, the agent's height over the floor)."""
-        walkable = np.nonzero(caster.walkable_faces(np.arange(len(caster.triangles)), agent.max_slope_deg))[0]
-        tall_enough = 0.5 * agent.height > 2.0 * (EPSILON + self.margin)
-        self.open = np.zeros(len(caster.triangles), dtype=bool)
-        """(m,) bool per triangle of the caster's mesh."""
-        if tall_enough and len(walkable):
-            self.open[walkable[~self._crowded(walkable)]] = True
+        # once per mesh, agent and inradius: step 5's mesh_los asks for the floors step 1's builder found (on the
+        # 100k level 6 s of CPU and a transient 1.6 GiB, the run's peak: docs/performance.md, mem48)
+        found = caster.scene.open_floors.get((agent, min_inradius))
+        if found is None:
+            found = np.zeros(len(caster.triangles), dtype=bool)
+            walkable = np.nonzero(caster.walkable_faces(np.arange(len(caster.triangles)), agent.max_slope_deg))[0]
+            if 0.5 * agent.height > 2.0 * (EPSILON + self.margin) and len(walkable):  # tall enough
+                found[walkable[~self._crowded(walkable)]] = True
+            found.flags.writeable = False
+            caster.scene.open_floors[(agent, min_inradius)] = found
+        self.open = found
+        """(m,) bool per triangle of the caster's mesh, read-only (shared by the mesh's open floors of this agent)."""
 
     def _crowded(self, floors: np.ndarray) -> np.ndarray:
         """(k,) bool: the walkable triangles ``floors`` that are too small or that another triangle comes near."""
