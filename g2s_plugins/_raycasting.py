@@ -793,8 +793,8 @@ class OpenFloors:
         self.caster, self.agent, self.min_inradius = caster, agent, min_inradius
         self.margin = ray_margin(caster, agent.height + 2.0 * EPSILON)
         """Metres (:func:`ray_margin` over the highest ray start, the agent's height over the floor)."""
-        # once per mesh, agent and inradius: step 5's mesh_los asks for the floors step 1's builder found (on the
-        # 100k level 6 s of CPU and a transient 1.6 GiB, the run's peak: docs/performance.md, mem48)
+        # once per mesh, agent and inradius: step 5's mesh_los asks for the floors step 1's builder found (6.2 s
+        # of CPU on the 100k level, and a transient 0.22-0.31 GiB on the 20k one: docs/performance.md, mem48)
         found = caster.scene.open_floors.get((agent, min_inradius))
         if found is None:
             found = np.zeros(len(caster.triangles), dtype=bool)

@@ -1,15 +1,16 @@
-"""The C allocator's large blocks: handed back to the system when freed, not kept for later ones.
+"""Memory the C allocator holds free: handed back to the system where a stage's arrays are done with.
 
 glibc's ``malloc`` serves a block of at least its mmap threshold (128 KiB at start) with a mapping of its own,
-unmapped when the block is freed. But freeing such a block raises the threshold to the block's size (up to
+unmapped when the block is freed; but freeing such a block raises the threshold to the block's size (up to
 32 MiB on 64-bit), so later blocks of up to that size come from the heaps (one per thread that allocates),
-where freed memory goes back to the system only from a heap's top. numpy's arrays are such blocks: a run that
-makes and drops arrays of a few MiB by the thousand (the sampling route's ray batches and walk tests on two
-threads, the walking flows' trees) keeps most of what its busiest moments held, resident, to its end. On the
-100k-polygon level that was more than half the sampling route's peak (docs/performance.md, mem48). A threshold
-set by ``mallopt`` is no longer moved, so every block from 128 KiB up is unmapped when freed again.
+where freed memory goes back to the system only from a heap's top. numpy's arrays are such blocks: the sampling
+builder's ray batches on two threads left 0.64 GiB free in the heaps on the 100k-polygon level, resident
+to the run's end, which CPython's objects (in arenas of their own) do not reuse. ``malloc_trim`` hands back
+every free page of every heap, once, where it is called; fixing the threshold instead (``mallopt``) unmapped
+every block as it was freed, at 15 % more CPU on the 20k level (the system's time to map and clear the pages
+again; docs/performance.md, mem48).
 
-Other C libraries (macOS, Windows, musl) decide for themselves: nothing is set there.
+Other C libraries (macOS, Windows, musl) decide for themselves: nothing is done there.
 """
 
 from __future__ import annotations
@@ -17,26 +18,27 @@ from __future__ import annotations
 import ctypes
 import functools
 import sys
-
-M_MMAP_THRESHOLD = -3
-"""glibc's ``mallopt`` parameter number for the mmap threshold (``malloc.h``)."""
-
-LARGE_BLOCK = 128 * 1024
-"""Bytes: blocks this large or larger get a mapping of their own (glibc's own starting threshold)."""
+from collections.abc import Callable
 
 
 @functools.cache
-def hand_back_large_blocks() -> bool:
-    """Fix glibc's mmap threshold at :data:`LARGE_BLOCK` for this process (once; later calls do nothing).
-
-    Returns whether it was set (``False`` on a system without glibc's ``mallopt``). Values computed do not
-    depend on it, only the resident memory and the time the system takes to map and unmap the blocks.
-    """
+def _malloc_trim() -> Callable[[int], int] | None:
+    """glibc's ``malloc_trim``, or ``None`` where the C library has none."""
     if not sys.platform.startswith("linux"):
-        return False
+        return None
     try:
         libc = ctypes.CDLL(None)  # the process's own C library
     except OSError:
-        return False
-    mallopt = getattr(libc, "mallopt", None)
-    return mallopt is not None and mallopt(M_MMAP_THRESHOLD, LARGE_BLOCK) == 1
+        return None
+    return getattr(libc, "malloc_trim", None)
+
+
+def hand_back_free_memory() -> bool:
+    """Hand the free pages of the C allocator's heaps back to the system (glibc's ``malloc_trim(0)``): resident
+    memory falls, values computed do not change. Whether any was handed back (``False`` without glibc).
+
+    Cost: a walk over the heaps' free blocks (milliseconds), and a page fault for each page handed back that a
+    later block uses again.
+    """
+    trim = _malloc_trim()
+    return trim is not None and trim(0) == 1

@@ -147,7 +147,7 @@ from g2s_plugins._raycasting import (
     ray_margin,
     walks_in_batch,
 )
-from g2s_plugins.allocator import hand_back_large_blocks
+from g2s_plugins.allocator import hand_back_free_memory
 from g2s_plugins.area_gaps import likely_cause_of
 from g2s_plugins.play_space import PlaySpaceParams, cut_to_play_space
 from g2s_plugins.units_check import check_units
@@ -1214,7 +1214,6 @@ def build_sampled_graph(
     the graph so that its JSON output stays the same from run to run).
     """
     spacing, connect, clearance, probe_step, gap = _resolve(params, agent)
-    hand_back_large_blocks()  # this build's and the later steps' arrays come and go by the gigabyte
     timings = timings if timings is not None else {}
     clock = time.perf_counter()
 
@@ -1326,6 +1325,8 @@ def build_sampled_graph(
         edges = np.concatenate([edges, gaps])
         edges = edges[np.lexsort((edges[:, 1], edges[:, 0]))]
     lap("gaps")
+    # the rays are done: what their batches left free in the C heaps goes back before the graph's objects are made
+    hand_back_free_memory()
     stats["candidate_edges"] = int(candidate_edges)
     stats["gap_edges"] = int(len(gaps))
 
