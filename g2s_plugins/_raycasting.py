@@ -796,7 +796,7 @@ class OpenFloors:
         """(m,) bool per triangle of the caster's mesh, read-only: found once per mesh, agent and ``min_inradius``
         (kept in :attr:`RayCaster.scene`; the sampling builder's and the ``mesh_los`` predicate's are the same with
         the builder's default spacing, and the predicate took 0.9 s of CPU to find them again on a 20k-polygon
-        level: docs/performance.md, samp5_48)."""
+        level and a transient 0.22-0.31 GiB: docs/performance.md, samp5_48 and mem48)."""
         if self.open is None:
             walkable = np.nonzero(caster.walkable_faces(np.arange(len(caster.triangles)), agent.max_slope_deg))[0]
             tall_enough = 0.5 * agent.height > 2.0 * (EPSILON + self.margin)

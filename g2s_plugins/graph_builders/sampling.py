@@ -147,6 +147,7 @@ from g2s_plugins._raycasting import (
     ray_margin,
     walks_in_batch,
 )
+from g2s_plugins.allocator import hand_back_free_memory
 from g2s_plugins.area_gaps import likely_cause_of
 from g2s_plugins.play_space import PlaySpaceParams, cut_to_play_space
 from g2s_plugins.units_check import check_units
@@ -1324,6 +1325,8 @@ def build_sampled_graph(
         edges = np.concatenate([edges, gaps])
         edges = edges[np.lexsort((edges[:, 1], edges[:, 0]))]
     lap("gaps")
+    # the rays are done: what their batches left free in the C heaps goes back before the graph's objects are made
+    hand_back_free_memory()
     stats["candidate_edges"] = int(candidate_edges)
     stats["gap_edges"] = int(len(gaps))
 
@@ -1340,12 +1343,16 @@ def build_sampled_graph(
     # CPU against 2.9 s with a tuple made from each row (docs/performance.md, 6 December 2026, samp1_47)
     pos, nrm = list(zip(*samples.T.tolist())), list(zip(*sample_normals.T.tolist()))
     area_list = areas.astype(np.float64).tolist()
+    # one int object per node, which its neighbours' dicts hold as their key for it too (an object per edge end
+    # made by tolist was 2 x 2,790,938 x 32 bytes, 0.17 GiB, on the 100k level)
+    ids = list(range(len(samples)))
+    ends = (map(ids.__getitem__, column) for column in edges.T.tolist())
     # the graph add_nodes_from and add_edges_from make (the edges are unique), written straight into its dicts
     graph_of(
         graph,
         {i: {"pos": p, "normal": v, "area": a, "on_navmesh": True, "polygon": -1}
-         for i, (p, v, a) in enumerate(zip(pos, nrm, area_list))},
-        zip(*edges.T.tolist(), [{"weight": w} for w in weights.tolist()]),
+         for i, p, v, a in zip(ids, pos, nrm, area_list)},
+        zip(*ends, [{"weight": w} for w in weights.tolist()]),
     )
     lap("graph")
     stats.update(
