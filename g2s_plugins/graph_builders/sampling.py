@@ -14,8 +14,10 @@ wanted. No Recast is involved: ``context.navmesh`` stays ``None``.
 3. *Agent checks*, batched upward/horizontal/downward rays per candidate:
    head room (nothing within the agent height above it); clearance (no wall
    within ``clearance`` metres, horizontal rays at knee, waist and head
-   height); no ledge within ``clearance`` (ground found at that distance in 8
-   directions, within a step or the max slope, with head room; a probe over a
+   height); no ledge within ``clearance`` (ground found at half that distance
+   and at that distance in 8 directions, rising or falling between neighbouring
+   probes by a step or the max slope at most, the walk test's rule, with head
+   room; a probe over a
    crack, such as a grating's slot, stands on the ground beside it, the walk
    test's crack rule). This erodes
    the walkable surface by ``clearance`` as Recast erodes it by the radius.
@@ -84,8 +86,8 @@ surface"), ``polygon=-1``. Connected parts whose area is below
 the resolved settings and counts (candidates, samples, rays, ...). The same mesh and parameters always give the same graph.
 
 Cost, for c candidates, s samples and p sample pairs within
-``connect_radius``: at most 41 rays a candidate (head room; 8 directions at
-up to 3 heights; 8 ledge rays down and 8 up), and 2 or 4 for each ledge probe
+``connect_radius``: at most 49 rays a candidate (head room; 8 directions at
+up to 3 heights; 16 ledge rays down and 8 up), and 2 or 4 for each ledge probe
 that finds no ground of its own (up to the first that finds none beside it
 either), fewer where
 :class:`_Surroundings` gives the answer; one more upward ray a candidate
@@ -338,8 +340,10 @@ def agent_fits(
     Head room above the point; if ``clearance > 0``, no steep geometry within
     ``clearance`` horizontally at knee (max climb + margin), waist (half
     height) and head (height - margin) levels, and in 8 directions at
-    ``clearance`` metres walkable ground within a step (or the max slope)
-    of the point, with head room of its own. A ledge probe that finds none
+    ``LEDGE_PROBES`` probes out to ``clearance`` walkable ground that rises or
+    falls between neighbours (the point the first) by at most a step or the
+    max slope over their distance (the walk test's rule), with head room over
+    the outer probe. A ledge probe that finds none
     stands on the ground within one crack step on both sides of it (each side
     tried apart at half a step and a step), along x, else along z
     (:func:`~g2s_plugins._raycasting.ground_across_crack` with
