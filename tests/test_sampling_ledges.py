@@ -1,4 +1,9 @@
-"""The sampling builder's ledge test on stairs and ledge tops (docs/sampling.md, "Stairs and narrow ledge tops")."""
+"""The sampling builder's ledge test on stairs and ledge tops (docs/sampling.md, "Stairs and narrow ledge tops").
+
+Main's rule (one probe at the clearance, ground within max(climb, slope x clearance) + 0.1 m) fails the first two;
+the rule tried on branch ``ledge48`` (commit 88d8b51: two probes, the walk test's rise between neighbours) passes
+them and fails the last, and was not measured safe in time: the first two are expected failures until a rule passes
+all four."""
 
 from __future__ import annotations
 
@@ -23,6 +28,11 @@ def top_samples(depth: float, height: float, back: str) -> tuple[int, bool]:
     return int(over.sum()), bool(over.any() and cases.top_joined(graph, pos, over, middles[0]))
 
 
+MAIN_RULE = ("main's ledge test reads ground within 0.6 m of a point at 0.5 m as floor, whatever lies between: "
+             "docs/sampling.md, \"Stairs and narrow ledge tops\"")
+
+
+@pytest.mark.xfail(strict=True, reason=MAIN_RULE)
 def test_a_45_degree_flight_has_ground_all_round_its_treads() -> None:
     # Risers 0.30 m, treads 0.30 m, 3 m wide: at the front of every tread (x 0.05 m into it, where no riser stands
     # within 0.5 m over the knee) the probes 0.25 m and 0.5 m up or down the flight find one riser each between
@@ -34,6 +44,7 @@ def test_a_45_degree_flight_has_ground_all_round_its_treads() -> None:
     assert fits.all(), rejected
 
 
+@pytest.mark.xfail(strict=True, reason=MAIN_RULE)
 def test_a_bench_narrower_than_the_agent_holds_no_sample() -> None:
     # A bench 0.5 m deep, 0.45 m high against a wall (the drained pools' spa): every point on it has the bench's
     # edge, 0.45 m down, within 0.25 m, over the climb; main's rule took the floor 0.45 m down as ground.
@@ -49,10 +60,10 @@ def test_a_step_the_agent_cannot_climb_stays_apart_and_one_it_can_is_floor() -> 
     assert on > 0 and joined
 
 
-@pytest.mark.xfail(strict=True, reason="the wall test's knee rays (0.5 m up) meet the risers two steps up within the "
-                   "clearance on most of each tread, and the samples left do not join the flight (docs/sampling.md, "
-                   "\"Stairs and narrow ledge tops\": left)")
 def test_a_45_degree_flight_turned_22_degrees_joins_its_floors() -> None:
+    # Joined on main's rule by samples the passage stage adds; the rule of 88d8b51 let more grid candidates fit, left
+    # two stranded, and the points it would add failed the knee-high wall rays, which meet the riser two steps up:
+    # apart (docs/sampling.md, "Stairs and narrow ledge tops").
     mesh, middles, _ = cases.flight_level(0.30, 0.30, 2.0)
     turn = cases._turn(22.0)
     mesh.apply_transform(turn)
