@@ -1,0 +1,71 @@
+"""The sampling builder's ledge test on stairs and ledge tops (docs/sampling.md, "Stairs and narrow ledge tops").
+
+Main's rule (one probe at the clearance, ground within max(climb, slope x clearance) + 0.1 m) fails the first two;
+the rule tried on branch ``ledge48`` (commit 88d8b51: two probes, the walk test's rise between neighbours) passes
+them and fails the last, and was not measured safe in time: the first two are expected failures until a rule passes
+all four."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from g2s_plugins._raycasting import AgentShape, RayCaster
+from g2s_plugins.graph_builders import sampling
+from tests.conftest import benchmark
+
+cases = benchmark("ledge_cases")
+AGENT = AgentShape.from_config(cases.AGENT)
+
+
+def top_samples(depth: float, height: float, back: str) -> tuple[int, bool]:
+    """How many samples of the preset's graph (grid) stand on :func:`ledge_cases.ledge_level`'s top, and whether one
+    of them is joined to the floor's middle."""
+    mesh, middles, plan = cases.ledge_level(depth, height, back)
+    graph = sampling.build_sampled_graph(mesh, sampling.Params(method="grid"), AGENT)
+    pos = np.array([graph.nodes[n]["pos"] for n in sorted(graph.nodes)])
+    over = cases.on_plan(pos, np.eye(4), plan, height - 0.05, height + 0.05)
+    return int(over.sum()), bool(over.any() and cases.top_joined(graph, pos, over, middles[0]))
+
+
+MAIN_RULE = ("main's ledge test reads ground within 0.6 m of a point at 0.5 m as floor, whatever lies between: "
+             "docs/sampling.md, \"Stairs and narrow ledge tops\"")
+
+
+@pytest.mark.xfail(strict=True, reason=MAIN_RULE)
+def test_a_45_degree_flight_has_ground_all_round_its_treads() -> None:
+    # Risers 0.30 m, treads 0.30 m, 3 m wide: at the front of every tread (x 0.05 m into it, where no riser stands
+    # within 0.5 m over the knee) the probes 0.25 m and 0.5 m up or down the flight find one riser each between
+    # neighbours, 0.30 m, within the climb; main's rule read the two risers within 0.5 m, 0.6 m, as a ledge.
+    mesh, _, _ = cases.flight_level(0.30, 0.30, 3.0)
+    points = np.array([[0.30 * k + 0.05, 0.30 * (k + 1), 0.0] for k in range(1, 8)])
+    rejected = np.zeros(len(points), dtype=np.int8)
+    fits = sampling.agent_fits(RayCaster(mesh), points, AGENT, AGENT.radius, rejected=rejected)
+    assert fits.all(), rejected
+
+
+@pytest.mark.xfail(strict=True, reason=MAIN_RULE)
+def test_a_bench_narrower_than_the_agent_holds_no_sample() -> None:
+    # A bench 0.5 m deep, 0.45 m high against a wall (the drained pools' spa): every point on it has the bench's
+    # edge, 0.45 m down, within 0.25 m, over the climb; main's rule took the floor 0.45 m down as ground.
+    assert top_samples(0.5, 0.45, "wall") == (0, False)
+    assert top_samples(0.3, 0.45, "none") == (0, False)  # a low wall's top
+
+
+def test_a_step_the_agent_cannot_climb_stays_apart_and_one_it_can_is_floor() -> None:
+    # A platform 4 x 4 m: 0.45 m high (0.05 m over the climb) its top is an area of its own; 0.3 m high, floor.
+    on, joined = top_samples(4.0, 0.45, "none")
+    assert on > 0 and not joined
+    on, joined = top_samples(4.0, 0.3, "none")
+    assert on > 0 and joined
+
+
+def test_a_45_degree_flight_turned_22_degrees_joins_its_floors() -> None:
+    # Joined on main's rule by samples the passage stage adds; the rule of 88d8b51 let more grid candidates fit, left
+    # two stranded, and the points it would add failed the knee-high wall rays, which meet the riser two steps up:
+    # apart (docs/sampling.md, "Stairs and narrow ledge tops").
+    mesh, middles, _ = cases.flight_level(0.30, 0.30, 2.0)
+    turn = cases._turn(22.0)
+    mesh.apply_transform(turn)
+    graph = sampling.build_sampled_graph(mesh, sampling.Params(method="grid"), AGENT)
+    assert cases.joined(graph, middles @ turn[:3, :3].T)
