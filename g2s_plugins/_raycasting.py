@@ -505,9 +505,10 @@ _TWIN_HASH = np.random.default_rng(0).uniform(0.5, 1.5, 9)
 share the sum; twins always do)."""
 
 
-def _reversed_pairs(triangles: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-    """Triangles on the same three corners wound opposite ways: ``(first, second, y_first, y_second)``, (p,) each,
-    the pairs and their normals' Y (unnormalised). Cost: one sort of the m triangles (about 1 s for 2 M)."""
+def _reversed_twins(triangles: np.ndarray) -> np.ndarray:
+    """(m,) int64: for a triangle facing down, another on the same three corners wound the other way (its up-facing
+    side, as a two-sided face is exported), else -1. Cost: one sort of the m triangles (about 1 s for 2 M)."""
+    twin = np.full(len(triangles), -1, dtype=np.int64)
     # each coordinate's three values in order: the same for a triangle and its twin, whatever their corners' order
     key = np.sort(triangles, axis=1).reshape(-1, 9)
     hashed = key @ _TWIN_HASH
@@ -516,21 +517,12 @@ def _reversed_pairs(triangles: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.n
     first, second = order[pair], order[pair + 1]
     corner_found = (triangles[first][:, :, None, :] == triangles[second][:, None, :, :]).all(axis=3).any(axis=2)
     same_corners = (key[first] == key[second]).all(axis=1) & corner_found.all(axis=1)
-    first, second = first[same_corners], second[same_corners]
+    # the normals' Y of the paired triangles only (most triangles have no twin)
     normal_first, normal_second = (
-        np.cross(triangles[rows, 1] - triangles[rows, 0], triangles[rows, 2] - triangles[rows, 0]) for rows in (first, second)
+        np.cross(triangles[rows, 1] - triangles[rows, 0], triangles[rows, 2] - triangles[rows, 0])[:, 1] for rows in (first, second)
     )
-    opposite = np.einsum("ij,ij->i", normal_first, normal_second) < 0
-    return first[opposite], second[opposite], normal_first[opposite, 1], normal_second[opposite, 1]
-
-
-def _reversed_twins(triangles: np.ndarray) -> np.ndarray:
-    """(m,) int64: for a triangle facing down, another on the same three corners wound the other way (its up-facing
-    side, as a two-sided face is exported), else -1. Cost: :func:`_reversed_pairs`."""
-    twin = np.full(len(triangles), -1, dtype=np.int64)
-    first, second, normal_first, normal_second = _reversed_pairs(triangles)
     # a two-sided wall has no up-facing side: the intersector's answer stands there
-    facing = (np.sign(normal_first) == -np.sign(normal_second)) & (normal_first != 0)
+    facing = same_corners & (np.sign(normal_first) == -np.sign(normal_second)) & (normal_first != 0)
     down = np.where(normal_first < 0, first, second)[facing]
     twin[down] = np.where(normal_first < 0, second, first)[facing]
     return twin
