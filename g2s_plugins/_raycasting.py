@@ -1175,7 +1175,12 @@ def back_face_lead(caster: RayCaster, origins: np.ndarray, direction: np.ndarray
     if len(ray) == 0:
         return lead
     face = np.where(caster.scene.twin[face] >= 0, caster.scene.twin[face], face)
-    facing = caster.face_normals[face] @ (np.asarray(direction, dtype=np.float64) / np.linalg.norm(direction))
+    # each face's side as its corners are wound, the order the closed bodies and their winding are read from (a
+    # mesh's stored normals can disagree: trimesh's invert() leaves them as they were)
+    corners = caster.triangles[face]
+    wound = np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0])
+    wound /= np.maximum(np.linalg.norm(wound, axis=1, keepdims=True), 1e-300)
+    facing = wound @ (np.asarray(direction, dtype=np.float64) / np.linalg.norm(direction))
     sign = np.where(np.abs(facing) < 1e-9, 0, np.sign(facing)).astype(np.int64)
     if winding is not None:
         sign = sign * winding[face]
