@@ -50,12 +50,12 @@ def _vault_quadrant(s: _Solids, centre: np.ndarray, half: float, crown: float, s
             s.hull(np.array(points))
 
 
-def crypt(seed: int) -> trimesh.Trimesh:
-    """A church's crypt (a gothic adventure's or a horror game's) under its nave: 12-14 x 5-6 square bays 4.2-4.8 m
+def crypt(seed: int, bays: tuple[int, int, int, int] = (12, 15, 5, 7)) -> trimesh.Trimesh:
+    """A church's crypt (a gothic adventure's or a horror game's) under its nave: 12-14 x 5-6 square bays (``bays``: the ranges [a, b) x [c, d) they are drawn from) 4.2-4.8 m
     a side, each groin-vaulted (:func:`_vault_quadrant`) from a springing 1.3 m over the floor at its corners to a
-    crown 2.15-2.35 m over it on its middle lines (drawn per bay): head room of the agent's 2 m only within 0.55-0.7
-    of a half bay of each middle line, so of a floor with no wall inside it the agent walks a lattice of lanes
-    1.9-3.2 m wide, one along each row and column of bays. Piers 0.7 m square at every inner bay corner, walls 0.6 m
+    crown 2.15-2.35 m over it on its middle lines (drawn per bay): head room of the agent's 2 m only within 0.57-0.75
+    of a half bay of each middle line, so of a floor with no wall inside it the agent walks a lattice of lanes with
+    2.4-3.6 m of head room across (1.4-2.6 m for its centre), one along each row and column of bays. Piers 0.7 m square at every inner bay corner, walls 0.6 m
     thick round it; stone tombs (1 x 2.2 m, 0.9 m high) in the middle of about one inner bay in eight, no two side by
     side. The nave above (its floor 3.3 m over the crypt's, 7 m beyond it at each end) holds pews either side of a
     middle aisle and an altar on two steps; the crypt is entered only down two flights (17 risers, 1.8 m wide), one
@@ -67,7 +67,7 @@ def crypt(seed: int) -> trimesh.Trimesh:
     or a wall, nor across a vault's low corner. Traffic highest on the crypt's middle lane between its two doors and
     on the nave's middle aisle, lowest in the crypt's corner bays and in the lanes a tomb ends."""
     rng = np.random.default_rng(seed)
-    nx, nz, bay = int(rng.integers(12, 15)), int(rng.integers(5, 7)), float(rng.uniform(4.2, 4.8))
+    nx, nz, bay = int(rng.integers(bays[0], bays[1])), int(rng.integers(bays[2], bays[3])), float(rng.uniform(4.2, 4.8))
     length, width, storey = nx * bay, nz * bay, 3.3
     spring, top = 1.3, storey - 0.3  # the vaults' solids stop under the nave's floor slab
     s = _Solids()

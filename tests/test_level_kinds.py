@@ -1,4 +1,4 @@
-"""The level kinds of rounds 9-30 (``benchmarks/level_kinds.py``, ``level_kinds26.py`` ... ``level_kinds30.py``) build
+"""The level kinds of rounds 9-31 (``benchmarks/level_kinds.py``, ``level_kinds26.py`` ... ``level_kinds31.py``) build
 the levels they describe.
 
 Smoke tests of quick generators (most well under a second each to build and to give a navmesh; the theatre's and
@@ -1486,3 +1486,85 @@ def test_the_marinas_five_pontoons_are_reached_down_their_gangways(round_30):
     x, y, z = nav.centres.T
     out = np.sort(x[(np.abs(y - 0.2 - 0.4) < 0.1) & (z < -20.0)])
     assert 1 + (np.diff(out) > 15.0).sum() == 5, out
+
+
+@pytest.fixture(scope="module")
+def round_31() -> dict[str, Callable[..., trimesh.Trimesh]]:
+    """``benchmarks/level_kinds31.py``'s KINDS (the thirty-first round): each call builds its level anew."""
+    return benchmark("level_kinds31").KINDS
+
+
+def flat_steps_over_climb(nav) -> int:
+    """How many pairs of neighbouring flat polygons (their corners within 5 cm of one height) stand more than 0.3 m
+    apart in height: a step between two floors that the navmesh walks straight up."""
+    heights, flat = [], []
+    for p in range(nav.polygon_count):
+        corners = nav.polygons[p]
+        y = nav.vertices[corners[corners >= 0], 1]
+        heights.append(y.mean())
+        flat.append(np.ptp(y) < 0.05)
+    return sum(1 for p in range(nav.polygon_count) for q in nav.neighbours[p]
+               if q > p and flat[p] and flat[q] and abs(heights[p] - heights[q]) > 0.3)
+
+
+def test_the_crypts_vaults_leave_a_lattice_of_lanes_one_area_with_the_nave(round_31):
+    """Groin vaults whose crowns stand 2.15-2.35 m over the floor (springing 1.3 m): one area with the nave above (3.3
+    m up, down two flights), and the crypt's floor only on lanes under the vaults' middle lines, 25-65 % of its plan
+    (a 4 x 3 crypt, :func:`crypt`'s ``bays``)."""
+    label, nav = areas(round_31["crypt"](0, bays=(4, 5, 3, 4)), DROPS)
+    assert label.max() == 0
+    y, x = nav.centres[:, 1] - 0.2, nav.centres[:, 0]
+    assert nav.areas[y > 3.0].sum() > 200.0
+    crypt = (y < 0.5) & (x > 0.0)
+    plan = np.ptp(nav.vertices[nav.vertices[:, 1] < 0.5, 2]) * (x[crypt].max() - x[crypt].min() + 2.0)
+    assert 0.25 < nav.areas[crypt].sum() / plan < 0.65, nav.areas[crypt].sum() / plan
+
+
+def test_the_solar_farm_is_walked_under_the_tables_high_sides_only(round_31):
+    """Tables tilted at 50 degrees, low edges 0.6-1.2 m over the ground: one area, and its floor under 80 % of the
+    fenced ground (no floor under a low side, nor on a panel)."""
+    mesh = round_31["solar_farm"](0)
+    label, nav = areas(mesh, DROPS)
+    assert label.max() == 0
+    lo, hi = mesh.bounds
+    assert 0.5 < nav.areas.sum() / ((hi[0] - lo[0]) * (hi[2] - lo[2])) < 0.8
+    assert nav.centres[:, 1].max() < 0.5
+
+
+def test_the_mirror_maze_is_one_area_to_its_far_row(round_31):
+    """A maze of mirrors on a triangular lattice (corridors at 0, 60 and 120 degrees, triangles 3.0-3.3 m a side): one
+    area reaching the far row of triangles, more than 800 m² of floor."""
+    mesh = round_31["mirror_maze"](0)
+    label, nav = areas(mesh, DROPS)
+    assert label.max() == 0 and nav.areas.sum() > 800.0
+    assert nav.centres[:, 2].max() > mesh.bounds[1][2] - 8.0
+
+
+def test_the_temples_tall_steps_are_not_climbed_but_their_flights_are(round_31):
+    """Platforms of three steps of 0.42-0.50 m (over the 0.4 m climb), each climbed by one flight: one area, more than
+    500 m² of floor on the platforms (over 1.2 m up) and no two flat floors joined across a step over 0.3 m."""
+    label, nav = areas(round_31["temple_steps"](0), DROPS)
+    assert label.max() == 0
+    assert nav.areas[nav.centres[:, 1] - 0.2 > 1.2].sum() > 500.0
+    assert flat_steps_over_climb(nav) == 0
+
+
+def test_the_ice_floes_wide_cracks_part_the_lake(round_31):
+    """Floes between cracks 0.05-0.6 m wide: the lake falls into more than five areas, and the west and east shores
+    (0.2 m over the ice) are apart on seed 0 (no crack there under a cell's width joins them)."""
+    mesh = round_31["ice_floes"](0)
+    label, nav = areas(mesh, DROPS)
+    assert label.max() + 1 > 5
+    shore = np.abs(nav.centres[:, 1] - 0.2 - 0.2) < 0.05
+    west, east = shore & (nav.centres[:, 0] < 0.0), shore & (nav.centres[:, 0] > mesh.bounds[1][0] - 30.0)
+    assert west.any() and east.any() and not set(label[west]) & set(label[east])
+
+
+def test_the_bell_towers_wide_turret_stairs_reach_their_bell_chambers(round_31):
+    """Seed 0's towers, whose turret stairs are 1.6 m or more clear: one area with floor on the stairs between the
+    storeys and more than 50 m² in the bell chambers 9.6 m or more up."""
+    label, nav = areas(round_31["bell_towers"](0), DROPS)
+    assert label.max() == 0
+    y = nav.centres[:, 1] - 0.2
+    assert nav.areas[y > 9.5].sum() > 50.0
+    assert ((y > 0.5) & (y < 2.7)).any()
