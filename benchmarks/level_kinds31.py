@@ -51,16 +51,16 @@ def _vault_quadrant(s: _Solids, centre: np.ndarray, half: float, crown: float, s
 
 
 def crypt(seed: int, bays: tuple[int, int, int, int] = (12, 15, 5, 7)) -> trimesh.Trimesh:
-    """A church's crypt (a gothic adventure's or a horror game's) under its nave: 12-14 x 5-6 square bays (``bays``: the ranges [a, b) x [c, d) they are drawn from) 4.2-4.8 m
-    a side, each groin-vaulted (:func:`_vault_quadrant`) from a springing 1.3 m over the floor at its corners to a
-    crown 2.15-2.35 m over it on its middle lines (drawn per bay): head room of the agent's 2 m only within 0.57-0.75
-    of a half bay of each middle line, so of a floor with no wall inside it the agent walks a lattice of lanes with
-    2.4-3.6 m of head room across (1.4-2.6 m for its centre), one along each row and column of bays. Piers 0.7 m square at every inner bay corner, walls 0.6 m
-    thick round it; stone tombs (1 x 2.2 m, 0.9 m high) in the middle of about one inner bay in eight, no two side by
-    side. The nave above (its floor 3.3 m over the crypt's, 7 m beyond it at each end) holds pews either side of a
-    middle aisle and an altar on two steps; the crypt is entered only down two flights (17 risers, 1.8 m wide), one
-    from each end of the nave, in wells outside its walls, each through a door (lintel 2.4 m) into the middle row of
-    bays.
+    """A church's crypt (a gothic adventure's or a horror game's) under its nave: 12-14 x 5-6 square bays (``bays``: the
+    ranges [a, b) x [c, d) they are drawn from) 4.2-4.8 m a side, each groin-vaulted (:func:`_vault_quadrant`) from a
+    springing 1.3 m over the floor at its corners to a crown 2.15-2.35 m over it on its middle lines (drawn per bay):
+    head room of the agent's 2 m only within 0.57-0.75 of a half bay of each middle line, so of a floor with no wall
+    inside it the agent walks a lattice of lanes with 2.4-3.6 m of head room across (1.4-2.6 m for its centre), one
+    along each row and column of bays. Piers 0.7 m square at every inner bay corner, walls 0.6 m thick round it; stone
+    tombs (1 x 2.2 m, 0.9 m high) in the middle of about one inner bay in eight, no two side by side. The nave above
+    (its floor 3.3 m over the crypt's, 8.4 m beyond it at each end) holds pews either side of a middle aisle and an
+    altar on two steps; the crypt is entered only down two flights (17 risers, 1.8 m wide), one from each end of the
+    nave, in wells outside its walls, each through a door (lintel 2.4 m) into the middle row of bays.
 
     Expected (written before the first run): one area. In the crypt, floor only on the lanes under the vaults'
     middle lines, none near a pier or along the walls; the structure along those lanes, never through a pier, a tomb
@@ -119,7 +119,8 @@ def crypt(seed: int, bays: tuple[int, int, int, int] = (12, 15, 5, 7)) -> trimes
             s.box(x, x + 0.6, storey - 0.1, storey + 0.9, z0, z1)
         x += 1.7
     for k, rise in enumerate((0.15, 0.30)):  # the altar's two steps at the east end, the altar on them
-        s.box(length + 2.0 + 0.4 * k, length + 6.0, storey, storey + rise, aisle_z - 3.0 + 0.4 * k, aisle_z + 3.0 - 0.4 * k)
+        s.box(length + 2.0 + 0.4 * k, length + 6.0, storey, storey + rise,
+              aisle_z - 3.0 + 0.4 * k, aisle_z + 3.0 - 0.4 * k)
     s.box(length + 4.0, length + 5.5, storey + 0.2, storey + 1.3, aisle_z - 1.2, aisle_z + 1.2)
     return s.mesh()
 
@@ -129,10 +130,11 @@ def solar_farm(seed: int) -> trimesh.Trimesh:
     one gate 6 m wide: a perimeter track, a central track 6 m wide along z cutting two blocks of rows, each row a line
     of panel tables along x, 18-24 m long between crossings 3 m wide. Each table faces south, tilted at 50 degrees (a
     northern site's angle, over the agent's slope limit: nothing on a panel is floor), its plan 2.4-3.0 m deep, its low
-    (south) edge 0.6-1.2 m over the ground (drawn per row) and its high edge 2.9-4.8 m: the agent stands under the
-    high side only, where the underside is over 2 m, 0.9-1.7 m from the low edge on. Posts 0.15 m square every 3.5 m
-    under both edges; aisles 1.6-2.8 m between the rows (drawn per block). Inverter huts (ridged) at some crossings, a
-    substation in a fenced yard (a gate 4 m wide, transformers), an operations building (ridged) by the gate.
+    (south) edge 0.6-1.2 m over the ground (drawn per row) and its high edge 3.5-4.8 m: the agent stands under the high
+    side only, where the underside is over 2 m, from 0.7-1.2 m (in plan) behind the low edge on. Posts 0.15 m square
+    every 3.5 m under both edges; aisles 1.6-2.8 m between the rows (drawn per block). Inverter huts (ridged) between
+    the perimeter track and the first rows, a substation in a fenced yard (a gate 4 m wide, transformers), an operations
+    building (ridged) by the gate.
 
     Expected (written before the first run): one area. Floor in every aisle, widened under each table's high side and
     along the rear posts' line, none under a low edge; the structure along the aisles and under the high sides, never
@@ -144,7 +146,8 @@ def solar_farm(seed: int) -> trimesh.Trimesh:
     s = _Solids()
     yard = (size_x - 40.0, size_x - 8.0, size_z - 30.0, size_z - 8.0)  # the substation (north-east)
     office = (10.0, 24.0, 10.0, 18.0)
-    transformers = [(yard[0] + 9.0 + 8.0 * k, yard[0] + 13.0 + 8.0 * k, yard[2] + 8.0, yard[2] + 12.0) for k in range(3)]
+    transformers = [(yard[0] + 9.0 + 8.0 * k, yard[0] + 13.0 + 8.0 * k, yard[2] + 8.0, yard[2] + 12.0)
+                    for k in range(3)]
     huts = []
     for k in range(int(rng.integers(3, 6))):  # inverter huts between the perimeter track and the first rows
         x = 14.0 + k * (size_x - 30.0) / 5.0 + float(rng.uniform(0.0, 6.0))
@@ -260,8 +263,12 @@ def mirror_maze(seed: int) -> trimesh.Trimesh:
     half = side / 2
     for j in range(rows):  # the half triangles at the ragged ends, and everything beyond them, solid
         z0, z1 = lobby + j * row_h, lobby + (j + 1) * row_h
-        west = [(x_left, z0), (x_left + half, z1), (x_left, z1)] if j % 2 == 0 else [(x_left, z0), (x_left + half, z0), (x_left, z1)]
-        east = [(x_right, z0), (x_right, z1), (x_right - half, z1)] if j % 2 == 0 else [(x_right - half, z0), (x_right, z0), (x_right, z1)]
+        if j % 2 == 0:
+            west = [(x_left, z0), (x_left + half, z1), (x_left, z1)]
+            east = [(x_right, z0), (x_right, z1), (x_right - half, z1)]
+        else:
+            west = [(x_left, z0), (x_left + half, z0), (x_left, z1)]
+            east = [(x_right - half, z0), (x_right, z0), (x_right, z1)]
         for plan in (west, east):
             s.prism(np.array(plan), 0.0, 2.4)
     for x0, x1, z0, z1 in fillers:
@@ -277,12 +284,13 @@ def mirror_maze(seed: int) -> trimesh.Trimesh:
 
 def temple_steps(seed: int) -> trimesh.Trimesh:
     """An ancient sanctuary (a historical action game's) 150-170 x 105-120 m inside a wall 3 m high entered through a
-    gatehouse 5 m wide in the south wall: 3 temples, each on a platform of three steps whose risers, 0.42-0.50 m
-    (drawn per temple), stand just over the agent's 0.4 m climb, treads 0.9-1.2 m; each platform is climbed only by
-    one flight of small steps (risers under 0.18 m, 3-4 m wide) in the middle of its east front, cut through the three
-    steps. On each platform a ring of columns (1.1 m across, gaps 1.3-1.7 m) round a walled cella entered by a door 3 m
-    wide from the east (the front's middle gap as wide as the flight), all under a ridged roof; an altar (1.2 m high) east of each temple; along the north wall a
-    stoa (a colonnade 8 m deep on one step of 0.16 m, roofed) and statues on plinths 1.5 m high about the ground.
+    gatehouse 5 m wide in the south wall: up to 3 temples (as many as fit 5 m apart), each on a platform of three steps
+    whose risers, 0.42-0.50 m (drawn per temple), stand just over the agent's 0.4 m climb, treads 0.9-1.2 m; each
+    platform is climbed only by one flight of small steps (risers under 0.18 m, 3-4 m wide) in the middle of its east
+    front, cut through the three steps. On each platform a ring of columns (1.1 m across, gaps 1.3-1.7 m) round a walled
+    cella entered by a door 3 m wide from the east (the front's middle gap as wide as the flight), all under a ridged
+    roof; an altar (1.2 m high) east of each temple; along the north wall a stoa (a colonnade 8 m deep on one step of
+    0.16 m, roofed) and statues on plinths 1.5 m high about the ground.
 
     Expected (written before the first run): one area. Each platform's top and the treads of its three steps reached
     up its flight alone, never up the tall steps (which a player in a game climbs but the agent does not); the
@@ -371,8 +379,8 @@ def ice_floes(seed: int) -> trimesh.Trimesh:
     thick at y = 0 between two shores (ground 0.2 m higher, 30 m deep, along its west and east sides), open water (no
     floor) under it. 16-20 straight cracks at random angles run from shore to shore or side to side, each 0.05-0.6 m
     wide (drawn per crack), about Recast's cell of 0.25 m and the step a person takes over a crack: every floe is the
-    convex piece of the lake between cracks (:func:`_cut_convex`), shrunk by half of each crack's width; the lake
-    meets each shore across a crack too. On the ice: fishing huts (ridged, 2 x 3 m, eaves 0.5 m), sleds (1 m high), a pressure
+    convex piece of the lake between cracks (:func:`_cut_convex`), shrunk by half of each crack's width; the lake meets
+    each shore across a crack too. On the ice: fishing huts (ridged, 2 x 3 m, eaves 0.5 m), sleds (1 m high), a pressure
     ridge of blocks; on the shores: cabins (ridged), trees, a jetty.
 
     Expected (written before the first run): cracks under a cell's width no break, floes across them one floor; a crack
@@ -443,8 +451,8 @@ def _turret_stair(s: _Solids, centre: np.ndarray, y0: float, turns: int, turn_ri
         for m in range(per_turn):
             a, y = start + (k * per_turn + m) * sector, y0 + k * turn_rise + riser * min(m + 1, per_turn - 2)
             s.prism(centre + _sector(0.2, outer + 0.05, a, a + sector * 1.02), y - 0.12, y)
-        s.prism(centre + _sector(outer - 0.1, outer + 0.35, door - sector, door + sector), y0 + (k + 1) * turn_rise - 0.12,
-                y0 + (k + 1) * turn_rise)  # the sill
+        sill = y0 + (k + 1) * turn_rise
+        s.prism(centre + _sector(outer - 0.1, outer + 0.35, door - sector, door + sector), sill - 0.12, sill)
     _trunk(s, centre, 0.25, y0 - 0.3, y0 + turns * turn_rise + 2.5)
     pieces, width = 20, 2 * math.pi / 20
     for k in range(turns + 1):
@@ -459,15 +467,15 @@ def _turret_stair(s: _Solids, centre: np.ndarray, y0: float, turns: int, turn_ri
 
 def bell_towers(seed: int) -> trimesh.Trimesh:
     """A town square (an assassination game's or a medieval sandbox's) 90-100 x 70-80 m, paved, houses (ridged)
-    round it leaving four streets out, and up to four towers 7-8 m square (as many as fit 5 m apart, off the
-    streets' lines), each of 3-4 storeys of 3.2 m (a room on each, the ground's with a door 1.6 m wide onto the square,
-    a bell chamber on top open under a roof, its parapet 1.1 m high, a bell hanging to 1.6 m over its floor), each
-    climbed only by a turret stair (:func:`_turret_stair`, 14 steps and a landing a turn of 3.2 m, risers 0.23 m) against its east
-    wall, a door 1.6 m wide from every storey onto the turret's landing: the stair's clear width, 1.55-2.25 m (drawn
-    per tower), straddles what a helix of wedges needs for the agent on Recast's cells of 0.25 m (its 1 m plus the
-    cells rounded off on both curved sides: about 1.9 m on a draft of one turret alone, where 1.0-1.45 m, a real turret's
-    width, never held floor). A fountain (its basin a step of
-    0.35 m), 40 market stalls (0.9 m high, 1 x 2 m) and benches on the square.
+    round it leaving four streets out, and up to four towers 7-8 m square (as many as fit 5 m apart, off the streets'
+    lines), each of 3-4 storeys of 3.2 m (a room on each, the ground's with a door 1.6 m wide onto the square, a bell
+    chamber on top open under a roof, its parapet 1.1 m high, a bell hanging to 1.6 m over its floor), each climbed only
+    by a turret stair (:func:`_turret_stair`, 14 steps and a landing a turn of 3.2 m, risers 0.23 m) against its east
+    wall, a door 1.6 m wide from every storey onto the turret's landing: the stair's clear width, 1.55-2.25 m (drawn per
+    tower), straddles what a helix of wedges needs for the agent on Recast's cells of 0.25 m (its 1 m plus the cells
+    rounded off on both curved sides: about 1.9 m on a draft of one turret alone, where 1.0-1.45 m, a real turret's
+    width, never held floor). A fountain (its basin a step of 0.35 m), 40 market stalls (0.9 m high, 1 x 2 m) and
+    benches on the square.
 
     Expected (written before the first run): the square and its streets one area; a tower's rooms joined to it up
     its turret where the stair's clear width is 1.95 m or more, otherwise apart (each storey an area of its own, or
@@ -477,8 +485,9 @@ def bell_towers(seed: int) -> trimesh.Trimesh:
     size_x, size_z = float(rng.uniform(90.0, 100.0)), float(rng.uniform(70.0, 80.0))
     s = _Solids()
     mx, mz = size_x / 2, size_z / 2
-    blocks = [(-20.0, mx - 4.0, -20.0, 0.0), (mx + 4.0, size_x + 20.0, -20.0, 0.0), (-20.0, mx - 4.0, size_z, size_z + 20.0),
-              (mx + 4.0, size_x + 20.0, size_z, size_z + 20.0), (-20.0, 0.0, 0.0, mz - 4.0), (-20.0, 0.0, mz + 4.0, size_z),
+    blocks = [(-20.0, mx - 4.0, -20.0, 0.0), (mx + 4.0, size_x + 20.0, -20.0, 0.0),
+              (-20.0, mx - 4.0, size_z, size_z + 20.0), (mx + 4.0, size_x + 20.0, size_z, size_z + 20.0),
+              (-20.0, 0.0, 0.0, mz - 4.0), (-20.0, 0.0, mz + 4.0, size_z),
               (size_x, size_x + 20.0, 0.0, mz - 4.0), (size_x, size_x + 20.0, mz + 4.0, size_z)]
     s.ground(-20.0, size_x + 20.0, -20.0, size_z + 20.0, 0.0, blocks)
     for x0, x1, z0, z1 in blocks:  # each block a row of houses 6-9 m along its longer side, ridged
