@@ -2,10 +2,8 @@
 edges of the level's walkable ground, not between the nodes' centres.
 
 The disconnected-areas warning (:mod:`g2s_core.disconnected`) names the cause
-between the largest area and the nearest other (:func:`nearest_areas`: of a
-frozen lake's floes, the one across a crack, not the next in size 27 m
-away); both graph builders set ``context.likely_cause`` to
-:func:`likely_cause_of` their ground.
+between the largest area and each of the next ones; both graph builders set
+``context.likely_cause`` to :func:`likely_cause_of` their ground.
 
 *The ground's edges* (:func:`ground_rim`): on the navmesh route, the edges of
 the area's navmesh polygons that no polygon of the area lies across, a point
@@ -46,8 +44,8 @@ disconnected-areas warning names"). *A floor shut inside a closed solid*
 (:func:`body_winding`), so that a mesh exported inside out reads as the same
 mesh wound right.
 
-Complexity: O(e log e) for the e edge points of the areas (one k-d tree of
-the largest's for the nearest areas, one per compared pair), e = the areas' polygon perimeter / ``cell_size`` on
+Complexity: O(e log e) for the e edge points of the compared areas (a k-d
+tree per pair of areas), e = the areas' polygon perimeter / ``cell_size`` on
 the navmesh route, their sample count on the sampling route; with the mesh,
 O(m log m) for its m faces' bodies and up to 9 rays for each of at most
 ``MAX_PLACE_CANDIDATES`` pairs.
@@ -79,9 +77,6 @@ Ground = tuple[np.ndarray, np.ndarray, np.ndarray]
 
 Rim = Callable[[nx.Graph, Sequence[int]], Ground]
 """``(graph, nodes) -> ground``: :func:`ground_rim` of a graph builder's surface."""
-
-COMPARED_AREAS = 4
-"""How many of the areas nearest the largest (:func:`nearest_areas`) are measured for the closest step."""
 
 MAX_PLACE_CANDIDATES = 1024
 """Edge pairs at most that :func:`where_between` tests (more, which takes 256 m of edge points a cell apart all within
@@ -266,9 +261,7 @@ def areas_cause(graph: nx.Graph, largest: Sequence[int], others: Sequence[Sequen
     door or plank too narrow for the agent, or the run of a wall or chasm.
     """
     ground = rim(graph, largest)  # once, however many areas it is compared with
-    grounds = [rim(graph, other) for other in others]
-    closest, nearest = min(((closest_step_for(ground, grounds[k], agent), others[k])
-                            for k in nearest_areas(ground, grounds, COMPARED_AREAS)),
+    closest, nearest = min(((closest_step_for(ground, rim(graph, other), agent), other) for other in others),
                            key=lambda pair: math.hypot(pair[0].gap, pair[0].step))
     cause = likely_cause(closest.step, closest.gap, agent)
     if mesh is None:
@@ -283,18 +276,6 @@ def areas_cause(graph: nx.Graph, largest: Sequence[int], others: Sequence[Sequen
     if closest.step > float(agent.height):
         return f"{cause}, {between(closest.pairs[0])}"
     return f"{cause}, {where_between(caster, closest, agent)}"
-
-
-def nearest_areas(ground: Ground, others: Sequence[Ground], count: int) -> np.ndarray:
-    """Indices of the ``count`` areas of ``others`` (each its :func:`ground_rim`) whose edge points come nearest
-    ``ground``'s, straight-line distance, nearest first (ties: the earlier, the larger area). Areas are found apart
-    by what lies between each and its neighbours, so the nearest, not the next in size, is the one to measure: one
-    k-d tree of ``ground``'s points queried with every other area's, O((k + e) log k) for its k points and the
-    others' e."""
-    owner = np.repeat(np.arange(len(others)), [len(other[0]) for other in others])
-    distance = np.full(len(others), np.inf)
-    np.minimum.at(distance, owner, cKDTree(ground[0]).query(np.concatenate([other[0] for other in others]))[0])
-    return np.argsort(distance, kind="stable")[:count]
 
 
 def shut_in(caster: RayCaster, points: np.ndarray, agent: AgentConfig, winding: np.ndarray) -> np.ndarray:
