@@ -117,10 +117,11 @@ struct ServedAfter {
 //
 // The queue is a 4-ary heap (D. B. Johnson, "Priority queues with update and finding minimum spanning trees",
 // Inf. Process. Lett. 4(3):53-57, 1975): half the levels of a binary heap, a node's four children side by side,
-// so a pop waits on memory half as often for two more comparisons a level; 4.7 % less CPU a source than
-// std::push_heap/pop_heap's binary heap on the 100k-polygon level's navmesh graph, every round lower (docs/
-// performance.md, navtime49). Two entries ServedAfter ranks alike are equal (the same distance and key, so the
-// same node), so any correct heap serves the same sequence of entries. O(log q) a push or pop for q queued entries.
+// so a pop waits on memory half as often for two more comparisons a level: 4.2-7.1 % less CPU a source than
+// std::push_heap/pop_heap's binary heap on the 100k-polygon level's navmesh graph (three replays, 10 of 11 rounds
+// lower; an 8-ary heap 2.2 %: docs/performance.md, navtime49). Two entries ServedAfter ranks alike are equal (the
+// same distance and key, so the same node), so any correct heap serves the same sequence of entries. O(log q) a
+// push or pop for q queued entries.
 class Search {
   public:
     explicit Search(int32_t n) : distance(static_cast<size_t>(n)) {}
