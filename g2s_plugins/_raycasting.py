@@ -60,6 +60,15 @@ JOINT_CALL_MAX_RAYS = 2048
 """Rays up to which :meth:`RayCaster.first_hits_of` casts its batches in one call (about where
 the per-call cost saved, ~70 µs, matches the cost of a direction per ray, ~0.1 µs a ray)."""
 
+SAME_PLACE = 1e-6
+"""Metres along a ray within which crossings are one place (:func:`back_face_lead`): two faces in one plane, a crate's
+side against a wall's face, come back from their layers (:attr:`_Scene.layers`) at distances equal to about 1e-12 m."""
+
+TOUCHING = 1e-3
+"""Metres: closed bodies with faces in one plane (to this) whose boxes there come this close go to different layers
+(:attr:`_Scene.layers`); far above the intersector's step past a crossing (a millionth of a layer's size) for levels
+up to a kilometre across."""
+
 GRAZE_NUDGE = 1e-4
 """Metres a ray that grazes a triangle is moved aside before it is cast again."""
 
@@ -132,9 +141,55 @@ class _Scene:
         return np.ascontiguousarray(self.face_normals[:, 1])
 
     @cached_property
-    def closed(self) -> np.ndarray:
-        """(m,) bool: :func:`_closed_bodies` of the triangles (once per mesh, on first use)."""
+    def bodies(self) -> np.ndarray:
+        """(m,) int64: :func:`_closed_bodies` of the triangles (once per mesh, on first use)."""
         return _closed_bodies(self.triangles, self.twin)
+
+    @cached_property
+    def closed(self) -> np.ndarray:
+        """(m,) bool: the triangle belongs to a closed body (:attr:`bodies`)."""
+        return self.bodies >= 0
+
+    @cached_property
+    def winding(self) -> np.ndarray:
+        """(m,) int8: +1 on a closed body wound outward (its signed volume positive) and on a cavity (a body of
+        negative volume strictly within the bounding box of one of positive volume: a closed room's inner shell),
+        -1 on any other body wound inside out (a solid exported with flipped normals), 0 on triangles of no closed
+        body. O(m) over :attr:`bodies`, and O(i o) box tests for the i bodies wound inside out and o outward."""
+        closed = np.flatnonzero(self.closed)
+        sign = np.zeros(len(self.triangles), dtype=np.int8)
+        if len(closed):
+            labels, body = np.unique(self.bodies[closed], return_inverse=True)
+            corners = self.triangles[closed]
+            corners = corners - corners.reshape(-1, 3).mean(axis=0)  # about the middle: the volumes' sums lose less
+            volume = np.sign(np.bincount(body, np.einsum("ij,ij->i", corners[:, 0], np.cross(corners[:, 1], corners[:, 2]))))
+            # a body wound inside out within the box of one wound outward is its cavity (a closed room's inner
+            # shell), whose faces already face out of the solid
+            low, high = _body_boxes(self.triangles[closed], body, len(labels))
+            inward, outward = np.flatnonzero(volume < 0), np.flatnonzero(volume > 0)
+            if len(inward) and len(outward):
+                within = ((low[inward, None] > low[None, outward]) & (high[inward, None] < high[None, outward])).all(axis=2)
+                volume[inward[within.any(axis=1)]] = 1
+            sign[closed] = volume[body]
+        return sign
+
+    @cached_property
+    def layers(self) -> list[tuple[np.ndarray, Any, np.ndarray]]:
+        """``[(faces (k,) int64, intersector, bounds (2, 3))]``: the triangles in groups, each with an intersector of
+        its own and its corners' bounds (local frame), such that no two closed bodies with faces touching in one
+        plane share one (:func:`_touching_apart`), and the triangles of no closed body form one more. The
+        intersector's multiple-hit query steps past each crossing before it looks for the next, so of two faces in
+        one plane (a crate against a wall, a crate on a crate, a pillar's top in a ceiling) it reports one; in
+        different groups both are reported. Built once per mesh, on first use: one intersector a group."""
+        group = _touching_apart(self.triangles, self.bodies)
+        local = self.frame.to_local(self.triangles)
+        layers = []
+        for label in np.unique(group):
+            faces = np.flatnonzero(group == label)
+            corners = local[faces].reshape(-1, 3)
+            mesh = trimesh.Trimesh(corners, np.arange(len(corners)).reshape(-1, 3), process=False, use_embree=False)
+            layers.append((faces, _make_intersector(mesh)[0], np.stack([corners.min(axis=0), corners.max(axis=0)])))
+        return layers
 
     @classmethod
     def of_mesh(cls, mesh: trimesh.Trimesh) -> _Scene:
@@ -301,14 +356,16 @@ class RayCaster:
         ]
 
     def all_hits(
-        self, origins: np.ndarray, directions: np.ndarray
+        self, origins: np.ndarray, directions: np.ndarray, apart: bool = False
     ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-        """Every crossing along each ray (one multiple-hit intersector call).
+        """Every crossing along each ray (one multiple-hit intersector call; with ``apart``, one per layer of
+        :attr:`_Scene.layers` for the rays that meet its bounds, so that a face lying in the plane of another's is
+        reported too).
 
         Returns:
             ``(ray, distance, face, points)``: (m,) the ray's index, (m,)
             metres along it, (m,) the triangle crossed, (m, 3) the crossing;
-            in the intersector's order.
+            in the intersector's order (layer by layer).
         """
         origins = np.ascontiguousarray(origins, dtype=np.float64).reshape(-1, 3)
         directions = np.broadcast_to(np.asarray(directions, dtype=np.float64), origins.shape)
@@ -316,12 +373,17 @@ class RayCaster:
             return np.zeros(0, np.int64), np.zeros(0), np.zeros(0, np.int64), np.zeros((0, 3))
         unit = np.ascontiguousarray(directions / np.linalg.norm(directions, axis=1, keepdims=True))
         local = self.frame.to_local(origins)
-        locations, ray, face = self.intersector.intersects_location(local, unit, multiple_hits=True)
-        self.rays_cast += len(origins)
-        ray = np.asarray(ray, dtype=np.int64)
-        locations = np.asarray(locations, dtype=np.float64).reshape(-1, 3)
+        found = []
+        for faces, intersector, bounds in self.scene.layers if apart else [(None, self.intersector, None)]:
+            rows = np.arange(len(origins)) if bounds is None else np.flatnonzero(_meets_box(local, unit, bounds))
+            locations, ray, face = intersector.intersects_location(local[rows], unit[rows], multiple_hits=True)
+            face = np.asarray(face, dtype=np.int64)
+            found.append((rows[np.asarray(ray, dtype=np.int64)], np.asarray(locations, dtype=np.float64).reshape(-1, 3),
+                          face if faces is None else faces[face]))
+            self.rays_cast += len(rows)
+        ray, locations, face = (np.concatenate(part) for part in zip(*found))
         distance = np.einsum("ij,ij->i", locations - local[ray], unit[ray])
-        return ray, distance, np.asarray(face, dtype=np.int64), self.frame.to_world(locations)
+        return ray, distance, face, self.frame.to_world(locations)
 
     def _first_faces(self, origins: np.ndarray, unit: np.ndarray) -> np.ndarray:
         """(n,) int64: the intersector's ``intersects_first`` answer for these rays (``origins`` in the local frame).
@@ -469,17 +531,20 @@ def _reversed_twins(triangles: np.ndarray) -> np.ndarray:
 
 
 def _closed_bodies(triangles: np.ndarray, twin: np.ndarray) -> np.ndarray:
-    """(m,) bool: each triangle belongs to a closed body wound one way: a set of triangles joined along shared edges
-    (corners at the same coordinates, welded or not) in which every edge is walked once each way, by two triangles.
+    """(m,) int64: the label of the closed body each triangle belongs to, -1 for a triangle of none. A closed body
+    is wound one way: a set of triangles joined along shared edges (corners at the same coordinates, welded or
+    not) in which every edge is walked once each way, by two triangles.
 
     A crate, a wall slab or a pillar exported as a closed solid is one; a single-sided quad, an open-ended tube, a
     box missing a face, a body with a triangle wound the wrong way, a degenerate triangle's body and a two-sided
-    face (:func:`_reversed_twins`, a flat "body" of two) are not. Cost: sorts of the 3m corners and edges,
-    O(m log m), and one connected-components pass (scipy's union-find over the edges, O(m)).
+    face (:func:`_reversed_twins`, a flat "body" of two) are not. Where closed bodies touch along an edge (more
+    than two triangles walk it) its triangles are paired round it (:func:`_paired_round_edges`), so that each body
+    stays closed. Cost: sorts of the 3m corners and edges, O(m log m), two connected-components passes (scipy's
+    union-find over the edges, O(m)), and the pairing's loop over the edges bodies share.
     """
     m = len(triangles)
     if m == 0:
-        return np.zeros(0, dtype=bool)
+        return np.zeros(0, dtype=np.int64)
     # one id per distinct corner position (a lexicographic sort: several times faster than numpy's unique rows)
     corners = triangles.reshape(-1, 3)
     by_position = np.lexsort(corners.T[::-1])
@@ -492,19 +557,143 @@ def _closed_bodies(triangles: np.ndarray, twin: np.ndarray) -> np.ndarray:
     _, edge, count = np.unique(low * (int(corner.max()) + 1) + high, return_inverse=True, return_counts=True)
     forward = np.bincount(edge, weights=start < end, minlength=len(count))
     good = (count == 2) & (forward == 1)  # two triangles, one walking it each way
+    # the two triangles on each good edge: neighbours in the edges' order
+    order = np.argsort(edge, kind="stable")
+    at = np.flatnonzero((edge[order[1:]] == edge[order[:-1]]) & good[edge[order[1:]]])
     face = np.arange(3 * m) // 3
+    join = sparse.coo_matrix((np.ones(len(at)), (face[order[at]], face[order[at + 1]])), shape=(m, m))
+    _, piece = csgraph.connected_components(join, directed=False)
+    # an edge walked by more than two triangles, as many each way: bodies touching along it (a crate on a crate,
+    # a roof slab flush with a wall's outer face, wall modules corner to corner), its triangles paired round it
+    shared = np.flatnonzero(((count > 2) & (2 * forward == count))[edge])
+    one, other, sound = _paired_round_edges(triangles, shared, edge[shared], start[shared] < end[shared], piece[face[shared]])
+    good[np.unique(edge[shared])] = sound
+    join = sparse.coo_matrix((np.ones(len(at) + len(one)), (np.r_[face[order[at]], face[one]], np.r_[face[order[at + 1]], face[other]])), shape=(m, m))
+    _, body = csgraph.connected_components(join, directed=False)
     bad_face = np.zeros(m, dtype=bool)
     bad_face[face[~good[edge]]] = True
     bad_face[twin >= 0] = True
     bad_face[twin[twin >= 0]] = True
-    # the two triangles on each good edge: neighbours in the edges' order
-    order = np.argsort(edge, kind="stable")
-    at = np.flatnonzero((edge[order[1:]] == edge[order[:-1]]) & good[edge[order[1:]]])
-    join = sparse.coo_matrix((np.ones(len(at)), (face[order[at]], face[order[at + 1]])), shape=(m, m))
-    _, body = csgraph.connected_components(join, directed=False)
     open_body = np.zeros(body.max() + 1, dtype=bool)
     open_body[body[bad_face]] = True
-    return ~open_body[body]
+    return np.where(open_body[body], -1, body).astype(np.int64)
+
+
+def _paired_round_edges(triangles: np.ndarray, sides: np.ndarray, edge: np.ndarray, forward: np.ndarray,
+                        piece: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The triangle sides on edges walked by more than two triangles paired as the bodies they close: turning about
+    the edge from a triangle towards its back (the inside of an outward-wound body), the first triangle met that
+    walks the edge the other way is the other face of its body there (a wedge of solid lies between the two). Of
+    triangles met at one angle (two bodies overlapping with faces flush: wall slabs overlapping at a corner) the
+    one joined to it by ordinary edges (``piece``) is taken first.
+
+    Args:
+        triangles: (m, 3, 3) corners; ``sides``: (u,) sides (side k of triangle k // 3, from its corner k % 3 to
+            the next) on such edges; ``edge``: (u,) their edge; ``forward``: (u,) the side walks it from the lower
+            corner id; ``piece``: (u,) the triangle's piece joined by edges two triangles walk.
+
+    Returns:
+        ``(one, other, sound)``: (p,) sides paired with (p,) sides, and for each edge (in ``np.unique(edge)``'s
+        order) whether every side on it is its partner's partner (else the edge leaves its bodies open).
+        O(u log u), and a Python loop over the edges.
+    """
+    edges, group = np.unique(edge, return_inverse=True)
+    if len(sides) == 0:
+        return np.zeros(0, np.int64), np.zeros(0, np.int64), np.zeros(0, dtype=bool)
+    tri, corner = sides // 3, sides % 3
+    a, b = triangles[tri, corner], triangles[tri, (corner + 1) % 3]
+    a, b = np.where(forward[:, None], a, b), np.where(forward[:, None], b, a)  # every side from the lower id
+    axis = (b - a) / np.linalg.norm(b - a, axis=1, keepdims=True)
+    away = triangles[tri, (corner + 2) % 3] - a
+    away -= np.einsum("ij,ij->i", away, axis)[:, None] * axis
+    away /= np.linalg.norm(away, axis=1, keepdims=True)
+    normal = np.cross(triangles[tri, 1] - triangles[tri, 0], triangles[tri, 2] - triangles[tri, 0])
+    turn = np.where(np.einsum("ij,ij->i", np.cross(axis, away), normal) < 0, 1.0, -1.0)  # the back's way round
+    by_group = np.argsort(group, kind="stable")
+    starts = np.searchsorted(group[by_group], np.arange(len(edges)))
+    reference = away[by_group[starts]][group]
+    angle = np.arctan2(np.einsum("ij,ij->i", away, np.cross(axis, reference)), np.einsum("ij,ij->i", away, reference))
+    mate = np.full(len(sides), -1, dtype=np.int64)
+    for lo, hi in zip(starts, np.r_[starts[1:], len(sides)]):
+        rows = by_group[lo:hi]
+        for row in rows:
+            others = rows[forward[rows] != forward[row]]
+            ahead = np.round((turn[row] * (angle[others] - angle[row])) % (2 * np.pi), 9)
+            ahead[ahead == 0] = 2 * np.pi  # the same angle: a face of another body lying on this one
+            mate[row] = others[np.lexsort((piece[others] != piece[row], ahead))[0]] if len(others) else -1
+    mutual = (mate >= 0) & (mate[np.maximum(mate, 0)] == np.arange(len(sides)))
+    sound = np.bincount(group, weights=~mutual, minlength=len(edges)) == 0
+    keep = mutual & (np.arange(len(sides)) < mate)
+    return sides[keep], sides[mate[keep]], sound
+
+
+def _meets_box(origins: np.ndarray, unit: np.ndarray, bounds: np.ndarray) -> np.ndarray:
+    """(n,) bool: each ray (origins (n, 3), unit directions (n, 3)) meets the box ``bounds`` (2, 3) grown by
+    ``TOUCHING`` ahead of its start (the slab test). O(n)."""
+    low, high = bounds[0] - TOUCHING, bounds[1] + TOUCHING
+    with np.errstate(divide="ignore", invalid="ignore"):
+        near, far = (low - origins) / unit, (high - origins) / unit
+    along = unit != 0
+    inside = (origins >= low) & (origins <= high)
+    enter = np.where(along, np.minimum(near, far), np.where(inside, -np.inf, np.inf)).max(axis=1)
+    leave = np.where(along, np.maximum(near, far), np.where(inside, np.inf, -np.inf)).min(axis=1)
+    return leave >= np.maximum(enter, 0.0)
+
+
+def _body_boxes(triangles: np.ndarray, body: np.ndarray, count: int) -> tuple[np.ndarray, np.ndarray]:
+    """(b, 3) lowest and (b, 3) highest corner of each of ``count`` bodies, ``body`` (k,) the body of each of the
+    triangles (k, 3, 3). O(k)."""
+    low = np.full((count, 3), np.inf)
+    high = np.full((count, 3), -np.inf)
+    np.minimum.at(low, body, triangles.min(axis=1))
+    np.maximum.at(high, body, triangles.max(axis=1))
+    return low, high
+
+
+def _touching_apart(triangles: np.ndarray, bodies: np.ndarray) -> np.ndarray:
+    """(m,) int64 group of each triangle (:attr:`_Scene.layers`): 0 for triangles of no closed body (``bodies`` < 0),
+    1, 2, ... for closed bodies, two bodies with faces in one plane whose boxes there come within ``TOUCHING`` of
+    each other (a crate's side on a wall's face, a roof's bottom on a wall's top) never in one.
+
+    A plane is a face's unit normal (either way round) to a millionth and its offset to ``TOUCHING``; each body's
+    faces in a plane are boxed together, and boxes in one plane that touch are found by sweeping along x
+    (O(f log f + p) for the f boxes and p pairs overlapping along x). Greedy colouring of the touching graph in the
+    order of the bodies' labels: a body takes the lowest group none of its touching neighbours holds (a handful on
+    levels: 4 on a crate against a wall on a floor slab under a ceiling); a Python loop over the bodies and pairs.
+    """
+    group = np.zeros(len(triangles), dtype=np.int64)
+    closed = np.flatnonzero(bodies >= 0)
+    if len(closed) == 0:
+        return group
+    labels, body = np.unique(bodies[closed], return_inverse=True)
+    corners = triangles[closed]
+    normal = np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0])
+    normal /= np.maximum(np.linalg.norm(normal, axis=1, keepdims=True), 1e-300)
+    leading = normal[np.arange(len(normal)), np.argmax(np.abs(normal) > 1e-6, axis=1)]
+    normal *= np.where(leading < 0, -1.0, 1.0)[:, None]
+    key = np.column_stack([np.round(normal / 1e-6), np.round(np.einsum("ij,ij->i", normal, corners[:, 0]) / TOUCHING), body])
+    flat, flat_of_face = np.unique(key, axis=0, return_inverse=True)  # (plane, body) rows, sorted by plane
+    plane = np.unique(flat[:, :4], axis=0, return_inverse=True)[1].reshape(-1)
+    low, high = _body_boxes(corners, flat_of_face.reshape(-1), len(flat))
+    # planes apart along x by more than the level's width, so that the sweep pairs boxes of one plane only
+    spread = float(high[:, 0].max() - low[:, 0].min()) + 2 * TOUCHING + 1.0
+    start = low[:, 0] + plane * spread
+    order = np.argsort(start, kind="stable")
+    end = np.searchsorted(start[order], high[order, 0] + plane[order] * spread + TOUCHING, side="right")
+    count = np.maximum(end - np.arange(len(order)) - 1, 0)
+    first = np.repeat(np.arange(len(order)), count)
+    second = first + 1 + np.arange(len(first)) - np.repeat(np.cumsum(count) - count, count)
+    a, b = order[first], order[second]
+    touch = ((low[a] <= high[b] + TOUCHING) & (low[b] <= high[a] + TOUCHING)).all(axis=1) & (flat[a, 4] != flat[b, 4])
+    a, b = flat[a[touch], 4].astype(np.int64), flat[b[touch], 4].astype(np.int64)
+    neighbours = sparse.coo_matrix((np.ones(len(a)), (a, b)), shape=(len(labels),) * 2)
+    neighbours = (neighbours + neighbours.T).tocsr()
+    colour = np.zeros(len(labels), dtype=np.int64)
+    for index in range(len(labels)):
+        taken = set(colour[neighbours.indices[neighbours.indptr[index]:neighbours.indptr[index + 1]]].tolist())
+        colour[index] = next(c for c in range(1, len(taken) + 2) if c not in taken)
+    group[closed] = colour[body]
+    return group
 
 
 def ray_margin(caster: RayCaster, reach: float) -> float:
@@ -957,10 +1146,12 @@ def hit_from_behind(caster: RayCaster, hits: Hits) -> np.ndarray:
     return behind
 
 
-def back_face_lead(caster: RayCaster, origins: np.ndarray, direction: np.ndarray) -> np.ndarray:
+def back_face_lead(caster: RayCaster, origins: np.ndarray, direction: np.ndarray,
+                   winding: np.ndarray | None = None) -> np.ndarray:
     """(n,) int64: along each ray, the most by which the triangles met on their back side outnumber those met from
-    the front, over its first k crossings (:meth:`RayCaster.all_hits`), k from 1 up to and including the first
-    crossing of a triangle of no closed body (:func:`_closed_bodies`; the ray's end if none); 0 when they never do.
+    the front, over its first k crossings (:meth:`RayCaster.all_hits`, ``apart``), k from 1 up to and including the
+    first crossing of a triangle of no closed body (:func:`_closed_bodies`; the ray's end if none); 0 when they
+    never do.
 
     Seen from inside outward-wound closed bodies, a crossing from behind leaves one and one from the front enters
     one, so the count after k crossings is how many bodies the start lies in less how many the k-th crossing's far
@@ -971,23 +1162,41 @@ def back_face_lead(caster: RayCaster, origins: np.ndarray, direction: np.ndarray
     hit. Of a two-sided face the up-facing side counts (:meth:`RayCaster.first_hits`' rule); a triangle the ray
     runs along counts 0.
 
+    Faces in one plane (a crate against a wall, a crate on a crate, a pillar's top in a ceiling's bottom) are all
+    crossed, each closed body's in its own layer (:attr:`_Scene.layers`), and crossings within ``SAME_PLACE`` of
+    each other are one place, at which back faces count first: leaving a body there means the ray's start lies in
+    at least one, whatever is entered at the same place (a count of n bodies at the start less n - 1 past the
+    face), so the answer no longer hangs on which face the intersector reports, or lists, first.
+
     Args:
         origins: (n, 3) ray starts, metres.
         direction: (3,) the rays' direction (any non-zero length).
+        winding: (m,) :attr:`_Scene.winding` to read closed bodies wound inside out as if wound outward (a face's
+            side times its body's sign; a triangle of no closed body, sign 0, then ends the count at 0: its side
+            tells nothing once the mesh's winding is not trusted); none: each face's side as it is wound.
 
-    Cost: one multiple-hit query, one intersector pass per crossing depth (O(crossings) rays), and an
-    O(c log c) sort of the c crossings.
+    Cost: one multiple-hit query a layer, one intersector pass per crossing depth in it (O(crossings + layers)
+    rays), and an O(c log c) sort of the c crossings.
     """
     origins = np.asarray(origins, dtype=np.float64).reshape(-1, 3)
-    ray, distance, face, _ = caster.all_hits(origins, direction)
+    ray, distance, face, _ = caster.all_hits(origins, direction, apart=True)
     lead = np.zeros(len(origins), dtype=np.int64)
     if len(ray) == 0:
         return lead
-    order = np.lexsort((distance, ray))
-    ray, face = ray[order], face[order]
     face = np.where(caster.scene.twin[face] >= 0, caster.scene.twin[face], face)
-    facing = caster.face_normals[face] @ (np.asarray(direction, dtype=np.float64) / np.linalg.norm(direction))
+    # each face's side as its corners are wound, the order the closed bodies and their winding are read from (a
+    # mesh's stored normals can disagree: trimesh's invert() leaves them as they were)
+    corners = caster.triangles[face]
+    wound = np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0])
+    wound /= np.maximum(np.linalg.norm(wound, axis=1, keepdims=True), 1e-300)
+    facing = wound @ (np.asarray(direction, dtype=np.float64) / np.linalg.norm(direction))
     sign = np.where(np.abs(facing) < 1e-9, 0, np.sign(facing)).astype(np.int64)
+    if winding is not None:
+        sign = sign * winding[face]
+    order = np.lexsort((distance, ray))
+    place = np.cumsum(np.r_[True, (ray[order][1:] != ray[order][:-1]) | (np.diff(distance[order]) > SAME_PLACE)])
+    order = order[np.lexsort((-sign[order], place))]  # in each place, back faces first
+    ray, face, sign = ray[order], face[order], sign[order]
     starts = np.flatnonzero(np.r_[True, ray[1:] != ray[:-1]])
     lengths = np.diff(np.r_[starts, len(ray)])
 
@@ -1001,6 +1210,35 @@ def back_face_lead(caster: RayCaster, origins: np.ndarray, direction: np.ndarray
     count = np.where(counted, running(sign), np.iinfo(np.int64).min)
     lead[ray[starts]] = np.maximum(np.maximum.reduceat(count, starts), 0)
     return lead
+
+
+SOLID_DIRECTIONS = COMPASS[::2]
+"""The horizontal directions (+x, +z, -x, -z) :func:`closed_solid_holds` looks along."""
+
+
+def closed_solid_holds(caster: RayCaster, points: np.ndarray, height: float, needed: int = 5,
+                       winding: np.ndarray | None = None) -> np.ndarray:
+    """(n,) bool: each ground point (n, 3) lies inside a closed solid: along at least ``needed`` of five rays, the
+    one straight up from ``EPSILON`` over it and those along +x, +z, -x and -z from ``height / 2`` over it (rays of
+    unlimited length; ``height`` the agent's, metres), back faces come to outnumber front faces
+    (:func:`back_face_lead`, with ``winding``).
+
+    The sampling builder's rule needs all five
+    (:func:`g2s_plugins.graph_builders.sampling.inside_closed_solids`); the disconnected-areas warning's four, with
+    each body's winding (:func:`g2s_plugins.area_gaps.shut_in`).
+
+    Cost: the upward query for every point, then each horizontal one for the points that can still reach
+    ``needed`` (all five: those that led along every ray so far).
+    """
+    points = np.asarray(points, dtype=np.float64).reshape(-1, 3)
+    misses = np.zeros(len(points), dtype=np.int64)
+    rows = np.arange(len(points))
+    for lift, direction in [(EPSILON, UP)] + [(0.5 * height, way) for way in SOLID_DIRECTIONS]:
+        misses[rows[back_face_lead(caster, points[rows] + lift * UP, direction, winding) <= 0]] += 1
+        rows = rows[misses[rows] <= len(SOLID_DIRECTIONS) + 1 - needed]
+    inside = np.zeros(len(points), dtype=bool)
+    inside[rows] = True
+    return inside
 
 
 def has_room(distance: np.ndarray, needed: np.ndarray | float) -> np.ndarray:
