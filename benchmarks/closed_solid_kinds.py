@@ -16,7 +16,9 @@ each yaw about the vertical through the origin):
 * ``building with a door``: walls one closed body (a ring cut by a door 1.2 m wide, walls 0.3 m thick) under a
   roof slab resting on them: the floor inside is open ground;
 * ``thin walls``: a room of four wall slabs 0.1-0.3 m thick overlapping at the corners, a crate against one of
-  them inside.
+  them inside;
+* ``building, crate and pillar``: the building with a door, a crate in a corner inside flush with two walls' inner
+  faces, and a pillar 0.8 m square from the floor to the roof's bottom (the reviewer's case of shut48).
 
 A *ground point* is every crossing of an up-facing triangle (normal y > 0.5) on vertical lines a quarter metre
 apart. It is *inside* when the agent standing on it has its feet (10 cm up) and its middle (half its height up)
@@ -191,6 +193,16 @@ def building_with_a_door(rng: np.random.Generator) -> tuple[list, list[Solid]]:
     return [FLOOR, roof, ([walls],)], solids
 
 
+def building_crate_and_pillar(rng: np.random.Generator) -> tuple[list, list[Solid]]:
+    parts, solids = building_with_a_door(rng)
+    x0, x1, _, _, z0, z1 = solids[1][0]  # the roof's plan is the building's
+    w, d, h = _crate(rng)
+    crate = (x0 + 0.3, x0 + 0.3 + w, 0.0, h, z1 - 0.3 - d, z1 - 0.3)  # in the corner, flush with two walls' inner faces
+    px, pz = float(rng.uniform(x1 - 4.0, x1 - 2.0)), float(rng.uniform(z0 + 2.0, z0 + 4.0))
+    pillar = (px, px + 0.8, 0.0, 3.0, pz, pz + 0.8)  # from the floor to the roof's bottom
+    return [*parts, crate, pillar], [*solids, (crate, ()), (pillar, ())]
+
+
 def thin_walls(rng: np.random.Generator) -> tuple[list[Box], list[Solid]]:
     t = float(rng.uniform(0.1, 0.3))
     x0, z0 = float(rng.uniform(-8, -6)), float(rng.uniform(-8, -6))
@@ -216,6 +228,7 @@ KINDS: dict[str, Callable[[np.random.Generator], tuple[list, list[Solid]]]] = {
     "room in a room": room_in_a_room,
     "building with a door": building_with_a_door,
     "thin walls": thin_walls,
+    "building, crate and pillar": building_crate_and_pillar,
 }
 """Kind -> (seeded generator) -> (parts: boxes or ``([meshes],)``, the solids' material)."""
 

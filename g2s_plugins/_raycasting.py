@@ -62,12 +62,12 @@ the per-call cost saved, ~70 µs, matches the cost of a direction per ray, ~0.1 
 
 SAME_PLACE = 1e-6
 """Metres along a ray within which crossings are one place (:func:`back_face_lead`): two faces in one plane, a crate's
-side against a wall's face, come back from their layers (:attr:`_Scene.layers`) at distances equal to about 1e-12 m."""
+side against a wall's face, are crossed at distances equal to about 1e-12 m."""
 
 TOUCHING = 1e-3
-"""Metres: closed bodies with faces in one plane (to this) whose boxes there come this close go to different layers
-(:attr:`_Scene.layers`); far above the intersector's step past a crossing (a millionth of a layer's size) for levels
-up to a kilometre across."""
+"""Metres: triangles with faces in one plane (to this) whose boxes come this close are flush (:func:`_flush_pairs`);
+far above the intersector's step past a crossing (a millionth of the level's size) for levels up to a kilometre
+across."""
 
 GRAZE_NUDGE = 1e-4
 """Metres a ray that grazes a triangle is moved aside before it is cast again."""
@@ -174,22 +174,17 @@ class _Scene:
         return sign
 
     @cached_property
-    def layers(self) -> list[tuple[np.ndarray, Any, np.ndarray]]:
-        """``[(faces (k,) int64, intersector, bounds (2, 3))]``: the triangles in groups, each with an intersector of
-        its own and its corners' bounds (local frame), such that no two closed bodies with faces touching in one
-        plane share one (:func:`_touching_apart`), and the triangles of no closed body form one more. The
-        intersector's multiple-hit query steps past each crossing before it looks for the next, so of two faces in
-        one plane (a crate against a wall, a crate on a crate, a pillar's top in a ceiling) it reports one; in
-        different groups both are reported. Built once per mesh, on first use: one intersector a group."""
-        group = _touching_apart(self.triangles, self.bodies)
+    def flush(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """``(starts (m + 1,) int64, partner (p,) int64, patch (p, 2, 3) float64)``: :func:`_flush_pairs` of the
+        triangles in CSR form, triangle ``f``'s partners ``partner[starts[f]:starts[f + 1]]`` and the boxes (local
+        frame) where it and each lie within ``TOUCHING`` of each other. Built once per mesh, on the first crossing
+        :func:`back_face_lead` meets (a level whose rays cross nothing, the dungeon open to the sky, never builds it)."""
+        face, partner = _flush_pairs(self.triangles, self.bodies)
         local = self.frame.to_local(self.triangles)
-        layers = []
-        for label in np.unique(group):
-            faces = np.flatnonzero(group == label)
-            corners = local[faces].reshape(-1, 3)
-            mesh = trimesh.Trimesh(corners, np.arange(len(corners)).reshape(-1, 3), process=False, use_embree=False)
-            layers.append((faces, _make_intersector(mesh)[0], np.stack([corners.min(axis=0), corners.max(axis=0)])))
-        return layers
+        low, high = local.min(axis=1), local.max(axis=1)
+        patch = np.stack([np.maximum(low[face], low[partner]) - TOUCHING, np.minimum(high[face], high[partner]) + TOUCHING], axis=1)
+        starts = np.r_[0, np.cumsum(np.bincount(face, minlength=len(self.triangles)))]
+        return starts, partner, patch
 
     @classmethod
     def of_mesh(cls, mesh: trimesh.Trimesh) -> _Scene:
@@ -356,16 +351,14 @@ class RayCaster:
         ]
 
     def all_hits(
-        self, origins: np.ndarray, directions: np.ndarray, apart: bool = False
+        self, origins: np.ndarray, directions: np.ndarray
     ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-        """Every crossing along each ray (one multiple-hit intersector call; with ``apart``, one per layer of
-        :attr:`_Scene.layers` for the rays that meet its bounds, so that a face lying in the plane of another's is
-        reported too).
+        """Every crossing along each ray (one multiple-hit intersector call).
 
         Returns:
             ``(ray, distance, face, points)``: (m,) the ray's index, (m,)
             metres along it, (m,) the triangle crossed, (m, 3) the crossing;
-            in the intersector's order (layer by layer).
+            in the intersector's order.
         """
         origins = np.ascontiguousarray(origins, dtype=np.float64).reshape(-1, 3)
         directions = np.broadcast_to(np.asarray(directions, dtype=np.float64), origins.shape)
@@ -373,17 +366,12 @@ class RayCaster:
             return np.zeros(0, np.int64), np.zeros(0), np.zeros(0, np.int64), np.zeros((0, 3))
         unit = np.ascontiguousarray(directions / np.linalg.norm(directions, axis=1, keepdims=True))
         local = self.frame.to_local(origins)
-        found = []
-        for faces, intersector, bounds in self.scene.layers if apart else [(None, self.intersector, None)]:
-            rows = np.arange(len(origins)) if bounds is None else np.flatnonzero(_meets_box(local, unit, bounds))
-            locations, ray, face = intersector.intersects_location(local[rows], unit[rows], multiple_hits=True)
-            face = np.asarray(face, dtype=np.int64)
-            found.append((rows[np.asarray(ray, dtype=np.int64)], np.asarray(locations, dtype=np.float64).reshape(-1, 3),
-                          face if faces is None else faces[face]))
-            self.rays_cast += len(rows)
-        ray, locations, face = (np.concatenate(part) for part in zip(*found))
+        locations, ray, face = self.intersector.intersects_location(local, unit, multiple_hits=True)
+        self.rays_cast += len(origins)
+        ray = np.asarray(ray, dtype=np.int64)
+        locations = np.asarray(locations, dtype=np.float64).reshape(-1, 3)
         distance = np.einsum("ij,ij->i", locations - local[ray], unit[ray])
-        return ray, distance, face, self.frame.to_world(locations)
+        return ray, distance, np.asarray(face, dtype=np.int64), self.frame.to_world(locations)
 
     def _first_faces(self, origins: np.ndarray, unit: np.ndarray) -> np.ndarray:
         """(n,) int64: the intersector's ``intersects_first`` answer for these rays (``origins`` in the local frame).
@@ -627,19 +615,6 @@ def _paired_round_edges(triangles: np.ndarray, sides: np.ndarray, edge: np.ndarr
     return sides[keep], sides[mate[keep]], sound
 
 
-def _meets_box(origins: np.ndarray, unit: np.ndarray, bounds: np.ndarray) -> np.ndarray:
-    """(n,) bool: each ray (origins (n, 3), unit directions (n, 3)) meets the box ``bounds`` (2, 3) grown by
-    ``TOUCHING`` ahead of its start (the slab test). O(n)."""
-    low, high = bounds[0] - TOUCHING, bounds[1] + TOUCHING
-    with np.errstate(divide="ignore", invalid="ignore"):
-        near, far = (low - origins) / unit, (high - origins) / unit
-    along = unit != 0
-    inside = (origins >= low) & (origins <= high)
-    enter = np.where(along, np.minimum(near, far), np.where(inside, -np.inf, np.inf)).max(axis=1)
-    leave = np.where(along, np.maximum(near, far), np.where(inside, np.inf, -np.inf)).min(axis=1)
-    return leave >= np.maximum(enter, 0.0)
-
-
 def _body_boxes(triangles: np.ndarray, body: np.ndarray, count: int) -> tuple[np.ndarray, np.ndarray]:
     """(b, 3) lowest and (b, 3) highest corner of each of ``count`` bodies, ``body`` (k,) the body of each of the
     triangles (k, 3, 3). O(k)."""
@@ -650,50 +625,51 @@ def _body_boxes(triangles: np.ndarray, body: np.ndarray, count: int) -> tuple[np
     return low, high
 
 
-def _touching_apart(triangles: np.ndarray, bodies: np.ndarray) -> np.ndarray:
-    """(m,) int64 group of each triangle (:attr:`_Scene.layers`): 0 for triangles of no closed body (``bodies`` < 0),
-    1, 2, ... for closed bodies, two bodies with faces in one plane whose boxes there come within ``TOUCHING`` of
-    each other (a crate's side on a wall's face, a roof's bottom on a wall's top) never in one.
+def _flush_pairs(triangles: np.ndarray, bodies: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``(face, partner)``, (p,) int64 each, sorted by face: every ordered pair of triangles ((m, 3, 3) corners, m) in
+    one plane whose boxes come within ``TOUCHING`` of each other, of two closed bodies (``bodies`` (m,), < 0 for a
+    triangle of none) or of a closed body and of none: a crate's side on a wall's face, a roof's bottom on a wall's
+    top, a crate's side against a single-sided wall quad. Two triangles of no closed body are not paired (the
+    multiple-hit query reports one of them, as it always did).
 
-    A plane is a face's unit normal (either way round) to a millionth and its offset to ``TOUCHING``; each body's
-    faces in a plane are boxed together, and boxes in one plane that touch are found by sweeping along x
-    (O(f log f + p) for the f boxes and p pairs overlapping along x). Greedy colouring of the touching graph in the
-    order of the bodies' labels: a body takes the lowest group none of its touching neighbours holds (a handful on
-    levels: 4 on a crate against a wall on a floor slab under a ceiling); a Python loop over the bodies and pairs.
+    A plane is a face's unit normal (either way round) to a millionth and its offset to ``TOUCHING``. Broad phase:
+    each triangle's box seen along the axis its normal leans most along (grown by half ``TOUCHING``), its plane's index
+    as a third coordinate, paired in a :class:`BoxGrid` of cells of the boxes' median extent; only planes holding
+    a closed triangle and triangles of two bodies are binned. Narrow phase: the same plane, two bodies, the 3-D
+    boxes within ``TOUCHING``. O(E log E + P) for the E (box, cell) entries and P pairs sharing a cell.
     """
-    group = np.zeros(len(triangles), dtype=np.int64)
-    closed = np.flatnonzero(bodies >= 0)
-    if len(closed) == 0:
-        return group
-    labels, body = np.unique(bodies[closed], return_inverse=True)
-    corners = triangles[closed]
-    normal = np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0])
-    normal /= np.maximum(np.linalg.norm(normal, axis=1, keepdims=True), 1e-300)
+    normal = np.cross(triangles[:, 1] - triangles[:, 0], triangles[:, 2] - triangles[:, 0])
+    length = np.linalg.norm(normal, axis=1)
+    normal /= np.maximum(length, 1e-300)[:, None]
     leading = normal[np.arange(len(normal)), np.argmax(np.abs(normal) > 1e-6, axis=1)]
     normal *= np.where(leading < 0, -1.0, 1.0)[:, None]
-    key = np.column_stack([np.round(normal / 1e-6), np.round(np.einsum("ij,ij->i", normal, corners[:, 0]) / TOUCHING), body])
-    flat, flat_of_face = np.unique(key, axis=0, return_inverse=True)  # (plane, body) rows, sorted by plane
-    plane = np.unique(flat[:, :4], axis=0, return_inverse=True)[1].reshape(-1)
-    low, high = _body_boxes(corners, flat_of_face.reshape(-1), len(flat))
-    # planes apart along x by more than the level's width, so that the sweep pairs boxes of one plane only
-    spread = float(high[:, 0].max() - low[:, 0].min()) + 2 * TOUCHING + 1.0
-    start = low[:, 0] + plane * spread
-    order = np.argsort(start, kind="stable")
-    end = np.searchsorted(start[order], high[order, 0] + plane[order] * spread + TOUCHING, side="right")
-    count = np.maximum(end - np.arange(len(order)) - 1, 0)
-    first = np.repeat(np.arange(len(order)), count)
-    second = first + 1 + np.arange(len(first)) - np.repeat(np.cumsum(count) - count, count)
-    a, b = order[first], order[second]
-    touch = ((low[a] <= high[b] + TOUCHING) & (low[b] <= high[a] + TOUCHING)).all(axis=1) & (flat[a, 4] != flat[b, 4])
-    a, b = flat[a[touch], 4].astype(np.int64), flat[b[touch], 4].astype(np.int64)
-    neighbours = sparse.coo_matrix((np.ones(len(a)), (a, b)), shape=(len(labels),) * 2)
-    neighbours = (neighbours + neighbours.T).tocsr()
-    colour = np.zeros(len(labels), dtype=np.int64)
-    for index in range(len(labels)):
-        taken = set(colour[neighbours.indices[neighbours.indptr[index]:neighbours.indptr[index + 1]]].tolist())
-        colour[index] = next(c for c in range(1, len(taken) + 2) if c not in taken)
-    group[closed] = colour[body]
-    return group
+    key = np.column_stack([np.round(normal / 1e-6), np.round(np.einsum("ij,ij->i", normal, triangles[:, 0]) / TOUCHING)])
+    plane = np.unique(key, axis=0, return_inverse=True)[1].reshape(-1)
+    owners = np.unique(np.column_stack([plane, bodies]), axis=0)
+    shared = np.bincount(owners[:, 0], minlength=plane.max(initial=-1) + 1) >= 2
+    holds_closed = np.zeros(len(shared), dtype=bool)
+    holds_closed[plane[bodies >= 0]] = True
+    shared &= holds_closed
+    kept = np.flatnonzero((length > 0) & shared[plane])
+    if len(kept) == 0:
+        return np.zeros(0, np.int64), np.zeros(0, np.int64)
+    low, high = triangles[kept].min(axis=1) - 0.5 * TOUCHING, triangles[kept].max(axis=1) + 0.5 * TOUCHING
+    # the plane's two other axes, from its rounded normal: the same for all its triangles (a turned wall's normal,
+    # x and z equal to float noise, leans most along x in one triangle and along z in the next)
+    seen = np.array([[1, 2], [0, 2], [0, 1]])[np.argmax(np.abs(key[kept, :3]), axis=1)]
+    rows = np.arange(len(kept))[:, None]
+    flat_low, flat_high = low[rows, seen], high[rows, seen]
+    extent = (flat_high - flat_low).max(axis=1)
+    cell = max(float(np.median(extent)), float(extent.max()) / 4096.0)
+    level = plane[kept, None] * (4.0 * cell)  # planes' boxes cells apart (a grid that doubles its cell pairs a few)
+    flat_low, flat_high = np.hstack([flat_low, level]), np.hstack([flat_high, level])
+    a, b = box_pairs(flat_low, flat_high, flat_low, flat_high, cell)
+    near = (plane[kept[a]] == plane[kept[b]]) & (bodies[kept[a]] != bodies[kept[b]])
+    a, b = a[near], b[near]
+    near = ((low[a] <= high[b]) & (low[b] <= high[a])).all(axis=1)
+    face, partner = kept[a[near]], kept[b[near]]
+    order = np.lexsort((partner, face))
+    return face[order], partner[order]
 
 
 def ray_margin(caster: RayCaster, reach: float) -> float:
@@ -1149,9 +1125,9 @@ def hit_from_behind(caster: RayCaster, hits: Hits) -> np.ndarray:
 def back_face_lead(caster: RayCaster, origins: np.ndarray, direction: np.ndarray,
                    winding: np.ndarray | None = None) -> np.ndarray:
     """(n,) int64: along each ray, the most by which the triangles met on their back side outnumber those met from
-    the front, over its first k crossings (:meth:`RayCaster.all_hits`, ``apart``), k from 1 up to and including the
-    first crossing of a triangle of no closed body (:func:`_closed_bodies`; the ray's end if none); 0 when they
-    never do.
+    the front, over its first k crossings (:meth:`RayCaster.all_hits` and :func:`flush_crossings`), k from 1 up to
+    and including the first crossing of a triangle of no closed body (:func:`_closed_bodies`; the ray's end if
+    none); 0 when they never do.
 
     Seen from inside outward-wound closed bodies, a crossing from behind leaves one and one from the front enters
     one, so the count after k crossings is how many bodies the start lies in less how many the k-th crossing's far
@@ -1163,10 +1139,11 @@ def back_face_lead(caster: RayCaster, origins: np.ndarray, direction: np.ndarray
     runs along counts 0.
 
     Faces in one plane (a crate against a wall, a crate on a crate, a pillar's top in a ceiling's bottom) are all
-    crossed, each closed body's in its own layer (:attr:`_Scene.layers`), and crossings within ``SAME_PLACE`` of
-    each other are one place, at which back faces count first: leaving a body there means the ray's start lies in
-    at least one, whatever is entered at the same place (a count of n bodies at the start less n - 1 past the
-    face), so the answer no longer hangs on which face the intersector reports, or lists, first.
+    crossed (:func:`flush_crossings` adds those the multiple-hit query stepped past), and crossings within
+    ``SAME_PLACE`` of each other are one place, at which back faces count first, and of one side closed bodies'
+    faces before a face of none: leaving a body there means the ray's start lies in at least one, whatever is
+    entered at the same place (a count of n bodies at the start less n - 1 past the face), so the answer does not
+    hang on which face the intersector reports, or lists, first.
 
     Args:
         origins: (n, 3) ray starts, metres.
@@ -1175,28 +1152,40 @@ def back_face_lead(caster: RayCaster, origins: np.ndarray, direction: np.ndarray
             side times its body's sign; a triangle of no closed body, sign 0, then ends the count at 0: its side
             tells nothing once the mesh's winding is not trusted); none: each face's side as it is wound.
 
-    Cost: one multiple-hit query a layer, one intersector pass per crossing depth in it (O(crossings + layers)
-    rays), and an O(c log c) sort of the c crossings.
+    Cost: one multiple-hit query (one intersector pass per crossing depth), :func:`flush_crossings`, and an
+    O(c log c) sort of the c crossings; a batch that crosses nothing costs the query alone.
     """
     origins = np.asarray(origins, dtype=np.float64).reshape(-1, 3)
-    ray, distance, face, _ = caster.all_hits(origins, direction, apart=True)
+    ray, distance, face, points = caster.all_hits(origins, direction)
     lead = np.zeros(len(origins), dtype=np.int64)
     if len(ray) == 0:
         return lead
+    unit = np.asarray(direction, dtype=np.float64) / np.linalg.norm(direction)
+    more = flush_crossings(caster, origins, unit, ray, face, points)
+    stepped_past = np.r_[np.zeros(len(ray), dtype=bool), np.ones(len(more[0]), dtype=bool)]
+    ray, distance, face = (np.concatenate(pair) for pair in zip((ray, distance, face), more))
+    owner = caster.scene.bodies[face]
     face = np.where(caster.scene.twin[face] >= 0, caster.scene.twin[face], face)
     # each face's side as its corners are wound, the order the closed bodies and their winding are read from (a
     # mesh's stored normals can disagree: trimesh's invert() leaves them as they were)
     corners = caster.triangles[face]
     wound = np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0])
     wound /= np.maximum(np.linalg.norm(wound, axis=1, keepdims=True), 1e-300)
-    facing = wound @ (np.asarray(direction, dtype=np.float64) / np.linalg.norm(direction))
-    sign = np.where(np.abs(facing) < 1e-9, 0, np.sign(facing)).astype(np.int64)
+    sign = np.where(np.abs(wound @ unit) < 1e-9, 0, np.sign(wound @ unit)).astype(np.int64)
     if winding is not None:
         sign = sign * winding[face]
     order = np.lexsort((distance, ray))
     place = np.cumsum(np.r_[True, (ray[order][1:] != ray[order][:-1]) | (np.diff(distance[order]) > SAME_PLACE)])
-    order = order[np.lexsort((-sign[order], place))]  # in each place, back faces first
-    ray, face, sign = ray[order], face[order], sign[order]
+    # a body (or the triangles of none) crossed once a place: of a flush face's two triangles met on the edge
+    # between them, or a face the query did report, the one crossing counts
+    by_owner = np.lexsort((stepped_past[order], owner[order], place))
+    first = np.r_[True, (place[by_owner][1:] != place[by_owner][:-1]) | (owner[order][by_owner][1:] != owner[order][by_owner][:-1])]
+    keep = np.ones(len(order), dtype=bool)
+    keep[by_owner] = first | ~stepped_past[order][by_owner]
+    order, place = order[keep], place[keep]
+    unpaired = ~caster.scene.closed[face]
+    order = order[np.lexsort((unpaired[order], -sign[order], place))]  # in each place, back faces first
+    ray, sign, unpaired = ray[order], sign[order], unpaired[order]
     starts = np.flatnonzero(np.r_[True, ray[1:] != ray[:-1]])
     lengths = np.diff(np.r_[starts, len(ray)])
 
@@ -1205,11 +1194,47 @@ def back_face_lead(caster: RayCaster, origins: np.ndarray, direction: np.ndarray
         total = np.cumsum(values)
         return total - np.repeat(total[starts] - values[starts], lengths)
 
-    unpaired = ~caster.scene.closed[face]
     counted = running(unpaired.astype(np.int64)) - unpaired <= 0  # up to the first unpaired crossing
     count = np.where(counted, running(sign), np.iinfo(np.int64).min)
     lead[ray[starts]] = np.maximum(np.maximum.reduceat(count, starts), 0)
     return lead
+
+
+def flush_crossings(caster: RayCaster, origins: np.ndarray, unit: np.ndarray, ray: np.ndarray, face: np.ndarray,
+                    points: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``(ray, distance, face)``: the crossings :meth:`RayCaster.all_hits` stepped past (origins (n, 3) m, ``unit``
+    (3,) their direction; its answer ``ray``, ``face`` (c,) and ``points`` (c, 3) m). The multiple-hit query steps
+    past each crossing before it looks for the next, so of two faces in one plane where they overlap it reports
+    one; the other is a partner of the one reported (:attr:`_Scene.flush`) whose patch holds the crossing, and the
+    ray crosses it (the Moller-Trumbore test: T. Moller and B. Trumbore, "Fast, minimum storage ray-triangle
+    intersection", Journal of Graphics Tools 2(1), 1997; its edges included, so a crossing on the edge between a
+    face's two triangles is found on both: :func:`back_face_lead` counts a body once a place).
+
+    Nothing is built or cast again: O(c + q) for the q (crossing, partner) pairs of the crossings' faces, and
+    :attr:`_Scene.flush` on the mesh's first crossing.
+    """
+    starts, partners, patches = caster.scene.flush
+    count = starts[face + 1] - starts[face]
+    row = np.repeat(np.arange(len(face)), count)
+    pair = np.arange(len(row)) + np.repeat(starts[face] - (np.cumsum(count) - count), count)
+    local = caster.frame.to_local(points[row])
+    inside = ((local >= patches[pair, 0]) & (local <= patches[pair, 1])).all(axis=1)
+    row, partner = row[inside], partners[pair[inside]]
+    start = caster.frame.to_local(origins[ray[row]])
+    corners = caster.frame.to_local(caster.triangles[partner])
+    side, other = corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0]
+    across = np.cross(unit, other)
+    determinant = np.einsum("ij,ij->i", side, across)
+    flat = np.abs(determinant) <= 1e-12 * np.linalg.norm(side, axis=1) * np.linalg.norm(other, axis=1)
+    determinant = np.where(flat, 1.0, determinant)
+    offset = start - corners[:, 0]
+    u = np.einsum("ij,ij->i", offset, across) / determinant
+    turned = np.cross(offset, side)
+    v = (turned @ unit) / determinant
+    distance = np.einsum("ij,ij->i", other, turned) / determinant
+    tolerance = 1e-9
+    crossed = ~flat & (u >= -tolerance) & (v >= -tolerance) & (u + v <= 1.0 + tolerance) & (distance >= 0.0)
+    return ray[row[crossed]], distance[crossed], partner[crossed]
 
 
 SOLID_DIRECTIONS = COMPASS[::2]

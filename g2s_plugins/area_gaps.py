@@ -287,8 +287,8 @@ def shut_in(caster: RayCaster, points: np.ndarray, agent: AgentConfig) -> np.nda
 
     A render object inside a collision hull meets one of them (the bandstand's roof over its deck, the fountain's
     column beside its basin, benchmarks/level_kinds.py ``collision_hulls``): its open faces stop that ray's count;
-    a place meant to be walked sees its room's walls and ceiling from outside them. Five rays a point (a query a
-    layer of :attr:`_Scene.layers <g2s_plugins._raycasting._Scene.layers>` each).
+    a place meant to be walked sees its room's walls and ceiling from outside them. Five rays a point (a
+    multiple-hit query each).
     """
     return closed_solid_holds(caster, points, float(agent.height), needed=4, winding=caster.scene.winding)
 

@@ -494,10 +494,11 @@ def inside_closed_solids(caster: RayCaster, points: np.ndarray, agent: AgentShap
     than twice the clearance leaves its floor's middle with head room and
     no wall or ledge within the clearance.
 
-    Cost: one multiple-hit upward ray a point (a query a layer of
-    :attr:`~g2s_plugins._raycasting._Scene.layers`, one intersector pass per
-    triangle crossed above it in the layer, and one more), and four
-    multiple-hit horizontal rays for the points with a lead upwards
+    Cost: one multiple-hit upward ray a point (one intersector pass per
+    triangle crossed above it, and one more; the faces in one plane it
+    stepped past found from the pairs of such faces, built once per mesh on
+    its first crossing), and four multiple-hit horizontal rays for the
+    points with a lead upwards
     (:func:`~g2s_plugins._raycasting.closed_solid_holds`, all five rays).
     """
     return closed_solid_holds(caster, points, agent.height)
