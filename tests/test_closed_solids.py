@@ -91,6 +91,23 @@ def test_a_building_entered_by_a_door_is_open_inside():
     assert shut_in(caster, points, AGENT).tolist() == expected
 
 
+@pytest.mark.parametrize("yaw_deg", [0.0, 22.0, 45.0])
+def test_a_building_with_a_crate_flush_with_a_wall_and_a_pillar_flush_with_the_roof(yaw_deg):
+    # the building above, a crate in its north-west corner against two walls' inner faces and a pillar from the
+    # floor to the roof's bottom: faces in one plane at both, seen along rays turned off the axes
+    kinds = benchmark("closed_solid_kinds")
+    walls = kinds.ring(0.0, 10.0, 0.0, 10.0, 0.3, 0.0, 3.0, door=(4.0, 5.2))
+    parts = [*boxes(FLOOR, (0, 10, 3, 3.3, 0, 10), (0.3, 3.3, 0, 2.5, 6.7, 9.7), (6, 7, 0, 3, 6, 7)), walls]
+    turn = trimesh.transformations.rotation_matrix(np.radians(yaw_deg), [0.0, 1.0, 0.0])
+    caster = RayCaster(trimesh.util.concatenate([part.apply_transform(turn) for part in parts]))
+    points = trimesh.transform_points(np.array(
+        [(5.0, 0.0, 4.0), (1.8, 0.0, 8.2), (0.4, 0.0, 9.6), (6.5, 0.0, 6.5), (6.1, 0.0, 6.9), (4.6, 0.0, 0.15)]), turn)
+    expected = [False, True, True, True, True, False]  # the room, the crate (middle, corner), the pillar (middle,
+    # corner), the doorway
+    assert inside_closed_solids(caster, points, AgentShape.from_config(AGENT)).tolist() == expected
+    assert shut_in(caster, points, AGENT).tolist() == expected
+
+
 def test_bodies_touching_along_an_edge_or_in_a_plane_stay_closed_and_apart():
     stacked = boxes((0, 1, 0, 1, 0, 1), (0, 1, 1, 2, 0, 1))  # the whole face shared, corner for corner
     side_by_side = boxes((0, 1, 0, 1, 0, 1), (1, 2, 0, 1, 0, 1))
