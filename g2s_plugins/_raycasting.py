@@ -60,6 +60,15 @@ JOINT_CALL_MAX_RAYS = 2048
 """Rays up to which :meth:`RayCaster.first_hits_of` casts its batches in one call (about where
 the per-call cost saved, ~70 µs, matches the cost of a direction per ray, ~0.1 µs a ray)."""
 
+SAME_PLACE = 1e-6
+"""Metres along a ray within which crossings are one place (:func:`back_face_lead`): two faces in one plane, a crate's
+side against a wall's face, are crossed at distances equal to about 1e-12 m."""
+
+TOUCHING = 1e-3
+"""Metres: triangles with faces in one plane (to this) whose boxes come this close are flush (:func:`_flush_pairs`);
+far above the intersector's step past a crossing (a millionth of the level's size) for levels up to a kilometre
+across."""
+
 GRAZE_NUDGE = 1e-4
 """Metres a ray that grazes a triangle is moved aside before it is cast again."""
 
@@ -132,9 +141,50 @@ class _Scene:
         return np.ascontiguousarray(self.face_normals[:, 1])
 
     @cached_property
-    def closed(self) -> np.ndarray:
-        """(m,) bool: :func:`_closed_bodies` of the triangles (once per mesh, on first use)."""
+    def bodies(self) -> np.ndarray:
+        """(m,) int64: :func:`_closed_bodies` of the triangles (once per mesh, on first use)."""
         return _closed_bodies(self.triangles, self.twin)
+
+    @cached_property
+    def closed(self) -> np.ndarray:
+        """(m,) bool: the triangle belongs to a closed body (:attr:`bodies`)."""
+        return self.bodies >= 0
+
+    @cached_property
+    def winding(self) -> np.ndarray:
+        """(m,) int8: +1 on a closed body wound outward (its signed volume positive) and on a cavity (a body of
+        negative volume strictly within the bounding box of one of positive volume: a closed room's inner shell),
+        -1 on any other body wound inside out (a solid exported with flipped normals), 0 on triangles of no closed
+        body. O(m) over :attr:`bodies`, and O(i o) box tests for the i bodies wound inside out and o outward."""
+        closed = np.flatnonzero(self.closed)
+        sign = np.zeros(len(self.triangles), dtype=np.int8)
+        if len(closed):
+            labels, body = np.unique(self.bodies[closed], return_inverse=True)
+            corners = self.triangles[closed]
+            corners = corners - corners.reshape(-1, 3).mean(axis=0)  # about the middle: the volumes' sums lose less
+            volume = np.sign(np.bincount(body, np.einsum("ij,ij->i", corners[:, 0], np.cross(corners[:, 1], corners[:, 2]))))
+            # a body wound inside out within the box of one wound outward is its cavity (a closed room's inner
+            # shell), whose faces already face out of the solid
+            low, high = _body_boxes(self.triangles[closed], body, len(labels))
+            inward, outward = np.flatnonzero(volume < 0), np.flatnonzero(volume > 0)
+            if len(inward) and len(outward):
+                within = ((low[inward, None] > low[None, outward]) & (high[inward, None] < high[None, outward])).all(axis=2)
+                volume[inward[within.any(axis=1)]] = 1
+            sign[closed] = volume[body]
+        return sign
+
+    @cached_property
+    def flush(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """``(starts (m + 1,) int64, partner (p,) int64, patch (p, 2, 3) float64)``: :func:`_flush_pairs` of the
+        triangles in CSR form, triangle ``f``'s partners ``partner[starts[f]:starts[f + 1]]`` and the boxes (local
+        frame) where it and each lie within ``TOUCHING`` of each other. Built once per mesh, on the first crossing
+        :func:`back_face_lead` meets (a level whose rays cross nothing, the dungeon open to the sky, never builds it)."""
+        face, partner = _flush_pairs(self.triangles, self.bodies)
+        local = self.frame.to_local(self.triangles)
+        low, high = local.min(axis=1), local.max(axis=1)
+        patch = np.stack([np.maximum(low[face], low[partner]) - TOUCHING, np.minimum(high[face], high[partner]) + TOUCHING], axis=1)
+        starts = np.r_[0, np.cumsum(np.bincount(face, minlength=len(self.triangles)))]
+        return starts, partner, patch
 
     @classmethod
     def of_mesh(cls, mesh: trimesh.Trimesh) -> _Scene:
@@ -469,17 +519,20 @@ def _reversed_twins(triangles: np.ndarray) -> np.ndarray:
 
 
 def _closed_bodies(triangles: np.ndarray, twin: np.ndarray) -> np.ndarray:
-    """(m,) bool: each triangle belongs to a closed body wound one way: a set of triangles joined along shared edges
-    (corners at the same coordinates, welded or not) in which every edge is walked once each way, by two triangles.
+    """(m,) int64: the label of the closed body each triangle belongs to, -1 for a triangle of none. A closed body
+    is wound one way: a set of triangles joined along shared edges (corners at the same coordinates, welded or
+    not) in which every edge is walked once each way, by two triangles.
 
     A crate, a wall slab or a pillar exported as a closed solid is one; a single-sided quad, an open-ended tube, a
     box missing a face, a body with a triangle wound the wrong way, a degenerate triangle's body and a two-sided
-    face (:func:`_reversed_twins`, a flat "body" of two) are not. Cost: sorts of the 3m corners and edges,
-    O(m log m), and one connected-components pass (scipy's union-find over the edges, O(m)).
+    face (:func:`_reversed_twins`, a flat "body" of two) are not. Where closed bodies touch along an edge (more
+    than two triangles walk it) its triangles are paired round it (:func:`_paired_round_edges`), so that each body
+    stays closed. Cost: sorts of the 3m corners and edges, O(m log m), two connected-components passes (scipy's
+    union-find over the edges, O(m)), and the pairing's loop over the edges bodies share.
     """
     m = len(triangles)
     if m == 0:
-        return np.zeros(0, dtype=bool)
+        return np.zeros(0, dtype=np.int64)
     # one id per distinct corner position (a lexicographic sort: several times faster than numpy's unique rows)
     corners = triangles.reshape(-1, 3)
     by_position = np.lexsort(corners.T[::-1])
@@ -492,19 +545,131 @@ def _closed_bodies(triangles: np.ndarray, twin: np.ndarray) -> np.ndarray:
     _, edge, count = np.unique(low * (int(corner.max()) + 1) + high, return_inverse=True, return_counts=True)
     forward = np.bincount(edge, weights=start < end, minlength=len(count))
     good = (count == 2) & (forward == 1)  # two triangles, one walking it each way
+    # the two triangles on each good edge: neighbours in the edges' order
+    order = np.argsort(edge, kind="stable")
+    at = np.flatnonzero((edge[order[1:]] == edge[order[:-1]]) & good[edge[order[1:]]])
     face = np.arange(3 * m) // 3
+    join = sparse.coo_matrix((np.ones(len(at)), (face[order[at]], face[order[at + 1]])), shape=(m, m))
+    _, piece = csgraph.connected_components(join, directed=False)
+    # an edge walked by more than two triangles, as many each way: bodies touching along it (a crate on a crate,
+    # a roof slab flush with a wall's outer face, wall modules corner to corner), its triangles paired round it
+    shared = np.flatnonzero(((count > 2) & (2 * forward == count))[edge])
+    one, other, sound = _paired_round_edges(triangles, shared, edge[shared], start[shared] < end[shared], piece[face[shared]])
+    good[np.unique(edge[shared])] = sound
+    join = sparse.coo_matrix((np.ones(len(at) + len(one)), (np.r_[face[order[at]], face[one]], np.r_[face[order[at + 1]], face[other]])), shape=(m, m))
+    _, body = csgraph.connected_components(join, directed=False)
     bad_face = np.zeros(m, dtype=bool)
     bad_face[face[~good[edge]]] = True
     bad_face[twin >= 0] = True
     bad_face[twin[twin >= 0]] = True
-    # the two triangles on each good edge: neighbours in the edges' order
-    order = np.argsort(edge, kind="stable")
-    at = np.flatnonzero((edge[order[1:]] == edge[order[:-1]]) & good[edge[order[1:]]])
-    join = sparse.coo_matrix((np.ones(len(at)), (face[order[at]], face[order[at + 1]])), shape=(m, m))
-    _, body = csgraph.connected_components(join, directed=False)
     open_body = np.zeros(body.max() + 1, dtype=bool)
     open_body[body[bad_face]] = True
-    return ~open_body[body]
+    return np.where(open_body[body], -1, body).astype(np.int64)
+
+
+def _paired_round_edges(triangles: np.ndarray, sides: np.ndarray, edge: np.ndarray, forward: np.ndarray,
+                        piece: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The triangle sides on edges walked by more than two triangles paired as the bodies they close: turning about
+    the edge from a triangle towards its back (the inside of an outward-wound body), the first triangle met that
+    walks the edge the other way is the other face of its body there (a wedge of solid lies between the two). Of
+    triangles met at one angle (two bodies overlapping with faces flush: wall slabs overlapping at a corner) the
+    one joined to it by ordinary edges (``piece``) is taken first.
+
+    Args:
+        triangles: (m, 3, 3) corners; ``sides``: (u,) sides (side k of triangle k // 3, from its corner k % 3 to
+            the next) on such edges; ``edge``: (u,) their edge; ``forward``: (u,) the side walks it from the lower
+            corner id; ``piece``: (u,) the triangle's piece joined by edges two triangles walk.
+
+    Returns:
+        ``(one, other, sound)``: (p,) sides paired with (p,) sides, and for each edge (in ``np.unique(edge)``'s
+        order) whether every side on it is its partner's partner (else the edge leaves its bodies open).
+        O(u log u), and a Python loop over the edges.
+    """
+    edges, group = np.unique(edge, return_inverse=True)
+    if len(sides) == 0:
+        return np.zeros(0, np.int64), np.zeros(0, np.int64), np.zeros(0, dtype=bool)
+    tri, corner = sides // 3, sides % 3
+    a, b = triangles[tri, corner], triangles[tri, (corner + 1) % 3]
+    a, b = np.where(forward[:, None], a, b), np.where(forward[:, None], b, a)  # every side from the lower id
+    axis = (b - a) / np.linalg.norm(b - a, axis=1, keepdims=True)
+    away = triangles[tri, (corner + 2) % 3] - a
+    away -= np.einsum("ij,ij->i", away, axis)[:, None] * axis
+    away /= np.linalg.norm(away, axis=1, keepdims=True)
+    normal = np.cross(triangles[tri, 1] - triangles[tri, 0], triangles[tri, 2] - triangles[tri, 0])
+    turn = np.where(np.einsum("ij,ij->i", np.cross(axis, away), normal) < 0, 1.0, -1.0)  # the back's way round
+    by_group = np.argsort(group, kind="stable")
+    starts = np.searchsorted(group[by_group], np.arange(len(edges)))
+    reference = away[by_group[starts]][group]
+    angle = np.arctan2(np.einsum("ij,ij->i", away, np.cross(axis, reference)), np.einsum("ij,ij->i", away, reference))
+    mate = np.full(len(sides), -1, dtype=np.int64)
+    for lo, hi in zip(starts, np.r_[starts[1:], len(sides)]):
+        rows = by_group[lo:hi]
+        for row in rows:
+            others = rows[forward[rows] != forward[row]]
+            ahead = np.round((turn[row] * (angle[others] - angle[row])) % (2 * np.pi), 9)
+            ahead[ahead == 0] = 2 * np.pi  # the same angle: a face of another body lying on this one
+            mate[row] = others[np.lexsort((piece[others] != piece[row], ahead))[0]] if len(others) else -1
+    mutual = (mate >= 0) & (mate[np.maximum(mate, 0)] == np.arange(len(sides)))
+    sound = np.bincount(group, weights=~mutual, minlength=len(edges)) == 0
+    keep = mutual & (np.arange(len(sides)) < mate)
+    return sides[keep], sides[mate[keep]], sound
+
+
+def _body_boxes(triangles: np.ndarray, body: np.ndarray, count: int) -> tuple[np.ndarray, np.ndarray]:
+    """(b, 3) lowest and (b, 3) highest corner of each of ``count`` bodies, ``body`` (k,) the body of each of the
+    triangles (k, 3, 3). O(k)."""
+    low = np.full((count, 3), np.inf)
+    high = np.full((count, 3), -np.inf)
+    np.minimum.at(low, body, triangles.min(axis=1))
+    np.maximum.at(high, body, triangles.max(axis=1))
+    return low, high
+
+
+def _flush_pairs(triangles: np.ndarray, bodies: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``(face, partner)``, (p,) int64 each, sorted by face: every ordered pair of triangles ((m, 3, 3) corners, m) in
+    one plane whose boxes come within ``TOUCHING`` of each other, of two closed bodies (``bodies`` (m,), < 0 for a
+    triangle of none) or of a closed body and of none: a crate's side on a wall's face, a roof's bottom on a wall's
+    top, a crate's side against a single-sided wall quad. Two triangles of no closed body are not paired (the
+    multiple-hit query reports one of them, as it always did).
+
+    A plane is a face's unit normal (either way round) to a millionth and its offset to ``TOUCHING``. Broad phase:
+    each triangle's box seen along the axis its normal leans most along (grown by half ``TOUCHING``), its plane's index
+    as a third coordinate, paired in a :class:`BoxGrid` of cells of the boxes' median extent; only planes holding
+    a closed triangle and triangles of two bodies are binned. Narrow phase: the same plane, two bodies, the 3-D
+    boxes within ``TOUCHING``. O(E log E + P) for the E (box, cell) entries and P pairs sharing a cell.
+    """
+    normal = np.cross(triangles[:, 1] - triangles[:, 0], triangles[:, 2] - triangles[:, 0])
+    length = np.linalg.norm(normal, axis=1)
+    normal /= np.maximum(length, 1e-300)[:, None]
+    leading = normal[np.arange(len(normal)), np.argmax(np.abs(normal) > 1e-6, axis=1)]
+    normal *= np.where(leading < 0, -1.0, 1.0)[:, None]
+    key = np.column_stack([np.round(normal / 1e-6), np.round(np.einsum("ij,ij->i", normal, triangles[:, 0]) / TOUCHING)])
+    plane = np.unique(key, axis=0, return_inverse=True)[1].reshape(-1)
+    owners = np.unique(np.column_stack([plane, bodies]), axis=0)
+    shared = np.bincount(owners[:, 0], minlength=plane.max(initial=-1) + 1) >= 2
+    holds_closed = np.zeros(len(shared), dtype=bool)
+    holds_closed[plane[bodies >= 0]] = True
+    shared &= holds_closed
+    kept = np.flatnonzero((length > 0) & shared[plane])
+    if len(kept) == 0:
+        return np.zeros(0, np.int64), np.zeros(0, np.int64)
+    low, high = triangles[kept].min(axis=1) - 0.5 * TOUCHING, triangles[kept].max(axis=1) + 0.5 * TOUCHING
+    # the plane's two other axes, from its rounded normal: the same for all its triangles (a turned wall's normal,
+    # x and z equal to float noise, leans most along x in one triangle and along z in the next)
+    seen = np.array([[1, 2], [0, 2], [0, 1]])[np.argmax(np.abs(key[kept, :3]), axis=1)]
+    rows = np.arange(len(kept))[:, None]
+    flat_low, flat_high = low[rows, seen], high[rows, seen]
+    extent = (flat_high - flat_low).max(axis=1)
+    cell = max(float(np.median(extent)), float(extent.max()) / 4096.0)
+    level = plane[kept, None] * (4.0 * cell)  # planes' boxes cells apart (a grid that doubles its cell pairs a few)
+    flat_low, flat_high = np.hstack([flat_low, level]), np.hstack([flat_high, level])
+    a, b = box_pairs(flat_low, flat_high, flat_low, flat_high, cell)
+    near = (plane[kept[a]] == plane[kept[b]]) & (bodies[kept[a]] != bodies[kept[b]])
+    a, b = a[near], b[near]
+    near = ((low[a] <= high[b]) & (low[b] <= high[a])).all(axis=1)
+    face, partner = kept[a[near]], kept[b[near]]
+    order = np.lexsort((partner, face))
+    return face[order], partner[order]
 
 
 def ray_margin(caster: RayCaster, reach: float) -> float:
@@ -957,10 +1122,12 @@ def hit_from_behind(caster: RayCaster, hits: Hits) -> np.ndarray:
     return behind
 
 
-def back_face_lead(caster: RayCaster, origins: np.ndarray, direction: np.ndarray) -> np.ndarray:
+def back_face_lead(caster: RayCaster, origins: np.ndarray, direction: np.ndarray,
+                   winding: np.ndarray | None = None) -> np.ndarray:
     """(n,) int64: along each ray, the most by which the triangles met on their back side outnumber those met from
-    the front, over its first k crossings (:meth:`RayCaster.all_hits`), k from 1 up to and including the first
-    crossing of a triangle of no closed body (:func:`_closed_bodies`; the ray's end if none); 0 when they never do.
+    the front, over its first k crossings (:meth:`RayCaster.all_hits` and :func:`flush_crossings`), k from 1 up to
+    and including the first crossing of a triangle of no closed body (:func:`_closed_bodies`; the ray's end if
+    none); 0 when they never do.
 
     Seen from inside outward-wound closed bodies, a crossing from behind leaves one and one from the front enters
     one, so the count after k crossings is how many bodies the start lies in less how many the k-th crossing's far
@@ -971,23 +1138,54 @@ def back_face_lead(caster: RayCaster, origins: np.ndarray, direction: np.ndarray
     hit. Of a two-sided face the up-facing side counts (:meth:`RayCaster.first_hits`' rule); a triangle the ray
     runs along counts 0.
 
+    Faces in one plane (a crate against a wall, a crate on a crate, a pillar's top in a ceiling's bottom) are all
+    crossed (:func:`flush_crossings` adds those the multiple-hit query stepped past), and crossings within
+    ``SAME_PLACE`` of each other are one place, at which back faces count first, and of one side closed bodies'
+    faces before a face of none: leaving a body there means the ray's start lies in at least one, whatever is
+    entered at the same place (a count of n bodies at the start less n - 1 past the face), so the answer does not
+    hang on which face the intersector reports, or lists, first.
+
     Args:
         origins: (n, 3) ray starts, metres.
         direction: (3,) the rays' direction (any non-zero length).
+        winding: (m,) :attr:`_Scene.winding` to read closed bodies wound inside out as if wound outward (a face's
+            side times its body's sign; a triangle of no closed body, sign 0, then ends the count at 0: its side
+            tells nothing once the mesh's winding is not trusted); none: each face's side as it is wound.
 
-    Cost: one multiple-hit query, one intersector pass per crossing depth (O(crossings) rays), and an
-    O(c log c) sort of the c crossings.
+    Cost: one multiple-hit query (one intersector pass per crossing depth), :func:`flush_crossings`, and an
+    O(c log c) sort of the c crossings; a batch that crosses nothing costs the query alone.
     """
     origins = np.asarray(origins, dtype=np.float64).reshape(-1, 3)
-    ray, distance, face, _ = caster.all_hits(origins, direction)
+    ray, distance, face, points = caster.all_hits(origins, direction)
     lead = np.zeros(len(origins), dtype=np.int64)
     if len(ray) == 0:
         return lead
-    order = np.lexsort((distance, ray))
-    ray, face = ray[order], face[order]
+    unit = np.asarray(direction, dtype=np.float64) / np.linalg.norm(direction)
+    more = flush_crossings(caster, origins, unit, ray, face, points)
+    stepped_past = np.r_[np.zeros(len(ray), dtype=bool), np.ones(len(more[0]), dtype=bool)]
+    ray, distance, face = (np.concatenate(pair) for pair in zip((ray, distance, face), more))
+    owner = caster.scene.bodies[face]
     face = np.where(caster.scene.twin[face] >= 0, caster.scene.twin[face], face)
-    facing = caster.face_normals[face] @ (np.asarray(direction, dtype=np.float64) / np.linalg.norm(direction))
-    sign = np.where(np.abs(facing) < 1e-9, 0, np.sign(facing)).astype(np.int64)
+    # each face's side as its corners are wound, the order the closed bodies and their winding are read from (a
+    # mesh's stored normals can disagree: trimesh's invert() leaves them as they were)
+    corners = caster.triangles[face]
+    wound = np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0])
+    wound /= np.maximum(np.linalg.norm(wound, axis=1, keepdims=True), 1e-300)
+    sign = np.where(np.abs(wound @ unit) < 1e-9, 0, np.sign(wound @ unit)).astype(np.int64)
+    if winding is not None:
+        sign = sign * winding[face]
+    order = np.lexsort((distance, ray))
+    place = np.cumsum(np.r_[True, (ray[order][1:] != ray[order][:-1]) | (np.diff(distance[order]) > SAME_PLACE)])
+    # a body (or the triangles of none) crossed once a place: of a flush face's two triangles met on the edge
+    # between them, or a face the query did report, the one crossing counts
+    by_owner = np.lexsort((stepped_past[order], owner[order], place))
+    first = np.r_[True, (place[by_owner][1:] != place[by_owner][:-1]) | (owner[order][by_owner][1:] != owner[order][by_owner][:-1])]
+    keep = np.ones(len(order), dtype=bool)
+    keep[by_owner] = first | ~stepped_past[order][by_owner]
+    order, place = order[keep], place[keep]
+    unpaired = ~caster.scene.closed[face]
+    order = order[np.lexsort((unpaired[order], -sign[order], place))]  # in each place, back faces first
+    ray, sign, unpaired = ray[order], sign[order], unpaired[order]
     starts = np.flatnonzero(np.r_[True, ray[1:] != ray[:-1]])
     lengths = np.diff(np.r_[starts, len(ray)])
 
@@ -996,11 +1194,76 @@ def back_face_lead(caster: RayCaster, origins: np.ndarray, direction: np.ndarray
         total = np.cumsum(values)
         return total - np.repeat(total[starts] - values[starts], lengths)
 
-    unpaired = ~caster.scene.closed[face]
     counted = running(unpaired.astype(np.int64)) - unpaired <= 0  # up to the first unpaired crossing
     count = np.where(counted, running(sign), np.iinfo(np.int64).min)
     lead[ray[starts]] = np.maximum(np.maximum.reduceat(count, starts), 0)
     return lead
+
+
+def flush_crossings(caster: RayCaster, origins: np.ndarray, unit: np.ndarray, ray: np.ndarray, face: np.ndarray,
+                    points: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``(ray, distance, face)``: the crossings :meth:`RayCaster.all_hits` stepped past (origins (n, 3) m, ``unit``
+    (3,) their direction; its answer ``ray``, ``face`` (c,) and ``points`` (c, 3) m). The multiple-hit query steps
+    past each crossing before it looks for the next, so of two faces in one plane where they overlap it reports
+    one; the other is a partner of the one reported (:attr:`_Scene.flush`) whose patch holds the crossing, and the
+    ray crosses it (the Moller-Trumbore test: T. Moller and B. Trumbore, "Fast, minimum storage ray-triangle
+    intersection", Journal of Graphics Tools 2(1), 1997; its edges included, so a crossing on the edge between a
+    face's two triangles is found on both: :func:`back_face_lead` counts a body once a place).
+
+    Nothing is built or cast again: O(c + q) for the q (crossing, partner) pairs of the crossings' faces, and
+    :attr:`_Scene.flush` on the mesh's first crossing.
+    """
+    starts, partners, patches = caster.scene.flush
+    count = starts[face + 1] - starts[face]
+    row = np.repeat(np.arange(len(face)), count)
+    pair = np.arange(len(row)) + np.repeat(starts[face] - (np.cumsum(count) - count), count)
+    local = caster.frame.to_local(points[row])
+    inside = ((local >= patches[pair, 0]) & (local <= patches[pair, 1])).all(axis=1)
+    row, partner = row[inside], partners[pair[inside]]
+    start = caster.frame.to_local(origins[ray[row]])
+    corners = caster.frame.to_local(caster.triangles[partner])
+    side, other = corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0]
+    across = np.cross(unit, other)
+    determinant = np.einsum("ij,ij->i", side, across)
+    flat = np.abs(determinant) <= 1e-12 * np.linalg.norm(side, axis=1) * np.linalg.norm(other, axis=1)
+    determinant = np.where(flat, 1.0, determinant)
+    offset = start - corners[:, 0]
+    u = np.einsum("ij,ij->i", offset, across) / determinant
+    turned = np.cross(offset, side)
+    v = (turned @ unit) / determinant
+    distance = np.einsum("ij,ij->i", other, turned) / determinant
+    tolerance = 1e-9
+    crossed = ~flat & (u >= -tolerance) & (v >= -tolerance) & (u + v <= 1.0 + tolerance) & (distance >= 0.0)
+    return ray[row[crossed]], distance[crossed], partner[crossed]
+
+
+SOLID_DIRECTIONS = COMPASS[::2]
+"""The horizontal directions (+x, +z, -x, -z) :func:`closed_solid_holds` looks along."""
+
+
+def closed_solid_holds(caster: RayCaster, points: np.ndarray, height: float, needed: int = 5,
+                       winding: np.ndarray | None = None) -> np.ndarray:
+    """(n,) bool: each ground point (n, 3) lies inside a closed solid: along at least ``needed`` of five rays, the
+    one straight up from ``EPSILON`` over it and those along +x, +z, -x and -z from ``height / 2`` over it (rays of
+    unlimited length; ``height`` the agent's, metres), back faces come to outnumber front faces
+    (:func:`back_face_lead`, with ``winding``).
+
+    The sampling builder's rule needs all five
+    (:func:`g2s_plugins.graph_builders.sampling.inside_closed_solids`); the disconnected-areas warning's four, with
+    each body's winding (:func:`g2s_plugins.area_gaps.shut_in`).
+
+    Cost: the upward query for every point, then each horizontal one for the points that can still reach
+    ``needed`` (all five: those that led along every ray so far).
+    """
+    points = np.asarray(points, dtype=np.float64).reshape(-1, 3)
+    misses = np.zeros(len(points), dtype=np.int64)
+    rows = np.arange(len(points))
+    for lift, direction in [(EPSILON, UP)] + [(0.5 * height, way) for way in SOLID_DIRECTIONS]:
+        misses[rows[back_face_lead(caster, points[rows] + lift * UP, direction, winding) <= 0]] += 1
+        rows = rows[misses[rows] <= len(SOLID_DIRECTIONS) + 1 - needed]
+    inside = np.zeros(len(points), dtype=bool)
+    inside[rows] = True
+    return inside
 
 
 def has_room(distance: np.ndarray, needed: np.ndarray | float) -> np.ndarray:

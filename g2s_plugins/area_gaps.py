@@ -40,14 +40,14 @@ a chasm, from end to end. Measured on generated rooms parted by a wall 10-30
 m long with one door 0.6 or 0.8 m wide, planks over a chasm, and walls and
 chasms with no way across (docs/analysis_quality.md, "The place the
 disconnected-areas warning names"). *A floor shut inside a closed solid*
-(:func:`shut_in`) is read from the closed bodies' own winding
-(:func:`body_winding`), so that a mesh exported inside out reads as the same
-mesh wound right.
+(:func:`shut_in`) is read with the sampling builder's rule for closed solids,
+each body by its own winding, so that a mesh exported inside out reads as
+the same mesh wound right.
 
 Complexity: O(e log e) for the e edge points of the compared areas (a k-d
 tree per pair of areas), e = the areas' polygon perimeter / ``cell_size`` on
 the navmesh route, their sample count on the sampling route; with the mesh,
-O(m log m) for its m faces' bodies and up to 9 rays for each of at most
+O(m log m) for its m faces' closed bodies and up to 9 rays for each of at most
 ``MAX_PLACE_CANDIDATES`` pairs.
 """
 
@@ -62,14 +62,14 @@ import networkx as nx
 import numpy as np
 import trimesh
 from scipy import sparse
-from scipy.sparse.csgraph import breadth_first_order, connected_components
+from scipy.sparse.csgraph import breadth_first_order
 from scipy.spatial import cKDTree
 from scipy.spatial.distance import pdist, squareform
 
 from g2s_core.config import AgentConfig
 from g2s_core.disconnected import area_summary, xyz
 from g2s_core.model import NavMesh
-from g2s_plugins._raycasting import COMPASS, EPSILON, UP, Hits, RayCaster, hit_from_behind
+from g2s_plugins._raycasting import EPSILON, UP, RayCaster, closed_solid_holds
 from g2s_plugins.play_space import node_polygons
 
 Ground = tuple[np.ndarray, np.ndarray, np.ndarray]
@@ -268,7 +268,7 @@ def areas_cause(graph: nx.Graph, largest: Sequence[int], others: Sequence[Sequen
         return f"{cause}, {between(closest.pairs[0])}"
     caster = RayCaster(mesh)
     # its closest place and its middle: a render post or column inside the solid may face the rays from one
-    if shut_in(caster, np.stack([closest.there, area_summary(graph, nearest)[1]]), agent, body_winding(mesh)).any():
+    if shut_in(caster, np.stack([closest.there, area_summary(graph, nearest)[1]]), agent).any():
         rise = float(closest.there[1] - closest.here[1])
         level = "at the same height" if round(abs(rise), 1) == 0 else f"{abs(rise):.1f} m {'higher' if rise > 0 else 'lower'}"
         return (f"a floor shut inside a closed solid (a box or collision hull exported with the level), {level}, "
@@ -278,56 +278,19 @@ def areas_cause(graph: nx.Graph, largest: Sequence[int], others: Sequence[Sequen
     return f"{cause}, {where_between(caster, closest, agent)}"
 
 
-def shut_in(caster: RayCaster, points: np.ndarray, agent: AgentConfig, winding: np.ndarray) -> np.ndarray:
-    """(n,) bool: each ground point (n,3) lies inside a closed solid of the caster's mesh: of the first faces
-    straight up from it and along +x, +z, -x and -z from half the agent's height over it, at least four are faces
-    of closed bodies met from inside (:func:`met_from_inside`; the rays of
-    :func:`g2s_plugins.graph_builders.sampling.inside_closed_solids`, which needs back faces to come to outnumber
-    front faces along all five).
+def shut_in(caster: RayCaster, points: np.ndarray, agent: AgentConfig) -> np.ndarray:
+    """(n,) bool: each ground point (n,3) lies inside a closed solid of the caster's mesh: along at least four of
+    the five rays of the sampling builder's rule (:func:`g2s_plugins._raycasting.closed_solid_holds`, which
+    :func:`g2s_plugins.graph_builders.sampling.inside_closed_solids` asks of all five), back faces of closed
+    bodies come to outnumber front faces, each body read by its own winding (:attr:`_Scene.winding
+    <g2s_plugins._raycasting._Scene.winding>`), so that a mesh wound inside out reads as it would wound right.
 
     A render object inside a collision hull meets one of them (the bandstand's roof over its deck, the fountain's
-    column beside its basin, benchmarks/level_kinds.py ``collision_hulls``); a place meant to be walked sees its
-    room's walls and ceiling from outside them. ``winding``: :func:`body_winding` of the caster's mesh, so that a
-    mesh wound inside out reads as it would wound right. Five rays a point.
+    column beside its basin, benchmarks/level_kinds.py ``collision_hulls``): its open faces stop that ray's count;
+    a place meant to be walked sees its room's walls and ceiling from outside them. Five rays a point (a
+    multiple-hit query each).
     """
-    points = np.asarray(points, dtype=np.float64).reshape(-1, 3)
-    hits = [caster.first_hits(points + EPSILON * UP, UP)]
-    hits += [caster.first_hits(points + 0.5 * float(agent.height) * UP, direction) for direction in COMPASS[::2]]
-    return sum(met_from_inside(caster, hit, winding).astype(int) for hit in hits) >= len(hits) - 1
-
-
-def met_from_inside(caster: RayCaster, hits: Hits, winding: np.ndarray) -> np.ndarray:
-    """(n,) bool: each ray of ``hits`` met a face of a closed body (``winding`` != 0, :func:`body_winding`) from
-    the body's inside: from behind on a body wound outward, from the front on one wound inside out."""
-    sign = np.where(hits.hit, winding[np.maximum(hits.face, 0)], 0)
-    return (sign != 0) & (hit_from_behind(caster, hits) == (sign > 0))
-
-
-def body_winding(mesh: trimesh.Trimesh) -> np.ndarray:
-    """(m,) int8 for each face of ``mesh``: +1 on a closed body wound outward (its signed volume positive), -1 on
-    one wound inside out (negative: a solid exported with flipped normals, or a room modelled as a box seen from
-    inside), 0 on an open body or one not wound consistently. A body is the faces joined by shared edges, a closed
-    consistently wound one each edge of which two of its faces share, once in each direction; coincident
-    vertices are joined first (exact duplicates: a file's split vertices at seams). O(m log m): sorts of the 3m
-    edges and of the vertices. The core's cleaning step (:func:`g2s_core.mesh.flip_inside_out_bodies`, trimesh's
-    ``fix_inversion``) flips such bodies; this reads only their sign, at about a fifth of its CPU (0.19 against
-    0.94 s on a 42k-face generated dungeon, 6 December 2026), since the warning reads it on every run it fires.
-    """
-    faces = np.unique(np.asarray(mesh.vertices), axis=0, return_inverse=True)[1].reshape(-1)[np.asarray(mesh.faces)]
-    directed = faces[:, [0, 1, 1, 2, 2, 0]].reshape(-1, 2)
-    edges, edge = np.unique(np.sort(directed, axis=1), axis=0, return_inverse=True)
-    edge = edge.reshape(-1)
-    uses = np.bincount(edge, minlength=len(edges))
-    forward = np.bincount(edge, weights=directed[:, 0] < directed[:, 1], minlength=len(edges))
-    owner = np.repeat(np.arange(len(faces)), 3)
-    incidence = sparse.csr_matrix((np.ones(len(edge)), (owner, edge)), shape=(len(faces), len(edges)))
-    bodies, body = connected_components(incidence @ incidence.T, directed=False)
-    sound = np.bincount(body[owner], weights=(uses[edge] != 2) | (forward[edge] != 1), minlength=bodies) == 0
-    corners = np.asarray(mesh.triangles, dtype=np.float64)
-    corners = corners - corners.reshape(-1, 3).mean(axis=0)  # about the middle: the volumes' sums lose less
-    volume = np.bincount(body, weights=np.einsum("ij,ij->i", corners[:, 0], np.cross(corners[:, 1], corners[:, 2])),
-                         minlength=bodies)
-    return np.where(sound[body], np.sign(volume[body]), 0).astype(np.int8)
+    return closed_solid_holds(caster, points, float(agent.height), needed=4, winding=caster.scene.winding)
 
 
 def likely_cause_of(agent: AgentConfig, navmesh: NavMesh | None = None, clearance: float = 0.0,

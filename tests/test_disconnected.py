@@ -13,7 +13,7 @@ import trimesh
 from g2s_core.config import AgentConfig
 from g2s_core.disconnected import LISTED_AREAS, area_summary, disconnected_warning
 from g2s_plugins._raycasting import RayCaster
-from g2s_plugins.area_gaps import body_winding, likely_cause_of, shut_in
+from g2s_plugins.area_gaps import likely_cause_of, shut_in
 
 SAMPLED = likely_cause_of(AgentConfig())
 """The cause over nodes that each stand for a square of their area, none eroded."""
@@ -145,12 +145,13 @@ def test_a_plank_narrower_than_the_agent_is_named_over_the_chasm():
     assert message.endswith("about 2.0 m apart, along 19.0 m from (11.0, 8.0, 19.5 m) to (10.9, 8.0, 0.5 m).")
 
 
-def test_body_winding_tells_closed_bodies_wound_outward_and_inside_out_from_open_ones():
+def test_winding_tells_closed_bodies_wound_outward_and_inside_out_from_open_ones():
     box = boxes((0, 1, 0, 1, 0, 1))
     plane = trimesh.Trimesh([[0, 0, 0], [1, 0, 0], [0, 0, 1]], [[0, 2, 1]])
     split = trimesh.Trimesh(box.triangles.reshape(-1, 3), np.arange(36).reshape(-1, 3), process=False)  # OBJ seams
-    assert body_winding(box).tolist() == [1] * 12 and body_winding(flipped(box)).tolist() == [-1] * 12
-    assert body_winding(plane).tolist() == [0] and body_winding(split).tolist() == [1] * 12
+    winding = {name: RayCaster(mesh).scene.winding.tolist() for name, mesh in
+               (("box", box), ("flipped", flipped(box)), ("plane", plane), ("split", split))}
+    assert winding == {"box": [1] * 12, "flipped": [-1] * 12, "plane": [0], "split": [1] * 12}
 
 
 def test_a_mesh_wound_inside_out_reads_as_wound_right():
@@ -163,7 +164,7 @@ def test_a_mesh_wound_inside_out_reads_as_wound_right():
                  (0, 10, 0, 3, -0.2, 0), (0, 4.5, 0, 3, 10, 10.2), (5.5, 10, 0, 3, 10, 10.2))
     for mesh, point, inside in ((box, (13.0, 0.0, 13.0), True), (room, (5.0, 0.0, 5.0), False)):
         for wound in (mesh, flipped(mesh)):
-            assert shut_in(RayCaster(wound), np.array([point]), agent, body_winding(wound)).tolist() == [inside]
+            assert shut_in(RayCaster(wound), np.array([point]), agent).tolist() == [inside]
     floor, box_only = navmesh_of([(0.5, 9.5, 0.5, 24.5, 0.0), (10.5, 15.5, 10.5, 15.5, 0.0)])
     message = disconnected_warning(box_only, areas(box_only), 2, likely_cause_of(AgentConfig(), floor, mesh=flipped(box)))
     assert "Likely cause: a floor shut inside a closed solid (a box or collision hull exported with the level)" in message

@@ -139,8 +139,8 @@ from g2s_plugins._raycasting import (
     OpenFloors,
     RayCaster,
     all_hits_down,
-    back_face_lead,
     clear_above,
+    closed_solid_holds,
     crack_sides,
     ground_across_crack,
     head_room,
@@ -467,10 +467,6 @@ REJECTED_BY = ("fits", "head room", "wall", "ledge")
 """What :func:`agent_fits` reports in ``rejected``: the index of the first check a point failed."""
 
 
-SOLID_DIRECTIONS = COMPASS[::2]
-"""The horizontal directions (+x, +z, -x, -z) :func:`inside_closed_solids` looks along."""
-
-
 def inside_closed_solids(caster: RayCaster, points: np.ndarray, agent: AgentShape) -> np.ndarray:
     """(n,) bool: each ground point lies inside a closed solid (a building block standing on the floor).
 
@@ -489,23 +485,23 @@ def inside_closed_solids(caster: RayCaster, points: np.ndarray, agent: AgentShap
     room, but the room's walls are not, so its floor stays. A ray that meets
     nothing leaves the point outside. A level wound inside out is met from
     the front first everywhere, so it loses no point here and
-    :mod:`g2s_plugins.walkable_check` still speaks about it.
+    :mod:`g2s_plugins.walkable_check` still speaks about it. Faces in one
+    plane (a crate against a wall or on another crate, a pillar's top in a
+    ceiling) are all counted, back faces first at one place
+    (:func:`~g2s_plugins._raycasting.back_face_lead`).
 
     The agent checks cannot tell: a solid taller than the agent and wider
     than twice the clearance leaves its floor's middle with head room and
     no wall or ledge within the clearance.
 
     Cost: one multiple-hit upward ray a point (one intersector pass per
-    triangle crossed above it, and one more), and four multiple-hit
-    horizontal rays for the points with a lead upwards.
+    triangle crossed above it, and one more; the faces in one plane it
+    stepped past found from the pairs of such faces, built once per mesh on
+    its first crossing), and four multiple-hit horizontal rays for the
+    points with a lead upwards
+    (:func:`~g2s_plugins._raycasting.closed_solid_holds`, all five rays).
     """
-    points = np.asarray(points, dtype=np.float64).reshape(-1, 3)
-    rows = np.nonzero(back_face_lead(caster, points + EPSILON * UP, UP) > 0)[0]
-    for direction in SOLID_DIRECTIONS:
-        rows = rows[back_face_lead(caster, points[rows] + 0.5 * agent.height * UP, direction) > 0]
-    inside = np.zeros(len(points), dtype=bool)
-    inside[rows] = True
-    return inside
+    return closed_solid_holds(caster, points, agent.height)
 
 
 STRANDED_REACH = math.sqrt(2.0)
