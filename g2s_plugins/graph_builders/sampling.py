@@ -144,6 +144,7 @@ from g2s_plugins._raycasting import (
     crack_sides,
     ground_across_crack,
     head_room,
+    RISE_TOLERANCE,
     ray_margin,
     walks_in_batch,
 )
@@ -432,24 +433,27 @@ def agent_fits(
         return caster.walkable_faces(faces, agent.max_slope_deg)
 
     def ledges(cast: RayCaster, rows: np.ndarray) -> None:
-        probe = (points[rows][:, None, :] + clearance * COMPASS[None, :, :]).reshape(-1, 3)
-        down = cast.first_hits(probe + reach * UP, -UP)
-        ground = ((down.distance <= 2.0 * reach) & walkable(down.face)).reshape(len(rows), len(COMPASS))
-        distance = np.where(ground, down.distance.reshape(ground.shape), 0.0)
-        origins = (probe + reach * UP).reshape(len(rows), len(COMPASS), 3)
-        # A probe over a crack (a grating's slot) stands on the ground beside it, as in the walk test; direction
-        # by direction, only for the points no earlier probe has put out (one probe without ground is enough).
         kept = np.ones(len(rows), dtype=bool)
-        for k in range(len(COMPASS)):
-            missing = np.flatnonzero(kept & ~ground[:, k])
-            crack, beside = ground_across_crack(cast, origins[missing, k], -UP, crack_sides(agent), 2.0 * reach,
-                                                walkable, CRACK_STEPS)
-            ground[missing[crack], k] = True
-            distance[missing[crack], k] = beside[crack]
-            kept[missing[~crack]] = False
-        # Head room over the landing point, from the probe's own origin (see walks_in_batch).
-        tested = ground & kept[:, None]
-        ground[tested] = clear_above(cast, origins[tested], agent.height - distance[tested])
+        ground = np.ones((len(rows), len(COMPASS)), dtype=bool)
+        distance = np.full((len(rows), len(COMPASS), LEDGE_PROBES + 1), reach)  # the point itself lies reach down
+        for j in range(1, LEDGE_PROBES + 1):
+            origins = points[rows][:, None, :] + j * around.step * COMPASS[None, :, :] + reach * UP
+            down = cast.first_hits(origins.reshape(-1, 3), -UP)
+            found = ((down.distance <= 2.0 * reach) & walkable(down.face)).reshape(ground.shape)
+            distance[:, :, j] = np.where(found, down.distance.reshape(ground.shape), 0.0)
+            # A probe over a crack (a grating's slot) stands on the ground beside it, as in the walk test; direction
+            # by direction, only for the points no earlier probe has put out (one probe without ground is enough).
+            for k in range(len(COMPASS)):
+                missing = np.flatnonzero(kept & ~found[:, k])
+                crack, beside = ground_across_crack(cast, origins[missing, k], -UP, crack_sides(agent), 2.0 * reach,
+                                                    walkable, CRACK_STEPS)
+                distance[missing[crack], k, j] = beside[crack]
+                kept[missing[~crack]] = False
+        ground[~kept] = False
+        # Between neighbouring probes the ground rises or falls by the walk test's step or slope at most.
+        ground &= np.abs(np.diff(distance, axis=2)).max(axis=2) <= around.rise + RISE_TOLERANCE
+        # Head room over the outer landing point, from that probe's own origin (see walks_in_batch).
+        ground[ground] = clear_above(cast, origins[ground], agent.height - distance[:, :, -1][ground])
         ok[rows] = ground.all(axis=1)  # a probe that put its point out kept no ground
         why[rows[~ok[rows]]] = REJECTED_BY.index("ledge")
 
@@ -523,6 +527,15 @@ stranded: a grid candidate's 8 neighbours."""
 MOVE_ROUNDS = 3
 """Moves at most per stranded candidate (:func:`moved_into_passages`): one off a straight wall, one per wall it
 meets in a corner."""
+
+LEDGE_PROBES = 2
+"""Ground probes along each of :func:`agent_fits`' 8 ledge directions, evenly spaced out to the clearance, between
+which (the point itself the first) the ground may rise or fall by the walk test's step or slope at most: half the
+clearance apart (0.25 m for the presets' agent, the walk test's probe step), a flight's risers under the climb pass one
+at a time and a block over it within the clearance (a bench, a bunk, a shelf's top narrower than the agent) does not.
+One probe at the clearance alone read ground within max(climb, slope) of the point: a 45-degree flight of 0.30 m
+treads put two risers, 0.6 m, within 0.5 m of every point, and a bench 0.45 m high passed (docs/sampling.md,
+"Stairs and narrow ledge tops")."""
 
 GROUND_DIRECTIONS = 32
 """Level directions in which :func:`ledge_room` looks for a ledge and an added point needs ground at the clearance
@@ -786,8 +799,14 @@ class _Surroundings:
     def __init__(self, caster: RayCaster, agent: AgentShape, clearance: float) -> None:
         corners = caster.triangles
         self.agent, self.clearance = agent, clearance
-        self.reach = float(agent.max_rise(clearance)) + GROUND_MARGIN
-        """Metres above the probes the ledge rays start from (a step or the max slope, plus the ground margin)."""
+        self.step = clearance / LEDGE_PROBES
+        """Metres between neighbouring ledge probes (the point itself the first)."""
+        self.rise = float(agent.max_rise(self.step))
+        """Metres the ground may rise or fall between neighbouring ledge probes: the walk test's rule (a step or the
+        max slope over their distance)."""
+        self.reach = LEDGE_PROBES * self.rise + GROUND_MARGIN
+        """Metres above the point's height the ledge rays start from: over the outermost probe's highest ground, plus
+        the ground margin."""
         self.margin = ray_margin(caster, clearance + self.reach + agent.height)
         """Metres (:func:`~g2s_plugins._raycasting.ray_margin` over the highest ray start)."""
         if self.margin >= self.reach:  # a level hundreds of kilometres across: no ray could tell a step from a floor
@@ -799,8 +818,9 @@ class _Surroundings:
         walkable = caster.walkable_faces(np.arange(len(corners)), agent.max_slope_deg)
         cell = max(clearance, 0.25)
         self.steep = BoxOccupancy(corners[~walkable], widen, cell)
-        # Cells half as high as the ledge rays start above a floor (before any growing): its own cell seldom reaches there.
-        self.walkable = BoxOccupancy(corners[walkable], widen, np.array([cell, min(cell, 0.5 * (self.reach - self.margin)), cell]))
+        # Cells half as high as a rise between probes (before any growing): a flat floor's own cell never reaches the
+        # height plain_ground looks from.
+        self.walkable = BoxOccupancy(corners[walkable], widen, np.array([cell, min(cell, 0.5 * (self.rise - self.margin)), cell]))
 
     @classmethod
     def of(cls, caster: RayCaster, agent: AgentShape, clearance: float) -> _Surroundings:
@@ -820,21 +840,25 @@ class _Surroundings:
         True where the clearance disk around a point (grown by ``margin``)
         lies inside its own walkable triangle seen from above, or inside it
         and the triangles across the edges the disk crosses
-        (:meth:`~g2s_plugins._raycasting.FloorTriangles.disk_inside`); where those triangles stay within
-        ``reach`` less the ground margin of the point's height under the disk;
-        and where no steep triangle is near the point's column from that
-        lowest point to the agent's height above the ledge rays' start, and
-        no walkable one above that start. Then each downward ledge ray lands
-        on walkable ground within ``reach`` of the point's height (one of
-        those triangles at the latest, no steeper than the max slope) and
-        each upward one meets nothing within the agent's height: the rays'
+        (:meth:`~g2s_plugins._raycasting.FloorTriangles.disk_inside`), those
+        triangles within ``drop`` of the point's height under the disk;
+        where no steep triangle is near the point's column from that lowest
+        point to the agent's height above the ledge rays' start; and where no
+        walkable one is near it from ``rise - drop`` (less the margin) over
+        the point up to there. Then each downward ledge ray lands on one of
+        those triangles or on a walkable face under that height, so within
+        ``drop`` below and ``rise - drop`` above the point: two neighbouring
+        probes' grounds differ by less than ``rise`` (on those triangles, no
+        steeper than the max slope, by at most the slope over ``step``), and
+        each upward ray meets nothing within the agent's height: the rays'
         answer, without them.
         """
         top = self.reach + self.agent.height
         plain, drop = floor.disk_inside(points, faces, self.clearance + self.margin, self.clearance)
-        plain &= drop <= self.reach - GROUND_MARGIN - self.margin
+        low = self.rise - drop - self.margin
+        plain &= low > drop
         plain[plain] = self.steep.columns_free(points[plain], -drop[plain] - self.margin, top)
-        plain[plain] = self.walkable.columns_free(points[plain], self.reach, top)
+        plain[plain] = self.walkable.columns_free(points[plain], low[plain], top)
         return plain
 
 
