@@ -395,13 +395,14 @@ def agent_fits(
         for level in levels:
             for direction in COMPASS:
                 hits = cast.first_hits(points[near] + level * UP, direction)
-                wall = (hits.distance < clearance) & ~cast.walkable_faces(hits.face, agent.max_slope_deg)
+                met = walls_met(cast, hits, agent, clearance if wall_distance is None else wall_reach(clearance))
+                wall = met & (hits.distance < clearance)
                 why[near[wall]] = REJECTED_BY.index("wall")
                 if wall_distance is not None:
-                    rows, length, _ = _steep_offsets(cast, hits, agent, clearance)
-                    stays = ~wall[rows]
-                    kept = near[rows[stays]]
-                    wall_distance[kept] = np.minimum(wall_distance[kept], length[stays])
+                    rows = np.flatnonzero(met & ~wall)
+                    length, _ = _wall_offsets(cast, hits, rows)
+                    kept = near[rows]
+                    wall_distance[kept] = np.minimum(wall_distance[kept], length)
                 near = near[~wall]
         clear[near] = True
 
@@ -465,6 +466,41 @@ def wall_levels(agent: AgentShape) -> list[float]:
     """Heights (m over a ground point, ascending) of :func:`agent_fits`' horizontal wall rays: knee and head (the
     agent's body, :attr:`AgentShape.body`) and waist (half the height)."""
     return sorted({round(level, 6) for level in (*agent.body, 0.5 * agent.height)})
+
+
+def walls_met(caster: RayCaster, hits: Hits, agent: AgentShape, reach: float) -> np.ndarray:
+    """(n,) bool: each level ray of ``hits`` (a wall ray, :func:`wall_levels`) met a wall within ``reach`` metres: a
+    triangle steeper than the max slope that is not a riser the agent steps up.
+
+    A riser: the ground in front of the face (a downward ray from ``EPSILON`` back along the ray from the hit) lies
+    within the climb under the hit, and the face's top (a downward ray ``EPSILON`` past the hit, from just over the
+    climb over that ground) is walkable ground no lower than the hit and no higher than the climb over that ground: between those two probes the ground rises by a step at
+    most, the walk test's rule (:func:`~g2s_plugins._raycasting.walks_in_batch`), so the agent walking along the ray
+    steps onto it (Recast erodes the walkable area only at a neighbour more than a step higher). A knee-high ray on a
+    flight steeper than the knee over the clearance (0.30 m risers on 0.30 m treads) meets the riser two steps up,
+    which stopped no agent (docs/sampling.md, "Steep flights and ledge tops"). A wall, a steep slope, a thin fence
+    or a block over the climb, whatever it stands on, stays a wall; so does a riser onto a slot of a grating (no
+    crack rule here). Up to two downward rays a steep hit within ``reach``.
+    """
+    wall = (hits.distance < reach) & ~caster.walkable_faces(hits.face, agent.max_slope_deg)
+    rows = np.flatnonzero(wall)
+    if len(rows) == 0:
+        return wall
+    at, unit = hits.points[rows], hits.unit[rows]
+    front = caster.first_hits(at - EPSILON * unit, -UP)
+    low = (front.distance <= agent.max_climb) & caster.walkable_faces(front.face, agent.max_slope_deg)
+    # The top ray starts EPSILON over the climb, so that a riser of exactly the climb is met from above.
+    rows, at, unit, lift = rows[low], at[low], unit[low], agent.max_climb - front.distance[low] + EPSILON
+    top = caster.first_hits(at + EPSILON * unit + lift[:, None] * UP, -UP)
+    step = (top.distance >= EPSILON - RISE_TOLERANCE) & (top.distance <= lift + EPSILON)
+    wall[rows] = ~(step & caster.walkable_faces(top.face, agent.max_slope_deg))
+    return wall
+
+
+def wall_reach(clearance: float) -> float:
+    """Metres: how far a compass ray reads walls for :func:`nearest_wall`, ``clearance`` / cos 22.5 degrees (a wall
+    between two compass directions is that far along them when it is ``clearance`` away)."""
+    return clearance / math.cos(math.pi / len(COMPASS))
 
 
 REJECTED_BY = ("fits", "head room", "wall", "ledge")
@@ -576,9 +612,11 @@ def nearest_wall(caster: RayCaster, points: np.ndarray, agent: AgentShape, clear
     away = np.zeros((len(points), 3))
     for level in wall_levels(agent):
         for direction in COMPASS:
-            wall, length, level_offset = _steep_offsets(caster, caster.first_hits(points + level * UP, direction), agent, clearance)
+            hits = caster.first_hits(points + level * UP, direction)
+            wall = np.flatnonzero(walls_met(caster, hits, agent, wall_reach(clearance)))
             if len(wall) == 0:
                 continue
+            length, level_offset = _wall_offsets(caster, hits, wall)
             nearer = length < distance[wall]
             rows = wall[nearer]
             distance[rows] = length[nearer]
@@ -586,15 +624,13 @@ def nearest_wall(caster: RayCaster, points: np.ndarray, agent: AgentShape, clear
     return distance, away
 
 
-def _steep_offsets(caster: RayCaster, hits: Hits, agent: AgentShape, clearance: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """``(rows, length, offset)`` of the level rays ``hits`` that meet a steep triangle within ``clearance`` / cos
-    22.5 degrees (:func:`nearest_wall`'s reach): their (k,) indices, (k,) the level distance (m) from that triangle's
-    nearest point (``trimesh.triangles.closest_point``) to the ray's origin and (k, 3) the level offset itself."""
-    reach = clearance / math.cos(math.pi / len(COMPASS))
-    rows = np.flatnonzero((hits.distance < reach) & ~caster.walkable_faces(hits.face, agent.max_slope_deg))
+def _wall_offsets(caster: RayCaster, hits: Hits, rows: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``(length, offset)`` of the level rays ``hits[rows]``, each of which met a wall (:func:`walls_met`): (k,) the
+    level distance (m) from that triangle's nearest point (``trimesh.triangles.closest_point``) to the ray's origin and
+    (k, 3) the level offset itself."""
     origins = hits.origins[rows]
     offset = (origins - trimesh.triangles.closest_point(caster.triangles[hits.face[rows]], origins)) * [1.0, 0.0, 1.0]
-    return rows, np.linalg.norm(offset, axis=1), offset
+    return np.linalg.norm(offset, axis=1), offset
 
 
 def ledge_room(caster: RayCaster, points: np.ndarray, agent: AgentShape, clearance: float) -> np.ndarray:
