@@ -673,8 +673,8 @@ def test_clearance_disk_may_reach_across_to_the_neighbouring_triangle():
 
 
 def _agent_fits_with_every_ray(caster: RayCaster, points: np.ndarray, agent: AgentShape, clearance: float) -> np.ndarray:
-    """agent_fits without any broad phase: 24 wall rays and 24 ledge rays per point (two probes a direction and an
-    upward ray over the outer one; 2 to 8 more for each ledge probe that finds no ground: the crack rule, 2 to 4 a
+    """agent_fits without any broad phase: 24 wall rays (up to two downward rays more for each steep face they meet,
+    the riser rule) and 24 ledge rays per point (two probes a direction and an upward ray over the outer one; 2 to 8 more for each ledge probe that finds no ground: the crack rule, 2 to 4 a
     side)."""
     ok = head_room(caster, points, agent)
     levels = sorted({round(min(agent.max_climb + GROUND_MARGIN, agent.height - EPSILON), 6),
@@ -682,7 +682,7 @@ def _agent_fits_with_every_ray(caster: RayCaster, points: np.ndarray, agent: Age
     for level in levels:
         for direction in COMPASS:
             hits = caster.first_hits(points + level * UP, direction)
-            ok &= ~((hits.distance < clearance) & ~caster.walkable_faces(hits.face, agent.max_slope_deg))
+            ok &= ~sampling.walls_met(caster, hits, agent, clearance)  # a steep face but a riser within the climb
     step = clearance / 2.0  # two probes a direction, half the clearance apart; the point itself the first
     reach = 2.0 * float(agent.max_rise(step)) + GROUND_MARGIN
     walkable = lambda faces: caster.walkable_faces(faces, agent.max_slope_deg)  # noqa: E731

@@ -14,10 +14,12 @@ wanted. No Recast is involved: ``context.navmesh`` stays ``None``.
 3. *Agent checks*, batched upward/horizontal/downward rays per candidate:
    head room (nothing within the agent height above it); clearance (no wall
    within ``clearance`` metres, horizontal rays at knee, waist and head
-   height); no ledge within ``clearance`` (ground found at that distance in 8
-   directions, within a step or the max slope, with head room; a probe over a
-   crack, such as a grating's slot, stands on the ground beside it, the walk
-   test's crack rule). This erodes
+   height; a riser the agent steps up is no wall, :func:`walls_met`); no
+   ledge within ``clearance`` (ground found at half that distance and at it
+   in 8 directions, rising or falling between neighbouring probes by a step
+   or the max slope at most, with head room; a probe over a crack, such as
+   a grating's slot, stands on the ground beside it, the walk test's crack
+   rule). This erodes
    the walkable surface by ``clearance`` as Recast erodes it by the radius.
    Rays whose answer the geometry near a candidate already gives are not
    cast (:class:`_Surroundings`); the answers are the same. The wall and
@@ -336,13 +338,16 @@ def agent_fits(
 ) -> np.ndarray:
     """(n,) bool: the agent can stand at each ground point.
 
-    Head room above the point; if ``clearance > 0``, no steep geometry within
+    Head room above the point; if ``clearance > 0``, no wall within
     ``clearance`` horizontally at knee (max climb + margin), waist (half
-    height) and head (height - margin) levels, and in 8 directions at
-    ``clearance`` metres walkable ground within a step (or the max slope)
-    of the point, with head room of its own. A ledge probe that finds none
-    stands on the ground within one crack step on both sides of it (each side
-    tried apart at half a step and a step), along x, else along z
+    height) and head (height - margin) levels (a steep face but a riser the
+    agent steps up, :func:`walls_met`), and in 8 directions at half the
+    clearance and at it (``LEDGE_PROBES``) walkable ground rising or falling
+    from the probe before (the point itself the first) by a step or the max
+    slope over their distance at most, with head room over the outer one. A
+    ledge probe that finds none stands on the ground within one crack step
+    on both sides of it (each side tried apart at half a step and a step),
+    along x, else along z
     (:func:`~g2s_plugins._raycasting.ground_across_crack` with
     :func:`~g2s_plugins._raycasting.crack_sides` and
     :data:`~g2s_plugins._raycasting.CRACK_STEPS`, the walk test's rule): a
