@@ -485,20 +485,13 @@ def walls_met(caster: RayCaster, hits: Hits, agent: AgentShape, reach: float) ->
     flight steeper than the knee over the clearance (0.30 m risers on 0.30 m treads) meets the riser two steps up,
     which stopped no agent (docs/sampling.md, "Steep flights and ledge tops"). A wall, a steep slope, a thin fence
     or a block over the climb, whatever it stands on, stays a wall; so does a riser onto a slot of a grating (no
-    crack rule here). A triangle rising more than the climb over the hit is a wall without a ray (a wall's face;
-    where a face's triangle is taller than the riser, as a stringer's, the hit reads as a wall, as before the rule).
-    Up to two downward rays a steep hit within ``reach`` on a triangle no taller than that.
+    crack rule here). Up to two downward rays a steep hit within ``reach``.
     """
     wall = (hits.distance < reach) & ~caster.walkable_faces(hits.face, agent.max_slope_deg)
     rows = np.flatnonzero(wall)
-    at = hits.origins[rows] + hits.distance[rows, None] * hits.unit[rows]
-    # A triangle whose highest corner stands more than the climb over the hit rises past any top a riser could
-    # have there: a wall, without a ray (nearly every wall; a riser's triangles end at its top).
-    low = caster.triangles[hits.face[rows], :, 1].max(axis=1) <= at[:, 1] + agent.max_climb + EPSILON
-    rows, at = rows[low], at[low]
     if len(rows) == 0:
         return wall
-    unit = hits.unit[rows]
+    at, unit = hits.points[rows], hits.unit[rows]
     front = caster.first_hits(at - EPSILON * unit, -UP)
     low = (front.distance <= agent.max_climb) & caster.walkable_faces(front.face, agent.max_slope_deg)
     # The top ray starts EPSILON over the climb, so that a riser of exactly the climb is met from above.
