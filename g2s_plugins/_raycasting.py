@@ -53,6 +53,10 @@ HEIGHT_TOLERANCE = 0.01
 GROUND_MARGIN = 0.1
 """Metres the ground may lie below the straight line between two points, on top of the agent's climb."""
 
+RISE_TOLERANCE = 1e-6
+"""Metres a rise between neighbouring ground probes may pass the agent's step or slope over their distance
+(:meth:`AgentShape.max_rise`): the walk test's (``src/walks_module.cpp``) and the sampling builder's ledge probes'."""
+
 MAX_OCCUPANCY_CELLS = 1 << 25
 """Cells (bytes) at most in a :class:`BoxOccupancy` grid; a larger level gets larger cells."""
 

@@ -673,25 +673,32 @@ def test_clearance_disk_may_reach_across_to_the_neighbouring_triangle():
 
 
 def _agent_fits_with_every_ray(caster: RayCaster, points: np.ndarray, agent: AgentShape, clearance: float) -> np.ndarray:
-    """agent_fits without any broad phase: 24 wall rays and 16 ledge rays per point (and 2 to 8 more for each ledge
-    probe that finds no ground: the crack rule, 2 to 4 a side)."""
+    """agent_fits without any broad phase: 24 wall rays (up to two downward rays more for each steep face they meet,
+    the riser rule) and 24 ledge rays per point (two probes a direction and an upward ray over the outer one; 2 to 8 more for each ledge probe that finds no ground: the crack rule, 2 to 4 a
+    side)."""
     ok = head_room(caster, points, agent)
     levels = sorted({round(min(agent.max_climb + GROUND_MARGIN, agent.height - EPSILON), 6),
                      round(0.5 * agent.height, 6), round(agent.height - 5 * EPSILON, 6)})
     for level in levels:
         for direction in COMPASS:
             hits = caster.first_hits(points + level * UP, direction)
-            ok &= ~((hits.distance < clearance) & ~caster.walkable_faces(hits.face, agent.max_slope_deg))
-    reach = float(agent.max_rise(clearance)) + GROUND_MARGIN
-    probe = (points[:, None, :] + clearance * COMPASS[None, :, :]).reshape(-1, 3)
-    down = caster.first_hits(probe + reach * UP, -UP)
+            ok &= ~sampling.walls_met(caster, hits, agent, clearance)  # a steep face but a riser within the climb
+    step = clearance / 2.0  # two probes a direction, half the clearance apart; the point itself the first
+    reach = 2.0 * float(agent.max_rise(step)) + GROUND_MARGIN
     walkable = lambda faces: caster.walkable_faces(faces, agent.max_slope_deg)  # noqa: E731
-    ground = (down.distance <= 2.0 * reach) & walkable(down.face)
-    distance = np.where(ground, down.distance, 0.0)
-    missing = np.flatnonzero(~ground)  # a probe over a crack stands on the ground beside it
-    crack, beside = ground_across_crack(caster, probe[missing] + reach * UP, -UP, crack_sides(agent), 2.0 * reach, walkable,
-                                        CRACK_STEPS)
-    ground[missing[crack]], distance[missing[crack]] = True, beside[crack]
+    heights = [np.zeros(len(points) * len(COMPASS))]
+    ground = np.ones(len(points) * len(COMPASS), dtype=bool)
+    for j in (1, 2):
+        probe = (points[:, None, :] + j * step * COMPASS[None, :, :]).reshape(-1, 3)
+        down = caster.first_hits(probe + reach * UP, -UP)
+        found = (down.distance <= 2.0 * reach) & walkable(down.face)
+        distance = np.where(found, down.distance, 0.0)
+        missing = np.flatnonzero(~found)  # a probe over a crack stands on the ground beside it
+        crack, beside = ground_across_crack(caster, probe[missing] + reach * UP, -UP, crack_sides(agent), 2.0 * reach,
+                                            walkable, CRACK_STEPS)
+        found[missing[crack]], distance[missing[crack]] = True, beside[crack]
+        ground &= found & (np.abs(reach - distance - heights[-1]) <= agent.max_rise(step) + 1e-6)
+        heights.append(reach - distance)
     ground &= clear_above(caster, probe + reach * UP, agent.height - distance)
     return ok & ground.reshape(len(points), len(COMPASS)).all(axis=1)
 

@@ -14,10 +14,12 @@ wanted. No Recast is involved: ``context.navmesh`` stays ``None``.
 3. *Agent checks*, batched upward/horizontal/downward rays per candidate:
    head room (nothing within the agent height above it); clearance (no wall
    within ``clearance`` metres, horizontal rays at knee, waist and head
-   height); no ledge within ``clearance`` (ground found at that distance in 8
-   directions, within a step or the max slope, with head room; a probe over a
-   crack, such as a grating's slot, stands on the ground beside it, the walk
-   test's crack rule). This erodes
+   height; a riser the agent steps up is no wall, :func:`walls_met`); no
+   ledge within ``clearance`` (ground found at half that distance and at it
+   in 8 directions, rising or falling between neighbouring probes by a step
+   or the max slope at most, with head room; a probe over a crack, such as
+   a grating's slot, stands on the ground beside it, the walk test's crack
+   rule). This erodes
    the walkable surface by ``clearance`` as Recast erodes it by the radius.
    Rays whose answer the geometry near a candidate already gives are not
    cast (:class:`_Surroundings`); the answers are the same. The wall and
@@ -144,6 +146,7 @@ from g2s_plugins._raycasting import (
     crack_sides,
     ground_across_crack,
     head_room,
+    RISE_TOLERANCE,
     ray_margin,
     walks_in_batch,
 )
@@ -335,13 +338,16 @@ def agent_fits(
 ) -> np.ndarray:
     """(n,) bool: the agent can stand at each ground point.
 
-    Head room above the point; if ``clearance > 0``, no steep geometry within
+    Head room above the point; if ``clearance > 0``, no wall within
     ``clearance`` horizontally at knee (max climb + margin), waist (half
-    height) and head (height - margin) levels, and in 8 directions at
-    ``clearance`` metres walkable ground within a step (or the max slope)
-    of the point, with head room of its own. A ledge probe that finds none
-    stands on the ground within one crack step on both sides of it (each side
-    tried apart at half a step and a step), along x, else along z
+    height) and head (height - margin) levels (a steep face but a riser the
+    agent steps up, :func:`walls_met`), and in 8 directions at half the
+    clearance and at it (``LEDGE_PROBES``) walkable ground rising or falling
+    from the probe before (the point itself the first) by a step or the max
+    slope over their distance at most, with head room over the outer one. A
+    ledge probe that finds none stands on the ground within one crack step
+    on both sides of it (each side tried apart at half a step and a step),
+    along x, else along z
     (:func:`~g2s_plugins._raycasting.ground_across_crack` with
     :func:`~g2s_plugins._raycasting.crack_sides` and
     :data:`~g2s_plugins._raycasting.CRACK_STEPS`, the walk test's rule): a
@@ -394,13 +400,14 @@ def agent_fits(
         for level in levels:
             for direction in COMPASS:
                 hits = cast.first_hits(points[near] + level * UP, direction)
-                wall = (hits.distance < clearance) & ~cast.walkable_faces(hits.face, agent.max_slope_deg)
+                met = walls_met(cast, hits, agent, clearance if wall_distance is None else wall_reach(clearance))
+                wall = met & (hits.distance < clearance)
                 why[near[wall]] = REJECTED_BY.index("wall")
                 if wall_distance is not None:
-                    rows, length, _ = _steep_offsets(cast, hits, agent, clearance)
-                    stays = ~wall[rows]
-                    kept = near[rows[stays]]
-                    wall_distance[kept] = np.minimum(wall_distance[kept], length[stays])
+                    rows = np.flatnonzero(met & ~wall)
+                    length, _ = _wall_offsets(cast, hits, rows)
+                    kept = near[rows]
+                    wall_distance[kept] = np.minimum(wall_distance[kept], length)
                 near = near[~wall]
         clear[near] = True
 
@@ -432,24 +439,27 @@ def agent_fits(
         return caster.walkable_faces(faces, agent.max_slope_deg)
 
     def ledges(cast: RayCaster, rows: np.ndarray) -> None:
-        probe = (points[rows][:, None, :] + clearance * COMPASS[None, :, :]).reshape(-1, 3)
-        down = cast.first_hits(probe + reach * UP, -UP)
-        ground = ((down.distance <= 2.0 * reach) & walkable(down.face)).reshape(len(rows), len(COMPASS))
-        distance = np.where(ground, down.distance.reshape(ground.shape), 0.0)
-        origins = (probe + reach * UP).reshape(len(rows), len(COMPASS), 3)
-        # A probe over a crack (a grating's slot) stands on the ground beside it, as in the walk test; direction
-        # by direction, only for the points no earlier probe has put out (one probe without ground is enough).
         kept = np.ones(len(rows), dtype=bool)
-        for k in range(len(COMPASS)):
-            missing = np.flatnonzero(kept & ~ground[:, k])
-            crack, beside = ground_across_crack(cast, origins[missing, k], -UP, crack_sides(agent), 2.0 * reach,
-                                                walkable, CRACK_STEPS)
-            ground[missing[crack], k] = True
-            distance[missing[crack], k] = beside[crack]
-            kept[missing[~crack]] = False
-        # Head room over the landing point, from the probe's own origin (see walks_in_batch).
-        tested = ground & kept[:, None]
-        ground[tested] = clear_above(cast, origins[tested], agent.height - distance[tested])
+        ground = np.ones((len(rows), len(COMPASS)), dtype=bool)
+        distance = np.full((len(rows), len(COMPASS), LEDGE_PROBES + 1), reach)  # the point itself lies reach down
+        for j in range(1, LEDGE_PROBES + 1):
+            origins = points[rows][:, None, :] + j * around.step * COMPASS[None, :, :] + reach * UP
+            down = cast.first_hits(origins.reshape(-1, 3), -UP)
+            found = ((down.distance <= 2.0 * reach) & walkable(down.face)).reshape(ground.shape)
+            distance[:, :, j] = np.where(found, down.distance.reshape(ground.shape), 0.0)
+            # A probe over a crack (a grating's slot) stands on the ground beside it, as in the walk test; direction
+            # by direction, only for the points no earlier probe has put out (one probe without ground is enough).
+            for k in range(len(COMPASS)):
+                missing = np.flatnonzero(kept & ~found[:, k])
+                crack, beside = ground_across_crack(cast, origins[missing, k], -UP, crack_sides(agent), 2.0 * reach,
+                                                    walkable, CRACK_STEPS)
+                distance[missing[crack], k, j] = beside[crack]
+                kept[missing[~crack]] = False
+        ground[~kept] = False
+        # Between neighbouring probes the ground rises or falls by the walk test's step or slope at most.
+        ground &= np.abs(np.diff(distance, axis=2)).max(axis=2) <= around.rise + RISE_TOLERANCE
+        # Head room over the outer landing point, from that probe's own origin (see walks_in_batch).
+        ground[ground] = clear_above(cast, origins[ground], agent.height - distance[:, :, -1][ground])
         ok[rows] = ground.all(axis=1)  # a probe that put its point out kept no ground
         why[rows[~ok[rows]]] = REJECTED_BY.index("ledge")
 
@@ -461,6 +471,41 @@ def wall_levels(agent: AgentShape) -> list[float]:
     """Heights (m over a ground point, ascending) of :func:`agent_fits`' horizontal wall rays: knee and head (the
     agent's body, :attr:`AgentShape.body`) and waist (half the height)."""
     return sorted({round(level, 6) for level in (*agent.body, 0.5 * agent.height)})
+
+
+def walls_met(caster: RayCaster, hits: Hits, agent: AgentShape, reach: float) -> np.ndarray:
+    """(n,) bool: each level ray of ``hits`` (a wall ray, :func:`wall_levels`) met a wall within ``reach`` metres: a
+    triangle steeper than the max slope that is not a riser the agent steps up.
+
+    A riser: the ground in front of the face (a downward ray from ``EPSILON`` back along the ray from the hit) lies
+    within the climb under the hit, and the face's top (a downward ray ``EPSILON`` past the hit, from just over the
+    climb over that ground) is walkable ground no lower than the hit and no higher than the climb over that ground: between those two probes the ground rises by a step at
+    most, the walk test's rule (:func:`~g2s_plugins._raycasting.walks_in_batch`), so the agent walking along the ray
+    steps onto it (Recast erodes the walkable area only at a neighbour more than a step higher). A knee-high ray on a
+    flight steeper than the knee over the clearance (0.30 m risers on 0.30 m treads) meets the riser two steps up,
+    which stopped no agent (docs/sampling.md, "Steep flights and ledge tops"). A wall, a steep slope, a thin fence
+    or a block over the climb, whatever it stands on, stays a wall; so does a riser onto a slot of a grating (no
+    crack rule here). Up to two downward rays a steep hit within ``reach``.
+    """
+    wall = (hits.distance < reach) & ~caster.walkable_faces(hits.face, agent.max_slope_deg)
+    rows = np.flatnonzero(wall)
+    if len(rows) == 0:
+        return wall
+    at, unit = hits.points[rows], hits.unit[rows]
+    front = caster.first_hits(at - EPSILON * unit, -UP)
+    low = (front.distance <= agent.max_climb) & caster.walkable_faces(front.face, agent.max_slope_deg)
+    # The top ray starts EPSILON over the climb, so that a riser of exactly the climb is met from above.
+    rows, at, unit, lift = rows[low], at[low], unit[low], agent.max_climb - front.distance[low] + EPSILON
+    top = caster.first_hits(at + EPSILON * unit + lift[:, None] * UP, -UP)
+    step = (top.distance >= EPSILON - RISE_TOLERANCE) & (top.distance <= lift + EPSILON)
+    wall[rows] = ~(step & caster.walkable_faces(top.face, agent.max_slope_deg))
+    return wall
+
+
+def wall_reach(clearance: float) -> float:
+    """Metres: how far a compass ray reads walls for :func:`nearest_wall`, ``clearance`` / cos 22.5 degrees (a wall
+    between two compass directions is that far along them when it is ``clearance`` away)."""
+    return clearance / math.cos(math.pi / len(COMPASS))
 
 
 REJECTED_BY = ("fits", "head room", "wall", "ledge")
@@ -520,6 +565,15 @@ MOVE_ROUNDS = 3
 """Moves at most per stranded candidate (:func:`moved_into_passages`): one off a straight wall, one per wall it
 meets in a corner."""
 
+LEDGE_PROBES = 2
+"""Ground probes along each of :func:`agent_fits`' 8 ledge directions, evenly spaced out to the clearance, between
+which (the point itself the first) the ground may rise or fall by the walk test's step or slope at most: half the
+clearance apart (0.25 m for the presets' agent, the walk test's probe step), a flight's risers under the climb pass one
+at a time and a block over it within the clearance (a bench, a bunk, a shelf's top narrower than the agent) does not.
+One probe at the clearance alone read ground within max(climb, slope) of the point: a 45-degree flight of 0.30 m
+treads put two risers, 0.6 m, within 0.5 m of every point, and a bench 0.45 m high passed (docs/sampling.md,
+"Stairs and narrow ledge tops")."""
+
 GROUND_DIRECTIONS = 32
 """Level directions in which :func:`ledge_room` looks for a ledge and an added point needs ground at the clearance
 (:func:`_fits_clear`): a straight ledge is 360 / 64 degrees or less off one of them, so a band between ledges
@@ -559,9 +613,11 @@ def nearest_wall(caster: RayCaster, points: np.ndarray, agent: AgentShape, clear
     away = np.zeros((len(points), 3))
     for level in wall_levels(agent):
         for direction in COMPASS:
-            wall, length, level_offset = _steep_offsets(caster, caster.first_hits(points + level * UP, direction), agent, clearance)
+            hits = caster.first_hits(points + level * UP, direction)
+            wall = np.flatnonzero(walls_met(caster, hits, agent, wall_reach(clearance)))
             if len(wall) == 0:
                 continue
+            length, level_offset = _wall_offsets(caster, hits, wall)
             nearer = length < distance[wall]
             rows = wall[nearer]
             distance[rows] = length[nearer]
@@ -569,15 +625,13 @@ def nearest_wall(caster: RayCaster, points: np.ndarray, agent: AgentShape, clear
     return distance, away
 
 
-def _steep_offsets(caster: RayCaster, hits: Hits, agent: AgentShape, clearance: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """``(rows, length, offset)`` of the level rays ``hits`` that meet a steep triangle within ``clearance`` / cos
-    22.5 degrees (:func:`nearest_wall`'s reach): their (k,) indices, (k,) the level distance (m) from that triangle's
-    nearest point (``trimesh.triangles.closest_point``) to the ray's origin and (k, 3) the level offset itself."""
-    reach = clearance / math.cos(math.pi / len(COMPASS))
-    rows = np.flatnonzero((hits.distance < reach) & ~caster.walkable_faces(hits.face, agent.max_slope_deg))
+def _wall_offsets(caster: RayCaster, hits: Hits, rows: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``(length, offset)`` of the level rays ``hits[rows]``, each of which met a wall (:func:`walls_met`): (k,) the
+    level distance (m) from that triangle's nearest point (``trimesh.triangles.closest_point``) to the ray's origin and
+    (k, 3) the level offset itself."""
     origins = hits.origins[rows]
     offset = (origins - trimesh.triangles.closest_point(caster.triangles[hits.face[rows]], origins)) * [1.0, 0.0, 1.0]
-    return rows, np.linalg.norm(offset, axis=1), offset
+    return np.linalg.norm(offset, axis=1), offset
 
 
 def ledge_room(caster: RayCaster, points: np.ndarray, agent: AgentShape, clearance: float) -> np.ndarray:
@@ -782,8 +836,14 @@ class _Surroundings:
     def __init__(self, caster: RayCaster, agent: AgentShape, clearance: float) -> None:
         corners = caster.triangles
         self.agent, self.clearance = agent, clearance
-        self.reach = float(agent.max_rise(clearance)) + GROUND_MARGIN
-        """Metres above the probes the ledge rays start from (a step or the max slope, plus the ground margin)."""
+        self.step = clearance / LEDGE_PROBES
+        """Metres between neighbouring ledge probes (the point itself the first)."""
+        self.rise = float(agent.max_rise(self.step))
+        """Metres the ground may rise or fall between neighbouring ledge probes: the walk test's rule (a step or the
+        max slope over their distance)."""
+        self.reach = LEDGE_PROBES * self.rise + GROUND_MARGIN
+        """Metres above the point's height the ledge rays start from: over the outermost probe's highest ground, plus
+        the ground margin."""
         self.margin = ray_margin(caster, clearance + self.reach + agent.height)
         """Metres (:func:`~g2s_plugins._raycasting.ray_margin` over the highest ray start)."""
         if self.margin >= self.reach:  # a level hundreds of kilometres across: no ray could tell a step from a floor
@@ -795,8 +855,9 @@ class _Surroundings:
         walkable = caster.walkable_faces(np.arange(len(corners)), agent.max_slope_deg)
         cell = max(clearance, 0.25)
         self.steep = BoxOccupancy(corners[~walkable], widen, cell)
-        # Cells half as high as the ledge rays start above a floor (before any growing): its own cell seldom reaches there.
-        self.walkable = BoxOccupancy(corners[walkable], widen, np.array([cell, min(cell, 0.5 * (self.reach - self.margin)), cell]))
+        # Cells half as high as a rise between probes (before any growing): a flat floor's own cell never reaches the
+        # height plain_ground looks from.
+        self.walkable = BoxOccupancy(corners[walkable], widen, np.array([cell, min(cell, 0.5 * (self.rise - self.margin)), cell]))
 
     @classmethod
     def of(cls, caster: RayCaster, agent: AgentShape, clearance: float) -> _Surroundings:
@@ -816,21 +877,25 @@ class _Surroundings:
         True where the clearance disk around a point (grown by ``margin``)
         lies inside its own walkable triangle seen from above, or inside it
         and the triangles across the edges the disk crosses
-        (:meth:`~g2s_plugins._raycasting.FloorTriangles.disk_inside`); where those triangles stay within
-        ``reach`` less the ground margin of the point's height under the disk;
-        and where no steep triangle is near the point's column from that
-        lowest point to the agent's height above the ledge rays' start, and
-        no walkable one above that start. Then each downward ledge ray lands
-        on walkable ground within ``reach`` of the point's height (one of
-        those triangles at the latest, no steeper than the max slope) and
-        each upward one meets nothing within the agent's height: the rays'
+        (:meth:`~g2s_plugins._raycasting.FloorTriangles.disk_inside`), those
+        triangles within ``drop`` of the point's height under the disk;
+        where no steep triangle is near the point's column from that lowest
+        point to the agent's height above the ledge rays' start; and where no
+        walkable one is near it from ``rise - drop`` (less the margin) over
+        the point up to there. Then each downward ledge ray lands on one of
+        those triangles or on a walkable face under that height, so within
+        ``drop`` below and ``rise - drop`` above the point: two neighbouring
+        probes' grounds differ by less than ``rise`` (on those triangles, no
+        steeper than the max slope, by at most the slope over ``step``), and
+        each upward ray meets nothing within the agent's height: the rays'
         answer, without them.
         """
         top = self.reach + self.agent.height
         plain, drop = floor.disk_inside(points, faces, self.clearance + self.margin, self.clearance)
-        plain &= drop <= self.reach - GROUND_MARGIN - self.margin
+        low = self.rise - drop - self.margin
+        plain &= low > drop
         plain[plain] = self.steep.columns_free(points[plain], -drop[plain] - self.margin, top)
-        plain[plain] = self.walkable.columns_free(points[plain], self.reach, top)
+        plain[plain] = self.walkable.columns_free(points[plain], low[plain], top)
         return plain
 
 
