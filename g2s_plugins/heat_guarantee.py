@@ -268,8 +268,8 @@ class _Flows:
 def _flows(graph: nx.Graph, arrays: traffic.SurfaceArrays, sources: int, ties: traffic.Ties, scaling: traffic.Scaling,
            sampling: traffic.Sampling) -> _Flows:
     """:class:`_Flows` of ``graph`` (its ``arrays``), computed once per graph and setting and kept with its arrays:
-    the guarantee reads them in every round, and the percentiles' sort, the look-ups of the arrays and the pooled
-    reference's sum cost more than that round's Dijkstra search on the sampling route (a 20k-polygon level)."""
+    the guarantee reads them in every round, where the percentiles' sort and the look-ups of the arrays cost about as
+    much as that round's Dijkstra search on the sampling route (a 20k-polygon level, docs/performance.md)."""
     key = ("heat reading", sources, ties, scaling, sampling, traffic.EXACT_NODES)  # the size read exactly decides too
     if key not in arrays.derived:
         order = traffic.sampling_order(graph, sampling)
