@@ -115,9 +115,6 @@ class NavMesh(Protocol):
         """(S,) the largest vertical distance from the surface along each segment ``A[i] -> B[i]``,
         probed at most ``step`` apart, m; ``inf`` where a probe has no surface within ``reach``."""
 
-    def segment_surface_gap(self, a: Any, b: Any, step: float, reach: float) -> float:
-        """``segment_surface_gaps`` of the one segment ``a -> b``, as a float (no arrays in or out)."""
-
 
 @dataclass(frozen=True)
 class Opening:

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import functools
 import gc
 import math
 import time
@@ -20,7 +21,7 @@ from g2s_core.model import AnalyzerResult, RunContext, RunResult, StageStats, gr
 from g2s_core.plugin import PluginParams
 from g2s_core.registry import PluginInfo, Registry
 from g2s_core.rooted import components, root_forest
-from g2s_core.simplify import simplify_forest
+from g2s_core.simplify import forest_arrays, simplify_forest
 from g2s_core.stages import BY_KEY, PIPELINE
 
 ProgressCallback = Callable[[str], None]
@@ -195,9 +196,10 @@ def _roots_step(step: Step) -> bool | None:
 
 def _simplify_step(step: Step) -> bool | None:
     forest, structure, again = step.result.forest, None, step.registry.takes(step.planned[0].plugin, "simplified")
+    arrays = functools.cache(functools.partial(forest_arrays, forest))  # read once, if at all, for every round
     # a plugin that takes `simplified` is asked again with each structure until it keeps one (hookspecs.py)
     while (structure is None or again) and (predicate := step.call(forest=forest, simplified=structure)) is not None:
-        structure = simplify_forest(forest, predicate)
+        structure = simplify_forest(forest, predicate, arrays)
     _keep(step, "structure", structure)
 
 

@@ -88,15 +88,17 @@ WholeForest = Callable[[ForestArrays], tuple[np.ndarray, np.ndarray, np.ndarray]
 (A -> C, or the loop pass's loop edge), in the order added, and (k,) bool which of them are loop edges."""
 
 
-def simplify_forest(forest: nx.DiGraph, predicate: Predicate) -> nx.DiGraph:
+def simplify_forest(forest: nx.DiGraph, predicate: Predicate, arrays: Callable[[], ForestArrays] | None = None) -> nx.DiGraph:
     """A simplified copy of a rooted ``forest`` (see :mod:`g2s_core.rooted`).
 
     New edges A -> C get ``weight`` = Euclidean distance between their ``pos``.
-    ``depth`` is recomputed; ``graph["roots"]`` is kept.
+    ``depth`` is recomputed; ``graph["roots"]`` is kept. ``arrays``: :func:`forest_arrays` of ``forest``, when the
+    caller keeps them between calls (the pipeline reads a forest once for all the rounds that simplify it: the
+    whole-forest path's plugins then key what they derive from it on its identity); else read here.
     """
     whole_forest: WholeForest | None = getattr(predicate, "whole_forest", None)
     if whole_forest is not None:
-        return _from_whole_forest(forest, whole_forest)
+        return _from_whole_forest(forest, whole_forest, arrays() if arrays is not None else forest_arrays(forest))
     # a copy as DiGraph.copy() makes it (see graph_of), and each node's children and loop partners
     edges = [(a, b, dict(data)) for a, below in forest.adjacency() for b, data in below.items()]
     tree = graph_of(nx.DiGraph(**forest.graph), {node: dict(data) for node, data in forest.nodes(data=True)}, edges)
@@ -198,9 +200,9 @@ def forest_arrays(forest: nx.DiGraph) -> ForestArrays:
         data=data)
 
 
-def _from_whole_forest(forest: nx.DiGraph, whole_forest: WholeForest) -> nx.DiGraph:
-    """The structure :func:`simplify_forest` builds, from the answer of a predicate's whole-forest path."""
-    arrays = forest_arrays(forest)
+def _from_whole_forest(forest: nx.DiGraph, whole_forest: WholeForest, arrays: ForestArrays) -> nx.DiGraph:
+    """The structure :func:`simplify_forest` builds, from the answer of a predicate's whole-forest path on
+    ``arrays``, ``forest``'s."""
     kept, added, loop = whole_forest(arrays)
     ids, both = arrays.ids.tolist(), kept[added].all(axis=1)  # both: the added edges whose ends both stay
     keep, added, loop = dict(zip(ids, kept.tolist())), added[both], loop[both]

@@ -27,6 +27,7 @@ import math
 import operator
 from collections.abc import Callable, Hashable, Mapping, Sequence
 from dataclasses import dataclass
+from typing import TypeVar
 
 import networkx as nx
 import numpy as np
@@ -229,9 +230,34 @@ class RuleArrays:
 NativeRule = Callable[[ForestArrays, RuleArrays], tuple[np.ndarray, np.ndarray, np.ndarray]]
 """Algorithm 4 with the rule in native code: the whole-forest answer of :mod:`g2s_core.simplify`."""
 
+Derived = TypeVar("Derived")
+
+
+class ForestDerived:
+    """What a predicate derives from a forest's arrays (the collapse rule's :class:`RuleArrays`, ``mesh_los``'s
+    structure of its edges), kept while it is asked about the same forest: one whose arrays are the very arrays of
+    the last one, bar ``fixed``. The pipeline reads a forest once for all the rounds of the heat guarantee
+    (:func:`g2s_core.simplify.simplify_forest`), whose later rounds replace only ``fixed``
+    (:func:`g2s_plugins.heat_guarantee.keeping`), so they take what the first round derived, keyed by identity in
+    O(1); a forest read again (another caller) derives it again. What is derived must not depend on ``fixed``."""
+
+    def __init__(self) -> None:
+        self._key: tuple[object, ...] = ()
+        self._values: dict[str, object] = {}
+
+    def get(self, forest: ForestArrays, name: str, derive: Callable[[ForestArrays], Derived]) -> Derived:
+        """``derive(forest)``, derived once per forest under ``name``."""
+        key = (forest.ids, forest.parent, forest.depth, forest.loops, forest.roots, forest.points, forest.data)
+        if len(key) != len(self._key) or any(map(operator.is_not, key, self._key)):
+            self._key, self._values = key, {}  # the last forest's arrays alone are kept
+        if name not in self._values:
+            self._values[name] = derive(forest)
+        return self._values[name]  # type: ignore[return-value]
+
 
 def collapse_rule(
-    params: CollapseParams, line_of_sight: LineOfSight, graph: nx.Graph | None = None, native: NativeRule | None = None
+    params: CollapseParams, line_of_sight: LineOfSight, graph: nx.Graph | None = None, native: NativeRule | None = None,
+    derived: ForestDerived | None = None,
 ) -> Callable[[nx.DiGraph, int, int, int], bool]:
     """``P(tree, A, B, C)`` of the paper's Algorithm 5 with ``params``' tolerances: True when B may be removed.
 
@@ -268,7 +294,9 @@ def collapse_rule(
 
     With ``native``, the predicate carries ``whole_forest`` (see
     :mod:`g2s_core.simplify`): ``native`` given the forest and these tests as
-    :class:`RuleArrays`, which must answer as this predicate does.
+    :class:`RuleArrays`, which must answer as this predicate does; those arrays
+    are read once per forest and kept in ``derived`` (the caller's, when
+    ``native`` keeps what it derives from the forest there too).
 
     Raises:
         PluginError: ``max_traffic_step`` is set and there is no ``graph``.
@@ -313,35 +341,22 @@ def collapse_rule(
         return line_of_sight(tuple(map(float, node_a["pos"])), tuple(map(float, node_c["pos"])))
 
     if native is not None:
-        read: list[tuple[ForestArrays, RuleArrays]] = []  # the last forest asked about and its tests' arrays
+        kept = derived if derived is not None else ForestDerived()
 
         def rule_arrays(forest: ForestArrays) -> RuleArrays:
-            """The tests' arrays of ``forest``, read from its node dicts once: a forest of the same ids and the same
-            node dicts as the last one asked about (the heat guarantee's later rounds simplify the same forest
-            again, :func:`g2s_plugins.heat_guarantee.keeping`) takes the arrays read then (a 20k-polygon level's
-            forest of 75k nodes: about 0.1 s of CPU a round)."""
-            if read and _same_nodes(read[0][0], forest):
-                return read[0][1]
+            """The tests' arrays of ``forest``, read from its node dicts (a 20k-polygon level's forest of 75k nodes:
+            about 0.1 s of CPU; once per forest, :class:`ForestDerived`)."""
             data, n = forest.data, len(forest.data)
             normals = list(map(operator.itemgetter("normal"), data))
-            arrays = RuleArrays(
+            return RuleArrays(
                 on_navmesh=np.fromiter((bool(node.get("on_navmesh", False)) for node in data), bool, n),
                 rank=np.fromiter((ranks.get(node, math.nan) for node in forest.ids.tolist()), np.float64, n),
                 normals=np.fromiter(itertools.chain.from_iterable(normals), np.float64, 3 * n).reshape(n, 3),
                 normal_lengths=np.fromiter(itertools.starmap(math.hypot, normals), np.float64, n),
                 max_step=max_step, tolerance_deg=tolerance_deg, whole_chain=whole_chain)
-            read[:] = [(forest, arrays)]
-            return arrays
 
         def whole_forest(forest: ForestArrays) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-            return native(forest, rule_arrays(forest))
+            return native(forest, kept.get(forest, "rule arrays", rule_arrays))
 
         predicate.whole_forest = whole_forest  # type: ignore[attr-defined]
     return predicate
-
-
-def _same_nodes(before: ForestArrays, forest: ForestArrays) -> bool:
-    """Whether ``forest`` holds the nodes of ``before``: the same ids in the same order, each with the very dict it had
-    (the forest a simplification reads again, whose node attributes it only reads). O(n) in C loops."""
-    return (len(before.data) == len(forest.data) and np.array_equal(before.ids, forest.ids)
-            and all(map(operator.is_, before.data, forest.data)))

@@ -267,12 +267,17 @@ def placement_heat(graph: nx.Graph, structure_nodes: Iterable[Hashable], flow: n
     With (n,) ``areas`` (:func:`area_labels`) the percentiles are those within each connected area
     (:func:`within_area_percentiles`; a structure node stands only for nodes of its own area).
     """
-    structure = sorted(structure_nodes)
     if nearest is None:  # one search for both: the nodes each structure node stands for are those it is nearest to
-        nearest = _nearest_rows(graph, structure)
-    percentiles = traffic.percentile(flow) if areas is None else within_area_percentiles(flow, areas)
-    heat = traffic.gather(graph, structure, percentiles, mean=True, nearest=nearest)
-    return heat_map(graph, structure, heat, nearest)
+        nearest = _nearest_rows(graph, structure_nodes)
+    return nearest_mean(nearest, traffic.percentile(flow) if areas is None else within_area_percentiles(flow, areas))
+
+
+def nearest_mean(nearest: np.ndarray, values: np.ndarray) -> np.ndarray:
+    """(n,) each node given the mean of (n,) ``values`` over the nodes whose nearest structure node is its own (NaN
+    where none): :func:`~g2s_plugins.traffic.gather` with ``mean`` then :func:`heat_map`, to the bit, on arrays
+    alone. ``nearest``: (n,) each node's nearest structure node's row (-1: none), the second result of
+    :func:`~g2s_plugins.traffic.distance_to`. O(n)."""
+    return np.where(nearest >= 0, traffic.gathered(nearest, values, mean=True)[np.maximum(nearest, 0)], np.nan)
 
 
 def placement_rho(graph: nx.Graph, structure_nodes: Iterable[Hashable], flow: np.ndarray,

@@ -190,13 +190,13 @@ def restored(
         if not exact and not math.isnan(rho):  # NaN: every node's flow alike, nothing to confirm
             confirm(heat, shown, rho, min_rho, context, arrays, sources, ties, scaling, order)
         return None
-    removed = np.array(sorted(node for node in forest if node not in simplified), dtype=np.int64)
+    removed, removed_rows = _removed(arrays, forest, reading.rows)
     if areas is None:
-        own, given = traffic.percentile(shown), heat
+        own, given = reading.own, heat
     else:  # the flow's percentiles within each area, as rho within areas ranks it, and the heat drawn from them
         own, given = (evaluation.within_area_percentiles(shown, areas),
-                      evaluation.placement_heat(graph, simplified, shown, areas=areas))
-    difference = np.abs(own - given)[arrays.rows(removed)] if removed.size else np.zeros(0)
+                      evaluation.placement_heat(graph, simplified, shown, reading.nearest, areas))
+    difference = np.abs(own - given)[removed_rows]
     above = difference > FLOOR  # NaN (a node reaching no structure node) is not
     if not above.any():
         measure = ("walking flow" if exact else f"the mean walking flow of a spread and an independent sample of {sources} sources"
@@ -212,6 +212,20 @@ def restored(
     return set(simplified) | set(removed[above][ranked[:count]].tolist())
 
 
+def _removed(arrays: traffic.SurfaceArrays, forest: nx.DiGraph, structure_rows: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(k,) int64 the ids of the nodes of ``forest`` whose rows of ``arrays`` (the run's initial graph, which holds
+    every forest node) are not among the (s,) ``structure_rows``, ascending, and (k,) their rows. O(n log n) in
+    numpy's loops (a Python test of each forest node against the structure graph: 17 ms a round on a 20k-polygon
+    level's forest of 75k nodes)."""
+    ids = np.fromiter(forest, np.int64, forest.number_of_nodes())
+    rows = arrays.rows(ids.tolist())
+    kept = np.zeros(arrays.n, dtype=bool)
+    kept[structure_rows] = True
+    gone = np.flatnonzero(~kept[rows])
+    ascending = gone[np.argsort(ids[gone], kind="stable")]
+    return ids[ascending], rows[ascending]
+
+
 @dataclasses.dataclass(frozen=True)
 class HeatReading:
     """How a structure's heat map ranks the nodes of a run's initial graph, as the guarantee reads it.
@@ -220,7 +234,9 @@ class HeatReading:
     ``heat`` (n,) the heat map (:func:`~g2s_plugins.evaluation.placement_heat` of ``shown``); ``rho`` its Spearman
     rho against the reference (the exact flow when ``exact``, the mean of ``shown`` and :func:`second_sample` when
     ``pooled``, else ``shown`` itself); ``margin`` the rho over a target that reading must reach (:data:`MARGINS`,
-    :data:`POOLED_MARGINS`, 0 when exact); ``order`` the sample's :func:`~g2s_plugins.traffic.sampling_order`."""
+    :data:`POOLED_MARGINS`, 0 when exact); ``order`` the sample's :func:`~g2s_plugins.traffic.sampling_order`;
+    ``own`` (n,) :func:`~g2s_plugins.traffic.percentile` of ``shown``; ``rows`` (s,) the structure nodes' rows,
+    by ascending id; ``nearest`` (n,) each node's nearest structure node's row (-1: none)."""
 
     arrays: traffic.SurfaceArrays
     shown: np.ndarray
@@ -230,6 +246,44 @@ class HeatReading:
     exact: bool
     pooled: bool
     order: np.ndarray | None
+    own: np.ndarray
+    rows: np.ndarray
+    nearest: np.ndarray
+
+
+@dataclasses.dataclass(frozen=True)
+class _Flows:
+    """What :func:`heat_reading` reads of a graph's walking flows for one setting, the same for every structure:
+    :class:`HeatReading`'s fields of those names, and ``reference`` the flow rho is read against."""
+
+    order: np.ndarray | None
+    shown: np.ndarray
+    own: np.ndarray
+    reference: np.ndarray
+    exact: bool
+    pooled: bool
+    margin: float
+
+
+def _flows(graph: nx.Graph, arrays: traffic.SurfaceArrays, sources: int, ties: traffic.Ties, scaling: traffic.Scaling,
+           sampling: traffic.Sampling) -> _Flows:
+    """:class:`_Flows` of ``graph`` (its ``arrays``), computed once per graph and setting and kept with its arrays:
+    the guarantee reads them in every round, where the percentiles' sort and the look-ups of the arrays cost about as
+    much as that round's Dijkstra search on the sampling route (a 20k-polygon level, docs/performance.md)."""
+    key = ("heat reading", sources, ties, scaling, sampling, traffic.EXACT_NODES)  # the size read exactly decides too
+    if key not in arrays.derived:
+        order = traffic.sampling_order(graph, sampling)
+        shown = traffic.arrays_walking_flow(arrays, sources, ties=ties, scaling=scaling, order=order)  # the heat map's
+        exact = traffic.is_exact(arrays, sources, traffic.EXACT_NODES)
+        pooled = not exact and sampling == "spread"
+        if pooled:  # half the heat map's errors shared with its reference instead of all of them
+            reference = (shown + second_sample(arrays, sources, ties, scaling, order)) / 2.0
+        else:  # exact: the evaluation's reference, whose ties split whatever the heat map's do; else the heat map's
+            reference = traffic.arrays_walking_flow(arrays, sources, exact_up_to=traffic.EXACT_NODES,
+                                                    ties=evaluation.REFERENCE_TIES if exact else ties, scaling=scaling)
+        margin = 0.0 if exact else POOLED_MARGINS[scaling] if pooled else MARGINS[scaling]
+        arrays.derived[key] = _Flows(order, shown, traffic.percentile(shown), reference, exact, pooled, margin)
+    return arrays.derived[key]
 
 
 def heat_reading(
@@ -239,21 +293,16 @@ def heat_reading(
     """The guarantee's reading of the heat map of ``structure_nodes`` over ``graph`` (the run's initial graph), whose
     walking flow is of ``sources``, ``ties``, ``scaling`` and ``sampling``; with (n,) ``areas``
     (:func:`~g2s_plugins.evaluation.area_labels`) rho within each area. One multi-source Dijkstra and two sorts, once
-    the flows are computed (each once per graph)."""
+    the flows are computed (each once per graph, :func:`_flows`)."""
     arrays = traffic.surface_arrays(graph)
-    order = traffic.sampling_order(graph, sampling)
-    shown = traffic.arrays_walking_flow(arrays, sources, ties=ties, scaling=scaling, order=order)  # the heat map's flow
-    exact = traffic.is_exact(arrays, sources, traffic.EXACT_NODES)
-    pooled = not exact and sampling == "spread"
-    if pooled:  # half the heat map's errors shared with its reference instead of all of them
-        reference = (shown + second_sample(arrays, sources, ties, scaling, order)) / 2.0
-    else:  # exact: the evaluation's reference, whose ties split whatever the heat map's do; else the heat map's sample
-        reference = traffic.arrays_walking_flow(arrays, sources, exact_up_to=traffic.EXACT_NODES,
-                                                ties=evaluation.REFERENCE_TIES if exact else ties, scaling=scaling)
-    heat = evaluation.placement_heat(graph, structure_nodes, shown)
+    flows = _flows(graph, arrays, sources, ties, scaling, sampling)
+    rows = arrays.rows(sorted(structure_nodes))
+    nearest = traffic.distance_to(arrays, rows)[1]
+    heat = evaluation.nearest_mean(nearest, flows.own)  # evaluation.placement_heat of the flow shown
+    reference = flows.reference
     rho = evaluation.spearman(heat, reference) if areas is None else evaluation.within_area_rho(heat, reference, areas)
-    margin = 0.0 if exact else POOLED_MARGINS[scaling] if pooled else MARGINS[scaling]
-    return HeatReading(arrays, shown, heat, rho, margin, exact, pooled, order)
+    return HeatReading(arrays, flows.shown, heat, rho, flows.margin, flows.exact, flows.pooled, flows.order, flows.own,
+                       rows, nearest)
 
 
 def spurs(
@@ -289,8 +338,7 @@ def spurs(
     target = min_rho + reading.margin
     if not reading.rho < target + headroom:
         return []
-    arrays, paths = reading.arrays, []
-    own = traffic.percentile(reading.shown)
+    arrays, paths, own = reading.arrays, [], reading.own
     while reading.rho < target + headroom:
         rows = arrays.rows(sorted(nodes))
         _, predecessor, _ = csgraph.dijkstra(arrays.adjacency, directed=False, indices=rows, min_only=True,

@@ -301,11 +301,18 @@ def gather(
     structure = sorted(structure_nodes)
     if nearest is None:
         _, nearest = distance_to(arrays, arrays.rows(structure))
-    reached = nearest >= 0
-    totals = np.bincount(nearest[reached], weights=np.asarray(values, dtype=np.float64)[reached], minlength=arrays.n)
-    if mean:
-        totals /= np.maximum(np.bincount(nearest[reached], minlength=arrays.n), 1)
+    totals = gathered(nearest, values, mean)
     return {node: float(totals[arrays.index[node]]) for node in structure}
+
+
+def gathered(nearest: np.ndarray, values: np.ndarray, mean: bool = False) -> np.ndarray:
+    """(n,) :func:`gather`'s sums (or means) by row: each row's sum of (n,) ``values`` over the nodes whose nearest
+    structure node's row it is, in (n,) ``nearest`` (-1: none; 0 for a row no node is nearest to). O(n)."""
+    reached = nearest >= 0
+    totals = np.bincount(nearest[reached], weights=np.asarray(values, dtype=np.float64)[reached], minlength=len(nearest))
+    if mean:
+        totals /= np.maximum(np.bincount(nearest[reached], minlength=len(nearest)), 1)
+    return totals
 
 
 def percentile(values: np.ndarray) -> np.ndarray:

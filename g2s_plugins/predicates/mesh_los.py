@@ -78,7 +78,7 @@ from g2s_core.model import RunContext
 from g2s_core.plugin import hookimpl
 from g2s_core.simplify import ForestArrays
 from g2s_plugins._raycasting import GROUND_MARGIN, AgentShape, OpenFloors, RayCaster, walks_in_batch
-from g2s_plugins._surface import CollapseParams, RuleArrays, collapse_rule
+from g2s_plugins._surface import CollapseParams, ForestDerived, RuleArrays, collapse_rule
 from g2s_plugins.graph_builders.sampling import DISK_SHARE
 from g2s_plugins.heat_guarantee import begin_ahead, guaranteed
 from g2s_plugins.recast.navmesh import NavMesh, collapse_forest_seeing
@@ -224,14 +224,10 @@ def mesh_los_predicate(
         structure, a, c = asking
         return walks(structure, [(a, c)])[0]
 
-    built: list[tuple[ForestArrays, list[int], _Structure]] = []  # the last forest asked about, as ``native`` reads it
+    derived = ForestDerived()  # what the rule and ``native`` derive from the last forest asked about
 
     def forest_structure(forest: ForestArrays) -> tuple[list[int], _Structure]:
-        """``forest``'s ids and the :class:`_Structure` of its edges, built once: a forest of the same ids, edges and
-        positions as the last one (the heat guarantee's later rounds) takes the one built then."""
-        if built and all(np.array_equal(getattr(built[0][0], name), getattr(forest, name))
-                         for name in ("ids", "parent", "loops", "points")):
-            return built[0][1], built[0][2]
+        """``forest``'s ids and the :class:`_Structure` of its edges (once per forest, :class:`ForestDerived`)."""
         ids = forest.ids.tolist()
         successors: dict[int, list[int]] = {node: [] for node in ids}
         for node, row in zip(ids, forest.parent.tolist()):
@@ -239,19 +235,17 @@ def mesh_los_predicate(
                 successors[ids[row]].append(node)
         for u, v in forest.loops.tolist():
             successors[ids[u]].append(ids[v])
-        structure = _Structure(ids, successors.__getitem__, dict(zip(ids, map(tuple, forest.points.tolist()))).__getitem__)
-        built[:] = [(forest, ids, structure)]
-        return ids, structure
+        return ids, _Structure(ids, successors.__getitem__, dict(zip(ids, map(tuple, forest.points.tolist()))).__getitem__)
 
     def native(forest: ForestArrays, rule_arrays: RuleArrays) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        ids, structure = forest_structure(forest)
+        ids, structure = derived.get(forest, "structure", forest_structure)
 
         def sees(pairs: np.ndarray) -> np.ndarray:  # (k,2) rows of the forest -> (k,) bool
             return np.array(walks(structure, [(ids[a], ids[c]) for a, c in pairs.tolist()]), dtype=bool)
 
         return collapse_forest_seeing(forest, rule_arrays, sees, memo)
 
-    rule = collapse_rule(params, line_of_sight, graph, native)
+    rule = collapse_rule(params, line_of_sight, graph, native, derived)
 
     def predicate(tree: nx.DiGraph, a: int, b: int, c: int) -> bool:
         nonlocal asking
