@@ -309,8 +309,8 @@ def body_winding(mesh: trimesh.Trimesh) -> np.ndarray:
     inside), 0 on an open body or one not wound consistently. A body is the faces joined by shared edges, a closed
     consistently wound one each edge of which two of its faces share, once in each direction; coincident
     vertices are joined first (exact duplicates: a file's split vertices at seams). O(m log m): sorts of the 3m
-    edges and of the vertices. The core's cleaning step (:func:`g2s_core.mesh.flip_inside_out_bodies`, trimesh's
-    ``fix_inversion``) flips such bodies; this reads only their sign, at about a fifth of its CPU (0.19 against
+    edges and of the vertices. The core's cleaning step (:func:`g2s_core.mesh.flip_inside_out_bodies`) flips those
+    wound against their nesting; this reads only their sign, at about a fifth of its CPU (0.19 against
     0.94 s on a 42k-face generated dungeon, 6 December 2026), since the warning reads it on every run it fires.
     """
     faces = np.unique(np.asarray(mesh.vertices), axis=0, return_inverse=True)[1].reshape(-1)[np.asarray(mesh.faces)]
