@@ -32,9 +32,8 @@ from g2s_core.errors import G2SError, PluginFailure, out_of_memory
 from g2s_core.mesh import SAMPLE_PREFIX, SUPPORTED_SUFFIXES, text_of_name
 from g2s_core.model import RaisedWarning, RunResult
 from g2s_core.outputs import DEFAULT_FORMATS, check_outdir, chosen_formats, writers
-from g2s_core.registry import installed, plugin_parameters
+from g2s_core.registry import installed
 from g2s_core.result_folder import interrupted, interrupts_held, stop_if_interrupted
-from g2s_core.stages import STAGES
 from g2s_core.lazy import lazy_module
 from g2s_core.messages import one_line
 from g2s_core.summary import final_graph, metric_lines, outcome, roots_of, stage_rows
@@ -132,7 +131,7 @@ def _parser() -> tuple[argparse.ArgumentParser, dict[str, Callable[[argparse.Nam
 
     run = commands.add_parser("run", parents=[common], help="run a config (a preset or a YAML file) on a mesh",
                               description="Run a config (a preset or a YAML file) on a mesh.", formatter_class=argparse.RawDescriptionHelpFormatter,
-                              epilog=f"{textwrap.fill(EXIT_CODES, 80)}\n\npresets:\n" + "\n".join(_columns(list(presets().items()), width=80, indent=2)))
+                              epilog=f"{textwrap.fill(EXIT_CODES, 80)}\n\npresets:\n" + "\n".join(columns(list(presets().items()), width=80, indent=2)))
     run.add_argument("config", type=named("a preset name or a config file"), help="preset name (see `g2s presets`) or YAML config file")
     run.add_argument("mesh", type=named(f"a mesh file or {SAMPLE_PREFIX}NAME"), help=f"mesh file (.obj .glb .gltf .ply .stl .off) or {SAMPLE_PREFIX}NAME[?param=value&...] "
                      "for a level from an installed level generator (see `g2s plugins --stage levels`)")
@@ -141,9 +140,6 @@ def _parser() -> tuple[argparse.ArgumentParser, dict[str, Callable[[argparse.Nam
 
     commands.add_parser("presets", parents=[common], help="list the preset configs and what each is for",
                         description="List the preset configs and what each is for.", epilog=EXIT_CODES)
-    plugins = commands.add_parser("plugins", parents=[common], help="list installed plugins and their parameters, and "
-                                  "broken ones", description="List installed plugins and their parameters, and broken ones.", epilog=EXIT_CODES)
-    plugins.add_argument("--stage", choices=[stage.key for stage in STAGES], help="only this stage")
 
     registry, plugged = installed(), {}
     for info in registry.plugins("commands"):
@@ -196,7 +192,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     errors = Output(stderr=True)  # no emoji: `level:fire:.obj: no such mesh file` named the file with a flame
     if not args.verbose:  # a library's logged warning (matplotlib's, under a HOME it cannot write) added lines to stderr
         logging.getLogger().addHandler(_NO_LOG)
-    own = {"run": lambda a: run_command(a, errors), "plugins": _plugins, "presets": lambda _: _presets()}
+    own = {"run": lambda a: run_command(a, errors), "presets": lambda _: _presets()}
     with warnings.catch_warnings(), interrupts_held(hold=False):  # numpy's warnings (a 1e300 coordinate overflowing) would add lines to the one line of stderr
         warnings.simplefilter("default" if args.verbose else "ignore", RuntimeWarning)
         try:
@@ -311,33 +307,13 @@ def stage_table(result: RunResult, title: str = "") -> Table:
     return table
 
 
-def _plugins(args: argparse.Namespace) -> int:
-    """Plugins under their stage's config key; parameters in two columns wrapped to the terminal."""
-    registry = installed()
-    console = Output()
-    lines = []
-    for stage in STAGES if args.stage is None else [s for s in STAGES if s.key == args.stage]:
-        lines.append(stage.key)
-        for info in registry.plugins(stage.key):
-            lines.append(f"  {info.name}  ({info.package})")
-            if info.summary:
-                lines.extend(_columns([("", info.summary)], console.width, indent=4))
-            lines.extend(_columns([(f"{name}:", f"{accepted}, default {default}. {description}") for name, accepted,
-                                   default, description in plugin_parameters(info)], console.width, indent=6))
-    console.print("\n".join(lines), markup=False, highlight=False, soft_wrap=True)
-    for broken in registry.broken(args.stage):
-        console.print(f"[bold red]broken[/bold red] {escape(f'{broken.entry_point}  ({broken.package})')}")  # '[/x]' in them
-        console.print(f"  {broken.target} failed to load: {broken.reason}", markup=False, highlight=False)
-    return 0
-
-
 def _presets() -> int:
     console = Output()
-    console.print("\n".join(_columns(list(presets().items()), console.width, 0)), markup=False, highlight=False, soft_wrap=True)
+    console.print("\n".join(columns(list(presets().items()), console.width, 0)), markup=False, highlight=False, soft_wrap=True)
     return 0
 
 
-def _columns(rows: Sequence[tuple[str, str]], width: int, indent: int) -> list[str]:
+def columns(rows: Sequence[tuple[str, str]], width: int, indent: int) -> list[str]:
     """``(term, text)`` rows as two columns, ``text`` wrapped to ``width`` under itself."""
     left = indent + max((len(term) + 2 for term, _ in rows if term), default=0)
     text_width = max(width - left, 30)

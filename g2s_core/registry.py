@@ -16,7 +16,7 @@ from __future__ import annotations
 import functools
 import importlib.metadata
 import threading
-from collections.abc import Callable, Iterable, Iterator
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 from typing import Any
 
@@ -25,7 +25,7 @@ from pydantic import ValidationError
 
 from g2s_core import hookspecs
 from g2s_core.errors import ConfigError, G2SError, OutOfMemory, PluginError, PluginFailure, out_of_memory
-from g2s_core.messages import describe_field, describe_validation_error, show
+from g2s_core.messages import describe_validation_error, show
 from g2s_core.plugin import PROJECT, PluginParams
 from g2s_core.stages import BY_HOOK, BY_KEY, STAGES, Stage
 
@@ -319,13 +319,6 @@ def _checked_items(info: PluginInfo, items: Iterator[Any], check: Callable[[Any]
             yield item
     finally:
         getattr(items, "close", lambda: None)()  # a generator's own cleanup (a pool's shutdown) runs now
-
-
-def plugin_parameters(info: PluginInfo) -> Iterable[tuple[str, str, str, str]]:
-    """``(name, accepted values, default, description)`` of each parameter, for help output."""
-    for name, field in info.params_model.model_fields.items():
-        default = "required" if field.is_required() else repr(field.get_default(call_default_factory=True))
-        yield name, describe_field(field), default, field.description or ""
 
 
 @functools.cache

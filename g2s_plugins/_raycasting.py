@@ -1436,30 +1436,6 @@ def _slices_meet_bands(triangles: np.ndarray, origin: np.ndarray, along: np.ndar
     return crossing & (enter < leave)
 
 
-def _slabs_meet_triangles(triangles: np.ndarray, origin: np.ndarray, along: np.ndarray, side: np.ndarray,
-                          heights: np.ndarray, inset: float) -> np.ndarray:
-    """(k,) bool: triangle ``triangles[i]`` ((k, 3, 3) corners, m) passes through the slab ``origin[i] + s along[i]
-    + t side[i] + h UP`` (s in (0, 1), t in (-1, 1), h from ``heights[i, 0]`` to ``heights[i, 1]`` (m); ``side``
-    (k, 3) horizontal and at right angles to ``along``'s plan), shrunk by ``inset`` (m) on every side: a box sheared
-    along a sloping walk.
-
-    In the frame (a, t, h) (metres along ``along``'s plan, along ``side``, and up from the line ``origin`` +
-    s ``along``), an affine image of the space, the slab is the box a in [0, plan length], h in ``heights``, |t| <=
-    ``|side|``. The part of the triangle in the prism a, h in range (any t) is a convex polygon whose corners, and so
-    the ends of its span along t, are among: the triangle's corners inside; its edges' crossings of the prism's
-    four faces; the crossings of the prism's four edges (lines along t) with the triangle, by barycentric
-    coordinates in the (a, h) plane (a triangle parallel to t has its span's ends on its edges). The triangle meets
-    the slab when that span reaches within ``|side|`` - ``inset`` of the middle. O(k), in the C++ extension
-    (``src/slabs_module.cpp``: a numpy formulation cost about 250 array operations a call, most of it per call, not
-    per pair; the extension gives its answers bit for bit).
-    """
-    k = len(triangles)
-    rows = (np.ascontiguousarray(np.asarray(values, dtype=np.float64).reshape(k, 3)) for values in (origin, along, side))
-    return _slabs.slabs_meet_triangles(
-        np.ascontiguousarray(triangles, dtype=np.float64).reshape(k, 3, 3), *rows,
-        np.ascontiguousarray(np.broadcast_to(np.asarray(heights, dtype=np.float64), (k, 2))), float(inset))
-
-
 @dataclass(frozen=True)
 class SteepFaces:
     """The triangles of a caster's mesh steeper than a max slope and a :class:`BoxGrid` of their 3-D boxes, for
@@ -1490,27 +1466,31 @@ class SteepFaces:
     @cached_property
     def slab_grid(self) -> _slabs.WallGrid:
         """The same triangles in the C++ extension's grid (:attr:`grid`'s origin and cell), for the body slab's
-        whole test in one call (:func:`walks_in_batch`); built on first use, O(E) for its E entries."""
+        whole test in one call (:func:`walks_in_batch`); built on first use, O(E) for its E entries.
+
+        Its ``meets(low, along, side, heights, inset)`` ((n, 3) m each, ``heights`` (n, 2) m) answers (n,) bool:
+        a triangle passes through the slab ``low[i] + s along[i] + t side[i] + h UP`` (s in (0, 1), t in (-1, 1),
+        h from ``heights[i, 0]`` to ``heights[i, 1]``; ``side`` horizontal and at right angles to ``along``'s
+        plan), shrunk by ``inset`` on every side: a box sheared along a sloping walk, the body of an agent above its
+        step, so that a bollard or a crate lower than the walk's lifted line is found too. The exact test per pair
+        and its geometry are ``src/slabs_module.cpp``'s."""
         return _slabs.WallGrid(np.ascontiguousarray(self.triangles, dtype=np.float64), np.ascontiguousarray(self.lo),
                                np.ascontiguousarray(self.hi), np.ascontiguousarray(self.grid.origin, dtype=np.float64),
                                float(self.grid.cell))
 
 
 def bands_meet_walls(caster: RayCaster, low: np.ndarray, along: np.ndarray, side: np.ndarray,
-                     max_slope_deg: float, inset: float = GRAZE_NUDGE,
-                     heights: np.ndarray | None = None) -> np.ndarray:
+                     max_slope_deg: float, inset: float = GRAZE_NUDGE) -> np.ndarray:
     """(n,) bool: a triangle of the caster's mesh steeper than ``max_slope_deg`` passes through the band ``low[i] +
     s along[i] + t side[i]`` (s in (0, 1), t in (-1, 1), shrunk by ``inset`` m on every side; ``side`` horizontal
     and at right angles to ``along``, all (n, 3) m): the strip a disk of radius ``|side|`` sweeps at the lifted
     segment's height, tested exactly, so that a post or a mullion standing wholly between two of
-    :func:`walks_in_batch`' lines is found however thin it is. With ``heights`` ((n, 2) or (2,): below and above,
-    m up from the line ``low`` + s ``along``) the band is the slab between those heights, the body of an agent above
-    its step, so that a bollard or a crate lower than ``low`` is found too. Walkable triangles are left out, as the
-    side lines leave them.
+    :func:`walks_in_batch`' lines is found however thin it is (the body's slab between two heights is
+    :attr:`SteepFaces.slab_grid`'s). Walkable triangles are left out, as the side lines leave them.
 
     Broad phase: the bands' boxes looked up in the steep triangles' 3-D :class:`BoxGrid`, built once per mesh and
     max slope (:meth:`RayCaster.steep_faces`), then the boxes of the pairs sharing a cell; narrow phase
-    :func:`_slices_meet_bands` or :func:`_slabs_meet_triangles`. Per call O(C log K + P) for the C cells the
+    :func:`_slices_meet_bands`. Per call O(C log K + P) for the C cells the
     bands' boxes cover, the K cells the steep triangles occupy and the P pairs sharing a cell, whatever the number
     of steep triangles (the first call of a max slope also builds the grid, O(E log E) for its E entries).
     """
@@ -1520,10 +1500,6 @@ def bands_meet_walls(caster: RayCaster, low: np.ndarray, along: np.ndarray, side
     if n == 0 or len(steep.triangles) == 0:
         return meets
     corners = np.stack([low - side, low + side, low + along + side, low + along - side], axis=1)
-    if heights is not None:
-        heights = np.broadcast_to(np.asarray(heights, dtype=np.float64), (n, 2))
-        corners = np.concatenate([corners + heights[:, 0, None, None] * UP, corners + heights[:, 1, None, None] * UP],
-                                 axis=1)
     band_lo, band_hi = corners.min(axis=1), corners.max(axis=1)
     walls, wall_lo, wall_hi = steep.triangles, steep.lo, steep.hi
     band, wall = steep.grid.pairs(band_lo, band_hi)
@@ -1532,10 +1508,7 @@ def bands_meet_walls(caster: RayCaster, low: np.ndarray, along: np.ndarray, side
     for axis in (0, 2, 1):
         near = (band_lo[band, axis] <= wall_hi[wall, axis]) & (wall_lo[wall, axis] <= band_hi[band, axis])
         band, wall = band[near], wall[near]
-    if heights is None:
-        hit = _slices_meet_bands(walls[wall], low[band], along[band], side[band], inset)
-    else:
-        hit = _slabs_meet_triangles(walls[wall], low[band], along[band], side[band], heights[band], inset)
+    hit = _slices_meet_bands(walls[wall], low[band], along[band], side[band], inset)
     meets[band[hit]] = True
     return meets
 
@@ -1564,7 +1537,8 @@ def walks_in_batch(
       max slope passes through the band between the side lines
       (:func:`bands_meet_walls`, exact; asked only where every other test
       passed). With ``body``, that band is the slab of the agent's body,
-      from above its step to its head (:attr:`AgentShape.body`), so that a
+      from above its step to its head (:attr:`AgentShape.body`;
+      :attr:`SteepFaces.slab_grid`), so that a
       bollard or a crate lower than the lifted segment, which the ground
       probes under the middle line miss, stops the walk too. The ends' own
       disks are the caller's to check;

@@ -225,7 +225,9 @@ def climbs(nodes: list[dict], agent: AgentConfig) -> bool:
 
 
 def inside_out_bodies(mesh: trimesh.Trimesh) -> int:
-    """How many closed bodies of ``mesh`` are wound inside out (negative signed volume).
+    """How many closed bodies of ``mesh`` are wound inside out: against their nesting
+    (:func:`g2s_core.mesh.flip_inside_out_bodies`: negative signed volume where no closed body holds them; a room in
+    a closed building is wound inward as it should be).
 
     Coincident vertices are merged first (on a copy), so that a body written
     with split vertices (an OBJ's per-face normals) is still one closed body.
@@ -236,10 +238,11 @@ def inside_out_bodies(mesh: trimesh.Trimesh) -> int:
 def hidden_floor_bodies(mesh: trimesh.Trimesh, agent: AgentConfig) -> int:
     """How many closed bodies of ``mesh`` are wound inside out *and* hide their floor that way.
 
-    A closed body of negative signed volume (:func:`inside_out_bodies`) is
-    either a solid wound inside out, whose upturned underside lies under its
-    own top, or a room modelled as a closed box seen from inside, whose floor
-    faces up into the room on purpose. Cast up from each of the body's faces
+    A closed body wound inside out (:func:`inside_out_bodies`; one that no
+    closed body holds has a negative signed volume) is either a solid wound
+    inside out, whose upturned underside lies under its own top, or a room
+    modelled as a closed box seen from inside, whose floor faces up into the
+    room on purpose. Cast up from each of the body's faces
     that face up (within ``agent.max_slope``), the first face of ``mesh`` above
     lies less than ``agent.height`` over the solid's underside (the agent cannot
     stand in a slab) and more over the room's floor (else it is no room). A body

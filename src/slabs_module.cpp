@@ -1,6 +1,6 @@
-// g2s_plugins._slabs: whether triangles pass through slabs, the exact (narrow-phase) test of
-// g2s_plugins._raycasting.bands_meet_walls with the agent's body (src/slabs_module.cpp; the Python function
-// _slabs_meet_triangles states the geometry).
+// g2s_plugins._slabs: whether triangles pass through slabs, the walk test's exact test of the agent's body
+// (g2s_plugins._raycasting.SteepFaces.slab_grid, asked by walks_in_batch): broad phase (WallGrid) and narrow phase
+// (slab_meets_triangle) in one call.
 //
 // Why C++: mesh_los's walk test asks it once per batch of walks, a few hundred (triangle, slab) pairs at a time,
 // about 79,000 times on the 100k-polygon level; in numpy each call ran about 250 array operations, whose cost per
@@ -38,8 +38,16 @@ struct Bounds {
     }
 };
 
-// One pair: triangle `corner` (3 corners x 3) against the slab origin + s along + t side + h UP (see
-// _slabs_meet_triangles), its floor and ceiling `heights` (2,), shrunk by `inset`.
+// One pair: whether triangle `corner` (3 corners x 3, m) passes through the slab origin + s along + t side + h UP
+// (s in (0, 1), t in (-1, 1), h from heights[0] to heights[1] (m); `side` horizontal and at right angles to
+// `along`'s plan), shrunk by `inset` (m) on every side: a box sheared along a sloping walk.
+// In the frame (a, t, h) (metres along `along`'s plan, along `side`, and up from the line origin + s along), an
+// affine image of the space, the slab is the box a in [0, plan length], h in `heights`, |t| <= |side|. The part of
+// the triangle in the prism a, h in range (any t) is a convex polygon whose corners, and so the ends of its span
+// along t, are among: the triangle's corners inside; its edges' crossings of the prism's four faces; the crossings
+// of the prism's four edges (lines along t) with the triangle, by barycentric coordinates in the (a, h) plane (a
+// triangle parallel to t has its span's ends on its edges). The triangle meets the slab when that span reaches
+// within |side| - inset of the middle. O(1).
 bool slab_meets_triangle(const double* corner, const double* origin, const double* along, const double* side,
                          const double* heights, double inset) {
     const double length = std::sqrt(along[0] * along[0] + along[2] * along[2]);
@@ -107,24 +115,13 @@ nb::ndarray<nb::numpy, bool, nb::ndim<1>> answers(size_t n, const Answer& answer
     return nb::ndarray<nb::numpy, bool, nb::ndim<1>>(out, {n}, owner);
 }
 
-nb::ndarray<nb::numpy, bool, nb::ndim<1>> slabs_meet_triangles(Corners triangles, Rows3 origin, Rows3 along,
-                                                               Rows3 side, Rows2 heights, double inset) {
-    const size_t k = triangles.shape(0);
-    if (origin.shape(0) != k || along.shape(0) != k || side.shape(0) != k || heights.shape(0) != k)
-        throw nb::value_error("slabs_meet_triangles: triangles (k, 3, 3), origin, along and side (k, 3), heights (k, 2)");
-    return answers(k, [&](size_t i) {
-        return slab_meets_triangle(triangles.data() + 9 * i, origin.data() + 3 * i, along.data() + 3 * i,
-                                   side.data() + 3 * i, heights.data() + 2 * i, inset);
-    });
-}
-
-// The steep triangles of a mesh binned in a 3-D grid of cubes (BoxGrid's origin and cell), for the whole of
-// bands_meet_walls with the body's slab in one call: each slab's box (its eight corners'), the triangles of the cells
+// The steep triangles of a mesh binned in a 3-D grid of cubes (BoxGrid's origin and cell), for the body's slab
+// test in one call: each slab's box (its eight corners'), the triangles of the cells
 // it covers whose boxes overlap it (each pair once: in the cell that is, along each axis, the later of the two
 // boxes' first cells), and the exact test above on those. Two closed boxes that overlap share a cell (a cell's index
-// is the floor of a monotone function of the coordinate), so the pairs tested are exactly the overlapping ones, as
-// bands_meet_walls' BoxGrid.pairs and box filter give them, and a slab's answer (whether any pair meets) is the
-// same. Built in O(E) for the E (triangle, cell) entries; a call O(C + P) for the C cells the slabs cover and the P
+// is the floor of a monotone function of the coordinate), so the pairs tested are exactly the overlapping ones (as
+// bands_meet_walls' BoxGrid.pairs and box filter find its bands'), and a slab's answer (whether any pair meets) is
+// that of every pair. Built in O(E) for the E (triangle, cell) entries; a call O(C + P) for the C cells the slabs cover and the P
 // (slab, triangle) entries sharing a cell.
 class WallGrid {
   public:
@@ -153,8 +150,8 @@ class WallGrid {
                         cells_[key(x, y, z)].push_back(static_cast<int64_t>(w));
     }
 
-    // (n,) bool: a triangle passes through slab i (slabs_meet_triangles' slab: low (n, 3), along, side, heights
-    // (n, 2), shrunk by inset), as bands_meet_walls answers with heights
+    // (n,) bool: a triangle passes through slab i (slab_meets_triangle's slab: low (n, 3), along, side, heights
+    // (n, 2), shrunk by inset)
     nb::ndarray<nb::numpy, bool, nb::ndim<1>> meets(Rows3 low, Rows3 along, Rows3 side, Rows2 heights, double inset) const {
         const size_t n = low.shape(0);
         if (along.shape(0) != n || side.shape(0) != n || heights.shape(0) != n)
@@ -174,7 +171,7 @@ class WallGrid {
     bool slab_meets_any(const double* low, const double* along, const double* side, const double* heights,
                         double inset) const {
         if (triangles_.empty()) return false;
-        // the slab's corners as bands_meet_walls stacks them: low -/+ side, low + along +/- side, each at both heights
+        // the slab's corners: low -/+ side, low + along +/- side, each at both heights
         double box_lo[3], box_hi[3];
         std::fill(box_lo, box_lo + 3, std::numeric_limits<double>::infinity());
         std::fill(box_hi, box_hi + 3, -std::numeric_limits<double>::infinity());
@@ -230,16 +227,10 @@ class WallGrid {
 
 NB_MODULE(_slabs, m) {
     m.doc() = "The body slab's exact test against triangles of g2s_plugins._raycasting (see src/slabs_module.cpp).";
-    m.def("slabs_meet_triangles", &slabs_meet_triangles, nb::arg("triangles"), nb::arg("origin"), nb::arg("along"),
-          nb::arg("side"), nb::arg("heights"), nb::arg("inset"),
-          "slabs_meet_triangles(triangles, origin, along, side, heights, inset) -> meets.\n\n"
-          "meets (k,) bool: triangle i (float64 (k, 3, 3) corners, m) passes through the slab origin[i] +\n"
-          "s along[i] + t side[i] + h UP (s in (0, 1), t in (-1, 1), h in heights[i] (k, 2); origin, along, side\n"
-          "float64 (k, 3), side horizontal and at right angles to along's plan), shrunk by inset (m) on every side.");
-    nb::class_<WallGrid>(m, "WallGrid", "steep triangles binned for bands_meet_walls with heights in one call")
+    nb::class_<WallGrid>(m, "WallGrid", "steep triangles binned for the body slab's test in one call")
         .def(nb::init<Corners, Rows3, Rows3, nb::ndarray<const double, nb::shape<3>, nb::c_contig, nb::device::cpu>,
                       double>(),
              nb::arg("triangles"), nb::arg("lo"), nb::arg("hi"), nb::arg("origin"), nb::arg("cell"))
         .def("meets", &WallGrid::meets, nb::arg("low"), nb::arg("along"), nb::arg("side"), nb::arg("heights"),
-             nb::arg("inset"), "(n,) bool: a triangle passes through slab i (slabs_meet_triangles' slabs)");
+             nb::arg("inset"), "(n,) bool: a triangle passes through slab i (low + s along + t side + h UP, h in heights[i], shrunk by inset)");
 }

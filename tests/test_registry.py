@@ -11,7 +11,8 @@ from g2s_core import DISTRIBUTION
 from g2s_core.errors import ConfigError, PluginError, PluginFailure
 from g2s_core.model import Terminals
 from g2s_core.plugin import PluginParams, hookimpl
-from g2s_core.registry import Registry, plugin_parameters
+from g2s_core.registry import Registry
+from g2s_plugins.plugin_list import plugin_parameters
 
 
 def make_plugin(name: str, **members) -> types.ModuleType:

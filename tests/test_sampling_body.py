@@ -7,8 +7,9 @@ import numpy as np
 import pytest
 import trimesh
 
-from g2s_plugins._raycasting import AgentShape, RayCaster, _slabs_meet_triangles, bands_meet_walls, walks_in_batch
+from g2s_plugins._raycasting import GRAZE_NUDGE, AgentShape, RayCaster, bands_meet_walls, walks_in_batch
 from tests.test_sampling_doors import AGENT, box, rooms_joined
+from tests.test_steep_grid import slabs_meet
 
 
 def bollard_row(height: float) -> trimesh.Trimesh:
@@ -38,7 +39,7 @@ def test_the_body_slab_stops_a_walk_between_low_bollards() -> None:
     lifted, along, side = starts + [0.0, 1.0, 0.0], ends - starts, np.array([[0.0, 0.0, 0.45]])
     caster = RayCaster(bollard_row(0.7))
     assert bands_meet_walls(caster, lifted, along, side, 45.0).tolist() == [False]
-    assert bands_meet_walls(caster, lifted, along, side, 45.0, heights=(-0.5, 0.95)).tolist() == [True]
+    assert caster.steep_faces(45.0).slab_grid.meets(lifted, along, side, np.array([[-0.5, 0.95]]), GRAZE_NUDGE).tolist() == [True]
 
 
 def test_a_face_meets_the_slab_only_inside_it() -> None:
@@ -53,13 +54,14 @@ def test_a_face_meets_the_slab_only_inside_it() -> None:
     for corners, meets in [((1.0, 0.0), True), ((1.0, 0.4), True), ((1.0, 0.46), False), ((1.0, -0.5), False),
                            ((2.1, 0.0), False), ((1.0, 0.0, -1.0, 0.49), False), ((1.0, 0.0, -1.0, 0.6), True),
                            ((1.0, 0.0, 1.9, 3.0), True), ((1.0, 0.0, 1.96, 3.0), False)]:
-        assert _slabs_meet_triangles(upright(*corners), origin, along, side, (0.5, 1.95), 1e-4).tolist() == [meets]
+        assert slabs_meet(upright(*corners), origin, along, side, (0.5, 1.95)).tolist() == [meets]
     # A wall across the walk, its corners all outside the slab: met through the slab's edges.
     across = np.array([[[1.0, -5.0, -5.0], [1.0, -5.0, 5.0], [1.0, 10.0, 0.0]]])
-    assert _slabs_meet_triangles(across, origin, along, side, (0.5, 1.95), 1e-4).tolist() == [True]
+    assert slabs_meet(across, origin, along, side, (0.5, 1.95)).tolist() == [True]
     # A walk rising 1 m over its 2 m: at x = 1 its line is 0.5 m up, so a post 0.9 m high stands 0.4 m above it
-    # (under the slab) and one 1.1 m high 0.6 m (in it).
+    # (under the slab) and one 1.1 m high 0.6 m (in it); a beam hanging down to 2.5 m clears the slab's top there
+    # (2.45 m), one down to 2.4 m does not. The slab's box (y 0.5 to 2.95) holds each, so the exact test decides.
     rising = np.array([[2.0, 1.0, 0.0]])
-    for top, meets in [(0.9, False), (1.1, True)]:
-        post = upright(1.0, 0.0, 0.0, top)
-        assert _slabs_meet_triangles(post, origin, rising, side, (0.5, 1.95), 1e-4).tolist() == [meets]
+    for bottom, top, meets in [(0.0, 0.9, False), (0.0, 1.1, True), (2.5, 4.0, False), (2.4, 4.0, True)]:
+        post = upright(1.0, 0.0, bottom, top)
+        assert slabs_meet(post, origin, rising, side, (0.5, 1.95)).tolist() == [meets]

@@ -1,5 +1,6 @@
-"""The steep faces' grid, built once per mesh and max slope (:meth:`RayCaster.steep_faces`), answers
-:func:`bands_meet_walls` as a test of every band against every steep face does."""
+"""The steep faces' grids, built once per mesh and max slope (:meth:`RayCaster.steep_faces`), answer
+:func:`bands_meet_walls` and the body slab's test (:attr:`SteepFaces.slab_grid`) as a test of every band or slab
+against every steep face does."""
 
 from __future__ import annotations
 
@@ -8,7 +9,7 @@ import math
 import numpy as np
 import trimesh
 
-from g2s_plugins._raycasting import RayCaster, _slabs_meet_triangles, _slices_meet_bands, bands_meet_walls
+from g2s_plugins._raycasting import RayCaster, _slices_meet_bands, bands_meet_walls
 
 
 def two_slopes() -> trimesh.Trimesh:
@@ -24,15 +25,24 @@ def two_slopes() -> trimesh.Trimesh:
     return trimesh.Trimesh(vertices, faces, process=False)
 
 
+def slabs_meet(triangle: np.ndarray, low: np.ndarray, along: np.ndarray, side: np.ndarray, heights,
+               inset: float = 1e-4) -> np.ndarray:
+    """(n,) bool: the one upright ``triangle`` ((3, 3) corners, m) passes through the body slabs ``low`` + s ``along``
+    + t ``side`` + h UP (h in ``heights``, (n, 2) or (2,) m), as the slab grid of a mesh of that triangle alone says."""
+    caster = RayCaster(trimesh.Trimesh(np.asarray(triangle, dtype=np.float64).reshape(3, 3), [[0, 1, 2]], process=False))
+    heights = np.ascontiguousarray(np.broadcast_to(np.asarray(heights, dtype=np.float64), (len(low), 2)))
+    return caster.steep_faces(45.0).slab_grid.meets(low, along, side, heights, inset)
+
+
 def every_pair(caster: RayCaster, low: np.ndarray, along: np.ndarray, side: np.ndarray, max_slope_deg: float,
                heights: np.ndarray | None) -> np.ndarray:
-    """(n,) bool: :func:`bands_meet_walls` without a broad phase, each band against each steep triangle."""
+    """(n,) bool: :func:`bands_meet_walls` (or with ``heights`` the slab grid) without a broad phase, each band against
+    each steep triangle (a slab against a grid of that triangle alone, whose cells hold nothing else)."""
     steep = caster.triangles[~caster.walkable_faces(np.arange(len(caster.triangles)), max_slope_deg)]
+    if heights is not None:
+        return np.logical_or.reduce([slabs_meet(triangle, low, along, side, heights) for triangle in steep])
     band, wall = (index.reshape(-1) for index in np.meshgrid(np.arange(len(low)), np.arange(len(steep)), indexing="ij"))
-    if heights is None:
-        hit = _slices_meet_bands(steep[wall], low[band], along[band], side[band], 1e-4)
-    else:
-        hit = _slabs_meet_triangles(steep[wall], low[band], along[band], side[band], heights[band], 1e-4)
+    hit = _slices_meet_bands(steep[wall], low[band], along[band], side[band], 1e-4)
     return np.logical_or.reduceat(hit, np.arange(0, len(hit), len(steep)))
 
 
@@ -48,6 +58,11 @@ def test_the_cached_grid_answers_as_every_pair_for_two_slopes() -> None:
     side = np.array([[0.0, 0.0, 0.4], [-0.4, 0.0, 0.0], [0.0, 0.0, 0.4]])
     assert bands_meet_walls(caster, low, along, side, 45.0, inset=1e-4).tolist() == [True, True, False]
     assert bands_meet_walls(caster, low, along, side, 70.0, inset=1e-4).tolist() == [False, True, False]
+    # the same as body slabs 0.5 m either side of the lines (y 0 to 1): the slope and the wall; lifted 2.6-3.0 m
+    # over them (y 3.1 to 3.5) the slabs pass over the slope's 2 m top and the wall's 3 m one
+    for heights, meets in [((-0.5, 0.5), [True, True, False]), ((2.6, 3.0), [False, False, False])]:
+        slabs = np.tile(heights, (3, 1))
+        assert caster.steep_faces(45.0).slab_grid.meets(low, along, side, slabs, 1e-4).tolist() == meets
     # one grid per max slope, shared by every caster of the mesh
     assert RayCaster(mesh).steep_faces(45.0) is caster.steep_faces(45.0)
     assert len(caster.steep_faces(45.0).triangles) == 4 and len(caster.steep_faces(70.0).triangles) == 2
@@ -60,7 +75,9 @@ def test_the_cached_grid_answers_as_every_pair_for_two_slopes() -> None:
     side *= (rng.uniform(0.05, 0.6, n) / np.hypot(along[:, 0], along[:, 2]))[:, None]
     heights = np.sort(rng.uniform(-1, 1, size=(n, 2)), axis=1)
     for max_slope in (45.0, 70.0, 45.0):
+        steep = caster.steep_faces(max_slope)
         for slab in (None, heights):
-            cached = bands_meet_walls(caster, low, along, side, max_slope, inset=1e-4, heights=slab)
+            cached = bands_meet_walls(caster, low, along, side, max_slope, inset=1e-4) if slab is None else \
+                steep.slab_grid.meets(low, along, side, slab, 1e-4)
             assert cached.tolist() == every_pair(caster, low, along, side, max_slope, slab).tolist()
             assert 0 < cached.sum() < n
