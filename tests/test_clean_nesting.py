@@ -1,6 +1,7 @@
 """``mesh.clean`` winds closed shells as their nesting asks: a room inside a closed building faces into itself (its
 floor up), a crate in it faces out, and a body wound inside out is still turned (benchmarks/nested_shells.py's
-cases, docs/navmesh.md "Closed rooms inside closed rooms under mesh.clean")."""
+cases, docs/navmesh.md "Closed rooms inside closed rooms under mesh.clean"); the disconnected-areas warning reads
+each shell by the same rule."""
 
 from __future__ import annotations
 
@@ -8,7 +9,8 @@ import numpy as np
 import pytest
 import trimesh
 
-from g2s_core.mesh import _winding_number, clean_mesh
+from g2s_core.mesh import _winding_number, clean_mesh, flip_inside_out_bodies
+from g2s_plugins._raycasting import _Scene
 from tests.conftest import benchmark
 
 nested = benchmark("nested_shells")
@@ -60,3 +62,22 @@ def test_a_room_alone_seen_from_inside_is_turned_as_before():
     room = nested.shell((0.0, 0.0, 0.0), (8.0, 3.0, 6.0), False)
     cleaned, counts = clean_mesh(room)
     assert counts["flipped_bodies"] == 1 and cleaned.volume > 0
+
+
+def test_the_flipped_crate_in_a_closed_room_is_a_solid_inside_out_to_the_warning_too():
+    # the building (faces 0-11) and its room (12-23) are wound right; the crate (24-35) stands in the room, depth 2,
+    # a solid, and is wound inward: the warning reads it inside out (-1), as mesh.clean turns it, not as a cavity
+    mesh = nested.level(nested.crate_flipped(), 22.0)
+    winding = _Scene.of_mesh(mesh).winding
+    assert winding.tolist() == [1] * 24 + [-1] * 12
+    _, turned = flip_inside_out_bodies(trimesh.Trimesh(mesh.vertices, mesh.faces, process=True))
+    assert [body.tolist() for body in turned] == [list(range(24, 36))]
+
+
+@pytest.mark.parametrize("name", sorted(TURNED))
+def test_the_warning_reads_each_shell_inside_out_where_cleaning_turns_it(name: str):
+    mesh = nested.level(nested.CASES[name](), 45.0)
+    _, turned = flip_inside_out_bodies(trimesh.Trimesh(mesh.vertices, mesh.faces, process=True))
+    winding = _Scene.of_mesh(mesh).winding
+    assert (winding != 0).all()  # every face is of a closed shell
+    assert np.flatnonzero(winding < 0).tolist() == sorted(face for body in turned for face in body.tolist())
