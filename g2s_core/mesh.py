@@ -420,25 +420,30 @@ def body_nesting(triangles: np.ndarray, bodies: list[np.ndarray]) -> tuple[np.nd
     (positive signed volume), and the inside of a solid's hollow at odd k, wound inward: a room inside a closed
     building faces into the room, its floor up, and a crate in that room faces out again (nested shells alternate
     so, as CGAL's ``Polygon_mesh_processing::orient_to_bound_a_volume`` orients them); a body is wound right where
-    ``inward == depth % 2``. A body is in another when its box is in the other's and a point just inside its largest
-    face has a winding number of magnitude 1 about the other (:func:`_winding_number`): a pillar through a slab is
-    in no slab. O(b log b + C + P F) for C pairs of one starting along x within the other's x range, P pairs of one
-    in the other's box and F faces of the outer one.
+    ``inward == depth % 2``. A body is in another when its box is in the other's and the middle of each of its faces
+    (of an area), moved just inside it, has a winding number of magnitude 1 about the other (:func:`_winding_number`):
+    a pillar through a slab is in no slab, nor a pillar set into a wall slab whose box holds the pillar's (the level
+    turned about the vertical). O(b log b + C + P f F) for C pairs of one starting along x within the other's x
+    range, P pairs of one in the other's box, f faces of the inner one (fewer where a face's middle lies outside: the
+    test stops there) and F of the outer one.
     """
     corners = triangles - (triangles.min(axis=(0, 1)) + triangles.max(axis=(0, 1))) / 2  # about the middle: sums lose less
     normal = np.cross(triangles[:, 1] - triangles[:, 0], triangles[:, 2] - triangles[:, 0])  # length: twice the area
     inward = np.array([np.linalg.det(corners[body]).sum() < 0 for body in bodies], dtype=bool)  # six signed volumes
     lo, hi = (np.array([bound(corners[body], axis=(0, 1)) for body in bodies]).reshape(-1, 3) for bound in (np.min, np.max))
-    largest = np.array([body[np.argmax(np.linalg.norm(normal[body], axis=1))] for body in bodies], dtype=np.int64)
+    twice_area = np.linalg.norm(normal, axis=1)
     inset = 1e-6 * float(np.ptp(corners.reshape(-1, 3), axis=0).max())  # m: off the face, into its own body
-    probes = corners[largest].mean(axis=1) + np.where(inward, inset, -inset)[:, None] * normal[largest] / np.linalg.norm(normal[largest], axis=1, keepdims=True)
+    # each body's faces' middles (of faces with an area: a normal), each just inside its face
+    probes = [corners[faces].mean(axis=1) + (inset if wound_in else -inset) * normal[faces] / twice_area[faces, None] for body, wound_in in zip(bodies, inward) for faces in [body[twice_area[body] > 0]]]
     # a box in another starts along x within the other's x range
     depth, by_start = np.zeros(len(bodies), dtype=np.int64), np.argsort(lo[:, 0], kind="stable")
     for outer, body in enumerate(bodies):
         near = by_start[np.searchsorted(lo[by_start, 0], lo[outer, 0] - inset):
                         np.searchsorted(lo[by_start, 0], hi[outer, 0] + inset, side="right")]
         for inner in near[np.all((lo[near] >= lo[outer] - inset) & (hi[near] <= hi[outer] + inset), axis=1)]:
-            depth[inner] += inner != outer and abs(_winding_number(corners[body], probes[inner])) > 0.5
+            # every probe, not one: of two solids overlapping (a pillar set into a wall, the box of the turned wall
+            # holding the pillar's) some of the one's faces lie outside the other; all() stops at the first
+            depth[inner] += inner != outer and all(abs(_winding_number(corners[body], probe)) > 0.5 for probe in probes[inner])
     return inward, depth
 
 

@@ -47,6 +47,18 @@ def test_a_pillar_through_a_slab_and_boxes_side_by_side_are_not_nested():
     assert counts["flipped_bodies"] == 0
 
 
+@pytest.mark.parametrize("yaw", [0.0, 22.0, 45.0])
+def test_a_pillar_set_into_a_wall_is_in_no_wall_at_any_yaw(yaw: float):
+    # the pillar's back third lies in the wall, its back face in the wall's back face; turned, the wall's box holds the
+    # pillar's, and a point inside its back face lies in the wall, one inside its front face does not
+    wall = nested.shell((-12.0, 0.0, -0.3), (12.0, 3.2, 0.0), True)
+    pillar = nested.shell((-3.0, 0.0, -0.3), (-1.0, 3.2, 0.5), True)
+    mesh = nested.level([wall, pillar], yaw)
+    _, counts = clean_mesh(mesh)
+    assert counts["flipped_bodies"] == 0
+    assert (_Scene.of_mesh(mesh).winding == 1).all()  # both solids wound right to the warning too
+
+
 @pytest.mark.parametrize("builder", ["navmesh", "sampling"])
 def test_both_routes_walk_the_room_inside_the_building(builder: str):
     # the room's floor, 11.4 x 9.4 m at 0.3 m, less the agent's 0.5 m radius at its walls: 10.4 x 8.4 = 87.4 m^2
