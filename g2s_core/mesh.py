@@ -392,59 +392,39 @@ def wind_bodies_one_way(mesh: trimesh.Trimesh) -> tuple[trimesh.Trimesh, int]:
 
 
 def flip_inside_out_bodies(mesh: trimesh.Trimesh) -> tuple[trimesh.Trimesh, list[np.ndarray]]:
-    """A copy of ``mesh`` whose closed bodies wound against their nesting (:func:`body_nesting`) are wound the
-    other way, and the face indices of each such body.
+    """A copy of ``mesh`` whose closed bodies wound against their nesting are wound the other way, and the face
+    indices of each such body.
 
     Recast and the sampler walk only on faces whose normal points up, so an inside-out floor offers its underside. A
-    body here is faces joined by shared edges (coincident vertices must be merged) that is closed and wound one way;
-    open bodies are left alone, as their inside is not defined. O(F) over trimesh's components, then
-    :func:`body_nesting`'s cost.
+    body (faces joined by shared edges: coincident vertices must be merged) that is closed and wound one way bounds a
+    region. Inside k other such regions it is a solid's outside at even k, wound outward (positive signed volume),
+    and the inside of a solid's hollow at odd k, wound inward: a room inside a closed building faces into the room,
+    its floor up, and a crate in that room faces out again (nested shells alternate so, as CGAL's
+    ``Polygon_mesh_processing::orient_to_bound_a_volume`` orients them). A body is in another when its box is in
+    the other's and a point just inside its largest face has a winding number of magnitude 1 about the other
+    (:func:`_winding_number`): a pillar through a slab is in no slab. Open bodies are left alone, as their inside is
+    not defined. O(b log b + C + P F) for b closed bodies, C pairs of one starting along x within the other's x
+    range, P pairs of one in the other's box and F faces of the outer one.
     """
+    corners = np.asarray(mesh.triangles) - mesh.bounds.mean(axis=0)  # about the middle: the sums lose less
     edges = mesh.edges.reshape(-1, 6)
     bodies = [np.asarray(body) for body in trimesh.graph.connected_components(mesh.face_adjacency, min_len=4)
               if all(trimesh.graph.is_watertight(edges[body].reshape(-1, 2)))]  # closed and wound one way
-    inward, depth = body_nesting(np.asarray(mesh.triangles, dtype=np.float64), bodies)
-    turned = [body for body, wound_in, nesting in zip(bodies, inward, depth) if wound_in != nesting % 2]
-    flip = np.isin(np.arange(len(mesh.faces)), np.concatenate([np.zeros(0, dtype=np.int64), *turned]))
-    return trimesh.Trimesh(mesh.vertices, np.where(flip[:, None], mesh.faces[:, ::-1], mesh.faces), process=False), turned
-
-
-def body_nesting(triangles: np.ndarray, bodies: list[np.ndarray]) -> tuple[np.ndarray, np.ndarray]:
-    """How each closed body wants to be wound: ``(inward, depth)``, (b,) bool (its signed volume is negative) and
-    (b,) int64 (how many other bodies of ``bodies`` hold it), for ``bodies``, b arrays of indices into ``triangles``
-    ((m, 3, 3), metres), each a closed body wound one way. The one rule of what a closed body inside out is, read by
-    :func:`flip_inside_out_bodies` and by the sampling route's closed-solid test
-    (``g2s_plugins._raycasting._Scene.winding``).
-
-    A closed body bounds a region. Inside k other such regions it is a solid's outside at even k, wound outward
-    (positive signed volume), and the inside of a solid's hollow at odd k, wound inward: a room inside a closed
-    building faces into the room, its floor up, and a crate in that room faces out again (nested shells alternate
-    so, as CGAL's ``Polygon_mesh_processing::orient_to_bound_a_volume`` orients them); a body is wound right where
-    ``inward == depth % 2``. A body is in another when its box is in the other's and the middle of each of its faces
-    (of an area), moved just inside it, has a winding number of magnitude 1 about the other (:func:`_winding_number`):
-    a pillar through a slab is in no slab, nor a pillar set into a wall slab whose box holds the pillar's (the level
-    turned about the vertical). O(b log b + C + P f F) for C pairs of one starting along x within the other's x
-    range, P pairs of one in the other's box, f faces of the inner one (fewer where a face's middle lies outside: the
-    test stops there) and F of the outer one.
-    """
-    corners = triangles - (triangles.min(axis=(0, 1)) + triangles.max(axis=(0, 1))) / 2  # about the middle: sums lose less
-    normal = np.cross(triangles[:, 1] - triangles[:, 0], triangles[:, 2] - triangles[:, 0])  # length: twice the area
     inward = np.array([np.linalg.det(corners[body]).sum() < 0 for body in bodies], dtype=bool)  # six signed volumes
     lo, hi = (np.array([bound(corners[body], axis=(0, 1)) for body in bodies]).reshape(-1, 3) for bound in (np.min, np.max))
-    twice_area = np.linalg.norm(normal, axis=1)
+    largest = np.array([body[np.argmax(mesh.area_faces[body])] for body in bodies], dtype=np.int64)
     inset = 1e-6 * float(np.ptp(corners.reshape(-1, 3), axis=0).max())  # m: off the face, into its own body
-    # each body's faces' middles (of faces with an area: a normal), each just inside its face
-    probes = [corners[faces].mean(axis=1) + (inset if wound_in else -inset) * normal[faces] / twice_area[faces, None] for body, wound_in in zip(bodies, inward) for faces in [body[twice_area[body] > 0]]]
-    # a box in another starts along x within the other's x range
-    depth, by_start = np.zeros(len(bodies), dtype=np.int64), np.argsort(lo[:, 0], kind="stable")
+    probes = corners[largest].mean(axis=1) + np.where(inward, inset, -inset)[:, None] * mesh.face_normals[largest]
+    depth = np.zeros(len(bodies), dtype=np.int64)
+    by_start = np.argsort(lo[:, 0], kind="stable")  # a box in another starts along x within the other's x range
     for outer, body in enumerate(bodies):
         near = by_start[np.searchsorted(lo[by_start, 0], lo[outer, 0] - inset):
                         np.searchsorted(lo[by_start, 0], hi[outer, 0] + inset, side="right")]
         for inner in near[np.all((lo[near] >= lo[outer] - inset) & (hi[near] <= hi[outer] + inset), axis=1)]:
-            # every probe, not one: of two solids overlapping (a pillar set into a wall, the box of the turned wall
-            # holding the pillar's) some of the one's faces lie outside the other; all() stops at the first
-            depth[inner] += inner != outer and all(abs(_winding_number(corners[body], probe)) > 0.5 for probe in probes[inner])
-    return inward, depth
+            depth[inner] += inner != outer and abs(_winding_number(corners[body], probes[inner])) > 0.5
+    turned = [body for body, wound_in, nesting in zip(bodies, inward, depth) if wound_in != nesting % 2]
+    flip = np.isin(np.arange(len(mesh.faces)), np.concatenate([np.zeros(0, dtype=np.int64), *turned]))
+    return trimesh.Trimesh(mesh.vertices, np.where(flip[:, None], mesh.faces[:, ::-1], mesh.faces), process=False), turned
 
 
 def _winding_number(corners: np.ndarray, point: np.ndarray) -> float:
