@@ -451,7 +451,7 @@ def domus(seed: int) -> trimesh.Trimesh:
         _domus_house(s, rng, x0, width, depth)
         x0 += width
     total = x0
-    s.box(-10.0, total + 10.0, -0.8, 0.0, -12.0, -0.2)  # the street
+    s.box(-10.0, total + 10.0, -0.8, 0.0, -12.0, 0.0)  # the street, up to the houses' fronts
     _trunk(s, np.array([total / 2, -6.0]), 1.2, -0.1, 0.8)
     spots: list[tuple[np.ndarray, float]] = [(np.array([total / 2, -6.0]), 2.5)]
     for _ in range(6):
