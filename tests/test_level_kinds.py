@@ -1,4 +1,4 @@
-"""The level kinds of rounds 9-31 (``benchmarks/level_kinds.py``, ``level_kinds26.py`` ... ``level_kinds31.py``) build
+"""The level kinds of rounds 9-32 (``benchmarks/level_kinds.py``, ``level_kinds26.py`` ... ``level_kinds32.py``) build
 the levels they describe.
 
 Smoke tests of quick generators (most well under a second each to build and to give a navmesh; the theatre's and
@@ -1568,3 +1568,87 @@ def test_the_bell_towers_wide_turret_stairs_reach_their_bell_chambers(round_31):
     y = nav.centres[:, 1] - 0.2
     assert nav.areas[y > 9.5].sum() > 50.0
     assert ((y > 0.5) & (y < 2.7)).any()
+
+
+@pytest.fixture(scope="module")
+def round_32() -> dict[str, Callable[..., trimesh.Trimesh]]:
+    """``benchmarks/level_kinds32.py``'s KINDS (the thirty-second round): each call builds its level anew."""
+    return benchmark("level_kinds32").KINDS
+
+
+def plan_points_on_floor(nav, points: np.ndarray) -> np.ndarray:
+    """Which plan points (k, 2) of x, z lie inside a navmesh polygon's plan (k,): each polygon is convex, so a point is
+    inside when it lies on one side of all its edges. O(P x k)."""
+    inside = np.zeros(len(points), dtype=bool)
+    for p in range(nav.polygon_count):
+        corners = nav.vertices[nav.polygons[p][nav.polygons[p] >= 0]][:, [0, 2]]
+        edges = np.roll(corners, -1, axis=0) - corners
+        cross = edges[:, 0, None] * (points[None, :, 1] - corners[:, 1, None]) \
+            - edges[:, 1, None] * (points[None, :, 0] - corners[:, 0, None])
+        inside |= (cross >= 0).all(axis=0) | (cross <= 0).all(axis=0)
+    return inside
+
+
+def test_the_sewers_walkways_are_one_area_and_some_beds_are_apart_under_the_planks(round_32):
+    """Walkways beside channels whose beds lie 1.0-2.0 m lower, crossed by planks that leave the beds 0.9-1.9 m of
+    head room: the walkways joined from one end gallery to the other and down flights to beds (floor over 0.9 m down in
+    the largest area), and more than five areas (stretches of bed without a flight, apart under their planks)."""
+    mesh = round_32["sewer_planks"](0)
+    label, nav = areas(mesh, DROPS)
+    largest = label == np.argmax(np.bincount(label, weights=nav.areas))
+    x, y = nav.centres[:, 0], nav.centres[:, 1] - 0.2
+    assert (largest & (x < 0.0)).any() and (largest & (x > mesh.bounds[1][0] - 4.0)).any()
+    assert (largest & (y < -0.9)).any()
+    assert label.max() + 1 > 5
+
+
+def test_the_caves_low_stalactites_leave_no_floor_under_their_tips(round_32):
+    """Stalactites hanging to tips about the agent's height: one area, and no floor under a tip (or a stalagmite's)
+    that stands 1.4-1.95 m over the floor, the only vertices of the level at those heights."""
+    mesh = round_32["stalactite_cave"](0)
+    label, nav = areas(mesh, DROPS)
+    assert label.max() == 0
+    tips = mesh.vertices[(mesh.vertices[:, 1] > 1.4) & (mesh.vertices[:, 1] < 1.95)][:, [0, 2]]
+    assert len(tips) > 10 and not plan_points_on_floor(nav, tips).any()
+
+
+def test_the_ring_is_one_area_round_an_empty_middle(round_32):
+    """Four straight tunnels 150-190 m long joined by bends: one area reaching all four straights, no floor inside
+    the ring (more than 20 m from the tunnels' inner walls)."""
+    mesh = round_32["ring_tunnels"](0)
+    label, nav = areas(mesh, DROPS)
+    assert label.max() == 0
+    x, z = nav.centres[:, 0], nav.centres[:, 2]
+    assert x.min() < -75.0 and x.max() > 75.0 and z.min() < -70.0 and z.max() > 70.0
+    lo, hi = mesh.bounds
+    inner_x, inner_z = (hi[0] - lo[0]) / 2 - 16.0 - 25.0, (hi[2] - lo[2]) / 2 - 16.0 - 25.0
+    assert not ((np.abs(x) < inner_x) & (np.abs(z) < inner_z)).any()
+
+
+def test_the_hangars_mezzanine_is_reached_by_its_flights_and_not_its_lift_shaft(round_32):
+    """A mezzanine 4.5 m up reached by two flights, a lift shaft with no floor but its pit's, 1.4 m down: the floor and
+    the mezzanine one area (more than 300 m² over 4 m up), the pit's floor, if any, outside it."""
+    label, nav = areas(round_32["hangar"](0), DROPS)
+    largest = label == np.argmax(np.bincount(label, weights=nav.areas))
+    y = nav.centres[:, 1] - 0.2
+    assert nav.areas[largest & (y > 4.0)].sum() > 300.0
+    assert not (largest & (y < -0.5)).any()
+
+
+def test_the_domus_gardens_are_entered_down_their_steps_only(round_32):
+    """Peristyle gardens 0.45-0.6 m under their colonnades, entered down two half steps: one area with floor in the
+    gardens (more than 300 m² over 0.4 m down), and no two flat floors joined across a step over 0.3 m."""
+    label, nav = areas(round_32["domus"](0), DROPS)
+    assert label.max() == 0
+    assert nav.areas[nav.centres[:, 1] - 0.2 < -0.4].sum() > 300.0
+    assert flat_steps_over_climb(nav) == 0
+
+
+def test_every_bamboo_culm_narrower_than_a_cell_is_a_hole_in_the_floor(round_32):
+    """Culms 0.06-0.14 m across (Recast's cell is 0.25 m): one area, and no culm's top corner (the only vertices over
+    5.9 m) over floor."""
+    mesh = round_32["bamboo_grove"](0)
+    label, nav = areas(mesh, DROPS)
+    assert label.max() == 0
+    culms = mesh.vertices[mesh.vertices[:, 1] > 5.9][:, [0, 2]]
+    assert len(culms) > 1000 and not plan_points_on_floor(nav, culms).any()
