@@ -167,8 +167,9 @@ def stalactite_cave(seed: int) -> trimesh.Trimesh:
 def _band(s: _Solids, line: np.ndarray, left: float, right: float, y0: float, y1: float,
           gaps: set[int] = frozenset()) -> None:
     """Prisms between offsets ``left`` and ``right`` (metres, left of the direction of travel positive) of the closed
-    plan polyline ``line`` (n, 2), between heights y0 < y1: one a piece of the line but the pieces in ``gaps``
-    (indices). Corners are mitred (the bisector of the two pieces' normals, scaled so that each piece's offset stays
+    plan polyline ``line`` (n, 2), between heights y0 < y1, over every piece of the line but the pieces in ``gaps``
+    (indices): one prism a run of pieces along one direction (a straight cut into pieces, a run broken by a gap or a
+    turn). Corners are mitred (the bisector of the two pieces' normals, scaled so that each piece's offset stays
     parallel to it). O(n)."""
     n = len(line)
     ahead = np.roll(line, -1, axis=0) - line
@@ -176,8 +177,15 @@ def _band(s: _Solids, line: np.ndarray, left: float, right: float, y0: float, y1
     normal = np.stack([-ahead[:, 1], ahead[:, 0]], 1)
     mitre = normal + np.roll(normal, 1, axis=0)  # at vertex i, between piece i - 1 and piece i
     mitre /= np.einsum("ij,ij->i", mitre, normal)[:, None]
-    for i in set(range(n)) - set(gaps):
-        j = (i + 1) % n
+    kept = [i for i in range(n) if i not in gaps]
+    runs: list[list[int]] = []
+    for i in kept:  # consecutive kept pieces of one direction join a run
+        if runs and runs[-1][-1] == i - 1 and float(ahead[i] @ ahead[i - 1]) > 1.0 - 1e-9:
+            runs[-1].append(i)
+        else:
+            runs.append([i])
+    for run in runs:
+        i, j = run[0], (run[-1] + 1) % n
         s.prism(np.array([line[i] + mitre[i] * left, line[j] + mitre[j] * left,
                           line[j] + mitre[j] * right, line[i] + mitre[i] * right]), y0, y1)
 
@@ -503,8 +511,14 @@ def bamboo_grove(seed: int) -> trimesh.Trimesh:
                 return True
         return False
 
+    unit = _Solids()
+    _trunk(unit, np.zeros(2), 1.0, 0.0, 1.0)  # one octagonal prism, scaled and moved for every culm (one hull)
+    template = unit.parts[0]
+
     def culm(p: np.ndarray) -> None:
-        _trunk(s, p, float(rng.uniform(0.03, 0.07)), -0.1, float(rng.uniform(6.0, 10.0)))
+        radius, top = float(rng.uniform(0.03, 0.07)), float(rng.uniform(6.0, 10.0))
+        s.parts.append(template.copy().apply_transform(
+            trimesh.transformations.translation_matrix([p[0], -0.1, p[1]]) @ np.diag([radius, top + 0.1, radius, 1.0])))
 
     for _ in range(int(rng.integers(60, 91))):
         radius = float(rng.uniform(0.8, 2.2))
