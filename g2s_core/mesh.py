@@ -392,47 +392,90 @@ def wind_bodies_one_way(mesh: trimesh.Trimesh) -> tuple[trimesh.Trimesh, int]:
 
 
 def flip_inside_out_bodies(mesh: trimesh.Trimesh) -> tuple[trimesh.Trimesh, list[np.ndarray]]:
-    """A copy of ``mesh`` whose closed bodies wound against their nesting are wound the other way, and the face
-    indices of each such body.
+    """A copy of ``mesh`` whose closed bodies wound against their nesting (:func:`body_nesting`) are wound the
+    other way, and the face indices of each such body.
 
     Recast and the sampler walk only on faces whose normal points up, so an inside-out floor offers its underside. A
-    body (faces joined by shared edges: coincident vertices must be merged) that is closed and wound one way bounds a
-    region. Inside k other such regions it is a solid's outside at even k, wound outward (positive signed volume),
-    and the inside of a solid's hollow at odd k, wound inward: a room inside a closed building faces into the room,
-    its floor up, and a crate in that room faces out again (nested shells alternate so, as CGAL's
-    ``Polygon_mesh_processing::orient_to_bound_a_volume`` orients them). A body is in another when its box is in
-    the other's and a point just inside its largest face has a winding number of magnitude 1 about the other
-    (:func:`_winding_number`): a pillar through a slab is in no slab. Open bodies are left alone, as their inside is
-    not defined. O(b log b + C + P F) for b closed bodies, C pairs of one starting along x within the other's x
-    range, P pairs of one in the other's box and F faces of the outer one.
+    body here is faces joined by shared edges (coincident vertices must be merged) that is closed and wound one way;
+    open bodies are left alone, as their inside is not defined. O(F) over trimesh's components, then
+    :func:`body_nesting`'s cost.
     """
-    corners = np.asarray(mesh.triangles) - mesh.bounds.mean(axis=0)  # about the middle: the sums lose less
     edges = mesh.edges.reshape(-1, 6)
     bodies = [np.asarray(body) for body in trimesh.graph.connected_components(mesh.face_adjacency, min_len=4)
               if all(trimesh.graph.is_watertight(edges[body].reshape(-1, 2)))]  # closed and wound one way
-    inward = np.array([np.linalg.det(corners[body]).sum() < 0 for body in bodies], dtype=bool)  # six signed volumes
-    lo, hi = (np.array([bound(corners[body], axis=(0, 1)) for body in bodies]).reshape(-1, 3) for bound in (np.min, np.max))
-    largest = np.array([body[np.argmax(mesh.area_faces[body])] for body in bodies], dtype=np.int64)
-    inset = 1e-6 * float(np.ptp(corners.reshape(-1, 3), axis=0).max())  # m: off the face, into its own body
-    probes = corners[largest].mean(axis=1) + np.where(inward, inset, -inset)[:, None] * mesh.face_normals[largest]
-    depth = np.zeros(len(bodies), dtype=np.int64)
-    by_start = np.argsort(lo[:, 0], kind="stable")  # a box in another starts along x within the other's x range
-    for outer, body in enumerate(bodies):
-        near = by_start[np.searchsorted(lo[by_start, 0], lo[outer, 0] - inset):
-                        np.searchsorted(lo[by_start, 0], hi[outer, 0] + inset, side="right")]
-        for inner in near[np.all((lo[near] >= lo[outer] - inset) & (hi[near] <= hi[outer] + inset), axis=1)]:
-            depth[inner] += inner != outer and abs(_winding_number(corners[body], probes[inner])) > 0.5
+    inward, depth = body_nesting(np.asarray(mesh.triangles, dtype=np.float64), bodies)
     turned = [body for body, wound_in, nesting in zip(bodies, inward, depth) if wound_in != nesting % 2]
     flip = np.isin(np.arange(len(mesh.faces)), np.concatenate([np.zeros(0, dtype=np.int64), *turned]))
     return trimesh.Trimesh(mesh.vertices, np.where(flip[:, None], mesh.faces[:, ::-1], mesh.faces), process=False), turned
 
 
-def _winding_number(corners: np.ndarray, point: np.ndarray) -> float:
-    """How many times the closed surface of the triangles ``corners`` ((m, 3, 3), metres) winds round ``point``
-    ((3,)): +-1 inside (the sign of its signed volume), 0 outside. The sum of the solid angles the triangles subtend,
-    each by A. van Oosterom and J. Strackee's formula (IEEE Trans. Biomed. Eng. 30(2), 1983), over 4 pi. O(m)."""
-    a, b, c = np.moveaxis(corners - point, 1, 0)
-    la, lb, lc = np.linalg.norm(corners - point, axis=2).T
-    dot = lambda u, v: np.einsum("ij,ij->i", u, v)  # noqa: E731
-    return float(np.arctan2(np.linalg.det(corners - point), la * lb * lc + dot(a, b) * lc + dot(a, c) * lb + dot(b, c) * la).sum()
-                 / (2 * np.pi))
+def body_nesting(triangles: np.ndarray, bodies: list[np.ndarray]) -> tuple[np.ndarray, np.ndarray]:
+    """How each closed body wants to be wound: ``(inward, depth)``, (b,) bool (its signed volume is negative) and
+    (b,) int64 (how many other bodies of ``bodies`` hold it), for ``bodies``, b arrays of indices into ``triangles``
+    ((m, 3, 3), metres), each a closed body wound one way. The one rule of what a closed body inside out is, read by
+    :func:`flip_inside_out_bodies` and by the sampling route's closed-solid test
+    (``g2s_plugins._raycasting._Scene.winding``).
+
+    A closed body bounds a region. Inside k other such regions it is a solid's outside at even k, wound outward
+    (positive signed volume), and the inside of a solid's hollow at odd k, wound inward: a room inside a closed
+    building faces into the room, its floor up, and a crate in that room faces out again (nested shells alternate
+    so, as CGAL's ``Polygon_mesh_processing::orient_to_bound_a_volume`` orients them); a body is wound right where
+    ``inward == depth % 2``. A body is in another when its box is in the other's and the middle of each of its faces
+    (of an area), moved just inside it, has a winding number of magnitude 1 about the other (:func:`_winding_numbers`):
+    a pillar through a slab is in no slab, nor a pillar set into a wall slab whose box holds the pillar's (the level
+    turned about the vertical). Array passes, no loop over bodies: O(n + b log b + C + Q F) for n faces of the
+    bodies, C pairs of one starting along x within the other's x range, and of the P pairs of one in the other's box,
+    Q = P + (f probes of each pair one probe leaves) tests of a point against F faces of the outer body.
+    """
+    size = np.array([len(body) for body in bodies], dtype=np.int64)
+    owner, first = np.repeat(np.arange(len(bodies)), size), np.cumsum(size) - size
+    corners = triangles[np.concatenate([np.zeros(0, dtype=np.int64), *bodies])]
+    lo, hi = (bound.reduceat(corners.reshape(-1, 3), 3 * first) for bound in (np.minimum, np.maximum))  # (b, 3) boxes
+    ends = np.vstack([lo, hi, np.zeros((1, 3))])  # the origin too: no bodies, no extent
+    inset = 1e-6 * float(np.ptp(ends, axis=0).max())  # m: off a face, into its own body
+    # about the middle, where the sums lose less; the boxes as (3, b), each axis's row contiguous
+    corners, lo, hi = (array - (ends.min(axis=0) + ends.max(axis=0)) / 2 for array in (corners, lo, hi))
+    lo, hi = lo.T.copy(), hi.T.copy()
+    inward = np.bincount(owner, np.einsum("ij,ij->i", corners[:, 0], np.cross(corners[:, 1], corners[:, 2])), minlength=len(bodies)) < 0
+    # a box in another starts along x within the other's x range: each body's candidates are a range of the bodies
+    # sorted by their box's start, of which those ending within it along x, then along y and z
+    by_start = np.argsort(lo[0], kind="stable")
+    left = np.searchsorted(lo[0, by_start], lo[0] - inset)
+    reach = np.searchsorted(lo[0, by_start], hi[0] + inset, side="right") - left
+    candidate = _ranges(left, reach)
+    held = hi[0, by_start][candidate] <= np.repeat(hi[0] + inset, reach)
+    outer, inner = np.repeat(np.arange(len(bodies)), reach)[held], by_start[candidate[held]]
+    for axis in (1, 2):
+        held = (inner != outer) & (lo[axis, inner] >= lo[axis, outer] - inset) & (hi[axis, inner] <= hi[axis, outer] + inset)
+        outer, inner = outer[held], inner[held]
+    # the middle of each face (of an area) of each body in another's box, just inside the face, in body order
+    held = np.unique(inner)
+    faces = _ranges(first[held], size[held])
+    normal = np.cross(corners[faces, 1] - corners[faces, 0], corners[faces, 2] - corners[faces, 0])  # length: twice the area
+    faces, normal = faces[np.any(normal != 0, axis=1)], normal[np.any(normal != 0, axis=1)]
+    points = corners[faces].mean(axis=1) + np.where(inward[owner[faces]], inset, -inset)[:, None] * normal / np.linalg.norm(normal, axis=1, keepdims=True)
+    count = np.bincount(owner[faces], minlength=len(bodies))  # of each body
+    # every probe of each pair's inner body against the outer one; nested where none lies outside (and it has one)
+    pair = np.repeat(np.arange(len(inner)), count[inner])
+    inside = np.abs(_winding_numbers(corners, points[_ranges(np.cumsum(count)[inner] - count[inner], count[inner])], first[outer[pair]], size[outer[pair]])) > 0.5
+    return inward, np.bincount(inner[(np.bincount(pair, ~inside, minlength=len(inner)) == 0) & (count[inner] > 0)], minlength=len(bodies))
+
+
+def _ranges(starts: np.ndarray, counts: np.ndarray) -> np.ndarray:
+    """The ranges ``starts[i] .. starts[i] + counts[i] - 1`` one after another, (counts.sum(),) int64. O(sum)."""
+    return np.repeat(starts - np.cumsum(counts) + counts, counts) + np.arange(counts.sum())
+
+
+def _winding_numbers(corners: np.ndarray, points: np.ndarray, first: np.ndarray, size: np.ndarray, chunk: int = 1 << 20) -> np.ndarray:
+    """(q,) float64: how many times the closed surface of the triangles ``corners[first[i]:first[i] + size[i]]``
+    (corners (m, 3, 3), metres; first, size (q,) int64) winds round ``points[i]`` ((q, 3)): +-1 inside (the sign of
+    its signed volume), 0 outside. The sum of the solid angles the triangles subtend, each by A. van Oosterom and J.
+    Strackee's formula (IEEE Trans. Biomed. Eng. 30(2), 1983), over 4 pi; the points in parts of about ``chunk``
+    (point, triangle) rows, to bound the memory. O(size.sum())."""
+    winding = np.zeros(len(points))
+    for part in np.split(np.arange(len(points)), np.searchsorted(np.cumsum(size), np.arange(chunk, size.sum(), chunk))):
+        rows = corners[_ranges(first[part], size[part])] - np.repeat(points[part], size[part], axis=0)[:, None]  # (r, 3, 3)
+        (la, lb, lc), (a, b, c) = np.linalg.norm(rows, axis=2).T, np.moveaxis(rows, 1, 0)
+        angle = np.arctan2(np.linalg.det(rows), la * lb * lc + (a * b).sum(axis=1) * lc + (a * c).sum(axis=1) * lb + (b * c).sum(axis=1) * la)
+        winding[part] = np.bincount(np.repeat(np.arange(len(part)), size[part]), angle, minlength=len(part)) / (2 * np.pi)
+    return winding

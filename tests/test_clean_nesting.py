@@ -1,6 +1,7 @@
 """``mesh.clean`` winds closed shells as their nesting asks: a room inside a closed building faces into itself (its
 floor up), a crate in it faces out, and a body wound inside out is still turned (benchmarks/nested_shells.py's
-cases, docs/navmesh.md "Closed rooms inside closed rooms under mesh.clean")."""
+cases, docs/navmesh.md "Closed rooms inside closed rooms under mesh.clean"); the disconnected-areas warning reads
+each shell by the same rule."""
 
 from __future__ import annotations
 
@@ -8,7 +9,8 @@ import numpy as np
 import pytest
 import trimesh
 
-from g2s_core.mesh import _winding_number, clean_mesh
+from g2s_core.mesh import _winding_numbers, clean_mesh, flip_inside_out_bodies
+from g2s_plugins._raycasting import _Scene
 from tests.conftest import benchmark
 
 nested = benchmark("nested_shells")
@@ -19,13 +21,15 @@ TURNED = {"room_in_building": 0, "crate_in_room": 0, "rooms_in_rooms": 0, "crate
 file wound inside out whole."""
 
 
-def test_the_winding_number_of_a_cube():
-    cube = trimesh.creation.box(extents=(2.0, 2.0, 2.0))  # outward: +1 inside, 0 outside, -1 inside wound inward
-    corners = np.asarray(cube.triangles)
-    assert _winding_number(corners, np.zeros(3)) == pytest.approx(1.0)
-    assert _winding_number(corners, np.array([0.999, 0.999, -0.999])) == pytest.approx(1.0)
-    assert _winding_number(corners, np.array([1.001, 0.0, 0.0])) == pytest.approx(0.0, abs=1e-9)
-    assert _winding_number(corners[:, ::-1], np.zeros(3)) == pytest.approx(-1.0)
+@pytest.mark.parametrize("chunk", [1, 30, 1 << 20])
+def test_the_winding_numbers_of_a_cube_wound_either_way(chunk: int):
+    # faces 0-11 a 2 m cube wound outward (+1 inside, 0 outside), 12-23 the same wound inward (-1 inside); a chunk of
+    # 1 row tests each point alone, 30 splits the points' rows across chunks
+    cube = np.asarray(trimesh.creation.box(extents=(2.0, 2.0, 2.0)).triangles)
+    corners = np.concatenate([cube, cube[:, ::-1]])
+    points = np.array([[0.0, 0.0, 0.0], [0.999, 0.999, -0.999], [1.001, 0.0, 0.0], [0.0, 0.0, 0.0], [0.0, -1.5, 0.0]])
+    first, size = np.array([0, 0, 0, 12, 12]), np.full(5, 12)
+    assert _winding_numbers(corners, points, first, size, chunk) == pytest.approx([1.0, 1.0, 0.0, -1.0, 0.0], abs=1e-9)
 
 
 @pytest.mark.parametrize("yaw", [0.0, 22.0, 45.0])
@@ -45,6 +49,18 @@ def test_a_pillar_through_a_slab_and_boxes_side_by_side_are_not_nested():
     assert counts["flipped_bodies"] == 0
 
 
+@pytest.mark.parametrize("yaw", [0.0, 22.0, 45.0])
+def test_a_pillar_set_into_a_wall_is_in_no_wall_at_any_yaw(yaw: float):
+    # the pillar's back third lies in the wall, its back face in the wall's back face; turned, the wall's box holds the
+    # pillar's, and a point inside its back face lies in the wall, one inside its front face does not
+    wall = nested.shell((-12.0, 0.0, -0.3), (12.0, 3.2, 0.0), True)
+    pillar = nested.shell((-3.0, 0.0, -0.3), (-1.0, 3.2, 0.5), True)
+    mesh = nested.level([wall, pillar], yaw)
+    _, counts = clean_mesh(mesh)
+    assert counts["flipped_bodies"] == 0
+    assert (_Scene.of_mesh(mesh).winding == 1).all()  # both solids wound right to the warning too
+
+
 @pytest.mark.parametrize("builder", ["navmesh", "sampling"])
 def test_both_routes_walk_the_room_inside_the_building(builder: str):
     # the room's floor, 11.4 x 9.4 m at 0.3 m, less the agent's 0.5 m radius at its walls: 10.4 x 8.4 = 87.4 m^2
@@ -60,3 +76,22 @@ def test_a_room_alone_seen_from_inside_is_turned_as_before():
     room = nested.shell((0.0, 0.0, 0.0), (8.0, 3.0, 6.0), False)
     cleaned, counts = clean_mesh(room)
     assert counts["flipped_bodies"] == 1 and cleaned.volume > 0
+
+
+def test_the_flipped_crate_in_a_closed_room_is_a_solid_inside_out_to_the_warning_too():
+    # the building (faces 0-11) and its room (12-23) are wound right; the crate (24-35) stands in the room, depth 2,
+    # a solid, and is wound inward: the warning reads it inside out (-1), as mesh.clean turns it, not as a cavity
+    mesh = nested.level(nested.crate_flipped(), 22.0)
+    winding = _Scene.of_mesh(mesh).winding
+    assert winding.tolist() == [1] * 24 + [-1] * 12
+    _, turned = flip_inside_out_bodies(trimesh.Trimesh(mesh.vertices, mesh.faces, process=True))
+    assert [body.tolist() for body in turned] == [list(range(24, 36))]
+
+
+@pytest.mark.parametrize("name", sorted(TURNED))
+def test_the_warning_reads_each_shell_inside_out_where_cleaning_turns_it(name: str):
+    mesh = nested.level(nested.CASES[name](), 45.0)
+    _, turned = flip_inside_out_bodies(trimesh.Trimesh(mesh.vertices, mesh.faces, process=True))
+    winding = _Scene.of_mesh(mesh).winding
+    assert (winding != 0).all()  # every face is of a closed shell
+    assert np.flatnonzero(winding < 0).tolist() == sorted(face for body in turned for face in body.tolist())
