@@ -401,8 +401,8 @@ def flip_inside_out_bodies(mesh: trimesh.Trimesh) -> tuple[trimesh.Trimesh, list
     :func:`body_nesting`'s cost.
     """
     edges = mesh.edges.reshape(-1, 6)
-    bodies = [np.asarray(body) for body in trimesh.graph.connected_components(mesh.face_adjacency, min_len=4)
-              if all(trimesh.graph.is_watertight(edges[body].reshape(-1, 2)))]  # closed and wound one way
+    # the bodies closed and wound one way
+    bodies = [np.asarray(body) for body in trimesh.graph.connected_components(mesh.face_adjacency, min_len=4) if all(trimesh.graph.is_watertight(edges[body].reshape(-1, 2)))]
     inward, depth = body_nesting(np.asarray(mesh.triangles, dtype=np.float64), bodies)
     turned = [body for body, wound_in, nesting in zip(bodies, inward, depth) if wound_in != nesting % 2]
     flip = np.isin(np.arange(len(mesh.faces)), np.concatenate([np.zeros(0, dtype=np.int64), *turned]))
@@ -421,61 +421,51 @@ def body_nesting(triangles: np.ndarray, bodies: list[np.ndarray]) -> tuple[np.nd
     building faces into the room, its floor up, and a crate in that room faces out again (nested shells alternate
     so, as CGAL's ``Polygon_mesh_processing::orient_to_bound_a_volume`` orients them); a body is wound right where
     ``inward == depth % 2``. A body is in another when its box is in the other's and the middle of each of its faces
-    (of an area), moved just inside it, has a winding number of magnitude 1 about the other (:func:`_winding_numbers`):
+    (of an area), moved just inside it, has a winding number of magnitude 1 about the other (:func:`_winding_number`):
     a pillar through a slab is in no slab, nor a pillar set into a wall slab whose box holds the pillar's (the level
-    turned about the vertical). Array passes, no loop over bodies: O(n + b log b + C + Q F) for n faces of the
-    bodies, C pairs of one starting along x within the other's x range, and of the P pairs of one in the other's box,
-    Q = P + (f probes of each pair one probe leaves) tests of a point against F faces of the outer body.
+    turned about the vertical). The volumes, boxes and pairs of boxes one in the other are array passes over all
+    bodies; only the P pairs whose boxes nest are tested one by one, all probes of the inner body at once, in parts
+    of about 2^18 (probe, face) rows, stopping at the first part with a probe outside. O(n + b log b
+    + C + P + sum f F) for n faces, b bodies, C pairs of one starting along x within the other's x range, and f
+    faces of the inner body and F of the outer one of each of the P pairs.
     """
     size = np.array([len(body) for body in bodies], dtype=np.int64)
-    owner, first = np.repeat(np.arange(len(bodies)), size), np.cumsum(size) - size
-    corners = triangles[np.concatenate([np.zeros(0, dtype=np.int64), *bodies])]
+    if not len(bodies):
+        return np.zeros(0, dtype=bool), np.zeros(0, dtype=np.int64)
+    first, corners = np.cumsum(size) - size, triangles[np.concatenate(bodies)]
     lo, hi = (bound.reduceat(corners.reshape(-1, 3), 3 * first) for bound in (np.minimum, np.maximum))  # (b, 3) boxes
-    ends = np.vstack([lo, hi, np.zeros((1, 3))])  # the origin too: no bodies, no extent
-    inset = 1e-6 * float(np.ptp(ends, axis=0).max())  # m: off a face, into its own body
+    middle, inset = (lo.min(axis=0) + hi.max(axis=0)) / 2, 1e-6 * float((hi.max(axis=0) - lo.min(axis=0)).max())  # inset: m, off a face into its body
     # about the middle, where the sums lose less; the boxes as (3, b), each axis's row contiguous
-    corners, lo, hi = (array - (ends.min(axis=0) + ends.max(axis=0)) / 2 for array in (corners, lo, hi))
-    lo, hi = lo.T.copy(), hi.T.copy()
-    inward = np.bincount(owner, np.einsum("ij,ij->i", corners[:, 0], np.cross(corners[:, 1], corners[:, 2])), minlength=len(bodies)) < 0
-    # a box in another starts along x within the other's x range: each body's candidates are a range of the bodies
-    # sorted by their box's start, of which those ending within it along x, then along y and z
+    corners, lo, hi = corners - middle, (lo - middle).T.copy(), (hi - middle).T.copy()
+    inward = np.bincount(np.repeat(np.arange(len(bodies)), size), np.einsum("ij,ij->i", corners[:, 0], np.cross(corners[:, 1], corners[:, 2]))) < 0
+    # a box in another starts along x within the other's x range, a range of the bodies sorted by their box's start;
+    # of those, the boxes that end within it along x, then those within it along y and z
     by_start = np.argsort(lo[0], kind="stable")
     left = np.searchsorted(lo[0, by_start], lo[0] - inset)
     reach = np.searchsorted(lo[0, by_start], hi[0] + inset, side="right") - left
-    candidate = _ranges(left, reach)
+    candidate = np.repeat(left - np.cumsum(reach) + reach, reach) + np.arange(reach.sum())  # the ranges one after another
     held = hi[0, by_start][candidate] <= np.repeat(hi[0] + inset, reach)
     outer, inner = np.repeat(np.arange(len(bodies)), reach)[held], by_start[candidate[held]]
     for axis in (1, 2):
         held = (inner != outer) & (lo[axis, inner] >= lo[axis, outer] - inset) & (hi[axis, inner] <= hi[axis, outer] + inset)
         outer, inner = outer[held], inner[held]
-    # the middle of each face (of an area) of each body in another's box, just inside the face, in body order
-    held = np.unique(inner)
-    faces = _ranges(first[held], size[held])
-    normal = np.cross(corners[faces, 1] - corners[faces, 0], corners[faces, 2] - corners[faces, 0])  # length: twice the area
-    faces, normal = faces[np.any(normal != 0, axis=1)], normal[np.any(normal != 0, axis=1)]
-    points = corners[faces].mean(axis=1) + np.where(inward[owner[faces]], inset, -inset)[:, None] * normal / np.linalg.norm(normal, axis=1, keepdims=True)
-    count = np.bincount(owner[faces], minlength=len(bodies))  # of each body
-    # every probe of each pair's inner body against the outer one; nested where none lies outside (and it has one)
-    pair = np.repeat(np.arange(len(inner)), count[inner])
-    inside = np.abs(_winding_numbers(corners, points[_ranges(np.cumsum(count)[inner] - count[inner], count[inner])], first[outer[pair]], size[outer[pair]])) > 0.5
-    return inward, np.bincount(inner[(np.bincount(pair, ~inside, minlength=len(inner)) == 0) & (count[inner] > 0)], minlength=len(bodies))
+    depth = np.zeros(len(bodies), dtype=np.int64)
+    for holder, body in zip(outer, inner):
+        faces, around = corners[first[body]:first[body] + size[body]], corners[first[holder]:first[holder] + size[holder]]
+        normal = np.cross(faces[:, 1] - faces[:, 0], faces[:, 2] - faces[:, 0])  # length: twice the area
+        faces, normal = faces[np.any(normal != 0, axis=1)], normal[np.any(normal != 0, axis=1)]  # the faces of an area
+        probes = faces.mean(axis=1) + (inset if inward[body] else -inset) * normal / np.linalg.norm(normal, axis=1, keepdims=True)
+        # in parts of about 2^18 (probe, face) rows, some 50 MB of _winding_number's arrays, to the first part with a
+        # probe outside
+        depth[body] += len(probes) > 0 and all((np.abs(_winding_number(around, part)) > 0.5).all() for part in np.array_split(probes, max(1, len(probes) * len(around) >> 18)))
+    return inward, depth
 
 
-def _ranges(starts: np.ndarray, counts: np.ndarray) -> np.ndarray:
-    """The ranges ``starts[i] .. starts[i] + counts[i] - 1`` one after another, (counts.sum(),) int64. O(sum)."""
-    return np.repeat(starts - np.cumsum(counts) + counts, counts) + np.arange(counts.sum())
-
-
-def _winding_numbers(corners: np.ndarray, points: np.ndarray, first: np.ndarray, size: np.ndarray, chunk: int = 1 << 20) -> np.ndarray:
-    """(q,) float64: how many times the closed surface of the triangles ``corners[first[i]:first[i] + size[i]]``
-    (corners (m, 3, 3), metres; first, size (q,) int64) winds round ``points[i]`` ((q, 3)): +-1 inside (the sign of
-    its signed volume), 0 outside. The sum of the solid angles the triangles subtend, each by A. van Oosterom and J.
-    Strackee's formula (IEEE Trans. Biomed. Eng. 30(2), 1983), over 4 pi; the points in parts of about ``chunk``
-    (point, triangle) rows, to bound the memory. O(size.sum())."""
-    winding = np.zeros(len(points))
-    for part in np.split(np.arange(len(points)), np.searchsorted(np.cumsum(size), np.arange(chunk, size.sum(), chunk))):
-        rows = corners[_ranges(first[part], size[part])] - np.repeat(points[part], size[part], axis=0)[:, None]  # (r, 3, 3)
-        (la, lb, lc), (a, b, c) = np.linalg.norm(rows, axis=2).T, np.moveaxis(rows, 1, 0)
-        angle = np.arctan2(np.linalg.det(rows), la * lb * lc + (a * b).sum(axis=1) * lc + (a * c).sum(axis=1) * lb + (b * c).sum(axis=1) * la)
-        winding[part] = np.bincount(np.repeat(np.arange(len(part)), size[part]), angle, minlength=len(part)) / (2 * np.pi)
-    return winding
+def _winding_number(corners: np.ndarray, points: np.ndarray) -> np.ndarray:
+    """(k,) float64: how many times the closed surface of the triangles ``corners`` ((m, 3, 3), metres) winds round
+    each of ``points`` ((k, 3)): +-1 inside (the sign of its signed volume), 0 outside. The sum of the solid angles
+    the triangles subtend, each by A. van Oosterom and J. Strackee's formula (IEEE Trans. Biomed. Eng. 30(2), 1983),
+    over 4 pi. O(k m)."""
+    rows = corners[None] - points[:, None, None]  # (k, m, 3, 3)
+    (a, b, c), (la, lb, lc) = np.moveaxis(rows, 2, 0), np.moveaxis(np.linalg.norm(rows, axis=3), 2, 0)
+    return np.arctan2(np.linalg.det(rows), la * lb * lc + (a * b).sum(axis=2) * lc + (a * c).sum(axis=2) * lb + (b * c).sum(axis=2) * la).sum(axis=1) / (2 * np.pi)

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 import trimesh
 
-from g2s_core.mesh import _winding_numbers, clean_mesh, flip_inside_out_bodies
+from g2s_core.mesh import _winding_number, body_nesting, clean_mesh, flip_inside_out_bodies
 from g2s_plugins._raycasting import _Scene
 from tests.conftest import benchmark
 
@@ -21,15 +21,21 @@ TURNED = {"room_in_building": 0, "crate_in_room": 0, "rooms_in_rooms": 0, "crate
 file wound inside out whole."""
 
 
-@pytest.mark.parametrize("chunk", [1, 30, 1 << 20])
-def test_the_winding_numbers_of_a_cube_wound_either_way(chunk: int):
-    # faces 0-11 a 2 m cube wound outward (+1 inside, 0 outside), 12-23 the same wound inward (-1 inside); a chunk of
-    # 1 row tests each point alone, 30 splits the points' rows across chunks
-    cube = np.asarray(trimesh.creation.box(extents=(2.0, 2.0, 2.0)).triangles)
-    corners = np.concatenate([cube, cube[:, ::-1]])
-    points = np.array([[0.0, 0.0, 0.0], [0.999, 0.999, -0.999], [1.001, 0.0, 0.0], [0.0, 0.0, 0.0], [0.0, -1.5, 0.0]])
-    first, size = np.array([0, 0, 0, 12, 12]), np.full(5, 12)
-    assert _winding_numbers(corners, points, first, size, chunk) == pytest.approx([1.0, 1.0, 0.0, -1.0, 0.0], abs=1e-9)
+def test_the_winding_number_of_a_cube():
+    cube = trimesh.creation.box(extents=(2.0, 2.0, 2.0))  # outward: +1 inside, 0 outside, -1 inside wound inward
+    corners = np.asarray(cube.triangles)
+    points = np.array([[0.0, 0.0, 0.0], [0.999, 0.999, -0.999], [1.001, 0.0, 0.0], [0.0, -1.5, 0.0]])
+    assert _winding_number(corners, points) == pytest.approx([1.0, 1.0, 0.0, 0.0], abs=1e-9)
+    assert _winding_number(corners[:, ::-1], points) == pytest.approx([-1.0, -1.0, 0.0, 0.0], abs=1e-9)
+
+
+def test_a_hollow_of_many_faces_is_tested_in_parts():
+    # a sphere of 1 m (320 faces) wound inward inside one of 2 m (5,120 faces): 1.6 million (probe, face) rows, in 6
+    # parts; the hollow lies inside (depth 1) and is wound as a hollow is
+    outer, inner = trimesh.creation.icosphere(subdivisions=4, radius=2.0), trimesh.creation.icosphere(subdivisions=2)
+    mesh = trimesh.util.concatenate([outer, trimesh.Trimesh(inner.vertices, inner.faces[:, ::-1], process=False)])
+    inward, depth = body_nesting(np.asarray(mesh.triangles), [np.arange(5120), np.arange(5120, 5440)])
+    assert inward.tolist() == [False, True] and depth.tolist() == [0, 1]
 
 
 @pytest.mark.parametrize("yaw", [0.0, 22.0, 45.0])
