@@ -47,6 +47,26 @@ def test_cleaning_winds_each_shell_as_its_nesting_asks(name: str, yaw: float):
     assert counts["flipped_bodies"] == TURNED[name]
 
 
+@pytest.mark.parametrize("name", sorted(TURNED))
+def test_the_nesting_is_the_same_a_thousand_kilometres_from_the_origin(name: str):
+    # the inset and the middle come from the bodies' own boxes: an extent that took in the origin made the inset 1.4 m
+    # at 1e6 m and a building's shell read as inside its own room
+    mesh = nested.level(nested.CASES[name](), 22.0)
+    far = mesh.copy()
+    far.apply_translation((1e6, 0.0, 1e6))
+    assert clean_mesh(far)[1]["flipped_bodies"] == clean_mesh(mesh)[1]["flipped_bodies"] == TURNED[name]
+    assert (_Scene.of_mesh(far).winding == _Scene.of_mesh(mesh).winding).all()
+
+
+def test_a_rock_sunk_into_a_closed_terrain_is_in_no_terrain():
+    # the rock's box lies in the terrain block's; its probe farthest from the block's middle, on its top, is out
+    terrain = nested.shell((0.0, -2.0, 0.0), (40.0, 0.0, 40.0), True)
+    rock = trimesh.creation.icosphere(subdivisions=1, radius=0.6)
+    rock.apply_translation((12.0, -0.3, 17.0))
+    _, counts = clean_mesh(trimesh.util.concatenate([terrain, rock]))
+    assert counts["flipped_bodies"] == 0
+
+
 def test_a_pillar_through_a_slab_and_boxes_side_by_side_are_not_nested():
     slab = nested.shell((0.0, 1.0, 0.0), (6.0, 1.3, 6.0), True)
     pillar = nested.shell((2.0, 0.0, 2.0), (2.5, 3.0, 2.5), True)  # its largest face's middle lies in the slab
