@@ -1,5 +1,5 @@
-"""The ``g2s`` command line: run a config on a mesh, list presets and plugins, and the commands that plugins add
-(stage ``commands``: ``g2s demo``, ``g2s batch``).
+"""The ``g2s`` command line: run a config on a mesh, and the commands that plugins add (stage ``commands``: ``g2s
+batch``, ``g2s demo``, ``g2s plugins``, ``g2s presets``).
 
 Exit codes: 0 success; 2 bad input or config (one line on stderr, no
 traceback); 1 a plugin that could not be loaded, raised an exception or
@@ -138,9 +138,6 @@ def _parser() -> tuple[argparse.ArgumentParser, dict[str, Callable[[argparse.Nam
     run.add_argument("-o", "--outdir", type=output_folder, required=True, help="folder for the results")
     add_output_options(run)
 
-    commands.add_parser("presets", parents=[common], help="list the preset configs and what each is for",
-                        description="List the preset configs and what each is for.", epilog=EXIT_CODES)
-
     registry, plugged = installed(), {}
     for info in registry.plugins("commands"):
         if info.name in commands.choices:  # g2s's own commands keep their names
@@ -192,7 +189,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     errors = Output(stderr=True)  # no emoji: `level:fire:.obj: no such mesh file` named the file with a flame
     if not args.verbose:  # a library's logged warning (matplotlib's, under a HOME it cannot write) added lines to stderr
         logging.getLogger().addHandler(_NO_LOG)
-    own = {"run": lambda a: run_command(a, errors), "presets": lambda _: _presets()}
+    own = {"run": lambda a: run_command(a, errors)}
     with warnings.catch_warnings(), interrupts_held(hold=False):  # numpy's warnings (a 1e300 coordinate overflowing) would add lines to the one line of stderr
         warnings.simplefilter("default" if args.verbose else "ignore", RuntimeWarning)
         try:
@@ -305,12 +302,6 @@ def stage_table(result: RunResult, title: str = "") -> Table:
     for row in stage_rows(result.stages):
         table.add_row(*row, style="bold" if row[0] == "total" else None)
     return table
-
-
-def _presets() -> int:
-    console = Output()
-    console.print("\n".join(columns(list(presets().items()), console.width, 0)), markup=False, highlight=False, soft_wrap=True)
-    return 0
 
 
 def columns(rows: Sequence[tuple[str, str]], width: int, indent: int) -> list[str]:

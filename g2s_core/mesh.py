@@ -392,47 +392,82 @@ def wind_bodies_one_way(mesh: trimesh.Trimesh) -> tuple[trimesh.Trimesh, int]:
 
 
 def flip_inside_out_bodies(mesh: trimesh.Trimesh) -> tuple[trimesh.Trimesh, list[np.ndarray]]:
-    """A copy of ``mesh`` whose closed bodies wound against their nesting are wound the other way, and the face
-    indices of each such body.
+    """A copy of ``mesh`` whose closed bodies wound against their nesting (:func:`body_nesting`) are wound the
+    other way, and the face indices of each such body.
 
     Recast and the sampler walk only on faces whose normal points up, so an inside-out floor offers its underside. A
-    body (faces joined by shared edges: coincident vertices must be merged) that is closed and wound one way bounds a
-    region. Inside k other such regions it is a solid's outside at even k, wound outward (positive signed volume),
-    and the inside of a solid's hollow at odd k, wound inward: a room inside a closed building faces into the room,
-    its floor up, and a crate in that room faces out again (nested shells alternate so, as CGAL's
-    ``Polygon_mesh_processing::orient_to_bound_a_volume`` orients them). A body is in another when its box is in
-    the other's and a point just inside its largest face has a winding number of magnitude 1 about the other
-    (:func:`_winding_number`): a pillar through a slab is in no slab. Open bodies are left alone, as their inside is
-    not defined. O(b log b + C + P F) for b closed bodies, C pairs of one starting along x within the other's x
-    range, P pairs of one in the other's box and F faces of the outer one.
+    body here is faces joined by shared edges (coincident vertices must be merged) that is closed and wound one way;
+    open bodies are left alone, as their inside is not defined. O(F) over trimesh's components, then
+    :func:`body_nesting`'s cost.
     """
-    corners = np.asarray(mesh.triangles) - mesh.bounds.mean(axis=0)  # about the middle: the sums lose less
     edges = mesh.edges.reshape(-1, 6)
-    bodies = [np.asarray(body) for body in trimesh.graph.connected_components(mesh.face_adjacency, min_len=4)
-              if all(trimesh.graph.is_watertight(edges[body].reshape(-1, 2)))]  # closed and wound one way
-    inward = np.array([np.linalg.det(corners[body]).sum() < 0 for body in bodies], dtype=bool)  # six signed volumes
-    lo, hi = (np.array([bound(corners[body], axis=(0, 1)) for body in bodies]).reshape(-1, 3) for bound in (np.min, np.max))
-    largest = np.array([body[np.argmax(mesh.area_faces[body])] for body in bodies], dtype=np.int64)
-    inset = 1e-6 * float(np.ptp(corners.reshape(-1, 3), axis=0).max())  # m: off the face, into its own body
-    probes = corners[largest].mean(axis=1) + np.where(inward, inset, -inset)[:, None] * mesh.face_normals[largest]
-    depth = np.zeros(len(bodies), dtype=np.int64)
-    by_start = np.argsort(lo[:, 0], kind="stable")  # a box in another starts along x within the other's x range
-    for outer, body in enumerate(bodies):
-        near = by_start[np.searchsorted(lo[by_start, 0], lo[outer, 0] - inset):
-                        np.searchsorted(lo[by_start, 0], hi[outer, 0] + inset, side="right")]
-        for inner in near[np.all((lo[near] >= lo[outer] - inset) & (hi[near] <= hi[outer] + inset), axis=1)]:
-            depth[inner] += inner != outer and abs(_winding_number(corners[body], probes[inner])) > 0.5
+    # the bodies closed and wound one way
+    bodies = [np.asarray(body) for body in trimesh.graph.connected_components(mesh.face_adjacency, min_len=4) if all(trimesh.graph.is_watertight(edges[body].reshape(-1, 2)))]
+    inward, depth = body_nesting(np.asarray(mesh.triangles, dtype=np.float64), bodies)
     turned = [body for body, wound_in, nesting in zip(bodies, inward, depth) if wound_in != nesting % 2]
     flip = np.isin(np.arange(len(mesh.faces)), np.concatenate([np.zeros(0, dtype=np.int64), *turned]))
     return trimesh.Trimesh(mesh.vertices, np.where(flip[:, None], mesh.faces[:, ::-1], mesh.faces), process=False), turned
 
 
-def _winding_number(corners: np.ndarray, point: np.ndarray) -> float:
-    """How many times the closed surface of the triangles ``corners`` ((m, 3, 3), metres) winds round ``point``
-    ((3,)): +-1 inside (the sign of its signed volume), 0 outside. The sum of the solid angles the triangles subtend,
-    each by A. van Oosterom and J. Strackee's formula (IEEE Trans. Biomed. Eng. 30(2), 1983), over 4 pi. O(m)."""
-    a, b, c = np.moveaxis(corners - point, 1, 0)
-    la, lb, lc = np.linalg.norm(corners - point, axis=2).T
-    dot = lambda u, v: np.einsum("ij,ij->i", u, v)  # noqa: E731
-    return float(np.arctan2(np.linalg.det(corners - point), la * lb * lc + dot(a, b) * lc + dot(a, c) * lb + dot(b, c) * la).sum()
-                 / (2 * np.pi))
+def body_nesting(triangles: np.ndarray, bodies: list[np.ndarray]) -> tuple[np.ndarray, np.ndarray]:
+    """How each closed body wants to be wound: ``(inward, depth)``, (b,) bool (its signed volume is negative) and
+    (b,) int64 (how many other bodies of ``bodies`` hold it), for ``bodies``, b arrays of indices into ``triangles``
+    ((m, 3, 3), metres), each a closed body wound one way. The one rule of what a closed body inside out is, read by
+    :func:`flip_inside_out_bodies` and by the sampling route's closed-solid test
+    (``g2s_plugins._raycasting._Scene.winding``).
+
+    A closed body bounds a region. Inside k other such regions it is a solid's outside at even k, wound outward
+    (positive signed volume), and the inside of a solid's hollow at odd k, wound inward: a room inside a closed
+    building faces into the room, its floor up, and a crate in that room faces out again (nested shells alternate
+    so, as CGAL's ``Polygon_mesh_processing::orient_to_bound_a_volume`` orients them); a body is wound right where
+    ``inward == depth % 2``. A body is in another when its box is in the other's and the middle of each of its faces
+    (of an area), moved just inside it, has a winding number of magnitude 1 about the other (:func:`_winding_number`):
+    a pillar through a slab is in no slab, nor a pillar set into a wall slab whose box holds the pillar's (the level
+    turned about the vertical). The volumes, boxes and pairs of boxes one in the other are array passes over all
+    bodies; only the P pairs whose boxes nest are tested one by one: the inner body's probe farthest from the outer's
+    middle first, then its other probes at once, in parts of about 2^18 (probe, face) rows, stopping at the first
+    part with a probe outside. O(n + b log b + C + P + sum f F) for n faces, b bodies, C pairs of one starting along x
+    within the other's x range, and f faces of the inner body and F of the outer one of each of the P pairs (f is 1
+    for a pair whose farthest probe is out).
+    """
+    size = np.array([len(body) for body in bodies], dtype=np.int64)
+    if not len(bodies):
+        return np.zeros(0, dtype=bool), np.zeros(0, dtype=np.int64)
+    first, corners = np.cumsum(size) - size, triangles[np.concatenate(bodies)]
+    lo, hi = (bound.reduceat(corners.reshape(-1, 3), 3 * first) for bound in (np.minimum, np.maximum))  # (b, 3) boxes
+    middle, inset = (lo.min(axis=0) + hi.max(axis=0)) / 2, 1e-6 * float((hi.max(axis=0) - lo.min(axis=0)).max())  # inset: m, off a face into its body
+    # about the middle, where the sums lose less; the boxes as (3, b), each axis's row contiguous
+    corners, lo, hi = corners - middle, (lo - middle).T.copy(), (hi - middle).T.copy()
+    inward = np.bincount(np.repeat(np.arange(len(bodies)), size), np.einsum("ij,ij->i", corners[:, 0], np.cross(corners[:, 1], corners[:, 2]))) < 0
+    # a box in another starts along x within the other's x range, a range of the bodies sorted by their box's start;
+    # of those, the boxes that end within it along x, then those within it along y and z
+    by_start = np.argsort(lo[0], kind="stable")
+    left = np.searchsorted(lo[0, by_start], lo[0] - inset)
+    reach = np.searchsorted(lo[0, by_start], hi[0] + inset, side="right") - left
+    candidate = np.repeat(left - np.cumsum(reach) + reach, reach) + np.arange(reach.sum())  # the ranges one after another
+    held = hi[0, by_start][candidate] <= np.repeat(hi[0] + inset, reach)
+    outer, inner = np.repeat(np.arange(len(bodies)), reach)[held], by_start[candidate[held]]
+    held = (inner != outer) & np.all((lo[1:, inner] >= lo[1:, outer] - inset) & (hi[1:, inner] <= hi[1:, outer] + inset), axis=0)
+    outer, inner = outer[held], inner[held]
+    depth = np.zeros(len(bodies), dtype=np.int64)
+    for holder, body in zip(outer, inner):
+        faces, around = corners[first[body]:first[body] + size[body]], corners[first[holder]:first[holder] + size[holder]]
+        normal = np.cross(faces[:, 1] - faces[:, 0], faces[:, 2] - faces[:, 0])  # length: twice the area
+        faces, normal = faces[np.any(normal != 0, axis=1)], normal[np.any(normal != 0, axis=1)]  # the faces of an area
+        probes = faces.mean(axis=1) + (inset if inward[body] else -inset) * normal / np.linalg.norm(normal, axis=1, keepdims=True)
+        # the probe farthest from the holder's middle first, alone: of a body sunk into another (a rock into a closed
+        # terrain) it is likely out, and one probe costs F; then the rest in parts of about 2^18 (probe, face) rows,
+        # some 50 MB of _winding_number's arrays, to the first part with a probe outside
+        probes = probes[np.argsort(-np.linalg.norm(probes - (lo[:, holder] + hi[:, holder]) / 2, axis=1), kind="stable")]
+        depth[body] += len(probes) > 0 and all((np.abs(_winding_number(around, part)) > 0.5).all() for part in [probes[:1], *np.array_split(probes[1:], max(1, len(probes) * len(around) >> 18))])
+    return inward, depth
+
+
+def _winding_number(corners: np.ndarray, points: np.ndarray) -> np.ndarray:
+    """(k,) float64: how many times the closed surface of the triangles ``corners`` ((m, 3, 3), metres) winds round
+    each of ``points`` ((k, 3)): +-1 inside (the sign of its signed volume), 0 outside. The sum of the solid angles
+    the triangles subtend, each by A. van Oosterom and J. Strackee's formula (IEEE Trans. Biomed. Eng. 30(2), 1983),
+    over 4 pi. O(k m)."""
+    rows = corners[None] - points[:, None, None]  # (k, m, 3, 3)
+    (a, b, c), (la, lb, lc) = np.moveaxis(rows, 2, 0), np.moveaxis(np.linalg.norm(rows, axis=3), 2, 0)
+    return np.arctan2(np.einsum("...i,...i", a, np.cross(b, c)), la * lb * lc + (a * b).sum(axis=2) * lc + (a * c).sum(axis=2) * lb + (b * c).sum(axis=2) * la).sum(axis=1) / (2 * np.pi)

@@ -38,6 +38,7 @@ from scipy import sparse
 from scipy.sparse import csgraph
 from trimesh import util
 
+from g2s_core.mesh import body_nesting
 from g2s_plugins import _slabs, _walks
 from g2s_plugins.local_frame import LocalFrame
 
@@ -156,25 +157,19 @@ class _Scene:
 
     @cached_property
     def winding(self) -> np.ndarray:
-        """(m,) int8: +1 on a closed body wound outward (its signed volume positive) and on a cavity (a body of
-        negative volume strictly within the bounding box of one of positive volume: a closed room's inner shell),
-        -1 on any other body wound inside out (a solid exported with flipped normals), 0 on triangles of no closed
-        body. O(m) over :attr:`bodies`, and O(i o) box tests for the i bodies wound inside out and o outward."""
+        """(m,) int8: +1 on a closed body (:attr:`bodies`) wound as its nesting wants it, -1 on one wound against it
+        (a solid exported with flipped normals), 0 on triangles of no closed body. The nesting is the core's, the rule
+        ``mesh.clean`` turns bodies by (:func:`g2s_core.mesh.body_nesting`): a body inside an even number of others is
+        a solid, wound outward (positive signed volume), inside an odd number a hollow (a closed room's inner shell),
+        wound inward, whose faces already face out of the solid. The bodies are this scene's, so that bodies touching
+        along an edge (paired round it) count as the closed bodies they are. O(m) over :attr:`bodies`, then
+        :func:`~g2s_core.mesh.body_nesting`'s cost."""
         closed = np.flatnonzero(self.closed)
         sign = np.zeros(len(self.triangles), dtype=np.int8)
         if len(closed):
-            labels, body = np.unique(self.bodies[closed], return_inverse=True)
-            corners = self.triangles[closed]
-            corners = corners - corners.reshape(-1, 3).mean(axis=0)  # about the middle: the volumes' sums lose less
-            volume = np.sign(np.bincount(body, np.einsum("ij,ij->i", corners[:, 0], np.cross(corners[:, 1], corners[:, 2]))))
-            # a body wound inside out within the box of one wound outward is its cavity (a closed room's inner
-            # shell), whose faces already face out of the solid
-            low, high = _body_boxes(self.triangles[closed], body, len(labels))
-            inward, outward = np.flatnonzero(volume < 0), np.flatnonzero(volume > 0)
-            if len(inward) and len(outward):
-                within = ((low[inward, None] > low[None, outward]) & (high[inward, None] < high[None, outward])).all(axis=2)
-                volume[inward[within.any(axis=1)]] = 1
-            sign[closed] = volume[body]
+            _, body = np.unique(self.bodies[closed], return_inverse=True)
+            inward, depth = body_nesting(self.triangles, np.split(closed[np.argsort(body, kind="stable")], np.cumsum(np.bincount(body))[:-1]))
+            sign[closed] = np.where(inward == depth % 2, 1, -1)[body]
         return sign
 
     @cached_property
@@ -617,16 +612,6 @@ def _paired_round_edges(triangles: np.ndarray, sides: np.ndarray, edge: np.ndarr
     sound = np.bincount(group, weights=~mutual, minlength=len(edges)) == 0
     keep = mutual & (np.arange(len(sides)) < mate)
     return sides[keep], sides[mate[keep]], sound
-
-
-def _body_boxes(triangles: np.ndarray, body: np.ndarray, count: int) -> tuple[np.ndarray, np.ndarray]:
-    """(b, 3) lowest and (b, 3) highest corner of each of ``count`` bodies, ``body`` (k,) the body of each of the
-    triangles (k, 3, 3). O(k)."""
-    low = np.full((count, 3), np.inf)
-    high = np.full((count, 3), -np.inf)
-    np.minimum.at(low, body, triangles.min(axis=1))
-    np.maximum.at(high, body, triangles.max(axis=1))
-    return low, high
 
 
 def _flush_pairs(triangles: np.ndarray, bodies: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

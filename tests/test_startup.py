@@ -14,7 +14,7 @@ import pytest
 from tests.conftest import PROJECT
 
 COMMANDS_AND_WRITERS = {"g2s_plugins.batch", "g2s_plugins.batch.command", "g2s_plugins.batch.runner", "g2s_plugins.demo",
-                        "g2s_plugins.plugin_list",
+                        "g2s_plugins.plugin_list", "g2s_plugins.preset_list",
                         "g2s_plugins.outputs", "g2s_plugins.outputs.writers"}
 """The plugin modules the parser needs: the commands it offers and the writers `g2s run --help` names."""
 HEAVY = ("trimesh", "scipy", "networkx", "numpy", "pymeshlab", "rustworkx", "igraph", "plotly", "matplotlib", "PIL")
