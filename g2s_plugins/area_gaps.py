@@ -4,7 +4,7 @@ edges of the level's walkable ground, not between the nodes' centres.
 The disconnected-areas warning (:mod:`g2s_core.disconnected`) names the cause
 between the largest area and the nearest of the others a designer means to
 join to it (:func:`joined_areas`: those of at least
-:data:`JOINED_AREA_SHARE` of its walkable surface, and the second largest),
+:data:`JOINED_AREA_SHARE` of its walkable surface; with none, every area),
 with that area's size; both graph builders set ``context.likely_cause`` to
 :func:`likely_cause_of` their ground.
 
@@ -85,9 +85,9 @@ Rim = Callable[[nx.Graph, Sequence[int]], Ground]
 JOINED_AREA_SHARE = 0.1
 """The share of the largest area's walkable surface from which another area is one a designer means to join to it
 (:func:`joined_areas`): an island, a floe, a wing cut off. Smaller ones (a floor boxed in a pillar, a crate's top, a
-pocket behind props) are left out of the cause, however near: on ``nav_test.obj`` a floor of 6 m² boxed in 0.2 m
-from the largest area would hide the 4.7 m gap between its areas of 1,744 and 895 m² (docs/analysis_quality.md,
-"The disconnected-areas warning's nearest area")."""
+pocket behind props) are left out of the cause, however near, when such an area exists: on ``nav_test.obj`` a floor
+of 6 m² boxed in 0.2 m from the largest area would hide the 4.7 m gap between its areas of 1,744 and 895 m²
+(docs/analysis_quality.md, "The disconnected-areas warning's nearest area")."""
 
 MAX_PLACE_CANDIDATES = 1024
 """Edge pairs at most that :func:`where_between` tests (more, which takes 256 m of edge points a cell apart all within
@@ -261,17 +261,19 @@ def likely_cause(step: float, gap: float, agent: AgentConfig) -> str:
 
 
 def joined_areas(graph: nx.Graph, largest: Sequence[int], others: Sequence[Sequence[int]]) -> list[int]:
-    """Indices of the areas of ``others`` (node lists of areas of ``graph``, largest first) that a designer means to
-    join to ``largest``: those of at least :data:`JOINED_AREA_SHARE` of its walkable surface (m²), and the first,
-    so that a level of one large area and crumbs still names one. O(nodes)."""
+    """Indices of the areas of ``others`` (node lists of areas of ``graph``) that a designer means to join to
+    ``largest``: those of at least :data:`JOINED_AREA_SHARE` of its walkable surface (m²); with none, every one, as
+    all that is cut off from one large area is then small (a collision hull's floor beside a square: that floor,
+    not the next in size). O(nodes)."""
     least = JOINED_AREA_SHARE * area_summary(graph, largest)[0]
-    return [k for k, other in enumerate(others) if k == 0 or area_summary(graph, other)[0] >= least]
+    joined = [k for k, other in enumerate(others) if area_summary(graph, other)[0] >= least]
+    return joined or list(range(len(others)))
 
 
 def areas_cause(graph: nx.Graph, largest: Sequence[int], others: Sequence[Sequence[int]], agent: AgentConfig,
                 rim: Rim, mesh: trimesh.Trimesh | None = None) -> str:
-    """The likely cause between ``largest`` and the nearest of ``others`` (node lists of areas of ``graph``, largest
-    first) of those :func:`joined_areas` keeps, with its size and where, e.g. ``from the largest area to the nearest
+    """The likely cause between ``largest`` and the nearest of ``others`` (node lists of areas of ``graph``) of
+    those :func:`joined_areas` keeps, with its size and where, e.g. ``from the largest area to the nearest
     of 412 m², a step of about 0.6 m, ..., e.g. between (x, y, z m) and (x, y, z m)``. The nearest is the one whose
     ground's edges come closest (gap and rise, :func:`closest_step_for`), not the next in size: of a frozen lake's
     floes, the one across a crack, not a floe beyond it.

@@ -260,11 +260,13 @@ def test_the_floe_across_a_crack_is_named_not_the_next_in_size_beyond_it():
                             "e.g. between (19.5, 0.0, 0.5 m) and (20.8, 0.0, 0.5 m).")
 
 
-def test_crumbs_alone_name_the_second_largest():
-    """A floor of 30 m² and only crumbs (2 and 1 m², under a tenth of it): the second largest is measured however far."""
+def test_crumbs_alone_name_the_nearest_of_them():
+    """A floor of 30 m² and only crumbs (four of 2 m² 10-40 m away, one of 1 m² 1 m away, all under a tenth of it):
+    the nearest crumb is measured, the fifth after the largest in size, which the four next in size left out."""
     graph = nx.Graph()
     slab(graph, 0.0, 0.0, 30, 0)
-    slab(graph, 40.0, 0.0, 2, 100)
-    slab(graph, 31.0, 0.0, 1, 200)
-    message = disconnected_warning(graph, areas(graph), 3, SAMPLED)
-    assert "Likely cause: from the largest area to the nearest of 2 m², " in message and "about 10.0 m apart" in message
+    for index in range(4):
+        slab(graph, 40.0 + 10.0 * index, 0.0, 2, 100 * (index + 1))
+    slab(graph, 31.0, 0.0, 1, 1000)
+    message = disconnected_warning(graph, areas(graph), 6, SAMPLED)
+    assert "Likely cause: from the largest area to the nearest of 1 m², " in message and "about 1.0 m apart" in message
