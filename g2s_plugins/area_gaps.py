@@ -47,9 +47,10 @@ disconnected-areas warning names"). *A floor shut inside a closed solid*
 each body by its own winding, so that a mesh exported inside out reads as
 the same mesh wound right.
 
-Complexity: O(n) for the areas' n nodes (their sizes), then O(e log e) for
-the e edge points of the compared areas (a k-d tree per pair of areas), e =
-the areas' polygon perimeter / ``cell_size`` on
+Complexity: O(n) for the areas' n nodes (their sizes), O(e log e) for the e
+edge points of the joined areas (one k-d tree of the largest's, to find the
+:data:`COMPARED_AREAS` nearest), then a k-d tree per pair measured, e = the
+areas' polygon perimeter / ``cell_size`` on
 the navmesh route, their sample count on the sampling route; with the mesh,
 O(m log m) for its m faces' closed bodies and up to 9 rays for each of at most
 ``MAX_PLACE_CANDIDATES`` pairs.
@@ -88,6 +89,10 @@ JOINED_AREA_SHARE = 0.1
 pocket behind props) are left out of the cause, however near, when such an area exists: on ``nav_test.obj`` a floor
 of 6 m² boxed in 0.2 m from the largest area would hide the 4.7 m gap between its areas of 1,744 and 895 m²
 (docs/analysis_quality.md, "The disconnected-areas warning's nearest area")."""
+
+COMPARED_AREAS = 4
+"""How many of the joined areas nearest the largest (:func:`nearest_areas`, straight-line) are measured for the closest
+gap and rise: a bound on the cost when a level is in hundreds of pieces."""
 
 MAX_PLACE_CANDIDATES = 1024
 """Edge pairs at most that :func:`where_between` tests (more, which takes 256 m of edge points a cell apart all within
@@ -270,6 +275,17 @@ def joined_areas(graph: nx.Graph, largest: Sequence[int], others: Sequence[Seque
     return joined or list(range(len(others)))
 
 
+def nearest_areas(ground: Ground, others: Sequence[Ground], count: int) -> np.ndarray:
+    """Indices of the ``count`` areas of ``others`` (each its :func:`ground_rim`) whose edge points come nearest
+    ``ground``'s, straight-line distance, nearest first (ties: the earlier). One k-d tree of ``ground``'s k points
+    queried with the others' e points, O((k + e) log k), so only ``count`` pairs are measured with
+    :func:`closest_step_for`."""
+    owner = np.repeat(np.arange(len(others)), [len(other[0]) for other in others])
+    distance = np.full(len(others), np.inf)
+    np.minimum.at(distance, owner, cKDTree(ground[0]).query(np.concatenate([other[0] for other in others]))[0])
+    return np.argsort(distance, kind="stable")[:count]
+
+
 def areas_cause(graph: nx.Graph, largest: Sequence[int], others: Sequence[Sequence[int]], agent: AgentConfig,
                 rim: Rim, mesh: trimesh.Trimesh | None = None) -> str:
     """The likely cause between ``largest`` and the nearest of ``others`` (node lists of areas of ``graph``) of
@@ -285,8 +301,10 @@ def areas_cause(graph: nx.Graph, largest: Sequence[int], others: Sequence[Sequen
     door or plank too narrow for the agent, or the run of a wall or chasm.
     """
     ground = rim(graph, largest)  # once, however many areas it is compared with
-    closest, nearest = min(((closest_step_for(ground, rim(graph, others[k]), agent), others[k])
-                            for k in joined_areas(graph, largest, others)),
+    joined = joined_areas(graph, largest, others)
+    grounds = [rim(graph, others[k]) for k in joined]
+    closest, nearest = min(((closest_step_for(ground, grounds[k], agent), others[joined[k]])
+                            for k in nearest_areas(ground, grounds, COMPARED_AREAS)),
                            key=lambda pair: math.hypot(pair[0].gap, pair[0].step))
     size, middle = area_summary(graph, nearest)
     return f"from the largest area to the nearest of {size:,.0f} m², {nearest_cause(closest, middle, agent, mesh)}"
