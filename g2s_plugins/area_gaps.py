@@ -307,7 +307,7 @@ def areas_cause(graph: nx.Graph, largest: Sequence[int], others: Sequence[Sequen
                             for k in nearest_areas(ground, grounds, COMPARED_AREAS)),
                            key=lambda pair: math.hypot(pair[0].gap, pair[0].step))
     size, middle = area_summary(graph, nearest)
-    return f"from the largest area to the nearest of {size:,.0f} m², {nearest_cause(closest, middle, agent, mesh)}"
+    return f"from the largest area to the nearest area of {size:,.0f} m², {nearest_cause(closest, middle, agent, mesh)}"
 
 
 def nearest_cause(closest: Closest, middle: np.ndarray, agent: AgentConfig, mesh: trimesh.Trimesh | None) -> str:

@@ -84,12 +84,12 @@ def test_the_floor_inside_a_closed_box_is_named_as_such():
     mesh = trimesh.util.concatenate([floor, box])
     navmesh, graph = navmesh_of([(0.5, 9.5, 0.5, 29.5, 0.0), (10.5, 15.5, 10.5, 15.5, 0.0)])
     message = disconnected_warning(graph, areas(graph), 2, likely_cause_of(AgentConfig(), navmesh, mesh=mesh))
-    assert "Likely cause: from the largest area to the nearest of 25 m², a floor shut inside a closed solid (a box or " \
+    assert "Likely cause: from the largest area to the nearest area of 25 m², a floor shut inside a closed solid (a box or " \
            "collision hull exported with the level), at the same height, its ground about 0.0 m from the other's, " \
            "e.g. between (9.5, 0.0, " in message
     top, graph = navmesh_of([(0.5, 9.5, 0.5, 29.5, 0.0), (10.5, 15.5, 10.5, 15.5, 3.0)])  # the box's top instead
     message = disconnected_warning(graph, areas(graph), 2, likely_cause_of(AgentConfig(), top, mesh=mesh))
-    assert "Likely cause: from the largest area to the nearest of 25 m², separate floors (3.0 m apart)" in message
+    assert "Likely cause: from the largest area to the nearest area of 25 m², separate floors (3.0 m apart)" in message
 
 
 def boxes(*extents: tuple[float, float, float, float, float, float]) -> trimesh.Trimesh:
@@ -168,7 +168,7 @@ def test_a_mesh_wound_inside_out_reads_as_wound_right():
             assert shut_in(RayCaster(wound), np.array([point]), agent).tolist() == [inside]
     floor, box_only = navmesh_of([(0.5, 9.5, 0.5, 24.5, 0.0), (10.5, 15.5, 10.5, 15.5, 0.0)])
     message = disconnected_warning(box_only, areas(box_only), 2, likely_cause_of(AgentConfig(), floor, mesh=flipped(box)))
-    assert "Likely cause: from the largest area to the nearest of 25 m², a floor shut inside a closed solid" in message
+    assert "Likely cause: from the largest area to the nearest area of 25 m², a floor shut inside a closed solid" in message
 
 
 def test_a_room_shut_above_a_deck_is_named_by_its_door_not_the_storeys():
@@ -226,7 +226,7 @@ def test_a_rise_far_from_the_areas_edges_is_no_step():
     slab(graph, 0.0, 0.0, 10, 0)
     slab(graph, 28.0, 0.6, 4, 100)
     message = disconnected_warning(graph, areas(graph), 5, SAMPLED)
-    assert "Likely cause: from the largest area to the nearest of 4 m², a gap or passage too narrow for the agent " \
+    assert "Likely cause: from the largest area to the nearest area of 4 m², a gap or passage too narrow for the agent " \
            "(agent.radius 0.5 m), or a wall, where their ground lies about 18.0 m apart, e.g. between (9.5, 0.0, 0.5 m) " \
            "and (28.5, 0.6, 0.5 m)." in message
 
@@ -240,7 +240,7 @@ def test_a_small_area_beside_the_largest_does_not_hide_the_gap_to_a_large_one():
     slab(graph, 0.0, 0.0, 15, 200, z=4.5)
     message = disconnected_warning(graph, areas(graph), 3, SAMPLED)
     assert "Largest areas: 20 m² near (9.5, 0.0, 0.5 m); 15 m² near (7.5, 0.0, 4.5 m); 1 m² near (21.0, 0.0, 0.5 m)." in message
-    assert message.endswith("Likely cause: from the largest area to the nearest of 15 m², a gap or passage too narrow for the "
+    assert message.endswith("Likely cause: from the largest area to the nearest area of 15 m², a gap or passage too narrow for the "
                             "agent (agent.radius 0.5 m), or a wall, where their ground lies about 3.0 m apart, "
                             "e.g. between (0.5, 0.0, 0.5 m) and (0.5, 0.0, 4.5 m).")
 
@@ -255,7 +255,7 @@ def test_the_floe_across_a_crack_is_named_not_the_next_in_size_beyond_it():
         slab(graph, 10.0 * index, 0.0, cells, 100 * (index + 1), z=30.5)
     slab(graph, 20.3, 0.0, 3, 1000)
     message = disconnected_warning(graph, areas(graph), 6, SAMPLED)
-    assert message.endswith("Likely cause: from the largest area to the nearest of 3 m², a gap or passage too narrow for the "
+    assert message.endswith("Likely cause: from the largest area to the nearest area of 3 m², a gap or passage too narrow for the "
                             "agent (agent.radius 0.5 m), or a wall, where their ground lies about 0.3 m apart, "
                             "e.g. between (19.5, 0.0, 0.5 m) and (20.8, 0.0, 0.5 m).")
 
@@ -269,4 +269,4 @@ def test_crumbs_alone_name_the_nearest_of_them():
         slab(graph, 40.0 + 10.0 * index, 0.0, 2, 100 * (index + 1))
     slab(graph, 31.0, 0.0, 1, 1000)
     message = disconnected_warning(graph, areas(graph), 6, SAMPLED)
-    assert "Likely cause: from the largest area to the nearest of 1 m², " in message and "about 1.0 m apart" in message
+    assert "Likely cause: from the largest area to the nearest area of 1 m², " in message and "about 1.0 m apart" in message
