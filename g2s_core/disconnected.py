@@ -5,10 +5,11 @@ hold and where they are (metres), what most likely separates them, and stays
 short whatever the number of areas (at most :data:`LISTED_AREAS` are named).
 
 The likely cause is the graph builder's to tell (``context.likely_cause``,
-:func:`g2s_plugins.area_gaps.likely_cause_of`): it measures the gap between
-the walkable ground of the largest area and each of the next
-:data:`COMPARED_AREAS` largest ones, which takes the builder's surface (its
-polygons' edges, its erosion), not only the graph's nodes.
+:func:`g2s_plugins.area_gaps.likely_cause_of`): it is handed the largest area
+and every other, largest first, and measures the gap between the walkable
+ground of the largest and the nearest of those a designer means to join to
+it, which takes the builder's surface (its polygons' edges, its erosion),
+not only the graph's nodes.
 """
 
 from __future__ import annotations
@@ -21,8 +22,6 @@ import numpy as np
 
 LISTED_AREAS = 3
 """How many of the largest areas the warning places."""
-COMPARED_AREAS = 4
-"""How many areas after the largest one are searched for the closest neighbour."""
 
 
 def area_summary(graph: nx.Graph, nodes: Sequence[int]) -> tuple[float, np.ndarray]:
@@ -44,7 +43,7 @@ def disconnected_warning(graph: nx.Graph, areas: Mapping[Any, Sequence[int]], te
     """The warning for terminals (and a selector's waypoints) spread over the connected ``areas`` (area id -> its
     nodes) of ``graph``; the counts are those the outputs give, a count of zero left out of the message.
 
-    ``likely_cause(graph, largest area, next areas)`` names what most likely parts them and where; without it
+    ``likely_cause(graph, largest area, the others largest first)`` names what most likely parts them and where; without it
     the cause is left out, and without node positions (an abstract graph) the places too.
     """
     apart = " and ".join(f"{count} {noun}{'s' * (count != 1)}" for count, noun in
@@ -61,8 +60,7 @@ def disconnected_warning(graph: nx.Graph, areas: Mapping[Any, Sequence[int]], te
                f"one tree per area. Largest areas: {listed}{more}.")
     if likely_cause is None or len(summaries) < 2:
         return message
-    others = [other[2] for other in summaries[1:1 + COMPARED_AREAS]]
-    return f"{message} Likely cause: {likely_cause(graph, summaries[0][2], others)}."
+    return f"{message} Likely cause: {likely_cause(graph, summaries[0][2], [other[2] for other in summaries[1:]])}."
 
 
 def xyz(point: np.ndarray) -> str:

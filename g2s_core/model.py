@@ -244,8 +244,8 @@ class RunContext:
             the graph was built without one.
         mesh_name: the file or sample name of the mesh, as the outputs record it, for plugins' warnings.
         graph: the initial surface graph, once stage 1 has run.
-        likely_cause: set by the graph builder: ``likely_cause(graph, largest area, next areas)`` (node lists)
-            names what most likely parts the largest area from the nearest of the next ones on its surface, and
+        likely_cause: set by the graph builder: ``likely_cause(graph, largest area, the others largest first)`` (node lists)
+            names what most likely parts the largest area from the nearest of those a designer means to join to it, and
             where, for the disconnected-areas warning (:mod:`g2s_core.disconnected`); ``None``: the warning
             names no cause.
         warnings: messages for the user collected during the run.

@@ -2,8 +2,11 @@
 edges of the level's walkable ground, not between the nodes' centres.
 
 The disconnected-areas warning (:mod:`g2s_core.disconnected`) names the cause
-between the largest area and each of the next ones; both graph builders set
-``context.likely_cause`` to :func:`likely_cause_of` their ground.
+between the largest area and the nearest of the others a designer means to
+join to it (:func:`joined_areas`: those of at least
+:data:`JOINED_AREA_SHARE` of its walkable surface; with none, every area),
+with that area's size; both graph builders set ``context.likely_cause`` to
+:func:`likely_cause_of` their ground.
 
 *The ground's edges* (:func:`ground_rim`): on the navmesh route, the edges of
 the area's navmesh polygons that no polygon of the area lies across, a point
@@ -44,8 +47,10 @@ disconnected-areas warning names"). *A floor shut inside a closed solid*
 each body by its own winding, so that a mesh exported inside out reads as
 the same mesh wound right.
 
-Complexity: O(e log e) for the e edge points of the compared areas (a k-d
-tree per pair of areas), e = the areas' polygon perimeter / ``cell_size`` on
+Complexity: O(n) for the areas' n nodes (their sizes), O(e log e) for the e
+edge points of the joined areas (one k-d tree of the largest's, to find the
+:data:`COMPARED_AREAS` nearest), then a k-d tree per pair measured, e = the
+areas' polygon perimeter / ``cell_size`` on
 the navmesh route, their sample count on the sampling route; with the mesh,
 O(m log m) for its m faces' closed bodies and up to 9 rays for each of at most
 ``MAX_PLACE_CANDIDATES`` pairs.
@@ -77,6 +82,17 @@ Ground = tuple[np.ndarray, np.ndarray, np.ndarray]
 
 Rim = Callable[[nx.Graph, Sequence[int]], Ground]
 """``(graph, nodes) -> ground``: :func:`ground_rim` of a graph builder's surface."""
+
+JOINED_AREA_SHARE = 0.1
+"""The share of the largest area's walkable surface from which another area is one a designer means to join to it
+(:func:`joined_areas`): an island, a floe, a wing cut off. Smaller ones (a floor boxed in a pillar, a crate's top, a
+pocket behind props) are left out of the cause, however near, when such an area exists: on ``nav_test.obj`` a floor
+of 6 m² boxed in 0.2 m from the largest area would hide the 4.7 m gap between its areas of 1,744 and 895 m²
+(docs/analysis_quality.md, "The disconnected-areas warning's nearest area")."""
+
+COMPARED_AREAS = 4
+"""How many of the joined areas nearest the largest (:func:`nearest_areas`, straight-line) are measured for the closest
+gap and rise: a bound on the cost when a level is in hundreds of pieces."""
 
 MAX_PLACE_CANDIDATES = 1024
 """Edge pairs at most that :func:`where_between` tests (more, which takes 256 m of edge points a cell apart all within
@@ -249,10 +265,34 @@ def likely_cause(step: float, gap: float, agent: AgentConfig) -> str:
             f"ground lies about {gap:.1f} m apart")
 
 
+def joined_areas(graph: nx.Graph, largest: Sequence[int], others: Sequence[Sequence[int]]) -> list[int]:
+    """Indices of the areas of ``others`` (node lists of areas of ``graph``) that a designer means to join to
+    ``largest``: those of at least :data:`JOINED_AREA_SHARE` of its walkable surface (m²); with none, every one, as
+    all that is cut off from one large area is then small (a collision hull's floor beside a square: that floor,
+    not the next in size). O(nodes)."""
+    least = JOINED_AREA_SHARE * area_summary(graph, largest)[0]
+    joined = [k for k, other in enumerate(others) if area_summary(graph, other)[0] >= least]
+    return joined or list(range(len(others)))
+
+
+def nearest_areas(ground: Ground, others: Sequence[Ground], count: int) -> np.ndarray:
+    """Indices of the ``count`` areas of ``others`` (each its :func:`ground_rim`) whose edge points come nearest
+    ``ground``'s, straight-line distance, nearest first (ties: the earlier). One k-d tree of ``ground``'s k points
+    queried with the others' e points, O((k + e) log k), so only ``count`` pairs are measured with
+    :func:`closest_step_for`."""
+    owner = np.repeat(np.arange(len(others)), [len(other[0]) for other in others])
+    distance = np.full(len(others), np.inf)
+    np.minimum.at(distance, owner, cKDTree(ground[0]).query(np.concatenate([other[0] for other in others]))[0])
+    return np.argsort(distance, kind="stable")[:count]
+
+
 def areas_cause(graph: nx.Graph, largest: Sequence[int], others: Sequence[Sequence[int]], agent: AgentConfig,
                 rim: Rim, mesh: trimesh.Trimesh | None = None) -> str:
-    """The likely cause between ``largest`` and the nearest of ``others`` (node lists of areas of ``graph``) and
-    where, e.g. ``a step of about 0.6 m, ..., e.g. between (x, y, z m) and (x, y, z m)``.
+    """The likely cause between ``largest`` and the nearest of ``others`` (node lists of areas of ``graph``) of
+    those :func:`joined_areas` keeps, with its size and where, e.g. ``from the largest area to the nearest
+    of 412 m², a step of about 0.6 m, ..., e.g. between (x, y, z m) and (x, y, z m)``. The nearest is the one whose
+    ground's edges come closest (gap and rise, :func:`closest_step_for`), not the next in size: of a frozen lake's
+    floes, the one across a crack, not a floe beyond it.
 
     With ``mesh``, a nearest area whose closest place or middle (:func:`g2s_core.disconnected.area_summary`) is
     shut inside a closed solid of ``mesh`` (:func:`shut_in`) is named as such: Recast keeps the floor inside a
@@ -261,14 +301,24 @@ def areas_cause(graph: nx.Graph, largest: Sequence[int], others: Sequence[Sequen
     door or plank too narrow for the agent, or the run of a wall or chasm.
     """
     ground = rim(graph, largest)  # once, however many areas it is compared with
-    closest, nearest = min(((closest_step_for(ground, rim(graph, other), agent), other) for other in others),
+    joined = joined_areas(graph, largest, others)
+    grounds = [rim(graph, others[k]) for k in joined]
+    closest, nearest = min(((closest_step_for(ground, grounds[k], agent), others[joined[k]])
+                            for k in nearest_areas(ground, grounds, COMPARED_AREAS)),
                            key=lambda pair: math.hypot(pair[0].gap, pair[0].step))
+    size, middle = area_summary(graph, nearest)
+    return f"from the largest area to the nearest area of {size:,.0f} m², {nearest_cause(closest, middle, agent, mesh)}"
+
+
+def nearest_cause(closest: Closest, middle: np.ndarray, agent: AgentConfig, mesh: trimesh.Trimesh | None) -> str:
+    """:func:`areas_cause`'s cause and place for the area whose ground comes ``closest`` to the largest's, ``middle``
+    (3,) a place inside it, metres."""
     cause = likely_cause(closest.step, closest.gap, agent)
     if mesh is None:
         return f"{cause}, {between(closest.pairs[0])}"
     caster = RayCaster(mesh)
     # its closest place and its middle: a render post or column inside the solid may face the rays from one
-    if shut_in(caster, np.stack([closest.there, area_summary(graph, nearest)[1]]), agent).any():
+    if shut_in(caster, np.stack([closest.there, middle]), agent).any():
         rise = float(closest.there[1] - closest.here[1])
         level = "at the same height" if round(abs(rise), 1) == 0 else f"{abs(rise):.1f} m {'higher' if rise > 0 else 'lower'}"
         return (f"a floor shut inside a closed solid (a box or collision hull exported with the level), {level}, "

@@ -19,11 +19,11 @@ SAMPLED = likely_cause_of(AgentConfig())
 """The cause over nodes that each stand for a square of their area, none eroded."""
 
 
-def slab(graph: nx.Graph, x0: float, y: float, cells: int, first: int) -> list[int]:
-    """A row of ``cells`` 1 m x 1 m nodes at height ``y`` starting at ``x0``, joined in a line."""
+def slab(graph: nx.Graph, x0: float, y: float, cells: int, first: int, z: float = 0.5) -> list[int]:
+    """A row of ``cells`` 1 m x 1 m nodes at height ``y`` starting at ``x0``, their middles at ``z``, joined in a line."""
     nodes = list(range(first, first + cells))
     for i, node in enumerate(nodes):
-        graph.add_node(node, pos=(x0 + i + 0.5, y, 0.5), area=1.0)
+        graph.add_node(node, pos=(x0 + i + 0.5, y, z), area=1.0)
     nx.add_path(graph, nodes)
     return nodes
 
@@ -84,11 +84,12 @@ def test_the_floor_inside_a_closed_box_is_named_as_such():
     mesh = trimesh.util.concatenate([floor, box])
     navmesh, graph = navmesh_of([(0.5, 9.5, 0.5, 29.5, 0.0), (10.5, 15.5, 10.5, 15.5, 0.0)])
     message = disconnected_warning(graph, areas(graph), 2, likely_cause_of(AgentConfig(), navmesh, mesh=mesh))
-    assert "Likely cause: a floor shut inside a closed solid (a box or collision hull exported with the level), at the " \
-           "same height, its ground about 0.0 m from the other's, e.g. between (9.5, 0.0, " in message
+    assert "Likely cause: from the largest area to the nearest area of 25 m², a floor shut inside a closed solid (a box or " \
+           "collision hull exported with the level), at the same height, its ground about 0.0 m from the other's, " \
+           "e.g. between (9.5, 0.0, " in message
     top, graph = navmesh_of([(0.5, 9.5, 0.5, 29.5, 0.0), (10.5, 15.5, 10.5, 15.5, 3.0)])  # the box's top instead
     message = disconnected_warning(graph, areas(graph), 2, likely_cause_of(AgentConfig(), top, mesh=mesh))
-    assert "Likely cause: separate floors (3.0 m apart)" in message
+    assert "Likely cause: from the largest area to the nearest area of 25 m², separate floors (3.0 m apart)" in message
 
 
 def boxes(*extents: tuple[float, float, float, float, float, float]) -> trimesh.Trimesh:
@@ -167,7 +168,7 @@ def test_a_mesh_wound_inside_out_reads_as_wound_right():
             assert shut_in(RayCaster(wound), np.array([point]), agent).tolist() == [inside]
     floor, box_only = navmesh_of([(0.5, 9.5, 0.5, 24.5, 0.0), (10.5, 15.5, 10.5, 15.5, 0.0)])
     message = disconnected_warning(box_only, areas(box_only), 2, likely_cause_of(AgentConfig(), floor, mesh=flipped(box)))
-    assert "Likely cause: a floor shut inside a closed solid (a box or collision hull exported with the level)" in message
+    assert "Likely cause: from the largest area to the nearest area of 25 m², a floor shut inside a closed solid" in message
 
 
 def test_a_room_shut_above_a_deck_is_named_by_its_door_not_the_storeys():
@@ -225,5 +226,47 @@ def test_a_rise_far_from_the_areas_edges_is_no_step():
     slab(graph, 0.0, 0.0, 10, 0)
     slab(graph, 28.0, 0.6, 4, 100)
     message = disconnected_warning(graph, areas(graph), 5, SAMPLED)
-    assert "Likely cause: a gap or passage too narrow for the agent (agent.radius 0.5 m), or a wall, where their ground " \
-           "lies about 18.0 m apart, e.g. between (9.5, 0.0, 0.5 m) and (28.5, 0.6, 0.5 m)." in message
+    assert "Likely cause: from the largest area to the nearest area of 4 m², a gap or passage too narrow for the agent " \
+           "(agent.radius 0.5 m), or a wall, where their ground lies about 18.0 m apart, e.g. between (9.5, 0.0, 0.5 m) " \
+           "and (28.5, 0.6, 0.5 m)." in message
+
+
+def test_a_small_area_beside_the_largest_does_not_hide_the_gap_to_a_large_one():
+    """A floor of 20 m², a crumb of 1 m² (a crate's top, under a tenth of it) 0.5 m from its end, and a second floor
+    of 15 m² alongside it 3 m away: the cause is the 3 m between the floors a designer would join, not the crumb."""
+    graph = nx.Graph()
+    slab(graph, 0.0, 0.0, 20, 0)
+    slab(graph, 20.5, 0.0, 1, 100)
+    slab(graph, 0.0, 0.0, 15, 200, z=4.5)
+    message = disconnected_warning(graph, areas(graph), 3, SAMPLED)
+    assert "Largest areas: 20 m² near (9.5, 0.0, 0.5 m); 15 m² near (7.5, 0.0, 4.5 m); 1 m² near (21.0, 0.0, 0.5 m)." in message
+    assert message.endswith("Likely cause: from the largest area to the nearest area of 15 m², a gap or passage too narrow for the "
+                            "agent (agent.radius 0.5 m), or a wall, where their ground lies about 3.0 m apart, "
+                            "e.g. between (0.5, 0.0, 0.5 m) and (0.5, 0.0, 4.5 m).")
+
+
+def test_the_floe_across_a_crack_is_named_not_the_next_in_size_beyond_it():
+    """Ice floes: the largest (20 m²), four larger floes far off (8-5 m², 30 m away) and a floe of 3 m² (over a tenth
+    of the largest) across a crack 0.3 m wide. The core hands every area; the fifth after the largest in size is
+    the one across the crack, which the four next in size left out (a gap of 26 m named)."""
+    graph = nx.Graph()
+    slab(graph, 0.0, 0.0, 20, 0)
+    for index, cells in enumerate((8, 7, 6, 5)):
+        slab(graph, 10.0 * index, 0.0, cells, 100 * (index + 1), z=30.5)
+    slab(graph, 20.3, 0.0, 3, 1000)
+    message = disconnected_warning(graph, areas(graph), 6, SAMPLED)
+    assert message.endswith("Likely cause: from the largest area to the nearest area of 3 m², a gap or passage too narrow for the "
+                            "agent (agent.radius 0.5 m), or a wall, where their ground lies about 0.3 m apart, "
+                            "e.g. between (19.5, 0.0, 0.5 m) and (20.8, 0.0, 0.5 m).")
+
+
+def test_crumbs_alone_name_the_nearest_of_them():
+    """A floor of 30 m² and only crumbs (four of 2 m² 10-40 m away, one of 1 m² 1 m away, all under a tenth of it):
+    the nearest crumb is measured, the fifth after the largest in size, which the four next in size left out."""
+    graph = nx.Graph()
+    slab(graph, 0.0, 0.0, 30, 0)
+    for index in range(4):
+        slab(graph, 40.0 + 10.0 * index, 0.0, 2, 100 * (index + 1))
+    slab(graph, 31.0, 0.0, 1, 1000)
+    message = disconnected_warning(graph, areas(graph), 6, SAMPLED)
+    assert "Likely cause: from the largest area to the nearest area of 1 m², " in message and "about 1.0 m apart" in message
