@@ -1507,6 +1507,42 @@ def _free_part(
     return mid - along * np.minimum(half, back)[:, None], mid + along * np.minimum(half, ahead)[:, None]
 
 
+def _onto_curved_floor_end(
+    kept: list[_Edge], first: np.ndarray, last: np.ndarray, back: np.ndarray, ahead: np.ndarray, deep: np.ndarray,
+    caster: RayCaster, s: _Settings
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(n,3) (n,3) (2, n) bool: each opening's ends ``first`` and ``last`` moved out along its edge onto the sides of
+    its passage where the floor's end curves in from the edge's line before them, and which ends moved.
+
+    A doorway in a curved wall (a quarter ring of corridor, outer radius 3.5 m, radial jambs 1.11 m apart at the
+    inner face) has its floor end flush with the wall's outer face: an arc whose ends lie 0.05 m inside the line
+    through its middle, so the extension's candidates (:func:`_extend`), half a search step inside that line, leave
+    the floor 0.1 m short of each jamb and the opening read 1.00-1.08 m (docs/entry_exit.md, "A thirty-first round of
+    piece kinds"). An end moves out to the free part's (``back``, ``ahead`` (n,), m from the middle, read ``deep``
+    (n,) m in from the edge, :func:`_passages`) when the extension stopped for want of floor (none under its next
+    candidate) and the floor is there under the free part's end as deep in as that was read, within the extension's
+    reach: a floor's end that curves in, not one that ends (a plank narrower than its doorway has no floor under
+    the jamb's foot as deep in either), nor one that runs on past the line or is stopped by something along it
+    (floor under the next candidate). One batch of rays, O(n)."""
+    out = np.array([e.outward for e in kept])
+    length = np.linalg.norm(last - first, axis=1)
+    along = (last - first) / np.maximum(length, 1e-12)[:, None]
+    mid, half = 0.5 * (first + last), 0.5 * length
+    reach = np.stack([back, ahead])  # (2, n): from the middle towards first, towards last
+    sign = np.array([-1.0, 1.0])[:, None, None]
+    ends = np.stack([first, last])
+    wider = np.isfinite(reach) & (reach > half + _SAME_WIDTH) & (reach <= half + 2.0 * s.radius + s.step)
+    moved = mid[None] + sign * along[None] * np.where(wider, reach, half)[:, :, None]
+    inset = _INSET_STEPS * s.delta
+    probes = np.concatenate([(ends + sign * along[None] * (0.5 * s.delta) - out[None] * inset).reshape(-1, 3),
+                             (moved - out[None] * deep[None, :, None]).reshape(-1, 3)]) + UP * s.lift
+    floor = (caster.first_hits(probes, np.broadcast_to(-UP, probes.shape).copy()).distance
+             <= s.lift + s.climb).reshape(2, 2, -1)
+    move = wider & ~floor[0] & floor[1]
+    ends = np.where(move[:, :, None], moved, ends)
+    return ends[0], ends[1], move
+
+
 def _between_jambs(
     kept: list[_Edge], first: np.ndarray, last: np.ndarray, caster: RayCaster, s: _Settings
 ) -> np.ndarray:
@@ -2082,6 +2118,8 @@ def detect_openings(
     in_side = (sides_at > s.radius)[:, None]
     at_side = np.stack([back < half - _SAME_WIDTH, ahead < half - _SAME_WIDTH], axis=1) & in_side
     p_first, p_last = _free_part(p_first, p_last, back, ahead)
+    p_first, p_last, curved = _onto_curved_floor_end(kept, p_first, p_last, back, ahead, sides_at, caster, s)
+    at_side |= curved.T
     found: list[tuple[Opening, tuple[int, ...], tuple[float, float, float]]] = []
     edges: list[_Edge] = []
     framed_of: list[bool] = []
