@@ -1494,7 +1494,7 @@ def _ground_ahead(caster: RayCaster, hits, at: slice, directions: np.ndarray, s:
 def _free_part(
     first: np.ndarray, last: np.ndarray, back: np.ndarray, ahead: np.ndarray, out_to: np.ndarray | None = None
 ) -> tuple[np.ndarray, np.ndarray]:
-    """(n,3) (n,3): the openings' ends ``first`` and ``last`` moved in along their edge onto the free part's ends.
+    """(n,3) (n,3): the openings' ends ``first`` and ``last`` moved along their edge onto the free part's ends.
 
     ``back`` and ``ahead`` (n,): how far the passage is free from the middle towards each end (see
     :func:`_passages`). The floor's end runs the door's whole width while a sliding leaf in the wall's
