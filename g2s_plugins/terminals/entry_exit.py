@@ -1537,8 +1537,10 @@ def _curved_floor_ends(
     reach = np.stack([back, ahead])  # (2, n): from the middle towards first, towards last
     sign = np.array([-1.0, 1.0])[:, None, None]
     wider = np.isfinite(reach) & (reach > half + _SAME_WIDTH) & (reach <= half + 2.0 * s.radius + s.step)
+    wider &= np.isfinite(deep)[None]  # a free part read nowhere (no step in from the edge) is no side
     if not wider.any():
         return wider
+    deep = np.where(np.isfinite(deep), deep, 0.0)
     directions = (sign * along[None]).reshape(-1, 3)
     low = np.tile(mid - out * deep[:, None] + UP * s.lift, (2, 1))
     free_low = caster.first_hits(low, directions).distance.reshape(2, -1) >= reach - _SAME_WIDTH
