@@ -1492,19 +1492,66 @@ def _ground_ahead(caster: RayCaster, hits, at: slice, directions: np.ndarray, s:
 
 
 def _free_part(
-    first: np.ndarray, last: np.ndarray, back: np.ndarray, ahead: np.ndarray
+    first: np.ndarray, last: np.ndarray, back: np.ndarray, ahead: np.ndarray, out_to: np.ndarray | None = None
 ) -> tuple[np.ndarray, np.ndarray]:
-    """(n,3) (n,3): the openings' ends ``first`` and ``last`` moved in along their edge onto the free part's ends.
+    """(n,3) (n,3): the openings' ends ``first`` and ``last`` moved along their edge onto the free part's ends.
 
     ``back`` and ``ahead`` (n,): how far the passage is free from the middle towards each end (see
     :func:`_passages`). The floor's end runs the door's whole width while a sliding leaf in the wall's
     middle, or a rubble chunk just inside the face, leaves only part of it to walk through: the
-    opening is that part, as it is where something stands at the face (the floor ends there).
+    opening is that part, as it is where something stands at the face (the floor ends there). ``out_to``
+    (2, n) bool (towards ``first``, towards ``last``): ends moved out onto the free part's end where it lies
+    beyond them (:func:`_curved_floor_ends`); None: none.
     """
     half = 0.5 * np.linalg.norm(last - first, axis=1)
     along = (last - first) / np.maximum(2.0 * half, 1e-12)[:, None]
     mid = 0.5 * (first + last)
-    return mid - along * np.minimum(half, back)[:, None], mid + along * np.minimum(half, ahead)[:, None]
+    reach = np.stack([back, ahead])
+    reach = np.minimum(half, reach) if out_to is None else np.where(out_to, reach, np.minimum(half, reach))
+    return mid - along * reach[0][:, None], mid + along * reach[1][:, None]
+
+
+def _curved_floor_ends(
+    kept: list[_Edge], first: np.ndarray, last: np.ndarray, back: np.ndarray, ahead: np.ndarray, deep: np.ndarray,
+    caster: RayCaster, s: _Settings
+) -> np.ndarray:
+    """(2, n) bool (towards ``first``, towards ``last``): the openings' ends short of their passage's sides where the
+    floor's end curves in from the edge's line before them, to be moved out onto the sides (:func:`_free_part`).
+
+    A doorway in a curved wall (a quarter ring of corridor, outer radius 3.5 m, radial jambs 1.11 m apart at the
+    inner face) has its floor end flush with the wall's outer face: an arc whose ends lie 0.05 m inside the line
+    through its middle, so the extension's candidates (:func:`_extend`), half a search step inside that line, leave
+    the floor 0.1 m short of each jamb and the opening read 1.00-1.08 m (docs/entry_exit.md, "A thirty-first round of
+    piece kinds"). An end is short when the passage is free beyond it (``back``, ``ahead`` (n,), m from the middle of
+    ``first`` and ``last`` (n,3), read ``deep`` (n,) m in from the edge, :func:`_passages`), within the extension's
+    reach, at the rays' height as well as above the climb (a jamb standing straight up: an iris frame's sloping foot
+    is free farther above than at the floor); the extension stopped for want of floor (none under its next
+    candidate); and the floor is there under the free part's end as deep in as that was read: a floor's end that
+    curves in, not one that ends (a plank narrower than its doorway has no floor under the jamb's foot as deep in
+    either), nor one that runs on past the line or is stopped by something along it (floor under the next
+    candidate). Two batches of rays, O(n)."""
+    out = np.array([e.outward for e in kept])
+    length = np.linalg.norm(last - first, axis=1)
+    along = (last - first) / np.maximum(length, 1e-12)[:, None]
+    mid, half = 0.5 * (first + last), 0.5 * length
+    reach = np.stack([back, ahead])  # (2, n): from the middle towards first, towards last
+    sign = np.array([-1.0, 1.0])[:, None, None]
+    wider = np.isfinite(reach) & (reach > half + _SAME_WIDTH) & (reach <= half + 2.0 * s.radius + s.step)
+    wider &= np.isfinite(deep)[None]  # a free part read nowhere (no step in from the edge) is no side
+    if not wider.any():
+        return wider
+    deep = np.where(np.isfinite(deep), deep, 0.0)
+    directions = (sign * along[None]).reshape(-1, 3)
+    low = np.tile(mid - out * deep[:, None] + UP * s.lift, (2, 1))
+    free_low = caster.first_hits(low, directions).distance.reshape(2, -1) >= reach - _SAME_WIDTH
+    beyond = mid[None] + sign * along[None] * np.where(wider, reach, half)[:, :, None]
+    inset = _INSET_STEPS * s.delta
+    ends = np.stack([first, last])
+    probes = np.concatenate([(ends + sign * along[None] * (0.5 * s.delta) - out[None] * inset).reshape(-1, 3),
+                             (beyond - out[None] * deep[None, :, None]).reshape(-1, 3)]) + UP * s.lift
+    floor = (caster.first_hits(probes, np.broadcast_to(-UP, probes.shape).copy()).distance
+             <= s.lift + s.climb).reshape(2, 2, -1)
+    return wider & free_low & ~floor[0] & floor[1]
 
 
 def _between_jambs(
@@ -2081,7 +2128,9 @@ def detect_openings(
     # 5.5 without it; a splayed reveal's jambs are read 0.98-1.01 m in, 60 of 62 parts at 0, 22 and 45 degrees).
     in_side = (sides_at > s.radius)[:, None]
     at_side = np.stack([back < half - _SAME_WIDTH, ahead < half - _SAME_WIDTH], axis=1) & in_side
-    p_first, p_last = _free_part(p_first, p_last, back, ahead)
+    curved = _curved_floor_ends(kept, p_first, p_last, back, ahead, sides_at, caster, s)
+    at_side |= curved.T
+    p_first, p_last = _free_part(p_first, p_last, back, ahead, curved)
     found: list[tuple[Opening, tuple[int, ...], tuple[float, float, float]]] = []
     edges: list[_Edge] = []
     framed_of: list[bool] = []
