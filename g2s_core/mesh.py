@@ -447,8 +447,9 @@ def body_nesting(triangles: np.ndarray, bodies: list[np.ndarray]) -> tuple[np.nd
     candidate = np.repeat(left - np.cumsum(reach) + reach, reach) + np.arange(reach.sum())  # the ranges one after another
     held = hi[0, by_start][candidate] <= np.repeat(hi[0] + inset, reach)
     outer, inner = np.repeat(np.arange(len(bodies)), reach)[held], by_start[candidate[held]]
-    held = (inner != outer) & np.all((lo[1:, inner] >= lo[1:, outer] - inset) & (hi[1:, inner] <= hi[1:, outer] + inset), axis=0)
-    outer, inner = outer[held], inner[held]
+    for axis in (1, 2):  # one axis at a time: the pairs left after y are far fewer than the x sweep's
+        held = (inner != outer) & (lo[axis, inner] >= lo[axis, outer] - inset) & (hi[axis, inner] <= hi[axis, outer] + inset)
+        outer, inner = outer[held], inner[held]
     depth = np.zeros(len(bodies), dtype=np.int64)
     for holder, body in zip(outer, inner):
         faces, around = corners[first[body]:first[body] + size[body]], corners[first[holder]:first[holder] + size[holder]]
