@@ -207,9 +207,57 @@ def restored(
                      f"under {wanted}: no node simplification removed differs from the heat it is given by more than "
                      f"{FLOOR:g} percentile points{' within its area' if within else ''}")
         return None
-    ranked = np.lexsort((removed[above], -difference[above]))
+    candidates = removed_rows[above]
+    gain = restore_gains(reading.arrays, reading.distance, reading.nearest, own, candidates)
+    ranked = np.lexsort((removed[above], -gain))
     count = math.ceil(RESTORED_SHARE * forest.number_of_nodes())
     return set(simplified) | set(removed[above][ranked[:count]].tolist())
+
+
+def restore_gains(arrays: traffic.SurfaceArrays, distance: np.ndarray, nearest: np.ndarray, own: np.ndarray,
+                  candidates: np.ndarray) -> np.ndarray:
+    """(k,) how much restoring each of the (k,) ``candidates`` (rows of ``arrays``, removed nodes) would lower the
+    heat map's squared error: the sum, over the nodes of the graph, of (own percentile - heat)², in percentile points².
+
+    A restored node takes over the nodes nearer to it along the graph than to their nearest structure node (``nearest``,
+    (n,) rows, -1: none, at (n,) ``distance`` metres: :func:`~g2s_plugins.traffic.distance_to` of the structure); the
+    heat map gives them the mean of (n,) ``own`` over them, and each structure node whose cell they leave the mean of
+    the rest. With a cell's error ``Q - S² / N`` (``Q`` the sum of squares of ``own``, ``S`` its sum, ``N`` its nodes),
+    the gain of a candidate that takes the nodes of sum ``S_rs``, count ``N_rs`` from each structure node ``s`` is
+    ``S_r² / N_r + Σ_s [(S_s - S_rs)² / (N_s - N_rs) - S_s² / N_s]`` (a structure node stays in its own cell, so
+    ``N_s - N_rs >= 1``). Which nodes a candidate would take is read from one multi-source Dijkstra search from all
+    candidates (each node counted for its nearest candidate alone): several restored in one round share the nodes
+    between them. Why: a node whose own percentile is far from its heat may stand for one sample; the largest
+    difference alone restores it before a node that would mend twenty (docs/analysis_quality.md, "The heat guarantee's
+    restore choice").
+
+    Complexity: one multi-source Dijkstra search, O(m + n log n), and a sort of the (candidate, structure node) pairs,
+    O(n log n).
+    """
+    gain = np.zeros(len(candidates))
+    if len(candidates) == 0:
+        return gain
+    to_candidate, closest = traffic.distance_to(arrays, candidates)
+    taken = np.flatnonzero((closest >= 0) & (nearest >= 0) & (to_candidate < distance))
+    if taken.size == 0:
+        return gain
+    own = np.asarray(own, dtype=np.float64)
+    cell_sum, cell_count = traffic.gathered(nearest, own), np.bincount(nearest[nearest >= 0], minlength=arrays.n)
+    index = np.full(arrays.n, -1, dtype=np.int64)
+    index[candidates] = np.arange(len(candidates))
+    taker, giver = index[closest[taken]], nearest[taken]
+    pairs, pair_of = np.unique(taker * arrays.n + giver, return_inverse=True)
+    pair_sum = np.bincount(pair_of, weights=own[taken])
+    pair_count = np.bincount(pair_of).astype(np.float64)
+    pair_taker, pair_giver = pairs // arrays.n, pairs % arrays.n
+    left_sum, left_count = cell_sum[pair_giver] - pair_sum, cell_count[pair_giver] - pair_count
+    change = left_sum ** 2 / left_count - cell_sum[pair_giver] ** 2 / cell_count[pair_giver]
+    taken_sum = np.bincount(pair_taker, weights=pair_sum, minlength=len(candidates))
+    taken_count = np.bincount(pair_taker, weights=pair_count, minlength=len(candidates))
+    gain += np.bincount(pair_taker, weights=change, minlength=len(candidates))
+    has = taken_count > 0
+    gain[has] += taken_sum[has] ** 2 / taken_count[has]
+    return gain
 
 
 def _removed(arrays: traffic.SurfaceArrays, forest: nx.DiGraph, structure_rows: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -236,7 +284,8 @@ class HeatReading:
     ``pooled``, else ``shown`` itself); ``margin`` the rho over a target that reading must reach (:data:`MARGINS`,
     :data:`POOLED_MARGINS`, 0 when exact); ``order`` the sample's :func:`~g2s_plugins.traffic.sampling_order`;
     ``own`` (n,) :func:`~g2s_plugins.traffic.percentile` of ``shown``; ``rows`` (s,) the structure nodes' rows,
-    by ascending id; ``nearest`` (n,) each node's nearest structure node's row (-1: none)."""
+    by ascending id; ``nearest`` (n,) each node's nearest structure node's row (-1: none) and ``distance`` (n,) metres
+    to it along the graph (``inf``: none)."""
 
     arrays: traffic.SurfaceArrays
     shown: np.ndarray
@@ -249,6 +298,7 @@ class HeatReading:
     own: np.ndarray
     rows: np.ndarray
     nearest: np.ndarray
+    distance: np.ndarray
 
 
 @dataclasses.dataclass(frozen=True)
@@ -297,12 +347,12 @@ def heat_reading(
     arrays = traffic.surface_arrays(graph)
     flows = _flows(graph, arrays, sources, ties, scaling, sampling)
     rows = arrays.rows(sorted(structure_nodes))
-    nearest = traffic.distance_to(arrays, rows)[1]
+    distance, nearest = traffic.distance_to(arrays, rows)
     heat = evaluation.nearest_mean(nearest, flows.own)  # evaluation.placement_heat of the flow shown
     reference = flows.reference
     rho = evaluation.spearman(heat, reference) if areas is None else evaluation.within_area_rho(heat, reference, areas)
     return HeatReading(arrays, flows.shown, heat, rho, flows.margin, flows.exact, flows.pooled, flows.order, flows.own,
-                       rows, nearest)
+                       rows, nearest, distance)
 
 
 def spurs(
