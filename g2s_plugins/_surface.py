@@ -130,7 +130,7 @@ class CollapseParams(HeatFlowParams):
     heat_rho_within_areas: bool = Field(
         False, description="min_heat_rho reads rho with ranks taken within each connected area (the traffic "
         "evaluator's rho_within), so that an area apart, low in the flow and the heat map as a whole, gets no credit "
-        "for that, and restores the removed nodes whose flow's percentile within their area differs most from the heat "
+        "for that, and chooses the removed nodes it restores on the flow's percentiles within their area and the heat "
         "drawn from those percentiles; false: rho and percentiles over the whole graph"
     )
 

@@ -45,14 +45,16 @@ The mechanism, a Douglas-Peucker tolerance for the heat map (D. H.
 Douglas and T. K. Peucker, Cartographica 10(2):112-122, 1973, keep the
 point farthest from the simplified line until every point is within the
 tolerance): Algorithm 4 simplifies as it always does and the result is
-measured. While rho is under the target, the removed nodes whose own
-polygon's percentile differs most from the heat the map gives it (by more
-than :data:`FLOOR` points; both on the heat map's sampled scale, so the
-exact flow decides when to stop, not which nodes come back, and a structure
-changes only where that decision does; with ``heat_rho_within_areas`` the
-percentiles within the node's connected area and the heat drawn from them,
-the same on a graph of one area) are restored, :data:`RESTORED_SHARE`
-of the forest's nodes at a time: the forest is simplified again by the same
+measured. While rho is under the target, of the removed nodes whose own
+polygon's percentile differs from the heat the map gives it by more than
+:data:`FLOOR` points, those whose return would lower the heat map's squared
+error most (:func:`restore_gains`: the nodes each would take over, their
+new heat and that of the cells they leave) are restored (both on the heat
+map's sampled scale, so the exact flow decides when to stop, not which
+nodes come back, and a structure changes only where that decision does;
+with ``heat_rho_within_areas`` the percentiles within the node's connected
+area and the heat drawn from them, the same on a graph of one area),
+:data:`RESTORED_SHARE` of the forest's nodes at a time: the forest is simplified again by the same
 predicate, which now keeps them and every node the last structure kept
 (:func:`keeping`), so each round's structure holds the last one's. A
 structure that meets the target is the one Algorithm 4 gave, unchanged;
@@ -70,7 +72,8 @@ structure.
 
 Complexity: a round is one simplification (its predicate calls) and one
 measure (a multi-source Dijkstra over the initial graph, O(m + n log n),
-and two sorts); each round but the last restores ceil(share x forest
+and two sorts), and under the target one more multi-source Dijkstra and a
+sort to rank the candidates (:func:`restore_gains`); each round but the last restores ceil(share x forest
 nodes) nodes, so there are at most 1 / :data:`RESTORED_SHARE` + 1 of them.
 A structure that meets the target costs one measure, and above the exact
 size one more sampled walking flow (the confirmation's, once per run; a
@@ -170,17 +173,19 @@ def restored(
     ``scaling`` says, then :func:`confirm`-ed by another sample; both of
     ``ties``), or rho is undefined (every node's flow alike), or
     no removed node differs by more than :data:`FLOOR` (a warning gives rho);
-    else every node of ``simplified`` and the removed nodes of ``forest``
-    whose percentile differs most from their heat, ceil(:data:`RESTORED_SHARE`
-    x the forest's nodes) of them, by decreasing difference then node id.
+    else every node of ``simplified`` and, of the removed nodes of ``forest``
+    whose percentile differs from their heat by more than :data:`FLOOR`, those
+    whose return lowers the heat map's squared error most
+    (:func:`restore_gains`), ceil(:data:`RESTORED_SHARE` x the forest's
+    nodes) of them, by decreasing gain then node id.
 
     ``within_areas``: rho is :func:`~g2s_plugins.evaluation.within_area_rho` over the connected areas of ``graph``
     instead (docs/analysis_quality.md, "The heat map within each connected area"), and a removed node's
-    difference is between its flow's percentile within its area (:func:`~g2s_plugins.evaluation.within_area_percentiles`,
-    the scale that rho ranks the flow on) and the heat the map gives it when drawn from those percentiles: a heat
-    right across areas and wrong within one is what that rho counts. On a graph of one area both are the level-wide
-    ones, so the same nodes come back. Above the exact size the margin and the confirmation are those measured for
-    the level-wide rho.
+    difference and gain are between its flow's percentile within its area
+    (:func:`~g2s_plugins.evaluation.within_area_percentiles`, the scale that rho ranks the flow on) and the heat the
+    map gives it when drawn from those percentiles: a heat right across areas and wrong within one is what that rho
+    counts. On a graph of one area both are the level-wide ones, so the same nodes come back. Above the exact size the
+    margin and the confirmation are those measured for the level-wide rho.
     """
     areas = evaluation.area_labels(graph) if within_areas else None
     reading = heat_reading(graph, simplified, sources, ties, scaling, sampling, areas)
@@ -207,9 +212,58 @@ def restored(
                      f"under {wanted}: no node simplification removed differs from the heat it is given by more than "
                      f"{FLOOR:g} percentile points{' within its area' if within else ''}")
         return None
-    ranked = np.lexsort((removed[above], -difference[above]))
+    candidates = removed_rows[above]
+    gain = restore_gains(arrays, reading.distance, reading.nearest, own, candidates)
+    ranked = np.lexsort((removed[above], -gain))
     count = math.ceil(RESTORED_SHARE * forest.number_of_nodes())
     return set(simplified) | set(removed[above][ranked[:count]].tolist())
+
+
+def restore_gains(arrays: traffic.SurfaceArrays, distance: np.ndarray, nearest: np.ndarray, own: np.ndarray,
+                  candidates: np.ndarray) -> np.ndarray:
+    """(k,) how much restoring each of the (k,) ``candidates`` (rows of ``arrays``, removed nodes) would lower the
+    heat map's squared error: the sum over the nodes of the graph of (own percentile - heat)², in percentile points².
+
+    A restored node takes over the nodes nearer to it along the graph than to their nearest structure node
+    (``nearest``, (n,) rows, -1: none, at (n,) ``distance`` metres: :func:`~g2s_plugins.traffic.distance_to` of the
+    structure); the heat map gives them the mean of (n,) ``own`` over them, and each structure node whose cell they
+    leave the mean of the rest. With a cell's error ``Q - S² / N`` (``Q`` the sum of squares of ``own``, ``S`` its
+    sum, ``N`` its nodes), the gain of a candidate that takes the nodes of sum ``S_rs``, count ``N_rs`` from each
+    structure node ``s`` is ``S_r² / N_r + Σ_s [(S_s - S_rs)² / (N_s - N_rs) - S_s² / N_s]`` (a structure node stays
+    in its own cell, so ``N_s - N_rs >= 1``): the within-group sum of squares of Ward's clustering (J. H. Ward,
+    J. Am. Stat. Assoc. 58(301):236-244, 1963), which a split lowers. Which nodes a candidate would take is read from
+    one multi-source Dijkstra search from all candidates (each node counted for its nearest candidate alone): several
+    restored in one round share the nodes between them. Why: a node whose own percentile is far from its heat may
+    stand for one sample; the largest difference alone restores it before a node that would mend twenty
+    (docs/analysis_quality.md, "The heat guarantee's restore choice").
+
+    Complexity: one multi-source Dijkstra search, O(m + n log n), and a sort of the (candidate, structure node)
+    pairs, O(n log n).
+    """
+    gain = np.zeros(len(candidates))
+    if len(candidates) == 0:
+        return gain
+    to_candidate, closest = traffic.distance_to(arrays, candidates)
+    taken = np.flatnonzero((closest >= 0) & (nearest >= 0) & (to_candidate < distance))
+    if taken.size == 0:
+        return gain
+    own = np.asarray(own, dtype=np.float64)
+    cell_sum, cell_count = traffic.gathered(nearest, own), np.bincount(nearest[nearest >= 0], minlength=arrays.n)
+    index = np.full(arrays.n, -1, dtype=np.int64)
+    index[candidates] = np.arange(len(candidates))
+    taker, giver = index[closest[taken]], nearest[taken]
+    pairs, pair_of = np.unique(taker * arrays.n + giver, return_inverse=True)
+    pair_sum = np.bincount(pair_of, weights=own[taken])
+    pair_count = np.bincount(pair_of).astype(np.float64)
+    pair_taker, pair_giver = pairs // arrays.n, pairs % arrays.n
+    left_sum, left_count = cell_sum[pair_giver] - pair_sum, cell_count[pair_giver] - pair_count
+    change = left_sum ** 2 / left_count - cell_sum[pair_giver] ** 2 / cell_count[pair_giver]
+    taken_sum = np.bincount(pair_taker, weights=pair_sum, minlength=len(candidates))
+    taken_count = np.bincount(pair_taker, weights=pair_count, minlength=len(candidates))
+    gain += np.bincount(pair_taker, weights=change, minlength=len(candidates))
+    has = taken_count > 0
+    gain[has] += taken_sum[has] ** 2 / taken_count[has]
+    return gain
 
 
 def _removed(arrays: traffic.SurfaceArrays, forest: nx.DiGraph, structure_rows: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -236,7 +290,8 @@ class HeatReading:
     ``pooled``, else ``shown`` itself); ``margin`` the rho over a target that reading must reach (:data:`MARGINS`,
     :data:`POOLED_MARGINS`, 0 when exact); ``order`` the sample's :func:`~g2s_plugins.traffic.sampling_order`;
     ``own`` (n,) :func:`~g2s_plugins.traffic.percentile` of ``shown``; ``rows`` (s,) the structure nodes' rows,
-    by ascending id; ``nearest`` (n,) each node's nearest structure node's row (-1: none)."""
+    by ascending id; ``nearest`` (n,) each node's nearest structure node's row (-1: none) and ``distance`` (n,) metres
+    to it along the graph (``inf``: none)."""
 
     arrays: traffic.SurfaceArrays
     shown: np.ndarray
@@ -249,6 +304,7 @@ class HeatReading:
     own: np.ndarray
     rows: np.ndarray
     nearest: np.ndarray
+    distance: np.ndarray
 
 
 @dataclasses.dataclass(frozen=True)
@@ -297,12 +353,12 @@ def heat_reading(
     arrays = traffic.surface_arrays(graph)
     flows = _flows(graph, arrays, sources, ties, scaling, sampling)
     rows = arrays.rows(sorted(structure_nodes))
-    nearest = traffic.distance_to(arrays, rows)[1]
+    distance, nearest = traffic.distance_to(arrays, rows)
     heat = evaluation.nearest_mean(nearest, flows.own)  # evaluation.placement_heat of the flow shown
     reference = flows.reference
     rho = evaluation.spearman(heat, reference) if areas is None else evaluation.within_area_rho(heat, reference, areas)
     return HeatReading(arrays, flows.shown, heat, rho, flows.margin, flows.exact, flows.pooled, flows.order, flows.own,
-                       rows, nearest)
+                       rows, nearest, distance)
 
 
 def spurs(
