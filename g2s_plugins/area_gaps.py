@@ -290,7 +290,7 @@ def areas_cause(graph: nx.Graph, largest: Sequence[int], others: Sequence[Sequen
                 rim: Rim, mesh: trimesh.Trimesh | None = None) -> str:
     """The likely cause between ``largest`` and the nearest of ``others`` (node lists of areas of ``graph``) of
     those :func:`joined_areas` keeps, with its size and where, e.g. ``from the largest area to the nearest
-    of 412 m², a step of about 0.6 m, ..., e.g. between (x, y, z m) and (x, y, z m)``. The nearest is the one whose
+    area of 412 m², a step of about 0.6 m, ..., e.g. between (x, y, z m) and (x, y, z m)``. The nearest is the one whose
     ground's edges come closest (gap and rise, :func:`closest_step_for`), not the next in size: of a frozen lake's
     floes, the one across a crack, not a floe beyond it.
 
