@@ -424,11 +424,12 @@ def body_nesting(triangles: np.ndarray, bodies: list[np.ndarray]) -> tuple[np.nd
     (of an area), moved just inside it, has a winding number of magnitude 1 about the other (:func:`_winding_number`):
     a pillar through a slab is in no slab, nor a pillar set into a wall slab whose box holds the pillar's (the level
     turned about the vertical). The volumes, boxes and pairs of boxes one in the other are array passes over all
-    bodies; only the P pairs whose boxes nest are tested one by one: the inner body's probe farthest from the outer's
-    middle first, then its other probes at once, in parts of about 2^18 (probe, face) rows, stopping at the first
-    part with a probe outside. O(n + b log b + C + P + sum f F) for n faces, b bodies, C pairs of one starting along x
-    within the other's x range, and f faces of the inner body and F of the outer one of each of the P pairs (f is 1
-    for a pair whose farthest probe is out).
+    bodies; only the P pairs whose boxes nest are tested one by one: where no triangle of the outer body holds the
+    inner one's highest probe in plan (its box) and rises above it, a ray up from that probe crosses nothing, so it
+    is out (a rock sunk into a closed terrain); else all its probes at once, in parts of about 2^18 (probe, face)
+    rows, stopping at the first part with a probe outside. O(n + b log b + C + P F + sum f F) for n faces, b bodies,
+    C pairs of one starting along x within the other's x range, and f faces of the inner body and F of the outer one
+    of each of the P pairs (f = 0 where the ray test says out).
     """
     size = np.array([len(body) for body in bodies], dtype=np.int64)
     if not len(bodies):
@@ -450,17 +451,19 @@ def body_nesting(triangles: np.ndarray, bodies: list[np.ndarray]) -> tuple[np.nd
     for axis in (1, 2):  # one axis at a time: the pairs left after y are far fewer than the x sweep's
         held = (inner != outer) & (lo[axis, inner] >= lo[axis, outer] - inset) & (hi[axis, inner] <= hi[axis, outer] + inset)
         outer, inner = outer[held], inner[held]
-    depth = np.zeros(len(bodies), dtype=np.int64)
+    depth, low, high = np.zeros(len(bodies), dtype=np.int64), corners.min(axis=1) - inset, corners.max(axis=1) + inset  # triangles' boxes
     for holder, body in zip(outer, inner):
         faces, around = corners[first[body]:first[body] + size[body]], corners[first[holder]:first[holder] + size[holder]]
         normal = np.cross(faces[:, 1] - faces[:, 0], faces[:, 2] - faces[:, 0])  # length: twice the area
         faces, normal = faces[np.any(normal != 0, axis=1)], normal[np.any(normal != 0, axis=1)]  # the faces of an area
         probes = faces.mean(axis=1) + (inset if inward[body] else -inset) * normal / np.linalg.norm(normal, axis=1, keepdims=True)
-        # the probe farthest from the holder's middle first, alone: of a body sunk into another (a rock into a closed
-        # terrain) it is likely out, and one probe costs F; then the rest in parts of about 2^18 (probe, face) rows,
-        # some 50 MB of _winding_number's arrays, to the first part with a probe outside
-        probes = probes[np.argsort(-np.linalg.norm(probes - (lo[:, holder] + hi[:, holder]) / 2, axis=1), kind="stable")]
-        depth[body] += len(probes) > 0 and all((np.abs(_winding_number(around, part)) > 0.5).all() for part in [probes[:1], *np.array_split(probes[1:], max(1, len(probes) * len(around) >> 18))])
+        # the highest probe is in the holder only if a ray up from it leaves the holder: through a triangle whose box
+        # holds it in plan and rises above it; with none (a rock sunk into a closed terrain, its top out) no winding
+        # number is asked, which costs F a probe; then the rest in parts of about 2^18 (probe, face) rows, some 50 MB
+        # of _winding_number's arrays, to the first part with a probe outside
+        top, span = (probes[np.argmax(probes[:, 1])] if len(probes) else np.zeros(3)), slice(first[holder], first[holder] + size[holder])
+        roofed = np.any((low[span, 0] <= top[0]) & (high[span, 0] >= top[0]) & (low[span, 2] <= top[2]) & (high[span, 2] >= top[2]) & (high[span, 1] >= top[1]))
+        depth[body] += len(probes) > 0 and roofed and all((np.abs(_winding_number(around, part)) > 0.5).all() for part in np.array_split(probes, max(1, len(probes) * len(around) >> 18)))
     return inward, depth
 
 

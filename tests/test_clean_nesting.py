@@ -67,6 +67,18 @@ def test_a_rock_sunk_into_a_closed_terrain_is_in_no_terrain():
     assert counts["flipped_bodies"] == 0
 
 
+def test_a_rock_buried_whole_in_a_closed_terrain_is_in_it():
+    # the terrain's top lies over the rock's highest probe, so its winding numbers are asked, and say it is inside
+    terrain = nested.shell((0.0, -2.0, 0.0), (40.0, 0.0, 40.0), True)
+    buried, sunk = (trimesh.creation.icosphere(subdivisions=1, radius=0.6) for _ in range(2))
+    buried.apply_translation((12.0, -1.0, 17.0))
+    sunk.apply_translation((20.0, -0.3, 17.0))
+    mesh = trimesh.util.concatenate([terrain, buried, sunk])
+    sizes = [len(terrain.faces), len(buried.faces), len(sunk.faces)]
+    bodies = np.split(np.arange(sum(sizes)), np.cumsum(sizes)[:-1])
+    assert body_nesting(np.asarray(mesh.triangles), bodies)[1].tolist() == [0, 1, 0]
+
+
 def test_a_pillar_through_a_slab_and_boxes_side_by_side_are_not_nested():
     slab = nested.shell((0.0, 1.0, 0.0), (6.0, 1.3, 6.0), True)
     pillar = nested.shell((2.0, 0.0, 2.0), (2.5, 3.0, 2.5), True)  # its largest face's middle lies in the slab
