@@ -125,23 +125,23 @@ def _crate(rng: np.random.Generator) -> tuple[float, float, float]:
     return float(rng.uniform(2.5, 4.0)), float(rng.uniform(2.5, 4.0)), float(rng.uniform(2.2, 3.0))
 
 
-def overlapping(share: float) -> Callable[[np.random.Generator], tuple[list[Box], list[Solid]]]:
-    def kind(rng: np.random.Generator) -> tuple[list[Box], list[Solid]]:
-        w, d, h = _crate(rng)
-        x = float(rng.uniform(-4, 0))
-        wall_t = float(rng.uniform(0.2, 0.4))
-        wall = (-12.0, 12.0, 0.0, 3.2, -wall_t, 0.0)
-        crate = (x, x + w, 0.0, h, -share * d, (1 - share) * d)
-        return [FLOOR, wall, crate], [(FLOOR, ()), (wall, ()), (crate, ())]
-    return kind
-
-
-def flush_with_a_wall(rng: np.random.Generator) -> tuple[list[Box], list[Solid]]:
+def _crate_in_a_wall(rng: np.random.Generator, depths: Callable[[float, float], tuple[float, float]]) -> tuple[list[Box], list[Solid]]:
+    """A crate standing against a wall, ``depths(wall thickness, crate depth)`` (m) its back and front from the wall's
+    face."""
     w, d, h = _crate(rng)
     x, wall_t = float(rng.uniform(-4, 0)), float(rng.uniform(0.2, 0.4))
     wall = (-12.0, 12.0, 0.0, 3.2, -wall_t, 0.0)
-    crate = (x, x + w, 0.0, h, -wall_t, d - wall_t)
+    back, front = depths(wall_t, d)
+    crate = (x, x + w, 0.0, h, -back, front)
     return [FLOOR, wall, crate], [(FLOOR, ()), (wall, ()), (crate, ())]
+
+
+def overlapping(share: float) -> Callable[[np.random.Generator], tuple[list[Box], list[Solid]]]:
+    return lambda rng: _crate_in_a_wall(rng, lambda wall_t, d: (share * d, (1 - share) * d))
+
+
+def flush_with_a_wall(rng: np.random.Generator) -> tuple[list[Box], list[Solid]]:
+    return _crate_in_a_wall(rng, lambda wall_t, d: (wall_t, d - wall_t))
 
 
 def sunk_flush(rng: np.random.Generator) -> tuple[list[Box], list[Solid]]:
