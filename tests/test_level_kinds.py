@@ -1,4 +1,4 @@
-"""The level kinds of rounds 9-32 (``benchmarks/level_kinds.py``, ``level_kinds26.py`` ... ``level_kinds32.py``) build
+"""The level kinds of rounds 9-33 (``benchmarks/level_kinds.py``, ``level_kinds26.py`` ... ``level_kinds33.py``) build
 the levels they describe.
 
 Smoke tests of quick generators (most well under a second each to build and to give a navmesh; the theatre's and
@@ -1652,3 +1652,83 @@ def test_every_bamboo_culm_narrower_than_a_cell_is_a_hole_in_the_floor(round_32)
     assert label.max() == 0
     culms = mesh.vertices[mesh.vertices[:, 1] > 5.9][:, [0, 2]]
     assert len(culms) > 1000 and not plan_points_on_floor(nav, culms).any()
+
+
+@pytest.fixture(scope="module")
+def round_33() -> dict[str, Callable[..., trimesh.Trimesh]]:
+    """``benchmarks/level_kinds33.py``'s KINDS (the thirty-third round): each call builds its level anew."""
+    return benchmark("level_kinds33").KINDS
+
+
+def head_room(mesh, nav) -> np.ndarray:
+    """The height (P,) from each navmesh polygon's centre up to the first face of ``mesh`` over it (inf when none):
+    a ray from 5 cm over the centre straight up, trimesh's ray test."""
+    origins = nav.centres + np.array([0.0, 0.05, 0.0])
+    hits, rays, _ = mesh.ray.intersects_location(origins, np.tile([0.0, 1.0, 0.0], (len(origins), 1)))
+    room = np.full(len(origins), np.inf)
+    np.minimum.at(room, rays, hits[:, 1] - origins[rays, 1])
+    return room
+
+
+def test_the_attic_rows_lofts_hold_floor_only_where_the_roof_leaves_head_room(round_33):
+    """Lofts under roofs pitched at 38-45 degrees, reached by a flight each: the street, houses and lofts one area
+    with more than 60 m² of loft floor (2.5 m up or more) on it, and no floor anywhere with under 1.7 m over the
+    polygon's centre (the centre stands up to 0.2 m over the floor): none under the eaves."""
+    mesh = round_33["attic_row"](0)
+    label, nav = areas(mesh, DROPS)
+    largest = label == np.argmax(np.bincount(label, weights=nav.areas))
+    assert nav.areas[largest & (nav.centres[:, 1] - 0.2 > 2.5)].sum() > 60.0
+    assert head_room(mesh, nav).min() > 1.7
+
+
+def test_the_labyrinth_is_one_area_with_floor_in_every_ring(round_33):
+    """Eight to ten ring corridors 1.9-2.5 m wide joined by one opening each: one area, with floor in every band of
+    2.4 m of radius from the court to the outer hedge (a ring that held none would leave a band empty)."""
+    mesh = round_33["labyrinth"](0)
+    label, nav = areas(mesh, DROPS)
+    assert label.max() == 0
+    radius = np.hypot(nav.centres[:, 0], nav.centres[:, 2])
+    outer = mesh.vertices[mesh.vertices[:, 1] > 2.3][:, [0, 2]]  # the hedges' tops
+    bands = np.arange(5.0, np.hypot(outer[:, 0], outer[:, 1]).max() - 2.4, 2.4)
+    assert all(((radius > b) & (radius < b + 2.4)).any() for b in bands)
+
+
+def test_the_hill_fort_is_one_area_from_its_foot_to_its_top(round_33):
+    """Three ramparts whose outer faces fall steeper than the slope limit, entered through staggered gates: one
+    area reaching the foot of the hill (under 1 m) and its top (over 8 m)."""
+    label, nav = areas(round_33["hill_fort"](0), DROPS)
+    assert label.max() == 0
+    y = nav.centres[:, 1] - 0.2
+    assert y.min() < 1.0 and y.max() > 8.0
+
+
+def test_the_roundabouts_garden_reaches_the_streets_under_a_carriageway_railed_apart(round_33):
+    """A garden 4 m under a roundabout, left by subways under its carriageway: the garden's floor in the same area as
+    the streets 50 m out, and the carriageway (10 m wide at the street's level, railed on both edges) an area apart
+    of 1,000-1,500 m²."""
+    label, nav = areas(round_33["subway_roundabout"](0), DROPS)
+    y, radius = nav.centres[:, 1] - 0.2, np.hypot(nav.centres[:, 0], nav.centres[:, 2])
+    garden = set(label[y < -3.5])
+    assert garden & set(label[(radius > 50.0) & (np.abs(y) < 0.2)])
+    sizes = np.bincount(label, weights=nav.areas)
+    assert any(1000.0 < sizes[k] < 1500.0 and not k in garden for k in range(len(sizes)))
+
+
+def test_the_concourse_is_reached_up_the_ramp_towers(round_33):
+    """Zigzag ramps whose runs are parted by rails 0.06 m thick: one area with over 1,000 m² of concourse (5.9 m up
+    or more) and floor at every height on the way up (no gap of a metre between the polygons' heights)."""
+    label, nav = areas(round_33["ramp_towers"](0), DROPS)
+    assert label.max() == 0
+    y = np.sort(nav.centres[:, 1] - 0.2)
+    assert nav.areas[nav.centres[:, 1] - 0.2 > 5.9].sum() > 1000.0 and np.diff(y).max() < 1.0
+
+
+def test_the_cenotes_ledge_joins_the_rim_to_the_beach_under_its_overhangs(round_33):
+    """A ledge spiralling 18-24 m down under rock overhangs 2.3-2.8 m over it: one area from the rim (y = 0) to the
+    beach (17 m down or more), and no floor with under 1.7 m over the polygon's centre."""
+    mesh = round_33["cenote"](0)
+    label, nav = areas(mesh, DROPS)
+    assert label.max() == 0
+    y = nav.centres[:, 1] - 0.2
+    assert y.max() > -0.3 and y.min() < -17.0
+    assert head_room(mesh, nav).min() > 1.7
