@@ -234,6 +234,11 @@ out into the room behind the wall, metres at once; a reveal splaying inwards by 
 a step, one splaying less reads no narrower for going on). Rays along a straight jamb agree to the ray caster's
 precision."""
 
+_SET_BACK_COS = math.cos(math.radians(45.0))
+"""A face met just inside an edge stands across the way out when it turns back out across the edge within 45
+degrees: a post's face, parallel to the edge, at 0; a side wall meeting a corridor's end cut 30 degrees off square
+(round 27's skewed corridor) at 60, left to the extension's ray along the edge as before."""
+
 _STEP_DIGITS = 9
 """Decimal places to which a reach in search steps is rounded before it is counted up to whole steps: far finer
 than a step, coarser than floating point's error on a product of two parameters."""
@@ -1003,6 +1008,12 @@ def _split_at_piers(kept: list[_Edge], ways: _Ways, caster: RayCaster, s: _Setti
         hits = caster.first_hits(over, np.tile(along, (n - 1, 1)))
         across = (hits.distance <= s.delta) & ~_walkable(caster, np.maximum(hits.face, 0), s)
         blocked[:-1] |= across & ~blocked[:-1] & ~blocked[1:]
+        blocked |= _set_back(points, np.tile(e.outward, (n, 1)), caster, s)
+        # and where something not walkable stands just inside the edge, nearer its line than the agent's radius, above
+        # the climb: a post in a wall's thickness between two doors, set back from the face the floor ends at, which no
+        # ray straight out meets (docs/entry_exit.md, "A thirty-second round of piece kinds")
+        inside = caster.first_hits(points + UP * (s.climb + s.delta - s.lift), np.tile(-e.outward, (n, 1)))
+        blocked |= (inside.distance <= s.radius - inset) & ~_walkable(caster, np.maximum(inside.face, 0), s)
         t_edge = (ways.edge[e.samples] - e.first) @ along
         blocked &= ~_walked_through(blocked, t, t_edge[~ways.stepped[e.samples]])
         free = np.flatnonzero(~blocked)
@@ -1037,6 +1048,21 @@ def _walked_through(blocked: np.ndarray, t: np.ndarray, t_ways: np.ndarray) -> n
     for lo, hi in zip(runs[::2], runs[1::2]):  # blocked candidates lo .. hi - 1
         walked[lo:hi] = bool(((t_ways >= t[lo]) & (t_ways <= t[hi - 1])).any())
     return walked
+
+
+def _set_back(points: np.ndarray, out: np.ndarray, caster: RayCaster, s: _Settings) -> np.ndarray:
+    """(n,) bool: something stands across the way out just inside an edge at ``points`` (n,3), candidates half a
+    search step inside its line and ``lift`` up, ``out`` (n,3) its outward unit vectors: met looking straight in
+    above the climb (nothing the agent steps onto), nearer the edge's line than the agent's radius, not walkable, its
+    face turned back out across the edge (:data:`_SET_BACK_COS`). A thin post in a wall's thickness between two
+    doors, set back 0.1 m from the face the floor ends at, which no ray straight out meets: the doors' edges were
+    one, extended over the post and read 0.3 m wide at it (docs/entry_exit.md, "A thirty-second round of piece
+    kinds"). One ray each, O(n)."""
+    inset = _INSET_STEPS * s.delta
+    hits = caster.first_hits(points + UP * (s.climb + s.delta - s.lift), -out)
+    faces = np.maximum(hits.face, 0)
+    across = np.abs(np.einsum("ij,ij->i", caster.face_normals[faces], out)) >= _SET_BACK_COS
+    return (hits.distance <= s.radius - inset) & across & ~_walkable(caster, faces, s)
 
 
 def _onto_grazed_step(points: np.ndarray, out: np.ndarray, caster: RayCaster, s: _Settings) -> np.ndarray:
@@ -1234,6 +1260,7 @@ def _extend(kept: list[_Edge], caster: RayCaster, s: _Settings, floor: np.ndarra
     beyond = caster.first_hits(cand + outwards * (2.0 * inset), down).distance  # just past the edge line
     edge_goes_on = (beyond > reach).reshape(2, n, n_ext)
     open_out = (caster.first_hits(cand, outwards).distance > s.radius + inset).reshape(2, n, n_ext)
+    open_out &= ~_set_back(cand, outwards, caster, s).reshape(2, n, n_ext)
     if s.farther > 0.0:
         # On a sampled surface the candidates run farther than a sample stood, and the samples stand only where the
         # agent has its head room: so must the candidates (a keystone hanging to 1.7 m in a doorway's middle, under
@@ -2129,7 +2156,11 @@ def detect_openings(
     in_side = (sides_at > s.radius)[:, None]
     at_side = np.stack([back < half - _SAME_WIDTH, ahead < half - _SAME_WIDTH], axis=1) & in_side
     curved = _curved_floor_ends(kept, p_first, p_last, back, ahead, sides_at, caster, s)
-    at_side |= curved.T
+    # An end moved out onto its passage's side is the side's on the same terms as one moved in: read deeper than the
+    # agent's radius. One read nearer the edge is the floor's, and stretches a union of repeated openings: a railed
+    # cliff path's end at 45 degrees on the sampling route, a part's end moved out by 0.1 mm onto a side read 0.2 m
+    # in, left its union 3.86 m for 3.9 (docs/entry_exit.md, "A thirty-second round of piece kinds").
+    at_side |= curved.T & in_side
     p_first, p_last = _free_part(p_first, p_last, back, ahead, curved)
     found: list[tuple[Opening, tuple[int, ...], tuple[float, float, float]]] = []
     edges: list[_Edge] = []
