@@ -19,7 +19,8 @@ import math
 import sys
 
 import numpy as np
-from piece_parts import ROOM_OPENINGS, SLAB, box, corridor, hull, kinds_by_name, polygon_room, room, round_level, run_kinds
+from piece_parts import (ROOM_OPENINGS, SLAB, box, corridor, hull, kinds_by_name, polygon_room, room, round_level,
+                         run_kinds)
 
 from g2s_plugins.samples.levels import SampleLevel, _opening
 from g2s_plugins.samples.pieces import _E, _N, _S, _W
@@ -71,7 +72,8 @@ def open_drain_corridor(drain: float = 0.6, depth: float = 2.0) -> SampleLevel:
     parts = [box(0.0, 12.0, bottom, 3.0, -0.3, 0.0), box(0.0, 12.0, bottom, 3.0, 2.4, 2.7),
              box(0.0, x0, bottom, 0.0, 0.0, 2.4), box(x1, 12.0, bottom, 0.0, 0.0, 2.4),
              box(x0, x1, bottom, -depth, 0.0, 2.4)]
-    return _level("open_drain_corridor", parts, [_opening((0.0, 0.0, 1.2), _W, 2.4), _opening((12.0, 0.0, 1.2), _E, 2.4)])
+    return _level("open_drain_corridor", parts,
+                  [_opening((0.0, 0.0, 1.2), _W, 2.4), _opening((12.0, 0.0, 1.2), _E, 2.4)])
 
 
 def l_room_inner_corner_door(door: float = 1.2) -> SampleLevel:
@@ -90,7 +92,8 @@ def l_room_inner_corner_door(door: float = 1.2) -> SampleLevel:
              box(10.0, 10.3, 2.2, 3.0, 1.2, 2.8),
              box(0.0, 1.2, -SLAB, 3.0, 10.0, 10.3), box(2.8, 4.3, -SLAB, 3.0, 10.0, 10.3),
              box(1.2, 2.8, 2.2, 3.0, 10.0, 10.3),
-             box(4.0, 4.3, -SLAB, 3.0, 4.0, 10.0), box(x1, 10.0, -SLAB, 3.0, 4.0, 4.3), box(4.3, x1, 2.2, 3.0, 4.0, 4.3)]
+             box(4.0, 4.3, -SLAB, 3.0, 4.0, 10.0), box(x1, 10.0, -SLAB, 3.0, 4.0, 4.3),
+             box(4.3, x1, 2.2, 3.0, 4.0, 4.3)]
     return _level("l_room_inner_corner_door", parts,
                   [_opening((10.3, 0.0, 2.0), _E, 1.6), _opening((2.0, 0.0, 10.3), _N, 1.6),
                    _opening((4.3 + door / 2, 0.0, 4.3), _N, door)])
@@ -124,7 +127,8 @@ def ramp_end_twenty(slope_deg: float = 20.0, run: float = 4.0) -> SampleLevel:
     rise = run * math.tan(math.radians(slope_deg))
     start = 12.0 - run
     parts = [box(0.0, start, -SLAB, 0.0, 0.0, 2.4),
-             hull([[x, y, z] for x, y in ((start, -SLAB), (start, 0.0), (12.0, rise), (12.0, -SLAB)) for z in (0.0, 2.4)]),
+             hull([[x, y, z] for x, y in ((start, -SLAB), (start, 0.0), (12.0, rise), (12.0, -SLAB))
+                   for z in (0.0, 2.4)]),
              box(0.0, 12.0, -SLAB, rise + 3.0, -0.3, 0.0), box(0.0, 12.0, -SLAB, rise + 3.0, 2.4, 2.7)]
     return _level("ramp_end_twenty", parts,
                   [_opening((0.0, 0.0, 1.2), _W, 2.4), _opening((12.0, rise, 1.2), _E, 2.4)])

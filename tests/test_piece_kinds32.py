@@ -1,4 +1,4 @@
-"""Pieces of the thirty-second round (``benchmarks/piece_kinds32.py``) and two of earlier rounds on the map-piece presets.
+"""Pieces of the thirty-second round (``benchmarks/piece_kinds32.py``) and two earlier ones on the map-piece presets.
 
 Two doors 0.3 m apart whose wall between them is only a thin post set back 0.1 m from the face the floor ends at:
 two openings, 1.2 m each, on both routes, where the doors' edge ran over the post and was read 0.3 m wide at it
