@@ -234,6 +234,11 @@ out into the room behind the wall, metres at once; a reveal splaying inwards by 
 a step, one splaying less reads no narrower for going on). Rays along a straight jamb agree to the ray caster's
 precision."""
 
+_SET_BACK_COS = math.cos(math.radians(45.0))
+"""A face met just inside an edge stands across the way out when it turns back out across the edge within 45
+degrees: a post's face, parallel to the edge, at 0; a side wall meeting a corridor's end cut 30 degrees off square
+(round 27's skewed corridor) at 60, left to the extension's ray along the edge as before."""
+
 _STEP_DIGITS = 9
 """Decimal places to which a reach in search steps is rounded before it is counted up to whole steps: far finer
 than a step, coarser than floating point's error on a product of two parameters."""
@@ -1003,6 +1008,12 @@ def _split_at_piers(kept: list[_Edge], ways: _Ways, caster: RayCaster, s: _Setti
         hits = caster.first_hits(over, np.tile(along, (n - 1, 1)))
         across = (hits.distance <= s.delta) & ~_walkable(caster, np.maximum(hits.face, 0), s)
         blocked[:-1] |= across & ~blocked[:-1] & ~blocked[1:]
+        blocked |= _set_back(points, np.tile(e.outward, (n, 1)), caster, s)
+        # and where something not walkable stands just inside the edge, nearer its line than the agent's radius, above
+        # the climb: a post in a wall's thickness between two doors, set back from the face the floor ends at, which no
+        # ray straight out meets (docs/entry_exit.md, "A thirty-second round of piece kinds")
+        inside = caster.first_hits(points + UP * (s.climb + s.delta - s.lift), np.tile(-e.outward, (n, 1)))
+        blocked |= (inside.distance <= s.radius - inset) & ~_walkable(caster, np.maximum(inside.face, 0), s)
         t_edge = (ways.edge[e.samples] - e.first) @ along
         blocked &= ~_walked_through(blocked, t, t_edge[~ways.stepped[e.samples]])
         free = np.flatnonzero(~blocked)
@@ -1037,6 +1048,21 @@ def _walked_through(blocked: np.ndarray, t: np.ndarray, t_ways: np.ndarray) -> n
     for lo, hi in zip(runs[::2], runs[1::2]):  # blocked candidates lo .. hi - 1
         walked[lo:hi] = bool(((t_ways >= t[lo]) & (t_ways <= t[hi - 1])).any())
     return walked
+
+
+def _set_back(points: np.ndarray, out: np.ndarray, caster: RayCaster, s: _Settings) -> np.ndarray:
+    """(n,) bool: something stands across the way out just inside an edge at ``points`` (n,3), candidates half a
+    search step inside its line and ``lift`` up, ``out`` (n,3) its outward unit vectors: met looking straight in
+    above the climb (nothing the agent steps onto), nearer the edge's line than the agent's radius, not walkable, its
+    face turned back out across the edge (:data:`_SET_BACK_COS`). A thin post in a wall's thickness between two
+    doors, set back 0.1 m from the face the floor ends at, which no ray straight out meets: the doors' edges were
+    one, extended over the post and read 0.3 m wide at it (docs/entry_exit.md, "A thirty-second round of piece
+    kinds"). One ray each, O(n)."""
+    inset = _INSET_STEPS * s.delta
+    hits = caster.first_hits(points + UP * (s.climb + s.delta - s.lift), -out)
+    faces = np.maximum(hits.face, 0)
+    across = np.abs(np.einsum("ij,ij->i", caster.face_normals[faces], out)) >= _SET_BACK_COS
+    return (hits.distance <= s.radius - inset) & across & ~_walkable(caster, faces, s)
 
 
 def _onto_grazed_step(points: np.ndarray, out: np.ndarray, caster: RayCaster, s: _Settings) -> np.ndarray:
@@ -1240,8 +1266,31 @@ def _extend(kept: list[_Edge], caster: RayCaster, s: _Settings, floor: np.ndarra
         # which the rays at ``lift`` run on, put the middle of one half's extended end under it, read 0 m wide there).
         above = caster.first_hits(cand, np.broadcast_to(UP, cand.shape).copy()).distance
         open_out &= (above > s.head - s.lift).reshape(2, n, n_ext)
-    run = np.cumprod(floor & edge_goes_on & open_out, axis=2).sum(axis=2)  # leading valid candidates
+    valid = floor & edge_goes_on & open_out
+    # A candidate with something standing across the way out just inside it stops the extension where a free one (valid,
+    # nothing so inside it) lies beyond it along the edge before its ray meets anything: a post between two doors
+    # (:func:`_set_back`), not a rib on a side just before the side itself, which stops it a candidate later and half a
+    # step nearer (a corrugated container's face, 0.03 m ribs 0.15 m in: 1.115-1.132 m of the 1.14 between them at 0
+    # and 45 degrees), nor a wall's face behind a sill plate standing proud of it (1.576-1.589 m of 1.6).
+    set_back = _set_back(cand, outwards, caster, s).reshape(2, n, n_ext)
+    reached = valid & ~set_back & (steps[None, None, :] <= d_along[:, :, None])
+    free_beyond = np.zeros_like(valid)
+    free_beyond[:, :, :-1] = np.logical_or.accumulate(reached[:, :, ::-1], axis=2)[:, :, ::-1][:, :, 1:]
+    run = np.cumprod(valid & ~(set_back & free_beyond), axis=2).sum(axis=2)  # leading valid candidates
     ext = np.minimum(np.where(run < n_ext, run + 0.5, run) * s.delta, d_along)
+    # Where that stopped it, the post's face is placed to 1/16 of a step between the last candidate and the first: a
+    # table's leg 0.2 m in at a corridor's end left the free half beside it 1.181 m of 1.2 half a step short.
+    side, row = np.nonzero(run < n_ext)
+    at = run[side, row]
+    stopped = (set_back & free_beyond)[side, row, np.minimum(at, n_ext - 1)]
+    side, row, at = side[stopped], row[stopped], at[stopped]
+    lo, hi = at * s.delta, (at + 1) * s.delta
+    for _ in range(_REFINE_ROUNDS):
+        mid = 0.5 * (lo + hi)
+        points = starts[side, row] + direction[side, row] * mid[:, None]
+        behind = _set_back(points, out[row], caster, s)
+        lo, hi = np.where(behind, lo, mid), np.where(behind, mid, hi)
+    ext[side, row] = np.minimum(0.5 * (lo + hi), d_along[side, row])
     return first - along * ext[0][:, None], last + along * ext[1][:, None]
 
 
@@ -2129,7 +2178,11 @@ def detect_openings(
     in_side = (sides_at > s.radius)[:, None]
     at_side = np.stack([back < half - _SAME_WIDTH, ahead < half - _SAME_WIDTH], axis=1) & in_side
     curved = _curved_floor_ends(kept, p_first, p_last, back, ahead, sides_at, caster, s)
-    at_side |= curved.T
+    # An end moved out onto its passage's side is the side's on the same terms as one moved in: read deeper than the
+    # agent's radius. One read nearer the edge is the floor's, and stretches a union of repeated openings: a railed
+    # cliff path's end at 45 degrees on the sampling route, a part's end moved out by 0.1 mm onto a side read 0.2 m
+    # in, left its union 3.86 m for 3.9 (docs/entry_exit.md, "A thirty-second round of piece kinds").
+    at_side |= curved.T & in_side
     p_first, p_last = _free_part(p_first, p_last, back, ahead, curved)
     found: list[tuple[Opening, tuple[int, ...], tuple[float, float, float]]] = []
     edges: list[_Edge] = []
