@@ -237,7 +237,8 @@ precision."""
 _SET_BACK_COS = math.cos(math.radians(45.0))
 """A face met just inside an edge stands across the way out when it turns back out across the edge within 45
 degrees: a post's face, parallel to the edge, at 0; a side wall meeting a corridor's end cut 30 degrees off square
-(round 27's skewed corridor) at 60, left to the extension's ray along the edge as before."""
+(round 27's skewed corridor) at 60, left to the extension's ray along the edge as before (the split at piers counts
+any face: one at an edge's end only ends it, as a jamb)."""
 
 _STEP_DIGITS = 9
 """Decimal places to which a reach in search steps is rounded before it is counted up to whole steps: far finer
@@ -1008,12 +1009,10 @@ def _split_at_piers(kept: list[_Edge], ways: _Ways, caster: RayCaster, s: _Setti
         hits = caster.first_hits(over, np.tile(along, (n - 1, 1)))
         across = (hits.distance <= s.delta) & ~_walkable(caster, np.maximum(hits.face, 0), s)
         blocked[:-1] |= across & ~blocked[:-1] & ~blocked[1:]
-        blocked |= _set_back(points, np.tile(e.outward, (n, 1)), caster, s)
-        # and where something not walkable stands just inside the edge, nearer its line than the agent's radius, above
-        # the climb: a post in a wall's thickness between two doors, set back from the face the floor ends at, which no
-        # ray straight out meets (docs/entry_exit.md, "A thirty-second round of piece kinds")
-        inside = caster.first_hits(points + UP * (s.climb + s.delta - s.lift), np.tile(-e.outward, (n, 1)))
-        blocked |= (inside.distance <= s.radius - inset) & ~_walkable(caster, np.maximum(inside.face, 0), s)
+        # and where something stands just inside the edge, whichever way its face turns: a post in a wall's thickness
+        # between two doors; a side wall met so only ends the edge, as a jamb (docs/entry_exit.md, "A thirty-second
+        # round of piece kinds")
+        blocked |= _set_back(points, np.tile(e.outward, (n, 1)), caster, s, facing_out=False)
         t_edge = (ways.edge[e.samples] - e.first) @ along
         blocked &= ~_walked_through(blocked, t, t_edge[~ways.stepped[e.samples]])
         free = np.flatnonzero(~blocked)
@@ -1050,19 +1049,21 @@ def _walked_through(blocked: np.ndarray, t: np.ndarray, t_ways: np.ndarray) -> n
     return walked
 
 
-def _set_back(points: np.ndarray, out: np.ndarray, caster: RayCaster, s: _Settings) -> np.ndarray:
+def _set_back(points: np.ndarray, out: np.ndarray, caster: RayCaster, s: _Settings, facing_out: bool = True) -> np.ndarray:
     """(n,) bool: something stands across the way out just inside an edge at ``points`` (n,3), candidates half a
     search step inside its line and ``lift`` up, ``out`` (n,3) its outward unit vectors: met looking straight in
-    above the climb (nothing the agent steps onto), nearer the edge's line than the agent's radius, not walkable, its
-    face turned back out across the edge (:data:`_SET_BACK_COS`). A thin post in a wall's thickness between two
-    doors, set back 0.1 m from the face the floor ends at, which no ray straight out meets: the doors' edges were
-    one, extended over the post and read 0.3 m wide at it (docs/entry_exit.md, "A thirty-second round of piece
-    kinds"). One ray each, O(n)."""
+    above the climb (nothing the agent steps onto), nearer the edge's line than the agent's radius, not walkable and,
+    with ``facing_out``, its face turned back out across the edge (:data:`_SET_BACK_COS`). A thin post in a wall's
+    thickness between two doors, set back 0.1 m from the face the floor ends at, which no ray straight out meets: the
+    doors' edges were one, extended over the post and read 0.3 m wide at it (docs/entry_exit.md, "A thirty-second
+    round of piece kinds"). One ray each, O(n)."""
     inset = _INSET_STEPS * s.delta
     hits = caster.first_hits(points + UP * (s.climb + s.delta - s.lift), -out)
     faces = np.maximum(hits.face, 0)
-    across = np.abs(np.einsum("ij,ij->i", caster.face_normals[faces], out)) >= _SET_BACK_COS
-    return (hits.distance <= s.radius - inset) & across & ~_walkable(caster, faces, s)
+    stands = (hits.distance <= s.radius - inset) & ~_walkable(caster, faces, s)
+    if facing_out:
+        stands &= np.abs(np.einsum("ij,ij->i", caster.face_normals[faces], out)) >= _SET_BACK_COS
+    return stands
 
 
 def _onto_grazed_step(points: np.ndarray, out: np.ndarray, caster: RayCaster, s: _Settings) -> np.ndarray:
