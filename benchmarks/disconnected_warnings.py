@@ -168,7 +168,8 @@ def judged(name: str, rows: list[tuple[float, float, float, float, bool]], width
     candidates = [r for r in pool if round(r[0]) == size]
     j = any(abs(r[3] - wanted[3]) <= 0.5 for r in candidates)
     measured = min(candidates, key=lambda r: abs(r[3] - wanted[3]))[3] if candidates else math.inf
-    nearer = [r for r in rows if not r[4] and r[3] <= width and r[3] < measured]
+    nearer = [r for r in rows if not r[4] and r[3] <= width + area_gaps.READ_AS_EQUAL
+              and r[3] <= measured - area_gaps.READ_AS_EQUAL]
     smaller = re.search(r"a smaller area of ([\d,]+) m²", cause)
     if nearer:
         best = min(r[3] for r in nearer)

@@ -98,6 +98,11 @@ MAX_PLACE_CANDIDATES = 1024
 """Edge pairs at most that :func:`where_between` tests (more, which takes 256 m of edge points a cell apart all within
 a cell of the closest pair, are thinned evenly along the edges)."""
 
+READ_AS_EQUAL = 0.05
+"""Metres under which two distances read the same in the warning (half the 0.1 m it prints): a smaller area is named
+after the one measured (:func:`smaller_nearer`) when it comes nearer by more, and within the agent's width plus this
+(on the sampling route, squares of 1 m, many areas read the same gap of 1.0 m, with float noise either side)."""
+
 GROUND_RAYS = 8
 """Rays at most down onto the stretch between two areas' ground (:func:`open_between`): a half spacing of the edge
 points apart (0.125 m on the navmesh route's cells of 0.25 m; 0.5 m between samples 1 m apart) up to this many."""
@@ -358,9 +363,10 @@ def areas_cause(graph: nx.Graph, largest: Sequence[int], others: Sequence[Sequen
     With ``mesh``, a nearest area whose closest place or middle (:func:`g2s_core.disconnected.area_summary`) is
     shut inside a closed solid of ``mesh`` (:func:`shut_in`) is named as such: Recast keeps the floor inside a
     closed box with head room, and either route a render floor inside a collision hull exported with the level.
-    Else, on one floor (a rise up to the agent's climb), a ceiling lower than the agent over the floor between them
-    (:func:`low_ceiling`: a plank over a channel's bed, a beam), and else (a rise up to the agent's height) the place
-    :func:`where_between` names: the door or plank too narrow for the agent, or the run of a wall or chasm.
+    Before that, on one floor (a rise up to the agent's climb), a ceiling lower than the agent over the floor between
+    them is named (:func:`low_ceiling`: a plank over a channel's bed, a beam); else, on one floor (a rise up to the
+    agent's height), the place :func:`where_between` names: the door or plank too narrow for the agent, or the run
+    of a wall or chasm.
     """
     ground = rim(graph, largest)  # once, however many areas it is compared with
     joined = joined_areas(graph, largest, others)
@@ -380,8 +386,8 @@ def smaller_nearer(graph: nx.Graph, ground: Ground, smaller: Sequence[Sequence[i
     """``; and a smaller area of A m² lies nearer, its ground about G m from the largest's, R m higher, at (x, y, z m)``:
     of the areas :func:`joined_areas` leaves out (``smaller``, node lists of areas of ``graph``), the nearest to the
     largest's ``ground`` (gap and rise, :func:`closest_step_for`, of the ``COMPARED_AREAS`` whose edge points come
-    nearest) when it comes nearer than the area named (``named``: its hypot(gap, rise), metres) and within the agent's
-    width (``2 agent.radius``): a closet behind a thin wall, a ledge just over the climb, a floor a door too narrow
+    nearest) when it comes nearer than the area named (``named``: its hypot(gap, rise), metres; by
+    ``READ_AS_EQUAL``) and within the agent's width (``2 agent.radius``): a closet behind a thin wall, a ledge just over the climb, a floor a door too narrow
     opens onto, that a designer fixing the named gap would not otherwise learn of; the place is its ground's closest
     edge point. Farther ones (a crate's top, a rock across the water) are left out: naming every crumb would lengthen
     every line. Empty when there is none. O(e log e) for the e edge points of the compared areas.
@@ -389,12 +395,11 @@ def smaller_nearer(graph: nx.Graph, ground: Ground, smaller: Sequence[Sequence[i
     if not smaller:
         return ""
     grounds = [rim(graph, other) for other in smaller]
-    reach = min(named, 2 * float(agent.radius))
-    best = min(((closest_step_for(ground, grounds[k], agent), smaller[k])
-                for k in nearest_areas(ground, grounds, COMPARED_AREAS)),
-               key=lambda pair: math.hypot(pair[0].gap, pair[0].step))
-    closest, nodes = best
-    if math.hypot(closest.gap, closest.step) >= reach:
+    closest, nodes = min(((closest_step_for(ground, grounds[k], agent), smaller[k])
+                          for k in nearest_areas(ground, grounds, COMPARED_AREAS)),
+                         key=lambda pair: math.hypot(pair[0].gap, pair[0].step))
+    apart = math.hypot(closest.gap, closest.step)
+    if apart > 2 * float(agent.radius) + READ_AS_EQUAL or apart > named - READ_AS_EQUAL:
         return ""
     rise = float(closest.there[1] - closest.here[1])
     level = "" if round(abs(rise), 1) == 0 else f", {abs(rise):.1f} m {'higher' if rise > 0 else 'lower'}"
@@ -409,6 +414,13 @@ def nearest_cause(closest: Closest, middle: np.ndarray, agent: AgentConfig, mesh
     if mesh is None:
         return f"{cause}, {between(closest.pairs[0])}"
     caster = RayCaster(mesh)
+    # a ceiling over floor that runs on between them first: nothing at the agent's step height parts them, so no
+    # solid's wall does (the shut-in rule's rays, lifted half the agent's height, run along a plank's underside
+    # 1.0-1.1 m over a channel's bed)
+    if closest.step <= float(agent.max_climb) and (ceiling := low_ceiling(caster, closest, agent)) is not None:
+        return (f"head room too low: a ceiling about {ceiling.head_room:.1f} m over the floor, under agent.height "
+                f"({float(agent.height):g} m), where their ground lies about {ceiling.gap:.1f} m apart, "
+                f"at ({xyz(ceiling.floor)})")
     # its closest place and its middle: a render post or column inside the solid may face the rays from one
     if shut_in(caster, np.stack([closest.there, middle]), agent).any():
         rise = float(closest.there[1] - closest.here[1])
@@ -417,10 +429,6 @@ def nearest_cause(closest: Closest, middle: np.ndarray, agent: AgentConfig, mesh
                 f"its ground about {closest.gap:.1f} m from the other's, {between(closest.pairs[0])}")
     if closest.step > float(agent.height):
         return f"{cause}, {between(closest.pairs[0])}"
-    if closest.step <= float(agent.max_climb) and (ceiling := low_ceiling(caster, closest, agent)) is not None:
-        return (f"head room too low: a ceiling about {ceiling.head_room:.1f} m over the floor, under agent.height "
-                f"({float(agent.height):g} m), where their ground lies about {ceiling.gap:.1f} m apart, "
-                f"at ({xyz(ceiling.floor)})")
     return f"{cause}, {where_between(caster, closest, agent)}"
 
 
