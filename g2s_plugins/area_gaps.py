@@ -47,13 +47,31 @@ disconnected-areas warning names"). *A floor shut inside a closed solid*
 each body by its own winding, so that a mesh exported inside out reads as
 the same mesh wound right.
 
+*A ceiling lower than the agent* (:func:`low_ceiling`): Recast and the sampling
+builder keep no floor under less head room than ``agent.height``, so a plank
+over a channel's bed or a low beam across a room parts the floor under it
+into two areas whose ground stops either side. On one floor, when nothing
+lies across the pair at ``agent.max_climb`` over it (no wall), ground lies
+under the stretch between them, and a ray up from that ground meets a face
+under the agent's height, the cause is ``head room too low`` with the
+ceiling's height over the floor and the floor's place under it; it is asked
+before the closed-solid rule, whose rays half the agent's height up run
+along a plank's underside 1.0-1.1 m over a bed. *A smaller area nearer*
+(:func:`smaller_nearer`): the areas :func:`joined_areas` leaves out are not
+measured for the cause, so a closet behind a thin wall beside the largest
+went unnamed; the nearest of them is named after the cause when it comes
+nearer than the area measured and within the agent's width. Measured on the
+warnings of the levels that warn and the thirty-second round's sewer
+(docs/analysis_quality.md, "The disconnected-areas warning's smaller
+neighbours and head room").
+
 Complexity: O(n) for the areas' n nodes (their sizes), O(e log e) for the e
 edge points of the joined areas (one k-d tree of the largest's, to find the
 :data:`COMPARED_AREAS` nearest), then a k-d tree per pair measured, e = the
 areas' polygon perimeter / ``cell_size`` on
 the navmesh route, their sample count on the sampling route; with the mesh,
-O(m log m) for its m faces' closed bodies and up to 9 rays for each of at most
-``MAX_PLACE_CANDIDATES`` pairs.
+O(m log m) for its m faces' closed bodies and up to 9 rays (17 for the ceiling) for each of at most
+``MAX_PLACE_CANDIDATES`` pairs; the smaller areas as the joined ones, :data:`COMPARED_AREAS` of them measured.
 """
 
 from __future__ import annotations
@@ -86,7 +104,8 @@ Rim = Callable[[nx.Graph, Sequence[int]], Ground]
 JOINED_AREA_SHARE = 0.1
 """The share of the largest area's walkable surface from which another area is one a designer means to join to it
 (:func:`joined_areas`): an island, a floe, a wing cut off. Smaller ones (a floor boxed in a pillar, a crate's top, a
-pocket behind props) are left out of the cause, however near, when such an area exists: on ``nav_test.obj`` a floor
+pocket behind props) are left out of the cause's measure, however near, when such an area exists (the nearest is named
+after it when within the agent's width: :func:`smaller_nearer`): on ``nav_test.obj`` a floor
 of 6 m² boxed in 0.2 m from the largest area would hide the 4.7 m gap between its areas of 1,744 and 895 m²
 (docs/analysis_quality.md, "The disconnected-areas warning's nearest area")."""
 
