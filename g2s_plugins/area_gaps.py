@@ -402,14 +402,15 @@ def areas_cause(graph: nx.Graph, largest: Sequence[int], others: Sequence[Sequen
 
 def smaller_nearer(graph: nx.Graph, ground: Ground, smaller: Sequence[Sequence[int]], named: float, agent: AgentConfig,
                    rim: Rim) -> str:
-    """``; and a smaller area of A m² lies nearer, its ground about G m from the largest's, R m higher, at (x, y, z m)``:
-    of the areas :func:`joined_areas` leaves out (``smaller``, node lists of areas of ``graph``), the nearest to the
-    largest's ``ground`` (gap and rise, :func:`closest_step_for`, of the ``COMPARED_AREAS`` whose edge points come
-    nearest) when it comes nearer than the area named (``named``: its hypot(gap, rise), metres; by
-    ``READ_AS_EQUAL``) and within the agent's width (``2 agent.radius``): a closet behind a thin wall, a ledge just over the climb, a floor a door too narrow
-    opens onto, that a designer fixing the named gap would not otherwise learn of; the place is its ground's closest
-    edge point. Farther ones (a crate's top, a rock across the water) are left out: naming every crumb would lengthen
-    every line. Empty when there is none. O(e log e) for the e edge points of the compared areas.
+    """``; and a smaller area of A m² lies nearer, its ground about G m from the largest's, R m higher, at (x, y, z
+    m)``: of the areas :func:`joined_areas` leaves out (``smaller``, node lists of areas of ``graph``), the nearest
+    to the largest's ``ground`` (gap and rise, :func:`closest_step_for`, of the ``COMPARED_AREAS`` whose edge points
+    come nearest) when it comes nearer than the area named (``named``: its hypot(gap, rise), metres; by
+    ``READ_AS_EQUAL``) and within the agent's width (``2 agent.radius``): a closet behind a thin wall, a ledge just
+    over the climb, a floor a door too narrow opens onto, that a designer fixing the named gap would not otherwise
+    learn of; the place is its ground's closest edge point. Farther ones (a crate's top, a rock across the water) are
+    left out: naming every crumb would lengthen every line. Empty when there is none. O(e log e) for the e edge
+    points of the compared areas.
     """
     if not smaller:
         return ""
