@@ -8,20 +8,24 @@ both routes) through the Steiner step (``map_analysis``: navmesh route; ``map_an
 stops it at the warning and keeps what the cause is measured on (the graph, its areas, the agent, the builder's
 ground and the mesh) in ``OUT_DIR/<level>_<route>.pkl``, with the warning the code of the run gave.
 
-``report OUT_DIR`` prints, per kept warning, the message the current code gives, each area's separation from the
-largest (:func:`g2s_plugins.area_gaps.closest_step_for`: gap, rise) and whether the message meets rule K
-(docs/analysis_quality.md "The disconnected-areas warning's smaller neighbours and head room"):
+``report OUT_DIR --before FILE`` prints, per kept warning, its likely cause by ``FILE`` (another commit's
+``area_gaps.py``: ``git show 66a3764:g2s_plugins/area_gaps.py > FILE``) and by the current code, each marked "the
+run's" when the whole warning equals the one the run gave, the CPU seconds of its second call (the first builds the
+mesh's ray scene), and whether it meets rule K (docs/analysis_quality.md "The disconnected-areas warning's smaller
+neighbours and head room"), from each area's separation from the largest
+(:func:`g2s_plugins.area_gaps.closest_step_for`: gap, rise; hypot of the two):
 
 - J' (round 50): it names the nearest area of at least a tenth of the largest's surface (of all, when none is), within
   0.5 m of hypot(gap, rise);
-- K1: when an area nearer than the named one comes within the agent's width (hypot(gap, rise) <= 2 agent.radius), the
-  message names such an area (one within 0.1 m of the nearest's distance), and names none when there is none;
+- K1: when an area under that tenth comes within the agent's width (hypot <= 2 agent.radius) and nearer than the
+  named one (both read at the warning's 0.1 m: :data:`g2s_plugins.area_gaps.READ_AS_EQUAL`), the message names such an
+  area (one within 0.1 m of the nearest's distance), and names none when there is none;
 - K2: on round 32's sewer, a named pair whose both ends lie on a channel's bed (under the walkways by 0.9 m or more)
   is parted by a plank's head room and is named so ("head room too low"); no other message names head room.
 
-Run: ``.venv/bin/python benchmarks/disconnected_warnings.py collect OUT_DIR`` (one level at a time, about 10-20 min on
-2 loaded cores), then ``report OUT_DIR``. O(levels x a pipeline run to the Steiner step); the report O(areas x
-:func:`~g2s_plugins.area_gaps.closest_step_for`) a warning.
+Run: ``.venv/bin/python benchmarks/disconnected_warnings.py collect OUT_DIR`` (about 4 min on 2 loaded cores; ``--round
+32``: 4 min more), then ``report OUT_DIR --before FILE`` (about 2 min). O(levels x a pipeline run to the Steiner
+step); the report O(areas x :func:`~g2s_plugins.area_gaps.closest_step_for`) a warning.
 """
 
 from __future__ import annotations
@@ -39,7 +43,7 @@ from pathlib import Path
 from types import ModuleType, SimpleNamespace
 
 import numpy as np
-from analysis_quality import KINDS
+from analysis_quality import KINDS, NAV_TEST
 from level_kinds32 import KINDS as ROUND_32_KINDS
 
 from g2s_core import api, pipeline
@@ -47,7 +51,7 @@ from g2s_core.disconnected import area_summary, disconnected_warning
 from g2s_core.mesh import load_mesh
 from g2s_plugins import area_gaps
 
-DATA = Path(__file__).resolve().parent.parent.parent / "shared" / "data"
+DATA = NAV_TEST.parent
 ROUTES = {"navmesh": "map_analysis", "sampling": "map_analysis_sampling"}
 
 WARNINGS = [
