@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 import trimesh
 
+from g2s_core.api import run
 from g2s_core.config import AgentConfig
 from g2s_core.disconnected import LISTED_AREAS, area_summary, disconnected_warning
 from g2s_plugins._raycasting import RayCaster
@@ -315,3 +316,14 @@ def test_a_beam_lower_than_the_agent_across_a_floor_is_named_as_head_room(beam, 
     if beam == (1.4, 1.7):
         place = np.array(message.rsplit("at (", 1)[1].removesuffix(" m).").split(", "), dtype=float)
         assert 9.5 <= place[0] <= 10.5 and place[1] == 0.0 and 0.5 <= place[2] <= 9.5
+
+
+@pytest.mark.parametrize("preset", ["map_analysis", "map_analysis_sampling"])
+def test_a_low_beam_parts_the_floor_on_either_route(preset):
+    """A floor 42 x 22 m with a beam 1 m wide across it, 1.4 m over it: either builder keeps no floor under the beam
+    (under the agent's 2 m), so the run warns of two areas, and the cause is the beam's head room, not a gap."""
+    mesh = boxes((-1, 41, -0.3, 0, -1, 21), (19.5, 20.5, 1.4, 1.7, -1, 21))
+    warned = [w for w in run(mesh, preset, mesh_name="beam").warnings if "disconnected areas" in str(w)]
+    assert len(warned) == 1 and "lie in 2 disconnected areas" in str(warned[0])
+    assert "Likely cause: from the largest area to the nearest area of " in str(warned[0])
+    assert "head room too low: a ceiling about 1.4 m over the floor, under agent.height (2 m)" in str(warned[0])
