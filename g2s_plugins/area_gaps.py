@@ -47,13 +47,31 @@ disconnected-areas warning names"). *A floor shut inside a closed solid*
 each body by its own winding, so that a mesh exported inside out reads as
 the same mesh wound right.
 
+*A ceiling lower than the agent* (:func:`low_ceiling`): Recast and the sampling
+builder keep no floor under less head room than ``agent.height``, so a plank
+over a channel's bed or a low beam across a room parts the floor under it
+into two areas whose ground stops either side. On one floor, when nothing
+lies across the pair at ``agent.max_climb`` over it (no wall), ground lies
+under the stretch between them, and a ray up from that ground meets a face
+under the agent's height, the cause is ``head room too low`` with the
+ceiling's height over the floor and the floor's place under it; it is asked
+before the closed-solid rule, whose rays half the agent's height up run
+along a plank's underside 1.0-1.1 m over a bed. *A smaller area nearer*
+(:func:`smaller_nearer`): the areas :func:`joined_areas` leaves out are not
+measured for the cause, so a closet behind a thin wall beside the largest
+went unnamed; the nearest of them is named after the cause when it comes
+nearer than the area measured and within the agent's width. Measured on the
+warnings of the levels that warn and the thirty-second round's sewer
+(docs/analysis_quality.md, "The disconnected-areas warning's smaller
+neighbours and head room").
+
 Complexity: O(n) for the areas' n nodes (their sizes), O(e log e) for the e
 edge points of the joined areas (one k-d tree of the largest's, to find the
 :data:`COMPARED_AREAS` nearest), then a k-d tree per pair measured, e = the
 areas' polygon perimeter / ``cell_size`` on
 the navmesh route, their sample count on the sampling route; with the mesh,
-O(m log m) for its m faces' closed bodies and up to 9 rays for each of at most
-``MAX_PLACE_CANDIDATES`` pairs.
+O(m log m) for its m faces' closed bodies and up to 9 rays (17 for the ceiling) for each of at most
+``MAX_PLACE_CANDIDATES`` pairs; the smaller areas as the joined ones, :data:`COMPARED_AREAS` of them measured.
 """
 
 from __future__ import annotations
@@ -74,7 +92,7 @@ from scipy.spatial.distance import pdist, squareform
 from g2s_core.config import AgentConfig
 from g2s_core.disconnected import area_summary, xyz
 from g2s_core.model import NavMesh
-from g2s_plugins._raycasting import EPSILON, UP, RayCaster, closed_solid_holds
+from g2s_plugins._raycasting import EPSILON, UP, RayCaster, closed_solid_holds, has_room
 from g2s_plugins.play_space import node_polygons
 
 Ground = tuple[np.ndarray, np.ndarray, np.ndarray]
@@ -86,7 +104,8 @@ Rim = Callable[[nx.Graph, Sequence[int]], Ground]
 JOINED_AREA_SHARE = 0.1
 """The share of the largest area's walkable surface from which another area is one a designer means to join to it
 (:func:`joined_areas`): an island, a floe, a wing cut off. Smaller ones (a floor boxed in a pillar, a crate's top, a
-pocket behind props) are left out of the cause, however near, when such an area exists: on ``nav_test.obj`` a floor
+pocket behind props) are left out of the cause's measure, however near, when such an area exists (the nearest is named
+after it when within the agent's width: :func:`smaller_nearer`): on ``nav_test.obj`` a floor
 of 6 m² boxed in 0.2 m from the largest area would hide the 4.7 m gap between its areas of 1,744 and 895 m²
 (docs/analysis_quality.md, "The disconnected-areas warning's nearest area")."""
 
@@ -97,6 +116,11 @@ gap and rise: a bound on the cost when a level is in hundreds of pieces."""
 MAX_PLACE_CANDIDATES = 1024
 """Edge pairs at most that :func:`where_between` tests (more, which takes 256 m of edge points a cell apart all within
 a cell of the closest pair, are thinned evenly along the edges)."""
+
+READ_AS_EQUAL = 0.05
+"""Metres under which two distances read the same in the warning (half the 0.1 m it prints): a smaller area is named
+after the one measured (:func:`smaller_nearer`) when it comes nearer by more, and within the agent's width plus this
+(on the sampling route, squares of 1 m, many areas read the same gap of 1.0 m, with float noise either side)."""
 
 GROUND_RAYS = 8
 """Rays at most down onto the stretch between two areas' ground (:func:`open_between`): a half spacing of the edge
@@ -193,32 +217,92 @@ def closest_step_for(a: Ground, b: Ground, agent: AgentConfig) -> Closest:
     return weighted if weighted.step <= float(agent.max_climb) else plain
 
 
+def stretch_under(closest: Closest, start: np.ndarray, end: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``(owner (r,), points (r,3))``: the middles of up to ``GROUND_RAYS`` equal parts of the stretch between two
+    areas' ground along each segment from ``start`` (c,3) to ``end`` (c,3) (a pair of :attr:`Closest.pairs` raised),
+    past each point's reach (plan distances: the reach is horizontal), each part at most half the pair's spacing long
+    (the stretch's middle where the reaches overlap), and the pair each belongs to. O(c + r)."""
+    plan = np.hypot(*(end - start)[:, [0, 2]].T)
+    lo = np.minimum(closest.reach[:, 0] / np.maximum(plan, 1e-12), 0.5)
+    hi = np.maximum(1 - closest.reach[:, 1] / np.maximum(plan, 1e-12), 0.5)
+    parts = np.clip(np.ceil((hi - lo) * plan / np.maximum(closest.spacing / 2, EPSILON)), 1, GROUND_RAYS).astype(np.int64)
+    owner = np.repeat(np.arange(len(start)), parts)
+    part = np.arange(len(owner)) - np.repeat(np.cumsum(parts) - parts, parts)
+    along = lo[owner] + (hi - lo)[owner] * (part + 0.5) / parts[owner]
+    return owner, start[owner] + along[:, None] * (end - start)[owner]
+
+
+def grounded(closest: Closest, owner: np.ndarray, ground: np.ndarray, agent: AgentConfig) -> np.ndarray:
+    """(r,) bool: each ground height (r,) (``-inf``: none) lies within ``agent.max_climb`` of its pair's two points'
+    heights (``owner`` (r,): the pair of :attr:`Closest.pairs`): a floor the agent would walk on between them."""
+    heights, climb = closest.pairs[owner, :, 1], float(agent.max_climb)
+    return (ground >= heights.min(axis=1) - climb) & (ground <= heights.max(axis=1) + climb)
+
+
 def open_between(caster: RayCaster, closest: Closest, agent: AgentConfig) -> np.ndarray:
     """(c,) bool: each pair of :attr:`Closest.pairs` faces an opening: the straight segment between the two points
     raised half the agent's height meets no face (a wall, not a door), and ground lies under the stretch between
-    the two areas' ground (past each point's reach) within ``agent.max_climb`` of the two points' heights (a plank
-    or a doorway's floor; not a chasm, nor a sill): the first face down from the raised segment at the middles of
-    up to ``GROUND_RAYS`` equal parts of that stretch, each at most half the pair's spacing long (the stretch's
-    middle where the reaches overlap). At most 1 + ``GROUND_RAYS`` rays a pair.
+    the two areas' ground (:func:`stretch_under`) within ``agent.max_climb`` of the two points' heights (a plank
+    or a doorway's floor; not a chasm, nor a sill): the first face down from the raised segment. At most
+    1 + ``GROUND_RAYS`` rays a pair.
     """
     pairs, lift = closest.pairs, 0.5 * float(agent.height) * UP
     start, end = pairs[:, 0] + lift, pairs[:, 1] + lift
     length = np.linalg.norm(end - start, axis=1)
-    plan = np.hypot(*(end - start)[:, [0, 2]].T)
-    # the stretch between the reaches, as fractions of the segment (plan distances: the reach is horizontal)
-    lo = np.minimum(closest.reach[:, 0] / np.maximum(plan, 1e-12), 0.5)
-    hi = np.maximum(1 - closest.reach[:, 1] / np.maximum(plan, 1e-12), 0.5)
-    parts = np.clip(np.ceil((hi - lo) * plan / np.maximum(closest.spacing / 2, EPSILON)), 1, GROUND_RAYS).astype(np.int64)
-    owner = np.repeat(np.arange(len(pairs)), parts)
-    part = np.arange(len(owner)) - np.repeat(np.cumsum(parts) - parts, parts)
-    along = lo[owner] + (hi - lo)[owner] * (part + 0.5) / parts[owner]
-    below = start[owner] + along[:, None] * (end - start)[owner]
+    owner, below = stretch_under(closest, start, end)
     # a pair on one plan point has no segment to cast along: its ground test alone decides
     across, down = caster.first_hits_of([(start, np.where(length[:, None] > 0, end - start, UP)), (below, -UP)])
-    ground = below[:, 1] - down.distance  # -inf where nothing lies under it
-    climb = float(agent.max_climb)
-    grounded = (ground >= pairs[owner, :, 1].min(axis=1) - climb) & (ground <= pairs[owner, :, 1].max(axis=1) + climb)
-    return ((length == 0) | (across.distance >= length)) & (np.bincount(owner, weights=~grounded, minlength=len(pairs)) == 0)
+    on_ground = grounded(closest, owner, below[:, 1] - down.distance, agent)
+    return ((length == 0) | (across.distance >= length)) & (np.bincount(owner, weights=~on_ground, minlength=len(pairs)) == 0)
+
+
+class LowCeiling(NamedTuple):
+    """A ceiling lower than the agent over the floor between two areas (:func:`low_ceiling`).
+
+    Attributes:
+        head_room: metres from the floor up to the ceiling, under ``agent.height``.
+        floor: (3,) the floor's point under it, metres.
+        gap: metres between the two areas' ground there (the pair's plan distance less their reach).
+    """
+
+    head_room: float
+    floor: np.ndarray
+    gap: float
+
+
+def low_ceiling(caster: RayCaster, closest: Closest, agent: AgentConfig) -> LowCeiling | None:
+    """The ceiling lower than the agent's height that parts two areas on one floor, if one does: for the closest of
+    :attr:`Closest.pairs` (nearer first) whose floor runs on between them, the lowest head room over it.
+
+    A pair's floor runs on when the segment between its two points raised ``agent.max_climb`` (over what the agent
+    steps on, under a beam or a plank) meets no face, a wall's, and the first face down from it at the middles of
+    the stretch between their ground (:func:`stretch_under`) is ground within ``agent.max_climb`` of the two points
+    (:func:`grounded`); the head room is how far a ray up from each such ground point (``EPSILON`` over it) goes,
+    and the pair is parted by a ceiling when the least is under ``agent.height``: Recast and the sampling builder
+    keep no floor with less head room than that, so the two areas' ground stops either side of it (a plank over a
+    channel's bed, a beam across a room). None when no pair is. 1 + 2 ``GROUND_RAYS`` rays a pair at most.
+    """
+    pairs, lift = closest.pairs, float(agent.max_climb) * UP
+    start, end = pairs[:, 0] + lift, pairs[:, 1] + lift
+    length = np.linalg.norm(end - start, axis=1)
+    owner, below = stretch_under(closest, start, end)
+    across, down = caster.first_hits_of([(start, np.where(length[:, None] > 0, end - start, UP)), (below, -UP)])
+    floor = below.copy()
+    floor[:, 1] -= down.distance  # -inf where nothing lies under it
+    on_ground = grounded(closest, owner, floor[:, 1], agent)
+    room = np.full(len(floor), np.inf)
+    room[on_ground] = caster.first_hits(floor[on_ground] + EPSILON * UP, UP).distance + EPSILON
+    lowest = np.full(len(pairs), np.inf)
+    np.minimum.at(lowest, owner, room)
+    runs_on = (across.distance >= length) & (np.bincount(owner, weights=~on_ground, minlength=len(pairs)) == 0)
+    low = runs_on & ~has_room(lowest, float(agent.height))
+    if not low.any():
+        return None
+    chosen = int(np.argmax(low))  # the first, the closest, under a ceiling
+    under = np.flatnonzero(owner == chosen)
+    at = under[int(np.argmin(room[under]))]
+    plan = float(np.hypot(*(pairs[chosen, 1] - pairs[chosen, 0])[[0, 2]]))
+    return LowCeiling(float(room[at]), floor[at], max(plan - float(closest.reach[chosen].sum()), 0.0))
 
 
 def where_between(caster: RayCaster, closest: Closest, agent: AgentConfig) -> str:
@@ -292,13 +376,16 @@ def areas_cause(graph: nx.Graph, largest: Sequence[int], others: Sequence[Sequen
     those :func:`joined_areas` keeps, with its size and where, e.g. ``from the largest area to the nearest
     area of 412 m², a step of about 0.6 m, ..., e.g. between (x, y, z m) and (x, y, z m)``. The nearest is the one whose
     ground's edges come closest (gap and rise, :func:`closest_step_for`), not the next in size: of a frozen lake's
-    floes, the one across a crack, not a floe beyond it.
+    floes, the one across a crack, not a floe beyond it. A smaller area nearer still is named after it
+    (:func:`smaller_nearer`).
 
     With ``mesh``, a nearest area whose closest place or middle (:func:`g2s_core.disconnected.area_summary`) is
     shut inside a closed solid of ``mesh`` (:func:`shut_in`) is named as such: Recast keeps the floor inside a
     closed box with head room, and either route a render floor inside a collision hull exported with the level.
-    Else, on one floor (a rise up to the agent's height), the place is the one :func:`where_between` names: the
-    door or plank too narrow for the agent, or the run of a wall or chasm.
+    Before that, on one floor (a rise up to the agent's climb), a ceiling lower than the agent over the floor between
+    them is named (:func:`low_ceiling`: a plank over a channel's bed, a beam); else, on one floor (a rise up to the
+    agent's height), the place :func:`where_between` names: the door or plank too narrow for the agent, or the run
+    of a wall or chasm.
     """
     ground = rim(graph, largest)  # once, however many areas it is compared with
     joined = joined_areas(graph, largest, others)
@@ -307,7 +394,37 @@ def areas_cause(graph: nx.Graph, largest: Sequence[int], others: Sequence[Sequen
                             for k in nearest_areas(ground, grounds, COMPARED_AREAS)),
                            key=lambda pair: math.hypot(pair[0].gap, pair[0].step))
     size, middle = area_summary(graph, nearest)
-    return f"from the largest area to the nearest area of {size:,.0f} m², {nearest_cause(closest, middle, agent, mesh)}"
+    named = set(joined)
+    smaller = [other for k, other in enumerate(others) if k not in named]
+    return (f"from the largest area to the nearest area of {size:,.0f} m², {nearest_cause(closest, middle, agent, mesh)}"
+            f"{smaller_nearer(graph, ground, smaller, math.hypot(closest.gap, closest.step), agent, rim)}")
+
+
+def smaller_nearer(graph: nx.Graph, ground: Ground, smaller: Sequence[Sequence[int]], named: float, agent: AgentConfig,
+                   rim: Rim) -> str:
+    """``; and a smaller area of A m² lies nearer, its ground about G m from the largest's, R m higher, at (x, y, z
+    m)``: of the areas :func:`joined_areas` leaves out (``smaller``, node lists of areas of ``graph``), the nearest
+    to the largest's ``ground`` (gap and rise, :func:`closest_step_for`, of the ``COMPARED_AREAS`` whose edge points
+    come nearest) when it comes nearer than the area named (``named``: its hypot(gap, rise), metres; by
+    ``READ_AS_EQUAL``) and within the agent's width (``2 agent.radius``): a closet behind a thin wall, a ledge just
+    over the climb, a floor a door too narrow opens onto, that a designer fixing the named gap would not otherwise
+    learn of; the place is its ground's closest edge point. Farther ones (a crate's top, a rock across the water) are
+    left out: naming every crumb would lengthen every line. Empty when there is none. O(e log e) for the e edge
+    points of the compared areas.
+    """
+    if not smaller:
+        return ""
+    grounds = [rim(graph, other) for other in smaller]
+    closest, nodes = min(((closest_step_for(ground, grounds[k], agent), smaller[k])
+                          for k in nearest_areas(ground, grounds, COMPARED_AREAS)),
+                         key=lambda pair: math.hypot(pair[0].gap, pair[0].step))
+    apart = math.hypot(closest.gap, closest.step)
+    if apart > 2 * float(agent.radius) + READ_AS_EQUAL or apart > named - READ_AS_EQUAL:
+        return ""
+    rise = float(closest.there[1] - closest.here[1])
+    level = "" if round(abs(rise), 1) == 0 else f", {abs(rise):.1f} m {'higher' if rise > 0 else 'lower'}"
+    return (f"; and a smaller area of {area_summary(graph, nodes)[0]:,.0f} m² lies nearer, its ground about "
+            f"{closest.gap:.1f} m from the largest's{level}, at ({xyz(closest.there)})")
 
 
 def nearest_cause(closest: Closest, middle: np.ndarray, agent: AgentConfig, mesh: trimesh.Trimesh | None) -> str:
@@ -317,6 +434,13 @@ def nearest_cause(closest: Closest, middle: np.ndarray, agent: AgentConfig, mesh
     if mesh is None:
         return f"{cause}, {between(closest.pairs[0])}"
     caster = RayCaster(mesh)
+    # a ceiling over floor that runs on between them first: nothing at the agent's step height parts them, so no
+    # solid's wall does (the shut-in rule's rays, lifted half the agent's height, run along a plank's underside
+    # 1.0-1.1 m over a channel's bed)
+    if closest.step <= float(agent.max_climb) and (ceiling := low_ceiling(caster, closest, agent)) is not None:
+        return (f"head room too low: a ceiling about {ceiling.head_room:.1f} m over the floor, under agent.height "
+                f"({float(agent.height):g} m), where their ground lies about {ceiling.gap:.1f} m apart, "
+                f"at ({xyz(ceiling.floor)})")
     # its closest place and its middle: a render post or column inside the solid may face the rays from one
     if shut_in(caster, np.stack([closest.there, middle]), agent).any():
         rise = float(closest.there[1] - closest.here[1])

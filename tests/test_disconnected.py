@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 import trimesh
 
+from g2s_core.api import run
 from g2s_core.config import AgentConfig
 from g2s_core.disconnected import LISTED_AREAS, area_summary, disconnected_warning
 from g2s_plugins._raycasting import RayCaster
@@ -233,7 +234,8 @@ def test_a_rise_far_from_the_areas_edges_is_no_step():
 
 def test_a_small_area_beside_the_largest_does_not_hide_the_gap_to_a_large_one():
     """A floor of 20 m², a crumb of 1 m² (a crate's top, under a tenth of it) 0.5 m from its end, and a second floor
-    of 15 m² alongside it 3 m away: the cause is the 3 m between the floors a designer would join, not the crumb."""
+    of 15 m² alongside it 3 m away: the cause is the 3 m between the floors a designer would join, not the crumb, which
+    is named after it as a smaller area nearer (within the agent's width of 1 m)."""
     graph = nx.Graph()
     slab(graph, 0.0, 0.0, 20, 0)
     slab(graph, 20.5, 0.0, 1, 100)
@@ -242,7 +244,8 @@ def test_a_small_area_beside_the_largest_does_not_hide_the_gap_to_a_large_one():
     assert "Largest areas: 20 m² near (9.5, 0.0, 0.5 m); 15 m² near (7.5, 0.0, 4.5 m); 1 m² near (21.0, 0.0, 0.5 m)." in message
     assert message.endswith("Likely cause: from the largest area to the nearest area of 15 m², a gap or passage too narrow for the "
                             "agent (agent.radius 0.5 m), or a wall, where their ground lies about 3.0 m apart, "
-                            "e.g. between (0.5, 0.0, 0.5 m) and (0.5, 0.0, 4.5 m).")
+                            "e.g. between (0.5, 0.0, 0.5 m) and (0.5, 0.0, 4.5 m); and a smaller area of 1 m² lies nearer, "
+                            "its ground about 0.5 m from the largest's, at (21.0, 0.0, 0.5 m).")
 
 
 def test_the_floe_across_a_crack_is_named_not_the_next_in_size_beyond_it():
@@ -270,3 +273,57 @@ def test_crumbs_alone_name_the_nearest_of_them():
     slab(graph, 31.0, 0.0, 1, 1000)
     message = disconnected_warning(graph, areas(graph), 6, SAMPLED)
     assert "Likely cause: from the largest area to the nearest area of 1 m², " in message and "about 1.0 m apart" in message
+
+
+@pytest.mark.parametrize("closet, said", [
+    ((-2.8, -0.8, 8.5, 10.5, 0.0), "; and a smaller area of 4 m² lies nearer, its ground about 0.3 m from the largest's, "
+                                   "at (-0.8, 0.0, "),                            # a closet behind a wall 0.3 m thick
+    ((-1.5, 0.5, 20.5, 22.5, 0.6), "; and a smaller area of 4 m² lies nearer, its ground about 0.0 m from the largest's, "
+                                   "0.6 m higher, at ("),                         # a ledge 0.6 m up, over the climb
+    ((-4.0, -2.0, 8.5, 10.5, 0.0), None),                                         # 1.5 m away: over the agent's width
+])
+def test_a_smaller_area_nearer_than_the_named_one_is_named_after_it(closet, said):
+    """A room of 361 m² (ground x 0-20), another of 304 m² whose ground lies 3 m from it (the area named) and a closet
+    of 4 m² (under a tenth): beside the room within the agent's 1 m it is named after the cause, with its place."""
+    navmesh, graph = navmesh_of([(0.5, 19.5, 0.5, 19.5, 0.0), (23.5, 39.5, 0.5, 19.5, 0.0), closet])
+    message = disconnected_warning(graph, areas(graph), 3, likely_cause_of(AgentConfig(), navmesh))
+    assert "Likely cause: from the largest area to the nearest area of 304 m², a gap or passage too narrow for the agent " \
+           "(agent.radius 0.5 m), or a wall, where their ground lies about 3.0 m apart, e.g. between (19.5, 0.0, " in message
+    assert "\n" not in message and message.endswith(".")
+    if said is None:
+        assert "smaller area" not in message
+    else:
+        assert said in message and message.count("; and a smaller area") == 1
+
+
+@pytest.mark.parametrize("beam, cause", [
+    ((1.4, 1.7), "head room too low: a ceiling about 1.4 m over the floor, under agent.height (2 m), where their ground "
+                 "lies about 1.0 m apart, at ("),                                      # a low beam
+    ((2.5, 2.8), "a gap or passage too narrow for the agent (agent.radius 0.5 m), or a wall, where their ground lies "
+                 "about 1.0 m apart"),                                                 # over the agent: not the cause
+    ((0.0, 1.7), "a gap or passage too narrow for the agent (agent.radius 0.5 m), or a wall, where their ground lies "
+                 "about 1.0 m apart, along "),                                          # a wall, not a ceiling
+])
+def test_a_beam_lower_than_the_agent_across_a_floor_is_named_as_head_room(beam, cause):
+    """A floor 20 x 10 m cut in two by a beam 1 m wide (x 9.5-10.5) across it: under it (1.4 m of head room, under the
+    agent's 2 m) the navmesh keeps no floor, and each half's polygon stops the agent's 0.5 m short of the beam. The
+    warning names the head room and a place on the floor under the beam; a beam over the agent or a wall is not."""
+    bottom, top = beam
+    mesh = boxes((-1, 21, -0.3, 0, -1, 11), (9.5, 10.5, bottom, top, -1, 11))
+    navmesh, graph = navmesh_of([(0.5, 9.0, 0.5, 9.5, 0.0), (11.0, 19.5, 0.5, 9.5, 0.0)])
+    message = disconnected_warning(graph, areas(graph), 2, likely_cause_of(AgentConfig(), navmesh, mesh=mesh))
+    assert cause in message and "\n" not in message
+    if beam == (1.4, 1.7):
+        place = np.array(message.rsplit("at (", 1)[1].removesuffix(" m).").split(", "), dtype=float)
+        assert 9.5 <= place[0] <= 10.5 and place[1] == 0.0 and 0.5 <= place[2] <= 9.5
+
+
+@pytest.mark.parametrize("preset", ["map_analysis", "map_analysis_sampling"])
+def test_a_low_beam_parts_the_floor_on_either_route(preset):
+    """A floor 42 x 22 m with a beam 1 m wide across it, 1.4 m over it: either builder keeps no floor under the beam
+    (under the agent's 2 m), so the run warns of two areas, and the cause is the beam's head room, not a gap."""
+    mesh = boxes((-1, 41, -0.3, 0, -1, 21), (19.5, 20.5, 1.4, 1.7, -1, 21))
+    warned = [w for w in run(mesh, preset, mesh_name="beam").warnings if "disconnected areas" in str(w)]
+    assert len(warned) == 1 and "lie in 2 disconnected areas" in str(warned[0])
+    assert "Likely cause: from the largest area to the nearest area of " in str(warned[0])
+    assert "head room too low: a ceiling about 1.4 m over the floor, under agent.height (2 m)" in str(warned[0])
