@@ -46,7 +46,7 @@ routes"): the areas under ``min_area`` on the generated levels are 4-28 m²
 (crate, stall and container tops, boat decks, islets, channel beds cut off
 under walkways) with no size that parts a crate top from a channel bed or
 an islet, and the navmesh route alone has smaller ones, slivers of
-0.1-1.3 m².
+0.1-3.9 m² (a theatre's seats no agent reaches).
 
 Traffic-aware cover (``traffic_weight`` > 0). A cover by walking distance
 alone places its nodes without regard to where traffic changes, and the
@@ -196,7 +196,8 @@ TRAFFIC_RADIUS_SHARE = 10.0 / 6.0
 PART_AGENT_RADII_SQUARED = 16.0
 """Default ``place_area`` in agent radii squared (4 m² for the default 0.5 m agent): the smallest walkable part
 either graph builder keeps, Recast's ``region_min_size`` of 8 cells of half an agent radius squared and the sampling
-builder's ``min_region_area``; smaller areas are left where a region that size joined a sliver of navmesh."""
+builder's ``min_region_area``. Smaller areas were found on the navmesh route alone (docs/analysis_quality.md,
+"Small areas on both routes")."""
 
 CENTRE_ROWS = 1024
 """Sources of one Dijkstra call when a small area's centre is sought (:func:`area_centres`): at most this many rows
@@ -296,8 +297,9 @@ def cover(graph: nx.Graph, params: Params, context: RunContext) -> Cover:
     has_leaf[labels[leaves]] = True
     if left_out.any():
         context.warn(
-            f"coverage: {int(left_out.sum())} walkable area(s) smaller than {place_area:.3g} m² ({component_area[left_out].sum():.3g} m² "
-            f"in all) are not covered: smaller than a part the graph builders keep (place_area), too small to be a place"
+            f"coverage: {int(left_out.sum())} walkable area(s) smaller than {place_area:.3g} m² "
+            f"({component_area[left_out].sum():.3g} m² in all) are not covered: smaller than a part the graph builders "
+            f"keep (place_area), too small to be a place"
         )
     places = small & ~left_out
     seeds = np.concatenate([leaves, _seeds(adjacency, labels, has_leaf, small), area_centres(adjacency, labels, places)])
@@ -692,7 +694,7 @@ def area_centres(adjacency: sp.csr_array, labels: np.ndarray, chosen: np.ndarray
 
     ``adjacency``: (n, n) edge lengths, m; ``labels``: (n,) each node's area;
     ``chosen``: (areas,) bool. The centre is where a designer puts the one
-    mark of a small place (a channel bed, an islet, a container's top), found
+    mark of a small place (a channel bed, an islet), found
     alike on a navmesh of two polygons and on a grid of samples: the middle
     of a strip, of a rectangle. Exact: Dijkstra from every node of the area,
     :data:`CENTRE_ROWS` sources at a time (memory), O(n_c (m_c + n_c log
