@@ -201,37 +201,44 @@ def select_cover(graph: nx.Graph, **params) -> tuple[tuple, tuple]:
     return terminals.nodes, terminals.waypoints
 
 
-def test_default_min_area_covers_islands_larger_than_a_disc_of_half_the_radius():
+def test_areas_under_min_area_are_seeded_at_their_centre_and_those_under_place_area_left_out():
     # radius 2 m: the default min_area is pi (2 / 2)² = 3.14 m². Three areas, each a ring of four 1 m edges (no
-    # leaf, every node within 2 m of every other): 12 m², 4 m² (above the default, below the area of a whole disc of
-    # the radius, 12.6 m²) and 2 m² (below both)
+    # leaf, every node within 2 m of every other): 12 m², 4 m² (above min_area) and 2 m² (below it), and a path of
+    # three 0.5 m² nodes (1.5 m², two leaves) under place_area, 1.6 m²
     graph = nx.Graph()
     for first, size, area in ((0, 4, 3.0), (10, 4, 1.0), (20, 4, 0.5)):
         ring = [first + k for k in range(size)]
         graph.add_weighted_edges_from((a, b, 1.0) for a, b in zip(ring, ring[1:] + ring[:1]))
         for node in ring:
             graph.nodes[node]["area"] = area
-    context = RunContext(mesh=None, agent=None, centre=np.zeros(3), graph=graph)
-    terminals = coverage.g2s_select_terminals(graph, coverage.Params(radius=2.0), context)
-    # each ring big enough gets one seed, its node farthest from its lowest id (2 and 12); the 2 m² ring is reported
-    assert terminals.nodes == (2, 12)
-    assert context.warnings == ["coverage: 1 walkable area(s) smaller than 3.14 m² (2 m² in all) are not covered"]
-
-
-def test_a_small_area_with_leaves_keeps_them_and_is_not_reported_as_left_out():
-    # radius 2 m, min_area 3.14 m²: a path of three 0.5 m² nodes (1.5 m², two leaves) and a ring of four 0.5 m²
-    # nodes (2 m², no leaf), both below min_area. The path's leaves are terminals (a tree of its own joins them, as
-    # the seventh round's sewer pockets showed), so only the ring is left out of the cover, and only it is reported
-    graph = nx.Graph()
-    graph.add_weighted_edges_from([(0, 1, 1.0), (1, 2, 1.0)])
-    ring = [10, 11, 12, 13]
-    graph.add_weighted_edges_from((a, b, 1.0) for a, b in zip(ring, ring[1:] + ring[:1]))
-    for node in graph.nodes:
+    graph.add_weighted_edges_from([(30, 31, 1.0), (31, 32, 1.0)])
+    for node in (30, 31, 32):
         graph.nodes[node]["area"] = 0.5
     context = RunContext(mesh=None, agent=None, centre=np.zeros(3), graph=graph)
+    terminals = coverage.g2s_select_terminals(graph, coverage.Params(radius=2.0, place_area=1.6), context)
+    # the big rings get one seed each, the node farthest from their lowest id (2 and 12); the small ring its
+    # centre: every node 2 m from its farthest, the lowest (20); the path is left out whatever its leaves
+    assert terminals.nodes == (2, 12, 20)
+    assert context.warnings == ["coverage: 1 walkable area(s) smaller than 1.6 m² (1.5 m² in all) are not covered: "
+                                "smaller than a part the graph builders keep (place_area), too small to be a place"]
+
+
+def test_a_small_area_is_seeded_at_its_centre_not_at_its_leaves():
+    # radius 2 m, min_area 3.14 m²: a path of three 0.5 m² nodes (1.5 m², two leaves) and a strip of seven 0.4 m²
+    # nodes 1 m apart (2.8 m², leaves 40 and 46), both below min_area, no agent (place_area 0). Each is seeded at
+    # its centre (1: 1 m from both ends; 43: 3 m from both), not at its leaves, and the cover reaches the strip's
+    # ends (3 m > 2 m) by a path to the farthest first, 40 (ties: lowest row), then 46
+    graph = nx.Graph()
+    graph.add_weighted_edges_from([(0, 1, 1.0), (1, 2, 1.0)])
+    strip = list(range(40, 47))
+    graph.add_weighted_edges_from((a, b, 1.0) for a, b in zip(strip, strip[1:]))
+    for node in graph.nodes:
+        graph.nodes[node]["area"] = 0.5 if node < 40 else 0.4
+    context = RunContext(mesh=None, agent=None, centre=np.zeros(3), graph=graph)
     terminals = coverage.g2s_select_terminals(graph, coverage.Params(radius=2.0), context)
-    assert terminals.nodes == (0, 2)
-    assert context.warnings == ["coverage: 1 walkable area(s) smaller than 3.14 m² (2 m² in all) are not covered"]
+    assert terminals.nodes == (1, 40, 41, 42, 43, 44, 45, 46) and not context.warnings
+    cover = coverage.cover(graph, coverage.Params(radius=2.0), context)
+    assert cover.leaves.size == 0 and [cover.arrays.nodes[i] for i in cover.traffic] == [1, 43]
 
 
 def test_traffic_weight_zero_is_the_plain_cover():

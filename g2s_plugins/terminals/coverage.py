@@ -20,10 +20,12 @@ them all and every node of an area with terminals ends up within
 ``radius`` of the structure along the graph. They are *waypoints*:
 simplification may drop them like any node on a path (the structure's
 straight edges still pass there), so they do not bloat the final structure.
-Areas (connected components) smaller than ``min_area`` get no extra
-terminals: their leaves stay (as with ``leaves``, and a tree of their own
-joins them), and those with no leaf (a single polygon, a ring) are left out
-and named in a warning.
+Areas (connected components) smaller than ``min_area`` are seeded at their
+graph centre (:func:`area_centres`), not at their leaves, and covered like
+any: a navmesh cuts a small area into few polygons, one of them often a
+leaf, where a grid of samples almost never has one, so seeding leaves
+covered a small area on one route and left it out on the other. Areas
+smaller than ``place_area`` get no terminal and are named in a warning.
 
 Default ``radius``: 12 agent radii (6 m for the default 0.5 m agent), but
 no more than a tenth of the level's horizontal extent so that small levels
@@ -33,11 +35,18 @@ get more than one terminal. Measured on a 115-room generated dungeon
 of the area within 6 m; the best agreement of a heat map on the structure
 with walking flow (the ceiling) falls with the radius: 0.90, 0.84, 0.81.
 Default ``min_area``: the area of a disc of half the ``radius`` (28 m² for
-the default 6 m). Smaller areas are the tops of crates, pillars and sills;
-on ``nav_test`` every area under it is a single navmesh polygon of 8-14 m²,
-while the areas between it and a whole disc of ``radius`` (113 m²) are an
-88 m² walkway and a 53 m² platform, places people stand on, which that
-larger default left out (docs/analysis_quality.md, "Islands").
+the default 6 m); on ``nav_test`` the areas between it and a whole disc of
+``radius`` (113 m²) are an 88 m² walkway and a 53 m² platform, places
+people stand on, which keep their leaves as dead ends (until 7 December
+2026 the areas under it were left out unless they had a leaf:
+docs/analysis_quality.md, "Islands"). Default ``place_area``: the smallest
+part either graph builder keeps, 16 agent radii squared (4 m² for the
+default agent). Measured in docs/analysis_quality.md ("Small areas on both
+routes"): the areas under ``min_area`` on the generated levels are 4-28 m²
+(crate, stall and container tops, boat decks, islets, channel beds cut off
+under walkways) with no size that parts a crate top from a channel bed or
+an islet, and the navmesh route alone has smaller ones, slivers of
+0.1-3.9 m² (a theatre's seats no agent reaches).
 
 Traffic-aware cover (``traffic_weight`` > 0). A cover by walking distance
 alone places its nodes without regard to where traffic changes, and the
@@ -184,12 +193,23 @@ EXTENT_SHARE = 0.1
 TRAFFIC_RADIUS_SHARE = 10.0 / 6.0
 """Default ``traffic_radius`` as a multiple of ``radius``."""
 
+PART_AGENT_RADII_SQUARED = 16.0
+"""Default ``place_area`` in agent radii squared (4 m² for the default 0.5 m agent): the smallest walkable part
+either graph builder keeps, Recast's ``region_min_size`` of 8 cells of half an agent radius squared and the sampling
+builder's ``min_region_area``. Smaller areas were found on the navmesh route alone (docs/analysis_quality.md,
+"Small areas on both routes")."""
+
+CENTRE_ROWS = 1024
+"""Sources of one Dijkstra call when a small area's centre is sought (:func:`area_centres`): at most this many rows
+of distances, 8 MB for an area of 1,000 nodes, whatever ``min_area`` a user sets."""
+
 
 class Params(PluginParams):
     """Cover radius, the smallest area that is forced in, and the traffic-aware cover before the plain one."""
 
     radius: float | None = Field(None, gt=0, description="every walkable node within this many metres (along the graph) of a terminal; default 12 agent radii, at most 1/10 of the level's extent")
-    min_area: float | None = Field(None, ge=0, description="walkable areas smaller than this (m²) get no extra terminals: their leaves stay, those without a leaf are reported; default pi (radius / 2)²")
+    min_area: float | None = Field(None, ge=0, description="walkable areas smaller than this (m²) are seeded at their graph centre, not at their leaves, then covered as any; default pi (radius / 2)²")
+    place_area: float | None = Field(None, ge=0, description="walkable areas smaller than this (m²) get no terminal and are named in a warning; default 16 agent.radius², the smallest part the graph builders keep")
     traffic_weight: float = Field(0.0, ge=0, description="metres added to each edge per percentile point of walking-flow difference between its ends, for a first cover that puts nodes where traffic changes; 0: the plain cover only")
     traffic_radius: float | None = Field(None, gt=0, description="radius of that traffic-aware cover, in metres of those lengths; default 5/3 radius (10 m for 6 m)")
     traffic_sources: int = Field(traffic.WALKING_SOURCES, ge=1, description="sources of the walking flow that cover reads: set as the flow analyzer's max_sources")
@@ -250,6 +270,7 @@ def cover(graph: nx.Graph, params: Params, context: RunContext) -> Cover:
     """The seeded leaves, the traffic-aware cover and the plain cover of ``graph`` (see the module docs)."""
     radius = params.radius if params.radius is not None else default_radius(context)
     min_area = params.min_area if params.min_area is not None else math.pi * (radius / 2) * (radius / 2)  # ** overflows
+    place_area = params.place_area if params.place_area is not None else smallest_part(context)
     arrays = traffic.surface_arrays(graph)
     drops_dents = params.dent_depth > 0 and params.dent_rho_budget > 0
     reads_traffic = params.traffic_weight > 0 or params.quiet_step > 0 or drops_dents
@@ -260,8 +281,11 @@ def cover(graph: nx.Graph, params: Params, context: RunContext) -> Cover:
     degree = np.diff(adjacency.indptr)
     count, labels = csgraph.connected_components(adjacency, directed=False)
     component_area = np.bincount(labels, weights=arrays.area, minlength=count)
-    small = component_area < min_area
-    leaves = np.flatnonzero(degree == 1)
+    left_out = component_area < place_area
+    small = left_out | (component_area < min_area)
+    # a small area is seeded at its centre whatever its tessellation: its leaves (which a navmesh of few polygons
+    # has and a grid of samples almost never) do not count
+    leaves = np.flatnonzero((degree == 1) & ~small[labels])
     if params.leaf_min_depth > 0:
         depths = leaf_depths(graph, context.navmesh, [arrays.nodes[i] for i in leaves.tolist()])
         leaves = leaves[depths >= params.leaf_min_depth]
@@ -271,15 +295,15 @@ def cover(graph: nx.Graph, params: Params, context: RunContext) -> Cover:
         leaves = dead_end_places(adjacency, arrays.area, leaves, params.dead_end_radii * radius)
     has_leaf = np.zeros(count, dtype=bool)
     has_leaf[labels[leaves]] = True
-    # a small area with leaves keeps them as terminals (its own tree joins them): only the others are left out
-    left_out = small & ~has_leaf
     if left_out.any():
         context.warn(
-            f"coverage: {int(left_out.sum())} walkable area(s) smaller than {min_area:.3g} m² "
-            f"({component_area[left_out].sum():.3g} m² in all) are not covered"
+            f"coverage: {int(left_out.sum())} walkable area(s) smaller than {place_area:.3g} m² "
+            f"({component_area[left_out].sum():.3g} m² in all) are not covered: smaller than a part the graph builders "
+            f"keep (place_area), too small to be a place"
         )
-    seeds = np.concatenate([leaves, _seeds(adjacency, labels, has_leaf, small)])
-    eligible = ~small[labels]
+    places = small & ~left_out
+    seeds = np.concatenate([leaves, _seeds(adjacency, labels, has_leaf, small), area_centres(adjacency, labels, places)])
+    eligible = ~left_out[labels]
     if reads_traffic:
         rank = walking_percentile(arrays, params.traffic_sources, params.traffic_ties, params.traffic_scaling)
     if params.traffic_weight > 0:
@@ -289,11 +313,10 @@ def cover(graph: nx.Graph, params: Params, context: RunContext) -> Cover:
         seeds = cover_paths(lengths, seeds, eligible, traffic_radius)
     rows = np.union1d(leaves, cover_paths(adjacency, seeds, eligible, radius))
     if params.quiet_step > 0:
-        # an area too small to cover keeps its leaves: the cover does not reach them
-        quiet = quiet_dead_ends(arrays, leaves[~small[labels[leaves]]], rank, params.quiet_step, rows, radius)
+        quiet = quiet_dead_ends(arrays, leaves, rank, params.quiet_step, rows, radius)
         leaves, seeds, rows = (np.setdiff1d(rows_, quiet) for rows_ in (leaves, seeds, rows))
     if drops_dents:
-        dents = dents_within_budget(graph, context.navmesh, arrays, leaves[~small[labels[leaves]]], rank,
+        dents = dents_within_budget(graph, context.navmesh, arrays, leaves, rank,
                                     params.dent_depth, rows, radius, params.dent_rho_budget)
         leaves, seeds, rows = (np.setdiff1d(rows_, dents) for rows_ in (leaves, seeds, rows))
     return Cover(arrays, np.sort(leaves), np.unique(seeds), rows)
@@ -663,6 +686,36 @@ def _seeds(adjacency, labels: np.ndarray, has_leaf: np.ndarray, small: np.ndarra
         members = np.flatnonzero(labels == labels[first])
         seeds.append(int(members[np.argmax(distance[members])]))
     return np.asarray(seeds, dtype=np.int64)
+
+
+def area_centres(adjacency: sp.csr_array, labels: np.ndarray, chosen: np.ndarray) -> np.ndarray:
+    """The graph centre of each ``chosen`` area: (k,) rows, one per area by ascending area label, each the node whose
+    farthest node of its area lies nearest (ties: the lowest row).
+
+    ``adjacency``: (n, n) edge lengths, m; ``labels``: (n,) each node's area;
+    ``chosen``: (areas,) bool. The centre is where a designer puts the one
+    mark of a small place (a channel bed, an islet), found
+    alike on a navmesh of two polygons and on a grid of samples: the middle
+    of a strip, of a rectangle. Exact: Dijkstra from every node of the area,
+    :data:`CENTRE_ROWS` sources at a time (memory), O(n_c (m_c + n_c log
+    n_c)) for an area of n_c nodes and m_c edges; the areas asked are those
+    under ``min_area``, a few dozen nodes each with the defaults.
+    """
+    order = np.argsort(labels, kind="stable")  # each area's rows together, ascending
+    bounds = np.searchsorted(labels[order], np.arange(len(chosen) + 1))
+    centres = []
+    for area in np.flatnonzero(chosen).tolist():
+        members = order[bounds[area]:bounds[area + 1]]
+        within = adjacency[members][:, members]
+        farthest = np.concatenate([csgraph.dijkstra(within, directed=False, indices=rows).max(axis=1)
+                                   for rows in np.array_split(np.arange(len(members)), -(-len(members) // CENTRE_ROWS))])
+        centres.append(int(members[np.argmin(farthest)]))
+    return np.asarray(centres, dtype=np.int64)
+
+
+def smallest_part(context: RunContext) -> float:
+    """The default ``place_area``: :data:`PART_AGENT_RADII_SQUARED` agent radii squared, m² (0 without an agent)."""
+    return 0.0 if context.agent is None else PART_AGENT_RADII_SQUARED * context.agent.radius * context.agent.radius
 
 
 def cover_paths(adjacency: sp.csr_array, seeds: np.ndarray, eligible: np.ndarray, radius: float) -> np.ndarray:
