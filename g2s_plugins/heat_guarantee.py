@@ -54,7 +54,9 @@ map's sampled scale, so the exact flow decides when to stop, not which
 nodes come back, and a structure changes only where that decision does;
 with ``heat_rho_within_areas`` the percentiles within the node's connected
 area and the heat drawn from them, the same on a graph of one area),
-:data:`RESTORED_SHARE` of the forest's nodes at a time: the forest is simplified again by the same
+:data:`RESTORED_SHARE` of the forest's nodes at a time, or, where that many read the target (read with the
+last structure's nodes, before simplifying), the fewest of them that do, found by bisection (:func:`_fewest_meeting`):
+the forest is simplified again by the same
 predicate, which now keeps them and every node the last structure kept
 (:func:`keeping`), so each round's structure holds the last one's. A
 structure that meets the target is the one Algorithm 4 gave, unchanged;
@@ -73,8 +75,9 @@ structure.
 Complexity: a round is one simplification (its predicate calls) and one
 measure (a multi-source Dijkstra over the initial graph, O(m + n log n),
 and two sorts), and under the target one more multi-source Dijkstra and a
-sort to rank the candidates (:func:`restore_gains`); each round but the last restores ceil(share x forest
-nodes) nodes, so there are at most 1 / :data:`RESTORED_SHARE` + 1 of them.
+sort to rank the candidates (:func:`restore_gains`) and one more measure of the round's nodes before simplifying,
+1 + ceil(log2 k) in the round whose k nodes read the target (:func:`_fewest_meeting`); each round but the last
+restores ceil(share x forest nodes) nodes, so there are at most 1 / :data:`RESTORED_SHARE` + 1 of them.
 A structure that meets the target costs one measure, and above the exact
 size one more sampled walking flow (the confirmation's, once per run; a
 spread heat map's second sample from the first round on, which in
@@ -152,6 +155,12 @@ errors are independent. A spread heat map is confirmed by the independent sample
 SPUR_SHARE = 0.01
 """Nodes :func:`spurs` joins to the forest per round, as a share of the graph's nodes."""
 
+HALVINGS = 4
+"""Bisection steps :func:`_fewest_meeting` takes at most: the last round restores at most 1/16 of its share more than
+the fewest that read the target (to the node on the small levels, whose rounds restore 20-35 nodes), for at most five
+readings (about 0.5 s of CPU on the 20k dungeon, whose step 5 takes 9-12 s: docs/analysis_quality.md, "The sampling
+route's first structure (7 December 2026)")."""
+
 FLOOR = 10.0
 """Percentile points: a removed node whose polygon's walking-flow percentile differs from the heat the map gives it
 by no more than this is never restored (the smallest ``max_traffic_step`` measured, docs/analysis_quality.md)."""
@@ -176,8 +185,8 @@ def restored(
     else every node of ``simplified`` and, of the removed nodes of ``forest``
     whose percentile differs from their heat by more than :data:`FLOOR`, those
     whose return lowers the heat map's squared error most
-    (:func:`restore_gains`), ceil(:data:`RESTORED_SHARE` x the forest's
-    nodes) of them, by decreasing gain then node id.
+    (:func:`restore_gains`), by decreasing gain then node id: ceil(:data:`RESTORED_SHARE` x the forest's nodes) of
+    them, or the fewest of those whose heat map reads the target (:func:`_fewest_meeting`).
 
     ``within_areas``: rho is :func:`~g2s_plugins.evaluation.within_area_rho` over the connected areas of ``graph``
     instead (docs/analysis_quality.md, "The heat map within each connected area"), and a removed node's
@@ -214,9 +223,52 @@ def restored(
         return None
     candidates = removed_rows[above]
     gain = restore_gains(arrays, reading.distance, reading.nearest, own, candidates)
-    ranked = np.lexsort((removed[above], -gain))
+    ranked = removed[above][np.lexsort((removed[above], -gain))]
     count = math.ceil(RESTORED_SHARE * forest.number_of_nodes())
-    return set(simplified) | set(removed[above][ranked[:count]].tolist())
+    previous, _LAST_RHO[forest] = _LAST_RHO.get(forest), rho
+    if previous is None or rho + (rho - previous) >= min_rho + margin:  # this round may be the last
+        count = _fewest_meeting(graph, set(simplified), ranked[:count].tolist(), min_rho + margin, sources, ties,
+                                scaling, sampling, areas)
+    return set(simplified) | set(ranked[:count].tolist())
+
+
+def _fewest_meeting(graph: nx.Graph, structure: set[Hashable], ranked: list[Hashable], target: float,
+                    sources: int, ties: traffic.Ties, scaling: traffic.Scaling, sampling: traffic.Sampling,
+                    areas: np.ndarray | None) -> int:
+    """How many of a round's ``ranked`` nodes (k, best first) to restore: the fewest whose heat map, with the nodes of
+    ``structure`` (the round's structure, under ``target`` by the guarantee's reading, :func:`heat_reading`), reads
+    ``target`` or more, found by bisection to within k / 2^:data:`HALVINGS` of them; all k when even all of them
+    read under it.
+
+    The reading is of the nodes alone, before the forest is simplified again: that simplification keeps them and the
+    structure's nodes and, measured, nothing more, so the round's structure is what was read and the guarantee's
+    measure of it confirms it (or, where the simplification keeps more and reads under, asks for another round).
+    Why: a round restores a fixed share of the forest, and the last one overshoots the target by up to that share of
+    the nodes (docs/analysis_quality.md, "The sampling route's first structure (7 December 2026)"); Douglas and
+    Peucker's rule adds one point at a time, the rounds a share at a time only for speed.
+
+    :func:`restored` asks only in a round that may be the last: the first, and any whose rho, raised again by as
+    much as the last round raised it, would read the target (later rounds raise rho less, docs/analysis_quality.md,
+    "The heat guarantee's restore choice"); elsewhere a round restores all k, as before.
+
+    Complexity: one reading (a multi-source Dijkstra and two sorts, O(m + n log n)) where even all k read under the
+    target, at most 1 + :data:`HALVINGS` where they read it; a simplification would cost each of them (on the 20k
+    dungeon a reading is about 0.1 s of CPU, a round 0.7-1.1 s).
+    """
+
+    def meets(count: int) -> bool:
+        reading = heat_reading(graph, structure | set(ranked[:count]), sources, ties, scaling, sampling, areas)
+        return not reading.rho < target
+
+    if len(ranked) <= 1 or not meets(len(ranked)):
+        return len(ranked)
+    fail, meet = 0, len(ranked)  # the structure alone reads under the target; all k read it
+    for _ in range(HALVINGS):
+        if meet - fail <= 1:
+            break
+        middle = (fail + meet) // 2
+        fail, meet = (fail, middle) if meets(middle) else (middle, meet)
+    return meet
 
 
 def restore_gains(arrays: traffic.SurfaceArrays, distance: np.ndarray, nearest: np.ndarray, own: np.ndarray,
@@ -517,6 +569,7 @@ def guaranteed(
         predicate = make_predicate()
         if forest is not None:  # None: asked outside the pipeline, for one predicate
             _FIRST[forest] = predicate
+            _LAST_RHO.pop(forest, None)
             begin_ahead(params, context)  # begun already when the pipeline asked for it after step 2
         return predicate
     if params.min_heat_rho is None:
@@ -525,6 +578,10 @@ def guaranteed(
                     params.heat_ties, params.heat_scaling, params.heat_sampling, params.heat_rho_within_areas)
     return None if kept is None else keeping(_FIRST[forest], kept)
 
+
+_LAST_RHO: weakref.WeakKeyDictionary[nx.DiGraph, float] = weakref.WeakKeyDictionary()
+"""The guarantee's reading of each forest's last structure under its target (:func:`restored`), forgotten as its
+first simplification begins (:func:`guaranteed`)."""
 
 _FIRST: weakref.WeakKeyDictionary[nx.DiGraph, Predicate] = weakref.WeakKeyDictionary()
 """The predicate each forest was first simplified with, asked again in the later rounds: its answers depend on the

@@ -74,6 +74,23 @@ def test_a_fixed_step_under_the_target_gets_its_nodes_back_until_it_holds():
     assert evaluation.placement_heat(graph, structure, traffic.walking_flow(graph)) == pytest.approx(heat, abs=0.05)
 
 
+def test_a_round_restores_only_as_many_of_its_nodes_as_reach_the_target(monkeypatch):
+    # the corridor kept at {0, 3, 8} (rho 0.8291), a round of half the forest's nodes (ceil(0.5 x 9) = 5): the four
+    # removed nodes more than 10 points off their heat rank 2, 6, 4, 1 (the test above: 2 gains most, then 6). All
+    # four read 0.9573, so the round stops short: 2 and 6 read 0.9353 >= 0.9, 2 alone 0.8725 (the bisection's two
+    # readings after the first); without the rule the round gives back 1, 2, 4 and 6
+    monkeypatch.setattr(heat_guarantee, "RESTORED_SHARE", 0.5)
+    graph = corridor()
+    flow = traffic.walking_flow(graph)
+    assert evaluation.placement_rho(graph, {0, 1, 2, 3, 4, 6, 8}, flow) == pytest.approx(0.9573, abs=1e-4)
+    assert evaluation.placement_rho(graph, {0, 2, 3, 6, 8}, flow) == pytest.approx(0.9353, abs=1e-4)
+    assert evaluation.placement_rho(graph, {0, 2, 3, 8}, flow) == pytest.approx(0.8725, abs=1e-4)
+    context = RunContext(mesh=None, agent=AgentConfig(), centre=np.zeros(3), graph=graph)
+    for target, kept in ((0.9, {0, 2, 3, 6, 8}), (0.96, {0, 1, 2, 3, 4, 6, 8})):  # 0.96: all four read under it
+        forest = root_forest(graph, {i: -i for i in graph}, centre=np.zeros(3))  # a first round of its own
+        assert heat_guarantee.restored(graph, forest, forest.subgraph({0, 3, 8}), target, context) == kept
+
+
 def test_within_areas_the_islands_lend_the_corridor_no_rho():
     # the corridor and 12 polygons apart, each an area of its own: their flow is 0 and so is their heat's rank,
     # which the level-wide rho counts as agreement (0.937 after one round, {0, 4, 8} and 1) while the corridor's own
@@ -289,7 +306,9 @@ def test_the_guarantee_follows_the_exact_flow_where_the_sample_says_otherwise():
     assert evaluation.spearman(heat, sampled) == pytest.approx(0.9093, abs=1e-4)
     assert evaluation.spearman(heat, exact) == pytest.approx(0.8962, abs=1e-4)
     kept = heat_guarantee.restored(graph, forest, structure, 0.9, context)
-    assert kept is not None and set(structure) < kept and len(kept) == 200 + math.ceil(0.02 * 300)
+    # of the round's ceil(0.02 x 300) = 6 nodes, the first already takes the heat map over 0.9 against the exact flow
+    assert kept is not None and set(structure) < kept and len(kept) == 201
+    assert evaluation.spearman(evaluation.placement_heat(graph, kept, sampled), exact) >= 0.9
     # a target both flows meet keeps the structure
     assert heat_guarantee.restored(graph, forest, structure, 0.89, context) is None and not context.warnings
 
