@@ -173,17 +173,47 @@ class _Scene:
         return sign
 
     @cached_property
-    def flush(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """``(starts (m + 1,) int64, partner (p,) int64, patch (p, 2, 3) float64)``: :func:`_flush_pairs` of the
-        triangles in CSR form, triangle ``f``'s partners ``partner[starts[f]:starts[f + 1]]`` and the boxes (local
-        frame) where it and each lie within ``TOUCHING`` of each other. Built once per mesh, on the first crossing
-        :func:`back_face_lead` meets (a level whose rays cross nothing, the dungeon open to the sky, never builds it)."""
+    def flush(self) -> tuple[np.ndarray, np.ndarray]:
+        """``(starts (m + 1,) int64, partner (p,) int64)``: :func:`_flush_pairs` of the triangles in CSR form,
+        triangle ``f``'s partners ``partner[starts[f]:starts[f + 1]]``. Built once per mesh, when a query asks for
+        more faces' partners than :meth:`flush_of` finds alone for less (the sampling builder's test of every
+        sample); a level whose rays cross nothing, the dungeon open to the sky, never builds it."""
         face, partner = _flush_pairs(self.triangles, self.bodies)
-        local = self.frame.to_local(self.triangles)
-        low, high = local.min(axis=1), local.max(axis=1)
-        patch = np.stack([np.maximum(low[face], low[partner]) - TOUCHING, np.minimum(high[face], high[partner]) + TOUCHING], axis=1)
-        starts = np.r_[0, np.cumsum(np.bincount(face, minlength=len(self.triangles)))]
-        return starts, partner, patch
+        return np.r_[0, np.cumsum(np.bincount(face, minlength=len(self.triangles)))], partner
+
+    @cached_property
+    def plane_keys(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """``(key (m, 4), length (m,), hashed (m,))`` float64: :func:`_plane_keys` of the triangles and each key
+        summed with :data:`_PLANE_HASH` (for :func:`_flush_pairs_of`; O(m), once per mesh)."""
+        key, length = _plane_keys(self.triangles)
+        return key, length, key @ _PLANE_HASH
+
+    def flush_of(self, faces: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """``(starts (k + 1,) int64, partner (p,) int64, patch (p, 2, 3) float64)``: the partners of :func:`_flush_pairs`
+        of the (k,) distinct triangles ``faces`` (ascending) in CSR form, ``faces[i]``'s ``partner[starts[i]:starts[i + 1]]``
+        (ascending), and the boxes (local frame) where it and each lie within ``TOUCHING`` of each other.
+
+        A few faces (the disconnected-areas warning's rays from two points) are paired alone
+        (:func:`_flush_pairs_of`, O(m log k) and at most m comparisons); more, or once :attr:`flush` is built, are
+        read from the whole mesh's pairs (O(m log m) once, then O(k + p)). Either way the same pairs."""
+        faces = np.asarray(faces, dtype=np.int64)
+        local = None
+        if len(faces) == 0:
+            local = np.zeros(0, np.int64), np.zeros(0, np.int64)
+        elif "flush" not in self.__dict__:  # cached_property keeps its value in the instance's dict
+            local = _flush_pairs_of(faces, self.triangles, self.bodies, *self.plane_keys, budget=len(self.triangles))
+        if local is None:
+            starts, partners = self.flush
+            count = starts[faces + 1] - starts[faces]
+            partner = partners[np.arange(int(count.sum())) + np.repeat(starts[faces] - (np.cumsum(count) - count), count)]
+            face = np.repeat(faces, count)
+        else:
+            face, partner = local
+            count = np.bincount(np.searchsorted(faces, face), minlength=len(faces))
+        face_corners, partner_corners = self.frame.to_local(self.triangles[face]), self.frame.to_local(self.triangles[partner])
+        patch = np.stack([np.maximum(face_corners.min(axis=1), partner_corners.min(axis=1)) - TOUCHING,
+                          np.minimum(face_corners.max(axis=1), partner_corners.max(axis=1)) + TOUCHING], axis=1)
+        return np.r_[0, np.cumsum(count)].astype(np.int64), partner, patch
 
     @classmethod
     def of_mesh(cls, mesh: trimesh.Trimesh) -> _Scene:
@@ -614,6 +644,21 @@ def _paired_round_edges(triangles: np.ndarray, sides: np.ndarray, edge: np.ndarr
     return sides[keep], sides[mate[keep]], sound
 
 
+def _plane_keys(triangles: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``(key (m, 4) float64, length (m,) float64)``: each triangle's plane as :func:`_flush_pairs` tells planes
+    apart (its unit normal, turned so that its first component over a millionth is positive, in millionths, and its
+    offset from the origin in ``TOUCHING`` steps, all rounded to integers) and its normal's length before it was made
+    a unit (0: a degenerate triangle, in no plane). O(m), one row at a time: a row's key does not depend on the
+    other rows, so :func:`_flush_pairs_of` reads the very keys :func:`_flush_pairs` compares."""
+    normal = np.cross(triangles[:, 1] - triangles[:, 0], triangles[:, 2] - triangles[:, 0])
+    length = np.linalg.norm(normal, axis=1)
+    normal /= np.maximum(length, 1e-300)[:, None]
+    leading = normal[np.arange(len(normal)), np.argmax(np.abs(normal) > 1e-6, axis=1)]
+    normal *= np.where(leading < 0, -1.0, 1.0)[:, None]
+    key = np.column_stack([np.round(normal / 1e-6), np.round(np.einsum("ij,ij->i", normal, triangles[:, 0]) / TOUCHING)])
+    return key, length
+
+
 def _flush_pairs(triangles: np.ndarray, bodies: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """``(face, partner)``, (p,) int64 each, sorted by face: every ordered pair of triangles ((m, 3, 3) corners, m) in
     one plane whose boxes come within ``TOUCHING`` of each other, of two closed bodies (``bodies`` (m,), < 0 for a
@@ -627,12 +672,7 @@ def _flush_pairs(triangles: np.ndarray, bodies: np.ndarray) -> tuple[np.ndarray,
     a closed triangle and triangles of two bodies are binned. Narrow phase: the same plane, two bodies, the 3-D
     boxes within ``TOUCHING``. O(E log E + P) for the E (box, cell) entries and P pairs sharing a cell.
     """
-    normal = np.cross(triangles[:, 1] - triangles[:, 0], triangles[:, 2] - triangles[:, 0])
-    length = np.linalg.norm(normal, axis=1)
-    normal /= np.maximum(length, 1e-300)[:, None]
-    leading = normal[np.arange(len(normal)), np.argmax(np.abs(normal) > 1e-6, axis=1)]
-    normal *= np.where(leading < 0, -1.0, 1.0)[:, None]
-    key = np.column_stack([np.round(normal / 1e-6), np.round(np.einsum("ij,ij->i", normal, triangles[:, 0]) / TOUCHING)])
+    key, length = _plane_keys(triangles)
     plane = np.unique(key, axis=0, return_inverse=True)[1].reshape(-1)
     owners = np.unique(np.column_stack([plane, bodies]), axis=0)
     shared = np.bincount(owners[:, 0], minlength=plane.max(initial=-1) + 1) >= 2
@@ -657,6 +697,53 @@ def _flush_pairs(triangles: np.ndarray, bodies: np.ndarray) -> tuple[np.ndarray,
     a, b = a[near], b[near]
     near = ((low[a] <= high[b]) & (low[b] <= high[a])).all(axis=1)
     face, partner = kept[a[near]], kept[b[near]]
+    order = np.lexsort((partner, face))
+    return face[order], partner[order]
+
+
+_PLANE_HASH = np.random.default_rng(1).uniform(0.5, 1.5, 4)
+"""Weights of a triangle's four plane key numbers (:func:`_plane_keys`) summed into one: one plane's triangles share
+the sum (the same arithmetic on the same numbers), distinct planes rarely do (and are told apart by their keys)."""
+
+
+def _flush_pairs_of(faces: np.ndarray, triangles: np.ndarray, bodies: np.ndarray, key: np.ndarray, length: np.ndarray,
+                    hashed: np.ndarray, budget: int) -> tuple[np.ndarray, np.ndarray] | None:
+    """:func:`_flush_pairs` of the (k,) distinct triangles ``faces`` alone: ``(face, partner)`` (p,) int64 each, sorted
+    by face, every pair of the whole mesh's answer whose face is one of ``faces``, and no other; None when more than
+    ``budget`` (face, triangle in its plane) pairs would be compared (the whole mesh's pairs, built once, then cost
+    less than several such queries).
+
+    The same rule read for the asked planes only: ``key`` and ``length`` (m, 4) and (m,) of :func:`_plane_keys`,
+    ``hashed`` (m,) ``key @ _PLANE_HASH``; the triangles of an asked face's plane are those whose sum is one of the
+    asked planes' and whose key is its key (all of them: so whether the plane holds two owners, one of them a closed
+    body, is the whole mesh's answer); each asked face is compared with every triangle of its plane, owner and
+    grown boxes as :func:`_flush_pairs`' narrow phase. O(m log k) for the sums' look-up among the asked planes'
+    sorted sums (no sort, no grid of the m triangles) and O(P) for the P <= ``budget`` pairs compared.
+    """
+    sums = np.unique(hashed[faces])
+    at = np.minimum(np.searchsorted(sums, hashed), len(sums) - 1)
+    members = np.flatnonzero(sums[at] == hashed)  # every triangle of an asked plane, and any whose sum collides
+    plane = np.unique(key[members], axis=0, return_inverse=True)[1].reshape(-1)
+    by_plane = np.argsort(plane, kind="stable")
+    begin = np.searchsorted(plane[by_plane], np.arange(plane.max(initial=-1) + 2))
+    owners = np.unique(np.column_stack([plane, bodies[members]]), axis=0)
+    shared = np.bincount(owners[:, 0], minlength=len(begin) - 1) >= 2
+    shared &= np.bincount(plane, weights=bodies[members] >= 0, minlength=len(begin) - 1) > 0
+    asked = np.searchsorted(members, faces)  # members is sorted and holds every asked face
+    asked = asked[(length[faces] > 0) & shared[plane[asked]]]
+    count = begin[plane[asked] + 1] - begin[plane[asked]]
+    if int(count.sum()) > budget:
+        return None
+    row = np.repeat(asked, count)
+    other = by_plane[np.arange(len(row)) + np.repeat(begin[plane[asked]] - (np.cumsum(count) - count), count)]
+    face, partner = members[row], members[other]
+    keep = (length[partner] > 0) & (bodies[face] != bodies[partner])
+    face, partner = face[keep], partner[keep]
+    # the grown boxes of _flush_pairs, per row as there
+    face_low, face_high = triangles[face].min(axis=1) - 0.5 * TOUCHING, triangles[face].max(axis=1) + 0.5 * TOUCHING
+    partner_low, partner_high = triangles[partner].min(axis=1) - 0.5 * TOUCHING, triangles[partner].max(axis=1) + 0.5 * TOUCHING
+    near = ((face_low <= partner_high) & (partner_low <= face_high)).all(axis=1)
+    face, partner = face[near], partner[near]
     order = np.lexsort((partner, face))
     return face[order], partner[order]
 
@@ -1194,15 +1281,16 @@ def flush_crossings(caster: RayCaster, origins: np.ndarray, unit: np.ndarray, ra
     """``(ray, distance, face)``: the crossings :meth:`RayCaster.all_hits` stepped past (origins (n, 3) m, ``unit``
     (3,) their direction; its answer ``ray``, ``face`` (c,) and ``points`` (c, 3) m). The multiple-hit query steps
     past each crossing before it looks for the next, so of two faces in one plane where they overlap it reports
-    one; the other is a partner of the one reported (:attr:`_Scene.flush`) whose patch holds the crossing, and the
+    one; the other is a partner of the one reported (:meth:`_Scene.flush_of`) whose patch holds the crossing, and the
     ray crosses it (the Moller-Trumbore test: T. Moller and B. Trumbore, "Fast, minimum storage ray-triangle
     intersection", Journal of Graphics Tools 2(1), 1997; its edges included, so a crossing on the edge between a
     face's two triangles is found on both: :func:`back_face_lead` counts a body once a place).
 
-    Nothing is built or cast again: O(c + q) for the q (crossing, partner) pairs of the crossings' faces, and
-    :attr:`_Scene.flush` on the mesh's first crossing.
+    Nothing is cast again: O(c log c + q) for the q (crossing, partner) pairs of the crossings' faces, and
+    :meth:`_Scene.flush_of` of the faces crossed.
     """
-    starts, partners, patches = caster.scene.flush
+    faces, face = np.unique(face, return_inverse=True)  # the partners of each face crossed, once
+    starts, partners, patches = caster.scene.flush_of(faces)
     count = starts[face + 1] - starts[face]
     row = np.repeat(np.arange(len(face)), count)
     pair = np.arange(len(row)) + np.repeat(starts[face] - (np.cumsum(count) - count), count)
