@@ -726,6 +726,8 @@ def _flush_pairs_of(faces: np.ndarray, triangles: np.ndarray, bodies: np.ndarray
     plane = np.unique(key[members], axis=0, return_inverse=True)[1].reshape(-1)
     by_plane = np.argsort(plane, kind="stable")
     begin = np.searchsorted(plane[by_plane], np.arange(plane.max(initial=-1) + 2))
+    # pairs are of two owners, one a closed body: the faces of a plane of one owner, or of none closed, pair nothing
+    # and are not compared (as _flush_pairs bins none of them)
     owners = np.unique(np.column_stack([plane, bodies[members]]), axis=0)
     shared = np.bincount(owners[:, 0], minlength=len(begin) - 1) >= 2
     shared &= np.bincount(plane, weights=bodies[members] >= 0, minlength=len(begin) - 1) > 0
@@ -736,14 +738,13 @@ def _flush_pairs_of(faces: np.ndarray, triangles: np.ndarray, bodies: np.ndarray
         return None
     row = np.repeat(asked, count)
     other = by_plane[np.arange(len(row)) + np.repeat(begin[plane[asked]] - (np.cumsum(count) - count), count)]
-    face, partner = members[row], members[other]
-    keep = (length[partner] > 0) & (bodies[face] != bodies[partner])
-    face, partner = face[keep], partner[keep]
-    # the grown boxes of _flush_pairs, per row as there
-    face_low, face_high = triangles[face].min(axis=1) - 0.5 * TOUCHING, triangles[face].max(axis=1) + 0.5 * TOUCHING
-    partner_low, partner_high = triangles[partner].min(axis=1) - 0.5 * TOUCHING, triangles[partner].max(axis=1) + 0.5 * TOUCHING
-    near = ((face_low <= partner_high) & (partner_low <= face_high)).all(axis=1)
-    face, partner = face[near], partner[near]
+    # the grown boxes of _flush_pairs (each row's as there), once per triangle of the asked planes
+    corners = triangles[members]
+    low, high = corners.min(axis=1) - 0.5 * TOUCHING, corners.max(axis=1) + 0.5 * TOUCHING
+    near = (length[members[other]] > 0) & (bodies[members[row]] != bodies[members[other]])
+    row, other = row[near], other[near]
+    near = ((low[row] <= high[other]) & (low[other] <= high[row])).all(axis=1)
+    face, partner = members[row[near]], members[other[near]]
     order = np.lexsort((partner, face))
     return face[order], partner[order]
 
