@@ -681,26 +681,33 @@ def _flush_pairs_of(faces: np.ndarray, triangles: np.ndarray, bodies: np.ndarray
     asked planes' and whose key is its key (all of them: so whether the plane holds two owners, one of them a closed
     body, is the whole mesh's answer); each asked face is compared with every triangle of its plane, owner and
     grown boxes as :func:`_flush_pairs`' narrow phase. O(m log k) for the sums' look-up among the asked planes'
-    sorted sums (no sort, no grid of the m triangles), O(M log M) for the M triangles of the asked planes and O(P)
-    for the P pairs compared, M + P <= ``budget``.
+    sorted sums (no sort, no grid of the m triangles), a stable sort of the M triangles of the asked planes by
+    plane (O(M log M) on integers; a sort of their keys only where two planes' sums collide) and O(P) for the P
+    pairs compared, M + P <= ``budget``.
     """
     sums = np.unique(hashed[faces])
     at = np.minimum(np.searchsorted(sums, hashed), len(sums) - 1)
     members = np.flatnonzero(sums[at] == hashed)  # every triangle of an asked plane, and any whose sum collides
     if len(members) > budget:
         return None
-    plane = _row_ranks(key[members])
+    # one plane a sum unless two keys share it (then the keys' ranks tell the planes apart)
+    plane = at[members]
+    one_of = np.zeros(len(sums), dtype=np.int64)
+    one_of[plane] = members  # a triangle of each sum, whichever the assignment keeps
+    if not (key[members] == key[one_of[plane]]).all():
+        plane = _row_ranks(key[members])
     by_plane = np.argsort(plane, kind="stable")
     begin = np.searchsorted(plane[by_plane], np.arange(plane.max(initial=-1) + 2))
     # pairs are of two owners, one a closed body: the faces of a plane of one owner, or of none closed, pair nothing
-    # and are not compared (as _flush_pairs bins none of them)
-    owners = np.unique(np.column_stack([plane, bodies[members]]), axis=0)
-    shared = np.bincount(owners[:, 0], minlength=len(begin) - 1) >= 2
-    shared &= np.bincount(plane, weights=bodies[members] >= 0, minlength=len(begin) - 1) > 0
+    # and are not compared (as _flush_pairs bins none of them); every plane here holds a triangle
+    owner = bodies[members[by_plane]]
+    low_owner, high_owner = np.minimum.reduceat(owner, begin[:-1]), np.maximum.reduceat(owner, begin[:-1])
+    shared = (low_owner != high_owner) & (high_owner >= 0)
     asked = np.searchsorted(members, faces)  # members is sorted and holds every asked face
     asked = asked[(length[faces] > 0) & shared[plane[asked]]]
     count = begin[plane[asked] + 1] - begin[plane[asked]]
-    if len(members) + int(count.sum()) > budget:
+    spent = len(members) + int(count.sum())
+    if spent > budget:
         return None
     row = np.repeat(asked, count)
     other = by_plane[np.arange(len(row)) + np.repeat(begin[plane[asked]] - (np.cumsum(count) - count), count)]
@@ -712,7 +719,7 @@ def _flush_pairs_of(faces: np.ndarray, triangles: np.ndarray, bodies: np.ndarray
     near = ((low[row] <= high[other]) & (low[other] <= high[row])).all(axis=1)
     face, partner = members[row[near]], members[other[near]]
     order = np.lexsort((partner, face))
-    return face[order], partner[order], len(members) + len(near)
+    return face[order], partner[order], spent
 
 
 class FlushPartners:
@@ -722,9 +729,9 @@ class FlushPartners:
     :func:`_flush_pairs_of` finds those alone. Asking for a whole mesh's worth (the sampling builder's rule over
     every sample) builds the whole mesh's pairs once and reads them after. The two meet at ``m`` (the triangles)
     gathered or compared in all: the queries answered alone may spend that much between them, the first one that
-    would go past it builds the whole (O(m log m), the heaviest step of a crossing query: 2.2 s of CPU on round
-    33's subway roundabout of 323,034 triangles, where the warning's own queries spend a few milliseconds).
-    The same pairs either way (tests/test_closed_solids.py compares them).
+    would go past it builds the whole (O(m log m) with a grid of boxes, several times the cost of those m steps:
+    docs/performance.md, "7 December 2026: the warning's closed-solid test on big meshes"). The same pairs either
+    way (tests/test_closed_solids.py compares them).
 
     Args:
         triangles: (m, 3, 3) corners, world coordinates, metres.
