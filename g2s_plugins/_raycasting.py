@@ -173,17 +173,10 @@ class _Scene:
         return sign
 
     @cached_property
-    def flush(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """``(starts (m + 1,) int64, partner (p,) int64, patch (p, 2, 3) float64)``: :func:`_flush_pairs` of the
-        triangles in CSR form, triangle ``f``'s partners ``partner[starts[f]:starts[f + 1]]`` and the boxes (local
-        frame) where it and each lie within ``TOUCHING`` of each other. Built once per mesh, on the first crossing
-        :func:`back_face_lead` meets (a level whose rays cross nothing, the dungeon open to the sky, never builds it)."""
-        face, partner = _flush_pairs(self.triangles, self.bodies)
-        local = self.frame.to_local(self.triangles)
-        low, high = local.min(axis=1), local.max(axis=1)
-        patch = np.stack([np.maximum(low[face], low[partner]) - TOUCHING, np.minimum(high[face], high[partner]) + TOUCHING], axis=1)
-        starts = np.r_[0, np.cumsum(np.bincount(face, minlength=len(self.triangles)))]
-        return starts, partner, patch
+    def flush(self) -> FlushPartners:
+        """The triangles' flush partners (:class:`FlushPartners`), found on the first crossing
+        :func:`back_face_lead` meets (a level whose rays cross nothing, the dungeon open to the sky, asks none)."""
+        return FlushPartners(self.triangles, self.bodies, self.frame)
 
     @classmethod
     def of_mesh(cls, mesh: trimesh.Trimesh) -> _Scene:
@@ -614,6 +607,21 @@ def _paired_round_edges(triangles: np.ndarray, sides: np.ndarray, edge: np.ndarr
     return sides[keep], sides[mate[keep]], sound
 
 
+def _plane_keys(triangles: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``(key (m, 4) float64, length (m,) float64)``: each triangle's plane as :func:`_flush_pairs` tells planes
+    apart (its unit normal, turned so that its first component over a millionth is positive, in millionths, and its
+    offset from the origin in ``TOUCHING`` steps, all rounded to integers) and its normal's length before it was made
+    a unit (0: a degenerate triangle, in no plane). O(m), one row at a time: a row's key does not depend on the
+    other rows, so :func:`_flush_pairs_of` reads the very keys :func:`_flush_pairs` compares."""
+    normal = np.cross(triangles[:, 1] - triangles[:, 0], triangles[:, 2] - triangles[:, 0])
+    length = np.linalg.norm(normal, axis=1)
+    normal /= np.maximum(length, 1e-300)[:, None]
+    leading = normal[np.arange(len(normal)), np.argmax(np.abs(normal) > 1e-6, axis=1)]
+    normal *= np.where(leading < 0, -1.0, 1.0)[:, None]
+    key = np.column_stack([np.round(normal / 1e-6), np.round(np.einsum("ij,ij->i", normal, triangles[:, 0]) / TOUCHING)])
+    return key, length
+
+
 def _flush_pairs(triangles: np.ndarray, bodies: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """``(face, partner)``, (p,) int64 each, sorted by face: every ordered pair of triangles ((m, 3, 3) corners, m) in
     one plane whose boxes come within ``TOUCHING`` of each other, of two closed bodies (``bodies`` (m,), < 0 for a
@@ -627,12 +635,7 @@ def _flush_pairs(triangles: np.ndarray, bodies: np.ndarray) -> tuple[np.ndarray,
     a closed triangle and triangles of two bodies are binned. Narrow phase: the same plane, two bodies, the 3-D
     boxes within ``TOUCHING``. O(E log E + P) for the E (box, cell) entries and P pairs sharing a cell.
     """
-    normal = np.cross(triangles[:, 1] - triangles[:, 0], triangles[:, 2] - triangles[:, 0])
-    length = np.linalg.norm(normal, axis=1)
-    normal /= np.maximum(length, 1e-300)[:, None]
-    leading = normal[np.arange(len(normal)), np.argmax(np.abs(normal) > 1e-6, axis=1)]
-    normal *= np.where(leading < 0, -1.0, 1.0)[:, None]
-    key = np.column_stack([np.round(normal / 1e-6), np.round(np.einsum("ij,ij->i", normal, triangles[:, 0]) / TOUCHING)])
+    key, length = _plane_keys(triangles)
     plane = np.unique(key, axis=0, return_inverse=True)[1].reshape(-1)
     owners = np.unique(np.column_stack([plane, bodies]), axis=0)
     shared = np.bincount(owners[:, 0], minlength=plane.max(initial=-1) + 1) >= 2
@@ -659,6 +662,126 @@ def _flush_pairs(triangles: np.ndarray, bodies: np.ndarray) -> tuple[np.ndarray,
     face, partner = kept[a[near]], kept[b[near]]
     order = np.lexsort((partner, face))
     return face[order], partner[order]
+
+
+_PLANE_HASH = np.random.default_rng(1).uniform(0.5, 1.5, 4)
+"""Weights of a triangle's four plane key numbers (:func:`_plane_keys`) summed into one: one plane's triangles share
+the sum (the same arithmetic on the same numbers), distinct planes rarely do (and are told apart by their keys)."""
+
+
+def _flush_pairs_of(faces: np.ndarray, triangles: np.ndarray, bodies: np.ndarray, key: np.ndarray, length: np.ndarray,
+                    hashed: np.ndarray, budget: int) -> tuple[np.ndarray, np.ndarray, int] | None:
+    """:func:`_flush_pairs` of the (k,) distinct triangles ``faces`` alone: ``(face, partner, spent)``, (p,) int64
+    each, sorted by face, every pair of the whole mesh's answer whose face is one of ``faces`` and no other, and the
+    triangles gathered plus the pairs compared on the way; None when more than
+    ``budget`` triangles would be gathered from the asked planes and (face, triangle in its plane) pairs compared.
+
+    The same rule read for the asked planes only: ``key`` and ``length`` (m, 4) and (m,) of :func:`_plane_keys`,
+    ``hashed`` (m,) ``key @ _PLANE_HASH``; the triangles of an asked face's plane are those whose sum is one of the
+    asked planes' and whose key is its key (all of them: so whether the plane holds two owners, one of them a closed
+    body, is the whole mesh's answer); each asked face is compared with every triangle of its plane, owner and
+    grown boxes as :func:`_flush_pairs`' narrow phase. O(m log k) for the sums' look-up among the asked planes'
+    sorted sums (no sort, no grid of the m triangles), a stable sort of the M triangles of the asked planes by
+    plane (O(M log M) on integers; a sort of their keys only where two planes' sums collide) and O(P) for the P
+    pairs compared, M + P <= ``budget``.
+    """
+    sums = np.unique(hashed[faces])
+    at = np.minimum(np.searchsorted(sums, hashed), len(sums) - 1)
+    members = np.flatnonzero(sums[at] == hashed)  # every triangle of an asked plane, and any whose sum collides
+    if len(members) > budget:
+        return None
+    # one plane a sum unless two keys share it (then the keys' ranks tell the planes apart)
+    plane = at[members]
+    one_of = np.zeros(len(sums), dtype=np.int64)
+    one_of[plane] = members  # a triangle of each sum, whichever the assignment keeps
+    if not (key[members] == key[one_of[plane]]).all():
+        plane = _row_ranks(key[members])
+    by_plane = np.argsort(plane, kind="stable")
+    begin = np.searchsorted(plane[by_plane], np.arange(plane.max(initial=-1) + 2))
+    # pairs are of two owners, one a closed body: the faces of a plane of one owner, or of none closed, pair nothing
+    # and are not compared (as _flush_pairs bins none of them); every plane here holds a triangle
+    owner = bodies[members[by_plane]]
+    low_owner, high_owner = np.minimum.reduceat(owner, begin[:-1]), np.maximum.reduceat(owner, begin[:-1])
+    shared = (low_owner != high_owner) & (high_owner >= 0)
+    asked = np.searchsorted(members, faces)  # members is sorted and holds every asked face
+    asked = asked[(length[faces] > 0) & shared[plane[asked]]]
+    count = begin[plane[asked] + 1] - begin[plane[asked]]
+    spent = len(members) + int(count.sum())
+    if spent > budget:
+        return None
+    row = np.repeat(asked, count)
+    other = by_plane[np.arange(len(row)) + np.repeat(begin[plane[asked]] - (np.cumsum(count) - count), count)]
+    # the grown boxes of _flush_pairs (each row's as there), once per triangle of the asked planes
+    corners = triangles[members]
+    low, high = corners.min(axis=1) - 0.5 * TOUCHING, corners.max(axis=1) + 0.5 * TOUCHING
+    near = (length[members[other]] > 0) & (bodies[members[row]] != bodies[members[other]])
+    row, other = row[near], other[near]
+    near = ((low[row] <= high[other]) & (low[other] <= high[row])).all(axis=1)
+    face, partner = members[row[near]], members[other[near]]
+    order = np.lexsort((partner, face))
+    return face[order], partner[order], spent
+
+
+class FlushPartners:
+    """The partners of :func:`_flush_pairs` of one mesh's triangles, for the faces a query's rays cross.
+
+    The disconnected-areas warning asks for the faces crossed by its rays from two ground points, a few dozen:
+    :func:`_flush_pairs_of` finds those alone. Asking for a whole mesh's worth (the sampling builder's rule over
+    every sample) builds the whole mesh's pairs once and reads them after. The two meet at ``m`` (the triangles)
+    gathered or compared in all: the queries answered alone may spend that much between them, the first one that
+    would go past it builds the whole (O(m log m) with a grid of boxes, several times the cost of those m steps:
+    docs/performance.md, "7 December 2026: the warning's closed-solid test on big meshes"). The same pairs either
+    way (tests/test_closed_solids.py compares them).
+
+    Args:
+        triangles: (m, 3, 3) corners, world coordinates, metres.
+        bodies: (m,) :attr:`_Scene.bodies`.
+        frame: the frame the patches are given in (:attr:`_Scene.frame`).
+    """
+
+    def __init__(self, triangles: np.ndarray, bodies: np.ndarray, frame: LocalFrame) -> None:
+        self.triangles, self.bodies, self.frame = triangles, bodies, frame
+        self.spent = 0
+        """Triangles gathered and pairs compared by the queries answered alone so far (at most m)."""
+
+    @cached_property
+    def plane_keys(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """``(key (m, 4), length (m,), hashed (m,))`` float64: :func:`_plane_keys` of the triangles and each key
+        summed with :data:`_PLANE_HASH` (for :func:`_flush_pairs_of`; O(m), once per mesh)."""
+        key, length = _plane_keys(self.triangles)
+        return key, length, key @ _PLANE_HASH
+
+    @cached_property
+    def whole(self) -> tuple[np.ndarray, np.ndarray]:
+        """``(starts (m + 1,) int64, partner (p,) int64)``: :func:`_flush_pairs` of all the triangles in CSR form,
+        triangle ``f``'s partners ``partner[starts[f]:starts[f + 1]]``."""
+        face, partner = _flush_pairs(self.triangles, self.bodies)
+        return np.r_[0, np.cumsum(np.bincount(face, minlength=len(self.triangles)))], partner
+
+    def of(self, faces: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """``(starts (k + 1,) int64, partner (p,) int64, patch (p, 2, 3) float64)``: the partners of the (k,) distinct
+        triangles ``faces`` (ascending) in CSR form, ``faces[i]``'s ``partner[starts[i]:starts[i + 1]]`` (ascending),
+        and the boxes (local frame) where it and each lie within ``TOUCHING`` of each other. O(m log k) and what
+        is left of the budget, or O(k + p) once :attr:`whole` is built."""
+        faces = np.asarray(faces, dtype=np.int64)
+        alone = None
+        if len(faces) == 0:
+            alone = np.zeros(0, np.int64), np.zeros(0, np.int64), 0
+        elif "whole" not in self.__dict__:  # cached_property keeps its value in the instance's dict
+            alone = _flush_pairs_of(faces, self.triangles, self.bodies, *self.plane_keys, budget=len(self.triangles) - self.spent)
+        if alone is None:
+            starts, partners = self.whole
+            count = starts[faces + 1] - starts[faces]
+            partner = partners[np.arange(int(count.sum())) + np.repeat(starts[faces] - (np.cumsum(count) - count), count)]
+            face = np.repeat(faces, count)
+        else:
+            face, partner, spent = alone
+            self.spent += spent
+            count = np.bincount(np.searchsorted(faces, face), minlength=len(faces))
+        face_corners, partner_corners = self.frame.to_local(self.triangles[face]), self.frame.to_local(self.triangles[partner])
+        patch = np.stack([np.maximum(face_corners.min(axis=1), partner_corners.min(axis=1)) - TOUCHING,
+                          np.minimum(face_corners.max(axis=1), partner_corners.max(axis=1)) + TOUCHING], axis=1)
+        return np.r_[0, np.cumsum(count)].astype(np.int64), partner, patch
 
 
 def ray_margin(caster: RayCaster, reach: float) -> float:
@@ -1194,15 +1317,16 @@ def flush_crossings(caster: RayCaster, origins: np.ndarray, unit: np.ndarray, ra
     """``(ray, distance, face)``: the crossings :meth:`RayCaster.all_hits` stepped past (origins (n, 3) m, ``unit``
     (3,) their direction; its answer ``ray``, ``face`` (c,) and ``points`` (c, 3) m). The multiple-hit query steps
     past each crossing before it looks for the next, so of two faces in one plane where they overlap it reports
-    one; the other is a partner of the one reported (:attr:`_Scene.flush`) whose patch holds the crossing, and the
+    one; the other is a partner of the one reported (:meth:`FlushPartners.of`) whose patch holds the crossing, and the
     ray crosses it (the Moller-Trumbore test: T. Moller and B. Trumbore, "Fast, minimum storage ray-triangle
     intersection", Journal of Graphics Tools 2(1), 1997; its edges included, so a crossing on the edge between a
     face's two triangles is found on both: :func:`back_face_lead` counts a body once a place).
 
-    Nothing is built or cast again: O(c + q) for the q (crossing, partner) pairs of the crossings' faces, and
-    :attr:`_Scene.flush` on the mesh's first crossing.
+    Nothing is cast again: O(c log c + q) for the q (crossing, partner) pairs of the crossings' faces, and
+    :meth:`FlushPartners.of` of the faces crossed.
     """
-    starts, partners, patches = caster.scene.flush
+    faces, face = np.unique(face, return_inverse=True)  # the partners of each face crossed, once
+    starts, partners, patches = caster.scene.flush.of(faces)
     count = starts[face + 1] - starts[face]
     row = np.repeat(np.arange(len(face)), count)
     pair = np.arange(len(row)) + np.repeat(starts[face] - (np.cumsum(count) - count), count)

@@ -9,10 +9,12 @@ import pytest
 import trimesh
 
 from g2s_core.config import AgentConfig
-from g2s_plugins._raycasting import AgentShape, RayCaster
+from g2s_plugins._raycasting import AgentShape, RayCaster, _flush_pairs, _flush_pairs_of
 from g2s_plugins.area_gaps import shut_in
 from g2s_plugins.graph_builders.sampling import inside_closed_solids
+from g2s_plugins.samples.castle import castle
 from tests.conftest import benchmark
+from tests.test_families import SMALL_CASTLE
 
 AGENT = AgentConfig()
 
@@ -116,6 +118,65 @@ def test_bodies_touching_along_an_edge_or_in_a_plane_stay_closed_and_apart():
         scene = RayCaster(trimesh.util.concatenate(parts)).scene
         assert scene.bodies.reshape(2, 12).min(axis=1).tolist() == scene.bodies.reshape(2, 12).max(axis=1).tolist()
         assert len(set(scene.bodies.tolist())) == 2 and scene.closed.all()
-        starts, partner, _ = scene.flush
+        starts, partner = scene.flush.whole
         face = np.repeat(np.arange(24), np.diff(starts))
         assert len(face) and (face // 12 != partner // 12).all()  # faces in one plane paired across the bodies only
+
+
+def single_sided_wall_with_a_crate() -> list[trimesh.Trimesh]:
+    """A wall quad of two triangles with no back (no closed body) along z = 0 and a crate whose side touches it."""
+    quad = trimesh.Trimesh([(-5, 0, 0), (5, 0, 0), (5, 3, 0), (-5, 3, 0)], [(0, 2, 1), (0, 3, 2)], process=False)
+    return [*boxes(FLOOR, (0, 3, 0, 2.5, 0, 3)), quad]
+
+
+def flush_meshes() -> dict[str, trimesh.Trimesh]:
+    """Meshes with faces in one plane of every kind :func:`_flush_pairs` pairs: crates on walls, crates on crates,
+    turned walls, a roof on walls, a single-sided quad, the castle sample."""
+    kinds = benchmark("closed_solid_kinds")
+    walls = kinds.ring(0.0, 10.0, 0.0, 10.0, 0.3, 0.0, 3.0, door=(4.0, 5.2))
+    meshes = {name: trimesh.util.concatenate(parts) for name, (parts, _) in LEVELS.items()}
+    meshes["roof on walls, crate in a corner"] = trimesh.util.concatenate(
+        [*boxes(FLOOR, (0, 10, 3, 3.3, 0, 10), (0.3, 3.3, 0, 2.5, 6.7, 9.7), (6, 7, 0, 3, 6, 7)), walls])
+    meshes["single-sided quad"] = trimesh.util.concatenate(single_sided_wall_with_a_crate())
+    meshes["castle"] = castle(seed=1, **SMALL_CASTLE).mesh
+    return meshes
+
+
+@pytest.mark.parametrize("name, mesh", list(flush_meshes().items()))
+def test_the_flush_partners_of_a_few_faces_are_the_whole_meshs(name, mesh):
+    # the partners found for the faces asked alone (the warning's few rays) against the whole mesh's pairs, for
+    # every paired face and others in random groups, and with every plane's sum colliding (planes told apart by keys)
+    scene = RayCaster(mesh).scene
+    triangles, bodies = scene.triangles, scene.bodies
+    face, partner = _flush_pairs(triangles, bodies)
+    assert len(face), name  # every mesh here has faces in one plane to pair
+    key, length, hashed = scene.flush.plane_keys
+    rng = np.random.default_rng(0)
+    paired, anyone = rng.permutation(np.unique(face)), rng.permutation(len(triangles))
+    groups = [*np.array_split(paired, min(24, len(paired))), *np.array_split(anyone, min(8, len(anyone)))]
+    for asked in [np.sort(group) for group in groups]:
+        for sums in (hashed, np.zeros_like(hashed)):
+            alone = _flush_pairs_of(asked, triangles, bodies, key, length, sums, budget=len(triangles) ** 2)
+            wanted = np.isin(face, asked)
+            assert np.array_equal(alone[0], face[wanted]) and np.array_equal(alone[1], partner[wanted]), name
+    # the scene's answer, one face at a time while the budget lasts, then from the whole mesh's pairs once built:
+    # the same partners and patches
+    flush = RayCaster(mesh.copy()).scene.flush
+    asked = np.unique(face[:: max(1, len(face) // 20)])
+    read = [flush.of(asked[i : i + 1]) for i in range(len(asked))]
+    assert 0 < flush.spent <= len(triangles) or "whole" in flush.__dict__
+    assert len(flush.whole[1]) == len(partner)
+    for one, first in zip(asked, read):
+        for part, from_whole in zip(first, flush.of(np.array([one]))):
+            assert np.array_equal(part, from_whole), name
+
+
+def test_a_few_faces_do_not_build_the_whole_meshs_pairs():
+    # a crate against each of 40 wall slabs along a floor: one crate's side asked pairs with its wall's face alone
+    slabs = [(10 * i, 10 * i + 8, 0, 3, -0.3, 0) for i in range(40)]
+    crates = [(10 * i + 2, 10 * i + 5, 0, 2.5, 0, 3) for i in range(40)]
+    flush = RayCaster(trimesh.util.concatenate(boxes(*slabs, *crates))).scene.flush
+    side = np.flatnonzero(np.isclose(flush.triangles[:, :, 2], 0).all(axis=1) & (flush.bodies >= 40))[:1]
+    starts, partner, patch = flush.of(side)
+    assert "whole" not in flush.__dict__ and 0 < flush.spent <= len(flush.triangles)
+    assert starts.tolist() == [0, 2] and (flush.bodies[partner] == flush.bodies[side] - 40).all()
