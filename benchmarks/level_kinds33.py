@@ -431,12 +431,6 @@ def subway_roundabout(seed: int) -> trimesh.Trimesh:
     return s.mesh()
 
 
-def _solid_ramp(s: _Solids, x0: float, x1: float, z0: float, z1: float, y0: float, y1: float) -> None:
-    """A ramp run over [x0, x1] x [z0, z1], its top rising from ``y0`` at x0 to ``y1`` at x1, solid down to 0.1 m
-    under the ground (no room under it): one convex hull."""
-    s.hull(np.array([[x, y, z] for x, top in ((x0, y0), (x1, y1)) for y in (-0.1, top) for z in (z0, z1)]))
-
-
 def _ramp_tower(s: _Solids, x0: float, z0: float, deck: float, length: float,
                 width: float) -> list[tuple[float, float, float, float]]:
     """One zigzag ramp of :func:`ramp_towers` from the plaza at x0 (its first run's foot) up to ``deck``: runs
