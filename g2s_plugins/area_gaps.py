@@ -239,21 +239,47 @@ def grounded(closest: Closest, owner: np.ndarray, ground: np.ndarray, agent: Age
     return (ground >= heights.min(axis=1) - climb) & (ground <= heights.max(axis=1) + climb)
 
 
+class FloorBetween(NamedTuple):
+    """What :func:`floor_between` finds between the two points of each of c pairs, lifted a height.
+
+    Attributes:
+        runs_on: (c,) bool: the straight segment between the lifted points meets no face and every ground point under
+            the stretch between them is :func:`grounded`.
+        owner: (r,) the pair of each ground point.
+        floor: (r, 3) the first face down from the lifted segment at the middles of :func:`stretch_under`, metres
+            (y ``-inf`` where nothing lies under it).
+        on_ground: (r,) bool, :func:`grounded`.
+    """
+
+    runs_on: np.ndarray
+    owner: np.ndarray
+    floor: np.ndarray
+    on_ground: np.ndarray
+
+
+def floor_between(caster: RayCaster, closest: Closest, agent: AgentConfig, lift: float) -> FloorBetween:
+    """:class:`FloorBetween` for :attr:`Closest.pairs` lifted ``lift`` metres: one ray along each segment (up, where
+    a pair stands on one plan point: its ground test alone decides) and one down at each middle of
+    :func:`stretch_under`, at most 1 + ``GROUND_RAYS`` rays a pair."""
+    pairs = closest.pairs
+    start, end = pairs[:, 0] + lift * UP, pairs[:, 1] + lift * UP
+    length = np.linalg.norm(end - start, axis=1)
+    owner, floor = stretch_under(closest, start, end)
+    across, down = caster.first_hits_of([(start, np.where(length[:, None] > 0, end - start, UP)), (floor, -UP)])
+    floor[:, 1] -= down.distance
+    on_ground = grounded(closest, owner, floor[:, 1], agent)
+    runs_on = ((length == 0) | (across.distance >= length)) & (np.bincount(owner, weights=~on_ground, minlength=len(pairs)) == 0)
+    return FloorBetween(runs_on, owner, floor, on_ground)
+
+
 def open_between(caster: RayCaster, closest: Closest, agent: AgentConfig) -> np.ndarray:
     """(c,) bool: each pair of :attr:`Closest.pairs` faces an opening: the straight segment between the two points
     raised half the agent's height meets no face (a wall, not a door), and ground lies under the stretch between
     the two areas' ground (:func:`stretch_under`) within ``agent.max_climb`` of the two points' heights (a plank
-    or a doorway's floor; not a chasm, nor a sill): the first face down from the raised segment. At most
-    1 + ``GROUND_RAYS`` rays a pair.
+    or a doorway's floor; not a chasm, nor a sill): the first face down from the raised segment
+    (:func:`floor_between`). At most 1 + ``GROUND_RAYS`` rays a pair.
     """
-    pairs, lift = closest.pairs, 0.5 * float(agent.height) * UP
-    start, end = pairs[:, 0] + lift, pairs[:, 1] + lift
-    length = np.linalg.norm(end - start, axis=1)
-    owner, below = stretch_under(closest, start, end)
-    # a pair on one plan point has no segment to cast along: its ground test alone decides
-    across, down = caster.first_hits_of([(start, np.where(length[:, None] > 0, end - start, UP)), (below, -UP)])
-    on_ground = grounded(closest, owner, below[:, 1] - down.distance, agent)
-    return ((length == 0) | (across.distance >= length)) & (np.bincount(owner, weights=~on_ground, minlength=len(pairs)) == 0)
+    return floor_between(caster, closest, agent, 0.5 * float(agent.height)).runs_on
 
 
 class LowCeiling(NamedTuple):
@@ -282,19 +308,12 @@ def low_ceiling(caster: RayCaster, closest: Closest, agent: AgentConfig) -> LowC
     keep no floor with less head room than that, so the two areas' ground stops either side of it (a plank over a
     channel's bed, a beam across a room). None when no pair is. 1 + 2 ``GROUND_RAYS`` rays a pair at most.
     """
-    pairs, lift = closest.pairs, float(agent.max_climb) * UP
-    start, end = pairs[:, 0] + lift, pairs[:, 1] + lift
-    length = np.linalg.norm(end - start, axis=1)
-    owner, below = stretch_under(closest, start, end)
-    across, down = caster.first_hits_of([(start, np.where(length[:, None] > 0, end - start, UP)), (below, -UP)])
-    floor = below.copy()
-    floor[:, 1] -= down.distance  # -inf where nothing lies under it
-    on_ground = grounded(closest, owner, floor[:, 1], agent)
+    pairs = closest.pairs
+    runs_on, owner, floor, on_ground = floor_between(caster, closest, agent, float(agent.max_climb))
     room = np.full(len(floor), np.inf)
     room[on_ground] = caster.first_hits(floor[on_ground] + EPSILON * UP, UP).distance + EPSILON
     lowest = np.full(len(pairs), np.inf)
     np.minimum.at(lowest, owner, room)
-    runs_on = (across.distance >= length) & (np.bincount(owner, weights=~on_ground, minlength=len(pairs)) == 0)
     low = runs_on & ~has_room(lowest, float(agent.height))
     if not low.any():
         return None
@@ -370,6 +389,15 @@ def nearest_areas(ground: Ground, others: Sequence[Ground], count: int) -> np.nd
     return np.argsort(distance, kind="stable")[:count]
 
 
+def nearest_area(ground: Ground, grounds: Sequence[Ground], areas: Sequence[Sequence[int]],
+                 agent: AgentConfig) -> tuple[Closest, Sequence[int]]:
+    """Of ``areas`` (node lists, ``grounds`` their ground), the one whose ground comes nearest ``ground`` (gap and
+    rise, :func:`closest_step_for`) of the ``COMPARED_AREAS`` whose edge points come nearest it
+    (:func:`nearest_areas`), with its :class:`Closest` (ties: the nearer by edge points)."""
+    return min(((closest_step_for(ground, grounds[k], agent), areas[k]) for k in nearest_areas(ground, grounds, COMPARED_AREAS)),
+               key=lambda pair: math.hypot(pair[0].gap, pair[0].step))
+
+
 def areas_cause(graph: nx.Graph, largest: Sequence[int], others: Sequence[Sequence[int]], agent: AgentConfig,
                 rim: Rim, mesh: trimesh.Trimesh | None = None) -> str:
     """The likely cause between ``largest`` and the nearest of ``others`` (node lists of areas of ``graph``) of
@@ -389,10 +417,7 @@ def areas_cause(graph: nx.Graph, largest: Sequence[int], others: Sequence[Sequen
     """
     ground = rim(graph, largest)  # once, however many areas it is compared with
     joined = joined_areas(graph, largest, others)
-    grounds = [rim(graph, others[k]) for k in joined]
-    closest, nearest = min(((closest_step_for(ground, grounds[k], agent), others[joined[k]])
-                            for k in nearest_areas(ground, grounds, COMPARED_AREAS)),
-                           key=lambda pair: math.hypot(pair[0].gap, pair[0].step))
+    closest, nearest = nearest_area(ground, [rim(graph, others[k]) for k in joined], [others[k] for k in joined], agent)
     size, middle = area_summary(graph, nearest)
     named = set(joined)
     smaller = [other for k, other in enumerate(others) if k not in named]
@@ -404,9 +429,8 @@ def smaller_nearer(graph: nx.Graph, ground: Ground, smaller: Sequence[Sequence[i
                    rim: Rim) -> str:
     """``; and a smaller area of A m² lies nearer, its ground about G m from the largest's, R m higher, at (x, y, z
     m)``: of the areas :func:`joined_areas` leaves out (``smaller``, node lists of areas of ``graph``), the nearest
-    to the largest's ``ground`` (gap and rise, :func:`closest_step_for`, of the ``COMPARED_AREAS`` whose edge points
-    come nearest) when it comes nearer than the area named (``named``: its hypot(gap, rise), metres; by
-    ``READ_AS_EQUAL``) and within the agent's width (``2 agent.radius``): a closet behind a thin wall, a ledge just
+    to the largest's ``ground`` (:func:`nearest_area`) when it comes nearer than the area named (``named``: its
+    hypot(gap, rise), metres; by ``READ_AS_EQUAL``) and within the agent's width (``2 agent.radius``): a closet behind a thin wall, a ledge just
     over the climb, a floor a door too narrow opens onto, that a designer fixing the named gap would not otherwise
     learn of; the place is its ground's closest edge point. Farther ones (a crate's top, a rock across the water) are
     left out: naming every crumb would lengthen every line. Empty when there is none. O(e log e) for the e edge
@@ -414,10 +438,7 @@ def smaller_nearer(graph: nx.Graph, ground: Ground, smaller: Sequence[Sequence[i
     """
     if not smaller:
         return ""
-    grounds = [rim(graph, other) for other in smaller]
-    closest, nodes = min(((closest_step_for(ground, grounds[k], agent), smaller[k])
-                          for k in nearest_areas(ground, grounds, COMPARED_AREAS)),
-                         key=lambda pair: math.hypot(pair[0].gap, pair[0].step))
+    closest, nodes = nearest_area(ground, [rim(graph, other) for other in smaller], smaller, agent)
     apart = math.hypot(closest.gap, closest.step)
     if apart > 2 * float(agent.radius) + READ_AS_EQUAL or apart > named - READ_AS_EQUAL:
         return ""
