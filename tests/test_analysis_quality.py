@@ -223,6 +223,19 @@ def test_areas_under_min_area_are_seeded_at_their_centre_and_those_under_place_a
                                 "smaller than a part the graph builders keep (place_area), too small to be a place"]
 
 
+@pytest.mark.parametrize("rows, columns", [(1, 9), (5, 7)])
+def test_a_large_area_s_centre_by_landmarks_is_the_exact_centre_on_strips_and_grids(monkeypatch, rows, columns):
+    # unit-edge grids: a strip's centre is its middle (4), a 5 x 7 grid's its middle node (2, 3) = row 17, whose
+    # farthest nodes, the four corners, lie 5 edges away; the landmarks (the far corner from node 0, then the corner
+    # farthest from those before) find the same node as a Dijkstra from every node
+    grid = nx.convert_node_labels_to_integers(nx.grid_2d_graph(rows, columns), ordering="sorted")
+    adjacency = nx.to_scipy_sparse_array(grid, nodelist=range(rows * columns), format="csr")
+    labels, chosen = np.zeros(rows * columns, dtype=np.int64), np.array([True])
+    exact = coverage.area_centres(adjacency, labels, chosen)
+    monkeypatch.setattr(coverage, "CENTRE_EXACT_NODES", 4)
+    assert coverage.area_centres(adjacency, labels, chosen).tolist() == exact.tolist() == [rows * columns // 2]
+
+
 def test_a_small_area_is_seeded_at_its_centre_not_at_its_leaves():
     # radius 2 m, min_area 3.14 m²: a path of three 0.5 m² nodes (1.5 m², two leaves) and a strip of seven 0.4 m²
     # nodes 1 m apart (2.8 m², leaves 40 and 46), both below min_area, no agent (place_area 0). Each is seeded at

@@ -203,6 +203,14 @@ CENTRE_ROWS = 1024
 """Sources of one Dijkstra call when a small area's centre is sought (:func:`area_centres`): at most this many rows
 of distances, 8 MB for an area of 1,000 nodes, whatever ``min_area`` a user sets."""
 
+CENTRE_EXACT_NODES = 4096
+"""Largest area whose centre :func:`area_centres` finds exactly, a Dijkstra from each of its nodes; past it (an area
+that large is under ``min_area`` only when a user sets it far over its default) the cost would grow with the square
+of the area, so the centre is taken against :data:`CENTRE_LANDMARKS` far-apart nodes instead."""
+
+CENTRE_LANDMARKS = 8
+"""Far-apart nodes (farthest-point order) whose distances stand for each node's farthest in a large area."""
+
 
 class Params(PluginParams):
     """Cover radius, the smallest area that is forced in, and the traffic-aware cover before the plain one."""
@@ -696,10 +704,14 @@ def area_centres(adjacency: sp.csr_array, labels: np.ndarray, chosen: np.ndarray
     ``chosen``: (areas,) bool. The centre is where a designer puts the one
     mark of a small place (a channel bed, an islet), found
     alike on a navmesh of two polygons and on a grid of samples: the middle
-    of a strip, of a rectangle. Exact: Dijkstra from every node of the area,
-    :data:`CENTRE_ROWS` sources at a time (memory), O(n_c (m_c + n_c log
-    n_c)) for an area of n_c nodes and m_c edges; the areas asked are those
-    under ``min_area``, a few dozen nodes each with the defaults.
+    of a strip, of a rectangle. Exact up to :data:`CENTRE_EXACT_NODES` nodes:
+    Dijkstra from every node of the area, :data:`CENTRE_ROWS` sources at a
+    time (memory), O(n_c (m_c + n_c log n_c)) for an area of n_c nodes and
+    m_c edges; the areas asked are those under ``min_area``, a few dozen nodes
+    each with the defaults. A larger area reads each node's farthest as its
+    farthest of :data:`CENTRE_LANDMARKS` landmarks, each the node farthest from
+    those before (the first the farthest from the area's lowest row), in
+    O(k (m_c + n_c log n_c)): on a strip the two ends, so its middle.
     """
     order = np.argsort(labels, kind="stable")  # each area's rows together, ascending
     bounds = np.searchsorted(labels[order], np.arange(len(chosen) + 1))
@@ -707,10 +719,23 @@ def area_centres(adjacency: sp.csr_array, labels: np.ndarray, chosen: np.ndarray
     for area in np.flatnonzero(chosen).tolist():
         members = order[bounds[area]:bounds[area + 1]]
         within = adjacency[members][:, members]
-        farthest = np.concatenate([csgraph.dijkstra(within, directed=False, indices=rows).max(axis=1)
-                                   for rows in np.array_split(np.arange(len(members)), -(-len(members) // CENTRE_ROWS))])
+        if len(members) <= CENTRE_EXACT_NODES:
+            farthest = np.concatenate([csgraph.dijkstra(within, directed=False, indices=rows).max(axis=1)
+                                       for rows in np.array_split(np.arange(len(members)), -(-len(members) // CENTRE_ROWS))])
+        else:
+            farthest = _landmark_reach(within)
         centres.append(int(members[np.argmin(farthest)]))
     return np.asarray(centres, dtype=np.int64)
+
+
+def _landmark_reach(within: sp.csr_array) -> np.ndarray:
+    """(n_c,) each node's distance to the farthest of :data:`CENTRE_LANDMARKS` farthest-point landmarks, m: a lower
+    bound of its farthest node along the connected graph ``within``."""
+    first = int(np.argmax(csgraph.dijkstra(within, directed=False, indices=0)))
+    distances = [csgraph.dijkstra(within, directed=False, indices=first)]
+    while len(distances) < CENTRE_LANDMARKS:
+        distances.append(csgraph.dijkstra(within, directed=False, indices=int(np.argmax(np.min(distances, axis=0)))))
+    return np.max(distances, axis=0)
 
 
 def smallest_part(context: RunContext) -> float:
