@@ -27,7 +27,7 @@ import math
 import operator
 from collections.abc import Callable, Hashable, Mapping, Sequence
 from dataclasses import dataclass
-from typing import TypeVar
+from typing import Literal, TypeVar
 
 import networkx as nx
 import numpy as np
@@ -126,6 +126,12 @@ class CollapseParams(HeatFlowParams):
         le=1,
         description="simplify less where the heat map would rank the polygons with a Spearman rho under this against "
         "walking flow: restore removed nodes until it holds (g2s_plugins/heat_guarantee.py); null: no such check",
+    )
+    heat_rounds_keep: Literal["structure", "restored"] = Field(
+        "structure", description="what each later round of min_heat_rho keeps when it simplifies the forest again: "
+        "every node of the last structure and the nodes it restores (structure), or only the nodes restored so far "
+        "(restored), the predicate deciding the others again, so a node kept because its chain's ends did not see "
+        "each other goes where a restored node ends that chain and sees past it"
     )
     heat_rho_within_areas: bool = Field(
         False, description="min_heat_rho reads rho with ranks taken within each connected area (the traffic "

@@ -58,7 +58,12 @@ area and the heat drawn from them, the same on a graph of one area),
 last structure's nodes, before simplifying), the fewest of them that do, found by bisection (:func:`_fewest_meeting`):
 the forest is simplified again by the same
 predicate, which now keeps them and every node the last structure kept
-(:func:`keeping`), so each round's structure holds the last one's. A
+(:func:`keeping`), so each round's structure holds the last one's; with
+``heat_rounds_keep: restored``, them and the nodes restored in earlier rounds
+only, the predicate deciding the others again: a node kept because its
+chain's ends did not see each other goes where a restored node now ends that
+chain and sees past it (docs/analysis_quality.md, "Restored nodes that end
+a chain (7 December 2026)"). A
 structure that meets the target is the one Algorithm 4 gave, unchanged;
 when no removed node differs by more than the floor and rho is still
 under the target, the last structure is kept with a warning that says so.
@@ -242,7 +247,8 @@ def _fewest_meeting(graph: nx.Graph, structure: set[Hashable], ranked: list[Hash
 
     The reading is of the nodes alone, before the forest is simplified again: that simplification keeps them and the
     structure's nodes and, measured, nothing more, so the round's structure is what was read and the guarantee's
-    measure of it confirms it (or, where the simplification keeps more and reads under, asks for another round).
+    measure of it confirms it (or, where the simplification keeps more and reads under, asks for another round);
+    with ``heat_rounds_keep: restored`` it may keep fewer of the structure's nodes, and the same measure decides.
     Why: a round restores a fixed share of the forest, and the last one overshoots the target by up to that share of
     the nodes (docs/analysis_quality.md, "The sampling route's first structure (7 December 2026)"); Douglas and
     Peucker's rule adds one point at a time, the rounds a share at a time only for speed.
@@ -564,24 +570,34 @@ def guaranteed(
     """What a predicate hook returns with ``params.min_heat_rho`` (the hookspec's ``simplified`` protocol): the
     predicate of ``make_predicate`` first, then, after each structure, ``None`` to keep it or that same predicate
     keeping the nodes of :func:`restored` (its walking flow: ``params.heat_sources``, ``params.heat_ties`` and
-    ``params.heat_scaling``; its rho within areas with ``params.heat_rho_within_areas``)."""
+    ``params.heat_scaling``; its rho within areas with ``params.heat_rho_within_areas``), or with
+    ``params.heat_rounds_keep`` ``restored`` only the nodes it gave back in this round and every earlier one."""
     if simplified is None:
         predicate = make_predicate()
         if forest is not None:  # None: asked outside the pipeline, for one predicate
             _FIRST[forest] = predicate
             _LAST_RHO.pop(forest, None)
+            _RESTORED.pop(forest, None)
             begin_ahead(params, context)  # begun already when the pipeline asked for it after step 2
         return predicate
     if params.min_heat_rho is None:
         return None
     kept = restored(context.graph, forest, simplified, params.min_heat_rho, context, params.heat_sources,
                     params.heat_ties, params.heat_scaling, params.heat_sampling, params.heat_rho_within_areas)
-    return None if kept is None else keeping(_FIRST[forest], kept)
+    if kept is None:
+        return None
+    # every round adds at least one removed node to what it restored, so the rounds end as the other way's do
+    _RESTORED[forest] = _RESTORED.get(forest, set()) | (kept - set(simplified))
+    return keeping(_FIRST[forest], kept if params.heat_rounds_keep == "structure" else _RESTORED[forest])
 
 
 _LAST_RHO: weakref.WeakKeyDictionary[nx.DiGraph, float] = weakref.WeakKeyDictionary()
 """The guarantee's reading of each forest's last structure under its target (:func:`restored`), forgotten as its
 first simplification begins (:func:`guaranteed`)."""
+
+_RESTORED: weakref.WeakKeyDictionary[nx.DiGraph, set[Hashable]] = weakref.WeakKeyDictionary()
+"""The nodes the guarantee has restored into each forest's structure so far (:func:`guaranteed`), forgotten as its
+first simplification begins."""
 
 _FIRST: weakref.WeakKeyDictionary[nx.DiGraph, Predicate] = weakref.WeakKeyDictionary()
 """The predicate each forest was first simplified with, asked again in the later rounds: its answers depend on the

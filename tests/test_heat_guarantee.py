@@ -91,6 +91,33 @@ def test_a_round_restores_only_as_many_of_its_nodes_as_reach_the_target(monkeypa
         assert heat_guarantee.restored(graph, forest, forest.subgraph({0, 3, 8}), target, context) == kept
 
 
+def test_a_later_round_keeps_the_restored_nodes_not_the_nodes_only_line_of_sight_kept(monkeypatch):
+    # a corner at 4: no walk from 0-2 to 5-8, so Algorithm 4 keeps 4 ({0, 4, 8}); once 3 is restored it ends the
+    # chain from 0 and sees 5, so with heat_rounds_keep: restored the next round lets 4 go ({0, 3, 8}) and the third
+    # keeps 3 and 6 only; heat_rounds_keep: structure (the default) keeps every node of the last structure
+    graph = corridor()
+    context = RunContext(mesh=None, agent=AgentConfig(), centre=np.zeros(3), graph=graph)
+
+    def sees(start, end):
+        return not (min(start[0], end[0]) <= 2 and max(start[0], end[0]) >= 5)
+
+    def rounds(keep: str) -> list[list[int]]:
+        forest = root_forest(graph, {i: -i for i in graph}, centre=np.zeros(3))
+        params = CollapseParams(min_heat_rho=0.9, heat_rounds_keep=keep)
+        given = iter([{3}, {6}, None])  # the guarantee gives back 3, then 6, then holds
+        monkeypatch.setattr(heat_guarantee, "restored", lambda graph, forest, simplified, *rest: (
+            None if (back := next(given)) is None else set(simplified) | back))
+        structures, structure = [], None
+        while (predicate := heat_guarantee.guaranteed(lambda: collapse_rule(params, sees, graph), params, context,
+                                                      forest, structure)) is not None:
+            structure = simplify_forest(forest, predicate)
+            structures.append(sorted(structure))
+        return structures
+
+    assert rounds("restored") == [[0, 4, 8], [0, 3, 8], [0, 3, 6, 8]]
+    assert rounds("structure") == [[0, 4, 8], [0, 3, 4, 8], [0, 3, 4, 6, 8]]
+
+
 def test_within_areas_the_islands_lend_the_corridor_no_rho():
     # the corridor and 12 polygons apart, each an area of its own: their flow is 0 and so is their heat's rank,
     # which the level-wide rho counts as agreement (0.937 after one round, {0, 4, 8} and 1) while the corridor's own
