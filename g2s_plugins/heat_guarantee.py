@@ -584,11 +584,11 @@ def guaranteed(
         return None
     kept = restored(context.graph, forest, simplified, params.min_heat_rho, context, params.heat_sources,
                     params.heat_ties, params.heat_scaling, params.heat_sampling, params.heat_rho_within_areas)
-    if kept is None:
-        return None
+    if kept is None or params.heat_rounds_keep == "structure":
+        return None if kept is None else keeping(_FIRST[forest], kept)
     # every round adds at least one removed node to what it restored, so the rounds end as the other way's do
     _RESTORED[forest] = _RESTORED.get(forest, set()) | (kept - set(simplified))
-    return keeping(_FIRST[forest], kept if params.heat_rounds_keep == "structure" else _RESTORED[forest])
+    return keeping(_FIRST[forest], _RESTORED[forest])
 
 
 _LAST_RHO: weakref.WeakKeyDictionary[nx.DiGraph, float] = weakref.WeakKeyDictionary()
