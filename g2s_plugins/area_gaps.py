@@ -198,9 +198,10 @@ def ground_rim(graph: nx.Graph, nodes: Sequence[int], navmesh: NavMesh | None, e
     return points, np.concatenate(reach), np.concatenate(spacing)
 
 
-def closest_step(a: Ground, b: Ground, climb_weight: float = 1.0) -> Closest:
+def closest_step(a: Ground, b: Ground, climb_weight: float = 1.0, window: float | None = None) -> Closest:
     """Where the edges of two areas' ground, each its :func:`ground_rim`, come closest (vertical offsets counted
-    ``climb_weight`` times): the gap is the closest points' horizontal distance less the ground's reach past each.
+    ``climb_weight`` times): the gap is the closest points' horizontal distance less the ground's reach past each;
+    the pairs within ``window`` metres of the closest (None: the points' spacing) with it.
     O((ka + kb) log kb) for their ka and kb points (a k-d tree of b's)."""
     (pa, ra, sa), (pb, rb, sb) = a, b
     scale = np.array([1.0, climb_weight, 1.0])
@@ -209,7 +210,7 @@ def closest_step(a: Ground, b: Ground, climb_weight: float = 1.0) -> Closest:
     there = int(index[best])
     offset = pb[there] - pa[best]
     gap = float(np.hypot(offset[0], offset[2])) - float(ra[best]) - float(rb[there])
-    near = np.flatnonzero(distance <= distance[best] + max(float(sa[best]), float(sb[there])))
+    near = np.flatnonzero(distance <= distance[best] + (max(float(sa[best]), float(sb[there])) if window is None else window))
     if len(near) > MAX_PLACE_CANDIDATES:
         near = np.union1d(near[:: math.ceil(len(near) / MAX_PLACE_CANDIDATES)], [best])
     near = near[np.argsort(distance[near], kind="stable")]  # the closest first: argmin's, the first of equals
@@ -217,13 +218,13 @@ def closest_step(a: Ground, b: Ground, climb_weight: float = 1.0) -> Closest:
                    np.stack([ra[near], rb[index[near]]], axis=1), np.maximum(sa[near], sb[index[near]]))
 
 
-def closest_step_for(a: Ground, b: Ground, agent: AgentConfig) -> Closest:
+def closest_step_for(a: Ground, b: Ground, agent: AgentConfig, window: float | None = None) -> Closest:
     """:func:`closest_step`, or the closest pair on one floor when the plain one is a floor above another and the
     one-floor pair is closer with vertical offsets counted ``agent.height / agent.max_climb`` times."""
-    plain = closest_step(a, b)
+    plain = closest_step(a, b, window=window)
     if plain.step <= float(agent.max_climb) or float(agent.max_climb) <= 0:
         return plain
-    weighted = closest_step(a, b, float(agent.height) / float(agent.max_climb))
+    weighted = closest_step(a, b, float(agent.height) / float(agent.max_climb), window)
     return weighted if weighted.step <= float(agent.max_climb) else plain
 
 
@@ -476,7 +477,9 @@ def areas_cause(graph: nx.Graph, largest: Sequence[int], others: Sequence[Sequen
     size, middle = area_summary(graph, nearest)
     named = set(joined)
     smaller = [other for k, other in enumerate(others) if k not in named]
-    return (f"from the largest area to the nearest area of {size:,.0f} m², {nearest_cause(closest, middle, agent, mesh)}"
+    # a low ceiling is asked along the seam, not only where it comes closest (below)
+    seam = None if mesh is None else closest_step_for(ground, rim(graph, nearest), agent, float(agent.height))
+    return (f"from the largest area to the nearest area of {size:,.0f} m², {nearest_cause(closest, middle, agent, mesh, seam)}"
             f"{smaller_nearer(graph, ground, smaller, apart(closest), agent, rim, mesh)}")
 
 
@@ -503,16 +506,20 @@ def smaller_nearer(graph: nx.Graph, ground: Ground, smaller: Sequence[Sequence[i
             f"{gap:.1f} m from the largest's{level}, at ({xyz(closest.there)})")
 
 
-def nearest_cause(closest: Closest, middle: np.ndarray, agent: AgentConfig, mesh: trimesh.Trimesh | None) -> str:
+def nearest_cause(closest: Closest, middle: np.ndarray, agent: AgentConfig, mesh: trimesh.Trimesh | None,
+                  seam: Closest | None = None) -> str:
     """:func:`areas_cause`'s cause and place for the area whose ground comes ``closest`` to the largest's, ``middle``
-    (3,) a place inside it, metres."""
+    (3,) a place inside it, metres; ``seam`` the same with the pairs up to ``agent.height`` farther than the closest
+    (:func:`closest_step`'s window): a ceiling lower than the agent is asked of them when the pairs about as close as
+    the closest have none (a beam wider than the wall beside it: its pairs lie its extra width farther)."""
     if mesh is None:
         return f"{likely_cause(closest.step, closest.gap, agent)}, {between(closest.pairs[0])}"
     caster = RayCaster(mesh)
     # a ceiling over floor that runs on between them first: nothing at the agent's step height parts them, so no
     # solid's wall does (the shut-in rule's rays, lifted half the agent's height, run along a plank's underside
     # 1.0-1.1 m over a channel's bed)
-    if closest.step <= float(agent.max_climb) and (ceiling := low_ceiling(caster, closest, agent)) is not None:
+    if closest.step <= float(agent.max_climb) and (ceiling := low_ceiling(caster, closest, agent) or (
+            None if seam is None else low_ceiling(caster, seam, agent))) is not None:
         return (f"head room too low: a ceiling about {ceiling.head_room:.1f} m over the floor, under agent.height "
                 f"({float(agent.height):g} m), where their ground lies about {ceiling.gap:.1f} m apart, "
                 f"at ({xyz(ceiling.floor)})")

@@ -384,3 +384,18 @@ def test_the_nearest_area_is_found_past_four_nearer_by_edge_points():
     message = disconnected_warning(graph, areas(graph), 6, SAMPLED)
     assert "Likely cause: from the largest area to the nearest area of 4 m², a gap or passage too narrow for the agent " \
            "(agent.radius 0.5 m), or a wall, where their ground lies about 0.4 m apart" in message
+
+
+def test_a_low_beam_beside_a_wall_is_named_though_the_wall_comes_closer():
+    """A floor parted by a wall 0.2 m thick (z up to 6.5) and on from it by a beam 1 m wide whose underside is 1.4 m up
+    (z from 5.5): the navmesh's edges lie 1.2 m apart across the wall, 2 m across the beam. The head room was asked
+    only of the pairs within a cell of the closest, all across the wall, and the warning named the wall; the pairs up
+    to the agent's height farther are asked too when those find none."""
+    mesh = boxes((-1, 21, -0.3, 0, -1, 11), (9.9, 10.1, 0, 3, -1, 6.5), (9.5, 10.5, 1.4, 1.7, 5.5, 11))
+    navmesh, graph = navmesh_of([(0.5, 9.4, 0.5, 6.0, 0.0), (0.5, 9.0, 6.0, 9.5, 0.0),
+                                 (10.6, 19.5, 0.5, 6.0, 0.0), (11.0, 19.5, 6.0, 9.5, 0.0)])
+    graph.add_edges_from([(0, 1), (2, 3)])
+    message = disconnected_warning(graph, areas(graph), 2, likely_cause_of(AgentConfig(), navmesh, mesh=mesh))
+    assert "head room too low: a ceiling about 1.4 m over the floor, under agent.height (2 m)" in message
+    place = np.array(message.rsplit("at (", 1)[1].removesuffix(" m).").split(", "), dtype=float)
+    assert 9.0 <= place[0] <= 11.0 and place[2] >= 6.5
