@@ -429,12 +429,13 @@ def edge_distances(ground: Ground, others: Sequence[Ground]) -> np.ndarray:
 def nearest_area(ground: Ground, grounds: Sequence[Ground], areas: Sequence[Sequence[int]],
                  agent: AgentConfig) -> tuple[Closest, Sequence[int]]:
     """Of ``areas`` (node lists, ``grounds`` their ground), the one whose ground comes nearest ``ground`` (gap and
-    rise, :func:`closest_step_for`), with its :class:`Closest` (ties: the nearer by edge points, then the earlier).
+    rise, :func:`closest_step_for`), with its :class:`Closest` (ties among those measured: the nearer by edge points,
+    then the earlier).
 
     A gap is a pair's plan distance less both points' reach, so an area's hypot(gap, rise) is at least the
     straight-line distance of its edge points from ``ground``'s (:func:`edge_distances`) less the two grounds'
-    farthest reach. The areas are measured in the order of that bound until it is no less than the nearest found:
-    exact, whatever their count, at the cost of one :func:`closest_step_for` for each area whose bound lies under the
+    farthest reach. The areas are measured in the order of that bound until it is no less than the nearest found (no
+    area after it comes strictly nearer): exact, whatever their count, at the cost of one :func:`closest_step_for` for each area whose bound lies under the
     answer (those within the answer plus two reaches of ``ground``'s edge points: half a square and the clearance
     each on the sampling route)."""
     distance = edge_distances(ground, grounds)
