@@ -65,13 +65,26 @@ warnings of the levels that warn and the thirty-second round's sewer
 (docs/analysis_quality.md, "The disconnected-areas warning's smaller
 neighbours and head room").
 
+*A partition hung over the floor* (:func:`hangs_to_the_floor`): a solid whose
+underside lies under half the agent's height and which stands up past its
+head is a wall to the agent, not a ceiling: the warning names the wall on
+either route (the navmesh's edges lie Recast's heights over the floor, and
+the climb-high segment from them met a partition 0.45 m up that the one from
+the samples passed under). *The gap* a wall leaves (:func:`walled_gap`):
+each side's ground stops at the first face across at half the agent's
+height, so a sample's square reaches no farther than the wall (docs/
+analysis_quality.md, "The disconnected-areas warning's walls, partitions and
+fifth-nearest areas").
+
 Complexity: O(n) for the areas' n nodes (their sizes), O(e log e) for the e
-edge points of the joined areas (one k-d tree of the largest's, to find the
-:data:`COMPARED_AREAS` nearest), then a k-d tree per pair measured, e = the
-areas' polygon perimeter / ``cell_size`` on
-the navmesh route, their sample count on the sampling route; with the mesh,
-O(m log m) for its m faces' closed bodies and up to 9 rays (17 for the ceiling) for each of at most
-``MAX_PLACE_CANDIDATES`` pairs; the smaller areas as the joined ones, :data:`COMPARED_AREAS` of them measured.
+edge points of the joined areas (one k-d tree of the largest's, to bound each
+area's gap and rise from below), then a k-d tree per area measured (those
+whose bound lies under the answer: :func:`nearest_area`), e = the areas'
+polygon perimeter / ``cell_size`` on the navmesh route, their sample count on
+the sampling route; with the mesh, O(m log m) for its m faces' closed bodies
+and up to 9 rays (18 for the ceiling) for each of at most
+``MAX_PLACE_CANDIDATES`` pairs, 2 for the gap; the smaller areas as the joined
+ones.
 """
 
 from __future__ import annotations
@@ -109,9 +122,6 @@ after it when within the agent's width: :func:`smaller_nearer`): on ``nav_test.o
 of 6 m² boxed in 0.2 m from the largest area would hide the 4.7 m gap between its areas of 1,744 and 895 m²
 (docs/analysis_quality.md, "The disconnected-areas warning's nearest area")."""
 
-COMPARED_AREAS = 4
-"""How many of the joined areas nearest the largest (:func:`nearest_areas`, straight-line) are measured for the closest
-gap and rise: a bound on the cost when a level is in hundreds of pieces."""
 
 MAX_PLACE_CANDIDATES = 1024
 """Edge pairs at most that :func:`where_between` tests (more, which takes 256 m of edge points a cell apart all within
@@ -188,9 +198,10 @@ def ground_rim(graph: nx.Graph, nodes: Sequence[int], navmesh: NavMesh | None, e
     return points, np.concatenate(reach), np.concatenate(spacing)
 
 
-def closest_step(a: Ground, b: Ground, climb_weight: float = 1.0) -> Closest:
+def closest_step(a: Ground, b: Ground, climb_weight: float = 1.0, window: float | None = None) -> Closest:
     """Where the edges of two areas' ground, each its :func:`ground_rim`, come closest (vertical offsets counted
-    ``climb_weight`` times): the gap is the closest points' horizontal distance less the ground's reach past each.
+    ``climb_weight`` times): the gap is the closest points' horizontal distance less the ground's reach past each;
+    the pairs within ``window`` metres of the closest (None: the points' spacing) with it.
     O((ka + kb) log kb) for their ka and kb points (a k-d tree of b's)."""
     (pa, ra, sa), (pb, rb, sb) = a, b
     scale = np.array([1.0, climb_weight, 1.0])
@@ -199,7 +210,7 @@ def closest_step(a: Ground, b: Ground, climb_weight: float = 1.0) -> Closest:
     there = int(index[best])
     offset = pb[there] - pa[best]
     gap = float(np.hypot(offset[0], offset[2])) - float(ra[best]) - float(rb[there])
-    near = np.flatnonzero(distance <= distance[best] + max(float(sa[best]), float(sb[there])))
+    near = np.flatnonzero(distance <= distance[best] + (max(float(sa[best]), float(sb[there])) if window is None else window))
     if len(near) > MAX_PLACE_CANDIDATES:
         near = np.union1d(near[:: math.ceil(len(near) / MAX_PLACE_CANDIDATES)], [best])
     near = near[np.argsort(distance[near], kind="stable")]  # the closest first: argmin's, the first of equals
@@ -207,13 +218,13 @@ def closest_step(a: Ground, b: Ground, climb_weight: float = 1.0) -> Closest:
                    np.stack([ra[near], rb[index[near]]], axis=1), np.maximum(sa[near], sb[index[near]]))
 
 
-def closest_step_for(a: Ground, b: Ground, agent: AgentConfig) -> Closest:
+def closest_step_for(a: Ground, b: Ground, agent: AgentConfig, window: float | None = None) -> Closest:
     """:func:`closest_step`, or the closest pair on one floor when the plain one is a floor above another and the
     one-floor pair is closer with vertical offsets counted ``agent.height / agent.max_climb`` times."""
-    plain = closest_step(a, b)
+    plain = closest_step(a, b, window=window)
     if plain.step <= float(agent.max_climb) or float(agent.max_climb) <= 0:
         return plain
-    weighted = closest_step(a, b, float(agent.height) / float(agent.max_climb))
+    weighted = closest_step(a, b, float(agent.height) / float(agent.max_climb), window)
     return weighted if weighted.step <= float(agent.max_climb) else plain
 
 
@@ -314,7 +325,8 @@ def low_ceiling(caster: RayCaster, closest: Closest, agent: AgentConfig) -> LowC
     room[on_ground] = caster.first_hits(floor[on_ground] + EPSILON * UP, UP).distance + EPSILON
     lowest = np.full(len(pairs), np.inf)
     np.minimum.at(lowest, owner, room)
-    low = runs_on & ~has_room(lowest, float(agent.height))
+    walled = np.bincount(owner, weights=hangs_to_the_floor(caster, floor, room, agent), minlength=len(pairs)) > 0
+    low = runs_on & ~walled & ~has_room(lowest, float(agent.height))
     if not low.any():
         return None
     chosen = int(np.argmax(low))  # the first, the closest, under a ceiling
@@ -322,6 +334,33 @@ def low_ceiling(caster: RayCaster, closest: Closest, agent: AgentConfig) -> LowC
     at = under[int(np.argmin(room[under]))]
     plan = float(np.hypot(*(pairs[chosen, 1] - pairs[chosen, 0])[[0, 2]]))
     return LowCeiling(float(room[at]), floor[at], max(plan - float(closest.reach[chosen].sum()), 0.0))
+
+
+def hangs_to_the_floor(caster: RayCaster, floor: np.ndarray, room: np.ndarray, agent: AgentConfig) -> np.ndarray:
+    """(r,) bool: over each floor point (r,3) a solid whose underside lies ``room`` (r,) metres up, under half the
+    agent's height (where :func:`open_between` tests for walls), stands up past the agent's height (its top, one ray
+    further up from inside it): a partition hung over the floor, a wall to the agent, not a ceiling to raise. A plank
+    over a channel's bed or a beam is a slab whose top lies under the agent's head. One ray a point so low."""
+    low = np.flatnonzero(room < 0.5 * float(agent.height))
+    hangs = np.zeros(len(floor), dtype=bool)
+    inside = floor[low] + (room[low] + EPSILON)[:, None] * UP
+    hangs[low] = room[low] + EPSILON + caster.first_hits(inside, UP).distance >= float(agent.height)
+    return hangs
+
+
+def walled_gap(caster: RayCaster, closest: Closest, agent: AgentConfig) -> float:
+    """:attr:`Closest.gap` with each side's reach cut where the segment between the closest pair's points raised half
+    the agent's height (where :func:`open_between` tests for walls) first meets a face from that side: ground does
+    not reach through a wall. A sample's square (half its side and the clearance past it) reaches across a wall
+    0.3 m thick, so the gap read 0.0 m on the sampling route; Recast's eroded edges lie the erosion or more from a
+    wall, so the navmesh route's gap stays. Two rays."""
+    start, end = closest.pairs[0] + 0.5 * float(agent.height) * UP
+    plan, length = float(np.hypot(*(end - start)[[0, 2]])), float(np.linalg.norm(end - start))
+    if plan == 0:
+        return closest.gap
+    forth, back = caster.first_hits_of([(start[None], end - start), (end[None], start - end)])
+    reach = np.minimum(closest.reach[0], np.array([forth.distance[0], back.distance[0]]) * plan / length)
+    return max(plan - float(reach.sum()), 0.0)
 
 
 def where_between(caster: RayCaster, closest: Closest, agent: AgentConfig) -> str:
@@ -378,24 +417,42 @@ def joined_areas(graph: nx.Graph, largest: Sequence[int], others: Sequence[Seque
     return joined or list(range(len(others)))
 
 
-def nearest_areas(ground: Ground, others: Sequence[Ground], count: int) -> np.ndarray:
-    """Indices of the ``count`` areas of ``others`` (each its :func:`ground_rim`) whose edge points come nearest
-    ``ground``'s, straight-line distance, nearest first (ties: the earlier). One k-d tree of ``ground``'s k points
-    queried with the others' e points, O((k + e) log k), so only ``count`` pairs are measured with
-    :func:`closest_step_for`."""
+def edge_distances(ground: Ground, others: Sequence[Ground]) -> np.ndarray:
+    """(n,) metres: how near each of ``others`` (each its :func:`ground_rim`) comes ``ground`` by the straight-line
+    distance of edge points. One k-d tree of ``ground``'s k points queried with the others' e points, O((k + e) log k)."""
     owner = np.repeat(np.arange(len(others)), [len(other[0]) for other in others])
     distance = np.full(len(others), np.inf)
     np.minimum.at(distance, owner, cKDTree(ground[0]).query(np.concatenate([other[0] for other in others]))[0])
-    return np.argsort(distance, kind="stable")[:count]
+    return distance
 
 
 def nearest_area(ground: Ground, grounds: Sequence[Ground], areas: Sequence[Sequence[int]],
                  agent: AgentConfig) -> tuple[Closest, Sequence[int]]:
     """Of ``areas`` (node lists, ``grounds`` their ground), the one whose ground comes nearest ``ground`` (gap and
-    rise, :func:`closest_step_for`) of the ``COMPARED_AREAS`` whose edge points come nearest it
-    (:func:`nearest_areas`), with its :class:`Closest` (ties: the nearer by edge points)."""
-    return min(((closest_step_for(ground, grounds[k], agent), areas[k]) for k in nearest_areas(ground, grounds, COMPARED_AREAS)),
-               key=lambda pair: math.hypot(pair[0].gap, pair[0].step))
+    rise, :func:`closest_step_for`), with its :class:`Closest` (ties among those measured: the nearer by edge points,
+    then the earlier).
+
+    A gap is a pair's plan distance less both points' reach, so an area's hypot(gap, rise) is at least the
+    straight-line distance of its edge points from ``ground``'s (:func:`edge_distances`) less the two grounds'
+    farthest reach. The areas are measured in the order of that bound until it is no less than the nearest found (no
+    area after it comes strictly nearer): exact, whatever their count, at the cost of one :func:`closest_step_for` for each area whose bound lies under the
+    answer (those within the answer plus two reaches of ``ground``'s edge points: half a square and the clearance
+    each on the sampling route)."""
+    distance = edge_distances(ground, grounds)
+    bound = distance - ground[1].max() - np.array([other[1].max() for other in grounds])
+    measured: list[tuple[float, float, int, Closest]] = []
+    for k in np.argsort(bound, kind="stable").tolist():
+        if measured and bound[k] >= min(measured)[0]:
+            break
+        closest = closest_step_for(ground, grounds[k], agent)
+        measured.append((apart(closest), float(distance[k]), k, closest))
+    _, _, k, closest = min(measured, key=lambda row: row[:3])
+    return closest, areas[k]
+
+
+def apart(closest: Closest) -> float:
+    """hypot(gap, rise) of :class:`Closest`, metres: how far apart two areas' ground reads."""
+    return math.hypot(closest.gap, closest.step)
 
 
 def areas_cause(graph: nx.Graph, largest: Sequence[int], others: Sequence[Sequence[int]], agent: AgentConfig,
@@ -421,12 +478,14 @@ def areas_cause(graph: nx.Graph, largest: Sequence[int], others: Sequence[Sequen
     size, middle = area_summary(graph, nearest)
     named = set(joined)
     smaller = [other for k, other in enumerate(others) if k not in named]
-    return (f"from the largest area to the nearest area of {size:,.0f} m², {nearest_cause(closest, middle, agent, mesh)}"
-            f"{smaller_nearer(graph, ground, smaller, math.hypot(closest.gap, closest.step), agent, rim)}")
+    # a low ceiling is asked along the seam, not only where it comes closest (below)
+    seam = None if mesh is None else closest_step_for(ground, rim(graph, nearest), agent, float(agent.height))
+    return (f"from the largest area to the nearest area of {size:,.0f} m², {nearest_cause(closest, middle, agent, mesh, seam)}"
+            f"{smaller_nearer(graph, ground, smaller, apart(closest), agent, rim, mesh)}")
 
 
 def smaller_nearer(graph: nx.Graph, ground: Ground, smaller: Sequence[Sequence[int]], named: float, agent: AgentConfig,
-                   rim: Rim) -> str:
+                   rim: Rim, mesh: trimesh.Trimesh | None = None) -> str:
     """``; and a smaller area of A m² lies nearer, its ground about G m from the largest's, R m higher, at (x, y, z
     m)``: of the areas :func:`joined_areas` leaves out (``smaller``, node lists of areas of ``graph``), the nearest
     to the largest's ``ground`` (:func:`nearest_area`) when it comes nearer than the area named (``named``: its
@@ -439,35 +498,40 @@ def smaller_nearer(graph: nx.Graph, ground: Ground, smaller: Sequence[Sequence[i
     if not smaller:
         return ""
     closest, nodes = nearest_area(ground, [rim(graph, other) for other in smaller], smaller, agent)
-    apart = math.hypot(closest.gap, closest.step)
-    if apart > 2 * float(agent.radius) + READ_AS_EQUAL or apart > named - READ_AS_EQUAL:
+    if apart(closest) > 2 * float(agent.radius) + READ_AS_EQUAL or apart(closest) > named - READ_AS_EQUAL:
         return ""
     rise = float(closest.there[1] - closest.here[1])
     level = "" if round(abs(rise), 1) == 0 else f", {abs(rise):.1f} m {'higher' if rise > 0 else 'lower'}"
+    gap = closest.gap if mesh is None else walled_gap(RayCaster(mesh), closest, agent)
     return (f"; and a smaller area of {area_summary(graph, nodes)[0]:,.0f} m² lies nearer, its ground about "
-            f"{closest.gap:.1f} m from the largest's{level}, at ({xyz(closest.there)})")
+            f"{gap:.1f} m from the largest's{level}, at ({xyz(closest.there)})")
 
 
-def nearest_cause(closest: Closest, middle: np.ndarray, agent: AgentConfig, mesh: trimesh.Trimesh | None) -> str:
+def nearest_cause(closest: Closest, middle: np.ndarray, agent: AgentConfig, mesh: trimesh.Trimesh | None,
+                  seam: Closest | None = None) -> str:
     """:func:`areas_cause`'s cause and place for the area whose ground comes ``closest`` to the largest's, ``middle``
-    (3,) a place inside it, metres."""
-    cause = likely_cause(closest.step, closest.gap, agent)
+    (3,) a place inside it, metres; ``seam`` the same with the pairs up to ``agent.height`` farther than the closest
+    (:func:`closest_step`'s window): a ceiling lower than the agent is asked of them when the pairs about as close as
+    the closest have none (a beam wider than the wall beside it: its pairs lie its extra width farther)."""
     if mesh is None:
-        return f"{cause}, {between(closest.pairs[0])}"
+        return f"{likely_cause(closest.step, closest.gap, agent)}, {between(closest.pairs[0])}"
     caster = RayCaster(mesh)
     # a ceiling over floor that runs on between them first: nothing at the agent's step height parts them, so no
     # solid's wall does (the shut-in rule's rays, lifted half the agent's height, run along a plank's underside
     # 1.0-1.1 m over a channel's bed)
-    if closest.step <= float(agent.max_climb) and (ceiling := low_ceiling(caster, closest, agent)) is not None:
+    if closest.step <= float(agent.max_climb) and (ceiling := low_ceiling(caster, closest, agent) or (
+            None if seam is None else low_ceiling(caster, seam, agent))) is not None:
         return (f"head room too low: a ceiling about {ceiling.head_room:.1f} m over the floor, under agent.height "
                 f"({float(agent.height):g} m), where their ground lies about {ceiling.gap:.1f} m apart, "
                 f"at ({xyz(ceiling.floor)})")
+    gap = walled_gap(caster, closest, agent)
     # its closest place and its middle: a render post or column inside the solid may face the rays from one
     if shut_in(caster, np.stack([closest.there, middle]), agent).any():
         rise = float(closest.there[1] - closest.here[1])
         level = "at the same height" if round(abs(rise), 1) == 0 else f"{abs(rise):.1f} m {'higher' if rise > 0 else 'lower'}"
         return (f"a floor shut inside a closed solid (a box or collision hull exported with the level), {level}, "
-                f"its ground about {closest.gap:.1f} m from the other's, {between(closest.pairs[0])}")
+                f"its ground about {gap:.1f} m from the other's, {between(closest.pairs[0])}")
+    cause = likely_cause(closest.step, gap, agent)
     if closest.step > float(agent.height):
         return f"{cause}, {between(closest.pairs[0])}"
     return f"{cause}, {where_between(caster, closest, agent)}"

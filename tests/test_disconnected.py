@@ -327,3 +327,75 @@ def test_a_low_beam_parts_the_floor_on_either_route(preset):
     assert len(warned) == 1 and "lie in 2 disconnected areas" in str(warned[0])
     assert "Likely cause: from the largest area to the nearest area of " in str(warned[0])
     assert "head room too low: a ceiling about 1.4 m over the floor, under agent.height (2 m)" in str(warned[0])
+
+
+def sampled_rows(graph: nx.Graph, rows: list[tuple[float, int, int]], z: float = 0.5) -> None:
+    """Rows of 1 m samples (``slab``) at height 0 given as (first middle's x, cells, first node), each row joined."""
+    for x0, cells, first in rows:
+        slab(graph, x0 - 0.5, 0.0, cells, first, z)
+
+
+@pytest.mark.parametrize("route", ["navmesh", "sampling"])
+def test_a_partition_hung_low_over_the_floor_reads_as_a_wall_on_either_route(route):
+    """A partition 0.2 m thick (x 9.9-10.1) whose underside is 0.45 m over the floor, up to 3 m: under half the
+    agent's height and standing past its head, a wall to the agent, not a ceiling to raise. The navmesh's edges lie
+    0.1 m over the floor (Recast's heights), the samples on it: the segment lifted the climb (0.4 m) passed under the
+    partition from the samples only, which read "head room too low ... 0.5 m". The samples' squares (0.5 m and the
+    clearance of 0.3 m past each) reached across the partition: their gap read 0.0 m, now its thickness."""
+    mesh = boxes((-1, 21, -0.3, 0, -1, 11), (9.9, 10.1, 0.45, 3.0, -1, 11))
+    if route == "navmesh":
+        navmesh, graph = navmesh_of([(0.5, 9.4, 0.5, 9.5, 0.1), (10.6, 19.5, 0.5, 9.5, 0.1)])
+        cause = likely_cause_of(AgentConfig(), navmesh, mesh=mesh)
+    else:
+        graph = nx.Graph()
+        sampled_rows(graph, [(0.4, 10, 0), (10.6, 10, 100)])
+        cause = likely_cause_of(AgentConfig(), clearance=0.3, mesh=mesh)
+    message = disconnected_warning(graph, areas(graph), 2, cause)
+    assert "head room" not in message
+    assert "or a wall, where their ground lies about 0.2 m apart, " in message
+
+
+def test_a_closet_behind_a_wall_reads_the_walls_thickness_on_the_sampling_route():
+    """A room's samples (x 0.4-9.4), another room's 4 m beyond it in z and a closet of 4 m² behind a wall 0.3 m thick
+    (x 9.7-10.0): the closet is named after the cause, its ground the wall's 0.3 m from the room's, not the 0.0 m
+    the samples' squares (half a metre and the clearance of 0.3 m past each) made of it."""
+    mesh = boxes((-1, 21, -0.3, 0, -1, 21), (9.7, 10.0, 0.0, 3.0, -1, 3))
+    graph = nx.Graph()
+    for row in range(5):  # the room: 50 m², the closet under a tenth of it
+        sampled_rows(graph, [(0.4, 10, 10 * row)], z=0.5 + row)
+    graph.add_edges_from((10 * row, 10 * row + 10) for row in range(4))
+    sampled_rows(graph, [(0.4, 9, 100)], z=8.5)
+    sampled_rows(graph, [(10.3, 4, 300)], z=0.5)
+    message = disconnected_warning(graph, areas(graph), 3, likely_cause_of(AgentConfig(), clearance=0.3, mesh=mesh))
+    assert "; and a smaller area of 4 m² lies nearer, its ground about 0.3 m from the largest's, at (10.3, 0.0, 0.5 m)." \
+        in message
+
+
+def test_the_nearest_area_is_found_past_four_nearer_by_edge_points():
+    """A floor of 50 samples of 1 m², four crumbs of 0.01 m² 1.6 m from its edge points (their ground 1.05 m off)
+    and an area of one sample of 4 m² 1.9 m from them (its square reaches 1 m: its ground 0.4 m off), all under a
+    tenth of the floor: the area 0.4 m away is fifth by the straight-line distance of edge points, and was left out
+    when only the four nearest that way were measured."""
+    graph = nx.Graph()
+    slab(graph, 0.0, 0.0, 50, 0)
+    for index, x in enumerate((10.5, 20.5, 30.5, 40.5)):
+        graph.add_node(100 + index, pos=(x, 0.0, 2.1), area=0.01)
+    graph.add_node(200, pos=(5.5, 0.0, 2.4), area=4.0)
+    message = disconnected_warning(graph, areas(graph), 6, SAMPLED)
+    assert "Likely cause: from the largest area to the nearest area of 4 m², a gap or passage too narrow for the agent " \
+           "(agent.radius 0.5 m), or a wall, where their ground lies about 0.4 m apart" in message
+
+
+def test_a_low_beam_beside_a_wall_is_named_though_the_wall_comes_closer():
+    """A floor parted by a wall 0.2 m thick (z up to 6.5) and on from it by a beam 1 m wide whose underside is 1.4 m up
+    (z from 5.5): the navmesh's edges lie 1.2 m apart across the wall, 2 m across the beam. The head room was asked
+    only of the pairs within a cell of the closest, all across the wall, and the warning named the wall; the pairs up
+    to the agent's height farther are asked too when those find none."""
+    mesh = boxes((-1, 21, -0.3, 0, -1, 11), (9.9, 10.1, 0, 3, -1, 6.5), (9.5, 10.5, 1.4, 1.7, 5.5, 11))
+    navmesh, graph = navmesh_of([(0.5, 9.4, 0.5, 6.0, 0.0), (0.5, 9.0, 6.0, 9.5, 0.0),
+                                 (10.6, 19.5, 0.5, 6.0, 0.0), (11.0, 19.5, 6.0, 9.5, 0.0)])
+    graph.add_edges_from([(0, 1), (2, 3)])
+    message = disconnected_warning(graph, areas(graph), 2, likely_cause_of(AgentConfig(), navmesh, mesh=mesh))
+    assert "head room too low: a ceiling about 1.4 m over the floor, under agent.height (2 m)" in message
+    place = np.array(message.rsplit("at (", 1)[1].removesuffix(" m).").split(", "), dtype=float)
+    assert 9.0 <= place[0] <= 11.0 and place[2] >= 6.5
