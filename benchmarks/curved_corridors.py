@@ -8,14 +8,16 @@ centre line of the corridor ``radius`` m from the ring's centre; and a *straight
 20 m long, at ``angle`` degrees to the x axis. Ground under everything; the presets' agent (radius 0.5 m, height 2 m,
 climb 0.4 m, slope 45 degrees).
 
-Per case it builds the navmesh (``graph.params`` as in ``configs/map_analysis.yaml`` plus ``--cell-size``) and counts
+Per case it builds the navmesh (``graph.params`` as in ``configs/map_analysis.yaml`` plus ``--cell-size`` and
+``--erosion``) and counts
 the corridor's *areas* (connected components of the polygons whose centres lie between the hedges, joined through
 Detour's links) and its *gaps* (points every 0.25 m along the centre line with no corridor polygon within half the
-width); a corridor *joins* with one area and no gap. ``--scan`` prints, per chord, radius (or angle), the narrowest
+width); a corridor *joins* with one area and no gap. ``clearance``: how near a corner of those polygons comes to a
+hedge, m. ``--scan`` prints, per chord, radius (or angle), the narrowest
 width of ``--widths`` from which on every wider one joins too.
 
 Run: ``.venv/bin/python benchmarks/curved_corridors.py --scan [--cell-size 0.1667] [--chords 0.4 0.8 1.6]
-[--radii 5 10 20 30] [--angles 0 20 45]``; ``--case ring 10 1.75 0.8`` prints one case's areas, gaps and polygons."""
+[--radii 5 10 20 30] [--angles 0 20 45] [--erosion recast]``; ``--case ring 10 1.75 0.8`` prints one case's areas, gaps and polygons."""
 
 from __future__ import annotations
 
@@ -27,7 +29,7 @@ from types import SimpleNamespace
 
 import numpy as np
 import trimesh
-from level_kinds import _Solids, _wall_line
+from level_kinds import _Solids
 from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import connected_components
 
@@ -42,39 +44,71 @@ THICK, HIGH = 0.4, 2.4
 STRAIGHT_LENGTH = 20.0
 
 
-def _hedge(s: _Solids, r: float, chord: float) -> None:
-    """A closed hedge round the origin whose chords of about ``chord`` m end on the circle of radius ``r``."""
-    pieces = max(8, round(2 * math.pi * r / chord))
-    angles = np.linspace(0.0, 2 * math.pi, pieces + 1)
-    for a, b in zip(angles[:-1], angles[1:]):
-        _wall_line(s, r * np.array([math.cos(a), math.sin(a)]), r * np.array([math.cos(b), math.sin(b)]),
-                   0.0, HIGH, THICK, [])
+def _strip(p: np.ndarray, q: np.ndarray) -> np.ndarray:
+    """The plan (4, 2) of a hedge from plan point ``p`` (x, z) to ``q``, :data:`THICK` m thick about the line (as
+    :func:`level_kinds._wall_line` draws its prisms)."""
+    along = (q - p) / np.linalg.norm(q - p)
+    side = np.array([-along[1], along[0]]) * THICK / 2
+    return np.array([p - side, q - side, q + side, p + side])
 
 
-def ring(radius: float, width: float, chord: float) -> trimesh.Trimesh:
-    """A ring corridor ``width`` m wide (between the hedges' faces at the chords' ends) round the circle of
-    ``radius`` m, its two hedges drawn as chords of about ``chord`` m, on ground reaching 1 m past the outer one."""
-    s = _Solids()
+def ring_plans(radius: float, width: float, chord: float) -> list[np.ndarray]:
+    """The hedges of a ring corridor ``width`` m wide (between the hedges' faces at the chords' ends) round the
+    circle of ``radius`` m: two closed hedges of chords of about ``chord`` m, each chord's plan (4, 2)."""
+    plans = []
     for r in (radius - width / 2 - THICK / 2, radius + width / 2 + THICK / 2):
-        _hedge(s, r, chord)
-    edge = radius + width / 2 + THICK + 1.0
-    s.box(-edge, edge, -0.5, 0.0, -edge, edge)
-    return s.mesh()
+        pieces = max(8, round(2 * math.pi * r / chord))
+        angles = np.linspace(0.0, 2 * math.pi, pieces + 1)
+        plans += [_strip(r * np.array([math.cos(a), math.sin(a)]), r * np.array([math.cos(b), math.sin(b)]))
+                  for a, b in zip(angles[:-1], angles[1:])]
+    return plans
 
 
-def straight(angle: float, width: float) -> trimesh.Trimesh:
-    """A straight corridor ``width`` m wide and :data:`STRAIGHT_LENGTH` m long along the x axis turned ``angle``
-    degrees, closed at both ends, between hedges as the ring's, on ground reaching 1 m past them."""
-    s = _Solids()
+def straight_plans(angle: float, width: float) -> list[np.ndarray]:
+    """The hedges of a straight corridor ``width`` m wide and :data:`STRAIGHT_LENGTH` m long along the x axis turned
+    ``angle`` degrees, closed at both ends."""
     turn = math.radians(angle)
     along, across = np.array([math.cos(turn), math.sin(turn)]), np.array([-math.sin(turn), math.cos(turn)])
     half, side = STRAIGHT_LENGTH / 2, width / 2 + THICK / 2
-    for k in (-1.0, 1.0):
-        _wall_line(s, -half * along + k * side * across, half * along + k * side * across, 0.0, HIGH, THICK, [])
-        _wall_line(s, k * half * along - side * across, k * half * along + side * across, 0.0, HIGH, THICK, [])
-    edge = half + side + 1.0
+    return [plan for k in (-1.0, 1.0) for plan in (
+        _strip(-half * along + k * side * across, half * along + k * side * across),
+        _strip(k * half * along - side * across, k * half * along + side * across))]
+
+
+def level(plans: list[np.ndarray]) -> trimesh.Trimesh:
+    """The hedges of ``plans``, :data:`HIGH` m high, on ground reaching 1 m past them."""
+    s = _Solids()
+    for plan in plans:
+        s.prism(plan, 0.0, HIGH)
+    edge = float(np.abs(np.concatenate(plans)).max()) + 1.0
     s.box(-edge, edge, -0.5, 0.0, -edge, edge)
     return s.mesh()
+
+
+def ring(radius: float, width: float, chord: float) -> trimesh.Trimesh:
+    """The level of :func:`ring_plans`."""
+    return level(ring_plans(radius, width, chord))
+
+
+def straight(angle: float, width: float) -> trimesh.Trimesh:
+    """The level of :func:`straight_plans`."""
+    return level(straight_plans(angle, width))
+
+
+def clearance(points: np.ndarray, plans: list[np.ndarray]) -> np.ndarray:
+    """(N,) the distance in plan from each of ``points`` ((N,2) x, z) to the nearest hedge of ``plans`` (0 inside
+    one), m."""
+    best = np.full(len(points), np.inf)
+    for plan in plans:
+        sides = []
+        for a, b in zip(plan, np.roll(plan, -1, axis=0)):
+            ab = b - a
+            t = np.clip((points - a) @ ab / (ab @ ab), 0.0, 1.0)
+            best = np.minimum(best, np.linalg.norm(points - (a + t[:, None] * ab), axis=1))
+            sides.append(ab[0] * (points[:, 1] - a[1]) - ab[1] * (points[:, 0] - a[0]))
+        sides = np.array(sides)
+        best[(sides >= 0).all(axis=0) | (sides <= 0).all(axis=0)] = 0.0  # inside the (convex) hedge either way round
+    return best
 
 
 def corridor_areas(navmesh: NavMesh, inside: np.ndarray, line: np.ndarray, width: float) -> tuple[int, int]:
@@ -97,7 +131,8 @@ def corridor_areas(navmesh: NavMesh, inside: np.ndarray, line: np.ndarray, width
 
 def measure(kind: str, size: float, width: float, chord: float, params: RecastParams) -> dict:
     """One case: ``kind`` ring (``size`` the radius, m) or straight (``size`` the angle, degrees)."""
-    mesh = ring(size, width, chord) if kind == "ring" else straight(size, width)
+    plans = ring_plans(size, width, chord) if kind == "ring" else straight_plans(size, width)
+    mesh = level(plans)
     start = time.perf_counter()
     navmesh = build_navmesh(mesh.vertices, mesh.faces, AGENT, params)
     seconds = time.perf_counter() - start
@@ -118,7 +153,9 @@ def measure(kind: str, size: float, width: float, chord: float, params: RecastPa
         t = np.arange(-STRAIGHT_LENGTH / 2 + 1.0, STRAIGHT_LENGTH / 2 - 1.0 + 1e-9, 0.25)
         line = np.stack([t * along[0], np.zeros(len(t)), t * along[1]], axis=1)
     areas, gaps = corridor_areas(navmesh, inside, line, width)
-    return {"areas": areas, "gaps": gaps, "polygons": int(inside.sum()), "seconds": seconds,
+    corners = np.unique(navmesh.polygons[inside][navmesh.polygons[inside] >= 0])
+    near = float(clearance(navmesh.vertices[corners][:, [0, 2]], plans).min()) if len(corners) else math.nan
+    return {"areas": areas, "gaps": gaps, "polygons": int(inside.sum()), "clearance": near, "seconds": seconds,
             "joined": areas == 1 and gaps == 0}
 
 
@@ -140,12 +177,13 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--case", nargs=4, metavar=("KIND", "SIZE", "WIDTH", "CHORD"))
     ap.add_argument("--cell-size", type=float, default=None)
     ap.add_argument("--ledge-filter", default="drops", choices=["recast", "drops", "off"])
+    ap.add_argument("--erosion", default="joined", choices=["joined", "recast"])
     ap.add_argument("--chords", type=float, nargs="+", default=[0.4, 0.8, 1.6])
     ap.add_argument("--radii", type=float, nargs="+", default=[5.0, 10.0, 20.0, 30.0])
     ap.add_argument("--angles", type=float, nargs="+", default=[0.0, 10.0, 20.0, 30.0, 45.0])
     ap.add_argument("--widths", type=float, nargs="+", default=[round(1.5 + 0.05 * k, 2) for k in range(21)])
     a = ap.parse_args(argv)
-    params = RecastParams(ledge_filter=a.ledge_filter, cell_size=a.cell_size)
+    params = RecastParams(ledge_filter=a.ledge_filter, cell_size=a.cell_size, erosion=a.erosion)
     if a.case:
         kind, size, width, chord = a.case[0], float(a.case[1]), float(a.case[2]), float(a.case[3])
         if kind not in ("ring", "straight"):

@@ -173,6 +173,7 @@ struct Settings {
     LedgeFilter ledge_filter;
     Partition partition;
     bool recast_head_room;  // the low-height filter as Recast ships it: one cell more head room than the agent's
+    bool join_corners;      // put back the eroded spans that join two kept ones touching only at a corner
 };
 
 // Limits of Recast 1.5.1's voxel settings: compact spans store their height in
@@ -912,6 +913,73 @@ void drop_ledge_spans(int walkable_height, int walkable_climb, rcHeightfield& hf
             }
 }
 
+// Recast's erosion (rcErodeWalkableArea, Recast Navigation 1.5.1) keeps a span when its chamfer distance (2 a side
+// step, 3 a corner step) to the nearest span at the floor's edge is at least twice walkableRadius. Counted from the
+// edge span's centre, which lies up to a cell inside the floor Recast rasterised, that keeps the agent 0.125-0.375 m
+// further from a wall than its radius along the grid, and more at an angle to it (0.18-0.23 m more in the middle of
+// the ring corridors of benchmarks/curved_corridors.py). A corridor whose kept floor narrows to one cell then holds
+// spans that touch only at their corners, which Recast's regions never join (they follow side steps alone): a
+// corridor 1.75 m wide at 20-60 degrees to the grid breaks into pieces, and those under minRegionArea are dropped
+// (docs/navmesh.md, "Curved corridors"). This puts back, of the two side neighbours two such kept spans share, each
+// that was floor before the erosion and that no edge span comes within `reach` - 1 side steps of (a search along
+// its floor's links). Then every cell within `reach` side steps of it was floor, so a straight wall, which meets
+// every cell it crosses, stands at least (reach + 1) / sqrt(2) cells from its centre (nearest at 45 degrees): reach
+// = ceil(sqrt(2) * radius / cs - 1) keeps the agent's centre its radius from every straight wall (the cell's square,
+// which the polygons cover, up to half its diagonal nearer: 0.40 m of 0.5 at worst measured). Reads only the spans'
+// state before and after Recast's erosion, so the result does not depend on the order of the spans; a tile's
+// border (walkableRadius + 3 cells) holds every span the search reads. O(spans) + O(reach^2) a candidate.
+void join_corners(rcCompactHeightfield& chf, const std::vector<unsigned char>& before, int reach) {
+    const int w = chf.width, n = chf.spanCount;
+    std::vector<int> xs(static_cast<size_t>(n)), zs(static_cast<size_t>(n));
+    for (int z = 0; z < chf.height; ++z)
+        for (int x = 0; x < w; ++x) {
+            const rcCompactCell& c = chf.cells[x + z * w];
+            for (int i = static_cast<int>(c.index), e = static_cast<int>(c.index + c.count); i < e; ++i) xs[i] = x, zs[i] = z;
+        }
+    auto across = [&](int i, int dir) {  // the span across side `dir` of span i, or -1
+        const rcCompactSpan& s = chf.spans[i];
+        if (rcGetCon(s, dir) == RC_NOT_CONNECTED) return -1;
+        const int x = xs[i] + rcGetDirOffsetX(dir), z = zs[i] + rcGetDirOffsetY(dir);
+        return static_cast<int>(chf.cells[x + z * w].index) + rcGetCon(s, dir);
+    };
+    auto was_floor = [&](int i) { return i >= 0 && before[i] != RC_NULL_AREA; };
+    auto kept = [&](int i) { return i >= 0 && chf.areas[i] != RC_NULL_AREA; };
+    auto at_edge = [&](int i) {  // a floor span with a side that is not floor: where Recast's distances start
+        for (int dir = 0; dir < 4; ++dir)
+            if (!was_floor(across(i, dir))) return true;
+        return false;
+    };
+    std::vector<int> seen(static_cast<size_t>(n), -1), queue;
+    auto clear_all_round = [&](int m) {  // no edge span within reach - 1 side steps along m's floor
+        queue.assign(1, m);
+        seen[m] = m;
+        for (size_t q = 0, end = 1, depth = 0;; ++depth) {
+            for (; q < end; ++q) {
+                const int i = queue[q];
+                if (at_edge(i)) return false;
+                if (static_cast<int>(depth) + 1 >= reach) continue;
+                for (int dir = 0; dir < 4; ++dir) {
+                    const int j = across(i, dir);  // floor: i is no edge span
+                    if (seen[j] != m) seen[j] = m, queue.push_back(j);
+                }
+            }
+            if (end == queue.size()) return true;
+            end = queue.size();
+        }
+    };
+    std::vector<int> back;
+    for (int i = 0; i < n; ++i) {
+        if (!kept(i)) continue;
+        for (int side : {0, 2}) {  // -x or +x, then +z (dir 1): each corner pair once, from its lower-z span
+            const int a = across(i, side), b = across(i, 1);
+            if (kept(a) || kept(b)) continue;
+            if (a >= 0 && kept(across(a, 1)) && was_floor(a) && clear_all_round(a)) back.push_back(a);
+            if (b >= 0 && kept(across(b, side)) && was_floor(b) && clear_all_round(b)) back.push_back(b);
+        }
+    }
+    for (int m : back) chf.areas[m] = before[m];
+}
+
 // Input shared by every tile of a build.
 struct Input {
     const float* verts;
@@ -964,7 +1032,12 @@ void build_tile(const Input& in, const int* tris, int ntris, const rcConfig& c, 
     if (!rcBuildCompactHeightfield(&ctx, c.walkableHeight, c.walkableClimb, *solid, *chf))
         fail("rcBuildCompactHeightfield failed", &ctx, where);
     solid.reset();
+    std::vector<unsigned char> before;
+    if (s.join_corners) before.assign(chf->areas, chf->areas + chf->spanCount);
     if (!rcErodeWalkableArea(&ctx, c.walkableRadius, *chf)) fail("rcErodeWalkableArea failed", &ctx, where);
+    if (s.join_corners && c.walkableRadius > 0)
+        join_corners(*chf, before, std::max(1, static_cast<int>(std::ceil(
+                                                   std::sqrt(2.0) * s.agent_radius / static_cast<double>(c.cs) - 1.0))));
     int walkable_spans = 0;
     for (int i = 0; i < chf->spanCount; ++i)
         if (chf->areas[i] != RC_NULL_AREA) ++walkable_spans;
@@ -1786,13 +1859,13 @@ NavMeshCore* build_navmesh(nb::ndarray<const V, nb::shape<-1, 3>, nb::c_contig, 
                            long long max_cells, std::optional<int> tile_size, int threads,
                            bool filter_low_hanging_obstacles, const std::string& ledge_filter,
                            bool filter_low_height_spans, const std::string& partition,
-                           bool recast_head_room) {
+                           bool recast_head_room, bool join_corners) {
     Settings s{cell_size, cell_height, agent_height, agent_radius, agent_max_climb, agent_max_slope,
                region_min_size, region_merge_size, edge_max_len, edge_max_error, verts_per_poly,
                detail_sample_dist, detail_sample_max_error, max_cells,
                tile_size ? *tile_size : -1, threads,
                filter_low_hanging_obstacles, filter_low_height_spans, parse_ledge_filter(ledge_filter),
-               parse_partition(partition), recast_head_room};
+               parse_partition(partition), recast_head_room, join_corners};
     if (tile_size && *tile_size < 0) throw nb::value_error("Recast: tile_size must be None (automatic), 0 (solo) or >= 16 cells");
     check_settings(s);
     const size_t nv = vertices.shape(0), nt = faces.shape(0);
@@ -1831,7 +1904,7 @@ void def_build(nb::module_& m) {
           nb::arg("max_cells") = 100000000LL, nb::arg("tile_size") = nb::none(), nb::arg("threads") = 0,
           nb::arg("filter_low_hanging_obstacles") = true, nb::arg("ledge_filter") = "recast",
           nb::arg("filter_low_height_spans") = true, nb::arg("partition") = "auto",
-          nb::arg("recast_head_room") = false,
+          nb::arg("recast_head_room") = false, nb::arg("join_corners") = true,
           nb::rv_policy::take_ownership,
           "Build a navmesh from (N,3) vertices and (M,3) triangle faces. World-unit settings, "
           "derived into Recast's voxel configuration as Recast's demo does. tile_size: None "
