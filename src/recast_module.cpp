@@ -927,40 +927,35 @@ void drop_ledge_spans(int walkable_height, int walkable_climb, rcHeightfield& hf
 // = ceil(sqrt(2) * radius / cs - 1) keeps the agent's centre its radius from every straight wall (the cell's square,
 // which the polygons cover, up to half its diagonal nearer: 0.40 m of 0.5 at worst measured). Reads only the spans'
 // state before and after Recast's erosion, so the result does not depend on the order of the spans; a tile's
-// border (walkableRadius + 3 cells) holds every span the search reads. O(spans) + O(reach^2) a candidate.
+// border (walkableRadius + 3 cells) holds every span the search reads. O(spans), and O(reach^4) a candidate.
 void join_corners(rcCompactHeightfield& chf, const std::vector<unsigned char>& before, int reach) {
-    const int w = chf.width, n = chf.spanCount;
-    std::vector<int> xs(static_cast<size_t>(n)), zs(static_cast<size_t>(n));
-    for (int z = 0; z < chf.height; ++z)
-        for (int x = 0; x < w; ++x) {
-            const rcCompactCell& c = chf.cells[x + z * w];
-            for (int i = static_cast<int>(c.index), e = static_cast<int>(c.index + c.count); i < e; ++i) xs[i] = x, zs[i] = z;
-        }
-    auto across = [&](int i, int dir) {  // the span across side `dir` of span i, or -1
-        const rcCompactSpan& s = chf.spans[i];
-        if (rcGetCon(s, dir) == RC_NOT_CONNECTED) return -1;
-        const int x = xs[i] + rcGetDirOffsetX(dir), z = zs[i] + rcGetDirOffsetY(dir);
-        return static_cast<int>(chf.cells[x + z * w].index) + rcGetCon(s, dir);
+    struct At { int span, x, z; };
+    const int w = chf.width;
+    auto across = [&](const At& a, int dir) {  // the span across side `dir` of a, or span -1
+        const int x = a.x + rcGetDirOffsetX(dir), z = a.z + rcGetDirOffsetY(dir);
+        if (a.span < 0 || rcGetCon(chf.spans[a.span], dir) == RC_NOT_CONNECTED) return At{-1, x, z};
+        return At{static_cast<int>(chf.cells[x + z * w].index) + rcGetCon(chf.spans[a.span], dir), x, z};
     };
-    auto was_floor = [&](int i) { return i >= 0 && before[i] != RC_NULL_AREA; };
-    auto kept = [&](int i) { return i >= 0 && chf.areas[i] != RC_NULL_AREA; };
-    auto at_edge = [&](int i) {  // a floor span with a side that is not floor: where Recast's distances start
+    auto was_floor = [&](const At& a) { return a.span >= 0 && before[a.span] != RC_NULL_AREA; };
+    auto kept = [&](const At& a) { return a.span >= 0 && chf.areas[a.span] != RC_NULL_AREA; };
+    auto at_edge = [&](const At& a) {  // a floor span with a side that is not floor: where Recast's distances start
         for (int dir = 0; dir < 4; ++dir)
-            if (!was_floor(across(i, dir))) return true;
+            if (!was_floor(across(a, dir))) return true;
         return false;
     };
-    std::vector<int> seen(static_cast<size_t>(n), -1), queue;
-    auto clear_all_round = [&](int m) {  // no edge span within reach - 1 side steps along m's floor
+    std::vector<At> queue;  // a search reads at most 2 reach^2 spans: a list beats a mark per span of the tile
+    auto clear_all_round = [&](const At& m) {  // no edge span within reach - 1 side steps along m's floor
         queue.assign(1, m);
-        seen[m] = m;
         for (size_t q = 0, end = 1, depth = 0;; ++depth) {
             for (; q < end; ++q) {
-                const int i = queue[q];
-                if (at_edge(i)) return false;
+                const At a = queue[q];
+                if (at_edge(a)) return false;
                 if (static_cast<int>(depth) + 1 >= reach) continue;
                 for (int dir = 0; dir < 4; ++dir) {
-                    const int j = across(i, dir);  // floor: i is no edge span
-                    if (seen[j] != m) seen[j] = m, queue.push_back(j);
+                    const At b = across(a, dir);  // floor: a is no edge span
+                    bool seen = false;
+                    for (const At& c : queue) seen = seen || c.span == b.span;
+                    if (!seen) queue.push_back(b);
                 }
             }
             if (end == queue.size()) return true;
@@ -968,15 +963,20 @@ void join_corners(rcCompactHeightfield& chf, const std::vector<unsigned char>& b
         }
     };
     std::vector<int> back;
-    for (int i = 0; i < n; ++i) {
-        if (!kept(i)) continue;
-        for (int side : {0, 2}) {  // -x or +x, then +z (dir 1): each corner pair once, from its lower-z span
-            const int a = across(i, side), b = across(i, 1);
-            if (kept(a) || kept(b)) continue;
-            if (a >= 0 && kept(across(a, 1)) && was_floor(a) && clear_all_round(a)) back.push_back(a);
-            if (b >= 0 && kept(across(b, side)) && was_floor(b) && clear_all_round(b)) back.push_back(b);
+    for (int z = 0; z < chf.height; ++z)
+        for (int x = 0; x < w; ++x) {
+            const rcCompactCell& cell = chf.cells[x + z * w];
+            for (int i = static_cast<int>(cell.index), e = static_cast<int>(cell.index + cell.count); i < e; ++i) {
+                const At here{i, x, z};
+                if (!kept(here)) continue;
+                for (int side : {0, 2}) {  // -x or +x, then +z (dir 1): each corner pair once, from its lower-z span
+                    const At a = across(here, side), b = across(here, 1);
+                    if (kept(a) || kept(b)) continue;
+                    if (kept(across(a, 1)) && was_floor(a) && clear_all_round(a)) back.push_back(a.span);
+                    if (kept(across(b, side)) && was_floor(b) && clear_all_round(b)) back.push_back(b.span);
+                }
+            }
         }
-    }
     for (int m : back) chf.areas[m] = before[m];
 }
 
