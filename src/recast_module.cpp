@@ -969,9 +969,11 @@ void join_corners(rcCompactHeightfield& chf, const std::vector<unsigned char>& b
             for (int i = static_cast<int>(cell.index), e = static_cast<int>(cell.index + cell.count); i < e; ++i) {
                 const At here{i, x, z};
                 if (!kept(here)) continue;
-                for (int side : {0, 2}) {  // -x or +x, then +z (dir 1): each corner pair once, from its lower-z span
-                    const At a = across(here, side), b = across(here, 1);
-                    if (kept(a) || kept(b)) continue;
+                const At b = across(here, 1);  // +z, then -x or +x: each corner pair once, from its lower-z span
+                if (kept(b)) continue;  // inside the kept floor, where most spans are: no corner pair to join
+                for (int side : {0, 2}) {
+                    const At a = across(here, side);
+                    if (kept(a)) continue;
                     if (kept(across(a, 1)) && was_floor(a) && clear_all_round(a)) back.push_back(a.span);
                     if (kept(across(b, side)) && was_floor(b) && clear_all_round(b)) back.push_back(b.span);
                 }
