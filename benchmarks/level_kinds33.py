@@ -166,7 +166,7 @@ def attic_row(seed: int) -> trimesh.Trimesh:
     return s.mesh()
 
 
-def labyrinth(seed: int) -> trimesh.Trimesh:
+def labyrinth(seed: int, ring_width: float | None = None) -> trimesh.Trimesh:
     """A unicursal labyrinth (a puzzle game's, a horror game's garden) on a lawn: 8-10 concentric ring corridors
     round a centre court 4.5 m in radius, each corridor 1.9-2.5 m wide (drawn per ring: the agent's 1 m plus a metre
     or so; the drafts' 1.3-1.9 m held no floor along most rings), hedges 0.4 m thick and 2.4 m high drawn as chords
@@ -185,6 +185,8 @@ def labyrinth(seed: int) -> trimesh.Trimesh:
     rng = np.random.default_rng(seed)
     rings = int(rng.integers(8, 11))
     widths = [float(rng.uniform(1.9, 2.5)) for _ in range(rings)]
+    if ring_width is not None:  # every corridor that wide, the rest of the level as drawn (benchmarks/curved_corridors.py)
+        widths = [ring_width] * rings
     thick, high, court = 0.4, 2.4, 4.5
     radii = [court]  # the centre line of each hedge, innermost first
     for w in widths:

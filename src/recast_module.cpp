@@ -173,6 +173,7 @@ struct Settings {
     LedgeFilter ledge_filter;
     Partition partition;
     bool recast_head_room;  // the low-height filter as Recast ships it: one cell more head room than the agent's
+    bool join_corners;      // put back the eroded spans that join two kept ones touching only at a corner
 };
 
 // Limits of Recast 1.5.1's voxel settings: compact spans store their height in
@@ -912,6 +913,75 @@ void drop_ledge_spans(int walkable_height, int walkable_climb, rcHeightfield& hf
             }
 }
 
+// Recast's erosion (rcErodeWalkableArea, Recast Navigation 1.5.1) keeps a span when its chamfer distance (2 a side
+// step, 3 a corner step) to the nearest span at the floor's edge is at least twice walkableRadius. Counted from the
+// edge span's centre, which lies up to a cell inside the floor Recast rasterised, that keeps the agent 0.125-0.375 m
+// further from a wall than its radius along the grid, and more at an angle to it (0.18-0.23 m more in the middle of
+// the ring corridors of benchmarks/curved_corridors.py). A corridor whose kept floor narrows to one cell then holds
+// spans that touch only at their corners, which Recast's regions never join (they follow side steps alone): a
+// corridor 1.75 m wide at 20-60 degrees to the grid breaks into pieces, and those under minRegionArea are dropped
+// (docs/navmesh.md, "Curved corridors"). This puts back, of the two side neighbours two such kept spans share, each
+// that was floor before the erosion and that no edge span comes within `reach` - 1 side steps of (a search along
+// its floor's links). Then every cell within `reach` side steps of it was floor, so a straight wall, which meets
+// every cell it crosses, stands at least (reach + 1) / sqrt(2) cells from its centre (nearest at 45 degrees): reach
+// = ceil(sqrt(2) * radius / cs - 1) keeps the agent's centre its radius from every straight wall (the cell's square,
+// which the polygons cover, up to half its diagonal nearer: 0.40 m of 0.5 at worst measured). Reads only the spans'
+// state before and after Recast's erosion, so the result does not depend on the order of the spans; a tile's
+// border (walkableRadius + 3 cells) holds every span the search reads. O(spans), and O(reach^4) a candidate.
+void join_corners(rcCompactHeightfield& chf, const std::vector<unsigned char>& before, int reach) {
+    struct At { int span, x, z; };
+    const int w = chf.width;
+    auto across = [&](const At& a, int dir) {  // the span across side `dir` of a, or span -1
+        const int x = a.x + rcGetDirOffsetX(dir), z = a.z + rcGetDirOffsetY(dir);
+        if (a.span < 0 || rcGetCon(chf.spans[a.span], dir) == RC_NOT_CONNECTED) return At{-1, x, z};
+        return At{static_cast<int>(chf.cells[x + z * w].index) + rcGetCon(chf.spans[a.span], dir), x, z};
+    };
+    auto was_floor = [&](const At& a) { return a.span >= 0 && before[a.span] != RC_NULL_AREA; };
+    auto kept = [&](const At& a) { return a.span >= 0 && chf.areas[a.span] != RC_NULL_AREA; };
+    auto at_edge = [&](const At& a) {  // a floor span with a side that is not floor: where Recast's distances start
+        for (int dir = 0; dir < 4; ++dir)
+            if (!was_floor(across(a, dir))) return true;
+        return false;
+    };
+    std::vector<At> queue;  // a search reads at most 2 reach^2 spans: a list beats a mark per span of the tile
+    auto clear_all_round = [&](const At& m) {  // no edge span within reach - 1 side steps along m's floor
+        queue.assign(1, m);
+        for (size_t q = 0, end = 1, depth = 0;; ++depth) {
+            for (; q < end; ++q) {
+                const At a = queue[q];
+                if (at_edge(a)) return false;
+                if (static_cast<int>(depth) + 1 >= reach) continue;
+                for (int dir = 0; dir < 4; ++dir) {
+                    const At b = across(a, dir);  // floor: a is no edge span
+                    bool seen = false;
+                    for (const At& c : queue) seen = seen || c.span == b.span;
+                    if (!seen) queue.push_back(b);
+                }
+            }
+            if (end == queue.size()) return true;
+            end = queue.size();
+        }
+    };
+    std::vector<int> back;
+    for (int z = 0; z < chf.height; ++z)
+        for (int x = 0; x < w; ++x) {
+            const rcCompactCell& cell = chf.cells[x + z * w];
+            for (int i = static_cast<int>(cell.index), e = static_cast<int>(cell.index + cell.count); i < e; ++i) {
+                const At here{i, x, z};
+                if (!kept(here)) continue;
+                const At b = across(here, 1);  // +z, then -x or +x: each corner pair once, from its lower-z span
+                if (kept(b)) continue;  // inside the kept floor, where most spans are: no corner pair to join
+                for (int side : {0, 2}) {
+                    const At a = across(here, side);
+                    if (kept(a)) continue;
+                    if (kept(across(a, 1)) && was_floor(a) && clear_all_round(a)) back.push_back(a.span);
+                    if (kept(across(b, side)) && was_floor(b) && clear_all_round(b)) back.push_back(b.span);
+                }
+            }
+        }
+    for (int m : back) chf.areas[m] = before[m];
+}
+
 // Input shared by every tile of a build.
 struct Input {
     const float* verts;
@@ -964,7 +1034,12 @@ void build_tile(const Input& in, const int* tris, int ntris, const rcConfig& c, 
     if (!rcBuildCompactHeightfield(&ctx, c.walkableHeight, c.walkableClimb, *solid, *chf))
         fail("rcBuildCompactHeightfield failed", &ctx, where);
     solid.reset();
+    std::vector<unsigned char> before;
+    if (s.join_corners) before.assign(chf->areas, chf->areas + chf->spanCount);
     if (!rcErodeWalkableArea(&ctx, c.walkableRadius, *chf)) fail("rcErodeWalkableArea failed", &ctx, where);
+    if (s.join_corners && c.walkableRadius > 0)
+        join_corners(*chf, before, std::max(1, static_cast<int>(std::ceil(
+                                                   std::sqrt(2.0) * s.agent_radius / static_cast<double>(c.cs) - 1.0))));
     int walkable_spans = 0;
     for (int i = 0; i < chf->spanCount; ++i)
         if (chf->areas[i] != RC_NULL_AREA) ++walkable_spans;
@@ -1786,13 +1861,13 @@ NavMeshCore* build_navmesh(nb::ndarray<const V, nb::shape<-1, 3>, nb::c_contig, 
                            long long max_cells, std::optional<int> tile_size, int threads,
                            bool filter_low_hanging_obstacles, const std::string& ledge_filter,
                            bool filter_low_height_spans, const std::string& partition,
-                           bool recast_head_room) {
+                           bool recast_head_room, bool join_corners) {
     Settings s{cell_size, cell_height, agent_height, agent_radius, agent_max_climb, agent_max_slope,
                region_min_size, region_merge_size, edge_max_len, edge_max_error, verts_per_poly,
                detail_sample_dist, detail_sample_max_error, max_cells,
                tile_size ? *tile_size : -1, threads,
                filter_low_hanging_obstacles, filter_low_height_spans, parse_ledge_filter(ledge_filter),
-               parse_partition(partition), recast_head_room};
+               parse_partition(partition), recast_head_room, join_corners};
     if (tile_size && *tile_size < 0) throw nb::value_error("Recast: tile_size must be None (automatic), 0 (solo) or >= 16 cells");
     check_settings(s);
     const size_t nv = vertices.shape(0), nt = faces.shape(0);
@@ -1831,7 +1906,7 @@ void def_build(nb::module_& m) {
           nb::arg("max_cells") = 100000000LL, nb::arg("tile_size") = nb::none(), nb::arg("threads") = 0,
           nb::arg("filter_low_hanging_obstacles") = true, nb::arg("ledge_filter") = "recast",
           nb::arg("filter_low_height_spans") = true, nb::arg("partition") = "auto",
-          nb::arg("recast_head_room") = false,
+          nb::arg("recast_head_room") = false, nb::arg("join_corners") = true,
           nb::rv_policy::take_ownership,
           "Build a navmesh from (N,3) vertices and (M,3) triangle faces. World-unit settings, "
           "derived into Recast's voxel configuration as Recast's demo does. tile_size: None "

@@ -121,6 +121,13 @@ class RecastParams(PluginParams):
         "Recast ships it, one cell more (the paper preset, to build the navmesh the paper's method was measured on; "
         "docs/navmesh.md, Head room a little over the agent's height)",
     )
+    erosion: Literal["joined", "recast"] = Field(
+        "joined",
+        description="joined: after Recast's erosion by the agent's radius, put back the eroded floor between two kept "
+        "cells that touch only at a corner when no edge of the floor comes within the agent's radius of it (a "
+        "corridor 1.7-1.8 m wide at an angle to the grid, or curved, then holds floor all along); recast: Recast's "
+        "erosion as shipped (the paper preset); docs/navmesh.md, Curved corridors",
+    )
     partition: Literal["auto", "watershed", "monotone", "layers"] = Field(
         "auto",
         description="Recast's region partition: auto (watershed, and a tile where a watershed region overlaps "
@@ -252,6 +259,7 @@ def resolve_settings(agent: Any, params: RecastParams | None = None) -> dict[str
         filter_low_height_spans=bool(p.filter_low_height_spans),
         partition=p.partition,
         recast_head_room=p.head_room == "recast",
+        join_corners=p.erosion == "joined",
     )
     _check_voxels(settings, keys, cs_given=p.cell_size is not None, ch_given=p.cell_height is not None)
     return settings
