@@ -1,9 +1,9 @@
 """A gap in a straight wall turned to Recast's grid: shut when narrower than the agent, open when wider (issue 9).
 
-A wall 0.3 m thick and 3 m high crosses square ground 24 m a side through its centre, turned ``angle`` degrees from
+A wall ``--thick`` m thick (0.3, a door's depth; 3 makes the gap a short passage) and 1.5 m high crosses square ground 24 m a side through its centre, turned ``angle`` degrees from
 the x axis, and reaches past the ground's edges, so the only way from one side to the other is a gap ``gap`` m wide
 (between the jambs' faces) at the centre. The navmesh of a preset's ``graph.params`` and agent is *open* when a
-point 3 m in front of the gap and one 3 m behind it lie on polygons joined through Detour's links. An agent of
+point 3 m in front of the wall at the gap and one 3 m behind it lie on polygons joined through Detour's links. An agent of
 radius r never passes a gap narrower than 2 r: such a gap open is wrong. A wider one is open to the agent, but
 Recast's erosion, counted in whole cells from the edge cells' centres, keeps it shut until it is some cells wider
 (map_analysis on main, 7 December 2026: 1.6 m at 45 degrees); the table counts those apart (a gap of exactly 2 r, touching both jambs, in neither count). ``clearance``: how near a polygon corner within 2 m of
@@ -14,7 +14,7 @@ presets' agent of radius 0.5 m: 0.8, 0.9, 0.95, 1.0, 1.05 m), each at ``--angles
 ``--wide-offsets`` (default +0.05 to +1.0; 1.05-2.0 m with the presets' agent) at 45 degrees alone.
 
 Run: ``.venv/bin/python benchmarks/narrow_gaps.py [--presets map_analysis map_piece] [--angles 0 10 20 30 45]
-[--offsets -0.2 -0.1 -0.05 0 0.05] [--wide-offsets 0.05 0.1 0.2] [--erosion joined|recast]``
+[--offsets -0.2 -0.1 -0.05 0 0.05] [--wide-offsets 0.05 0.1 0.2] [--thick 0.3] [--erosion joined|recast]``
 (``--erosion`` only where the installed code has ``graph.params.erosion``).
 """
 
@@ -34,8 +34,9 @@ from scipy.sparse.csgraph import connected_components
 from g2s_core.config import PRESETS_DIR, load_config
 from g2s_plugins.recast import NavMesh, RecastParams, build_navmesh
 
-THICK, HIGH = 0.3, 3.0
-"""The wall: 0.3 m thick (a door's depth), 3 m high."""
+HIGH = 1.5
+"""The wall's height, m: over the agent's climb, under its height, so that Recast, which rasterises a solid's
+surfaces and not its inside, finds no floor with head room on the ground inside a thick wall."""
 
 GROUND = 12.0
 """Half the ground's side, m."""
@@ -57,22 +58,23 @@ def wall_spans(gap: float) -> list[tuple[float, float]]:
     return [(-reach, -gap / 2), (gap / 2, reach)]
 
 
-def level(angle: float, gap: float) -> trimesh.Trimesh:
-    """The ground and the wall with its gap, turned ``angle`` degrees."""
+def level(angle: float, gap: float, thick: float) -> trimesh.Trimesh:
+    """The ground and the wall ``thick`` m thick with its gap, turned ``angle`` degrees."""
     along, across = _frame(angle)
     s = _Solids()
     for u0, u1 in wall_spans(gap):
-        plan = [u * along + v * across for u in (u0, u1) for v in (-THICK / 2, THICK / 2)]
+        plan = [u * along + v * across for u in (u0, u1) for v in (-thick / 2, thick / 2)]
         s.prism(np.array([plan[0], plan[2], plan[3], plan[1]]), 0.0, HIGH)
     s.box(-GROUND, GROUND, -0.5, 0.0, -GROUND, GROUND)
     return s.mesh()
 
 
-def jamb_distance(points: np.ndarray, angle: float, gap: float) -> np.ndarray:
-    """(N,) the plan distance from ``points`` ((N,2) x, z) to the nearer wall piece (a rectangle), m."""
+def jamb_distance(points: np.ndarray, angle: float, gap: float, thick: float) -> np.ndarray:
+    """(N,) the plan distance from ``points`` ((N,2) x, z) to the nearer wall piece (a rectangle ``thick`` m
+    across), m."""
     along, across = _frame(angle)
     u, v = points @ along, points @ across
-    dv = np.maximum(np.abs(v) - THICK / 2, 0.0)
+    dv = np.maximum(np.abs(v) - thick / 2, 0.0)
     return np.min([np.hypot(np.maximum.reduce([u0 - u, np.zeros_like(u), u - u1]), dv)
                    for u0, u1 in wall_spans(gap)], axis=0)
 
@@ -87,16 +89,18 @@ def joined(navmesh: NavMesh, a: np.ndarray, b: np.ndarray) -> bool:
     return min(ends) >= 0 and label[ends[0]] == label[ends[1]]
 
 
-def measure(angle: float, gap: float, agent: Any, params: RecastParams) -> dict:
+def measure(angle: float, gap: float, thick: float, agent: Any, params: RecastParams) -> dict:
     """One case: whether the gap is open, and the polygons' corners' nearest approach to a jamb near it."""
-    mesh = level(angle, gap)
+    mesh = level(angle, gap, thick)
     navmesh = build_navmesh(mesh.vertices, mesh.faces, agent, params)
     _, across = _frame(angle)
-    front, back = (np.array([k * PROBE * across[0], 0.0, k * PROBE * across[1]]) for k in (-1.0, 1.0))
-    corners = navmesh.vertices[:, [0, 2]]
-    near = corners[np.hypot(corners[:, 0], corners[:, 1]) < 2.0]
+    probe = PROBE + thick / 2
+    front, back = (np.array([k * probe * across[0], 0.0, k * probe * across[1]]) for k in (-1.0, 1.0))
+    on_ground = navmesh.vertices[navmesh.vertices[:, 1] < 1.0]  # not the wall's top, floor too when it is thick
+    corners = on_ground[:, [0, 2]]
+    near = corners[np.hypot(corners[:, 0], corners[:, 1]) < 2.0 + thick / 2]
     return {"open": joined(navmesh, front, back),
-            "clearance": float(jamb_distance(near, angle, gap).min()) if len(near) else math.nan}
+            "clearance": float(jamb_distance(near, angle, gap, thick).min()) if len(near) else math.nan}
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -104,7 +108,8 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--presets", nargs="+", default=["map_analysis", "map_piece"])
     ap.add_argument("--angles", type=float, nargs="+", default=[0.0, 10.0, 20.0, 30.0, 45.0])
     ap.add_argument("--offsets", type=float, nargs="+", default=[-0.2, -0.1, -0.05, 0.0, 0.05])
-    ap.add_argument("--wide-offsets", type=float, nargs="+", default=[0.05, 0.1, 0.15, 0.2, 0.3, 0.4, 0.5, 0.6, 0.8, 1.0])
+    ap.add_argument("--wide-offsets", type=float, nargs="+", default=[0.05, 0.1, 0.15, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.75, 0.8, 0.9, 1.0])
+    ap.add_argument("--thick", type=float, default=0.3, help="the wall's thickness, m: 0.3 a door, 3 a passage")
     ap.add_argument("--erosion", choices=["joined", "recast"], default=None)
     a = ap.parse_args(argv)
     for preset in a.presets:
@@ -121,12 +126,13 @@ def main(argv: list[str] | None = None) -> int:
         diameter = 2 * config.agent.radius
         cases = [(angle, o) for o in a.offsets for angle in a.angles]
         cases += [(45.0, o) for o in a.wide_offsets if (45.0, o) not in cases]
-        print(f"{preset} (agent radius {config.agent.radius:g} m, cell {params.cell_size or config.agent.radius / 2:g} m"
+        print(f"{preset} (agent radius {config.agent.radius:g} m, cell {params.cell_size or config.agent.radius / 2:g} m, "
+              f"wall {a.thick:g} m thick"
               f"{', erosion ' + a.erosion if a.erosion else ''}): gap m, angle deg, open/shut, clearance m")
         wrong, shut_wide = 0, 0
         for angle, offset in cases:
             gap = round(diameter + offset, 3)
-            row = measure(angle, gap, config.agent, params)
+            row = measure(angle, gap, a.thick, config.agent, params)
             state = "open" if row["open"] else "shut"
             wrong += offset < 0 and row["open"]
             shut_wide += offset > 0 and not row["open"]
