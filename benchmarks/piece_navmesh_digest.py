@@ -16,8 +16,10 @@ import argparse
 import hashlib
 import importlib
 import sys
+from typing import Any
 
 import numpy as np
+import trimesh
 
 from piece_quality import SHARED_PIECES
 
@@ -37,8 +39,13 @@ def digest(navmesh: NavMesh) -> str:
     return h.hexdigest()[:12]
 
 
-def row(group: str, name: str, yaw: float, navmesh: NavMesh) -> None:
-    """Print one row of the table."""
+def row(group: str, name: str, yaw: float, mesh: trimesh.Trimesh, agent: Any, params: RecastParams) -> None:
+    """Build ``mesh``'s navmesh and print its row (Recast's error, such as no walkable surface, in its place)."""
+    try:
+        navmesh = build_navmesh(mesh.vertices, mesh.faces, agent, params)
+    except RuntimeError as error:
+        print(f"{group:>6} {name:32s} {yaw:4g} error: {str(error)[:60]}", flush=True)
+        return
     print(f"{group:>6} {name:32s} {yaw:4g} {navmesh.polygon_count:6d} {float(navmesh.areas.sum()):10.3f} "
           f"{digest(navmesh)}", flush=True)
 
@@ -63,13 +70,13 @@ def main(argv: list[str] | None = None) -> int:
         for name, factory in kinds.items():
             for yaw in a.yaws:
                 mesh = (pieces.turned(factory(), yaw) if yaw else factory()).mesh
-                row(group, name, yaw, build_navmesh(mesh.vertices, mesh.faces, config.agent, params))
+                row(group, name, yaw, mesh, config.agent, params)
     if not a.no_pieces:
         for path in sorted(SHARED_PIECES.glob("*.obj")):
             mesh = load_mesh(path)[0]
             for yaw in a.yaws:
                 turned = mesh.copy().apply_transform(pieces.yaw_about_centre(mesh, yaw)) if yaw else mesh
-                row("shared", path.stem, yaw, build_navmesh(turned.vertices, turned.faces, config.agent, params))
+                row("shared", path.stem, yaw, turned, config.agent, params)
     return 0
 
 
