@@ -34,7 +34,9 @@ detail heights Recast read from another storey, rebuilt ("detail",
 :attr:`g2s_plugins.recast.NavMesh.detail_redone_polygons`; all three "-" without a
 navmesh) and, last (after the columns of earlier versions of the table, which keep their places), rho and the
 ceiling within each connected area ("rho in", "ceil in": ranks taken within each area, so the order between areas,
-which an area apart gets right trivially, does not count; ``rho_within``, ``rho_within_ceiling``). ``--presets``
+which an area apart gets right trivially, does not count; ``rho_within``, ``rho_within_ceiling``) and the number of
+connected areas of the run's graph ("areas", :func:`g2s_plugins.evaluation.area_labels`: more than one where the
+walkable floor falls apart, e.g. a corridor the navmesh's erosion cuts). ``--presets``
 takes preset names or config files (a file extending a preset with other parameters; one whose graph builder names
 ``play_points`` is measured over its play space alone, "polys" counting its polygons); ``--levels`` also takes mesh files (any format
 ``g2s run`` reads, Y-up metres), so the same table can be made for levels of
@@ -156,7 +158,7 @@ def main(argv: list[str] | None = None, registry: Registry | None = None) -> Non
     plans = {Path(p).stem: pipeline.plan(parse_config(with_evaluators(load_raw_config(find_config(p)), ["traffic"]), p),
                                          registry, p) for p in args.presets}
     header = (f"{'level':<18} {'preset':<28} {'polys':>7} {'<=3m':>6} {'<=6m':>6} {'<=10m':>6} {'off>5m':>7} "
-              f"{'rho':>6} {'rho_a':>6} {'rho_abw':>7} {'ceiling':>7} {'rho nav':>7} {'ceil nav':>8} {'nav out':>7} {'struct':>7} {'overlap':>7} {'redone':>6} {'detail':>6} {'cpu s':>7} {'total s':>8} {'eval s':>7} {'rho in':>6} {'ceil in':>7}  stages (s)")
+              f"{'rho':>6} {'rho_a':>6} {'rho_abw':>7} {'ceiling':>7} {'rho nav':>7} {'ceil nav':>8} {'nav out':>7} {'struct':>7} {'overlap':>7} {'redone':>6} {'detail':>6} {'cpu s':>7} {'total s':>8} {'eval s':>7} {'rho in':>6} {'ceil in':>7} {'areas':>5}  stages (s)")
     print(header)
     for name, mesh in turned(levels(args.levels, args.seeds), args.yaws):
         for preset, plan in plans.items():
@@ -180,13 +182,14 @@ def main(argv: list[str] | None = None, registry: Registry | None = None) -> Non
                                                  "rho_within_ceiling", "rho_navmesh", "rho_navmesh_ceiling",
                                                  "navmesh_area_left_out"))
             polygons = traffic.surface_arrays(result.graph).n  # the nodes the measures count (the play space's, when named)
+            areas = int(evaluation.area_labels(result.graph).max(initial=-1)) + 1
             navmesh = result.context.navmesh
             overlaps, redone, detail = ("-", "-", "-") if navmesh is None else (
                 len(navmesh.region_overlaps), len(navmesh.repartitioned_tiles), len(navmesh.detail_redone_polygons))
             print(f"{name:<18} {preset:<28} {polygons:>7} {within} {100 * q['traffic_off']:6.1f}% "
                   f"{rho:6.3f} {rho_area:6.3f} {abw:7.3f} {ceiling:7.3f} {rho_nav:7.3f} {ceiling_nav:8.3f} {100 * nav_out:6.1f}% "
                   f"{100 * q['structure_share']:6.1f}% "
-                  f"{overlaps:>7} {redone:>6} {detail:>6} {cpu:7.2f} {sum(seconds.values()):8.2f} {evaluating:7.2f} {rho_in:6.3f} {ceiling_in:7.3f}  {stages}", flush=True)
+                  f"{overlaps:>7} {redone:>6} {detail:>6} {cpu:7.2f} {sum(seconds.values()):8.2f} {evaluating:7.2f} {rho_in:6.3f} {ceiling_in:7.3f} {areas:5d}  {stages}", flush=True)
 
 
 if __name__ == "__main__":
