@@ -171,6 +171,13 @@ def narrowest(kind: str, size: float, chord: float, widths: list[float], params:
     return joined, [f"{r['areas']}/{r['gaps']}" for r in rows]
 
 
+def _number(text: str) -> float | None:
+    try:
+        return float(text)
+    except ValueError:
+        return None
+
+
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--scan", action="store_true")
@@ -185,9 +192,12 @@ def main(argv: list[str] | None = None) -> int:
     a = ap.parse_args(argv)
     params = RecastParams(ledge_filter=a.ledge_filter, cell_size=a.cell_size, erosion=a.erosion)
     if a.case:
-        kind, size, width, chord = a.case[0], float(a.case[1]), float(a.case[2]), float(a.case[3])
-        if kind not in ("ring", "straight"):
-            print(f"--case: KIND must be ring or straight, got {kind!r}", file=sys.stderr)
+        kind, size, width, chord = a.case[0], _number(a.case[1]), _number(a.case[2]), _number(a.case[3])
+        if kind not in ("ring", "straight") or None in (size, width, chord) or width <= 0 or (
+                kind == "ring" and (size <= 0 or chord <= 0)):
+            print(f"--case: KIND must be ring or straight, WIDTH a positive number, a ring's SIZE (radius) and CHORD "
+                  f"positive numbers, a straight corridor's SIZE its angle in degrees; got {' '.join(a.case)}",
+                  file=sys.stderr)
             return 2
         print(measure(kind, size, width, chord, params))
         return 0
