@@ -173,9 +173,10 @@ def narrowest(kind: str, size: float, chord: float, widths: list[float], params:
 
 def _number(text: str) -> float | None:
     try:
-        return float(text)
+        number = float(text)
     except ValueError:
         return None
+    return number if math.isfinite(number) else None
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -927,8 +927,9 @@ void drop_ledge_spans(int walkable_height, int walkable_climb, rcHeightfield& hf
 // = ceil(sqrt(2) * radius / cs - 1) keeps the agent's centre its radius from every straight wall (the cell's square,
 // which the polygons cover, up to half its diagonal nearer: 0.40 m of 0.5 at worst measured). Reads only the spans'
 // state before and after Recast's erosion, so the result does not depend on the order of the spans; a tile's
-// border (walkableRadius + 3 cells) holds every span the search reads while the radius is under 12 cells (a finer
-// grid's search may meet the border, where no floor is, and keep the cell eroded: never nearer a wall). O(spans), and O(reach^4) a candidate.
+// border (walkableRadius + 3 cells) holds every span the search reads while the radius is under 10 cells (a finer
+// grid's search may meet the border, where no floor is, and keep the cell eroded: never nearer a wall, but a tiled
+// build may then differ from a solo one at a seam). O(spans), and O(reach^4) a candidate.
 void join_corners(rcCompactHeightfield& chf, const std::vector<unsigned char>& before, int reach) {
     struct At { int span, x, z; };
     const int w = chf.width;
