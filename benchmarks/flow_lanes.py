@@ -28,7 +28,6 @@ benchmark: nothing here asserts a target.
 from __future__ import annotations
 
 import argparse
-import math
 import os
 import platform
 
@@ -60,13 +59,8 @@ def polygons_within(result, surface: evaluation.NavmeshSurface, reach: float) ->
     rows[kept] = arrays.rows(kept)
     graph = result.graph
     positions = np.array([graph.nodes[node]["pos"] for node in traffic.surface_arrays(graph).nodes], dtype=np.float64)
-    owner = np.full(len(positions), -1, dtype=np.int64)
-    for i, point in enumerate(positions):
-        polygon, nearest = navmesh.nearest_poly(point)
-        if (polygon >= 0 and abs(nearest[1] - point[1]) <= navmesh.climb_tolerance
-                and math.hypot(nearest[0] - point[0], nearest[2] - point[2]) <= reach):
-            owner[i] = rows[polygon]
-    return owner
+    polygons = evaluation.polygons_under(navmesh, positions, reach)
+    return np.where(polygons >= 0, rows[polygons], -1)
 
 
 def main(argv: list[str] | None = None) -> None:

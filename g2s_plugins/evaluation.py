@@ -304,13 +304,14 @@ class NavmeshSurface:
     reach: float
 
 
-def polygons_under(navmesh: NavMesh, points: np.ndarray) -> np.ndarray:
-    """(n,) the polygon each of the (n,3) ``points`` stands on, -1 where none (see the module docs)."""
+def polygons_under(navmesh: NavMesh, points: np.ndarray, reach: float = PLAN_TOLERANCE) -> np.ndarray:
+    """(n,) the polygon each of the (n,3) ``points`` stands on, or comes within ``reach`` metres of in plan, -1 where
+    none (see the module docs)."""
     polygons = np.full(len(points), -1, dtype=np.int64)
     for i, point in enumerate(np.asarray(points, dtype=np.float64)):
         polygon, nearest = navmesh.nearest_poly(point)
         if (polygon >= 0 and abs(nearest[1] - point[1]) <= navmesh.climb_tolerance
-                and math.hypot(nearest[0] - point[0], nearest[2] - point[2]) <= PLAN_TOLERANCE):
+                and math.hypot(nearest[0] - point[0], nearest[2] - point[2]) <= reach):
             polygons[i] = polygon
     return polygons
 
