@@ -14,7 +14,7 @@ builds solo, ``--agent-radius 0`` without erosion (Recast keeps regions under ``
 level lacks against the unturned one, binned by the distance of the lost points to the nearest floor kept (a
 strip along walls vs. a room gone). On the ``building`` sample it also lists the rooms (metadata) whose floor is
 mostly outside the largest area, with the widths of their doors to the corridor (the door floors' extents in the
-mesh). This is a benchmark: nothing here asserts a target.
+mesh), and which doors to the corridor are open (floor within 5 cm of the door's middle) and closed. This is a benchmark: nothing here asserts a target.
 """
 
 from __future__ import annotations
@@ -92,6 +92,26 @@ def building_rooms_apart(level: samples.SampleLevel, nav: NavMesh, label: np.nda
     return out
 
 
+def building_corridor_doors(level: samples.SampleLevel, nav: NavMesh, turn: np.ndarray) -> tuple[list[float], list[float]]:
+    """(widths of the open, of the closed) doors between the building sample's rooms and corridors: a door is open
+    when the navmesh has floor within 5 cm of its middle, in the wall (``turn`` the level's (4, 4) transform)."""
+    meta, mesh = level.metadata, level.mesh
+    t, corridor = meta["wall_thickness"], meta["params"]["corridor_width"]
+    tri = mesh.vertices[mesh.faces]
+    up = mesh.face_normals[:, 1] > 0.99
+    open_, closed = [], []
+    for y in meta["floor_heights"]:
+        for band in ((corridor, corridor + t), (-t, 0.0)):  # the corridor's north and south walls
+            strip = (up & (np.abs(tri[:, :, 1] - y).max(1) < 1e-6) & (tri[:, :, 2].min(1) >= band[0] - 1e-6)
+                     & (tri[:, :, 2].max(1) <= band[1] + 1e-6))
+            for x0, x1 in sorted({(round(a, 4), round(b, 4)) for a, b in zip(tri[strip, :, 0].min(1), tri[strip, :, 0].max(1))}):
+                middle = turn @ np.array([(x0 + x1) / 2, y, (band[0] + band[1]) / 2, 1.0])
+                poly, near = nav.nearest_poly(middle[:3], (0.05, 0.5, 0.05))
+                kept = poly >= 0 and math.dist((near[0], near[2]), (middle[0], middle[2])) < 0.05
+                (open_ if kept else closed).append(x1 - x0)
+    return open_, closed
+
+
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--levels", nargs="+", default=["castle", "building", "dungeon"])
@@ -139,6 +159,9 @@ def main(argv: list[str] | None = None) -> int:
                               f"areas={len(floor):3d} largest={floor.max():9.1f} "
                               f"{seconds:5.2f}s  others: {' '.join(parts)}", flush=True)
                         if name == "building":
+                            opened, shut = building_corridor_doors(level, nav, turn)
+                            print(f"    doors to the corridor: {len(opened)} open (narrowest {min(opened):.3f} m), "
+                                  f"{len(shut)} closed ({', '.join(f'{w:.3f}' for w in sorted(shut))} m)")
                             for room in building_rooms_apart(level, nav, label, int(order[0]), back):
                                 print(f"    room apart: {room}")
                         if a.where:
