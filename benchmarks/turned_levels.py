@@ -3,10 +3,11 @@
 Run: ``.venv/bin/python benchmarks/turned_levels.py [--levels castle building dungeon] [--yaws 0 15 30 45]
 [--erosion joined recast] [--cell-size 0.16666667] [--ledge-filter drops recast off]``
 
-For every sample level (seed 0), yaw (degrees, :func:`g2s_plugins.samples.pieces.yaw_about_centre`) and Recast
+For every sample level and seed (``--seeds``, 0), yaw (degrees, :func:`g2s_plugins.samples.pieces.yaw_about_centre`) and Recast
 setting it builds the navmesh the ``map_analysis`` preset builds (its agent, ``ledge_filter: drops`` unless told)
 and prints the total floor (m², the detail triangles' area), the connected areas (components of the polygons
-joined by portals) and, for every area but the largest, its floor and its centre turned back into the level's
+joined by portals; "under 8² cells" those smaller than ``region_min_size``² cells, which Recast removes
+from a solo build but keeps in a tile where they touch its border) and, for every area but the largest, its floor and its centre turned back into the level's
 own frame, so areas of different yaws can be laid over each other; "outline" is the navmesh's edge with no polygon
 across (m: along walls and drops) and "strip" the floor lost against the first yaw per metre of the first yaw's
 outline (cm: the width of the strip the turn takes along the outline, were all of it taken there). ``--tile-size 0``
@@ -115,6 +116,7 @@ def building_corridor_doors(level: samples.SampleLevel, nav: NavMesh, turn: np.n
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--levels", nargs="+", default=["castle", "building", "dungeon"])
+    ap.add_argument("--seeds", nargs="+", type=int, default=[0])
     ap.add_argument("--yaws", nargs="+", type=float, default=[0.0, 15.0, 30.0, 45.0])
     ap.add_argument("--erosion", nargs="+", default=["joined"], choices=["joined", "recast"])
     ap.add_argument("--ledge-filter", nargs="+", default=["drops"], choices=["recast", "drops", "off"])
@@ -128,8 +130,8 @@ def main(argv: list[str] | None = None) -> int:
     if unknown:
         print(f"--levels: unknown sample {unknown[0]!r}; expected one of {', '.join(samples.SAMPLES)}", file=sys.stderr)
         return 2
-    for name in a.levels:
-        level = samples.load_sample(name)
+    for name, seed in [(n, s) for n in a.levels for s in a.seeds]:
+        level = samples.load_sample(name, seed=seed)
         mesh = level.mesh
         for erosion in a.erosion:
             for ledge in a.ledge_filter:
@@ -144,6 +146,9 @@ def main(argv: list[str] | None = None) -> int:
                         nav = build_navmesh(m.vertices, m.faces, AGENT, params)
                         seconds = time.perf_counter() - start
                         label, floor = areas(nav)
+                        cell_side = cell if cell is not None else AGENT.radius / 2  # the rule of RecastParams
+                        # what Recast removes from a solo build: areas under region_min_size² cells
+                        small = int((floor < (params.region_min_size * cell_side) ** 2).sum())
                         back = np.linalg.inv(turn)
                         order = np.argsort(-floor)
                         parts = []
@@ -154,9 +159,9 @@ def main(argv: list[str] | None = None) -> int:
                         if yaw == a.yaws[0]:
                             first_floor, outline = nav.areas.sum(), boundary_length(nav)
                         strip = 100 * (first_floor - nav.areas.sum()) / outline  # cm of floor lost per metre of outline
-                        print(f"{name:<9} {erosion:<6} {ledge:<6} cell={cell or 'auto'!s:<10} tile={'auto' if tile is None else tile!s:<4} yaw={yaw:>4g} "
+                        print(f"{name:<9} s{seed} {erosion:<6} {ledge:<6} cell={cell or 'auto'!s:<10} tile={'auto' if tile is None else tile!s:<4} yaw={yaw:>4g} "
                               f"floor={nav.areas.sum():9.1f} outline={boundary_length(nav):7.0f} strip={strip:5.1f}cm "
-                              f"areas={len(floor):3d} largest={floor.max():9.1f} "
+                              f"areas={len(floor):3d} (under {params.region_min_size:g}² cells {small:2d}) largest={floor.max():9.1f} "
                               f"{seconds:5.2f}s  others: {' '.join(parts)}", flush=True)
                         if name == "building":
                             opened, shut = building_corridor_doors(level, nav, turn)
