@@ -732,10 +732,11 @@ def _landmark_reach(within: sp.csr_array) -> np.ndarray:
     """(n_c,) each node's distance to the farthest of :data:`CENTRE_LANDMARKS` farthest-point landmarks, m: a lower
     bound of its farthest node along the connected graph ``within``."""
     first = int(np.argmax(csgraph.dijkstra(within, directed=False, indices=0)))
-    distances = [csgraph.dijkstra(within, directed=False, indices=first)]
-    while len(distances) < CENTRE_LANDMARKS:
-        distances.append(csgraph.dijkstra(within, directed=False, indices=int(np.argmax(np.min(distances, axis=0)))))
-    return np.max(distances, axis=0)
+    nearest = reach = csgraph.dijkstra(within, directed=False, indices=first)  # to the nearest / farthest landmark
+    for _ in range(CENTRE_LANDMARKS - 1):
+        from_landmark = csgraph.dijkstra(within, directed=False, indices=int(np.argmax(nearest)))
+        nearest, reach = np.minimum(nearest, from_landmark), np.maximum(reach, from_landmark)
+    return reach
 
 
 def smallest_part(context: RunContext) -> float:
