@@ -120,7 +120,8 @@ def carriage_arch_lodges(arch: float = 3.2) -> SampleLevel:
     facade(-0.3, 0.0, z1 + 0.3, top, None)
     facade(8.0, 8.3, z1 + 0.3, top, (z1 + 1.5, z1 + 2.7))
     for za, zb in ((z0 - 0.3, z0), (z1, z1 + 0.3)):
-        parts += [box(-0.3, 3.5, -SLAB, 3.5, za, zb), box(4.5, 8.3, -SLAB, 3.5, za, zb), box(3.5, 4.5, 2.2, 3.5, za, zb)]
+        parts += [box(-0.3, 3.5, -SLAB, 3.5, za, zb), box(4.5, 8.3, -SLAB, 3.5, za, zb),
+                  box(3.5, 4.5, 2.2, 3.5, za, zb)]
     mid = (z0 + z1) / 2
     return _level("carriage_arch_lodges", parts,
                   [_opening((-0.3, 0.0, mid), _W, arch), _opening((8.3, 0.0, mid), _E, arch)])
@@ -137,7 +138,8 @@ def sitting_wall_step_over(low: float = 0.3, high: float = 1.0, stretch: float =
     s0, s1 = 5.0 - stretch / 2, 5.0 + stretch / 2
     parts = [box(-0.3, 10.3, -SLAB, 0.0, -0.4, 6.3),
              box(-0.3, 0.0, -SLAB, 3.0, -0.4, 6.0), box(10.0, 10.3, -SLAB, 3.0, -0.4, 6.0),
-             box(-0.3, 4.2, -SLAB, 3.0, 6.0, 6.3), box(5.8, 10.3, -SLAB, 3.0, 6.0, 6.3), box(4.2, 5.8, 2.2, 3.0, 6.0, 6.3),
+             box(-0.3, 4.2, -SLAB, 3.0, 6.0, 6.3), box(5.8, 10.3, -SLAB, 3.0, 6.0, 6.3),
+             box(4.2, 5.8, 2.2, 3.0, 6.0, 6.3),
              box(0.0, s0, -SLAB, high, -0.4, 0.0), box(s1, 10.0, -SLAB, high, -0.4, 0.0),
              box(s0, s1, -SLAB, low, -0.4, 0.0)]
     return _level("sitting_wall_step_over", parts,
@@ -230,8 +232,9 @@ def stair_central_handrail(width: float = 3.2, steps: int = 8, riser: float = 0.
                   [_opening((0.0, 0.0, width / 2), _W, width), _opening((end, top, width / 2), _E, width)])
 
 
-KINDS = kinds_by_name(round_lookout_rail_gaps, stair_beside_ramp_approach, turning_circle_dead_end, carriage_arch_lodges,
-                      sitting_wall_step_over, terraced_garden_flights, folded_wall_door, stair_central_handrail)
+KINDS = kinds_by_name(round_lookout_rail_gaps, stair_beside_ramp_approach, turning_circle_dead_end,
+                      carriage_arch_lodges, sitting_wall_step_over, terraced_garden_flights, folded_wall_door,
+                      stair_central_handrail)
 """Kind name -> factory of the thirty-third round."""
 
 
