@@ -1605,17 +1605,19 @@ def _curved_floor_ends(
 
 
 def _between_jambs(
-    kept: list[_Edge], first: np.ndarray, last: np.ndarray, caster: RayCaster, s: _Settings
+    kept: list[_Edge], first: np.ndarray, last: np.ndarray, caster: RayCaster, s: _Settings,
+    height: float | None = None,
 ) -> np.ndarray:
-    """(n,) bool: something stands at both ends of each opening at half the agent's height (a doorway's jambs).
+    """(n,) bool: something stands at both ends of each opening at half the agent's height (a doorway's jambs), or at
+    ``height`` m over the edge.
 
     Probes start one search step inside the opening's ends and inside its edge line, half the agent's
-    height above it, and look along the edge for 2 search steps.
+    height (``height``) above it, and look along the edge for 2 search steps.
     """
     out = np.array([e.outward for e in kept])
     nrm = np.array([e.normal for e in kept])
     along = _unit(np.cross(nrm, out))
-    lift = nrm * (0.5 * s.height) - out * s.delta
+    lift = nrm * (0.5 * s.height if height is None else height) - out * s.delta
     starts = np.concatenate([first + along * s.delta + lift, last - along * s.delta + lift])
     directions = np.concatenate([-along, along])
     reach = caster.first_hits(starts, directions).distance <= 2.0 * s.delta
@@ -2169,6 +2171,11 @@ def detect_openings(
         return Opening(vec3(mid), vec3(heading), width, vec3(p0), vec3(p1), score, reason)
 
     jambs = _between_jambs(kept, p_first, p_last, caster, s)
+    # A step along the piece's edge is a threshold, not a curb, between things at both ends the agent cannot step onto
+    # from its top, however low: a sitting wall 1.0 m high lowered to 0.3 m along a stretch, its ends 0.7 m over the
+    # stretch's top, under the jambs' probes at half the agent's height (docs/entry_exit.md, "A thirty-third round of
+    # piece kinds"); a curb round a platform ends in nothing higher than itself.
+    stepped_jambs = jambs | _between_jambs(kept, p_first, p_last, caster, s, s.climb + s.delta)
     passages, back, ahead, sides_at = _passages(kept, p_first, p_last, ways, caster, s)
     half = 0.5 * np.linalg.norm(p_last - p_first, axis=1)
     # Each end moved in onto the passage's side (a jamb) read deeper than the agent's radius, the floor's end's own
@@ -2189,10 +2196,11 @@ def detect_openings(
     edges: list[_Edge] = []
     framed_of: list[bool] = []
     floor_ends_of: list[np.ndarray] = []  # each opening's ends that are the floor's, not a side of its passage
-    for e, a, b, framed, passage, sides in zip(kept, p_first, p_last, jambs, passages, at_side):
+    for e, a, b, framed, step_framed, passage, sides in zip(kept, p_first, p_last, jambs, stepped_jambs, passages,
+                                                            at_side):
         if min(float(np.linalg.norm(b - a)), passage) < min_width + _SAME_WIDTH:
             continue
-        if ways.stepped[e.samples].mean() > 0.5 and not framed:
+        if ways.stepped[e.samples].mean() > 0.5 and not step_framed:
             continue  # a step along the piece's edge with no jambs: a curb, not a threshold
         d = b - a
         if max_slope is not None and math.atan2(abs(d[1]), math.hypot(d[0], d[2])) > max_slope + 1e-12:
