@@ -1702,8 +1702,8 @@ def main_floor(
     the polygons whose boundary looks out of the piece (step 2's segments); given, a floor the agent
     can leave comes first, roof or not: a floor walled all round holds no opening whatever its size
     (a bridge's deck lies over the closed trough under it, which the roof test alone would keep); and
-    with a floor that leaves, every other one that leaves too, whose lowest polygon lies within the climb of
-    the main one's (a polygon's height is its first corner's, not its lowest) and that is no roof or rises the
+    with a floor that leaves, every other one that leaves too, whose lowest polygon (a polygon's height is its first
+    corner's) or lowest corner lies within the climb of the main one's, either taken, and that is no roof or rises the
     agent's height or more from there: the parts of a corridor cut by a barrier or by a pass narrower than
     Recast keeps, a flight carried over the hall it rises from and cut from it at its foot; not a wall's top,
     a ravine's floor below a bridge or a flat roof at the main floor's level (a tunnel's). ``closed``: (P, 2)
@@ -1772,7 +1772,21 @@ def main_floor(
     np.maximum.at(top, np.broadcast_to(label[:, None], corners.shape)[corners >= 0],
                   np.asarray(navmesh.vertices, dtype=np.float64)[corners[corners >= 0], 1])
     rises = top - lowest >= float(agent.height)
-    kept = leaves & (~roof | rises) & (np.abs(lowest - lowest[best]) <= float(agent.max_climb) + _SAME_HEIGHT)
+    # At its level too where its lowest corner or the main floor's is (either floor's height taken either way; the
+    # comparison by first corners alone kept): Recast keeps a lane of a flight parted from its neighbour by a handrail
+    # as one polygon from its foot to its top, whose first corner may be the top's (a stair module's handrail down its
+    # middle at 22 and 45 degrees: one lane's ends lost, either lane the main floor; docs/entry_exit.md, "A
+    # thirty-third round of piece kinds"). Lowest corners in place of first corners moved an uneven level's floors
+    # (nav_test.obj; "A twenty-first round of piece kinds").
+    bottom = np.full(len(area), np.inf)
+    np.minimum.at(bottom, np.broadcast_to(label[:, None], corners.shape)[corners >= 0],
+                  np.asarray(navmesh.vertices, dtype=np.float64)[corners[corners >= 0], 1])
+    within = float(agent.max_climb) + _SAME_HEIGHT
+    at_level = np.zeros(len(area), dtype=bool)
+    for mine in (lowest, bottom):
+        for main in (lowest[best], bottom[best]):
+            at_level |= np.abs(mine - main) <= within
+    kept = leaves & (~roof | rises) & at_level
     if closed is not None:  # a storey of its own, walled or railed along its sides
         counts = np.zeros((len(area), 2))  # each floor's closed boundary samples, and all of them
         np.add.at(counts, label, np.asarray(closed, dtype=np.float64))
