@@ -11,6 +11,9 @@ rule, the landing's door of the twenty-first round's stair out of a corner doorw
 
 from __future__ import annotations
 
+import math
+
+import numpy as np
 import pytest
 
 from g2s_core import pipeline
@@ -44,3 +47,12 @@ def test_both_lanes_of_a_stair_parted_by_a_handrail_keep_their_ends(yaw: float) 
 
 def test_a_flight_recast_keeps_as_one_polygon_from_its_second_riser_keeps_its_landings_door() -> None:
     round_openings("piece_kinds21", "corner_stair_exit")  # both doorways, 1.6 m each; the landing's missed before
+
+
+@pytest.mark.parametrize("yaw", [0.0, 45.0])
+def test_a_doorway_at_a_walls_fold_spans_its_jambs_and_faces_square_to_them(yaw: float) -> None:
+    level = pieces.turned(benchmark("piece_kinds33").folded_wall_door(), yaw)
+    known = level.openings[1]
+    (door,) = [o for o in _openings(level, "map_piece") if np.linalg.norm(np.subtract(o.position, known.position)) < 1.5]
+    assert door.width == pytest.approx(1.70, abs=0.03)  # 1.64 / 1.62 m before, along one wing's line
+    assert np.dot(door.heading, known.heading) > math.cos(math.radians(2.0))  # 15 degrees off before

@@ -902,10 +902,16 @@ def _ground_at_edge(points: np.ndarray, outward: np.ndarray, caster: RayCaster, 
     return np.where(ground, points[:, 1] + s.climb - hit.distance, points[:, 1])
 
 
+def _edge_tolerance(params: Params, s: _Settings) -> float:
+    """How far off a straight line an edge's points may lie, m: ``edge_tolerance_radii`` agent radii, at least two
+    search steps."""
+    return max(2.0 * s.delta, float(params.edge_tolerance_radii) * s.radius)
+
+
 def _match_edges(segments: list[np.ndarray], ways: _Ways, caster: RayCaster, s: _Settings,
                  params: Params) -> list[_Edge]:
     """Match each segment to the straight (or smoothly curved) edge its samples found; others are dropped."""
-    tolerance = max(2.0 * s.delta, float(params.edge_tolerance_radii) * s.radius)
+    tolerance = _edge_tolerance(params, s)
     cos_match = math.cos(math.radians(float(params.match_angle_deg)))
     cos_turn = math.cos(math.radians(float(params.max_turn_deg)))
 
@@ -2080,18 +2086,29 @@ def _along_line(start: np.ndarray, span: np.ndarray, points: np.ndarray) -> tupl
     return u, np.hypot(off[:, 0], off[:, 2]), off[:, 1]
 
 
-def _union_ends(wide: Opening, ends: np.ndarray) -> tuple[np.ndarray, np.ndarray] | None:
+def _union_ends(wide: Opening, ends: np.ndarray, turned: np.ndarray,
+                tolerance: float) -> tuple[np.ndarray, np.ndarray] | None:
     """The ends of ``wide`` stretched along its own line over ``ends`` (k,3), m (the floor's ends of openings repeating
-    it), each read along it in plan (:func:`_along_line`); None when they lie within it (or there are none)."""
+    it), each read along it in plan (:func:`_along_line`); None when they lie within it (or there are none). An
+    outermost end of a part along another line (``turned``, (k,) bool) lying farther than ``tolerance`` m off the line
+    in plan is the union's end itself: the floor's end turns there (a doorway's floor running out to the apex of a wall
+    folded either side of it: two parts along the wings' faces 30 degrees apart, joined along one of them, faced 15
+    degrees off; docs/entry_exit.md, "A thirty-third round of piece kinds")."""
     p0, p1 = np.asarray(wide.p0, dtype=np.float64), np.asarray(wide.p1, dtype=np.float64)
     ends = np.asarray(ends, dtype=np.float64).reshape(-1, 3)
     if not len(ends):
         return None
-    u = _along_line(p0, p1 - p0, ends)[0]
+    u, off, _ = _along_line(p0, p1 - p0, ends)
     lo, hi = min(0.0, float(u.min())), max(1.0, float(u.max()))
     if lo > -1e-9 / wide.width and hi < 1.0 + 1e-9 / wide.width:
         return None
-    return p0 + (p1 - p0) * lo, p0 + (p1 - p0) * hi
+    a, b = p0 + (p1 - p0) * lo, p0 + (p1 - p0) * hi
+    first, last = int(np.argmin(u)), int(np.argmax(u))
+    if lo < 0.0 and turned[first] and off[first] > tolerance:
+        a = ends[first]
+    if hi > 1.0 and turned[last] and off[last] > tolerance:
+        b = ends[last]
+    return a, b
 
 
 def detect_openings(
@@ -2146,6 +2163,10 @@ def detect_openings(
     corners = np.asarray(mesh.triangles, dtype=np.float64)
     frame = piece_frame(mesh)
     min_width = float(params.min_width_radii) * s.radius
+    tolerance = _edge_tolerance(params, s)
+    # Parts joined into one opening face within max_turn_deg of it; those more than half that apart run along other
+    # lines (a fold's two wings, 30 degrees apart), nearer ones are the same edge found again (bevelled tiles' ends, 6)
+    cos_fold = math.cos(math.radians(0.5 * float(params.max_turn_deg)))
     max_gap = None if params.extent_heights is None else float(params.extent_heights) * s.height
     max_slope = None if params.max_slope_deg is None else math.radians(float(params.max_slope_deg))
 
@@ -2240,7 +2261,11 @@ def detect_openings(
             break
         for i in sorted(set(into[into >= 0].tolist())):
             parts = np.flatnonzero(into == i)
-            ends = _union_ends(found[i][0], np.concatenate([floor_ends_of[j] for j in parts]))
+            # each part's floor ends, and whether the part runs along another line than the wider one
+            turned = [np.full(len(floor_ends_of[j]), float(np.dot(found[i][0].heading, found[j][0].heading)) < cos_fold)
+                      for j in parts]
+            ends = _union_ends(found[i][0], np.concatenate([floor_ends_of[j] for j in parts]), np.concatenate(turned),
+                               tolerance)
             union = None if ends is None else scored(edges[i], *ends, framed_of[i])
             if union is not None:
                 polys = tuple(sorted(set(found[i][1]).union(*(found[j][1] for j in parts))))
