@@ -44,10 +44,19 @@ def test_an_opening_found_again_widens_the_one_it_repeats() -> None:
     above = Opening((1.4, 0.5, 0.0), (0.0, 0.0, -1.0), 1.2, (0.8, 0.5, 0.0), (2.0, 0.5, 0.0))
     assert [list(entry_exit._repeated([wide, o], 0.4, 30.0, 0.4)) for o in (up, rising, above)] == [
         [-1, 0], [-1, 0], [-1, -1]]
-    a, b = entry_exit._union_ends(wide, np.array([part.p0, part.p1]))
+    along = np.zeros(2, dtype=bool)  # parts along the wide one's line
+    a, b = entry_exit._union_ends(wide, np.array([part.p0, part.p1]), along, 0.1)
     assert a == pytest.approx([0.0, 0.0, 0.0]) and b == pytest.approx([2.0, 0.0, 0.0])
-    assert entry_exit._union_ends(wide, np.array([inner.p0, inner.p1])) is None  # within it: the wider one stands
-    assert entry_exit._union_ends(wide, np.zeros((0, 3))) is None  # no floor's end to stretch it over
+    assert entry_exit._union_ends(wide, np.array([inner.p0, inner.p1]), along, 0.1) is None  # within it: it stands
+    assert entry_exit._union_ends(wide, np.zeros((0, 3)), along[:0], 0.1) is None  # no floor's end to stretch it over
+    # A part along another line (a floor's end turning at a fold): its outermost end, 0.3 m off the wide one's line,
+    # is the union's own end, not carried along that line; as near as the tolerance, or the part along the line, it is.
+    folded = np.array([[1.2, 0.0, 0.0], [1.9, 0.0, -0.3]])
+    a, b = entry_exit._union_ends(wide, folded, ~along, 0.1)
+    assert a == pytest.approx([0.0, 0.0, 0.0]) and b == pytest.approx([1.9, 0.0, -0.3])
+    for turned, tolerance in ((along, 0.1), (~along, 0.35)):
+        a, b = entry_exit._union_ends(wide, folded, turned, tolerance)
+        assert b == pytest.approx([1.9, 0.0, 0.0])
 
 
 def test_an_opening_found_again_on_a_sloped_line_is_read_in_plan_and_height() -> None:
@@ -65,7 +74,7 @@ def test_an_opening_found_again_on_a_sloped_line_is_read_in_plan_and_height() ->
     within, higher = part(1.2, 2.6, 0.35), part(1.2, 2.6, 0.5)
     assert [list(entry_exit._repeated([wide, o], 0.4, 30.0, 0.4)) for o in (within, higher)] == [[-1, 0], [-1, -1]]
     # The union runs along the wide one's line to the part's end in plan, at the line's height there.
-    a, b = entry_exit._union_ends(wide, np.array([within.p0, within.p1]))
+    a, b = entry_exit._union_ends(wide, np.array([within.p0, within.p1]), np.zeros(2, dtype=bool), 0.1)
     assert a == pytest.approx([0.0, 0.0, 0.0]) and b == pytest.approx([2.6, 2.6 * rise, 0.0])
 
 
