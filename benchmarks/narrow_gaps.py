@@ -14,7 +14,8 @@ presets' agent of radius 0.5 m: 0.8, 0.9, 0.95, 1.0, 1.05 m), each at ``--angles
 ``--wide-offsets`` (default +0.05 to +1.0; 1.05-2.0 m with the presets' agent) at 45 degrees alone.
 
 Run: ``.venv/bin/python benchmarks/narrow_gaps.py [--presets map_analysis map_piece] [--angles 0 10 20 30 45]
-[--offsets -0.2 -0.1 -0.05 0 0.05] [--wide-offsets 0.05 0.1 0.2] [--thick 0.3] [--erosion joined|recast]``
+[--offsets -0.2 -0.1 -0.05 0 0.05] [--wide-offsets 0.05 0.1 0.2] [--thick 0.3] [--erosion joined|recast]
+[--shifts 0 0.05 0.1 0.15 0.2]`` (``--shifts``: the wall moved by (s, 0.6 s) m on the grid, each s a case of its own)
 (``--erosion`` only where the installed code has ``graph.params.erosion``).
 """
 
@@ -58,22 +59,24 @@ def wall_spans(gap: float) -> list[tuple[float, float]]:
     return [(-reach, -gap / 2), (gap / 2, reach)]
 
 
-def level(angle: float, gap: float, thick: float) -> trimesh.Trimesh:
-    """The ground and the wall ``thick`` m thick with its gap, turned ``angle`` degrees."""
+def level(angle: float, gap: float, thick: float, shift: tuple[float, float] = (0.0, 0.0)) -> trimesh.Trimesh:
+    """The ground and the wall ``thick`` m thick with its gap, turned ``angle`` degrees, the gap's middle at
+    ``shift`` (x, z; the ground stays put, so the shift moves the wall on Recast's grid)."""
     along, across = _frame(angle)
     s = _Solids()
     for u0, u1 in wall_spans(gap):
-        plan = [u * along + v * across for u in (u0, u1) for v in (-thick / 2, thick / 2)]
+        plan = [np.array(shift) + u * along + v * across for u in (u0, u1) for v in (-thick / 2, thick / 2)]
         s.prism(np.array([plan[0], plan[2], plan[3], plan[1]]), 0.0, HIGH)
     s.box(-GROUND, GROUND, -0.5, 0.0, -GROUND, GROUND)
     return s.mesh()
 
 
-def jamb_distance(points: np.ndarray, angle: float, gap: float, thick: float) -> np.ndarray:
+def jamb_distance(points: np.ndarray, angle: float, gap: float, thick: float,
+                  shift: tuple[float, float] = (0.0, 0.0)) -> np.ndarray:
     """(N,) the plan distance from ``points`` ((N,2) x, z) to the nearer wall piece (a rectangle ``thick`` m
-    across), m."""
+    across, the gap's middle at ``shift``), m."""
     along, across = _frame(angle)
-    u, v = points @ along, points @ across
+    u, v = (points - np.array(shift)) @ along, (points - np.array(shift)) @ across
     dv = np.maximum(np.abs(v) - thick / 2, 0.0)
     return np.min([np.hypot(np.maximum.reduce([u0 - u, np.zeros_like(u), u - u1]), dv)
                    for u0, u1 in wall_spans(gap)], axis=0)
@@ -89,18 +92,19 @@ def joined(navmesh: NavMesh, a: np.ndarray, b: np.ndarray) -> bool:
     return min(ends) >= 0 and label[ends[0]] == label[ends[1]]
 
 
-def measure(angle: float, gap: float, thick: float, agent: Any, params: RecastParams) -> dict:
+def measure(angle: float, gap: float, thick: float, agent: Any, params: RecastParams,
+            shift: tuple[float, float] = (0.0, 0.0)) -> dict:
     """One case: whether the gap is open, and the polygons' corners' nearest approach to a jamb near it."""
-    mesh = level(angle, gap, thick)
+    mesh = level(angle, gap, thick, shift)
     navmesh = build_navmesh(mesh.vertices, mesh.faces, agent, params)
     _, across = _frame(angle)
     probe = PROBE + thick / 2
-    front, back = (np.array([k * probe * across[0], 0.0, k * probe * across[1]]) for k in (-1.0, 1.0))
+    front, back = (np.array([shift[0] + k * probe * across[0], 0.0, shift[1] + k * probe * across[1]]) for k in (-1.0, 1.0))
     on_ground = navmesh.vertices[navmesh.vertices[:, 1] < 1.0]  # not the wall's top, floor too when it is thick
     corners = on_ground[:, [0, 2]]
-    near = corners[np.hypot(corners[:, 0], corners[:, 1]) < 2.0 + thick / 2]
+    near = corners[np.hypot(corners[:, 0] - shift[0], corners[:, 1] - shift[1]) < 2.0 + thick / 2]
     return {"open": joined(navmesh, front, back),
-            "clearance": float(jamb_distance(near, angle, gap, thick).min()) if len(near) else math.nan}
+            "clearance": float(jamb_distance(near, angle, gap, thick, shift).min()) if len(near) else math.nan}
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -111,6 +115,8 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--wide-offsets", type=float, nargs="+", default=[0.05, 0.1, 0.15, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.75, 0.8, 0.9, 1.0])
     ap.add_argument("--thick", type=float, default=0.3, help="the wall's thickness, m: 0.3 a door, 3 a passage")
     ap.add_argument("--erosion", choices=["joined", "recast"], default=None)
+    ap.add_argument("--shifts", type=float, nargs="+", default=[0.0],
+                    help="move the wall by (s, 0.6 s) m for each s: other places of its jambs on the grid")
     a = ap.parse_args(argv)
     for preset in a.presets:
         path = PRESETS_DIR / f"{preset}.yaml"
@@ -126,21 +132,23 @@ def main(argv: list[str] | None = None) -> int:
         diameter = 2 * config.agent.radius
         cases = [(angle, o) for o in a.offsets for angle in a.angles]
         cases += [(45.0, o) for o in a.wide_offsets if (45.0, o) not in cases]
+        cases = [(angle, o, (s, 0.6 * s)) for angle, o in cases for s in a.shifts]
         print(f"{preset} (agent radius {config.agent.radius:g} m, cell {params.cell_size or config.agent.radius / 2:g} m, "
               f"wall {a.thick:g} m thick"
               f"{', erosion ' + a.erosion if a.erosion else ''}): gap m, angle deg, open/shut, clearance m")
         wrong, shut_wide = 0, 0
-        for angle, offset in cases:
+        for angle, offset, shift in cases:
             gap = round(diameter + offset, 3)
-            row = measure(angle, gap, a.thick, config.agent, params)
+            row = measure(angle, gap, a.thick, config.agent, params, shift)
             state = "open" if row["open"] else "shut"
             wrong += offset < 0 and row["open"]
             shut_wide += offset > 0 and not row["open"]
             flag = "  WRONG: narrower than the agent" if offset < 0 and row["open"] else ""
-            print(f"  {gap:5.3f} {angle:4g} {state} {row['clearance']:.3f}{flag}", flush=True)
-        narrow = sum(o < 0 for _, o in cases)
+            moved = f" shift {shift[0]:g},{shift[1]:g}" if len(a.shifts) > 1 else ""
+            print(f"  {gap:5.3f} {angle:4g}{moved} {state} {row['clearance']:.3f}{flag}", flush=True)
+        narrow = sum(o < 0 for _, o, _ in cases)
         print(f"  {preset}: {wrong} of {narrow} gaps narrower than the agent open; "
-              f"{shut_wide} of {sum(o > 0 for _, o in cases)} wider ones shut")
+              f"{shut_wide} of {sum(o > 0 for _, o, _ in cases)} wider ones shut")
     return 0
 
 

@@ -173,7 +173,7 @@ struct Settings {
     LedgeFilter ledge_filter;
     Partition partition;
     bool recast_head_room;  // the low-height filter as Recast ships it: one cell more head room than the agent's
-    bool join_corners;      // put back the eroded spans that join two kept ones touching only at a corner
+    bool join_corners;      // put back the eroded spans that join two kept ones touching only at a corner, or across a door
 };
 
 // Limits of Recast 1.5.1's voxel settings: compact spans store their height in
@@ -913,6 +913,326 @@ void drop_ledge_spans(int walkable_height, int walkable_climb, rcHeightfield& hf
             }
 }
 
+// The triangles that stand in an agent's way on a floor: those with a part between the floor's top plus the agent's
+// climb and its top plus its height, clipped to that band and seen from above (x, z). Binned in squares of BIN cells
+// of the compact heightfield's grid, so a question near a span reads only the triangles near it.
+class PlanObstacles {
+public:
+    static constexpr int BIN = 8;
+    PlanObstacles(const rcCompactHeightfield& chf, const float* verts, const int* tris, int ntris)
+        : chf_(chf), verts_(verts), tris_(tris), bw_((chf.width + BIN - 1) / BIN), bh_((chf.height + BIN - 1) / BIN),
+          start_(static_cast<size_t>(bw_) * bh_ + 1, 0) {
+        auto bins_of = [&](int t, auto&& each) {
+            float lo[2] = {FLT_MAX, FLT_MAX}, hi[2] = {-FLT_MAX, -FLT_MAX};
+            for (int k = 0; k < 3; ++k)
+                for (int a = 0; a < 2; ++a) {
+                    const float v = verts_[tris_[t * 3 + k] * 3 + 2 * a];
+                    lo[a] = std::min(lo[a], v);
+                    hi[a] = std::max(hi[a], v);
+                }
+            const int x0 = std::max(0, bin(lo[0], 0)), x1 = std::min(bw_ - 1, bin(hi[0], 0));
+            const int z0 = std::max(0, bin(lo[1], 2)), z1 = std::min(bh_ - 1, bin(hi[1], 2));
+            for (int bz = z0; bz <= z1; ++bz)
+                for (int bx = x0; bx <= x1; ++bx) each(bx + bz * bw_);
+        };
+        for (int t = 0; t < ntris; ++t) bins_of(t, [&](int b) { ++start_[b + 1]; });
+        for (size_t b = 1; b < start_.size(); ++b) start_[b] += start_[b - 1];
+        members_.resize(start_.back());
+        std::vector<size_t> fill(start_.begin(), start_.end() - 1);
+        for (int t = 0; t < ntris; ++t) bins_of(t, [&](int b) { members_[fill[b]++] = t; });
+    }
+
+    // Whether no obstacle of a floor at height y comes within `rho` of the plan point (px, pz).
+    bool clear_of(double px, double pz, double y, double climb, double height, double rho) const {
+        bool clear = true;
+        each_near(px - rho, px + rho, pz - rho, pz + rho, y + climb, y + height, [&](const Poly& p) {
+            if (clear && distance(p, px, pz) < rho) clear = false;
+        });
+        return clear;
+    }
+
+    // Whether an obstacle of a floor at height y overlaps the plan square [x0, x1] x [z0, z1] (more than touches it).
+    bool in_square(double x0, double x1, double z0, double z1, double y, double climb, double height) const {
+        bool found = false;
+        each_near(x0, x1, z0, z1, y + climb, y + height, [&](const Poly& p) {
+            if (!found && overlaps(p, x0, x1, z0, z1)) found = true;
+        });
+        return found;
+    }
+
+private:
+    struct Poly { double x[5], z[5]; int n; };
+    int bin(float v, int axis) const { return static_cast<int>(std::floor((v - chf_.bmin[axis]) / (chf_.cs * BIN))); }
+
+    // Calls f with the plan shape of each triangle near [x0, x1] x [z0, z1] clipped to lo < y < hi (a triangle in two
+    // bins may come twice).
+    template <class F> void each_near(double x0, double x1, double z0, double z1, double lo, double hi, F&& f) const {
+        const int bx0 = std::max(0, bin(static_cast<float>(x0), 0)), bx1 = std::min(bw_ - 1, bin(static_cast<float>(x1), 0));
+        const int bz0 = std::max(0, bin(static_cast<float>(z0), 2)), bz1 = std::min(bh_ - 1, bin(static_cast<float>(z1), 2));
+        for (int bz = bz0; bz <= bz1; ++bz)
+            for (int bx = bx0; bx <= bx1; ++bx)
+                for (size_t k = start_[bx + bz * bw_]; k < start_[bx + bz * bw_ + 1]; ++k) {
+                    Poly p;
+                    if (clip(members_[k], lo, hi, p)) f(p);
+                }
+    }
+
+    // The plan shape of triangle t's part with lo < y < hi; false when it has none.
+    bool clip(int t, double lo, double hi, Poly& out) const {
+        double a[5][3], b[5][3];
+        int n = 3;
+        for (int k = 0; k < 3; ++k)
+            for (int c = 0; c < 3; ++c) a[k][c] = verts_[tris_[t * 3 + k] * 3 + c];
+        auto cut = [&](double (*in)[3], int m, double (*res)[3], double level, double sign) {
+            int r = 0;
+            for (int k = 0; k < m; ++k) {
+                const double* p = in[k];
+                const double* q = in[(k + 1) % m];
+                const double dp = sign * (p[1] - level), dq = sign * (q[1] - level);
+                if (dp >= 0) std::copy(p, p + 3, res[r++]);
+                if ((dp >= 0) != (dq >= 0)) {
+                    const double s = dp / (dp - dq);
+                    for (int c = 0; c < 3; ++c) res[r][c] = p[c] + s * (q[c] - p[c]);
+                    ++r;
+                }
+            }
+            return r;
+        };
+        double ymin = std::min({a[0][1], a[1][1], a[2][1]}), ymax = std::max({a[0][1], a[1][1], a[2][1]});
+        if (ymax <= lo || ymin >= hi) return false;
+        n = cut(a, n, b, lo, 1.0);
+        if (n < 2) return false;
+        n = cut(b, n, a, hi, -1.0);
+        if (n < 2) return false;
+        out.n = std::min(n, 5);
+        for (int k = 0; k < out.n; ++k) { out.x[k] = a[k][0]; out.z[k] = a[k][2]; }
+        return true;
+    }
+
+    // Plan distance from (px, pz) to a convex shape (a segment when its corners lie on a line); 0 inside.
+    static double distance(const Poly& p, double px, double pz) {
+        double best = DBL_MAX, area = 0.0;
+        bool pos = false, neg = false;
+        for (int k = 0; k < p.n; ++k) {
+            const int l = (k + 1) % p.n;
+            const double ex = p.x[l] - p.x[k], ez = p.z[l] - p.z[k], len2 = ex * ex + ez * ez;
+            const double s = len2 > 0 ? std::clamp(((px - p.x[k]) * ex + (pz - p.z[k]) * ez) / len2, 0.0, 1.0) : 0.0;
+            best = std::min(best, std::hypot(px - p.x[k] - s * ex, pz - p.z[k] - s * ez));
+            const double cross = ex * (pz - p.z[k]) - ez * (px - p.x[k]);
+            pos = pos || cross > 0;
+            neg = neg || cross < 0;
+            area += p.x[k] * p.z[l] - p.x[l] * p.z[k];
+        }
+        return std::abs(area) > 1e-12 && !(pos && neg) ? 0.0 : best;
+    }
+
+    // Whether a convex shape and the square overlap by more than a touch: no separating axis among the square's
+    // two and the shape's edge normals.
+    static bool overlaps(const Poly& p, double x0, double x1, double z0, double z1) {
+        constexpr double eps = 1e-6;
+        auto apart = [&](double nx, double nz) {
+            double plo = DBL_MAX, phi = -DBL_MAX, slo = DBL_MAX, shi = -DBL_MAX;
+            for (int k = 0; k < p.n; ++k) {
+                const double v = nx * p.x[k] + nz * p.z[k];
+                plo = std::min(plo, v);
+                phi = std::max(phi, v);
+            }
+            for (double x : {x0, x1})
+                for (double z : {z0, z1}) {
+                    const double v = nx * x + nz * z;
+                    slo = std::min(slo, v);
+                    shi = std::max(shi, v);
+                }
+            const double len = std::hypot(nx, nz);
+            return phi <= slo + eps * len || shi <= plo + eps * len;
+        };
+        if (apart(1, 0) || apart(0, 1)) return false;
+        for (int k = 0; k < p.n; ++k) {
+            const int l = (k + 1) % p.n;
+            const double ex = p.x[l] - p.x[k], ez = p.z[l] - p.z[k];
+            if ((ex != 0 || ez != 0) && apart(-ez, ex)) return false;
+        }
+        return true;
+    }
+
+    const rcCompactHeightfield& chf_;
+    const float* verts_;
+    const int* tris_;
+    int bw_, bh_;
+    std::vector<size_t> start_;
+    std::vector<int> members_;
+};
+
+// Where the floor a door or a gap leaves an agent is a cell or two wide and at an angle to the grid, Recast's erosion
+// closes it although the agent passes: the cells a jamb's face crosses hold no floor, so the erosion counts the
+// radius from up to a cell's diagonal nearer than the jamb itself (docs/navmesh.md, "Doors at an angle to the
+// grid"). No rule on the cells alone tells such a cell from one a jamb really stands in (a distance to the cells
+// without floor, however exact, closed all 19 doors traced there), so this reads the level's triangles: a floor span
+// Recast eroded is clear when no obstacle (a triangle's part between its floor plus the agent's climb and its floor
+// plus its height, seen from above) comes within rho = sqrt(radius^2 + (cs / 2)^2) of its centre, and every cell
+// without floor within rho of its centre, along its floor's links, holds such an obstacle (a drop's edge is none:
+// there Recast's count stands). Any point of a side step between two clear spans then stands at least the radius
+// from every obstacle (the worst case, a jamb's corner half-way along the step), and so does a span Recast kept, so
+// no gap narrower than the agent opens. A run of clear spans is put back when it joins two spans Recast kept along
+// x, z or a diagonal (each diagonal step through a clear or kept side neighbour), at most `reach` spans long, and
+// those two are not already joined by kept floor within a cell of the box round them: the floor across a door or a
+// break in a corridor, not the strip along a wall nor the corner of a corridor's mouth. Reads only the state before
+// the erosion and after Recast's, so the order of the spans does not count; spans within walkableRadius + 1 cells
+// of the grid's edge, where a tile's erosion differs from a solo build's, are never clear. Appends to `back`.
+// O(spans): a pass over the eroded floor, 8 lookups each; the triangles are read only for a run's spans.
+void join_clear_runs(const rcCompactHeightfield& chf, const std::vector<unsigned char>& before, const float* verts,
+                     const int* tris, int ntris, double radius, double climb, double height, int walkable_radius,
+                     int reach, std::vector<int>& back) {
+    struct At { int span, x, z; };
+    const int w = chf.width;
+    const double cs = chf.cs, rho = std::sqrt(radius * radius + cs * cs / 4.0);
+    const int margin = walkable_radius + 1;
+    auto across = [&](const At& a, int dir) {  // the span across side `dir` of a, or span -1
+        const int x = a.x + rcGetDirOffsetX(dir), z = a.z + rcGetDirOffsetY(dir);
+        if (a.span < 0 || rcGetCon(chf.spans[a.span], dir) == RC_NOT_CONNECTED) return At{-1, x, z};
+        return At{static_cast<int>(chf.cells[x + z * w].index) + rcGetCon(chf.spans[a.span], dir), x, z};
+    };
+    auto kept = [&](const At& a) { return a.span >= 0 && chf.areas[a.span] != RC_NULL_AREA; };
+    auto eroded = [&](const At& a) { return a.span >= 0 && before[a.span] != RC_NULL_AREA && chf.areas[a.span] == RC_NULL_AREA; };
+    auto was_floor = [&](const At& a) { return a.span >= 0 && before[a.span] != RC_NULL_AREA; };
+
+    std::optional<PlanObstacles> obstacles;  // built at the first span asked about
+    std::vector<signed char> clear(static_cast<size_t>(chf.spanCount), -1);  // -1: not asked yet
+    std::vector<At> seen;
+    auto is_clear = [&](const At& m) {
+        if (clear[m.span] >= 0) return clear[m.span] == 1;
+        bool ok = m.x >= margin && m.z >= margin && m.x < w - margin && m.z < chf.height - margin;
+        const double px = chf.bmin[0] + (m.x + 0.5) * cs, pz = chf.bmin[2] + (m.z + 0.5) * cs;
+        const double y = chf.bmin[1] + chf.spans[m.span].y * static_cast<double>(chf.ch);
+        auto near = [&](int x, int z) {  // whether cell (x, z)'s square comes within rho of the span's centre
+            const double dx = std::max(std::abs(x - m.x) - 0.5, 0.0), dz = std::max(std::abs(z - m.z) - 0.5, 0.0);
+            return std::hypot(dx, dz) * cs < rho;
+        };
+        if (ok) {
+            if (!obstacles) obstacles.emplace(chf, verts, tris, ntris);
+            ok = obstacles->clear_of(px, pz, y, climb, height, rho);
+        }
+        seen.assign(1, m);  // the floor within rho, along its links: every cell without floor beside it needs an obstacle
+        for (size_t q = 0; ok && q < seen.size(); ++q)
+            for (int dir = 0; ok && dir < 4; ++dir) {
+                const At b = across(seen[q], dir);
+                if (!near(b.x, b.z)) continue;
+                if (!was_floor(b)) {
+                    const double x0 = chf.bmin[0] + b.x * cs, z0 = chf.bmin[2] + b.z * cs;
+                    ok = obstacles->in_square(x0, x0 + cs, z0, z0 + cs, y, climb, height);
+                } else if (std::none_of(seen.begin(), seen.end(), [&](const At& c) { return c.span == b.span; })) {
+                    seen.push_back(b);
+                }
+            }
+        clear[m.span] = ok ? 1 : 0;
+        return ok;
+    };
+
+    // Whether kept spans a and b are joined by kept floor within a cell of the box round them.
+    std::vector<char> visited(static_cast<size_t>(chf.spanCount), 0);
+    std::vector<At> queue;
+    auto joined_nearby = [&](const At& a, const At& b) {
+        const int x0 = std::min(a.x, b.x) - 1, x1 = std::max(a.x, b.x) + 1;
+        const int z0 = std::min(a.z, b.z) - 1, z1 = std::max(a.z, b.z) + 1;
+        queue.assign(1, a);
+        visited[a.span] = 1;
+        bool found = false;
+        for (size_t q = 0; q < queue.size() && !found; ++q)
+            for (int dir = 0; dir < 4; ++dir) {
+                const At c = across(queue[q], dir);
+                if (!kept(c) || visited[c.span] || c.x < x0 || c.x > x1 || c.z < z0 || c.z > z1) continue;
+                found = found || c.span == b.span;
+                visited[c.span] = 1;
+                queue.push_back(c);
+            }
+        for (const At& c : queue) visited[c.span] = 0;
+        return found;
+    };
+
+    // A run from kept span `start` along x (dir 2), z (dir 1) or a diagonal (x then z, x then -z; a diagonal step
+    // passes through a side neighbour, either one, both meeting on one span): first on the cells' state alone (spans
+    // eroded from floor, up to `reach` of them, then a kept one), then the clearance of its spans, the triangles read
+    // only there (along a wall a run meets the wall, not a kept span).
+    constexpr std::array<std::array<int, 2>, 4> STEPS{{{2, -1}, {1, -1}, {2, 1}, {2, 3}}};
+    std::vector<unsigned char> walked(static_cast<size_t>(chf.spanCount), 0);  // a bit per step already walked
+    std::vector<At> run, sides;  // the run's spans; the diagonal steps' side neighbours that are not kept
+    std::vector<size_t> step_sides;  // per diagonal step: where its sides start in `sides`
+    auto walk = [&](const At& start, int which) {
+        if (!kept(start) || (walked[start.span] >> which & 1)) return;
+        walked[start.span] |= static_cast<unsigned char>(1 << which);
+        const std::array<int, 2>& step = STEPS[which];
+        run.clear();
+        sides.clear();
+        step_sides.clear();
+        At at = start, end{-1, 0, 0};
+        for (int k = 0; k <= reach; ++k) {
+            At next{-1, 0, 0};
+            if (step[1] < 0) {
+                next = across(at, step[0]);
+            } else {
+                step_sides.push_back(sides.size());
+                bool kept_side = false, mismatch = false;
+                for (int order = 0; order < 2; ++order) {
+                    const At side = across(at, order ? step[1] : step[0]);
+                    const At corner = across(side, order ? step[0] : step[1]);
+                    if (corner.span < 0 || !(kept(side) || eroded(side))) continue;
+                    mismatch = mismatch || (next.span >= 0 && corner.span != next.span);
+                    next = corner;
+                    if (kept(side)) kept_side = true; else sides.push_back(side);
+                }
+                if (mismatch) break;
+                if (kept_side) sides.resize(step_sides.back());  // a kept side joins this step already
+            }
+            if (next.span < 0) break;
+            if (kept(next)) {
+                if (!run.empty() || !sides.empty()) end = next;
+                break;
+            }
+            if (!eroded(next)) break;
+            run.push_back(next);
+            at = next;
+        }
+        if (end.span < 0 || joined_nearby(start, end)) return;
+        bool ok = std::all_of(run.begin(), run.end(), is_clear);
+        for (size_t k = 0; ok && k < step_sides.size(); ++k) {  // each diagonal step needs a clear side, or a kept one
+            const size_t from = step_sides[k], to = k + 1 < step_sides.size() ? step_sides[k + 1] : sides.size();
+            bool any = from == to;
+            for (size_t q = from; q < to; ++q) any = is_clear(sides[q]) || any;
+            ok = any;
+        }
+        if (!ok) return;
+        for (const At& m : run) back.push_back(m.span);
+        for (const At& m : sides)
+            if (is_clear(m)) back.push_back(m.span);
+    };
+    // A run's first step enters eroded floor: so walk from the kept spans before each eroded span, each run from its
+    // end of lower x (or z), over a side (dir 0: -x, 3: -z, 1: +z) or a corner.
+    auto corner = [&](const At& a, int d1, int d2) {  // the span diagonal from a through a floor side, or span -1
+        for (const At& side : {across(a, d1), across(a, d2)}) {
+            const At c = across(side, side.x == a.x ? d1 : d2);
+            if (was_floor(side) && c.span >= 0) return c;
+        }
+        return At{-1, 0, 0};
+    };
+    for (int z = 0; z < chf.height; ++z)
+        for (int x = 0; x < w; ++x) {
+            const rcCompactCell& cell = chf.cells[x + z * w];
+            for (int i = static_cast<int>(cell.index), e = static_cast<int>(cell.index + cell.count); i < e; ++i) {
+                const At here{i, x, z};
+                if (!eroded(here)) continue;
+                const At minus_x = across(here, 0), minus_z = across(here, 3), plus_z = across(here, 1);
+                walk(minus_x, 0);
+                walk(minus_z, 1);
+                walk(corner(here, 0, 3), 2);  // x then z: from the corner at -x, -z
+                walk(minus_x, 2);             // here its +x side
+                walk(minus_z, 2);             // here its +z side
+                walk(corner(here, 0, 1), 3);  // x then -z: from the corner at -x, +z
+                walk(minus_x, 3);             // here its +x side
+                walk(plus_z, 3);              // here its -z side
+            }
+        }
+}
+
 // Recast's erosion (rcErodeWalkableArea, Recast Navigation 1.5.1) keeps a span when its chamfer distance (2 a side
 // step, 3 a corner step) to the nearest span at the floor's edge is at least twice walkableRadius. Counted from the
 // edge span's centre, which lies up to a cell inside the floor Recast rasterised, that keeps the agent 0.125-0.375 m
@@ -929,8 +1249,10 @@ void drop_ledge_spans(int walkable_height, int walkable_climb, rcHeightfield& hf
 // state before and after Recast's erosion, so the result does not depend on the order of the spans; a tile's
 // border (walkableRadius + 3 cells) holds every span the search reads while the radius is under 10 cells (a finer
 // grid's search may meet the border, where no floor is, and keep the cell eroded: never nearer a wall, but a tiled
-// build may then differ from a solo one at a seam). O(spans), and O(reach^4) a candidate.
-void join_corners(rcCompactHeightfield& chf, const std::vector<unsigned char>& before, int reach) {
+// build may then differ from a solo one at a seam). O(spans), and O(reach^4) a candidate. join_clear_runs then adds
+// the floor across doors and gaps that the level's triangles show clear (a run of up to 3 walkableRadius spans).
+void join_corners(rcCompactHeightfield& chf, const std::vector<unsigned char>& before, int reach,
+                  const float* verts, const int* tris, int ntris, const Settings& s, int walkable_radius) {
     struct At { int span, x, z; };
     const int w = chf.width;
     auto across = [&](const At& a, int dir) {  // the span across side `dir` of a, or span -1
@@ -981,6 +1303,8 @@ void join_corners(rcCompactHeightfield& chf, const std::vector<unsigned char>& b
                 }
             }
         }
+    join_clear_runs(chf, before, verts, tris, ntris, s.agent_radius, s.agent_max_climb, s.agent_height,
+                    walkable_radius, 3 * walkable_radius, back);
     for (int m : back) chf.areas[m] = before[m];
 }
 
@@ -1040,8 +1364,9 @@ void build_tile(const Input& in, const int* tris, int ntris, const rcConfig& c, 
     if (s.join_corners) before.assign(chf->areas, chf->areas + chf->spanCount);
     if (!rcErodeWalkableArea(&ctx, c.walkableRadius, *chf)) fail("rcErodeWalkableArea failed", &ctx, where);
     if (s.join_corners && c.walkableRadius > 0)
-        join_corners(*chf, before, std::max(1, static_cast<int>(std::ceil(
-                                                   std::sqrt(2.0) * s.agent_radius / static_cast<double>(c.cs) - 1.0))));
+        join_corners(*chf, before,
+                     std::max(1, static_cast<int>(std::ceil(std::sqrt(2.0) * s.agent_radius / static_cast<double>(c.cs) - 1.0))),
+                     in.verts, tris, ntris, s, c.walkableRadius);
     int walkable_spans = 0;
     for (int i = 0; i < chf->spanCount; ++i)
         if (chf->areas[i] != RC_NULL_AREA) ++walkable_spans;

@@ -125,7 +125,9 @@ class RecastParams(PluginParams):
         "joined",
         description="joined: after Recast's erosion by the agent's radius, put back the eroded floor between two kept "
         "cells that touch only at a corner when no edge of the floor comes within the agent's radius of it (a "
-        "corridor 1.7-1.8 m wide at an angle to the grid, or curved, then holds floor all along); recast: Recast's "
+        "corridor 1.7-1.8 m wide at an angle to the grid, or curved, then holds floor all along), and the floor "
+        "across a door or gap between kept floor where the level's triangles stand the agent's radius off (a door "
+        "1.4 m wide at any angle opens); recast: Recast's "
         "erosion as shipped (the paper preset); docs/navmesh.md, Curved corridors",
     )
     partition: Literal["auto", "watershed", "monotone", "layers"] = Field(
