@@ -220,7 +220,15 @@ def _ship(rng: np.random.Generator, length: float, beam: float, deck: float, gan
     s = _Solids()
     half = beam / 2
     plan = np.array([[0.0, -half], [0.82 * length, -half], [length, 0.0], [0.82 * length, half], [0.0, half]])
-    s.prism(plan, -6.0, deck)  # the hull, solid from under the water line to the main deck
+    house = float(rng.uniform(6.0, 8.0))
+    aft = 1.5 + house  # the engine casing over x 1.5 to aft, |z| under 0.3 beam
+    # the hull, solid from under the water line to the main deck, its deck stopping under the casing (Recast reads
+    # surfaces: the deck inside a closed body with head room over it would be floor)
+    s.prism(np.array([[aft, -half], [0.82 * length, -half], [length, 0.0], [0.82 * length, half], [aft, half]]),
+            -6.0, deck)
+    s.box(0.0, 1.5, -6.0, deck, -half, half)
+    for z0, z1 in ((-half, -0.3 * beam), (0.3 * beam, half)):
+        s.box(1.5, aft, -6.0, deck, z0, z1)
     fore = 0.78 * length  # the foredeck from here forward, 1.4 m up
     s.prism(np.array([[fore, -half], [0.82 * length, -half], [length, 0.0], [0.82 * length, half], [fore, half]]),
             deck, deck + 1.4)
@@ -242,10 +250,7 @@ def _ship(rng: np.random.Generator, length: float, beam: float, deck: float, gan
             _wall_line(s, mid, far, deck + 1.4, deck + 2.5, 0.06, [])
         else:
             _wall_line(s, p, q, top, top + 1.1, 0.06, gaps)
-    house = float(rng.uniform(6.0, 8.0))
-    # the engine casing aft, 1.9 m high: under the agent's height, so the deck inside it (Recast reads surfaces,
-    # not solids) is no floor
-    _ridged(s, 1.5, 1.5 + house, -0.3 * beam, 0.3 * beam, deck, deck + 1.9)
+    _ridged(s, 1.5, aft, -0.3 * beam, 0.3 * beam, deck - 0.1, deck + 2.6)  # the engine casing
     x = 1.5 + house + 3.0
     while x + 4.0 < fore - 3.0:  # hatches along the centreline, a crate or two beside them
         _ridged(s, x, x + 4.0, -0.2 * beam, 0.2 * beam, deck, deck + 0.8)
@@ -257,11 +262,11 @@ def _ship(rng: np.random.Generator, length: float, beam: float, deck: float, gan
 
 
 def gangway_quay(seed: int) -> trimesh.Trimesh:
-    """A ferry terminal's quay (a harbour in an open-world game, a smuggling mission): a quay 150 m along x and 20 m
+    """A ferry terminal's quay (a harbour in an open-world game, a smuggling mission): a quay 200 m along x and 20 m
     deep (y = 0, its face on z = 0, the water south of it left out: no floor), with sheds (ridged), bollards and
-    containers, and 3 ships moored off it *each turned 15-30 degrees to the quay's face* (either way), 32-40 m long,
+    containers, and 4 ships moored off it *each turned 15-30 degrees to the quay's face* (either way), 32-40 m long,
     9-12 m in beam, their main decks 1.5-2.6 m over the quay (drawn per ship), the nearest corner 3-5 m off the face.
-    Each ship: a raised foredeck 1.4 m up a flight 2.4 m wide, an engine casing 1.9 m high, hatches and crates (ridged), rails 1.1 m
+    Each ship: a raised foredeck 1.4 m up a flight 2.4 m wide, an engine casing, hatches and crates (ridged), rails 1.1 m
     high and 0.06 m thick round every deck edge. Each ship is boarded by *one gangway 1.8-2.2 m wide, railed 1 m high
     on both sides, running from the quay at 15-30 degrees to the quay's normal* (either way) to an opening in the
     ship's near rail, at 12-22 degrees of slope; so the gangway meets the ship's side and the quay's face at odd
@@ -274,10 +279,10 @@ def gangway_quay(seed: int) -> trimesh.Trimesh:
     gangways (every path to a ship climbs one); lowest on the foredecks."""
     rng = np.random.default_rng(seed)
     s = _Solids()
-    quay_x, quay_z = 150.0, 20.0
+    quay_x, quay_z = 200.0, 20.0
     holes: list[tuple[float, float, float, float]] = []
     feet: list[float] = []  # the gangways' feet (x)
-    for k in range(3):
+    for k in range(4):
         length, beam = float(rng.uniform(32.0, 40.0)), float(rng.uniform(9.0, 12.0))
         deck = float(rng.uniform(1.5, 2.6))
         yaw = float(rng.choice([-1.0, 1.0]) * rng.uniform(15.0, 30.0))
@@ -321,7 +326,7 @@ def gangway_quay(seed: int) -> trimesh.Trimesh:
         if all(abs(float(bx) - f) > 3.0 for f in feet):
             _trunk(s, np.array([float(bx), 0.7]), 0.25, -0.1, 0.6)
     spots: list[tuple[np.ndarray, float]] = []
-    for _ in range(int(rng.integers(5, 9))):
+    for _ in range(int(rng.integers(8, 13))):
         p = _placed(rng, spots, 4.0, quay_x - 4.0, 4.0, quay_z - 8.5, 2.0, [])
         if p is not None:
             holes.append(_ridged(s, p[0] - 3.0, p[0] + 3.0, p[1] - 1.2, p[1] + 1.2, -0.1, 2.6))
