@@ -306,7 +306,7 @@ def gangway_quay(seed: int) -> trimesh.Trimesh:
         foot = top + heading * (-top[1] / heading[1] + 1.0)  # a metre onto the quay
         feet.append(float(foot[0]))
         along_side = _yaw_point(np.array([1.0, 0.0]), yaw, np.zeros(2))
-        meet = abs(float(np.cross(along_side, heading)))  # sine of the gangway's angle to the ship's side
+        meet = abs(float(along_side[0] * heading[1] - along_side[1] * heading[0]))  # sine of its angle to the side
         ship = _ship(rng, length, beam, deck, gangway_at, width / max(meet, 0.3) + 1.0)
         s.parts += _yawed(ship.parts, yaw, at)
         top_in = top - heading * 0.6  # the gangway's top 0.6 m in over the deck
