@@ -2,15 +2,15 @@
 
 Six kinds of shipped game levels that stress what no earlier round did, each a few hundred navmesh polygons with the
 presets' agent (radius 0.5 m, height 2 m, climb 0.4 m, slope 45 degrees), seeds 0-2, built from the solids and helpers
-of ``benchmarks/level_kinds.py``, ``level_kinds30.py`` and ``level_kinds33.py`` (imported, not copied):
+of ``benchmarks/level_kinds.py`` and ``level_kinds30.py`` (imported, not copied), as ``level_kinds33.py`` is:
 ``turned_wings`` (houses round a yard, each turned 10-40 degrees off the grid, their doors 1.5-1.7 m wide at those
 angles), ``gap_roofs`` (a parkour block whose neighbouring roofs stand 0.3-0.6 m apart, about one to two of Recast's
-cells, or share a wall), ``gangway_quay`` (ships moored at 15-30 degrees to a quay, boarded by railed gangways at
-15-30 degrees to the quay's normal), ``scree_cave`` (a cave of chambers on floors tilted 5-20 degrees, joined by
-passages sloping 10-35 degrees, one shortcut cut by a scree at 50-55 degrees; pillars 0.25-3 m in radius),
-``track_beds`` (a station whose track beds, walkable ballast 1.2 m under the platforms, are reached only down ramps at
-the platforms' west ends) and ``expo_hall`` (a trade-fair hall: 150-250 booths 3 m deep, each a dead-end bay, beside
-an open floor and a stage).
+cells, or share a wall), ``gangway_quay`` (ships moored at 15-30 degrees to a quay, boarded by railed gangways at 15-30
+degrees to the quay's normal), ``scree_cave`` (a cave of chambers on floors tilted 5-20 degrees, joined by passages
+sloping 10-30 degrees, one shortcut cut by a scree at 50-55 degrees; pillars 0.25-3 m in radius), ``track_beds`` (a
+station whose track beds, walkable ballast 1.2 m under the platforms, are reached only down ramps at the platforms' west
+ends) and ``expo_hall`` (a trade-fair hall: 140-164 booths 3 m deep on seeds 0-2, each a dead-end bay, beside an open
+floor and a stage).
 
 Run: ``.venv/bin/python benchmarks/level_kinds34.py OUT_DIR [--kinds gap_roofs expo_hall] [--seeds 0 1 2]`` writes
 ``OUT_DIR/<kind>_s<seed>.obj``; ``benchmarks/analysis_quality.py --levels`` takes the kinds' names too."""
@@ -24,7 +24,7 @@ import numpy as np
 import trimesh
 from level_kinds import _lid, _ridged, _Solids, _strip, _terrain, _trunk, _wall_line
 from level_kinds import main as write_kinds
-from level_kinds30 import RIDGE, _placed, _ridged_strip
+from level_kinds30 import _placed
 
 
 def _yawed(parts: list[trimesh.Trimesh], yaw_deg: float, at: np.ndarray) -> list[trimesh.Trimesh]:
@@ -75,14 +75,14 @@ def _house(rng: np.random.Generator) -> tuple[_Solids, float, float]:
 
 def turned_wings(seed: int) -> trimesh.Trimesh:
     """A yard of houses none of which is square to the grid (a village in an action game, a compound in a shooter, as
-    level designers lay them out by eye): a yard of packed earth 120 x 120 m (y = 0), walled 2.5 m high round its
-    edge with a gate 4 m wide in each side, holding up to 9-11 houses (as many as fit 3 m apart; walls 0.3 m thick, 2.85 m high over their floors, no
-    roofs, as a top-down game draws them), each *turned by 10-40 degrees (either way, drawn per house) off the yard's
-    grid*. A house is 2-3 rooms in a row (7-10 m wide each, drawn per room; 7-9.5 m deep, drawn per house) on a floor
-    slab 0.15 m over the yard (a sill under the climb); *every door 1.5-1.7 m wide* (the agent's 1 m plus 0.5-0.7 m,
-    drawn per door), one into the first room from the front, each later room's own front door with a chance of 0.4,
-    and one door through each partition. Each room holds a table and a cupboard (ridged: no floor on them). In the
-    yard 12-20 crates and a well.
+    level designers lay them out by eye): a yard of packed earth 120 x 120 m (y = 0), walled 2.5 m high round its edge
+    with a gate 4 m wide in each side, holding up to 9-11 houses (as many as fit 3 m apart; walls 0.3 m thick, 2.85 m
+    high over their floors, no roofs, as a top-down game draws them), each *turned by 10-40 degrees (either way, drawn
+    per house) off the yard's grid*. A house is 2-3 rooms in a row (7-10 m wide each, drawn per room; 7-9.5 m deep,
+    drawn per house) on a floor slab 0.15 m over the yard (a sill under the climb); *every door 1.5-1.7 m wide* (the
+    agent's 1 m plus 0.5-0.7 m, drawn per door), one into the first room from the front, each later room's own front
+    door with a chance of 0.4, and one door through each partition. Each room holds a table and a cupboard (ridged: no
+    floor on them). In the yard 12-20 crates and a well.
 
     Expected (written before the first run): one area; every room reached through its doors, the doors held open
     whatever their angle to Recast's grid (the thirty-third round's labyrinth lost corridors of 1.75 m at angles to
@@ -266,11 +266,11 @@ def gangway_quay(seed: int) -> trimesh.Trimesh:
     deep (y = 0, its face on z = 0, the water south of it left out: no floor), with sheds (ridged), bollards and
     containers, and 4 ships moored off it *each turned 15-30 degrees to the quay's face* (either way), 32-40 m long,
     9-12 m in beam, their main decks 1.5-2.6 m over the quay (drawn per ship), the nearest corner 3-5 m off the face.
-    Each ship: a raised foredeck 1.4 m up a flight 2.4 m wide, an engine casing, hatches and crates (ridged), rails 1.1 m
-    high and 0.06 m thick round every deck edge. Each ship is boarded by *one gangway 1.8-2.2 m wide, railed 1 m high
-    on both sides, running from the quay at 15-30 degrees to the quay's normal* (either way) to an opening in the
-    ship's near rail, at 12-22 degrees of slope; so the gangway meets the ship's side and the quay's face at odd
-    angles, its rails at 15-30 degrees to both.
+    Each ship: a raised foredeck 1.4 m up a flight 2.4 m wide, an engine casing, hatches and crates (ridged), rails 1.1
+    m high and 0.06 m thick round every deck edge. Each ship is boarded by *one gangway 1.8-2.2 m wide, railed 1 m high
+    on both sides, running from the quay at 15-30 degrees to the quay's normal* (either way) to an opening in the ship's
+    near rail, at 12-22 degrees of slope; so the gangway meets the ship's side and the quay's face at odd angles, its
+    rails at 15-30 degrees to both.
 
     Expected (written before the first run): one area, the quay and every ship's two decks on it, each ship reached
     only up its gangway and its foredeck only up its flight. The structure up each gangway to a node on its deck, a
@@ -337,12 +337,13 @@ def gangway_quay(seed: int) -> trimesh.Trimesh:
 def scree_cave(seed: int) -> trimesh.Trimesh:
     """A cave whose floors are never level (an adventure game's, a survival game's) under a lid (:func:`_lid`), ground
     on a 0.5 m grid (:func:`_terrain`) 112 x 106 m: 12-15 chambers (discs 6-9 m in radius) on a jittered 5 x 3 lattice,
-    *each chamber's floor a plane tilted 5-20 degrees* (drawn per chamber); passages 3.5-5
-    m wide along a spanning tree of the lattice's neighbours *whose centre lines slope 10-30 degrees* from one chamber's
-    mouth to the next (the chambers' heights set down the tree so), meeting each chamber's plane across their width, and one more passage between two lattice neighbours not on the
-    tree (the pair whose mouths' heights differ most), *level from one chamber's mouth to a scree rising or falling at 50-55 degrees* (over the agent's 45) to the
-    other's; pillars 0.25-3 m in radius (8-sided, floor to rock, drawn) standing on the slopes, 2-4 a chamber. Rock
-    rises outside the open plan to 1 m under the lid (no agent fits on it).
+    *each chamber's floor a plane tilted 5-20 degrees* (drawn per chamber); passages 3.5-5 m wide along a spanning tree
+    of the lattice's neighbours *whose centre lines slope 10-30 degrees* from one chamber's mouth to the next (the
+    chambers' heights set down the tree so), meeting each chamber's plane across their width, and one more passage
+    between two lattice neighbours not on the tree (the pair whose mouths' heights differ most), *level from one
+    chamber's mouth to a scree rising or falling at 50-55 degrees* (over the agent's 45) to the other's; pillars 0.25-3
+    m in radius (8-sided, floor to rock, drawn) standing on the slopes, 2-4 a chamber. Rock rises outside the open plan
+    to 1 m under the lid (no agent fits on it).
 
     Expected (written before the first run): one area; every chamber reached along the tree's passages, the scree
     no way between its two chambers (a dead end from the flat side, its foot or top; a chamber joined only through it
