@@ -1761,10 +1761,14 @@ def test_the_gap_roofs_are_joined_only_across_gaps_under_two_cells(round_34):
     assert label.max() + 1 <= len(plan["areas"])
 
     def on_roof(r: int, k: int) -> np.ndarray:
+        """(P,) bool: the polygon's centre or a corner lies on roof k of row r (a polygon may span a shared wall)."""
         x0, x1, h = plan["rows"][r][k]
         z0, z1 = plan["spans"][r]
-        c = nav.centres
-        return (c[:, 0] > x0) & (c[:, 0] < x1) & (c[:, 2] > z0) & (c[:, 2] < z1) & (np.abs(c[:, 1] - h) < 0.5)
+        corners = np.where(nav.polygons[..., None] >= 0, nav.vertices[np.maximum(nav.polygons, 0)], np.nan)
+        points = np.concatenate([corners, nav.centres[:, None]], axis=1)  # (P, corners + 1, 3)
+        on = ((points[..., 0] >= x0) & (points[..., 0] <= x1) & (points[..., 2] >= z0) & (points[..., 2] <= z1)
+              & (np.abs(points[..., 1] - h) < 0.5))
+        return on.any(axis=1)
 
     street = set(label[np.abs(nav.centres[:, 1]) < 0.3])
     assert all(set(label[on_roof(*f)]) & street for f in plan["flights"])
@@ -1773,8 +1777,9 @@ def test_the_gap_roofs_are_joined_only_across_gaps_under_two_cells(round_34):
         for k in range(1, len(roofs)):
             if roofs[k][0] - roofs[k - 1][1] >= 0.5:
                 wide += 1
-                beside = nav.neighbours[on_roof(r, k - 1)].ravel()
-                assert not on_roof(r, k)[beside[beside >= 0]].any()
+                one, other = on_roof(r, k - 1), on_roof(r, k)
+                beside = nav.neighbours[one].ravel()
+                assert not (one & other).any() and not other[beside[beside >= 0]].any()
     assert wide > 0
 
 
