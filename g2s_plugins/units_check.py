@@ -51,6 +51,14 @@ MAX_STOREY_HEIGHTS = 7.0
 metres measured reach 4.8 (a backdrop's 9.6 m, docs/errors.md), the rooms of the sample levels 1.5; read from
 centimetres the levels whose gap at their true size is over 0.14 m warn, 394 of 425 measured."""
 
+MIN_PARTED_AREA = 1.0
+"""Square metres (in the file's units read as metres) of level surface the gaps must part, summed over the gaps as
+they are weighed, for the level to be told: a storey holds at least where an agent stands (the presets' agent's
+footprint is 0.79 m²). Under it the level faces are slivers, such as the few cells of a cave's sloping terrain that
+come out level (round 34's scree cave of seed 1: two faces of 0.1 m² under a rock top 16 m over them read as a
+16 m storey), and the level cannot be told, as a level of one flat height cannot (docs/analysis_quality.md, "A
+thirty-fourth round of level kinds")."""
+
 SAMPLED_FACES = 1 << 17
 """Faces the check reads at most: a seeded random choice of a larger mesh's faces, so that the check costs about
 0.07 s of CPU, not 0.37 s, on the 1.7 M faces of the 100k-polygon level. Random, not every k-th face: a level built
@@ -58,9 +66,10 @@ of one repeated module has a period in its face order, which a stride can meet s
 city of 12,000 box houses, 144,012 faces, read every 2nd face: no level face)."""
 
 
-def storey_gap(mesh: trimesh.Trimesh) -> float | None:
+def storey_gap(mesh: trimesh.Trimesh, min_parted_area: float = MIN_PARTED_AREA) -> float | None:
     """The :data:`GAP_QUANTILE` of the vertical gaps between the distinct heights of ``mesh``'s level faces, m
-    (module doc); ``None`` when its level faces lie at one height (a flat plane) or it has none.
+    (module doc); ``None`` when its level faces lie at one height (a flat plane), it has none, or the gaps part
+    less than ``min_parted_area`` m² of them, weighed as the quantile weighs them (:data:`MIN_PARTED_AREA`).
 
     Complexity: O(n log n) for the n faces read (at most :data:`SAMPLED_FACES`).
     """
@@ -81,7 +90,7 @@ def storey_gap(mesh: trimesh.Trimesh) -> float | None:
     gaps = np.diff(heights[np.r_[0, starts]])  # from each height's lowest face to the one below's
     held = np.add.reduceat(areas, np.r_[0, starts])  # the area at each height
     weights = np.minimum(held[:-1], held[1:])  # a gap counts as the smaller of the surfaces it parts
-    if not weights.sum() > 0:
+    if not weights.sum() > max(min_parted_area, 0.0):
         return None
     order = np.argsort(gaps, kind="stable")
     cumulative = np.cumsum(weights[order])

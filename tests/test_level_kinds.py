@@ -1,4 +1,4 @@
-"""The level kinds of rounds 9-33 (``benchmarks/level_kinds.py``, ``level_kinds26.py`` ... ``level_kinds33.py``) build
+"""The level kinds of rounds 9-34 (``benchmarks/level_kinds.py``, ``level_kinds26.py`` ... ``level_kinds34.py``) build
 the levels they describe.
 
 Smoke tests of quick generators (most well under a second each to build and to give a navmesh; the theatre's and
@@ -1732,3 +1732,92 @@ def test_the_cenotes_ledge_joins_the_rim_to_the_beach_under_its_overhangs(round_
     y = nav.centres[:, 1] - 0.2
     assert y.max() > -0.3 and y.min() < -17.0
     assert head_room(mesh, nav).min() > 1.7
+
+
+@pytest.fixture(scope="module")
+def round_34() -> dict[str, Callable[..., trimesh.Trimesh]]:
+    """``benchmarks/level_kinds34.py``'s KINDS (the thirty-fourth round): each call builds its level anew."""
+    return benchmark("level_kinds34").KINDS
+
+
+def test_the_turned_houses_lose_only_rooms_behind_their_doors(round_34):
+    """Houses turned 10-40 degrees off the grid, doors 1.5-1.7 m wide: the yard and most rooms one area holding over
+    98 % of the floor; every area apart stands on a house's floor slab (0.15 m over the yard: centres over 0.3 m),
+    a room behind a door the navmesh closes (docs/analysis_quality.md, "A thirty-fourth round of level kinds")."""
+    label, nav = areas(round_34["turned_wings"](0), DROPS)
+    sizes = np.bincount(label, weights=nav.areas)
+    largest = int(np.argmax(sizes))
+    assert sizes[largest] > 0.98 * sizes.sum()
+    assert (nav.centres[label != largest, 1] > 0.3).all()
+
+
+def test_the_gap_roofs_are_joined_only_across_gaps_under_two_cells(round_34):
+    """Roofs 0.3-0.6 m apart or sharing a wall (:func:`gap_roofs_plan`): the street in one area with the roofs of the
+    flights' runs, no more areas than the plan's (whose runs cross no gap), and no polygon of a roof a neighbour of
+    one on the next roof of its row across a gap of 0.5 m or more (two of Recast's 0.25 m cells: a free column of
+    cells always falls inside it)."""
+    plan = benchmark("level_kinds34").gap_roofs_plan(0)
+    label, nav = areas(round_34["gap_roofs"](0), DROPS)
+    assert label.max() + 1 <= len(plan["areas"])
+
+    def on_roof(r: int, k: int) -> np.ndarray:
+        """(P,) bool: the polygon's centre or a corner lies on roof k of row r (a polygon may span a shared wall)."""
+        x0, x1, h = plan["rows"][r][k]
+        z0, z1 = plan["spans"][r]
+        corners = np.where(nav.polygons[..., None] >= 0, nav.vertices[np.maximum(nav.polygons, 0)], np.nan)
+        points = np.concatenate([corners, nav.centres[:, None]], axis=1)  # (P, corners + 1, 3)
+        on = ((points[..., 0] >= x0) & (points[..., 0] <= x1) & (points[..., 2] >= z0) & (points[..., 2] <= z1)
+              & (np.abs(points[..., 1] - h) < 0.5))
+        return on.any(axis=1)
+
+    street = set(label[np.abs(nav.centres[:, 1]) < 0.3])
+    assert all(set(label[on_roof(*f)]) & street for f in plan["flights"])
+    wide = 0
+    for r, roofs in enumerate(plan["rows"]):
+        for k in range(1, len(roofs)):
+            if roofs[k][0] - roofs[k - 1][1] >= 0.5:
+                wide += 1
+                one, other = on_roof(r, k - 1), on_roof(r, k)
+                beside = nav.neighbours[one].ravel()
+                assert not (one & other).any() and not other[beside[beside >= 0]].any()
+    assert wide > 0
+
+
+def test_the_quay_reaches_every_ship_and_foredeck_up_its_gangway(round_34):
+    """Four ships moored at 15-30 degrees, boarded by gangways at 15-30 degrees to the quay's normal: one area but
+    parts under 4 m², with floor on the quay (y under 0.3), the main decks (1.5-2.6 m) and the foredecks (1.4 m
+    higher: over 3.1 m on every seed's decks of 1.7 m or more)."""
+    label, nav = areas(round_34["gangway_quay"](0), DROPS)
+    sizes = np.bincount(label, weights=nav.areas)
+    assert (sizes > 4.0).sum() == 1
+    main = label == int(np.argmax(sizes))
+    y = nav.centres[main, 1] - 0.2
+    assert y.min() < 0.3 and ((y > 1.4) & (y < 2.7)).any() and y.max() > 3.1
+
+
+def test_the_scree_cave_is_one_area_on_its_slopes(round_34):
+    """Chambers on floors tilted 5-20 degrees joined by passages sloping 10-30 degrees, one shortcut cut by a scree
+    at 50-55 degrees: one area whose floor spans more than 10 m of height."""
+    label, nav = areas(round_34["scree_cave"](0), DROPS)
+    assert label.max() == 0
+    assert np.ptp(nav.centres[:, 1]) > 10.0
+
+
+def test_the_track_beds_are_reached_down_the_platforms_ramps(round_34):
+    """Track beds of ballast 1.2 m under the platforms, reached only down ramps at the platforms' west ends: one area
+    with floor on the beds (about -1.2 m), the platforms (about 0) and the footbridge (about 6 m)."""
+    label, nav = areas(round_34["track_beds"](0), DROPS)
+    assert label.max() == 0
+    y = nav.centres[:, 1] - 0.2
+    assert (np.abs(y + 1.2) < 0.2).any() and (np.abs(y) < 0.2).any() and (np.abs(y - 6.0) < 0.3).any()
+
+
+def test_the_expo_halls_booths_and_open_floor_are_one_area(round_34):
+    """Booths 3 m wide and 3 m deep (more than 200 wall-top corners 2.5 m up), open to their aisles, beside an open
+    floor: one area whose floor covers more than half the hall's plan (a booth lost behind its opening would leave
+    an island or less floor)."""
+    mesh = round_34["expo_hall"](0)
+    label, nav = areas(mesh, DROPS)
+    assert label.max() == 0
+    assert (np.abs(mesh.vertices[:, 1] - 2.5) < 1e-6).sum() > 200
+    assert nav.areas.sum() > 0.5 * np.ptp(mesh.vertices[:, 0]) * np.ptp(mesh.vertices[:, 2])

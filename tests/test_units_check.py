@@ -79,3 +79,17 @@ def test_a_level_of_one_repeated_module_is_read_past_its_period(monkeypatch):
     assert storey_gap(town) == pytest.approx(3.0)
     town.apply_scale(100)
     assert storey_gap(town) == pytest.approx(300.0)
+
+
+def test_a_level_whose_only_low_level_faces_are_slivers_cannot_be_told():
+    """A cave's rock top (100 m² at 16 m) over sloping ground whose only level faces are two slivers of 0.09 m² (at 0
+    and -4 m), as round 34's scree cave of seed 1 has: the gaps part 0.18 m² of level surface, under
+    :data:`~g2s_plugins.units_check.MIN_PARTED_AREA`, so the level cannot be told (read as before, the gaps of 4 and
+    16 m weigh the same and the quartile reads 16 m, 8 agent heights: a false warning of centimetres). Read from
+    centimetres the slivers hold 900 m² each and the 1,600 m gap is told."""
+    cave = trimesh.util.concatenate([box((0, 15, 0), (10, 16, 10)), box((20, -1, 0), (20.3, 0, 0.3)),
+                                     box((30, -5, 0), (30.3, -4, 0.3))])
+    assert storey_gap(cave) is None
+    assert storey_gap(cave, min_parted_area=0.0) == pytest.approx(16.0)
+    cave.apply_scale(100)
+    assert storey_gap(cave) == pytest.approx(1600.0)
