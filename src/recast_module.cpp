@@ -219,17 +219,21 @@ void check_settings(const Settings& s) {
 
 // ---------------------------------------------------------------- one tile
 
-// The Recast output of one tile, copied out, plus its Detour tile data.
+// The Recast output of one tile, copied out in Recast's own layout (what dtCreateNavMeshData reads, so that the
+// tile's Detour data can be made again without some polygons: drop_border_islands), plus its Detour tile data.
 struct TileMesh {
     int tx = 0, ty = 0;
+    int gx0 = 0, gz0 = 0;                 // global grid cell of the tile's first (non-border) cell
     int nverts = 0, npolys = 0;
-    std::vector<int32_t> gverts;          // (nverts,3): global grid x cell, y cell, global grid z cell
-    std::vector<unsigned short> polys;    // (npolys,nvp) local vertex indices, RC_MESH_NULL_IDX padded
+    float bmin[3] = {0, 0, 0}, bmax[3] = {0, 0, 0};  // the poly mesh's bounds, world
+    std::vector<unsigned short> verts;    // (nverts,3) as rcPolyMesh: grid x, y, z cells from bmin
+    std::vector<unsigned short> polys;    // (npolys,2 nvp) as rcPolyMesh: vertex indices, then neighbours / portal flags
     std::vector<unsigned char> areas;     // (npolys,)
     std::vector<unsigned short> regs;     // (npolys,) local region ids
+    std::vector<unsigned int> dmeshes;    // (npolys,4) as rcPolyMeshDetail: vertex base, count, triangle base, count
     std::vector<float> dverts;            // (DV,3) world
-    std::vector<int32_t> dtris;           // (DT,3) local detail vertex indices
-    std::vector<int32_t> dpoly;           // (DT,) local polygon
+    std::vector<unsigned char> dtris;     // (DT,4) as rcPolyMeshDetail: vertex indices from the base, edge flags
+    std::vector<int> region_cells;        // tiled builds: each region's cells (spans) inside the tile, by region id
     std::unique_ptr<unsigned char, DtFreeDel> data;  // dtCreateNavMeshData output
     int data_size = 0;
     std::string empty_reason;             // why the tile has no polygons (npolys == 0)
@@ -992,6 +996,55 @@ struct Input {
     int nt;
 };
 
+// Each region's cells (spans) inside the tile, by region id: what Recast's rcBuildRegions counts of a region when
+// it weighs it against minRegionArea (the border's spans, painted RC_BORDER_REG, belong to no region).
+std::vector<int> region_cells(const rcCompactHeightfield& chf) {
+    std::vector<int> cells(static_cast<size_t>(chf.maxRegions) + 1, 0);
+    for (int i = 0; i < chf.spanCount; ++i) {
+        const unsigned short reg = chf.spans[i].reg;
+        if (reg == 0 || (reg & RC_BORDER_REG)) continue;
+        if (reg >= cells.size()) cells.resize(static_cast<size_t>(reg) + 1, 0);
+        ++cells[reg];
+    }
+    return cells;
+}
+
+// The tile's Detour data (t.data) from its copied-out Recast arrays; false when dtCreateNavMeshData fails.
+bool make_tile_data(TileMesh& t, int nvp, const rcConfig& c, const Settings& s) {
+    const std::vector<unsigned short> flags(static_cast<size_t>(t.npolys), 1);  // Detour's default filter needs a non-zero flag
+    dtNavMeshCreateParams params;
+    std::memset(&params, 0, sizeof(params));
+    params.verts = t.verts.data();
+    params.vertCount = t.nverts;
+    params.polys = t.polys.data();
+    params.polyAreas = t.areas.data();
+    params.polyFlags = flags.data();
+    params.polyCount = t.npolys;
+    params.nvp = nvp;
+    params.detailMeshes = t.dmeshes.data();
+    params.detailVerts = t.dverts.data();
+    params.detailVertsCount = static_cast<int>(t.dverts.size() / 3);
+    params.detailTris = t.dtris.data();
+    params.detailTriCount = static_cast<int>(t.dtris.size() / 4);
+    params.walkableHeight = static_cast<float>(s.agent_height);
+    params.walkableRadius = static_cast<float>(s.agent_radius);
+    params.walkableClimb = static_cast<float>(s.agent_max_climb);
+    params.tileX = t.tx;
+    params.tileY = t.ty;
+    params.tileLayer = 0;
+    rcVcopy(params.bmin, t.bmin);
+    rcVcopy(params.bmax, t.bmax);
+    params.cs = c.cs;
+    params.ch = c.ch;
+    params.buildBvTree = true;
+    unsigned char* data = nullptr;
+    int data_size = 0;
+    if (!dtCreateNavMeshData(&params, &data, &data_size)) return false;
+    t.data.reset(data);
+    t.data_size = data_size;
+    return true;
+}
+
 // Runs Recast's pipeline for one tile (`c` holds its grid, bounds and border)
 // over the triangles `tris` (ntris), and fills `out`. `gx0`, `gz0`: the global
 // grid cell of the tile's first (non-border) cell. `solo` marks the whole-grid
@@ -1119,79 +1172,29 @@ void build_tile(const Input& in, const int* tris, int ntris, const rcConfig& c, 
         too_big("rcBuildPolyMeshDetail failed");
     out.detail_redone = redo_detail_off_storey(ctx, *pmesh, *chf, c, dmesh, too_big);
     out.detail_resampled = resample_detail_off_floor(ctx, *pmesh, *chf, c, dmesh, out.detail_redone, too_big);
+    if (c.borderSize > 0) out.region_cells = region_cells(*chf);
     chf.reset();
     cset.reset();
 
-    // 6. Copy the mesh data out (vertices in global grid cells).
-    rcPolyMesh& pm = *pmesh;
-    const int nvp = pm.nvp;
+    // 6. Copy the mesh data out, as Recast lays it out.
+    const rcPolyMesh& pm = *pmesh;
+    const rcPolyMeshDetail& dm = *dmesh;
+    out.gx0 = gx0;
+    out.gz0 = gz0;
     out.nverts = pm.nverts;
     out.npolys = pm.npolys;
-    out.gverts.resize(static_cast<size_t>(pm.nverts) * 3);
-    for (int i = 0; i < pm.nverts; ++i) {
-        const unsigned short* v = &pm.verts[i * 3];
-        out.gverts[i * 3 + 0] = gx0 + v[0];
-        out.gverts[i * 3 + 1] = v[1];
-        out.gverts[i * 3 + 2] = gz0 + v[2];
-    }
-    out.polys.resize(static_cast<size_t>(pm.npolys) * nvp);
-    out.areas.resize(pm.npolys);
-    out.regs.resize(pm.npolys);
-    for (int i = 0; i < pm.npolys; ++i) {
-        std::copy(&pm.polys[i * 2 * nvp], &pm.polys[i * 2 * nvp] + nvp, &out.polys[static_cast<size_t>(i) * nvp]);
-        out.areas[i] = pm.areas[i];
-        out.regs[i] = pm.regs[i];
-        pm.flags[i] = 1;  // Detour's default filter needs a non-zero flag
-    }
-    const rcPolyMeshDetail& dm = *dmesh;
+    rcVcopy(out.bmin, pm.bmin);
+    rcVcopy(out.bmax, pm.bmax);
+    out.verts.assign(pm.verts, pm.verts + static_cast<size_t>(pm.nverts) * 3);
+    out.polys.assign(pm.polys, pm.polys + static_cast<size_t>(pm.npolys) * 2 * pm.nvp);
+    out.areas.assign(pm.areas, pm.areas + pm.npolys);
+    out.regs.assign(pm.regs, pm.regs + pm.npolys);
+    out.dmeshes.assign(dm.meshes, dm.meshes + static_cast<size_t>(dm.nmeshes) * 4);
     out.dverts.assign(dm.verts, dm.verts + static_cast<size_t>(dm.nverts) * 3);
-    out.dtris.reserve(static_cast<size_t>(dm.ntris) * 3);
-    out.dpoly.reserve(dm.ntris);
-    for (int i = 0; i < dm.nmeshes; ++i) {
-        const unsigned int vbase = dm.meshes[i * 4 + 0];
-        const unsigned int tbase = dm.meshes[i * 4 + 2];
-        const unsigned int tcount = dm.meshes[i * 4 + 3];
-        for (unsigned int k = 0; k < tcount; ++k) {
-            const unsigned char* t = &dm.tris[(tbase + k) * 4];
-            out.dtris.push_back(static_cast<int32_t>(vbase + t[0]));
-            out.dtris.push_back(static_cast<int32_t>(vbase + t[1]));
-            out.dtris.push_back(static_cast<int32_t>(vbase + t[2]));
-            out.dpoly.push_back(i);
-        }
-    }
+    out.dtris.assign(dm.tris, dm.tris + static_cast<size_t>(dm.ntris) * 4);
 
     // 7. Detour tile data.
-    dtNavMeshCreateParams params;
-    std::memset(&params, 0, sizeof(params));
-    params.verts = pm.verts;
-    params.vertCount = pm.nverts;
-    params.polys = pm.polys;
-    params.polyAreas = pm.areas;
-    params.polyFlags = pm.flags;
-    params.polyCount = pm.npolys;
-    params.nvp = pm.nvp;
-    params.detailMeshes = dm.meshes;
-    params.detailVerts = dm.verts;
-    params.detailVertsCount = dm.nverts;
-    params.detailTris = dm.tris;
-    params.detailTriCount = dm.ntris;
-    params.walkableHeight = static_cast<float>(s.agent_height);
-    params.walkableRadius = static_cast<float>(s.agent_radius);
-    params.walkableClimb = static_cast<float>(s.agent_max_climb);
-    params.tileX = out.tx;
-    params.tileY = out.ty;
-    params.tileLayer = 0;
-    rcVcopy(params.bmin, pm.bmin);
-    rcVcopy(params.bmax, pm.bmax);
-    params.cs = c.cs;
-    params.ch = c.ch;
-    params.buildBvTree = true;
-    unsigned char* data = nullptr;
-    int data_size = 0;
-    if (!dtCreateNavMeshData(&params, &data, &data_size))
-        too_big("dtCreateNavMeshData failed (too many vertices or polygons for one tile?)");
-    out.data.reset(data);
-    out.data_size = data_size;
+    if (!make_tile_data(out, pm.nvp, c, s)) too_big("dtCreateNavMeshData failed (too many vertices or polygons for one tile?)");
 }
 
 // ---------------------------------------------------------------- navmesh
@@ -1501,7 +1504,7 @@ void NavMeshCore::assemble(std::vector<std::unique_ptr<TileMesh>>& tiles) {
         total += t->npolys;
         total_verts += t->nverts;
         total_dverts += static_cast<long long>(t->dverts.size() / 3);
-        total_dtris += static_cast<long long>(t->dpoly.size());
+        total_dtris += static_cast<long long>(t->dtris.size() / 4);
     }
     if (total > INT32_MAX || total_dverts > INT32_MAX || total_verts > INT32_MAX)
         fail("navmesh too large (more than 2^31 polygons or vertices)");
@@ -1574,7 +1577,7 @@ void NavMeshCore::assemble(std::vector<std::unique_ptr<TileMesh>>& tiles) {
         // Vertices: world coordinates from global grid cells; tiles share equal ones.
         vmap.resize(static_cast<size_t>(t.nverts));
         for (int i = 0; i < t.nverts; ++i) {
-            const int32_t gx = t.gverts[i * 3 + 0], gy = t.gverts[i * 3 + 1], gz = t.gverts[i * 3 + 2];
+            const int32_t gx = t.gx0 + t.verts[i * 3 + 0], gy = t.verts[i * 3 + 1], gz = t.gz0 + t.verts[i * 3 + 2];
             if (dedup) {
                 const uint64_t key = (static_cast<uint64_t>(gx) << 40) | (static_cast<uint64_t>(gz) << 16) |
                                      static_cast<uint64_t>(gy & 0xffff);
@@ -1592,7 +1595,7 @@ void NavMeshCore::assemble(std::vector<std::unique_ptr<TileMesh>>& tiles) {
         // Polygons, areas, regions (offset so that ids stay unique across tiles).
         int max_region = 0;
         for (int i = 0; i < t.npolys; ++i) {
-            const unsigned short* p = &t.polys[static_cast<size_t>(i) * nvp];
+            const unsigned short* p = &t.polys[static_cast<size_t>(i) * 2 * nvp];
             int32_t* out = &polys[static_cast<size_t>(first + i) * nvp];
             for (int j = 0; j < nvp; ++j) {
                 if (p[j] == RC_MESH_NULL_IDX) break;
@@ -1606,8 +1609,13 @@ void NavMeshCore::assemble(std::vector<std::unique_ptr<TileMesh>>& tiles) {
         // Detail mesh.
         const int32_t dbase = static_cast<int32_t>(dverts.size() / 3);
         for (float v : t.dverts) dverts.push_back(static_cast<double>(v));
-        for (int32_t v : t.dtris) dtris.push_back(v + dbase);
-        for (int32_t p : t.dpoly) dtri_poly.push_back(p + first);
+        for (int i = 0; i < t.npolys; ++i) {
+            const unsigned int vbase = t.dmeshes[i * 4 + 0], tbase = t.dmeshes[i * 4 + 2], tcount = t.dmeshes[i * 4 + 3];
+            for (unsigned int k = tbase; k < tbase + tcount; ++k) {
+                for (int q = 0; q < 3; ++q) dtris.push_back(dbase + static_cast<int32_t>(vbase + t.dtris[k * 4 + q]));
+                dtri_poly.push_back(first + i);
+            }
+        }
         overlaps.insert(overlaps.end(), t.overlaps.begin(), t.overlaps.end());
         if (t.repartitioned) repartitioned.insert(repartitioned.end(), {t.tx, t.ty});
         for (int32_t p : t.detail_redone) detail_redone.push_back(p + first);
