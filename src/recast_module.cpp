@@ -1045,6 +1045,64 @@ bool make_tile_data(TileMesh& t, int nvp, const rcConfig& c, const Settings& s) 
     return true;
 }
 
+// Keeps only the polygons of `t` whose `keep` is set: their vertices, neighbours (renumbered), detail meshes and the
+// lists of polygons whose detail was redone. A kept polygon's neighbour is kept too (drop_border_islands drops whole
+// connected parts); `t.data` is stale until make_tile_data makes it again.
+void keep_tile_polygons(TileMesh& t, const std::vector<char>& keep, int nvp) {
+    std::vector<int> new_poly(static_cast<size_t>(t.npolys), -1), new_vert(static_cast<size_t>(t.nverts), -1);
+    int npolys = 0, nverts = 0;
+    for (int i = 0; i < t.npolys; ++i) {
+        if (!keep[i]) continue;
+        new_poly[i] = npolys++;
+        for (int j = 0; j < nvp; ++j) {
+            const unsigned short v = t.polys[static_cast<size_t>(i) * 2 * nvp + j];
+            if (v != RC_MESH_NULL_IDX && new_vert[v] < 0) new_vert[v] = nverts++;
+        }
+    }
+    std::vector<unsigned short> verts(static_cast<size_t>(nverts) * 3), polys;
+    for (int v = 0; v < t.nverts; ++v)
+        if (new_vert[v] >= 0) std::copy(&t.verts[v * 3], &t.verts[v * 3] + 3, &verts[new_vert[v] * 3]);
+    std::vector<unsigned char> areas, dtris;
+    std::vector<unsigned short> regs;
+    std::vector<unsigned int> dmeshes;
+    std::vector<float> dverts;
+    polys.reserve(static_cast<size_t>(npolys) * 2 * nvp);
+    for (int i = 0; i < t.npolys; ++i) {
+        if (!keep[i]) continue;
+        const unsigned short* p = &t.polys[static_cast<size_t>(i) * 2 * nvp];
+        for (int j = 0; j < nvp; ++j) polys.push_back(p[j] == RC_MESH_NULL_IDX ? p[j] : static_cast<unsigned short>(new_vert[p[j]]));
+        for (int j = nvp; j < 2 * nvp; ++j) {  // a neighbour's index, or RC_MESH_NULL_IDX, or 0x8000 | a portal's side
+            const unsigned short n = p[j];
+            polys.push_back(n == RC_MESH_NULL_IDX || (n & 0x8000) || new_poly[n] < 0 ? (n & 0x8000 ? n : RC_MESH_NULL_IDX)
+                                                                                  : static_cast<unsigned short>(new_poly[n]));
+        }
+        areas.push_back(t.areas[i]);
+        regs.push_back(t.regs[i]);
+        const unsigned int* m = &t.dmeshes[static_cast<size_t>(i) * 4];
+        dmeshes.insert(dmeshes.end(), {static_cast<unsigned int>(dverts.size() / 3), m[1],
+                                       static_cast<unsigned int>(dtris.size() / 4), m[3]});
+        dverts.insert(dverts.end(), &t.dverts[static_cast<size_t>(m[0]) * 3], &t.dverts[static_cast<size_t>(m[0] + m[1]) * 3]);
+        dtris.insert(dtris.end(), &t.dtris[static_cast<size_t>(m[2]) * 4], &t.dtris[static_cast<size_t>(m[2] + m[3]) * 4]);
+    }
+    auto renumber = [&](std::vector<int32_t>& list) {
+        std::vector<int32_t> kept;
+        for (int32_t i : list)
+            if (new_poly[i] >= 0) kept.push_back(new_poly[i]);
+        list.swap(kept);
+    };
+    renumber(t.detail_redone);
+    renumber(t.detail_resampled);
+    t.nverts = nverts;
+    t.npolys = npolys;
+    t.verts.swap(verts);
+    t.polys.swap(polys);
+    t.areas.swap(areas);
+    t.regs.swap(regs);
+    t.dmeshes.swap(dmeshes);
+    t.dverts.swap(dverts);
+    t.dtris.swap(dtris);
+}
+
 // Runs Recast's pipeline for one tile (`c` holds its grid, bounds and border)
 // over the triangles `tris` (ntris), and fills `out`. `gx0`, `gz0`: the global
 // grid cell of the tile's first (non-border) cell. `solo` marks the whole-grid
@@ -1225,6 +1283,7 @@ public:
     int tiles_x = 1, tiles_y = 1;       // tile grid
     int border_size = 0;
     bool auto_fallback = false;         // automatic mode: solo was too big, built with tiles
+    int border_island_polygons = 0;     // polygons of the small parts at tile borders taken out (drop_border_islands)
     double build_seconds = 0.0;
     float climb_tolerance = 0.0f;
     float default_ext[3] = {0, 0, 0};
@@ -1358,6 +1417,8 @@ private:
     std::vector<std::unique_ptr<TileMesh>> build_solo(const Input& in, const Settings& s);
     std::vector<std::unique_ptr<TileMesh>> build_tiled(const Input& in, const Settings& s, int ts);
     void assemble(std::vector<std::unique_ptr<TileMesh>>& tiles);
+    std::unique_ptr<dtNavMesh, NavMeshDel> new_navmesh(const std::vector<std::unique_ptr<TileMesh>>& tiles) const;
+    int drop_border_islands(std::vector<std::unique_ptr<TileMesh>>& tiles, const Settings& s);
     void link_topology();
 };
 
@@ -1492,22 +1553,113 @@ std::vector<std::unique_ptr<TileMesh>> NavMeshCore::build_tiled(const Input& in,
     return out;
 }
 
-void NavMeshCore::assemble(std::vector<std::unique_ptr<TileMesh>>& tiles) {
-    const rcConfig& g = cfg;
-    nvp = g.maxVertsPerPoly;
+// Recast removes a connected group of regions smaller than minRegionArea cells from a tile, but not one that
+// touches the tile's border, whose size one tile cannot tell; so a tiled navmesh keeps small parts that a tile border
+// cuts or grazes (a plinth's top, a sliver of floor) where a solo build of the same level drops them
+// (docs/navmesh.md, "Islands at tile borders"). Joined across the tiles by Detour's links, a part's size is known:
+// the polygons of each connected part that has an edge on a tile border and fewer than minRegionArea cells in all
+// (its regions' cells summed over its tiles) are taken out of their tiles, whose Detour data is made again, so that
+// no query of the navmesh meets them; a tile left with none is left out. Every other part stays as Recast built it.
+// Returns the number of polygons taken out.
+int NavMeshCore::drop_border_islands(std::vector<std::unique_ptr<TileMesh>>& tiles, const Settings& s) {
+    const int min_cells = cfg.minRegionArea, max_verts = cfg.maxVertsPerPoly;
+    if (min_cells <= 0 || tiles.empty()) return 0;
+    // A navmesh of the tiles as they are, for its links: the tiles keep their data (no DT_TILE_FREE_DATA).
+    std::vector<int> first(tiles.size() + 1, 0);
+    for (size_t k = 0; k < tiles.size(); ++k) first[k + 1] = first[k] + tiles[k]->npolys;
+    std::vector<int> part(static_cast<size_t>(first.back()));
+    std::vector<char> on_border(part.size(), 0);
+    for (size_t i = 0; i < part.size(); ++i) part[i] = static_cast<int>(i);
+    auto root = [&](int i) {
+        while (part[i] != i) i = part[i] = part[part[i]];
+        return i;
+    };
+    {
+        std::unique_ptr<dtNavMesh, NavMeshDel> probe = new_navmesh(tiles);
+        std::vector<dtTileRef> refs(tiles.size());
+        std::vector<int> tile_of_index(static_cast<size_t>(probe->getMaxTiles()), -1);
+        for (size_t k = 0; k < tiles.size(); ++k) {
+            if (dtStatusFailed(probe->addTile(tiles[k]->data.get(), tiles[k]->data_size, 0, 0, &refs[k])))
+                fail("dtNavMesh::addTile failed in tile (" + std::to_string(tiles[k]->tx) + ", " +
+                     std::to_string(tiles[k]->ty) + ")");
+            tile_of_index[probe->decodePolyIdTile(static_cast<dtPolyRef>(refs[k]))] = static_cast<int>(k);
+        }
+        for (size_t k = 0; k < tiles.size(); ++k) {
+            const dtMeshTile* tile = probe->getTileByRef(refs[k]);
+            for (int ip = 0; ip < tile->header->polyCount; ++ip) {
+                const dtPoly& p = tile->polys[ip];
+                const int gi = first[k] + ip;
+                for (int j = 0; j < p.vertCount; ++j)
+                    if (p.neis[j] & DT_EXT_LINK) on_border[gi] = 1;
+                for (unsigned int l = p.firstLink; l != DT_NULL_LINK; l = tile->links[l].next) {
+                    const dtPolyRef ref = tile->links[l].ref;
+                    const int gk = first[tile_of_index[probe->decodePolyIdTile(ref)]] + static_cast<int>(probe->decodePolyIdPoly(ref));
+                    const int a = root(gi), b = root(gk);
+                    if (a != b) part[std::max(a, b)] = std::min(a, b);
+                }
+            }
+        }
+    }
+    // Each part's cells, every region of it counted once (its polygons visited part by part).
+    std::vector<int> order(part.size()), start(part.size() + 1, 0);
+    for (size_t i = 0; i < part.size(); ++i) part[i] = root(static_cast<int>(i));  // each polygon's part, by its root
+    for (size_t i = 0; i < part.size(); ++i) ++start[part[i] + 1];
+    for (size_t r = 0; r < part.size(); ++r) start[r + 1] += start[r];
+    {
+        std::vector<int> fill(start.begin(), start.end() - 1);
+        for (size_t i = 0; i < part.size(); ++i) order[fill[part[i]]++] = static_cast<int>(i);
+    }
+    std::vector<std::vector<int>> counted(tiles.size());  // by tile and region: the part that counted its cells
+    for (size_t k = 0; k < tiles.size(); ++k) counted[k].assign(tiles[k]->region_cells.size(), -1);
+    std::vector<std::vector<char>> keep(tiles.size());
+    for (size_t k = 0; k < tiles.size(); ++k) keep[k].assign(static_cast<size_t>(tiles[k]->npolys), 1);
+    int dropped = 0;
+    for (size_t r = 0; r < part.size(); ++r) {
+        if (start[r] == start[r + 1]) continue;
+        long long cells = 0;
+        bool border = false;
+        for (int q = start[r]; q < start[r + 1]; ++q) {
+            const int gi = order[q];
+            const size_t k = static_cast<size_t>(std::upper_bound(first.begin(), first.end(), gi) - first.begin() - 1);
+            const unsigned short reg = tiles[k]->regs[gi - first[k]];
+            border = border || on_border[gi];
+            if (reg >= counted[k].size()) cells += min_cells;  // a region no cell was counted of: keep its part
+            else if (counted[k][reg] != static_cast<int>(r)) {
+                counted[k][reg] = static_cast<int>(r);
+                cells += tiles[k]->region_cells[reg];
+            }
+        }
+        if (!border || cells >= min_cells) continue;
+        for (int q = start[r]; q < start[r + 1]; ++q) {
+            const int gi = order[q];
+            const size_t k = static_cast<size_t>(std::upper_bound(first.begin(), first.end(), gi) - first.begin() - 1);
+            keep[k][gi - first[k]] = 0;
+            ++dropped;
+        }
+    }
+    if (dropped == 0) return 0;
+    std::vector<std::unique_ptr<TileMesh>> kept;
+    for (size_t k = 0; k < tiles.size(); ++k) {
+        TileMesh& t = *tiles[k];
+        if (std::find(keep[k].begin(), keep[k].end(), 0) != keep[k].end()) {
+            keep_tile_polygons(t, keep[k], max_verts);
+            t.data.reset();
+            t.data_size = 0;
+            if (t.npolys > 0 && !make_tile_data(t, max_verts, cfg, s))
+                fail("dtCreateNavMeshData failed in tile (" + std::to_string(t.tx) + ", " + std::to_string(t.ty) + ")");
+        }
+        if (t.npolys > 0) kept.push_back(std::move(tiles[k]));
+    }
+    tiles.swap(kept);
+    return dropped;
+}
 
+// An empty Detour navmesh for `tiles` (its origin and tile width from the build's grid and tiling).
+std::unique_ptr<dtNavMesh, NavMeshDel> NavMeshCore::new_navmesh(const std::vector<std::unique_ptr<TileMesh>>& tiles) const {
+    const rcConfig& g = cfg;
     // Detour's 32-bit polygon references: salt + tile + poly bits, salt >= 10.
     int max_polys = 0;
-    long long total = 0, total_dverts = 0, total_dtris = 0, total_verts = 0;
-    for (const auto& t : tiles) {
-        max_polys = std::max(max_polys, t->npolys);
-        total += t->npolys;
-        total_verts += t->nverts;
-        total_dverts += static_cast<long long>(t->dverts.size() / 3);
-        total_dtris += static_cast<long long>(t->dtris.size() / 4);
-    }
-    if (total > INT32_MAX || total_dverts > INT32_MAX || total_verts > INT32_MAX)
-        fail("navmesh too large (more than 2^31 polygons or vertices)");
+    for (const auto& t : tiles) max_polys = std::max(max_polys, t->npolys);
     const unsigned int tile_bits = bits_for(static_cast<unsigned int>(tiles.size()));
     const unsigned int poly_bits = bits_for(static_cast<unsigned int>(max_polys));
     if (tile_bits + poly_bits > 22)
@@ -1528,9 +1680,26 @@ void NavMeshCore::assemble(std::vector<std::unique_ptr<TileMesh>>& tiles) {
     }
     np.maxTiles = static_cast<int>(tiles.size());
     np.maxPolys = max_polys;
-    nav.reset(dtAllocNavMesh());
-    if (!nav) fail("dtAllocNavMesh failed (out of memory)");
-    if (dtStatusFailed(nav->init(&np))) fail("dtNavMesh::init failed");
+    std::unique_ptr<dtNavMesh, NavMeshDel> navmesh(dtAllocNavMesh());
+    if (!navmesh) fail("dtAllocNavMesh failed (out of memory)");
+    if (dtStatusFailed(navmesh->init(&np))) fail("dtNavMesh::init failed");
+    return navmesh;
+}
+
+void NavMeshCore::assemble(std::vector<std::unique_ptr<TileMesh>>& tiles) {
+    const rcConfig& g = cfg;
+    nvp = g.maxVertsPerPoly;
+
+    long long total = 0, total_dverts = 0, total_dtris = 0, total_verts = 0;
+    for (const auto& t : tiles) {
+        total += t->npolys;
+        total_verts += t->nverts;
+        total_dverts += static_cast<long long>(t->dverts.size() / 3);
+        total_dtris += static_cast<long long>(t->dtris.size() / 4);
+    }
+    if (total > INT32_MAX || total_dverts > INT32_MAX || total_verts > INT32_MAX)
+        fail("navmesh too large (more than 2^31 polygons or vertices)");
+    nav = new_navmesh(tiles);
     first_by_tile_index.assign(static_cast<size_t>(nav->getMaxTiles()), -1);
 
     // Copy-out buffers.
@@ -1854,6 +2023,7 @@ void NavMeshCore::build(const float* vin, int nv, const int* tin, int nt, const 
     } else {
         tiles = build_tiled(in, s, AUTO_TILE_SIZE);
     }
+    if (tile_size > 0) border_island_polygons = drop_border_islands(tiles, s);
     assemble(tiles);
 
     build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -2292,11 +2462,13 @@ NB_MODULE(_recast, m) {
                  d["tileGrid"] = nb::make_tuple(n.tiles_x, n.tiles_y);
                  d["tiles"] = static_cast<int>(n.tile_first.size());
                  d["autoTiled"] = n.auto_fallback;
+                 d["borderIslandPolygons"] = n.border_island_polygons;
                  return d;
              },
              "the resolved rcConfig (voxel units; width/height: the whole grid) as a dict, plus the "
              "tiling: tileSize (0: solo), borderSize, tileGrid (x, z tile counts), tiles (non-empty), "
-             "autoTiled (automatic mode fell back to tiles because the solo build was too big)")
+             "autoTiled (automatic mode fell back to tiles because the solo build was too big), "
+             "borderIslandPolygons (polygons of parts under minRegionArea cells at tile borders taken out)")
         .def("raycast",
              [](const NavMeshCore& n, Vec3In a, Vec3In b, ExtIn extents) {
                  float pa[3], pb[3], ext[3] = {n.default_ext[0], n.default_ext[1], n.default_ext[2]};
