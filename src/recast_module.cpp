@@ -1593,7 +1593,8 @@ int NavMeshCore::drop_border_islands(std::vector<std::unique_ptr<TileMesh>>& til
                     if (p.neis[j] & DT_EXT_LINK) on_border[gi] = 1;
                 for (unsigned int l = p.firstLink; l != DT_NULL_LINK; l = tile->links[l].next) {
                     const dtPolyRef ref = tile->links[l].ref;
-                    const int gk = first[tile_of_index[probe->decodePolyIdTile(ref)]] + static_cast<int>(probe->decodePolyIdPoly(ref));
+                    const int gk = first[tile_of_index[probe->decodePolyIdTile(ref)]] +
+                                   static_cast<int>(probe->decodePolyIdPoly(ref));
                     const int a = root(gi), b = root(gk);
                     if (a != b) part[std::max(a, b)] = std::min(a, b);
                 }
@@ -1609,6 +1610,9 @@ int NavMeshCore::drop_border_islands(std::vector<std::unique_ptr<TileMesh>>& til
         std::vector<int> fill(start.begin(), start.end() - 1);
         for (size_t i = 0; i < part.size(); ++i) order[fill[part[i]]++] = static_cast<int>(i);
     }
+    auto tile_of = [&](int gi) {  // the tile holding polygon gi
+        return static_cast<size_t>(std::upper_bound(first.begin(), first.end(), gi) - first.begin() - 1);
+    };
     std::vector<std::vector<int>> counted(tiles.size());  // by tile and region: the part that counted its cells
     for (size_t k = 0; k < tiles.size(); ++k) counted[k].assign(tiles[k]->region_cells.size(), -1);
     std::vector<std::vector<char>> keep(tiles.size());
@@ -1620,7 +1624,7 @@ int NavMeshCore::drop_border_islands(std::vector<std::unique_ptr<TileMesh>>& til
         bool border = false;
         for (int q = start[r]; q < start[r + 1]; ++q) {
             const int gi = order[q];
-            const size_t k = static_cast<size_t>(std::upper_bound(first.begin(), first.end(), gi) - first.begin() - 1);
+            const size_t k = tile_of(gi);
             const unsigned short reg = tiles[k]->regs[gi - first[k]];
             border = border || on_border[gi];
             if (reg >= counted[k].size()) cells += min_cells;  // a region no cell was counted of: keep its part
@@ -1632,7 +1636,7 @@ int NavMeshCore::drop_border_islands(std::vector<std::unique_ptr<TileMesh>>& til
         if (!border || cells >= min_cells) continue;
         for (int q = start[r]; q < start[r + 1]; ++q) {
             const int gi = order[q];
-            const size_t k = static_cast<size_t>(std::upper_bound(first.begin(), first.end(), gi) - first.begin() - 1);
+            const size_t k = tile_of(gi);
             keep[k][gi - first[k]] = 0;
             ++dropped;
         }
