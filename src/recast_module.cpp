@@ -219,17 +219,21 @@ void check_settings(const Settings& s) {
 
 // ---------------------------------------------------------------- one tile
 
-// The Recast output of one tile, copied out, plus its Detour tile data.
+// The Recast output of one tile, copied out in Recast's own layout (what dtCreateNavMeshData reads, so that the
+// tile's Detour data can be made again without some polygons: drop_border_islands), plus its Detour tile data.
 struct TileMesh {
     int tx = 0, ty = 0;
+    int gx0 = 0, gz0 = 0;                 // global grid cell of the tile's first (non-border) cell
     int nverts = 0, npolys = 0;
-    std::vector<int32_t> gverts;          // (nverts,3): global grid x cell, y cell, global grid z cell
-    std::vector<unsigned short> polys;    // (npolys,nvp) local vertex indices, RC_MESH_NULL_IDX padded
+    float bmin[3] = {0, 0, 0}, bmax[3] = {0, 0, 0};  // the poly mesh's bounds, world
+    std::vector<unsigned short> verts;    // (nverts,3) as rcPolyMesh: grid x, y, z cells from bmin
+    std::vector<unsigned short> polys;    // (npolys,2 nvp) as rcPolyMesh: vertex indices, then neighbours / portal flags
     std::vector<unsigned char> areas;     // (npolys,)
     std::vector<unsigned short> regs;     // (npolys,) local region ids
+    std::vector<unsigned int> dmeshes;    // (npolys,4) as rcPolyMeshDetail: vertex base, count, triangle base, count
     std::vector<float> dverts;            // (DV,3) world
-    std::vector<int32_t> dtris;           // (DT,3) local detail vertex indices
-    std::vector<int32_t> dpoly;           // (DT,) local polygon
+    std::vector<unsigned char> dtris;     // (DT,4) as rcPolyMeshDetail: vertex indices from the base, edge flags
+    std::vector<int> region_cells;        // tiled builds: each region's cells (spans) inside the tile, by region id
     std::unique_ptr<unsigned char, DtFreeDel> data;  // dtCreateNavMeshData output
     int data_size = 0;
     std::string empty_reason;             // why the tile has no polygons (npolys == 0)
@@ -1316,6 +1320,113 @@ struct Input {
     int nt;
 };
 
+// Each region's cells (spans) inside the tile, by region id: what Recast's rcBuildRegions counts of a region when
+// it weighs it against minRegionArea (the border's spans, painted RC_BORDER_REG, belong to no region).
+std::vector<int> region_cells(const rcCompactHeightfield& chf) {
+    std::vector<int> cells(static_cast<size_t>(chf.maxRegions) + 1, 0);
+    for (int i = 0; i < chf.spanCount; ++i) {
+        const unsigned short reg = chf.spans[i].reg;
+        if (reg == 0 || (reg & RC_BORDER_REG)) continue;
+        if (reg >= cells.size()) cells.resize(static_cast<size_t>(reg) + 1, 0);
+        ++cells[reg];
+    }
+    return cells;
+}
+
+// The tile's Detour data (t.data) from its copied-out Recast arrays; false when dtCreateNavMeshData fails.
+bool make_tile_data(TileMesh& t, int nvp, const rcConfig& c, const Settings& s) {
+    const std::vector<unsigned short> flags(static_cast<size_t>(t.npolys), 1);  // Detour's default filter needs a non-zero flag
+    dtNavMeshCreateParams params;
+    std::memset(&params, 0, sizeof(params));
+    params.verts = t.verts.data();
+    params.vertCount = t.nverts;
+    params.polys = t.polys.data();
+    params.polyAreas = t.areas.data();
+    params.polyFlags = flags.data();
+    params.polyCount = t.npolys;
+    params.nvp = nvp;
+    params.detailMeshes = t.dmeshes.data();
+    params.detailVerts = t.dverts.data();
+    params.detailVertsCount = static_cast<int>(t.dverts.size() / 3);
+    params.detailTris = t.dtris.data();
+    params.detailTriCount = static_cast<int>(t.dtris.size() / 4);
+    params.walkableHeight = static_cast<float>(s.agent_height);
+    params.walkableRadius = static_cast<float>(s.agent_radius);
+    params.walkableClimb = static_cast<float>(s.agent_max_climb);
+    params.tileX = t.tx;
+    params.tileY = t.ty;
+    params.tileLayer = 0;
+    rcVcopy(params.bmin, t.bmin);
+    rcVcopy(params.bmax, t.bmax);
+    params.cs = c.cs;
+    params.ch = c.ch;
+    params.buildBvTree = true;
+    unsigned char* data = nullptr;
+    int data_size = 0;
+    if (!dtCreateNavMeshData(&params, &data, &data_size)) return false;
+    t.data.reset(data);
+    t.data_size = data_size;
+    return true;
+}
+
+// Keeps only the polygons of `t` whose `keep` is set: their vertices, neighbours (renumbered), detail meshes and the
+// lists of polygons whose detail was redone. A kept polygon's neighbour is kept too (drop_border_islands drops whole
+// connected parts); `t.data` is stale until make_tile_data makes it again.
+void keep_tile_polygons(TileMesh& t, const std::vector<char>& keep, int nvp) {
+    std::vector<int> new_poly(static_cast<size_t>(t.npolys), -1), new_vert(static_cast<size_t>(t.nverts), -1);
+    int npolys = 0, nverts = 0;
+    for (int i = 0; i < t.npolys; ++i) {
+        if (!keep[i]) continue;
+        new_poly[i] = npolys++;
+        for (int j = 0; j < nvp; ++j) {
+            const unsigned short v = t.polys[static_cast<size_t>(i) * 2 * nvp + j];
+            if (v != RC_MESH_NULL_IDX && new_vert[v] < 0) new_vert[v] = nverts++;
+        }
+    }
+    std::vector<unsigned short> verts(static_cast<size_t>(nverts) * 3), polys;
+    for (int v = 0; v < t.nverts; ++v)
+        if (new_vert[v] >= 0) std::copy(&t.verts[v * 3], &t.verts[v * 3] + 3, &verts[new_vert[v] * 3]);
+    std::vector<unsigned char> areas, dtris;
+    std::vector<unsigned short> regs;
+    std::vector<unsigned int> dmeshes;
+    std::vector<float> dverts;
+    polys.reserve(static_cast<size_t>(npolys) * 2 * nvp);
+    for (int i = 0; i < t.npolys; ++i) {
+        if (!keep[i]) continue;
+        const unsigned short* p = &t.polys[static_cast<size_t>(i) * 2 * nvp];
+        for (int j = 0; j < nvp; ++j) polys.push_back(p[j] == RC_MESH_NULL_IDX ? p[j] : static_cast<unsigned short>(new_vert[p[j]]));
+        for (int j = nvp; j < 2 * nvp; ++j) {  // a neighbour's index, or RC_MESH_NULL_IDX, or 0x8000 | a portal's side
+            const unsigned short n = p[j];
+            polys.push_back(n == RC_MESH_NULL_IDX || (n & 0x8000) || new_poly[n] < 0 ? (n & 0x8000 ? n : RC_MESH_NULL_IDX)
+                                                                                  : static_cast<unsigned short>(new_poly[n]));
+        }
+        areas.push_back(t.areas[i]);
+        regs.push_back(t.regs[i]);
+        const unsigned int* m = &t.dmeshes[static_cast<size_t>(i) * 4];
+        dmeshes.insert(dmeshes.end(), {static_cast<unsigned int>(dverts.size() / 3), m[1],
+                                       static_cast<unsigned int>(dtris.size() / 4), m[3]});
+        dverts.insert(dverts.end(), &t.dverts[static_cast<size_t>(m[0]) * 3], &t.dverts[static_cast<size_t>(m[0] + m[1]) * 3]);
+        dtris.insert(dtris.end(), &t.dtris[static_cast<size_t>(m[2]) * 4], &t.dtris[static_cast<size_t>(m[2] + m[3]) * 4]);
+    }
+    auto renumber = [&](std::vector<int32_t>& list) {
+        std::vector<int32_t> kept;
+        for (int32_t i : list)
+            if (new_poly[i] >= 0) kept.push_back(new_poly[i]);
+        list.swap(kept);
+    };
+    renumber(t.detail_redone);
+    renumber(t.detail_resampled);
+    t.nverts = nverts;
+    t.npolys = npolys;
+    t.verts.swap(verts);
+    t.polys.swap(polys);
+    t.areas.swap(areas);
+    t.regs.swap(regs);
+    t.dmeshes.swap(dmeshes);
+    t.dverts.swap(dverts);
+    t.dtris.swap(dtris);
+}
+
 // Runs Recast's pipeline for one tile (`c` holds its grid, bounds and border)
 // over the triangles `tris` (ntris), and fills `out`. `gx0`, `gz0`: the global
 // grid cell of the tile's first (non-border) cell. `solo` marks the whole-grid
@@ -1444,79 +1555,29 @@ void build_tile(const Input& in, const int* tris, int ntris, const rcConfig& c, 
         too_big("rcBuildPolyMeshDetail failed");
     out.detail_redone = redo_detail_off_storey(ctx, *pmesh, *chf, c, dmesh, too_big);
     out.detail_resampled = resample_detail_off_floor(ctx, *pmesh, *chf, c, dmesh, out.detail_redone, too_big);
+    if (c.borderSize > 0) out.region_cells = region_cells(*chf);
     chf.reset();
     cset.reset();
 
-    // 6. Copy the mesh data out (vertices in global grid cells).
-    rcPolyMesh& pm = *pmesh;
-    const int nvp = pm.nvp;
+    // 6. Copy the mesh data out, as Recast lays it out.
+    const rcPolyMesh& pm = *pmesh;
+    const rcPolyMeshDetail& dm = *dmesh;
+    out.gx0 = gx0;
+    out.gz0 = gz0;
     out.nverts = pm.nverts;
     out.npolys = pm.npolys;
-    out.gverts.resize(static_cast<size_t>(pm.nverts) * 3);
-    for (int i = 0; i < pm.nverts; ++i) {
-        const unsigned short* v = &pm.verts[i * 3];
-        out.gverts[i * 3 + 0] = gx0 + v[0];
-        out.gverts[i * 3 + 1] = v[1];
-        out.gverts[i * 3 + 2] = gz0 + v[2];
-    }
-    out.polys.resize(static_cast<size_t>(pm.npolys) * nvp);
-    out.areas.resize(pm.npolys);
-    out.regs.resize(pm.npolys);
-    for (int i = 0; i < pm.npolys; ++i) {
-        std::copy(&pm.polys[i * 2 * nvp], &pm.polys[i * 2 * nvp] + nvp, &out.polys[static_cast<size_t>(i) * nvp]);
-        out.areas[i] = pm.areas[i];
-        out.regs[i] = pm.regs[i];
-        pm.flags[i] = 1;  // Detour's default filter needs a non-zero flag
-    }
-    const rcPolyMeshDetail& dm = *dmesh;
+    rcVcopy(out.bmin, pm.bmin);
+    rcVcopy(out.bmax, pm.bmax);
+    out.verts.assign(pm.verts, pm.verts + static_cast<size_t>(pm.nverts) * 3);
+    out.polys.assign(pm.polys, pm.polys + static_cast<size_t>(pm.npolys) * 2 * pm.nvp);
+    out.areas.assign(pm.areas, pm.areas + pm.npolys);
+    out.regs.assign(pm.regs, pm.regs + pm.npolys);
+    out.dmeshes.assign(dm.meshes, dm.meshes + static_cast<size_t>(dm.nmeshes) * 4);
     out.dverts.assign(dm.verts, dm.verts + static_cast<size_t>(dm.nverts) * 3);
-    out.dtris.reserve(static_cast<size_t>(dm.ntris) * 3);
-    out.dpoly.reserve(dm.ntris);
-    for (int i = 0; i < dm.nmeshes; ++i) {
-        const unsigned int vbase = dm.meshes[i * 4 + 0];
-        const unsigned int tbase = dm.meshes[i * 4 + 2];
-        const unsigned int tcount = dm.meshes[i * 4 + 3];
-        for (unsigned int k = 0; k < tcount; ++k) {
-            const unsigned char* t = &dm.tris[(tbase + k) * 4];
-            out.dtris.push_back(static_cast<int32_t>(vbase + t[0]));
-            out.dtris.push_back(static_cast<int32_t>(vbase + t[1]));
-            out.dtris.push_back(static_cast<int32_t>(vbase + t[2]));
-            out.dpoly.push_back(i);
-        }
-    }
+    out.dtris.assign(dm.tris, dm.tris + static_cast<size_t>(dm.ntris) * 4);
 
     // 7. Detour tile data.
-    dtNavMeshCreateParams params;
-    std::memset(&params, 0, sizeof(params));
-    params.verts = pm.verts;
-    params.vertCount = pm.nverts;
-    params.polys = pm.polys;
-    params.polyAreas = pm.areas;
-    params.polyFlags = pm.flags;
-    params.polyCount = pm.npolys;
-    params.nvp = pm.nvp;
-    params.detailMeshes = dm.meshes;
-    params.detailVerts = dm.verts;
-    params.detailVertsCount = dm.nverts;
-    params.detailTris = dm.tris;
-    params.detailTriCount = dm.ntris;
-    params.walkableHeight = static_cast<float>(s.agent_height);
-    params.walkableRadius = static_cast<float>(s.agent_radius);
-    params.walkableClimb = static_cast<float>(s.agent_max_climb);
-    params.tileX = out.tx;
-    params.tileY = out.ty;
-    params.tileLayer = 0;
-    rcVcopy(params.bmin, pm.bmin);
-    rcVcopy(params.bmax, pm.bmax);
-    params.cs = c.cs;
-    params.ch = c.ch;
-    params.buildBvTree = true;
-    unsigned char* data = nullptr;
-    int data_size = 0;
-    if (!dtCreateNavMeshData(&params, &data, &data_size))
-        too_big("dtCreateNavMeshData failed (too many vertices or polygons for one tile?)");
-    out.data.reset(data);
-    out.data_size = data_size;
+    if (!make_tile_data(out, pm.nvp, c, s)) too_big("dtCreateNavMeshData failed (too many vertices or polygons for one tile?)");
 }
 
 // ---------------------------------------------------------------- navmesh
@@ -1547,6 +1608,7 @@ public:
     int tiles_x = 1, tiles_y = 1;       // tile grid
     int border_size = 0;
     bool auto_fallback = false;         // automatic mode: solo was too big, built with tiles
+    int border_island_polygons = 0;     // polygons of the small parts at tile borders taken out (drop_border_islands)
     double build_seconds = 0.0;
     float climb_tolerance = 0.0f;
     float default_ext[3] = {0, 0, 0};
@@ -1680,6 +1742,8 @@ private:
     std::vector<std::unique_ptr<TileMesh>> build_solo(const Input& in, const Settings& s);
     std::vector<std::unique_ptr<TileMesh>> build_tiled(const Input& in, const Settings& s, int ts);
     void assemble(std::vector<std::unique_ptr<TileMesh>>& tiles);
+    std::unique_ptr<dtNavMesh, NavMeshDel> new_navmesh(const std::vector<std::unique_ptr<TileMesh>>& tiles) const;
+    int drop_border_islands(std::vector<std::unique_ptr<TileMesh>>& tiles, const Settings& s);
     void link_topology();
 };
 
@@ -1814,22 +1878,117 @@ std::vector<std::unique_ptr<TileMesh>> NavMeshCore::build_tiled(const Input& in,
     return out;
 }
 
-void NavMeshCore::assemble(std::vector<std::unique_ptr<TileMesh>>& tiles) {
-    const rcConfig& g = cfg;
-    nvp = g.maxVertsPerPoly;
+// Recast removes a connected group of regions smaller than minRegionArea cells from a tile, but not one that
+// touches the tile's border, whose size one tile cannot tell; so a tiled navmesh keeps small parts that a tile border
+// cuts or grazes (a plinth's top, a sliver of floor) where a solo build of the same level drops them
+// (docs/navmesh.md, "Islands at tile borders"). Joined across the tiles by Detour's links, a part's size is known:
+// the polygons of each connected part that has an edge on a tile border and fewer than minRegionArea cells in all
+// (its regions' cells summed over its tiles) are taken out of their tiles, whose Detour data is made again, so that
+// no query of the navmesh meets them; a tile left with none is left out. Every other part stays as Recast built it.
+// Returns the number of polygons taken out.
+int NavMeshCore::drop_border_islands(std::vector<std::unique_ptr<TileMesh>>& tiles, const Settings& s) {
+    const int min_cells = cfg.minRegionArea, max_verts = cfg.maxVertsPerPoly;
+    if (min_cells <= 0 || tiles.empty()) return 0;
+    // A navmesh of the tiles as they are, for its links: the tiles keep their data (no DT_TILE_FREE_DATA).
+    std::vector<int> first(tiles.size() + 1, 0);
+    for (size_t k = 0; k < tiles.size(); ++k) first[k + 1] = first[k] + tiles[k]->npolys;
+    std::vector<int> part(static_cast<size_t>(first.back()));
+    std::vector<char> on_border(part.size(), 0);
+    for (size_t i = 0; i < part.size(); ++i) part[i] = static_cast<int>(i);
+    auto root = [&](int i) {
+        while (part[i] != i) i = part[i] = part[part[i]];
+        return i;
+    };
+    {
+        std::unique_ptr<dtNavMesh, NavMeshDel> probe = new_navmesh(tiles);
+        std::vector<dtTileRef> refs(tiles.size());
+        std::vector<int> tile_of_index(static_cast<size_t>(probe->getMaxTiles()), -1);
+        for (size_t k = 0; k < tiles.size(); ++k) {
+            if (dtStatusFailed(probe->addTile(tiles[k]->data.get(), tiles[k]->data_size, 0, 0, &refs[k])))
+                fail("dtNavMesh::addTile failed in tile (" + std::to_string(tiles[k]->tx) + ", " +
+                     std::to_string(tiles[k]->ty) + ")");
+            tile_of_index[probe->decodePolyIdTile(static_cast<dtPolyRef>(refs[k]))] = static_cast<int>(k);
+        }
+        for (size_t k = 0; k < tiles.size(); ++k) {
+            const dtMeshTile* tile = probe->getTileByRef(refs[k]);
+            for (int ip = 0; ip < tile->header->polyCount; ++ip) {
+                const dtPoly& p = tile->polys[ip];
+                const int gi = first[k] + ip;
+                for (int j = 0; j < p.vertCount; ++j)
+                    if (p.neis[j] & DT_EXT_LINK) on_border[gi] = 1;
+                for (unsigned int l = p.firstLink; l != DT_NULL_LINK; l = tile->links[l].next) {
+                    const dtPolyRef ref = tile->links[l].ref;
+                    const int gk = first[tile_of_index[probe->decodePolyIdTile(ref)]] +
+                                   static_cast<int>(probe->decodePolyIdPoly(ref));
+                    const int a = root(gi), b = root(gk);
+                    if (a != b) part[std::max(a, b)] = std::min(a, b);
+                }
+            }
+        }
+    }
+    // Each part's cells, every region of it counted once (its polygons visited part by part).
+    std::vector<int> order(part.size()), start(part.size() + 1, 0);
+    for (size_t i = 0; i < part.size(); ++i) part[i] = root(static_cast<int>(i));  // each polygon's part, by its root
+    for (size_t i = 0; i < part.size(); ++i) ++start[part[i] + 1];
+    for (size_t r = 0; r < part.size(); ++r) start[r + 1] += start[r];
+    {
+        std::vector<int> fill(start.begin(), start.end() - 1);
+        for (size_t i = 0; i < part.size(); ++i) order[fill[part[i]]++] = static_cast<int>(i);
+    }
+    auto tile_of = [&](int gi) {  // the tile holding polygon gi
+        return static_cast<size_t>(std::upper_bound(first.begin(), first.end(), gi) - first.begin() - 1);
+    };
+    std::vector<std::vector<int>> counted(tiles.size());  // by tile and region: the part that counted its cells
+    for (size_t k = 0; k < tiles.size(); ++k) counted[k].assign(tiles[k]->region_cells.size(), -1);
+    std::vector<std::vector<char>> keep(tiles.size());
+    for (size_t k = 0; k < tiles.size(); ++k) keep[k].assign(static_cast<size_t>(tiles[k]->npolys), 1);
+    int dropped = 0;
+    for (size_t r = 0; r < part.size(); ++r) {
+        if (start[r] == start[r + 1]) continue;
+        long long cells = 0;
+        bool border = false;
+        for (int q = start[r]; q < start[r + 1]; ++q) {
+            const int gi = order[q];
+            const size_t k = tile_of(gi);
+            const unsigned short reg = tiles[k]->regs[gi - first[k]];
+            border = border || on_border[gi];
+            if (reg >= counted[k].size()) cells += min_cells;  // a region no cell was counted of: keep its part
+            else if (counted[k][reg] != static_cast<int>(r)) {
+                counted[k][reg] = static_cast<int>(r);
+                cells += tiles[k]->region_cells[reg];
+            }
+        }
+        if (!border || cells >= min_cells) continue;
+        for (int q = start[r]; q < start[r + 1]; ++q) {
+            const int gi = order[q];
+            const size_t k = tile_of(gi);
+            keep[k][gi - first[k]] = 0;
+            ++dropped;
+        }
+    }
+    if (dropped == 0) return 0;
+    std::vector<std::unique_ptr<TileMesh>> kept;
+    for (size_t k = 0; k < tiles.size(); ++k) {
+        TileMesh& t = *tiles[k];
+        if (std::find(keep[k].begin(), keep[k].end(), 0) != keep[k].end()) {
+            keep_tile_polygons(t, keep[k], max_verts);
+            t.data.reset();
+            t.data_size = 0;
+            if (t.npolys > 0 && !make_tile_data(t, max_verts, cfg, s))
+                fail("dtCreateNavMeshData failed in tile (" + std::to_string(t.tx) + ", " + std::to_string(t.ty) + ")");
+        }
+        if (t.npolys > 0) kept.push_back(std::move(tiles[k]));
+    }
+    tiles.swap(kept);
+    return dropped;
+}
 
+// An empty Detour navmesh for `tiles` (its origin and tile width from the build's grid and tiling).
+std::unique_ptr<dtNavMesh, NavMeshDel> NavMeshCore::new_navmesh(const std::vector<std::unique_ptr<TileMesh>>& tiles) const {
+    const rcConfig& g = cfg;
     // Detour's 32-bit polygon references: salt + tile + poly bits, salt >= 10.
     int max_polys = 0;
-    long long total = 0, total_dverts = 0, total_dtris = 0, total_verts = 0;
-    for (const auto& t : tiles) {
-        max_polys = std::max(max_polys, t->npolys);
-        total += t->npolys;
-        total_verts += t->nverts;
-        total_dverts += static_cast<long long>(t->dverts.size() / 3);
-        total_dtris += static_cast<long long>(t->dpoly.size());
-    }
-    if (total > INT32_MAX || total_dverts > INT32_MAX || total_verts > INT32_MAX)
-        fail("navmesh too large (more than 2^31 polygons or vertices)");
+    for (const auto& t : tiles) max_polys = std::max(max_polys, t->npolys);
     const unsigned int tile_bits = bits_for(static_cast<unsigned int>(tiles.size()));
     const unsigned int poly_bits = bits_for(static_cast<unsigned int>(max_polys));
     if (tile_bits + poly_bits > 22)
@@ -1850,9 +2009,26 @@ void NavMeshCore::assemble(std::vector<std::unique_ptr<TileMesh>>& tiles) {
     }
     np.maxTiles = static_cast<int>(tiles.size());
     np.maxPolys = max_polys;
-    nav.reset(dtAllocNavMesh());
-    if (!nav) fail("dtAllocNavMesh failed (out of memory)");
-    if (dtStatusFailed(nav->init(&np))) fail("dtNavMesh::init failed");
+    std::unique_ptr<dtNavMesh, NavMeshDel> navmesh(dtAllocNavMesh());
+    if (!navmesh) fail("dtAllocNavMesh failed (out of memory)");
+    if (dtStatusFailed(navmesh->init(&np))) fail("dtNavMesh::init failed");
+    return navmesh;
+}
+
+void NavMeshCore::assemble(std::vector<std::unique_ptr<TileMesh>>& tiles) {
+    const rcConfig& g = cfg;
+    nvp = g.maxVertsPerPoly;
+
+    long long total = 0, total_dverts = 0, total_dtris = 0, total_verts = 0;
+    for (const auto& t : tiles) {
+        total += t->npolys;
+        total_verts += t->nverts;
+        total_dverts += static_cast<long long>(t->dverts.size() / 3);
+        total_dtris += static_cast<long long>(t->dtris.size() / 4);
+    }
+    if (total > INT32_MAX || total_dverts > INT32_MAX || total_verts > INT32_MAX)
+        fail("navmesh too large (more than 2^31 polygons or vertices)");
+    nav = new_navmesh(tiles);
     first_by_tile_index.assign(static_cast<size_t>(nav->getMaxTiles()), -1);
 
     // Copy-out buffers.
@@ -1899,7 +2075,7 @@ void NavMeshCore::assemble(std::vector<std::unique_ptr<TileMesh>>& tiles) {
         // Vertices: world coordinates from global grid cells; tiles share equal ones.
         vmap.resize(static_cast<size_t>(t.nverts));
         for (int i = 0; i < t.nverts; ++i) {
-            const int32_t gx = t.gverts[i * 3 + 0], gy = t.gverts[i * 3 + 1], gz = t.gverts[i * 3 + 2];
+            const int32_t gx = t.gx0 + t.verts[i * 3 + 0], gy = t.verts[i * 3 + 1], gz = t.gz0 + t.verts[i * 3 + 2];
             if (dedup) {
                 const uint64_t key = (static_cast<uint64_t>(gx) << 40) | (static_cast<uint64_t>(gz) << 16) |
                                      static_cast<uint64_t>(gy & 0xffff);
@@ -1917,7 +2093,7 @@ void NavMeshCore::assemble(std::vector<std::unique_ptr<TileMesh>>& tiles) {
         // Polygons, areas, regions (offset so that ids stay unique across tiles).
         int max_region = 0;
         for (int i = 0; i < t.npolys; ++i) {
-            const unsigned short* p = &t.polys[static_cast<size_t>(i) * nvp];
+            const unsigned short* p = &t.polys[static_cast<size_t>(i) * 2 * nvp];
             int32_t* out = &polys[static_cast<size_t>(first + i) * nvp];
             for (int j = 0; j < nvp; ++j) {
                 if (p[j] == RC_MESH_NULL_IDX) break;
@@ -1931,8 +2107,13 @@ void NavMeshCore::assemble(std::vector<std::unique_ptr<TileMesh>>& tiles) {
         // Detail mesh.
         const int32_t dbase = static_cast<int32_t>(dverts.size() / 3);
         for (float v : t.dverts) dverts.push_back(static_cast<double>(v));
-        for (int32_t v : t.dtris) dtris.push_back(v + dbase);
-        for (int32_t p : t.dpoly) dtri_poly.push_back(p + first);
+        for (int i = 0; i < t.npolys; ++i) {
+            const unsigned int vbase = t.dmeshes[i * 4 + 0], tbase = t.dmeshes[i * 4 + 2], tcount = t.dmeshes[i * 4 + 3];
+            for (unsigned int k = tbase; k < tbase + tcount; ++k) {
+                for (int q = 0; q < 3; ++q) dtris.push_back(dbase + static_cast<int32_t>(vbase + t.dtris[k * 4 + q]));
+                dtri_poly.push_back(first + i);
+            }
+        }
         overlaps.insert(overlaps.end(), t.overlaps.begin(), t.overlaps.end());
         if (t.repartitioned) repartitioned.insert(repartitioned.end(), {t.tx, t.ty});
         for (int32_t p : t.detail_redone) detail_redone.push_back(p + first);
@@ -2171,6 +2352,7 @@ void NavMeshCore::build(const float* vin, int nv, const int* tin, int nt, const 
     } else {
         tiles = build_tiled(in, s, AUTO_TILE_SIZE);
     }
+    if (tile_size > 0) border_island_polygons = drop_border_islands(tiles, s);
     assemble(tiles);
 
     build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -2609,11 +2791,13 @@ NB_MODULE(_recast, m) {
                  d["tileGrid"] = nb::make_tuple(n.tiles_x, n.tiles_y);
                  d["tiles"] = static_cast<int>(n.tile_first.size());
                  d["autoTiled"] = n.auto_fallback;
+                 d["borderIslandPolygons"] = n.border_island_polygons;
                  return d;
              },
              "the resolved rcConfig (voxel units; width/height: the whole grid) as a dict, plus the "
              "tiling: tileSize (0: solo), borderSize, tileGrid (x, z tile counts), tiles (non-empty), "
-             "autoTiled (automatic mode fell back to tiles because the solo build was too big)")
+             "autoTiled (automatic mode fell back to tiles because the solo build was too big), "
+             "borderIslandPolygons (polygons of parts under minRegionArea cells at tile borders taken out)")
         .def("raycast",
              [](const NavMeshCore& n, Vec3In a, Vec3In b, ExtIn extents) {
                  float pa[3], pb[3], ext[3] = {n.default_ext[0], n.default_ext[1], n.default_ext[2]};

@@ -705,7 +705,8 @@ def test_the_container_ports_tops_are_out_of_reach(kinds):
 def test_the_theatres_aisles_climb_off_the_axes_to_the_terrace(kinds):
     """The orchestra and plain (0 m), the diazoma and the terrace (16-18 m) are one area through the radial aisles
     and the two flights; aisle steps stand at every angle between the axes; the seats hold no floor but pieces of a
-    few square metres (where Recast's erosion leaves a sliver on a tier 0.84 m deep at about 45 degrees)."""
+    few square metres at most (where Recast's erosion leaves a sliver on a tier 0.84 m deep at about 45 degrees; those
+    under region_min_size² cells at a tile border are dropped as a solo build drops them: none is left on seed 1)."""
     label, nav = areas(kinds["theatre"](1))
     sizes = np.bincount(label, weights=nav.areas)
     main = sizes.argmax()
@@ -714,7 +715,7 @@ def test_the_theatres_aisles_climb_off_the_axes_to_the_terrace(kinds):
     aisles = (y > 1.0) & (y < y.max() - 1.0) & (z > 1.0)
     angles = np.degrees(np.arctan2(z[aisles], x[aisles]))
     assert all(((angles > a) & (angles < a + 30.0)).any() for a in (0.0, 30.0, 60.0, 90.0, 120.0, 150.0))
-    assert np.delete(sizes, main).max() < 10.0
+    assert np.all(np.delete(sizes, main) < 10.0)
 
 
 def test_the_stilt_village_is_one_area_of_decks_over_the_water(kinds):

@@ -497,6 +497,31 @@ def test_tile_size_validation_and_empty_tiles():
     assert adjacency_components(apart) == 2
 
 
+def test_tiled_build_drops_the_small_islands_a_solo_build_drops():
+    """A plinth whose top (3.1 m², 49 cells, after the ledge filter and the erosion: under region_min_size² = 64) straddles
+    a tile border: Recast keeps each half in its tile (a region at a tile border is never dropped), the join drops
+    them as a solo build does; a larger plinth's top cut by two borders (225 cells) stays in both."""
+    # 0.25 m cells, tiles of 32 cells: the grid starts at x = -12, so tile borders run along x = -4 and x = 4
+    level = trimesh.util.concatenate([floor(24, 24), slab((3, 1.5, 3), (4, 0.75, 2)), slab((5, 1.5, 5), (-4, 0.75, -5))])
+    solo, tiled = build(level, cell_size=0.25, tile_size=0), build(level, cell_size=0.25, tile_size=32)
+    assert adjacency_components(solo) == adjacency_components(tiled) == 2  # the floor and the larger plinth's top
+    assert tiled.config()["borderIslandPolygons"] > 0 and solo.config()["borderIslandPolygons"] == 0
+    for nm in (solo, tiled):
+        tops = nm.centres[:, 1] > 1.0
+        assert np.all(np.abs(nm.centres[tops, 0] + 4) < 2.5)  # only the larger plinth's top is floor up there
+        assert nm.areas[tops].sum() > 4.0
+        assert nm.nearest_poly((4, 1.5, 2), extents=(0.5, 0.2, 0.5))[0] == -1  # no polygon of the small top for a query
+    tiles = tile_of(tiled)
+    # the larger top lies in four tiles (borders x = -4, z = -4), some under 64 cells, 225 in all: kept
+    assert len(set(tiles[tiled.centres[:, 1] > 1.0].tolist())) == 4
+    assert tiled.tile_first_polygon[0] == 0 and np.all(np.diff(tiled.tile_first_polygon) > 0)
+    refs = [tiled.poly_ref(i) for i in range(tiled.polygon_count)]
+    assert [tiled.poly_index(r) for r in refs] == list(range(tiled.polygon_count))
+    assert np.all(tiled.polygons[tiled.polygons >= 0] < len(tiled.vertices))
+    assert set(np.unique(tiled.polygons[tiled.polygons >= 0]).tolist()) == set(range(len(tiled.vertices)))
+    assert set(tiled.detail_polygon.tolist()) == set(range(tiled.polygon_count))
+
+
 def boxes(lo: np.ndarray, hi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Vertices (8k,3) and faces (12k,3) of k axis-aligned boxes with corners lo, hi (k,3)."""
     corner = np.array([[x, y, z] for x in (0, 1) for y in (0, 1) for z in (0, 1)], dtype=float)

@@ -7,7 +7,11 @@ fails for size, tiles of 256 cells (also when the solo grid
 exceeds ``max_cells``). ``0`` forces solo, ``n >= 16`` forces
 tiles of ``n`` cells. A tile is rasterised with a border of ``walkableRadius +
 3`` cells. Polygons are numbered tile by tile (tiles in row-major order, x
-fastest), in each tile in Recast's order; a solo build is one tile.
+fastest), in each tile in Recast's order; a solo build is one tile. A tiled
+build drops the connected parts at tile borders smaller than
+``region_min_size``² cells in all, which Recast keeps in a tile (it cannot
+weigh a part a border cuts) and drops from a solo build (docs/navmesh.md,
+"Islands at tile borders").
 
 Memory guard: ``max_cells`` bounds the xz cells rasterised at once, that is
 the solo grid, or one tile with its border (tiles are built one per worker

@@ -161,7 +161,7 @@ class NavMesh:
 
     @property
     def tile_first_polygon(self) -> np.ndarray:
-        """(T,) int32, the index of each tile's first polygon (tiles in row-major order)."""
+        """(T,) int32, the index of each tile's first polygon (tiles holding polygons, in row-major order)."""
         return self._core.tile_first_polygon
 
     @property
