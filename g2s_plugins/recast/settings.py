@@ -127,7 +127,8 @@ class RecastParams(PluginParams):
         "cells that touch only at a corner when no edge of the floor comes within the agent's radius of it (a "
         "corridor 1.7-1.8 m wide at an angle to the grid, or curved, then holds floor all along), and the floor "
         "across a door or gap between kept floor where the level's triangles stand the agent's radius off (a door "
-        "1.4 m wide at any angle opens); recast: Recast's "
+        "1.4 m wide in a wall up to 0.3 m thick opens at any angle on map_analysis's grid, unless a tile seam cuts "
+        "it); recast: Recast's "
         "erosion as shipped (the paper preset); docs/navmesh.md, Curved corridors",
     )
     partition: Literal["auto", "watershed", "monotone", "layers"] = Field(
