@@ -1091,14 +1091,18 @@ void join_clear_runs(const rcCompactHeightfield& chf, const std::vector<unsigned
     const int w = chf.width;
     const double cs = chf.cs, rho = std::sqrt(radius * radius + cs * cs / 4.0);
     const int margin = walkable_radius + 1;
-    auto across = [&](const At& a, int dir) {  // the span across side `dir` of a, or span -1
+    // The module builds at -Os (nanobind's default), where these lambdas, called from many sites, stay calls and
+    // `across` hands its At back through the stack, a stalled load at every return: inlined, the pass takes half the
+    // CPU on the 100k dungeon (docs/navmesh.md, "Doors at an angle to the grid").
+    // across: the span across side `dir` of a, or span -1
+    auto across = [&](const At& a, int dir) __attribute__((always_inline)) {
         const int x = a.x + rcGetDirOffsetX(dir), z = a.z + rcGetDirOffsetY(dir);
         if (a.span < 0 || rcGetCon(chf.spans[a.span], dir) == RC_NOT_CONNECTED) return At{-1, x, z};
         return At{static_cast<int>(chf.cells[x + z * w].index) + rcGetCon(chf.spans[a.span], dir), x, z};
     };
-    auto kept = [&](const At& a) { return a.span >= 0 && chf.areas[a.span] != RC_NULL_AREA; };
-    auto eroded = [&](const At& a) { return a.span >= 0 && before[a.span] != RC_NULL_AREA && chf.areas[a.span] == RC_NULL_AREA; };
-    auto was_floor = [&](const At& a) { return a.span >= 0 && before[a.span] != RC_NULL_AREA; };
+    auto kept = [&](const At& a) __attribute__((always_inline)) { return a.span >= 0 && chf.areas[a.span] != RC_NULL_AREA; };
+    auto eroded = [&](const At& a) __attribute__((always_inline)) { return a.span >= 0 && before[a.span] != RC_NULL_AREA && chf.areas[a.span] == RC_NULL_AREA; };
+    auto was_floor = [&](const At& a) __attribute__((always_inline)) { return a.span >= 0 && before[a.span] != RC_NULL_AREA; };
 
     std::optional<PlanObstacles> obstacles;  // built at the first span asked about
     std::vector<signed char> clear(static_cast<size_t>(chf.spanCount), -1);  // -1: not asked yet
