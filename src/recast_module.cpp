@@ -917,6 +917,34 @@ void drop_ledge_spans(int walkable_height, int walkable_climb, rcHeightfield& hf
             }
 }
 
+// A span of a compact heightfield and its cell (x, z); span -1: none.
+struct At { int span, x, z; };
+
+// The floor before Recast's erosion (`before`) and after it (chf.areas), as join_corners and join_clear_runs walk it.
+// Always inlined: the module builds at -Os (nanobind's default), where these small calls stay calls and `across`
+// hands its At back through the stack, a stalled load at every return; inlined, the clear runs' pass takes half the
+// CPU on the 100k dungeon (docs/navmesh.md, "Doors at an angle to the grid").
+struct ErodedFloor {
+    const rcCompactHeightfield& chf;
+    const std::vector<unsigned char>& before;
+
+    // The span across side `dir` of a, or span -1.
+    __attribute__((always_inline)) At across(const At& a, int dir) const {
+        const int x = a.x + rcGetDirOffsetX(dir), z = a.z + rcGetDirOffsetY(dir);
+        if (a.span < 0 || rcGetCon(chf.spans[a.span], dir) == RC_NOT_CONNECTED) return At{-1, x, z};
+        return At{static_cast<int>(chf.cells[x + z * chf.width].index) + rcGetCon(chf.spans[a.span], dir), x, z};
+    }
+    __attribute__((always_inline)) bool kept(const At& a) const {
+        return a.span >= 0 && chf.areas[a.span] != RC_NULL_AREA;
+    }
+    __attribute__((always_inline)) bool was_floor(const At& a) const {
+        return a.span >= 0 && before[a.span] != RC_NULL_AREA;
+    }
+    __attribute__((always_inline)) bool eroded(const At& a) const {
+        return was_floor(a) && chf.areas[a.span] == RC_NULL_AREA;
+    }
+};
+
 // The triangles that stand in an agent's way on a floor: those with a part between the floor's top plus the agent's
 // climb and its top plus its height, clipped to that band and seen from above (x, z). Binned in squares of BIN cells
 // of the compact heightfield's grid, so a question near a span reads only the triangles near it.
@@ -1087,22 +1115,10 @@ private:
 void join_clear_runs(const rcCompactHeightfield& chf, const std::vector<unsigned char>& before, const float* verts,
                      const int* tris, int ntris, double radius, double climb, double height, int walkable_radius,
                      int reach, std::vector<int>& back) {
-    struct At { int span, x, z; };
+    const ErodedFloor floor{chf, before};
     const int w = chf.width;
     const double cs = chf.cs, rho = std::sqrt(radius * radius + cs * cs / 4.0);
     const int margin = walkable_radius + 1;
-    // The module builds at -Os (nanobind's default), where these lambdas, called from many sites, stay calls and
-    // `across` hands its At back through the stack, a stalled load at every return: inlined, the pass takes half the
-    // CPU on the 100k dungeon (docs/navmesh.md, "Doors at an angle to the grid").
-    // across: the span across side `dir` of a, or span -1
-    auto across = [&](const At& a, int dir) __attribute__((always_inline)) {
-        const int x = a.x + rcGetDirOffsetX(dir), z = a.z + rcGetDirOffsetY(dir);
-        if (a.span < 0 || rcGetCon(chf.spans[a.span], dir) == RC_NOT_CONNECTED) return At{-1, x, z};
-        return At{static_cast<int>(chf.cells[x + z * w].index) + rcGetCon(chf.spans[a.span], dir), x, z};
-    };
-    auto kept = [&](const At& a) __attribute__((always_inline)) { return a.span >= 0 && chf.areas[a.span] != RC_NULL_AREA; };
-    auto eroded = [&](const At& a) __attribute__((always_inline)) { return a.span >= 0 && before[a.span] != RC_NULL_AREA && chf.areas[a.span] == RC_NULL_AREA; };
-    auto was_floor = [&](const At& a) __attribute__((always_inline)) { return a.span >= 0 && before[a.span] != RC_NULL_AREA; };
 
     std::optional<PlanObstacles> obstacles;  // built at the first span asked about
     std::vector<signed char> clear(static_cast<size_t>(chf.spanCount), -1);  // -1: not asked yet
@@ -1123,9 +1139,9 @@ void join_clear_runs(const rcCompactHeightfield& chf, const std::vector<unsigned
         seen.assign(1, m);  // the floor within rho, along its links: every cell without floor beside it needs an obstacle
         for (size_t q = 0; ok && q < seen.size(); ++q)
             for (int dir = 0; ok && dir < 4; ++dir) {
-                const At b = across(seen[q], dir);
+                const At b = floor.across(seen[q], dir);
                 if (!near(b.x, b.z)) continue;
-                if (!was_floor(b)) {
+                if (!floor.was_floor(b)) {
                     const double x0 = chf.bmin[0] + b.x * cs, z0 = chf.bmin[2] + b.z * cs;
                     ok = obstacles->in_square(x0, x0 + cs, z0, z0 + cs, y, climb, height);
                 } else if (std::none_of(seen.begin(), seen.end(), [&](const At& c) { return c.span == b.span; })) {
@@ -1147,8 +1163,8 @@ void join_clear_runs(const rcCompactHeightfield& chf, const std::vector<unsigned
         bool found = false;
         for (size_t q = 0; q < queue.size() && !found; ++q)
             for (int dir = 0; dir < 4; ++dir) {
-                const At c = across(queue[q], dir);
-                if (!kept(c) || visited[c.span] || c.x < x0 || c.x > x1 || c.z < z0 || c.z > z1) continue;
+                const At c = floor.across(queue[q], dir);
+                if (!floor.kept(c) || visited[c.span] || c.x < x0 || c.x > x1 || c.z < z0 || c.z > z1) continue;
                 found = found || c.span == b.span;
                 visited[c.span] = 1;
                 queue.push_back(c);
@@ -1166,7 +1182,7 @@ void join_clear_runs(const rcCompactHeightfield& chf, const std::vector<unsigned
     std::vector<At> run, sides;  // the run's spans; the diagonal steps' side neighbours that are not kept
     std::vector<size_t> step_sides;  // per diagonal step: where its sides start in `sides`
     auto walk = [&](const At& start, int which) {
-        if (!kept(start) || (walked[start.span] >> which & 1)) return;
+        if (!floor.kept(start) || (walked[start.span] >> which & 1)) return;
         walked[start.span] |= static_cast<unsigned char>(1 << which);
         const std::array<int, 2>& step = STEPS[which];
         run.clear();
@@ -1176,27 +1192,27 @@ void join_clear_runs(const rcCompactHeightfield& chf, const std::vector<unsigned
         for (int k = 0; k <= reach; ++k) {
             At next{-1, 0, 0};
             if (step[1] < 0) {
-                next = across(at, step[0]);
+                next = floor.across(at, step[0]);
             } else {
                 step_sides.push_back(sides.size());
                 bool kept_side = false, mismatch = false;
                 for (int order = 0; order < 2; ++order) {
-                    const At side = across(at, order ? step[1] : step[0]);
-                    const At corner = across(side, order ? step[0] : step[1]);
-                    if (corner.span < 0 || !(kept(side) || eroded(side))) continue;
+                    const At side = floor.across(at, order ? step[1] : step[0]);
+                    const At corner = floor.across(side, order ? step[0] : step[1]);
+                    if (corner.span < 0 || !(floor.kept(side) || floor.eroded(side))) continue;
                     mismatch = mismatch || (next.span >= 0 && corner.span != next.span);
                     next = corner;
-                    if (kept(side)) kept_side = true; else sides.push_back(side);
+                    if (floor.kept(side)) kept_side = true; else sides.push_back(side);
                 }
                 if (mismatch) break;
                 if (kept_side) sides.resize(step_sides.back());  // a kept side joins this step already
             }
             if (next.span < 0) break;
-            if (kept(next)) {
+            if (floor.kept(next)) {
                 if (!run.empty() || !sides.empty()) end = next;
                 break;
             }
-            if (!eroded(next)) break;
+            if (!floor.eroded(next)) break;
             run.push_back(next);
             at = next;
         }
@@ -1216,9 +1232,9 @@ void join_clear_runs(const rcCompactHeightfield& chf, const std::vector<unsigned
     // A run's first step enters eroded floor: so walk from the kept spans before each eroded span, each run from its
     // end of lower x (or z), over a side (dir 0: -x, 3: -z, 1: +z) or a corner.
     auto corner = [&](const At& a, int d1, int d2) {  // the span diagonal from a through a floor side, or span -1
-        for (const At& side : {across(a, d1), across(a, d2)}) {
-            const At c = across(side, side.x == a.x ? d1 : d2);
-            if (was_floor(side) && c.span >= 0) return c;
+        for (const At& side : {floor.across(a, d1), floor.across(a, d2)}) {
+            const At c = floor.across(side, side.x == a.x ? d1 : d2);
+            if (floor.was_floor(side) && c.span >= 0) return c;
         }
         return At{-1, 0, 0};
     };
@@ -1227,8 +1243,8 @@ void join_clear_runs(const rcCompactHeightfield& chf, const std::vector<unsigned
             const rcCompactCell& cell = chf.cells[x + z * w];
             for (int i = static_cast<int>(cell.index), e = static_cast<int>(cell.index + cell.count); i < e; ++i) {
                 const At here{i, x, z};
-                if (!eroded(here)) continue;
-                const At minus_x = across(here, 0), minus_z = across(here, 3), plus_z = across(here, 1);
+                if (!floor.eroded(here)) continue;
+                const At minus_x = floor.across(here, 0), minus_z = floor.across(here, 3), plus_z = floor.across(here, 1);
                 walk(minus_x, 0);
                 walk(minus_z, 1);
                 walk(corner(here, 0, 3), 2);  // x then z: from the corner at -x, -z
@@ -1261,18 +1277,11 @@ void join_clear_runs(const rcCompactHeightfield& chf, const std::vector<unsigned
 // the floor across doors and gaps that the level's triangles show clear (a run of up to 3 walkableRadius spans).
 void join_corners(rcCompactHeightfield& chf, const std::vector<unsigned char>& before, int reach,
                   const float* verts, const int* tris, int ntris, const Settings& s, int walkable_radius) {
-    struct At { int span, x, z; };
+    const ErodedFloor floor{chf, before};
     const int w = chf.width;
-    auto across = [&](const At& a, int dir) {  // the span across side `dir` of a, or span -1
-        const int x = a.x + rcGetDirOffsetX(dir), z = a.z + rcGetDirOffsetY(dir);
-        if (a.span < 0 || rcGetCon(chf.spans[a.span], dir) == RC_NOT_CONNECTED) return At{-1, x, z};
-        return At{static_cast<int>(chf.cells[x + z * w].index) + rcGetCon(chf.spans[a.span], dir), x, z};
-    };
-    auto was_floor = [&](const At& a) { return a.span >= 0 && before[a.span] != RC_NULL_AREA; };
-    auto kept = [&](const At& a) { return a.span >= 0 && chf.areas[a.span] != RC_NULL_AREA; };
     auto at_edge = [&](const At& a) {  // a floor span with a side that is not floor: where Recast's distances start
         for (int dir = 0; dir < 4; ++dir)
-            if (!was_floor(across(a, dir))) return true;
+            if (!floor.was_floor(floor.across(a, dir))) return true;
         return false;
     };
     std::vector<At> queue;  // a search reads at most 2 reach^2 spans: a list beats a mark per span of the tile
@@ -1284,7 +1293,7 @@ void join_corners(rcCompactHeightfield& chf, const std::vector<unsigned char>& b
                 if (at_edge(a)) return false;
                 if (static_cast<int>(depth) + 1 >= reach) continue;
                 for (int dir = 0; dir < 4; ++dir) {
-                    const At b = across(a, dir);  // floor: a is no edge span
+                    const At b = floor.across(a, dir);  // floor: a is no edge span
                     bool seen = false;
                     for (const At& c : queue) seen = seen || c.span == b.span;
                     if (!seen) queue.push_back(b);
@@ -1300,14 +1309,14 @@ void join_corners(rcCompactHeightfield& chf, const std::vector<unsigned char>& b
             const rcCompactCell& cell = chf.cells[x + z * w];
             for (int i = static_cast<int>(cell.index), e = static_cast<int>(cell.index + cell.count); i < e; ++i) {
                 const At here{i, x, z};
-                if (!kept(here)) continue;
-                const At b = across(here, 1);  // +z, then -x or +x: each corner pair once, from its lower-z span
-                if (kept(b)) continue;  // inside the kept floor, where most spans are: no corner pair to join
+                if (!floor.kept(here)) continue;
+                const At b = floor.across(here, 1);  // +z, then -x or +x: each corner pair once, from its lower-z span
+                if (floor.kept(b)) continue;  // inside the kept floor, where most spans are: no corner pair to join
                 for (int side : {0, 2}) {
-                    const At a = across(here, side);
-                    if (kept(a)) continue;
-                    if (kept(across(a, 1)) && was_floor(a) && clear_all_round(a)) back.push_back(a.span);
-                    if (kept(across(b, side)) && was_floor(b) && clear_all_round(b)) back.push_back(b.span);
+                    const At a = floor.across(here, side);
+                    if (floor.kept(a)) continue;
+                    if (floor.kept(floor.across(a, 1)) && floor.was_floor(a) && clear_all_round(a)) back.push_back(a.span);
+                    if (floor.kept(floor.across(b, side)) && floor.was_floor(b) && clear_all_round(b)) back.push_back(b.span);
                 }
             }
         }
