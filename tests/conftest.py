@@ -26,19 +26,24 @@ def benchmark(name: str) -> ModuleType:
         sys.path.remove(str(BENCHMARKS))
 
 
-def round_openings(round_script: str, kind: str, preset: str = "map_piece", width_tolerance: float = 0.05) -> list:
-    """The openings ``preset`` finds on ``kind`` of the piece-kinds round ``benchmarks/<round_script>.py`` at 0 degrees,
-    checked to be its known ones, one each (``piece_kinds10.score``, one-to-one), nothing else, within
-    ``width_tolerance`` m of their widths."""
+def piece_openings(level, preset: str) -> list:
+    """The openings the whole pipeline of ``configs/<preset>.yaml`` finds on a sample level (its ``mesh`` and ``name``)."""
     from g2s_core import pipeline
     from g2s_core.config import PRESETS_DIR, load_config
     from g2s_core.mesh import mesh_sha256
     from g2s_core.registry import Registry
 
-    level = getattr(benchmark(round_script), kind)()
     registry = Registry.from_entry_points()
     plan = pipeline.plan(load_config(PRESETS_DIR / f"{preset}.yaml"), registry)
-    openings = list(pipeline.run(plan, registry, level.mesh, level.name, mesh_sha256(level.mesh)).terminals.openings)
+    return list(pipeline.run(plan, registry, level.mesh, level.name, mesh_sha256(level.mesh)).terminals.openings)
+
+
+def round_openings(round_script: str, kind: str, preset: str = "map_piece", width_tolerance: float = 0.05) -> list:
+    """The openings ``preset`` finds on ``kind`` of the piece-kinds round ``benchmarks/<round_script>.py`` at 0 degrees,
+    checked to be its known ones, one each (``piece_kinds10.score``, one-to-one), nothing else, within
+    ``width_tolerance`` m of their widths."""
+    level = getattr(benchmark(round_script), kind)()
+    openings = piece_openings(level, preset)
     known = len(level.openings)
     recalled, missed, correct, other, width_error = benchmark("piece_kinds10").score(level, openings, one_to_one=True)
     assert (recalled, missed, correct, other) == (known, 0, known, 0)

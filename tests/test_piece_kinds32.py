@@ -14,18 +14,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from g2s_core import pipeline
-from g2s_core.config import PRESETS_DIR, load_config
-from g2s_core.mesh import mesh_sha256
-from g2s_core.registry import Registry
 from g2s_plugins.samples import pieces
-from tests.conftest import benchmark, round_openings
-
-
-def _openings(level, preset: str) -> list:
-    registry = Registry.from_entry_points()
-    plan = pipeline.plan(load_config(PRESETS_DIR / f"{preset}.yaml"), registry)
-    return list(pipeline.run(plan, registry, level.mesh, level.name, mesh_sha256(level.mesh)).terminals.openings)
+from tests.conftest import benchmark, piece_openings, round_openings
 
 
 @pytest.mark.parametrize("preset", ["map_piece", "map_piece_sampling"])
@@ -36,14 +26,14 @@ def test_two_doors_either_side_of_a_thin_set_back_post_are_two_openings(preset: 
 
 def test_a_railed_cliff_paths_end_at_45_degrees_is_as_wide_as_the_path_on_the_sampling_route() -> None:
     level = pieces.turned(benchmark("piece_kinds27").cliff_path_railing_gap(), 45.0)
-    found = _openings(level, "map_piece_sampling")
+    found = piece_openings(level, "map_piece_sampling")
     assert len(found) == 2
     assert all(abs(o.width - 3.9) < 0.02 for o in found)  # one 3.86 m before
 
 
 def test_a_revolving_drums_mouth_is_its_two_ways_either_side_of_the_wing_pack() -> None:
     level = benchmark("piece_kinds10").revolving_drum()
-    mouth = [o for o in _openings(level, "map_piece") if o.position[0] > 8.0]
+    mouth = [o for o in piece_openings(level, "map_piece") if o.position[0] > 8.0]
     assert len(mouth) == 2
     assert sorted(o.position[2] > 3.0 for o in mouth) == [False, True]  # one each side of the pack (z 3.0)
     assert all(1.2 < o.width < 1.4 for o in mouth)

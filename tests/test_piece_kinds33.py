@@ -16,18 +16,8 @@ import math
 import numpy as np
 import pytest
 
-from g2s_core import pipeline
-from g2s_core.config import PRESETS_DIR, load_config
-from g2s_core.mesh import mesh_sha256
-from g2s_core.registry import Registry
 from g2s_plugins.samples import pieces
-from tests.conftest import benchmark, round_openings
-
-
-def _openings(level, preset: str) -> list:
-    registry = Registry.from_entry_points()
-    plan = pipeline.plan(load_config(PRESETS_DIR / f"{preset}.yaml"), registry)
-    return list(pipeline.run(plan, registry, level.mesh, level.name, mesh_sha256(level.mesh)).terminals.openings)
+from tests.conftest import benchmark, piece_openings, round_openings
 
 
 @pytest.mark.parametrize("preset", ["map_piece", "map_piece_sampling"])
@@ -39,7 +29,7 @@ def test_a_sitting_walls_stretch_within_the_climb_is_an_opening(preset: str) -> 
 @pytest.mark.parametrize("yaw", [22.0, 45.0])
 def test_both_lanes_of_a_stair_parted_by_a_handrail_keep_their_ends(yaw: float) -> None:
     level = pieces.turned(benchmark("piece_kinds33").stair_central_handrail(), yaw)
-    found = _openings(level, "map_piece")
+    found = piece_openings(level, "map_piece")
     assert len(found) == 4  # two lanes, two ends each (two before: one lane off the main floor's level)
     assert all(1.5 < o.width < 1.6 for o in found)
     assert sorted(round(o.position[1], 1) for o in found) == [0.0, 0.0, 1.6, 1.6]
@@ -53,6 +43,6 @@ def test_a_flight_recast_keeps_as_one_polygon_from_its_second_riser_keeps_its_la
 def test_a_doorway_at_a_walls_fold_spans_its_jambs_and_faces_square_to_them(yaw: float) -> None:
     level = pieces.turned(benchmark("piece_kinds33").folded_wall_door(), yaw)
     known = level.openings[1]
-    (door,) = [o for o in _openings(level, "map_piece") if np.linalg.norm(np.subtract(o.position, known.position)) < 1.5]
+    (door,) = [o for o in piece_openings(level, "map_piece") if np.linalg.norm(np.subtract(o.position, known.position)) < 1.5]
     assert door.width == pytest.approx(1.70, abs=0.03)  # 1.64 / 1.62 m before, along one wing's line
     assert np.dot(door.heading, known.heading) > math.cos(math.radians(2.0))  # 15 degrees off before
