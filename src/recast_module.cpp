@@ -945,6 +945,31 @@ struct ErodedFloor {
     }
 };
 
+// Triangles binned on a grid of nx x nz squares as a CSR list: square b (x + z * nx) holds
+// members[start[b] .. start[b + 1]), by ascending triangle. `squares(t)` gives triangle t's squares as
+// {x0, x1, z0, z1}, inclusive and within the grid. Two passes over the triangles.
+struct TriangleBins {
+    std::vector<size_t> start;
+    std::vector<int> members;
+};
+
+template <class Squares> TriangleBins bin_triangles(int ntris, int nx, int nz, Squares&& squares) {
+    TriangleBins bins{std::vector<size_t>(static_cast<size_t>(nx) * nz + 1, 0), {}};
+    std::vector<std::array<int, 4>> range(static_cast<size_t>(ntris));
+    for (int t = 0; t < ntris; ++t) {
+        range[t] = squares(t);
+        for (int z = range[t][2]; z <= range[t][3]; ++z)
+            for (int x = range[t][0]; x <= range[t][1]; ++x) ++bins.start[static_cast<size_t>(z) * nx + x + 1];
+    }
+    for (size_t b = 1; b < bins.start.size(); ++b) bins.start[b] += bins.start[b - 1];
+    bins.members.resize(bins.start.back());
+    std::vector<size_t> fill(bins.start.begin(), bins.start.end() - 1);
+    for (int t = 0; t < ntris; ++t)
+        for (int z = range[t][2]; z <= range[t][3]; ++z)
+            for (int x = range[t][0]; x <= range[t][1]; ++x) bins.members[fill[static_cast<size_t>(z) * nx + x]++] = t;
+    return bins;
+}
+
 // The triangles that stand in an agent's way on a floor: those with a part between the floor's top plus the agent's
 // climb and its top plus its height, clipped to that band and seen from above (x, z). Binned in squares of BIN cells
 // of the compact heightfield's grid, so a question near a span reads only the triangles near it.
@@ -953,26 +978,17 @@ public:
     static constexpr int BIN = 8;
     PlanObstacles(const rcCompactHeightfield& chf, const float* verts, const int* tris, int ntris)
         : chf_(chf), verts_(verts), tris_(tris), bw_((chf.width + BIN - 1) / BIN), bh_((chf.height + BIN - 1) / BIN),
-          start_(static_cast<size_t>(bw_) * bh_ + 1, 0) {
-        auto bins_of = [&](int t, auto&& each) {
-            float lo[2] = {FLT_MAX, FLT_MAX}, hi[2] = {-FLT_MAX, -FLT_MAX};
-            for (int k = 0; k < 3; ++k)
-                for (int a = 0; a < 2; ++a) {
-                    const float v = verts_[tris_[t * 3 + k] * 3 + 2 * a];
-                    lo[a] = std::min(lo[a], v);
-                    hi[a] = std::max(hi[a], v);
-                }
-            const int x0 = std::max(0, bin(lo[0], 0)), x1 = std::min(bw_ - 1, bin(hi[0], 0));
-            const int z0 = std::max(0, bin(lo[1], 2)), z1 = std::min(bh_ - 1, bin(hi[1], 2));
-            for (int bz = z0; bz <= z1; ++bz)
-                for (int bx = x0; bx <= x1; ++bx) each(bx + bz * bw_);
-        };
-        for (int t = 0; t < ntris; ++t) bins_of(t, [&](int b) { ++start_[b + 1]; });
-        for (size_t b = 1; b < start_.size(); ++b) start_[b] += start_[b - 1];
-        members_.resize(start_.back());
-        std::vector<size_t> fill(start_.begin(), start_.end() - 1);
-        for (int t = 0; t < ntris; ++t) bins_of(t, [&](int b) { members_[fill[b]++] = t; });
-    }
+          bins_(bin_triangles(ntris, bw_, bh_, [&](int t) {
+              float lo[2] = {FLT_MAX, FLT_MAX}, hi[2] = {-FLT_MAX, -FLT_MAX};
+              for (int k = 0; k < 3; ++k)
+                  for (int a = 0; a < 2; ++a) {
+                      const float v = verts_[tris_[t * 3 + k] * 3 + 2 * a];
+                      lo[a] = std::min(lo[a], v);
+                      hi[a] = std::max(hi[a], v);
+                  }
+              return std::array<int, 4>{std::max(0, bin(lo[0], 0)), std::min(bw_ - 1, bin(hi[0], 0)),
+                                        std::max(0, bin(lo[1], 2)), std::min(bh_ - 1, bin(hi[1], 2))};
+          })) {}
 
     // Whether no obstacle of a floor at height y comes within `rho` of the plan point (px, pz).
     bool clear_of(double px, double pz, double y, double climb, double height, double rho) const {
@@ -1003,9 +1019,9 @@ private:
         const int bz0 = std::max(0, bin(static_cast<float>(z0), 2)), bz1 = std::min(bh_ - 1, bin(static_cast<float>(z1), 2));
         for (int bz = bz0; bz <= bz1; ++bz)
             for (int bx = bx0; bx <= bx1; ++bx)
-                for (size_t k = start_[bx + bz * bw_]; k < start_[bx + bz * bw_ + 1]; ++k) {
+                for (size_t k = bins_.start[bx + bz * bw_]; k < bins_.start[bx + bz * bw_ + 1]; ++k) {
                     Poly p;
-                    if (clip(members_[k], lo, hi, p)) f(p);
+                    if (clip(bins_.members[k], lo, hi, p)) f(p);
                 }
     }
 
@@ -1091,8 +1107,7 @@ private:
     const float* verts_;
     const int* tris_;
     int bw_, bh_;
-    std::vector<size_t> start_;
-    std::vector<int> members_;
+    TriangleBins bins_;
 };
 
 // Where the floor a door or a gap leaves an agent is a cell or two wide and at an angle to the grid, Recast's erosion
@@ -1790,11 +1805,8 @@ std::vector<std::unique_ptr<TileMesh>> NavMeshCore::build_tiled(const Input& in,
     const float bw = static_cast<float>(border) * g.cs;  // border width, world
 
     // Bin the triangles into the tiles their xz bounding box (widened by the
-    // border) overlaps: two passes over the triangles, a CSR list per tile.
-    const int nt = in.nt;
-    std::vector<int> lo_x(nt), hi_x(nt), lo_z(nt), hi_z(nt);
-    std::vector<size_t> start(static_cast<size_t>(ntiles) + 1, 0);
-    for (int t = 0; t < nt; ++t) {
+    // border) overlaps.
+    const TriangleBins bins = bin_triangles(in.nt, tiles_x, tiles_y, [&](int t) {
         const float* a = &in.verts[in.tris[t * 3 + 0] * 3];
         const float* b = &in.verts[in.tris[t * 3 + 1] * 3];
         const float* d = &in.verts[in.tris[t * 3 + 2] * 3];
@@ -1807,23 +1819,10 @@ std::vector<std::unique_ptr<TileMesh>> NavMeshCore::build_tiled(const Input& in,
         int x1 = static_cast<int>(std::floor((maxx - g.bmin[0] + bw + slack) / tw));
         int z0 = static_cast<int>(std::floor((minz - g.bmin[2] - bw - slack) / tw));
         int z1 = static_cast<int>(std::floor((maxz - g.bmin[2] + bw + slack) / tw));
-        x0 = std::max(x0, 0); z0 = std::max(z0, 0);
-        x1 = std::min(x1, tiles_x - 1); z1 = std::min(z1, tiles_y - 1);
-        lo_x[t] = x0; hi_x[t] = x1; lo_z[t] = z0; hi_z[t] = z1;
-        for (int tz = z0; tz <= z1; ++tz)
-            for (int tx = x0; tx <= x1; ++tx) ++start[static_cast<size_t>(tz) * tiles_x + tx + 1];
-    }
-    for (int k = 0; k < ntiles; ++k) start[k + 1] += start[k];
-    std::vector<int> members(start[ntiles]);
-    {
-        std::vector<size_t> fill(start.begin(), start.end() - 1);
-        for (int t = 0; t < nt; ++t)
-            for (int tz = lo_z[t]; tz <= hi_z[t]; ++tz)
-                for (int tx = lo_x[t]; tx <= hi_x[t]; ++tx)
-                    members[fill[static_cast<size_t>(tz) * tiles_x + tx]++] = t;
-    }
-    std::vector<int>().swap(lo_x); std::vector<int>().swap(hi_x);
-    std::vector<int>().swap(lo_z); std::vector<int>().swap(hi_z);
+        return std::array<int, 4>{std::max(x0, 0), std::min(x1, tiles_x - 1), std::max(z0, 0), std::min(z1, tiles_y - 1)};
+    });
+    const std::vector<size_t>& start = bins.start;
+    const std::vector<int>& members = bins.members;
 
     // Build the tiles in worker threads; results by tile (row-major).
     std::vector<std::unique_ptr<TileMesh>> results(ntiles);
