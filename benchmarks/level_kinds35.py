@@ -153,7 +153,8 @@ def terrace_village(seed: int) -> trimesh.Trimesh:
         plan = np.array([[0.0, _line_z(front, 0.0)], [width, _line_z(front, width)],
                          [width, _line_z(back, width)], [0.0, _line_z(back, 0.0)]])
         s.prism(plan, -1.0, y)
-    s.prism(np.array([[0.0, top], [width, top], [width, top + 0.4], [0.0, top + 0.4]]), lines[-1][2], lines[-1][2] + 1.0)
+    parapet = np.array([[0.0, top], [width, top], [width, top + 0.4], [0.0, top + 0.4]])
+    s.prism(parapet, lines[-1][2], lines[-1][2] + 1.0)
     for k, line in enumerate(lines):  # the ways up each retaining wall from terrace k (below) to terrace k + 1
         below = floors[k][2]
         rise = line[2] - below
@@ -293,8 +294,8 @@ def silo_stair(seed: int) -> trimesh.Trimesh:
     tread band of 1.1-1.2 m between a wall and a drop (Recast erodes the radius from both) is open; a band it loses
     parts the silo's top from its floor, and the disconnected-areas warning should name the stair. Traffic highest
     across the yard between the doors and along the gallery, lowest on each silo's floor under the stair. (The
-    draft's foot door, under the first treads, and its 3 silos were changed after the first run: docs/analysis_quality.md,
-    "A thirty-fifth round of level kinds".)"""
+    draft's foot door, under the first treads, and its 3 silos were changed after the first run:
+    docs/analysis_quality.md, "A thirty-fifth round of level kinds".)"""
     rng = np.random.default_rng(seed)
     s = _Solids()
     radii = [float(rng.uniform(6.0, 7.5)) for _ in range(4)]
@@ -336,7 +337,7 @@ def silo_stair(seed: int) -> trimesh.Trimesh:
                 s.prism(plan, top + 2.3, top + 3.0)
             else:
                 s.prism(plan, -0.5, top + 3.0)
-        ring = np.linspace(0.0, 2 * math.pi, 24, endpoint=False)  # the roof, a cone at 50 degrees: nothing on it is floor
+        ring = np.linspace(0.0, 2 * math.pi, 24, endpoint=False)  # the roof, a cone at 50 degrees: no floor on it
         base = c + (r + 0.4) * np.stack([np.cos(ring), np.sin(ring)], 1)
         s.hull(np.concatenate([np.insert(base, 1, top + 3.0, axis=1),
                                [[c[0], top + 3.0 + (r + 0.4) * math.tan(math.radians(50.0)), c[1]]]]))
