@@ -1,4 +1,4 @@
-"""The level kinds of rounds 9-34 (``benchmarks/level_kinds.py``, ``level_kinds26.py`` ... ``level_kinds34.py``) build
+"""The level kinds of rounds 9-35 (``benchmarks/level_kinds.py``, ``level_kinds26.py`` ... ``level_kinds35.py``) build
 the levels they describe.
 
 Smoke tests of quick generators (most well under a second each to build and to give a navmesh; the theatre's and
@@ -1822,3 +1822,74 @@ def test_the_expo_halls_booths_and_open_floor_are_one_area(round_34):
     assert label.max() == 0
     assert (np.abs(mesh.vertices[:, 1] - 2.5) < 1e-6).sum() > 200
     assert nav.areas.sum() > 0.5 * np.ptp(mesh.vertices[:, 0]) * np.ptp(mesh.vertices[:, 2])
+
+
+@pytest.fixture(scope="module")
+def round_35() -> dict[str, Callable[..., trimesh.Trimesh]]:
+    """``benchmarks/level_kinds35.py``'s KINDS (the thirty-fifth round): each call builds its level anew."""
+    return benchmark("level_kinds35").KINDS
+
+
+def test_the_kit_flights_join_their_storeys_only_where_the_last_step_is_climbed(round_35):
+    """Kit flights of 20 risers in storeys 3.45-3.95 m high (:func:`kit_flights_plan`, seed 1): a walk straight up
+    each flight's last tread onto the floor above is clear on the navmesh where the step left is at most 0.37 m and
+    blocked where it is 0.44-0.46 m, and the block is one area, as the plan's (docs/analysis_quality.md, "A
+    thirty-fifth round of level kinds")."""
+    module = benchmark("level_kinds35")
+    plan = module.kit_flights_plan(1)
+    label, nav = areas(round_35["kit_flights"](1), DROPS)
+    assert label.max() + 1 == len(plan["areas"]) == 1
+    size_x = float(np.random.default_rng(1001).uniform(48.0, 56.0))
+    run = 20 * 0.28
+    cores = [(6.0, 3.0), (size_x - 6.0 - run, 3.0)]  # the southern two: the lanes' z do not depend on size_z
+    seen = set()
+    for k in range(3):
+        y, lane = plan["floors"][k], 3.2 * (k % 2)
+        for c, (x0, z0) in enumerate(cores):
+            step, rise = plan["steps"][c][k], plan["cores"][c][2]
+            zc = z0 + lane + 1.5
+            clear, _ = nav.raycast([x0 + run - 0.3, y + rise, zc], [x0 + run + 0.8, plan["floors"][k + 1], zc])
+            assert clear == (step <= 0.37), (k, c, step)
+            seen.add(clear)
+    assert seen == {True, False}
+
+
+def test_the_silo_stairs_are_lost_on_the_navmesh_but_the_floors_are_one_area(round_35):
+    """Stairs of wedge treads 1.1-1.4 m wide round an open well: the navmesh's erosion (two cells from the wall, the
+    ledge rule's cell and two more from the drop) keeps none of the band, so the yard and the silos' floors are one
+    area and every area apart is the gallery over the silos' tops (floor 9 m or more up)."""
+    label, nav = areas(round_35["silo_stair"](0), DROPS)
+    sizes = np.bincount(label, weights=nav.areas)
+    ground = int(np.argmax(sizes))
+    assert label.max() > 0
+    assert (nav.centres[label == ground, 1] < 1.0).all()
+    assert (nav.centres[label != ground, 1] > 9.0).all()
+
+
+def test_the_ring_seating_reaches_every_ring(round_35):
+    """Concentric rings with risers of 0.30-0.50 m and radial aisles of half steps (:func:`ring_seating_plan`): one
+    area holding floor on every ring's tread."""
+    plan = benchmark("level_kinds35").ring_seating_plan(0)
+    label, nav = areas(round_35["ring_seating"](0), DROPS)
+    assert label.max() == 0
+    for r0, tread, _, top in plan["rings"]:  # a polygon under the tread's middle somewhere along its arc
+        mid = r0 + tread / 2
+        found = [nav.nearest_poly([mid * math.cos(a), top, mid * math.sin(a)], [0.3, 0.3, 0.3])[0]
+                 for a in np.linspace(0.1, math.pi - 0.1, 40)]
+        assert max(found) >= 0, (r0, top)
+
+
+def test_the_terraces_seams_and_racks_are_one_area_each(round_35):
+    """The terrace village (walls 5-25 degrees off the grid, flights at any heading), the seam plaza (plates 1-3 cm
+    apart at 10-40 degrees, over water) and the rack aisles (aisles 1.05-1.75 m): one area each; the village's floor
+    on 5 heights or more, the plaza's deck over 85 % covered."""
+    label, nav = areas(round_35["terrace_village"](0), DROPS)
+    assert label.max() == 0
+    assert len({round(float(y), 1) for y in nav.centres[:, 1]}) >= 5  # the street and 4-5 terraces over it
+    label, nav = areas(round_35["seam_plaza"](0), DROPS)
+    rng = np.random.default_rng(0)
+    size_x, size_z = float(rng.uniform(60.0, 70.0)), float(rng.uniform(40.0, 46.0))
+    deck = nav.areas[nav.centres[:, 2] > 0.0].sum()
+    assert label.max() == 0 and deck > 0.85 * size_x * size_z
+    label, _ = areas(round_35["rack_aisles"](0), DROPS)
+    assert label.max() == 0
