@@ -466,8 +466,9 @@ def ground_columns(caster: RayCaster, centre: np.ndarray, radius: float, low: fl
 
 def column_links(ground: GroundColumns, caster: RayCaster, agent: AgentConfig) -> tuple[np.ndarray, np.ndarray]:
     """``(a, b)`` (e,) indices of the ground points on neighbouring columns (eight neighbours) with nothing across
-    the segment between them raised the agent's knee height (:attr:`AgentShape.body`: over its step, a wall's
-    face), every such pair whatever the rise between them. One ray a pair."""
+    the level segment between them at the agent's knee (:attr:`AgentShape.body`: over its step) over the higher of
+    the two (a wall's face; not the riser between them), every such pair whatever the rise between them. One ray a
+    pair."""
     cell = ground.cell
     key = {tuple(c): k for k, c in enumerate(np.unique(cell, axis=0))}
     column = np.array([key[tuple(c)] for c in cell], dtype=np.int64)
@@ -482,8 +483,8 @@ def column_links(ground: GroundColumns, caster: RayCaster, agent: AgentConfig) -
             a = np.flatnonzero(has)
             pairs.append(np.stack([a, order[start[there[a]] + layer]], 1))
     a, b = np.concatenate(pairs or [np.zeros((0, 2), np.int64)]).T
-    knee = AgentShape.from_config(agent).body[0] * UP
-    start_points, end_points = ground.points[a] + knee, ground.points[b] + knee
+    start_points, end_points = ground.points[a].copy(), ground.points[b].copy()
+    start_points[:, 1] = end_points[:, 1] = np.maximum(start_points[:, 1], end_points[:, 1]) + AgentShape.from_config(agent).body[0]
     length = np.linalg.norm(end_points - start_points, axis=1)
     clear = caster.first_hits(start_points, end_points - start_points).distance >= length
     return a[clear], b[clear]
@@ -563,7 +564,8 @@ def way_up(caster: RayCaster, closest: Closest, agent: AgentConfig) -> WayUp | S
     degree = np.bincount(a[walked], minlength=n) + np.bincount(b[walked], minlength=n)
     edge = np.flatnonzero(degree < 2 * len(NEIGHBOURS))
     inward = dijkstra(links, directed=False, indices=edge, min_only=True) if edge.size else np.full(n, np.inf)
-    inward[start | end] = np.inf  # the areas' own ground: the way's narrowest lies between them
+    # the way's narrowest lies on its climb, between the two areas' heights, not on their own floors
+    inward[(ground.points[:, 1] <= lower[1] + tolerance) | (ground.points[:, 1] >= upper[1] - tolerance)] = np.inf
     # the widest way: the largest clearance whose points still join the two sides
     levels = np.unique(inward[np.isfinite(inward)])[::-1]
     for level in levels:
