@@ -76,6 +76,17 @@ height, so a sample's square reaches no farther than the wall (docs/
 analysis_quality.md, "The disconnected-areas warning's walls, partitions and
 fifth-nearest areas").
 
+*A stair the graph builder lost* (:func:`way_up`): floors more than the
+agent's height apart are named separate only when no walkable ground climbs
+between them near the pair: faces within ``max_slope`` with ``height`` of head
+room on vertical lines half the agent's radius apart, each rise between
+neighbours at most ``max_climb``, from one area's closest edge to the other's.
+Where it does, the cause names the stair or ramp with its width across at its
+narrowest and the place (a wedge stair 1.1-1.4 m wide between a wall and a
+drop that Recast's erosion and ledge rule take whole: :data:`LEDGE_CELLS`),
+or the step over the climb that cuts it (docs/analysis_quality.md, "The
+disconnected-areas warning's lost stairs").
+
 Complexity: O(n) for the areas' n nodes (their sizes), O(e log e) for the e
 edge points of the joined areas (one k-d tree of the largest's, to bound each
 area's gap and rise from below), then a k-d tree per area measured (those
@@ -84,7 +95,8 @@ polygon perimeter / ``cell_size`` on the navmesh route, their sample count on
 the sampling route; with the mesh, O(m log m) for its m faces' closed bodies
 and up to 9 rays (18 for the ceiling) for each of at most
 ``MAX_PLACE_CANDIDATES`` pairs, 2 for the gap; the smaller areas as the joined
-ones.
+ones; floors apart, :func:`way_up`'s l log l for its l <= ``MAX_WAY_UP_COLUMNS``
+lines.
 """
 
 from __future__ import annotations
