@@ -134,9 +134,9 @@ def collect(out: Path, runs: list[tuple[str, str]]) -> None:
 
 def cause_of(kept: dict, gaps: ModuleType = area_gaps):  # noqa: ANN201
     """The cause of ``gaps`` (:mod:`g2s_plugins.area_gaps` or another commit's copy of it) over a kept run's ground,
-    as :func:`~g2s_plugins.area_gaps.likely_cause_of` makes it."""
-    return partial(gaps.areas_cause, agent=kept["agent"], mesh=kept["mesh"],
-                   rim=partial(gaps.ground_rim, navmesh=kept["navmesh"], erosion=kept["erosion"]))
+    as the graph builder makes it (:func:`~g2s_plugins.area_gaps.likely_cause_of`: on the sampling route the erosion
+    is the builder's clearance; on the navmesh route it is Recast's, from the navmesh's cells)."""
+    return gaps.likely_cause_of(kept["agent"], kept["navmesh"], kept["erosion"], kept["mesh"])
 
 
 def module_of(path: Path) -> ModuleType:

@@ -76,6 +76,17 @@ height, so a sample's square reaches no farther than the wall (docs/
 analysis_quality.md, "The disconnected-areas warning's walls, partitions and
 fifth-nearest areas").
 
+*A stair the graph builder lost* (:func:`way_up`): floors more than the
+agent's height apart are named separate only when no walkable ground climbs
+between them near the pair: faces within ``max_slope`` with ``height`` of head
+room on vertical lines half the agent's radius apart, each rise between
+neighbours at most ``max_climb``, from one area's closest edge to the other's.
+Where it does, the cause names the stair or ramp with its width across at its
+narrowest and the place (a wedge stair 1.1-1.4 m wide between a wall and a
+drop that Recast's erosion and ledge rule take whole: :data:`LEDGE_CELLS`),
+or the step over the climb that cuts it (docs/analysis_quality.md, "The
+disconnected-areas warning's lost stairs").
+
 Complexity: O(n) for the areas' n nodes (their sizes), O(e log e) for the e
 edge points of the joined areas (one k-d tree of the largest's, to bound each
 area's gap and rise from below), then a k-d tree per area measured (those
@@ -84,7 +95,8 @@ polygon perimeter / ``cell_size`` on the navmesh route, their sample count on
 the sampling route; with the mesh, O(m log m) for its m faces' closed bodies
 and up to 9 rays (18 for the ceiling) for each of at most
 ``MAX_PLACE_CANDIDATES`` pairs, 2 for the gap; the smaller areas as the joined
-ones.
+ones; floors apart, :func:`way_up`'s l log l for its l <= ``MAX_WAY_UP_COLUMNS``
+lines.
 """
 
 from __future__ import annotations
@@ -98,14 +110,16 @@ import networkx as nx
 import numpy as np
 import trimesh
 from scipy import sparse
-from scipy.sparse.csgraph import breadth_first_order
+from scipy.sparse.csgraph import breadth_first_order, connected_components, dijkstra
 from scipy.spatial import cKDTree
 from scipy.spatial.distance import pdist, squareform
 
 from g2s_core.config import AgentConfig
 from g2s_core.disconnected import area_summary, xyz
 from g2s_core.model import NavMesh
-from g2s_plugins._raycasting import EPSILON, UP, RayCaster, closed_solid_holds, has_room
+from g2s_plugins._raycasting import (
+    COMPASS, EPSILON, GROUND_MARGIN, UP, AgentShape, RayCaster, all_hits_down, closed_solid_holds, has_room, head_room,
+)
 from g2s_plugins.play_space import node_polygons
 
 Ground = tuple[np.ndarray, np.ndarray, np.ndarray]
@@ -135,6 +149,23 @@ after the one measured (:func:`smaller_nearer`) when it comes nearer by more, an
 GROUND_RAYS = 8
 """Rays at most down onto the stretch between two areas' ground (:func:`open_between`): a half spacing of the edge
 points apart (0.125 m on the navmesh route's cells of 0.25 m; 0.5 m between samples 1 m apart) up to this many."""
+
+
+MAX_WAY_UP_COLUMNS = 65_536
+"""Vertical lines at most that :func:`way_up` casts down over the ground round a warning's place (a disc 27 m across
+at the presets' 0.25 m spacing holds 36,600: a silo's spiral stair 11.5 m high); a larger disc is shrunk to this."""
+
+WIDTH_CANDIDATES = 16
+"""Points at most of a way's narrowest (by the columns' clearance) whose width :func:`width_across` measures."""
+
+LEDGE_CELLS = 3
+"""Cells past twice the erosion from which the navmesh keeps floor on a walkway between a wall and a drop: measured
+in the thirty-fifth round (docs/analysis_quality.md, "A thirty-fifth round of level kinds") on a band 20 m long, a
+wall on one side and a 3 m drop on the other, turned 0-45 degrees, with the presets' agent (erosion 0.5 m, cells 0.25
+m) and ``ledge_filter: drops``: no floor at 1.1-1.2 m, some from 1.6 m, 7 m² or more of its 20 m from 1.8 m (1.75)."""
+
+NEIGHBOURS = np.array([[1, 0], [0, 1], [1, 1], [1, -1]])
+"""Grid offsets of :func:`way_up`'s columns linked to each column, one of each opposite pair (eight neighbours)."""
 
 
 class Closest(NamedTuple):
@@ -388,6 +419,209 @@ def where_between(caster: RayCaster, closest: Closest, agent: AgentConfig) -> st
     return between(pairs[chosen])
 
 
+class WayUp(NamedTuple):
+    """Walkable ground that climbs from one area's height to the other's (:func:`way_up`).
+
+    Attributes:
+        width: metres across it at its narrowest along the widest way (twice the farthest its middle keeps from an
+            edge, a wall or a drop, plus a column's spacing).
+        narrowest: (3,) a point of it that narrow, the nearest to the warning's pair, metres.
+    """
+
+    width: float
+    narrowest: np.ndarray
+
+
+class StepUp(NamedTuple):
+    """The lowest step higher than ``agent.max_climb`` between the ground reached from each area (:func:`way_up`).
+
+    Attributes:
+        rise: metres, over ``agent.max_climb`` and at most ``agent.height``.
+        foot: (3,) the ground at its foot, metres.
+    """
+
+    rise: float
+    foot: np.ndarray
+
+
+class GroundColumns(NamedTuple):
+    """Walkable ground on a grid of vertical lines (:func:`ground_columns`).
+
+    Attributes:
+        points: (n, 3) ground points, metres: crossings with faces within ``agent.max_slope`` that leave
+            ``agent.height`` of head room.
+        cell: (n, 2) int64, each point's grid column.
+        spacing: metres between neighbouring columns.
+    """
+
+    points: np.ndarray
+    cell: np.ndarray
+    spacing: float
+
+
+def ground_columns(caster: RayCaster, centre: np.ndarray, radius: float, low: float, high: float,
+                   agent: AgentConfig) -> GroundColumns:
+    """The walkable ground between heights ``low`` and ``high`` (metres) on vertical lines half ``agent.radius``
+    apart (the navmesh's cells for the presets' agent; under the 0.28 m tread of a stair) in a disc of ``radius``
+    round ``centre`` (3,) (shrunk to :data:`MAX_WAY_UP_COLUMNS` lines). One multiple-hit query over the lines and
+    one ray up from each crossing kept (:func:`~g2s_plugins._raycasting.head_room`)."""
+    spacing = float(agent.radius) / 2
+    radius = min(radius, spacing * math.sqrt(MAX_WAY_UP_COLUMNS / math.pi))
+    reach = int(math.ceil(radius / spacing))
+    grid = np.stack(np.meshgrid(np.arange(-reach, reach + 1), np.arange(-reach, reach + 1), indexing="ij"), -1).reshape(-1, 2)
+    grid = grid[np.hypot(*grid.T) * spacing <= radius]
+    column, points, face = all_hits_down(caster, centre[[0, 2]] + grid * spacing, high + float(agent.height) + 1.0)
+    kept = caster.walkable_faces(face, float(agent.max_slope)) & (points[:, 1] >= low) & (points[:, 1] <= high)
+    kept[kept] = head_room(caster, points[kept], AgentShape.from_config(agent))
+    return GroundColumns(points[kept], grid[column[kept]], spacing)
+
+
+def column_links(ground: GroundColumns, caster: RayCaster, agent: AgentConfig) -> tuple[np.ndarray, np.ndarray]:
+    """``(a, b)`` (e,) indices of the ground points on neighbouring columns (eight neighbours) with nothing across
+    the level segment between them at the agent's knee (:attr:`AgentShape.body`: over its step) over the higher of
+    the two (a wall's face; not the riser between them), every such pair whatever the rise between them. One ray a
+    pair."""
+    cell = ground.cell
+    key = {tuple(c): k for k, c in enumerate(np.unique(cell, axis=0))}
+    column = np.array([key[tuple(c)] for c in cell], dtype=np.int64)
+    order = np.argsort(column, kind="stable")
+    count = np.bincount(column, minlength=len(key))
+    start = np.cumsum(count) - count
+    pairs = []
+    for offset in NEIGHBOURS:
+        there = np.array([key.get((int(c[0] + offset[0]), int(c[1] + offset[1])), -1) for c in cell], dtype=np.int64)
+        for layer in range(int(count.max(initial=0))):
+            has = (there >= 0) & (count[np.maximum(there, 0)] > layer)
+            a = np.flatnonzero(has)
+            pairs.append(np.stack([a, order[start[there[a]] + layer]], 1))
+    a, b = np.concatenate(pairs or [np.zeros((0, 2), np.int64)]).T
+    start_points, end_points = ground.points[a].copy(), ground.points[b].copy()
+    start_points[:, 1] = end_points[:, 1] = np.maximum(start_points[:, 1], end_points[:, 1]) + AgentShape.from_config(agent).body[0]
+    length = np.linalg.norm(end_points - start_points, axis=1)
+    clear = caster.first_hits(start_points, end_points - start_points).distance >= length
+    return a[clear], b[clear]
+
+
+def width_across(caster: RayCaster, points: np.ndarray, agent: AgentConfig, spacing: float) -> np.ndarray:
+    """(n,) metres across the walkable ground at each point (n,3): along each of four horizontal axes (45 degrees
+    apart, :data:`~g2s_plugins._raycasting.COMPASS`), the distance each way to its edge, summed, the least of the
+    four: a band's width, up to 1 / cos(22.5°) = 8 % over at the worst heading. An edge is where a ray at the
+    agent's knee meets a face (a wall) or a probe down, every quarter ``spacing`` out to eight agent radii, finds
+    no ground within ``agent.max_climb`` of the point's height (a drop); the probes a quarter spacing apart place it
+    to an eighth of a spacing (0.03 m at the presets'). 8 (1 + 32 / spacing × radius) rays a point."""
+    knee = AgentShape.from_config(agent).body[0]
+    step = spacing / 4
+    along = np.arange(1, int(math.ceil(8 * float(agent.radius) / step)) + 1) * step
+    count, directions = len(points), len(COMPASS)
+    origins = np.repeat(points + knee * UP, directions, axis=0)
+    heading = np.tile(COMPASS, (count, 1))
+    wall = caster.first_hits(origins, heading).distance
+    probes = (origins[:, None, :] + along[None, :, None] * heading[:, None, :]).reshape(-1, 3)
+    ground = probes[:, 1] - caster.first_hits(probes, -UP).distance
+    level = np.repeat(np.repeat(points[:, 1], directions), len(along))
+    off = (np.abs(ground - level) > float(agent.max_climb)).reshape(-1, len(along))
+    drop = np.where(off.any(axis=1), along[np.argmax(off, axis=1)] - step / 2, np.inf)
+    reach = np.minimum(wall, drop).reshape(count, directions)
+    return (reach[:, : directions // 2] + reach[:, directions // 2:]).min(axis=1)
+
+
+def way_up(caster: RayCaster, closest: Closest, agent: AgentConfig) -> WayUp | StepUp | None:
+    """Whether walkable ground climbs between two areas a floor or more apart (:attr:`Closest.step` over the
+    agent's height) near where they come closest, as the agent would walk it: ground on faces within
+    ``agent.max_slope`` with ``agent.height`` of head room (:func:`ground_columns`), each rise between neighbouring
+    columns at most the agent's climb (or its slope over their distance) with nothing across at its knee
+    (:func:`column_links`), from the lower area's closest edge point (within its ground's reach) to the upper's.
+
+    A :class:`WayUp` when it does (a stair or ramp the graph builder lost: a wedge stair between a wall and a drop
+    that the navmesh's erosion takes whole); else a :class:`StepUp` when the ground reached from each side meets at
+    a rise over the climb and within the agent's height (a flight cut by a step too high); else None (no stair: a
+    floor over another, a ramp steeper than the agent climbs, a ladder's rungs, with no head room between them).
+
+    The ground searched is a disc round the pair's middle, twice the run of a slope at ``agent.max_slope`` up the
+    step plus the agent's height on each side across (a silo's spiral stair 11.5 m high: 27 m). O(l log l) for its
+    l columns (:data:`MAX_WAY_UP_COLUMNS`), one ray a ground point up and one a neighbouring pair across.
+    """
+    lower, upper = sorted(closest.pairs[0], key=lambda point: point[1])
+    reach_lower, reach_upper = closest.reach[0] if closest.pairs[0, 0, 1] <= closest.pairs[0, 1, 1] else closest.reach[0, ::-1]
+    climb, height = float(agent.max_climb), float(agent.height)
+    tolerance = climb + GROUND_MARGIN  # the navmesh's edges lie up to Recast's cells over the ground
+    radius = 2 * closest.step / math.tan(math.radians(float(agent.max_slope))) + 2 * height
+    ground = ground_columns(caster, (lower + upper) / 2, radius, float(lower[1]) - tolerance, float(upper[1]) + tolerance, agent)
+    if len(ground.points) == 0:
+        return None
+    a, b = column_links(ground, caster, agent)
+    plan = np.hypot(*(ground.points[b] - ground.points[a])[:, [0, 2]].T)
+    rise = np.abs(ground.points[b, 1] - ground.points[a, 1])
+    walked = rise <= AgentShape.from_config(agent).max_rise(plan)
+    n = len(ground.points)
+    links = sparse.coo_matrix((plan[walked], (a[walked], b[walked])), shape=(n, n)).tocsr()
+    _, component = connected_components(links, directed=False)
+
+    def near(point: np.ndarray, reach: float) -> np.ndarray:
+        return ((np.hypot(*(ground.points - point)[:, [0, 2]].T) <= reach + 2 * ground.spacing)
+                & (np.abs(ground.points[:, 1] - point[1]) <= tolerance))
+
+    start, end = near(lower, float(reach_lower)), near(upper, float(reach_upper))
+    joined = np.intersect1d(component[start], component[end])
+    if joined.size == 0:
+        step = np.isin(component[a], component[start]) & np.isin(component[b], component[end])
+        step |= np.isin(component[b], component[start]) & np.isin(component[a], component[end])
+        step &= (rise > climb) & (rise <= height)
+        if not step.any():
+            return None
+        k = np.flatnonzero(step)[int(np.argmin(rise[step]))]
+        foot = ground.points[a[k]] if ground.points[a[k], 1] < ground.points[b[k], 1] else ground.points[b[k]]
+        return StepUp(float(rise[k]), foot)
+    # the farthest each point keeps from an edge (a point with fewer than eight walked neighbours), along the links
+    degree = np.bincount(a[walked], minlength=n) + np.bincount(b[walked], minlength=n)
+    edge = np.flatnonzero(degree < 2 * len(NEIGHBOURS))
+    inward = dijkstra(links, directed=False, indices=edge, min_only=True) if edge.size else np.full(n, np.inf)
+    # the way's narrowest lies on its climb, between the two areas' heights, not on their own floors
+    inward[(ground.points[:, 1] <= lower[1] + tolerance) | (ground.points[:, 1] >= upper[1] - tolerance)] = np.inf
+    # the widest way: the largest clearance whose points still join the two sides
+    levels = np.unique(inward[np.isfinite(inward)])[::-1]
+    for level in levels:
+        keep = inward >= level
+        _, part = connected_components(links[keep][:, keep], directed=False)
+        inside = np.full(n, -1)
+        inside[keep] = part
+        if np.intersect1d(inside[start], inside[end]).size:
+            break
+    else:
+        level = np.inf
+    if not np.isfinite(level):  # the two areas' ground meets: no way between them to measure
+        return WayUp(math.inf, ground.points[np.flatnonzero(start)[0]])
+    # of the way's narrowest columns, the nearest the warning's pair, measured across by rays: the columns'
+    # clearance places it to a spacing or two either side
+    way = np.flatnonzero(np.isin(inside, np.intersect1d(inside[start], inside[end])) & (inward == level))
+    way = way[np.argsort(np.linalg.norm(ground.points[way] - (lower + upper) / 2, axis=1), kind="stable")[:WIDTH_CANDIDATES]]
+    width = width_across(caster, ground.points[way], agent, ground.spacing)
+    chosen = int(np.argmin(width))
+    return WayUp(float(width[chosen]), ground.points[way[chosen]])
+
+
+def way_up_cause(found: WayUp | StepUp, agent: AgentConfig, kept_width: float | None) -> str:
+    """The warning's cause for what :func:`way_up` found: the step, or the stair or ramp with its width at its
+    narrowest and where, against the agent's width and, on the navmesh route, ``kept_width`` (metres: the least
+    walkway between a wall and a drop that the navmesh keeps floor on; None on the sampling route)."""
+    if isinstance(found, StepUp):
+        return f"{likely_cause(found.rise, 0.0, agent)}, at ({xyz(found.foot)})"
+    radius = float(agent.radius)
+    width = "" if math.isinf(found.width) else f" about {found.width:.1f} m wide at its narrowest"
+    if found.width < 2 * radius:
+        return (f"a stair or ramp between them narrower than the agent ({width.strip()}; "
+                f"agent.radius {radius:g} m), at ({xyz(found.narrowest)})")
+    if kept_width is None:
+        return (f"a stair or ramp between them{width} that the sampled graph does not walk for this agent "
+                f"(agent.radius {radius:g} m, agent.max_climb {float(agent.max_climb):g} m), at ({xyz(found.narrowest)})")
+    if found.width < kept_width:
+        return (f"a stair or ramp between them{width}, narrower than the navmesh keeps for this agent (agent.radius "
+                f"{radius:g} m; beside a drop the navmesh keeps floor from about {kept_width:.1f} m), "
+                f"at ({xyz(found.narrowest)})")
+    return (f"a stair or ramp between them{width} that the navmesh keeps no floor on for this agent "
+            f"(agent.radius {radius:g} m), at ({xyz(found.narrowest)})")
+
+
 def between(pair: np.ndarray) -> str:
     """``e.g. between (x, y, z m) and (x, y, z m)`` for a pair of points (2,3)."""
     return f"e.g. between ({xyz(pair[0])}) and ({xyz(pair[1])})"
@@ -456,7 +690,7 @@ def apart(closest: Closest) -> float:
 
 
 def areas_cause(graph: nx.Graph, largest: Sequence[int], others: Sequence[Sequence[int]], agent: AgentConfig,
-                rim: Rim, mesh: trimesh.Trimesh | None = None) -> str:
+                rim: Rim, mesh: trimesh.Trimesh | None = None, kept_width: float | None = None) -> str:
     """The likely cause between ``largest`` and the nearest of ``others`` (node lists of areas of ``graph``) of
     those :func:`joined_areas` keeps, with its size and where, e.g. ``from the largest area to the nearest
     area of 412 m², a step of about 0.6 m, ..., e.g. between (x, y, z m) and (x, y, z m)``. The nearest is the one whose
@@ -470,7 +704,8 @@ def areas_cause(graph: nx.Graph, largest: Sequence[int], others: Sequence[Sequen
     Before that, on one floor (a rise up to the agent's climb), a ceiling lower than the agent over the floor between
     them is named (:func:`low_ceiling`: a plank over a channel's bed, a beam); else, on one floor (a rise up to the
     agent's height), the place :func:`where_between` names: the door or plank too narrow for the agent, or the run
-    of a wall or chasm.
+    of a wall or chasm. Floors farther apart are asked whether walkable ground climbs between them (:func:`way_up`;
+    ``kept_width`` as :func:`way_up_cause`'s).
     """
     ground = rim(graph, largest)  # once, however many areas it is compared with
     joined = joined_areas(graph, largest, others)
@@ -480,7 +715,7 @@ def areas_cause(graph: nx.Graph, largest: Sequence[int], others: Sequence[Sequen
     smaller = [other for k, other in enumerate(others) if k not in named]
     # a low ceiling is asked along the seam, not only where it comes closest (below)
     seam = None if mesh is None else closest_step_for(ground, rim(graph, nearest), agent, float(agent.height))
-    return (f"from the largest area to the nearest area of {size:,.0f} m², {nearest_cause(closest, middle, agent, mesh, seam)}"
+    return (f"from the largest area to the nearest area of {size:,.0f} m², {nearest_cause(closest, middle, agent, mesh, seam, kept_width)}"
             f"{smaller_nearer(graph, ground, smaller, apart(closest), agent, rim, mesh)}")
 
 
@@ -508,11 +743,13 @@ def smaller_nearer(graph: nx.Graph, ground: Ground, smaller: Sequence[Sequence[i
 
 
 def nearest_cause(closest: Closest, middle: np.ndarray, agent: AgentConfig, mesh: trimesh.Trimesh | None,
-                  seam: Closest | None = None) -> str:
+                  seam: Closest | None = None, kept_width: float | None = None) -> str:
     """:func:`areas_cause`'s cause and place for the area whose ground comes ``closest`` to the largest's, ``middle``
     (3,) a place inside it, metres; ``seam`` the same with the pairs up to ``agent.height`` farther than the closest
     (:func:`closest_step`'s window): a ceiling lower than the agent is asked of them when the pairs about as close as
-    the closest have none (a beam wider than the wall beside it: its pairs lie its extra width farther)."""
+    the closest have none (a beam wider than the wall beside it: its pairs lie its extra width farther). Floors more
+    than the agent's height apart are named separate only when no walkable ground climbs between them near there
+    (:func:`way_up`): else the stair or ramp the graph builder lost, or the step that cuts it (:func:`way_up_cause`)."""
     if mesh is None:
         return f"{likely_cause(closest.step, closest.gap, agent)}, {between(closest.pairs[0])}"
     caster = RayCaster(mesh)
@@ -531,9 +768,12 @@ def nearest_cause(closest: Closest, middle: np.ndarray, agent: AgentConfig, mesh
         level = "at the same height" if round(abs(rise), 1) == 0 else f"{abs(rise):.1f} m {'higher' if rise > 0 else 'lower'}"
         return (f"a floor shut inside a closed solid (a box or collision hull exported with the level), {level}, "
                 f"its ground about {gap:.1f} m from the other's, {between(closest.pairs[0])}")
-    cause = likely_cause(closest.step, gap, agent)
     if closest.step > float(agent.height):
-        return f"{cause}, {between(closest.pairs[0])}"
+        found = way_up(caster, closest, agent)
+        if found is not None:
+            return way_up_cause(found, agent, kept_width)
+        return f"{likely_cause(closest.step, gap, agent)}, {between(closest.pairs[0])}"
+    cause = likely_cause(closest.step, gap, agent)
     return f"{cause}, {where_between(caster, closest, agent)}"
 
 
@@ -556,7 +796,10 @@ def likely_cause_of(agent: AgentConfig, navmesh: NavMesh | None = None, clearanc
                     mesh: trimesh.Trimesh | None = None) -> Callable[[nx.Graph, Sequence[int], Sequence[Sequence[int]]], str]:
     """:func:`areas_cause` over a graph builder's ground: ``navmesh``'s polygons, eroded by Recast's
     ``ceil(radius / cell_size)`` cells, or samples kept ``clearance`` metres from walls and ledges; ``mesh`` to
-    name floors shut inside closed solids."""
+    name floors shut inside closed solids, and the stairs either route lost (:func:`way_up`). On the navmesh route a
+    walkway between a wall and a drop keeps floor from twice the erosion and :data:`LEDGE_CELLS` cells more."""
     cell = np.float32(navmesh.settings["cell_size"]) if navmesh is not None else None
     erosion = clearance if cell is None else float(np.ceil(np.float32(agent.radius) / cell) * cell)  # as Recast's float
-    return partial(areas_cause, agent=agent, rim=partial(ground_rim, navmesh=navmesh, erosion=erosion), mesh=mesh)
+    kept_width = None if cell is None else 2 * erosion + LEDGE_CELLS * float(cell)
+    return partial(areas_cause, agent=agent, rim=partial(ground_rim, navmesh=navmesh, erosion=erosion), mesh=mesh,
+                   kept_width=kept_width)

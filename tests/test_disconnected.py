@@ -399,3 +399,59 @@ def test_a_low_beam_beside_a_wall_is_named_though_the_wall_comes_closer():
     assert "head room too low: a ceiling about 1.4 m over the floor, under agent.height (2 m)" in message
     place = np.array(message.rsplit("at (", 1)[1].removesuffix(" m).").split(", "), dtype=float)
     assert 9.0 <= place[0] <= 11.0 and place[2] >= 6.5
+
+
+def terrace(way: str) -> trimesh.Trimesh:
+    """A yard (y = 0, x < 4) beside a terrace 3 m high (x 4-14, z 2-8), a wall 6 m high along z = 8, and between yard
+    and terrace, against the wall: ``stair``, treads 1.2 m wide between the wall and a drop (17 risers of 0.176 m on
+    0.28 m, cantilevered, 0.25 m thick); ``cut``, the same 2.5 m wide with a riser of 0.8 m halfway; ``steep``, a
+    ramp 2.5 m wide at 52 degrees; ``ladder``, rungs every 0.3 m up the terrace's face; ``none``, nothing
+    (benchmarks/lost_stairs.py's cases, square to the grid)."""
+    solids = [(-10, 4, -0.3, 0, -8, 8), (4, 14, -0.3, 3, 2, 8), (-10, 14, -0.3, 6, 8, 8.3)]
+    risers = {"stair": [3 / 17] * 17, "cut": [2.2 / 12] * 6 + [0.8] + [2.2 / 12] * 6}.get(way, [])
+    width = 1.2 if way == "stair" else 2.5
+    for i, height in enumerate(np.cumsum(risers)[:-1]):
+        x = 4 - 0.28 * (len(risers) - 1 - i)
+        solids.append((x, x + 0.28, height - 0.25, height, 8 - width, 8))
+    if way == "ladder":
+        solids += [(3.75, 3.8, y - 0.02, y + 0.02, 6.5, 7.1) for y in np.arange(0.3, 3, 0.3)]
+    mesh = boxes(*solids)
+    if way == "steep":
+        run = 3 / np.tan(np.radians(52))
+        corners = [[x, y + dy, z] for x, y in ((4 - run, 0.0), (4, 3.0)) for dy in (0.0, -0.3) for z in (5.5, 8)]
+        mesh = trimesh.util.concatenate([mesh, trimesh.convex.convex_hull(np.array(corners))])
+    return mesh
+
+
+@pytest.mark.parametrize("way, cause", [
+    # walkable ground climbs: the navmesh's erosion and ledge rule took the stair, the warning names it
+    ("stair", "a stair or ramp between them about 1.2 m wide at its narrowest, narrower than the navmesh keeps for this "
+              "agent (agent.radius 0.5 m; beside a drop the navmesh keeps floor from about 1.8 m), at ("),
+    ("cut", "a step of about 0.8 m, higher than agent.max_climb (0.4 m), at ("),  # a flight cut by a step: the step
+    ("none", "separate floors (3.0 m apart) with no walkable stairs or ramp"),   # no way up
+    ("steep", "separate floors (3.0 m apart) with no walkable stairs or ramp"),  # a ramp steeper than the agent climbs
+    ("ladder", "separate floors (3.0 m apart) with no walkable stairs or ramp"),  # rungs: no head room over each
+])
+def test_separate_floors_are_named_only_where_no_walkable_ground_climbs_between_them(way, cause):
+    """The navmesh route's yard and terrace, eroded by the agent's radius (the stair lost, as Recast loses a walkway
+    under about 1.8 m between a wall and a drop), over the meshes of :func:`terrace`."""
+    navmesh, graph = navmesh_of([(-9.5, 3.5, -7.5, 7.5, 0.0), (4.5, 13.5, 2.5, 7.5, 3.0)])
+    message = disconnected_warning(graph, areas(graph), 2, likely_cause_of(AgentConfig(), navmesh, mesh=terrace(way)))
+    assert f"Likely cause: from the largest area to the nearest area of 45 m², {cause}" in message
+
+
+def test_a_stair_the_sampled_graph_does_not_walk_is_named_on_the_sampling_route():
+    """The sampling route's yard and terrace (1 m squares, clearance 0.3 m) with the 1.2 m stair between them: the
+    stair is named without the navmesh's widths."""
+    graph = nx.Graph()
+    for k, (x, y, z) in enumerate([(x + 0.5, 0.0, z + 0.5) for x in range(-10, 3) for z in range(-8, 8)]
+                                  + [(x + 0.5, 3.0, z + 0.5) for x in range(5, 14) for z in range(3, 8)]):
+        graph.add_node(k, pos=(x, y, z), area=1.0)
+    for u in graph:
+        for v in graph:
+            if u < v and np.linalg.norm(np.subtract(graph.nodes[u]["pos"], graph.nodes[v]["pos"])) <= 1.0:
+                graph.add_edge(u, v)
+    message = disconnected_warning(graph, areas(graph), 2, likely_cause_of(AgentConfig(), clearance=0.3, mesh=terrace("stair")))
+    assert "Likely cause: from the largest area to the nearest area of 45 m², a stair or ramp between them about 1.2 m " \
+           "wide at its narrowest that the sampled graph does not walk for this agent (agent.radius 0.5 m, " \
+           "agent.max_climb 0.4 m), at (" in message
