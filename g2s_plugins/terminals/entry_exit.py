@@ -1504,11 +1504,13 @@ def _free_rays(inside: np.ndarray, along: np.ndarray, s: _Settings) -> tuple[lis
 
 
 def _free_reads(hits, at: int, along: np.ndarray, towards_last: np.ndarray, caster: RayCaster,
-                s: _Settings) -> tuple[np.ndarray, np.ndarray]:
+                s: _Settings, again: bool = True) -> tuple[np.ndarray, np.ndarray]:
     """(n,) (n,): how far the passage is free towards each opening's first and last end (m, infinite where nothing
     stands), from the :func:`_free_rays` of (n,3) ``along`` cast as ``hits`` from index ``at`` on; the nearer of the
     two heights each way, towards the last end along ``along`` where ``towards_last`` (n,) bool. Above the climb,
-    ground the agent walks onto (a terrain rising beside its border) is in no one's way, at either height."""
+    ground the agent walks onto (a terrain rising beside its border) is in no one's way, at either height. ``again``:
+    read again from just past the face of what the middle stands a few millimetres inside (once: not when reading
+    again)."""
     n = len(along)
     free = []
     for block, direction in ((0, along), (n, -along)):
@@ -1516,6 +1518,29 @@ def _free_reads(hits, at: int, along: np.ndarray, towards_last: np.ndarray, cast
                  for rays in (np.arange(at + block, at + block + n), np.arange(at + 2 * n + block, at + 3 * n + block))]
         free.append(np.minimum(*reach))
     forward, backward = free
+    if again:
+        # The middle a few millimetres inside something standing in the passage, its face at the middle (a crate in
+        # one half of a doorway, the middle of the floor's end 5 mm into it on the sampling route): the rays run through
+        # its inside and read it as the free part, on its side. Met from behind, under the agent's head, straight up,
+        # within a search step of its face along the edge: read again from just past that face (docs/entry_exit.md,
+        # "A thirty-fourth round of piece kinds").
+        high = hits.origins[at: at + n]
+        up = caster.first_hits(high, UP)
+        exit_ahead, exit_back = hits.distance[at: at + n], hits.distance[at + n: at + 2 * n]
+        met_behind = caster.face_normals[np.maximum(up.face, 0)] @ UP > 0.0
+        inside = np.flatnonzero((up.distance < s.head - s.climb - s.delta) & met_behind
+                                & (np.minimum(exit_ahead, exit_back) < s.delta))
+        if len(inside):
+            shift = np.where(exit_ahead[inside] <= exit_back[inside], 1.0, -1.0) * (
+                np.minimum(exit_ahead[inside], exit_back[inside]) + 0.5 * s.delta)
+            moved = along[inside] * shift[:, None]
+            head = hits.origins[at + 2 * n: at + 3 * n][inside] + moved
+            again_hits = caster.first_hits(
+                np.concatenate([high[inside] + moved, high[inside] + moved, head, head]),
+                np.concatenate([along[inside], -along[inside], along[inside], -along[inside]]))
+            ahead_again, back_again = _free_reads(again_hits, 0, along[inside], np.zeros(len(inside), dtype=bool),
+                                                  caster, s, again=False)
+            forward[inside], backward[inside] = ahead_again + shift, back_again - shift
     return np.where(towards_last, backward, forward), np.where(towards_last, forward, backward)
 
 
