@@ -16,12 +16,14 @@ down to railed pads; a roofed tunnel with a door at the back of a niche in its t
 
 from __future__ import annotations
 
+import math
 import sys
 
-from piece_parts import ROOM_OPENINGS, SLAB, box, flight, hull, kinds_by_name, room, round_level, run_kinds
+import numpy as np
+from piece_parts import ROOM_OPENINGS, SLAB, box, flight, hull, kinds_by_name, prism, room, round_level, run_kinds
 
 from g2s_plugins.samples.levels import SampleLevel, _opening
-from g2s_plugins.samples.pieces import _E, _N, _W
+from g2s_plugins.samples.pieces import _E, _N, _S, _W
 
 _level = round_level(34)
 
@@ -187,10 +189,66 @@ def niche_door_tunnel(door: float = 1.0, niche: float = 1.6, depth: float = 1.0)
                    _opening((6.0, 0.0, back + 0.3), _N, door)])
 
 
+def ramp_bridge_over_stream(deck: float = 3.0, ramp: float = 12.0) -> SampleLevel:
+    """A probe of the review's LOW 8 (a floor at the foot of the main floor's ramp and the level test): a bridge 3 m
+    wide (clear z 0-3) whose deck, 0.3 m thick with its top ``deck`` m (3) up, runs from its open west end (x 0) to x
+    8, then ramps down ``ramp`` m (12) east to the ground (y 0) at its open east end; balustrades 1.0 m high and 0.1 m
+    thick along both sides from end to end. Under the deck a stream bed 4.0 m wide (clear x 2-6) from z -4.5 to 7.5
+    at y 0, between walls 0.3 m thick and 2.5 m high, open at both ends. Known: four: the deck's west end, 3.0 m at (0,
+    1.5) at y ``deck``, facing west; the ramp's foot, 3.0 m at (8 + ``ramp``, 1.5) at y 0, facing east; the stream
+    bed's ends, 4.0 m at (4.0, -4.5) facing south and at (4.0, 7.5) facing north, at y 0 (where the bed goes on into
+    its neighbours)."""
+    z0, z1 = -4.5, 7.5
+    parts = [box(0.0, 8.0, deck - 0.3, deck, 0.0, 3.0),
+             hull([[x, y, z] for x, y in ((8.0, deck - 0.3), (8.0, deck), (8.0 + ramp, 0.0), (8.0 + ramp, -SLAB))
+                   for z in (0.0, 3.0)]),
+             box(0.0, 8.0 + ramp, deck, deck + 1.0, -0.1, 0.0), box(0.0, 8.0 + ramp, deck, deck + 1.0, 3.0, 3.1),
+             box(1.7, 6.3, -SLAB, 0.0, z0, z1), box(1.7, 2.0, -SLAB, 2.5, z0, z1), box(6.0, 6.3, -SLAB, 2.5, z0, z1)]
+    return _level("ramp_bridge_over_stream", parts,
+                  [_opening((0.0, deck, 1.5), _W, 3.0), _opening((8.0 + ramp, 0.0, 1.5), _E, 3.0),
+                   _opening((4.0, 0.0, z0), _S, 4.0), _opening((4.0, 0.0, z1), _N, 4.0)])
+
+
+def off_centre_fold_door(fold_deg: float = 15.0, near: float = 0.5, far: float = 2.0) -> SampleLevel:
+    """A probe of the review's LOW 7 (a union of an opening's parts in two passes, a fold in the first): round 33's
+    ``folded_wall_door`` with its doorway off the fold's middle: room (clear x 0-8, z 0-6 and east of it), walls 0.3
+    m thick and 3 m high, a 1.6 m west doorway (z 2.2-3.8, lintel 2.2 m); its east wall two wings ``fold_deg`` (15)
+    degrees off north-south meeting at an apex (8 + 3 tan ``fold_deg``, 3.0); the doorway's jambs square to the
+    wings, ``near`` m (0.5) along the south wing's inner face and ``far`` m (2.0) along the north wing's from the
+    apex, under a lintel 2.2 m up; the slab under the walls' whole footprint. Known: two, at the floor (y 0): the
+    west doorway, 1.6 m at (-0.3, 3.0); the fold's doorway, the chord between its jambs' outer corners at that
+    chord's middle, facing square to it (outward)."""
+    t = math.radians(fold_deg)
+    apex = np.array([8.0 + 3.0 * math.tan(t), 3.0])
+    d1, d2 = np.array([math.sin(t), math.cos(t)]), np.array([-math.sin(t), math.cos(t)])
+    n1, n2 = np.array([d1[1], -d1[0]]), np.array([d2[1], -d2[0]])  # outward (east) normals of the two wings
+    j1 = np.array([8.0, 0.0]) + d1 * (3.0 / math.cos(t) - near)
+    j2 = apex + d2 * far
+    o1, o2 = j1 + n1 * 0.3, j2 + n2 * 0.3
+    tip = apex + np.array([0.3 / math.cos(t), 0.0])
+    s_out = np.array([8.0, 0.0]) + n1 * 0.3 + d1 * ((-0.3 - (n1 * 0.3)[1]) / d1[1])  # wing 1's outer face at z -0.3
+    n_out = np.array([s_out[0], 6.3])
+    parts = room(8.0, 6.0, {"W": [(2.2, 3.8, 2.2)], "E": [(-0.3, 6.3, 3.0)]})  # no straight east wall
+    parts += [prism([(8.0, -0.3), tuple(s_out), tuple(tip), tuple(n_out), (8.0, 6.3)], -SLAB, 0.0),
+              prism([(8.0, -0.3), tuple(s_out), tuple(o1), tuple(j1), (8.0, 0.0)], -SLAB, 3.0),
+              prism([(8.0, 6.3), tuple(n_out), tuple(o2), tuple(j2), (8.0, 6.0)], -SLAB, 3.0),
+              prism([tuple(j1), tuple(o1), tuple(tip), tuple(o2), tuple(j2), tuple(apex)], 2.2, 3.0)]
+    chord = o2 - o1
+    heading = np.array([chord[1], 0.0, -chord[0]]) / np.linalg.norm(chord)  # square to the chord, facing east
+    mid = (o1 + o2) / 2
+    return _level("off_centre_fold_door", parts,
+                  [ROOM_OPENINGS[0], _opening((mid[0], 0.0, mid[1]), heading, float(np.linalg.norm(chord)))])
+
+
 KINDS = kinds_by_name(roller_shutter_bays, crate_in_thick_doorway, sloped_street_side_door, l_balcony_rail_gap,
                       t_three_widths, open_corner_plaza, footbridge_stair_ends, niche_door_tunnel)
 """Kind name -> factory of the thirty-fourth round."""
 
+PROBES = kinds_by_name(ramp_bridge_over_stream, off_centre_fold_door)
+"""Kind name -> factory of the pieces built to check the review's two risks (``--probes``; not the round's kinds)."""
+
 
 if __name__ == "__main__":
-    sys.exit(run_kinds(sys.argv[1:], kinds=KINDS, description=__doc__.splitlines()[0]))
+    probes = "--probes" in sys.argv[1:]
+    sys.exit(run_kinds([a for a in sys.argv[1:] if a != "--probes"], kinds=PROBES if probes else KINDS,
+                       description=__doc__.splitlines()[0]))
