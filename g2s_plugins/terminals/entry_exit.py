@@ -1503,14 +1503,21 @@ def _free_rays(inside: np.ndarray, along: np.ndarray, s: _Settings) -> tuple[lis
     return [high, high, head, head], [along, -along, along, -along]
 
 
+def _in_solid(caster: RayCaster, points: np.ndarray, s: _Settings) -> np.ndarray:
+    """(n,) bool: (n,3) ``points``, a search step over the climb above the floor, lie inside a solid: straight up they
+    meet a face from behind under the agent's head (:func:`_free_reads`)."""
+    up = caster.first_hits(points, UP)
+    behind = caster.face_normals[np.maximum(up.face, 0)] @ UP > 0.0
+    return (up.distance < s.head - s.climb - s.delta) & behind
+
+
 def _free_reads(hits, at: int, along: np.ndarray, towards_last: np.ndarray, caster: RayCaster,
                 s: _Settings, again: bool = True) -> tuple[np.ndarray, np.ndarray]:
     """(n,) (n,): how far the passage is free towards each opening's first and last end (m, infinite where nothing
     stands), from the :func:`_free_rays` of (n,3) ``along`` cast as ``hits`` from index ``at`` on; the nearer of the
     two heights each way, towards the last end along ``along`` where ``towards_last`` (n,) bool. Above the climb,
     ground the agent walks onto (a terrain rising beside its border) is in no one's way, at either height. ``again``:
-    read again from just past the face of what the middle stands a few millimetres inside (once: not when reading
-    again)."""
+    read again from just past the nearer face of what the middle stands inside (once: not when reading again)."""
     n = len(along)
     free = []
     for block, direction in ((0, along), (n, -along)):
@@ -1519,17 +1526,14 @@ def _free_reads(hits, at: int, along: np.ndarray, towards_last: np.ndarray, cast
         free.append(np.minimum(*reach))
     forward, backward = free
     if again:
-        # The middle a few millimetres inside something standing in the passage, its face at the middle (a crate in
-        # one half of a doorway, the middle of the floor's end 5 mm into it on the sampling route): the rays run through
-        # its inside and read it as the free part, on its side. Met from behind, under the agent's head, straight up,
-        # within a search step of its face along the edge: read again from just past that face (docs/entry_exit.md,
-        # "A thirty-fourth round of piece kinds").
+        # The middle inside something standing in the passage (a crate in part of a doorway, its face near the middle
+        # or short of it: the sampling route's floor end spans the whole doorway): the rays run through its inside and
+        # read it as the free part, on its side. Met from behind straight up under the agent's head: read again from
+        # just past its nearer face along the edge, where that stands in the open (docs/entry_exit.md, "A
+        # thirty-fourth round of piece kinds").
         high = hits.origins[at: at + n]
-        up = caster.first_hits(high, UP)
         exit_ahead, exit_back = hits.distance[at: at + n], hits.distance[at + n: at + 2 * n]
-        met_behind = caster.face_normals[np.maximum(up.face, 0)] @ UP > 0.0
-        inside = np.flatnonzero((up.distance < s.head - s.climb - s.delta) & met_behind
-                                & (np.minimum(exit_ahead, exit_back) < s.delta))
+        inside = np.flatnonzero(_in_solid(caster, high, s) & np.isfinite(np.minimum(exit_ahead, exit_back)))
         if len(inside):
             shift = np.where(exit_ahead[inside] <= exit_back[inside], 1.0, -1.0) * (
                 np.minimum(exit_ahead[inside], exit_back[inside]) + 0.5 * s.delta)
@@ -1540,7 +1544,8 @@ def _free_reads(hits, at: int, along: np.ndarray, towards_last: np.ndarray, cast
                 np.concatenate([along[inside], -along[inside], along[inside], -along[inside]]))
             ahead_again, back_again = _free_reads(again_hits, 0, along[inside], np.zeros(len(inside), dtype=bool),
                                                   caster, s, again=False)
-            forward[inside], backward[inside] = ahead_again + shift, back_again - shift
+            out = ~_in_solid(caster, high[inside] + moved, s)  # not out into the next solid (a jamb): as before
+            forward[inside[out]], backward[inside[out]] = (ahead_again + shift)[out], (back_again - shift)[out]
     return np.where(towards_last, backward, forward), np.where(towards_last, forward, backward)
 
 
