@@ -1402,7 +1402,7 @@ def _passages(
                         -out[row_of], -out, -out]))
     across = hits.distance[:n] + hits.distance[n: 2 * n]
     to_first_of, to_last_of = _free_reads(hits, 2 * n, along[row_of], towards_last[row_of], caster, s)
-    near = hits.distance[6 * n:] <= 1.5 * s.delta
+    near = hits.distance[(2 + len(free_origins)) * n:] <= 1.5 * s.delta  # past the low rays and the free ones
     closed_of = near[:n] | near[n: 2 * n]  # the way on from each entry's step
     closed = near[2 * n: 2 * n + len(kept)] | near[2 * n + len(kept):]  # from each opening's last step read: the edge
     ended = np.zeros(len(kept), dtype=bool)  # the passage's sides opened out (the room behind the wall), or it ended
@@ -1498,17 +1498,16 @@ def _free_rays(inside: np.ndarray, along: np.ndarray, s: _Settings) -> tuple[lis
     along (n,3) ``along`` and back: origins and directions, four blocks of n each (a search step above the climb, over
     what the agent steps onto, ahead and back; at the head-room rays' height, what hangs into the passage lower than
     the agent, a sign over part of it or a vault coming down at its sides, ahead and back), read by
-    :func:`_free_reads`."""
+    :func:`_free_reads`; and a fifth straight up from the first height, whether the point stands inside a solid."""
     high, head = inside + UP * (s.climb + s.delta), inside + UP * s.head
-    return [high, high, head, head], [along, -along, along, -along]
+    return [high, high, head, head, high], [along, -along, along, -along, np.broadcast_to(UP, high.shape)]
 
 
-def _in_solid(caster: RayCaster, points: np.ndarray, s: _Settings) -> np.ndarray:
-    """(n,) bool: (n,3) ``points``, a search step over the climb above the floor, lie inside a solid: straight up they
-    meet a face from behind under the agent's head (:func:`_free_reads`)."""
-    up = caster.first_hits(points, UP)
-    behind = caster.face_normals[np.maximum(up.face, 0)] @ UP > 0.0
-    return (up.distance < s.head - s.climb - s.delta) & behind
+def _in_solid(caster: RayCaster, hits, rays: np.ndarray, s: _Settings) -> np.ndarray:
+    """(n,) bool: the rays ``rays`` of ``hits``, cast straight up from a search step over the climb above the floor
+    (:func:`_free_rays`' fifth block), start inside a solid: they meet a face from behind under the agent's head."""
+    behind = caster.face_normals[np.maximum(hits.face[rays], 0)] @ UP > 0.0
+    return (hits.distance[rays] < s.head - s.climb - s.delta) & behind
 
 
 def _free_reads(hits, at: int, along: np.ndarray, towards_last: np.ndarray, caster: RayCaster,
@@ -1531,20 +1530,19 @@ def _free_reads(hits, at: int, along: np.ndarray, towards_last: np.ndarray, cast
         # read it as the free part, on its side. Met from behind straight up under the agent's head: read again from
         # just past its nearer face along the edge, where that stands in the open (docs/entry_exit.md, "A
         # thirty-fourth round of piece kinds").
-        high = hits.origins[at: at + n]
         exit_ahead, exit_back = hits.distance[at: at + n], hits.distance[at + n: at + 2 * n]
-        inside = np.flatnonzero(_in_solid(caster, high, s) & np.isfinite(np.minimum(exit_ahead, exit_back)))
+        inside = np.flatnonzero(_in_solid(caster, hits, np.arange(at + 4 * n, at + 5 * n), s)
+                                & np.isfinite(np.minimum(exit_ahead, exit_back)))
         if len(inside):
             shift = np.where(exit_ahead[inside] <= exit_back[inside], 1.0, -1.0) * (
                 np.minimum(exit_ahead[inside], exit_back[inside]) + 0.5 * s.delta)
-            moved = along[inside] * shift[:, None]
-            head = hits.origins[at + 2 * n: at + 3 * n][inside] + moved
-            again_hits = caster.first_hits(
-                np.concatenate([high[inside] + moved, high[inside] + moved, head, head]),
-                np.concatenate([along[inside], -along[inside], along[inside], -along[inside]]))
+            floor = hits.origins[at: at + n][inside] - UP * (s.climb + s.delta) + along[inside] * shift[:, None]
+            origins, directions = _free_rays(floor, along[inside], s)
+            again_hits = caster.first_hits(np.concatenate(origins), np.concatenate(directions))
             ahead_again, back_again = _free_reads(again_hits, 0, along[inside], np.zeros(len(inside), dtype=bool),
                                                   caster, s, again=False)
-            out = ~_in_solid(caster, high[inside] + moved, s)  # not out into the next solid (a jamb): as before
+            # not out into the next solid (a riser running into a jamb): the first read stands
+            out = ~_in_solid(caster, again_hits, np.arange(4 * len(inside), 5 * len(inside)), s)
             forward[inside[out]], backward[inside[out]] = (ahead_again + shift)[out], (back_again - shift)[out]
     return np.where(towards_last, backward, forward), np.where(towards_last, forward, backward)
 
