@@ -1402,7 +1402,7 @@ def _passages(
                         -out[row_of], -out, -out]))
     across = hits.distance[:n] + hits.distance[n: 2 * n]
     to_first_of, to_last_of = _free_reads(hits, 2 * n, along[row_of], towards_last[row_of], caster, s)
-    near = hits.distance[6 * n:] <= 1.5 * s.delta
+    near = hits.distance[(2 + len(free_origins)) * n:] <= 1.5 * s.delta  # past the low rays and the free ones
     closed_of = near[:n] | near[n: 2 * n]  # the way on from each entry's step
     closed = near[2 * n: 2 * n + len(kept)] | near[2 * n + len(kept):]  # from each opening's last step read: the edge
     ended = np.zeros(len(kept), dtype=bool)  # the passage's sides opened out (the room behind the wall), or it ended
@@ -1498,17 +1498,25 @@ def _free_rays(inside: np.ndarray, along: np.ndarray, s: _Settings) -> tuple[lis
     along (n,3) ``along`` and back: origins and directions, four blocks of n each (a search step above the climb, over
     what the agent steps onto, ahead and back; at the head-room rays' height, what hangs into the passage lower than
     the agent, a sign over part of it or a vault coming down at its sides, ahead and back), read by
-    :func:`_free_reads`."""
+    :func:`_free_reads`; and a fifth straight up from the first height, whether the point stands inside a solid."""
     high, head = inside + UP * (s.climb + s.delta), inside + UP * s.head
-    return [high, high, head, head], [along, -along, along, -along]
+    return [high, high, head, head, high], [along, -along, along, -along, np.broadcast_to(UP, high.shape)]
+
+
+def _in_solid(caster: RayCaster, hits, rays: np.ndarray, s: _Settings) -> np.ndarray:
+    """(n,) bool: the rays ``rays`` of ``hits``, cast straight up from a search step over the climb above the floor
+    (:func:`_free_rays`' fifth block), start inside a solid: they meet a face from behind under the agent's head."""
+    behind = caster.face_normals[np.maximum(hits.face[rays], 0)] @ UP > 0.0
+    return (hits.distance[rays] < s.head - s.climb - s.delta) & behind
 
 
 def _free_reads(hits, at: int, along: np.ndarray, towards_last: np.ndarray, caster: RayCaster,
-                s: _Settings) -> tuple[np.ndarray, np.ndarray]:
+                s: _Settings, again: bool = True) -> tuple[np.ndarray, np.ndarray]:
     """(n,) (n,): how far the passage is free towards each opening's first and last end (m, infinite where nothing
     stands), from the :func:`_free_rays` of (n,3) ``along`` cast as ``hits`` from index ``at`` on; the nearer of the
     two heights each way, towards the last end along ``along`` where ``towards_last`` (n,) bool. Above the climb,
-    ground the agent walks onto (a terrain rising beside its border) is in no one's way, at either height."""
+    ground the agent walks onto (a terrain rising beside its border) is in no one's way, at either height. ``again``:
+    read again from just past the nearer face of what the middle stands inside (once: not when reading again)."""
     n = len(along)
     free = []
     for block, direction in ((0, along), (n, -along)):
@@ -1516,6 +1524,26 @@ def _free_reads(hits, at: int, along: np.ndarray, towards_last: np.ndarray, cast
                  for rays in (np.arange(at + block, at + block + n), np.arange(at + 2 * n + block, at + 3 * n + block))]
         free.append(np.minimum(*reach))
     forward, backward = free
+    if again:
+        # The middle inside something standing in the passage (a crate in part of a doorway, its face near the middle
+        # or short of it: the sampling route's floor end spans the whole doorway): the rays run through its inside and
+        # read it as the free part, on its side. Met from behind straight up under the agent's head: read again from
+        # just past its nearer face along the edge, where that stands in the open (docs/entry_exit.md, "A
+        # thirty-fourth round of piece kinds").
+        exit_ahead, exit_back = hits.distance[at: at + n], hits.distance[at + n: at + 2 * n]
+        inside = np.flatnonzero(_in_solid(caster, hits, np.arange(at + 4 * n, at + 5 * n), s)
+                                & np.isfinite(np.minimum(exit_ahead, exit_back)))
+        if len(inside):
+            shift = np.where(exit_ahead[inside] <= exit_back[inside], 1.0, -1.0) * (
+                np.minimum(exit_ahead[inside], exit_back[inside]) + 0.5 * s.delta)
+            floor = hits.origins[at: at + n][inside] - UP * (s.climb + s.delta) + along[inside] * shift[:, None]
+            origins, directions = _free_rays(floor, along[inside], s)
+            again_hits = caster.first_hits(np.concatenate(origins), np.concatenate(directions))
+            ahead_again, back_again = _free_reads(again_hits, 0, along[inside], np.zeros(len(inside), dtype=bool),
+                                                  caster, s, again=False)
+            # not out into the next solid (a riser running into a jamb): the first read stands
+            out = ~_in_solid(caster, again_hits, np.arange(4 * len(inside), 5 * len(inside)), s)
+            forward[inside[out]], backward[inside[out]] = (ahead_again + shift)[out], (back_again - shift)[out]
     return np.where(towards_last, backward, forward), np.where(towards_last, forward, backward)
 
 
