@@ -219,6 +219,14 @@ void check_settings(const Settings& s) {
 
 // ---------------------------------------------------------------- one tile
 
+// A span at a tile's edge as drop_border_islands matches it with the next tile's: its global grid cell (z << 32 | x,
+// each as 32 bits), its floor (cells of ch) and the tile's region it belongs to (for a link: the region linking out).
+struct SeamSpan {
+    uint64_t cell;
+    int y;
+    unsigned short reg;
+};
+
 // The Recast output of one tile, copied out in Recast's own layout (what dtCreateNavMeshData reads, so that the
 // tile's Detour data can be made again without some polygons: drop_border_islands), plus its Detour tile data.
 struct TileMesh {
@@ -234,10 +242,14 @@ struct TileMesh {
     std::vector<float> dverts;            // (DV,3) world
     std::vector<unsigned char> dtris;     // (DT,4) as rcPolyMeshDetail: vertex indices from the base, edge flags
     std::vector<int> region_cells;        // tiled builds: each region's cells (spans) inside the tile, by region id
+    std::vector<uint32_t> region_pairs;   // tiled builds: regions (a << 16 | b, a < b) with linked spans in the tile
+    std::vector<SeamSpan> seam_spans;     // tiled builds: the spans of the tile's outermost cells, by cell and floor
+    std::vector<SeamSpan> seam_links;     // tiled builds: the walkable spans of the tile's border that those link to
     std::unique_ptr<unsigned char, DtFreeDel> data;  // dtCreateNavMeshData output
     int data_size = 0;
     std::string empty_reason;             // why the tile has no polygons (npolys == 0)
     std::vector<float> overlaps;          // (K,3) world: a span of each region that overlaps itself in plan
+    std::vector<unsigned short> overlap_regions;  // (K,) the region of each of those spans
     bool repartitioned = false;           // automatic partition: watershed regions overlapped or too long, redone
     std::vector<int32_t> detail_redone;   // local polygons whose detail read another storey, rebuilt
     std::vector<int32_t> detail_resampled; // local polygons whose detail left the floor, rebuilt with finer samples
@@ -245,11 +257,12 @@ struct TileMesh {
 
 // One span (world x, floor y, z) of each region of `chf` that holds two spans of one
 // column: a region overlapping itself in plan, which Recast's contours (traced in
-// plan) cannot describe. Regions in order of first sight, scanning rows of columns.
+// plan) cannot describe; `regions` gets their ids. Regions in order of first sight, scanning rows of columns.
 // O(spans + pairs of spans in a column): a column of one span is passed at once, and the set
 // is asked only about a region found twice (asked for every span, it took twice the time).
-std::vector<float> self_overlapping_regions(const rcCompactHeightfield& chf) {
+std::vector<float> self_overlapping_regions(const rcCompactHeightfield& chf, std::vector<unsigned short>& regions) {
     std::vector<float> found;
+    regions.clear();
     std::unordered_set<unsigned short> seen;
     for (int z = 0; z < chf.height; ++z) {
         for (int x = 0; x < chf.width; ++x) {
@@ -262,6 +275,7 @@ std::vector<float> self_overlapping_regions(const rcCompactHeightfield& chf) {
                 int j = i + 1;
                 while (j < end && chf.spans[j].reg != reg) ++j;
                 if (j == end || !seen.insert(reg).second) continue;
+                regions.push_back(reg);
                 found.insert(found.end(), {chf.bmin[0] + (static_cast<float>(x) + 0.5f) * chf.cs,
                                            chf.bmin[1] + static_cast<float>(chf.spans[i].y) * chf.ch,
                                            chf.bmin[2] + (static_cast<float>(z) + 0.5f) * chf.cs});
@@ -1348,17 +1362,58 @@ struct Input {
     int nt;
 };
 
-// Each region's cells (spans) inside the tile, by region id: what Recast's rcBuildRegions counts of a region when
-// it weighs it against minRegionArea (the border's spans, painted RC_BORDER_REG, belong to no region).
-std::vector<int> region_cells(const rcCompactHeightfield& chf) {
-    std::vector<int> cells(static_cast<size_t>(chf.maxRegions) + 1, 0);
-    for (int i = 0; i < chf.spanCount; ++i) {
-        const unsigned short reg = chf.spans[i].reg;
-        if (reg == 0 || (reg & RC_BORDER_REG)) continue;
-        if (reg >= cells.size()) cells.resize(static_cast<size_t>(reg) + 1, 0);
-        ++cells[reg];
-    }
-    return cells;
+// What drop_border_islands reads of a tiled build's tile to weigh the navmesh's parts as Recast weighs a solo build's
+// regions, the regions that made no polygon too (such as a strip one cell wide along the tile's edge):
+// - each region's cells (spans) inside the tile, by region id, which Recast's rcBuildRegions counts of a region when
+//   it weighs it against minRegionArea (the border's spans, painted RC_BORDER_REG, belong to no region);
+// - the pairs of regions with linked spans inside the tile, one of them without polygons (`pm`'s regions; no `pm`:
+//   none has any), since Detour's links already join the polygons of two regions that meet;
+// - the spans of the tile's outermost cells, and their links to walkable spans of the border (the next tile's own
+//   spans there).
+// `border`: the tile's border in cells; `gx0`, `gz0`: the global grid cell of its first own cell. O(spans), one
+// lookup each, and four for a span of a region without polygons or of an outermost cell.
+void region_links(const rcCompactHeightfield& chf, int border, int gx0, int gz0, const rcPolyMesh* pm, TileMesh& out) {
+    const int w = chf.width, h = chf.height;
+    auto in_region = [](unsigned short reg) { return reg != 0 && !(reg & RC_BORDER_REG); };
+    auto own = [&](int x, int z) { return x >= border && z >= border && x < w - border && z < h - border; };
+    auto global = [&](int x, int z) {  // the order of a scan by rows (z, then x) for the tile's own cells
+        return (static_cast<uint64_t>(static_cast<uint32_t>(gz0 + z - border)) << 32) |
+               static_cast<uint32_t>(gx0 + x - border);
+    };
+    std::vector<char> has_polygon(static_cast<size_t>(chf.maxRegions) + 1, 0);
+    for (int i = 0; pm && i < pm->npolys; ++i)
+        if (pm->regs[i] < has_polygon.size()) has_polygon[pm->regs[i]] = 1;
+    out.region_cells.assign(static_cast<size_t>(chf.maxRegions) + 1, 0);
+    out.region_pairs.clear();
+    out.seam_spans.clear();
+    out.seam_links.clear();
+    for (int z = border; z < h - border; ++z)
+        for (int x = border; x < w - border; ++x) {
+            const rcCompactCell& cell = chf.cells[x + z * w];
+            const bool edge = x == border || z == border || x == w - border - 1 || z == h - border - 1;
+            for (int i = static_cast<int>(cell.index), e = static_cast<int>(cell.index + cell.count); i < e; ++i) {
+                const rcCompactSpan& sp = chf.spans[i];
+                if (!in_region(sp.reg)) continue;
+                if (sp.reg >= out.region_cells.size()) out.region_cells.resize(static_cast<size_t>(sp.reg) + 1, 0);
+                ++out.region_cells[sp.reg];
+                const bool polygonless = sp.reg >= has_polygon.size() || !has_polygon[sp.reg];
+                if (!edge && !polygonless) continue;
+                if (edge) out.seam_spans.push_back({global(x, z), sp.y, sp.reg});
+                for (int dir = 0; dir < 4; ++dir) {
+                    if (rcGetCon(sp, dir) == RC_NOT_CONNECTED) continue;
+                    const int nx = x + rcGetDirOffsetX(dir), nz = z + rcGetDirOffsetY(dir);
+                    const int ni = static_cast<int>(chf.cells[nx + nz * w].index) + rcGetCon(sp, dir);
+                    const unsigned short nreg = chf.spans[ni].reg;
+                    if (!own(nx, nz)) {
+                        if (chf.areas[ni] != RC_NULL_AREA) out.seam_links.push_back({global(nx, nz), chf.spans[ni].y, sp.reg});
+                    } else if (polygonless && in_region(nreg) && nreg != sp.reg) {
+                        out.region_pairs.push_back((static_cast<uint32_t>(std::min(sp.reg, nreg)) << 16) | std::max(sp.reg, nreg));
+                    }
+                }
+            }
+        }
+    std::sort(out.region_pairs.begin(), out.region_pairs.end());
+    out.region_pairs.erase(std::unique(out.region_pairs.begin(), out.region_pairs.end()), out.region_pairs.end());
 }
 
 // The tile's Detour data (t.data) from its copied-out Recast arrays; false when dtCreateNavMeshData fails.
@@ -1537,11 +1592,11 @@ void build_tile(const Input& in, const int* tris, int ntris, const rcConfig& c, 
         }
     };
     build_regions(s.partition);
-    out.overlaps = self_overlapping_regions(*chf);
+    out.overlaps = self_overlapping_regions(*chf, out.overlap_regions);
     if (s.partition == Partition::automatic && !out.overlaps.empty()) {
         ctx.errors.clear();  // Recast logs the overlap as an error; it is repaired here
         build_regions(AUTO_FALLBACK);
-        out.overlaps = self_overlapping_regions(*chf);
+        out.overlaps = self_overlapping_regions(*chf, out.overlap_regions);
         out.repartitioned = true;
     }
 
@@ -1559,17 +1614,19 @@ void build_tile(const Input& in, const int* tris, int ntris, const rcConfig& c, 
         largest_region_contour(*cset) > AUTO_MAX_REGION_CONTOUR_VERTS) {
         ctx.errors.clear();  // what Recast logged belongs to the watershed contours, dropped here
         build_regions(AUTO_FALLBACK);
-        out.overlaps = self_overlapping_regions(*chf);
+        out.overlaps = self_overlapping_regions(*chf, out.overlap_regions);
         out.repartitioned = true;
         build_contours();
     }
     if (cset->nconts == 0) {
+        if (c.borderSize > 0) region_links(*chf, c.borderSize, gx0, gz0, nullptr, out);
         out.empty_reason = "no contours; regions too small?";
         return;
     }
     std::unique_ptr<rcPolyMesh, PolyMeshDel> pmesh(rcAllocPolyMesh());
     if (!pmesh) fail("rcAllocPolyMesh failed (out of memory)", nullptr, where);
     if (!rcBuildPolyMesh(&ctx, *cset, c.maxVertsPerPoly, *pmesh)) too_big("rcBuildPolyMesh failed");
+    if (c.borderSize > 0) region_links(*chf, c.borderSize, gx0, gz0, pmesh.get(), out);
     if (pmesh->npolys == 0) {
         if (!out.overlaps.empty())
             out.empty_reason = std::to_string(out.overlaps.size() / 3) +
@@ -1583,7 +1640,6 @@ void build_tile(const Input& in, const int* tris, int ntris, const rcConfig& c, 
         too_big("rcBuildPolyMeshDetail failed");
     out.detail_redone = redo_detail_off_storey(ctx, *pmesh, *chf, c, dmesh, too_big);
     out.detail_resampled = resample_detail_off_floor(ctx, *pmesh, *chf, c, dmesh, out.detail_redone, too_big);
-    if (c.borderSize > 0) out.region_cells = region_cells(*chf);
     chf.reset();
     cset.reset();
 
@@ -1772,6 +1828,7 @@ private:
     void assemble(std::vector<std::unique_ptr<TileMesh>>& tiles);
     std::unique_ptr<dtNavMesh, NavMeshDel> new_navmesh(const std::vector<std::unique_ptr<TileMesh>>& tiles) const;
     int drop_border_islands(std::vector<std::unique_ptr<TileMesh>>& tiles, const Settings& s);
+    void keep_records(const std::vector<std::unique_ptr<TileMesh>>& tiles);
     void link_topology();
 };
 
@@ -1860,7 +1917,9 @@ std::vector<std::unique_ptr<TileMesh>> NavMeshCore::build_tiled(const Input& in,
                 const std::string where = " in tile (" + std::to_string(tx) + ", " + std::to_string(ty) +
                                           ") of " + std::to_string(tiles_x) + " x " + std::to_string(tiles_y);
                 build_tile(in, sub.data(), static_cast<int>(m1 - m0), c, s, tx * ts, ty * ts, false, where, *tile);
-                if (tile->npolys > 0) results[k] = std::move(tile);
+                // a tile without polygons is kept while its regions can join or weigh the parts of the next tiles
+                // (drop_border_islands), or it holds a region that overlaps itself (the navmesh's records)
+                if (tile->npolys > 0 || !tile->seam_spans.empty() || !tile->overlaps.empty()) results[k] = std::move(tile);
             } catch (const std::bad_alloc&) {
                 errors[k] = "Recast: out of memory in tile (" + std::to_string(tx) + ", " + std::to_string(ty) + ")";
                 stop.store(true);
@@ -1884,115 +1943,157 @@ std::vector<std::unique_ptr<TileMesh>> NavMeshCore::build_tiled(const Input& in,
         if (!errors[k].empty()) throw std::runtime_error(errors[k]);
 
     std::vector<std::unique_ptr<TileMesh>> out;
+    bool any_polygon = false;
     for (auto& t : results)
-        if (t) out.push_back(std::move(t));
-    if (out.empty()) fail("no walkable polygons (no tile has any)");
+        if (t) {
+            any_polygon = any_polygon || t->npolys > 0;
+            out.push_back(std::move(t));
+        }
+    if (!any_polygon) fail("no walkable polygons (no tile has any)");
     return out;
 }
 
 // Recast removes a connected group of regions smaller than minRegionArea cells from a tile, but not one that
 // touches the tile's border, whose size one tile cannot tell; so a tiled navmesh keeps small parts that a tile border
 // cuts or grazes (a plinth's top, a sliver of floor) where a solo build of the same level drops them
-// (docs/navmesh.md, "Islands at tile borders"). Joined across the tiles by Detour's links, a part's size is known:
-// the polygons of each connected part that has an edge on a tile border and fewer than minRegionArea cells in all
-// (its regions' cells summed over its tiles) are taken out of their tiles, whose Detour data is made again, so that
-// no query of the navmesh meets them; a tile left with none is left out. Every other part stays as Recast built it.
-// Returns the number of polygons taken out.
+// (docs/navmesh.md, "Islands at tile borders"). Across the tiles a group's size is known. The tiles' regions are
+// joined where their spans link (inside a tile, and across a tile border: a tile's outermost span and the next tile's
+// span it links to) and where Detour links their polygons; a group that reaches a tile border and has fewer than
+// minRegionArea cells in all (its regions' cells summed over its tiles, the regions that made no polygon counted
+// too, such as a strip one cell wide along a tile's edge) is a group Recast would have removed, and its polygons are
+// taken out of their tiles, whose Detour data is made again, so that no query of the navmesh meets them; so are the
+// tiles' overlap records of its regions. Every other group stays as Recast built it. A tile left without polygons
+// stays in `tiles` (keep_records reads it). Returns the number of polygons taken out.
 int NavMeshCore::drop_border_islands(std::vector<std::unique_ptr<TileMesh>>& tiles, const Settings& s) {
     const int min_cells = cfg.minRegionArea, max_verts = cfg.maxVertsPerPoly;
     if (min_cells <= 0 || tiles.empty()) return 0;
-    // A navmesh of the tiles as they are, for its links: the tiles keep their data (no DT_TILE_FREE_DATA).
-    std::vector<int> first(tiles.size() + 1, 0);
-    for (size_t k = 0; k < tiles.size(); ++k) first[k + 1] = first[k] + tiles[k]->npolys;
-    std::vector<int> part(static_cast<size_t>(first.back()));
-    std::vector<char> on_border(part.size(), 0);
-    for (size_t i = 0; i < part.size(); ++i) part[i] = static_cast<int>(i);
+    // One node per tile and region, joined into groups by a union-find whose roots are the lowest nodes.
+    std::vector<int> node0(tiles.size() + 1, 0);
+    for (size_t k = 0; k < tiles.size(); ++k) node0[k + 1] = node0[k] + static_cast<int>(tiles[k]->region_cells.size());
+    std::vector<int> group(static_cast<size_t>(node0.back()));
+    for (size_t i = 0; i < group.size(); ++i) group[i] = static_cast<int>(i);
     auto root = [&](int i) {
-        while (part[i] != i) i = part[i] = part[part[i]];
+        while (group[i] != i) i = group[i] = group[group[i]];
         return i;
     };
+    auto join = [&](int a, int b) {
+        a = root(a);
+        b = root(b);
+        if (a != b) group[std::max(a, b)] = std::min(a, b);
+    };
+    auto node = [&](size_t k, unsigned short reg) {  // -1: a region no cell was counted of
+        return reg < tiles[k]->region_cells.size() ? node0[k] + reg : -1;
+    };
+    std::vector<char> at_border(group.size(), 0), keep_all(group.size(), 0);
+    for (size_t k = 0; k < tiles.size(); ++k)
+        for (uint32_t pair : tiles[k]->region_pairs) join(node0[k] + static_cast<int>(pair >> 16), node0[k] + static_cast<int>(pair & 0xffff));
     {
+        // The span a tile's outermost span links to is the next tile's span in the same global cell, at the same floor
+        // (a cell of rounding allowed: each tile rasterises the triangles from its own corner).
+        std::vector<int> tile_at(static_cast<size_t>(tiles_x) * tiles_y, -1);
+        for (size_t k = 0; k < tiles.size(); ++k) tile_at[static_cast<size_t>(tiles[k]->ty) * tiles_x + tiles[k]->tx] = static_cast<int>(k);
+        for (size_t k = 0; k < tiles.size(); ++k)
+            for (const SeamSpan& link : tiles[k]->seam_links) {
+                const int from = node0[k] + link.reg;
+                at_border[from] = 1;
+                const int gx = static_cast<int32_t>(link.cell & 0xffffffffu), gz = static_cast<int32_t>(link.cell >> 32);
+                if (gx < 0 || gz < 0 || gx / tile_size >= tiles_x || gz / tile_size >= tiles_y) continue;  // off the grid
+                const int kk = tile_at[static_cast<size_t>(gz / tile_size) * tiles_x + gx / tile_size];
+                if (kk < 0) continue;  // a tile with no triangle
+                const std::vector<SeamSpan>& spans = tiles[kk]->seam_spans;
+                auto it = std::lower_bound(spans.begin(), spans.end(), link.cell,
+                                           [](const SeamSpan& a, uint64_t cell) { return a.cell < cell; });
+                for (; it != spans.end() && it->cell == link.cell; ++it)
+                    if (std::abs(it->y - link.y) <= 1) join(from, node0[kk] + it->reg);
+            }
+    }
+    {
+        // Detour's links (the navmesh's neighbours and portals come from them), from a navmesh of the tiles as they
+        // are that reads their data without owning it (no DT_TILE_FREE_DATA): a dropped polygon is never linked to a
+        // kept one.
         std::unique_ptr<dtNavMesh, NavMeshDel> probe = new_navmesh(tiles);
-        std::vector<dtTileRef> refs(tiles.size());
+        std::vector<dtTileRef> refs(tiles.size(), 0);
         std::vector<int> tile_of_index(static_cast<size_t>(probe->getMaxTiles()), -1);
         for (size_t k = 0; k < tiles.size(); ++k) {
+            if (tiles[k]->npolys == 0) continue;
             if (dtStatusFailed(probe->addTile(tiles[k]->data.get(), tiles[k]->data_size, 0, 0, &refs[k])))
                 fail("dtNavMesh::addTile failed in tile (" + std::to_string(tiles[k]->tx) + ", " +
                      std::to_string(tiles[k]->ty) + ")");
             tile_of_index[probe->decodePolyIdTile(static_cast<dtPolyRef>(refs[k]))] = static_cast<int>(k);
         }
         for (size_t k = 0; k < tiles.size(); ++k) {
+            if (tiles[k]->npolys == 0) continue;
             const dtMeshTile* tile = probe->getTileByRef(refs[k]);
             for (int ip = 0; ip < tile->header->polyCount; ++ip) {
                 const dtPoly& p = tile->polys[ip];
-                const int gi = first[k] + ip;
+                const int a = node(k, tiles[k]->regs[ip]);
                 for (int j = 0; j < p.vertCount; ++j)
-                    if (p.neis[j] & DT_EXT_LINK) on_border[gi] = 1;
+                    if ((p.neis[j] & DT_EXT_LINK) && a >= 0) at_border[a] = 1;
                 for (unsigned int l = p.firstLink; l != DT_NULL_LINK; l = tile->links[l].next) {
                     const dtPolyRef ref = tile->links[l].ref;
-                    const int gk = first[tile_of_index[probe->decodePolyIdTile(ref)]] +
-                                   static_cast<int>(probe->decodePolyIdPoly(ref));
-                    const int a = root(gi), b = root(gk);
-                    if (a != b) part[std::max(a, b)] = std::min(a, b);
+                    const size_t kk = static_cast<size_t>(tile_of_index[probe->decodePolyIdTile(ref)]);
+                    const int b = node(kk, tiles[kk]->regs[probe->decodePolyIdPoly(ref)]);
+                    if (a >= 0 && b >= 0) {
+                        join(a, b);
+                    } else {  // a polygon of an uncounted region keeps whatever it is linked to
+                        if (a >= 0) keep_all[a] = 1;
+                        if (b >= 0) keep_all[b] = 1;
+                    }
                 }
             }
         }
     }
-    // Each part's cells, every region of it counted once (its polygons visited part by part).
-    std::vector<int> order(part.size()), start(part.size() + 1, 0);
-    for (size_t i = 0; i < part.size(); ++i) part[i] = root(static_cast<int>(i));  // each polygon's part, by its root
-    for (size_t i = 0; i < part.size(); ++i) ++start[part[i] + 1];
-    for (size_t r = 0; r < part.size(); ++r) start[r + 1] += start[r];
-    {
-        std::vector<int> fill(start.begin(), start.end() - 1);
-        for (size_t i = 0; i < part.size(); ++i) order[fill[part[i]]++] = static_cast<int>(i);
-    }
-    auto tile_of = [&](int gi) {  // the tile holding polygon gi
-        return static_cast<size_t>(std::upper_bound(first.begin(), first.end(), gi) - first.begin() - 1);
+    // Each group's cells, whether it reaches a tile border, whether it must stay.
+    std::vector<long long> cells(group.size(), 0);
+    for (size_t k = 0; k < tiles.size(); ++k)
+        for (size_t reg = 0; reg < tiles[k]->region_cells.size(); ++reg) {
+            const int n = node0[k] + static_cast<int>(reg), r = root(n);
+            cells[r] += tiles[k]->region_cells[reg];
+            at_border[r] = at_border[r] || at_border[n];
+            keep_all[r] = keep_all[r] || keep_all[n];
+        }
+    auto dropped_region = [&](size_t k, unsigned short reg) {
+        const int n = node(k, reg);
+        if (n < 0) return false;
+        const int r = root(n);
+        return at_border[r] && !keep_all[r] && cells[r] < min_cells;
     };
-    std::vector<std::vector<int>> counted(tiles.size());  // by tile and region: the part that counted its cells
-    for (size_t k = 0; k < tiles.size(); ++k) counted[k].assign(tiles[k]->region_cells.size(), -1);
-    std::vector<std::vector<char>> keep(tiles.size());
-    for (size_t k = 0; k < tiles.size(); ++k) keep[k].assign(static_cast<size_t>(tiles[k]->npolys), 1);
     int dropped = 0;
-    for (size_t r = 0; r < part.size(); ++r) {
-        if (start[r] == start[r + 1]) continue;
-        long long cells = 0;
-        bool border = false;
-        for (int q = start[r]; q < start[r + 1]; ++q) {
-            const int gi = order[q];
-            const size_t k = tile_of(gi);
-            const unsigned short reg = tiles[k]->regs[gi - first[k]];
-            border = border || on_border[gi];
-            if (reg >= counted[k].size()) cells += min_cells;  // a region no cell was counted of: keep its part
-            else if (counted[k][reg] != static_cast<int>(r)) {
-                counted[k][reg] = static_cast<int>(r);
-                cells += tiles[k]->region_cells[reg];
-            }
-        }
-        if (!border || cells >= min_cells) continue;
-        for (int q = start[r]; q < start[r + 1]; ++q) {
-            const int gi = order[q];
-            const size_t k = tile_of(gi);
-            keep[k][gi - first[k]] = 0;
-            ++dropped;
-        }
-    }
-    if (dropped == 0) return 0;
-    std::vector<std::unique_ptr<TileMesh>> kept;
     for (size_t k = 0; k < tiles.size(); ++k) {
         TileMesh& t = *tiles[k];
-        if (std::find(keep[k].begin(), keep[k].end(), 0) != keep[k].end()) {
-            keep_tile_polygons(t, keep[k], max_verts);
+        std::vector<char> keep(static_cast<size_t>(t.npolys), 1);
+        for (int ip = 0; ip < t.npolys; ++ip) keep[ip] = !dropped_region(k, t.regs[ip]);
+        const int gone = static_cast<int>(std::count(keep.begin(), keep.end(), 0));
+        if (gone > 0) {
+            dropped += gone;
+            keep_tile_polygons(t, keep, max_verts);
             t.data.reset();
             t.data_size = 0;
             if (t.npolys > 0 && !make_tile_data(t, max_verts, cfg, s))
                 fail("dtCreateNavMeshData failed in tile (" + std::to_string(t.tx) + ", " + std::to_string(t.ty) + ")");
         }
-        if (t.npolys > 0) kept.push_back(std::move(tiles[k]));
+        size_t left = 0;
+        for (size_t q = 0; q < t.overlap_regions.size(); ++q) {
+            if (dropped_region(k, t.overlap_regions[q])) continue;
+            std::copy(&t.overlaps[q * 3], &t.overlaps[q * 3] + 3, &t.overlaps[left * 3]);
+            t.overlap_regions[left++] = t.overlap_regions[q];
+        }
+        t.overlaps.resize(left * 3);
+        t.overlap_regions.resize(left);
     }
-    tiles.swap(kept);
     return dropped;
+}
+
+// The navmesh's records of how its tiles were partitioned, of the floor it holds: every overlap span left in the
+// tiles (one of a tile without polygons too: a region a solo build would keep, whose floor the overlap lost) and the
+// tiles that the automatic partition redid and that hold polygons.
+void NavMeshCore::keep_records(const std::vector<std::unique_ptr<TileMesh>>& tiles) {
+    overlaps.clear();
+    repartitioned.clear();
+    for (const auto& t : tiles) {
+        overlaps.insert(overlaps.end(), t->overlaps.begin(), t->overlaps.end());
+        if (t->repartitioned && t->npolys > 0) repartitioned.insert(repartitioned.end(), {t->tx, t->ty});
+    }
 }
 
 // An empty Detour navmesh for `tiles` (its origin and tile width from the build's grid and tiling).
@@ -2054,8 +2155,6 @@ void NavMeshCore::assemble(std::vector<std::unique_ptr<TileMesh>>& tiles) {
     areas.resize(static_cast<size_t>(total));
     regions.resize(static_cast<size_t>(total));
     dverts.clear();
-    overlaps.clear();
-    repartitioned.clear();
     detail_redone.clear();
     detail_resampled.clear();
     dverts.reserve(static_cast<size_t>(total_dverts) * 3);
@@ -2126,8 +2225,6 @@ void NavMeshCore::assemble(std::vector<std::unique_ptr<TileMesh>>& tiles) {
                 dtri_poly.push_back(first + i);
             }
         }
-        overlaps.insert(overlaps.end(), t.overlaps.begin(), t.overlaps.end());
-        if (t.repartitioned) repartitioned.insert(repartitioned.end(), {t.tx, t.ty});
         for (int32_t p : t.detail_redone) detail_redone.push_back(p + first);
         for (int32_t p : t.detail_resampled) detail_resampled.push_back(p + first);
         first += t.npolys;
@@ -2365,6 +2462,9 @@ void NavMeshCore::build(const float* vin, int nv, const int* tin, int nt, const 
         tiles = build_tiled(in, s, AUTO_TILE_SIZE);
     }
     if (tile_size > 0) border_island_polygons = drop_border_islands(tiles, s);
+    keep_records(tiles);
+    tiles.erase(std::remove_if(tiles.begin(), tiles.end(), [](const auto& t) { return t->npolys == 0; }), tiles.end());
+    if (tiles.empty()) fail("no walkable polygons (every part is smaller than region_min_size and at a tile border)");
     assemble(tiles);
 
     build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -2752,11 +2852,12 @@ NB_MODULE(_recast, m) {
         .def_prop_ro("region_overlaps",
                      [](const NavMeshCore& n) { return to_numpy(n.overlaps, n.overlaps.size() / 3, 3); },
                      "(K,3) float64: a span (world x, floor y, z) of each Recast region that overlaps itself "
-                     "in plan, tile by tile (left in the built navmesh: none with partition 'auto')")
+                     "in plan, tile by tile (left in the built navmesh: none with partition 'auto'); in a tiled "
+                     "build not those of the small parts at tile borders that are dropped")
         .def_prop_ro("repartitioned_tiles",
                      [](const NavMeshCore& n) { return to_numpy(n.repartitioned, n.repartitioned.size() / 2, 2); },
                      "(R,2) int32: tile (x, z) of each tile whose watershed regions overlapped and were redone "
-                     "by the 'auto' partition, row-major order; (0, 0) for a solo navmesh")
+                     "by the 'auto' partition and that holds polygons, row-major order; (0, 0) for a solo navmesh")
         .def_prop_ro("detail_redone_polygons",
                      [](const NavMeshCore& n) { return to_numpy(n.detail_redone, n.detail_redone.size(), 0); },
                      "(N,) int32: polygons whose detail heights Recast read from their region on another "

@@ -522,6 +522,27 @@ def test_tiled_build_drops_the_small_islands_a_solo_build_drops():
     assert set(tiled.detail_polygon.tolist()) == set(range(tiled.polygon_count))
 
 
+def test_tiled_build_keeps_a_top_whose_strip_at_a_tile_border_makes_no_polygon():
+    """A dumbbell's top (two 2.24 m squares and a 1.55 m bar, 1.5 m high, turned 90 degrees) that a solo build keeps
+    (5.5 m²) lies across the tile border x = -4 of tiles of 16 and 32 cells; in the tile on its +x side its cells form
+    a strip one cell wide, a region that makes no polygon. Summed over the regions with polygons only, the top had 56
+    cells, under region_min_size² = 64, and both tiled builds dropped all of it (main at 328e52a); the strip's cells,
+    joined across the border, count, and the top stays (its polygons without the strip)."""
+    bars = [slab((2.24, 1.5, 2.24), (-2.24, 0.75, 0)), slab((2.24, 1.5, 2.24), (2.24, 0.75, 0)),
+            slab((4.48, 1.5, 1.55), (0, 0.75, 0))]
+    top = trimesh.util.concatenate(bars)
+    top.apply_transform(trimesh.transformations.rotation_matrix(math.pi / 2, (0, 1, 0)))
+    top.apply_translation((-3.73, 0, 4.59))
+    level = trimesh.util.concatenate([floor(24, 24), top])
+    solo = build(level, cell_size=0.25, tile_size=0)
+    assert solo.areas[solo.centres[:, 1] > 1.0].sum() == pytest.approx(5.5)
+    for tile_size in (16, 32):
+        tiled = build(level, cell_size=0.25, tile_size=tile_size)
+        assert tiled.config()["borderIslandPolygons"] == 0
+        assert tiled.areas[tiled.centres[:, 1] > 1.0].sum() > 3.0
+        assert adjacency_components(tiled) == adjacency_components(solo) == 2
+
+
 def boxes(lo: np.ndarray, hi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Vertices (8k,3) and faces (12k,3) of k axis-aligned boxes with corners lo, hi (k,3)."""
     corner = np.array([[x, y, z] for x in (0, 1) for y in (0, 1) for z in (0, 1)], dtype=float)
@@ -814,6 +835,30 @@ def test_auto_keeps_the_turns_of_a_spiral_stair_apart():
     assert adjacency_components(nm) == 1 and centre_height_jumps(nm).max() <= agent.height
     assert nm.centres[:, 1].min() < 0.5 and nm.centres[:, 1].max() > 3 * 3.6 - 1.0  # the ground to the top step
     assert len(nm.detail_redone_polygons) == 0  # no detail read from another turn here
+
+
+def test_tiled_records_and_parts_follow_the_solo_build_on_a_spiral_tower():
+    """The spiral tower beside a floor, cells of 0.25 m. Watershed makes one region of the stair that overlaps itself
+    and no polygon of it, which a solo build reports. In 2 tiles of 48 cells the tower's tile holds no polygon and was
+    left out with its record (main at 328e52a: no overlap reported); it is reported now. With region_min_size 40
+    (1,600 cells, more than the tower's floor) a solo build drops the tower and reports nothing; in tiles of 32 cells
+    main dropped some of its polygons and kept the overlap record of a dropped region (and 5 pieces of the stair
+    that no tile border touches); the tower's regions, joined by their spans across the tiles, are one group under
+    1,600 cells, dropped whole with their record. With region_min_size 20 a solo build keeps the stair (auto redoes
+    the tower's tile); main dropped it in tiles of 32 cells, as the group of polygons Detour links, and with it the
+    tile's repartitioned record."""
+    agent = types.SimpleNamespace(radius=0.5, height=2.0, max_climb=0.4, max_slope=45.0)
+    level = trimesh.util.concatenate([spiral_tower(), floor(12, 12, x=16.0)])
+    for tile_size, min_size, overlaps in ((48, 8, 1), (32, 40, 0)):
+        solo, tiled = (build(level, agent, partition="watershed", tile_size=ts, region_min_size=min_size, cell_size=0.25)
+                       for ts in (0, tile_size))
+        assert len(solo.region_overlaps) == len(tiled.region_overlaps) == overlaps
+        assert np.all(np.abs(tiled.region_overlaps[:, [0, 2]]) < 3.3)  # in the tower
+        assert not np.any(tiled.centres[:, 1] > 1.0) and adjacency_components(tiled) == 1
+    solo, tiled = (build(level, agent, tile_size=ts, region_min_size=20, cell_size=0.25) for ts in (0, 32))
+    assert solo.repartitioned_tiles.tolist() == tiled.repartitioned_tiles.tolist() == [[0, 0]]
+    assert tiled.config()["borderIslandPolygons"] == 0 and np.sum(tiled.centres[:, 1] > 3 * 3.6 - 1.0) > 0
+    assert adjacency_components(solo) == adjacency_components(tiled) == 2
 
 
 def detail_overshoot(nm: NavMesh) -> np.ndarray:

@@ -80,12 +80,14 @@ class NavMesh:
                         xz column: a region overlapping itself in plan, whose
                         contours (traced in plan) can lose polygons or their
                         links. Only the ``watershed`` partition leaves them
-                        (``auto`` redoes those tiles); tile by tile.
+                        (``auto`` redoes those tiles); tile by tile, a tile
+                        without polygons too, but not the regions of the
+                        small parts a tiled build drops at tile borders.
     ``repartitioned_tiles`` (R,2) int32, tile (x, z) of each tile whose
                         watershed regions overlapped, or had one region
                         whose contours total more than 128 vertices, and
                         that the ``auto`` partition rebuilt with
-                        ``monotone`` (row-major order;
+                        ``monotone`` and that holds polygons (row-major order;
                         ``(0, 0)`` for a solo navmesh); empty for the other
                         partitions.
     ``detail_redone_polygons`` (N,) int32, ascending: polygons whose
