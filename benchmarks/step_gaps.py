@@ -150,6 +150,7 @@ def main(argv: list[str] | None = None) -> int:
             return 2
         print(f"{preset} ({route}; agent radius {config.agent.radius:g} m, climb {config.agent.max_climb:g} m; "
               f"graph.params {params}): joined gaps of (yaw, shift) cases, yaws {a.yaws}, shifts {a.shifts}")
+        print(f"  {preset} | case kind | " + " | ".join(f"{w:g} m" for w in a.widths) + "   (% joined)")
         started = time.process_time()
         for slabs, dh, under in itertools.product(a.slabs, a.dh, a.under):
             kind = f"{slabs} slabs, dh {dh:g} m, over {under}"
@@ -166,9 +167,8 @@ def main(argv: list[str] | None = None) -> int:
                         if a.cases:
                             print(f"    {kind} w {width:g} yaw {yaw:g} shift {shift:g} gap {k}: "
                                   f"{'joined' if together else 'apart'}", flush=True)
-                cells.append(f"{width:g}: {joined}/{total}")
-                print(f"  {preset} | {kind} | width {width:g} m | joined {joined} of {total} "
-                      f"({100.0 * joined / total:.0f} %)", flush=True)
+                cells.append(f"{100.0 * joined / total:.0f}")
+            print(f"  {preset} | {kind} | " + " | ".join(cells), flush=True)
         print(f"  {preset}: {time.process_time() - started:.1f} s CPU", flush=True)
     return 0
 
