@@ -1510,10 +1510,9 @@ def crack_sides(agent: AgentShape) -> list[np.ndarray]:
     return list(_CRACK_AXES * (agent.radius / 8.0))
 
 
-STEP_GAP_AXES = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [math.sqrt(0.5), 0.0, math.sqrt(0.5)],
-                          [-math.sqrt(0.5), 0.0, math.sqrt(0.5)]])
-"""The plan axes along which :func:`ground_across_step_gap` measures a gap: every 45 degrees, so that one of them
-lies within 22.5 degrees of any gap's normal."""
+STEP_GAP_AXES = np.array([[math.cos(turn), 0.0, math.sin(turn)] for turn in np.arange(8) * math.pi / 8])
+"""The plan axes along which :func:`ground_across_step_gap` measures a gap: every 22.5 degrees, so that one of them
+lies within 11.25 degrees of any gap's normal."""
 
 STEP_GAP_SEARCH = 4
 """Rays a direction :func:`ground_across_step_gap` first casts, evenly up to ``step_gap``, before halving the last
@@ -1540,14 +1539,14 @@ def ground_across_step_gap(
     the agent steps over when the shortest of those is under ``step_gap``. Each distance is read a little long, and
     a straight gap's width along an axis is its width over the cosine of the angle between them, so a gap as wide as
     ``step_gap`` or wider is never stepped over; one narrower is whenever some axis reads it under ``step_gap``:
-    always for a straight gap under ``step_gap`` cos 22.5 degrees (0.924 ``step_gap``), and in the band up to
-    ``step_gap`` when the gap's normal lies close enough to an axis. The height the two sides differ by is the
+    always for a straight gap under ``step_gap`` cos 11.25 degrees (0.981 ``step_gap``) less the reading's error,
+    and in the band up to ``step_gap`` when the gap's normal lies close enough to an axis. The height the two sides differ by is the
     caller's to check (the walk test's and the ledge probes' step rule), as for a crack.
 
     Returns:
         ``(on, distance)``: (n,) bool, and (n,) metres down to the nearer side's ground (``inf`` where not on).
 
-    At most ``8 (STEP_GAP_SEARCH + STEP_GAP_HALVINGS)`` downward rays a probe.
+    At most ``16 (STEP_GAP_SEARCH + STEP_GAP_HALVINGS)`` downward rays a probe.
     """
     probes = np.asarray(probes, dtype=np.float64).reshape(-1, 3)
     n = len(probes)

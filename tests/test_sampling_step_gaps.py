@@ -49,9 +49,14 @@ def joined(mesh: trimesh.Trimesh, middles: np.ndarray, **params) -> bool:
 
 @pytest.mark.parametrize(("yaw", "shift"), [(0.0, 0.0), (20.0, 0.08), (45.0, 0.16)])
 def test_a_gap_narrower_than_the_climb_is_stepped_over_at_any_angle(yaw: float, shift: float):
-    # 0.3 m: under step_gap cos 22.5 degrees (0.37 m), so every turn steps over it; before step_gap none did.
+    # 0.3 m: under step_gap cos 11.25 degrees (0.39 m), so every turn steps over it; before step_gap none did.
     assert joined(*two_slabs(0.3, yaw, shift=shift))
     assert joined(*two_slabs(0.3, yaw, rise=0.2, shift=shift))
+
+
+def test_a_gap_just_under_step_gap_is_stepped_over_off_the_axes():
+    # 0.38 m turned 20 degrees: 2.5 degrees off the nearest of the rule's axes (every 22.5), read 0.381 m across.
+    assert joined(*two_slabs(0.38, 20.0, shift=0.08))
 
 
 @pytest.mark.parametrize(("yaw", "shift"), [(0.0, 0.0), (20.0, 0.08), (45.0, 0.16)])

@@ -19,7 +19,8 @@ wanted. No Recast is involved: ``context.navmesh`` stays ``None``.
    in 8 directions, rising or falling between neighbouring probes by a step
    or the max slope at most, with head room; a probe over a crack, such as
    a grating's slot, stands on the ground beside it, the walk test's crack
-   rule). This erodes
+   rule, and one in a gap narrower than ``step_gap`` on the nearer side's
+   ground: :func:`~g2s_plugins._raycasting.ground_beside`). This erodes
    the walkable surface by ``clearance`` as Recast erodes it by the radius.
    Rays whose answer the geometry near a candidate already gives are not
    cast (:class:`_Surroundings`); the answers are the same. The wall and
@@ -48,7 +49,8 @@ wanted. No Recast is involved: ``context.navmesh`` stays ``None``.
    slot between pillars or a slot beside a post narrower than the agent is not
    crossed, nor a row of bollards or crates lower than the lifted segment; the
    ground under evenly spaced points is walkable, has head room and changes
-   height by at most a step or the max slope); a pair on one open floor triangle, both samples that
+   height by at most a step or the max slope; a probe over a crack or a gap
+   narrower than ``step_gap`` stands on the ground beside it); a pair on one open floor triangle, both samples that
    far inside its edges, passes without a ray
    (:class:`g2s_plugins._raycasting.OpenFloors`). Then *passages the samples
    miss* (:func:`moved_into_passages`): a passage a little wider than the
