@@ -1535,8 +1535,9 @@ def ground_across_step_gap(
 
     Along each of :data:`STEP_GAP_AXES`, both ways, the first walkable ground within ``reach`` straight down is
     searched up to ``step_gap`` away (:data:`STEP_GAP_SEARCH` rays, then :data:`STEP_GAP_HALVINGS` halvings of the
-    stretch that found it); the gap along an axis is the sum of the two sides' distances, and a probe is in a gap
-    the agent steps over when the shortest of those is under ``step_gap``. Each distance is read a little long, and
+    stretch that found it, while the two sides' readings still straddle ``step_gap``); the gap along an axis is the
+    sum of the two sides' distances, and a probe is in a gap the agent steps over when the shortest of those is under
+    ``step_gap``. Each distance is read a little long, and
     a straight gap's width along an axis is its width over the cosine of the angle between them, so a gap as wide as
     ``step_gap`` or wider is never stepped over; one narrower is whenever some axis reads it under ``step_gap``:
     always for a straight gap under ``step_gap`` cos 11.25 degrees (0.981 ``step_gap``) less the reading's error,
@@ -1562,23 +1563,33 @@ def ground_across_step_gap(
         hits = caster.first_hits(probes[rows] + at[:, None] * directions[cols], -UP)
         return (hits.distance <= reach) & walkable(hits.face), hits.distance
 
+    axes = len(STEP_GAP_AXES)
+
+    def open_axes() -> np.ndarray:
+        """(n, 2 axes) the directions still read: of the axes whose gap may read under ``step_gap``, of the probes no
+        axis has yet read under it."""
+        may = lo[:, :axes] + lo[:, axes:] < step_gap
+        may &= ~(hi[:, :axes] + hi[:, axes:] < step_gap).any(axis=1, keepdims=True)
+        return np.concatenate([may, may], axis=1)
+
     for k in range(1, STEP_GAP_SEARCH + 1):
-        rows, cols = np.nonzero(np.isinf(hi))
+        rows, cols = np.nonzero(np.isinf(hi) & open_axes())
         if len(rows) == 0:
             break
         found, distance = cast(rows, cols, np.full(len(rows), k * stride))
         hi[rows[found], cols[found]] = k * stride
         down[rows[found], cols[found]] = distance[found]
         lo[rows[~found], cols[~found]] = k * stride
-    for _ in range(STEP_GAP_HALVINGS):
-        rows, cols = np.nonzero(np.isfinite(hi))
+    for _ in range(STEP_GAP_HALVINGS):  # only where the two sides' readings still straddle step_gap
+        rows, cols = np.nonzero(np.isfinite(hi) & open_axes())
+        if len(rows) == 0:
+            break
         middle = 0.5 * (lo[rows, cols] + hi[rows, cols])
         found, distance = cast(rows, cols, middle)
         hi[rows[found], cols[found]] = middle[found]
         down[rows[found], cols[found]] = distance[found]
         lo[rows[~found], cols[~found]] = middle[~found]
-    axes = len(STEP_GAP_AXES)
-    across = hi[:, :axes] + hi[:, axes:]  # (n, axes) the gap's width along each axis
+    across = hi[:, :axes] + hi[:, axes:]  # (n, axes) the gap's width along each axis, read long
     best = np.argmin(across, axis=1)
     on = across[np.arange(n), best] < step_gap
     sides = np.stack([best, best + axes], axis=1)
