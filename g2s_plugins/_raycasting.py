@@ -1200,7 +1200,7 @@ class AgentShape:
     max_slope_deg: float
     step_gap: float | None = None
     """Metres: a probe over a gap narrower than this between walkable ground on both sides stands on the nearer
-    side's ground (:func:`ground_beside`); ``None``: the crack rule alone (:func:`crack_sides`)."""
+    side's ground (:func:`ground_beside`); ``None`` or 0: the crack rule alone (:func:`crack_sides`)."""
 
     @classmethod
     def from_config(cls, agent: Any) -> AgentShape:
@@ -1516,7 +1516,7 @@ lies within 11.25 degrees of any gap's normal."""
 
 STEP_GAP_SEARCH = 4
 """Rays a direction :func:`ground_across_step_gap` first casts, evenly up to ``step_gap``, before halving the last
-stretch: a floor beyond a gap narrower than ``step_gap / STEP_GAP_SEARCH`` across may be missed."""
+stretch: a strip of floor narrower than ``step_gap / STEP_GAP_SEARCH`` beyond a gap may be missed."""
 
 STEP_GAP_HALVINGS = 6
 """Halvings of the stretch where :func:`ground_across_step_gap` first found ground: each side's distance is read
@@ -1537,12 +1537,12 @@ def ground_across_step_gap(
     searched up to ``step_gap`` away (:data:`STEP_GAP_SEARCH` rays, then :data:`STEP_GAP_HALVINGS` halvings of the
     stretch that found it, while the two sides' readings still straddle ``step_gap``); the gap along an axis is the
     sum of the two sides' distances, and a probe is in a gap the agent steps over when the shortest of those is under
-    ``step_gap``. Each distance is read a little long, and
-    a straight gap's width along an axis is its width over the cosine of the angle between them, so a gap as wide as
-    ``step_gap`` or wider is never stepped over; one narrower is whenever some axis reads it under ``step_gap``:
-    always for a straight gap under ``step_gap`` cos 11.25 degrees (0.981 ``step_gap``) less the reading's error,
-    and in the band up to ``step_gap`` when the gap's normal lies close enough to an axis. The height the two sides differ by is the
-    caller's to check (the walk test's and the ledge probes' step rule), as for a crack.
+    ``step_gap``. Each distance is read a little long, and a straight gap's width along an axis is its width over
+    the cosine of the angle between them, so a gap as wide as ``step_gap`` or wider is never stepped over; one
+    narrower is whenever some axis reads it under ``step_gap``: always for a straight gap under ``step_gap`` cos
+    11.25 degrees (0.981 ``step_gap``) less the reading's error, and in the band up to ``step_gap`` when the gap's
+    normal lies close enough to an axis. The height the two sides differ by is the caller's to check (the walk
+    test's and the ledge probes' step rule), as for a crack.
 
     Returns:
         ``(on, distance)``: (n,) bool, and (n,) metres down to the nearer side's ground (``inf`` where not on).
@@ -1551,7 +1551,7 @@ def ground_across_step_gap(
     """
     probes = np.asarray(probes, dtype=np.float64).reshape(-1, 3)
     n = len(probes)
-    directions = np.concatenate([STEP_GAP_AXES, -STEP_GAP_AXES])  # axis a: directions a and a + 4
+    directions = np.concatenate([STEP_GAP_AXES, -STEP_GAP_AXES])  # axis a: directions a and a + len(STEP_GAP_AXES)
     if n == 0:
         return np.zeros(0, dtype=bool), np.zeros(0)
     lo = np.zeros((n, len(directions)))

@@ -115,9 +115,9 @@ import os
 import threading
 import time
 import weakref
-from dataclasses import replace
 from collections.abc import Callable, Sequence
 from concurrent.futures import ThreadPoolExecutor
+from dataclasses import replace
 from typing import Literal, TypeVar
 
 import networkx as nx
@@ -144,8 +144,8 @@ from g2s_plugins._raycasting import (
     RayCaster,
     all_hits_down,
     clear_above,
-    ground_beside,
     closed_solid_holds,
+    ground_beside,
     head_room,
     RISE_TOLERANCE,
     ray_margin,
