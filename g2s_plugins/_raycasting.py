@@ -1198,6 +1198,9 @@ class AgentShape:
     height: float
     max_climb: float
     max_slope_deg: float
+    step_gap: float | None = None
+    """Metres: a probe over a gap narrower than this between walkable ground on both sides stands on the nearer
+    side's ground (:func:`ground_beside`); ``None`` or 0: the crack rule alone (:func:`crack_sides`)."""
 
     @classmethod
     def from_config(cls, agent: Any) -> AgentShape:
@@ -1507,6 +1510,114 @@ def crack_sides(agent: AgentShape) -> list[np.ndarray]:
     return list(_CRACK_AXES * (agent.radius / 8.0))
 
 
+STEP_GAP_AXES = np.array([[math.cos(turn), 0.0, math.sin(turn)] for turn in np.arange(8) * math.pi / 8])
+"""The plan axes along which :func:`ground_across_step_gap` measures a gap: every 22.5 degrees, so that one of them
+lies within 11.25 degrees of any gap's normal."""
+
+STEP_GAP_SEARCH = 4
+"""Rays a direction :func:`ground_across_step_gap` first casts, evenly up to ``step_gap``, before halving the last
+stretch: a strip of floor narrower than ``step_gap / STEP_GAP_SEARCH`` beyond a gap may be missed."""
+
+STEP_GAP_HALVINGS = 6
+"""Halvings of the stretch where :func:`ground_across_step_gap` first found ground: each side's distance is read
+at most ``step_gap / STEP_GAP_SEARCH / 2**STEP_GAP_HALVINGS`` (1.6 mm for a step gap of 0.4 m) too long."""
+
+
+def ground_across_step_gap(
+    caster: RayCaster,
+    probes: np.ndarray,
+    reach: float,
+    walkable: Callable[[np.ndarray], np.ndarray],
+    step_gap: float,
+) -> tuple[np.ndarray, np.ndarray]:
+    """Which probes that found no ground of their own lie in a gap narrower than ``step_gap`` that the agent steps
+    over, and how far below the nearer side's ground lies.
+
+    Along each of :data:`STEP_GAP_AXES`, both ways, the first walkable ground within ``reach`` straight down is
+    searched up to ``step_gap`` away (:data:`STEP_GAP_SEARCH` rays, then :data:`STEP_GAP_HALVINGS` halvings of the
+    stretch that found it, while the two sides' readings still straddle ``step_gap``); the gap along an axis is the
+    sum of the two sides' distances, and a probe is in a gap the agent steps over when the shortest of those is under
+    ``step_gap``. Each distance is read a little long, and a straight gap's width along an axis is its width over
+    the cosine of the angle between them, so a gap as wide as ``step_gap`` or wider is never stepped over; one
+    narrower is whenever some axis reads it under ``step_gap``: always for a straight gap under ``step_gap`` cos
+    11.25 degrees (0.981 ``step_gap``) less the reading's error, and in the band up to ``step_gap`` when the gap's
+    normal lies close enough to an axis. The height the two sides differ by is the caller's to check (the walk
+    test's and the ledge probes' step rule), as for a crack.
+
+    Returns:
+        ``(on, distance)``: (n,) bool, and (n,) metres down to the nearer side's ground (``inf`` where not on).
+
+    At most ``16 (STEP_GAP_SEARCH + STEP_GAP_HALVINGS)`` downward rays a probe.
+    """
+    probes = np.asarray(probes, dtype=np.float64).reshape(-1, 3)
+    n = len(probes)
+    directions = np.concatenate([STEP_GAP_AXES, -STEP_GAP_AXES])  # axis a: directions a and a + len(STEP_GAP_AXES)
+    if n == 0:
+        return np.zeros(0, dtype=bool), np.zeros(0)
+    lo = np.zeros((n, len(directions)))
+    hi = np.full((n, len(directions)), np.inf)
+    down = np.full((n, len(directions)), np.inf)
+    stride = step_gap / STEP_GAP_SEARCH
+
+    def cast(rows: np.ndarray, cols: np.ndarray, at: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        hits = caster.first_hits(probes[rows] + at[:, None] * directions[cols], -UP)
+        return (hits.distance <= reach) & walkable(hits.face), hits.distance
+
+    axes = len(STEP_GAP_AXES)
+
+    def open_axes() -> np.ndarray:
+        """(n, 2 axes) the directions still read: of the axes whose gap may read under ``step_gap``, of the probes no
+        axis has yet read under it."""
+        may = lo[:, :axes] + lo[:, axes:] < step_gap
+        may &= ~(hi[:, :axes] + hi[:, axes:] < step_gap).any(axis=1, keepdims=True)
+        return np.concatenate([may, may], axis=1)
+
+    for k in range(1, STEP_GAP_SEARCH + 1):
+        rows, cols = np.nonzero(np.isinf(hi) & open_axes())
+        if len(rows) == 0:
+            break
+        found, distance = cast(rows, cols, np.full(len(rows), k * stride))
+        hi[rows[found], cols[found]] = k * stride
+        down[rows[found], cols[found]] = distance[found]
+        lo[rows[~found], cols[~found]] = k * stride
+    for _ in range(STEP_GAP_HALVINGS):  # only where the two sides' readings still straddle step_gap
+        rows, cols = np.nonzero(np.isfinite(hi) & open_axes())
+        if len(rows) == 0:
+            break
+        middle = 0.5 * (lo[rows, cols] + hi[rows, cols])
+        found, distance = cast(rows, cols, middle)
+        hi[rows[found], cols[found]] = middle[found]
+        down[rows[found], cols[found]] = distance[found]
+        lo[rows[~found], cols[~found]] = middle[~found]
+    across = hi[:, :axes] + hi[:, axes:]  # (n, axes) the gap's width along each axis, read long
+    best = np.argmin(across, axis=1)
+    on = across[np.arange(n), best] < step_gap
+    sides = np.stack([best, best + axes], axis=1)
+    nearer = sides[np.arange(n), np.argmin(np.take_along_axis(hi, sides, axis=1), axis=1)]
+    return on, np.where(on, down[np.arange(n), nearer], np.inf)
+
+
+def ground_beside(
+    caster: RayCaster,
+    probes: np.ndarray,
+    reach: float,
+    walkable: Callable[[np.ndarray], np.ndarray],
+    agent: AgentShape,
+) -> tuple[np.ndarray, np.ndarray]:
+    """Which probes that found no ground of their own stand on ground beside them, and how far below: over a crack
+    (:func:`ground_across_crack` with :func:`crack_sides` and :data:`CRACK_STEPS`), else, with the agent's
+    ``step_gap``, in a gap narrower than it (:func:`ground_across_step_gap`). The walk test's and the sampling
+    builder's ledge probes' rule (one rule for both); ``(on, distance)`` as :func:`ground_across_crack`'s."""
+    on, distance = ground_across_crack(caster, probes, -UP, crack_sides(agent), reach, walkable, CRACK_STEPS)
+    if agent.step_gap:
+        rest = np.flatnonzero(~on)
+        gap, beside = ground_across_step_gap(caster, np.asarray(probes).reshape(-1, 3)[rest], reach, walkable,
+                                             agent.step_gap)
+        on[rest[gap]] = True
+        distance[rest[gap]] = beside[gap]
+    return on, distance
+
+
 def _slices_meet_bands(triangles: np.ndarray, origin: np.ndarray, along: np.ndarray, side: np.ndarray,
                        inset: float) -> np.ndarray:
     """(k,) bool: triangle ``triangles[i]`` ((k, 3, 3) corners, m) passes through the parallelogram ``origin[i] +
@@ -1704,10 +1815,8 @@ def walks_in_batch(
     reach = lift + agent.max_climb + margin
     missing = batch.ground(reach, normal_y, least_y)
     if len(missing):  # a probe over a crack: the one crack rule, the ledge probes' too
-        crack, beside = ground_across_crack(
-            caster, batch.probe_points(missing), -UP, crack_sides(agent), reach,
-            lambda faces: caster.walkable_faces(faces, agent.max_slope_deg), CRACK_STEPS,
-        )
+        crack, beside = ground_beside(caster, batch.probe_points(missing), reach,
+                                      lambda faces: caster.walkable_faces(faces, agent.max_slope_deg), agent)
         batch.set_ground(missing[crack], beside[crack])
     knee, head = agent.body
     ok, rise, rows, low, along, side, heights = batch.verdict(

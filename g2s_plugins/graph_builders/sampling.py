@@ -19,7 +19,8 @@ wanted. No Recast is involved: ``context.navmesh`` stays ``None``.
    in 8 directions, rising or falling between neighbouring probes by a step
    or the max slope at most, with head room; a probe over a crack, such as
    a grating's slot, stands on the ground beside it, the walk test's crack
-   rule). This erodes
+   rule, and one in a gap narrower than ``step_gap`` on the nearer side's
+   ground: :func:`~g2s_plugins._raycasting.ground_beside`). This erodes
    the walkable surface by ``clearance`` as Recast erodes it by the radius.
    Rays whose answer the geometry near a candidate already gives are not
    cast (:class:`_Surroundings`); the answers are the same. The wall and
@@ -48,7 +49,8 @@ wanted. No Recast is involved: ``context.navmesh`` stays ``None``.
    slot between pillars or a slot beside a post narrower than the agent is not
    crossed, nor a row of bollards or crates lower than the lifted segment; the
    ground under evenly spaced points is walkable, has head room and changes
-   height by at most a step or the max slope); a pair on one open floor triangle, both samples that
+   height by at most a step or the max slope; a probe over a crack or a gap
+   narrower than ``step_gap`` stands on the ground beside it); a pair on one open floor triangle, both samples that
    far inside its edges, passes without a ray
    (:class:`g2s_plugins._raycasting.OpenFloors`). Then *passages the samples
    miss* (:func:`moved_into_passages`): a passage a little wider than the
@@ -115,6 +117,7 @@ import time
 import weakref
 from collections.abc import Callable, Sequence
 from concurrent.futures import ThreadPoolExecutor
+from dataclasses import replace
 from typing import Literal, TypeVar
 
 import networkx as nx
@@ -130,7 +133,6 @@ from g2s_core.model import RunContext, graph_of
 from g2s_core.plugin import hookimpl
 from g2s_plugins._raycasting import (
     COMPASS,
-    CRACK_STEPS,
     EPSILON,
     GROUND_MARGIN,
     UP,
@@ -143,8 +145,7 @@ from g2s_plugins._raycasting import (
     all_hits_down,
     clear_above,
     closed_solid_holds,
-    crack_sides,
-    ground_across_crack,
+    ground_beside,
     head_room,
     RISE_TOLERANCE,
     ray_margin,
@@ -225,6 +226,15 @@ class Params(PlaySpaceParams):
         8.0, ge=2, le=100, description="poisson: candidate points per spacing² the Poisson-disk subset is chosen from"
     )
     seed: int = Field(0, ge=0, description="poisson: seed of the candidate points and of the Poisson-disk pick")
+    step_gap: float | None = Field(
+        None,
+        ge=0,
+        le=100,
+        description="the agent steps over a gap between floors narrower than this, m, where their heights differ by "
+        "at most its max climb (the walk test's and the ledge probes' ground); default the agent's max climb (a "
+        "stride clears a gap as wide as the step it climbs); 0: only cracks of a quarter of its radius (the paper "
+        "presets; docs/sampling.md, Narrow gaps between floors)",
+    )
     gap_radius: float | None = Field(
         None,
         ge=0,
@@ -347,12 +357,11 @@ def agent_fits(
     slope over their distance at most, with head room over the outer one. A
     ledge probe that finds none stands on the ground within one crack step
     on both sides of it (each side tried apart at half a step and a step),
-    along x, else along z
-    (:func:`~g2s_plugins._raycasting.ground_across_crack` with
-    :func:`~g2s_plugins._raycasting.crack_sides` and
-    :data:`~g2s_plugins._raycasting.CRACK_STEPS`, the walk test's rule): a
+    along x, else along z, and with the agent's ``step_gap`` one in a gap
+    narrower than that stands on the nearer side's ground
+    (:func:`~g2s_plugins._raycasting.ground_beside`, the walk test's rule): a
     grating's slots and tiles laid apart are floor, a gap wider than two
-    crack steps (r / 4) is a ledge.
+    crack steps (r / 4) and at least ``step_gap`` is a ledge.
 
     ``triangles``, when given: the corners of a walkable triangle of the
     caster's mesh that each point lies on, (n, 3, 3); or, with ``faces``
@@ -451,8 +460,7 @@ def agent_fits(
             # by direction, only for the points no earlier probe has put out (one probe without ground is enough).
             for k in range(len(COMPASS)):
                 missing = np.flatnonzero(kept & ~found[:, k])
-                crack, beside = ground_across_crack(cast, origins[missing, k], -UP, crack_sides(agent), 2.0 * reach,
-                                                    walkable, CRACK_STEPS)
+                crack, beside = ground_beside(cast, origins[missing, k], 2.0 * reach, walkable, agent)
                 distance[missing[crack], k, j] = beside[crack]
                 kept[missing[~crack]] = False
         ground[~kept] = False
@@ -1275,6 +1283,7 @@ def build_sampled_graph(
     the graph so that its JSON output stays the same from run to run).
     """
     spacing, connect, clearance, probe_step, gap = _resolve(params, agent)
+    agent = replace(agent, step_gap=agent.max_climb if params.step_gap is None else params.step_gap)
     timings = timings if timings is not None else {}
     clock = time.perf_counter()
 
