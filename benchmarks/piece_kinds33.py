@@ -20,6 +20,7 @@ import math
 import sys
 
 import numpy as np
+import trimesh
 from piece_parts import ROOM_OPENINGS, SLAB, arc_band, box, hull, kinds_by_name, prism, room, round_level, run_kinds
 
 from g2s_plugins.samples.levels import SampleLevel, _opening
@@ -166,6 +167,28 @@ def terraced_garden_flights(step: float = 0.9) -> SampleLevel:
                   [_opening((0.0, 0.0, 4.0), _W, 8.0), _opening((12.0, 2 * step, 4.0), _E, 8.0)])
 
 
+def folded_wall(fold_deg: float, near: float, far: float) -> tuple[list[trimesh.Trimesh], np.ndarray, np.ndarray]:
+    """The room of :func:`folded_wall_door` with a doorway in its folded east wall, its jambs square to the wings
+    ``near`` m along the south wing's inner face and ``far`` m along the north wing's from the apex: the parts, and the
+    jambs' outer corners (2,) (x, z) at the south and the north, metres."""
+    t = math.radians(fold_deg)
+    apex = np.array([8.0 + 3.0 * math.tan(t), 3.0])
+    d1, d2 = np.array([math.sin(t), math.cos(t)]), np.array([-math.sin(t), math.cos(t)])
+    n1, n2 = np.array([d1[1], -d1[0]]), np.array([d2[1], -d2[0]])  # outward (east) normals of the two wings
+    j1 = np.array([8.0, 0.0]) + d1 * (3.0 / math.cos(t) - near)
+    j2 = apex + d2 * far
+    o1, o2 = j1 + n1 * 0.3, j2 + n2 * 0.3
+    tip = apex + np.array([0.3 / math.cos(t), 0.0])
+    s_out = np.array([8.0, 0.0]) + n1 * 0.3 + d1 * ((-0.3 - (n1 * 0.3)[1]) / d1[1])  # wing 1's outer face at z -0.3
+    n_out = np.array([s_out[0], 6.3])
+    parts = room(8.0, 6.0, {"W": [(2.2, 3.8, 2.2)], "E": [(-0.3, 6.3, 3.0)]})  # no straight east wall
+    parts += [prism([(8.0, -0.3), tuple(s_out), tuple(tip), tuple(n_out), (8.0, 6.3)], -SLAB, 0.0),
+              prism([(8.0, -0.3), tuple(s_out), tuple(o1), tuple(j1), (8.0, 0.0)], -SLAB, 3.0),
+              prism([(8.0, 6.3), tuple(n_out), tuple(o2), tuple(j2), (8.0, 6.0)], -SLAB, 3.0),
+              prism([tuple(j1), tuple(o1), tuple(tip), tuple(o2), tuple(j2), tuple(apex)], 2.2, 3.0)]
+    return parts, o1, o2
+
+
 def folded_wall_door(fold_deg: float = 15.0, door: float = 1.6) -> SampleLevel:
     """Room (clear x 0-8, z 0-6 and east of it), walls 0.3 m thick and 3 m high, a 1.6 m west doorway (z 2.2-3.8,
     lintel 2.2 m); its east wall folded outward: two wings, each ``fold_deg`` (15) degrees off north-south, their inner
@@ -176,22 +199,7 @@ def folded_wall_door(fold_deg: float = 15.0, door: float = 1.6) -> SampleLevel:
     doorway the floor runs out to the outer faces' apex. Known: two, at the floor (y 0), 2.2 m high: the west doorway,
     1.6 m at (-0.3, 3.0); the fold's doorway, 1.70 m (the chord between its jambs' outer corners) at that chord's
     middle (8.89, 3.0), facing east (the floor's point 0.23 m beyond it)."""
-    t = math.radians(fold_deg)
-    apex = np.array([8.0 + 3.0 * math.tan(t), 3.0])
-    d1, d2 = np.array([math.sin(t), math.cos(t)]), np.array([-math.sin(t), math.cos(t)])
-    n1, n2 = np.array([d1[1], -d1[0]]), np.array([d2[1], -d2[0]])  # outward (east) normals of the two wings
-    wing = 3.0 / math.cos(t)
-    j1 = np.array([8.0, 0.0]) + d1 * (wing - door / 2)
-    j2 = apex + d2 * (door / 2)
-    o1, o2 = j1 + n1 * 0.3, j2 + n2 * 0.3
-    tip = apex + np.array([0.3 / math.cos(t), 0.0])
-    s_out = np.array([8.0, 0.0]) + n1 * 0.3 + d1 * ((-0.3 - (n1 * 0.3)[1]) / d1[1])  # wing 1's outer face at z -0.3
-    n_out = np.array([s_out[0], 6.3])
-    parts = room(8.0, 6.0, {"W": [(2.2, 3.8, 2.2)], "E": [(-0.3, 6.3, 3.0)]})  # no straight east wall
-    parts += [prism([(8.0, -0.3), tuple(s_out), tuple(tip), tuple(n_out), (8.0, 6.3)], -SLAB, 0.0),
-              prism([(8.0, -0.3), tuple(s_out), tuple(o1), tuple(j1), (8.0, 0.0)], -SLAB, 3.0),
-              prism([(8.0, 6.3), tuple(n_out), tuple(o2), tuple(j2), (8.0, 6.0)], -SLAB, 3.0),
-              prism([tuple(j1), tuple(o1), tuple(tip), tuple(o2), tuple(j2), tuple(apex)], 2.2, 3.0)]
+    parts, o1, o2 = folded_wall(fold_deg, door / 2, door / 2)
     mid = (o1 + o2) / 2
     return _level("folded_wall_door", parts,
                   [ROOM_OPENINGS[0], _opening((mid[0], 0.0, mid[1]), _E, float(np.linalg.norm(o2 - o1)))])

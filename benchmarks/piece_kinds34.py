@@ -16,11 +16,11 @@ down to railed pads; a roofed tunnel with a door at the back of a niche in its t
 
 from __future__ import annotations
 
-import math
 import sys
 
 import numpy as np
-from piece_parts import ROOM_OPENINGS, SLAB, box, flight, hull, kinds_by_name, prism, room, round_level, run_kinds
+from piece_kinds33 import folded_wall
+from piece_parts import ROOM_OPENINGS, SLAB, box, flight, hull, kinds_by_name, room, round_level, run_kinds
 
 from g2s_plugins.samples.levels import SampleLevel, _opening
 from g2s_plugins.samples.pieces import _E, _N, _S, _W
@@ -218,21 +218,7 @@ def off_centre_fold_door(fold_deg: float = 15.0, near: float = 0.5, far: float =
     apex, under a lintel 2.2 m up; the slab under the walls' whole footprint. Known: two, at the floor (y 0): the
     west doorway, 1.6 m at (-0.3, 3.0); the fold's doorway, the chord between its jambs' outer corners at that
     chord's middle, facing square to it (outward)."""
-    t = math.radians(fold_deg)
-    apex = np.array([8.0 + 3.0 * math.tan(t), 3.0])
-    d1, d2 = np.array([math.sin(t), math.cos(t)]), np.array([-math.sin(t), math.cos(t)])
-    n1, n2 = np.array([d1[1], -d1[0]]), np.array([d2[1], -d2[0]])  # outward (east) normals of the two wings
-    j1 = np.array([8.0, 0.0]) + d1 * (3.0 / math.cos(t) - near)
-    j2 = apex + d2 * far
-    o1, o2 = j1 + n1 * 0.3, j2 + n2 * 0.3
-    tip = apex + np.array([0.3 / math.cos(t), 0.0])
-    s_out = np.array([8.0, 0.0]) + n1 * 0.3 + d1 * ((-0.3 - (n1 * 0.3)[1]) / d1[1])  # wing 1's outer face at z -0.3
-    n_out = np.array([s_out[0], 6.3])
-    parts = room(8.0, 6.0, {"W": [(2.2, 3.8, 2.2)], "E": [(-0.3, 6.3, 3.0)]})  # no straight east wall
-    parts += [prism([(8.0, -0.3), tuple(s_out), tuple(tip), tuple(n_out), (8.0, 6.3)], -SLAB, 0.0),
-              prism([(8.0, -0.3), tuple(s_out), tuple(o1), tuple(j1), (8.0, 0.0)], -SLAB, 3.0),
-              prism([(8.0, 6.3), tuple(n_out), tuple(o2), tuple(j2), (8.0, 6.0)], -SLAB, 3.0),
-              prism([tuple(j1), tuple(o1), tuple(tip), tuple(o2), tuple(j2), tuple(apex)], 2.2, 3.0)]
+    parts, o1, o2 = folded_wall(fold_deg, near, far)
     chord = o2 - o1
     heading = np.array([chord[1], 0.0, -chord[0]]) / np.linalg.norm(chord)  # square to the chord, facing east
     mid = (o1 + o2) / 2
