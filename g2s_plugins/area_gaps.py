@@ -595,7 +595,9 @@ def way_up(caster: RayCaster, closest: Closest, agent: AgentConfig) -> WayUp | S
     # clearance places it to a spacing or two either side
     way = np.flatnonzero(np.isin(inside, np.intersect1d(inside[start], inside[end])) & (inward == level))
     way = way[np.argsort(np.linalg.norm(ground.points[way] - (lower + upper) / 2, axis=1), kind="stable")[:WIDTH_CANDIDATES]]
-    width = width_across(caster, ground.points[way], agent, ground.spacing)
+    # rays along a stair's run meet its risers at the knee and read its treads' fall as a drop, so a flight's width
+    # is at least what the columns' clearance along the walked links gives (they follow the treads)
+    width = np.maximum(width_across(caster, ground.points[way], agent, ground.spacing), 2 * level + ground.spacing)
     chosen = int(np.argmin(width))
     return WayUp(float(width[chosen]), ground.points[way[chosen]])
 

@@ -404,11 +404,11 @@ def test_a_low_beam_beside_a_wall_is_named_though_the_wall_comes_closer():
 def terrace(way: str) -> trimesh.Trimesh:
     """A yard (y = 0, x < 4) beside a terrace 3 m high (x 4-14, z 2-8), a wall 6 m high along z = 8, and between yard
     and terrace, against the wall: ``stair``, treads 1.2 m wide between the wall and a drop (17 risers of 0.176 m on
-    0.28 m, cantilevered, 0.25 m thick); ``cut``, the same 2.5 m wide with a riser of 0.8 m halfway; ``steep``, a
+    0.28 m, cantilevered, 0.25 m thick); ``wide``, the same 2.5 m wide; ``cut``, that with a riser of 0.8 m halfway; ``steep``, a
     ramp 2.5 m wide at 52 degrees; ``ladder``, rungs every 0.3 m up the terrace's face; ``none``, nothing
     (benchmarks/lost_stairs.py's cases, square to the grid)."""
     solids = [(-10, 4, -0.3, 0, -8, 8), (4, 14, -0.3, 3, 2, 8), (-10, 14, -0.3, 6, 8, 8.3)]
-    risers = {"stair": [3 / 17] * 17, "cut": [2.2 / 12] * 6 + [0.8] + [2.2 / 12] * 6}.get(way, [])
+    risers = {"stair": [3 / 17] * 17, "wide": [3 / 17] * 17, "cut": [2.2 / 12] * 6 + [0.8] + [2.2 / 12] * 6}.get(way, [])
     width = 1.2 if way == "stair" else 2.5
     for i, height in enumerate(np.cumsum(risers)[:-1]):
         x = 4 - 0.28 * (len(risers) - 1 - i)
@@ -438,6 +438,17 @@ def test_separate_floors_are_named_only_where_no_walkable_ground_climbs_between_
     navmesh, graph = navmesh_of([(-9.5, 3.5, -7.5, 7.5, 0.0), (4.5, 13.5, 2.5, 7.5, 3.0)])
     message = disconnected_warning(graph, areas(graph), 2, likely_cause_of(AgentConfig(), navmesh, mesh=terrace(way)))
     assert f"Likely cause: from the largest area to the nearest area of 45 m², {cause}" in message
+
+
+def test_a_flight_wider_than_the_navmesh_needs_is_read_across_not_along_its_run():
+    """The 2.5 m flight of :func:`terrace` (``wide``) lost on the navmesh route (Recast's ledge filter cuts treads, as
+    on ``map_analysis_paper``'s stair_deck): its width is read across the flight, within a column spacing or so of
+    2.5 m; rays along its run meet the risers at the knee and read 1.4 m, "narrower than the navmesh keeps"."""
+    navmesh, graph = navmesh_of([(-9.5, 3.5, -7.5, 7.5, 0.0), (4.5, 13.5, 2.5, 7.5, 3.0)])
+    message = disconnected_warning(graph, areas(graph), 2, likely_cause_of(AgentConfig(), navmesh, mesh=terrace("wide")))
+    width = float(re.search(r"a stair or ramp between them about ([0-9.]+) m wide at its narrowest that the navmesh "
+                            r"keeps no floor on for this agent", message).group(1))
+    assert 2.1 <= width <= 2.7
 
 
 def test_a_stair_the_sampled_graph_does_not_walk_is_named_on_the_sampling_route():
