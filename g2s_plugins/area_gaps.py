@@ -152,8 +152,9 @@ points apart (0.125 m on the navmesh route's cells of 0.25 m; 0.5 m between samp
 
 
 MAX_WAY_UP_COLUMNS = 65_536
-"""Vertical lines at most that :func:`way_up` casts down over the ground round a warning's place (a disc 27 m across
-at the presets' 0.25 m spacing holds 36,600: a silo's spiral stair 11.5 m high); a larger disc is shrunk to this."""
+"""Vertical lines at most that :func:`way_up` casts down over the ground round a warning's place (a disc 27 m in
+radius, 54 m across, at the presets' 0.25 m spacing holds 36,600: a silo's spiral stair 11.5 m high); a larger disc
+is shrunk to this."""
 
 WIDTH_CANDIDATES = 16
 """Points at most of a way's narrowest (by the columns' clearance) whose width :func:`width_across` measures."""
@@ -537,9 +538,10 @@ def way_up(caster: RayCaster, closest: Closest, agent: AgentConfig) -> WayUp | S
     a rise over the climb and within the agent's height (a flight cut by a step too high); else None (no stair: a
     floor over another, a ramp steeper than the agent climbs, a ladder's rungs, with no head room between them).
 
-    The ground searched is a disc round the pair's middle, twice the run of a slope at ``agent.max_slope`` up the
-    step plus the agent's height on each side across (a silo's spiral stair 11.5 m high: 27 m). O(l log l) for its
-    l columns (:data:`MAX_WAY_UP_COLUMNS`), one ray a ground point up and one a neighbouring pair across.
+    The ground searched is a disc round the pair's middle whose radius is twice the run of a slope at
+    ``agent.max_slope`` up the step plus twice the agent's height (a silo's spiral stair 11.5 m high: 27 m,
+    54 m across). O(l log l) for its l columns (:data:`MAX_WAY_UP_COLUMNS`), one ray a ground point up and one a
+    neighbouring pair across.
     """
     lower, upper = sorted(closest.pairs[0], key=lambda point: point[1])
     reach_lower, reach_upper = closest.reach[0] if closest.pairs[0, 0, 1] <= closest.pairs[0, 1, 1] else closest.reach[0, ::-1]
