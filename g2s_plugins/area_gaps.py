@@ -483,14 +483,17 @@ def column_links(ground: GroundColumns, caster: RayCaster, agent: AgentConfig) -
     the two (a wall's face; not the riser between them), every such pair whatever the rise between them. One ray a
     pair."""
     cell = ground.cell
-    key = {tuple(c): k for k, c in enumerate(np.unique(cell, axis=0))}
-    column = np.array([key[tuple(c)] for c in cell], dtype=np.int64)
+    span = int(np.abs(cell).max(initial=0)) + 2  # a neighbour's key stays inside the grid's encoding
+    columns, column = np.unique((cell[:, 0] + span) * (2 * span + 1) + cell[:, 1] + span, return_inverse=True)
+    column = column.ravel()
     order = np.argsort(column, kind="stable")
-    count = np.bincount(column, minlength=len(key))
+    count = np.bincount(column, minlength=len(columns))
     start = np.cumsum(count) - count
     pairs = []
     for offset in NEIGHBOURS:
-        there = np.array([key.get((int(c[0] + offset[0]), int(c[1] + offset[1])), -1) for c in cell], dtype=np.int64)
+        wanted = (cell[:, 0] + offset[0] + span) * (2 * span + 1) + cell[:, 1] + offset[1] + span
+        found = np.minimum(np.searchsorted(columns, wanted), len(columns) - 1)
+        there = np.where(columns[found] == wanted, found, -1)
         for layer in range(int(count.max(initial=0))):
             has = (there >= 0) & (count[np.maximum(there, 0)] > layer)
             a = np.flatnonzero(has)
