@@ -230,6 +230,7 @@ class Params(PluginParams):
     quiet_step: float = Field(0.0, ge=0, description="a leaf whose dead end (it and the chain of degree-2 nodes behind it) is less than this many walking-flow percentile points quieter than the node it opens onto, which the cover holds within the cover radius, is no terminal; 0: every leaf")
     dent_depth: float = Field(0.0, ge=0, description="a leaf whose dead end (it and the chain of degree-2 nodes behind it) lies within this many metres of its way in is a dent, which dent_rho_budget may drop; 0: no dents; leaves without a polygon (the sampling route) are no dent")
     dent_rho_budget: float = Field(0.0, ge=0, le=1, description="dents the cover holds within the cover radius without them are no terminal, least first by the Spearman rho their heat map would lose taking the walking-flow percentile of the terminal nearest their way in, while that estimated loss summed stays within this; 0: every dent")
+    pocket_depth: float = Field(0.0, ge=0, description="a pocket (what hangs beyond one node of the graph, its mouth, on the side away from its area's largest part) whose nodes all lie within this many metres of its mouth along the graph, at most the cover radius, holds no terminal: the cover's terminals in it give way to its mouth, which stands for it; 0: off")
 
     @model_validator(mode="before")
     @classmethod
@@ -238,6 +239,12 @@ class Params(PluginParams):
         if isinstance(data, dict) and "play_points" in data:
             raise PydanticCustomError("moved", "play_points is a parameter of the graph builder now: set graph.params.play_points")
         return data
+
+
+POCKET_LINK_SPACINGS = 1.5
+"""On a graph of samples, the links a pocket's mouth parts (:func:`pockets`): those no longer than this many sample
+spacings, a grid's eight nearest neighbours; the longer links (up to twice the spacing) cross a door one sample
+wide beside its sample, so on the whole graph no door is a cut vertex."""
 
 
 def default_radius(context: RunContext) -> float:
@@ -327,6 +334,17 @@ def cover(graph: nx.Graph, params: Params, context: RunContext) -> Cover:
         dents = dents_within_budget(graph, context.navmesh, arrays, leaves, rank,
                                     params.dent_depth, rows, radius, params.dent_rho_budget)
         leaves, seeds, rows = (np.setdiff1d(rows_, dents) for rows_ in (leaves, seeds, rows))
+    if params.pocket_depth > 0:
+        spacing = (graph.graph.get("sampling_stats") or {}).get("spacing")
+        link = math.inf if spacing is None else POCKET_LINK_SPACINGS * spacing
+        pocket, mouth = pockets(adjacency, arrays.area, min(params.pocket_depth, radius), link)
+        inside = pocket[rows] >= 0
+        mouths = np.unique(mouth[pocket[rows[inside]]])
+        leaves, seeds = (rows_[pocket[rows_] < 0] for rows_ in (leaves, seeds))
+        seeds = np.union1d(seeds, mouths)
+        # the pocket's own nodes lie within the depth (at most the radius) of its mouth, but a longer link may have
+        # held a node outside it within the radius of a terminal inside: the cover runs again from what is left
+        rows = cover_paths(adjacency, np.union1d(rows[~inside], mouths), eligible, radius)
     return Cover(arrays, np.sort(leaves), np.unique(seeds), rows)
 
 
@@ -393,6 +411,84 @@ def dead_end_places(adjacency: sp.csr_array, area: np.ndarray, leaves: np.ndarra
     by_place = np.lexsort((grouped, -distance[grouped], owner[owner >= 0]))
     firsts = np.unique(owner[owner >= 0][by_place], return_index=True)[1]
     return np.sort(np.concatenate([alone, grouped[by_place][firsts]]))
+
+
+def pockets(adjacency: sp.csr_array, area: np.ndarray, depth: float, link: float = math.inf) -> tuple[np.ndarray, np.ndarray]:
+    """Each node's pocket (-1: none) and each pocket's mouth: ``(pocket, mouth)``, (n,) and (p,) rows.
+
+    ``adjacency``: (n, n) edge lengths, m; ``area``: (n,) m². The graph's
+    cut vertices (``rustworkx.articulation_points``) and its blocks
+    (biconnected components) are a tree, each connected area's rooted at its
+    block of most area (a block's area: its nodes'; ties: lowest label). A
+    block and all below it are a pocket entered at its parent cut vertex, the
+    mouth: every way in passes it, so distances from the root blocks (one
+    multi-source Dijkstra) less the mouth's are those within the pocket. A
+    node belongs to the largest pocket round it whose nodes all lie within
+    ``depth`` metres of its mouth (a cut vertex to the block above it); the
+    mouth itself to none of those it opens. On a grid of samples a door one
+    sample wide is a cut vertex and the cabin behind it a pocket; on a
+    navmesh a door polygon. O(m + n log n).
+    """
+    n = adjacency.shape[0]
+    upper = sp.triu(adjacency, k=1).tocoo()
+    short = upper.data <= link
+    upper = sp.coo_array((upper.data[short], (upper.row[short], upper.col[short])), shape=(n, n))
+    adjacency = (upper + upper.T).tocsr()
+    graph = rx.PyGraph(multigraph=False)
+    graph.add_nodes_from(range(n))
+    graph.add_edges_from_no_data(list(zip(upper.row.tolist(), upper.col.tolist(), strict=True)))
+    components = rx.biconnected_components(graph)
+    if not components:
+        return np.full(n, -1, dtype=np.int64), np.zeros(0, dtype=np.int64)
+    edges = np.array(list(components.keys()), dtype=np.int64).reshape(-1, 2)
+    labels = np.array(list(components.values()), dtype=np.int64)
+    _, labels = np.unique(labels, return_inverse=True)
+    blocks = int(labels.max()) + 1
+    cut = np.zeros(n, dtype=bool)
+    cut[np.array(sorted(rx.articulation_points(graph)), dtype=np.int64)] = True
+    # (block, node) memberships, each once: a cut vertex in several blocks, any other node in one
+    member = np.unique(np.column_stack([np.repeat(labels, 2), edges.ravel()]), axis=0)
+    home = np.full(n, -1, dtype=np.int64)
+    plain = ~cut[member[:, 1]]
+    home[member[plain, 1]] = member[plain, 0]
+    block_area = np.bincount(member[:, 0], weights=area[member[:, 1]], minlength=blocks)
+    # the block-cut tree: blocks 0..blocks-1, cut vertex c as blocks + c, and a hub joined to each area's root block
+    links = member[cut[member[:, 1]]]
+    tree = sp.csr_array((np.ones(len(links)), (links[:, 0], blocks + links[:, 1])), shape=(blocks + n + 1,) * 2)
+    _, area_of = csgraph.connected_components(tree, directed=False)
+    order = np.lexsort((np.arange(blocks), -block_area, area_of[:blocks]))
+    roots = order[np.unique(area_of[order], return_index=True)[1]]
+    hub = blocks + n
+    tree = sp.csr_array((np.ones(len(links) + len(roots)),
+                         (np.concatenate([links[:, 0], np.full(len(roots), hub)]),
+                          np.concatenate([blocks + links[:, 1], roots]))), shape=(hub + 1,) * 2)
+    visit, parent = csgraph.breadth_first_order(tree, hub, directed=False, return_predecessors=True)
+    entrance = np.where(parent[:blocks] == hub, -1, parent[:blocks] - blocks)  # a block's mouth, -1 for a root
+    cuts = np.flatnonzero(cut)
+    home[cuts] = parent[blocks + cuts]  # a cut vertex belongs to the block above it
+    roots_nodes = member[np.isin(member[:, 0], roots), 1]
+    distance = csgraph.dijkstra(adjacency, directed=False, indices=np.unique(roots_nodes), min_only=True)
+    farthest = np.full(blocks, -np.inf)
+    np.maximum.at(farthest, member[:, 0], distance[member[:, 1]])
+    # the walks over the tree on Python lists: a numpy scalar read per step is slow
+    order = [b for b in visit.tolist() if b < blocks]
+    parents, farthest_l = parent.tolist(), farthest.tolist()
+    for b in reversed(order):  # children before parents: a block's farthest node is its subtree's
+        if (up := parents[b]) != hub and farthest_l[b] > farthest_l[(grand := parents[up])]:
+            farthest_l[grand] = farthest_l[b]
+    entrance_l = entrance.tolist()
+    within = [e >= 0 and farthest_l[b] - float(distance[e]) <= depth for b, e in enumerate(entrance_l)]
+    place = [-1] * blocks
+    for b in order:  # parents before children: a pocket inside a pocket within the depth takes its place
+        up = parents[b]
+        above = place[parents[up]] if up != hub else -1
+        place[b] = above if above >= 0 else (b if within[b] else -1)
+    place_a = np.array(place, dtype=np.int64)
+    held, pocket = np.unique(place_a[place_a >= 0], return_inverse=True)
+    block_pocket = np.full(blocks, -1, dtype=np.int64)
+    block_pocket[place_a >= 0] = pocket
+    node_pocket = np.where(home >= 0, block_pocket[np.maximum(home, 0)], -1)
+    return node_pocket, entrance[held]
 
 
 def quiet_dead_ends(arrays: traffic.SurfaceArrays, leaves: np.ndarray, rank: np.ndarray, step: float,
