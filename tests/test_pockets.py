@@ -14,16 +14,20 @@ from g2s_core.model import RunContext
 from g2s_plugins import traffic
 from g2s_plugins.terminals import coverage
 
-CABINS = (2, 6, 10)
+CABINS = (15, 30, 45)
 """The x of each cabin's door, metres."""
+
+LENGTH = 60
+"""The corridor's length, metres: long enough that its ends and the cabins are the quiet places the walking flow
+ranks lowest, and each door stands for its cabin's rank (:data:`~g2s_plugins.heat_guarantee.FLOOR`)."""
 
 
 def corridor_with_cabins() -> nx.Graph:
-    """A grid of samples 1 m apart: a corridor two samples wide (z = -1, 0; x = 0-12), and off it at each x of
+    """A grid of samples 1 m apart: a corridor two samples wide (z = -1, 0; x = 0-60), and off it at each x of
     :data:`CABINS` a door (x, 1) and a cabin of three samples (x - 1 .. x + 1, 2). Links as the sampling builder makes
     them, to every sample within 2 m (twice the spacing) but for the slanted ones from a cabin to the corridor: the
     straight 2 m links from a cabin's samples to the corridor pass by its door sample."""
-    points = [(x, z) for x in range(13) for z in (-1, 0)]
+    points = [(x, z) for x in range(LENGTH + 1) for z in (-1, 0)]
     for door in CABINS:
         points += [(door, 1)] + [(door + dx, 2) for dx in (-1, 0, 1)]
     graph = nx.Graph(sampling_stats={"spacing": 1.0})

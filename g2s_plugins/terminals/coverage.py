@@ -154,6 +154,23 @@ rho. After the cover (and ``quiet_step``), the dents the cover holds within
 Measured in docs/analysis_quality.md ("Dents between posts and corners").
 ``0`` (the default) keeps every dent, unchanged.
 
+Pockets (``pocket_depth`` > 0). On a grid of samples a cabin off a
+passage costs the structure three nodes: a junction on the passage, a node
+in the door where the branch turns the jamb, and the cover's farthest
+sample inside, a leaf. A *pocket* is what hangs beyond one node of the
+graph, its mouth, on the side away from the largest part of its area
+(:func:`pockets`): on the sampling route the links that count are the
+grid's eight nearest neighbours (:data:`POCKET_LINK_SPACINGS`), so a door
+one sample wide is a mouth and the cabin behind it a pocket; on a navmesh
+every link counts, and a door polygon is one. After the cover, the cover's
+terminals inside a pocket whose nodes all lie within ``pocket_depth``
+metres of its mouth (at most ``radius``) give way to the mouth: the door
+is the cabin's leaf, the heat map gives the cabin the door's value, and
+the branch into it turns no corner. The cover then runs again from what is
+left, so every node stays within ``radius`` of a terminal. Measured in
+docs/analysis_quality.md ("Dead ends as one node"). ``0`` (the default)
+keeps every terminal, unchanged.
+
 Complexity: O(m + n log n) for step 1 plus, per added path, a Dijkstra over
 the nodes that path brings closer (in practice the area around it); with
 ``traffic_weight`` > 0, that twice, plus the walking flow, O(k (m + n log n))
@@ -162,7 +179,9 @@ with ``recess_depth`` > 0, one more multi-source Dijkstra, limited to
 ``radius``; with ``quiet_step`` > 0, the walking flow (once, as above)
 and a walk up each leaf's chain; with ``dent_rho_budget`` > 0, those, two
 multi-source Dijkstras and a sort of the k dents, O(k c nvp + m + n log n +
-k log k).
+k log k); with ``pocket_depth`` > 0, the graph's biconnected components,
+one multi-source Dijkstra and one more cover pass, O(m + n log n) and a
+pass per path it adds.
 """
 
 from __future__ import annotations
@@ -181,6 +200,7 @@ from scipy.sparse import csgraph
 from g2s_core.model import NavMesh, RunContext, Terminals
 from g2s_core.plugin import PluginParams, hookimpl
 from g2s_plugins import _trees, traffic
+from g2s_plugins.heat_guarantee import FLOOR
 
 NAME = "coverage"
 
@@ -288,7 +308,7 @@ def cover(graph: nx.Graph, params: Params, context: RunContext) -> Cover:
     place_area = params.place_area if params.place_area is not None else smallest_part(context)
     arrays = traffic.surface_arrays(graph)
     drops_dents = params.dent_depth > 0 and params.dent_rho_budget > 0
-    reads_traffic = params.traffic_weight > 0 or params.quiet_step > 0 or drops_dents
+    reads_traffic = params.traffic_weight > 0 or params.quiet_step > 0 or drops_dents or params.pocket_depth > 0
     if reads_traffic:  # its trees on a thread of their own while the leaves and dead ends are found here
         traffic.start_walking_flow(arrays, max_sources=params.traffic_sources, ties=params.traffic_ties,
                                    scaling=params.traffic_scaling)
@@ -337,7 +357,9 @@ def cover(graph: nx.Graph, params: Params, context: RunContext) -> Cover:
     if params.pocket_depth > 0:
         spacing = (graph.graph.get("sampling_stats") or {}).get("spacing")
         link = math.inf if spacing is None else POCKET_LINK_SPACINGS * spacing
-        pocket, mouth = pockets(adjacency, arrays.area, min(params.pocket_depth, radius), link)
+        # a pocket whose walking flow the mouth's heat does not stand for keeps its terminals: the heat guarantee
+        # would give back what went (as it gives back a node more than FLOOR off its heat)
+        pocket, mouth = pockets(adjacency, arrays.area, min(params.pocket_depth, radius), link, rank, FLOOR)
         inside = pocket[rows] >= 0
         mouths = np.unique(mouth[pocket[rows[inside]]])
         leaves, seeds = (rows_[pocket[rows_] < 0] for rows_ in (leaves, seeds))
@@ -413,7 +435,8 @@ def dead_end_places(adjacency: sp.csr_array, area: np.ndarray, leaves: np.ndarra
     return np.sort(np.concatenate([alone, grouped[by_place][firsts]]))
 
 
-def pockets(adjacency: sp.csr_array, area: np.ndarray, depth: float, link: float = math.inf) -> tuple[np.ndarray, np.ndarray]:
+def pockets(adjacency: sp.csr_array, area: np.ndarray, depth: float, link: float = math.inf,
+            rank: np.ndarray | None = None, step: float = math.inf) -> tuple[np.ndarray, np.ndarray]:
     """Each node's pocket (-1: none) and each pocket's mouth: ``(pocket, mouth)``, (n,) and (p,) rows.
 
     ``adjacency``: (n, n) edge lengths, m; ``area``: (n,) m². The graph's
@@ -424,8 +447,12 @@ def pockets(adjacency: sp.csr_array, area: np.ndarray, depth: float, link: float
     mouth: every way in passes it, so distances from the root blocks (one
     multi-source Dijkstra) less the mouth's are those within the pocket. A
     node belongs to the largest pocket round it whose nodes all lie within
-    ``depth`` metres of its mouth (a cut vertex to the block above it); the
-    mouth itself to none of those it opens. On a grid of samples a door one
+    ``depth`` metres of its mouth and, given ``rank`` ((n,) percentiles),
+    whose nodes' ranks all lie within ``step`` points of their mean (a
+    place of one heat, which one node can stand for); a node links to the block above it only if it is a cut vertex,
+    so the mouth itself belongs to none of the pockets it opens. Only links
+    no longer than ``link`` metres count, for the cut vertices and the
+    depths alike. On a grid of samples a door one
     sample wide is a cut vertex and the cabin behind it a pocket; on a
     navmesh a door polygon. O(m + n log n).
     """
@@ -470,14 +497,33 @@ def pockets(adjacency: sp.csr_array, area: np.ndarray, depth: float, link: float
     distance = csgraph.dijkstra(adjacency, directed=False, indices=np.unique(roots_nodes), min_only=True)
     farthest = np.full(blocks, -np.inf)
     np.maximum.at(farthest, member[:, 0], distance[member[:, 1]])
+    # each block's ranks, its mouth left out (counted once, below): sum, count, lowest, highest
+    rank = np.zeros(n) if rank is None else np.asarray(rank, dtype=np.float64)
+    own = member[home[member[:, 1]] == member[:, 0]]
+    total = np.bincount(own[:, 0], weights=rank[own[:, 1]], minlength=blocks).tolist()
+    count = np.bincount(own[:, 0], minlength=blocks).tolist()
+    low, high = np.full(blocks, np.inf), np.full(blocks, -np.inf)
+    np.minimum.at(low, own[:, 0], rank[own[:, 1]])
+    np.maximum.at(high, own[:, 0], rank[own[:, 1]])
     # the walks over the tree on Python lists: a numpy scalar read per step is slow
     order = [b for b in visit.tolist() if b < blocks]
-    parents, farthest_l = parent.tolist(), farthest.tolist()
-    for b in reversed(order):  # children before parents: a block's farthest node is its subtree's
-        if (up := parents[b]) != hub and farthest_l[b] > farthest_l[(grand := parents[up])]:
-            farthest_l[grand] = farthest_l[b]
+    parents, farthest_l, low_l, high_l = parent.tolist(), farthest.tolist(), low.tolist(), high.tolist()
+    for b in reversed(order):  # children before parents: a block's figures become its subtree's
+        if (up := parents[b]) != hub:
+            grand = parents[up]
+            farthest_l[grand] = max(farthest_l[grand], farthest_l[b])
+            total[grand] += total[b]
+            count[grand] += count[b]
+            low_l[grand], high_l[grand] = min(low_l[grand], low_l[b]), max(high_l[grand], high_l[b])
     entrance_l = entrance.tolist()
-    within = [e >= 0 and farthest_l[b] - float(distance[e]) <= depth for b, e in enumerate(entrance_l)]
+
+    def holds(b: int, e: int) -> bool:
+        if e < 0 or farthest_l[b] - float(distance[e]) > depth:
+            return False
+        mean = total[b] / count[b]
+        return high_l[b] - mean <= step and mean - low_l[b] <= step
+
+    within = [holds(b, e) for b, e in enumerate(entrance_l)]
     place = [-1] * blocks
     for b in order:  # parents before children: a pocket inside a pocket within the depth takes its place
         up = parents[b]
