@@ -154,23 +154,6 @@ rho. After the cover (and ``quiet_step``), the dents the cover holds within
 Measured in docs/analysis_quality.md ("Dents between posts and corners").
 ``0`` (the default) keeps every dent, unchanged.
 
-Pockets (``pocket_depth`` > 0). On a grid of samples a cabin off a
-passage costs the structure three nodes: a junction on the passage, a node
-in the door where the branch turns the jamb, and the cover's farthest
-sample inside, a leaf. A *pocket* is what hangs beyond one node of the
-graph, its mouth, on the side away from the largest part of its area
-(:func:`pockets`): on the sampling route the links that count are the
-grid's eight nearest neighbours (:data:`POCKET_LINK_SPACINGS`), so a door
-one sample wide is a mouth and the cabin behind it a pocket; on a navmesh
-every link counts, and a door polygon is one. After the cover, the cover's
-terminals inside a pocket whose nodes all lie within ``pocket_depth``
-metres of its mouth (at most ``radius``) give way to the mouth: the door
-is the cabin's leaf, the heat map gives the cabin the door's value, and
-the branch into it turns no corner. The cover then runs again from what is
-left, so every node stays within ``radius`` of a terminal. Measured in
-docs/analysis_quality.md ("Dead ends as one node"). ``0`` (the default)
-keeps every terminal, unchanged.
-
 Complexity: O(m + n log n) for step 1 plus, per added path, a Dijkstra over
 the nodes that path brings closer (in practice the area around it); with
 ``traffic_weight`` > 0, that twice, plus the walking flow, O(k (m + n log n))
@@ -179,9 +162,7 @@ with ``recess_depth`` > 0, one more multi-source Dijkstra, limited to
 ``radius``; with ``quiet_step`` > 0, the walking flow (once, as above)
 and a walk up each leaf's chain; with ``dent_rho_budget`` > 0, those, two
 multi-source Dijkstras and a sort of the k dents, O(k c nvp + m + n log n +
-k log k); with ``pocket_depth`` > 0, the graph's biconnected components,
-one multi-source Dijkstra and one more cover pass, O(m + n log n) and a
-pass per path it adds.
+k log k).
 """
 
 from __future__ import annotations
@@ -200,7 +181,6 @@ from scipy.sparse import csgraph
 from g2s_core.model import NavMesh, RunContext, Terminals
 from g2s_core.plugin import PluginParams, hookimpl
 from g2s_plugins import _trees, traffic
-from g2s_plugins.heat_guarantee import FLOOR
 
 NAME = "coverage"
 
@@ -250,7 +230,6 @@ class Params(PluginParams):
     quiet_step: float = Field(0.0, ge=0, description="a leaf whose dead end (it and the chain of degree-2 nodes behind it) is less than this many walking-flow percentile points quieter than the node it opens onto, which the cover holds within the cover radius, is no terminal; 0: every leaf")
     dent_depth: float = Field(0.0, ge=0, description="a leaf whose dead end (it and the chain of degree-2 nodes behind it) lies within this many metres of its way in is a dent, which dent_rho_budget may drop; 0: no dents; leaves without a polygon (the sampling route) are no dent")
     dent_rho_budget: float = Field(0.0, ge=0, le=1, description="dents the cover holds within the cover radius without them are no terminal, least first by the Spearman rho their heat map would lose taking the walking-flow percentile of the terminal nearest their way in, while that estimated loss summed stays within this; 0: every dent")
-    pocket_depth: float = Field(0.0, ge=0, description="a pocket (what hangs beyond one node of the graph, its mouth, on the side away from its area's largest part) whose nodes all lie within this many metres of its mouth along the graph, at most the cover radius, holds no terminal: the cover's terminals in it give way to its mouth, which stands for it; 0: off")
 
     @model_validator(mode="before")
     @classmethod
@@ -259,12 +238,6 @@ class Params(PluginParams):
         if isinstance(data, dict) and "play_points" in data:
             raise PydanticCustomError("moved", "play_points is a parameter of the graph builder now: set graph.params.play_points")
         return data
-
-
-POCKET_LINK_SPACINGS = 1.5
-"""On a graph of samples, the links a pocket's mouth parts (:func:`pockets`): those no longer than this many sample
-spacings, a grid's eight nearest neighbours; the longer links (up to twice the spacing) cross a door one sample
-wide beside its sample, so on the whole graph no door is a cut vertex."""
 
 
 def default_radius(context: RunContext) -> float:
@@ -308,7 +281,7 @@ def cover(graph: nx.Graph, params: Params, context: RunContext) -> Cover:
     place_area = params.place_area if params.place_area is not None else smallest_part(context)
     arrays = traffic.surface_arrays(graph)
     drops_dents = params.dent_depth > 0 and params.dent_rho_budget > 0
-    reads_traffic = params.traffic_weight > 0 or params.quiet_step > 0 or drops_dents or params.pocket_depth > 0
+    reads_traffic = params.traffic_weight > 0 or params.quiet_step > 0 or drops_dents
     if reads_traffic:  # its trees on a thread of their own while the leaves and dead ends are found here
         traffic.start_walking_flow(arrays, max_sources=params.traffic_sources, ties=params.traffic_ties,
                                    scaling=params.traffic_scaling)
@@ -354,19 +327,6 @@ def cover(graph: nx.Graph, params: Params, context: RunContext) -> Cover:
         dents = dents_within_budget(graph, context.navmesh, arrays, leaves, rank,
                                     params.dent_depth, rows, radius, params.dent_rho_budget)
         leaves, seeds, rows = (np.setdiff1d(rows_, dents) for rows_ in (leaves, seeds, rows))
-    if params.pocket_depth > 0:
-        spacing = (graph.graph.get("sampling_stats") or {}).get("spacing")
-        link = math.inf if spacing is None else POCKET_LINK_SPACINGS * spacing
-        # a pocket whose walking flow the mouth's heat does not stand for keeps its terminals: the heat guarantee
-        # would give back what went (as it gives back a node more than FLOOR off its heat)
-        pocket, mouth = pockets(adjacency, arrays.area, min(params.pocket_depth, radius), link, rank, FLOOR)
-        inside = pocket[rows] >= 0
-        mouths = np.unique(mouth[pocket[rows[inside]]])
-        leaves, seeds = (rows_[pocket[rows_] < 0] for rows_ in (leaves, seeds))
-        seeds = np.union1d(seeds, mouths)
-        # the pocket's own nodes lie within the depth (at most the radius) of its mouth, but a longer link may have
-        # held a node outside it within the radius of a terminal inside: the cover runs again from what is left
-        rows = cover_paths(adjacency, np.union1d(rows[~inside], mouths), eligible, radius)
     return Cover(arrays, np.sort(leaves), np.unique(seeds), rows)
 
 
@@ -433,108 +393,6 @@ def dead_end_places(adjacency: sp.csr_array, area: np.ndarray, leaves: np.ndarra
     by_place = np.lexsort((grouped, -distance[grouped], owner[owner >= 0]))
     firsts = np.unique(owner[owner >= 0][by_place], return_index=True)[1]
     return np.sort(np.concatenate([alone, grouped[by_place][firsts]]))
-
-
-def pockets(adjacency: sp.csr_array, area: np.ndarray, depth: float, link: float = math.inf,
-            rank: np.ndarray | None = None, step: float = math.inf) -> tuple[np.ndarray, np.ndarray]:
-    """Each node's pocket (-1: none) and each pocket's mouth: ``(pocket, mouth)``, (n,) and (p,) rows.
-
-    ``adjacency``: (n, n) edge lengths, m; ``area``: (n,) m². The graph's
-    cut vertices (``rustworkx.articulation_points``) and its blocks
-    (biconnected components) are a tree, each connected area's rooted at its
-    block of most area (a block's area: its nodes'; ties: lowest label). A
-    block and all below it are a pocket entered at its parent cut vertex, the
-    mouth: every way in passes it, so distances from the root blocks (one
-    multi-source Dijkstra) less the mouth's are those within the pocket. A
-    node belongs to the largest pocket round it whose nodes all lie within
-    ``depth`` metres of its mouth and, given ``rank`` ((n,) percentiles),
-    whose nodes' ranks all lie within ``step`` points of their mean (a
-    place of one heat, which one node can stand for); a node links to the block above it only if it is a cut vertex,
-    so the mouth itself belongs to none of the pockets it opens. Only links
-    no longer than ``link`` metres count, for the cut vertices and the
-    depths alike. On a grid of samples a door one
-    sample wide is a cut vertex and the cabin behind it a pocket; on a
-    navmesh a door polygon. O(m + n log n).
-    """
-    n = adjacency.shape[0]
-    upper = sp.triu(adjacency, k=1).tocoo()
-    short = upper.data <= link
-    upper = sp.coo_array((upper.data[short], (upper.row[short], upper.col[short])), shape=(n, n))
-    adjacency = (upper + upper.T).tocsr()
-    graph = rx.PyGraph(multigraph=False)
-    graph.add_nodes_from(range(n))
-    graph.add_edges_from_no_data(list(zip(upper.row.tolist(), upper.col.tolist(), strict=True)))
-    components = rx.biconnected_components(graph)
-    if not components:
-        return np.full(n, -1, dtype=np.int64), np.zeros(0, dtype=np.int64)
-    edges = np.array(list(components.keys()), dtype=np.int64).reshape(-1, 2)
-    labels = np.array(list(components.values()), dtype=np.int64)
-    _, labels = np.unique(labels, return_inverse=True)
-    blocks = int(labels.max()) + 1
-    cut = np.zeros(n, dtype=bool)
-    cut[np.array(sorted(rx.articulation_points(graph)), dtype=np.int64)] = True
-    # (block, node) memberships, each once: a cut vertex in several blocks, any other node in one
-    member = np.unique(np.column_stack([np.repeat(labels, 2), edges.ravel()]), axis=0)
-    home = np.full(n, -1, dtype=np.int64)
-    plain = ~cut[member[:, 1]]
-    home[member[plain, 1]] = member[plain, 0]
-    block_area = np.bincount(member[:, 0], weights=area[member[:, 1]], minlength=blocks)
-    # the block-cut tree: blocks 0..blocks-1, cut vertex c as blocks + c, and a hub joined to each area's root block
-    links = member[cut[member[:, 1]]]
-    tree = sp.csr_array((np.ones(len(links)), (links[:, 0], blocks + links[:, 1])), shape=(blocks + n + 1,) * 2)
-    _, area_of = csgraph.connected_components(tree, directed=False)
-    order = np.lexsort((np.arange(blocks), -block_area, area_of[:blocks]))
-    roots = order[np.unique(area_of[order], return_index=True)[1]]
-    hub = blocks + n
-    tree = sp.csr_array((np.ones(len(links) + len(roots)),
-                         (np.concatenate([links[:, 0], np.full(len(roots), hub)]),
-                          np.concatenate([blocks + links[:, 1], roots]))), shape=(hub + 1,) * 2)
-    visit, parent = csgraph.breadth_first_order(tree, hub, directed=False, return_predecessors=True)
-    entrance = np.where(parent[:blocks] == hub, -1, parent[:blocks] - blocks)  # a block's mouth, -1 for a root
-    cuts = np.flatnonzero(cut)
-    home[cuts] = parent[blocks + cuts]  # a cut vertex belongs to the block above it
-    roots_nodes = member[np.isin(member[:, 0], roots), 1]
-    distance = csgraph.dijkstra(adjacency, directed=False, indices=np.unique(roots_nodes), min_only=True)
-    farthest = np.full(blocks, -np.inf)
-    np.maximum.at(farthest, member[:, 0], distance[member[:, 1]])
-    # each block's ranks, its mouth left out (counted once, below): sum, count, lowest, highest
-    rank = np.zeros(n) if rank is None else np.asarray(rank, dtype=np.float64)
-    own = member[home[member[:, 1]] == member[:, 0]]
-    total = np.bincount(own[:, 0], weights=rank[own[:, 1]], minlength=blocks).tolist()
-    count = np.bincount(own[:, 0], minlength=blocks).tolist()
-    low, high = np.full(blocks, np.inf), np.full(blocks, -np.inf)
-    np.minimum.at(low, own[:, 0], rank[own[:, 1]])
-    np.maximum.at(high, own[:, 0], rank[own[:, 1]])
-    # the walks over the tree on Python lists: a numpy scalar read per step is slow
-    order = [b for b in visit.tolist() if b < blocks]
-    parents, farthest_l, low_l, high_l = parent.tolist(), farthest.tolist(), low.tolist(), high.tolist()
-    for b in reversed(order):  # children before parents: a block's figures become its subtree's
-        if (up := parents[b]) != hub:
-            grand = parents[up]
-            farthest_l[grand] = max(farthest_l[grand], farthest_l[b])
-            total[grand] += total[b]
-            count[grand] += count[b]
-            low_l[grand], high_l[grand] = min(low_l[grand], low_l[b]), max(high_l[grand], high_l[b])
-    entrance_l = entrance.tolist()
-
-    def holds(b: int, e: int) -> bool:
-        if e < 0 or farthest_l[b] - float(distance[e]) > depth:
-            return False
-        mean = total[b] / count[b]
-        return high_l[b] - mean <= step and mean - low_l[b] <= step
-
-    within = [holds(b, e) for b, e in enumerate(entrance_l)]
-    place = [-1] * blocks
-    for b in order:  # parents before children: a pocket inside a pocket within the depth takes its place
-        up = parents[b]
-        above = place[parents[up]] if up != hub else -1
-        place[b] = above if above >= 0 else (b if within[b] else -1)
-    place_a = np.array(place, dtype=np.int64)
-    held, pocket = np.unique(place_a[place_a >= 0], return_inverse=True)
-    block_pocket = np.full(blocks, -1, dtype=np.int64)
-    block_pocket[place_a >= 0] = pocket
-    node_pocket = np.where(home >= 0, block_pocket[np.maximum(home, 0)], -1)
-    return node_pocket, entrance[held]
 
 
 def quiet_dead_ends(arrays: traffic.SurfaceArrays, leaves: np.ndarray, rank: np.ndarray, step: float,
