@@ -51,25 +51,25 @@ def _grating(s: _Solids, x0: float, x1: float, z0: float, z1: float, top: float,
 
 def grating_plant_plan(seed: int) -> dict:
     """The plan of :func:`grating_plant` for ``seed``: the hall's size, each grating's rectangle (x0, x1, z0, z1), top,
-    bar width, gap and direction (``along_x``), the flights (foot plan point, heading, foot height) and the spine's
-    line. O(gratings)."""
+    bar width, gap, direction (``along_x``) and kind (spine, landing or platform), and the flights (foot plan point,
+    foot height; each 25 risers of 0.18 m along +x). O(gratings)."""
     rng = np.random.default_rng(seed)
     size_x, size_z = float(rng.uniform(60.0, 70.0)), float(rng.uniform(36.0, 42.0))
     zs = size_z / 2
     x0 = 10.0
     gratings = []
 
-    def add(rect: tuple[float, float, float, float], top: float) -> None:
-        gratings.append({"rect": rect, "top": top, "bar": float(rng.uniform(0.03, 0.05)),
+    def add(rect: tuple[float, float, float, float], top: float, kind: str) -> None:
+        gratings.append({"rect": rect, "top": top, "bar": float(rng.uniform(0.03, 0.05)), "kind": kind,
                          "gap": float(rng.uniform(0.025, 0.06)), "along_x": bool(rng.random() < 0.5)})
 
     for level, top in enumerate((4.5, 9.0)):
         z_spine = zs + 3.0 * level  # the upper spine 3 m north of the lower one: 4.5 m of head room over it
         width = float(rng.uniform(3.0, 3.6))
         start = x0 if level == 0 else x0 + 8.5
-        add((start, size_x - 6.0, z_spine - width / 2, z_spine + width / 2), top)  # the spine
+        add((start, size_x - 6.0, z_spine - width / 2, z_spine + width / 2), top, "spine")
         if level == 0:  # the landing at its west end, the upper flight standing on its north half
-            add((x0 - 0.5, x0 + 10.0, zs - 4.5, zs + 4.5), top)
+            add((x0 - 0.5, x0 + 10.0, zs - 4.5, zs + 4.5), top, "landing")
         n = 4 if level == 0 else 3
         xs = np.linspace(start + 14.0, size_x - 16.0, n)
         for k, x in enumerate(xs):
@@ -77,7 +77,7 @@ def grating_plant_plan(seed: int) -> dict:
             north = (k + level) % 2 == 0
             z_edge = z_spine + (width / 2 - 0.1 if north else -width / 2 + 0.1)
             z_far = min(z_edge + d, size_z - 1.5) if north else max(z_edge - d, 1.5)
-            add((float(x) - w / 2, float(x) + w / 2, min(z_edge, z_far), max(z_edge, z_far)), top)
+            add((float(x) - w / 2, float(x) + w / 2, min(z_edge, z_far), max(z_edge, z_far)), top, "platform")
     flights = [(np.array([x0 - 7.0, zs]), 0.0), (np.array([x0 + 1.5, zs + 3.0]), 4.5)]  # 25 risers of 0.18, 7 m
     return {"size": (size_x, size_z), "gratings": gratings, "flights": flights}
 
@@ -90,7 +90,7 @@ def grating_plant(seed: int) -> trimesh.Trimesh:
     level is a spine catwalk 3.0-3.6 m wide along x (unrailed) with 3-4 platforms 8-12 x 6-9 m off its sides; the
     lower level has a landing 10.5 x 9 m at its west end, reached from the ground by a solid flight (25 risers of 0.18
     m, 2 m wide) along x, and a second solid flight standing on the landing's north half climbs from it to the upper
-    spine's west end. The ground (solid, y = 0) holds tanks and pumps (ridged).
+    spine's west end. The ground (solid, y = 0) holds 20-27 tanks and pumps (ridged), each platform a pump or two.
 
     Expected (written before the first run): one area, every grating walked: a gap of 25-60 mm is far under Recast's
     0.25 m cells, each of which holds bars, so the navmesh route sees a floor at each grating's top (less the ledge
@@ -113,12 +113,17 @@ def grating_plant(seed: int) -> trimesh.Trimesh:
     s.wall((size_x, 0.0), (size_x, size_z), -0.1, 10.0, thickness=0.3)
     for g in plan["gratings"]:
         _grating(s, *g["rect"], g["top"], g["bar"], g["gap"], g["along_x"])
+        if g["kind"] == "platform":  # a pump or two on skids, 0.5 m of room under it (no head room: no floor)
+            x0, x1, z0, z1 = g["rect"]
+            for _ in range(int(rng.integers(1, 3))):
+                p = np.array([float(rng.uniform(x0 + 2.5, x1 - 2.5)), float(rng.uniform(z0 + 2.0, z1 - 2.0))])
+                _ridged(s, p[0] - 1.0, p[0] + 1.0, p[1] - 0.6, p[1] + 0.6, g["top"] + 0.5, g["top"] + 1.6)
     for foot, y0 in plan["flights"]:
         s.stairs(foot, np.array([1.0, 0.0]), 2.0, y0, 4.5, 0.18, 0.28)
     holes: list[tuple[float, float, float, float]] = []
     spots: list[tuple[np.ndarray, float]] = []
     keep = [(0.0, 12.0, size_z / 2 - 3.0, size_z / 2 + 3.0)] + [(x - 1.0, x + 5.0, 0.0, 5.0) for x in doors]
-    for _ in range(int(rng.integers(8, 13))):  # tanks and pumps on the ground, clear of the first flight and doors
+    for _ in range(int(rng.integers(20, 28))):  # tanks and pumps on the ground, clear of the first flight and doors
         p = _placed(rng, spots, 2.0, size_x - 2.0, 2.0, size_z - 2.0, 1.8, keep)
         if p is not None:
             a, b = float(rng.uniform(0.8, 1.6)), float(rng.uniform(0.8, 1.6))
@@ -134,7 +139,7 @@ def stepping_stones_plan(seed: int) -> dict:
     rng = np.random.default_rng(seed)
     size_x, size_z = float(rng.uniform(84.0, 96.0)), float(rng.uniform(56.0, 64.0))
     width = float(rng.uniform(8.0, 11.0))
-    band = (size_z * 0.55, size_z * 0.55 + width)
+    band = (size_z * 0.45, size_z * 0.45 + width)
     pond = (size_x - 34.0, size_x - 10.0, 6.0, 6.0 + 18.0)
     islet = (np.array([(pond[0] + pond[1]) / 2, (pond[2] + pond[3]) / 2 + 2.0]), float(rng.uniform(3.5, 4.5)))
     paths = []
@@ -205,11 +210,11 @@ def stepping_stones(seed: int) -> trimesh.Trimesh:
     tea = _placed(rng, spots, 4.0, size_x - 4.0, band[1] + 4.0, size_z - 4.0, 4.0, keep)
     if tea is not None:
         holes.append(_ridged(s, tea[0] - 3.5, tea[0] + 3.5, tea[1] - 2.5, tea[1] + 2.5, -0.1, 2.6))
-    for _ in range(int(rng.integers(8, 13))):  # hedges
+    for _ in range(int(rng.integers(14, 20))):  # hedges
         p = _placed(rng, spots, 2.0, size_x - 2.0, 2.0, size_z - 2.0, 2.2, keep)
         if p is not None:
             holes.append(_ridged(s, p[0] - 2.0, p[0] + 2.0, p[1] - 0.5, p[1] + 0.5, -0.1, 1.2))
-    for _ in range(int(rng.integers(25, 36))):  # trees
+    for _ in range(int(rng.integers(45, 60))):  # trees
         p = _placed(rng, spots, 1.0, size_x - 1.0, 1.0, size_z - 1.0, 0.6, keep)
         if p is not None:
             _trunk(s, p, float(rng.uniform(0.15, 0.35)), -0.1, 5.0)
@@ -223,8 +228,8 @@ def bridge_arena_plan(seed: int) -> dict:
     a pad stands on, the pad's plan point, the high platform it throws to: centre, radius, top). O(platforms^2)."""
     rng = np.random.default_rng(seed)
     centres, radii, tops = [], [], []
-    for i in range(4):
-        for j in range(2):
+    for i in range(5):
+        for j in range(3):
             centres.append(np.array([i * 28.0 + float(rng.uniform(-4.0, 4.0)), j * 30.0 + float(rng.uniform(-4.0, 4.0))]))
             radii.append(float(rng.uniform(6.0, 8.0)))
             tops.append(float(rng.choice([0.0, 1.5, 3.0])))
@@ -240,8 +245,8 @@ def bridge_arena_plan(seed: int) -> dict:
     edges += extra[:2]
     bridges = [(i, j, float(rng.uniform(1.4, 3.2))) for i, j in edges]
     pads = []
-    for i in (int(rng.integers(0, 4)) * 2, int(rng.integers(0, 4)) * 2 + 1):  # one in each row
-        outward = np.array([0.0, -1.0 if i % 2 == 0 else 1.0])
+    for i in (int(rng.integers(0, 5)) * 3, int(rng.integers(0, 5)) * 3 + 2):  # one in each outer row
+        outward = np.array([0.0, -1.0 if i % 3 == 0 else 1.0])
         high = centres[i] + outward * (radii[i] + 6.0)
         pads.append({"on": i, "at": centres[i] + outward * (radii[i] - 2.0),
                      "high": (high, float(rng.uniform(4.0, 5.0)), tops[i] + float(rng.uniform(6.0, 8.0)))})
@@ -249,8 +254,8 @@ def bridge_arena_plan(seed: int) -> dict:
 
 
 def bridge_arena(seed: int) -> trimesh.Trimesh:
-    """A sky arena (an arena shooter's map over a kill plane): 8 platforms (octagons 6-8 m in radius, tops at 0, 1.5
-    or 3 m, drawn) on a jittered 4 x 2 grid 28-30 m apart over a void (no floor under anything), joined along a
+    """A sky arena (an arena shooter's map over a kill plane): 15 platforms (octagons 6-8 m in radius, tops at 0, 1.5
+    or 3 m, drawn) on a jittered 5 x 3 grid 28-30 m apart over a void (no floor under anything), joined along a
     spanning tree and two more pairs by *bridges with no rails, 1.4-3.2 m wide (drawn per bridge)*, each a straight
     deck (flat, or sloping up to about 8 degrees between platforms of different heights) at whatever heading its
     platforms' centres give. Two *high platforms* (radius 4-5 m, 6-8 m over their neighbour) stand 6 m outside the
@@ -314,13 +319,13 @@ def queue_hall_plan(seed: int) -> dict:
     lane's z) and belts' top, and each shop's front (x0, x1) and shutter's lower edge (``shutters``, metres over the
     floor). O(shops)."""
     rng = np.random.default_rng(seed)
-    size_x, size_z = float(rng.uniform(50.0, 60.0)), float(rng.uniform(34.0, 38.0))
-    lanes, width = int(rng.integers(6, 10)), float(rng.uniform(1.6, 2.3))
+    size_x, size_z = float(rng.uniform(64.0, 74.0)), float(rng.uniform(40.0, 46.0))
+    lanes, width = int(rng.integers(8, 13)), float(rng.uniform(1.6, 2.3))
     belt = float(rng.uniform(0.85, 0.95))
-    x_range = (4.0, float(rng.uniform(22.0, 28.0)))
+    x_range = (4.0, float(rng.uniform(30.0, 36.0)))
     shops = []
     x = x_range[1] + 4.0
-    while x + 6.0 <= size_x - 2.0 and len(shops) < 4:
+    while x + 6.0 <= size_x - 2.0 and len(shops) < 6:
         shops.append(((x, x + 5.0), float(rng.uniform(1.1, 2.4))))
         x += 6.5
     return {"size": (size_x, size_z), "lanes": lanes, "width": width, "x": x_range, "z0": 4.0, "belt": belt,
@@ -328,14 +333,14 @@ def queue_hall_plan(seed: int) -> dict:
 
 
 def queue_hall(seed: int) -> trimesh.Trimesh:
-    """An airport's security hall (a heist's or a shooter's terminal, a theme park's queue): a hall 50-60 x 34-38 m,
-    walls 6 m high, open to the sky, entered by a door 3 m wide in its south wall at the queue's mouth and left by two
-    doors in its north wall. In its west part *a serpentine queue of 6-9 lanes 1.6-2.3 m wide (drawn per seed)
+    """An airport's security hall (a heist's or a shooter's terminal, a theme park's queue): a hall 64-74 x 40-46 m,
+    walls 6 m high, open to the sky, entered by a door 3 m wide in its south wall at the queue's mouth and left by a
+    door in its north wall. In its west part *a serpentine queue of 8-12 lanes 1.6-2.3 m wide (drawn per seed)
     between belt barriers*: posts 0.08 m across and 0.95 m high every 2.2 m, joined by *belts 0.05 m deep and 0.02 m
     thick whose tops hang 0.85-0.95 m over the floor, with open floor under them*, each line of belts open at
     alternate ends, so the queue is one way folded back and forth; its last lane leads to a screening line of 4
     cabinets (ridged, 1.8 m high) with passages 1.6 m wide between them, and on to the north doors. Along the north
-    wall, east of the queue, 3-4 shops 5 m wide and 6 m deep *behind shutters half down: a shutter's lower edge
+    wall, east of the queue, 4-6 shops 5 m wide and 6 m deep *behind shutters half down: a shutter's lower edge
     stands 1.1-2.4 m over the floor (drawn per shop)*, the floor running on under it (``queue_hall_plan(seed)``).
 
     Expected (written before the first run): for the presets' agent (2 m high) the floor under a belt, with 0.85-0.95
@@ -391,8 +396,6 @@ def queue_hall(seed: int) -> trimesh.Trimesh:
         s.box(sx0, sx1, edge, 4.0, front_z - 0.05, front_z + 0.05)
         p = np.array([(sx0 + sx1) / 2, size_z - 1.0])
         holes.append(_ridged(s, p[0] - 1.5, p[0] + 1.5, p[1] - 0.4, p[1] + 0.4, -0.1, 1.0))  # a counter
-    for sx1 in [plan["shops"][-1][0][1]] if plan["shops"] else []:
-        s.box(sx1, size_x, -0.1, 4.0, front_z - 0.1, front_z + 0.1)  # the wall east of the last shop
     spots: list[tuple[np.ndarray, float]] = []
     keep = [(qx0 - 1.0, qx1 + 1.0, 0.0, zq + 3.0), (qx1, size_x, front_z - 2.5, size_z)]
     for _ in range(int(rng.integers(5, 9))):  # benches and bins in the hall's east part
@@ -408,8 +411,8 @@ def far_outpost_plan(seed: int) -> dict:
     spanning tree of the hubs and two more pairs, and the offset (x, y, z, metres) the whole is moved by. O(hubs^2)."""
     rng = np.random.default_rng(seed)
     centres: list[np.ndarray] = []
-    while len(centres) < 9:
-        p = rng.uniform(0.0, 110.0, 2)
+    while len(centres) < 14:
+        p = rng.uniform(0.0, 160.0, 2)
         if all(np.linalg.norm(p - c) > 26.0 for c in centres):
             centres.append(p)
     radii = [float(rng.uniform(4.0, 6.0)) for _ in centres]
@@ -447,8 +450,8 @@ def far_outpost_plan(seed: int) -> dict:
 
 
 def far_outpost(seed: int, far: bool = True) -> trimesh.Trimesh:
-    """A research outpost (a survival game's or an open-world shooter's, placed where the world's map puts it): 9 round
-    hubs (16-gons 4-6 m in radius, walls 3 m high) on a site of about 120 m square, joined along a spanning tree and
+    """A research outpost (a survival game's or an open-world shooter's, placed where the world's map puts it): 14 round
+    hubs (16-gons 4-6 m in radius, walls 3 m high) on a site of about 170 m square, joined along a spanning tree and
     two more pairs by *tunnels 1.7-2.6 m wide (drawn per tunnel) at whatever heading their hubs give* (no two at one
     hub within 45 degrees), each a floor strip walled 3 m high along both sides, nothing but the hubs and tunnels
     being floor, open to the sky; crates and a console (ridged) in each hub. *The whole stands 35-55 km from the
@@ -507,7 +510,7 @@ def canteen_plan(seed: int) -> dict:
     """The plan of :func:`canteen` for ``seed``: the hall's size and each table block (x0, x1, z0, z1 of its top,
     the top's height, how many tables pushed together across it). O(blocks)."""
     rng = np.random.default_rng(seed)
-    size_x, size_z = float(rng.uniform(40.0, 48.0)), float(rng.uniform(26.0, 30.0))
+    size_x, size_z = float(rng.uniform(56.0, 64.0)), float(rng.uniform(32.0, 38.0))
     blocks = []
     z = 4.0
     while z + 4.0 < size_z - 6.0:  # rows of blocks along x, 2.6-3.4 m of aisle between a row's benches and the next
@@ -534,7 +537,7 @@ def _legged_top(s: _Solids, x0: float, x1: float, z0: float, z1: float, top: flo
 
 
 def canteen(seed: int) -> trimesh.Trimesh:
-    """A mess hall (a school's canteen in a horror game, a barracks' in a shooter) 40-48 x 26-30 m, walls 4 m high,
+    """A mess hall (a school's canteen in a horror game, a barracks' in a shooter) 56-64 x 32-38 m, walls 4 m high,
     two doors 2.4 m wide, open to the sky, furnished *as real furniture is modelled*: tables are a top 0.04 m thick
     0.74-0.77 m up on legs 0.05 m square, with *open floor under them*; along each table block's two long sides a
     bench (a seat 0.35 m deep, 0.45 m up, on legs). Blocks stand in rows along x; *a block is one table (0.85-0.95 m
