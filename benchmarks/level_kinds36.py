@@ -298,9 +298,9 @@ def bridge_arena(seed: int) -> trimesh.Trimesh:
         return all(np.linalg.norm(p - pad["at"]) > 3.0 for pad in plan["pads"])
 
     for c, r, top in zip(centres, radii, tops):
-        placed = 0
+        placed, wanted = 0, int(rng.integers(2, 4))
         for _ in range(40):
-            if placed == int(rng.integers(2, 4)):
+            if placed == wanted:
                 break
             p = c + rng.uniform(-r * 0.55, r * 0.55, 2)
             heading = float(rng.uniform(0.0, math.pi))
