@@ -1,4 +1,4 @@
-"""The level kinds of rounds 9-35 (``benchmarks/level_kinds.py``, ``level_kinds26.py`` ... ``level_kinds35.py``) build
+"""The level kinds of rounds 9-36 (``benchmarks/level_kinds.py``, ``level_kinds26.py`` ... ``level_kinds36.py``) build
 the levels they describe.
 
 Smoke tests of quick generators (most well under a second each to build and to give a navmesh; the theatre's and
@@ -1966,17 +1966,16 @@ def test_the_far_outpost_is_its_twin_at_the_origin(round_36):
     assert abs(far.areas.sum() - near.areas.sum()) < 1e-3 * near.areas.sum()
 
 
-def test_the_canteens_tables_hold_no_floor_under_them(round_36):
-    """Table tops on thin legs, 0.74-0.77 m up: no navmesh floor under a top (0.7 m of head room) and none on a
-    single table's top; the hall is one area with the floor round the blocks."""
+def test_the_canteens_tables_hold_no_floor_under_them_but_the_navmesh_climbs_onto_them(round_36):
+    """Table tops on thin legs, 0.74-0.77 m up: no navmesh polygon (a convex polygon holds its centre) stands under a
+    block's top (0.7 m of head room). But the navmesh climbs the benches' seats, 0.45 m up (over the 0.4 m climb,
+    read within it in Recast's 0.125 m cells), and from them the tops (0.3 m more): the hall's one area holds over
+    150 m² of floor on benches and tables (docs/analysis_quality.md, "A thirty-sixth round of level kinds")."""
     plan = benchmark("level_kinds36").canteen_plan(0)
     label, nav = areas(round_36["canteen"](0), DROPS)
-    main = int(np.argmax(np.bincount(label, weights=nav.areas)))
+    x, y, z = nav.centres.T
     for block in plan["blocks"]:
         x0, x1, z0, z1 = block["rect"]
-        under = nav.nearest_poly([(x0 + x1) / 2, 0.0, (z0 + z1) / 2], [0.2, 0.3, 0.2])[0]
-        assert under < 0 or nav.centres[under, 1] > 0.5, block
-        if block["across"] == 1:
-            top = nav.nearest_poly([(x0 + x1) / 2, block["top"], (z0 + z1) / 2], [0.2, 0.2, 0.2])[0]
-            assert top < 0, block
-    assert (label == main).sum() > 0.9 * len(label)
+        inside = (x > x0 + 0.1) & (x < x1 - 0.1) & (z > z0 + 0.1) & (z < z1 - 0.1)
+        assert not (inside & (y < 0.5)).any(), block
+    assert label.max() == 0 and nav.areas[y > 0.55].sum() > 150.0
