@@ -1,4 +1,4 @@
-"""The level kinds of rounds 9-35 (``benchmarks/level_kinds.py``, ``level_kinds26.py`` ... ``level_kinds35.py``) build
+"""The level kinds of rounds 9-36 (``benchmarks/level_kinds.py``, ``level_kinds26.py`` ... ``level_kinds36.py``) build
 the levels they describe.
 
 Smoke tests of quick generators (most well under a second each to build and to give a navmesh; the theatre's and
@@ -1893,3 +1893,89 @@ def test_the_terraces_seams_and_racks_are_one_area_each(round_35):
     assert label.max() == 0 and deck > 0.85 * size_x * size_z
     label, _ = areas(round_35["rack_aisles"](0), DROPS)
     assert label.max() == 0
+
+
+@pytest.fixture(scope="module")
+def round_36() -> dict[str, Callable[..., trimesh.Trimesh]]:
+    """``benchmarks/level_kinds36.py``'s KINDS (the thirty-sixth round): each call builds its level anew."""
+    return benchmark("level_kinds36").KINDS
+
+
+def test_the_grating_plants_gratings_are_floor_at_both_levels(round_36):
+    """Bar gratings (bars 30-50 mm, gaps 25-60 mm, over a 4.5 m drop) are floor to Recast, each of its 0.25 m cells
+    holding bars: one area with floor at 4.5 m and at 9 m (docs/analysis_quality.md, "A thirty-sixth round of level
+    kinds")."""
+    label, nav = areas(round_36["grating_plant"](0), DROPS)
+    assert label.max() == 0
+    y = nav.centres[:, 1]
+    assert nav.areas[np.abs(y - 4.6) < 0.3].sum() > 200.0 and nav.areas[np.abs(y - 9.1) < 0.3].sum() > 100.0
+
+
+def test_the_stepping_stones_join_nothing_on_the_navmesh(round_36):
+    """Stones 0.8-2.2 m across with gaps of 0.15-0.5 m: Recast keeps the agent's centre two cells from every gap, so
+    no stone path is crossed; the lawns are one area by the footbridge and the islet, reached by stones only, is an
+    area apart."""
+    plan = benchmark("level_kinds36").stepping_stones_plan(0)
+    label, nav = areas(round_36["stepping_stones"](0), DROPS)
+    band, (islet, _) = plan["band"], plan["islet"]
+    south = nav.nearest_poly([3.0, 0.0, band[0] - 3.0], [1.0, 1.0, 1.0])[0]
+    north = nav.nearest_poly([3.0, 0.0, band[1] + 3.0], [1.0, 1.0, 1.0])[0]
+    on_islet = nav.nearest_poly([islet[0], 0.0, islet[1]], [1.5, 1.0, 1.5])[0]
+    assert min(south, north, on_islet) >= 0
+    assert label[south] == label[north] != label[on_islet]
+
+
+def test_the_bridge_arenas_jump_pad_platforms_are_apart(round_36):
+    """Platforms reached only by jump pads (6-8 m over the one in front) are areas apart for a walker."""
+    plan = benchmark("level_kinds36").bridge_arena_plan(0)
+    label, nav = areas(round_36["bridge_arena"](0), DROPS)
+    main = int(np.argmax(np.bincount(label, weights=nav.areas)))
+    for pad in plan["pads"]:
+        high, _, top = pad["high"]
+        poly = nav.nearest_poly([high[0], top, high[1]], [1.5, 1.0, 1.5])[0]
+        assert poly >= 0 and label[poly] != main
+
+
+def test_the_queue_halls_belts_are_walls_and_low_shutters_close_their_shops(round_36):
+    """Belts hanging 0.85-0.95 m over an open floor: a walk straight across a belt line from one lane's middle to the
+    next is blocked on the navmesh; a shop behind a shutter whose lower edge is under 1.9 m is an area apart, one
+    at 2.3 m or more joined to the hall (seed 0: edges 1.89, 2.05, 1.81 and 2.32 m)."""
+    plan = benchmark("level_kinds36").queue_hall_plan(0)
+    label, nav = areas(round_36["queue_hall"](0), DROPS)
+    (qx0, qx1), z0, width = plan["x"], plan["z0"], plan["width"]
+    x = (qx0 + qx1) / 2
+    for k in range(plan["lanes"] - 1):
+        clear, _ = nav.raycast([x, 0.0, z0 + (k + 0.5) * width], [x, 0.0, z0 + (k + 1.5) * width])
+        assert not clear, k
+    main = int(np.argmax(np.bincount(label, weights=nav.areas)))
+    size_z = plan["size"][1]
+    for (sx0, sx1), edge in plan["shops"]:
+        poly = nav.nearest_poly([(sx0 + sx1) / 2, 0.0, size_z - 3.0], [1.0, 1.0, 1.0])[0]
+        if edge < 1.9:
+            assert poly >= 0 and label[poly] != main, edge
+        elif edge >= 2.3:
+            assert poly >= 0 and label[poly] == main, edge
+
+
+def test_the_far_outpost_is_its_twin_at_the_origin(round_36):
+    """The outpost 35-55 km from the origin and 1.5-3 km up gives the navmesh of its twin built at the origin: as
+    many polygons and areas, the same walkable area to 0.1 %."""
+    far_label, far = areas(round_36["far_outpost"](0), DROPS)
+    near_label, near = areas(round_36["far_outpost"](0, far=False), DROPS)
+    assert far.polygon_count == near.polygon_count and far_label.max() == near_label.max()
+    assert abs(far.areas.sum() - near.areas.sum()) < 1e-3 * near.areas.sum()
+
+
+def test_the_canteens_tables_hold_no_floor_under_them_but_the_navmesh_climbs_onto_them(round_36):
+    """Table tops on thin legs, 0.74-0.77 m up: no navmesh polygon (a convex polygon holds its centre) stands under a
+    block's top (0.7 m of head room). But the navmesh climbs the benches' seats, 0.45 m up (over the 0.4 m climb,
+    read within it in Recast's 0.125 m cells), and from them the tops (0.3 m more): the hall's one area holds over
+    150 m² of floor on benches and tables (docs/analysis_quality.md, "A thirty-sixth round of level kinds")."""
+    plan = benchmark("level_kinds36").canteen_plan(0)
+    label, nav = areas(round_36["canteen"](0), DROPS)
+    x, y, z = nav.centres.T
+    for block in plan["blocks"]:
+        x0, x1, z0, z1 = block["rect"]
+        inside = (x > x0 + 0.1) & (x < x1 - 0.1) & (z > z0 + 0.1) & (z < z1 - 0.1)
+        assert not (inside & (y < 0.5)).any(), block
+    assert label.max() == 0 and nav.areas[y > 0.55].sum() > 150.0
