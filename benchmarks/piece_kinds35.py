@@ -69,11 +69,12 @@ def tilt_up_garage_door(panel_at: float = 2.1, deep: float = 2.4) -> SampleLevel
     the lintel, its underside ``panel_at`` m (2.1) up, from the wall's inner face ``deep`` m (2.4) into the garage
     (x 3.6-6.0), over the doorway's width; 0.1 m over the agent's 2.0 m. Known: two, at the floor (y 0): the west
     door, 1.0 m at (-0.3, 3.0), facing west, 2.2 m high; the garage doorway, 2.6 m at its outer face (6.3, 3.0),
-    facing east, 2.4 m high at the face (``panel_at`` m under the panel just inside)."""
+    facing east, 2.4 m high at the face (``panel_at`` m under the panel just inside). With the panel's underside at
+    or under the agent's 2.0 m height the agent cannot pass under it, and the garage doorway is no opening."""
     parts = room(6.0, 6.0, {"W": [(2.5, 3.5, 2.2)], "E": [(1.7, 4.3, 2.4)]})
     parts.append(box(6.0 - deep, 6.0, panel_at, panel_at + 0.05, 1.7, 4.3))
-    return _level("tilt_up_garage_door", parts,
-                  [_opening((-0.3, 0.0, 3.0), _W, 1.0), _opening((6.3, 0.0, 3.0), _E, 2.6)])
+    garage = [_opening((6.3, 0.0, 3.0), _E, 2.6)] if panel_at > 2.0 else []
+    return _level("tilt_up_garage_door", parts, [_opening((-0.3, 0.0, 3.0), _W, 1.0)] + garage)
 
 
 def chicane_barrier_end(barrier: float = 1.1) -> SampleLevel:
@@ -168,5 +169,39 @@ KINDS = kinds_by_name(gutter_inside_doorway, stair_to_high_door, tilt_up_garage_
 """Kind name -> factory of the thirty-fifth round."""
 
 
+def deep_gutter_doorway() -> SampleLevel:
+    """Probe: ``gutter_inside_doorway`` with the gutter 0.35 m wide (x 7.65-8.0) and 1.0 m deep, its bottom beyond the
+    0.4 m climb: the agent steps over a slot narrower than itself (0.8 m across) at the floor's height, so the
+    known openings are the kind's two, 1.6 m each at (-0.3, 3.0) and (8.3, 3.0), at y 0."""
+    return gutter_inside_doorway(width=0.35, depth=1.0)
+
+
+def low_panel_garage() -> SampleLevel:
+    """Probe: ``tilt_up_garage_door`` with the open panel's underside 1.9 m up, under the agent's 2.0 m: known, one,
+    the west door, 1.0 m at (-0.3, 3.0) at y 0, facing west; not the garage doorway (the agent cannot stand under
+    the panel that fills its inside 2.4 m deep)."""
+    return tilt_up_garage_door(panel_at=1.9)
+
+
+def shallow_tread_high_door() -> SampleLevel:
+    """Probe: ``stair_to_high_door`` of 8 risers of 0.2 m on 0.25 m treads (x 6.0-8.0), the door's sill 1.6 m up,
+    its top tread 0.25 m deep, less than the agent's 0.4 m radius: known, two, the west doorway, 1.6 m at (-0.3,
+    3.0) at y 0, and the high door, 1.2 m at (8.3, 5.4) at y 1.6, facing east (the sill through the wall, 0.3 m,
+    and the top tread make 0.55 m of level floor before the door's outer face)."""
+    return stair_to_high_door(steps=8, tread=0.25)
+
+
+def thinner_partition_office() -> SampleLevel:
+    """Probe: ``stud_partition_office`` with partitions 0.02 m thick and 0.85 m doors, 0.05 m wider than the agent:
+    known, two, 0.85 m each at (-0.02, 1.425) facing west and (10.02, 1.425) facing east, at y 0."""
+    return stud_partition_office(thin=0.02, door=0.85)
+
+
+PROBES = kinds_by_name(deep_gutter_doorway, low_panel_garage, shallow_tread_high_door, thinner_partition_office)
+"""Kind name -> factory of the variants built to look for the kinds' limits (``--probes``; not the round's kinds)."""
+
+
 if __name__ == "__main__":
-    sys.exit(run_kinds(sys.argv[1:], kinds=KINDS, description=__doc__.splitlines()[0]))
+    probes = "--probes" in sys.argv[1:]
+    sys.exit(run_kinds([a for a in sys.argv[1:] if a != "--probes"], kinds=PROBES if probes else KINDS,
+                       description=__doc__.splitlines()[0]))
