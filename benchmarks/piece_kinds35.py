@@ -87,7 +87,8 @@ def chicane_barrier_end(barrier: float = 1.1) -> SampleLevel:
     parts = [box(0.0, 12.0, -SLAB, 0.0, -0.3, 2.7), box(0.0, 12.0, -SLAB, 3.0, -0.3, 0.0),
              box(0.0, 12.0, -SLAB, 3.0, 2.4, 2.7),
              box(7.95, 8.05, 0.0, barrier, 0.0, 1.4), box(9.45, 9.55, 0.0, barrier, 1.0, 2.4)]
-    return _level("chicane_barrier_end", parts, [_opening((0.0, 0.0, 1.2), _W, 2.4), _opening((12.0, 0.0, 1.2), _E, 2.4)])
+    return _level("chicane_barrier_end", parts,
+                  [_opening((0.0, 0.0, 1.2), _W, 2.4), _opening((12.0, 0.0, 1.2), _E, 2.4)])
 
 
 def cell_block_corridor(pitch: float = 0.15, bar: float = 0.04) -> SampleLevel:
