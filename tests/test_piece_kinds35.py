@@ -1,7 +1,7 @@
 """Pieces of the thirty-fifth round (``benchmarks/piece_kinds35.py``) on the map-piece presets.
 
 The round's eight kinds gave their known openings and nothing else on both routes at 0, 22 and 45 degrees; these
-hold three of them whose openings a rule could lose: a door whose sill is flush with a flight's top tread (no landing),
+hold two of them whose openings a rule could lose: a door whose sill is flush with a flight's top tread (no landing),
 and a garage whose tilt-up door lies open inside as a panel, a doorway when the panel is over the agent's height and
 none under it (docs/entry_exit.md, "A thirty-fifth round of piece kinds").
 """
