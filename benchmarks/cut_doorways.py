@@ -10,9 +10,10 @@ run x -0.3 to 7.9 - g and x 7.9 to 8.3, nothing under the gap. On the sampling r
 narrower than the builder's ``step_gap`` (its default, the agent's climb: 0.4 m), so the floor goes on across it:
 known, the two doorways (1.6 m at (-0.3, 3.0) facing west and at (8.3, 3.0) facing east), at g 0 to 0.35. At 0.45
 the gap is wider than the step gap and the east doorway lies beyond a slot the agent does not cross (the strip past
-the gap, 0.1 m clear of the wall, holds no floor the agent stands on): the known openings are the same two, which the
-table then scores as the designer built them (see docs/map_pieces.md, "A room cut inside its doorway"). Built with
-:mod:`piece_parts`, in the earlier rounds' conventions.
+the gap, 0.1 m clear of the wall, holds no floor the agent stands on); the known openings stay the two the designer
+built, so the table's score is read with the openings listed (``--detail``): a designer should see the west doorway
+alone there, and both routes show the gap's edge as a 5-6 m opening instead (docs/entry_exit.md, "A room cut inside
+its doorway (7 December 2026)"). Built with :mod:`piece_parts`, in the earlier rounds' conventions.
 """
 
 from __future__ import annotations
