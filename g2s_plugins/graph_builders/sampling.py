@@ -1311,7 +1311,6 @@ def build_sampled_graph(
         "connect_radius": connect,
         "gap_radius": gap,
         "clearance": clearance,
-        "step_gap": agent.step_gap,  # the entry_exit selector's floor-end search steps over what the graph does
         "ray_backend": caster.backend,
         "surface_faces": int(len(surface.faces)),
         "surface_area": float(surface.area) if len(surface.faces) else 0.0,

@@ -182,7 +182,7 @@ from g2s_core.config import AgentConfig
 from g2s_core.errors import PluginError
 from g2s_core.model import NavMesh, Opening, RunContext, Terminals
 from g2s_core.plugin import PluginParams, hookimpl
-from g2s_plugins._raycasting import UP, RayCaster, ground_across_crack, ground_across_step_gap
+from g2s_plugins._raycasting import UP, RayCaster, ground_across_crack
 from g2s_plugins._surface import on_navmesh
 from g2s_plugins.play_space import PLAY_POINTS, held_polygons, play_space_faces
 from g2s_plugins.terminals._boundary import BoundaryLoop, LoopSamples, boundary_loops, polygon_components, sample_loops
@@ -370,10 +370,9 @@ class _Settings:
     head: float  # height of the head-room rays over the surface: a search step under the agent's height
     search: float  # how far beyond the boundary the edge search looks for the surface's end
     farther: float  # how far it looks again from a sample that found no way out (a sampled surface's), else 0
-    step_gap: float  # the sampling builder's step gap, m: the floor goes on across a narrower gap (0: none)
 
 
-def _settings(params: Params, agent: AgentConfig, farther: float | None = None, step_gap: float = 0.0) -> _Settings:
+def _settings(params: Params, agent: AgentConfig, farther: float | None = None) -> _Settings:
     r = float(agent.radius)
     climb = float(agent.max_climb)
     step = float(params.sample_step) if params.sample_step is not None else r / 2.0
@@ -391,7 +390,6 @@ def _settings(params: Params, agent: AgentConfig, farther: float | None = None, 
         head=float(agent.height) - delta,
         search=float(params.edge_search_radii) * r,
         farther=0.0 if farther is None else float(farther),
-        step_gap=float(step_gap),
     )
 
 
@@ -513,10 +511,6 @@ def _surface_ends(
                                         ground[still], s)
         gapped = np.flatnonzero(~across)
         across[gapped], beside[gapped] = over, beyond
-        # ... and, on the sampling route, one in a gap narrower than the builder's step gap, which its graph steps
-        # over: the builder's rule, so that a doorway beyond a cut the graph crosses is seen through it
-        stepped = np.flatnonzero(~across)
-        across[stepped], beside[stepped] = _over_step_gap(caster, probes[rows[stepped]], s.lift + s.climb, s)
         missing[rows] = ~across
         # such a probe stands on the ground beside the crack: the walk down steps goes on from there, not from
         # whatever lies under the crack (a floor below a catwalk's slot)
@@ -557,8 +551,6 @@ def _surface_ends(
             off = np.flatnonzero(~on)
             on[off] = _over_narrow_gap(caster, probe[off], directions[rows[off]], down[rows[off]],
                                        ground_at_end[r, rows[off]], s)[0]
-            off = np.flatnonzero(~on)
-            on[off] = _over_step_gap(caster, probe[off], s.lift + s.climb + drop[r, rows[off]], s)[0]
             low = np.where(on, mid, low)
             high = np.where(on, high, mid)
         edge[rows] = 0.5 * (low + high)
@@ -576,19 +568,6 @@ def _nearest_ground(on: np.ndarray, distance: np.ndarray) -> np.ndarray:
     first = np.minimum.accumulate(np.where(on, np.arange(k)[None, :], k)[:, ::-1], axis=1)[:, ::-1]
     near = np.where(last >= 0, last, first)
     return np.where(near < k, np.take_along_axis(distance, np.minimum(near, k - 1), axis=1), np.nan)
-
-
-def _over_step_gap(
-    caster: RayCaster, probes: np.ndarray, reach: float | np.ndarray, s: _Settings
-) -> tuple[np.ndarray, np.ndarray]:
-    """Which of the (n,3) lifted ``probes`` that found no ground lie in a gap narrower than the sampling builder's
-    step gap (``s.step_gap``; none where 0) between ground within ``reach`` (m, one or (n,)) straight down on both
-    sides, and how far down the nearer side's ground lies ((n,) m, inf where not): the builder's rule
-    (:func:`~g2s_plugins._raycasting.ground_across_step_gap`, by which its walk test and ledge probes step over
-    such a gap), so the floor the terminals search goes on where the graph's does. Up to 160 rays a probe."""
-    if not s.step_gap or not len(probes):
-        return np.zeros(len(probes), dtype=bool), np.full(len(probes), np.inf)
-    return ground_across_step_gap(caster, probes, reach, lambda faces: _walkable(caster, faces, s), s.step_gap)
 
 
 def _over_narrow_gap(
@@ -2166,7 +2145,6 @@ def detect_openings(
     agent: AgentConfig,
     params: Params | None = None,
     edge_search_farther: float | None = None,
-    step_gap: float = 0.0,
 ) -> Detection:
     """Steps 1-6 of the method: the openings of ``mesh`` for ``agent`` on ``surface``, in detection order.
 
@@ -2180,11 +2158,9 @@ def detect_openings(
         edge_search_farther: how far beyond the boundary a sample that finds no floor's end within
             ``edge_search_radii * r`` looks again, m (on a sampled surface, :func:`sampled_edge_search`); ``None``:
             not again.
-        step_gap: on a sampled surface, the sampling builder's step gap, m: the floor's end search goes on across a
-            gap narrower than it, as the builder's graph does (:func:`_over_step_gap`); 0: not.
     """
     params = params if params is not None else Params()
-    s = _settings(params, agent, edge_search_farther, step_gap)
+    s = _settings(params, agent, edge_search_farther)
     loops = boundary_loops(surface.vertices, surface.polygons, surface.neighbours)
     samples = sample_loops(loops, s.step, "agent.radius" if params.sample_step is None else "terminals.params.sample_step",
                            tips=True)
@@ -2429,5 +2405,5 @@ def g2s_select_terminals(graph: nx.Graph, params: Params, context: RunContext) -
         )
     surface = sampled_surface(graph, float(stats["spacing"]))
     search = sampled_edge_search(float(stats["spacing"]), float(stats["clearance"]))
-    detection = detect_openings(mesh, surface, context.agent, params, search, float(stats.get("step_gap") or 0.0))
+    detection = detect_openings(mesh, surface, context.agent, params, search)
     return add_terminals(graph, detection, surface, context.agent)
