@@ -2,23 +2,28 @@
 
 A row of two (or three) slabs 0.3 m thick, each 6 m wide, ``LENGTH`` m long along the row (the middle one of three
 4 m), their tops at ``TOP`` m and, with ``--dh``, every second one ``dh`` m higher, parted by gaps ``width`` m wide
-(between the slabs' faces) over a lower ground ``DROP`` m under the first slab's top (``--under ground``) or over
-nothing (``--under none``). The row is turned ``yaw`` degrees about the vertical through the first gap's middle and
-moved by (s, 0.6 s) m in plan for each shift s (sub-cell moves on Recast's grid). A gap is *joined* when the graph's
-nodes nearest the middles of the two slabs beside it lie in one connected part (the navmesh route: the polygons under
-those points joined through Detour's links; the sampling route: the sampled graph's samples nearest them).
+(between the slabs' faces) over a lower ground ``DROP`` m under the first slab's top (``--under ground``; with
+``--under-depth``, that many m under it instead, each depth a case kind) or over nothing (``--under none``). The row
+is turned ``yaw`` degrees about the vertical through the first gap's middle and moved by (s, 0.6 s) m in plan for
+each shift s (sub-cell moves on Recast's grid). A gap is *joined* when the graph's nodes nearest the middles of the
+two slabs beside it lie in one connected part (the navmesh route: the polygons under those points joined through
+Detour's links; the sampling route: the sampled graph's samples nearest them).
 
 The product rule (issue 9, session 54): a walker steps over a gap narrower than ``step_gap`` between two floors whose
 heights differ by at most the agent's climb, at any angle and place on the grid; a gap at least ``step_gap`` wide is
-never crossed. With a height difference over the climb no gap is crossed.
+never crossed. With a height difference over the climb no gap is crossed. How deep the floor under the gap lies
+does not matter while it is deeper than the climb (review54 MED 2: a floor 0.42-0.5 m down, within the ground
+probes' reach, parted what one 0.52 m or 3 m down joined); a floor within the climb under the slabs is a real step
+down, walked however wide the gap (the agent steps into the channel and out).
 
 Each preset runs its own graph builder (``graph.plugin``: navmesh or sampling) with its ``graph.params`` and agent.
 Per (preset, case kind, width) the table gives how many of the (yaw, shift) cases are joined.
 
 Run: ``.venv/bin/python benchmarks/step_gaps.py [--presets map_analysis map_analysis_sampling]
 [--widths 0.02 0.05 ...] [--yaws 0 10 20 30 45] [--shifts 0 0.08 0.16] [--slabs 2] [--dh 0] [--under ground]
-[--set key=value ...]`` (``--set``: a ``graph.params`` key over the preset's, e.g. ``step_gap=0``; numbers as YAML).
-Several values of ``--slabs``, ``--dh`` and ``--under`` give every combination as case kinds.
+[--under-depth 0.3 0.42 0.45 0.5 0.52 3] [--set key=value ...]`` (``--set``: a ``graph.params`` key over the
+preset's, e.g. ``step_gap=0``; numbers as YAML).
+Several values of ``--slabs``, ``--dh``, ``--under`` and ``--under-depth`` give every combination as case kinds.
 """
 
 from __future__ import annotations
@@ -72,8 +77,10 @@ def slab_spans(width: float, slabs: int) -> list[tuple[float, float]]:
     return spans
 
 
-def level(width: float, slabs: int, dh: float, under: str, yaw: float, shift: float) -> tuple[trimesh.Trimesh, np.ndarray]:
-    """The mesh and the slabs' top middles ((slabs, 3), m), turned and moved."""
+def level(width: float, slabs: int, dh: float, under: str, yaw: float, shift: float,
+          depth: float = DROP) -> tuple[trimesh.Trimesh, np.ndarray]:
+    """The mesh and the slabs' top middles ((slabs, 3), m), turned and moved; the lower ground ``depth`` m under
+    the first slab's top (``under == "ground"``)."""
     s = _Solids()
     spans = slab_spans(width, slabs)
     middles = []
@@ -82,7 +89,7 @@ def level(width: float, slabs: int, dh: float, under: str, yaw: float, shift: fl
         s.box(u0, u1, top - THICK, top, -WIDE, WIDE)
         middles.append([(u0 + u1) / 2, top, 0.0])
     if under == "ground":
-        s.box(spans[0][0] - 1.0, spans[-1][1] + 1.0, TOP - DROP - 0.5, TOP - DROP, -WIDE - 1.0, WIDE + 1.0)
+        s.box(spans[0][0] - 1.0, spans[-1][1] + 1.0, TOP - depth - 0.5, TOP - depth, -WIDE - 1.0, WIDE + 1.0)
     mesh = s.mesh()
     turn = trimesh.transformations.rotation_matrix(math.radians(yaw), (0.0, 1.0, 0.0))
     turn[:3, 3] = [shift, 0.0, 0.6 * shift]
@@ -126,10 +133,15 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--slabs", type=int, nargs="+", default=[2], choices=[2, 3])
     ap.add_argument("--dh", type=float, nargs="+", default=[0.0], help="every second slab this much higher, m")
     ap.add_argument("--under", nargs="+", default=["ground"], choices=["ground", "none"])
+    ap.add_argument("--under-depth", type=float, nargs="+", default=[DROP],
+                    help="how far under the first slab's top the lower ground lies, m (--under ground)")
     ap.add_argument("--set", nargs="*", default=[], metavar="KEY=VALUE", help="graph.params over the preset's")
     ap.add_argument("--cases", action="store_true", help="print every case, not only the table")
     a = ap.parse_args(argv)
     extra = {}
+    if min(a.under_depth) < THICK:
+        print(f"--under-depth: {min(a.under_depth):g}: expected at least the slabs' thickness, {THICK:g} m", file=sys.stderr)
+        return 2
     for item in a.set:
         key, sep, value = item.partition("=")
         if not sep:
@@ -152,13 +164,15 @@ def main(argv: list[str] | None = None) -> int:
               f"graph.params {params}): joined gaps of (yaw, shift) cases, yaws {a.yaws}, shifts {a.shifts}")
         print(f"  {preset} | case kind | " + " | ".join(f"{w:g} m" for w in a.widths) + "   (% joined)")
         started = time.process_time()
-        for slabs, dh, under in itertools.product(a.slabs, a.dh, a.under):
-            kind = f"{slabs} slabs, dh {dh:g} m, over {under}"
+        kinds = [(slabs, dh, under, depth) for slabs, dh, under in itertools.product(a.slabs, a.dh, a.under)
+                 for depth in (a.under_depth if under == "ground" else [DROP])]
+        for slabs, dh, under, depth in kinds:
+            kind = f"{slabs} slabs, dh {dh:g} m, over " + (f"ground {depth:g} m down" if under == "ground" else under)
             cells = []
             for width in a.widths:
                 joined = total = 0
                 for yaw, shift in itertools.product(a.yaws, a.shifts):
-                    mesh, middles = level(width, slabs, dh, under, yaw, shift)
+                    mesh, middles = level(width, slabs, dh, under, yaw, shift, depth)
                     label = parts(mesh, middles, config, params)
                     for k in range(slabs - 1):
                         together = bool(label[k] >= 0 and label[k] == label[k + 1])

@@ -1398,7 +1398,7 @@ def ground_across_crack(
     probes: np.ndarray,
     down: np.ndarray,
     sides: list[np.ndarray],
-    reach: float,
+    reach: float | np.ndarray,
     walkable: Callable[[np.ndarray], np.ndarray],
     steps: tuple[float, ...] = (1.0,),
 ) -> tuple[np.ndarray, np.ndarray]:
@@ -1424,7 +1424,7 @@ def ground_across_crack(
         probes: (n, 3) ray origins, metres.
         down: (3,) or (n, 3) the rays' directions.
         sides: offsets tried in turn, each (3,) or (n, 3), metres: one crack step long.
-        reach: longest ray that finds ground, metres.
+        reach: longest ray that finds ground, metres: one for all, or (n,) one a probe.
         walkable: (m,) hit faces (-1: none) -> (m,) bool, the faces the caller's agent stands on.
         steps: fractions of each side at which its two sides are tried, nearest first.
 
@@ -1444,6 +1444,7 @@ def ground_across_crack(
     n = len(probes)
     down = np.broadcast_to(np.asarray(down, dtype=np.float64), (n, 3))
     offsets = [np.broadcast_to(np.asarray(side, dtype=np.float64), (n, 3)) for side in sides]
+    reach = np.broadcast_to(np.asarray(reach, dtype=np.float64), (n,))
     # metres along down to walkable ground within reach, by side, step, direction (ahead of and behind the side)
     # and probe: inf where the ray found none, or was not cast because the rule did not need it
     along = np.full((len(sides), len(steps), 2, n), np.inf)
@@ -1451,7 +1452,7 @@ def ground_across_crack(
         hits = caster.first_hits_of([(probes + sign * fraction * offset, down) for offset in offsets for fraction in steps
                                      for sign in (1.0, -1.0)])
         face, distance = np.concatenate([hit.face for hit in hits]), np.concatenate([hit.distance for hit in hits])
-        ground = (distance <= reach) & walkable(face)
+        ground = (distance <= np.tile(reach, along.size // max(n, 1))) & walkable(face)
         along.reshape(-1)[ground] = distance[ground]
         caster.rays_cast -= along.size - _rays_needed(along)  # counted as the rule's rays, whatever the batches
     for s, offset in enumerate(offsets if along.size > JOINT_CALL_MAX_RAYS else ()):  # only the rays needed
@@ -1463,7 +1464,7 @@ def ground_across_crack(
             beside = caster.first_hits_of([(probes[looking[k]] + sign * fraction * offset[looking[k]], down[looking[k]])
                                            for k, sign in enumerate((1.0, -1.0))])
             for k, hit in enumerate(beside):
-                ground = (hit.distance <= reach) & walkable(hit.face)
+                ground = (hit.distance <= reach[looking[k]]) & walkable(hit.face)
                 along[s, f, k, looking[k][ground]] = hit.distance[ground]
     return _crack_ground(along)
 
@@ -1526,7 +1527,7 @@ at most ``step_gap / STEP_GAP_SEARCH / 2**STEP_GAP_HALVINGS`` (1.6 mm for a step
 def ground_across_step_gap(
     caster: RayCaster,
     probes: np.ndarray,
-    reach: float,
+    reach: float | np.ndarray,
     walkable: Callable[[np.ndarray], np.ndarray],
     step_gap: float,
 ) -> tuple[np.ndarray, np.ndarray]:
@@ -1554,6 +1555,7 @@ def ground_across_step_gap(
     directions = np.concatenate([STEP_GAP_AXES, -STEP_GAP_AXES])  # axis a: directions a and a + len(STEP_GAP_AXES)
     if n == 0:
         return np.zeros(0, dtype=bool), np.zeros(0)
+    reach = np.broadcast_to(np.asarray(reach, dtype=np.float64), (n,))
     lo = np.zeros((n, len(directions)))
     hi = np.full((n, len(directions)), np.inf)
     down = np.full((n, len(directions)), np.inf)
@@ -1561,7 +1563,7 @@ def ground_across_step_gap(
 
     def cast(rows: np.ndarray, cols: np.ndarray, at: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         hits = caster.first_hits(probes[rows] + at[:, None] * directions[cols], -UP)
-        return (hits.distance <= reach) & walkable(hits.face), hits.distance
+        return (hits.distance <= reach[rows]) & walkable(hits.face), hits.distance
 
     axes = len(STEP_GAP_AXES)
 
@@ -1600,18 +1602,26 @@ def ground_across_step_gap(
 def ground_beside(
     caster: RayCaster,
     probes: np.ndarray,
-    reach: float,
+    reach: float | np.ndarray,
     walkable: Callable[[np.ndarray], np.ndarray],
     agent: AgentShape,
 ) -> tuple[np.ndarray, np.ndarray]:
     """Which probes that found no ground of their own stand on ground beside them, and how far below: over a crack
     (:func:`ground_across_crack` with :func:`crack_sides` and :data:`CRACK_STEPS`), else, with the agent's
     ``step_gap``, in a gap narrower than it (:func:`ground_across_step_gap`). The walk test's and the sampling
-    builder's ledge probes' rule (one rule for both); ``(on, distance)`` as :func:`ground_across_crack`'s."""
+    builder's ledge probes' rule (one rule for both); ``(on, distance)`` as :func:`ground_across_crack`'s.
+
+    With a ``step_gap`` both callers also ask it of the probes whose ground lies more than the agent's climb under
+    the floor they step from (the walk's straight line; a ledge probe's previous probe), with ``reach`` (one or
+    (n,) a probe) ending at that floor plus the climb: a gap narrower than ``step_gap`` is stepped over however
+    deep the floor under it, where a floor 0.42-0.5 m down (deeper than the climb, within the ground probes' reach)
+    kept the probe on it and failed the step rule (review54 MED 2). Ground beyond the climb does not count as a
+    side, so a real step down more than the climb stays a ledge."""
     on, distance = ground_across_crack(caster, probes, -UP, crack_sides(agent), reach, walkable, CRACK_STEPS)
     if agent.step_gap:
         rest = np.flatnonzero(~on)
-        gap, beside = ground_across_step_gap(caster, np.asarray(probes).reshape(-1, 3)[rest], reach, walkable,
+        reach = np.broadcast_to(np.asarray(reach, dtype=np.float64), on.shape)
+        gap, beside = ground_across_step_gap(caster, np.asarray(probes).reshape(-1, 3)[rest], reach[rest], walkable,
                                              agent.step_gap)
         on[rest[gap]] = True
         distance[rest[gap]] = beside[gap]
@@ -1813,11 +1823,23 @@ def walks_in_batch(
     normal_y = caster.scene.normal_y
     least_y = math.cos(math.radians(agent.max_slope_deg)) - 1e-9  # RayCaster.walkable_faces' bound
     reach = lift + agent.max_climb + margin
+
+    def walkable(faces: np.ndarray) -> np.ndarray:
+        return caster.walkable_faces(faces, agent.max_slope_deg)
+
+    # With a step gap, the probes whose ground lies more than the climb under the straight line (in the margin under
+    # it) are asked too: one over a gap narrower than step_gap stands on the nearer side's ground, however deep the
+    # floor under the gap (ground() is asked within the climb first, the last call's ground is the batch's).
+    within_climb = lift + agent.max_climb
+    deep = batch.ground(within_climb, normal_y, least_y) if agent.step_gap else np.zeros(0, dtype=np.int64)
     missing = batch.ground(reach, normal_y, least_y)
     if len(missing):  # a probe over a crack: the one crack rule, the ledge probes' too
-        crack, beside = ground_beside(caster, batch.probe_points(missing), reach,
-                                      lambda faces: caster.walkable_faces(faces, agent.max_slope_deg), agent)
+        crack, beside = ground_beside(caster, batch.probe_points(missing), reach, walkable, agent)
         batch.set_ground(missing[crack], beside[crack])
+    deep = np.setdiff1d(deep, missing, assume_unique=True)
+    if len(deep):
+        over, beside = ground_beside(caster, batch.probe_points(deep), within_climb, walkable, agent)
+        batch.set_ground(deep[over], beside[over])
     knee, head = agent.body
     ok, rise, rows, low, along, side, heights = batch.verdict(
         normal_y, least_y, agent.height, agent.max_climb, agent.tan_slope, HEIGHT_TOLERANCE, max_gap, knee, head, body)

@@ -463,6 +463,11 @@ def agent_fits(
                 crack, beside = ground_beside(cast, origins[missing, k], 2.0 * reach, walkable, agent)
                 distance[missing[crack], k, j] = beside[crack]
                 kept[missing[~crack]] = False
+                if agent.step_gap:  # one over a narrow gap above a floor deeper than the climb: ground_beside's
+                    floor = distance[:, k, j - 1] + agent.max_climb
+                    deep = np.flatnonzero(kept & found[:, k] & (distance[:, k, j] > floor))
+                    over, beside = ground_beside(cast, origins[deep, k], floor[deep], walkable, agent)
+                    distance[deep[over], k, j] = beside[over]
         ground[~kept] = False
         # Between neighbouring probes the ground rises or falls by the walk test's step or slope at most.
         ground &= np.abs(np.diff(distance, axis=2)).max(axis=2) <= around.rise + RISE_TOLERANCE
