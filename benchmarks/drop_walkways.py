@@ -40,11 +40,10 @@ from typing import Any
 import numpy as np
 import trimesh
 from level_kinds import _Solids
-from narrow_gaps import joined
+from narrow_gaps import joined, preset_config
 from scipy.sparse import csgraph, csr_array
 from scipy.spatial import cKDTree
 
-from g2s_core.config import PRESETS_DIR, load_config
 from g2s_core.model import RunContext
 from g2s_plugins.graph_builders import sampling
 from g2s_plugins.recast import NavMesh, RecastParams, build_navmesh
@@ -231,11 +230,9 @@ def main(argv: list[str] | None = None) -> int:
         print("--widths: expected positive widths, m", file=sys.stderr)
         return 2
     for preset in a.presets:
-        path = PRESETS_DIR / f"{preset}.yaml"
-        if not path.is_file():
-            print(f"--presets: {preset}: no such preset ({path.name})", file=sys.stderr)
+        config = preset_config(preset)
+        if config is None:
             return 2
-        config = load_config(path)
         started = time.process_time()
         print(f"## {preset} (route {config.graph.plugin}, agent radius {config.agent.radius:g} m"
               f"{', erosion ' + a.erosion if a.erosion and config.graph.plugin != 'sampling' else ''})")

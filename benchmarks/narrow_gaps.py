@@ -32,7 +32,7 @@ from level_kinds import _Solids
 from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import connected_components
 
-from g2s_core.config import PRESETS_DIR, load_config
+from g2s_core.config import PRESETS_DIR, RunConfig, load_config
 from g2s_plugins.recast import NavMesh, RecastParams, build_navmesh
 
 HIGH = 1.5
@@ -82,6 +82,15 @@ def jamb_distance(points: np.ndarray, angle: float, gap: float, thick: float,
                    for u0, u1 in wall_spans(gap)], axis=0)
 
 
+def preset_config(preset: str) -> RunConfig | None:
+    """The config of the preset named ``preset`` (a `--presets` value), or None after saying on stderr that none is."""
+    path = PRESETS_DIR / f"{preset}.yaml"
+    if not path.is_file():
+        print(f"--presets: {preset}: no such preset ({path.name})", file=sys.stderr)
+        return None
+    return load_config(path)
+
+
 def joined(navmesh: NavMesh, a: np.ndarray, b: np.ndarray) -> bool:
     """Whether points ``a`` and ``b`` (3,) lie on polygons joined through the navmesh's links."""
     n = navmesh.polygon_count
@@ -119,11 +128,9 @@ def main(argv: list[str] | None = None) -> int:
                     help="move the wall by (s, 0.6 s) m for each s: other places of its jambs on the grid")
     a = ap.parse_args(argv)
     for preset in a.presets:
-        path = PRESETS_DIR / f"{preset}.yaml"
-        if not path.is_file():
-            print(f"--presets: {preset}: no such preset ({path.name})", file=sys.stderr)
+        config = preset_config(preset)
+        if config is None:
             return 2
-        config = load_config(path)
         extra = {} if a.erosion is None else {"erosion": a.erosion}
         if extra and "erosion" not in RecastParams.model_fields:
             print("--erosion: this code's graph.params has no erosion", file=sys.stderr)

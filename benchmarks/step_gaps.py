@@ -38,10 +38,10 @@ import numpy as np
 import trimesh
 import yaml
 from level_kinds import _Solids
+from narrow_gaps import preset_config
 from scipy.sparse import coo_matrix, csgraph
 from scipy.spatial import cKDTree
 
-from g2s_core.config import PRESETS_DIR, load_config
 from g2s_plugins._raycasting import AgentShape
 from g2s_plugins.graph_builders import navmesh as navmesh_builder
 from g2s_plugins.graph_builders import sampling
@@ -149,11 +149,9 @@ def main(argv: list[str] | None = None) -> int:
             return 2
         extra[key] = yaml.safe_load(value)
     for preset in a.presets:
-        path = PRESETS_DIR / f"{preset}.yaml"
-        if not path.is_file():
-            print(f"--presets: {preset}: no such preset ({path.name})", file=sys.stderr)
+        config = preset_config(preset)
+        if config is None:
             return 2
-        config = load_config(path)
         params = {**config.graph.params, **extra}
         route = config.graph.plugin
         parts = {"navmesh": parts_navmesh, "sampling": parts_sampling}.get(route)
