@@ -134,7 +134,9 @@ from g2s_core.plugin import hookimpl
 from g2s_plugins._raycasting import (
     COMPASS,
     EPSILON,
+    GRAZE_NUDGE,
     GROUND_MARGIN,
+    CRACK_STEPS,
     UP,
     AgentShape,
     BoxOccupancy,
@@ -145,6 +147,7 @@ from g2s_plugins._raycasting import (
     all_hits_down,
     clear_above,
     closed_solid_holds,
+    crack_sides,
     ground_beside,
     head_room,
     RISE_TOLERANCE,
@@ -234,6 +237,11 @@ class Params(PlaySpaceParams):
         "at most its max climb (the walk test's and the ledge probes' ground); default the agent's max climb (a "
         "stride clears a gap as wide as the step it climbs); 0: only cracks of a quarter of its radius (the paper "
         "presets; docs/sampling.md, Narrow gaps between floors)",
+    )
+    crack_lines: bool = Field(
+        True,
+        description="grid: a grid line through a crack (a grating's slot) takes a point on the floor beside it "
+        "(docs/sampling.md, Grid lines through gratings' slots); false: only floors the line meets",
     )
     gap_radius: float | None = Field(
         None,
@@ -405,20 +413,36 @@ def agent_fits(
     wall_distance = np.full(len(points), np.inf) if clear_of_walls is not None else None
     clear = np.zeros(len(points), dtype=bool)
 
+    ray_reach = clearance if wall_distance is None else wall_reach(clearance)
+
+    def wall_ray(cast: RayCaster, near: np.ndarray, level: float, direction: np.ndarray) -> np.ndarray:
+        """(len(near),) bool: the ray at ``level`` along ``direction`` meets a wall within the clearance."""
+        hits = cast.first_hits(points[near] + level * UP, direction)
+        met = walls_met(cast, hits, agent, ray_reach)
+        wall = met & (hits.distance < clearance)
+        why[near[wall]] = REJECTED_BY.index("wall")
+        if wall_distance is not None:
+            rows = np.flatnonzero(met & ~wall)
+            length, _ = _wall_offsets(cast, hits, rows)
+            kept = near[rows]
+            wall_distance[kept] = np.minimum(wall_distance[kept], length)
+        return wall
+
     def walls(cast: RayCaster, near: np.ndarray) -> None:
         for level in levels:
             for direction in COMPASS:
-                hits = cast.first_hits(points[near] + level * UP, direction)
-                met = walls_met(cast, hits, agent, clearance if wall_distance is None else wall_reach(clearance))
-                wall = met & (hits.distance < clearance)
-                why[near[wall]] = REJECTED_BY.index("wall")
-                if wall_distance is not None:
-                    rows = np.flatnonzero(met & ~wall)
-                    length, _ = _wall_offsets(cast, hits, rows)
-                    kept = near[rows]
-                    wall_distance[kept] = np.minimum(wall_distance[kept], length)
-                near = near[~wall]
-        clear[near] = True
+                near = near[~wall_ray(cast, near, level, direction)]
+        # Between those levels (a belt, a rail, a table's edge): where a steep face crosses a compass ray's
+        # curtain through the body's slab, rays every BODY_RAY_STEP up it find its height.
+        crossed = body_crossed(cast, points[near], agent, ray_reach)
+        still = np.ones(len(near), dtype=bool)
+        for k, direction in enumerate(COMPASS):
+            for level in body_levels(agent):
+                rows = np.flatnonzero(crossed[:, k] & still)
+                if len(rows) == 0:
+                    break
+                still[rows[wall_ray(cast, near[rows], level, direction)]] = False
+        clear[near[still]] = True
 
     _each_batch(caster, walls, _in_batches(near, MAX_WALL_BATCH))
     clear[idx[far]] = True
@@ -479,6 +503,40 @@ def wall_levels(agent: AgentShape) -> list[float]:
     """Heights (m over a ground point, ascending) of :func:`agent_fits`' horizontal wall rays: knee and head (the
     agent's body, :attr:`AgentShape.body`) and waist (half the height)."""
     return sorted({round(level, 6) for level in (*agent.body, 0.5 * agent.height)})
+
+
+BODY_RAY_STEP = 0.025
+"""Metres between the wall rays :func:`agent_fits` casts up a compass direction whose curtain through the agent's
+body a steep face crosses (:func:`body_crossed`): a bar, belt or edge this tall or taller is met by one of them."""
+
+
+def body_levels(agent: AgentShape) -> np.ndarray:
+    """Heights (m over a ground point, ascending) of the wall rays up the agent's body slab
+    (:attr:`~g2s_plugins._raycasting.AgentShape.body`), ``BODY_RAY_STEP`` apart, both ends included."""
+    knee, head = agent.body
+    count = max(1, math.ceil((head - knee) / BODY_RAY_STEP))
+    return knee + (head - knee) * np.arange(count + 1) / count
+
+
+def body_crossed(caster: RayCaster, points: np.ndarray, agent: AgentShape, reach: float) -> np.ndarray:
+    """(n, len(COMPASS)) bool: a triangle steeper than the agent's max slope crosses the vertical curtain from each
+    ground point ``reach`` metres along each compass direction, between the heights of the agent's body slab
+    (:attr:`~g2s_plugins._raycasting.AgentShape.body`): the walk test's slab test
+    (:attr:`~g2s_plugins._raycasting.SteepFaces.slab_grid`, :func:`~g2s_plugins._raycasting.walks_in_batch` with
+    ``body``) on a slab ``GRAZE_NUDGE`` wide. A belt or rail hanging between :func:`wall_levels`' rays is crossed;
+    whether it is a wall is the rays' to say (a riser the agent steps up is not, :func:`walls_met`)."""
+    points = np.asarray(points, dtype=np.float64).reshape(-1, 3)
+    crossed = np.zeros((len(points), len(COMPASS)), dtype=bool)
+    steep = caster.steep_faces(agent.max_slope_deg)
+    if len(points) == 0 or len(steep.triangles) == 0:
+        return crossed
+    count = len(points) * len(COMPASS)
+    low = np.repeat(points, len(COMPASS), axis=0)
+    along = np.tile(COMPASS * reach, (len(points), 1))
+    side = np.tile(np.cross(UP, COMPASS) * (2.0 * GRAZE_NUDGE), (len(points), 1))  # horizontal, at right angles
+    heights = np.tile(np.array(agent.body, dtype=np.float64), (count, 1))
+    return np.asarray(steep.slab_grid.meets(np.ascontiguousarray(low), np.ascontiguousarray(along),
+                                            np.ascontiguousarray(side), heights, GRAZE_NUDGE)).reshape(crossed.shape)
 
 
 def walls_met(caster: RayCaster, hits: Hits, agent: AgentShape, reach: float) -> np.ndarray:
@@ -959,8 +1017,9 @@ def _on_quantum(start: float, spacing: float, count: int) -> np.ndarray:
     return float(np.round(start / GRID_QUANTUM)) * GRID_QUANTUM + steps
 
 
-def _grid_candidates(surface: trimesh.Trimesh, spacing: float) -> tuple[np.ndarray, np.ndarray]:
-    """Points where a regular XZ grid of vertical lines crosses ``surface``: (points, face index)."""
+def _grid_candidates(surface: trimesh.Trimesh, spacing: float, agent: AgentShape | None = None) -> tuple[np.ndarray, np.ndarray]:
+    """Points where a regular XZ grid of vertical lines crosses ``surface``: (points, face index); with ``agent``,
+    also the points of lines through a crack over that agent's floor (:func:`_crack_candidates`)."""
     lo, hi = np.asarray(surface.bounds)
     # inf for a tiny spacing. A footprint a whole number of spacings wide gets that many + 1 lines wherever it
     # lies: 10 km out its width may come out a rounding under (sample:t_junction: 13 x 3 lines at the origin,
@@ -974,13 +1033,104 @@ def _grid_candidates(surface: trimesh.Trimesh, spacing: float) -> tuple[np.ndarr
     z0 = lo[2] + 0.5 * ((hi[2] - lo[2]) - (nz_ - 1) * spacing) + GRID_OFFSET[1] * spacing
     gx, gz = np.meshgrid(_on_quantum(x0, spacing, nx_), _on_quantum(z0, spacing, nz_), indexing="ij")
     xz = np.column_stack([gx.ravel(), gz.ravel()])
-    column, points, faces = all_hits_down(RayCaster(surface), xz, hi[1] + 1.0)
+    caster = RayCaster(surface)
+    column, points, faces = all_hits_down(caster, xz, hi[1] + 1.0)
     if len(points) == 0:
         return points, faces
     # Crossings of one line closer than a centimetre (shared triangle edges) are one point.
     duplicate = np.zeros(len(points), dtype=bool)
     duplicate[1:] = (column[1:] == column[:-1]) & (np.abs(np.diff(points[:, 1])) < EPSILON)
-    return points[~duplicate], faces[~duplicate]
+    column, points, faces = column[~duplicate], points[~duplicate], faces[~duplicate]
+    if agent is not None:
+        more, more_faces = _crack_candidates(caster, xz, (nx_, nz_), column, points, agent, spacing, hi[1] + 1.0)
+        points, faces = np.concatenate([points, more]), np.concatenate([faces, more_faces])
+    return points, faces
+
+
+def _crack_candidates(caster: RayCaster, xz: np.ndarray, shape: tuple[int, int], column: np.ndarray, points: np.ndarray,
+                      agent: AgentShape, spacing: float, top: float) -> tuple[np.ndarray, np.ndarray]:
+    """The grid lines through a crack: (points, face index) on the floor beside lines that met none there.
+
+    A vertical line through a grating's slot meets no bar (the floor below, or nothing), and a whole grid column (bars
+    along z) or row (bars along x) meets bars or slots alike, so a grating got samples in whole columns with columns
+    missing between (docs/analysis_quality.md, the thirty-sixth round's gratings). A line that meets no floor within
+    the climb of a floor met by the lines a crack step (:func:`~g2s_plugins._raycasting.crack_sides`) away on both
+    sides, at half or a whole step (:data:`~g2s_plugins._raycasting.CRACK_STEPS`), along x or z, takes a point on
+    that floor (the higher side's): the ledge probes' and the walk test's crack rule, which the agent checks apply to
+    the point again. Only the lines that lack a floor a neighbouring line has (within the climb or the max slope over
+    the spacing) are asked, round after round from the points added, until no line gains one: a grating with no line
+    on a bar is reached from the floor round it, and on other ground only the lines past a floor's edge are asked
+    (docs/sampling.md, "Grid lines through gratings' slots").
+
+    Eight multiple-hit lines a line asked (2 axes x 2 sides x 2 steps).
+    """
+    nx_, nz_ = shape
+    reach = float(agent.max_rise(spacing))
+    sides = [sign * fraction * axis for axis in crack_sides(agent) for fraction in CRACK_STEPS for sign in (1.0, -1.0)]
+    asked = np.zeros(nx_ * nz_, dtype=bool)
+    known_line, known_y = column, points[:, 1]
+    new_line, new_y = column, points[:, 1]
+    found_points, found_faces = [], []
+    while len(new_line):
+        # Lines next to a line with a floor they lack (nothing of theirs within reach of its height).
+        i, j = np.divmod(new_line, nz_)
+        near, near_y = [], []
+        for di, dj in ((1, 0), (-1, 0), (0, 1), (0, -1)):
+            inside = (i + di >= 0) & (i + di < nx_) & (j + dj >= 0) & (j + dj < nz_)
+            near.append(((i + di) * nz_ + j + dj)[inside])
+            near_y.append(new_y[inside])
+        line, y = np.concatenate(near), np.concatenate(near_y)
+        keep = ~asked[line] & ~_has_floor_near(known_line, known_y, line, y, reach)
+        ask = np.unique(line[keep])
+        if len(ask) == 0:
+            break
+        asked[ask] = True
+        # Each side line's crossings, by the asked line and side.
+        crossings = [all_hits_down(caster, xz[ask] + side[[0, 2]], top) for side in sides]
+        got_line, got_y, got_face = [], [], []
+        for axis in range(2):
+            parts = crossings[4 * axis:4 * axis + 4]  # +half, -half, +whole, -whole steps along this axis
+            ahead = [np.concatenate([parts[0][k], parts[2][k]]) for k in range(3)]
+            behind = [np.concatenate([parts[1][k], parts[3][k]]) for k in range(3)]
+            other = _highest_near(behind[0], behind[1][:, 1], ahead[0], ahead[1][:, 1], GROUND_MARGIN)
+            rows = np.flatnonzero(~np.isnan(other))  # floor on both sides, within the ground margin of each other
+            higher = np.maximum(ahead[1][:, 1], other)  # the higher side's: the one a foot over the crack stands on
+            got_line.append(ahead[0][rows])
+            got_y.append(higher[rows])
+            got_face.append(ahead[2][rows])
+        line, y, face = ask[np.concatenate(got_line)], np.concatenate(got_y), np.concatenate(got_face)
+        order = np.lexsort((-y, line))
+        line, y, face = line[order], y[order], face[order]
+        # One point a floor and line: none within the climb of a floor the line met, nor of the next higher point.
+        fresh = ~_has_floor_near(known_line, known_y, line, y, agent.max_climb)
+        fresh[1:] &= (line[1:] != line[:-1]) | (y[:-1] - y[1:] > agent.max_climb)
+        line, y, face = line[fresh], y[fresh], face[fresh]
+        found_points.append(np.column_stack([xz[line, 0], y, xz[line, 1]]))
+        found_faces.append(face)
+        known_line, known_y = np.concatenate([known_line, line]), np.concatenate([known_y, y])
+        new_line, new_y = line, y
+    if not found_points:
+        return np.zeros((0, 3)), np.zeros(0, dtype=np.int64)
+    return np.concatenate(found_points), np.concatenate(found_faces).astype(np.int64)
+
+
+def _highest_near(known_line: np.ndarray, known_y: np.ndarray, line: np.ndarray, y: np.ndarray, tolerance: float) -> np.ndarray:
+    """(n,) metres: the highest of the heights ``known_y`` of line ``line[i]`` within ``tolerance`` of ``y[i]``
+    (NaN: none). O((k + n) log k)."""
+    if len(known_line) == 0 or len(line) == 0:
+        return np.full(len(line), np.nan)
+    low = min(float(known_y.min()), float(y.min())) - tolerance
+    scale = max(float(known_y.max()), float(y.max())) + tolerance - low + 1.0  # lines' key ranges do not overlap
+    keys = np.sort(known_line * scale + (known_y - low))
+    at = np.searchsorted(keys, line * scale + (y + tolerance - low), side="right") - 1
+    value = keys[np.maximum(at, 0)]
+    near = (at >= 0) & (value >= line * scale + (y - tolerance - low))
+    return np.where(near, value - line * scale + low, np.nan)
+
+
+def _has_floor_near(known_line: np.ndarray, known_y: np.ndarray, line: np.ndarray, y: np.ndarray, tolerance: float) -> np.ndarray:
+    """(n,) bool: line ``line[i]`` has a height of ``known_y`` within ``tolerance`` of ``y[i]``."""
+    return ~np.isnan(_highest_near(known_line, known_y, line, y, tolerance))
 
 
 POISSON_BLOCKS = 16
@@ -1319,7 +1469,7 @@ def build_sampled_graph(
     if params.method == "poisson":
         candidates, faces, candidate_area = _poisson_candidates(surface, spacing, params)
     else:
-        candidates, faces = _grid_candidates(surface, spacing)
+        candidates, faces = _grid_candidates(surface, spacing, agent if params.crack_lines else None)
         candidate_area = 0.0
     lap("candidates")
     rejected = np.zeros(len(candidates), dtype=np.int8)
