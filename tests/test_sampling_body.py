@@ -3,6 +3,8 @@ and lower than half the agent's height (a bollard, a crate, a low wall), under t
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import numpy as np
 import pytest
 import trimesh
@@ -92,3 +94,10 @@ def test_a_riser_the_agent_steps_up_crosses_the_body_slab_but_is_no_wall() -> No
     points = np.array([[0.3 * k + 0.15, 0.3 * k, 0.0] for k in range(1, 6)])
     assert sampling.body_crossed(caster, points, agent, agent.radius).any()
     assert sampling.agent_fits(caster, points, agent, agent.radius).all()
+
+
+def test_the_paper_preset_keeps_its_three_wall_rays() -> None:
+    # body_walls: false (configs/map_analysis_sampling_paper.yaml): a belt at 0.75 m is not seen, as before.
+    agent = replace(AgentShape.from_config(AGENT), body_walls=False)
+    mesh = trimesh.util.concatenate([box((-5, -0.2, -5), (5, 0, 5)), box((-5, 0.7, -0.01), (5, 0.75, 0.01))])
+    assert sampling.agent_fits(RayCaster(mesh), np.array([[0.0, 0.0, 0.2]]), agent, agent.radius).tolist() == [True]

@@ -243,6 +243,12 @@ class Params(PlaySpaceParams):
         description="grid: a grid line through a crack (a grating's slot) takes a point on the floor beside it "
         "(docs/sampling.md, Grid lines through gratings' slots); false: only floors the line meets",
     )
+    body_walls: bool = Field(
+        True,
+        description="the clearance check also finds walls anywhere in the agent's body slab, from over its climb to "
+        "its head (a belt or rail between the knee, waist and head rays), as the edges' walk test does; false: at "
+        "those three rays only (the paper preset; docs/sampling.md, Belts and rails between the wall rays)",
+    )
     gap_radius: float | None = Field(
         None,
         ge=0,
@@ -434,7 +440,9 @@ def agent_fits(
                 near = near[~wall_ray(cast, near, level, direction)]
         # Between those levels (a belt, a rail, a table's edge): where a steep face crosses a compass ray's
         # curtain through the body's slab, rays every BODY_RAY_STEP up it find its height.
-        crossed = body_crossed(cast, points[near], agent, ray_reach)
+        crossed = np.zeros((len(near), len(COMPASS)), dtype=bool)
+        if agent.body_walls:
+            crossed = body_crossed(cast, points[near], agent, ray_reach)
         still = np.ones(len(near), dtype=bool)
         for k, direction in enumerate(COMPASS):
             for level in body_levels(agent):
@@ -1433,7 +1441,8 @@ def build_sampled_graph(
     the graph so that its JSON output stays the same from run to run).
     """
     spacing, connect, clearance, probe_step, gap = _resolve(params, agent)
-    agent = replace(agent, step_gap=agent.max_climb if params.step_gap is None else params.step_gap)
+    agent = replace(agent, step_gap=agent.max_climb if params.step_gap is None else params.step_gap,
+                    body_walls=params.body_walls)
     timings = timings if timings is not None else {}
     clock = time.perf_counter()
 
