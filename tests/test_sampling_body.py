@@ -92,7 +92,7 @@ def test_a_riser_the_agent_steps_up_crosses_the_body_slab_but_is_no_wall() -> No
     mesh = trimesh.util.concatenate([box((-5, -0.2, -1.5), (10, 0, 1.5)), *treads])
     caster = RayCaster(mesh)
     points = np.array([[0.3 * k + 0.15, 0.3 * k, 0.0] for k in range(1, 6)])
-    assert sampling.body_crossed(caster, points, agent, agent.radius).any()
+    assert sampling.curtains_crossed(caster, points, agent, agent.radius, np.array([agent.body])).any()
     assert sampling.agent_fits(caster, points, agent, agent.radius).all()
 
 

@@ -438,18 +438,23 @@ def agent_fits(
         for level in levels:
             for direction in COMPASS:
                 near = near[~wall_ray(cast, near, level, direction)]
-        # Between those levels (a belt, a rail, a table's edge): where a steep face crosses a compass ray's
-        # curtain through the body's slab, rays every BODY_RAY_STEP up it find its height.
-        crossed = np.zeros((len(near), len(COMPASS)), dtype=bool)
-        if agent.body_walls:
-            crossed = body_crossed(cast, points[near], agent, ray_reach)
+        # Between those levels (a belt, a rail): where a steep face crosses a compass ray's curtain through the
+        # body's slab, rays at the ends of the BODY_RAY_STEP bands it crosses find it (a riser the agent steps up
+        # crosses the curtain too and is no wall: the rays' walls_met says so).
         still = np.ones(len(near), dtype=bool)
-        for k, direction in enumerate(COMPASS):
-            for level in body_levels(agent):
-                rows = np.flatnonzero(crossed[:, k] & still)
-                if len(rows) == 0:
-                    break
-                still[rows[wall_ray(cast, near[rows], level, direction)]] = False
+        if agent.body_walls:
+            crossed = curtains_crossed(cast, points[near], agent, ray_reach, np.array([agent.body]))[:, :, 0]
+            levels_up = body_levels(agent)
+            for k, direction in enumerate(COMPASS):
+                rows = np.flatnonzero(crossed[:, k])
+                bands = curtains_crossed(cast, points[near[rows]], agent, ray_reach,
+                                         np.column_stack([levels_up[:-1], levels_up[1:]]), direction[None])[:, 0]
+                at = np.zeros((len(rows), len(levels_up)), dtype=bool)  # (rows, levels): a band next to it is crossed
+                at[:, :-1] |= bands
+                at[:, 1:] |= bands
+                for j, level in enumerate(levels_up):
+                    ask = rows[at[:, j] & still[rows]]
+                    still[ask[wall_ray(cast, near[ask], level, direction)]] = False
         clear[near[still]] = True
 
     _each_batch(caster, walls, _in_batches(near, MAX_WALL_BATCH))
@@ -514,8 +519,9 @@ def wall_levels(agent: AgentShape) -> list[float]:
 
 
 BODY_RAY_STEP = 0.025
-"""Metres between the wall rays :func:`agent_fits` casts up a compass direction whose curtain through the agent's
-body a steep face crosses (:func:`body_crossed`): a bar, belt or edge this tall or taller is met by one of them."""
+"""Metres: the bands of the agent's body slab whose curtains :func:`agent_fits` asks along a compass direction whose
+curtain a steep face crosses (:func:`curtains_crossed`); rays at the ends of each band crossed find a bar, belt or
+edge this tall or taller."""
 
 
 def body_levels(agent: AgentShape) -> np.ndarray:
@@ -526,25 +532,29 @@ def body_levels(agent: AgentShape) -> np.ndarray:
     return knee + (head - knee) * np.arange(count + 1) / count
 
 
-def body_crossed(caster: RayCaster, points: np.ndarray, agent: AgentShape, reach: float) -> np.ndarray:
-    """(n, len(COMPASS)) bool: a triangle steeper than the agent's max slope crosses the vertical curtain from each
-    ground point ``reach`` metres along each compass direction, between the heights of the agent's body slab
-    (:attr:`~g2s_plugins._raycasting.AgentShape.body`): the walk test's slab test
-    (:attr:`~g2s_plugins._raycasting.SteepFaces.slab_grid`, :func:`~g2s_plugins._raycasting.walks_in_batch` with
-    ``body``) on a slab ``GRAZE_NUDGE`` wide. A belt or rail hanging between :func:`wall_levels`' rays is crossed;
-    whether it is a wall is the rays' to say (a riser the agent steps up is not, :func:`walls_met`)."""
+def curtains_crossed(caster: RayCaster, points: np.ndarray, agent: AgentShape, reach: float, heights: np.ndarray,
+                     directions: np.ndarray = COMPASS) -> np.ndarray:
+    """(n, len(directions), len(heights)) bool: a triangle steeper than the agent's max slope crosses the vertical
+    curtain from each ground point ``reach`` metres along each direction, between each pair of ``heights`` ((b, 2) m
+    over the point): the walk test's slab test (:attr:`~g2s_plugins._raycasting.SteepFaces.slab_grid`,
+    :func:`~g2s_plugins._raycasting.walks_in_batch` with ``body``) on a slab ``GRAZE_NUDGE`` wide. With the agent's
+    body slab (:attr:`~g2s_plugins._raycasting.AgentShape.body`) a belt or rail hanging between :func:`wall_levels`'
+    rays is crossed; whether it is a wall is the rays' to say (a riser the agent steps up is not, :func:`walls_met`).
+    One extension call; O(n len(directions) len(heights)) slab tests after the broad phase."""
     points = np.asarray(points, dtype=np.float64).reshape(-1, 3)
-    crossed = np.zeros((len(points), len(COMPASS)), dtype=bool)
+    heights = np.asarray(heights, dtype=np.float64).reshape(-1, 2)
+    shape = (len(points), len(directions), len(heights))
     steep = caster.steep_faces(agent.max_slope_deg)
-    if len(points) == 0 or len(steep.triangles) == 0:
-        return crossed
-    count = len(points) * len(COMPASS)
-    low = np.repeat(points, len(COMPASS), axis=0)
-    along = np.tile(COMPASS * reach, (len(points), 1))
-    side = np.tile(np.cross(UP, COMPASS) * (2.0 * GRAZE_NUDGE), (len(points), 1))  # horizontal, at right angles
-    heights = np.tile(np.array(agent.body, dtype=np.float64), (count, 1))
-    return np.asarray(steep.slab_grid.meets(np.ascontiguousarray(low), np.ascontiguousarray(along),
-                                            np.ascontiguousarray(side), heights, GRAZE_NUDGE)).reshape(crossed.shape)
+    if 0 in shape or len(steep.triangles) == 0:
+        return np.zeros(shape, dtype=bool)
+    low = np.broadcast_to(points[:, None, None, :], (*shape, 3)).reshape(-1, 3)
+    along = np.broadcast_to((directions * reach)[None, :, None, :], (*shape, 3)).reshape(-1, 3)
+    side = np.cross(UP, directions) * (2.0 * GRAZE_NUDGE)  # horizontal, at right angles
+    side = np.broadcast_to(side[None, :, None, :], (*shape, 3)).reshape(-1, 3)
+    band = np.broadcast_to(heights[None, None, :, :], (*shape, 2)).reshape(-1, 2)
+    meets = steep.slab_grid.meets(np.ascontiguousarray(low), np.ascontiguousarray(along), np.ascontiguousarray(side),
+                                  np.ascontiguousarray(band), GRAZE_NUDGE)
+    return np.asarray(meets).reshape(shape)
 
 
 def walls_met(caster: RayCaster, hits: Hits, agent: AgentShape, reach: float) -> np.ndarray:
