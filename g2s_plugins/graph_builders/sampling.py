@@ -10,11 +10,15 @@ wanted. No Recast is involved: ``context.navmesh`` stays ``None``.
 2. *Candidates*: ``method: poisson`` draws dense random points on that
    surface (``candidate_density`` per spacing², fixed seed); ``method: grid``
    drops a regular XZ grid onto it (every floor a vertical line crosses gives
-   a point, so several floors give several samples per grid cell).
+   a point, so several floors give several samples per grid cell; a line
+   through a crack, such as a grating's slot, gives a point on the floor
+   beside it, :func:`_crack_candidates`).
 3. *Agent checks*, batched upward/horizontal/downward rays per candidate:
    head room (nothing within the agent height above it); clearance (no wall
    within ``clearance`` metres, horizontal rays at knee, waist and head
-   height; a riser the agent steps up is no wall, :func:`walls_met`); no
+   height, and up a compass direction whose curtain through the agent's
+   body slab a steep face crosses, :func:`curtains_crossed`; a riser the
+   agent steps up is no wall, :func:`walls_met`); no
    ledge within ``clearance`` (ground found at half that distance and at it
    in 8 directions, rising or falling between neighbouring probes by a step
    or the max slope at most, with head room; a probe over a crack, such as
@@ -89,7 +93,8 @@ the resolved settings and counts (candidates, samples, rays, ...). The same mesh
 
 Cost, for c candidates, s samples and p sample pairs within
 ``connect_radius``: at most 41 rays a candidate (head room; 8 directions at
-up to 3 heights; 8 ledge rays down and 8 up), and 2 or 4 for each ledge probe
+up to 3 heights; 8 ledge rays down and 8 up) and, along a direction whose curtain through the body slab a steep
+face crosses, one at each end of each ``BODY_RAY_STEP`` band it crosses; and 2 or 4 for each ledge probe
 that finds no ground of its own (up to the first that finds none beside it
 either), fewer where
 :class:`_Surroundings` gives the answer; one more upward ray a candidate
@@ -364,8 +369,11 @@ def agent_fits(
 
     Head room above the point; if ``clearance > 0``, no wall within
     ``clearance`` horizontally at knee (max climb + margin), waist (half
-    height) and head (height - margin) levels (a steep face but a riser the
-    agent steps up, :func:`walls_met`), and in 8 directions at half the
+    height) and head (height - margin) levels, and, with the agent's
+    ``body_walls``, at the ends of each ``BODY_RAY_STEP`` band of its body
+    slab whose curtain along a compass ray a steep face crosses
+    (:func:`curtains_crossed`: a belt or rail between those levels) (a steep
+    face but a riser the agent steps up, :func:`walls_met`), and in 8 directions at half the
     clearance and at it (``LEDGE_PROBES``) walkable ground rising or falling
     from the probe before (the point itself the first) by a step or the max
     slope over their distance at most, with head room over the outer one. A
