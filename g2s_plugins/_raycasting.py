@@ -1201,6 +1201,9 @@ class AgentShape:
     step_gap: float | None = None
     """Metres: a probe over a gap narrower than this between walkable ground on both sides stands on the nearer
     side's ground (:func:`ground_beside`); ``None`` or 0: the crack rule alone (:func:`crack_sides`)."""
+    body_walls: bool = True
+    """The sampling builder's clearance check also finds walls between its three wall rays, in the agent's body slab
+    (:attr:`body`; ``sampling.body_crossed``); False: at the three rays only (the paper preset)."""
 
     @classmethod
     def from_config(cls, agent: Any) -> AgentShape:

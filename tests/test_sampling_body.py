@@ -3,11 +3,14 @@ and lower than half the agent's height (a bollard, a crate, a low wall), under t
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import numpy as np
 import pytest
 import trimesh
 
 from g2s_plugins._raycasting import GRAZE_NUDGE, AgentShape, RayCaster, bands_meet_walls, walks_in_batch
+from g2s_plugins.graph_builders import sampling
 from tests.test_sampling_doors import AGENT, box, rooms_joined
 from tests.test_steep_grid import slabs_meet
 
@@ -65,3 +68,36 @@ def test_a_face_meets_the_slab_only_inside_it() -> None:
     for bottom, top, meets in [(0.0, 0.9, False), (0.0, 1.1, True), (2.5, 4.0, False), (2.4, 4.0, True)]:
         post = upright(1.0, 0.0, bottom, top)
         assert slabs_meet(post, origin, rising, side, (0.5, 1.95)).tolist() == [meets]
+
+
+@pytest.mark.parametrize("top", [0.6, 0.75, 0.9, 1.3, 1.7])
+def test_a_belt_hanging_between_the_wall_rays_keeps_the_agent_its_clearance_away(top: float) -> None:
+    # A belt 0.05 m deep and 0.02 m thick whose top hangs ``top`` m over an open floor (round 36's queue hall): the
+    # knee (0.5 m), waist (1.0 m) and head (1.95 m) rays pass over or under most of these, so points 0.2 and 0.4 m
+    # from it fitted; the body's slab (0.5-1.95 m) is crossed and the rays up it meet the belt. 0.6 m off it fits.
+    agent = AgentShape.from_config(AGENT)
+    mesh = trimesh.util.concatenate([box((-5, -0.2, -5), (5, 0, 5)), box((-5, top - 0.05, -0.01), (5, top, 0.01))])
+    points = np.array([[0.0, 0.0, offset] for offset in (0.2, 0.4, 0.6)])
+    rejected = np.zeros(len(points), dtype=np.int8)
+    ok = sampling.agent_fits(RayCaster(mesh), points, agent, agent.radius, rejected=rejected)
+    assert ok.tolist() == [False, False, True]
+    assert [sampling.REJECTED_BY[code] for code in rejected] == ["wall", "wall", "fits"]
+
+
+def test_a_riser_the_agent_steps_up_crosses_the_body_slab_but_is_no_wall() -> None:
+    # A flight of 0.3 m risers on 0.3 m treads: the body's slab from a tread crosses the risers above, and each ray up
+    # it that meets one meets a riser the agent steps up (walls_met), so a point on a tread 1 m wide still fits.
+    agent = AgentShape.from_config(AGENT)
+    treads = [box((0.3 * k, -0.2, -0.5 - 1.0), (10, 0.3 * k, 1.5)) for k in range(8)]
+    mesh = trimesh.util.concatenate([box((-5, -0.2, -1.5), (10, 0, 1.5)), *treads])
+    caster = RayCaster(mesh)
+    points = np.array([[0.3 * k + 0.15, 0.3 * k, 0.0] for k in range(1, 6)])
+    assert sampling.curtains_crossed(caster, points, agent, agent.radius, np.array([agent.body])).any()
+    assert sampling.agent_fits(caster, points, agent, agent.radius).all()
+
+
+def test_the_paper_preset_keeps_its_three_wall_rays() -> None:
+    # body_walls: false (configs/map_analysis_sampling_paper.yaml): a belt at 0.75 m is not seen, as before.
+    agent = replace(AgentShape.from_config(AGENT), body_walls=False)
+    mesh = trimesh.util.concatenate([box((-5, -0.2, -5), (5, 0, 5)), box((-5, 0.7, -0.01), (5, 0.75, 0.01))])
+    assert sampling.agent_fits(RayCaster(mesh), np.array([[0.0, 0.0, 0.2]]), agent, agent.radius).tolist() == [True]

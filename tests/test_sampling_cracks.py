@@ -89,3 +89,39 @@ def test_rejected_names_the_first_check_a_point_failed():
     ok, rejected = fits(mesh, points)
     assert ok.tolist() == [False, False, True, False]
     assert [sampling.REJECTED_BY[code] for code in rejected] == ["head room", "wall", "fits", "ledge"]
+
+
+@pytest.mark.parametrize(("slat", "slot", "degrees"), [(0.03, 0.025, 0.0), (0.03, 0.025, 30.0), (0.04, 0.043, 0.0),
+                                                      (0.04, 0.043, 15.0), (0.04, 0.043, 45.0), (0.05, 0.06, 0.0)])
+def test_every_grid_line_over_a_grating_takes_a_candidate_on_its_bars(slat: float, slot: float, degrees: float):
+    # Round 36's gratings (bars 30-50 mm, gaps 25-60 mm): a line through a slot meets no bar, and before the crack
+    # lines a whole row of lines met slots alike. Slots the crack rule crosses along x or z: every line over the
+    # grating's inside takes a candidate on its top (y = 0), and no other candidate is added.
+    mesh = trimesh.util.concatenate([grating(degrees, slot, slat, size=8.0), box(-6.0, 6.0, -4.7, -4.5, -6.0, 6.0)])
+    surface = sampling.walkable_surface(mesh, AGENT)
+    plain, _ = sampling._grid_candidates(surface, 1.0)
+    with_cracks, _ = sampling._grid_candidates(surface, 1.0, AGENT)
+    lines = np.unique(np.round(with_cracks[:, [0, 2]], 6), axis=0)
+    turn = math.radians(degrees)
+    own = np.column_stack([lines[:, 0] * math.cos(turn) - lines[:, 1] * math.sin(turn),
+                           lines[:, 0] * math.sin(turn) + lines[:, 1] * math.cos(turn)])
+    inside = int((np.abs(own).max(axis=1) < 4.0 - 0.1).sum())
+    on_top = lambda points: int((np.abs(points[:, 1]) < 0.01).sum())
+    assert on_top(plain) < 0.8 * inside
+    assert on_top(with_cracks) >= inside
+    assert len(with_cracks) - len(plain) == on_top(with_cracks) - on_top(plain)
+
+
+@pytest.mark.parametrize(("gap", "bridged"), [(0.1, True), (0.4, False)])
+def test_a_grid_line_in_a_gap_wider_than_a_crack_takes_no_candidate(gap: float, bridged: bool):
+    # Two slabs 10 m in all, apart along x: the grid, centred and moved by its offset, has a column of lines at
+    # x = 0.2549 in the gap, 10 of them over the slabs' z extent. A gap under twice the crack step (0.125 m) is a crack; the ledge probes decide the rest.
+    offset = sampling.GRID_OFFSET[0]
+    mesh = trimesh.util.concatenate([box(-5.0, offset - gap / 2, -0.2, 0.0, -5.0, 5.0),
+                                     box(offset + gap / 2, 5.0, -0.2, 0.0, -5.0, 5.0)])
+    surface = sampling.walkable_surface(mesh, AGENT)
+    plain, _ = sampling._grid_candidates(surface, 1.0)
+    with_cracks, _ = sampling._grid_candidates(surface, 1.0, AGENT)
+    in_gap = lambda points: int((np.abs(points[:, 0] - offset) < gap / 2).sum())
+    assert in_gap(plain) == 0
+    assert in_gap(with_cracks) == (10 if bridged else 0)

@@ -10,11 +10,15 @@ wanted. No Recast is involved: ``context.navmesh`` stays ``None``.
 2. *Candidates*: ``method: poisson`` draws dense random points on that
    surface (``candidate_density`` per spacing², fixed seed); ``method: grid``
    drops a regular XZ grid onto it (every floor a vertical line crosses gives
-   a point, so several floors give several samples per grid cell).
+   a point, so several floors give several samples per grid cell; a line
+   through a crack, such as a grating's slot, gives a point on the floor
+   beside it, :func:`_crack_candidates`).
 3. *Agent checks*, batched upward/horizontal/downward rays per candidate:
    head room (nothing within the agent height above it); clearance (no wall
    within ``clearance`` metres, horizontal rays at knee, waist and head
-   height; a riser the agent steps up is no wall, :func:`walls_met`); no
+   height, and up a compass direction whose curtain through the agent's
+   body slab a steep face crosses, :func:`curtains_crossed`; a riser the
+   agent steps up is no wall, :func:`walls_met`); no
    ledge within ``clearance`` (ground found at half that distance and at it
    in 8 directions, rising or falling between neighbouring probes by a step
    or the max slope at most, with head room; a probe over a crack, such as
@@ -89,7 +93,8 @@ the resolved settings and counts (candidates, samples, rays, ...). The same mesh
 
 Cost, for c candidates, s samples and p sample pairs within
 ``connect_radius``: at most 41 rays a candidate (head room; 8 directions at
-up to 3 heights; 8 ledge rays down and 8 up), and 2 or 4 for each ledge probe
+up to 3 heights; 8 ledge rays down and 8 up) and, along a direction whose curtain through the body slab a steep
+face crosses, one at each end of each ``BODY_RAY_STEP`` band it crosses; and 2 or 4 for each ledge probe
 that finds no ground of its own (up to the first that finds none beside it
 either), fewer where
 :class:`_Surroundings` gives the answer; one more upward ray a candidate
@@ -134,7 +139,9 @@ from g2s_core.plugin import hookimpl
 from g2s_plugins._raycasting import (
     COMPASS,
     EPSILON,
+    GRAZE_NUDGE,
     GROUND_MARGIN,
+    CRACK_STEPS,
     UP,
     AgentShape,
     BoxOccupancy,
@@ -145,6 +152,7 @@ from g2s_plugins._raycasting import (
     all_hits_down,
     clear_above,
     closed_solid_holds,
+    crack_sides,
     ground_beside,
     head_room,
     RISE_TOLERANCE,
@@ -234,6 +242,17 @@ class Params(PlaySpaceParams):
         "at most its max climb (the walk test's and the ledge probes' ground); default the agent's max climb (a "
         "stride clears a gap as wide as the step it climbs); 0: only cracks of a quarter of its radius (the paper "
         "presets; docs/sampling.md, Narrow gaps between floors)",
+    )
+    crack_lines: bool = Field(
+        True,
+        description="grid: a grid line through a crack (a grating's slot) takes a point on the floor beside it "
+        "(docs/sampling.md, Grid lines through gratings' slots); false: only floors the line meets",
+    )
+    body_walls: bool = Field(
+        True,
+        description="the clearance check also finds walls anywhere in the agent's body slab, from over its climb to "
+        "its head (a belt or rail between the knee, waist and head rays), as the edges' walk test does; false: at "
+        "those three rays only (the paper preset; docs/sampling.md, Belts and rails between the wall rays)",
     )
     gap_radius: float | None = Field(
         None,
@@ -350,8 +369,11 @@ def agent_fits(
 
     Head room above the point; if ``clearance > 0``, no wall within
     ``clearance`` horizontally at knee (max climb + margin), waist (half
-    height) and head (height - margin) levels (a steep face but a riser the
-    agent steps up, :func:`walls_met`), and in 8 directions at half the
+    height) and head (height - margin) levels, and, with the agent's
+    ``body_walls``, at the ends of each ``BODY_RAY_STEP`` band of its body
+    slab whose curtain along a compass ray a steep face crosses
+    (:func:`curtains_crossed`: a belt or rail between those levels) (a steep
+    face but a riser the agent steps up, :func:`walls_met`), and in 8 directions at half the
     clearance and at it (``LEDGE_PROBES``) walkable ground rising or falling
     from the probe before (the point itself the first) by a step or the max
     slope over their distance at most, with head room over the outer one. A
@@ -405,20 +427,43 @@ def agent_fits(
     wall_distance = np.full(len(points), np.inf) if clear_of_walls is not None else None
     clear = np.zeros(len(points), dtype=bool)
 
+    ray_reach = clearance if wall_distance is None else wall_reach(clearance)
+
+    def wall_ray(cast: RayCaster, near: np.ndarray, level: float, direction: np.ndarray) -> np.ndarray:
+        """(len(near),) bool: the ray at ``level`` along ``direction`` meets a wall within the clearance."""
+        hits = cast.first_hits(points[near] + level * UP, direction)
+        met = walls_met(cast, hits, agent, ray_reach)
+        wall = met & (hits.distance < clearance)
+        why[near[wall]] = REJECTED_BY.index("wall")
+        if wall_distance is not None:
+            rows = np.flatnonzero(met & ~wall)
+            length, _ = _wall_offsets(cast, hits, rows)
+            kept = near[rows]
+            wall_distance[kept] = np.minimum(wall_distance[kept], length)
+        return wall
+
     def walls(cast: RayCaster, near: np.ndarray) -> None:
         for level in levels:
             for direction in COMPASS:
-                hits = cast.first_hits(points[near] + level * UP, direction)
-                met = walls_met(cast, hits, agent, clearance if wall_distance is None else wall_reach(clearance))
-                wall = met & (hits.distance < clearance)
-                why[near[wall]] = REJECTED_BY.index("wall")
-                if wall_distance is not None:
-                    rows = np.flatnonzero(met & ~wall)
-                    length, _ = _wall_offsets(cast, hits, rows)
-                    kept = near[rows]
-                    wall_distance[kept] = np.minimum(wall_distance[kept], length)
-                near = near[~wall]
-        clear[near] = True
+                near = near[~wall_ray(cast, near, level, direction)]
+        # Between those levels (a belt, a rail): where a steep face crosses a compass ray's curtain through the
+        # body's slab, rays at the ends of the BODY_RAY_STEP bands it crosses find it (a riser the agent steps up
+        # crosses the curtain too and is no wall: the rays' walls_met says so).
+        still = np.ones(len(near), dtype=bool)
+        if agent.body_walls:
+            crossed = curtains_crossed(cast, points[near], agent, ray_reach, np.array([agent.body]))[:, :, 0]
+            levels_up = body_levels(agent)
+            for k, direction in enumerate(COMPASS):
+                rows = np.flatnonzero(crossed[:, k])
+                bands = curtains_crossed(cast, points[near[rows]], agent, ray_reach,
+                                         np.column_stack([levels_up[:-1], levels_up[1:]]), direction[None])[:, 0]
+                at = np.zeros((len(rows), len(levels_up)), dtype=bool)  # (rows, levels): a band next to it is crossed
+                at[:, :-1] |= bands
+                at[:, 1:] |= bands
+                for j, level in enumerate(levels_up):
+                    ask = rows[at[:, j] & still[rows]]
+                    still[ask[wall_ray(cast, near[ask], level, direction)]] = False
+        clear[near[still]] = True
 
     _each_batch(caster, walls, _in_batches(near, MAX_WALL_BATCH))
     clear[idx[far]] = True
@@ -484,6 +529,45 @@ def wall_levels(agent: AgentShape) -> list[float]:
     """Heights (m over a ground point, ascending) of :func:`agent_fits`' horizontal wall rays: knee and head (the
     agent's body, :attr:`AgentShape.body`) and waist (half the height)."""
     return sorted({round(level, 6) for level in (*agent.body, 0.5 * agent.height)})
+
+
+BODY_RAY_STEP = 0.025
+"""Metres: the bands of the agent's body slab whose curtains :func:`agent_fits` asks along a compass direction whose
+curtain a steep face crosses (:func:`curtains_crossed`); rays at the ends of each band crossed find a bar, belt or
+edge this tall or taller."""
+
+
+def body_levels(agent: AgentShape) -> np.ndarray:
+    """Heights (m over a ground point, ascending) of the wall rays up the agent's body slab
+    (:attr:`~g2s_plugins._raycasting.AgentShape.body`), ``BODY_RAY_STEP`` apart, both ends included."""
+    knee, head = agent.body
+    count = max(1, math.ceil((head - knee) / BODY_RAY_STEP))
+    return knee + (head - knee) * np.arange(count + 1) / count
+
+
+def curtains_crossed(caster: RayCaster, points: np.ndarray, agent: AgentShape, reach: float, heights: np.ndarray,
+                     directions: np.ndarray = COMPASS) -> np.ndarray:
+    """(n, len(directions), len(heights)) bool: a triangle steeper than the agent's max slope crosses the vertical
+    curtain from each ground point ``reach`` metres along each direction, between each pair of ``heights`` ((b, 2) m
+    over the point): the walk test's slab test (:attr:`~g2s_plugins._raycasting.SteepFaces.slab_grid`,
+    :func:`~g2s_plugins._raycasting.walks_in_batch` with ``body``) on a slab ``GRAZE_NUDGE`` wide. With the agent's
+    body slab (:attr:`~g2s_plugins._raycasting.AgentShape.body`) a belt or rail hanging between :func:`wall_levels`'
+    rays is crossed; whether it is a wall is the rays' to say (a riser the agent steps up is not, :func:`walls_met`).
+    One extension call; O(n len(directions) len(heights)) slab tests after the broad phase."""
+    points = np.asarray(points, dtype=np.float64).reshape(-1, 3)
+    heights = np.asarray(heights, dtype=np.float64).reshape(-1, 2)
+    shape = (len(points), len(directions), len(heights))
+    steep = caster.steep_faces(agent.max_slope_deg)
+    if 0 in shape or len(steep.triangles) == 0:
+        return np.zeros(shape, dtype=bool)
+    low = np.broadcast_to(points[:, None, None, :], (*shape, 3)).reshape(-1, 3)
+    along = np.broadcast_to((directions * reach)[None, :, None, :], (*shape, 3)).reshape(-1, 3)
+    side = np.cross(UP, directions) * (2.0 * GRAZE_NUDGE)  # horizontal, at right angles
+    side = np.broadcast_to(side[None, :, None, :], (*shape, 3)).reshape(-1, 3)
+    band = np.broadcast_to(heights[None, None, :, :], (*shape, 2)).reshape(-1, 2)
+    meets = steep.slab_grid.meets(np.ascontiguousarray(low), np.ascontiguousarray(along), np.ascontiguousarray(side),
+                                  np.ascontiguousarray(band), GRAZE_NUDGE)
+    return np.asarray(meets).reshape(shape)
 
 
 def walls_met(caster: RayCaster, hits: Hits, agent: AgentShape, reach: float) -> np.ndarray:
@@ -964,8 +1048,9 @@ def _on_quantum(start: float, spacing: float, count: int) -> np.ndarray:
     return float(np.round(start / GRID_QUANTUM)) * GRID_QUANTUM + steps
 
 
-def _grid_candidates(surface: trimesh.Trimesh, spacing: float) -> tuple[np.ndarray, np.ndarray]:
-    """Points where a regular XZ grid of vertical lines crosses ``surface``: (points, face index)."""
+def _grid_candidates(surface: trimesh.Trimesh, spacing: float, agent: AgentShape | None = None) -> tuple[np.ndarray, np.ndarray]:
+    """Points where a regular XZ grid of vertical lines crosses ``surface``: (points, face index); with ``agent``,
+    also the points of lines through a crack over that agent's floor (:func:`_crack_candidates`)."""
     lo, hi = np.asarray(surface.bounds)
     # inf for a tiny spacing. A footprint a whole number of spacings wide gets that many + 1 lines wherever it
     # lies: 10 km out its width may come out a rounding under (sample:t_junction: 13 x 3 lines at the origin,
@@ -979,13 +1064,104 @@ def _grid_candidates(surface: trimesh.Trimesh, spacing: float) -> tuple[np.ndarr
     z0 = lo[2] + 0.5 * ((hi[2] - lo[2]) - (nz_ - 1) * spacing) + GRID_OFFSET[1] * spacing
     gx, gz = np.meshgrid(_on_quantum(x0, spacing, nx_), _on_quantum(z0, spacing, nz_), indexing="ij")
     xz = np.column_stack([gx.ravel(), gz.ravel()])
-    column, points, faces = all_hits_down(RayCaster(surface), xz, hi[1] + 1.0)
+    caster = RayCaster(surface)
+    column, points, faces = all_hits_down(caster, xz, hi[1] + 1.0)
     if len(points) == 0:
         return points, faces
     # Crossings of one line closer than a centimetre (shared triangle edges) are one point.
     duplicate = np.zeros(len(points), dtype=bool)
     duplicate[1:] = (column[1:] == column[:-1]) & (np.abs(np.diff(points[:, 1])) < EPSILON)
-    return points[~duplicate], faces[~duplicate]
+    column, points, faces = column[~duplicate], points[~duplicate], faces[~duplicate]
+    if agent is not None:
+        more, more_faces = _crack_candidates(caster, xz, (nx_, nz_), column, points, agent, spacing, hi[1] + 1.0)
+        points, faces = np.concatenate([points, more]), np.concatenate([faces, more_faces])
+    return points, faces
+
+
+def _crack_candidates(caster: RayCaster, xz: np.ndarray, shape: tuple[int, int], column: np.ndarray, points: np.ndarray,
+                      agent: AgentShape, spacing: float, top: float) -> tuple[np.ndarray, np.ndarray]:
+    """The grid lines through a crack: (points, face index) on the floor beside lines that met none there.
+
+    A vertical line through a grating's slot meets no bar (the floor below, or nothing), and a whole grid column (bars
+    along z) or row (bars along x) meets bars or slots alike, so a grating got samples in whole columns with columns
+    missing between (docs/analysis_quality.md, the thirty-sixth round's gratings). A line that meets no floor within
+    the climb of a floor met by the lines a crack step (:func:`~g2s_plugins._raycasting.crack_sides`) away on both
+    sides, at half or a whole step (:data:`~g2s_plugins._raycasting.CRACK_STEPS`), along x or z, takes a point on
+    that floor (the higher side's): the ledge probes' and the walk test's crack rule, which the agent checks apply to
+    the point again. Only the lines that lack a floor a neighbouring line has (within the climb or the max slope over
+    the spacing) are asked, round after round from the points added, until no line gains one: a grating with no line
+    on a bar is reached from the floor round it, and on other ground only the lines past a floor's edge are asked
+    (docs/sampling.md, "Grid lines through gratings' slots").
+
+    Eight multiple-hit lines a line asked (2 axes x 2 sides x 2 steps).
+    """
+    nx_, nz_ = shape
+    reach = float(agent.max_rise(spacing))
+    sides = [sign * fraction * axis for axis in crack_sides(agent) for fraction in CRACK_STEPS for sign in (1.0, -1.0)]
+    asked = np.zeros(nx_ * nz_, dtype=bool)
+    known_line, known_y = column, points[:, 1]
+    new_line, new_y = column, points[:, 1]
+    found_points, found_faces = [], []
+    while len(new_line):
+        # Lines next to a line with a floor they lack (nothing of theirs within reach of its height).
+        i, j = np.divmod(new_line, nz_)
+        near, near_y = [], []
+        for di, dj in ((1, 0), (-1, 0), (0, 1), (0, -1)):
+            inside = (i + di >= 0) & (i + di < nx_) & (j + dj >= 0) & (j + dj < nz_)
+            near.append(((i + di) * nz_ + j + dj)[inside])
+            near_y.append(new_y[inside])
+        line, y = np.concatenate(near), np.concatenate(near_y)
+        keep = ~asked[line] & ~_has_floor_near(known_line, known_y, line, y, reach)
+        ask = np.unique(line[keep])
+        if len(ask) == 0:
+            break
+        asked[ask] = True
+        # Each side line's crossings, by the asked line and side.
+        crossings = [all_hits_down(caster, xz[ask] + side[[0, 2]], top) for side in sides]
+        got_line, got_y, got_face = [], [], []
+        for axis in range(2):
+            parts = crossings[4 * axis:4 * axis + 4]  # +half, -half, +whole, -whole steps along this axis
+            ahead = [np.concatenate([parts[0][k], parts[2][k]]) for k in range(3)]
+            behind = [np.concatenate([parts[1][k], parts[3][k]]) for k in range(3)]
+            other = _highest_near(behind[0], behind[1][:, 1], ahead[0], ahead[1][:, 1], GROUND_MARGIN)
+            rows = np.flatnonzero(~np.isnan(other))  # floor on both sides, within the ground margin of each other
+            higher = np.maximum(ahead[1][:, 1], other)  # the higher side's: the one a foot over the crack stands on
+            got_line.append(ahead[0][rows])
+            got_y.append(higher[rows])
+            got_face.append(ahead[2][rows])
+        line, y, face = ask[np.concatenate(got_line)], np.concatenate(got_y), np.concatenate(got_face)
+        order = np.lexsort((-y, line))
+        line, y, face = line[order], y[order], face[order]
+        # One point a floor and line: none within the climb of a floor the line met, nor of the next higher point.
+        fresh = ~_has_floor_near(known_line, known_y, line, y, agent.max_climb)
+        fresh[1:] &= (line[1:] != line[:-1]) | (y[:-1] - y[1:] > agent.max_climb)
+        line, y, face = line[fresh], y[fresh], face[fresh]
+        found_points.append(np.column_stack([xz[line, 0], y, xz[line, 1]]))
+        found_faces.append(face)
+        known_line, known_y = np.concatenate([known_line, line]), np.concatenate([known_y, y])
+        new_line, new_y = line, y
+    if not found_points:
+        return np.zeros((0, 3)), np.zeros(0, dtype=np.int64)
+    return np.concatenate(found_points), np.concatenate(found_faces).astype(np.int64)
+
+
+def _highest_near(known_line: np.ndarray, known_y: np.ndarray, line: np.ndarray, y: np.ndarray, tolerance: float) -> np.ndarray:
+    """(n,) metres: the highest of the heights ``known_y`` of line ``line[i]`` within ``tolerance`` of ``y[i]``
+    (NaN: none). O((k + n) log k)."""
+    if len(known_line) == 0 or len(line) == 0:
+        return np.full(len(line), np.nan)
+    low = min(float(known_y.min()), float(y.min())) - tolerance
+    scale = max(float(known_y.max()), float(y.max())) + tolerance - low + 1.0  # lines' key ranges do not overlap
+    keys = np.sort(known_line * scale + (known_y - low))
+    at = np.searchsorted(keys, line * scale + (y + tolerance - low), side="right") - 1
+    value = keys[np.maximum(at, 0)]
+    near = (at >= 0) & (value >= line * scale + (y - tolerance - low))
+    return np.where(near, value - line * scale + low, np.nan)
+
+
+def _has_floor_near(known_line: np.ndarray, known_y: np.ndarray, line: np.ndarray, y: np.ndarray, tolerance: float) -> np.ndarray:
+    """(n,) bool: line ``line[i]`` has a height of ``known_y`` within ``tolerance`` of ``y[i]``."""
+    return ~np.isnan(_highest_near(known_line, known_y, line, y, tolerance))
 
 
 POISSON_BLOCKS = 16
@@ -1288,7 +1464,8 @@ def build_sampled_graph(
     the graph so that its JSON output stays the same from run to run).
     """
     spacing, connect, clearance, probe_step, gap = _resolve(params, agent)
-    agent = replace(agent, step_gap=agent.max_climb if params.step_gap is None else params.step_gap)
+    agent = replace(agent, step_gap=agent.max_climb if params.step_gap is None else params.step_gap,
+                    body_walls=params.body_walls)
     timings = timings if timings is not None else {}
     clock = time.perf_counter()
 
@@ -1324,7 +1501,7 @@ def build_sampled_graph(
     if params.method == "poisson":
         candidates, faces, candidate_area = _poisson_candidates(surface, spacing, params)
     else:
-        candidates, faces = _grid_candidates(surface, spacing)
+        candidates, faces = _grid_candidates(surface, spacing, agent if params.crack_lines else None)
         candidate_area = 0.0
     lap("candidates")
     rejected = np.zeros(len(candidates), dtype=np.int8)
