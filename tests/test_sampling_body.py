@@ -101,3 +101,18 @@ def test_the_paper_preset_keeps_its_three_wall_rays() -> None:
     agent = replace(AgentShape.from_config(AGENT), body_walls=False)
     mesh = trimesh.util.concatenate([box((-5, -0.2, -5), (5, 0, 5)), box((-5, 0.7, -0.01), (5, 0.75, 0.01))])
     assert sampling.agent_fits(RayCaster(mesh), np.array([[0.0, 0.0, 0.2]]), agent, agent.radius).tolist() == [True]
+
+
+@pytest.mark.parametrize(("preset", "seen"), [("map_analysis_sampling", True), ("map_analysis_sampling_paper", False)])
+def test_each_presets_body_walls_reaches_the_clearance_check(preset: str, seen: bool) -> None:
+    # The preset's own params (read from configs/, not written here) through build_sampled_graph: a belt 0.7-0.75 m up
+    # across a 6 x 6 m floor, between the knee and waist rays, keeps the main preset's samples 0.45 m or more off it;
+    # the paper preset (body_walls: false) stands samples under it as before (review55).
+    from g2s_core.config import PRESETS_DIR, load_config
+
+    params = sampling.Params(**{**load_config(PRESETS_DIR / f"{preset}.yaml").graph.params, "method": "grid"})
+    mesh = trimesh.util.concatenate([box((-3, -0.2, -3), (3, 0, 3)), box((-3, 0.7, -0.01), (3, 0.75, 0.01))])
+    graph = sampling.build_sampled_graph(mesh, params, AgentShape.from_config(AGENT))
+    off_belt = np.abs(np.array([graph.nodes[n]["pos"] for n in graph])[:, 2])
+    assert len(off_belt) > 10
+    assert bool((off_belt < 0.45).any()) is not seen
