@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import math
 
+import networkx as nx
 import numpy as np
 import pytest
 import trimesh
@@ -125,3 +126,19 @@ def test_a_grid_line_in_a_gap_wider_than_a_crack_takes_no_candidate(gap: float, 
     in_gap = lambda points: int((np.abs(points[:, 0] - offset) < gap / 2).sum())
     assert in_gap(plain) == 0
     assert in_gap(with_cracks) == (10 if bridged else 0)
+
+
+@pytest.mark.parametrize("depth", [0.45, 0.6, 0.9, 4.5])
+def test_a_grating_bridge_over_a_floor_within_the_max_slope_takes_its_samples(depth: float):
+    # A 10 x 4 m bridge of 50 mm bars and 50 mm slots along x, every grid line through a slot, between two decks
+    # level with it, over a floor `depth` m down. Before the slope of the neighbour's own floor set how far a line's
+    # floor may lie from it, a floor 0.4-1 m under the grating (within the max slope over the spacing) passed for the
+    # grating's own and no line was asked: no samples on the bridge, the decks apart (the review's MED 1).
+    bars = [box(-5.0, 5.0, -0.05, 0.0, z, z + 0.05) for z in np.arange(-2.0, 1.96, 0.1)]
+    decks = [box(-12.0, -5.0, -0.05, 0.0, -2.0, 2.0), box(5.0, 12.0, -0.05, 0.0, -2.0, 2.0)]
+    mesh = trimesh.util.concatenate([*bars, *decks, box(-12.0, 12.0, -depth - 0.2, -depth, -6.0, 6.0)])
+    graph = sampling.build_sampled_graph(mesh, sampling.Params(method="grid"), AGENT)
+    top = [n for n in graph if graph.nodes[n]["pos"][1] > -0.3]
+    on_bridge = [n for n in top if abs(graph.nodes[n]["pos"][0]) < 4.5]
+    assert len(on_bridge) >= 20
+    assert nx.number_connected_components(graph.subgraph(top)) == 1

@@ -1073,13 +1073,13 @@ def _grid_candidates(surface: trimesh.Trimesh, spacing: float, agent: AgentShape
     duplicate[1:] = (column[1:] == column[:-1]) & (np.abs(np.diff(points[:, 1])) < EPSILON)
     column, points, faces = column[~duplicate], points[~duplicate], faces[~duplicate]
     if agent is not None:
-        more, more_faces = _crack_candidates(caster, xz, (nx_, nz_), column, points, agent, spacing, hi[1] + 1.0)
+        more, more_faces = _crack_candidates(caster, xz, (nx_, nz_), column, points, faces, agent, spacing, hi[1] + 1.0)
         points, faces = np.concatenate([points, more]), np.concatenate([faces, more_faces])
     return points, faces
 
 
 def _crack_candidates(caster: RayCaster, xz: np.ndarray, shape: tuple[int, int], column: np.ndarray, points: np.ndarray,
-                      agent: AgentShape, spacing: float, top: float) -> tuple[np.ndarray, np.ndarray]:
+                      faces: np.ndarray, agent: AgentShape, spacing: float, top: float) -> tuple[np.ndarray, np.ndarray]:
     """The grid lines through a crack: (points, face index) on the floor beside lines that met none there.
 
     A vertical line through a grating's slot meets no bar (the floor below, or nothing), and a whole grid column (bars
@@ -1088,30 +1088,38 @@ def _crack_candidates(caster: RayCaster, xz: np.ndarray, shape: tuple[int, int],
     the climb of a floor met by the lines a crack step (:func:`~g2s_plugins._raycasting.crack_sides`) away on both
     sides, at half or a whole step (:data:`~g2s_plugins._raycasting.CRACK_STEPS`), along x or z, takes a point on
     that floor (the higher side's): the ledge probes' and the walk test's crack rule, which the agent checks apply to
-    the point again. Only the lines that lack a floor a neighbouring line has (within the climb or the max slope over
-    the spacing) are asked, round after round from the points added, until no line gains one: a grating with no line
-    on a bar is reached from the floor round it, and on other ground only the lines past a floor's edge are asked
-    (docs/sampling.md, "Grid lines through gratings' slots").
+    the point again. Only the lines that lack a floor a neighbouring line has are asked: within the climb of that
+    floor, or of its own slope over the spacing (at most the max slope's), so that a floor under a flat grating 0.4-1
+    m down does not pass for the grating's own while a ramp's next line is not asked. They are asked round after round
+    from the points added, until no line gains one: a grating with no line on a bar is reached from the floor round
+    it, and on other ground only the lines past a floor's edge are asked (docs/sampling.md, "Grid lines through
+    gratings' slots").
 
     Eight multiple-hit lines a line asked (2 axes x 2 sides x 2 steps).
     """
     nx_, nz_ = shape
-    reach = float(agent.max_rise(spacing))
+    normals = caster.face_normals
+
+    def rise(face: np.ndarray) -> np.ndarray:  # (n,) m: the height a floor of these faces gains over the spacing
+        up = np.clip(np.abs(normals[face, 1]), EPSILON, 1.0)
+        return np.clip(np.sqrt(1.0 - up * up) / up * spacing, agent.max_climb, agent.max_rise(spacing))
+
     sides = [sign * fraction * axis for axis in crack_sides(agent) for fraction in CRACK_STEPS for sign in (1.0, -1.0)]
     asked = np.zeros(nx_ * nz_, dtype=bool)
     known_line, known_y = column, points[:, 1]
-    new_line, new_y = column, points[:, 1]
+    new_line, new_y, new_reach = column, points[:, 1], rise(faces)
     found_points, found_faces = [], []
     while len(new_line):
         # Lines next to a line with a floor they lack (nothing of theirs within reach of its height).
         i, j = np.divmod(new_line, nz_)
-        near, near_y = [], []
+        near, near_y, near_reach = [], [], []
         for di, dj in ((1, 0), (-1, 0), (0, 1), (0, -1)):
             inside = (i + di >= 0) & (i + di < nx_) & (j + dj >= 0) & (j + dj < nz_)
             near.append(((i + di) * nz_ + j + dj)[inside])
             near_y.append(new_y[inside])
+            near_reach.append(new_reach[inside])
         line, y = np.concatenate(near), np.concatenate(near_y)
-        keep = ~asked[line] & ~_has_floor_near(known_line, known_y, line, y, reach)
+        keep = ~asked[line] & ~_has_floor_near(known_line, known_y, line, y, np.concatenate(near_reach))
         ask = np.unique(line[keep])
         if len(ask) == 0:
             break
@@ -1139,19 +1147,21 @@ def _crack_candidates(caster: RayCaster, xz: np.ndarray, shape: tuple[int, int],
         found_points.append(np.column_stack([xz[line, 0], y, xz[line, 1]]))
         found_faces.append(face)
         known_line, known_y = np.concatenate([known_line, line]), np.concatenate([known_y, y])
-        new_line, new_y = line, y
+        new_line, new_y, new_reach = line, y, rise(face)
     if not found_points:
         return np.zeros((0, 3)), np.zeros(0, dtype=np.int64)
     return np.concatenate(found_points), np.concatenate(found_faces).astype(np.int64)
 
 
-def _highest_near(known_line: np.ndarray, known_y: np.ndarray, line: np.ndarray, y: np.ndarray, tolerance: float) -> np.ndarray:
-    """(n,) metres: the highest of the heights ``known_y`` of line ``line[i]`` within ``tolerance`` of ``y[i]``
-    (NaN: none). O((k + n) log k)."""
+def _highest_near(known_line: np.ndarray, known_y: np.ndarray, line: np.ndarray, y: np.ndarray,
+                  tolerance: float | np.ndarray) -> np.ndarray:
+    """(n,) metres: the highest of the heights ``known_y`` of line ``line[i]`` within ``tolerance`` (one, or (n,) one
+    a line) of ``y[i]`` (NaN: none). O((k + n) log k)."""
     if len(known_line) == 0 or len(line) == 0:
         return np.full(len(line), np.nan)
-    low = min(float(known_y.min()), float(y.min())) - tolerance
-    scale = max(float(known_y.max()), float(y.max())) + tolerance - low + 1.0  # lines' key ranges do not overlap
+    widest = float(np.max(tolerance))
+    low = min(float(known_y.min()), float(y.min())) - widest
+    scale = max(float(known_y.max()), float(y.max())) + widest - low + 1.0  # lines' key ranges do not overlap
     keys = np.sort(known_line * scale + (known_y - low))
     at = np.searchsorted(keys, line * scale + (y + tolerance - low), side="right") - 1
     value = keys[np.maximum(at, 0)]
@@ -1159,7 +1169,8 @@ def _highest_near(known_line: np.ndarray, known_y: np.ndarray, line: np.ndarray,
     return np.where(near, value - line * scale + low, np.nan)
 
 
-def _has_floor_near(known_line: np.ndarray, known_y: np.ndarray, line: np.ndarray, y: np.ndarray, tolerance: float) -> np.ndarray:
+def _has_floor_near(known_line: np.ndarray, known_y: np.ndarray, line: np.ndarray, y: np.ndarray,
+                    tolerance: float | np.ndarray) -> np.ndarray:
     """(n,) bool: line ``line[i]`` has a height of ``known_y`` within ``tolerance`` of ``y[i]``."""
     return ~np.isnan(_highest_near(known_line, known_y, line, y, tolerance))
 
