@@ -250,8 +250,8 @@ class Params(PlaySpaceParams):
     )
     body_walls: bool = Field(
         True,
-        description="the clearance check also finds walls anywhere in the agent's body slab, from over its climb to "
-        "its head (a belt or rail between the knee, waist and head rays), as the edges' walk test does; false: at "
+        description="the clearance check also finds walls in the agent's body slab, from over its climb to its head "
+        "(a belt or rail between the knee, waist and head rays, 0.025 m tall or more), as the edges' walk test does; false: at "
         "those three rays only (the paper preset; docs/sampling.md, Belts and rails between the wall rays)",
     )
     gap_radius: float | None = Field(
