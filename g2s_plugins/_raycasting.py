@@ -1203,7 +1203,7 @@ class AgentShape:
     side's ground (:func:`ground_beside`); ``None`` or 0: the crack rule alone (:func:`crack_sides`)."""
     body_walls: bool = True
     """The sampling builder's clearance check also finds walls between its three wall rays, in the agent's body slab
-    (:attr:`body`; ``sampling.body_crossed``); False: at the three rays only (the paper preset)."""
+    (:attr:`body`; ``sampling.curtains_crossed``); False: at the three rays only (the paper preset)."""
 
     @classmethod
     def from_config(cls, agent: Any) -> AgentShape:
