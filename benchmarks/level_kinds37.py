@@ -84,7 +84,8 @@ def skirted_maze(seed: int) -> trimesh.Trimesh:
     panel 0.05 m thick *standing on two legs with a gap of 0.2-0.5 m (drawn per panel) between the floor and its
     lower edge*, its top 2.1-2.4 m up: the floor runs on under every panel. The maze is a depth-first maze over the
     cells (one path between any two cells), a tenth of its other walls left out (loops), entered from the aisle at
-    one cell of its west side and one of its east side. Benches (ridged) in a few cells and along the aisle.
+    one cell of its west side and one of its east side. Benches (ridged) against a panel in a few cells and along the
+    aisle.
 
     Expected (written before the first run): one area for a player (the aisle and every cell of the maze: a
     depth-first maze joins them all), *no way under any panel* (0.2-0.5 m of head room), so a path between two
@@ -112,9 +113,12 @@ def skirted_maze(seed: int) -> trimesh.Trimesh:
         for x, z in ((x0, z0), (x1, z1)):  # the legs at its ends, 0.05 m square, to the floor
             s.box(x - 0.03, x + 0.03, -0.05, panel["gap"] + 0.01, z - 0.03, z + 0.03)
     holes: list[tuple[float, float, float, float]] = []
-    for _ in range(int(rng.integers(12, 18))):  # a bench in a cell, along its south panel, clear of the corridor
+    south_closed = {panel["ends"][0] for panel in plan["panels"] if panel["ends"][0][1] == panel["ends"][1][1]}
+    for _ in range(int(rng.integers(12, 18))):  # a bench in a cell against its south panel (never in an opening)
         c, r = int(rng.integers(cols)), int(rng.integers(rows))
         x, z = ox + c * cell + cell / 2, oz + r * cell + 0.35
+        if (ox + c * cell, oz + r * cell) not in south_closed:
+            continue
         holes.append(_ridged(s, x - 0.6, x + 0.6, z - 0.2, z + 0.2, -0.1, 0.45))
     for x in np.linspace(8.0, size_x - 8.0, 4):  # benches along the aisle's north wall
         holes.append(_ridged(s, float(x) - 1.0, float(x) + 1.0, size_z - 0.85, size_z - 0.45, -0.1, 0.45))
@@ -375,16 +379,17 @@ def tilt_dock(seed: int) -> trimesh.Trimesh:
     rng = np.random.default_rng(seed + 1000)
     length, depth = plan["length"], plan["depth"]
     s = _Solids()
-    s.box(0.0, length, -3.0, 0.0, 0.0, depth)  # the quay
     s.wall((0.0, depth), (length, depth), -0.1, 4.0, [(length / 2 - 2.0, 4.0)], thickness=0.4)
     s.wall((0.0, 0.0), (0.0, depth), -0.1, 4.0, thickness=0.4)
     s.wall((length, 0.0), (length, depth), -0.1, 4.0, thickness=0.4)
     keep = [(p["x"] - 3.0, p["x"] + 3.0, 0.0, 4.0) for p in plan["piers"]]
     spots: list[tuple[np.ndarray, float]] = []
-    for _ in range(int(rng.integers(4, 7))):  # sheds on the quay
+    sheds: list[tuple[float, float, float, float]] = []
+    for _ in range(int(rng.integers(4, 7))):  # sheds on the quay (closed: the quay stops under them)
         p = _placed(rng, spots, 2.0, length - 2.0, 6.0, depth - 1.0, 3.5, keep)
         if p is not None:
-            _ridged(s, p[0] - 3.0, p[0] + 3.0, p[1] - 2.0, p[1] + 2.0, -0.1, 3.0)
+            sheds.append(_ridged(s, p[0] - 3.0, p[0] + 3.0, p[1] - 2.0, p[1] + 2.0, -0.1, 3.0))
+    s.ground(0.0, length, 0.0, depth, 0.0, sheds, thickness=3.0)  # the quay
     for x in np.arange(5.0, length - 2.0, 7.0):  # bollards along the quay's edge, clear of the gangways
         if all(abs(x - p["x"]) > 2.5 for p in plan["piers"]):
             _trunk(s, np.array([float(x), 0.6]), 0.2, -0.1, 0.6)
