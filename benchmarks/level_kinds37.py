@@ -552,7 +552,12 @@ def parapet_roofs(seed: int) -> trimesh.Trimesh:
     cols, rows, (bx, bz), w = plan["grid"]
     size_x, size_z = cols * bx + (cols + 1) * w, rows * bz + (rows + 1) * w
     s = _Solids()
-    s.box(0.0, size_x, 0.0, top, 0.0, size_z)  # the building: its top the walkways'
+    pitched = [(w + b["cell"][0] * (bx + w) + 0.25, w + b["cell"][0] * (bx + w) + bx - 0.25,
+                w + b["cell"][1] * (bz + w) + 0.25, w + b["cell"][1] * (bz + w) + bz - 0.25)
+               for b in plan["bays"] if b["kind"] == "pitched"]
+    # the building, its top the walkways' and terraces', stopping under each pitched roof (a closed body: the top
+    # running on inside it would be floor under the roof's slopes, where they rise over the agent's height)
+    s.ground(0.0, size_x, 0.0, size_z, top, pitched, thickness=top)
     for a, b in (((0.0, 0.0), (size_x, 0.0)), ((0.0, size_z), (size_x, size_z)), ((0.0, 0.0), (0.0, size_z)),
                  ((size_x, 0.0), (size_x, size_z))):
         s.wall(a, b, top - 0.1, top + 1.1, thickness=0.3)

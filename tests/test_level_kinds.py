@@ -1,4 +1,4 @@
-"""The level kinds of rounds 9-36 (``benchmarks/level_kinds.py``, ``level_kinds26.py`` ... ``level_kinds36.py``) build
+"""The level kinds of rounds 9-37 (``benchmarks/level_kinds.py``, ``level_kinds26.py`` ... ``level_kinds37.py``) build
 the levels they describe.
 
 Smoke tests of quick generators (most well under a second each to build and to give a navmesh; the theatre's and
@@ -1979,3 +1979,109 @@ def test_the_canteens_tables_hold_no_floor_under_them_but_the_navmesh_climbs_ont
         inside = (x > x0 + 0.1) & (x < x1 - 0.1) & (z > z0 + 0.1) & (z < z1 - 0.1)
         assert not (inside & (y < 0.5)).any(), block
     assert label.max() == 0 and nav.areas[y > 0.55].sum() > 150.0
+
+
+@pytest.fixture(scope="module")
+def round_37() -> dict[str, Callable[..., trimesh.Trimesh]]:
+    """``benchmarks/level_kinds37.py``'s KINDS (the thirty-seventh round): each call builds its level anew."""
+    return benchmark("level_kinds37").KINDS
+
+
+def test_the_skirted_mazes_panels_are_walls_though_the_floor_runs_under_them(round_37):
+    """Panels standing 0.2-0.5 m over the floor: the maze is one area, and a walk from a cell's middle straight to
+    its neighbour's across a panel is blocked on the navmesh (no way under a panel)."""
+    plan = benchmark("level_kinds37").skirted_maze_plan(0)
+    label, nav = areas(round_37["skirted_maze"](0), DROPS)
+    assert label.max() == 0
+    cols, rows, cell, (ox, oz) = plan["grid"]
+    crossed = 0
+    for panel in plan["panels"][:60]:
+        (x0, z0), (x1, z1) = panel["ends"]
+        mx, mz = (x0 + x1) / 2, (z0 + z1) / 2
+        side = np.array([0.0, cell / 2]) if z0 == z1 else np.array([cell / 2, 0.0])
+        a, b = np.array([mx, mz]) - side, np.array([mx, mz]) + side
+        if not (ox < min(a[0], b[0]) and max(a[0], b[0]) < ox + cols * cell
+                and oz < min(a[1], b[1]) and max(a[1], b[1]) < oz + rows * cell):
+            continue  # a panel of the maze's side: one end in the aisle
+        clear, _ = nav.raycast([a[0], 0.0, a[1]], [b[0], 0.0, b[1]])
+        crossed += bool(clear)
+    assert crossed == 0
+
+
+def test_the_awning_markets_aisle_loses_its_floor_under_awnings_a_little_over_the_agent(round_37):
+    """Head room read in Recast's 0.125 m cells: seed 0's aisle between the rows at z 16.9 and 19.8 m, under awnings
+    whose lower edges hang 2.07 and 2.09 m up (a 2 m agent walks under them) with 0.6 m of open sky between them,
+    has no floor at x 49.5-52.5 m; a stretch under edges of 2.18-2.29 m has (docs/analysis_quality.md, "A
+    thirty-seventh round of level kinds")."""
+    _, nav = areas(round_37["awning_market"](0), DROPS)
+    for x in (50.0, 51.0, 52.0):
+        assert nav.nearest_poly([x, 0.0, 18.37], [0.1, 0.3, 0.1])[0] < 0, x
+    for x in (59.0, 60.0, 61.0):
+        assert nav.nearest_poly([x, 0.0, 18.37], [0.1, 0.3, 0.1])[0] >= 0, x
+
+
+def test_the_arcade_cloisters_closed_garth_is_apart_and_the_open_one_joined(round_37):
+    """A garth behind piers 0.54-0.79 m apart (under the agent's 1 m) is an area apart; one with a side of 1.19 m
+    gaps is joined to the walk on the navmesh (seed 0)."""
+    plan = benchmark("level_kinds37").arcade_cloister_plan(0)
+    label, nav = areas(round_37["arcade_cloister"](0), DROPS)
+    main = int(np.argmax(np.bincount(label, weights=nav.areas)))
+    first, second = ([(g[0] + g[1]) / 2, 0.0, g[2] + 2.0] for g in (c["garth"] for c in plan["cloisters"]))
+    p_first, p_second = (nav.nearest_poly(p, [1.0, 0.5, 1.0])[0] for p in (first, second))
+    assert p_first >= 0 and p_second >= 0
+    assert label[p_first] == main != label[p_second]
+
+
+def test_the_tilt_docks_ramps_and_rolled_pontoons_are_one_area(round_37):
+    """Gangways and ramps of 10-25 degrees, hinge plates of 0.05 m, decks rolled 0-5 degrees: one area, with floor on
+    every head pontoon."""
+    plan = benchmark("level_kinds37").tilt_dock_plan(0)
+    label, nav = areas(round_37["tilt_dock"](0), DROPS)
+    assert label.max() == 0
+    for pier in plan["piers"]:
+        z = pier["z"][0] - pier["head"]["run"] - 3.0
+        assert nav.nearest_poly([pier["x"], pier["head"]["deck"], z], [1.0, 0.5, 1.0])[0] >= 0
+
+
+def test_the_bump_parks_steep_flanked_bumps_do_not_cut_its_aisles(round_37):
+    """Speed bumps 0.08-0.15 m high whose flanks slope up to 60 degrees (over the 45 degree slope): a walk along each
+    aisle's middle over every bump is clear on the navmesh, and the lot is one area."""
+    plan = benchmark("level_kinds37").bump_park_plan(0)
+    label, nav = areas(round_37["bump_park"](0), DROPS)
+    assert label.max() == 0
+    for aisle in plan["aisles"]:
+        z = sum(aisle["z"]) / 2
+        for bump in aisle["bumps"]:
+            clear, _ = nav.raycast([bump["x"] - 2.0, 0.0, z], [bump["x"] + 2.0, 0.0, z])
+            assert clear, bump
+
+
+def test_the_parapet_roofs_parapets_over_the_climb_are_read_within_it(round_37):
+    """Roofs behind parapets: every roof with a parapet under 0.375 m on an eave side is joined to the walkways, every
+    roof with all four over 0.5 m apart, but roofs whose lowest parapet is 0.41-0.48 m (over the agent's 0.4 m climb)
+    are joined too: the climb read in Recast's 0.125 m cells (docs/analysis_quality.md, "A thirty-seventh round of
+    level kinds"; seed 0)."""
+    plan = benchmark("level_kinds37").parapet_roofs_plan(0)
+    label, nav = areas(round_37["parapet_roofs"](0), DROPS)
+    main = int(np.argmax(np.bincount(label, weights=nav.areas)))
+    cols, rows, (bx, bz), w = plan["grid"]
+    over_climb_joined = 0
+    for b in plan["bays"]:
+        if b["kind"] != "pitched":
+            continue
+        c, r = b["cell"]
+        x0, z0 = w + c * (bx + w), w + r * (bz + w)
+        eaves = ("south", "north") if b["along_x"] else ("west", "east")
+        y = plan["height"] + 0.3  # on the roof's slope 0.8 m inside its first eave
+        point = [x0 + bx / 2, y, z0 + 0.8] if b["along_x"] else [x0 + 0.8, y, z0 + bz / 2]
+        poly = nav.nearest_poly(point, [0.6, 1.0, 0.6])[0]
+        assert poly >= 0
+        joined = label[poly] == main
+        lowest = min(b["parapets"].values())
+        if min(b["parapets"][s] for s in eaves) < 0.375:
+            assert joined, b["parapets"]
+        elif lowest > 0.5:
+            assert not joined, b["parapets"]
+        elif lowest > 0.4:
+            over_climb_joined += joined
+    assert over_climb_joined >= 3
