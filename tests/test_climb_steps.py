@@ -33,10 +33,13 @@ def test_a_bench_seat_over_the_climb_is_not_climbed_at_any_alignment(lift):
 
 
 @pytest.mark.parametrize("lift", LIFTS)
-def test_a_step_under_the_climb_is_climbed_at_every_alignment(lift):
+def test_a_step_up_to_the_climb_is_climbed_at_every_alignment(lift):
+    # Recast's 3 cells refused 0.40 m where the floor lies 0.8 of a cell over a boundary (lift 0.1), and a flight of
+    # 0.39 m risers there too (one of its three risers meets that alignment)
     assert climbs("map_analysis", "step", 0.38, lift)
-    assert climbs("map_analysis", "flight", 0.38, lift)
-    assert climbs("map_piece", "step", 0.4, lift)
+    assert climbs("map_analysis", "step", 0.40, lift)
+    assert climbs("map_analysis", "flight", 0.39, lift)
+    assert climbs("map_piece", "step", 0.40, lift)
 
 
 def test_the_paper_reading_stays_recasts():
