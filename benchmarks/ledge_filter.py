@@ -48,8 +48,7 @@ GRIDS: dict[str, tuple[types.SimpleNamespace, dict[str, Any]]] = {
     "map_analysis": (types.SimpleNamespace(radius=0.5, height=2.0, max_climb=0.4, max_slope=45.0),
                      {"climb": "agent"}),
     "map_piece": (types.SimpleNamespace(radius=0.4, height=2.0, max_climb=0.4, max_slope=60.0),
-                  {"cell_size": 0.13333334, "cell_height": 0.025, "detail_sample_max_error": 2.0,
-                   "region_min_size": 6}),
+                  {"cell_size": 0.13333334, "cell_height": 0.05, "region_min_size": 6}),
 }
 """Grid name -> (agent, Recast parameters) of configs/base.yaml + map_analysis.yaml and configs/map_piece.yaml."""
 FILTERS = ("recast", "drops", "off")

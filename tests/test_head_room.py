@@ -35,10 +35,9 @@ def test_a_corridor_under_the_agent_holds_none(preset, lift):
     assert not walks(preset, 1.95, lift)
 
 
-@pytest.mark.parametrize("preset, lift, grid", [("map_piece", 0.0, {"cell_height": 0.05}),
-                                                 ("map_analysis", 0.1, {"climb": "recast"})])
+@pytest.mark.parametrize("preset, lift, grid", [("map_piece", 0.0, {}), ("map_analysis", 0.1, {"climb": "recast"})])
 def test_recasts_own_filter_stays_for_the_paper_preset(preset, lift, grid):
     # `head_room: recast` (map_analysis_paper) keeps the filter as Recast ships it: a cell more than the agent, here
-    # on the grids these presets had before their cells of 0.025 m (docs/navmesh.md, "The climb at every alignment")
+    # on the grid map_analysis had before its cells of 0.025 m (docs/navmesh.md, "The climb at every alignment")
     assert not walks(preset, 2.05, lift, head_room="recast", **grid)
     assert walks(preset, 2.3, lift, head_room="recast", **grid)
