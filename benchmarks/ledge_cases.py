@@ -17,7 +17,8 @@ degrees), Y up, metres, each turned by ``yaw`` degrees about the vertical axis:
   agent (``depth`` under 2 x radius: no place on it where the agent's whole width stands).
 
 For every case the sampling builder runs with the ``map_analysis_sampling`` preset's method (``grid``) and its
-defaults; with ``--navmesh``, the navmesh builder as the ``map_analysis`` preset runs it (``ledge_filter: drops``). Each row prints the samples on the flight or
+defaults; with ``--navmesh``, the navmesh builder as the ``map_analysis``
+preset runs it (``ledge_filter: drops``, ``climb: agent``). Each row prints the samples on the flight or
 the top, whether the graph joins what the known answer says (``ok``) or not (``WRONG``), and the navmesh graph's
 answer beside it as a reference. This is a benchmark: nothing here asserts a target; the figures are in
 docs/sampling.md ("Stairs and narrow ledge tops").
@@ -149,7 +150,8 @@ def main() -> None:
         nav = ""
         if args.navmesh:
             context = RunContext(mesh=mesh, agent=AGENT, centre=mesh.bounds.mean(axis=0))
-            nav_graph = navmesh.g2s_build_graph(mesh=mesh, params=navmesh.Params(ledge_filter="drops"), context=context)
+            params = navmesh.Params(ledge_filter="drops", climb="agent")
+            nav_graph = navmesh.g2s_build_graph(mesh=mesh, params=params, context=context)
             nav = "joined" if joined(nav_graph, middles) else "apart"
         print(f"{kind:6s}  {label:19s}  {yaw:4.0f}  {on:7d}  {'yes' if together else 'no':>6s}"
               f"  {'yes' if expected else 'no':>8s}{' (bare)' if bare else '       '}  {'ok' if right else 'WRONG':>5s}"

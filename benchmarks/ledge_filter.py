@@ -45,7 +45,8 @@ import trimesh
 from g2s_plugins.recast import NavMesh, RecastParams, build_navmesh
 
 GRIDS: dict[str, tuple[types.SimpleNamespace, dict[str, Any]]] = {
-    "map_analysis": (types.SimpleNamespace(radius=0.5, height=2.0, max_climb=0.4, max_slope=45.0), {}),
+    "map_analysis": (types.SimpleNamespace(radius=0.5, height=2.0, max_climb=0.4, max_slope=45.0),
+                     {"climb": "agent"}),
     "map_piece": (types.SimpleNamespace(radius=0.4, height=2.0, max_climb=0.4, max_slope=60.0),
                   {"cell_size": 0.13333334, "cell_height": 0.05, "region_min_size": 6}),
 }

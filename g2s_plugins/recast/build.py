@@ -76,7 +76,6 @@ def build_navmesh(vertices: ArrayLike, faces: ArrayLike, agent: Any, params: Rec
             ("Recast: no walkable polygons ...").
     """
     params = params or RecastParams()
-    settings = resolve_settings(agent, params)
     v = np.asarray(vertices)
     if v.dtype not in (np.float32, np.float64):
         v = v.astype(np.float64)
@@ -91,6 +90,8 @@ def build_navmesh(vertices: ArrayLike, faces: ArrayLike, agent: Any, params: Rec
         raise ValueError(f"Recast: expected (N,3) vertices and (M,3) faces, got {v.shape} and {f.shape}")
     if not np.isfinite(v).all():
         raise ValueError("Recast: vertices must be finite")
+    level_height = float(v[:, 1].max() - v[:, 1].min()) if len(v) else None
+    settings = resolve_settings(agent, params, level_height)
     if len(v):
         check_precision(v, float(voxel_config(settings)["cs"]))
     frame = LocalFrame(np.stack(bounds(v)) if len(v) else v)  # the frame reads only the points' bounds

@@ -10,6 +10,8 @@ Cell size rule (when ``cell_size`` / ``cell_height`` are ``None``)::
     cell_size   = clamp(agent.radius / 2, 0.05, 1.0)
     cell_height = cell_size / 2, capped at agent.max_climb / 2 when max_climb > 0,
                   and at least 0.01
+                  (climb: agent) max_climb / k for the least k that makes it at most CLIMB_BAND
+                  (:func:`climb_cell_height`)
 
 Voxel values are derived in single precision exactly as Recast's demo does
 (:func:`voxel_config`): ``walkableHeight = ceilf(height / ch)`` (at least 3),
@@ -22,6 +24,7 @@ Voxel values are derived in single precision exactly as Recast's demo does
 
 from __future__ import annotations
 
+import math
 from typing import Any, Literal
 
 import numpy as np
@@ -30,7 +33,8 @@ from pydantic_core import PydanticCustomError
 
 from g2s_core.plugin import PluginParams
 
-__all__ = ["RecastParams", "SettingsError", "resolve_settings", "voxel_config", "VOXEL_LIMITS", "MAX_LEVEL_CELLS"]
+__all__ = ["RecastParams", "SettingsError", "climb_cell_height", "resolve_settings", "voxel_config", "VOXEL_LIMITS",
+           "MAX_LEVEL_CELLS"]
 
 MIN_TILE_SIZE = 16
 """Smallest tile side (cells) of a tiled build."""
@@ -47,6 +51,10 @@ generated level builds in about 0.6 µs of CPU a cell (0.9 µs wall on 2 cores),
 
 MAX_SPAN_HEIGHT = (1 << 13) - 1
 """Recast's ``RC_SPAN_MAX_HEIGHT``: the level's height in cell heights."""
+
+CLIMB_BAND = 0.025
+"""``climb: agent``'s coarsest cell height, m: a step up to the agent's climb is climbed and one more than this over
+it is not, wherever the floors lie between cell boundaries (docs/navmesh.md, "The climb at every alignment")."""
 
 VOXEL_LIMITS = {"walkableHeight": 255, "walkableClimb": 255, "walkableRadius": 127, "maxEdgeLen": 46340}
 """Largest voxel values Recast 1.5.1 handles: compact spans store heights in 8
@@ -114,6 +122,16 @@ class RecastParams(PluginParams):
     filter_low_height_spans: bool = Field(
         True, description="Recast's rcFilterWalkableLowHeightSpans: drop spans with less head room than the agent, "
         "in cells (called with one cell less than the agent's height: Recast's own needs a cell more; docs/navmesh.md)"
+    )
+    climb: Literal["agent", "recast"] = Field(
+        "recast",
+        description="recast: the cell height rule above, whose climb of floor(max_climb / cell_height) cells walks "
+        "a step up to a cell height over or under max_climb by where its floors lie between cell boundaries (0.375-"
+        "0.5 m for 0.4 m on 0.125 m cells); agent: when cell_height is None, max_climb / k for the least k that "
+        "makes it at most 0.025 m, so that a step up to max_climb is climbed and none 0.025 m higher, at any "
+        "alignment (coarser where the level's height or the agent's needs it: Recast's spans hold 8191 cells, its "
+        "agent 255); the detail error keeps the metres of Recast's cell height. docs/navmesh.md, The climb at every "
+        "alignment",
     )
     head_room: Literal["agent", "recast"] = Field(
         "agent",
@@ -206,11 +224,39 @@ def voxel_config(settings: dict[str, Any]) -> dict[str, float]:
 _PARAMS = "graph.params."
 
 
-def resolve_settings(agent: Any, params: RecastParams | None = None) -> dict[str, Any]:
+def climb_cell_height(climb: float, height: float, level_height: float | None = None) -> float | None:
+    """The cell height ``climb / k`` (m, a float32 value) for the least whole ``k`` that makes it at most
+    :data:`CLIMB_BAND`, so that Recast's climb of ``floor(climb / ch)`` cells is ``k`` cells, exactly the climb, and
+    a step is climbed up to ``climb`` and refused from ``climb + ch`` whatever the alignment of its floors.
+
+    ``k`` is lowered (the cells made coarser) while the agent's ``height`` would need more than
+    ``VOXEL_LIMITS["walkableHeight"]`` cells or the level's ``level_height`` (m, ``None``: not known) more than
+    :data:`MAX_SPAN_HEIGHT` less two; ``None`` when no ``k`` >= 1 fits, or without a climb.
+    """
+    if not climb > 0:
+        return None
+    k = math.ceil(climb / CLIMB_BAND - 1e-9)
+    # the coarsest cell each limit allows, a millionth over it for float32's rounding of the quotients
+    coarsest = height / VOXEL_LIMITS["walkableHeight"] * (1 + 1e-6)
+    if level_height is not None:
+        coarsest = max(coarsest, level_height / (MAX_SPAN_HEIGHT - 2) * (1 + 1e-6))
+    k = min(k, math.floor(climb / coarsest))
+    if k < 1:
+        return None
+    f = np.float32
+    ch = f(climb / k)
+    while np.floor(f(climb) / ch) < k:  # the extension divides in float32: a cell an ulp finer gives k cells
+        ch = np.nextafter(ch, f(0))
+    return float(ch)
+
+
+def resolve_settings(agent: Any, params: RecastParams | None = None,
+                     level_height: float | None = None) -> dict[str, Any]:
     """The world-unit settings passed to the extension, with the cell sizes resolved.
 
     ``agent`` has ``radius``, ``height``, ``max_climb`` (m) and ``max_slope``
-    (degrees). Returns a dict of the keyword arguments of ``_recast.build``.
+    (degrees); ``level_height`` (m) bounds ``climb: agent``'s cell height (:func:`climb_cell_height`).
+    Returns a dict of the keyword arguments of ``_recast.build``.
 
     Raises:
         SettingsError: a voxel value beyond :data:`VOXEL_LIMITS` (the key blamed
@@ -241,6 +287,12 @@ def resolve_settings(agent: Any, params: RecastParams | None = None) -> dict[str
         if climb > 0:
             ch = min(ch, climb / 2.0)
         ch = max(ch, 0.01)
+    detail_error = float(p.detail_sample_max_error)
+    if p.climb == "agent" and p.cell_height is None:
+        fine = climb_cell_height(climb, height, level_height)
+        if fine is not None and fine < ch:
+            detail_error *= ch / fine  # the detail mesh keeps the error in metres of Recast's cell height
+            ch = fine
     settings = dict(
         cell_size=float(cs),
         cell_height=float(ch),
@@ -254,7 +306,7 @@ def resolve_settings(agent: Any, params: RecastParams | None = None) -> dict[str
         edge_max_error=float(p.edge_max_error),
         verts_per_poly=int(p.verts_per_poly),
         detail_sample_dist=float(p.detail_sample_dist),
-        detail_sample_max_error=float(p.detail_sample_max_error),
+        detail_sample_max_error=detail_error,
         max_cells=int(p.max_cells),
         tile_size=None if p.tile_size is None else int(p.tile_size),
         filter_low_hanging_obstacles=bool(p.filter_low_hanging_obstacles),

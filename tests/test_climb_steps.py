@@ -1,0 +1,84 @@
+"""Steps a little over and under the agent's climb on the navmesh route (docs/navmesh.md, "The climb at every
+alignment"): generated steps of ``benchmarks/climb_steps.py``, the presets' agent (climb 0.4 m) and grids."""
+
+from __future__ import annotations
+
+import pytest
+
+from g2s_core.config import PRESETS_DIR, load_config
+from g2s_plugins.recast import RecastParams, SettingsError, build_navmesh, resolve_settings, voxel_config
+from g2s_plugins.recast.settings import MAX_SPAN_HEIGHT, climb_cell_height
+from tests.conftest import benchmark
+
+climb_steps = benchmark("climb_steps")
+head_room = benchmark("head_room")
+
+LIFTS = (0.0, 0.02, 0.0625, 0.1)
+
+
+def climbs(preset: str, kind: str, h: float, lift: float, **params) -> bool:
+    """Whether the navmesh of ``preset`` (its graph's ``params`` overridden) joins the lower and upper floors of
+    ``kind`` with steps of ``h`` m, its lower floor ``lift`` m over the slabs' underside."""
+    config = load_config(PRESETS_DIR / f"{preset}.yaml")
+    mesh, ends = climb_steps.case_mesh(kind, h, 0.0, lift)
+    return head_room.navmesh_walks(mesh, ends, config.agent, RecastParams(**{**config.graph.params, **params}))
+
+
+@pytest.mark.parametrize("lift", LIFTS)
+def test_a_bench_seat_over_the_climb_is_not_climbed_at_any_alignment(lift):
+    # 0.45 m on 0.125 m cells is 3.6-4.6 cells by where the floor lies; Recast's climb of floor(0.4 / 0.125) = 3
+    # cells refused it only where the two floors rounded 4 cells apart: the canteen's tables over their benches
+    assert not climbs("map_analysis", "step", 0.45, lift)
+    assert not climbs("map_analysis", "table", 0.45, lift)
+
+
+@pytest.mark.parametrize("lift", LIFTS)
+def test_a_step_up_to_the_climb_is_climbed_at_every_alignment(lift):
+    # Recast's 3 cells refused 0.40 m where the floor lies 0.8 of a cell over a boundary (lift 0.1), and a flight of
+    # 0.39 m risers there too (one of its three risers meets that alignment)
+    assert climbs("map_analysis", "step", 0.38, lift)
+    assert climbs("map_analysis", "step", 0.40, lift)
+    assert climbs("map_analysis", "flight", 0.39, lift)
+    assert climbs("map_piece", "step", 0.40, lift)  # 8 cells of 0.05 m: Recast's climb is exact there already
+
+
+def test_the_paper_reading_stays_recasts():
+    # `climb: recast` (map_analysis_paper, graph_only): 0.45 m climbed where the floors round 3 cells apart
+    assert climbs("map_analysis", "step", 0.45, 0.0, climb="recast")
+    assert not climbs("map_analysis", "step", 0.45, 0.1, climb="recast")
+
+
+def test_the_climb_cell_divides_the_climb_in_single_precision():
+    for climb in (0.1, 0.25, 0.3, 0.35, 0.4, 0.45, 0.5, 0.6, 0.75, 1.0):
+        ch = climb_cell_height(climb, 2.0)
+        config = voxel_config(resolve_settings(load_config(PRESETS_DIR / "map_analysis.yaml").agent,
+                                               RecastParams(climb="agent", agent_max_climb=climb)))
+        assert ch <= 0.025 + 1e-9 and float(config["ch"]) == pytest.approx(ch)
+        assert int(config["walkableClimb"]) * ch == pytest.approx(climb, abs=1e-6)
+
+
+def test_a_tall_level_or_agent_gets_coarser_climb_cells():
+    # 1000 m of level in at most 8189 cells: 0.4 / 3 m; an agent of 10 m in at most 255 cells: 0.4 / 10 m
+    assert climb_cell_height(0.4, 2.0, 1000.0) == pytest.approx(0.4 / 3)
+    assert climb_cell_height(0.4, 10.0) == pytest.approx(0.04)
+    assert climb_cell_height(0.4, 2.0, 4000.0) is None  # Recast's reading, as a tall level always had
+    assert climb_cell_height(0.0, 2.0) is None
+
+
+@pytest.mark.parametrize("tall", [300.0, 5000.0])
+def test_a_tall_level_builds_or_is_refused_in_one_line(tall):
+    # a floor and a post `tall` m high: 0.025 m cells would need 12,000 and 200,000 of Recast's 8191; the first is
+    # built on coarser climb cells, the second on none (Recast's own 0.125 m would need 40,000) and is refused
+    mesh, _ = climb_steps.case_mesh("table", 0.3, 0.0, 0.0)
+    post = climb_steps.box(5.0, 5.2, 0.0, tall, 5.0, 5.2)
+    vertices = list(mesh.vertices) + list(post.vertices)
+    faces = list(mesh.faces) + list(post.faces + len(mesh.vertices))
+    config = load_config(PRESETS_DIR / "map_analysis.yaml")
+    params = RecastParams(**config.graph.params)
+    if tall < 1000:
+        nav = build_navmesh(vertices, faces, config.agent, params)
+        assert nav.settings["cell_height"] * MAX_SPAN_HEIGHT >= tall
+        assert nav.settings["cell_height"] < 0.125
+    else:
+        with pytest.raises(SettingsError, match="^mesh: .* cells of 0.125 m tall"):
+            build_navmesh(vertices, faces, config.agent, params)
