@@ -341,7 +341,8 @@ class LowCeiling(NamedTuple):
     gap: float
 
 
-def low_ceiling(caster: RayCaster, closest: Closest, agent: AgentConfig, under: float | None = None) -> LowCeiling | None:
+def low_ceiling(caster: RayCaster, closest: Closest, agent: AgentConfig, under: float | None = None,
+                beside: float = 0.0) -> LowCeiling | None:
     """The ceiling lower than ``under`` (metres; None: the agent's height) that parts two areas on one floor, if one
     does: for the closest of :attr:`Closest.pairs` (nearer first) whose floor runs on between them, the lowest head
     room over it.
@@ -350,19 +351,27 @@ def low_ceiling(caster: RayCaster, closest: Closest, agent: AgentConfig, under: 
     steps on, under a beam or a plank) meets no face, a wall's, and the first face down from it at the middles of
     the stretch between their ground (:func:`stretch_under`) is ground within ``agent.max_climb`` of the two points
     (:func:`grounded`); the head room is how far a ray up from each such ground point (``EPSILON`` over it) goes,
-    and the pair is parted by a ceiling when the least is under ``under``: Recast and the sampling builder
+    and the pair is parted by a ceiling when the least is under ``under`` (and, when that is over the agent's height,
+    not under the agent's height: the head room read as too low is about the agent's height): Recast and the sampling builder
     keep no floor with less head room than ``agent.height``, so the two areas' ground stops either side of it (a
     plank over a channel's bed, a beam across a room), and the navmesh none with less than
-    :func:`navmesh_head_room` on some floors. None when no pair is. 1 + 2 ``GROUND_RAYS`` rays a pair at most.
+    :func:`navmesh_head_room` on some floors. With ``beside`` (metres), the ground that far round each such point
+    (:func:`floor_beside`) is read too. None when no pair is. 1 + 2 ``GROUND_RAYS`` rays a pair at most, 24 times
+    more with ``beside``.
     """
     pairs = closest.pairs
     runs_on, owner, floor, on_ground = floor_between(caster, closest, agent, float(agent.max_climb))
+    if beside > 0:
+        owner, floor, on_ground = floor_beside(caster, closest, agent, owner, floor, on_ground, beside)
     room = np.full(len(floor), np.inf)
     room[on_ground] = caster.first_hits(floor[on_ground] + EPSILON * UP, UP).distance + EPSILON
     lowest = np.full(len(pairs), np.inf)
     np.minimum.at(lowest, owner, room)
     walled = np.bincount(owner, weights=hangs_to_the_floor(caster, floor, room, agent), minlength=len(pairs)) > 0
-    low = runs_on & ~walled & ~has_room(lowest, float(agent.height) if under is None else under)
+    height = float(agent.height)
+    low = runs_on & ~walled & ~has_room(lowest, height if under is None else under)
+    if under is not None and under > height:  # about the agent's height: not over a pair with a table beside it
+        low &= has_room(lowest, height)
     if not low.any():
         return None
     chosen = int(np.argmax(low))  # the first, the closest, under a ceiling
@@ -370,6 +379,23 @@ def low_ceiling(caster: RayCaster, closest: Closest, agent: AgentConfig, under: 
     at = under[int(np.argmin(room[under]))]
     plan = float(np.hypot(*(pairs[chosen, 1] - pairs[chosen, 0])[[0, 2]]))
     return LowCeiling(float(room[at]), floor[at], max(plan - float(closest.reach[chosen].sum()), 0.0))
+
+
+def floor_beside(caster: RayCaster, closest: Closest, agent: AgentConfig, owner: np.ndarray, floor: np.ndarray,
+                 on_ground: np.ndarray, reach: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``(owner, floor, on_ground)`` of :class:`FloorBetween` with, for each ground point, the ground ``reach`` metres
+    from it along the eight :data:`~g2s_plugins._raycasting.COMPASS` headings where nothing lies across at
+    ``agent.max_climb`` over it (the floor runs on to there; not a counter's or wall's side), found and tested as
+    :func:`floor_between`'s: Recast erodes the agent's radius round every cell it keeps no floor on, so an aisle
+    whose middle has open sky is cut by awnings' edges read too low on either side of it. Three rays a heading."""
+    start = np.repeat(floor[on_ground] + float(agent.max_climb) * UP, len(COMPASS), axis=0)
+    heading = np.tile(COMPASS, (int(on_ground.sum()), 1))
+    clear = caster.first_hits(start, heading).distance >= reach
+    near = owner[on_ground].repeat(len(COMPASS))[clear]
+    points = start[clear] + reach * heading[clear]
+    points[:, 1] -= caster.first_hits(points, -UP).distance
+    return (np.concatenate([owner, near]), np.concatenate([floor, points]),
+            np.concatenate([on_ground, grounded(closest, near, points[:, 1], agent)]))
 
 
 def navmesh_head_room(settings: dict) -> float:
@@ -796,7 +822,7 @@ def nearest_cause(closest: Closest, middle: np.ndarray, agent: AgentConfig, mesh
                     f"({float(agent.height):g} m), where their ground lies about {ceiling.gap:.1f} m apart, "
                     f"at ({xyz(ceiling.floor)})")
         if kept_head_room is not None and kept_head_room > float(agent.height) and (
-                ceiling := ceiling_between(caster, closest, seam, agent, kept_head_room)) is not None and (
+                ceiling := ceiling_between(caster, closest, seam, agent, kept_head_room, float(agent.radius))) is not None and (
                 width_across(caster, ceiling.floor[None], agent, float(agent.radius) / 2)[0] >= 2 * float(agent.radius)):
             return (f"head room too low for the navmesh: a ceiling {ceiling.head_room:.2f} m over the floor, about the "
                     f"agent's height: the navmesh needs up to {round(kept_head_room, 4):g} m (agent.height "
@@ -819,10 +845,11 @@ def nearest_cause(closest: Closest, middle: np.ndarray, agent: AgentConfig, mesh
 
 
 def ceiling_between(caster: RayCaster, closest: Closest, seam: Closest | None, agent: AgentConfig,
-                    under: float | None = None) -> LowCeiling | None:
-    """:func:`low_ceiling` under ``under`` of the pairs about as close as the closest, else of the ``seam``'s
-    (:func:`nearest_cause`)."""
-    return low_ceiling(caster, closest, agent, under) or (None if seam is None else low_ceiling(caster, seam, agent, under))
+                    under: float | None = None, beside: float = 0.0) -> LowCeiling | None:
+    """:func:`low_ceiling` under ``under`` (``beside`` as its) of the pairs about as close as the closest, else of the
+    ``seam``'s (:func:`nearest_cause`)."""
+    return (low_ceiling(caster, closest, agent, under, beside)
+            or (None if seam is None else low_ceiling(caster, seam, agent, under, beside)))
 
 
 def shut_in(caster: RayCaster, points: np.ndarray, agent: AgentConfig) -> np.ndarray:
