@@ -56,7 +56,13 @@ under the stretch between them, and a ray up from that ground meets a face
 under the agent's height, the cause is ``head room too low`` with the
 ceiling's height over the floor and the floor's place under it; it is asked
 before the closed-solid rule, whose rays half the agent's height up run
-along a plank's underside 1.0-1.1 m over a bed. *A smaller area nearer*
+along a plank's underside 1.0-1.1 m over a bed. On the navmesh route a
+ceiling at or a little over the agent's height, under what the navmesh's
+height grid needs (:func:`navmesh_head_room`, from its cell height), read
+also the agent's radius round the floor between them (Recast erodes round
+the cells it drops), is named as head room the navmesh reads as too low when
+the floor there is as wide as the agent (docs/analysis_quality.md, "The
+warning's head room a little over the agent"). *A smaller area nearer*
 (:func:`smaller_nearer`): the areas :func:`joined_areas` leaves out are not
 measured for the cause, so a closet behind a thin wall beside the largest
 went unnamed; the nearest of them is named after the cause when it comes
