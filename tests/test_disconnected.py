@@ -365,6 +365,20 @@ def test_a_ceiling_a_little_over_the_agent_is_named_as_the_navmeshs_head_room(pa
     assert "head room" not in disconnected_warning(graph, areas(graph), 2, likely_cause_of(AgentConfig(), mesh=mesh))
 
 
+def test_awnings_either_side_of_an_open_middle_are_named_as_the_navmeshs_head_room():
+    """An aisle whose middle (z 1.7-2.3) is open to the sky between two awnings 2.05 m up (z 0.9-1.7 and 2.3-3.1,
+    x 8-12): Recast keeps no floor under the awnings' cells and erodes the agent's 0.5 m round them, so only a strip
+    of the middle is left either side and the two pieces of aisle are apart, their edges under open sky (the awning
+    market of round 37). Head room read straight up from the floor between them found none; it is read to the
+    agent's radius round it too."""
+    mesh = boxes((-1, 21, -0.3, 0, -1, 5), (8, 12, 2.05, 2.15, 0.9, 1.7), (8, 12, 2.05, 2.15, 2.3, 3.1))
+    navmesh, graph = navmesh_of([(0.5, 8.6, 1.8, 2.2, 0.0), (11.4, 19.5, 1.8, 2.2, 0.0)])
+    message = disconnected_warning(graph, areas(graph), 2, likely_cause_of(AgentConfig(), navmesh, mesh=mesh))
+    assert HEAD_ROOM_TOO_LOW.format("2.125") in message
+    place = np.array(message.rsplit("at (", 1)[1].removesuffix(" m).").split(", "), dtype=float)
+    assert 8 <= place[0] <= 12 and (0.9 <= place[2] <= 1.7 or 2.3 <= place[2] <= 3.1)
+
+
 def sampled_rows(graph: nx.Graph, rows: list[tuple[float, int, int]], z: float = 0.5) -> None:
     """Rows of 1 m samples (``slab``) at height 0 given as (first middle's x, cells, first node), each row joined."""
     for x0, cells, first in rows:
