@@ -99,7 +99,8 @@ area's gap and rise from below), then a k-d tree per area measured (those
 whose bound lies under the answer: :func:`nearest_area`), e = the areas'
 polygon perimeter / ``cell_size`` on the navmesh route, their sample count on
 the sampling route; with the mesh, O(m log m) for its m faces' closed bodies
-and up to 9 rays (18 for the ceiling) for each of at most
+and up to 9 rays (18 for the ceiling; on the navmesh route, 24 more a floor
+point when it asks again for head room about the agent's) for each of at most
 ``MAX_PLACE_CANDIDATES`` pairs, 2 for the gap; the smaller areas as the joined
 ones; floors apart, :func:`way_up`'s l log l for its l <= ``MAX_WAY_UP_COLUMNS``
 lines.
