@@ -4,7 +4,7 @@ Two steps, so that a change to the cause (``g2s_plugins/area_gaps.py``) is measu
 
 ``collect OUT_DIR [--round 50|32]`` runs each level of :data:`WARNINGS` (round 50: the 72 warnings of
 docs/analysis_quality.md "The disconnected-areas warning's nearest area") or of :data:`ROUND_32` (its 18 levels on
-both routes) through the Steiner step (``map_analysis``: navmesh route; ``map_analysis_sampling``: sampling route),
+both routes; round 36-37: :data:`ROUND_36_37`) through the Steiner step (``map_analysis``: navmesh route; ``map_analysis_sampling``: sampling route),
 stops it at the warning and keeps what the cause is measured on (the graph, its areas, the agent, the builder's
 ground and the mesh) in ``OUT_DIR/<level>_<route>.pkl``, with the warning the code of the run gave.
 
@@ -21,7 +21,9 @@ neighbours and head room"), from each area's separation from the largest
   named one (both read at the warning's 0.1 m: :data:`g2s_plugins.area_gaps.READ_AS_EQUAL`), the message names such an
   area (one within 0.1 m of the nearest's distance), and names none when there is none;
 - K2: on round 32's sewer, a named pair whose both ends lie on a channel's bed (under the walkways by 0.9 m or more)
-  is parted by a plank's head room and is named so ("head room too low"); no other message names head room.
+  is parted by a plank's head room and is named so ("head room too low"); round 36's queue hall names head room on the
+  navmesh route (a shop behind a shutter under 2 m; its sampling route's warnings are not judged); round 37's awning market names head room or an awning's top ("separate floors"); no other
+  message names head room.
 
 Run: ``.venv/bin/python benchmarks/disconnected_warnings.py collect OUT_DIR`` (about 4 min on 2 loaded cores; ``--round
 32``: 4 min more), then ``report OUT_DIR --before FILE`` (about 2 min). O(levels x a pipeline run to the Steiner
@@ -45,6 +47,8 @@ from types import ModuleType, SimpleNamespace
 import numpy as np
 from analysis_quality import KINDS, NAV_TEST
 from level_kinds32 import KINDS as ROUND_32_KINDS
+from level_kinds36 import KINDS as ROUND_36_KINDS
+from level_kinds37 import KINDS as ROUND_37_KINDS
 
 from g2s_core import api, pipeline
 from g2s_core.disconnected import area_summary, disconnected_warning
@@ -82,6 +86,11 @@ WARNINGS = [
 
 ROUND_32 = [(f"{kind} s{seed}", route) for kind in ROUND_32_KINDS for seed in range(3) for route in ROUTES]
 """(level, route) of the thirty-second round's 18 levels on both routes (those that warn are kept)."""
+
+ROUND_36_37 = [(f"{kind} s{seed}", route) for kinds in (ROUND_36_KINDS, ROUND_37_KINDS) for kind in kinds
+               for seed in range(3) for route in ROUTES]
+"""(level, route) of the thirty-sixth and thirty-seventh rounds' levels on both routes (those that warn are kept): the
+queue hall's shutter and the awning market's awnings, head room a little over the agent's height."""
 
 NEAR_TIE = 0.1
 """Metres: an area named within this of the nearest's hypot(gap, rise) is as good as the nearest (K1)."""
@@ -187,6 +196,10 @@ def judged(name: str, rows: list[tuple[float, float, float, float, bool]], width
         named = cause.split("; and a smaller area")[0]
         places = [np.array(p.split(", "), dtype=float) for p in re.findall(r"\(([-\d.]+, [-\d.]+, [-\d.]+) m\)", named)]
         k2 = low == (bool(places) and all(p[1] <= -0.9 for p in places))
+    elif name.startswith("queue_hall"):  # round 36: a shop behind a shutter under 2 m on the navmesh route; the
+        k2 = low or name.endswith("_sampling")  # sampling route's (a belt 0.9 m up, a shutter, a wall) not judged
+    elif name.startswith("awning_market"):  # round 37: aisles cut under awnings about 2 m up, or an awning's top
+        k2 = low or "separate floors" in cause
     else:
         k2 = not low
     want = f"{wanted[0]:,.0f} m² hypot {wanted[3]:.1f}"
@@ -229,13 +242,13 @@ def main(argv: list[str] | None = None) -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("step", choices=["collect", "report"])
     parser.add_argument("out", type=Path)
-    parser.add_argument("--round", choices=["50", "32"], default="50", help="collect: which levels")
+    parser.add_argument("--round", choices=["50", "32", "36-37"], default="50", help="collect: which levels")
     parser.add_argument("--before", type=Path, help="report: a copy of another commit's g2s_plugins/area_gaps.py "
                                                     "(git show REV:g2s_plugins/area_gaps.py > FILE) to compare with")
     args = parser.parse_args(argv)
     print(f"load average {os.getloadavg()[0]:.1f}", file=sys.stderr)
     if args.step == "collect":
-        collect(args.out, WARNINGS if args.round == "50" else ROUND_32)
+        collect(args.out, {"50": WARNINGS, "32": ROUND_32, "36-37": ROUND_36_37}[args.round])
     else:
         report(args.out, args.before)
 

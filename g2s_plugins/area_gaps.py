@@ -56,7 +56,13 @@ under the stretch between them, and a ray up from that ground meets a face
 under the agent's height, the cause is ``head room too low`` with the
 ceiling's height over the floor and the floor's place under it; it is asked
 before the closed-solid rule, whose rays half the agent's height up run
-along a plank's underside 1.0-1.1 m over a bed. *A smaller area nearer*
+along a plank's underside 1.0-1.1 m over a bed. On the navmesh route a
+ceiling at or a little over the agent's height, under what the navmesh's
+height grid needs (:func:`navmesh_head_room`, from its cell height), read
+also the agent's radius round the floor between them (Recast erodes round
+the cells it drops), is named as head room the navmesh reads as too low when
+the floor there is as wide as the agent (docs/analysis_quality.md, "The
+warning's head room a little over the agent"). *A smaller area nearer*
 (:func:`smaller_nearer`): the areas :func:`joined_areas` leaves out are not
 measured for the cause, so a closet behind a thin wall beside the largest
 went unnamed; the nearest of them is named after the cause when it comes
@@ -93,7 +99,8 @@ area's gap and rise from below), then a k-d tree per area measured (those
 whose bound lies under the answer: :func:`nearest_area`), e = the areas'
 polygon perimeter / ``cell_size`` on the navmesh route, their sample count on
 the sampling route; with the mesh, O(m log m) for its m faces' closed bodies
-and up to 9 rays (18 for the ceiling) for each of at most
+and up to 9 rays (18 for the ceiling; on the navmesh route, 24 more a floor
+point when it asks again for head room about the agent's) for each of at most
 ``MAX_PLACE_CANDIDATES`` pairs, 2 for the gap; the smaller areas as the joined
 ones; floors apart, :func:`way_up`'s l log l for its l <= ``MAX_WAY_UP_COLUMNS``
 lines.
@@ -121,6 +128,7 @@ from g2s_plugins._raycasting import (
     COMPASS, EPSILON, GROUND_MARGIN, UP, AgentShape, RayCaster, all_hits_down, closed_solid_holds, has_room, head_room,
 )
 from g2s_plugins.play_space import node_polygons
+from g2s_plugins.recast.settings import voxel_config
 
 Ground = tuple[np.ndarray, np.ndarray, np.ndarray]
 """``(points (k,3), reach (k,), spacing (k,))``, metres: :func:`ground_rim` of an area."""
@@ -326,10 +334,11 @@ def open_between(caster: RayCaster, closest: Closest, agent: AgentConfig) -> np.
 
 
 class LowCeiling(NamedTuple):
-    """A ceiling lower than the agent over the floor between two areas (:func:`low_ceiling`).
+    """A ceiling lower than the agent, or than the navmesh needs, over the floor between two areas
+    (:func:`low_ceiling`).
 
     Attributes:
-        head_room: metres from the floor up to the ceiling, under ``agent.height``.
+        head_room: metres from the floor up to the ceiling, under the head room asked.
         floor: (3,) the floor's point under it, metres.
         gap: metres between the two areas' ground there (the pair's plan distance less their reach).
     """
@@ -339,26 +348,37 @@ class LowCeiling(NamedTuple):
     gap: float
 
 
-def low_ceiling(caster: RayCaster, closest: Closest, agent: AgentConfig) -> LowCeiling | None:
-    """The ceiling lower than the agent's height that parts two areas on one floor, if one does: for the closest of
-    :attr:`Closest.pairs` (nearer first) whose floor runs on between them, the lowest head room over it.
+def low_ceiling(caster: RayCaster, closest: Closest, agent: AgentConfig, under: float | None = None,
+                beside: float = 0.0) -> LowCeiling | None:
+    """The ceiling lower than ``under`` (metres; None: the agent's height) that parts two areas on one floor, if one
+    does: for the closest of :attr:`Closest.pairs` (nearer first) whose floor runs on between them, the lowest head
+    room over it.
 
     A pair's floor runs on when the segment between its two points raised ``agent.max_climb`` (over what the agent
     steps on, under a beam or a plank) meets no face, a wall's, and the first face down from it at the middles of
     the stretch between their ground (:func:`stretch_under`) is ground within ``agent.max_climb`` of the two points
     (:func:`grounded`); the head room is how far a ray up from each such ground point (``EPSILON`` over it) goes,
-    and the pair is parted by a ceiling when the least is under ``agent.height``: Recast and the sampling builder
-    keep no floor with less head room than that, so the two areas' ground stops either side of it (a plank over a
-    channel's bed, a beam across a room). None when no pair is. 1 + 2 ``GROUND_RAYS`` rays a pair at most.
+    and the pair is parted by a ceiling when the least is under ``under`` (and, when that is over the agent's height,
+    not under the agent's height: the head room read as too low is about the agent's height): Recast and the sampling builder
+    keep no floor with less head room than ``agent.height``, so the two areas' ground stops either side of it (a
+    plank over a channel's bed, a beam across a room), and the navmesh none with less than
+    :func:`navmesh_head_room` on some floors. With ``beside`` (metres), the ground that far round each such point
+    (:func:`floor_beside`) is read too. None when no pair is. 1 + 2 ``GROUND_RAYS`` rays a pair at most, 24 times
+    more with ``beside``.
     """
     pairs = closest.pairs
     runs_on, owner, floor, on_ground = floor_between(caster, closest, agent, float(agent.max_climb))
+    if beside > 0:
+        owner, floor, on_ground = floor_beside(caster, closest, agent, owner, floor, on_ground, beside)
     room = np.full(len(floor), np.inf)
     room[on_ground] = caster.first_hits(floor[on_ground] + EPSILON * UP, UP).distance + EPSILON
     lowest = np.full(len(pairs), np.inf)
     np.minimum.at(lowest, owner, room)
     walled = np.bincount(owner, weights=hangs_to_the_floor(caster, floor, room, agent), minlength=len(pairs)) > 0
-    low = runs_on & ~walled & ~has_room(lowest, float(agent.height))
+    height = float(agent.height)
+    low = runs_on & ~walled & ~has_room(lowest, height if under is None else under)
+    if under is not None and under > height:  # about the agent's height: not over a pair with a table beside it
+        low &= has_room(lowest, height)
     if not low.any():
         return None
     chosen = int(np.argmax(low))  # the first, the closest, under a ceiling
@@ -366,6 +386,37 @@ def low_ceiling(caster: RayCaster, closest: Closest, agent: AgentConfig) -> LowC
     at = under[int(np.argmin(room[under]))]
     plan = float(np.hypot(*(pairs[chosen, 1] - pairs[chosen, 0])[[0, 2]]))
     return LowCeiling(float(room[at]), floor[at], max(plan - float(closest.reach[chosen].sum()), 0.0))
+
+
+def floor_beside(caster: RayCaster, closest: Closest, agent: AgentConfig, owner: np.ndarray, floor: np.ndarray,
+                 on_ground: np.ndarray, reach: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``(owner, floor, on_ground)`` of :class:`FloorBetween` with, for each ground point, the ground ``reach`` metres
+    from it along the eight :data:`~g2s_plugins._raycasting.COMPASS` headings where nothing lies across at
+    ``agent.max_climb`` over it (the floor runs on to there; not a counter's or wall's side), found and tested as
+    :func:`floor_between`'s: Recast erodes the agent's radius round every cell it keeps no floor on, so an aisle
+    whose middle has open sky is cut by awnings' edges read too low on either side of it. Three rays a heading."""
+    start = np.repeat(floor[on_ground] + float(agent.max_climb) * UP, len(COMPASS), axis=0)
+    heading = np.tile(COMPASS, (int(on_ground.sum()), 1))
+    clear = caster.first_hits(start, heading).distance >= reach
+    near = owner[on_ground].repeat(len(COMPASS))[clear]
+    points = start[clear] + reach * heading[clear]
+    points[:, 1] -= caster.first_hits(points, -UP).distance
+    return (np.concatenate([owner, near]), np.concatenate([floor, points]),
+            np.concatenate([on_ground, grounded(closest, near, points[:, 1], agent)]))
+
+
+def navmesh_head_room(settings: dict) -> float:
+    """Metres of head room under which a navmesh built with ``settings`` (:func:`g2s_plugins.recast.resolve_settings`'s,
+    as :attr:`NavMesh.settings <g2s_plugins.recast.NavMesh.settings>` keeps them) may keep no floor over a flat floor:
+    Recast reads head room in cells of ``cell_height``, and over a floor a fraction ``a`` (0 <= a < 1) of a cell over a
+    cell boundary the gap is floor(a + head room / cell_height) - 1 cells; the low-height filter keeps a gap of
+    ``walkableHeight`` cells (a cell more with ``head_room: recast``), so a flat floor is walked from
+    (``walkableHeight`` + 1 - a) cells (+ 1), and a head room under ``walkableHeight`` + 1 (+ 1) cells is cut where
+    the floor lies on a boundary (docs/navmesh.md, "Head room a little over the agent's height": 2.125 m on
+    ``map_analysis``'s 0.125 m cells, 2.05 m on ``map_piece``'s 0.05 m)."""
+    voxels = voxel_config(settings)
+    kept = voxels["walkableHeight"] + (1 if settings["recast_head_room"] else 0)
+    return float((kept + 1) * voxels["ch"])
 
 
 def hangs_to_the_floor(caster: RayCaster, floor: np.ndarray, room: np.ndarray, agent: AgentConfig) -> np.ndarray:
@@ -697,7 +748,8 @@ def apart(closest: Closest) -> float:
 
 
 def areas_cause(graph: nx.Graph, largest: Sequence[int], others: Sequence[Sequence[int]], agent: AgentConfig,
-                rim: Rim, mesh: trimesh.Trimesh | None = None, kept_width: float | None = None) -> str:
+                rim: Rim, mesh: trimesh.Trimesh | None = None, kept_width: float | None = None,
+                kept_head_room: float | None = None) -> str:
     """The likely cause between ``largest`` and the nearest of ``others`` (node lists of areas of ``graph``) of
     those :func:`joined_areas` keeps, with its size and where, e.g. ``from the largest area to the nearest
     area of 412 m², a step of about 0.6 m, ..., e.g. between (x, y, z m) and (x, y, z m)``. The nearest is the one whose
@@ -712,7 +764,8 @@ def areas_cause(graph: nx.Graph, largest: Sequence[int], others: Sequence[Sequen
     them is named (:func:`low_ceiling`: a plank over a channel's bed, a beam); else, on one floor (a rise up to the
     agent's height), the place :func:`where_between` names: the door or plank too narrow for the agent, or the run
     of a wall or chasm. Floors farther apart are asked whether walkable ground climbs between them (:func:`way_up`;
-    ``kept_width`` as :func:`way_up_cause`'s).
+    ``kept_width`` as :func:`way_up_cause`'s). ``kept_head_room``: on the navmesh route, :func:`navmesh_head_room`
+    (:func:`nearest_cause`).
     """
     ground = rim(graph, largest)  # once, however many areas it is compared with
     joined = joined_areas(graph, largest, others)
@@ -722,7 +775,7 @@ def areas_cause(graph: nx.Graph, largest: Sequence[int], others: Sequence[Sequen
     smaller = [other for k, other in enumerate(others) if k not in named]
     # a low ceiling is asked along the seam, not only where it comes closest (below)
     seam = None if mesh is None else closest_step_for(ground, rim(graph, nearest), agent, float(agent.height))
-    return (f"from the largest area to the nearest area of {size:,.0f} m², {nearest_cause(closest, middle, agent, mesh, seam, kept_width)}"
+    return (f"from the largest area to the nearest area of {size:,.0f} m², {nearest_cause(closest, middle, agent, mesh, seam, kept_width, kept_head_room)}"
             f"{smaller_nearer(graph, ground, smaller, apart(closest), agent, rim, mesh)}")
 
 
@@ -750,24 +803,38 @@ def smaller_nearer(graph: nx.Graph, ground: Ground, smaller: Sequence[Sequence[i
 
 
 def nearest_cause(closest: Closest, middle: np.ndarray, agent: AgentConfig, mesh: trimesh.Trimesh | None,
-                  seam: Closest | None = None, kept_width: float | None = None) -> str:
+                  seam: Closest | None = None, kept_width: float | None = None,
+                  kept_head_room: float | None = None) -> str:
     """:func:`areas_cause`'s cause and place for the area whose ground comes ``closest`` to the largest's, ``middle``
     (3,) a place inside it, metres; ``seam`` the same with the pairs up to ``agent.height`` farther than the closest
     (:func:`closest_step`'s window): a ceiling lower than the agent is asked of them when the pairs about as close as
     the closest have none (a beam wider than the wall beside it: its pairs lie its extra width farther). Floors more
     than the agent's height apart are named separate only when no walkable ground climbs between them near there
-    (:func:`way_up`): else the stair or ramp the graph builder lost, or the step that cuts it (:func:`way_up_cause`)."""
+    (:func:`way_up`): else the stair or ramp the graph builder lost, or the step that cuts it (:func:`way_up_cause`).
+
+    On the navmesh route (``kept_head_room``: :func:`navmesh_head_room`, metres) a ceiling at or over the agent's
+    height but under that is named too, as head room the navmesh's height grid reads as too low, when none lower than
+    the agent is found and the floor under it is as wide as the agent (:func:`width_across`): else a narrower cause
+    holds (a door too narrow under a lintel a little over the agent), named as before. The sampling route tests head
+    room at its points exactly, so its warnings keep the agent's height."""
     if mesh is None:
         return f"{likely_cause(closest.step, closest.gap, agent)}, {between(closest.pairs[0])}"
     caster = RayCaster(mesh)
     # a ceiling over floor that runs on between them first: nothing at the agent's step height parts them, so no
     # solid's wall does (the shut-in rule's rays, lifted half the agent's height, run along a plank's underside
     # 1.0-1.1 m over a channel's bed)
-    if closest.step <= float(agent.max_climb) and (ceiling := low_ceiling(caster, closest, agent) or (
-            None if seam is None else low_ceiling(caster, seam, agent))) is not None:
-        return (f"head room too low: a ceiling about {ceiling.head_room:.1f} m over the floor, under agent.height "
-                f"({float(agent.height):g} m), where their ground lies about {ceiling.gap:.1f} m apart, "
-                f"at ({xyz(ceiling.floor)})")
+    if closest.step <= float(agent.max_climb):
+        if (ceiling := ceiling_between(caster, closest, seam, agent)) is not None:
+            return (f"head room too low: a ceiling about {ceiling.head_room:.1f} m over the floor, under agent.height "
+                    f"({float(agent.height):g} m), where their ground lies about {ceiling.gap:.1f} m apart, "
+                    f"at ({xyz(ceiling.floor)})")
+        if kept_head_room is not None and kept_head_room > float(agent.height) and (
+                ceiling := ceiling_between(caster, closest, seam, agent, kept_head_room, float(agent.radius))) is not None and (
+                width_across(caster, ceiling.floor[None], agent, float(agent.radius) / 2)[0] >= 2 * float(agent.radius)):
+            return (f"head room too low for the navmesh: a ceiling {ceiling.head_room:.2f} m over the floor, about the "
+                    f"agent's height: the navmesh needs up to {round(kept_head_room, 4):g} m (agent.height "
+                    f"{float(agent.height):g} m, read in cells of graph.params.cell_height), where their ground lies "
+                    f"about {ceiling.gap:.1f} m apart, at ({xyz(ceiling.floor)})")
     gap = walled_gap(caster, closest, agent)
     # its closest place and its middle: a render post or column inside the solid may face the rays from one
     if shut_in(caster, np.stack([closest.there, middle]), agent).any():
@@ -782,6 +849,14 @@ def nearest_cause(closest: Closest, middle: np.ndarray, agent: AgentConfig, mesh
         return f"{likely_cause(closest.step, gap, agent)}, {between(closest.pairs[0])}"
     cause = likely_cause(closest.step, gap, agent)
     return f"{cause}, {where_between(caster, closest, agent)}"
+
+
+def ceiling_between(caster: RayCaster, closest: Closest, seam: Closest | None, agent: AgentConfig,
+                    under: float | None = None, beside: float = 0.0) -> LowCeiling | None:
+    """:func:`low_ceiling` under ``under`` (``beside`` as its) of the pairs about as close as the closest, else of the
+    ``seam``'s (:func:`nearest_cause`)."""
+    return (low_ceiling(caster, closest, agent, under, beside)
+            or (None if seam is None else low_ceiling(caster, seam, agent, under, beside)))
 
 
 def shut_in(caster: RayCaster, points: np.ndarray, agent: AgentConfig) -> np.ndarray:
@@ -808,5 +883,6 @@ def likely_cause_of(agent: AgentConfig, navmesh: NavMesh | None = None, clearanc
     cell = np.float32(navmesh.settings["cell_size"]) if navmesh is not None else None
     erosion = clearance if cell is None else float(np.ceil(np.float32(agent.radius) / cell) * cell)  # as Recast's float
     kept_width = None if cell is None else 2 * erosion + LEDGE_CELLS * float(cell)
+    kept_head_room = None if navmesh is None else navmesh_head_room(navmesh.settings)
     return partial(areas_cause, agent=agent, rim=partial(ground_rim, navmesh=navmesh, erosion=erosion), mesh=mesh,
-                   kept_width=kept_width)
+                   kept_width=kept_width, kept_head_room=kept_head_room)

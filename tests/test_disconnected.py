@@ -15,6 +15,7 @@ from g2s_core.config import AgentConfig
 from g2s_core.disconnected import LISTED_AREAS, area_summary, disconnected_warning
 from g2s_plugins._raycasting import RayCaster
 from g2s_plugins.area_gaps import likely_cause_of, shut_in
+from g2s_plugins.recast import RecastParams, resolve_settings
 
 SAMPLED = likely_cause_of(AgentConfig())
 """The cause over nodes that each stand for a square of their area, none eroded."""
@@ -33,12 +34,14 @@ def areas(graph: nx.Graph) -> dict[int, list[int]]:
     return {i: sorted(c) for i, c in enumerate(nx.connected_components(graph))}
 
 
-def navmesh_of(rectangles: list[tuple[float, float, float, float, float]]) -> tuple[SimpleNamespace, nx.Graph]:
-    """A navmesh of one polygon per rectangle (x0, x1, z0, z1, y; none joined, cells of 0.25 m) and its graph."""
+def navmesh_of(rectangles: list[tuple[float, float, float, float, float]],
+               params: RecastParams | None = None) -> tuple[SimpleNamespace, nx.Graph]:
+    """A navmesh of one polygon per rectangle (x0, x1, z0, z1, y; none joined) and its graph, with the settings
+    ``params`` resolve to for the default agent (None: ``map_analysis``'s cells, 0.25 x 0.125 m)."""
     vertices = np.array([[x, y, z] for x0, x1, z0, z1, y in rectangles for x, z in ((x0, z0), (x0, z1), (x1, z1), (x1, z0))])
     polygons = np.arange(len(vertices)).reshape(-1, 4)
     navmesh = SimpleNamespace(vertices=vertices, polygons=polygons, neighbours=np.full(polygons.shape, -1),
-                              settings={"cell_size": 0.25})
+                              settings=resolve_settings(AgentConfig(), params))
     graph = nx.Graph()
     for i, (x0, x1, z0, z1, y) in enumerate(rectangles):
         graph.add_node(i, pos=((x0 + x1) / 2, y, (z0 + z1) / 2), area=(x1 - x0) * (z1 - z0), polygon=i)
@@ -327,6 +330,53 @@ def test_a_low_beam_parts_the_floor_on_either_route(preset):
     assert len(warned) == 1 and "lie in 2 disconnected areas" in str(warned[0])
     assert "Likely cause: from the largest area to the nearest area of " in str(warned[0])
     assert "head room too low: a ceiling about 1.4 m over the floor, under agent.height (2 m)" in str(warned[0])
+
+
+HEAD_ROOM_TOO_LOW = "head room too low for the navmesh: a ceiling 2.05 m over the floor, about the agent's height: " \
+    "the navmesh needs up to {} m (agent.height 2 m, read in cells of graph.params.cell_height)"
+
+
+@pytest.mark.parametrize("params, door, cause", [
+    (None, None, HEAD_ROOM_TOO_LOW.format("2.125")),                        # map_analysis's cells of 0.125 m
+    (RecastParams(head_room="recast"), None, HEAD_ROOM_TOO_LOW.format("2.25")),  # Recast's filter: a cell more
+    (RecastParams(cell_height=0.025), None, "or a wall"),                   # walked from 2.025 m on these cells
+    (None, 0.8, "or a wall"),                                               # a door too narrow under the lintel
+])
+def test_a_ceiling_a_little_over_the_agent_is_named_as_the_navmeshs_head_room(params, door, cause):
+    """A floor 20 x 10 m cut in two by a beam 1 m wide whose underside is 2.05 m over the floor (x 9.5-10.5), or by a
+    wall under it with a door 0.8 m wide: the agent (2 m) fits under it, but Recast reads head room in cells of the
+    cell height, and over a floor on a cell boundary it keeps floor from (walkableHeight + 1) cells (2.125 m on 0.125 m
+    cells; docs/navmesh.md, "Head room a little over the agent's height"), so the navmesh's areas stop either side.
+    The warning named a gap or a wall there; it names the head room and what the navmesh needs, derived from its
+    settings (not under 0.025 m cells, where it needs 2.025 m; not where the door is the narrower cause)."""
+    walls = [] if door is None else [(9.5, 10.5, 0, 2.05, -1, 5 - door / 2), (9.5, 10.5, 0, 2.05, 5 + door / 2, 11)]
+    mesh = boxes((-1, 21, -0.3, 0, -1, 11), (9.5, 10.5, 2.05, 2.35, -1, 11), *walls)
+    navmesh, graph = navmesh_of([(0.5, 9.0, 0.5, 9.5, 0.0), (11.0, 19.5, 0.5, 9.5, 0.0)], params)
+    message = disconnected_warning(graph, areas(graph), 2, likely_cause_of(AgentConfig(), navmesh, mesh=mesh))
+    assert cause in message and "\n" not in message
+    if cause.startswith("head room"):
+        place = np.array(message.rsplit("at (", 1)[1].removesuffix(" m).").split(", "), dtype=float)
+        assert 9.5 <= place[0] <= 10.5 and place[1] == 0.0 and 0.5 <= place[2] <= 9.5
+    else:
+        assert "head room" not in message
+    # the sampling route tests head room at its points exactly: a ceiling over the agent is no cause there
+    graph = nx.Graph()
+    sampled_rows(graph, [(0.5, 9, 0), (11.5, 9, 100)])
+    assert "head room" not in disconnected_warning(graph, areas(graph), 2, likely_cause_of(AgentConfig(), mesh=mesh))
+
+
+def test_awnings_either_side_of_an_open_middle_are_named_as_the_navmeshs_head_room():
+    """An aisle whose middle (z 1.7-2.3) is open to the sky between two awnings 2.05 m up (z 0.9-1.7 and 2.3-3.1,
+    x 8-12): Recast keeps no floor under the awnings' cells and erodes the agent's 0.5 m round them, so only a strip
+    of the middle is left either side and the two pieces of aisle are apart, their edges under open sky (the awning
+    market of round 37). Head room read straight up from the floor between them found none; it is read to the
+    agent's radius round it too."""
+    mesh = boxes((-1, 21, -0.3, 0, -1, 5), (8, 12, 2.05, 2.15, 0.9, 1.7), (8, 12, 2.05, 2.15, 2.3, 3.1))
+    navmesh, graph = navmesh_of([(0.5, 8.6, 1.8, 2.2, 0.0), (11.4, 19.5, 1.8, 2.2, 0.0)])
+    message = disconnected_warning(graph, areas(graph), 2, likely_cause_of(AgentConfig(), navmesh, mesh=mesh))
+    assert HEAD_ROOM_TOO_LOW.format("2.125") in message
+    place = np.array(message.rsplit("at (", 1)[1].removesuffix(" m).").split(", "), dtype=float)
+    assert 8 <= place[0] <= 12 and (0.9 <= place[2] <= 1.7 or 2.3 <= place[2] <= 3.1)
 
 
 def sampled_rows(graph: nx.Graph, rows: list[tuple[float, int, int]], z: float = 0.5) -> None:
