@@ -11,10 +11,12 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from g2s_core.config import PRESETS_DIR, load_config
 from g2s_core.model import Opening
+from g2s_plugins._raycasting import RayCaster
 from g2s_plugins.samples import pieces
 from g2s_plugins.terminals import entry_exit
-from tests.conftest import benchmark, piece_openings, round_openings
+from tests.conftest import benchmark, box, piece_openings, round_openings
 
 
 def _along_x(x0: float, x1: float) -> Opening:
@@ -37,6 +39,15 @@ def test_parts_abutting_along_one_line_with_nothing_between_them_are_one_opening
     # farther apart than the reach, or asked without the rule: two openings, as before
     assert list(entry_exit._repeated([wide, _along_x(0.0, 0.8)], 0.4, 30.0, 0.4, free, 0.05)) == [-1, -1]
     assert list(entry_exit._repeated([wide, part], 0.4, 30.0, 0.4)) == [-1, -1]
+
+
+def test_the_floors_end_between_two_parts_is_free_unless_something_stands_across_it() -> None:
+    s = entry_exit._settings(entry_exit.Params(), load_config(PRESETS_DIR / "map_piece.yaml").agent)
+    a, b = np.array([0.0, 0.0, 0.0]), np.array([0.05, 0.0, 0.0])
+    floor = box(-1.0, 1.0, -0.2, 0.0, -1.0, 1.0)
+    leaf = box(0.015, 0.035, 0.0, 2.0, -1.0, 1.0)  # a leaf 0.02 m thick standing across the line between them
+    assert entry_exit._free_along(a, b, RayCaster(floor), s)
+    assert not entry_exit._free_along(a, b, RayCaster(floor + leaf), s)
 
 
 def test_a_lych_gates_coffin_stone_leaves_the_gate_one_opening_at_45_degrees() -> None:
