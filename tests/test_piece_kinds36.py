@@ -39,6 +39,10 @@ def test_parts_abutting_along_one_line_with_nothing_between_them_are_one_opening
     # farther apart than the reach, or asked without the rule: two openings, as before
     assert list(entry_exit._repeated([wide, _along_x(0.0, 0.8)], 0.4, 30.0, 0.4, free, 0.05)) == [-1, -1]
     assert list(entry_exit._repeated([wide, part], 0.4, 30.0, 0.4)) == [-1, -1]
+    # its end more than the climb above the wider one's (a cliff between two stretches of a border), its middle
+    # within the climb of the wider one's line: two openings
+    cliff = Opening((0.45, 0.25, 0.0), (0.0, 0.0, -1.0), 0.96, (0.0, 0.0, 0.0), (0.893, 0.5, 0.0))
+    assert list(entry_exit._repeated([wide, cliff], 0.4, 30.0, 0.4, free, 0.05)) == [-1, -1]
 
 
 def test_the_floors_end_between_two_parts_is_free_unless_something_stands_across_it() -> None:

@@ -2077,10 +2077,11 @@ def _repeated(openings: list[Opening], radius: float, max_turn_deg: float, climb
     piece kinds").
 
     One that does not overlap it but abuts it, its nearer end within ``reach`` m of the wider one's end along the
-    line, is the same opening too when ``free_along(a, b)`` finds nothing standing on the line between those two ends
-    (a, b (3,), m): two parts of one floor's end whose passages' sides met on it (a lych gate's coffin stone 0.4 m
+    line in plan and within ``climb`` of it in height, is the same opening too when ``free_along(a, b)`` finds nothing
+    standing on the line between those two ends (a, b (3,), m): two parts of one floor's end whose passages' sides met on it (a lych gate's coffin stone 0.4 m
     inside the wall, its two lanes' parts ending 7 mm apart on the stone's side at 45 degrees; docs/entry_exit.md, "A
-    thirty-sixth round of piece kinds"), not two ways either side of a leaf or a post standing across it.
+    thirty-sixth round of piece kinds"), not two ways either side of a leaf or a post standing across it, nor two
+    stretches of a terrain's border either side of a cliff (ends 0.04 m apart in plan, 4.8 m in height).
     """
     n = len(openings)
     into = np.full(n, -1, dtype=np.int64)
@@ -2103,7 +2104,7 @@ def _repeated(openings: list[Opening], radius: float, max_turn_deg: float, climb
             if near and lo < 1.0 and hi > 0.0:
                 into[j] = i
             elif near and free_along is not None and (abut := _abutting(first[i], last[i], first[j], last[j], u, reach)):
-                if free_along(*abut):
+                if abs(abut[0][1] - abut[1][1]) <= climb + _SAME_HEIGHT and free_along(*abut):
                     into[j] = i
     return into
 
