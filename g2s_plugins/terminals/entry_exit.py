@@ -170,6 +170,7 @@ over the mesh's F triangles, the terminals a k-d tree query each.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, replace
 
 import networkx as nx
@@ -2058,7 +2059,8 @@ def extent_gap(vertices: np.ndarray, point: np.ndarray, heading: np.ndarray, fra
     return min(along_heading, float(np.max(vertices @ axis) - point @ axis))
 
 
-def _repeated(openings: list[Opening], radius: float, max_turn_deg: float, climb: float) -> np.ndarray:
+def _repeated(openings: list[Opening], radius: float, max_turn_deg: float, climb: float,
+              free_along: Callable[[np.ndarray, np.ndarray], bool] | None = None, reach: float = 0.0) -> np.ndarray:
     """(n,) int: for each opening that overlaps a wider one along the same edge, facing the same way, that one's index; else -1.
 
     Recast's voxel staircase along an edge turned off the grid's axes can cut one opening's
@@ -2073,6 +2075,13 @@ def _repeated(openings: list[Opening], radius: float, max_turn_deg: float, climb
     the steps (on the sampling route ``grand_steps``' foot: a part 0.4 m above the rest; a flight of 12
     risers: a part rising from the foot to 0.82 m above it; docs/entry_exit.md, "A sixteenth round of
     piece kinds").
+
+    One that does not overlap it but abuts it, its nearer end within ``reach`` m of the wider one's end along the
+    line in plan and within ``climb`` of it in height, is the same opening too when ``free_along(a, b)`` finds nothing
+    standing on the line between those two ends (a, b (3,), m): two parts of one floor's end whose passages' sides met on it (a lych gate's coffin stone 0.4 m
+    inside the wall, its two lanes' parts ending 7 mm apart on the stone's side at 45 degrees; docs/entry_exit.md, "A
+    thirty-sixth round of piece kinds"), not two ways either side of a leaf or a post standing across it, nor two
+    stretches of a terrain's border either side of a cliff (ends 0.04 m apart in plan, 4.8 m in height).
     """
     n = len(openings)
     into = np.full(n, -1, dtype=np.int64)
@@ -2091,9 +2100,42 @@ def _repeated(openings: list[Opening], radius: float, max_turn_deg: float, climb
                 continue
             u, plan, rise = _along_line(first[i], span, np.stack([first[j], 0.5 * (first[j] + last[j]), last[j]]))
             near = plan[1] <= radius and np.abs(rise).min() <= climb + _SAME_HEIGHT
-            if near and min(u[0], u[2]) < 1.0 and max(u[0], u[2]) > 0.0:
+            lo, hi = min(u[0], u[2]), max(u[0], u[2])
+            if near and lo < 1.0 and hi > 0.0:
                 into[j] = i
+            elif near and free_along is not None and (abut := _abutting(first[i], last[i], first[j], last[j], u, reach)):
+                if abs(abut[0][1] - abut[1][1]) <= climb + _SAME_HEIGHT and free_along(*abut):
+                    into[j] = i
     return into
+
+
+def _abutting(first: np.ndarray, last: np.ndarray, first_j: np.ndarray, last_j: np.ndarray, u: np.ndarray,
+              reach: float) -> tuple[np.ndarray, np.ndarray] | None:
+    """The wider opening's end (``first``/``last``, (3,) m) and the narrower one's end (``first_j``/``last_j``) that
+    face each other when the narrower lies beyond it along its line (``u``: where the narrower one's first end, middle
+    and last end lie along it, :func:`_along_line`) with a gap of at most ``reach`` m in plan between them; else
+    None."""
+    span = float(np.linalg.norm((last - first) * np.array([1.0, 0.0, 1.0])))
+    if span <= 0.0:
+        return None
+    if min(u[0], u[2]) >= 1.0 and (min(u[0], u[2]) - 1.0) * span <= reach:
+        return last, (first_j if u[0] <= u[2] else last_j)
+    if max(u[0], u[2]) <= 0.0 and -max(u[0], u[2]) * span <= reach:
+        return first, (first_j if u[0] >= u[2] else last_j)
+    return None
+
+
+def _free_along(a: np.ndarray, b: np.ndarray, caster: RayCaster, s: _Settings) -> bool:
+    """Whether nothing stands on the floor's end between its points ``a`` and ``b`` ((3,) m): rays from each towards
+    the other at the search's height over them (``lift``) meet nothing before they pass each other. Two rays: one
+    starting on a face that ends there (a passage's side) would not see it."""
+    d = (b - a) * np.array([1.0, 0.0, 1.0])
+    gap = float(np.linalg.norm(d))
+    if gap <= _SAME_WIDTH:
+        return True
+    d /= gap
+    hits = caster.first_hits(np.stack([a, b]) + UP * s.lift, np.stack([d, -d]))
+    return bool((hits.distance > gap).all())
 
 
 def _along_line(start: np.ndarray, span: np.ndarray, points: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -2284,7 +2326,8 @@ def detect_openings(
     # meets the side as deep as the narrowest width stands (a splayed reveal's inner face, 1 m in: 1.234 m for 1.2 on
     # the sampling route, the extremes of 15 parts' ends; docs/entry_exit.md, "Since the passage rule").
     while True:
-        into = _repeated([f[0] for f in found], s.radius, float(params.max_turn_deg), s.climb)
+        into = _repeated([f[0] for f in found], s.radius, float(params.max_turn_deg), s.climb,
+                         lambda a, b: _free_along(a, b, caster, s), s.delta)
         if not (into >= 0).any():
             break
         for i in sorted(set(into[into >= 0].tolist())):
