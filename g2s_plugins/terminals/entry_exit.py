@@ -312,6 +312,15 @@ class Params(PluginParams):
         description="a curved edge matches a segment when its local direction stays this close to the "
         "boundary's, degrees",
     )
+    step_gap: float | None = Field(
+        None,
+        ge=0,
+        le=100,
+        description="the floor's end search steps over a gap across the way narrower than this, m, whose far side "
+        "faces its near one and holds walkable ground within the climb going on beyond it (a gutter or a slot just "
+        "inside a doorway); None: the agent's max climb, the sampling builder's default step gap; 0: gaps narrower "
+        "than two search steps alone",
+    )
     leave_footprint: bool = Field(
         True,
         description="an exit must lead out of the piece: one agent radius beyond its edge nothing of the "
@@ -370,6 +379,7 @@ class _Settings:
     head: float  # height of the head-room rays over the surface: a search step under the agent's height
     search: float  # how far beyond the boundary the edge search looks for the surface's end
     farther: float  # how far it looks again from a sample that found no way out (a sampled surface's), else 0
+    step_gap: float  # the floor's end search steps over a gap across the way narrower than this, m (0: none)
 
 
 def _settings(params: Params, agent: AgentConfig, farther: float | None = None) -> _Settings:
@@ -390,6 +400,7 @@ def _settings(params: Params, agent: AgentConfig, farther: float | None = None) 
         head=float(agent.height) - delta,
         search=float(params.edge_search_radii) * r,
         farther=0.0 if farther is None else float(farther),
+        step_gap=climb if params.step_gap is None else float(params.step_gap),
     )
 
 
@@ -480,8 +491,13 @@ def _surface_ends(
                           f"{s.delta:.4g} m makes {steps:.3g} probes a sample, more than {_MAX_PROBE_RAYS:,}; use a smaller one")
     # whole search steps, counted in decimal as the parameters are written: 3.0 * 0.4 m is 1.2000000000000002 m,
     # which a ceiling in floating point made 25 steps (1.25 m) for 24
-    n_off = max(1, math.ceil(round(steps, _STEP_DIGITS)))
+    n_base = max(1, math.ceil(round(steps, _STEP_DIGITS)))
     counts = [max(1, math.ceil(round(r / s.delta, _STEP_DIGITS))) for r in reaches]  # each reach's probes
+    # A reach is counted on the floor: the probes over a gap the agent steps over (:func:`_over_step_gap`) add to it,
+    # so probes are cast as much farther as the step gap is wide (a doorway 0.4 m past a 0.35 m cut, its floor's end
+    # 1.27 m past the navmesh's boundary, lay beyond the 1.2 m reach)
+    n_gap = math.ceil(round(s.step_gap / s.delta, _STEP_DIGITS))
+    n_off = n_base + n_gap
     offsets = s.delta * np.arange(1, n_off + 1)
     lo = np.full((len(reaches), len(origins)), np.nan)
     # how far the ground stood on last lies below the origin's, down a stair only
@@ -498,7 +514,11 @@ def _surface_ends(
         # A probe in a crack running along the way (a grating's slot, the way out within a few degrees of
         # it) stays in it from one probe to the next: it stands on the surface when surface lies a search
         # step to both sides of it, across the way (beyond an edge oblique to the way, one side at most).
-        ground = _nearest_ground(~missing.reshape(-1, n_off), hits.distance.reshape(-1, n_off)).ravel()
+        # (over the reach's own probes, as without the step gap's: a row with no ground in them measures from the
+        # origin's, not from ground the probes cast farther for a stepped gap find)
+        on, far = ~missing.reshape(-1, n_off), hits.distance.reshape(-1, n_off)
+        ground = np.concatenate([_nearest_ground(on[:, :n_base], far[:, :n_base]), _nearest_ground(on, far)[:, n_base:]],
+                                axis=1).ravel()
         rows = np.flatnonzero(missing)
         side = s.delta * _unit(np.cross(directions[part][rows // n_off], UP))
         across, beside = ground_across_crack(
@@ -511,6 +531,16 @@ def _surface_ends(
                                         ground[still], s)
         gapped = np.flatnonzero(~across)
         across[gapped], beside[gapped] = over, beyond
+        # ... and one over a wider gap across the way that the agent steps over, onto a floor going on beyond it
+        # (:func:`_over_step_gap`; the search's probes alone: the bisection places an end the search decided)
+        left = rows[~across]
+        stepped, ground_beyond = _over_step_gap(caster, probes[left], directions[part][left // n_off], probe_down[left],
+                                                ground[left], s)
+        gapped = np.flatnonzero(~across)
+        across[gapped], beside[gapped] = stepped, ground_beyond
+        over_gap = np.zeros(len(probes), dtype=bool)
+        over_gap[left[stepped]] = True
+        over_gap = over_gap.reshape(-1, n_off)
         missing[rows] = ~across
         # such a probe stands on the ground beside the crack: the walk down steps goes on from there, not from
         # whatever lies under the crack (a floor below a catwalk's slot)
@@ -519,14 +549,18 @@ def _surface_ends(
         missing, walkable = missing.reshape(-1, n_off), walkable.reshape(-1, n_off)
         depth = distance.reshape(-1, n_off) - s.lift
         for r, count in enumerate(counts):
-            ends, before = _down_steps(missing[:, :count], depth[:, :count], walkable[:, :count], s.climb)
-            stood = _nearest_ground(~ends, depth[:, :count] + s.lift)
+            reached = count + over_gap[:, :count + n_gap].sum(axis=1)  # the reach's probes, and as many over gaps
+            beyond = np.arange(n_off)[None, :] >= reached[:, None]
+            # the probes beyond a row's reach find nothing, so its last probes are its ends as at the end of a row
+            ends, before = _down_steps(missing | beyond, np.where(beyond, np.inf, depth), walkable & ~beyond, s.climb)
+            stood = _nearest_ground(~ends, depth + s.lift)
             # The surface ends where three probes in a row find none: a gap narrower than two search steps
             # (unwelded floor tiles, planks laid 6 cm apart) is no edge, and neither the agent nor Recast's voxels
             # see it; at two in a row two probes fell in one 6 cm gap (docs/entry_exit.md, "An eighteenth round of
             # piece kinds"). A search's last probe finding none is an end, and so are its last two.
             ends[:, :-2] &= ends[:, 1:-1] & ends[:, 2:]
             ends[:, -2:-1] &= ends[:, -1:]
+            ends &= ~beyond
             end = np.argmax(ends, axis=1)
             lo[r, part] = np.where(ends.any(axis=1), end * s.delta, np.nan)
             drop[r, part] = before[np.arange(len(end)), end]
@@ -568,6 +602,63 @@ def _nearest_ground(on: np.ndarray, distance: np.ndarray) -> np.ndarray:
     first = np.minimum.accumulate(np.where(on, np.arange(k)[None, :], k)[:, ::-1], axis=1)[:, ::-1]
     near = np.where(last >= 0, last, first)
     return np.where(near < k, np.take_along_axis(distance, np.minimum(near, k - 1), axis=1), np.nan)
+
+
+_FACING_COS = math.cos(math.radians(45.0))
+"""A gap's far side faces its near one when their faces' normals lie within 45 degrees of opposite in plan: the two
+lips of a gutter or slot are parallel, and what the rays meet at a floor's end beside another thing's side (a store
+room's wall beside a doorway's floor) stands square to it (:func:`_over_step_gap`)."""
+
+
+def _over_step_gap(
+    caster: RayCaster, probes: np.ndarray, directions: np.ndarray, down: np.ndarray, ground: np.ndarray, s: _Settings
+) -> tuple[np.ndarray, np.ndarray]:
+    """Which of the (n,3) ``probes`` that found no ground, and no gap narrower than two search steps
+    (:func:`_over_narrow_gap`), stand over a gap across the way narrower than the step gap (``s.step_gap``) that the
+    agent steps over, and how far along ``down`` ((n,3)) from them the nearer side's ground lies ((n,) m, inf where
+    not).
+
+    The product's rule (docs/sampling.md, "Narrow gaps between floors"): the agent steps over a gap narrower than
+    the step gap (by default its climb) between floors within its climb of each other, so a gutter or slot 0.15-0.39
+    m wide just inside a doorway, deeper than the climb, is no floor's end, and the doorway beyond it is an opening.
+    Measured along the way (``directions`` (n,3)) and back, a sixteenth of a step under the ground's top (``ground``
+    (n,) m along ``down``, NaN: the origin's): both sides met, their faces' normals within 45 degrees of opposite in
+    plan (:data:`_FACING_COS`), each side's distance taken square to its face, the two under the step gap; walkable
+    ground within the climb just past both lips, and still two search steps past the far one (a strip the next
+    probes stand on, not a beam's top). Not the builder's own test (:func:`~g2s_plugins._raycasting.
+    ground_across_step_gap`, straight down along eight axes): at a floor's real end the search's probes, cast along a
+    tilted floor's normal, meet no ground where straight down they do, and ground beside a probe along the end's own
+    line counts for it, so that test put floors' ends up to a search step past their real ones and lost five
+    known openings (docs/entry_exit.md, "Openings behind a gap the agent steps over"). Two rays a probe, three more
+    where the gap is narrow enough: O(n).
+    """
+    on, distance = np.zeros(len(probes), dtype=bool), np.full(len(probes), np.inf)
+    if not s.step_gap or not len(probes):
+        return on, distance
+    ground = np.where(np.isfinite(ground), ground, s.lift)
+    under = probes + down * (ground + s.delta / 16.0)[:, None]
+    ahead, behind = caster.first_hits_of([(under, directions), (under, -directions)])
+    met = np.isfinite(ahead.distance) & np.isfinite(behind.distance)
+    normals = [caster.face_normals[np.maximum(hit.face, 0)] for hit in (ahead, behind)]
+    across = sum(np.where(met, hit.distance, 0.0) * np.abs(np.einsum("ij,ij->i", n, directions))
+                 for hit, n in zip((ahead, behind), normals))
+    plan = [_unit(n * np.array([1.0, 0.0, 1.0])) for n in normals]
+    facing = np.einsum("ij,ij->i", plan[0], plan[1]) <= -_FACING_COS
+    rows = np.flatnonzero(met & facing & (across < s.step_gap))
+    if not len(rows):
+        return on, distance
+    past = s.delta / 16.0  # onto each side's top, past its lip
+    far = probes[rows] + directions[rows] * (ahead.distance[rows] + past)[:, None]
+    sides = caster.first_hits_of([
+        (far, down[rows]),
+        (far + directions[rows] * (2.0 * s.delta), down[rows]),
+        (probes[rows] - directions[rows] * (behind.distance[rows] + past)[:, None], down[rows]),
+    ])
+    reach = ground[rows] + s.climb
+    both = np.logical_and.reduce([(hit.distance <= reach) & _walkable(caster, hit.face, s) for hit in sides])
+    on[rows[both]] = True
+    distance[rows[both]] = np.minimum(sides[0].distance, sides[2].distance)[both]
+    return on, distance
 
 
 def _over_narrow_gap(
