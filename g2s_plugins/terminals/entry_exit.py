@@ -20,7 +20,9 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
    away: Recast erodes the walkable area by ``r``, so the navmesh boundary
    lies about ``r`` inside the real edge; it ends where three rays in a row meet
    no walkable face, so a gap between floor tiles or planks narrower than two
-   search steps is no edge; a ray meets
+   search steps is no edge, nor a gap across the way narrower than ``step_gap``
+   (the climb) whose far side faces the near one with ground within the climb
+   going on beyond it, which the agent steps over (its probes add to the reach); a ray meets
    the surface within the climb of the ground the one before it stood on, so
    the search walks down a stair; on a sampled surface, whose boundary stands
    farther inside the floor, a sample finding no way out looks again up to
@@ -155,8 +157,8 @@ Cost, for a navmesh of V vertices and B boundary edges, S samples (the
 boundary's length / ``sample_step``), k = ``fan_count`` and o openings:
 O(V log V + B log B) to chain the loops; rays, in batches: up to three to snap
 each sample, and per sample and fan direction one outward ray, at most
-``edge_search_radii * r / d`` downward probes (d = min(``sample_step``,
-r) / 4) and 4 bisection rays to find the surface's end, (agent height -
+``(edge_search_radii * r + step_gap) / d`` downward probes (d = min(``sample_step``,
+r) / 4), up to 5 rays more for a probe over a gap, and 4 bisection rays to find the surface's end, (agent height -
 climb) / d across the way for the directions clear so far, two more beyond it
 with ``leave_footprint``: O(S k (edge_search_radii r + agent height) / d) rays (up to twice
 that with ``step_up``, for the samples searched again from a step's top; on a sampled surface the probes reach
@@ -625,40 +627,17 @@ def _over_step_gap(
     (n,) m along ``down``, NaN: the origin's): both sides met, their faces' normals within 45 degrees of opposite in
     plan (:data:`_FACING_COS`), each side's distance taken square to its face, the two under the step gap; walkable
     ground within the climb just past both lips, and still two search steps past the far one (a strip the next
-    probes stand on, not a beam's top). Not the builder's own test (:func:`~g2s_plugins._raycasting.
+    probes stand on, not a beam's top): :func:`_narrow_gap_along` with those bounds. Not the builder's own test (:func:`~g2s_plugins._raycasting.
     ground_across_step_gap`, straight down along eight axes): at a floor's real end the search's probes, cast along a
     tilted floor's normal, meet no ground where straight down they do, and ground beside a probe along the end's own
     line counts for it, so that test put floors' ends up to a search step past their real ones and lost five
     known openings (docs/entry_exit.md, "Openings behind a gap the agent steps over"). Two rays a probe, three more
     where the gap is narrow enough: O(n).
     """
-    on, distance = np.zeros(len(probes), dtype=bool), np.full(len(probes), np.inf)
-    if not s.step_gap or not len(probes):
-        return on, distance
-    ground = np.where(np.isfinite(ground), ground, s.lift)
-    under = probes + down * (ground + s.delta / 16.0)[:, None]
-    ahead, behind = caster.first_hits_of([(under, directions), (under, -directions)])
-    met = np.isfinite(ahead.distance) & np.isfinite(behind.distance)
-    normals = [caster.face_normals[np.maximum(hit.face, 0)] for hit in (ahead, behind)]
-    across = sum(np.where(met, hit.distance, 0.0) * np.abs(np.einsum("ij,ij->i", n, directions))
-                 for hit, n in zip((ahead, behind), normals))
-    plan = [_unit(n * np.array([1.0, 0.0, 1.0])) for n in normals]
-    facing = np.einsum("ij,ij->i", plan[0], plan[1]) <= -_FACING_COS
-    rows = np.flatnonzero(met & facing & (across < s.step_gap))
-    if not len(rows):
-        return on, distance
-    past = s.delta / 16.0  # onto each side's top, past its lip
-    far = probes[rows] + directions[rows] * (ahead.distance[rows] + past)[:, None]
-    sides = caster.first_hits_of([
-        (far, down[rows]),
-        (far + directions[rows] * (2.0 * s.delta), down[rows]),
-        (probes[rows] - directions[rows] * (behind.distance[rows] + past)[:, None], down[rows]),
-    ])
-    reach = ground[rows] + s.climb
-    both = np.logical_and.reduce([(hit.distance <= reach) & _walkable(caster, hit.face, s) for hit in sides])
-    on[rows[both]] = True
-    distance[rows[both]] = np.minimum(sides[0].distance, sides[2].distance)[both]
-    return on, distance
+    if not s.step_gap:
+        return np.zeros(len(probes), dtype=bool), np.full(len(probes), np.inf)
+    return _narrow_gap_along(caster, probes, directions, down, np.where(np.isfinite(ground), ground, s.lift), s,
+                             width=s.step_gap, facing=True, strip=2.0 * s.delta)
 
 
 def _over_narrow_gap(
@@ -708,10 +687,13 @@ def _narrow_gap_at(
 
 
 def _narrow_gap_along(
-    caster: RayCaster, probes: np.ndarray, directions: np.ndarray, down: np.ndarray, ground: np.ndarray, s: _Settings
+    caster: RayCaster, probes: np.ndarray, directions: np.ndarray, down: np.ndarray, ground: np.ndarray, s: _Settings,
+    width: float | None = None, facing: bool = False, strip: float = 0.0,
 ) -> tuple[np.ndarray, np.ndarray]:
-    """Which probes stand over a gap narrower than two search steps measured along ``directions`` ((n,3)) and back,
-    and how far along ``down`` the ground beside it lies (:func:`_over_narrow_gap`)."""
+    """Which probes stand over a gap narrower than ``width`` m (None: two search steps) measured along ``directions``
+    ((n,3)) and back, and how far along ``down`` the ground beside it lies (:func:`_over_narrow_gap`). ``facing``: its
+    sides' faces also lie within 45 degrees of opposite in plan (:data:`_FACING_COS`); ``strip`` (m): the far side's
+    ground also goes on that far past its lip (:func:`_over_step_gap`)."""
     on, distance = np.zeros(len(probes), dtype=bool), np.full(len(probes), np.inf)
     if not len(probes):
         return on, distance
@@ -723,14 +705,19 @@ def _narrow_gap_along(
         met = np.isfinite(hit.distance)
         cos = np.abs(np.einsum("ij,ij->i", caster.face_normals[np.maximum(hit.face, 0)], directions))
         across.append(np.where(met, np.where(met, hit.distance, 0.0) * cos, np.inf))
-    rows = np.flatnonzero(across[0] + across[1] < 2.0 * s.delta)
+    narrow = across[0] + across[1] < (2.0 * s.delta if width is None else width)
+    if facing:
+        plan = [_unit(caster.face_normals[np.maximum(hit.face, 0)] * np.array([1.0, 0.0, 1.0])) for hit in (ahead, behind)]
+        narrow &= np.einsum("ij,ij->i", plan[0], plan[1]) <= -_FACING_COS
+    rows = np.flatnonzero(narrow)
     if not len(rows):
         return on, distance
     past = s.delta / 16.0  # onto each side's top, past its edge
+    far = probes[rows] + directions[rows] * (ahead.distance[rows] + past)[:, None]
     sides = caster.first_hits_of([
-        (probes[rows] + directions[rows] * (ahead.distance[rows] + past)[:, None], down[rows]),
+        (far, down[rows]),
         (probes[rows] - directions[rows] * (behind.distance[rows] + past)[:, None], down[rows]),
-    ])
+    ] + ([(far + directions[rows] * strip, down[rows])] if strip > 0.0 else []))
     reach = ground[rows] + s.climb
     both = np.logical_and.reduce([(hit.distance <= reach) & _walkable(caster, hit.face, s) for hit in sides])
     on[rows[both]] = True
