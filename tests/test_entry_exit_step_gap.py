@@ -8,9 +8,14 @@ Two rules that saw ground past the gap everywhere lost known doorways elsewhere:
 
 from __future__ import annotations
 
+import numpy as np
 import pytest
 
+from g2s_core.config import load_config
+from g2s_core.model import RunContext
+from g2s_plugins.graph_builders import sampling
 from g2s_plugins.samples import pieces
+from g2s_plugins.terminals import entry_exit
 from tests.conftest import benchmark, piece_openings
 
 PRESETS = ["map_piece", "map_piece_sampling"]
@@ -43,13 +48,6 @@ def test_a_doorway_behind_a_cut_is_reached_past_the_search_reach(preset: str) ->
 
 def test_without_a_step_gap_the_gutter_ends_the_floor() -> None:
     # terminals.params.step_gap 0: gaps narrower than two search steps alone, as before the rule
-    from g2s_core.config import load_config
-    from g2s_core.model import RunContext
-    from g2s_plugins.graph_builders import sampling
-    from g2s_plugins.terminals import entry_exit
-
-    import numpy as np
-
     level = benchmark("piece_kinds35").gutter_inside_doorway(width=0.35, depth=1.0)
     agent = load_config("configs/map_piece_sampling.yaml").agent
     ctx = RunContext(mesh=level.mesh, agent=agent, centre=np.asarray(level.mesh.bounds).mean(axis=0))
