@@ -12,10 +12,10 @@ known, the two doorways (1.6 m at (-0.3, 3.0) facing west and at (8.3, 3.0) faci
 the gap is wider than the step gap and the east doorway lies beyond a slot the agent does not cross (the strip past
 the gap, 0.1 m clear of the wall, holds no floor the agent stands on); the known openings stay the two the designer
 built, so the table's score is read with the openings listed (``--detail``): a designer should see the west doorway
-alone there, and both routes show the gap's edge as a 5-6 m opening instead; so they do at 0.2-0.35, where the
-table counts the gap's edge as the east doorway (docs/entry_exit.md, "A room cut inside its doorway (7 December
-2026)": the terminals' use of the step gap was measured and taken back). Built with :mod:`piece_parts`, in the
-earlier rounds' conventions.
+alone there, and both routes show the gap's edge as a 5-6 m opening instead. At 0.2-0.35 both routes find the east
+doorway since the floor's end search steps over such a gap (``terminals.params.step_gap``; docs/entry_exit.md,
+"Openings behind a gap the agent steps over"); before, the table counted the gap's edge as the east doorway. Built
+with :mod:`piece_parts`, in the earlier rounds' conventions.
 """
 
 from __future__ import annotations

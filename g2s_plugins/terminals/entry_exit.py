@@ -20,7 +20,9 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
    away: Recast erodes the walkable area by ``r``, so the navmesh boundary
    lies about ``r`` inside the real edge; it ends where three rays in a row meet
    no walkable face, so a gap between floor tiles or planks narrower than two
-   search steps is no edge; a ray meets
+   search steps is no edge, nor a gap across the way narrower than ``step_gap``
+   (the climb) whose far side faces the near one with ground within the climb
+   going on beyond it, which the agent steps over (its probes add to the reach); a ray meets
    the surface within the climb of the ground the one before it stood on, so
    the search walks down a stair; on a sampled surface, whose boundary stands
    farther inside the floor, a sample finding no way out looks again up to
@@ -155,8 +157,8 @@ Cost, for a navmesh of V vertices and B boundary edges, S samples (the
 boundary's length / ``sample_step``), k = ``fan_count`` and o openings:
 O(V log V + B log B) to chain the loops; rays, in batches: up to three to snap
 each sample, and per sample and fan direction one outward ray, at most
-``edge_search_radii * r / d`` downward probes (d = min(``sample_step``,
-r) / 4) and 4 bisection rays to find the surface's end, (agent height -
+``(edge_search_radii * r + step_gap) / d`` downward probes (d = min(``sample_step``,
+r) / 4), up to 5 rays more for a probe over a gap, and 4 bisection rays to find the surface's end, (agent height -
 climb) / d across the way for the directions clear so far, two more beyond it
 with ``leave_footprint``: O(S k (edge_search_radii r + agent height) / d) rays (up to twice
 that with ``step_up``, for the samples searched again from a step's top; on a sampled surface the probes reach
@@ -313,6 +315,15 @@ class Params(PluginParams):
         description="a curved edge matches a segment when its local direction stays this close to the "
         "boundary's, degrees",
     )
+    step_gap: float | None = Field(
+        None,
+        ge=0,
+        le=100,
+        description="the floor's end search steps over a gap across the way narrower than this, m, whose far side "
+        "faces its near one and holds walkable ground within the climb going on beyond it (a gutter or a slot just "
+        "inside a doorway); None: the agent's max climb, the sampling builder's default step gap; 0: gaps narrower "
+        "than two search steps alone",
+    )
     leave_footprint: bool = Field(
         True,
         description="an exit must lead out of the piece: one agent radius beyond its edge nothing of the "
@@ -371,6 +382,7 @@ class _Settings:
     head: float  # height of the head-room rays over the surface: a search step under the agent's height
     search: float  # how far beyond the boundary the edge search looks for the surface's end
     farther: float  # how far it looks again from a sample that found no way out (a sampled surface's), else 0
+    step_gap: float  # the floor's end search steps over a gap across the way narrower than this, m (0: none)
 
 
 def _settings(params: Params, agent: AgentConfig, farther: float | None = None) -> _Settings:
@@ -391,6 +403,7 @@ def _settings(params: Params, agent: AgentConfig, farther: float | None = None) 
         head=float(agent.height) - delta,
         search=float(params.edge_search_radii) * r,
         farther=0.0 if farther is None else float(farther),
+        step_gap=climb if params.step_gap is None else float(params.step_gap),
     )
 
 
@@ -481,8 +494,13 @@ def _surface_ends(
                           f"{s.delta:.4g} m makes {steps:.3g} probes a sample, more than {_MAX_PROBE_RAYS:,}; use a smaller one")
     # whole search steps, counted in decimal as the parameters are written: 3.0 * 0.4 m is 1.2000000000000002 m,
     # which a ceiling in floating point made 25 steps (1.25 m) for 24
-    n_off = max(1, math.ceil(round(steps, _STEP_DIGITS)))
+    n_base = max(1, math.ceil(round(steps, _STEP_DIGITS)))
     counts = [max(1, math.ceil(round(r / s.delta, _STEP_DIGITS))) for r in reaches]  # each reach's probes
+    # A reach is counted on the floor: the probes over a gap the agent steps over (:func:`_over_step_gap`) add to it,
+    # so probes are cast as much farther as the step gap is wide (a doorway 0.4 m past a 0.35 m cut, its floor's end
+    # 1.27 m past the navmesh's boundary, lay beyond the 1.2 m reach)
+    n_gap = math.ceil(round(s.step_gap / s.delta, _STEP_DIGITS))
+    n_off = n_base + n_gap
     offsets = s.delta * np.arange(1, n_off + 1)
     lo = np.full((len(reaches), len(origins)), np.nan)
     # how far the ground stood on last lies below the origin's, down a stair only
@@ -499,7 +517,11 @@ def _surface_ends(
         # A probe in a crack running along the way (a grating's slot, the way out within a few degrees of
         # it) stays in it from one probe to the next: it stands on the surface when surface lies a search
         # step to both sides of it, across the way (beyond an edge oblique to the way, one side at most).
-        ground = _nearest_ground(~missing.reshape(-1, n_off), hits.distance.reshape(-1, n_off)).ravel()
+        # (over the reach's own probes, as without the step gap's: a row with no ground in them measures from the
+        # origin's, not from ground the probes cast farther for a stepped gap find)
+        on, far = ~missing.reshape(-1, n_off), hits.distance.reshape(-1, n_off)
+        ground = np.concatenate([_nearest_ground(on[:, :n_base], far[:, :n_base]), _nearest_ground(on, far)[:, n_base:]],
+                                axis=1).ravel()
         rows = np.flatnonzero(missing)
         side = s.delta * _unit(np.cross(directions[part][rows // n_off], UP))
         across, beside = ground_across_crack(
@@ -512,6 +534,16 @@ def _surface_ends(
                                         ground[still], s)
         gapped = np.flatnonzero(~across)
         across[gapped], beside[gapped] = over, beyond
+        # ... and one over a wider gap across the way that the agent steps over, onto a floor going on beyond it
+        # (:func:`_over_step_gap`; the search's probes alone: the bisection places an end the search decided)
+        left = rows[~across]
+        stepped, ground_beyond = _over_step_gap(caster, probes[left], directions[part][left // n_off], probe_down[left],
+                                                ground[left], s)
+        gapped = np.flatnonzero(~across)
+        across[gapped], beside[gapped] = stepped, ground_beyond
+        over_gap = np.zeros(len(probes), dtype=bool)
+        over_gap[left[stepped]] = True
+        over_gap = over_gap.reshape(-1, n_off)
         missing[rows] = ~across
         # such a probe stands on the ground beside the crack: the walk down steps goes on from there, not from
         # whatever lies under the crack (a floor below a catwalk's slot)
@@ -520,14 +552,18 @@ def _surface_ends(
         missing, walkable = missing.reshape(-1, n_off), walkable.reshape(-1, n_off)
         depth = distance.reshape(-1, n_off) - s.lift
         for r, count in enumerate(counts):
-            ends, before = _down_steps(missing[:, :count], depth[:, :count], walkable[:, :count], s.climb)
-            stood = _nearest_ground(~ends, depth[:, :count] + s.lift)
+            reached = count + over_gap[:, :count + n_gap].sum(axis=1)  # the reach's probes, and as many over gaps
+            beyond = np.arange(n_off)[None, :] >= reached[:, None]
+            # the probes beyond a row's reach find nothing, so its last probes are its ends as at the end of a row
+            ends, before = _down_steps(missing | beyond, np.where(beyond, np.inf, depth), walkable & ~beyond, s.climb)
+            stood = _nearest_ground(~ends, depth + s.lift)
             # The surface ends where three probes in a row find none: a gap narrower than two search steps
             # (unwelded floor tiles, planks laid 6 cm apart) is no edge, and neither the agent nor Recast's voxels
             # see it; at two in a row two probes fell in one 6 cm gap (docs/entry_exit.md, "An eighteenth round of
             # piece kinds"). A search's last probe finding none is an end, and so are its last two.
             ends[:, :-2] &= ends[:, 1:-1] & ends[:, 2:]
             ends[:, -2:-1] &= ends[:, -1:]
+            ends &= ~beyond
             end = np.argmax(ends, axis=1)
             lo[r, part] = np.where(ends.any(axis=1), end * s.delta, np.nan)
             drop[r, part] = before[np.arange(len(end)), end]
@@ -569,6 +605,40 @@ def _nearest_ground(on: np.ndarray, distance: np.ndarray) -> np.ndarray:
     first = np.minimum.accumulate(np.where(on, np.arange(k)[None, :], k)[:, ::-1], axis=1)[:, ::-1]
     near = np.where(last >= 0, last, first)
     return np.where(near < k, np.take_along_axis(distance, np.minimum(near, k - 1), axis=1), np.nan)
+
+
+_FACING_COS = math.cos(math.radians(45.0))
+"""A gap's far side faces its near one when their faces' normals lie within 45 degrees of opposite in plan: the two
+lips of a gutter or slot are parallel, and what the rays meet at a floor's end beside another thing's side (a store
+room's wall beside a doorway's floor) stands square to it (:func:`_over_step_gap`)."""
+
+
+def _over_step_gap(
+    caster: RayCaster, probes: np.ndarray, directions: np.ndarray, down: np.ndarray, ground: np.ndarray, s: _Settings
+) -> tuple[np.ndarray, np.ndarray]:
+    """Which of the (n,3) ``probes`` that found no ground, and no gap narrower than two search steps
+    (:func:`_over_narrow_gap`), stand over a gap across the way narrower than the step gap (``s.step_gap``) that the
+    agent steps over, and how far along ``down`` ((n,3)) from them the nearer side's ground lies ((n,) m, inf where
+    not).
+
+    The product's rule (docs/sampling.md, "Narrow gaps between floors"): the agent steps over a gap narrower than
+    the step gap (by default its climb) between floors within its climb of each other, so a gutter or slot 0.15-0.39
+    m wide just inside a doorway, deeper than the climb, is no floor's end, and the doorway beyond it is an opening.
+    Measured along the way (``directions`` (n,3)) and back, a sixteenth of a step under the ground's top (``ground``
+    (n,) m along ``down``, NaN: the origin's): both sides met, their faces' normals within 45 degrees of opposite in
+    plan (:data:`_FACING_COS`), each side's distance taken square to its face, the two under the step gap; walkable
+    ground within the climb just past both lips, and still two search steps past the far one (a strip the next
+    probes stand on, not a beam's top): :func:`_narrow_gap_along` with those bounds. Not the builder's own test (:func:`~g2s_plugins._raycasting.
+    ground_across_step_gap`, straight down along eight axes): at a floor's real end the search's probes, cast along a
+    tilted floor's normal, meet no ground where straight down they do, and ground beside a probe along the end's own
+    line counts for it, so that test put floors' ends up to a search step past their real ones and lost five
+    known openings (docs/entry_exit.md, "Openings behind a gap the agent steps over"). Two rays a probe, three more
+    where the gap is narrow enough: O(n).
+    """
+    if not s.step_gap:
+        return np.zeros(len(probes), dtype=bool), np.full(len(probes), np.inf)
+    return _narrow_gap_along(caster, probes, directions, down, np.where(np.isfinite(ground), ground, s.lift), s,
+                             width=s.step_gap, facing=True, strip=2.0 * s.delta)
 
 
 def _over_narrow_gap(
@@ -618,10 +688,13 @@ def _narrow_gap_at(
 
 
 def _narrow_gap_along(
-    caster: RayCaster, probes: np.ndarray, directions: np.ndarray, down: np.ndarray, ground: np.ndarray, s: _Settings
+    caster: RayCaster, probes: np.ndarray, directions: np.ndarray, down: np.ndarray, ground: np.ndarray, s: _Settings,
+    width: float | None = None, facing: bool = False, strip: float = 0.0,
 ) -> tuple[np.ndarray, np.ndarray]:
-    """Which probes stand over a gap narrower than two search steps measured along ``directions`` ((n,3)) and back,
-    and how far along ``down`` the ground beside it lies (:func:`_over_narrow_gap`)."""
+    """Which probes stand over a gap narrower than ``width`` m (None: two search steps) measured along ``directions``
+    ((n,3)) and back, and how far along ``down`` the ground beside it lies (:func:`_over_narrow_gap`). ``facing``: its
+    sides' faces also lie within 45 degrees of opposite in plan (:data:`_FACING_COS`); ``strip`` (m): the far side's
+    ground also goes on that far past its lip (:func:`_over_step_gap`)."""
     on, distance = np.zeros(len(probes), dtype=bool), np.full(len(probes), np.inf)
     if not len(probes):
         return on, distance
@@ -633,14 +706,19 @@ def _narrow_gap_along(
         met = np.isfinite(hit.distance)
         cos = np.abs(np.einsum("ij,ij->i", caster.face_normals[np.maximum(hit.face, 0)], directions))
         across.append(np.where(met, np.where(met, hit.distance, 0.0) * cos, np.inf))
-    rows = np.flatnonzero(across[0] + across[1] < 2.0 * s.delta)
+    narrow = across[0] + across[1] < (2.0 * s.delta if width is None else width)
+    if facing:
+        plan = [_unit(caster.face_normals[np.maximum(hit.face, 0)] * np.array([1.0, 0.0, 1.0])) for hit in (ahead, behind)]
+        narrow &= np.einsum("ij,ij->i", plan[0], plan[1]) <= -_FACING_COS
+    rows = np.flatnonzero(narrow)
     if not len(rows):
         return on, distance
     past = s.delta / 16.0  # onto each side's top, past its edge
+    far = probes[rows] + directions[rows] * (ahead.distance[rows] + past)[:, None]
     sides = caster.first_hits_of([
-        (probes[rows] + directions[rows] * (ahead.distance[rows] + past)[:, None], down[rows]),
+        (far, down[rows]),
         (probes[rows] - directions[rows] * (behind.distance[rows] + past)[:, None], down[rows]),
-    ])
+    ] + ([(far + directions[rows] * strip, down[rows])] if strip > 0.0 else []))
     reach = ground[rows] + s.climb
     both = np.logical_and.reduce([(hit.distance <= reach) & _walkable(caster, hit.face, s) for hit in sides])
     on[rows[both]] = True
