@@ -17,13 +17,12 @@ and the sampling route, and the designer's answer (h <= the agent's climb); ``--
 
 from __future__ import annotations
 
-import argparse
 import math
 from collections import defaultdict
 
 import numpy as np
 import trimesh
-from head_room import LIFTS, YAWS, navmesh_walks, sampling_walks
+from head_room import case_parser, navmesh_walks, sampling_walks
 from piece_parts import box, flight
 
 from g2s_core.config import PRESETS_DIR, load_config
@@ -66,13 +65,7 @@ def case_mesh(kind: str, h: float, yaw_deg: float = 0.0, lift: float = 0.0) -> t
 
 
 def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--presets", nargs="+", default=["map_analysis", "map_piece"])
-    parser.add_argument("--kinds", nargs="+", default=list(KINDS), choices=KINDS)
-    parser.add_argument("--heights", nargs="+", type=float, default=list(HEIGHTS))
-    parser.add_argument("--yaws", nargs="+", type=float, default=list(YAWS))
-    parser.add_argument("--lifts", nargs="+", type=float, default=list(LIFTS))
-    parser.add_argument("--no-sampling", action="store_true", help="the navmesh's answers alone")
+    parser = case_parser(__doc__.splitlines()[0], KINDS, "heights", HEIGHTS)
     parser.add_argument("--rows", action="store_true", help="print every case, not only the counts")
     args = parser.parse_args()
     turns = len(args.yaws) * len(args.lifts)

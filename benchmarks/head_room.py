@@ -130,15 +130,21 @@ def sampling_walks(mesh: trimesh.Trimesh, mids: np.ndarray, agent) -> bool:
     return nx.has_path(graph, a, b)
 
 
-def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+def case_parser(description: str, kinds: tuple[str, ...], measure: str, values: tuple[float, ...]) -> argparse.ArgumentParser:
+    """The command line of a sweep of cases: presets, kinds, the measured values (``--<measure>``, m), yaws and
+    lifts (shared with ``benchmarks/climb_steps.py``)."""
+    parser = argparse.ArgumentParser(description=description)
     parser.add_argument("--presets", nargs="+", default=["map_analysis", "map_piece"])
-    parser.add_argument("--kinds", nargs="+", default=list(KINDS), choices=KINDS)
-    parser.add_argument("--heads", nargs="+", type=float, default=list(HEADS))
+    parser.add_argument("--kinds", nargs="+", default=list(kinds), choices=kinds)
+    parser.add_argument(f"--{measure}", nargs="+", type=float, default=list(values))
     parser.add_argument("--yaws", nargs="+", type=float, default=list(YAWS))
     parser.add_argument("--lifts", nargs="+", type=float, default=list(LIFTS))
     parser.add_argument("--no-sampling", action="store_true", help="the navmesh's answers alone")
-    args = parser.parse_args()
+    return parser
+
+
+def main() -> None:
+    args = case_parser(__doc__.splitlines()[0], KINDS, "heads", HEADS).parse_args()
     print("preset kind head yaw lift navmesh sampling designer")
     for preset in args.presets:
         config = load_config(PRESETS_DIR / f"{preset}.yaml")
