@@ -229,15 +229,16 @@ def climb_cell_height(climb: float, height: float, level_height: float | None = 
     :data:`CLIMB_BAND`, so that Recast's climb of ``floor(climb / ch)`` cells is ``k`` cells, exactly the climb, and
     a step is climbed up to ``climb`` and refused from ``climb + ch`` whatever the alignment of its floors.
 
-    ``k`` is lowered (the cells made coarser) while the agent's ``height`` would need more than
-    ``VOXEL_LIMITS["walkableHeight"]`` cells or the level's ``level_height`` (m, ``None``: not known) more than
+    ``k`` is lowered (the cells made coarser) while the agent's ``height`` and ``climb`` together would need more
+    than ``VOXEL_LIMITS["walkableHeight"]`` less one cells (the span clearance Recast's links read, 8 bits) or the level's ``level_height`` (m, ``None``: not known) more than
     :data:`MAX_SPAN_HEIGHT` less two; ``None`` when no ``k`` >= 1 fits, or without a climb.
     """
     if not climb > 0:
         return None
     k = math.ceil(climb / CLIMB_BAND - 1e-9)
-    # the coarsest cell each limit allows, a millionth over it for float32's rounding of the quotients
-    coarsest = height / VOXEL_LIMITS["walkableHeight"] * (1 + 1e-6)
+    # the coarsest cell each limit allows, a millionth over it for float32's rounding of the quotients; Recast keeps a
+    # span's clearance in 8 bits, so a step is linked only where the agent's height and the step fit in them together
+    coarsest = (height + climb) / (VOXEL_LIMITS["walkableHeight"] - 1) * (1 + 1e-6)
     if level_height is not None:
         coarsest = max(coarsest, level_height / (MAX_SPAN_HEIGHT - 2) * (1 + 1e-6))
     k = min(k, math.floor(climb / coarsest))
