@@ -37,6 +37,17 @@ def test_a_doorway_behind_a_deep_gutter_the_agent_steps_over_is_an_opening(prese
 
 
 @pytest.mark.parametrize("preset", PRESETS)
+@pytest.mark.parametrize("sill", [-0.02, -0.2, 0.2])
+def test_a_doorway_behind_a_gutter_is_found_with_its_floor_a_little_lower_or_higher(preset: str, sill: float) -> None:
+    # the doorway's floor beyond the gutter lower than the room's within the climb: the rays a sixteenth of a step
+    # under the room's floor passed over its lip, and the doorway was lost (review56 MED 3)
+    level = benchmark("piece_kinds35").gutter_inside_doorway(width=0.3, depth=1.0, sill=sill)
+    openings = piece_openings(level, preset)
+    east = [o for o in openings if abs(o.position[0] - 8.3) < 0.2 and abs(o.position[2] - 3.0) < 0.2]
+    assert len(openings) == 2 and len(east) == 1 and abs(east[0].width - 1.6) < 0.1, openings
+
+
+@pytest.mark.parametrize("preset", PRESETS)
 def test_a_doorway_behind_a_cut_is_reached_past_the_search_reach(preset: str) -> None:
     # a cut 0.35 m wide, 0.1 m inside the east wall: the doorway's outer face lies 1.27 m past the navmesh's
     # boundary, beyond the 1.2 m reach, which the probes over the cut add to
