@@ -625,28 +625,20 @@ def _over_step_gap(
     the step gap (by default its climb) between floors within its climb of each other, so a gutter or slot 0.15-0.39
     m wide just inside a doorway, deeper than the climb, is no floor's end, and the doorway beyond it is an opening.
     Measured along the way (``directions`` (n,3)) and back, a sixteenth of a step under the ground's top (``ground``
-    (n,) m along ``down``, NaN: the origin's), and where that finds no such gap again just over the climb's depth
-    under it (a far floor lower than the near one within the climb, whose lip the first rays pass over): both sides met, their faces' normals within 45 degrees of opposite in
+    (n,) m along ``down``, NaN: the origin's): both sides met, their faces' normals within 45 degrees of opposite in
     plan (:data:`_FACING_COS`), each side's distance taken square to its face, the two under the step gap; walkable
     ground within the climb just past both lips, and still two search steps past the far one (a strip the next
     probes stand on, not a beam's top): :func:`_narrow_gap_along` with those bounds. Not the builder's own test (:func:`~g2s_plugins._raycasting.
     ground_across_step_gap`, straight down along eight axes): at a floor's real end the search's probes, cast along a
     tilted floor's normal, meet no ground where straight down they do, and ground beside a probe along the end's own
     line counts for it, so that test put floors' ends up to a search step past their real ones and lost five
-    known openings (docs/entry_exit.md, "Openings behind a gap the agent steps over"). Two rays a probe, two more
-    where the first find no gap, three more where the gap is narrow enough: O(n).
+    known openings (docs/entry_exit.md, "Openings behind a gap the agent steps over"). Two rays a probe, three more
+    where the gap is narrow enough: O(n).
     """
     if not s.step_gap:
         return np.zeros(len(probes), dtype=bool), np.full(len(probes), np.inf)
-    ground = np.where(np.isfinite(ground), ground, s.lift)
-    on, distance = _narrow_gap_along(caster, probes, directions, down, ground, s, width=s.step_gap, facing=True,
-                                     strip=2.0 * s.delta)
-    lower = np.flatnonzero(~on)  # a far floor lower within the climb: its lip lies under the first rays
-    if len(lower):
-        on[lower], distance[lower] = _narrow_gap_along(
-            caster, probes[lower], directions[lower], down[lower], ground[lower], s, width=s.step_gap, facing=True,
-            strip=2.0 * s.delta, under=s.climb - s.delta / 8.0)
-    return on, distance
+    return _narrow_gap_along(caster, probes, directions, down, np.where(np.isfinite(ground), ground, s.lift), s,
+                             width=s.step_gap, facing=True, strip=2.0 * s.delta)
 
 
 def _over_narrow_gap(
@@ -697,18 +689,17 @@ def _narrow_gap_at(
 
 def _narrow_gap_along(
     caster: RayCaster, probes: np.ndarray, directions: np.ndarray, down: np.ndarray, ground: np.ndarray, s: _Settings,
-    width: float | None = None, facing: bool = False, strip: float = 0.0, under: float = 0.0,
+    width: float | None = None, facing: bool = False, strip: float = 0.0,
 ) -> tuple[np.ndarray, np.ndarray]:
     """Which probes stand over a gap narrower than ``width`` m (None: two search steps) measured along ``directions``
     ((n,3)) and back, and how far along ``down`` the ground beside it lies (:func:`_over_narrow_gap`). ``facing``: its
     sides' faces also lie within 45 degrees of opposite in plan (:data:`_FACING_COS`); ``strip`` (m): the far side's
-    ground also goes on that far past its lip (:func:`_over_step_gap`); ``under`` (m): the rays run that much lower
-    again (the ground beside still within the climb of ``ground``)."""
+    ground also goes on that far past its lip (:func:`_over_step_gap`)."""
     on, distance = np.zeros(len(probes), dtype=bool), np.full(len(probes), np.inf)
     if not len(probes):
         return on, distance
-    level = probes + down * (ground + s.delta / 16.0 + under)[:, None]
-    ahead, behind = caster.first_hits_of([(level, directions), (level, -directions)])
+    under = probes + down * (ground + s.delta / 16.0)[:, None]
+    ahead, behind = caster.first_hits_of([(under, directions), (under, -directions)])
     # each side's distance across it (square to the face met): a way along a slot meets its sides far off
     across = []
     for hit in (ahead, behind):
