@@ -129,8 +129,8 @@ class RecastParams(PluginParams):
         "a step up to a cell height over or under max_climb by where its floors lie between cell boundaries (0.375-"
         "0.5 m for 0.4 m on 0.125 m cells); agent: when cell_height is None, max_climb / k for the least k that "
         "makes it at most 0.025 m, so that a step up to max_climb is climbed and none 0.025 m higher, at any "
-        "alignment (coarser where the level's height or the agent's needs it: Recast's spans hold 8191 cells, its "
-        "agent 255); the detail error keeps the metres of Recast's cell height. docs/navmesh.md, The climb at every "
+        "alignment (coarser where the level's height or the agent's height with its climb needs it: Recast's spans hold "
+        "8191 cells, a span's clearance 255); the detail error keeps the metres of Recast's cell height. docs/navmesh.md, The climb at every "
         "alignment",
     )
     head_room: Literal["agent", "recast"] = Field(
