@@ -101,3 +101,25 @@ def test_a_tall_level_builds_or_is_refused_in_one_line(tall):
     else:
         with pytest.raises(SettingsError, match="^mesh: .* cells of 0.125 m tall"):
             build_navmesh(vertices, faces, config.agent, params)
+
+
+@pytest.mark.parametrize("tall, agent_height, warned", [(0.0, 2.0, None), (300.0, 2.0, "level's 300.5 m"),
+                                                        (0.0, 10.0, "agent's height and climb (10 + 0.4 m)")])
+def test_coarser_climb_cells_are_named_in_a_warning(tall, agent_height, warned):
+    # review56 LOW 5: a tall level or agent gets cells coarser than the climb band, so a step a little over the climb
+    # may be climbed again; the run says so, with the cell height and its cause
+    from g2s_core.model import RunContext
+    from g2s_plugins.graph_builders import navmesh as builder
+
+    mesh, _ = climb_steps.case_mesh("table", 0.3, 0.0, 0.0)
+    if tall:
+        mesh = trimesh.util.concatenate([mesh, climb_steps.box(5.0, 5.2, 0.0, tall, 5.0, 5.2)])
+    config = load_config(PRESETS_DIR / "map_analysis.yaml")
+    agent = config.agent.model_copy(update={"height": agent_height})
+    context = RunContext(mesh=mesh, agent=agent, centre=np.asarray(mesh.bounds.mean(axis=0)))
+    builder.g2s_build_graph(mesh=mesh, params=builder.Params(**config.graph.params), context=context)
+    coarse = [w for w in context.warnings if w.startswith("graph.params.climb: agent")]
+    if warned is None:
+        assert not coarse
+    else:
+        assert len(coarse) == 1 and warned in coarse[0] and "m over the agent's climb of 0.4 m" in coarse[0]

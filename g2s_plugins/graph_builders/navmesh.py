@@ -63,7 +63,7 @@ from g2s_plugins._surface import MAX_SURFACE_GAP
 from g2s_plugins.area_gaps import likely_cause_of
 from g2s_plugins.play_space import PlaySpaceParams, cut_to_play_space
 from g2s_plugins.recast import NavMesh, RecastParams, SettingsError, build_navmesh
-from g2s_plugins.recast.settings import resolve_settings
+from g2s_plugins.recast.settings import coarse_climb_warning, resolve_settings
 from g2s_plugins.units_check import check_units
 from g2s_plugins.walkable_check import check_walkable_surface, no_walkable_surface
 
@@ -385,6 +385,9 @@ def g2s_build_graph(mesh, params, context):
     context.navmesh, context.likely_cause = navmesh, likely_cause_of(context.agent, navmesh, mesh=mesh)
     if len(navmesh.region_overlaps):
         context.warn(overlapping_regions_warning(navmesh.region_overlaps, params.partition))
+    level_height = float(np.ptp(mesh.vertices[:, 1])) if len(mesh.vertices) else 0.0
+    if coarse := coarse_climb_warning(navmesh.settings, params, level_height):
+        context.warn(coarse)
     graph = navmesh_graph(navmesh, context.agent, params.max_edge_gap)
     check_walkable_surface(graph, mesh, context)
     return cut_to_play_space(graph, params.play_points, context)

@@ -251,6 +251,22 @@ def climb_cell_height(climb: float, height: float, level_height: float | None = 
     return float(ch)
 
 
+def coarse_climb_warning(settings: dict[str, Any], params: RecastParams, level_height: float) -> str | None:
+    """The warning for a ``climb: agent`` build whose ``settings`` (:func:`resolve_settings`) have cells coarser than
+    :data:`CLIMB_BAND` (a level ``level_height`` m tall, or a tall agent, needs them), so that a step a little over the
+    climb may be climbed by where its floors lie; ``None`` when the cells are that fine, or not chosen by the climb."""
+    ch, climb = settings["cell_height"], settings["agent_max_climb"]
+    if params.climb != "agent" or params.cell_height is not None or not climb > 0 or ch <= CLIMB_BAND * (1 + 1e-6):
+        return None
+    agent_fits = (climb_cell_height(climb, settings["agent_height"]) or math.inf) <= CLIMB_BAND * (1 + 1e-6)
+    cause = (f"the level's {level_height:.4g} m of height in Recast's {MAX_SPAN_HEIGHT} cells" if agent_fits else
+             f"the agent's height and climb ({settings['agent_height']:g} + {climb:g} m) in Recast's 8-bit span "
+             f"clearance")
+    return (f"graph.params.climb: agent: the navmesh's cells are {ch:.3g} m high, not {CLIMB_BAND:g} m, to hold "
+            f"{cause}; a step up to {ch:.3g} m over the agent's climb of {climb:g} m may be climbed by where its "
+            f"floors lie (docs/navmesh.md, \"The climb at every alignment\")")
+
+
 def resolve_settings(agent: Any, params: RecastParams | None = None,
                      level_height: float | None = None) -> dict[str, Any]:
     """The world-unit settings passed to the extension, with the cell sizes resolved.
