@@ -24,7 +24,7 @@ from collections.abc import Callable
 
 import numpy as np
 import trimesh
-from level_kinds import _ridged, _Solids, _trunk
+from level_kinds import _lid, _ridged, _Solids, _trunk
 from level_kinds import main as write_kinds
 from level_kinds30 import _placed
 
@@ -361,6 +361,7 @@ def rubble_nave(seed: int) -> trimesh.Trimesh:
     length, width = bays * pitch, nave + 2 * aisle
     x1, z1 = x0 + length, z0 + width
     s = _Solids()
+    heap_plans: list[tuple[float, float, float, float]] = []  # the ground stops under each heap (no floor inside it)
     s.wall((x0, z0), (x1, z0), -0.1, 9.0, [(2.5 * pitch - 1.0, 2.0)], thickness=0.8)
     s.wall((x0, z1), (x1, z1), -0.1, 9.0, [(length - 2.5 * pitch - 1.0, 2.0)], thickness=0.8)
     s.wall((x0, z0), (x0, z1), -0.1, 9.0, [(aisle + nave / 2 - 1.5, 3.0)], thickness=0.8)
@@ -379,6 +380,7 @@ def rubble_nave(seed: int) -> trimesh.Trimesh:
             zm = (inner[0] + inner[1]) / 2
             foot = np.array([bx1 - run, zm])
             s.ramp(foot, np.array([bx1, zm]), 2.8, 0.0, g, thickness=g + 0.5)
+            heap_plans.append((float(foot[0]), bx1, zm - 1.4, zm + 1.4))
             along = math.tan(math.radians(heap["slope"]))
             for _ in range(int(rng.integers(6, 10))):  # rocks strewn on its face
                 t = float(rng.uniform(0.15, 0.85))
@@ -413,7 +415,7 @@ def rubble_nave(seed: int) -> trimesh.Trimesh:
         if rng.random() < 0.5:
             p[1] = z1 + 12.0 - p[1]
         s.rock(rng, p, 0.4, -0.1, float(rng.uniform(0.5, 1.2)))
-    s.ground(0.0, x1 + 12.0, 0.0, z1 + 12.0, 0.0, [])
+    s.ground(0.0, x1 + 12.0, 0.0, z1 + 12.0, 0.0, heap_plans)
     return s.mesh()
 
 
@@ -552,7 +554,7 @@ def open_stairs(seed: int) -> trimesh.Trimesh:
     s.box(0.0, sx, -0.3, 0.0, 0.0, sz)
     s.slab(0.0, sx, 0.0, sz, storey, [(ax0, ax1, az0, az1)])
     s.slab(0.0, sx, 0.0, sz, 2 * storey, [(ax0, ax1, az0, az1)] + wells)
-    s.box(0.0, sx, 3 * storey - 0.3, 3 * storey, 0.0, sz)  # the roof (no way up)
+    _lid(s, 0.0, sx, 0.0, sz, 3 * storey - 0.3)  # the roof, ridged: no floor on it
     for level in range(3):
         y = level * storey
         doors = [(sz / 2 - 1.0, 2.0)] if level == 0 else []
