@@ -756,7 +756,7 @@ def stile_fields(seed: int) -> trimesh.Trimesh:
                     s.rock(rng, p, 0.5, -0.1, float(rng.uniform(0.8, 1.6)))
                 else:
                     s.box(p[0] - 1.0, p[0] + 1.0, -0.1, 0.7, p[1] - 0.35, p[1] + 0.35)
-    s.ground(0.0, float(xs[-1]) + 4.0, 0.0, float(zs[-1]) + 4.0, 0.0, [])
+    s.ground(float(xs[0]), float(xs[-1]), 4.0, float(zs[-1]), 0.0, [])  # inside the boundary walls only
     return s.mesh()
 
 
