@@ -1,4 +1,4 @@
-"""The level kinds of rounds 9-37 (``benchmarks/level_kinds.py``, ``level_kinds26.py`` ... ``level_kinds37.py``) build
+"""The level kinds of rounds 9-38 (``benchmarks/level_kinds.py``, ``level_kinds26.py`` ... ``level_kinds38.py``) build
 the levels they describe.
 
 Smoke tests of quick generators (most well under a second each to build and to give a navmesh; the theatre's and
@@ -2090,3 +2090,124 @@ def test_the_parapet_roofs_parapets_are_climbed_by_the_agents_climb(round_37):
             elif lowest > 0.4:  # on the agent's cells the band 0.40-0.425 m is the grid's own
                 over_climb_joined += joined
         assert agent_climb or over_climb_joined >= 3, over_climb_joined
+
+
+@pytest.fixture(scope="module")
+def round_38() -> dict[str, Callable[..., trimesh.Trimesh]]:
+    """``benchmarks/level_kinds38.py``'s KINDS (the thirty-eighth round): each call builds its level anew."""
+    return benchmark("level_kinds38").KINDS
+
+
+def _main_area(label: np.ndarray, nav) -> int:
+    """The connected area holding the most walkable area."""
+    return int(np.argmax(np.bincount(label, weights=nav.areas)))
+
+
+def test_the_headstone_yards_plots_are_entered_only_between_stones_a_metre_apart(round_38):
+    """Plots ringed by thin headstones (seed 0): every plot whose widest gap is 0.81 m or less has no floor joined to
+    the paths, every plot with a gap of 1.1 m or more has (docs/analysis_quality.md, "A thirty-eighth round of level
+    kinds")."""
+    plan = benchmark("level_kinds38").headstone_yard_plan(0)
+    label, nav = areas(round_38["headstone_yard"](0), PRESET_GRID)
+    main = _main_area(label, nav)
+    cols, rows, (px, pz), path, (ox, oz) = plan["grid"]
+    for plot in plan["plots"]:
+        c, r = plot["cell"]
+        x0, z0 = ox + c * (px + path), oz + r * (pz + path)
+        inside = ((nav.centres[:, 0] > x0) & (nav.centres[:, 0] < x0 + px)
+                  & (nav.centres[:, 2] > z0) & (nav.centres[:, 2] < z0 + pz))
+        widest = max(gap for _, gap in plot["gaps"].values())
+        joined = bool((label[inside] == main).any())
+        if widest <= 0.81:
+            assert not joined, plot["cell"]
+        elif widest >= 1.1:
+            assert joined, plot["cell"]
+
+
+def test_the_coaming_decks_coamings_read_by_the_climb_and_its_tween_companionways_cut(round_38):
+    """Seed 0: cabins behind coamings of 0.25-0.34 m and hatch covers 0.33-0.38 m up are joined to the deck, those
+    of 0.435 m and more apart. The companionways to the tween deck (open treads 0.13-0.16 m deep, risers 0.21-0.22
+    m) are cut on the navmesh: a 0.25 m cell holds two tread edges, two risers over the climb, though each riser is
+    under it (the same on the sampling route's 0.25 m probes; docs/analysis_quality.md, "A thirty-eighth round of
+    level kinds")."""
+    plan = benchmark("level_kinds38").coaming_deck_plan(0)
+    label, nav = areas(round_38["coaming_deck"](0), PRESET_GRID)
+    main, beam = _main_area(label, nav), plan["beam"]
+    for cabin in plan["cabins"]:
+        z = 3.5 if cabin["side"] == "port" else beam - 3.5
+        poly = nav.nearest_poly([sum(cabin["x"]) / 2 + 0.5, 0.0, z], [0.6, 0.5, 0.6])[0]
+        assert poly >= 0
+        assert (label[poly] == main) == (cabin["coaming"] < 0.4), cabin
+    for hatch in plan["hatches"]:
+        poly = nav.nearest_poly([sum(hatch["x"]) / 2, hatch["coaming"], beam / 2], [0.6, 0.3, 0.6])[0]
+        assert poly >= 0
+        assert (label[poly] == main) == (hatch["coaming"] < 0.4), hatch
+    tween = nav.nearest_poly([30.0, -3.0, beam / 2], [0.6, 0.5, 0.6])[0]
+    assert tween >= 0 and label[tween] != main
+
+
+def test_the_rubble_naves_galleries_are_reached_up_heaps_under_the_slope_limit(round_38):
+    """Seed 0's south gallery is reached up a heap of 42.6 degrees, its north one (heaps of 50.4 and 47.6) apart;
+    seed 1's north gallery, up a heap of 41.2 degrees strewn with rocks 0.1-0.3 m proud, is apart on the navmesh too
+    (the rocks' steep faces and the erosion round them cut the heap's 1.3 m of walkable middle; without them it is
+    joined: docs/analysis_quality.md, "A thirty-eighth round of level kinds")."""
+    module = benchmark("level_kinds38")
+    for seed, joined in ((0, {"south": True, "north": False}), (1, {"south": True, "north": False})):
+        plan = module.rubble_nave_plan(seed)
+        label, nav = areas(round_38["rubble_nave"](seed), PRESET_GRID)
+        main = _main_area(label, nav)
+        width = plan["nave"] + 2 * plan["aisle"]
+        for name, z in (("south", 13.5), ("north", 12.0 + width - 1.5)):
+            poly = nav.nearest_poly([15.0, plan["gallery"], z], [0.6, 0.3, 0.6])[0]
+            assert poly >= 0
+            assert (label[poly] == main) == joined[name], (seed, name)
+
+
+def test_the_raised_beds_high_tops_keep_no_area(round_38):
+    """Beds 0.41-0.7 m high, tops 1.6-2.0 m across: the navmesh keeps no floor on them that is an area of its own
+    (the ledge rule's cell and the agent's radius off each edge leave under Recast's smallest region), so the
+    glasshouses are one area; no bed top joins the aisles over a step over 0.425 m (seed 0)."""
+    plan = benchmark("level_kinds38").raised_beds_plan(0)
+    label, nav = areas(round_38["raised_beds"](0), PRESET_GRID)
+    assert label.max() == 0
+    for house in plan["houses"]:
+        for half in house["halves"].values():
+            for (c, r), h in half["heights"].items():
+                (bx0, bx1), (bz0, bz1) = house["columns"][c], half["rows"][r]
+                on_top = ((nav.centres[:, 0] > bx0 + 0.3) & (nav.centres[:, 0] < bx1 - 0.3)
+                          & (nav.centres[:, 2] > bz0 + 0.3) & (nav.centres[:, 2] < bz1 - 0.3)
+                          & (np.abs(nav.centres[:, 1] - h) < 0.1))
+                assert h <= 0.425 or not on_top.any(), (c, r, h)
+
+
+def test_the_open_stairs_storeys_are_one_area(round_38):
+    """Floating open-riser treads (overlaps of -0.05 to +0.04 m, risers 0.17-0.20 m): all three storeys one area."""
+    for seed in (0, 1):
+        label, _ = areas(round_38["open_stairs"](seed), PRESET_GRID)
+        assert label.max() == 0, seed
+
+
+def test_the_stile_fields_areas_are_the_plans(round_38):
+    """Gates and step stiles of risers up to 0.4 m join fields, squeeze stiles (slots 0.25-0.45 m at the ground) and
+    stiles of risers over 0.425 m do not: seed 0's navmesh areas are the plan's groups of fields
+    (``stile_fields_areas``)."""
+    module = benchmark("level_kinds38")
+    plan = module.stile_fields_plan(0)
+    label, nav = areas(round_38["stile_fields"](0), PRESET_GRID)
+    xs = np.concatenate([[0.0], np.cumsum(plan["widths"])]) + 4.0
+    zs = np.concatenate([[0.0], np.cumsum(plan["depths"])]) + 9.0
+    field_area: dict = {}
+    for c in range(len(plan["widths"])):
+        for r in range(len(plan["depths"])):
+            for dx, dz in ((0.0, 0.0), (3.0, 0.0), (-3.0, 0.0), (0.0, 3.0), (0.0, -3.0)):
+                poly = nav.nearest_poly([(xs[c] + xs[c + 1]) / 2 + dx, 0.0, (zs[r] + zs[r + 1]) / 2 + dz],
+                                        [0.5, 0.5, 0.5])[0]
+                if poly >= 0:
+                    field_area[(c, r)] = int(label[poly])
+                    break
+    field_area[(-1, -1)] = int(label[nav.nearest_poly([xs[0] + 5.0, 0.0, 6.5], [0.5, 0.5, 0.5])[0]])
+    groups: dict = {}
+    for field, area in field_area.items():
+        groups.setdefault(area, set()).add(field)
+    assert sorted(map(sorted, groups.values())) == sorted(map(sorted, module.stile_fields_areas(plan)))
+    assert label.max() + 1 == len(groups)
