@@ -13,10 +13,9 @@ polygons and their shared edges (portals):
    pieces of at most :data:`PIECE`; the clearance of a point is its exact
    distance to the nearest piece (scipy ``cKDTree`` over the pieces'
    midpoints, heights scaled by :data:`HEIGHT_SCALE` so that another floor's
-   walls stay far). A polygon's clearance is the largest of its centre's and
-   those of the points halfway from it to each corner and edge middle, all at
-   the height of its corners, where the walls and portals are
-   (:func:`polygon_samples`); a portal's is the
+   walls stay far). A polygon's clearance is its centre's, measured
+   :data:`CENTRE_LIFT` over its floor whatever the navmesh's cell height
+   (:func:`measuring_heights`); a portal's is the
    largest clearance of points along it at most one navmesh cell apart (five
    at least, always its middle: :func:`portal_samples`), so a door's portal
    measures the middle of the door, and a long portal that crosses a passage
@@ -126,9 +125,7 @@ polygons and their shared edges (portals):
    walkable widths parts two pieces of one way (a causeway or a platform cut where a passing bay or a corner widens
    it for a few metres): the two join, again until none is left. A way :data:`WAY_ELONGATION` times as long as it
    is wide whose chokepoints, to two regions or more, each keep at least ``narrowness`` of its mean width (as narrow
-   as its openings: a long way, :func:`long_ways`) takes in the widenings beside it on its floor, the regions
-   smaller than it and no wider on average than it over ``narrowness`` (:func:`way_widenings`: a passing bay cut
-   off at both ends), in the same rounds; and it goes on to its ends: where the floor beyond a chokepoint is no wider than the chokepoint over
+   as its openings) goes on to its ends: where the floor beyond a chokepoint is no wider than the chokepoint over
    ``narrowness`` (:func:`local_widths`), the merge tree merged the way's last stretch into the region beyond (no
    wider than the way, so no room of its own); that stub, the polygons going on from the chokepoint on its floor as
    narrow (:func:`narrow_stub`), joins the way with what of the neighbour only it reaches, and the chokepoint moves
@@ -207,6 +204,14 @@ from g2s_plugins.play_space import held_polygons
 
 HEIGHT_SCALE = 4.0
 """Height differences count this many times in clearance distances, so a wall 2 m above is 8 m away."""
+
+CENTRE_LIFT = 0.125
+"""How high over its floor a polygon's centre is measured (m; :func:`measuring_heights`): Recast's detail surface, on
+which the centres lie, stands one cell height over the polygons' corners, where the walls and portals are, and the
+rooms' split and every constant below were measured on Recast's own 0.125 m cells, so with centres 0.125 m up (0.5 m
+in quadrature to a clearance, heights counted :data:`HEIGHT_SCALE` times). Fixed here, the split no longer depends on
+the cell height: on the agent's climb cells (0.025 m) the centres' own lift lost a pillared dungeon's door and cut
+nothing new (docs/plugins.md, "Regions on the agent's climb cells")."""
 
 FLAT_DEG = 10.0
 """Polygons within this angle of horizontal define the floors' height bands, degrees."""
@@ -569,10 +574,10 @@ def _distance_to(points: np.ndarray, start: np.ndarray, end: np.ndarray) -> np.n
 
 @dataclass(frozen=True)
 class Clearances:
-    """How far the navmesh's polygons and portals are from its walls, m.
+    """How far the navmesh's polygon centres and portals are from its walls, m.
 
     Attributes:
-        polygons: (P,) clearance of each polygon (its widest of :func:`polygon_samples`), small holes ignored.
+        polygons: (P,) clearance of each polygon centre (:func:`measuring_heights`), small holes ignored.
         portals_open: (E,) clearance of each portal, small holes ignored (with ``through_holes``, a portal ending on
             one measured through it: :func:`_through_holes`).
         portals: (E,) clearance of each portal, every wall counted.
@@ -595,44 +600,12 @@ class Clearances:
     left_out: np.ndarray
 
 
-def corner_heights(navmesh: Any) -> np.ndarray:
-    """(P,) the mean height of each polygon's corners, m: where its floor meets its walls and portals.
-
-    Recast lifts a polygon's centre onto its detail surface, one navmesh cell height above its corners (0.125 m on
-    Recast's own cells, 0.025 m on the agent's climb cells); with heights counted :data:`HEIGHT_SCALE` times, a
-    centre's clearance would gain that lift in quadrature (0.5 m against 0.1 m), so the rooms' split would depend
-    on the cell height (docs/plugins.md, "Regions on the agent's climb cells"). Measured at the corners' height, a
-    point is as high as the walls and portals it is compared with, whatever the cells."""
-    polygons = np.asarray(navmesh.polygons, dtype=np.int64)
-    valid = polygons >= 0
-    heights = np.asarray(navmesh.vertices, dtype=np.float64)[np.where(valid, polygons, 0), 1]
-    return np.where(valid, heights, 0.0).sum(axis=1) / np.maximum(valid.sum(axis=1), 1)
-
-
-def polygon_samples(navmesh: Any) -> tuple[np.ndarray, np.ndarray]:
-    """Points where each polygon's clearance is measured: (K, 3) points, m, and (K,) polygon index.
-
-    A polygon's centre, at its corners' mean height (:func:`corner_heights`), and the points halfway from it to each
-    of its corners and edge middles (on a ramp's plane, as its corners are). A room's polygons go round a pillar
-    left out of the clearances, so their centres lie off the room's middle: the points halfway out read the room's
-    widest floor. Measured on the pillared dungeon of tests/test_regions.py (seed 1), room 2 (5.5 x 6.5 m, a 1 m
-    pillar in its middle): 1.16 m at the widest centre in plan, 1.48 m with the points halfway out, on Recast's
-    cells and the agent's alike (docs/plugins.md, "Regions on the agent's climb cells"). Up to 1 + 2 x 6 points a
-    polygon.
-    """
-    polygons = np.asarray(navmesh.polygons, dtype=np.int64)
-    valid = polygons >= 0
-    count = len(polygons)
-    height = corner_heights(navmesh)
-    centre = np.asarray(navmesh.centres, dtype=np.float64).reshape(-1, 3).copy()
-    centre[:, 1] = height
-    corners = np.asarray(navmesh.vertices, dtype=np.float64)[np.where(valid, polygons, 0)]
-    following = np.roll(corners, -1, axis=1)
-    following[np.arange(count), valid.sum(axis=1) - 1] = corners[:, 0]  # each polygon's last corner closes on its first
-    halfway = 0.5 * (centre[:, None] + np.concatenate([corners, 0.5 * (corners + following)], axis=1))
-    points = np.concatenate([centre[:, None], halfway], axis=1)
-    kept = np.concatenate([np.ones((count, 1), dtype=bool), valid, valid], axis=1)
-    return points[kept], np.broadcast_to(np.arange(count)[:, None], kept.shape)[kept]
+def measuring_heights(navmesh: Any) -> np.ndarray:
+    """(P,) the height at which each polygon's centre is measured, m: :data:`CENTRE_LIFT` over its floor, whatever
+    the navmesh's cell height. Recast lifts its detail surface, and with it ``navmesh.centres``, one cell height over
+    the polygons' corners (measured: docs/plugins.md, "Regions on the agent's climb cells")."""
+    lift = float(navmesh.settings["cell_height"])
+    return np.asarray(navmesh.centres, dtype=np.float64)[:, 1] - lift + CENTRE_LIFT
 
 
 def portal_samples(ends: np.ndarray, spacing: float) -> tuple[np.ndarray, np.ndarray]:
@@ -772,11 +745,10 @@ def clearances(navmesh: Any, obstacle_area: float, wall_to_wall: float, through_
         portals_open = np.maximum(portals_open,
                                   _through_holes(ends, start, end, left_out, (start[~obstacle], end[~obstacle]),
                                                  wall_to_wall))
-    samples, owner = polygon_samples(navmesh)
-    polygon_clearance = np.zeros(navmesh.polygon_count)
-    np.maximum.at(polygon_clearance, owner, _distance_to(samples, start[~obstacle], end[~obstacle]))
+    centres = np.asarray(navmesh.centres, dtype=np.float64).reshape(-1, 3).copy()
+    centres[:, 1] = measuring_heights(navmesh)
     return Clearances(
-        polygons=polygon_clearance,
+        polygons=_distance_to(centres, start[~obstacle], end[~obstacle]),
         portals_open=portals_open,
         portals=every[widest],
         widest=points[widest],
@@ -1110,8 +1082,8 @@ def local_widths(navmesh: Any, labels: np.ndarray, points: np.ndarray, sides: np
     (C,) metres of the point in plan (0 where it has none).
 
     The floor is sampled on a square grid one navmesh cell apart, centred on the cut; a grid point belongs
-    to the group of the (convex) polygon holding it in plan and stands at that polygon's corners' height
-    (:func:`corner_heights`). On
+    to the group of the (convex) polygon holding it in plan and stands as high as that polygon's centre is measured
+    (:func:`measuring_heights`). On
     flat ground the largest sample is within 0.71 cells of the largest clearance.
     """
     polygons = np.asarray(navmesh.polygons, dtype=np.int64)
@@ -1122,7 +1094,7 @@ def local_widths(navmesh: Any, labels: np.ndarray, points: np.ndarray, sides: np
     following[np.arange(len(polygons)), last] = corners[:, 0]  # each polygon's last corner closes on its first
     low = np.where(valid[..., None], corners, np.inf).min(axis=1)
     high = np.where(valid[..., None], corners, -np.inf).max(axis=1)
-    heights = corner_heights(navmesh)
+    heights = measuring_heights(navmesh)
     cell = float(navmesh.settings["cell_size"])
     samples, owner = [], []
     for i, (point, pair, radius) in enumerate(zip(points, sides, reach)):
@@ -1556,46 +1528,11 @@ def way_width(radius: float, narrowness: float) -> float:
     return CORRIDOR_WIDTH * 2.0 * radius / narrowness
 
 
-def long_ways(sides: np.ndarray, width: np.ndarray, mean_width: np.ndarray, extent: np.ndarray, narrowness: float,
-              widest: float) -> np.ndarray:
-    """(G,) bool: which regions are long ways (step 3 of the module doc): at most ``widest`` m wide on average
-    (:func:`way_width`; ``mean_width`` (G,) m), at least :data:`WAY_ELONGATION` times as long as that (``extent``
-    (G,), m), with chokepoints (``sides`` (K, 2), ``width`` (K,) m) to two regions or more, each keeping at least
-    ``narrowness`` of the region's mean width: a causeway, a gallery, a long corridor, as narrow as its openings."""
-    count = len(mean_width)
-    both = np.concatenate([sides, sides[:, ::-1]])
-    narrow_enough = np.concatenate([width, width]) >= narrowness * mean_width[both[:, 0]]
-    neighbours = np.unique(both, axis=0)
-    return ((np.bincount(neighbours[:, 0], minlength=count) >= 2) & (mean_width <= widest)
-            & (extent >= WAY_ELONGATION * mean_width)
-            & (np.bincount(both[:, 0], weights=~narrow_enough, minlength=count) == 0))
-
-
-def way_widenings(sides: np.ndarray, floors: np.ndarray, way: np.ndarray, mean_width: np.ndarray, area: np.ndarray,
-                  narrowness: float) -> np.ndarray:
-    """(K,) bool: which chokepoints lead from a long way (``way`` (G,), :func:`long_ways`) into a widening of it on
-    its floor (``sides`` (K, 2), ``floors`` (K, 2)): a region that is no way itself, smaller than the way (``area``
-    (G,), m²) and no wider on average than the way over ``narrowness`` (``mean_width`` (G,), m): a passing bay, a
-    corner. Measured at its widest floor, such a bay is wider than the way's mouths into it by 1 / ``narrowness``,
-    so the merge tree cuts it off at both ends when the way's pieces beyond read wider (the land a causeway's first
-    stretch merged into, another bay); it is part of the way (docs/plugins.md, "Regions on the agent's climb
-    cells"). A room at a long corridor's end is wider than that, and a short corridor is no long way."""
-    if len(sides) == 0:
-        return np.zeros(0, dtype=bool)
-    widening = np.zeros(len(sides), dtype=bool)
-    for w, other in ((0, 1), (1, 0)):
-        a, b = sides[:, w], sides[:, other]
-        widening |= (way[a] & ~way[b] & (area[b] < area[a]) & (mean_width[b] * narrowness <= mean_width[a]))
-    return widening & (floors[:, 0] == floors[:, 1])
-
-
 def _join_way_pieces(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocked: np.ndarray,
                      clearance: Clearances, areas: np.ndarray, band: np.ndarray, radius: float, wall_to_wall: float,
                      params: DecompositionParams) -> np.ndarray:
-    """(P,) the regions ``labels`` with the two regions of every chokepoint between pieces of one way
-    (:func:`way_pieces`) or between a long way and a widening of it (:func:`way_widenings`) joined, again on the
-    joined regions until none is left (step 3 of the module doc)."""
-    widest = way_width(radius, params.narrowness)
+    """(P,) the regions ``labels`` with the two regions of every chokepoint between pieces of one way joined
+    (:func:`way_pieces`), again on the joined regions until none is left (step 3 of the module doc)."""
     while True:
         count = int(labels.max()) + 1 if len(labels) else 0
         kept = _kept_chokepoints(navmesh, labels, pairs, blocked, clearance, areas, band, wall_to_wall, params)
@@ -1603,12 +1540,9 @@ def _join_way_pieces(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocke
             return labels
         sides = np.array([k["regions"] for k in kept], dtype=np.int64)
         width = np.array([k["width"] for k in kept])
-        floors = np.array([k["floors"] for k in kept], dtype=np.int64)
-        mean_width, extent = mean_widths(navmesh, labels, areas)
-        way = long_ways(sides, width, mean_width, extent, params.narrowness, widest)
-        joins = (way_pieces(sides, floors, width, mean_width, params.narrowness, widest)
-                 | way_widenings(sides, floors, way, mean_width, np.bincount(labels, weights=areas, minlength=count),
-                                 params.narrowness))
+        joins = way_pieces(sides, np.array([k["floors"] for k in kept], dtype=np.int64), width,
+                           mean_widths(navmesh, labels, areas)[0], params.narrowness,
+                           way_width(radius, params.narrowness))
         if not joins.any():
             return labels
         labels = join_groups(labels, count, sides[joins])
@@ -1664,7 +1598,12 @@ def _way_ends(navmesh: Any, labels: np.ndarray, pairs: np.ndarray, blocked: np.n
     sides = np.array([k["regions"] for k in kept], dtype=np.int64)
     width = np.array([k["width"] for k in kept])
     mean_width, extent = mean_widths(navmesh, labels, areas)
-    way = long_ways(sides, width, mean_width, extent, params.narrowness, way_width(radius, params.narrowness))
+    both = np.concatenate([sides, sides[:, ::-1]])
+    narrow_enough = np.concatenate([width, width]) >= params.narrowness * mean_width[both[:, 0]]
+    neighbours = np.unique(both, axis=0)
+    way = ((np.bincount(neighbours[:, 0], minlength=count) >= 2) & (mean_width <= way_width(radius, params.narrowness))
+           & (extent >= WAY_ELONGATION * mean_width)
+           & (np.bincount(both[:, 0], weights=~narrow_enough, minlength=count) == 0))
     n = len(labels)
     csr = portals_of(pairs, n)
     points = np.array([k["position"] for k in kept])
