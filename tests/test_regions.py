@@ -953,12 +953,12 @@ def split_on_cells(level, climb: str) -> tuple[list[list[int]], list[tuple[float
     raw.setdefault("graph", {}).setdefault("params", {})["climb"] = climb
     result = run(level, parse_config(raw))
     assert result.context.navmesh.settings["cell_height"] == pytest.approx({"recast": 0.125, "agent": 0.025}[climb])
-    return (sorted(r["polygons"] for r in regions(result)),
-            sorted(tuple(round(v, 2) for v in (c["position"][0], c["position"][2], c["width"])) for c in chokepoints(result)))
+    doors = (tuple(round(v, 2) for v in (c["position"][0], c["position"][2], c["width"])) for c in chokepoints(result))
+    return sorted(r["polygons"] for r in regions(result)), sorted(doors)
 
 
-@pytest.mark.parametrize("level", [lambda: dungeon(seed=1, rooms=12, obstacles=0.3), lambda: load_sample("building", seed=2)],
-                         ids=["pillared dungeon", "building seed 2"])
+@pytest.mark.parametrize("level", [lambda: dungeon(seed=1, rooms=12, obstacles=0.3),
+                                   lambda: load_sample("building", seed=2)], ids=["pillared dungeon", "building seed 2"])
 def test_rooms_and_doors_are_the_same_on_recast_cells_and_on_the_agents_climb_cells(level):
     # both navmeshes have the same polygons in plan; the centres stand one cell height over their corners (Recast's
     # detail surface), which counted 4 times added 0.5 m in quadrature to the rooms' clearances on Recast's cells and
