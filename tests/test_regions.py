@@ -958,7 +958,7 @@ def split_on_cells(level, climb: str) -> tuple[list[list[int]], list[tuple[float
 
 
 @pytest.mark.parametrize("level", [lambda: dungeon(seed=1, rooms=12, obstacles=0.3),
-                                   lambda: load_sample("building", seed=2)], ids=["pillared dungeon", "building seed 2"])
+                                   lambda: load_sample("building", seed=2)], ids=["pillared dungeon", "building 2"])
 def test_rooms_and_doors_are_the_same_on_recast_cells_and_on_the_agents_climb_cells(level):
     # both navmeshes have the same polygons in plan; the centres stand one cell height over their corners (Recast's
     # detail surface), which counted 4 times added 0.5 m in quadrature to the rooms' clearances on Recast's cells and
