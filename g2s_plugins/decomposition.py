@@ -1298,7 +1298,7 @@ class PolygonWalks:
     """Walks on the navmesh's polygon graph: from a polygon's centre to a portal's middle to the next centre, m.
 
     Attributes:
-        centres: (P, 3) polygon centres, m.
+        centres: (P, 3) polygon centres, as high as they are measured (:func:`measuring_heights`), m.
         pairs: (E, 2) each portal's two polygons.
         steps: (E,) the walk across each portal, centre to its middle to centre, m.
         portals_of: CSR of polygon -> portal ids, ``(indptr (P+1,), portal ids (2E,))``.
@@ -1313,8 +1313,11 @@ class PolygonWalks:
 
     @classmethod
     def of(cls, navmesh: Any, pairs: np.ndarray, endpoints: np.ndarray) -> PolygonWalks:
-        """The walks of ``navmesh`` (``pairs`` (E, 2) and ``endpoints`` (E, 2, 3): its portals)."""
-        centres = np.asarray(navmesh.centres, dtype=np.float64)
+        """The walks of ``navmesh`` (``pairs`` (E, 2) and ``endpoints`` (E, 2, 3): its portals), from centres as high
+        as they are measured (:func:`measuring_heights`): Recast's lift of one cell height made each step longer on
+        coarser cells, enough to part a school's ground-floor rooms on Recast's cells and join them on the agent's."""
+        centres = np.asarray(navmesh.centres, dtype=np.float64).reshape(-1, 3).copy()
+        centres[:, 1] = measuring_heights(navmesh)
         middle = endpoints.mean(axis=1)
         steps = (np.linalg.norm(centres[pairs[:, 0]] - middle, axis=1)
                  + np.linalg.norm(centres[pairs[:, 1]] - middle, axis=1))

@@ -669,14 +669,19 @@ def test_local_widths_of_a_corridor_and_of_the_room_it_opens_into(cell_height):
 
 def test_walks_round_a_block_on_the_polygon_graph():
     # four polygons round a 2 x 2 m block: A (bottom), B (right), C (top), D (left); closing A-B, the walk from A to
-    # B goes round the block's other side, A-D-C-B: three steps of sqrt(5) + 1 m (centre, portal middle, centre)
-    navmesh = _flat_navmesh([(0.0, 6.0, 0.0, 2.0), (4.0, 6.0, 2.0, 4.0), (0.0, 6.0, 4.0, 6.0), (0.0, 2.0, 2.0, 4.0)])
+    # B goes round the block's other side, A-D-C-B: three steps of sqrt(5) + 1 m in plan (centre, portal middle,
+    # centre), the centres CENTRE_LIFT over the floor whatever the cell height
     pairs = np.array([[0, 1], [0, 3], [2, 1], [2, 3]])
     endpoints = np.array([[(4, 0, 2), (6, 0, 2)], [(0, 0, 2), (2, 0, 2)], [(4, 0, 4), (6, 0, 4)],
                           [(0, 0, 4), (2, 0, 4)]], dtype=float)
-    walks = decomposition.PolygonWalks.of(navmesh, pairs, endpoints)
-    assert walks.steps.tolist() == pytest.approx([np.sqrt(5.0) + 1.0] * 4)
-    round_walk = 3.0 * (np.sqrt(5.0) + 1.0)
+    lift = decomposition.CENTRE_LIFT ** 2
+    step = np.sqrt(5.0 + lift) + np.sqrt(1.0 + lift)
+    for cell_height in (0.125, 0.025):
+        cells = [(0.0, 6.0, 0.0, 2.0), (4.0, 6.0, 2.0, 4.0), (0.0, 6.0, 4.0, 6.0), (0.0, 2.0, 2.0, 4.0)]
+        navmesh = _flat_navmesh(cells, cell_height)
+        walks = decomposition.PolygonWalks.of(navmesh, pairs, endpoints)
+        assert walks.steps.tolist() == pytest.approx([step] * 4)
+    round_walk = 3.0 * step
     assert walks.round_within(0, np.array([0]), round_walk + 0.01)
     assert not walks.round_within(0, np.array([0]), round_walk - 0.01)
     assert not walks.round_within(0, np.array([0, 1]), 100.0)  # both ways closed
