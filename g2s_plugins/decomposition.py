@@ -13,7 +13,9 @@ polygons and their shared edges (portals):
    pieces of at most :data:`PIECE`; the clearance of a point is its exact
    distance to the nearest piece (scipy ``cKDTree`` over the pieces'
    midpoints, heights scaled by :data:`HEIGHT_SCALE` so that another floor's
-   walls stay far). A polygon's clearance is its centre's; a portal's is the
+   walls stay far). A polygon's clearance is its centre's, measured
+   :data:`CENTRE_LIFT` over its floor whatever the navmesh's cell height
+   (:func:`measured_centres`); a portal's is the
    largest clearance of points along it at most one navmesh cell apart (five
    at least, always its middle: :func:`portal_samples`), so a door's portal
    measures the middle of the door, and a long portal that crosses a passage
@@ -202,6 +204,15 @@ from g2s_plugins.play_space import held_polygons
 
 HEIGHT_SCALE = 4.0
 """Height differences count this many times in clearance distances, so a wall 2 m above is 8 m away."""
+
+CENTRE_LIFT = 0.125
+"""How high over its floor a polygon's centre is measured (m; :func:`measured_centres`): Recast's detail surface, on
+which the centres lie, stands one cell height over the polygons' corners, where the walls and portals are, and the
+rooms' split and every constant below were measured on Recast's own 0.125 m cells, so with centres 0.125 m up (0.5 m
+in quadrature to a clearance, heights counted :data:`HEIGHT_SCALE` times). Fixed here, the split no longer depends on
+the cell height: on the agent's climb cells (0.025 m) the centres' own lift (0.1 m in quadrature) lost doors, the
+pillared dungeon's, three of a building's and the maze's two (docs/plugins.md, "Regions on the agent's climb
+cells")."""
 
 FLAT_DEG = 10.0
 """Polygons within this angle of horizontal define the floors' height bands, degrees."""
@@ -567,7 +578,7 @@ class Clearances:
     """How far the navmesh's polygon centres and portals are from its walls, m.
 
     Attributes:
-        polygons: (P,) clearance of each polygon centre, small holes ignored.
+        polygons: (P,) clearance of each polygon centre (:func:`measured_centres`), small holes ignored.
         portals_open: (E,) clearance of each portal, small holes ignored (with ``through_holes``, a portal ending on
             one measured through it: :func:`_through_holes`).
         portals: (E,) clearance of each portal, every wall counted.
@@ -588,6 +599,15 @@ class Clearances:
     open_walls: tuple[np.ndarray, np.ndarray]
     holes: tuple[np.ndarray, np.ndarray]
     left_out: np.ndarray
+
+
+def measured_centres(navmesh: Any) -> np.ndarray:
+    """(P, 3) the polygons' centres as the split measures them, m: :data:`CENTRE_LIFT` over the floor, whatever the
+    navmesh's cell height. Recast lifts its detail surface, and with it ``navmesh.centres``, one cell height over the
+    polygons' corners (measured: docs/plugins.md, "Regions on the agent's climb cells")."""
+    centres = np.asarray(navmesh.centres, dtype=np.float64).reshape(-1, 3).copy()
+    centres[:, 1] += CENTRE_LIFT - float(navmesh.settings["cell_height"])
+    return centres
 
 
 def portal_samples(ends: np.ndarray, spacing: float) -> tuple[np.ndarray, np.ndarray]:
@@ -728,7 +748,7 @@ def clearances(navmesh: Any, obstacle_area: float, wall_to_wall: float, through_
                                   _through_holes(ends, start, end, left_out, (start[~obstacle], end[~obstacle]),
                                                  wall_to_wall))
     return Clearances(
-        polygons=_distance_to(np.asarray(navmesh.centres), start[~obstacle], end[~obstacle]),
+        polygons=_distance_to(measured_centres(navmesh), start[~obstacle], end[~obstacle]),
         portals_open=portals_open,
         portals=every[widest],
         widest=points[widest],
@@ -1062,7 +1082,8 @@ def local_widths(navmesh: Any, labels: np.ndarray, points: np.ndarray, sides: np
     (C,) metres of the point in plan (0 where it has none).
 
     The floor is sampled on a square grid one navmesh cell apart, centred on the cut; a grid point belongs
-    to the group of the (convex) polygon holding it in plan and stands at that polygon's centre height. On
+    to the group of the (convex) polygon holding it in plan and stands as high as that polygon's centre is measured
+    (:func:`measured_centres`). On
     flat ground the largest sample is within 0.71 cells of the largest clearance.
     """
     polygons = np.asarray(navmesh.polygons, dtype=np.int64)
@@ -1073,7 +1094,7 @@ def local_widths(navmesh: Any, labels: np.ndarray, points: np.ndarray, sides: np
     following[np.arange(len(polygons)), last] = corners[:, 0]  # each polygon's last corner closes on its first
     low = np.where(valid[..., None], corners, np.inf).min(axis=1)
     high = np.where(valid[..., None], corners, -np.inf).max(axis=1)
-    heights = np.asarray(navmesh.centres, dtype=np.float64)[:, 1]
+    heights = measured_centres(navmesh)[:, 1]
     cell = float(navmesh.settings["cell_size"])
     samples, owner = [], []
     for i, (point, pair, radius) in enumerate(zip(points, sides, reach)):
@@ -1277,7 +1298,7 @@ class PolygonWalks:
     """Walks on the navmesh's polygon graph: from a polygon's centre to a portal's middle to the next centre, m.
 
     Attributes:
-        centres: (P, 3) polygon centres, m.
+        centres: (P, 3) polygon centres, as high as they are measured (:func:`measured_centres`), m.
         pairs: (E, 2) each portal's two polygons.
         steps: (E,) the walk across each portal, centre to its middle to centre, m.
         portals_of: CSR of polygon -> portal ids, ``(indptr (P+1,), portal ids (2E,))``.
@@ -1292,8 +1313,10 @@ class PolygonWalks:
 
     @classmethod
     def of(cls, navmesh: Any, pairs: np.ndarray, endpoints: np.ndarray) -> PolygonWalks:
-        """The walks of ``navmesh`` (``pairs`` (E, 2) and ``endpoints`` (E, 2, 3): its portals)."""
-        centres = np.asarray(navmesh.centres, dtype=np.float64)
+        """The walks of ``navmesh`` (``pairs`` (E, 2) and ``endpoints`` (E, 2, 3): its portals), from centres as high
+        as they are measured (:func:`measured_centres`): Recast's lift of one cell height made each step longer on
+        coarser cells, enough to part a school's ground-floor rooms on Recast's cells and join them on the agent's."""
+        centres = measured_centres(navmesh)
         middle = endpoints.mean(axis=1)
         steps = (np.linalg.norm(centres[pairs[:, 0]] - middle, axis=1)
                  + np.linalg.norm(centres[pairs[:, 1]] - middle, axis=1))

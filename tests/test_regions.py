@@ -638,24 +638,30 @@ def test_pinches_keep_a_share_of_the_corridor_on_both_sides():
     assert not decomposition.pinches(cut, local, pinch=1.0, narrowness=0.75).any()
 
 
-def _flat_navmesh(cells: list[tuple[float, float, float, float]]) -> SimpleNamespace:
-    """A flat navmesh of rectangular polygons (x0, x1, z0, z1) with 0.25 m cells."""
+def _flat_navmesh(cells: list[tuple[float, float, float, float]], cell_height: float = 0.0) -> SimpleNamespace:
+    """A flat navmesh of rectangular polygons (x0, x1, z0, z1) with 0.25 m cells ``cell_height`` high, each centre
+    that high over its corners, as Recast's detail surface lifts it (0: on the floor)."""
     corners = np.array([[(x0, 0.0, z0), (x1, 0.0, z0), (x1, 0.0, z1), (x0, 0.0, z1)] for x0, x1, z0, z1 in cells])
     polygons = np.full((len(cells), 6), -1)
     polygons[:, :4] = np.arange(4 * len(cells)).reshape(-1, 4)
-    return SimpleNamespace(vertices=corners.reshape(-1, 3), polygons=polygons, centres=corners.mean(axis=1),
-                           settings={"cell_size": 0.25})
+    return SimpleNamespace(vertices=corners.reshape(-1, 3), polygons=polygons,
+                           centres=corners.mean(axis=1) + [0.0, cell_height, 0.0],
+                           settings={"cell_size": 0.25, "cell_height": cell_height})
 
 
-def test_local_widths_of_a_corridor_and_of_the_room_it_opens_into():
+@pytest.mark.parametrize("cell_height", [0.125, 0.025])
+def test_local_widths_of_a_corridor_and_of_the_room_it_opens_into(cell_height):
     # a corridor 2 m wide (z 0..2) along x 0..5 opens at x = 5 into a 6 x 6 m room (z -2..4); within 2 m of
     # the cut's middle (5, 1) the corridor is 2 m wide (clearance 1 on its middle line) and the room's widest
-    # point is (7, 1), sqrt(5) m from the mouth's corners
-    navmesh = _flat_navmesh([(0.0, 5.0, 0.0, 2.0), (5.0, 11.0, -2.0, 4.0)])
+    # point is (7, 1), sqrt(5) m from the mouth's corners; the floor is measured CENTRE_LIFT (0.125 m) over the
+    # walls' height, 0.5 m in quadrature, whatever the cell height (on 0.025 m cells it read 0.1 m before)
+    navmesh = _flat_navmesh([(0.0, 5.0, 0.0, 2.0), (5.0, 11.0, -2.0, 4.0)], cell_height)
     corners = [(0, 0), (5, 0), (5, -2), (11, -2), (11, 4), (5, 4), (5, 2), (0, 2)]
     walls = np.array([(x, 0.0, z) for x, z in corners], dtype=float)
     start, end = walls[:-1], walls[1:]  # the open end at x = 0 is no wall
-    for labels, widths in (([0, 1], [2.0, 2.0 * np.sqrt(5.0)]), ([1, 0], [2.0 * np.sqrt(5.0), 2.0])):
+    lift = (decomposition.HEIGHT_SCALE * decomposition.CENTRE_LIFT) ** 2
+    corridor, room = 2.0 * np.sqrt(1.0 + lift), 2.0 * np.sqrt(5.0 + lift)
+    for labels, widths in (([0, 1], [corridor, room]), ([1, 0], [room, corridor])):
         local = decomposition.local_widths(navmesh, np.array(labels), np.array([[5.0, 0.0, 1.0]]), np.array([[0, 1]]),
                                            np.array([2.0]), (start, end))
         assert local[0] == pytest.approx(widths)
@@ -663,14 +669,19 @@ def test_local_widths_of_a_corridor_and_of_the_room_it_opens_into():
 
 def test_walks_round_a_block_on_the_polygon_graph():
     # four polygons round a 2 x 2 m block: A (bottom), B (right), C (top), D (left); closing A-B, the walk from A to
-    # B goes round the block's other side, A-D-C-B: three steps of sqrt(5) + 1 m (centre, portal middle, centre)
-    navmesh = _flat_navmesh([(0.0, 6.0, 0.0, 2.0), (4.0, 6.0, 2.0, 4.0), (0.0, 6.0, 4.0, 6.0), (0.0, 2.0, 2.0, 4.0)])
+    # B goes round the block's other side, A-D-C-B: three steps of sqrt(5) + 1 m in plan (centre, portal middle,
+    # centre), the centres CENTRE_LIFT over the floor whatever the cell height
     pairs = np.array([[0, 1], [0, 3], [2, 1], [2, 3]])
     endpoints = np.array([[(4, 0, 2), (6, 0, 2)], [(0, 0, 2), (2, 0, 2)], [(4, 0, 4), (6, 0, 4)],
                           [(0, 0, 4), (2, 0, 4)]], dtype=float)
-    walks = decomposition.PolygonWalks.of(navmesh, pairs, endpoints)
-    assert walks.steps.tolist() == pytest.approx([np.sqrt(5.0) + 1.0] * 4)
-    round_walk = 3.0 * (np.sqrt(5.0) + 1.0)
+    lift = decomposition.CENTRE_LIFT ** 2
+    step = np.sqrt(5.0 + lift) + np.sqrt(1.0 + lift)
+    for cell_height in (0.125, 0.025):
+        cells = [(0.0, 6.0, 0.0, 2.0), (4.0, 6.0, 2.0, 4.0), (0.0, 6.0, 4.0, 6.0), (0.0, 2.0, 2.0, 4.0)]
+        navmesh = _flat_navmesh(cells, cell_height)
+        walks = decomposition.PolygonWalks.of(navmesh, pairs, endpoints)
+        assert walks.steps.tolist() == pytest.approx([step] * 4)
+    round_walk = 3.0 * step
     assert walks.round_within(0, np.array([0]), round_walk + 0.01)
     assert not walks.round_within(0, np.array([0]), round_walk - 0.01)
     assert not walks.round_within(0, np.array([0, 1]), 100.0)  # both ways closed
@@ -938,6 +949,28 @@ def test_dungeon_doors_are_chokepoints_and_rooms_are_regions(seed, obstacles):
     result = run(level)
     doors, rooms = dungeon_shares(level, chokepoints(result), regions(result), result.context.navmesh)
     assert doors >= 0.9 and rooms >= 0.9
+
+
+def split_on_cells(level, climb: str) -> tuple[list[list[int]], list[tuple[float, float, float]]]:
+    """The regions (their polygons) and chokepoints (plan position and walkable width, to 1 cm) of ``level`` through
+    the preset on Recast's cells (``climb: recast``, 0.125 m high) or the agent's (``climb: agent``, 0.025 m)."""
+    raw = load_raw_config(PRESET)
+    raw.setdefault("graph", {}).setdefault("params", {})["climb"] = climb
+    result = run(level, parse_config(raw))
+    assert result.context.navmesh.settings["cell_height"] == pytest.approx({"recast": 0.125, "agent": 0.025}[climb])
+    doors = (tuple(round(v, 2) for v in (c["position"][0], c["position"][2], c["width"])) for c in chokepoints(result))
+    return sorted(r["polygons"] for r in regions(result)), sorted(doors)
+
+
+@pytest.mark.parametrize("level", [lambda: dungeon(seed=1, rooms=12, obstacles=0.3),
+                                   lambda: load_sample("building", seed=2)], ids=["pillared dungeon", "building 2"])
+def test_rooms_and_doors_are_the_same_on_recast_cells_and_on_the_agents_climb_cells(level):
+    # both navmeshes have the same polygons in plan; the centres stand one cell height over their corners (Recast's
+    # detail surface), which counted 4 times added 0.5 m in quadrature to the rooms' clearances on Recast's cells and
+    # 0.1 m on the agent's: the pillared dungeon lost corridor 2-5's door (14 -> 12 regions) and the building three
+    # doors (35 / 39 -> 32 / 36) on the agent's cells. Measured CENTRE_LIFT over the floor, the split is the same
+    generated = level()
+    assert split_on_cells(generated, "recast") == split_on_cells(generated, "agent")
 
 
 def test_a_dungeon_turned_30_degrees_keeps_its_rooms_and_corridor_chokepoints():
