@@ -71,3 +71,24 @@ def test_a_floors_real_end_is_no_gap(script: str, kind: str, yaw: float) -> None
     level = pieces.turned(level, yaw) if yaw else level
     known = len(level.openings)
     assert _score(level, piece_openings(level, "map_piece_sampling")) == (known, 0, known, 0)
+
+
+@pytest.mark.parametrize("preset", PRESETS)
+@pytest.mark.parametrize("yaw", [0.0, 45.0])
+def test_a_slot_wider_than_the_step_gap_is_no_opening(preset: str, yaw: float) -> None:
+    # a cut 0.45 m wide, over the 0.4 m step gap, 0.1 m inside the east wall: the room's floor goes on beyond it,
+    # so its near lip (5.3-6.0 m along it before the rule) is no way out; the east doorway lies beyond a slot the
+    # agent does not cross, and the west doorway is left
+    level = benchmark("cut_doorways").cut_doorway(0.45)
+    level = pieces.turned(level, yaw) if yaw else level
+    assert [round(o.width, 1) for o in piece_openings(level, preset)] == [1.6]
+
+
+@pytest.mark.parametrize("gap", [0.2, 0.35])
+def test_a_cuts_lip_beside_the_found_doorway_is_no_opening(gap: float) -> None:
+    # on the sampling route at 22 degrees the cut's lip beside the east doorway read as a third opening (1.58 m at
+    # g 0.2, 2.60 m at 0.35) where a way along the lip slanted past the doorway's jamb
+    level = pieces.turned(benchmark("cut_doorways").cut_doorway(gap), 22.0)
+    openings = piece_openings(level, "map_piece_sampling")
+    assert _score(level, openings) == (2, 0, 2, 0)
+    assert sorted(round(o.width, 1) for o in openings) == [1.6, 1.6]
