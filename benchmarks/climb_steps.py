@@ -17,17 +17,15 @@ and the sampling route, and the designer's answer (h <= the agent's climb); ``--
 
 from __future__ import annotations
 
-import argparse
+import itertools
 import math
 from collections import defaultdict
 
 import numpy as np
 import trimesh
-from head_room import LIFTS, YAWS, navmesh_walks, sampling_walks
+from head_room import case_parser, sweep
 from piece_parts import box, flight
 
-from g2s_core.config import PRESETS_DIR, load_config
-from g2s_plugins.recast import RecastParams
 
 KINDS = ("step", "flight", "table")
 HEIGHTS = (0.30, 0.325, 0.35, 0.36, 0.37, 0.38, 0.39, 0.40, 0.41, 0.42, 0.43, 0.44, 0.45, 0.475, 0.50)
@@ -66,33 +64,19 @@ def case_mesh(kind: str, h: float, yaw_deg: float = 0.0, lift: float = 0.0) -> t
 
 
 def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--presets", nargs="+", default=["map_analysis", "map_piece"])
-    parser.add_argument("--kinds", nargs="+", default=list(KINDS), choices=KINDS)
-    parser.add_argument("--heights", nargs="+", type=float, default=list(HEIGHTS))
-    parser.add_argument("--yaws", nargs="+", type=float, default=list(YAWS))
-    parser.add_argument("--lifts", nargs="+", type=float, default=list(LIFTS))
-    parser.add_argument("--no-sampling", action="store_true", help="the navmesh's answers alone")
+    parser = case_parser(__doc__.splitlines()[0], KINDS, "heights", HEIGHTS)
     parser.add_argument("--rows", action="store_true", help="print every case, not only the counts")
     args = parser.parse_args()
     turns = len(args.yaws) * len(args.lifts)
-    for preset in args.presets:
-        config = load_config(PRESETS_DIR / f"{preset}.yaml")
-        params = RecastParams(**config.graph.params)
-        climb = config.agent.max_climb
+    for preset, cases in itertools.groupby(sweep(args, args.heights, case_mesh), key=lambda case: case[0]):
         counts: dict[tuple[str, float], list[int]] = defaultdict(lambda: [0, 0])
-        for kind in args.kinds:
-            for h in args.heights:
-                for yaw in args.yaws:
-                    for lift in args.lifts:
-                        mesh, ends = case_mesh(kind, h, yaw, lift)
-                        nav = navmesh_walks(mesh, ends, config.agent, params)
-                        samp = not args.no_sampling and sampling_walks(mesh, ends, config.agent)
-                        counts[kind, h][0] += nav
-                        counts[kind, h][1] += samp
-                        if args.rows:
-                            print(f"{preset} {kind} {h:.3f} {yaw:g} {lift:g} navmesh {'yes' if nav else 'no'} "
-                                  f"sampling {'-' if args.no_sampling else 'yes' if samp else 'no'}", flush=True)
+        for _, config, kind, h, yaw, lift, nav, samp in cases:
+            counts[kind, h][0] += nav
+            counts[kind, h][1] += bool(samp)
+            if args.rows:
+                print(f"{preset} {kind} {h:.3f} {yaw:g} {lift:g} navmesh {'yes' if nav else 'no'} "
+                      f"sampling {'-' if samp is None else 'yes' if samp else 'no'}", flush=True)
+        climb = config.agent.max_climb
         print(f"{preset} (climb {climb:g} m): climbed of {turns}, navmesh / sampling")
         print("| kind | " + " | ".join(f"{h:.3f}" for h in args.heights) + " |")
         print("| --- |" + " ---: |" * len(args.heights))

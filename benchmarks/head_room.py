@@ -20,8 +20,10 @@ case: kind, head, yaw, lift, the navmesh's answer, the sampling route's, and the
 from __future__ import annotations
 
 import argparse
+import itertools
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
+from typing import Any
 
 import networkx as nx
 import numpy as np
@@ -130,30 +132,42 @@ def sampling_walks(mesh: trimesh.Trimesh, mids: np.ndarray, agent) -> bool:
     return nx.has_path(graph, a, b)
 
 
-def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+def case_parser(description: str, kinds: tuple[str, ...], measure: str, values: tuple[float, ...]) -> argparse.ArgumentParser:
+    """The command line of a sweep of cases: presets, kinds, the measured values (``--<measure>``, m), yaws and
+    lifts (shared with ``benchmarks/climb_steps.py``)."""
+    parser = argparse.ArgumentParser(description=description)
     parser.add_argument("--presets", nargs="+", default=["map_analysis", "map_piece"])
-    parser.add_argument("--kinds", nargs="+", default=list(KINDS), choices=KINDS)
-    parser.add_argument("--heads", nargs="+", type=float, default=list(HEADS))
+    parser.add_argument("--kinds", nargs="+", default=list(kinds), choices=kinds)
+    parser.add_argument(f"--{measure}", nargs="+", type=float, default=list(values))
     parser.add_argument("--yaws", nargs="+", type=float, default=list(YAWS))
     parser.add_argument("--lifts", nargs="+", type=float, default=list(LIFTS))
     parser.add_argument("--no-sampling", action="store_true", help="the navmesh's answers alone")
-    args = parser.parse_args()
-    print("preset kind head yaw lift navmesh sampling designer")
+    return parser
+
+
+def sweep(args: argparse.Namespace, values: list[float], case_mesh: Callable[..., tuple[trimesh.Trimesh, np.ndarray]]
+          ) -> Iterator[tuple[str, Any, str, float, float, float, bool, bool | None]]:
+    """Every case of a sweep (``args`` of :func:`case_parser`, ``values`` its measured ones, m), preset by preset:
+    ``(preset, its config, kind, value, yaw, lift, walked on the navmesh, walked on the sampling route or None with
+    --no-sampling)``; ``case_mesh(kind, value, yaw, lift)`` gives the mesh and its two ends (shared with
+    ``benchmarks/climb_steps.py``)."""
     for preset in args.presets:
         config = load_config(PRESETS_DIR / f"{preset}.yaml")
         params = RecastParams(**config.graph.params)
-        for kind in args.kinds:
-            for head in args.heads:
-                for yaw in args.yaws:
-                    for lift in args.lifts:
-                        mesh, mids = case_mesh(kind, head, yaw, lift)
-                        nav = navmesh_walks(mesh, mids, config.agent, params)
-                        samp = "-" if args.no_sampling else "yes" if sampling_walks(mesh, mids, config.agent) else "no"
-                        designer = "yes" if head >= config.agent.height else "no"
-                        print(f"{preset} {kind} {head:.2f} {yaw:g} {lift:g} {'yes' if nav else 'no'} {samp} "
-                              f"{designer}", flush=True)
+        for kind, value, yaw, lift in itertools.product(args.kinds, values, args.yaws, args.lifts):
+            mesh, ends = case_mesh(kind, value, yaw, lift)
+            nav = navmesh_walks(mesh, ends, config.agent, params)
+            samp = None if args.no_sampling else sampling_walks(mesh, ends, config.agent)
+            yield preset, config, kind, value, yaw, lift, nav, samp
 
+
+def main() -> None:
+    args = case_parser(__doc__.splitlines()[0], KINDS, "heads", HEADS).parse_args()
+    print("preset kind head yaw lift navmesh sampling designer")
+    for preset, config, kind, head, yaw, lift, nav, samp in sweep(args, args.heads, case_mesh):
+        designer = "yes" if head >= config.agent.height else "no"
+        print(f"{preset} {kind} {head:.2f} {yaw:g} {lift:g} {'yes' if nav else 'no'} "
+              f"{'-' if samp is None else 'yes' if samp else 'no'} {designer}", flush=True)
 
 if __name__ == "__main__":
     main()

@@ -26,7 +26,7 @@ from g2s_plugins.samples.pieces import _E, _N, _W
 _level = round_level(35)
 
 
-def gutter_inside_doorway(width: float = 0.3, depth: float = 0.3) -> SampleLevel:
+def gutter_inside_doorway(width: float = 0.3, depth: float = 0.3, sill: float = 0.0) -> SampleLevel:
     """Room 8 x 6 m (clear x 0-8, z 0-6), walls 0.3 m thick and 3 m high, 1.6 m doorways west and east (z 2.2-3.8,
     lintels 2.2 m); across the east doorway, just inside it against the wall's inner face, an open gutter ``width`` m
     (0.3) wide (x 7.7-8.0) and ``depth`` m (0.3) deep from z 2.0 to 4.0 (0.2 m past each jamb), its grate missing,
@@ -34,12 +34,13 @@ def gutter_inside_doorway(width: float = 0.3, depth: float = 0.3) -> SampleLevel
     The agent (radius 0.4 m) steps over a gap this narrow at the floor's height (the product's step-gap rule: no floor
     is lost to a slot narrower than the agent, docs/entry_exit.md). Known: two, at the floor (y 0), 2.2 m high: the
     west doorway, 1.6 m at (-0.3, 3.0), facing west; the east one, 1.6 m at its outer face (8.3, 3.0), facing east.
-    Not the gutter's lips (inside the piece)."""
+    Not the gutter's lips (inside the piece). ``sill`` (m, within the climb): the doorway's floor beyond the gutter
+    that much over the room's (its known opening's height stays the room floor's)."""
     g0 = 8.0 - width
     bottom = -depth - SLAB
     parts = room(8.0, 6.0, ROOM_DOORS)[1:]  # the walls, the floor built below round the gutter
     parts += [box(-0.3, g0, bottom, 0.0, -0.3, 6.3), box(g0, 8.3, bottom, 0.0, -0.3, 2.0),
-              box(g0, 8.3, bottom, 0.0, 4.0, 6.3), box(8.0, 8.3, bottom, 0.0, 2.0, 4.0),
+              box(g0, 8.3, bottom, 0.0, 4.0, 6.3), box(8.0, 8.3, bottom, sill, 2.0, 4.0),
               box(g0, 8.0, bottom, -depth, 2.0, 4.0)]
     return _level("gutter_inside_doorway", parts, ROOM_OPENINGS)
 

@@ -3,7 +3,9 @@ alignment"): generated steps of ``benchmarks/climb_steps.py``, the presets' agen
 
 from __future__ import annotations
 
+import numpy as np
 import pytest
+import trimesh
 
 from g2s_core.config import PRESETS_DIR, load_config
 from g2s_plugins.recast import RecastParams, SettingsError, build_navmesh, resolve_settings, voxel_config
@@ -58,9 +60,26 @@ def test_the_climb_cell_divides_the_climb_in_single_precision():
 
 
 def test_a_tall_level_or_agent_gets_coarser_climb_cells():
-    # 1000 m of level in at most 8189 cells: 0.4 / 3 m; an agent of 10 m in at most 255 cells: 0.4 / 10 m
+    # 1000 m of level in at most 8189 cells: 0.4 / 3 m; an agent of 10 m and its climb in at most 254 cells: 0.4 / 9 m
     assert climb_cell_height(0.4, 2.0, 1000.0) == pytest.approx(0.4 / 3)
-    assert climb_cell_height(0.4, 10.0) == pytest.approx(0.04)
+    assert climb_cell_height(0.4, 10.0) == pytest.approx(0.4 / 9)
+    tall_climb = climb_cell_height(7.0, 2.0)  # a climb over 255 cells of 0.025 m: coarser cells, the climb whole
+    assert (7.0 + 2.0) / tall_climb <= 254 + 1e-3 and 7.0 / tall_climb == pytest.approx(round(7.0 / tall_climb))
+
+
+@pytest.mark.parametrize("height", [2.0, 6.1, 6.2, 10.0])
+def test_a_tall_agent_climbs_steps_under_open_sky(height):
+    # Recast keeps a span's clearance in 8 bits (an open sky reads 255 cells) and links two spans only where the
+    # agent's height fits over the higher: on cells chosen for the height alone a 6.1-10 m agent lost steps of
+    # 0.19-0.39 m under the climb (review56 HIGH 1)
+    agent = load_config(PRESETS_DIR / "map_analysis.yaml").agent.model_copy(update={"height": height})
+    params = RecastParams(ledge_filter="drops", climb="agent")
+    ground = climb_steps.box(-10.0, 10.0, -0.5, 0.0, -10.0, 10.0)
+    for step, joined in ((0.30, True), (0.39, True), (0.50, False)):
+        pad = climb_steps.box(0.0, 5.0, 0.0, step, 0.0, 5.0)
+        mesh = trimesh.util.concatenate([ground, pad])
+        ends = np.array([[-5.0, 0.0, -5.0], [2.5, step, 2.5]])
+        assert head_room.navmesh_walks(mesh, ends, agent, params) == joined, (height, step)
     assert climb_cell_height(0.4, 2.0, 4000.0) is None  # Recast's reading, as a tall level always had
     assert climb_cell_height(0.0, 2.0) is None
 

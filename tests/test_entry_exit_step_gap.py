@@ -36,6 +36,21 @@ def test_a_doorway_behind_a_deep_gutter_the_agent_steps_over_is_an_opening(prese
     assert sorted(round(o.width, 1) for o in openings) == [1.6, 1.6]
 
 
+LOWER_SILL = pytest.mark.xfail(strict=True, reason="a far floor lower than the near one: the step gap's rays pass over "
+                               "its lip (review56 MED 3; a second, lower pass added stair openings: docs/entry_exit.md)")
+
+
+@pytest.mark.parametrize("preset", PRESETS)
+@pytest.mark.parametrize("sill", [pytest.param(-0.02, marks=LOWER_SILL), pytest.param(-0.2, marks=LOWER_SILL), 0.2])
+def test_a_doorway_behind_a_gutter_is_found_with_its_floor_a_little_lower_or_higher(preset: str, sill: float) -> None:
+    # the doorway's floor beyond the gutter lower than the room's within the climb: the rays a sixteenth of a step
+    # under the room's floor pass over its lip, and the doorway is lost (review56 MED 3, open)
+    level = benchmark("piece_kinds35").gutter_inside_doorway(width=0.3, depth=1.0, sill=sill)
+    openings = piece_openings(level, preset)
+    east = [o for o in openings if abs(o.position[0] - 8.3) < 0.2 and abs(o.position[2] - 3.0) < 0.2]
+    assert len(openings) == 2 and len(east) == 1 and abs(east[0].width - 1.6) < 0.1, openings
+
+
 @pytest.mark.parametrize("preset", PRESETS)
 def test_a_doorway_behind_a_cut_is_reached_past_the_search_reach(preset: str) -> None:
     # a cut 0.35 m wide, 0.1 m inside the east wall: the doorway's outer face lies 1.27 m past the navmesh's

@@ -129,8 +129,8 @@ class RecastParams(PluginParams):
         "a step up to a cell height over or under max_climb by where its floors lie between cell boundaries (0.375-"
         "0.5 m for 0.4 m on 0.125 m cells); agent: when cell_height is None, max_climb / k for the least k that "
         "makes it at most 0.025 m, so that a step up to max_climb is climbed and none 0.025 m higher, at any "
-        "alignment (coarser where the level's height or the agent's needs it: Recast's spans hold 8191 cells, its "
-        "agent 255); the detail error keeps the metres of Recast's cell height. docs/navmesh.md, The climb at every "
+        "alignment (coarser where the level's height or the agent's height with its climb needs it: Recast's spans hold "
+        "8191 cells, a span's clearance 255); the detail error keeps the metres of Recast's cell height. docs/navmesh.md, The climb at every "
         "alignment",
     )
     head_room: Literal["agent", "recast"] = Field(
@@ -229,15 +229,16 @@ def climb_cell_height(climb: float, height: float, level_height: float | None = 
     :data:`CLIMB_BAND`, so that Recast's climb of ``floor(climb / ch)`` cells is ``k`` cells, exactly the climb, and
     a step is climbed up to ``climb`` and refused from ``climb + ch`` whatever the alignment of its floors.
 
-    ``k`` is lowered (the cells made coarser) while the agent's ``height`` would need more than
-    ``VOXEL_LIMITS["walkableHeight"]`` cells or the level's ``level_height`` (m, ``None``: not known) more than
+    ``k`` is lowered (the cells made coarser) while the agent's ``height`` and ``climb`` together would need more
+    than ``VOXEL_LIMITS["walkableHeight"]`` less one cells (the span clearance Recast's links read, 8 bits) or the level's ``level_height`` (m, ``None``: not known) more than
     :data:`MAX_SPAN_HEIGHT` less two; ``None`` when no ``k`` >= 1 fits, or without a climb.
     """
     if not climb > 0:
         return None
     k = math.ceil(climb / CLIMB_BAND - 1e-9)
-    # the coarsest cell each limit allows, a millionth over it for float32's rounding of the quotients
-    coarsest = height / VOXEL_LIMITS["walkableHeight"] * (1 + 1e-6)
+    # the coarsest cell each limit allows, a millionth over it for float32's rounding of the quotients; Recast keeps a
+    # span's clearance in 8 bits, so a step is linked only where the agent's height and the step fit in them together
+    coarsest = (height + climb) / (VOXEL_LIMITS["walkableHeight"] - 1) * (1 + 1e-6)
     if level_height is not None:
         coarsest = max(coarsest, level_height / (MAX_SPAN_HEIGHT - 2) * (1 + 1e-6))
     k = min(k, math.floor(climb / coarsest))
