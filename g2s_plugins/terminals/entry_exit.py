@@ -767,8 +767,12 @@ def _floor_beyond(edge_at: np.ndarray, way: np.ndarray, caster: RayCaster, s: _S
     back along ``way`` from half a search step past it, just under the ground, meets the floor's side face (none:
     a face of no thickness, read as no gap, as by the step-gap rule); square to the edge is that face's plan
     normal, since a way along a slot slants over it far past one radius and a sampled boundary's own normal may
-    run along it. Beyond the face, from one search step to ``search`` m past it, some point has walkable floor
-    facing up straight below within the climb of the ground at the end. O(n search / d) rays."""
+    run along it. Beyond the face, from one search step to ``search`` m past it, a point with no floor straight
+    below comes before one with walkable floor facing up within the climb of the ground at the end: a gap, then
+    the floor again. The floor going on from the face is no floor beyond: where the face met is not the edge's
+    side (a terrain's own sloping top, met looking back at its border) the square runs out over the ground the
+    way started from, or along the border over it, and a border's ways were dropped mid-border, splitting it
+    (docs/entry_exit.md, "A slot in the floor is not a way out"). O(n search / d) rays."""
     plan = np.array([1.0, 0.0, 1.0])
     under = edge_at + way * (s.delta / 2.0) - UP * (s.lift + s.delta / 4.0)
     side = caster.first_hits(under, -way)
@@ -781,7 +785,9 @@ def _floor_beyond(edge_at: np.ndarray, way: np.ndarray, caster: RayCaster, s: _S
     hit = caster.first_hits(probes, np.repeat(-UP[None, :], len(probes), axis=0))
     up = caster.face_normals[np.maximum(hit.face, 0)] @ UP >= s.walkable_cos
     level = np.abs(hit.distance - s.lift) <= s.climb
-    return met & (np.isfinite(hit.distance) & up & level).reshape(len(steps), -1).any(axis=0)
+    floor = (np.isfinite(hit.distance) & up & level).reshape(len(steps), -1)
+    at_face = np.logical_and.accumulate(floor, axis=0)  # the floor going on from the face, no gap yet
+    return met & (floor & ~at_face).any(axis=0)
 
 
 def _fan(
