@@ -303,5 +303,6 @@ def test_rays_are_cast_in_batches(monkeypatch: pytest.MonkeyPatch) -> None:
     assert sum(calls) > 2000  # thousands of rays ...
     # ... in a fixed number of batched calls: one per step and bisection round (a batch with
     # rays grazing a triangle is cast again twice, nudged aside); the step gap's test adds two to the search (its rays
-    # along the way and its sides): 60 calls without it on this level, 62 with it
-    assert len(calls) <= 3 * 20 + 2
+    # along the way and its sides): 60 calls without it on this level, 62 with it; the slot rule two (the floor's side
+    # face looked back at and its probes beyond): 64
+    assert len(calls) <= 3 * 20 + 4

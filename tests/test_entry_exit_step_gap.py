@@ -11,8 +11,10 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from g2s_core.config import load_config
+from g2s_core.config import PRESETS_DIR, load_config
+from g2s_core.mesh import generate_level
 from g2s_core.model import RunContext
+from g2s_plugins._raycasting import RayCaster
 from g2s_plugins.graph_builders import sampling
 from g2s_plugins.samples import pieces
 from g2s_plugins.terminals import entry_exit
@@ -86,3 +88,53 @@ def test_a_floors_real_end_is_no_gap(script: str, kind: str, yaw: float) -> None
     level = pieces.turned(level, yaw) if yaw else level
     known = len(level.openings)
     assert _score(level, piece_openings(level, "map_piece_sampling")) == (known, 0, known, 0)
+
+
+@pytest.mark.parametrize("preset", PRESETS)
+@pytest.mark.parametrize("yaw", [0.0, 45.0])
+def test_a_slot_wider_than_the_step_gap_is_no_opening(preset: str, yaw: float) -> None:
+    # a cut 0.45 m wide, over the 0.4 m step gap, 0.1 m inside the east wall: the room's floor goes on beyond it,
+    # so its near lip (5.3-6.0 m along it before the rule) is no way out; the east doorway lies beyond a slot the
+    # agent does not cross, and the west doorway is left
+    level = benchmark("cut_doorways").cut_doorway(0.45)
+    level = pieces.turned(level, yaw) if yaw else level
+    assert [round(o.width, 1) for o in piece_openings(level, preset)] == [1.6]
+
+
+@pytest.mark.parametrize("gap", [0.2, 0.35])
+def test_a_cuts_lip_beside_the_found_doorway_is_no_opening(gap: float) -> None:
+    # on the sampling route at 22 degrees the cut's lip beside the east doorway read as a third opening (1.58 m at
+    # g 0.2, 2.60 m at 0.35) where a way along the lip slanted past the doorway's jamb
+    level = pieces.turned(benchmark("cut_doorways").cut_doorway(gap), 22.0)
+    openings = piece_openings(level, "map_piece_sampling")
+    assert _score(level, openings) == (2, 0, 2, 0)
+    assert sorted(round(o.width, 1) for o in openings) == [1.6, 1.6]
+
+
+# Where the floor's end search found the sample terrain's west border end on the sampling route (x, y, z, m: 0.03-0.06
+# m inside it) and the ways taken there, 5-45 degrees off straight out (read from a run of map_piece_sampling on
+# sample:terrain). Looking back from past the border just under the ground meets the terrain's own sloping top, no
+# side: square to it runs out over the ground the way started from, or along the border over it, and the probes find
+# the terrain itself with no gap before it. Read as floor beyond, these ways were dropped mid-border and the border,
+# one 24.34 m opening, read as two (21.63 and 5.12 m).
+TERRAIN_BORDER_ENDS = [
+    ((0.0593, -9.7854, 6.3452), (-0.95295, 0.29193, 0.08163)),  # out over the terrain's top, then nothing
+    ((0.0551, -9.1583, 2.3689), (-0.93976, 0.19327, 0.28197)),
+    ((0.0599, -9.7023, 4.9758), (-0.78886, 0.19410, 0.58312)),
+    ((0.0295, -7.2298, 16.1356), (-0.90332, -0.03727, -0.42735)),  # along the border, over the terrain
+    ((0.0294, -7.2321, 16.1305), (-0.71232, -0.18479, -0.67709)),
+]
+
+
+def test_the_terrain_met_at_its_border_is_no_floor_beyond() -> None:
+    config = load_config(PRESETS_DIR / "map_piece_sampling.yaml")
+    s = entry_exit._settings(entry_exit.Params(), config.agent)
+    ends, ways = (np.array(v, dtype=np.float64) for v in zip(*TERRAIN_BORDER_ENDS))
+    caster = RayCaster(generate_level("sample:terrain", config.mesh))
+    assert not entry_exit._floor_beyond(ends, ways, caster, s).any()
+    # the cut room's slot 0.45 m wide (x 7.45-7.9, its floor's top at 0): ways from its near lip straight out and 60
+    # degrees along it have the room's floor beyond, a gap first
+    room = RayCaster(benchmark("cut_doorways").cut_doorway(0.45).mesh)
+    lip = np.array([[7.44, s.lift, 3.0]] * 2)
+    across = np.array([[1.0, 0.0, 0.0], [0.5, 0.0, 0.866]])
+    assert entry_exit._floor_beyond(lip, across, room, s).all()

@@ -37,7 +37,10 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
    ``leave_footprint``, one agent radius beyond the edge nothing of the piece
    lies straight below, nor above lower than the head-room ray (a ledge over
    a lower floor of the piece, a canopy too low to stand under or a hole
-   under its ramp is no exit; eaves are no obstacle). A sample with a
+   under its ramp is no exit; eaves are no obstacle), nor, square to the
+   edge within the search's reach past the floor's side face, the piece's
+   floor within the climb of the ground at the end (a slot wider than the
+   step gap is no exit: ``_floor_beyond``). A sample with a
    way out takes the one reaching the edge soonest. The fan, rather than one
    ray straight out, finds the way out of Recast's V-shaped notch in a
    doorway through a thick wall, whose slanted sides face the jambs. With
@@ -327,8 +330,9 @@ class Params(PluginParams):
     leave_footprint: bool = Field(
         True,
         description="an exit must lead out of the piece: one agent radius beyond its edge nothing of the "
-        "piece lies straight below, nor above lower than a search step under the agent's height (false: keep "
-        "ledges, holes inside the piece and exits under low canopies)",
+        "piece lies straight below, nor above lower than a search step under the agent's height, nor, square to "
+        "the edge within edge_search_radii * r past the floor's side face, the piece's floor at the ground's "
+        "height (false: keep ledges, holes and slots inside the piece and exits under low canopies)",
     )
     step_up: bool = Field(
         True,
@@ -756,6 +760,36 @@ def _down_steps(
     return missing, np.where(followed[:, None], before, 0.0)
 
 
+def _floor_beyond(edge_at: np.ndarray, way: np.ndarray, caster: RayCaster, s: _Settings) -> np.ndarray:
+    """(n,) bool: the piece's own floor found again beyond a gap the agent does not step over, square to the edge.
+
+    ``edge_at``: points ``lift`` m over the ground where the floor's end search along ``way`` found it end. Looking
+    back along ``way`` from half a search step past it, just under the ground, meets the floor's side face (none:
+    a face of no thickness, read as no gap, as by the step-gap rule); square to the edge is that face's plan
+    normal, since a way along a slot slants over it far past one radius and a sampled boundary's own normal may
+    run along it. Beyond the face, from one search step to ``search`` m past it, a point with no floor straight
+    below comes before one with walkable floor facing up within the climb of the ground at the end: a gap, then
+    the floor again. The floor going on from the face is no floor beyond: where the face met is not the edge's
+    side (a terrain's own sloping top, met looking back at its border) the square runs out over the ground the
+    way started from, or along the border over it, and a border's ways were dropped mid-border, splitting it
+    (docs/entry_exit.md, "A slot in the floor is not a way out"). O(n search / d) rays."""
+    plan = np.array([1.0, 0.0, 1.0])
+    under = edge_at + way * (s.delta / 2.0) - UP * (s.lift + s.delta / 4.0)
+    side = caster.first_hits(under, -way)
+    met = np.isfinite(side.distance) & (side.distance <= s.delta)
+    square = _unit(caster.face_normals[np.maximum(side.face, 0)] * plan)
+    square *= np.where(np.einsum("ij,ij->i", square, way) < 0.0, -1.0, 1.0)[:, None]  # the face's outer side
+    lip = np.where(met[:, None], np.nan_to_num(side.points) * plan + edge_at * UP, edge_at)  # at the rays' height
+    steps = np.arange(s.delta, s.search + s.delta / 2.0, s.delta)
+    probes = (lip[None, :, :] + steps[:, None, None] * square[None, :, :]).reshape(-1, 3)
+    hit = caster.first_hits(probes, np.repeat(-UP[None, :], len(probes), axis=0))
+    up = caster.face_normals[np.maximum(hit.face, 0)] @ UP >= s.walkable_cos
+    level = np.abs(hit.distance - s.lift) <= s.climb
+    floor = (np.isfinite(hit.distance) & up & level).reshape(len(steps), -1)
+    at_face = np.logical_and.accumulate(floor, axis=0)  # the floor going on from the face, no gap yet
+    return met & (floor & ~at_face).any(axis=0)
+
+
 def _fan(
     base: np.ndarray, normal: np.ndarray, tangent: np.ndarray, caster: RayCaster, s: _Settings, params: Params,
     reaches: tuple[float, ...],
@@ -823,6 +857,12 @@ def _fan(
             into_piece |= into.any(axis=1)
             # Above, only what the agent could not stand under blocks the way (the head-room rule): eaves do not.
             ok[rows[np.isfinite(below) | (above < s.head)]] = False
+            # A slot in the floor wider than the step gap: the piece's floor goes on beyond it, square to the edge
+            # (a way along the slot slants over it far past one radius), so the way leads into the piece, not out.
+            rows = np.nonzero(ok)[0]
+            if len(rows):
+                edge_at = lifted[rows] + dirs[rows] * edge[rows, None]
+                ok[rows[_floor_beyond(edge_at, dirs[rows], caster, s)]] = False
         # The soonest way out; among equals, the one closest to straight out. A point with none keeps its first
         # direction and how far that look found the surface going along it (0: not within its reach).
         cost = np.where(ok, edge, np.inf).reshape(m, k) + 1e-6 * np.abs(theta)[None, :]
