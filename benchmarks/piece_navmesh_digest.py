@@ -1,4 +1,4 @@
-"""The navmesh of every map-piece kind of ``piece_kinds10.py`` ... ``piece_kinds36.py``, of every generated piece
+"""The navmesh of every map-piece kind of ``piece_kinds10.py`` ... ``piece_kinds37.py``, of every generated piece
 (:data:`g2s_plugins.samples.pieces.PIECES`, "gen") and of the shared pieces (``piece_quality.py``'s, "shared"),
 turned 0, 22 and 45 degrees: polygons, walkable area and a digest of its polygons, to tell a navmesh change that
 moves no opening from none.
@@ -28,7 +28,7 @@ from g2s_core.mesh import load_mesh
 from g2s_plugins.recast import NavMesh, RecastParams, build_navmesh
 from g2s_plugins.samples import pieces
 
-FIRST_ROUND, LAST_ROUND = 10, 36
+FIRST_ROUND, LAST_ROUND = 10, 37
 
 
 def digest(navmesh: NavMesh) -> str:

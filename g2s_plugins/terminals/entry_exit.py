@@ -78,6 +78,10 @@ Steps (``r`` = agent radius, ``h`` = ``sample_height``):
    middle within the climb of the line's height there, read in plan and height on a sloped line too): the wider
    one is stretched along its line
    to span both and the other dropped, again until none overlaps a wider one.
+   Two parts turned apart by more than ``max_turn_deg`` but less than square,
+   meeting end to end with nothing between them, are one opening between their
+   far ends when the way's sides run in square to the chord there (a corridor's
+   floor cut in a V past its walls' ends) and the outer-extent prior keeps it.
 6. Priors, each measured on the generated pieces of
    :mod:`g2s_plugins.samples.pieces` (docs/entry_exit.md):
 
@@ -2178,7 +2182,9 @@ def extent_gap(vertices: np.ndarray, point: np.ndarray, heading: np.ndarray, fra
 
 
 def _repeated(openings: list[Opening], radius: float, max_turn_deg: float, climb: float,
-              free_along: Callable[[np.ndarray, np.ndarray], bool] | None = None, reach: float = 0.0) -> np.ndarray:
+              free_along: Callable[[np.ndarray, np.ndarray], bool] | None = None, reach: float = 0.0,
+              one_way: Callable[[int, int, np.ndarray, np.ndarray, np.ndarray], bool] | None = None,
+              meet: float = 0.0) -> np.ndarray:
     """(n,) int: for each opening that overlaps a wider one along the same edge, facing the same way, that one's index; else -1.
 
     Recast's voxel staircase along an edge turned off the grid's axes can cut one opening's
@@ -2200,6 +2206,13 @@ def _repeated(openings: list[Opening], radius: float, max_turn_deg: float, climb
     inside the wall, its two lanes' parts ending 7 mm apart on the stone's side at 45 degrees; docs/entry_exit.md, "A
     thirty-sixth round of piece kinds"), not two ways either side of a leaf or a post standing across it, nor two
     stretches of a terrain's border either side of a cliff (ends 0.04 m apart in plan, 4.8 m in height).
+
+    One facing more than ``max_turn_deg`` but less than square away from a wider one ``i``, meeting it end to end
+    (their nearest ends within ``meet`` m in plan and ``climb`` in height, ``free_along`` between them), is the same
+    opening when ``one_way(i, j, a, b, out)`` takes the floor's end between their far ends (a, b (3,), m; ``out``
+    (3,): the two headings' sum) for one way out: a corridor's floor cut in a V past its walls' ends (a prow, its
+    halves 60 degrees apart; docs/entry_exit.md, "A thirty-seventh round of piece kinds"), not a plaza's two open
+    sides meeting at a corner between walls at right angles (:func:`_sides_square`).
     """
     n = len(openings)
     into = np.full(n, -1, dtype=np.int64)
@@ -2214,7 +2227,13 @@ def _repeated(openings: list[Opening], radius: float, max_turn_deg: float, climb
             continue
         span = last[i] - first[i]
         for j in order[rank + 1 :]:
-            if into[j] >= 0 or np.dot(heading[i], heading[j]) < cos_turn:
+            if into[j] >= 0:
+                continue
+            if np.dot(heading[i], heading[j]) < cos_turn:
+                if one_way is not None and free_along is not None and np.dot(heading[i], heading[j]) > 0.0 and (
+                        fold := _end_to_end(first[i], last[i], first[j], last[j], meet, climb)) and free_along(
+                        fold[0], fold[1]) and one_way(i, j, fold[2], fold[3], heading[i] + heading[j]):
+                    into[j] = i
                 continue
             u, plan, rise = _along_line(first[i], span, np.stack([first[j], 0.5 * (first[j] + last[j]), last[j]]))
             near = plan[1] <= radius and np.abs(rise).min() <= climb + _SAME_HEIGHT
@@ -2241,6 +2260,38 @@ def _abutting(first: np.ndarray, last: np.ndarray, first_j: np.ndarray, last_j: 
     if max(u[0], u[2]) <= 0.0 and -max(u[0], u[2]) * span <= reach:
         return first, (first_j if u[0] >= u[2] else last_j)
     return None
+
+
+def _end_to_end(first: np.ndarray, last: np.ndarray, first_j: np.ndarray, last_j: np.ndarray, reach: float,
+                climb: float) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray] | None:
+    """Where two openings (ends ``first``/``last`` and ``first_j``/``last_j``, (3,) m) meet end to end: their nearest
+    ends, within ``reach`` m in plan and ``climb`` in height, and their far ends; else None."""
+    ends, ends_j = (first, last), (first_j, last_j)
+    k, m = min(((k, m) for k in range(2) for m in range(2)),
+               key=lambda km: float(np.hypot(*(ends[km[0]] - ends_j[km[1]])[[0, 2]])))
+    gap = ends[k] - ends_j[m]
+    if float(np.hypot(gap[0], gap[2])) > reach or abs(float(gap[1])) > climb + _SAME_HEIGHT:
+        return None
+    return ends[k], ends_j[m], ends[1 - k], ends_j[1 - m]
+
+
+def _sides_square(a: np.ndarray, b: np.ndarray, out: np.ndarray, caster: RayCaster, s: _Settings,
+                  tolerance: float) -> bool:
+    """Whether the floor's end from ``a`` to ``b`` ((3,) m) is a way between two sides running in square to its chord:
+    one search step and one agent radius in from the chord's middle (away from ``out``, (3,), in plan), rays at
+    ``lift`` over it along the chord each way meet something half the chord away, within ``tolerance`` m. Not an open
+    side (the rays run on) nor walls closing in (a plaza's corner between walls at right angles: 0.4 m nearer one
+    radius in)."""
+    chord = (b - a) * np.array([1.0, 0.0, 1.0])
+    width = float(np.linalg.norm(chord))
+    if width <= _SAME_WIDTH:
+        return False
+    along = chord / width
+    inward = np.cross(along, UP)
+    inward = inward if np.dot(inward, out) < 0.0 else -inward
+    starts = 0.5 * (a + b) + UP * s.lift + inward * np.array([[s.delta], [s.radius]])
+    hits = caster.first_hits(np.concatenate([starts, starts]), np.repeat(np.stack([along, -along]), 2, axis=0))
+    return bool((np.abs(hits.distance - 0.5 * width) <= tolerance).all())
 
 
 def _free_along(a: np.ndarray, b: np.ndarray, caster: RayCaster, s: _Settings) -> bool:
@@ -2443,9 +2494,15 @@ def detect_openings(
     # moved in onto its passage's side deep in the wall lies where that part's line, a degree or two off the wall's,
     # meets the side as deep as the narrowest width stands (a splayed reveal's inner face, 1 m in: 1.234 m for 1.2 on
     # the sampling route, the extremes of 15 parts' ends; docs/entry_exit.md, "Since the passage rule").
+    def one_way(i: int, j: int, a: np.ndarray, b: np.ndarray, out: np.ndarray) -> bool:
+        """Whether openings ``i`` and ``j``, turned apart and meeting end to end, are one way out between their far
+        ends ``a`` and ``b``: the way's sides run in square to its chord there, and the outer-extent prior keeps the
+        opening between them (a prow cut 40 degrees or more off square reaches 1 m past its chord: its halves stay)."""
+        return _sides_square(a, b, out, caster, s, tolerance) and scored(edges[i], a, b, framed_of[i]) is not None
+
     while True:
         into = _repeated([f[0] for f in found], s.radius, float(params.max_turn_deg), s.climb,
-                         lambda a, b: _free_along(a, b, caster, s), s.delta)
+                         lambda a, b: _free_along(a, b, caster, s), s.delta, one_way, tolerance)
         if not (into >= 0).any():
             break
         for i in sorted(set(into[into >= 0].tolist())):
