@@ -30,7 +30,9 @@ passage too narrow. When the closest pair is a floor above another but the
 two areas also meet on one floor (a room shut by a narrow door above a
 deck), the pair on one floor is named if it is closer with vertical offsets
 counted ``height / max_climb`` times: a designer fixes the door, not the
-storeys.
+storeys; but a pair on one floor across open air (no floor under it: a
+gallery across a nave from another) gives way to the drop when a ramp at
+``max_slope`` down it is shorter than a bridge across.
 
 *The place* (:func:`where_between`): along a wall every edge point is about
 as close to the other side as any, so the closest pair alone is any of them
@@ -86,12 +88,14 @@ fifth-nearest areas").
 agent's height apart are named separate only when no walkable ground climbs
 between them near the pair: faces within ``max_slope`` with ``height`` of head
 room on vertical lines half the agent's radius apart, each rise between
-neighbours at most ``max_climb``, from one area's closest edge to the other's.
-Where it does, the cause names the stair or ramp with its width across at its
+neighbours at most ``max_climb`` (or two risers a tread between them walks),
+from one area's closest edge to the other's, in a disc round the pair grown
+until it finds a way or a step, up to ``MAX_WAY_UP_COLUMNS`` lines. Where it does, the cause names the stair or ramp with its width across at its
 narrowest and the place (a wedge stair 1.1-1.4 m wide between a wall and a
-drop that Recast's erosion and ledge rule take whole: :data:`LEDGE_CELLS`),
+drop that Recast's erosion and ledge rule take whole: :data:`LEDGE_CELLS`;
+a companionway whose treads are shorter than a cell, by its two risers),
 or the step over the climb that cuts it (docs/analysis_quality.md, "The
-disconnected-areas warning's lost stairs").
+disconnected-areas warning's lost stairs" and "... far stairs and galleries").
 
 Complexity: O(n) for the areas' n nodes (their sizes), O(e log e) for the e
 edge points of the joined areas (one k-d tree of the largest's, to bound each
@@ -162,7 +166,7 @@ points apart (0.125 m on the navmesh route's cells of 0.25 m; 0.5 m between samp
 MAX_WAY_UP_COLUMNS = 65_536
 """Vertical lines at most that :func:`way_up` casts down over the ground round a warning's place (a disc 27 m in
 radius, 54 m across, at the presets' 0.25 m spacing holds 36,600: a silo's spiral stair 11.5 m high); a larger disc
-is shrunk to this."""
+is shrunk to this, 36 m in radius at that spacing, as far as the search grows."""
 
 WIDTH_CANDIDATES = 16
 """Points at most of a way's narrowest (by the columns' clearance) whose width :func:`width_across` measures."""
