@@ -4,7 +4,7 @@ Two steps, so that a change to the cause (``g2s_plugins/area_gaps.py``) is measu
 
 ``collect OUT_DIR [--round 50|32]`` runs each level of :data:`WARNINGS` (round 50: the 72 warnings of
 docs/analysis_quality.md "The disconnected-areas warning's nearest area") or of :data:`ROUND_32` (its 18 levels on
-both routes; round 36-37: :data:`ROUND_36_37`) through the Steiner step (``map_analysis``: navmesh route; ``map_analysis_sampling``: sampling route),
+both routes; round 36-37: :data:`ROUND_36_37`; round 38: :data:`ROUND_38`) through the Steiner step (``map_analysis``: navmesh route; ``map_analysis_sampling``: sampling route),
 stops it at the warning and keeps what the cause is measured on (the graph, its areas, the agent, the builder's
 ground and the mesh) in ``OUT_DIR/<level>_<route>.pkl``, with the warning the code of the run gave.
 
@@ -49,6 +49,7 @@ from analysis_quality import KINDS, NAV_TEST
 from level_kinds32 import KINDS as ROUND_32_KINDS
 from level_kinds36 import KINDS as ROUND_36_KINDS
 from level_kinds37 import KINDS as ROUND_37_KINDS
+from level_kinds38 import KINDS as ROUND_38_KINDS
 
 from g2s_core import api, pipeline
 from g2s_core.disconnected import area_summary, disconnected_warning
@@ -91,6 +92,11 @@ ROUND_36_37 = [(f"{kind} s{seed}", route) for kinds in (ROUND_36_KINDS, ROUND_37
                for seed in range(3) for route in ROUTES]
 """(level, route) of the thirty-sixth and thirty-seventh rounds' levels on both routes (those that warn are kept): the
 queue hall's shutter and the awning market's awnings, head room a little over the agent's height."""
+
+ROUND_38 = [(f"{kind} s{seed}", route) for kind in ROUND_38_KINDS for seed in range(3) for route in ROUTES]
+"""(level, route) of the thirty-eighth round's levels on both routes (those that warn are kept): the coaming deck's
+tween deck, reached by companionways 11 m from the hull side the nearest pair lies on, and the rubble nave's gallery
+over its aisle, whose nearest pair on one floor lies across the nave."""
 
 NEAR_TIE = 0.1
 """Metres: an area named within this of the nearest's hypot(gap, rise) is as good as the nearest (K1)."""
@@ -242,13 +248,13 @@ def main(argv: list[str] | None = None) -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("step", choices=["collect", "report"])
     parser.add_argument("out", type=Path)
-    parser.add_argument("--round", choices=["50", "32", "36-37"], default="50", help="collect: which levels")
+    parser.add_argument("--round", choices=["50", "32", "36-37", "38"], default="50", help="collect: which levels")
     parser.add_argument("--before", type=Path, help="report: a copy of another commit's g2s_plugins/area_gaps.py "
                                                     "(git show REV:g2s_plugins/area_gaps.py > FILE) to compare with")
     args = parser.parse_args(argv)
     print(f"load average {os.getloadavg()[0]:.1f}", file=sys.stderr)
     if args.step == "collect":
-        collect(args.out, {"50": WARNINGS, "32": ROUND_32, "36-37": ROUND_36_37}[args.round])
+        collect(args.out, {"50": WARNINGS, "32": ROUND_32, "36-37": ROUND_36_37, "38": ROUND_38}[args.round])
     else:
         report(args.out, args.before)
 

@@ -30,7 +30,9 @@ passage too narrow. When the closest pair is a floor above another but the
 two areas also meet on one floor (a room shut by a narrow door above a
 deck), the pair on one floor is named if it is closer with vertical offsets
 counted ``height / max_climb`` times: a designer fixes the door, not the
-storeys.
+storeys; but a pair on one floor across open air (no floor under it: a
+gallery across a nave from another) gives way to the drop when a ramp at
+``max_slope`` down it is shorter than a bridge across.
 
 *The place* (:func:`where_between`): along a wall every edge point is about
 as close to the other side as any, so the closest pair alone is any of them
@@ -86,12 +88,14 @@ fifth-nearest areas").
 agent's height apart are named separate only when no walkable ground climbs
 between them near the pair: faces within ``max_slope`` with ``height`` of head
 room on vertical lines half the agent's radius apart, each rise between
-neighbours at most ``max_climb``, from one area's closest edge to the other's.
-Where it does, the cause names the stair or ramp with its width across at its
+neighbours at most ``max_climb`` (or two risers a tread between them walks),
+from one area's closest edge to the other's, in a disc round the pair grown
+until it finds a way or a step, up to ``MAX_WAY_UP_COLUMNS`` lines. Where it does, the cause names the stair or ramp with its width across at its
 narrowest and the place (a wedge stair 1.1-1.4 m wide between a wall and a
-drop that Recast's erosion and ledge rule take whole: :data:`LEDGE_CELLS`),
+drop that Recast's erosion and ledge rule take whole: :data:`LEDGE_CELLS`;
+a companionway whose treads are shorter than a cell, by its two risers),
 or the step over the climb that cuts it (docs/analysis_quality.md, "The
-disconnected-areas warning's lost stairs").
+disconnected-areas warning's lost stairs" and "... far stairs and galleries").
 
 Complexity: O(n) for the areas' n nodes (their sizes), O(e log e) for the e
 edge points of the joined areas (one k-d tree of the largest's, to bound each
@@ -162,7 +166,7 @@ points apart (0.125 m on the navmesh route's cells of 0.25 m; 0.5 m between samp
 MAX_WAY_UP_COLUMNS = 65_536
 """Vertical lines at most that :func:`way_up` casts down over the ground round a warning's place (a disc 27 m in
 radius, 54 m across, at the presets' 0.25 m spacing holds 36,600: a silo's spiral stair 11.5 m high); a larger disc
-is shrunk to this."""
+is shrunk to this, 36 m in radius at that spacing, as far as the search grows."""
 
 WIDTH_CANDIDATES = 16
 """Points at most of a way's narrowest (by the columns' clearance) whose width :func:`width_across` measures."""
@@ -258,14 +262,30 @@ def closest_step(a: Ground, b: Ground, climb_weight: float = 1.0, window: float 
                    np.stack([ra[near], rb[index[near]]], axis=1), np.maximum(sa[near], sb[index[near]]))
 
 
-def closest_step_for(a: Ground, b: Ground, agent: AgentConfig, window: float | None = None) -> Closest:
+def closest_step_for(a: Ground, b: Ground, agent: AgentConfig, window: float | None = None,
+                     caster: RayCaster | None = None) -> Closest:
     """:func:`closest_step`, or the closest pair on one floor when the plain one is a floor above another and the
-    one-floor pair is closer with vertical offsets counted ``agent.height / agent.max_climb`` times."""
+    one-floor pair is closer with vertical offsets counted ``agent.height / agent.max_climb`` times.
+
+    With the mesh's ``caster``, a one-floor pair across open air (no ground under the stretch between them within the
+    climb of their heights, :func:`floor_between`: no door's or plank's floor) gives way to the plain pair when a ramp
+    at ``agent.max_slope`` down the drop (its plan run, plus the plain pair's gap) is shorter than a bridge across
+    the gap: a gallery over its aisle is reached up from the aisle, not across the nave from the other gallery,
+    while a roof 2 m across a street from another stays a gap to bridge (docs/analysis_quality.md, "The
+    disconnected-areas warning's far stairs and galleries"). Two rays and up to ``GROUND_RAYS`` more."""
     plain = closest_step(a, b, window=window)
-    if plain.step <= float(agent.max_climb) or float(agent.max_climb) <= 0:
+    climb = float(agent.max_climb)
+    if plain.step <= climb or climb <= 0:
         return plain
-    weighted = closest_step(a, b, float(agent.height) / float(agent.max_climb), window)
-    return weighted if weighted.step <= float(agent.max_climb) else plain
+    weighted = closest_step(a, b, float(agent.height) / climb, window)
+    if weighted.step > climb:
+        return plain
+    if caster is not None:
+        ramp = plain.gap + plain.step / math.tan(math.radians(float(agent.max_slope)))
+        first = Closest(weighted.gap, weighted.step, weighted.pairs[:1], weighted.reach[:1], weighted.spacing[:1])
+        if ramp < weighted.gap and not floor_between(caster, first, agent, climb).on_ground.any():
+            return plain
+    return weighted
 
 
 def stretch_under(closest: Closest, start: np.ndarray, end: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -478,10 +498,13 @@ class WayUp(NamedTuple):
         width: metres across it at its narrowest along the widest way (twice the farthest its middle keeps from an
             edge, a wall or a drop, plus a column's spacing).
         narrowest: (3,) a point of it that narrow, the nearest to the warning's pair, metres.
+        risers: metres, 0 when the way is walked column to column; else the largest rise between neighbouring
+            columns it needs that only its treads walk (:func:`walked_by_treads`: two risers between two columns).
     """
 
     width: float
     narrowest: np.ndarray
+    risers: float = 0.0
 
 
 class StepUp(NamedTuple):
@@ -580,7 +603,42 @@ def width_across(caster: RayCaster, points: np.ndarray, agent: AgentConfig, spac
     return (reach[:, : directions // 2] + reach[:, directions // 2:]).min(axis=1)
 
 
+def walked_by_treads(caster: RayCaster, start: np.ndarray, end: np.ndarray, agent: AgentConfig) -> np.ndarray:
+    """(e,) bool: each pair of neighbouring columns' ground points ``start`` (e,3) and ``end`` (e,3) is walked along
+    its treads: probes down at a quarter, half and three quarters of the way (from the agent's knee over the higher
+    end, where :func:`column_links` found nothing across) each meet a face within ``agent.max_slope``, and each rise
+    from point to point along the five is at most ``agent.max_climb``. A stair whose treads are shorter than the
+    columns' spacing (a ship's companionway: treads 0.13-0.19 m deep, risers 0.20-0.24 m) puts two risers between
+    two columns, over the climb, and a probe on the tread between them reads each; a single step over the climb, or
+    a face steeper than the agent walks, leaves a rise over the climb or an unwalkable probe. Three rays a pair."""
+    count = len(start)
+    if count == 0:
+        return np.zeros(0, dtype=bool)
+    along = np.array([0.25, 0.5, 0.75])
+    probes = (start[:, None, :] + along[None, :, None] * (end - start)[:, None, :]).reshape(-1, 3)
+    probes[:, 1] = np.repeat(np.maximum(start[:, 1], end[:, 1]), len(along)) + AgentShape.from_config(agent).body[0]
+    hits = caster.first_hits(probes, -UP)
+    heights = (probes[:, 1] - hits.distance).reshape(count, len(along))
+    walkable = caster.walkable_faces(hits.face, float(agent.max_slope)).reshape(count, len(along)).all(axis=1)
+    profile = np.column_stack([start[:, 1], heights, end[:, 1]])
+    return walkable & (np.abs(np.diff(profile, axis=1)) <= float(agent.max_climb)).all(axis=1)
+
+
 def way_up(caster: RayCaster, closest: Closest, agent: AgentConfig) -> WayUp | StepUp | None:
+    """:func:`way_up_within` a disc round the pair's middle whose radius is twice the run of a slope at
+    ``agent.max_slope`` up the step plus twice the agent's height (a silo's spiral stair 11.5 m high: 27 m, 54 m
+    across), grown twice over while it finds neither a way nor a step, up to :data:`MAX_WAY_UP_COLUMNS` lines (36 m
+    at the presets' spacing): the closest pair of two decks lies anywhere along their edges, the stair between them
+    where the designer put it (a tween deck's hull side 11 m from its companionway; docs/analysis_quality.md, "The
+    disconnected-areas warning's far stairs and galleries")."""
+    most = float(agent.radius) / 2 * math.sqrt(MAX_WAY_UP_COLUMNS / math.pi)
+    radius = min(2 * closest.step / math.tan(math.radians(float(agent.max_slope))) + 2 * float(agent.height), most)
+    while (found := way_up_within(caster, closest, agent, radius)) is None and radius < most:
+        radius = min(2 * radius, most)
+    return found
+
+
+def way_up_within(caster: RayCaster, closest: Closest, agent: AgentConfig, radius: float) -> WayUp | StepUp | None:
     """Whether walkable ground climbs between two areas a floor or more apart (:attr:`Closest.step` over the
     agent's height) near where they come closest, as the agent would walk it: ground on faces within
     ``agent.max_slope`` with ``agent.height`` of head room (:func:`ground_columns`), each rise between neighbouring
@@ -592,16 +650,15 @@ def way_up(caster: RayCaster, closest: Closest, agent: AgentConfig) -> WayUp | S
     a rise over the climb and within the agent's height (a flight cut by a step too high); else None (no stair: a
     floor over another, a ramp steeper than the agent climbs, a ladder's rungs, with no head room between them).
 
-    The ground searched is a disc round the pair's middle whose radius is twice the run of a slope at
-    ``agent.max_slope`` up the step plus twice the agent's height (a silo's spiral stair 11.5 m high: 27 m,
-    54 m across). O(l log l) for its l columns (:data:`MAX_WAY_UP_COLUMNS`), one ray a ground point up and one a
-    neighbouring pair across.
+    The ground searched is a disc of ``radius`` metres round the pair's middle. A rise over the climb between
+    neighbouring columns is walked when its treads are (:func:`walked_by_treads`). O(l log l) for its l columns
+    (:data:`MAX_WAY_UP_COLUMNS`), one ray a ground point up and one a neighbouring pair across, three more a pair
+    whose rise is over what the agent walks and within its height.
     """
     lower, upper = sorted(closest.pairs[0], key=lambda point: point[1])
     reach_lower, reach_upper = closest.reach[0] if closest.pairs[0, 0, 1] <= closest.pairs[0, 1, 1] else closest.reach[0, ::-1]
     climb, height = float(agent.max_climb), float(agent.height)
     tolerance = climb + GROUND_MARGIN  # the navmesh's edges lie up to Recast's cells over the ground
-    radius = 2 * closest.step / math.tan(math.radians(float(agent.max_slope))) + 2 * height
     ground = ground_columns(caster, (lower + upper) / 2, radius, float(lower[1]) - tolerance, float(upper[1]) + tolerance, agent)
     if len(ground.points) == 0:
         return None
@@ -609,7 +666,11 @@ def way_up(caster: RayCaster, closest: Closest, agent: AgentConfig) -> WayUp | S
     plan = np.hypot(*(ground.points[b] - ground.points[a])[:, [0, 2]].T)
     rise = np.abs(ground.points[b, 1] - ground.points[a, 1])
     walked = rise <= AgentShape.from_config(agent).max_rise(plan)
+    treads = ~walked & (rise <= height)
+    treads[treads] = walked_by_treads(caster, ground.points[a[treads]], ground.points[b[treads]], agent)
     n = len(ground.points)
+    stepwise = sparse.coo_matrix((plan[walked], (a[walked], b[walked])), shape=(n, n)).tocsr()
+    walked |= treads
     links = sparse.coo_matrix((plan[walked], (a[walked], b[walked])), shape=(n, n)).tocsr()
     _, component = connected_components(links, directed=False)
 
@@ -645,8 +706,12 @@ def way_up(caster: RayCaster, closest: Closest, agent: AgentConfig) -> WayUp | S
             break
     else:
         level = np.inf
+    # the risers only the treads walk, when the way needs them (the two sides part without)
+    _, by_step = connected_components(stepwise, directed=False)
+    needed = treads & np.isin(component[a], joined)
+    risers = 0.0 if np.intersect1d(by_step[start], by_step[end]).size or not needed.any() else float(rise[needed].max())
     if not np.isfinite(level):  # the two areas' ground meets: no way between them to measure
-        return WayUp(math.inf, ground.points[np.flatnonzero(start)[0]])
+        return WayUp(math.inf, ground.points[np.flatnonzero(start)[0]], risers)
     # of the way's narrowest columns, the nearest the warning's pair, measured across by rays: the columns'
     # clearance places it to a spacing or two either side
     way = np.flatnonzero(np.isin(inside, np.intersect1d(inside[start], inside[end])) & (inward == level))
@@ -655,13 +720,14 @@ def way_up(caster: RayCaster, closest: Closest, agent: AgentConfig) -> WayUp | S
     # is at least what the columns' clearance along the walked links gives (they follow the treads)
     width = np.maximum(width_across(caster, ground.points[way], agent, ground.spacing), 2 * level + ground.spacing)
     chosen = int(np.argmin(width))
-    return WayUp(float(width[chosen]), ground.points[way[chosen]])
+    return WayUp(float(width[chosen]), ground.points[way[chosen]], risers)
 
 
 def way_up_cause(found: WayUp | StepUp, agent: AgentConfig, kept_width: float | None) -> str:
     """The warning's cause for what :func:`way_up` found: the step, or the stair or ramp with its width at its
-    narrowest and where, against the agent's width and, on the navmesh route, ``kept_width`` (metres: the least
-    walkway between a wall and a drop that the navmesh keeps floor on; None on the sampling route)."""
+    narrowest and where (a stair whose treads alone walk it, :attr:`WayUp.risers`: its two risers a cell), against
+    the agent's width and, on the navmesh route, ``kept_width`` (metres: the least walkway between a wall and a drop
+    that the navmesh keeps floor on; None on the sampling route)."""
     if isinstance(found, StepUp):
         return f"{likely_cause(found.rise, 0.0, agent)}, at ({xyz(found.foot)})"
     radius = float(agent.radius)
@@ -669,6 +735,10 @@ def way_up_cause(found: WayUp | StepUp, agent: AgentConfig, kept_width: float | 
     if found.width < 2 * radius:
         return (f"a stair or ramp between them narrower than the agent ({width.strip()}; "
                 f"agent.radius {radius:g} m), at ({xyz(found.narrowest)})")
+    if found.risers > 0:  # the graph's cells or probes, as the columns, read two risers as one step
+        return (f"a stair between them{width} whose treads are shorter than a cell (agent.radius / 2, "
+                f"{radius / 2:g} m): neighbouring cells' ground differs by two risers, about {found.risers:.2f} m, over "
+                f"agent.max_climb ({float(agent.max_climb):g} m), at ({xyz(found.narrowest)})")
     if kept_width is None:
         return (f"a stair or ramp between them{width} that the sampled graph does not walk for this agent "
                 f"(agent.radius {radius:g} m, agent.max_climb {float(agent.max_climb):g} m), at ({xyz(found.narrowest)})")
@@ -719,7 +789,7 @@ def edge_distances(ground: Ground, others: Sequence[Ground]) -> np.ndarray:
 
 
 def nearest_area(ground: Ground, grounds: Sequence[Ground], areas: Sequence[Sequence[int]],
-                 agent: AgentConfig) -> tuple[Closest, Sequence[int]]:
+                 agent: AgentConfig, caster: RayCaster | None = None) -> tuple[Closest, Sequence[int]]:
     """Of ``areas`` (node lists, ``grounds`` their ground), the one whose ground comes nearest ``ground`` (gap and
     rise, :func:`closest_step_for`), with its :class:`Closest` (ties among those measured: the nearer by edge points,
     then the earlier).
@@ -727,7 +797,7 @@ def nearest_area(ground: Ground, grounds: Sequence[Ground], areas: Sequence[Sequ
     A gap is a pair's plan distance less both points' reach, so an area's hypot(gap, rise) is at least the
     straight-line distance of its edge points from ``ground``'s (:func:`edge_distances`) less the two grounds'
     farthest reach. The areas are measured in the order of that bound until it is no less than the nearest found (no
-    area after it comes strictly nearer): exact, whatever their count, at the cost of one :func:`closest_step_for` for each area whose bound lies under the
+    area after it comes strictly nearer; ``caster`` as :func:`closest_step_for`'s): exact, whatever their count, at the cost of one :func:`closest_step_for` for each area whose bound lies under the
     answer (those within the answer plus two reaches of ``ground``'s edge points: half a square and the clearance
     each on the sampling route)."""
     distance = edge_distances(ground, grounds)
@@ -736,7 +806,7 @@ def nearest_area(ground: Ground, grounds: Sequence[Ground], areas: Sequence[Sequ
     for k in np.argsort(bound, kind="stable").tolist():
         if measured and bound[k] >= min(measured)[0]:
             break
-        closest = closest_step_for(ground, grounds[k], agent)
+        closest = closest_step_for(ground, grounds[k], agent, caster=caster)
         measured.append((apart(closest), float(distance[k]), k, closest))
     _, _, k, closest = min(measured, key=lambda row: row[:3])
     return closest, areas[k]
@@ -769,12 +839,14 @@ def areas_cause(graph: nx.Graph, largest: Sequence[int], others: Sequence[Sequen
     """
     ground = rim(graph, largest)  # once, however many areas it is compared with
     joined = joined_areas(graph, largest, others)
-    closest, nearest = nearest_area(ground, [rim(graph, others[k]) for k in joined], [others[k] for k in joined], agent)
+    caster = None if mesh is None else RayCaster(mesh)
+    closest, nearest = nearest_area(ground, [rim(graph, others[k]) for k in joined], [others[k] for k in joined], agent,
+                                    caster)
     size, middle = area_summary(graph, nearest)
     named = set(joined)
     smaller = [other for k, other in enumerate(others) if k not in named]
     # a low ceiling is asked along the seam, not only where it comes closest (below)
-    seam = None if mesh is None else closest_step_for(ground, rim(graph, nearest), agent, float(agent.height))
+    seam = None if mesh is None else closest_step_for(ground, rim(graph, nearest), agent, float(agent.height), caster)
     return (f"from the largest area to the nearest area of {size:,.0f} m², {nearest_cause(closest, middle, agent, mesh, seam, kept_width, kept_head_room)}"
             f"{smaller_nearer(graph, ground, smaller, apart(closest), agent, rim, mesh)}")
 
@@ -792,7 +864,8 @@ def smaller_nearer(graph: nx.Graph, ground: Ground, smaller: Sequence[Sequence[i
     """
     if not smaller:
         return ""
-    closest, nodes = nearest_area(ground, [rim(graph, other) for other in smaller], smaller, agent)
+    closest, nodes = nearest_area(ground, [rim(graph, other) for other in smaller], smaller, agent,
+                                  None if mesh is None else RayCaster(mesh))
     if apart(closest) > 2 * float(agent.radius) + READ_AS_EQUAL or apart(closest) > named - READ_AS_EQUAL:
         return ""
     rise = float(closest.there[1] - closest.here[1])

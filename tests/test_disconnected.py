@@ -516,3 +516,55 @@ def test_a_stair_the_sampled_graph_does_not_walk_is_named_on_the_sampling_route(
     assert "Likely cause: from the largest area to the nearest area of 45 m², a stair or ramp between them about 1.2 m " \
            "wide at its narrowest that the sampled graph does not walk for this agent (agent.radius 0.5 m, " \
            "agent.max_climb 0.4 m), at (" in message
+
+
+def far_stair(going: float) -> trimesh.Trimesh:
+    """A yard (y = 0, x < 4, z -8 to 8) beside a deck 3 m high (x 4-14), a stair 1.4 m wide up the deck's face at its
+    south end (z -8 to -6.6) of 14 risers of 3 / 14 m on treads ``going`` m deep (0.28: a stair; 0.16: a ship's
+    companionway, two tread edges in a 0.25 m cell), cantilevered, 0.05 m thick."""
+    solids = [(-10, 4, -0.3, 0, -8, 8), (4, 14, -0.3, 3, -8, 8)]
+    for i, height in enumerate(np.cumsum([3 / 14] * 14)[:-1]):
+        x = 4 - going * (13 - i)
+        solids.append((x, x + going, height - 0.05, height, -8, -6.6))
+    return boxes(*solids)
+
+
+@pytest.mark.parametrize("going, cause", [
+    (0.28, "a stair or ramp between them about 1.2 m wide at its narrowest, narrower than the navmesh keeps"),
+    (0.16, "a stair between them about 1.2 m wide at its narrowest whose treads are shorter than a cell (agent.radius "
+           "/ 2, 0.25 m): neighbouring cells' ground differs by two risers, about 0.43 m, over agent.max_climb (0.4 m)"),
+])
+def test_a_stair_14_m_from_the_closest_pair_is_found_and_read_by_its_treads(going, cause):
+    """Round 38's coaming deck: the navmesh's yard juts to 0.5 m from the deck's edge at its north end (z 6.5-7.5),
+    where the pair the warning measures lies, 14 m from the stair; the disc searched (10 m round the pair for a rise of
+    3 m) did not reach it. A companionway's treads (0.16 m) put two risers (0.43 m) between columns 0.25 m apart.
+    The drawn 1.4 m reads 1.2 m, as the coaming deck's companionways (the level's edge at one side)."""
+    navmesh, graph = navmesh_of([(-9.5, 3.5, -7.5, 7.5, 0.0), (3.5, 4.0, 6.5, 7.5, 0.0), (4.5, 13.5, -7.5, 7.5, 3.0)])
+    graph.add_edge(0, 1)
+    message = disconnected_warning(graph, areas(graph), 2, likely_cause_of(AgentConfig(), navmesh, mesh=far_stair(going)))
+    assert f"Likely cause: from the largest area to the nearest area of 135 m², {cause}" in message
+    place = np.array(message.rsplit("at (", 1)[1].removesuffix(" m).").split(", "), dtype=float)
+    assert 1.0 <= place[0] <= 4.0 and -8.0 <= place[2] <= -6.6
+
+
+@pytest.mark.parametrize("north, cause", [
+    # a gallery over its aisle, 8 m across the nave from the other: reached up from the aisle (a ramp 4 m in plan)
+    (11.0, "separate floors (4.0 m apart) with no walkable stairs or ramp between them for this agent (agent.max_climb "
+           "0.4 m, agent.max_slope 45°), e.g. between ("),
+    # a roof 2 m across a street from another: a gap to bridge (shorter than the ramp)
+    (5.0, "a gap or passage too narrow for the agent (agent.radius 0.5 m), or a wall, where their ground lies about "
+          "2.0 m apart"),
+])
+def test_a_gallery_over_its_aisle_is_named_by_the_drop_not_the_gap_across_the_nave(north, cause):
+    """Round 38's rubble nave: a floor (y = 0, z 0-14) under two galleries 4 m up, the south one (z 0-3) joined to the
+    floor, the north one (z from ``north`` to 14) apart. Across the nave the one-floor pair (no ground under it) was
+    named, "about 8.0 m apart" in mid-air; a ramp at the agent's 45 degrees down the 4 m drop is shorter."""
+    mesh = boxes((0, 20, -0.3, 0, 0, 14), (0, 20, 3.7, 4, 0, 3), (0, 20, 3.7, 4, north, 14))
+    navmesh, graph = navmesh_of([(0.5, 19.5, 0.5, 13.5, 0.0), (0.5, 19.5, 0.5, 2.5, 4.0),
+                                 (0.5, 19.5, north + 0.5, 13.5, 4.0)])
+    graph.add_edge(0, 1)
+    message = disconnected_warning(graph, areas(graph), 2, likely_cause_of(AgentConfig(), navmesh, mesh=mesh))
+    assert cause in message
+    if north == 11.0:  # the pair names the north gallery's edge and the aisle under it
+        places = re.findall(r"\(([-\d.]+), ([-\d.]+), ([-\d.]+) m\)", message.split("e.g. between", 1)[1])
+        assert sorted(float(y) for _, y, _ in places) == [0.0, 4.0] and all(float(z) >= 11.0 for _, _, z in places)
