@@ -9,7 +9,7 @@ import trimesh
 
 from g2s_core.config import PRESETS_DIR, load_config
 from g2s_plugins.recast import RecastParams, SettingsError, build_navmesh, resolve_settings, voxel_config
-from g2s_plugins.recast.settings import MAX_SPAN_HEIGHT, climb_cell_height
+from g2s_plugins.recast.settings import MAX_SPAN_HEIGHT, climb_cell_height, coarse_climb_warning
 from tests.conftest import benchmark
 
 climb_steps = benchmark("climb_steps")
@@ -123,3 +123,15 @@ def test_coarser_climb_cells_are_named_in_a_warning(tall, agent_height, warned):
         assert not coarse
     else:
         assert len(coarse) == 1 and warned in coarse[0] and "m over the agent's climb of 0.4 m" in coarse[0]
+
+
+def test_the_warning_on_recasts_cells_names_the_band_round_the_climb():
+    # review57 LOW 7: from about 820 m the cells are Recast's 0.125 m, of which the 0.4 m climb is no whole number
+    # (3 cells, 0.375 m): a step under the climb may be refused too, so the warning names the band both sides of it
+    config = load_config(PRESETS_DIR / "map_analysis.yaml")
+    params = RecastParams(**config.graph.params)
+    warned = coarse_climb_warning(resolve_settings(config.agent, params, 900.0), params, 900.0)
+    assert warned is not None and "a step from 0.375 to 0.5 m (the agent's climb is 0.4 m) may be climbed or not" in (
+        warned)
+    exact = coarse_climb_warning(resolve_settings(config.agent, params, 300.0), params, 300.0)
+    assert exact is not None and "a step up to 0.04 m over the agent's climb of 0.4 m may be climbed" in exact

@@ -262,9 +262,14 @@ def coarse_climb_warning(settings: dict[str, Any], params: RecastParams, level_h
     cause = (f"the level's {level_height:.4g} m of height in Recast's {MAX_SPAN_HEIGHT} cells" if agent_fits else
              f"the agent's height and climb ({settings['agent_height']:g} + {climb:g} m) in Recast's 8-bit span "
              f"clearance")
+    cells = int(voxel_config(settings)["walkableClimb"])
+    if cells * ch < climb * (1 - 1e-6):  # Recast's 0.125 m cells, which the climb is no whole number of
+        band = (f"a step from {cells * ch:.3g} to {(cells + 1) * ch:.3g} m (the agent's climb is {climb:g} m) may be "
+                f"climbed or not")
+    else:
+        band = f"a step up to {ch:.3g} m over the agent's climb of {climb:g} m may be climbed"
     return (f"graph.params.climb: agent: the navmesh's cells are {ch:.3g} m high, not {CLIMB_BAND:g} m, to hold "
-            f"{cause}; a step up to {ch:.3g} m over the agent's climb of {climb:g} m may be climbed by where its "
-            f"floors lie (docs/navmesh.md, \"The climb at every alignment\")")
+            f"{cause}; {band} by where its floors lie (docs/navmesh.md, \"The climb at every alignment\")")
 
 
 def resolve_settings(agent: Any, params: RecastParams | None = None,
