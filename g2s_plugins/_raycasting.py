@@ -1786,7 +1786,8 @@ def walks_in_batch(
     * between neighbouring points the ground rises or falls by no more than
       the agent's max climb (a step) or its max slope times their distance,
       and a horizontal ray from one point to the next at the climb over the
-      lower one's ground meets no triangle steeper than the max slope: a
+      lower one's ground (or at the higher one's, where the slope lets them
+      differ by more) meets no triangle steeper than the max slope: a
       sill over the climb thinner than ``probe_step``, which no probe may
       land on, stops the walk as a step would, while a stair's nosings and
       a slope's crest between two probes stay under it (asked of the walks
@@ -1856,7 +1857,7 @@ def walks_in_batch(
         normal_y, least_y, agent.height, agent.max_climb, agent.tan_slope, HEIGHT_TOLERANCE, max_gap, knee, head, body)
     walking = np.flatnonzero(ok)
     if len(walking):  # a sill over the climb between two probes, which neither lands on (benchmarks/thin_sills.py)
-        steps = batch.steps(walking, agent.max_climb + RISE_TOLERANCE)
+        steps = batch.steps(walking, agent.max_climb, RISE_TOLERANCE)
         _cast_batch(caster, *steps.rays(shift), steps.hit, steps.set_hits)
         ok[walking[steps.blocked(normal_y, least_y)]] = False
         still = ok[rows]

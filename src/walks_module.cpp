@@ -358,8 +358,10 @@ class WalkBatch {
     }
 
     // The rays over the steps of the walks `rows` (after verdict(), whose ground they read): from each probe to the
-    // next, horizontally, `over` metres above the lower of the two probes' ground
-    StepRays steps(Rows rows, double over) const {
+    // next, horizontally, `climb` over the lower of the two probes' ground or at the higher one's, whichever is
+    // higher, plus `tolerance`: where the slope test lets two probes differ by more than the climb (a probe step over
+    // two risers of a steep stair), a ray at the climb would meet the upper riser of a stair the agent climbs
+    StepRays steps(Rows rows, double climb, double tolerance) const {
         if (ground_y_.size() != segment_.size()) throw nb::value_error("WalkBatch: steps() after verdict()");
         StepRays out;
         out.walks = rows.shape(0);
@@ -369,7 +371,9 @@ class WalkBatch {
             for (size_t p = begin; p < end; ++p) {
                 const double* a = &line_[3 * p];
                 const double* b = &line_[3 * (p + 1)];
-                const double origin[3] = {a[0], std::min(ground_y_[p], ground_y_[p + 1]) + over, a[2]};
+                const double low = std::min(ground_y_[p], ground_y_[p + 1]);
+                const double high = std::max(ground_y_[p], ground_y_[p + 1]);
+                const double origin[3] = {a[0], std::max(low + climb, high) + tolerance, a[2]};
                 const double direction[3] = {b[0] - a[0], 0.0, b[2] - a[2]};
                 const double horizontal = std::hypot(direction[0], direction[2]);
                 if (horizontal <= 1e-9) continue;  // a vertical walk: no step between its probes
@@ -431,6 +435,7 @@ NB_MODULE(_walks, m) {
              nb::arg("max_climb"), nb::arg("tan_slope"), nb::arg("height_tolerance"), nb::arg("max_gap").none(),
              nb::arg("knee"), nb::arg("head"), nb::arg("body"),
              "(ok (n,), rise (n,), band rows (k,), low, along, side (k, 3), heights (k, 2) or None)")
-        .def("steps", &WalkBatch::steps, nb::arg("rows"), nb::arg("over"),
-             "the rays over the steps of the walks rows (after verdict), over metres above the lower probe's ground");
+        .def("steps", &WalkBatch::steps, nb::arg("rows"), nb::arg("climb"), nb::arg("tolerance"),
+             "the rays over the steps of the walks rows (after verdict): at the climb over the lower probe's ground or "
+             "the higher's ground, whichever is higher, plus tolerance");
 }

@@ -134,3 +134,19 @@ def test_a_thin_sill_over_the_climb_is_never_crossed_and_one_under_it_always(yaw
     # coaming deck joined cabins behind coamings of 0.41-0.49 m). A ray from each probe to the next at the climb
     # over the lower one's ground meets it now; a 0.35 m one stays under that ray at every offset.
     assert benchmark("thin_sills").crossed("map_analysis_sampling", "sill", height, 0.12, yaw) == crossed
+
+
+def test_a_wide_agent_walks_up_a_stair_whose_probe_step_spans_two_risers() -> None:
+    # An agent of radius 1.0 m probes every 0.5 m, so on a 45-degree stair of 0.25 m risers two probes differ by
+    # two risers, which its 45-degree slope allows; a ray at the climb over the lower probe met the upper riser and
+    # stopped 24 of these 26 walks (review57 MED 3). The ray starts at the higher probe's ground where that is higher.
+    agent = AgentShape.from_config(load_config(PRESETS_DIR / "map_analysis_sampling.yaml").agent.model_copy(
+        update={"radius": 1.0}))
+    steps = [trimesh.creation.box(bounds=[[0.25 * i, -0.5, -4.0], [4.0, 0.25 * (i + 1), 4.0]]) for i in range(6)]
+    caster = RayCaster(trimesh.util.concatenate([trimesh.creation.box(bounds=[[-4.0, -0.5, -4.0], [4.0, 0.0, 4.0]]),
+                                                 *steps]))
+    starts = np.zeros((26, 3))
+    starts[:, 0] = -1.0 + 0.01 * np.arange(26)
+    ends = starts + [3.0, 1.5, 0.0]
+    ok, _ = walks_in_batch(caster, starts, ends, agent, 0.5, half_width=0.9, body=True)
+    assert ok.all()
