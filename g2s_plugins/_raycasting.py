@@ -1784,7 +1784,15 @@ def walks_in_batch(
       within one crack step on both sides of it, :func:`ground_across_crack`
       with :data:`CRACK_STEPS`);
     * between neighbouring points the ground rises or falls by no more than
-      the agent's max climb (a step) or its max slope times their distance;
+      the agent's max climb (a step) or its max slope times their distance,
+      and a horizontal ray from one point to the next at the climb over the
+      lower one's ground (or at the higher one's, where the slope lets them
+      differ by more) meets no triangle steeper than the max slope: a
+      sill over the climb thinner than ``probe_step``, which no probe may
+      land on, stops the walk as a step would, while a stair's nosings and
+      a slope's crest between two probes stay under it (asked of the walks
+      passing every test above; docs/sampling.md, "Thin sills between the
+      climb and the knee");
     * with ``max_gap``, the ground under every point lies within ``max_gap``
       above or below the straight segment (it does not cut under a ramp or
       over a drop).
@@ -1797,7 +1805,8 @@ def walks_in_batch(
     and the band test; a numpy formulation ran a few hundred array operations
     a batch, each costing more per call than per walk on the batches of a few
     dozen walks that the builder and the mesh_los predicate ask (docs/performance.md,
-    samp5_47 and walks47). O(rays) a batch, plus the band test's.
+    samp5_47 and walks47); the rays over the steps need the probes' ground,
+    so theirs is a second cast. O(rays) a batch, plus the band test's.
 
     Args:
         caster: the level's ray caster.
@@ -1846,6 +1855,14 @@ def walks_in_batch(
     knee, head = agent.body
     ok, rise, rows, low, along, side, heights = batch.verdict(
         normal_y, least_y, agent.height, agent.max_climb, agent.tan_slope, HEIGHT_TOLERANCE, max_gap, knee, head, body)
+    walking = np.flatnonzero(ok)
+    if len(walking):  # a sill over the climb between two probes, which neither lands on (benchmarks/thin_sills.py)
+        steps = batch.steps(walking, agent.max_climb, RISE_TOLERANCE)
+        _cast_batch(caster, *steps.rays(shift), steps.hit, steps.set_hits)
+        ok[walking[steps.blocked(normal_y, least_y)]] = False
+        still = ok[rows]
+        rows, low, along, side = rows[still], low[still], along[still], side[still]
+        heights = None if heights is None else heights[still]
     if len(rows) and heights is not None:  # the body's slab: broad and narrow phase in one extension call
         steep = caster.steep_faces(agent.max_slope_deg)
         if len(steep.triangles):

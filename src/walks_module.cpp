@@ -137,6 +137,35 @@ struct Rays {
     }
 };
 
+// The rays over the steps of some walks of a batch (WalkBatch::steps): between each two neighbouring probes of a
+// walk, a horizontal ray from the first to the second at a height over the lower one's ground; a steep face across
+// one (a sill thinner than the probe step, which no probe lands on) stops the walk. Their casts as WalkBatch's.
+class StepRays {
+  public:
+    Rays rays;
+    std::vector<int64_t> walk;      // the row (of the walks asked) of each ray
+    std::vector<double> length;     // the horizontal distance between the ray's two probes
+    size_t walks = 0;
+
+    nb::tuple local(std::optional<Point> shift) const { return rays.local(shift); }
+    nb::ndarray<nb::numpy, int64_t> hit(Faces faces, Rows3 local, Rows3 normals, Rows3 plane_points, Rows3 centroids,
+                                        Faces twin) {
+        return rays.hit(faces, local, normals, plane_points, centroids, twin);
+    }
+    void set_hits(Rows rows, Faces faces, Values distances) { rays.set(rows, faces, distances); }
+
+    // (walks,) bool: a ray of the walk meets a face steeper than the max slope (normal's y under `least_y`) short
+    // of the next probe
+    nb::ndarray<nb::numpy, bool> blocked(Values normal_y, double least_y) const {
+        std::vector<uint8_t> out(walks, 0);
+        for (size_t r = 0; r < rays.size(); ++r) {
+            const int64_t f = rays.face[r];
+            if (rays.distance[r] < length[r] && !(f >= 0 && normal_y.data()[f] >= least_y)) out[walk[r]] = 1;
+        }
+        return bools_of(out);
+    }
+};
+
 // One batch of walks from starts[i] to ends[i] (walks_in_batch's arguments), its probe points and rays, then their
 // hits and the tests on them. Rays, in this order: the lifted segments of the moving walks, the probes'
 // downward then upward rays, the side lines' left then right copies of the walks with sides.
@@ -282,7 +311,8 @@ class WalkBatch {
                 }
         }
         const size_t probes = segment_.size();
-        std::vector<double> ground_y(probes);
+        std::vector<double>& ground_y = ground_y_;
+        ground_y.assign(probes, 0.0);
         for (size_t p = 0; p < probes; ++p) {
             const double y = line_[3 * p + 1];
             ground_y[p] = good_[p] ? (y + lift_) - ground_distance_[p] : y;
@@ -327,6 +357,34 @@ class WalkBatch {
                               numpy_of(along, {k, 3}), numpy_of(side, {k, 3}), band_heights);
     }
 
+    // The rays over the steps of the walks `rows` (after verdict(), whose ground they read): from each probe to the
+    // next, horizontally, `climb` over the lower of the two probes' ground or at the higher one's, whichever is
+    // higher, plus `tolerance`: where the slope test lets two probes differ by more than the climb (a probe step over
+    // two risers of a steep stair), a ray at the climb would meet the upper riser of a stair the agent climbs
+    StepRays steps(Rows rows, double climb, double tolerance) const {
+        if (ground_y_.size() != segment_.size()) throw nb::value_error("WalkBatch: steps() after verdict()");
+        StepRays out;
+        out.walks = rows.shape(0);
+        for (size_t k = 0; k < rows.shape(0); ++k) {
+            const size_t i = checked(rows.data()[k], n_);
+            const size_t begin = first_[i], end = begin + static_cast<size_t>(intervals_[i]);
+            for (size_t p = begin; p < end; ++p) {
+                const double* a = &line_[3 * p];
+                const double* b = &line_[3 * (p + 1)];
+                const double low = std::min(ground_y_[p], ground_y_[p + 1]);
+                const double high = std::max(ground_y_[p], ground_y_[p + 1]);
+                const double origin[3] = {a[0], std::max(low + climb, high) + tolerance, a[2]};
+                const double direction[3] = {b[0] - a[0], 0.0, b[2] - a[2]};
+                const double horizontal = std::hypot(direction[0], direction[2]);
+                if (horizontal <= 1e-9) continue;  // a vertical walk: no step between its probes
+                out.rays.add(origin, direction);
+                out.walk.push_back(static_cast<int64_t>(k));
+                out.length.push_back(horizontal);
+            }
+        }
+        return out;
+    }
+
   private:
     static bool walkable(int64_t face, const Values& normal_y, double least_y) {
         return face >= 0 && normal_y.data()[face] >= least_y;
@@ -342,7 +400,7 @@ class WalkBatch {
     std::vector<int64_t> intervals_;
     std::vector<size_t> first_, segment_;
     std::vector<uint8_t> moving_, sideways_, good_;
-    std::vector<double> ground_distance_;
+    std::vector<double> ground_distance_, ground_y_;
     Rays rays_;
     size_t across_ = 0, down_ = 0, up_ = 0, left_ = 0, right_ = 0;
 };
@@ -351,6 +409,14 @@ class WalkBatch {
 
 NB_MODULE(_walks, m) {
     m.doc() = "One batch of the walk test's arithmetic round its ray casts (see src/walks_module.cpp).";
+    nb::class_<StepRays>(m, "StepRays", "the horizontal rays between neighbouring probes over the lower's ground")
+        .def("rays", &StepRays::local, nb::arg("shift").none(),
+             "(origins (R, 3) float64, shifted by -shift unless None; unit directions (R, 3) float64)")
+        .def("hit", &StepRays::hit, nb::arg("faces"), nb::arg("local"), nb::arg("normals"), nb::arg("plane_points"),
+             nb::arg("centroids"), nb::arg("twin"), "the intersector's faces (R,) -> rows of the grazing rays")
+        .def("set_hits", &StepRays::set_hits, nb::arg("rows"), nb::arg("faces"), nb::arg("distances"))
+        .def("blocked", &StepRays::blocked, nb::arg("normal_y"), nb::arg("least_y"),
+             "(walks,) bool: a steep face across a ray short of its next probe");
     nb::class_<WalkBatch>(m, "WalkBatch", "the walk test's probe points, rays and tests of one batch of walks")
         .def(nb::init<Rows3, Rows3, double, double, double>(), nb::arg("starts"), nb::arg("ends"), nb::arg("lift"),
              nb::arg("probe_step"), nb::arg("half_width"))
@@ -368,5 +434,8 @@ NB_MODULE(_walks, m) {
         .def("verdict", &WalkBatch::verdict, nb::arg("normal_y"), nb::arg("least_y"), nb::arg("height"),
              nb::arg("max_climb"), nb::arg("tan_slope"), nb::arg("height_tolerance"), nb::arg("max_gap").none(),
              nb::arg("knee"), nb::arg("head"), nb::arg("body"),
-             "(ok (n,), rise (n,), band rows (k,), low, along, side (k, 3), heights (k, 2) or None)");
+             "(ok (n,), rise (n,), band rows (k,), low, along, side (k, 3), heights (k, 2) or None)")
+        .def("steps", &WalkBatch::steps, nb::arg("rows"), nb::arg("climb"), nb::arg("tolerance"),
+             "the rays over the steps of the walks rows (after verdict): at the climb over the lower probe's ground or "
+             "the higher's ground, whichever is higher, plus tolerance");
 }

@@ -1,4 +1,5 @@
-"""``walks_in_batch`` over floors with cracks: a grating's slots are stepped over, a hole is not."""
+"""``walks_in_batch`` over floors with cracks: a grating's slots are stepped over, a hole is not; over thin sills: one over
+the climb is not."""
 from __future__ import annotations
 
 import numpy as np
@@ -9,6 +10,7 @@ from g2s_core.config import PRESETS_DIR, load_config
 from g2s_plugins._raycasting import (
     CRACK_STEPS, JOINT_CALL_MAX_RAYS, UP, AgentShape, RayCaster, crack_sides, ground_across_crack, walks_in_batch,
 )
+from tests.conftest import benchmark
 
 AGENT = AgentShape.from_config(load_config(PRESETS_DIR / "map_piece_sampling.yaml").agent)
 
@@ -121,3 +123,30 @@ def test_a_hole_across_a_walkway_wider_than_two_crack_steps_stays_a_hole(gap: fl
     assert on.all() if floor else not on.any()
     ok, _ = walks_in_batch(caster, np.array([[3.0, 0.0, 0.3]]), np.array([[3.0, 0.0, 1.9 + gap]]), AGENT, 0.02)
     assert ok.tolist() == [floor]
+
+
+@pytest.mark.parametrize("yaw", [0.0, 22.0, 45.0])
+@pytest.mark.parametrize(("height", "crossed"), [(0.45, 0), (0.35, 26)])
+def test_a_thin_sill_over_the_climb_is_never_crossed_and_one_under_it_always(yaw: float, height: float,
+                                                                             crossed: int) -> None:
+    # A sill 0.12 m thick, under the 0.25 m probe step, stopped a walk only where a probe landed on it or, from
+    # 0.5 m up, through the body's slab: a 0.45 m sill was crossed by 14 of the 26 walks at 0 degrees (round 38's
+    # coaming deck joined cabins behind coamings of 0.41-0.49 m). A ray from each probe to the next at the climb
+    # over the lower one's ground meets it now; a 0.35 m one stays under that ray at every offset.
+    assert benchmark("thin_sills").crossed("map_analysis_sampling", "sill", height, 0.12, yaw) == crossed
+
+
+def test_a_wide_agent_walks_up_a_stair_whose_probe_step_spans_two_risers() -> None:
+    # An agent of radius 1.0 m probes every 0.5 m, so on a 45-degree stair of 0.25 m risers two probes differ by
+    # two risers, which its 45-degree slope allows; a ray at the climb over the lower probe met the upper riser and
+    # stopped 24 of these 26 walks (review57 MED 3). The ray starts at the higher probe's ground where that is higher.
+    agent = AgentShape.from_config(load_config(PRESETS_DIR / "map_analysis_sampling.yaml").agent.model_copy(
+        update={"radius": 1.0}))
+    steps = [trimesh.creation.box(bounds=[[0.25 * i, -0.5, -4.0], [4.0, 0.25 * (i + 1), 4.0]]) for i in range(6)]
+    caster = RayCaster(trimesh.util.concatenate([trimesh.creation.box(bounds=[[-4.0, -0.5, -4.0], [4.0, 0.0, 4.0]]),
+                                                 *steps]))
+    starts = np.zeros((26, 3))
+    starts[:, 0] = -1.0 + 0.01 * np.arange(26)
+    ends = starts + [3.0, 1.5, 0.0]
+    ok, _ = walks_in_batch(caster, starts, ends, agent, 0.5, half_width=0.9, body=True)
+    assert ok.all()

@@ -40,8 +40,9 @@ def test_the_body_slab_stops_a_walk_between_bollards_above_the_step() -> None:
     for height, passes in [(0.7, False), (0.45, True)]:
         caster = RayCaster(bollard_row(height))
         assert both(caster, *walk, agent, 0.25, half_width=0.45, body=True) == [passes]
-        # 2 m in 0.25 m steps: 9 probes, each a ray down and one up, the lifted line and its two side copies
-        assert caster.rays_cast == 21
+        # 2 m in 0.25 m steps: 9 probes, each a ray down and one up, the lifted line and its two side copies; then,
+        # the walk passing those, a ray from each probe to the next at the climb (8; the bollards stand beside it)
+        assert caster.rays_cast == 29
         assert both(caster, *walk, agent, 0.25, half_width=0.45) == [True]
 
 
