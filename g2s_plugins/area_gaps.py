@@ -669,7 +669,7 @@ def way_up_within(caster: RayCaster, closest: Closest, agent: AgentConfig, radiu
     treads = ~walked & (rise <= height)
     treads[treads] = walked_by_treads(caster, ground.points[a[treads]], ground.points[b[treads]], agent)
     n = len(ground.points)
-    stepwise = sparse.coo_matrix((plan[walked], (a[walked], b[walked])), shape=(n, n)).tocsr()
+    stepwise = walked.copy()  # the links walked column to column, before the treads' own
     walked |= treads
     links = sparse.coo_matrix((plan[walked], (a[walked], b[walked])), shape=(n, n)).tocsr()
     _, component = connected_components(links, directed=False)
@@ -707,9 +707,13 @@ def way_up_within(caster: RayCaster, closest: Closest, agent: AgentConfig, radiu
     else:
         level = np.inf
     # the risers only the treads walk, when the way needs them (the two sides part without)
-    _, by_step = connected_components(stepwise, directed=False)
     needed = treads & np.isin(component[a], joined)
-    risers = 0.0 if np.intersect1d(by_step[start], by_step[end]).size or not needed.any() else float(rise[needed].max())
+    risers = 0.0
+    if needed.any():
+        steps = sparse.coo_matrix((plan[stepwise], (a[stepwise], b[stepwise])), shape=(n, n)).tocsr()
+        _, by_step = connected_components(steps, directed=False)
+        if not np.intersect1d(by_step[start], by_step[end]).size:
+            risers = float(rise[needed].max())
     if not np.isfinite(level):  # the two areas' ground meets: no way between them to measure
         return WayUp(math.inf, ground.points[np.flatnonzero(start)[0]], risers)
     # of the way's narrowest columns, the nearest the warning's pair, measured across by rays: the columns'

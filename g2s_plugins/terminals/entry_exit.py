@@ -786,7 +786,7 @@ def _floor_beyond(edge_at: np.ndarray, way: np.ndarray, caster: RayCaster, s: _S
     lip = np.where(met[:, None], np.nan_to_num(side.points) * plan + edge_at * UP, edge_at)  # at the rays' height
     steps = np.arange(s.delta, s.search + s.delta / 2.0, s.delta)
     probes = (lip[None, :, :] + steps[:, None, None] * square[None, :, :]).reshape(-1, 3)
-    hit = caster.first_hits(probes, np.repeat(-UP[None, :], len(probes), axis=0))
+    hit = caster.first_hits(probes, -UP)
     up = caster.face_normals[np.maximum(hit.face, 0)] @ UP >= s.walkable_cos
     level = np.abs(hit.distance - s.lift) <= s.climb
     floor = (np.isfinite(hit.distance) & up & level).reshape(len(steps), -1)
