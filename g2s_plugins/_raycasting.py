@@ -33,14 +33,15 @@ from functools import cached_property
 from typing import Any
 
 import numpy as np
-import trimesh
-from scipy import sparse
-from scipy.sparse import csgraph
-from trimesh import util
 
+from g2s_core.lazy import lazy_module
 from g2s_core.mesh import body_nesting
 from g2s_plugins import _slabs, _walks
 from g2s_plugins.local_frame import LocalFrame
+
+# loaded on first use: listing plugins and checking a config import this module, and need none of them
+trimesh, util = lazy_module("trimesh"), lazy_module("trimesh.util")
+sparse, csgraph = lazy_module("scipy.sparse"), lazy_module("scipy.sparse.csgraph")
 
 UP = np.array([0.0, 1.0, 0.0])
 """The up direction of every g2s mesh."""

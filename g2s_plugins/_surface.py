@@ -27,7 +27,7 @@ import math
 import operator
 from collections.abc import Callable, Hashable, Mapping, Sequence
 from dataclasses import dataclass
-from typing import Literal, TypeVar
+from typing import TYPE_CHECKING, Literal, TypeVar
 
 import networkx as nx
 import numpy as np
@@ -38,8 +38,10 @@ from g2s_core.config import AgentConfig
 from g2s_core.errors import PluginError
 from g2s_core.model import NavMesh
 from g2s_core.plugin import PluginParams
-from g2s_core.simplify import ForestArrays
 from g2s_plugins import traffic
+
+if TYPE_CHECKING:  # g2s_core.simplify imports scipy (g2s_core.rooted): listing plugins and checking a config need neither
+    from g2s_core.simplify import ForestArrays
 
 Vec = Sequence[float]
 LineOfSight = Callable[[tuple[float, ...], tuple[float, ...]], bool]
@@ -233,7 +235,7 @@ class RuleArrays:
     whole_chain: bool
 
 
-NativeRule = Callable[[ForestArrays, RuleArrays], tuple[np.ndarray, np.ndarray, np.ndarray]]
+NativeRule = Callable[["ForestArrays", RuleArrays], tuple[np.ndarray, np.ndarray, np.ndarray]]
 """Algorithm 4 with the rule in native code: the whole-forest answer of :mod:`g2s_core.simplify`."""
 
 Derived = TypeVar("Derived")

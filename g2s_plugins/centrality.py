@@ -59,15 +59,16 @@ from typing import Literal
 
 import networkx as nx
 import numpy as np
-import rustworkx as rx
-import scipy.sparse as sp
-from scipy.sparse import csgraph
 from pydantic import Field
-from scipy.sparse.linalg import ArpackNoConvergence, eigsh, spsolve
 
 from g2s_core.errors import G2SError
+from g2s_core.lazy import lazy_module
 from g2s_core.plugin import PluginParams
 from g2s_plugins import traffic
+
+# loaded on first use: listing plugins and checking a config import this module, and need none of them
+rx = lazy_module("rustworkx")
+sp, csgraph, linalg = lazy_module("scipy.sparse"), lazy_module("scipy.sparse.csgraph"), lazy_module("scipy.sparse.linalg")
 
 
 class ClosenessParams(PluginParams):
@@ -546,8 +547,8 @@ def _perron_vector(matrix: sp.csr_array) -> np.ndarray:
         vector = vectors[:, -1]
     else:
         try:
-            _, vectors = eigsh(matrix, k=1, which="LA", v0=np.ones(size), maxiter=max(10 * size, 10_000), tol=1e-12)
-        except ArpackNoConvergence:
+            _, vectors = linalg.eigsh(matrix, k=1, which="LA", v0=np.ones(size), maxiter=max(10 * size, 10_000), tol=1e-12)
+        except linalg.ArpackNoConvergence:
             raise G2SError(
                 f"eigenvector centrality did not converge on a component of {size} nodes "
                 "(ARPACK found no leading eigenvector); use another metric"
@@ -596,9 +597,9 @@ def _largest_eigenvalue(adjacency: sp.csr_array) -> float:
     if size <= _DENSE_EIGEN_LIMIT:
         return float(np.linalg.eigvalsh(adjacency.toarray())[-1])
     try:
-        values = eigsh(adjacency, k=1, which="LA", v0=np.ones(size), maxiter=max(10 * size, 10_000), tol=1e-10,
+        values = linalg.eigsh(adjacency, k=1, which="LA", v0=np.ones(size), maxiter=max(10 * size, 10_000), tol=1e-10,
                        return_eigenvectors=False)
-    except ArpackNoConvergence:
+    except linalg.ArpackNoConvergence:
         raise G2SError(
             f"the largest adjacency eigenvalue of a graph of {size} nodes did not converge (ARPACK); "
             "Katz centrality cannot check its attenuation bound: use a smaller attenuation or another metric"
@@ -637,7 +638,7 @@ def katz(graph: nx.Graph, alpha: float, weighted: bool = False, normalized: bool
                 "eigenvalue of this graph's adjacency matrix)"
             )
     system = (sp.identity(n, format="csc") - alpha * adjacency.tocsc()).tocsc()
-    x = np.atleast_1d(spsolve(system, np.ones(n)))
+    x = np.atleast_1d(linalg.spsolve(system, np.ones(n)))
     if not np.all(np.isfinite(x)):
         raise G2SError(f"Katz centrality does not converge for attenuation {alpha:g} (singular system)")
     if normalized:

@@ -189,18 +189,18 @@ from typing import Any
 
 import networkx as nx
 import numpy as np
-import rustworkx as rx
-import trimesh
 from pydantic import Field
-from scipy import sparse
-from scipy.sparse import csgraph
-from scipy.spatial import cKDTree
 
 from g2s_core.errors import PluginError
+from g2s_core.lazy import lazy_module
 from g2s_core.plugin import PluginParams
 from g2s_plugins import centrality
 from g2s_plugins._raycasting import RayCaster, hit_from_behind
 from g2s_plugins.play_space import held_polygons
+
+# loaded on first use: listing plugins and checking a config import this module, and need none of them
+rx, trimesh = lazy_module("rustworkx"), lazy_module("trimesh")
+sparse, csgraph, spatial = lazy_module("scipy.sparse"), lazy_module("scipy.sparse.csgraph"), lazy_module("scipy.spatial")
 
 HEIGHT_SCALE = 4.0
 """Height differences count this many times in clearance distances, so a wall 2 m above is 8 m away."""
@@ -566,7 +566,7 @@ def _distance_to(points: np.ndarray, start: np.ndarray, end: np.ndarray) -> np.n
     a, b, _ = _pieces(start, end, scale)
     k = min(NEAREST_PIECES, len(a))
     q = points * scale
-    nearest = cKDTree(0.5 * (a + b)).query(q, k=k)[1].reshape(len(q), k)
+    nearest = spatial.cKDTree(0.5 * (a + b)).query(q, k=k)[1].reshape(len(q), k)
     pa, pb = a[nearest], b[nearest]
     d = pb - pa
     t = np.clip(np.einsum("nkc,nkc->nk", q[:, None] - pa, d) / np.maximum(np.einsum("nkc,nkc->nk", d, d), 1e-12), 0, 1)
@@ -661,7 +661,7 @@ def _between_gaps(ends: np.ndarray, side: np.ndarray, hole: np.ndarray, start: n
     """
     scale = np.array([1.0, HEIGHT_SCALE, 1.0])
     a, b, edge_of = _pieces(start, end, np.ones(3))
-    tree = cKDTree(0.5 * (a + b) * scale)
+    tree = spatial.cKDTree(0.5 * (a + b) * scale)
     by_hole = np.argsort(left_out, kind="stable")  # each hole's edges, found by binary search
     bounds = np.searchsorted(left_out[by_hole], np.stack([hole, hole + 1]))
     paired = np.zeros(len(ends), dtype=bool)
@@ -1309,7 +1309,7 @@ class PolygonWalks:
     pairs: np.ndarray
     steps: np.ndarray
     portals_of: tuple[np.ndarray, np.ndarray]
-    near: cKDTree
+    near: spatial.cKDTree
 
     @classmethod
     def of(cls, navmesh: Any, pairs: np.ndarray, endpoints: np.ndarray) -> PolygonWalks:
@@ -1320,7 +1320,7 @@ class PolygonWalks:
         middle = endpoints.mean(axis=1)
         steps = (np.linalg.norm(centres[pairs[:, 0]] - middle, axis=1)
                  + np.linalg.norm(centres[pairs[:, 1]] - middle, axis=1))
-        return cls(centres, pairs, steps, portals_of(pairs, len(centres)), cKDTree(centres))
+        return cls(centres, pairs, steps, portals_of(pairs, len(centres)), spatial.cKDTree(centres))
 
     def round_within(self, portal: int, closed: np.ndarray, length: float) -> bool:
         """Whether a walk of at most ``length`` m joins the two polygons of ``portal`` without crossing the portals

@@ -145,13 +145,16 @@ from dataclasses import dataclass
 
 import networkx as nx
 import numpy as np
-from scipy.sparse import csgraph
-from scipy.spatial import cKDTree
 
+from g2s_core.lazy import lazy_module
 from g2s_core.model import RunResult
-from g2s_plugins import centrality, play_space, structure_leaves, traffic
+from g2s_plugins import centrality, play_space, traffic
 from g2s_plugins.graph_builders import navmesh as navmesh_builder
 from g2s_plugins.recast import NavMesh, SettingsError, build_navmesh
+
+# loaded on first use: listing plugins and checking a config import this module, and need none of them
+csgraph, spatial = lazy_module("scipy.sparse.csgraph"), lazy_module("scipy.spatial")
+structure_leaves = lazy_module("g2s_plugins.structure_leaves")  # it imports g2s_core.simplify, which imports scipy
 
 RADII = (3.0, 6.0, 10.0)
 """Coverage radii reported by default, metres."""
@@ -381,7 +384,7 @@ def carry(values: np.ndarray, area: np.ndarray, positions: np.ndarray, surface: 
     empty = np.flatnonzero(count == 0)
     carried[empty] = np.nan
     if empty.size and valued.any():
-        distance, nearest = cKDTree(positions[valued]).query(_positions(surface.graph)[empty])
+        distance, nearest = spatial.cKDTree(positions[valued]).query(_positions(surface.graph)[empty])
         near = distance <= surface.reach
         carried[empty[near]] = values[valued][nearest[near]]
     # an area of the navmesh that no valued sample stands on (an island inside a crate, which the sampler leaves

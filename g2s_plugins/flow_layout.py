@@ -27,7 +27,11 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-import scipy.sparse as sp
+
+from g2s_core.lazy import lazy_module
+
+# loaded on first use: listing plugins and checking a config import this module, and need none of them
+sp = lazy_module("scipy.sparse")
 
 
 @dataclass(frozen=True)

@@ -104,11 +104,14 @@ from collections.abc import Callable, Hashable, Iterable
 
 import networkx as nx
 import numpy as np
-from scipy.sparse import csgraph
 
+from g2s_core.lazy import lazy_module
 from g2s_core.model import RunContext
 from g2s_plugins import evaluation, traffic
 from g2s_plugins._surface import CollapseParams
+
+# loaded on first use: listing plugins and checking a config import this module, and need none of them
+csgraph = lazy_module("scipy.sparse.csgraph")
 
 Predicate = Callable[[nx.DiGraph, int, int, int], bool]
 

@@ -73,16 +73,18 @@ from typing import Annotated
 import networkx as nx
 import numpy as np
 import numpy.typing as npt
-import trimesh
 from pydantic import Field, Strict
-from scipy.sparse import coo_matrix, csgraph
-from scipy.spatial import cKDTree
 
 from g2s_core.errors import G2SError
+from g2s_core.lazy import lazy_module
 from g2s_core.model import NavMesh, RunContext
 from g2s_core.plugin import PluginParams
 from g2s_plugins import traffic
 from g2s_plugins._raycasting import UP, RayCaster
+
+# loaded on first use: listing plugins and checking a config import this module, and need none of them
+trimesh, spatial = lazy_module("trimesh"), lazy_module("scipy.spatial")
+sparse, csgraph = lazy_module("scipy.sparse"), lazy_module("scipy.sparse.csgraph")
 
 KEY = "graph.params.play_points"
 """Where a config names the play points: in messages, and where :func:`play_points` reads them."""
@@ -147,7 +149,7 @@ def _areas_held(graph: nx.Graph, navmesh: NavMesh | None, points: npt.ArrayLike,
     arrays = traffic.surface_arrays(graph)
     points = np.asarray(points, dtype=np.float64).reshape(-1, 3)
     positions = np.array([graph.nodes[node]["pos"] for node in arrays.nodes], dtype=np.float64).reshape(-1, 3)
-    distance, nearest = cKDTree(positions).query(points, distance_upper_bound=reach)
+    distance, nearest = spatial.cKDTree(positions).query(points, distance_upper_bound=reach)
     if navmesh is not None:
         row_of_polygon = np.full(navmesh.polygon_count, -1, dtype=np.int64)
         polygons = node_polygons(graph, arrays.nodes)
@@ -254,7 +256,7 @@ def mesh_parts(mesh: trimesh.Trimesh) -> np.ndarray:
     corner = vertex.reshape(-1)[faces]
     count = len(faces) + int(corner.max()) + 1
     rows = np.repeat(np.arange(len(faces)), 3)
-    links = coo_matrix((np.ones(rows.size, dtype=np.int8), (rows, len(faces) + corner.reshape(-1))), (count, count))
+    links = sparse.coo_matrix((np.ones(rows.size, dtype=np.int8), (rows, len(faces) + corner.reshape(-1))), (count, count))
     return csgraph.connected_components(links, directed=False)[1][: len(faces)].astype(np.int64)
 
 

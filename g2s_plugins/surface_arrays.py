@@ -15,7 +15,11 @@ from itertools import chain, repeat
 
 import networkx as nx
 import numpy as np
-import scipy.sparse as sp
+
+from g2s_core.lazy import lazy_module
+
+# loaded on first use: listing plugins and checking a config import this module, and need none of them
+sp = lazy_module("scipy.sparse")
 
 MIN_LENGTH = 1e-12
 """Zero-length edges (coincident points) are stored with this length: scipy's

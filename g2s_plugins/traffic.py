@@ -158,12 +158,14 @@ from typing import Literal
 
 import networkx as nx
 import numpy as np
-import scipy.sparse as sp
-from scipy.sparse import csgraph
 
+from g2s_core.lazy import lazy_module
 from g2s_plugins import _trees
 from g2s_plugins.flow_layout import FlowLayout, renumbered
 from g2s_plugins.surface_arrays import MIN_LENGTH, SurfaceArrays, surface_arrays
+
+# loaded on first use: listing plugins and checking a config import this module, and need none of them
+sp, csgraph = lazy_module("scipy.sparse"), lazy_module("scipy.sparse.csgraph")
 
 __all__ = [
     "EXACT_NODES", "TIE_TOLERANCE", "WALKING_SAMPLING", "WALKING_SCALING", "WALKING_SOURCES", "WALKING_TIES", "Sampling",

@@ -30,9 +30,12 @@ from __future__ import annotations
 import math
 
 import numpy as np
-import trimesh
 
+from g2s_core.lazy import lazy_module
 from g2s_core.model import RunContext
+
+# loaded on first use: listing plugins and checking a config import this module, and need none of them
+trimesh = lazy_module("trimesh")
 
 LEVEL_DEGREES = 1.0
 """Degrees from straight up within which a face is level: a floor, a tread, a wall's top. Ramps and terrain lean

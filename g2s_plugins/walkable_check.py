@@ -38,13 +38,16 @@ import math
 
 import networkx as nx
 import numpy as np
-import trimesh
 
 from g2s_core.config import AgentConfig
 from g2s_core.errors import G2SError
+from g2s_core.lazy import lazy_module
 from g2s_core.mesh import flip_inside_out_bodies
 from g2s_core.model import RunContext
 from g2s_plugins._raycasting import UP, RayCaster
+
+# loaded on first use: listing plugins and checking a config import this module, and need none of them
+trimesh = lazy_module("trimesh")
 
 MIN_WALKABLE_SHARE = 0.1
 """Walkable area over the footprint below which a run is suspicious: every correct level measured has

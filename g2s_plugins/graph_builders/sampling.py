@@ -127,13 +127,10 @@ from typing import Literal, TypeVar
 
 import networkx as nx
 import numpy as np
-import trimesh
 from pydantic import Field
-from scipy import sparse
-from scipy.sparse import csgraph
-from scipy.spatial import cKDTree
 
 from g2s_core.errors import G2SError
+from g2s_core.lazy import lazy_module
 from g2s_core.model import RunContext, graph_of
 from g2s_core.plugin import hookimpl
 from g2s_plugins._raycasting import (
@@ -164,6 +161,10 @@ from g2s_plugins.area_gaps import likely_cause_of
 from g2s_plugins.play_space import PlaySpaceParams, cut_to_play_space
 from g2s_plugins.units_check import check_units
 from g2s_plugins.walkable_check import check_walkable_surface, no_walkable_surface
+
+# loaded on first use: listing plugins and checking a config import this module, and need none of them
+trimesh, spatial = lazy_module("trimesh"), lazy_module("scipy.spatial")
+sparse, csgraph = lazy_module("scipy.sparse"), lazy_module("scipy.sparse.csgraph")
 
 NAME = "sampling"
 
@@ -841,7 +842,7 @@ def moved_into_passages(
     turned = np.flatnonzero(np.isin(rejected, (REJECTED_BY.index("wall"), REJECTED_BY.index("ledge"))))
     if clearance <= 0 or len(turned) == 0:
         return none
-    fitting = cKDTree(candidates[fits]) if np.any(fits) else None
+    fitting = spatial.cKDTree(candidates[fits]) if np.any(fits) else None
     if fitting is not None:
         near = fitting.query(candidates[turned], k=STRANDED_NEIGHBOURS, distance_upper_bound=STRANDED_REACH * spacing * (1.0 + 1e-9))[1]
         found = near < len(part)
@@ -1203,7 +1204,7 @@ def poisson_disk_subset(points: np.ndarray, radius: float, seed: int = 0) -> np.
     for part in np.array_split(np.random.default_rng(seed).permutation(n), POISSON_BLOCKS):
         if len(taken):
             # the nearest taken point, looked for a little beyond the radius, then tested exactly
-            _, nearest = cKDTree(points[taken]).query(points[part], distance_upper_bound=radius * (1.0 + 1e-6))
+            _, nearest = spatial.cKDTree(points[taken]).query(points[part], distance_upper_bound=radius * (1.0 + 1e-6))
             found = nearest < len(taken)
             near = np.zeros(len(part), dtype=bool)
             near[found] = ((points[part[found]] - points[taken[nearest[found]]]) ** 2).sum(axis=1) <= radius * radius
@@ -1217,7 +1218,7 @@ def _throw_darts(points: np.ndarray, radius: float) -> np.ndarray:
     """Indices (in visiting order) of ``points`` taken when they are visited in their order and each is taken
     unless a taken one lies within ``radius``; neighbour lists from one scipy cKDTree query."""
     n = len(points)
-    pairs = cKDTree(points).query_pairs(radius, output_type="ndarray").reshape(-1, 2)
+    pairs = spatial.cKDTree(points).query_pairs(radius, output_type="ndarray").reshape(-1, 2)
     # int32 halves the two lists.
     heads = np.concatenate([pairs[:, 0], pairs[:, 1]], dtype=np.int32)
     tails = np.concatenate([pairs[:, 1], pairs[:, 0]], dtype=np.int32)
@@ -1376,7 +1377,7 @@ def _gap_pairs(samples: np.ndarray, edges: np.ndarray, connect: float, gap: floa
     count = len(samples)
     if gap <= connect or count < 2:
         return np.zeros((0, 2), dtype=np.int64)
-    pairs = np.asarray(cKDTree(samples).query_pairs(gap, output_type="ndarray"), dtype=np.int64).reshape(-1, 2)
+    pairs = np.asarray(spatial.cKDTree(samples).query_pairs(gap, output_type="ndarray"), dtype=np.int64).reshape(-1, 2)
     pairs = np.sort(pairs, axis=1)
     distance = np.linalg.norm(samples[pairs[:, 1]] - samples[pairs[:, 0]], axis=1)
     far = distance > connect
@@ -1531,7 +1532,7 @@ def build_sampled_graph(
     if params.method == "poisson":
         chosen = poisson_disk_subset(kept, spacing, params.seed)
         samples, sample_normals = kept[chosen], normals[chosen]
-        owner = cKDTree(samples).query(kept)[1] if len(samples) else np.zeros(0, dtype=np.int64)
+        owner = spatial.cKDTree(samples).query(kept)[1] if len(samples) else np.zeros(0, dtype=np.int64)
         areas = np.bincount(owner, minlength=len(samples)) * candidate_area
     else:
         samples, sample_normals = kept, normals
@@ -1544,7 +1545,7 @@ def build_sampled_graph(
     samples, sample_normals, areas = samples[order], sample_normals[order], areas[order]
     owner = np.argsort(order)[owner]  # each candidate that fits: its sample's id
 
-    pairs = cKDTree(samples).query_pairs(connect, output_type="ndarray") if len(samples) > 1 else np.zeros((0, 2), int)
+    pairs = spatial.cKDTree(samples).query_pairs(connect, output_type="ndarray") if len(samples) > 1 else np.zeros((0, 2), int)
     pairs = np.sort(np.asarray(pairs, dtype=np.int64).reshape(-1, 2), axis=1)
     pairs = pairs[np.lexsort((pairs[:, 1], pairs[:, 0]))]
     floors = open_floors.result()
@@ -1569,7 +1570,7 @@ def build_sampled_graph(
         areas = np.concatenate([areas, np.zeros(len(added))])  # the candidates they come from stand where the agent does not
         floor = np.concatenate([floor, np.full(len(added), -1, dtype=np.int64)])  # their pairs find theirs wider
         is_added = np.arange(len(samples)) >= count
-        pairs = np.sort(np.asarray(cKDTree(samples).query_pairs(connect, output_type="ndarray"), dtype=np.int64).reshape(-1, 2), axis=1)
+        pairs = np.sort(np.asarray(spatial.cKDTree(samples).query_pairs(connect, output_type="ndarray"), dtype=np.int64).reshape(-1, 2), axis=1)
         pairs = pairs[pairs[:, 1] >= count]
         edges = np.concatenate([edges, pairs[_walkable_pairs_of(
             caster, agent, floors, offset, samples, floor, is_added, pairs, probe_step, clearance,

@@ -40,16 +40,18 @@ import math
 
 import networkx as nx
 import numpy as np
-import scipy.sparse as sp
 from pydantic import Field
-from scipy.sparse import csgraph
 
+from g2s_core.lazy import lazy_module
 from g2s_core.model import RunContext, graph_of
-from g2s_core.rooted import components
 from g2s_core.plugin import hookimpl
 from g2s_plugins import _trees, heat_guarantee
 from g2s_plugins._surface import HeatFlowParams
 from g2s_plugins.surface_arrays import MIN_LENGTH, SurfaceArrays, surface_arrays
+
+# loaded on first use: listing plugins and checking a config import this module, and need none of them
+sp, csgraph = lazy_module("scipy.sparse"), lazy_module("scipy.sparse.csgraph")
+rooted = lazy_module("g2s_core.rooted")  # it imports scipy too
 
 NAME = "spanner"
 
@@ -112,7 +114,7 @@ def add_loops(graph: nx.Graph, structure: nx.Graph, stretch: float, min_gain: fl
     distance, predecessor, cell = csgraph.dijkstra(
         arrays.adjacency, directed=False, indices=rows, min_only=True, return_predecessors=True
     )
-    ends = rows[np.column_stack(components(structure, ids)[:2])]  # (e, 2) rows of its edges' ends, in no set order
+    ends = rows[np.column_stack(rooted.components(structure, ids)[:2])]  # (e, 2) rows of its edges' ends, in no set order
     stored = np.asarray(arrays.adjacency[ends[:, 0], ends[:, 1]]).ravel()  # their lengths as the arrays hold them
     pairs, paths = _candidates(arrays, structure, ends, distance, cell)
     if len(pairs) == 0:

@@ -68,7 +68,7 @@ in C++").
 from __future__ import annotations
 
 from collections.abc import Callable, Iterable
-from typing import NamedTuple
+from typing import TYPE_CHECKING, NamedTuple
 
 import networkx as nx
 import numpy as np
@@ -76,12 +76,14 @@ from pydantic import Field
 
 from g2s_core.model import RunContext
 from g2s_core.plugin import hookimpl
-from g2s_core.simplify import ForestArrays
 from g2s_plugins._raycasting import GROUND_MARGIN, AgentShape, OpenFloors, RayCaster, walks_in_batch
 from g2s_plugins._surface import CollapseParams, ForestDerived, RuleArrays, collapse_rule
 from g2s_plugins.graph_builders.sampling import DISK_SHARE
 from g2s_plugins.heat_guarantee import begin_ahead, guaranteed
 from g2s_plugins.recast.navmesh import NavMesh, collapse_forest_seeing
+
+if TYPE_CHECKING:  # g2s_core.simplify imports scipy (g2s_core.rooted): listing plugins and checking a config need neither
+    from g2s_core.simplify import ForestArrays
 
 NAME = "mesh_los"
 

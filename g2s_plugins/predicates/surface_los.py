@@ -34,18 +34,25 @@ in one C++ call (:meth:`g2s_plugins.recast.NavMesh.collapse_forest`).
 from __future__ import annotations
 
 from collections.abc import Callable
+from typing import TYPE_CHECKING
 
 import networkx as nx
 import numpy as np
 from pydantic import Field
 
 from g2s_core.errors import PluginError
+from g2s_core.lazy import lazy_module
 from g2s_core.model import RunContext
 from g2s_core.plugin import hookimpl
-from g2s_core.simplify import ForestArrays
-from g2s_plugins import structure_leaves, traffic
+from g2s_plugins import traffic
 from g2s_plugins._surface import CollapseParams, RuleArrays, collapse_rule
 from g2s_plugins.heat_guarantee import begin_ahead, guaranteed
+
+if TYPE_CHECKING:  # g2s_core.simplify imports scipy (g2s_core.rooted): listing plugins and checking a config need neither
+    from g2s_core.simplify import ForestArrays
+
+# loaded on first use: listing plugins and checking a config import this module, and need none of them
+structure_leaves = lazy_module("g2s_plugins.structure_leaves")  # it imports g2s_core.simplify, which imports scipy
 
 NAME = "surface_los"
 

@@ -39,11 +39,14 @@ from collections.abc import Iterable, Sequence
 
 import networkx as nx
 import numpy as np
-from scipy.sparse.csgraph import dijkstra
 
+from g2s_core.lazy import lazy_module
 from g2s_core.model import RunContext
 from g2s_core.plugin import PluginParams, hookimpl
 from g2s_plugins.steiner import _paths
+
+# loaded on first use: listing plugins and checking a config import this module, and need none of them
+csgraph = lazy_module("scipy.sparse.csgraph")
 
 NAME = "kou"
 
@@ -80,13 +83,13 @@ def _kou(csr: _paths.CSRGraph, terms: np.ndarray) -> nx.Graph:
     rows_per_search = max(1, DISTANCE_BUDGET // max(csr.n, 1))
     predecessors = None
     if k <= rows_per_search:
-        distances, predecessors = dijkstra(csr.matrix, directed=True, indices=terms, return_predecessors=True)
+        distances, predecessors = csgraph.dijkstra(csr.matrix, directed=True, indices=terms, return_predecessors=True)
         closure = distances[:, terms]
     else:
         closure = np.empty((k, k), dtype=np.float64)
         for start in range(0, k, rows_per_search):
             block = terms[start : start + rows_per_search]
-            closure[start : start + block.shape[0]] = dijkstra(csr.matrix, directed=True, indices=block)[:, terms]
+            closure[start : start + block.shape[0]] = csgraph.dijkstra(csr.matrix, directed=True, indices=block)[:, terms]
 
     # d(s, t) for s < t from the search of s, mirrored: an exactly symmetric G1.
     upper = np.triu(closure, 1)
@@ -109,7 +112,7 @@ def _walk_in_blocks(
     children, parents = [], []
     for start in range(0, sources.shape[0], rows_per_search):
         block = sources[start : start + rows_per_search]
-        _, predecessors = dijkstra(csr.matrix, directed=True, indices=terms[block], return_predecessors=True)
+        _, predecessors = csgraph.dijkstra(csr.matrix, directed=True, indices=terms[block], return_predecessors=True)
         mine = np.isin(a, block)
         rows = np.searchsorted(block, a[mine])
         child, parent = _paths.walk_to_sources(predecessors, terms[b[mine]], rows=rows)

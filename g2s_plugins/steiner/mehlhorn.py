@@ -39,11 +39,14 @@ from collections.abc import Iterable, Sequence
 
 import networkx as nx
 import numpy as np
-from scipy.sparse.csgraph import dijkstra
 
+from g2s_core.lazy import lazy_module
 from g2s_core.model import RunContext
 from g2s_core.plugin import PluginParams, hookimpl
 from g2s_plugins.steiner import _paths
+
+# loaded on first use: listing plugins and checking a config import this module, and need none of them
+csgraph = lazy_module("scipy.sparse.csgraph")
 
 NAME = "mehlhorn"
 
@@ -63,7 +66,7 @@ def mehlhorn_steiner_tree(graph: nx.Graph, terminals: Iterable[int]) -> nx.Graph
 
 def _mehlhorn(csr: _paths.CSRGraph, terms: np.ndarray) -> nx.Graph:
     k = terms.shape[0]
-    distance, predecessor, source = dijkstra(
+    distance, predecessor, source = csgraph.dijkstra(
         csr.matrix, directed=True, indices=terms, min_only=True, return_predecessors=True
     )
     # Edges joining two Voronoi regions (unreached nodes share source -9999, so never qualify).

@@ -172,15 +172,17 @@ from dataclasses import dataclass
 
 import networkx as nx
 import numpy as np
-import rustworkx as rx
-import scipy.sparse as sp
 from pydantic import Field, model_validator
 from pydantic_core import PydanticCustomError
-from scipy.sparse import csgraph
 
+from g2s_core.lazy import lazy_module
 from g2s_core.model import NavMesh, RunContext, Terminals
 from g2s_core.plugin import PluginParams, hookimpl
 from g2s_plugins import _trees, traffic
+
+# loaded on first use: listing plugins and checking a config import this module, and need none of them
+rx = lazy_module("rustworkx")
+sp, csgraph = lazy_module("scipy.sparse"), lazy_module("scipy.sparse.csgraph")
 
 NAME = "coverage"
 

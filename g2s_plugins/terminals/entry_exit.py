@@ -184,12 +184,11 @@ from dataclasses import dataclass, replace
 
 import networkx as nx
 import numpy as np
-import trimesh
 from pydantic import Field
-from scipy.spatial import cKDTree
 
 from g2s_core.config import AgentConfig
 from g2s_core.errors import PluginError
+from g2s_core.lazy import lazy_module
 from g2s_core.model import NavMesh, Opening, RunContext, Terminals
 from g2s_core.plugin import PluginParams, hookimpl
 from g2s_plugins._raycasting import UP, RayCaster, ground_across_crack
@@ -198,6 +197,9 @@ from g2s_plugins.play_space import PLAY_POINTS, held_polygons, play_space_faces
 from g2s_plugins.terminals._boundary import BoundaryLoop, LoopSamples, boundary_loops, polygon_components, sample_loops
 from g2s_plugins.terminals._sampled_surface import SampledSurface, sampled_surface
 from g2s_plugins.vectors import vec3
+
+# loaded on first use: listing plugins and checking a config import this module, and need none of them
+trimesh, spatial = lazy_module("trimesh"), lazy_module("scipy.spatial")
 
 NAME = "entry_exit"
 
@@ -1277,7 +1279,7 @@ def _seams(samples: LoopSamples, ways: _Ways, s: _Settings) -> np.ndarray:
     outward = np.cross(ways.tangent, ways.normal) * np.array([1.0, 0.0, 1.0])
     outward /= np.maximum(np.linalg.norm(outward, axis=1, keepdims=True), 1e-12)
     position = samples.position
-    pairs = cKDTree(position[:, [0, 2]]).query_pairs(s.radius, output_type="ndarray").reshape(-1, 2)
+    pairs = spatial.cKDTree(position[:, [0, 2]]).query_pairs(s.radius, output_type="ndarray").reshape(-1, 2)
     i, j = pairs[:, 0], pairs[:, 1]
     gap = (position[j] - position[i]) * np.array([1.0, 0.0, 1.0])
     ahead = _SEAM_AHEAD * np.linalg.norm(gap, axis=1)
@@ -1313,7 +1315,7 @@ def _drop_links(samples: LoopSamples, ways: _Ways, s: _Settings) -> np.ndarray:
     if not len(dropping):
         return np.zeros((0, 2), dtype=np.int64)
     reach = max(s.search, s.farther)
-    tree = cKDTree(ways.base[:, [0, 2]])
+    tree = spatial.cKDTree(ways.base[:, [0, 2]])
     pairs = []
     for i, near in zip(dropping, tree.query_ball_point(ways.landing[dropping][:, [0, 2]], reach)):
         near = np.asarray(near, dtype=np.int64)
@@ -1886,7 +1888,7 @@ def main_floor(
     if loops is None:
         loops = boundary_loops(navmesh.vertices, navmesh.polygons, neighbours)
     samples = sample_loops(loops, radius / 4.0, "agent.radius")
-    near = cKDTree(samples.position[:, [0, 2]]).query_pairs(radius, output_type="ndarray").reshape(-1, 2)
+    near = spatial.cKDTree(samples.position[:, [0, 2]]).query_pairs(radius, output_type="ndarray").reshape(-1, 2)
     level = np.abs(samples.position[near[:, 0], 1] - samples.position[near[:, 1], 1]) <= float(agent.max_climb)
     pairs = samples.polygon[near[level]]
     if isinstance(navmesh, SampledSurface):  # faces apart along single-file samples the agent walks
@@ -2555,7 +2557,7 @@ def add_terminals(
         if "pos" in data:
             ids.append(node)
             positions.append(data["pos"])
-    tree = cKDTree(np.asarray(positions, dtype=np.float64)) if positions else None
+    tree = spatial.cKDTree(np.asarray(positions, dtype=np.float64)) if positions else None
     next_id = max((int(n) for n in graph.nodes), default=-1) + 1
     nodes = []
     for opening, polys, normal in zip(detection.openings, detection.polygons, detection.normals):

@@ -30,14 +30,17 @@ import networkx as nx
 import numpy as np
 from pydantic import Field, Strict, model_validator
 from pydantic_core import PydanticCustomError
-from scipy.spatial import cKDTree
 
 from g2s_core.errors import G2SError
 from g2s_core.input_files import parse_nested, read_text
+from g2s_core.lazy import lazy_module
 from g2s_core.model import RunContext, Terminals
 from g2s_core.plugin import PluginParams, hookimpl
 from g2s_plugins._surface import on_navmesh
 from g2s_plugins.vectors import vec3
+
+# loaded on first use: listing plugins and checking a config import this module, and need none of them
+spatial = lazy_module("scipy.spatial")
 
 NAME = "points"
 
@@ -143,7 +146,7 @@ def g2s_select_terminals(graph: nx.Graph, params: Params, context: RunContext) -
         raise G2SError("the graph has no nodes to join the points to")
     positions = np.asarray([graph.nodes[node]["pos"] for node in existing], dtype=np.float64)
     k = min(params.connect, len(existing))
-    distances, indices = cKDTree(positions).query(points, k=k)
+    distances, indices = spatial.cKDTree(positions).query(points, k=k)
     distances = np.asarray(distances).reshape(len(points), k)
     indices = np.asarray(indices).reshape(len(points), k)
     # Check every point before touching the graph.
