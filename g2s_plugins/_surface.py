@@ -29,16 +29,19 @@ from collections.abc import Callable, Hashable, Mapping, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Literal, TypeVar
 
-import networkx as nx
 import numpy as np
 from pydantic import Field, model_validator
 from pydantic_core import PydanticCustomError
 
 from g2s_core.config import AgentConfig
 from g2s_core.errors import PluginError
+from g2s_core.lazy import lazy_module
 from g2s_core.model import NavMesh
 from g2s_core.plugin import PluginParams
 from g2s_plugins import traffic
+
+# loaded on first use: listing plugins and checking a config import this module, and need none of them
+nx = lazy_module("networkx")
 
 if TYPE_CHECKING:  # g2s_core.simplify imports scipy (g2s_core.rooted): listing plugins and checking a config need neither
     from g2s_core.simplify import ForestArrays

@@ -119,20 +119,20 @@ from typing import NamedTuple
 
 import networkx as nx
 import numpy as np
+import trimesh
+from scipy import sparse
+from scipy.sparse.csgraph import breadth_first_order, connected_components, dijkstra
+from scipy.spatial import cKDTree
+from scipy.spatial.distance import pdist, squareform
 
 from g2s_core.config import AgentConfig
 from g2s_core.disconnected import area_summary, xyz
-from g2s_core.lazy import lazy_module
 from g2s_core.model import NavMesh
 from g2s_plugins._raycasting import (
     COMPASS, EPSILON, GROUND_MARGIN, UP, AgentShape, RayCaster, all_hits_down, closed_solid_holds, has_room, head_room,
 )
 from g2s_plugins.play_space import node_polygons
 from g2s_plugins.recast.settings import voxel_config
-
-# loaded on first use: listing plugins and checking a config import this module, and need none of them
-trimesh, spatial = lazy_module("trimesh"), lazy_module("scipy.spatial")
-sparse, csgraph = lazy_module("scipy.sparse"), lazy_module("scipy.sparse.csgraph")
 
 Ground = tuple[np.ndarray, np.ndarray, np.ndarray]
 """``(points (k,3), reach (k,), spacing (k,))``, metres: :func:`ground_rim` of an area."""
@@ -249,7 +249,7 @@ def closest_step(a: Ground, b: Ground, climb_weight: float = 1.0, window: float 
     O((ka + kb) log kb) for their ka and kb points (a k-d tree of b's)."""
     (pa, ra, sa), (pb, rb, sb) = a, b
     scale = np.array([1.0, climb_weight, 1.0])
-    distance, index = spatial.cKDTree(pb * scale).query(pa * scale)
+    distance, index = cKDTree(pb * scale).query(pa * scale)
     best = int(np.argmin(distance))
     there = int(index[best])
     offset = pb[there] - pa[best]
@@ -481,9 +481,9 @@ def where_between(caster: RayCaster, closest: Closest, agent: AgentConfig) -> st
     chosen = int(np.argmax(opening))  # the first, the closest, that faces one
     if not opening[chosen]:
         middles = pairs.mean(axis=1)
-        apart = spatial.distance.squareform(spatial.distance.pdist(middles[:, [0, 2]]))
+        apart = squareform(pdist(middles[:, [0, 2]]))
         linked = apart < width + closest.spacing.max()
-        run = csgraph.breadth_first_order(sparse.csr_matrix(linked), 0, return_predecessors=False)
+        run = breadth_first_order(sparse.csr_matrix(linked), 0, return_predecessors=False)
         within = apart[np.ix_(run, run)]
         first, last = run[np.array(np.unravel_index(int(np.argmax(within)), within.shape))]
         if apart[first, last] >= width:
@@ -672,7 +672,7 @@ def way_up_within(caster: RayCaster, closest: Closest, agent: AgentConfig, radiu
     stepwise = walked.copy()  # the links walked column to column, before the treads' own
     walked |= treads
     links = sparse.coo_matrix((plan[walked], (a[walked], b[walked])), shape=(n, n)).tocsr()
-    _, component = csgraph.connected_components(links, directed=False)
+    _, component = connected_components(links, directed=False)
 
     def near(point: np.ndarray, reach: float) -> np.ndarray:
         return ((np.hypot(*(ground.points - point)[:, [0, 2]].T) <= reach + 2 * ground.spacing)
@@ -692,14 +692,14 @@ def way_up_within(caster: RayCaster, closest: Closest, agent: AgentConfig, radiu
     # the farthest each point keeps from an edge (a point with fewer than eight walked neighbours), along the links
     degree = np.bincount(a[walked], minlength=n) + np.bincount(b[walked], minlength=n)
     edge = np.flatnonzero(degree < 2 * len(NEIGHBOURS))
-    inward = csgraph.dijkstra(links, directed=False, indices=edge, min_only=True) if edge.size else np.full(n, np.inf)
+    inward = dijkstra(links, directed=False, indices=edge, min_only=True) if edge.size else np.full(n, np.inf)
     # the way's narrowest lies on its climb, between the two areas' heights, not on their own floors
     inward[(ground.points[:, 1] <= lower[1] + tolerance) | (ground.points[:, 1] >= upper[1] - tolerance)] = np.inf
     # the widest way: the largest clearance whose points still join the two sides
     levels = np.unique(inward[np.isfinite(inward)])[::-1]
     for level in levels:
         keep = inward >= level
-        _, part = csgraph.connected_components(links[keep][:, keep], directed=False)
+        _, part = connected_components(links[keep][:, keep], directed=False)
         inside = np.full(n, -1)
         inside[keep] = part
         if np.intersect1d(inside[start], inside[end]).size:
@@ -711,7 +711,7 @@ def way_up_within(caster: RayCaster, closest: Closest, agent: AgentConfig, radiu
     risers = 0.0
     if needed.any():
         steps = sparse.coo_matrix((plan[stepwise], (a[stepwise], b[stepwise])), shape=(n, n)).tocsr()
-        _, by_step = csgraph.connected_components(steps, directed=False)
+        _, by_step = connected_components(steps, directed=False)
         if not np.intersect1d(by_step[start], by_step[end]).size:
             risers = float(rise[needed].max())
     if not np.isfinite(level):  # the two areas' ground meets: no way between them to measure
@@ -788,7 +788,7 @@ def edge_distances(ground: Ground, others: Sequence[Ground]) -> np.ndarray:
     distance of edge points. One k-d tree of ``ground``'s k points queried with the others' e points, O((k + e) log k)."""
     owner = np.repeat(np.arange(len(others)), [len(other[0]) for other in others])
     distance = np.full(len(others), np.inf)
-    np.minimum.at(distance, owner, spatial.cKDTree(ground[0]).query(np.concatenate([other[0] for other in others]))[0])
+    np.minimum.at(distance, owner, cKDTree(ground[0]).query(np.concatenate([other[0] for other in others]))[0])
     return distance
 
 

@@ -57,7 +57,6 @@ from collections.abc import Hashable, Mapping
 from dataclasses import dataclass
 from typing import Literal
 
-import networkx as nx
 import numpy as np
 from pydantic import Field
 
@@ -69,6 +68,7 @@ from g2s_plugins import traffic
 # loaded on first use: listing plugins and checking a config import this module, and need none of them
 rx = lazy_module("rustworkx")
 sp, csgraph, linalg = lazy_module("scipy.sparse"), lazy_module("scipy.sparse.csgraph"), lazy_module("scipy.sparse.linalg")
+nx = lazy_module("networkx")
 
 
 class ClosenessParams(PluginParams):

@@ -67,13 +67,11 @@ from dataclasses import dataclass
 
 import networkx as nx
 import numpy as np
+import scipy.sparse as sp
+from scipy.spatial import cKDTree
 
-from g2s_core.lazy import lazy_module
 from g2s_plugins import traffic
 from g2s_plugins.recast import NavMesh
-
-# loaded on first use: listing plugins and checking a config import this module, and need none of them
-sp, spatial = lazy_module("scipy.sparse"), lazy_module("scipy.spatial")
 
 __all__ = ["Trips", "lane_edges", "principal_axes", "section_edges", "trips_across", "walking_across", "walking_trips"]
 
@@ -182,7 +180,7 @@ class _Crossings:
         self.a, self.b = trips.ends[:, 0], trips.ends[:, 1]
         middles = (self.plan[self.a] + self.plan[self.b]) / 2.0
         half_length = np.hypot(*(self.plan[self.b] - self.plan[self.a]).T) / 2.0 if len(self.a) else np.zeros(0)
-        self.near = (spatial.cKDTree(middles).query_ball_point(self.plan, reach + half_length.max()) if len(self.a)
+        self.near = (cKDTree(middles).query_ball_point(self.plan, reach + half_length.max()) if len(self.a)
                      else [[]] * len(positions))
 
     def of(self, v: int) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
@@ -221,7 +219,7 @@ def section_edges(positions: np.ndarray, normals: np.ndarray, area: np.ndarray, 
     plan = crossings.plan
     half = np.sqrt(np.maximum(area, 0.0)) / 2.0
     counted = np.flatnonzero(area > 0)
-    nodes_near = spatial.cKDTree(plan[counted]).query_ball_point(plan, reach + half.max()) if len(counted) else [[]] * len(area)
+    nodes_near = cKDTree(plan[counted]).query_ball_point(plan, reach + half.max()) if len(counted) else [[]] * len(area)
     slope = -normals[:, [0, 2]] / np.maximum(normals[:, [1]], 1e-6)  # dy per m along x and z on the tangent plane
     result = []
     for v in range(len(area)):

@@ -187,7 +187,6 @@ from dataclasses import dataclass, field
 from functools import cached_property
 from typing import Any
 
-import networkx as nx
 import numpy as np
 from pydantic import Field
 
@@ -201,6 +200,7 @@ from g2s_plugins.play_space import held_polygons
 # loaded on first use: listing plugins and checking a config import this module, and need none of them
 rx, trimesh = lazy_module("rustworkx"), lazy_module("trimesh")
 sparse, csgraph, spatial = lazy_module("scipy.sparse"), lazy_module("scipy.sparse.csgraph"), lazy_module("scipy.spatial")
+nx = lazy_module("networkx")
 
 HEIGHT_SCALE = 4.0
 """Height differences count this many times in clearance distances, so a wall 2 m above is 8 m away."""

@@ -143,7 +143,6 @@ import math
 from collections.abc import Callable, Hashable, Iterable, Mapping
 from dataclasses import dataclass
 
-import networkx as nx
 import numpy as np
 
 from g2s_core.lazy import lazy_module
@@ -155,6 +154,7 @@ from g2s_plugins.recast import NavMesh, SettingsError, build_navmesh
 # loaded on first use: listing plugins and checking a config import this module, and need none of them
 csgraph, spatial = lazy_module("scipy.sparse.csgraph"), lazy_module("scipy.spatial")
 structure_leaves = lazy_module("g2s_plugins.structure_leaves")  # it imports g2s_core.simplify, which imports scipy
+nx = lazy_module("networkx")
 
 RADII = (3.0, 6.0, 10.0)
 """Coverage radii reported by default, metres."""

@@ -102,7 +102,6 @@ import math
 import weakref
 from collections.abc import Callable, Hashable, Iterable
 
-import networkx as nx
 import numpy as np
 
 from g2s_core.lazy import lazy_module
@@ -112,8 +111,9 @@ from g2s_plugins._surface import CollapseParams
 
 # loaded on first use: listing plugins and checking a config import this module, and need none of them
 csgraph = lazy_module("scipy.sparse.csgraph")
+nx = lazy_module("networkx")
 
-Predicate = Callable[[nx.DiGraph, int, int, int], bool]
+Predicate = Callable[["nx.DiGraph", int, int, int], bool]
 
 RESTORED_SHARE = 0.02
 """Forest nodes restored per round, as a share of the forest's nodes."""

@@ -70,7 +70,6 @@ from collections.abc import Collection, Hashable
 from dataclasses import dataclass
 from typing import Annotated
 
-import networkx as nx
 import numpy as np
 import numpy.typing as npt
 from pydantic import Field, Strict
@@ -85,6 +84,7 @@ from g2s_plugins._raycasting import UP, RayCaster
 # loaded on first use: listing plugins and checking a config import this module, and need none of them
 trimesh, spatial = lazy_module("trimesh"), lazy_module("scipy.spatial")
 sparse, csgraph = lazy_module("scipy.sparse"), lazy_module("scipy.sparse.csgraph")
+nx = lazy_module("networkx")
 
 KEY = "graph.params.play_points"
 """Where a config names the play points: in messages, and where :func:`play_points` reads them."""

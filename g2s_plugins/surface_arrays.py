@@ -13,13 +13,13 @@ from concurrent.futures import Future
 from dataclasses import dataclass, field
 from itertools import chain, repeat
 
-import networkx as nx
 import numpy as np
 
 from g2s_core.lazy import lazy_module
 
 # loaded on first use: listing plugins and checking a config import this module, and need none of them
 sp = lazy_module("scipy.sparse")
+nx = lazy_module("networkx")
 
 MIN_LENGTH = 1e-12
 """Zero-length edges (coincident points) are stored with this length: scipy's

@@ -156,7 +156,6 @@ from concurrent.futures import Future
 from itertools import repeat
 from typing import Literal
 
-import networkx as nx
 import numpy as np
 
 from g2s_core.lazy import lazy_module
@@ -166,6 +165,7 @@ from g2s_plugins.surface_arrays import MIN_LENGTH, SurfaceArrays, surface_arrays
 
 # loaded on first use: listing plugins and checking a config import this module, and need none of them
 sp, csgraph = lazy_module("scipy.sparse"), lazy_module("scipy.sparse.csgraph")
+nx = lazy_module("networkx")
 
 __all__ = [
     "EXACT_NODES", "TIE_TOLERANCE", "WALKING_SAMPLING", "WALKING_SCALING", "WALKING_SOURCES", "WALKING_TIES", "Sampling",

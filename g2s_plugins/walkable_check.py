@@ -36,7 +36,6 @@ from __future__ import annotations
 
 import math
 
-import networkx as nx
 import numpy as np
 
 from g2s_core.config import AgentConfig
@@ -48,6 +47,7 @@ from g2s_plugins._raycasting import UP, RayCaster
 
 # loaded on first use: listing plugins and checking a config import this module, and need none of them
 trimesh = lazy_module("trimesh")
+nx = lazy_module("networkx")
 
 MIN_WALKABLE_SHARE = 0.1
 """Walkable area over the footprint below which a run is suspicious: every correct level measured has

@@ -13,12 +13,15 @@ structure's edge betweenness.
 
 from __future__ import annotations
 
-import networkx as nx
 from pydantic import Field
 
+from g2s_core.lazy import lazy_module
 from g2s_core.model import AnalyzerResult, RunContext
 from g2s_core.plugin import hookimpl
 from g2s_plugins import decomposition
+
+# loaded on first use: listing plugins and checking a config import this module, and need none of them
+nx = lazy_module("networkx")
 
 NAME = "chokepoints"
 

@@ -9,11 +9,13 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 
-import networkx as nx
-
+from g2s_core.lazy import lazy_module
 from g2s_core.model import RunContext
 from g2s_core.plugin import hookimpl
 from g2s_plugins import centrality
+
+# loaded on first use: listing plugins and checking a config import this module, and need none of them
+nx = lazy_module("networkx")
 
 NAME = "closeness"
 Params = centrality.ClosenessParams

@@ -71,14 +71,18 @@ from __future__ import annotations
 from collections.abc import Hashable, Mapping
 from typing import Literal
 
-import networkx as nx
 from pydantic import Field
 
 from g2s_core.errors import PluginError
+from g2s_core.lazy import lazy_module
 from g2s_core.model import RunContext
 from g2s_core.plugin import PluginParams, hookimpl
-from g2s_plugins import cross_sections, traffic
+from g2s_plugins import traffic
 from g2s_plugins.decomposition import DecompositionParams
+
+# loaded on first use: listing plugins and checking a config import this module, and need none of them
+cross_sections = lazy_module("g2s_plugins.cross_sections")  # it imports scipy
+nx = lazy_module("networkx")
 
 NAME = "flow"
 

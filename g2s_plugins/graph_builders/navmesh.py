@@ -51,21 +51,24 @@ from __future__ import annotations
 
 import math
 
-import networkx as nx
 import numpy as np
 from pydantic import Field
 
 from g2s_core.config import AgentConfig
 from g2s_core.errors import G2SError
+from g2s_core.lazy import lazy_module
 from g2s_core.model import graph_of
 from g2s_core.plugin import hookimpl
 from g2s_plugins._surface import MAX_SURFACE_GAP
-from g2s_plugins.area_gaps import likely_cause_of
 from g2s_plugins.play_space import PlaySpaceParams, cut_to_play_space
 from g2s_plugins.recast import NavMesh, RecastParams, SettingsError, build_navmesh
 from g2s_plugins.recast.settings import coarse_climb_warning, resolve_settings
 from g2s_plugins.units_check import check_units
 from g2s_plugins.walkable_check import check_walkable_surface, no_walkable_surface
+
+# loaded on first use: listing plugins and checking a config import this module, and need none of them
+area_gaps = lazy_module("g2s_plugins.area_gaps")  # it imports scipy and trimesh
+nx = lazy_module("networkx")
 
 NAME = "navmesh"
 
@@ -382,7 +385,7 @@ def g2s_build_graph(mesh, params, context):
                 f"graph.params: {exc}; try another cell_size or tile_size (see docs/navmesh.md)"
             ) from exc
         raise no_walkable_surface(mesh, context.agent, no_polygons_reason(str(exc), context.agent, params)) from exc
-    context.navmesh, context.likely_cause = navmesh, likely_cause_of(context.agent, navmesh, mesh=mesh)
+    context.navmesh, context.likely_cause = navmesh, area_gaps.likely_cause_of(context.agent, navmesh, mesh=mesh)
     if len(navmesh.region_overlaps):
         context.warn(overlapping_regions_warning(navmesh.region_overlaps, params.partition))
     level_height = float(np.ptp(mesh.vertices[:, 1])) if len(mesh.vertices) else 0.0

@@ -125,7 +125,6 @@ from concurrent.futures import ThreadPoolExecutor
 from dataclasses import replace
 from typing import Literal, TypeVar
 
-import networkx as nx
 import numpy as np
 from pydantic import Field
 
@@ -157,7 +156,6 @@ from g2s_plugins._raycasting import (
     walks_in_batch,
 )
 from g2s_plugins.allocator import hand_back_free_memory
-from g2s_plugins.area_gaps import likely_cause_of
 from g2s_plugins.play_space import PlaySpaceParams, cut_to_play_space
 from g2s_plugins.units_check import check_units
 from g2s_plugins.walkable_check import check_walkable_surface, no_walkable_surface
@@ -165,6 +163,8 @@ from g2s_plugins.walkable_check import check_walkable_surface, no_walkable_surfa
 # loaded on first use: listing plugins and checking a config import this module, and need none of them
 trimesh, spatial = lazy_module("trimesh"), lazy_module("scipy.spatial")
 sparse, csgraph = lazy_module("scipy.sparse"), lazy_module("scipy.sparse.csgraph")
+area_gaps = lazy_module("g2s_plugins.area_gaps")  # it imports scipy and trimesh
+nx = lazy_module("networkx")
 
 NAME = "sampling"
 
@@ -1644,5 +1644,5 @@ def g2s_build_graph(mesh: trimesh.Trimesh, params: Params, context: RunContext) 
     if graph.number_of_nodes() == 0:
         raise no_walkable_surface(mesh, context.agent, "no sample where it fits")
     check_walkable_surface(graph, mesh, context)
-    context.likely_cause = likely_cause_of(context.agent, clearance=graph.graph["sampling_stats"]["clearance"], mesh=mesh)
+    context.likely_cause = area_gaps.likely_cause_of(context.agent, clearance=graph.graph["sampling_stats"]["clearance"], mesh=mesh)
     return cut_to_play_space(graph, params.play_points, context)

@@ -38,7 +38,6 @@ from __future__ import annotations
 import itertools
 import math
 
-import networkx as nx
 import numpy as np
 from pydantic import Field
 
@@ -52,6 +51,7 @@ from g2s_plugins.surface_arrays import MIN_LENGTH, SurfaceArrays, surface_arrays
 # loaded on first use: listing plugins and checking a config import this module, and need none of them
 sp, csgraph = lazy_module("scipy.sparse"), lazy_module("scipy.sparse.csgraph")
 rooted = lazy_module("g2s_core.rooted")  # it imports scipy too
+nx = lazy_module("networkx")
 
 NAME = "spanner"
 

@@ -16,15 +16,17 @@ import math
 from pathlib import Path
 from typing import Any
 
-import networkx as nx
-
 from g2s_core.errors import G2SError
 from g2s_core.input_files import parse_nested, read_text
+from g2s_core.lazy import lazy_module
 from g2s_core.messages import show, show_key
 from g2s_core.model import LoadedResult, Opening, StageStats, Terminals
 from g2s_core.plugin import hookimpl
 from g2s_plugins.outputs.structure_json import RUN_FILE, SCHEMA_PATH, SCHEMA_VERSION, STRUCTURE_FILE
 from g2s_plugins.vectors import vec3
+
+# loaded on first use: listing plugins and checking a config import this module, and need none of them
+nx = lazy_module("networkx")
 
 NAME = "json"
 

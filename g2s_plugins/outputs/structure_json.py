@@ -31,10 +31,10 @@ from operator import itemgetter
 from pathlib import Path
 from typing import Any
 
-import networkx as nx
 import numpy as np
 
 from g2s_core import version
+from g2s_core.lazy import lazy_module
 from g2s_core.model import Opening, RunResult
 from g2s_plugins.outputs.columns import by_groups
 from g2s_plugins.outputs.common import (
@@ -53,6 +53,9 @@ from g2s_plugins.outputs.common import (
 from g2s_plugins.outputs.files import atomic_write
 from g2s_plugins.outputs.json_text import dumps_indented
 from g2s_plugins.outputs.writers import collector_paused
+
+# loaded on first use: listing plugins and checking a config import this module, and need none of them
+nx = lazy_module("networkx")
 
 SCHEMA_VERSION = 3
 STRUCTURE_FILE = "structure.json"

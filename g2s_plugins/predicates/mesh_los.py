@@ -70,10 +70,10 @@ from __future__ import annotations
 from collections.abc import Callable, Iterable
 from typing import TYPE_CHECKING, NamedTuple
 
-import networkx as nx
 import numpy as np
 from pydantic import Field
 
+from g2s_core.lazy import lazy_module
 from g2s_core.model import RunContext
 from g2s_core.plugin import hookimpl
 from g2s_plugins._raycasting import GROUND_MARGIN, AgentShape, OpenFloors, RayCaster, walks_in_batch
@@ -81,6 +81,9 @@ from g2s_plugins._surface import CollapseParams, ForestDerived, RuleArrays, coll
 from g2s_plugins.graph_builders.sampling import DISK_SHARE
 from g2s_plugins.heat_guarantee import begin_ahead, guaranteed
 from g2s_plugins.recast.navmesh import NavMesh, collapse_forest_seeing
+
+# loaded on first use: listing plugins and checking a config import this module, and need none of them
+nx = lazy_module("networkx")
 
 if TYPE_CHECKING:  # g2s_core.simplify imports scipy (g2s_core.rooted): listing plugins and checking a config need neither
     from g2s_core.simplify import ForestArrays

@@ -36,7 +36,6 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import TYPE_CHECKING
 
-import networkx as nx
 import numpy as np
 from pydantic import Field
 
@@ -53,6 +52,7 @@ if TYPE_CHECKING:  # g2s_core.simplify imports scipy (g2s_core.rooted): listing 
 
 # loaded on first use: listing plugins and checking a config import this module, and need none of them
 structure_leaves = lazy_module("g2s_plugins.structure_leaves")  # it imports g2s_core.simplify, which imports scipy
+nx = lazy_module("networkx")
 
 NAME = "surface_los"
 

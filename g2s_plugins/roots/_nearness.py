@@ -2,8 +2,12 @@
 
 from __future__ import annotations
 
-import networkx as nx
 import numpy as np
+
+from g2s_core.lazy import lazy_module
+
+# loaded on first use: listing plugins and checking a config import this module, and need none of them
+nx = lazy_module("networkx")
 
 
 def nearness(tree: nx.Graph, target: np.ndarray) -> dict[int, float]:

@@ -8,12 +8,15 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 
-import networkx as nx
 from pydantic import Field
 
+from g2s_core.lazy import lazy_module
 from g2s_core.model import RunContext
 from g2s_core.plugin import PluginParams, hookimpl
 from g2s_plugins.roots._nearness import nearness
+
+# loaded on first use: listing plugins and checking a config import this module, and need none of them
+nx = lazy_module("networkx")
 
 NAME = "point"
 

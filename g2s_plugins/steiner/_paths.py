@@ -32,14 +32,11 @@ from dataclasses import dataclass
 
 import networkx as nx
 import numpy as np
+from scipy.sparse import csr_matrix
 
-from g2s_core.lazy import lazy_module
 from g2s_core.model import graph_of
 from g2s_plugins import _trees
 from g2s_plugins.surface_arrays import MIN_LENGTH, SurfaceArrays, surface_arrays
-
-# loaded on first use: listing plugins and checking a config import this module, and need none of them
-sparse = lazy_module("scipy.sparse")
 
 NO_PREDECESSOR = -9999
 """What scipy.sparse.csgraph writes in a predecessor array for "none"."""
@@ -62,7 +59,7 @@ class CSRGraph:
     """
 
     nodes: np.ndarray
-    matrix: sparse.csr_matrix
+    matrix: csr_matrix
     lo: np.ndarray
     hi: np.ndarray
     weight: np.ndarray
@@ -200,7 +197,7 @@ def from_surface_arrays(arrays: SurfaceArrays) -> CSRGraph | None:
     cols = matrix.indices.astype(np.int64)
     upper = cols > rows  # each edge once, in (lo, hi) order: rows ascend, columns ascend within a row
     index_dtype = np.int32 if max(n, cols.shape[0]) < 2**31 - 1 else np.int64
-    csr = sparse.csr_matrix((matrix.data, matrix.indices.astype(index_dtype), matrix.indptr.astype(index_dtype)), shape=(n, n))
+    csr = csr_matrix((matrix.data, matrix.indices.astype(index_dtype), matrix.indptr.astype(index_dtype)), shape=(n, n))
     return CSRGraph(nodes=nodes.astype(np.int64), matrix=csr, lo=rows[upper], hi=cols[upper], weight=matrix.data[upper])
 
 
@@ -234,7 +231,7 @@ def edges_to_csr(nodes: np.ndarray, u: np.ndarray, v: np.ndarray, w: np.ndarray)
     indptr = np.zeros(n + 1, dtype=np.int64)
     np.cumsum(np.bincount(rows, minlength=n), out=indptr[1:])
     index_dtype = np.int32 if max(n, rows.shape[0]) < 2**31 - 1 else np.int64
-    matrix = sparse.csr_matrix(
+    matrix = csr_matrix(
         (data[order], cols[order].astype(index_dtype), indptr.astype(index_dtype)), shape=(n, n)
     )
     return CSRGraph(nodes=nodes, matrix=matrix, lo=lo, hi=hi, weight=w)

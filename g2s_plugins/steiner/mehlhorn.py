@@ -37,16 +37,16 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Sequence
 
-import networkx as nx
 import numpy as np
 
 from g2s_core.lazy import lazy_module
 from g2s_core.model import RunContext
 from g2s_core.plugin import PluginParams, hookimpl
-from g2s_plugins.steiner import _paths
 
 # loaded on first use: listing plugins and checking a config import this module, and need none of them
 csgraph = lazy_module("scipy.sparse.csgraph")
+_paths = lazy_module("g2s_plugins.steiner._paths")  # it imports scipy
+nx = lazy_module("networkx")
 
 NAME = "mehlhorn"
 

@@ -44,13 +44,13 @@ from __future__ import annotations
 from dataclasses import dataclass
 from collections.abc import Hashable
 
-import networkx as nx
 import numpy as np
 
 from g2s_core.lazy import lazy_module
 
 # loaded on first use: listing plugins and checking a config import this module, and need none of them
 sparse, csgraph = lazy_module("scipy.sparse"), lazy_module("scipy.sparse.csgraph")
+nx = lazy_module("networkx")
 
 FACE_AREA_SPACINGS = 2.0
 """A counter-clockwise face of at most this many squared sample spacings (in plan) is walkable surface.

@@ -170,7 +170,6 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-import networkx as nx
 import numpy as np
 from pydantic import Field, model_validator
 from pydantic_core import PydanticCustomError
@@ -183,6 +182,7 @@ from g2s_plugins import _trees, traffic
 # loaded on first use: listing plugins and checking a config import this module, and need none of them
 rx = lazy_module("rustworkx")
 sp, csgraph = lazy_module("scipy.sparse"), lazy_module("scipy.sparse.csgraph")
+nx = lazy_module("networkx")
 
 NAME = "coverage"
 

@@ -182,7 +182,6 @@ import math
 from collections.abc import Callable
 from dataclasses import dataclass, replace
 
-import networkx as nx
 import numpy as np
 from pydantic import Field
 
@@ -200,6 +199,7 @@ from g2s_plugins.vectors import vec3
 
 # loaded on first use: listing plugins and checking a config import this module, and need none of them
 trimesh, spatial = lazy_module("trimesh"), lazy_module("scipy.spatial")
+nx = lazy_module("networkx")
 
 NAME = "entry_exit"
 

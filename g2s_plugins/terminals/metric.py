@@ -31,14 +31,17 @@ from __future__ import annotations
 import math
 from typing import Literal
 
-import networkx as nx
 from pydantic import Field, model_validator
 from pydantic_core import PydanticCustomError
 
+from g2s_core.lazy import lazy_module
 from g2s_core.model import RunContext, Terminals
 from g2s_core.plugin import PluginParams, hookimpl
 from g2s_core.ties import tie_value
 from g2s_plugins import centrality
+
+# loaded on first use: listing plugins and checking a config import this module, and need none of them
+nx = lazy_module("networkx")
 
 NAME = "metric"
 

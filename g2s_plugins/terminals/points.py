@@ -26,7 +26,6 @@ import re
 from pathlib import Path
 from typing import Annotated, Any
 
-import networkx as nx
 import numpy as np
 from pydantic import Field, Strict, model_validator
 from pydantic_core import PydanticCustomError
@@ -41,6 +40,7 @@ from g2s_plugins.vectors import vec3
 
 # loaded on first use: listing plugins and checking a config import this module, and need none of them
 spatial = lazy_module("scipy.spatial")
+nx = lazy_module("networkx")
 
 NAME = "points"
 
