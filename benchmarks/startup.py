@@ -1,15 +1,16 @@
 """Start-up time of the ``g2s`` command: how long a user waits for the answers that need no computation.
 
 Run from the repository root: ``.venv/bin/python benchmarks/startup.py [--runs 5] [--piece ../shared/data/pieces/Hallway.obj]
-[--only TEXT] [--g2s COMMAND]`` (``--g2s``: time another g2s, e.g. an older checkout's, against the same load).
+[--only TEXT] [--g2s COMMAND] [--against COMMAND]`` (``--g2s``: time another g2s, e.g. an older checkout's, against the
+same load; ``--against``: a second g2s whose warm runs alternate with the first's, run by run, no cold runs).
 
 Each command runs ``--runs`` times warm (files in the page cache, the first
 run discarded) and ``--runs`` times cold: before each cold run the pages of
 the venv, the Python installation and this checkout are dropped from the page
 cache with ``posix_fadvise(DONTNEED)`` (only those files, so that other work on
-the machine keeps its cache). Wall time of the whole process, median and range;
-peak memory (max RSS) of the last run. The load average is printed first:
-figures taken under load are not comparable.
+the machine keeps its cache). Wall time of the whole process, median and range; the CPU seconds (user + system)
+of the warm runs, which a loaded machine inflates far less than the wall time; peak memory (max RSS) of the last
+run. The load average is printed first and last: wall times taken under load are not comparable.
 
 This is a benchmark, not a test: nothing here asserts a time (docs/performance.md, "Start-up", records figures).
 """
@@ -31,17 +32,21 @@ ROOT = Path(__file__).resolve().parent.parent
 VENV_BIN = Path(sys.executable).parent
 TYPO_CONFIG = "extends: map_piece\nagnet: {radius: 0.4}\n"
 """A config with a misspelt key: the exit-2 path (``g2s: error: ...agnet...``)."""
+TYPO_PARAMS_CONFIG = "extends: map_piece\ngraph:\n  params: {cell_szie: 0.2}\n"
+"""A config with a misspelt key among a plugin's parameters: checked once that plugin is loaded, exit 2."""
 
 
 def commands(g2s: list[str], piece: str, folder: Path) -> list[tuple[str, list[str], int]]:
     """``(label, argv, expected exit code)`` of each measured command, ``g2s`` being the command's argv."""
-    typo = folder / "typo.yaml"
+    typo, typo_params = folder / "typo.yaml", folder / "typo_params.yaml"
     typo.write_text(TYPO_CONFIG)
+    typo_params.write_text(TYPO_PARAMS_CONFIG)
     return [
         ("g2s --version", [*g2s, "--version"], 0),
         ("g2s --help", [*g2s, "--help"], 0),
         ("g2s plugins", [*g2s, "plugins"], 0),
         ("g2s run typo.yaml (exit 2)", [*g2s, "run", str(typo), piece, "-o", str(folder / "never")], 2),
+        ("g2s run typo_params.yaml (exit 2)", [*g2s, "run", str(typo_params), piece, "-o", str(folder / "never")], 2),
         (f"g2s run map_piece {Path(piece).name}",
          [*g2s, "run", str(ROOT / "configs" / "map_piece.yaml"), piece, "-o", str(folder / "out"), "--force", "-q"], 0),
         ('python -c "import g2s_core"', [sys.executable, "-c", "import g2s_core"], 0),
@@ -60,8 +65,8 @@ def drop_from_page_cache(*folders: Path) -> None:
                 continue
 
 
-def timed(argv: list[str], expected: int) -> tuple[float, float]:
-    """(wall seconds, peak RSS in MB) of one run of ``argv``, which must exit with ``expected``."""
+def timed(argv: list[str], expected: int) -> tuple[float, float, float]:
+    """(wall seconds, CPU seconds, peak RSS in MB) of one run of ``argv``, which must exit with ``expected``."""
     start = time.perf_counter()
     child = subprocess.Popen(argv, cwd=ROOT, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
     stderr = child.stderr.read()
@@ -70,7 +75,12 @@ def timed(argv: list[str], expected: int) -> tuple[float, float]:
     child.returncode = os.waitstatus_to_exitcode(status)
     if child.returncode != expected:
         sys.exit(f"{' '.join(argv)}: exit {child.returncode}, expected {expected}: {stderr.strip()}")
-    return seconds, usage.ru_maxrss / 1024
+    return seconds, usage.ru_utime + usage.ru_stime, usage.ru_maxrss / 1024
+
+
+def spread(values: list[float]) -> str:
+    """``median (min-max)``."""
+    return f"{statistics.median(values):.2f} ({min(values):.2f}-{max(values):.2f})"
 
 
 def main() -> None:
@@ -80,24 +90,32 @@ def main() -> None:
     parser.add_argument("--only", help="only the commands whose label contains this text")
     parser.add_argument("--g2s", default=str(VENV_BIN / "g2s"),
                         help="the g2s command to time, split like a shell would (default: this venv's g2s)")
+    parser.add_argument("--against", help="a second g2s command: warm runs alternate between the two, no cold runs")
     args = parser.parse_args()
     cached = [Path(sys.prefix), Path(sysconfig.get_paths()["stdlib"]), ROOT / "g2s_core", ROOT / "g2s_plugins",
               ROOT / "build"]
     print("load average:", " ".join(f"{x:.2f}" for x in os.getloadavg()))
-    print(f"{'command':40} {'warm median (range) s':>24} {'cold median (range) s':>24} {'max RSS MB':>10}")
+    print(f"{'command':40} {'warm median (range) s':>24} {'warm CPU s':>24} {'cold median (range) s':>24} {'max RSS MB':>10}")
+    g2s_commands = [shlex.split(args.g2s), *([shlex.split(args.against)] if args.against else [])]
     with tempfile.TemporaryDirectory() as tmp:
-        for label, argv, expected in commands(shlex.split(args.g2s), args.piece, Path(tmp)):
+        for measured in zip(*(commands(g2s, args.piece, Path(tmp)) for g2s in g2s_commands)):
+            label = measured[0][0]
             if args.only and args.only not in label:
                 continue
-            timed(argv, expected)  # warms the cache
-            warm = [timed(argv, expected)[0] for _ in range(args.runs)]
-            cold = []
+            for _, argv, expected in measured:
+                timed(argv, expected)  # warms the cache
+            warm: list[list[tuple[float, float, float]]] = [[] for _ in measured]
             for _ in range(args.runs):
-                drop_from_page_cache(*cached)
-                seconds, peak = timed(argv, expected)
-                cold.append(seconds)
-            cells = [f"{statistics.median(t):.2f} ({min(t):.2f}-{max(t):.2f})" for t in (warm, cold)]
-            print(f"{label:40} {cells[0]:>24} {cells[1]:>24} {peak:10.0f}", flush=True)
+                for runs, (_, argv, expected) in zip(warm, measured):  # alternated: both see the same load
+                    runs.append(timed(argv, expected))
+            for which, runs in enumerate(warm):
+                cold = []
+                for _ in range(0 if args.against else args.runs):
+                    drop_from_page_cache(*cached)
+                    cold.append(timed(measured[which][1], measured[which][2])[0])
+                name = label if not args.against else f"{label} [{'g2s' if which == 0 else 'against'}]"
+                cells = [spread([run[0] for run in runs]), spread([run[1] for run in runs]), spread(cold) if cold else "-"]
+                print(f"{name:40} {cells[0]:>24} {cells[1]:>24} {cells[2]:>24} {runs[-1][2]:10.0f}", flush=True)
     print("load average:", " ".join(f"{x:.2f}" for x in os.getloadavg()))
 
 
