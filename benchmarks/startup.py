@@ -95,7 +95,7 @@ def main() -> None:
     cached = [Path(sys.prefix), Path(sysconfig.get_paths()["stdlib"]), ROOT / "g2s_core", ROOT / "g2s_plugins",
               ROOT / "build"]
     print("load average:", " ".join(f"{x:.2f}" for x in os.getloadavg()))
-    print(f"{'command':40} {'warm median (range) s':>24} {'warm CPU s':>24} {'cold median (range) s':>24} {'max RSS MB':>10}")
+    print(f"{'command':44} {'warm median (range) s':>24} {'warm CPU s':>24} {'cold median (range) s':>24} {'max RSS MB':>10}")
     g2s_commands = [shlex.split(args.g2s), *([shlex.split(args.against)] if args.against else [])]
     with tempfile.TemporaryDirectory() as tmp:
         for measured in zip(*(commands(g2s, args.piece, Path(tmp)) for g2s in g2s_commands)):
@@ -115,7 +115,7 @@ def main() -> None:
                     cold.append(timed(measured[which][1], measured[which][2])[0])
                 name = label if not args.against else f"{label} [{'g2s' if which == 0 else 'against'}]"
                 cells = [spread([run[0] for run in runs]), spread([run[1] for run in runs]), spread(cold) if cold else "-"]
-                print(f"{name:40} {cells[0]:>24} {cells[1]:>24} {cells[2]:>24} {runs[-1][2]:10.0f}", flush=True)
+                print(f"{name:44} {cells[0]:>24} {cells[1]:>24} {cells[2]:>24} {runs[-1][2]:10.0f}", flush=True)
     print("load average:", " ".join(f"{x:.2f}" for x in os.getloadavg()))
 
 
