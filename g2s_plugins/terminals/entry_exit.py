@@ -642,24 +642,28 @@ def _over_step_gap(
     the step gap (by default its climb) between floors within its climb of each other, so a gutter or slot 0.15-0.39
     m wide just inside a doorway, deeper than the climb, is no floor's end, and the doorway beyond it is an opening.
     Measured along the way (``directions`` (n,3)) and back, a sixteenth of a step under the ground's top (``ground``
-    (n,) m along ``down``, NaN: the origin's): both sides met, their faces' normals within 45 degrees of opposite in
-    plan (:data:`_FACING_COS`), each side's distance taken square to its face, the two under the step gap; walkable
+    (n,) m along ``down``, NaN: the origin's); where that finds no gap and the way's own probes found ground beyond
+    it at another height within the climb (``ground_after`` (n,) m along ``down``, NaN: none, :func:`_ground_after`),
+    again with the ray ahead a sixteenth of a step under that far ground's top: a far floor 0.02 m lower has its lip
+    under the first rays, a slab 0.2 m higher and 0.2 m thick its underside over them (docs/entry_exit.md, "A far
+    floor lower than the near one, asked by its ground"). Both sides met from the gap, their faces' normals within
+    45 degrees of opposite in plan (:data:`_FACING_COS`), each side's distance taken square to its face, the two under
+    the step gap; walkable
     ground within the climb just past both lips, and still two search steps past the far one (a strip the next
     probes stand on, not a beam's top): :func:`_narrow_gap_along` with those bounds. Not the builder's own test (:func:`~g2s_plugins._raycasting.
     ground_across_step_gap`, straight down along eight axes): at a floor's real end the search's probes, cast along a
     tilted floor's normal, meet no ground where straight down they do, and ground beside a probe along the end's own
     line counts for it, so that test put floors' ends up to a search step past their real ones and lost five
-    known openings (docs/entry_exit.md, "Openings behind a gap the agent steps over"). Two rays a probe, three more
-    where the gap is narrow enough: O(n).
+    known openings (docs/entry_exit.md, "Openings behind a gap the agent steps over"). Two rays a probe, two more
+    where a far floor at another height is asked, three more where the gap is narrow enough: O(n).
     """
     if not s.step_gap:
         return np.zeros(len(probes), dtype=bool), np.full(len(probes), np.inf)
     ground = np.where(np.isfinite(ground), ground, s.lift)
     on, distance = _narrow_gap_along(caster, probes, directions, down, ground, s, width=s.step_gap, facing=True,
                                      strip=2.0 * s.delta)
-    # A far floor at another height than the near one (within the climb below it, or a thin slab over it) has its
-    # lip above or below the rays just under the near floor: asked again with the ray ahead just under the far
-    # floor's top, where the way's own probes found ground beyond the gap
+    # asked again only where the way's probes found the far side's ground (a floor, not a riser's face): rays cast
+    # again at a fixed depth wherever the first found no gap met stairs' bodies beside floors' ends (7cbb0a0)
     other = np.flatnonzero(~on & (np.abs(ground_after - ground) > s.delta / 16.0) & (ground_after <= ground + s.climb))
     if len(other):
         on[other], distance[other] = _narrow_gap_along(
@@ -720,8 +724,11 @@ def _narrow_gap_along(
 ) -> tuple[np.ndarray, np.ndarray]:
     """Which probes stand over a gap narrower than ``width`` m (None: two search steps) measured along ``directions``
     ((n,3)) and back, and how far along ``down`` the ground beside it lies (:func:`_over_narrow_gap`). ``facing``: its
-    sides' faces also lie within 45 degrees of opposite in plan (:data:`_FACING_COS`); ``strip`` (m): the far side's
-    ground also goes on that far past its lip (:func:`_over_step_gap`)."""
+    sides' faces also lie within 45 degrees of opposite in plan (:data:`_FACING_COS`), each met from the gap's side
+    (rays starting inside a stair's body under its treads leave it through two faces turned away from each other,
+    docs/entry_exit.md, "A far floor lower than the near one, asked by its ground"); ``strip`` (m): the far side's
+    ground also goes on that far past its lip (:func:`_over_step_gap`); ``ahead_at`` ((n,) m along ``down``, None:
+    ``ground``): the ground the ray ahead runs just under, the far side's own."""
     on, distance = np.zeros(len(probes), dtype=bool), np.full(len(probes), np.inf)
     if not len(probes):
         return on, distance
