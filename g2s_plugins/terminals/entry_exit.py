@@ -532,6 +532,7 @@ def _surface_ends(
         on, far = ~missing.reshape(-1, n_off), hits.distance.reshape(-1, n_off)
         ground = np.concatenate([_nearest_ground(on[:, :n_base], far[:, :n_base]), _nearest_ground(on, far)[:, n_base:]],
                                 axis=1).ravel()
+        ground_after = _ground_after(on, far).ravel()
         rows = np.flatnonzero(missing)
         side = s.delta * _unit(np.cross(directions[part][rows // n_off], UP))
         across, beside = ground_across_crack(
@@ -548,7 +549,7 @@ def _surface_ends(
         # (:func:`_over_step_gap`; the search's probes alone: the bisection places an end the search decided)
         left = rows[~across]
         stepped, ground_beyond = _over_step_gap(caster, probes[left], directions[part][left // n_off], probe_down[left],
-                                                ground[left], s)
+                                                ground[left], ground_after[left], s)
         gapped = np.flatnonzero(~across)
         across[gapped], beside[gapped] = stepped, ground_beyond
         over_gap = np.zeros(len(probes), dtype=bool)
@@ -607,14 +608,21 @@ def _surface_ends(
 
 def _nearest_ground(on: np.ndarray, distance: np.ndarray) -> np.ndarray:
     """(n, k): along each row of probes, the ``distance`` ((n, k) m) of the last one ``on`` ((n, k) bool) the
-    ground at or before each, else of the first after it, NaN where the row has none. A sample over a slot
-    finds no ground of its own and stays at the navmesh's height, up to a cell over the floor's top: the ground a
-    probe beyond it stands on is the one to measure from. O(n k)."""
+    ground at or before each, else of the first after it (:func:`_ground_after`), NaN where the row has none. A
+    sample over a slot finds no ground of its own and stays at the navmesh's height, up to a cell over the floor's
+    top: the ground a probe beyond it stands on is the one to measure from. O(n k)."""
     k = on.shape[1]
     last = np.maximum.accumulate(np.where(on, np.arange(k)[None, :], -1), axis=1)
+    before = np.take_along_axis(distance, np.maximum(last, 0), axis=1)
+    return np.where(last >= 0, before, _ground_after(on, distance))
+
+
+def _ground_after(on: np.ndarray, distance: np.ndarray) -> np.ndarray:
+    """(n, k): along each row of probes, the ``distance`` ((n, k) m) of the first one ``on`` ((n, k) bool) the ground
+    at or after each, NaN where none is. Over a gap, the floor the row's probes find beyond it. O(n k)."""
+    k = on.shape[1]
     first = np.minimum.accumulate(np.where(on, np.arange(k)[None, :], k)[:, ::-1], axis=1)[:, ::-1]
-    near = np.where(last >= 0, last, first)
-    return np.where(near < k, np.take_along_axis(distance, np.minimum(near, k - 1), axis=1), np.nan)
+    return np.where(first < k, np.take_along_axis(distance, np.minimum(first, k - 1), axis=1), np.nan)
 
 
 _FACING_COS = math.cos(math.radians(45.0))
@@ -624,7 +632,8 @@ room's wall beside a doorway's floor) stands square to it (:func:`_over_step_gap
 
 
 def _over_step_gap(
-    caster: RayCaster, probes: np.ndarray, directions: np.ndarray, down: np.ndarray, ground: np.ndarray, s: _Settings
+    caster: RayCaster, probes: np.ndarray, directions: np.ndarray, down: np.ndarray, ground: np.ndarray,
+    ground_after: np.ndarray, s: _Settings,
 ) -> tuple[np.ndarray, np.ndarray]:
     """Which of the (n,3) ``probes`` that found no ground, and no gap narrower than two search steps
     (:func:`_over_narrow_gap`), stand over a gap across the way narrower than the step gap (``s.step_gap``) that the
@@ -635,20 +644,34 @@ def _over_step_gap(
     the step gap (by default its climb) between floors within its climb of each other, so a gutter or slot 0.15-0.39
     m wide just inside a doorway, deeper than the climb, is no floor's end, and the doorway beyond it is an opening.
     Measured along the way (``directions`` (n,3)) and back, a sixteenth of a step under the ground's top (``ground``
-    (n,) m along ``down``, NaN: the origin's): both sides met, their faces' normals within 45 degrees of opposite in
-    plan (:data:`_FACING_COS`), each side's distance taken square to its face, the two under the step gap; walkable
+    (n,) m along ``down``, NaN: the origin's); where that finds no gap and the way's own probes found ground beyond
+    it at another height within the climb (``ground_after`` (n,) m along ``down``, NaN: none, :func:`_ground_after`),
+    again with the ray ahead a sixteenth of a step under that far ground's top: a far floor 0.02 m lower has its lip
+    under the first rays, a slab 0.2 m higher and 0.2 m thick its underside over them (docs/entry_exit.md, "A far
+    floor lower than the near one, asked by its ground"). Both sides met from the gap, their faces' normals within
+    45 degrees of opposite in plan (:data:`_FACING_COS`), each side's distance taken square to its face, the two under
+    the step gap; walkable
     ground within the climb just past both lips, and still two search steps past the far one (a strip the next
     probes stand on, not a beam's top): :func:`_narrow_gap_along` with those bounds. Not the builder's own test (:func:`~g2s_plugins._raycasting.
     ground_across_step_gap`, straight down along eight axes): at a floor's real end the search's probes, cast along a
     tilted floor's normal, meet no ground where straight down they do, and ground beside a probe along the end's own
     line counts for it, so that test put floors' ends up to a search step past their real ones and lost five
-    known openings (docs/entry_exit.md, "Openings behind a gap the agent steps over"). Two rays a probe, three more
-    where the gap is narrow enough: O(n).
+    known openings (docs/entry_exit.md, "Openings behind a gap the agent steps over"). Two rays a probe, two more
+    where a far floor at another height is asked, three more where the gap is narrow enough: O(n).
     """
     if not s.step_gap:
         return np.zeros(len(probes), dtype=bool), np.full(len(probes), np.inf)
-    return _narrow_gap_along(caster, probes, directions, down, np.where(np.isfinite(ground), ground, s.lift), s,
-                             width=s.step_gap, facing=True, strip=2.0 * s.delta)
+    ground = np.where(np.isfinite(ground), ground, s.lift)
+    on, distance = _narrow_gap_along(caster, probes, directions, down, ground, s, width=s.step_gap, facing=True,
+                                     strip=2.0 * s.delta)
+    # asked again only where the way's probes found the far side's ground (a floor, not a riser's face): rays cast
+    # again at a fixed depth wherever the first found no gap met stairs' bodies beside floors' ends (7cbb0a0)
+    other = np.flatnonzero(~on & (np.abs(ground_after - ground) > s.delta / 16.0) & (ground_after <= ground + s.climb))
+    if len(other):
+        on[other], distance[other] = _narrow_gap_along(
+            caster, probes[other], directions[other], down[other], ground[other], s, width=s.step_gap, facing=True,
+            strip=2.0 * s.delta, ahead_at=ground_after[other])
+    return on, distance
 
 
 def _over_narrow_gap(
@@ -699,23 +722,29 @@ def _narrow_gap_at(
 
 def _narrow_gap_along(
     caster: RayCaster, probes: np.ndarray, directions: np.ndarray, down: np.ndarray, ground: np.ndarray, s: _Settings,
-    width: float | None = None, facing: bool = False, strip: float = 0.0,
+    width: float | None = None, facing: bool = False, strip: float = 0.0, ahead_at: np.ndarray | None = None,
 ) -> tuple[np.ndarray, np.ndarray]:
     """Which probes stand over a gap narrower than ``width`` m (None: two search steps) measured along ``directions``
     ((n,3)) and back, and how far along ``down`` the ground beside it lies (:func:`_over_narrow_gap`). ``facing``: its
-    sides' faces also lie within 45 degrees of opposite in plan (:data:`_FACING_COS`); ``strip`` (m): the far side's
-    ground also goes on that far past its lip (:func:`_over_step_gap`)."""
+    sides' faces also lie within 45 degrees of opposite in plan (:data:`_FACING_COS`), each met from the gap's side
+    (rays starting inside a stair's body under its treads leave it through two faces turned away from each other,
+    docs/entry_exit.md, "A far floor lower than the near one, asked by its ground"); ``strip`` (m): the far side's
+    ground also goes on that far past its lip (:func:`_over_step_gap`); ``ahead_at`` ((n,) m along ``down``, None:
+    ``ground``): the ground the ray ahead runs just under, the far side's own."""
     on, distance = np.zeros(len(probes), dtype=bool), np.full(len(probes), np.inf)
     if not len(probes):
         return on, distance
     under = probes + down * (ground + s.delta / 16.0)[:, None]
-    ahead, behind = caster.first_hits_of([(under, directions), (under, -directions)])
+    under_ahead = under if ahead_at is None else probes + down * (ahead_at + s.delta / 16.0)[:, None]
+    ahead, behind = caster.first_hits_of([(under_ahead, directions), (under, -directions)])
     # each side's distance across it (square to the face met): a way along a slot meets its sides far off
     across = []
-    for hit in (ahead, behind):
+    for hit, sign in ((ahead, 1.0), (behind, -1.0)):
         met = np.isfinite(hit.distance)
-        cos = np.abs(np.einsum("ij,ij->i", caster.face_normals[np.maximum(hit.face, 0)], directions))
-        across.append(np.where(met, np.where(met, hit.distance, 0.0) * cos, np.inf))
+        along = np.einsum("ij,ij->i", caster.face_normals[np.maximum(hit.face, 0)], directions)
+        if facing:  # met from the gap's side: a ray starting inside a solid leaves it through faces turned away
+            met &= along * sign < 0.0
+        across.append(np.where(met, np.where(met, hit.distance, 0.0) * np.abs(along), np.inf))
     narrow = across[0] + across[1] < (2.0 * s.delta if width is None else width)
     if facing:
         plan = [_unit(caster.face_normals[np.maximum(hit.face, 0)] * np.array([1.0, 0.0, 1.0])) for hit in (ahead, behind)]
