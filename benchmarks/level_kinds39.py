@@ -286,9 +286,13 @@ def airport_pier(seed: int) -> trimesh.Trimesh:
     zc = width / 2
     sat0 = length + link
     s = _Solids()
-    s.box(0.0, length, -0.3, 0.0, 0.0, width)
+    shops = []  # the shops' plans: no floor inside a closed solid (it would be floor under its roof)
+    for x0, x1 in ((0.0, length), (sat0, sat0 + sat_x)):
+        for x in np.arange(x0 + 12.0, x1 - 12.0, float(rng.uniform(16.0, 20.0))):  # shops down the middle
+            shops.append(_ridged(s, float(x), float(x) + 8.0, zc - 1.5, zc + 1.5, -0.1, 3.0))
+    s.ground(0.0, length, 0.0, width, 0.0, shops, thickness=0.3)
     s.box(length, sat0, -0.3, 0.0, zc - link_w / 2, zc + link_w / 2)
-    s.box(sat0, sat0 + sat_x, -0.3, 0.0, zc - sat_z / 2, zc + sat_z / 2)
+    s.ground(sat0, sat0 + sat_x, zc - sat_z / 2, zc + sat_z / 2, 0.0, shops, thickness=0.3)
     # the link: belts 0.05 m up between balustrades, its side walls the outer balustrades' backs
     za = zc - link_w / 2 + 0.1
     s.box(length + 1.0, sat0 - 1.0, 0.0, 0.05, za, za + lane_a)
@@ -305,7 +309,7 @@ def airport_pier(seed: int) -> trimesh.Trimesh:
         s.wall((0.0, z), (length, z), -0.1, 4.0, doors=doors.get(("pier", side), []), thickness=0.2)
         zs = zc + side * sat_z / 2
         s.wall((sat0, zs), (sat0 + sat_x, zs), -0.1, 4.0,
-               doors=[(x - sat0, w) for x, w in doors.get(("satellite", side), [])], thickness=0.2)
+               doors=doors.get(("satellite", side), []), thickness=0.2)  # the plan's x are along the satellite
     s.wall((0.0, 0.0), (0.0, width), -0.1, 4.0, thickness=0.2)
     s.wall((length, 0.0), (length, width), -0.1, 4.0, doors=[(zc - half + 0.1, link_w - 0.2)], thickness=0.2)
     s.wall((sat0, zc - sat_z / 2), (sat0, zc + sat_z / 2), -0.1, 4.0, doors=[(sat_z / 2 - half + 0.1, link_w - 0.2)],
@@ -315,8 +319,6 @@ def airport_pier(seed: int) -> trimesh.Trimesh:
         z0, z1 = (0.0, width) if x0 == 0.0 else (zc - sat_z / 2, zc + sat_z / 2)
         _gate_room(s, rng, x0, x1, z0 + 0.5, z0 + 5.5)
         _gate_room(s, rng, x0, x1, z1 - 5.5, z1 - 0.5)
-        for x in np.arange(x0 + 12.0, x1 - 12.0, float(rng.uniform(16.0, 20.0))):  # shops down the middle
-            _ridged(s, float(x), float(x) + 8.0, zc - 1.5, zc + 1.5, -0.1, 3.0)
     for bridge in plan["bridges"]:
         side, w, x = bridge["side"], bridge["width"], bridge["x"]
         z0 = (0.0 if side < 0 else width) if bridge["building"] == "pier" else zc + side * sat_z / 2
