@@ -415,7 +415,8 @@ def cliff_path(seed: int) -> trimesh.Trimesh:
     rng = np.random.default_rng(seed + 1000)
     side, top = plan["side"], plan["top"]
     s = _Solids()
-    s.box(0.0, side, -0.1, top, 0.0, side)  # the butte, its top the plateau
+    holes = [_ridged(s, side / 2 - 5.0, side / 2 + 5.0, side / 2 - 4.0, side / 2 + 4.0, top - 0.1, top + 4.0)]  # the hermitage
+    s.slab(0.0, side, 0.0, side, top, holes, thickness=top + 0.1)  # the butte, its top the plateau (none in the hermitage)
     for f, face in enumerate(plan["faces"]):
         corner, along, out = (v * (side if i == 0 else 1.0) for i, v in enumerate(_FACE_FRAMES[f % 4]))
         y0, y1 = face["y"]
@@ -433,7 +434,6 @@ def cliff_path(seed: int) -> trimesh.Trimesh:
         s.hull(np.array([[q[0], y, q[1]] for u in (-0.2, 2.2) for v in (-0.2, 2.2) for q in [end + out * u + nxt * v]
                          for y in (y1 - 0.4, y1)]))  # the landing at the corner
     s.ground(-30.0, side + 30.0, -30.0, side + 30.0, 0.0, [(0.0, side, 0.0, side)])
-    holes = [_ridged(s, side / 2 - 5.0, side / 2 + 5.0, side / 2 - 4.0, side / 2 + 4.0, top - 0.1, top + 4.0)]
     spots: list[tuple[np.ndarray, float]] = []
     for _ in range(8):  # trees on the plateau, clear of its edge
         p = _placed(rng, spots, 4.0, side - 4.0, 4.0, side - 4.0, 1.0, holes)
