@@ -7,13 +7,15 @@ of ``benchmarks/level_kinds.py``, ``level_kinds30.py`` and ``level_kinds38.py`` 
 whose width is drawn per flight from 1.0-1.8 m, a sunken fireplace pit), ``shell_bowls`` (a battlefield of shell
 craters as bowls *whose inner walls stand at a slope drawn per bowl from 25-55 degrees*, so a bowl over the 45-degree
 limit is a trap), ``airport_pier`` (a pier whose satellite is reached only along *travelator lanes 1.0-1.4 m wide
-between balustrades*, strips 0.05 m up, and whose aircraft are boarded along *glazed jet bridges 1.4-2.4 m wide*
-sloping 0-4 degrees, drawn per bridge), ``cliff_path`` (a path up a cliff in switchbacks, a shelf with a drop on its
-open side *whose width is drawn per stretch from 0.6-1.8 m*, pinches under the agent's 1 m cutting it),
-``cellar_stairs`` (terraced houses whose cellars are reached down a stair *under a girder whose clearance over the
-treads is drawn per house from 1.75-2.3 m*, about the agent's 2 m) and ``stack_tiers`` (a library's cast-iron book
-stack of 3-4 tiers *2.35-2.7 m apart floor to floor*, aisles between ranges 0.8-1.3 m wide, tiers joined by *enclosed
-stairs 1.0-1.6 m wide*, drawn per stair).
+between a wall and a balustrade*, belts 0.05 m up, and whose aircraft are boarded along *glazed jet bridges 1.4-2.4 m
+wide* sloping 0-4 degrees, drawn per bridge), ``cliff_path`` (a path winding up a butte, a shelf with a wall on one
+side and a drop on the other *whose width is drawn per stretch from 1.0-1.8 m, or a pinch of 0.6-1.0 m*, pinches under
+the agent's 1 m cutting it), ``cellar_stairs`` (terraced houses whose cellars are reached down a stair *under the
+ground floor's edge, whose clearance over the tread it overhangs is drawn per house, about 1.65-2.33 m*, about the
+agent's 2 m) and ``stack_tiers`` (a library's cast-iron book stack of 4-5 tiers *2.35-2.7 m apart floor to floor*,
+aisles between ranges 0.8-1.3 m wide, tiers joined by *enclosed stairs 1.0-1.6 m wide*, drawn per stair).
+
+Measured in docs/analysis_quality.md, "A thirty-ninth round of level kinds".
 
 Run: ``.venv/bin/python benchmarks/level_kinds39.py OUT_DIR [--kinds ski_lodge stack_tiers] [--seeds 0 1 2]``
 writes ``OUT_DIR/<kind>_s<seed>.obj``; ``benchmarks/analysis_quality.py --levels`` takes the kinds' names too."""
