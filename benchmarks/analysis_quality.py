@@ -40,7 +40,7 @@ walkable floor falls apart, e.g. a corridor the navmesh's erosion cuts). ``--pre
 takes preset names or config files (a file extending a preset with other parameters; one whose graph builder names
 ``play_points`` is measured over its play space alone, "polys" counting its polygons); ``--levels`` also takes mesh files (any format
 ``g2s run`` reads, Y-up metres), so the same table can be made for levels of
-one's own, and the level kinds of ``benchmarks/level_kinds.py``, ``level_kinds26.py``, ``level_kinds27.py``, ``level_kinds28.py``, ``level_kinds29.py``, ``level_kinds30.py``, ``level_kinds31.py``, ``level_kinds32.py``, ``level_kinds33.py``, ``level_kinds34.py``, ``level_kinds35.py``, ``level_kinds36.py``, ``level_kinds37.py`` and ``level_kinds38.py`` (each built with ``seed=s``); ``--yaws`` runs every level also turned by those angles (degrees,
+one's own, and the level kinds of ``benchmarks/level_kinds.py``, ``level_kinds26.py``, ``level_kinds27.py``, ``level_kinds28.py``, ``level_kinds29.py``, ``level_kinds30.py``, ``level_kinds31.py``, ``level_kinds32.py``, ``level_kinds33.py``, ``level_kinds34.py``, ``level_kinds35.py``, ``level_kinds36.py``, ``level_kinds37.py``, ``level_kinds38.py`` and ``level_kinds39.py`` (each built with ``seed=s``); ``--yaws`` runs every level also turned by those angles (degrees,
 about the vertical axis through the centre of its bounds), to check that the
 figures do not depend on how a level lies in its frame. This is a benchmark: nothing here asserts a target.
 """
@@ -69,6 +69,7 @@ from level_kinds35 import KINDS as ROUND_35_KINDS
 from level_kinds36 import KINDS as ROUND_36_KINDS
 from level_kinds37 import KINDS as ROUND_37_KINDS
 from level_kinds38 import KINDS as ROUND_38_KINDS
+from level_kinds39 import KINDS as ROUND_39_KINDS
 
 from g2s_core import pipeline
 from g2s_core.config import find_config, load_raw_config, parse_config
@@ -99,11 +100,12 @@ are the generators' defaults."""
 
 KINDS = {**EARLIER_KINDS, **ROUND_26_KINDS, **ROUND_27_KINDS, **ROUND_28_KINDS, **ROUND_29_KINDS, **ROUND_30_KINDS,
          **ROUND_31_KINDS, **ROUND_32_KINDS, **ROUND_33_KINDS, **ROUND_34_KINDS,
-         **ROUND_35_KINDS, **ROUND_36_KINDS, **ROUND_37_KINDS, **ROUND_38_KINDS}
+         **ROUND_35_KINDS, **ROUND_36_KINDS, **ROUND_37_KINDS, **ROUND_38_KINDS, **ROUND_39_KINDS}
 """Every held-out level kind: name -> generator (seed -> Y-up mesh in metres), rounds 5-25 (``level_kinds.py``), 26
 (``level_kinds26.py``), 27 (``level_kinds27.py``), 28 (``level_kinds28.py``), 29 (``level_kinds29.py``), 30
 (``level_kinds30.py``), 31 (``level_kinds31.py``), 32 (``level_kinds32.py``), 33 (``level_kinds33.py``), 34
-(``level_kinds34.py``), 35 (``level_kinds35.py``), 36 (``level_kinds36.py``), 37 (``level_kinds37.py``) and 38 (``level_kinds38.py``)."""
+(``level_kinds34.py``), 35 (``level_kinds35.py``), 36 (``level_kinds36.py``), 37 (``level_kinds37.py``), 38 (``level_kinds38.py``) and 39
+(``level_kinds39.py``)."""
 
 SAMPLE_LEVELS = ("cross_hub", "t_hub", "two_floors", "closed_room", "room_with_window", "corridor_with_ramp")
 
@@ -154,7 +156,7 @@ def main(argv: list[str] | None = None, registry: Registry | None = None) -> Non
     parser.add_argument("--presets", nargs="+", default=["map_analysis_paper", "map_analysis"])
     parser.add_argument("--levels", nargs="+", default=["nav_test", "samples", "dungeon_1k", "dungeon_20k"],
                         help="nav_test, samples, a sample name, dungeon_1k, dungeon_20k, dungeon_100k, "
-                             "terrain_1k, terrain_20k, building_1k, building_20k, castle_1k, castle_20k, a kind of benchmarks/level_kinds.py, level_kinds26.py, level_kinds27.py, level_kinds28.py, level_kinds29.py, level_kinds30.py, level_kinds31.py, level_kinds32.py, level_kinds33.py, level_kinds34.py, level_kinds35.py, level_kinds36.py, level_kinds37.py or level_kinds38.py "
+                             "terrain_1k, terrain_20k, building_1k, building_20k, castle_1k, castle_20k, a kind of benchmarks/level_kinds.py, level_kinds26.py, level_kinds27.py, level_kinds28.py, level_kinds29.py, level_kinds30.py, level_kinds31.py, level_kinds32.py, level_kinds33.py, level_kinds34.py, level_kinds35.py, level_kinds36.py, level_kinds37.py, level_kinds38.py or level_kinds39.py "
                              f"({', '.join(KINDS)}), or a mesh file (Y-up, metres)")
     parser.add_argument("--seeds", nargs="+", type=int, default=[0], help="seeds of the generated levels")
     parser.add_argument("--yaws", nargs="+", type=float, default=[0.0],

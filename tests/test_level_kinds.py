@@ -1,4 +1,4 @@
-"""The level kinds of rounds 9-38 (``benchmarks/level_kinds.py``, ``level_kinds26.py`` ... ``level_kinds38.py``) build
+"""The level kinds of rounds 9-39 (``benchmarks/level_kinds.py``, ``level_kinds26.py`` ... ``level_kinds39.py``) build
 the levels they describe.
 
 Smoke tests of quick generators (most well under a second each to build and to give a navmesh; the theatre's and
@@ -2211,3 +2211,69 @@ def test_the_stile_fields_areas_are_the_plans(round_38):
         groups.setdefault(area, set()).add(field)
     assert sorted(map(sorted, groups.values())) == sorted(map(sorted, module.stile_fields_areas(plan)))
     assert label.max() + 1 == len(groups)
+
+
+@pytest.fixture(scope="module")
+def round_39() -> dict[str, Callable[..., trimesh.Trimesh]]:
+    """``benchmarks/level_kinds39.py``'s KINDS (the thirty-ninth round): each call builds its level anew."""
+    return benchmark("level_kinds39").KINDS
+
+
+def test_the_round_39_plans_answers():
+    """The answers the round's docstrings give from the plans (written before any pipeline run): traps (bowls steeper
+    than 45 degrees) 12 / 8 / 10, path pieces between pinches 4 / 3 / 4, cellars under 2.0 m of head room 4 / 3 / 4
+    on seeds 0-2."""
+    module = benchmark("level_kinds39")
+    assert [len(module.shell_bowls_traps(module.shell_bowls_plan(s))) for s in range(3)] == [12, 8, 10]
+    assert [len(module.cliff_path_areas(module.cliff_path_plan(s))) for s in range(3)] == [4, 3, 4]
+    assert [len(module.cellar_stairs_cut(module.cellar_stairs_plan(s))) for s in range(3)] == [4, 3, 4]
+
+
+def test_the_shell_bowls_traps_are_areas_apart(round_39):
+    """Seed 0: each bowl whose wall stands over 45 degrees (45.1-52.8) holds an area of its own, every other bowl
+    (25.3-44.7 degrees) is joined to the field: 13 areas, as the plan says (docs/analysis_quality.md, "A thirty-ninth
+    round of level kinds")."""
+    module = benchmark("level_kinds39")
+    plan = module.shell_bowls_plan(0)
+    label, nav = areas(round_39["shell_bowls"](0), PRESET_GRID)
+    main, traps = _main_area(label, nav), set(module.shell_bowls_traps(plan))
+    for i, bowl in enumerate(plan["bowls"]):
+        cx, cz = bowl["centre"]
+        poly = nav.nearest_poly([cx, -bowl["depth"], cz], [0.5, 0.3, 0.5])[0]
+        assert poly >= 0
+        assert (label[poly] != main) == (i in traps), (i, bowl["slope"])
+    assert label.max() + 1 == 1 + len(traps)
+
+
+def test_the_ski_lodges_open_flights_are_kept_from_about_1_4_m(round_39):
+    """Seed 0's half-flights between split-level plates, open on both sides: the navmesh joins the plates across every
+    flight of 1.48 m or more and none of 1.14-1.34 m (a player 1 m across walks them all: the round's first miss)."""
+    plan = benchmark("level_kinds39").ski_lodge_plan(0)
+    label, nav = areas(round_39["ski_lodge"](0), PRESET_GRID)
+    xs = plan["xs"]
+
+    def plate(i: int) -> int:
+        poly = nav.nearest_poly([(xs[i] + xs[i + 1]) / 2, plan["heights"][i], 1.2], [2.0, 0.2, 1.0])[0]
+        assert poly >= 0, i
+        return int(label[poly])
+    for b, flight in enumerate(plan["flights"]):
+        if flight["width"] >= 1.48:
+            assert plate(b) == plate(b + 1), flight
+        elif flight["width"] <= 1.34:
+            assert plate(b) != plate(b + 1), flight
+
+
+def test_the_cellar_stairs_need_more_head_room_on_the_navmesh_than_the_agent(round_39):
+    """Seed 0: every cellar is apart on the navmesh, those under 1.66-1.99 m of head room over the overhung tread
+    (a player 2 m tall does not pass) and those under 2.08-2.26 m (a player passes): Recast links two neighbouring
+    cells by the higher floor under the lower ceiling, so a stair under an edge loses a riser and the rounding
+    (docs/analysis_quality.md, "A thirty-ninth round of level kinds"; docs/navmesh.md, "Head room a little over the
+    agent's height")."""
+    plan = benchmark("level_kinds39").cellar_stairs_plan(0)
+    label, nav = areas(round_39["cellar_stairs"](0), PRESET_GRID)
+    street = label[nav.nearest_poly([2.0, 0.0, -5.0], [1.0, 0.3, 1.0])[0]]
+    for house in plan["houses"]:
+        x0, x1 = house["x"]
+        poly = nav.nearest_poly([x1 - 1.5, -house["cellar"], 9.0], [1.0, 0.3, 1.5])[0]
+        assert poly >= 0
+        assert label[poly] != street, house["clearance"]
