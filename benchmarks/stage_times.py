@@ -7,7 +7,9 @@ Run: ``.venv/bin/python benchmarks/stage_times.py [--rooms 12000] [--preset map_
 polygons) runs through the preset in this process. For each stage it prints
 the wall time and the CPU time of the whole process (all threads: the
 navmesh build runs its tiles on every core), read at the pipeline's progress
-callback, which fires as each stage starts. With ``--stage-peaks`` (Linux) it
+callback, which fires as each stage starts, and the graph's size (the initial
+graph's nodes and edges, with the sampling builder's rays, and the structure's),
+so that a change in time is told from a change in the work. With ``--stage-peaks`` (Linux) it
 also prints each stage's peak RSS: the kernel's high-water mark read and
 reset (``/proc/self/clear_refs``) as each stage starts, so that a change in
 the run's peak is traced to the stage that makes it. On a machine shared with other
@@ -28,6 +30,7 @@ import time
 from g2s_core import pipeline
 from g2s_core.config import find_config, load_config
 from g2s_core.mesh import mesh_sha256
+from g2s_core.model import RunResult
 from g2s_core.registry import Registry
 from g2s_core.stages import PIPELINE
 from g2s_plugins.samples import levels as samples
@@ -51,10 +54,22 @@ def reset_peak_rss() -> None:
         clear.write("5")
 
 
+def graph_counts(result: RunResult) -> str:
+    """The run's work in counts: the initial graph's nodes and edges (and the sampling builder's rays) and the
+    structure's nodes and edges."""
+    graph, structure = result.graph, result.structure
+    rays = graph.graph.get("sampling_stats", {}).get("rays") if graph is not None else None
+    return (f"initial graph {graph.number_of_nodes() if graph is not None else 0} nodes, "
+            f"{graph.number_of_edges() if graph is not None else 0} edges"
+            + (f" ({rays} rays)" if rays is not None else "")
+            + f"; structure {structure.number_of_nodes() if structure is not None else 0} nodes, "
+            f"{structure.number_of_edges() if structure is not None else 0} edges")
+
+
 def stage_times(plan: pipeline.Plan, registry: Registry, rooms: int,
-                peaks: bool = False) -> tuple[list[tuple[str, float, float, float]], int]:
-    """One run: (label, wall s, CPU s, peak RSS GiB or nan without ``peaks``) per stage, and the number of navmesh
-    polygons."""
+                peaks: bool = False) -> tuple[list[tuple[str, float, float, float]], int, str]:
+    """One run: (label, wall s, CPU s, peak RSS GiB or nan without ``peaks``) per stage, the number of navmesh
+    polygons, and :func:`graph_counts`."""
     mesh = samples.dungeon(seed=0, rooms=rooms).mesh
     marks: list[tuple[str, float, float]] = []
     stage_peaks: list[float] = []
@@ -70,7 +85,8 @@ def stage_times(plan: pipeline.Plan, registry: Registry, rooms: int,
     stage_peaks = stage_peaks[1:] if peaks else [math.nan] * (len(marks) - 1)
     stages = [(label, w1 - w0, c1 - c0, peak)
               for (label, w0, c0), (_, w1, c1), peak in zip(marks, marks[1:], stage_peaks)]
-    return stages, result.context.navmesh.polygon_count if result.context.navmesh is not None else 0
+    polygons = result.context.navmesh.polygon_count if result.context.navmesh is not None else 0
+    return stages, polygons, graph_counts(result)
 
 
 def main() -> None:
@@ -87,8 +103,9 @@ def main() -> None:
     peaks: list[float] = []
     for run in range(args.repeat):
         load = os.getloadavg()[0]
-        stages, polygons = stage_times(plan, registry, args.rooms, args.stage_peaks)
+        stages, polygons, counts = stage_times(plan, registry, args.rooms, args.stage_peaks)
         print(f"run {run + 1}: {polygons} polygons, load average {load:.1f} -> {os.getloadavg()[0]:.1f}")
+        print(f"  {counts}")
         for label, wall, cpu, stage_peak in stages:
             memory = f"   peak RSS {stage_peak:5.2f} GiB" if args.stage_peaks else ""
             print(f"  {label:<40} wall {wall:7.2f} s   CPU {cpu:7.2f} s{memory}")
