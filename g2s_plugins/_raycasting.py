@@ -39,7 +39,6 @@ from g2s_core.mesh import body_nesting
 from g2s_plugins import _slabs, _walks
 from g2s_plugins.local_frame import LocalFrame
 
-# loaded on first use: listing plugins and checking a config import this module, and need none of them
 trimesh, util = lazy_module("trimesh"), lazy_module("trimesh.util")
 sparse, csgraph = lazy_module("scipy.sparse"), lazy_module("scipy.sparse.csgraph")
 

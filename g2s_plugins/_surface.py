@@ -40,7 +40,6 @@ from g2s_core.model import NavMesh
 from g2s_core.plugin import PluginParams
 from g2s_plugins import traffic
 
-# loaded on first use: listing plugins and checking a config import this module, and need none of them
 nx = lazy_module("networkx")
 
 if TYPE_CHECKING:  # g2s_core.simplify imports scipy (g2s_core.rooted): listing plugins and checking a config need neither

@@ -65,7 +65,6 @@ from g2s_core.lazy import lazy_module
 from g2s_core.plugin import PluginParams
 from g2s_plugins import traffic
 
-# loaded on first use: listing plugins and checking a config import this module, and need none of them
 rx = lazy_module("rustworkx")
 sp, csgraph, linalg = lazy_module("scipy.sparse"), lazy_module("scipy.sparse.csgraph"), lazy_module("scipy.sparse.linalg")
 nx = lazy_module("networkx")

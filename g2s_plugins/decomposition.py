@@ -197,7 +197,6 @@ from g2s_plugins import centrality
 from g2s_plugins._raycasting import RayCaster, hit_from_behind
 from g2s_plugins.play_space import held_polygons
 
-# loaded on first use: listing plugins and checking a config import this module, and need none of them
 rx, trimesh = lazy_module("rustworkx"), lazy_module("trimesh")
 sparse, csgraph, spatial = lazy_module("scipy.sparse"), lazy_module("scipy.sparse.csgraph"), lazy_module("scipy.spatial")
 nx = lazy_module("networkx")

@@ -151,7 +151,6 @@ from g2s_plugins import centrality, play_space, traffic
 from g2s_plugins.graph_builders import navmesh as navmesh_builder
 from g2s_plugins.recast import NavMesh, SettingsError, build_navmesh
 
-# loaded on first use: listing plugins and checking a config import this module, and need none of them
 csgraph, spatial = lazy_module("scipy.sparse.csgraph"), lazy_module("scipy.spatial")
 structure_leaves = lazy_module("g2s_plugins.structure_leaves")  # it imports g2s_core.simplify, which imports scipy
 nx = lazy_module("networkx")

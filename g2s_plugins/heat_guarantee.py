@@ -109,7 +109,6 @@ from g2s_core.model import RunContext
 from g2s_plugins import evaluation, traffic
 from g2s_plugins._surface import CollapseParams
 
-# loaded on first use: listing plugins and checking a config import this module, and need none of them
 csgraph = lazy_module("scipy.sparse.csgraph")
 nx = lazy_module("networkx")
 

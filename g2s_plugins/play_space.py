@@ -81,7 +81,6 @@ from g2s_core.plugin import PluginParams
 from g2s_plugins import traffic
 from g2s_plugins._raycasting import UP, RayCaster
 
-# loaded on first use: listing plugins and checking a config import this module, and need none of them
 trimesh, spatial = lazy_module("trimesh"), lazy_module("scipy.spatial")
 sparse, csgraph = lazy_module("scipy.sparse"), lazy_module("scipy.sparse.csgraph")
 nx = lazy_module("networkx")

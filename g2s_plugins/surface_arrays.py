@@ -17,7 +17,6 @@ import numpy as np
 
 from g2s_core.lazy import lazy_module
 
-# loaded on first use: listing plugins and checking a config import this module, and need none of them
 sp = lazy_module("scipy.sparse")
 nx = lazy_module("networkx")
 

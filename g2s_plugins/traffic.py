@@ -163,7 +163,6 @@ from g2s_plugins import _trees
 from g2s_plugins.flow_layout import FlowLayout, renumbered
 from g2s_plugins.surface_arrays import MIN_LENGTH, SurfaceArrays, surface_arrays
 
-# loaded on first use: listing plugins and checking a config import this module, and need none of them
 sp, csgraph = lazy_module("scipy.sparse"), lazy_module("scipy.sparse.csgraph")
 nx = lazy_module("networkx")
 

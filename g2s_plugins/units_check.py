@@ -34,7 +34,6 @@ import numpy as np
 from g2s_core.lazy import lazy_module
 from g2s_core.model import RunContext
 
-# loaded on first use: listing plugins and checking a config import this module, and need none of them
 trimesh = lazy_module("trimesh")
 
 LEVEL_DEGREES = 1.0

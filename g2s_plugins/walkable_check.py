@@ -45,7 +45,6 @@ from g2s_core.mesh import flip_inside_out_bodies
 from g2s_core.model import RunContext
 from g2s_plugins._raycasting import UP, RayCaster
 
-# loaded on first use: listing plugins and checking a config import this module, and need none of them
 trimesh = lazy_module("trimesh")
 nx = lazy_module("networkx")
 

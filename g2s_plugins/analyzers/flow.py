@@ -80,7 +80,6 @@ from g2s_core.plugin import PluginParams, hookimpl
 from g2s_plugins import traffic
 from g2s_plugins.decomposition import DecompositionParams
 
-# loaded on first use: listing plugins and checking a config import this module, and need none of them
 cross_sections = lazy_module("g2s_plugins.cross_sections")  # it imports scipy
 nx = lazy_module("networkx")
 

@@ -19,7 +19,6 @@ from g2s_core.model import AnalyzerResult, RunContext
 from g2s_core.plugin import hookimpl
 from g2s_plugins import decomposition
 
-# loaded on first use: listing plugins and checking a config import this module, and need none of them
 nx = lazy_module("networkx")
 
 NAME = "regions"

@@ -66,7 +66,6 @@ from g2s_plugins.recast.settings import coarse_climb_warning, resolve_settings
 from g2s_plugins.units_check import check_units
 from g2s_plugins.walkable_check import check_walkable_surface, no_walkable_surface
 
-# loaded on first use: listing plugins and checking a config import this module, and need none of them
 area_gaps = lazy_module("g2s_plugins.area_gaps")  # it imports scipy and trimesh
 nx = lazy_module("networkx")
 

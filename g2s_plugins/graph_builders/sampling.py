@@ -160,7 +160,6 @@ from g2s_plugins.play_space import PlaySpaceParams, cut_to_play_space
 from g2s_plugins.units_check import check_units
 from g2s_plugins.walkable_check import check_walkable_surface, no_walkable_surface
 
-# loaded on first use: listing plugins and checking a config import this module, and need none of them
 trimesh, spatial = lazy_module("trimesh"), lazy_module("scipy.spatial")
 sparse, csgraph = lazy_module("scipy.sparse"), lazy_module("scipy.sparse.csgraph")
 area_gaps = lazy_module("g2s_plugins.area_gaps")  # it imports scipy and trimesh

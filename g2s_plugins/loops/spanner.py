@@ -48,7 +48,6 @@ from g2s_plugins import _trees, heat_guarantee
 from g2s_plugins._surface import HeatFlowParams
 from g2s_plugins.surface_arrays import MIN_LENGTH, SurfaceArrays, surface_arrays
 
-# loaded on first use: listing plugins and checking a config import this module, and need none of them
 sp, csgraph = lazy_module("scipy.sparse"), lazy_module("scipy.sparse.csgraph")
 rooted = lazy_module("g2s_core.rooted")  # it imports scipy too
 nx = lazy_module("networkx")

@@ -13,7 +13,6 @@ from g2s_core.lazy import lazy_module
 from g2s_core.model import RunResult
 from g2s_core.summary import final_graph, metric_lines, roots_of, stage_rows
 
-# loaded on first use: listing plugins and checking a config import this module, and need none of them
 nx = lazy_module("networkx")
 
 __all__ = ["agent_value", "coordinate", "coordinates", "edge_list", "edges_with_data", "final_graph", "floors", "is_loop_edge",

@@ -25,7 +25,6 @@ from g2s_core.plugin import hookimpl
 from g2s_plugins.outputs.structure_json import RUN_FILE, SCHEMA_PATH, SCHEMA_VERSION, STRUCTURE_FILE
 from g2s_plugins.vectors import vec3
 
-# loaded on first use: listing plugins and checking a config import this module, and need none of them
 nx = lazy_module("networkx")
 
 NAME = "json"

@@ -54,7 +54,6 @@ from g2s_plugins.outputs.files import atomic_write
 from g2s_plugins.outputs.json_text import dumps_indented
 from g2s_plugins.outputs.writers import collector_paused
 
-# loaded on first use: listing plugins and checking a config import this module, and need none of them
 nx = lazy_module("networkx")
 
 SCHEMA_VERSION = 3

@@ -50,7 +50,6 @@ from g2s_plugins.heat_guarantee import begin_ahead, guaranteed
 if TYPE_CHECKING:  # g2s_core.simplify imports scipy (g2s_core.rooted): listing plugins and checking a config need neither
     from g2s_core.simplify import ForestArrays
 
-# loaded on first use: listing plugins and checking a config import this module, and need none of them
 structure_leaves = lazy_module("g2s_plugins.structure_leaves")  # it imports g2s_core.simplify, which imports scipy
 nx = lazy_module("networkx")
 

@@ -43,7 +43,6 @@ from g2s_core.lazy import lazy_module
 from g2s_core.model import RunContext
 from g2s_core.plugin import PluginParams, hookimpl
 
-# loaded on first use: listing plugins and checking a config import this module, and need none of them
 csgraph = lazy_module("scipy.sparse.csgraph")
 _paths = lazy_module("g2s_plugins.steiner._paths")  # it imports scipy
 nx = lazy_module("networkx")

@@ -48,7 +48,6 @@ import numpy as np
 
 from g2s_core.lazy import lazy_module
 
-# loaded on first use: listing plugins and checking a config import this module, and need none of them
 sparse, csgraph = lazy_module("scipy.sparse"), lazy_module("scipy.sparse.csgraph")
 nx = lazy_module("networkx")
 

@@ -179,7 +179,6 @@ from g2s_core.model import NavMesh, RunContext, Terminals
 from g2s_core.plugin import PluginParams, hookimpl
 from g2s_plugins import _trees, traffic
 
-# loaded on first use: listing plugins and checking a config import this module, and need none of them
 rx = lazy_module("rustworkx")
 sp, csgraph = lazy_module("scipy.sparse"), lazy_module("scipy.sparse.csgraph")
 nx = lazy_module("networkx")

@@ -197,7 +197,6 @@ from g2s_plugins.terminals._boundary import BoundaryLoop, LoopSamples, boundary_
 from g2s_plugins.terminals._sampled_surface import SampledSurface, sampled_surface
 from g2s_plugins.vectors import vec3
 
-# loaded on first use: listing plugins and checking a config import this module, and need none of them
 trimesh, spatial = lazy_module("trimesh"), lazy_module("scipy.spatial")
 nx = lazy_module("networkx")
 

@@ -11,7 +11,6 @@ from g2s_core.lazy import lazy_module
 from g2s_core.model import RunContext, Terminals
 from g2s_core.plugin import PluginParams, hookimpl
 
-# loaded on first use: listing plugins and checking a config import this module, and need none of them
 nx = lazy_module("networkx")
 
 NAME = "leaves"

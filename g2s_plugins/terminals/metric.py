@@ -40,7 +40,6 @@ from g2s_core.plugin import PluginParams, hookimpl
 from g2s_core.ties import tie_value
 from g2s_plugins import centrality
 
-# loaded on first use: listing plugins and checking a config import this module, and need none of them
 nx = lazy_module("networkx")
 
 NAME = "metric"

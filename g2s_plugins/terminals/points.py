@@ -38,7 +38,6 @@ from g2s_core.plugin import PluginParams, hookimpl
 from g2s_plugins._surface import on_navmesh
 from g2s_plugins.vectors import vec3
 
-# loaded on first use: listing plugins and checking a config import this module, and need none of them
 spatial = lazy_module("scipy.spatial")
 nx = lazy_module("networkx")
 
